@@ -1,0 +1,1 @@
+"""fgc backends (import package ``fgc_backends``): one sub-package per target."""
