@@ -4,7 +4,8 @@ A *chain* is an ordered sequence of variable clusters C_0 … C_{m-1} such that 
 one cluster or two consecutive clusters, and the clusters repeat one pattern (the multiset of
 variable types of a keyframe). On a LIO graph the clusters are the keyframes {x_j, v_j, b_j}.
 
-How clusters are found, in three steps (all deterministic, ties broken by declaration order):
+How clusters are found (all deterministic, ties broken by declaration order; a disconnected graph
+is general):
 
 1. **Supervariables.** Variables with identical *closed* neighbourhoods in the variable graph
    (``N[v] = {v} ∪ adj(v)``) are indistinguishable for elimination — minimum-degree codes merge
