@@ -93,7 +93,7 @@ class SymbolicFactor:
 
     def _flat_inputs(self, values, measured: dict) -> list:
         args: list = []
-        for block, v in zip(self.variables, values, strict=True):
+        for v in values:
             arr = v.storage_array() if isinstance(v, LieGroup) else np.asarray(v, float)
             args.extend(arr.reshape(-1))
         for block in self.measurements:

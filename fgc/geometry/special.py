@@ -12,9 +12,9 @@ name    closed form                     value at t = 0       used by
 ``D``   1/θ² − (1 + cos θ)/(2θ sin θ)   1/12                 Jr⁻¹, SE(3) Log
 ======  ==============================  ===================  ===================
 
-and their derivatives with respect to ``t`` (``A1`` … ``D1``). Each is evaluated by its Taylor series
-for ``t < 1`` and by the closed form above it, so the maps stay accurate at θ = 0, 1e-8, 1e-4 and
-near π in float64 and float32. ``D`` is only used for θ ≤ π (the range of Log).
+and their derivatives with respect to ``t`` (``A1`` … ``D1``). Each is evaluated by its Taylor
+series for ``t < 1`` and by the closed form above it, so the maps stay accurate at θ = 0, 1e-8,
+1e-4 and near π in float64 and float32. ``D`` is only used for θ ≤ π (the range of Log).
 
 Symbolically each coefficient is a sympy ``Function`` with a derivative rule, so sympy's chain rule
 never differentiates a singular closed form. The rotation logarithm is an opaque function
