@@ -32,8 +32,8 @@ def _integrate(log, params, start: int, count: int) -> PreintegratedCombinedMeas
     return pim
 
 
-def build(N: int = 20, samples_per_state: int = 10, v0: float = 8.0, init_noise: float = 0.05,
-          error_mode: str = "logmap", seed: int = 0) -> fgc.Graph:  # noqa: N803 - paper's name
+def build(N: int = 20, samples_per_state: int = 10, v0: float = 8.0,  # noqa: N803 - paper's N
+          init_noise: float = 0.05, error_mode: str = "logmap", seed: int = 0) -> fgc.Graph:
     if N < 2:
         raise fgc.DataError(f"imu_window: N must be at least 2, got {N}")
     log = read_kitti_imu(example_data_file("KittiEquivBiasedImu.txt"))
