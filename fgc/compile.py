@@ -1,0 +1,60 @@
+"""The whole compiler, top to bottom: a Graph → a checked :class:`fgc.program.Program`.
+
+    DSL graph ─► check ─► fuse (+ derive, CSE) ─► schedule ─► storage ─► lower ─► Program
+"""
+
+from __future__ import annotations
+
+from fgc.dsl import Graph
+from fgc.errors import DslError, StructureError
+from fgc.fuse import fuse
+from fgc.lower import lower
+from fgc.program import Program, SolverConfig, check_program
+from fgc.schedule import FactorInfo, GraphStructure, VarInfo, check_structure, schedule
+from fgc.storage import ChainLayout, plan_storage
+
+
+def compile_graph(graph: Graph, solver: SolverConfig | None = None, name: str = "fgc_problem",
+                  max_variables: int | None = None) -> Program:
+    """Compile ``graph``'s structure into a Program for ``solver`` (default options).
+
+    Structure errors (unconstrained variable, gauge freedom, more variables than
+    ``max_variables``) are raised before any symbolic or numeric work.
+    """
+    solver = solver or SolverConfig()
+    solver.check()
+    limit = max_variables or len(graph.variables)
+    structure = graph_structure(graph)
+    check_structure(structure, max_variables=limit)              # before any numerics
+    sched = schedule(structure, ordering=solver.ordering, incremental_k=solver.incremental_k,
+                     batch_every=solver.batch_every, max_variables=limit)
+    blocks = fuse(graph)                                          # derive + CSE per block type
+    storage = plan_storage(blocks, chain_layout(graph, sched), solver.linear)
+    program = lower(graph, blocks, sched, storage, solver, name, limit)
+    check_program(program)
+    return program
+
+
+def graph_structure(graph: Graph) -> GraphStructure:
+    """Keys, dimensions and factor key tuples of ``graph`` (keys as strings)."""
+    names: dict[str, object] = {}
+    for k in graph.variables:
+        if str(k) in names:
+            raise DslError(f"variable keys {names[str(k)]!r} and {k!r} collide as text")
+        names[str(k)] = k
+    if not graph.factors:
+        raise StructureError("the graph has no factors")
+    return GraphStructure.from_lists(
+        [VarInfo(str(k), v.type.dim, v.type.__name__) for k, v in graph.variables.items()],
+        [FactorInfo(f.name, tuple(str(k) for k in f.keys), f.type.residual_dim)
+         for f in graph.factors])
+
+
+def chain_layout(graph: Graph, sched) -> ChainLayout | None:
+    """The schedule's keyframe clusters as a storage layout (slot order = graph order)."""
+    if sched.structure_class != "chain":
+        return None
+    original = {str(k): k for k in graph.variables}
+    rank = {str(k): i for i, k in enumerate(graph.variables)}
+    return ChainLayout(tuple(tuple(original[k] for k in sorted(c, key=rank.__getitem__))
+                             for c in sched.clusters))

@@ -1,0 +1,60 @@
+"""lower: fused blocks + schedule + storage plan + solver configuration → :class:`Program`."""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Sequence
+
+from fgc.dsl import Graph, storage_dim
+from fgc.fuse import FactorBlock
+from fgc.program import (
+    BlockSpec,
+    FactorSpec,
+    KernelText,
+    MemberSpec,
+    Program,
+    SolverConfig,
+    VariableSpec,
+)
+from fgc.schedule import Schedule
+from fgc.storage import StoragePlan
+
+
+def lower(graph: Graph, blocks: Sequence[FactorBlock], sched: Schedule, storage: StoragePlan,
+          solver: SolverConfig, name: str, max_variables: int) -> Program:
+    """Assemble the Program; block types are numbered in order of first appearance."""
+    types: dict[str, int] = {}
+    specs: list[BlockSpec] = []
+    instances = []
+    for b in blocks:
+        if b.type.key not in types:
+            types[b.type.key] = len(specs)
+            specs.append(_block_spec(b, graph))
+        instances.append(FactorSpec(types[b.type.key], tuple(str(k) for k in b.keys),
+                                    tuple(b.indices)))
+    variables = tuple(VariableSpec(str(k), v.type.__name__, v.type.dim, v.type.storage_dim)
+                      for k, v in graph.variables.items())
+    return Program(name, variables, tuple(specs), tuple(instances), sched, storage, solver,
+                   max_variables)
+
+
+def _block_spec(b: FactorBlock, graph: Graph) -> BlockSpec:
+    members = []
+    for m, f in zip(b.type.members, b.factors, strict=True):
+        sizes = {a.name: storage_dim(a.type) for a in f.type.measurements}
+        members.append(MemberSpec(m.name, tuple(m.rows), m.noise_kind, len(m.noise_symbols),
+                                  tuple((n, sizes[n]) for n in m.measurement_names)))
+    ops = b.type.ops
+    return BlockSpec(
+        name=b.type.name,
+        variable_types=tuple(v.type_name for v in b.type.variables),
+        variable_dims=tuple(v.dim for v in b.type.variables),
+        members=tuple(members),
+        residual_dim=b.type.residual_dim,
+        structure=b.type.structure,
+        ops_before=dataclasses.asdict(ops.jacobian_before),
+        ops_after=dataclasses.asdict(ops.jacobian_after),
+        ops_cost=dataclasses.asdict(ops.cost_after),
+        kernel=KernelText.of(b.type.kernel),
+        cost_kernel=KernelText.of(b.type.cost_kernel),
+    )
