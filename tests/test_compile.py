@@ -56,10 +56,9 @@ def test_compiling_twice_is_byte_identical():
 
 
 def test_deterministic_across_hash_seeds(tmp_path):
-    code = ("import sys; sys.path.insert(0, %r); import pose_graph; "
+    code = (f"import sys; sys.path.insert(0, {str(ROOT / 'examples')!r}); import pose_graph; "
             "from fgc.compile import compile_graph; "
-            "sys.stdout.write(compile_graph(pose_graph.build('pose3example.txt')).to_json())"
-            % str(ROOT / "examples"))
+            "sys.stdout.write(compile_graph(pose_graph.build('pose3example.txt')).to_json())")
     outs = []
     for seed in ("1", "2"):
         env = {"PYTHONHASHSEED": seed, "FGC_CACHE_DIR": str(tmp_path / seed),
