@@ -13,8 +13,6 @@ factor's definition and of fgc's own derivation code, so compiling a known facto
 from __future__ import annotations
 
 import hashlib
-import os
-import pickle
 from dataclasses import dataclass, field
 from functools import cache, cached_property
 from pathlib import Path
@@ -22,6 +20,7 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
+from fgc.cache import cache_dir, load, store
 from fgc.dsl import FactorType, MatrixType, storage_dim
 from fgc.errors import DerivationError
 from fgc.geometry import LieGroup, special
@@ -142,11 +141,11 @@ def derive(ftype: FactorType, use_cache: bool = True) -> SymbolicFactor:
     if key in _MEMO:
         return _MEMO[key]
     path = cache_dir() / f"derive-{ftype.name}-{key[:24]}.pkl"
-    result = _load(path) if use_cache else None
+    result = load(path) if use_cache else None
     if result is None:
         result = _derive_uncached(ftype, key)
         if use_cache:
-            _store(path, result)
+            store(path, result)
     _MEMO[key] = result
     return result
 
@@ -291,13 +290,6 @@ def _random_measurement(t, rng: np.random.Generator) -> np.ndarray:
 # --------------------------------------------------------------------------------------------
 
 
-def cache_dir() -> Path:
-    root = os.environ.get("FGC_CACHE_DIR") or Path.home() / ".cache" / "fgc"
-    path = Path(root)
-    path.mkdir(parents=True, exist_ok=True)
-    return path
-
-
 @cache
 def _code_version() -> str:
     """Hash of the code that shapes a derivation, so an fgc change invalidates the cache."""
@@ -308,21 +300,3 @@ def _code_version() -> str:
         h.update(f.read_bytes())
     h.update(sp.__version__.encode())
     return h.hexdigest()[:16]
-
-
-def _load(path: Path) -> SymbolicFactor | None:
-    try:
-        with path.open("rb") as fh:
-            return pickle.load(fh)
-    except (OSError, EOFError, pickle.UnpicklingError, AttributeError, ImportError):
-        return None
-
-
-def _store(path: Path, sf: SymbolicFactor) -> None:
-    tmp = path.with_suffix(f".tmp{os.getpid()}")
-    try:
-        with tmp.open("wb") as fh:
-            pickle.dump(sf, fh, protocol=pickle.HIGHEST_PROTOCOL)
-        tmp.replace(path)  # atomic: parallel compiles never read a half-written file
-    except OSError:
-        tmp.unlink(missing_ok=True)

@@ -46,7 +46,8 @@ from pathlib import Path
 
 import numpy as np
 
-from fgc.derive import Block, SymbolicFactor, cache_dir, derive
+from fgc.cache import cache_dir, cached
+from fgc.derive import Block, SymbolicFactor, derive
 from fgc.dsl import Factor, FactorType, Graph
 from fgc.errors import DslError
 from fgc.fuse_kernels import (
@@ -54,7 +55,6 @@ from fgc.fuse_kernels import (
     Member,
     OpCounts,
     build_kernels,
-    cached,
     noise_symbols,
     prefixed,
 )

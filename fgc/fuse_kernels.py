@@ -9,10 +9,7 @@ before sharing are the members' separately derived kernels, summed.
 
 from __future__ import annotations
 
-import os
-import pickle
 from dataclasses import astuple, dataclass, replace
-from pathlib import Path
 
 import numpy as np
 import sympy as sp
@@ -202,20 +199,3 @@ def _cost_kernel(kernel: Kernel, noise: tuple, members: list[Member]) -> Kernel:
         costs.append(sp.Add(*[e**2 for e in wr]) / 2)
     outputs = (*r, *costs, sp.Add(*costs))
     return tidy(Kernel(kernel.inputs + noise, drop_dead(kernel.assignments, outputs), outputs))
-
-
-def cached(path: Path, build) -> tuple:
-    """``build()``'s result, read from / written to the pickle at ``path`` (atomic write)."""
-    try:
-        with path.open("rb") as fh:
-            return pickle.load(fh)
-    except (OSError, EOFError, pickle.UnpicklingError, AttributeError, ImportError):
-        pass
-    fused, tmp = build(), path.with_suffix(f".tmp{os.getpid()}")
-    try:
-        with tmp.open("wb") as fh:
-            pickle.dump(fused, fh, protocol=pickle.HIGHEST_PROTOCOL)
-        tmp.replace(path)  # parallel compiles never read a half-written file
-    except OSError:
-        tmp.unlink(missing_ok=True)
-    return fused

@@ -37,7 +37,30 @@ class Kernel:
             _count_ops(e, counts)
         for e in self.outputs:
             _count_ops(e, counts)
-        return {k: counts.get(k, 0) for k in ("add", "mul", "div", "sqrt", "trig", "special")}
+        return {k: counts.get(k, 0) for k in OP_KINDS}
+
+    def op_counts_unshared(self) -> dict[str, int]:
+        """Operations if nothing were shared: every intermediate recomputed at each use, i.e.
+        each output evaluated as its own expression tree (what CSE saves is the difference)."""
+        inlined: dict[sp.Symbol, Counter] = {}
+        for x, e in self.assignments:
+            inlined[x] = _tree_counts(e, inlined)
+        total: Counter = Counter()
+        for e in self.outputs:
+            total.update(_tree_counts(sp.sympify(e), inlined))
+        return {k: total.get(k, 0) for k in OP_KINDS}
+
+
+OP_KINDS = ("add", "mul", "div", "sqrt", "trig", "special")
+
+
+def _tree_counts(expr: sp.Expr, inlined: dict) -> Counter:
+    own: Counter = Counter()
+    _count_ops(expr, own)
+    for node in sp.preorder_traversal(expr):
+        if node in inlined:
+            own.update(inlined[node])
+    return own
 
 
 def _count_ops(expr: sp.Expr, counts: Counter) -> None:

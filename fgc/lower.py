@@ -52,6 +52,7 @@ def _block_spec(b: FactorBlock, graph: Graph) -> BlockSpec:
         members=tuple(members),
         residual_dim=b.type.residual_dim,
         structure=b.type.structure,
+        ops_unshared=b.type.kernel.op_counts_unshared(),
         ops_before=dataclasses.asdict(ops.jacobian_before),
         ops_after=dataclasses.asdict(ops.jacobian_after),
         ops_cost=dataclasses.asdict(ops.cost_after),

@@ -137,9 +137,10 @@ class BlockSpec:
     members: tuple[MemberSpec, ...]
     residual_dim: int
     structure: tuple[tuple[tuple[str, ...], ...], ...]
-    ops_before: dict = field(compare=True)
-    ops_after: dict = field(compare=True)
-    ops_cost: dict = field(compare=True)
+    ops_unshared: dict  # residual + Jacobian, every output its own expression tree (no CSE)
+    ops_before: dict  # members CSE'd separately, summed
+    ops_after: dict  # the fused kernel: shared General Calculation
+    ops_cost: dict  # the fused cost-only kernel
     kernel: KernelText = field(repr=False)
     cost_kernel: KernelText = field(repr=False)
 
@@ -216,8 +217,9 @@ def _block_from_dict(b: dict) -> BlockSpec:
         return KernelText(tuple(k["inputs"]), _tuples(k["assignments"]), tuple(k["outputs"]))
 
     return BlockSpec(b["name"], tuple(b["variable_types"]), tuple(b["variable_dims"]), members,
-                     b["residual_dim"], _tuples(b["structure"]), b["ops_before"], b["ops_after"],
-                     b["ops_cost"], text(b["kernel"]), text(b["cost_kernel"]))
+                     b["residual_dim"], _tuples(b["structure"]), b["ops_unshared"],
+                     b["ops_before"], b["ops_after"], b["ops_cost"], text(b["kernel"]),
+                     text(b["cost_kernel"]))
 
 
 # --------------------------------------------------------------------------------------------

@@ -47,6 +47,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from fgc.cache import cache_dir, cached
 from fgc.derive import derive
 from fgc.dsl import Factor, MatrixType
 from fgc.errors import StructureError
@@ -247,19 +248,26 @@ def factor_structure(f: Factor) -> FactorStructure:
     sf = derive(f.type)
     key = (sf.fingerprint, f.noise.kind)
     if key not in _STRUCTURES:
-        m = sf.residual_dim
-        w = np.eye(m, dtype=int) if f.noise.kind != "full" else np.triu(np.ones((m, m), int))
-        codes = [np.array(s) for s in sf.structure]
-        nonzero, known = [], []
-        for c in codes:
-            nz, unit = c != "0", (c == "1") | (c == "-1")
-            count, general = w @ nz, w @ (nz & ~unit)
-            nonzero.append(count > 0)
-            known.append((count == 1) & (general == 0))
-        shared = _shared(f, sf, w, codes, nonzero, known)
-        _STRUCTURES[key] = FactorStructure(tuple(nonzero), tuple(known), tuple(shared),
-                                  len(f.noise.params()))
+        name = f"structure-{f.type.name}-{f.noise.kind}-{sf.fingerprint[:24]}.pkl"
+        path = cache_dir() / name
+        _STRUCTURES[key] = cached(path, lambda: _factor_structure(f, sf))
     return _STRUCTURES[key]
+
+
+def _factor_structure(f: Factor, sf) -> FactorStructure:
+    """Uncached analysis behind :func:`factor_structure`."""
+    m = sf.residual_dim
+    w = np.eye(m, dtype=int) if f.noise.kind != "full" else np.triu(np.ones((m, m), int))
+    codes = [np.array(s) for s in sf.structure]
+    nonzero, known = [], []
+    for c in codes:
+        nz, unit = c != "0", (c == "1") | (c == "-1")
+        count, general = w @ nz, w @ (nz & ~unit)
+        nonzero.append(count > 0)
+        known.append((count == 1) & (general == 0))
+    shared = _shared(f, sf, w, codes, nonzero, known)
+    return FactorStructure(tuple(nonzero), tuple(known), tuple(shared),
+                           len(f.noise.params()))
 
 
 def _shared(f: Factor, sf, w: np.ndarray, codes, nonzero, known) -> list[np.ndarray]:

@@ -1,0 +1,51 @@
+"""The on-disk cache of symbolic work (derivations, fused kernels, structure analyses).
+
+Entries are pickles under ``$FGC_CACHE_DIR`` (default ``~/.cache/fgc``), written atomically so
+parallel compiles never read half a file; an unreadable entry is rebuilt, never trusted.
+"""
+
+from __future__ import annotations
+
+import os
+import pickle
+from collections.abc import Callable
+from pathlib import Path
+from typing import TypeVar
+
+T = TypeVar("T")
+
+
+def cache_dir() -> Path:
+    root = os.environ.get("FGC_CACHE_DIR") or Path.home() / ".cache" / "fgc"
+    path = Path(root)
+    path.mkdir(parents=True, exist_ok=True)
+    return path
+
+
+def load(path: Path):
+    """The object pickled at ``path``, or None if it is missing or unreadable."""
+    try:
+        with path.open("rb") as fh:
+            return pickle.load(fh)
+    except (OSError, EOFError, pickle.UnpicklingError, AttributeError, ImportError, TypeError):
+        return None
+
+
+def store(path: Path, obj) -> None:
+    tmp = path.with_suffix(f".tmp{os.getpid()}")
+    try:
+        with tmp.open("wb") as fh:
+            pickle.dump(obj, fh, protocol=pickle.HIGHEST_PROTOCOL)
+        tmp.replace(path)
+    except OSError:
+        tmp.unlink(missing_ok=True)
+
+
+def cached(path: Path, build: Callable[[], T]) -> T:
+    """``build()``'s result, read from / written to the pickle at ``path``."""
+    hit = load(path)
+    if hit is not None:
+        return hit
+    obj = build()
+    store(path, obj)
+    return obj
