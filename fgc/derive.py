@@ -295,7 +295,8 @@ def _code_version() -> str:
     """Hash of the code that shapes a derivation, so an fgc change invalidates the cache."""
     here = Path(__file__).parent
     h = hashlib.sha256()
-    files = [here / "derive.py", here / "dsl.py", *sorted((here / "geometry").glob("*.py"))]
+    files = [here / "derive.py", here / "dsl.py", here / "kernel.py",
+             *sorted((here / "geometry").glob("*.py"))]
     for f in files:
         h.update(f.read_bytes())
     h.update(sp.__version__.encode())

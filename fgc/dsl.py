@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import hashlib
 import inspect
+import sys
+from contextlib import contextmanager
 import math
 from dataclasses import dataclass, field
 from typing import Any, get_type_hints
@@ -26,7 +28,7 @@ from typing import Any, get_type_hints
 import numpy as np
 import sympy as sp
 
-from fgc.errors import DataError, DslError
+from fgc.errors import DataError, DslError, FgcError
 from fgc.geometry import LieGroup, VectorSpace
 from fgc.noise import NoiseModel
 
@@ -142,7 +144,8 @@ class FactorType:
         vars_ = {a.name: symbolic_value(a.type, a.name) for a in self.variables}
         meas = {a.name: symbolic_value(a.type, a.name) for a in self.measurements}
         try:
-            out = self.func(*vars_.values(), **meas)
+            with _truth_of_symbols_forbidden():
+                out = self.func(*vars_.values(), **meas)
         except TypeError as exc:
             if _is_symbolic_branch(exc):
                 raise DslError(
@@ -152,6 +155,13 @@ class FactorType:
                 ) from None
             raise DslError(f"factor '{self.name}': calling the residual function failed: {exc}") \
                 from exc
+        except FgcError as exc:  # e.g. a geometry DataError: say which factor's function raised it
+            if str(exc).startswith(f"factor '{self.name}'"):
+                raise
+            raise type(exc)(f"factor '{self.name}': {exc}") from exc
+        except Exception as exc:
+            raise DslError(f"factor '{self.name}': calling the residual function failed: "
+                           f"{type(exc).__name__}: {exc}") from exc
         return vars_, meas, residual_vector(out, self.name)
 
     @property
@@ -200,8 +210,18 @@ def _parse_signature(func, name: str) -> tuple[tuple[Argument, ...], tuple[Argum
     return tuple(variables), tuple(measurements)
 
 
+# Modules whose source is already part of the derivation's code version (fgc.derive), or that are
+# third-party: functions from them are not hashed into a factor's fingerprint.
+_NOT_FINGERPRINTED = ("fgc.dsl", "fgc.derive", "fgc.geometry", "sympy", "numpy")
+_SCALARS = (bool, int, float, complex, str, bytes, type(None))
+
+
 def _function_sources(func, seen: set | None = None) -> list[str]:
-    """Source of ``func`` and of module-level functions it references, transitively."""
+    """Source of ``func`` and of the functions and constants it references, transitively.
+
+    Referenced functions are module-level names or closure cells (a factory's inner helpers);
+    constants are scalars, tuples of scalars and arrays read from globals or closure cells (a
+    factory's parameters, a module-level ``SCALE = 2.0``), so changing any of them re-derives."""
     seen = seen if seen is not None else set()
     if func in seen:
         return []
@@ -210,14 +230,66 @@ def _function_sources(func, seen: set | None = None) -> list[str]:
         out = [inspect.getsource(func)]
     except (OSError, TypeError):
         out = [repr(func.__code__.co_code)]
-    for name in sorted(func.__code__.co_names):
-        ref = func.__globals__.get(name)
-        if inspect.isfunction(ref) and not ref.__module__.startswith(("fgc.", "sympy", "numpy")):
-            out += _function_sources(ref, seen)
+    refs = [(name, func.__globals__[name]) for name in sorted(func.__code__.co_names)
+            if name in func.__globals__]
+    for name, cell in zip(func.__code__.co_freevars, func.__closure__ or (), strict=True):
+        try:
+            refs.append((name, cell.cell_contents))
+        except ValueError:  # cell not filled yet
+            continue
+    for name, ref in refs:
+        if inspect.isfunction(ref):
+            if not ref.__module__.startswith(_NOT_FINGERPRINTED):
+                out += _function_sources(ref, seen)
+        elif (isinstance(ref, _SCALARS) or isinstance(ref, tuple)
+              and all(isinstance(x, _SCALARS) for x in ref)):
+            out.append(f"{name}={ref!r}")
+        elif isinstance(ref, np.ndarray):
+            out.append(f"{name}=ndarray({ref.dtype},{ref.shape},"
+                       f"{hashlib.sha256(ref.tobytes()).hexdigest()})")
     return out
 
 
+class _SymbolTruthError(TypeError):
+    pass
+
+
+_LIBRARY_CALLERS = ("sympy", "numpy", "fgc.")
+
+
+def _no_truth_value(self):
+    # sympy's own code relies on every non-numeric expression being truthy (e.g. "if Cij:" in
+    # matrix products); only a truth test written in the user's residual function is an error.
+    caller = sys._getframe(1).f_globals.get("__name__", "")
+    if caller.startswith(_LIBRARY_CALLERS):
+        return True
+    raise _SymbolTruthError(f"cannot determine the truth value of symbolic {self}")
+
+
+@contextmanager
+def _truth_of_symbols_forbidden():
+    """While tracing, ``if x:`` / ``bool(x)`` on a non-constant symbolic value raises.
+
+    sympy gives every expression the default truth value True, so ``if pose.x():`` would silently
+    take one branch; comparisons (``x > 0``) already raise in sympy itself.
+    """
+    classes = (sp.Symbol, sp.Add, sp.Mul, sp.Pow, sp.Function)
+    saved = {c: c.__dict__.get("__bool__") for c in classes}
+    for c in classes:
+        c.__bool__ = _no_truth_value
+    try:
+        yield
+    finally:
+        for c, old in saved.items():
+            if old is None:
+                del c.__bool__
+            else:
+                c.__bool__ = old
+
+
 def _is_symbolic_branch(exc: TypeError) -> bool:
+    if isinstance(exc, _SymbolTruthError):
+        return True
     msg = str(exc)
     return "truth value" in msg or "convert" in msg and "float" in msg or "Relational" in msg
 

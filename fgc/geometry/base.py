@@ -26,17 +26,25 @@ def is_symbolic(*xs) -> bool:
     return any(isinstance(x, (sp.Basic, sp.MatrixBase)) for x in xs)
 
 
-def column(values, symbolic: bool, dtype=np.float64):
-    """A column vector: a sympy ``Matrix(n, 1)`` or a 1-D NumPy array."""
+def column(values, symbolic: bool, dtype=None):
+    """A column vector: a sympy ``Matrix(n, 1)`` or a 1-D NumPy array (of ``dtype``, default:
+    the entries' float type, so float32 inputs stay float32)."""
     if symbolic:
         return sp.Matrix([sp.sympify(v) for v in values])
-    return np.asarray(values, dtype=dtype).reshape(-1)
+    return _float_array(values, dtype).reshape(-1)
 
 
-def matrix(rows, symbolic: bool, dtype=np.float64):
+def matrix(rows, symbolic: bool, dtype=None):
     if symbolic:
         return sp.Matrix(rows)
-    return np.asarray(rows, dtype=dtype)
+    return _float_array(rows, dtype)
+
+
+def _float_array(values, dtype) -> np.ndarray:
+    arr = np.asarray(values)
+    if dtype is None:
+        dtype = arr.dtype if arr.dtype.kind == "f" else np.float64
+    return arr.astype(dtype, copy=False)
 
 
 def eye(n: int, symbolic: bool, dtype=np.float64):
