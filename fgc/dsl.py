@@ -19,9 +19,9 @@ from __future__ import annotations
 
 import hashlib
 import inspect
+import math
 import sys
 from contextlib import contextmanager
-import math
 from dataclasses import dataclass, field
 from typing import Any, get_type_hints
 
