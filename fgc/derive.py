@@ -269,7 +269,7 @@ def _probe_jacobians(sf: SymbolicFactor, ftype: FactorType) -> list[list[np.ndar
     with np.errstate(all="ignore"):
         for _ in range(_PROBES):
             values = [a.type.random(rng) for a in ftype.variables]
-            measured = {a.name: _random_measurement(a.type, rng) for a in ftype.measurements}
+            measured = {a.name: random_measurement(a.type, rng) for a in ftype.measurements}
             _, jacs = sf.evaluate(values, measured)
             if not all(np.all(np.isfinite(j)) for j in jacs):
                 return None  # cannot tell from this probe; keep every entry general
@@ -277,7 +277,8 @@ def _probe_jacobians(sf: SymbolicFactor, ftype: FactorType) -> list[list[np.ndar
     return out
 
 
-def _random_measurement(t, rng: np.random.Generator) -> np.ndarray:
+def random_measurement(t, rng: np.random.Generator) -> np.ndarray:
+    """Random storage for a measurement of type ``t`` (valid group elements for geometry)."""
     if t is float:
         return np.array([rng.normal()])
     if isinstance(t, MatrixType):

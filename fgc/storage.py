@@ -48,8 +48,8 @@ import numpy as np
 import sympy as sp
 
 from fgc.cache import cache_dir, cached
-from fgc.derive import derive
-from fgc.dsl import Factor, MatrixType
+from fgc.derive import derive, random_measurement
+from fgc.dsl import Factor
 from fgc.errors import StructureError
 from fgc.fuse import FactorBlock
 
@@ -321,16 +321,7 @@ def _probe(f: Factor, sf, n: int = 3) -> list[list[np.ndarray]]:
     out = []
     for _ in range(n):
         values = [a.type.random(rng) for a in f.type.variables]
-        measured = {a.name: _random_measurement(a.type, rng) for a in f.type.measurements}
+        measured = {a.name: random_measurement(a.type, rng) for a in f.type.measurements}
         with np.errstate(all="ignore"):
             out.append(sf.evaluate(values, measured)[1])
     return out
-
-
-def _random_measurement(t, rng: np.random.Generator) -> np.ndarray:
-    if t is float:
-        return np.array([rng.normal()])
-    if isinstance(t, MatrixType):
-        return rng.normal(size=t.storage_dim)
-    return t.random(rng).storage_array()
-
