@@ -1,0 +1,33 @@
+"""Packaging: every package directory is installed, under the name DESIGN.md gives it."""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _declared() -> set[str]:
+    with (ROOT / "pyproject.toml").open("rb") as fh:
+        return set(tomllib.load(fh)["tool"]["setuptools"]["packages"])
+
+
+def _on_disk() -> set[str]:
+    found = set()
+    for top, name in (("fgc", "fgc"), ("backends", "fgc_backends")):
+        for init in (ROOT / top).rglob("__init__.py"):
+            rel = init.parent.relative_to(ROOT / top).parts
+            found.add(".".join((name, *rel)))
+    return found
+
+
+def test_every_package_directory_is_listed_in_pyproject():
+    missing = _on_disk() - _declared()
+    assert not missing, f"add to [tool.setuptools] packages in pyproject.toml: {sorted(missing)}"
+
+
+def test_backends_import_as_fgc_backends():
+    import fgc_backends
+
+    assert Path(fgc_backends.__file__).resolve().parent == ROOT / "backends"
