@@ -25,6 +25,15 @@ from fgc.geometry import (
 
 __version__ = "0.1.0"
 
+
+def from_gtsam(graph, values, key_names=None):
+    """Convert a ``gtsam.NonlinearFactorGraph`` + ``gtsam.Values`` into an fgc Graph
+    (see :func:`fgc.importer.from_gtsam`; gtsam is imported only when this is called)."""
+    from fgc.importer import from_gtsam as _from_gtsam
+
+    return _from_gtsam(graph, values, key_names)
+
+
 __all__ = [
     "DataError",
     "DerivationError",
@@ -48,6 +57,7 @@ __all__ = [
     "Vector6",
     "Vector9",
     "factor",
+    "from_gtsam",
     "noise",
     "vector_type",
 ]
