@@ -33,11 +33,41 @@ def test_verify_w100_matches_gtsam(tmp_path):
     assert report["variables"] == 100 and report["factors"] == 301
 
 
+def test_simulate_writes_the_report(tmp_path):
+    out = tmp_path / "s.json"
+    code = main(["simulate", str(EXAMPLES / "lio.py"), "-p", "N=6", "--json", str(out)])
+    assert code == EXIT_OK
+    r = json.loads(out.read_text())
+    for key in ("final_error", "iterations", "cycles", "clock_mhz", "latency_ms", "energy_mj"):
+        assert key in r
+    assert set(r["resources"]) >= {"dsp", "bram", "lut", "ff"}
+    assert r["storage"]["stored_words"] < r["storage"]["dense_words"]
+    assert r["cycles"] > 0 and r["latency_ms"] == pytest.approx(r["cycles"] / 143e3)
+
+
+def test_verify_float32_within_hardware_bounds(tmp_path):
+    out = tmp_path / "v.json"
+    code = main(["verify", str(EXAMPLES / "lio.py"), "-p", "N=6", "--precision", "float32",
+                 "--linear", "cholesky", "--json", str(out)])
+    assert code == EXIT_OK
+    r = json.loads(out.read_text())
+    assert r["max_rotation_error"] <= 1e-3 and r["max_translation_error"] <= 1e-2
+
+
+def test_compile_emits_a_simulator_project(tmp_path):
+    assert main(["compile", str(EXAMPLES / "pose_graph.py"), "-p", "dataset=pose3example.txt",
+                 "--backend", "sim", "--out", str(tmp_path)]) == EXIT_OK
+    assert (tmp_path / "program.json").is_file() and (tmp_path / "data.txt").is_file()
+    assert any(p.suffix == ".py" for p in tmp_path.iterdir())
+
+
 @pytest.mark.parametrize("argv, needle", [
     (["verify", "no/such/spec.py"], "no such file"),
     (["verify", str(EXAMPLES / "pose_graph.py"), "-p", "bogus=1"], "bogus"),
     (["verify", str(EXAMPLES / "pose_graph.py"), "-p", "novalue"], "KEY=VALUE"),
     (["verify", str(EXAMPLES / "pose_graph.py"), "-p", "dataset=missing.g2o"], "missing.g2o"),
+    (["simulate", "no/such/spec.py"], "no such file"),
+    (["run", str(EXAMPLES / "lio.py"), "-p", "N=1"], "N=1"),
 ])
 def test_bad_input_exit_code_2(argv, needle, capsys):
     assert main(argv) == EXIT_BAD_INPUT

@@ -34,7 +34,7 @@ from fgc.errors import DerivationError
 
 # Use the Taylor series for t = θ² below this (|θ| < 2 rad): the closed forms of C1, D and D1
 # cancel badly for θ ≈ 1 (≈ 2e-13 relative in float64, 1e-4 in float32 for D1 at t = 1).
-_SERIES_BELOW = 4.0
+SERIES_BELOW = 4.0
 _N_TERMS = 12
 
 
@@ -45,7 +45,7 @@ def _alternating_factorial_series(offset: int) -> list[Fraction]:
 
 # 1/θ² − (1 + cos θ)/(2 θ sin θ) = Σ d_n θ^(2n) with d_n = |B_(2n+2)| / (2n+2)! (Bernoulli
 # numbers, from θ/2·cot(θ/2)). It converges for θ < 2π only, so it needs more terms than the
-# factorial series to reach float64 precision at t = _SERIES_BELOW.
+# factorial series to reach float64 precision at t = SERIES_BELOW.
 _N_TERMS_D = 22
 _D_SERIES = [
     Fraction(int(abs(b.p)), int(b.q)) / math.factorial(2 * n + 2)
@@ -117,9 +117,9 @@ def coefficient(name: str, t):
     arr = np.asarray(t)
     if arr.dtype.kind != "f":
         arr = arr.astype(np.float64)
-    small = arr < _SERIES_BELOW
+    small = arr < SERIES_BELOW
     series = _horner(name, arr)
-    safe = np.where(small, arr.dtype.type(_SERIES_BELOW), arr)
+    safe = np.where(small, arr.dtype.type(SERIES_BELOW), arr)
     with np.errstate(all="ignore"):
         closed = _closed_forms(name, safe)
     out = np.where(small, series, closed).astype(arr.dtype)

@@ -1,0 +1,58 @@
+"""Configuration of the simulator backend (one explicit, documented dataclass)."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from .printer import SimPrinter
+
+RUNTIME_TEMPLATES = ("fgc_sim_runtime.py.jinja", "fgc_sim_special.py.jinja",
+                     "fgc_sim_linear.py.jinja", "fgc_sim_optimizer.py.jinja",
+                     "fgc_sim_incremental.py.jinja")
+PROGRAM_TEMPLATE = "sim.py.jinja"
+
+
+@dataclass(frozen=True)
+class SimConfig:
+    """How the simulator is emitted and run.
+
+    - ``lambda_upper_bound``: LM gives up (status "failed", reason "lambda_limit") when μ would
+      exceed this after rejected steps.
+    - ``absolute_error_tol``: stop (converged) once the cost is at most this.
+    - ``name``: file-name stem of the problem module (``<name>_sim.py``); default: the Program's
+      name, sanitised to an identifier.
+    """
+
+    lambda_upper_bound: float = 1e10
+    absolute_error_tol: float = 1e-14
+    name: str | None = None
+
+    @staticmethod
+    def template_dir() -> Path:
+        return Path(__file__).parent / "templates"
+
+    @staticmethod
+    def printer() -> SimPrinter:
+        return SimPrinter()
+
+    def stem(self, program_name: str) -> str:
+        """The problem module's file-name stem: an identifier made of the given name."""
+        return identifier(self.name or program_name)
+
+    def files(self, program_name: str) -> tuple[tuple[str, str], ...]:
+        """(template, emitted file name) of every emitted file, problem module first."""
+        program = (PROGRAM_TEMPLATE, f"{self.stem(program_name)}_sim.py")
+        return (program, *((t, t.removesuffix(".jinja")) for t in RUNTIME_TEMPLATES))
+
+
+def identifier(text: str) -> str:
+    """``text`` reduced to a safe Python identifier (letters, digits, underscores)."""
+    out = re.sub(r"[^A-Za-z0-9_]", "_", text)[:60].strip("_") or "fgc_problem"
+    return f"p_{out}" if out[0].isdigit() else out
+
+
+def comment(text: str) -> str:
+    """``text`` made safe to place in a comment or docstring of emitted code."""
+    return re.sub(r"[^A-Za-z0-9_.+\-]", "_", text)[:60]

@@ -1,0 +1,223 @@
+"""emit: a Program → the simulator's files (a problem module plus its NumPy run-time).
+
+Everything the templates place is computed here or printed by :class:`SimPrinter`: the templates
+only loop over these fields. User-given names (problem, factor types) reach the emitted code only
+sanitised, in comments; variables, blocks and factors are referred to by index.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import jinja2
+
+import fgc
+from fgc.datafile import MAGIC
+from fgc.errors import FgcError
+from fgc.geometry import special
+from fgc.program import BlockSpec, Program
+
+from .config import SimConfig, comment
+from .printer import PrintedKernel, SimPrinter
+
+NOISE_KINDS = ("isotropic", "diagonal", "full")
+# variable type → (retraction kind, tangent dim, storage dim); vector spaces are matched below
+RETRACT_KINDS = {"Pose3": ("pose3", 6, 12), "Rot3": ("rot3", 3, 9), "Pose2": ("pose2", 3, 4),
+                 "Rot2": ("rot2", 1, 2)}
+VECTOR_TYPES = re.compile(r"Point2|Point3|ImuBias|Vector\d+")
+
+
+class EmitError(FgcError):
+    """The Program cannot be emitted as a simulator (unsupported type, inconsistent tables)."""
+
+
+def emit(program: Program, out_dir: str | Path, config: SimConfig | None = None) -> list[Path]:
+    """Write the simulator of ``program`` into ``out_dir`` (created if needed).
+
+    Returns the written paths, the problem module ``<name>_sim.py`` first. Emitting the same
+    Program twice gives byte-identical files.
+    """
+    config = config or SimConfig()
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
+                             undefined=jinja2.StrictUndefined, trim_blocks=True,
+                             lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+    context = _context(program, config)
+    paths = []
+    for template, file_name in config.files(program.name):
+        text = env.get_template(template).render(**context, file_name=file_name)
+        path = out / file_name
+        path.write_text(text)
+        paths.append(path)
+    return paths
+
+
+def _context(program: Program, config: SimConfig) -> dict:
+    printer = config.printer()
+    lit = printer.literal
+    sched = program.schedule
+    return {
+        "fgc_version": fgc.__version__,
+        "data_magic": MAGIC,
+        "problem_comment": comment(program.name),
+        "series_below": repr(float(special.SERIES_BELOW)),
+        "series": [(name, ", ".join(repr(float(c)) for c in reversed(coeffs)))
+                   for name, coeffs in sorted(special.SERIES.items())],
+        "coefficient_names": sorted(special.COEFFICIENT_FUNCTIONS),
+        "num_variables": len(program.variables),
+        "num_factors": len(program.factors),
+        "num_steps": len(sched.steps),
+        "num_levels": len(sched.levels),
+        "structure_class": sched.structure_class,
+        "solver_comment": comment(f"{program.solver.method}-{program.solver.linear}-"
+                                  f"{program.solver.ordering}-{program.solver.precision}"),
+        "solver": [(k, lit(v)) for k, v in _solver_options(program, config)],
+        "variable_dims": lit([v.dim for v in program.variables]),
+        "variable_storage": lit([v.storage_dim for v in program.variables]),
+        "retract_groups": lit(_retract_groups(program)),
+        "blocks": _blocks(program, printer),
+        "steps": [lit(s) for s in _steps(program)],
+        "back_substitution": lit(sched.back_substitution),
+        "clusters": lit(_clusters(program)),
+        "incremental": lit(_incremental(program)),
+    }
+
+
+def _clusters(program: Program) -> list[list[int]] | None:
+    """Variable indices per chain cluster (keyframe), None on a general graph."""
+    if program.schedule.structure_class != "chain":
+        return None
+    index = {v.key: i for i, v in enumerate(program.variables)}
+    return [[index[k] for k in cluster] for cluster in program.schedule.clusters]
+
+
+def _incremental(program: Program) -> list[tuple] | None:
+    plan = program.schedule.incremental
+    if plan is None:
+        return None
+    return [(u.keyframe, u.mode == "batch", list(u.clusters), u.kept) for u in plan.updates]
+
+
+def _solver_options(program: Program, config: SimConfig) -> list[tuple[str, object]]:
+    s = program.solver
+    return [("method", s.method), ("linear", s.linear), ("precision", s.precision),
+            ("max_iterations", int(s.max_iterations)),
+            ("lambda_initial", float(s.lambda_initial)),
+            ("lambda_factor", float(s.lambda_factor)),
+            ("lambda_upper_bound", float(config.lambda_upper_bound)),
+            ("eps_gradient", float(s.eps_gradient)), ("eps_step", float(s.eps_step)),
+            ("relative_error_tol", float(s.relative_error_tol)),
+            ("absolute_error_tol", float(config.absolute_error_tol))]
+
+
+def _retract_groups(program: Program) -> list[tuple[str, list[int]]]:
+    """Variable indices per retraction kind and size, in order of first appearance."""
+    groups: dict[tuple[str, int], list[int]] = {}
+    for i, v in enumerate(program.variables):
+        kind = _retract_kind(v.type_name, v.dim, v.storage_dim)
+        groups.setdefault((kind, v.storage_dim), []).append(i)
+    return [(kind, members) for (kind, _), members in groups.items()]
+
+
+def _retract_kind(type_name: str, dim: int, storage: int) -> str:
+    if VECTOR_TYPES.fullmatch(type_name) and dim == storage:
+        return "vector"
+    kind = RETRACT_KINDS.get(type_name)
+    if kind is None or kind[1:] != (dim, storage):
+        raise EmitError(f"the simulator has no retraction for variable type "
+                        f"'{comment(type_name)}' (dim {dim}, storage {storage})")
+    return kind[0]
+
+
+# --------------------------------------------------------------------------------------------
+# blocks
+# --------------------------------------------------------------------------------------------
+
+
+def _blocks(program: Program, printer: SimPrinter) -> list[dict]:
+    index = {v.key: i for i, v in enumerate(program.variables)}
+    storage = [v.storage_dim for v in program.variables]
+    lit = printer.literal
+    out = []
+    for b, block in enumerate(program.blocks):
+        ids = [j for j, f in enumerate(program.factors) if f.block == b]
+        instances = [[index[k] for k in program.factors[j].keys] for j in ids]
+        jac, cost = _kernels(b, block, printer)
+        out.append({
+            "number": b, "comment": comment(block.name), "jacobian": jac, "cost": cost,
+            "residual_dim": block.residual_dim,
+            "variable_dims": lit(block.variable_dims),
+            "variable_storage": lit([storage[i] for i in instances[0]]),
+            "members": lit(_members(block)),
+            "instances": lit(instances), "factor_ids": lit(ids),
+        })
+    return out
+
+
+def _kernels(b: int, block: BlockSpec, printer: SimPrinter
+             ) -> tuple[PrintedKernel, PrintedKernel]:
+    kernel, cost = block.kernel.kernel(), block.cost_kernel.kernel()
+    n_out = block.residual_dim * (1 + sum(block.variable_dims))
+    if len(kernel.outputs) != n_out:
+        raise EmitError(f"block type {b}: kernel has {len(kernel.outputs)} outputs, expected "
+                        f"{n_out}")
+    m, members = block.residual_dim, len(block.members)
+    n_params = sum(mem.noise_params for mem in block.members)
+    if len(cost.inputs) != len(kernel.inputs) + n_params or len(cost.outputs) != m + members + 1:
+        raise EmitError(f"block type {b}: cost kernel does not match the block's layout")
+    return (printer.kernel(kernel, f"jacobian_{b}"),
+            printer.kernel(cost, f"cost_{b}", outputs=range(m, m + members)))
+
+
+def _members(block: BlockSpec) -> list[tuple]:
+    """(first row, last row, noise kind, #noise params, #measurement numbers, touched block
+    variables) per member; a member touches a variable where its Jacobian is not fixed zero."""
+    out = []
+    for number, mem in enumerate(block.members):
+        first, last = mem.rows
+        rows = last - first
+        expected = {"isotropic": 1, "diagonal": rows, "full": rows * (rows + 1) // 2}
+        if expected.get(mem.noise_kind) != mem.noise_params:
+            raise EmitError(f"block '{comment(block.name)}' member {number}: noise kind "
+                            f"{comment(mem.noise_kind)} with {mem.noise_params} parameters")
+        touches = [k for k, s in enumerate(block.structure)
+                   if any(e != "0" for row in s[first:last] for e in row)]
+        out.append((first, last, NOISE_KINDS.index(mem.noise_kind), mem.noise_params,
+                    sum(size for _, size in mem.measurements), touches))
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# schedule
+# --------------------------------------------------------------------------------------------
+
+
+def _steps(program: Program) -> list[tuple]:
+    """Per elimination step: frontals, separator, entering (block type, instance, member),
+    children, parent."""
+    index = {v.key: i for i, v in enumerate(program.variables)}
+    member_of = _member_of(program)
+    out = []
+    for step in program.schedule.steps:
+        entering = []
+        for f in step.factors:
+            if f not in member_of:
+                raise EmitError(f"elimination step {step.index}: graph factor {f} is in no block")
+            entering.append(member_of[f])
+        parent = -1 if step.parent is None else step.parent
+        out.append(([index[k] for k in step.frontals], [index[k] for k in step.separator],
+                    entering, list(step.children), parent))
+    return out
+
+
+def _member_of(program: Program) -> dict[int, tuple[int, int, int]]:
+    """Graph factor index → (block type, instance within the type, member)."""
+    seen = [0] * len(program.blocks)
+    out = {}
+    for spec in program.factors:
+        for member, f in enumerate(spec.factors):
+            out[f] = (spec.block, seen[spec.block], member)
+        seen[spec.block] += 1
+    return out

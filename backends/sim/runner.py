@@ -1,0 +1,150 @@
+"""run: emit a Program's simulator, run it on one data file, return the result as fgc values."""
+
+from __future__ import annotations
+
+import json
+import re
+import runpy
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from fgc import geometry
+from fgc.datafile import ProblemData, write_data
+from fgc.errors import DataError, FgcError
+from fgc.geometry import LieGroup
+from fgc.program import Program
+
+from .config import SimConfig
+from .emitter import emit
+
+
+@dataclass(frozen=True)
+class SimResult:
+    """What the simulator computed.
+
+    ``values``/``storage``: the final estimate per Program variable key (fgc values / raw storage
+    arrays); ``status`` is "converged", "max_iterations" or "failed" and ``reason`` says which
+    stopping rule or failure (e.g. "relative_decrease", "lambda_limit", "singular");
+    ``final_error`` is GTSAM's graph error at ``values`` (the last accepted point);
+    ``cost_log`` holds the initial cost and the cost after each accepted step (incremental
+    runs: the initial and the final cost of the whole graph); ``updates`` lists, for an
+    incremental run, each keyframe's update (mode, first re-eliminated cluster, iterations,
+    status, window cost).
+    """
+
+    values: dict[str, LieGroup]
+    storage: dict[str, np.ndarray]
+    status: str
+    reason: str
+    iterations: int
+    initial_error: float | None
+    final_error: float | None
+    cost_log: tuple[float, ...]
+    precision: str
+    setup_seconds: float
+    solve_seconds: float
+    files: tuple[Path, ...]
+    updates: tuple[dict, ...] | None = None
+
+    @property
+    def converged(self) -> bool:
+        return self.status == "converged"
+
+
+def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | None = None,
+        precision: str | None = None, config: SimConfig | None = None,
+        in_process: bool = True, incremental: bool = False) -> SimResult:
+    """Emit ``program``'s simulator into ``out_dir`` (a temporary directory if None), run it on
+    ``data`` (a ProblemData, written next to it as ``data.txt``, or a data file path) in this
+    process (or as a subprocess) and read its result. ``precision`` overrides the Program's;
+    ``incremental`` runs keyframe by keyframe along the Program's incremental plan.
+
+    Raises DataError when the data does not fit the Program (naming the line and factor).
+    """
+    if out_dir is None:
+        with tempfile.TemporaryDirectory(prefix="fgc-sim-") as tmp:
+            return run(program, data, tmp, precision, config, in_process, incremental)
+    out = Path(out_dir)
+    files = tuple(emit(program, out, config))
+    if isinstance(data, ProblemData):
+        data_path = out / "data.txt"
+        write_data(data, data_path)
+    else:
+        data_path = Path(data)
+    result_path = out / "result.json"
+    if incremental and program.schedule.incremental is None:
+        raise FgcError("the Program has no incremental plan (compile with incremental_k)")
+    if in_process:
+        raw = _run_in_process(program, files[0], data_path, result_path, precision,
+                              incremental)
+    else:
+        raw = _run_subprocess(files[0], data_path, result_path, precision, incremental)
+        if raw["status"] == "data_error":
+            error = DataError(raw["message"])
+            error.factor, error.variable = raw["factor"], raw["variable"]
+            raise DataError(_explain(program, error))
+    return _result(program, raw, files)
+
+
+def _run_in_process(program: Program, module: Path, data: Path, result: Path,
+                    precision: str | None, incremental: bool) -> dict:
+    namespace = runpy.run_path(str(module), run_name="fgc_sim_problem")
+    try:
+        return namespace["run"](str(data), str(result), precision, incremental)
+    except namespace["LIB"].runtime.SimDataError as exc:
+        raise DataError(_explain(program, exc)) from None
+
+
+def _run_subprocess(module: Path, data: Path, result: Path, precision: str | None,
+                    incremental: bool) -> dict:
+    cmd = [sys.executable, str(module), str(data), str(result)]
+    if precision:
+        cmd += ["--precision", precision]
+    if incremental:
+        cmd.append("--incremental")
+    result.unlink(missing_ok=True)
+    proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
+    if proc.returncode not in (0, 1, 2) or not result.is_file():
+        raise FgcError(f"the simulator failed (exit {proc.returncode}):\n{proc.stderr.strip()}")
+    return json.loads(result.read_text())
+
+
+def _explain(program: Program, exc: Exception) -> str:
+    """The simulator's data error, plus the factor or variable it concerns in the user's terms."""
+    message = str(exc)
+    factor, variable = getattr(exc, "factor", None), getattr(exc, "variable", None)
+    if factor is not None and 0 <= factor < len(program.factors):
+        spec = program.factors[factor]
+        message += (f" [factor block '{program.blocks[spec.block].name}' on variables "
+                    f"{list(spec.keys)}, graph factors {list(spec.factors)}]")
+    if variable is not None and 0 <= variable < len(program.variables):
+        spec = program.variables[variable]
+        message += f" [variable '{spec.key}' ({spec.type_name})]"
+    return message
+
+
+def _result(program: Program, raw: dict, files: tuple[Path, ...]) -> SimResult:
+    storage, values = {}, {}
+    for spec, numbers in zip(program.variables, raw["values"], strict=True):
+        arr = np.asarray(numbers, dtype=np.float64)
+        storage[spec.key] = arr
+        values[spec.key] = value_type(spec.type_name, spec.dim).from_storage(arr)
+    return SimResult(values, storage, raw["status"], raw["reason"], raw["iterations"],
+                     raw["initial_error"], raw["final_error"], tuple(raw["cost_log"]),
+                     raw["precision"], raw["setup_seconds"], raw["solve_seconds"], files,
+                     None if raw.get("incremental") is None else tuple(raw["incremental"]))
+
+
+def value_type(type_name: str, dim: int) -> type[LieGroup]:
+    """The fgc geometry class named ``type_name`` (``VectorN`` for any N)."""
+    if re.fullmatch(r"Vector\d+", type_name):
+        return geometry.vector_type(int(type_name[6:]))
+    cls = getattr(geometry, type_name, None)
+    if not (isinstance(cls, type) and issubclass(cls, LieGroup) and cls.dim == dim):
+        raise FgcError(f"no fgc value type '{type_name}' of dimension {dim}")
+    return cls
