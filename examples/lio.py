@@ -48,15 +48,15 @@ def _velocities(times: np.ndarray, pos: np.ndarray) -> np.ndarray:
 
 def build(N: int = 30, first: int = 1, gps_sigma: float = 1.0,  # noqa: N803 - paper's N
           lidar_sigma_rot: float = 0.01, lidar_sigma_pos: float = 0.05, seed: int = 0,
-          error_mode: str = "logmap") -> fgc.Graph:
+          error_mode: str = "logmap", keyframe_dt: float | None = None) -> fgc.Graph:
+    """``N`` keyframes from GPS fix ``first``: at the fixes (about 1 Hz, at most 470), or every
+    ``keyframe_dt`` seconds (positions interpolated between fixes, a GPS factor only on the
+    keyframe nearest each fix) — e.g. ``keyframe_dt=0.4`` gives room for N = 1000."""
     times, gps = read_gps(example_data_file("KittiGps_converted.txt"))
-    if N < 2 or first < 0 or first + N > len(times):
-        raise fgc.DataError(f"lio: N={N} keyframes from GPS fix {first} exceed the "
-                            f"{len(times)} fixes in the data")
+    t, p, fixes = _keyframes(times, gps, N, first, keyframe_dt)
     log = read_kitti_imu(example_data_file("KittiEquivBiasedImu.txt"))
     params = kitti_params(example_data_file("KittiEquivBiasedImu_metadata.txt"))
     params = params.replace(error_mode=error_mode)
-    t, p = times[first:first + N], gps[first:first + N]
     pims = [_preintegrate(log, params, t[i], t[i + 1]) for i in range(N - 1)]
     rots = [np.eye(3)]
     for pim in pims:
@@ -68,8 +68,29 @@ def build(N: int = 30, first: int = 1, gps_sigma: float = 1.0,  # noqa: N803 - p
         graph.add_variable(f"x{i}", ref[i])
         graph.add_variable(f"v{i}", Vector3(vel[i]))
         graph.add_variable(f"b{i}", ImuBias(np.zeros(6)))
-    _add_factors(graph, N, pims, ref, p, gps_sigma, lidar_sigma_rot, lidar_sigma_pos, seed)
+    _add_factors(graph, N, pims, ref, fixes, gps_sigma, lidar_sigma_rot, lidar_sigma_pos, seed)
     return graph
+
+
+def _keyframes(times, gps, n: int, first: int, dt: float | None):
+    """Keyframe times, reference positions and the GPS fixes [(keyframe, position)]."""
+    if dt is None:
+        if n < 2 or first < 0 or first + n > len(times):
+            raise fgc.DataError(f"lio: N={n} keyframes from GPS fix {first} exceed the "
+                                f"{len(times)} fixes in the data")
+        t, p = times[first:first + n], gps[first:first + n]
+        return t, p, list(enumerate(p))
+    t = times[first] + dt * np.arange(n)
+    if n < 2 or not dt > 0 or t[-1] > times[-1]:
+        raise fgc.DataError(f"lio: N={n} keyframes every {dt} s from GPS fix {first} run past "
+                            f"the data's last fix ({times[-1] - times[first]:.0f} s later)")
+    p = np.stack([np.interp(t, times, gps[:, c]) for c in range(3)], axis=1)
+    fixes = []
+    for j in range(first, len(times)):
+        k = int(round((times[j] - t[0]) / dt))
+        if 0 <= k < n and abs(t[k] - times[j]) <= dt / 2:
+            fixes.append((k, gps[j]))
+    return t, p, fixes
 
 
 def _add_factors(graph, n, pims, ref, gps, gps_sigma, sigma_rot, sigma_pos, seed) -> None:
@@ -84,5 +105,5 @@ def _add_factors(graph, n, pims, ref, gps, gps_sigma, sigma_rot, sigma_pos, seed
         noise = np.concatenate([rng.normal(size=3) * sigma_rot, rng.normal(size=3) * sigma_pos])
         measured = ref[i].between(ref[i + 1]).retract(noise)
         graph.add(LidarOdometryFactor(f"x{i}", f"x{i + 1}", measured, lidar_noise))
-    for i in range(n):
-        graph.add(GPSFactor(f"x{i}", gps[i], fgc.noise.isotropic(3, gps_sigma)))
+    for i, position in gps:
+        graph.add(GPSFactor(f"x{i}", position, fgc.noise.isotropic(3, gps_sigma)))

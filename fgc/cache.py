@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 import pickle
+import re
 from collections.abc import Callable
 from pathlib import Path
 from typing import TypeVar
@@ -20,6 +21,12 @@ def cache_dir() -> Path:
     path = Path(root)
     path.mkdir(parents=True, exist_ok=True)
     return path
+
+
+def entry(kind: str, name: str, key: str) -> Path:
+    """Path of a cache entry; ``name`` (a user's factor name) is reduced to safe characters."""
+    safe = re.sub(r"[^A-Za-z0-9_.+-]", "_", name)[:60] or "_"
+    return cache_dir() / f"{kind}-{safe}-{key[:24]}.pkl"
 
 
 def load(path: Path):

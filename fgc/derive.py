@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
-from fgc.cache import cache_dir, load, store
+from fgc.cache import entry, load, store
 from fgc.dsl import FactorType, MatrixType, storage_dim
 from fgc.errors import DerivationError
 from fgc.geometry import LieGroup, special
@@ -140,7 +140,7 @@ def derive(ftype: FactorType, use_cache: bool = True) -> SymbolicFactor:
     key = f"{ftype.fingerprint()}-{_code_version()}"
     if key in _MEMO:
         return _MEMO[key]
-    path = cache_dir() / f"derive-{ftype.name}-{key[:24]}.pkl"
+    path = entry("derive", ftype.name, key)
     result = load(path) if use_cache else None
     if result is None:
         result = _derive_uncached(ftype, key)

@@ -46,7 +46,7 @@ from pathlib import Path
 
 import numpy as np
 
-from fgc.cache import cache_dir, cached
+from fgc.cache import cached, entry
 from fgc.derive import Block, SymbolicFactor, derive
 from fgc.dsl import Factor, FactorType, Graph
 from fgc.errors import DslError
@@ -245,7 +245,7 @@ def block_type(specs: Sequence[MemberSpec]) -> BlockType:
     name = "+".join(m.name for m in members)
     key = _block_key(members, variables)
     if key not in _MEMO:  # one object per pattern: its numeric kernels compile once
-        path = cache_dir() / f"fuse-{name}-{key[:24]}.pkl"
+        path = entry("fuse", name, key)
         built = cached(path, lambda: build_kernels(specs[0][0], derived, members, variables,
                                                    tuple(meas_blocks)))
         _MEMO[key] = BlockType(name, key, variables, tuple(meas_blocks), tuple(members), *built)

@@ -47,7 +47,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from fgc.cache import cache_dir, cached
+from fgc.cache import cached, entry
 from fgc.derive import derive, random_measurement
 from fgc.dsl import Factor
 from fgc.errors import StructureError
@@ -248,8 +248,7 @@ def factor_structure(f: Factor) -> FactorStructure:
     sf = derive(f.type)
     key = (sf.fingerprint, f.noise.kind)
     if key not in _STRUCTURES:
-        name = f"structure-{f.type.name}-{f.noise.kind}-{sf.fingerprint[:24]}.pkl"
-        path = cache_dir() / name
+        path = entry("structure", f"{f.type.name}-{f.noise.kind}", sf.fingerprint)
         _STRUCTURES[key] = cached(path, lambda: _factor_structure(f, sf))
     return _STRUCTURES[key]
 

@@ -15,7 +15,8 @@ import pytest
 
 import fgc
 from fgc import noise
-from fgc.derive import cache_dir, derive
+from fgc.cache import cache_dir
+from fgc.derive import derive
 from fgc.factors import (
     BetweenFactor,
     CombinedImuFactor,

@@ -677,7 +677,7 @@ def mp_coefficient(name: str, t: float):
 
 
 def _coefficient_points() -> np.ndarray:
-    switch = special._SERIES_BELOW
+    switch = special.SERIES_BELOW
     return np.unique(np.concatenate([
         [0.0, 1e-300, 1e-30, 1e-16, 1e-8, 1e-4, 0.01, 0.5, 1.0],
         switch * np.array([1 - 1e-12, 1 - 1e-7, 1.0, 1 + 1e-7, 1 + 1e-12]),

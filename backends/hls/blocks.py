@@ -1,0 +1,131 @@
+"""Per block type: the data layout and printed kernels the kernel template places.
+
+A factor block (paper A's factor block, paper B's EJCC) has two modes on shared arithmetic:
+residual + Jacobian (``jacobian_<b>``, writing the instance's ``[J | r]`` rows straight into
+its slot of the A buffer) and residual + cost (``cost_<b>``, writing each member's ½‖W r‖²).
+Everything here is offsets and sizes; C++ syntax comes from the printer.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from fgc.kernel import Kernel, drop_dead
+from fgc.program import BlockSpec, Program
+from fgc_backends.hls.names import comment
+from fgc_backends.hls.printer import PrintedKernel, print_kernel
+
+NOISE_KINDS = {"isotropic": 0, "diagonal": 1, "full": 2}
+
+
+@dataclass(frozen=True)
+class VarSlot:
+    """Variable ``k`` of a block: storage words at ``in_off`` of the kernel input, tangent
+    columns ``col … col + dim`` of the block's rows."""
+
+    k: int
+    storage: int
+    in_off: int
+    dim: int
+    col: int
+
+
+@dataclass(frozen=True)
+class MemberSlot:
+    """One member factor: rows ``r0 … r0 + rows``, its noise and where its data sits.
+
+    ``*_data`` offsets are into the instance's data-file line; ``meas_in`` / ``noise_in`` into the
+    Jacobian / cost kernel's input array.
+    """
+
+    r0: int
+    rows: int
+    kind: int
+    n_params: int
+    meas_words: int
+    meas_data: int
+    meas_in: int
+    noise_data: int
+    noise_in: int
+    robust_data: int
+
+
+@dataclass(frozen=True)
+class BlockContext:
+    index: int
+    comment: str
+    m: int  # residual rows
+    d: int  # tangent columns; rows are stored with stride d + 1 (right-hand side last)
+    n_in: int
+    n_cost_in: int
+    variables: tuple[VarSlot, ...]
+    members: tuple[MemberSlot, ...]
+    instances: tuple[int, ...]
+    jacobian: PrintedKernel
+    jacobian_targets: tuple[tuple[int, str], ...]  # (index into the rows [J | r], expression)
+    cost: PrintedKernel  # outputs: each member's ½‖W r‖²
+
+    @property
+    def stride(self) -> int:
+        return self.d + 1
+
+
+def block_contexts(program: Program) -> tuple[BlockContext, ...]:
+    """A :class:`BlockContext` per block type of ``program``."""
+    index = {v.key: i for i, v in enumerate(program.variables)}
+    out = []
+    for b, block in enumerate(program.blocks):
+        instances = tuple(j for j, f in enumerate(program.factors) if f.block == b)
+        first = program.factors[instances[0]]
+        storage = [program.variables[index[k]].storage_dim for k in first.keys]
+        out.append(_block(b, block, storage, instances))
+    return tuple(out)
+
+
+def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, ...]):
+    variables, pos, col = [], 0, 0
+    for k, (s, dim) in enumerate(zip(storage, block.variable_dims, strict=True)):
+        variables.append(VarSlot(k, s, pos, dim, col))
+        pos, col = pos + s, col + dim
+    members, data, meas_in = [], 0, pos
+    n_in = pos + sum(n for m in block.members for _, n in m.measurements)
+    noise_in = n_in
+    for m in block.members:
+        words = sum(n for _, n in m.measurements)
+        members.append(MemberSlot(m.rows[0], m.rows[1] - m.rows[0], NOISE_KINDS[m.noise_kind],
+                                  m.noise_params, words, data, meas_in, data + words, noise_in,
+                                  data + words + m.noise_params))
+        data += words + m.noise_params + 2
+        meas_in += words
+        noise_in += m.noise_params
+    where = f"block type {b} ({comment(block.name)})"
+    kernel = block.kernel.kernel()
+    jacobian = print_kernel(kernel, [f"in[{i}]" for i in range(len(kernel.inputs))], where)
+    targets = _targets(block.residual_dim, variables, jacobian.outputs)
+    return BlockContext(b, comment(block.name), block.residual_dim, col, n_in, noise_in,
+                        tuple(variables), tuple(members), instances, jacobian, targets,
+                        _cost(block, where))
+
+
+def _targets(m: int, variables: list[VarSlot], outputs: tuple[str, ...]):
+    """Kernel outputs (residual, then each variable's m × dim Jacobian) → row-major [J | r]."""
+    d = sum(v.dim for v in variables)
+    targets = [(i * (d + 1) + d, outputs[i]) for i in range(m)]
+    pos = m
+    for v in variables:
+        for r in range(m):
+            for j in range(v.dim):
+                targets.append((r * (d + 1) + v.col + j, outputs[pos]))
+                pos += 1
+    return tuple(sorted(targets))
+
+
+def _cost(block: BlockSpec, where: str) -> PrintedKernel:
+    """The cost kernel reduced to the members' ½‖W r‖² (robust losses are applied in C++)."""
+    full = block.cost_kernel.kernel()
+    m, n = block.residual_dim, len(block.members)
+    outputs = tuple(sp.sympify(e) for e in full.outputs[m:m + n])
+    kernel = Kernel(full.inputs, drop_dead(full.assignments, outputs), outputs)
+    return print_kernel(kernel, [f"in[{i}]" for i in range(len(full.inputs))], where + " cost")

@@ -1,0 +1,56 @@
+"""Build and run an emitted project with the host compiler: ``make csim`` and ``make native``.
+
+The project's Makefile is the single description of the build; these helpers only call it with
+fixed target names and fixed file names inside the project folder (``data.txt``, ``result.txt``),
+so no caller-chosen path ever reaches make or the shell.
+"""
+
+from __future__ import annotations
+
+import subprocess
+from pathlib import Path
+
+from fgc.datafile import ProblemData, write_data
+from fgc.errors import FgcError
+from fgc.program import Program
+from fgc_backends.hls.emitter import HlsProject
+from fgc_backends.hls.results import HlsResult, read_result
+
+DATA_FILE, RESULT_FILE = "data.txt", "result.txt"
+BUILD_TIMEOUT_S = 900
+
+
+class HlsBuildError(FgcError):
+    """``make`` failed on an emitted project; the message holds the compiler's output."""
+
+
+def make(project: HlsProject, target: str) -> str:
+    """Run ``make -s <target>`` in the project folder; returns its standard output."""
+    if target not in ("csim", "native", "clean"):
+        raise ValueError(f"unknown make target {target!r}")
+    try:
+        done = subprocess.run(["make", "-s", target], cwd=project.directory, capture_output=True,
+                              text=True, timeout=BUILD_TIMEOUT_S, check=False)
+    except subprocess.TimeoutExpired:
+        raise HlsBuildError(f"make {target} in {project.directory} took over "
+                            f"{BUILD_TIMEOUT_S} s") from None
+    if done.returncode != 0:
+        output = (done.stdout + done.stderr)[-4000:]
+        raise HlsBuildError(f"make {target} failed in {project.directory} "
+                            f"(exit {done.returncode}):\n{output}")
+    return done.stdout
+
+
+def run_csim(project: HlsProject, program: Program, data: ProblemData) -> HlsResult:
+    """Write ``data`` as the project's ``data.txt``, build and run the testbench (``make csim``)
+    and return the parsed ``result.txt``."""
+    write_data(data, project.directory / DATA_FILE)
+    result = project.directory / RESULT_FILE
+    result.unlink(missing_ok=True)
+    make(project, "csim")
+    return read_result(result, program)
+
+
+def library_path(project: HlsProject) -> Path:
+    """Where ``make native`` puts the shared library."""
+    return project.directory / f"lib{project.name}.so"

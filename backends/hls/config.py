@@ -1,0 +1,116 @@
+"""Configuration of the HLS C++ backend: one documented, frozen dataclass.
+
+Like SymForce's code-generation configs, the config answers where the backend's templates live
+(:meth:`HlsConfig.template_dir`) and which sympy printer prints its kernels
+(:meth:`HlsConfig.printer`). Everything that shapes the emitted C++ beyond the Program itself is
+here; there are no global flags.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from fgc.errors import FgcError
+
+SCALARS = ("float", "double")
+_AP_FIXED = re.compile(r"^ap_fixed<\s*(\d{1,4})\s*,\s*(-?\d{1,4})\s*>$")
+_PART = re.compile(r"^[A-Za-z0-9_-]{1,64}$")
+
+
+class HlsConfigError(FgcError):
+    """An HLS backend option is invalid, or the Program exceeds the backend's limits."""
+
+
+@dataclass(frozen=True)
+class HlsConfig:
+    """Options of the HLS backend.
+
+    - ``scalar``: the C++ scalar type ``T`` of the whole accelerator: ``"float"`` (paper A and B's
+      hardware), ``"double"``, or ``"ap_fixed<W,I>"`` (needs the Xilinx ``ap_types`` headers of the
+      optional ``hls4ml`` package; see :func:`ap_types_include`).
+    - ``part`` / ``clock_ns``: FPGA part and clock period for ``run_hls.tcl`` (ZC706, 7 ns:
+      about 143 MHz).
+    - ``unit_sets``: QR/Cholesky unit sets that eliminate the steps of one level side by side;
+      ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
+    - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
+      widest elimination step this backend accepts; larger Programs fail at emit time.
+    - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation and native build.
+    - ``lambda_upper_bound`` / ``absolute_error_tol``: LM gives up when μ would pass the bound;
+      it stops once the cost is at most the tolerance (the simulator's ``SimConfig`` options,
+      same defaults, so both backends run the same algorithm).
+    """
+
+    scalar: str = "float"
+    part: str = "xc7z045ffg900-2"
+    clock_ns: float = 7.0
+    unit_sets: int | None = None
+    max_variables: int = 8192
+    max_step_columns: int = 512
+    cxx: str = "g++"
+    cxxflags: tuple[str, ...] = ("-std=c++17", "-O2", "-Wall", "-Wextra", "-Werror",
+                                 "-Wno-unknown-pragmas")
+    lambda_upper_bound: float = 1e10
+    absolute_error_tol: float = 1e-14
+
+    def check(self) -> None:
+        """Raise :class:`HlsConfigError` naming the first invalid option."""
+        if self.scalar not in SCALARS and not _AP_FIXED.match(self.scalar):
+            raise HlsConfigError(f"HLS scalar type {self.scalar!r}: expected 'float', 'double' "
+                                 "or 'ap_fixed<W,I>'")
+        if not _PART.match(self.part):
+            raise HlsConfigError(f"FPGA part {self.part!r} is not a plain part name")
+        if not (0.5 <= float(self.clock_ns) <= 1000.0):
+            raise HlsConfigError(f"clock period {self.clock_ns} ns is outside 0.5 … 1000 ns")
+        if self.unit_sets is not None and not 1 <= int(self.unit_sets) <= 8:
+            raise HlsConfigError(f"unit_sets must be 1 … 8, got {self.unit_sets}")
+        for name in ("max_variables", "max_step_columns"):
+            if int(getattr(self, name)) < 1:
+                raise HlsConfigError(f"{name} must be ≥ 1, got {getattr(self, name)}")
+        for flag in (self.cxx, *self.cxxflags):
+            if not re.match(r"^[A-Za-z0-9_+=./-]+$", flag):
+                raise HlsConfigError(f"compiler option {flag!r} has characters a Makefile would "
+                                     "interpret")
+
+    @property
+    def is_fixed_point(self) -> bool:
+        return self.scalar.startswith("ap_fixed")
+
+    @property
+    def scalar_cxx(self) -> str:
+        """The scalar type as C++ text (whitespace normalised)."""
+        m = _AP_FIXED.match(self.scalar)
+        return f"ap_fixed<{m.group(1)}, {m.group(2)}>" if m else self.scalar
+
+    @staticmethod
+    def template_dir() -> Path:
+        """The folder of this backend's jinja templates."""
+        return Path(__file__).resolve().parent / "templates"
+
+    def printer(self, symbols: dict | None = None):
+        """A C++ printer for this backend's kernels (``symbols``: sympy Symbol → C++ text)."""
+        from fgc_backends.hls.printer import HlsCodePrinter
+
+        return HlsCodePrinter(symbols or {})
+
+
+def ap_types_include() -> Path:
+    """The folder holding ``ap_fixed.h`` from the optional ``hls4ml`` package.
+
+    hls4ml ships Xilinx's Apache-2.0 ``ap_types`` headers; fgc never vendors them. Raises
+    :class:`HlsConfigError` with the install command when they are missing.
+    """
+    import importlib.util
+
+    spec = importlib.util.find_spec("hls4ml")
+    if spec is not None and spec.submodule_search_locations:
+        root = Path(next(iter(spec.submodule_search_locations)))
+        for candidate in sorted(root.glob("templates/*/ap_types")):
+            if (candidate / "ap_fixed.h").is_file():
+                if not re.match(r"^[A-Za-z0-9_./+-]+$", str(candidate)):
+                    raise HlsConfigError(f"the ap_types folder {str(candidate)!r} has characters "
+                                         "a Makefile or tcl script would interpret")
+                return candidate
+    raise HlsConfigError("scalar type ap_fixed needs Xilinx's ap_types headers, which fgc takes "
+                         "from the optional hls4ml package: pip install 'fgc[hls-fixed]'")

@@ -1,0 +1,163 @@
+"""emit: a Program → a Vitis HLS project (kernel, header, testbench, native wrapper, tcl, Makefile).
+
+Everything a template places is computed here (tables, offsets, sizes) or printed by the backend's
+printer (kernels, special functions, literals); templates only loop over these fields. The only
+user text that reaches the files goes through :mod:`fgc_backends.hls.names`. Limits are checked
+first, so a Program the backend cannot build fails here with an :class:`HlsConfigError`, never in
+g++.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import jinja2
+
+import fgc
+from fgc.datafile import MAGIC
+from fgc.program import Program
+from fgc_backends.hls.blocks import block_contexts
+from fgc_backends.hls.config import HlsConfig, HlsConfigError, ap_types_include
+from fgc_backends.hls.lint import lint_project
+from fgc_backends.hls.names import comment, identifier
+from fgc_backends.hls.printer import HlsCodePrinter
+from fgc_backends.hls.results import REASONS, STATUSES
+from fgc_backends.hls.retract import retract_kinds
+from fgc_backends.hls.special import SERIES_BELOW, coefficient_functions
+from fgc_backends.hls.tables import build_tables, factor_data_words
+
+# template → emitted file name ({name} is the project identifier)
+FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
+         ("tb.cpp.jinja", "tb_{name}.cpp"), ("native.cpp.jinja", "native_{name}.cpp"),
+         ("run_hls.tcl.jinja", "run_hls.tcl"), ("Makefile.jinja", "Makefile"))
+SYNTHESISED = ("kernel.h.jinja", "kernel.cpp.jinja")
+HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
+# Xilinx's ap_types headers trip g++'s flow-based warnings once inlined into our code (-isystem
+# cannot silence those); the warnings are theirs, so only these two are relaxed for ap_fixed.
+FIXED_POINT_FLAGS = ("-Wno-uninitialized", "-Wno-maybe-uninitialized")
+MU_MIN = 1e-30  # LM's μ never falls below this (the simulator's MU_MIN): damping stays on
+
+
+@dataclass(frozen=True)
+class HlsProject:
+    """An emitted project: its folder, identifier and files (template order)."""
+
+    directory: Path
+    name: str
+    files: tuple[Path, ...]
+    config: HlsConfig
+
+
+def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
+         name: str | None = None) -> HlsProject:
+    """Write the HLS project of ``program`` into ``out_dir`` (created if needed).
+
+    ``name`` (default: the Program's name) is sanitised into the project identifier used for
+    file names and the top function ``<name>_top``. Emitting the same Program twice gives
+    byte-identical files. Every synthesised file is linted (:func:`lint_project`).
+    """
+    config = config or HlsConfig()
+    config.check()
+    check_limits(program, config)
+    project = identifier(name or program.name)
+    context = _context(program, config, project)
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
+                             undefined=jinja2.StrictUndefined, trim_blocks=True,
+                             lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for template, pattern in FILES:
+        path = out / pattern.format(name=project)
+        path.write_text(env.get_template(template).render(**context, template=template,
+                                                          file_name=path.name))
+        paths.append(path)
+    result = HlsProject(out, project, tuple(paths), config)
+    lint_project(result, [out / FILES[i][1].format(name=project)
+                          for i, (t, _) in enumerate(FILES) if t in SYNTHESISED])
+    return result
+
+
+def check_limits(program: Program, config: HlsConfig) -> None:
+    """Raise :class:`HlsConfigError` if ``program`` exceeds what ``config`` can build."""
+    if program.max_variables > config.max_variables:
+        raise HlsConfigError(f"the Program's window of {program.max_variables} variables exceeds "
+                             f"the HLS backend's maximum of {config.max_variables} "
+                             "(HlsConfig.max_variables)")
+    if len(program.variables) > program.max_variables:
+        raise HlsConfigError(f"{len(program.variables)} variables exceed the compiled maximum "
+                             f"{program.max_variables}")
+    widest = max(s.frontal_dim + s.separator_dim for s in program.schedule.steps)
+    if widest > config.max_step_columns:
+        raise HlsConfigError(f"an elimination step has {widest} columns, more than the backend's "
+                             f"{config.max_step_columns} (HlsConfig.max_step_columns)")
+    if program.schedule.incremental is not None:
+        raise HlsConfigError("the HLS backend runs batch solves only; compile without "
+                             "incremental_k")
+    if config.is_fixed_point:
+        ap_types_include()  # a clear error now rather than a missing header in g++
+
+
+def _epsilon(config: HlsConfig) -> float:
+    """Machine epsilon of the scalar type (the LSB for fixed point)."""
+    if config.scalar == "float":
+        return 2.0 ** -23
+    if config.scalar == "double":
+        return 2.0 ** -52
+    width, integer = (int(x) for x in config.scalar_cxx[9:-1].split(","))
+    return 2.0 ** -(width - integer)
+
+
+def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter) -> dict:
+    s, eps = program.solver, _epsilon(config)
+    lit = printer.literal
+    lm = s.method == "lm"
+    tries = 1
+    if lm:  # μ grows from at least MU_MIN by lambda_factor until it passes the upper bound
+        mu = MU_MIN
+        while mu <= config.lambda_upper_bound:
+            mu, tries = mu * s.lambda_factor, tries + 1
+    return {
+        "lm": lm, "cholesky": s.linear == "cholesky", "max_iterations": int(s.max_iterations),
+        "max_tries": tries, "lambda_initial": lit(s.lambda_initial if lm else 0.0),
+        "lambda_factor": lit(s.lambda_factor), "lambda_upper_bound": lit(config.lambda_upper_bound),
+        "mu_min": lit(MU_MIN), "eps_gradient": lit(s.eps_gradient),
+        "eps_step": lit(max(s.eps_step, 10 * eps)), "tol": lit(s.relative_error_tol),
+        "epsilon": lit(eps), "resolution": lit(16 * eps),
+        "absolute_error_tol": lit(config.absolute_error_tol), "singular_eps": lit(10 * eps),
+        "comment": comment(f"{s.method} {s.linear} {s.ordering} n_u={s.units} cpe={s.cpe}"),
+    }
+
+
+def _context(program: Program, config: HlsConfig, project: str) -> dict:
+    printer = HlsCodePrinter({})
+    solver = _solver_context(program, config, printer)
+    tables = build_tables(program, damped=solver["lm"], cholesky=solver["cholesky"])
+    two_ended = program.schedule.ordering == "two-ended"
+    unit_sets = config.unit_sets or (2 if two_ended else 1)
+    include = [str(ap_types_include())] if config.is_fixed_point else []
+    return {
+        "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
+        "problem_comment": comment(program.name), "data_magic": MAGIC,
+        "scalar": config.scalar_cxx, "fixed_point": config.is_fixed_point,
+        "include_dirs": include, "part": config.part, "clock_ns": repr(float(config.clock_ns)),
+        "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
+                                                 * config.is_fixed_point),
+        "units": max(1, int(program.solver.units)), "cpe": max(1, int(program.solver.cpe)),
+        "unit_sets": unit_sets, "structure_comment": comment(
+            f"{program.schedule.structure_class} graph, {program.schedule.ordering} ordering"),
+        "constants": tables.constants, "sizes": {
+            **dict(tables.constants),
+            "MAX_LEVEL_WIDTH": max(len(level) for level in program.schedule.levels),
+            "MAX_STORAGE": max(v.storage_dim for v in program.variables)},
+        "max_variables": program.max_variables,
+        "header_tables": [t for t in tables.arrays if t.name in HEADER_TABLES],
+        "tables": [t for t in tables.arrays if t.name not in HEADER_TABLES],
+        "blocks": block_contexts(program), "retracts": retract_kinds(program),
+        "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
+        "solver": solver, "statuses": STATUSES, "reasons": REASONS,
+        "max_level_width": max(len(level) for level in program.schedule.levels),
+        "max_line_chars": 32 * max([v.storage_dim for v in program.variables] + [
+            factor_data_words(program, b) for b in range(len(program.blocks))]) + 64,
+    }

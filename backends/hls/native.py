@@ -1,0 +1,143 @@
+"""The native fast path: the emitted C++ built as a shared library and called through ctypes.
+
+The same kernel object the C simulation links (``make native``) is wrapped by ``native_<name>.cpp``,
+whose ``fgc_run`` converts double arrays to the scalar type in static buffers and calls
+``<name>_top``: the solver allocates nothing. :func:`run` emits into a content-addressed folder
+under fgc's cache directory, builds once and keeps the loaded library for later calls.
+
+    from fgc_backends.hls import native
+    result = native.run(program, problem_data(graph, program))
+"""
+
+from __future__ import annotations
+
+import ctypes
+import hashlib
+import os
+import shutil
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+import fgc
+from fgc.cache import cache_dir
+from fgc.datafile import ProblemData
+from fgc.errors import DataError
+from fgc.program import Program
+from fgc_backends.hls.build import library_path, make
+from fgc_backends.hls.config import HlsConfig
+from fgc_backends.hls.emitter import HlsProject, emit
+from fgc_backends.hls.names import identifier
+from fgc_backends.hls.results import HlsResult, result_from_arrays
+from fgc_backends.hls.tables import factor_data_words
+
+_DOUBLES = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
+_INTS = np.ctypeslib.ndpointer(dtype=np.int32, flags="C_CONTIGUOUS")
+_LOADED: dict[str, NativeSolver] = {}
+
+
+@dataclass
+class NativeSolver:
+    """A loaded native build of one Program: :meth:`solve` on flat arrays, :meth:`run` on data."""
+
+    program: Program
+    project: HlsProject
+    library: ctypes.CDLL
+    n_x: int
+    n_data: int
+
+    @classmethod
+    def load(cls, program: Program, project: HlsProject) -> NativeSolver:
+        lib = ctypes.CDLL(str(library_path(project)))
+        lib.fgc_sizes.argtypes = [_INTS]
+        lib.fgc_run.argtypes = [_DOUBLES, _DOUBLES, _DOUBLES, _DOUBLES, _INTS]
+        lib.fgc_run.restype = None
+        sizes = np.zeros(4, dtype=np.int32)
+        lib.fgc_sizes(sizes)
+        if (sizes[0], sizes[1]) != (len(program.variables), len(program.factors)):
+            raise DataError(f"{library_path(project)} was built for another structure")
+        return cls(program, project, lib, int(sizes[2]), int(sizes[3]))
+
+    def flatten(self, data: ProblemData) -> tuple[np.ndarray, np.ndarray]:
+        """The data as the kernel's two flat arrays, checked against the compiled layout."""
+        p = self.program
+        if len(data.variables) != len(p.variables) or len(data.factors) != len(p.factors):
+            raise DataError(f"the data has {len(data.variables)} variables and "
+                            f"{len(data.factors)} factors; the Program {len(p.variables)} and "
+                            f"{len(p.factors)}")
+        for i, (v, spec) in enumerate(zip(data.variables, p.variables, strict=True)):
+            if len(v) != spec.storage_dim:
+                raise DataError(f"variable {i} ('{spec.key}') needs {spec.storage_dim} numbers, "
+                                f"got {len(v)}")
+        for i, (f, spec) in enumerate(zip(data.factors, p.factors, strict=True)):
+            if len(f) != factor_data_words(p, spec.block):
+                raise DataError(f"factor instance {i} needs {factor_data_words(p, spec.block)} "
+                                f"numbers, got {len(f)}")
+        x = np.ascontiguousarray(np.concatenate(data.variables), dtype=np.float64)
+        d = np.ascontiguousarray(np.concatenate(data.factors), dtype=np.float64)
+        return x, d
+
+    def solve(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Run on flat arrays (from :meth:`flatten`); returns (x_out, errors, info)."""
+        out, errors = np.empty(self.n_x), np.empty(2)
+        info = np.zeros(3, dtype=np.int32)
+        self.library.fgc_run(x, d, out, errors, info)
+        return out, errors, info
+
+    def run(self, data: ProblemData) -> HlsResult:
+        x, errors, info = self.solve(*self.flatten(data))
+        return result_from_arrays(self.program, x, errors, *info)
+
+
+def project_key(program: Program, config: HlsConfig) -> str:
+    """Content hash of everything the build depends on (Program, config, templates, fgc)."""
+    h = hashlib.sha256(program.to_json().encode())
+    h.update(repr(config).encode())
+    h.update(fgc.__version__.encode())
+    for template in sorted(HlsConfig.template_dir().glob("*.jinja")):
+        h.update(template.read_bytes())
+    for module in sorted(Path(__file__).parent.glob("*.py")):
+        h.update(module.read_bytes())
+    return h.hexdigest()[:24]
+
+
+def default_config(program: Program) -> HlsConfig:
+    """The Program's own precision: ``double`` for float64, ``float`` for float32."""
+    return HlsConfig(scalar="double" if program.solver.precision == "float64" else "float")
+
+
+def load(program: Program, config: HlsConfig | None = None) -> NativeSolver:
+    """Emit, build and load ``program``'s library, once per content hash: the build lives in
+    ``<fgc cache>/hls/<hash>`` and the loaded library is kept for the process."""
+    config = config or default_config(program)
+    key = project_key(program, config)
+    if key not in _LOADED:
+        folder = cache_dir() / "hls" / key
+        name = identifier(program.name)
+        if (folder / f"lib{name}.so").is_file():
+            project = HlsProject(folder, name, tuple(sorted(folder.iterdir())), config)
+        else:
+            project = _build(program, config, folder)
+        _LOADED[key] = NativeSolver.load(program, project)
+    return _LOADED[key]
+
+
+def _build(program: Program, config: HlsConfig, folder: Path) -> HlsProject:
+    """Emit and build in a private folder, then move it into place (parallel builds of the same
+    Program do not see each other's half-written files)."""
+    staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
+    shutil.rmtree(staging, ignore_errors=True)
+    project = emit(program, staging, config)
+    make(project, "native")
+    try:
+        os.replace(staging, folder)
+    except OSError:  # another process finished first: use its build
+        shutil.rmtree(staging, ignore_errors=True)
+    files = tuple(folder / p.name for p in project.files)
+    return HlsProject(folder, project.name, files, config)
+
+
+def run(program: Program, data: ProblemData, config: HlsConfig | None = None) -> HlsResult:
+    """Solve ``data`` with the native build of ``program`` (default: the Program's precision)."""
+    return load(program, config).run(data)

@@ -1,0 +1,75 @@
+"""Retraction x ⊕ δ = x ∘ Exp(δ) of each variable type, as printed C++ kernels.
+
+The state update is the one piece of the solver that depends on a variable's type, not on its
+factors. Rather than hand-writing C++ per group, the retraction is derived symbolically from the
+same :mod:`fgc.geometry` classes the factors use (so it has GTSAM's conventions by construction)
+and printed like a block kernel: ``retract_<kind>(x, d, out)`` reads the storage ``x`` and the
+tangent step ``d`` and writes the new storage.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import sympy as sp
+
+import fgc.geometry as geometry
+from fgc.geometry import LieGroup
+from fgc.kernel import Kernel
+from fgc.program import Program
+from fgc_backends.hls.config import HlsConfigError
+from fgc_backends.hls.printer import PrintedKernel, print_kernel
+
+
+@dataclass(frozen=True)
+class RetractKind:
+    """One variable type: its index (``kind``), sizes, variables and printed retraction."""
+
+    kind: int
+    type_name: str
+    storage_dim: int
+    dim: int
+    variables: tuple[int, ...]
+    printed: PrintedKernel
+
+
+def variable_class(type_name: str) -> type[LieGroup]:
+    """The :mod:`fgc.geometry` class called ``type_name`` (``VectorN`` for any N)."""
+    match = re.fullmatch(r"Vector([1-9][0-9]{0,3})", type_name)
+    if match:
+        return geometry.vector_type(int(match.group(1)))
+    cls = getattr(geometry, type_name, None)
+    if isinstance(cls, type) and issubclass(cls, LieGroup) and cls is not LieGroup:
+        return cls
+    raise HlsConfigError(f"the HLS backend has no retraction for variable type {type_name!r}")
+
+
+def retract_kernel(cls: type[LieGroup]) -> Kernel:
+    """Kernel with inputs (storage, δ) and outputs the storage of ``x ∘ Exp(δ)``."""
+    x = [sp.Symbol(f"x{i}", real=True) for i in range(cls.storage_dim)]
+    d = [sp.Symbol(f"d{i}", real=True) for i in range(cls.dim)]
+    value = cls.from_storage(list(x)).retract(sp.Matrix(d))
+    outputs = [sp.sympify(v) for v in value.to_storage()]
+    reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols("_r", real=True), order="none")
+    return Kernel(tuple(x + d), tuple(reps), tuple(reduced))
+
+
+def retract_kinds(program: Program) -> tuple[RetractKind, ...]:
+    """One :class:`RetractKind` per variable type of ``program``, in first-appearance order."""
+    order: dict[str, list[int]] = {}
+    for v, spec in enumerate(program.variables):
+        order.setdefault(spec.type_name, []).append(v)
+    kinds = []
+    for kind, (name, variables) in enumerate(order.items()):
+        cls = variable_class(name)
+        spec = program.variables[variables[0]]
+        if (cls.storage_dim, cls.dim) != (spec.storage_dim, spec.dim):
+            raise HlsConfigError(f"variable type {name!r}: the Program's sizes do not match "
+                                 "fgc.geometry's")
+        kernel = retract_kernel(cls)
+        names = [f"x[{i}]" for i in range(cls.storage_dim)] + [f"d[{i}]" for i in range(cls.dim)]
+        printed = print_kernel(kernel, names, f"retraction of kind {kind}", prefix="r")
+        kinds.append(RetractKind(kind, name, cls.storage_dim, cls.dim, tuple(variables),
+                                 printed))
+    return tuple(kinds)

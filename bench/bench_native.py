@@ -1,0 +1,105 @@
+"""The HLS backend's native build (the emitted C++ as a shared library) against GTSAM's LM.
+
+For each problem both solvers start from the same initial values in one process: fgc compiles the
+graph, emits and builds the C++ (``fgc_backends.hls.native``, float64, not timed), then times the
+solve call only; GTSAM gets the same graph through ``fgc.verify.to_gtsam`` (not timed) and its
+``LevenbergMarquardtOptimizer`` with the same tolerances is timed from construction to
+``optimize()``. Best of ``--repeat`` runs each. The final errors are printed side by side, both
+evaluated by GTSAM on its own graph (fgc's solution is inserted as GTSAM values), so "equal final
+error" is judged by one yardstick.
+
+    python bench/bench_native.py [--repeat 5] [--linear qr cholesky] [--big]
+
+``--big`` adds the longest LIO chain the KITTI GPS log allows (N = 469; N = 1000 would need more
+GPS fixes than the data has).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "examples"))
+
+import gtsam  # noqa: E402
+import imu_window  # noqa: E402
+import lio  # noqa: E402
+
+from fgc.compile import compile_graph  # noqa: E402
+from fgc.datafile import problem_data  # noqa: E402
+from fgc.program import SolverConfig  # noqa: E402
+from fgc.verify import to_gtsam, value_to_gtsam  # noqa: E402
+from fgc_backends.hls import native  # noqa: E402
+from fgc_backends.hls.results import result_from_arrays  # noqa: E402
+
+
+def best_time(fn, repeat: int):
+    best, out = float("inf"), None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return best, out
+
+
+def gtsam_lm(problem, max_iterations: int):
+    params = gtsam.LevenbergMarquardtParams()
+    params.setRelativeErrorTol(1e-12)
+    params.setAbsoluteErrorTol(1e-14)
+    params.setlambdaInitial(1e-5)
+    params.setlambdaFactor(10.0)
+    params.setMaxIterations(max_iterations)
+    optimizer = gtsam.LevenbergMarquardtOptimizer(problem.graph, problem.values, params)
+    result = optimizer.optimize()
+    return result, optimizer.iterations()
+
+
+def fgc_error_in_gtsam(graph, problem, result) -> float:
+    """GTSAM's error of its own graph at fgc's solution."""
+    values = gtsam.Values()
+    for key, var in graph.variables.items():
+        value = type(var.initial).from_storage(result.values[str(key)])
+        values.insert(problem.keys[key], value_to_gtsam(value))
+    return problem.graph.error(values)
+
+
+def bench(label: str, graph, linear: str, repeat: int) -> None:
+    solver = SolverConfig(linear=linear, max_iterations=100)
+    program = compile_graph(graph, solver, name=label.split()[0])
+    built = native.load(program)
+    x, d = built.flatten(problem_data(graph, program))
+    t_fgc, (x_out, errors, info) = best_time(lambda: built.solve(x, d), repeat)
+    result = result_from_arrays(program, x_out, errors, *info)
+    problem = to_gtsam(graph)
+    t_gtsam, (values, iterations) = best_time(lambda: gtsam_lm(problem, 100), repeat)
+    e_fgc = fgc_error_in_gtsam(graph, problem, result)
+    e_gtsam = problem.graph.error(values)
+    print(f"{label:<22}{linear:<9}{t_fgc * 1e3:>10.2f}{t_gtsam * 1e3:>10.2f}"
+          f"{t_gtsam / t_fgc:>8.1f}x{result.iterations:>5}{iterations:>5}"
+          f"{e_fgc:>20.10g}{e_gtsam:>20.10g}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--linear", nargs="+", default=["cholesky", "qr"])
+    parser.add_argument("--big", action="store_true",
+                        help="also LIO N = 1000 (keyframes every 0.4 s; 470 GPS fixes)")
+    args = parser.parse_args()
+    problems = [("lio N=30", lambda: lio.build(N=30)), ("lio N=200", lambda: lio.build(N=200)),
+                ("imu_window N=50", lambda: imu_window.build(N=50))]
+    if args.big:
+        problems.insert(2, ("lio N=1000", lambda: lio.build(N=1000, keyframe_dt=0.4)))
+    print(f"{'problem':<22}{'linear':<9}{'fgc ms':>10}{'gtsam ms':>10}{'ratio':>9}"
+          f"{'it':>5}{'it_g':>5}{'error fgc':>20}{'error gtsam':>20}")
+    for label, build in problems:
+        graph = build()
+        for linear in args.linear:
+            bench(label, graph, linear, args.repeat)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,148 @@
+"""The examples through the HLS backend: emitted, built with the strict flags (``make csim``),
+run, and compared with the simulator (``fgc_backends.sim``, the definition of what the hardware
+computes) from the same data.
+
+Tolerances:
+- float64 (``double``): every variable's storage within 1e-9 of the simulator's, relative to
+  max(1, its largest entry);
+- float32 (``float``) against the float64 optimum: positions within 1 cm, rotations within 1 mrad
+  (angle of R_aᵀR_b), other vectors within 1e-2;
+- the native library (ctypes) and the testbench give bit-identical numbers.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from fgc.compile import compile_graph
+from fgc.datafile import problem_data
+from fgc.program import SolverConfig
+from fgc_backends import sim
+from fgc_backends.hls import HlsConfig, HlsConfigError, emit, make, native, run_csim
+from fgc_backends.hls.config import ap_types_include
+from fgc_backends.hls.native import NativeSolver
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "examples"))
+
+import imu_window  # noqa: E402
+import lio  # noqa: E402
+import pose_graph  # noqa: E402
+
+F64_TOL = 1e-9
+POS_TOL, ROT_TOL, VEC_TOL = 1e-2, 1e-3, 1e-2
+
+CASES = {
+    "lio": (lambda: lio.build(N=10), "qr", "double"),
+    "imu_window": (lambda: imu_window.build(N=20), "qr", "float"),
+    "w100": (lambda: pose_graph.build(), "cholesky", "double"),
+    "pose3example": (lambda: pose_graph.build("pose3example.txt"), "qr", "double"),
+}
+HEAVY_CASES = {
+    "lio_f32": (lambda: lio.build(N=30), "qr", "float"),
+    "lio_chol": (lambda: lio.build(N=30), "cholesky", "double"),
+    "imu_chol": (lambda: imu_window.build(N=20), "cholesky", "double"),
+    "w100_f32": (lambda: pose_graph.build(), "qr", "float"),
+}
+
+
+def relative_worst(values: dict, reference: dict) -> float:
+    return max(float(np.max(np.abs(values[k] - np.asarray(r))) / max(1.0, np.max(np.abs(r))))
+               for k, r in reference.items())
+
+
+def pose_errors(program, values: dict, reference: dict) -> tuple[float, float, float]:
+    """Largest position (m), rotation (rad) and other-vector error of ``values``."""
+    pos = rot = vec = 0.0
+    for v in program.variables:
+        a, b = np.asarray(values[v.key]), np.asarray(reference[v.key])
+        if v.type_name in ("Pose3", "Rot3"):
+            ra, rb = a[:9].reshape(3, 3), b[:9].reshape(3, 3)
+            cos = np.clip((np.trace(ra.T @ rb) - 1) / 2, -1.0, 1.0)
+            rot = max(rot, float(np.arccos(cos)))
+            pos = max(pos, float(np.linalg.norm(a[9:] - b[9:])) if len(a) > 9 else 0.0)
+        elif v.type_name == "Pose2":
+            pos = max(pos, float(np.linalg.norm(a[:2] - b[:2])))
+            rot = max(rot, abs(float(np.arctan2(a[3] * b[2] - a[2] * b[3],
+                                                a[2] * b[2] + a[3] * b[3]))))
+        else:
+            vec = max(vec, float(np.max(np.abs(a - b))))
+    return pos, rot, vec
+
+
+def _run(name: str, case, tmp_path_factory):
+    build, linear, scalar = case
+    graph = build()
+    program = compile_graph(graph, SolverConfig(linear=linear), name=name)
+    project = emit(program, tmp_path_factory.mktemp(name), HlsConfig(scalar=scalar))
+    data = problem_data(graph, program)
+    result = run_csim(project, program, data)
+    reference = sim.run(program, data, precision="float64")
+    return program, project, data, result, reference
+
+
+@pytest.fixture(scope="module", params=sorted(CASES))
+def example(request, tmp_path_factory):
+    return request.param, _run(request.param, CASES[request.param], tmp_path_factory)
+
+
+def _check_against_reference(name, program, result, reference, scalar):
+    assert result.iterations >= 1
+    if scalar == "double":
+        assert result.status == reference.status, (result.reason, reference.reason)
+        assert relative_worst(result.values, reference.storage) <= F64_TOL
+        assert abs(result.final_error - reference.final_error) <= \
+            F64_TOL * max(1.0, reference.final_error)
+    else:
+        pos, rot, vec = pose_errors(program, result.values, reference.storage)
+        assert pos <= POS_TOL and rot <= ROT_TOL and vec <= VEC_TOL, (name, pos, rot, vec)
+
+
+def test_csim_matches_the_simulator(example):
+    name, (program, _, _, result, reference) = example
+    _check_against_reference(name, program, result, reference, CASES[name][2])
+
+
+def test_native_library_gives_the_csim_numbers(example):
+    name, (program, project, data, result, _) = example
+    make(project, "native")
+    again = NativeSolver.load(program, project).run(data)
+    assert (again.iterations, again.status, again.reason) == \
+        (result.iterations, result.status, result.reason)
+    assert again.final_error == result.final_error
+    for key, value in result.values.items():
+        np.testing.assert_array_equal(again.values[key], value)
+
+
+def test_native_run_api_builds_once_and_agrees():
+    graph = pose_graph.build()
+    program = compile_graph(graph, SolverConfig(linear="qr"), name="w100_native")
+    data = problem_data(graph, program)
+    first = native.run(program, data)
+    assert native.load(program) is native.load(program)  # cached per content hash
+    reference = sim.run(program, data, precision="float64")
+    assert relative_worst(first.values, reference.storage) <= F64_TOL
+
+
+@pytest.mark.heavy
+@pytest.mark.parametrize("name", sorted(HEAVY_CASES))
+def test_heavy_cases_match_the_simulator(name, tmp_path_factory):
+    program, _, _, result, reference = _run(name, HEAVY_CASES[name], tmp_path_factory)
+    _check_against_reference(name, program, result, reference, HEAVY_CASES[name][2])
+
+
+@pytest.mark.heavy
+def test_fixed_point_builds_and_runs(tmp_path):
+    try:
+        ap_types_include()
+    except HlsConfigError:
+        pytest.skip("ap_fixed needs the optional hls4ml package (pip install 'fgc[hls-fixed]')")
+    graph = pose_graph.build()
+    program = compile_graph(graph, name="w100_fixed")
+    project = emit(program, tmp_path, HlsConfig(scalar="ap_fixed<40,16>"))
+    result = run_csim(project, program, problem_data(graph, program))
+    assert result.final_error < result.initial_error
