@@ -142,7 +142,7 @@ def _cmd_compile(args) -> int:
     else:
         files = backend.emit(program, out)
     print(f"fgc compile {args.spec}: {len(program.variables)} variables, "
-          f"{len(program.factors)} factor blocks → {out}/ ({len(files) + 2} files)")
+          f"{len(program.factors)} block instances → {out}/ ({len(files) + 2} files)")
     return EXIT_OK
 
 
