@@ -6,9 +6,10 @@ keyframes: a ``CombinedImuFactor`` preintegrating the real KITTI IMU samples
 priors on the first pose, velocity and bias.
 
 There is no LiDAR in the data: the LiDAR-odometry measurements are *synthesised* from a reference
-trajectory — orientation from integrating the gyroscope from the identity, position from the GPS
-fixes — as the relative pose between consecutive reference keyframes, perturbed by Gaussian noise
-(``lidar_sigma_rot`` rad, ``lidar_sigma_pos`` m, seeded). Initial values are the same reference
+trajectory — orientation from integrating the gyroscope from the initial GPS heading (the car
+drives along its body x axis), position from the GPS fixes — as the relative pose between
+consecutive reference keyframes, perturbed by Gaussian noise (``lidar_sigma_rot`` rad,
+``lidar_sigma_pos`` m, seeded). Initial values are the same reference
 poses, velocities from central differences of the GPS fixes, zero biases.
 
     fgc verify examples/lio.py -p N=30
@@ -58,11 +59,12 @@ def build(N: int = 30, first: int = 1, gps_sigma: float = 1.0,  # noqa: N803 - p
     params = kitti_params(example_data_file("KittiEquivBiasedImu_metadata.txt"))
     params = params.replace(error_mode=error_mode)
     pims = [_preintegrate(log, params, t[i], t[i + 1]) for i in range(N - 1)]
-    rots = [np.eye(3)]
+    vel = _velocities(t, p)
+    heading = np.arctan2(vel[0, 1], vel[0, 0])  # the car drives along its body x axis
+    rots = [Rot3.RzRyRx(0.0, 0.0, heading).R]
     for pim in pims:
         rots.append(rots[-1] @ pim.delta_R_ij)
     ref = [Pose3(Rot3(r), x) for r, x in zip(rots, p, strict=True)]
-    vel = _velocities(t, p)
     graph = fgc.Graph()
     for i in range(N):
         graph.add_variable(f"x{i}", ref[i])
