@@ -4,10 +4,12 @@
     fgc simulate SPEC [--json F]                      run the accelerator simulator, report cost
     fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 on mismatch
     fgc run      SPEC --backend native|sim            solve with the generated solver
+    fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
+    fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
 
 SPEC is a ``.py`` file with ``build(**params)`` returning an ``fgc.Graph`` (``-p KEY=VALUE``), or a
 g2o/TORO file. Solver options are shared by every command. Exit codes: 0 success, 1 verification
-failed, 2 bad input (one clear line on stderr).
+failed (or a solve did not converge), 2 bad input (one clear line on stderr).
 """
 
 from __future__ import annotations
@@ -16,8 +18,11 @@ import argparse
 import ast
 import importlib.util
 import json
+import re
 import sys
+from collections.abc import Callable
 from pathlib import Path
+from typing import NoReturn
 
 from fgc.dsl import Graph
 from fgc.errors import FgcError
@@ -189,56 +194,206 @@ def _cmd_run(args) -> int:
     return EXIT_OK if status == "converged" else EXIT_FAILED
 
 
+def _cmd_report(args) -> int:
+    from fgc.report import design_report, figures, format_text, render_html
+
+    graph, program, data = _compile(args, "float32")
+    report = design_report(args.spec, parse_params(args.param), graph, program, data,
+                           _backend("sim"), iterations=args.iterations)
+    sys.stdout.write(format_text(report))
+    _write_json(args.json, report)
+    if args.html:
+        Path(args.html).write_text(render_html(report, figures(report)))
+    return EXIT_OK
+
+
+def _cmd_sweep(args) -> int:
+    from fgc import sweep
+    from fgc.program import SolverConfig
+
+    graph = load_spec(args.spec, parse_params(args.param))
+    designs = sweep.design_space(args.units, args.cpe, args.precision, args.linear)
+    base = SolverConfig(method=args.solver, ordering=args.ordering,
+                        max_iterations=args.max_iterations)
+    out = Path(args.out or f"fgc-sweep-{_name(args.spec)}")
+    with sweep.open_executor(args.jobs, args.executor) as pool, \
+            sweep.progress_bar(len(designs), args.progress) as progress:
+        result = sweep.run_sweep(graph, base, designs, pool, _name(args.spec), progress)
+    files = sweep.write_outputs(result, out, title=_name(args.spec))
+    print("\n".join(sweep.summary_lines(result, args.spec)))
+    print(f"wrote {', '.join(str(f) for f in files)}")
+    failed = [r for r in result.rows if r["status"] != "converged"]
+    return EXIT_FAILED if failed else EXIT_OK
+
+
 # --------------------------------------------------------------------------------------------
 # parser
 # --------------------------------------------------------------------------------------------
 
 
-def _common(p: argparse.ArgumentParser) -> None:
+class UsageError(FgcError):
+    """A command line argparse rejects (reported as one line, exit 2)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse, but a bad argument is one line on stderr (via main), not usage + exit."""
+
+    def error(self, message: str) -> NoReturn:
+        raise UsageError(f"{self.prog}: {message} (see {self.prog} --help)")
+
+
+class _Formatter(argparse.RawDescriptionHelpFormatter):
+    """Keeps the description's layout and appends real defaults (not None/False) to help."""
+
+    def _get_help_string(self, action: argparse.Action) -> str:
+        text = action.help or ""
+        if action.default not in (None, False, [], argparse.SUPPRESS) and action.option_strings \
+                and "default" not in text:
+            default = action.default
+            if isinstance(default, tuple):
+                default = ",".join(str(v) for v in default)
+            text += f" (default: {default})"
+        return text
+
+
+def _positive_int(text: str) -> int:
+    if not text.strip().isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a positive integer")
+    return int(text)
+
+
+def _int_list(text: str) -> tuple[int, ...]:
+    """``"1,2,4"`` → ``(1, 2, 4)`` (positive, duplicates dropped)."""
+    items = [s.strip() for s in text.split(",")]
+    if not all(s.isdigit() and int(s) >= 1 for s in items):
+        raise argparse.ArgumentTypeError(
+            f"{text!r} is not a comma-separated list of positive integers (e.g. 1,2,4,8)")
+    return tuple(dict.fromkeys(int(s) for s in items))
+
+
+def _choice_list(choices: tuple[str, ...]) -> Callable[[str], tuple[str, ...]]:
+    """An argparse type for a comma-separated subset of ``choices``."""
+
+    def parse(text: str) -> tuple[str, ...]:
+        items = [s.strip() for s in text.split(",")]
+        bad = [s for s in items if s not in choices]
+        if bad:
+            raise argparse.ArgumentTypeError(
+                f"{text!r}: {', '.join(repr(b) for b in bad)} not among {', '.join(choices)}")
+        return tuple(dict.fromkeys(items))
+
+    return parse
+
+
+def _scheduler_address(text: str) -> str:
+    if not re.fullmatch(r"[a-z]+://[^\s/]+:[0-9]+", text):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a scheduler address like "
+                                         "tcp://host:8786")
+    return text
+
+
+def _spec_args(p: argparse.ArgumentParser, json_help: str | None) -> None:
     p.add_argument("spec", help="spec file (.py with build(**params)) or a g2o/TORO file")
     p.add_argument("-p", "--param", action="append", default=[], metavar="KEY=VALUE",
                    help="parameter passed to the spec's build() (repeatable)")
-    p.add_argument("--json", metavar="FILE", help="also write the report as JSON")
+    if json_help:
+        p.add_argument("--json", metavar="FILE", help=json_help)
+
+
+def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
     s = p.add_argument_group("solver")
-    s.add_argument("--solver", choices=("gn", "lm"), default="lm", help="default: lm")
-    s.add_argument("--linear", choices=("qr", "cholesky"), default="qr", help="default: qr")
+    s.add_argument("--solver", choices=("gn", "lm"), default="lm", help="Gauss-Newton or LM")
     s.add_argument("--ordering", default="auto",
                    choices=("auto", "two-ended", "serial", "min-degree", "nested-dissection"),
-                   help="elimination ordering (default: auto = two-ended on chains)")
+                   help="elimination ordering (auto = two-ended on chains)")
+    s.add_argument("--max-iterations", type=_positive_int, default=100, metavar="K",
+                   help="k_max")
+    if design_space:
+        d = p.add_argument_group("design space (comma-separated lists; the product is swept)")
+        d.add_argument("--linear", type=_choice_list(("qr", "cholesky")), metavar="LIST",
+                       default=("qr", "cholesky"), help="linear solvers: qr, cholesky")
+        d.add_argument("--precision", type=_choice_list(("float32", "float64")),
+                       metavar="LIST", default=("float32", "float64"),
+                       help="arithmetic of the accelerator: float32, float64")
+        d.add_argument("--units", type=_int_list, default=(1, 2, 4, 8), metavar="LIST",
+                       help="n_u Update units per QR block (QR designs)")
+        d.add_argument("--cpe", type=_int_list, default=(5, 20, 40, 80, 120), metavar="LIST",
+                       help="#CPE Cholesky process elements (Cholesky designs)")
+        return
+    s.add_argument("--linear", choices=("qr", "cholesky"), default="qr", help="linear solver")
     s.add_argument("--precision", choices=("float32", "float64"),
                    help="arithmetic of the accelerator (default: float32; verify: float64)")
-    s.add_argument("--units", type=int, default=4, help="n_u Update units per QR block")
-    s.add_argument("--cpe", type=int, default=20, help="#CPE Cholesky process elements")
-    s.add_argument("--max-iterations", type=int, default=100, help="k_max (default 100)")
+    s.add_argument("--units", type=_positive_int, default=4, metavar="N",
+                   help="n_u Update units per QR block")
+    s.add_argument("--cpe", type=_positive_int, default=20, metavar="N",
+                   help="#CPE Cholesky process elements")
+
+
+def _command_args(name: str, p: argparse.ArgumentParser) -> None:
+    if name == "compile":
+        p.add_argument("--backend", choices=("sim", "hls"), default="sim", help="backend")
+        p.add_argument("--out", required=True, metavar="DIR", help="output folder")
+    elif name == "run":
+        p.add_argument("--backend", choices=("native", "sim"), default="native", help="solver")
+    elif name == "simulate":
+        p.add_argument("--plot", metavar="DIR", help="write plots (needs matplotlib)")
+    elif name == "report":
+        p.add_argument("--html", metavar="FILE", help="also write a self-contained HTML page")
+        p.add_argument("--iterations", type=_positive_int, metavar="K",
+                       help="cost K iterations instead of running the simulator")
+    elif name == "sweep":
+        p.add_argument("--jobs", type=_positive_int, metavar="N",
+                       help="local worker processes (default: os.cpu_count())")
+        p.add_argument("--executor", type=_scheduler_address, metavar="ADDRESS",
+                       help="run on the Dask scheduler at ADDRESS (tcp://host:port) instead")
+        p.add_argument("--out", metavar="DIR",
+                       help="folder for sweep.csv, sweep.json, pareto.png, accuracy.png "
+                            "(default: fgc-sweep-NAME)")
+        p.add_argument("--progress", action=argparse.BooleanOptionalAction,
+                       help="progress bar on stderr (default: when stderr is a terminal)")
+
+
+_COMMANDS = (
+    # name, function, one-line help, what exit code 1 means, --json help
+    ("compile", _cmd_compile, "emit a backend project for a spec", None, None),
+    ("simulate", _cmd_simulate, "run the accelerator simulator: numbers, cycles, resources",
+     "the simulator did not converge", "also write the report as JSON"),
+    ("verify", _cmd_verify, "solve with the simulator and with GTSAM and compare",
+     "the simulator does not match GTSAM", "also write the report as JSON"),
+    ("run", _cmd_run, "solve with the generated native solver (or the simulator)",
+     "the solve did not converge", "also write the report as JSON"),
+    ("report", _cmd_report, "the compiled design at a glance: blocks, schedule, storage, "
+     "cycles, resources, energy", None, "also write the report as JSON"),
+    ("sweep", _cmd_sweep, "design-space exploration: latency, resources, energy and accuracy "
+     "vs GTSAM per design, Pareto plot", "a design did not converge or failed", None),
+)
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="fgc", description="fgc: a factor-graph compiler")
-    sub = parser.add_subparsers(dest="command", required=True)
-    commands = (
-        ("compile", _cmd_compile, "emit a backend project for a spec"),
-        ("simulate", _cmd_simulate, "run the accelerator simulator: numbers, cycles, resources"),
-        ("verify", _cmd_verify, "solve with the simulator and with GTSAM and compare"),
-        ("run", _cmd_run, "solve with the generated native solver (or the simulator)"),
-    )
-    for name, func, help_text in commands:
-        p = sub.add_parser(name, help=help_text, description=help_text)
-        _common(p)
-        if name == "compile":
-            p.add_argument("--backend", choices=("sim", "hls"), default="sim")
-            p.add_argument("--out", required=True, metavar="DIR", help="output folder")
-        if name == "run":
-            p.add_argument("--backend", choices=("native", "sim"), default="native")
-        if name == "simulate":
-            p.add_argument("--plot", metavar="DIR", help="write plots (needs matplotlib)")
+    parser = _Parser(prog="fgc", description="fgc: a factor-graph compiler",
+                     epilog="Run 'fgc COMMAND --help' for a command's options. Exit status: 0 "
+                            "success, 1 verification failed (or a solve did not converge), 2 "
+                            "bad input (one line on stderr).", formatter_class=_Formatter)
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for name, func, help_text, fails, json_help in _COMMANDS:
+        epilog = ("exit status: 0 success" + (f", 1 {fails}" if fails else "")
+                  + ", 2 bad input (one line on stderr)")
+        p = sub.add_parser(name, help=help_text, description=f"fgc {name}: {help_text}",
+                           epilog=epilog, formatter_class=_Formatter)
+        _spec_args(p, json_help)
+        _solver_args(p, design_space=name == "sweep")
+        _command_args(name, p)
         p.set_defaults(func=func)
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
     try:
+        args = build_parser().parse_args(argv)
         return args.func(args)
+    except UsageError as exc:
+        print(str(exc), file=sys.stderr)
+        return EXIT_BAD_INPUT
     except FgcError as exc:
         print(f"fgc: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
