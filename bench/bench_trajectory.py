@@ -19,7 +19,7 @@ from fgc.compile import compile_graph  # noqa: E402
 from fgc.datafile import problem_data  # noqa: E402
 from fgc.metrics import ate, rpe  # noqa: E402
 from fgc.program import SolverConfig  # noqa: E402
-from fgc.reporting import _gtsam_optimize  # noqa: E402
+from fgc.reporting import gtsam_optimize  # noqa: E402
 from fgc.verify import to_gtsam, values_from_gtsam  # noqa: E402
 from fgc_backends import sim  # noqa: E402
 
@@ -34,7 +34,7 @@ def main() -> None:
     args = parser.parse_args()
     graph = lio.build(N=args.n)
     problem = to_gtsam(graph)
-    ref = poses(values_from_gtsam(graph, problem, _gtsam_optimize(problem)[0]), args.n)
+    ref = poses(values_from_gtsam(graph, problem, gtsam_optimize(problem)[0]), args.n)
     print(f"LIO N={args.n}: simulator vs GTSAM LM optimum (metres)")
     print(f"{'precision':<10}{'ATE rmse':>12}{'ATE max':>12}{'RPE rmse':>12}{'RPE max':>12}")
     for precision in ("float64", "float32"):

@@ -46,7 +46,7 @@ def _angle(a, b) -> float:
     return float(np.linalg.norm(np.atleast_1d(a.local(b))))
 
 
-def _gtsam_optimize(problem, linear: str = "qr"):
+def gtsam_optimize(problem, linear: str = "qr"):
     """GTSAM's LM with tight tolerances. The oracle uses GTSAM's multifrontal QR whatever fgc
     solves with: the optimum does not depend on the linear solver, and GTSAM's Cholesky stalls on
     badly scaled problems (IMU window N ≥ 50: 100 iterations, error 1e-6, where QR reaches 1e-20
@@ -70,7 +70,7 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
     result = sim.run(program, data)
     t0 = time.perf_counter()
     problem = to_gtsam(graph)
-    gres, giters = _gtsam_optimize(problem)
+    gres, giters = gtsam_optimize(problem)
     gtsam_s = time.perf_counter() - t0
     ours = _values_by_key(graph, result.values)
     errors = state_errors(graph, ours, values_from_gtsam(graph, problem, gres))

@@ -238,12 +238,12 @@ def run_sweep(graph: Graph, base: SolverConfig, designs: Sequence[Design], pool:
 
 def _gtsam_reference(graph: Graph) -> tuple[dict, dict]:
     """GTSAM's LM optimum (same settings as ``fgc verify``) as fgc values, and a summary."""
-    from fgc.reporting import _gtsam_optimize
+    from fgc.reporting import gtsam_optimize
     from fgc.verify import to_gtsam, values_from_gtsam
 
     t0 = time.perf_counter()
     problem = to_gtsam(graph)
-    optimum, iterations = _gtsam_optimize(problem)
+    optimum, iterations = gtsam_optimize(problem)
     summary = {"final_error": float(problem.graph.error(optimum)), "iterations": iterations,
                "seconds": time.perf_counter() - t0}
     return summary, values_from_gtsam(graph, problem, optimum)
