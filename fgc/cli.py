@@ -46,8 +46,16 @@ def parse_params(items: list[str]) -> dict:
 
 def load_spec(path: str, params: dict) -> Graph:
     """Build the graph of a spec: a ``.py`` file with ``build(**params)``, or a g2o/TORO file
-    (which gets a prior on its first pose to fix the gauge)."""
+    (which gets a prior on its first pose to fix the gauge) given as a path or as the name of a
+    file in the gtsam wheel's example data (``fgc simulate w100.graph``)."""
     p = Path(path)
+    if not p.is_file() and p.suffix != ".py" and p.name == path:
+        from fgc.data import example_data_file
+
+        try:
+            p = example_data_file(path)
+        except FgcError:
+            pass
     if not p.is_file():
         raise FgcError(f"{path}: no such file")
     if p.suffix != ".py":

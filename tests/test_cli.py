@@ -80,3 +80,8 @@ def test_malformed_g2o_line_names_the_line(tmp_path, capsys):
     bad.write_text("VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 1 0 0\nEDGE_SE2 0 1 1 0 zero 1 0 0 1 0 1\n")
     assert main(["verify", str(bad)]) == EXIT_BAD_INPUT
     assert "bad.g2o:3" in capsys.readouterr().err
+
+
+def test_g2o_file_from_gtsam_data_by_name(capsys):
+    assert main(["simulate", "pose3example.txt", "--precision", "float64"]) == EXIT_OK
+    assert "5 variables" in capsys.readouterr().out
