@@ -50,12 +50,10 @@ def load_spec(path: str, params: dict) -> Graph:
     file in the gtsam wheel's example data (``fgc simulate w100.graph``)."""
     p = Path(path)
     if not p.is_file() and p.suffix != ".py" and p.name == path:
-        from fgc.data import example_data_file
+        from fgc.data import gtsam_data_dir
 
-        try:
-            p = example_data_file(path)
-        except FgcError:
-            pass
+        candidate = gtsam_data_dir() / path
+        p = candidate if candidate.is_file() else p
     if not p.is_file():
         raise FgcError(f"{path}: no such file")
     if p.suffix != ".py":
