@@ -18,6 +18,7 @@ import argparse
 import ast
 import importlib.util
 import json
+import os
 import re
 import sys
 from collections.abc import Callable
@@ -403,6 +404,9 @@ def main(argv: list[str] | None = None) -> int:
     except FgcError as exc:
         print(f"fgc: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except BrokenPipeError:  # output piped into e.g. `head`: stop quietly, like other tools
+        sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush
+        return EXIT_OK
 
 
 if __name__ == "__main__":
