@@ -10,7 +10,7 @@ from .printer import SimPrinter
 
 RUNTIME_TEMPLATES = ("fgc_sim_runtime.py.jinja", "fgc_sim_special.py.jinja",
                      "fgc_sim_linear.py.jinja", "fgc_sim_optimizer.py.jinja",
-                     "fgc_sim_incremental.py.jinja")
+                     "fgc_sim_incremental.py.jinja", "fgc_sim_diagnostics.py.jinja")
 PROGRAM_TEMPLATE = "sim.py.jinja"
 
 
@@ -23,11 +23,28 @@ class SimConfig:
     - ``absolute_error_tol``: stop (converged) once the cost is at most this.
     - ``name``: file-name stem of the problem module (``<name>_sim.py``); default: the Program's
       name, sanitised to an identifier.
+    - ``pivot_tolerance_float64`` / ``pivot_tolerance_float32``: an elimination pivot at most
+      this many times its column's norm is singular (status "failed", reason "singular" in
+      Gauss-Newton; LM grows μ). An exactly dependent column keeps ~√rows·eps of its norm
+      (1e-15 / 1e-6); the smallest pivot ratio of the shipped examples is ~1e-4.
+    - ``diagnose``: after a batch solve, eliminate the undamped, row-equilibrated system at the
+      solution once more in float64: names a variable the factors leave undetermined (also
+      when LM's damping hid it) and estimates the condition number κ (see
+      :mod:`fgc.conditioning`), with ``condition_iterations`` power iterations per extreme
+      singular value.
+    - ``singular_lm_fails``: whether LM reports a rank-deficient solution (found by the
+      diagnosis) as status "failed", reason "singular"; by default it keeps LM's status, names
+      the variable in ``SimResult.singular_variable`` and warns (``RankDeficientWarning``).
     """
 
     lambda_upper_bound: float = 1e10
     absolute_error_tol: float = 1e-14
     name: str | None = None
+    pivot_tolerance_float64: float = 1e-10
+    pivot_tolerance_float32: float = 1e-5
+    diagnose: bool = True
+    condition_iterations: int = 12
+    singular_lm_fails: bool = False
 
     @staticmethod
     def template_dir() -> Path:

@@ -61,6 +61,8 @@ def _context(program: Program, config: SimConfig) -> dict:
     return {
         "fgc_version": fgc.__version__,
         "data_magic": MAGIC,
+        "pivot_tolerance_float64": repr(float(config.pivot_tolerance_float64)),
+        "pivot_tolerance_float32": repr(float(config.pivot_tolerance_float32)),
         "problem_comment": comment(program.name),
         "series_below": repr(float(special.SERIES_BELOW)),
         "series": [(name, ", ".join(repr(float(c)) for c in reversed(coeffs)))
@@ -109,7 +111,10 @@ def _solver_options(program: Program, config: SimConfig) -> list[tuple[str, obje
             ("lambda_upper_bound", float(config.lambda_upper_bound)),
             ("eps_gradient", float(s.eps_gradient)), ("eps_step", float(s.eps_step)),
             ("relative_error_tol", float(s.relative_error_tol)),
-            ("absolute_error_tol", float(config.absolute_error_tol))]
+            ("absolute_error_tol", float(config.absolute_error_tol)),
+            ("diagnose", bool(config.diagnose)),
+            ("condition_iterations", int(config.condition_iterations)),
+            ("singular_lm_fails", bool(config.singular_lm_fails))]
 
 
 def _retract_groups(program: Program) -> list[tuple[str, list[int]]]:

@@ -8,6 +8,7 @@ which NumPy treats as "weak" scalars: a float32 ``x`` keeps every intermediate i
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from typing import NamedTuple
 
@@ -122,7 +123,8 @@ class SimPrinter(NumPyPrinter):
         if isinstance(value, int):
             return str(value)
         if isinstance(value, float):
-            return repr(value)
+            # inf / nan have no literal; float("inf") reads back exactly
+            return repr(value) if math.isfinite(value) else f'float("{value!r}")'
         if isinstance(value, str) and value.isidentifier():
             return repr(value)
         raise PrintError(f"no literal for {value!r}")

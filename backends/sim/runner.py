@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from fgc import geometry
+from fgc import conditioning, geometry
 from fgc.datafile import ProblemData, write_data
 from fgc.errors import DataError, FgcError
 from fgc.geometry import LieGroup
@@ -35,6 +35,12 @@ class SimResult:
     runs: the initial and the final cost of the whole graph); ``updates`` lists, for an
     incremental run, each keyframe's update (mode, first re-eliminated cluster, iterations,
     status, window cost).
+
+    ``singular_variable`` is the key of the variable whose elimination pivot vanished (reason
+    "singular", or LM's rank-deficient solution found by the diagnosis); ``condition`` the
+    diagnosis' κ at the solution (rows and columns equilibrated, :mod:`fgc.conditioning`);
+    ``message`` says in words why a run failed or what its warnings are, ``warnings`` holds
+    the texts of the :class:`fgc.conditioning.FgcWarning` s the run issued.
     """
 
     values: dict[str, LieGroup]
@@ -50,10 +56,20 @@ class SimResult:
     solve_seconds: float
     files: tuple[Path, ...]
     updates: tuple[dict, ...] | None = None
+    singular_variable: str | None = None
+    condition: float | None = None
+    message: str = ""
+    warnings: tuple[str, ...] = ()
+    linear: str = "qr"
 
     @property
     def converged(self) -> bool:
         return self.status == "converged"
+
+    @property
+    def float32_ok(self) -> bool | None:
+        """Whether κ is below the float32 limit of this run's linear solver (None: unknown)."""
+        return conditioning.float32_ok(self.condition, self.linear)
 
 
 def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | None = None,
@@ -88,7 +104,7 @@ def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | 
             error = DataError(raw["message"])
             error.factor, error.variable = raw["factor"], raw["variable"]
             raise DataError(_explain(program, error))
-    return _result(program, raw, files)
+    return _result(program, raw, files, config or SimConfig())
 
 
 def _run_in_process(program: Program, module: Path, data: Path, result: Path,
@@ -128,16 +144,59 @@ def _explain(program: Program, exc: Exception) -> str:
     return message
 
 
-def _result(program: Program, raw: dict, files: tuple[Path, ...]) -> SimResult:
+def _result(program: Program, raw: dict, files: tuple[Path, ...],
+            config: SimConfig) -> SimResult:
     storage, values = {}, {}
     for spec, numbers in zip(program.variables, raw["values"], strict=True):
         arr = np.asarray(numbers, dtype=np.float64)
         storage[spec.key] = arr
         values[spec.key] = value_type(spec.type_name, spec.dim).from_storage(arr)
+    singular, messages, warned = _explain_outcome(program, raw, config)
     return SimResult(values, storage, raw["status"], raw["reason"], raw["iterations"],
                      raw["initial_error"], raw["final_error"], tuple(raw["cost_log"]),
                      raw["precision"], raw["setup_seconds"], raw["solve_seconds"], files,
-                     None if raw.get("incremental") is None else tuple(raw["incremental"]))
+                     None if raw.get("incremental") is None else tuple(raw["incremental"]),
+                     singular, raw.get("condition"), " ".join(messages), tuple(warned),
+                     raw.get("linear", program.solver.linear))
+
+
+def _explain_outcome(program: Program, raw: dict, config: SimConfig
+                     ) -> tuple[str | None, list[str], list[str]]:
+    """(key of the singular variable, messages, texts of the warnings issued) of a raw result:
+    failures in words, an undetermined variable by name, float32 conditioning."""
+    messages, warned, key = [], [], None
+    if raw["status"] == "failed" and raw["reason"] in _FAILURES:
+        messages.append(_FAILURES[raw["reason"]].format(
+            iterations=raw["iterations"], cost=raw["final_error"],
+            bound=config.lambda_upper_bound))
+    info = raw.get("singular")
+    if info is not None and 0 <= info["variable"] < len(program.variables):
+        spec = program.variables[info["variable"]]
+        key = spec.key
+        tolerance = (config.pivot_tolerance_float32 if raw["precision"] == "float32"
+                     and raw["reason"] == "singular" else config.pivot_tolerance_float64)
+        text = conditioning.rank_deficient_message(key, spec.type_name, info["component"],
+                                                   info["ratio"], tolerance)
+        messages.append(text)
+        if raw["status"] != "failed":
+            conditioning.warn(text, conditioning.RankDeficientWarning)
+            warned.append(text)
+    text = conditioning.warn_if_ill_conditioned(raw.get("condition"), raw["linear"],
+                                                raw["precision"])
+    if text:
+        messages.append(text)
+        warned.append(text)
+    return key, messages, warned
+
+
+_FAILURES = {
+    "singular": "Gauss-Newton stopped after {iterations} iterations: the linear system is "
+                "singular (last accepted cost {cost}).",
+    "lambda_limit": "Levenberg-Marquardt gave up after {iterations} iterations: no step lowered "
+                    "the cost before the damping passed {bound:g} (last accepted cost {cost}).",
+    "non_finite": "the cost or linearisation became non-finite after {iterations} iterations "
+                  "(last finite cost {cost}); check the initial values and noise models.",
+}
 
 
 def value_type(type_name: str, dim: int) -> type[LieGroup]:
