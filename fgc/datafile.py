@@ -82,9 +82,13 @@ def read_data(path: str | Path) -> ProblemData:
     """Parse a data file; errors name the file and line."""
     path = Path(path)
     try:
-        lines = path.read_text().splitlines()
+        lines = path.read_text(encoding="ascii").splitlines()
     except OSError as exc:
         raise DataError(f"{path}: cannot read data file ({exc.strerror})") from None
+    except UnicodeDecodeError as exc:
+        line = path.read_bytes()[:exc.start].count(b"\n") + 1
+        raise DataError(f"{path}:{line}: not an fgc data file (byte {exc.start} is not "
+                        "ASCII)") from None
     if not lines or lines[0].strip() != MAGIC:
         raise DataError(f"{path}:1: not an fgc data file (expected '{MAGIC}')")
     pos = 1

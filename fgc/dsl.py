@@ -29,7 +29,7 @@ import numpy as np
 import sympy as sp
 
 from fgc.errors import DataError, DslError, FgcError
-from fgc.geometry import LieGroup, VectorSpace
+from fgc.geometry import LieGroup, Rot2, Rot3, VectorSpace
 from fgc.noise import NoiseModel
 
 # --------------------------------------------------------------------------------------------
@@ -58,8 +58,17 @@ class MatrixType:
                           for i in range(self.rows) for j in range(self.cols)])
 
 
+MAX_MATRIX_ENTRIES = 4096  # a measurement matrix is traced symbolically, entry by entry
+
+
 def Matrix(rows: int, cols: int) -> MatrixType:  # noqa: N802 - reads like a type
-    """Annotation for a measurement that is a ``rows × cols`` matrix."""
+    """Annotation for a measurement that is a ``rows × cols`` matrix (positive integer sizes,
+    at most :data:`MAX_MATRIX_ENTRIES` entries)."""
+    for name, size in (("rows", rows), ("cols", cols)):
+        if isinstance(size, bool) or not isinstance(size, (int, np.integer)) or size < 1:
+            raise DslError(f"fgc.Matrix {name} must be a positive integer, got {size!r}")
+    if rows * cols > MAX_MATRIX_ENTRIES:
+        raise DslError(f"fgc.Matrix({rows}, {cols}) has more than {MAX_MATRIX_ENTRIES} entries")
     return MatrixType(int(rows), int(cols))
 
 
@@ -102,7 +111,25 @@ def storage_of(t, value, what: str) -> np.ndarray:
         arr = value.storage_array()
     if not np.all(np.isfinite(arr)):
         raise DataError(f"{what} is not finite: {arr.tolist()}")
+    if isinstance(value, LieGroup) and _rotation_defect(value) > ROTATION_TOL:
+        raise DataError(f"{what} is not a rotation: its rotation part is off by "
+                        f"{_rotation_defect(value):.1e} (orthonormal, det +1, to "
+                        f"{ROTATION_TOL:g}); re-orthonormalise it")
     return arr
+
+
+ROTATION_TOL = 1e-6  # max |RᵀR − I| (or |c² + s² − 1|) of a numeric rotation
+
+
+def _rotation_defect(value: LieGroup) -> float:
+    """How far the rotation part of a numeric value is from a rotation (0: none to check)."""
+    r = getattr(value, "r", value)  # Pose2 / Pose3 hold their rotation as .r
+    if isinstance(r, Rot2):
+        return abs(float(r.c) ** 2 + float(r.s) ** 2 - 1.0)
+    if isinstance(r, Rot3):
+        m = np.asarray(r.R, dtype=np.float64)
+        return float(np.abs(m.T @ m - np.eye(3)).max()) if np.linalg.det(m) > 0 else np.inf
+    return 0.0
 
 
 # --------------------------------------------------------------------------------------------

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from fgc.dsl import Graph
-from fgc.errors import DataError
+from fgc.errors import DataError, FgcError
 from fgc.factors import BetweenFactor
 from fgc.geometry import Pose2, Pose3, Rot3
 from fgc.noise import NoiseModel, sqrt_information
@@ -90,11 +90,9 @@ def read_pose_graph(path: str | Path, key_prefix: str = "x") -> Graph:
     naming the file and line number; edges to undeclared vertices too.
     """
     path = Path(path)
-    if not path.is_file():
-        raise DataError(f"{path}: no such file")
     graph = Graph()
     edges = []
-    for lineno, line in enumerate(path.read_text().splitlines(), start=1):
+    for lineno, line in enumerate(_read_lines(path), start=1):
         fields = line.split()
         if not fields or fields[0].startswith("#") or fields[0] in _IGNORED:
             continue
@@ -110,10 +108,35 @@ def read_pose_graph(path: str | Path, key_prefix: str = "x") -> Graph:
         else:
             edges.append((ids, *_edge(tag, nums, where), where))
     for (i, j), measured, noise, where in edges:
-        for v in (i, j):
-            if f"{key_prefix}{v}" not in graph.variables:
-                raise DataError(f"{where}: edge refers to undeclared vertex {v}")
-        graph.add(BetweenFactor(f"{key_prefix}{i}", f"{key_prefix}{j}", measured, noise))
+        _add_edge(graph, f"{key_prefix}{i}", f"{key_prefix}{j}", measured, noise, where)
     if not graph.variables:
         raise DataError(f"{path}: no vertices found (is this a g2o/TORO file?)")
     return graph
+
+
+def _read_lines(path: Path) -> list[str]:
+    """The file's lines; DataError if it is missing, unreadable or not text."""
+    if not path.is_file():
+        raise DataError(f"{path}: no such file")
+    try:
+        return path.read_text(encoding="utf-8").splitlines()
+    except OSError as exc:
+        raise DataError(f"{path}: cannot read ({exc.strerror})") from None
+    except UnicodeDecodeError as exc:
+        line = path.read_bytes()[:exc.start].count(b"\n") + 1
+        raise DataError(f"{path.name}:{line}: not a text file (byte {exc.start} is not UTF-8)"
+                        ) from None
+
+
+def _add_edge(graph: Graph, a: str, b: str, measured, noise: NoiseModel, where: str) -> None:
+    """A between factor a → b; DataError naming the line for a self-loop, an undeclared vertex
+    or a vertex of the other pose type."""
+    if a == b:
+        raise DataError(f"{where}: edge from vertex {a!r} to itself")
+    for key in (a, b):
+        if key not in graph.variables:
+            raise DataError(f"{where}: edge refers to undeclared vertex {key!r}")
+    try:
+        graph.add(BetweenFactor(a, b, measured, noise))
+    except FgcError as exc:
+        raise DataError(f"{where}: {exc}") from None

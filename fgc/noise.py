@@ -86,19 +86,39 @@ class NoiseModel:
         return NoiseModel(self.kind, self.sqrt_information, loss)
 
 
+def _information(r: np.ndarray, what: str) -> np.ndarray:
+    """``r`` if every entry is finite: σ so small that 1/σ overflows is a DataError."""
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        ok = np.all(np.isfinite(r))
+    if not ok or r.size == 0:
+        raise DataError(f"{what}: the information (1/σ) is not finite — σ is too small")
+    return r
+
+
+def _dimension(dim, what: str) -> int:
+    if isinstance(dim, bool) or not isinstance(dim, (int, np.integer)) or dim < 1:
+        raise DataError(f"{what} needs a positive integer dimension, got {dim!r}")
+    return int(dim)
+
+
 def isotropic(dim: int, sigma: float) -> NoiseModel:
     """Same standard deviation ``sigma`` on every one of ``dim`` residual rows."""
+    dim = _dimension(dim, "isotropic noise")
     if not (np.isfinite(sigma) and sigma > 0):
         raise DataError(f"isotropic noise needs a positive finite sigma, got {sigma}")
-    return NoiseModel("isotropic", np.eye(dim) / sigma)
+    with np.errstate(over="ignore"):
+        r = np.eye(dim) / sigma
+    return NoiseModel("isotropic", _information(r, f"isotropic noise sigma {sigma}"))
 
 
 def diagonal(sigmas) -> NoiseModel:
     """Independent rows with standard deviations ``sigmas``."""
     s = _finite_array(sigmas, "diagonal noise sigmas").reshape(-1)
-    if np.any(s <= 0):
+    if s.size == 0 or np.any(s <= 0):
         raise DataError(f"diagonal noise sigmas must be positive, got {s.tolist()}")
-    return NoiseModel("diagonal", np.diag(1.0 / s))
+    with np.errstate(over="ignore", divide="ignore"):
+        r = np.diag(1.0 / s)
+    return NoiseModel("diagonal", _information(r, f"diagonal noise sigmas {s.tolist()}"))
 
 
 def covariance(cov) -> NoiseModel:
@@ -109,12 +129,13 @@ def covariance(cov) -> NoiseModel:
     if not np.allclose(c, c.T, rtol=1e-12, atol=1e-15 * np.abs(c).max()):
         raise DataError("noise covariance is not symmetric")
     try:
-        info = np.linalg.inv(np.linalg.cholesky(c))  # L⁻¹ with Σ = L Lᵀ, so Σ⁻¹ = L⁻ᵀ L⁻¹
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            info = np.linalg.inv(np.linalg.cholesky(c))  # L⁻¹ with Σ = L Lᵀ: Σ⁻¹ = L⁻ᵀ L⁻¹
+            # upper-triangular R with RᵀR = Σ⁻¹: Cholesky of the information matrix, transposed
+            r = np.linalg.cholesky(_information(info.T @ info, "noise covariance")).T
     except np.linalg.LinAlgError:
         raise DataError("noise covariance is not positive definite") from None
-    # upper-triangular R with RᵀR = Σ⁻¹: Cholesky of the information matrix, transposed
-    r = np.linalg.cholesky(info.T @ info).T
-    return NoiseModel("full", r)
+    return NoiseModel("full", _information(r, "noise covariance"))
 
 
 def sqrt_information(r) -> NoiseModel:
