@@ -1,8 +1,9 @@
 """Per block type: the data layout and printed kernels the kernel template places.
 
 A factor block (paper A's factor block, paper B's EJCC) has two modes on shared arithmetic:
-residual + Jacobian (``jacobian_<b>``, writing the instance's ``[J | r]`` rows straight into
-its slot of the A buffer) and residual + cost (``cost_<b>``, writing each member's ½‖W r‖²).
+residual + Jacobian (``jacobian_<b>``, writing each instance's ``[J | r]`` rows) and residual +
+cost (``cost_<b>``, writing each member's ½‖W r‖²). Both evaluate ``LANES`` instances side by side
+(printed with ``vector=True``: one SIMD operation per assignment on a CPU).
 Everything here is offsets and sizes; C++ syntax comes from the printer.
 """
 
@@ -16,6 +17,7 @@ from fgc.kernel import Kernel, drop_dead
 from fgc.program import BlockSpec, Program
 from fgc_backends.hls.names import comment
 from fgc_backends.hls.printer import PrintedKernel, print_kernel
+from fgc_backends.hls.sparsity import ZERO, BlockPattern, GramTiles, block_pattern
 
 NOISE_KINDS = {"isotropic": 0, "diagonal": 1, "full": 2}
 
@@ -64,8 +66,15 @@ class BlockContext:
     members: tuple[MemberSlot, ...]
     instances: tuple[int, ...]
     jacobian: PrintedKernel
-    jacobian_targets: tuple[tuple[int, str], ...]  # (index into the rows [J | r], expression)
+    jacobian_targets: tuple[tuple[int, str], ...]  # (local index of [J | r], expression)
     cost: PrintedKernel  # outputs: each member's ½‖W r‖²
+    pattern: BlockPattern
+    tiles: GramTiles
+
+    @property
+    def padded(self) -> int:
+        """Row stride of the local rows (whole Gram tiles)."""
+        return self.pattern.padded
 
     @property
     def stride(self) -> int:
@@ -101,23 +110,27 @@ def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, .
         meas_in += words
         noise_in += m.noise_params
     where = f"block type {b} ({comment(block.name)})"
+    pattern = block_pattern(block, tuple(m.kind for m in members), where)
     kernel = block.kernel.kernel()
-    jacobian = print_kernel(kernel, [f"in[{i}]" for i in range(len(kernel.inputs))], where)
-    targets = _targets(block.residual_dim, variables, jacobian.outputs)
+    jacobian = print_kernel(kernel, [f"in[{i}]" for i in range(len(kernel.inputs))], where,
+                            vector=True)
+    targets = _targets(pattern, variables, jacobian.outputs)
     return BlockContext(b, comment(block.name), block.residual_dim, col, n_in, noise_in,
                         tuple(variables), tuple(members), instances, jacobian, targets,
-                        _cost(block, where))
+                        _cost(block, where), pattern, pattern.tiles())
 
 
-def _targets(m: int, variables: list[VarSlot], outputs: tuple[str, ...]):
-    """Kernel outputs (residual, then each variable's m × dim Jacobian) → row-major [J | r]."""
-    d = sum(v.dim for v in variables)
-    targets = [(i * (d + 1) + d, outputs[i]) for i in range(m)]
+def _targets(pattern: BlockPattern, variables: list[VarSlot], outputs: tuple[str, ...]):
+    """Kernel outputs (residual, then each variable's m × dim Jacobian) → the local rows
+    [J | r] (stride ``pattern.padded``); structural zeros are not stored (the rows start zeroed)."""
+    m, stride = pattern.m, pattern.padded
+    targets = [(i * stride + pattern.d, outputs[i]) for i in range(m)]
     pos = m
     for v in variables:
         for r in range(m):
             for j in range(v.dim):
-                targets.append((r * (d + 1) + v.col + j, outputs[pos]))
+                if pattern.raw[r][v.col + j] != ZERO:
+                    targets.append((r * stride + v.col + j, outputs[pos]))
                 pos += 1
     return tuple(sorted(targets))
 
@@ -128,4 +141,5 @@ def _cost(block: BlockSpec, where: str) -> PrintedKernel:
     m, n = block.residual_dim, len(block.members)
     outputs = tuple(sp.sympify(e) for e in full.outputs[m:m + n])
     kernel = Kernel(full.inputs, drop_dead(full.assignments, outputs), outputs)
-    return print_kernel(kernel, [f"in[{i}]" for i in range(len(full.inputs))], where + " cost")
+    return print_kernel(kernel, [f"in[{i}]" for i in range(len(full.inputs))], where + " cost",
+                        vector=True)

@@ -8,8 +8,9 @@ here; there are no global flags.
 
 from __future__ import annotations
 
+import platform
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from fgc.errors import FgcError
@@ -36,7 +37,18 @@ class HlsConfig:
       ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
       widest elimination step this backend accepts; larger Programs fail at emit time.
-    - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation and native build.
+    - ``lanes``: factor instances a block evaluates side by side in the host builds (C
+      simulation and native), one lane each of a GCC/Clang vector type; ``None`` means one 32-byte
+      vector (4 doubles, 8 floats). Synthesis (``__SYNTHESIS__``) and fixed point use one. Each
+      lane computes exactly the scalar kernel, so results do not depend on it.
+    - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation (portable: they
+      are the testbench's), and the base of the native build.
+    - ``native_cxxflags``: added for the native shared library only, which is built on the
+      machine that runs it: ``-O3 -march=native`` (AVX on x86) but no fused multiply-add —
+      ``-mno-fma -mno-avx512f`` next to ``-ffp-contract=off`` in both builds — so every operation
+      rounds as in the C simulation and the two give bit-identical results (GCC 12 still emits
+      ``vfmaddsub`` under ``-ffp-contract=off`` when FMA is enabled). Set ``()`` to build the
+      native library with ``cxxflags`` alone.
     - ``lambda_upper_bound`` / ``absolute_error_tol``: LM gives up when μ would pass the bound;
       it stops once the cost is at most the tolerance (the simulator's ``SimConfig`` options,
       same defaults, so both backends run the same algorithm).
@@ -48,9 +60,11 @@ class HlsConfig:
     unit_sets: int | None = None
     max_variables: int = 8192
     max_step_columns: int = 512
+    lanes: int | None = None
     cxx: str = "g++"
-    cxxflags: tuple[str, ...] = ("-std=c++17", "-O2", "-Wall", "-Wextra", "-Werror",
-                                 "-Wno-unknown-pragmas")
+    cxxflags: tuple[str, ...] = ("-std=c++17", "-O2", "-ffp-contract=off", "-Wall", "-Wextra",
+                                 "-Werror", "-Wno-unknown-pragmas")
+    native_cxxflags: tuple[str, ...] = field(default_factory=lambda: native_flags())
     lambda_upper_bound: float = 1e10
     absolute_error_tol: float = 1e-14
 
@@ -65,10 +79,12 @@ class HlsConfig:
             raise HlsConfigError(f"clock period {self.clock_ns} ns is outside 0.5 … 1000 ns")
         if self.unit_sets is not None and not 1 <= int(self.unit_sets) <= 8:
             raise HlsConfigError(f"unit_sets must be 1 … 8, got {self.unit_sets}")
+        if self.lanes is not None and self.lanes not in (1, 2, 4, 8, 16):
+            raise HlsConfigError(f"lanes must be 1, 2, 4, 8 or 16, got {self.lanes}")
         for name in ("max_variables", "max_step_columns"):
             if int(getattr(self, name)) < 1:
                 raise HlsConfigError(f"{name} must be ≥ 1, got {getattr(self, name)}")
-        for flag in (self.cxx, *self.cxxflags):
+        for flag in (self.cxx, *self.cxxflags, *self.native_cxxflags):
             if not re.match(r"^[A-Za-z0-9_+=./-]+$", flag):
                 raise HlsConfigError(f"compiler option {flag!r} has characters a Makefile would "
                                      "interpret")
@@ -93,6 +109,14 @@ class HlsConfig:
         from fgc_backends.hls.printer import HlsCodePrinter
 
         return HlsCodePrinter(symbols or {})
+
+
+def native_flags(machine: str | None = None) -> tuple[str, ...]:
+    """The native build's extra flags on ``machine`` (default: this one's architecture)."""
+    machine = (machine or platform.machine()).lower()
+    if machine in ("x86_64", "amd64", "i686", "i386"):
+        return ("-O3", "-march=native", "-mno-fma", "-mno-avx512f")
+    return ("-O3",)  # elsewhere -ffp-contract=off alone keeps the rounding; ISA flags differ
 
 
 def ap_types_include() -> Path:

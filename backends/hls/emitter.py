@@ -24,8 +24,10 @@ from fgc_backends.hls.names import comment, identifier
 from fgc_backends.hls.printer import HlsCodePrinter
 from fgc_backends.hls.results import REASONS, STATUSES
 from fgc_backends.hls.retract import retract_kinds
+from fgc_backends.hls.sparsity import TILE
 from fgc_backends.hls.special import SERIES_BELOW, coefficient_functions
-from fgc_backends.hls.tables import build_tables, factor_data_words
+from fgc_backends.hls.steps import padded, step_patterns
+from fgc_backends.hls.tables import IntTable, build_tables, factor_data_words
 
 # template → emitted file name ({name} is the project identifier)
 FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
@@ -109,6 +111,14 @@ def _epsilon(config: HlsConfig) -> float:
     return 2.0 ** -(width - integer)
 
 
+def lanes(config: HlsConfig) -> int:
+    """Instances per block evaluation on the host: ``config.lanes``, else one 32-byte vector of
+    the scalar type (4 doubles, 8 floats); 1 for fixed point."""
+    if config.is_fixed_point:
+        return 1
+    return config.lanes or (4 if config.scalar == "double" else 8)
+
+
 def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter) -> dict:
     s, eps = program.solver, _epsilon(config)
     lit = printer.literal
@@ -137,6 +147,9 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
     two_ended = program.schedule.ordering == "two-ended"
     unit_sets = config.unit_sets or (2 if two_ended else 1)
     include = [str(ap_types_include())] if config.is_fixed_point else []
+    blocks = block_contexts(program)
+    patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
+                                           solver["cholesky"], solver["lm"])
     return {
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,
@@ -144,17 +157,21 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "include_dirs": include, "part": config.part, "clock_ns": repr(float(config.clock_ns)),
         "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
                                                  * config.is_fixed_point),
+        "native_cxxflags": " ".join(config.native_cxxflags),
         "units": max(1, int(program.solver.units)), "cpe": max(1, int(program.solver.cpe)),
         "unit_sets": unit_sets, "structure_comment": comment(
             f"{program.schedule.structure_class} graph, {program.schedule.ordering} ordering"),
         "constants": tables.constants, "sizes": {
             **dict(tables.constants),
             "MAX_LEVEL_WIDTH": max(len(level) for level in program.schedule.levels),
-            "MAX_STORAGE": max(v.storage_dim for v in program.variables)},
+            "MAX_STORAGE": max(v.storage_dim for v in program.variables),
+            "MAX_LD": padded(tables.constant("MAX_W") + 1)},
         "max_variables": program.max_variables,
         "header_tables": [t for t in tables.arrays if t.name in HEADER_TABLES],
-        "tables": [t for t in tables.arrays if t.name not in HEADER_TABLES],
-        "blocks": block_contexts(program), "retracts": retract_kinds(program),
+        "tables": [t for t in tables.arrays if t.name not in HEADER_TABLES]
+        + [IntTable("STEP_PATTERN", step_pattern)] * bool(patterns),
+        "blocks": blocks, "patterns": patterns, "retracts": retract_kinds(program), "tile": TILE,
+        "lanes": lanes(config),
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,
         "max_level_width": max(len(level) for level in program.schedule.levels),

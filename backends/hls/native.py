@@ -14,6 +14,7 @@ from __future__ import annotations
 import ctypes
 import hashlib
 import os
+import platform
 import shutil
 from dataclasses import dataclass
 from pathlib import Path
@@ -90,10 +91,25 @@ class NativeSolver:
         return result_from_arrays(self.program, x, errors, *info)
 
 
+def host_key() -> str:
+    """The machine the native build is for: ``-march=native`` code may not run elsewhere, so a
+    cache shared between machines keeps one build per CPU model and feature set."""
+    cpu = ""
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8", errors="replace") as fh:
+            cpu = "".join(sorted({line for line in fh if line.startswith(("model name",
+                                                                           "flags"))}))
+    except OSError:
+        pass
+    return f"{platform.machine()}|{platform.processor()}|{cpu}"
+
+
 def project_key(program: Program, config: HlsConfig) -> str:
-    """Content hash of everything the build depends on (Program, config, templates, fgc)."""
+    """Content hash of everything the build depends on (Program, config, templates, fgc, the
+    host CPU)."""
     h = hashlib.sha256(program.to_json().encode())
     h.update(repr(config).encode())
+    h.update(host_key().encode())
     h.update(fgc.__version__.encode())
     for template in sorted(HlsConfig.template_dir().glob("*.jinja")):
         h.update(template.read_bytes())

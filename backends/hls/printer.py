@@ -47,10 +47,11 @@ class HlsCodePrinter(CXX17CodePrinter):
     printmethod = "_hlscode"
 
     def __init__(self, symbols: dict[sp.Symbol, str], settings: dict | None = None,
-                 checked: bool = False):
+                 checked: bool = False, vector: bool = False):
         super().__init__({"strict": True, **(settings or {})})
         self.symbol_names = dict(symbols)
         self.checked = checked  # the caller ran check_supported on everything it will print
+        self.call = "v_" if vector else ""  # lane-wise versions of the functions on V
 
     def doprint(self, expr, assign_to=None) -> str:
         """C++ text of ``expr``; refuses anything outside the whitelist (sympy's C++ printer
@@ -114,9 +115,9 @@ class HlsCodePrinter(CXX17CodePrinter):
     def _print_Pow(self, expr: sp.Pow) -> str:
         base, exp = expr.base, expr.exp
         if exp == sp.Rational(1, 2):
-            return f"fgc_sqrt({self._print(base)})"
+            return f"{self.call}fgc_sqrt({self._print(base)})"
         if exp == -sp.Rational(1, 2):
-            return f"(T(1)/fgc_sqrt({self._print(base)}))"
+            return f"(T(1)/{self.call}fgc_sqrt({self._print(base)}))"
         if exp.is_Integer and 1 <= abs(int(exp)) <= _MAX_PRODUCT_POWER:
             factor = self.parenthesize(base, 100)
             product = "*".join([factor] * abs(int(exp)))
@@ -127,10 +128,10 @@ class HlsCodePrinter(CXX17CodePrinter):
     def _print_Function(self, expr) -> str:
         args = ", ".join(self._print(a) for a in expr.args)
         if isinstance(expr, (special.LieCoefficient, special.SO3LogComponent)):
-            return f"{type(expr).__name__}({args})"
+            return f"{self.call}{type(expr).__name__}({args})"
         for func, name in _FUNCTIONS.items():
             if isinstance(expr, func):
-                return f"{name}({args})"
+                return f"{self.call}{name}({args})"
         raise UnsupportedExpressionError(f"the HLS backend has no C++ for the function "
                                          f"'{type(expr).__name__}'")
 
@@ -171,18 +172,24 @@ def check_supported(exprs: Iterable[sp.Expr], where: str) -> None:
 
 
 def print_kernel(kernel: Kernel, input_names: Sequence[str], where: str,
-                 prefix: str = "t") -> PrintedKernel:
+                 prefix: str = "t", vector: bool = False) -> PrintedKernel:
     """Print ``kernel`` with inputs named ``input_names`` and intermediates ``<prefix><i>``.
 
     ``where`` names the kernel in error messages (e.g. the block type). The three components
     ``so3_log_x/y/z`` of one rotation are assigned from a single ``so3_log`` call (one logarithm
     instead of three).
+
+    ``vector``: every value has type ``V`` instead of ``T`` — in the emitted code, ``LANES``
+    scalars side by side (a GCC/Clang vector type on the host, ``T`` itself in synthesis) — and
+    functions are called as their lane-wise versions ``v_<name>``. Each lane computes exactly the
+    scalar operations, so results do not depend on ``LANES``.
     """
     exprs = [e for _, e in kernel.assignments] + [sp.sympify(e) for e in kernel.outputs]
     check_supported(exprs, where)
     names = dict(zip(kernel.inputs, input_names, strict=True))
     names.update({x: f"{prefix}{i}" for i, (x, _) in enumerate(kernel.assignments)})
-    printer = HlsCodePrinter(names, checked=True)
+    printer = HlsCodePrinter(names, checked=True, vector=vector)
+    value_type = "V" if vector else "T"
     logs: dict[tuple, str] = {}
     lines = []
     for x, e in kernel.assignments:
@@ -190,9 +197,10 @@ def print_kernel(kernel: Kernel, input_names: Sequence[str], where: str,
             if e.args not in logs:
                 logs[e.args] = f"{prefix}log{len(logs)}"
                 args = ", ".join(printer.doprint(a) for a in e.args)
-                lines.append(f"T {logs[e.args]}[3]; so3_log({args}, {logs[e.args]});")
-            lines.append(f"const T {names[x]} = {logs[e.args]}[{e.axis}];")
+                lines.append(f"{value_type} {logs[e.args]}[3]; {printer.call}so3_log({args}, "
+                             f"{logs[e.args]});")
+            lines.append(f"const {value_type} {names[x]} = {logs[e.args]}[{e.axis}];")
         else:
-            lines.append(f"const T {names[x]} = {printer.doprint(e)};")
+            lines.append(f"const {value_type} {names[x]} = {printer.doprint(e)};")
     outputs = tuple(printer.doprint(sp.sympify(e)) for e in kernel.outputs)
     return PrintedKernel(tuple(lines), outputs, sum(kernel.op_counts().values()))

@@ -1,0 +1,237 @@
+"""The HLS backend's structure-aware code generation, checked in Python without a compiler.
+
+- sparsity: the whitened pattern of each block and the Gram tiles that skip its structural zeros;
+- steps: the specialised step patterns move exactly what the generic table-driven assembly moves,
+  and a QR pattern's Householder plan lists every row a reflection can touch;
+- printing for lanes, and the native build's flags.
+
+Whether the emitted C++ computes the simulator's numbers is ``test_hls_csim.py``'s job.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from fgc.compile import compile_graph
+from fgc.kernel import Kernel
+from fgc.program import SolverConfig
+from fgc_backends.hls import HlsConfigError
+from fgc_backends.hls.blocks import NOISE_KINDS, block_contexts
+from fgc_backends.hls.config import native_flags
+from fgc_backends.hls.printer import print_kernel
+from fgc_backends.hls.sparsity import TILE, ZERO, block_pattern
+from fgc_backends.hls.steps import step_patterns
+from fgc_backends.hls.tables import build_tables
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "examples"))
+
+import lio  # noqa: E402
+import pose_graph  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def programs() -> dict:
+    out = {}
+    for name, graph in (("lio", lio.build(N=8)), ("w100", pose_graph.build())):
+        for linear in ("qr", "cholesky"):
+            out[name, linear] = compile_graph(graph, SolverConfig(linear=linear), name=name)
+    return out
+
+
+def _kinds(block) -> tuple[int, ...]:
+    return tuple(NOISE_KINDS[m.noise_kind] for m in block.members)
+
+
+# ---- sparsity --------------------------------------------------------------------------------
+
+
+def test_full_noise_rows_are_the_union_of_the_rows_below(programs):
+    program = programs["lio", "qr"]
+    imu = next(b for b in program.blocks if b.name.startswith("CombinedImuFactor"))
+    pattern = block_pattern(imu, _kinds(imu), "imu")
+    first, rows, kind = pattern.members[0]
+    assert kind == 2
+    for i in range(first, first + rows):
+        union = [any(pattern.raw[j][c] != ZERO for j in range(i, first + rows))
+                 for c in range(pattern.stride)]
+        assert list(pattern.whitened[i]) == union
+    for first, rows, kind in pattern.members[1:]:  # LiDAR odometry: diagonal noise
+        assert kind == 1
+        for i in range(first, first + rows):
+            assert list(pattern.whitened[i]) == [code != ZERO for code in pattern.raw[i]]
+    assert sum(map(sum, pattern.whitened)) < pattern.m * pattern.stride  # zeros are left
+
+
+@pytest.mark.parametrize("name", ["lio", "w100"])
+def test_gram_tiles_cover_every_structural_entry(programs, name):
+    for ctx in block_contexts(programs[name, "cholesky"]):
+        pattern, tiles = ctx.pattern, ctx.tiles
+        covered = {}
+        for t in range(tiles.count):
+            p0, q0, first, n = tiles.table[4 * t:4 * t + 4]
+            assert q0 <= p0 and p0 % TILE == 0 and q0 % TILE == 0
+            rows = set(tiles.rows[first:first + n])
+            for p in range(p0, min(p0 + TILE, pattern.stride)):
+                for q in range(q0, min(q0 + TILE, p + 1)):
+                    covered[p, q] = rows
+        for p in range(pattern.stride):
+            for q in range(p + 1):
+                needed = set(pattern.gram_rows(p, q))
+                assert needed <= covered.get((p, q), set()), (ctx.index, p, q)
+        assert ctx.padded % TILE == 0 and ctx.padded >= pattern.stride
+
+
+def test_structure_disagreeing_with_the_kernel_is_refused(programs):
+    block = programs["w100", "qr"].blocks[0]
+    codes = [list(map(list, k)) for k in block.structure]
+    i, j = next((i, j) for i, row in enumerate(codes[0]) for j, c in enumerate(row) if c == "x")
+    codes[0][i][j] = ZERO
+    bad = dataclasses.replace(block, structure=tuple(tuple(map(tuple, k)) for k in codes))
+    with pytest.raises(HlsConfigError, match="block type 7.*structure code '0'"):
+        block_pattern(bad, _kinds(bad), "block type 7")
+
+
+# ---- specialised steps -----------------------------------------------------------------------
+
+
+def _generic_assembly(t: dict, s: int, operands: list, cholesky: bool, mu: float):
+    """What the generic C++ step assembles (its table-driven loops, in NumPy)."""
+    w, f = t["STEP_W"][s], t["STEP_F"][s]
+    facs = t["STEP_FACTORS"][t["STEP_FACTOR_BEGIN"][s]:t["STEP_FACTOR_BEGIN"][s + 1]]
+    kids = t["STEP_CHILDREN"][t["STEP_CHILD_BEGIN"][s]:t["STEP_CHILD_BEGIN"][s + 1]]
+    out = np.zeros((w if cholesky else t["STEP_ROWS"][s], w + 1))
+    row = 0
+    for k, fac in enumerate(facs):
+        cm = t["FACTOR_COLMAP"][t["FACTOR_COLMAP_BEGIN"][fac]:t["FACTOR_COLMAP_BEGIN"][fac + 1]]
+        d, op = len(cm), operands[k]
+        full = [*cm, w]
+        if cholesky:
+            for p in range(d + 1):
+                for q in range(p + 1):
+                    if (p, q) != (d, d):
+                        a, b = sorted((full[p], full[q]))
+                        out[a, b] += op[p * (p + 1) // 2 + q]
+        else:
+            for r in range(len(op) // (d + 1)):
+                out[row, full] = op[r * (d + 1):(r + 1) * (d + 1)]
+                row += 1
+    for j, c in enumerate(kids):
+        sc = t["STEP_W"][c] - t["STEP_F"][c]
+        full = [*t["STEP_SEPMAP"][t["STEP_SEPMAP_BEGIN"][c]:t["STEP_SEPMAP_BEGIN"][c + 1]], w]
+        op = operands[len(facs) + j]
+        if cholesky:
+            for a in range(sc):
+                for b in range(a, sc + 1):
+                    lo, hi = sorted((full[a], full[b]))
+                    out[lo, hi] += op[a * (sc + 1) + b]
+        else:
+            for r in range(t["STEP_NF_ROWS"][c]):
+                out[row, full] = op[r * (sc + 1):(r + 1) * (sc + 1)]
+                row += 1
+    if not cholesky:
+        out[np.arange(row, row + f), np.arange(f)] = mu
+    return out
+
+
+@pytest.mark.parametrize("key", [("lio", "qr"), ("lio", "cholesky"), ("w100", "qr"),
+                                 ("w100", "cholesky")])
+def test_specialised_steps_assemble_what_the_tables_do(programs, key):
+    program = programs[key]
+    cholesky = key[1] == "cholesky"
+    blocks = block_contexts(program)
+    tables = build_tables(program, damped=True, cholesky=cholesky)
+    t = {a.name: a.values for a in tables.arrays}
+    patterns, of_step = step_patterns(tables, {b.index: b.pattern for b in blocks}, cholesky)
+    assert patterns, "the examples repeat step shapes"
+    rng = np.random.default_rng(1)
+    for pat in patterns:
+        for s in pat.steps:
+            assert of_step[s] == pat.index
+            operands = []
+            for fac in t["STEP_FACTORS"][t["STEP_FACTOR_BEGIN"][s]:t["STEP_FACTOR_BEGIN"][s + 1]]:
+                ctx = blocks[t["FACTOR_BLOCK"][fac]]
+                pattern = ctx.pattern
+                if cholesky:  # a Gram with the structural zeros of the block
+                    op = np.zeros(pattern.stride * (pattern.stride + 1) // 2)
+                    for p in range(pattern.stride):
+                        for q in range(p + 1):
+                            if pattern.gram_rows(p, q):
+                                op[p * (p + 1) // 2 + q] = rng.standard_normal()
+                else:
+                    op = rng.standard_normal((pattern.m, pattern.stride)) * np.array(
+                        pattern.whitened)
+                operands.append(op.ravel())
+            for c in t["STEP_CHILDREN"][t["STEP_CHILD_BEGIN"][s]:t["STEP_CHILD_BEGIN"][s + 1]]:
+                sc = t["STEP_W"][c] - t["STEP_F"][c]
+                rows = sc if cholesky else t["STEP_NF_ROWS"][c]
+                operands.append(np.triu(rng.standard_normal((rows, sc + 1))).ravel())
+            expected = _generic_assembly(t, s, operands, cholesky, mu=0.5)
+            got = np.zeros_like(expected)
+            for r, c, k, i in pat.moves:
+                got[r, c] += operands[k][i]
+            if not cholesky:
+                got[np.arange(pat.rows - pat.f, pat.rows), np.arange(pat.f)] = 0.5
+            np.testing.assert_array_equal(got, expected)
+
+
+def test_householder_plan_lists_every_row_a_reflection_touches(programs):
+    program = programs["lio", "qr"]
+    blocks = block_contexts(program)
+    tables = build_tables(program, damped=True, cholesky=False)
+    patterns, _ = step_patterns(tables, {b.index: b.pattern for b in blocks}, cholesky=False)
+    rng = np.random.default_rng(2)
+    for pat in patterns:
+        w = np.zeros((pat.rows, pat.w + 1))
+        for r, c, _, _ in pat.moves:
+            w[r, c] = rng.standard_normal()
+        w[np.arange(pat.rows - pat.f, pat.rows), np.arange(pat.f)] = 0.3
+        pos = 0
+        for j in range(min(pat.rows, pat.w + 1)):
+            n = pat.plan[pos]
+            planned = list(pat.plan[pos + 1:pos + 1 + n])
+            pos += n + 1
+            touched = [i for i in range(j, pat.rows) if i == j or w[i, j] != 0]
+            assert planned[0] == j and set(touched) <= set(planned), j
+            x = w[planned, j].copy()  # the reflection, on the planned rows
+            alpha = -np.copysign(np.linalg.norm(x), x[0])
+            v = x.copy()
+            v[0] -= alpha
+            if v @ v > 0:
+                w[planned] -= np.outer(2 * v / (v @ v), v @ w[planned])
+                w[planned[1:], j] = 0
+        assert pos == len(pat.plan)
+
+
+def test_chain_steps_collapse_into_two_patterns(programs):
+    program = programs["lio", "cholesky"]
+    blocks = block_contexts(program)
+    tables = build_tables(program, damped=True, cholesky=True)
+    patterns, of_step = step_patterns(tables, {b.index: b.pattern for b in blocks}, True)
+    assert len(patterns) == 2  # one per end of the two-ended chain
+    assert sum(s == -1 for s in of_step) <= 4  # the ends meet priors and each other
+
+
+# ---- printing and flags ----------------------------------------------------------------------
+
+
+def test_kernels_print_for_lanes():
+    x, y, t = sp.symbols("x y t", real=True)
+    kernel = Kernel((x, y), ((t, x * y + sp.sqrt(x)),), (2 * t, x))
+    scalar = print_kernel(kernel, ["in[0]", "in[1]"], "k")
+    vector = print_kernel(kernel, ["in[0]", "in[1]"], "k", vector=True)
+    assert scalar.intermediates == ("const T t0 = fgc_sqrt(in[0]) + in[0]*in[1];",)
+    assert vector.intermediates == ("const V t0 = v_fgc_sqrt(in[0]) + in[0]*in[1];",)
+    assert vector.outputs == scalar.outputs
+
+
+def test_native_flags_keep_the_rounding():
+    x86 = native_flags("x86_64")
+    assert "-march=native" in x86 and "-mno-fma" in x86 and "-mno-avx512f" in x86
+    assert native_flags("aarch64") == ("-O3",)
