@@ -93,7 +93,7 @@ def graph_specs(draw, max_poses: int = 10) -> GraphSpec:
 # Three fixed structures for the native HLS path: it builds C++ once per Program, so its
 # property test varies only the data (numbers, noise level, robust loss, perturbation).
 NATIVE_STRUCTURES = (
-    GraphSpec("pose2", poses=6, landmarks=0, loop_closures=2, gps_every=0, noise_kind="full",
+    GraphSpec("pose2", poses=6, landmarks=2, loop_closures=2, gps_every=0, noise_kind="full",
               robust=None, sigma=0.05, perturbation=0.05, duplicate=True, seed=0,
               structure_seed=11, linear="qr", ordering="min-degree"),
     GraphSpec("pose3", poses=5, landmarks=0, loop_closures=1, gps_every=2,
@@ -103,10 +103,6 @@ NATIVE_STRUCTURES = (
               robust=None, sigma=0.05, perturbation=0.05, duplicate=False, seed=0,
               structure_seed=13, linear="qr"),
 )
-
-
-# The HLS printer cannot emit BearingRangeFactor2D yet (tests/test_property.py, xfail).
-NATIVE_BEARING_RANGE = dataclasses.replace(NATIVE_STRUCTURES[0], landmarks=2)
 
 
 @st.composite

@@ -58,13 +58,16 @@ def test_printer_keeps_arithmetic_in_the_scalar_type():
     assert p.doprint(x**2) == "(in[0]*in[0])"
     assert p.doprint(1 / y**2) == "(T(1)/(t1*t1))"
     assert p.doprint(sp.sqrt(x)) == "fgc_sqrt(in[0])"
+    assert p.doprint(x ** sp.Rational(-3, 2)) == "(T(1)/(fgc_sqrt(in[0])*in[0]))"  # bearing-range
+    assert p.doprint(y ** sp.Rational(5, 2)) == "(fgc_sqrt(t1)*t1*t1)"
     assert p.doprint(sp.Rational(1, 3) * y) == "(T(0.3333333333333333))*t1"
     assert p.doprint(special.lie_A(x * x)) == "lie_A((in[0]*in[0]))"
     assert p.doprint(sp.atan2(y, x)) == "fgc_atan2(t1, in[0])"
 
 
 @pytest.mark.parametrize("expr", [sp.Abs(sp.Symbol("x")), sp.Symbol("x") ** sp.Rational(1, 3),
-                                  sp.Symbol("x") ** 20, sp.gamma(sp.Symbol("x"))])
+                                  sp.Symbol("x") ** 20, sp.Symbol("x") ** sp.Rational(19, 2),
+                                  sp.Symbol("x") ** sp.Float(1.5), sp.gamma(sp.Symbol("x"))])
 def test_printer_refuses_what_it_cannot_print(expr):
     with pytest.raises(UnsupportedExpressionError):
         HlsCodePrinter({sp.Symbol("x"): "in[0]"}).doprint(expr)

@@ -21,7 +21,7 @@ from collections import Counter
 
 import pytest
 from hypothesis import HealthCheck, Phase, event, given, settings
-from strategies import NATIVE_BEARING_RANGE, compare, compare_native, graph_specs, native_specs
+from strategies import compare, compare_native, graph_specs, native_specs
 
 OUTCOMES: Counter = Counter()
 MAX_EXCLUDED = 0.05
@@ -59,17 +59,6 @@ def test_random_graphs_match_gtsam(spec):
 @given(native_specs())
 def test_native_library_matches_gtsam_on_random_data(spec):
     check_native(spec)
-
-
-@needs_gxx
-@pytest.mark.xfail(strict=True, reason="the HLS printer has no x**(-3/2) (BearingRangeFactor2D's "
-                   "Jacobian); when it has, add the structure to NATIVE_STRUCTURES")
-def test_native_library_emits_bearing_range():
-    from fgc_backends.hls.printer import UnsupportedExpressionError
-
-    with pytest.raises(UnsupportedExpressionError):
-        compare_native(NATIVE_BEARING_RANGE)
-    raise AssertionError("still unsupported")
 
 
 @pytest.mark.heavy

@@ -114,16 +114,22 @@ class HlsCodePrinter(CXX17CodePrinter):
     # -- operations -----------------------------------------------------------------------
     def _print_Pow(self, expr: sp.Pow) -> str:
         base, exp = expr.base, expr.exp
+        if not _printable_power(exp):
+            raise UnsupportedExpressionError(f"the HLS backend prints only integer and "
+                                             f"half-integer powers up to {_MAX_PRODUCT_POWER} "
+                                             f"in magnitude, not {expr}")
+        # b**(n/2) = sqrt(b) * b**((n-1)/2): one square root and a product of multiplies
+        whole = int(abs(exp))  # whole multiplies: |n/2| rounded down
+        factor = self.parenthesize(base, 100)
+        terms = [factor] * whole
+        if not exp.is_Integer:
+            terms.insert(0, f"{self.call}fgc_sqrt({self._print(base)})")
         if exp == sp.Rational(1, 2):
-            return f"{self.call}fgc_sqrt({self._print(base)})"
+            return terms[0]
         if exp == -sp.Rational(1, 2):
-            return f"(T(1)/{self.call}fgc_sqrt({self._print(base)}))"
-        if exp.is_Integer and 1 <= abs(int(exp)) <= _MAX_PRODUCT_POWER:
-            factor = self.parenthesize(base, 100)
-            product = "*".join([factor] * abs(int(exp)))
-            return f"({product})" if exp > 0 else f"(T(1)/({product}))"
-        raise UnsupportedExpressionError(f"the HLS backend prints only integer powers up to "
-                                         f"{_MAX_PRODUCT_POWER} and square roots, not {expr}")
+            return f"(T(1)/{terms[0]})"
+        product = "*".join(terms)
+        return f"({product})" if exp > 0 else f"(T(1)/({product}))"
 
     def _print_Function(self, expr) -> str:
         args = ", ".join(self._print(a) for a in expr.args)
@@ -144,6 +150,13 @@ class HlsCodePrinter(CXX17CodePrinter):
     emptyPrinter = _print_not_supported
 
 
+def _printable_power(exp) -> bool:
+    """Whether b**exp prints: exp a non-zero integer or half-integer, |exp| ≤ the product bound."""
+    if not exp.is_Rational or exp == 0 or abs(exp) > _MAX_PRODUCT_POWER:
+        return False
+    return exp.is_Integer or exp.q == 2
+
+
 def check_supported(exprs: Iterable[sp.Expr], where: str) -> None:
     """Raise :class:`UnsupportedExpressionError` naming ``where`` if any node cannot be printed.
 
@@ -160,10 +173,7 @@ def check_supported(exprs: Iterable[sp.Expr], where: str) -> None:
                         f"{where}: cannot print '{type(node).__name__}'")
                 continue
             if isinstance(node, sp.Pow):
-                exp = node.exp
-                ok = exp in (sp.Rational(1, 2), -sp.Rational(1, 2)) or (
-                    exp.is_Integer and 1 <= abs(int(exp)) <= _MAX_PRODUCT_POWER)
-                if not ok:
+                if not _printable_power(node.exp):
                     raise UnsupportedExpressionError(f"{where}: unsupported power {node}")
                 continue
             if not isinstance(node, allowed_funcs):
