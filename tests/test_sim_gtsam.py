@@ -20,7 +20,7 @@ from fgc.datafile import problem_data
 from fgc.factors import BetweenFactor, PriorFactor
 from fgc.geometry import Point3, Pose2, Rot3
 from fgc.program import SolverConfig
-from fgc.verify import to_gtsam, value_to_gtsam, values_from_gtsam
+from fgc.verify import to_gtsam, value_from_gtsam, value_to_gtsam, values_from_gtsam
 from fgc_backends import sim
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -258,6 +258,139 @@ def test_incremental_imu_window_matches_isam2_and_batch(imu20):
         assert np.linalg.norm(imu20.values[key].local(value)) <= STATE_TOL
 
 
+def _linear_at(ref: Reference, factor, lin):
+    """``factor`` linearised (whitened) at ``lin``, as a factor of the local coordinates
+    s_i = Log(x̄_i⁻¹ x_i): error Σ A_i·s_i − b with Jacobians A_i·∂s_i/∂δ_i — fgc's τ (GTSAM's
+    LinearContainerFactor keeps A_i, which is not the derivative of its error)."""
+    import gtsam
+
+    a, b = factor.linearize(lin).jacobian()
+    keys = list(factor.keys())
+    graph_key = {k: key for key, k in ref.problem.keys.items()}
+    kinds = [ref.graph.variables[graph_key[k]].type.__name__ for k in keys]
+    if not set(kinds) <= {"Pose3", "ImuBias", "Vector3"}:
+        raise NotImplementedError(f"_linear_at: variable types {kinds}")
+
+    def read(kind, values, key):
+        value = _at(values, kind, key)
+        return value.vector() if kind == "ImuBias" else value
+
+    bars = [read(kind, lin, k) for kind, k in zip(kinds, keys, strict=True)]
+    cols = np.cumsum([0] + [6 if kind != "Vector3" else 3 for kind in kinds])
+
+    def error(this, values, jacobians):
+        r = -b
+        for i, (kind, key, bar) in enumerate(zip(kinds, keys, bars, strict=True)):
+            if kind == "Pose3":
+                shift = gtsam.Pose3.Logmap(bar.between(values.atPose3(key)))
+                jac = gtsam.Pose3.LogmapDerivative(shift)
+            else:
+                shift, jac = read(kind, values, key) - bar, np.eye(len(bar))
+            block = a[:, cols[i]:cols[i + 1]]
+            r = r + block @ shift
+            if jacobians is not None:
+                jacobians[i] = block @ jac
+        return r
+
+    return gtsam.CustomFactor(gtsam.noiseModel.Unit.Create(a.shape[0]), keys, error)
+
+
+def isam2_per_keyframe(ref: Reference, clusters, windows, tol: float = 1e-11) -> list[dict]:
+    """ISAM2 (QR, relinearising every variable it may, full back-substitution) keyframe by
+    keyframe; returns the estimate after each keyframe for the variables that have arrived.
+
+    ``windows`` holds per keyframe (first, batch) — fgc's policy — or None — plain ISAM2. With a
+    window, the variables of clusters before ``first`` are held (noRelinKeys) and the factors
+    reaching across into the window are kept linear at the estimate before the keyframe
+    (:func:`_linear_at`), as fgc keeps them inside τ; batch steps hold nothing and restore the
+    nonlinear factors. Each keyframe: update, then update() until no variable moves by ``tol``.
+    """
+    import gtsam
+
+    params = gtsam.ISAM2Params()
+    params.setFactorization("QR")
+    params.setRelinearizeThreshold(0.0)
+    params.relinearizeSkip = 1
+    gauss_newton = gtsam.ISAM2GaussNewtonParams()
+    gauss_newton.setWildfireThreshold(0.0)
+    params.setOptimizationParams(gauss_newton)
+    isam = gtsam.ISAM2(params)
+    cluster_of = {key: c for c, keys in enumerate(clusters) for key in keys}
+    spans = [[cluster_of[str(k)] for k in f.keys] for f in ref.graph.factors]
+    slot, linear, estimates = {}, set(), []
+    for c, keys in enumerate(clusters):
+        first, batch = (0, True) if windows is None else windows[c]
+        factors, values, remove, added = gtsam.NonlinearFactorGraph(), gtsam.Values(), [], []
+        for i, span in enumerate(spans):
+            if max(span) == c:
+                assert batch or min(span) >= first
+                factors.add(ref.problem.graph.at(i))
+                added.append(i)
+            elif i in slot and (not batch and min(span) < first) != (i in linear):
+                remove.append(slot[i])
+                linear.symmetric_difference_update({i})
+                factors.add(_linear_at(ref, ref.problem.graph.at(i), isam.calculateEstimate())
+                            if i in linear else ref.problem.graph.at(i))
+                added.append(i)
+        for key in keys:
+            values.insert(ref.problem.keys[ref.keys[key]],
+                          value_to_gtsam(ref.graph.variables[ref.keys[key]].initial))
+        held = None
+        if not batch:
+            held = gtsam.KeyList()
+            for key in (key for old in clusters[:first] for key in old):
+                held.push_back(ref.problem.keys[ref.keys[key]])
+        result = isam.update(factors, values, remove, None, held, None, False)
+        slot.update(zip(added, result.getNewFactorsIndices(), strict=True))
+        estimate = isam.calculateEstimate()
+        for _ in range(100):
+            isam.update(gtsam.NonlinearFactorGraph(), gtsam.Values(), [], None, held, None,
+                        False)
+            previous, estimate = estimate, isam.calculateEstimate()
+            if np.max(np.abs(previous.localCoordinates(estimate).vector())) < tol:
+                break
+        else:
+            raise AssertionError(f"ISAM2 did not settle at keyframe {c}")
+        variables = [ref.graph.variables[ref.keys[key]] for old in clusters[:c + 1]
+                     for key in old]
+        estimates.append({str(v.key): value_from_gtsam(v.type, _at(
+            estimate, v.type.__name__, ref.problem.keys[v.key])) for v in variables})
+    return estimates
+
+
+def _at(values, kind: str, key: int):
+    """The GTSAM value at ``key`` of an fgc variable of type ``kind``."""
+    return {"Pose3": values.atPose3, "ImuBias": values.atConstantBias}.get(
+        kind, values.atVector)(key)
+
+
+def per_step_distance(result: sim.SimResult, estimates: list[dict]) -> list[float]:
+    """Per keyframe, the largest tangent-space distance between fgc's and another estimate."""
+    return [max(float(np.linalg.norm(other[k].local(v))) for k, v in update["values"].items())
+            for update, other in zip(result.updates, estimates, strict=True)]
+
+
+def test_incremental_lio_matches_isam2_after_every_keyframe(lio30):
+    """Window-of-3 on LIO (N = 30) with batch steps at 5, 15, 25 (paper A), against ISAM2 fed
+    the same factors keyframe by keyframe with the same policy (:func:`isam2_per_keyframe`):
+    after every keyframe every variable agrees to 1e-6. Measured max over steps and variables:
+    7.0e-8 (keyframe 3; 7.0e-8 also for N = 12), set by fgc's window stopping at a 1e-12
+    relative cost decrease (≈1.6e-8 with 1e-16 tolerances). Plain ISAM2 (relinearising every
+    variable) is the batch optimum of the graph so far: the window's kept linearisation differs
+    from it by up to 1.3e-2, so this comparison would catch a change of policy."""
+    program = compile_graph(lio30.graph, SolverConfig(incremental_k=3, batch_every=(5, 15, 25)))
+    result = sim.run(program, problem_data(lio30.graph, program), incremental=True)
+    assert result.converged and len(result.updates) == 30
+    plan = program.schedule.incremental.updates
+    windows = [(u["first"], u["mode"] == "batch") for u in result.updates]
+    assert windows == [(p.clusters[0], p.mode == "batch") for p in plan]
+    clusters = program.schedule.clusters
+    same = per_step_distance(result, isam2_per_keyframe(lio30, clusters, windows))
+    assert max(same) <= STATE_TOL, same
+    plain = per_step_distance(result, isam2_per_keyframe(lio30, clusters, None))
+    assert max(plain) > 1e-3, plain
+
+
 # --------------------------------------------------------------------------------------------
 # heavy cases
 # --------------------------------------------------------------------------------------------
@@ -284,9 +417,9 @@ def test_more_solver_variants_match_gtsam(w100, imu20, solver):
 
 @pytest.mark.heavy
 def test_incremental_lio_with_a_final_batch_step_reaches_the_optimum(lio30):
-    """LIO couples keyframes strongly (adding keyframe 30 moves the optimum of the first 29 by up
-    to 2 m), so window-of-3 updates on a kept linearisation drift from the batch optimum by
-    metres; a batch step at the last keyframe brings the estimate back. Tolerance 1e-3: this
+    """Window-of-3 updates on a kept linearisation drift from the batch optimum of the graph so
+    far (measured: up to 1.3e-2 in tangent space, ~1 cm, with batch steps at 5, 15, 25); a batch
+    step at the last keyframe brings the estimate back. Tolerance 1e-3: this
     large-residual problem converges linearly, and stopping at a 1e-12 relative cost decrease
     from the incremental estimate leaves ≈1e-4."""
     program = compile_graph(lio30.graph, SolverConfig(incremental_k=3,

@@ -34,7 +34,8 @@ class SimResult:
     ``cost_log`` holds the initial cost and the cost after each accepted step (incremental
     runs: the initial and the final cost of the whole graph); ``updates`` lists, for an
     incremental run, each keyframe's update (mode, first re-eliminated cluster, iterations,
-    status, window cost).
+    status, window cost, and under ``"values"`` the estimate after the update: fgc values by
+    variable key, for the variables that have arrived).
 
     ``singular_variable`` is the key of the variable whose elimination pivot vanished (reason
     "singular", or LM's rank-deficient solution found by the diagnosis); ``condition`` the
@@ -155,9 +156,24 @@ def _result(program: Program, raw: dict, files: tuple[Path, ...],
     return SimResult(values, storage, raw["status"], raw["reason"], raw["iterations"],
                      raw["initial_error"], raw["final_error"], tuple(raw["cost_log"]),
                      raw["precision"], raw["setup_seconds"], raw["solve_seconds"], files,
-                     None if raw.get("incremental") is None else tuple(raw["incremental"]),
+                     _updates(program, raw.get("incremental")),
                      singular, raw.get("condition"), " ".join(messages), tuple(warned),
                      raw.get("linear", program.solver.linear))
+
+
+def _updates(program: Program, raw: list[dict] | None) -> tuple[dict, ...] | None:
+    """An incremental run's update records, each estimate as fgc values by variable key (only
+    the variables that have arrived)."""
+    if raw is None:
+        return None
+    out = []
+    for update in raw:
+        values = {spec.key: value_type(spec.type_name, spec.dim).from_storage(
+            np.asarray(numbers, dtype=np.float64))
+            for spec, numbers in zip(program.variables, update["values"], strict=True)
+            if numbers is not None}
+        out.append({**update, "values": values})
+    return tuple(out)
 
 
 def _explain_outcome(program: Program, raw: dict, config: SimConfig
