@@ -26,3 +26,8 @@ def fgc_cache_dir(tmp_path_factory: pytest.TempPathFactory):
         yield str(path)
     finally:
         os.environ.pop("FGC_CACHE_DIR", None)
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption("--update-golden", action="store_true", default=False,
+                     help="rewrite tests/golden/ from the current emitters instead of comparing")

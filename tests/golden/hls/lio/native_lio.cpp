@@ -1,0 +1,36 @@
+// generated from template native.cpp.jinja by fgc 0.1.0 — do not edit
+// C entry points of the native build (liblio.so), called through ctypes by
+// fgc_backends.hls.native. Allocation-free: the scalar-type copies are static buffers.
+#include "lio.h"
+
+namespace {
+
+fgc::T x_in[fgc::N_X];
+fgc::T x_out[fgc::N_X];
+fgc::T data[fgc::N_DATA];
+
+}  // namespace
+
+extern "C" {
+
+// Sizes the caller's arrays must have: {N_VARIABLES, N_FACTORS, N_X, N_DATA}.
+void fgc_sizes(int out[4]) {
+    out[0] = fgc::N_VARIABLES;
+    out[1] = fgc::N_FACTORS;
+    out[2] = fgc::N_X;
+    out[3] = fgc::N_DATA;
+}
+
+// Run the accelerator on double arrays (converted to the scalar type and back).
+void fgc_run(const double* x, const double* factor_data, double* result, double* errors,
+             int* info) {
+    for (int i = 0; i < fgc::N_X; ++i) x_in[i] = fgc::T(x[i]);
+    for (int i = 0; i < fgc::N_DATA; ++i) data[i] = fgc::T(factor_data[i]);
+    fgc::T err[2];
+    lio_top(x_in, data, x_out, err, info);
+    for (int i = 0; i < fgc::N_X; ++i) result[i] = static_cast<double>(x_out[i]);
+    errors[0] = static_cast<double>(err[0]);
+    errors[1] = static_cast<double>(err[1]);
+}
+
+}  // extern "C"

@@ -1,0 +1,1685 @@
+// generated from template kernel.cpp.jinja by fgc 0.1.0 — do not edit
+// Problem: pose_graph
+// general graph, min-degree ordering; solver: lm qr auto n_u=4 cpe=20
+//
+// Dataflow of one Levenberg-Marquardt iteration:
+//   factor blocks (residual + Jacobian mode) -> whitened rows [A | b] per factor instance
+//   -> elimination steps along the schedule (partial QR: Evaluate + Update units), level by level,
+//      1 unit set(s) side by side -> conditionals (R | d) per step
+//   -> back-substitution root first -> retraction x (+) delta -> factor blocks (cost mode) -> accept?
+#include "pose_graph.h"
+
+#include <cstring>
+
+namespace fgc {
+namespace {
+
+const int N_UPDATE_UNITS = 4;  // n_u: Update units per partial-QR block
+const int N_CPE = 20;             // Cholesky process elements
+const int UNIT_SETS = 1;
+const int MAX_LEVEL_WIDTH = 2;
+const int TILE = 4;  // Gram tiles are TILE x TILE; matrix rows are padded to whole TILEs
+const int MAX_LD = 20;  // padded row length of the widest step
+const int MAX_ITERATIONS = 100;
+const int MAX_TRIES = 41;  // damping retries until mu passes its bound
+const T LAMBDA_INITIAL = T(1e-05);
+const T LAMBDA_FACTOR = T(10.0);
+const T LAMBDA_UPPER_BOUND = T(10000000000.0);
+const T MU_MIN = T(1e-30);
+const T EPS_GRADIENT = T(1e-12);
+const T EPS_STEP = T(1.1920928955078125e-06);  // at least 10 eps: the storage's resolution
+const T REL_TOL = T(1e-12);
+const T EPSILON = T(1.1920928955078125e-07);  // of the scalar type
+const T RESOLUTION = T(1.9073486328125e-06);  // 16 eps: the cost's relative resolution
+const T ABS_TOL = T(1e-14);
+const T SINGULAR_EPS = T(1.1920928955078125e-06);
+const int STATUS_CONVERGED = 0;
+const int STATUS_MAX_ITERATIONS = 1;
+const int STATUS_FAILED = 2;
+const int REASON_GRADIENT = 0;
+const int REASON_STEP = 1;
+const int REASON_PREDICTED_DECREASE = 2;
+const int REASON_ABSOLUTE_ERROR = 3;
+const int REASON_RELATIVE_DECREASE = 4;
+const int REASON_MAX_ITERATIONS = 5;
+const int REASON_NON_FINITE = 6;
+const int REASON_SINGULAR = 7;
+const int REASON_COST_INCREASED = 8;
+const int REASON_LAMBDA_LIMIT = 9;
+
+// ---- the schedule and layout as constant tables (see fgc_backends/hls/tables.py)
+const int VAR_T_OFF[6] = {
+    0, 6, 12, 18, 24, 30,
+};
+const int FACTOR_BLOCK[7] = {
+    0, 0, 0, 0, 0, 0, 1,
+};
+const int FACTOR_A_OFF[8] = {
+    0, 78, 156, 234, 312, 390, 468, 510,
+};
+const int FACTOR_GRAM_OFF[8] = {
+    0, 91, 182, 273, 364, 455, 546, 574,
+};
+const int FACTOR_VAR_BEGIN[8] = {
+    0, 2, 4, 6, 8, 10, 12, 13,
+};
+const int FACTOR_VARS[13] = {
+    0, 1, 1, 2, 2, 3, 3, 4, 1, 4, 3, 0, 0,
+};
+const int FACTOR_COLMAP_BEGIN[8] = {
+    0, 12, 24, 36, 48, 60, 72, 78,
+};
+const int FACTOR_COLMAP[78] = {
+    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 6, 7, 8, 9,
+    10, 11, 0, 1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 12, 13,
+    14, 15, 16, 17, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17,
+    0, 1, 2, 3, 4, 5, 12, 13, 14, 15, 16, 17, 12, 13, 14, 15,
+    16, 17, 0, 1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5,
+};
+const int STEP_F[3] = {
+    6, 6, 18,
+};
+const int STEP_W[3] = {
+    18, 18, 18,
+};
+const int STEP_ROWS[3] = {
+    24, 18, 54,
+};
+const int STEP_NF_ROWS[3] = {
+    12, 12, 0,
+};
+const int STEP_COND_OFF[3] = {
+    0, 114, 228,
+};
+const int STEP_NF_OFF[3] = {
+    0, 156, 312,
+};
+const int STEP_COL_BEGIN[4] = {
+    0, 18, 36, 54,
+};
+const int STEP_COL[54] = {
+    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 18, 19, 20, 21,
+    22, 23, 12, 13, 14, 15, 16, 17, 6, 7, 8, 9, 10, 11, 18, 19,
+    20, 21, 22, 23, 6, 7, 8, 9, 10, 11, 18, 19, 20, 21, 22, 23,
+    24, 25, 26, 27, 28, 29,
+};
+const int STEP_FACTOR_BEGIN[4] = {
+    0, 3, 5, 7,
+};
+const int STEP_FACTORS[7] = {
+    0, 5, 6, 1, 2, 3, 4,
+};
+const int STEP_CHILD_BEGIN[4] = {
+    0, 0, 0, 2,
+};
+const int STEP_CHILDREN[2] = {
+    0, 1,
+};
+const int STEP_SEPMAP_BEGIN[4] = {
+    0, 12, 24, 24,
+};
+const int STEP_SEPMAP[24] = {
+    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 0, 1, 2, 3,
+    4, 5, 6, 7, 8, 9, 10, 11,
+};
+const int LEVEL_BEGIN[3] = {
+    0, 2, 3,
+};
+const int LEVEL_STEPS[3] = {
+    0, 1, 2,
+};
+const int BLOCK0_INSTANCES[6] = {
+    0, 1, 2, 3, 4, 5,
+};
+const int BLOCK1_INSTANCES[1] = {
+    6,
+};
+const int KIND0_VARIABLES[5] = {
+    0, 1, 2, 3, 4,
+};
+
+// ---- the accelerator's memories: static, sized at compile time; nothing is allocated
+T X[N_X];          // current estimate (storage)
+T X_TRIAL[N_X];    // x (+) delta
+T DATA_BUF[N_DATA];
+T AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
+T G[N_TANGENT];    // gradient A^T b
+T VAR_SCALE[N_VARIABLES];
+T DELTA[N_TANGENT];
+T COND[N_COND];    // conditionals (R | d), one block per elimination step
+T NF[N_NF];
+        // new factors passed to the parent step
+
+// ---- lanes: a factor block evaluates LANES instances side by side, as values of type V
+#ifdef __SYNTHESIS__
+const int LANES = 1;  // in hardware: one datapath per block type, pipelined across instances
+typedef T V;
+inline T lane(T x, int) { return x; }
+inline V load_lanes(const T* p) { return p[0]; }
+#else
+// V never crosses this file (everything here is internal), so GCC's note that passing it by
+// value depends on -mavx is moot
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+const int LANES = 8;  // on the host: one SIMD lane each (a GCC / Clang vector type)
+typedef T V __attribute__((vector_size(8 * sizeof(T))));
+inline T lane(const V& v, int l) { return v[l]; }
+inline T lane(T x, int) { return x; }
+inline V load_lanes(const T* p) {  // p[0 ... LANES) as one V
+    V v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+#endif
+
+// Functions of V, lane by lane: each lane makes exactly the scalar call of one instance.
+template <T (*F)(T)>
+inline V lanewise(const V& x) {
+    T r[LANES];
+    for (int l = 0; l < LANES; ++l) r[l] = F(lane(x, l));
+    return load_lanes(r);
+}
+inline V v_fgc_sqrt(const V& x) { return lanewise<fgc_sqrt>(x); }
+inline V v_fgc_sin(const V& x) { return lanewise<fgc_sin>(x); }
+inline V v_fgc_cos(const V& x) { return lanewise<fgc_cos>(x); }
+inline V v_fgc_tan(const V& x) { return lanewise<fgc_tan>(x); }
+inline V v_fgc_atan(const V& x) { return lanewise<fgc_atan>(x); }
+inline V v_fgc_exp(const V& x) { return lanewise<fgc_exp>(x); }
+inline V v_fgc_log(const V& x) { return lanewise<fgc_log>(x); }
+inline V v_lie_A(const V& x) { return lanewise<lie_A>(x); }
+inline V v_lie_B(const V& x) { return lanewise<lie_B>(x); }
+inline V v_lie_C(const V& x) { return lanewise<lie_C>(x); }
+inline V v_lie_D(const V& x) { return lanewise<lie_D>(x); }
+inline V v_lie_A1(const V& x) { return lanewise<lie_A1>(x); }
+inline V v_lie_B1(const V& x) { return lanewise<lie_B1>(x); }
+inline V v_lie_C1(const V& x) { return lanewise<lie_C1>(x); }
+inline V v_lie_D1(const V& x) { return lanewise<lie_D1>(x); }
+inline V v_fgc_atan2(const V& y, const V& x) {
+    T r[LANES];
+    for (int l = 0; l < LANES; ++l) r[l] = fgc_atan2(lane(y, l), lane(x, l));
+    return load_lanes(r);
+}
+inline void v_so3_log(const V& r00, const V& r01, const V& r02, const V& r10, const V& r11,
+                      const V& r12, const V& r20, const V& r21, const V& r22, V w[3]) {
+    T o[3][LANES];
+    for (int l = 0; l < LANES; ++l) {
+        T one[3];
+        so3_log(lane(r00, l), lane(r01, l), lane(r02, l), lane(r10, l), lane(r11, l),
+                lane(r12, l), lane(r20, l), lane(r21, l), lane(r22, l), one);
+        for (int i = 0; i < 3; ++i) o[i][l] = one[i];
+    }
+    for (int i = 0; i < 3; ++i) w[i] = load_lanes(o[i]);
+}
+inline V v_so3_log_x(const V& r00, const V& r01, const V& r02, const V& r10, const V& r11,
+                        const V& r12, const V& r20, const V& r21, const V& r22) {
+    V w[3];
+    v_so3_log(r00, r01, r02, r10, r11, r12, r20, r21, r22, w);
+    return w[0];
+}
+inline V v_so3_log_y(const V& r00, const V& r01, const V& r02, const V& r10, const V& r11,
+                        const V& r12, const V& r20, const V& r21, const V& r22) {
+    V w[3];
+    v_so3_log(r00, r01, r02, r10, r11, r12, r20, r21, r22, w);
+    return w[1];
+}
+inline V v_so3_log_z(const V& r00, const V& r01, const V& r02, const V& r10, const V& r11,
+                        const V& r12, const V& r20, const V& r21, const V& r22) {
+    V w[3];
+    v_so3_log(r00, r01, r02, r10, r11, r12, r20, r21, r22, w);
+    return w[2];
+}
+
+// ---- factor blocks (instance l of a call in lane l)
+// block 0: BetweenFactorPose3 (6 rows, 12 columns, 6 instances)
+void jacobian_0(const V in[36], T ab[LANES][96]) {
+#pragma HLS PIPELINE II=1
+    const V t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
+    const V t1 = in[2]*in[12] + in[5]*in[15] + in[8]*in[18];
+    const V t2 = -t1;
+    const V t3 = in[1]*in[12] + in[4]*in[15] + in[7]*in[18];
+    const V t4 = in[0]*in[14] + in[3]*in[17] + in[6]*in[20];
+    const V t5 = -t4;
+    const V t6 = in[0]*in[13] + in[3]*in[16] + in[6]*in[19];
+    const V t7 = -t0;
+    const V t8 = in[1]*in[14] + in[4]*in[17] + in[7]*in[20];
+    const V t9 = -t8;
+    const V t10 = in[1]*in[13] + in[4]*in[16] + in[7]*in[19];
+    const V t11 = -t3;
+    const V t12 = in[2]*in[14] + in[5]*in[17] + in[8]*in[20];
+    const V t13 = -t12;
+    const V t14 = in[2]*in[13] + in[5]*in[16] + in[8]*in[19];
+    const V t15 = -t14;
+    const V t16 = -t6;
+    const V t17 = -t10;
+    const V t18 = t0;
+    const V t19 = t3;
+    const V t20 = t1;
+    const V t21 = t18*in[24] + t19*in[27] + t20*in[30];
+    const V t22 = t6;
+    const V t23 = t10;
+    const V t24 = t14;
+    const V t25 = t22*in[24] + t23*in[27] + t24*in[30];
+    const V t26 = t4;
+    const V t27 = t8;
+    const V t28 = t12;
+    const V t29 = t28*in[30] + t26*in[24] + t27*in[27];
+    const V t30 = t18*in[25] + t19*in[28] + t20*in[31];
+    const V t31 = t22*in[25] + t23*in[28] + t24*in[31];
+    const V t32 = t28*in[31] + t26*in[25] + t27*in[28];
+    const V t33 = t18*in[26] + t19*in[29] + t20*in[32];
+    const V t34 = t22*in[26] + t23*in[29] + t24*in[32];
+    const V t35 = t28*in[32] + t26*in[26] + t27*in[29];
+    V tlog0[3]; v_so3_log(t21, t25, t29, t30, t31, t32, t33, t34, t35, tlog0);
+    const V t36 = tlog0[2];
+    const V t37 = (T(0.5))*t36;
+    const V t38 = tlog0[0];
+    const V t39 = (t38*t38);
+    const V t40 = tlog0[1];
+    const V t41 = (t40*t40);
+    const V t42 = (t36*t36);
+    const V t43 = t41 + t42;
+    const V t44 = v_lie_D(t39 + t43);
+    const V t45 = t44*t38;
+    const V t46 = t45*t40;
+    const V t47 = -t37 + t46;
+    const V t48 = (T(0.5))*t29;
+    const V t49 = (T(0.5))*t40;
+    const V t50 = t45*t36;
+    const V t51 = t49 + t50;
+    const V t52 = -t47*t48 + (T(0.5))*t51*t25;
+    const V t53 = -t43*t44 + T(1);
+    const V t54 = (T(0.5))*t51;
+    const V t55 = t48*t53 - t54*t21;
+    const V t56 = (T(0.5))*t47;
+    const V t57 = (T(0.5))*t53;
+    const V t58 = t56*t21 - t57*t25;
+    const V t59 = t54*t31 - t56*t32;
+    const V t60 = (T(0.5))*t53*t32 - t54*t30;
+    const V t61 = t56*t30 - t57*t31;
+    const V t62 = t54*t34 - t56*t35;
+    const V t63 = (T(0.5))*t53*t35 - t54*t33;
+    const V t64 = t56*t33 - t57*t34;
+    const V t65 = t44*(-t39 - t42) + T(1);
+    const V t66 = (T(0.5))*t38;
+    const V t67 = t44*t40*t36 - t66;
+    const V t68 = -t48*t65 + (T(0.5))*t67*t25;
+    const V t69 = t37 + t46;
+    const V t70 = (T(0.5))*t67;
+    const V t71 = t48*t69 - t70*t21;
+    const V t72 = (T(0.5))*t65;
+    const V t73 = (T(0.5))*t69;
+    const V t74 = t72*t21 - t73*t25;
+    const V t75 = t70*t31 - t72*t32;
+    const V t76 = (T(0.5))*t69*t32 - t70*t30;
+    const V t77 = t72*t30 - t73*t31;
+    const V t78 = t70*t34 - t72*t35;
+    const V t79 = (T(0.5))*t69*t35 - t70*t33;
+    const V t80 = t72*t33 - t73*t34;
+    const V t81 = t40*t36;
+    const V t82 = t44*t81 + t66;
+    const V t83 = t44*(-t39 - t41) + T(1);
+    const V t84 = -t48*t82 + (T(0.5))*t83*t25;
+    const V t85 = -t49 + t50;
+    const V t86 = (T(0.5))*t83;
+    const V t87 = t48*t85 - t86*t21;
+    const V t88 = (T(0.5))*t82;
+    const V t89 = (T(0.5))*t85;
+    const V t90 = t88*t21 - t89*t25;
+    const V t91 = t86*t31 - t88*t32;
+    const V t92 = (T(0.5))*t85*t32 - t86*t30;
+    const V t93 = t88*t30 - t89*t31;
+    const V t94 = t86*t34 - t88*t35;
+    const V t95 = (T(0.5))*t85*t35 - t86*t33;
+    const V t96 = t88*t33 - t89*t34;
+    const V t97 = T(2)*t40;
+    const V t98 = T(2)*t36;
+    const V t99 = T(2)*t38;
+    const V t100 = t41;
+    const V t101 = t42;
+    const V t102 = t100 + t101;
+    const V t103 = t39;
+    const V t104 = t102 + t103;
+    const V t105 = v_lie_D1(t104);
+    const V t106 = -in[9] + in[21];
+    const V t107 = -in[10] + in[22];
+    const V t108 = -in[11] + in[23];
+    const V t109 = t106*in[2] + t107*in[5] + t108*in[8];
+    const V t110 = t106*in[1] + t107*in[4] + t108*in[7];
+    const V t111 = -in[0]*in[1] - in[3]*in[4] - in[6]*in[7];
+    const V t112 = -in[0]*in[2] - in[3]*in[5] - in[6]*in[8];
+    const V t113 = t106*in[0] + t107*in[3] + t108*in[6];
+    const V t114 = -in[1]*in[2] - in[4]*in[5] - in[7]*in[8];
+    const V t115 = v_lie_D(t104);
+    const V t116 = t40*t115;
+    const V t117 = t36*t115;
+    const V t118 = -t102*t115 + T(1);
+    const V t119 = t37;
+    const V t120 = t38*t115;
+    const V t121 = t40*t120;
+    const V t122 = t119 + t121;
+    const V t123 = t49;
+    const V t124 = t36*t120;
+    const V t125 = -t123 + t124;
+    const V t126 = -t119 + t121;
+    const V t127 = -t101 - t103;
+    const V t128 = t127*t115 + T(1);
+    const V t129 = t66;
+    const V t130 = t81*t115;
+    const V t131 = t129 + t130;
+    const V t132 = t123 + t124;
+    const V t133 = -t129 + t130;
+    const V t134 = -t100 - t103;
+    const V t135 = t134*t115 + T(1);
+    const V t136 = -in[0]*in[9] + in[0]*in[21] - in[3]*in[10] + in[3]*in[22] - in[6]*in[11] + in[6]*in[23];
+    const V t137 = -in[1]*in[9] + in[1]*in[21] - in[4]*in[10] + in[4]*in[22] - in[7]*in[11] + in[7]*in[23];
+    const V t138 = -in[2]*in[9] + in[2]*in[21] - in[5]*in[10] + in[5]*in[22] - in[8]*in[11] + in[8]*in[23];
+    const V t139 = t136*in[24] + t137*in[27] + t138*in[30] - in[24]*in[33] - in[27]*in[34] - in[30]*in[35];
+    const V t140 = t102*t139;
+    const V t141 = t115*t139;
+    const V t142 = t136*in[25] + t137*in[28] + t138*in[31] - in[25]*in[33] - in[28]*in[34] - in[31]*in[35];
+    const V t143 = t127*t142;
+    const V t144 = t115*t142;
+    const V t145 = t136*in[26] + t137*in[29] + t138*in[32] - in[26]*in[33] - in[29]*in[34] - in[32]*in[35];
+    const V t146 = t134*t145;
+    const V t147 = t115*t145;
+    const V t148 = t2;
+    const V t149 = t3;
+    const V t150 = t5;
+    const V t151 = t6;
+    const V t152 = t1;
+    const V t153 = t7;
+    const V t154 = t9;
+    const V t155 = t10;
+    const V t156 = t11;
+    const V t157 = t0;
+    const V t158 = t13;
+    const V t159 = t14;
+    const V t160 = t152*in[27] + t156*in[30];
+    const V t161 = t148*in[24] + t157*in[30];
+    const V t162 = t149*in[24] + t153*in[27];
+    const V t163 = t158*in[30] + t150*in[24] + t154*in[27];
+    const V t164 = t159*in[30] + t151*in[24] + t155*in[27];
+    const V t165 = t15;
+    const V t166 = t10;
+    const V t167 = t4;
+    const V t168 = t7;
+    const V t169 = t14;
+    const V t170 = t16;
+    const V t171 = t8;
+    const V t172 = t11;
+    const V t173 = t17;
+    const V t174 = t6;
+    const V t175 = t12;
+    const V t176 = t2;
+    const V t177 = t169*in[27] + t173*in[30];
+    const V t178 = t165*in[24] + t174*in[30];
+    const V t179 = t166*in[24] + t170*in[27];
+    const V t180 = t167*in[24] + t171*in[27] + t175*in[30];
+    const V t181 = t168*in[24] + t172*in[27] + t176*in[30];
+    const V t182 = t13;
+    const V t183 = t8;
+    const V t184 = t16;
+    const V t185 = t0;
+    const V t186 = t12;
+    const V t187 = t5;
+    const V t188 = t17;
+    const V t189 = t3;
+    const V t190 = t9;
+    const V t191 = t4;
+    const V t192 = t15;
+    const V t193 = t1;
+    const V t194 = t186*in[27] + t190*in[30];
+    const V t195 = t182*in[24] + t191*in[30];
+    const V t196 = t183*in[24] + t187*in[27];
+    const V t197 = t184*in[24] + t188*in[27] + t192*in[30];
+    const V t198 = t185*in[24] + t189*in[27] + t193*in[30];
+    const V t199 = t152*in[28] + t156*in[31];
+    const V t200 = t148*in[25] + t157*in[31];
+    const V t201 = t149*in[25] + t153*in[28];
+    const V t202 = t158*in[31] + t150*in[25] + t154*in[28];
+    const V t203 = t159*in[31] + t151*in[25] + t155*in[28];
+    const V t204 = t169*in[28] + t173*in[31];
+    const V t205 = t165*in[25] + t174*in[31];
+    const V t206 = t166*in[25] + t170*in[28];
+    const V t207 = t167*in[25] + t171*in[28] + t175*in[31];
+    const V t208 = t168*in[25] + t172*in[28] + t176*in[31];
+    const V t209 = t186*in[28] + t190*in[31];
+    const V t210 = t182*in[25] + t191*in[31];
+    const V t211 = t183*in[25] + t187*in[28];
+    const V t212 = t184*in[25] + t188*in[28] + t192*in[31];
+    const V t213 = t185*in[25] + t189*in[28] + t193*in[31];
+    const V t214 = t152*in[29] + t156*in[32];
+    const V t215 = t148*in[26] + t157*in[32];
+    const V t216 = t149*in[26] + t153*in[29];
+    const V t217 = t158*in[32] + t150*in[26] + t154*in[29];
+    const V t218 = t159*in[32] + t151*in[26] + t155*in[29];
+    const V t219 = t169*in[29] + t173*in[32];
+    const V t220 = t165*in[26] + t174*in[32];
+    const V t221 = t166*in[26] + t170*in[29];
+    const V t222 = t167*in[26] + t171*in[29] + t175*in[32];
+    const V t223 = t168*in[26] + t172*in[29] + t176*in[32];
+    const V t224 = t186*in[29] + t190*in[32];
+    const V t225 = t182*in[26] + t191*in[32];
+    const V t226 = t183*in[26] + t187*in[29];
+    const V t227 = t184*in[26] + t188*in[29] + t192*in[32];
+    const V t228 = t185*in[26] + t189*in[29] + t193*in[32];
+    const V t229 = t52*t160 + t55*t177 + t58*t194 + t59*t199 + t60*t204 + t61*t209 + t62*t214 + t63*t219 + t64*t224;
+    const V t230 = t52*t161 + t55*t178 + t58*t195 + t59*t200 + t60*t205 + t61*t210 + t62*t215 + t63*t220 + t64*t225;
+    const V t231 = t52*t162 + t55*t179 + t58*t196 + t59*t201 + t60*t206 + t61*t211 + t62*t216 + t63*t221 + t64*t226;
+    const V t232 = t55*t180 + t58*t197 + t60*t207 + t61*t212 + t63*t222 + t64*t227;
+    const V t233 = t52*t163 + t58*t198 + t59*t202 + t61*t213 + t62*t217 + t64*t228;
+    const V t234 = t52*t164 + t55*t181 + t59*t203 + t60*t208 + t62*t218 + t63*t223;
+    const V t235 = t68*t160 + t71*t177 + t74*t194 + t75*t199 + t76*t204 + t77*t209 + t78*t214 + t79*t219 + t80*t224;
+    const V t236 = t68*t161 + t71*t178 + t74*t195 + t75*t200 + t76*t205 + t77*t210 + t78*t215 + t79*t220 + t80*t225;
+    const V t237 = t68*t162 + t71*t179 + t74*t196 + t75*t201 + t76*t206 + t77*t211 + t78*t216 + t79*t221 + t80*t226;
+    const V t238 = t71*t180 + t74*t197 + t76*t207 + t77*t212 + t79*t222 + t80*t227;
+    const V t239 = t68*t163 + t74*t198 + t75*t202 + t77*t213 + t78*t217 + t80*t228;
+    const V t240 = t68*t164 + t71*t181 + t75*t203 + t76*t208 + t78*t218 + t79*t223;
+    const V t241 = t84*t160 + t87*t177 + t90*t194 + t91*t199 + t92*t204 + t93*t209 + t94*t214 + t95*t219 + t96*t224;
+    const V t242 = t84*t161 + t87*t178 + t90*t195 + t91*t200 + t92*t205 + t93*t210 + t94*t215 + t95*t220 + t96*t225;
+    const V t243 = t84*t162 + t87*t179 + t90*t196 + t91*t201 + t92*t206 + t93*t211 + t94*t216 + t95*t221 + t96*t226;
+    const V t244 = t87*t180 + t90*t197 + t92*t207 + t93*t212 + t95*t222 + t96*t227;
+    const V t245 = t84*t163 + t90*t198 + t91*t202 + t93*t213 + t94*t217 + t96*t228;
+    const V t246 = t84*t164 + t87*t181 + t91*t203 + t92*t208 + t94*t218 + t95*t223;
+    const V t247 = t97*t235;
+    const V t248 = t97*t236;
+    const V t249 = t97*t237;
+    const V t250 = t97*t238;
+    const V t251 = t97*t239;
+    const V t252 = t97*t240;
+    const V t253 = t98*t241;
+    const V t254 = t98*t242;
+    const V t255 = t98*t243;
+    const V t256 = t98*t244;
+    const V t257 = t98*t245;
+    const V t258 = t98*t246;
+    const V t259 = t253 + t247;
+    const V t260 = t248 + t254;
+    const V t261 = t249 + t255;
+    const V t262 = t250 + t256;
+    const V t263 = t251 + t257;
+    const V t264 = t252 + t258;
+    const V t265 = t99*t229;
+    const V t266 = t99*t230;
+    const V t267 = t99*t231;
+    const V t268 = t99*t232;
+    const V t269 = t99*t233;
+    const V t270 = t99*t234;
+    const V t271 = t105*t259 + t105*t265;
+    const V t272 = t105*t260 + t105*t266;
+    const V t273 = t105*t261 + t105*t267;
+    const V t274 = t105*t262 + t105*t268;
+    const V t275 = t105*t263 + t105*t269;
+    const V t276 = t105*t264 + t105*t270;
+    const V t277 = -t109;
+    const V t278 = t110;
+    const V t279 = -(in[0]*in[0]) - (in[3]*in[3]) - (in[6]*in[6]);
+    const V t280 = t111;
+    const V t281 = t112;
+    const V t282 = t0;
+    const V t283 = t6;
+    const V t284 = t4;
+    const V t285 = t109;
+    const V t286 = -t113;
+    const V t287 = t111;
+    const V t288 = -(in[1]*in[1]) - (in[4]*in[4]) - (in[7]*in[7]);
+    const V t289 = t114;
+    const V t290 = t3;
+    const V t291 = t10;
+    const V t292 = t8;
+    const V t293 = -t110;
+    const V t294 = t113;
+    const V t295 = t112;
+    const V t296 = t114;
+    const V t297 = -(in[2]*in[2]) - (in[5]*in[5]) - (in[8]*in[8]);
+    const V t298 = t1;
+    const V t299 = t14;
+    const V t300 = t12;
+    const V t301 = t285*in[27] + t293*in[30];
+    const V t302 = t277*in[24] + t294*in[30];
+    const V t303 = t278*in[24] + t286*in[27];
+    const V t304 = t279*in[24] + t287*in[27] + t295*in[30];
+    const V t305 = t280*in[24] + t288*in[27] + t296*in[30];
+    const V t306 = t281*in[24] + t289*in[27] + t297*in[30];
+    const V t307 = t282*in[24] + t290*in[27] + t298*in[30];
+    const V t308 = t283*in[24] + t291*in[27] + t299*in[30];
+    const V t309 = t284*in[24] + t292*in[27] + t300*in[30];
+    const V t310 = (T(0.5))*t241;
+    const V t311 = (T(0.5))*t242;
+    const V t312 = (T(0.5))*t243;
+    const V t313 = (T(0.5))*t244;
+    const V t314 = (T(0.5))*t245;
+    const V t315 = (T(0.5))*t246;
+    const V t316 = t38*t271 + t115*t229;
+    const V t317 = t38*t272 + t115*t230;
+    const V t318 = t38*t273 + t115*t231;
+    const V t319 = t38*t274 + t115*t232;
+    const V t320 = t38*t275 + t115*t233;
+    const V t321 = t38*t276 + t115*t234;
+    const V t322 = t40*t316 + t120*t235;
+    const V t323 = t40*t317 + t120*t236;
+    const V t324 = t40*t318 + t120*t237;
+    const V t325 = t40*t319 + t120*t238;
+    const V t326 = t40*t320 + t120*t239;
+    const V t327 = t40*t321 + t120*t240;
+    const V t328 = t285*in[28] + t293*in[31];
+    const V t329 = t277*in[25] + t294*in[31];
+    const V t330 = t278*in[25] + t286*in[28];
+    const V t331 = t279*in[25] + t287*in[28] + t295*in[31];
+    const V t332 = t280*in[25] + t288*in[28] + t296*in[31];
+    const V t333 = t281*in[25] + t289*in[28] + t297*in[31];
+    const V t334 = t282*in[25] + t290*in[28] + t298*in[31];
+    const V t335 = t283*in[25] + t291*in[28] + t299*in[31];
+    const V t336 = t284*in[25] + t292*in[28] + t300*in[31];
+    const V t337 = (T(0.5))*t235;
+    const V t338 = (T(0.5))*t236;
+    const V t339 = (T(0.5))*t237;
+    const V t340 = (T(0.5))*t238;
+    const V t341 = (T(0.5))*t239;
+    const V t342 = (T(0.5))*t240;
+    const V t343 = t36*t316 + t120*t241;
+    const V t344 = t36*t317 + t120*t242;
+    const V t345 = t36*t318 + t120*t243;
+    const V t346 = t36*t319 + t120*t244;
+    const V t347 = t36*t320 + t120*t245;
+    const V t348 = t36*t321 + t120*t246;
+    const V t349 = t285*in[29] + t293*in[32];
+    const V t350 = t277*in[26] + t294*in[32];
+    const V t351 = t278*in[26] + t286*in[29];
+    const V t352 = t279*in[26] + t287*in[29] + t295*in[32];
+    const V t353 = t280*in[26] + t288*in[29] + t296*in[32];
+    const V t354 = t281*in[26] + t289*in[29] + t297*in[32];
+    const V t355 = t282*in[26] + t290*in[29] + t298*in[32];
+    const V t356 = t283*in[26] + t291*in[29] + t299*in[32];
+    const V t357 = t284*in[26] + t292*in[29] + t300*in[32];
+    const V t358 = (T(0.5))*t229;
+    const V t359 = (T(0.5))*t230;
+    const V t360 = (T(0.5))*t231;
+    const V t361 = (T(0.5))*t232;
+    const V t362 = (T(0.5))*t233;
+    const V t363 = (T(0.5))*t234;
+    const V t364 = t81*t271 + t116*t241 + t117*t235;
+    const V t365 = t81*t272 + t116*t242 + t117*t236;
+    const V t366 = t81*t273 + t116*t243 + t117*t237;
+    const V t367 = t81*t274 + t116*t244 + t117*t238;
+    const V t368 = t81*t275 + t116*t245 + t117*t239;
+    const V t369 = t81*t276 + t116*t246 + t117*t240;
+    for (int l = 0; l < LANES; ++l) {
+        ab[l][0] = lane(t229, l);
+        ab[l][1] = lane(t230, l);
+        ab[l][2] = lane(t231, l);
+        ab[l][6] = lane(t232, l);
+        ab[l][7] = lane(t233, l);
+        ab[l][8] = lane(t234, l);
+        ab[l][12] = lane(t38, l);
+        ab[l][16] = lane(t235, l);
+        ab[l][17] = lane(t236, l);
+        ab[l][18] = lane(t237, l);
+        ab[l][22] = lane(t238, l);
+        ab[l][23] = lane(t239, l);
+        ab[l][24] = lane(t240, l);
+        ab[l][28] = lane(t40, l);
+        ab[l][32] = lane(t241, l);
+        ab[l][33] = lane(t242, l);
+        ab[l][34] = lane(t243, l);
+        ab[l][38] = lane(t244, l);
+        ab[l][39] = lane(t245, l);
+        ab[l][40] = lane(t246, l);
+        ab[l][44] = lane(t36, l);
+        ab[l][48] = lane(-t140*t271 - t141*t259 + t118*t301 + t122*t328 + t125*t349 + t142*t310 + t142*t322 - t145*t337 + t145*t343, l);
+        ab[l][49] = lane(-t140*t272 - t141*t260 + t118*t302 + t122*t329 + t125*t350 + t142*t311 + t142*t323 - t145*t338 + t145*t344, l);
+        ab[l][50] = lane(-t140*t273 - t141*t261 + t118*t303 + t122*t330 + t125*t351 + t142*t312 + t142*t324 - t145*t339 + t145*t345, l);
+        ab[l][51] = lane(t118*t304 + t122*t331 + t125*t352, l);
+        ab[l][52] = lane(t118*t305 + t122*t332 + t125*t353, l);
+        ab[l][53] = lane(t118*t306 + t122*t333 + t125*t354, l);
+        ab[l][54] = lane(-t140*t274 - t141*t262 + t142*t313 + t142*t325 - t145*t340 + t145*t346, l);
+        ab[l][55] = lane(-t140*t275 - t141*t263 + t142*t314 + t142*t326 - t145*t341 + t145*t347, l);
+        ab[l][56] = lane(-t140*t276 - t141*t264 + t142*t315 + t142*t327 - t145*t342 + t145*t348, l);
+        ab[l][57] = lane(t118*t307 + t122*t334 + t125*t355, l);
+        ab[l][58] = lane(t118*t308 + t122*t335 + t125*t356, l);
+        ab[l][59] = lane(t118*t309 + t122*t336 + t125*t357, l);
+        ab[l][60] = lane(t118*t139 + t122*t142 + t125*t145, l);
+        ab[l][64] = lane(t143*t271 - t144*t253 - t144*t265 + t126*t301 + t128*t328 + t131*t349 - t139*t310 + t139*t322 + t145*t358 + t145*t364, l);
+        ab[l][65] = lane(t143*t272 - t144*t254 - t144*t266 + t126*t302 + t128*t329 + t131*t350 - t139*t311 + t139*t323 + t145*t359 + t145*t365, l);
+        ab[l][66] = lane(t143*t273 - t144*t255 - t144*t267 + t126*t303 + t128*t330 + t131*t351 - t139*t312 + t139*t324 + t145*t360 + t145*t366, l);
+        ab[l][67] = lane(t126*t304 + t128*t331 + t131*t352, l);
+        ab[l][68] = lane(t126*t305 + t128*t332 + t131*t353, l);
+        ab[l][69] = lane(t126*t306 + t128*t333 + t131*t354, l);
+        ab[l][70] = lane(t143*t274 - t144*t256 - t144*t268 - t139*t313 + t139*t325 + t145*t361 + t145*t367, l);
+        ab[l][71] = lane(t143*t275 - t144*t257 - t144*t269 - t139*t314 + t139*t326 + t145*t362 + t145*t368, l);
+        ab[l][72] = lane(t143*t276 - t144*t258 - t144*t270 - t139*t315 + t139*t327 + t145*t363 + t145*t369, l);
+        ab[l][73] = lane(t126*t307 + t128*t334 + t131*t355, l);
+        ab[l][74] = lane(t126*t308 + t128*t335 + t131*t356, l);
+        ab[l][75] = lane(t126*t309 + t128*t336 + t131*t357, l);
+        ab[l][76] = lane(t126*t139 + t128*t142 + t131*t145, l);
+        ab[l][80] = lane(t133*t328 + t135*t349 + t146*t271 - t147*t265 - t147*t247 + t132*t301 + t139*t337 + t139*t343 - t142*t358 + t142*t364, l);
+        ab[l][81] = lane(t133*t329 + t135*t350 + t146*t272 - t147*t248 - t147*t266 + t132*t302 + t139*t338 + t139*t344 - t142*t359 + t142*t365, l);
+        ab[l][82] = lane(t133*t330 + t135*t351 + t146*t273 - t147*t249 - t147*t267 + t132*t303 + t139*t339 + t139*t345 - t142*t360 + t142*t366, l);
+        ab[l][83] = lane(t133*t331 + t135*t352 + t132*t304, l);
+        ab[l][84] = lane(t133*t332 + t135*t353 + t132*t305, l);
+        ab[l][85] = lane(t133*t333 + t135*t354 + t132*t306, l);
+        ab[l][86] = lane(t146*t274 - t147*t250 - t147*t268 + t139*t340 + t139*t346 - t142*t361 + t142*t367, l);
+        ab[l][87] = lane(t146*t275 - t147*t251 - t147*t269 + t139*t341 + t139*t347 - t142*t362 + t142*t368, l);
+        ab[l][88] = lane(t146*t276 - t147*t252 - t147*t270 + t139*t342 + t139*t348 - t142*t363 + t142*t369, l);
+        ab[l][89] = lane(t133*t334 + t135*t355 + t132*t307, l);
+        ab[l][90] = lane(t133*t335 + t135*t356 + t132*t308, l);
+        ab[l][91] = lane(t133*t336 + t135*t357 + t132*t309, l);
+        ab[l][92] = lane(t133*t142 + t135*t145 + t132*t139, l);
+    }
+}
+
+void cost_0(const V in[57], T half[LANES][1]) {
+#pragma HLS PIPELINE II=1
+    const V t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
+    const V t1 = t0;
+    const V t2 = in[1]*in[12] + in[4]*in[15] + in[7]*in[18];
+    const V t3 = t2;
+    const V t4 = in[2]*in[12] + in[5]*in[15] + in[8]*in[18];
+    const V t5 = t4;
+    const V t6 = t1*in[24] + t3*in[27] + t5*in[30];
+    const V t7 = in[0]*in[13] + in[3]*in[16] + in[6]*in[19];
+    const V t8 = t7;
+    const V t9 = in[1]*in[13] + in[4]*in[16] + in[7]*in[19];
+    const V t10 = t9;
+    const V t11 = in[2]*in[13] + in[5]*in[16] + in[8]*in[19];
+    const V t12 = t11;
+    const V t13 = t8*in[24] + t10*in[27] + t12*in[30];
+    const V t14 = in[0]*in[14] + in[3]*in[17] + in[6]*in[20];
+    const V t15 = t14;
+    const V t16 = in[1]*in[14] + in[4]*in[17] + in[7]*in[20];
+    const V t17 = t16;
+    const V t18 = in[2]*in[14] + in[5]*in[17] + in[8]*in[20];
+    const V t19 = t18;
+    const V t20 = t19*in[30] + t15*in[24] + t17*in[27];
+    const V t21 = t1*in[25] + t3*in[28] + t5*in[31];
+    const V t22 = t8*in[25] + t10*in[28] + t12*in[31];
+    const V t23 = t19*in[31] + t15*in[25] + t17*in[28];
+    const V t24 = t1*in[26] + t3*in[29] + t5*in[32];
+    const V t25 = t8*in[26] + t10*in[29] + t12*in[32];
+    const V t26 = t19*in[32] + t15*in[26] + t17*in[29];
+    V tlog0[3]; v_so3_log(t6, t13, t20, t21, t22, t23, t24, t25, t26, tlog0);
+    const V t27 = tlog0[1];
+    const V t28 = (t27*t27);
+    const V t29 = t28;
+    const V t30 = tlog0[2];
+    const V t31 = (t30*t30);
+    const V t32 = t31;
+    const V t33 = t29 + t32;
+    const V t34 = tlog0[0];
+    const V t35 = (t34*t34);
+    const V t36 = t35;
+    const V t37 = t33 + t36;
+    const V t38 = v_lie_D(t37);
+    const V t39 = -t33*t38 + T(1);
+    const V t40 = (T(0.5))*t30;
+    const V t41 = t40;
+    const V t42 = t34*t38;
+    const V t43 = t27*t42;
+    const V t44 = t41 + t43;
+    const V t45 = (T(0.5))*t27;
+    const V t46 = t45;
+    const V t47 = t30*t42;
+    const V t48 = -t46 + t47;
+    const V t49 = -in[0]*in[9] + in[0]*in[21] - in[3]*in[10] + in[3]*in[22] - in[6]*in[11] + in[6]*in[23];
+    const V t50 = -in[1]*in[9] + in[1]*in[21] - in[4]*in[10] + in[4]*in[22] - in[7]*in[11] + in[7]*in[23];
+    const V t51 = -in[2]*in[9] + in[2]*in[21] - in[5]*in[10] + in[5]*in[22] - in[8]*in[11] + in[8]*in[23];
+    const V t52 = t49*in[24] + t50*in[27] + t51*in[30] - in[24]*in[33] - in[27]*in[34] - in[30]*in[35];
+    const V t53 = t49*in[25] + t50*in[28] + t51*in[31] - in[25]*in[33] - in[28]*in[34] - in[31]*in[35];
+    const V t54 = t49*in[26] + t50*in[29] + t51*in[32] - in[26]*in[33] - in[29]*in[34] - in[32]*in[35];
+    const V t55 = t39*t52 + t44*t53 + t48*t54;
+    const V t56 = -t41 + t43;
+    const V t57 = -t32 - t36;
+    const V t58 = t57*t38 + T(1);
+    const V t59 = (T(0.5))*t34;
+    const V t60 = t59;
+    const V t61 = t27*t30;
+    const V t62 = t61*t38;
+    const V t63 = t60 + t62;
+    const V t64 = t56*t52 + t58*t53 + t63*t54;
+    const V t65 = t46 + t47;
+    const V t66 = -t60 + t62;
+    const V t67 = -t29 - t36;
+    const V t68 = t67*t38 + T(1);
+    const V t69 = t66*t53 + t68*t54 + t65*t52;
+    const V t70 = (T(0.5))*(t69*t69)*(in[56]*in[56]) + (T(0.5))*((t64*in[54] + t69*in[55])*(t64*in[54] + t69*in[55])) + (T(0.5))*((t55*in[51] + t64*in[52] + t69*in[53])*(t55*in[51] + t64*in[52] + t69*in[53])) + (T(0.5))*((t55*in[48] + t64*in[49] + t69*in[50] + t30*in[47])*(t55*in[48] + t64*in[49] + t69*in[50] + t30*in[47])) + (T(0.5))*((t55*in[44] + t64*in[45] + t69*in[46] + t27*in[42] + t30*in[43])*(t55*in[44] + t64*in[45] + t69*in[46] + t27*in[42] + t30*in[43])) + (T(0.5))*((t55*in[39] + t64*in[40] + t69*in[41] + t34*in[36] + t27*in[37] + t30*in[38])*(t55*in[39] + t64*in[40] + t69*in[41] + t34*in[36] + t27*in[37] + t30*in[38]));
+    for (int l = 0; l < LANES; ++l) {
+        half[l][0] = lane(t70, l);
+    }
+}
+
+// block 1: PriorFactorPose3 (6 rows, 6 columns, 1 instances)
+void jacobian_1(const V in[24], T ab[LANES][48]) {
+#pragma HLS PIPELINE II=1
+    const V t0 = in[12]*in[0] + in[15]*in[3] + in[18]*in[6];
+    const V t1 = in[12]*in[2] + in[15]*in[5] + in[18]*in[8];
+    const V t2 = in[12]*in[1] + in[15]*in[4] + in[18]*in[7];
+    const V t3 = in[13]*in[0] + in[16]*in[3] + in[19]*in[6];
+    const V t4 = in[13]*in[2] + in[16]*in[5] + in[19]*in[8];
+    const V t5 = in[13]*in[1] + in[16]*in[4] + in[19]*in[7];
+    const V t6 = in[14]*in[0] + in[17]*in[3] + in[20]*in[6];
+    const V t7 = in[14]*in[2] + in[17]*in[5] + in[20]*in[8];
+    const V t8 = in[14]*in[1] + in[17]*in[4] + in[20]*in[7];
+    const V t9 = t0;
+    const V t10 = t2;
+    const V t11 = t1;
+    const V t12 = t3;
+    const V t13 = t5;
+    const V t14 = t4;
+    const V t15 = t6;
+    const V t16 = t8;
+    const V t17 = t7;
+    V tlog0[3]; v_so3_log(t9, t10, t11, t12, t13, t14, t15, t16, t17, tlog0);
+    const V t18 = tlog0[2];
+    const V t19 = (T(0.5))*t18;
+    const V t20 = tlog0[0];
+    const V t21 = (t20*t20);
+    const V t22 = tlog0[1];
+    const V t23 = (t22*t22);
+    const V t24 = (t18*t18);
+    const V t25 = t23 + t24;
+    const V t26 = v_lie_D(t21 + t25);
+    const V t27 = t26*t20;
+    const V t28 = t27*t22;
+    const V t29 = (T(0.5))*t28 - T(0.5)*t19;
+    const V t30 = -t25*t26 + T(1);
+    const V t31 = (T(0.5))*t30;
+    const V t32 = t29*t12 - t31*t13;
+    const V t33 = (T(0.5))*t22;
+    const V t34 = (T(0.5))*t27*t18 + (T(0.5))*t33;
+    const V t35 = (T(0.5))*t30*t17 - t34*t15;
+    const V t36 = t29*t15 - t31*t16;
+    const V t37 = (T(0.5))*t30*t11 - t34*t9;
+    const V t38 = t29*t9 - t31*t10;
+    const V t39 = (T(0.5))*t30*t14 - t34*t12;
+    const V t40 = -t29*t11 + t34*t10;
+    const V t41 = -t29*t17 + t34*t16;
+    const V t42 = -t29*t14 + t34*t13;
+    const V t43 = (T(0.5))*t26*(-t21 - t24) + T(0.5);
+    const V t44 = t28 + t19;
+    const V t45 = (T(0.5))*t44;
+    const V t46 = t43*t12 - t45*t13;
+    const V t47 = (T(0.5))*t20;
+    const V t48 = t22*t18;
+    const V t49 = t26*t48;
+    const V t50 = -T(0.5)*t47 + (T(0.5))*t49;
+    const V t51 = (T(0.5))*t44*t17 - t50*t15;
+    const V t52 = t43*t15 - t45*t16;
+    const V t53 = (T(0.5))*t44*t11 - t50*t9;
+    const V t54 = t43*t9 - t45*t10;
+    const V t55 = (T(0.5))*t44*t14 - t50*t12;
+    const V t56 = -t43*t11 + t50*t10;
+    const V t57 = -t43*t17 + t50*t16;
+    const V t58 = -t43*t14 + t50*t13;
+    const V t59 = (T(0.5))*t47 + (T(0.5))*t49;
+    const V t60 = t26*t18*t20 - t33;
+    const V t61 = (T(0.5))*t60;
+    const V t62 = t59*t12 - t61*t13;
+    const V t63 = (T(0.5))*t26*(-t21 - t23) + T(0.5);
+    const V t64 = (T(0.5))*t60*t17 - t63*t15;
+    const V t65 = t59*t15 - t61*t16;
+    const V t66 = (T(0.5))*t60*t11 - t63*t9;
+    const V t67 = t59*t9 - t61*t10;
+    const V t68 = (T(0.5))*t60*t14 - t63*t12;
+    const V t69 = -t59*t11 + t63*t10;
+    const V t70 = -t59*t17 + t63*t16;
+    const V t71 = -t59*t14 + t63*t13;
+    const V t72 = T(2)*t22;
+    const V t73 = T(2)*t18;
+    const V t74 = T(2)*t20;
+    const V t75 = t23;
+    const V t76 = t24;
+    const V t77 = t75 + t76;
+    const V t78 = t21;
+    const V t79 = t77 + t78;
+    const V t80 = v_lie_D1(t79);
+    const V t81 = v_lie_D(t79);
+    const V t82 = t22*t81;
+    const V t83 = t18*t81;
+    const V t84 = -t77*t81 + T(1);
+    const V t85 = t19;
+    const V t86 = t81*t20;
+    const V t87 = t22*t86;
+    const V t88 = t85 + t87;
+    const V t89 = t33;
+    const V t90 = t18*t86;
+    const V t91 = -t89 + t90;
+    const V t92 = -t85 + t87;
+    const V t93 = -t76 - t78;
+    const V t94 = t93*t81 + T(1);
+    const V t95 = t47;
+    const V t96 = t48*t81;
+    const V t97 = t95 + t96;
+    const V t98 = t89 + t90;
+    const V t99 = -t95 + t96;
+    const V t100 = -t75 - t78;
+    const V t101 = t100*t81 + T(1);
+    const V t102 = -in[12]*in[21] + in[12]*in[9] - in[15]*in[22] + in[15]*in[10] - in[18]*in[23] + in[18]*in[11];
+    const V t103 = t77*t102;
+    const V t104 = t81*t102;
+    const V t105 = -in[13]*in[21] + in[13]*in[9] - in[16]*in[22] + in[16]*in[10] - in[19]*in[23] + in[19]*in[11];
+    const V t106 = t93*t105;
+    const V t107 = t81*t105;
+    const V t108 = -in[14]*in[21] + in[14]*in[9] - in[17]*in[22] + in[17]*in[10] - in[20]*in[23] + in[20]*in[11];
+    const V t109 = t100*t108;
+    const V t110 = t81*t108;
+    const V t111 = -t1;
+    const V t112 = t2;
+    const V t113 = t1;
+    const V t114 = -t0;
+    const V t115 = -t2;
+    const V t116 = t0;
+    const V t117 = -t4;
+    const V t118 = t5;
+    const V t119 = t4;
+    const V t120 = -t3;
+    const V t121 = -t5;
+    const V t122 = t3;
+    const V t123 = -t7;
+    const V t124 = t8;
+    const V t125 = t7;
+    const V t126 = -t6;
+    const V t127 = -t8;
+    const V t128 = t6;
+    const V t129 = t32*t121 + t35*t125 + t36*t127 + t37*t113 + t38*t115 + t39*t119;
+    const V t130 = t32*t122 + t36*t128 + t38*t116 + t40*t111 + t41*t123 + t42*t117;
+    const V t131 = t35*t126 + t37*t114 + t39*t120 + t40*t112 + t41*t124 + t42*t118;
+    const V t132 = t46*t121 + t51*t125 + t52*t127 + t53*t113 + t54*t115 + t55*t119;
+    const V t133 = t46*t122 + t52*t128 + t54*t116 + t56*t111 + t57*t123 + t58*t117;
+    const V t134 = t51*t126 + t53*t114 + t55*t120 + t56*t112 + t57*t124 + t58*t118;
+    const V t135 = t62*t121 + t64*t125 + t65*t127 + t66*t113 + t67*t115 + t68*t119;
+    const V t136 = t62*t122 + t65*t128 + t67*t116 + t69*t111 + t70*t123 + t71*t117;
+    const V t137 = t64*t126 + t66*t114 + t68*t120 + t69*t112 + t70*t124 + t71*t118;
+    const V t138 = t72*t132;
+    const V t139 = t72*t133;
+    const V t140 = t72*t134;
+    const V t141 = t73*t135;
+    const V t142 = t73*t136;
+    const V t143 = t73*t137;
+    const V t144 = t138 + t141;
+    const V t145 = t139 + t142;
+    const V t146 = t140 + t143;
+    const V t147 = t74*t129;
+    const V t148 = t74*t130;
+    const V t149 = t74*t131;
+    const V t150 = t80*t144 + t80*t147;
+    const V t151 = t80*t145 + t80*t148;
+    const V t152 = t80*t146 + t80*t149;
+    const V t153 = t0;
+    const V t154 = t2;
+    const V t155 = t1;
+    const V t156 = (T(0.5))*t135;
+    const V t157 = (T(0.5))*t136;
+    const V t158 = (T(0.5))*t137;
+    const V t159 = t81*t129 + t20*t150;
+    const V t160 = t81*t130 + t20*t151;
+    const V t161 = t81*t131 + t20*t152;
+    const V t162 = t22*t159 + t86*t132;
+    const V t163 = t22*t160 + t86*t133;
+    const V t164 = t22*t161 + t86*t134;
+    const V t165 = t3;
+    const V t166 = t5;
+    const V t167 = t4;
+    const V t168 = (T(0.5))*t132;
+    const V t169 = (T(0.5))*t133;
+    const V t170 = (T(0.5))*t134;
+    const V t171 = t18*t159 + t86*t135;
+    const V t172 = t18*t160 + t86*t136;
+    const V t173 = t18*t161 + t86*t137;
+    const V t174 = t6;
+    const V t175 = t8;
+    const V t176 = t7;
+    const V t177 = (T(0.5))*t129;
+    const V t178 = (T(0.5))*t130;
+    const V t179 = (T(0.5))*t131;
+    const V t180 = t48*t150 + t82*t135 + t83*t132;
+    const V t181 = t48*t151 + t82*t136 + t83*t133;
+    const V t182 = t48*t152 + t82*t137 + t83*t134;
+    for (int l = 0; l < LANES; ++l) {
+        ab[l][0] = lane(t129, l);
+        ab[l][1] = lane(t130, l);
+        ab[l][2] = lane(t131, l);
+        ab[l][6] = lane(t20, l);
+        ab[l][8] = lane(t132, l);
+        ab[l][9] = lane(t133, l);
+        ab[l][10] = lane(t134, l);
+        ab[l][14] = lane(t22, l);
+        ab[l][16] = lane(t135, l);
+        ab[l][17] = lane(t136, l);
+        ab[l][18] = lane(t137, l);
+        ab[l][22] = lane(t18, l);
+        ab[l][24] = lane(-t103*t150 - t104*t144 + t105*t156 + t105*t162 - t108*t168 + t108*t171, l);
+        ab[l][25] = lane(-t103*t151 - t104*t145 + t105*t157 + t105*t163 - t108*t169 + t108*t172, l);
+        ab[l][26] = lane(-t103*t152 - t104*t146 + t105*t158 + t105*t164 - t108*t170 + t108*t173, l);
+        ab[l][27] = lane(t84*t153 + t88*t165 + t91*t174, l);
+        ab[l][28] = lane(t84*t154 + t88*t166 + t91*t175, l);
+        ab[l][29] = lane(t84*t155 + t88*t167 + t91*t176, l);
+        ab[l][30] = lane(t84*t102 + t88*t105 + t91*t108, l);
+        ab[l][32] = lane(t106*t150 - t107*t141 - t107*t147 - t102*t156 + t102*t162 + t108*t177 + t108*t180, l);
+        ab[l][33] = lane(t106*t151 - t107*t142 - t107*t148 - t102*t157 + t102*t163 + t108*t178 + t108*t181, l);
+        ab[l][34] = lane(t106*t152 - t107*t143 - t107*t149 - t102*t158 + t102*t164 + t108*t179 + t108*t182, l);
+        ab[l][35] = lane(t92*t153 + t94*t165 + t97*t174, l);
+        ab[l][36] = lane(t92*t154 + t94*t166 + t97*t175, l);
+        ab[l][37] = lane(t92*t155 + t94*t167 + t97*t176, l);
+        ab[l][38] = lane(t92*t102 + t94*t105 + t97*t108, l);
+        ab[l][40] = lane(t109*t150 - t110*t138 - t110*t147 + t102*t168 + t102*t171 - t105*t177 + t105*t180, l);
+        ab[l][41] = lane(t109*t151 - t110*t139 - t110*t148 + t102*t169 + t102*t172 - t105*t178 + t105*t181, l);
+        ab[l][42] = lane(t109*t152 - t110*t140 - t110*t149 + t102*t170 + t102*t173 - t105*t179 + t105*t182, l);
+        ab[l][43] = lane(t98*t153 + t99*t165 + t101*t174, l);
+        ab[l][44] = lane(t98*t154 + t99*t166 + t101*t175, l);
+        ab[l][45] = lane(t98*t155 + t99*t167 + t101*t176, l);
+        ab[l][46] = lane(t98*t102 + t99*t105 + t101*t108, l);
+    }
+}
+
+void cost_1(const V in[25], T half[LANES][1]) {
+#pragma HLS PIPELINE II=1
+    const V t0 = in[12]*in[0] + in[15]*in[3] + in[18]*in[6];
+    const V t1 = t0;
+    const V t2 = in[12]*in[1] + in[15]*in[4] + in[18]*in[7];
+    const V t3 = t2;
+    const V t4 = in[12]*in[2] + in[15]*in[5] + in[18]*in[8];
+    const V t5 = t4;
+    const V t6 = in[13]*in[0] + in[16]*in[3] + in[19]*in[6];
+    const V t7 = t6;
+    const V t8 = in[13]*in[1] + in[16]*in[4] + in[19]*in[7];
+    const V t9 = t8;
+    const V t10 = in[13]*in[2] + in[16]*in[5] + in[19]*in[8];
+    const V t11 = t10;
+    const V t12 = in[14]*in[0] + in[17]*in[3] + in[20]*in[6];
+    const V t13 = t12;
+    const V t14 = in[14]*in[1] + in[17]*in[4] + in[20]*in[7];
+    const V t15 = t14;
+    const V t16 = in[14]*in[2] + in[17]*in[5] + in[20]*in[8];
+    const V t17 = t16;
+    V tlog0[3]; v_so3_log(t1, t3, t5, t7, t9, t11, t13, t15, t17, tlog0);
+    const V t18 = tlog0[0];
+    const V t19 = (t18*t18);
+    const V t20 = tlog0[1];
+    const V t21 = (t20*t20);
+    const V t22 = tlog0[2];
+    const V t23 = (t22*t22);
+    const V t24 = t21;
+    const V t25 = t24;
+    const V t26 = t23;
+    const V t27 = t26;
+    const V t28 = t25 + t27;
+    const V t29 = t19;
+    const V t30 = t29;
+    const V t31 = t28 + t30;
+    const V t32 = v_lie_D(t31);
+    const V t33 = -t28*t32 + T(1);
+    const V t34 = (T(0.5))*t22;
+    const V t35 = t34;
+    const V t36 = t32*t18;
+    const V t37 = t20*t36;
+    const V t38 = t35 + t37;
+    const V t39 = (T(0.5))*t20;
+    const V t40 = t39;
+    const V t41 = t22*t36;
+    const V t42 = -t40 + t41;
+    const V t43 = -in[12]*in[21] + in[12]*in[9] - in[15]*in[22] + in[15]*in[10] - in[18]*in[23] + in[18]*in[11];
+    const V t44 = -in[13]*in[21] + in[13]*in[9] - in[16]*in[22] + in[16]*in[10] - in[19]*in[23] + in[19]*in[11];
+    const V t45 = -in[14]*in[21] + in[14]*in[9] - in[17]*in[22] + in[17]*in[10] - in[20]*in[23] + in[20]*in[11];
+    const V t46 = t33*t43 + t38*t44 + t42*t45;
+    const V t47 = -t35 + t37;
+    const V t48 = -t27 - t30;
+    const V t49 = t48*t32 + T(1);
+    const V t50 = (T(0.5))*t18;
+    const V t51 = t50;
+    const V t52 = t20*t22;
+    const V t53 = t52*t32;
+    const V t54 = t51 + t53;
+    const V t55 = t47*t43 + t49*t44 + t54*t45;
+    const V t56 = t40 + t41;
+    const V t57 = -t51 + t53;
+    const V t58 = -t25 - t30;
+    const V t59 = t58*t32 + T(1);
+    const V t60 = t56*t43 + t57*t44 + t59*t45;
+    const V t61 = (T(0.5))*(in[24]*in[24]);
+    const V t62 = t19*t61 + t21*t61 + t23*t61 + (t46*t46)*t61 + (t55*t55)*t61 + (t60*t60)*t61;
+    for (int l = 0; l < LANES; ++l) {
+        half[l][0] = lane(t62, l);
+    }
+}
+
+// Rows [J | r] of one member (row stride STRIDE, right-hand side in column COLS - 1) ->
+// sqrt(w) * W * [J | -r]: W is 1/sigma (KIND 0), 1/sigma_i (1) or the upper-triangular
+// square-root information R (2, parameters row-major); w reweights a robust loss (CODE 1 Huber,
+// 2 Cauchy) at the whitened residual norm, as GTSAM does. Rows are whitened whole (padding and
+// structural zeros stay zero): a short fixed-length vector loop per row.
+template <int STRIDE, int COLS, int ROWS, int KIND>
+void whiten(T* ab, const T* p, T code, T k) {
+    for (int i = 0; i < ROWS; ++i) ab[i * STRIDE + COLS - 1] = -ab[i * STRIDE + COLS - 1];
+    for (int i = 0; i < ROWS; ++i) {
+        T* row = ab + i * STRIDE;
+        if (KIND == 2) {  // row i = sum over j >= i of R_ij row j (rows j > i still unwhitened)
+            const int base = i * ROWS - (i * (i - 1)) / 2 - i;
+            T acc[STRIDE];  // a separate accumulator: row j is read while row i is summed
+            for (int c = 0; c < STRIDE; ++c) acc[c] = row[c] * p[base + i];
+            for (int j = i + 1; j < ROWS; ++j) {
+                const T rij = p[base + j];
+                const T* other = ab + j * STRIDE;
+                for (int c = 0; c < STRIDE; ++c) acc[c] += rij * other[c];
+            }
+            for (int c = 0; c < STRIDE; ++c) row[c] = acc[c];
+        } else {
+            const T s = KIND == 1 ? p[i] : p[0];
+            for (int c = 0; c < STRIDE; ++c) row[c] *= s;
+        }
+    }
+    if (code == T(0)) return;
+    T e2 = T(0);
+    for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
+    const T e = fgc_sqrt(e2);
+    const T w = code == T(1) ? (e <= k ? T(1) : T(k / e)) : T(k * k / (k * k + e * e));
+    const T s = fgc_sqrt(w);
+    for (int i = 0; i < ROWS * STRIDE; ++i) ab[i] *= s;
+}
+
+// Whitened rows [A | b] (ROWS of STRIDE, b in column COLS - 1) -> the local gradient A^T b
+// (column c into G[col[c]]) and the cost's rounding noise: row r moves by up to
+// eps * sum_c |A_rc| scale_c when x is rounded to T. TILE-wide partial sums keep every sum in a
+// fixed order; false if an entry is infinite or NaN.
+template <int STRIDE, int COLS, int ROWS>
+bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
+    T g[STRIDE];
+    T check[TILE];
+    for (int c = 0; c < STRIDE; ++c) g[c] = T(0);
+    for (int t = 0; t < TILE; ++t) check[t] = T(0);
+    T rounding = T(0);
+    for (int r = 0; r < ROWS; ++r) {
+        const T* row = ab + r * STRIDE;
+        const T b = row[COLS - 1];
+        T part[TILE];
+        for (int t = 0; t < TILE; ++t) part[t] = T(0);
+        for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
+            for (int t = 0; t < TILE; ++t) {
+                part[t] += fgc_abs(row[c0 + t]) * scale[c0 + t];
+                check[t] += row[c0 + t] - row[c0 + t];  // 0, or NaN for inf / NaN
+            }
+        }
+        T sum = T(0);
+        for (int t = 0; t < TILE; ++t) sum += part[t];
+        const T moved = EPSILON * sum;
+        rounding += fgc_abs(b) * moved + T(0.5) * moved * moved;
+        for (int c = 0; c < STRIDE; ++c) g[c] += row[c] * b;
+    }
+    for (int c = 0; c < COLS - 1; ++c) G[col[c]] += g[c];
+    *noise += rounding;
+    T bad = T(0);
+    for (int t = 0; t < TILE; ++t) bad += check[t];
+    return fgc_isfinite(bad);
+}
+
+// rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
+T robust_loss(T half, T code, T k) {
+    if (code == T(0)) return half;
+    const T e = fgc_sqrt(T(2) * half);
+    if (code == T(1)) return e <= k ? half : T(k * e - T(0.5) * k * k);
+    return T(0.5) * k * k * fgc_log1p(e * e / (k * k));
+}
+
+// The inputs of instances BLOCK0_INSTANCES[first ...] into the lanes (lanes past the last
+// instance repeat it; their results are not used).
+void gather_0(const T* x, int first, bool cost, V in[57]) {
+    T buf[57][LANES];
+    for (int l = 0; l < LANES; ++l) {
+        const int f = BLOCK0_INSTANCES[first + l < 6 ? first + l : 5];
+        const int vb = FACTOR_VAR_BEGIN[f];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
+        for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+        for (int i = 0; i < 12; ++i) buf[12 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 1]] + i];
+        for (int i = 0; i < 12; ++i) buf[24 + i][l] = line[0 + i];
+        if (!cost) continue;
+        for (int i = 0; i < 21; ++i) buf[36 + i][l] = line[12 + i];
+    }
+    for (int i = 0; i < (cost ? 57 : 36); ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=57
+        in[i] = load_lanes(buf[i]);
+    }
+}
+
+// block 0, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 60
+// structural non-zeros of 6 x 13), whiten; accumulate the gradient and the cost's rounding noise (how
+// far the cost moves when x is rounded to T); the whitened rows into the A buffer. False if not finite.
+bool linearize_0(const T* x, int first, T* noise) {
+    V in[57];
+    gather_0(x, first, false, in);
+    static T ab[LANES][96];  // rows [J | r] padded to 16: whole tiles
+    for (int l = 0; l < LANES; ++l) {
+        for (int i = 0; i < 96; ++i) ab[l][i] = T(0);
+    }
+    jacobian_0(in, ab);
+    bool finite = true;
+    for (int l = 0; l < LANES; ++l) {
+        if (first + l >= 6) continue;
+        const int f = BLOCK0_INSTANCES[first + l];
+        const int vb = FACTOR_VAR_BEGIN[f];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
+        whiten<16, 13, 6, 2>(ab[l] + 0, line + 12, line[33], line[34]);
+        T scale[16];  // per column: largest storage entry of its variable (0: b, padding)
+        int col[12];  // per column: its tangent entry
+        for (int c = 0; c < 16; ++c) scale[c] = T(0);
+        for (int j = 0; j < 6; ++j) {
+            scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
+            col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        }
+        for (int j = 0; j < 6; ++j) {
+            scale[6 + j] = VAR_SCALE[FACTOR_VARS[vb + 1]];
+            col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
+        }
+        finite = accumulate<16, 13, 6>(ab[l], scale, col, noise) && finite;
+        T* rows = AB + FACTOR_A_OFF[f];
+        for (int r = 0; r < 6; ++r) {
+            for (int c = 0; c < 13; ++c) rows[r * 13 + c] = ab[l][r * 16 + c];
+        }
+    }
+    return finite;
+}
+
+// block 0, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
+void cost_of_0(const T* x, int first, T* total) {
+    V in[57];
+    gather_0(x, first, true, in);
+    T half[LANES][1];
+    cost_0(in, half);
+    for (int l = 0; l < LANES; ++l) {
+        if (first + l >= 6) continue;
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK0_INSTANCES[first + l]];
+        T cost = T(0);
+        cost += robust_loss(half[l][0], line[33], line[34]);
+        *total += cost;
+    }
+}
+
+// The inputs of instances BLOCK1_INSTANCES[first ...] into the lanes (lanes past the last
+// instance repeat it; their results are not used).
+void gather_1(const T* x, int first, bool cost, V in[25]) {
+    T buf[25][LANES];
+    for (int l = 0; l < LANES; ++l) {
+        const int f = BLOCK1_INSTANCES[first + l < 1 ? first + l : 0];
+        const int vb = FACTOR_VAR_BEGIN[f];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
+        for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+        for (int i = 0; i < 12; ++i) buf[12 + i][l] = line[0 + i];
+        if (!cost) continue;
+        for (int i = 0; i < 1; ++i) buf[24 + i][l] = line[12 + i];
+    }
+    for (int i = 0; i < (cost ? 25 : 24); ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=25
+        in[i] = load_lanes(buf[i]);
+    }
+}
+
+// block 1, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 33
+// structural non-zeros of 6 x 7), whiten; accumulate the gradient and the cost's rounding noise (how
+// far the cost moves when x is rounded to T); the whitened rows into the A buffer. False if not finite.
+bool linearize_1(const T* x, int first, T* noise) {
+    V in[25];
+    gather_1(x, first, false, in);
+    static T ab[LANES][48];  // rows [J | r] padded to 8: whole tiles
+    for (int l = 0; l < LANES; ++l) {
+        for (int i = 0; i < 48; ++i) ab[l][i] = T(0);
+    }
+    jacobian_1(in, ab);
+    bool finite = true;
+    for (int l = 0; l < LANES; ++l) {
+        if (first + l >= 1) continue;
+        const int f = BLOCK1_INSTANCES[first + l];
+        const int vb = FACTOR_VAR_BEGIN[f];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
+        whiten<8, 7, 6, 0>(ab[l] + 0, line + 12, line[13], line[14]);
+        T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
+        int col[6];  // per column: its tangent entry
+        for (int c = 0; c < 8; ++c) scale[c] = T(0);
+        for (int j = 0; j < 6; ++j) {
+            scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
+            col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        }
+        finite = accumulate<8, 7, 6>(ab[l], scale, col, noise) && finite;
+        T* rows = AB + FACTOR_A_OFF[f];
+        for (int r = 0; r < 6; ++r) {
+            for (int c = 0; c < 7; ++c) rows[r * 7 + c] = ab[l][r * 8 + c];
+        }
+    }
+    return finite;
+}
+
+// block 1, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
+void cost_of_1(const T* x, int first, T* total) {
+    V in[25];
+    gather_1(x, first, true, in);
+    T half[LANES][1];
+    cost_1(in, half);
+    for (int l = 0; l < LANES; ++l) {
+        if (first + l >= 1) continue;
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK1_INSTANCES[first + l]];
+        T cost = T(0);
+        cost += robust_loss(half[l][0], line[13], line[14]);
+        *total += cost;
+    }
+}
+
+// Linearise every factor (each block type is its own pipelined unit); false if not finite.
+bool linearize_all(const T* x, T* noise) {
+    for (int i = 0; i < N_TANGENT; ++i) G[i] = T(0);
+    for (int v = 0; v < N_VARIABLES; ++v) {  // largest storage entry of each variable, at least 1
+        T scale = T(1);
+        for (int i = VAR_X_OFF[v]; i < VAR_X_OFF[v + 1]; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=12
+            scale = fgc_abs(x[i]) > scale ? fgc_abs(x[i]) : scale;
+        }
+        VAR_SCALE[v] = scale;
+    }
+    bool finite = true;
+    for (int i = 0; i < 6; i += LANES) finite = linearize_0(x, i, noise) && finite;
+    for (int i = 0; i < 1; i += LANES) finite = linearize_1(x, i, noise) && finite;
+    return finite;
+}
+
+// The graph's cost (GTSAM's error) at x: every block in cost mode.
+T total_cost(const T* x) {
+    T total = T(0);
+    for (int i = 0; i < 6; i += LANES) cost_of_0(x, i, &total);
+    for (int i = 0; i < 1; i += LANES) cost_of_1(x, i, &total);
+    return total;
+}
+
+// ---- retraction x (+) delta, one unit per variable type
+// kind 0: Pose3
+void retract_0(const T x[12], const T d[6], T out[12]) {
+    const T r0 = (d[1]*d[1]);
+    const T r1 = (d[2]*d[2]);
+    const T r2 = r0 + r1;
+    const T r3 = -r2;
+    const T r4 = (d[0]*d[0]);
+    const T r5 = r2 + r4;
+    const T r6 = lie_B(r5);
+    const T r7 = r3*r6 + T(1);
+    const T r8 = lie_A(r5);
+    const T r9 = r8*d[2];
+    const T r10 = r6*d[1];
+    const T r11 = r10*d[0];
+    const T r12 = r11 + r9;
+    const T r13 = r8*d[1];
+    const T r14 = r6*d[2];
+    const T r15 = r14*d[0];
+    const T r16 = -r13 + r15;
+    const T r17 = r11 - r9;
+    const T r18 = -r1 - r4;
+    const T r19 = r18*r6 + T(1);
+    const T r20 = r8*d[0];
+    const T r21 = r14*d[1] + r20;
+    const T r22 = r13 + r15;
+    const T r23 = -r20 + r6*d[1]*d[2];
+    const T r24 = -r0 - r4;
+    const T r25 = r24*r6 + T(1);
+    const T r26 = lie_C(r5);
+    const T r27 = r26*d[0];
+    const T r28 = r27*d[1];
+    const T r29 = r27*d[2];
+    const T r30 = d[3]*(r26*r3 + T(1)) + d[4]*(-r14 + r28) + d[5]*(r10 + r29);
+    const T r31 = r6*d[0];
+    const T r32 = d[3]*(r14 + r28) + d[4]*(r18*r26 + T(1)) + d[5]*(r26*d[1]*d[2] - r31);
+    const T r33 = d[3]*(-r10 + r29) + d[4]*(r26*d[1]*d[2] + r31) + d[5]*(r24*r26 + T(1));
+    out[0] = r12*x[1] + r16*x[2] + r7*x[0];
+    out[1] = r17*x[0] + r19*x[1] + r21*x[2];
+    out[2] = r22*x[0] + r23*x[1] + r25*x[2];
+    out[3] = r12*x[4] + r16*x[5] + r7*x[3];
+    out[4] = r17*x[3] + r19*x[4] + r21*x[5];
+    out[5] = r22*x[3] + r23*x[4] + r25*x[5];
+    out[6] = r12*x[7] + r16*x[8] + r7*x[6];
+    out[7] = r17*x[6] + r19*x[7] + r21*x[8];
+    out[8] = r22*x[6] + r23*x[7] + r25*x[8];
+    out[9] = r30*x[0] + r32*x[1] + r33*x[2] + x[9];
+    out[10] = r30*x[3] + r32*x[4] + r33*x[5] + x[10];
+    out[11] = r30*x[6] + r32*x[7] + r33*x[8] + x[11];
+}
+
+void retract_all(const T* x, const T* delta, T* out) {
+    for (int i = 0; i < 5; ++i) {
+        const int v = KIND0_VARIABLES[i];
+        retract_0(x + VAR_X_OFF[v], delta + VAR_T_OFF[v], out + VAR_X_OFF[v]);
+    }
+}
+
+// ---- partial QR (paper A): per step the stacked rows [A | b] of its factors, its children's new
+// factors and the damping rows sqrt(mu) I; the Evaluate unit builds the Householder vector of one
+// column, n_u Update units apply it to the columns after it. Then the conditional (the first f
+// rows) and the new factor for the parent. False if rank deficient.
+template <int LD, int MR>
+bool householder(T (*W)[LD], int m, int w, int f, int s, const int* plan) {
+    int scanned[MR];
+    T v[MR];
+    T dots[LD + TILE];
+    const int k = m < w + 1 ? m : w + 1;
+    const int end = (w + TILE) / TILE * TILE;  // padded row length (<= LD)
+    for (int j = 0; j < k; ++j) {  // Evaluate: Householder vector of column j
+#pragma HLS LOOP_TRIPCOUNT max=18
+        // rows with a zero in column j have v_i = 0: the reflection leaves them unchanged, so
+        // only the pivot row and the non-zero rows are touched (zeros are never computed).
+        // A step pattern's plan lists them (structurally: "n, rows" per column); else a scan.
+        int n = 0;
+        const int* active = scanned;
+        if (plan != nullptr) {
+            n = plan[0];
+            active = plan + 1;
+            plan += n + 1;
+        } else {
+            for (int i = j; i < m; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=54
+                if (i == j || W[i][j] != T(0)) scanned[n++] = i;
+            }
+        }
+        for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=54
+            v[a] = W[active[a]][j];
+        }
+        T part[TILE];  // TILE interleaved partial sums of the squares: short chains, fixed order
+        for (int t = 0; t < TILE; ++t) part[t] = T(0);
+        int a = 0;
+        for (; a + TILE <= n; a += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=13
+            for (int t = 0; t < TILE; ++t) part[t] += v[a + t] * v[a + t];
+        }
+        for (; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=4
+            part[0] += v[a] * v[a];
+        }
+        T norm2 = T(0);
+        for (int t = 0; t < TILE; ++t) norm2 += part[t];
+        const T norm = fgc_sqrt(norm2);
+        if (norm == T(0)) continue;
+        const T alpha = W[j][j] >= T(0) ? T(-norm) : norm;
+        v[0] = W[j][j] - alpha;  // active[0] is the pivot row j
+        const T tau = T(1) / (norm2 - alpha * W[j][j]);  // 2 / |v|^2, without a second sum
+        // columns from the tile boundary at or left of j + 1 to the end of the padded row:
+        // whole vectors; left of j + 1 the active rows are zero (and column j is set below)
+        const int c0 = (j + 1) - (j + 1) % TILE;
+        // Update: dots = v^T W, 2 TILE columns (two independent accumulator chains) at a time
+        for (int c = c0; c < end; c += 2 * TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=3
+            const int width = end - c < 2 * TILE ? TILE : 2 * TILE;
+            T acc[2 * TILE];
+            for (int t = 0; t < 2 * TILE; ++t) acc[t] = T(0);
+            if (width == 2 * TILE) {
+                for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=54
+#pragma HLS PIPELINE
+                    const T va = v[a];
+                    const T* row = W[active[a]] + c;
+                    for (int t = 0; t < 2 * TILE; ++t) acc[t] += va * row[t];
+                }
+            } else {
+                for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=54
+#pragma HLS PIPELINE
+                    const T va = v[a];
+                    const T* row = W[active[a]] + c;
+                    for (int t = 0; t < TILE; ++t) acc[t] += va * row[t];
+                }
+            }
+            for (int t = 0; t < 2 * TILE; ++t) dots[c + t] = acc[t];  // past end: unused
+        }
+        for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=54
+            const T tv = tau * v[a];
+            T* row = W[active[a]];
+            for (int c = c0; c < end; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=20
+#pragma HLS UNROLL factor=4
+                row[c] -= tv * dots[c];
+            }
+            row[j] = T(0);
+        }
+        W[j][j] = alpha;
+    }
+    T scale = T(0);
+    for (int i = 0; i < k; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+        for (int c = i; c <= w; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+            scale = fgc_abs(W[i][c]) > scale ? fgc_abs(W[i][c]) : scale;
+        }
+    }
+    if (k < f) return false;
+    T* cond = COND + STEP_COND_OFF[s];
+    for (int i = 0; i < f; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+        if (!(fgc_abs(W[i][i]) > SINGULAR_EPS * scale)) return false;
+        for (int c = 0; c <= w; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+            cond[i * (w + 1) + c] = W[i][c];
+        }
+    }
+    const int sw = w - f;
+    T* nf = NF + STEP_NF_OFF[s];
+    for (int r = 0; r < STEP_NF_ROWS[s]; ++r) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+        for (int c = 0; c <= sw; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+            nf[r * (sw + 1) + c] = W[f + r][f + c];
+        }
+    }
+    return true;
+}
+
+// Any step: stack its rows through the step tables, then triangularise.
+template <int U>
+bool eliminate_step(int s, T root_mu) {
+    static T W[MAX_ROWS][MAX_LD];
+#pragma HLS ARRAY_PARTITION variable=W cyclic factor=4 dim=2
+    const int w = STEP_W[s], f = STEP_F[s], m = STEP_ROWS[s];
+    for (int i = 0; i < m; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=54
+        for (int c = 0; c < MAX_LD; ++c) W[i][c] = T(0);
+    }
+    int row = 0;
+    for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=3
+        const int fac = STEP_FACTORS[e];
+        const int* cm = FACTOR_COLMAP + FACTOR_COLMAP_BEGIN[fac];
+        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - FACTOR_COLMAP_BEGIN[fac];
+        const int rows = (FACTOR_A_OFF[fac + 1] - FACTOR_A_OFF[fac]) / (d + 1);
+        const T* ab = AB + FACTOR_A_OFF[fac];
+        for (int r = 0; r < rows; ++r, ++row) {
+#pragma HLS LOOP_TRIPCOUNT max=54
+            for (int c = 0; c < d; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+                W[row][cm[c]] = ab[r * (d + 1) + c];
+            }
+            W[row][w] = ab[r * (d + 1) + d];
+        }
+    }
+    for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=2
+        const int c = STEP_CHILDREN[e];
+        const int sc = STEP_W[c] - STEP_F[c];
+        const int* map = STEP_SEPMAP + STEP_SEPMAP_BEGIN[c];
+        const T* nf = NF + STEP_NF_OFF[c];
+        for (int r = 0; r < STEP_NF_ROWS[c]; ++r, ++row) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+            for (int k = 0; k < sc; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+                W[row][map[k]] = nf[r * (sc + 1) + k];
+            }
+            W[row][w] = nf[r * (sc + 1) + sc];
+        }
+    }
+    for (int j = 0; j < f; ++j, ++row) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+        W[row][j] = root_mu;
+    }
+    return householder<MAX_LD, MAX_ROWS>(W, m, w, f, s, nullptr);
+}
+
+// One step through its specialised routine, or the generic one.
+template <int U>
+bool eliminate(int s, T mu) {
+    return eliminate_step<U>(s, mu);
+}
+
+// Eliminate every step, level by level (a level's steps are independent: the unit sets take
+// them 1 at a time), then back-substitute root first. False if singular.
+bool solve(T mu) {
+    const T root_mu = fgc_sqrt(mu);
+    bool ok = true;
+    for (int l = 0; l < N_LEVELS; ++l) {
+        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += UNIT_SETS) {
+#pragma HLS LOOP_TRIPCOUNT max=2
+#pragma HLS DATAFLOW
+            if (i + 0 < LEVEL_BEGIN[l + 1]) ok = eliminate<0>(LEVEL_STEPS[i + 0], root_mu) && ok;
+        }
+    }
+    if (!ok) return false;
+    for (int l = N_LEVELS - 1; l >= 0; --l) {
+        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=2
+            const int s = LEVEL_STEPS[i];
+            const int w = STEP_W[s], f = STEP_F[s];
+            const int* cols = STEP_COL + STEP_COL_BEGIN[s];
+            const T* cond = COND + STEP_COND_OFF[s];
+            T xs[MAX_W];
+            for (int c = f; c < w; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+                xs[c] = DELTA[cols[c]];
+            }
+            for (int r = f - 1; r >= 0; --r) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+                const T* row = cond + r * (w + 1);
+                T part[TILE];  // TILE interleaved partial sums: a fixed order, short chains
+                for (int t = 0; t < TILE; ++t) part[t] = T(0);
+                int c = r + 1;
+                for (; c + TILE <= w; c += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=20
+                    for (int t = 0; t < TILE; ++t) part[t] += row[c + t] * xs[c + t];
+                }
+                for (; c < w; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=4
+                    part[0] += row[c] * xs[c];
+                }
+                T acc = T(0);
+                for (int t = 0; t < TILE; ++t) acc += part[t];
+                xs[r] = (row[w] - acc) / row[r];
+            }
+            for (int c = 0; c < f; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+                DELTA[cols[c]] = xs[c];
+            }
+        }
+    }
+    return true;
+}
+
+// ---- trust-region control (paper B): solve, try x (+) delta in cost mode, accept or grow mu.
+// Near the optimum the cost's rounding noise hides real progress, so a step whose predicted
+// decrease 0.5 delta^T (g + mu delta) is within the cost's resolution `band` is judged by that
+// prediction (the simulator's rule).
+struct Step {
+    int kind;  // 0 accept, 1 converged, 2 failed
+    int reason;
+    T cost;
+    T predicted;
+};
+
+Step try_steps(T cost, T band, T* mu) {
+    T x_norm2 = T(0);
+    for (int i = 0; i < N_X; ++i) x_norm2 += X[i] * X[i];
+    const T x_norm = fgc_sqrt(x_norm2);
+    for (int t = 0; t < MAX_TRIES; ++t) {
+        const bool solved = solve(*mu);
+        if (!solved && !(*mu > T(0))) return Step{2, REASON_SINGULAR, cost, T(0)};
+        bool ok = solved;
+        T d2 = T(0), predicted = T(0);
+        for (int i = 0; i < N_TANGENT; ++i) {
+            ok = ok && fgc_isfinite(DELTA[i]);
+            d2 += DELTA[i] * DELTA[i];
+            predicted += DELTA[i] * (G[i] + *mu * DELTA[i]);
+        }
+        predicted = T(0.5) * predicted;
+        if (ok) {
+            if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
+            retract_all(X, DELTA, X_TRIAL);
+            const T trial = total_cost(X_TRIAL);
+            const bool within = predicted <= band && trial <= cost + band;
+            if (fgc_isfinite(trial) && (trial < cost || !(*mu > T(0)) || within)) {
+                *mu = *mu / LAMBDA_FACTOR > MU_MIN ? T(*mu / LAMBDA_FACTOR) : MU_MIN;
+                return Step{0, 0, trial, predicted};
+            }
+        }
+        if (!(*mu > T(0))) return Step{2, REASON_NON_FINITE, cost, T(0)};
+        *mu = *mu * LAMBDA_FACTOR;
+        if (*mu > LAMBDA_UPPER_BOUND) return Step{2, REASON_LAMBDA_LIMIT, cost, T(0)};
+    }
+    return Step{2, REASON_LAMBDA_LIMIT, cost, T(0)};
+}
+
+// GN/LM iterations from X; returns {iterations, status, reason} and the initial and final cost.
+void optimize(T errors[2], int info[3]) {
+    T cost = total_cost(X);
+    errors[0] = cost;
+    T mu = LAMBDA_INITIAL;
+    int it = 0, status = STATUS_MAX_ITERATIONS, reason = REASON_MAX_ITERATIONS;
+    if (!fgc_isfinite(cost)) {
+        status = STATUS_FAILED;
+        reason = REASON_NON_FINITE;
+    }
+    for (int k = 0; k < MAX_ITERATIONS; ++k) {
+        if (status != STATUS_MAX_ITERATIONS) break;
+        T noise = T(0);
+        if (!linearize_all(X, &noise)) {
+            status = STATUS_FAILED;
+            reason = REASON_NON_FINITE;
+            break;
+        }
+        ++it;
+        T g_max = T(0);
+        for (int i = 0; i < N_TANGENT; ++i) g_max = fgc_abs(G[i]) > g_max ? fgc_abs(G[i]) : g_max;
+        if (g_max < EPS_GRADIENT) {
+            status = STATUS_CONVERGED;
+            reason = REASON_GRADIENT;
+            break;
+        }
+        const T band = RESOLUTION * cost > noise ? T(RESOLUTION * cost) : noise;
+        const Step step = try_steps(cost, band, &mu);
+        if (step.kind != 0) {
+            status = step.kind == 1 ? STATUS_CONVERGED : STATUS_FAILED;
+            reason = step.reason;
+            break;
+        }
+        const T moved = fgc_abs(cost - step.cost) > step.predicted ? fgc_abs(cost - step.cost)
+                                                                    : step.predicted;
+        const T change = cost > T(0) ? T(moved / cost) : T(0);
+        for (int i = 0; i < N_X; ++i) X[i] = X_TRIAL[i];
+        cost = step.cost;
+        if (cost <= ABS_TOL) {
+            status = STATUS_CONVERGED;
+            reason = REASON_ABSOLUTE_ERROR;
+        } else if (change <= REL_TOL) {
+            status = STATUS_CONVERGED;
+            reason = REASON_RELATIVE_DECREASE;
+        }
+    }
+    errors[1] = cost;
+    info[0] = it;
+    info[1] = status;
+    info[2] = reason;
+}
+
+}  // namespace
+}  // namespace fgc
+
+void pose_graph_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
+                    fgc::T x_out[fgc::N_X], fgc::T errors[2], int info[3]) {
+#pragma HLS INTERFACE m_axi port=x_in offset=slave bundle=gmem0 depth=60
+#pragma HLS INTERFACE m_axi port=data offset=slave bundle=gmem1 depth=225
+#pragma HLS INTERFACE m_axi port=x_out offset=slave bundle=gmem0 depth=60
+#pragma HLS INTERFACE s_axilite port=errors
+#pragma HLS INTERFACE s_axilite port=info
+#pragma HLS INTERFACE s_axilite port=return
+    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
+    for (int i = 0; i < fgc::N_DATA; ++i) fgc::DATA_BUF[i] = data[i];
+    fgc::optimize(errors, info);
+    for (int i = 0; i < fgc::N_X; ++i) x_out[i] = fgc::X[i];
+}

@@ -1,0 +1,284 @@
+# generated from template fgc_sim_incremental.py.jinja by fgc — do not edit
+# fgc 0.1.0
+"""Incremental smoothing over a chain (paper A, Algorithm 3.2), as the compiled plan schedules it.
+
+Keyframe clusters arrive one by one. On arrival of cluster j the plan names a window of clusters
+first … j (the newest k, or all of them on a batch step). The window's factors are relinearised
+and optimised (GN/LM, clusters eliminated oldest to newest so the root is the newest cluster);
+the older part of the Bayes net is kept: its conditionals and the factor τ it passes into the
+window, linearised where they were last eliminated. τ enters the window as a linear factor in the
+local coordinates Log(x̄⁻¹x) at its linearisation point x̄: rows [A·J | b − A·Log(x̄⁻¹x)], J the
+Jacobian of that Log (GTSAM's LinearContainerFactor keeps A, a different cost away from x̄). After the
+window converges it is eliminated once more without damping (QR) to store its conditionals and
+new factors, and back-substitution walks the kept conditionals from the window down to cluster 0,
+so every variable gets an estimate: x_c = x̄_c ⊕ R⁻¹ (d − S·Log(x̄_c+1⁻¹ x_c+1)). The newest kept
+conditional (cluster first − 1) is not re-eliminated, but its parent x_first moved with the
+window: it is re-expressed at the new x_first to first order (S ← S·J, d ← d − S·Log(x̄⁻¹x_first)),
+as a Bayes net holds a conditional on its parent's tangent at the parent's linearisation point.
+This is ISAM2 holding the kept variables (noRelinKeys) with the factors across the window's
+edge kept linear where they were last linearised.
+"""
+
+import numpy
+
+
+class Window:
+    """One update's sub-problem, with the interface the optimiser expects of a problem."""
+
+    def __init__(self, problem, chain, first, last, tau):
+        self.problem, self.lib, self.dtype = problem, problem.lib, problem.dtype
+        self.chain, self.first, self.last, self.tau = chain, first, last, tau
+        self.x0 = chain.x
+        variables = [v for c in range(first, last + 1) for v in chain.clusters[c]]
+        dims = problem.spec["variable_dims"]
+        self.offset = numpy.zeros(len(dims), dtype=numpy.intp)
+        self.offset[variables] = numpy.concatenate([[0], numpy.cumsum([dims[v] for v in
+                                                                      variables])[:-1]])
+        self.n = sum(dims[v] for v in variables)
+        self.sel = [numpy.flatnonzero((e >= first) & (m <= last))
+                    for e, m in zip(chain.entry, chain.reach)]
+        sizes = [len(s) * b.m * (b.d + 1) for s, b in zip(self.sel, problem.blocks)]
+        self.base = numpy.concatenate([[0], numpy.cumsum(sizes)]).astype(numpy.intp)
+        self.tmap = numpy.full(problem.n, -1, dtype=numpy.intp)  # global → window column
+        for v in variables:
+            start = problem.t_off[v]
+            self.tmap[start:start + dims[v]] = self.offset[v] + numpy.arange(dims[v])
+        self.columns = [self.tmap[b.columns[s]] for b, s in zip(problem.blocks, self.sel)]
+        self.plan = self.lib.linear.make_plan(self._steps(), self.offset, dims, self._rows_of,
+                                              int(self.base[-1]) + self._tau_size())
+        self.groups = _groups(problem, variables, self.offset)
+
+    def _tau_size(self):
+        return 0 if self.tau is None else self.tau[0].size
+
+    def _steps(self):
+        steps = []
+        for c in range(self.first, self.last + 1):
+            entering = [(b, i, m) for b, sel in enumerate(self.sel)
+                        for i in numpy.flatnonzero(self.chain.entry[b][sel] == c)
+                        for m in range(len(self.problem.blocks[b].spec["members"]))]
+            if c == self.first and self.tau is not None:
+                entering.append(("tau",))
+            sep = self.chain.clusters[c + 1] if c < self.last else ()
+            steps.append((self.chain.clusters[c], sep, entering,
+                          [c - self.first - 1] if c > self.first else []))
+        return steps
+
+    def _rows_of(self, entry):
+        if entry[0] == "tau":
+            rows, width = self.tau[0].shape
+            starts = int(self.base[-1]) + numpy.arange(rows) * width
+            return starts, self.chain.columns_in_row(self.first), width - 1
+        b, i, member = entry
+        blk = self.problem.blocks[b]
+        first, last, *_, touches = blk.spec["members"][member]
+        col = numpy.concatenate([[0], numpy.cumsum(blk.spec["variable_dims"])])
+        inst = blk.spec["instances"][self.sel[b][i]]
+        starts = self.base[b] + (i * blk.m + numpy.arange(first, last)) * (blk.d + 1)
+        return starts, {inst[k]: int(col[k]) for k in touches}, blk.d
+
+    # -- the optimiser's interface -------------------------------------------------------
+    def linearize(self, x):
+        with numpy.errstate(all="ignore"):
+            parts = [b.linearize(x, s) for b, s in zip(self.problem.blocks, self.sel)]
+        if self.tau is not None:
+            parts.append(self._tau_rows(x))
+        g = numpy.zeros(self.n)
+        for ab, cols in zip(parts, self.columns):
+            contrib = numpy.einsum("nmd,nm->nd", ab[..., :-1], ab[..., -1])
+            g += numpy.bincount(cols.reshape(-1), contrib.reshape(-1), minlength=self.n)
+        pairs = [(ab, b.columns[s]) for ab, b, s in zip(parts, self.problem.blocks, self.sel)]
+        if self.tau is not None:
+            g[self._tau_columns()] += parts[-1][:, :-1].T @ parts[-1][:, -1]
+            pairs.append((parts[-1][None], self.chain.tangent(self.first)[None]))
+        noise = self.lib.optimizer.cost_noise(self.problem, x, pairs)
+        return parts, g.astype(self.dtype), noise
+
+    def cost(self, x):
+        with numpy.errstate(all="ignore"):
+            total = sum((b.cost(x, s) for b, s in zip(self.problem.blocks, self.sel)),
+                        self.dtype.type(0))
+            if self.tau is not None:
+                r = self._tau_rows(x)
+                total += 0.5 * numpy.sum(r[:, -1] ** 2)
+        return total
+
+    def solve(self, parts, mu):
+        lin = self.lib.linear
+        factors = numpy.concatenate([p.reshape(-1) for p in parts])
+        conds = lin.eliminate(self.plan, factors, mu, self.problem.spec["solver"]["linear"])
+        order = [(i,) for i in reversed(range(len(self.plan.steps)))]
+        return lin.back_substitute(self.plan, order, conds, self.n, self.dtype)
+
+    def retract(self, x, delta):
+        out = x.copy()
+        with numpy.errstate(all="ignore"):
+            for fn, sidx, tidx in self.groups:
+                out[sidx] = fn(x[sidx], delta[tidx])
+        return out
+
+    # -- τ as a linear factor at its linearisation point ---------------------------------
+    def _tau_rows(self, x):
+        """τ at x: rows [A·J | b − A·s] with s = Log(x̄⁻¹x) and J = ∂s/∂δ at x ⊕ δ."""
+        rows, lin = self.tau
+        shift, jac = self.chain.local_jacobian(lin, x, self.first)
+        a, b = rows[:, :-1], rows[:, -1]
+        return numpy.concatenate([a @ jac, (b - a @ shift)[:, None]], 1)
+
+    def _tau_columns(self):
+        return self.tmap[self.chain.tangent(self.first)]
+
+
+def _groups(problem, variables, offset):
+    """Retraction groups restricted to the window's variables, with window tangent columns."""
+    chosen, spec = set(variables), problem.spec
+    groups = []
+    for kind, vs in spec["retract_groups"]:
+        vs = [v for v in vs if v in chosen]
+        if vs:
+            groups.append((problem.lib.special.RETRACT[kind],
+                           numpy.array([problem.x_off[v] + numpy.arange(
+                               spec["variable_storage"][v]) for v in vs]),
+                           numpy.array([offset[v] + numpy.arange(spec["variable_dims"][v])
+                                        for v in vs])))
+    return groups
+
+
+class Chain:
+    """The incremental state: the estimate, every cluster's latest conditional and the factor τ
+    passed into each cluster, with the linearisation points they were computed at."""
+
+    def __init__(self, problem):
+        self.problem, self.clusters = problem, problem.spec["clusters"]
+        self.x = problem.x0.copy()
+        cluster_of = numpy.zeros(len(problem.spec["variable_dims"]), dtype=numpy.intp)
+        for c, variables in enumerate(self.clusters):
+            cluster_of[list(variables)] = c
+        insts = [cluster_of[numpy.array(b.spec["instances"]).reshape(b.n, -1)]
+                 for b in problem.blocks]
+        self.entry, self.reach = [c.min(1) for c in insts], [c.max(1) for c in insts]
+        self.kind = {v: kind for kind, vs in problem.spec["retract_groups"] for v in vs}
+        self.conds, self.taus = {}, {}
+
+    def storage(self, c):
+        storage, off = self.problem.spec["variable_storage"], self.problem.x_off
+        return numpy.concatenate([off[v] + numpy.arange(storage[v]) for v in self.clusters[c]])
+
+    def tangent(self, c):
+        dims, off = self.problem.spec["variable_dims"], self.problem.t_off
+        return numpy.concatenate([off[v] + numpy.arange(dims[v]) for v in self.clusters[c]])
+
+    def columns_in_row(self, c):
+        """{variable: first column} of cluster c's variables in a row over the cluster."""
+        dims, out, col = self.problem.spec["variable_dims"], {}, 0
+        for v in self.clusters[c]:
+            out[v], col = col, col + dims[v]
+        return out
+
+    def _parts(self, c):
+        """Per variable of cluster c: its kind, its storage and tangent slices within the
+        cluster, and its storage slice in x."""
+        storage, off = self.problem.spec["variable_storage"], self.problem.x_off
+        dims = self.problem.spec["variable_dims"]
+        s = t = 0
+        for v in self.clusters[c]:
+            yield (self.kind[v], slice(s, s + storage[v]), slice(t, t + dims[v]),
+                   slice(off[v], off[v] + storage[v]))
+            s, t = s + storage[v], t + dims[v]
+
+    def local(self, lin, x, c):
+        """Log(x̄⁻¹ x) of cluster c's variables: ``lin`` is the cluster's storage x̄."""
+        local = self.problem.lib.special.LOCAL
+        return numpy.concatenate([local[kind](lin[None, sp], x[None, xs])[0]
+                                  for kind, sp, _, xs in self._parts(c)])
+
+    def local_jacobian(self, lin, x, c):
+        """Log(x̄⁻¹ x) of cluster c and its derivative along x ⊕ δ (block diagonal), by central
+        differences of the run-time's own Log and Exp: τ's rows must be the derivative of
+        exactly the cost the window evaluates, or LM stalls on the mismatch."""
+        special, dims = self.problem.lib.special, self.problem.spec["variable_dims"]
+        h = numpy.sqrt(numpy.finfo(x.dtype).eps) * 10
+        n = sum(dims[v] for v in self.clusters[c])
+        jac = numpy.zeros((n, n), dtype=x.dtype)
+        for kind, sp, tp, xs in self._parts(c):
+            d = tp.stop - tp.start
+            steps = numpy.concatenate([numpy.eye(d), -numpy.eye(d)]).astype(x.dtype) * h
+            moved = special.RETRACT[kind](numpy.repeat(x[None, xs], 2 * d, 0), steps)
+            logs = special.LOCAL[kind](numpy.repeat(lin[None, sp], 2 * d, 0), moved)
+            jac[tp, tp] = ((logs[:d] - logs[d:]) / (2 * h)).T
+        return self.local(lin, x, c), jac
+
+    def retract(self, lin, delta, c):
+        """x̄ ⊕ δ for cluster c's variables (storage ``lin``, tangent ``delta``)."""
+        retract = self.problem.lib.special.RETRACT
+        return numpy.concatenate([retract[kind](lin[None, sp], delta[None, tp])[0]
+                                  for kind, sp, tp, _ in self._parts(c)])
+
+
+# --------------------------------------------------------------------------------------------
+# the update loop
+# --------------------------------------------------------------------------------------------
+
+
+def solve_incremental(problem, opts, optimize):
+    """Run every update of the plan; returns (x, status, reason, per-update records)."""
+    chain, history, status, reason = Chain(problem), [], "converged", ""
+    for keyframe, batch, clusters, _ in problem.spec["incremental"]:
+        new = [e[r == keyframe] for e, r in zip(chain.entry, chain.reach)]
+        first = min([clusters[0]] + [int(n.min()) for n in new if len(n)])
+        tau = chain.taus.get(first) if first > 0 else None
+        window = Window(problem, chain, first, keyframe, tau)
+        x, cost, it, _, st, why, _ = optimize(window, opts)
+        if first > 0:
+            _relinearize_parent(chain, x, first - 1)
+        _store(chain, window, x)
+        _back_substitute(chain, x, first)
+        chain.x = x
+        history.append({"keyframe": keyframe, "mode": "batch" if batch else "incremental",
+                        "first": first, "iterations": it, "status": st, "reason": why,
+                        "cost": float(cost), "values": _snapshot(chain, keyframe)})
+        if st != "converged" and status == "converged":
+            status, reason = st, f"keyframe {keyframe}: {why}"
+    return chain.x, status, reason, history
+
+
+def _snapshot(chain, keyframe):
+    """The estimate after an update: each variable's storage, in the problem's variable order,
+    None for the variables of clusters that have not arrived yet."""
+    storage, off = chain.problem.spec["variable_storage"], chain.problem.x_off
+    out = [None] * len(storage)
+    for c in range(keyframe + 1):
+        for v in chain.clusters[c]:
+            out[v] = chain.x[off[v]:off[v] + storage[v]].astype(float).tolist()
+    return out
+
+
+def _store(chain, window, x):
+    """Eliminate the converged window once more without damping: its conditionals and the
+    factors passed between its clusters are what later updates keep."""
+    parts, _, _ = window.linearize(x)
+    conds, news = window.lib.linear.eliminate_qr(
+        window.plan, numpy.concatenate([p.reshape(-1) for p in parts]), 0.0)
+    for k, c in enumerate(range(window.first, window.last + 1)):
+        lin_next = x[chain.storage(c + 1)] if c < window.last else None
+        chain.conds[c] = (conds[k], x[chain.storage(c)], lin_next)
+        if c < window.last:
+            chain.taus[c + 1] = (news[k], lin_next)
+
+
+def _relinearize_parent(chain, x, c):
+    """Re-express kept cluster c's conditional R·δ_c + S·Log(x̄⁻¹x_c+1) = d at the new
+    estimate of its parent x_c+1: S ← S·J, d ← d − S·Log(x̄⁻¹x_c+1), x̄ ← x_c+1 (first order,
+    as a Bayes net stores a conditional on the parent's tangent at its linearisation point)."""
+    (r, s, d), lin, lin_next = chain.conds[c]
+    shift, jac = chain.local_jacobian(lin_next, x, c + 1)
+    chain.conds[c] = ((r, s @ jac, d - s @ shift), lin, x[chain.storage(c + 1)])
+
+
+def _back_substitute(chain, x, first):
+    """Kept clusters first − 1 … 0 from their conditionals, given the newer estimate."""
+    solve_upper = chain.problem.lib.linear.solve_upper
+    for c in range(first - 1, -1, -1):
+        (r, s, d), lin, lin_next = chain.conds[c]
+        delta = solve_upper(r, d - s @ chain.local(lin_next, x, c + 1))
+        x[chain.storage(c)] = chain.retract(lin, delta, c)

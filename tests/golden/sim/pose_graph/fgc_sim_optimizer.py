@@ -1,0 +1,309 @@
+# generated from template fgc_sim_optimizer.py.jinja by fgc — do not edit
+# fgc 0.1.0
+"""The fgc simulator's optimiser: Gauss-Newton or Levenberg-Marquardt as the accelerator runs it.
+
+Levenberg-Marquardt follows paper B: linearise (error + Jacobian mode of the factor blocks), solve
+(H + μI) δ = g by elimination along the schedule (QR or Cholesky), evaluate the cost at x ⊕ δ
+(cost-only mode), accept the step and shrink μ if the cost decreased, otherwise grow μ and
+re-solve. Stops: k_max iterations, ‖g‖∞ < ε1, ‖δ‖ ≤ ε2 (‖x‖ + ε2) with ε2 at least 10 ulp of the
+working precision (‖x‖: the norm of all variables' storage), an accepted step whose relative cost
+change and predicted decrease are both at most the relative tolerance (float32 cannot resolve the
+cost change, the prediction it can), or a cost below the absolute tolerance. Gauss-Newton takes
+every finite step (μ = 0); a singular elimination stops it (status "failed", reason "singular",
+the pivot's variable in the result's "singular" record).
+
+After a batch solve the float64 diagnosis of ``fgc_sim_diagnostics`` looks at the solution: a
+variable the factors leave undetermined (which LM's damping hides) and the condition number κ
+go into the result ("singular", "condition").
+"""
+
+import json
+import time
+
+import numpy
+
+MU_MIN = 1e-30  # μ never reaches 0 in LM: its damping rows keep every step well posed
+RESULT_FORMAT = "fgc-sim-result 1"
+
+
+def _offsets(sizes):
+    return numpy.concatenate([[0], numpy.cumsum(sizes)]).astype(numpy.intp)
+
+
+class Problem:
+    """A compiled structure with one data file's numbers, in one float dtype."""
+
+    def __init__(self, spec, data, dtype, lib):
+        self.spec, self.lib, self.dtype = spec, lib, numpy.dtype(dtype)
+        self.singular = None  # the last SingularError of an elimination
+        variables, factors = data
+        dims, storage = spec["variable_dims"], spec["variable_storage"]
+        _check_variables(variables, storage, lib.runtime.SimDataError)
+        if len(factors) != spec["num_factors"]:
+            raise lib.runtime.SimDataError(f"the data file has {len(factors)} factor rows, the "
+                                           f"problem {spec['num_factors']}")
+        _check_range(variables, factors, self.dtype, lib.runtime.SimDataError)
+        x_off, self.t_off = _offsets(storage), _offsets(dims)
+        self.x_off, self.n = x_off, int(self.t_off[-1])
+        self.x0 = numpy.concatenate([v for v, _ in variables]).astype(self.dtype)
+        self.blocks = [lib.runtime.Block(b, i, _rows(b, i, factors, lib), x_off, self.t_off,
+                                         self.dtype) for i, b in enumerate(spec["blocks"])]
+        self.base = _offsets([b.n * b.m * (b.d + 1) for b in self.blocks])
+        steps = [s[:4] for s in spec["steps"]]
+        self.plan = lib.linear.make_plan(steps, self.t_off, dims, self._rows_of,
+                                         int(self.base[-1]))
+        self.groups = [(lib.special.RETRACT[kind],
+                        numpy.array([x_off[v] + numpy.arange(storage[v]) for v in vs]),
+                        numpy.array([self.t_off[v] + numpy.arange(dims[v]) for v in vs]))
+                       for kind, vs in spec["retract_groups"]]
+
+    def _rows_of(self, entry):
+        """Factor ``entry`` = (block, instance, member): its rows' starts in the flat [A | b]
+        of all blocks, {variable: column offset} of the variables it touches, rhs offset."""
+        b, i, member = entry
+        blk = self.blocks[b]
+        first, last, *_, touches = blk.spec["members"][member]
+        col = _offsets(blk.spec["variable_dims"])
+        inst = blk.spec["instances"][i]
+        starts = self.base[b] + (i * blk.m + numpy.arange(first, last)) * (blk.d + 1)
+        return starts, {inst[k]: int(col[k]) for k in touches}, blk.d
+
+    def cost(self, x):
+        """Total cost (GTSAM's graph error) at storage vector ``x``: the cost-only mode."""
+        with numpy.errstate(all="ignore"):
+            return sum((b.cost(x) for b in self.blocks), self.dtype.type(0))
+
+    def linearize(self, x):
+        """Every block's whitened [J | −r], the gradient g = Jᵀ(−r) (tangent vector) and the
+        cost's rounding noise at x (see :func:`cost_noise`)."""
+        with numpy.errstate(all="ignore"):
+            abs_ = [b.linearize(x) for b in self.blocks]
+        g = numpy.zeros(self.n)
+        for b, ab in zip(self.blocks, abs_):
+            contrib = numpy.einsum("nmd,nm->nd", ab[..., :-1], ab[..., -1])
+            g += numpy.bincount(b.columns.reshape(-1), contrib.reshape(-1), minlength=self.n)
+        # bincount accumulates in float64; g only steers (stopping rule, predicted decrease)
+        noise = cost_noise(self, x, [(ab, b.columns) for b, ab in zip(self.blocks, abs_)])
+        return abs_, g.astype(self.dtype), noise
+
+    def solve(self, abs_, mu):
+        """δ solving (H + μI) δ = g along the schedule."""
+        lin = self.lib.linear
+        factors = numpy.concatenate([ab.reshape(-1) for ab in abs_])
+        conds = lin.eliminate(self.plan, factors, mu, self.spec["solver"]["linear"])
+        return lin.back_substitute(self.plan, self.spec["back_substitution"], conds, self.n,
+                                   self.dtype)
+
+    def retract(self, x, delta):
+        """x ⊕ δ: every variable retracted with its type's Expmap."""
+        out = x.copy()
+        with numpy.errstate(all="ignore"):
+            for fn, sidx, tidx in self.groups:
+                out[sidx] = fn(x[sidx], delta[tidx])
+        return out
+
+
+def cost_noise(problem, x, parts):
+    """How much the cost changes when x is rounded to the working precision: each whitened
+    residual row moves by up to eps·Σ|A_ij|·scale_j (scale_j: the largest storage entry of
+    column j's variable, at least 1), changing the cost by |b|·that + ½·that². ``parts`` pairs
+    rows [A | b] (instances × rows × (columns + 1)) with their global tangent columns."""
+    scale = numpy.maximum(numpy.maximum.reduceat(numpy.abs(x), problem.x_off[:-1]), 1)
+    columns = numpy.repeat(scale, problem.spec["variable_dims"]).astype(problem.dtype)
+    eps, total = numpy.finfo(problem.dtype).eps, 0.0
+    for ab, cols in parts:
+        moved = eps * numpy.einsum("nmd,nd->nm", numpy.abs(ab[..., :-1]), columns[cols])
+        total += float(numpy.sum(numpy.abs(ab[..., -1]) * moved + 0.5 * moved * moved))
+    return total
+
+
+def _check_variables(variables, storage, error):
+    if len(variables) != len(storage):
+        raise error(f"the data file has {len(variables)} variables, the problem {len(storage)}")
+    for number, ((values, line), size) in enumerate(zip(variables, storage)):
+        if len(values) != size:
+            raise error(f"line {line}: variable {number} needs {size} numbers, found "
+                        f"{len(values)}", line, variable=number)
+
+
+def _check_range(variables, factors, dtype, error):
+    """Every number must fit the working precision: a float32 run would read |v| > 3.4e38 as
+    ±inf. (Numbers that round to 0 are harmless data; a noise parameter that does leaves its
+    rows empty, which elimination reports as singular.)"""
+    top = numpy.finfo(dtype).max
+    for what, rows in (("variable", variables), ("factor", factors)):
+        for number, (values, line) in enumerate(rows):
+            if numpy.any(numpy.abs(values) > top):
+                raise error(f"line {line}: {what} {number} holds a number beyond the "
+                            f"{dtype.name} range (|v| > {top:.3g})", line, **{what: number})
+
+
+def _rows(spec, number, factors, lib):
+    """The factor rows of block type ``number``'s instances as one (n × length) array."""
+    length = sum(n_meas + n_params + 2 for _, _, _, n_params, n_meas, _ in spec["members"])
+    rows = []
+    for i, index in enumerate(spec["factor_ids"]):
+        values, line = factors[index]
+        if len(values) != length:
+            raise lib.runtime.SimDataError(
+                f"line {line}: factor instance {index} (block type {number}) needs {length} "
+                f"numbers, found {len(values)}", line, factor=index)
+        rows.append(values)
+    return numpy.array(rows).reshape(len(rows), length)
+
+
+# --------------------------------------------------------------------------------------------
+# Gauss-Newton / Levenberg-Marquardt
+# --------------------------------------------------------------------------------------------
+
+
+def optimize(problem, opts):
+    """Run the solver; returns (x, final cost, iterations, μ, status, reason, cost log)."""
+    eps = float(numpy.finfo(problem.dtype).eps)
+    # ‖δ‖ can only shrink to the storage's resolution: never ask for less than 10 ulp.
+    limits = {"eps_step": max(opts["eps_step"], 10 * eps), "resolution": 16 * eps}
+    x, cost = problem.x0, problem.cost(problem.x0)
+    log, mu, it = [float(cost)], (opts["lambda_initial"] if opts["method"] == "lm" else 0.0), 0
+    if not numpy.isfinite(cost):
+        return x, cost, 0, mu, "failed", "non_finite", log
+    while it < opts["max_iterations"]:
+        abs_, g, noise = problem.linearize(x)
+        if not all(numpy.all(numpy.isfinite(ab)) for ab in abs_):
+            return x, cost, it, mu, "failed", "non_finite", log
+        it += 1
+        if numpy.max(numpy.abs(g), initial=0) < opts["eps_gradient"]:
+            return x, cost, it, mu, "converged", "gradient", log
+        band = max(limits["resolution"] * cost, noise)
+        kind, x_new, new, mu, info = _step(problem, x, cost, (abs_, g, band), mu, opts, limits)
+        if kind != "accept":
+            return x, cost, it, mu, kind, info, log
+        change = max(abs(cost - new), info) / cost if cost > 0 else 0.0
+        x, cost = x_new, new
+        log.append(float(cost))
+        if cost <= opts["absolute_error_tol"]:
+            return x, cost, it, mu, "converged", "absolute_error", log
+        if change <= opts["relative_error_tol"]:
+            return x, cost, it, mu, "converged", "relative_decrease", log
+    return x, cost, it, mu, "max_iterations", "max_iterations", log
+
+
+def _step(problem, x, cost, lin, mu, opts, limits):
+    """One accepted step (kind "accept", x, cost, μ, predicted decrease), or why there is none
+    (kind "converged"/"failed", reason in the last field).
+
+    LM accepts a step that lowers the cost and otherwise grows μ and re-solves; Gauss-Newton
+    takes every finite step. Near the optimum the cost's rounding noise (~1e-7 relative in
+    float32) hides real progress, so a step whose predicted decrease ½δᵀ(g + μδ) is below the
+    cost's resolution ``band`` is judged by that prediction: accepted unless the cost rose
+    beyond the band.
+    """
+    abs_, g, band = lin
+    singular = problem.lib.linear.SingularError
+    while True:
+        try:
+            delta = problem.solve(abs_, mu)
+        except singular as exc:
+            problem.singular = exc  # which pivot: named in the result
+            if mu <= 0:
+                return "failed", None, None, mu, "singular"
+            delta = None
+        if delta is not None and numpy.all(numpy.isfinite(delta)):
+            if numpy.linalg.norm(delta) <= limits["eps_step"] * (numpy.linalg.norm(x)
+                                                                 + limits["eps_step"]):
+                return "converged", None, None, mu, "step"
+            predicted = 0.5 * float(delta @ (g + mu * delta))
+            x_new = problem.retract(x, delta)
+            new = problem.cost(x_new)
+            if numpy.isfinite(new) and (new < cost or mu <= 0
+                                        or predicted <= band and new <= cost + band):
+                return "accept", x_new, new, max(mu / opts["lambda_factor"], MU_MIN), predicted
+        if mu <= 0:
+            return "failed", None, None, mu, "non_finite"
+        mu *= opts["lambda_factor"]
+        if mu > opts["lambda_upper_bound"]:
+            return "failed", None, None, mu, "lambda_limit"
+
+
+# --------------------------------------------------------------------------------------------
+# entry point
+# --------------------------------------------------------------------------------------------
+
+
+def solve(spec, data_path, result_path=None, precision=None, lib=None, incremental=False):
+    """Read ``data_path``, optimise (in one batch, or keyframe by keyframe following the
+    compiled incremental plan), write the JSON result to ``result_path`` (if given) and return
+    it as a dict (values: each variable's storage, in the problem's variable order)."""
+    opts = dict(spec["solver"])
+    precision = precision or opts["precision"]
+    if incremental and spec["incremental"] is None:
+        raise ValueError("this problem was compiled without an incremental plan")
+    t0 = time.perf_counter()
+    data = lib.runtime.read_data(data_path)
+    problem = Problem(spec, data, precision, lib)
+    t1 = time.perf_counter()
+    x, status, reason, it, mu, log, updates = _optimize_all(problem, opts, incremental)
+    t2 = time.perf_counter()
+    diagnosis = None  # rank and condition at the solution (batch solves)
+    if not incremental and opts["diagnose"] and reason not in ("singular", "non_finite"):
+        diagnosis = _diagnose(problem, data, x, opts)
+    singular = _singular(problem, reason, diagnosis, lib)
+    if singular is not None and diagnosis is not None and (
+            opts["method"] == "gn" or opts["singular_lm_fails"]):
+        status, reason = "failed", "singular"
+    offsets = _offsets(spec["variable_storage"])
+    result = {
+        "format": RESULT_FORMAT, "status": status, "reason": reason,
+        "converged": status == "converged", "iterations": it,
+        "initial_error": _number(log[0]), "final_error": _number(log[-1]), "cost_log": log,
+        "lambda": float(mu), "precision": precision, "method": opts["method"],
+        "linear": opts["linear"], "setup_seconds": t1 - t0, "solve_seconds": t2 - t1,
+        "diagnose_seconds": time.perf_counter() - t2, "incremental": updates,
+        "singular": singular, "condition": (diagnosis or {}).get("condition"),
+        "values": [x[a:b].astype(float).tolist() for a, b in zip(offsets[:-1], offsets[1:])],
+    }
+    if result_path is not None:
+        with open(result_path, "w") as handle:
+            json.dump(result, handle, indent=1)
+            handle.write("\n")
+    return result
+
+
+def _optimize_all(problem, opts, incremental):
+    """(x, status, reason, iterations, μ, cost log, incremental updates or None)."""
+    if not incremental:
+        x, _, it, mu, status, reason, log = optimize(problem, opts)
+        return x, status, reason, it, mu, log, None
+    lib = problem.lib
+    x, status, reason, updates = lib.incremental.solve_incremental(problem, opts, optimize)
+    log = [float(problem.cost(problem.x0)), float(problem.cost(x))]
+    return x, status, reason, sum(u["iterations"] for u in updates), 0.0, log, updates
+
+
+def _diagnose(problem, data, x, opts):
+    """The diagnosis of :mod:`fgc_sim_diagnostics` at x, always in float64."""
+    check = problem
+    if problem.dtype != numpy.float64:
+        check = Problem(problem.spec, data, "float64", problem.lib)
+    return problem.lib.diagnostics.diagnose(check, x.astype(numpy.float64),
+                                            opts["condition_iterations"])
+
+
+def _singular(problem, reason, diagnosis, lib):
+    """Where the system is singular: from the failed elimination of a batch solve, or from the
+    diagnosis at the solution; None if it is not (or, incremental, cannot be placed)."""
+    if reason == "singular" and getattr(problem, "singular", None) is not None:
+        return lib.diagnostics.singular_info(problem.spec, problem.singular)
+    return None if diagnosis is None else diagnosis["singular"]
+
+
+def write_error(result_path, exc):
+    """Record a data error in the result file, so that a caller can name what is wrong."""
+    with open(result_path, "w") as handle:
+        json.dump({"format": RESULT_FORMAT, "status": "data_error", "message": str(exc),
+                   "line": exc.line, "factor": exc.factor, "variable": exc.variable}, handle)
+        handle.write("\n")
+
+
+def _number(value):
+    value = float(value)
+    return value if numpy.isfinite(value) else None
