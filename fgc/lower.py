@@ -3,10 +3,13 @@
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 from collections.abc import Sequence
+from pathlib import Path
 
+from fgc.cache import cached, entry
 from fgc.dsl import Graph, storage_dim
-from fgc.fuse import FactorBlock
+from fgc.fuse import BlockType, FactorBlock
 from fgc.program import (
     BlockSpec,
     FactorSpec,
@@ -45,6 +48,7 @@ def _block_spec(b: FactorBlock, graph: Graph) -> BlockSpec:
         members.append(MemberSpec(m.name, tuple(m.rows), m.noise_kind, len(m.noise_symbols),
                                   tuple((n, sizes[n]) for n in m.measurement_names)))
     ops = b.type.ops
+    ops_unshared, kernel, cost_kernel = _lowered_kernels(b.type)
     return BlockSpec(
         name=b.type.name,
         variable_types=tuple(v.type_name for v in b.type.variables),
@@ -52,10 +56,27 @@ def _block_spec(b: FactorBlock, graph: Graph) -> BlockSpec:
         members=tuple(members),
         residual_dim=b.type.residual_dim,
         structure=b.type.structure,
-        ops_unshared=b.type.kernel.op_counts_unshared(),
+        ops_unshared=ops_unshared,
         ops_before=dataclasses.asdict(ops.jacobian_before),
         ops_after=dataclasses.asdict(ops.jacobian_after),
         ops_cost=dataclasses.asdict(ops.cost_after),
-        kernel=KernelText.of(b.type.kernel),
-        cost_kernel=KernelText.of(b.type.cost_kernel),
+        kernel=kernel,
+        cost_kernel=cost_kernel,
     )
+
+
+_LOWERED: dict[str, tuple[dict, KernelText, KernelText]] = {}
+
+
+def _lowered_kernels(t: BlockType) -> tuple[dict, KernelText, KernelText]:
+    """A block type's op counts without sharing and its two kernels as text. Both walk every
+    expression (≈0.6 s of a warm LIO compile), so they are memoised and cached on disk beside
+    the fused kernels, keyed by the block type and the code that computes them."""
+    if t.key not in _LOWERED:
+        h = hashlib.sha256(t.key.encode())
+        here = Path(__file__).parent
+        for f in (here / "lower.py", here / "program.py", here / "kernel.py"):
+            h.update(f.read_bytes())
+        _LOWERED[t.key] = cached(entry("lower", t.name, h.hexdigest()), lambda: (
+            t.kernel.op_counts_unshared(), KernelText.of(t.kernel), KernelText.of(t.cost_kernel)))
+    return _LOWERED[t.key]
