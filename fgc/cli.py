@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import ast
 import importlib.util
+import inspect
 import json
 import os
 import re
@@ -70,6 +71,10 @@ def load_spec(path: str, params: dict) -> Graph:
     build = getattr(module, "build", None)
     if not callable(build):
         raise FgcError(f"{path}: a spec must define build(**params) returning an fgc.Graph")
+    unknown = _unknown_parameters(build, params)
+    if unknown:
+        raise FgcError(f"{path}: build() has no parameter {', '.join(map(repr, unknown))} "
+                       f"(it takes: {_parameter_list(build)})")
     try:
         graph = build(**params)
     except TypeError as exc:
@@ -77,6 +82,28 @@ def load_spec(path: str, params: dict) -> Graph:
     if not isinstance(graph, Graph):
         raise FgcError(f"{path}: build() returned {type(graph).__name__}, not an fgc.Graph")
     return graph
+
+
+def _unknown_parameters(build, params: dict) -> list[str]:
+    """Names in ``params`` that ``build`` cannot take (none if it accepts **kwargs)."""
+    try:
+        sig = inspect.signature(build)
+    except (TypeError, ValueError):
+        return []
+    kinds = {p.kind for p in sig.parameters.values()}
+    if inspect.Parameter.VAR_KEYWORD in kinds:
+        return []
+    names = {n for n, p in sig.parameters.items()
+             if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)}
+    return sorted(k for k in params if k not in names)
+
+
+def _parameter_list(build) -> str:
+    """``build``'s parameters with their defaults, as -p would set them."""
+    parts = [f"{n}={p.default!r}" if p.default is not p.empty else n
+             for n, p in inspect.signature(build).parameters.items()
+             if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)]
+    return ", ".join(parts) or "no parameters"
 
 
 def _load_pose_graph_file(p: Path, params: dict) -> Graph:

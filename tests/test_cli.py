@@ -64,6 +64,7 @@ def test_compile_emits_a_simulator_project(tmp_path):
 @pytest.mark.parametrize("argv, needle", [
     (["verify", "no/such/spec.py"], "no such file"),
     (["verify", str(EXAMPLES / "pose_graph.py"), "-p", "bogus=1"], "bogus"),
+    (["verify", str(EXAMPLES / "lio.py"), "-p", "M=3"], "it takes: N=30,"),
     (["verify", str(EXAMPLES / "pose_graph.py"), "-p", "novalue"], "KEY=VALUE"),
     (["verify", str(EXAMPLES / "pose_graph.py"), "-p", "dataset=missing.g2o"], "missing.g2o"),
     (["simulate", "no/such/spec.py"], "no such file"),
