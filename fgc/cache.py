@@ -6,14 +6,27 @@ parallel compiles never read half a file; an unreadable entry is rebuilt, never 
 
 from __future__ import annotations
 
+import hashlib
 import os
 import pickle
 import re
 from collections.abc import Callable
+from functools import cache
 from pathlib import Path
 from typing import TypeVar
 
 T = TypeVar("T")
+
+
+@cache
+def source_digest(*names: str) -> bytes:
+    """SHA-256 of the fgc source files ``names`` (paths inside the fgc package), read once per
+    process: a cache key that includes it changes with the code that built the entry."""
+    root = Path(__file__).parent
+    h = hashlib.sha256()
+    for name in names:
+        h.update((root / name).read_bytes())
+    return h.digest()
 
 
 def cache_dir() -> Path:

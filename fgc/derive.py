@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
-from fgc.cache import entry, load, store
+from fgc.cache import entry, load, source_digest, store
 from fgc.dsl import FactorType, MatrixType, storage_dim
 from fgc.errors import DerivationError
 from fgc.geometry import LieGroup, special
@@ -295,10 +295,7 @@ def random_measurement(t, rng: np.random.Generator) -> np.ndarray:
 def _code_version() -> str:
     """Hash of the code that shapes a derivation, so an fgc change invalidates the cache."""
     here = Path(__file__).parent
-    h = hashlib.sha256()
-    files = [here / "derive.py", here / "dsl.py", here / "kernel.py",
-             *sorted((here / "geometry").glob("*.py"))]
-    for f in files:
-        h.update(f.read_bytes())
+    geometry = sorted(f"geometry/{f.name}" for f in (here / "geometry").glob("*.py"))
+    h = hashlib.sha256(source_digest("derive.py", "dsl.py", "kernel.py", *geometry))
     h.update(sp.__version__.encode())
     return h.hexdigest()[:16]

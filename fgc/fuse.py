@@ -42,11 +42,10 @@ import hashlib
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from pathlib import Path
 
 import numpy as np
 
-from fgc.cache import cached, entry
+from fgc.cache import cached, entry, source_digest
 from fgc.derive import Block, SymbolicFactor, derive
 from fgc.dsl import Factor, FactorType, Graph
 from fgc.errors import DslError
@@ -266,7 +265,5 @@ def _block_key(members: list[Member], variables: tuple[Block, ...]) -> str:
     for m in members:
         h.update(f"{m.fingerprint}|{m.positions}|{m.noise_kind};".encode())
     h.update(",".join(b.type_name for b in variables).encode())
-    here = Path(__file__).parent
-    for f in (here / "fuse.py", here / "fuse_kernels.py", here / "kernel.py"):
-        h.update(f.read_bytes())
+    h.update(source_digest("fuse.py", "fuse_kernels.py", "kernel.py"))
     return h.hexdigest()

@@ -5,9 +5,8 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 from collections.abc import Sequence
-from pathlib import Path
 
-from fgc.cache import cached, entry
+from fgc.cache import cached, entry, source_digest
 from fgc.dsl import Graph, storage_dim
 from fgc.fuse import BlockType, FactorBlock
 from fgc.program import (
@@ -74,9 +73,7 @@ def _lowered_kernels(t: BlockType) -> tuple[dict, KernelText, KernelText]:
     the fused kernels, keyed by the block type and the code that computes them."""
     if t.key not in _LOWERED:
         h = hashlib.sha256(t.key.encode())
-        here = Path(__file__).parent
-        for f in (here / "lower.py", here / "program.py", here / "kernel.py"):
-            h.update(f.read_bytes())
+        h.update(source_digest("lower.py", "program.py", "kernel.py"))
         _LOWERED[t.key] = cached(entry("lower", t.name, h.hexdigest()), lambda: (
             t.kernel.op_counts_unshared(), KernelText.of(t.kernel), KernelText.of(t.cost_kernel)))
     return _LOWERED[t.key]
