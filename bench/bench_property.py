@@ -7,7 +7,8 @@ in the same process, and prints the verdicts (match / mismatch / excluded / fail
 ``strategies.Outcome``), every case that is not a match, and the time fgc and GTSAM took in
 total. ``--native N`` also runs N random data sets through the native HLS library.
 
-``float32`` solves each example in float64 and float32 with QR and Cholesky and prints the
+``float32`` solves each example in float64 and float32 with QR and Cholesky (and Cholesky with a
+float64 linear solver, the mixed design) and prints the
 largest rotation and translation difference, the diagnosed condition number κ (rows and
 columns equilibrated), the float32 limit for the solver and whether fgc warned.
 
@@ -130,29 +131,37 @@ EXAMPLES = (("pose3example", lambda: pose_graph.build("pose3example.txt")),
             ("lio N=100", lambda: lio.build(N=100)))
 
 
-def float32_row(name: str, graph, linear: str) -> str:
+def float32_row(name: str, graph, linear: str, wide: bool = False) -> str:
+    """One row; ``wide``: the mixed design (float32 with a float64 linear solver)."""
     program = compile_graph(graph, SolverConfig(linear=linear))
     data = problem_data(graph, program)
     f64 = sim.run(program, data)
+    run32 = program
+    if wide:
+        run32 = compile_graph(graph, SolverConfig(linear=linear, precision="float32",
+                                                  linear_precision="float64"))
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        f32 = sim.run(program, data, precision="float32")
+        f32 = sim.run(run32, data, precision="float32")
     keys = {str(k): k for k in graph.variables}
     errors = state_errors(graph, {keys[k]: v for k, v in f32.values.items()},
                           {keys[k]: v for k, v in f64.values.items()})
-    return (f"{name:16s} {linear:8s} {errors['max_rotation_error']:10.1e} "
+    label = linear + ("+f64" if wide else "")
+    limit = float32_kappa_limit(linear, "float64" if wide else "float32")
+    return (f"{name:16s} {label:12s} {errors['max_rotation_error']:10.1e} "
             f"{errors['max_translation_error']:10.1e} {f64.condition:10.3g} "
-            f"{float32_kappa_limit(linear):8.2g} {'yes' if caught else 'no':>6s}  {f32.status}")
+            f"{limit:8.2g} {'yes' if caught else 'no':>6s}  {f32.status}")
 
 
 def cmd_float32(_args) -> int:
-    print("float32 against float64 (max over variables; translation part also for vectors)")
-    print(f"{'example':16s} {'linear':8s} {'rot (rad)':>10s} {'trans (m)':>10s} "
+    print("float32 against float64 (max over variables; translation part also for vectors);")
+    print("cholesky+f64: the mixed design, float32 with a float64 linear solver")
+    print(f"{'example':16s} {'linear':12s} {'rot (rad)':>10s} {'trans (m)':>10s} "
           f"{'kappa':>10s} {'limit':>8s} {'warned':>6s}  float32 status")
     for name, build in EXAMPLES:
         graph = build()
-        for linear in ("qr", "cholesky"):
-            print(float32_row(name, graph, linear))
+        for linear, wide in (("qr", False), ("cholesky", False), ("cholesky", True)):
+            print(float32_row(name, graph, linear, wide), flush=True)
     return 0
 
 

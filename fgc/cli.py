@@ -131,8 +131,9 @@ def solver_config(args, precision_default: str):
     from fgc.program import SolverConfig
 
     return SolverConfig(method=args.solver, linear=args.linear, ordering=args.ordering,
-                        precision=args.precision or precision_default, units=args.units,
-                        cpe=args.cpe, max_iterations=args.max_iterations)
+                        precision=args.precision or precision_default,
+                        linear_precision=getattr(args, "linear_precision", None),
+                        units=args.units, cpe=args.cpe, max_iterations=args.max_iterations)
 
 
 def _compile(args, precision_default: str):
@@ -357,6 +358,9 @@ def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
     s.add_argument("--linear", choices=("qr", "cholesky"), default="qr", help="linear solver")
     s.add_argument("--precision", choices=("float32", "float64"),
                    help="arithmetic of the accelerator (default: float32; verify: float64)")
+    s.add_argument("--linear-precision", choices=("float32", "float64"),
+                   help="widen the linear solver alone (default: --precision); float32 with a "
+                        "float64 solver suits ill-conditioned Cholesky problems")
     s.add_argument("--units", type=_positive_int, default=4, metavar="N",
                    help="n_u Update units per QR block")
     s.add_argument("--cpe", type=_positive_int, default=20, metavar="N",

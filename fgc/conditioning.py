@@ -49,27 +49,35 @@ class RankDeficientWarning(FgcWarning):
     """The factors leave a variable undetermined; the returned value is one of many minimisers."""
 
 
-def float32_kappa_limit(linear: str) -> float:
+def float32_kappa_limit(linear: str, linear_precision: str = "float32") -> float:
     """The κ above which a float32 solve with ``linear`` ("qr" or "cholesky") has no correct
-    digit in its worst-determined direction."""
-    try:
-        return FLOAT32_KAPPA_LIMIT[linear]
-    except KeyError:
-        raise ValueError(f"unknown linear solver {linear!r}") from None
+    digit in its worst-determined direction. With a float64 linear solver (``linear_precision``,
+    the mixed design) only the float32 linearisation limits it, as QR: κ·eps32 < 1."""
+    if linear not in FLOAT32_KAPPA_LIMIT:
+        raise ValueError(f"unknown linear solver {linear!r}")
+    if linear_precision == "float64":
+        return FLOAT32_KAPPA_LIMIT["qr"]
+    return FLOAT32_KAPPA_LIMIT[linear]
 
 
-def float32_ok(kappa: float | None, linear: str) -> bool | None:
+def float32_ok(kappa: float | None, linear: str, linear_precision: str = "float32"
+               ) -> bool | None:
     """Whether κ is below the float32 limit of ``linear`` (None when κ is unknown)."""
     if kappa is None:
         return None
-    return kappa <= float32_kappa_limit(linear)
+    return kappa <= float32_kappa_limit(linear, linear_precision)
 
 
-def ill_conditioned_message(kappa: float, linear: str) -> str:
+def ill_conditioned_message(kappa: float, linear: str, linear_precision: str = "float32") -> str:
     """The text of an :class:`IllConditionedWarning`."""
-    limit = float32_kappa_limit(linear)
-    hint = " (QR tolerates up to 8.4e6)" if linear == "cholesky" else ""
-    return (f"the problem is too ill-conditioned for float32 {linear}: condition number "
+    limit = float32_kappa_limit(linear, linear_precision)
+    mixed = linear_precision == "float64"
+    hint = ""
+    if linear == "cholesky" and not mixed:
+        hint = (f" (QR tolerates up to {FLOAT32_KAPPA_LIMIT['qr']:.2g}, and so does Cholesky "
+                "with a float64 linear solver: --linear-precision float64)")
+    what = f"float32 {linear}" + (" with a float64 linear solver" if mixed else "")
+    return (f"the problem is too ill-conditioned for {what}: condition number "
             f"κ ≈ {kappa:.2g} (rows and columns equilibrated) exceeds {limit:.2g}{hint}; "
             "solve in float64 or rescale the problem")
 
@@ -85,12 +93,15 @@ def warn(message: str, category: type[FgcWarning]) -> None:
 _OWN_MODULES = ("fgc.", "fgc_backends.")
 
 
-def warn_if_ill_conditioned(kappa: float | None, linear: str, precision: str) -> str | None:
+def warn_if_ill_conditioned(kappa: float | None, linear: str, precision: str,
+                            linear_precision: str | None = None) -> str | None:
     """Warn (:class:`IllConditionedWarning`) when a ``precision`` = "float32" solve with
-    ``linear`` has κ above its limit; returns the message, or None when there is no warning."""
-    if precision != "float32" or float32_ok(kappa, linear) is not False:
+    ``linear`` (its solver in ``linear_precision``, default the same) has κ above its limit;
+    returns the message, or None when there is no warning."""
+    les = linear_precision or precision
+    if precision != "float32" or float32_ok(kappa, linear, les) is not False:
         return None
-    message = ill_conditioned_message(kappa, linear)
+    message = ill_conditioned_message(kappa, linear, les)
     warn(message, IllConditionedWarning)
     return message
 

@@ -32,12 +32,20 @@ class ProgramError(FgcError):
 @dataclass(frozen=True)
 class SolverConfig:
     """How the accelerator solves: GN/LM with paper B's stopping rules, QR or Cholesky, precision,
-    unit counts (n_u Update units per partial-QR block, #CPE Cholesky process elements), clock."""
+    unit counts (n_u Update units per partial-QR block, #CPE Cholesky process elements), clock.
+
+    ``precision`` is the working precision of the whole accelerator; ``linear_precision`` (None:
+    the same) widens the linear-equation solver alone (Hessian/gradient accumulation,
+    elimination, back-substitution): float32 factor blocks, cost and state update with a
+    float64 solver is the mixed design that ill-conditioned Cholesky problems need (the normal
+    equations square the condition number).
+    """
 
     method: str = "lm"
     linear: str = "qr"
     ordering: str = "auto"
     precision: str = "float64"
+    linear_precision: str | None = None
     units: int = 4
     cpe: int = 20
     clock_mhz: float = 143.0
@@ -58,12 +66,30 @@ class SolverConfig:
             if getattr(self, name) not in allowed:
                 raise ProgramError(f"solver option {name}={getattr(self, name)!r}: expected one "
                                    f"of {', '.join(allowed)}")
+        if self.linear_precision is not None:
+            if self.linear_precision not in PRECISIONS:
+                raise ProgramError(f"solver option linear_precision={self.linear_precision!r}: "
+                                   f"expected one of {', '.join(PRECISIONS)}")
+            if PRECISIONS.index(self.linear_precision) < PRECISIONS.index(self.precision):
+                raise ProgramError(f"solver option linear_precision={self.linear_precision} is "
+                                   f"narrower than precision={self.precision}: the linear solver "
+                                   "can only be widened")
         for name in ("units", "cpe", "max_iterations"):
             if int(getattr(self, name)) < 1:
                 raise ProgramError(f"solver option {name} must be ≥ 1, got {getattr(self, name)}")
         for name in ("clock_mhz", "lambda_initial", "lambda_factor", "eps_gradient", "eps_step"):
             if not getattr(self, name) > 0:
                 raise ProgramError(f"solver option {name} must be > 0, got {getattr(self, name)}")
+
+    @property
+    def les_precision(self) -> str:
+        """The linear-equation solver's precision: ``linear_precision`` or else ``precision``."""
+        return self.linear_precision or self.precision
+
+    @property
+    def mixed(self) -> bool:
+        """Whether the linear solver is wider than the rest of the accelerator."""
+        return self.les_precision != self.precision
 
 
 # --------------------------------------------------------------------------------------------

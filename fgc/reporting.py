@@ -84,8 +84,9 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
         passed = (errors["max_rotation_error"] <= ROT_TOL_F32
                   and errors["max_translation_error"] <= POS_TOL_F32)
     report = {"variables": len(graph.variables), "factors": len(graph.factors),
-              "precision": precision, "linear": program.solver.linear,
-              "ordering": program.schedule.ordering, "status": result.status,
+              "precision": precision, "linear_precision": program.solver.les_precision,
+              "linear": program.solver.linear, "ordering": program.schedule.ordering,
+              "status": result.status,
               "linearization_error": linearization_error(graph), **errors,
               "fgc_final_error": fgc_err, "gtsam_final_error": gtsam_err,
               "relative_final_error_difference": rel, "iterations": result.iterations,
@@ -95,12 +96,18 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
     return report
 
 
+def _precision_text(r: dict) -> str:
+    """"float32", or "float32 (float64 linear solver)" for the mixed design."""
+    les = r.get("linear_precision", r["precision"])
+    return r["precision"] + (f" ({les} linear solver)" if les != r["precision"] else "")
+
+
 def _verify_summary(r: dict) -> list[str]:
     tol = (f"tolerance {STATE_TOL_F64:g}" if r["precision"] == "float64"
            else f"float32 bounds {ROT_TOL_F32:g} rad / {POS_TOL_F32:g} m")
     return [
         f"fgc verify: {r['variables']} variables, {r['factors']} factors, simulator "
-        f"{r['precision']} {r['linear']} {r['ordering']} vs GTSAM LM (QR)",
+        f"{_precision_text(r)} {r['linear']} {r['ordering']} vs GTSAM LM (QR)",
         f"  linearisation vs GTSAM (max rel. diff)  {r['linearization_error']:.2e}",
         f"  final error: fgc {r['fgc_final_error']:.10g}  GTSAM {r['gtsam_final_error']:.10g}",
         f"  max state difference: tangent {r['max_state_error']:.2e}, rotation "
@@ -120,7 +127,8 @@ def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = Non
     report = {
         "status": result.status, "reason": result.reason, "iterations": result.iterations,
         "initial_error": result.initial_error, "final_error": result.final_error,
-        "precision": program.solver.precision, "cycles": cost.cycles,
+        "precision": program.solver.precision,
+        "linear_precision": program.solver.les_precision, "cycles": cost.cycles,
         "clock_mhz": cost.clock_mhz, "latency_ms": cost.latency_ms,
         "cycles_by_unit": dataclasses.asdict(cost.solve),
         "resources": dataclasses.asdict(cost.resources), "energy_mj": cost.energy_mj,
@@ -152,7 +160,7 @@ def _plots(out: Path, graph: Graph, result, report: dict) -> list[str]:
 def _simulate_summary(r: dict, n_vars: int) -> list[str]:
     res = r["resources"]
     return [
-        f"fgc simulate: {n_vars} variables, {r['precision']}: {r['status']} after "
+        f"fgc simulate: {n_vars} variables, {_precision_text(r)}: {r['status']} after "
         f"{r['iterations']} iterations, error {r['initial_error']:.6g} → {r['final_error']:.10g}",
         f"  accelerator: {r['cycles']:,} cycles = {r['latency_ms']:.3f} ms at "
         f"{r['clock_mhz']:g} MHz, energy {r['energy_mj']:.3f} mJ ({r['power_w']:.2f} W)",

@@ -94,3 +94,15 @@ def test_window_beyond_maximum():
 def test_bad_solver_option_is_named():
     with pytest.raises(ProgramError, match="linear"):
         compile_graph(_chain(3), SolverConfig(linear="lu"))
+
+
+def test_linear_precision_can_only_widen():
+    with pytest.raises(ProgramError, match="linear_precision='float16'"):
+        compile_graph(_chain(3), SolverConfig(linear_precision="float16"))
+    with pytest.raises(ProgramError, match="narrower than precision=float64"):
+        compile_graph(_chain(3), SolverConfig(precision="float64", linear_precision="float32"))
+    mixed = compile_graph(_chain(3), SolverConfig(precision="float32", linear_precision="float64"))
+    assert mixed.solver.mixed and mixed.solver.les_precision == "float64"
+    assert Program.from_json(mixed.to_json()).solver == mixed.solver
+    same = SolverConfig(precision="float32", linear_precision="float32")
+    assert not same.mixed and not SolverConfig().mixed

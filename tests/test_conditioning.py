@@ -55,6 +55,9 @@ def test_limits_follow_from_float32_epsilon():
     assert float32_ok(None, "qr") is None and float32_ok(1e3, "cholesky")
     with pytest.raises(ValueError, match="unknown linear solver"):
         float32_kappa_limit("lu")
+    # a float64 linear solver leaves only the float32 linearisation: QR's limit for both
+    assert float32_kappa_limit("cholesky", "float64") == float32_kappa_limit("qr")
+    assert float32_ok(4e4, "cholesky", "float64") and not float32_ok(4e4, "cholesky")
 
 
 def test_cholesky_warns_where_qr_does_not():
@@ -68,6 +71,14 @@ def test_cholesky_warns_where_qr_does_not():
         f64 = _run(graph, "float64", "cholesky")  # float64 runs never warn about float32
     assert qr.float32_ok and not qr.warnings
     assert f64.float32_ok is False and not f64.warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        program = compile_graph(graph, SolverConfig(linear="cholesky", precision="float32",
+                                                    linear_precision="float64"))
+        mixed = sim.run(program, problem_data(graph, program))
+    assert mixed.float32_ok and not mixed.warnings and mixed.precision == "float32"
+    point = mixed.values["point"]
+    assert np.allclose(np.asarray(point), [2.0, -1.0], atol=1e-3)
 
 
 def test_qr_warns_beyond_its_limit():

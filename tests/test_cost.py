@@ -113,6 +113,25 @@ def test_float64_costs_more_than_float32(imu50, lio_chains):
         assert f64.power_w > f32.power_w and f64.memory.word_bits == 64
 
 
+def test_mixed_design_prices_only_the_linear_solver_wider(imu50, lio_chains):
+    """float32 factor blocks with a float64 linear solver: the Hessian, linear and
+    back-substitution units and their memories cost what float64 ones do, the factor blocks,
+    state update and their memories what float32 ones do."""
+    for program in (imu50, lio_chains["two-ended"]):
+        f32 = estimate(program, 1)
+        mixed = estimate(with_solver(program, linear_precision="float64"), 1)
+        f64 = estimate(with_solver(program, precision="float64"), 1)
+        for field in ("dsp", "lut", "ff"):
+            assert (getattr(f32.resources, field) < getattr(mixed.resources, field)
+                    < getattr(f64.resources, field)), field
+        by32, bymix, by64 = (r.resources_by_unit for r in (f32, mixed, f64))
+        assert bymix.factor == by32.factor and bymix.state_update == by32.state_update
+        assert bymix.linear_solver == by64.linear_solver
+        assert bymix.back_substitution == by64.back_substitution
+        assert (mixed.memory.word_bits, mixed.memory.linear_bits) == (32, 64)
+        assert "float32 (float64 linear solver)" in mixed.summary()
+
+
 def test_rejected_steps_add_solves_but_not_relinearisation(imu50):
     base = estimate(imu50, 3)
     more = estimate(imu50, 3, rejected=2)

@@ -118,6 +118,14 @@ def test_window_above_the_backend_maximum_fails_at_emit(tmp_path, pose3_program)
     assert not list(tmp_path.iterdir())
 
 
+def test_mixed_precision_is_refused_at_emit(tmp_path, pose3_program):
+    solver = dataclasses.replace(pose3_program.solver, precision="float32",
+                                 linear_precision="float64")
+    with pytest.raises(HlsConfigError, match="one scalar type throughout"):
+        emit(dataclasses.replace(pose3_program, solver=solver), tmp_path)
+    assert not list(tmp_path.iterdir())
+
+
 def test_step_wider_than_the_backend_fails_at_emit(tmp_path, pose3_program):
     with pytest.raises(HlsConfigError, match="max_step_columns"):
         emit(pose3_program, tmp_path, HlsConfig(max_step_columns=6))

@@ -83,6 +83,11 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
 
 def check_limits(program: Program, config: HlsConfig) -> None:
     """Raise :class:`HlsConfigError` if ``program`` exceeds what ``config`` can build."""
+    if program.solver.mixed:
+        raise HlsConfigError(f"the Program's linear solver is {program.solver.les_precision} and "
+                             f"the rest {program.solver.precision}: the HLS backend builds one "
+                             "scalar type throughout (HlsConfig.scalar); compile without "
+                             "linear_precision, or simulate the mixed design with the simulator")
     if program.max_variables > config.max_variables:
         raise HlsConfigError(f"the Program's window of {program.max_variables} variables exceeds "
                              f"the HLS backend's maximum of {config.max_variables} "

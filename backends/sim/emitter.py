@@ -105,6 +105,7 @@ def _incremental(program: Program) -> list[tuple] | None:
 def _solver_options(program: Program, config: SimConfig) -> list[tuple[str, object]]:
     s = program.solver
     return [("method", s.method), ("linear", s.linear), ("precision", s.precision),
+            ("linear_precision", s.linear_precision),
             ("max_iterations", int(s.max_iterations)),
             ("lambda_initial", float(s.lambda_initial)),
             ("lambda_factor", float(s.lambda_factor)),

@@ -62,6 +62,7 @@ class SimResult:
     message: str = ""
     warnings: tuple[str, ...] = ()
     linear: str = "qr"
+    linear_precision: str | None = None  # the linear solver's precision (None: ``precision``)
 
     @property
     def converged(self) -> bool:
@@ -69,8 +70,11 @@ class SimResult:
 
     @property
     def float32_ok(self) -> bool | None:
-        """Whether κ is below the float32 limit of this run's linear solver (None: unknown)."""
-        return conditioning.float32_ok(self.condition, self.linear)
+        """Whether κ is below the float32 limit of this run's linear solver (None: unknown):
+        of a float32 solver unless the run widened its linear solver beyond its precision."""
+        mixed = self.linear_precision not in (None, self.precision)
+        return conditioning.float32_ok(self.condition, self.linear,
+                                       self.linear_precision if mixed else "float32")
 
 
 def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | None = None,
@@ -158,7 +162,7 @@ def _result(program: Program, raw: dict, files: tuple[Path, ...],
                      raw["precision"], raw["setup_seconds"], raw["solve_seconds"], files,
                      _updates(program, raw.get("incremental")),
                      singular, raw.get("condition"), " ".join(messages), tuple(warned),
-                     raw.get("linear", program.solver.linear))
+                     raw.get("linear", program.solver.linear), raw.get("linear_precision"))
 
 
 def _updates(program: Program, raw: list[dict] | None) -> tuple[dict, ...] | None:
@@ -198,7 +202,7 @@ def _explain_outcome(program: Program, raw: dict, config: SimConfig
             conditioning.warn(text, conditioning.RankDeficientWarning)
             warned.append(text)
     text = conditioning.warn_if_ill_conditioned(raw.get("condition"), raw["linear"],
-                                                raw["precision"])
+                                                raw["precision"], raw.get("linear_precision"))
     if text:
         messages.append(text)
         warned.append(text)

@@ -36,17 +36,18 @@ def estimate(program: Program, iterations: int | None = None, params: CostParams
     params = params or CostParams()
     solver = program.solver
     ops = params.operators(solver.precision)
+    les_ops = params.operators(solver.les_precision)  # the linear solver's (mixed: wider)
     k = solver.max_iterations if iterations is None else iterations
     if k < 0 or rejected < 0 or (rejected and solver.method != "lm"):
         raise ValueError(f"iterations={k}, rejected={rejected}: need k ≥ 0, rejected ≥ 0, "
                          "and rejected steps only with method='lm'")
     jacobian = block_timings(program, ops, params, "jacobian")
     cost = sum(b.cycles for b in block_timings(program, ops, params, "cost"))
-    linear = (cholesky_timing(program, ops, params) if solver.linear == "cholesky"
-              else qr_timing(program, ops, params))
-    iteration, rejected_step = _cycles(program, ops, params, jacobian, cost, linear)
+    linear = (cholesky_timing(program, les_ops, params) if solver.linear == "cholesky"
+              else qr_timing(program, les_ops, params))
+    iteration, rejected_step = _cycles(program, ops, les_ops, params, jacobian, cost, linear)
     qr_sets = linear.sets if isinstance(linear, QrTiming) else 0
-    by_unit = unit_resources(program, ops, params, qr_sets)
+    by_unit = unit_resources(program, ops, params, qr_sets, les_ops)
     total = by_unit.total
     return CostReport(
         program=program.name, method=solver.method, linear=solver.linear,
@@ -55,19 +56,21 @@ def estimate(program: Program, iterations: int | None = None, params: CostParams
         rejected_step=rejected_step, solve=iteration.scaled(k) + rejected_step.scaled(rejected),
         factor_blocks=jacobian, linear_detail=linear, resources_by_unit=by_unit,
         resources=total, utilization=utilization(total, params),
-        memory=memory_words(program), power_w=power_w(total, solver.clock_mhz, params))
+        memory=memory_words(program), power_w=power_w(total, solver.clock_mhz, params),
+        linear_precision=solver.les_precision)
 
 
-def _cycles(program: Program, ops: OperatorTable, params: CostParams,
+def _cycles(program: Program, ops: OperatorTable, les_ops: OperatorTable, params: CostParams,
             jacobian: tuple[BlockTiming, ...], cost: int,
             linear: QrTiming | CholeskyTiming) -> tuple[UnitCycles, UnitCycles]:
-    """(one accepted iteration, one rejected step) by unit."""
+    """(one accepted iteration, one rejected step) by unit; ``les_ops``: the linear solver's
+    operators (the HGC's included)."""
     factor = sum(b.cycles for b in jacobian)
     hessian = 0
     if isinstance(linear, CholeskyTiming):
         # The HGC eats the factor block's stream: only what outlasts it adds, and at least
         # its own pipeline tail.
-        tail = ops.mul.latency + 2 * ops.add.latency
+        tail = les_ops.mul.latency + 2 * les_ops.add.latency
         hessian = max(linear.hgc_stream - factor, tail)
     update = retract_cycles(program, ops, params)
     decision = ops.path_latency(params.lm_decision_path) if program.solver.method == "lm" \

@@ -117,6 +117,8 @@ class MemoryWords:
     allocated); ``factor`` is R and its right-hand side (QR) or L's fill beyond H (Cholesky, L
     overwrites H in place); ``state`` the current and trial values; ``vectors`` δ and the
     triangular solve's intermediate; ``measurements`` the factors' run-time data.
+    ``linear_bits`` is the word of the linear solver's memories (the system, the factor and
+    the vectors; wider than ``word_bits`` in the mixed design, 0: the same).
     """
 
     word_bits: int
@@ -126,6 +128,11 @@ class MemoryWords:
     state: int
     vectors: int
     measurements: int
+    linear_bits: int = 0
+
+    def __post_init__(self):
+        if not self.linear_bits:
+            object.__setattr__(self, "linear_bits", self.word_bits)
 
     @property
     def total(self) -> int:
@@ -157,6 +164,7 @@ class CostReport:
     utilization: Utilization  # fractions of the device
     memory: MemoryWords
     power_w: float
+    linear_precision: str = ""  # the linear solver's precision ("": ``precision``)
 
     @property
     def cycles(self) -> int:
@@ -204,7 +212,9 @@ class CostReport:
         parts = ", ".join(f"{f.name} {getattr(s, f.name) / s.total:.1%}"
                           for f in fields(s) if getattr(s, f.name))
         r = self.resources
-        return (f"{self.program}: {self.method}/{self.linear} {self.precision}, "
+        les = (f" ({self.linear_precision} linear solver)"
+               if self.linear_precision and self.linear_precision != self.precision else "")
+        return (f"{self.program}: {self.method}/{self.linear} {self.precision}{les}, "
                 f"{self.iterations} it + {self.rejected} rejected: {self.latency_ms:.3f} ms "
                 f"({self.cycles} cycles @ {self.clock_mhz:g} MHz)\n"
                 f"  split: {parts}\n"

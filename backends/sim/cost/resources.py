@@ -40,8 +40,9 @@ def memory_words(program: Program) -> MemoryWords:
         sum(size for _, size in m.measurements) + m.noise_params
         for f in program.factors for m in program.blocks[f.block].members)
     bits = 32 if program.solver.precision == "float32" else 64
+    les_bits = 32 if program.solver.les_precision == "float32" else 64
     return MemoryWords(bits, system, program.storage.dense_words, factor, state, 2 * n,
-                       measurements)
+                       measurements, les_bits)
 
 
 def bram_of(words: int, bits: int, banks: int, params: CostParams) -> float:
@@ -55,29 +56,33 @@ def bram_of(words: int, bits: int, banks: int, params: CostParams) -> float:
 
 def memory_resources(memory: MemoryWords, program: Program, params: CostParams) -> Resources:
     """BRAM of all memories; the A/b store (QR) is banked for the factor block's ports."""
-    bits = memory.word_bits
+    bits, les_bits = memory.word_bits, memory.linear_bits
     banks = params.factor_store_ports if program.solver.linear == "qr" else 1
-    bram = bram_of(memory.linear_system, bits, banks, params)
-    for words in (memory.factor, memory.state, memory.vectors, memory.measurements):
-        bram += bram_of(words, bits, 1, params)
+    bram = bram_of(memory.linear_system, les_bits, banks, params)
+    for words, width in ((memory.factor, les_bits), (memory.state, bits),
+                         (memory.vectors, les_bits), (memory.measurements, bits)):
+        bram += bram_of(words, width, 1, params)
     return Resources(bram=bram)
 
 
 def unit_resources(program: Program, ops: OperatorTable, params: CostParams,
-                   qr_sets: int) -> UnitResources:
-    """Resources of every unit of the accelerator ``program`` describes."""
-    mac = operator_resources(OperatorCounts(add=1, mul=1), ops)
+                   qr_sets: int, les_ops: OperatorTable | None = None) -> UnitResources:
+    """Resources of every unit of the accelerator ``program`` describes; the Hessian, linear
+    and back-substitution units use ``les_ops`` (the linear solver's precision; default
+    ``ops``)."""
+    les_ops = les_ops or ops
+    mac = operator_resources(OperatorCounts(add=1, mul=1), les_ops)
     mux = int(params.share_lut_per_bit * ops.word_bits * factor_pool_ops(program))
     factor = operator_resources(used_pool(program, params.factor_pool), ops) + Resources(lut=mux)
     if program.solver.linear == "cholesky":
-        cpe = operator_resources(params.cpe_ops, ops) + Resources(
+        cpe = operator_resources(params.cpe_ops, les_ops) + Resources(
             dsp=params.cpe_extra_dsp, bram=params.cpe_bram)
         hessian = mac.scaled(params.hgc_lanes)
         linear = cpe.scaled(program.solver.cpe)
         back = mac.scaled(params.solve_lanes)
     else:
         hessian = Resources()
-        qr_set = operator_resources(params.evaluate_ops, ops) + mac.scaled(
+        qr_set = operator_resources(params.evaluate_ops, les_ops) + mac.scaled(
             program.solver.units * params.update_lanes)
         linear = qr_set.scaled(qr_sets)
         back = mac.scaled(params.backsub_lanes * qr_sets)

@@ -35,6 +35,7 @@ class Problem:
 
     def __init__(self, spec, data, dtype, lib):
         self.spec, self.lib, self.dtype = spec, lib, numpy.dtype(dtype)
+        self.les_dtype = les_dtype(self.dtype, spec["solver"]["linear_precision"])
         self.singular = None  # the last SingularError of an elimination
         variables, factors = data
         dims, storage = spec["variable_dims"], spec["variable_storage"]
@@ -87,12 +88,14 @@ class Problem:
         return abs_, g.astype(self.dtype), noise
 
     def solve(self, abs_, mu):
-        """δ solving (H + μI) δ = g along the schedule."""
+        """δ solving (H + μI) δ = g along the schedule, in the linear solver's precision (the
+        factor rows widened to it, δ rounded back to the working precision)."""
         lin = self.lib.linear
-        factors = numpy.concatenate([ab.reshape(-1) for ab in abs_])
+        factors = numpy.concatenate([ab.reshape(-1) for ab in abs_]).astype(self.les_dtype)
         conds = lin.eliminate(self.plan, factors, mu, self.spec["solver"]["linear"])
-        return lin.back_substitute(self.plan, self.spec["back_substitution"], conds, self.n,
-                                   self.dtype)
+        delta = lin.back_substitute(self.plan, self.spec["back_substitution"], conds, self.n,
+                                    self.les_dtype)
+        return delta.astype(self.dtype)
 
     def retract(self, x, delta):
         """x ⊕ δ: every variable retracted with its type's Expmap."""
@@ -101,6 +104,14 @@ class Problem:
             for fn, sidx, tidx in self.groups:
                 out[sidx] = fn(x[sidx], delta[tidx])
         return out
+
+
+def les_dtype(dtype, linear_precision):
+    """The linear solver's dtype: ``linear_precision`` when it is wider than the working
+    ``dtype``, else ``dtype`` (a run in float64 never solves narrower)."""
+    if linear_precision is None:
+        return numpy.dtype(dtype)
+    return numpy.promote_types(dtype, numpy.dtype(linear_precision))
 
 
 def cost_noise(problem, x, parts):
@@ -255,7 +266,8 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
         "format": RESULT_FORMAT, "status": status, "reason": reason,
         "converged": status == "converged", "iterations": it,
         "initial_error": _number(log[0]), "final_error": _number(log[-1]), "cost_log": log,
-        "lambda": float(mu), "precision": precision, "method": opts["method"],
+        "lambda": float(mu), "precision": precision,
+        "linear_precision": problem.les_dtype.name, "method": opts["method"],
         "linear": opts["linear"], "setup_seconds": t1 - t0, "solve_seconds": t2 - t1,
         "diagnose_seconds": time.perf_counter() - t2, "incremental": updates,
         "singular": singular, "condition": (diagnosis or {}).get("condition"),

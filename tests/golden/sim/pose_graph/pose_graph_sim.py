@@ -1042,6 +1042,7 @@ PROBLEM = {
         "method": 'lm',
         "linear": 'qr',
         "precision": 'float32',
+        "linear_precision": None,
         "max_iterations": 100,
         "lambda_initial": 1e-05,
         "lambda_factor": 10.0,
