@@ -77,8 +77,12 @@ def load_spec(path: str, params: dict) -> Graph:
                        f"(it takes: {_parameter_list(build)})")
     try:
         graph = build(**params)
+    except FgcError:
+        raise
     except TypeError as exc:
         raise FgcError(f"{path}: build() rejected the parameters {sorted(params)}: {exc}") from exc
+    except Exception as exc:  # the user's code: one line naming the spec, not a traceback
+        raise FgcError(f"{path}: build() failed: {type(exc).__name__}: {exc}") from exc
     if not isinstance(graph, Graph):
         raise FgcError(f"{path}: build() returned {type(graph).__name__}, not an fgc.Graph")
     return graph
@@ -426,6 +430,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    args = None
     try:
         args = build_parser().parse_args(argv)
         return args.func(args)
@@ -433,7 +438,9 @@ def main(argv: list[str] | None = None) -> int:
         print(str(exc), file=sys.stderr)
         return EXIT_BAD_INPUT
     except FgcError as exc:
-        print(f"fgc: error: {exc}", file=sys.stderr)
+        spec, text = getattr(args, "spec", None), str(exc)
+        where = f"{spec}: " if spec and spec not in text else ""  # which spec, if not said
+        print(f"fgc: error: {where}{text}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except BrokenPipeError:  # output piped into e.g. `head`: stop quietly, like other tools
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush

@@ -96,6 +96,57 @@ def test_cli_reports_a_malformed_pose_graph_in_one_line(tmp_path, capsys):
 
 
 # --------------------------------------------------------------------------------------------
+# spec files
+# --------------------------------------------------------------------------------------------
+
+GOOD_BUILD = """
+import fgc
+from fgc.factors import PriorFactor
+def build(n=2):
+    g = fgc.Graph()
+    for i in range(n):
+        g.add_variable(f"x{i}", fgc.Pose2(i, 0.0, 0.0))
+        g.add(PriorFactor(f"x{i}", fgc.Pose2(i, 0.0, 0.0), fgc.noise.isotropic(3, 0.1)))
+    return g
+"""
+
+
+@pytest.mark.parametrize("source, params, needle", [
+    ("def build(:\n", [], "the spec failed to load: SyntaxError"),
+    ("import no_such_module_zqx\n", [], "failed to load: ModuleNotFoundError"),
+    ("raise RuntimeError('boom')\n", [], "failed to load: RuntimeError: boom"),
+    ("x = 1\n", [], "must define build(**params)"),
+    ("build = 3\n", [], "must define build(**params)"),
+    ("def build():\n    return None\n", [], "returned NoneType, not an fgc.Graph"),
+    ("def build():\n    return 1 / 0\n", [], "build() failed: ZeroDivisionError"),
+    ("def build(**kw):\n    raise ValueError(kw)\n", ["-p", "n=-3"], "ValueError: {'n': -3}"),
+    (GOOD_BUILD, ["-p", "n=-1"], "the graph has no factors"),
+    (GOOD_BUILD, ["-p", "n=2.5"], "'float' object cannot be interpreted as an integer"),
+    (GOOD_BUILD, ["-p", "m=2"], "it takes: n=2"),
+])
+def test_broken_spec_files_are_one_line_errors(tmp_path, capsys, source, params, needle):
+    spec = tmp_path / "spec.py"
+    spec.write_text(source)
+    assert cli_main(["simulate", str(spec), *params]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and str(spec) in err, err
+    assert needle in err, err
+
+
+def test_hostile_spec_file_name_is_sanitised_in_the_hls_project(tmp_path, capsys):
+    name = 'ZQX"; rm -rf $HOME; `x`\n'.replace("\n", "_")  # no newline: a file name
+    spec = tmp_path / f"{name}.py"
+    spec.write_text(GOOD_BUILD)
+    out = tmp_path / "hls"
+    assert cli_main(["compile", str(spec), "--backend", "hls", "--out", str(out)]) == 0
+    for path in out.iterdir():
+        assert "ZQX" not in path.name or path.name.isprintable()
+        if path.is_file():
+            text = path.read_text(errors="replace")
+            assert "rm -rf" not in text and '"; ' not in text.replace('"; "', ""), path
+
+
+# --------------------------------------------------------------------------------------------
 # data files
 # --------------------------------------------------------------------------------------------
 
