@@ -304,7 +304,8 @@ def _imu_anchor(graph: fgc.Graph, spec: GraphSpec, state, rng) -> None:
 
 @dataclass(frozen=True)
 class Outcome:
-    """One case compared with GTSAM's LM (multifrontal QR, relative tolerance 1e-12).
+    """One case compared with GTSAM's LM (the better of multifrontal QR and Cholesky, relative
+    tolerance 1e-12; :func:`gtsam_optimum`).
 
     ``verdict``: "match" (final errors agree to 1e-6 relative and every variable is within 1e-6
     in tangent space), "mismatch" (errors agree, states do not), "excluded" (the final errors
@@ -334,13 +335,24 @@ def solver(spec: GraphSpec):
 
 
 def gtsam_optimum(graph: fgc.Graph) -> tuple[dict, float, object]:
-    """GTSAM's LM optimum of ``graph`` as fgc values, its error, and the translated problem."""
+    """GTSAM's LM optimum of ``graph`` as fgc values, its error, and the translated problem.
+
+    LM runs twice, with multifrontal QR and with multifrontal Cholesky (tight tolerances, as
+    ``fgc verify``), and the lower final error is the reference: either can stop short on its
+    own (Cholesky stalls on badly scaled problems; on one random Pose2 graph with landmarks QR
+    stops after 3 iterations 9e-9 above the optimum that Cholesky and fgc both reach, 1.4e-6
+    away in state), and a reference that stopped short is not a finding about fgc."""
     from fgc.reporting import gtsam_optimize
     from fgc.verify import to_gtsam, values_from_gtsam
 
     problem = to_gtsam(graph)
-    result, _ = gtsam_optimize(problem)
-    return values_from_gtsam(graph, problem, result), float(problem.graph.error(result)), problem
+    best = None
+    for linear in ("qr", "cholesky"):
+        result, _ = gtsam_optimize(problem, linear)
+        error = float(problem.graph.error(result))
+        if best is None or error < best[1]:
+            best = (result, error)
+    return values_from_gtsam(graph, problem, best[0]), best[1], problem
 
 
 def judge(spec: GraphSpec, graph: fgc.Graph, values: dict, status: tuple[str, str],
