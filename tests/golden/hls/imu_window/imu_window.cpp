@@ -2025,12 +2025,15 @@ bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* 
 // HGC (paper B): the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p < COLS, at
 // p (p + 1) / 2 + q) of rows of STRIDE. Each of the block's non-zero TILE x TILE tiles (p0, q0,
 // first, n in `tiles`) is summed over just the n rows that touch it (`rows[first ...]`), one row
-// streamed through TILE x TILE accumulators per cycle, into a square buffer; the lower triangle
-// is then copied out row by row (tiles left out are structural zeros).
+// streamed through TILE x TILE accumulators per cycle, into a square buffer (zeroed first unless
+// every lower tile is summed); the lower triangle is then copied out row by row (tiles left out
+// are structural zeros).
 template <int STRIDE, int COLS, int ROWS, int TILES>
 void gram(const T* ab, const int* tiles, const int* rows, T* out) {
     T sq[STRIDE * STRIDE];
-    for (int i = 0; i < STRIDE * STRIDE; ++i) sq[i] = T(0);
+    if (TILES < (STRIDE / TILE) * (STRIDE / TILE + 1) / 2) {  // else every lower tile is written
+        for (int i = 0; i < STRIDE * STRIDE; ++i) sq[i] = T(0);
+    }
     for (int t = 0; t < TILES; ++t) {
         const int p0 = tiles[4 * t], q0 = tiles[4 * t + 1], first = tiles[4 * t + 2];
         T acc[TILE][TILE];
@@ -2051,11 +2054,17 @@ void gram(const T* ab, const int* tiles, const int* rows, T* out) {
             for (int j = 0; j < TILE; ++j) sq[(p0 + i) * STRIDE + q0 + j] = acc[i][j];
         }
     }
-    for (int p = 0; p < COLS; ++p) {
-        for (int q = 0; q <= p; ++q) {
+    // whole tiles per row: up to TILE - 1 entries past row p land in row p + 1, which is
+    // written next (the last row, entry by entry, stays inside this instance's Gram)
+    for (int p = 0; p < COLS - 1; ++p) {
+        for (int q0 = 0; q0 <= p; q0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=COLS
-            out[p * (p + 1) / 2 + q] = sq[p * STRIDE + q];
+            for (int t = 0; t < TILE; ++t) out[p * (p + 1) / 2 + q0 + t] = sq[p * STRIDE + q0 + t];
         }
+    }
+    for (int q = 0; q < COLS; ++q) {
+#pragma HLS LOOP_TRIPCOUNT max=COLS
+        out[(COLS - 1) * COLS / 2 + q] = sq[(COLS - 1) * STRIDE + q];
     }
 }
 
