@@ -2025,12 +2025,15 @@ bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* 
 // HGC (paper B): the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p < COLS, at
 // p (p + 1) / 2 + q) of rows of STRIDE. Each of the block's non-zero TILE x TILE tiles (p0, q0,
 // first, n in `tiles`) is summed over just the n rows that touch it (`rows[first ...]`), one row
-// streamed through TILE x TILE accumulators per cycle, into a square buffer; the lower triangle
-// is then copied out row by row (tiles left out are structural zeros).
+// streamed through TILE x TILE accumulators per cycle, into a square buffer (zeroed first unless
+// every lower tile is summed); the lower triangle is then copied out row by row (tiles left out
+// are structural zeros).
 template <int STRIDE, int COLS, int ROWS, int TILES>
 void gram(const T* ab, const int* tiles, const int* rows, T* out) {
     T sq[STRIDE * STRIDE];
-    for (int i = 0; i < STRIDE * STRIDE; ++i) sq[i] = T(0);
+    if (TILES < (STRIDE / TILE) * (STRIDE / TILE + 1) / 2) {  // else every lower tile is written
+        for (int i = 0; i < STRIDE * STRIDE; ++i) sq[i] = T(0);
+    }
     for (int t = 0; t < TILES; ++t) {
         const int p0 = tiles[4 * t], q0 = tiles[4 * t + 1], first = tiles[4 * t + 2];
         T acc[TILE][TILE];
@@ -2051,11 +2054,17 @@ void gram(const T* ab, const int* tiles, const int* rows, T* out) {
             for (int j = 0; j < TILE; ++j) sq[(p0 + i) * STRIDE + q0 + j] = acc[i][j];
         }
     }
-    for (int p = 0; p < COLS; ++p) {
-        for (int q = 0; q <= p; ++q) {
+    // whole tiles per row: up to TILE - 1 entries past row p land in row p + 1, which is
+    // written next (the last row, entry by entry, stays inside this instance's Gram)
+    for (int p = 0; p < COLS - 1; ++p) {
+        for (int q0 = 0; q0 <= p; q0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=COLS
-            out[p * (p + 1) / 2 + q] = sq[p * STRIDE + q];
+            for (int t = 0; t < TILE; ++t) out[p * (p + 1) / 2 + q0 + t] = sq[p * STRIDE + q0 + t];
         }
+    }
+    for (int q = 0; q < COLS; ++q) {
+#pragma HLS LOOP_TRIPCOUNT max=COLS
+        out[(COLS - 1) * COLS / 2 + q] = sq[(COLS - 1) * STRIDE + q];
     }
 }
 
@@ -2477,38 +2486,82 @@ bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
     // the gradient the padding stays zero; left of the diagonal, where only the lower triangle
     // is, leftovers accumulate that nothing reads (a pivot row is read from its diagonal on).
     const int end = (w + TILE) / TILE * TILE;
-    T pivot[LD];  // row j of U, read by every Update of round j (zero left of the diagonal)
+    T pivot[TILE][LD];  // rows j ... of U, read by the Updates of their panel (zero left of the diagonal)
     for (int j = 0; j < f; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=30
         H[j][j] += mu;
     }
-    for (int j = 0; j < f; ++j) {  // one CPE round per row of U: Evaluate, then Update
-#pragma HLS LOOP_TRIPCOUNT max=30
-#pragma HLS UNROLL factor=20
-        if (!(H[j][j] > T(0))) return false;
-        const T inv = T(1) / fgc_sqrt(H[j][j]);
-        for (int c = j - j % TILE; c < end; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=32
-            pivot[c] = c < j ? T(0) : T(H[j][c] * inv);
-            H[j][c] = pivot[c];
+    // CPE rounds in panels of TILE rows of U: each row of the panel is Evaluated and Updates
+    // the panel's rows after it; then every later row streams through the panel's TILE Updates
+    // in turn (read once, written once). Each entry is updated by rows j = 0, 1, ... in order,
+    // exactly as one round per row would.
+    for (int j = 0; j < f; j += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+#pragma HLS UNROLL factor=5
+        const int pn = f - j < TILE ? f - j : TILE;
+        for (int k = 0; k < pn; ++k) {  // Evaluate row jj, Update the panel's rows after it
+#pragma HLS LOOP_TRIPCOUNT max=4
+            const int jj = j + k;
+            if (!(H[jj][jj] > T(0))) return false;
+            const T inv = T(1) / fgc_sqrt(H[jj][jj]);
+            const int j0 = jj - jj % TILE;
+            for (int c0 = j0; c0 < end; c0 += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+                for (int t = 0; t < TILE; ++t) pivot[k][c0 + t] = H[jj][c0 + t] * inv;
+            }
+            for (int c = j0; c < jj; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=4
+                pivot[k][c] = T(0);
+            }
+            for (int c0 = j0; c0 < end; c0 += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+                for (int t = 0; t < TILE; ++t) H[jj][c0 + t] = pivot[k][c0 + t];
+            }
+            for (int i = jj + 1; i < j + pn; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=4
+                const T uji = pivot[k][i];
+                for (int c0 = i - i % TILE; c0 < end; c0 += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+                    for (int t = 0; t < TILE; ++t) H[i][c0 + t] -= uji * pivot[k][c0 + t];
+                }
+            }
         }
-        for (int i = j + 1; i < w; ++i) {
+        for (int i = j + pn; i < w; ++i) {  // the later rows through the panel's Updates
 #pragma HLS LOOP_TRIPCOUNT max=30
-            const T uji = pivot[i];
-            for (int c = i - i % TILE; c < end; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=32
-                H[i][c] -= uji * pivot[c];
+            T u[TILE];
+            for (int k = 0; k < pn; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=4
+                u[k] = pivot[k][i];
+            }
+            for (int c0 = i - i % TILE; c0 < end; c0 += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+#pragma HLS PIPELINE
+                T h[TILE];
+                for (int t = 0; t < TILE; ++t) h[t] = H[i][c0 + t];
+                for (int k = 0; k < pn; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=4
+                    for (int t = 0; t < TILE; ++t) h[t] -= u[k] * pivot[k][c0 + t];
+                }
+                for (int t = 0; t < TILE; ++t) H[i][c0 + t] = h[t];
+            }
+        }
+    }
+    // the largest |U_ic| of the frontal block, in TILE running maxima (a maximum does not depend
+    // on the order it is taken in)
+    T largest[TILE];
+    for (int t = 0; t < TILE; ++t) largest[t] = T(0);
+    for (int i = 0; i < f; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+        for (int c0 = i - i % TILE; c0 < f; c0 += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+            for (int t = 0; t < TILE; ++t) {
+                const T a = c0 + t >= i && c0 + t < f ? fgc_abs(H[i][c0 + t]) : T(0);
+                largest[t] = a > largest[t] ? a : largest[t];
             }
         }
     }
     T scale = T(0);
-    for (int i = 0; i < f; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-        for (int c = i; c < f; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-            scale = fgc_abs(H[i][c]) > scale ? fgc_abs(H[i][c]) : scale;
-        }
-    }
+    for (int t = 0; t < TILE; ++t) scale = largest[t] > scale ? largest[t] : scale;
     // rows as they are: left of the diagonal they hold leftovers that no reader looks at
     // (back-substitution reads a conditional's row from its diagonal on, the parent an update
     // matrix's upper triangle)
@@ -3908,14 +3961,16 @@ bool solve(T mu) {
 #pragma HLS LOOP_TRIPCOUNT max=30
                 xs[c] = DELTA[cols[c]];
             }
-            for (int r = f - 1; r >= 0; --r) {
+            // the separator's share of every row first: the rows do not wait for each other
+            T rhs[MAX_F];
+            for (int r = 0; r < f; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=30
                 const T* row = cond + r * (w + 1);
                 T part[TILE];  // TILE interleaved partial sums: a fixed order, short chains
                 for (int t = 0; t < TILE; ++t) part[t] = T(0);
-                int c = r + 1;
+                int c = f;
                 for (; c + TILE <= w; c += TILE) {
-#pragma HLS LOOP_TRIPCOUNT max=32
+#pragma HLS LOOP_TRIPCOUNT max=8
                     for (int t = 0; t < TILE; ++t) part[t] += row[c + t] * xs[c + t];
                 }
                 for (; c < w; ++c) {
@@ -3924,7 +3979,18 @@ bool solve(T mu) {
                 }
                 T acc = T(0);
                 for (int t = 0; t < TILE; ++t) acc += part[t];
-                xs[r] = (row[w] - acc) / row[r];
+                rhs[r] = row[w] - acc;
+            }
+            // then the frontal triangle column by column: x_r, and its column out of the rows
+            // above (short dependency chains: one product per row and step)
+            for (int r = f - 1; r >= 0; --r) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+                const T xr = rhs[r] / cond[r * (w + 1) + r];
+                xs[r] = xr;
+                for (int i = 0; i < r; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+                    rhs[i] -= cond[i * (w + 1) + r] * xr;
+                }
             }
             for (int c = 0; c < f; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=30

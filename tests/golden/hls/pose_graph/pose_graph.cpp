@@ -1545,14 +1545,16 @@ bool solve(T mu) {
 #pragma HLS LOOP_TRIPCOUNT max=18
                 xs[c] = DELTA[cols[c]];
             }
-            for (int r = f - 1; r >= 0; --r) {
+            // the separator's share of every row first: the rows do not wait for each other
+            T rhs[MAX_F];
+            for (int r = 0; r < f; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=18
                 const T* row = cond + r * (w + 1);
                 T part[TILE];  // TILE interleaved partial sums: a fixed order, short chains
                 for (int t = 0; t < TILE; ++t) part[t] = T(0);
-                int c = r + 1;
+                int c = f;
                 for (; c + TILE <= w; c += TILE) {
-#pragma HLS LOOP_TRIPCOUNT max=20
+#pragma HLS LOOP_TRIPCOUNT max=5
                     for (int t = 0; t < TILE; ++t) part[t] += row[c + t] * xs[c + t];
                 }
                 for (; c < w; ++c) {
@@ -1561,7 +1563,18 @@ bool solve(T mu) {
                 }
                 T acc = T(0);
                 for (int t = 0; t < TILE; ++t) acc += part[t];
-                xs[r] = (row[w] - acc) / row[r];
+                rhs[r] = row[w] - acc;
+            }
+            // then the frontal triangle column by column: x_r, and its column out of the rows
+            // above (short dependency chains: one product per row and step)
+            for (int r = f - 1; r >= 0; --r) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+                const T xr = rhs[r] / cond[r * (w + 1) + r];
+                xs[r] = xr;
+                for (int i = 0; i < r; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+                    rhs[i] -= cond[i * (w + 1) + r] * xr;
+                }
             }
             for (int c = 0; c < f; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=18
