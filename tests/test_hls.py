@@ -118,12 +118,27 @@ def test_window_above_the_backend_maximum_fails_at_emit(tmp_path, pose3_program)
     assert not list(tmp_path.iterdir())
 
 
-def test_mixed_precision_is_refused_at_emit(tmp_path, pose3_program):
+def test_mixed_design_gets_a_double_linear_solver(tmp_path, pose3_program):
     solver = dataclasses.replace(pose3_program.solver, precision="float32",
                                  linear_precision="float64")
-    with pytest.raises(HlsConfigError, match="one scalar type throughout"):
-        emit(dataclasses.replace(pose3_program, solver=solver), tmp_path)
-    assert not list(tmp_path.iterdir())
+    project = emit(dataclasses.replace(pose3_program, solver=solver), tmp_path, name="p3")
+    header = (tmp_path / "p3.h").read_text()
+    assert "typedef float T;" in header and "typedef double L;" in header
+    assert "namespace les {" in (tmp_path / "p3.cpp").read_text()
+    plain = emit(pose3_program, tmp_path / "plain", name="p3")
+    assert "typedef T L;" in (tmp_path / "plain" / "p3.h").read_text()
+    assert "namespace les" not in (tmp_path / "plain" / "p3.cpp").read_text()
+    assert project.files and plain.files
+
+
+@pytest.mark.parametrize("config, needle", [
+    (HlsConfig(linear_scalar="half"), "expected 'float' or 'double'"),
+    (HlsConfig(scalar="double", linear_scalar="float"), "can only be widened"),
+    (HlsConfig(scalar="ap_fixed<32,12>", linear_scalar="double"), "floating-point scalar"),
+])
+def test_bad_linear_scalar_is_refused(config, needle):
+    with pytest.raises(HlsConfigError, match=needle):
+        config.check()
 
 
 def test_step_wider_than_the_backend_fails_at_emit(tmp_path, pose3_program):

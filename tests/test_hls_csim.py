@@ -47,12 +47,16 @@ CASES = {
     "imu_window": (lambda: imu_window.build(N=20), "qr", "float"),
     "w100": (lambda: pose_graph.build(), "cholesky", "double"),
     "pose3example": (lambda: pose_graph.build("pose3example.txt"), "qr", "double"),
+    # the mixed design: float everywhere but a double linear solver (SolverConfig.linear_precision)
+    "imu_mixed": (lambda: imu_window.build(N=20), "cholesky", "float", "float64"),
 }
 HEAVY_CASES = {
     "lio_f32": (lambda: lio.build(N=30), "qr", "float"),
     "lio_chol": (lambda: lio.build(N=30), "cholesky", "double"),
     "imu_chol": (lambda: imu_window.build(N=20), "cholesky", "double"),
     "w100_f32": (lambda: pose_graph.build(), "qr", "float"),
+    # N = 50 is past what float Cholesky can solve (κ ≈ 5e3 > 1/√eps32); the mixed design is not
+    "imu50_mixed": (lambda: imu_window.build(N=50), "cholesky", "float", "float64"),
 }
 
 
@@ -81,9 +85,11 @@ def pose_errors(program, values: dict, reference: dict) -> tuple[float, float, f
 
 
 def _run(name: str, case, tmp_path_factory):
-    build, linear, scalar = case
+    build, linear, scalar, *wide = case
     graph = build()
-    program = compile_graph(graph, SolverConfig(linear=linear), name=name)
+    solver = SolverConfig(linear=linear, precision="float32" if wide else "float64",
+                          linear_precision=wide[0] if wide else None)
+    program = compile_graph(graph, solver, name=name)
     project = emit(program, tmp_path_factory.mktemp(name), HlsConfig(scalar=scalar))
     data = problem_data(graph, program)
     result = run_csim(project, program, data)

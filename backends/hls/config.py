@@ -31,6 +31,10 @@ class HlsConfig:
     - ``scalar``: the C++ scalar type ``T`` of the whole accelerator: ``"float"`` (paper A and B's
       hardware), ``"double"``, or ``"ap_fixed<W,I>"`` (needs the Xilinx ``ap_types`` headers of the
       optional ``hls4ml`` package; see :func:`ap_types_include`).
+    - ``linear_scalar``: the scalar type ``L`` of the linear-equation solver alone (Hessian
+      accumulation, elimination, back-substitution; ``"float"`` or ``"double"``, at least as
+      wide as ``scalar``), the mixed design; ``None`` means ``scalar``, or ``"double"`` for a
+      Program whose ``SolverConfig.linear_precision`` is float64.
     - ``part`` / ``clock_ns``: FPGA part and clock period for ``run_hls.tcl`` (ZC706, 7 ns:
       about 143 MHz).
     - ``unit_sets``: QR/Cholesky unit sets that eliminate the steps of one level side by side;
@@ -55,6 +59,7 @@ class HlsConfig:
     """
 
     scalar: str = "float"
+    linear_scalar: str | None = None
     part: str = "xc7z045ffg900-2"
     clock_ns: float = 7.0
     unit_sets: int | None = None
@@ -73,6 +78,16 @@ class HlsConfig:
         if self.scalar not in SCALARS and not _AP_FIXED.match(self.scalar):
             raise HlsConfigError(f"HLS scalar type {self.scalar!r}: expected 'float', 'double' "
                                  "or 'ap_fixed<W,I>'")
+        if self.linear_scalar is not None:
+            if self.linear_scalar not in SCALARS:
+                raise HlsConfigError(f"linear solver scalar type {self.linear_scalar!r}: expected "
+                                     "'float' or 'double'")
+            if self.is_fixed_point and self.linear_scalar != self.scalar:
+                raise HlsConfigError("a wider linear solver (linear_scalar) needs a floating-point "
+                                     f"scalar, not {self.scalar}")
+            if self.scalar == "double" and self.linear_scalar == "float":
+                raise HlsConfigError("linear_scalar 'float' is narrower than scalar 'double': the "
+                                     "linear solver can only be widened")
         if not _PART.match(self.part):
             raise HlsConfigError(f"FPGA part {self.part!r} is not a plain part name")
         if not (0.5 <= float(self.clock_ns) <= 1000.0):
@@ -92,6 +107,16 @@ class HlsConfig:
     @property
     def is_fixed_point(self) -> bool:
         return self.scalar.startswith("ap_fixed")
+
+    @property
+    def linear_cxx(self) -> str:
+        """The linear solver's scalar type as C++ text (``scalar_cxx`` unless widened)."""
+        return self.linear_scalar or self.scalar_cxx
+
+    @property
+    def mixed(self) -> bool:
+        """Whether the linear solver is wider than the rest of the accelerator."""
+        return self.linear_cxx != self.scalar_cxx
 
     @property
     def scalar_cxx(self) -> str:

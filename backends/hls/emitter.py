@@ -9,6 +9,7 @@ g++.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -59,7 +60,7 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     file names and the top function ``<name>_top``. Emitting the same Program twice gives
     byte-identical files. Every synthesised file is linted (:func:`lint_project`).
     """
-    config = config or HlsConfig()
+    config = for_program(program, config or HlsConfig())
     config.check()
     check_limits(program, config)
     project = identifier(name or program.name)
@@ -81,13 +82,17 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     return result
 
 
+def for_program(program: Program, config: HlsConfig) -> HlsConfig:
+    """``config`` with the linear solver's scalar the Program asks for: a Program compiled with
+    ``linear_precision="float64"`` (the mixed design) gets a ``double`` linear solver unless
+    ``config.linear_scalar`` says otherwise."""
+    if config.linear_scalar is None and program.solver.mixed:
+        return dataclasses.replace(config, linear_scalar="double")
+    return config
+
+
 def check_limits(program: Program, config: HlsConfig) -> None:
     """Raise :class:`HlsConfigError` if ``program`` exceeds what ``config`` can build."""
-    if program.solver.mixed:
-        raise HlsConfigError(f"the Program's linear solver is {program.solver.les_precision} and "
-                             f"the rest {program.solver.precision}: the HLS backend builds one "
-                             "scalar type throughout (HlsConfig.scalar); compile without "
-                             "linear_precision, or simulate the mixed design with the simulator")
     if program.max_variables > config.max_variables:
         raise HlsConfigError(f"the Program's window of {program.max_variables} variables exceeds "
                              f"the HLS backend's maximum of {config.max_variables} "
@@ -141,6 +146,8 @@ def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter
         "eps_step": lit(max(s.eps_step, 10 * eps)), "tol": lit(s.relative_error_tol),
         "epsilon": lit(eps), "resolution": lit(16 * eps),
         "absolute_error_tol": lit(config.absolute_error_tol), "singular_eps": lit(10 * eps),
+        "linear_singular_eps": lit(10 * _epsilon(dataclasses.replace(
+            config, scalar=config.linear_cxx))),
         "comment": comment(f"{s.method} {s.linear} {s.ordering} n_u={s.units} cpe={s.cpe}"),
     }
 
@@ -159,6 +166,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,
         "scalar": config.scalar_cxx, "fixed_point": config.is_fixed_point,
+        "linear_scalar": config.linear_cxx, "mixed": config.mixed,
         "include_dirs": include, "part": config.part, "clock_ns": repr(float(config.clock_ns)),
         "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
                                                  * config.is_fixed_point),

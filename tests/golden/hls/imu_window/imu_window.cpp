@@ -242,9 +242,9 @@ T DATA_BUF[N_DATA];
 T G[N_TANGENT];    // gradient A^T b
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
-T COND[N_COND];    // conditionals (R | d), one block per elimination step
-T NF[N_NF];
-T GRAM[N_GRAM];    // per factor instance: packed lower triangle of [A | b]^T [A | b]
+L COND[N_COND];    // conditionals (R | d), one block per elimination step
+L NF[N_NF];
+L GRAM[N_GRAM];    // per factor instance: packed lower triangle of [A | b]^T [A | b]
         // update matrices passed to the parent step
 
 // ---- lanes: a factor block evaluates LANES instances side by side, as values of type V
@@ -2029,25 +2029,25 @@ bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* 
 // every lower tile is summed); the lower triangle is then copied out row by row (tiles left out
 // are structural zeros).
 template <int STRIDE, int COLS, int ROWS, int TILES>
-void gram(const T* ab, const int* tiles, const int* rows, T* out) {
-    T sq[STRIDE * STRIDE];
+void gram(const T* ab, const int* tiles, const int* rows, L* out) {
+    L sq[STRIDE * STRIDE];
     if (TILES < (STRIDE / TILE) * (STRIDE / TILE + 1) / 2) {  // else every lower tile is written
-        for (int i = 0; i < STRIDE * STRIDE; ++i) sq[i] = T(0);
+        for (int i = 0; i < STRIDE * STRIDE; ++i) sq[i] = L(0);
     }
     for (int t = 0; t < TILES; ++t) {
         const int p0 = tiles[4 * t], q0 = tiles[4 * t + 1], first = tiles[4 * t + 2];
-        T acc[TILE][TILE];
+        L acc[TILE][TILE];  // the linear solver's scalar: the HGC accumulates in it
 #pragma HLS ARRAY_PARTITION variable=acc complete dim=0
         for (int i = 0; i < TILE; ++i) {
-            for (int j = 0; j < TILE; ++j) acc[i][j] = T(0);
+            for (int j = 0; j < TILE; ++j) acc[i][j] = L(0);
         }
         for (int k = 0; k < tiles[4 * t + 3]; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=ROWS
 #pragma HLS PIPELINE
             const T* row = ab + rows[first + k] * STRIDE;
             for (int i = 0; i < TILE; ++i) {
-                const T ap = row[p0 + i];
-                for (int j = 0; j < TILE; ++j) acc[i][j] += ap * row[q0 + j];
+                const L ap = row[p0 + i];
+                for (int j = 0; j < TILE; ++j) acc[i][j] += ap * L(row[q0 + j]);
             }
         }
         for (int i = 0; i < TILE; ++i) {

@@ -321,12 +321,12 @@ const int KIND2_VARIABLES[8] = {
 T X[N_X];          // current estimate (storage)
 T X_TRIAL[N_X];    // x (+) delta
 T DATA_BUF[N_DATA];
-T AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
+L AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
 T G[N_TANGENT];    // gradient A^T b
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
-T COND[N_COND];    // conditionals (R | d), one block per elimination step
-T NF[N_NF];
+L COND[N_COND];    // conditionals (R | d), one block per elimination step
+L NF[N_NF];
         // new factors passed to the parent step
 
 // ---- lanes: a factor block evaluates LANES instances side by side, as values of type V
@@ -2616,7 +2616,7 @@ bool linearize_0(const T* x, int first, T* noise) {
             col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         }
         finite = accumulate<8, 7, 6>(ab[l], scale, col, noise) && finite;
-        T* rows = AB + FACTOR_A_OFF[f];
+        L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) rows[r * 7 + c] = ab[l][r * 8 + c];
         }
@@ -2684,7 +2684,7 @@ bool linearize_1(const T* x, int first, T* noise) {
             col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         }
         finite = accumulate<4, 4, 3>(ab[l], scale, col, noise) && finite;
-        T* rows = AB + FACTOR_A_OFF[f];
+        L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 3; ++r) {
             for (int c = 0; c < 4; ++c) rows[r * 4 + c] = ab[l][r * 4 + c];
         }
@@ -2752,7 +2752,7 @@ bool linearize_2(const T* x, int first, T* noise) {
             col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         }
         finite = accumulate<8, 7, 6>(ab[l], scale, col, noise) && finite;
-        T* rows = AB + FACTOR_A_OFF[f];
+        L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) rows[r * 7 + c] = ab[l][r * 8 + c];
         }
@@ -2848,7 +2848,7 @@ bool linearize_3(const T* x, int first, T* noise) {
             col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
         }
         finite = accumulate<32, 31, 21>(ab[l], scale, col, noise) && finite;
-        T* rows = AB + FACTOR_A_OFF[f];
+        L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 21; ++r) {
             for (int c = 0; c < 31; ++c) rows[r * 31 + c] = ab[l][r * 32 + c];
         }
@@ -2917,7 +2917,7 @@ bool linearize_4(const T* x, int first, T* noise) {
             col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         }
         finite = accumulate<8, 7, 3>(ab[l], scale, col, noise) && finite;
-        T* rows = AB + FACTOR_A_OFF[f];
+        L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 3; ++r) {
             for (int c = 0; c < 7; ++c) rows[r * 7 + c] = ab[l][r * 8 + c];
         }

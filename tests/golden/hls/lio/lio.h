@@ -12,6 +12,7 @@
 namespace fgc {
 
 typedef float T;  // the accelerator's scalar type
+typedef T L;  // the linear solver's scalar type
 
 const int N_VARIABLES = 24;
 const int N_FACTORS = 18;

@@ -142,12 +142,12 @@ const int KIND0_VARIABLES[5] = {
 T X[N_X];          // current estimate (storage)
 T X_TRIAL[N_X];    // x (+) delta
 T DATA_BUF[N_DATA];
-T AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
+L AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
 T G[N_TANGENT];    // gradient A^T b
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
-T COND[N_COND];    // conditionals (R | d), one block per elimination step
-T NF[N_NF];
+L COND[N_COND];    // conditionals (R | d), one block per elimination step
+L NF[N_NF];
         // new factors passed to the parent step
 
 // ---- lanes: a factor block evaluates LANES instances side by side, as values of type V
@@ -1170,7 +1170,7 @@ bool linearize_0(const T* x, int first, T* noise) {
             col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
         }
         finite = accumulate<16, 13, 6>(ab[l], scale, col, noise) && finite;
-        T* rows = AB + FACTOR_A_OFF[f];
+        L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 13; ++c) rows[r * 13 + c] = ab[l][r * 16 + c];
         }
@@ -1238,7 +1238,7 @@ bool linearize_1(const T* x, int first, T* noise) {
             col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         }
         finite = accumulate<8, 7, 6>(ab[l], scale, col, noise) && finite;
-        T* rows = AB + FACTOR_A_OFF[f];
+        L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) rows[r * 7 + c] = ab[l][r * 8 + c];
         }
