@@ -91,11 +91,12 @@ class Problem:
         """δ solving (H + μI) δ = g along the schedule, in the linear solver's precision (the
         factor rows widened to it, δ rounded back to the working precision)."""
         lin = self.lib.linear
-        factors = numpy.concatenate([ab.reshape(-1) for ab in abs_]).astype(self.les_dtype)
+        factors = numpy.concatenate([ab.reshape(-1) for ab in abs_]).astype(self.les_dtype,
+                                                                             copy=False)
         conds = lin.eliminate(self.plan, factors, mu, self.spec["solver"]["linear"])
         delta = lin.back_substitute(self.plan, self.spec["back_substitution"], conds, self.n,
                                     self.les_dtype)
-        return delta.astype(self.dtype)
+        return delta.astype(self.dtype, copy=False)
 
     def retract(self, x, delta):
         """x ⊕ δ: every variable retracted with its type's Expmap."""

@@ -105,10 +105,11 @@ class Window:
 
     def solve(self, parts, mu):
         lin, les = self.lib.linear, self.problem.les_dtype  # the linear solver's precision
-        factors = numpy.concatenate([p.reshape(-1) for p in parts]).astype(les)
+        factors = numpy.concatenate([p.reshape(-1) for p in parts]).astype(les, copy=False)
         conds = lin.eliminate(self.plan, factors, mu, self.problem.spec["solver"]["linear"])
         order = [(i,) for i in reversed(range(len(self.plan.steps)))]
-        return lin.back_substitute(self.plan, order, conds, self.n, les).astype(self.dtype)
+        delta = lin.back_substitute(self.plan, order, conds, self.n, les)
+        return delta.astype(self.dtype, copy=False)
 
     def retract(self, x, delta):
         out = x.copy()
@@ -259,7 +260,7 @@ def _store(chain, window, x):
     parts, _, _ = window.linearize(x)
     conds, news = window.lib.linear.eliminate_qr(
         window.plan, numpy.concatenate([p.reshape(-1) for p in parts]).astype(
-            chain.problem.les_dtype), 0.0)
+            chain.problem.les_dtype, copy=False), 0.0)
     for k, c in enumerate(range(window.first, window.last + 1)):
         lin_next = x[chain.storage(c + 1)] if c < window.last else None
         chain.conds[c] = (conds[k], x[chain.storage(c)], lin_next)
@@ -281,5 +282,6 @@ def _back_substitute(chain, x, first):
     solve_upper = chain.problem.lib.linear.solve_upper
     for c in range(first - 1, -1, -1):
         (r, s, d), lin, lin_next = chain.conds[c]
-        delta = solve_upper(r, d - s @ chain.local(lin_next, x, c + 1)).astype(x.dtype)
+        delta = solve_upper(r, d - s @ chain.local(lin_next, x, c + 1)).astype(x.dtype,
+                                                                                copy=False)
         x[chain.storage(c)] = chain.retract(lin, delta, c)
