@@ -98,7 +98,7 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
 
 def _precision_text(r: dict) -> str:
     """"float32", or "float32 (float64 linear solver)" for the mixed design."""
-    les = r.get("linear_precision", r["precision"])
+    les = r["linear_precision"]
     return r["precision"] + (f" ({les} linear solver)" if les != r["precision"] else "")
 
 

@@ -346,13 +346,9 @@ def gtsam_optimum(graph: fgc.Graph) -> tuple[dict, float, object]:
     from fgc.verify import to_gtsam, values_from_gtsam
 
     problem = to_gtsam(graph)
-    best = None
-    for linear in ("qr", "cholesky"):
-        result, _ = gtsam_optimize(problem, linear)
-        error = float(problem.graph.error(result))
-        if best is None or error < best[1]:
-            best = (result, error)
-    return values_from_gtsam(graph, problem, best[0]), best[1], problem
+    best = min((gtsam_optimize(problem, linear)[0] for linear in ("qr", "cholesky")),
+               key=problem.graph.error)
+    return values_from_gtsam(graph, problem, best), float(problem.graph.error(best)), problem
 
 
 def judge(spec: GraphSpec, graph: fgc.Graph, values: dict, status: tuple[str, str],

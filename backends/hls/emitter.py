@@ -111,13 +111,13 @@ def check_limits(program: Program, config: HlsConfig) -> None:
         ap_types_include()  # a clear error now rather than a missing header in g++
 
 
-def _epsilon(config: HlsConfig) -> float:
-    """Machine epsilon of the scalar type (the LSB for fixed point)."""
-    if config.scalar == "float":
+def _epsilon(scalar_cxx: str) -> float:
+    """Machine epsilon of a scalar type given as C++ text (the LSB for fixed point)."""
+    if scalar_cxx == "float":
         return 2.0 ** -23
-    if config.scalar == "double":
+    if scalar_cxx == "double":
         return 2.0 ** -52
-    width, integer = (int(x) for x in config.scalar_cxx[9:-1].split(","))
+    width, integer = (int(x) for x in scalar_cxx[9:-1].split(","))
     return 2.0 ** -(width - integer)
 
 
@@ -130,7 +130,7 @@ def lanes(config: HlsConfig) -> int:
 
 
 def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter) -> dict:
-    s, eps = program.solver, _epsilon(config)
+    s, eps = program.solver, _epsilon(config.scalar_cxx)
     lit = printer.literal
     lm = s.method == "lm"
     tries = 1
@@ -146,8 +146,7 @@ def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter
         "eps_step": lit(max(s.eps_step, 10 * eps)), "tol": lit(s.relative_error_tol),
         "epsilon": lit(eps), "resolution": lit(16 * eps),
         "absolute_error_tol": lit(config.absolute_error_tol), "singular_eps": lit(10 * eps),
-        "linear_singular_eps": lit(10 * _epsilon(dataclasses.replace(
-            config, scalar=config.linear_cxx))),
+        "linear_singular_eps": lit(10 * _epsilon(config.linear_cxx)),
         "comment": comment(f"{s.method} {s.linear} {s.ordering} n_u={s.units} cpe={s.cpe}"),
     }
 

@@ -118,7 +118,7 @@ class MemoryWords:
     overwrites H in place); ``state`` the current and trial values; ``vectors`` δ and the
     triangular solve's intermediate; ``measurements`` the factors' run-time data.
     ``linear_bits`` is the word of the linear solver's memories (the system, the factor and
-    the vectors; wider than ``word_bits`` in the mixed design, 0: the same).
+    the vectors; wider than ``word_bits`` in the mixed design).
     """
 
     word_bits: int
@@ -128,11 +128,7 @@ class MemoryWords:
     state: int
     vectors: int
     measurements: int
-    linear_bits: int = 0
-
-    def __post_init__(self):
-        if not self.linear_bits:
-            object.__setattr__(self, "linear_bits", self.word_bits)
+    linear_bits: int
 
     @property
     def total(self) -> int:
@@ -164,7 +160,7 @@ class CostReport:
     utilization: Utilization  # fractions of the device
     memory: MemoryWords
     power_w: float
-    linear_precision: str = ""  # the linear solver's precision ("": ``precision``)
+    linear_precision: str  # the linear solver's (wider than ``precision`` when mixed)
 
     @property
     def cycles(self) -> int:
@@ -213,7 +209,7 @@ class CostReport:
                           for f in fields(s) if getattr(s, f.name))
         r = self.resources
         les = (f" ({self.linear_precision} linear solver)"
-               if self.linear_precision and self.linear_precision != self.precision else "")
+               if self.linear_precision != self.precision else "")
         return (f"{self.program}: {self.method}/{self.linear} {self.precision}{les}, "
                 f"{self.iterations} it + {self.rejected} rejected: {self.latency_ms:.3f} ms "
                 f"({self.cycles} cycles @ {self.clock_mhz:g} MHz)\n"
