@@ -75,11 +75,13 @@ def test_gram_tiles_cover_every_structural_entry(programs, name):
         pattern, tiles = ctx.pattern, ctx.tiles
         covered = {}
         for t in range(tiles.count):
-            p0, q0, first, n = tiles.table[4 * t:4 * t + 4]
-            assert q0 <= p0 and p0 % TILE == 0 and q0 % TILE == 0
+            p0, q0, first, n, wide = tiles.table[5 * t:5 * t + 5]
+            assert q0 + (wide - 1) * TILE <= p0 and p0 % TILE == 0 and q0 % TILE == 0
+            assert wide in (1, 2)
             rows = set(tiles.rows[first:first + n])
             for p in range(p0, min(p0 + TILE, pattern.stride)):
-                for q in range(q0, min(q0 + TILE, p + 1)):
+                for q in range(q0, min(q0 + wide * TILE, p + 1)):
+                    assert (p, q) not in covered  # each entry summed once
                     covered[p, q] = rows
         for p in range(pattern.stride):
             for q in range(p + 1):

@@ -65,26 +65,40 @@ class BlockPattern:
 
     def tiles(self) -> GramTiles:
         """The lower-triangle TILE × TILE tiles (p0, q0 ≤ p0) of the Gram that are not
-        structurally zero, each with the rows that touch both of its column ranges."""
+        structurally zero, each with the rows that touch both of its column ranges. Two tiles
+        side by side in a row of tiles (q0 and q0 + TILE) are summed as one TILE × 2·TILE panel
+        over the union of their rows: twice the independent accumulators per row streamed, and
+        a row that touches only one of them adds exact zeros (x + 0 = x) to the other."""
         table, rows = [], []
         for p0 in range(0, self.stride, TILE):
+            touching = {}
             for q0 in range(0, p0 + 1, TILE):
-                touching = [r for r in range(self.m) if any(self.whitened[r][p0:p0 + TILE])
-                            and any(self.whitened[r][q0:q0 + TILE])]
-                if touching:
-                    table += [p0, q0, len(rows), len(touching)]
-                    rows += touching
-        return GramTiles(len(table) // 4, tuple(table), tuple(rows))
+                touching[q0] = [r for r in range(self.m) if any(self.whitened[r][p0:p0 + TILE])
+                                and any(self.whitened[r][q0:q0 + TILE])]
+            q0s = [q0 for q0 in touching if touching[q0]]
+            while q0s:
+                q0 = q0s.pop(0)
+                wide = bool(q0s) and q0s[0] == q0 + TILE
+                union = sorted(set(touching[q0]) | set(touching[q0s.pop(0)] if wide else ()))
+                table += [p0, q0, len(rows), len(union), 2 if wide else 1]
+                rows += union
+        return GramTiles(len(table) // 5, tuple(table), tuple(rows))
 
 
 @dataclass(frozen=True)
 class GramTiles:
-    """``count`` tiles as ``table`` = (p0, q0, first, rows) × count; tile t sums over rows
+    """``count`` panels as ``table`` = (p0, q0, first, rows, tiles) × count: panel t covers
+    columns q0 … q0 + tiles·TILE of rows p0 … p0 + TILE and sums over rows
     ``rows[first … first + rows)``."""
 
     count: int
     table: tuple[int, ...]
     rows: tuple[int, ...]
+
+    @property
+    def tile_count(self) -> int:
+        """How many TILE × TILE tiles the panels cover."""
+        return sum(self.table[4::5])
 
 
 def block_pattern(block: BlockSpec, kinds: tuple[int, ...], where: str) -> BlockPattern:

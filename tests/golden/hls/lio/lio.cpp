@@ -366,14 +366,58 @@ inline V v_fgc_tan(const V& x) { return lanewise<fgc_tan>(x); }
 inline V v_fgc_atan(const V& x) { return lanewise<fgc_atan>(x); }
 inline V v_fgc_exp(const V& x) { return lanewise<fgc_exp>(x); }
 inline V v_fgc_log(const V& x) { return lanewise<fgc_log>(x); }
-inline V v_lie_A(const V& x) { return lanewise<lie_A>(x); }
-inline V v_lie_B(const V& x) { return lanewise<lie_B>(x); }
-inline V v_lie_C(const V& x) { return lanewise<lie_C>(x); }
-inline V v_lie_D(const V& x) { return lanewise<lie_D>(x); }
-inline V v_lie_A1(const V& x) { return lanewise<lie_A1>(x); }
-inline V v_lie_B1(const V& x) { return lanewise<lie_B1>(x); }
-inline V v_lie_C1(const V& x) { return lanewise<lie_C1>(x); }
-inline V v_lie_D1(const V& x) { return lanewise<lie_D1>(x); }
+// The coefficients' series (every lane below the switch, the usual case) in whole vectors: the
+// same operations lane by lane as the scalar lie_* make, so the same numbers. Always inlined:
+// GCC would otherwise split off the scalar fallback as a function returning V, which a build
+// without AVX warns about (-Wpsabi, not silenced by the pragma above)
+__attribute__((always_inline)) inline V v_lie_A(const V& t) {
+    bool series = true;
+    for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
+    if (series) return T(1.0) + t*(T(-0.16666666666666666) + t*(T(0.008333333333333333) + t*(T(-0.0001984126984126984) + t*(T(2.7557319223985893e-06) + t*(T(-2.505210838544172e-08) + t*(T(1.6059043836821613e-10) + t*(T(-7.647163731819816e-13) + t*(T(2.8114572543455206e-15) + t*(T(-8.22063524662433e-18) + t*(T(1.9572941063391263e-20) + t*(T(-3.868170170630684e-23))))))))))));
+    return lanewise<lie_A>(t);
+}
+__attribute__((always_inline)) inline V v_lie_B(const V& t) {
+    bool series = true;
+    for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
+    if (series) return T(0.5) + t*(T(-0.041666666666666664) + t*(T(0.001388888888888889) + t*(T(-2.48015873015873e-05) + t*(T(2.755731922398589e-07) + t*(T(-2.08767569878681e-09) + t*(T(1.1470745597729725e-11) + t*(T(-4.779477332387385e-14) + t*(T(1.5619206968586225e-16) + t*(T(-4.110317623312165e-19) + t*(T(8.896791392450574e-22) + t*(T(-1.6117375710961184e-24))))))))))));
+    return lanewise<lie_B>(t);
+}
+__attribute__((always_inline)) inline V v_lie_C(const V& t) {
+    bool series = true;
+    for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
+    if (series) return T(0.16666666666666666) + t*(T(-0.008333333333333333) + t*(T(0.0001984126984126984) + t*(T(-2.7557319223985893e-06) + t*(T(2.505210838544172e-08) + t*(T(-1.6059043836821613e-10) + t*(T(7.647163731819816e-13) + t*(T(-2.8114572543455206e-15) + t*(T(8.22063524662433e-18) + t*(T(-1.9572941063391263e-20) + t*(T(3.868170170630684e-23) + t*(T(-6.446950284384474e-26))))))))))));
+    return lanewise<lie_C>(t);
+}
+__attribute__((always_inline)) inline V v_lie_D(const V& t) {
+    bool series = true;
+    for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
+    if (series) return T(0.08333333333333333) + t*(T(0.001388888888888889) + t*(T(3.306878306878307e-05) + t*(T(8.267195767195768e-07) + t*(T(2.08767569878681e-08) + t*(T(5.284190138687493e-10) + t*(T(1.3382536530684679e-11) + t*(T(3.3896802963225827e-13) + t*(T(8.586062056277845e-15) + t*(T(2.174868698558062e-16) + t*(T(5.5090028283602295e-18) + t*(T(1.3954464685812522e-19) + t*(T(3.534707039629467e-21) + t*(T(8.953517427037546e-23) + t*(T(2.267952452337683e-24) + t*(T(5.744790668872202e-26) + t*(T(1.455172475614865e-27) + t*(T(3.6859949406653103e-29) + t*(T(9.336734257095045e-31) + t*(T(2.36502241570063e-32) + t*(T(5.990671762482134e-34) + t*(T(1.5174548844682903e-35))))))))))))))))))))));
+    return lanewise<lie_D>(t);
+}
+__attribute__((always_inline)) inline V v_lie_A1(const V& t) {
+    bool series = true;
+    for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
+    if (series) return T(-0.16666666666666666) + t*(T(0.016666666666666666) + t*(T(-0.0005952380952380953) + t*(T(1.1022927689594357e-05) + t*(T(-1.252605419272086e-07) + t*(T(9.635426302092969e-10) + t*(T(-5.353014612273871e-12) + t*(T(2.2491658034764165e-14) + t*(T(-7.398571721961897e-17) + t*(T(1.9572941063391261e-19) + t*(T(-4.254987187693753e-22)))))))))));
+    return lanewise<lie_A1>(t);
+}
+__attribute__((always_inline)) inline V v_lie_B1(const V& t) {
+    bool series = true;
+    for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
+    if (series) return T(-0.041666666666666664) + t*(T(0.002777777777777778) + t*(T(-7.440476190476191e-05) + t*(T(1.1022927689594355e-06) + t*(T(-1.043837849393405e-08) + t*(T(6.882447358637835e-11) + t*(T(-3.3456341326711696e-13) + t*(T(1.249536557486898e-15) + t*(T(-3.6992858609809485e-18) + t*(T(8.896791392450573e-21) + t*(T(-1.77291132820573e-23)))))))))));
+    return lanewise<lie_B1>(t);
+}
+__attribute__((always_inline)) inline V v_lie_C1(const V& t) {
+    bool series = true;
+    for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
+    if (series) return T(-0.008333333333333333) + t*(T(0.0003968253968253968) + t*(T(-8.267195767195768e-06) + t*(T(1.0020843354176688e-07) + t*(T(-8.029521918410807e-10) + t*(T(4.58829823909189e-12) + t*(T(-1.9680200780418645e-14) + t*(T(6.576508197299464e-17) + t*(T(-1.7615646957052136e-19) + t*(T(3.868170170630684e-22) + t*(T(-7.091645312822921e-25)))))))))));
+    return lanewise<lie_C1>(t);
+}
+__attribute__((always_inline)) inline V v_lie_D1(const V& t) {
+    bool series = true;
+    for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
+    if (series) return T(0.001388888888888889) + t*(T(6.613756613756614e-05) + t*(T(2.48015873015873e-06) + t*(T(8.35070279514724e-08) + t*(T(2.6420950693437467e-09) + t*(T(8.029521918410807e-11) + t*(T(2.372776207425808e-12) + t*(T(6.868849645022276e-14) + t*(T(1.9573818287022555e-15) + t*(T(5.5090028283602297e-17) + t*(T(1.5349911154393775e-18) + t*(T(4.241648447555361e-20) + t*(T(1.163957265514881e-21) + t*(T(3.1751334332727565e-23) + t*(T(8.617186003308303e-25) + t*(T(2.328275960983784e-26) + t*(T(6.266191399131027e-28) + t*(T(1.6806121662771081e-29) + t*(T(4.4935425898311966e-31) + t*(T(1.1981343524964268e-32) + t*(T(3.1866552573834097e-34)))))))))))))))))))));
+    return lanewise<lie_D1>(t);
+}
 inline V v_fgc_atan2(const V& y, const V& x) {
     T r[LANES];
     for (int l = 0; l < LANES; ++l) r[l] = fgc_atan2(lane(y, l), lane(x, l));
@@ -2529,38 +2573,55 @@ void whiten(T* ab, const T* p, T code, T k) {
 }
 
 // Whitened rows [A | b] (ROWS of STRIDE, b in column COLS - 1) -> the local gradient A^T b
-// (column c into G[col[c]]) and the cost's rounding noise: row r moves by up to
-// eps * sum_c |A_rc| scale_c when x is rounded to T. TILE-wide partial sums keep every sum in a
-// fixed order; false if an entry is infinite or NaN.
+// (column c into G[col[c]]) and a bound on the cost's rounding noise: row r moves by up to
+// m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, the cost by |b_r| m_r + m_r^2 / 2, and
+// sum_r m_r^2 <= eps^2 |A|_F^2 |scale|^2. Every sum runs down the columns (one row per step,
+// whole vectors), then across them in TILE partial sums: a fixed order. False if an entry is
+// infinite or NaN.
 template <int STRIDE, int COLS, int ROWS>
 bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
-    T g[STRIDE];
-    T check[TILE];
-    for (int c = 0; c < STRIDE; ++c) g[c] = T(0);
-    for (int t = 0; t < TILE; ++t) check[t] = T(0);
-    T rounding = T(0);
+    T g[STRIDE], moved[STRIDE], square[STRIDE], check[STRIDE];
+    for (int c = 0; c < STRIDE; ++c) {
+        g[c] = T(0);
+        moved[c] = T(0);
+        square[c] = T(0);
+        check[c] = T(0);
+    }
     for (int r = 0; r < ROWS; ++r) {
         const T* row = ab + r * STRIDE;
-        const T b = row[COLS - 1];
-        T part[TILE];
-        for (int t = 0; t < TILE; ++t) part[t] = T(0);
-        for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
-            for (int t = 0; t < TILE; ++t) {
-                part[t] += fgc_abs(row[c0 + t]) * scale[c0 + t];
-                check[t] += row[c0 + t] - row[c0 + t];  // 0, or NaN for inf / NaN
-            }
+        const T b = row[COLS - 1], b_abs = fgc_abs(b);
+        for (int c = 0; c < STRIDE; ++c) {
+            g[c] += row[c] * b;
+            moved[c] += fgc_abs(row[c]) * b_abs;
+            square[c] += row[c] * row[c];
+            check[c] += row[c] - row[c];  // 0, or NaN for inf / NaN
         }
-        T sum = T(0);
-        for (int t = 0; t < TILE; ++t) sum += part[t];
-        const T moved = EPSILON * sum;
-        rounding += fgc_abs(b) * moved + T(0.5) * moved * moved;
-        for (int c = 0; c < STRIDE; ++c) g[c] += row[c] * b;
+    }
+    T lin[TILE], frob[TILE], s2[TILE], bad[TILE];
+    for (int t = 0; t < TILE; ++t) {
+        lin[t] = T(0);
+        frob[t] = T(0);
+        s2[t] = T(0);
+        bad[t] = T(0);
+    }
+    for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
+        for (int t = 0; t < TILE; ++t) {
+            const int c = c0 + t;
+            lin[t] += scale[c] * moved[c];  // scale 0: b and padding
+            frob[t] += c == COLS - 1 ? T(0) : square[c];
+            s2[t] += scale[c] * scale[c];
+            bad[t] += check[c];
+        }
+    }
+    for (int t = 1; t < TILE; ++t) {
+        lin[0] += lin[t];
+        frob[0] += frob[t];
+        s2[0] += s2[t];
+        bad[0] += bad[t];
     }
     for (int c = 0; c < COLS - 1; ++c) G[col[c]] += g[c];
-    *noise += rounding;
-    T bad = T(0);
-    for (int t = 0; t < TILE; ++t) bad += check[t];
-    return fgc_isfinite(bad);
+    *noise += EPSILON * lin[0] + T(0.5) * (EPSILON * EPSILON * frob[0]) * s2[0];
+    return fgc_isfinite(bad[0]);
 }
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
@@ -2571,9 +2632,41 @@ T robust_loss(T half, T code, T k) {
     return T(0.5) * k * k * fgc_log1p(e * e / (k * k));
 }
 
+#ifndef __SYNTHESIS__
+// The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
+T BLOCK0_LANED[1][18][LANES];
+
+void lane_data_0() {
+    for (int first = 0; first < 1; first += LANES) {
+        T (*laned)[LANES] = BLOCK0_LANED[first / LANES];
+        for (int l = 0; l < LANES; ++l) {
+            const int f = BLOCK0_INSTANCES[first + l < 1 ? first + l : 0];
+            const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
+            for (int i = 0; i < 12; ++i) laned[0 + i][l] = line[0 + i];
+            for (int i = 0; i < 6; ++i) laned[12 + i][l] = line[12 + i];
+        }
+    }
+}
+#endif
+
 // The inputs of instances BLOCK0_INSTANCES[first ...] into the lanes (lanes past the last
 // instance repeat it; their results are not used).
 void gather_0(const T* x, int first, bool cost, V in[30]) {
+#ifndef __SYNTHESIS__
+    T buf[12][LANES];
+    for (int l = 0; l < LANES; ++l) {
+        const int f = BLOCK0_INSTANCES[first + l < 1 ? first + l : 0];
+        const int vb = FACTOR_VAR_BEGIN[f];
+        for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    }
+    for (int i = 0; i < 12; ++i) in[i] = load_lanes(buf[i]);
+    const T (*laned)[LANES] = BLOCK0_LANED[first / LANES];
+    for (int i = 0; i < (cost ? 18 : 12); ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=18
+        in[12 + i] = load_lanes(laned[i]);
+    }
+#else
     T buf[30][LANES];
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK0_INSTANCES[first + l < 1 ? first + l : 0];
@@ -2588,6 +2681,7 @@ void gather_0(const T* x, int first, bool cost, V in[30]) {
 #pragma HLS LOOP_TRIPCOUNT max=30
         in[i] = load_lanes(buf[i]);
     }
+#endif
 }
 
 // block 0, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 33
@@ -2639,9 +2733,41 @@ void cost_of_0(const T* x, int first, T* total) {
     }
 }
 
+#ifndef __SYNTHESIS__
+// The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
+T BLOCK1_LANED[1][4][LANES];
+
+void lane_data_1() {
+    for (int first = 0; first < 1; first += LANES) {
+        T (*laned)[LANES] = BLOCK1_LANED[first / LANES];
+        for (int l = 0; l < LANES; ++l) {
+            const int f = BLOCK1_INSTANCES[first + l < 1 ? first + l : 0];
+            const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
+            for (int i = 0; i < 3; ++i) laned[0 + i][l] = line[0 + i];
+            for (int i = 0; i < 1; ++i) laned[3 + i][l] = line[3 + i];
+        }
+    }
+}
+#endif
+
 // The inputs of instances BLOCK1_INSTANCES[first ...] into the lanes (lanes past the last
 // instance repeat it; their results are not used).
 void gather_1(const T* x, int first, bool cost, V in[7]) {
+#ifndef __SYNTHESIS__
+    T buf[3][LANES];
+    for (int l = 0; l < LANES; ++l) {
+        const int f = BLOCK1_INSTANCES[first + l < 1 ? first + l : 0];
+        const int vb = FACTOR_VAR_BEGIN[f];
+        for (int i = 0; i < 3; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    }
+    for (int i = 0; i < 3; ++i) in[i] = load_lanes(buf[i]);
+    const T (*laned)[LANES] = BLOCK1_LANED[first / LANES];
+    for (int i = 0; i < (cost ? 4 : 3); ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=4
+        in[3 + i] = load_lanes(laned[i]);
+    }
+#else
     T buf[7][LANES];
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK1_INSTANCES[first + l < 1 ? first + l : 0];
@@ -2656,6 +2782,7 @@ void gather_1(const T* x, int first, bool cost, V in[7]) {
 #pragma HLS LOOP_TRIPCOUNT max=7
         in[i] = load_lanes(buf[i]);
     }
+#endif
 }
 
 // block 1, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 6
@@ -2707,9 +2834,41 @@ void cost_of_1(const T* x, int first, T* total) {
     }
 }
 
+#ifndef __SYNTHESIS__
+// The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
+T BLOCK2_LANED[1][7][LANES];
+
+void lane_data_2() {
+    for (int first = 0; first < 1; first += LANES) {
+        T (*laned)[LANES] = BLOCK2_LANED[first / LANES];
+        for (int l = 0; l < LANES; ++l) {
+            const int f = BLOCK2_INSTANCES[first + l < 1 ? first + l : 0];
+            const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
+            for (int i = 0; i < 6; ++i) laned[0 + i][l] = line[0 + i];
+            for (int i = 0; i < 1; ++i) laned[6 + i][l] = line[6 + i];
+        }
+    }
+}
+#endif
+
 // The inputs of instances BLOCK2_INSTANCES[first ...] into the lanes (lanes past the last
 // instance repeat it; their results are not used).
 void gather_2(const T* x, int first, bool cost, V in[13]) {
+#ifndef __SYNTHESIS__
+    T buf[6][LANES];
+    for (int l = 0; l < LANES; ++l) {
+        const int f = BLOCK2_INSTANCES[first + l < 1 ? first + l : 0];
+        const int vb = FACTOR_VAR_BEGIN[f];
+        for (int i = 0; i < 6; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    }
+    for (int i = 0; i < 6; ++i) in[i] = load_lanes(buf[i]);
+    const T (*laned)[LANES] = BLOCK2_LANED[first / LANES];
+    for (int i = 0; i < (cost ? 7 : 6); ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=7
+        in[6 + i] = load_lanes(laned[i]);
+    }
+#else
     T buf[13][LANES];
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK2_INSTANCES[first + l < 1 ? first + l : 0];
@@ -2724,6 +2883,7 @@ void gather_2(const T* x, int first, bool cost, V in[13]) {
 #pragma HLS LOOP_TRIPCOUNT max=13
         in[i] = load_lanes(buf[i]);
     }
+#endif
 }
 
 // block 2, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 12
@@ -2775,9 +2935,48 @@ void cost_of_2(const T* x, int first, T* total) {
     }
 }
 
+#ifndef __SYNTHESIS__
+// The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
+T BLOCK3_LANED[1][211][LANES];
+
+void lane_data_3() {
+    for (int first = 0; first < 7; first += LANES) {
+        T (*laned)[LANES] = BLOCK3_LANED[first / LANES];
+        for (int l = 0; l < LANES; ++l) {
+            const int f = BLOCK3_INSTANCES[first + l < 7 ? first + l : 6];
+            const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
+            for (int i = 0; i < 73; ++i) laned[0 + i][l] = line[0 + i];
+            for (int i = 0; i < 12; ++i) laned[73 + i][l] = line[195 + i];
+            for (int i = 0; i < 120; ++i) laned[85 + i][l] = line[73 + i];
+            for (int i = 0; i < 6; ++i) laned[205 + i][l] = line[207 + i];
+        }
+    }
+}
+#endif
+
 // The inputs of instances BLOCK3_INSTANCES[first ...] into the lanes (lanes past the last
 // instance repeat it; their results are not used).
 void gather_3(const T* x, int first, bool cost, V in[253]) {
+#ifndef __SYNTHESIS__
+    T buf[42][LANES];
+    for (int l = 0; l < LANES; ++l) {
+        const int f = BLOCK3_INSTANCES[first + l < 7 ? first + l : 6];
+        const int vb = FACTOR_VAR_BEGIN[f];
+        for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+        for (int i = 0; i < 3; ++i) buf[12 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 1]] + i];
+        for (int i = 0; i < 12; ++i) buf[15 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 2]] + i];
+        for (int i = 0; i < 3; ++i) buf[27 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 3]] + i];
+        for (int i = 0; i < 6; ++i) buf[30 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 4]] + i];
+        for (int i = 0; i < 6; ++i) buf[36 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 5]] + i];
+    }
+    for (int i = 0; i < 42; ++i) in[i] = load_lanes(buf[i]);
+    const T (*laned)[LANES] = BLOCK3_LANED[first / LANES];
+    for (int i = 0; i < (cost ? 211 : 85); ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=211
+        in[42 + i] = load_lanes(laned[i]);
+    }
+#else
     T buf[253][LANES];
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK3_INSTANCES[first + l < 7 ? first + l : 6];
@@ -2799,6 +2998,7 @@ void gather_3(const T* x, int first, bool cost, V in[253]) {
 #pragma HLS LOOP_TRIPCOUNT max=253
         in[i] = load_lanes(buf[i]);
     }
+#endif
 }
 
 // block 3, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 240
@@ -2872,9 +3072,41 @@ void cost_of_3(const T* x, int first, T* total) {
     }
 }
 
+#ifndef __SYNTHESIS__
+// The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
+T BLOCK4_LANED[1][4][LANES];
+
+void lane_data_4() {
+    for (int first = 0; first < 8; first += LANES) {
+        T (*laned)[LANES] = BLOCK4_LANED[first / LANES];
+        for (int l = 0; l < LANES; ++l) {
+            const int f = BLOCK4_INSTANCES[first + l < 8 ? first + l : 7];
+            const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
+            for (int i = 0; i < 3; ++i) laned[0 + i][l] = line[0 + i];
+            for (int i = 0; i < 1; ++i) laned[3 + i][l] = line[3 + i];
+        }
+    }
+}
+#endif
+
 // The inputs of instances BLOCK4_INSTANCES[first ...] into the lanes (lanes past the last
 // instance repeat it; their results are not used).
 void gather_4(const T* x, int first, bool cost, V in[16]) {
+#ifndef __SYNTHESIS__
+    T buf[12][LANES];
+    for (int l = 0; l < LANES; ++l) {
+        const int f = BLOCK4_INSTANCES[first + l < 8 ? first + l : 7];
+        const int vb = FACTOR_VAR_BEGIN[f];
+        for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    }
+    for (int i = 0; i < 12; ++i) in[i] = load_lanes(buf[i]);
+    const T (*laned)[LANES] = BLOCK4_LANED[first / LANES];
+    for (int i = 0; i < (cost ? 4 : 3); ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=4
+        in[12 + i] = load_lanes(laned[i]);
+    }
+#else
     T buf[16][LANES];
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK4_INSTANCES[first + l < 8 ? first + l : 7];
@@ -2889,6 +3121,7 @@ void gather_4(const T* x, int first, bool cost, V in[16]) {
 #pragma HLS LOOP_TRIPCOUNT max=16
         in[i] = load_lanes(buf[i]);
     }
+#endif
 }
 
 // block 4, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 12
@@ -4348,10 +4581,16 @@ bool solve(T mu) {
                 rhs[r] = row[w] - acc;
             }
             // then the frontal triangle column by column: x_r, and its column out of the rows
-            // above (short dependency chains: one product per row and step)
+            // above (short dependency chains: one product per row and step; the divisions by
+            // the diagonal, independent of each other, are taken out of the chain first)
+            T inv[MAX_F];
+            for (int r = 0; r < f; ++r) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+                inv[r] = T(1) / cond[r * (w + 1) + r];
+            }
             for (int r = f - 1; r >= 0; --r) {
 #pragma HLS LOOP_TRIPCOUNT max=30
-                const T xr = rhs[r] / cond[r * (w + 1) + r];
+                const T xr = rhs[r] * inv[r];
                 xs[r] = xr;
                 for (int i = 0; i < r; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=30
@@ -4475,6 +4714,13 @@ void lio_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=return
     for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
     for (int i = 0; i < fgc::N_DATA; ++i) fgc::DATA_BUF[i] = data[i];
+#ifndef __SYNTHESIS__
+    fgc::lane_data_0();
+    fgc::lane_data_1();
+    fgc::lane_data_2();
+    fgc::lane_data_3();
+    fgc::lane_data_4();
+#endif
     fgc::optimize(errors, info);
     for (int i = 0; i < fgc::N_X; ++i) x_out[i] = fgc::X[i];
 }
