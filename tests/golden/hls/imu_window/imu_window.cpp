@@ -1985,28 +1985,30 @@ void cost_3(const V in[13], T half[LANES][1]) {
 }
 
 // Rows [J | r] of one member (row stride STRIDE, right-hand side in column COLS - 1) ->
-// sqrt(w) * W * [J | -r]: W is 1/sigma (KIND 0), 1/sigma_i (1) or the upper-triangular
+// sqrt(w) * W * [J | -r] in `ab`: W is 1/sigma (KIND 0), 1/sigma_i (1) or the upper-triangular
 // square-root information R (2, parameters row-major); w reweights a robust loss (CODE 1 Huber,
-// 2 Cauchy) at the whitened residual norm, as GTSAM does. Rows are whitened whole (padding and
-// structural zeros stay zero): a short fixed-length vector loop per row.
+// 2 Cauchy) at the whitened residual norm, as GTSAM does. Every entry of `ab` is written (so it
+// needs no zeroing) and `raw` keeps its structural zeros; rows are whitened whole: a short
+// fixed-length vector loop per row.
 template <int STRIDE, int COLS, int ROWS, int KIND>
-void whiten(T* ab, const T* p, T code, T k) {
-    for (int i = 0; i < ROWS; ++i) ab[i * STRIDE + COLS - 1] = -ab[i * STRIDE + COLS - 1];
+void whiten(T* raw, T* ab, const T* p, T code, T k) {
+    for (int i = 0; i < ROWS; ++i) raw[i * STRIDE + COLS - 1] = -raw[i * STRIDE + COLS - 1];
     for (int i = 0; i < ROWS; ++i) {
-        T* row = ab + i * STRIDE;
-        if (KIND == 2) {  // row i = sum over j >= i of R_ij row j (rows j > i still unwhitened)
+        const T* row = raw + i * STRIDE;
+        T* out = ab + i * STRIDE;
+        if (KIND == 2) {  // row i = sum over j >= i of R_ij row j
             const int base = i * ROWS - (i * (i - 1)) / 2 - i;
-            T acc[STRIDE];  // a separate accumulator: row j is read while row i is summed
+            T acc[STRIDE];
             for (int c = 0; c < STRIDE; ++c) acc[c] = row[c] * p[base + i];
             for (int j = i + 1; j < ROWS; ++j) {
                 const T rij = p[base + j];
-                const T* other = ab + j * STRIDE;
+                const T* other = raw + j * STRIDE;
                 for (int c = 0; c < STRIDE; ++c) acc[c] += rij * other[c];
             }
-            for (int c = 0; c < STRIDE; ++c) row[c] = acc[c];
+            for (int c = 0; c < STRIDE; ++c) out[c] = acc[c];
         } else {
             const T s = KIND == 1 ? p[i] : p[0];
-            for (int c = 0; c < STRIDE; ++c) row[c] *= s;
+            for (int c = 0; c < STRIDE; ++c) out[c] = row[c] * s;
         }
     }
     if (code == T(0)) return;
@@ -2209,18 +2211,18 @@ void gather_0(const T* x, int first, bool cost, V in[235]) {
 bool linearize_0(const T* x, int first, T* noise) {
     V in[235];
     gather_0(x, first, false, in);
-    static T ab[LANES][480];  // rows [J | r] padded to 32: whole tiles
-    for (int l = 0; l < LANES; ++l) {
-        for (int i = 0; i < 480; ++i) ab[l][i] = T(0);
-    }
-    jacobian_0(in, ab);
+    // rows [J | r] padded to 32 (whole tiles): the Jacobian writes only its structural
+    // non-zeros, so the zeros this buffer starts with are never overwritten
+    static T raw[LANES][480];
+    static T ab[LANES][480];  // the whitened rows, every entry written
+    jacobian_0(in, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 7) continue;
         const int f = BLOCK0_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<32, 31, 15, 2>(ab[l] + 0, line + 73, line[193], line[194]);
+        whiten<32, 31, 15, 2>(raw[l] + 0, ab[l] + 0, line + 73, line[193], line[194]);
         T scale[32];  // per column: largest storage entry of its variable (0: b, padding)
         int col[30];  // per column: its tangent entry
         for (int c = 0; c < 32; ++c) scale[c] = T(0);
@@ -2327,18 +2329,18 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
 bool linearize_1(const T* x, int first, T* noise) {
     V in[25];
     gather_1(x, first, false, in);
-    static T ab[LANES][48];  // rows [J | r] padded to 8: whole tiles
-    for (int l = 0; l < LANES; ++l) {
-        for (int i = 0; i < 48; ++i) ab[l][i] = T(0);
-    }
-    jacobian_1(in, ab);
+    // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
+    // non-zeros, so the zeros this buffer starts with are never overwritten
+    static T raw[LANES][48];
+    static T ab[LANES][48];  // the whitened rows, every entry written
+    jacobian_1(in, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const int f = BLOCK1_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<8, 7, 6, 0>(ab[l] + 0, line + 12, line[13], line[14]);
+        whiten<8, 7, 6, 0>(raw[l] + 0, ab[l] + 0, line + 12, line[13], line[14]);
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         int col[6];  // per column: its tangent entry
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
@@ -2425,18 +2427,18 @@ void gather_2(const T* x, int first, bool cost, V in[7]) {
 bool linearize_2(const T* x, int first, T* noise) {
     V in[7];
     gather_2(x, first, false, in);
-    static T ab[LANES][12];  // rows [J | r] padded to 4: whole tiles
-    for (int l = 0; l < LANES; ++l) {
-        for (int i = 0; i < 12; ++i) ab[l][i] = T(0);
-    }
-    jacobian_2(in, ab);
+    // rows [J | r] padded to 4 (whole tiles): the Jacobian writes only its structural
+    // non-zeros, so the zeros this buffer starts with are never overwritten
+    static T raw[LANES][12];
+    static T ab[LANES][12];  // the whitened rows, every entry written
+    jacobian_2(in, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const int f = BLOCK2_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<4, 4, 3, 0>(ab[l] + 0, line + 3, line[4], line[5]);
+        whiten<4, 4, 3, 0>(raw[l] + 0, ab[l] + 0, line + 3, line[4], line[5]);
         T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
         int col[3];  // per column: its tangent entry
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
@@ -2523,18 +2525,18 @@ void gather_3(const T* x, int first, bool cost, V in[13]) {
 bool linearize_3(const T* x, int first, T* noise) {
     V in[13];
     gather_3(x, first, false, in);
-    static T ab[LANES][48];  // rows [J | r] padded to 8: whole tiles
-    for (int l = 0; l < LANES; ++l) {
-        for (int i = 0; i < 48; ++i) ab[l][i] = T(0);
-    }
-    jacobian_3(in, ab);
+    // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
+    // non-zeros, so the zeros this buffer starts with are never overwritten
+    static T raw[LANES][48];
+    static T ab[LANES][48];  // the whitened rows, every entry written
+    jacobian_3(in, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const int f = BLOCK3_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<8, 7, 6, 0>(ab[l] + 0, line + 6, line[7], line[8]);
+        whiten<8, 7, 6, 0>(raw[l] + 0, ab[l] + 0, line + 6, line[7], line[8]);
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         int col[6];  // per column: its tangent entry
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
