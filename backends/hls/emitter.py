@@ -10,6 +10,7 @@ g++.
 from __future__ import annotations
 
 import dataclasses
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -52,6 +53,15 @@ class HlsProject:
     config: HlsConfig
 
 
+_LITERAL = re.compile(r"\(?-?T\([-+0-9.eE]+\)\)?")
+
+
+def is_constant_literal(expr: str) -> bool:
+    """Whether a printed kernel output is a plain constant of T (``T(1)``, ``(-T(1))``): a
+    scalar, not a V, so the kernel stores it as it is."""
+    return _LITERAL.fullmatch(expr) is not None
+
+
 def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
          name: str | None = None) -> HlsProject:
     """Write the HLS project of ``program`` into ``out_dir`` (created if needed).
@@ -68,6 +78,7 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
                              undefined=jinja2.StrictUndefined, trim_blocks=True,
                              lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+    env.tests["constant_literal"] = is_constant_literal
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     paths = []
