@@ -2238,57 +2238,36 @@ void whiten(T* raw, T* ab, const T* p, T code, T k) {
     for (int i = 0; i < ROWS * STRIDE; ++i) ab[i] *= s;
 }
 
-// Whitened rows [A | b] (ROWS of STRIDE, b in column COLS - 1) -> the local gradient A^T b
-// (column c into G[col[c]]) and a bound on the cost's rounding noise: row r moves by up to
-// m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, the cost by |b_r| m_r + m_r^2 / 2, and
-// sum_r m_r^2 <= eps^2 |A|_F^2 |scale|^2. Every sum runs down the columns (one row per step,
-// whole vectors), then across them in TILE partial sums: a fixed order. False if an entry is
-// infinite or NaN.
-template <int STRIDE, int COLS, int ROWS>
-bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
-    T g[STRIDE], moved[STRIDE], square[STRIDE], check[STRIDE];
-    for (int c = 0; c < STRIDE; ++c) {
-        g[c] = T(0);
-        moved[c] = T(0);
-        square[c] = T(0);
-        check[c] = T(0);
-    }
-    for (int r = 0; r < ROWS; ++r) {
-        const T* row = ab + r * STRIDE;
-        const T b = row[COLS - 1], b_abs = fgc_abs(b);
-        for (int c = 0; c < STRIDE; ++c) {
-            g[c] += row[c] * b;
-            moved[c] += fgc_abs(row[c]) * b_abs;
-            square[c] += row[c] * row[c];
-            check[c] += row[c] - row[c];  // 0, or NaN for inf / NaN
-        }
-    }
-    T lin[TILE], frob[TILE], s2[TILE], bad[TILE];
+// The cost's rounding noise, bounded from column norms: row r moves by up to
+// m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, the cost by |b_r| m_r + m_r^2 / 2;
+// sum_r |b_r| m_r <= eps |b| sum_c scale_c |A_c| and sum_r m_r^2 <= eps^2 |A|_F^2 |scale|^2
+// (Cauchy-Schwarz), so only the squared column norms n2[c] = |A_c|^2 (b in column COLS - 1) are
+// needed: the Gram's diagonal. Sums in TILE partial sums: a fixed order.
+template <int STRIDE, int COLS>
+T noise_bound(const T n2[STRIDE], const T scale[STRIDE]) {
+    T lin[TILE], frob[TILE], s2[TILE];
     for (int t = 0; t < TILE; ++t) {
         lin[t] = T(0);
         frob[t] = T(0);
         s2[t] = T(0);
-        bad[t] = T(0);
     }
     for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
         for (int t = 0; t < TILE; ++t) {
             const int c = c0 + t;
-            lin[t] += scale[c] * moved[c];  // scale 0: b and padding
-            frob[t] += c == COLS - 1 ? T(0) : square[c];
+            lin[t] += scale[c] * fgc_sqrt(n2[c]);  // scale 0: b and padding
+            frob[t] += c == COLS - 1 ? T(0) : n2[c];
             s2[t] += scale[c] * scale[c];
-            bad[t] += check[c];
         }
     }
     for (int t = 1; t < TILE; ++t) {
         lin[0] += lin[t];
         frob[0] += frob[t];
         s2[0] += s2[t];
-        bad[0] += bad[t];
     }
-    for (int c = 0; c < COLS - 1; ++c) G[col[c]] += g[c];
-    *noise += EPSILON * lin[0] + T(0.5) * (EPSILON * EPSILON * frob[0]) * s2[0];
-    return fgc_isfinite(bad[0]);
+    return EPSILON * fgc_sqrt(n2[COLS - 1]) * lin[0]
+           + T(0.5) * (EPSILON * EPSILON * frob[0]) * s2[0];
 }
+
 
 // HGC (paper B): the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p < COLS, at
 // p (p + 1) / 2 + q) of rows of STRIDE. The block's non-zero TILE x TILE tiles come in panels
@@ -2351,6 +2330,22 @@ void gram(const T* ab, const int* tiles, const int* rows, L* out) {
 #pragma HLS LOOP_TRIPCOUNT max=COLS
         out[(COLS - 1) * COLS / 2 + q] = sq[(COLS - 1) * STRIDE + q];
     }
+}
+
+// From one instance's packed Gram of [A | b] (row COLS - 1 is b^T A, then b^T b): the local
+// gradient A^T b (column c into G[col[c]]) and the noise bound from the diagonal (the squared
+// column norms). False if the Gram is not finite: a NaN or infinity anywhere in [A | b] makes
+// its column's diagonal entry one.
+template <int STRIDE, int COLS>
+bool from_gram(const L* h, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
+    const L* brow = h + (COLS - 1) * COLS / 2;
+    for (int c = 0; c < COLS - 1; ++c) G[col[c]] += T(brow[c]);
+    T n2[STRIDE];
+    for (int c = 0; c < STRIDE; ++c) n2[c] = c < COLS ? T(h[c * (c + 1) / 2 + c]) : T(0);
+    T check = T(0);
+    for (int c = 0; c < COLS; ++c) check += n2[c];
+    *noise += noise_bound<STRIDE, COLS>(n2, scale);
+    return fgc_isfinite(check);
 }
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
@@ -2468,8 +2463,9 @@ bool linearize_0(const T* x, int first, T* noise) {
             scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
             col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
         }
-        finite = accumulate<32, 31, 15>(ab[l], scale, col, noise) && finite;
-        gram<32, 31, 15, 20, 36>(ab[l], BLOCK0_TILES, BLOCK0_TILE_ROWS, GRAM + FACTOR_GRAM_OFF[f]);
+        L* h = GRAM + FACTOR_GRAM_OFF[f];
+        gram<32, 31, 15, 20, 36>(ab[l], BLOCK0_TILES, BLOCK0_TILE_ROWS, h);
+        finite = from_gram<32, 31>(h, scale, col, noise) && finite;
     }
     return finite;
 }
@@ -2566,8 +2562,9 @@ bool linearize_1(const T* x, int first, T* noise) {
             scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
             col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         }
-        finite = accumulate<8, 7, 6>(ab[l], scale, col, noise) && finite;
-        gram<8, 7, 6, 2, 3>(ab[l], BLOCK1_TILES, BLOCK1_TILE_ROWS, GRAM + FACTOR_GRAM_OFF[f]);
+        L* h = GRAM + FACTOR_GRAM_OFF[f];
+        gram<8, 7, 6, 2, 3>(ab[l], BLOCK1_TILES, BLOCK1_TILE_ROWS, h);
+        finite = from_gram<8, 7>(h, scale, col, noise) && finite;
     }
     return finite;
 }
@@ -2664,8 +2661,9 @@ bool linearize_2(const T* x, int first, T* noise) {
             scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
             col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         }
-        finite = accumulate<4, 4, 3>(ab[l], scale, col, noise) && finite;
-        gram<4, 4, 3, 1, 1>(ab[l], BLOCK2_TILES, BLOCK2_TILE_ROWS, GRAM + FACTOR_GRAM_OFF[f]);
+        L* h = GRAM + FACTOR_GRAM_OFF[f];
+        gram<4, 4, 3, 1, 1>(ab[l], BLOCK2_TILES, BLOCK2_TILE_ROWS, h);
+        finite = from_gram<4, 4>(h, scale, col, noise) && finite;
     }
     return finite;
 }
@@ -2762,8 +2760,9 @@ bool linearize_3(const T* x, int first, T* noise) {
             scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
             col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         }
-        finite = accumulate<8, 7, 6>(ab[l], scale, col, noise) && finite;
-        gram<8, 7, 6, 2, 3>(ab[l], BLOCK3_TILES, BLOCK3_TILE_ROWS, GRAM + FACTOR_GRAM_OFF[f]);
+        L* h = GRAM + FACTOR_GRAM_OFF[f];
+        gram<8, 7, 6, 2, 3>(ab[l], BLOCK3_TILES, BLOCK3_TILE_ROWS, h);
+        finite = from_gram<8, 7>(h, scale, col, noise) && finite;
     }
     return finite;
 }

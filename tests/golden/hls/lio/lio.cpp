@@ -2867,55 +2867,64 @@ void whiten(T* raw, T* ab, const T* p, T code, T k) {
     for (int i = 0; i < ROWS * STRIDE; ++i) ab[i] *= s;
 }
 
-// Whitened rows [A | b] (ROWS of STRIDE, b in column COLS - 1) -> the local gradient A^T b
-// (column c into G[col[c]]) and a bound on the cost's rounding noise: row r moves by up to
-// m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, the cost by |b_r| m_r + m_r^2 / 2, and
-// sum_r m_r^2 <= eps^2 |A|_F^2 |scale|^2. Every sum runs down the columns (one row per step,
-// whole vectors), then across them in TILE partial sums: a fixed order. False if an entry is
-// infinite or NaN.
-template <int STRIDE, int COLS, int ROWS>
-bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
-    T g[STRIDE], moved[STRIDE], square[STRIDE], check[STRIDE];
-    for (int c = 0; c < STRIDE; ++c) {
-        g[c] = T(0);
-        moved[c] = T(0);
-        square[c] = T(0);
-        check[c] = T(0);
-    }
-    for (int r = 0; r < ROWS; ++r) {
-        const T* row = ab + r * STRIDE;
-        const T b = row[COLS - 1], b_abs = fgc_abs(b);
-        for (int c = 0; c < STRIDE; ++c) {
-            g[c] += row[c] * b;
-            moved[c] += fgc_abs(row[c]) * b_abs;
-            square[c] += row[c] * row[c];
-            check[c] += row[c] - row[c];  // 0, or NaN for inf / NaN
-        }
-    }
-    T lin[TILE], frob[TILE], s2[TILE], bad[TILE];
+// The cost's rounding noise, bounded from column norms: row r moves by up to
+// m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, the cost by |b_r| m_r + m_r^2 / 2;
+// sum_r |b_r| m_r <= eps |b| sum_c scale_c |A_c| and sum_r m_r^2 <= eps^2 |A|_F^2 |scale|^2
+// (Cauchy-Schwarz), so only the squared column norms n2[c] = |A_c|^2 (b in column COLS - 1) are
+// needed: the Gram's diagonal. Sums in TILE partial sums: a fixed order.
+template <int STRIDE, int COLS>
+T noise_bound(const T n2[STRIDE], const T scale[STRIDE]) {
+    T lin[TILE], frob[TILE], s2[TILE];
     for (int t = 0; t < TILE; ++t) {
         lin[t] = T(0);
         frob[t] = T(0);
         s2[t] = T(0);
-        bad[t] = T(0);
     }
     for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
         for (int t = 0; t < TILE; ++t) {
             const int c = c0 + t;
-            lin[t] += scale[c] * moved[c];  // scale 0: b and padding
-            frob[t] += c == COLS - 1 ? T(0) : square[c];
+            lin[t] += scale[c] * fgc_sqrt(n2[c]);  // scale 0: b and padding
+            frob[t] += c == COLS - 1 ? T(0) : n2[c];
             s2[t] += scale[c] * scale[c];
-            bad[t] += check[c];
         }
     }
     for (int t = 1; t < TILE; ++t) {
         lin[0] += lin[t];
         frob[0] += frob[t];
         s2[0] += s2[t];
-        bad[0] += bad[t];
     }
+    return EPSILON * fgc_sqrt(n2[COLS - 1]) * lin[0]
+           + T(0.5) * (EPSILON * EPSILON * frob[0]) * s2[0];
+}
+
+// Whitened rows [A | b] (ROWS of STRIDE, b in column COLS - 1) -> the local gradient A^T b
+// (column c into G[col[c]]) and the noise bound from its column norms, summed down the columns
+// (one row per step, whole vectors). False if an entry is infinite or NaN.
+template <int STRIDE, int COLS, int ROWS>
+bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
+    T g[STRIDE], square[STRIDE], check[STRIDE];
+    for (int c = 0; c < STRIDE; ++c) {
+        g[c] = T(0);
+        square[c] = T(0);
+        check[c] = T(0);
+    }
+    for (int r = 0; r < ROWS; ++r) {
+        const T* row = ab + r * STRIDE;
+        const T b = row[COLS - 1];
+        for (int c = 0; c < STRIDE; ++c) {
+            g[c] += row[c] * b;
+            square[c] += row[c] * row[c];
+            check[c] += row[c] - row[c];  // 0, or NaN for inf / NaN
+        }
+    }
+    T bad[TILE];
+    for (int t = 0; t < TILE; ++t) bad[t] = T(0);
+    for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
+        for (int t = 0; t < TILE; ++t) bad[t] += check[c0 + t];
+    }
+    for (int t = 1; t < TILE; ++t) bad[0] += bad[t];
     for (int c = 0; c < COLS - 1; ++c) G[col[c]] += g[c];
-    *noise += EPSILON * lin[0] + T(0.5) * (EPSILON * EPSILON * frob[0]) * s2[0];
+    *noise += noise_bound<STRIDE, COLS>(square, scale);
     return fgc_isfinite(bad[0]);
 }
 

@@ -118,18 +118,21 @@ def les_dtype(dtype, linear_precision):
 def cost_noise(problem, x, parts):
     """A bound on how much the cost changes when x is rounded to the working precision: each
     whitened residual row r moves by up to m_r = eps·Σ_j|A_rj|·scale_j (scale_j: the largest
-    storage entry of column j's variable, at least 1), changing the cost by |b_r|·m_r + ½·m_r²;
-    per factor instance Σ_r m_r² ≤ eps²·‖A‖_F²·‖scale‖², the form the kernel sums down its
-    columns. ``parts`` pairs rows [A | b] (instances × rows × (columns + 1)) with their global
+    storage entry of column j's variable, at least 1), changing the cost by |b_r|·m_r + ½·m_r².
+    By Cauchy–Schwarz, per factor instance Σ_r |b_r|·m_r ≤ eps·‖b‖·Σ_j scale_j·‖A_j‖ and
+    Σ_r m_r² ≤ eps²·‖A‖_F²·‖scale‖²: only column norms, which the kernel reads off the Gram's
+    diagonal. ``parts`` pairs rows [A | b] (instances × rows × (columns + 1)) with their global
     tangent columns."""
     scale = numpy.maximum(numpy.maximum.reduceat(numpy.abs(x), problem.x_off[:-1]), 1)
     columns = numpy.repeat(scale, problem.spec["variable_dims"]).astype(problem.dtype)
     eps, total = numpy.finfo(problem.dtype).eps, 0.0
     for ab, cols in parts:
-        a, s = ab[..., :-1], columns[cols]
-        linear = numpy.einsum("nmd,nm,nd->", numpy.abs(a), numpy.abs(ab[..., -1]), s)
-        square = numpy.einsum("nmd,nmd->n", a, a) * numpy.einsum("nd,nd->n", s, s)
-        total += float(eps * linear + 0.5 * eps * eps * numpy.sum(square))
+        norms2 = numpy.einsum("nmd,nmd->nd", ab, ab)  # squared column norms, b last
+        s = columns[cols]
+        linear = numpy.sqrt(norms2[:, -1]) * numpy.einsum("nd,nd->n", s,
+                                                           numpy.sqrt(norms2[:, :-1]))
+        square = numpy.sum(norms2[:, :-1], axis=1) * numpy.einsum("nd,nd->n", s, s)
+        total += float(numpy.sum(eps * linear + 0.5 * eps * eps * square))
     return total
 
 
