@@ -2238,34 +2238,34 @@ void whiten(T* raw, T* ab, const T* p, T code, T k) {
     for (int i = 0; i < ROWS * STRIDE; ++i) ab[i] *= s;
 }
 
-// The cost's rounding noise, bounded from column norms: row r moves by up to
-// m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, the cost by |b_r| m_r + m_r^2 / 2;
-// sum_r |b_r| m_r <= eps |b| sum_c scale_c |A_c| and sum_r m_r^2 <= eps^2 |A|_F^2 |scale|^2
-// (Cauchy-Schwarz), so only the squared column norms n2[c] = |A_c|^2 (b in column COLS - 1) are
-// needed: the Gram's diagonal. Sums in TILE partial sums: a fixed order.
-template <int STRIDE, int COLS>
-T noise_bound(const T n2[STRIDE], const T scale[STRIDE]) {
-    T lin[TILE], frob[TILE], s2[TILE];
-    for (int t = 0; t < TILE; ++t) {
-        lin[t] = T(0);
-        frob[t] = T(0);
-        s2[t] = T(0);
+// The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
+// moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
+// |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
+// partial sums: a fixed order, and no chain from row to row.
+template <int STRIDE, int COLS, int ROWS>
+T rounding_noise(const T* ab, const T scale[STRIDE]) {
+    T moved[ROWS], b_abs[ROWS];
+    for (int r = 0; r < ROWS; ++r) {
+        const T* row = ab + r * STRIDE;
+        T part[TILE];
+        for (int t = 0; t < TILE; ++t) part[t] = T(0);
+        for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
+            for (int t = 0; t < TILE; ++t) part[t] += fgc_abs(row[c0 + t]) * scale[c0 + t];
+        }
+        moved[r] = EPSILON * ((part[0] + part[1]) + (part[2] + part[3]));  // scale 0: b, padding
+        b_abs[r] = fgc_abs(row[COLS - 1]);
     }
-    for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
+    T sum[TILE];
+    for (int t = 0; t < TILE; ++t) sum[t] = T(0);
+    for (int r0 = 0; r0 < ROWS; r0 += TILE) {
         for (int t = 0; t < TILE; ++t) {
-            const int c = c0 + t;
-            lin[t] += scale[c] * fgc_sqrt(n2[c]);  // scale 0: b and padding
-            frob[t] += c == COLS - 1 ? T(0) : n2[c];
-            s2[t] += scale[c] * scale[c];
+            if (r0 + t < ROWS) {
+                const T m = moved[r0 + t];
+                sum[t] += b_abs[r0 + t] * m + T(0.5) * m * m;
+            }
         }
     }
-    for (int t = 1; t < TILE; ++t) {
-        lin[0] += lin[t];
-        frob[0] += frob[t];
-        s2[0] += s2[t];
-    }
-    return EPSILON * fgc_sqrt(n2[COLS - 1]) * lin[0]
-           + T(0.5) * (EPSILON * EPSILON * frob[0]) * s2[0];
+    return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
 
@@ -2333,19 +2333,15 @@ void gram(const T* ab, const int* tiles, const int* rows, L* out) {
 }
 
 // From one instance's packed Gram of [A | b] (row COLS - 1 is b^T A, then b^T b): the local
-// gradient A^T b (column c into G[col[c]]) and the noise bound from the diagonal (the squared
-// column norms). False if the Gram is not finite: a NaN or infinity anywhere in [A | b] makes
-// its column's diagonal entry one.
-template <int STRIDE, int COLS>
-bool from_gram(const L* h, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
+// gradient A^T b (column c into G[col[c]]). False if the Gram is not finite: a NaN or infinity
+// anywhere in [A | b] makes its column's diagonal entry one.
+template <int COLS>
+bool gradient_from_gram(const L* h, const int col[COLS - 1]) {
     const L* brow = h + (COLS - 1) * COLS / 2;
     for (int c = 0; c < COLS - 1; ++c) G[col[c]] += T(brow[c]);
-    T n2[STRIDE];
-    for (int c = 0; c < STRIDE; ++c) n2[c] = c < COLS ? T(h[c * (c + 1) / 2 + c]) : T(0);
-    T check = T(0);
-    for (int c = 0; c < COLS; ++c) check += n2[c];
-    *noise += noise_bound<STRIDE, COLS>(n2, scale);
-    return fgc_isfinite(check);
+    L check = L(0);
+    for (int c = 0; c < COLS; ++c) check += h[c * (c + 1) / 2 + c];
+    return fgc_isfinite(T(check));
 }
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
@@ -2465,7 +2461,8 @@ bool linearize_0(const T* x, int first, T* noise) {
         }
         L* h = GRAM + FACTOR_GRAM_OFF[f];
         gram<32, 31, 15, 20, 36>(ab[l], BLOCK0_TILES, BLOCK0_TILE_ROWS, h);
-        finite = from_gram<32, 31>(h, scale, col, noise) && finite;
+        finite = gradient_from_gram<31>(h, col) && finite;
+        *noise += rounding_noise<32, 31, 15>(ab[l], scale);
     }
     return finite;
 }
@@ -2564,7 +2561,8 @@ bool linearize_1(const T* x, int first, T* noise) {
         }
         L* h = GRAM + FACTOR_GRAM_OFF[f];
         gram<8, 7, 6, 2, 3>(ab[l], BLOCK1_TILES, BLOCK1_TILE_ROWS, h);
-        finite = from_gram<8, 7>(h, scale, col, noise) && finite;
+        finite = gradient_from_gram<7>(h, col) && finite;
+        *noise += rounding_noise<8, 7, 6>(ab[l], scale);
     }
     return finite;
 }
@@ -2663,7 +2661,8 @@ bool linearize_2(const T* x, int first, T* noise) {
         }
         L* h = GRAM + FACTOR_GRAM_OFF[f];
         gram<4, 4, 3, 1, 1>(ab[l], BLOCK2_TILES, BLOCK2_TILE_ROWS, h);
-        finite = from_gram<4, 4>(h, scale, col, noise) && finite;
+        finite = gradient_from_gram<4>(h, col) && finite;
+        *noise += rounding_noise<4, 4, 3>(ab[l], scale);
     }
     return finite;
 }
@@ -2762,7 +2761,8 @@ bool linearize_3(const T* x, int first, T* noise) {
         }
         L* h = GRAM + FACTOR_GRAM_OFF[f];
         gram<8, 7, 6, 2, 3>(ab[l], BLOCK3_TILES, BLOCK3_TILE_ROWS, h);
-        finite = from_gram<8, 7>(h, scale, col, noise) && finite;
+        finite = gradient_from_gram<7>(h, col) && finite;
+        *noise += rounding_noise<8, 7, 6>(ab[l], scale);
     }
     return finite;
 }

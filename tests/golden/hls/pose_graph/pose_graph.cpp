@@ -1220,45 +1220,44 @@ void whiten(T* raw, T* ab, const T* p, T code, T k) {
     for (int i = 0; i < ROWS * STRIDE; ++i) ab[i] *= s;
 }
 
-// The cost's rounding noise, bounded from column norms: row r moves by up to
-// m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, the cost by |b_r| m_r + m_r^2 / 2;
-// sum_r |b_r| m_r <= eps |b| sum_c scale_c |A_c| and sum_r m_r^2 <= eps^2 |A|_F^2 |scale|^2
-// (Cauchy-Schwarz), so only the squared column norms n2[c] = |A_c|^2 (b in column COLS - 1) are
-// needed: the Gram's diagonal. Sums in TILE partial sums: a fixed order.
-template <int STRIDE, int COLS>
-T noise_bound(const T n2[STRIDE], const T scale[STRIDE]) {
-    T lin[TILE], frob[TILE], s2[TILE];
-    for (int t = 0; t < TILE; ++t) {
-        lin[t] = T(0);
-        frob[t] = T(0);
-        s2[t] = T(0);
+// The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
+// moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
+// |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
+// partial sums: a fixed order, and no chain from row to row.
+template <int STRIDE, int COLS, int ROWS>
+T rounding_noise(const T* ab, const T scale[STRIDE]) {
+    T moved[ROWS], b_abs[ROWS];
+    for (int r = 0; r < ROWS; ++r) {
+        const T* row = ab + r * STRIDE;
+        T part[TILE];
+        for (int t = 0; t < TILE; ++t) part[t] = T(0);
+        for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
+            for (int t = 0; t < TILE; ++t) part[t] += fgc_abs(row[c0 + t]) * scale[c0 + t];
+        }
+        moved[r] = EPSILON * ((part[0] + part[1]) + (part[2] + part[3]));  // scale 0: b, padding
+        b_abs[r] = fgc_abs(row[COLS - 1]);
     }
-    for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
+    T sum[TILE];
+    for (int t = 0; t < TILE; ++t) sum[t] = T(0);
+    for (int r0 = 0; r0 < ROWS; r0 += TILE) {
         for (int t = 0; t < TILE; ++t) {
-            const int c = c0 + t;
-            lin[t] += scale[c] * fgc_sqrt(n2[c]);  // scale 0: b and padding
-            frob[t] += c == COLS - 1 ? T(0) : n2[c];
-            s2[t] += scale[c] * scale[c];
+            if (r0 + t < ROWS) {
+                const T m = moved[r0 + t];
+                sum[t] += b_abs[r0 + t] * m + T(0.5) * m * m;
+            }
         }
     }
-    for (int t = 1; t < TILE; ++t) {
-        lin[0] += lin[t];
-        frob[0] += frob[t];
-        s2[0] += s2[t];
-    }
-    return EPSILON * fgc_sqrt(n2[COLS - 1]) * lin[0]
-           + T(0.5) * (EPSILON * EPSILON * frob[0]) * s2[0];
+    return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// Whitened rows [A | b] (ROWS of STRIDE, b in column COLS - 1) -> the local gradient A^T b
-// (column c into G[col[c]]) and the noise bound from its column norms, summed down the columns
-// (one row per step, whole vectors). False if an entry is infinite or NaN.
+// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]], summed down the
+// columns: one row per step, whole vectors) and the cost's rounding noise. False if an entry is
+// infinite or NaN.
 template <int STRIDE, int COLS, int ROWS>
 bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
-    T g[STRIDE], square[STRIDE], check[STRIDE];
+    T g[STRIDE], check[STRIDE];
     for (int c = 0; c < STRIDE; ++c) {
         g[c] = T(0);
-        square[c] = T(0);
         check[c] = T(0);
     }
     for (int r = 0; r < ROWS; ++r) {
@@ -1266,7 +1265,6 @@ bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* 
         const T b = row[COLS - 1];
         for (int c = 0; c < STRIDE; ++c) {
             g[c] += row[c] * b;
-            square[c] += row[c] * row[c];
             check[c] += row[c] - row[c];  // 0, or NaN for inf / NaN
         }
     }
@@ -1275,10 +1273,9 @@ bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* 
     for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
         for (int t = 0; t < TILE; ++t) bad[t] += check[c0 + t];
     }
-    for (int t = 1; t < TILE; ++t) bad[0] += bad[t];
     for (int c = 0; c < COLS - 1; ++c) G[col[c]] += g[c];
-    *noise += noise_bound<STRIDE, COLS>(square, scale);
-    return fgc_isfinite(bad[0]);
+    *noise += rounding_noise<STRIDE, COLS, ROWS>(ab, scale);
+    return fgc_isfinite((bad[0] + bad[1]) + (bad[2] + bad[3]));
 }
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).

@@ -116,23 +116,16 @@ def les_dtype(dtype, linear_precision):
 
 
 def cost_noise(problem, x, parts):
-    """A bound on how much the cost changes when x is rounded to the working precision: each
-    whitened residual row r moves by up to m_r = eps·Σ_j|A_rj|·scale_j (scale_j: the largest
-    storage entry of column j's variable, at least 1), changing the cost by |b_r|·m_r + ½·m_r².
-    By Cauchy–Schwarz, per factor instance Σ_r |b_r|·m_r ≤ eps·‖b‖·Σ_j scale_j·‖A_j‖ and
-    Σ_r m_r² ≤ eps²·‖A‖_F²·‖scale‖²: only column norms, which the kernel reads off the Gram's
-    diagonal. ``parts`` pairs rows [A | b] (instances × rows × (columns + 1)) with their global
-    tangent columns."""
+    """How much the cost changes when x is rounded to the working precision: each whitened
+    residual row moves by up to eps·Σ|A_ij|·scale_j (scale_j: the largest storage entry of
+    column j's variable, at least 1), changing the cost by |b|·that + ½·that². ``parts`` pairs
+    rows [A | b] (instances × rows × (columns + 1)) with their global tangent columns."""
     scale = numpy.maximum(numpy.maximum.reduceat(numpy.abs(x), problem.x_off[:-1]), 1)
     columns = numpy.repeat(scale, problem.spec["variable_dims"]).astype(problem.dtype)
     eps, total = numpy.finfo(problem.dtype).eps, 0.0
     for ab, cols in parts:
-        norms2 = numpy.einsum("nmd,nmd->nd", ab, ab)  # squared column norms, b last
-        s = columns[cols]
-        linear = numpy.sqrt(norms2[:, -1]) * numpy.einsum("nd,nd->n", s,
-                                                           numpy.sqrt(norms2[:, :-1]))
-        square = numpy.sum(norms2[:, :-1], axis=1) * numpy.einsum("nd,nd->n", s, s)
-        total += float(numpy.sum(eps * linear + 0.5 * eps * eps * square))
+        moved = eps * numpy.einsum("nmd,nd->nm", numpy.abs(ab[..., :-1]), columns[cols])
+        total += float(numpy.sum(numpy.abs(ab[..., -1]) * moved + 0.5 * moved * moved))
     return total
 
 
