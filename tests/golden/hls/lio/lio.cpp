@@ -11,6 +11,14 @@
 
 #include <cstring>
 
+// Inlined where it is called on the host (GCC keeps small fixed-size arrays in registers, and
+// never splits a function returning a vector off as a call); HLS inlines by its own pragmas
+#if defined(__GNUC__) && !defined(__SYNTHESIS__)
+#define FGC_INLINE __attribute__((always_inline)) inline
+#else
+#define FGC_INLINE inline
+#endif
+
 namespace fgc {
 namespace {
 
@@ -367,52 +375,52 @@ inline V v_fgc_atan(const V& x) { return lanewise<fgc_atan>(x); }
 inline V v_fgc_exp(const V& x) { return lanewise<fgc_exp>(x); }
 inline V v_fgc_log(const V& x) { return lanewise<fgc_log>(x); }
 // The coefficients' series (every lane below the switch, the usual case) in whole vectors: the
-// same operations lane by lane as the scalar lie_* make, so the same numbers. Always inlined:
-// GCC would otherwise split off the scalar fallback as a function returning V, which a build
+// same operations lane by lane as the scalar lie_* make, so the same numbers. FGC_INLINE: GCC
+// would otherwise split off the scalar fallback as a function returning V, which a build
 // without AVX warns about (-Wpsabi, not silenced by the pragma above)
-__attribute__((always_inline)) inline V v_lie_A(const V& t) {
+FGC_INLINE V v_lie_A(const V& t) {
     bool series = true;
     for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
     if (series) return T(1.0) + t*(T(-0.16666666666666666) + t*(T(0.008333333333333333) + t*(T(-0.0001984126984126984) + t*(T(2.7557319223985893e-06) + t*(T(-2.505210838544172e-08) + t*(T(1.6059043836821613e-10) + t*(T(-7.647163731819816e-13) + t*(T(2.8114572543455206e-15) + t*(T(-8.22063524662433e-18) + t*(T(1.9572941063391263e-20) + t*(T(-3.868170170630684e-23))))))))))));
     return lanewise<lie_A>(t);
 }
-__attribute__((always_inline)) inline V v_lie_B(const V& t) {
+FGC_INLINE V v_lie_B(const V& t) {
     bool series = true;
     for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
     if (series) return T(0.5) + t*(T(-0.041666666666666664) + t*(T(0.001388888888888889) + t*(T(-2.48015873015873e-05) + t*(T(2.755731922398589e-07) + t*(T(-2.08767569878681e-09) + t*(T(1.1470745597729725e-11) + t*(T(-4.779477332387385e-14) + t*(T(1.5619206968586225e-16) + t*(T(-4.110317623312165e-19) + t*(T(8.896791392450574e-22) + t*(T(-1.6117375710961184e-24))))))))))));
     return lanewise<lie_B>(t);
 }
-__attribute__((always_inline)) inline V v_lie_C(const V& t) {
+FGC_INLINE V v_lie_C(const V& t) {
     bool series = true;
     for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
     if (series) return T(0.16666666666666666) + t*(T(-0.008333333333333333) + t*(T(0.0001984126984126984) + t*(T(-2.7557319223985893e-06) + t*(T(2.505210838544172e-08) + t*(T(-1.6059043836821613e-10) + t*(T(7.647163731819816e-13) + t*(T(-2.8114572543455206e-15) + t*(T(8.22063524662433e-18) + t*(T(-1.9572941063391263e-20) + t*(T(3.868170170630684e-23) + t*(T(-6.446950284384474e-26))))))))))));
     return lanewise<lie_C>(t);
 }
-__attribute__((always_inline)) inline V v_lie_D(const V& t) {
+FGC_INLINE V v_lie_D(const V& t) {
     bool series = true;
     for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
     if (series) return T(0.08333333333333333) + t*(T(0.001388888888888889) + t*(T(3.306878306878307e-05) + t*(T(8.267195767195768e-07) + t*(T(2.08767569878681e-08) + t*(T(5.284190138687493e-10) + t*(T(1.3382536530684679e-11) + t*(T(3.3896802963225827e-13) + t*(T(8.586062056277845e-15) + t*(T(2.174868698558062e-16) + t*(T(5.5090028283602295e-18) + t*(T(1.3954464685812522e-19) + t*(T(3.534707039629467e-21) + t*(T(8.953517427037546e-23) + t*(T(2.267952452337683e-24) + t*(T(5.744790668872202e-26) + t*(T(1.455172475614865e-27) + t*(T(3.6859949406653103e-29) + t*(T(9.336734257095045e-31) + t*(T(2.36502241570063e-32) + t*(T(5.990671762482134e-34) + t*(T(1.5174548844682903e-35))))))))))))))))))))));
     return lanewise<lie_D>(t);
 }
-__attribute__((always_inline)) inline V v_lie_A1(const V& t) {
+FGC_INLINE V v_lie_A1(const V& t) {
     bool series = true;
     for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
     if (series) return T(-0.16666666666666666) + t*(T(0.016666666666666666) + t*(T(-0.0005952380952380953) + t*(T(1.1022927689594357e-05) + t*(T(-1.252605419272086e-07) + t*(T(9.635426302092969e-10) + t*(T(-5.353014612273871e-12) + t*(T(2.2491658034764165e-14) + t*(T(-7.398571721961897e-17) + t*(T(1.9572941063391261e-19) + t*(T(-4.254987187693753e-22)))))))))));
     return lanewise<lie_A1>(t);
 }
-__attribute__((always_inline)) inline V v_lie_B1(const V& t) {
+FGC_INLINE V v_lie_B1(const V& t) {
     bool series = true;
     for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
     if (series) return T(-0.041666666666666664) + t*(T(0.002777777777777778) + t*(T(-7.440476190476191e-05) + t*(T(1.1022927689594355e-06) + t*(T(-1.043837849393405e-08) + t*(T(6.882447358637835e-11) + t*(T(-3.3456341326711696e-13) + t*(T(1.249536557486898e-15) + t*(T(-3.6992858609809485e-18) + t*(T(8.896791392450573e-21) + t*(T(-1.77291132820573e-23)))))))))));
     return lanewise<lie_B1>(t);
 }
-__attribute__((always_inline)) inline V v_lie_C1(const V& t) {
+FGC_INLINE V v_lie_C1(const V& t) {
     bool series = true;
     for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
     if (series) return T(-0.008333333333333333) + t*(T(0.0003968253968253968) + t*(T(-8.267195767195768e-06) + t*(T(1.0020843354176688e-07) + t*(T(-8.029521918410807e-10) + t*(T(4.58829823909189e-12) + t*(T(-1.9680200780418645e-14) + t*(T(6.576508197299464e-17) + t*(T(-1.7615646957052136e-19) + t*(T(3.868170170630684e-22) + t*(T(-7.091645312822921e-25)))))))))));
     return lanewise<lie_C1>(t);
 }
-__attribute__((always_inline)) inline V v_lie_D1(const V& t) {
+FGC_INLINE V v_lie_D1(const V& t) {
     bool series = true;
     for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
     if (series) return T(0.001388888888888889) + t*(T(6.613756613756614e-05) + t*(T(2.48015873015873e-06) + t*(T(8.35070279514724e-08) + t*(T(2.6420950693437467e-09) + t*(T(8.029521918410807e-11) + t*(T(2.372776207425808e-12) + t*(T(6.868849645022276e-14) + t*(T(1.9573818287022555e-15) + t*(T(5.5090028283602297e-17) + t*(T(1.5349911154393775e-18) + t*(T(4.241648447555361e-20) + t*(T(1.163957265514881e-21) + t*(T(3.1751334332727565e-23) + t*(T(8.617186003308303e-25) + t*(T(2.328275960983784e-26) + t*(T(6.266191399131027e-28) + t*(T(1.6806121662771081e-29) + t*(T(4.4935425898311966e-31) + t*(T(1.1981343524964268e-32) + t*(T(3.1866552573834097e-34)))))))))))))))))))));
