@@ -72,6 +72,12 @@ class BlockContext:
     tiles: GramTiles
 
     @property
+    def n_x_in(self) -> int:
+        """Kernel inputs that come from x (the variables' storage, first in the input array);
+        the measurements and noise parameters follow."""
+        return sum(v.storage for v in self.variables)
+
+    @property
     def padded(self) -> int:
         """Row stride of the local rows (whole Gram tiles)."""
         return self.pattern.padded

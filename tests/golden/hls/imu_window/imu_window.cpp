@@ -2404,13 +2404,13 @@ void gather_0(const T* x, int first, bool cost, V in[235]) {
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK0_INSTANCES[first + l < 7 ? first + l : 6];
         const int vb = FACTOR_VAR_BEGIN[f];
-        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
         for (int i = 0; i < 3; ++i) buf[12 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 1]] + i];
         for (int i = 0; i < 12; ++i) buf[15 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 2]] + i];
         for (int i = 0; i < 3; ++i) buf[27 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 3]] + i];
         for (int i = 0; i < 6; ++i) buf[30 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 4]] + i];
         for (int i = 0; i < 6; ++i) buf[36 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 5]] + i];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 73; ++i) buf[42 + i][l] = line[0 + i];
         if (!cost) continue;
         for (int i = 0; i < 120; ++i) buf[115 + i][l] = line[73 + i];
@@ -2529,8 +2529,8 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK1_INSTANCES[first + l < 1 ? first + l : 0];
         const int vb = FACTOR_VAR_BEGIN[f];
-        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 12; ++i) buf[12 + i][l] = line[0 + i];
         if (!cost) continue;
         for (int i = 0; i < 1; ++i) buf[24 + i][l] = line[12 + i];
@@ -2629,8 +2629,8 @@ void gather_2(const T* x, int first, bool cost, V in[7]) {
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK2_INSTANCES[first + l < 1 ? first + l : 0];
         const int vb = FACTOR_VAR_BEGIN[f];
-        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 3; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 3; ++i) buf[3 + i][l] = line[0 + i];
         if (!cost) continue;
         for (int i = 0; i < 1; ++i) buf[6 + i][l] = line[3 + i];
@@ -2729,8 +2729,8 @@ void gather_3(const T* x, int first, bool cost, V in[13]) {
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK3_INSTANCES[first + l < 1 ? first + l : 0];
         const int vb = FACTOR_VAR_BEGIN[f];
-        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 6; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 6; ++i) buf[6 + i][l] = line[0 + i];
         if (!cost) continue;
         for (int i = 0; i < 1; ++i) buf[12 + i][l] = line[6 + i];

@@ -1334,9 +1334,9 @@ void gather_0(const T* x, int first, bool cost, V in[57]) {
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK0_INSTANCES[first + l < 6 ? first + l : 5];
         const int vb = FACTOR_VAR_BEGIN[f];
-        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
         for (int i = 0; i < 12; ++i) buf[12 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 1]] + i];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 12; ++i) buf[24 + i][l] = line[0 + i];
         if (!cost) continue;
         for (int i = 0; i < 21; ++i) buf[36 + i][l] = line[12 + i];
@@ -1440,8 +1440,8 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK1_INSTANCES[first + l < 1 ? first + l : 0];
         const int vb = FACTOR_VAR_BEGIN[f];
-        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+        const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 12; ++i) buf[12 + i][l] = line[0 + i];
         if (!cost) continue;
         for (int i = 0; i < 1; ++i) buf[24 + i][l] = line[12 + i];
