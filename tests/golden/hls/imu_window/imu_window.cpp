@@ -2902,6 +2902,34 @@ void retract_all(const T* x, const T* delta, T* out) {
     }
 }
 
+// The factored frontal matrix out: rows 0 ... f - 1 as the step's conditional (R | S | d), after
+// checking each pivot against the block's largest entry, and the separator's rows as the update
+// matrix for the parent. Rows go as they are: left of the diagonal they may hold leftovers that no
+// reader looks at (back-substitution reads a conditional's row from its diagonal on, the parent
+// an update matrix's upper triangle). False if a pivot is below SINGULAR_EPS * scale.
+template <int LD>
+FGC_INLINE bool store_step(T (*H)[LD], int w, int f, int s, T scale) {
+    T* cond = COND + STEP_COND_OFF[s];
+    for (int i = 0; i < f; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+        if (!(fgc_abs(H[i][i]) > SINGULAR_EPS * scale)) return false;
+        for (int c = 0; c <= w; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+            cond[i * (w + 1) + c] = H[i][c];
+        }
+    }
+    const int sw = w - f;
+    T* u = NF + STEP_NF_OFF[s];
+    for (int a = 0; a < sw; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+        for (int b = 0; b <= sw; ++b) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+            u[a * (sw + 1) + b] = H[f + a][f + b];
+        }
+    }
+    return true;
+}
+
 // ---- multifrontal Cholesky (paper B's LES): per step the frontal matrix [H | g] (upper
 // triangle, row-major: U = L^T row by row keeps every inner loop contiguous) of its factors'
 // Grams, its children's update matrices and mu on the frontal diagonal; #CPE process elements
@@ -2991,28 +3019,7 @@ bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
     }
     T scale = T(0);
     for (int t = 0; t < TILE; ++t) scale = largest[t] > scale ? largest[t] : scale;
-    // rows as they are: left of the diagonal they hold leftovers that no reader looks at
-    // (back-substitution reads a conditional's row from its diagonal on, the parent an update
-    // matrix's upper triangle)
-    T* cond = COND + STEP_COND_OFF[s];
-    for (int i = 0; i < f; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-        if (!(fgc_abs(H[i][i]) > SINGULAR_EPS * scale)) return false;
-        for (int c = 0; c <= w; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-            cond[i * (w + 1) + c] = H[i][c];
-        }
-    }
-    const int sw = w - f;
-    T* u = NF + STEP_NF_OFF[s];
-    for (int a = 0; a < sw; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-        for (int b = 0; b <= sw; ++b) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-            u[a * (sw + 1) + b] = H[f + a][f + b];
-        }
-    }
-    return true;
+    return store_step<LD>(H, w, f, s, scale);
 }
 
 // ---- the same factorisation for a step pattern, W, F and LD known at compile time: every entry
@@ -3145,17 +3152,7 @@ bool cholesky_frontal_fixed(T (*H)[LD], int s, T mu) {
     }
     T scale = T(0);
     for (int t = 0; t < TILE; ++t) scale = largest[t] > scale ? largest[t] : scale;
-    T* cond = COND + STEP_COND_OFF[s];
-    for (int i = 0; i < F; ++i) {
-        if (!(fgc_abs(H[i][i]) > SINGULAR_EPS * scale)) return false;
-        for (int c = 0; c <= W; ++c) cond[i * (W + 1) + c] = H[i][c];
-    }
-    const int SW = W - F;
-    T* u = NF + STEP_NF_OFF[s];
-    for (int a = 0; a < SW; ++a) {
-        for (int b = 0; b <= SW; ++b) u[a * (SW + 1) + b] = H[F + a][F + b];
-    }
-    return true;
+    return store_step<LD>(H, W, F, s, scale);
 }
 
 // Any step: assemble [H | g] through the step tables, then factor.
