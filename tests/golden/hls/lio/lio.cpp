@@ -7,6 +7,8 @@
 //   -> elimination steps along the schedule (partial QR: Evaluate + Update units), level by level,
 //      2 unit set(s) side by side -> conditionals (R | d) per step
 //   -> back-substitution root first -> retraction x (+) delta -> factor blocks (cost mode) -> accept?
+//   (a step that does not lower the cost is judged against the cost's rounding noise at x: the
+//   factor blocks in noise mode, once per iteration that needs it)
 #include "lio.h"
 
 #include <cstring>
@@ -2906,10 +2908,9 @@ T rounding_noise(const T* ab, const T scale[STRIDE]) {
 }
 
 // Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]], summed down the
-// columns: one row per step, whole vectors) and the cost's rounding noise. False if an entry is
-// infinite or NaN.
+// columns: one row per step, whole vectors). False if an entry is infinite or NaN.
 template <int STRIDE, int COLS, int ROWS>
-bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
+bool accumulate(const T* ab, const int col[COLS - 1]) {
     T g[STRIDE], check[STRIDE];
     for (int c = 0; c < STRIDE; ++c) {
         g[c] = T(0);
@@ -2929,7 +2930,6 @@ bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* 
         for (int t = 0; t < TILE; ++t) bad[t] += check[c0 + t];
     }
     for (int c = 0; c < COLS - 1; ++c) G[col[c]] += g[c];
-    *noise += rounding_noise<STRIDE, COLS, ROWS>(ab, scale);
     return fgc_isfinite((bad[0] + bad[1]) + (bad[2] + bad[3]));
 }
 
@@ -2993,10 +2993,11 @@ void gather_0(const T* x, int first, bool cost, V in[30]) {
 #endif
 }
 
-// block 0, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 33
-// structural non-zeros of 6 x 7), whiten; accumulate the gradient and the cost's rounding noise (how
-// far the cost moves when x is rounded to T); the whitened rows into the A buffer. False if not finite.
-bool linearize_0(const T* x, int first, T* noise) {
+// block 0, instances first ... first + LANES - 1: residual + Jacobian (its 33
+// structural non-zeros of 6 x 7), whiten. Mode 1 (noise_mode false): accumulate the gradient
+// and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
+bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
     V in[30];
     gather_0(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
@@ -3011,14 +3012,16 @@ bool linearize_0(const T* x, int first, T* noise) {
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<8, 7, 6, 1>(raw[l] + 0, ab[l] + 0, line + 12, line[18], line[19]);
-        T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
-        int col[6];  // per column: its tangent entry
-        for (int c = 0; c < 8; ++c) scale[c] = T(0);
-        for (int j = 0; j < 6; ++j) {
-            scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-            col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        if (noise_mode) {
+            T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
+            for (int c = 0; c < 8; ++c) scale[c] = T(0);
+            for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
+            *noise += rounding_noise<8, 7, 6>(ab[l], scale);
+            continue;
         }
-        finite = accumulate<8, 7, 6>(ab[l], scale, col, noise) && finite;
+        int col[6];  // per column: its tangent entry
+        for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        finite = accumulate<8, 7, 6>(ab[l], col) && finite;
         L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) rows[r * 7 + c] = ab[l][r * 8 + c];
@@ -3094,10 +3097,11 @@ void gather_1(const T* x, int first, bool cost, V in[7]) {
 #endif
 }
 
-// block 1, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 6
-// structural non-zeros of 3 x 4), whiten; accumulate the gradient and the cost's rounding noise (how
-// far the cost moves when x is rounded to T); the whitened rows into the A buffer. False if not finite.
-bool linearize_1(const T* x, int first, T* noise) {
+// block 1, instances first ... first + LANES - 1: residual + Jacobian (its 6
+// structural non-zeros of 3 x 4), whiten. Mode 1 (noise_mode false): accumulate the gradient
+// and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
+bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
     V in[7];
     gather_1(x, first, false, in);
     // rows [J | r] padded to 4 (whole tiles): the Jacobian writes only its structural
@@ -3112,14 +3116,16 @@ bool linearize_1(const T* x, int first, T* noise) {
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<4, 4, 3, 0>(raw[l] + 0, ab[l] + 0, line + 3, line[4], line[5]);
-        T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
-        int col[3];  // per column: its tangent entry
-        for (int c = 0; c < 4; ++c) scale[c] = T(0);
-        for (int j = 0; j < 3; ++j) {
-            scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-            col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        if (noise_mode) {
+            T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
+            for (int c = 0; c < 4; ++c) scale[c] = T(0);
+            for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
+            *noise += rounding_noise<4, 4, 3>(ab[l], scale);
+            continue;
         }
-        finite = accumulate<4, 4, 3>(ab[l], scale, col, noise) && finite;
+        int col[3];  // per column: its tangent entry
+        for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        finite = accumulate<4, 4, 3>(ab[l], col) && finite;
         L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 3; ++r) {
             for (int c = 0; c < 4; ++c) rows[r * 4 + c] = ab[l][r * 4 + c];
@@ -3195,10 +3201,11 @@ void gather_2(const T* x, int first, bool cost, V in[13]) {
 #endif
 }
 
-// block 2, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 12
-// structural non-zeros of 6 x 7), whiten; accumulate the gradient and the cost's rounding noise (how
-// far the cost moves when x is rounded to T); the whitened rows into the A buffer. False if not finite.
-bool linearize_2(const T* x, int first, T* noise) {
+// block 2, instances first ... first + LANES - 1: residual + Jacobian (its 12
+// structural non-zeros of 6 x 7), whiten. Mode 1 (noise_mode false): accumulate the gradient
+// and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
+bool linearize_2(const T* x, int first, bool noise_mode, T* noise) {
     V in[13];
     gather_2(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
@@ -3213,14 +3220,16 @@ bool linearize_2(const T* x, int first, T* noise) {
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<8, 7, 6, 0>(raw[l] + 0, ab[l] + 0, line + 6, line[7], line[8]);
-        T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
-        int col[6];  // per column: its tangent entry
-        for (int c = 0; c < 8; ++c) scale[c] = T(0);
-        for (int j = 0; j < 6; ++j) {
-            scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-            col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        if (noise_mode) {
+            T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
+            for (int c = 0; c < 8; ++c) scale[c] = T(0);
+            for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
+            *noise += rounding_noise<8, 7, 6>(ab[l], scale);
+            continue;
         }
-        finite = accumulate<8, 7, 6>(ab[l], scale, col, noise) && finite;
+        int col[6];  // per column: its tangent entry
+        for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        finite = accumulate<8, 7, 6>(ab[l], col) && finite;
         L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) rows[r * 7 + c] = ab[l][r * 8 + c];
@@ -3310,10 +3319,11 @@ void gather_3(const T* x, int first, bool cost, V in[253]) {
 #endif
 }
 
-// block 3, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 240
-// structural non-zeros of 21 x 31), whiten; accumulate the gradient and the cost's rounding noise (how
-// far the cost moves when x is rounded to T); the whitened rows into the A buffer. False if not finite.
-bool linearize_3(const T* x, int first, T* noise) {
+// block 3, instances first ... first + LANES - 1: residual + Jacobian (its 240
+// structural non-zeros of 21 x 31), whiten. Mode 1 (noise_mode false): accumulate the gradient
+// and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
+bool linearize_3(const T* x, int first, bool noise_mode, T* noise) {
     V in[253];
     gather_3(x, first, false, in);
     // rows [J | r] padded to 32 (whole tiles): the Jacobian writes only its structural
@@ -3329,34 +3339,26 @@ bool linearize_3(const T* x, int first, T* noise) {
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<32, 31, 15, 2>(raw[l] + 0, ab[l] + 0, line + 73, line[193], line[194]);
         whiten<32, 31, 6, 1>(raw[l] + 480, ab[l] + 480, line + 207, line[213], line[214]);
-        T scale[32];  // per column: largest storage entry of its variable (0: b, padding)
+        if (noise_mode) {
+            T scale[32];  // per column: largest storage entry of its variable (0: b, padding)
+            for (int c = 0; c < 32; ++c) scale[c] = T(0);
+            for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
+            for (int j = 0; j < 3; ++j) scale[6 + j] = VAR_SCALE[FACTOR_VARS[vb + 1]];
+            for (int j = 0; j < 6; ++j) scale[9 + j] = VAR_SCALE[FACTOR_VARS[vb + 2]];
+            for (int j = 0; j < 3; ++j) scale[15 + j] = VAR_SCALE[FACTOR_VARS[vb + 3]];
+            for (int j = 0; j < 6; ++j) scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
+            for (int j = 0; j < 6; ++j) scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
+            *noise += rounding_noise<32, 31, 21>(ab[l], scale);
+            continue;
+        }
         int col[30];  // per column: its tangent entry
-        for (int c = 0; c < 32; ++c) scale[c] = T(0);
-        for (int j = 0; j < 6; ++j) {
-            scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-            col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        }
-        for (int j = 0; j < 3; ++j) {
-            scale[6 + j] = VAR_SCALE[FACTOR_VARS[vb + 1]];
-            col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
-        }
-        for (int j = 0; j < 6; ++j) {
-            scale[9 + j] = VAR_SCALE[FACTOR_VARS[vb + 2]];
-            col[9 + j] = VAR_T_OFF[FACTOR_VARS[vb + 2]] + j;
-        }
-        for (int j = 0; j < 3; ++j) {
-            scale[15 + j] = VAR_SCALE[FACTOR_VARS[vb + 3]];
-            col[15 + j] = VAR_T_OFF[FACTOR_VARS[vb + 3]] + j;
-        }
-        for (int j = 0; j < 6; ++j) {
-            scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
-            col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
-        }
-        for (int j = 0; j < 6; ++j) {
-            scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
-            col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
-        }
-        finite = accumulate<32, 31, 21>(ab[l], scale, col, noise) && finite;
+        for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        for (int j = 0; j < 3; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
+        for (int j = 0; j < 6; ++j) col[9 + j] = VAR_T_OFF[FACTOR_VARS[vb + 2]] + j;
+        for (int j = 0; j < 3; ++j) col[15 + j] = VAR_T_OFF[FACTOR_VARS[vb + 3]] + j;
+        for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
+        for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
+        finite = accumulate<32, 31, 21>(ab[l], col) && finite;
         L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 21; ++r) {
             for (int c = 0; c < 31; ++c) rows[r * 31 + c] = ab[l][r * 32 + c];
@@ -3433,10 +3435,11 @@ void gather_4(const T* x, int first, bool cost, V in[16]) {
 #endif
 }
 
-// block 4, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 12
-// structural non-zeros of 3 x 7), whiten; accumulate the gradient and the cost's rounding noise (how
-// far the cost moves when x is rounded to T); the whitened rows into the A buffer. False if not finite.
-bool linearize_4(const T* x, int first, T* noise) {
+// block 4, instances first ... first + LANES - 1: residual + Jacobian (its 12
+// structural non-zeros of 3 x 7), whiten. Mode 1 (noise_mode false): accumulate the gradient
+// and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
+bool linearize_4(const T* x, int first, bool noise_mode, T* noise) {
     V in[16];
     gather_4(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
@@ -3451,14 +3454,16 @@ bool linearize_4(const T* x, int first, T* noise) {
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<8, 7, 3, 0>(raw[l] + 0, ab[l] + 0, line + 3, line[4], line[5]);
-        T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
-        int col[6];  // per column: its tangent entry
-        for (int c = 0; c < 8; ++c) scale[c] = T(0);
-        for (int j = 0; j < 6; ++j) {
-            scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-            col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        if (noise_mode) {
+            T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
+            for (int c = 0; c < 8; ++c) scale[c] = T(0);
+            for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
+            *noise += rounding_noise<8, 7, 3>(ab[l], scale);
+            continue;
         }
-        finite = accumulate<8, 7, 3>(ab[l], scale, col, noise) && finite;
+        int col[6];  // per column: its tangent entry
+        for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        finite = accumulate<8, 7, 3>(ab[l], col) && finite;
         L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 3; ++r) {
             for (int c = 0; c < 7; ++c) rows[r * 7 + c] = ab[l][r * 8 + c];
@@ -3483,8 +3488,21 @@ void cost_of_4(const T* x, int first, T* total) {
 }
 
 // Linearise every factor (each block type is its own pipelined unit); false if not finite.
-bool linearize_all(const T* x, T* noise) {
+bool linearize_all(const T* x) {
     for (int i = 0; i < N_TANGENT; ++i) G[i] = T(0);
+    bool finite = true;
+    T unused = T(0);  // mode 1 adds no noise
+    for (int i = 0; i < 1; i += LANES) finite = linearize_0(x, i, false, &unused) && finite;
+    for (int i = 0; i < 1; i += LANES) finite = linearize_1(x, i, false, &unused) && finite;
+    for (int i = 0; i < 1; i += LANES) finite = linearize_2(x, i, false, &unused) && finite;
+    for (int i = 0; i < 7; i += LANES) finite = linearize_3(x, i, false, &unused) && finite;
+    for (int i = 0; i < 8; i += LANES) finite = linearize_4(x, i, false, &unused) && finite;
+    return finite;
+}
+
+// The cost's rounding noise at x: every block in mode 3, in linearize_all's order. Only a step
+// that does not lower the cost needs it, so it is computed then, not in every linearisation.
+T rounding_noise_all(const T* x) {
     for (int v = 0; v < N_VARIABLES; ++v) {  // largest storage entry of each variable, at least 1
         T scale = T(1);
         for (int i = VAR_X_OFF[v]; i < VAR_X_OFF[v + 1]; ++i) {
@@ -3493,13 +3511,13 @@ bool linearize_all(const T* x, T* noise) {
         }
         VAR_SCALE[v] = scale;
     }
-    bool finite = true;
-    for (int i = 0; i < 1; i += LANES) finite = linearize_0(x, i, noise) && finite;
-    for (int i = 0; i < 1; i += LANES) finite = linearize_1(x, i, noise) && finite;
-    for (int i = 0; i < 1; i += LANES) finite = linearize_2(x, i, noise) && finite;
-    for (int i = 0; i < 7; i += LANES) finite = linearize_3(x, i, noise) && finite;
-    for (int i = 0; i < 8; i += LANES) finite = linearize_4(x, i, noise) && finite;
-    return finite;
+    T noise = T(0);
+    for (int i = 0; i < 1; i += LANES) linearize_0(x, i, true, &noise);
+    for (int i = 0; i < 1; i += LANES) linearize_1(x, i, true, &noise);
+    for (int i = 0; i < 1; i += LANES) linearize_2(x, i, true, &noise);
+    for (int i = 0; i < 7; i += LANES) linearize_3(x, i, true, &noise);
+    for (int i = 0; i < 8; i += LANES) linearize_4(x, i, true, &noise);
+    return noise;
 }
 
 // The graph's cost (GTSAM's error) at x: every block in cost mode.
@@ -4917,8 +4935,9 @@ bool solve(T mu) {
 
 // ---- trust-region control (paper B): solve, try x (+) delta in cost mode, accept or grow mu.
 // Near the optimum the cost's rounding noise hides real progress, so a step whose predicted
-// decrease 0.5 delta^T (g + mu delta) is within the cost's resolution `band` is judged by that
-// prediction (the simulator's rule).
+// decrease 0.5 delta^T (g + mu delta) is within the cost's resolution `band` (16 eps of the cost,
+// or its rounding noise at X if larger) is judged by that prediction (the simulator's rule). The
+// band is worked out only for a step that does not lower the cost, once per linearisation.
 struct Step {
     int kind;  // 0 accept, 1 converged, 2 failed
     int reason;
@@ -4926,7 +4945,8 @@ struct Step {
     T predicted;
 };
 
-Step try_steps(T cost, T band, T* mu) {
+Step try_steps(T cost, T* mu) {
+    T band = T(-1);  // not yet known
     T x_norm2 = T(0);
     for (int i = 0; i < N_X; ++i) x_norm2 += X[i] * X[i];
     const T x_norm = fgc_sqrt(x_norm2);
@@ -4945,8 +4965,15 @@ Step try_steps(T cost, T band, T* mu) {
             if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
             retract_all(X, DELTA, X_TRIAL);
             const T trial = total_cost(X_TRIAL);
-            const bool within = predicted <= band && trial <= cost + band;
-            if (fgc_isfinite(trial) && (trial < cost || !(*mu > T(0)) || within)) {
+            bool accept = fgc_isfinite(trial) && (trial < cost || !(*mu > T(0)));
+            if (!accept && fgc_isfinite(trial)) {
+                if (band < T(0)) {
+                    const T noise = rounding_noise_all(X);
+                    band = RESOLUTION * cost > noise ? T(RESOLUTION * cost) : noise;
+                }
+                accept = predicted <= band && trial <= cost + band;
+            }
+            if (accept) {
                 *mu = *mu / LAMBDA_FACTOR > MU_MIN ? T(*mu / LAMBDA_FACTOR) : MU_MIN;
                 return Step{0, 0, trial, predicted};
             }
@@ -4970,8 +4997,7 @@ void optimize(T errors[2], int info[3]) {
     }
     for (int k = 0; k < MAX_ITERATIONS; ++k) {
         if (status != STATUS_MAX_ITERATIONS) break;
-        T noise = T(0);
-        if (!linearize_all(X, &noise)) {
+        if (!linearize_all(X)) {
             status = STATUS_FAILED;
             reason = REASON_NON_FINITE;
             break;
@@ -4984,8 +5010,7 @@ void optimize(T errors[2], int info[3]) {
             reason = REASON_GRADIENT;
             break;
         }
-        const T band = RESOLUTION * cost > noise ? T(RESOLUTION * cost) : noise;
-        const Step step = try_steps(cost, band, &mu);
+        const Step step = try_steps(cost, &mu);
         if (step.kind != 0) {
             status = step.kind == 1 ? STATUS_CONVERGED : STATUS_FAILED;
             reason = step.reason;

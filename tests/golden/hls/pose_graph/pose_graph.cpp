@@ -7,6 +7,8 @@
 //   -> elimination steps along the schedule (partial QR: Evaluate + Update units), level by level,
 //      1 unit set(s) side by side -> conditionals (R | d) per step
 //   -> back-substitution root first -> retraction x (+) delta -> factor blocks (cost mode) -> accept?
+//   (a step that does not lower the cost is judged against the cost's rounding noise at x: the
+//   factor blocks in noise mode, once per iteration that needs it)
 #include "pose_graph.h"
 
 #include <cstring>
@@ -1259,10 +1261,9 @@ T rounding_noise(const T* ab, const T scale[STRIDE]) {
 }
 
 // Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]], summed down the
-// columns: one row per step, whole vectors) and the cost's rounding noise. False if an entry is
-// infinite or NaN.
+// columns: one row per step, whole vectors). False if an entry is infinite or NaN.
 template <int STRIDE, int COLS, int ROWS>
-bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* noise) {
+bool accumulate(const T* ab, const int col[COLS - 1]) {
     T g[STRIDE], check[STRIDE];
     for (int c = 0; c < STRIDE; ++c) {
         g[c] = T(0);
@@ -1282,7 +1283,6 @@ bool accumulate(const T* ab, const T scale[STRIDE], const int col[COLS - 1], T* 
         for (int t = 0; t < TILE; ++t) bad[t] += check[c0 + t];
     }
     for (int c = 0; c < COLS - 1; ++c) G[col[c]] += g[c];
-    *noise += rounding_noise<STRIDE, COLS, ROWS>(ab, scale);
     return fgc_isfinite((bad[0] + bad[1]) + (bad[2] + bad[3]));
 }
 
@@ -1348,10 +1348,11 @@ void gather_0(const T* x, int first, bool cost, V in[57]) {
 #endif
 }
 
-// block 0, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 60
-// structural non-zeros of 6 x 13), whiten; accumulate the gradient and the cost's rounding noise (how
-// far the cost moves when x is rounded to T); the whitened rows into the A buffer. False if not finite.
-bool linearize_0(const T* x, int first, T* noise) {
+// block 0, instances first ... first + LANES - 1: residual + Jacobian (its 60
+// structural non-zeros of 6 x 13), whiten. Mode 1 (noise_mode false): accumulate the gradient
+// and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
+bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
     V in[57];
     gather_0(x, first, false, in);
     // rows [J | r] padded to 16 (whole tiles): the Jacobian writes only its structural
@@ -1366,18 +1367,18 @@ bool linearize_0(const T* x, int first, T* noise) {
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<16, 13, 6, 2>(raw[l] + 0, ab[l] + 0, line + 12, line[33], line[34]);
-        T scale[16];  // per column: largest storage entry of its variable (0: b, padding)
+        if (noise_mode) {
+            T scale[16];  // per column: largest storage entry of its variable (0: b, padding)
+            for (int c = 0; c < 16; ++c) scale[c] = T(0);
+            for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
+            for (int j = 0; j < 6; ++j) scale[6 + j] = VAR_SCALE[FACTOR_VARS[vb + 1]];
+            *noise += rounding_noise<16, 13, 6>(ab[l], scale);
+            continue;
+        }
         int col[12];  // per column: its tangent entry
-        for (int c = 0; c < 16; ++c) scale[c] = T(0);
-        for (int j = 0; j < 6; ++j) {
-            scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-            col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        }
-        for (int j = 0; j < 6; ++j) {
-            scale[6 + j] = VAR_SCALE[FACTOR_VARS[vb + 1]];
-            col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
-        }
-        finite = accumulate<16, 13, 6>(ab[l], scale, col, noise) && finite;
+        for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        for (int j = 0; j < 6; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
+        finite = accumulate<16, 13, 6>(ab[l], col) && finite;
         L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 13; ++c) rows[r * 13 + c] = ab[l][r * 16 + c];
@@ -1453,10 +1454,11 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
 #endif
 }
 
-// block 1, mode 1, instances first ... first + LANES - 1: residual + Jacobian (its 33
-// structural non-zeros of 6 x 7), whiten; accumulate the gradient and the cost's rounding noise (how
-// far the cost moves when x is rounded to T); the whitened rows into the A buffer. False if not finite.
-bool linearize_1(const T* x, int first, T* noise) {
+// block 1, instances first ... first + LANES - 1: residual + Jacobian (its 33
+// structural non-zeros of 6 x 7), whiten. Mode 1 (noise_mode false): accumulate the gradient
+// and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
+bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
     V in[25];
     gather_1(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
@@ -1471,14 +1473,16 @@ bool linearize_1(const T* x, int first, T* noise) {
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<8, 7, 6, 0>(raw[l] + 0, ab[l] + 0, line + 12, line[13], line[14]);
-        T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
-        int col[6];  // per column: its tangent entry
-        for (int c = 0; c < 8; ++c) scale[c] = T(0);
-        for (int j = 0; j < 6; ++j) {
-            scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-            col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        if (noise_mode) {
+            T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
+            for (int c = 0; c < 8; ++c) scale[c] = T(0);
+            for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
+            *noise += rounding_noise<8, 7, 6>(ab[l], scale);
+            continue;
         }
-        finite = accumulate<8, 7, 6>(ab[l], scale, col, noise) && finite;
+        int col[6];  // per column: its tangent entry
+        for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        finite = accumulate<8, 7, 6>(ab[l], col) && finite;
         L* rows = AB + FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) rows[r * 7 + c] = ab[l][r * 8 + c];
@@ -1503,8 +1507,18 @@ void cost_of_1(const T* x, int first, T* total) {
 }
 
 // Linearise every factor (each block type is its own pipelined unit); false if not finite.
-bool linearize_all(const T* x, T* noise) {
+bool linearize_all(const T* x) {
     for (int i = 0; i < N_TANGENT; ++i) G[i] = T(0);
+    bool finite = true;
+    T unused = T(0);  // mode 1 adds no noise
+    for (int i = 0; i < 6; i += LANES) finite = linearize_0(x, i, false, &unused) && finite;
+    for (int i = 0; i < 1; i += LANES) finite = linearize_1(x, i, false, &unused) && finite;
+    return finite;
+}
+
+// The cost's rounding noise at x: every block in mode 3, in linearize_all's order. Only a step
+// that does not lower the cost needs it, so it is computed then, not in every linearisation.
+T rounding_noise_all(const T* x) {
     for (int v = 0; v < N_VARIABLES; ++v) {  // largest storage entry of each variable, at least 1
         T scale = T(1);
         for (int i = VAR_X_OFF[v]; i < VAR_X_OFF[v + 1]; ++i) {
@@ -1513,10 +1527,10 @@ bool linearize_all(const T* x, T* noise) {
         }
         VAR_SCALE[v] = scale;
     }
-    bool finite = true;
-    for (int i = 0; i < 6; i += LANES) finite = linearize_0(x, i, noise) && finite;
-    for (int i = 0; i < 1; i += LANES) finite = linearize_1(x, i, noise) && finite;
-    return finite;
+    T noise = T(0);
+    for (int i = 0; i < 6; i += LANES) linearize_0(x, i, true, &noise);
+    for (int i = 0; i < 1; i += LANES) linearize_1(x, i, true, &noise);
+    return noise;
 }
 
 // The graph's cost (GTSAM's error) at x: every block in cost mode.
@@ -1834,8 +1848,9 @@ bool solve(T mu) {
 
 // ---- trust-region control (paper B): solve, try x (+) delta in cost mode, accept or grow mu.
 // Near the optimum the cost's rounding noise hides real progress, so a step whose predicted
-// decrease 0.5 delta^T (g + mu delta) is within the cost's resolution `band` is judged by that
-// prediction (the simulator's rule).
+// decrease 0.5 delta^T (g + mu delta) is within the cost's resolution `band` (16 eps of the cost,
+// or its rounding noise at X if larger) is judged by that prediction (the simulator's rule). The
+// band is worked out only for a step that does not lower the cost, once per linearisation.
 struct Step {
     int kind;  // 0 accept, 1 converged, 2 failed
     int reason;
@@ -1843,7 +1858,8 @@ struct Step {
     T predicted;
 };
 
-Step try_steps(T cost, T band, T* mu) {
+Step try_steps(T cost, T* mu) {
+    T band = T(-1);  // not yet known
     T x_norm2 = T(0);
     for (int i = 0; i < N_X; ++i) x_norm2 += X[i] * X[i];
     const T x_norm = fgc_sqrt(x_norm2);
@@ -1862,8 +1878,15 @@ Step try_steps(T cost, T band, T* mu) {
             if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
             retract_all(X, DELTA, X_TRIAL);
             const T trial = total_cost(X_TRIAL);
-            const bool within = predicted <= band && trial <= cost + band;
-            if (fgc_isfinite(trial) && (trial < cost || !(*mu > T(0)) || within)) {
+            bool accept = fgc_isfinite(trial) && (trial < cost || !(*mu > T(0)));
+            if (!accept && fgc_isfinite(trial)) {
+                if (band < T(0)) {
+                    const T noise = rounding_noise_all(X);
+                    band = RESOLUTION * cost > noise ? T(RESOLUTION * cost) : noise;
+                }
+                accept = predicted <= band && trial <= cost + band;
+            }
+            if (accept) {
                 *mu = *mu / LAMBDA_FACTOR > MU_MIN ? T(*mu / LAMBDA_FACTOR) : MU_MIN;
                 return Step{0, 0, trial, predicted};
             }
@@ -1887,8 +1910,7 @@ void optimize(T errors[2], int info[3]) {
     }
     for (int k = 0; k < MAX_ITERATIONS; ++k) {
         if (status != STATUS_MAX_ITERATIONS) break;
-        T noise = T(0);
-        if (!linearize_all(X, &noise)) {
+        if (!linearize_all(X)) {
             status = STATUS_FAILED;
             reason = REASON_NON_FINITE;
             break;
@@ -1901,8 +1923,7 @@ void optimize(T errors[2], int info[3]) {
             reason = REASON_GRADIENT;
             break;
         }
-        const T band = RESOLUTION * cost > noise ? T(RESOLUTION * cost) : noise;
-        const Step step = try_steps(cost, band, &mu);
+        const Step step = try_steps(cost, &mu);
         if (step.kind != 0) {
             status = step.kind == 1 ? STATUS_CONVERGED : STATUS_FAILED;
             reason = step.reason;
