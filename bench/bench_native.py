@@ -6,7 +6,10 @@ without FMA; not timed), then times the solve call only; GTSAM gets the same gra
 ``fgc.verify.to_gtsam`` (not timed) and its ``LevenbergMarquardtOptimizer`` with the same
 tolerances and the same factorisation as fgc's row (multifrontal Cholesky or multifrontal QR; on
 the IMU window GTSAM's Cholesky stalls at 100 iterations, its QR converges) is timed from
-construction to ``optimize()``. After one untimed warm-up run, best of ``--repeat`` runs each.
+construction to ``optimize()``. Each side's best of ``--repeat`` runs counts; the two take turns
+in bouts of a few back-to-back runs (the first of each bout untimed, so each side is timed warm,
+as a solver called again and again is), so that a spell of load on this shared machine falls on
+both sides' runs instead of one side's whole series.
 The final errors are printed side by side, both evaluated by GTSAM on its own graph (fgc's
 solution is inserted as GTSAM values), so "equal final error" is judged by one yardstick. After
 each problem a "best" line compares each side's fastest factorisation among the runs that reach
@@ -42,13 +45,23 @@ from fgc_backends.hls import native  # noqa: E402
 from fgc_backends.hls.results import result_from_arrays  # noqa: E402
 
 
-def best_time(fn, repeat: int):
-    best, out = float("inf"), fn()  # warm-up: first-touch page faults, caches
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
+def best_times(fns, repeat: int, bout: int = 5):
+    """Each of ``fns``'s best time over ``repeat`` timed runs and its last output. The functions
+    take turns in bouts of ``bout`` timed runs, each bout after one untimed run (first-touch page
+    faults, caches: the other function ran in between)."""
+    outs = [None] * len(fns)
+    best = [float("inf")] * len(fns)
+    done = 0
+    while done < repeat:
+        n = min(bout, repeat - done)
+        for k, fn in enumerate(fns):
+            outs[k] = fn()
+            for _ in range(n):
+                t0 = time.perf_counter()
+                outs[k] = fn()
+                best[k] = min(best[k], time.perf_counter() - t0)
+        done += n
+    return list(zip(best, outs, strict=True))
 
 
 def gtsam_lm(problem, max_iterations: int, linear: str):
@@ -84,10 +97,10 @@ def bench(label: str, graph, linear: str, repeat: int) -> tuple[float, float, fl
     program = compile_graph(graph, solver, name=label.split()[0])
     built = native.load(program)
     x, d = built.flatten(problem_data(graph, program))
-    t_fgc, (x_out, errors, info) = best_time(lambda: built.solve(x, d), repeat)
-    result = result_from_arrays(program, x_out, errors, *info)
     problem = to_gtsam(graph)
-    t_gtsam, (values, iterations) = best_time(lambda: gtsam_lm(problem, 100, linear), repeat)
+    (t_fgc, (x_out, errors, info)), (t_gtsam, (values, iterations)) = best_times(
+        [lambda: built.solve(x, d), lambda: gtsam_lm(problem, 100, linear)], repeat)
+    result = result_from_arrays(program, x_out, errors, *info)
     e_fgc = fgc_error_in_gtsam(graph, problem, result)
     e_gtsam = problem.graph.error(values)
     print(f"{label:<22}{linear:<9}{t_fgc * 1e3:>10.2f}{t_gtsam * 1e3:>10.2f}"
