@@ -118,12 +118,12 @@ def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, .
     where = f"block type {b} ({comment(block.name)})"
     pattern = block_pattern(block, tuple(m.kind for m in members), where)
     kernel = block.kernel.kernel()
-    jacobian = print_kernel(kernel, [f"in[{i}]" for i in range(len(kernel.inputs))], where,
+    jacobian = print_kernel(kernel, _input_names(len(kernel.inputs), pos), where,
                             vector=True)
     targets = _targets(pattern, variables, jacobian.outputs)
     return BlockContext(b, comment(block.name), block.residual_dim, col, n_in, noise_in,
                         tuple(variables), tuple(members), instances, jacobian, targets,
-                        _cost(block, where), pattern, pattern.tiles())
+                        _cost(block, where, pos), pattern, pattern.tiles())
 
 
 def _targets(pattern: BlockPattern, variables: list[VarSlot], outputs: tuple[str, ...]):
@@ -141,11 +141,17 @@ def _targets(pattern: BlockPattern, variables: list[VarSlot], outputs: tuple[str
     return tuple(sorted(targets))
 
 
-def _cost(block: BlockSpec, where: str) -> PrintedKernel:
+def _input_names(n: int, n_x: int) -> list[str]:
+    """The kernels' inputs in C++: x's storage from ``in``, the data (measurements, noise
+    parameters) from ``dat``, which on the host points straight at the block's laned data."""
+    return [f"in[{i}]" if i < n_x else f"dat[{i - n_x}]" for i in range(n)]
+
+
+def _cost(block: BlockSpec, where: str, n_x: int) -> PrintedKernel:
     """The cost kernel reduced to the members' ½‖W r‖² (robust losses are applied in C++)."""
     full = block.cost_kernel.kernel()
     m, n = block.residual_dim, len(block.members)
     outputs = tuple(sp.sympify(e) for e in full.outputs[m:m + n])
     kernel = Kernel(full.inputs, drop_dead(full.assignments, outputs), outputs)
-    return print_kernel(kernel, [f"in[{i}]" for i in range(len(full.inputs))], where + " cost",
+    return print_kernel(kernel, _input_names(len(full.inputs), n_x), where + " cost",
                         vector=True)

@@ -370,19 +370,19 @@ inline V v_so3_log_z(const V& r00, const V& r01, const V& r02, const V& r10, con
 
 // ---- factor blocks (instance l of a call in lane l)
 // block 0: CombinedImuFactor (15 rows, 30 columns, 7 instances)
-void jacobian_0(const V in[115], T ab[LANES][480]) {
+void jacobian_0(const V* in, const V* dat, T ab[LANES][480]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = in[30] - in[105];
-    const V t1 = in[31] - in[106];
-    const V t2 = in[32] - in[107];
-    const V t3 = in[33] - in[108];
-    const V t4 = in[34] - in[109];
-    const V t5 = in[35] - in[110];
-    const V t6 = t0*in[51] + t1*in[52] + t2*in[53] + t3*in[78] + t4*in[79] + t5*in[80] + in[42];
+    const V t0 = in[30] - dat[63];
+    const V t1 = in[31] - dat[64];
+    const V t2 = in[32] - dat[65];
+    const V t3 = in[33] - dat[66];
+    const V t4 = in[34] - dat[67];
+    const V t5 = in[35] - dat[68];
+    const V t6 = t0*dat[9] + t1*dat[10] + t2*dat[11] + t3*dat[36] + t4*dat[37] + t5*dat[38] + dat[0];
     const V t7 = T(2)*t6;
-    const V t8 = t0*in[54] + t1*in[55] + t2*in[56] + t3*in[81] + t4*in[82] + t5*in[83] + in[43];
+    const V t8 = t0*dat[12] + t1*dat[13] + t2*dat[14] + t3*dat[39] + t4*dat[40] + t5*dat[41] + dat[1];
     const V t9 = T(2)*t8;
-    const V t10 = t0*in[57] + t1*in[58] + t2*in[59] + t3*in[84] + t4*in[85] + t5*in[86] + in[44];
+    const V t10 = t0*dat[15] + t1*dat[16] + t2*dat[17] + t3*dat[42] + t4*dat[43] + t5*dat[44] + dat[2];
     const V t11 = T(2)*t10;
     const V t12 = (t6*t6) + (t8*t8) + (t10*t10);
     const V t13 = v_lie_B1(t12);
@@ -391,42 +391,42 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t16 = -t10;
     const V t17 = t16*t10;
     const V t18 = t17 + t15;
-    const V t19 = -in[57];
-    const V t20 = t16*in[57] + t10*t19;
+    const V t19 = -dat[15];
+    const V t20 = t16*dat[15] + t10*t19;
     const V t21 = v_lie_B(t12);
     const V t22 = t21*t20;
-    const V t23 = -in[54];
-    const V t24 = t8*t23 + t14*in[54];
+    const V t23 = -dat[12];
+    const V t24 = t8*t23 + t14*dat[12];
     const V t25 = t21*t24;
-    const V t26 = -in[58];
-    const V t27 = t16*in[58] + t10*t26;
+    const V t26 = -dat[16];
+    const V t27 = t16*dat[16] + t10*t26;
     const V t28 = t21*t27;
-    const V t29 = -in[55];
-    const V t30 = t8*t29 + t14*in[55];
+    const V t29 = -dat[13];
+    const V t30 = t8*t29 + t14*dat[13];
     const V t31 = t21*t30;
-    const V t32 = -in[59];
-    const V t33 = t16*in[59] + t10*t32;
+    const V t32 = -dat[17];
+    const V t33 = t16*dat[17] + t10*t32;
     const V t34 = t21*t33;
-    const V t35 = -in[56];
-    const V t36 = t8*t35 + t14*in[56];
+    const V t35 = -dat[14];
+    const V t36 = t8*t35 + t14*dat[14];
     const V t37 = t21*t36;
-    const V t38 = -in[84];
-    const V t39 = t16*in[84] + t10*t38;
+    const V t38 = -dat[42];
+    const V t39 = t16*dat[42] + t10*t38;
     const V t40 = t21*t39;
-    const V t41 = -in[81];
-    const V t42 = t8*t41 + t14*in[81];
+    const V t41 = -dat[39];
+    const V t42 = t8*t41 + t14*dat[39];
     const V t43 = t21*t42;
-    const V t44 = -in[82];
-    const V t45 = t8*t44 + t14*in[82];
+    const V t44 = -dat[40];
+    const V t45 = t8*t44 + t14*dat[40];
     const V t46 = t21*t45;
-    const V t47 = -in[85];
-    const V t48 = t16*in[85] + t10*t47;
+    const V t47 = -dat[43];
+    const V t48 = t16*dat[43] + t10*t47;
     const V t49 = t21*t48;
-    const V t50 = -in[83];
-    const V t51 = t8*t50 + t14*in[83];
+    const V t50 = -dat[41];
+    const V t51 = t8*t50 + t14*dat[41];
     const V t52 = t21*t51;
-    const V t53 = -in[86];
-    const V t54 = t16*in[86] + t10*t53;
+    const V t53 = -dat[44];
+    const V t54 = t16*dat[44] + t10*t53;
     const V t55 = t21*t54;
     const V t56 = in[0]*in[15] + in[3]*in[18] + in[6]*in[21];
     const V t57 = in[2]*in[15] + in[5]*in[18] + in[8]*in[21];
@@ -447,23 +447,23 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t72 = -t6;
     const V t73 = t6*t72;
     const V t74 = t17 + t73;
-    const V t75 = -in[51];
-    const V t76 = t6*t75 + t72*in[51];
+    const V t75 = -dat[9];
+    const V t76 = t6*t75 + t72*dat[9];
     const V t77 = t21*t76;
-    const V t78 = -in[52];
-    const V t79 = t6*t78 + t72*in[52];
+    const V t78 = -dat[10];
+    const V t79 = t6*t78 + t72*dat[10];
     const V t80 = t21*t79;
-    const V t81 = -in[53];
-    const V t82 = t6*t81 + t72*in[53];
+    const V t81 = -dat[11];
+    const V t82 = t6*t81 + t72*dat[11];
     const V t83 = t21*t82;
-    const V t84 = -in[78];
-    const V t85 = t6*t84 + t72*in[78];
+    const V t84 = -dat[36];
+    const V t85 = t6*t84 + t72*dat[36];
     const V t86 = t21*t85;
-    const V t87 = -in[79];
-    const V t88 = t6*t87 + t72*in[79];
+    const V t87 = -dat[37];
+    const V t88 = t6*t87 + t72*dat[37];
     const V t89 = t21*t88;
-    const V t90 = -in[80];
-    const V t91 = t6*t90 + t72*in[80];
+    const V t90 = -dat[38];
+    const V t91 = t6*t90 + t72*dat[38];
     const V t92 = t21*t91;
     const V t93 = t73 + t15;
     const V t94 = t16*t21;
@@ -585,13 +585,13 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t209 = -in[21];
     const V t210 = -in[22];
     const V t211 = -in[23];
-    const V t212 = t0*in[60] + t1*in[61] + t2*in[62] + t3*in[87] + t4*in[88] + t5*in[89] + in[45];
-    const V t213 = t0*in[63] + t1*in[64] + t2*in[65] + t3*in[90] + t4*in[91] + t5*in[92] + in[46];
-    const V t214 = t0*in[66] + t1*in[67] + t2*in[68] + t3*in[93] + t4*in[94] + t5*in[95] + in[47];
-    const V t215 = (T(0.5))*(in[111]*in[111]);
-    const V t216 = t212*in[0] + t213*in[1] + t214*in[2] + t215*in[112] + in[111]*in[12] + in[9] - in[24];
-    const V t217 = t212*in[3] + t213*in[4] + t214*in[5] + t215*in[113] + in[111]*in[13] + in[10] - in[25];
-    const V t218 = t212*in[6] + t213*in[7] + t214*in[8] + t215*in[114] + in[111]*in[14] + in[11] - in[26];
+    const V t212 = t0*dat[18] + t1*dat[19] + t2*dat[20] + t3*dat[45] + t4*dat[46] + t5*dat[47] + dat[3];
+    const V t213 = t0*dat[21] + t1*dat[22] + t2*dat[23] + t3*dat[48] + t4*dat[49] + t5*dat[50] + dat[4];
+    const V t214 = t0*dat[24] + t1*dat[25] + t2*dat[26] + t3*dat[51] + t4*dat[52] + t5*dat[53] + dat[5];
+    const V t215 = (T(0.5))*(dat[69]*dat[69]);
+    const V t216 = t212*in[0] + t213*in[1] + t214*in[2] + t215*dat[70] + dat[69]*in[12] + in[9] - in[24];
+    const V t217 = t212*in[3] + t213*in[4] + t214*in[5] + t215*dat[71] + dat[69]*in[13] + in[10] - in[25];
+    const V t218 = t212*in[6] + t213*in[7] + t214*in[8] + t215*dat[72] + dat[69]*in[14] + in[11] - in[26];
     const V t219 = t216*in[15] + t217*in[18] + t218*in[21];
     const V t220 = t216*in[17] + t217*in[20] + t218*in[23];
     const V t221 = t216*in[16] + t217*in[19] + t218*in[22];
@@ -696,22 +696,22 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t320 = t147*t312 + t152*t313 + t155*t317 + t156*t318 + t157*t319 + t161*t311;
     const V t321 = t196*t320;
     const V t322 = t240*t321;
-    const V t323 = t7*in[51] + t9*in[54] + t11*in[57];
+    const V t323 = t7*dat[9] + t9*dat[12] + t11*dat[15];
     const V t324 = t13*t323;
     const V t325 = t18*t324 + t22 + t25;
     const V t326 = t63*t323;
     const V t327 = t21*t23 + t14*t324;
-    const V t328 = t105*in[57] + t72*t327 + t106*t75 + t10*t326;
-    const V t329 = t6*t324 + t21*in[51];
-    const V t330 = t105*t23 + t109*in[57] + t14*t326 + t10*t329;
+    const V t328 = t105*dat[15] + t72*t327 + t106*t75 + t10*t326;
+    const V t329 = t6*t324 + t21*dat[9];
+    const V t330 = t105*t23 + t109*dat[15] + t14*t326 + t10*t329;
     const V t331 = t104*t325 + t108*t328 + t111*t330;
     const V t332 = t74*t324 + t77 + t22;
-    const V t333 = t16*t327 + t6*t326 + t105*in[51] + t106*t19;
-    const V t334 = t16*t326 + t105*t19 + t109*in[54] + t8*t329;
+    const V t333 = t16*t327 + t6*t326 + t105*dat[9] + t106*t19;
+    const V t334 = t16*t326 + t105*t19 + t109*dat[12] + t8*t329;
     const V t335 = t104*t334 + t108*t332 + t111*t333;
     const V t336 = t77 + t93*t324 + t25;
-    const V t337 = t94*t75 + t95*t324 + t96*t19 + t105*in[54] + t8*t326;
-    const V t338 = t97*in[54] + t98*in[57] + t99*t324 + t105*t75 + t72*t326;
+    const V t337 = t94*t75 + t95*t324 + t96*t19 + t105*dat[12] + t8*t326;
+    const V t338 = t97*dat[12] + t98*dat[15] + t99*t324 + t105*t75 + t72*t326;
     const V t339 = t104*t337 + t108*t338 + t111*t336;
     const V t340 = t121*t325 + t122*t328 + t123*t330;
     const V t341 = t121*t334 + t122*t332 + t123*t333;
@@ -722,22 +722,22 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t346 = t147*t335 + t152*t339 + t155*t340 + t156*t341 + t157*t342 + t158*t343 + t159*t344 + t160*t345 + t161*t331;
     const V t347 = t196*t346;
     const V t348 = t240*t347;
-    const V t349 = t7*in[52] + t9*in[55] + t11*in[58];
+    const V t349 = t7*dat[10] + t9*dat[13] + t11*dat[16];
     const V t350 = t13*t349;
     const V t351 = t18*t350 + t28 + t31;
     const V t352 = t63*t349;
     const V t353 = t21*t29 + t14*t350;
-    const V t354 = t105*in[58] + t72*t353 + t106*t78 + t10*t352;
-    const V t355 = t6*t350 + t21*in[52];
-    const V t356 = t105*t29 + t109*in[58] + t14*t352 + t10*t355;
+    const V t354 = t105*dat[16] + t72*t353 + t106*t78 + t10*t352;
+    const V t355 = t6*t350 + t21*dat[10];
+    const V t356 = t105*t29 + t109*dat[16] + t14*t352 + t10*t355;
     const V t357 = t104*t351 + t108*t354 + t111*t356;
     const V t358 = t74*t350 + t80 + t28;
-    const V t359 = t16*t353 + t6*t352 + t105*in[52] + t106*t26;
-    const V t360 = t16*t352 + t105*t26 + t109*in[55] + t8*t355;
+    const V t359 = t16*t353 + t6*t352 + t105*dat[10] + t106*t26;
+    const V t360 = t16*t352 + t105*t26 + t109*dat[13] + t8*t355;
     const V t361 = t104*t360 + t108*t358 + t111*t359;
     const V t362 = t80 + t93*t350 + t31;
-    const V t363 = t94*t78 + t95*t350 + t96*t26 + t105*in[55] + t8*t352;
-    const V t364 = t97*in[55] + t98*in[58] + t99*t350 + t105*t78 + t72*t352;
+    const V t363 = t94*t78 + t95*t350 + t96*t26 + t105*dat[13] + t8*t352;
+    const V t364 = t97*dat[13] + t98*dat[16] + t99*t350 + t105*t78 + t72*t352;
     const V t365 = t104*t363 + t108*t364 + t111*t362;
     const V t366 = t121*t351 + t122*t354 + t123*t356;
     const V t367 = t121*t360 + t122*t358 + t123*t359;
@@ -748,22 +748,22 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t372 = t147*t361 + t152*t365 + t155*t366 + t156*t367 + t157*t368 + t158*t369 + t159*t370 + t160*t371 + t161*t357;
     const V t373 = t196*t372;
     const V t374 = t240*t373;
-    const V t375 = t7*in[53] + t9*in[56] + t11*in[59];
+    const V t375 = t7*dat[11] + t9*dat[14] + t11*dat[17];
     const V t376 = t13*t375;
     const V t377 = t37 + t18*t376 + t34;
     const V t378 = t63*t375;
     const V t379 = t21*t35 + t14*t376;
-    const V t380 = t105*in[59] + t72*t379 + t106*t81 + t10*t378;
-    const V t381 = t6*t376 + t21*in[53];
-    const V t382 = t105*t35 + t109*in[59] + t14*t378 + t10*t381;
+    const V t380 = t105*dat[17] + t72*t379 + t106*t81 + t10*t378;
+    const V t381 = t6*t376 + t21*dat[11];
+    const V t382 = t105*t35 + t109*dat[17] + t14*t378 + t10*t381;
     const V t383 = t104*t377 + t108*t380 + t111*t382;
     const V t384 = t74*t376 + t83 + t34;
-    const V t385 = t16*t379 + t6*t378 + t105*in[53] + t106*t32;
-    const V t386 = t16*t378 + t105*t32 + t109*in[56] + t8*t381;
+    const V t385 = t16*t379 + t6*t378 + t105*dat[11] + t106*t32;
+    const V t386 = t16*t378 + t105*t32 + t109*dat[14] + t8*t381;
     const V t387 = t104*t386 + t108*t384 + t111*t385;
     const V t388 = t37 + t83 + t93*t376;
-    const V t389 = t94*t81 + t95*t376 + t96*t32 + t105*in[56] + t8*t378;
-    const V t390 = t97*in[56] + t98*in[59] + t99*t376 + t105*t81 + t72*t378;
+    const V t389 = t94*t81 + t95*t376 + t96*t32 + t105*dat[14] + t8*t378;
+    const V t390 = t97*dat[14] + t98*dat[17] + t99*t376 + t105*t81 + t72*t378;
     const V t391 = t104*t389 + t108*t390 + t111*t388;
     const V t392 = t121*t377 + t122*t380 + t123*t382;
     const V t393 = t121*t386 + t122*t384 + t123*t385;
@@ -774,22 +774,22 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t398 = t147*t387 + t152*t391 + t155*t392 + t156*t393 + t157*t394 + t158*t395 + t159*t396 + t160*t397 + t161*t383;
     const V t399 = t196*t398;
     const V t400 = t240*t399;
-    const V t401 = t7*in[78] + t9*in[81] + t11*in[84];
+    const V t401 = t7*dat[36] + t9*dat[39] + t11*dat[42];
     const V t402 = t13*t401;
     const V t403 = t40 + t43 + t18*t402;
     const V t404 = t63*t401;
     const V t405 = t21*t41 + t14*t402;
-    const V t406 = t105*in[84] + t72*t405 + t106*t84 + t10*t404;
-    const V t407 = t6*t402 + t21*in[78];
-    const V t408 = t105*t41 + t109*in[84] + t14*t404 + t10*t407;
+    const V t406 = t105*dat[42] + t72*t405 + t106*t84 + t10*t404;
+    const V t407 = t6*t402 + t21*dat[36];
+    const V t408 = t105*t41 + t109*dat[42] + t14*t404 + t10*t407;
     const V t409 = t104*t403 + t108*t406 + t111*t408;
     const V t410 = t40 + t74*t402 + t86;
-    const V t411 = t16*t405 + t6*t404 + t105*in[78] + t106*t38;
-    const V t412 = t16*t404 + t105*t38 + t109*in[81] + t8*t407;
+    const V t411 = t16*t405 + t6*t404 + t105*dat[36] + t106*t38;
+    const V t412 = t16*t404 + t105*t38 + t109*dat[39] + t8*t407;
     const V t413 = t104*t412 + t108*t410 + t111*t411;
     const V t414 = t43 + t86 + t93*t402;
-    const V t415 = t94*t84 + t95*t402 + t96*t38 + t105*in[81] + t8*t404;
-    const V t416 = t97*in[81] + t98*in[84] + t99*t402 + t105*t84 + t72*t404;
+    const V t415 = t94*t84 + t95*t402 + t96*t38 + t105*dat[39] + t8*t404;
+    const V t416 = t97*dat[39] + t98*dat[42] + t99*t402 + t105*t84 + t72*t404;
     const V t417 = t104*t415 + t108*t416 + t111*t414;
     const V t418 = t121*t403 + t122*t406 + t123*t408;
     const V t419 = t121*t412 + t122*t410 + t123*t411;
@@ -800,22 +800,22 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t424 = t147*t413 + t152*t417 + t155*t418 + t156*t419 + t157*t420 + t158*t421 + t159*t422 + t160*t423 + t161*t409;
     const V t425 = t196*t424;
     const V t426 = t240*t425;
-    const V t427 = t7*in[79] + t9*in[82] + t11*in[85];
+    const V t427 = t7*dat[37] + t9*dat[40] + t11*dat[43];
     const V t428 = t13*t427;
     const V t429 = t46 + t49 + t18*t428;
     const V t430 = t63*t427;
     const V t431 = t21*t44 + t14*t428;
-    const V t432 = t105*in[85] + t72*t431 + t106*t87 + t10*t430;
-    const V t433 = t6*t428 + t21*in[79];
-    const V t434 = t105*t44 + t109*in[85] + t14*t430 + t10*t433;
+    const V t432 = t105*dat[43] + t72*t431 + t106*t87 + t10*t430;
+    const V t433 = t6*t428 + t21*dat[37];
+    const V t434 = t105*t44 + t109*dat[43] + t14*t430 + t10*t433;
     const V t435 = t104*t429 + t108*t432 + t111*t434;
     const V t436 = t49 + t74*t428 + t89;
-    const V t437 = t16*t431 + t6*t430 + t105*in[79] + t106*t47;
-    const V t438 = t16*t430 + t105*t47 + t109*in[82] + t8*t433;
+    const V t437 = t16*t431 + t6*t430 + t105*dat[37] + t106*t47;
+    const V t438 = t16*t430 + t105*t47 + t109*dat[40] + t8*t433;
     const V t439 = t104*t438 + t108*t436 + t111*t437;
     const V t440 = t46 + t89 + t93*t428;
-    const V t441 = t94*t87 + t95*t428 + t96*t47 + t105*in[82] + t8*t430;
-    const V t442 = t97*in[82] + t98*in[85] + t99*t428 + t105*t87 + t72*t430;
+    const V t441 = t94*t87 + t95*t428 + t96*t47 + t105*dat[40] + t8*t430;
+    const V t442 = t97*dat[40] + t98*dat[43] + t99*t428 + t105*t87 + t72*t430;
     const V t443 = t104*t441 + t108*t442 + t111*t440;
     const V t444 = t121*t429 + t122*t432 + t123*t434;
     const V t445 = t121*t438 + t122*t436 + t123*t437;
@@ -826,22 +826,22 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t450 = t147*t439 + t152*t443 + t155*t444 + t156*t445 + t157*t446 + t158*t447 + t159*t448 + t160*t449 + t161*t435;
     const V t451 = t196*t450;
     const V t452 = t240*t451;
-    const V t453 = t7*in[80] + t9*in[83] + t11*in[86];
+    const V t453 = t7*dat[38] + t9*dat[41] + t11*dat[44];
     const V t454 = t13*t453;
     const V t455 = t52 + t55 + t18*t454;
     const V t456 = t63*t453;
     const V t457 = t21*t50 + t14*t454;
-    const V t458 = t105*in[86] + t72*t457 + t106*t90 + t10*t456;
-    const V t459 = t6*t454 + t21*in[80];
-    const V t460 = t105*t50 + t109*in[86] + t14*t456 + t10*t459;
+    const V t458 = t105*dat[44] + t72*t457 + t106*t90 + t10*t456;
+    const V t459 = t6*t454 + t21*dat[38];
+    const V t460 = t105*t50 + t109*dat[44] + t14*t456 + t10*t459;
     const V t461 = t104*t455 + t108*t458 + t111*t460;
     const V t462 = t55 + t74*t454 + t92;
-    const V t463 = t16*t457 + t6*t456 + t105*in[80] + t106*t53;
-    const V t464 = t16*t456 + t105*t53 + t109*in[83] + t8*t459;
+    const V t463 = t16*t457 + t6*t456 + t105*dat[38] + t106*t53;
+    const V t464 = t16*t456 + t105*t53 + t109*dat[41] + t8*t459;
     const V t465 = t104*t464 + t108*t462 + t111*t463;
     const V t466 = t52 + t92 + t93*t454;
-    const V t467 = t94*t90 + t95*t454 + t96*t53 + t105*in[83] + t8*t456;
-    const V t468 = t97*in[83] + t98*in[86] + t99*t454 + t105*t90 + t72*t456;
+    const V t467 = t94*t90 + t95*t454 + t96*t53 + t105*dat[41] + t8*t456;
+    const V t468 = t97*dat[41] + t98*dat[44] + t99*t454 + t105*t90 + t72*t456;
     const V t469 = t104*t467 + t108*t468 + t111*t466;
     const V t470 = t121*t455 + t122*t458 + t123*t460;
     const V t471 = t121*t464 + t122*t462 + t123*t463;
@@ -855,12 +855,12 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t479 = t133*t240;
     const V t480 = t138*t240;
     const V t481 = -t197 - t200;
-    const V t482 = t0*in[69] + t1*in[70] + t2*in[71] + t3*in[96] + t4*in[97] + t5*in[98] + in[48];
-    const V t483 = t0*in[72] + t1*in[73] + t2*in[74] + t3*in[99] + t4*in[100] + t5*in[101] + in[49];
-    const V t484 = t0*in[75] + t1*in[76] + t2*in[77] + t3*in[102] + t4*in[103] + t5*in[104] + in[50];
-    const V t485 = t482*in[0] + t483*in[1] + t484*in[2] + in[111]*in[112] + in[12] - in[27];
-    const V t486 = t482*in[3] + t483*in[4] + t484*in[5] + in[111]*in[113] + in[13] - in[28];
-    const V t487 = t482*in[6] + t483*in[7] + t484*in[8] + in[111]*in[114] + in[14] - in[29];
+    const V t482 = t0*dat[27] + t1*dat[28] + t2*dat[29] + t3*dat[54] + t4*dat[55] + t5*dat[56] + dat[6];
+    const V t483 = t0*dat[30] + t1*dat[31] + t2*dat[32] + t3*dat[57] + t4*dat[58] + t5*dat[59] + dat[7];
+    const V t484 = t0*dat[33] + t1*dat[34] + t2*dat[35] + t3*dat[60] + t4*dat[61] + t5*dat[62] + dat[8];
+    const V t485 = t482*in[0] + t483*in[1] + t484*in[2] + dat[69]*dat[70] + in[12] - in[27];
+    const V t486 = t482*in[3] + t483*in[4] + t484*in[5] + dat[69]*dat[71] + in[13] - in[28];
+    const V t487 = t482*in[6] + t483*in[7] + t484*in[8] + dat[69]*dat[72] + in[14] - in[29];
     const V t488 = t485*in[15] + t486*in[18] + t487*in[21];
     const V t489 = t485*in[17] + t486*in[20] + t487*in[23];
     const V t490 = t485*in[16] + t486*in[19] + t487*in[22];
@@ -955,36 +955,36 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t579 = t203;
     const V t580 = t204;
     const V t581 = t205;
-    const V t582 = in[60]*in[0] + in[63]*in[1] + in[66]*in[2];
-    const V t583 = in[61]*in[0] + in[64]*in[1] + in[67]*in[2];
-    const V t584 = in[62]*in[0] + in[65]*in[1] + in[68]*in[2];
-    const V t585 = in[87]*in[0] + in[90]*in[1] + in[93]*in[2];
-    const V t586 = in[88]*in[0] + in[91]*in[1] + in[94]*in[2];
-    const V t587 = in[89]*in[0] + in[92]*in[1] + in[95]*in[2];
+    const V t582 = dat[18]*in[0] + dat[21]*in[1] + dat[24]*in[2];
+    const V t583 = dat[19]*in[0] + dat[22]*in[1] + dat[25]*in[2];
+    const V t584 = dat[20]*in[0] + dat[23]*in[1] + dat[26]*in[2];
+    const V t585 = dat[45]*in[0] + dat[48]*in[1] + dat[51]*in[2];
+    const V t586 = dat[46]*in[0] + dat[49]*in[1] + dat[52]*in[2];
+    const V t587 = dat[47]*in[0] + dat[50]*in[1] + dat[53]*in[2];
     const V t588 = t213*in[5] - t214*in[4];
     const V t589 = -t212*in[5] + t214*in[3];
     const V t590 = t212*in[4] - t213*in[3];
     const V t591 = t206;
     const V t592 = t207;
     const V t593 = t208;
-    const V t594 = in[60]*in[3] + in[63]*in[4] + in[66]*in[5];
-    const V t595 = in[61]*in[3] + in[64]*in[4] + in[67]*in[5];
-    const V t596 = in[62]*in[3] + in[65]*in[4] + in[68]*in[5];
-    const V t597 = in[87]*in[3] + in[90]*in[4] + in[93]*in[5];
-    const V t598 = in[88]*in[3] + in[91]*in[4] + in[94]*in[5];
-    const V t599 = in[89]*in[3] + in[92]*in[4] + in[95]*in[5];
+    const V t594 = dat[18]*in[3] + dat[21]*in[4] + dat[24]*in[5];
+    const V t595 = dat[19]*in[3] + dat[22]*in[4] + dat[25]*in[5];
+    const V t596 = dat[20]*in[3] + dat[23]*in[4] + dat[26]*in[5];
+    const V t597 = dat[45]*in[3] + dat[48]*in[4] + dat[51]*in[5];
+    const V t598 = dat[46]*in[3] + dat[49]*in[4] + dat[52]*in[5];
+    const V t599 = dat[47]*in[3] + dat[50]*in[4] + dat[53]*in[5];
     const V t600 = t213*in[8] - t214*in[7];
     const V t601 = -t212*in[8] + t214*in[6];
     const V t602 = t212*in[7] - t213*in[6];
     const V t603 = t209;
     const V t604 = t210;
     const V t605 = t211;
-    const V t606 = in[60]*in[6] + in[63]*in[7] + in[66]*in[8];
-    const V t607 = in[61]*in[6] + in[64]*in[7] + in[67]*in[8];
-    const V t608 = in[62]*in[6] + in[65]*in[7] + in[68]*in[8];
-    const V t609 = in[87]*in[6] + in[90]*in[7] + in[93]*in[8];
-    const V t610 = in[88]*in[6] + in[91]*in[7] + in[94]*in[8];
-    const V t611 = in[89]*in[6] + in[92]*in[7] + in[95]*in[8];
+    const V t606 = dat[18]*in[6] + dat[21]*in[7] + dat[24]*in[8];
+    const V t607 = dat[19]*in[6] + dat[22]*in[7] + dat[25]*in[8];
+    const V t608 = dat[20]*in[6] + dat[23]*in[7] + dat[26]*in[8];
+    const V t609 = dat[45]*in[6] + dat[48]*in[7] + dat[51]*in[8];
+    const V t610 = dat[46]*in[6] + dat[49]*in[7] + dat[52]*in[8];
+    const V t611 = dat[47]*in[6] + dat[50]*in[7] + dat[53]*in[8];
     const V t612 = t219;
     const V t613 = t576*in[15] + t588*in[18] + t600*in[21];
     const V t614 = t577*in[15] + t589*in[18] + t601*in[21];
@@ -992,9 +992,9 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t616 = t56;
     const V t617 = t59;
     const V t618 = t57;
-    const V t619 = in[111]*in[15];
-    const V t620 = in[111]*in[18];
-    const V t621 = in[111]*in[21];
+    const V t619 = dat[69]*in[15];
+    const V t620 = dat[69]*in[18];
+    const V t621 = dat[69]*in[21];
     const V t622 = -t220;
     const V t623 = t221;
     const V t624 = t579*in[15] + t591*in[18] + t603*in[21];
@@ -1065,9 +1065,9 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t689 = t62;
     const V t690 = t67;
     const V t691 = t71;
-    const V t692 = in[111]*in[16];
-    const V t693 = in[111]*in[19];
-    const V t694 = in[111]*in[22];
+    const V t692 = dat[69]*in[16];
+    const V t693 = dat[69]*in[19];
+    const V t694 = dat[69]*in[22];
     const V t695 = t220;
     const V t696 = -t219;
     const V t697 = t579*in[16] + t591*in[19] + t603*in[22];
@@ -1125,9 +1125,9 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t749 = t60;
     const V t750 = t65;
     const V t751 = t69;
-    const V t752 = in[111]*in[17];
-    const V t753 = in[111]*in[20];
-    const V t754 = in[111]*in[23];
+    const V t752 = dat[69]*in[17];
+    const V t753 = dat[69]*in[20];
+    const V t754 = dat[69]*in[23];
     const V t755 = -t221;
     const V t756 = t219;
     const V t757 = t579*in[17] + t591*in[20] + t603*in[23];
@@ -1246,30 +1246,30 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     const V t870 = t483*in[2] - t484*in[1];
     const V t871 = -t482*in[2] + t484*in[0];
     const V t872 = t482*in[1] - t483*in[0];
-    const V t873 = in[69]*in[0] + in[72]*in[1] + in[75]*in[2];
-    const V t874 = in[70]*in[0] + in[73]*in[1] + in[76]*in[2];
-    const V t875 = in[71]*in[0] + in[74]*in[1] + in[77]*in[2];
-    const V t876 = in[96]*in[0] + in[99]*in[1] + in[102]*in[2];
-    const V t877 = in[97]*in[0] + in[100]*in[1] + in[103]*in[2];
-    const V t878 = in[98]*in[0] + in[101]*in[1] + in[104]*in[2];
+    const V t873 = dat[27]*in[0] + dat[30]*in[1] + dat[33]*in[2];
+    const V t874 = dat[28]*in[0] + dat[31]*in[1] + dat[34]*in[2];
+    const V t875 = dat[29]*in[0] + dat[32]*in[1] + dat[35]*in[2];
+    const V t876 = dat[54]*in[0] + dat[57]*in[1] + dat[60]*in[2];
+    const V t877 = dat[55]*in[0] + dat[58]*in[1] + dat[61]*in[2];
+    const V t878 = dat[56]*in[0] + dat[59]*in[1] + dat[62]*in[2];
     const V t879 = t483*in[5] - t484*in[4];
     const V t880 = -t482*in[5] + t484*in[3];
     const V t881 = t482*in[4] - t483*in[3];
-    const V t882 = in[69]*in[3] + in[72]*in[4] + in[75]*in[5];
-    const V t883 = in[70]*in[3] + in[73]*in[4] + in[76]*in[5];
-    const V t884 = in[71]*in[3] + in[74]*in[4] + in[77]*in[5];
-    const V t885 = in[96]*in[3] + in[99]*in[4] + in[102]*in[5];
-    const V t886 = in[97]*in[3] + in[100]*in[4] + in[103]*in[5];
-    const V t887 = in[98]*in[3] + in[101]*in[4] + in[104]*in[5];
+    const V t882 = dat[27]*in[3] + dat[30]*in[4] + dat[33]*in[5];
+    const V t883 = dat[28]*in[3] + dat[31]*in[4] + dat[34]*in[5];
+    const V t884 = dat[29]*in[3] + dat[32]*in[4] + dat[35]*in[5];
+    const V t885 = dat[54]*in[3] + dat[57]*in[4] + dat[60]*in[5];
+    const V t886 = dat[55]*in[3] + dat[58]*in[4] + dat[61]*in[5];
+    const V t887 = dat[56]*in[3] + dat[59]*in[4] + dat[62]*in[5];
     const V t888 = t483*in[8] - t484*in[7];
     const V t889 = -t482*in[8] + t484*in[6];
     const V t890 = t482*in[7] - t483*in[6];
-    const V t891 = in[69]*in[6] + in[72]*in[7] + in[75]*in[8];
-    const V t892 = in[70]*in[6] + in[73]*in[7] + in[76]*in[8];
-    const V t893 = in[71]*in[6] + in[74]*in[7] + in[77]*in[8];
-    const V t894 = in[96]*in[6] + in[99]*in[7] + in[102]*in[8];
-    const V t895 = in[97]*in[6] + in[100]*in[7] + in[103]*in[8];
-    const V t896 = in[98]*in[6] + in[101]*in[7] + in[104]*in[8];
+    const V t891 = dat[27]*in[6] + dat[30]*in[7] + dat[33]*in[8];
+    const V t892 = dat[28]*in[6] + dat[31]*in[7] + dat[34]*in[8];
+    const V t893 = dat[29]*in[6] + dat[32]*in[7] + dat[35]*in[8];
+    const V t894 = dat[54]*in[6] + dat[57]*in[7] + dat[60]*in[8];
+    const V t895 = dat[55]*in[6] + dat[58]*in[7] + dat[61]*in[8];
+    const V t896 = dat[56]*in[6] + dat[59]*in[7] + dat[62]*in[8];
     const V t897 = t488;
     const V t898 = t870*in[15] + t879*in[18] + t888*in[21];
     const V t899 = t871*in[15] + t880*in[18] + t889*in[21];
@@ -1668,22 +1668,22 @@ void jacobian_0(const V in[115], T ab[LANES][480]) {
     }
 }
 
-void cost_0(const V in[235], T half[LANES][1]) {
+void cost_0(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = in[30] - in[105];
-    const V t1 = in[31] - in[106];
-    const V t2 = in[32] - in[107];
-    const V t3 = in[33] - in[108];
-    const V t4 = in[34] - in[109];
-    const V t5 = in[35] - in[110];
-    const V t6 = t0*in[54] + t1*in[55] + t2*in[56] + t3*in[81] + t4*in[82] + t5*in[83] + in[43];
+    const V t0 = in[30] - dat[63];
+    const V t1 = in[31] - dat[64];
+    const V t2 = in[32] - dat[65];
+    const V t3 = in[33] - dat[66];
+    const V t4 = in[34] - dat[67];
+    const V t5 = in[35] - dat[68];
+    const V t6 = t0*dat[12] + t1*dat[13] + t2*dat[14] + t3*dat[39] + t4*dat[40] + t5*dat[41] + dat[1];
     const V t7 = -t6;
     const V t8 = t6*t7;
-    const V t9 = t0*in[57] + t1*in[58] + t2*in[59] + t3*in[84] + t4*in[85] + t5*in[86] + in[44];
+    const V t9 = t0*dat[15] + t1*dat[16] + t2*dat[17] + t3*dat[42] + t4*dat[43] + t5*dat[44] + dat[2];
     const V t10 = -t9;
     const V t11 = t10*t9;
     const V t12 = t11 + t8;
-    const V t13 = t0*in[51] + t1*in[52] + t2*in[53] + t3*in[78] + t4*in[79] + t5*in[80] + in[42];
+    const V t13 = t0*dat[9] + t1*dat[10] + t2*dat[11] + t3*dat[36] + t4*dat[37] + t5*dat[38] + dat[0];
     const V t14 = (t13*t13) + (t6*t6) + (t9*t9);
     const V t15 = v_lie_B(t14);
     const V t16 = t12*t15 + T(1);
@@ -1745,13 +1745,13 @@ void cost_0(const V in[235], T half[LANES][1]) {
     const V t71 = t67 + t70;
     const V t72 = v_lie_D(t71);
     const V t73 = -t67*t72 + T(1);
-    const V t74 = t0*in[60] + t1*in[61] + t2*in[62] + t3*in[87] + t4*in[88] + t5*in[89] + in[45];
-    const V t75 = t0*in[63] + t1*in[64] + t2*in[65] + t3*in[90] + t4*in[91] + t5*in[92] + in[46];
-    const V t76 = t0*in[66] + t1*in[67] + t2*in[68] + t3*in[93] + t4*in[94] + t5*in[95] + in[47];
-    const V t77 = (T(0.5))*(in[111]*in[111]);
-    const V t78 = t74*in[0] + t75*in[1] + t76*in[2] + t77*in[112] + in[111]*in[12] + in[9] - in[24];
-    const V t79 = t74*in[3] + t75*in[4] + t76*in[5] + t77*in[113] + in[111]*in[13] + in[10] - in[25];
-    const V t80 = t74*in[6] + t75*in[7] + t76*in[8] + t77*in[114] + in[111]*in[14] + in[11] - in[26];
+    const V t74 = t0*dat[18] + t1*dat[19] + t2*dat[20] + t3*dat[45] + t4*dat[46] + t5*dat[47] + dat[3];
+    const V t75 = t0*dat[21] + t1*dat[22] + t2*dat[23] + t3*dat[48] + t4*dat[49] + t5*dat[50] + dat[4];
+    const V t76 = t0*dat[24] + t1*dat[25] + t2*dat[26] + t3*dat[51] + t4*dat[52] + t5*dat[53] + dat[5];
+    const V t77 = (T(0.5))*(dat[69]*dat[69]);
+    const V t78 = t74*in[0] + t75*in[1] + t76*in[2] + t77*dat[70] + dat[69]*in[12] + in[9] - in[24];
+    const V t79 = t74*in[3] + t75*in[4] + t76*in[5] + t77*dat[71] + dat[69]*in[13] + in[10] - in[25];
+    const V t80 = t74*in[6] + t75*in[7] + t76*in[8] + t77*dat[72] + dat[69]*in[14] + in[11] - in[26];
     const V t81 = t78*in[15] + t79*in[18] + t80*in[21];
     const V t82 = t81;
     const V t83 = (T(0.5))*t64;
@@ -1782,12 +1782,12 @@ void cost_0(const V in[235], T half[LANES][1]) {
     const V t108 = t91 + t92;
     const V t109 = -t100 + t102;
     const V t110 = t82*t108 + t89*t109 + t95*t107;
-    const V t111 = t0*in[69] + t1*in[70] + t2*in[71] + t3*in[96] + t4*in[97] + t5*in[98] + in[48];
-    const V t112 = t0*in[72] + t1*in[73] + t2*in[74] + t3*in[99] + t4*in[100] + t5*in[101] + in[49];
-    const V t113 = t0*in[75] + t1*in[76] + t2*in[77] + t3*in[102] + t4*in[103] + t5*in[104] + in[50];
-    const V t114 = t111*in[0] + t112*in[1] + t113*in[2] + in[111]*in[112] + in[12] - in[27];
-    const V t115 = t111*in[3] + t112*in[4] + t113*in[5] + in[111]*in[113] + in[13] - in[28];
-    const V t116 = t111*in[6] + t112*in[7] + t113*in[8] + in[111]*in[114] + in[14] - in[29];
+    const V t111 = t0*dat[27] + t1*dat[28] + t2*dat[29] + t3*dat[54] + t4*dat[55] + t5*dat[56] + dat[6];
+    const V t112 = t0*dat[30] + t1*dat[31] + t2*dat[32] + t3*dat[57] + t4*dat[58] + t5*dat[59] + dat[7];
+    const V t113 = t0*dat[33] + t1*dat[34] + t2*dat[35] + t3*dat[60] + t4*dat[61] + t5*dat[62] + dat[8];
+    const V t114 = t111*in[0] + t112*in[1] + t113*in[2] + dat[69]*dat[70] + in[12] - in[27];
+    const V t115 = t111*in[3] + t112*in[4] + t113*in[5] + dat[69]*dat[71] + in[13] - in[28];
+    const V t116 = t111*in[6] + t112*in[7] + t113*in[8] + dat[69]*dat[72] + in[14] - in[29];
     const V t117 = t114*in[15] + t115*in[18] + t116*in[21];
     const V t118 = t117;
     const V t119 = t114*in[16] + t115*in[19] + t116*in[22];
@@ -1803,7 +1803,7 @@ void cost_0(const V in[235], T half[LANES][1]) {
     const V t129 = in[33] - in[39];
     const V t130 = in[34] - in[40];
     const V t131 = in[35] - in[41];
-    const V t132 = (T(0.5))*(t131*t131)*(in[234]*in[234]) + (T(0.5))*((t130*in[232] + t131*in[233])*(t130*in[232] + t131*in[233])) + (T(0.5))*((t129*in[229] + t130*in[230] + t131*in[231])*(t129*in[229] + t130*in[230] + t131*in[231])) + (T(0.5))*((t129*in[226] + t130*in[227] + t131*in[228] + t128*in[225])*(t129*in[226] + t130*in[227] + t131*in[228] + t128*in[225])) + (T(0.5))*((t129*in[222] + t130*in[223] + t131*in[224] + t127*in[220] + t128*in[221])*(t129*in[222] + t130*in[223] + t131*in[224] + t127*in[220] + t128*in[221])) + (T(0.5))*((t129*in[217] + t130*in[218] + t131*in[219] + t126*in[214] + t127*in[215] + t128*in[216])*(t129*in[217] + t130*in[218] + t131*in[219] + t126*in[214] + t127*in[215] + t128*in[216])) + (T(0.5))*((t129*in[211] + t130*in[212] + t131*in[213] + t125*in[207] + t126*in[208] + t127*in[209] + t128*in[210])*(t129*in[211] + t130*in[212] + t131*in[213] + t125*in[207] + t126*in[208] + t127*in[209] + t128*in[210])) + (T(0.5))*((t129*in[204] + t130*in[205] + t131*in[206] + t124*in[199] + t125*in[200] + t126*in[201] + t127*in[202] + t128*in[203])*(t129*in[204] + t130*in[205] + t131*in[206] + t124*in[199] + t125*in[200] + t126*in[201] + t127*in[202] + t128*in[203])) + (T(0.5))*((t129*in[196] + t130*in[197] + t131*in[198] + t123*in[190] + t124*in[191] + t125*in[192] + t126*in[193] + t127*in[194] + t128*in[195])*(t129*in[196] + t130*in[197] + t131*in[198] + t123*in[190] + t124*in[191] + t125*in[192] + t126*in[193] + t127*in[194] + t128*in[195])) + (T(0.5))*((t129*in[187] + t130*in[188] + t131*in[189] + t110*in[180] + t123*in[181] + t124*in[182] + t125*in[183] + t126*in[184] + t127*in[185] + t128*in[186])*(t129*in[187] + t130*in[188] + t131*in[189] + t110*in[180] + t123*in[181] + t124*in[182] + t125*in[183] + t126*in[184] + t127*in[185] + t128*in[186])) + (T(0.5))*((t105*in[169] + t129*in[177] + t130*in[178] + t131*in[179] + t110*in[170] + t123*in[171] + t124*in[172] + t125*in[173] + t126*in[174] + t127*in[175] + t128*in[176])*(t105*in[169] + t129*in[177] + t130*in[178] + t131*in[179] + t110*in[170] + t123*in[171] + t124*in[172] + t125*in[173] + t126*in[174] + t127*in[175] + t128*in[176])) + (T(0.5))*((t96*in[157] + t105*in[158] + t129*in[166] + t130*in[167] + t131*in[168] + t110*in[159] + t123*in[160] + t124*in[161] + t125*in[162] + t126*in[163] + t127*in[164] + t128*in[165])*(t96*in[157] + t105*in[158] + t129*in[166] + t130*in[167] + t131*in[168] + t110*in[159] + t123*in[160] + t124*in[161] + t125*in[162] + t126*in[163] + t127*in[164] + t128*in[165])) + (T(0.5))*((t96*in[145] + t105*in[146] + t129*in[154] + t130*in[155] + t131*in[156] + t110*in[147] + t123*in[148] + t124*in[149] + t125*in[150] + t126*in[151] + t127*in[152] + t128*in[153] + t64*in[144])*(t96*in[145] + t105*in[146] + t129*in[154] + t130*in[155] + t131*in[156] + t110*in[147] + t123*in[148] + t124*in[149] + t125*in[150] + t126*in[151] + t127*in[152] + t128*in[153] + t64*in[144])) + (T(0.5))*((t96*in[132] + t105*in[133] + t129*in[141] + t130*in[142] + t131*in[143] + t110*in[134] + t123*in[135] + t124*in[136] + t125*in[137] + t126*in[138] + t127*in[139] + t128*in[140] + t61*in[130] + t64*in[131])*(t96*in[132] + t105*in[133] + t129*in[141] + t130*in[142] + t131*in[143] + t110*in[134] + t123*in[135] + t124*in[136] + t125*in[137] + t126*in[138] + t127*in[139] + t128*in[140] + t61*in[130] + t64*in[131])) + (T(0.5))*((t96*in[118] + t105*in[119] + t129*in[127] + t130*in[128] + t131*in[129] + t110*in[120] + t123*in[121] + t124*in[122] + t125*in[123] + t126*in[124] + t127*in[125] + t128*in[126] + t68*in[115] + t61*in[116] + t64*in[117])*(t96*in[118] + t105*in[119] + t129*in[127] + t130*in[128] + t131*in[129] + t110*in[120] + t123*in[121] + t124*in[122] + t125*in[123] + t126*in[124] + t127*in[125] + t128*in[126] + t68*in[115] + t61*in[116] + t64*in[117]));
+    const V t132 = (T(0.5))*(t131*t131)*(dat[192]*dat[192]) + (T(0.5))*((t130*dat[190] + t131*dat[191])*(t130*dat[190] + t131*dat[191])) + (T(0.5))*((t129*dat[187] + t130*dat[188] + t131*dat[189])*(t129*dat[187] + t130*dat[188] + t131*dat[189])) + (T(0.5))*((t129*dat[184] + t130*dat[185] + t131*dat[186] + t128*dat[183])*(t129*dat[184] + t130*dat[185] + t131*dat[186] + t128*dat[183])) + (T(0.5))*((t129*dat[180] + t130*dat[181] + t131*dat[182] + t127*dat[178] + t128*dat[179])*(t129*dat[180] + t130*dat[181] + t131*dat[182] + t127*dat[178] + t128*dat[179])) + (T(0.5))*((t129*dat[175] + t130*dat[176] + t131*dat[177] + t126*dat[172] + t127*dat[173] + t128*dat[174])*(t129*dat[175] + t130*dat[176] + t131*dat[177] + t126*dat[172] + t127*dat[173] + t128*dat[174])) + (T(0.5))*((t129*dat[169] + t130*dat[170] + t131*dat[171] + t125*dat[165] + t126*dat[166] + t127*dat[167] + t128*dat[168])*(t129*dat[169] + t130*dat[170] + t131*dat[171] + t125*dat[165] + t126*dat[166] + t127*dat[167] + t128*dat[168])) + (T(0.5))*((t129*dat[162] + t130*dat[163] + t131*dat[164] + t124*dat[157] + t125*dat[158] + t126*dat[159] + t127*dat[160] + t128*dat[161])*(t129*dat[162] + t130*dat[163] + t131*dat[164] + t124*dat[157] + t125*dat[158] + t126*dat[159] + t127*dat[160] + t128*dat[161])) + (T(0.5))*((t129*dat[154] + t130*dat[155] + t131*dat[156] + t123*dat[148] + t124*dat[149] + t125*dat[150] + t126*dat[151] + t127*dat[152] + t128*dat[153])*(t129*dat[154] + t130*dat[155] + t131*dat[156] + t123*dat[148] + t124*dat[149] + t125*dat[150] + t126*dat[151] + t127*dat[152] + t128*dat[153])) + (T(0.5))*((t129*dat[145] + t130*dat[146] + t131*dat[147] + t110*dat[138] + t123*dat[139] + t124*dat[140] + t125*dat[141] + t126*dat[142] + t127*dat[143] + t128*dat[144])*(t129*dat[145] + t130*dat[146] + t131*dat[147] + t110*dat[138] + t123*dat[139] + t124*dat[140] + t125*dat[141] + t126*dat[142] + t127*dat[143] + t128*dat[144])) + (T(0.5))*((t105*dat[127] + t129*dat[135] + t130*dat[136] + t131*dat[137] + t110*dat[128] + t123*dat[129] + t124*dat[130] + t125*dat[131] + t126*dat[132] + t127*dat[133] + t128*dat[134])*(t105*dat[127] + t129*dat[135] + t130*dat[136] + t131*dat[137] + t110*dat[128] + t123*dat[129] + t124*dat[130] + t125*dat[131] + t126*dat[132] + t127*dat[133] + t128*dat[134])) + (T(0.5))*((t96*dat[115] + t105*dat[116] + t129*dat[124] + t130*dat[125] + t131*dat[126] + t110*dat[117] + t123*dat[118] + t124*dat[119] + t125*dat[120] + t126*dat[121] + t127*dat[122] + t128*dat[123])*(t96*dat[115] + t105*dat[116] + t129*dat[124] + t130*dat[125] + t131*dat[126] + t110*dat[117] + t123*dat[118] + t124*dat[119] + t125*dat[120] + t126*dat[121] + t127*dat[122] + t128*dat[123])) + (T(0.5))*((t96*dat[103] + t105*dat[104] + t129*dat[112] + t130*dat[113] + t131*dat[114] + t110*dat[105] + t123*dat[106] + t124*dat[107] + t125*dat[108] + t126*dat[109] + t127*dat[110] + t128*dat[111] + t64*dat[102])*(t96*dat[103] + t105*dat[104] + t129*dat[112] + t130*dat[113] + t131*dat[114] + t110*dat[105] + t123*dat[106] + t124*dat[107] + t125*dat[108] + t126*dat[109] + t127*dat[110] + t128*dat[111] + t64*dat[102])) + (T(0.5))*((t96*dat[90] + t105*dat[91] + t129*dat[99] + t130*dat[100] + t131*dat[101] + t110*dat[92] + t123*dat[93] + t124*dat[94] + t125*dat[95] + t126*dat[96] + t127*dat[97] + t128*dat[98] + t61*dat[88] + t64*dat[89])*(t96*dat[90] + t105*dat[91] + t129*dat[99] + t130*dat[100] + t131*dat[101] + t110*dat[92] + t123*dat[93] + t124*dat[94] + t125*dat[95] + t126*dat[96] + t127*dat[97] + t128*dat[98] + t61*dat[88] + t64*dat[89])) + (T(0.5))*((t96*dat[76] + t105*dat[77] + t129*dat[85] + t130*dat[86] + t131*dat[87] + t110*dat[78] + t123*dat[79] + t124*dat[80] + t125*dat[81] + t126*dat[82] + t127*dat[83] + t128*dat[84] + t68*dat[73] + t61*dat[74] + t64*dat[75])*(t96*dat[76] + t105*dat[77] + t129*dat[85] + t130*dat[86] + t131*dat[87] + t110*dat[78] + t123*dat[79] + t124*dat[80] + t125*dat[81] + t126*dat[82] + t127*dat[83] + t128*dat[84] + t68*dat[73] + t61*dat[74] + t64*dat[75]));
     const V o0 = t132;
     for (int l = 0; l < LANES; ++l) {
         half[l][0] = lane(o0, l);
@@ -1811,17 +1811,17 @@ void cost_0(const V in[235], T half[LANES][1]) {
 }
 
 // block 1: PriorFactorPose3 (6 rows, 6 columns, 1 instances)
-void jacobian_1(const V in[24], T ab[LANES][48]) {
+void jacobian_1(const V* in, const V* dat, T ab[LANES][48]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = in[12]*in[0] + in[15]*in[3] + in[18]*in[6];
-    const V t1 = in[12]*in[2] + in[15]*in[5] + in[18]*in[8];
-    const V t2 = in[12]*in[1] + in[15]*in[4] + in[18]*in[7];
-    const V t3 = in[13]*in[0] + in[16]*in[3] + in[19]*in[6];
-    const V t4 = in[13]*in[2] + in[16]*in[5] + in[19]*in[8];
-    const V t5 = in[13]*in[1] + in[16]*in[4] + in[19]*in[7];
-    const V t6 = in[14]*in[0] + in[17]*in[3] + in[20]*in[6];
-    const V t7 = in[14]*in[2] + in[17]*in[5] + in[20]*in[8];
-    const V t8 = in[14]*in[1] + in[17]*in[4] + in[20]*in[7];
+    const V t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
+    const V t1 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
+    const V t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
+    const V t3 = dat[1]*in[0] + dat[4]*in[3] + dat[7]*in[6];
+    const V t4 = dat[1]*in[2] + dat[4]*in[5] + dat[7]*in[8];
+    const V t5 = dat[1]*in[1] + dat[4]*in[4] + dat[7]*in[7];
+    const V t6 = dat[2]*in[0] + dat[5]*in[3] + dat[8]*in[6];
+    const V t7 = dat[2]*in[2] + dat[5]*in[5] + dat[8]*in[8];
+    const V t8 = dat[2]*in[1] + dat[5]*in[4] + dat[8]*in[7];
     const V t9 = t0;
     const V t10 = t2;
     const V t11 = t1;
@@ -1916,13 +1916,13 @@ void jacobian_1(const V in[24], T ab[LANES][48]) {
     const V t99 = -t95 + t96;
     const V t100 = -t75 - t78;
     const V t101 = t100*t81 + T(1);
-    const V t102 = -in[12]*in[21] + in[12]*in[9] - in[15]*in[22] + in[15]*in[10] - in[18]*in[23] + in[18]*in[11];
+    const V t102 = -dat[0]*dat[9] + dat[0]*in[9] - dat[3]*dat[10] + dat[3]*in[10] - dat[6]*dat[11] + dat[6]*in[11];
     const V t103 = t77*t102;
     const V t104 = t81*t102;
-    const V t105 = -in[13]*in[21] + in[13]*in[9] - in[16]*in[22] + in[16]*in[10] - in[19]*in[23] + in[19]*in[11];
+    const V t105 = -dat[1]*dat[9] + dat[1]*in[9] - dat[4]*dat[10] + dat[4]*in[10] - dat[7]*dat[11] + dat[7]*in[11];
     const V t106 = t93*t105;
     const V t107 = t81*t105;
-    const V t108 = -in[14]*in[21] + in[14]*in[9] - in[17]*in[22] + in[17]*in[10] - in[20]*in[23] + in[20]*in[11];
+    const V t108 = -dat[2]*dat[9] + dat[2]*in[9] - dat[5]*dat[10] + dat[5]*in[10] - dat[8]*dat[11] + dat[8]*in[11];
     const V t109 = t100*t108;
     const V t110 = t81*t108;
     const V t111 = -t1;
@@ -2068,25 +2068,25 @@ void jacobian_1(const V in[24], T ab[LANES][48]) {
     }
 }
 
-void cost_1(const V in[25], T half[LANES][1]) {
+void cost_1(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = in[12]*in[0] + in[15]*in[3] + in[18]*in[6];
+    const V t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const V t1 = t0;
-    const V t2 = in[12]*in[1] + in[15]*in[4] + in[18]*in[7];
+    const V t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
     const V t3 = t2;
-    const V t4 = in[12]*in[2] + in[15]*in[5] + in[18]*in[8];
+    const V t4 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
     const V t5 = t4;
-    const V t6 = in[13]*in[0] + in[16]*in[3] + in[19]*in[6];
+    const V t6 = dat[1]*in[0] + dat[4]*in[3] + dat[7]*in[6];
     const V t7 = t6;
-    const V t8 = in[13]*in[1] + in[16]*in[4] + in[19]*in[7];
+    const V t8 = dat[1]*in[1] + dat[4]*in[4] + dat[7]*in[7];
     const V t9 = t8;
-    const V t10 = in[13]*in[2] + in[16]*in[5] + in[19]*in[8];
+    const V t10 = dat[1]*in[2] + dat[4]*in[5] + dat[7]*in[8];
     const V t11 = t10;
-    const V t12 = in[14]*in[0] + in[17]*in[3] + in[20]*in[6];
+    const V t12 = dat[2]*in[0] + dat[5]*in[3] + dat[8]*in[6];
     const V t13 = t12;
-    const V t14 = in[14]*in[1] + in[17]*in[4] + in[20]*in[7];
+    const V t14 = dat[2]*in[1] + dat[5]*in[4] + dat[8]*in[7];
     const V t15 = t14;
-    const V t16 = in[14]*in[2] + in[17]*in[5] + in[20]*in[8];
+    const V t16 = dat[2]*in[2] + dat[5]*in[5] + dat[8]*in[8];
     const V t17 = t16;
     V tlog0[3]; v_so3_log(t1, t3, t5, t7, t9, t11, t13, t15, t17, tlog0);
     const V t18 = tlog0[0];
@@ -2114,9 +2114,9 @@ void cost_1(const V in[25], T half[LANES][1]) {
     const V t40 = t39;
     const V t41 = t22*t36;
     const V t42 = -t40 + t41;
-    const V t43 = -in[12]*in[21] + in[12]*in[9] - in[15]*in[22] + in[15]*in[10] - in[18]*in[23] + in[18]*in[11];
-    const V t44 = -in[13]*in[21] + in[13]*in[9] - in[16]*in[22] + in[16]*in[10] - in[19]*in[23] + in[19]*in[11];
-    const V t45 = -in[14]*in[21] + in[14]*in[9] - in[17]*in[22] + in[17]*in[10] - in[20]*in[23] + in[20]*in[11];
+    const V t43 = -dat[0]*dat[9] + dat[0]*in[9] - dat[3]*dat[10] + dat[3]*in[10] - dat[6]*dat[11] + dat[6]*in[11];
+    const V t44 = -dat[1]*dat[9] + dat[1]*in[9] - dat[4]*dat[10] + dat[4]*in[10] - dat[7]*dat[11] + dat[7]*in[11];
+    const V t45 = -dat[2]*dat[9] + dat[2]*in[9] - dat[5]*dat[10] + dat[5]*in[10] - dat[8]*dat[11] + dat[8]*in[11];
     const V t46 = t33*t43 + t38*t44 + t42*t45;
     const V t47 = -t35 + t37;
     const V t48 = -t27 - t30;
@@ -2132,7 +2132,7 @@ void cost_1(const V in[25], T half[LANES][1]) {
     const V t58 = -t25 - t30;
     const V t59 = t58*t32 + T(1);
     const V t60 = t56*t43 + t57*t44 + t59*t45;
-    const V t61 = (T(0.5))*(in[24]*in[24]);
+    const V t61 = (T(0.5))*(dat[12]*dat[12]);
     const V t62 = t19*t61 + t21*t61 + t23*t61 + (t46*t46)*t61 + (t55*t55)*t61 + (t60*t60)*t61;
     const V o0 = t62;
     for (int l = 0; l < LANES; ++l) {
@@ -2141,12 +2141,12 @@ void cost_1(const V in[25], T half[LANES][1]) {
 }
 
 // block 2: PriorFactorVector3 (3 rows, 3 columns, 1 instances)
-void jacobian_2(const V in[6], T ab[LANES][12]) {
+void jacobian_2(const V* in, const V* dat, T ab[LANES][12]) {
 #pragma HLS PIPELINE II=1
     // every output once, as a whole V, before it is taken apart lane by lane
-    const V o1 = -in[3] + in[0];
-    const V o3 = -in[4] + in[1];
-    const V o5 = -in[5] + in[2];
+    const V o1 = -dat[0] + in[0];
+    const V o3 = -dat[1] + in[1];
+    const V o5 = -dat[2] + in[2];
     for (int l = 0; l < LANES; ++l) {
         ab[l][0] = T(1);
         ab[l][3] = lane(o1, l);
@@ -2157,12 +2157,12 @@ void jacobian_2(const V in[6], T ab[LANES][12]) {
     }
 }
 
-void cost_2(const V in[7], T half[LANES][1]) {
+void cost_2(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = -in[3] + in[0];
-    const V t1 = -in[4] + in[1];
-    const V t2 = -in[5] + in[2];
-    const V t3 = (T(0.5))*(in[6]*in[6]);
+    const V t0 = -dat[0] + in[0];
+    const V t1 = -dat[1] + in[1];
+    const V t2 = -dat[2] + in[2];
+    const V t3 = (T(0.5))*(dat[3]*dat[3]);
     const V t4 = (t0*t0)*t3 + (t1*t1)*t3 + (t2*t2)*t3;
     const V o0 = t4;
     for (int l = 0; l < LANES; ++l) {
@@ -2171,15 +2171,15 @@ void cost_2(const V in[7], T half[LANES][1]) {
 }
 
 // block 3: PriorFactorImuBias (6 rows, 6 columns, 1 instances)
-void jacobian_3(const V in[12], T ab[LANES][48]) {
+void jacobian_3(const V* in, const V* dat, T ab[LANES][48]) {
 #pragma HLS PIPELINE II=1
     // every output once, as a whole V, before it is taken apart lane by lane
-    const V o1 = -in[6] + in[0];
-    const V o3 = -in[7] + in[1];
-    const V o5 = -in[8] + in[2];
-    const V o7 = -in[9] + in[3];
-    const V o9 = -in[10] + in[4];
-    const V o11 = -in[11] + in[5];
+    const V o1 = -dat[0] + in[0];
+    const V o3 = -dat[1] + in[1];
+    const V o5 = -dat[2] + in[2];
+    const V o7 = -dat[3] + in[3];
+    const V o9 = -dat[4] + in[4];
+    const V o11 = -dat[5] + in[5];
     for (int l = 0; l < LANES; ++l) {
         ab[l][0] = T(1);
         ab[l][6] = lane(o1, l);
@@ -2196,15 +2196,15 @@ void jacobian_3(const V in[12], T ab[LANES][48]) {
     }
 }
 
-void cost_3(const V in[13], T half[LANES][1]) {
+void cost_3(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = -in[6] + in[0];
-    const V t1 = -in[7] + in[1];
-    const V t2 = -in[8] + in[2];
-    const V t3 = -in[9] + in[3];
-    const V t4 = -in[10] + in[4];
-    const V t5 = -in[11] + in[5];
-    const V t6 = (T(0.5))*(in[12]*in[12]);
+    const V t0 = -dat[0] + in[0];
+    const V t1 = -dat[1] + in[1];
+    const V t2 = -dat[2] + in[2];
+    const V t3 = -dat[3] + in[3];
+    const V t4 = -dat[4] + in[4];
+    const V t5 = -dat[5] + in[5];
+    const V t6 = (T(0.5))*(dat[6]*dat[6]);
     const V t7 = (t0*t0)*t6 + (t1*t1)*t6 + (t2*t2)*t6 + (t3*t3)*t6 + (t4*t4)*t6 + (t5*t5)*t6;
     const V o0 = t7;
     for (int l = 0; l < LANES; ++l) {
@@ -2364,25 +2364,28 @@ T robust_loss(T half, T code, T k) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK0_LANED[1][193][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK0_LANED[1][193];
 
 void lane_data_0() {
     for (int first = 0; first < 7; first += LANES) {
-        T (*laned)[LANES] = BLOCK0_LANED[first / LANES];
+        T laned[193][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK0_INSTANCES[first + l < 7 ? first + l : 6];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 73; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 120; ++i) laned[73 + i][l] = line[73 + i];
         }
+        for (int i = 0; i < 193; ++i) BLOCK0_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK0_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_0(const T* x, int first, bool cost, V in[235]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_0(const T* x, int first, bool cost, V in[235]) {
 #ifndef __SYNTHESIS__
     T buf[42][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2396,11 +2399,8 @@ void gather_0(const T* x, int first, bool cost, V in[235]) {
         for (int i = 0; i < 6; ++i) buf[36 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 5]] + i];
     }
     for (int i = 0; i < 42; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK0_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 193 : 73); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=193
-        in[42 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK0_LANED[first / LANES];
 #else
     T buf[235][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2421,6 +2421,7 @@ void gather_0(const T* x, int first, bool cost, V in[235]) {
 #pragma HLS LOOP_TRIPCOUNT max=235
         in[i] = load_lanes(buf[i]);
     }
+    return in + 42;
 #endif
 }
 
@@ -2430,12 +2431,12 @@ void gather_0(const T* x, int first, bool cost, V in[235]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
     V in[235];
-    gather_0(x, first, false, in);
+    const V* dat = gather_0(x, first, false, in);
     // rows [J | r] padded to 32 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][480];
     static T ab[LANES][480];  // the whitened rows, every entry written
-    jacobian_0(in, raw);
+    jacobian_0(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 7) continue;
@@ -2472,9 +2473,9 @@ bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
 // block 0, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_0(const T* x, int first, T* total) {
     V in[235];
-    gather_0(x, first, true, in);
+    const V* dat = gather_0(x, first, true, in);
     T half[LANES][1];
-    cost_0(in, half);
+    cost_0(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 7) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK0_INSTANCES[first + l]];
@@ -2486,25 +2487,28 @@ void cost_of_0(const T* x, int first, T* total) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK1_LANED[1][13][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK1_LANED[1][13];
 
 void lane_data_1() {
     for (int first = 0; first < 1; first += LANES) {
-        T (*laned)[LANES] = BLOCK1_LANED[first / LANES];
+        T laned[13][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK1_INSTANCES[first + l < 1 ? first + l : 0];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 12; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 1; ++i) laned[12 + i][l] = line[12 + i];
         }
+        for (int i = 0; i < 13; ++i) BLOCK1_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK1_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_1(const T* x, int first, bool cost, V in[25]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_1(const T* x, int first, bool cost, V in[25]) {
 #ifndef __SYNTHESIS__
     T buf[12][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2513,11 +2517,8 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
         for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     }
     for (int i = 0; i < 12; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK1_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 13 : 12); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=13
-        in[12 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK1_LANED[first / LANES];
 #else
     T buf[25][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2533,6 +2534,7 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
 #pragma HLS LOOP_TRIPCOUNT max=25
         in[i] = load_lanes(buf[i]);
     }
+    return in + 12;
 #endif
 }
 
@@ -2542,12 +2544,12 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
     V in[25];
-    gather_1(x, first, false, in);
+    const V* dat = gather_1(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][48];
     static T ab[LANES][48];  // the whitened rows, every entry written
-    jacobian_1(in, raw);
+    jacobian_1(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
@@ -2574,9 +2576,9 @@ bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
 // block 1, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_1(const T* x, int first, T* total) {
     V in[25];
-    gather_1(x, first, true, in);
+    const V* dat = gather_1(x, first, true, in);
     T half[LANES][1];
-    cost_1(in, half);
+    cost_1(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK1_INSTANCES[first + l]];
@@ -2588,25 +2590,28 @@ void cost_of_1(const T* x, int first, T* total) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK2_LANED[1][4][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK2_LANED[1][4];
 
 void lane_data_2() {
     for (int first = 0; first < 1; first += LANES) {
-        T (*laned)[LANES] = BLOCK2_LANED[first / LANES];
+        T laned[4][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK2_INSTANCES[first + l < 1 ? first + l : 0];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 3; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 1; ++i) laned[3 + i][l] = line[3 + i];
         }
+        for (int i = 0; i < 4; ++i) BLOCK2_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK2_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_2(const T* x, int first, bool cost, V in[7]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_2(const T* x, int first, bool cost, V in[7]) {
 #ifndef __SYNTHESIS__
     T buf[3][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2615,11 +2620,8 @@ void gather_2(const T* x, int first, bool cost, V in[7]) {
         for (int i = 0; i < 3; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     }
     for (int i = 0; i < 3; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK2_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 4 : 3); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=4
-        in[3 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK2_LANED[first / LANES];
 #else
     T buf[7][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2635,6 +2637,7 @@ void gather_2(const T* x, int first, bool cost, V in[7]) {
 #pragma HLS LOOP_TRIPCOUNT max=7
         in[i] = load_lanes(buf[i]);
     }
+    return in + 3;
 #endif
 }
 
@@ -2644,12 +2647,12 @@ void gather_2(const T* x, int first, bool cost, V in[7]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_2(const T* x, int first, bool noise_mode, T* noise) {
     V in[7];
-    gather_2(x, first, false, in);
+    const V* dat = gather_2(x, first, false, in);
     // rows [J | r] padded to 4 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][12];
     static T ab[LANES][12];  // the whitened rows, every entry written
-    jacobian_2(in, raw);
+    jacobian_2(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
@@ -2676,9 +2679,9 @@ bool linearize_2(const T* x, int first, bool noise_mode, T* noise) {
 // block 2, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_2(const T* x, int first, T* total) {
     V in[7];
-    gather_2(x, first, true, in);
+    const V* dat = gather_2(x, first, true, in);
     T half[LANES][1];
-    cost_2(in, half);
+    cost_2(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK2_INSTANCES[first + l]];
@@ -2690,25 +2693,28 @@ void cost_of_2(const T* x, int first, T* total) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK3_LANED[1][7][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK3_LANED[1][7];
 
 void lane_data_3() {
     for (int first = 0; first < 1; first += LANES) {
-        T (*laned)[LANES] = BLOCK3_LANED[first / LANES];
+        T laned[7][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK3_INSTANCES[first + l < 1 ? first + l : 0];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 6; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 1; ++i) laned[6 + i][l] = line[6 + i];
         }
+        for (int i = 0; i < 7; ++i) BLOCK3_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK3_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_3(const T* x, int first, bool cost, V in[13]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_3(const T* x, int first, bool cost, V in[13]) {
 #ifndef __SYNTHESIS__
     T buf[6][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2717,11 +2723,8 @@ void gather_3(const T* x, int first, bool cost, V in[13]) {
         for (int i = 0; i < 6; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     }
     for (int i = 0; i < 6; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK3_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 7 : 6); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=7
-        in[6 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK3_LANED[first / LANES];
 #else
     T buf[13][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2737,6 +2740,7 @@ void gather_3(const T* x, int first, bool cost, V in[13]) {
 #pragma HLS LOOP_TRIPCOUNT max=13
         in[i] = load_lanes(buf[i]);
     }
+    return in + 6;
 #endif
 }
 
@@ -2746,12 +2750,12 @@ void gather_3(const T* x, int first, bool cost, V in[13]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_3(const T* x, int first, bool noise_mode, T* noise) {
     V in[13];
-    gather_3(x, first, false, in);
+    const V* dat = gather_3(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][48];
     static T ab[LANES][48];  // the whitened rows, every entry written
-    jacobian_3(in, raw);
+    jacobian_3(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
@@ -2778,9 +2782,9 @@ bool linearize_3(const T* x, int first, bool noise_mode, T* noise) {
 // block 3, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_3(const T* x, int first, T* total) {
     V in[13];
-    gather_3(x, first, true, in);
+    const V* dat = gather_3(x, first, true, in);
     T half[LANES][1];
-    cost_3(in, half);
+    cost_3(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK3_INSTANCES[first + l]];

@@ -465,17 +465,17 @@ inline V v_so3_log_z(const V& r00, const V& r01, const V& r02, const V& r10, con
 
 // ---- factor blocks (instance l of a call in lane l)
 // block 0: PriorFactorPose3 (6 rows, 6 columns, 1 instances)
-void jacobian_0(const V in[24], T ab[LANES][48]) {
+void jacobian_0(const V* in, const V* dat, T ab[LANES][48]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = in[12]*in[0] + in[15]*in[3] + in[18]*in[6];
-    const V t1 = in[12]*in[2] + in[15]*in[5] + in[18]*in[8];
-    const V t2 = in[12]*in[1] + in[15]*in[4] + in[18]*in[7];
-    const V t3 = in[13]*in[0] + in[16]*in[3] + in[19]*in[6];
-    const V t4 = in[13]*in[2] + in[16]*in[5] + in[19]*in[8];
-    const V t5 = in[13]*in[1] + in[16]*in[4] + in[19]*in[7];
-    const V t6 = in[14]*in[0] + in[17]*in[3] + in[20]*in[6];
-    const V t7 = in[14]*in[2] + in[17]*in[5] + in[20]*in[8];
-    const V t8 = in[14]*in[1] + in[17]*in[4] + in[20]*in[7];
+    const V t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
+    const V t1 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
+    const V t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
+    const V t3 = dat[1]*in[0] + dat[4]*in[3] + dat[7]*in[6];
+    const V t4 = dat[1]*in[2] + dat[4]*in[5] + dat[7]*in[8];
+    const V t5 = dat[1]*in[1] + dat[4]*in[4] + dat[7]*in[7];
+    const V t6 = dat[2]*in[0] + dat[5]*in[3] + dat[8]*in[6];
+    const V t7 = dat[2]*in[2] + dat[5]*in[5] + dat[8]*in[8];
+    const V t8 = dat[2]*in[1] + dat[5]*in[4] + dat[8]*in[7];
     const V t9 = t0;
     const V t10 = t2;
     const V t11 = t1;
@@ -570,13 +570,13 @@ void jacobian_0(const V in[24], T ab[LANES][48]) {
     const V t99 = -t95 + t96;
     const V t100 = -t75 - t78;
     const V t101 = t100*t81 + T(1);
-    const V t102 = -in[12]*in[21] + in[12]*in[9] - in[15]*in[22] + in[15]*in[10] - in[18]*in[23] + in[18]*in[11];
+    const V t102 = -dat[0]*dat[9] + dat[0]*in[9] - dat[3]*dat[10] + dat[3]*in[10] - dat[6]*dat[11] + dat[6]*in[11];
     const V t103 = t77*t102;
     const V t104 = t81*t102;
-    const V t105 = -in[13]*in[21] + in[13]*in[9] - in[16]*in[22] + in[16]*in[10] - in[19]*in[23] + in[19]*in[11];
+    const V t105 = -dat[1]*dat[9] + dat[1]*in[9] - dat[4]*dat[10] + dat[4]*in[10] - dat[7]*dat[11] + dat[7]*in[11];
     const V t106 = t93*t105;
     const V t107 = t81*t105;
-    const V t108 = -in[14]*in[21] + in[14]*in[9] - in[17]*in[22] + in[17]*in[10] - in[20]*in[23] + in[20]*in[11];
+    const V t108 = -dat[2]*dat[9] + dat[2]*in[9] - dat[5]*dat[10] + dat[5]*in[10] - dat[8]*dat[11] + dat[8]*in[11];
     const V t109 = t100*t108;
     const V t110 = t81*t108;
     const V t111 = -t1;
@@ -722,25 +722,25 @@ void jacobian_0(const V in[24], T ab[LANES][48]) {
     }
 }
 
-void cost_0(const V in[30], T half[LANES][1]) {
+void cost_0(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = in[12]*in[0] + in[15]*in[3] + in[18]*in[6];
+    const V t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const V t1 = t0;
-    const V t2 = in[12]*in[1] + in[15]*in[4] + in[18]*in[7];
+    const V t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
     const V t3 = t2;
-    const V t4 = in[12]*in[2] + in[15]*in[5] + in[18]*in[8];
+    const V t4 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
     const V t5 = t4;
-    const V t6 = in[13]*in[0] + in[16]*in[3] + in[19]*in[6];
+    const V t6 = dat[1]*in[0] + dat[4]*in[3] + dat[7]*in[6];
     const V t7 = t6;
-    const V t8 = in[13]*in[1] + in[16]*in[4] + in[19]*in[7];
+    const V t8 = dat[1]*in[1] + dat[4]*in[4] + dat[7]*in[7];
     const V t9 = t8;
-    const V t10 = in[13]*in[2] + in[16]*in[5] + in[19]*in[8];
+    const V t10 = dat[1]*in[2] + dat[4]*in[5] + dat[7]*in[8];
     const V t11 = t10;
-    const V t12 = in[14]*in[0] + in[17]*in[3] + in[20]*in[6];
+    const V t12 = dat[2]*in[0] + dat[5]*in[3] + dat[8]*in[6];
     const V t13 = t12;
-    const V t14 = in[14]*in[1] + in[17]*in[4] + in[20]*in[7];
+    const V t14 = dat[2]*in[1] + dat[5]*in[4] + dat[8]*in[7];
     const V t15 = t14;
-    const V t16 = in[14]*in[2] + in[17]*in[5] + in[20]*in[8];
+    const V t16 = dat[2]*in[2] + dat[5]*in[5] + dat[8]*in[8];
     const V t17 = t16;
     V tlog0[3]; v_so3_log(t1, t3, t5, t7, t9, t11, t13, t15, t17, tlog0);
     const V t18 = tlog0[0];
@@ -768,9 +768,9 @@ void cost_0(const V in[30], T half[LANES][1]) {
     const V t40 = t39;
     const V t41 = t22*t36;
     const V t42 = -t40 + t41;
-    const V t43 = -in[12]*in[21] + in[12]*in[9] - in[15]*in[22] + in[15]*in[10] - in[18]*in[23] + in[18]*in[11];
-    const V t44 = -in[13]*in[21] + in[13]*in[9] - in[16]*in[22] + in[16]*in[10] - in[19]*in[23] + in[19]*in[11];
-    const V t45 = -in[14]*in[21] + in[14]*in[9] - in[17]*in[22] + in[17]*in[10] - in[20]*in[23] + in[20]*in[11];
+    const V t43 = -dat[0]*dat[9] + dat[0]*in[9] - dat[3]*dat[10] + dat[3]*in[10] - dat[6]*dat[11] + dat[6]*in[11];
+    const V t44 = -dat[1]*dat[9] + dat[1]*in[9] - dat[4]*dat[10] + dat[4]*in[10] - dat[7]*dat[11] + dat[7]*in[11];
+    const V t45 = -dat[2]*dat[9] + dat[2]*in[9] - dat[5]*dat[10] + dat[5]*in[10] - dat[8]*dat[11] + dat[8]*in[11];
     const V t46 = t33*t43 + t38*t44 + t42*t45;
     const V t47 = -t35 + t37;
     const V t48 = -t27 - t30;
@@ -786,7 +786,7 @@ void cost_0(const V in[30], T half[LANES][1]) {
     const V t58 = -t25 - t30;
     const V t59 = t58*t32 + T(1);
     const V t60 = t56*t43 + t57*t44 + t59*t45;
-    const V t61 = (T(0.5))*t19*(in[24]*in[24]) + (T(0.5))*t21*(in[25]*in[25]) + (T(0.5))*t23*(in[26]*in[26]) + (T(0.5))*(t46*t46)*(in[27]*in[27]) + (T(0.5))*(t55*t55)*(in[28]*in[28]) + (T(0.5))*(t60*t60)*(in[29]*in[29]);
+    const V t61 = (T(0.5))*t19*(dat[12]*dat[12]) + (T(0.5))*t21*(dat[13]*dat[13]) + (T(0.5))*t23*(dat[14]*dat[14]) + (T(0.5))*(t46*t46)*(dat[15]*dat[15]) + (T(0.5))*(t55*t55)*(dat[16]*dat[16]) + (T(0.5))*(t60*t60)*(dat[17]*dat[17]);
     const V o0 = t61;
     for (int l = 0; l < LANES; ++l) {
         half[l][0] = lane(o0, l);
@@ -794,12 +794,12 @@ void cost_0(const V in[30], T half[LANES][1]) {
 }
 
 // block 1: PriorFactorVector3 (3 rows, 3 columns, 1 instances)
-void jacobian_1(const V in[6], T ab[LANES][12]) {
+void jacobian_1(const V* in, const V* dat, T ab[LANES][12]) {
 #pragma HLS PIPELINE II=1
     // every output once, as a whole V, before it is taken apart lane by lane
-    const V o1 = -in[3] + in[0];
-    const V o3 = -in[4] + in[1];
-    const V o5 = -in[5] + in[2];
+    const V o1 = -dat[0] + in[0];
+    const V o3 = -dat[1] + in[1];
+    const V o5 = -dat[2] + in[2];
     for (int l = 0; l < LANES; ++l) {
         ab[l][0] = T(1);
         ab[l][3] = lane(o1, l);
@@ -810,12 +810,12 @@ void jacobian_1(const V in[6], T ab[LANES][12]) {
     }
 }
 
-void cost_1(const V in[7], T half[LANES][1]) {
+void cost_1(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = -in[3] + in[0];
-    const V t1 = -in[4] + in[1];
-    const V t2 = -in[5] + in[2];
-    const V t3 = (T(0.5))*(in[6]*in[6]);
+    const V t0 = -dat[0] + in[0];
+    const V t1 = -dat[1] + in[1];
+    const V t2 = -dat[2] + in[2];
+    const V t3 = (T(0.5))*(dat[3]*dat[3]);
     const V t4 = (t0*t0)*t3 + (t1*t1)*t3 + (t2*t2)*t3;
     const V o0 = t4;
     for (int l = 0; l < LANES; ++l) {
@@ -824,15 +824,15 @@ void cost_1(const V in[7], T half[LANES][1]) {
 }
 
 // block 2: PriorFactorImuBias (6 rows, 6 columns, 1 instances)
-void jacobian_2(const V in[12], T ab[LANES][48]) {
+void jacobian_2(const V* in, const V* dat, T ab[LANES][48]) {
 #pragma HLS PIPELINE II=1
     // every output once, as a whole V, before it is taken apart lane by lane
-    const V o1 = -in[6] + in[0];
-    const V o3 = -in[7] + in[1];
-    const V o5 = -in[8] + in[2];
-    const V o7 = -in[9] + in[3];
-    const V o9 = -in[10] + in[4];
-    const V o11 = -in[11] + in[5];
+    const V o1 = -dat[0] + in[0];
+    const V o3 = -dat[1] + in[1];
+    const V o5 = -dat[2] + in[2];
+    const V o7 = -dat[3] + in[3];
+    const V o9 = -dat[4] + in[4];
+    const V o11 = -dat[5] + in[5];
     for (int l = 0; l < LANES; ++l) {
         ab[l][0] = T(1);
         ab[l][6] = lane(o1, l);
@@ -849,15 +849,15 @@ void jacobian_2(const V in[12], T ab[LANES][48]) {
     }
 }
 
-void cost_2(const V in[13], T half[LANES][1]) {
+void cost_2(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = -in[6] + in[0];
-    const V t1 = -in[7] + in[1];
-    const V t2 = -in[8] + in[2];
-    const V t3 = -in[9] + in[3];
-    const V t4 = -in[10] + in[4];
-    const V t5 = -in[11] + in[5];
-    const V t6 = (T(0.5))*(in[12]*in[12]);
+    const V t0 = -dat[0] + in[0];
+    const V t1 = -dat[1] + in[1];
+    const V t2 = -dat[2] + in[2];
+    const V t3 = -dat[3] + in[3];
+    const V t4 = -dat[4] + in[4];
+    const V t5 = -dat[5] + in[5];
+    const V t6 = (T(0.5))*(dat[6]*dat[6]);
     const V t7 = (t0*t0)*t6 + (t1*t1)*t6 + (t2*t2)*t6 + (t3*t3)*t6 + (t4*t4)*t6 + (t5*t5)*t6;
     const V o0 = t7;
     for (int l = 0; l < LANES; ++l) {
@@ -866,19 +866,19 @@ void cost_2(const V in[13], T half[LANES][1]) {
 }
 
 // block 3: CombinedImuFactor+LidarOdometryFactor (21 rows, 30 columns, 7 instances)
-void jacobian_3(const V in[127], T ab[LANES][672]) {
+void jacobian_3(const V* in, const V* dat, T ab[LANES][672]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = in[30] - in[105];
-    const V t1 = in[31] - in[106];
-    const V t2 = in[32] - in[107];
-    const V t3 = in[33] - in[108];
-    const V t4 = in[34] - in[109];
-    const V t5 = in[35] - in[110];
-    const V t6 = t0*in[51] + t1*in[52] + t2*in[53] + t3*in[78] + t4*in[79] + t5*in[80] + in[42];
+    const V t0 = in[30] - dat[63];
+    const V t1 = in[31] - dat[64];
+    const V t2 = in[32] - dat[65];
+    const V t3 = in[33] - dat[66];
+    const V t4 = in[34] - dat[67];
+    const V t5 = in[35] - dat[68];
+    const V t6 = t0*dat[9] + t1*dat[10] + t2*dat[11] + t3*dat[36] + t4*dat[37] + t5*dat[38] + dat[0];
     const V t7 = T(2)*t6;
-    const V t8 = t0*in[54] + t1*in[55] + t2*in[56] + t3*in[81] + t4*in[82] + t5*in[83] + in[43];
+    const V t8 = t0*dat[12] + t1*dat[13] + t2*dat[14] + t3*dat[39] + t4*dat[40] + t5*dat[41] + dat[1];
     const V t9 = T(2)*t8;
-    const V t10 = t0*in[57] + t1*in[58] + t2*in[59] + t3*in[84] + t4*in[85] + t5*in[86] + in[44];
+    const V t10 = t0*dat[15] + t1*dat[16] + t2*dat[17] + t3*dat[42] + t4*dat[43] + t5*dat[44] + dat[2];
     const V t11 = T(2)*t10;
     const V t12 = (t6*t6) + (t8*t8) + (t10*t10);
     const V t13 = v_lie_B1(t12);
@@ -887,42 +887,42 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t16 = -t10;
     const V t17 = t16*t10;
     const V t18 = t17 + t15;
-    const V t19 = -in[57];
-    const V t20 = t16*in[57] + t10*t19;
+    const V t19 = -dat[15];
+    const V t20 = t16*dat[15] + t10*t19;
     const V t21 = v_lie_B(t12);
     const V t22 = t21*t20;
-    const V t23 = -in[54];
-    const V t24 = t8*t23 + t14*in[54];
+    const V t23 = -dat[12];
+    const V t24 = t8*t23 + t14*dat[12];
     const V t25 = t21*t24;
-    const V t26 = -in[58];
-    const V t27 = t16*in[58] + t10*t26;
+    const V t26 = -dat[16];
+    const V t27 = t16*dat[16] + t10*t26;
     const V t28 = t21*t27;
-    const V t29 = -in[55];
-    const V t30 = t8*t29 + t14*in[55];
+    const V t29 = -dat[13];
+    const V t30 = t8*t29 + t14*dat[13];
     const V t31 = t21*t30;
-    const V t32 = -in[59];
-    const V t33 = t16*in[59] + t10*t32;
+    const V t32 = -dat[17];
+    const V t33 = t16*dat[17] + t10*t32;
     const V t34 = t21*t33;
-    const V t35 = -in[56];
-    const V t36 = t8*t35 + t14*in[56];
+    const V t35 = -dat[14];
+    const V t36 = t8*t35 + t14*dat[14];
     const V t37 = t21*t36;
-    const V t38 = -in[84];
-    const V t39 = t16*in[84] + t10*t38;
+    const V t38 = -dat[42];
+    const V t39 = t16*dat[42] + t10*t38;
     const V t40 = t21*t39;
-    const V t41 = -in[81];
-    const V t42 = t8*t41 + t14*in[81];
+    const V t41 = -dat[39];
+    const V t42 = t8*t41 + t14*dat[39];
     const V t43 = t21*t42;
-    const V t44 = -in[82];
-    const V t45 = t8*t44 + t14*in[82];
+    const V t44 = -dat[40];
+    const V t45 = t8*t44 + t14*dat[40];
     const V t46 = t21*t45;
-    const V t47 = -in[85];
-    const V t48 = t16*in[85] + t10*t47;
+    const V t47 = -dat[43];
+    const V t48 = t16*dat[43] + t10*t47;
     const V t49 = t21*t48;
-    const V t50 = -in[83];
-    const V t51 = t8*t50 + t14*in[83];
+    const V t50 = -dat[41];
+    const V t51 = t8*t50 + t14*dat[41];
     const V t52 = t21*t51;
-    const V t53 = -in[86];
-    const V t54 = t16*in[86] + t10*t53;
+    const V t53 = -dat[44];
+    const V t54 = t16*dat[44] + t10*t53;
     const V t55 = t21*t54;
     const V t56 = in[0]*in[15] + in[3]*in[18] + in[6]*in[21];
     const V t57 = in[2]*in[15] + in[5]*in[18] + in[8]*in[21];
@@ -943,23 +943,23 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t72 = -t6;
     const V t73 = t6*t72;
     const V t74 = t17 + t73;
-    const V t75 = -in[51];
-    const V t76 = t6*t75 + t72*in[51];
+    const V t75 = -dat[9];
+    const V t76 = t6*t75 + t72*dat[9];
     const V t77 = t21*t76;
-    const V t78 = -in[52];
-    const V t79 = t6*t78 + t72*in[52];
+    const V t78 = -dat[10];
+    const V t79 = t6*t78 + t72*dat[10];
     const V t80 = t21*t79;
-    const V t81 = -in[53];
-    const V t82 = t6*t81 + t72*in[53];
+    const V t81 = -dat[11];
+    const V t82 = t6*t81 + t72*dat[11];
     const V t83 = t21*t82;
-    const V t84 = -in[78];
-    const V t85 = t6*t84 + t72*in[78];
+    const V t84 = -dat[36];
+    const V t85 = t6*t84 + t72*dat[36];
     const V t86 = t21*t85;
-    const V t87 = -in[79];
-    const V t88 = t6*t87 + t72*in[79];
+    const V t87 = -dat[37];
+    const V t88 = t6*t87 + t72*dat[37];
     const V t89 = t21*t88;
-    const V t90 = -in[80];
-    const V t91 = t6*t90 + t72*in[80];
+    const V t90 = -dat[38];
+    const V t91 = t6*t90 + t72*dat[38];
     const V t92 = t21*t91;
     const V t93 = t73 + t15;
     const V t94 = t16*t21;
@@ -1084,13 +1084,13 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t212 = -in[21];
     const V t213 = -in[22];
     const V t214 = -in[23];
-    const V t215 = t0*in[60] + t1*in[61] + t2*in[62] + t3*in[87] + t4*in[88] + t5*in[89] + in[45];
-    const V t216 = t0*in[63] + t1*in[64] + t2*in[65] + t3*in[90] + t4*in[91] + t5*in[92] + in[46];
-    const V t217 = t0*in[66] + t1*in[67] + t2*in[68] + t3*in[93] + t4*in[94] + t5*in[95] + in[47];
-    const V t218 = (T(0.5))*(in[111]*in[111]);
-    const V t219 = t203 + t215*in[0] + t216*in[1] + t217*in[2] + t218*in[112] + in[111]*in[12];
-    const V t220 = t207 + t215*in[3] + t216*in[4] + t217*in[5] + t218*in[113] + in[111]*in[13];
-    const V t221 = t211 + t215*in[6] + t216*in[7] + t217*in[8] + t218*in[114] + in[111]*in[14];
+    const V t215 = t0*dat[18] + t1*dat[19] + t2*dat[20] + t3*dat[45] + t4*dat[46] + t5*dat[47] + dat[3];
+    const V t216 = t0*dat[21] + t1*dat[22] + t2*dat[23] + t3*dat[48] + t4*dat[49] + t5*dat[50] + dat[4];
+    const V t217 = t0*dat[24] + t1*dat[25] + t2*dat[26] + t3*dat[51] + t4*dat[52] + t5*dat[53] + dat[5];
+    const V t218 = (T(0.5))*(dat[69]*dat[69]);
+    const V t219 = t203 + t215*in[0] + t216*in[1] + t217*in[2] + t218*dat[70] + dat[69]*in[12];
+    const V t220 = t207 + t215*in[3] + t216*in[4] + t217*in[5] + t218*dat[71] + dat[69]*in[13];
+    const V t221 = t211 + t215*in[6] + t216*in[7] + t217*in[8] + t218*dat[72] + dat[69]*in[14];
     const V t222 = t219*in[15] + t220*in[18] + t221*in[21];
     const V t223 = t219*in[17] + t220*in[20] + t221*in[23];
     const V t224 = t219*in[16] + t220*in[19] + t221*in[22];
@@ -1195,22 +1195,22 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t323 = t147*t315 + t152*t316 + t155*t320 + t156*t321 + t157*t322 + t161*t314;
     const V t324 = t196*t323;
     const V t325 = t243*t324;
-    const V t326 = t7*in[51] + t9*in[54] + t11*in[57];
+    const V t326 = t7*dat[9] + t9*dat[12] + t11*dat[15];
     const V t327 = t13*t326;
     const V t328 = t18*t327 + t22 + t25;
     const V t329 = t63*t326;
     const V t330 = t21*t23 + t14*t327;
-    const V t331 = t105*in[57] + t72*t330 + t106*t75 + t10*t329;
-    const V t332 = t6*t327 + t21*in[51];
-    const V t333 = t105*t23 + t109*in[57] + t14*t329 + t10*t332;
+    const V t331 = t105*dat[15] + t72*t330 + t106*t75 + t10*t329;
+    const V t332 = t6*t327 + t21*dat[9];
+    const V t333 = t105*t23 + t109*dat[15] + t14*t329 + t10*t332;
     const V t334 = t104*t328 + t108*t331 + t111*t333;
     const V t335 = t74*t327 + t77 + t22;
-    const V t336 = t16*t330 + t6*t329 + t105*in[51] + t106*t19;
-    const V t337 = t16*t329 + t105*t19 + t109*in[54] + t8*t332;
+    const V t336 = t16*t330 + t6*t329 + t105*dat[9] + t106*t19;
+    const V t337 = t16*t329 + t105*t19 + t109*dat[12] + t8*t332;
     const V t338 = t104*t337 + t108*t335 + t111*t336;
     const V t339 = t77 + t93*t327 + t25;
-    const V t340 = t94*t75 + t95*t327 + t96*t19 + t105*in[54] + t8*t329;
-    const V t341 = t97*in[57] + t98*in[54] + t99*t327 + t105*t75 + t72*t329;
+    const V t340 = t94*t75 + t95*t327 + t96*t19 + t105*dat[12] + t8*t329;
+    const V t341 = t97*dat[15] + t98*dat[12] + t99*t327 + t105*t75 + t72*t329;
     const V t342 = t104*t340 + t108*t341 + t111*t339;
     const V t343 = t121*t328 + t122*t331 + t123*t333;
     const V t344 = t121*t337 + t122*t335 + t123*t336;
@@ -1221,22 +1221,22 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t349 = t147*t338 + t152*t342 + t155*t343 + t156*t344 + t157*t345 + t158*t346 + t159*t347 + t160*t348 + t161*t334;
     const V t350 = t196*t349;
     const V t351 = t243*t350;
-    const V t352 = t7*in[52] + t9*in[55] + t11*in[58];
+    const V t352 = t7*dat[10] + t9*dat[13] + t11*dat[16];
     const V t353 = t13*t352;
     const V t354 = t18*t353 + t28 + t31;
     const V t355 = t63*t352;
     const V t356 = t21*t29 + t14*t353;
-    const V t357 = t105*in[58] + t72*t356 + t106*t78 + t10*t355;
-    const V t358 = t6*t353 + t21*in[52];
-    const V t359 = t105*t29 + t109*in[58] + t14*t355 + t10*t358;
+    const V t357 = t105*dat[16] + t72*t356 + t106*t78 + t10*t355;
+    const V t358 = t6*t353 + t21*dat[10];
+    const V t359 = t105*t29 + t109*dat[16] + t14*t355 + t10*t358;
     const V t360 = t104*t354 + t108*t357 + t111*t359;
     const V t361 = t74*t353 + t80 + t28;
-    const V t362 = t16*t356 + t6*t355 + t105*in[52] + t106*t26;
-    const V t363 = t16*t355 + t105*t26 + t109*in[55] + t8*t358;
+    const V t362 = t16*t356 + t6*t355 + t105*dat[10] + t106*t26;
+    const V t363 = t16*t355 + t105*t26 + t109*dat[13] + t8*t358;
     const V t364 = t104*t363 + t108*t361 + t111*t362;
     const V t365 = t80 + t93*t353 + t31;
-    const V t366 = t94*t78 + t95*t353 + t96*t26 + t105*in[55] + t8*t355;
-    const V t367 = t97*in[58] + t98*in[55] + t99*t353 + t105*t78 + t72*t355;
+    const V t366 = t94*t78 + t95*t353 + t96*t26 + t105*dat[13] + t8*t355;
+    const V t367 = t97*dat[16] + t98*dat[13] + t99*t353 + t105*t78 + t72*t355;
     const V t368 = t104*t366 + t108*t367 + t111*t365;
     const V t369 = t121*t354 + t122*t357 + t123*t359;
     const V t370 = t121*t363 + t122*t361 + t123*t362;
@@ -1247,22 +1247,22 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t375 = t147*t364 + t152*t368 + t155*t369 + t156*t370 + t157*t371 + t158*t372 + t159*t373 + t160*t374 + t161*t360;
     const V t376 = t196*t375;
     const V t377 = t243*t376;
-    const V t378 = t7*in[53] + t9*in[56] + t11*in[59];
+    const V t378 = t7*dat[11] + t9*dat[14] + t11*dat[17];
     const V t379 = t13*t378;
     const V t380 = t37 + t18*t379 + t34;
     const V t381 = t63*t378;
     const V t382 = t21*t35 + t14*t379;
-    const V t383 = t105*in[59] + t72*t382 + t106*t81 + t10*t381;
-    const V t384 = t6*t379 + t21*in[53];
-    const V t385 = t105*t35 + t109*in[59] + t14*t381 + t10*t384;
+    const V t383 = t105*dat[17] + t72*t382 + t106*t81 + t10*t381;
+    const V t384 = t6*t379 + t21*dat[11];
+    const V t385 = t105*t35 + t109*dat[17] + t14*t381 + t10*t384;
     const V t386 = t104*t380 + t108*t383 + t111*t385;
     const V t387 = t74*t379 + t83 + t34;
-    const V t388 = t16*t382 + t6*t381 + t105*in[53] + t106*t32;
-    const V t389 = t16*t381 + t105*t32 + t109*in[56] + t8*t384;
+    const V t388 = t16*t382 + t6*t381 + t105*dat[11] + t106*t32;
+    const V t389 = t16*t381 + t105*t32 + t109*dat[14] + t8*t384;
     const V t390 = t104*t389 + t108*t387 + t111*t388;
     const V t391 = t37 + t83 + t93*t379;
-    const V t392 = t94*t81 + t95*t379 + t96*t32 + t105*in[56] + t8*t381;
-    const V t393 = t97*in[59] + t98*in[56] + t99*t379 + t105*t81 + t72*t381;
+    const V t392 = t94*t81 + t95*t379 + t96*t32 + t105*dat[14] + t8*t381;
+    const V t393 = t97*dat[17] + t98*dat[14] + t99*t379 + t105*t81 + t72*t381;
     const V t394 = t104*t392 + t108*t393 + t111*t391;
     const V t395 = t121*t380 + t122*t383 + t123*t385;
     const V t396 = t121*t389 + t122*t387 + t123*t388;
@@ -1273,22 +1273,22 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t401 = t147*t390 + t152*t394 + t155*t395 + t156*t396 + t157*t397 + t158*t398 + t159*t399 + t160*t400 + t161*t386;
     const V t402 = t196*t401;
     const V t403 = t243*t402;
-    const V t404 = t7*in[78] + t9*in[81] + t11*in[84];
+    const V t404 = t7*dat[36] + t9*dat[39] + t11*dat[42];
     const V t405 = t13*t404;
     const V t406 = t40 + t43 + t18*t405;
     const V t407 = t63*t404;
     const V t408 = t21*t41 + t14*t405;
-    const V t409 = t105*in[84] + t72*t408 + t106*t84 + t10*t407;
-    const V t410 = t6*t405 + t21*in[78];
-    const V t411 = t105*t41 + t109*in[84] + t14*t407 + t10*t410;
+    const V t409 = t105*dat[42] + t72*t408 + t106*t84 + t10*t407;
+    const V t410 = t6*t405 + t21*dat[36];
+    const V t411 = t105*t41 + t109*dat[42] + t14*t407 + t10*t410;
     const V t412 = t104*t406 + t108*t409 + t111*t411;
     const V t413 = t40 + t74*t405 + t86;
-    const V t414 = t16*t408 + t6*t407 + t105*in[78] + t106*t38;
-    const V t415 = t16*t407 + t105*t38 + t109*in[81] + t8*t410;
+    const V t414 = t16*t408 + t6*t407 + t105*dat[36] + t106*t38;
+    const V t415 = t16*t407 + t105*t38 + t109*dat[39] + t8*t410;
     const V t416 = t104*t415 + t108*t413 + t111*t414;
     const V t417 = t43 + t86 + t93*t405;
-    const V t418 = t94*t84 + t95*t405 + t96*t38 + t105*in[81] + t8*t407;
-    const V t419 = t97*in[84] + t98*in[81] + t99*t405 + t105*t84 + t72*t407;
+    const V t418 = t94*t84 + t95*t405 + t96*t38 + t105*dat[39] + t8*t407;
+    const V t419 = t97*dat[42] + t98*dat[39] + t99*t405 + t105*t84 + t72*t407;
     const V t420 = t104*t418 + t108*t419 + t111*t417;
     const V t421 = t121*t406 + t122*t409 + t123*t411;
     const V t422 = t121*t415 + t122*t413 + t123*t414;
@@ -1299,22 +1299,22 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t427 = t147*t416 + t152*t420 + t155*t421 + t156*t422 + t157*t423 + t158*t424 + t159*t425 + t160*t426 + t161*t412;
     const V t428 = t196*t427;
     const V t429 = t243*t428;
-    const V t430 = t7*in[79] + t9*in[82] + t11*in[85];
+    const V t430 = t7*dat[37] + t9*dat[40] + t11*dat[43];
     const V t431 = t13*t430;
     const V t432 = t46 + t49 + t18*t431;
     const V t433 = t63*t430;
     const V t434 = t21*t44 + t14*t431;
-    const V t435 = t105*in[85] + t72*t434 + t106*t87 + t10*t433;
-    const V t436 = t6*t431 + t21*in[79];
-    const V t437 = t105*t44 + t109*in[85] + t14*t433 + t10*t436;
+    const V t435 = t105*dat[43] + t72*t434 + t106*t87 + t10*t433;
+    const V t436 = t6*t431 + t21*dat[37];
+    const V t437 = t105*t44 + t109*dat[43] + t14*t433 + t10*t436;
     const V t438 = t104*t432 + t108*t435 + t111*t437;
     const V t439 = t49 + t74*t431 + t89;
-    const V t440 = t16*t434 + t6*t433 + t105*in[79] + t106*t47;
-    const V t441 = t16*t433 + t105*t47 + t109*in[82] + t8*t436;
+    const V t440 = t16*t434 + t6*t433 + t105*dat[37] + t106*t47;
+    const V t441 = t16*t433 + t105*t47 + t109*dat[40] + t8*t436;
     const V t442 = t104*t441 + t108*t439 + t111*t440;
     const V t443 = t46 + t89 + t93*t431;
-    const V t444 = t94*t87 + t95*t431 + t96*t47 + t105*in[82] + t8*t433;
-    const V t445 = t97*in[85] + t98*in[82] + t99*t431 + t105*t87 + t72*t433;
+    const V t444 = t94*t87 + t95*t431 + t96*t47 + t105*dat[40] + t8*t433;
+    const V t445 = t97*dat[43] + t98*dat[40] + t99*t431 + t105*t87 + t72*t433;
     const V t446 = t104*t444 + t108*t445 + t111*t443;
     const V t447 = t121*t432 + t122*t435 + t123*t437;
     const V t448 = t121*t441 + t122*t439 + t123*t440;
@@ -1325,22 +1325,22 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t453 = t147*t442 + t152*t446 + t155*t447 + t156*t448 + t157*t449 + t158*t450 + t159*t451 + t160*t452 + t161*t438;
     const V t454 = t196*t453;
     const V t455 = t243*t454;
-    const V t456 = t7*in[80] + t9*in[83] + t11*in[86];
+    const V t456 = t7*dat[38] + t9*dat[41] + t11*dat[44];
     const V t457 = t13*t456;
     const V t458 = t52 + t55 + t18*t457;
     const V t459 = t63*t456;
     const V t460 = t21*t50 + t14*t457;
-    const V t461 = t105*in[86] + t72*t460 + t106*t90 + t10*t459;
-    const V t462 = t6*t457 + t21*in[80];
-    const V t463 = t105*t50 + t109*in[86] + t14*t459 + t10*t462;
+    const V t461 = t105*dat[44] + t72*t460 + t106*t90 + t10*t459;
+    const V t462 = t6*t457 + t21*dat[38];
+    const V t463 = t105*t50 + t109*dat[44] + t14*t459 + t10*t462;
     const V t464 = t104*t458 + t108*t461 + t111*t463;
     const V t465 = t55 + t74*t457 + t92;
-    const V t466 = t16*t460 + t6*t459 + t105*in[80] + t106*t53;
-    const V t467 = t16*t459 + t105*t53 + t109*in[83] + t8*t462;
+    const V t466 = t16*t460 + t6*t459 + t105*dat[38] + t106*t53;
+    const V t467 = t16*t459 + t105*t53 + t109*dat[41] + t8*t462;
     const V t468 = t104*t467 + t108*t465 + t111*t466;
     const V t469 = t52 + t92 + t93*t457;
-    const V t470 = t94*t90 + t95*t457 + t96*t53 + t105*in[83] + t8*t459;
-    const V t471 = t97*in[86] + t98*in[83] + t99*t457 + t105*t90 + t72*t459;
+    const V t470 = t94*t90 + t95*t457 + t96*t53 + t105*dat[41] + t8*t459;
+    const V t471 = t97*dat[44] + t98*dat[41] + t99*t457 + t105*t90 + t72*t459;
     const V t472 = t104*t470 + t108*t471 + t111*t469;
     const V t473 = t121*t458 + t122*t461 + t123*t463;
     const V t474 = t121*t467 + t122*t465 + t123*t466;
@@ -1354,24 +1354,24 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t482 = t133*t243;
     const V t483 = t138*t243;
     const V t484 = -t197 - t200;
-    const V t485 = t0*in[69] + t1*in[70] + t2*in[71] + t3*in[96] + t4*in[97] + t5*in[98] + in[48];
-    const V t486 = t0*in[72] + t1*in[73] + t2*in[74] + t3*in[99] + t4*in[100] + t5*in[101] + in[49];
-    const V t487 = t0*in[75] + t1*in[76] + t2*in[77] + t3*in[102] + t4*in[103] + t5*in[104] + in[50];
-    const V t488 = t485*in[0] + t486*in[1] + t487*in[2] + in[111]*in[112] + in[12] - in[27];
-    const V t489 = t485*in[3] + t486*in[4] + t487*in[5] + in[111]*in[113] + in[13] - in[28];
-    const V t490 = t485*in[6] + t486*in[7] + t487*in[8] + in[111]*in[114] + in[14] - in[29];
+    const V t485 = t0*dat[27] + t1*dat[28] + t2*dat[29] + t3*dat[54] + t4*dat[55] + t5*dat[56] + dat[6];
+    const V t486 = t0*dat[30] + t1*dat[31] + t2*dat[32] + t3*dat[57] + t4*dat[58] + t5*dat[59] + dat[7];
+    const V t487 = t0*dat[33] + t1*dat[34] + t2*dat[35] + t3*dat[60] + t4*dat[61] + t5*dat[62] + dat[8];
+    const V t488 = t485*in[0] + t486*in[1] + t487*in[2] + dat[69]*dat[70] + in[12] - in[27];
+    const V t489 = t485*in[3] + t486*in[4] + t487*in[5] + dat[69]*dat[71] + in[13] - in[28];
+    const V t490 = t485*in[6] + t486*in[7] + t487*in[8] + dat[69]*dat[72] + in[14] - in[29];
     const V t491 = t488*in[15] + t489*in[18] + t490*in[21];
     const V t492 = t488*in[17] + t489*in[20] + t490*in[23];
     const V t493 = t488*in[16] + t489*in[19] + t490*in[22];
-    const V t494 = t104*in[115] + t108*in[118] + t111*in[121];
-    const V t495 = t121*in[115] + t122*in[118] + t123*in[121];
-    const V t496 = t127*in[115] + t128*in[118] + t129*in[121];
-    const V t497 = t104*in[116] + t108*in[119] + t111*in[122];
-    const V t498 = t121*in[116] + t122*in[119] + t123*in[122];
-    const V t499 = t127*in[116] + t128*in[119] + t129*in[122];
-    const V t500 = t104*in[117] + t108*in[120] + t111*in[123];
-    const V t501 = t121*in[117] + t122*in[120] + t123*in[123];
-    const V t502 = t127*in[117] + t128*in[120] + t129*in[123];
+    const V t494 = t104*dat[73] + t108*dat[76] + t111*dat[79];
+    const V t495 = t121*dat[73] + t122*dat[76] + t123*dat[79];
+    const V t496 = t127*dat[73] + t128*dat[76] + t129*dat[79];
+    const V t497 = t104*dat[74] + t108*dat[77] + t111*dat[80];
+    const V t498 = t121*dat[74] + t122*dat[77] + t123*dat[80];
+    const V t499 = t127*dat[74] + t128*dat[77] + t129*dat[80];
+    const V t500 = t104*dat[75] + t108*dat[78] + t111*dat[81];
+    const V t501 = t121*dat[75] + t122*dat[78] + t123*dat[81];
+    const V t502 = t127*dat[75] + t128*dat[78] + t129*dat[81];
     V tlog1[3]; v_so3_log(t494, t495, t496, t497, t498, t499, t500, t501, t502, tlog1);
     const V t503 = tlog1[1];
     const V t504 = (T(0.5))*t503;
@@ -1473,13 +1473,13 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t600 = -in[0]*in[9] + in[0]*in[24] - in[3]*in[10] + in[3]*in[25] - in[6]*in[11] + in[6]*in[26];
     const V t601 = -in[1]*in[9] + in[1]*in[24] - in[4]*in[10] + in[4]*in[25] - in[7]*in[11] + in[7]*in[26];
     const V t602 = -in[2]*in[9] + in[2]*in[24] - in[5]*in[10] + in[5]*in[25] - in[8]*in[11] + in[8]*in[26];
-    const V t603 = t600*in[115] + t601*in[118] + t602*in[121] - in[115]*in[124] - in[118]*in[125] - in[121]*in[126];
+    const V t603 = t600*dat[73] + t601*dat[76] + t602*dat[79] - dat[73]*dat[82] - dat[76]*dat[83] - dat[79]*dat[84];
     const V t604 = t566*t603;
     const V t605 = t579*t603;
-    const V t606 = t600*in[116] + t601*in[119] + t602*in[122] - in[116]*in[124] - in[119]*in[125] - in[122]*in[126];
+    const V t606 = t600*dat[74] + t601*dat[77] + t602*dat[80] - dat[74]*dat[82] - dat[77]*dat[83] - dat[80]*dat[84];
     const V t607 = t591*t606;
     const V t608 = t579*t606;
-    const V t609 = t600*in[117] + t601*in[120] + t602*in[123] - in[117]*in[124] - in[120]*in[125] - in[123]*in[126];
+    const V t609 = t600*dat[75] + t601*dat[78] + t602*dat[81] - dat[75]*dat[82] - dat[78]*dat[83] - dat[81]*dat[84];
     const V t610 = t598*t609;
     const V t611 = t579*t609;
     const V t612 = t165*t229 + t168*t230 + t171*t233 + t172*t234 + t173*t235 + t174*t238 + t175*t239 + t176*t240 + t177*t228;
@@ -1573,36 +1573,36 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t700 = t204;
     const V t701 = t205;
     const V t702 = t206;
-    const V t703 = in[60]*in[0] + in[63]*in[1] + in[66]*in[2];
-    const V t704 = in[61]*in[0] + in[64]*in[1] + in[67]*in[2];
-    const V t705 = in[62]*in[0] + in[65]*in[1] + in[68]*in[2];
-    const V t706 = in[87]*in[0] + in[90]*in[1] + in[93]*in[2];
-    const V t707 = in[88]*in[0] + in[91]*in[1] + in[94]*in[2];
-    const V t708 = in[89]*in[0] + in[92]*in[1] + in[95]*in[2];
+    const V t703 = dat[18]*in[0] + dat[21]*in[1] + dat[24]*in[2];
+    const V t704 = dat[19]*in[0] + dat[22]*in[1] + dat[25]*in[2];
+    const V t705 = dat[20]*in[0] + dat[23]*in[1] + dat[26]*in[2];
+    const V t706 = dat[45]*in[0] + dat[48]*in[1] + dat[51]*in[2];
+    const V t707 = dat[46]*in[0] + dat[49]*in[1] + dat[52]*in[2];
+    const V t708 = dat[47]*in[0] + dat[50]*in[1] + dat[53]*in[2];
     const V t709 = t216*in[5] - t217*in[4];
     const V t710 = -t215*in[5] + t217*in[3];
     const V t711 = t215*in[4] - t216*in[3];
     const V t712 = t208;
     const V t713 = t209;
     const V t714 = t210;
-    const V t715 = in[60]*in[3] + in[63]*in[4] + in[66]*in[5];
-    const V t716 = in[61]*in[3] + in[64]*in[4] + in[67]*in[5];
-    const V t717 = in[62]*in[3] + in[65]*in[4] + in[68]*in[5];
-    const V t718 = in[87]*in[3] + in[90]*in[4] + in[93]*in[5];
-    const V t719 = in[88]*in[3] + in[91]*in[4] + in[94]*in[5];
-    const V t720 = in[89]*in[3] + in[92]*in[4] + in[95]*in[5];
+    const V t715 = dat[18]*in[3] + dat[21]*in[4] + dat[24]*in[5];
+    const V t716 = dat[19]*in[3] + dat[22]*in[4] + dat[25]*in[5];
+    const V t717 = dat[20]*in[3] + dat[23]*in[4] + dat[26]*in[5];
+    const V t718 = dat[45]*in[3] + dat[48]*in[4] + dat[51]*in[5];
+    const V t719 = dat[46]*in[3] + dat[49]*in[4] + dat[52]*in[5];
+    const V t720 = dat[47]*in[3] + dat[50]*in[4] + dat[53]*in[5];
     const V t721 = t216*in[8] - t217*in[7];
     const V t722 = -t215*in[8] + t217*in[6];
     const V t723 = t215*in[7] - t216*in[6];
     const V t724 = t212;
     const V t725 = t213;
     const V t726 = t214;
-    const V t727 = in[60]*in[6] + in[63]*in[7] + in[66]*in[8];
-    const V t728 = in[61]*in[6] + in[64]*in[7] + in[67]*in[8];
-    const V t729 = in[62]*in[6] + in[65]*in[7] + in[68]*in[8];
-    const V t730 = in[87]*in[6] + in[90]*in[7] + in[93]*in[8];
-    const V t731 = in[88]*in[6] + in[91]*in[7] + in[94]*in[8];
-    const V t732 = in[89]*in[6] + in[92]*in[7] + in[95]*in[8];
+    const V t727 = dat[18]*in[6] + dat[21]*in[7] + dat[24]*in[8];
+    const V t728 = dat[19]*in[6] + dat[22]*in[7] + dat[25]*in[8];
+    const V t729 = dat[20]*in[6] + dat[23]*in[7] + dat[26]*in[8];
+    const V t730 = dat[45]*in[6] + dat[48]*in[7] + dat[51]*in[8];
+    const V t731 = dat[46]*in[6] + dat[49]*in[7] + dat[52]*in[8];
+    const V t732 = dat[47]*in[6] + dat[50]*in[7] + dat[53]*in[8];
     const V t733 = t222;
     const V t734 = t697*in[15] + t709*in[18] + t721*in[21];
     const V t735 = t698*in[15] + t710*in[18] + t722*in[21];
@@ -1610,9 +1610,9 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t737 = t56;
     const V t738 = t59;
     const V t739 = t57;
-    const V t740 = in[111]*in[15];
-    const V t741 = in[111]*in[18];
-    const V t742 = in[111]*in[21];
+    const V t740 = dat[69]*in[15];
+    const V t741 = dat[69]*in[18];
+    const V t742 = dat[69]*in[21];
     const V t743 = -t223;
     const V t744 = t224;
     const V t745 = t700*in[15] + t712*in[18] + t724*in[21];
@@ -1683,9 +1683,9 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t810 = t62;
     const V t811 = t67;
     const V t812 = t71;
-    const V t813 = in[111]*in[16];
-    const V t814 = in[111]*in[19];
-    const V t815 = in[111]*in[22];
+    const V t813 = dat[69]*in[16];
+    const V t814 = dat[69]*in[19];
+    const V t815 = dat[69]*in[22];
     const V t816 = t223;
     const V t817 = -t222;
     const V t818 = t700*in[16] + t712*in[19] + t724*in[22];
@@ -1743,9 +1743,9 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t870 = t60;
     const V t871 = t65;
     const V t872 = t69;
-    const V t873 = in[111]*in[17];
-    const V t874 = in[111]*in[20];
-    const V t875 = in[111]*in[23];
+    const V t873 = dat[69]*in[17];
+    const V t874 = dat[69]*in[20];
+    const V t875 = dat[69]*in[23];
     const V t876 = -t224;
     const V t877 = t222;
     const V t878 = t700*in[17] + t712*in[20] + t724*in[23];
@@ -1864,30 +1864,30 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t991 = t486*in[2] - t487*in[1];
     const V t992 = -t485*in[2] + t487*in[0];
     const V t993 = t485*in[1] - t486*in[0];
-    const V t994 = in[69]*in[0] + in[72]*in[1] + in[75]*in[2];
-    const V t995 = in[70]*in[0] + in[73]*in[1] + in[76]*in[2];
-    const V t996 = in[71]*in[0] + in[74]*in[1] + in[77]*in[2];
-    const V t997 = in[96]*in[0] + in[99]*in[1] + in[102]*in[2];
-    const V t998 = in[97]*in[0] + in[100]*in[1] + in[103]*in[2];
-    const V t999 = in[98]*in[0] + in[101]*in[1] + in[104]*in[2];
+    const V t994 = dat[27]*in[0] + dat[30]*in[1] + dat[33]*in[2];
+    const V t995 = dat[28]*in[0] + dat[31]*in[1] + dat[34]*in[2];
+    const V t996 = dat[29]*in[0] + dat[32]*in[1] + dat[35]*in[2];
+    const V t997 = dat[54]*in[0] + dat[57]*in[1] + dat[60]*in[2];
+    const V t998 = dat[55]*in[0] + dat[58]*in[1] + dat[61]*in[2];
+    const V t999 = dat[56]*in[0] + dat[59]*in[1] + dat[62]*in[2];
     const V t1000 = t486*in[5] - t487*in[4];
     const V t1001 = -t485*in[5] + t487*in[3];
     const V t1002 = t485*in[4] - t486*in[3];
-    const V t1003 = in[69]*in[3] + in[72]*in[4] + in[75]*in[5];
-    const V t1004 = in[70]*in[3] + in[73]*in[4] + in[76]*in[5];
-    const V t1005 = in[71]*in[3] + in[74]*in[4] + in[77]*in[5];
-    const V t1006 = in[96]*in[3] + in[99]*in[4] + in[102]*in[5];
-    const V t1007 = in[97]*in[3] + in[100]*in[4] + in[103]*in[5];
-    const V t1008 = in[98]*in[3] + in[101]*in[4] + in[104]*in[5];
+    const V t1003 = dat[27]*in[3] + dat[30]*in[4] + dat[33]*in[5];
+    const V t1004 = dat[28]*in[3] + dat[31]*in[4] + dat[34]*in[5];
+    const V t1005 = dat[29]*in[3] + dat[32]*in[4] + dat[35]*in[5];
+    const V t1006 = dat[54]*in[3] + dat[57]*in[4] + dat[60]*in[5];
+    const V t1007 = dat[55]*in[3] + dat[58]*in[4] + dat[61]*in[5];
+    const V t1008 = dat[56]*in[3] + dat[59]*in[4] + dat[62]*in[5];
     const V t1009 = t486*in[8] - t487*in[7];
     const V t1010 = -t485*in[8] + t487*in[6];
     const V t1011 = t485*in[7] - t486*in[6];
-    const V t1012 = in[69]*in[6] + in[72]*in[7] + in[75]*in[8];
-    const V t1013 = in[70]*in[6] + in[73]*in[7] + in[76]*in[8];
-    const V t1014 = in[71]*in[6] + in[74]*in[7] + in[77]*in[8];
-    const V t1015 = in[96]*in[6] + in[99]*in[7] + in[102]*in[8];
-    const V t1016 = in[97]*in[6] + in[100]*in[7] + in[103]*in[8];
-    const V t1017 = in[98]*in[6] + in[101]*in[7] + in[104]*in[8];
+    const V t1012 = dat[27]*in[6] + dat[30]*in[7] + dat[33]*in[8];
+    const V t1013 = dat[28]*in[6] + dat[31]*in[7] + dat[34]*in[8];
+    const V t1014 = dat[29]*in[6] + dat[32]*in[7] + dat[35]*in[8];
+    const V t1015 = dat[54]*in[6] + dat[57]*in[7] + dat[60]*in[8];
+    const V t1016 = dat[55]*in[6] + dat[58]*in[7] + dat[61]*in[8];
+    const V t1017 = dat[56]*in[6] + dat[59]*in[7] + dat[62]*in[8];
     const V t1018 = t491;
     const V t1019 = t991*in[15] + t1000*in[18] + t1009*in[21];
     const V t1020 = t992*in[15] + t1001*in[18] + t1010*in[21];
@@ -1933,51 +1933,51 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t1060 = t997*in[17] + t1006*in[20] + t1015*in[23];
     const V t1061 = t998*in[17] + t1007*in[20] + t1016*in[23];
     const V t1062 = t999*in[17] + t1008*in[20] + t1017*in[23];
-    const V t1063 = t226*in[118] + t227*in[121];
-    const V t1064 = t245*in[115] + t246*in[121];
-    const V t1065 = t263*in[115] + t264*in[118];
-    const V t1066 = t296*in[115] + t297*in[118] + t298*in[121];
-    const V t1067 = t311*in[115] + t312*in[118] + t313*in[121];
-    const V t1068 = t231*in[118] + t232*in[121];
-    const V t1069 = t250*in[115] + t251*in[121];
-    const V t1070 = t268*in[115] + t269*in[118];
-    const V t1071 = t281*in[115] + t282*in[118] + t283*in[121];
-    const V t1072 = t317*in[115] + t318*in[118] + t319*in[121];
-    const V t1073 = t236*in[118] + t237*in[121];
-    const V t1074 = t255*in[115] + t256*in[121];
-    const V t1075 = t273*in[115] + t274*in[118];
-    const V t1076 = t287*in[115] + t288*in[118] + t289*in[121];
-    const V t1077 = t302*in[115] + t303*in[118] + t304*in[121];
-    const V t1078 = t226*in[119] + t227*in[122];
-    const V t1079 = t245*in[116] + t246*in[122];
-    const V t1080 = t263*in[116] + t264*in[119];
-    const V t1081 = t296*in[116] + t297*in[119] + t298*in[122];
-    const V t1082 = t311*in[116] + t312*in[119] + t313*in[122];
-    const V t1083 = t231*in[119] + t232*in[122];
-    const V t1084 = t250*in[116] + t251*in[122];
-    const V t1085 = t268*in[116] + t269*in[119];
-    const V t1086 = t281*in[116] + t282*in[119] + t283*in[122];
-    const V t1087 = t317*in[116] + t318*in[119] + t319*in[122];
-    const V t1088 = t236*in[119] + t237*in[122];
-    const V t1089 = t255*in[116] + t256*in[122];
-    const V t1090 = t273*in[116] + t274*in[119];
-    const V t1091 = t287*in[116] + t288*in[119] + t289*in[122];
-    const V t1092 = t302*in[116] + t303*in[119] + t304*in[122];
-    const V t1093 = t226*in[120] + t227*in[123];
-    const V t1094 = t245*in[117] + t246*in[123];
-    const V t1095 = t263*in[117] + t264*in[120];
-    const V t1096 = t296*in[117] + t297*in[120] + t298*in[123];
-    const V t1097 = t311*in[117] + t312*in[120] + t313*in[123];
-    const V t1098 = t231*in[120] + t232*in[123];
-    const V t1099 = t250*in[117] + t251*in[123];
-    const V t1100 = t268*in[117] + t269*in[120];
-    const V t1101 = t281*in[117] + t282*in[120] + t283*in[123];
-    const V t1102 = t317*in[117] + t318*in[120] + t319*in[123];
-    const V t1103 = t236*in[120] + t237*in[123];
-    const V t1104 = t255*in[117] + t256*in[123];
-    const V t1105 = t273*in[117] + t274*in[120];
-    const V t1106 = t287*in[117] + t288*in[120] + t289*in[123];
-    const V t1107 = t302*in[117] + t303*in[120] + t304*in[123];
+    const V t1063 = t226*dat[76] + t227*dat[79];
+    const V t1064 = t245*dat[73] + t246*dat[79];
+    const V t1065 = t263*dat[73] + t264*dat[76];
+    const V t1066 = t296*dat[73] + t297*dat[76] + t298*dat[79];
+    const V t1067 = t311*dat[73] + t312*dat[76] + t313*dat[79];
+    const V t1068 = t231*dat[76] + t232*dat[79];
+    const V t1069 = t250*dat[73] + t251*dat[79];
+    const V t1070 = t268*dat[73] + t269*dat[76];
+    const V t1071 = t281*dat[73] + t282*dat[76] + t283*dat[79];
+    const V t1072 = t317*dat[73] + t318*dat[76] + t319*dat[79];
+    const V t1073 = t236*dat[76] + t237*dat[79];
+    const V t1074 = t255*dat[73] + t256*dat[79];
+    const V t1075 = t273*dat[73] + t274*dat[76];
+    const V t1076 = t287*dat[73] + t288*dat[76] + t289*dat[79];
+    const V t1077 = t302*dat[73] + t303*dat[76] + t304*dat[79];
+    const V t1078 = t226*dat[77] + t227*dat[80];
+    const V t1079 = t245*dat[74] + t246*dat[80];
+    const V t1080 = t263*dat[74] + t264*dat[77];
+    const V t1081 = t296*dat[74] + t297*dat[77] + t298*dat[80];
+    const V t1082 = t311*dat[74] + t312*dat[77] + t313*dat[80];
+    const V t1083 = t231*dat[77] + t232*dat[80];
+    const V t1084 = t250*dat[74] + t251*dat[80];
+    const V t1085 = t268*dat[74] + t269*dat[77];
+    const V t1086 = t281*dat[74] + t282*dat[77] + t283*dat[80];
+    const V t1087 = t317*dat[74] + t318*dat[77] + t319*dat[80];
+    const V t1088 = t236*dat[77] + t237*dat[80];
+    const V t1089 = t255*dat[74] + t256*dat[80];
+    const V t1090 = t273*dat[74] + t274*dat[77];
+    const V t1091 = t287*dat[74] + t288*dat[77] + t289*dat[80];
+    const V t1092 = t302*dat[74] + t303*dat[77] + t304*dat[80];
+    const V t1093 = t226*dat[78] + t227*dat[81];
+    const V t1094 = t245*dat[75] + t246*dat[81];
+    const V t1095 = t263*dat[75] + t264*dat[78];
+    const V t1096 = t296*dat[75] + t297*dat[78] + t298*dat[81];
+    const V t1097 = t311*dat[75] + t312*dat[78] + t313*dat[81];
+    const V t1098 = t231*dat[78] + t232*dat[81];
+    const V t1099 = t250*dat[75] + t251*dat[81];
+    const V t1100 = t268*dat[75] + t269*dat[78];
+    const V t1101 = t281*dat[75] + t282*dat[78] + t283*dat[81];
+    const V t1102 = t317*dat[75] + t318*dat[78] + t319*dat[81];
+    const V t1103 = t236*dat[78] + t237*dat[81];
+    const V t1104 = t255*dat[75] + t256*dat[81];
+    const V t1105 = t273*dat[75] + t274*dat[78];
+    const V t1106 = t287*dat[75] + t288*dat[78] + t289*dat[81];
+    const V t1107 = t302*dat[75] + t303*dat[78] + t304*dat[81];
     const V t1108 = t518*t1063 + t520*t1068 + t523*t1073 + t524*t1078 + t525*t1083 + t526*t1088 + t527*t1093 + t528*t1098 + t529*t1103;
     const V t1109 = t518*t1064 + t520*t1069 + t523*t1074 + t524*t1079 + t525*t1084 + t526*t1089 + t527*t1094 + t528*t1099 + t529*t1104;
     const V t1110 = t518*t1065 + t520*t1070 + t523*t1075 + t524*t1080 + t525*t1085 + t526*t1090 + t527*t1095 + t528*t1100 + t529*t1105;
@@ -2050,15 +2050,15 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t1177 = t57;
     const V t1178 = t71;
     const V t1179 = t69;
-    const V t1180 = t1164*in[118] + t1172*in[121];
-    const V t1181 = t1156*in[115] + t1173*in[121];
-    const V t1182 = t1157*in[115] + t1165*in[118];
-    const V t1183 = t1158*in[115] + t1166*in[118] + t1174*in[121];
-    const V t1184 = t1159*in[115] + t1167*in[118] + t1175*in[121];
-    const V t1185 = t1160*in[115] + t1168*in[118] + t1176*in[121];
-    const V t1186 = t1161*in[115] + t1169*in[118] + t1177*in[121];
-    const V t1187 = t1162*in[115] + t1170*in[118] + t1178*in[121];
-    const V t1188 = t1163*in[115] + t1171*in[118] + t1179*in[121];
+    const V t1180 = t1164*dat[76] + t1172*dat[79];
+    const V t1181 = t1156*dat[73] + t1173*dat[79];
+    const V t1182 = t1157*dat[73] + t1165*dat[76];
+    const V t1183 = t1158*dat[73] + t1166*dat[76] + t1174*dat[79];
+    const V t1184 = t1159*dat[73] + t1167*dat[76] + t1175*dat[79];
+    const V t1185 = t1160*dat[73] + t1168*dat[76] + t1176*dat[79];
+    const V t1186 = t1161*dat[73] + t1169*dat[76] + t1177*dat[79];
+    const V t1187 = t1162*dat[73] + t1170*dat[76] + t1178*dat[79];
+    const V t1188 = t1163*dat[73] + t1171*dat[76] + t1179*dat[79];
     const V t1189 = (T(0.5))*t1120;
     const V t1190 = (T(0.5))*t1121;
     const V t1191 = (T(0.5))*t1122;
@@ -2077,15 +2077,15 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t1204 = t503*t1198 + t584*t1117;
     const V t1205 = t503*t1199 + t584*t1118;
     const V t1206 = t503*t1200 + t584*t1119;
-    const V t1207 = t1164*in[119] + t1172*in[122];
-    const V t1208 = t1156*in[116] + t1173*in[122];
-    const V t1209 = t1157*in[116] + t1165*in[119];
-    const V t1210 = t1158*in[116] + t1166*in[119] + t1174*in[122];
-    const V t1211 = t1159*in[116] + t1167*in[119] + t1175*in[122];
-    const V t1212 = t1160*in[116] + t1168*in[119] + t1176*in[122];
-    const V t1213 = t1161*in[116] + t1169*in[119] + t1177*in[122];
-    const V t1214 = t1162*in[116] + t1170*in[119] + t1178*in[122];
-    const V t1215 = t1163*in[116] + t1171*in[119] + t1179*in[122];
+    const V t1207 = t1164*dat[77] + t1172*dat[80];
+    const V t1208 = t1156*dat[74] + t1173*dat[80];
+    const V t1209 = t1157*dat[74] + t1165*dat[77];
+    const V t1210 = t1158*dat[74] + t1166*dat[77] + t1174*dat[80];
+    const V t1211 = t1159*dat[74] + t1167*dat[77] + t1175*dat[80];
+    const V t1212 = t1160*dat[74] + t1168*dat[77] + t1176*dat[80];
+    const V t1213 = t1161*dat[74] + t1169*dat[77] + t1177*dat[80];
+    const V t1214 = t1162*dat[74] + t1170*dat[77] + t1178*dat[80];
+    const V t1215 = t1163*dat[74] + t1171*dat[77] + t1179*dat[80];
     const V t1216 = (T(0.5))*t1114;
     const V t1217 = (T(0.5))*t1115;
     const V t1218 = (T(0.5))*t1116;
@@ -2098,15 +2098,15 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     const V t1225 = t508*t1198 + t584*t1123;
     const V t1226 = t508*t1199 + t584*t1124;
     const V t1227 = t508*t1200 + t584*t1125;
-    const V t1228 = t1164*in[120] + t1172*in[123];
-    const V t1229 = t1156*in[117] + t1173*in[123];
-    const V t1230 = t1157*in[117] + t1165*in[120];
-    const V t1231 = t1158*in[117] + t1166*in[120] + t1174*in[123];
-    const V t1232 = t1159*in[117] + t1167*in[120] + t1175*in[123];
-    const V t1233 = t1160*in[117] + t1168*in[120] + t1176*in[123];
-    const V t1234 = t1161*in[117] + t1169*in[120] + t1177*in[123];
-    const V t1235 = t1162*in[117] + t1170*in[120] + t1178*in[123];
-    const V t1236 = t1163*in[117] + t1171*in[120] + t1179*in[123];
+    const V t1228 = t1164*dat[78] + t1172*dat[81];
+    const V t1229 = t1156*dat[75] + t1173*dat[81];
+    const V t1230 = t1157*dat[75] + t1165*dat[78];
+    const V t1231 = t1158*dat[75] + t1166*dat[78] + t1174*dat[81];
+    const V t1232 = t1159*dat[75] + t1167*dat[78] + t1175*dat[81];
+    const V t1233 = t1160*dat[75] + t1168*dat[78] + t1176*dat[81];
+    const V t1234 = t1161*dat[75] + t1169*dat[78] + t1177*dat[81];
+    const V t1235 = t1162*dat[75] + t1170*dat[78] + t1178*dat[81];
+    const V t1236 = t1163*dat[75] + t1171*dat[78] + t1179*dat[81];
     const V t1237 = (T(0.5))*t1108;
     const V t1238 = (T(0.5))*t1109;
     const V t1239 = (T(0.5))*t1110;
@@ -2592,7 +2592,7 @@ void jacobian_3(const V in[127], T ab[LANES][672]) {
     }
 }
 
-void cost_3(const V in[253], T half[LANES][2]) {
+void cost_3(const V* in, const V* dat, T half[LANES][2]) {
 #pragma HLS PIPELINE II=1
     const V t0 = in[0]*in[15] + in[3]*in[18] + in[6]*in[21];
     const V t1 = t0;
@@ -2600,27 +2600,27 @@ void cost_3(const V in[253], T half[LANES][2]) {
     const V t3 = t2;
     const V t4 = in[2]*in[15] + in[5]*in[18] + in[8]*in[21];
     const V t5 = t4;
-    const V t6 = t1*in[115] + t3*in[118] + t5*in[121];
+    const V t6 = t1*dat[73] + t3*dat[76] + t5*dat[79];
     const V t7 = in[0]*in[16] + in[3]*in[19] + in[6]*in[22];
     const V t8 = t7;
     const V t9 = in[1]*in[16] + in[4]*in[19] + in[7]*in[22];
     const V t10 = t9;
     const V t11 = in[2]*in[16] + in[5]*in[19] + in[8]*in[22];
     const V t12 = t11;
-    const V t13 = t8*in[115] + t10*in[118] + t12*in[121];
+    const V t13 = t8*dat[73] + t10*dat[76] + t12*dat[79];
     const V t14 = in[0]*in[17] + in[3]*in[20] + in[6]*in[23];
     const V t15 = t14;
     const V t16 = in[1]*in[17] + in[4]*in[20] + in[7]*in[23];
     const V t17 = t16;
     const V t18 = in[2]*in[17] + in[5]*in[20] + in[8]*in[23];
     const V t19 = t18;
-    const V t20 = t15*in[115] + t17*in[118] + t19*in[121];
-    const V t21 = t1*in[116] + t3*in[119] + t5*in[122];
-    const V t22 = t8*in[116] + t10*in[119] + t12*in[122];
-    const V t23 = t15*in[116] + t17*in[119] + t19*in[122];
-    const V t24 = t1*in[117] + t3*in[120] + t5*in[123];
-    const V t25 = t8*in[117] + t10*in[120] + t12*in[123];
-    const V t26 = t15*in[117] + t17*in[120] + t19*in[123];
+    const V t20 = t15*dat[73] + t17*dat[76] + t19*dat[79];
+    const V t21 = t1*dat[74] + t3*dat[77] + t5*dat[80];
+    const V t22 = t8*dat[74] + t10*dat[77] + t12*dat[80];
+    const V t23 = t15*dat[74] + t17*dat[77] + t19*dat[80];
+    const V t24 = t1*dat[75] + t3*dat[78] + t5*dat[81];
+    const V t25 = t8*dat[75] + t10*dat[78] + t12*dat[81];
+    const V t26 = t15*dat[75] + t17*dat[78] + t19*dat[81];
     V tlog0[3]; v_so3_log(t6, t13, t20, t21, t22, t23, t24, t25, t26, tlog0);
     const V t27 = tlog0[0];
     const V t28 = (t27*t27);
@@ -2628,20 +2628,20 @@ void cost_3(const V in[253], T half[LANES][2]) {
     const V t30 = (t29*t29);
     const V t31 = tlog0[2];
     const V t32 = (t31*t31);
-    const V t33 = in[30] - in[105];
-    const V t34 = in[31] - in[106];
-    const V t35 = in[32] - in[107];
-    const V t36 = in[33] - in[108];
-    const V t37 = in[34] - in[109];
-    const V t38 = in[35] - in[110];
-    const V t39 = t33*in[54] + t34*in[55] + t35*in[56] + t36*in[81] + t37*in[82] + t38*in[83] + in[43];
+    const V t33 = in[30] - dat[63];
+    const V t34 = in[31] - dat[64];
+    const V t35 = in[32] - dat[65];
+    const V t36 = in[33] - dat[66];
+    const V t37 = in[34] - dat[67];
+    const V t38 = in[35] - dat[68];
+    const V t39 = t33*dat[12] + t34*dat[13] + t35*dat[14] + t36*dat[39] + t37*dat[40] + t38*dat[41] + dat[1];
     const V t40 = -t39;
     const V t41 = t39*t40;
-    const V t42 = t33*in[57] + t34*in[58] + t35*in[59] + t36*in[84] + t37*in[85] + t38*in[86] + in[44];
+    const V t42 = t33*dat[15] + t34*dat[16] + t35*dat[17] + t36*dat[42] + t37*dat[43] + t38*dat[44] + dat[2];
     const V t43 = -t42;
     const V t44 = t43*t42;
     const V t45 = t44 + t41;
-    const V t46 = t33*in[51] + t34*in[52] + t35*in[53] + t36*in[78] + t37*in[79] + t38*in[80] + in[42];
+    const V t46 = t33*dat[9] + t34*dat[10] + t35*dat[11] + t36*dat[36] + t37*dat[37] + t38*dat[38] + dat[0];
     const V t47 = (t46*t46) + (t39*t39) + (t42*t42);
     const V t48 = v_lie_B(t47);
     const V t49 = t45*t48 + T(1);
@@ -2686,15 +2686,15 @@ void cost_3(const V in[253], T half[LANES][2]) {
     const V t87 = v_lie_D(t86);
     const V t88 = -t82*t87 + T(1);
     const V t89 = in[9] - in[24];
-    const V t90 = t33*in[60] + t34*in[61] + t35*in[62] + t36*in[87] + t37*in[88] + t38*in[89] + in[45];
-    const V t91 = t33*in[63] + t34*in[64] + t35*in[65] + t36*in[90] + t37*in[91] + t38*in[92] + in[46];
-    const V t92 = t33*in[66] + t34*in[67] + t35*in[68] + t36*in[93] + t37*in[94] + t38*in[95] + in[47];
-    const V t93 = (T(0.5))*(in[111]*in[111]);
-    const V t94 = t89 + t90*in[0] + t91*in[1] + t92*in[2] + t93*in[112] + in[111]*in[12];
+    const V t90 = t33*dat[18] + t34*dat[19] + t35*dat[20] + t36*dat[45] + t37*dat[46] + t38*dat[47] + dat[3];
+    const V t91 = t33*dat[21] + t34*dat[22] + t35*dat[23] + t36*dat[48] + t37*dat[49] + t38*dat[50] + dat[4];
+    const V t92 = t33*dat[24] + t34*dat[25] + t35*dat[26] + t36*dat[51] + t37*dat[52] + t38*dat[53] + dat[5];
+    const V t93 = (T(0.5))*(dat[69]*dat[69]);
+    const V t94 = t89 + t90*in[0] + t91*in[1] + t92*in[2] + t93*dat[70] + dat[69]*in[12];
     const V t95 = in[10] - in[25];
-    const V t96 = t95 + t90*in[3] + t91*in[4] + t92*in[5] + t93*in[113] + in[111]*in[13];
+    const V t96 = t95 + t90*in[3] + t91*in[4] + t92*in[5] + t93*dat[71] + dat[69]*in[13];
     const V t97 = in[11] - in[26];
-    const V t98 = t97 + t90*in[6] + t91*in[7] + t92*in[8] + t93*in[114] + in[111]*in[14];
+    const V t98 = t97 + t90*in[6] + t91*in[7] + t92*in[8] + t93*dat[72] + dat[69]*in[14];
     const V t99 = t94*in[15] + t96*in[18] + t98*in[21];
     const V t100 = t99;
     const V t101 = (T(0.5))*t79;
@@ -2725,12 +2725,12 @@ void cost_3(const V in[253], T half[LANES][2]) {
     const V t126 = t109 + t110;
     const V t127 = -t118 + t120;
     const V t128 = t100*t126 + t107*t127 + t113*t125;
-    const V t129 = t33*in[69] + t34*in[70] + t35*in[71] + t36*in[96] + t37*in[97] + t38*in[98] + in[48];
-    const V t130 = t33*in[72] + t34*in[73] + t35*in[74] + t36*in[99] + t37*in[100] + t38*in[101] + in[49];
-    const V t131 = t33*in[75] + t34*in[76] + t35*in[77] + t36*in[102] + t37*in[103] + t38*in[104] + in[50];
-    const V t132 = t129*in[0] + t130*in[1] + t131*in[2] + in[111]*in[112] + in[12] - in[27];
-    const V t133 = t129*in[3] + t130*in[4] + t131*in[5] + in[111]*in[113] + in[13] - in[28];
-    const V t134 = t129*in[6] + t130*in[7] + t131*in[8] + in[111]*in[114] + in[14] - in[29];
+    const V t129 = t33*dat[27] + t34*dat[28] + t35*dat[29] + t36*dat[54] + t37*dat[55] + t38*dat[56] + dat[6];
+    const V t130 = t33*dat[30] + t34*dat[31] + t35*dat[32] + t36*dat[57] + t37*dat[58] + t38*dat[59] + dat[7];
+    const V t131 = t33*dat[33] + t34*dat[34] + t35*dat[35] + t36*dat[60] + t37*dat[61] + t38*dat[62] + dat[8];
+    const V t132 = t129*in[0] + t130*in[1] + t131*in[2] + dat[69]*dat[70] + in[12] - in[27];
+    const V t133 = t129*in[3] + t130*in[4] + t131*in[5] + dat[69]*dat[71] + in[13] - in[28];
+    const V t134 = t129*in[6] + t130*in[7] + t131*in[8] + dat[69]*dat[72] + in[14] - in[29];
     const V t135 = t132*in[15] + t133*in[18] + t134*in[21];
     const V t136 = t135;
     const V t137 = t132*in[16] + t133*in[19] + t134*in[22];
@@ -2768,9 +2768,9 @@ void cost_3(const V in[253], T half[LANES][2]) {
     const V t169 = -in[0]*in[9] + in[0]*in[24] - in[3]*in[10] + in[3]*in[25] - in[6]*in[11] + in[6]*in[26];
     const V t170 = -in[1]*in[9] + in[1]*in[24] - in[4]*in[10] + in[4]*in[25] - in[7]*in[11] + in[7]*in[26];
     const V t171 = -in[2]*in[9] + in[2]*in[24] - in[5]*in[10] + in[5]*in[25] - in[8]*in[11] + in[8]*in[26];
-    const V t172 = t169*in[115] + t170*in[118] + t171*in[121] - in[115]*in[124] - in[118]*in[125] - in[121]*in[126];
-    const V t173 = t169*in[116] + t170*in[119] + t171*in[122] - in[116]*in[124] - in[119]*in[125] - in[122]*in[126];
-    const V t174 = t169*in[117] + t170*in[120] + t171*in[123] - in[117]*in[124] - in[120]*in[125] - in[123]*in[126];
+    const V t172 = t169*dat[73] + t170*dat[76] + t171*dat[79] - dat[73]*dat[82] - dat[76]*dat[83] - dat[79]*dat[84];
+    const V t173 = t169*dat[74] + t170*dat[77] + t171*dat[80] - dat[74]*dat[82] - dat[77]*dat[83] - dat[80]*dat[84];
+    const V t174 = t169*dat[75] + t170*dat[78] + t171*dat[81] - dat[75]*dat[82] - dat[78]*dat[83] - dat[81]*dat[84];
     const V t175 = t159*t172 + t164*t173 + t168*t174;
     const V t176 = -t161 + t163;
     const V t177 = -t153 - t156;
@@ -2786,8 +2786,8 @@ void cost_3(const V in[253], T half[LANES][2]) {
     const V t187 = -t151 - t156;
     const V t188 = t187*t158 + T(1);
     const V t189 = t185*t172 + t186*t173 + t188*t174;
-    const V t190 = (T(0.5))*(t149*t149)*(in[246]*in[246]) + (T(0.5))*((t148*in[244] + t149*in[245])*(t148*in[244] + t149*in[245])) + (T(0.5))*((t147*in[241] + t148*in[242] + t149*in[243])*(t147*in[241] + t148*in[242] + t149*in[243])) + (T(0.5))*((t146*in[237] + t147*in[238] + t148*in[239] + t149*in[240])*(t146*in[237] + t147*in[238] + t148*in[239] + t149*in[240])) + (T(0.5))*((t145*in[232] + t146*in[233] + t147*in[234] + t148*in[235] + t149*in[236])*(t145*in[232] + t146*in[233] + t147*in[234] + t148*in[235] + t149*in[236])) + (T(0.5))*((t144*in[226] + t145*in[227] + t146*in[228] + t147*in[229] + t148*in[230] + t149*in[231])*(t144*in[226] + t145*in[227] + t146*in[228] + t147*in[229] + t148*in[230] + t149*in[231])) + (T(0.5))*((t144*in[220] + t145*in[221] + t146*in[222] + t147*in[223] + t148*in[224] + t149*in[225] + t143*in[219])*(t144*in[220] + t145*in[221] + t146*in[222] + t147*in[223] + t148*in[224] + t149*in[225] + t143*in[219])) + (T(0.5))*((t144*in[213] + t145*in[214] + t146*in[215] + t147*in[216] + t148*in[217] + t149*in[218] + t142*in[211] + t143*in[212])*(t144*in[213] + t145*in[214] + t146*in[215] + t147*in[216] + t148*in[217] + t149*in[218] + t142*in[211] + t143*in[212])) + (T(0.5))*((t144*in[205] + t145*in[206] + t146*in[207] + t147*in[208] + t148*in[209] + t149*in[210] + t141*in[202] + t142*in[203] + t143*in[204])*(t144*in[205] + t145*in[206] + t146*in[207] + t147*in[208] + t148*in[209] + t149*in[210] + t141*in[202] + t142*in[203] + t143*in[204])) + (T(0.5))*((t144*in[196] + t145*in[197] + t146*in[198] + t147*in[199] + t148*in[200] + t149*in[201] + t128*in[192] + t141*in[193] + t142*in[194] + t143*in[195])*(t144*in[196] + t145*in[197] + t146*in[198] + t147*in[199] + t148*in[200] + t149*in[201] + t128*in[192] + t141*in[193] + t142*in[194] + t143*in[195])) + (T(0.5))*((t144*in[186] + t145*in[187] + t146*in[188] + t147*in[189] + t148*in[190] + t149*in[191] + t123*in[181] + t128*in[182] + t141*in[183] + t142*in[184] + t143*in[185])*(t144*in[186] + t145*in[187] + t146*in[188] + t147*in[189] + t148*in[190] + t149*in[191] + t123*in[181] + t128*in[182] + t141*in[183] + t142*in[184] + t143*in[185])) + (T(0.5))*((t144*in[175] + t145*in[176] + t146*in[177] + t147*in[178] + t148*in[179] + t149*in[180] + t114*in[169] + t123*in[170] + t128*in[171] + t141*in[172] + t142*in[173] + t143*in[174])*(t144*in[175] + t145*in[176] + t146*in[177] + t147*in[178] + t148*in[179] + t149*in[180] + t114*in[169] + t123*in[170] + t128*in[171] + t141*in[172] + t142*in[173] + t143*in[174])) + (T(0.5))*((t144*in[163] + t145*in[164] + t146*in[165] + t147*in[166] + t148*in[167] + t149*in[168] + t114*in[157] + t123*in[158] + t128*in[159] + t141*in[160] + t142*in[161] + t143*in[162] + t79*in[156])*(t144*in[163] + t145*in[164] + t146*in[165] + t147*in[166] + t148*in[167] + t149*in[168] + t114*in[157] + t123*in[158] + t128*in[159] + t141*in[160] + t142*in[161] + t143*in[162] + t79*in[156])) + (T(0.5))*((t144*in[150] + t145*in[151] + t146*in[152] + t147*in[153] + t148*in[154] + t149*in[155] + t114*in[144] + t123*in[145] + t128*in[146] + t141*in[147] + t142*in[148] + t143*in[149] + t76*in[142] + t79*in[143])*(t144*in[150] + t145*in[151] + t146*in[152] + t147*in[153] + t148*in[154] + t149*in[155] + t114*in[144] + t123*in[145] + t128*in[146] + t141*in[147] + t142*in[148] + t143*in[149] + t76*in[142] + t79*in[143])) + (T(0.5))*((t144*in[136] + t145*in[137] + t146*in[138] + t147*in[139] + t148*in[140] + t149*in[141] + t114*in[130] + t123*in[131] + t128*in[132] + t141*in[133] + t142*in[134] + t143*in[135] + t83*in[127] + t76*in[128] + t79*in[129])*(t144*in[136] + t145*in[137] + t146*in[138] + t147*in[139] + t148*in[140] + t149*in[141] + t114*in[130] + t123*in[131] + t128*in[132] + t141*in[133] + t142*in[134] + t143*in[135] + t83*in[127] + t76*in[128] + t79*in[129]));
-    const V t191 = (T(0.5))*t28*(in[247]*in[247]) + (T(0.5))*t30*(in[248]*in[248]) + (T(0.5))*(t175*t175)*(in[250]*in[250]) + (T(0.5))*(t184*t184)*(in[251]*in[251]) + (T(0.5))*t32*(in[249]*in[249]) + (T(0.5))*(t189*t189)*(in[252]*in[252]);
+    const V t190 = (T(0.5))*(t149*t149)*(dat[204]*dat[204]) + (T(0.5))*((t148*dat[202] + t149*dat[203])*(t148*dat[202] + t149*dat[203])) + (T(0.5))*((t147*dat[199] + t148*dat[200] + t149*dat[201])*(t147*dat[199] + t148*dat[200] + t149*dat[201])) + (T(0.5))*((t146*dat[195] + t147*dat[196] + t148*dat[197] + t149*dat[198])*(t146*dat[195] + t147*dat[196] + t148*dat[197] + t149*dat[198])) + (T(0.5))*((t145*dat[190] + t146*dat[191] + t147*dat[192] + t148*dat[193] + t149*dat[194])*(t145*dat[190] + t146*dat[191] + t147*dat[192] + t148*dat[193] + t149*dat[194])) + (T(0.5))*((t144*dat[184] + t145*dat[185] + t146*dat[186] + t147*dat[187] + t148*dat[188] + t149*dat[189])*(t144*dat[184] + t145*dat[185] + t146*dat[186] + t147*dat[187] + t148*dat[188] + t149*dat[189])) + (T(0.5))*((t144*dat[178] + t145*dat[179] + t146*dat[180] + t147*dat[181] + t148*dat[182] + t149*dat[183] + t143*dat[177])*(t144*dat[178] + t145*dat[179] + t146*dat[180] + t147*dat[181] + t148*dat[182] + t149*dat[183] + t143*dat[177])) + (T(0.5))*((t144*dat[171] + t145*dat[172] + t146*dat[173] + t147*dat[174] + t148*dat[175] + t149*dat[176] + t142*dat[169] + t143*dat[170])*(t144*dat[171] + t145*dat[172] + t146*dat[173] + t147*dat[174] + t148*dat[175] + t149*dat[176] + t142*dat[169] + t143*dat[170])) + (T(0.5))*((t144*dat[163] + t145*dat[164] + t146*dat[165] + t147*dat[166] + t148*dat[167] + t149*dat[168] + t141*dat[160] + t142*dat[161] + t143*dat[162])*(t144*dat[163] + t145*dat[164] + t146*dat[165] + t147*dat[166] + t148*dat[167] + t149*dat[168] + t141*dat[160] + t142*dat[161] + t143*dat[162])) + (T(0.5))*((t144*dat[154] + t145*dat[155] + t146*dat[156] + t147*dat[157] + t148*dat[158] + t149*dat[159] + t128*dat[150] + t141*dat[151] + t142*dat[152] + t143*dat[153])*(t144*dat[154] + t145*dat[155] + t146*dat[156] + t147*dat[157] + t148*dat[158] + t149*dat[159] + t128*dat[150] + t141*dat[151] + t142*dat[152] + t143*dat[153])) + (T(0.5))*((t144*dat[144] + t145*dat[145] + t146*dat[146] + t147*dat[147] + t148*dat[148] + t149*dat[149] + t123*dat[139] + t128*dat[140] + t141*dat[141] + t142*dat[142] + t143*dat[143])*(t144*dat[144] + t145*dat[145] + t146*dat[146] + t147*dat[147] + t148*dat[148] + t149*dat[149] + t123*dat[139] + t128*dat[140] + t141*dat[141] + t142*dat[142] + t143*dat[143])) + (T(0.5))*((t144*dat[133] + t145*dat[134] + t146*dat[135] + t147*dat[136] + t148*dat[137] + t149*dat[138] + t114*dat[127] + t123*dat[128] + t128*dat[129] + t141*dat[130] + t142*dat[131] + t143*dat[132])*(t144*dat[133] + t145*dat[134] + t146*dat[135] + t147*dat[136] + t148*dat[137] + t149*dat[138] + t114*dat[127] + t123*dat[128] + t128*dat[129] + t141*dat[130] + t142*dat[131] + t143*dat[132])) + (T(0.5))*((t144*dat[121] + t145*dat[122] + t146*dat[123] + t147*dat[124] + t148*dat[125] + t149*dat[126] + t114*dat[115] + t123*dat[116] + t128*dat[117] + t141*dat[118] + t142*dat[119] + t143*dat[120] + t79*dat[114])*(t144*dat[121] + t145*dat[122] + t146*dat[123] + t147*dat[124] + t148*dat[125] + t149*dat[126] + t114*dat[115] + t123*dat[116] + t128*dat[117] + t141*dat[118] + t142*dat[119] + t143*dat[120] + t79*dat[114])) + (T(0.5))*((t144*dat[108] + t145*dat[109] + t146*dat[110] + t147*dat[111] + t148*dat[112] + t149*dat[113] + t114*dat[102] + t123*dat[103] + t128*dat[104] + t141*dat[105] + t142*dat[106] + t143*dat[107] + t76*dat[100] + t79*dat[101])*(t144*dat[108] + t145*dat[109] + t146*dat[110] + t147*dat[111] + t148*dat[112] + t149*dat[113] + t114*dat[102] + t123*dat[103] + t128*dat[104] + t141*dat[105] + t142*dat[106] + t143*dat[107] + t76*dat[100] + t79*dat[101])) + (T(0.5))*((t144*dat[94] + t145*dat[95] + t146*dat[96] + t147*dat[97] + t148*dat[98] + t149*dat[99] + t114*dat[88] + t123*dat[89] + t128*dat[90] + t141*dat[91] + t142*dat[92] + t143*dat[93] + t83*dat[85] + t76*dat[86] + t79*dat[87])*(t144*dat[94] + t145*dat[95] + t146*dat[96] + t147*dat[97] + t148*dat[98] + t149*dat[99] + t114*dat[88] + t123*dat[89] + t128*dat[90] + t141*dat[91] + t142*dat[92] + t143*dat[93] + t83*dat[85] + t76*dat[86] + t79*dat[87]));
+    const V t191 = (T(0.5))*t28*(dat[205]*dat[205]) + (T(0.5))*t30*(dat[206]*dat[206]) + (T(0.5))*(t175*t175)*(dat[208]*dat[208]) + (T(0.5))*(t184*t184)*(dat[209]*dat[209]) + (T(0.5))*t32*(dat[207]*dat[207]) + (T(0.5))*(t189*t189)*(dat[210]*dat[210]);
     const V o0 = t190;
     const V o1 = t191;
     for (int l = 0; l < LANES; ++l) {
@@ -2797,21 +2797,21 @@ void cost_3(const V in[253], T half[LANES][2]) {
 }
 
 // block 4: GPSFactor (3 rows, 6 columns, 8 instances)
-void jacobian_4(const V in[15], T ab[LANES][24]) {
+void jacobian_4(const V* in, const V* dat, T ab[LANES][24]) {
 #pragma HLS PIPELINE II=1
     // every output once, as a whole V, before it is taken apart lane by lane
     const V o0 = in[0];
     const V o1 = in[1];
     const V o2 = in[2];
-    const V o3 = -in[12] + in[9];
+    const V o3 = -dat[0] + in[9];
     const V o4 = in[3];
     const V o5 = in[4];
     const V o6 = in[5];
-    const V o7 = -in[13] + in[10];
+    const V o7 = -dat[1] + in[10];
     const V o8 = in[6];
     const V o9 = in[7];
     const V o10 = in[8];
-    const V o11 = -in[14] + in[11];
+    const V o11 = -dat[2] + in[11];
     for (int l = 0; l < LANES; ++l) {
         ab[l][3] = lane(o0, l);
         ab[l][4] = lane(o1, l);
@@ -2828,12 +2828,12 @@ void jacobian_4(const V in[15], T ab[LANES][24]) {
     }
 }
 
-void cost_4(const V in[16], T half[LANES][1]) {
+void cost_4(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = -in[12] + in[9];
-    const V t1 = -in[13] + in[10];
-    const V t2 = -in[14] + in[11];
-    const V t3 = (T(0.5))*(in[15]*in[15]);
+    const V t0 = -dat[0] + in[9];
+    const V t1 = -dat[1] + in[10];
+    const V t2 = -dat[2] + in[11];
+    const V t3 = (T(0.5))*(dat[3]*dat[3]);
     const V t4 = (t0*t0)*t3 + (t1*t1)*t3 + (t2*t2)*t3;
     const V o0 = t4;
     for (int l = 0; l < LANES; ++l) {
@@ -2943,25 +2943,28 @@ T robust_loss(T half, T code, T k) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK0_LANED[1][18][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK0_LANED[1][18];
 
 void lane_data_0() {
     for (int first = 0; first < 1; first += LANES) {
-        T (*laned)[LANES] = BLOCK0_LANED[first / LANES];
+        T laned[18][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK0_INSTANCES[first + l < 1 ? first + l : 0];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 12; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 6; ++i) laned[12 + i][l] = line[12 + i];
         }
+        for (int i = 0; i < 18; ++i) BLOCK0_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK0_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_0(const T* x, int first, bool cost, V in[30]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_0(const T* x, int first, bool cost, V in[30]) {
 #ifndef __SYNTHESIS__
     T buf[12][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2970,11 +2973,8 @@ void gather_0(const T* x, int first, bool cost, V in[30]) {
         for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     }
     for (int i = 0; i < 12; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK0_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 18 : 12); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=18
-        in[12 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK0_LANED[first / LANES];
 #else
     T buf[30][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -2990,6 +2990,7 @@ void gather_0(const T* x, int first, bool cost, V in[30]) {
 #pragma HLS LOOP_TRIPCOUNT max=30
         in[i] = load_lanes(buf[i]);
     }
+    return in + 12;
 #endif
 }
 
@@ -2999,12 +3000,12 @@ void gather_0(const T* x, int first, bool cost, V in[30]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
     V in[30];
-    gather_0(x, first, false, in);
+    const V* dat = gather_0(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][48];
     static T ab[LANES][48];  // the whitened rows, every entry written
-    jacobian_0(in, raw);
+    jacobian_0(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
@@ -3033,9 +3034,9 @@ bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
 // block 0, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_0(const T* x, int first, T* total) {
     V in[30];
-    gather_0(x, first, true, in);
+    const V* dat = gather_0(x, first, true, in);
     T half[LANES][1];
-    cost_0(in, half);
+    cost_0(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK0_INSTANCES[first + l]];
@@ -3047,25 +3048,28 @@ void cost_of_0(const T* x, int first, T* total) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK1_LANED[1][4][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK1_LANED[1][4];
 
 void lane_data_1() {
     for (int first = 0; first < 1; first += LANES) {
-        T (*laned)[LANES] = BLOCK1_LANED[first / LANES];
+        T laned[4][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK1_INSTANCES[first + l < 1 ? first + l : 0];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 3; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 1; ++i) laned[3 + i][l] = line[3 + i];
         }
+        for (int i = 0; i < 4; ++i) BLOCK1_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK1_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_1(const T* x, int first, bool cost, V in[7]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_1(const T* x, int first, bool cost, V in[7]) {
 #ifndef __SYNTHESIS__
     T buf[3][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -3074,11 +3078,8 @@ void gather_1(const T* x, int first, bool cost, V in[7]) {
         for (int i = 0; i < 3; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     }
     for (int i = 0; i < 3; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK1_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 4 : 3); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=4
-        in[3 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK1_LANED[first / LANES];
 #else
     T buf[7][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -3094,6 +3095,7 @@ void gather_1(const T* x, int first, bool cost, V in[7]) {
 #pragma HLS LOOP_TRIPCOUNT max=7
         in[i] = load_lanes(buf[i]);
     }
+    return in + 3;
 #endif
 }
 
@@ -3103,12 +3105,12 @@ void gather_1(const T* x, int first, bool cost, V in[7]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
     V in[7];
-    gather_1(x, first, false, in);
+    const V* dat = gather_1(x, first, false, in);
     // rows [J | r] padded to 4 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][12];
     static T ab[LANES][12];  // the whitened rows, every entry written
-    jacobian_1(in, raw);
+    jacobian_1(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
@@ -3137,9 +3139,9 @@ bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
 // block 1, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_1(const T* x, int first, T* total) {
     V in[7];
-    gather_1(x, first, true, in);
+    const V* dat = gather_1(x, first, true, in);
     T half[LANES][1];
-    cost_1(in, half);
+    cost_1(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK1_INSTANCES[first + l]];
@@ -3151,25 +3153,28 @@ void cost_of_1(const T* x, int first, T* total) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK2_LANED[1][7][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK2_LANED[1][7];
 
 void lane_data_2() {
     for (int first = 0; first < 1; first += LANES) {
-        T (*laned)[LANES] = BLOCK2_LANED[first / LANES];
+        T laned[7][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK2_INSTANCES[first + l < 1 ? first + l : 0];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 6; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 1; ++i) laned[6 + i][l] = line[6 + i];
         }
+        for (int i = 0; i < 7; ++i) BLOCK2_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK2_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_2(const T* x, int first, bool cost, V in[13]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_2(const T* x, int first, bool cost, V in[13]) {
 #ifndef __SYNTHESIS__
     T buf[6][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -3178,11 +3183,8 @@ void gather_2(const T* x, int first, bool cost, V in[13]) {
         for (int i = 0; i < 6; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     }
     for (int i = 0; i < 6; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK2_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 7 : 6); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=7
-        in[6 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK2_LANED[first / LANES];
 #else
     T buf[13][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -3198,6 +3200,7 @@ void gather_2(const T* x, int first, bool cost, V in[13]) {
 #pragma HLS LOOP_TRIPCOUNT max=13
         in[i] = load_lanes(buf[i]);
     }
+    return in + 6;
 #endif
 }
 
@@ -3207,12 +3210,12 @@ void gather_2(const T* x, int first, bool cost, V in[13]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_2(const T* x, int first, bool noise_mode, T* noise) {
     V in[13];
-    gather_2(x, first, false, in);
+    const V* dat = gather_2(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][48];
     static T ab[LANES][48];  // the whitened rows, every entry written
-    jacobian_2(in, raw);
+    jacobian_2(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
@@ -3241,9 +3244,9 @@ bool linearize_2(const T* x, int first, bool noise_mode, T* noise) {
 // block 2, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_2(const T* x, int first, T* total) {
     V in[13];
-    gather_2(x, first, true, in);
+    const V* dat = gather_2(x, first, true, in);
     T half[LANES][1];
-    cost_2(in, half);
+    cost_2(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK2_INSTANCES[first + l]];
@@ -3255,12 +3258,13 @@ void cost_of_2(const T* x, int first, T* total) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK3_LANED[1][211][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK3_LANED[1][211];
 
 void lane_data_3() {
     for (int first = 0; first < 7; first += LANES) {
-        T (*laned)[LANES] = BLOCK3_LANED[first / LANES];
+        T laned[211][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK3_INSTANCES[first + l < 7 ? first + l : 6];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
@@ -3269,13 +3273,15 @@ void lane_data_3() {
             for (int i = 0; i < 120; ++i) laned[85 + i][l] = line[73 + i];
             for (int i = 0; i < 6; ++i) laned[205 + i][l] = line[207 + i];
         }
+        for (int i = 0; i < 211; ++i) BLOCK3_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK3_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_3(const T* x, int first, bool cost, V in[253]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_3(const T* x, int first, bool cost, V in[253]) {
 #ifndef __SYNTHESIS__
     T buf[42][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -3289,11 +3295,8 @@ void gather_3(const T* x, int first, bool cost, V in[253]) {
         for (int i = 0; i < 6; ++i) buf[36 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 5]] + i];
     }
     for (int i = 0; i < 42; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK3_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 211 : 85); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=211
-        in[42 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK3_LANED[first / LANES];
 #else
     T buf[253][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -3316,6 +3319,7 @@ void gather_3(const T* x, int first, bool cost, V in[253]) {
 #pragma HLS LOOP_TRIPCOUNT max=253
         in[i] = load_lanes(buf[i]);
     }
+    return in + 42;
 #endif
 }
 
@@ -3325,12 +3329,12 @@ void gather_3(const T* x, int first, bool cost, V in[253]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_3(const T* x, int first, bool noise_mode, T* noise) {
     V in[253];
-    gather_3(x, first, false, in);
+    const V* dat = gather_3(x, first, false, in);
     // rows [J | r] padded to 32 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][672];
     static T ab[LANES][672];  // the whitened rows, every entry written
-    jacobian_3(in, raw);
+    jacobian_3(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 7) continue;
@@ -3370,9 +3374,9 @@ bool linearize_3(const T* x, int first, bool noise_mode, T* noise) {
 // block 3, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_3(const T* x, int first, T* total) {
     V in[253];
-    gather_3(x, first, true, in);
+    const V* dat = gather_3(x, first, true, in);
     T half[LANES][2];
-    cost_3(in, half);
+    cost_3(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 7) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK3_INSTANCES[first + l]];
@@ -3385,25 +3389,28 @@ void cost_of_3(const T* x, int first, T* total) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK4_LANED[1][4][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK4_LANED[1][4];
 
 void lane_data_4() {
     for (int first = 0; first < 8; first += LANES) {
-        T (*laned)[LANES] = BLOCK4_LANED[first / LANES];
+        T laned[4][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK4_INSTANCES[first + l < 8 ? first + l : 7];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 3; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 1; ++i) laned[3 + i][l] = line[3 + i];
         }
+        for (int i = 0; i < 4; ++i) BLOCK4_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK4_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_4(const T* x, int first, bool cost, V in[16]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_4(const T* x, int first, bool cost, V in[16]) {
 #ifndef __SYNTHESIS__
     T buf[12][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -3412,11 +3419,8 @@ void gather_4(const T* x, int first, bool cost, V in[16]) {
         for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     }
     for (int i = 0; i < 12; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK4_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 4 : 3); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=4
-        in[12 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK4_LANED[first / LANES];
 #else
     T buf[16][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -3432,6 +3436,7 @@ void gather_4(const T* x, int first, bool cost, V in[16]) {
 #pragma HLS LOOP_TRIPCOUNT max=16
         in[i] = load_lanes(buf[i]);
     }
+    return in + 12;
 #endif
 }
 
@@ -3441,12 +3446,12 @@ void gather_4(const T* x, int first, bool cost, V in[16]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_4(const T* x, int first, bool noise_mode, T* noise) {
     V in[16];
-    gather_4(x, first, false, in);
+    const V* dat = gather_4(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][24];
     static T ab[LANES][24];  // the whitened rows, every entry written
-    jacobian_4(in, raw);
+    jacobian_4(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 8) continue;
@@ -3475,9 +3480,9 @@ bool linearize_4(const T* x, int first, bool noise_mode, T* noise) {
 // block 4, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_4(const T* x, int first, T* total) {
     V in[16];
-    gather_4(x, first, true, in);
+    const V* dat = gather_4(x, first, true, in);
     T half[LANES][1];
-    cost_4(in, half);
+    cost_4(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 8) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK4_INSTANCES[first + l]];

@@ -286,7 +286,7 @@ inline V v_so3_log_z(const V& r00, const V& r01, const V& r02, const V& r10, con
 
 // ---- factor blocks (instance l of a call in lane l)
 // block 0: BetweenFactorPose3 (6 rows, 12 columns, 6 instances)
-void jacobian_0(const V in[36], T ab[LANES][96]) {
+void jacobian_0(const V* in, const V* dat, T ab[LANES][96]) {
 #pragma HLS PIPELINE II=1
     const V t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
     const V t1 = in[2]*in[12] + in[5]*in[15] + in[8]*in[18];
@@ -309,21 +309,21 @@ void jacobian_0(const V in[36], T ab[LANES][96]) {
     const V t18 = t0;
     const V t19 = t3;
     const V t20 = t1;
-    const V t21 = t18*in[24] + t19*in[27] + t20*in[30];
+    const V t21 = t18*dat[0] + t19*dat[3] + t20*dat[6];
     const V t22 = t6;
     const V t23 = t10;
     const V t24 = t14;
-    const V t25 = t22*in[24] + t23*in[27] + t24*in[30];
+    const V t25 = t22*dat[0] + t23*dat[3] + t24*dat[6];
     const V t26 = t4;
     const V t27 = t8;
     const V t28 = t12;
-    const V t29 = t28*in[30] + t26*in[24] + t27*in[27];
-    const V t30 = t18*in[25] + t19*in[28] + t20*in[31];
-    const V t31 = t22*in[25] + t23*in[28] + t24*in[31];
-    const V t32 = t28*in[31] + t26*in[25] + t27*in[28];
-    const V t33 = t18*in[26] + t19*in[29] + t20*in[32];
-    const V t34 = t22*in[26] + t23*in[29] + t24*in[32];
-    const V t35 = t28*in[32] + t26*in[26] + t27*in[29];
+    const V t29 = t28*dat[6] + t26*dat[0] + t27*dat[3];
+    const V t30 = t18*dat[1] + t19*dat[4] + t20*dat[7];
+    const V t31 = t22*dat[1] + t23*dat[4] + t24*dat[7];
+    const V t32 = t28*dat[7] + t26*dat[1] + t27*dat[4];
+    const V t33 = t18*dat[2] + t19*dat[5] + t20*dat[8];
+    const V t34 = t22*dat[2] + t23*dat[5] + t24*dat[8];
+    const V t35 = t28*dat[8] + t26*dat[2] + t27*dat[5];
     V tlog0[3]; v_so3_log(t21, t25, t29, t30, t31, t32, t33, t34, t35, tlog0);
     const V t36 = tlog0[2];
     const V t37 = (T(0.5))*t36;
@@ -428,13 +428,13 @@ void jacobian_0(const V in[36], T ab[LANES][96]) {
     const V t136 = -in[0]*in[9] + in[0]*in[21] - in[3]*in[10] + in[3]*in[22] - in[6]*in[11] + in[6]*in[23];
     const V t137 = -in[1]*in[9] + in[1]*in[21] - in[4]*in[10] + in[4]*in[22] - in[7]*in[11] + in[7]*in[23];
     const V t138 = -in[2]*in[9] + in[2]*in[21] - in[5]*in[10] + in[5]*in[22] - in[8]*in[11] + in[8]*in[23];
-    const V t139 = t136*in[24] + t137*in[27] + t138*in[30] - in[24]*in[33] - in[27]*in[34] - in[30]*in[35];
+    const V t139 = t136*dat[0] + t137*dat[3] + t138*dat[6] - dat[0]*dat[9] - dat[3]*dat[10] - dat[6]*dat[11];
     const V t140 = t102*t139;
     const V t141 = t115*t139;
-    const V t142 = t136*in[25] + t137*in[28] + t138*in[31] - in[25]*in[33] - in[28]*in[34] - in[31]*in[35];
+    const V t142 = t136*dat[1] + t137*dat[4] + t138*dat[7] - dat[1]*dat[9] - dat[4]*dat[10] - dat[7]*dat[11];
     const V t143 = t127*t142;
     const V t144 = t115*t142;
-    const V t145 = t136*in[26] + t137*in[29] + t138*in[32] - in[26]*in[33] - in[29]*in[34] - in[32]*in[35];
+    const V t145 = t136*dat[2] + t137*dat[5] + t138*dat[8] - dat[2]*dat[9] - dat[5]*dat[10] - dat[8]*dat[11];
     const V t146 = t134*t145;
     const V t147 = t115*t145;
     const V t148 = t2;
@@ -449,11 +449,11 @@ void jacobian_0(const V in[36], T ab[LANES][96]) {
     const V t157 = t0;
     const V t158 = t13;
     const V t159 = t14;
-    const V t160 = t152*in[27] + t156*in[30];
-    const V t161 = t148*in[24] + t157*in[30];
-    const V t162 = t149*in[24] + t153*in[27];
-    const V t163 = t158*in[30] + t150*in[24] + t154*in[27];
-    const V t164 = t159*in[30] + t151*in[24] + t155*in[27];
+    const V t160 = t152*dat[3] + t156*dat[6];
+    const V t161 = t148*dat[0] + t157*dat[6];
+    const V t162 = t149*dat[0] + t153*dat[3];
+    const V t163 = t158*dat[6] + t150*dat[0] + t154*dat[3];
+    const V t164 = t159*dat[6] + t151*dat[0] + t155*dat[3];
     const V t165 = t15;
     const V t166 = t10;
     const V t167 = t4;
@@ -466,11 +466,11 @@ void jacobian_0(const V in[36], T ab[LANES][96]) {
     const V t174 = t6;
     const V t175 = t12;
     const V t176 = t2;
-    const V t177 = t169*in[27] + t173*in[30];
-    const V t178 = t165*in[24] + t174*in[30];
-    const V t179 = t166*in[24] + t170*in[27];
-    const V t180 = t167*in[24] + t171*in[27] + t175*in[30];
-    const V t181 = t168*in[24] + t172*in[27] + t176*in[30];
+    const V t177 = t169*dat[3] + t173*dat[6];
+    const V t178 = t165*dat[0] + t174*dat[6];
+    const V t179 = t166*dat[0] + t170*dat[3];
+    const V t180 = t167*dat[0] + t171*dat[3] + t175*dat[6];
+    const V t181 = t168*dat[0] + t172*dat[3] + t176*dat[6];
     const V t182 = t13;
     const V t183 = t8;
     const V t184 = t16;
@@ -483,41 +483,41 @@ void jacobian_0(const V in[36], T ab[LANES][96]) {
     const V t191 = t4;
     const V t192 = t15;
     const V t193 = t1;
-    const V t194 = t186*in[27] + t190*in[30];
-    const V t195 = t182*in[24] + t191*in[30];
-    const V t196 = t183*in[24] + t187*in[27];
-    const V t197 = t184*in[24] + t188*in[27] + t192*in[30];
-    const V t198 = t185*in[24] + t189*in[27] + t193*in[30];
-    const V t199 = t152*in[28] + t156*in[31];
-    const V t200 = t148*in[25] + t157*in[31];
-    const V t201 = t149*in[25] + t153*in[28];
-    const V t202 = t158*in[31] + t150*in[25] + t154*in[28];
-    const V t203 = t159*in[31] + t151*in[25] + t155*in[28];
-    const V t204 = t169*in[28] + t173*in[31];
-    const V t205 = t165*in[25] + t174*in[31];
-    const V t206 = t166*in[25] + t170*in[28];
-    const V t207 = t167*in[25] + t171*in[28] + t175*in[31];
-    const V t208 = t168*in[25] + t172*in[28] + t176*in[31];
-    const V t209 = t186*in[28] + t190*in[31];
-    const V t210 = t182*in[25] + t191*in[31];
-    const V t211 = t183*in[25] + t187*in[28];
-    const V t212 = t184*in[25] + t188*in[28] + t192*in[31];
-    const V t213 = t185*in[25] + t189*in[28] + t193*in[31];
-    const V t214 = t152*in[29] + t156*in[32];
-    const V t215 = t148*in[26] + t157*in[32];
-    const V t216 = t149*in[26] + t153*in[29];
-    const V t217 = t158*in[32] + t150*in[26] + t154*in[29];
-    const V t218 = t159*in[32] + t151*in[26] + t155*in[29];
-    const V t219 = t169*in[29] + t173*in[32];
-    const V t220 = t165*in[26] + t174*in[32];
-    const V t221 = t166*in[26] + t170*in[29];
-    const V t222 = t167*in[26] + t171*in[29] + t175*in[32];
-    const V t223 = t168*in[26] + t172*in[29] + t176*in[32];
-    const V t224 = t186*in[29] + t190*in[32];
-    const V t225 = t182*in[26] + t191*in[32];
-    const V t226 = t183*in[26] + t187*in[29];
-    const V t227 = t184*in[26] + t188*in[29] + t192*in[32];
-    const V t228 = t185*in[26] + t189*in[29] + t193*in[32];
+    const V t194 = t186*dat[3] + t190*dat[6];
+    const V t195 = t182*dat[0] + t191*dat[6];
+    const V t196 = t183*dat[0] + t187*dat[3];
+    const V t197 = t184*dat[0] + t188*dat[3] + t192*dat[6];
+    const V t198 = t185*dat[0] + t189*dat[3] + t193*dat[6];
+    const V t199 = t152*dat[4] + t156*dat[7];
+    const V t200 = t148*dat[1] + t157*dat[7];
+    const V t201 = t149*dat[1] + t153*dat[4];
+    const V t202 = t158*dat[7] + t150*dat[1] + t154*dat[4];
+    const V t203 = t159*dat[7] + t151*dat[1] + t155*dat[4];
+    const V t204 = t169*dat[4] + t173*dat[7];
+    const V t205 = t165*dat[1] + t174*dat[7];
+    const V t206 = t166*dat[1] + t170*dat[4];
+    const V t207 = t167*dat[1] + t171*dat[4] + t175*dat[7];
+    const V t208 = t168*dat[1] + t172*dat[4] + t176*dat[7];
+    const V t209 = t186*dat[4] + t190*dat[7];
+    const V t210 = t182*dat[1] + t191*dat[7];
+    const V t211 = t183*dat[1] + t187*dat[4];
+    const V t212 = t184*dat[1] + t188*dat[4] + t192*dat[7];
+    const V t213 = t185*dat[1] + t189*dat[4] + t193*dat[7];
+    const V t214 = t152*dat[5] + t156*dat[8];
+    const V t215 = t148*dat[2] + t157*dat[8];
+    const V t216 = t149*dat[2] + t153*dat[5];
+    const V t217 = t158*dat[8] + t150*dat[2] + t154*dat[5];
+    const V t218 = t159*dat[8] + t151*dat[2] + t155*dat[5];
+    const V t219 = t169*dat[5] + t173*dat[8];
+    const V t220 = t165*dat[2] + t174*dat[8];
+    const V t221 = t166*dat[2] + t170*dat[5];
+    const V t222 = t167*dat[2] + t171*dat[5] + t175*dat[8];
+    const V t223 = t168*dat[2] + t172*dat[5] + t176*dat[8];
+    const V t224 = t186*dat[5] + t190*dat[8];
+    const V t225 = t182*dat[2] + t191*dat[8];
+    const V t226 = t183*dat[2] + t187*dat[5];
+    const V t227 = t184*dat[2] + t188*dat[5] + t192*dat[8];
+    const V t228 = t185*dat[2] + t189*dat[5] + t193*dat[8];
     const V t229 = t52*t160 + t55*t177 + t58*t194 + t59*t199 + t60*t204 + t61*t209 + t62*t214 + t63*t219 + t64*t224;
     const V t230 = t52*t161 + t55*t178 + t58*t195 + t59*t200 + t60*t205 + t61*t210 + t62*t215 + t63*t220 + t64*t225;
     const V t231 = t52*t162 + t55*t179 + t58*t196 + t59*t201 + t60*t206 + t61*t211 + t62*t216 + t63*t221 + t64*t226;
@@ -590,15 +590,15 @@ void jacobian_0(const V in[36], T ab[LANES][96]) {
     const V t298 = t1;
     const V t299 = t14;
     const V t300 = t12;
-    const V t301 = t285*in[27] + t293*in[30];
-    const V t302 = t277*in[24] + t294*in[30];
-    const V t303 = t278*in[24] + t286*in[27];
-    const V t304 = t279*in[24] + t287*in[27] + t295*in[30];
-    const V t305 = t280*in[24] + t288*in[27] + t296*in[30];
-    const V t306 = t281*in[24] + t289*in[27] + t297*in[30];
-    const V t307 = t282*in[24] + t290*in[27] + t298*in[30];
-    const V t308 = t283*in[24] + t291*in[27] + t299*in[30];
-    const V t309 = t284*in[24] + t292*in[27] + t300*in[30];
+    const V t301 = t285*dat[3] + t293*dat[6];
+    const V t302 = t277*dat[0] + t294*dat[6];
+    const V t303 = t278*dat[0] + t286*dat[3];
+    const V t304 = t279*dat[0] + t287*dat[3] + t295*dat[6];
+    const V t305 = t280*dat[0] + t288*dat[3] + t296*dat[6];
+    const V t306 = t281*dat[0] + t289*dat[3] + t297*dat[6];
+    const V t307 = t282*dat[0] + t290*dat[3] + t298*dat[6];
+    const V t308 = t283*dat[0] + t291*dat[3] + t299*dat[6];
+    const V t309 = t284*dat[0] + t292*dat[3] + t300*dat[6];
     const V t310 = (T(0.5))*t241;
     const V t311 = (T(0.5))*t242;
     const V t312 = (T(0.5))*t243;
@@ -617,15 +617,15 @@ void jacobian_0(const V in[36], T ab[LANES][96]) {
     const V t325 = t40*t319 + t120*t238;
     const V t326 = t40*t320 + t120*t239;
     const V t327 = t40*t321 + t120*t240;
-    const V t328 = t285*in[28] + t293*in[31];
-    const V t329 = t277*in[25] + t294*in[31];
-    const V t330 = t278*in[25] + t286*in[28];
-    const V t331 = t279*in[25] + t287*in[28] + t295*in[31];
-    const V t332 = t280*in[25] + t288*in[28] + t296*in[31];
-    const V t333 = t281*in[25] + t289*in[28] + t297*in[31];
-    const V t334 = t282*in[25] + t290*in[28] + t298*in[31];
-    const V t335 = t283*in[25] + t291*in[28] + t299*in[31];
-    const V t336 = t284*in[25] + t292*in[28] + t300*in[31];
+    const V t328 = t285*dat[4] + t293*dat[7];
+    const V t329 = t277*dat[1] + t294*dat[7];
+    const V t330 = t278*dat[1] + t286*dat[4];
+    const V t331 = t279*dat[1] + t287*dat[4] + t295*dat[7];
+    const V t332 = t280*dat[1] + t288*dat[4] + t296*dat[7];
+    const V t333 = t281*dat[1] + t289*dat[4] + t297*dat[7];
+    const V t334 = t282*dat[1] + t290*dat[4] + t298*dat[7];
+    const V t335 = t283*dat[1] + t291*dat[4] + t299*dat[7];
+    const V t336 = t284*dat[1] + t292*dat[4] + t300*dat[7];
     const V t337 = (T(0.5))*t235;
     const V t338 = (T(0.5))*t236;
     const V t339 = (T(0.5))*t237;
@@ -638,15 +638,15 @@ void jacobian_0(const V in[36], T ab[LANES][96]) {
     const V t346 = t36*t319 + t120*t244;
     const V t347 = t36*t320 + t120*t245;
     const V t348 = t36*t321 + t120*t246;
-    const V t349 = t285*in[29] + t293*in[32];
-    const V t350 = t277*in[26] + t294*in[32];
-    const V t351 = t278*in[26] + t286*in[29];
-    const V t352 = t279*in[26] + t287*in[29] + t295*in[32];
-    const V t353 = t280*in[26] + t288*in[29] + t296*in[32];
-    const V t354 = t281*in[26] + t289*in[29] + t297*in[32];
-    const V t355 = t282*in[26] + t290*in[29] + t298*in[32];
-    const V t356 = t283*in[26] + t291*in[29] + t299*in[32];
-    const V t357 = t284*in[26] + t292*in[29] + t300*in[32];
+    const V t349 = t285*dat[5] + t293*dat[8];
+    const V t350 = t277*dat[2] + t294*dat[8];
+    const V t351 = t278*dat[2] + t286*dat[5];
+    const V t352 = t279*dat[2] + t287*dat[5] + t295*dat[8];
+    const V t353 = t280*dat[2] + t288*dat[5] + t296*dat[8];
+    const V t354 = t281*dat[2] + t289*dat[5] + t297*dat[8];
+    const V t355 = t282*dat[2] + t290*dat[5] + t298*dat[8];
+    const V t356 = t283*dat[2] + t291*dat[5] + t299*dat[8];
+    const V t357 = t284*dat[2] + t292*dat[5] + t300*dat[8];
     const V t358 = (T(0.5))*t229;
     const V t359 = (T(0.5))*t230;
     const V t360 = (T(0.5))*t231;
@@ -784,7 +784,7 @@ void jacobian_0(const V in[36], T ab[LANES][96]) {
     }
 }
 
-void cost_0(const V in[57], T half[LANES][1]) {
+void cost_0(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
     const V t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
     const V t1 = t0;
@@ -792,27 +792,27 @@ void cost_0(const V in[57], T half[LANES][1]) {
     const V t3 = t2;
     const V t4 = in[2]*in[12] + in[5]*in[15] + in[8]*in[18];
     const V t5 = t4;
-    const V t6 = t1*in[24] + t3*in[27] + t5*in[30];
+    const V t6 = t1*dat[0] + t3*dat[3] + t5*dat[6];
     const V t7 = in[0]*in[13] + in[3]*in[16] + in[6]*in[19];
     const V t8 = t7;
     const V t9 = in[1]*in[13] + in[4]*in[16] + in[7]*in[19];
     const V t10 = t9;
     const V t11 = in[2]*in[13] + in[5]*in[16] + in[8]*in[19];
     const V t12 = t11;
-    const V t13 = t8*in[24] + t10*in[27] + t12*in[30];
+    const V t13 = t8*dat[0] + t10*dat[3] + t12*dat[6];
     const V t14 = in[0]*in[14] + in[3]*in[17] + in[6]*in[20];
     const V t15 = t14;
     const V t16 = in[1]*in[14] + in[4]*in[17] + in[7]*in[20];
     const V t17 = t16;
     const V t18 = in[2]*in[14] + in[5]*in[17] + in[8]*in[20];
     const V t19 = t18;
-    const V t20 = t19*in[30] + t15*in[24] + t17*in[27];
-    const V t21 = t1*in[25] + t3*in[28] + t5*in[31];
-    const V t22 = t8*in[25] + t10*in[28] + t12*in[31];
-    const V t23 = t19*in[31] + t15*in[25] + t17*in[28];
-    const V t24 = t1*in[26] + t3*in[29] + t5*in[32];
-    const V t25 = t8*in[26] + t10*in[29] + t12*in[32];
-    const V t26 = t19*in[32] + t15*in[26] + t17*in[29];
+    const V t20 = t19*dat[6] + t15*dat[0] + t17*dat[3];
+    const V t21 = t1*dat[1] + t3*dat[4] + t5*dat[7];
+    const V t22 = t8*dat[1] + t10*dat[4] + t12*dat[7];
+    const V t23 = t19*dat[7] + t15*dat[1] + t17*dat[4];
+    const V t24 = t1*dat[2] + t3*dat[5] + t5*dat[8];
+    const V t25 = t8*dat[2] + t10*dat[5] + t12*dat[8];
+    const V t26 = t19*dat[8] + t15*dat[2] + t17*dat[5];
     V tlog0[3]; v_so3_log(t6, t13, t20, t21, t22, t23, t24, t25, t26, tlog0);
     const V t27 = tlog0[1];
     const V t28 = (t27*t27);
@@ -839,9 +839,9 @@ void cost_0(const V in[57], T half[LANES][1]) {
     const V t49 = -in[0]*in[9] + in[0]*in[21] - in[3]*in[10] + in[3]*in[22] - in[6]*in[11] + in[6]*in[23];
     const V t50 = -in[1]*in[9] + in[1]*in[21] - in[4]*in[10] + in[4]*in[22] - in[7]*in[11] + in[7]*in[23];
     const V t51 = -in[2]*in[9] + in[2]*in[21] - in[5]*in[10] + in[5]*in[22] - in[8]*in[11] + in[8]*in[23];
-    const V t52 = t49*in[24] + t50*in[27] + t51*in[30] - in[24]*in[33] - in[27]*in[34] - in[30]*in[35];
-    const V t53 = t49*in[25] + t50*in[28] + t51*in[31] - in[25]*in[33] - in[28]*in[34] - in[31]*in[35];
-    const V t54 = t49*in[26] + t50*in[29] + t51*in[32] - in[26]*in[33] - in[29]*in[34] - in[32]*in[35];
+    const V t52 = t49*dat[0] + t50*dat[3] + t51*dat[6] - dat[0]*dat[9] - dat[3]*dat[10] - dat[6]*dat[11];
+    const V t53 = t49*dat[1] + t50*dat[4] + t51*dat[7] - dat[1]*dat[9] - dat[4]*dat[10] - dat[7]*dat[11];
+    const V t54 = t49*dat[2] + t50*dat[5] + t51*dat[8] - dat[2]*dat[9] - dat[5]*dat[10] - dat[8]*dat[11];
     const V t55 = t39*t52 + t44*t53 + t48*t54;
     const V t56 = -t41 + t43;
     const V t57 = -t32 - t36;
@@ -857,7 +857,7 @@ void cost_0(const V in[57], T half[LANES][1]) {
     const V t67 = -t29 - t36;
     const V t68 = t67*t38 + T(1);
     const V t69 = t66*t53 + t68*t54 + t65*t52;
-    const V t70 = (T(0.5))*(t69*t69)*(in[56]*in[56]) + (T(0.5))*((t64*in[54] + t69*in[55])*(t64*in[54] + t69*in[55])) + (T(0.5))*((t55*in[51] + t64*in[52] + t69*in[53])*(t55*in[51] + t64*in[52] + t69*in[53])) + (T(0.5))*((t55*in[48] + t64*in[49] + t69*in[50] + t30*in[47])*(t55*in[48] + t64*in[49] + t69*in[50] + t30*in[47])) + (T(0.5))*((t55*in[44] + t64*in[45] + t69*in[46] + t27*in[42] + t30*in[43])*(t55*in[44] + t64*in[45] + t69*in[46] + t27*in[42] + t30*in[43])) + (T(0.5))*((t55*in[39] + t64*in[40] + t69*in[41] + t34*in[36] + t27*in[37] + t30*in[38])*(t55*in[39] + t64*in[40] + t69*in[41] + t34*in[36] + t27*in[37] + t30*in[38]));
+    const V t70 = (T(0.5))*(t69*t69)*(dat[32]*dat[32]) + (T(0.5))*((t64*dat[30] + t69*dat[31])*(t64*dat[30] + t69*dat[31])) + (T(0.5))*((t55*dat[27] + t64*dat[28] + t69*dat[29])*(t55*dat[27] + t64*dat[28] + t69*dat[29])) + (T(0.5))*((t55*dat[24] + t64*dat[25] + t69*dat[26] + t30*dat[23])*(t55*dat[24] + t64*dat[25] + t69*dat[26] + t30*dat[23])) + (T(0.5))*((t55*dat[20] + t64*dat[21] + t69*dat[22] + t27*dat[18] + t30*dat[19])*(t55*dat[20] + t64*dat[21] + t69*dat[22] + t27*dat[18] + t30*dat[19])) + (T(0.5))*((t55*dat[15] + t64*dat[16] + t69*dat[17] + t34*dat[12] + t27*dat[13] + t30*dat[14])*(t55*dat[15] + t64*dat[16] + t69*dat[17] + t34*dat[12] + t27*dat[13] + t30*dat[14]));
     const V o0 = t70;
     for (int l = 0; l < LANES; ++l) {
         half[l][0] = lane(o0, l);
@@ -865,17 +865,17 @@ void cost_0(const V in[57], T half[LANES][1]) {
 }
 
 // block 1: PriorFactorPose3 (6 rows, 6 columns, 1 instances)
-void jacobian_1(const V in[24], T ab[LANES][48]) {
+void jacobian_1(const V* in, const V* dat, T ab[LANES][48]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = in[12]*in[0] + in[15]*in[3] + in[18]*in[6];
-    const V t1 = in[12]*in[2] + in[15]*in[5] + in[18]*in[8];
-    const V t2 = in[12]*in[1] + in[15]*in[4] + in[18]*in[7];
-    const V t3 = in[13]*in[0] + in[16]*in[3] + in[19]*in[6];
-    const V t4 = in[13]*in[2] + in[16]*in[5] + in[19]*in[8];
-    const V t5 = in[13]*in[1] + in[16]*in[4] + in[19]*in[7];
-    const V t6 = in[14]*in[0] + in[17]*in[3] + in[20]*in[6];
-    const V t7 = in[14]*in[2] + in[17]*in[5] + in[20]*in[8];
-    const V t8 = in[14]*in[1] + in[17]*in[4] + in[20]*in[7];
+    const V t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
+    const V t1 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
+    const V t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
+    const V t3 = dat[1]*in[0] + dat[4]*in[3] + dat[7]*in[6];
+    const V t4 = dat[1]*in[2] + dat[4]*in[5] + dat[7]*in[8];
+    const V t5 = dat[1]*in[1] + dat[4]*in[4] + dat[7]*in[7];
+    const V t6 = dat[2]*in[0] + dat[5]*in[3] + dat[8]*in[6];
+    const V t7 = dat[2]*in[2] + dat[5]*in[5] + dat[8]*in[8];
+    const V t8 = dat[2]*in[1] + dat[5]*in[4] + dat[8]*in[7];
     const V t9 = t0;
     const V t10 = t2;
     const V t11 = t1;
@@ -970,13 +970,13 @@ void jacobian_1(const V in[24], T ab[LANES][48]) {
     const V t99 = -t95 + t96;
     const V t100 = -t75 - t78;
     const V t101 = t100*t81 + T(1);
-    const V t102 = -in[12]*in[21] + in[12]*in[9] - in[15]*in[22] + in[15]*in[10] - in[18]*in[23] + in[18]*in[11];
+    const V t102 = -dat[0]*dat[9] + dat[0]*in[9] - dat[3]*dat[10] + dat[3]*in[10] - dat[6]*dat[11] + dat[6]*in[11];
     const V t103 = t77*t102;
     const V t104 = t81*t102;
-    const V t105 = -in[13]*in[21] + in[13]*in[9] - in[16]*in[22] + in[16]*in[10] - in[19]*in[23] + in[19]*in[11];
+    const V t105 = -dat[1]*dat[9] + dat[1]*in[9] - dat[4]*dat[10] + dat[4]*in[10] - dat[7]*dat[11] + dat[7]*in[11];
     const V t106 = t93*t105;
     const V t107 = t81*t105;
-    const V t108 = -in[14]*in[21] + in[14]*in[9] - in[17]*in[22] + in[17]*in[10] - in[20]*in[23] + in[20]*in[11];
+    const V t108 = -dat[2]*dat[9] + dat[2]*in[9] - dat[5]*dat[10] + dat[5]*in[10] - dat[8]*dat[11] + dat[8]*in[11];
     const V t109 = t100*t108;
     const V t110 = t81*t108;
     const V t111 = -t1;
@@ -1122,25 +1122,25 @@ void jacobian_1(const V in[24], T ab[LANES][48]) {
     }
 }
 
-void cost_1(const V in[25], T half[LANES][1]) {
+void cost_1(const V* in, const V* dat, T half[LANES][1]) {
 #pragma HLS PIPELINE II=1
-    const V t0 = in[12]*in[0] + in[15]*in[3] + in[18]*in[6];
+    const V t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const V t1 = t0;
-    const V t2 = in[12]*in[1] + in[15]*in[4] + in[18]*in[7];
+    const V t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
     const V t3 = t2;
-    const V t4 = in[12]*in[2] + in[15]*in[5] + in[18]*in[8];
+    const V t4 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
     const V t5 = t4;
-    const V t6 = in[13]*in[0] + in[16]*in[3] + in[19]*in[6];
+    const V t6 = dat[1]*in[0] + dat[4]*in[3] + dat[7]*in[6];
     const V t7 = t6;
-    const V t8 = in[13]*in[1] + in[16]*in[4] + in[19]*in[7];
+    const V t8 = dat[1]*in[1] + dat[4]*in[4] + dat[7]*in[7];
     const V t9 = t8;
-    const V t10 = in[13]*in[2] + in[16]*in[5] + in[19]*in[8];
+    const V t10 = dat[1]*in[2] + dat[4]*in[5] + dat[7]*in[8];
     const V t11 = t10;
-    const V t12 = in[14]*in[0] + in[17]*in[3] + in[20]*in[6];
+    const V t12 = dat[2]*in[0] + dat[5]*in[3] + dat[8]*in[6];
     const V t13 = t12;
-    const V t14 = in[14]*in[1] + in[17]*in[4] + in[20]*in[7];
+    const V t14 = dat[2]*in[1] + dat[5]*in[4] + dat[8]*in[7];
     const V t15 = t14;
-    const V t16 = in[14]*in[2] + in[17]*in[5] + in[20]*in[8];
+    const V t16 = dat[2]*in[2] + dat[5]*in[5] + dat[8]*in[8];
     const V t17 = t16;
     V tlog0[3]; v_so3_log(t1, t3, t5, t7, t9, t11, t13, t15, t17, tlog0);
     const V t18 = tlog0[0];
@@ -1168,9 +1168,9 @@ void cost_1(const V in[25], T half[LANES][1]) {
     const V t40 = t39;
     const V t41 = t22*t36;
     const V t42 = -t40 + t41;
-    const V t43 = -in[12]*in[21] + in[12]*in[9] - in[15]*in[22] + in[15]*in[10] - in[18]*in[23] + in[18]*in[11];
-    const V t44 = -in[13]*in[21] + in[13]*in[9] - in[16]*in[22] + in[16]*in[10] - in[19]*in[23] + in[19]*in[11];
-    const V t45 = -in[14]*in[21] + in[14]*in[9] - in[17]*in[22] + in[17]*in[10] - in[20]*in[23] + in[20]*in[11];
+    const V t43 = -dat[0]*dat[9] + dat[0]*in[9] - dat[3]*dat[10] + dat[3]*in[10] - dat[6]*dat[11] + dat[6]*in[11];
+    const V t44 = -dat[1]*dat[9] + dat[1]*in[9] - dat[4]*dat[10] + dat[4]*in[10] - dat[7]*dat[11] + dat[7]*in[11];
+    const V t45 = -dat[2]*dat[9] + dat[2]*in[9] - dat[5]*dat[10] + dat[5]*in[10] - dat[8]*dat[11] + dat[8]*in[11];
     const V t46 = t33*t43 + t38*t44 + t42*t45;
     const V t47 = -t35 + t37;
     const V t48 = -t27 - t30;
@@ -1186,7 +1186,7 @@ void cost_1(const V in[25], T half[LANES][1]) {
     const V t58 = -t25 - t30;
     const V t59 = t58*t32 + T(1);
     const V t60 = t56*t43 + t57*t44 + t59*t45;
-    const V t61 = (T(0.5))*(in[24]*in[24]);
+    const V t61 = (T(0.5))*(dat[12]*dat[12]);
     const V t62 = t19*t61 + t21*t61 + t23*t61 + (t46*t46)*t61 + (t55*t55)*t61 + (t60*t60)*t61;
     const V o0 = t62;
     for (int l = 0; l < LANES; ++l) {
@@ -1296,25 +1296,28 @@ T robust_loss(T half, T code, T k) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK0_LANED[1][33][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK0_LANED[1][33];
 
 void lane_data_0() {
     for (int first = 0; first < 6; first += LANES) {
-        T (*laned)[LANES] = BLOCK0_LANED[first / LANES];
+        T laned[33][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK0_INSTANCES[first + l < 6 ? first + l : 5];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 12; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 21; ++i) laned[12 + i][l] = line[12 + i];
         }
+        for (int i = 0; i < 33; ++i) BLOCK0_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK0_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_0(const T* x, int first, bool cost, V in[57]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_0(const T* x, int first, bool cost, V in[57]) {
 #ifndef __SYNTHESIS__
     T buf[24][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -1324,11 +1327,8 @@ void gather_0(const T* x, int first, bool cost, V in[57]) {
         for (int i = 0; i < 12; ++i) buf[12 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 1]] + i];
     }
     for (int i = 0; i < 24; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK0_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 33 : 12); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=33
-        in[24 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK0_LANED[first / LANES];
 #else
     T buf[57][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -1345,6 +1345,7 @@ void gather_0(const T* x, int first, bool cost, V in[57]) {
 #pragma HLS LOOP_TRIPCOUNT max=57
         in[i] = load_lanes(buf[i]);
     }
+    return in + 24;
 #endif
 }
 
@@ -1354,12 +1355,12 @@ void gather_0(const T* x, int first, bool cost, V in[57]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
     V in[57];
-    gather_0(x, first, false, in);
+    const V* dat = gather_0(x, first, false, in);
     // rows [J | r] padded to 16 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][96];
     static T ab[LANES][96];  // the whitened rows, every entry written
-    jacobian_0(in, raw);
+    jacobian_0(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 6) continue;
@@ -1390,9 +1391,9 @@ bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
 // block 0, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_0(const T* x, int first, T* total) {
     V in[57];
-    gather_0(x, first, true, in);
+    const V* dat = gather_0(x, first, true, in);
     T half[LANES][1];
-    cost_0(in, half);
+    cost_0(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 6) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK0_INSTANCES[first + l]];
@@ -1404,25 +1405,28 @@ void cost_of_0(const T* x, int first, T* total) {
 
 #ifndef __SYNTHESIS__
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
-// call by lane_data(): they are the same in every iteration, so a gather only lanes x.
-T BLOCK1_LANED[1][13][LANES];
+// call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
+// kernels read the data in place.
+V BLOCK1_LANED[1][13];
 
 void lane_data_1() {
     for (int first = 0; first < 1; first += LANES) {
-        T (*laned)[LANES] = BLOCK1_LANED[first / LANES];
+        T laned[13][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK1_INSTANCES[first + l < 1 ? first + l : 0];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 12; ++i) laned[0 + i][l] = line[0 + i];
             for (int i = 0; i < 1; ++i) laned[12 + i][l] = line[12 + i];
         }
+        for (int i = 0; i < 13; ++i) BLOCK1_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
 
 // The inputs of instances BLOCK1_INSTANCES[first ...] into the lanes (lanes past the last
-// instance repeat it; their results are not used).
-void gather_1(const T* x, int first, bool cost, V in[25]) {
+// instance repeat it; their results are not used): x's storage into `in`; returns where the data
+// inputs are (on the host the laned data, in hardware the rest of `in`).
+const V* gather_1(const T* x, int first, bool cost, V in[25]) {
 #ifndef __SYNTHESIS__
     T buf[12][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -1431,11 +1435,8 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
         for (int i = 0; i < 12; ++i) buf[0 + i][l] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     }
     for (int i = 0; i < 12; ++i) in[i] = load_lanes(buf[i]);
-    const T (*laned)[LANES] = BLOCK1_LANED[first / LANES];
-    for (int i = 0; i < (cost ? 13 : 12); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=13
-        in[12 + i] = load_lanes(laned[i]);
-    }
+    (void)cost;
+    return BLOCK1_LANED[first / LANES];
 #else
     T buf[25][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -1451,6 +1452,7 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
 #pragma HLS LOOP_TRIPCOUNT max=25
         in[i] = load_lanes(buf[i]);
     }
+    return in + 12;
 #endif
 }
 
@@ -1460,12 +1462,12 @@ void gather_1(const T* x, int first, bool cost, V in[25]) {
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
     V in[25];
-    gather_1(x, first, false, in);
+    const V* dat = gather_1(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
     static T raw[LANES][48];
     static T ab[LANES][48];  // the whitened rows, every entry written
-    jacobian_1(in, raw);
+    jacobian_1(in, dat, raw);
     bool finite = true;
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
@@ -1494,9 +1496,9 @@ bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
 // block 1, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_1(const T* x, int first, T* total) {
     V in[25];
-    gather_1(x, first, true, in);
+    const V* dat = gather_1(x, first, true, in);
     T half[LANES][1];
-    cost_1(in, half);
+    cost_1(in, dat, half);
     for (int l = 0; l < LANES; ++l) {
         if (first + l >= 1) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK1_INSTANCES[first + l]];
