@@ -24,6 +24,7 @@ import fgc
 from fgc import noise
 from fgc.compile import compile_graph
 from fgc.datafile import problem_data
+from fgc.errors import DataError
 from fgc.factors import BetweenFactor, PriorFactor
 from fgc.geometry import Pose3
 from fgc.program import SolverConfig
@@ -138,6 +139,22 @@ def test_native_run_api_builds_once_and_agrees():
     assert native.load(program) is native.load(program)  # cached per content hash
     reference = sim.run(program, data, precision="float64")
     assert relative_worst(first.values, reference.storage) <= F64_TOL
+    # solve() on flat arrays: the results are new arrays each call (the library writes into
+    # the solver's own buffers), and arrays the kernel would misread are refused
+    solver = native.load(program)
+    x, d = solver.flatten(data)
+    out1, errors1, info1 = solver.solve(x, d)
+    out2, _, _ = solver.solve(x + 0.0, d)
+    assert out1 is not out2 and not np.shares_memory(out1, out2)
+    np.testing.assert_array_equal(out1, out2)
+    np.testing.assert_array_equal(out1, np.concatenate([first.values[k.key] for k in
+                                                        program.variables]))
+    assert errors1[1] == first.final_error and info1[0] == first.iterations
+    for bad, what in [(x[:-1], "x"), (x.astype(np.float32), "x"), (d[::2], "factor data"),
+                      (list(d), "factor data")]:
+        args = (bad, d) if what == "x" else (x, bad)
+        with pytest.raises(DataError, match=f"{what} must be a C-contiguous float64 array"):
+            solver.solve(*args)
 
 
 def robust_chain(n: int = 14) -> fgc.Graph:

@@ -1,6 +1,7 @@
 // generated from template native.cpp.jinja by fgc 0.1.0 — do not edit
 // C entry points of the native build (libpose_graph.so), called through ctypes by
-// fgc_backends.hls.native. Allocation-free: the scalar-type copies are static buffers.
+// fgc_backends.hls.native. Allocation-free: a scalar type other than double gets its copies of
+// the arrays in static buffers.
 #include "pose_graph.h"
 
 namespace {
