@@ -9,6 +9,7 @@ Everything here is offsets and sizes; C++ syntax comes from the printer.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import sympy as sp
@@ -52,6 +53,13 @@ class MemberSlot:
     noise_data: int
     noise_in: int
     robust_data: int
+    dense: int = 0  # full noise: leading rows whitened as whole rows (the rest: ``tail``)
+    tail: tuple[tuple[int, int, int, tuple[tuple[int, int], ...]], ...] = ()
+
+    @property
+    def constant_rows(self) -> int:
+        """Rows after ``dense``: only 0 / ±1 left of the right-hand side."""
+        return self.rows - self.dense
 
 
 @dataclass(frozen=True)
@@ -117,6 +125,7 @@ def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, .
         noise_in += m.noise_params
     where = f"block type {b} ({comment(block.name)})"
     pattern = block_pattern(block, tuple(m.kind for m in members), where)
+    members = [_with_tail(slot, *pattern.constant_tail(k)) for k, slot in enumerate(members)]
     kernel = block.kernel.kernel()
     jacobian = print_kernel(kernel, _input_names(len(kernel.inputs), pos), where,
                             vector=True)
@@ -124,6 +133,18 @@ def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, .
     return BlockContext(b, comment(block.name), block.residual_dim, col, n_in, noise_in,
                         tuple(variables), tuple(members), instances, jacobian, targets,
                         _cost(block, where, pos), pattern, pattern.tiles())
+
+
+def _with_tail(slot: MemberSlot, dense: int, entries) -> MemberSlot:
+    """``slot`` with its whitening split at ``dense``: ``tail`` lists, for each whitened row i
+    and constant row j ≥ max(i, dense) in row order, (i, j, R_ij's parameter index, j's
+    constant entries), the order the whole-row loop would add them in."""
+    n, tail = slot.rows, []
+    for i in range(n if entries else 0):
+        base = i * n - (i * (i - 1)) // 2 - i  # R row-major upper triangle: R_ij at base + j
+        for j in range(max(i, dense), n):
+            tail.append((i, j, base + j, entries[j - dense]))
+    return dataclasses.replace(slot, dense=dense, tail=tuple(tail))
 
 
 def _targets(pattern: BlockPattern, variables: list[VarSlot], outputs: tuple[str, ...]):

@@ -194,6 +194,10 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "tables": [t for t in tables.arrays if t.name not in HEADER_TABLES]
         + [IntTable("STEP_PATTERN", step_pattern)] * bool(patterns),
         "blocks": blocks, "patterns": patterns, "retracts": retract_kinds(program), "tile": TILE,
+        # a generic step whose shape a pattern has is factored by that pattern's fixed routine
+        # (the same operations in the same order, no new unit): the chain ends' steps
+        "fixed_shapes": sorted({(p.w, p.f) for p in patterns
+                                if p.ld == padded(tables.constant("MAX_W") + 1)}),
         "lanes": lanes(config),
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,

@@ -59,6 +59,23 @@ class BlockPattern:
         """Columns (right-hand side included) where whitened ``row`` can be non-zero."""
         return tuple(c for c in range(self.stride) if self.whitened[row][c])
 
+    def constant_tail(self, member: int) -> tuple[int, tuple[tuple[tuple[int, int], ...], ...]]:
+        """For a full-noise member (kind 2): how many of its leading rows the whitening sums as
+        whole rows, and, for each row after them, its constant entries (column, ±1). The rows
+        after are the longest run at the member's end whose Jacobian entries are all 0 or ±1 (a
+        bias random walk's −I, I): R_ij times such a row adds ±R_ij at a few fixed columns, so it
+        needs no row of products. Other kinds, or no such rows: (rows, ())."""
+        first, n, kind = self.members[member]
+        dense = n
+        if kind == 2:
+            while dense > 0 and all(code in (ZERO, ONE, MINUS_ONE)
+                                    for code in self.raw[first + dense - 1][:self.d]):
+                dense -= 1
+        rows = (self.raw[first + j][:self.d] for j in range(dense, n))
+        entries = tuple(tuple((c, 1 if code == ONE else -1) for c, code in enumerate(row)
+                              if code != ZERO) for row in rows)
+        return dense, entries
+
     def gram_rows(self, p: int, q: int) -> tuple[int, ...]:
         """Rows contributing to entry (p, q) of [A | b]ᵀ[A | b]."""
         return tuple(r for r in range(self.m) if self.whitened[r][p] and self.whitened[r][q])

@@ -235,7 +235,11 @@ const int KIND2_VARIABLES[8] = {
 // ---- the accelerator's memories: static, sized at compile time; nothing is allocated
 T X[N_X];          // current estimate (storage)
 T X_TRIAL[N_X];    // x (+) delta
+#ifdef __SYNTHESIS__
 T DATA_BUF[N_DATA];
+#else
+const T* DATA_BUF = nullptr;  // on the host: the caller's data, read in place (never written)
+#endif
 T G[N_TANGENT];    // gradient A^T b
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
@@ -2213,13 +2217,15 @@ void cost_3(const V* in, const V* dat, T half[LANES][1]) {
 }
 
 // Rows [J | r] of one member (row stride STRIDE, right-hand side in column COLS - 1) ->
-// sqrt(w) * W * [J | -r] in `ab`: W is 1/sigma (KIND 0), 1/sigma_i (1) or the upper-triangular
-// square-root information R (2, parameters row-major); w reweights a robust loss (CODE 1 Huber,
-// 2 Cauchy) at the whitened residual norm, as GTSAM does. Every entry of `ab` is written (so it
+// W * [J | -r] in `ab`: W is 1/sigma (KIND 0), 1/sigma_i (1) or the upper-triangular
+// square-root information R (2, parameters row-major). Every entry of `ab` is written (so it
 // needs no zeroing) and `raw` keeps its structural zeros; rows are whitened whole: a short
-// fixed-length vector loop per row.
-template <int STRIDE, int COLS, int ROWS, int KIND>
-void whiten(T* raw, T* ab, const T* p, T code, T k) {
+// fixed-length vector loop per row. KIND 2 sums only rows j < DENSE so: the rows after hold
+// just 0 and ±1 left of the right-hand side, and the member's whiten_tail adds their share
+// (R_ij itself at their constant entries, then R_ij b_j), after this and in the same row order,
+// so every entry is the same sum as over whole rows.
+template <int STRIDE, int COLS, int ROWS, int KIND, int DENSE>
+void whiten(T* raw, T* ab, const T* p) {
     for (int i = 0; i < ROWS; ++i) raw[i * STRIDE + COLS - 1] = -raw[i * STRIDE + COLS - 1];
     for (int i = 0; i < ROWS; ++i) {
         const T* row = raw + i * STRIDE;
@@ -2227,8 +2233,12 @@ void whiten(T* raw, T* ab, const T* p, T code, T k) {
         if (KIND == 2) {  // row i = sum over j >= i of R_ij row j
             const int base = i * ROWS - (i * (i - 1)) / 2 - i;
             T acc[STRIDE];
-            for (int c = 0; c < STRIDE; ++c) acc[c] = row[c] * p[base + i];
-            for (int j = i + 1; j < ROWS; ++j) {
+            if (i < DENSE) {
+                for (int c = 0; c < STRIDE; ++c) acc[c] = row[c] * p[base + i];
+            } else {
+                for (int c = 0; c < STRIDE; ++c) acc[c] = T(0);
+            }
+            for (int j = i + 1; j < DENSE; ++j) {
                 const T rij = p[base + j];
                 const T* other = raw + j * STRIDE;
                 for (int c = 0; c < STRIDE; ++c) acc[c] += rij * other[c];
@@ -2239,6 +2249,12 @@ void whiten(T* raw, T* ab, const T* p, T code, T k) {
             for (int c = 0; c < STRIDE; ++c) out[c] = row[c] * s;
         }
     }
+}
+
+// sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
+// at the whitened residual norm, as GTSAM does.
+template <int STRIDE, int COLS, int ROWS>
+void reweight(T* ab, T code, T k) {
     if (code == T(0)) return;
     T e2 = T(0);
     for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
@@ -2425,6 +2441,236 @@ const V* gather_0(const T* x, int first, bool cost, V in[235]) {
 #endif
 }
 
+// block 0, member 0: its rows 9 ... 14 of 15 hold only 0 and +-1 left of the right-hand side;
+// their share of the whitened rows, row by row in order: +-R_ij at j's constant entries, R_ij b_j
+void whiten_tail_0_0(const T* raw, T* ab, const T* p) {
+    ab[18] += p[9];
+    ab[24] -= p[9];
+    ab[30] += p[9] * raw[318];
+    ab[19] += p[10];
+    ab[25] -= p[10];
+    ab[30] += p[10] * raw[350];
+    ab[20] += p[11];
+    ab[26] -= p[11];
+    ab[30] += p[11] * raw[382];
+    ab[21] += p[12];
+    ab[27] -= p[12];
+    ab[30] += p[12] * raw[414];
+    ab[22] += p[13];
+    ab[28] -= p[13];
+    ab[30] += p[13] * raw[446];
+    ab[23] += p[14];
+    ab[29] -= p[14];
+    ab[30] += p[14] * raw[478];
+    ab[50] += p[23];
+    ab[56] -= p[23];
+    ab[62] += p[23] * raw[318];
+    ab[51] += p[24];
+    ab[57] -= p[24];
+    ab[62] += p[24] * raw[350];
+    ab[52] += p[25];
+    ab[58] -= p[25];
+    ab[62] += p[25] * raw[382];
+    ab[53] += p[26];
+    ab[59] -= p[26];
+    ab[62] += p[26] * raw[414];
+    ab[54] += p[27];
+    ab[60] -= p[27];
+    ab[62] += p[27] * raw[446];
+    ab[55] += p[28];
+    ab[61] -= p[28];
+    ab[62] += p[28] * raw[478];
+    ab[82] += p[36];
+    ab[88] -= p[36];
+    ab[94] += p[36] * raw[318];
+    ab[83] += p[37];
+    ab[89] -= p[37];
+    ab[94] += p[37] * raw[350];
+    ab[84] += p[38];
+    ab[90] -= p[38];
+    ab[94] += p[38] * raw[382];
+    ab[85] += p[39];
+    ab[91] -= p[39];
+    ab[94] += p[39] * raw[414];
+    ab[86] += p[40];
+    ab[92] -= p[40];
+    ab[94] += p[40] * raw[446];
+    ab[87] += p[41];
+    ab[93] -= p[41];
+    ab[94] += p[41] * raw[478];
+    ab[114] += p[48];
+    ab[120] -= p[48];
+    ab[126] += p[48] * raw[318];
+    ab[115] += p[49];
+    ab[121] -= p[49];
+    ab[126] += p[49] * raw[350];
+    ab[116] += p[50];
+    ab[122] -= p[50];
+    ab[126] += p[50] * raw[382];
+    ab[117] += p[51];
+    ab[123] -= p[51];
+    ab[126] += p[51] * raw[414];
+    ab[118] += p[52];
+    ab[124] -= p[52];
+    ab[126] += p[52] * raw[446];
+    ab[119] += p[53];
+    ab[125] -= p[53];
+    ab[126] += p[53] * raw[478];
+    ab[146] += p[59];
+    ab[152] -= p[59];
+    ab[158] += p[59] * raw[318];
+    ab[147] += p[60];
+    ab[153] -= p[60];
+    ab[158] += p[60] * raw[350];
+    ab[148] += p[61];
+    ab[154] -= p[61];
+    ab[158] += p[61] * raw[382];
+    ab[149] += p[62];
+    ab[155] -= p[62];
+    ab[158] += p[62] * raw[414];
+    ab[150] += p[63];
+    ab[156] -= p[63];
+    ab[158] += p[63] * raw[446];
+    ab[151] += p[64];
+    ab[157] -= p[64];
+    ab[158] += p[64] * raw[478];
+    ab[178] += p[69];
+    ab[184] -= p[69];
+    ab[190] += p[69] * raw[318];
+    ab[179] += p[70];
+    ab[185] -= p[70];
+    ab[190] += p[70] * raw[350];
+    ab[180] += p[71];
+    ab[186] -= p[71];
+    ab[190] += p[71] * raw[382];
+    ab[181] += p[72];
+    ab[187] -= p[72];
+    ab[190] += p[72] * raw[414];
+    ab[182] += p[73];
+    ab[188] -= p[73];
+    ab[190] += p[73] * raw[446];
+    ab[183] += p[74];
+    ab[189] -= p[74];
+    ab[190] += p[74] * raw[478];
+    ab[210] += p[78];
+    ab[216] -= p[78];
+    ab[222] += p[78] * raw[318];
+    ab[211] += p[79];
+    ab[217] -= p[79];
+    ab[222] += p[79] * raw[350];
+    ab[212] += p[80];
+    ab[218] -= p[80];
+    ab[222] += p[80] * raw[382];
+    ab[213] += p[81];
+    ab[219] -= p[81];
+    ab[222] += p[81] * raw[414];
+    ab[214] += p[82];
+    ab[220] -= p[82];
+    ab[222] += p[82] * raw[446];
+    ab[215] += p[83];
+    ab[221] -= p[83];
+    ab[222] += p[83] * raw[478];
+    ab[242] += p[86];
+    ab[248] -= p[86];
+    ab[254] += p[86] * raw[318];
+    ab[243] += p[87];
+    ab[249] -= p[87];
+    ab[254] += p[87] * raw[350];
+    ab[244] += p[88];
+    ab[250] -= p[88];
+    ab[254] += p[88] * raw[382];
+    ab[245] += p[89];
+    ab[251] -= p[89];
+    ab[254] += p[89] * raw[414];
+    ab[246] += p[90];
+    ab[252] -= p[90];
+    ab[254] += p[90] * raw[446];
+    ab[247] += p[91];
+    ab[253] -= p[91];
+    ab[254] += p[91] * raw[478];
+    ab[274] += p[93];
+    ab[280] -= p[93];
+    ab[286] += p[93] * raw[318];
+    ab[275] += p[94];
+    ab[281] -= p[94];
+    ab[286] += p[94] * raw[350];
+    ab[276] += p[95];
+    ab[282] -= p[95];
+    ab[286] += p[95] * raw[382];
+    ab[277] += p[96];
+    ab[283] -= p[96];
+    ab[286] += p[96] * raw[414];
+    ab[278] += p[97];
+    ab[284] -= p[97];
+    ab[286] += p[97] * raw[446];
+    ab[279] += p[98];
+    ab[285] -= p[98];
+    ab[286] += p[98] * raw[478];
+    ab[306] += p[99];
+    ab[312] -= p[99];
+    ab[318] += p[99] * raw[318];
+    ab[307] += p[100];
+    ab[313] -= p[100];
+    ab[318] += p[100] * raw[350];
+    ab[308] += p[101];
+    ab[314] -= p[101];
+    ab[318] += p[101] * raw[382];
+    ab[309] += p[102];
+    ab[315] -= p[102];
+    ab[318] += p[102] * raw[414];
+    ab[310] += p[103];
+    ab[316] -= p[103];
+    ab[318] += p[103] * raw[446];
+    ab[311] += p[104];
+    ab[317] -= p[104];
+    ab[318] += p[104] * raw[478];
+    ab[339] += p[105];
+    ab[345] -= p[105];
+    ab[350] += p[105] * raw[350];
+    ab[340] += p[106];
+    ab[346] -= p[106];
+    ab[350] += p[106] * raw[382];
+    ab[341] += p[107];
+    ab[347] -= p[107];
+    ab[350] += p[107] * raw[414];
+    ab[342] += p[108];
+    ab[348] -= p[108];
+    ab[350] += p[108] * raw[446];
+    ab[343] += p[109];
+    ab[349] -= p[109];
+    ab[350] += p[109] * raw[478];
+    ab[372] += p[110];
+    ab[378] -= p[110];
+    ab[382] += p[110] * raw[382];
+    ab[373] += p[111];
+    ab[379] -= p[111];
+    ab[382] += p[111] * raw[414];
+    ab[374] += p[112];
+    ab[380] -= p[112];
+    ab[382] += p[112] * raw[446];
+    ab[375] += p[113];
+    ab[381] -= p[113];
+    ab[382] += p[113] * raw[478];
+    ab[405] += p[114];
+    ab[411] -= p[114];
+    ab[414] += p[114] * raw[414];
+    ab[406] += p[115];
+    ab[412] -= p[115];
+    ab[414] += p[115] * raw[446];
+    ab[407] += p[116];
+    ab[413] -= p[116];
+    ab[414] += p[116] * raw[478];
+    ab[438] += p[117];
+    ab[444] -= p[117];
+    ab[446] += p[117] * raw[446];
+    ab[439] += p[118];
+    ab[445] -= p[118];
+    ab[446] += p[118] * raw[478];
+    ab[471] += p[119];
+    ab[477] -= p[119];
+    ab[478] += p[119] * raw[478];
+}
+
 // block 0, instances first ... first + LANES - 1: residual + Jacobian (its 180
 // structural non-zeros of 15 x 31), whiten. Mode 1 (noise_mode false): accumulate the gradient
 // and the Gram from its 36 non-zero tiles; false if not finite. Mode 3 (true): only add
@@ -2443,7 +2689,9 @@ bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
         const int f = BLOCK0_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<32, 31, 15, 2>(raw[l] + 0, ab[l] + 0, line + 73, line[193], line[194]);
+        whiten<32, 31, 15, 2, 9>(raw[l] + 0, ab[l] + 0, line + 73);
+        whiten_tail_0_0(raw[l] + 0, ab[l] + 0, line + 73);
+        reweight<32, 31, 15>(ab[l] + 0, line[193], line[194]);
         if (noise_mode) {
             T scale[32];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 32; ++c) scale[c] = T(0);
@@ -2556,7 +2804,8 @@ bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
         const int f = BLOCK1_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<8, 7, 6, 0>(raw[l] + 0, ab[l] + 0, line + 12, line[13], line[14]);
+        whiten<8, 7, 6, 0, 6>(raw[l] + 0, ab[l] + 0, line + 12);
+        reweight<8, 7, 6>(ab[l] + 0, line[13], line[14]);
         if (noise_mode) {
             T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 8; ++c) scale[c] = T(0);
@@ -2659,7 +2908,8 @@ bool linearize_2(const T* x, int first, bool noise_mode, T* noise) {
         const int f = BLOCK2_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<4, 4, 3, 0>(raw[l] + 0, ab[l] + 0, line + 3, line[4], line[5]);
+        whiten<4, 4, 3, 0, 3>(raw[l] + 0, ab[l] + 0, line + 3);
+        reweight<4, 4, 3>(ab[l] + 0, line[4], line[5]);
         if (noise_mode) {
             T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 4; ++c) scale[c] = T(0);
@@ -2762,7 +3012,8 @@ bool linearize_3(const T* x, int first, bool noise_mode, T* noise) {
         const int f = BLOCK3_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<8, 7, 6, 0>(raw[l] + 0, ab[l] + 0, line + 6, line[7], line[8]);
+        whiten<8, 7, 6, 0, 6>(raw[l] + 0, ab[l] + 0, line + 6);
+        reweight<8, 7, 6>(ab[l] + 0, line[7], line[8]);
         if (noise_mode) {
             T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 8; ++c) scale[c] = T(0);
@@ -3217,6 +3468,7 @@ bool eliminate_step(int s, T mu) {
             H[map[a]][w] += u[a * (sc + 1) + sc];
         }
     }
+    if (w == 30 && STEP_F[s] == 15) return cholesky_frontal_fixed<30, 15, MAX_LD>(H, s, mu);
     return cholesky_frontal<MAX_LD>(H, w, STEP_F[s], s, mu);
 }
 
@@ -4706,7 +4958,11 @@ void imu_window_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
     for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
+#ifdef __SYNTHESIS__
     for (int i = 0; i < fgc::N_DATA; ++i) fgc::DATA_BUF[i] = data[i];
+#else
+    fgc::DATA_BUF = data;
+#endif
 #ifndef __SYNTHESIS__
     fgc::lane_data_0();
     fgc::lane_data_1();

@@ -151,7 +151,11 @@ const int KIND0_VARIABLES[5] = {
 // ---- the accelerator's memories: static, sized at compile time; nothing is allocated
 T X[N_X];          // current estimate (storage)
 T X_TRIAL[N_X];    // x (+) delta
+#ifdef __SYNTHESIS__
 T DATA_BUF[N_DATA];
+#else
+const T* DATA_BUF = nullptr;  // on the host: the caller's data, read in place (never written)
+#endif
 L AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
 T G[N_TANGENT];    // gradient A^T b
 T VAR_SCALE[N_VARIABLES];
@@ -1195,13 +1199,15 @@ void cost_1(const V* in, const V* dat, T half[LANES][1]) {
 }
 
 // Rows [J | r] of one member (row stride STRIDE, right-hand side in column COLS - 1) ->
-// sqrt(w) * W * [J | -r] in `ab`: W is 1/sigma (KIND 0), 1/sigma_i (1) or the upper-triangular
-// square-root information R (2, parameters row-major); w reweights a robust loss (CODE 1 Huber,
-// 2 Cauchy) at the whitened residual norm, as GTSAM does. Every entry of `ab` is written (so it
+// W * [J | -r] in `ab`: W is 1/sigma (KIND 0), 1/sigma_i (1) or the upper-triangular
+// square-root information R (2, parameters row-major). Every entry of `ab` is written (so it
 // needs no zeroing) and `raw` keeps its structural zeros; rows are whitened whole: a short
-// fixed-length vector loop per row.
-template <int STRIDE, int COLS, int ROWS, int KIND>
-void whiten(T* raw, T* ab, const T* p, T code, T k) {
+// fixed-length vector loop per row. KIND 2 sums only rows j < DENSE so: the rows after hold
+// just 0 and ±1 left of the right-hand side, and the member's whiten_tail adds their share
+// (R_ij itself at their constant entries, then R_ij b_j), after this and in the same row order,
+// so every entry is the same sum as over whole rows.
+template <int STRIDE, int COLS, int ROWS, int KIND, int DENSE>
+void whiten(T* raw, T* ab, const T* p) {
     for (int i = 0; i < ROWS; ++i) raw[i * STRIDE + COLS - 1] = -raw[i * STRIDE + COLS - 1];
     for (int i = 0; i < ROWS; ++i) {
         const T* row = raw + i * STRIDE;
@@ -1209,8 +1215,12 @@ void whiten(T* raw, T* ab, const T* p, T code, T k) {
         if (KIND == 2) {  // row i = sum over j >= i of R_ij row j
             const int base = i * ROWS - (i * (i - 1)) / 2 - i;
             T acc[STRIDE];
-            for (int c = 0; c < STRIDE; ++c) acc[c] = row[c] * p[base + i];
-            for (int j = i + 1; j < ROWS; ++j) {
+            if (i < DENSE) {
+                for (int c = 0; c < STRIDE; ++c) acc[c] = row[c] * p[base + i];
+            } else {
+                for (int c = 0; c < STRIDE; ++c) acc[c] = T(0);
+            }
+            for (int j = i + 1; j < DENSE; ++j) {
                 const T rij = p[base + j];
                 const T* other = raw + j * STRIDE;
                 for (int c = 0; c < STRIDE; ++c) acc[c] += rij * other[c];
@@ -1221,6 +1231,12 @@ void whiten(T* raw, T* ab, const T* p, T code, T k) {
             for (int c = 0; c < STRIDE; ++c) out[c] = row[c] * s;
         }
     }
+}
+
+// sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
+// at the whitened residual norm, as GTSAM does.
+template <int STRIDE, int COLS, int ROWS>
+void reweight(T* ab, T code, T k) {
     if (code == T(0)) return;
     T e2 = T(0);
     for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
@@ -1367,7 +1383,8 @@ bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
         const int f = BLOCK0_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<16, 13, 6, 2>(raw[l] + 0, ab[l] + 0, line + 12, line[33], line[34]);
+        whiten<16, 13, 6, 2, 6>(raw[l] + 0, ab[l] + 0, line + 12);
+        reweight<16, 13, 6>(ab[l] + 0, line[33], line[34]);
         if (noise_mode) {
             T scale[16];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 16; ++c) scale[c] = T(0);
@@ -1474,7 +1491,8 @@ bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
         const int f = BLOCK1_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<8, 7, 6, 0>(raw[l] + 0, ab[l] + 0, line + 12, line[13], line[14]);
+        whiten<8, 7, 6, 0, 6>(raw[l] + 0, ab[l] + 0, line + 12);
+        reweight<8, 7, 6>(ab[l] + 0, line[13], line[14]);
         if (noise_mode) {
             T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 8; ++c) scale[c] = T(0);
@@ -1962,7 +1980,11 @@ void pose_graph_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
     for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
+#ifdef __SYNTHESIS__
     for (int i = 0; i < fgc::N_DATA; ++i) fgc::DATA_BUF[i] = data[i];
+#else
+    fgc::DATA_BUF = data;
+#endif
 #ifndef __SYNTHESIS__
     fgc::lane_data_0();
     fgc::lane_data_1();
