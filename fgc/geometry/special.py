@@ -144,8 +144,9 @@ def so3_log_numeric(r: np.ndarray) -> np.ndarray:
     sin_t = dt(0.5) * np.sqrt(skew @ skew)
     theta = np.arctan2(sin_t, cos_t)
     if cos_t >= 0:
-        # ω = θ / (2 sin θ) · skew, with θ/sin θ = 1/A(θ²)
-        return (dt(0.5) / coefficient("A", theta * theta)) * skew
+        # ω = θ / (2 sin θ) · skew: θ = atan2(sin θ, cos θ) keeps its relative digits as θ → 0,
+        # so the ratio does too (its limit 1 at sin θ = 0)
+        return (dt(0.5) * (theta / sin_t if sin_t > 0 else dt(1))) * skew
     sym = dt(0.5) * (r + r.T) - cos_t * np.eye(3, dtype=dt)
     k = int(np.argmax(np.diag(sym)))
     axis = sym[:, k] / np.sqrt(sym[k, k] * (dt(1) - cos_t))

@@ -145,7 +145,7 @@ inline void so3_log(T r00, T r01, T r02, T r10, T r11, T r12, T r20, T r21, T r2
     const T sin_t = T(0.5) * fgc_sqrt(sk[0] * sk[0] + sk[1] * sk[1] + sk[2] * sk[2]);
     const T theta = fgc_atan2(sin_t, cos_t);
     if (cos_t >= T(0)) {
-        const T scale = T(0.5) / lie_A(theta * theta);
+        const T scale = T(0.5) * (sin_t > T(0) ? T(theta / sin_t) : T(1));  // θ / (2 sin θ)
         for (int i = 0; i < 3; ++i) w[i] = scale * sk[i];
         return;
     }

@@ -118,8 +118,8 @@ def so3_log(r00, r01, r02, r10, r11, r12, r20, r21, r22):
     cos_t = dt(0.5) * (r[..., 0, 0] + r[..., 1, 1] + r[..., 2, 2] - dt(1))
     sin_t = dt(0.5) * numpy.sqrt(numpy.sum(skew * skew, -1))
     theta = numpy.arctan2(sin_t, cos_t)
-    with numpy.errstate(divide="ignore", invalid="ignore"):  # A → 0 only where cos θ < 0
-        near = dt(0.5) / coefficient("A", theta * theta)
+    with numpy.errstate(divide="ignore", invalid="ignore"):  # θ / sin θ → 1 as θ → 0
+        near = dt(0.5) * numpy.where(sin_t > 0, theta / sin_t, dt(1))
     omega = near[..., None] * skew
     far = cos_t < 0
     if numpy.any(far):
