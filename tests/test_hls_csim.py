@@ -14,6 +14,7 @@ Tolerances:
 
 from __future__ import annotations
 
+import runpy
 import sys
 from pathlib import Path
 
@@ -23,7 +24,7 @@ import pytest
 import fgc
 from fgc import noise
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data
+from fgc.datafile import problem_data, write_data
 from fgc.errors import DataError
 from fgc.factors import BetweenFactor, PriorFactor
 from fgc.geometry import Pose3
@@ -189,6 +190,38 @@ def test_robust_losses_and_gauss_newton_match_the_simulator(solver, tmp_path):
     result = run_csim(emit(program, tmp_path, HlsConfig(scalar="double")), program, data)
     reference = sim.run(program, data, precision="float64")
     _check_against_reference("robust", program, result, reference, "double")
+
+
+def _sim_problem(program, data, folder):
+    """The emitted simulator's Problem for ``data`` in float64 (its cost and linearize)."""
+    files = sim.emit(program, folder)
+    write_data(data, folder / "data.txt")
+    ns = runpy.run_path(str(files[0]), run_name="fgc_sim_probe")
+    lib = ns["LIB"]
+    return lib.optimizer.Problem(ns["PROBLEM"], lib.runtime.read_data(str(folder / "data.txt")),
+                                 "float64", lib)
+
+
+@pytest.mark.parametrize("case", ["robust", "lio"])
+def test_cost_and_rounding_noise_match_the_simulator(case, tmp_path):
+    """The kernel's cost and its rounding noise (the band try_steps grants a step that does not
+    lower the cost) against the simulator's at the initial values and at a random point near
+    them: every noise kind and robust loss (robust chain), the fused IMU block with its constant
+    tail rows (LIO). 1e-10 relative: the two sum in different orders."""
+    graph = robust_chain() if case == "robust" else lio.build(N=10)
+    program = compile_graph(graph, SolverConfig(linear="cholesky"), name=f"probe_{case}")
+    data = problem_data(graph, program)
+    solver = native.load(program)
+    problem = _sim_problem(program, data, tmp_path)
+    x0, d = solver.flatten(data)
+    rng = np.random.default_rng(11)
+    tangent = 1e-3 * rng.standard_normal(problem.n)
+    for x in (x0, problem.retract(x0, tangent)):
+        cost, band = solver.probe(np.ascontiguousarray(x), d)
+        _, _, noise_sim = problem.linearize(x)
+        assert cost == pytest.approx(float(problem.cost(x)), rel=1e-10)
+        assert band == pytest.approx(noise_sim, rel=1e-10)
+        assert 0 < band < 1e-9 * cost  # float64 rounding of x moves the cost by a few ulp
 
 
 def test_lanes_do_not_change_the_numbers(tmp_path):

@@ -75,6 +75,8 @@ class NativeSolver:
         lib.fgc_sizes.argtypes = [_INTS]
         lib.fgc_run.argtypes = [ctypes.c_void_p] * 5
         lib.fgc_run.restype = None
+        lib.fgc_probe.argtypes = [ctypes.c_void_p] * 3
+        lib.fgc_probe.restype = None
         sizes = np.zeros(4, dtype=np.int32)
         lib.fgc_sizes(sizes)
         if (sizes[0], sizes[1]) != (len(program.variables), len(program.factors)):
@@ -105,6 +107,16 @@ class NativeSolver:
         self._run(_address(x, self.n_x, "x"), _address(d, self.n_data, "the factor data"),
                   *self._outputs)
         return self._out.copy(), self._errors.copy(), self._info.copy()
+
+    def probe(self, x: np.ndarray, d: np.ndarray) -> tuple[float, float]:
+        """(cost, rounding noise) at flat ``x`` with data ``d``, computed by the kernel: the
+        cost (GTSAM's error) and how far it moves when x is rounded to the scalar type, which
+        the step test allows a step that does not lower the cost."""
+        out = np.empty(2)
+        self.library.fgc_probe(_address(x, self.n_x, "x"),
+                               _address(d, self.n_data, "the factor data"),
+                               out.__array_interface__["data"][0])
+        return float(out[0]), float(out[1])
 
     def run(self, data: ProblemData) -> HlsResult:
         x, errors, info = self.solve(*self.flatten(data))

@@ -192,4 +192,11 @@ inline T so3_log_z(T r00, T r01, T r02, T r10, T r11, T r12, T r20, T r21, T r22
 void imu_window_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
                     fgc::T x_out[fgc::N_X], fgc::T errors[2], int info[3]);
 
+#ifndef __SYNTHESIS__
+// Host only: the cost at x_in and its rounding noise (how far the cost moves when x is rounded
+// to the scalar type, the tolerance the step test in try_steps grants a step that is not below
+// the cost), computed as the accelerator computes them: out = {cost, noise}.
+void imu_window_probe(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], fgc::T out[2]);
+#endif
+
 #endif  // FGC_IMU_WINDOW_H

@@ -5320,3 +5320,17 @@ void lio_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
     fgc::optimize(errors, info);
     for (int i = 0; i < fgc::N_X; ++i) x_out[i] = fgc::X[i];
 }
+
+#ifndef __SYNTHESIS__
+void lio_probe(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], fgc::T out[2]) {
+    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
+    fgc::DATA_BUF = data;
+    fgc::lane_data_0();
+    fgc::lane_data_1();
+    fgc::lane_data_2();
+    fgc::lane_data_3();
+    fgc::lane_data_4();
+    out[0] = fgc::total_cost(fgc::X);
+    out[1] = fgc::rounding_noise_all(fgc::X);
+}
+#endif

@@ -34,4 +34,14 @@ void fgc_run(const double* x, const double* factor_data, double* result, double*
     errors[1] = static_cast<double>(err[1]);
 }
 
+// The cost at x and its rounding noise (out = {cost, noise}), as the accelerator computes them.
+void fgc_probe(const double* x, const double* factor_data, double* out) {
+    for (int i = 0; i < fgc::N_X; ++i) x_in[i] = fgc::T(x[i]);
+    for (int i = 0; i < fgc::N_DATA; ++i) data[i] = fgc::T(factor_data[i]);
+    fgc::T res[2];
+    lio_probe(x_in, data, res);
+    out[0] = static_cast<double>(res[0]);
+    out[1] = static_cast<double>(res[1]);
+}
+
 }  // extern "C"
