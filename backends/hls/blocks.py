@@ -56,11 +56,6 @@ class MemberSlot:
     dense: int = 0  # full noise: leading rows whitened as whole rows (the rest: ``tail``)
     tail: tuple[tuple[int, int, int, tuple[tuple[int, int], ...]], ...] = ()
 
-    @property
-    def constant_rows(self) -> int:
-        """Rows after ``dense``: only 0 / ±1 left of the right-hand side."""
-        return self.rows - self.dense
-
 
 @dataclass(frozen=True)
 class BlockContext:

@@ -172,6 +172,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
     blocks = block_contexts(program)
     patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
                                            solver["cholesky"], solver["lm"])
+    max_ld = padded(tables.constant("MAX_W") + 1)
     return {
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,
@@ -188,7 +189,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
             **dict(tables.constants),
             "MAX_LEVEL_WIDTH": max(len(level) for level in program.schedule.levels),
             "MAX_STORAGE": max(v.storage_dim for v in program.variables),
-            "MAX_LD": padded(tables.constant("MAX_W") + 1)},
+            "MAX_LD": max_ld},
         "max_variables": program.max_variables,
         "header_tables": [t for t in tables.arrays if t.name in HEADER_TABLES],
         "tables": [t for t in tables.arrays if t.name not in HEADER_TABLES]
@@ -196,8 +197,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "blocks": blocks, "patterns": patterns, "retracts": retract_kinds(program), "tile": TILE,
         # a generic step whose shape a pattern has is factored by that pattern's fixed routine
         # (the same operations in the same order, no new unit): the chain ends' steps
-        "fixed_shapes": sorted({(p.w, p.f) for p in patterns
-                                if p.ld == padded(tables.constant("MAX_W") + 1)}),
+        "fixed_shapes": sorted({(p.w, p.f) for p in patterns if p.ld == max_ld}),
         "lanes": lanes(config),
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,

@@ -5293,6 +5293,19 @@ void optimize(T errors[2], int info[3]) {
     info[2] = reason;
 }
 
+#ifndef __SYNTHESIS__
+// The host's inputs: x into X, the caller's data read where it is, laned once per call.
+void host_inputs(const T* x_in, const T* data) {
+    for (int i = 0; i < N_X; ++i) X[i] = x_in[i];
+    DATA_BUF = data;
+    lane_data_0();
+    lane_data_1();
+    lane_data_2();
+    lane_data_3();
+    lane_data_4();
+}
+#endif
+
 }  // namespace
 }  // namespace fgc
 
@@ -5304,18 +5317,11 @@ void lio_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=errors
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
-    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
 #ifdef __SYNTHESIS__
+    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
     for (int i = 0; i < fgc::N_DATA; ++i) fgc::DATA_BUF[i] = data[i];
 #else
-    fgc::DATA_BUF = data;
-#endif
-#ifndef __SYNTHESIS__
-    fgc::lane_data_0();
-    fgc::lane_data_1();
-    fgc::lane_data_2();
-    fgc::lane_data_3();
-    fgc::lane_data_4();
+    fgc::host_inputs(x_in, data);
 #endif
     fgc::optimize(errors, info);
     for (int i = 0; i < fgc::N_X; ++i) x_out[i] = fgc::X[i];
@@ -5323,13 +5329,7 @@ void lio_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 
 #ifndef __SYNTHESIS__
 void lio_probe(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], fgc::T out[2]) {
-    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
-    fgc::DATA_BUF = data;
-    fgc::lane_data_0();
-    fgc::lane_data_1();
-    fgc::lane_data_2();
-    fgc::lane_data_3();
-    fgc::lane_data_4();
+    fgc::host_inputs(x_in, data);
     out[0] = fgc::total_cost(fgc::X);
     out[1] = fgc::rounding_noise_all(fgc::X);
 }

@@ -1968,6 +1968,16 @@ void optimize(T errors[2], int info[3]) {
     info[2] = reason;
 }
 
+#ifndef __SYNTHESIS__
+// The host's inputs: x into X, the caller's data read where it is, laned once per call.
+void host_inputs(const T* x_in, const T* data) {
+    for (int i = 0; i < N_X; ++i) X[i] = x_in[i];
+    DATA_BUF = data;
+    lane_data_0();
+    lane_data_1();
+}
+#endif
+
 }  // namespace
 }  // namespace fgc
 
@@ -1979,15 +1989,11 @@ void pose_graph_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=errors
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
-    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
 #ifdef __SYNTHESIS__
+    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
     for (int i = 0; i < fgc::N_DATA; ++i) fgc::DATA_BUF[i] = data[i];
 #else
-    fgc::DATA_BUF = data;
-#endif
-#ifndef __SYNTHESIS__
-    fgc::lane_data_0();
-    fgc::lane_data_1();
+    fgc::host_inputs(x_in, data);
 #endif
     fgc::optimize(errors, info);
     for (int i = 0; i < fgc::N_X; ++i) x_out[i] = fgc::X[i];
@@ -1995,10 +2001,7 @@ void pose_graph_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 
 #ifndef __SYNTHESIS__
 void pose_graph_probe(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], fgc::T out[2]) {
-    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
-    fgc::DATA_BUF = data;
-    fgc::lane_data_0();
-    fgc::lane_data_1();
+    fgc::host_inputs(x_in, data);
     out[0] = fgc::total_cost(fgc::X);
     out[1] = fgc::rounding_noise_all(fgc::X);
 }
