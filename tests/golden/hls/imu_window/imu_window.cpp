@@ -3227,8 +3227,14 @@ bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
 #pragma HLS LOOP_TRIPCOUNT max=4
             const int jj = j + k;
             if (!(H[jj][jj] > T(0))) return false;
-            const T inv = T(1) / fgc_sqrt(H[jj][jj]);
             const int j0 = jj - jj % TILE;
+            // inside the diagonal tile the later rows are updated by the unscaled row times
+            // its 1 / pivot, so the pivot chain from row to row is a division, not a square
+            // root and a division (cholesky_frontal_fixed's frontal_pivot, bit for bit)
+            T row[TILE];
+            for (int t = 0; t < TILE; ++t) row[t] = H[jj][j0 + t];
+            const T r = T(1) / H[jj][jj];
+            const T inv = T(1) / fgc_sqrt(H[jj][jj]);
             for (int c0 = j0; c0 < end; c0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=8
                 for (int t = 0; t < TILE; ++t) pivot[k][c0 + t] = H[jj][c0 + t] * inv;
@@ -3244,7 +3250,9 @@ bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
             for (int i = jj + 1; i < j + pn; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=4
                 const T uji = pivot[k][i];
-                for (int c0 = i - i % TILE; c0 < end; c0 += TILE) {
+                const T a = row[i - j0] * r;
+                for (int t = 0; t < TILE; ++t) H[i][j0 + t] -= a * row[t];
+                for (int c0 = j0 + TILE; c0 < end; c0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=8
                     for (int t = 0; t < TILE; ++t) H[i][c0 + t] -= uji * pivot[k][c0 + t];
                 }
@@ -3301,11 +3309,13 @@ FGC_INLINE bool frontal_pivot(T (&d)[TILE][TILE], T (&inv)[TILE]) {
 #pragma HLS INLINE
     if (K >= PN) return true;
     if (!(d[K][K] > T(0))) return false;
+    const T r = T(1) / d[K][K];
+    for (int i = K + 1; i < PN; ++i) {
+        const T a = d[K][i] * r;
+        for (int t = i; t < TILE; ++t) d[i][t] -= a * d[K][t];
+    }
     inv[K] = T(1) / fgc_sqrt(d[K][K]);
     for (int t = K; t < TILE; ++t) d[K][t] = d[K][t] * inv[K];
-    for (int i = K + 1; i < PN; ++i) {
-        for (int t = i; t < TILE; ++t) d[i][t] -= d[K][i] * d[K][t];
-    }
     return true;
 }
 
