@@ -10,6 +10,12 @@ fgc::T x_in[fgc::N_X];
 fgc::T x_out[fgc::N_X];
 fgc::T data[fgc::N_DATA];
 
+// The caller's x and factor data in the scalar type, into x_in and data.
+void convert_inputs(const double* x, const double* factor_data) {
+    for (int i = 0; i < fgc::N_X; ++i) x_in[i] = fgc::T(x[i]);
+    for (int i = 0; i < fgc::N_DATA; ++i) data[i] = fgc::T(factor_data[i]);
+}
+
 }  // namespace
 
 extern "C" {
@@ -25,8 +31,7 @@ void fgc_sizes(int out[4]) {
 // Run the accelerator on double arrays (converted to the scalar type and back).
 void fgc_run(const double* x, const double* factor_data, double* result, double* errors,
              int* info) {
-    for (int i = 0; i < fgc::N_X; ++i) x_in[i] = fgc::T(x[i]);
-    for (int i = 0; i < fgc::N_DATA; ++i) data[i] = fgc::T(factor_data[i]);
+    convert_inputs(x, factor_data);
     fgc::T err[2];
     pose_graph_top(x_in, data, x_out, err, info);
     for (int i = 0; i < fgc::N_X; ++i) result[i] = static_cast<double>(x_out[i]);
@@ -36,8 +41,7 @@ void fgc_run(const double* x, const double* factor_data, double* result, double*
 
 // The cost at x and its rounding noise (out = {cost, noise}), as the accelerator computes them.
 void fgc_probe(const double* x, const double* factor_data, double* out) {
-    for (int i = 0; i < fgc::N_X; ++i) x_in[i] = fgc::T(x[i]);
-    for (int i = 0; i < fgc::N_DATA; ++i) data[i] = fgc::T(factor_data[i]);
+    convert_inputs(x, factor_data);
     fgc::T res[2];
     pose_graph_probe(x_in, data, res);
     out[0] = static_cast<double>(res[0]);
