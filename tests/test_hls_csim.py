@@ -14,7 +14,11 @@ Tolerances:
 
 from __future__ import annotations
 
+import platform
+import re
 import runpy
+import shutil
+import subprocess
 import sys
 from pathlib import Path
 
@@ -235,6 +239,41 @@ def test_lanes_do_not_change_the_numbers(tmp_path):
     for key, value in results[0].values.items():
         np.testing.assert_array_equal(results[1].values[key], value)
 
+
+
+def _disassembly(library: Path) -> str:
+    return subprocess.run(["objdump", "-d", str(library)], capture_output=True, text=True,
+                          check=True).stdout
+
+
+@pytest.mark.skipif(platform.machine() not in ("x86_64", "AMD64") or not shutil.which("objdump"),
+                    reason="the fused multiply-add check is for x86 builds")
+def test_native_build_holds_no_fused_multiply_add(tmp_path):
+    """The Makefile checks the native library for fused multiply-adds (GCC 12 emits vfmaddsub
+    under AVX-512 whatever -mno-fma says) and builds it again without AVX-512 if it has any;
+    a library that still has them is refused. FUSED (the pattern checked for) is set here to
+    one the first build matches, to take both branches on any x86 host."""
+    graph = robust_chain()
+    program = compile_graph(graph, SolverConfig(linear="qr"), name="fused")
+    project = emit(program, tmp_path / "p", HlsConfig(scalar="double"))
+    library = project.directory / "libfused.so"
+    make(project, "native")
+    assert not re.search(r"\bvfn?m(add|sub)", _disassembly(library))
+    wide = "avx512f" in Path("/proc/cpuinfo").read_text()
+    # every AVX-512 build uses zmm registers; the build again without AVX-512 none
+    again = subprocess.run(["make", "-s", "-B", "native", r"FUSED=%zmm"], cwd=project.directory,
+                           capture_output=True, text=True, check=True)
+    assert ("built again with -mno-avx512f" in again.stdout) == wide, again.stdout
+    assert "%zmm" not in _disassembly(library)
+    solved = NativeSolver.load(program, project).run(problem_data(graph, program))
+    reference = run_csim(project, program, problem_data(graph, program))
+    assert solved.final_error == reference.final_error
+    # a pattern every build matches (any VEX instruction): refused, and no library is left
+    refused = subprocess.run(["make", "-s", "-B", "native", r"FUSED=\bv[a-z]"],
+                             cwd=project.directory, capture_output=True, text=True, check=False)
+    assert refused.returncode != 0
+    assert "still holds fused multiply-adds" in refused.stdout + refused.stderr
+    assert not library.exists()
 
 @pytest.mark.heavy
 @pytest.mark.parametrize("name", sorted(HEAVY_CASES))

@@ -42,17 +42,21 @@ class HlsConfig:
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
       widest elimination step this backend accepts; larger Programs fail at emit time.
     - ``lanes``: factor instances a block evaluates side by side in the host builds (C
-      simulation and native), one lane each of a GCC/Clang vector type; ``None`` means one 32-byte
-      vector (4 doubles, 8 floats). Synthesis (``__SYNTHESIS__``) and fixed point use one. Each
-      lane computes exactly the scalar kernel, so results do not depend on it.
+      simulation and native), one lane each of a GCC/Clang vector type; ``None`` means one
+      vector register, chosen by the compiler's target: 64 bytes where the build has AVX-512
+      (8 doubles, 16 floats), else 32 (4 doubles, 8 floats). Synthesis (``__SYNTHESIS__``) and
+      fixed point use one. Each lane computes exactly the scalar kernel, so results do not
+      depend on it.
     - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation (portable: they
       are the testbench's), and the base of the native build.
     - ``native_cxxflags``: added for the native shared library only, which is built on the
-      machine that runs it: ``-O3 -march=native`` (AVX on x86) but no fused multiply-add —
-      ``-mno-fma -mno-avx512f`` next to ``-ffp-contract=off`` in both builds — so every operation
-      rounds as in the C simulation and the two give bit-identical results (GCC 12 still emits
-      ``vfmaddsub`` under ``-ffp-contract=off`` when FMA is enabled). Set ``()`` to build the
-      native library with ``cxxflags`` alone.
+      machine that runs it: ``-O3 -march=native`` (AVX on x86, AVX-512 at full width where the
+      CPU has it) but no fused multiply-add — ``-mno-fma`` next to ``-ffp-contract=off`` in both
+      builds — so every operation rounds as in the C simulation and the two give bit-identical
+      results. GCC 12 still emits ``vfmaddsub`` under ``-ffp-contract=off -mno-fma`` where
+      AVX-512 is on, so with ``-mno-fma`` the Makefile checks the library (``objdump``) and
+      builds it again with ``-mno-avx512f`` if it holds any fused multiply-add. Set ``()`` to
+      build the native library with ``cxxflags`` alone.
     - ``lambda_upper_bound`` / ``absolute_error_tol``: LM gives up when μ would pass the bound;
       it stops once the cost is at most the tolerance (the simulator's ``SimConfig`` options,
       same defaults, so both backends run the same algorithm).
@@ -140,7 +144,7 @@ def native_flags(machine: str | None = None) -> tuple[str, ...]:
     """The native build's extra flags on ``machine`` (default: this one's architecture)."""
     machine = (machine or platform.machine()).lower()
     if machine in ("x86_64", "amd64", "i686", "i386"):
-        return ("-O3", "-march=native", "-mno-fma", "-mno-avx512f")
+        return ("-O3", "-march=native", "-mno-fma", "-mprefer-vector-width=512")
     return ("-O3",)  # elsewhere -ffp-contract=off alone keeps the rounding; ISA flags differ
 
 

@@ -132,12 +132,13 @@ def _epsilon(scalar_cxx: str) -> float:
     return 2.0 ** -(width - integer)
 
 
-def lanes(config: HlsConfig) -> int:
-    """Instances per block evaluation on the host: ``config.lanes``, else one 32-byte vector of
-    the scalar type (4 doubles, 8 floats); 1 for fixed point."""
+def lanes(config: HlsConfig) -> int | None:
+    """Instances per block evaluation on the host: ``config.lanes``; 1 for fixed point; else
+    None, which the emitted code decides at compile time: one vector register of the scalar
+    type, 64 bytes where the build has AVX-512 and 32 otherwise (8 or 4 doubles)."""
     if config.is_fixed_point:
         return 1
-    return config.lanes or (4 if config.scalar == "double" else 8)
+    return config.lanes
 
 
 def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter) -> dict:
@@ -182,6 +183,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
                                                  * config.is_fixed_point),
         "native_cxxflags": " ".join(config.native_cxxflags),
+        "fma_check": "-mno-fma" in config.native_cxxflags,
         "units": max(1, int(program.solver.units)), "cpe": max(1, int(program.solver.cpe)),
         "unit_sets": unit_sets, "structure_comment": comment(
             f"{program.schedule.structure_class} graph, {program.schedule.ordering} ordering"),
@@ -198,7 +200,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         # a generic step whose shape a pattern has is factored by that pattern's fixed routine
         # (the same operations in the same order, no new unit): the chain ends' steps
         "fixed_shapes": sorted({(p.w, p.f) for p in patterns if p.ld == max_ld}),
-        "lanes": lanes(config),
+        "lanes": lanes(config), "laned": lanes(config) != 1, "lanes_auto": lanes(config) is None,
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,
         "max_level_width": max(len(level) for level in program.schedule.levels),

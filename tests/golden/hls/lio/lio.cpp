@@ -355,8 +355,14 @@ inline V load_lanes(const T* p) { return p[0]; }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
-const int LANES = 8;  // on the host: one SIMD lane each (a GCC / Clang vector type)
-typedef T V __attribute__((vector_size(8 * sizeof(T))));
+// on the host: one SIMD lane each (a GCC / Clang vector type) of one register of the widest
+// vectors the build has, 64 bytes with AVX-512 and 32 otherwise
+#ifdef __AVX512F__
+const int LANES = 64 / sizeof(T);
+#else
+const int LANES = 32 / sizeof(T);
+#endif
+typedef T V __attribute__((vector_size(LANES * sizeof(T))));
 inline T lane(const V& v, int l) { return v[l]; }
 inline T lane(T x, int) { return x; }
 inline V load_lanes(const T* p) {  // p[0 ... LANES) as one V
@@ -2961,7 +2967,7 @@ T robust_loss(T half, T code, T k) {
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
 // call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
 // kernels read the data in place.
-V BLOCK0_LANED[1][18];
+V BLOCK0_LANED[(1 + LANES - 1) / LANES][18];
 
 void lane_data_0() {
     for (int first = 0; first < 1; first += LANES) {
@@ -3067,7 +3073,7 @@ void cost_of_0(const T* x, int first, T* total) {
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
 // call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
 // kernels read the data in place.
-V BLOCK1_LANED[1][4];
+V BLOCK1_LANED[(1 + LANES - 1) / LANES][4];
 
 void lane_data_1() {
     for (int first = 0; first < 1; first += LANES) {
@@ -3173,7 +3179,7 @@ void cost_of_1(const T* x, int first, T* total) {
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
 // call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
 // kernels read the data in place.
-V BLOCK2_LANED[1][7];
+V BLOCK2_LANED[(1 + LANES - 1) / LANES][7];
 
 void lane_data_2() {
     for (int first = 0; first < 1; first += LANES) {
@@ -3279,7 +3285,7 @@ void cost_of_2(const T* x, int first, T* total) {
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
 // call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
 // kernels read the data in place.
-V BLOCK3_LANED[1][211];
+V BLOCK3_LANED[(7 + LANES - 1) / LANES][211];
 
 void lane_data_3() {
     for (int first = 0; first < 7; first += LANES) {
@@ -3643,7 +3649,7 @@ void cost_of_3(const T* x, int first, T* total) {
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
 // call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
 // kernels read the data in place.
-V BLOCK4_LANED[1][4];
+V BLOCK4_LANED[(8 + LANES - 1) / LANES][4];
 
 void lane_data_4() {
     for (int first = 0; first < 8; first += LANES) {
