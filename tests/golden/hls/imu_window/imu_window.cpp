@@ -2308,11 +2308,11 @@ T rounding_noise(const T* ab, const T scale[STRIDE]) {
 // accumulators per cycle, into a square buffer (zeroed first unless every lower tile is summed);
 // the lower triangle is then copied out row by row (tiles left out are structural zeros).
 // One panel of WIDE tiles side by side: rows p0 ... p0 + TILE - 1, columns q0 ... q0 + WIDE TILE - 1
-// of the square buffer, summed over the n rows rows[0 ... n) in order (a function of constant
-// width: GCC keeps its accumulators in registers, 6 % faster at LIO N=30 than one loop body
-// per width inside gram)
+// of the square buffer, summed over the n rows rows[0 ... n) in order. A function of constant
+// width, left to GCC to inline or not: faster than one loop body per width inside gram (5-7 %
+// at LIO N=30 and N=200; forced inline, 5 % at N=30 but 8 % slower at N=200)
 template <int STRIDE, int ROWS, int WIDE>
-FGC_INLINE void gram_panel(const T* ab, const int* rows, int n, int p0, int q0, L* sq) {
+inline void gram_panel(const T* ab, const int* rows, int n, int p0, int q0, L* sq) {
     L acc[TILE][WIDE * TILE];  // the linear solver's scalar: the HGC accumulates in it
 #pragma HLS ARRAY_PARTITION variable=acc complete dim=0
     for (int i = 0; i < TILE; ++i) {
