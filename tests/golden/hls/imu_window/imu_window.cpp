@@ -3332,15 +3332,25 @@ FGC_INLINE void frontal_update(T (*H)[LD], int j, int i0, int i1) {
 #pragma HLS LOOP_TRIPCOUNT max=30
         T u[PN];
         for (int k = 0; k < PN; ++k) u[k] = H[j + k][i];
-        for (int c0 = i - i % TILE; c0 < END; c0 += TILE) {
-#pragma HLS LOOP_TRIPCOUNT max=8
-#pragma HLS PIPELINE
+        int c0 = i - i % TILE;
+        if ((END - c0) / TILE % 2 == 1) {  // an odd tile first, then two tiles at a time
             T h[TILE];
             for (int t = 0; t < TILE; ++t) h[t] = H[i][c0 + t];
             for (int k = 0; k < PN; ++k) {
                 for (int t = 0; t < TILE; ++t) h[t] -= u[k] * H[j + k][c0 + t];
             }
             for (int t = 0; t < TILE; ++t) H[i][c0 + t] = h[t];
+            c0 += TILE;
+        }
+        for (; c0 < END; c0 += 2 * TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=4
+#pragma HLS PIPELINE
+            T h[2 * TILE];
+            for (int t = 0; t < 2 * TILE; ++t) h[t] = H[i][c0 + t];
+            for (int k = 0; k < PN; ++k) {
+                for (int t = 0; t < 2 * TILE; ++t) h[t] -= u[k] * H[j + k][c0 + t];
+            }
+            for (int t = 0; t < 2 * TILE; ++t) H[i][c0 + t] = h[t];
         }
     }
 }
