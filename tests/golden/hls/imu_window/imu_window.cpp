@@ -2301,12 +2301,6 @@ T rounding_noise(const T* ab, const T scale[STRIDE]) {
 }
 
 
-// HGC (paper B): the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p < COLS, at
-// p (p + 1) / 2 + q) of rows of STRIDE. The block's non-zero TILE x TILE tiles come in panels
-// (p0, q0, first, n, tiles in `tiles`) of one tile or two side by side; each panel is summed over
-// just the n rows that touch it (`rows[first ...]`), one row streamed through TILE x 2 TILE
-// accumulators per cycle, into a square buffer (zeroed first unless every lower tile is summed);
-// the lower triangle is then copied out row by row (tiles left out are structural zeros).
 // One panel of WIDE tiles side by side: rows p0 ... p0 + TILE - 1, columns q0 ... q0 + WIDE TILE - 1
 // of the square buffer, summed over the n rows rows[0 ... n) in order. A function of constant
 // width, left to GCC to inline or not: faster than one loop body per width inside gram (5-7 %
@@ -2332,6 +2326,12 @@ inline void gram_panel(const T* ab, const int* rows, int n, int p0, int q0, L* s
     }
 }
 
+// HGC (paper B): the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p < COLS, at
+// p (p + 1) / 2 + q) of rows of STRIDE. The block's non-zero TILE x TILE tiles come in panels
+// (p0, q0, first, n, tiles in `tiles`) of one tile or two side by side; each panel is summed over
+// just the n rows that touch it (`rows[first ...]`), one row streamed through TILE x 2 TILE
+// accumulators per cycle, into a square buffer (zeroed first unless every lower tile is summed);
+// the lower triangle is then copied out row by row (tiles left out are structural zeros).
 template <int STRIDE, int COLS, int ROWS, int PANELS, int TILES>
 void gram(const T* ab, const int* tiles, const int* rows, L* out) {
     L sq[STRIDE * STRIDE];
