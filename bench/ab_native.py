@@ -14,7 +14,8 @@ same Program structure (LIO with the same N, Cholesky), e.g. from an older revis
 
 Each build is loaded from several copies of its file (``--copies``, default 4): the same bytes
 run a few per cent faster or slower depending on where the file's pages happen to sit in memory
-(seen here: ±4 % between a library and its own copy), so one file per build is a lottery.
+(seen here: 4–9 % between a library and its own copy, either way round), so one file per build
+is a lottery.
 Each round runs every copy once untimed and three times timed; the line printed gives each
 build's median over its copies of their best times, its ratio to the first build's, and the
 median over the rounds of the per-round ratio (robust to load that drifts during the run). It
