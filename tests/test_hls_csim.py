@@ -240,7 +240,6 @@ def test_lanes_do_not_change_the_numbers(tmp_path):
         np.testing.assert_array_equal(results[1].values[key], value)
 
 
-
 def _disassembly(library: Path) -> str:
     return subprocess.run(["objdump", "-d", str(library)], capture_output=True, text=True,
                           check=True).stdout
@@ -265,8 +264,9 @@ def test_native_build_holds_no_fused_multiply_add(tmp_path):
                            capture_output=True, text=True, check=True)
     assert ("built again with -mno-avx512f" in again.stdout) == wide, again.stdout
     assert "%zmm" not in _disassembly(library)
-    solved = NativeSolver.load(program, project).run(problem_data(graph, program))
-    reference = run_csim(project, program, problem_data(graph, program))
+    data = problem_data(graph, program)
+    solved = NativeSolver.load(program, project).run(data)
+    reference = run_csim(project, program, data)
     assert solved.final_error == reference.final_error
     # a pattern every build matches (any VEX instruction): refused, and no library is left
     refused = subprocess.run(["make", "-s", "-B", "native", r"FUSED=\bv[a-z]"],
@@ -274,6 +274,7 @@ def test_native_build_holds_no_fused_multiply_add(tmp_path):
     assert refused.returncode != 0
     assert "still holds fused multiply-adds" in refused.stdout + refused.stderr
     assert not library.exists()
+
 
 @pytest.mark.heavy
 @pytest.mark.parametrize("name", sorted(HEAVY_CASES))

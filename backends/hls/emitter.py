@@ -174,6 +174,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
     patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
                                            solver["cholesky"], solver["lm"])
     max_ld = padded(tables.constant("MAX_W") + 1)
+    host_lanes = lanes(config)
     return {
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,
@@ -200,7 +201,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         # a generic step whose shape a pattern has is factored by that pattern's fixed routine
         # (the same operations in the same order, no new unit): the chain ends' steps
         "fixed_shapes": sorted({(p.w, p.f) for p in patterns if p.ld == max_ld}),
-        "lanes": lanes(config), "laned": lanes(config) != 1, "lanes_auto": lanes(config) is None,
+        "lanes": host_lanes, "laned": host_lanes != 1, "lanes_auto": host_lanes is None,
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,
         "max_level_width": max(len(level) for level in program.schedule.levels),
