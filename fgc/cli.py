@@ -6,10 +6,13 @@
     fgc run      SPEC --backend native|sim            solve with the generated solver
     fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
     fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
+    fgc metrics  EST.tum REF.tum [--align se3]        ATE / RPE (translation m, rotation deg)
 
 SPEC is a ``.py`` file with ``build(**params)`` returning an ``fgc.Graph`` (``-p KEY=VALUE``), or a
 g2o/TORO file. Solver options are shared by every command. Exit codes: 0 success, 1 verification
-failed (or a solve did not converge), 2 bad input (one clear line on stderr).
+failed (or a solve did not converge), 2 bad input (one clear line on stderr). Global options:
+``--version``; ``-q`` prints only the result line; ``-v`` adds stage timings (stderr) and
+progress while factors are derived for the first time (also shown when stderr is a terminal).
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ import json
 import os
 import re
 import sys
+import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import NoReturn
@@ -137,16 +141,105 @@ def solver_config(args, precision_default: str):
     return SolverConfig(method=args.solver, linear=args.linear, ordering=args.ordering,
                         precision=args.precision or precision_default,
                         linear_precision=getattr(args, "linear_precision", None),
-                        units=args.units, cpe=args.cpe, max_iterations=args.max_iterations)
+                        units=args.units, cpe=args.cpe, max_iterations=args.max_iterations,
+                        **_clock_mhz(args))
+
+
+def _clock_mhz(args) -> dict:
+    """``{"clock_mhz": …}`` from ``--clock`` (nothing when it was not given)."""
+    clock = getattr(args, "clock", None)
+    return {"clock_mhz": clock[0]} if clock else {}
+
+
+def _precision_default(args, default: str) -> str:
+    """The precision a ``--scalar`` implies (float → float32, double → float64), checked
+    against an explicit ``--precision``; ``default`` otherwise."""
+    scalar = getattr(args, "scalar", None)
+    implied = {"float": "float32", "double": "float64"}.get(scalar or "")
+    if implied and args.precision and args.precision != implied:
+        raise UsageError(f"fgc {args.command}: --scalar {scalar} contradicts --precision "
+                         f"{args.precision}")
+    return implied or default
+
+
+def _hls_config(args, program):
+    """The HLS backend's config from --scalar, --part and --clock (one clock for the cost
+    model and run_hls.tcl: ``HlsConfig.clock_ns`` is ``1000 / SolverConfig.clock_mhz``)."""
+    hls = _backend("hls")
+    options = {"scalar": getattr(args, "scalar", None) or _c_scalar(program)}
+    if getattr(args, "part", None):
+        options["part"] = args.part
+    if getattr(args, "clock", None):
+        options["clock_ns"] = args.clock[1]
+    return hls.HlsConfig(**options)
+
+
+class _Stages:
+    """Stage timings for ``-v`` (stderr, so stdout stays deterministic)."""
+
+    def __init__(self, args):
+        self.verbose = getattr(args, "verbose", 0) > 0
+        self.t0 = time.perf_counter()
+
+    def done(self, name: str) -> None:
+        t = time.perf_counter()
+        if self.verbose:
+            print(f"fgc: {name}: {t - self.t0:.2f} s", file=sys.stderr)
+        self.t0 = t
+
+
+def _show_progress(args) -> bool:
+    if getattr(args, "quiet", False):
+        return False
+    return getattr(args, "verbose", 0) > 0 or sys.stderr.isatty()
+
+
+def derive_with_progress(graph: Graph, show: bool) -> int:
+    """Derive every factor type of ``graph`` not yet in the disk cache, printing "deriving
+    factor X (n/m)…" on stderr before each when ``show``; returns how many were derived."""
+    from fgc.cache import entry
+    from fgc.derive import _MEMO, _code_version, derive
+
+    types = list({f.type.name: f.type for f in graph.factors}.values())
+    cold = []
+    for ftype in types:
+        key = f"{ftype.fingerprint()}-{_code_version()}"
+        if key not in _MEMO and not entry("derive", ftype.name, key).is_file():
+            cold.append(ftype)
+    for i, ftype in enumerate(cold, 1):
+        if show:
+            print(f"fgc: deriving factor {ftype.name} ({i}/{len(cold)}, not cached; "
+                  "sympy takes seconds per factor)…", file=sys.stderr, flush=True)
+        derive(ftype)
+    return len(cold)
 
 
 def _compile(args, precision_default: str):
     from fgc.compile import compile_graph
     from fgc.datafile import problem_data
 
+    stages = _Stages(args)
     graph = load_spec(args.spec, parse_params(args.param))
-    program = compile_graph(graph, solver_config(args, precision_default), name=_name(args.spec))
-    return graph, program, problem_data(graph, program)
+    stages.done("load spec")
+    if derive_with_progress(graph, _show_progress(args)):
+        stages.done("derive (cold)")
+    config = solver_config(args, _precision_default(args, precision_default))
+    program = compile_graph(graph, config, name=_name(args.spec))
+    stages.done("compile")
+    data = problem_data(graph, program)
+    args.stages = stages
+    return graph, program, data
+
+
+def _print(args, lines: list[str], result: str | None = None) -> None:
+    """``lines`` to stdout, or only ``result`` (default: the first line) under ``-q``."""
+    if getattr(args, "quiet", False):
+        print(result if result is not None else lines[0])
+    else:
+        print("\n".join(lines))
+    stages = getattr(args, "stages", None)
+    if stages is not None:
+        stages.done(args.command)
 
 
 def _name(spec: str) -> str:
@@ -181,12 +274,14 @@ def _cmd_compile(args) -> int:
     write_data(data, out / "data.txt")
     backend = _backend(args.backend)
     if args.backend == "hls":
-        project = backend.emit(program, out, backend.HlsConfig(scalar=_c_scalar(program)))
+        project = backend.emit(program, out, _hls_config(args, program))
         files = list(project.files)
     else:
+        if getattr(args, "scalar", None) or getattr(args, "part", None):
+            raise UsageError("fgc compile: --scalar and --part apply to --backend hls only")
         files = backend.emit(program, out)
-    print(f"fgc compile {args.spec}: {len(program.variables)} variables, "
-          f"{len(program.factors)} block instances → {out}/ ({len(files) + 2} files)")
+    _print(args, [f"fgc compile {args.spec}: {len(program.variables)} variables, "
+                  f"{len(program.factors)} block instances → {out}/ ({len(files) + 2} files)"])
     return EXIT_OK
 
 
@@ -199,8 +294,7 @@ def _cmd_simulate(args) -> int:
 
     graph, program, data = _compile(args, "float32")
     report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot)
-    for line in report.pop("summary"):
-        print(line)
+    _print(args, report.pop("summary"))
     _write_json(args.json, report)
     return EXIT_OK if report["status"] == "converged" else EXIT_FAILED
 
@@ -210,8 +304,8 @@ def _cmd_verify(args) -> int:
 
     graph, program, data = _compile(args, "float64")
     report = verify_report(graph, program, data, _backend("sim"))
-    for line in report.pop("summary"):
-        print(line)
+    _print(args, report.pop("summary"),
+           f"fgc verify {args.spec}: {'PASSED' if report['passed'] else 'FAILED'}")
     _write_json(args.json, report)
     return EXIT_OK if report["passed"] else EXIT_FAILED
 
@@ -220,15 +314,17 @@ def _cmd_run(args) -> int:
     graph, program, data = _compile(args, "float32")
     if args.backend == "native":
         hls = _backend("hls")
-        result = hls.native.run(program, data, hls.native.default_config(program))
+        result = hls.native.run(program, data, _hls_config(args, program))
         status, final, iters = result.status, result.final_error, result.iterations
     else:
+        if getattr(args, "scalar", None) or getattr(args, "part", None):
+            raise UsageError("fgc run: --scalar and --part apply to --backend native only")
         result = _backend("sim").run(program, data)
         status, final, iters = result.status, result.final_error, result.iterations
     report = {"backend": args.backend, "status": status, "final_error": final,
               "iterations": iters}
-    print(f"fgc run {args.spec} ({args.backend}): {status}, {iters} iterations, "
-          f"final error {final:.10g}")
+    _print(args, [f"fgc run {args.spec} ({args.backend}): {status}, {iters} iterations, "
+                  f"final error {final:.10g}"])
     _write_json(args.json, report)
     return EXIT_OK if status == "converged" else EXIT_FAILED
 
@@ -239,7 +335,12 @@ def _cmd_report(args) -> int:
     graph, program, data = _compile(args, "float32")
     report = design_report(args.spec, parse_params(args.param), graph, program, data,
                            _backend("sim"), iterations=args.iterations)
-    sys.stdout.write(format_text(report))
+    c = report["cost"]
+    fits = "fits" if c["fits"] else "does NOT fit"
+    _print(args, format_text(report).rstrip("\n").split("\n"),
+           f"fgc report {args.spec}: {c['cycles']:,} cycles = {c['latency_ms']:.3f} ms at "
+           f"{c['clock_mhz']:g} MHz, {c['resources']['dsp']} DSP, {fits} {c['device']} "
+           "(model estimate)")
     _write_json(args.json, report)
     if args.html:
         Path(args.html).write_text(render_html(report, figures(report)))
@@ -253,16 +354,67 @@ def _cmd_sweep(args) -> int:
     graph = load_spec(args.spec, parse_params(args.param))
     designs = sweep.design_space(args.units, args.cpe, args.precision, args.linear)
     base = SolverConfig(method=args.solver, ordering=args.ordering,
-                        max_iterations=args.max_iterations)
+                        max_iterations=args.max_iterations, **_clock_mhz(args))
     out = Path(args.out or f"fgc-sweep-{_name(args.spec)}")
     with sweep.open_executor(args.jobs, args.executor) as pool, \
             sweep.progress_bar(len(designs), args.progress) as progress:
         result = sweep.run_sweep(graph, base, designs, pool, _name(args.spec), progress)
     files = sweep.write_outputs(result, out, title=_name(args.spec))
-    print("\n".join(sweep.summary_lines(result, args.spec)))
-    print(f"wrote {', '.join(str(f) for f in files)}")
+    _print(args, [*sweep.summary_lines(result, args.spec),
+                  f"wrote {', '.join(str(f) for f in files)}"])
     failed = [r for r in result.rows if r["status"] != "converged"]
     return EXIT_FAILED if failed else EXIT_OK
+
+
+def _cmd_metrics(args) -> int:
+    from fgc import metrics
+
+    est, ref = metrics.read_tum(args.estimate), metrics.read_tum(args.reference)
+    results, lines = {}, [f"fgc metrics {args.estimate} vs {args.reference}: {len(est)} poses, "
+                          f"alignment {args.align}, RPE delta {args.delta} frames"
+                          + (" (all pairs)" if args.all_pairs else "")]
+    for name, func, kw in (("ate", metrics.ate, {}),
+                           ("rpe", metrics.rpe, {"delta": args.delta,
+                                                 "all_pairs": args.all_pairs})):
+        for relation in metrics.RELATIONS:
+            res = func(est, ref, align=args.align, relation=relation,
+                       max_time_diff=args.max_time_diff, **kw)
+            stats = res.statistics()
+            results[f"{name}_{relation}"] = {"unit": res.unit, **stats}
+            lines.append(f"  {name.upper()} {relation:<11} [{res.unit:>3}]  " + "  ".join(
+                f"{k} {v:.6g}" for k, v in stats.items() if k != "sse"))
+        if name == "ate" and args.align != "none":
+            results["alignment"] = {"rotation": res.alignment.rotation.tolist(),
+                                    "translation": res.alignment.translation.tolist(),
+                                    "scale": res.alignment.scale}
+    _print(args, lines, lines[1].strip())
+    _write_json(args.json, results)
+    return EXIT_OK
+
+
+def _metrics_parser(sub) -> None:
+    p = sub.add_parser("metrics", help="ATE and RPE of a TUM trajectory against a reference "
+                       "(translation in m, rotation in degrees; evo's definitions)",
+                       description="fgc metrics: absolute trajectory error (ATE) and relative "
+                       "pose error (RPE) of EST against REF, both TUM files (timestamp tx ty tz "
+                       "qx qy qz qw) paired by index; translation (m) and rotation angle "
+                       "(degrees), as evo_ape / evo_rpe compute them",
+                       epilog="exit status: 0 success, 2 bad input (one line on stderr)",
+                       formatter_class=_Formatter)
+    p.add_argument("estimate", metavar="EST", help="estimated trajectory (TUM)")
+    p.add_argument("reference", metavar="REF", help="reference trajectory (TUM)")
+    p.add_argument("--align", choices=("none", "se3", "sim3"), default="none",
+                   help="Umeyama alignment of EST onto REF: se3 = evo's --align, sim3 = "
+                        "--align --correct_scale")
+    p.add_argument("--delta", type=_positive_int, default=1, metavar="N",
+                   help="RPE frame distance")
+    p.add_argument("--all-pairs", action="store_true",
+                   help="RPE over every pair (i, i+delta), not (0, delta), (delta, 2 delta), …")
+    p.add_argument("--max-time-diff", type=float, default=0.01, metavar="S",
+                   help="largest timestamp difference between paired poses")
+    p.add_argument("--json", metavar="FILE", help="also write the statistics as JSON")
+    _verbosity_args(p, suppress=True)
+    p.set_defaults(func=_cmd_metrics)
 
 
 # --------------------------------------------------------------------------------------------
@@ -329,6 +481,61 @@ def _scheduler_address(text: str) -> str:
         raise argparse.ArgumentTypeError(f"{text!r} is not a scheduler address like "
                                          "tcp://host:8786")
     return text
+
+
+def _clock(text: str) -> tuple[float, float]:
+    """``--clock``: MHz or ns → (MHz, ns)."""
+    from fgc_backends.hls.config import HlsConfigError, parse_clock
+
+    try:
+        return parse_clock(text)
+    except HlsConfigError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _scalar(text: str) -> str:
+    from fgc_backends.hls.config import HlsConfigError, check_scalar
+
+    text = re.sub(r"\s+", "", text)
+    try:
+        return check_scalar(text)
+    except HlsConfigError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _part(text: str) -> str:
+    if not re.fullmatch(r"[A-Za-z0-9_-]{1,64}", text):
+        raise argparse.ArgumentTypeError(f"FPGA part {text!r} is not a plain part name "
+                                         "(letters, digits, - and _)")
+    return text
+
+
+def _verbosity_args(p: argparse.ArgumentParser, suppress: bool) -> None:
+    """-v / -q, on the main parser and again on each command (so they go either side of it;
+    a command's copy must not reset what the main parser set, hence SUPPRESS there)."""
+    v = p.add_mutually_exclusive_group()
+    v.add_argument("-v", "--verbose", action="count",
+                   default=argparse.SUPPRESS if suppress else 0,
+                   help="stage timings and derivation progress on stderr")
+    v.add_argument("-q", "--quiet", action="store_true",
+                   default=argparse.SUPPRESS if suppress else False,
+                   help="print only the result line")
+
+
+def _hardware_args(p: argparse.ArgumentParser, name: str) -> None:
+    h = p.add_argument_group("hardware (the cost model's figures are model estimates)")
+    h.add_argument("--clock", type=_clock, metavar="F",
+                   help="accelerator clock, e.g. 143MHz or 7ns (a bare number ≥ 20 is MHz): "
+                        "the cost model's clock and, for --backend hls, run_hls.tcl's period "
+                        "(default: 143 MHz; run_hls.tcl 7 ns)")
+    if name in ("compile", "run"):
+        h.add_argument("--part", type=_part, metavar="PART",
+                       help="FPGA part for run_hls.tcl (default: xc7z045ffg900-2; the cost "
+                            "model's capacities stay the XC7Z045's)")
+        h.add_argument("--scalar", type=_scalar, metavar="T",
+                       help="C++ scalar of the HLS accelerator: float, double or "
+                            "ap_fixed<W,I> (2 ≤ W ≤ 1024, 1 ≤ I ≤ W; needs fgc[hls-fixed]) "
+                            "(default: from --precision)")
 
 
 def _spec_args(p: argparse.ArgumentParser, json_help: str | None) -> None:
@@ -416,6 +623,10 @@ def build_parser() -> argparse.ArgumentParser:
                      epilog="Run 'fgc COMMAND --help' for a command's options. Exit status: 0 "
                             "success, 1 verification failed (or a solve did not converge), 2 "
                             "bad input (one line on stderr).", formatter_class=_Formatter)
+    from fgc import __version__
+
+    parser.add_argument("--version", action="version", version=f"fgc {__version__}")
+    _verbosity_args(parser, suppress=False)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, func, help_text, fails, json_help in _COMMANDS:
         epilog = ("exit status: 0 success" + (f", 1 {fails}" if fails else "")
@@ -425,7 +636,10 @@ def build_parser() -> argparse.ArgumentParser:
         _spec_args(p, json_help)
         _solver_args(p, design_space=name == "sweep")
         _command_args(name, p)
+        _hardware_args(p, name)
+        _verbosity_args(p, suppress=True)
         p.set_defaults(func=func)
+    _metrics_parser(sub)
     return parser
 
 

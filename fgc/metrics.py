@@ -16,6 +16,9 @@ installed (it is not a dependency of fgc):
   E_i = (Q_i⁻¹ Q_{i+Δ})⁻¹ (P_i⁻¹ P_{i+Δ}), e_i = ‖t(E_i)‖, over evo's pairs: consecutive
   (0, Δ), (Δ, 2Δ), … by default, every (i, i + Δ) with ``all_pairs`` (``--all_pairs``); the two
   coincide for Δ = 1. A rigid alignment leaves the RPE unchanged; a Sim(3) one rescales it.
+- **Rotation errors** (``relation="rotation"``, evo's ``PoseRelation.rotation_angle_deg``,
+  ``-r angle_deg``): the angle in degrees of the rotation of Q_i⁻¹ P_i (ATE) or of E_i (RPE),
+  computed as atan2(‖vee(R − Rᵀ)‖ / 2, (tr R − 1) / 2), accurate near 0 and π.
 - **Statistics** (evo's ``get_all_statistics``): rmse = √mean(e²), mean, median, population std,
   min, max, sse = Σe².
 
@@ -37,6 +40,7 @@ from fgc.errors import DataError, FgcError
 from fgc.geometry import LieGroup, Point2, Point3, Pose2, Pose3
 
 ALIGNMENTS = ("none", "se3", "sim3")
+RELATIONS = ("translation", "rotation")  # evo's trans_part and angle_deg
 MAX_TIME_DIFF = 0.01  # evo's default max_diff for associating timestamps (seconds)
 
 
@@ -238,8 +242,8 @@ def umeyama(x: np.ndarray, y: np.ndarray, with_scale: bool = False) -> Alignment
 
 @dataclass(frozen=True, eq=False)
 class TrajectoryError:
-    """Per-pose (ATE) or per-pair (RPE) translation errors in metres, their statistics, and the
-    alignment that was applied to the estimate."""
+    """Per-pose (ATE) or per-pair (RPE) errors — translation in metres, or rotation in degrees
+    (``relation``) — their statistics, and the alignment that was applied to the estimate."""
 
     errors: np.ndarray
     rmse: float
@@ -250,13 +254,42 @@ class TrajectoryError:
     max: float
     sse: float
     alignment: Alignment
+    relation: str = "translation"
+
+    @property
+    def unit(self) -> str:
+        """``"m"`` for translation errors, ``"deg"`` for rotation errors."""
+        return "m" if self.relation == "translation" else "deg"
+
+    def statistics(self) -> dict[str, float]:
+        """rmse, mean, median, std, min, max, sse as a dict (evo's ``get_all_statistics``)."""
+        return {k: getattr(self, k) for k in ("rmse", "mean", "median", "std", "min", "max",
+                                                "sse")}
 
     @classmethod
-    def of(cls, errors: np.ndarray, alignment: Alignment) -> TrajectoryError:
+    def of(cls, errors: np.ndarray, alignment: Alignment,
+           relation: str = "translation") -> TrajectoryError:
         e = np.asarray(errors, float)
         return cls(e, float(np.sqrt(np.mean(e * e))), float(np.mean(e)), float(np.median(e)),
                    float(np.std(e)), float(e.min()), float(e.max()), float(np.sum(e * e)),
-                   alignment)
+                   alignment, relation)
+
+
+def rotation_angles_deg(poses: np.ndarray) -> np.ndarray:
+    """Rotation angle in degrees of each (N, 4, 4) pose (or (N, 3, 3) rotation)."""
+    r = poses[:, :3, :3]
+    vee = np.stack([r[:, 2, 1] - r[:, 1, 2], r[:, 0, 2] - r[:, 2, 0], r[:, 1, 0] - r[:, 0, 1]],
+                   axis=1)
+    cos = (np.trace(r, axis1=1, axis2=2) - 1.0) / 2.0
+    return np.degrees(np.arctan2(np.linalg.norm(vee, axis=1) / 2.0, cos))
+
+
+def _errors(delta_poses: np.ndarray, relation: str) -> np.ndarray:
+    if relation not in RELATIONS:
+        raise FgcError(f"relation must be one of {RELATIONS}, got {relation!r}")
+    if relation == "rotation":
+        return rotation_angles_deg(delta_poses)
+    return np.linalg.norm(delta_poses[:, :3, 3], axis=1)
 
 
 def _inverse(poses: np.ndarray) -> np.ndarray:
@@ -292,24 +325,31 @@ def _aligned(est: Trajectory, ref: Trajectory, align: str) -> tuple[np.ndarray, 
 
 
 def ate(estimate: TrajectoryLike, reference: TrajectoryLike, align: str = "none",
-        max_time_diff: float = MAX_TIME_DIFF) -> TrajectoryError:
-    """Absolute trajectory error (evo ``ape``, translation part).
+        max_time_diff: float = MAX_TIME_DIFF, relation: str = "translation") -> TrajectoryError:
+    """Absolute trajectory error (evo ``ape``, translation part or rotation angle).
 
     In: estimate and reference (inputs as :func:`as_trajectory`, paired by index), ``align``
-    "none", "se3" (``--align``) or "sim3" (``--align --correct_scale``). Out: the errors
-    ‖t(P_i) − t(Q_i)‖ of the aligned estimate and their statistics.
+    "none", "se3" (``--align``) or "sim3" (``--align --correct_scale``), ``relation``
+    "translation" or "rotation". Out: the errors ‖t(P_i) − t(Q_i)‖ (m) or the angles of
+    Q_i⁻¹ P_i (degrees) of the aligned estimate, and their statistics.
     """
+    if relation not in RELATIONS:
+        raise FgcError(f"relation must be one of {RELATIONS}, got {relation!r}")
     est, ref = _paired(estimate, reference, max_time_diff)
     poses, al = _aligned(est, ref, align)
-    return TrajectoryError.of(np.linalg.norm(poses[:, :3, 3] - ref.positions, axis=1), al)
+    if relation == "translation":  # the difference directly, as evo's translation_part
+        return TrajectoryError.of(np.linalg.norm(poses[:, :3, 3] - ref.positions, axis=1), al)
+    return TrajectoryError.of(_errors(_inverse(ref.poses) @ poses, relation), al, relation)
 
 
 def rpe(estimate: TrajectoryLike, reference: TrajectoryLike, delta: int = 1,
         align: str = "none", all_pairs: bool = False,
-        max_time_diff: float = MAX_TIME_DIFF) -> TrajectoryError:
-    """Relative pose error (evo ``rpe``, translation part, ``delta`` in frames).
+        max_time_diff: float = MAX_TIME_DIFF, relation: str = "translation") -> TrajectoryError:
+    """Relative pose error (evo ``rpe``, translation part or rotation angle, ``delta`` in
+    frames).
 
-    In: as :func:`ate`, plus ``delta`` ≥ 1 and ``all_pairs``. Out: e_i = ‖t(E_i)‖ with
+    In: as :func:`ate`, plus ``delta`` ≥ 1 and ``all_pairs``. Out: e_i = ‖t(E_i)‖ (m), or the
+    angle of E_i's rotation (degrees) for ``relation="rotation"``, with
     E_i = (Q_i⁻¹ Q_j)⁻¹ (P_i⁻¹ P_j) for the pairs (i, j) = (0, Δ), (Δ, 2Δ), … (evo's default)
     or, with ``all_pairs``, (i, i + Δ) for i = 0 … N−1−Δ; and their statistics.
     """
@@ -325,4 +365,4 @@ def rpe(estimate: TrajectoryLike, reference: TrajectoryLike, delta: int = 1,
     i = ids[ids + d < len(p)] if all_pairs else ids[:-1]
     j = i + d
     e = _inverse(_inverse(q[i]) @ q[j]) @ (_inverse(p[i]) @ p[j])
-    return TrajectoryError.of(np.linalg.norm(e[:, :3, 3], axis=1), al)
+    return TrajectoryError.of(_errors(e, relation), al, relation)

@@ -142,10 +142,12 @@ def test_quaternion_round_trip(rotvec):
     np.testing.assert_allclose(rotation_from_quaternion(q), r, atol=1e-15)
 
 
-def test_matches_evo(tmp_path):
-    """ATE (none / se3 / sim3) and RPE (Δ = 1, 3; consecutive and all pairs) as evo computes
-    them from the same TUM files."""
-    evo_metrics = pytest.importorskip("evo.core.metrics")
+@pytest.mark.parametrize("relation", ["translation", "rotation"])
+def test_matches_evo(tmp_path, relation):
+    """ATE (none / se3 / sim3) and RPE (Δ = 1, 3; consecutive and all pairs), translation (m)
+    and rotation angle (degrees), as evo computes them from the same TUM files (evo is a test
+    dependency: ``pip install 'fgc[test]'``)."""
+    from evo.core import metrics as evo_metrics
     from evo.tools import file_interface
 
     rng = np.random.default_rng(7)
@@ -153,28 +155,42 @@ def test_matches_evo(tmp_path):
     est = [(t, p.retract(0.05 * rng.normal(size=6))) for t, p in
            _transformed(ref, ROT, TRANS, scale=1.3)]
     ref_file, est_file = write_tum(tmp_path / "ref.txt", ref), write_tum(tmp_path / "est.txt", est)
-    rel = evo_metrics.PoseRelation.translation_part
+    rel = (evo_metrics.PoseRelation.translation_part if relation == "translation"
+           else evo_metrics.PoseRelation.rotation_angle_deg)
     for align in ("none", "se3", "sim3"):
         t_ref = file_interface.read_tum_trajectory_file(str(ref_file))
         t_est = file_interface.read_tum_trajectory_file(str(est_file))
         if align != "none":
             t_est.align(t_ref, correct_scale=align == "sim3")
+        kw = {"align": align, "relation": relation}
         for name, ours, metric in [
-            ("ape", ate(read_tum(est_file), read_tum(ref_file), align=align),
-             evo_metrics.APE(rel)),
-            ("rpe", rpe(read_tum(est_file), read_tum(ref_file), align=align),
+            ("ape", ate(read_tum(est_file), read_tum(ref_file), **kw), evo_metrics.APE(rel)),
+            ("rpe", rpe(read_tum(est_file), read_tum(ref_file), **kw),
              evo_metrics.RPE(rel, delta=1, delta_unit=evo_metrics.Unit.frames, all_pairs=True)),
-            ("rpe3", rpe(read_tum(est_file), read_tum(ref_file), delta=3, align=align),
+            ("rpe3", rpe(read_tum(est_file), read_tum(ref_file), delta=3, **kw),
              evo_metrics.RPE(rel, delta=3, delta_unit=evo_metrics.Unit.frames)),
-            ("rpe3all", rpe(read_tum(est_file), read_tum(ref_file), delta=3, align=align,
-                            all_pairs=True),
+            ("rpe3all", rpe(read_tum(est_file), read_tum(ref_file), delta=3, all_pairs=True,
+                            **kw),
              evo_metrics.RPE(rel, delta=3, delta_unit=evo_metrics.Unit.frames, all_pairs=True))]:
             metric.process_data((t_ref, t_est))
             stats = metric.get_all_statistics()
+            assert ours.unit == ("m" if relation == "translation" else "deg")
             np.testing.assert_allclose(ours.errors, metric.error, rtol=1e-9, atol=1e-12,
                                        err_msg=f"{name} {align}")
             for key in ("rmse", "mean", "median", "std", "min", "max", "sse"):
                 assert getattr(ours, key) == pytest.approx(stats[key], rel=1e-9), (name, key)
+
+
+def test_rotation_error_of_a_known_rotation():
+    """Every estimated pose turned by 30° about a fixed axis: ATE angle 30° everywhere; RPE 0."""
+    ref = _wiggly()
+    turn = Rot3.Expmap(np.radians(30.0) * np.array([0.0, 0.6, 0.8])).R
+    est = [(t, Pose3(Rot3(p.r.R @ turn), p.t)) for t, p in ref]
+    res = ate(est, ref, relation="rotation")
+    np.testing.assert_allclose(res.errors, 30.0, rtol=1e-12)
+    assert rpe(est, ref, relation="rotation").max > 1.0  # body-frame turn: relative poses change
+    with pytest.raises(FgcError, match="relation"):
+        ate(est, ref, relation="angle")
 
 
 def test_trajectory_validates_shapes():

@@ -18,6 +18,8 @@ from fgc.errors import FgcError
 SCALARS = ("float", "double")
 _AP_FIXED = re.compile(r"^ap_fixed<\s*(\d{1,4})\s*,\s*(-?\d{1,4})\s*>$")
 _PART = re.compile(r"^[A-Za-z0-9_-]{1,64}$")
+AP_FIXED_MAX_WIDTH = 1024  # AP_INT_MAX_W, the ap_types headers' default limit on W
+CLOCK_TOLERANCE = 0.005  # relative: 7 ns (142.86 MHz) and 143 MHz are the same clock
 
 
 class HlsConfigError(FgcError):
@@ -36,7 +38,10 @@ class HlsConfig:
       wide as ``scalar``), the mixed design; ``None`` means ``scalar``, or ``"double"`` for a
       Program whose ``SolverConfig.linear_precision`` is float64.
     - ``part`` / ``clock_ns``: FPGA part and clock period for ``run_hls.tcl`` (ZC706, 7 ns:
-      about 143 MHz).
+      about 143 MHz). The cost model reads the clock from ``SolverConfig.clock_mhz``; emitting
+      a Program whose clock differs from ``1000 / clock_ns`` by more than 0.5 % is an error
+      (:func:`check_clock`), so the cost figures and the synthesis script describe one clock.
+      ``fgc ... --clock`` sets both.
     - ``unit_sets``: QR/Cholesky unit sets that eliminate the steps of one level side by side;
       ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
@@ -79,9 +84,7 @@ class HlsConfig:
 
     def check(self) -> None:
         """Raise :class:`HlsConfigError` naming the first invalid option."""
-        if self.scalar not in SCALARS and not _AP_FIXED.match(self.scalar):
-            raise HlsConfigError(f"HLS scalar type {self.scalar!r}: expected 'float', 'double' "
-                                 "or 'ap_fixed<W,I>'")
+        check_scalar(self.scalar)
         if self.linear_scalar is not None:
             if self.linear_scalar not in SCALARS:
                 raise HlsConfigError(f"linear solver scalar type {self.linear_scalar!r}: expected "
@@ -138,6 +141,55 @@ class HlsConfig:
         from fgc_backends.hls.printer import HlsCodePrinter
 
         return HlsCodePrinter(symbols or {})
+
+
+def check_scalar(text: str) -> str:
+    """``text`` if it is a scalar type the backend builds, else :class:`HlsConfigError`:
+    ``float``, ``double`` or ``ap_fixed<W,I>`` with 2 ≤ W ≤ 1024 total bits and 1 ≤ I ≤ W
+    integer bits (sign included), so that there are a sign bit and at least one value bit."""
+    if text in SCALARS:
+        return text
+    m = _AP_FIXED.match(text)
+    if not m:
+        raise HlsConfigError(f"HLS scalar type {text!r}: expected 'float', 'double' or "
+                             "'ap_fixed<W,I>'")
+    width, integer = int(m.group(1)), int(m.group(2))
+    if not 2 <= width <= AP_FIXED_MAX_WIDTH:
+        raise HlsConfigError(f"HLS scalar type {text!r}: width W={width} must be 2 … "
+                             f"{AP_FIXED_MAX_WIDTH} bits")
+    if not 1 <= integer <= width:
+        raise HlsConfigError(f"HLS scalar type {text!r}: integer bits I={integer} must be 1 … "
+                             f"W={width} (sign bit included)")
+    return text
+
+
+def check_clock(clock_mhz: float, config: HlsConfig) -> None:
+    """Raise :class:`HlsConfigError` if the cost model's clock (``SolverConfig.clock_mhz``) and
+    ``config.clock_ns`` (``run_hls.tcl``'s period) are not the same clock (0.5 %)."""
+    tcl_mhz = 1000.0 / float(config.clock_ns)
+    if abs(tcl_mhz - float(clock_mhz)) > CLOCK_TOLERANCE * float(clock_mhz):
+        raise HlsConfigError(f"clock mismatch: the Program is costed at {clock_mhz:g} MHz "
+                             f"(SolverConfig.clock_mhz) but HlsConfig.clock_ns={config.clock_ns:g} "
+                             f"is {tcl_mhz:.4g} MHz; set both (fgc --clock sets both)")
+
+
+def parse_clock(text: str) -> tuple[float, float]:
+    """``"143"``, ``"143MHz"``, ``"7ns"`` → (MHz, ns). A bare number is MHz if ≥ 20, else ns
+    (no FPGA clock here is below 20 MHz or above 2 GHz). Raises :class:`HlsConfigError`."""
+    m = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?|\.[0-9]+)\s*(mhz|ns)?\s*", text, re.IGNORECASE)
+    if not m:
+        raise HlsConfigError(f"clock {text!r}: expected a frequency like 143MHz or a period "
+                             "like 7ns")
+    value, unit = float(m.group(1)), (m.group(2) or "").lower()
+    if value <= 0:
+        raise HlsConfigError(f"clock {text!r} must be positive")
+    if not unit:
+        unit = "mhz" if value >= 20 else "ns"
+    mhz, ns = (value, 1000.0 / value) if unit == "mhz" else (1000.0 / value, value)
+    if not 0.5 <= ns <= 1000.0:
+        raise HlsConfigError(f"clock {text!r} ({mhz:.4g} MHz, {ns:.4g} ns) is outside 1 MHz … "
+                             "2 GHz")
+    return mhz, ns
 
 
 def native_flags(machine: str | None = None) -> tuple[str, ...]:

@@ -20,7 +20,7 @@ import fgc
 from fgc.datafile import MAGIC
 from fgc.program import Program
 from fgc_backends.hls.blocks import block_contexts
-from fgc_backends.hls.config import HlsConfig, HlsConfigError, ap_types_include
+from fgc_backends.hls.config import HlsConfig, HlsConfigError, ap_types_include, check_clock
 from fgc_backends.hls.lint import lint_project
 from fgc_backends.hls.names import comment, identifier
 from fgc_backends.hls.printer import HlsCodePrinter
@@ -73,6 +73,7 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     config = for_program(program, config or HlsConfig())
     config.check()
     check_limits(program, config)
+    check_clock(program.solver.clock_mhz, config)
     project = identifier(name or program.name)
     context = _context(program, config, project)
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
