@@ -183,7 +183,8 @@ def _cycles_section(r: dict) -> Section:
                 f"error {solve['final_error']:.6g}) at {c['clock_mhz']:g} MHz")
     else:
         note = f"{c['iterations']} iterations (--iterations) at {c['clock_mhz']:g} MHz"
-    return Section("Modelled cycles by unit (whole solve)", ("unit", "cycles", "share"),
+    return Section("Modelled cycles by unit (whole solve; model estimate)",
+                   ("unit", "cycles", "share"),
                    tuple(rows), (note,))
 
 
@@ -194,9 +195,10 @@ def _resources_section(r: dict) -> Section:
     rows = tuple((label, f"{res[key]:,}" if isinstance(res[key], int) else f"{res[key]:,g}",
                   f"{util[key]:.1%}") for key, label in names)
     fits = "fits" if c["fits"] else "does NOT fit"
-    return Section(f"Resources on {c['device']}", ("resource", "used", "of device"), rows,
-                   (f"{fits} {c['device']}; power {c['power_w']:.2f} W, energy "
-                    f"{c['energy_mj']:.3f} mJ per solve",))
+    return Section(f"Resources on {c['device']} (model estimate)",
+                   ("resource", "used (model estimate)", "of device"), rows,
+                   (f"{fits} {c['device']} (model estimate); power {c['power_w']:.2f} W, energy "
+                    f"{c['energy_mj']:.3f} mJ per solve (model estimate)",))
 
 
 def format_table(headers: Sequence[str], rows: Sequence[Sequence[str]],

@@ -162,10 +162,10 @@ def _simulate_summary(r: dict, n_vars: int) -> list[str]:
     return [
         f"fgc simulate: {n_vars} variables, {_precision_text(r)}: {r['status']} after "
         f"{r['iterations']} iterations, error {r['initial_error']:.6g} → {r['final_error']:.10g}",
-        f"  accelerator: {r['cycles']:,} cycles = {r['latency_ms']:.3f} ms at "
+        f"  accelerator (model estimate): {r['cycles']:,} cycles = {r['latency_ms']:.3f} ms at "
         f"{r['clock_mhz']:g} MHz, energy {r['energy_mj']:.3f} mJ ({r['power_w']:.2f} W)",
-        f"  resources: {res['dsp']} DSP, {res['bram']:g} BRAM36, {res['lut']:,} LUT, "
-        f"{res['ff']:,} FF",
+        f"  resources (model estimate): {res['dsp']} DSP, {res['bram']:g} BRAM36, "
+        f"{res['lut']:,} LUT, {res['ff']:,} FF",
         f"  storage: {r['storage']['stored_words']:,} words "
         f"(dense {r['storage']['dense_words']:,})",
     ]

@@ -203,7 +203,8 @@ class CostReport:
         return json.dumps(self.to_dict(), indent=1, sort_keys=True) + "\n"
 
     def summary(self) -> str:
-        """A few readable lines: latency, split by unit, resources, power, energy."""
+        """A few readable lines: latency, split by unit, resources, power, energy (all of them
+        model estimates, and labelled so)."""
         s = self.solve
         parts = ", ".join(f"{f.name} {getattr(s, f.name) / s.total:.1%}"
                           for f in fields(s) if getattr(s, f.name))
@@ -212,10 +213,10 @@ class CostReport:
                if self.linear_precision != self.precision else "")
         return (f"{self.program}: {self.method}/{self.linear} {self.precision}{les}, "
                 f"{self.iterations} it + {self.rejected} rejected: {self.latency_ms:.3f} ms "
-                f"({self.cycles} cycles @ {self.clock_mhz:g} MHz)\n"
+                f"({self.cycles} cycles @ {self.clock_mhz:g} MHz; model estimate)\n"
                 f"  split: {parts}\n"
                 f"  DSP {r.dsp}, BRAM36 {r.bram:g}, LUT {r.lut}, FF {r.ff}; "
-                f"{self.power_w:.3f} W, {self.energy_mj:.3f} mJ")
+                f"{self.power_w:.3f} W, {self.energy_mj:.3f} mJ (model estimate)")
 
 
 def _plain(x):
