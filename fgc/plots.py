@@ -1,11 +1,13 @@
 """Figures for reports: trajectories, latency breakdowns, design-space Pareto fronts, storage steps.
 
-matplotlib is an optional extra (``pip install 'fgc[plots]'``), imported only when a figure is
-drawn; without it every function raises :class:`FgcError` saying so. Figures are drawn on their
-own ``Figure`` with the non-interactive Agg canvas (pyplot and its global state are never
-touched) and saved by the path's suffix: ``.png``, ``.svg`` or ``.pdf``. Output is deterministic
-for a given matplotlib version: SVG ids come from a fixed ``svg.hashsalt``, and no date or
-software-version metadata is written. Each function returns the path it wrote.
+matplotlib is an optional extra (``pip install "fgc[plots]"``), imported only when a figure is
+drawn; without it every function raises :class:`FgcError` with that install hint (the one way
+fgc handles a missing matplotlib: ``fgc simulate --plot``, ``fgc report --html`` and
+``fgc sweep`` report it as exit 2). Each function returns its matplotlib ``Figure`` (a notebook
+displays it) and, given ``path=``, also saves it by the suffix: ``.png``, ``.svg`` or ``.pdf``.
+Figures are built without pyplot (no global state is touched). Saved output is deterministic for
+a given matplotlib version: SVG ids come from a fixed ``svg.hashsalt``, and no date or
+software-version metadata is written.
 """
 
 from __future__ import annotations
@@ -27,9 +29,8 @@ _RC = {"svg.hashsalt": "fgc", "font.size": 9.0, "axes.grid": True, "grid.alpha":
 def _matplotlib():
     try:
         import matplotlib
-    except ImportError as exc:
-        raise FgcError("fgc.plots needs matplotlib; install it with pip install 'fgc[plots]' "
-                       "(or pip install matplotlib)") from exc
+    except ImportError:
+        raise FgcError('fgc.plots needs matplotlib: pip install "fgc[plots]"') from None
     return matplotlib
 
 
@@ -46,22 +47,34 @@ def _styled(func: Callable) -> Callable:
 
 
 def _figure(width: float = 6.4, height: float = 4.8):
-    """A new Figure on its own Agg canvas (no pyplot), and its single Axes."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    """A new Figure (no pyplot: a notebook shows it through its ``_repr_png_``), and its single
+    Axes. Saving uses the Agg canvas whatever the session's backend."""
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(width, height), layout="constrained")
-    FigureCanvasAgg(fig)
     return fig, fig.add_subplot()
 
 
-def _save(fig, path: str | Path) -> Path:
+def _check_path(path: str | Path | None) -> Path | None:
+    """The output path, checked before anything is drawn (None: do not save)."""
+    if path is None:
+        return None
     path = Path(path)
     if path.suffix.lower() not in _METADATA:
         raise FgcError(f"{path}: unsupported figure format {path.suffix!r}; use one of "
                        f"{sorted(_METADATA)}")
-    fig.savefig(path, metadata=_METADATA[path.suffix.lower()])
     return path
+
+
+def _finish(fig, path: str | Path | None):
+    """Save ``fig`` at ``path`` if given (Agg canvas, fixed metadata); return ``fig``."""
+    path = _check_path(path)
+    if path is not None:
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        FigureCanvasAgg(fig)
+        fig.savefig(path, metadata=_METADATA[path.suffix.lower()])
+    return fig
 
 
 # --------------------------------------------------------------------------------------------
@@ -87,14 +100,15 @@ def _positions(values) -> np.ndarray:
 
 
 @_styled
-def plot_trajectory(path: str | Path, fgc_values, gtsam_values=None, gps=None,
-                    title: str = "Trajectory (top view)") -> Path:
+def plot_trajectory(fgc_values, gtsam_values=None, gps=None,
+                    title: str = "Trajectory (top view)", path: str | Path | None = None):
     """Top view (x–y) of fgc's estimate, optionally GTSAM's and GPS fixes.
 
     In: ``fgc_values`` an fgc values dict (``Solution.values``: its Pose3, else Pose2, entries in
     order) or anything :func:`fgc.metrics.as_trajectory` accepts; ``gtsam_values`` the same or a
-    ``gtsam.Values``; ``gps`` an (N, 2|3) array of positions. Out: the written path.
+    ``gtsam.Values``; ``gps`` an (N, 2|3) array of positions; ``path`` to save. Out: the Figure.
     """
+    _check_path(path)
     fig, ax = _figure()
     est = _positions(fgc_values)
     ax.plot(est[:, 0], est[:, 1], "o-", ms=3, lw=1.5, color="tab:blue", label="fgc")
@@ -108,7 +122,7 @@ def plot_trajectory(path: str | Path, fgc_values, gtsam_values=None, gps=None,
     ax.plot(est[0, 0], est[0, 1], "k^", ms=8, label="start")
     ax.set(xlabel="x [m]", ylabel="y [m]", title=title, aspect="equal")
     ax.legend(loc="best")
-    return _save(fig, path)
+    return _finish(fig, path)
 
 
 # --------------------------------------------------------------------------------------------
@@ -117,10 +131,12 @@ def plot_trajectory(path: str | Path, fgc_values, gtsam_values=None, gps=None,
 
 
 @_styled
-def plot_latency_breakdown(path: str | Path, cycles_by_unit: Mapping[str, float],
-                           title: str = "Latency breakdown") -> Path:
+def plot_latency_breakdown(cycles_by_unit: Mapping[str, float],
+                           title: str = "Latency breakdown (model estimate)",
+                           path: str | Path | None = None):
     """Horizontal bars of cycles per hardware unit, in the given order, each labelled with its
-    cycles and share of the total. In: {unit name: cycles}. Out: the written path."""
+    cycles and share of the total. In: {unit name: cycles}; ``path`` to save. Out: the Figure."""
+    _check_path(path)
     if not cycles_by_unit:
         raise FgcError("plot_latency_breakdown: no units given")
     names = [str(k) for k in cycles_by_unit]
@@ -139,7 +155,7 @@ def plot_latency_breakdown(path: str | Path, cycles_by_unit: Mapping[str, float]
     ax.set_xlim(0, 1.35 * cycles.max() if cycles.max() > 0 else 1.0)  # room for the labels
     ax.set(xlabel="cycles", title=f"{title} — total {total:,.0f} cycles")
     ax.grid(axis="y", visible=False)
-    return _save(fig, path)
+    return _finish(fig, path)
 
 
 def pareto_front(points: Sequence[Mapping], x: str = "dsp", y: str = "latency_ms") -> list[int]:
@@ -151,12 +167,14 @@ def pareto_front(points: Sequence[Mapping], x: str = "dsp", y: str = "latency_ms
 
 
 @_styled
-def plot_pareto(path: str | Path, points: Sequence[Mapping], x: str = "dsp",
-                y: str = "latency_ms", title: str = "Design space") -> Path:
+def plot_pareto(points: Sequence[Mapping], x: str = "dsp", y: str = "latency_ms",
+                title: str = "Design space", path: str | Path | None = None):
     """Scatter of design points with the Pareto front (min x, min y) marked and joined.
 
-    In: points as dicts with keys ``x``, ``y`` and optionally ``label``. Out: the written path.
+    In: points as dicts with keys ``x``, ``y`` and optionally ``label``; ``path`` to save.
+    Out: the Figure.
     """
+    _check_path(path)
     if not points:
         raise FgcError("plot_pareto: no points given")
     missing = [i for i, p in enumerate(points) if x not in p or y not in p]
@@ -174,7 +192,42 @@ def plot_pareto(path: str | Path, points: Sequence[Mapping], x: str = "dsp",
                         textcoords="offset points", fontsize=7)
     ax.set(xlabel=x, ylabel=y, title=title)
     ax.legend(loc="best")
-    return _save(fig, path)
+    return _finish(fig, path)
+
+
+@_styled
+def plot_accuracy(solutions: Sequence[Mapping], title: str = "Accuracy vs GTSAM",
+                  path: str | Path | None = None):
+    """Largest rotation (rad) and translation (m) difference from a reference solution, one
+    column per solution, on a log axis of the errors themselves (an exact match, 0, is drawn
+    at the floor 1e-18 and labelled "0").
+
+    In: dicts with ``label``, ``rotation`` and ``translation``; ``path`` to save. Out: the
+    Figure."""
+    _check_path(path)
+    if not solutions:
+        raise FgcError("plot_accuracy: no solutions given")
+    floor = 1e-18
+    fig, ax = _figure(max(4.8, 1.2 + 1.1 * len(solutions)), 4.2)
+    xpos = np.arange(len(solutions))
+    for key, unit, marker, color, dx in (("rotation", "rad", "o", "tab:blue", -0.08),
+                                         ("translation", "m", "s", "tab:orange", 0.08)):
+        vals = np.array([float(s[key]) for s in solutions])
+        if np.any(vals < 0) or not np.all(np.isfinite(vals)):
+            raise FgcError(f"plot_accuracy: {key} errors must be finite and ≥ 0, got {vals}")
+        shown = np.maximum(vals, floor)
+        ax.scatter(xpos + dx, shown, marker=marker, s=40, color=color,
+                   label=f"max {key} error [{unit}]", zorder=3)
+        for xi, v, sv in zip(xpos + dx, vals, shown, strict=True):
+            ax.annotate(f"{v:.1e}" if v > 0 else "0", (xi, sv), xytext=(5, -3),
+                        textcoords="offset points", fontsize=7)
+    ax.set_yscale("log")
+    ax.set_xticks(xpos, [str(s["label"]) for s in solutions], rotation=15, ha="right")
+    ax.set_xlim(-0.6, len(solutions) - 0.2)
+    ax.set(ylabel="error vs reference (rad / m, log scale)", title=title)
+    ax.grid(axis="x", visible=False)
+    ax.legend(loc="best")
+    return _finish(fig, path)
 
 
 def _steps(step_words: Sequence) -> list[tuple[str, float]]:
@@ -190,11 +243,14 @@ def _steps(step_words: Sequence) -> list[tuple[str, float]]:
 
 
 @_styled
-def plot_storage_steps(path: str | Path, dense_words: float, step_words: Sequence,
-                       title: str = "Storage") -> Path:
-    """Bars of words stored: dense, then after each step, labelled with words and the reduction
-    dense/words. In: ``step_words`` as numbers, (label, words) pairs or
-    ``fgc.storage.StorageStep``s. Log scale when the bars span more than 20×. Out: the path."""
+def plot_storage_steps(dense_words: float, step_words: Sequence, title: str = "Storage",
+                       path: str | Path | None = None):
+    """Bars of words stored: dense, then after each step, on a linear axis (bar heights compare
+    as the word counts do), each labelled with its words and the reduction dense / words.
+
+    In: ``step_words`` as numbers, (label, words) pairs or ``fgc.storage.StorageStep``s;
+    ``path`` to save. Out: the Figure."""
+    _check_path(path)
     bars = [("dense", float(dense_words)), *_steps(step_words)]
     words = np.array([w for _, w in bars])
     if np.any(words <= 0) or not np.all(np.isfinite(words)):
@@ -203,13 +259,12 @@ def plot_storage_steps(path: str | Path, dense_words: float, step_words: Sequenc
     xpos = np.arange(len(bars))
     colors = ["0.55"] + ["tab:blue"] * (len(bars) - 1)
     ax.bar(xpos, words, color=colors)
-    for xi, w in zip(xpos, words, strict=True):
-        ax.annotate(f"{w:,.0f}\n{words[0] / w:.2f}×", (xi, w), ha="center", va="bottom",
+    for i, (xi, w) in enumerate(zip(xpos, words, strict=True)):
+        ratio = "dense" if i == 0 else f"{words[0] / w:.1f}× smaller"
+        ax.annotate(f"{w:,.0f}\n{ratio}", (xi, w), ha="center", va="bottom",
                     fontsize=8, xytext=(0, 2), textcoords="offset points")
-    if words.max() / words.min() > 20:
-        ax.set_yscale("log")
-    ax.set_ylim(top=words.max() * (4.0 if ax.get_yscale() == "log" else 1.2))
+    ax.set_ylim(0, words.max() * 1.2)
     ax.set_xticks(xpos, [name for name, _ in bars], rotation=15, ha="right")
-    ax.set(ylabel="words", title=title)
+    ax.set(ylabel="words (linear scale)", title=title)
     ax.grid(axis="x", visible=False)
-    return _save(fig, path)
+    return _finish(fig, path)

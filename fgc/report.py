@@ -23,7 +23,6 @@ from importlib import import_module
 from pathlib import Path
 
 from fgc.dsl import Graph
-from fgc.errors import FgcError
 
 _TEMPLATE = "report.html.jinja"
 _OP_MODES = (("unshared", "ops_unshared"), ("separate", "ops_before"), ("fused", "ops_after"),
@@ -225,20 +224,18 @@ def format_text(r: dict) -> str:
 
 
 def figures(r: dict) -> dict[str, str]:
-    """Latency-breakdown and storage figures as PNG data URIs (empty without matplotlib)."""
+    """Latency-breakdown and storage figures as PNG data URIs (FgcError with the install hint
+    without matplotlib)."""
     from fgc import plots
 
     st = r["storage"]
     out = {}
     with tempfile.TemporaryDirectory() as tmp:
-        try:
-            lat = plots.plot_latency_breakdown(Path(tmp) / "latency.png",
-                                               r["cost"]["cycles_by_unit"])
-            sto = plots.plot_storage_steps(Path(tmp) / "storage.png", st["dense_words"],
-                                           [(s["name"], s["words"]) for s in st["steps"]])
-        except FgcError:  # matplotlib is an optional extra: the page is complete without
-            return out
-        for name, path in (("Latency breakdown", lat), ("Storage", sto)):
+        lat, sto = Path(tmp) / "latency.png", Path(tmp) / "storage.png"
+        plots.plot_latency_breakdown(r["cost"]["cycles_by_unit"], path=lat)
+        plots.plot_storage_steps(st["dense_words"], [(s["name"], s["words"]) for s in st["steps"]],
+                                 path=sto)
+        for name, path in (("Latency breakdown (model estimate)", lat), ("Storage", sto)):
             out[name] = "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode()
     return out
 
