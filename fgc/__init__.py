@@ -4,6 +4,11 @@ Write factor graphs in Python (variables on Lie groups, factors as residual func
 Jacobians with sympy, schedules elimination, and emits an accelerator simulator and HLS C++.
 """
 
+# The one-call API fgc.solve / fgc.verify (imported last, below) shares its names with the
+# modules fgc/solve.py and fgc/verify.py. Both modules are loaded here, before the names are
+# bound to the functions, so that a later ``from fgc.verify import ...`` finds the module loaded
+# and does not rebind ``fgc.verify`` to it. Reach module contents with ``from fgc.verify import``.
+import fgc.verify as _verify_module  # noqa: F401
 from fgc import noise
 from fgc.dsl import Factor, FactorType, Graph, Matrix, factor
 from fgc.errors import DataError, DerivationError, DslError, FgcError, StructureError
@@ -22,6 +27,7 @@ from fgc.geometry import (
     Vector9,
     vector_type,
 )
+from fgc.solve import solve, verify  # the functions (see the comment above)
 
 __version__ = "0.1.0"
 
@@ -59,5 +65,7 @@ __all__ = [
     "factor",
     "from_gtsam",
     "noise",
+    "solve",
     "vector_type",
+    "verify",
 ]

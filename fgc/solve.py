@@ -119,3 +119,63 @@ def optimize(graph: Graph, options: SolverOptions | None = None) -> Solution:
         converged = (err <= opts.absolute_error_tol
                      or abs(decrease) <= opts.relative_error_tol * max(err_prev, 1e-300))
     return Solution(values, err, err0, it, converged)
+
+
+# --------------------------------------------------------------------------------------------
+# one-call API: fgc.solve(graph), fgc.verify(graph)
+# --------------------------------------------------------------------------------------------
+# ``fgc/__init__.py`` exports these two as ``fgc.solve`` and ``fgc.verify`` (so the attribute
+# ``fgc.solve`` is this function, not this module; import the module's other names with
+# ``from fgc.solve import optimize``).
+
+
+def _program(graph: Graph, config, options: dict, name: str):
+    from fgc.compile import compile_graph
+    from fgc.datafile import problem_data
+    from fgc.program import SolverConfig
+
+    if config is not None and options:
+        raise FgcError(f"pass either a SolverConfig or solver options, not both "
+                       f"(got config and {sorted(options)})")
+    if config is None:
+        try:
+            config = SolverConfig(**options)
+        except TypeError as exc:
+            raise FgcError(f"unknown solver option: {exc}") from None
+    program = compile_graph(graph, config, name=name)
+    return program, problem_data(graph, program)
+
+
+def solve(graph: Graph, config=None, backend: str = "sim", name: str = "problem",
+          **options):
+    """Compile ``graph`` and solve it with the accelerator simulator (``backend="sim"``) or the
+    generated native C++ solver (``"native"``): ``fgc.compile.compile_graph`` +
+    ``problem_data`` + the backend's ``run``, in one call.
+
+    In: an ``fgc.Graph``; a :class:`fgc.program.SolverConfig` or its fields as keywords
+    (``precision="float32"``, ``linear="cholesky"``, …; default: LM, QR, float64). Out: the
+    backend's result: ``.values`` (final estimate by ``str(key)``), ``.status``
+    ("converged", "max_iterations", "failed"), ``.iterations``, ``.final_error``.
+    """
+    from fgc_backends import load
+
+    if backend not in ("sim", "native"):
+        raise FgcError(f"backend must be 'sim' or 'native', got {backend!r}")
+    program, data = _program(graph, config, options, name)
+    if backend == "sim":
+        return load("sim").run(program, data)
+    hls = load("hls")
+    return hls.native.run(program, data, hls.native.default_config(program))
+
+
+def verify(graph: Graph, config=None, name: str = "problem", **options) -> dict:
+    """Solve ``graph`` with the simulator and with GTSAM's LM (tight tolerances) and compare,
+    as ``fgc verify`` does. In: as :func:`solve` (default float64). Out: the report dict:
+    ``passed``, ``max_state_error``, ``max_rotation_error``, ``max_translation_error``,
+    ``fgc_final_error``, ``gtsam_final_error``, ``iterations``, … and ``summary`` (the lines
+    ``fgc verify`` prints). Needs the ``gtsam`` package."""
+    from fgc.reporting import verify_report
+    from fgc_backends import load
+
+    program, data = _program(graph, config, options, name)
+    return verify_report(graph, program, data, load("sim"))

@@ -1,0 +1,212 @@
+"""Global and hardware options of the ``fgc`` command line: --version, -q/-v, derivation progress,
+--clock/--part/--scalar (one clock for the cost model and run_hls.tcl), "model estimate" labels,
+``fgc metrics``, and the one-call Python API ``fgc.solve`` / ``fgc.verify``.
+
+GTSAM comparison (``fgc.verify``): float64 simulator within 1e-6 tangent distance of GTSAM's LM,
+the same tolerance ``fgc verify`` applies.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import fgc
+from fgc.cli import derive_with_progress, main
+
+ROOT = Path(__file__).resolve().parent.parent
+BEACONS = str(ROOT / "examples" / "range_beacons.py")
+
+
+def _beacons_graph():
+    sys.path.insert(0, str(ROOT / "examples"))
+    try:
+        import range_beacons
+    finally:
+        sys.path.pop(0)
+    return range_beacons.build(steps=8)
+
+
+def test_version(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--version"])
+    assert exc.value.code == 0
+    assert capsys.readouterr().out.strip() == f"fgc {fgc.__version__}"
+
+
+@pytest.mark.parametrize("argv", [["-q", "simulate", BEACONS], ["simulate", BEACONS, "-q"]])
+def test_quiet_prints_only_the_result_line(argv, capsys):
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert out.count("\n") == 1 and out.startswith("fgc simulate: 22 variables, float32: "
+                                                   "converged")
+
+
+def test_quiet_verify_prints_the_verdict(capsys):
+    assert main(["verify", BEACONS, "-q", "-p", "steps=8"]) == 0
+    assert capsys.readouterr().out == f"fgc verify {BEACONS}: PASSED\n"
+
+
+def test_verbose_adds_stage_timings_on_stderr_only(capsys):
+    assert main(["simulate", BEACONS]) == 0
+    plain = capsys.readouterr()
+    assert main(["-v", "simulate", BEACONS]) == 0
+    verbose = capsys.readouterr()
+    assert verbose.out == plain.out  # stdout stays deterministic
+    for stage in ("load spec", "compile", "simulate"):
+        assert f"fgc: {stage}: " in verbose.err
+    assert plain.err == ""
+
+
+def test_progress_line_only_for_cold_derivations(tmp_path, monkeypatch, capsys):
+    monkeypatch.setenv("FGC_CACHE_DIR", str(tmp_path / "cache"))
+
+    @fgc.factor(name="CliProgressProbe")
+    def probe(p: fgc.Point2, *, target: fgc.Point2):
+        return p - target
+
+    graph = fgc.Graph()
+    graph.add_variable("p", fgc.Point2(1.0, 2.0))
+    graph.add(probe("p", target=fgc.Point2(0.0, 0.0), noise=fgc.noise.isotropic(2, 1.0)))
+    assert derive_with_progress(graph, show=True) == 1
+    assert "fgc: deriving factor CliProgressProbe (1/1, not cached" in capsys.readouterr().err
+    assert derive_with_progress(graph, show=True) == 0  # now cached: silent
+    assert capsys.readouterr().err == ""
+
+
+def test_quiet_never_shows_progress():
+    from argparse import Namespace
+
+    from fgc.cli import _show_progress
+
+    assert not _show_progress(Namespace(quiet=True, verbose=0))
+    assert _show_progress(Namespace(quiet=False, verbose=1))
+
+
+def test_clock_reaches_the_cost_model_and_run_hls_tcl(tmp_path, capsys):
+    assert main(["simulate", BEACONS, "--clock", "7ns", "--json", str(tmp_path / "s.json")]) == 0
+    assert json.loads((tmp_path / "s.json").read_text())["clock_mhz"] == pytest.approx(1000 / 7)
+    out = tmp_path / "hls"
+    assert main(["compile", BEACONS, "--backend", "hls", "--out", str(out), "--clock", "200MHz",
+                 "--part", "xczu9eg-ffvb1156-2-e", "--scalar", "double", "-q"]) == 0
+    tcl = (out / "run_hls.tcl").read_text()
+    assert "create_clock -period 5.0 -name default" in tcl
+    assert "set_part {xczu9eg-ffvb1156-2-e}" in tcl
+    program = json.loads((out / "program.json").read_text())
+    assert program["solver"]["clock_mhz"] == 200.0
+    assert program["solver"]["precision"] == "float64"  # implied by --scalar double
+    assert "typedef double T;" in (out / "range_beacons.h").read_text()
+
+
+def test_emit_rejects_two_clocks(tmp_path):
+    from fgc.compile import compile_graph
+    from fgc.program import SolverConfig
+    from fgc_backends import hls
+
+    program = compile_graph(_beacons_graph(), SolverConfig(clock_mhz=200.0), name="beacons")
+    with pytest.raises(hls.HlsConfigError, match=r"clock mismatch: .* 200 MHz .*clock_ns=7"):
+        hls.emit(program, tmp_path, hls.HlsConfig(scalar="double"))
+    hls.emit(program, tmp_path, hls.HlsConfig(scalar="double", clock_ns=5.0))  # agrees
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--scalar", "ap_fixed<0,0>"],
+     "width W=0"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--scalar", "ap_fixed<2000,10>"],
+     "width W=2000"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--scalar", "ap_fixed<16,20>"],
+     "integer bits I=20"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--scalar", "int"],
+     "expected 'float', 'double' or 'ap_fixed<W,I>'"),
+    (["simulate", BEACONS, "--clock", "5GHz"], "expected a frequency like 143MHz"),
+    (["simulate", BEACONS, "--clock", "0"], "must be positive"),
+    (["simulate", BEACONS, "--clock", "5000MHz"], "outside 1 MHz"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--part", "a;b"], "plain part name"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--scalar", "double",
+      "--precision", "float32"], "--scalar double contradicts --precision float32"),
+    (["compile", BEACONS, "--out", "x", "--scalar", "float"], "apply to --backend hls only"),
+])
+def test_bad_hardware_options_exit_2_with_one_line(argv, needle, capsys, tmp_path,
+                                                   monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert needle in err and err.count("\n") == 1, err
+
+
+def test_modelled_figures_are_labelled(capsys):
+    assert main(["simulate", BEACONS]) == 0
+    out = capsys.readouterr().out
+    assert "accelerator (model estimate): " in out and "resources (model estimate): " in out
+    assert main(["report", BEACONS, "--iterations", "3"]) == 0
+    out = capsys.readouterr().out
+    assert "fits xc7z045 (model estimate)" in out
+    assert "Modelled cycles by unit (whole solve; model estimate)" in out
+    assert main(["report", BEACONS, "--iterations", "3", "-q"]) == 0
+    line = capsys.readouterr().out
+    assert line.count("\n") == 1 and line.rstrip().endswith("fits xc7z045 (model estimate)")
+
+
+def _helix(n: int = 15):
+    from fgc.geometry import Pose3, Rot3
+
+    return [(0.1 * i, Pose3(Rot3.Expmap(np.array([0.1, -0.2, 0.4 * i])),
+                            np.array([3 * np.cos(0.4 * i), 3 * np.sin(0.4 * i), 0.2 * i])))
+            for i in range(n)]
+
+
+def test_metrics_command(tmp_path, capsys):
+    """EST is REF with every orientation turned by 10° about a fixed body axis and every
+    position moved by (0.3, 0, 0.4) m: ATE 0.5 m and 10° at every pose without alignment."""
+    from fgc.geometry import Pose3, Rot3
+    from fgc.metrics import ate, read_tum, rpe, write_tum
+
+    ref = _helix()
+    turn = Rot3.Expmap(np.radians(10.0) * np.array([1.0, 0.0, 0.0])).R
+    est = [(t, Pose3(Rot3(p.r.R @ turn), p.t + np.array([0.3, 0.0, 0.4]))) for t, p in ref]
+    ref_f, est_f = write_tum(tmp_path / "ref.tum", ref), write_tum(tmp_path / "est.tum", est)
+    out = tmp_path / "m.json"
+    assert main(["metrics", str(est_f), str(ref_f), "--json", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "ATE translation [  m]  rmse 0.5 " in text and "ATE rotation    [deg]  rmse 10 " in text
+    res = json.loads(out.read_text())
+    assert res["ate_translation"]["rmse"] == pytest.approx(0.5, rel=1e-12)
+    assert res["ate_rotation"]["max"] == pytest.approx(10.0, rel=1e-12)
+    assert res["ate_rotation"]["unit"] == "deg"
+    assert main(["metrics", str(est_f), str(ref_f), "--align", "sim3", "--delta", "2",
+                 "--all-pairs", "--json", str(out), "-q"]) == 0
+    assert capsys.readouterr().out.startswith("ATE translation")
+    res = json.loads(out.read_text())
+    e, r = read_tum(est_f), read_tum(ref_f)
+    want = rpe(e, r, delta=2, align="sim3", all_pairs=True, relation="rotation")
+    assert res["rpe_rotation"]["rmse"] == pytest.approx(want.rmse, rel=1e-12)
+    assert res["ate_translation"]["rmse"] == pytest.approx(ate(e, r, align="sim3").rmse,
+                                                           rel=1e-12)
+    assert res["alignment"]["scale"] == pytest.approx(want.alignment.scale)
+
+
+def test_metrics_bad_input(tmp_path, capsys):
+    bad = tmp_path / "bad.tum"
+    bad.write_text("0 1 2 3\n")
+    assert main(["metrics", str(bad), str(bad)]) == 2
+    err = capsys.readouterr().err
+    assert "bad.tum" in err and err.count("\n") == 1
+
+
+def test_one_call_solve_and_verify():
+    graph = _beacons_graph()
+    result = fgc.solve(graph)
+    assert result.status == "converged"
+    report = fgc.verify(graph)
+    assert report["passed"] and report["max_state_error"] <= 1e-6
+    assert result.final_error == pytest.approx(report["gtsam_final_error"], rel=1e-6)
+    f32 = fgc.solve(graph, precision="float32", linear="cholesky")
+    assert f32.status == "converged"
+    with pytest.raises(fgc.FgcError, match="unknown solver option"):
+        fgc.solve(graph, precisionn="float32")
+    with pytest.raises(fgc.FgcError, match="backend must be"):
+        fgc.solve(graph, backend="fpga")
