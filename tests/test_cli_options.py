@@ -210,3 +210,14 @@ def test_one_call_solve_and_verify():
         fgc.solve(graph, precisionn="float32")
     with pytest.raises(fgc.FgcError, match="backend must be"):
         fgc.solve(graph, backend="fpga")
+
+
+@pytest.mark.heavy
+def test_one_call_native_follows_the_program_clock():
+    """``fgc.solve(..., backend="native")`` at a non-default clock builds the C++ with that
+    clock (no clock-mismatch error) and matches the float64 simulator to 1e-9 relative."""
+    graph = _beacons_graph()
+    sim = fgc.solve(graph)
+    native = fgc.solve(graph, backend="native", clock_mhz=200.0)
+    assert native.status == "converged"
+    assert native.final_error == pytest.approx(sim.final_error, rel=1e-9)

@@ -31,8 +31,9 @@ class HlsConfig:
     """Options of the HLS backend.
 
     - ``scalar``: the C++ scalar type ``T`` of the whole accelerator: ``"float"`` (paper A and B's
-      hardware), ``"double"``, or ``"ap_fixed<W,I>"`` (needs the Xilinx ``ap_types`` headers of the
-      optional ``hls4ml`` package; see :func:`ap_types_include`).
+      hardware), ``"double"``, or ``"ap_fixed<W,I>"`` with 2 ≤ W ≤ 1024 and 1 ≤ I ≤ W
+      (:func:`check_scalar`; needs the Xilinx ``ap_types`` headers of the optional ``hls4ml``
+      package; see :func:`ap_types_include`). ``fgc compile --scalar`` sets it.
     - ``linear_scalar``: the scalar type ``L`` of the linear-equation solver alone (Hessian
       accumulation, elimination, back-substitution; ``"float"`` or ``"double"``, at least as
       wide as ``scalar``), the mixed design; ``None`` means ``scalar``, or ``"double"`` for a
