@@ -351,7 +351,11 @@ def _cmd_sweep(args) -> int:
     from fgc import sweep
     from fgc.program import SolverConfig
 
+    args.stages = _Stages(args)
     graph = load_spec(args.spec, parse_params(args.param))
+    args.stages.done("load spec")
+    if derive_with_progress(graph, _show_progress(args)):
+        args.stages.done("derive (cold)")
     designs = sweep.design_space(args.units, args.cpe, args.precision, args.linear)
     base = SolverConfig(method=args.solver, ordering=args.ordering,
                         max_iterations=args.max_iterations, **_clock_mhz(args))
