@@ -1,6 +1,6 @@
 """fgc.metrics: TUM files, ATE and RPE on hand-computable trajectories, and against evo.
 
-Tolerances: hand-computed cases to 1e-12; evo (when installed) to 1e-9.
+Tolerances: hand-computed cases to 1e-12; evo (a test dependency) to 1e-9.
 """
 
 from __future__ import annotations
