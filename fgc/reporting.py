@@ -242,6 +242,7 @@ def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = Non
     """Run the simulator, then the cost model for the iterations it took."""
     cost_model = import_module(f"{sim.__name__}.cost")  # the backend's own cost model
     result = sim.run(program, data)
+    require_finite_start(graph, result)
     cost = cost_model.estimate(program, iterations=max(result.iterations, 1))
     storage = program.storage
     report = {
@@ -281,7 +282,8 @@ def _simulate_summary(r: dict, n_vars: int) -> list[str]:
     res = r["resources"]
     return [
         f"fgc simulate: {n_vars} variables, {_precision_text(r)}: {r['status']} after "
-        f"{r['iterations']} iterations, error {r['initial_error']:.6g} → {r['final_error']:.10g}",
+        f"{r['iterations']} iterations, error {_number(r['initial_error'], '.6g')} → "
+        f"{_number(r['final_error'], '.10g')}",
         f"  accelerator: {r['cycles']:,} cycles = {r['latency_ms']:.3f} ms at "
         f"{r['clock_mhz']:g} MHz, energy {r['energy_mj']:.3f} mJ ({r['power_w']:.2f} W)",
         f"  resources: {res['dsp']} DSP, {res['bram']:g} BRAM36, {res['lut']:,} LUT, "
@@ -289,3 +291,7 @@ def _simulate_summary(r: dict, n_vars: int) -> list[str]:
         f"  storage: {r['storage']['stored_words']:,} words "
         f"(dense {r['storage']['dense_words']:,})",
     ]
+
+
+def _number(x: float | None, fmt: str) -> str:
+    return "not finite" if x is None or not np.isfinite(x) else format(x, fmt)
