@@ -254,7 +254,9 @@ def _cmd_simulate(args) -> int:
     graph, program, data = _compile(args, "float32")
     try:
         report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot)
-    except OSError as exc:  # the plots: the numbers are lost otherwise, say where it failed
+    except OSError as exc:
+        if not args.plot or not str(getattr(exc, "filename", "")).startswith(args.plot):
+            raise
         raise FgcError(f"--plot {args.plot}: cannot write the plots: "
                        f"{exc.strerror or exc}{_filename(exc)}") from None
     for line in report.pop("summary"):
