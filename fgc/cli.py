@@ -2,14 +2,15 @@
 
     fgc compile  SPEC --backend sim|hls --out DIR     emit a backend project (+ program.json, data)
     fgc simulate SPEC [--json F]                      run the accelerator simulator, report cost
-    fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 on mismatch
+    fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
     fgc run      SPEC --backend native|sim            solve with the generated solver
     fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
     fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
 
 SPEC is a ``.py`` file with ``build(**params)`` returning an ``fgc.Graph`` (``-p KEY=VALUE``), or a
 g2o/TORO file. Solver options are shared by every command. Exit codes: 0 success, 1 verification
-failed (or a solve did not converge), 2 bad input (one clear line on stderr).
+failed (or a solve did not converge), 2 bad input, a non-finite initial error, an output that
+cannot be written or an internal error (one clear line on stderr, never a traceback).
 """
 
 from __future__ import annotations
@@ -465,7 +466,7 @@ _COMMANDS = (
     ("simulate", _cmd_simulate, "run the accelerator simulator: numbers, cycles, resources",
      "the simulator did not converge", "also write the report as JSON"),
     ("verify", _cmd_verify, "solve with the simulator and with GTSAM and compare",
-     "the simulator does not match GTSAM", "also write the report as JSON"),
+     "FAILED (the verdict line says why)", "also write the report as JSON"),
     ("run", _cmd_run, "solve with the generated native solver (or the simulator)",
      "the solve did not converge", "also write the report as JSON"),
     ("report", _cmd_report, "the compiled design at a glance: blocks, schedule, storage, "
