@@ -295,9 +295,6 @@ def _as_float_vector(out) -> np.ndarray:
     return np.array([float(x) for x in arr], dtype=np.float64)
 
 
-_NUMERIC_CHECKED: set[str] = set()  # fingerprints of factor types whose check passed
-
-
 def check_numeric_evaluation(f: Factor, rtol: float = 1e-9) -> None:
     """Check, once per factor type, that the residual function means the same on numbers as on
     fgc's symbolic stand-ins, at random values near the identity and ``f``'s measurements.
@@ -306,7 +303,7 @@ def check_numeric_evaluation(f: Factor, rtol: float = 1e-9) -> None:
     matrices a product) would otherwise make the independent side silently wrong. The symbolic
     side here is a fresh trace of the function (not the derived kernel, not the cache)."""
     ftype = f.type
-    if ftype.fingerprint() in _NUMERIC_CHECKED:
+    if getattr(ftype, "_numeric_check_passed", False):  # once per factor type object
         return
     rng = np.random.default_rng(0)
     values = [a.type.identity().retract(rng.normal(size=a.type.dim) * 0.3)
@@ -335,7 +332,7 @@ def check_numeric_evaluation(f: Factor, rtol: float = 1e-9) -> None:
                                       f"symbolic stand-ins {traced.tolist()} at the same values; "
                                       "a construct means something else in NumPy than in "
                                       "sympy, e.g. `*` of two vectors"))
-    _NUMERIC_CHECKED.add(ftype.fingerprint())
+    ftype._numeric_check_passed = True
 
 
 def _read_gtsam(values, t: type[LieGroup], key: int):
