@@ -269,7 +269,8 @@ def test_matching_answers_at_the_limit_pass_and_say_so(capsys):
 
 @pytest.mark.heavy
 def test_w10000_passes(capsys, tmp_path):
-    """GTSAM's example w10000.graph (10000 Pose2, 64312 factors; ~4 min on one core)."""
+    """GTSAM's example w10000.graph (10000 Pose2, 64312 factors): 5.3 min wall for
+    `fgc verify w10000.graph`, 11 min under pytest, on the shared 2-core machine."""
     out = tmp_path / "v.json"
     code, text = _verify(["w10000.graph", "--json", str(out)], capsys)
     assert code == EXIT_OK, text
