@@ -2,7 +2,7 @@
 
     fgc compile  SPEC --backend sim|hls --out DIR     emit a backend project (+ program.json, data)
     fgc simulate SPEC [--json F]                      run the accelerator simulator, report cost
-    fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 on mismatch
+    fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
     fgc run      SPEC --backend native|sim            solve with the generated solver
     fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
     fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
@@ -10,8 +10,9 @@
 
 SPEC is a ``.py`` file with ``build(**params)`` returning an ``fgc.Graph`` (``-p KEY=VALUE``), or a
 g2o/TORO file. Solver options are shared by every command. Exit codes: 0 success, 1 verification
-failed (or a solve did not converge), 2 bad input (one clear line on stderr). Global options:
-``--version``; ``-q`` prints only the result line; ``-v`` adds stage timings (stderr) and
+failed (or a solve did not converge), 2 bad input, a non-finite initial error, an output that
+cannot be written or an internal error (one clear line on stderr, never a traceback). Global
+options: ``--version``; ``-q`` prints only the result line; ``-v`` adds stage timings (stderr) and
 progress while factors are derived for the first time (also shown when stderr is a terminal).
 """
 
@@ -250,7 +251,53 @@ def _name(spec: str) -> str:
 
 def _write_json(path: str | None, report: dict) -> None:
     if path:
-        Path(path).write_text(json.dumps(report, indent=2, sort_keys=True) + "\n")
+        _write_text(path, json.dumps(report, indent=2, sort_keys=True) + "\n", "--json")
+
+
+def _write_text(path: str, text: str, option: str) -> None:
+    """Write a user-named output file; an OSError becomes one line naming the path."""
+    try:
+        Path(path).write_text(text)
+    except OSError as exc:
+        raise FgcError(f"{option} {path}: cannot write the file: "
+                       f"{exc.strerror or exc}") from None
+
+
+# options naming an output, and whether each is a folder (checked before any solve starts)
+_OUTPUTS = (("json", "--json", False), ("html", "--html", False), ("out", "--out", True),
+            ("plot", "--plot", True))
+
+
+def check_outputs(args) -> None:
+    """Raise FgcError naming the path if an output given on the command line cannot be written,
+    before the (possibly long) solve, so no result is computed only to be lost."""
+    for attr, option, folder in _OUTPUTS:
+        path = getattr(args, attr, None)
+        if path:
+            _check_writable(str(path), option, folder)
+
+
+def _check_writable(path: str, option: str, folder: bool) -> None:
+    p = Path(path)
+    if folder:
+        if p.exists() and not p.is_dir():
+            raise FgcError(f"{option} {path}: exists and is not a folder")
+        target = p
+        while not target.exists() and target != target.parent:
+            target = target.parent
+        if not target.is_dir():
+            raise FgcError(f"{option} {path}: cannot create the folder: {target} is not a "
+                           "folder")
+    else:
+        if p.is_dir():
+            raise FgcError(f"{option} {path}: is a folder, not a file")
+        target = p.parent
+        if not target.is_dir():
+            raise FgcError(f"{option} {path}: the folder {target} does not exist")
+        if p.exists() and not os.access(p, os.W_OK):
+            raise FgcError(f"{option} {path}: the file is not writable")
+    if not os.access(target, os.W_OK | os.X_OK):
+        raise FgcError(f"{option} {path}: no permission to write in {target}")
 
 
 def _backend(name: str):
@@ -269,17 +316,21 @@ def _cmd_compile(args) -> int:
     from fgc.datafile import write_data
 
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    (out / "program.json").write_text(program.to_json())
-    write_data(data, out / "data.txt")
-    backend = _backend(args.backend)
-    if args.backend == "hls":
-        project = backend.emit(program, out, _hls_config(args, program))
-        files = list(project.files)
-    else:
-        if getattr(args, "scalar", None) or getattr(args, "part", None):
-            raise UsageError("fgc compile: --scalar and --part apply to --backend hls only")
-        files = backend.emit(program, out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "program.json").write_text(program.to_json())
+        write_data(data, out / "data.txt")
+        backend = _backend(args.backend)
+        if args.backend == "hls":
+            project = backend.emit(program, out, _hls_config(args, program))
+            files = list(project.files)
+        else:
+            if getattr(args, "scalar", None) or getattr(args, "part", None):
+                raise UsageError("fgc compile: --scalar and --part apply to --backend hls only")
+            files = backend.emit(program, out)
+    except OSError as exc:
+        raise FgcError(f"--out {out}: cannot write the project: "
+                       f"{exc.strerror or exc}{_filename(exc)}") from None
     _print(args, [f"fgc compile {args.spec}: {len(program.variables)} variables, "
                   f"{len(program.factors)} block instances → {out}/ ({len(files) + 2} files)"])
     return EXIT_OK
@@ -289,11 +340,21 @@ def _c_scalar(program) -> str:
     return "float" if program.solver.precision == "float32" else "double"
 
 
+def _filename(exc: OSError) -> str:
+    return f" ({exc.filename})" if getattr(exc, "filename", None) else ""
+
+
 def _cmd_simulate(args) -> int:
     from fgc.reporting import simulate_report
 
     graph, program, data = _compile(args, "float32")
-    report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot)
+    try:
+        report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot)
+    except OSError as exc:
+        if not args.plot or not str(getattr(exc, "filename", "")).startswith(args.plot):
+            raise
+        raise FgcError(f"--plot {args.plot}: cannot write the plots: "
+                       f"{exc.strerror or exc}{_filename(exc)}") from None
     _print(args, report.pop("summary"))
     _write_json(args.json, report)
     return EXIT_OK if report["status"] == "converged" else EXIT_FAILED
@@ -321,10 +382,14 @@ def _cmd_run(args) -> int:
             raise UsageError("fgc run: --scalar and --part apply to --backend native only")
         result = _backend("sim").run(program, data)
         status, final, iters = result.status, result.final_error, result.iterations
+    from fgc.reporting import require_finite_start
+
+    require_finite_start(graph, result)
     report = {"backend": args.backend, "status": status, "final_error": final,
               "iterations": iters}
+    final_text = f"{final:.10g}" if final is not None else "not finite"
     _print(args, [f"fgc run {args.spec} ({args.backend}): {status}, {iters} iterations, "
-                  f"final error {final:.10g}"])
+                  f"final error {final_text}"])
     _write_json(args.json, report)
     return EXIT_OK if status == "converged" else EXIT_FAILED
 
@@ -343,7 +408,7 @@ def _cmd_report(args) -> int:
            "(model estimate)")
     _write_json(args.json, report)
     if args.html:
-        Path(args.html).write_text(render_html(report, figures(report)))
+        _write_text(args.html, render_html(report, figures(report)), "--html")
     return EXIT_OK
 
 
@@ -612,7 +677,7 @@ _COMMANDS = (
     ("simulate", _cmd_simulate, "run the accelerator simulator: numbers, cycles, resources",
      "the simulator did not converge", "also write the report as JSON"),
     ("verify", _cmd_verify, "solve with the simulator and with GTSAM and compare",
-     "the simulator does not match GTSAM", "also write the report as JSON"),
+     "FAILED (the verdict line says why)", "also write the report as JSON"),
     ("run", _cmd_run, "solve with the generated native solver (or the simulator)",
      "the solve did not converge", "also write the report as JSON"),
     ("report", _cmd_report, "the compiled design at a glance: blocks, schedule, storage, "
@@ -648,21 +713,38 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Run one command; every error reaches the user as one line on stderr (exit 2), never as a
+    traceback (set FGC_TRACEBACK=1 to see the traceback of an unexpected error)."""
     args = None
     try:
         args = build_parser().parse_args(argv)
+        check_outputs(args)
         return args.func(args)
     except UsageError as exc:
         print(str(exc), file=sys.stderr)
         return EXIT_BAD_INPUT
     except FgcError as exc:
-        spec, text = getattr(args, "spec", None), str(exc)
-        where = f"{spec}: " if spec and spec not in text else ""  # which spec, if not said
-        print(f"fgc: error: {where}{text}", file=sys.stderr)
+        _error_line(args, str(exc))
         return EXIT_BAD_INPUT
     except BrokenPipeError:  # output piped into e.g. `head`: stop quietly, like other tools
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush
         return EXIT_OK
+    except OSError as exc:  # a file the user named (spec, data, output) cannot be read/written
+        _error_line(args, f"{exc.strerror or exc}{_filename(exc)}")
+        return EXIT_BAD_INPUT
+    except Exception as exc:
+        if os.environ.get("FGC_TRACEBACK"):
+            raise
+        _error_line(args, f"internal error (a bug in fgc; FGC_TRACEBACK=1 shows the traceback): "
+                          f"{type(exc).__name__}: {exc}")
+        return EXIT_BAD_INPUT
+
+
+def _error_line(args, text: str) -> None:
+    spec = getattr(args, "spec", None)
+    where = f"{spec}: " if spec and spec not in text else ""  # which spec, if not said
+    line = " ".join(f"fgc: error: {where}{text}".split())  # one line, whatever the message
+    print(line, file=sys.stderr)
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@ from importlib import import_module
 from pathlib import Path
 
 from fgc.dsl import Graph
+from fgc.reporting import require_finite_start
 
 _TEMPLATE = "report.html.jinja"
 _OP_MODES = (("unshared", "ops_unshared"), ("separate", "ops_before"), ("fused", "ops_after"),
@@ -55,6 +56,7 @@ def design_report(spec: str, params: dict, graph: Graph, program, data, sim,
     solve = {"source": "--iterations", "iterations": iterations}
     if iterations is None:
         result = sim.run(program, data)
+        require_finite_start(graph, result)
         solve = {"source": "simulator", "iterations": result.iterations,
                  "status": result.status, "reason": result.reason,
                  "initial_error": result.initial_error, "final_error": result.final_error}

@@ -86,3 +86,92 @@ def test_malformed_g2o_line_names_the_line(tmp_path, capsys):
 def test_g2o_file_from_gtsam_data_by_name(capsys):
     assert main(["simulate", "pose3example.txt", "--precision", "float64"]) == EXIT_OK
     assert "5 variables" in capsys.readouterr().out
+
+
+# --------------------------------------------------------------------------------------------
+# exit codes: non-finite starts, unwritable outputs, no tracebacks
+# --------------------------------------------------------------------------------------------
+
+INF_SPEC = '''
+import fgc
+from fgc import Point2, noise
+
+
+@fgc.factor
+def inverse_x(p: Point2, *, target: float):
+    return [1 / p.x() - target, p.y()]
+
+
+def build():
+    g = fgc.Graph()
+    g.add_variable("p", Point2(0.0, 1.0))
+    g.add(inverse_x("p", target=1.0, noise=noise.isotropic(2, 0.1)))
+    return g
+'''
+
+
+@pytest.mark.parametrize("command", ["simulate", "verify", "report"])
+def test_non_finite_initial_error_is_bad_input(command, tmp_path, capsys):
+    spec = tmp_path / "inf.py"
+    spec.write_text(INF_SPEC)
+    assert main([command, str(spec)]) == EXIT_BAD_INPUT
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert "initial values is not finite" in err and "factor 'inverse_x'" in err
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["simulate", "--json", "{tmp}/no/such/dir/s.json"], "--json {tmp}/no/such/dir/s.json"),
+    (["verify", "--json", "{tmp}"], "is a folder"),
+    (["run", "--backend", "sim", "--json", "{tmp}/file.txt/r.json"], "file.txt does not exist"),
+    (["report", "--html", "{tmp}/no/r.html"], "--html {tmp}/no/r.html"),
+    (["compile", "--out", "{tmp}/file.txt/out"], "file.txt is not a folder"),
+    (["simulate", "--plot", "{tmp}/file.txt"], "--plot {tmp}/file.txt: exists and is not a folder"),
+])
+def test_unwritable_output_is_one_line_before_the_solve(argv, needle, tmp_path, capsys):
+    (tmp_path / "file.txt").write_text("a file, not a folder\n")
+    argv = [a.replace("{tmp}", str(tmp_path)) for a in argv]
+    spec = str(EXAMPLES / "pose_graph.py")
+    assert main([argv[0], spec, "-p", "dataset=pose3example.txt", *argv[1:]]) == EXIT_BAD_INPUT
+    captured = capsys.readouterr()
+    assert captured.out == ""  # refused before solving: nothing was computed and lost
+    err = captured.err.strip()
+    assert len(err.splitlines()) == 1 and needle.replace("{tmp}", str(tmp_path)) in err
+
+
+def test_write_failure_after_the_solve_keeps_the_result(tmp_path, capsys, monkeypatch):
+    """A file that becomes unwritable during the solve: the summary is printed first, then one
+    line naming the path (exit 2)."""
+    import fgc.cli
+
+    out = tmp_path / "s.json"
+    write_text = fgc.cli.Path.write_text
+
+    def refuse(self, *args, **kwargs):
+        if str(self) == str(out):
+            raise PermissionError(13, "Permission denied", str(self))
+        return write_text(self, *args, **kwargs)
+
+    monkeypatch.setattr(fgc.cli.Path, "write_text", refuse)
+    code = main(["simulate", str(EXAMPLES / "pose_graph.py"), "-p", "dataset=pose3example.txt",
+                 "--precision", "float64", "--json", str(out)])
+    assert code == EXIT_BAD_INPUT
+    captured = capsys.readouterr()
+    assert "fgc simulate: 5 variables" in captured.out
+    assert captured.err.strip() == (f"fgc: error: {EXAMPLES / 'pose_graph.py'}: --json {out}: "
+                                    "cannot write the file: Permission denied")
+
+
+def test_unexpected_error_is_one_line(monkeypatch, capsys):
+    import fgc.reporting
+
+    def broken(*args, **kwargs):
+        raise ZeroDivisionError("float division by zero")
+
+    monkeypatch.setattr(fgc.reporting, "simulate_report", broken)
+    monkeypatch.delenv("FGC_TRACEBACK", raising=False)
+    code = main(["simulate", str(EXAMPLES / "pose_graph.py"), "-p", "dataset=pose3example.txt"])
+    assert code == EXIT_BAD_INPUT
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert "internal error" in err and "ZeroDivisionError: float division by zero" in err
