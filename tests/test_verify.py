@@ -56,7 +56,22 @@ def _old_range_to_beacon(pose: Pose2, beacon: Point2, *, measured: float):
     return [1.05 * pose.range(beacon) - measured]
 
 
-def test_stale_derivation_fails(monkeypatch, capsys, tmp_path):
+
+@pytest.fixture
+def private_cache(monkeypatch, tmp_path):
+    """A derivation cache and in-process memos of the test's own: a test that plants a stale or
+    wrong derivation must not leave kernels built from it where later compiles find them."""
+    import fgc.fuse
+    import fgc.lower
+    import fgc.storage
+
+    monkeypatch.setenv("FGC_CACHE_DIR", str(tmp_path / "fgc-cache"))
+    monkeypatch.setattr(fgc.fuse, "_MEMO", {})
+    monkeypatch.setattr(fgc.lower, "_LOWERED", {})
+    monkeypatch.setattr(fgc.storage, "_STRUCTURES", {})
+
+
+def test_stale_derivation_fails(monkeypatch, capsys, tmp_path, private_cache):
     current = _example_factor_type("range_to_beacon")
     stale = derive(_old_range_to_beacon, use_cache=False)
     monkeypatch.setitem(fgc.derive._MEMO, _memo_key(current), stale)
@@ -70,7 +85,7 @@ def test_stale_derivation_fails(monkeypatch, capsys, tmp_path):
     assert check["range_to_beacon"]["passed"] is False
 
 
-def test_scaled_jacobian_fails(monkeypatch, capsys):
+def test_scaled_jacobian_fails(monkeypatch, capsys, private_cache):
     """A kernel whose Jacobians are 2 % off (the residual right): the optimum does not move,
     only the linearisation comparison can see it."""
     current = _example_factor_type("range_to_beacon")
