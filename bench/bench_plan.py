@@ -31,7 +31,7 @@ PAPERS = {
 }
 
 
-def row(label, program, **opts):
+def row(label, program, **opts) -> float:
     program = dataclasses.replace(program, solver=dataclasses.replace(program.solver, **opts))
     plan = build_plan(program, PlanOptions.of(program))
     c = plan_cost(plan)
@@ -41,16 +41,20 @@ def row(label, program, **opts):
     print(f"{label:28s} plan {c.latency_ms:8.3f} ms  {c.dsp:4d} DSP {c.bram36:6.1f} BRAM36 "
           f"{c.lut:7d} LUT {c.ff:7d} FF {fits:10s} | today {today.iteration_latency_ms:8.3f} ms "
           f"{r.dsp:4d} DSP {r.bram:6.1f} BRAM36")
+    return c.latency_ms
 
 
 def main() -> None:
     graph = lio.build(N=30)
     print("LIO N=30, GN + QR, float32")
+    ms = {}
     for ordering in ("two-ended", "serial"):
         p = compile_graph(graph, SolverConfig(method="gn", linear="qr", ordering=ordering,
                                               precision="float32"))
         for u in (1, 4, 8):
-            row(f"  {ordering} n_u={u}", p, units=u)
+            ms[ordering, u] = row(f"  {ordering} n_u={u}", p, units=u)
+    print("  plan serial / two-ended: " + ", ".join(
+        f"n_u={u} {ms['serial', u] / ms['two-ended', u]:.2f}x" for u in (1, 4, 8)))
     print("  " + PAPERS["lio"])
     p = compile_graph(imu_window.build(N=50),
                       SolverConfig(method="lm", linear="cholesky", precision="float32"))

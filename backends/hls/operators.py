@@ -17,7 +17,10 @@ Sources:
   models agree until someone reads the tables. Structure that *is* PG060's own description (and
   not a number): the add/sub and multiply cores use DSP48E1 slices in "full usage", divide and
   square root are LUT/FF-only iterative-digit designs whose latency grows with the fraction
-  width (≈ mantissa bits + a few cycles), and compare is a LUT-only core.
+  width (≈ mantissa bits + a few cycles), and compare is a LUT-only core. The core's older
+  data sheet (DS816, v6.0, which adds Zynq-7000 to the families) lists reciprocal and
+  reciprocal square root among its operators; whether Vitis HLS binds ``1/sqrt(x)`` to that
+  operator was not established, so ``recip_sqrt`` is costed as sqrt then divide.
 - **UG1399**: *Vitis HLS User Guide*, "HLS Math Library": functions in ``hls_math.h`` are
   synthesisable bit-approximate implementations (1-4 ULP) in single and double precision. The
   guide gives no latency/resource table for them; latency and cost here are ``assumed``.
