@@ -41,6 +41,8 @@ def row(label, program, **opts) -> float:
     print(f"{label:28s} plan {c.latency_ms:8.3f} ms  {c.dsp:4d} DSP {c.bram36:6.1f} BRAM36 "
           f"{c.lut:7d} LUT {c.ff:7d} FF {fits:10s} | today {today.iteration_latency_ms:8.3f} ms "
           f"{r.dsp:4d} DSP {r.bram:6.1f} BRAM36")
+    if opts.get("units") == 1 or opts.get("cpe") == 5:
+        print("      DSP by unit: " + ", ".join(f"{n} {d}" for n, d in c.dsp_by_unit if d))
     return c.latency_ms
 
 

@@ -104,7 +104,7 @@ def test_cost_of_a_hand_made_plan():
     # dataflow: slowest (a: 37) + fill of b (its first depth, 9) = 46; sequential 37 + 13 = 50
     assert c.phase_cycles == (("flow", 46), ("seq", 50)) and c.cycles == 96
     # 3 instances × (2 adds × 2 + 1 mul × 3 + 1 extra) = 24 DSP
-    assert c.dsp == 24 and c.lut == 3 * (2 * 220 + 80)
+    assert c.dsp == 24 and c.dsp_by_unit == (("u", 24),) and c.lut == 3 * (2 * 220 + 80)
     # 2048 words × 32 bits in 2 banks: 1024 words a bank = 2 BRAM18 a bank -> 4 BRAM18 = 2
     # BRAM36; 16 × 32 bits = 512 bits stay in LUTRAM
     assert c.bram36 == 2.0 and c.fits

@@ -166,6 +166,7 @@ class Cost:
     clock_mhz: float
     fits: bool
     over: tuple[str, ...]  # resources over the part's capacity
+    dsp_by_unit: tuple[tuple[str, int], ...] = ()  # (unit, DSP of all its instances)
 
     @property
     def latency_ms(self) -> float:
@@ -393,18 +394,22 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
     per = tuple((ph.name, phase_cycles(ph)) for ph in plan.phases)
     cycles = sum(c for _, c in per)
     linear = sum(phase_cycles(ph) for ph in plan.phases if ph.linear)
-    dsp = lut = ff = 0
+    lut = ff = 0
+    by_unit = []
     for u in plan.units:
+        unit_dsp = u.instances * u.extra_dsp
         for kind, n in u.operators:
             o = plan.ops.op(kind)
-            dsp += u.instances * n * o.dsp
+            unit_dsp += u.instances * n * o.dsp
             lut += u.instances * n * o.lut
             ff += u.instances * n * o.ff
-        dsp += u.instances * u.extra_dsp
+        by_unit.append((u.name, unit_dsp))
+    dsp = sum(d for _, d in by_unit)
     channel_mems = tuple(Memory(ch.name, ch.depth, ch.width, 1) for ch in plan.channels)
     bram36 = sum(m.bram18 for m in plan.memories + channel_mems) / 2
     over = tuple(name for name, used, cap in (("DSP", dsp, PART_DSP),
                                               ("BRAM36", bram36, PART_BRAM36),
                                               ("LUT", lut, PART_LUT), ("FF", ff, PART_FF))
                  if used > cap)
-    return Cost(cycles, per, linear, dsp, lut, ff, bram36, plan.clock_mhz, not over, over)
+    return Cost(cycles, per, linear, dsp, lut, ff, bram36, plan.clock_mhz, not over, over,
+                tuple(by_unit))
