@@ -1,0 +1,183 @@
+"""Tests of the accelerator plan (backends/hls/plan.py) and its operator table (operators.py).
+
+Cheap: a 3-pose Pose2 chain compiles in well under a second from a warm cache. The cost
+arithmetic is checked against hand computations written out below from the float32 table
+(add 8, mul 5, div 28, sqrt 28, compare 2, sincos 40 cycles; add 2 DSP, mul 3 DSP).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+
+import fgc
+from fgc.compile import compile_graph
+from fgc.factors import BetweenFactor, PriorFactor
+from fgc.geometry import Pose2
+from fgc.program import SolverConfig
+from fgc_backends.hls import operators
+from fgc_backends.hls.plan import (
+    PART_DSP,
+    AcceleratorPlan,
+    Loop,
+    Memory,
+    Phase,
+    PlanError,
+    PlanOptions,
+    Process,
+    Unit,
+    build_plan,
+    dot_loop,
+    plan_cost,
+)
+
+F32 = operators.FLOAT32
+
+
+def _chain(linear: str, **solver) -> fgc.program.Program:
+    g = fgc.Graph()
+    for i in range(3):
+        g.add_variable(f"x{i}", Pose2(float(i), 0.1 * i, 0.0))
+    g.add(PriorFactor("x0", Pose2(0.0, 0.0, 0.0), fgc.noise.isotropic(3, 0.1)))
+    for i in range(2):
+        g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
+                            fgc.noise.isotropic(3, 0.1)))
+    method = "gn" if linear == "qr" else "lm"
+    return compile_graph(g, SolverConfig(method=method, linear=linear, precision="float32",
+                                         **solver))
+
+
+@pytest.fixture(scope="module")
+def qr_chain():
+    return _chain("qr", units=2)
+
+
+@pytest.fixture(scope="module")
+def chol_chain():
+    return _chain("cholesky", cpe=1)
+
+
+# -- the operator table ----------------------------------------------------------------------
+
+
+def test_table_is_frozen_and_every_entry_has_a_source():
+    for t in operators.TABLES.values():
+        for kind, op in t.entries():
+            assert op.source and op.status in ("documented", "assumed"), kind
+            assert op.latency >= 1 and min(op.dsp, op.lut, op.ff) >= 0, kind
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            t.add = t.mul
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            t.add.latency = 1
+    with pytest.raises(ValueError, match="source"):
+        operators.Operator(1, 0, 0, 0, "", "assumed")
+    with pytest.raises(ValueError, match="status"):
+        operators.Operator(1, 0, 0, 0, "x", "guessed")
+    assert F32.op("trig") is F32.sincos
+    with pytest.raises(ValueError, match="float16"):
+        operators.table("float16")
+
+
+# -- the cost arithmetic on hand-made and hand-checked cases ---------------------------------
+
+
+def test_dot_loop_ii_from_adder_latency():
+    # adder latency 8: one partial sum -> II 8; 4 partial sums -> II 2; 8 -> II 1
+    assert dot_loop("d", 20, F32, partials=1).ii == 8
+    assert dot_loop("d", 20, F32, partials=4).ii == 2
+    d = dot_loop("d", 20, F32)
+    # k = 8 partial sums: II 1, depth mul 5 + add 8 × (1 + log2 8 = 3) = 37; 19 × 1 + 37 = 56
+    assert (d.ii, d.depth, d.cycles) == (1, 37, 56)
+
+
+def test_cost_of_a_hand_made_plan():
+    a = Process("a", "u", (Loop("a0", 10, 2, 7), Loop("a1", 3, 1, 4, repeat=2)))  # 25 + 12
+    b = Process("b", "u", (Loop("b0", 5, 1, 9),))  # 13
+    plan = AcceleratorPlan(
+        "hand", "qr", "float32", 143.0, PlanOptions(),
+        units=(Unit("u", "x", 3, (("add", 2), ("mul", 1)), extra_dsp=1),),
+        memories=(Memory("m", 2048, 32, 2), Memory("small", 16, 32, 1)),
+        channels=(), phases=(Phase("flow", True, (a, b)), Phase("seq", False, (a, b))),
+        ops=F32)
+    c = plan_cost(plan)
+    # dataflow: slowest (a: 37) + fill of b (its first depth, 9) = 46; sequential 37 + 13 = 50
+    assert c.phase_cycles == (("flow", 46), ("seq", 50)) and c.cycles == 96
+    # 3 instances × (2 adds × 2 + 1 mul × 3 + 1 extra) = 24 DSP
+    assert c.dsp == 24 and c.dsp_by_unit == (("u", 24),) and c.lut == 3 * (2 * 220 + 80)
+    # 2048 words × 32 bits in 2 banks: 1024 words a bank = 2 BRAM18 a bank -> 4 BRAM18 = 2
+    # BRAM36; 16 × 32 bits = 512 bits stay in LUTRAM
+    assert c.bram36 == 2.0 and c.fits
+    assert c.latency_ms == pytest.approx(96 / 143e3)
+
+
+def test_pose2_chain_phases_by_hand(qr_chain):
+    plan = build_plan(qr_chain)
+    c = plan_cost(plan)
+    phases = dict(c.phase_cycles)
+    # retract: 3 variables at II 1, depth sqrt 28 + div 28 + sincos 40 + 4 × (mul 5 + add 8)
+    # = 148 -> 2 + 148 = 150
+    assert phases["state_update"] == 150
+    # LM decision: div 28 + 2 mul + 2 add + compare 2 = 56
+    assert phases["lm_control"] == 56
+    # back-substitution: each Pose2 row is bounded by the chain mul + mul + add = 18 cycles
+    # (rows need at most 5 stream cycles); a step is 3 rows = 54; the first level has one
+    # step; the second has two steps on the two unit sets of a two-ended chain: 54 + fill 18
+    assert plan.options.units == 2
+    assert phases["backsub_level0"] == 54 and phases["backsub_level1"] == 72
+    assert c.cycles == sum(phases.values())
+    assert c.linear_cycles == sum(v for k, v in phases.items()
+                                  if k.startswith(("qr_", "backsub_")))
+
+
+def _is_update(unit) -> bool:
+    return unit.name.startswith("qr") and unit.name.endswith("_update")
+
+
+# -- the plan follows the options -------------------------------------------------------------
+
+
+def test_update_units_follow_n_u(qr_chain):
+    plans = {u: build_plan(qr_chain, PlanOptions.of(qr_chain, units=u)) for u in (1, 3)}
+    sets = sum(1 for u in plans[1].units if _is_update(u))
+    assert sets == 2  # two-ended chain: two QR unit sets
+    for n_u, plan in plans.items():
+        assert all(u.instances == n_u for u in plan.units if _is_update(u))
+    costs = {u: plan_cost(p) for u, p in plans.items()}
+    # each extra Update unit is one adder (2 DSP) and one multiplier (3 DSP), in each set
+    assert costs[3].dsp - costs[1].dsp == sets * 2 * (2 + 3)
+    assert costs[3].linear_cycles < costs[1].linear_cycles
+    one_set = build_plan(qr_chain, PlanOptions.of(qr_chain, unit_sets=1))
+    assert sum(1 for u in one_set.units if _is_update(u)) == 1
+
+
+def test_cpe_cascade_follows_cpe(chol_chain):
+    n = chol_chain.storage.columns
+    assert n == 9
+    plans = {c: build_plan(chol_chain, PlanOptions.of(chol_chain, cpe=c)) for c in (1, 3)}
+    for c, plan in plans.items():
+        assert plan.unit("cpe").instances == c
+        assert sum(1 for ch in plan.channels if ch.name.startswith("cpe_fifo")) == c
+        cascade = next(ph for ph in plan.phases if ph.name == "cholesky").processes[0]
+        assert len(cascade.loops) == -(-n // c)  # n / #CPE rounds
+        # round r streams the trailing m = n - r·c lower triangle plus g: m(m+1)/2 + m words
+        assert [lp.trip for lp in cascade.loops] == [
+            (n - r * c) * (n - r * c + 1) // 2 + n - r * c for r in range(-(-n // c))]
+    c1, c3 = plan_cost(plans[1]), plan_cost(plans[3])
+    assert c3.dsp - c1.dsp == 2 * 6  # a float32 CPE: add 2 + mul 3 + 1 extra = 6 DSP
+    assert c3.cycles < c1.cycles
+
+
+def test_fits_or_says_it_does_not(qr_chain, chol_chain):
+    for p in (qr_chain, chol_chain):
+        c = plan_cost(build_plan(p))
+        assert c.fits and c.dsp <= PART_DSP and c.over == ()
+    big = plan_cost(build_plan(chol_chain, PlanOptions.of(chol_chain, cpe=200)))
+    assert not big.fits and "DSP" in big.over and big.dsp > PART_DSP
+
+
+def test_bad_options_are_named(qr_chain):
+    with pytest.raises(PlanError, match="units"):
+        build_plan(qr_chain, PlanOptions.of(qr_chain, units=0))
+    with pytest.raises(PlanError, match="ALLOCATION limit of mul"):
+        build_plan(qr_chain, PlanOptions(allocation=(("mul", 0),)))
