@@ -21,13 +21,12 @@ import hashlib
 import os
 import pickle
 import re
-import warnings
 from collections.abc import Callable
 from functools import cache
 from pathlib import Path
 from typing import TypeVar
 
-from fgc.conditioning import FgcWarning
+from fgc.conditioning import FgcWarning, warn
 
 T = TypeVar("T")
 
@@ -61,15 +60,17 @@ _UNUSABLE: set[str] = set()  # directories already warned about in this process
 def _unusable(path: Path, why: str) -> None:
     if str(path) not in _UNUSABLE:
         _UNUSABLE.add(str(path))
-        warnings.warn(f"fgc cache directory {path} is unusable ({why}); continuing without a "
-                      "derivation cache (set FGC_CACHE_DIR to a writable directory)",
-                      CacheWarning, stacklevel=3)
+        warn(f"fgc cache directory {path} is unusable ({why}); continuing without a "
+             "derivation cache (set FGC_CACHE_DIR to a writable directory)", CacheWarning)
 
 
 def cache_dir() -> Path | None:
     """The cache directory, created if needed; None (after one warning) if it cannot be used."""
     path = cache_root()
     if str(path) in _UNUSABLE:
+        return None
+    if path.exists() and not path.is_dir():
+        _unusable(path, "not a directory")
         return None
     try:
         path.mkdir(parents=True, exist_ok=True)
@@ -93,8 +94,7 @@ def entry(kind: str, name: str, key: str) -> Path | None:
 
 
 def _discard(path: Path, why: str) -> None:
-    warnings.warn(f"fgc cache entry {path} discarded ({why}); recomputing it", CacheWarning,
-                  stacklevel=4)
+    warn(f"fgc cache entry {path} discarded ({why}); recomputing it", CacheWarning)
     with contextlib.suppress(OSError):
         path.unlink(missing_ok=True)
 
