@@ -7,6 +7,7 @@
     fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
     fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
     fgc metrics  EST.tum REF.tum [--align se3]        ATE / RPE (translation m, rotation deg)
+    fgc cache    info|clear                           the derivation cache ($FGC_CACHE_DIR)
 
 SPEC is a ``.py`` file with ``build(**params)`` returning an ``fgc.Graph`` (``-p KEY=VALUE``), or a
 g2o/TORO file. Solver options are shared by every command. Exit codes: 0 success, 1 verification
@@ -687,6 +688,24 @@ _COMMANDS = (
 )
 
 
+def _cmd_cache(args) -> int:
+    from fgc import cache
+
+    if args.action == "clear":
+        n = cache.clear()
+        print(f"removed {n} entr{'y' if n == 1 else 'ies'} from {cache.cache_root()}")
+        return EXIT_OK
+    stats = cache.info()
+    if args.json:
+        print(json.dumps(stats, indent=2))
+        return EXIT_OK
+    print(f"cache dir: {stats['dir']}")
+    for kind, n in stats["entries"].items():
+        print(f"  {kind:<10} {n:>6} entries")
+    print(f"total size: {stats['bytes'] / 1e6:.1f} MB ({stats['bytes']} bytes)")
+    return EXIT_OK
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="fgc", description="fgc: a factor-graph compiler",
                      epilog="Run 'fgc COMMAND --help' for a command's options. Exit status: 0 "
@@ -709,6 +728,14 @@ def build_parser() -> argparse.ArgumentParser:
         _verbosity_args(p, suppress=True)
         p.set_defaults(func=func)
     _metrics_parser(sub)
+    help_text = "the derivation cache ($FGC_CACHE_DIR, default ~/.cache/fgc): info or clear"
+    p = sub.add_parser("cache", help=help_text, description=f"fgc cache: {help_text}",
+                       epilog="exit status: 0 success", formatter_class=_Formatter)
+    p.add_argument("action", choices=("info", "clear"),
+                   help="info: directory, entries per kind, total size; clear: delete the entries")
+    p.add_argument("--json", action="store_true", help="info as JSON on stdout")
+    _verbosity_args(p, suppress=True)
+    p.set_defaults(func=_cmd_cache)
     return parser
 
 

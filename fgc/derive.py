@@ -7,7 +7,8 @@ Entries that are identically 0 or ±1 are found and made exact: symbolically whe
 otherwise by evaluating at random points on the manifold (e.g. ``RᵀR = I``).
 
 Derivations are cached on disk (``$FGC_CACHE_DIR``, default ``~/.cache/fgc``) under a hash of the
-factor's definition and of fgc's own derivation code, so compiling a known factor again is cheap.
+factor's traced residual (what it computes, whatever it reads) and of fgc's own derivation code
+and sympy's version, so compiling a known factor again is cheap and a changed one is re-derived.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ import numpy as np
 import sympy as sp
 
 from fgc.cache import entry, load, source_digest, store
-from fgc.dsl import FactorType, MatrixType, storage_dim
+from fgc.dsl import FactorType, MatrixType, storage_dim, type_name
 from fgc.errors import DerivationError
 from fgc.geometry import LieGroup, special
 from fgc.kernel import Kernel, drop_dead, jacobian_kernel, numeric_function
@@ -136,16 +137,24 @@ def whitening_matrix(kind: str, dim: int, prefix: str = "noise") -> sp.Matrix:
 
 
 def derive(ftype: FactorType, use_cache: bool = True) -> SymbolicFactor:
-    """Derive residual, Jacobians and structure of ``ftype`` (memoised, and cached on disk)."""
-    key = f"{ftype.fingerprint()}-{_code_version()}"
+    """Derive residual, Jacobians and structure of ``ftype`` (memoised, and cached on disk).
+
+    The key is :func:`content_key`: a digest of what the residual function computes (its traced
+    expression), so a value it reads from anywhere (a dict, a class attribute, another module)
+    is part of the key, as are fgc's derivation code and sympy's version."""
+    key, traced = content_key(ftype)
     if key in _MEMO:
         return _MEMO[key]
-    path = entry("derive", ftype.name, key)
-    result = load(path) if use_cache else None
+    result, path = None, None
+    if use_cache:
+        path = entry("derive", ftype.name, key)
+        result = load(path, key, SymbolicFactor)
+        if result is not None and result.fingerprint != key:
+            result = None
     if result is None:
-        result = _derive_uncached(ftype, key)
+        result = _derive_uncached(ftype, key, traced)
         if use_cache:
-            store(path, result)
+            store(path, key, result)
     _MEMO[key] = result
     return result
 
@@ -153,8 +162,74 @@ def derive(ftype: FactorType, use_cache: bool = True) -> SymbolicFactor:
 _MEMO: dict[str, SymbolicFactor] = {}
 
 
-def _derive_uncached(ftype: FactorType, fingerprint: str) -> SymbolicFactor:
-    var_values, meas_values, residual = ftype.trace()
+def content_key(ftype: FactorType) -> tuple[str, tuple]:
+    """(key, trace) of ``ftype``: the key digests the traced residual, the argument names and
+    types, the factor's name, fgc's derivation code and sympy's version. The trace is memoised
+    per factor type and graph generation (:meth:`FactorType.traced`), the key per trace."""
+    traced = ftype.traced()
+    memo = _KEYS.get(id(ftype))
+    if memo is not None and memo[0] is ftype and memo[1] is traced:
+        return memo[2], traced
+    h = hashlib.sha256(b"fgc-derive-key-1\n")
+    h.update(f"{ftype.name}\n{_code_version()}\n".encode())
+    for arg in ftype.variables + ftype.measurements:
+        h.update(f"{arg.name}:{type_name(arg.type)};".encode())
+    var_values, meas_values, residual = traced
+    h.update(b"\ninputs:")
+    for values in (var_values, meas_values):
+        for name, value in values.items():
+            h.update(f"{name}=".encode())
+            h.update(expression_digest(sp.Matrix(_symbols_of(value))))
+    h.update(b"\nresidual:")
+    h.update(expression_digest(residual))
+    key = h.hexdigest()
+    _KEYS[id(ftype)] = (ftype, traced, key)  # holds ftype, so its id() is not reused meanwhile
+    return key, traced
+
+
+_KEYS: dict[int, tuple] = {}  # id(factor type) → (factor type, its current trace, its key)
+
+
+def expression_digest(matrix: sp.MatrixBase) -> bytes:
+    """SHA-256 of a canonical serialisation of a sympy matrix, deterministic across processes.
+
+    The expression is walked as a DAG (each distinct subexpression written once, referred to by
+    its post-order number), so a large residual with shared subterms (the IMU factor's) costs
+    its number of distinct nodes, not its tree size (``srepr`` of it takes minutes). Node order
+    is sympy's canonical ``args`` order; symbols carry their assumptions, numbers their exact
+    value (a ``Float`` by its mpf tuple and precision)."""
+    h = hashlib.sha256(f"{matrix.rows}x{matrix.cols}\n".encode())
+    ids: dict = {}
+    for root in matrix:
+        root = sp.sympify(root)
+        stack = [(root, False)]
+        while stack:
+            node, expanded = stack.pop()
+            if node in ids:
+                continue
+            if not expanded and node.args:
+                stack.append((node, True))
+                stack.extend((a, False) for a in reversed(node.args) if a not in ids)
+                continue
+            h.update(_node_text(node, ids).encode())
+            ids[node] = len(ids)
+        h.update(f"out {ids[root]}\n".encode())
+    return h.digest()
+
+
+def _node_text(node, ids: dict) -> str:
+    cls = type(node).__name__
+    if node.args:
+        return f"{cls}({','.join(str(ids[a]) for a in node.args)})\n"
+    if isinstance(node, sp.Symbol):
+        return f"{cls}:{node.name}:{sorted(node.assumptions0.items())}\n"
+    if isinstance(node, sp.Float):
+        return f"Float:{node._mpf_}:{node._prec}\n"
+    return f"{cls}:{sp.srepr(node)}\n"
+
+
+def _derive_uncached(ftype: FactorType, fingerprint: str, traced=None) -> SymbolicFactor:
+    var_values, meas_values, residual = traced if traced is not None else ftype.trace()
     var_blocks = tuple(
         Block(a.name, a.type.__name__, a.type.dim, tuple(_symbols_of(var_values[a.name])))
         for a in ftype.variables)

@@ -143,6 +143,9 @@ class Argument:
     type: Any
 
 
+_GENERATION = [0]  # bumped whenever a Graph is created or grown
+
+
 class FactorType:
     """A factor definition: a residual function over variables (positional) and measurements."""
 
@@ -151,6 +154,7 @@ class FactorType:
         self.name = name or func.__name__
         self.variables, self.measurements = _parse_signature(func, self.name)
         self._residual_dim: int | None = None
+        self._traced: tuple | None = None
 
     def __repr__(self) -> str:
         return f"FactorType({self.name!r})"
@@ -166,6 +170,15 @@ class FactorType:
         return h.hexdigest()
 
     # -- tracing -----------------------------------------------------------------------------
+    def traced(self) -> tuple[dict, dict, sp.Matrix]:
+        """:meth:`trace`, memoised until the next graph is created or grown (a residual may read
+        values that a spec's ``build()`` sets before building its graph, so a trace is only
+        reused while no graph has changed; the cache key is a digest of it, see fgc.derive)."""
+        memo = self._traced
+        if memo is None or memo[0] != _GENERATION[0]:
+            memo = self._traced = (_GENERATION[0], self.trace())
+        return memo[1]
+
     def trace(self) -> tuple[dict, dict, sp.Matrix]:
         """Call the function on symbolic stand-ins; returns (variables, measurements, residual)."""
         vars_ = {a.name: symbolic_value(a.type, a.name) for a in self.variables}
@@ -417,6 +430,7 @@ class Graph:
     def __init__(self):
         self.variables: dict[Key, Variable] = {}
         self.factors: list[Factor] = []
+        _GENERATION[0] += 1  # factor traces taken before are not reused (FactorType.traced)
 
     def add_variable(self, key: Key, initial: LieGroup, type_: type | None = None) -> Graph:
         """Add variable ``key`` with its initial value (its type is the value's class)."""
@@ -439,6 +453,7 @@ class Graph:
             raise DslError(f"Graph.add expects a factor, got {type(f).__name__}")
         self._check_factor(f)
         self.factors.append(f)
+        _GENERATION[0] += 1
         return self
 
     def _check_factor(self, f: Factor) -> None:

@@ -45,7 +45,7 @@ from functools import cached_property
 
 import numpy as np
 
-from fgc.cache import cached, entry, source_digest
+from fgc.cache import cached, source_digest
 from fgc.derive import Block, SymbolicFactor, derive
 from fgc.dsl import Factor, FactorType, Graph
 from fgc.errors import DslError
@@ -244,9 +244,8 @@ def block_type(specs: Sequence[MemberSpec]) -> BlockType:
     name = "+".join(m.name for m in members)
     key = _block_key(members, variables)
     if key not in _MEMO:  # one object per pattern: its numeric kernels compile once
-        path = entry("fuse", name, key)
-        built = cached(path, lambda: build_kernels(specs[0][0], derived, members, variables,
-                                                   tuple(meas_blocks)))
+        built = cached(("fuse", name), key, lambda: build_kernels(
+            specs[0][0], derived, members, variables, tuple(meas_blocks)), tuple)
         _MEMO[key] = BlockType(name, key, variables, tuple(meas_blocks), tuple(members), *built)
     return _MEMO[key]
 

@@ -6,7 +6,7 @@ import dataclasses
 import hashlib
 from collections.abc import Sequence
 
-from fgc.cache import cached, entry, source_digest
+from fgc.cache import cached, source_digest
 from fgc.dsl import Graph, storage_dim
 from fgc.fuse import BlockType, FactorBlock
 from fgc.program import (
@@ -74,6 +74,7 @@ def _lowered_kernels(t: BlockType) -> tuple[dict, KernelText, KernelText]:
     if t.key not in _LOWERED:
         h = hashlib.sha256(t.key.encode())
         h.update(source_digest("lower.py", "program.py", "kernel.py"))
-        _LOWERED[t.key] = cached(entry("lower", t.name, h.hexdigest()), lambda: (
-            t.kernel.op_counts_unshared(), KernelText.of(t.kernel), KernelText.of(t.cost_kernel)))
+        _LOWERED[t.key] = cached(("lower", t.name), h.hexdigest(), lambda: (
+            t.kernel.op_counts_unshared(), KernelText.of(t.kernel), KernelText.of(t.cost_kernel)),
+            tuple)
     return _LOWERED[t.key]

@@ -41,13 +41,14 @@ chain order, e.g. from the schedule's classification) or ``None`` for a general 
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
-from fgc.cache import cached, entry
+from fgc.cache import cached, source_digest
 from fgc.derive import derive, random_measurement
 from fgc.dsl import Factor
 from fgc.errors import StructureError
@@ -248,8 +249,10 @@ def factor_structure(f: Factor) -> FactorStructure:
     sf = derive(f.type)
     key = (sf.fingerprint, f.noise.kind)
     if key not in _STRUCTURES:
-        path = entry("structure", f"{f.type.name}-{f.noise.kind}", sf.fingerprint)
-        _STRUCTURES[key] = cached(path, lambda: _factor_structure(f, sf))
+        h = hashlib.sha256(f"{sf.fingerprint}|{f.noise.kind}|".encode())  # chains from derive
+        h.update(source_digest("storage.py"))
+        _STRUCTURES[key] = cached(("structure", f"{f.type.name}-{f.noise.kind}"), h.hexdigest(),
+                                  lambda: _factor_structure(f, sf), FactorStructure)
     return _STRUCTURES[key]
 
 

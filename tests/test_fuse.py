@@ -284,7 +284,7 @@ def test_fused_kernel_is_cached(lio):
     _, blocks = lio
     block = next(b for b in blocks if b.type.name == IMU_LIDAR)
     bt = block.type
-    assert list(cache_dir().glob(f"fuse-{IMU_LIDAR}-{bt.key[:24]}.pkl"))
+    assert list(cache_dir().glob(f"fuse-{IMU_LIDAR}-{bt.key}.pkl"))
     saved = dict(fuse_module._MEMO)
     fuse_module._MEMO.clear()
     try:
