@@ -199,15 +199,10 @@ def _show_progress(args) -> bool:
 def derive_with_progress(graph: Graph, show: bool) -> int:
     """Derive every factor type of ``graph`` not yet in the disk cache, printing "deriving
     factor X (n/m)…" on stderr before each when ``show``; returns how many were derived."""
-    from fgc.cache import entry
-    from fgc.derive import _MEMO, _code_version, derive
+    from fgc.derive import derive, is_cached
 
     types = list({f.type.name: f.type for f in graph.factors}.values())
-    cold = []
-    for ftype in types:
-        key = f"{ftype.fingerprint()}-{_code_version()}"
-        if key not in _MEMO and not entry("derive", ftype.name, key).is_file():
-            cold.append(ftype)
+    cold = [ftype for ftype in types if not is_cached(ftype)]
     for i, ftype in enumerate(cold, 1):
         if show:
             print(f"fgc: deriving factor {ftype.name} ({i}/{len(cold)}, not cached; "

@@ -162,6 +162,21 @@ def derive(ftype: FactorType, use_cache: bool = True) -> SymbolicFactor:
 _MEMO: dict[str, SymbolicFactor] = {}
 
 
+def memo_key(ftype: FactorType) -> str:
+    """The key :func:`derive` files ``ftype``'s derivation under (memo and disk)."""
+    return content_key(ftype)[0]
+
+
+def is_cached(ftype: FactorType) -> bool:
+    """Whether :func:`derive` would find ``ftype`` without symbolic work (memo or a disk entry;
+    the entry is validated only when read)."""
+    key = memo_key(ftype)
+    if key in _MEMO:
+        return True
+    path = entry("derive", ftype.name, key)
+    return path is not None and path.is_file()
+
+
 def content_key(ftype: FactorType) -> tuple[str, tuple]:
     """(key, trace) of ``ftype``: the key digests the traced residual, the argument names and
     types, the factor's name, fgc's derivation code and sympy's version. The trace is memoised

@@ -37,7 +37,7 @@ def _example_factor_type(name: str, module: str = "range_beacons"):
 
 
 def _memo_key(ftype) -> str:
-    return f"{ftype.fingerprint()}-{fgc.derive._code_version()}"
+    return fgc.derive.memo_key(ftype)
 
 
 def _verify(argv: list[str], capsys) -> tuple[int, str]:
