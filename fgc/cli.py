@@ -115,11 +115,11 @@ def _load_pose_graph_file(p: Path, params: dict) -> Graph:
     from fgc.factors import PriorFactor
     from fgc.io import read_pose_graph
 
-    unknown = sorted(set(params) - {"prior_sigma"})
+    unknown = sorted(set(params) - {"prior_sigma", "init"})
     if unknown:
         raise FgcError(f"{p}: unknown parameters {unknown} for a g2o/TORO file "
-                       "(only prior_sigma)")
-    graph = read_pose_graph(p)
+                       "(only prior_sigma, init=odometry|chordal)")
+    graph = read_pose_graph(p, init=str(params.get("init", "odometry")))
     first = next(iter(graph.variables.values()))
     sigma = float(params.get("prior_sigma", 1e-3))
     graph.add(PriorFactor(first.key, first.initial, noise.isotropic(first.type.dim, sigma)))
