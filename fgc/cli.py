@@ -160,6 +160,26 @@ def _write_json(path: str | None, report: dict) -> None:
         Path(path).write_text(json.dumps(report, indent=2, sort_keys=True) + "\n")
 
 
+def _estimates_out(args, graph: Graph, report: dict, result_values: dict) -> None:
+    """Keyed values into the JSON report; --values file; --marginals printed and reported."""
+    from fgc import export
+
+    values = export.graph_values(graph, result_values)
+    report["values"] = export.values_json(values)
+    if getattr(args, "values", None):
+        fmt = export.write_values(args.values, values)
+        print(f"  estimates → {args.values} ({fmt})")
+    if getattr(args, "marginals", None):
+        from fgc.marginals import marginal_covariances, parse_keys
+
+        covs = marginal_covariances(graph, parse_keys(args.marginals, graph), values)
+        report["marginals"] = {str(k): {"key": k, "covariance": c.tolist()}
+                               for k, c in covs.items()}
+        for k, c in covs.items():
+            print(f"  marginal covariance of {k!r} (diagonal): "
+                  + " ".join(f"{x:.6g}" for x in c.diagonal()))
+
+
 def _backend(name: str):
     from fgc_backends import load
 
@@ -201,6 +221,7 @@ def _cmd_simulate(args) -> int:
     report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot)
     for line in report.pop("summary"):
         print(line)
+    _estimates_out(args, graph, report, report.pop("_result_values"))
     _write_json(args.json, report)
     return EXIT_OK if report["status"] == "converged" else EXIT_FAILED
 
@@ -212,12 +233,16 @@ def _cmd_verify(args) -> int:
     report = verify_report(graph, program, data, _backend("sim"))
     for line in report.pop("summary"):
         print(line)
+    _estimates_out(args, graph, report, report.pop("_result_values"))
     _write_json(args.json, report)
     return EXIT_OK if report["passed"] else EXIT_FAILED
 
 
 def _cmd_run(args) -> int:
     graph, program, data = _compile(args, "float32")
+    import time
+
+    t0 = time.perf_counter()
     if args.backend == "native":
         hls = _backend("hls")
         result = hls.native.run(program, data, hls.native.default_config(program))
@@ -225,10 +250,17 @@ def _cmd_run(args) -> int:
     else:
         result = _backend("sim").run(program, data)
         status, final, iters = result.status, result.final_error, result.iterations
+    seconds = time.perf_counter() - t0
     report = {"backend": args.backend, "status": status, "final_error": final,
-              "iterations": iters}
+              "iterations": iters, "solve_seconds": seconds}
     print(f"fgc run {args.spec} ({args.backend}): {status}, {iters} iterations, "
-          f"final error {final:.10g}")
+          f"final error {final:.10g}, {seconds * 1e3:.3f} ms (build/load included on a first "
+          "run)")
+    from fgc.export import values_from_storage
+
+    values = (values_from_storage(program, result.values) if args.backend == "native"
+              else result.values)
+    _estimates_out(args, graph, report, values)
     _write_json(args.json, report)
     return EXIT_OK if status == "converged" else EXIT_FAILED
 
@@ -372,6 +404,14 @@ def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
 
 
 def _command_args(name: str, p: argparse.ArgumentParser) -> None:
+    if name in ("simulate", "verify", "run"):
+        p.add_argument("--values", metavar="FILE",
+                       help="write the optimised values: .g2o, .tum/.txt (TUM poses, t = key "
+                            "order index) or .csv, by extension")
+    if name in ("simulate", "run"):
+        p.add_argument("--marginals", metavar="KEY,KEY",
+                       help="print (and put in --json) the marginal covariances of these "
+                            "variables at the estimate")
     if name == "compile":
         p.add_argument("--backend", choices=("sim", "hls"), default="sim", help="backend")
         p.add_argument("--out", required=True, metavar="DIR", help="output folder")

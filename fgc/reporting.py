@@ -93,6 +93,7 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
               "gtsam_iterations": giters, "fgc_solve_seconds": result.solve_seconds,
               "gtsam_seconds": gtsam_s, "passed": bool(passed and result.converged)}
     report["summary"] = _verify_summary(report)
+    report["_result_values"] = result.values  # popped by the CLI (--values, --marginals)
     return report
 
 
@@ -140,6 +141,7 @@ def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = Non
     if plot_dir:
         report["plots"] = _plots(Path(plot_dir), graph, result, report)
     report["summary"] = _simulate_summary(report, len(graph.variables))
+    report["_result_values"] = result.values  # popped by the CLI (--values, --marginals)
     return report
 
 
