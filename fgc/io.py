@@ -178,7 +178,7 @@ def read_pose_graph(path: str | Path, key_prefix: str | None = "x",
     is3d = 3 in scan.dims
     try:
         graph, values = (gtsam.load3D if is3d else gtsam.load2D)(str(path))
-    except RuntimeError as exc:
+    except (RuntimeError, ValueError) as exc:
         raise DataError(f"{path}: GTSAM's {'load3D' if is3d else 'load2D'} rejects the file: "
                         f"{exc}") from None
     _check_nothing_dropped(scan, graph, is3d)

@@ -52,8 +52,8 @@ def test_small_files_read_to_gtsams_graph(name):
     ("sphere_smallnoise.graph", r"sphere_smallnoise\.graph:2202: GTSAM's reader returned 1 "
                                 r"factors for the file's 8647 between lines \(EDGE3"),
     ("cityTrees_reduced_1k.g2o", r"cityTrees_reduced_1k\.g2o:1000: tag 'LANDMARK2'"),
-    ("known_landmark_localization_3.g2o", r"factor \d+ \(BearingRangeFactor3D\) is not "
-                                          r"supported.*EDGE_SE3_TRACKXYZ"),
+    ("known_landmark_localization_3.g2o", r"factor \d+ \(BearingRangeFactor3D\).*no fgc "
+                                          r"built-in.*EDGE_SE3_TRACKXYZ"),
     ("example_with_vertices.g2o", r"16 vertices but no edge lines"),
 ])
 def test_what_fgc_cannot_represent_is_refused_by_line(name, message):
