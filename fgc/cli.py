@@ -256,10 +256,7 @@ def _cmd_run(args) -> int:
     print(f"fgc run {args.spec} ({args.backend}): {status}, {iters} iterations, "
           f"final error {final:.10g}, {seconds * 1e3:.3f} ms (build/load included on a first "
           "run)")
-    from fgc.export import values_from_storage
-
-    values = (values_from_storage(program, result.values) if args.backend == "native"
-              else result.values)
+    values = result.values  # fgc values by Program key, from either backend
     _estimates_out(args, graph, report, values)
     _write_json(args.json, report)
     return EXIT_OK if status == "converged" else EXIT_FAILED
