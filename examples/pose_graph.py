@@ -17,8 +17,11 @@ from fgc.factors import PriorFactor
 from fgc.io import read_pose_graph
 
 
-def build(dataset: str = "w100.graph", prior_sigma: float = 1e-3) -> fgc.Graph:
-    graph = read_pose_graph(example_data_file(dataset))
+def build(dataset: str = "w100.graph", prior_sigma: float = 1e-3,
+          init: str = "odometry") -> fgc.Graph:
+    """Any file GTSAM's load2D/load3D read (fgc.io refuses what it cannot represent);
+    ``init`` (odometry | chordal) seeds variables the file gives no vertex for."""
+    graph = read_pose_graph(example_data_file(dataset), init=init)
     first = next(iter(graph.variables.values()))
     dim = first.type.dim
     graph.add(PriorFactor(first.key, first.initial, fgc.noise.isotropic(dim, prior_sigma)))

@@ -121,11 +121,11 @@ def _load_pose_graph_file(p: Path, params: dict) -> Graph:
     from fgc.factors import PriorFactor
     from fgc.io import read_pose_graph
 
-    unknown = sorted(set(params) - {"prior_sigma"})
+    unknown = sorted(set(params) - {"prior_sigma", "init"})
     if unknown:
         raise FgcError(f"{p}: unknown parameters {unknown} for a g2o/TORO file "
-                       "(only prior_sigma)")
-    graph = read_pose_graph(p)
+                       "(only prior_sigma, init=odometry|chordal)")
+    graph = read_pose_graph(p, init=str(params.get("init", "odometry")))
     first = next(iter(graph.variables.values()))
     sigma = float(params.get("prior_sigma", 1e-3))
     graph.add(PriorFactor(first.key, first.initial, noise.isotropic(first.type.dim, sigma)))
@@ -261,7 +261,7 @@ def _write_text(path: str, text: str, option: str) -> None:
 
 # options naming an output, and whether each is a folder (checked before any solve starts)
 _OUTPUTS = (("json", "--json", False), ("html", "--html", False), ("out", "--out", True),
-            ("plot", "--plot", True))
+            ("plot", "--plot", True), ("values", "--values", False))
 
 
 def check_outputs(args) -> None:
@@ -269,8 +269,14 @@ def check_outputs(args) -> None:
     before the (possibly long) solve, so no result is computed only to be lost."""
     for attr, option, folder in _OUTPUTS:
         path = getattr(args, attr, None)
-        if path:
+        if path and isinstance(path, str | Path):  # `fgc cache info --json` is a flag
             _check_writable(str(path), option, folder)
+    if getattr(args, "values", None):
+        from fgc.export import FORMATS
+
+        if Path(args.values).suffix.lower() not in FORMATS:
+            raise FgcError(f"--values {args.values}: unknown values format "
+                           f"{Path(args.values).suffix!r}; use {', '.join(FORMATS)}")
 
 
 def _check_writable(path: str, option: str, folder: bool) -> None:
@@ -294,6 +300,28 @@ def _check_writable(path: str, option: str, folder: bool) -> None:
             raise FgcError(f"{option} {path}: the file is not writable")
     if not os.access(target, os.W_OK | os.X_OK):
         raise FgcError(f"{option} {path}: no permission to write in {target}")
+
+
+def _estimates_out(args, graph: Graph, report: dict, result_values: dict) -> None:
+    """Keyed values into the JSON report; --values file; --marginals printed and reported."""
+    from fgc import export
+
+    values = export.graph_values(graph, result_values)
+    report["values"] = export.values_json(values)
+    quiet = getattr(args, "quiet", False)
+    if getattr(args, "values", None):
+        fmt = export.write_values(args.values, values)
+        if not quiet:
+            print(f"  estimates → {args.values} ({fmt})")
+    if getattr(args, "marginals", None):
+        from fgc.marginals import marginal_covariances, parse_keys
+
+        covs = marginal_covariances(graph, parse_keys(args.marginals, graph), values)
+        report["marginals"] = {str(k): {"key": k, "covariance": c.tolist()}
+                               for k, c in covs.items()}
+        for k, c in covs.items() if not quiet else ():
+            print(f"  marginal covariance of {k!r} (diagonal): "
+                  + " ".join(f"{x:.6g}" for x in c.diagonal()))
 
 
 def _backend(name: str):
@@ -352,6 +380,7 @@ def _cmd_simulate(args) -> int:
         raise FgcError(f"--plot {args.plot}: cannot write the plots: "
                        f"{exc.strerror or exc}{_filename(exc)}") from None
     _print(args, report.pop("summary"))
+    _estimates_out(args, graph, report, report.pop("_result_values"))
     _write_json(args.json, report)
     return EXIT_OK if report["status"] == "converged" else EXIT_FAILED
 
@@ -363,12 +392,16 @@ def _cmd_verify(args) -> int:
     report = verify_report(graph, program, data, _backend("sim"))
     _print(args, report.pop("summary"),
            f"fgc verify {args.spec}: {'PASSED' if report['passed'] else 'FAILED'}")
+    _estimates_out(args, graph, report, report.pop("_result_values"))
     _write_json(args.json, report)
     return EXIT_OK if report["passed"] else EXIT_FAILED
 
 
 def _cmd_run(args) -> int:
     graph, program, data = _compile(args, "float32")
+    import time
+
+    t0 = time.perf_counter()
     if args.backend == "native":
         hls = _backend("hls")
         result = hls.native.run(program, data, _hls_config(args, program))
@@ -378,14 +411,17 @@ def _cmd_run(args) -> int:
             raise UsageError("fgc run: --scalar and --part apply to --backend native only")
         result = _backend("sim").run(program, data)
         status, final, iters = result.status, result.final_error, result.iterations
+    seconds = time.perf_counter() - t0
     from fgc.reporting import require_finite_start
 
     require_finite_start(graph, result)
     report = {"backend": args.backend, "status": status, "final_error": final,
-              "iterations": iters}
+              "iterations": iters, "solve_seconds": seconds}
     final_text = f"{final:.10g}" if final is not None else "not finite"
     _print(args, [f"fgc run {args.spec} ({args.backend}): {status}, {iters} iterations, "
-                  f"final error {final_text}"])
+                  f"final error {final_text}, {seconds * 1e3:.3f} ms (build/load included on a "
+                  "first run)"])
+    _estimates_out(args, graph, report, result.values)  # fgc values by Program key
     _write_json(args.json, report)
     return EXIT_OK if status == "converged" else EXIT_FAILED
 
@@ -644,6 +680,14 @@ def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
 
 
 def _command_args(name: str, p: argparse.ArgumentParser) -> None:
+    if name in ("simulate", "verify", "run"):
+        p.add_argument("--values", metavar="FILE",
+                       help="write the optimised values: .g2o, .tum/.txt (TUM poses, t = key "
+                            "order index) or .csv, by extension")
+    if name in ("simulate", "run"):
+        p.add_argument("--marginals", metavar="KEY,KEY",
+                       help="print (and put in --json) the marginal covariances of these "
+                            "variables at the estimate")
     if name == "compile":
         p.add_argument("--backend", choices=("sim", "hls"), default="sim", help="backend")
         p.add_argument("--out", required=True, metavar="DIR", help="output folder")

@@ -186,6 +186,11 @@ def _convert(gf, index: int) -> _Converted:
             return _bearing_range(gf, noise_from_gtsam(gf.noiseModel()))
         if isinstance(gf, gtsam.CombinedImuFactor):
             return _imu(gf, index, noise_from_gtsam(gf.noiseModel()))
+        if isinstance(gf, gtsam.BearingRangeFactor3D):
+            raise FgcError("BearingRangeFactor3D (Pose3 → Point3) has no fgc built-in: GTSAM "
+                           "expresses its bearing error in the tangent basis of the *predicted* "
+                           "direction, a basis that switches with the direction's smallest "
+                           "component, which fgc's smooth residuals cannot reproduce exactly")
     except FgcError as exc:
         raise FgcError(f"{where}: {exc}") from None
     raise FgcError(f"{where} is not supported by fgc.importer; supported are PriorFactor*, "

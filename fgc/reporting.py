@@ -127,6 +127,7 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
         report["gtsam_from_fgc_iterations"] = restart_iters
     report["passed"], report["verdict"] = _verdict(report, checks, matched)
     report["summary"] = _verify_summary(report)
+    report["_result_values"] = result.values  # popped by the CLI (--values, --marginals)
     return report
 
 
@@ -263,6 +264,7 @@ def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = Non
     if plot_dir:
         report["plots"] = _plots(Path(plot_dir), graph, result, report)
     report["summary"] = _simulate_summary(report, len(graph.variables))
+    report["_result_values"] = result.values  # popped by the CLI (--values, --marginals)
     return report
 
 

@@ -389,15 +389,13 @@ def compare_native(spec: GraphSpec) -> tuple[Outcome, float]:
     from fgc.datafile import problem_data
     from fgc_backends import sim
     from fgc_backends.hls import native
-    from fgc_backends.sim.runner import value_type
 
     graph = build(spec)
     program = compile_graph(graph, solver(spec), name=f"property_{spec.family}")
     data = problem_data(graph, program)
     result, reference = native.run(program, data), sim.run(program, data)
     keys = {str(k): k for k in graph.variables}
-    values = {keys[v.key]: value_type(v.type_name, v.dim).from_storage(result.values[v.key])
-              for v in program.variables}
+    values = {keys[k]: v for k, v in result.values.items()}  # fgc values, as the simulator's
     gap = max(float(np.linalg.norm(reference.values[str(k)].local(v)))
               for k, v in values.items())
     outcome = judge(spec, graph, values, (result.status, result.reason), gtsam_optimum(graph))

@@ -143,7 +143,8 @@ def test_native_run_api_builds_once_and_agrees():
     first = native.run(program, data)
     assert native.load(program) is native.load(program)  # cached per content hash
     reference = sim.run(program, data, precision="float64")
-    assert relative_worst(first.values, reference.storage) <= F64_TOL
+    assert relative_worst(first.storage, reference.storage) <= F64_TOL
+    assert type(first.values["x1"]) is type(reference.values["x1"])  # geometry, as sim's
     # solve() on flat arrays: the results are new arrays each call (the library writes into
     # the solver's own buffers), and arrays the kernel would misread are refused
     solver = native.load(program)
@@ -152,7 +153,7 @@ def test_native_run_api_builds_once_and_agrees():
     out2, _, _ = solver.solve(x + 0.0, d)
     assert out1 is not out2 and not np.shares_memory(out1, out2)
     np.testing.assert_array_equal(out1, out2)
-    np.testing.assert_array_equal(out1, np.concatenate([first.values[k.key] for k in
+    np.testing.assert_array_equal(out1, np.concatenate([first.storage[k.key] for k in
                                                         program.variables]))
     assert errors1[1] == first.final_error and info1[0] == first.iterations
     for bad, what in [(x[:-1], "x"), (x.astype(np.float32), "x"), (d[::2], "factor data"),

@@ -187,5 +187,14 @@ def _build(program: Program, config: HlsConfig, folder: Path) -> HlsProject:
 
 
 def run(program: Program, data: ProblemData, config: HlsConfig | None = None) -> HlsResult:
-    """Solve ``data`` with the native build of ``program`` (default: the Program's precision)."""
-    return load(program, config).run(data)
+    """Solve ``data`` with the native build of ``program`` (default: the Program's precision).
+
+    Like the simulator's result: ``values`` are fgc values (Pose3, …) by Program key and
+    ``storage`` the raw arrays (:meth:`NativeSolver.run` returns the arrays as ``values``)."""
+    from dataclasses import replace
+
+    from fgc.export import values_from_storage
+
+    result = load(program, config).run(data)
+    return replace(result, values=values_from_storage(program, result.values),
+                   storage=result.values)

@@ -33,14 +33,19 @@ REASONS = ("gradient", "step", "predicted_decrease", "absolute_error", "relative
 
 @dataclass(frozen=True)
 class HlsResult:
-    """Final storage per variable (``values``: key → array), iterations, errors, status."""
+    """Final estimate per variable, iterations, errors, status.
 
-    values: dict[str, np.ndarray]
+    ``values``: key → array of the variable's storage (C simulation, ``NativeSolver.run``), or
+    key → fgc value from :func:`fgc_backends.hls.native.run`, which then keeps the arrays in
+    ``storage`` (the simulator's ``SimResult`` layout: one result type across backends)."""
+
+    values: dict
     iterations: int
     initial_error: float
     final_error: float
     status: str
     reason: str
+    storage: dict[str, np.ndarray] | None = None
 
     @property
     def converged(self) -> bool:

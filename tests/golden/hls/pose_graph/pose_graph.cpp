@@ -824,51 +824,55 @@ void cost_0(const V* in, const V* dat, T half[LANES][1]) {
     const V t25 = t8*dat[2] + t10*dat[5] + t12*dat[8];
     const V t26 = t19*dat[8] + t15*dat[2] + t17*dat[5];
     V tlog0[3]; v_so3_log(t6, t13, t20, t21, t22, t23, t24, t25, t26, tlog0);
-    const V t27 = tlog0[1];
+    const V t27 = tlog0[0];
     const V t28 = (t27*t27);
-    const V t29 = t28;
-    const V t30 = tlog0[2];
-    const V t31 = (t30*t30);
-    const V t32 = t31;
-    const V t33 = t29 + t32;
-    const V t34 = tlog0[0];
-    const V t35 = (t34*t34);
+    const V t29 = tlog0[1];
+    const V t30 = (t29*t29);
+    const V t31 = tlog0[2];
+    const V t32 = (t31*t31);
+    const V t33 = t30;
+    const V t34 = t33;
+    const V t35 = t32;
     const V t36 = t35;
-    const V t37 = t33 + t36;
-    const V t38 = v_lie_D(t37);
-    const V t39 = -t33*t38 + T(1);
-    const V t40 = (T(0.5))*t30;
-    const V t41 = t40;
-    const V t42 = t34*t38;
-    const V t43 = t27*t42;
-    const V t44 = t41 + t43;
-    const V t45 = (T(0.5))*t27;
-    const V t46 = t45;
-    const V t47 = t30*t42;
-    const V t48 = -t46 + t47;
-    const V t49 = -in[0]*in[9] + in[0]*in[21] - in[3]*in[10] + in[3]*in[22] - in[6]*in[11] + in[6]*in[23];
-    const V t50 = -in[1]*in[9] + in[1]*in[21] - in[4]*in[10] + in[4]*in[22] - in[7]*in[11] + in[7]*in[23];
-    const V t51 = -in[2]*in[9] + in[2]*in[21] - in[5]*in[10] + in[5]*in[22] - in[8]*in[11] + in[8]*in[23];
-    const V t52 = t49*dat[0] + t50*dat[3] + t51*dat[6] - dat[0]*dat[9] - dat[3]*dat[10] - dat[6]*dat[11];
-    const V t53 = t49*dat[1] + t50*dat[4] + t51*dat[7] - dat[1]*dat[9] - dat[4]*dat[10] - dat[7]*dat[11];
-    const V t54 = t49*dat[2] + t50*dat[5] + t51*dat[8] - dat[2]*dat[9] - dat[5]*dat[10] - dat[8]*dat[11];
-    const V t55 = t39*t52 + t44*t53 + t48*t54;
-    const V t56 = -t41 + t43;
-    const V t57 = -t32 - t36;
-    const V t58 = t57*t38 + T(1);
-    const V t59 = (T(0.5))*t34;
-    const V t60 = t59;
-    const V t61 = t27*t30;
-    const V t62 = t61*t38;
-    const V t63 = t60 + t62;
-    const V t64 = t56*t52 + t58*t53 + t63*t54;
-    const V t65 = t46 + t47;
-    const V t66 = -t60 + t62;
-    const V t67 = -t29 - t36;
-    const V t68 = t67*t38 + T(1);
-    const V t69 = t66*t53 + t68*t54 + t65*t52;
-    const V t70 = (T(0.5))*(t69*t69)*(dat[32]*dat[32]) + (T(0.5))*((t64*dat[30] + t69*dat[31])*(t64*dat[30] + t69*dat[31])) + (T(0.5))*((t55*dat[27] + t64*dat[28] + t69*dat[29])*(t55*dat[27] + t64*dat[28] + t69*dat[29])) + (T(0.5))*((t55*dat[24] + t64*dat[25] + t69*dat[26] + t30*dat[23])*(t55*dat[24] + t64*dat[25] + t69*dat[26] + t30*dat[23])) + (T(0.5))*((t55*dat[20] + t64*dat[21] + t69*dat[22] + t27*dat[18] + t30*dat[19])*(t55*dat[20] + t64*dat[21] + t69*dat[22] + t27*dat[18] + t30*dat[19])) + (T(0.5))*((t55*dat[15] + t64*dat[16] + t69*dat[17] + t34*dat[12] + t27*dat[13] + t30*dat[14])*(t55*dat[15] + t64*dat[16] + t69*dat[17] + t34*dat[12] + t27*dat[13] + t30*dat[14]));
-    const V o0 = t70;
+    const V t37 = t34 + t36;
+    const V t38 = t28;
+    const V t39 = t38;
+    const V t40 = t37 + t39;
+    const V t41 = v_lie_D(t40);
+    const V t42 = -t37*t41 + T(1);
+    const V t43 = (T(0.5))*t31;
+    const V t44 = t43;
+    const V t45 = t27*t41;
+    const V t46 = t29*t45;
+    const V t47 = t44 + t46;
+    const V t48 = (T(0.5))*t29;
+    const V t49 = t48;
+    const V t50 = t31*t45;
+    const V t51 = -t49 + t50;
+    const V t52 = -in[0]*in[9] + in[0]*in[21] - in[3]*in[10] + in[3]*in[22] - in[6]*in[11] + in[6]*in[23];
+    const V t53 = -in[1]*in[9] + in[1]*in[21] - in[4]*in[10] + in[4]*in[22] - in[7]*in[11] + in[7]*in[23];
+    const V t54 = -in[2]*in[9] + in[2]*in[21] - in[5]*in[10] + in[5]*in[22] - in[8]*in[11] + in[8]*in[23];
+    const V t55 = t52*dat[0] + t53*dat[3] + t54*dat[6] - dat[0]*dat[9] - dat[3]*dat[10] - dat[6]*dat[11];
+    const V t56 = t52*dat[1] + t53*dat[4] + t54*dat[7] - dat[1]*dat[9] - dat[4]*dat[10] - dat[7]*dat[11];
+    const V t57 = t52*dat[2] + t53*dat[5] + t54*dat[8] - dat[2]*dat[9] - dat[5]*dat[10] - dat[8]*dat[11];
+    const V t58 = t42*t55 + t47*t56 + t51*t57;
+    const V t59 = -t44 + t46;
+    const V t60 = -t36 - t39;
+    const V t61 = t60*t41 + T(1);
+    const V t62 = (T(0.5))*t27;
+    const V t63 = t62;
+    const V t64 = t29*t31;
+    const V t65 = t64*t41;
+    const V t66 = t63 + t65;
+    const V t67 = t59*t55 + t61*t56 + t66*t57;
+    const V t68 = t49 + t50;
+    const V t69 = -t63 + t65;
+    const V t70 = -t34 - t39;
+    const V t71 = t70*t41 + T(1);
+    const V t72 = t69*t56 + t71*t57 + t68*t55;
+    const V t73 = (T(0.5))*(dat[12]*dat[12]);
+    const V t74 = (t67*t67)*t73 + (t72*t72)*t73 + t73*t28 + t73*t30 + t73*t32 + t73*(t58*t58);
+    const V o0 = t74;
     for (int l = 0; l < LANES; ++l) {
         half[l][0] = lane(o0, l);
     }
@@ -1320,18 +1324,18 @@ T robust_loss(T half, T code, T k) {
 // The data inputs (measurements, then noise parameters) of every LANES instances, laned once per
 // call by lane_data(): they are the same in every iteration, so a gather only lanes x and the
 // kernels read the data in place.
-V BLOCK0_LANED[(6 + LANES - 1) / LANES][33];
+V BLOCK0_LANED[(6 + LANES - 1) / LANES][13];
 
 void lane_data_0() {
     for (int first = 0; first < 6; first += LANES) {
-        T laned[33][LANES];
+        T laned[13][LANES];
         for (int l = 0; l < LANES; ++l) {
             const int f = BLOCK0_INSTANCES[first + l < 6 ? first + l : 5];
             const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
             for (int i = 0; i < 12; ++i) laned[0 + i][l] = line[0 + i];
-            for (int i = 0; i < 21; ++i) laned[12 + i][l] = line[12 + i];
+            for (int i = 0; i < 1; ++i) laned[12 + i][l] = line[12 + i];
         }
-        for (int i = 0; i < 33; ++i) BLOCK0_LANED[first / LANES][i] = load_lanes(laned[i]);
+        for (int i = 0; i < 13; ++i) BLOCK0_LANED[first / LANES][i] = load_lanes(laned[i]);
     }
 }
 #endif
@@ -1339,7 +1343,7 @@ void lane_data_0() {
 // The inputs of instances BLOCK0_INSTANCES[first ...] into the lanes (lanes past the last
 // instance repeat it; their results are not used): x's storage into `in`; returns where the data
 // inputs are (on the host the laned data, in hardware the rest of `in`).
-const V* gather_0(const T* x, int first, bool cost, V in[57]) {
+const V* gather_0(const T* x, int first, bool cost, V in[37]) {
 #ifndef __SYNTHESIS__
     T buf[24][LANES];
     for (int l = 0; l < LANES; ++l) {
@@ -1352,7 +1356,7 @@ const V* gather_0(const T* x, int first, bool cost, V in[57]) {
     (void)cost;
     return BLOCK0_LANED[first / LANES];
 #else
-    T buf[57][LANES];
+    T buf[37][LANES];
     for (int l = 0; l < LANES; ++l) {
         const int f = BLOCK0_INSTANCES[first + l < 6 ? first + l : 5];
         const int vb = FACTOR_VAR_BEGIN[f];
@@ -1361,10 +1365,10 @@ const V* gather_0(const T* x, int first, bool cost, V in[57]) {
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         for (int i = 0; i < 12; ++i) buf[24 + i][l] = line[0 + i];
         if (!cost) continue;
-        for (int i = 0; i < 21; ++i) buf[36 + i][l] = line[12 + i];
+        for (int i = 0; i < 1; ++i) buf[36 + i][l] = line[12 + i];
     }
-    for (int i = 0; i < (cost ? 57 : 36); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=57
+    for (int i = 0; i < (cost ? 37 : 36); ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=37
         in[i] = load_lanes(buf[i]);
     }
     return in + 24;
@@ -1376,7 +1380,7 @@ const V* gather_0(const T* x, int first, bool cost, V in[57]) {
 // and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
 // the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
 bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
-    V in[57];
+    V in[37];
     const V* dat = gather_0(x, first, false, in);
     // rows [J | r] padded to 16 (whole tiles): the Jacobian writes only its structural
     // non-zeros, so the zeros this buffer starts with are never overwritten
@@ -1389,8 +1393,8 @@ bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
         const int f = BLOCK0_INSTANCES[first + l];
         const int vb = FACTOR_VAR_BEGIN[f];
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
-        whiten<16, 13, 6, 2, 6>(raw[l] + 0, ab[l] + 0, line + 12);
-        reweight<16, 13, 6>(ab[l] + 0, line[33], line[34]);
+        whiten<16, 13, 6, 0, 6>(raw[l] + 0, ab[l] + 0, line + 12);
+        reweight<16, 13, 6>(ab[l] + 0, line[13], line[14]);
         if (noise_mode) {
             T scale[16];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 16; ++c) scale[c] = T(0);
@@ -1413,7 +1417,7 @@ bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
 
 // block 0, mode 2: add the cost of instances first ... first + LANES - 1 to *total, in order
 void cost_of_0(const T* x, int first, T* total) {
-    V in[57];
+    V in[37];
     const V* dat = gather_0(x, first, true, in);
     T half[LANES][1];
     cost_0(in, dat, half);
@@ -1421,7 +1425,7 @@ void cost_of_0(const T* x, int first, T* total) {
         if (first + l >= 6) continue;
         const T* line = DATA_BUF + FACTOR_DATA_OFF[BLOCK0_INSTANCES[first + l]];
         T cost = T(0);
-        cost += robust_loss(half[l][0], line[33], line[34]);
+        cost += robust_loss(half[l][0], line[13], line[14]);
         *total += cost;
     }
 }
@@ -1990,7 +1994,7 @@ void host_inputs(const T* x_in, const T* data) {
 void pose_graph_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
                     fgc::T x_out[fgc::N_X], fgc::T errors[2], int info[3]) {
 #pragma HLS INTERFACE m_axi port=x_in offset=slave bundle=gmem0 depth=60
-#pragma HLS INTERFACE m_axi port=data offset=slave bundle=gmem1 depth=225
+#pragma HLS INTERFACE m_axi port=data offset=slave bundle=gmem1 depth=105
 #pragma HLS INTERFACE m_axi port=x_out offset=slave bundle=gmem0 depth=60
 #pragma HLS INTERFACE s_axilite port=errors
 #pragma HLS INTERFACE s_axilite port=info

@@ -20,7 +20,7 @@ const int N_STEPS = 3;
 const int N_LEVELS = 2;
 const int N_X = 60;
 const int N_TANGENT = 30;
-const int N_DATA = 225;
+const int N_DATA = 105;
 const int N_A = 510;
 const int N_GRAM = 574;
 const int N_COND = 570;
@@ -31,14 +31,14 @@ const int MAX_ROWS = 54;
 const int MAX_STEP_FACTORS = 3;
 const int MAX_CHILDREN = 2;
 const int MAX_VARIABLES = 5;  // the compiled window (Program.max_variables)
-const int MAX_LINE_CHARS = 1184;  // longest data-file line the testbench reads
+const int MAX_LINE_CHARS = 544;  // longest data-file line the testbench reads
 const int N_STATUSES = 3;
 const int N_REASONS = 10;
 static const int VAR_X_OFF[6] = {
     0, 12, 24, 36, 48, 60,
 };
 static const int FACTOR_DATA_OFF[8] = {
-    0, 35, 70, 105, 140, 175, 210, 225,
+    0, 15, 30, 45, 60, 75, 90, 105,
 };
 
 // ---- scalar math: one wrapper per function, so the scalar type decides the implementation
