@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from fgc import conditioning, geometry
-from fgc.datafile import ProblemData, write_data
+from fgc.datafile import ProblemData, check_structure, write_data
 from fgc.errors import DataError, FgcError
 from fgc.geometry import LieGroup
 from fgc.program import Program
@@ -85,7 +85,8 @@ def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | 
     process (or as a subprocess) and read its result. ``precision`` overrides the Program's;
     ``incremental`` runs keyframe by keyframe along the Program's incremental plan.
 
-    Raises DataError when the data does not fit the Program (naming the line and factor).
+    Raises DataError when the data does not fit the Program (naming the line and factor), or
+    were laid out for another structure (naming both structure fingerprints).
     """
     if out_dir is None:
         with tempfile.TemporaryDirectory(prefix="fgc-sim-") as tmp:
@@ -93,6 +94,7 @@ def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | 
     out = Path(out_dir)
     files = tuple(emit(program, out, config))
     if isinstance(data, ProblemData):
+        check_structure(data, program)
         data_path = out / "data.txt"
         write_data(data, data_path)
     else:
