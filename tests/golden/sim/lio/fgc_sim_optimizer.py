@@ -250,7 +250,7 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
     if incremental and spec["incremental"] is None:
         raise ValueError("this problem was compiled without an incremental plan")
     t0 = time.perf_counter()
-    data = lib.runtime.read_data(data_path)
+    data = lib.runtime.read_data(data_path, spec["structure"])
     problem = Problem(spec, data, precision, lib)
     t1 = time.perf_counter()
     x, status, reason, it, mu, log, updates = _optimize_all(problem, opts, incremental)
