@@ -45,6 +45,22 @@ class IllConditionedWarning(FgcWarning):
     """The problem is too ill-conditioned for float32 with the chosen linear solver."""
 
 
+class PrecisionLimitWarning(FgcWarning):
+    """The working precision cannot place a variable within its noise (a coordinate's float32
+    resolution exceeds its σ): the solution is not the optimum to the data's accuracy."""
+
+
+def precision_limit_message(key: str, type_name: str, rho: float, precision: str) -> str:
+    """The text of a :class:`PrecisionLimitWarning`: ``rho`` is how many σ a rounding of the
+    state to ``precision`` moves a whitened residual (see the simulator's ``resolution``)."""
+    return (f"{precision} cannot place variable {key!r} ({type_name}) within its noise: "
+            f"rounding its coordinates to {precision} moves a whitened residual by "
+            f"{rho:.3g} σ (≥ 1: a coordinate's resolution exceeds its noise sigma, e.g. "
+            "positions far from the origin or very small sigmas); the result is not the "
+            "optimum to the data's accuracy — recentre the coordinates near the origin, rescale "
+            "the noise models, or solve in float64")
+
+
 class RankDeficientWarning(FgcWarning):
     """The factors leave a variable undetermined; the returned value is one of many minimisers."""
 
