@@ -2170,8 +2170,8 @@ BLOCKS = (
 )
 
 PROBLEM = {
-    # the data files this simulator reads must carry this structure fingerprint; the design's
-    # fingerprint (structure, schedule, solver options) is fd441f5c6b50b1c2
+    # the data files this simulator reads must carry this structure fingerprint (the design's
+    # fingerprint is left out: one simulator serves every unit count of a design)
     "structure": "c85ca38da7557b18",
     "solver": {
         "method": 'lm',

@@ -2707,8 +2707,8 @@ BLOCKS = (
 )
 
 PROBLEM = {
-    # the data files this simulator reads must carry this structure fingerprint; the design's
-    # fingerprint (structure, schedule, solver options) is bb965c6be1eb2446
+    # the data files this simulator reads must carry this structure fingerprint (the design's
+    # fingerprint is left out: one simulator serves every unit count of a design)
     "structure": "170b72b966b85a9b",
     "solver": {
         "method": 'lm',
