@@ -21,10 +21,9 @@ against float64, largest rotation / translation difference): pose3example κ = 6
 lio N=30 32 and N=100 55 stay within 1e-4 m and 3e-6 rad with both solvers; the IMU window has
 κ = 554 (N=20), 5.1e3 (N=50), 2.5e4 (N=80): float32 QR stays within 4e-5 m, float32 Cholesky
 errs by 3.5e-3 m, 6.9e-2 m and 0.13 m — past the 1 cm bound exactly where κ crosses 1/√eps32,
-which is where fgc starts to warn. (Those Cholesky figures predate the simulator's Jacobi
-scaling of float32 Cholesky — the columns scaled to unit norm before H is formed, the
-equilibration this κ assumes; with it the IMU window at N = 20 converges in 18 iterations to
-0.86 mm, where the unscaled solve crept to 5.5 mm in 100 iterations without converging.)
+which is where fgc starts to warn. (With numpy 2.4.6, float32 Cholesky at N = 20 no longer
+stops: its cost falls below its own rounding noise and it runs to max_iterations, 5.5 mm off —
+reported as not converged; ``tests/test_sim_gtsam.py``.)
 The raw κ (no equilibration) and the cheaper ratio max|R_ii|/min|R_ii| do not separate these
 cases (both rank w100 and lio above imu N=20).
 """

@@ -38,7 +38,6 @@ class Problem:
         self.spec, self.lib, self.dtype = spec, lib, numpy.dtype(dtype)
         self.les_dtype = les_dtype(self.dtype, spec["solver"]["linear_precision"])
         self.singular = None  # the last SingularError of an elimination
-        self.damping_scale = None  # the damping's diagonal S of the last solve (None: I)
         variables, factors = data
         dims, storage = spec["variable_dims"], spec["variable_storage"]
         _check_variables(variables, storage, lib.runtime.SimDataError)
@@ -90,28 +89,14 @@ class Problem:
         return abs_, g.astype(self.dtype), noise
 
     def solve(self, abs_, mu):
-        """δ solving (H + μ·S) δ = g along the schedule, in the linear solver's precision (the
-        factor rows widened to it, δ rounded back to the working precision); ``damping_scale``
-        is set to S's diagonal (None: S = I).
-
-        A float32 Cholesky solve factors the columns scaled to unit norm (Jacobi scaling,
-        H' = D H D with D = diag(H)^-½; δ = D δ', S = D⁻²): the normal equations of raw columns
-        mix metres, radians and bias units, and float32 Cholesky of them loses the weakly
-        determined directions (the IMU window at N = 20 crept 0.6 mm an iteration for 100
-        iterations), while the κ bound of :mod:`fgc.conditioning` is for equilibrated
-        columns."""
+        """δ solving (H + μI) δ = g along the schedule, in the linear solver's precision (the
+        factor rows widened to it, δ rounded back to the working precision)."""
         lin = self.lib.linear
-        scale = None
-        if self.les_dtype == numpy.float32 and self.spec["solver"]["linear"] == "cholesky":
-            abs_, scale = _jacobi_scaled(self, abs_)
         factors = numpy.concatenate([ab.reshape(-1) for ab in abs_]).astype(self.les_dtype,
                                                                              copy=False)
         conds = lin.eliminate(self.plan, factors, mu, self.spec["solver"]["linear"])
         delta = lin.back_substitute(self.plan, self.spec["back_substitution"], conds, self.n,
                                     self.les_dtype)
-        self.damping_scale = None if scale is None else 1.0 / (scale * scale)
-        if scale is not None:
-            delta = delta.astype(numpy.float64) * scale
         return delta.astype(self.dtype, copy=False)
 
     def retract(self, x, delta):
@@ -121,24 +106,6 @@ class Problem:
             for fn, sidx, tidx in self.groups:
                 out[sidx] = fn(x[sidx], delta[tidx])
         return out
-
-
-def _jacobi_scaled(problem, abs_):
-    """The blocks' [A | b] with every global column scaled to unit norm, and the scales D
-    (float64; 1 for an empty column)."""
-    h = numpy.zeros(problem.n)
-    for b, ab in zip(problem.blocks, abs_):
-        a = ab[..., :-1].astype(numpy.float64)
-        h += numpy.bincount(b.columns.reshape(-1), numpy.einsum("nmd,nmd->nd", a, a).reshape(-1),
-                            minlength=problem.n)
-    scale = numpy.ones(problem.n)
-    scale[h > 0] = 1.0 / numpy.sqrt(h[h > 0])
-    out = []
-    for b, ab in zip(problem.blocks, abs_):
-        scaled = ab.astype(numpy.float64)
-        scaled[..., :-1] *= scale[b.columns][:, None, :]
-        out.append(scaled.astype(ab.dtype))
-    return out, scale
 
 
 def les_dtype(dtype, linear_precision):
@@ -279,10 +246,7 @@ def _step(problem, x, cost, lin, mu, opts, limits):
             if numpy.linalg.norm(delta) <= limits["eps_step"] * (numpy.linalg.norm(x)
                                                                  + limits["eps_step"]):
                 return "converged", None, None, mu, "step"
-            scale = getattr(problem, "damping_scale", None)  # incremental windows: none
-            damping = mu * delta if scale is None else (
-                mu * scale * delta)
-            predicted = 0.5 * float(delta @ (g + damping))
+            predicted = 0.5 * float(delta @ (g + mu * delta))
             x_new = problem.retract(x, delta)
             new = problem.cost(x_new)
             if numpy.isfinite(new) and (new < cost or mu <= 0
