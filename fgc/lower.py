@@ -45,7 +45,8 @@ def _block_spec(b: FactorBlock, graph: Graph) -> BlockSpec:
     for m, f in zip(b.type.members, b.factors, strict=True):
         sizes = {a.name: storage_dim(a.type) for a in f.type.measurements}
         members.append(MemberSpec(m.name, tuple(m.rows), m.noise_kind, len(m.noise_symbols),
-                                  tuple((n, sizes[n]) for n in m.measurement_names)))
+                                  tuple((n, sizes[n]) for n in m.measurement_names),
+                                  tuple(m.positions)))
     ops = b.type.ops
     ops_unshared, kernel, cost_kernel = _lowered_kernels(b.type)
     return BlockSpec(

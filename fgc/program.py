@@ -9,6 +9,8 @@ noise and initial values are *data*, read by the emitted program at run time; th
 from __future__ import annotations
 
 import dataclasses
+import functools
+import hashlib
 import json
 from dataclasses import dataclass, field
 
@@ -151,6 +153,9 @@ class MemberSpec:
     noise_kind: str
     noise_params: int
     measurements: tuple[tuple[str, int], ...]  # (name, storage size), kernel input order
+    # the block variable each of the factor's keys is, in the factor's key order (empty: a
+    # Program that predates the field)
+    positions: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -229,6 +234,47 @@ class Program:
     def from_json(cls, text: str) -> Program:
         return cls.from_dict(json.loads(text))
 
+    # -- fingerprints ------------------------------------------------------------------------
+    @functools.cached_property
+    def structure_fingerprint(self) -> str:
+        """Digest of what a data file's numbers mean: each variable's key and type, each block
+        type's member factor types and data layout, and which keys each factor instance connects
+        (in order) with its graph factor indices. Data files carry it and every reader refuses
+        data of another structure: two graphs with the same counts but other connectivity have
+        different fingerprints. Solver options and the schedule do not change the data layout
+        (one data file serves every design of a structure), so they are in
+        :attr:`fingerprint`, not here."""
+        return _digest(structure_summary(self))
+
+    @functools.cached_property
+    def fingerprint(self) -> str:
+        """Digest of the whole design: the structure (:attr:`structure_fingerprint`), the block
+        kernels, the elimination orderings and schedule, the storage plan and every solver
+        option (the Program's canonical JSON without its name). Same spec → same
+        fingerprint."""
+        d = self.to_dict()
+        d.pop("name")
+        return _digest(d)
+
+
+FINGERPRINT_CHARS = 16  # hex digits of SHA-256 (64 bits)
+
+
+def _digest(obj) -> str:
+    text = json.dumps(obj, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()[:FINGERPRINT_CHARS]
+
+
+def structure_summary(p: Program) -> dict:
+    """The fields :attr:`Program.structure_fingerprint` digests (JSON-serialisable)."""
+    return {
+        "variables": [[v.key, v.type_name, v.dim, v.storage_dim] for v in p.variables],
+        "blocks": [[b.variable_types, [[m.factor_type, m.rows, m.noise_kind, m.noise_params,
+                                        m.measurements, m.positions] for m in b.members]]
+                   for b in p.blocks],
+        "factors": [[f.block, f.keys, f.factors] for f in p.factors],
+    }
+
 
 def _tuples(x):
     return tuple(_tuples(v) for v in x) if isinstance(x, list) else x
@@ -236,7 +282,8 @@ def _tuples(x):
 
 def _block_from_dict(b: dict) -> BlockSpec:
     members = tuple(MemberSpec(m["factor_type"], tuple(m["rows"]), m["noise_kind"],
-                               m["noise_params"], _tuples(m["measurements"]))
+                               m["noise_params"], _tuples(m["measurements"]),
+                               tuple(m.get("positions", ())))
                     for m in b["members"])
 
     def text(k: dict) -> KernelText:

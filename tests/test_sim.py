@@ -322,7 +322,7 @@ def test_singular_gauss_newton_is_reported(tmp_path):
         factors = list(data.factors)
         factors[prior] = factors[prior].copy()
         factors[prior][4] = 1e-200  # 1/σ of the prior (after its 4 measurement numbers)
-        weak = type(data)(data.variables, tuple(factors))
+        weak = type(data)(data.variables, tuple(factors), data.structure)
         if method == "gn":
             r = sim.run(program, weak, tmp_path / method)
             assert r.status == "failed" and r.reason == "singular"

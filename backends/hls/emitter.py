@@ -179,6 +179,8 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
     return {
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,
+        "structure_fingerprint": program.structure_fingerprint,
+        "design_fingerprint": program.fingerprint,
         "scalar": config.scalar_cxx, "fixed_point": config.is_fixed_point,
         "linear_scalar": config.linear_cxx, "mixed": config.mixed,
         "include_dirs": include, "part": config.part, "clock_ns": repr(float(config.clock_ns)),

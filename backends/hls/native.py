@@ -24,7 +24,7 @@ import numpy as np
 
 import fgc
 from fgc.cache import cache_dir
-from fgc.datafile import ProblemData
+from fgc.datafile import ProblemData, check_structure
 from fgc.errors import DataError
 from fgc.program import Program
 from fgc_backends.hls.build import library_path, make
@@ -77,15 +77,23 @@ class NativeSolver:
         lib.fgc_run.restype = None
         lib.fgc_probe.argtypes = [ctypes.c_void_p] * 3
         lib.fgc_probe.restype = None
+        lib.fgc_structure.argtypes = []
+        lib.fgc_structure.restype = ctypes.c_char_p
         sizes = np.zeros(4, dtype=np.int32)
         lib.fgc_sizes(sizes)
-        if (sizes[0], sizes[1]) != (len(program.variables), len(program.factors)):
-            raise DataError(f"{library_path(project)} was built for another structure")
+        built = lib.fgc_structure().decode("ascii")
+        if (sizes[0], sizes[1]) != (len(program.variables), len(program.factors)) or (
+                built != program.structure_fingerprint):
+            raise DataError(f"{library_path(project)} was built for another structure: "
+                            f"structure fingerprint {built}, the Program has "
+                            f"{program.structure_fingerprint}")
         return cls(program, project, lib, int(sizes[2]), int(sizes[3]))
 
     def flatten(self, data: ProblemData) -> tuple[np.ndarray, np.ndarray]:
-        """The data as the kernel's two flat arrays, checked against the compiled layout."""
+        """The data as the kernel's two flat arrays, checked against the compiled layout and
+        structure fingerprint."""
         p = self.program
+        check_structure(data, p)
         if len(data.variables) != len(p.variables) or len(data.factors) != len(p.factors):
             raise DataError(f"the data has {len(data.variables)} variables and "
                             f"{len(data.factors)} factors; the Program {len(p.variables)} and "

@@ -61,6 +61,7 @@ def _context(program: Program, config: SimConfig) -> dict:
     return {
         "fgc_version": fgc.__version__,
         "data_magic": MAGIC,
+        "structure_fingerprint": program.structure_fingerprint,
         "pivot_tolerance_float64": repr(float(config.pivot_tolerance_float64)),
         "pivot_tolerance_float32": repr(float(config.pivot_tolerance_float32)),
         "problem_comment": comment(program.name),

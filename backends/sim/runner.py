@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from fgc import conditioning, geometry
-from fgc.datafile import ProblemData, write_data
+from fgc.datafile import ProblemData, check_structure, write_data
 from fgc.errors import DataError, FgcError
 from fgc.geometry import LieGroup
 from fgc.program import Program
@@ -29,7 +29,8 @@ class SimResult:
 
     ``values``/``storage``: the final estimate per Program variable key (fgc values / raw storage
     arrays); ``status`` is "converged", "max_iterations" or "failed" and ``reason`` says which
-    stopping rule or failure (e.g. "relative_decrease", "lambda_limit", "singular");
+    stopping rule or failure (e.g. "relative_decrease", "lambda_limit", "singular",
+    "precision_limit": float32 cannot place the state within its noise, never "converged");
     ``final_error`` is GTSAM's graph error at ``values`` (the last accepted point);
     ``cost_log`` holds the initial cost and the cost after each accepted step (incremental
     runs: the initial and the final cost of the whole graph); ``updates`` lists, for an
@@ -85,7 +86,8 @@ def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | 
     process (or as a subprocess) and read its result. ``precision`` overrides the Program's;
     ``incremental`` runs keyframe by keyframe along the Program's incremental plan.
 
-    Raises DataError when the data does not fit the Program (naming the line and factor).
+    Raises DataError when the data does not fit the Program (naming the line and factor), or
+    were laid out for another structure (naming both structure fingerprints).
     """
     if out_dir is None:
         with tempfile.TemporaryDirectory(prefix="fgc-sim-") as tmp:
@@ -93,6 +95,7 @@ def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | 
     out = Path(out_dir)
     files = tuple(emit(program, out, config))
     if isinstance(data, ProblemData):
+        check_structure(data, program)
         data_path = out / "data.txt"
         write_data(data, data_path)
     else:
@@ -201,6 +204,15 @@ def _explain_outcome(program: Program, raw: dict, config: SimConfig
         if raw["status"] != "failed":
             conditioning.warn(text, conditioning.RankDeficientWarning)
             warned.append(text)
+    limit = raw.get("resolution")
+    if limit is not None and limit["rho"] >= 1.0 and 0 <= limit["variable"] < len(
+            program.variables):
+        spec = program.variables[limit["variable"]]
+        text = conditioning.precision_limit_message(spec.key, spec.type_name, limit["rho"],
+                                                    raw["precision"])
+        conditioning.warn(text, conditioning.PrecisionLimitWarning)
+        messages.append(text)
+        warned.append(text)
     text = conditioning.warn_if_ill_conditioned(raw.get("condition"), raw["linear"],
                                                 raw["precision"], raw.get("linear_precision"))
     if text:
@@ -214,6 +226,9 @@ _FAILURES = {
                 "singular (last accepted cost {cost}).",
     "lambda_limit": "Levenberg-Marquardt gave up after {iterations} iterations: no step lowered "
                     "the cost before the damping passed {bound:g} (last accepted cost {cost}).",
+    "precision_limit": "the solver stopped after {iterations} iterations (cost {cost}), but "
+                       "its working precision cannot resolve the state to the data's noise: "
+                       "not converged.",
     "non_finite": "the cost or linearisation became non-finite after {iterations} iterations "
                   "(last finite cost {cost}); check the initial values and noise models.",
 }

@@ -20,6 +20,12 @@ void convert_inputs(const double* x, const double* factor_data) {
 
 extern "C" {
 
+// The structure fingerprint this library was compiled for (design fd441f5c6b50b1c2): the
+// caller refuses data of another structure before it reaches the kernel.
+const char* fgc_structure() {
+    return "c85ca38da7557b18";
+}
+
 // Sizes the caller's arrays must have: {N_VARIABLES, N_FACTORS, N_X, N_DATA}.
 void fgc_sizes(int out[4]) {
     out[0] = fgc::N_VARIABLES;

@@ -5,6 +5,10 @@
 //
 // Exit status: 0 after a run (the result file says whether it converged), 2 on bad arguments or
 // a data file that does not fit the compiled structure, 3 if the result cannot be written.
+//
+// Structure fingerprint c85ca38da7557b18 (design fd441f5c6b50b1c2): a data file
+// must carry it on its first line, since equal counts do not mean equal factor connectivity. The
+// check is host code, here; the kernel reads only numbers.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -14,6 +18,9 @@
 namespace {
 
 using fgc::T;
+
+const char DATA_HEADER[] = "FGCDATA 2";
+const char STRUCTURE[] = "c85ca38da7557b18";
 
 const char* const STATUS_NAMES[fgc::N_STATUSES] = {
     "converged",
@@ -74,14 +81,38 @@ bool header(const char* name, int expected) {
            count == expected;
 }
 
+// The first line: the magic words, then the structure fingerprint this testbench was compiled
+// for (a mismatch names both fingerprints).
+int check_header(const char* path) {
+    char magic[16];
+    char version[16];
+    char structure[64];
+    const int fields = std::sscanf(line, "%15s %15s %63s", magic, version, structure);
+    char words[40];
+    std::snprintf(words, sizeof words, "%s %s", magic, version);
+    if (fields < 2 || std::strcmp(words, DATA_HEADER) != 0) {
+        return fail(path, 1, "not an fgc data file (expected 'FGCDATA 2 <fingerprint>')");
+    }
+    if (fields != 3 || std::strcmp(structure, STRUCTURE) != 0) {
+        std::fprintf(stderr, "%s:1: the data file is for another structure: structure "
+                     "fingerprint %s, this testbench was compiled for %s\n", path,
+                     fields == 3 ? structure : "(none)", STRUCTURE);
+        return 2;
+    }
+    return 0;
+}
+
 int read_data(const char* path) {
     std::FILE* in = std::fopen(path, "r");
     if (!in) return fail(path, 0, "cannot open the data file");
     int n = 0;
     int status = 0;
-    if (!next_line(in, &n) || std::strncmp(line, "FGCDATA 1", 9) != 0) {
+    if (!next_line(in, &n)) {
         status = fail(path, n, "not an fgc data file");
-    } else if (!next_line(in, &n) || !header("VARIABLES", fgc::N_VARIABLES)) {
+    } else {
+        status = check_header(path);
+    }
+    if (status == 0 && (!next_line(in, &n) || !header("VARIABLES", fgc::N_VARIABLES))) {
         status = fail(path, n, "expected 'VARIABLES 24'");
     }
     for (int v = 0; v < fgc::N_VARIABLES && status == 0; ++v) {

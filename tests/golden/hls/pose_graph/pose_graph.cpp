@@ -1657,9 +1657,19 @@ bool householder(T (*W)[LD], int m, int w, int f, int s, const int* plan) {
                 if (i == j || W[i][j] != T(0)) scanned[n++] = i;
             }
         }
+        // the column scaled by its largest magnitude: |v| <= 1, so v.v neither underflows on a
+        // tiny non-zero column (float32: 1e-20 squared is 0, and tau would be inf) nor
+        // overflows; the reflection I - tau v v^T does not depend on v's scale.
+        T big = T(0);
         for (int a = 0; a < n; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=54
-            v[a] = W[active[a]][j];
+            const T e = fgc_abs(W[active[a]][j]);
+            big = e > big ? e : big;
+        }
+        if (big == T(0)) continue;
+        for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=54
+            v[a] = W[active[a]][j] / big;
         }
         T part[TILE];  // TILE interleaved partial sums of the squares: short chains, fixed order
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
@@ -1674,11 +1684,11 @@ bool householder(T (*W)[LD], int m, int w, int f, int s, const int* plan) {
         }
         T norm2 = T(0);
         for (int t = 0; t < TILE; ++t) norm2 += part[t];
-        const T norm = fgc_sqrt(norm2);
-        if (norm == T(0)) continue;
-        const T alpha = W[j][j] >= T(0) ? T(-norm) : norm;
-        v[0] = W[j][j] - alpha;  // active[0] is the pivot row j
-        const T tau = T(1) / (norm2 - alpha * W[j][j]);  // 2 / |v|^2, without a second sum
+        const T norm = fgc_sqrt(norm2);  // of the scaled column: >= 1
+        const T pivot = v[0];  // active[0] is the pivot row j
+        const T alpha = pivot >= T(0) ? T(-norm) : norm;
+        v[0] = pivot - alpha;
+        const T tau = T(1) / (norm2 - alpha * pivot);  // 2 / |v|^2, without a second sum
         // columns from the tile boundary at or left of j + 1 to the end of the padded row:
         // whole vectors; left of j + 1 the active rows are zero (and column j is set below)
         const int c0 = (j + 1) - (j + 1) % TILE;
@@ -1718,7 +1728,7 @@ bool householder(T (*W)[LD], int m, int w, int f, int s, const int* plan) {
             }
             row[j] = T(0);
         }
-        W[j][j] = alpha;
+        W[j][j] = alpha * big;
     }
     T scale = T(0);
     for (int i = 0; i < k; ++i) {

@@ -290,21 +290,23 @@ def solve_lower(low, b):
 
 def _householder_r(m):
     """Paper A's Algorithm 3.1 column by column: Evaluate builds the Householder vector v of
-    column j, Update applies I − 2vvᵀ/vᵀv to the remaining columns."""
+    column j, Update applies I − 2vvᵀ/vᵀv to the remaining columns. The column is scaled by its
+    largest magnitude first (the reflection does not depend on v's scale): on a tiny non-zero
+    column vᵀv would underflow in float32 (1e-20² = 0) and 2/vᵀv overflow to inf."""
     a = m.copy()
     rows, cols = a.shape
     k = min(rows, cols)
     for j in range(k):
-        x = a[j:, j]
-        norm = numpy.sqrt(x @ x)
-        if norm == 0:
+        big = numpy.max(numpy.abs(a[j:, j]))
+        if big == 0:
             continue
-        alpha = -norm if x[0] >= 0 else norm
-        v = x.copy()
+        v = a[j:, j] / big
+        norm = numpy.sqrt(v @ v)
+        alpha = -norm if v[0] >= 0 else norm
         v[0] -= alpha
         a[j:, j:] -= (2 / (v @ v)) * numpy.outer(v, v @ a[j:, j:])
         a[j + 1:, j] = 0
-        a[j, j] = alpha
+        a[j, j] = alpha * big
     return numpy.triu(a[:k])
 
 

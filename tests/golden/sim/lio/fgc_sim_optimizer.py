@@ -22,6 +22,7 @@ import time
 
 import numpy
 
+RESOLUTION_LIMIT = 1.0  # ρ (see resolution): rounding the state moves a residual by ≥ 1σ
 MU_MIN = 1e-30  # μ never reaches 0 in LM: its damping rows keep every step well posed
 RESULT_FORMAT = "fgc-sim-result 1"
 
@@ -127,6 +128,28 @@ def cost_noise(problem, x, parts):
         moved = eps * numpy.einsum("nmd,nd->nm", numpy.abs(ab[..., :-1]), columns[cols])
         total += float(numpy.sum(numpy.abs(ab[..., -1]) * moved + 0.5 * moved * moved))
     return total
+
+
+def resolution(problem, x, parts):
+    """(ρ, variable) at x: ρ is the largest whitened-residual change, in σ, that rounding x to
+    the working precision can cause (one row's eps·Σ|A_ij|·scale_j, as in :func:`cost_noise`);
+    ``variable`` indexes the variable of that row's largest term. ρ ≥ 1 means the working
+    precision cannot place the state within its noise: a coordinate's resolution (ulp) exceeds
+    its σ, e.g. positions near 1e6 m with σ = 0.1 m, or σ = 1e-9 anywhere, in float32."""
+    scale = numpy.maximum(numpy.maximum.reduceat(numpy.abs(x), problem.x_off[:-1]), 1)
+    columns = numpy.repeat(scale, problem.spec["variable_dims"]).astype(numpy.float64)
+    eps = float(numpy.finfo(problem.dtype).eps)
+    best, column = 0.0, 0
+    for ab, cols in parts:
+        if ab.size == 0:
+            continue
+        terms = eps * numpy.abs(ab[..., :-1]).astype(numpy.float64) * columns[cols][:, None, :]
+        rows = terms.sum(axis=-1)
+        n, m = numpy.unravel_index(int(numpy.argmax(rows)), rows.shape)
+        if rows[n, m] > best:
+            best, column = float(rows[n, m]), int(cols[n, int(numpy.argmax(terms[n, m]))])
+    variable = int(numpy.searchsorted(problem.t_off, column, side="right") - 1)
+    return best, variable
 
 
 def _check_variables(variables, storage, error):
@@ -250,7 +273,7 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
     if incremental and spec["incremental"] is None:
         raise ValueError("this problem was compiled without an incremental plan")
     t0 = time.perf_counter()
-    data = lib.runtime.read_data(data_path)
+    data = lib.runtime.read_data(data_path, spec["structure"])
     problem = Problem(spec, data, precision, lib)
     t1 = time.perf_counter()
     x, status, reason, it, mu, log, updates = _optimize_all(problem, opts, incremental)
@@ -258,6 +281,14 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
     diagnosis = None  # rank and condition at the solution (batch solves)
     if not incremental and opts["diagnose"] and reason not in ("singular", "non_finite"):
         diagnosis = _diagnose(problem, data, x, opts)
+    resolved = None  # float32 (any precision below float64): can it place the state at all?
+    if problem.dtype != numpy.float64 and reason not in ("singular", "non_finite"):
+        abs_, _, _ = problem.linearize(x)
+        rho, variable = resolution(problem, x, [(ab, b.columns)
+                                                for b, ab in zip(problem.blocks, abs_)])
+        resolved = {"rho": rho, "variable": variable}
+        if rho >= RESOLUTION_LIMIT and status == "converged":
+            status, reason = "failed", "precision_limit"
     singular = _singular(problem, reason, diagnosis, lib)
     if singular is not None and diagnosis is not None and (
             opts["method"] == "gn" or opts["singular_lm_fails"]):
@@ -272,6 +303,7 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
         "linear": opts["linear"], "setup_seconds": t1 - t0, "solve_seconds": t2 - t1,
         "diagnose_seconds": time.perf_counter() - t2, "incremental": updates,
         "singular": singular, "condition": (diagnosis or {}).get("condition"),
+        "resolution": resolved,
         "values": [x[a:b].astype(float).tolist() for a, b in zip(offsets[:-1], offsets[1:])],
     }
     if result_path is not None:

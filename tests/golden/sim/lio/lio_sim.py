@@ -2707,6 +2707,9 @@ BLOCKS = (
 )
 
 PROBLEM = {
+    # the data files this simulator reads must carry this structure fingerprint (the design's
+    # fingerprint is left out: one simulator serves every unit count of a design)
+    "structure": "170b72b966b85a9b",
     "solver": {
         "method": 'lm',
         "linear": 'qr',

@@ -9,7 +9,7 @@ values) and evaluates all instances of a block type at once, in the chosen float
 
 import numpy
 
-DATA_MAGIC = "FGCDATA 1"
+DATA_MAGIC = "FGCDATA 2"
 NOISE_KINDS = ("isotropic", "diagonal", "full")
 ROBUST_NONE, ROBUST_HUBER, ROBUST_CAUCHY = 0, 1, 2
 ALL = slice(None)  # every instance of a block
@@ -24,8 +24,10 @@ class SimDataError(Exception):
         self.line, self.factor, self.variable = line, factor, variable
 
 
-def read_data(path):
-    """The data file's variable and factor rows (float64 arrays) and their line numbers."""
+def read_data(path, structure=None):
+    """The data file's variable and factor rows (float64 arrays) and their line numbers. With
+    ``structure`` (the compiled structure fingerprint), a file of another structure is refused:
+    equal counts do not mean equal factor connectivity."""
     try:
         with open(path, encoding="ascii") as handle:
             lines = handle.read().splitlines()
@@ -35,8 +37,17 @@ def read_data(path):
         line = _line_of(path, exc.start)
         raise SimDataError(f"{path}:{line}: not an fgc data file (byte {exc.start} is not "
                            "ASCII)", line) from None
-    if not lines or lines[0].strip() != DATA_MAGIC:
-        raise SimDataError(f"{path}:1: not an fgc data file (expected '{DATA_MAGIC}')", 1)
+    first = lines[0].split() if lines else []
+    if first[:2] != DATA_MAGIC.split():
+        raise SimDataError(f"{path}:1: not an fgc data file (expected '{DATA_MAGIC} "
+                           "<fingerprint>')", 1)
+    if len(first) != 3:
+        raise SimDataError(f"{path}:1: expected '{DATA_MAGIC}' and a structure fingerprint", 1)
+    if structure is not None and first[2] != structure:
+        raise SimDataError(f"{path}:1: the data file is for another structure: structure "
+                           f"fingerprint {first[2]!r}, this simulator was compiled for "
+                           f"{structure!r} (same counts do not mean the same factor "
+                           "connectivity)", 1)
     header, sections = 1, []
     for name in ("VARIABLES", "FACTORS"):
         fields = lines[header].split() if header < len(lines) else []

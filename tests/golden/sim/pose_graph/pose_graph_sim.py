@@ -1022,6 +1022,9 @@ BLOCKS = (
 )
 
 PROBLEM = {
+    # the data files this simulator reads must carry this structure fingerprint (the design's
+    # fingerprint is left out: one simulator serves every unit count of a design)
+    "structure": "9d2ca3649e6f66bc",
     "solver": {
         "method": 'lm',
         "linear": 'qr',
