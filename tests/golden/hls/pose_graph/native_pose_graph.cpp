@@ -20,10 +20,10 @@ void convert_inputs(const double* x, const double* factor_data) {
 
 extern "C" {
 
-// The structure fingerprint this library was compiled for (design 509321b1cdc7bd11): the
+// The structure fingerprint this library was compiled for (design 0d2070957d8ae99f): the
 // caller refuses data of another structure before it reaches the kernel.
 const char* fgc_structure() {
-    return "9d2ca3649e6f66bc";
+    return "aec0bf602da30c22";
 }
 
 // Sizes the caller's arrays must have: {N_VARIABLES, N_FACTORS, N_X, N_DATA}.

@@ -6,7 +6,7 @@
 // Exit status: 0 after a run (the result file says whether it converged), 2 on bad arguments or
 // a data file that does not fit the compiled structure, 3 if the result cannot be written.
 //
-// Structure fingerprint 9d2ca3649e6f66bc (design 509321b1cdc7bd11): a data file
+// Structure fingerprint aec0bf602da30c22 (design 0d2070957d8ae99f): a data file
 // must carry it on its first line, since equal counts do not mean equal factor connectivity. The
 // check is host code, here; the kernel reads only numbers.
 #include <cstdio>
@@ -20,7 +20,7 @@ namespace {
 using fgc::T;
 
 const char DATA_HEADER[] = "FGCDATA 2";
-const char STRUCTURE[] = "9d2ca3649e6f66bc";
+const char STRUCTURE[] = "aec0bf602da30c22";
 
 const char* const STATUS_NAMES[fgc::N_STATUSES] = {
     "converged",
