@@ -3190,6 +3190,9 @@ void retract_all(const T* x, const T* delta, T* out) {
 // an update matrix's upper triangle). False if a pivot is below SINGULAR_EPS * scale.
 template <int LD>
 FGC_INLINE bool store_step(T (*H)[LD], int w, int f, int s, T scale) {
+    // never taken (the tables' widths), but it bounds the copies for g++, which otherwise merges
+    // the rows of a one-tile H into one memcpy it cannot prove inside H (-Werror=array-bounds)
+    if (w > MAX_W || f > MAX_F || w + 1 > LD) return false;
     T* cond = COND + STEP_COND_OFF[s];
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=30
@@ -3266,6 +3269,8 @@ bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
                 const T uji = pivot[k][i];
                 const T a = row[i - j0] * r;
                 for (int t = 0; t < TILE; ++t) H[i][j0 + t] -= a * row[t];
+                // (only if a row is wider than one tile: g++ -Werror proves the dead loop would
+                // index past H[i][LD] otherwise)
                 for (int c0 = j0 + TILE; c0 < end; c0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=8
                     for (int t = 0; t < TILE; ++t) H[i][c0 + t] -= uji * pivot[k][c0 + t];
