@@ -12,6 +12,7 @@ import fgc.verify as _verify_module  # noqa: F401
 from fgc import noise
 from fgc.dsl import Factor, FactorType, Graph, Matrix, factor
 from fgc.errors import DataError, DerivationError, DslError, FgcError, StructureError
+from fgc.functions import acos, asin, atan, atan2, cos, exp, hypot, log, sin, sqrt, tan, tanh
 from fgc.geometry import (
     ImuBias,
     Point2,
@@ -41,6 +42,18 @@ def from_gtsam(graph, values, key_names=None):
 
 
 __all__ = [
+    "acos",
+    "asin",
+    "atan",
+    "atan2",
+    "cos",
+    "exp",
+    "hypot",
+    "log",
+    "sin",
+    "sqrt",
+    "tan",
+    "tanh",
     "DataError",
     "DerivationError",
     "DslError",

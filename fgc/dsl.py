@@ -29,6 +29,7 @@ import numpy as np
 import sympy as sp
 
 from fgc.errors import DataError, DslError, FgcError
+from fgc.functions import check_residual, numpy_on_symbols
 from fgc.geometry import LieGroup, Rot2, Rot3, VectorSpace
 from fgc.noise import NoiseModel
 
@@ -187,6 +188,8 @@ class FactorType:
             with _truth_of_symbols_forbidden():
                 out = self.func(*vars_.values(), **meas)
         except TypeError as exc:
+            if (numpy_error := numpy_on_symbols(self.name, exc)) is not None:
+                raise numpy_error from None
             if _is_symbolic_branch(exc):
                 raise DslError(
                     f"factor '{self.name}': the residual function used a symbolic value in a "
@@ -200,9 +203,11 @@ class FactorType:
                 raise
             raise type(exc)(f"factor '{self.name}': {exc}") from exc
         except Exception as exc:
+            if (numpy_error := numpy_on_symbols(self.name, exc)) is not None:
+                raise numpy_error from None
             raise DslError(f"factor '{self.name}': calling the residual function failed: "
                            f"{type(exc).__name__}: {exc}") from exc
-        return vars_, meas, residual_vector(out, self.name)
+        return vars_, meas, check_residual(self.name, residual_vector(out, self.name))
 
     @property
     def residual_dim(self) -> int:

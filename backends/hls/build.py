@@ -16,12 +16,13 @@ from fgc.program import Program
 from fgc_backends.hls.emitter import HlsProject
 from fgc_backends.hls.results import HlsResult, read_result
 
-DATA_FILE, RESULT_FILE = "data.txt", "result.txt"
+DATA_FILE, RESULT_FILE, BUILD_LOG = "data.txt", "result.txt", "build.log"
 BUILD_TIMEOUT_S = 900
 
 
 class HlsBuildError(FgcError):
-    """``make`` failed on an emitted project; the message holds the compiler's output."""
+    """``make`` failed on an emitted project: an internal error (fgc emitted C++ that does not
+    build); the message is one line naming ``build.log``, which holds the compiler's output."""
 
 
 def make(project: HlsProject, target: str) -> str:
@@ -35,9 +36,11 @@ def make(project: HlsProject, target: str) -> str:
         raise HlsBuildError(f"make {target} in {project.directory} took over "
                             f"{BUILD_TIMEOUT_S} s") from None
     if done.returncode != 0:
-        output = (done.stdout + done.stderr)[-4000:]
-        raise HlsBuildError(f"make {target} failed in {project.directory} "
-                            f"(exit {done.returncode}):\n{output}")
+        log = project.directory / BUILD_LOG
+        log.write_text(done.stdout + done.stderr)
+        raise HlsBuildError(f"internal error: make {target} failed (exit {done.returncode}) on "
+                            f"the project fgc generated (a bug in fgc if the build failed); "
+                            f"full output in {log}")
     return done.stdout
 
 

@@ -175,6 +175,11 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
     patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
                                            solver["cholesky"], solver["lm"])
     max_ld = padded(tables.constant("MAX_W") + 1)
+    table = {t.name: t.values for t in tables.arrays}
+    # the widest separator of any step: the back-substitution's tiled loop over separator
+    # columns exists only if some separator spans a whole TILE (else g++ -Werror proves the dead
+    # loop would index past xs[MAX_W])
+    max_sep = max(w - f for w, f in zip(table["STEP_W"], table["STEP_F"], strict=True))
     host_lanes = lanes(config)
     return {
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
@@ -195,7 +200,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
             **dict(tables.constants),
             "MAX_LEVEL_WIDTH": max(len(level) for level in program.schedule.levels),
             "MAX_STORAGE": max(v.storage_dim for v in program.variables),
-            "MAX_LD": max_ld},
+            "MAX_LD": max_ld, "MAX_SEP": max_sep},
         "max_variables": program.max_variables,
         "header_tables": [t for t in tables.arrays if t.name in HEADER_TABLES],
         "tables": [t for t in tables.arrays if t.name not in HEADER_TABLES]

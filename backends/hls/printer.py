@@ -23,8 +23,11 @@ from fgc.errors import FgcError
 from fgc.geometry import special
 from fgc.kernel import Kernel
 
+# one C++ wrapper per function of the DSL's whitelist (fgc.functions.FUNCTIONS) and per function
+# its derivatives introduce (sign, from Abs); tests/test_functions.py prints each
 _FUNCTIONS = {sp.sin: "fgc_sin", sp.cos: "fgc_cos", sp.tan: "fgc_tan", sp.atan2: "fgc_atan2",
-              sp.atan: "fgc_atan", sp.exp: "fgc_exp", sp.log: "fgc_log"}
+              sp.atan: "fgc_atan", sp.exp: "fgc_exp", sp.log: "fgc_log", sp.asin: "fgc_asin",
+              sp.acos: "fgc_acos", sp.tanh: "fgc_tanh", sp.Abs: "fgc_abs", sp.sign: "fgc_sign"}
 _MAX_PRODUCT_POWER = 8
 
 
@@ -143,6 +146,7 @@ class HlsCodePrinter(CXX17CodePrinter):
 
     _print_sin = _print_cos = _print_tan = _print_atan2 = _print_atan = _print_Function
     _print_exp = _print_log = _print_Function
+    _print_asin = _print_acos = _print_tanh = _print_Abs = _print_sign = _print_Function
 
     def _print_not_supported(self, expr) -> str:
         raise UnsupportedExpressionError(f"the HLS backend cannot print '{type(expr).__name__}'")

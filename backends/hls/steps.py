@@ -43,6 +43,13 @@ class StepPattern:
     plan: tuple[int, ...]  # QR: per Householder column, the count and rows it reflects
 
     @property
+    def operands_used(self) -> tuple[int, ...]:
+        """The operands some move reads, ascending: only these get a pointer in the emitted
+        routine (a child whose new factor has no structural non-zero here reads nothing, and an
+        unused pointer fails ``-Werror=unused-variable``)."""
+        return tuple(sorted({k for _, _, k, _ in self.moves}))
+
+    @property
     def ld(self) -> int:
         """Row length of the frontal matrix: w + 1 padded to whole tiles."""
         return padded(self.w + 1)

@@ -248,6 +248,12 @@ L NF[N_NF];
 L GRAM[N_GRAM];    // per factor instance: packed lower triangle of [A | b]^T [A | b]
         // update matrices passed to the parent step
 
+// ---- the rest of the DSL's functions (fgc/functions.py), beside the header's wrappers
+inline T fgc_asin(T x) { return std::asin(x); }
+inline T fgc_acos(T x) { return std::acos(x); }
+inline T fgc_tanh(T x) { return std::tanh(x); }
+inline T fgc_sign(T x) { return x > T(0) ? T(1) : x < T(0) ? T(-1) : T(0); }
+
 // ---- lanes: a factor block evaluates LANES instances side by side, as values of type V
 #ifdef __SYNTHESIS__
 const int LANES = 1;  // in hardware: one datapath per block type, pipelined across instances
@@ -291,6 +297,11 @@ inline V v_fgc_tan(const V& x) { return lanewise<fgc_tan>(x); }
 inline V v_fgc_atan(const V& x) { return lanewise<fgc_atan>(x); }
 inline V v_fgc_exp(const V& x) { return lanewise<fgc_exp>(x); }
 inline V v_fgc_log(const V& x) { return lanewise<fgc_log>(x); }
+inline V v_fgc_asin(const V& x) { return lanewise<fgc_asin>(x); }
+inline V v_fgc_acos(const V& x) { return lanewise<fgc_acos>(x); }
+inline V v_fgc_tanh(const V& x) { return lanewise<fgc_tanh>(x); }
+inline V v_fgc_abs(const V& x) { return lanewise<fgc_abs>(x); }
+inline V v_fgc_sign(const V& x) { return lanewise<fgc_sign>(x); }
 // The coefficients' series (every lane below the switch, the usual case) in whole vectors: the
 // same operations lane by lane as the scalar lie_* make, so the same numbers. FGC_INLINE: GCC
 // would otherwise split off the scalar fallback as a function returning V, which a build
@@ -3179,6 +3190,9 @@ void retract_all(const T* x, const T* delta, T* out) {
 // an update matrix's upper triangle). False if a pivot is below SINGULAR_EPS * scale.
 template <int LD>
 FGC_INLINE bool store_step(T (*H)[LD], int w, int f, int s, T scale) {
+    // never taken (the tables' widths), but it bounds the copies for g++, which otherwise merges
+    // the rows of a one-tile H into one memcpy it cannot prove inside H (-Werror=array-bounds)
+    if (w > MAX_W || f > MAX_F || w + 1 > LD) return false;
     T* cond = COND + STEP_COND_OFF[s];
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=30
@@ -3255,6 +3269,8 @@ bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
                 const T uji = pivot[k][i];
                 const T a = row[i - j0] * r;
                 for (int t = 0; t < TILE; ++t) H[i][j0 + t] -= a * row[t];
+                // (only if a row is wider than one tile: g++ -Werror proves the dead loop would
+                // index past H[i][LD] otherwise)
                 for (int c0 = j0 + TILE; c0 < end; c0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=8
                     for (int t = 0; t < TILE; ++t) H[i][c0 + t] -= uji * pivot[k][c0 + t];

@@ -343,6 +343,12 @@ L COND[N_COND];    // conditionals (R | d), one block per elimination step
 L NF[N_NF];
         // new factors passed to the parent step
 
+// ---- the rest of the DSL's functions (fgc/functions.py), beside the header's wrappers
+inline T fgc_asin(T x) { return std::asin(x); }
+inline T fgc_acos(T x) { return std::acos(x); }
+inline T fgc_tanh(T x) { return std::tanh(x); }
+inline T fgc_sign(T x) { return x > T(0) ? T(1) : x < T(0) ? T(-1) : T(0); }
+
 // ---- lanes: a factor block evaluates LANES instances side by side, as values of type V
 #ifdef __SYNTHESIS__
 const int LANES = 1;  // in hardware: one datapath per block type, pipelined across instances
@@ -386,6 +392,11 @@ inline V v_fgc_tan(const V& x) { return lanewise<fgc_tan>(x); }
 inline V v_fgc_atan(const V& x) { return lanewise<fgc_atan>(x); }
 inline V v_fgc_exp(const V& x) { return lanewise<fgc_exp>(x); }
 inline V v_fgc_log(const V& x) { return lanewise<fgc_log>(x); }
+inline V v_fgc_asin(const V& x) { return lanewise<fgc_asin>(x); }
+inline V v_fgc_acos(const V& x) { return lanewise<fgc_acos>(x); }
+inline V v_fgc_tanh(const V& x) { return lanewise<fgc_tanh>(x); }
+inline V v_fgc_abs(const V& x) { return lanewise<fgc_abs>(x); }
+inline V v_fgc_sign(const V& x) { return lanewise<fgc_sign>(x); }
 // The coefficients' series (every lane below the switch, the usual case) in whole vectors: the
 // same operations lane by lane as the scalar lie_* make, so the same numbers. FGC_INLINE: GCC
 // would otherwise split off the scalar fallback as a function returning V, which a build
@@ -4055,7 +4066,7 @@ bool eliminate_step(int s, T root_mu) {
 #pragma HLS LOOP_TRIPCOUNT max=30
         W[row][j] = root_mu;
     }
-    return householder<MAX_LD, MAX_ROWS>(W, m, w, f, s, nullptr);
+    return householder<MAX_LD, (MAX_ROWS > TILE ? MAX_ROWS : TILE)>(W, m, w, f, s, nullptr);
 }
 
 // Step pattern 0 (2 steps): W = 30, F = 15, 54 rows from 2 factor(s),
@@ -4587,6 +4598,8 @@ bool eliminate_pattern_0(int s, T root_mu) {
     W[38][14] = op2[238];
     W[38][30] = op2[239];
     for (int j = 0; j < 15; ++j) W[39 + j][j] = root_mu;
+    // MR (the size of householder's row lists) at least one TILE: its tiled sum loop over fewer
+    // rows is dead code, which g++ -Werror would otherwise prove to index past the list
     return householder<32, 54>(W, 54, 30, 15, s, PATTERN0_PLAN);
 }
 
@@ -5119,6 +5132,8 @@ bool eliminate_pattern_1(int s, T root_mu) {
     W[38][14] = op2[238];
     W[38][30] = op2[239];
     for (int j = 0; j < 15; ++j) W[39 + j][j] = root_mu;
+    // MR (the size of householder's row lists) at least one TILE: its tiled sum loop over fewer
+    // rows is dead code, which g++ -Werror would otherwise prove to index past the list
     return householder<32, 54>(W, 54, 30, 15, s, PATTERN1_PLAN);
 }
 

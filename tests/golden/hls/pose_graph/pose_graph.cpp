@@ -164,6 +164,12 @@ L COND[N_COND];    // conditionals (R | d), one block per elimination step
 L NF[N_NF];
         // new factors passed to the parent step
 
+// ---- the rest of the DSL's functions (fgc/functions.py), beside the header's wrappers
+inline T fgc_asin(T x) { return std::asin(x); }
+inline T fgc_acos(T x) { return std::acos(x); }
+inline T fgc_tanh(T x) { return std::tanh(x); }
+inline T fgc_sign(T x) { return x > T(0) ? T(1) : x < T(0) ? T(-1) : T(0); }
+
 // ---- lanes: a factor block evaluates LANES instances side by side, as values of type V
 #ifdef __SYNTHESIS__
 const int LANES = 1;  // in hardware: one datapath per block type, pipelined across instances
@@ -207,6 +213,11 @@ inline V v_fgc_tan(const V& x) { return lanewise<fgc_tan>(x); }
 inline V v_fgc_atan(const V& x) { return lanewise<fgc_atan>(x); }
 inline V v_fgc_exp(const V& x) { return lanewise<fgc_exp>(x); }
 inline V v_fgc_log(const V& x) { return lanewise<fgc_log>(x); }
+inline V v_fgc_asin(const V& x) { return lanewise<fgc_asin>(x); }
+inline V v_fgc_acos(const V& x) { return lanewise<fgc_acos>(x); }
+inline V v_fgc_tanh(const V& x) { return lanewise<fgc_tanh>(x); }
+inline V v_fgc_abs(const V& x) { return lanewise<fgc_abs>(x); }
+inline V v_fgc_sign(const V& x) { return lanewise<fgc_sign>(x); }
 // The coefficients' series (every lane below the switch, the usual case) in whole vectors: the
 // same operations lane by lane as the scalar lie_* make, so the same numbers. FGC_INLINE: GCC
 // would otherwise split off the scalar fallback as a function returning V, which a build
@@ -1806,7 +1817,7 @@ bool eliminate_step(int s, T root_mu) {
 #pragma HLS LOOP_TRIPCOUNT max=18
         W[row][j] = root_mu;
     }
-    return householder<MAX_LD, MAX_ROWS>(W, m, w, f, s, nullptr);
+    return householder<MAX_LD, (MAX_ROWS > TILE ? MAX_ROWS : TILE)>(W, m, w, f, s, nullptr);
 }
 
 // One step through its specialised routine, or the generic one.
