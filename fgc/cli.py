@@ -405,22 +405,24 @@ def _cmd_run(args) -> int:
     if args.backend == "native":
         hls = _backend("hls")
         result = hls.native.run(program, data, _hls_config(args, program))
-        status, final, iters = result.status, result.final_error, result.iterations
     else:
         if getattr(args, "scalar", None) or getattr(args, "part", None):
             raise UsageError("fgc run: --scalar and --part apply to --backend native only")
         result = _backend("sim").run(program, data)
-        status, final, iters = result.status, result.final_error, result.iterations
+    status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
     from fgc.reporting import require_finite_start
 
     require_finite_start(graph, result)
-    report = {"backend": args.backend, "status": status, "final_error": final,
-              "iterations": iters, "solve_seconds": seconds}
+    report = {"backend": args.backend, "status": status, "reason": result.reason,
+              "final_error": final, "iterations": iters, "solve_seconds": seconds}
     final_text = f"{final:.10g}" if final is not None else "not finite"
-    _print(args, [f"fgc run {args.spec} ({args.backend}): {status}, {iters} iterations, "
-                  f"final error {final_text}, {seconds * 1e3:.3f} ms (build/load included on a "
-                  "first run)"])
+    lines = [f"fgc run {args.spec} ({args.backend}): {status} ({result.reason}), {iters} "
+             f"iterations, final error {final_text}, {seconds * 1e3:.3f} ms (build/load "
+             "included on a first run)"]
+    if status != "converged" and result.message:
+        lines.append(f"fgc run: not converged: {result.message}")
+    _print(args, lines)
     _estimates_out(args, graph, report, result.values)  # fgc values by Program key
     _write_json(args.json, report)
     return EXIT_OK if status == "converged" else EXIT_FAILED

@@ -132,3 +132,40 @@ def rank_deficient_message(key: str, type_name: str, component: int, ratio: floa
             f"by its factors: its elimination pivot is {ratio:.1e} × its column norm, at or "
             f"below the tolerance {tolerance:g} (a free gauge, an unexcited bias, a point seen "
             "along one line); add a prior or a measurement that constrains it")
+
+
+# --------------------------------------------------------------------------------------------
+# float32 resolution of the state: the host-side verdict of the native solver and C simulation
+# --------------------------------------------------------------------------------------------
+
+RESOLUTION_LIMIT = 1.0  # ρ at or above it: the precision cannot place the state within its noise
+SCALAR_PRECISION = {"float": "float32", "double": "float64"}  # C++ scalar → its numpy precision
+
+
+def resolution(parts, storage, dims, precision: str = "float32") -> tuple[float, int]:
+    """(ρ, variable) at the state ``storage`` (one array per variable, Program order; ``dims``
+    their tangent dimensions): ρ is the largest whitened-residual change, in σ, that rounding the
+    state to ``precision`` can cause — one row's eps·Σ_j |A_ij|·scale_j, scale_j the largest
+    |storage entry| of column j's variable (at least 1) — and ``variable`` indexes the variable
+    of that row's largest term. ``parts`` pairs whitened Jacobian rows A (instances × rows ×
+    columns, evaluated in float64) with their global tangent columns (instances × columns).
+
+    The same formula as the simulator's ``resolution`` (which evaluates A in the working
+    precision); ρ ≥ :data:`RESOLUTION_LIMIT` means a coordinate's resolution exceeds its σ."""
+    eps = float(np.finfo(np.dtype(precision)).eps)
+    scale = np.array([max(float(np.max(np.abs(v))) if np.size(v) else 0.0, 1.0)
+                      for v in storage])
+    columns = np.repeat(scale, np.asarray(dims, dtype=np.intp))
+    offsets = np.concatenate([[0], np.cumsum(dims)]).astype(np.intp)
+    best, column = 0.0, 0
+    for a, cols in parts:
+        a = np.asarray(a, dtype=np.float64)
+        if a.size == 0:
+            continue
+        cols = np.asarray(cols, dtype=np.intp)
+        terms = eps * np.abs(a) * columns[cols][:, None, :]
+        rows = terms.sum(axis=-1)
+        n, m = np.unravel_index(int(np.argmax(rows)), rows.shape)
+        if rows[n, m] > best:
+            best, column = float(rows[n, m]), int(cols[n, int(np.argmax(terms[n, m]))])
+    return best, int(np.searchsorted(offsets, column, side="right") - 1)

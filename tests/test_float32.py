@@ -7,20 +7,28 @@ accuracy: the simulator then reports status "failed", reason "precision_limit", 
 :class:`fgc.conditioning.PrecisionLimitWarning` naming a variable, never "converged". Before,
 the ‖δ‖ ≤ 10 ulp·‖x‖ rule (‖x‖ ≈ 1e6) stopped at the first iteration and said "converged".
 
+The native solver and the C simulation (float kernels) get the same verdict, computed on the host
+after the run (``fgc_backends.hls.results.judge_precision``, ρ by
+:func:`fgc.conditioning.resolution`); before, they said "converged" in all three cases.
+
 Tolerances: float64 runs reach their optimum (cost ≤ 1e-9); a float32 run that says "converged"
 is within 1 mm of the float64 optimum (plane registration) or within 1e-6 relative of its cost
-plus the float32 floor (chains).
+plus the float32 floor (chains). The host ρ (Jacobian in float64) equals the simulator's
+(Jacobian in float32) within RHO_RTOL relative.
 """
 
 from __future__ import annotations
 
+import json
 import runpy
+import shutil
 import warnings
 
 import numpy as np
 import pytest
 
 import fgc
+from fgc import conditioning
 from fgc.compile import compile_graph
 from fgc.conditioning import PrecisionLimitWarning
 from fgc.datafile import problem_data
@@ -112,6 +120,149 @@ def test_plane_registration_far_from_the_origin_is_not_silently_off():
     _, near, warned = runs(graph)
     assert near.converged and not warned
     assert float(np.linalg.norm(truth.local(near.values["T"]))) <= 1e-4
+
+
+# --------------------------------------------------------------------------------------------
+# the same verdict on the host: native solver, C simulation, fgc run --backend native
+# --------------------------------------------------------------------------------------------
+
+RHO_RTOL = 1e-6  # host ρ (float64 Jacobian) vs the simulator's (float32); measured ≤ 5.6e-8
+
+CASES = {  # name → (graph, True when ρ ≥ 1 in float32)
+    "1e6-m-from-the-origin": (lambda: chain(1e6, 0.1), True),
+    "sigma-1e-9": (lambda: chain(0.0, 1e-9), True),
+    "plane-1e5-m": (lambda: plane_registration(np.array([1e5, 2e4, 30.0]))[0], True),
+    "near-the-origin": (lambda: chain(0.0, 0.1), False),
+}
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_host_resolution_equals_the_simulators(name, tmp_path):
+    """The host ρ (fgc.conditioning.resolution on the Program's float64 linearisation) is the
+    simulator's ρ at the simulator's float32 solution, and names the same variable."""
+    from fgc.datafile import write_data
+    from fgc_backends.hls.results import whitened_jacobians
+
+    build, beyond = CASES[name]
+    graph = build()
+    program = compile_graph(graph, SolverConfig())
+    data = problem_data(graph, program)
+    write_data(data, tmp_path / "data.txt")
+    module = emit(program, tmp_path / "sim")[0]
+    raw = runpy.run_path(str(module), run_name="fgc_rho_test")["run"](
+        str(tmp_path / "data.txt"), None, "float32")
+    storage = [np.asarray(v, dtype=np.float64) for v in raw["values"]]
+    rho, variable = conditioning.resolution(whitened_jacobians(program, data, storage), storage,
+                                            [v.dim for v in program.variables], "float32")
+    assert rho == pytest.approx(raw["resolution"]["rho"], rel=RHO_RTOL)
+    assert variable == raw["resolution"]["variable"]
+    assert (rho >= conditioning.RESOLUTION_LIMIT) is beyond, rho
+
+
+SPEC = """
+import numpy as np
+
+import fgc
+from fgc.factors import BetweenFactor, PriorFactor
+from fgc.geometry import Pose2
+
+
+def build(offset: float = 0.0, sigma: float = 0.1, n: int = 10):
+    rng = np.random.default_rng(3)
+    g = fgc.Graph()
+    for i in range(n):
+        g.add_variable(f"x{i}", Pose2(offset + i + rng.normal(0, 0.3),
+                                      offset + rng.normal(0, 0.3), rng.normal(0, 0.1)))
+    g.add(PriorFactor("x0", Pose2(offset, offset, 0.0), fgc.noise.isotropic(3, sigma)))
+    for i in range(n - 1):
+        g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
+                            fgc.noise.isotropic(3, sigma)))
+    return g
+"""
+
+
+def _native_cli(tmp_path, capsys, *params):
+    from fgc.cli import main
+
+    spec = tmp_path / "f32chain.py"
+    spec.write_text(SPEC)
+    out = tmp_path / "run.json"
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        code = main(["run", str(spec), "--backend", "native", "--json", str(out),
+                     *[a for p in params for a in ("-p", p)]])
+    warned = [w for w in caught if issubclass(w.category, PrecisionLimitWarning)]
+    return code, json.loads(out.read_text()), capsys.readouterr().out, warned
+
+
+@pytest.mark.skipif(shutil.which("g++") is None, reason="no g++")
+def test_native_run_1e6_m_from_the_origin_fails_with_the_reason(tmp_path, capsys):
+    """fgc run --backend native (float32, the default) on the chain 1e6 m from the origin:
+    exit 1, status failed, reason precision_limit, the simulator's warning; before: exit 0,
+    "converged". The same build (same structure) near the origin converges without a warning."""
+    code, report, out, warned = _native_cli(tmp_path, capsys, "offset=1e6")
+    assert (code, report["status"], report["reason"]) == (1, "failed", "precision_limit"), out
+    assert "precision_limit" in out and "cannot place variable 'x" in out
+    assert len(warned) == 1 and "recentre" in str(warned[0].message)
+    assert report["final_error"] > 1.0
+    code, report, out, warned = _native_cli(tmp_path, capsys, "offset=0")
+    assert (code, report["status"]) == (0, "converged") and not warned, out
+    assert report["final_error"] <= 1e-6
+
+
+def _native(graph):
+    from fgc_backends.hls import native
+
+    program = compile_graph(graph, SolverConfig(precision="float32"))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        result = native.run(program, problem_data(graph, program))
+    return result, [w for w in caught if issubclass(w.category, PrecisionLimitWarning)]
+
+
+@pytest.mark.heavy
+@pytest.mark.skipif(shutil.which("g++") is None, reason="no g++")
+def test_native_sigma_1e_9_says_it_did_not_converge():
+    """σ = 1e-9 (before: native "converged", reason "step")."""
+    result, warned = _native(chain(0.0, 1e-9))
+    assert (result.status, result.reason) == ("failed", "precision_limit")
+    assert not result.converged and result.final_error > 1.0
+    assert len(warned) == 1 and result.message == str(warned[0].message)
+    assert result.resolution >= 1.0 and result.warnings == (result.message,)
+
+
+@pytest.mark.heavy
+@pytest.mark.skipif(shutil.which("g++") is None, reason="no g++")
+def test_native_plane_registration_far_from_the_origin_is_not_silently_off():
+    """The plane registration 1e5 m from the origin: native float either reaches the true pose
+    within 1 mm or says it did not (before: "converged" without a warning); near the origin it
+    converges to the true pose within 1e-4 without a warning."""
+    graph, truth = plane_registration(np.array([1e5, 2e4, 30.0]))
+    result, warned = _native(graph)
+    off = float(np.linalg.norm(truth.local(result.values["T"])[3:]))
+    assert (result.converged and off <= 1e-3) or (
+        result.reason == "precision_limit" and not result.converged and warned), (
+        result.status, off)
+    graph, truth = plane_registration(np.array([3.0, -2.0, 1.0]))
+    near, warned = _native(graph)
+    assert near.converged and not warned and near.resolution < 1.0
+    assert float(np.linalg.norm(truth.local(near.values["T"]))) <= 1e-4
+
+
+@pytest.mark.heavy
+@pytest.mark.skipif(shutil.which("g++") is None, reason="no g++")
+def test_csim_1e6_m_from_the_origin_says_it_did_not_converge(tmp_path):
+    """The C simulation (make csim, float kernel) of the chain 1e6 m from the origin: the parsed
+    result says failed / precision_limit with the warning (before: "converged")."""
+    from fgc_backends import hls
+
+    graph = chain(1e6, 0.1)
+    program = compile_graph(graph, SolverConfig(precision="float32"))
+    project = hls.emit(program, tmp_path / "project", hls.HlsConfig(scalar="float"))
+    with pytest.warns(PrecisionLimitWarning, match="cannot place variable 'x"):
+        result = hls.run_csim(project, program, problem_data(graph, program))
+    assert (result.status, result.reason) == ("failed", "precision_limit")
+    assert result.final_error > 1.0
 
 
 # --------------------------------------------------------------------------------------------

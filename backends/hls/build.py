@@ -46,12 +46,13 @@ def make(project: HlsProject, target: str) -> str:
 
 def run_csim(project: HlsProject, program: Program, data: ProblemData) -> HlsResult:
     """Write ``data`` as the project's ``data.txt``, build and run the testbench (``make csim``)
-    and return the parsed ``result.txt``."""
+    and return the parsed ``result.txt``, with the host-side float32 verdict
+    (:func:`fgc_backends.hls.results.judge_precision`)."""
     write_data(data, project.directory / DATA_FILE)
     result = project.directory / RESULT_FILE
     result.unlink(missing_ok=True)
     make(project, "csim")
-    return read_result(result, program)
+    return read_result(result, program, data, project.config.scalar)
 
 
 def library_path(project: HlsProject) -> Path:

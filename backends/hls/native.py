@@ -31,7 +31,7 @@ from fgc_backends.hls.build import library_path, make
 from fgc_backends.hls.config import HlsConfig
 from fgc_backends.hls.emitter import HlsProject, emit
 from fgc_backends.hls.names import identifier
-from fgc_backends.hls.results import HlsResult, result_from_arrays
+from fgc_backends.hls.results import HlsResult, judge_precision, result_from_arrays
 from fgc_backends.hls.tables import factor_data_words
 
 _INTS = np.ctypeslib.ndpointer(dtype=np.int32, flags="C_CONTIGUOUS")
@@ -127,8 +127,13 @@ class NativeSolver:
         return float(out[0]), float(out[1])
 
     def run(self, data: ProblemData) -> HlsResult:
+        """Solve ``data``; the result carries the host-side float32 verdict
+        (:func:`fgc_backends.hls.results.judge_precision`: a float build that cannot place the
+        state within its noise says "failed", reason "precision_limit", never "converged")."""
         x, errors, info = self.solve(*self.flatten(data))
-        return result_from_arrays(self.program, x, errors, *info)
+        return judge_precision(self.program, data,
+                               result_from_arrays(self.program, x, errors, *info),
+                               self.project.config.scalar)
 
 
 def host_key() -> str:

@@ -13,15 +13,28 @@ The testbench writes (numbers with ``%.17g``, so doubles read back exactly)::
 
 Statuses and reasons are the simulator's (``fgc_backends.sim``), by the same names; the C++
 kernel reports them as indices into these tuples.
+
+**float32 verdict.** The kernel's stopping rules cannot tell that a float32 state is too coarse
+for the data's noise (positions near 1e6 m, σ = 1e-9): :func:`judge_precision` checks it on the
+host after the run, never in the synthesisable kernel. It evaluates every factor's whitened
+Jacobian in float64 at the returned solution (the Program's block kernels, through the
+simulator's float64 linearisation) and ρ with :func:`fgc.conditioning.resolution`, the
+simulator's formula; ρ ≥ 1 turns "converged" into status "failed", reason "precision_limit",
+with a :class:`fgc.conditioning.PrecisionLimitWarning` — the simulator's verdict.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import hashlib
+import runpy
+import tempfile
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 
+from fgc import conditioning
+from fgc.datafile import ProblemData
 from fgc.errors import DataError
 from fgc.program import Program
 
@@ -29,6 +42,7 @@ RESULT_MAGIC = "FGCRESULT 1"
 STATUSES = ("converged", "max_iterations", "failed")
 REASONS = ("gradient", "step", "predicted_decrease", "absolute_error", "relative_decrease",
            "max_iterations", "non_finite", "singular", "cost_increased", "lambda_limit")
+PRECISION_LIMIT = "precision_limit"  # a host-side verdict (judge_precision), not a kernel reason
 
 
 @dataclass(frozen=True)
@@ -46,6 +60,9 @@ class HlsResult:
     status: str
     reason: str
     storage: dict[str, np.ndarray] | None = None
+    resolution: float | None = None  # ρ at the solution (judge_precision; None: not judged)
+    message: str = ""  # why the run failed, in words (empty when it converged)
+    warnings: tuple[str, ...] = ()  # texts of the fgc warnings the verdict issued
 
     @property
     def converged(self) -> bool:
@@ -63,8 +80,11 @@ def result_from_arrays(program: Program, x: np.ndarray, errors, iterations: int,
                      STATUSES[status], REASONS[reason])
 
 
-def read_result(path: str | Path, program: Program) -> HlsResult:
-    """Parse the testbench's result file for ``program``; errors name the file and line."""
+def read_result(path: str | Path, program: Program, data: ProblemData | None = None,
+                scalar: str | None = None) -> HlsResult:
+    """Parse the testbench's result file for ``program``; errors name the file and line. With
+    the run's ``data`` and C++ ``scalar``, the result carries :func:`judge_precision`'s
+    verdict."""
     path = Path(path)
     lines = path.read_text().splitlines()
     fields = {}
@@ -80,7 +100,65 @@ def read_result(path: str | Path, program: Program) -> HlsResult:
     for line in lines[7:7 + len(program.variables)]:
         numbers = line.split()
         x += [float(v) for v in numbers[1:]]
-    return result_from_arrays(program, np.array(x),
-                              (float(fields["INITIAL_ERROR"]), float(fields["FINAL_ERROR"])),
-                              int(fields["ITERATIONS"]), STATUSES.index(fields["STATUS"]),
-                              REASONS.index(fields["REASON"]))
+    result = result_from_arrays(program, np.array(x),
+                                (float(fields["INITIAL_ERROR"]), float(fields["FINAL_ERROR"])),
+                                int(fields["ITERATIONS"]), STATUSES.index(fields["STATUS"]),
+                                REASONS.index(fields["REASON"]))
+    if data is None or scalar is None:
+        return result
+    return judge_precision(program, data, result, scalar)
+
+
+def judge_precision(program: Program, data: ProblemData, result: HlsResult,
+                    scalar: str) -> HlsResult:
+    """``result`` (storage arrays as ``values``) of a run in C++ ``scalar`` on ``data``, with
+    the float32 verdict: ρ at the returned solution; ρ ≥ 1 warns
+    (:class:`fgc.conditioning.PrecisionLimitWarning`, the simulator's text) and a "converged"
+    result becomes status "failed", reason "precision_limit". Double runs, and runs that ended
+    singular or non-finite (as in the simulator), are returned unchanged; so are fixed-point
+    scalars, whose resolution is not a relative eps (not judged)."""
+    precision = conditioning.SCALAR_PRECISION.get(scalar)
+    if precision in (None, "float64") or result.reason in ("singular", "non_finite"):
+        return result
+    storage = [np.asarray(result.values[v.key], dtype=np.float64) for v in program.variables]
+    if not all(np.all(np.isfinite(v)) for v in storage):
+        return result
+    rho, index = conditioning.resolution(whitened_jacobians(program, data, storage), storage,
+                                         [v.dim for v in program.variables], precision)
+    if rho < conditioning.RESOLUTION_LIMIT:
+        return replace(result, resolution=rho)
+    spec = program.variables[index]
+    text = conditioning.precision_limit_message(spec.key, spec.type_name, rho, precision)
+    conditioning.warn(text, conditioning.PrecisionLimitWarning)
+    status, reason = result.status, result.reason
+    if status == "converged":
+        status, reason = "failed", PRECISION_LIMIT
+    return replace(result, status=status, reason=reason, resolution=rho, message=text,
+                   warnings=(*result.warnings, text))
+
+
+_LINEARIZERS: dict[str, dict] = {}
+
+
+def whitened_jacobians(program: Program, data: ProblemData, storage: list[np.ndarray]
+                       ) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Every factor block's whitened Jacobian rows at ``storage`` (one array per variable),
+    evaluated in float64 by the Program's own block kernels (the simulator's linearisation; the
+    emitted simulator is kept per Program for the process), paired with their global tangent
+    columns: the ``parts`` of :func:`fgc.conditioning.resolution`."""
+    key = hashlib.sha256(program.to_json().encode()).hexdigest()
+    if key not in _LINEARIZERS:
+        from fgc_backends.sim.config import SimConfig
+        from fgc_backends.sim.emitter import emit
+
+        with tempfile.TemporaryDirectory(prefix="fgc-judge-") as tmp:
+            files = emit(program, Path(tmp), SimConfig())
+            _LINEARIZERS[key] = runpy.run_path(str(files[0]), run_name="fgc_judge_problem")
+    namespace = _LINEARIZERS[key]
+    lib = namespace["LIB"]
+    rows = ([(np.asarray(v, dtype=np.float64), i + 1) for i, v in enumerate(storage)],
+            [(np.asarray(f, dtype=np.float64), i + 1) for i, f in enumerate(data.factors)])
+    problem = lib.optimizer.Problem(namespace["PROBLEM"], rows, "float64", lib)
+    abs_, _, _ = problem.linearize(problem.x0)
+    return [(ab[..., :-1], block.columns) for block, ab in zip(problem.blocks, abs_,
+                                                                strict=True)]
