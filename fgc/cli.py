@@ -269,7 +269,7 @@ def check_outputs(args) -> None:
     before the (possibly long) solve, so no result is computed only to be lost."""
     for attr, option, folder in _OUTPUTS:
         path = getattr(args, attr, None)
-        if path and isinstance(path, str | Path):  # `fgc cache info --json` is a flag
+        if path:
             _check_writable(str(path), option, folder)
     if getattr(args, "values", None):
         from fgc.export import FORMATS
@@ -737,7 +737,7 @@ def _cmd_cache(args) -> int:
         print(f"removed {n} entr{'y' if n == 1 else 'ies'} from {cache.cache_root()}")
         return EXIT_OK
     stats = cache.info()
-    if args.json:
+    if args.json_stdout:
         print(json.dumps(stats, indent=2))
         return EXIT_OK
     print(f"cache dir: {stats['dir']}")
@@ -774,7 +774,8 @@ def build_parser() -> argparse.ArgumentParser:
                        epilog="exit status: 0 success", formatter_class=_Formatter)
     p.add_argument("action", choices=("info", "clear"),
                    help="info: directory, entries per kind, total size; clear: delete the entries")
-    p.add_argument("--json", action="store_true", help="info as JSON on stdout")
+    p.add_argument("--json", action="store_true", dest="json_stdout",
+                   help="info as JSON on stdout")
     _verbosity_args(p, suppress=True)
     p.set_defaults(func=_cmd_cache)
     return parser
