@@ -2,7 +2,7 @@
 
 Cheap: a 3-pose Pose2 chain compiles in well under a second from a warm cache. The cost
 arithmetic is checked against hand computations written out below from the float32 table
-(add 8, mul 5, div 28, sqrt 28, compare 2, sincos 40 cycles; add 2 DSP, mul 3 DSP).
+(add 11, mul 8, div 28, sqrt 28, compare 2, sincos 40 cycles; add 2 DSP, mul 3 DSP).
 """
 
 from __future__ import annotations
