@@ -26,10 +26,14 @@ Sources:
   point addition with default customization"), documents the core's *maximum* latency for
   single precision with its default customisation (speed-optimised, full DSP usage): add and
   subtract 11, multiply 8, divide 28 cycles, compare 2. Those are the float32 latencies below
-  (status ``documented``; PG060's maximum-latency configuration is the one that meets timing at
-  any clock the part supports, so it holds at 143 MHz too). Their DSP/LUT/FF, and all float64,
-  square-root and HLS-math entries, remain ``assumed`` (``resource_status`` says which half of
-  an entry is sourced).
+  (status ``documented``). PG060's "Latency and Rate Configuration" section (quoted in the
+  Clash pull request that added these defaults, github.com/clash-lang/clash-compiler/pull/2333)
+  says the latency can be set between 0 and that maximum and that a slower clock meets timing
+  with fewer stages: the maximum is an upper bound at 143 MHz, where Vitis HLS picks fewer
+  stages (its generated cores are named by their stage count, e.g. ``fadd_..._5_full_dsp`` in
+  public Vitis projects, at clocks this table does not know). Their DSP/LUT/FF, and all
+  float64, square-root and HLS-math entries, remain ``assumed`` (``resource_status`` says which
+  half of an entry is sourced): no stored source gives them for the xc7z045.
 - **UG1399**: *Vitis HLS User Guide*, "HLS Math Library": functions in ``hls_math.h`` are
   synthesisable bit-approximate implementations (1-4 ULP) in single and double precision. The
   guide gives no latency/resource table for them; latency and cost here are ``assumed``.
