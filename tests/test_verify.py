@@ -116,7 +116,8 @@ def _plant_fused_kernel(block_name: str, member_type: str, scale: float = 1.02) 
     root = fgc.cache.cache_root()
     (path,) = root.glob(f"fuse-{block_name}-*.pkl")
     key = path.stem.rsplit("-", 1)[1]
-    kernel, cost, structure, ops = fgc.cache.load(path, key, tuple)
+    kernels, structure, ops = fgc.cache.load(path, key, tuple)
+    kernel, cost = kernels.get()
     bt = next(t for t in fgc.fuse._MEMO.values() if t.key == key)
     member = next(m for m in bt.members if m.name == member_type)
     m, row, pos, target = bt.residual_dim, member.rows[0], bt.residual_dim, None
@@ -130,7 +131,7 @@ def _plant_fused_kernel(block_name: str, member_type: str, scale: float = 1.02) 
     outputs = list(kernel.outputs)
     outputs[target] = sp.Float(scale) * outputs[target]
     planted = dataclasses.replace(kernel, outputs=tuple(outputs))
-    fgc.cache.store(path, key, (planted, cost, structure, ops))
+    fgc.cache.store(path, key, (fgc.cache.Deferred((planted, cost)), structure, ops))
     for lowered in root.glob("lower-*.pkl"):
         lowered.unlink()
     fgc.fuse._MEMO.clear()
