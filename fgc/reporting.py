@@ -93,7 +93,13 @@ def require_finite_start(graph: Graph, result) -> None:
 def verify_report(graph: Graph, program, data, sim) -> dict:
     """Simulator vs GTSAM's LM (same tight tolerances and iteration limit), linearisation check
     per factor type, and a verdict with its reason."""
-    from fgc.verify import executed_checks, linearization_checks, to_gtsam, values_from_gtsam
+    from fgc.verify import (
+        executed_checks,
+        linearization_checks,
+        sample_factors,
+        to_gtsam,
+        values_from_gtsam,
+    )
 
     with tempfile.TemporaryDirectory(prefix="fgc-verify-") as emitted:
         result = sim.run(program, data, emitted)
@@ -101,7 +107,7 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
         # the kernels the simulator executed, at the start and (if finite) at its answer
         finite = all(np.all(np.isfinite(v)) for v in result.storage.values())
         executed = sim.linearize(program, data, [None, result.storage] if finite else [None],
-                                 emitted=emitted)
+                                 emitted=emitted, factors=sample_factors(graph))
     problem = to_gtsam(graph)
     checks = linearization_checks(graph, problem=problem)
     k_max = program.solver.max_iterations

@@ -203,6 +203,33 @@ def test_wrong_member_of_a_fused_block_fails(member, reference, private_cache):
                                    f"(block '{block}') differs from {reference}"), r["verdict"]
 
 
+def test_simulator_linearisation_is_cut_per_factor():
+    """sim.linearize: each graph factor's whitened (A, b) out of the fused blocks, in its own
+    key order, equal to the per-factor derivation; only the factors asked for."""
+    from fgc.compile import compile_graph
+    from fgc.datafile import problem_data
+    from fgc.verify import linearize_factor
+    from fgc_backends import sim
+
+    graph = _fused_chain()
+    program = compile_graph(graph)
+    assert any(len(b.members) == 2 for b in program.blocks)
+    moved = {v.key: graph.variables[v.key].initial.retract(np.full(3, 0.1)).storage_array()
+             for v in program.variables}
+    wanted = [0, 1, 2, 7, 10]
+    initial, other = sim.linearize(program, problem_data(graph, program), [None, moved],
+                                   factors=wanted)
+    assert sorted(initial) == sorted(other) == wanted
+    for rows, values in ((initial, {k: v.initial for k, v in graph.variables.items()}),
+                         (other, {k: graph.variables[k].type.from_storage(a)
+                                  for k, a in moved.items()})):
+        for i in wanted:
+            f = graph.factors[i]
+            a, b = linearize_factor(f, [values[k] for k in f.keys])
+            assert rows[i][0].shape == a.shape
+            assert np.abs(rows[i][0] - a).max() <= 1e-12 and np.abs(rows[i][1] - b).max() <= 1e-12
+
+
 def test_large_types_are_sampled_deterministically():
     from fgc.verify import sample_factors
 
