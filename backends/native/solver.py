@@ -158,7 +158,9 @@ def project_key(program: Program, config: NativeConfig) -> str:
     h.update(fgc.__version__.encode())
     for template in sorted(NativeConfig.template_dir().glob("*.jinja")):
         h.update(template.read_bytes())
-    for module in sorted(Path(__file__).parent.glob("*.py")):
+    # this backend's modules and the C-family helpers it prints with (fgc_backends.hls)
+    backends = Path(__file__).resolve().parent.parent
+    for module in sorted([*(backends / "native").glob("*.py"), *(backends / "hls").glob("*.py")]):
         h.update(module.read_bytes())
     return h.hexdigest()[:24]
 
