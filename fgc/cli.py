@@ -1,7 +1,6 @@
 """The ``fgc`` command line.
 
-    fgc compile  SPEC --backend sim|hls|native --out DIR  emit a backend project (+ program.json,
-                                                      data)
+    fgc compile  SPEC --backend B --out DIR           emit a project of backend B: sim, hls, native
     fgc simulate SPEC [--json F]                      run the accelerator simulator, report cost
     fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
     fgc run      SPEC --backend native|sim            solve with the generated solver
@@ -363,8 +362,8 @@ def _cmd_compile(args) -> int:
             files = list(backend.emit(program, out, _native_config(args, program)).files)
         else:
             if getattr(args, "scalar", None) or getattr(args, "part", None):
-                raise UsageError("fgc compile: --scalar and --part apply to --backend hls or "
-                                 "native only")
+                raise UsageError("fgc compile: --scalar applies to --backend hls or native "
+                                 "only, --part to --backend hls only")
             files = backend.emit(program, out)
     except OSError as exc:
         raise FgcError(f"--out {out}: cannot write the project: "

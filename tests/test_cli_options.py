@@ -129,7 +129,7 @@ def test_emit_rejects_two_clocks(tmp_path):
     (["compile", BEACONS, "--backend", "hls", "--out", "x", "--scalar", "double",
       "--precision", "float32"], "--scalar double contradicts --precision float32"),
     (["compile", BEACONS, "--out", "x", "--scalar", "float"],
-     "apply to --backend hls or native only"),
+     "--scalar applies to --backend hls or native only"),
 ])
 def test_bad_hardware_options_exit_2_with_one_line(argv, needle, capsys, tmp_path,
                                                    monkeypatch):

@@ -1,5 +1,5 @@
 """The native backend: the generated solver as a CPU program, built on this machine and called
-through ctypes (11-14x faster than GTSAM's LM on the shipped examples; bench/bench_native.py).
+through ctypes (timed against GTSAM's LM by bench/bench_native.py).
 
     from fgc_backends import native
     result = native.run(program, problem_data(graph, program))   # emit, build once, solve
