@@ -37,7 +37,6 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import lio  # noqa: E402
 import pose_graph  # noqa: E402
-import range_beacons  # noqa: E402
 from test_hls_csim import CASES, F64_TOL, relative_worst, robust_chain  # noqa: E402
 
 BEACONS = str(ROOT / "examples" / "range_beacons.py")
@@ -164,26 +163,30 @@ def test_native_build_holds_no_fused_multiply_add(tmp_path):
     assert not library.exists()
 
 
-def test_native_project_is_a_cpu_program_and_fgc_run_gives_the_csim_numbers(tmp_path, capsys):
+# what `fgc run examples/range_beacons.py --backend native --json` returned before the native
+# solver became its own backend (float32, the default; x86-64 with AVX-512: the lanes and the
+# vector width do not change the numbers)
+BEFORE_SPLIT = {"final_error": 12.30312728881836, "iterations": 4, "reason": "step",
+                "status": "converged", "x19": [10.125078201293945, 12.728757858276367,
+                                               -0.32884347438812256, 0.9443843960762024],
+                "b1": [-4.999850749969482, 7.999110221862793]}
+
+
+def test_native_project_is_a_cpu_program_and_fgc_run_is_unchanged(tmp_path, capsys):
     """``fgc compile --backend native`` writes a CPU program (no testbench, no tcl, no csim
     target; the HLS project no longer carries the native wrapper), and ``fgc run --backend
-    native`` returns exactly what the HLS C simulation of the same spec computes, as before the
-    native solver became its own backend."""
+    native`` returns exactly what it returned before the split."""
     nat, hw = tmp_path / "native", tmp_path / "hls"
     assert main(["compile", BEACONS, "--backend", "native", "--out", str(nat), "-q"]) == 0
     assert main(["compile", BEACONS, "--backend", "hls", "--out", str(hw), "-q"]) == 0
     assert sorted(p.name for p in nat.iterdir()) == [
         "Makefile", "data.txt", "native_range_beacons.cpp", "program.json", "range_beacons.cpp",
         "range_beacons.h"]
-    assert not (set(p.name for p in hw.iterdir()) & {"native_range_beacons.cpp"})
+    assert "native_range_beacons.cpp" not in {p.name for p in hw.iterdir()}
     makefile = (nat / "Makefile").read_text()
     assert "csim" not in makefile and "tb_" not in makefile and "native:" in makefile
     assert "A CPU program, not a hardware design" in (nat / "range_beacons.cpp").read_text()
     assert "A CPU program" not in (hw / "range_beacons.cpp").read_text()
-    # the two kernels differ only in that header comment
-    strip = re.compile(r"\n//\n// A CPU program.*?template too\.", re.S)
-    assert strip.sub("", (nat / "range_beacons.cpp").read_text()) == \
-        (hw / "range_beacons.cpp").read_text()
     capsys.readouterr()
     out = tmp_path / "run.json"
     code = main(["run", BEACONS, "--backend", "native", "--json", str(out)])
@@ -192,13 +195,10 @@ def test_native_project_is_a_cpu_program_and_fgc_run_gives_the_csim_numbers(tmp_
                            "error 12.30312729, ")
     report = json.loads(out.read_text())
     assert code == 0 and report["backend"] == "native"
-    graph = range_beacons.build()
-    program = compile_graph(graph, SolverConfig(precision="float32"), name="rb")
-    hw_project = hls.emit(program, tmp_path / "csim", hls.HlsConfig(scalar="float"))
-    csim = hls.run_csim(hw_project, program, problem_data(graph, program))
-    assert report["final_error"] == csim.final_error
-    assert (report["iterations"], report["status"], report["reason"]) == \
-        (csim.iterations, csim.status, csim.reason)
+    for field in ("final_error", "iterations", "reason", "status"):
+        assert report[field] == BEFORE_SPLIT[field], field
+    for key in ("x19", "b1"):
+        assert report["values"][key]["value"] == BEFORE_SPLIT[key], key
 
 
 @pytest.mark.parametrize("argv, needle", [
