@@ -27,6 +27,7 @@ DRIVER = r"""
 #include <vector>
 #include "fgc_qr.h"
 #include "fgc_cpe.h"
+#include "fgc_backsub.h"
 
 template <class TT, int N, bool STRICT>
 struct qr_cfg {
@@ -41,7 +42,7 @@ struct qr_cfg {
 template <class TT, int N, bool STRICT>
 struct cpe_cfg {
     typedef TT T;
-    static const int MAX_W = 30, MAX_COLS = 31, MAX_F = 25, N_CPE = N;
+    static const int MAX_W = 30, MAX_COLS = 31, MAX_F = 25, N_CPE = N, PARTIALS = 12;
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;
     static constexpr double SINGULAR_EPS = STRICT ? 1e-12 : 1e-3;
 };
@@ -87,7 +88,15 @@ static void run_qr(int rows, int f, int s) {
     std::vector<double> b(update, update + (cols <= C::MAX_COLS ? nf * (s + 1) : 0));
     print("cond", a.data(), int(a.size()));
     print("update", b.data(), int(b.size()));
-    print("x", nullptr, 0);
+    if (cols <= C::MAX_COLS && f <= C::MAX_F && !singular) {  // back-substitution, xs = 1, 2, ...
+        T xs[C::MAX_COLS], x[C::MAX_F];
+        for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(a2 + 1);
+        fgc_units::cond_backsub<C>(cond, f, s, xs, x);
+        std::vector<double> xd(x, x + f);
+        print("x", xd.data(), f);
+    } else {
+        print("x", nullptr, 0);
+    }
     finish_cycles();
 }
 
@@ -112,9 +121,9 @@ static void run_cpe(int f, int s, double mu) {
     print("cond", a.data(), int(a.size()));
     print("update", b.data(), int(b.size()));
     if (fits && !singular) {  // back-substitution with xs = 1, 2, ...
-        T xs[C::MAX_W], x[C::MAX_F];
+        T xs[C::MAX_COLS], x[C::MAX_F];
         for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(a2 + 1);
-        fgc_units::cpe_backsub<C>(cond, f, s, xs, x);
+        fgc_units::cond_backsub<C>(cond, f, s, xs, x);
         std::vector<double> xd(x, x + f);
         print("x", xd.data(), f);
     } else {
@@ -254,6 +263,10 @@ def test_qr_matches_kernel_and_numpy(driver, units):
         scale = np.abs(r).max()
         np.testing.assert_allclose(res.cond, cond, rtol=0, atol=1e-12 * scale)
         np.testing.assert_allclose(res.update, upd, rtol=0, atol=1e-12 * scale)
+        cm = cond.reshape(f, -1)
+        xs = np.arange(1, s + 1, dtype=float)
+        x = np.linalg.solve(cm[:, :f], cm[:, f + s] - cm[:, f:f + s] @ xs)
+        np.testing.assert_allclose(res.x, x, rtol=1e-9, atol=1e-9)
         if f + s == 11 and rows == 20:
             continue  # the zero column: rank deficient, where numpy's R differs (no skip)
         # numpy's R, up to the signs of its rows
@@ -403,7 +416,10 @@ def test_cycle_counts(driver):
     region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
     sequential = (loop(f, 1, la) + loop(f * (f + 1) // 2, 1, 2) + loop(f * (w + 1), 1, 1)
                   + loop(s * (s + 1), 1, 1))
-    backsub = sum(loop(w - i - 1, la, lm + la) + ld for i in range(f))
+    p = 12  # the driver's PARTIALS
+    k = min(s, p)
+    dot = loop(s, math.ceil(la / k), lm + la * (1 + math.ceil(math.log2(k))) + la)
+    backsub = f * dot + loop(f, 1, ld) + sum(lm + loop(r, 1, lm + la) for r in range(f))
     assert twenty.cycles == region + sequential + backsub
 
     a = rand_stack(rng, 20, 6, 6)

@@ -13,9 +13,7 @@
 //                 typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS],
 //                 bool* not_pd, bool* singular);
 //
-//   template <class CFG>
-//   void cpe_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
-//                    const typename CFG::T xs[CFG::MAX_W], typename CFG::T x[CFG::MAX_F]);
+//   and cond_backsub<CFG> (fgc_backsub.h, included) for the step's back-substitution.
 //
 // In: the step's [H | g], w = f + s rows, row-major with w + 1 used columns: H[i][c] for
 // i <= c < w is the upper triangle of the frontal-and-separator Hessian (the sum of its factors'
@@ -34,9 +32,8 @@
 //   *singular: not_pd, or a pivot |U_ii| (i < f) is not above CFG::SINGULAR_EPS * scale, scale =
 //   the largest |U_ic|, i <= c < f (the kernel's rule). Both true, with nothing computed, if
 //   w > MAX_W or f > MAX_F. cond and update are written in any case.
-// - cpe_backsub: the step's back-substitution with its conditional, R x = d - S xs (xs: the
-//   separator's solution, xs[a] for a < s), x[i] for i < f; the sequential trisolve unit's work
-//   (plan.py's trisolve phase), R^T is never needed since L z = g ran in the cascade.
+// - the back-substitution R x = d - S xs is cond_backsub<CFG> (fgc_backsub.h): the trisolve
+//   unit of plan.py, sequential; R^T is never needed since L z = g ran in the cascade.
 //
 // ---- arithmetic (the kernel's cholesky_frontal, kernel.cpp.jinja) -----------------------------
 //
@@ -75,6 +72,7 @@
 
 #include <cmath>
 
+#include "fgc_backsub.h"
 #include "fgc_cycles.h"
 #include "hls_stream.h"
 
@@ -87,6 +85,7 @@ struct cpe_config_example {
     static const int MAX_COLS = MAX_W + 1;   // + the gradient
     static const int MAX_F = 6;              // frontal columns
     static const int N_CPE = 5;              // Cholesky process elements (--cpe)
+    static const int PARTIALS = 12;          // partial sums of cond_backsub's dots (>= ADD_LAT)
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;  // float64 (plan)
     static constexpr double SINGULAR_EPS = 1e-12;
 };
@@ -319,27 +318,6 @@ void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typena
     cpe_store<CFG>(H, f, s, cond, update, &tiny);
     *not_pd = npd;
     *singular = npd || tiny;
-}
-
-// Back-substitution of one conditional: R x = d - S xs, last row first (sequential).
-template <class CFG>
-void cpe_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
-                 const typename CFG::T xs[CFG::MAX_W], typename CFG::T x[CFG::MAX_F]) {
-    typedef typename CFG::T T;
-    const int w = f + s, cols = w + 1;
-    for (int i = f - 1; i >= 0; --i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-        T acc = cond[i * cols + w];
-        // trip w - i - 1, II La (one accumulator chain), depth Lm + La
-        for (int c = i + 1; c < w; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
-#pragma HLS PIPELINE
-            acc -= cond[i * cols + c] * (c < f ? x[c] : xs[c - f]);
-        }
-        FGC_CYCLES("cpe_backsub", 0, "row", w - i - 1, CFG::ADD_LAT, CFG::MUL_LAT + CFG::ADD_LAT);
-        x[i] = acc / cond[i * cols + i];
-        FGC_CYCLES("cpe_backsub", 0, "divide", 1, 1, CFG::DIV_LAT);
-    }
 }
 
 }  // namespace fgc_units

@@ -134,6 +134,7 @@ inline void dump(std::FILE* out) {
 
 #endif  // FGC_COUNT_CYCLES
 
+// Shared helpers of the units (namespace fgc_units), also without FGC_COUNT_CYCLES.
 namespace fgc_units {
 
 // ceil(a / b) and ceil(log2 a) for the counters' II and depth (constant expressions, C++14)
@@ -150,6 +151,21 @@ inline int dot_ii(int length, int partials, int add_lat) {
 inline int dot_depth(int length, int partials, int add_lat, int mul_lat) {
     const int k = length < partials ? (length < 1 ? 1 : length) : partials;
     return mul_lat + add_lat * (1 + ceil_log2(k));
+}
+
+// Fold P interleaved partial sums in a binary tree (ceil(log2 P) adds deep), a fixed order; the
+// dot products of fgc_qr.h, fgc_cpe.h and fgc_backsub.h end with it.
+template <class T, int P>
+inline T fold_partials(T part[P]) {
+#pragma HLS INLINE
+    for (int step = 1; step < P; step *= 2) {
+#pragma HLS UNROLL
+        for (int i = 0; i + step < P; i += 2 * step) {
+#pragma HLS UNROLL
+            part[i] += part[i + step];
+        }
+    }
+    return part[0];
 }
 
 }  // namespace fgc_units

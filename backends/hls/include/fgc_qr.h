@@ -18,7 +18,7 @@
 // rows and, for Levenberg-Marquardt, the damping rows sqrt(mu) I under the frontal columns: the
 // caller assembles them), `rows` rows of w + 1 = f + s + 1 columns: f frontal columns, s separator
 // columns, the right-hand side last. The work memory is banked N_UNITS ways by column: column c of
-// row i is work[c % N_UNITS][i][c / N_UNITS] (qr_at<CFG>(c) gives the bank and the slot, and
+// row i is work[c % N_UNITS][i][c / N_UNITS] (qr_put<CFG> / qr_get<CFG> write and read it, and
 // qr_scatter<CFG> fills the banks from a dense row-major matrix). Every entry of rows 0 ... rows-1,
 // columns 0 ... w must be written (zeros included); the memory is overwritten by the factor.
 //
@@ -108,20 +108,6 @@ inline T qr_abs(T x) {
     return x < T(0) ? T(-x) : x;
 }
 
-// Fold P partial sums in a binary tree (depth ceil(log2 P) adds), a fixed order.
-template <class T, int P>
-inline T fold_partials(T part[P]) {
-#pragma HLS INLINE
-    for (int step = 1; step < P; step *= 2) {
-#pragma HLS UNROLL
-        for (int i = 0; i + step < P; i += 2 * step) {
-#pragma HLS UNROLL
-            part[i] += part[i + step];
-        }
-    }
-    return part[0];
-}
-
 // Fill the banks from a dense row-major [A | b] (rows x cols); the rest of the banks is zeroed.
 template <class CFG>
 void qr_scatter(const typename CFG::T dense[CFG::MAX_ROWS][CFG::MAX_COLS], int rows, int cols,
@@ -136,12 +122,18 @@ void qr_scatter(const typename CFG::T dense[CFG::MAX_ROWS][CFG::MAX_COLS], int r
     }
 }
 
-// Entry (i, c) of the banked matrix.
+// Entry (i, c) of the banked matrix, read and written.
 template <class CFG>
-inline typename CFG::T qr_get(const typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                              int i, int c) {
+inline typename CFG::T qr_get(
+    const typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int i, int c) {
 #pragma HLS INLINE
     return work[c % CFG::N_UNITS][i][c / CFG::N_UNITS];
+}
+template <class CFG>
+inline void qr_put(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int i,
+                   int c, typename CFG::T value) {
+#pragma HLS INLINE
+    work[c % CFG::N_UNITS][i][c / CFG::N_UNITS] = value;
 }
 
 // ---- the processes of one reflection ---------------------------------------------------------
