@@ -23,6 +23,7 @@ INCLUDE = Path(__file__).resolve().parents[1] / "backends" / "hls" / "include"
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
 
 DRIVER = r"""
+#include <cmath>
 #include <cstdio>
 #include <vector>
 #include "fgc_qr.h"
@@ -106,6 +107,8 @@ static void run_cpe(int f, int s, double mu) {
     const int w = f + s;
     static T H[C::MAX_W][C::MAX_COLS];
     static T cond[C::MAX_F * C::MAX_COLS], update[C::MAX_W * C::MAX_COLS];
+    for (int i = 0; i < C::MAX_F * C::MAX_COLS; ++i) cond[i] = T(NAN);
+    for (int i = 0; i < C::MAX_W * C::MAX_COLS; ++i) update[i] = T(NAN);
     for (int i = 0; i < w; ++i)
         for (int c = 0; c <= w; ++c) {
             double x;
@@ -346,8 +349,12 @@ def test_cpe_matches_numpy(driver, cpe):
         cond, upd = cpe_expected(h, f, s, mu)
         assert not res.not_pd and not res.singular
         scale = max(np.abs(cond).max(), 1.0)
-        np.testing.assert_allclose(res.cond, cond.ravel(), rtol=0, atol=1e-12 * scale)
-        np.testing.assert_allclose(res.update, upd.ravel(), rtol=0, atol=1e-12 * scale)
+        # left of the diagonal nothing is written (the driver fills NaN there)
+        got_cond = np.triu(res.cond.reshape(f, f + s + 1))
+        got_upd = np.triu(res.update.reshape(s, s + 1))
+        assert np.isnan(res.cond.reshape(f, -1)[np.tril_indices(f, -1)]).all()
+        np.testing.assert_allclose(got_cond, cond, rtol=0, atol=1e-12 * scale)
+        np.testing.assert_allclose(got_upd, upd, rtol=0, atol=1e-12 * scale)
         # back-substitution R x = d - S xs, xs = 1, 2, ...
         xs = np.arange(1, s + 1, dtype=float)
         x = np.linalg.solve(cond[:, :f], cond[:, f + s] - cond[:, f:f + s] @ xs)
@@ -376,7 +383,8 @@ def test_cpe_float32(driver):
     h = spd_stack(rng, 7, 5, m_extra=10).astype(np.float32).astype(np.float64)
     (res,) = run(driver, [("cpe", 50, 0, 7, 5, 0.1, h)])
     cond, upd = cpe_expected(h, 7, 5, 0.1)
-    np.testing.assert_allclose(res.cond, cond.ravel(), rtol=0, atol=1e-3 * np.abs(cond).max())
+    np.testing.assert_allclose(np.triu(res.cond.reshape(7, 13)), cond, rtol=0,
+                               atol=1e-3 * np.abs(cond).max())
 
 
 # ---- cycles -------------------------------------------------------------------------------------
@@ -400,22 +408,16 @@ def test_cycle_counts(driver):
     w, f, s = 15, 10, 5
     words = w * (w + 1) // 2 + w
 
-    def cpe_cycles(k):
-        p = k
-        if p >= f:
-            return loop(words + 1, 1, 1), 1
-        before = words - ((w - p) * (w - p + 1) // 2 + (w - p))
-        after = (w - p - 1) * (w - p) // 2 + (w - p - 1)
-        loops = [(before, 1, 1), (1, 1, ls + ld), (w - p, 1, lm), (after, 1, lm + la)]
-        first = next(d for t, _, d in loops if t > 0)
-        return sum(loop(*x) for x in loops), first
-
-    procs = [(loop(words + 1, 1, 2), 2)] + [cpe_cycles(k) for k in range(20)]
-    procs.append((loop(words + 1, 1, 2), 2))
+    # a CPE is one stream of the words and the status word, as deep as its latency if it has a
+    # pivot; the feed and the drain are 2 deep
+    cpe_depth = ls + ld + lm + la
+    procs = ([(loop(words + 1, 1, 2), 2)]
+             + [(loop(words + 1, 1, cpe_depth), cpe_depth)] * f
+             + [(loop(words + 1, 1, 1), 1)] * (20 - f) + [(loop(words + 1, 1, 2), 2)])
     slow = max(range(len(procs)), key=lambda i: procs[i][0])
     region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
-    sequential = (loop(f, 1, la) + loop(f * (f + 1) // 2, 1, 2) + loop(f * (w + 1), 1, 1)
-                  + loop(s * (s + 1), 1, 1))
+    assert region == words + cpe_depth + 2 + 2 + (f - 1) * cpe_depth + (20 - f)
+    sequential = loop(f, 1, la) + loop(f, 1, 2)  # damping, pivot check
     p = 12  # the driver's PARTIALS
     k = min(s, p)
     dot = loop(s, math.ceil(la / k), lm + la * (1 + math.ceil(math.log2(k))) + la)
@@ -427,3 +429,11 @@ def test_cycle_counts(driver):
     assert q1.cycles > q4.cycles > q8.cycles > 0
     # the overlap: a region costs less than its processes one after another
     assert q4.cycles < q4.serial
+
+
+def test_cpe_no_frontal_columns(driver):
+    """f = 0: no round runs; the update matrix is [H | g] as it came."""
+    h = spd_stack(np.random.default_rng(9), 0, 4)
+    (res,) = run(driver, [("cpe", 5, 0, 0, 4, 0.0, h)])
+    assert not res.not_pd and not res.singular and res.cond.size == 0
+    np.testing.assert_array_equal(np.triu(res.update.reshape(4, 5)), np.triu(h))

@@ -23,11 +23,13 @@
 //
 // Out:
 // - cond: the conditional (R | S | d): rows 0 ... f - 1 of U = L^T, row-major with w + 1 columns,
-//   cond[i * (w + 1) + c] (R = U_ff upper triangular, S = L_ff^-1 H_fs, d = L_ff^-1 g_f, the
-//   forward solve L z = g riding in the cascade as the last column); zero left of the diagonal.
+//   cond[i * (w + 1) + c], c >= i (R = U_ff upper triangular, S = L_ff^-1 H_fs, d = L_ff^-1 g_f,
+//   the forward solve L z = g riding in the cascade as the last column); left of the diagonal
+//   nothing is written (back-substitution never reads it).
 // - update: the Schur complement for the parent, s rows of s + 1 columns:
 //   update[a * (s + 1) + b] = (H_ss - S^T S)[a][b] for a <= b < s, the reduced gradient
-//   g_s - S^T d in column s; zero left of the diagonal.
+//   g_s - S^T d in column s (b = s); left of the diagonal nothing is written (the parent reads
+//   an update matrix's upper triangle).
 // - *not_pd: a pivot (after the updates of the earlier pivots) was not > 0: not positive definite;
 //   *singular: not_pd, or a pivot |U_ii| (i < f) is not above CFG::SINGULAR_EPS * scale, scale =
 //   the largest |U_ic|, i <= c < f (the kernel's rule). Both true, with nothing computed, if
@@ -56,17 +58,21 @@
 //                 first row it changes: Evaluate (check, sqrt, 1 / pivot, the row of U, kept in
 //                 the CPE and passed on); every later row is Updated entry by entry and passed on.
 //                 The status word passes ORed with its own not-positive-definite flag;
-//   cpe_drain     writes the words back into H (rows of U and the trailing matrix) and the status
-//                 into its output argument, the round's only writer of it.
+//   cpe_drain     writes the words back into H (rows of U and the trailing matrix); the round's
+//                 final rows also straight out: its pivots' rows of U into cond (and their frontal
+//                 entries' largest magnitude into its scale output) and, in the last round, the
+//                 trailing rows into update; the status into its output argument. It is the only
+//                 writer of cond, update, the scale and the status in the region.
 //
-// cpe_step adds mu first and takes the scale, checks and stores cond and update last (cpe_store),
-// all sequential.
+// cpe_step adds mu first (sequential), runs the rounds, and checks the pivots against the largest
+// scale of the rounds last (sequential, f compares): no copy of the factor after the cascade.
 //
 // ---- cycles -------------------------------------------------------------------------------
 //
 // Each pipelined loop states its trip count, II and depth and reports them to FGC_CYCLES
-// (fgc_cycles.h). A round streams m (m + 1) / 2 + m words, m = w - p0 (plan.py's round words).
-// La / Lm / Ld / Ls = CFG::ADD_LAT / MUL_LAT / DIV_LAT / SQRT_LAT.
+// (fgc_cycles.h). A round streams m (m + 1) / 2 + m words, m = w - p0 (plan.py's round words);
+// a CPE counts as one stream of them, depth Ls + Ld + Lm + La (La / Lm / Ld / Ls = CFG::ADD_LAT /
+// MUL_LAT / DIV_LAT / SQRT_LAT).
 #ifndef FGC_CPE_H
 #define FGC_CPE_H
 
@@ -144,22 +150,20 @@ void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
         return;
     }
     const int before = words - cpe_words(p, w);  // rows p0 ... p - 1
-    // rows of U from the CPEs before: trip before, II 1, depth 1
+    // rows of U from the CPEs before: trip before, II 1
     for (int t = 0; t < before; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
         out.write(in.read());
     }
-    FGC_CYCLES("cpe", K, "pass_rows", before, 1, 1);
-    // Evaluate: the pivot, its square root and reciprocal (depth Ls + Ld)
+    // Evaluate: the pivot, its square root and reciprocal (Ls + Ld, the stream stalls)
     T u[CFG::MAX_COLS];  // row p of U, u[c - p]
     const T d = in.read();
     const bool bad = !(d > T(0));
     const T inv = T(1) / std::sqrt(d);
-    FGC_CYCLES("cpe", K, "evaluate", 1, 1, CFG::SQRT_LAT + CFG::DIV_LAT);
     u[0] = d * inv;
     out.write(u[0]);
-    // the rest of row p of U: trip w - p, II 1, depth Lm
+    // the rest of row p of U: trip w - p, II 1
     for (int c = p + 1; c <= w; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
 #pragma HLS PIPELINE II=1
@@ -167,8 +171,7 @@ void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
         u[c - p] = x;
         out.write(x);
     }
-    FGC_CYCLES("cpe", K, "pivot_row", w - p, 1, CFG::MUL_LAT);
-    // Update the later rows entry by entry: trip (w-p-1)(w-p)/2 + w-p-1, II 1, depth Lm + La
+    // Update the later rows entry by entry: trip (w-p-1)(w-p)/2 + w-p-1, II 1 (Lm + La deep)
     const int after = cpe_words(p + 1, w);
     int i = p + 1, c = p + 1;
     for (int t = 0; t < after; ++t) {
@@ -183,9 +186,13 @@ void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
             ++c;
         }
     }
-    FGC_CYCLES("cpe", K, "update", after, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     const T status = in.read();
     out.write(bad || status != T(0) ? T(1) : T(0));
+    // The four loops are one stream of words + 1 words at a word a cycle whose only stall is the
+    // Evaluate: counted as one loop, trip words + 1, II 1, depth Ls + Ld + Lm + La (the CPE's
+    // latency, what it adds to the cascade; plan.py's cpe_depth).
+    FGC_CYCLES("cpe", K, "stream", words + 1, 1,
+               CFG::SQRT_LAT + CFG::DIV_LAT + CFG::MUL_LAT + CFG::ADD_LAT);
 }
 
 // The N_CPE processes, K = 0 ... N_CPE - 1, as separate calls in the region.
@@ -205,19 +212,36 @@ struct cpe_cascade<CFG, K, true> {
     }
 };
 
-// Write the round's words back into H, the status into *bad.
+// Write the round's words back into H, the final ones also out: the rows of U of the round's
+// pivots into cond (their frontal entries' largest magnitude into *scale) and, in the last round,
+// the trailing rows into update; the status into *bad.
 template <class CFG>
-void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w,
-               typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], bool* bad) {
+void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
+               typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS],
+               typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+               typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS], typename CFG::T* scale,
+               bool* bad) {
     typedef typename CFG::T T;
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int words = cpe_words(p0, w);
+    const int cols = w + 1, s = w - f;
+    const int done = p0 + CFG::N_CPE < f ? p0 + CFG::N_CPE : f;  // rows p0 ... done - 1 are final
+    const bool last = done == f;
+    T big = T(0);
     int i = p0, c = p0;
-    // trip m (m + 1) / 2 + m, II 1, depth 2 (read, write)
+    // trip m (m + 1) / 2 + m (+ the status word), II 1, depth 2 (read, write)
     for (int t = 0; t < words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
-        H[i][c] = in.read();
+        const T x = in.read();
+        H[i][c] = x;
+        if (i < done) {
+            cond[i * cols + c] = x;
+            const T mag = c < f ? cpe_abs(x) : T(0);
+            big = mag > big ? mag : big;
+        } else if (last && i >= f) {
+            update[(i - f) * (s + 1) + (c - f)] = x;
+        }
         if (c == w) {
             ++i;
             c = i;
@@ -225,13 +249,17 @@ void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w,
             ++c;
         }
     }
+    *scale = big;
     *bad = in.read() != T(0);
     FGC_CYCLES("cpe_drain", 0, "rows", words + 1, 1, 2);
 }
 
 // One round of N_CPE pivots from p0: the DATAFLOW region (see the top of the file).
 template <class CFG>
-void cpe_round(int p0, int w, int f, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], bool* bad) {
+void cpe_round(int p0, int w, int f, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS],
+               typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+               typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS], typename CFG::T* scale,
+               bool* bad) {
 #pragma HLS DATAFLOW
     enum { LINK_DEPTH = CFG::MAX_W };  // plan.py's cpe_fifo channels: depth n
     hls::stream<typename CFG::T> link[CFG::N_CPE + 1];
@@ -239,51 +267,7 @@ void cpe_round(int p0, int w, int f, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS
     FGC_REGION("cpe_round");
     cpe_feed<CFG>(H, p0, w, link[0]);
     cpe_cascade<CFG, 0>::run(p0, w, f, link);
-    cpe_drain<CFG>(link[CFG::N_CPE], p0, w, H, bad);
-}
-
-// The factor out: scale, pivot check, conditional and Schur complement (sequential).
-template <class CFG>
-void cpe_store(const typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s,
-               typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-               typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS], bool* singular) {
-    typedef typename CFG::T T;
-    const int w = f + s, cols = w + 1;
-    T scale = T(0);
-    for (int i = 0; i < f; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-        // trip f - i, II 1, depth 2 (read, compare); counted for all rows together
-        for (int c = i; c < f; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-#pragma HLS PIPELINE II=1
-            const T mag = cpe_abs(H[i][c]);
-            scale = mag > scale ? mag : scale;
-        }
-    }
-    FGC_CYCLES("cpe_store", 0, "scale", f * (f + 1) / 2, 1, 2);
-    bool bad = false;
-    for (int i = 0; i < f; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-        if (!(cpe_abs(H[i][i]) > CFG::SINGULAR_EPS * scale)) bad = true;
-        // trip w + 1, II 1, depth 1
-        for (int c = 0; c < cols; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
-#pragma HLS PIPELINE II=1
-            cond[i * cols + c] = c >= i ? H[i][c] : T(0);
-        }
-    }
-    FGC_CYCLES("cpe_store", 0, "conditional", f * cols, 1, 1);
-    for (int a = 0; a < s; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
-        // trip s + 1, II 1, depth 1
-        for (int b = 0; b <= s; ++b) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
-#pragma HLS PIPELINE II=1
-            update[a * (s + 1) + b] = b >= a ? H[f + a][f + b] : T(0);
-        }
-    }
-    FGC_CYCLES("cpe_store", 0, "update", s * (s + 1), 1, 1);
-    *singular = bad;
+    cpe_drain<CFG>(link[CFG::N_CPE], p0, w, f, H, cond, update, scale, bad);
 }
 
 // ---- the step ---------------------------------------------------------------------------------
@@ -292,6 +276,7 @@ template <class CFG>
 void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
               typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
               typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS], bool* not_pd, bool* singular) {
+    typedef typename CFG::T T;
     enum { MAX_ROUNDS = (CFG::MAX_F + CFG::N_CPE - 1) / CFG::N_CPE };
     const int w = f + s;
     if (f < 0 || s < 0 || w > CFG::MAX_W || f > CFG::MAX_F) {
@@ -307,15 +292,38 @@ void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typena
     }
     FGC_CYCLES("cpe_step", 0, "damping", f, 1, CFG::ADD_LAT);
     bool npd = false;
+    T scale = T(0);
     for (int p0 = 0; p0 < f; p0 += CFG::N_CPE) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_ROUNDS
         bool round_bad = false;
-        cpe_round<CFG>(p0, w, f, H, &round_bad);
+        T round_scale = T(0);
+        cpe_round<CFG>(p0, w, f, H, cond, update, &round_scale, &round_bad);
         FGC_SEQUENTIAL();
         npd = npd || round_bad;
+        scale = round_scale > scale ? round_scale : scale;
     }
+    // f == 0: no round; the update matrix is [H | g] as it came
+    const int words = f == 0 ? cpe_words(0, w) : 0;
+    for (int t = 0, i = 0, c = 0; t < words; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
+#pragma HLS PIPELINE II=1
+        update[i * (w + 1) + c] = H[i][c];
+        if (c == w) {
+            ++i;
+            c = i;
+        } else {
+            ++c;
+        }
+    }
+    FGC_CYCLES("cpe_step", 0, "no_pivots", words, 1, 1);
+    // the pivots against the scale: trip f, II 1, depth 2 (read, compare)
     bool tiny = false;
-    cpe_store<CFG>(H, f, s, cond, update, &tiny);
+    for (int i = 0; i < f; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
+#pragma HLS PIPELINE II=1
+        if (!(cpe_abs(cond[i * (w + 1) + i]) > CFG::SINGULAR_EPS * scale)) tiny = true;
+    }
+    FGC_CYCLES("cpe_step", 0, "pivot_check", f, 1, 2);
     *not_pd = npd;
     *singular = npd || tiny;
 }
