@@ -54,15 +54,15 @@ static void print(const char* tag, const double* x, int n) {
     std::printf("\n");
 }
 
-static void finish_cycles() {
+// the cycles of what ran since the last call (the step, then its back-substitution)
+static void cycles(const char* tag) {
 #ifdef FGC_COUNT_CYCLES
-    std::printf("cycles %ld\n", fgc_cycles::total());
-    long processes = 0;
-    for (const auto& r : fgc_cycles::log()) processes += r.cycles();
-    std::printf("serial %ld\n", processes);
+    long serial = 0;
+    for (const auto& r : fgc_cycles::log()) serial += r.cycles();
+    std::printf("%s %ld %ld\n", tag, fgc_cycles::total(), serial);
     fgc_cycles::reset();
 #else
-    std::printf("cycles 0\nserial 0\n");
+    std::printf("%s 0 0\n", tag);
 #endif
 }
 
@@ -82,6 +82,7 @@ static void run_qr(int rows, int f, int s) {
     fgc_units::qr_scatter<C>(dense, rows, cols, work);
     bool singular = false;
     fgc_units::qr_step<C>(work, rows, f, s, cond, update, &singular);
+    cycles("cycles");
     std::printf("flags %d %d\n", 0, int(singular));
     const int last = rows < f + s ? rows : f + s;
     const int nf = last - f > 0 ? last - f : 0;
@@ -98,7 +99,7 @@ static void run_qr(int rows, int f, int s) {
     } else {
         print("x", nullptr, 0);
     }
-    finish_cycles();
+    cycles("backsub");
 }
 
 template <class C>
@@ -117,6 +118,7 @@ static void run_cpe(int f, int s, double mu) {
         }
     bool not_pd = false, singular = false;
     fgc_units::cpe_step<C>(H, f, s, T(mu), cond, update, &not_pd, &singular);
+    cycles("cycles");
     std::printf("flags %d %d\n", int(not_pd), int(singular));
     const bool fits = w <= C::MAX_W && f <= C::MAX_F;
     std::vector<double> a(cond, cond + (fits ? f * (w + 1) : 0));
@@ -132,7 +134,7 @@ static void run_cpe(int f, int s, double mu) {
     } else {
         print("x", nullptr, 0);
     }
-    finish_cycles();
+    cycles("backsub");
 }
 
 int main() {
@@ -191,8 +193,8 @@ class Result:
         self.cond = np.array([float(x) for x in fields["cond"]])
         self.update = np.array([float(x) for x in fields["update"]])
         self.x = np.array([float(x) for x in fields.get("x", [])])
-        self.cycles = int(fields["cycles"][0])
-        self.serial = int(fields["serial"][0])
+        self.cycles, self.serial = (int(x) for x in fields["cycles"])
+        self.backsub = int(fields["backsub"][0])
 
 
 def run(driver, cases):
@@ -422,7 +424,8 @@ def test_cycle_counts(driver):
     k = min(s, p)
     dot = loop(s, math.ceil(la / k), lm + la * (1 + math.ceil(math.log2(k))) + la)
     backsub = f * dot + loop(f, 1, ld) + sum(lm + loop(r, 1, lm + la) for r in range(f))
-    assert twenty.cycles == region + sequential + backsub
+    assert twenty.cycles == region + sequential
+    assert twenty.backsub == backsub
 
     a = rand_stack(rng, 20, 6, 6)
     q1, q4, q8 = run(driver, [("qr", u, 20, 6, 6, 0.0, a) for u in (1, 4, 8)])
@@ -437,3 +440,45 @@ def test_cpe_no_frontal_columns(driver):
     (res,) = run(driver, [("cpe", 5, 0, 0, 4, 0.0, h)])
     assert not res.not_pd and not res.singular and res.cond.size == 0
     np.testing.assert_array_equal(np.triu(res.update.reshape(4, 5)), np.triu(h))
+
+
+# ---- the plan prices what the units execute ---------------------------------------------------
+
+
+@pytest.mark.parametrize("units", [1, 4, 8])
+def test_plan_prices_the_qr_unit(driver, units):
+    """plan.qr_unit_loops (what plan.py's QR phases are made of) equals the counted cycles of
+    qr_step on a sparse stack: structural zeros, a child's trapezoid, damping rows."""
+    from fgc_backends.hls.plan import qr_unit_loops
+
+    rng = np.random.default_rng(40 + units)
+    f, s = 6, 7
+    pattern = rng.random((14, f + s)) < 0.4
+    trapezoid = np.zeros((4, f + s), dtype=bool)
+    for i in range(4):
+        trapezoid[i, f + i:] = True
+    pattern = np.vstack([pattern, trapezoid, np.eye(f, f + s, dtype=bool)])
+    a = np.where(pattern, rng.standard_normal(pattern.shape), 0.0)
+    a = np.hstack([a, rng.standard_normal((len(a), 1))])
+    (res,) = run(driver, [("qr", units, len(a), f, s, 0.0, a)])
+    loops = qr_unit_loops(pattern, f, units, table("float64"), partials=12)
+    assert res.cycles == sum(lp.cycles for lp in loops)
+
+
+def test_plan_prices_the_cpe_rounds(driver):
+    """plan.cpe_round_depth: a whole matrix as one step (f = n, s = 0), as plan.py's Cholesky
+    phase prices it, equals the counted cycles for 1, 5 and 20 CPEs (idle CPEs included)."""
+    from fgc_backends.hls.plan import Loop, cpe_round_depth
+
+    ops = table("float64")
+    n = 23
+    h = spd_stack(np.random.default_rng(11), n, 0)
+    results = run(driver, [("cpe", c, 0, n, 0, 0.5, h) for c in (1, 5, 20)])
+    for c, res in zip((1, 5, 20), results, strict=True):
+        rounds = []
+        for r in range(-(-n // c)):
+            m = n - r * c
+            depth = cpe_round_depth(min(c, m), c, ops)
+            rounds.append(Loop("round", m * (m + 1) // 2 + m, 1, depth))
+        scalar = Loop("damping", n, 1, ops.add.latency).cycles + Loop("check", n, 1, 2).cycles
+        assert res.cycles == sum(lp.cycles for lp in rounds) + scalar
