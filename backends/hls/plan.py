@@ -210,7 +210,7 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     side, dense, is added here); a structural non-zero is taken as non-zero in value. Returns one
     ``Loop`` (trip 1) per DATAFLOW region ``qr_reflection`` j = -1 ... k - 1 (k = min(rows,
     w + 1)), whose depth is the region's cycles (slowest process plus the others' fill, from the
-    same loops as the header's FGC_CYCLES counters), then the sequential loops of ``qr_store``.
+    same loops as the header's FGC_CYCLES counters), then the sequential pivot check.
     ``partials`` is the header's CFG::PARTIALS (default: the adder latency, II 1).
     """
     import numpy as np
@@ -220,7 +220,6 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     nz = np.hstack([np.asarray(pattern, dtype=bool),
                     np.ones((len(pattern), 1), dtype=bool)])
     rows, cols = nz.shape
-    s = cols - 1 - frontal
     k = min(rows, cols)
     local = -(-cols // units)
 
@@ -254,10 +253,14 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 c = lc * units + u
                 if c <= j or c >= cols:
                     continue
-                if n > 0:
+                if n == 1:  # the pivot row alone: negated
+                    loops.append(Loop("negate", 1, 1, 1))
+                elif n > 1:
                     ii, depth = dot(n)
                     loops += [Loop("dot", n, ii, depth), Loop("scale", 1, 1, lm),
                               Loop("axpy", n, 1, lm + la)]
+                if j >= 0:
+                    loops.append(Loop("row_out", 1, 1, 1))
                 if c == j + 1 and c < k:
                     loops.append(Loop("next_column", rows - c, 1, 1))
             procs.append(loops)
@@ -270,11 +273,11 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 loops += [Loop("norm", n2, ii, ld + depth), Loop("tail", 1, 1, ls + lm + la + ld),
                           Loop("send", n2, 1, 1)]
             procs.append(loops)
+        # the collector: row j of R out (cond / update) and the running scale
+        procs.append([Loop("header", 2, 1, 1)]
+                     + ([Loop("row", cols - j, 1, 2)] if 0 <= j < k else []))
         out.append(Loop(f"{name}_reflection{j + 1}", 1, 1, _region_cycles(procs)))
-    nf = max(0, min(rows, cols - 1) - frontal)
-    out += [Loop(f"{name}_store_scale", sum(cols - i for i in range(k)), 1, 2),
-            Loop(f"{name}_store_conditional", frontal * cols, 1, 1),
-            Loop(f"{name}_store_update", nf * (s + 1), 1, 1)]
+    out.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
     return out
 
 

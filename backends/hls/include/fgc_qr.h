@@ -24,14 +24,15 @@
 //
 // Out (k = min(rows, w + 1) reflections, columns 0 ... k - 1):
 // - cond: the conditional (R | S | d), rows 0 ... f - 1 of the triangular factor, row-major with
-//   w + 1 columns: cond[i * (w + 1) + c]; zero left of the diagonal.
+//   w + 1 columns: cond[i * (w + 1) + c], c >= i; left of the diagonal nothing is written
+//   (back-substitution never reads it).
 // - update: the new factor for the parent, nf = max(0, min(rows, w) - f) rows (fgc's
 //   STEP_NF_ROWS) of the separator columns and the right-hand side, s + 1 columns:
-//   update[r * (s + 1) + c] = R[f + r][f + c]; zero left of its diagonal.
+//   update[r * (s + 1) + c] = R[f + r][f + c], c >= r; left of its diagonal nothing is written.
 // - *singular: true if k < f or a frontal pivot |R_ii| (i < f) is not above
 //   CFG::SINGULAR_EPS * scale, scale = the largest |R_ic| over rows i < k, columns i ... w (the
 //   kernel's rule); also true, with nothing computed, if rows > MAX_ROWS, w + 1 > MAX_COLS or
-//   f > MAX_F. cond and update are written in any case.
+//   f > MAX_F. (k < f: the rows of cond from k on are not written.)
 //
 // ---- arithmetic (the kernel's householder(), kernel.cpp.jinja) --------------------------------
 //
@@ -40,9 +41,11 @@
 // v.v neither underflows nor overflows), norm2 = v.v (PARTIALS interleaved partial sums, folded in
 // a binary tree), alpha = -sign(v_0) sqrt(norm2), v_0 -= alpha, tau = 1 / (norm2 - alpha v_0_old);
 // every column c > j gets x -= (tau v.x) v over the active rows; R_jj = alpha big and the active
-// rows below it become 0. A column whose active entries are all 0 is skipped. The sums are in a
-// different order than the kernel's (interleaved partial sums instead of one chain per column), so
-// the results equal the kernel's to rounding (~1e-15 relative in double), not bit for bit.
+// rows below it become 0. A column whose active entries are all 0 is skipped; with one active row
+// (the pivot) the reflection is the pivot row's negation, exactly, and is taken as that. The sums
+// are in a different order than the kernel's (interleaved partial sums instead of one chain per
+// column), so the results equal the kernel's to rounding (~1e-15 relative in double), not bit for
+// bit.
 //
 // ---- structure (UG1399 canonical dataflow) -------------------------------------------------
 //
@@ -51,19 +54,23 @@
 //
 //   qr_broadcast      reads the Householder vector of column j (vbuf, written by region j - 1's
 //                     Evaluate; a function argument read before it is written) and streams it to
-//                     each Update unit (vq[u]);
+//                     each Update unit (vq[u]), its header (R_jj) to the collector (hq);
 //   qr_update<u>      u = 0 ... N_UNITS - 1 (one process each, through qr_update_units): applies
 //                     reflection j to its own columns c > j, c % N_UNITS == u, in ascending order,
-//                     in its own bank work[u] (read and written by that process only); the unit
-//                     holding column j + 1 updates it first and streams it (rows j + 1 ... rows - 1)
-//                     to the Evaluate (colq[u]);
+//                     in its own bank work[u] (read and written by that process only); each
+//                     column's entry in row j, final now, goes to the collector (rowq[u]); the
+//                     unit holding column j + 1 updates it first and streams it (rows j + 1 ...
+//                     rows - 1) to the Evaluate (colq[u]);
 //   qr_evaluate       builds the Householder vector of column j + 1 from that stream while the
-//                     other columns are still being updated, and writes it to vbuf.
+//                     other columns are still being updated, and writes it to vbuf;
+//   qr_collect        writes row j of R (R_jj, then the units' entries in column order) into cond
+//                     or update and keeps the running scale (an argument read before written).
 //
-// Each stream has one writer and one reader, no process returns a value, no channel goes back.
-// Region -1 only streams column 0 to the Evaluate (an empty reflection); region k - 1 only applies
-// the last reflection. qr_store (sequential, after the loop) takes the scale, checks the pivots
-// and writes cond and update; it is the only writer of *singular.
+// Each stream has one writer and one reader, no process returns a value, no channel goes back;
+// cond, update and the scale have one writer (the collector). Region -1 only streams column 0 to
+// the Evaluate (an empty reflection); region k - 1 only applies the last reflection. After the
+// loop qr_step checks the f pivots against the scale (sequential) and writes *singular: no pass
+// over the factor after the reflections.
 //
 // ---- cycles -------------------------------------------------------------------------------
 //
@@ -138,10 +145,12 @@ inline void qr_put(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_
 
 // ---- the processes of one reflection ---------------------------------------------------------
 
-// Stream the Householder vector in vbuf to every Update unit.
+// Stream the Householder vector in vbuf to every Update unit, its two header words also to the
+// collector.
 template <class CFG>
 void qr_broadcast(const qr_word<typename CFG::T> vbuf[CFG::MAX_ROWS + 2],
-                  hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS]) {
+                  hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
+                  hls::stream<qr_word<typename CFG::T> >& hq) {
     enum { MAX_WORDS = CFG::MAX_ROWS + 2 };
     const int words = vbuf[0].idx + 2;
     // trip n + 2, II 1, depth 2 (read, write)
@@ -153,16 +162,18 @@ void qr_broadcast(const qr_word<typename CFG::T> vbuf[CFG::MAX_ROWS + 2],
 #pragma HLS UNROLL
             vq[u].write(x);
         }
+        if (a < 2) hq.write(x);
     }
     FGC_CYCLES("qr_broadcast", 0, "vector", words, 1, 2);
 }
 
 // Update unit U: reflection j on the columns of bank U right of j (cols = w + 1 columns in all);
-// the column j + 1, if it is here and j + 1 < k, goes to the Evaluate after its update.
+// each column's entry in row j, final after reflection j, goes to the collector (rowout); the
+// column j + 1, if it is here and j + 1 < k, goes to the Evaluate after its update (colout).
 template <class CFG, int U>
 void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CFG::T> >& vin,
                typename CFG::T bank[CFG::MAX_ROWS][CFG::LOCAL_COLS],
-               hls::stream<typename CFG::T>& colout) {
+               hls::stream<typename CFG::T>& colout, hls::stream<typename CFG::T>& rowout) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
@@ -196,7 +207,12 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
 #pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
         const int c = l * CFG::N_UNITS + U;
         if (c <= j || c >= cols) continue;
-        if (n > 0) {
+        if (n == 1) {
+            // one active row: the reflection is x -> -x on the pivot row, exactly (v = 2 sign,
+            // tau = 1/2: x - (tau v x) v = x - 2x), so it is taken as that: 1 cycle
+            bank[j][l] = -bank[j][l];
+            FGC_CYCLES("qr_update", U, "negate", 1, 1, 1);
+        } else if (n > 1) {
             T part[P];
 #pragma HLS ARRAY_PARTITION variable=part complete
             for (int t = 0; t < P; ++t) {
@@ -222,6 +238,10 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
             FGC_CYCLES("qr_update", U, "scale", 1, 1, CFG::MUL_LAT);
             FGC_CYCLES("qr_update", U, "axpy", n, 1, CFG::MUL_LAT + CFG::ADD_LAT);
         }
+        if (j >= 0) {  // row j is final now: its entry in column c to the collector
+            rowout.write(bank[j][l]);
+            FGC_CYCLES("qr_update", U, "row_out", 1, 1, 1);
+        }
         if (c == j + 1 && c < k) {
             // the next pivot column to the Evaluate: trip rows - c, II 1, depth 1
             for (int i = c; i < rows; ++i) {
@@ -240,10 +260,11 @@ struct qr_update_units {
     static void run(int j, int rows, int cols, int k,
                     hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
                     typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                    hls::stream<typename CFG::T> colq[CFG::N_UNITS]) {
+                    hls::stream<typename CFG::T> colq[CFG::N_UNITS],
+                    hls::stream<typename CFG::T> rowq[CFG::N_UNITS]) {
 #pragma HLS INLINE
-        qr_update<CFG, U>(j, rows, cols, k, vq[U], work[U], colq[U]);
-        qr_update_units<CFG, U + 1>::run(j, rows, cols, k, vq, work, colq);
+        qr_update<CFG, U>(j, rows, cols, k, vq[U], work[U], colq[U], rowq[U]);
+        qr_update_units<CFG, U + 1>::run(j, rows, cols, k, vq, work, colq, rowq);
     }
 };
 
@@ -251,7 +272,7 @@ template <class CFG, int U>
 struct qr_update_units<CFG, U, true> {
     static void run(int, int, int, int, hls::stream<qr_word<typename CFG::T> >*,
                     typename CFG::T (*)[CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                    hls::stream<typename CFG::T>*) {
+                    hls::stream<typename CFG::T>*, hls::stream<typename CFG::T>*) {
 #pragma HLS INLINE
     }
 };
@@ -336,71 +357,68 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     FGC_CYCLES("qr_evaluate", 0, "send", n, 1, 1);
 }
 
+// The collector: row j of R, final after reflection j (R_jj from the header, the rest from the
+// Update units in column order), into cond (j < f) or update (f <= j < f + nf), and its largest
+// magnitude into the running scale (a function argument read before it is written).
+template <class CFG>
+void qr_collect(int j, int rows, int f, int s, int k, hls::stream<qr_word<typename CFG::T> >& hq,
+                hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
+                typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+                typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale) {
+    typedef typename CFG::T T;
+    const int w = f + s, cols = w + 1;
+    const int last = rows < w ? rows : w;
+    const int nf = last - f > 0 ? last - f : 0;
+    hq.read();  // {tau, n}
+    const T diag = hq.read().val;
+    FGC_CYCLES("qr_collect", 0, "header", 2, 1, 1);
+    if (j < 0 || j >= k) return;
+    T big = *scale;
+    // trip w + 1 - j, II 1, depth 2 (read, compare)
+    for (int c = j; c < cols; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
+#pragma HLS PIPELINE II=1
+        T x = diag;
+        if (c > j) {
+            for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+                if (u == c % CFG::N_UNITS) x = rowq[u].read();
+            }
+        }
+        if (j < f) {
+            cond[j * cols + c] = x;
+        } else if (j - f < nf) {
+            update[(j - f) * (s + 1) + (c - f)] = x;
+        }
+        const T mag = qr_abs(x);
+        big = mag > big ? mag : big;
+    }
+    *scale = big;
+    FGC_CYCLES("qr_collect", 0, "row", cols - j, 1, 2);
+}
+
 // One reflection: the DATAFLOW region (see the top of the file).
 template <class CFG>
-void qr_reflection(int j, int rows, int cols, int k,
+void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    qr_word<typename CFG::T> vbuf[CFG::MAX_ROWS + 2],
-                   typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
+                   typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                   typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+                   typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
+                   typename CFG::T* scale) {
 #pragma HLS DATAFLOW
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
     hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS];
 #pragma HLS STREAM variable=vq depth=V_DEPTH
+    hls::stream<qr_word<typename CFG::T> > hq;
     hls::stream<typename CFG::T> colq[CFG::N_UNITS];
 #pragma HLS STREAM variable=colq depth=CFG::MAX_ROWS
+    hls::stream<typename CFG::T> rowq[CFG::N_UNITS];
+#pragma HLS STREAM variable=rowq depth=CFG::LOCAL_COLS
     FGC_REGION("qr_reflection");
-    qr_broadcast<CFG>(vbuf, vq);
-    qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, work, colq);
+    qr_broadcast<CFG>(vbuf, vq, hq);
+    qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, work, colq, rowq);
     qr_evaluate<CFG>(j, rows, k, colq, vbuf);
-}
-
-// The factor out: scale, pivot check, conditional and update rows (sequential).
-template <class CFG>
-void qr_store(const typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows,
-              int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-              typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular) {
-    typedef typename CFG::T T;
-    const int w = f + s, cols = w + 1;
-    const int k = rows < cols ? rows : cols;
-    T scale = T(0);
-    int scanned = 0;
-    for (int i = 0; i < k; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
-        // trip w + 1 - i, II 1, depth 2 (read, compare); counted for all rows together
-        for (int c = i; c < cols; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
-#pragma HLS PIPELINE II=1
-            const T mag = qr_abs(qr_get<CFG>(work, i, c));
-            scale = mag > scale ? mag : scale;
-        }
-        scanned += cols - i;
-    }
-    FGC_CYCLES("qr_store", 0, "scale", scanned, 1, 2);
-    bool bad = k < f;
-    for (int i = 0; i < f; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-        const bool exists = i < k;
-        if (!exists || !(qr_abs(qr_get<CFG>(work, i, i)) > CFG::SINGULAR_EPS * scale)) bad = true;
-        // trip w + 1, II 1, depth 1
-        for (int c = 0; c < cols; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
-#pragma HLS PIPELINE II=1
-            cond[i * cols + c] = exists && c >= i ? qr_get<CFG>(work, i, c) : T(0);
-        }
-    }
-    FGC_CYCLES("qr_store", 0, "conditional", f * cols, 1, 1);
-    const int last = rows < w ? rows : w;
-    const int nf = last - f > 0 ? last - f : 0;
-    for (int r = 0; r < nf; ++r) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
-        // trip s + 1, II 1, depth 1
-        for (int c = 0; c <= s; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
-#pragma HLS PIPELINE II=1
-            update[r * (s + 1) + c] = c >= r ? qr_get<CFG>(work, f + r, f + c) : T(0);
-        }
-    }
-    FGC_CYCLES("qr_store", 0, "update", nf * (s + 1), 1, 1);
-    *singular = bad;
+    qr_collect<CFG>(j, rows, f, s, k, hq, rowq, cond, update, scale);
 }
 
 // ---- the step ---------------------------------------------------------------------------------
@@ -423,12 +441,21 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
     vbuf[0].idx = 0;
     vbuf[1].val = T(0);
     vbuf[1].idx = -1;
+    T scale = T(0);
     for (int j = -1; j < k; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
-        qr_reflection<CFG>(j, rows, cols, k, vbuf, work);
+        qr_reflection<CFG>(j, rows, f, s, cols, k, vbuf, work, cond, update, &scale);
         FGC_SEQUENTIAL();
     }
-    qr_store<CFG>(work, rows, f, s, cond, update, singular);
+    // the pivots against the scale: trip f, II 1, depth 2 (read, compare)
+    bool bad = k < f;
+    for (int i = 0; i < f; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
+#pragma HLS PIPELINE II=1
+        if (i >= k || !(qr_abs(cond[i * cols + i]) > CFG::SINGULAR_EPS * scale)) bad = true;
+    }
+    FGC_CYCLES("qr_step", 0, "pivot_check", f, 1, 2);
+    *singular = bad;
 }
 
 }  // namespace fgc_units
