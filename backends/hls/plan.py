@@ -274,8 +274,9 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                           Loop("send", n2, 1, 1)]
             procs.append(loops)
         # the collector: row j of R out (cond / update) and the running scale
+        first = 0 if j < frontal else frontal  # rows out with their zeros left of the diagonal
         procs.append([Loop("header", 2, 1, 1)]
-                     + ([Loop("row", cols - j, 1, 2)] if 0 <= j < k else []))
+                     + ([Loop("row", cols - first, 1, 2)] if 0 <= j < k else []))
         out.append(Loop(f"{name}_reflection{j + 1}", 1, 1, _region_cycles(procs)))
     out.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
     return out

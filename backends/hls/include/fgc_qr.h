@@ -24,11 +24,11 @@
 //
 // Out (k = min(rows, w + 1) reflections, columns 0 ... k - 1):
 // - cond: the conditional (R | S | d), rows 0 ... f - 1 of the triangular factor, row-major with
-//   w + 1 columns: cond[i * (w + 1) + c], c >= i; left of the diagonal nothing is written
-//   (back-substitution never reads it).
+//   w + 1 columns: cond[i * (w + 1) + c]; zero left of the diagonal.
 // - update: the new factor for the parent, nf = max(0, min(rows, w) - f) rows (fgc's
 //   STEP_NF_ROWS) of the separator columns and the right-hand side, s + 1 columns:
-//   update[r * (s + 1) + c] = R[f + r][f + c], c >= r; left of its diagonal nothing is written.
+//   update[r * (s + 1) + c] = R[f + r][f + c]; zero left of its diagonal (the kernel's parent
+//   assembly copies whole rows).
 // - *singular: true if k < f or a frontal pivot |R_ii| (i < f) is not above
 //   CFG::SINGULAR_EPS * scale, scale = the largest |R_ic| over rows i < k, columns i ... w (the
 //   kernel's rule); also true, with nothing computed, if rows > MAX_ROWS, w + 1 > MAX_COLS or
@@ -63,8 +63,9 @@
 //                     rows - 1) to the Evaluate (colq[u]);
 //   qr_evaluate       builds the Householder vector of column j + 1 from that stream while the
 //                     other columns are still being updated, and writes it to vbuf;
-//   qr_collect        writes row j of R (R_jj, then the units' entries in column order) into cond
-//                     or update and keeps the running scale (an argument read before written).
+//   qr_collect        writes row j of R (zeros, R_jj, then the units' entries in column order)
+//                     into cond or update and keeps the running scale (an argument read before
+//                     written).
 //
 // Each stream has one writer and one reader, no process returns a value, no channel goes back;
 // cond, update and the scale have one writer (the collector). Region -1 only streams column 0 to
@@ -374,12 +375,17 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<qr_word<typena
     FGC_CYCLES("qr_collect", 0, "header", 2, 1, 1);
     if (j < 0 || j >= k) return;
     T big = *scale;
-    // trip w + 1 - j, II 1, depth 2 (read, compare)
-    for (int c = j; c < cols; ++c) {
+    // from the row's first column out (0 in cond, f in update: zeros left of the diagonal, as
+    // the parent's assembly copies whole rows) to the right-hand side:
+    // trip w + 1 - first, II 1, depth 2 (read, compare)
+    const int first = j < f ? 0 : f;
+    for (int c = first; c < cols; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
 #pragma HLS PIPELINE II=1
-        T x = diag;
-        if (c > j) {
+        T x = T(0);
+        if (c == j) {
+            x = diag;
+        } else if (c > j) {
             for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
                 if (u == c % CFG::N_UNITS) x = rowq[u].read();
@@ -394,7 +400,7 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<qr_word<typena
         big = mag > big ? mag : big;
     }
     *scale = big;
-    FGC_CYCLES("qr_collect", 0, "row", cols - j, 1, 2);
+    FGC_CYCLES("qr_collect", 0, "row", cols - first, 1, 2);
 }
 
 // One reflection: the DATAFLOW region (see the top of the file).
