@@ -246,7 +246,11 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
         n = active[j] if j >= 0 else 0
         procs = [[Loop("broadcast", n + 2, 1, 2)]]
         for u in range(units):
-            loops = [Loop("receive", n + 2, 1, 1)]
+            # the unit's first column right of j takes its dot product while the vector arrives
+            c0 = j + 1 + (u - (j + 1)) % units
+            fused = n > 1 and c0 < cols
+            loops = [Loop("header", 2, 1, 1),
+                     Loop("vector", n, *(dot(n) if fused else (1, 1)))]
             if n > 0 and j >= 0 and j % units == u:
                 loops.append(Loop("pivot_column", n, 1, 1))
             for lc in range(local):
@@ -256,9 +260,9 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 if n == 1:  # the pivot row alone: negated
                     loops.append(Loop("negate", 1, 1, 1))
                 elif n > 1:
-                    ii, depth = dot(n)
-                    loops += [Loop("dot", n, ii, depth), Loop("scale", 1, 1, lm),
-                              Loop("axpy", n, 1, lm + la)]
+                    if c != c0:
+                        loops.append(Loop("dot", n, *dot(n)))
+                    loops += [Loop("scale", 1, 1, lm), Loop("axpy", n, 1, lm + la)]
                 if j >= 0:
                     loops.append(Loop("row_out", 1, 1, 1))
                 if c == j + 1 and c < k:

@@ -182,17 +182,37 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     int at[CFG::MAX_ROWS];
     const qr_word<T> head = vin.read();
     const qr_word<T> pivot = vin.read();
+    FGC_CYCLES("qr_update", U, "header", 2, 1, 1);
     const int n = head.idx;
     const T tau = head.val;
-    // trip n (+ the 2 header words), II 1, depth 1
+    // this unit's first column right of j: its dot product runs while the vector arrives
+    const int c0 = j + 1 + ((U - (j + 1)) % CFG::N_UNITS + CFG::N_UNITS) % CFG::N_UNITS;
+    const bool fused = n > 1 && c0 < cols;
+    const int l0 = fused ? c0 / CFG::N_UNITS : 0;
+    T part0[P];
+#pragma HLS ARRAY_PARTITION variable=part0 complete
+    for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+        part0[t] = T(0);
+    }
+    // the vector, and v.x of column c0 with it: trip n, II ceil(La / min(n, P)), depth
+    // Lm + La (1 + ceil(log2 min(n, P))) (the dot's; II 1, depth 1 if there is no dot)
     for (int a = 0; a < n; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part0 inter false
         const qr_word<T> x = vin.read();
         v[a] = x.val;
         at[a] = x.idx;
+        if (fused) part0[a % P] += x.val * bank[x.idx][l0];
     }
-    FGC_CYCLES("qr_update", U, "receive", n + 2, 1, 1);
+    if (fused) {
+        FGC_CYCLES("qr_update", U, "vector_dot", n, dot_ii(n, P, CFG::ADD_LAT),
+                   dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
+    } else {
+        FGC_CYCLES("qr_update", U, "vector", n, 1, 1);
+    }
+    const T dot0 = fold_partials<T, P>(part0);
     if (n > 0 && j >= 0 && j % CFG::N_UNITS == U) {  // the pivot column: R_jj, zeros below
         const int l = j / CFG::N_UNITS;
         bank[j][l] = pivot.val;  // at[0] == j
@@ -214,28 +234,32 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
             bank[j][l] = -bank[j][l];
             FGC_CYCLES("qr_update", U, "negate", 1, 1, 1);
         } else if (n > 1) {
-            T part[P];
+            T dot = dot0;
+            if (c != c0) {
+                T part[P];
 #pragma HLS ARRAY_PARTITION variable=part complete
-            for (int t = 0; t < P; ++t) {
+                for (int t = 0; t < P; ++t) {
 #pragma HLS UNROLL
-                part[t] = T(0);
-            }
-            // dot v.x: trip n, II ceil(La / min(n, P)), depth Lm + La (1 + ceil(log2 min(n, P)))
-            for (int a = 0; a < n; ++a) {
+                    part[t] = T(0);
+                }
+                // dot v.x: trip n, II ceil(La / min(n, P)), depth the dot loop's (see the top)
+                for (int a = 0; a < n; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter false
-                part[a % P] += v[a] * bank[at[a]][l];
+                    part[a % P] += v[a] * bank[at[a]][l];
+                }
+                dot = fold_partials<T, P>(part);
+                FGC_CYCLES("qr_update", U, "dot", n, dot_ii(n, P, CFG::ADD_LAT),
+                           dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
             }
-            const T scaled = tau * fold_partials<T, P>(part);  // depth Lm
+            const T scaled = tau * dot;  // depth Lm
             // x -= (tau v.x) v: trip n, II 1, depth Lm + La
             for (int a = 0; a < n; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
                 bank[at[a]][l] -= scaled * v[a];
             }
-            FGC_CYCLES("qr_update", U, "dot", n, dot_ii(n, P, CFG::ADD_LAT),
-                       dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
             FGC_CYCLES("qr_update", U, "scale", 1, 1, CFG::MUL_LAT);
             FGC_CYCLES("qr_update", U, "axpy", n, 1, CFG::MUL_LAT + CFG::ADD_LAT);
         }
