@@ -150,7 +150,8 @@ void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
         return;
     }
     const int before = words - cpe_words(p, w);  // rows p0 ... p - 1
-    // rows of U from the CPEs before: trip before, II 1
+    // rows of U from the CPEs before: trip before, II 1, depth 1 (this and the next two loops
+    // are priced together as the CPE's one stream, see the count at the end)
     for (int t = 0; t < before; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
@@ -163,7 +164,7 @@ void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
     const T inv = T(1) / std::sqrt(d);
     u[0] = d * inv;
     out.write(u[0]);
-    // the rest of row p of U: trip w - p, II 1
+    // the rest of row p of U: trip w - p, II 1, depth Lm (after the Evaluate's Ls + Ld)
     for (int c = p + 1; c <= w; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
 #pragma HLS PIPELINE II=1
@@ -171,7 +172,7 @@ void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
         u[c - p] = x;
         out.write(x);
     }
-    // Update the later rows entry by entry: trip (w-p-1)(w-p)/2 + w-p-1, II 1 (Lm + La deep)
+    // Update the later rows entry by entry: trip (w-p-1)(w-p)/2 + w-p-1, II 1, depth Lm + La
     const int after = cpe_words(p + 1, w);
     int i = p + 1, c = p + 1;
     for (int t = 0; t < after; ++t) {
