@@ -262,10 +262,14 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 elif n > 1:
                     if c != c0:
                         loops.append(Loop("dot", n, *dot(n)))
-                    loops += [Loop("scale", 1, 1, lm), Loop("axpy", n, 1, lm + la)]
+                    loops.append(Loop("scale", 1, 1, lm))
+                    if c == j + 1 and c < k:  # updated and streamed to the Evaluate at once
+                        loops.append(Loop("axpy_next_column", rows - j, 1, lm + la))
+                    else:
+                        loops.append(Loop("axpy", n, 1, lm + la))
                 if j >= 0:
                     loops.append(Loop("row_out", 1, 1, 1))
-                if c == j + 1 and c < k:
+                if c == j + 1 and c < k and n <= 1:
                     loops.append(Loop("next_column", rows - c, 1, 1))
             procs.append(loops)
         col = j + 1

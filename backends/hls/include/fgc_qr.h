@@ -254,21 +254,42 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
                            dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
             }
             const T scaled = tau * dot;  // depth Lm
-            // x -= (tau v.x) v: trip n, II 1, depth Lm + La
-            for (int a = 0; a < n; ++a) {
+            FGC_CYCLES("qr_update", U, "scale", 1, 1, CFG::MUL_LAT);
+            if (c == j + 1 && c < k) {
+                // the next pivot column: updated and streamed to the Evaluate in one pass over
+                // rows j ... rows - 1, the active rows (sorted) merged in:
+                // trip rows - j, II 1, depth Lm + La
+                int a = 0;
+                for (int i = j; i < rows; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-                bank[at[a]][l] -= scaled * v[a];
+                    T x = bank[i][l];
+                    if (a < n && at[a] == i) {
+                        x -= scaled * v[a];
+                        bank[i][l] = x;
+                        ++a;
+                    }
+                    if (i > j) colout.write(x);
+                }
+                FGC_CYCLES("qr_update", U, "axpy_next_column", rows - j, 1,
+                           CFG::MUL_LAT + CFG::ADD_LAT);
+            } else {
+                // x -= (tau v.x) v: trip n, II 1, depth Lm + La
+                for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+                    bank[at[a]][l] -= scaled * v[a];
+                }
+                FGC_CYCLES("qr_update", U, "axpy", n, 1, CFG::MUL_LAT + CFG::ADD_LAT);
             }
-            FGC_CYCLES("qr_update", U, "scale", 1, 1, CFG::MUL_LAT);
-            FGC_CYCLES("qr_update", U, "axpy", n, 1, CFG::MUL_LAT + CFG::ADD_LAT);
         }
         if (j >= 0) {  // row j is final now: its entry in column c to the collector
             rowout.write(bank[j][l]);
             FGC_CYCLES("qr_update", U, "row_out", 1, 1, 1);
         }
-        if (c == j + 1 && c < k) {
-            // the next pivot column to the Evaluate: trip rows - c, II 1, depth 1
+        if (c == j + 1 && c < k && n <= 1) {
+            // the next pivot column to the Evaluate (no reflection to merge): trip rows - c,
+            // II 1, depth 1
             for (int i = c; i < rows; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
