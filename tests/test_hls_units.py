@@ -485,3 +485,16 @@ def test_plan_prices_the_cpe_rounds(driver):
             rounds.append(Loop("round", m * (m + 1) // 2 + m, 1, depth))
         scalar = Loop("damping", n, 1, ops.add.latency).cycles + Loop("check", n, 1, 2).cycles
         assert res.cycles == sum(lp.cycles for lp in rounds) + scalar
+
+
+def test_plan_prices_multifrontal_cpe_steps(driver):
+    """plan.cpe_step_loops on steps with separators (the rounds stream the separator rows too,
+    the last round has idle CPEs) and with no frontal columns."""
+    from fgc_backends.hls.plan import cpe_step_loops
+
+    ops = table("float64")
+    rng = np.random.default_rng(12)
+    shapes = [(7, 5, 5), (13, 9, 5), (3, 4, 20), (6, 9, 1), (0, 4, 5)]
+    cases = [("cpe", c, 0, f, s, 0.2, spd_stack(rng, f, s)) for f, s, c in shapes]
+    for (f, s, c), res in zip(shapes, run(driver, cases), strict=True):
+        assert res.cycles == sum(lp.cycles for lp in cpe_step_loops(f, s, c, ops))

@@ -299,6 +299,25 @@ def cpe_round_depth(active: int, cpe: int, ops: OperatorTable) -> int:
     return active * cpe_depth + (cpe - active) + 2 + 2 + 1
 
 
+def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
+                   name: str = "s") -> list[Loop]:
+    """The loops of ``cpe_step`` (backends/hls/include/fgc_cpe.h) on one step's [H | g] of f
+    frontal and s separator columns, as the csim counters count them: mu on the diagonal, one
+    ``Loop`` per round (trip = its words at II 1, depth :func:`cpe_round_depth`), the copy of
+    [H | g] when f = 0, the pivot check. The whole matrix as one step (f = n, s = 0) is what the
+    Cholesky phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
+    w = frontal + separator
+    loops = [Loop(f"{name}_damping", frontal, 1, ops.add.latency)]
+    for r, p0 in enumerate(range(0, frontal, cpe)):
+        m = w - p0
+        loops.append(Loop(f"{name}_round{r}", m * (m + 1) // 2 + m, 1,
+                          cpe_round_depth(min(cpe, frontal - p0), cpe, ops)))
+    if frontal == 0:
+        loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 1))
+    loops.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
+    return loops
+
+
 def _sim_table(ops: OperatorTable):
     from fgc_backends.sim.cost.params import OperatorCost
     from fgc_backends.sim.cost.params import OperatorTable as SimTable
