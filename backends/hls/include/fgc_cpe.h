@@ -72,7 +72,8 @@
 // Each pipelined loop states its trip count, II and depth and reports them to FGC_CYCLES
 // (fgc_cycles.h). A round streams m (m + 1) / 2 + m words, m = w - p0 (plan.py's round words);
 // a CPE counts as one stream of them, depth Ls + Ld + Lm + La (La / Lm / Ld / Ls = CFG::ADD_LAT /
-// MUL_LAT / DIV_LAT / SQRT_LAT).
+// MUL_LAT / DIV_LAT / SQRT_LAT). plan.py's cpe_round_depth / cpe_step_loops price these loops
+// (tests/test_hls_units.py checks that they equal the count).
 #ifndef FGC_CPE_H
 #define FGC_CPE_H
 

@@ -21,6 +21,8 @@
 // row i is work[c % N_UNITS][i][c / N_UNITS] (qr_put<CFG> / qr_get<CFG> write and read it, and
 // qr_scatter<CFG> fills the banks from a dense row-major matrix). Every entry of rows 0 ... rows-1,
 // columns 0 ... w must be written (zeros included); the memory is overwritten by the factor.
+// Declare it with `#pragma HLS ARRAY_PARTITION variable=work complete dim=1`: each bank is then
+// its own memory, passed to one Update process (UG1399, partitioned arrays in dataflow).
 //
 // Out (k = min(rows, w + 1) reflections, columns 0 ... k - 1):
 // - cond: the conditional (R | S | d), rows 0 ... f - 1 of the triangular factor, row-major with
@@ -60,7 +62,8 @@
 //                     in its own bank work[u] (read and written by that process only); each
 //                     column's entry in row j, final now, goes to the collector (rowq[u]); the
 //                     unit holding column j + 1 updates it first and streams it (rows j + 1 ...
-//                     rows - 1) to the Evaluate (colq[u]);
+//                     rows - 1) to the Evaluate (colq[u]) in the same pass; each unit takes its
+//                     first column's dot product while the vector arrives;
 //   qr_evaluate       builds the Householder vector of column j + 1 from that stream while the
 //                     other columns are still being updated, and writes it to vbuf;
 //   qr_collect        writes row j of R (zeros, R_jj, then the units' entries in column order)
@@ -79,6 +82,8 @@
 // (fgc_cycles.h; nothing unless FGC_COUNT_CYCLES is defined). n = active rows of the reflection,
 // m = rows below the pivot, P = CFG::PARTIALS, La / Lm / Ld / Ls = CFG::ADD_LAT / MUL_LAT / DIV_LAT
 // / SQRT_LAT, dot II = ceil(La / min(n, P)), dot depth = Lm + La (1 + ceil(log2 min(n, P))).
+// plan.py's qr_unit_loops prices these loops from the step's structure (tests/test_hls_units.py
+// checks that it equals the count).
 #ifndef FGC_QR_H
 #define FGC_QR_H
 
