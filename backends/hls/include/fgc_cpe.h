@@ -270,6 +270,7 @@ void cpe_round(int p0, int w, int f, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS
     cpe_feed<CFG>(H, p0, w, link[0]);
     cpe_cascade<CFG, 0>::run(p0, w, f, link);
     cpe_drain<CFG>(link[CFG::N_CPE], p0, w, f, H, cond, update, scale, bad);
+    FGC_DRAINED(link, CFG::N_CPE + 1);  // csim only (fgc_cycles.h)
 }
 
 // ---- the step ---------------------------------------------------------------------------------

@@ -10,7 +10,8 @@
 // With FGC_COUNT_CYCLES the records are kept in the order they happen (fgc_cycles::log()); a
 // region's processes run one after another in C simulation, so a record belongs to the last region
 // entered, or to no region (region == -1) for the sequential code between regions, which must call
-// FGC_SEQUENTIAL() after a region returns. fgc_cycles::total() applies the plan's arithmetic:
+// FGC_SEQUENTIAL() after a region returns; FGC_DRAINED(streams, n) at a region's end checks that
+// its n local streams were read empty. fgc_cycles::total() applies the plan's arithmetic:
 // sequential records add up; a dataflow region takes its slowest process (the sum of that
 // process's loops) plus the fill (the depth of the first loop that runs) of each other process,
 // as plan_cost does.
@@ -20,6 +21,7 @@
 #ifdef FGC_COUNT_CYCLES
 
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <utility>
@@ -119,18 +121,33 @@ inline void dump(std::FILE* out) {
                      x.loop.c_str(), x.trip, x.ii, x.depth, x.cycles());
 }
 
+// A region's streams must be empty when it returns: a word left over (or missing, which the
+// csim stream reports when read) is a producer/consumer count mismatch, a hang in hardware.
+template <class S>
+inline void drained(const S* streams, int n, const char* what) {
+    for (int i = 0; i < n; ++i) {
+        if (!streams[i].empty()) {
+            std::fprintf(stderr, "fgc: %s[%d] holds %zu words after its region\n", what, i,
+                         streams[i].size());
+            std::abort();
+        }
+    }
+}
+
 }  // namespace fgc_cycles
 
 #define FGC_CYCLES(process, instance, loop, trip, ii, depth) \
     ::fgc_cycles::add(process, instance, loop, trip, ii, depth)
 #define FGC_REGION(name) ::fgc_cycles::region(name)
 #define FGC_SEQUENTIAL() ::fgc_cycles::sequential()
+#define FGC_DRAINED(streams, n) ::fgc_cycles::drained(streams, n, #streams)
 
 #else
 
 #define FGC_CYCLES(process, instance, loop, trip, ii, depth) ((void)0)
 #define FGC_REGION(name) ((void)0)
 #define FGC_SEQUENTIAL() ((void)0)
+#define FGC_DRAINED(streams, n) ((void)0)
 
 #endif  // FGC_COUNT_CYCLES
 

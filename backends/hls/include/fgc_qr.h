@@ -475,6 +475,10 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, work, colq, rowq);
     qr_evaluate<CFG>(j, rows, k, colq, vbuf);
     qr_collect<CFG>(j, rows, f, s, k, hq, rowq, cond, update, scale);
+    FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
+    FGC_DRAINED(colq, CFG::N_UNITS);
+    FGC_DRAINED(rowq, CFG::N_UNITS);
+    FGC_DRAINED(&hq, 1);
 }
 
 // ---- the step ---------------------------------------------------------------------------------
