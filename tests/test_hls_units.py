@@ -432,7 +432,9 @@ def test_cycle_counts(driver):
 
     a = rand_stack(rng, 20, 6, 6)
     q1, q4, q8 = run(driver, [("qr", u, 20, 6, 6, 0.0, a) for u in (1, 4, 8)])
-    assert q1.cycles > q4.cycles > q8.cycles > 0
+    # more units take fewer cycles until the Evaluate's chain (column in, vector out) is the
+    # critical path: on this small stack 4 units already reach it
+    assert q1.cycles > q4.cycles > 0 and q1.cycles > q8.cycles
     # the overlap: a region costs less than its processes one after another
     assert q4.cycles < q4.serial
 

@@ -190,16 +190,27 @@ def dot_loop(name: str, length: int, ops: OperatorTable, partials: int | None = 
     return Loop(name, length, math.ceil(la / k), lm + la * (1 + tree), repeat)
 
 
-def _region_cycles(processes: list[list[Loop]]) -> int:
+def _region_cycles(processes: list[list[Loop]],
+                   waits: tuple[tuple[int, int, str], ...] = ()) -> int:
     """A DATAFLOW region as :func:`phase_cycles` prices it: its slowest process plus the fill of
     the others (the depth of their first loop that runs); processes with no running loop are
-    absent (fgc_cycles.h's ``total``)."""
+    absent (fgc_cycles.h's ``total``). ``waits``: (process, on process, loop name suffix): the
+    process starts when the first such loop of the other one has finished, so the region takes
+    no less than that end plus the waiting process's own cycles (fgc_cycles.h's FGC_WAIT)."""
     procs = [(sum(lp.cycles for lp in loops), next((lp.depth for lp in loops if lp.trip > 0), 0))
              for loops in processes if any(lp.trip > 0 for lp in loops)]
     if not procs:
         return 0
     slow = max(range(len(procs)), key=lambda i: procs[i][0])
-    return procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+    total = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+    for p, q, suffix in waits:
+        start = 0
+        for lp in processes[q]:
+            start += lp.cycles
+            if lp.name.endswith(suffix):
+                total = max(total, start + sum(lp2.cycles for lp2 in processes[p]))
+                break
+    return total
 
 
 def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
@@ -209,8 +220,9 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     ``pattern``: the structural rows × (f + s) non-zeros of the stacked matrix (the right-hand
     side, dense, is added here); a structural non-zero is taken as non-zero in value. Returns one
     ``Loop`` (trip 1) per DATAFLOW region ``qr_reflection`` j = -1 ... k - 1 (k = min(rows,
-    w + 1)), whose depth is the region's cycles (slowest process plus the others' fill, from the
-    same loops as the header's FGC_CYCLES counters), then the sequential pivot check.
+    w + 1)), whose depth is the region's cycles (slowest process plus the others' fill, and no
+    less than the Evaluate's end, which waits for its column: the same loops and rule as the
+    header's FGC_CYCLES / FGC_WAIT counters), then the sequential pivot check.
     ``partials`` is the header's CFG::PARTIALS (default: the adder latency, II 1).
     """
     import numpy as np
@@ -273,19 +285,21 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                     loops.append(Loop("next_column", rows - c, 1, 1))
             procs.append(loops)
         col = j + 1
+        waits = ()
         if col < k:
+            # the Evaluate starts when the unit holding the column has streamed it
+            waits = ((len(procs), 1 + col % units, "next_column"),)
             loops = [Loop("receive", rows - col, 1, 2)]
             n2 = active[col]
             if n2 > 0:
                 ii, depth = dot(n2)
-                loops += [Loop("norm", n2, ii, ld + depth), Loop("tail", 1, 1, ls + lm + la + ld),
-                          Loop("send", n2, 1, 1)]
+                loops += [Loop("norm", n2, ii, ld + depth), Loop("tail", 1, 1, ls + lm + la + ld)]
             procs.append(loops)
         # the collector: row j of R out (cond / update) and the running scale
         first = 0 if j < frontal else frontal  # rows out with their zeros left of the diagonal
         procs.append([Loop("header", 2, 1, 1)]
                      + ([Loop("row", cols - first, 1, 2)] if 0 <= j < k else []))
-        out.append(Loop(f"{name}_reflection{j + 1}", 1, 1, _region_cycles(procs)))
+        out.append(Loop(f"{name}_reflection{j + 1}", 1, 1, _region_cycles(procs, waits)))
     out.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
     return out
 

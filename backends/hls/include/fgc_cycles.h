@@ -14,7 +14,9 @@
 // its n local streams were read empty. fgc_cycles::total() applies the plan's arithmetic:
 // sequential records add up; a dataflow region takes its slowest process (the sum of that
 // process's loops) plus the fill (the depth of the first loop that runs) of each other process,
-// as plan_cost does.
+// as plan_cost does; and no less than the end of a process that had to wait for another's loop
+// (FGC_WAIT: the QR Evaluate starts when the Update unit has streamed it the next column), at
+// the end of that loop plus the waiting process's own cycles.
 #ifndef FGC_CYCLES_H
 #define FGC_CYCLES_H
 
@@ -36,6 +38,10 @@ struct Record {
     int instance;  // unit index (Update unit, CPE), 0 for single processes
     std::string loop;
     long trip, ii, depth;
+    // a wait (trip 0): this process starts when the first loop of (on_process, on_instance)
+    // whose name ends with on_loop has finished
+    std::string on_process, on_loop;
+    int on_instance;
     long cycles() const { return trip > 0 ? (trip - 1) * ii + depth : 0; }
 };
 
@@ -69,8 +75,20 @@ inline void sequential() {
 inline void add(const char* process, int instance, const char* loop, long trip, long ii,
                 long depth) {
     State& s = state();
-    s.records.push_back(
-        Record{s.current, s.current_name, process, instance, loop, trip, ii, depth});
+    s.records.push_back(Record{s.current, s.current_name, process, instance, loop, trip, ii,
+                               depth, "", "", 0});
+}
+
+inline void wait(const char* process, int instance, const char* on_process, int on_instance,
+                 const char* on_loop) {
+    State& s = state();
+    s.records.push_back(Record{s.current, s.current_name, process, instance, "wait", 0, 1, 0,
+                               on_process, on_loop, on_instance});
+}
+
+inline bool ends_with(const std::string& text, const std::string& tail) {
+    return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(),
+                                                      tail) == 0;
 }
 
 // The plan's arithmetic over the log: see the comment at the top.
@@ -85,8 +103,9 @@ inline long total() {
             continue;
         }
         // one region entry: per process (name, instance) its cycles and its first loop's depth
-        const long id = r[i].region;
         // (fill: the depth of the process's first loop that runs)
+        const long id = r[i].region;
+        const std::size_t begin = i;
         std::map<std::pair<std::string, int>, std::pair<long, long>> procs;
         std::vector<std::pair<std::string, int>> order;
         for (; i < r.size() && r[i].region == id; ++i) {
@@ -108,7 +127,22 @@ inline long total() {
         }
         for (std::size_t p = 0; p < order.size(); ++p)
             if (p != slowest && procs[order[p]].second > 0) fills += procs[order[p]].second;
-        sum += slow + fills;
+        long region_cycles = slow + fills;
+        // a waiting process ends no earlier than the loop it waits for plus all of its own
+        for (std::size_t w = begin; w < i; ++w) {
+            if (r[w].on_process.empty()) continue;
+            long start = 0;
+            bool found = false;
+            for (std::size_t q = begin; q < i && !found; ++q) {
+                if (r[q].process != r[w].on_process || r[q].instance != r[w].on_instance) continue;
+                start += r[q].cycles();
+                found = ends_with(r[q].loop, r[w].on_loop);
+            }
+            if (!found) continue;
+            const long end = start + procs[std::make_pair(r[w].process, r[w].instance)].first;
+            region_cycles = end > region_cycles ? end : region_cycles;
+        }
+        sum += region_cycles;
     }
     return sum;
 }
@@ -140,6 +174,8 @@ inline void drained(const S* streams, int n, const char* what) {
     ::fgc_cycles::add(process, instance, loop, trip, ii, depth)
 #define FGC_REGION(name) ::fgc_cycles::region(name)
 #define FGC_SEQUENTIAL() ::fgc_cycles::sequential()
+#define FGC_WAIT(process, instance, on_process, on_instance, on_loop) \
+    ::fgc_cycles::wait(process, instance, on_process, on_instance, on_loop)
 #define FGC_DRAINED(streams, n) ::fgc_cycles::drained(streams, n, #streams)
 
 #else
@@ -147,6 +183,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_CYCLES(process, instance, loop, trip, ii, depth) ((void)0)
 #define FGC_REGION(name) ((void)0)
 #define FGC_SEQUENTIAL() ((void)0)
+#define FGC_WAIT(process, instance, on_process, on_instance, on_loop) ((void)0)
 #define FGC_DRAINED(streams, n) ((void)0)
 
 #endif  // FGC_COUNT_CYCLES

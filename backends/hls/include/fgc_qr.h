@@ -338,6 +338,8 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     const int col = j + 1;
     if (col >= k) return;
     const int owner = col % CFG::N_UNITS;
+    // (it starts when the owner has streamed the column: the counters' critical path)
+    FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "next_column");
     T x[CFG::MAX_ROWS];
     int at[CFG::MAX_ROWS];
     int n = 0;
@@ -374,13 +376,16 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS UNROLL
         part[t] = T(0);
     }
-    // v = x / big, v.v: trip n, II ceil(La / min(n, P)), depth Ld + dot depth
+    // v = x / big, v.v, and v into vbuf as it comes (v_0 is corrected below):
+    // trip n, II ceil(La / min(n, P)), depth Ld + dot depth
     for (int a = 0; a < n; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter false
         const T va = x[a] / big;
-        x[a] = va;
+        if (a == 0) x[0] = va;
+        vbuf[2 + a].val = va;
+        vbuf[2 + a].idx = at[a];
         part[a % P] += va * va;
     }
     FGC_CYCLES("qr_evaluate", 0, "norm", n, dot_ii(n, P, CFG::ADD_LAT),
@@ -389,7 +394,6 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     const T norm = std::sqrt(norm2);  // of the scaled column: >= 1
     const T pivot = x[0];             // at[0] is the pivot row col
     const T alpha = pivot >= T(0) ? T(-norm) : norm;
-    x[0] = pivot - alpha;
     const T tau = T(1) / (norm2 - alpha * pivot);  // 2 / |v|^2, without a second sum
     // sqrt, alpha * pivot, subtract, divide: depth Ls + Lm + La + Ld
     FGC_CYCLES("qr_evaluate", 0, "tail", 1, 1,
@@ -398,14 +402,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     vbuf[0].idx = n;
     vbuf[1].val = alpha * big;
     vbuf[1].idx = col;
-    // trip n, II 1, depth 1
-    for (int a = 0; a < n; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
-#pragma HLS PIPELINE II=1
-        vbuf[2 + a].val = x[a];
-        vbuf[2 + a].idx = at[a];
-    }
-    FGC_CYCLES("qr_evaluate", 0, "send", n, 1, 1);
+    vbuf[2].val = pivot - alpha;
 }
 
 // The collector: row j of R, final after reflection j (R_jj from the header, the rest from the
