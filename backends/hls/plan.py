@@ -195,8 +195,9 @@ def _region_cycles(processes: list[list[Loop]],
     """A DATAFLOW region as :func:`phase_cycles` prices it: its slowest process plus the fill of
     the others (the depth of their first loop that runs); processes with no running loop are
     absent (fgc_cycles.h's ``total``). ``waits``: (process, on process, loop name suffix): the
-    process starts when the first such loop of the other one has finished, so the region takes
-    no less than that end plus the waiting process's own cycles (fgc_cycles.h's FGC_WAIT)."""
+    process's first loop reads the stream of the other's first such loop as it comes, so it ends
+    its depth after that loop and the region takes no less than that plus the process's other
+    loops (fgc_cycles.h's FGC_WAIT)."""
     procs = [(sum(lp.cycles for lp in loops), next((lp.depth for lp in loops if lp.trip > 0), 0))
              for loops in processes if any(lp.trip > 0 for lp in loops)]
     if not procs:
@@ -208,7 +209,11 @@ def _region_cycles(processes: list[list[Loop]],
         for lp in processes[q]:
             start += lp.cycles
             if lp.name.endswith(suffix):
-                total = max(total, start + sum(lp2.cycles for lp2 in processes[p]))
+                # the waiting process's first loop reads that loop's stream as it comes
+                running = [lp2 for lp2 in processes[p] if lp2.trip > 0]
+                if running:
+                    end = start + running[0].depth + sum(lp2.cycles for lp2 in running[1:])
+                    total = max(total, end)
                 break
     return total
 
@@ -221,8 +226,8 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     side, dense, is added here); a structural non-zero is taken as non-zero in value. Returns one
     ``Loop`` (trip 1) per DATAFLOW region ``qr_reflection`` j = -1 ... k - 1 (k = min(rows,
     w + 1)), whose depth is the region's cycles (slowest process plus the others' fill, and no
-    less than the Evaluate's end, which waits for its column: the same loops and rule as the
-    header's FGC_CYCLES / FGC_WAIT counters), then the sequential pivot check.
+    less than the Evaluate's end, which reads its column as the Update unit streams it: the same
+    loops and rule as the header's FGC_CYCLES / FGC_WAIT counters), then the pivot check.
     ``partials`` is the header's CFG::PARTIALS (default: the adder latency, II 1).
     """
     import numpy as np

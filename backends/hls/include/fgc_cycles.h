@@ -14,9 +14,9 @@
 // its n local streams were read empty. fgc_cycles::total() applies the plan's arithmetic:
 // sequential records add up; a dataflow region takes its slowest process (the sum of that
 // process's loops) plus the fill (the depth of the first loop that runs) of each other process,
-// as plan_cost does; and no less than the end of a process that had to wait for another's loop
-// (FGC_WAIT: the QR Evaluate starts when the Update unit has streamed it the next column), at
-// the end of that loop plus the waiting process's own cycles.
+// as plan_cost does; and no less than the end of a process that waits for another's loop
+// (FGC_WAIT: the QR Evaluate reads the column the Update unit streams it): its first loop ends
+// its depth after that loop, its other loops follow.
 #ifndef FGC_CYCLES_H
 #define FGC_CYCLES_H
 
@@ -38,8 +38,8 @@ struct Record {
     int instance;  // unit index (Update unit, CPE), 0 for single processes
     std::string loop;
     long trip, ii, depth;
-    // a wait (trip 0): this process starts when the first loop of (on_process, on_instance)
-    // whose name ends with on_loop has finished
+    // a wait (trip 0): this process's first loop reads the stream of the first loop of
+    // (on_process, on_instance) whose name ends with on_loop, so it ends its depth after it
     std::string on_process, on_loop;
     int on_instance;
     long cycles() const { return trip > 0 ? (trip - 1) * ii + depth : 0; }
@@ -139,7 +139,16 @@ inline long total() {
                 found = ends_with(r[q].loop, r[w].on_loop);
             }
             if (!found) continue;
-            const long end = start + procs[std::make_pair(r[w].process, r[w].instance)].first;
+            // its first loop reads that loop's stream as it comes: it ends its own depth after
+            // it; the rest of the waiting process follows
+            long end = start;
+            bool first = true;
+            for (std::size_t q = begin; q < i; ++q) {
+                if (r[q].process != r[w].process || r[q].instance != r[w].instance) continue;
+                if (r[q].trip <= 0) continue;
+                end += first ? r[q].depth : r[q].cycles();
+                first = false;
+            }
             region_cycles = end > region_cycles ? end : region_cycles;
         }
         sum += region_cycles;

@@ -338,7 +338,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     const int col = j + 1;
     if (col >= k) return;
     const int owner = col % CFG::N_UNITS;
-    // (it starts when the owner has streamed the column: the counters' critical path)
+    // (it reads the column as the owner streams it: the counters' critical path)
     FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "next_column");
     T x[CFG::MAX_ROWS];
     int at[CFG::MAX_ROWS];
