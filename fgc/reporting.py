@@ -241,23 +241,30 @@ def _verify_summary(r: dict) -> list[str]:
     return lines
 
 
+def plan_summary(program, iterations: int) -> dict:
+    """The accelerator plan's hardware figures for ``iterations`` iterations of ``program``
+    (``fgc_backends.hls.plan.plan_summary``: plan_cost of build_plan with the Program's n_u,
+    #CPE, clock and precision). Looked up by name, as the backends are, so fgc imports none."""
+    return import_module("fgc_backends.hls.plan").plan_summary(program, iterations)
+
+
 def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = None) -> dict:
-    """Run the simulator, then the cost model for the iterations it took."""
-    cost_model = import_module(f"{sim.__name__}.cost")  # the backend's own cost model
+    """Run the simulator, then cost the iterations it took with the accelerator plan."""
     result = sim.run(program, data)
     require_finite_start(graph, result)
-    cost = cost_model.estimate(program, iterations=max(result.iterations, 1))
+    cost = plan_summary(program, max(result.iterations, 1))
     storage = program.storage
     report = {
         "status": result.status, "reason": result.reason, "iterations": result.iterations,
         "initial_error": result.initial_error, "final_error": result.final_error,
         "precision": program.solver.precision,
-        "linear_precision": program.solver.les_precision, "cycles": cost.cycles,
-        "clock_mhz": cost.clock_mhz, "latency_ms": cost.latency_ms,
-        "cycles_by_unit": dataclasses.asdict(cost.solve),
-        "resources": dataclasses.asdict(cost.resources), "energy_mj": cost.energy_mj,
-        "power_w": cost.power_w,
+        "linear_precision": program.solver.les_precision, "cycles": cost["cycles"],
+        "clock_mhz": cost["clock_mhz"], "latency_ms": cost["latency_ms"],
+        "cycles_by_unit": cost["cycles_by_unit"], "cost_source": cost["source"],
+        "resources": cost["resources"], "energy_mj": cost["energy_mj"],
+        "power_w": cost["power_w"],
         "storage": {"dense_words": storage.dense_words, "stored_words": storage.steps[-1].words,
+                    "plan_memory_words": cost["memory_words"],
                     "steps": [dataclasses.asdict(s) for s in storage.steps]},
         "simulator_solve_seconds": result.solve_seconds,
     }
@@ -300,11 +307,13 @@ def _simulate_summary(r: dict, n_vars: int) -> list[str]:
         f"{r['iterations']} iterations, error {_number(r['initial_error'], '.6g')} → "
         f"{_number(r['final_error'], '.10g')}",
         f"  accelerator (model estimate): {r['cycles']:,} cycles = {r['latency_ms']:.3f} ms at "
-        f"{r['clock_mhz']:g} MHz, energy {r['energy_mj']:.3f} mJ ({r['power_w']:.2f} W)",
+        f"{r['clock_mhz']:g} MHz (accelerator plan), energy {r['energy_mj']:.3f} mJ "
+        f"({r['power_w']:.2f} W: the sim model's power fit on the plan's resources)",
         f"  resources (model estimate): {res['dsp']} DSP, {res['bram']:g} BRAM36, "
         f"{res['lut']:,} LUT, {res['ff']:,} FF",
         f"  storage: {r['storage']['stored_words']:,} words "
-        f"(dense {r['storage']['dense_words']:,})",
+        f"(dense {r['storage']['dense_words']:,}); plan memories "
+        f"{r['storage']['plan_memory_words']:,} words (model estimate)",
     ]
 
 

@@ -145,7 +145,7 @@ def test_modelled_figures_are_labelled(capsys):
     assert main(["report", BEACONS, "--iterations", "3"]) == 0
     out = capsys.readouterr().out
     assert "fits xc7z045 (model estimate)" in out
-    assert "Modelled cycles by unit (whole solve; model estimate)" in out
+    assert "Modelled cycles by phase (whole solve; model estimate, accelerator plan)" in out
     assert main(["report", BEACONS, "--iterations", "3", "-q"]) == 0
     line = capsys.readouterr().out
     assert line.count("\n") == 1 and line.rstrip().endswith("fits xc7z045 (model estimate)")

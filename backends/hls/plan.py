@@ -44,6 +44,10 @@ DEFAULT_ALLOCATION = (("add", 16), ("mul", 24), ("div", 4), ("sqrt", 2), ("trig"
                       ("special", 2))
 
 
+JACOBIAN_STORAGE = ("whitened", "raw")
+HESSIAN_STORAGE = ("dense", "blocked")
+
+
 class PlanError(FgcError):
     """The plan cannot be built for these options."""
 
@@ -55,6 +59,14 @@ class PlanOptions:
     unit_sets: int | None = None  # QR unit sets: None = 2 for two-ended chains, else 1
     allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
     hgc_lanes: int = 16  # multiply-accumulate lanes of the Hessian/gradient unit
+    # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
+    # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and
+    # ±1 entries are not stored), the residual and W's parameters, whitened while stacking
+    # (a "whiten_stack" phase of multiply-accumulates before the linear solver)
+    jacobian_storage: str = "whitened"
+    # Cholesky: "dense": the lower triangle of [H | g]; "blocked": only H's envelope in chain
+    # (variable) order - Cholesky fills no entry outside it - and the cascade streams only that
+    hessian_storage: str = "dense"
 
     @classmethod
     def of(cls, program: Program, **changes) -> PlanOptions:
@@ -169,6 +181,7 @@ class Cost:
     fits: bool
     over: tuple[str, ...]  # resources over the part's capacity
     dsp_by_unit: tuple[tuple[str, int], ...] = ()  # (unit, DSP of all its instances)
+    words: int = 0  # words the plan's memories hold (channels not counted)
 
     @property
     def latency_ms(self) -> float:
@@ -361,6 +374,11 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     for name in ("units", "cpe", "hgc_lanes"):
         if int(getattr(opts, name)) < 1:
             raise PlanError(f"plan option {name} must be ≥ 1, got {getattr(opts, name)}")
+    for name, allowed in (("jacobian_storage", JACOBIAN_STORAGE),
+                          ("hessian_storage", HESSIAN_STORAGE)):
+        if getattr(opts, name) not in allowed:
+            raise PlanError(f"plan option {name} must be one of {', '.join(allowed)}, "
+                            f"got {getattr(opts, name)!r}")
     alloc = dict(opts.allocation)
     for kind, n in alloc.items():
         if n < 1:
@@ -372,6 +390,7 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
 
     # factor datapath: one per block type, shared by the Jacobian and the cost mode
     jac, cost = [], []
+    whiten_macs = 0
     for i, b in enumerate(program.blocks):
         name = f"factor_{i}"
         used = {k: max(b.ops_after.get(k, 0), b.ops_cost.get(k, 0)) for k in alloc}
@@ -386,9 +405,21 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
             depth = critical_path(text, sim_ops)
             out.append(Process(f"{name}_{mode}", name,
                                (Loop(f"{name}_{mode}_instances", instances, ii, depth),)))
-        words = b.residual_dim * (1 + sum(b.variable_dims)) * instances
+        if opts.jacobian_storage == "raw":
+            words = raw_jacobian_words(b) * instances
+            whiten_macs += whitening_macs(b) * instances
+        else:
+            words = b.residual_dim * (1 + sum(b.variable_dims)) * instances
         memories.append(Memory(f"ab_{i}", words, ops.word_bits, 1))
     phases.append(Phase("factor_jacobian", True, tuple(jac)))
+    if opts.jacobian_storage == "raw":
+        # whitening while stacking: W·[J | -r] of each instance, one multiply-accumulate a
+        # cycle in each of n_u lanes, before the solver reads the rows
+        units.append(Unit("whiten", "W·[J | -r] while stacking the raw Jacobians", opts.units,
+                          (("add", 1), ("mul", 1))))
+        phases.append(Phase("whiten_stack", False, (Process("whiten", "whiten", (
+            Loop("macs", math.ceil(whiten_macs / opts.units), 1,
+                 ops.mul.latency + ops.add.latency),)),), linear=True))
 
     if program.solver.linear == "qr":
         _qr(program, opts, les, units, memories, channels, phases)
@@ -490,7 +521,7 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
         macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
     units.append(Unit("hgc", "Hessian/gradient accumulation", opts.hgc_lanes,
                       (("add", 1), ("mul", 1))))
-    phases.insert(1, Phase("hgc", False, (Process("hgc", "hgc", (
+    phases.append(Phase("hgc", False, (Process("hgc", "hgc", (
         Loop("macs", math.ceil(macs / opts.hgc_lanes), 1,
              ops.mul.latency + ops.add.latency),)),), linear=True))
     units.append(Unit("cpe", "Cholesky process element: Evaluate + Update", c,
@@ -500,11 +531,13 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
                                 "cholesky_in" if i == 0 else f"cpe{i - 1}", f"cpe{i}"))
     # a round streams the trailing lower triangle of [H | g] through the cascade, one word a
     # cycle; CPE j computes column j of the round (sqrt + divide) and updates the rest
-    # (fgc_cpe.h's cpe_round: feed -> #CPE CPEs -> drain, see cpe_round_depth)
+    # (fgc_cpe.h's cpe_round: feed -> #CPE CPEs -> drain, see cpe_round_depth; the header
+    # streams the dense triangle, "blocked" storage prices the envelope's words only)
+    lowest = hessian_envelope(program) if opts.hessian_storage == "blocked" else [n - 1] * n
     rounds = []
     for r in range(math.ceil(n / c)):
         m = n - r * c
-        words = m * (m + 1) // 2 + m
+        words = sum(lowest[j] - j + 1 for j in range(r * c, n)) + m
         rounds.append(Loop(f"round{r}", words, 1, cpe_round_depth(min(c, m), c, ops)))
     phases.append(Phase("cholesky", True, (Process("cascade", "cpe", tuple(rounds)),),
                         linear=True))
@@ -518,7 +551,58 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
     phases.append(Phase("trisolve", False, (Process("backward", "trisolve", (
         Loop("rows", n, max(1, math.ceil(n / 2)), solve.depth + ops.div.latency),)),),
         linear=True))
-    memories.append(Memory("hessian", n * (n + 1) // 2 + n, ops.word_bits, max(1, c // 4)))
+    memories.append(Memory("hessian", sum(lo - j + 1 for j, lo in enumerate(lowest)) + n,
+                           ops.word_bits, max(1, c // 4)))
+
+
+def raw_jacobian_words(b) -> int:
+    """Words of one instance of block ``b`` stored raw: the residual, the Jacobians' entries
+    that are not structurally 0 or ±1 (``derive``'s structure codes "x") and the members'
+    whitening parameters."""
+    entries = sum(code == "x" for blk in b.structure for row in blk for code in row)
+    return b.residual_dim + entries + sum(m.noise_params for m in b.members)
+
+
+def whitening_macs(b) -> int:
+    """Multiply-accumulates whitening one instance of block ``b`` while stacking: for each
+    member, each column of [J | -r] and each whitened row i, the rows r the member's W mixes
+    into i (r ≥ i for a full upper-triangular W, r = i otherwise) whose raw entry is not a
+    structural zero."""
+    cols = [[blk[r][j] for r in range(b.residual_dim)] for blk in b.structure
+            for j in range(len(blk[0]) if blk else 0)]
+    cols.append(["x"] * b.residual_dim)  # the residual column
+    macs = 0
+    for m in b.members:
+        r0, r1 = m.rows
+        for col in cols:
+            nz = [col[r] != "0" for r in range(r0, r1)]
+            if m.noise_kind == "full":
+                macs += sum(sum(nz[i:]) for i in range(len(nz)))
+            else:
+                macs += sum(nz)
+    return macs
+
+
+def hessian_envelope(program) -> list[int]:
+    """For each column j of H (variables in the Program's order), its lowest structurally
+    non-zero row: H's envelope, which the Cholesky factor fills and does not leave."""
+    start, k = {}, 0
+    for v in program.variables:
+        start[v.key] = k
+        k += v.dim
+    n = k
+    dims = {v.key: v.dim for v in program.variables}
+    first = list(range(n))  # first non-zero column of each row
+    for f in program.factors:
+        lo = min(start[key] for key in f.keys)
+        for key in f.keys:
+            for i in range(start[key], start[key] + dims[key]):
+                first[i] = min(first[i], lo)
+    lowest = list(range(n))
+    for i, fi in enumerate(first):
+        for j in range(fi, i + 1):
+            lowest[j] = max(lowest[j], i)
+    return lowest
 
 
 # --------------------------------------------------------------------------------------------
@@ -558,4 +642,49 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
                                               ("LUT", lut, PART_LUT), ("FF", ff, PART_FF))
                  if used > cap)
     return Cost(cycles, per, linear, dsp, lut, ff, bram36, plan.clock_mhz, not over, over,
-                tuple(by_unit))
+                tuple(by_unit), sum(m.words for m in plan.memories))
+
+
+def plan_power_w(cost: Cost) -> float:
+    """Power of a plan's design, W: not modelled by the plan itself. This applies the sim cost
+    model's approach (``backends/sim/cost/resources.power_w``: static power plus per-DSP, LUT,
+    FF and BRAM36 dynamic power, linear in the clock; coefficients fitted to paper B's three
+    Vivado estimates) to the plan's resources."""
+    from fgc_backends.sim.cost.params import CostParams
+
+    params = CostParams()
+    dynamic_mw = (cost.dsp * params.power_dsp_mw + cost.lut * params.power_lut_mw
+                  + cost.ff * params.power_ff_mw + cost.bram36 * params.power_bram_mw)
+    return params.power_static_w + dynamic_mw * 1e-3 * cost.clock_mhz / params.power_reference_mhz
+
+
+def phase_groups(cost: Cost) -> tuple[tuple[str, int], ...]:
+    """Per-iteration cycles of the plan's phases with their level number dropped (``qr_level3``
+    and ``qr_level4`` add up under ``qr``), in first-seen order."""
+    groups: dict[str, int] = {}
+    for name, cycles in cost.phase_cycles:
+        key = name.rsplit("_level", 1)[0] if name.rsplit("_level", 1)[-1].isdigit() else name
+        groups[key] = groups.get(key, 0) + cycles
+    return tuple(groups.items())
+
+
+def plan_summary(program: Program, iterations: int, options: PlanOptions | None = None) -> dict:
+    """What ``fgc simulate`` / ``fgc report`` print as hardware figures, all from
+    ``plan_cost(build_plan(program, options))``: ``iterations`` × one iteration's cycles by
+    phase group, latency, resources and their share of the xc7z045, memory words, and power /
+    energy (:func:`plan_power_w`: the sim model's power approach on the plan's resources)."""
+    plan = build_plan(program, options)
+    c = plan_cost(plan)
+    k = max(1, int(iterations))
+    caps = {"dsp": PART_DSP, "bram": PART_BRAM36, "lut": PART_LUT, "ff": PART_FF}
+    res = {"dsp": c.dsp, "bram": c.bram36, "lut": c.lut, "ff": c.ff}
+    power = plan_power_w(c)
+    latency_ms = k * c.latency_ms
+    return {"source": "accelerator plan (fgc_backends.hls.plan: plan_cost of build_plan)",
+            "device": PART, "clock_mhz": c.clock_mhz, "iterations": k,
+            "cycles": k * c.cycles, "iteration_cycles": c.cycles, "latency_ms": latency_ms,
+            "linear_cycles": k * c.linear_cycles,
+            "cycles_by_unit": {name: k * cyc for name, cyc in phase_groups(c)},
+            "resources": res, "utilization": {key: res[key] / caps[key] for key in caps},
+            "fits": c.fits, "memory_words": c.words, "power_w": power,
+            "energy_mj": power * latency_ms}
