@@ -348,6 +348,11 @@ def _cmd_compile(args) -> int:
         if args.backend == "hls":
             project = backend.emit(program, out, _hls_config(args, program))
             files = list(project.files)
+            # the testbench checks its result against the simulator's (exit 4 on a mismatch)
+            from fgc_backends.hls.results import REFERENCE_FILE, reference_run, write_reference
+
+            files.append(write_reference(out / REFERENCE_FILE, program,
+                                         reference_run(program, data)))
         else:
             if getattr(args, "scalar", None) or getattr(args, "part", None):
                 raise UsageError("fgc compile: --scalar and --part apply to --backend hls only")

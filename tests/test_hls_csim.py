@@ -98,8 +98,8 @@ def _run(name: str, case, tmp_path_factory):
     program = compile_graph(graph, solver, name=name)
     project = emit(program, tmp_path_factory.mktemp(name), HlsConfig(scalar=scalar))
     data = problem_data(graph, program)
-    result = run_csim(project, program, data)
     reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)  # the testbench checks it too
     return program, project, data, result, reference
 
 

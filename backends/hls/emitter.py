@@ -22,9 +22,9 @@ from fgc.program import Program
 from fgc_backends.hls.blocks import block_contexts
 from fgc_backends.hls.config import HlsConfig, HlsConfigError, ap_types_include, check_clock
 from fgc_backends.hls.lint import lint_project
-from fgc_backends.hls.names import comment, identifier
+from fgc_backends.hls.names import comment, identifier, key_tokens
 from fgc_backends.hls.printer import HlsCodePrinter
-from fgc_backends.hls.results import REASONS, STATUSES
+from fgc_backends.hls.results import REASONS, REFERENCE_MAGIC, RESULT_MAGIC, STATUSES
 from fgc_backends.hls.retract import retract_kinds
 from fgc_backends.hls.sparsity import TILE
 from fgc_backends.hls.special import SERIES_BELOW, coefficient_functions
@@ -40,6 +40,10 @@ HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
 # Xilinx's ap_types headers trip g++'s flow-based warnings once inlined into our code (-isystem
 # cannot silence those); the warnings are theirs, so only these two are relaxed for ap_fixed.
 FIXED_POINT_FLAGS = ("-Wno-uninitialized", "-Wno-maybe-uninitialized")
+# the testbench's comparison with the reference (see tb.cpp.jinja's header for the reasons)
+TB_TOLERANCES = {"rel": "1e-9", "rot": "1e-3", "vec": "1e-2", "error": "1e-2"}
+# where a variable type stores its rotation: (kind, offset), kind 2 = cos-sin, 3 = 3x3 matrix
+ROTATIONS = {"Rot2": (2, 0), "Pose2": (2, 2), "Rot3": (3, 0), "Pose3": (3, 0)}
 MU_MIN = 1e-30  # LM's μ never falls below this (the simulator's MU_MIN): damping stays on
 
 
@@ -123,6 +127,14 @@ def check_limits(program: Program, config: HlsConfig) -> None:
         ap_types_include()  # a clear error now rather than a missing header in g++
 
 
+def tcl_clock(clock_mhz: float) -> dict:
+    """``run_hls.tcl``'s clock: the period of the cost model's clock (SolverConfig.clock_mhz;
+    :func:`check_clock` has checked HlsConfig.clock_ns against it), so model and synthesis
+    describe one clock."""
+    mhz = float(clock_mhz)
+    return {"clock_mhz": f"{mhz:g}", "clock_ns": f"{1000.0 / mhz:.6g}"}
+
+
 def _epsilon(scalar_cxx: str) -> float:
     """Machine epsilon of a scalar type given as C++ text (the LSB for fixed point)."""
     if scalar_cxx == "float":
@@ -188,7 +200,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "design_fingerprint": program.fingerprint,
         "scalar": config.scalar_cxx, "fixed_point": config.is_fixed_point,
         "linear_scalar": config.linear_cxx, "mixed": config.mixed,
-        "include_dirs": include, "part": config.part, "clock_ns": repr(float(config.clock_ns)),
+        "include_dirs": include, "part": config.part, **tcl_clock(program.solver.clock_mhz),
         "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
                                                  * config.is_fixed_point),
         "native_cxxflags": " ".join(config.native_cxxflags),
@@ -212,6 +224,12 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "lanes": host_lanes, "laned": host_lanes != 1, "lanes_auto": host_lanes is None,
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,
+        "key_tokens": key_tokens(v.key for v in program.variables),
+        "rotations": [ROTATIONS.get(v.type_name, (0, 0)) for v in program.variables],
+        "tb_double": config.scalar_cxx == "double", "tol": TB_TOLERANCES,
+        "tolerance_comment": comment(f"T = {config.scalar_cxx}, linear solver "
+                                     f"{config.linear_cxx}"),
+        "reference_magic": REFERENCE_MAGIC, "result_magic": RESULT_MAGIC,
         "max_level_width": max(len(level) for level in program.schedule.levels),
         "max_line_chars": 32 * max([v.storage_dim for v in program.variables] + [
             factor_data_words(program, b) for b in range(len(program.blocks))]) + 64,
