@@ -170,3 +170,100 @@ def test_tcl_uses_vitis_headers_one_clock_and_the_reference(tmp_path):
     assert "add_files -tb reference.txt" in code
     makefile = (proj.directory / "Makefile").read_text()
     assert "./tb_chk_tcl $(DATA) $(RESULT) $(REFERENCE)" in makefile
+
+
+# ---- fixed point -------------------------------------------------------------------------------
+
+FIXED = "ap_fixed<40,16>"  # LSB 2^-24 ≈ 6e-8, range ±32768
+FIXED_TOL = 1e-4  # every stored entry vs float64 (measured 7e-6 on the loop below)
+
+
+def _needs_ap_types():
+    from fgc_backends.hls.config import HlsConfigError, ap_types_include
+
+    try:
+        ap_types_include()
+    except HlsConfigError:
+        pytest.skip("ap_fixed needs the optional hls4ml package (pip install 'fgc[hls-fixed]')")
+
+
+def pose2_loop(n: int = 8) -> fgc.Graph:
+    """n poses on a circle of radius 3 m, noisy odometry closing the loop, a prior on 0."""
+    rng = np.random.default_rng(5)
+    truth = [Pose2(3 * np.cos(2 * np.pi * i / n), 3 * np.sin(2 * np.pi * i / n),
+                   2 * np.pi * i / n + np.pi / 2) for i in range(n)]
+    g = fgc.Graph()
+    for i, p in enumerate(truth):
+        g.add_variable(i, p.retract(0.1 * rng.standard_normal(3)))
+    g.add(PriorFactor(0, truth[0], noise.isotropic(3, 0.1)))
+    for i in range(n):
+        j = (i + 1) % n
+        meas = truth[i].between(truth[j]).retract(0.05 * rng.standard_normal(3))
+        g.add(BetweenFactor(i, j, meas, noise.diagonal([0.2, 0.2, 0.1])))
+    return g
+
+
+def test_fixed_point_refuses_a_constant_that_would_saturate(tmp_path):
+    _needs_ap_types()
+    from fgc_backends.hls.config import HlsConfigError
+
+    program = compile_graph(pose2_loop(), SolverConfig(linear="cholesky"), name="fx_bad")
+    # LM's default bound 1e10 is far outside ±32768 (it used to wrap round to -7168)
+    with pytest.raises(HlsConfigError, match=r"constant LAMBDA_UPPER_BOUND = 10000000000\.0 "
+                                             r"does not fit ap_fixed<40, 16> \(range -32768"):
+        emit(program, tmp_path / "p", HlsConfig(scalar=FIXED))
+    assert not (tmp_path / "p" / "fx_bad.cpp").exists()  # refused before anything is written
+
+
+@pytest.mark.parametrize("linear", ["cholesky", "qr"])
+def test_fixed_point_solves_a_pose2_loop_to_float64(linear, tmp_path):
+    _needs_ap_types()
+    graph = pose2_loop()
+    program = compile_graph(graph, SolverConfig(linear=linear), name="fx")
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    proj = emit(program, tmp_path, HlsConfig(scalar=FIXED, lambda_upper_bound=1e4))
+    header = (tmp_path / "fx.h").read_text()
+    assert "typedef ap_fixed<40, 16, AP_RND_CONV, AP_SAT> T;" in header  # saturate, never wrap
+    assert "leave the fixed type: computed in double" in header  # called out
+    assert "const T MU_MIN = T(5.960464477539063e-08);" in (tmp_path / "fx.cpp").read_text()
+    result = run_csim(proj, program, data, reference)  # the testbench's check passes too
+    assert result.converged and reference.converged
+    worst = max(float(np.max(np.abs(result.values[v.key] - reference.storage[v.key])))
+                for v in program.variables)
+    assert worst <= FIXED_TOL
+    assert abs(result.final_error - reference.final_error) <= FIXED_TOL * reference.final_error
+
+
+def test_fixed_point_refuses_data_outside_the_format(tmp_path):
+    _needs_ap_types()
+    from fgc_backends.hls.config import HlsConfigError
+
+    graph = fgc.Graph()
+    for i, x in enumerate((0.0, 1.0, 4e4)):  # the last starts 40 km away: beyond ±32768
+        graph.add_variable(i, Pose2(x, 0.0, 0.0))
+    graph.add(PriorFactor(0, Pose2(0.0, 0.0, 0.0), noise.isotropic(3, 0.1)))
+    for a in (0, 1):
+        graph.add(BetweenFactor(a, a + 1, Pose2(1.0, 0.0, 0.0), noise.isotropic(3, 0.2)))
+    program = compile_graph(graph, SolverConfig(linear="cholesky"), name="fx_far")
+    proj = emit(program, tmp_path, HlsConfig(scalar=FIXED, lambda_upper_bound=1e4))
+    with pytest.raises(HlsConfigError, match=r"variable '2': initial value entry 0 = 40000\.0 "
+                                             r"does not fit ap_fixed<40, 16>"):
+        run_csim(proj, program, problem_data(graph, program))
+
+
+def test_fgc_compile_writes_the_reference_beside_the_data(tmp_path):
+    from pathlib import Path
+
+    from fgc.cli import main
+
+    spec = str(Path(__file__).resolve().parent.parent / "examples" / "range_beacons.py")
+    out = tmp_path / "prj"
+    assert main(["compile", spec, "--backend", "hls", "--scalar", "double", "--out",
+                 str(out), "-q"]) == 0
+    reference = (out / "reference.txt").read_text().splitlines()
+    assert reference[0].startswith("FGCREFERENCE 1 ") and reference[1] == "STATUS converged"
+    done = subprocess.run(["make", "-s", "csim"], cwd=out, capture_output=True, text=True,
+                          check=False)
+    assert done.returncode == 0, done.stderr
+    assert "matches the reference" in done.stdout

@@ -13,6 +13,7 @@ from pathlib import Path
 from fgc.datafile import ProblemData, write_data
 from fgc.errors import FgcError
 from fgc.program import Program
+from fgc_backends.hls.config import check_fixed_data
 from fgc_backends.hls.emitter import HlsProject
 from fgc_backends.hls.results import (
     REFERENCE_FILE,
@@ -61,6 +62,7 @@ def run_csim(project: HlsProject, program: Program, data: ProblemData,
     ``reference``: True computes it (:func:`~fgc_backends.hls.results.reference_run`), a
     simulator result of the same Program and data is used as it is, False writes none (the
     testbench then says the result is unchecked)."""
+    check_fixed_data(project.config.scalar_cxx, program, data)  # saturation is no answer
     write_data(data, project.directory / DATA_FILE)
     ref_path = project.directory / REFERENCE_FILE
     ref_path.unlink(missing_ok=True)

@@ -20,7 +20,14 @@ import fgc
 from fgc.datafile import MAGIC
 from fgc.program import Program
 from fgc_backends.hls.blocks import block_contexts
-from fgc_backends.hls.config import HlsConfig, HlsConfigError, ap_types_include, check_clock
+from fgc_backends.hls.config import (
+    HlsConfig,
+    HlsConfigError,
+    ap_types_include,
+    check_clock,
+    check_fixed_constants,
+    fixed_declaration,
+)
 from fgc_backends.hls.lint import lint_project
 from fgc_backends.hls.names import comment, identifier, key_tokens
 from fgc_backends.hls.printer import HlsCodePrinter
@@ -93,17 +100,47 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     env.tests["constant_literal"] = is_constant_literal
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    paths = []
+    texts = {}
     for template, pattern in FILES:
-        path = out / pattern.format(name=project)
-        path.write_text(env.get_template(template).render(**context, template=template,
-                                                          file_name=path.name))
+        name_ = pattern.format(name=project)
+        texts[name_] = env.get_template(template).render(**context, template=template,
+                                                         file_name=name_)
+    if config.is_fixed_point:  # before anything is written: a constant that would saturate
+        check_fixed_constants(config.scalar_cxx, kernel_constants(
+            (FILES[i][1].format(name=project), texts[FILES[i][1].format(name=project)])
+            for i, (t, _) in enumerate(FILES) if t in SYNTHESISED))
+    paths = []
+    for name_, text in texts.items():
+        path = out / name_
+        path.write_text(text)
         paths.append(path)
     result = HlsProject(out, project, tuple(paths), config)
     issues = lint_project(result, [out / FILES[i][1].format(name=project)
                                    for i, (t, _) in enumerate(FILES) if t in SYNTHESISED],
                           strict=STRICT_LINT)
     return dataclasses.replace(result, lint_issues=tuple(issues))
+
+
+_NAMED_CONSTANT = re.compile(r"\bconst\s+[TL]\s+([A-Z_][A-Z0-9_]*)\s*=\s*\(?(-?)[TL]\("
+                             r"([-+0-9.eE]+)\)")
+_T_LITERAL = re.compile(r"\b[TL]\(([-+]?[0-9][0-9.eE+-]*)\)")
+
+
+def kernel_constants(files) -> list[tuple[str, float]]:
+    """(name, value) of every scalar constant in the synthesised ``files`` ((name, text)
+    pairs): named ``const T NAME = T(v)`` by their names, other ``T(v)`` literals by file and
+    line."""
+    out = []
+    for file, text in files:
+        named = {}
+        for m in _NAMED_CONSTANT.finditer(text):
+            named[m.start(3) - 2] = m.group(1)
+            out.append((m.group(1), float(m.group(2) + m.group(3))))
+        for m in _T_LITERAL.finditer(text):
+            if m.start() not in named:
+                line = text.count("\n", 0, m.start()) + 1
+                out.append((f"T({m.group(1)}) at {file}:{line}", float(m.group(1))))
+    return out
 
 
 def for_program(program: Program, config: HlsConfig) -> HlsConfig:
@@ -165,6 +202,9 @@ def lanes(config: HlsConfig) -> int | None:
 def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter) -> dict:
     s, eps = program.solver, _epsilon(config.scalar_cxx)
     lit = printer.literal
+    if config.is_fixed_point:  # a floor or tolerance below one LSB would round to 0: one LSB
+        def lit(value, _literal=printer.literal):
+            return _literal(value if value == 0 or abs(value) >= eps else eps)
     lm = s.method == "lm"
     tries = 1
     if lm:  # μ grows from at least MU_MIN by lambda_factor until it passes the upper bound
@@ -207,6 +247,7 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "structure_fingerprint": program.structure_fingerprint,
         "design_fingerprint": program.fingerprint,
         "scalar": config.scalar_cxx, "fixed_point": config.is_fixed_point,
+        "scalar_decl": fixed_declaration(config.scalar_cxx),
         "linear_scalar": config.linear_cxx, "mixed": config.mixed,
         "include_dirs": include, "part": config.part, **tcl_clock(program.solver.clock_mhz),
         "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
