@@ -260,3 +260,23 @@ def test_emit_lints_the_project_and_strict_mode_refuses_todays_kernel(tmp_path, 
     monkeypatch.setattr(hls_emitter, "STRICT_LINT", True)
     with pytest.raises(HlsLintError, match=r"lint_p3\.cpp:\d+: \[\w+\]"):
         emit(program, tmp_path / "strict", HlsConfig(scalar="double"))
+
+
+def test_a_global_array_shared_by_two_processes_is_a_channel_with_two_writers():
+    shared = """
+constexpr int N = 8;
+float BUF[N];
+const float TABLE[N] = {0};
+void fill(const float in[N]) { for (int i = 0; i < N; ++i) BUF[i] = in[i] + TABLE[i]; }
+void clear() { for (int i = 0; i < N; ++i) BUF[i] = 0; }
+void top(const float a[N], const float b[N]) {
+#pragma HLS DATAFLOW
+    fill(a);
+    clear();
+}
+"""
+    [issue] = semantic_issues([("k.cpp", shared)])
+    assert issue.rule == "channel" and "'BUF' is written by 2 processes" in issue.message
+    assert "global" in issue.message  # the const TABLE read by one is no channel issue
+    fixed = shared.replace("    clear();\n", "")
+    assert semantic_issues([("k.cpp", fixed)]) == []

@@ -509,6 +509,17 @@ class _Checker:
                     writers.setdefault(key, []).extend(labels)
                 if "read" in uses:
                     readers.setdefault(key, []).extend(labels)
+            # file-scope arrays a process reaches are channels too (issue 18's shared COND/NF)
+            for g, uses in sorted(self.global_uses(f, set()).items()):
+                label = f"{callee} (line {_line(code, pos)}, global)"
+                copies = 1
+                for trips in loop.values():
+                    copies *= trips
+                labels = [label] if copies == 1 else [f"{label} x{copies}"] * copies
+                if "write" in uses:
+                    writers.setdefault(g, []).extend(labels)
+                if "read" in uses:
+                    readers.setdefault(g, []).extend(labels)
         for what, table in (("written", writers), ("read", readers)):
             for key, who in sorted(table.items()):
                 if len(who) > 1:
@@ -620,6 +631,51 @@ class _Checker:
             self.add(file, code, pos, "dataflow", f"'{' '.join(text.split())[:60]}' in a "
                      "DATAFLOW region: only channel declarations (no initialiser) and "
                      "unconditional calls of void functions")
+
+    def globals_(self) -> dict[str, bool]:
+        """File-scope arrays of the project: name → whether declared ``const``."""
+        if not hasattr(self, "_globals"):
+            found: dict[str, bool] = {}
+            for _, code in self.files:
+                blanked = code
+                for f in self.functions.values():
+                    if f.code is code:
+                        lo, hi = f.body
+                        blanked = blanked[:lo] + re.sub(r"[^\n]", " ", blanked[lo:hi + 1]) + \
+                            blanked[hi + 1:]
+                for m in re.finditer(r"(?:^|[;}])\s*((?:static\s+|const\s+|constexpr\s+)*)"
+                                     r"[A-Za-z_][\w:]*(?:<[^;<>]*>)?\s+([A-Za-z_]\w*)\s*\[",
+                                     blanked, re.M):
+                    found.setdefault(m.group(2), bool(re.search(r"const", m.group(1))))
+            self._globals = found
+        return self._globals
+
+    def global_uses(self, f: _Function, seen: set) -> dict[str, set[str]]:
+        """The non-const file-scope arrays ``f`` (and what it calls) reads and writes."""
+        if f.name in seen:
+            return {}
+        seen = seen | {f.name}
+        local = {p.name for p in f.params}
+        local |= set(re.findall(r"[\w>]\s+([A-Za-z_]\w*)\s*\[", f.text))
+        out: dict[str, set[str]] = {}
+        for g, const in self.globals_().items():
+            if const or g in local or not re.search(rf"\b{g}\b", f.text):
+                continue
+            assign = rf"(?<![\w.>])\b{g}\s*(?:\[[^\]]*\]\s*)*(=(?!=)|[-+*/|&^]=|\+\+|--)"
+            uses = set()
+            for m in re.finditer(assign, f.text):
+                uses |= {"write"} if m.group(1) == "=" else {"write", "read"}
+            if re.search(rf"\b{g}\b", re.sub(assign, " ", f.text)):
+                uses.add("read")  # read, or passed on (conservatively: both)
+                if re.search(rf"[(,]\s*{g}\s*[,)]", f.text):
+                    uses.add("write")
+            out[g] = uses
+        for m in re.finditer(r"\b([A-Za-z_]\w*)\s*(?:<[^;()]*?>)?\s*\(", f.text):
+            callee = self.functions.get(m.group(1))
+            if callee is not None and callee.name != f.name:
+                for g, uses in self.global_uses(callee, seen).items():
+                    out.setdefault(g, set()).update(uses)
+        return out
 
     def uses(self, f: _Function, param: _Param, seen: set) -> set[str]:
         """How ``f`` uses its parameter ``param``: a subset of {"read", "write"}; an argument
