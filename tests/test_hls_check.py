@@ -227,6 +227,9 @@ def test_fixed_point_solves_a_pose2_loop_to_float64(linear, tmp_path):
     assert "typedef ap_fixed<40, 16, AP_RND_CONV, AP_SAT> T;" in header  # saturate, never wrap
     assert "leave the fixed type: computed in double" in header  # called out
     assert "const T MU_MIN = T(5.960464477539063e-08);" in (tmp_path / "fx.cpp").read_text()
+    # hls4ml's ap_types reach g++ only (the Makefile); Vitis uses its own ap_fixed.h
+    assert "ap_types" in (tmp_path / "Makefile").read_text()
+    assert "ap_types" not in (tmp_path / "run_hls.tcl").read_text()
     result = run_csim(proj, program, data, reference)  # the testbench's check passes too
     assert result.converged and reference.converged
     worst = max(float(np.max(np.abs(result.values[v.key] - reference.storage[v.key])))
@@ -267,3 +270,28 @@ def test_fgc_compile_writes_the_reference_beside_the_data(tmp_path):
                           check=False)
     assert done.returncode == 0, done.stderr
     assert "matches the reference" in done.stdout
+
+
+def test_float_testbench_tolerates_1cm_1mrad_and_no_more(tmp_path):
+    graph = chain()
+    program = compile_graph(graph, SolverConfig(linear="qr"), name="chk_f32")
+    proj = emit(program, tmp_path, HlsConfig(scalar="float"))
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    run_csim(proj, program, data, reference)
+    key = program.variables[4].key
+
+    def check(dx: float, dtheta: float) -> subprocess.CompletedProcess:
+        x, y, c, s = reference.storage[key]
+        a = np.arctan2(s, c) + dtheta
+        storage = {**reference.storage, key: np.array([x + dx, y, np.cos(a), np.sin(a)])}
+        write_reference(tmp_path / "reference.txt", program,
+                        dataclasses.replace(reference, storage=storage))
+        return _tb(proj, "data.txt", "result.txt", "reference.txt")
+
+    assert check(0.005, 0.0005).returncode == 0
+    done = check(0.02, 0.0)
+    assert done.returncode == 4 and "MISMATCH: variable 4 entry 0" in done.stderr
+    done = check(0.0, 0.002)
+    assert done.returncode == 4 and "variable 4: rotation differs from the reference by 0.002" \
+        in done.stderr
