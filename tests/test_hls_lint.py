@@ -280,3 +280,41 @@ void top(const float a[N], const float b[N]) {
     assert "global" in issue.message  # the const TABLE read by one is no channel issue
     fixed = shared.replace("    clear();\n", "")
     assert semantic_issues([("k.cpp", fixed)]) == []
+
+
+def test_stream_arrays_and_constant_declarations_in_a_dataflow_region():
+    units = """
+constexpr int N = 8;
+constexpr int U = 2;
+typedef float T;
+void split(const T in[N], hls::stream<T> out[U]) {
+    for (int i = 0; i < N; ++i) out[i % U].write(in[i]);
+}
+void work(hls::stream<T>& in, hls::stream<T>& out) {
+    for (int i = 0; i < N / U; ++i) out.write(in.read());
+}
+void merge(hls::stream<T> in[U], T out[N]) {
+    for (int i = 0; i < N; ++i) out[i] = in[i % U].read();
+}
+void top(const T in[N], T out[N]) {
+#pragma HLS DATAFLOW
+    const int half = N / 2;
+    hls::stream<T> a[U];
+    hls::stream<T> b[U];
+#pragma HLS STREAM variable=a depth=4
+    split(in, a);
+    for (int u = 0; u < U; ++u) {
+#pragma HLS UNROLL
+        work(a[u], b[u]);
+    }
+    merge(b, out);
+}
+"""
+    assert semantic_issues([("k.cpp", units)]) == []
+    # a second reader of the stream array `a` (merge reads it too)
+    twice = units.replace("merge(b, out);", "merge(a, out);")
+    issues = semantic_issues([("k.cpp", twice)])
+    assert [i.rule for i in issues] == ["channel"]
+    assert "'a[u]' is read by 2 processes" in issues[0].message and "merge" in issues[0].message
+    computed = units.replace("const int half = N / 2;", "const int half = in_size(in);")
+    assert "dataflow" in {i.rule for i in semantic_issues([("k.cpp", computed)])}

@@ -521,6 +521,12 @@ class _Checker:
                 if "read" in uses:
                     readers.setdefault(g, []).extend(labels)
         for what, table in (("written", writers), ("read", readers)):
+            # a whole array passed to one process overlaps each element another one takes
+            bases = {k.split("[")[0] for k in table if "[" in k}
+            for key in [k for k in table if "[" in k]:
+                table[key] = table[key] + table.get(key.split("[")[0], [])
+            for base in bases:
+                table.pop(base, None)  # reported through its elements
             for key, who in sorted(table.items()):
                 if len(who) > 1:
                     self.add(file, code, pragma, "channel", f"'{key}' is {what} by "
@@ -610,8 +616,11 @@ class _Checker:
             return
         declaration = re.fullmatch(r"(?:static\s+)?[A-Za-z_][\w:]*(?:\s*<[^;=]*>)?\s+"
                                    r"[A-Za-z_]\w*\s*(?:\[[^\]=;]*\]\s*)*(?:\(\s*\))?", text, re.S)
-        if declaration:
-            return
+        constant = re.fullmatch(r"(?:static\s+)?(?:const|constexpr)\s+(?:unsigned\s+)?"
+                                r"(?:int|long|short|unsigned|bool)\s+[A-Za-z_]\w*\s*=\s*(.+)",
+                                text, re.S)
+        if declaration or constant and _evaluate(constant.group(1), self.constants) is not None:
+            return  # a channel, or an integer constant (no computation, no process)
         inner = [m for m in re.finditer(r"\b([A-Za-z_]\w*)\s*(?:<[^;()]*?>)?\s*\(", text)
                  if m.group(1) not in _KEYWORDS_ALL]
         if inner:
@@ -701,7 +710,7 @@ class _Checker:
                     body = body[:at] + " " * len(arg) + body[at + len(arg):]
         if param.stream:
             out |= {m.group(1) for m in re.finditer(
-                rf"\b{name}\s*\.\s*(write|read)(?:_nb)?\s*\(", body)}
+                rf"\b{name}\s*(?:\[[^\]]*\]\s*)*\.\s*(write|read)(?:_nb)?\s*\(", body)}
         elif param.const:
             if re.search(rf"\b{name}\b", body):
                 out.add("read")
