@@ -318,3 +318,51 @@ void top(const T in[N], T out[N]) {
     assert "'a[u]' is read by 2 processes" in issues[0].message and "merge" in issues[0].message
     computed = units.replace("const int half = N / 2;", "const int half = in_size(in);")
     assert "dataflow" in {i.rule for i in semantic_issues([("k.cpp", computed)])}
+
+
+def test_inlined_unit_recursion_enums_and_macros_in_a_dataflow_region():
+    network = """
+#define REGION(name) ((void)0)
+typedef float T;
+constexpr int N = 8;
+struct Cfg { enum { UNITS = 2 }; };
+void split(const T in[N], hls::stream<T> out[Cfg::UNITS]) {
+    for (int i = 0; i < N; ++i) out[i % Cfg::UNITS].write(in[i]);
+}
+void work(hls::stream<T>& in, hls::stream<T>& out) {
+    for (int i = 0; i < N / Cfg::UNITS; ++i) out.write(in.read());
+}
+void merge(hls::stream<T> in[Cfg::UNITS], T out[N]) {
+    for (int i = 0; i < N; ++i) out[i] = in[i % Cfg::UNITS].read();
+}
+template <class CFG, int U, bool END = (U >= CFG::UNITS)>
+struct units {
+    static void run(hls::stream<T> a[CFG::UNITS], hls::stream<T> b[CFG::UNITS]) {
+#pragma HLS INLINE
+        work(a[U], b[U]);
+        units<CFG, U + 1>::run(a, b);
+    }
+};
+template <class CFG, int U>
+struct units<CFG, U, true> {
+    static void run(hls::stream<T>*, hls::stream<T>*) {
+#pragma HLS INLINE
+    }
+};
+void top(const T in[N], T out[N]) {
+#pragma HLS DATAFLOW
+    enum { DEPTH = 4 };
+    hls::stream<T> a[Cfg::UNITS];
+    hls::stream<T> b[Cfg::UNITS];
+#pragma HLS STREAM variable=a depth=DEPTH
+    REGION("top");
+    split(in, a);
+    units<Cfg, 0>::run(a, b);
+    merge(b, out);
+}
+"""
+    assert semantic_issues([("k.h", network)]) == []
+    issues = semantic_issues([("k.h", network.replace("merge(b, out);", "merge(a, out);"))])
+    assert [i.rule for i in issues] == ["channel"]
+    assert "'a[U]' is read by 2 processes" in issues[0].message
+    assert "work (line 19" in issues[0].message and "merge (line 38" in issues[0].message

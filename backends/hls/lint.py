@@ -263,6 +263,12 @@ class _Function:
     code: str  # the file's code (comments/strings blanked)
     start: int  # of the definition
     body: tuple[int, int]  # indices of '{' and its '}'
+    qualname: str = ""  # Struct::name for a member of a struct or class
+    template_ints: tuple[str, ...] = ()  # int template parameters (of it and its struct)
+
+    @property
+    def inline(self) -> bool:
+        return re.match(r"\s*#\s*pragma\s+HLS\s+INLINE\s*(?:\n|$)", self.text, re.I) is not None
 
     @property
     def text(self) -> str:
@@ -303,6 +309,12 @@ def _params(text: str) -> tuple[_Param, ...]:
 def _functions(file: str, code: str) -> list[_Function]:
     """Top-level function definitions of one file (``code``: comments/strings blanked)."""
     out, pos = [], 0
+    structs = []  # (name, '{', '}', int template parameters)
+    for m in re.finditer(r"(template\s*<([^{};]*?)>\s*)?\b(?:struct|class)\s+([A-Za-z_]\w*)"
+                         r"[^;{}()]*\{", code):
+        brace = m.end() - 1
+        ints = tuple(re.findall(r"\bint\s+([A-Za-z_]\w*)", m.group(2) or ""))
+        structs.append((m.group(3), brace, _matching(code, brace, "{", "}"), ints))
     for m in _DEFINITION.finditer(code):
         if m.start() < pos or m.group(1) in _KEYWORDS_ALL:
             continue
@@ -310,14 +322,19 @@ def _functions(file: str, code: str) -> list[_Function]:
         prefix = code[start + 1:m.start()]
         prefix = "\n".join(line for line in prefix.splitlines()
                            if not line.strip().startswith("#"))
+        header = re.match(r"^\s*template\s*<([^{};]*?)>", prefix.strip())
+        ints = tuple(re.findall(r"\bint\s+([A-Za-z_]\w*)", header.group(1))) if header else ()
         prefix = re.sub(r"^\s*template\s*<[^{};]*?>\s*(?=[A-Za-z_])", "", prefix.strip())
         ret = re.sub(r"\b(inline|static|constexpr|extern)\b", "", prefix).strip()
         if not ret or "=" in ret or "(" in ret or ret.endswith(("::", ".")):
             continue  # a constructor-like call or an expression, not a definition
         brace = m.end() - 1
         end = _matching(code, brace, "{", "}")
+        owner = [st for st in structs if st[1] < m.start() < st[2]]
+        qualname = f"{owner[-1][0]}::{m.group(1)}" if owner else m.group(1)
+        ints += owner[-1][3] if owner else ()
         out.append(_Function(m.group(1), " ".join(ret.split()), _params(m.group(2)), file, code,
-                             m.start(), (brace, end)))
+                             m.start(), (brace, end), qualname, ints))
         pos = end
     return out
 
@@ -358,7 +375,7 @@ def _evaluate(expr: str, values: dict[str, int]) -> int | None:
 
 
 def _is_constant(expr: str) -> bool:
-    text = re.sub(r"\b[a-z_]\w*::", "", expr).strip()
+    text = re.sub(r"\b\w+::", "", expr).strip()  # fgc::N_X, CFG::N_UNITS are constants
     return bool(text) and _CONSTANT.match(text) is not None
 
 
@@ -376,7 +393,7 @@ def _constant_bounds(header: list[str]) -> bool:
     """Whether a ``for`` header starts and ends at compile-time constants."""
     init = re.match(r"^(?:const\s+)?(?:unsigned\s+)?(?:int|long|short|size_t|std::size_t|"
                     r"unsigned)?\s*\w+\s*=\s*(.+)$", header[0])
-    bound = _BOUND.match(re.sub(r"\b[a-z_]\w*::", "", header[1]))
+    bound = _BOUND.match(re.sub(r"\b\w+::", "", header[1]))
     return bool(init and _is_constant(init.group(1)) and bound and _is_constant(bound.group(2)))
 
 
@@ -411,9 +428,13 @@ class _Checker:
     def __init__(self, files: list[tuple[str, str]], part: str | None, scalar: str | None):
         self.files = [(name, strip_comments_and_strings(text)) for name, text in files]
         self.functions: dict[str, _Function] = {}
+        self.macros: set[str] = set()
         for name, code in self.files:
             for f in _functions(name, code):
                 self.functions.setdefault(f.name, f)
+                self.functions.setdefault(f.qualname, f)
+            self.macros |= set(re.findall(r"^[ \t]*#\s*define\s+([A-Za-z_]\w*)\(", code, re.M))
+        self.inlining: set[str] = set()
         self.constants = _constants(code for _, code in self.files)
         self.part, self.scalar = part, scalar
         self.issues: list[LintIssue] = []
@@ -478,11 +499,11 @@ class _Checker:
     # -- dataflow ------------------------------------------------------------------------------
     def dataflow(self, file: str, code: str, pragma: int, after: int) -> None:
         lo, hi = _enclosing_block(code, pragma)
-        calls: list[tuple[int, str, list[str], dict[str, str]]] = []
+        calls: list[tuple[int, str, list[str], dict[str, int], str]] = []
         self._region(file, code, lo + 1, hi, calls, {}, pragma)
         writers: dict[str, list[str]] = {}
         readers: dict[str, list[str]] = {}
-        for pos, callee, args, loop in calls:
+        for pos, callee, args, loop, where in calls:
             f = self.functions.get(callee)
             if f is None:
                 continue
@@ -497,13 +518,17 @@ class _Checker:
                 # an unrolled loop makes one process per iteration: an argument indexed by the
                 # loop's variable is another channel each time, any other the same channel
                 copies = 1
+                index_value = _evaluate(subscript[1:-1], self.constants) if \
+                    re.fullmatch(r"\[[^\[\]]*\]", subscript) else None
+                if index_value is not None:  # a constant element: its own channel
+                    key = f"{key}[{index_value}]"
                 for v, trips in loop.items():
                     if subscript and re.search(rf"\b{v}\b", subscript):
-                        key = f"{key}{subscript}"
+                        key = f"{base.group(1)}{subscript}"  # one element per copy
                     else:
                         copies *= trips
                 uses = self.uses(f, param, set())
-                label = f"{callee} (line {_line(code, pos)}, argument {index + 1})"
+                label = f"{callee} (line {_line(where, pos)}, argument {index + 1})"
                 labels = [label] if copies == 1 else [f"{label} x{copies}"] * copies
                 if "write" in uses:
                     writers.setdefault(key, []).extend(labels)
@@ -511,7 +536,7 @@ class _Checker:
                     readers.setdefault(key, []).extend(labels)
             # file-scope arrays a process reaches are channels too (issue 18's shared COND/NF)
             for g, uses in sorted(self.global_uses(f, set()).items()):
-                label = f"{callee} (line {_line(code, pos)}, global)"
+                label = f"{callee} (line {_line(where, pos)}, global)"
                 copies = 1
                 for trips in loop.values():
                     copies *= trips
@@ -602,24 +627,40 @@ class _Checker:
     def _statement(self, file, code, pos, text, calls, loop) -> None:
         if not text:
             return
-        call = re.fullmatch(r"([A-Za-z_]\w*(?:::\w+)*)\s*(?:<[^;]*?>)?\s*\((.*)\)", text, re.S)
+        call = re.fullmatch(r"((?:::)?(?:[A-Za-z_]\w*\s*(?:<[^;()]*?>)?\s*::\s*)*[A-Za-z_]\w*)"
+                            r"\s*(?:<[^;()]*?>)?\s*\((.*)\)", text, re.S)
         if call and call.group(1) not in _KEYWORDS_ALL:
-            name = call.group(1).split("::")[-1]
-            f = self.functions.get(name)
+            parts = re.sub(r"<[^;()]*?>|\s", "", call.group(1)).strip(":").split("::")
+            name = "::".join(parts[-2:])
+            f = self.functions.get(name) or self.functions.get(parts[-1])
+            if parts[-1] in self.macros and f is None:
+                return  # a function-like macro (instrumentation): not judged
+            if f is not None and f.inline and f.ret == "void":
+                # an inlined helper (a template recursion over units): its calls are processes
+                # of this region, its int template parameters index one copy each
+                if f.qualname not in self.inlining:
+                    self.inlining.add(f.qualname)
+                    self._region(f.file, f.code, f.body[0] + 1, f.body[1], calls,
+                                 {**loop, **{t: 1 for t in f.template_ints}}, None)
+                    self.inlining.discard(f.qualname)
+                return
             if f is None:
                 self.add(file, code, pos, "dataflow", f"call of '{name}' in a DATAFLOW region: "
                          "its definition is not in the project, so it cannot be checked void")
             elif f.ret != "void":
                 self.add(file, code, pos, "dataflow", f"process '{name}' returns '{f.ret}': "
                          "DATAFLOW processes must be void functions")
-            calls.append((pos, name, _split_top(call.group(2)), loop))
+            calls.append((pos, f.qualname if f else name, _split_top(call.group(2)), loop,
+                          code))
             return
         declaration = re.fullmatch(r"(?:static\s+)?[A-Za-z_][\w:]*(?:\s*<[^;=]*>)?\s+"
                                    r"[A-Za-z_]\w*\s*(?:\[[^\]=;]*\]\s*)*(?:\(\s*\))?", text, re.S)
         constant = re.fullmatch(r"(?:static\s+)?(?:const|constexpr)\s+(?:unsigned\s+)?"
                                 r"(?:int|long|short|unsigned|bool)\s+[A-Za-z_]\w*\s*=\s*(.+)",
                                 text, re.S)
-        if declaration or constant and _evaluate(constant.group(1), self.constants) is not None:
+        enum = re.fullmatch(r"enum\s*\w*\s*\{[^{}]*\}", text)
+        constant = constant and _evaluate(constant.group(1), self.constants) is not None
+        if declaration or enum or constant:
             return  # a channel, or an integer constant (no computation, no process)
         inner = [m for m in re.finditer(r"\b([A-Za-z_]\w*)\s*(?:<[^;()]*?>)?\s*\(", text)
                  if m.group(1) not in _KEYWORDS_ALL]
@@ -635,7 +676,7 @@ class _Checker:
                 if f is not None:
                     open_ = text.index("(", m.start())
                     close = _matching(text, open_, "(", ")")
-                    calls.append((pos, f.name, _split_top(text[open_ + 1:close]), loop))
+                    calls.append((pos, f.name, _split_top(text[open_ + 1:close]), loop, code))
         else:
             self.add(file, code, pos, "dataflow", f"'{' '.join(text.split())[:60]}' in a "
                      "DATAFLOW region: only channel declarations (no initialiser) and "
@@ -670,7 +711,8 @@ class _Checker:
         for g, const in self.globals_().items():
             if const or g in local or not re.search(rf"\b{g}\b", f.text):
                 continue
-            assign = rf"(?<![\w.>])\b{g}\s*(?:\[[^\]]*\]\s*)*(=(?!=)|[-+*/|&^]=|\+\+|--)"
+            assign = (rf"(?<![\w.>])\b{g}\s*(?:\[[^\]]*\]\s*)*(?:\.\s*\w+\s*)*"
+                      r"(=(?!=)|[-+*/|&^]=|\+\+|--)")
             uses = set()
             for m in re.finditer(assign, f.text):
                 uses |= {"write"} if m.group(1) == "=" else {"write", "read"}
@@ -715,7 +757,8 @@ class _Checker:
             if re.search(rf"\b{name}\b", body):
                 out.add("read")
         else:
-            assign = rf"(?<![\w.>])\b{name}\s*(?:\[[^\]]*\]\s*)*(=(?!=)|[-+*/|&^]=|\+\+|--)"
+            assign = (rf"(?<![\w.>])\b{name}\s*(?:\[[^\]]*\]\s*)*(?:\.\s*\w+\s*)*"
+                      r"(=(?!=)|[-+*/|&^]=|\+\+|--)")
             for m in re.finditer(assign, body):
                 out.add("write")
                 if m.group(1) != "=":
