@@ -189,7 +189,7 @@ def _build(program: Program, config: HlsConfig, folder: Path) -> HlsProject:
     Program do not see each other's half-written files)."""
     staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
     shutil.rmtree(staging, ignore_errors=True)
-    project = emit(program, staging, config)
+    project = emit(program, staging, config, design="cpu")
     make(project, "native")
     try:
         os.replace(staging, folder)

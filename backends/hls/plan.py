@@ -14,7 +14,9 @@ arithmetic of that plan:
 - resources are the units' allocated operators × instances + memories as placed (BRAM36 from
   words × width and banks, BRAM18 granularity; small memories in LUTRAM).
 
-Nothing here is emitted yet: the HLS templates do not read the plan (docs/hls.md).
+The HLS emitter prints this plan (accel.cpp.jinja): its units are the emitted processes, its
+channels the emitted streams (:func:`process_network`), its factor-datapath operators the
+``ALLOCATION`` limits and its instance-loop IIs the ``PIPELINE`` IIs (docs/hls.md).
 
 The QR sweep's structure (which rows and columns each Householder reflection touches) is read
 from the sim cost model's structural simulation (``householder_sweep`` / ``stacked_pattern``), a
@@ -34,6 +36,7 @@ from .operators import OperatorTable, table
 PART = "xc7z045"
 PART_DSP, PART_BRAM36, PART_LUT, PART_FF = 900, 545, 218_600, 437_200
 BRAM18_BITS = 18 * 1024
+STREAM_DEPTH = 16  # the emitted hls::stream depth: every process reads as its producer writes
 LUTRAM_MAX_BITS = 1024  # memories up to this size go to LUTRAM / registers (design)
 
 # default ALLOCATION limits of the factor datapath, per kernel operator kind (design: the sim
@@ -283,10 +286,17 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         units.append(Unit(f"qr{s}_update", "apply the reflector to a column", opts.units,
                           (("add", 1), ("mul", 1))))
         units.append(Unit(f"qr{s}_backsub", "back-substitution", 1, (("add", 1), ("mul", 2))))
-        channels.append(Channel(f"qr{s}_v", "stream", 2 * ops.add.latency, ops.word_bits,
-                                f"qr{s}_evaluate", f"qr{s}_update"))
-        channels.append(Channel(f"qr{s}_r", "pingpong", 2, ops.word_bits, f"qr{s}_update",
-                                f"qr{s}_backsub"))
+        # the emitted network of one column (accel.cpp.jinja's qr_column): Evaluate streams its
+        # reflector to each Update unit, the owner of the next column streams it to qr_next,
+        # which fills the next Evaluate's column buffer (ping-pong between columns)
+        for u in range(opts.units):
+            channels.append(Channel(f"qr{s}_v{u}", "stream", STREAM_DEPTH, ops.word_bits + 32,
+                                    f"qr{s}_evaluate", f"qr{s}_update{u}"))
+        for u in range(opts.units):
+            channels.append(Channel(f"qr{s}_next{u}", "stream", STREAM_DEPTH, ops.word_bits,
+                                    f"qr{s}_update{u}", f"qr{s}_next"))
+        channels.append(Channel(f"qr{s}_col", "pingpong", 2, ops.word_bits, f"qr{s}_next",
+                                f"qr{s}_evaluate"))
     # per step: Evaluate of column k+1 overlaps Update of column k -> one process per step
     step_proc = []
     max_words = 0
@@ -353,9 +363,11 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
              ops.mul.latency + ops.add.latency),)),), linear=True))
     units.append(Unit("cpe", "Cholesky process element: Evaluate + Update", c,
                       (("add", 1), ("mul", 1), ("div", 1), ("sqrt", 1)), extra_dsp=1))
-    for i in range(c):
-        channels.append(Channel(f"cpe_fifo{i}", "stream", n, ops.word_bits,
-                                "cholesky_in" if i == 0 else f"cpe{i - 1}", f"cpe{i}"))
+    # the emitted cascade (accel.cpp.jinja's cpe_round): feed -> cpe0 -> ... -> drain
+    for i in range(c + 1):
+        channels.append(Channel(f"cpe_link{i}", "stream", STREAM_DEPTH, ops.word_bits,
+                                "cpe_feed" if i == 0 else f"cpe{i - 1}",
+                                f"cpe{i}" if i < c else "cpe_drain"))
     # a round streams the trailing lower triangle of [H | g] through the cascade, one word a
     # cycle; CPE j computes column j of the round (sqrt + divide) and updates the rest
     cpe_depth = ops.sqrt.latency + ops.div.latency + ops.mul.latency + ops.add.latency
@@ -413,3 +425,26 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
                  if used > cap)
     return Cost(cycles, per, linear, dsp, lut, ff, bram36, plan.clock_mhz, not over, over,
                 tuple(by_unit))
+
+
+# --------------------------------------------------------------------------------------------
+# the emitted process network
+# --------------------------------------------------------------------------------------------
+
+
+def unit_sets(plan: AcceleratorPlan) -> int:
+    """QR unit sets of ``plan`` (0 for Cholesky)."""
+    return sum(1 for u in plan.units if u.name.endswith("_evaluate"))
+
+
+def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Channel, ...]]:
+    """The dataflow processes and streams the emitter prints for ``plan``'s linear solver:
+    per QR unit set Evaluate, n_u Update units and the next-column forwarding; for Cholesky the
+    feed, the #CPE process elements and the drain. Streams are the plan's stream channels."""
+    if plan.linear == "qr":
+        procs = tuple(p for s in range(unit_sets(plan)) for p in (
+            f"qr{s}_evaluate", *(f"qr{s}_update{u}" for u in range(plan.options.units)),
+            f"qr{s}_next"))
+    else:
+        procs = ("cpe_feed", *(f"cpe{i}" for i in range(plan.options.cpe)), "cpe_drain")
+    return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
