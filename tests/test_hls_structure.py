@@ -21,7 +21,7 @@ import sympy as sp
 from fgc.compile import compile_graph
 from fgc.kernel import Kernel
 from fgc.program import SolverConfig
-from fgc_backends.hls import HlsConfigError
+from fgc_backends.hls import HlsConfig, HlsConfigError
 from fgc_backends.hls.blocks import NOISE_KINDS, block_contexts
 from fgc_backends.hls.config import native_flags
 from fgc_backends.hls.printer import print_kernel
@@ -237,3 +237,65 @@ def test_native_flags_keep_the_rounding():
     x86 = native_flags("x86_64")
     assert "-march=native" in x86 and "-mno-fma" in x86 and "-mprefer-vector-width=512" in x86
     assert native_flags("aarch64") == ("-O3",)
+
+
+# ---- the dataflow accelerator: the emitted network is the plan's ------------------------------
+
+
+def _emit_accel(tmp_path, graph, name, **solver):
+    from fgc_backends.hls import HlsConfig, emit
+    program = compile_graph(graph, SolverConfig(**solver), name=name)
+    project = emit(program, tmp_path / f"{name}_{'_'.join(map(str, solver.values()))}",
+                   HlsConfig(scalar="double"))
+    return program, (project.directory / f"{name}.cpp").read_text()
+
+
+@pytest.mark.parametrize("units", [1, 4, 8])
+def test_units_change_the_emitted_qr_network(tmp_path, units):
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import counts, read_network
+    from fgc_backends.hls.plan import process_network
+    program, text = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr", units=units)
+    column = next(r for r in read_network(text) if r.function == "qr_column")
+    assert column.processes == ("qr_evaluate", *["qr_update"] * units, "qr_next")
+    assert len(column.streams) == 2 * units  # a reflector and a next-column stream per unit
+    level = next(r for r in read_network(text) if r.function == "qr_level")
+    assert level.processes == ("qr_set0", "qr_set1")  # two-ended chain: two unit sets
+    procs, streams = process_network(accel_plan(program, HlsConfig()))
+    assert counts(text) == (len(procs), len(streams)) == ((units + 2) * 2, 4 * units)
+
+
+@pytest.mark.parametrize("cpe", [5, 20])
+def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import counts, read_network
+    from fgc_backends.hls.plan import process_network
+    program, text = _emit_accel(tmp_path, pose_graph.build(), "w100", linear="cholesky", cpe=cpe)
+    (region,) = read_network(text)
+    assert region.function == "cpe_round"
+    assert region.processes == ("cpe_feed", *["cpe"] * cpe, "cpe_drain")
+    assert len(region.streams) == cpe + 1
+    procs, streams = process_network(accel_plan(program, HlsConfig()))
+    assert counts(text) == (len(procs), len(streams)) == (cpe + 2, cpe + 1)
+
+
+def test_accelerator_kernel_has_no_host_only_code(tmp_path):
+    for linear in ("qr", "cholesky"):
+        _, text = _emit_accel(tmp_path, lio.build(N=8), "lio", linear=linear)
+        assert "__SYNTHESIS__" not in text and "LANES" not in text
+        assert "__attribute__" not in text and "nullptr" not in text
+
+
+def test_allocation_limits_are_the_plans(tmp_path):
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import allocations
+    program, text = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
+    plan = accel_plan(program, HlsConfig())
+    found = allocations(text)
+    assert set(found) == {f"factor_{b}" for b in range(len(program.blocks))}
+    for b in range(len(program.blocks)):
+        limits = dict(plan.unit(f"factor_{b}").operators)
+        ops = {n[1:]: lim for kind, n, lim in found[f"factor_{b}"] if kind == "operation"}
+        assert ops == {k: v for k, v in limits.items() if k in ("add", "mul", "div", "sqrt")}
+        assert all(n.startswith("d") for kind, n, _ in found[f"factor_{b}"]
+                   if kind == "operation")  # double: dadd, dmul, ...
