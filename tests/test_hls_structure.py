@@ -247,7 +247,11 @@ def _emit_accel(tmp_path, graph, name, **solver):
     program = compile_graph(graph, SolverConfig(**solver), name=name)
     project = emit(program, tmp_path / f"{name}_{'_'.join(map(str, solver.values()))}",
                    HlsConfig(scalar="double"))
-    return program, (project.directory / f"{name}.cpp").read_text()
+    return program, project.directory
+
+
+def _texts(directory, name, header):
+    return (directory / f"{name}.cpp").read_text(), (directory / "include" / header).read_text()
 
 
 @pytest.mark.parametrize("units", [1, 4, 8])
@@ -255,14 +259,17 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import counts, read_network
     from fgc_backends.hls.plan import process_network
-    program, text = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr", units=units)
-    column = next(r for r in read_network(text) if r.function == "qr_column")
-    assert column.processes == ("qr_evaluate", *["qr_update"] * units, "qr_next")
-    assert len(column.streams) == 2 * units  # a reflector and a next-column stream per unit
-    level = next(r for r in read_network(text) if r.function == "qr_level")
+    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr", units=units)
+    kernel, header = _texts(out, "lio", "fgc_qr.h")
+    assert f"const int N_UNITS = {units};" in kernel
+    level = next(r for r in read_network(kernel) if r.function == "qr_level")
     assert level.processes == ("qr_set0", "qr_set1")  # two-ended chain: two unit sets
+    (reflection,) = [r for r in read_network(header) if r.streams]
+    assert reflection.processes == ("qr_broadcast", "qr_update_units::run", "qr_evaluate")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
-    assert counts(text) == (len(procs), len(streams)) == ((units + 2) * 2, 4 * units)
+    assert counts(kernel, header) == (len(procs), len(streams)) == ((units + 2) * 2, 4 * units)
+    for p in procs:  # the comment block lists the plan's network
+        assert f"//   process {p}\n" in kernel
 
 
 @pytest.mark.parametrize("cpe", [5, 20])
@@ -270,28 +277,33 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import counts, read_network
     from fgc_backends.hls.plan import process_network
-    program, text = _emit_accel(tmp_path, pose_graph.build(), "w100", linear="cholesky", cpe=cpe)
-    (region,) = read_network(text)
-    assert region.function == "cpe_round"
-    assert region.processes == ("cpe_feed", *["cpe"] * cpe, "cpe_drain")
-    assert len(region.streams) == cpe + 1
+    program, out = _emit_accel(tmp_path, pose_graph.build(), "w100", linear="cholesky", cpe=cpe)
+    kernel, header = _texts(out, "w100", "fgc_cpe.h")
+    assert f"const int N_CPE = {cpe};" in kernel
+    (region,) = read_network(header)
+    assert region.processes == ("cpe_feed", "cpe_cascade::run", "cpe_drain")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
-    assert counts(text) == (len(procs), len(streams)) == (cpe + 2, cpe + 1)
+    assert counts(kernel, header) == (len(procs), len(streams)) == (cpe + 2, cpe + 1)
+    assert f"//   stream cpe_link{cpe} " in kernel
 
 
 def test_accelerator_kernel_has_no_host_only_code(tmp_path):
     for linear in ("qr", "cholesky"):
-        _, text = _emit_accel(tmp_path, lio.build(N=8), "lio", linear=linear)
+        _, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear=linear)
+        text = (out / "lio.cpp").read_text()
         assert "__SYNTHESIS__" not in text and "LANES" not in text
         assert "__attribute__" not in text and "nullptr" not in text
+        assert (out / "csim_include" / "hls_stream.h").exists()
+        assert "csim_include" in (out / "Makefile").read_text()
+        assert "csim_include" not in (out / "run_hls.tcl").read_text()
 
 
 def test_allocation_limits_are_the_plans(tmp_path):
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import allocations
-    program, text = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
+    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
     plan = accel_plan(program, HlsConfig())
-    found = allocations(text)
+    found = allocations((out / "lio.cpp").read_text())
     assert set(found) == {f"factor_{b}" for b in range(len(program.blocks))}
     for b in range(len(program.blocks)):
         limits = dict(plan.unit(f"factor_{b}").operators)

@@ -15,16 +15,18 @@ from dataclasses import dataclass
 from .lint import strip_comments_and_strings
 
 _FUNCTION = re.compile(r"\b([A-Za-z_]\w*)\s*\(([^;{}]*)\)\s*\{")
-_CALL = re.compile(r"^\s*([A-Za-z_]\w*)\s*\(", re.M)
-_STREAM = re.compile(r"hls::stream<[^>]*>\s+([A-Za-z_]\w*)\s*[(;]")
+_CALL = re.compile(r"^\s*([A-Za-z_][\w:]*)\s*(?:<[^;()]*>)?\s*(::run)?\s*\(", re.M)
+_STREAM = re.compile(r"hls::stream<.*?>\s+([A-Za-z_]\w*)\s*(?:\[([^\]]*)\])?\s*[(;]")
+_CONSTANT = re.compile(r"^const int (N_UNITS|N_CPE) = (\d+);", re.M)
 _ALLOCATION = re.compile(r"#pragma HLS ALLOCATION (operation|function) instances=(\w+) limit=(\d+)")
 
 
 @dataclass(frozen=True)
 class Region:
     function: str
-    processes: tuple[str, ...]  # callee of each process call, in order
-    streams: tuple[str, ...]
+    processes: tuple[str, ...]  # callee of each process call, in order (``name::run``: a
+    # template recursion that instantiates one process per unit)
+    streams: tuple[tuple[str, str], ...]  # (name, array size as written, "" for one stream)
 
 
 def _bodies(text: str):
@@ -41,12 +43,13 @@ def _bodies(text: str):
 
 
 def read_network(text: str) -> tuple[Region, ...]:
-    """The DATAFLOW regions of a kernel's text."""
+    """The DATAFLOW regions of a kernel's or unit header's text."""
     out = []
     for name, body in _bodies(text):
         if not body.lstrip().startswith("#pragma HLS DATAFLOW"):
             continue
-        calls = tuple(c for c in _CALL.findall(body) if c not in ("for", "if", "while"))
+        calls = tuple(c + (run or "") for c, run in _CALL.findall(body)
+                      if c not in ("for", "if", "while") and not c.isupper())
         out.append(Region(name, calls, tuple(_STREAM.findall(body))))
     return tuple(out)
 
@@ -61,12 +64,27 @@ def allocations(text: str) -> dict[str, tuple[tuple[str, str, int], ...]]:
     return out
 
 
-def counts(text: str) -> tuple[int, int]:
-    """Processes and streams of the linear solver's network: the innermost regions that declare
-    streams (one QR column or one CPE round), plus the unit-set region's processes."""
-    regions = read_network(text)
-    streamed = [r for r in regions if r.streams]
-    sets = [r for r in regions if not r.streams]
-    per_set = sum(len(r.processes) for r in streamed)
-    n_sets = max([len(r.processes) for r in sets] + [1])
-    return per_set * n_sets, sum(len(r.streams) for r in streamed) * n_sets
+def counts(kernel: str, units: str) -> tuple[int, int]:
+    """Processes and streams of the linear solver's network: the kernel's unit-set region (QR:
+    how many unit sets run side by side; Cholesky: one cascade) times the unit header's
+    innermost region (one reflection, one CPE round) with the kernel's N_UNITS / N_CPE."""
+    const = {k: int(v) for k, v in _CONSTANT.findall(kernel)}
+    cfg = {f"CFG::{k}": v for k, v in const.items()}
+    sets = next((len(r.processes) for r in read_network(kernel) if r.function == "qr_level"), 1)
+    procs = streams = 0
+    for region in read_network(units):
+        if not region.streams:
+            continue
+        for call in region.processes:
+            if call.endswith("::run"):  # one process per unit: N_UNITS updates, N_CPE CPEs
+                procs += const["N_UNITS"] if "update" in call else const["N_CPE"]
+            else:
+                procs += 1
+        for _, size in region.streams:
+            expr = size or "1"
+            for k, v in cfg.items():
+                expr = expr.replace(k, str(v))
+            if not re.fullmatch(r"[0-9+\-* ]+", expr):
+                raise ValueError(f"stream array size {size!r} is not a constant expression")
+            streams += eval(expr)  # noqa: S307 - digits and + - * only (checked above)
+    return procs * sets, streams * sets

@@ -36,7 +36,6 @@ from .operators import OperatorTable, table
 PART = "xc7z045"
 PART_DSP, PART_BRAM36, PART_LUT, PART_FF = 900, 545, 218_600, 437_200
 BRAM18_BITS = 18 * 1024
-STREAM_DEPTH = 16  # the emitted hls::stream depth: every process reads as its producer writes
 LUTRAM_MAX_BITS = 1024  # memories up to this size go to LUTRAM / registers (design)
 
 # default ALLOCATION limits of the factor datapath, per kernel operator kind (design: the sim
@@ -133,7 +132,7 @@ class Memory:
 @dataclass(frozen=True)
 class Channel:
     name: str
-    kind: str  # "stream" (FIFO) or "pingpong"
+    kind: str  # "stream" (FIFO), "pingpong", or "buffer" (written by a region, read by the next)
     depth: int
     width: int
     producer: str
@@ -280,23 +279,24 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         2 if sched.structure_class == "chain" and sched.ordering == "two-ended" else 1)
     sets = max(1, min(sets, widest))
     damping = program.solver.method == "lm"
+    max_rows = _sizes(program)["MAX_ROWS"]
     for s in range(sets):
         units.append(Unit(f"qr{s}_evaluate", "Householder vector of a column", 1,
                           (("add", 2), ("mul", 2), ("div", 1), ("sqrt", 1))))
         units.append(Unit(f"qr{s}_update", "apply the reflector to a column", opts.units,
                           (("add", 1), ("mul", 1))))
         units.append(Unit(f"qr{s}_backsub", "back-substitution", 1, (("add", 1), ("mul", 2))))
-        # the emitted network of one column (accel.cpp.jinja's qr_column): Evaluate streams its
-        # reflector to each Update unit, the owner of the next column streams it to qr_next,
-        # which fills the next Evaluate's column buffer (ping-pong between columns)
+        # the emitted network of one reflection (include/fgc_qr.h's qr_reflection): broadcast
+        # streams the reflector to each Update unit, every unit streams the next column (its
+        # owner's) to Evaluate, which writes the reflector buffer the next region broadcasts
         for u in range(opts.units):
-            channels.append(Channel(f"qr{s}_v{u}", "stream", STREAM_DEPTH, ops.word_bits + 32,
-                                    f"qr{s}_evaluate", f"qr{s}_update{u}"))
+            channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
+                                    ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
         for u in range(opts.units):
-            channels.append(Channel(f"qr{s}_next{u}", "stream", STREAM_DEPTH, ops.word_bits,
-                                    f"qr{s}_update{u}", f"qr{s}_next"))
-        channels.append(Channel(f"qr{s}_col", "pingpong", 2, ops.word_bits, f"qr{s}_next",
-                                f"qr{s}_evaluate"))
+            channels.append(Channel(f"qr{s}_col{u}", "stream", max_rows, ops.word_bits,
+                                    f"qr{s}_update{u}", f"qr{s}_evaluate"))
+        channels.append(Channel(f"qr{s}_vbuf", "buffer", max_rows + 2, ops.word_bits + 32,
+                                f"qr{s}_evaluate", f"qr{s}_broadcast"))
     # per step: Evaluate of column k+1 overlaps Update of column k -> one process per step
     step_proc = []
     max_words = 0
@@ -336,6 +336,14 @@ def _qr(program, opts, ops, units, memories, channels, phases):
     memories.append(Memory("r_store", program.storage.steps[-1].words, ops.word_bits, sets))
 
 
+def _sizes(program) -> dict:
+    """The emitted tables' sizes (MAX_ROWS, MAX_W, ...): the unit headers' CFG constants."""
+    from .tables import build_tables
+    t = build_tables(program, damped=program.solver.method == "lm",
+                     cholesky=program.solver.linear == "cholesky")
+    return dict(t.constants)
+
+
 def _assign(procs, sets, tag, li):
     """Independent steps of one level on ``sets`` unit sets, longest first (one process/set)."""
     loads = [[] for _ in range(sets)]
@@ -363,10 +371,10 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
              ops.mul.latency + ops.add.latency),)),), linear=True))
     units.append(Unit("cpe", "Cholesky process element: Evaluate + Update", c,
                       (("add", 1), ("mul", 1), ("div", 1), ("sqrt", 1)), extra_dsp=1))
-    # the emitted cascade (accel.cpp.jinja's cpe_round): feed -> cpe0 -> ... -> drain
+    # the emitted cascade (include/fgc_cpe.h's cpe_round): feed -> cpe0 -> ... -> drain
     for i in range(c + 1):
-        channels.append(Channel(f"cpe_link{i}", "stream", STREAM_DEPTH, ops.word_bits,
-                                "cpe_feed" if i == 0 else f"cpe{i - 1}",
+        channels.append(Channel(f"cpe_link{i}", "stream", _sizes(program)["MAX_W"],
+                                ops.word_bits, "cpe_feed" if i == 0 else f"cpe{i - 1}",
                                 f"cpe{i}" if i < c else "cpe_drain"))
     # a round streams the trailing lower triangle of [H | g] through the cascade, one word a
     # cycle; CPE j computes column j of the round (sqrt + divide) and updates the rest
@@ -438,13 +446,14 @@ def unit_sets(plan: AcceleratorPlan) -> int:
 
 
 def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Channel, ...]]:
-    """The dataflow processes and streams the emitter prints for ``plan``'s linear solver:
-    per QR unit set Evaluate, n_u Update units and the next-column forwarding; for Cholesky the
-    feed, the #CPE process elements and the drain. Streams are the plan's stream channels."""
+    """The dataflow processes and streams the emitter prints for ``plan``'s linear solver (the
+    unit headers' regions): per QR unit set broadcast, n_u Update units and Evaluate; for
+    Cholesky the feed, the #CPE process elements and the drain. Streams are the plan's stream
+    channels."""
     if plan.linear == "qr":
         procs = tuple(p for s in range(unit_sets(plan)) for p in (
-            f"qr{s}_evaluate", *(f"qr{s}_update{u}" for u in range(plan.options.units)),
-            f"qr{s}_next"))
+            f"qr{s}_broadcast", *(f"qr{s}_update{u}" for u in range(plan.options.units)),
+            f"qr{s}_evaluate"))
     else:
         procs = ("cpe_feed", *(f"cpe{i}" for i in range(plan.options.cpe)), "cpe_drain")
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
