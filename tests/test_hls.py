@@ -173,7 +173,7 @@ def test_fixed_point_without_ap_types_is_a_clear_error(tmp_path, pose3_program, 
     monkeypatch.setattr(importlib.util, "find_spec",
                         lambda name, *a: None if name == "hls4ml" else real(name, *a))
     with pytest.raises(HlsConfigError, match="hls4ml"):
-        emit(pose3_program, tmp_path, HlsConfig(scalar="ap_fixed<32,12>"))
+        emit(pose3_program, tmp_path, HlsConfig(scalar="ap_fixed<32,12>"), design="cpu")
 
 
 # ---- names -----------------------------------------------------------------------------------
@@ -270,3 +270,10 @@ def test_top_function_has_interfaces(tmp_path, pose3_program):
     assert all(p.read_text().startswith("// generated from template")
                or p.read_text().startswith("# generated from template") for p in project.files)
     assert np.all([len(line) < 4000 for line in kernel.splitlines()])
+
+
+def test_fixed_point_accelerator_is_refused_with_the_reason(tmp_path, pose3_program):
+    with pytest.raises(HlsConfigError, match=r"float or double only: ap_fixed<40, ?16> has no"):
+        emit(pose3_program, tmp_path, HlsConfig(scalar="ap_fixed<40,16>"))
+    with pytest.raises(HlsConfigError, match="unknown HLS design 'fpga'"):
+        emit(pose3_program, tmp_path, HlsConfig(), design="fpga")

@@ -79,17 +79,18 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     file names and the top function ``<name>_top``. Emitting the same Program twice gives
     byte-identical files. Every synthesised file is linted (:func:`lint_project`).
     """
+    if design not in DESIGNS:
+        raise HlsConfigError(f"unknown HLS design {design!r} (known: {', '.join(DESIGNS)})")
     config = for_program(program, config or HlsConfig())
     config.check()
+    if design == "accel":
+        check_accel(program, config)
     check_limits(program, config)
     check_clock(program.solver.clock_mhz, config)
     project = identifier(name or program.name)
-    if design not in DESIGNS:
-        raise HlsConfigError(f"unknown HLS design {design!r} (known: {', '.join(DESIGNS)})")
     files = DESIGNS[design]
     context = _context(program, config, project, vector=design == "cpu")
     if design == "accel":
-        check_accel(program, config)
         context.update(accel_context(program, config, context))
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
                              undefined=jinja2.StrictUndefined, trim_blocks=True,
