@@ -241,7 +241,8 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
                                (Loop(f"{name}_{mode}_instances", instances, ii, depth),)))
         words = b.residual_dim * (1 + sum(b.variable_dims)) * instances
         memories.append(Memory(f"ab_{i}", words, ops.word_bits, 1))
-    phases.append(Phase("factor_jacobian", True, tuple(jac)))
+    # the emitted instance loops (evaluate_<b>, cost_of_<b>) run one block type after another
+    phases.append(Phase("factor_jacobian", False, tuple(jac)))
 
     if program.solver.linear == "qr":
         _qr(program, opts, les, units, memories, channels, phases)
@@ -256,14 +257,18 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
                       (("add", 3), ("mul", 4), ("sqrt", 1), ("div", 1), ("trig", 2))))
     phases.append(Phase("state_update", False, (
         Process("retract", "state_update", (Loop("variables", n_var, 1, retract_depth),)),)))
-    phases.append(Phase("factor_cost", True, tuple(cost)))
+    phases.append(Phase("factor_cost", False, tuple(cost)))
     lm_depth = ops.div.latency + 2 * ops.mul.latency + 2 * ops.add.latency + ops.compare.latency
     units.append(Unit("lm_control", "gain ratio, μ update, stopping rules", 1,
                       (("add", 1), ("mul", 1), ("div", 1), ("compare", 1))))
     phases.append(Phase("lm_control", False, (
         Process("decide", "lm_control", (Loop("decision", 1, 1, lm_depth),)),)))
-    memories.append(Memory("state", sum(v.storage_dim for v in program.variables),
-                           ops.word_bits, 1))
+    n_x = sum(v.storage_dim for v in program.variables)
+    n_t = sum(v.dim for v in program.variables)
+    memories.append(Memory("state", n_x, ops.word_bits, 1))  # X
+    memories.append(Memory("state_trial", n_x, ops.word_bits, 1))  # X_TRIAL
+    memories.append(Memory("gradient_delta", 2 * n_t, ops.word_bits, 2))  # G, DELTA
+    memories.append(Memory("data", _sizes(program)["N_DATA"], ops.word_bits, 1))  # DATA_BUF
     return AcceleratorPlan(program.name, program.solver.linear, program.solver.precision,
                            program.solver.clock_mhz, opts, tuple(units), tuple(memories),
                            tuple(channels), tuple(phases), ops)
@@ -285,7 +290,6 @@ def _qr(program, opts, ops, units, memories, channels, phases):
                           (("add", 2), ("mul", 2), ("div", 1), ("sqrt", 1))))
         units.append(Unit(f"qr{s}_update", "apply the reflector to a column", opts.units,
                           (("add", 1), ("mul", 1))))
-        units.append(Unit(f"qr{s}_backsub", "back-substitution", 1, (("add", 1), ("mul", 2))))
         # the emitted network of one reflection (include/fgc_qr.h's qr_reflection): broadcast
         # streams the reflector to each Update unit, every unit streams the next column (its
         # owner's) to Evaluate, which writes the reflector buffer the next region broadcasts
@@ -299,7 +303,6 @@ def _qr(program, opts, ops, units, memories, channels, phases):
                                 f"qr{s}_evaluate", f"qr{s}_broadcast"))
     # per step: Evaluate of column k+1 overlaps Update of column k -> one process per step
     step_proc = []
-    max_words = 0
     for st in sched.steps:
         sweep = householder_sweep(stacked_pattern(program, st, damping),
                                   st.frontal_dim + st.new_factor_rows)
@@ -315,7 +318,6 @@ def _qr(program, opts, ops, units, memories, channels, phases):
             nxt = sweep[k + 1][0] if k + 1 < len(sweep) else 0
             nxt_eval = dot_loop("next", nxt, ops).cycles + ev_tail if nxt else 0
             loops.append(Loop(f"s{st.index}_reflection{k}", 1, 1, max(update, nxt_eval)))
-            max_words = max(max_words, rows * cols)
         step_proc.append((st, Process(f"qr_step{st.index}", "qr_update", tuple(loops))))
     for li, level in enumerate(sched.levels):
         procs = _assign([p for st, p in step_proc if st.index in level], sets, "qr", li)
@@ -328,12 +330,26 @@ def _qr(program, opts, ops, units, memories, channels, phases):
             loops = [Loop(f"bs{i}_row{t}", 1, 1, max(d - t - 1 + p, chain))
                      for d, p in zip(st.frontal_dims, st.parent_dims, strict=True)
                      for t in range(d)]
-            procs.append(Process(f"backsub_step{i}", "qr_backsub", tuple(loops)))
-        phases.append(Phase(f"backsub_level{li}", True, _assign(procs, sets, "bs", li),
-                            linear=True))
-    for s in range(sets):
-        memories.append(Memory(f"qr{s}_work", max_words, ops.word_bits, opts.units))
-    memories.append(Memory("r_store", program.storage.steps[-1].words, ops.word_bits, sets))
+            procs.append(Process(f"backsub_step{i}", "backsub", tuple(loops)))
+        # the emitted back_substitute: one cond_backsub after another, root first
+        phases.append(Phase(f"backsub_level{li}", False, tuple(procs), linear=True))
+    units.append(Unit("backsub", "back-substitution (cond_backsub)", 1,
+                      (("add", 1), ("mul", 2))))
+    sizes = _sizes(program)
+    cols = sizes["MAX_W"] + 1
+    local = -(-cols // opts.units)
+    for s in range(sets):  # accel.cpp.jinja's WORK<s>, CONDBUF<s>, UPDBUF<s>
+        memories.append(Memory(f"qr{s}_work", opts.units * sizes["MAX_ROWS"] * local,
+                               ops.word_bits, opts.units))
+        memories.append(Memory(f"qr{s}_condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
+        memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
+    _solver_memories(sizes, ops, memories)
+
+
+def _solver_memories(sizes, ops, memories) -> None:
+    """The linear solver's stores: conditionals (R | d) and the factors passed to parents."""
+    memories.append(Memory("cond", sizes["N_COND"], ops.word_bits, 1))
+    memories.append(Memory("nf", sizes["N_NF"], ops.word_bits, 1))
 
 
 def _sizes(program) -> dict:
@@ -392,7 +408,14 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
     phases.append(Phase("trisolve", False, (Process("backward", "trisolve", (
         Loop("rows", n, max(1, math.ceil(n / 2)), solve.depth + ops.div.latency),)),),
         linear=True))
-    memories.append(Memory("hessian", n * (n + 1) // 2 + n, ops.word_bits, max(1, c // 4)))
+    sizes = _sizes(program)
+    cols = sizes["MAX_W"] + 1
+    # accel.cpp.jinja's GRAM, HF, CONDBUF, UPDBUF (the frontal matrix of one step at a time)
+    memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
+    memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    memories.append(Memory("condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
+    memories.append(Memory("updbuf", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    _solver_memories(sizes, ops, memories)
 
 
 # --------------------------------------------------------------------------------------------
