@@ -236,6 +236,8 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
                                         ("cost", b.ops_cost, b.cost_kernel, cost)):
             ii = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
                             for k, n in allocated])
+            if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
+                ii = max(ii, ops.add.latency)  # simulator's): a recurrence through the adder
             depth = critical_path(text, sim_ops)
             out.append(Process(f"{name}_{mode}", name,
                                (Loop(f"{name}_{mode}_instances", instances, ii, depth),)))

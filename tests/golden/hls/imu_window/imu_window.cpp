@@ -2528,10 +2528,10 @@ T noise_2(T noise) {
     return noise;
 }
 
-// block 2, cost mode: `total` plus the cost of its instances in order, one every II=1 cycles
+// block 2, cost mode: `total` plus the cost of its instances in order, one every II=8 cycles
 T cost_of_2(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=8
         const int f = BLOCK2_INSTANCES[i];
         T in[3], dat[4], half[1];
         T unused[12];
@@ -2615,10 +2615,10 @@ T noise_3(T noise) {
     return noise;
 }
 
-// block 3, cost mode: `total` plus the cost of its instances in order, one every II=1 cycles
+// block 3, cost mode: `total` plus the cost of its instances in order, one every II=8 cycles
 T cost_of_3(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=8
         const int f = BLOCK3_INSTANCES[i];
         T in[6], dat[7], half[1];
         T unused[48];

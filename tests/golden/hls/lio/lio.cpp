@@ -2572,10 +2572,10 @@ T noise_1(T noise) {
     return noise;
 }
 
-// block 1, cost mode: `total` plus the cost of its instances in order, one every II=1 cycles
+// block 1, cost mode: `total` plus the cost of its instances in order, one every II=8 cycles
 T cost_of_1(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=8
         const int f = BLOCK1_INSTANCES[i];
         T in[3], dat[4], half[1];
         T unused[12];
@@ -2656,10 +2656,10 @@ T noise_2(T noise) {
     return noise;
 }
 
-// block 2, cost mode: `total` plus the cost of its instances in order, one every II=1 cycles
+// block 2, cost mode: `total` plus the cost of its instances in order, one every II=8 cycles
 T cost_of_2(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=8
         const int f = BLOCK2_INSTANCES[i];
         T in[6], dat[7], half[1];
         T unused[48];
@@ -3075,10 +3075,10 @@ T noise_4(T noise) {
     return noise;
 }
 
-// block 4, cost mode: `total` plus the cost of its instances in order, one every II=1 cycles
+// block 4, cost mode: `total` plus the cost of its instances in order, one every II=8 cycles
 T cost_of_4(const T x[N_X], T total) {
     for (int i = 0; i < 8; ++i) {
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=8
         const int f = BLOCK4_INSTANCES[i];
         T in[12], dat[4], half[1];
         T unused[24];
