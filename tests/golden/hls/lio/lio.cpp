@@ -3253,12 +3253,10 @@ struct LesConfig {
 // memory; qr_step runs one DATAFLOW region per reflection (qr_broadcast -> 4 qr_update units ->
 // qr_evaluate, 8 streams) and stores the conditional and the new factor. A schedule
 // level's steps go 2 at a time to the unit sets, side by side in one DATAFLOW region.
-L WORK0[N_UNITS][MAX_ROWS][LOCAL_COLS];  // unit set 0's banks
-#pragma HLS ARRAY_PARTITION variable=WORK0 complete dim=1
+L WORK0[N_UNITS][MAX_ROWS][LOCAL_COLS];  // unit set 0's banks (partitioned in qr_set0)
 L CONDBUF0[MAX_F * LesConfig::MAX_COLS];  // its step's conditional
 L UPDBUF0[LesConfig::MAX_COLS * LesConfig::MAX_COLS];  // its step's new factor
-L WORK1[N_UNITS][MAX_ROWS][LOCAL_COLS];  // unit set 1's banks
-#pragma HLS ARRAY_PARTITION variable=WORK1 complete dim=1
+L WORK1[N_UNITS][MAX_ROWS][LOCAL_COLS];  // unit set 1's banks (partitioned in qr_set1)
 L CONDBUF1[MAX_F * LesConfig::MAX_COLS];  // its step's conditional
 L UPDBUF1[LesConfig::MAX_COLS * LesConfig::MAX_COLS];  // its step's new factor
 
@@ -3266,6 +3264,7 @@ L UPDBUF1[LesConfig::MAX_COLS * LesConfig::MAX_COLS];  // its step's new factor
 void qr_set0(int rows, int f, int s, L work[N_UNITS][MAX_ROWS][LOCAL_COLS],
              L cond[MAX_F * LesConfig::MAX_COLS], L update[LesConfig::MAX_COLS * LesConfig::MAX_COLS],
              bool* singular) {
+#pragma HLS ARRAY_PARTITION variable=work complete dim=1
     fgc_units::qr_step<LesConfig>(work, rows, f, s, cond, update, singular);
 }
 
@@ -3273,6 +3272,7 @@ void qr_set0(int rows, int f, int s, L work[N_UNITS][MAX_ROWS][LOCAL_COLS],
 void qr_set1(int rows, int f, int s, L work[N_UNITS][MAX_ROWS][LOCAL_COLS],
              L cond[MAX_F * LesConfig::MAX_COLS], L update[LesConfig::MAX_COLS * LesConfig::MAX_COLS],
              bool* singular) {
+#pragma HLS ARRAY_PARTITION variable=work complete dim=1
     fgc_units::qr_step<LesConfig>(work, rows, f, s, cond, update, singular);
 }
 
