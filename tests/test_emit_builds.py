@@ -59,12 +59,16 @@ def build_both(seed: int, tmp_path) -> None:
     graph, solver, what = random_graph(seed)
     program = compile_graph(graph, solver, name=f"g{seed}")
     project = emit(program, tmp_path / f"g{seed}", HlsConfig(scalar="double"))
-    try:
-        run_csim(project, program, problem_data(graph, program))
-        make(project, "native")
-    except HlsBuildError as exc:
-        log = (project.directory / "build.log").read_text()
-        pytest.fail(f"{what}: {exc}\n{log[-3000:]}")
+    # the native library is the CPU design (design="cpu"), a project of its own
+    cpu = emit(program, tmp_path / f"g{seed}_cpu", HlsConfig(scalar="double"), design="cpu")
+    for built, run in ((project, lambda: run_csim(project, program,
+                                                  problem_data(graph, program))),
+                       (cpu, lambda: make(cpu, "native"))):
+        try:
+            run()
+        except HlsBuildError as exc:
+            log = (built.directory / "build.log").read_text()
+            pytest.fail(f"{what}: {exc}\n{log[-3000:]}")
 
 
 # Representative: each type once, each solver choice at least once, chains and loops, and the
@@ -96,9 +100,9 @@ def test_reported_failures_build(t, n, method, linear, tmp_path):
     TILE); GN + QR on a Pose2 chain of 7 on an unused operand pointer in a step pattern."""
     graph = _chain(t, n)
     program = compile_graph(graph, SolverConfig(method=method, linear=linear), name="r")
-    project = emit(program, tmp_path, HlsConfig(scalar="double"))
+    project = emit(program, tmp_path / "accel", HlsConfig(scalar="double"))
     run_csim(project, program, problem_data(graph, program))
-    make(project, "native")
+    make(emit(program, tmp_path / "cpu", HlsConfig(scalar="double"), design="cpu"), "native")
 
 
 def test_build_failure_is_one_line_naming_the_log(tmp_path):
@@ -109,7 +113,7 @@ def test_build_failure_is_one_line_naming_the_log(tmp_path):
     source = project.directory / "r.cpp"
     source.write_text(source.read_text() + "\nthis is not C++;\n")
     with pytest.raises(HlsBuildError) as info:
-        make(project, "native")
+        make(project, "csim")
     message = str(info.value)
     assert "\n" not in message and "internal error" in message
     assert str(project.directory / "build.log") in message
