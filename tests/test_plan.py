@@ -159,10 +159,13 @@ def test_cpe_cascade_follows_cpe(chol_chain):
         assert plan.unit("cpe").instances == c
         assert sum(1 for ch in plan.channels if ch.name.startswith("cpe_link")) == c + 1
         cascade = next(ph for ph in plan.phases if ph.name == "cholesky").processes[0]
-        assert len(cascade.loops) == -(-n // c)  # n / #CPE rounds
-        # round r streams the trailing m = n - r·c lower triangle plus g: m(m+1)/2 + m words
-        assert [lp.trip for lp in cascade.loops] == [
-            (n - r * c) * (n - r * c + 1) // 2 + n - r * c for r in range(-(-n // c))]
+        # per step (multifrontal, as emitted) ⌈f / #CPE⌉ rounds; round r streams the step's
+        # trailing m = w - r·c rows of [H | g], upper triangle plus g: m(m+1)/2 + m words
+        want = []
+        for st in chol_chain.schedule.steps:
+            w, f = st.frontal_dim + st.separator_dim, st.frontal_dim
+            want += [(w - r * c) * (w - r * c + 1) // 2 + w - r * c for r in range(-(-f // c))]
+        assert [lp.trip for lp in cascade.loops] == want
     c1, c3 = plan_cost(plans[1]), plan_cost(plans[3])
     assert c3.dsp - c1.dsp == 2 * 6  # a float32 CPE: add 2 + mul 3 + 1 extra = 6 DSP
     assert c3.cycles < c1.cycles

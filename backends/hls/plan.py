@@ -324,17 +324,7 @@ def _qr(program, opts, ops, units, memories, channels, phases):
     for li, level in enumerate(sched.levels):
         procs = _assign([p for st, p in step_proc if st.index in level], sets, "qr", li)
         phases.append(Phase(f"qr_level{li}", True, procs, linear=True))
-    chain = 2 * ops.mul.latency + ops.add.latency
-    for li, level in enumerate(sched.back_substitution):
-        procs = []
-        for i in level:
-            st = sched.steps[i]
-            loops = [Loop(f"bs{i}_row{t}", 1, 1, max(d - t - 1 + p, chain))
-                     for d, p in zip(st.frontal_dims, st.parent_dims, strict=True)
-                     for t in range(d)]
-            procs.append(Process(f"backsub_step{i}", "backsub", tuple(loops)))
-        # the emitted back_substitute: one cond_backsub after another, root first
-        phases.append(Phase(f"backsub_level{li}", False, tuple(procs), linear=True))
+    _backsub_phases(program, ops, phases, "backsub")
     units.append(Unit("backsub", "back-substitution (cond_backsub)", 1,
                       (("add", 1), ("mul", 2))))
     sizes = _sizes(program)
@@ -346,6 +336,22 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         memories.append(Memory(f"qr{s}_condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
         memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
     _solver_memories(sizes, ops, memories)
+
+
+def _backsub_phases(program, ops, phases, unit) -> None:
+    """The emitted back_substitute: one cond_backsub per step, root first, one after another;
+    each row bounded by its multiply-multiply-add chain or its stream of separator products."""
+    sched = program.schedule
+    chain = 2 * ops.mul.latency + ops.add.latency
+    for li, level in enumerate(sched.back_substitution):
+        procs = []
+        for i in level:
+            st = sched.steps[i]
+            loops = [Loop(f"bs{i}_row{t}", 1, 1, max(d - t - 1 + p, chain))
+                     for d, p in zip(st.frontal_dims, st.parent_dims, strict=True)
+                     for t in range(d)]
+            procs.append(Process(f"backsub_step{i}", unit, tuple(loops)))
+        phases.append(Phase(f"backsub_level{li}", False, tuple(procs), linear=True))
 
 
 def _solver_memories(sizes, ops, memories) -> None:
@@ -374,7 +380,6 @@ def _assign(procs, sets, tag, li):
 
 
 def _cholesky(program, opts, ops, units, memories, channels, phases):
-    n = program.storage.columns
     c = opts.cpe
     # HGC: H = JᵀJ, g = Jᵀr over each instance's dense block rows × columns
     macs = 0
@@ -394,22 +399,22 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
         channels.append(Channel(f"cpe_link{i}", "stream", _sizes(program)["MAX_W"],
                                 ops.word_bits, "cpe_feed" if i == 0 else f"cpe{i - 1}",
                                 f"cpe{i}" if i < c else "cpe_drain"))
-    # a round streams the trailing lower triangle of [H | g] through the cascade, one word a
-    # cycle; CPE j computes column j of the round (sqrt + divide) and updates the rest
+    # per elimination step (one after another, as eliminate_all runs them), rounds of #CPE
+    # pivots: round r streams the step's trailing m = w - r #CPE rows of [H | g] (upper
+    # triangle + g: m (m + 1) / 2 + m words) through the cascade, one word a cycle
     cpe_depth = ops.sqrt.latency + ops.div.latency + ops.mul.latency + ops.add.latency
     rounds = []
-    for r in range(math.ceil(n / c)):
-        m = n - r * c
-        words = m * (m + 1) // 2 + m
-        rounds.append(Loop(f"round{r}", words, 1, c * cpe_depth))
+    for st in program.schedule.steps:
+        w, f = st.frontal_dim + st.separator_dim, st.frontal_dim
+        for r in range(math.ceil(f / c)):
+            m = w - r * c
+            rounds.append(Loop(f"s{st.index}_round{r}", m * (m + 1) // 2 + m, 1,
+                               c * cpe_depth))
     phases.append(Phase("cholesky", True, (Process("cascade", "cpe", tuple(rounds)),),
                         linear=True))
-    units.append(Unit("trisolve", "Lᵀδ = z (Lz = g runs in the cascade)", 1,
-                      (("add", 1), ("mul", 1), ("div", 1))))
-    solve = dot_loop("rows", n, ops)
-    phases.append(Phase("trisolve", False, (Process("backward", "trisolve", (
-        Loop("rows", n, max(1, math.ceil(n / 2)), solve.depth + ops.div.latency),)),),
-        linear=True))
+    units.append(Unit("trisolve", "back-substitution (cond_backsub; Lz = g rides the cascade)",
+                      1, (("add", 1), ("mul", 1), ("div", 1))))
+    _backsub_phases(program, ops, phases, "trisolve")
     sizes = _sizes(program)
     cols = sizes["MAX_W"] + 1
     # accel.cpp.jinja's GRAM, HF, CONDBUF, UPDBUF (the frontal matrix of one step at a time)
