@@ -5,9 +5,11 @@
     result = hls.run_csim(project, program, problem_data(graph, program))   # make csim
     result = hls.native.run(program, problem_data(graph, program))          # ctypes
 
-Emitted files: ``<name>.h``/``<name>.cpp`` (the synthesisable kernel ``<name>_top``),
-``tb_<name>.cpp`` (testbench), ``native_<name>.cpp`` (C entry points), ``run_hls.tcl`` and a
-``Makefile`` (``make csim``, ``make native``).
+Emitted files (the dataflow accelerator, docs/hls.md): ``<name>.h``/``<name>.cpp`` (the
+synthesisable kernel ``<name>_top``), ``tb_<name>.cpp`` (testbench), ``run_hls.tcl``, a
+``Makefile`` (``make csim``), the unit headers in ``include/`` and the csim stand-in for
+``hls_stream.h`` in ``csim_include/``. ``emit(..., design="cpu")`` writes the fast CPU program
+instead (``native_<name>.cpp``, ``make native``), which :mod:`.native` builds.
 """
 
 from fgc_backends.hls import native

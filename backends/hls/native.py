@@ -1,6 +1,7 @@
 """The native fast path: the emitted C++ built as a shared library and called through ctypes.
 
-The same kernel object the C simulation links (``make native``) is wrapped by ``native_<name>.cpp``,
+The CPU design of the emitter (``emit(..., design="cpu")``: kernel.cpp.jinja, not the dataflow
+accelerator the HLS project holds), built by ``make native`` and wrapped by ``native_<name>.cpp``,
 whose ``fgc_run`` calls ``<name>_top`` on the caller's double arrays (converted to the scalar
 type in static buffers when that is not double): the solver allocates nothing. :func:`run` emits
 into a content-addressed folder under fgc's cache directory, builds once and keeps the loaded
