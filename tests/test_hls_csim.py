@@ -296,3 +296,53 @@ def test_fixed_point_builds_and_runs(tmp_path):
     project = emit(program, tmp_path, HlsConfig(scalar="ap_fixed<40,16>"), design="cpu")
     result = run_csim(project, program, problem_data(graph, program))
     assert result.final_error < result.initial_error
+
+
+COUNT_MAIN = r"""
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+#include "fgc_cycles.h"
+// at exit: per DATAFLOW region name, the distinct (process, instance) pairs of its first entry
+struct Dump {
+    Dump() { fgc_cycles::state(); }  // constructed first, so destroyed after this
+    ~Dump() {
+        std::map<std::string, std::set<std::pair<std::string, int> > > first;
+        std::map<std::string, long> first_id;
+        for (const auto& r : fgc_cycles::log()) {
+            if (r.region < 0) continue;
+            auto it = first_id.find(r.region_name);
+            if (it == first_id.end()) it = first_id.emplace(r.region_name, r.region).first;
+            if (it->second == r.region) first[r.region_name].insert({r.process, r.instance});
+        }
+        for (const auto& kv : first) {
+            std::printf("region %s %zu\n", kv.first.c_str(), kv.second.size());
+        }
+    }
+} dump_at_exit;
+"""
+
+
+@pytest.mark.parametrize("linear, option, value", [("qr", "units", 1), ("qr", "units", 3),
+                                                   ("cholesky", "cpe", 4)])
+def test_executed_network_is_the_plans(linear, option, value, tmp_path):
+    """The unit headers' cycle log (-DFGC_COUNT_CYCLES) of a C simulation run: the processes
+    that ran in one reflection / one CPE round are the plan's, n_u + 2 or #CPE + 2."""
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.plan import process_network
+    graph = lio.build(N=6) if linear == "qr" else pose_graph.build()
+    program = compile_graph(graph, SolverConfig(linear=linear, **{option: value}), name="net")
+    project = emit(program, tmp_path, HlsConfig(scalar="double"))
+    write_data(problem_data(graph, program), tmp_path / "data.txt")
+    (tmp_path / "count_main.cpp").write_text(COUNT_MAIN)
+    subprocess.run(["g++", "-std=c++17", "-O1", "-DFGC_COUNT_CYCLES", "-Wno-unknown-pragmas",
+                    "-I", "csim_include", "-I", "include", "tb_net.cpp", "net.cpp",
+                    "count_main.cpp", "-o", "tb_count"], cwd=tmp_path, check=True)
+    out = subprocess.run(["./tb_count", "data.txt", "result.txt"], cwd=tmp_path, check=True,
+                         capture_output=True, text=True).stdout
+    ran = dict((r, int(n)) for _, r, n in re.findall(r"^(region) (\w+) (\d+)$", out, re.M))
+    procs, _ = process_network(accel_plan(program, project.config))
+    region = "qr_reflection" if linear == "qr" else "cpe_round"
+    sets = 2 if linear == "qr" else 1  # LIO is a two-ended chain: two unit sets
+    assert ran == {region: value + 2} and len(procs) == sets * (value + 2)
