@@ -340,7 +340,9 @@ def hls_householder(tmp_path_factory):
         pytest.skip("no g++")
     folder = tmp_path_factory.mktemp("hh")
     program = compile_graph(chain(0.0, 0.1, n=3), SolverConfig(method="gn"))
-    project = hls.emit(program, folder / "project", hls.HlsConfig(scalar="float"))
+    # the CPU design's householder (the native solver's); the accelerator's QR is the unit
+    # header fgc_qr.h, tested by tests/test_hls_units.py
+    project = hls.emit(program, folder / "project", hls.HlsConfig(scalar="float"), design="cpu")
     source = folder / "driver.cpp"
     source.write_text(DRIVER.replace("KERNEL", str(project.directory / f"{project.name}.cpp")))
     subprocess.run(["g++", "-std=c++17", "-O2", "-ffp-contract=off", "-Wno-unknown-pragmas",

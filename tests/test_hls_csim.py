@@ -13,6 +13,8 @@ Tolerances:
 
 from __future__ import annotations
 
+import re
+import subprocess
 import sys
 from pathlib import Path
 
@@ -22,13 +24,12 @@ import pytest
 import fgc
 from fgc import noise
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data
+from fgc.datafile import problem_data, write_data
 from fgc.factors import BetweenFactor, PriorFactor
 from fgc.geometry import Pose3
 from fgc.program import SolverConfig
 from fgc_backends import sim
 from fgc_backends.hls import HlsConfig, HlsConfigError, emit, run_csim
-from fgc_backends.hls.config import ap_types_include
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "examples"))
@@ -156,7 +157,8 @@ def test_lanes_do_not_change_the_numbers(tmp_path):
     program = compile_graph(graph, SolverConfig(linear="qr"), name="lanes")
     data = problem_data(graph, program)
     results = [run_csim(emit(program, tmp_path / str(lanes), HlsConfig(scalar="double",
-                                                                        lanes=lanes)),
+                                                                        lanes=lanes),
+                             design="cpu"),
                         program, data) for lanes in (1, None)]
     assert results[0].final_error == results[1].final_error
     for key, value in results[0].values.items():
@@ -170,21 +172,61 @@ def test_heavy_cases_match_the_simulator(name, tmp_path_factory):
     _check_against_reference(name, program, result, reference, HEAVY_CASES[name][2])
 
 
-@pytest.mark.heavy
-def test_fixed_point_builds_and_runs(tmp_path):
-    try:
-        ap_types_include()
-    except HlsConfigError:
-        pytest.skip("ap_fixed needs the optional hls4ml package (pip install 'fgc[hls-fixed]')")
+def test_fixed_point_is_refused_with_the_reason(tmp_path):
     graph = pose_graph.build()
     program = compile_graph(graph, name="w100_fixed")
-    # LM's default damping bound (1e10) does not fit ±32768: refused, never wrapped round
-    with pytest.raises(HlsConfigError, match="LAMBDA_UPPER_BOUND"):
-        emit(program, tmp_path / "default", HlsConfig(scalar="ap_fixed<40,16>"))
-    project = emit(program, tmp_path, HlsConfig(scalar="ap_fixed<40,16>",
-                                                lambda_upper_bound=1e4))
-    data = problem_data(graph, program)
-    reference = sim.run(program, data, precision="float64")
-    result = run_csim(project, program, data, reference)  # the testbench's float tolerance
-    pos, rot, vec = pose_errors(program, result.values, reference.storage)
-    assert result.converged and pos <= POS_TOL and rot <= ROT_TOL, (pos, rot)
+    # the dataflow accelerator has no fixed-point units: refused with the reason, never wrapped
+    with pytest.raises(HlsConfigError, match="float or double only"):
+        emit(program, tmp_path / "fixed", HlsConfig(scalar="ap_fixed<40,16>"))
+
+
+COUNT_MAIN = r"""
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+#include "fgc_cycles.h"
+// at exit: per DATAFLOW region name, the distinct (process, instance) pairs of its first entry
+struct Dump {
+    Dump() { fgc_cycles::state(); }  // constructed first, so destroyed after this
+    ~Dump() {
+        std::map<std::string, std::set<std::pair<std::string, int> > > first;
+        std::map<std::string, long> first_id;
+        for (const auto& r : fgc_cycles::log()) {
+            if (r.region < 0) continue;
+            auto it = first_id.find(r.region_name);
+            if (it == first_id.end()) it = first_id.emplace(r.region_name, r.region).first;
+            if (it->second == r.region) first[r.region_name].insert({r.process, r.instance});
+        }
+        for (const auto& kv : first) {
+            std::printf("region %s %zu\n", kv.first.c_str(), kv.second.size());
+        }
+    }
+} dump_at_exit;
+"""
+
+
+@pytest.mark.parametrize("linear, option, value", [("qr", "units", 1), ("qr", "units", 3),
+                                                   ("cholesky", "cpe", 4)])
+def test_executed_network_is_the_plans(linear, option, value, tmp_path):
+    """The unit headers' cycle log (-DFGC_COUNT_CYCLES) of a C simulation run: the processes
+    that ran in one reflection / one CPE round are the plan's, n_u + 3 or #CPE + 2."""
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.plan import process_network
+    graph = lio.build(N=6) if linear == "qr" else pose_graph.build()
+    program = compile_graph(graph, SolverConfig(linear=linear, **{option: value}), name="net")
+    project = emit(program, tmp_path, HlsConfig(scalar="double"))
+    write_data(problem_data(graph, program), tmp_path / "data.txt")
+    (tmp_path / "count_main.cpp").write_text(COUNT_MAIN)
+    subprocess.run(["g++", "-std=c++17", "-O1", "-DFGC_COUNT_CYCLES", "-Wno-unknown-pragmas",
+                    "-I", "csim_include", "-I", "include", "tb_net.cpp", "net.cpp",
+                    "count_main.cpp", "-o", "tb_count"], cwd=tmp_path, check=True)
+    out = subprocess.run(["./tb_count", "data.txt", "result.txt"], cwd=tmp_path, check=True,
+                         capture_output=True, text=True).stdout
+    ran = dict((r, int(n)) for _, r, n in re.findall(r"^(region) (\w+) (\d+)$", out, re.M))
+    procs, _ = process_network(accel_plan(program, project.config))
+    region = "qr_reflection" if linear == "qr" else "cpe_round"
+    sets = 2 if linear == "qr" else 1  # LIO is a two-ended chain: two unit sets
+    # QR: broadcast, the Updates, Evaluate and collect; Cholesky: feed, the CPEs and drain
+    per_set = value + 3 if linear == "qr" else value + 2
+    assert ran == {region: per_set} and len(procs) == sets * per_set

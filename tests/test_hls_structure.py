@@ -21,7 +21,7 @@ import sympy as sp
 from fgc.compile import compile_graph
 from fgc.kernel import Kernel
 from fgc.program import SolverConfig
-from fgc_backends.hls import HlsConfigError
+from fgc_backends.hls import HlsConfig, HlsConfigError
 from fgc_backends.hls.blocks import NOISE_KINDS, block_contexts
 from fgc_backends.hls.printer import print_kernel
 from fgc_backends.hls.sparsity import TILE, ZERO, block_pattern
@@ -230,3 +230,79 @@ def test_kernels_print_for_lanes():
     assert scalar.intermediates == ("const T t0 = fgc_sqrt(in[0]) + in[0]*in[1];",)
     assert vector.intermediates == ("const V t0 = v_fgc_sqrt(in[0]) + in[0]*in[1];",)
     assert vector.outputs == scalar.outputs
+
+
+# ---- the dataflow accelerator: the emitted network is the plan's ------------------------------
+
+
+def _emit_accel(tmp_path, graph, name, **solver):
+    from fgc_backends.hls import HlsConfig, emit
+    program = compile_graph(graph, SolverConfig(**solver), name=name)
+    project = emit(program, tmp_path / f"{name}_{'_'.join(map(str, solver.values()))}",
+                   HlsConfig(scalar="double"))
+    return program, project.directory
+
+
+def _texts(directory, name, header):
+    return (directory / f"{name}.cpp").read_text(), (directory / "include" / header).read_text()
+
+
+@pytest.mark.parametrize("units", [1, 4, 8])
+def test_units_change_the_emitted_qr_network(tmp_path, units):
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import counts, read_network
+    from fgc_backends.hls.plan import process_network
+    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr", units=units)
+    kernel, header = _texts(out, "lio", "fgc_qr.h")
+    assert f"const int N_UNITS = {units};" in kernel
+    level = next(r for r in read_network(kernel) if r.function == "qr_level")
+    assert level.processes == ("qr_set0", "qr_set1")  # two-ended chain: two unit sets
+    (reflection,) = [r for r in read_network(header) if r.streams]
+    assert reflection.processes == ("qr_broadcast", "qr_update_units::run", "qr_evaluate",
+                                    "qr_collect")
+    procs, streams = process_network(accel_plan(program, HlsConfig()))
+    assert counts(kernel, header) == (len(procs), len(streams))
+    assert (len(procs), len(streams)) == ((units + 3) * 2, 2 * (3 * units + 1))
+    for p in procs:  # the comment block lists the plan's network
+        assert f"//   process {p}\n" in kernel
+
+
+@pytest.mark.parametrize("cpe", [5, 20])
+def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import counts, read_network
+    from fgc_backends.hls.plan import process_network
+    program, out = _emit_accel(tmp_path, pose_graph.build(), "w100", linear="cholesky", cpe=cpe)
+    kernel, header = _texts(out, "w100", "fgc_cpe.h")
+    assert f"const int N_CPE = {cpe};" in kernel
+    (region,) = read_network(header)
+    assert region.processes == ("cpe_feed", "cpe_cascade::run", "cpe_drain")
+    procs, streams = process_network(accel_plan(program, HlsConfig()))
+    assert counts(kernel, header) == (len(procs), len(streams)) == (cpe + 2, cpe + 1)
+    assert f"//   stream cpe_link{cpe} " in kernel
+
+
+def test_accelerator_kernel_has_no_host_only_code(tmp_path):
+    for linear in ("qr", "cholesky"):
+        _, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear=linear)
+        text = (out / "lio.cpp").read_text()
+        assert "__SYNTHESIS__" not in text and "LANES" not in text
+        assert "__attribute__" not in text and "nullptr" not in text
+        assert (out / "csim_include" / "hls_stream.h").exists()
+        assert "csim_include" in (out / "Makefile").read_text()
+        assert "csim_include" not in (out / "run_hls.tcl").read_text()
+
+
+def test_allocation_limits_are_the_plans(tmp_path):
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import allocations
+    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
+    plan = accel_plan(program, HlsConfig())
+    found = allocations((out / "lio.cpp").read_text())
+    assert set(found) == {f"factor_{b}" for b in range(len(program.blocks))}
+    for b in range(len(program.blocks)):
+        limits = dict(plan.unit(f"factor_{b}").operators)
+        ops = {n[1:]: lim for kind, n, lim in found[f"factor_{b}"] if kind == "operation"}
+        assert ops == {k: v for k, v in limits.items() if k in ("add", "mul", "div", "sqrt")}
+        assert all(n.startswith("d") for kind, n, _ in found[f"factor_{b}"]
+                   if kind == "operation")  # double: dadd, dmul, ...

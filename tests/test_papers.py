@@ -107,7 +107,7 @@ def test_blocked_hessian_by_hand(chol_chain):
     n = chol_chain.storage.columns
     # x1's rows reach back to x0 (between x0-x1), x2's to x1: lowest rows 5, 5, 5, 8 × 6
     assert hessian_envelope(chol_chain) == [5, 5, 5, 8, 8, 8, 8, 8, 8]
-    dense = build_plan(chol_chain)
+    dense = build_plan(chol_chain, PlanOptions.of(chol_chain, hessian_storage="dense"))
     blocked = build_plan(chol_chain, PlanOptions.of(chol_chain, hessian_storage="blocked"))
 
     def hessian_words(plan):
@@ -132,7 +132,7 @@ def test_blocked_hessian_by_hand(chol_chain):
 def test_storage_options_are_checked(qr_chain):
     with pytest.raises(PlanError, match="jacobian_storage must be one of whitened, raw"):
         build_plan(qr_chain, PlanOptions.of(qr_chain, jacobian_storage="packed"))
-    with pytest.raises(PlanError, match="hessian_storage must be one of dense, blocked"):
+    with pytest.raises(PlanError, match="hessian_storage must be one of frontal, dense, blocked"):
         build_plan(qr_chain, PlanOptions.of(qr_chain, hessian_storage="sparse"))
 
 

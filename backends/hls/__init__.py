@@ -4,9 +4,11 @@
     project = hls.emit(program, "out/", hls.HlsConfig(scalar="double"))
     result = hls.run_csim(project, program, problem_data(graph, program))   # make csim
 
-Emitted files: ``<name>.h``/``<name>.cpp`` (the synthesisable kernel ``<name>_top``),
-``tb_<name>.cpp`` (testbench), ``run_hls.tcl`` and a ``Makefile`` (``make csim``). The fast CPU
-solver is its own backend, :mod:`fgc_backends.native`.
+Emitted files (the dataflow accelerator, docs/hls.md): ``<name>.h``/``<name>.cpp`` (the
+synthesisable kernel ``<name>_top``), ``tb_<name>.cpp`` (testbench), ``run_hls.tcl``, a
+``Makefile`` (``make csim``), the unit headers in ``include/`` and the csim stand-in for
+``hls_stream.h`` in ``csim_include/``. The fast CPU solver is its own backend,
+:mod:`fgc_backends.native`.
 """
 
 from fgc_backends.hls.build import HlsBuildError, make, run_csim

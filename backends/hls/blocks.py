@@ -90,19 +90,21 @@ class BlockContext:
         return self.d + 1
 
 
-def block_contexts(program: Program) -> tuple[BlockContext, ...]:
-    """A :class:`BlockContext` per block type of ``program``."""
+def block_contexts(program: Program, vector: bool = True) -> tuple[BlockContext, ...]:
+    """A :class:`BlockContext` per block type of ``program``; ``vector``: kernels printed on V
+    (the CPU design's lanes), else on the scalar T (the dataflow accelerator)."""
     index = {v.key: i for i, v in enumerate(program.variables)}
     out = []
     for b, block in enumerate(program.blocks):
         instances = tuple(j for j, f in enumerate(program.factors) if f.block == b)
         first = program.factors[instances[0]]
         storage = [program.variables[index[k]].storage_dim for k in first.keys]
-        out.append(_block(b, block, storage, instances))
+        out.append(_block(b, block, storage, instances, vector))
     return tuple(out)
 
 
-def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, ...]):
+def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, ...],
+           vector: bool = True):
     variables, pos, col = [], 0, 0
     for k, (s, dim) in enumerate(zip(storage, block.variable_dims, strict=True)):
         variables.append(VarSlot(k, s, pos, dim, col))
@@ -123,11 +125,11 @@ def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, .
     members = [_with_tail(slot, *pattern.constant_tail(k)) for k, slot in enumerate(members)]
     kernel = block.kernel.kernel()
     jacobian = print_kernel(kernel, _input_names(len(kernel.inputs), pos), where,
-                            vector=True)
+                            vector=vector)
     targets = _targets(pattern, variables, jacobian.outputs)
     return BlockContext(b, comment(block.name), block.residual_dim, col, n_in, noise_in,
                         tuple(variables), tuple(members), instances, jacobian, targets,
-                        _cost(block, where, pos), pattern, pattern.tiles())
+                        _cost(block, where, pos, vector), pattern, pattern.tiles())
 
 
 def _with_tail(slot: MemberSlot, dense: int, entries) -> MemberSlot:
@@ -163,11 +165,11 @@ def _input_names(n: int, n_x: int) -> list[str]:
     return [f"in[{i}]" if i < n_x else f"dat[{i - n_x}]" for i in range(n)]
 
 
-def _cost(block: BlockSpec, where: str, n_x: int) -> PrintedKernel:
+def _cost(block: BlockSpec, where: str, n_x: int, vector: bool = True) -> PrintedKernel:
     """The cost kernel reduced to the members' ½‖W r‖² (robust losses are applied in C++)."""
     full = block.cost_kernel.kernel()
     m, n = block.residual_dim, len(block.members)
     outputs = tuple(sp.sympify(e) for e in full.outputs[m:m + n])
     kernel = Kernel(full.inputs, drop_dead(full.assignments, outputs), outputs)
     return print_kernel(kernel, _input_names(len(full.inputs), n_x), where + " cost",
-                        vector=True)
+                        vector=vector)

@@ -25,7 +25,6 @@ from fgc_backends.hls.config import (
     HlsConfigError,
     ap_types_include,
     check_clock,
-    check_fixed_constants,
     fixed_declaration,
 )
 from fgc_backends.hls.lint import lint_project
@@ -38,17 +37,13 @@ from fgc_backends.hls.special import SERIES_BELOW, coefficient_functions
 from fgc_backends.hls.steps import padded, step_patterns
 from fgc_backends.hls.tables import IntTable, build_tables, factor_data_words
 
-# template → emitted file name ({name} is the project identifier)
-FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
+# template → emitted file name ({name} is the project identifier): the dataflow accelerator the
+# plan describes (docs/hls.md). The CPU program is the native backend's (fgc_backends.native).
+FILES = (("accel.h.jinja", "{name}.h"), ("accel.cpp.jinja", "{name}.cpp"),
          ("tb.cpp.jinja", "tb_{name}.cpp"), ("run_hls.tcl.jinja", "run_hls.tcl"),
          ("Makefile.jinja", "Makefile"))
-SYNTHESISED = ("kernel.h.jinja", "kernel.cpp.jinja")
-NATIVE_TEMPLATES = Path(__file__).resolve().parent.parent / "native" / "templates"
-# Today's kernel (kernel.*.jinja) predates the dataflow design of issue 18 and breaks the lint's
-# semantic rules (non-canonical DATAFLOW, function pointers, returned and reassigned pointers,
-# __SYNTHESIS__ branches): it is a legacy kernel, whose semantic issues are kept in
-# HlsProject.lint_issues instead of raising. A kernel that follows Vitis's rules sets this True.
-STRICT_LINT = False
+SYNTHESISED = ("accel.h.jinja", "accel.cpp.jinja")
+INCLUDE = Path(__file__).resolve().parent / "include"  # copied into every project
 HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
 # Xilinx's ap_types headers trip g++'s flow-based warnings once inlined into our code (-isystem
 # cannot silence those); the warnings are theirs, so only these two are relaxed for ap_fixed.
@@ -68,7 +63,7 @@ class HlsProject:
     name: str
     files: tuple[Path, ...]
     config: HlsConfig
-    # semantic lint issues a legacy kernel is allowed to keep (STRICT_LINT False); else empty
+    # semantic lint issues (empty: the emitter lints strictly and raises on any)
     lint_issues: tuple = ()
 
 
@@ -91,14 +86,13 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     """
     config = for_program(program, config or HlsConfig())
     config.check()
+    check_accel(program, config)
     check_limits(program, config)
     check_clock(program.solver.clock_mhz, config)
     project = identifier(name or program.name)
-    context = _context(program, config, project)
-    # kernel.h/kernel.cpp are read from the native backend's templates (the CPU program) until
-    # the dataflow design lands; this backend's own templates come first
-    loader = jinja2.FileSystemLoader([config.template_dir(), NATIVE_TEMPLATES])
-    env = jinja2.Environment(loader=loader,
+    context = _context(program, config, project, vector=False)
+    context.update(accel_context(program, config, context))
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
                              undefined=jinja2.StrictUndefined, trim_blocks=True,
                              lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
     env.tests["constant_literal"] = is_constant_literal
@@ -109,19 +103,17 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
         name_ = pattern.format(name=project)
         texts[name_] = env.get_template(template).render(**context, template=template,
                                                          file_name=name_)
-    if config.is_fixed_point:  # before anything is written: a constant that would saturate
-        check_fixed_constants(config.scalar_cxx, kernel_constants(
-            (FILES[i][1].format(name=project), texts[FILES[i][1].format(name=project)])
-            for i, (t, _) in enumerate(FILES) if t in SYNTHESISED))
     paths = []
     for name_, text in texts.items():
         path = out / name_
         path.write_text(text)
         paths.append(path)
+    units = _copy_headers(out)
     result = HlsProject(out, project, tuple(paths), config)
+    # the unit headers are synthesised with the kernel: the semantic rules read them together
     issues = lint_project(result, [out / FILES[i][1].format(name=project)
-                                   for i, (t, _) in enumerate(FILES) if t in SYNTHESISED],
-                          strict=STRICT_LINT)
+                                   for i, (t, _) in enumerate(FILES) if t in SYNTHESISED]
+                          + units, strict=True)
     return dataclasses.replace(result, lint_issues=tuple(issues))
 
 
@@ -145,6 +137,101 @@ def kernel_constants(files) -> list[tuple[str, float]]:
                 line = text.count("\n", 0, m.start()) + 1
                 out.append((f"T({m.group(1)}) at {file}:{line}", float(m.group(1))))
     return out
+
+
+def _copy_headers(out: Path) -> list[Path]:
+    """The csim stand-in for hls_stream.h into ``csim_include/`` and the unit headers into
+    ``include/``: the project builds on its own (only the Makefile puts csim_include on the
+    include path; Vitis has its own hls_stream.h). Returns the unit headers (synthesised, so
+    linted with the kernel; the stand-in is host code, never synthesised)."""
+    units = []
+    for sub, pattern in (("csim_include", "csim/*.h"), ("include", "*.h")):
+        (out / sub).mkdir(exist_ok=True)
+        for header in sorted(INCLUDE.glob(pattern)):
+            target = out / sub / header.name
+            target.write_bytes(header.read_bytes())
+            if sub == "include":
+                units.append(target)
+    return units
+
+
+def check_accel(program: Program, config: HlsConfig) -> None:
+    """Raise :class:`HlsConfigError` for what the dataflow design cannot be emitted for yet."""
+    if config.is_fixed_point:
+        raise HlsConfigError("the dataflow accelerator is emitted in float or double only: "
+                             f"{config.scalar_cxx} has no range-checked fixed-point path yet")
+
+
+_FUNCTIONS = re.compile(r"\b(fgc_(?:sin|cos|tan|atan2|atan|exp|log1p|log|asin|acos|tanh))\(")
+TRIG = ("fgc_sin", "fgc_cos")
+
+
+def _allocation(unit, scalar_cxx: str, text: str) -> tuple[tuple[str, int], ...]:
+    """``#pragma HLS ALLOCATION`` arguments of a factor datapath: the plan's operator limits as
+    Vitis operation names (f… float, d… double), trig and special as function instances."""
+    prefix = "f" if scalar_cxx == "float" else "d"
+    used = sorted(set(_FUNCTIONS.findall(text)))
+    out = []
+    for kind, limit in unit.operators:
+        if kind in ("add", "mul", "div", "sqrt"):
+            out.append((f"operation instances={prefix}{kind}", limit))
+        elif kind == "trig":
+            out += [(f"function instances={f}", limit) for f in used if f in TRIG]
+        elif kind == "special":
+            out += [(f"function instances={f}", limit) for f in used if f not in TRIG]
+    return tuple(out)
+
+
+class _AccelBlock:
+    """A block's template context plus what the plan says about its datapath."""
+
+    def __init__(self, block, allocation, ii_jacobian: int, ii_cost: int):
+        self._block = block
+        self.allocation = allocation
+        self.ii_jacobian = ii_jacobian
+        self.ii_cost = ii_cost
+
+    def __getattr__(self, name):
+        return getattr(self._block, name)
+
+
+def accel_plan(program: Program, config: HlsConfig):
+    """The accelerator plan the emitted design prints (the Program's n_u / #CPE, the config's
+    unit sets)."""
+    from fgc_backends.hls.plan import PlanOptions, build_plan
+    return build_plan(program, PlanOptions.of(program, unit_sets=config.unit_sets))
+
+
+def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
+    """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
+    from fgc_backends.hls.plan import process_network, unit_sets
+    plan = accel_plan(program, config)
+    phase = {ph.name: ph for ph in plan.phases}
+    iis = {p.name: p.loops[0].ii for name in ("factor_jacobian", "factor_cost")
+           for p in phase[name].processes}
+    blocks = []
+    for b in context["blocks"]:
+        text = "\n".join((*b.jacobian.intermediates, *b.jacobian.outputs,
+                          *b.cost.intermediates, *b.cost.outputs))
+        blocks.append(_AccelBlock(b, _allocation(plan.unit(f"factor_{b.index}"),
+                                                 config.scalar_cxx, text),
+                                  iis[f"factor_{b.index}_jacobian"], iis[f"factor_{b.index}_cost"]))
+    procs, streams = process_network(plan)
+    units = max(1, int(program.solver.units))
+    sets = unit_sets(plan)
+    option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}"
+    network = [f"{len(procs)} processes, {len(streams)} streams ({option})"]
+    network += [f"process {p}" for p in procs]
+    network += [f"stream {ch.name} depth={ch.depth}: {ch.producer} -> {ch.consumer}"
+                for ch in streams]
+    from fgc_backends.hls.operators import table
+    les = table("float32" if config.linear_cxx == "float" else "float64")
+    return {"les": {"partials": les.add.latency, "add": les.add.latency,
+                    "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
+                    "singular_eps": repr(10 * _epsilon(config.linear_cxx))},
+            "blocks": blocks, "network": network, "unit_sets": max(1, sets), "units": units,
+            "cpe": plan.options.cpe, "plan": plan,
+            "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
 
 
 def for_program(program: Program, config: HlsConfig) -> HlsConfig:
@@ -228,14 +315,14 @@ def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter
     }
 
 
-def _context(program: Program, config: HlsConfig, project: str) -> dict:
+def _context(program: Program, config: HlsConfig, project: str, vector: bool = True) -> dict:
     printer = HlsCodePrinter({})
     solver = _solver_context(program, config, printer)
     tables = build_tables(program, damped=solver["lm"], cholesky=solver["cholesky"])
     two_ended = program.schedule.ordering == "two-ended"
     unit_sets = config.unit_sets or (2 if two_ended else 1)
     include = [str(ap_types_include())] if config.is_fixed_point else []
-    blocks = block_contexts(program)
+    blocks = block_contexts(program, vector=vector)
     patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
                                            solver["cholesky"], solver["lm"])
     max_ld = padded(tables.constant("MAX_W") + 1)

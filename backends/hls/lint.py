@@ -46,6 +46,7 @@ deliberately small C-like parser: function definitions and their parameters, cal
 from __future__ import annotations
 
 import re
+import warnings
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
@@ -88,9 +89,19 @@ def strip_comments_and_strings(text: str) -> str:
     return pattern.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
 
 
+_COUNTING = re.compile(r"#\s*ifdef\s+FGC_COUNT_CYCLES\b(.*?)#\s*else\b", re.S)
+
+
+def synthesis_view(text: str) -> str:
+    """``text`` as synthesis sees it: the csim-only cycle counters (the ``#ifdef
+    FGC_COUNT_CYCLES`` branch of fgc_cycles.h, which only a counting testbench defines) blanked
+    out, lines kept."""
+    return _COUNTING.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+
+
 def lint_source(text: str, file: str = "<source>", synthesis: bool = True) -> list[LintIssue]:
     """All rule violations in one C++ source text."""
-    code = strip_comments_and_strings(text)
+    code = strip_comments_and_strings(synthesis_view(text))
     # pragmas stay visible to the trip-count rule, but their words are not code
     plain = re.sub(r"#\s*pragma[^\n]*", lambda m: " " * len(m.group(0)), code)
     issues = [LintIssue(file, _line(plain, m.start()), "alloc", f"dynamic allocation "
@@ -132,7 +143,8 @@ def _loops(code: str, file: str) -> list[LintIssue]:
         if len(parts) != 3 or not parts[1].strip():
             issues.append(LintIssue(file, line, "unbounded", "for loop without a condition"))
             continue
-        bound = _BOUND.match(re.sub(r"\b[a-z_]\w*::", "", parts[1]))  # fgc::N_X is constant
+        # fgc::N_X and a unit's CFG::MAX_ROWS are constants
+        bound = _BOUND.match(re.sub(r"\b(?:[a-z_]\w*|CFG)::", "", parts[1]))
         if bound and _CONSTANT.match(bound.group(2)) and re.search(r"[A-Z0-9]", bound.group(2)):
             continue
         body = code[close + 1:close + 400].lstrip()
@@ -149,9 +161,17 @@ def _recursion(code: str, file: str) -> list[LintIssue]:
         name = m.group(1)
         if name in _KEYWORDS:
             continue
+        # a constexpr helper (fgc_cycles.h's ceil_log2) is evaluated by the compiler on the
+        # constants it is given: no recursion is left for synthesis
+        if re.search(r"\bconstexpr\b[^;{}]*$", code[max(0, m.start() - 120):m.start() + 1]):
+            continue
         end = _matching(code, m.end() - 1, "{", "}")
         bodies.setdefault(name, (_line(code, m.start()), code[m.end():end]))
-    calls = {name: {c.group(1) for c in _CALL.finditer(body)} & bodies.keys()
+    # a call qualified through a template argument list (``unit<CFG, U + 1>::run(``) is a
+    # compile-time recursion over a constant, closed by a specialisation: each instance is a
+    # different function, which HLS instantiates (the unit headers' process networks)
+    calls = {name: {c.group(1) for c in _CALL.finditer(body)
+                    if not re.search(r">\s*::\s*$", body[:c.start()])} & bodies.keys()
              for name, (_, body) in bodies.items()}
     issues = []
     for name in sorted(bodies):
@@ -178,19 +198,30 @@ def lint_files(paths: Iterable[Path], synthesis: bool = True) -> list[LintIssue]
     return [i for p in paths for i in lint_source(Path(p).read_text(), Path(p).name, synthesis)]
 
 
+class HlsFitWarning(UserWarning):
+    """An emitted design is well formed but does not fit its part (the ``dsp`` rule)."""
+
+
 def lint_project(project, synthesised: Iterable[Path], strict: bool = True) -> list[LintIssue]:
     """Lint an emitted project: full rules on ``synthesised`` files, allocation/STL rules on the
     rest, and the semantic rules (:func:`semantic_issues`) on the synthesised files together;
-    raise :class:`HlsLintError` listing every issue. With ``strict=False`` (a legacy kernel that
-    predates the dataflow design) semantic issues do not raise; they are returned."""
+    raise :class:`HlsLintError` listing every issue. With ``strict=False`` semantic issues do not
+    raise; they are returned. The ``dsp`` rule (the ALLOCATION limits imply more DSP than the
+    part has) never raises: such a design is still a correct program whose C simulation checks
+    the numbers (a double LIO design, say), so it is emitted with an :class:`HlsFitWarning` and
+    the issue is returned; synthesis would not fit it."""
     synthesised = [Path(p) for p in synthesised]
     host = [p for p in project.files if p.suffix in (".cpp", ".h") and p not in synthesised]
     issues = lint_files(synthesised) + lint_files(host, synthesis=False)
     config = getattr(project, "config", None)
-    semantic = semantic_issues([(p.name, p.read_text()) for p in synthesised],
+    semantic = semantic_issues([(p.name, synthesis_view(p.read_text())) for p in synthesised],
                                part=getattr(config, "part", None),
                                scalar=getattr(config, "scalar_cxx", None))
-    raised = issues + semantic if strict else issues
+    fit = [i for i in semantic if i.rule == "dsp"]
+    for i in fit:
+        warnings.warn(f"{project.name}: {i.message}: the design does not fit its part",
+                      HlsFitWarning, stacklevel=3)
+    raised = issues + [i for i in semantic if i.rule != "dsp"] if strict else issues
     if raised:
         listing = "\n".join(str(i) for i in raised[:20])
         more = f"\n… and {len(raised) - 20} more" if len(raised) > 20 else ""

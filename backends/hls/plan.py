@@ -14,7 +14,11 @@ arithmetic of that plan:
 - resources are the units' allocated operators × instances + memories as placed (BRAM36 from
   words × width and banks, BRAM18 granularity; small memories in LUTRAM).
 
-Nothing here is emitted yet: the HLS templates do not read the plan (docs/hls.md).
+The HLS emitter prints this plan (accel.cpp.jinja): its units are the emitted processes, its
+channels the emitted streams (:func:`process_network`), its factor-datapath operators the
+``ALLOCATION`` limits and its instance-loop IIs the ``PIPELINE`` IIs (docs/hls.md). Options the
+emitter does not build (raw Jacobian storage, a whole-matrix dense or blocked Hessian) are
+what-if designs for the design space: :func:`emitted_options` says which.
 
 The QR and Cholesky timings follow the fixed unit headers the design calls
 (backends/hls/include/fgc_qr.h, fgc_cpe.h): :func:`qr_unit_loops` and :func:`cpe_round_depth`
@@ -45,7 +49,7 @@ DEFAULT_ALLOCATION = (("add", 16), ("mul", 24), ("div", 4), ("sqrt", 2), ("trig"
 
 
 JACOBIAN_STORAGE = ("whitened", "raw")
-HESSIAN_STORAGE = ("dense", "blocked")
+HESSIAN_STORAGE = ("frontal", "dense", "blocked")
 
 
 class PlanError(FgcError):
@@ -64,9 +68,11 @@ class PlanOptions:
     # ±1 entries are not stored), the residual and W's parameters, whitened while stacking
     # (a "whiten_stack" phase of multiply-accumulates before the linear solver)
     jacobian_storage: str = "whitened"
-    # Cholesky: "dense": the lower triangle of [H | g]; "blocked": only H's envelope in chain
-    # (variable) order - Cholesky fills no entry outside it - and the cascade streams only that
-    hessian_storage: str = "dense"
+    # Cholesky: "frontal" (emitted): each elimination step's frontal [H | g] through the cascade
+    # in turn (multifrontal); what-if, not emitted: "dense", the whole lower triangle of [H | g]
+    # as one matrix; "blocked", only H's envelope in chain (variable) order - Cholesky fills no
+    # entry outside it - and the cascade streams only that
+    hessian_storage: str = "frontal"
 
     @classmethod
     def of(cls, program: Program, **changes) -> PlanOptions:
@@ -144,7 +150,7 @@ class Memory:
 @dataclass(frozen=True)
 class Channel:
     name: str
-    kind: str  # "stream" (FIFO) or "pingpong"
+    kind: str  # "stream" (FIFO), "pingpong", or "buffer" (written by a region, read by the next)
     depth: int
     width: int
     producer: str
@@ -402,6 +408,8 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
                                         ("cost", b.ops_cost, b.cost_kernel, cost)):
             ii = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
                             for k, n in allocated])
+            if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
+                ii = max(ii, ops.add.latency)  # simulator's): a recurrence through the adder
             depth = critical_path(text, sim_ops)
             out.append(Process(f"{name}_{mode}", name,
                                (Loop(f"{name}_{mode}_instances", instances, ii, depth),)))
@@ -411,7 +419,8 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
         else:
             words = b.residual_dim * (1 + sum(b.variable_dims)) * instances
         memories.append(Memory(f"ab_{i}", words, ops.word_bits, 1))
-    phases.append(Phase("factor_jacobian", True, tuple(jac)))
+    # the emitted instance loops (evaluate_<b>, cost_of_<b>) run one block type after another
+    phases.append(Phase("factor_jacobian", False, tuple(jac)))
     if opts.jacobian_storage == "raw":
         # whitening while stacking: W·[J | -r] of each instance, one multiply-accumulate a
         # cycle in each of n_u lanes, before the solver reads the rows
@@ -434,14 +443,18 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
                       (("add", 3), ("mul", 4), ("sqrt", 1), ("div", 1), ("trig", 2))))
     phases.append(Phase("state_update", False, (
         Process("retract", "state_update", (Loop("variables", n_var, 1, retract_depth),)),)))
-    phases.append(Phase("factor_cost", True, tuple(cost)))
+    phases.append(Phase("factor_cost", False, tuple(cost)))
     lm_depth = ops.div.latency + 2 * ops.mul.latency + 2 * ops.add.latency + ops.compare.latency
     units.append(Unit("lm_control", "gain ratio, μ update, stopping rules", 1,
                       (("add", 1), ("mul", 1), ("div", 1), ("compare", 1))))
     phases.append(Phase("lm_control", False, (
         Process("decide", "lm_control", (Loop("decision", 1, 1, lm_depth),)),)))
-    memories.append(Memory("state", sum(v.storage_dim for v in program.variables),
-                           ops.word_bits, 1))
+    n_x = sum(v.storage_dim for v in program.variables)
+    n_t = sum(v.dim for v in program.variables)
+    memories.append(Memory("state", n_x, ops.word_bits, 1))  # X
+    memories.append(Memory("state_trial", n_x, ops.word_bits, 1))  # X_TRIAL
+    memories.append(Memory("gradient_delta", 2 * n_t, ops.word_bits, 2))  # G, DELTA
+    memories.append(Memory("data", _sizes(program)["N_DATA"], ops.word_bits, 1))  # DATA_BUF
     return AcceleratorPlan(program.name, program.solver.linear, program.solver.precision,
                            program.solver.clock_mhz, opts, tuple(units), tuple(memories),
                            tuple(channels), tuple(phases), ops)
@@ -457,32 +470,56 @@ def _qr(program, opts, ops, units, memories, channels, phases):
     sets = max(1, min(sets, widest))
     damping = program.solver.method == "lm"
     patterns = {st.index: stacked_pattern(program, st, damping) for st in sched.steps}
-    max_rows = max(pat.shape[0] for pat in patterns.values())
+    max_rows = _sizes(program)["MAX_ROWS"]
     for s in range(sets):
         units.append(Unit(f"qr{s}_evaluate", "Householder vector of a column", 1,
                           (("add", 2), ("mul", 2), ("div", 1), ("sqrt", 1))))
         units.append(Unit(f"qr{s}_update", "apply the reflector to a column", opts.units,
                           (("add", 1), ("mul", 1))))
-        units.append(Unit(f"qr{s}_backsub", "back-substitution", 1, (("add", 1), ("mul", 2))))
-        channels.append(Channel(f"qr{s}_v", "stream", 2 * ops.add.latency, ops.word_bits,
-                                f"qr{s}_evaluate", f"qr{s}_update"))
-        channels.append(Channel(f"qr{s}_r", "pingpong", 2, ops.word_bits, f"qr{s}_update",
-                                f"qr{s}_backsub"))
-        # fgc_qr.h: the Update unit holding the next pivot column streams it to the Evaluate
-        channels.append(Channel(f"qr{s}_column", "stream", max_rows, ops.word_bits,
-                                f"qr{s}_update", f"qr{s}_evaluate"))
+        # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
+        # the reflector to each Update unit (and its header to collect); each unit streams the
+        # next column (its owner's) to Evaluate and its entries of R's row to collect; Evaluate
+        # writes the reflector buffer the next region broadcasts
+        for u in range(opts.units):
+            channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
+                                    ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
+        channels.append(Channel(f"qr{s}_h", "stream", 2, ops.word_bits + 32,
+                                f"qr{s}_broadcast", f"qr{s}_collect"))
+        for u in range(opts.units):
+            channels.append(Channel(f"qr{s}_col{u}", "stream", max_rows, ops.word_bits,
+                                    f"qr{s}_update{u}", f"qr{s}_evaluate"))
+            channels.append(Channel(f"qr{s}_row{u}", "stream", 2, ops.word_bits,
+                                    f"qr{s}_update{u}", f"qr{s}_collect"))
+        channels.append(Channel(f"qr{s}_vbuf", "buffer", max_rows + 2, ops.word_bits + 32,
+                                f"qr{s}_evaluate", f"qr{s}_broadcast"))
     # per step: the regions of fgc_qr.h's qr_step (Evaluate of column k+1 overlaps the Update
     # of column k in region k) and its store, one process per step
     step_proc = []
-    max_words = 0
     for st in sched.steps:
         pattern = patterns[st.index]
         loops = qr_unit_loops(pattern, st.frontal_dim, opts.units, ops, name=f"s{st.index}")
-        max_words = max(max_words, pattern.shape[0] * (pattern.shape[1] + 1))
         step_proc.append((st, Process(f"qr_step{st.index}", "qr_update", tuple(loops))))
     for li, level in enumerate(sched.levels):
         procs = _assign([p for st, p in step_proc if st.index in level], sets, "qr", li)
         phases.append(Phase(f"qr_level{li}", True, procs, linear=True))
+    _backsub_phases(program, ops, phases, "backsub")
+    units.append(Unit("backsub", "back-substitution (cond_backsub)", 1,
+                      (("add", 1), ("mul", 2))))
+    sizes = _sizes(program)
+    cols = sizes["MAX_W"] + 1
+    local = -(-cols // opts.units)
+    for s in range(sets):  # accel.cpp.jinja's WORK<s>, CONDBUF<s>, UPDBUF<s>
+        memories.append(Memory(f"qr{s}_work", opts.units * sizes["MAX_ROWS"] * local,
+                               ops.word_bits, opts.units))
+        memories.append(Memory(f"qr{s}_condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
+        memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
+    _solver_memories(sizes, ops, memories)
+
+
+def _backsub_phases(program, ops, phases, unit) -> None:
+    """The emitted back_substitute: one cond_backsub per step, root first, one after another;
+    each row bounded by its multiply-multiply-add chain or its stream of separator products."""
+    sched = program.schedule
     chain = 2 * ops.mul.latency + ops.add.latency
     for li, level in enumerate(sched.back_substitution):
         procs = []
@@ -491,12 +528,22 @@ def _qr(program, opts, ops, units, memories, channels, phases):
             loops = [Loop(f"bs{i}_row{t}", 1, 1, max(d - t - 1 + p, chain))
                      for d, p in zip(st.frontal_dims, st.parent_dims, strict=True)
                      for t in range(d)]
-            procs.append(Process(f"backsub_step{i}", "qr_backsub", tuple(loops)))
-        phases.append(Phase(f"backsub_level{li}", True, _assign(procs, sets, "bs", li),
-                            linear=True))
-    for s in range(sets):
-        memories.append(Memory(f"qr{s}_work", max_words, ops.word_bits, opts.units))
-    memories.append(Memory("r_store", program.storage.steps[-1].words, ops.word_bits, sets))
+            procs.append(Process(f"backsub_step{i}", unit, tuple(loops)))
+        phases.append(Phase(f"backsub_level{li}", False, tuple(procs), linear=True))
+
+
+def _solver_memories(sizes, ops, memories) -> None:
+    """The linear solver's stores: conditionals (R | d) and the factors passed to parents."""
+    memories.append(Memory("cond", sizes["N_COND"], ops.word_bits, 1))
+    memories.append(Memory("nf", sizes["N_NF"], ops.word_bits, 1))
+
+
+def _sizes(program) -> dict:
+    """The emitted tables' sizes (MAX_ROWS, MAX_W, ...): the unit headers' CFG constants."""
+    from .tables import build_tables
+    t = build_tables(program, damped=program.solver.method == "lm",
+                     cholesky=program.solver.linear == "cholesky")
+    return dict(t.constants)
 
 
 def _assign(procs, sets, tag, li):
@@ -526,13 +573,14 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
              ops.mul.latency + ops.add.latency),)),), linear=True))
     units.append(Unit("cpe", "Cholesky process element: Evaluate + Update", c,
                       (("add", 1), ("mul", 1), ("div", 1), ("sqrt", 1)), extra_dsp=1))
+    if opts.hessian_storage == "frontal":
+        _cholesky_frontal(program, opts, ops, units, memories, channels, phases)
+        return
+    # what-if designs (not emitted): the whole [H | g] factored as one matrix, dense or by its
+    # envelope ("blocked", paper B's choice), through one cascade
     for i in range(c):
         channels.append(Channel(f"cpe_fifo{i}", "stream", n, ops.word_bits,
                                 "cholesky_in" if i == 0 else f"cpe{i - 1}", f"cpe{i}"))
-    # a round streams the trailing lower triangle of [H | g] through the cascade, one word a
-    # cycle; CPE j computes column j of the round (sqrt + divide) and updates the rest
-    # (fgc_cpe.h's cpe_round: feed -> #CPE CPEs -> drain, see cpe_round_depth; the header
-    # streams the dense triangle, "blocked" storage prices the envelope's words only)
     lowest = hessian_envelope(program) if opts.hessian_storage == "blocked" else [n - 1] * n
     rounds = []
     for r in range(math.ceil(n / c)):
@@ -541,8 +589,6 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
         rounds.append(Loop(f"round{r}", words, 1, cpe_round_depth(min(c, m), c, ops)))
     phases.append(Phase("cholesky", True, (Process("cascade", "cpe", tuple(rounds)),),
                         linear=True))
-    # cpe_step's sequential loops around the rounds: mu on the diagonal, the pivots against the
-    # scale (the drain writes the factor out itself)
     phases.append(Phase("cholesky_scalar", False, (Process("damping_and_check", "cpe", (
         Loop("damping", n, 1, ops.add.latency), Loop("pivot_check", n, 1, 2))),), linear=True))
     units.append(Unit("trisolve", "Lᵀδ = z (Lz = g runs in the cascade)", 1,
@@ -553,6 +599,33 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
         linear=True))
     memories.append(Memory("hessian", sum(lo - j + 1 for j, lo in enumerate(lowest)) + n,
                            ops.word_bits, max(1, c // 4)))
+
+
+def _cholesky_frontal(program, opts, ops, units, memories, channels, phases):
+    """The emitted multifrontal Cholesky: per elimination step (one after another) its frontal
+    [H | g] through fgc_cpe.h's cpe_step (feed -> #CPE CPEs -> drain per round of #CPE pivots),
+    then back-substitution step by step (cond_backsub)."""
+    c = opts.cpe
+    sizes = _sizes(program)
+    for i in range(c + 1):
+        channels.append(Channel(f"cpe_link{i}", "stream", sizes["MAX_W"], ops.word_bits,
+                                "cpe_feed" if i == 0 else f"cpe{i - 1}",
+                                f"cpe{i}" if i < c else "cpe_drain"))
+    loops = []
+    for st in program.schedule.steps:
+        loops += cpe_step_loops(st.frontal_dim, st.separator_dim, c, ops, name=f"s{st.index}")
+    phases.append(Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
+                        linear=True))
+    units.append(Unit("trisolve", "back-substitution (cond_backsub; Lz = g rides the cascade)",
+                      1, (("add", 1), ("mul", 1), ("div", 1))))
+    _backsub_phases(program, ops, phases, "trisolve")
+    cols = sizes["MAX_W"] + 1
+    # accel.cpp.jinja's GRAM, HF, CONDBUF, UPDBUF (the frontal matrix of one step at a time)
+    memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
+    memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    memories.append(Memory("condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
+    memories.append(Memory("updbuf", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    _solver_memories(sizes, ops, memories)
 
 
 def raw_jacobian_words(b) -> int:
@@ -688,3 +761,36 @@ def plan_summary(program: Program, iterations: int, options: PlanOptions | None 
             "resources": res, "utilization": {key: res[key] / caps[key] for key in caps},
             "fits": c.fits, "memory_words": c.words, "power_w": power,
             "energy_mj": power * latency_ms}
+
+
+# --------------------------------------------------------------------------------------------
+# the emitted process network
+# --------------------------------------------------------------------------------------------
+
+
+EMITTED = {"jacobian_storage": ("whitened",), "hessian_storage": ("frontal",)}
+
+
+def emitted_options(options: PlanOptions) -> list[str]:
+    """The options of ``options`` the HLS emitter does not build (what-if designs), as text."""
+    return [f"{k}={getattr(options, k)!r}" for k, ok in EMITTED.items()
+            if getattr(options, k) not in ok]
+
+
+def unit_sets(plan: AcceleratorPlan) -> int:
+    """QR unit sets of ``plan`` (0 for Cholesky)."""
+    return sum(1 for u in plan.units if u.name.endswith("_evaluate"))
+
+
+def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Channel, ...]]:
+    """The dataflow processes and streams the emitter prints for ``plan``'s linear solver (the
+    unit headers' regions): per QR unit set broadcast, n_u Update units, Evaluate and collect;
+    for Cholesky the feed, the #CPE process elements and the drain. Streams are the plan's
+    stream channels."""
+    if plan.linear == "qr":
+        procs = tuple(p for s in range(unit_sets(plan)) for p in (
+            f"qr{s}_broadcast", *(f"qr{s}_update{u}" for u in range(plan.options.units)),
+            f"qr{s}_evaluate", f"qr{s}_collect"))
+    else:
+        procs = ("cpe_feed", *(f"cpe{i}" for i in range(plan.options.cpe)), "cpe_drain")
+    return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")

@@ -223,9 +223,9 @@ inline T fold_partials(T part[P]) {
 #pragma HLS INLINE
     for (int step = 1; step < P; step *= 2) {
 #pragma HLS UNROLL
-        for (int i = 0; i + step < P; i += 2 * step) {
+        for (int i = 0; i < P; i += 2 * step) {
 #pragma HLS UNROLL
-            part[i] += part[i + step];
+            if (i + step < P) part[i] += part[i + step];
         }
     }
     return part[0];

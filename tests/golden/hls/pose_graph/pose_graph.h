@@ -1,8 +1,8 @@
-// generated from template kernel.h.jinja by fgc 0.1.0 — do not edit
+// generated from template accel.h.jinja by fgc 0.1.0 — do not edit
 // Problem: pose_graph
 // general graph, min-degree ordering; solver: lm qr auto n_u=4 cpe=20
 //
-// The accelerator is specialised to this structure: sizes and tables below are compile-time
+// The dataflow accelerator (docs/hls.md) is specialised to this structure: sizes and tables below are compile-time
 // constants; measurements, noise and initial values arrive at run time (fgc data file).
 #ifndef FGC_POSE_GRAPH_H
 #define FGC_POSE_GRAPH_H
@@ -190,12 +190,5 @@ inline T so3_log_z(T r00, T r01, T r02, T r10, T r11, T r12, T r20, T r21, T r22
 // reason} (status/reason: indices into the result file's names).
 void pose_graph_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
                     fgc::T x_out[fgc::N_X], fgc::T errors[2], int info[3]);
-
-#ifndef __SYNTHESIS__
-// Host only: the cost at x_in and its rounding noise (how far the cost moves when x is rounded
-// to the scalar type, the tolerance the step test in try_steps grants a step that is not below
-// the cost), computed as the accelerator computes them: out = {cost, noise}.
-void pose_graph_probe(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], fgc::T out[2]);
-#endif
 
 #endif  // FGC_POSE_GRAPH_H

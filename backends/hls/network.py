@@ -1,0 +1,90 @@
+"""The process network of an emitted kernel, read back from its C++ text.
+
+:func:`read_network` finds every function whose body opens with ``#pragma HLS DATAFLOW`` (a
+DATAFLOW region) and lists the processes it calls and the ``hls::stream`` channels it declares;
+:func:`allocations` lists each function's ``#pragma HLS ALLOCATION`` limits. The tests and the
+measurements compare these with the accelerator plan (:mod:`fgc_backends.hls.plan`): what the
+plan describes must be what the file holds.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from .lint import strip_comments_and_strings
+
+_FUNCTION = re.compile(r"\b([A-Za-z_]\w*)\s*\(([^;{}]*)\)\s*\{")
+_CALL = re.compile(r"^\s*([A-Za-z_][\w:]*)\s*(?:<[^;()]*>)?\s*(::run)?\s*\(", re.M)
+_STREAM = re.compile(r"hls::stream<.*?>\s+([A-Za-z_]\w*)\s*(?:\[([^\]]*)\])?\s*[(;]")
+_CONSTANT = re.compile(r"^const int (N_UNITS|N_CPE) = (\d+);", re.M)
+_ALLOCATION = re.compile(r"#pragma HLS ALLOCATION (operation|function) instances=(\w+) limit=(\d+)")
+
+
+@dataclass(frozen=True)
+class Region:
+    function: str
+    processes: tuple[str, ...]  # callee of each process call, in order (``name::run``: a
+    # template recursion that instantiates one process per unit)
+    streams: tuple[tuple[str, str], ...]  # (name, array size as written, "" for one stream)
+
+
+def _bodies(text: str):
+    """(name, body) of every function definition in ``text`` (comments blanked)."""
+    clean = strip_comments_and_strings(text)
+    for m in _FUNCTION.finditer(clean):
+        if m.group(1) in ("if", "for", "while", "switch"):
+            continue
+        depth, i = 1, m.end()
+        while depth and i < len(clean):
+            depth += {"{": 1, "}": -1}.get(clean[i], 0)
+            i += 1
+        yield m.group(1), clean[m.end():i - 1]
+
+
+def read_network(text: str) -> tuple[Region, ...]:
+    """The DATAFLOW regions of a kernel's or unit header's text."""
+    out = []
+    for name, body in _bodies(text):
+        if not body.lstrip().startswith("#pragma HLS DATAFLOW"):
+            continue
+        calls = tuple(c + (run or "") for c, run in _CALL.findall(body)
+                      if c not in ("for", "if", "while") and not c.isupper())
+        out.append(Region(name, calls, tuple(_STREAM.findall(body))))
+    return tuple(out)
+
+
+def allocations(text: str) -> dict[str, tuple[tuple[str, str, int], ...]]:
+    """Per function: its ALLOCATION pragmas as (kind, instances, limit)."""
+    out = {}
+    for name, body in _bodies(text):
+        found = tuple((k, n, int(v)) for k, n, v in _ALLOCATION.findall(body))
+        if found:
+            out[name] = found
+    return out
+
+
+def counts(kernel: str, units: str) -> tuple[int, int]:
+    """Processes and streams of the linear solver's network: the kernel's unit-set region (QR:
+    how many unit sets run side by side; Cholesky: one cascade) times the unit header's
+    innermost region (one reflection, one CPE round) with the kernel's N_UNITS / N_CPE."""
+    const = {k: int(v) for k, v in _CONSTANT.findall(kernel)}
+    cfg = {f"CFG::{k}": v for k, v in const.items()}
+    sets = next((len(r.processes) for r in read_network(kernel) if r.function == "qr_level"), 1)
+    procs = streams = 0
+    for region in read_network(units):
+        if not region.streams:
+            continue
+        for call in region.processes:
+            if call.endswith("::run"):  # one process per unit: N_UNITS updates, N_CPE CPEs
+                procs += const["N_UNITS"] if "update" in call else const["N_CPE"]
+            else:
+                procs += 1
+        for _, size in region.streams:
+            expr = size or "1"
+            for k, v in cfg.items():
+                expr = expr.replace(k, str(v))
+            if not re.fullmatch(r"[0-9+\-* ]+", expr):
+                raise ValueError(f"stream array size {size!r} is not a constant expression")
+            streams += eval(expr)  # noqa: S307 - digits and + - * only (checked above)
+    return procs * sets, streams * sets
