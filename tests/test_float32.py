@@ -334,15 +334,15 @@ def hls_householder(tmp_path_factory):
     import shutil
     import subprocess
 
-    from fgc_backends import hls
+    from fgc_backends import native
 
     if shutil.which("g++") is None:
         pytest.skip("no g++")
     folder = tmp_path_factory.mktemp("hh")
     program = compile_graph(chain(0.0, 0.1, n=3), SolverConfig(method="gn"))
-    # the CPU design's householder (the native solver's); the accelerator's QR is the unit
-    # header fgc_qr.h, tested by tests/test_hls_units.py
-    project = hls.emit(program, folder / "project", hls.HlsConfig(scalar="float"), design="cpu")
+    # the native CPU program's householder; the accelerator's QR is the unit header fgc_qr.h,
+    # tested by tests/test_hls_units.py
+    project = native.emit(program, folder / "project", native.NativeConfig(scalar="float"))
     source = folder / "driver.cpp"
     source.write_text(DRIVER.replace("KERNEL", str(project.directory / f"{project.name}.cpp")))
     subprocess.run(["g++", "-std=c++17", "-O2", "-ffp-contract=off", "-Wno-unknown-pragmas",

@@ -152,19 +152,6 @@ def test_robust_losses_and_gauss_newton_match_the_simulator(solver, tmp_path):
     _check_against_reference("robust", program, result, reference, "double")
 
 
-def test_lanes_do_not_change_the_numbers(tmp_path):
-    graph = robust_chain()
-    program = compile_graph(graph, SolverConfig(linear="qr"), name="lanes")
-    data = problem_data(graph, program)
-    results = [run_csim(emit(program, tmp_path / str(lanes), HlsConfig(scalar="double",
-                                                                        lanes=lanes),
-                             design="cpu"),
-                        program, data) for lanes in (1, None)]
-    assert results[0].final_error == results[1].final_error
-    for key, value in results[0].values.items():
-        np.testing.assert_array_equal(results[1].values[key], value)
-
-
 @pytest.mark.heavy
 @pytest.mark.parametrize("name", sorted(HEAVY_CASES))
 def test_heavy_cases_match_the_simulator(name, tmp_path_factory):
