@@ -138,10 +138,19 @@ class KernelText:
 
 @dataclass(frozen=True)
 class VariableSpec:
+    """A variable: ``key`` is the text of the graph's key (``str(k)``), ``int_key`` whether
+    that key was an int, so that results written by a backend give the user's key back."""
+
     key: str
     type_name: str
     dim: int
     storage_dim: int
+    int_key: bool = False
+
+    @property
+    def user_key(self) -> int | str:
+        """The graph's key: an int again if it was one."""
+        return int(self.key) if self.int_key else self.key
 
 
 @dataclass(frozen=True)
