@@ -9,9 +9,9 @@ column is ``fgc.io.read_pose_graph``'s factor count (it adds no factor: the gaug
 ``fgc verify`` comes later), or the reason it refuses the file. The verify column runs
 ``fgc verify FILE`` in a subprocess per file (exit 0 PASSED / 1 FAILED / 2 error), stopped after
 ``--timeout`` seconds; it gives the verdict, the wall and CPU time of that run (on a shared
-machine wall time says little), the state difference and, for a FAILED file, the verdict's
-reason. ``--skip-verify-over N`` leaves files with more than N factors out of the verify
-column; ``--only`` runs the named files alone (one large file at a time); ``--verify-arg``
+machine wall time says little), the state difference and, unless the states simply match,
+the verdict's reason. ``--skip-verify-over N`` leaves files with more than N factors out of the
+verify column; ``--only`` runs the named files alone (one large file at a time); ``--verify-arg``
 passes an argument on to ``fgc verify`` (``--verify-arg=-p --verify-arg=init=chordal``).
 """
 
@@ -65,9 +65,9 @@ def verify(path: str, timeout: float, extra: list[str]) -> str:
         return f"error (exit {proc.returncode}, {times}): {last[:160]}"
     state = next((ln for ln in lines if ln.startswith("max state")), "")
     cell = f"{'PASSED' if proc.returncode == 0 else 'FAILED'} ({times}; {state})"
-    if proc.returncode == 1:
-        verdict = next((ln for ln in reversed(lines) if ln.startswith("FAILED")), "")
-        cell += f" — {verdict[:200]}"
+    verdict = next((ln for ln in reversed(lines) if ln.startswith(("PASSED", "FAILED"))), "")
+    if not verdict.startswith("PASSED: fgc's answer matches"):  # say why, unless plain
+        cell += f" — {verdict[:240]}"
     return cell
 
 
