@@ -211,6 +211,9 @@ class Program:
         out = dataclasses.asdict(dataclasses.replace(self, schedule=None, storage=None))
         out["schedule"] = self.schedule.to_dict()
         out["storage"] = dataclasses.asdict(self.storage)
+        for v in out["variables"]:  # only an int key says so: str-keyed JSON is as before
+            if not v["int_key"]:
+                del v["int_key"]
         return out
 
     def to_json(self) -> str:

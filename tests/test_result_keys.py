@@ -125,3 +125,15 @@ def test_a_result_of_another_program_is_refused(tmp_path):
     (tmp_path / "old.json").write_text(json.dumps({"format": "fgc-sim-result 1", "values": []}))
     with pytest.raises(FgcError, match="old.json: not an fgc simulator result"):
         sim.read_result(other, tmp_path / "old.json")
+
+
+def test_the_program_json_keeps_int_keys():
+    from fgc.program import Program
+
+    program = compile_graph(_chain([3, 4]))
+    again = Program.from_json(program.to_json())
+    assert [v.user_key for v in again.variables] == [3, 4] and again == program
+    str_keyed = compile_graph(_chain(["3", "4"]))
+    assert "int_key" not in str_keyed.to_json()  # str-keyed Programs' JSON is as before
+    assert [v.user_key for v in Program.from_json(str_keyed.to_json()).variables] == ["3", "4"]
+    assert str_keyed.structure_fingerprint == program.structure_fingerprint  # same data layout
