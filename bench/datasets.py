@@ -67,7 +67,7 @@ def verify(path: str, timeout: float, extra: list[str]) -> str:
     cell = f"{'PASSED' if proc.returncode == 0 else 'FAILED'} ({times}; {state})"
     verdict = next((ln for ln in reversed(lines) if ln.startswith(("PASSED", "FAILED"))), "")
     if not verdict.startswith("PASSED: fgc's answer matches"):  # say why, unless plain
-        cell += f" — {verdict[:240]}"
+        cell += f" — {verdict[:400]}"
     return cell
 
 
