@@ -20,11 +20,10 @@ import re
 import tempfile
 from collections.abc import Sequence
 from dataclasses import dataclass
-from importlib import import_module
 from pathlib import Path
 
 from fgc.dsl import Graph
-from fgc.reporting import require_finite_start
+from fgc.reporting import plan_summary, require_finite_start
 
 _TEMPLATE = "report.html.jinja"
 _OP_MODES = (("unshared", "ops_unshared"), ("separate", "ops_before"), ("fused", "ops_after"),
@@ -50,10 +49,10 @@ def design_report(spec: str, params: dict, graph: Graph, program, data, sim,
                   iterations: int | None = None) -> dict:
     """The report of ``program`` (compiled from ``graph``) as a JSON-able dict.
 
-    The cost model runs for ``iterations`` accepted steps; when that is None the simulator
-    ``sim`` solves ``data`` first and its iteration count is used (and its outcome reported).
+    The hardware figures are the accelerator plan's (:func:`fgc.reporting.plan_summary`) for
+    ``iterations`` iterations; when that is None the simulator ``sim`` solves ``data`` first and
+    its iteration count is used (and its outcome reported).
     """
-    cost_model = import_module(f"{sim.__name__}.cost")  # the backend's own cost model
     solve = {"source": "--iterations", "iterations": iterations}
     if iterations is None:
         result = sim.run(program, data)
@@ -62,14 +61,14 @@ def design_report(spec: str, params: dict, graph: Graph, program, data, sim,
                  "status": result.status, "reason": result.reason,
                  "initial_error": result.initial_error, "final_error": result.final_error}
         iterations = max(result.iterations, 1)
-    cost = cost_model.estimate(program, iterations=iterations)
+    cost = plan_summary(program, iterations)
     return {
         "spec": spec, "params": {k: _plain_param(v) for k, v in params.items()},
         "program": program.name, "variables": len(program.variables),
         "factors": len(graph.factors), "block_instances": len(program.factors),
         "solver": dataclasses.asdict(program.solver), "blocks": block_table(program),
         "schedule": schedule_summary(program.schedule), "storage": storage_summary(program),
-        "solve": solve, "cost": cost_summary(cost, cost_model.CostParams().device),
+        "solve": solve, "cost": cost,
     }
 
 
@@ -107,17 +106,6 @@ def storage_summary(program) -> dict:
     steps = [{**dataclasses.asdict(s), "ratio": plan.ratio(i)}
              for i, s in enumerate(plan.steps, 1)]
     return {"solver": plan.solver, "dense_words": plan.dense_words, "steps": steps}
-
-
-def cost_summary(cost, device) -> dict:
-    """Cycles by unit, latency, resources and their share of ``device``, power and energy."""
-    by_unit = dataclasses.asdict(cost.solve)
-    return {"device": device.name, "clock_mhz": cost.clock_mhz, "iterations": cost.iterations,
-            "cycles": cost.cycles, "latency_ms": cost.latency_ms, "cycles_by_unit": by_unit,
-            "resources": dataclasses.asdict(cost.resources),
-            "utilization": dataclasses.asdict(cost.utilization),
-            "fits": cost.utilization.fits, "power_w": cost.power_w,
-            "energy_mj": cost.energy_mj}
 
 
 # --------------------------------------------------------------------------------------------
@@ -185,9 +173,10 @@ def _cycles_section(r: dict) -> Section:
                 f"error {solve['final_error']:.6g}) at {c['clock_mhz']:g} MHz")
     else:
         note = f"{c['iterations']} iterations (--iterations) at {c['clock_mhz']:g} MHz"
-    return Section("Modelled cycles by unit (whole solve; model estimate)",
-                   ("unit", "cycles", "share"),
-                   tuple(rows), (note,))
+    return Section("Modelled cycles by phase (whole solve; model estimate, accelerator plan)",
+                   ("phase", "cycles", "share"),
+                   tuple(rows), (note, f"{c['iteration_cycles']:,} cycles per iteration; "
+                                       "source: " + c["source"]))
 
 
 def _resources_section(r: dict) -> Section:
@@ -200,7 +189,9 @@ def _resources_section(r: dict) -> Section:
     return Section(f"Resources on {c['device']} (model estimate)",
                    ("resource", "used (model estimate)", "of device"), rows,
                    (f"{fits} {c['device']} (model estimate); power {c['power_w']:.2f} W, energy "
-                    f"{c['energy_mj']:.3f} mJ per solve (model estimate)",))
+                    f"{c['energy_mj']:.3f} mJ per solve (model estimate: the plan has no power "
+                    "model; the sim model's power fit applied to the plan's resources)",
+                    f"memories of the plan: {c['memory_words']:,} words (model estimate)"))
 
 
 def format_table(headers: Sequence[str], rows: Sequence[Sequence[str]],

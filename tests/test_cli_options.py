@@ -94,7 +94,7 @@ def test_clock_reaches_the_cost_model_and_run_hls_tcl(tmp_path, capsys):
     assert main(["compile", BEACONS, "--backend", "hls", "--out", str(out), "--clock", "200MHz",
                  "--part", "xczu9eg-ffvb1156-2-e", "--scalar", "double", "-q"]) == 0
     tcl = (out / "run_hls.tcl").read_text()
-    assert "create_clock -period 5.0 -name default" in tcl
+    assert "create_clock -period 5 -name default" in tcl
     assert "set_part {xczu9eg-ffvb1156-2-e}" in tcl
     program = json.loads((out / "program.json").read_text())
     assert program["solver"]["clock_mhz"] == 200.0
@@ -128,7 +128,8 @@ def test_emit_rejects_two_clocks(tmp_path):
     (["compile", BEACONS, "--backend", "hls", "--out", "x", "--part", "a;b"], "plain part name"),
     (["compile", BEACONS, "--backend", "hls", "--out", "x", "--scalar", "double",
       "--precision", "float32"], "--scalar double contradicts --precision float32"),
-    (["compile", BEACONS, "--out", "x", "--scalar", "float"], "apply to --backend hls only"),
+    (["compile", BEACONS, "--out", "x", "--scalar", "float"],
+     "--scalar applies to --backend hls or native only"),
 ])
 def test_bad_hardware_options_exit_2_with_one_line(argv, needle, capsys, tmp_path,
                                                    monkeypatch):
@@ -145,7 +146,7 @@ def test_modelled_figures_are_labelled(capsys):
     assert main(["report", BEACONS, "--iterations", "3"]) == 0
     out = capsys.readouterr().out
     assert "fits xc7z045 (model estimate)" in out
-    assert "Modelled cycles by unit (whole solve; model estimate)" in out
+    assert "Modelled cycles by phase (whole solve; model estimate, accelerator plan)" in out
     assert main(["report", BEACONS, "--iterations", "3", "-q"]) == 0
     line = capsys.readouterr().out
     assert line.count("\n") == 1 and line.rstrip().endswith("fits xc7z045 (model estimate)")

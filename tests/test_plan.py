@@ -2,7 +2,7 @@
 
 Cheap: a 3-pose Pose2 chain compiles in well under a second from a warm cache. The cost
 arithmetic is checked against hand computations written out below from the float32 table
-(add 8, mul 5, div 28, sqrt 28, compare 2, sincos 40 cycles; add 2 DSP, mul 3 DSP).
+(add 11, mul 8, div 28, sqrt 28, compare 2, sincos 40 cycles; add 2 DSP, mul 3 DSP).
 """
 
 from __future__ import annotations
@@ -83,12 +83,13 @@ def test_table_is_frozen_and_every_entry_has_a_source():
 
 
 def test_dot_loop_ii_from_adder_latency():
-    # adder latency 8: one partial sum -> II 8; 4 partial sums -> II 2; 8 -> II 1
-    assert dot_loop("d", 20, F32, partials=1).ii == 8
-    assert dot_loop("d", 20, F32, partials=4).ii == 2
+    # adder latency 11: one partial sum -> II 11; 4 partial sums -> II 3; 11 -> II 1
+    assert F32.add.latency == 11 and F32.mul.latency == 8
+    assert dot_loop("d", 20, F32, partials=1).ii == 11
+    assert dot_loop("d", 20, F32, partials=4).ii == 3
     d = dot_loop("d", 20, F32)
-    # k = 8 partial sums: II 1, depth mul 5 + add 8 × (1 + log2 8 = 3) = 37; 19 × 1 + 37 = 56
-    assert (d.ii, d.depth, d.cycles) == (1, 37, 56)
+    # k = 11 partial sums: II 1, depth mul 8 + add 11 × (1 + ⌈log2 11⌉ = 4) = 63; 19 + 63 = 82
+    assert (d.ii, d.depth, d.cycles) == (1, 63, 82)
 
 
 def test_cost_of_a_hand_made_plan():
@@ -115,16 +116,16 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     plan = build_plan(qr_chain)
     c = plan_cost(plan)
     phases = dict(c.phase_cycles)
-    # retract: 3 variables at II 1, depth sqrt 28 + div 28 + sincos 40 + 4 × (mul 5 + add 8)
-    # = 148 -> 2 + 148 = 150
-    assert phases["state_update"] == 150
-    # LM decision: div 28 + 2 mul + 2 add + compare 2 = 56
-    assert phases["lm_control"] == 56
-    # back-substitution: each Pose2 row is bounded by the chain mul + mul + add = 18 cycles
-    # (rows need at most 5 stream cycles); a step is 3 rows = 54; the first level has one
-    # step; the second has two steps on the two unit sets of a two-ended chain: 54 + fill 18
+    # retract: 3 variables at II 1, depth sqrt 28 + div 28 + sincos 40 + 4 × (mul 8 + add 11)
+    # = 172 -> 2 + 172 = 174
+    assert phases["state_update"] == 174
+    # LM decision: div 28 + 2 mul + 2 add + compare 2 = 68
+    assert phases["lm_control"] == 68
+    # back-substitution: each Pose2 row is bounded by the chain mul + mul + add = 27 cycles
+    # (rows need at most 5 stream cycles); a step is 3 rows = 81; the first level has one
+    # step; the second has two steps on the two unit sets of a two-ended chain: 81 + fill 27
     assert plan.options.units == 2
-    assert phases["backsub_level0"] == 54 and phases["backsub_level1"] == 72
+    assert phases["backsub_level0"] == 81 and phases["backsub_level1"] == 108
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub_")))

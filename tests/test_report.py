@@ -33,7 +33,7 @@ def test_report_with_given_iterations_skips_the_simulator(tmp_path, capsys):
         assert block["ops"]["fused"]["total"] <= block["ops"]["unshared"]["total"]
     assert r["schedule"]["steps"] >= r["schedule"]["sequential_levels"] >= 1
     for title in ("Factor blocks", "Schedule", "Storage of the linear system (cholesky)",
-                  "Modelled cycles by unit", "Resources on xc7z045"):
+                  "Modelled cycles by phase", "Resources on xc7z045"):
         assert title in text
     assert "3 iterations (--iterations)" in text
 
@@ -47,7 +47,7 @@ def test_report_costs_the_simulators_iterations(tmp_path, capsys):
     assert r["cost"]["iterations"] == r["solve"]["iterations"] >= 1
     page = html.read_text()
     assert page.startswith("<!DOCTYPE html>") and "do not edit" in page
-    assert "Modelled cycles by unit" in page and "<script" not in page
+    assert "Modelled cycles by phase" in page and "<script" not in page
     assert "http://" not in page and "https://" not in page  # self-contained
     if importlib.util.find_spec("matplotlib"):
         assert page.count('src="data:image/png;base64,') == 2  # latency and storage figures

@@ -147,16 +147,21 @@ def test_imu_window_float32(imu20):
     assert_float32_close(imu20.run("float32", linear="qr"), imu20.run(linear="qr"))
 
 
-def test_imu_window_float32_cholesky_does_not_converge(imu20):
-    """κ = 554 is below the float32 Cholesky warning (2.9e3), yet float32 Cholesky does not
-    converge at N = 20 (numpy 2.4.6): from iteration 4 the cost (~3e-3) is far below its
-    rounding noise (~2.4), every step is accepted by the noise rule and none of the stopping
-    rules can fire, while the weakly determined direction creeps ~0.6 mm an iteration (3.4 cm
-    off after 6 iterations, 5.5 mm after 100). The honest outcome: not converged, and still
-    within the float32 bounds of the float64 result after the 100 iterations."""
+def test_imu_window_float32_cholesky_is_never_falsely_converged(imu20):
+    """κ = 554 is below the float32 Cholesky warning (2.9e3), yet float32 Cholesky at N = 20
+    sits on the edge: from iteration 4 the cost (~3e-3) is far below its rounding noise (~2.4),
+    every step is accepted by the noise rule, and the weakly determined direction creeps ~0.6 mm
+    an iteration. Whether a stopping rule then fires depends on the last bits of the host's BLAS
+    (numpy 2.4.6: 100 iterations, max_iterations, on one AVX2 host; 42 iterations, converged by
+    the step rule, on an AVX-512 AMD EPYC). Either outcome is honest only if its answer is within
+    the float32 bounds of the float64 result, and "converged" must come from a stopping rule."""
     f32, f64 = imu20.run("float32", linear="cholesky"), imu20.run(linear="cholesky")
-    assert f32.status == "max_iterations" and not f32.converged
-    assert_float32_close(f32, f64, require_converged=False)
+    if f32.converged:
+        assert f32.status == "converged" and f32.iterations < 100
+        assert_float32_close(f32, f64)
+    else:
+        assert f32.status == "max_iterations"
+        assert_float32_close(f32, f64, require_converged=False)
 
 
 def test_imu_window_float32_cholesky_needs_a_wide_linear_solver():

@@ -1,4 +1,4 @@
-"""Build and run an emitted project with the host compiler: ``make csim`` and ``make native``.
+"""Build and run an emitted project with the host compiler: ``make csim``.
 
 The project's Makefile is the single description of the build; these helpers only call it with
 fixed target names and fixed file names inside the project folder (``data.txt``, ``result.txt``),
@@ -8,13 +8,19 @@ so no caller-chosen path ever reaches make or the shell.
 from __future__ import annotations
 
 import subprocess
-from pathlib import Path
 
 from fgc.datafile import ProblemData, write_data
 from fgc.errors import FgcError
 from fgc.program import Program
+from fgc_backends.hls.config import check_fixed_data
 from fgc_backends.hls.emitter import HlsProject
-from fgc_backends.hls.results import HlsResult, read_result
+from fgc_backends.hls.results import (
+    REFERENCE_FILE,
+    HlsResult,
+    read_result,
+    reference_run,
+    write_reference,
+)
 
 DATA_FILE, RESULT_FILE, BUILD_LOG = "data.txt", "result.txt", "build.log"
 BUILD_TIMEOUT_S = 900
@@ -27,7 +33,7 @@ class HlsBuildError(FgcError):
 
 def make(project: HlsProject, target: str) -> str:
     """Run ``make -s <target>`` in the project folder; returns its standard output."""
-    if target not in ("csim", "native", "clean"):
+    if target not in ("csim", "clean"):
         raise ValueError(f"unknown make target {target!r}")
     try:
         done = subprocess.run(["make", "-s", target], cwd=project.directory, capture_output=True,
@@ -44,17 +50,26 @@ def make(project: HlsProject, target: str) -> str:
     return done.stdout
 
 
-def run_csim(project: HlsProject, program: Program, data: ProblemData) -> HlsResult:
-    """Write ``data`` as the project's ``data.txt``, build and run the testbench (``make csim``)
-    and return the parsed ``result.txt``, with the host-side float32 verdict
-    (:func:`fgc_backends.hls.results.judge_precision`)."""
+def run_csim(project: HlsProject, program: Program, data: ProblemData,
+             reference=True) -> HlsResult:
+    """Write ``data`` as the project's ``data.txt`` and the simulator's result beside it as
+    ``reference.txt``, build and run the testbench (``make csim``, which fails with
+    :class:`HlsBuildError` if the result differs from the reference) and return the parsed
+    ``result.txt``, with the host-side float32 verdict
+    (:func:`fgc_backends.hls.results.judge_precision`).
+
+    ``reference``: True computes it (:func:`~fgc_backends.hls.results.reference_run`), a
+    simulator result of the same Program and data is used as it is, False writes none (the
+    testbench then says the result is unchecked)."""
+    check_fixed_data(project.config.scalar_cxx, program, data)  # saturation is no answer
     write_data(data, project.directory / DATA_FILE)
+    ref_path = project.directory / REFERENCE_FILE
+    ref_path.unlink(missing_ok=True)
+    if reference is True:
+        reference = reference_run(program, data)
+    if reference is not False and reference is not None:
+        write_reference(ref_path, program, reference)
     result = project.directory / RESULT_FILE
     result.unlink(missing_ok=True)
     make(project, "csim")
     return read_result(result, program, data, project.config.scalar)
-
-
-def library_path(project: HlsProject) -> Path:
-    """Where ``make native`` puts the shared library."""
-    return project.directory / f"lib{project.name}.so"

@@ -8,9 +8,8 @@ here; there are no global flags.
 
 from __future__ import annotations
 
-import platform
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 from fgc.errors import FgcError
@@ -33,7 +32,15 @@ class HlsConfig:
     - ``scalar``: the C++ scalar type ``T`` of the whole accelerator: ``"float"`` (paper A and B's
       hardware), ``"double"``, or ``"ap_fixed<W,I>"`` with 2 ≤ W ≤ 1024 and 1 ≤ I ≤ W
       (:func:`check_scalar`; needs the Xilinx ``ap_types`` headers of the optional ``hls4ml``
-      package; see :func:`ap_types_include`). ``fgc compile --scalar`` sets it.
+      package; see :func:`ap_types_include`). ``fgc compile --scalar`` sets it. Fixed point is
+      declared ``ap_fixed<W, I, AP_RND_CONV, AP_SAT>`` (round to nearest, saturate: no
+      wrap-around); every constant the kernel holds is range-checked at emit time
+      (:func:`check_fixed_constants`) and the data before a C simulation
+      (:func:`check_fixed_data`); LM's floors and tolerances below one LSB are raised to one
+      LSB. **Math that leaves the fixed type**: sqrt, sin, cos, tan, atan, atan2, exp, log,
+      log1p, asin, acos and tanh are computed in ``double`` (``std::``) and rounded back, so a
+      synthesised fixed-point design would hold double-precision cores for them. A Pose2
+      chain solves to within 1e-4 of float64 in ``ap_fixed<40,16>`` (tests/test_hls_check.py).
     - ``linear_scalar``: the scalar type ``L`` of the linear-equation solver alone (Hessian
       accumulation, elimination, back-substitution; ``"float"`` or ``"double"``, at least as
       wide as ``scalar``), the mixed design; ``None`` means ``scalar``, or ``"double"`` for a
@@ -47,22 +54,14 @@ class HlsConfig:
       ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
       widest elimination step this backend accepts; larger Programs fail at emit time.
-    - ``lanes``: factor instances a block evaluates side by side in the host builds (C
-      simulation and native), one lane each of a GCC/Clang vector type; ``None`` means one
+    - ``lanes``: factor instances a block evaluates side by side in the host build (the C
+      simulation), one lane each of a GCC/Clang vector type; ``None`` means one
       vector register, chosen by the compiler's target: 64 bytes where the build has AVX-512
       (8 doubles, 16 floats), else 32 (4 doubles, 8 floats). Synthesis (``__SYNTHESIS__``) and
       fixed point use one. Each lane computes exactly the scalar kernel, so results do not
       depend on it.
     - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation (portable: they
-      are the testbench's), and the base of the native build.
-    - ``native_cxxflags``: added for the native shared library only, which is built on the
-      machine that runs it: ``-O3 -march=native`` (AVX on x86, AVX-512 at full width where the
-      CPU has it) but no fused multiply-add — ``-mno-fma`` next to ``-ffp-contract=off`` in both
-      builds — so every operation rounds as in the C simulation and the two give bit-identical
-      results. GCC 12 still emits ``vfmaddsub`` under ``-ffp-contract=off -mno-fma`` where
-      AVX-512 is on, so with ``-mno-fma`` the Makefile checks the library (``objdump``) and
-      builds it again with ``-mno-avx512f`` if it holds any fused multiply-add. Set ``()`` to
-      build the native library with ``cxxflags`` alone.
+      are the testbench's; the native backend's ``NativeConfig`` starts from the same flags).
     - ``lambda_upper_bound`` / ``absolute_error_tol``: LM gives up when μ would pass the bound;
       it stops once the cost is at most the tolerance (the simulator's ``SimConfig`` options,
       same defaults, so both backends run the same algorithm).
@@ -79,7 +78,6 @@ class HlsConfig:
     cxx: str = "g++"
     cxxflags: tuple[str, ...] = ("-std=c++17", "-O2", "-ffp-contract=off", "-Wall", "-Wextra",
                                  "-Werror", "-Wno-unknown-pragmas")
-    native_cxxflags: tuple[str, ...] = field(default_factory=lambda: native_flags())
     lambda_upper_bound: float = 1e10
     absolute_error_tol: float = 1e-14
 
@@ -107,7 +105,7 @@ class HlsConfig:
         for name in ("max_variables", "max_step_columns"):
             if int(getattr(self, name)) < 1:
                 raise HlsConfigError(f"{name} must be ≥ 1, got {getattr(self, name)}")
-        for flag in (self.cxx, *self.cxxflags, *self.native_cxxflags):
+        for flag in (self.cxx, *self.cxxflags):
             if not re.match(r"^[A-Za-z0-9_+=./-]+$", flag):
                 raise HlsConfigError(f"compiler option {flag!r} has characters a Makefile would "
                                      "interpret")
@@ -193,14 +191,6 @@ def parse_clock(text: str) -> tuple[float, float]:
     return mhz, ns
 
 
-def native_flags(machine: str | None = None) -> tuple[str, ...]:
-    """The native build's extra flags on ``machine`` (default: this one's architecture)."""
-    machine = (machine or platform.machine()).lower()
-    if machine in ("x86_64", "amd64", "i686", "i386"):
-        return ("-O3", "-march=native", "-mno-fma", "-mprefer-vector-width=512")
-    return ("-O3",)  # elsewhere -ffp-contract=off alone keeps the rounding; ISA flags differ
-
-
 def ap_types_include() -> Path:
     """The folder holding ``ap_fixed.h`` from the optional ``hls4ml`` package.
 
@@ -220,3 +210,68 @@ def ap_types_include() -> Path:
                 return candidate
     raise HlsConfigError("scalar type ap_fixed needs Xilinx's ap_types headers, which fgc takes "
                          "from the optional hls4ml package: pip install 'fgc[hls-fixed]'")
+
+
+# ---- fixed point: the format's range, and the constants and data that must fit it -------------
+
+FIXED_QUANTIZATION = "AP_RND_CONV, AP_SAT"  # round to nearest (even); saturate, never wrap
+
+
+def fixed_format(scalar: str) -> tuple[int, int] | None:
+    """(W, I) of an ``ap_fixed<W,I>`` scalar, None for floating point."""
+    m = _AP_FIXED.match(scalar)
+    return (int(m.group(1)), int(m.group(2))) if m else None
+
+
+def fixed_declaration(scalar: str) -> str:
+    """The C++ type the kernel declares ``T`` as: ``ap_fixed<W, I, AP_RND_CONV, AP_SAT>`` (an
+    overflow saturates explicitly instead of wrapping round, a result rounds to nearest), or the
+    floating-point type itself."""
+    fmt = fixed_format(scalar)
+    return f"ap_fixed<{fmt[0]}, {fmt[1]}, {FIXED_QUANTIZATION}>" if fmt else scalar
+
+
+def fixed_range(scalar: str) -> tuple[float, float, float]:
+    """(lowest, highest, LSB) of ``ap_fixed<W,I>``: -2^(I-1) … 2^(I-1) - 2^-(W-I)."""
+    width, integer = fixed_format(scalar)
+    lsb = 2.0 ** -(width - integer)
+    return -(2.0 ** (integer - 1)), 2.0 ** (integer - 1) - lsb, lsb
+
+
+def check_fixed_constants(scalar: str, constants) -> None:
+    """Raise :class:`HlsConfigError` naming the first of ``constants`` ((name, value) pairs:
+    what the kernel would hold) outside the range of ``scalar`` (an ``ap_fixed<W,I>``), which
+    the format could only saturate; floating-point scalars hold every finite constant."""
+    if fixed_format(scalar) is None:
+        return
+    lo, hi, _ = fixed_range(scalar)
+    for name, value in constants:
+        if not lo <= float(value) <= hi:
+            raise HlsConfigError(
+                f"constant {name} = {float(value)!r} does not fit {scalar} (range {lo:g} … "
+                f"{hi:.6g}): the kernel would hold a saturated value. Use more integer bits or "
+                "a smaller constant (HlsConfig.lambda_upper_bound bounds LM's damping)")
+
+
+def check_fixed_data(scalar: str, program, data) -> None:
+    """Raise :class:`HlsConfigError` naming the variable or factor whose initial value or data
+    (measurements, square-root information) does not fit ``scalar``'s range."""
+    if fixed_format(scalar) is None:
+        return
+    import numpy as np
+
+    lo, hi, _ = fixed_range(scalar)
+    for v, values in zip(program.variables, data.variables, strict=True):
+        bad = np.flatnonzero((np.asarray(values) < lo) | (np.asarray(values) > hi))
+        if bad.size:
+            raise HlsConfigError(f"variable {v.key!r}: initial value entry {int(bad[0])} = "
+                                 f"{float(values[bad[0]])!r} does not fit {scalar} (range {lo:g} "
+                                 f"… {hi:.6g})")
+    for index, (spec, values) in enumerate(zip(program.factors, data.factors, strict=True)):
+        bad = np.flatnonzero((np.asarray(values) < lo) | (np.asarray(values) > hi))
+        if bad.size:
+            block = program.blocks[spec.block].name
+            raise HlsConfigError(f"factor instance {index} ({block} on {list(spec.keys)}): data "
+                                 f"entry {int(bad[0])} = {float(values[bad[0]])!r} does not fit "
+                                 f"{scalar} (range {lo:g} … {hi:.6g}; a square-root information "
+                                 "1/sigma counts)")

@@ -15,6 +15,7 @@ result names each value by the variable's key (``"values": {"x3": {"key": "x3", 
 from .config import SimConfig
 from .emitter import EmitError, emit
 from .printer import SimPrinter
-from .runner import SimResult, read_result, run
+from .runner import SimResult, linearize, read_result, run
 
-__all__ = ["EmitError", "SimConfig", "SimPrinter", "SimResult", "emit", "read_result", "run"]
+__all__ = ["EmitError", "SimConfig", "SimPrinter", "SimResult", "emit", "linearize", "read_result",
+           "run"]
