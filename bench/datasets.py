@@ -1,29 +1,36 @@
 """Every file in the gtsam wheel's data folder that GTSAM's readers accept: factor counts fgc vs
-GTSAM and what ``fgc verify`` says (float64 simulator vs GTSAM's LM).
+GTSAM, and with ``--verify`` what ``fgc verify`` says (float64 simulator vs GTSAM's LM).
 
-    python bench/datasets.py [--no-verify] [--skip-verify-over N] [--out docs/datasets.md]
+    python bench/datasets.py [--verify [--timeout S] [--skip-verify-over N]]
+                             [--only FILE ...] [--verify-arg=ARG ...] [--out table.md]
 
 A file is listed when ``gtsam.load2D`` or ``gtsam.load3D`` returns at least one factor. fgc's
-column is ``fgc.io.read_pose_graph``'s factor count, or the reason it refuses the file. The
-verify column is the verdict on this branch (exit 0 PASSED / 1 FAILED / 2 error) with its wall
-time; ``--skip-verify-over N`` skips files with more than N factors (their cell says so).
+column is ``fgc.io.read_pose_graph``'s factor count (it adds no factor: the gauge prior of
+``fgc verify`` comes later), or the reason it refuses the file. The verify column runs
+``fgc verify FILE`` in a subprocess per file (exit 0 PASSED / 1 FAILED / 2 error), stopped after
+``--timeout`` seconds; it gives the verdict, the wall and CPU time of that run (on a shared
+machine wall time says little), the state difference and, unless the states simply match,
+the verdict's reason. ``--skip-verify-over N`` leaves files with more than N factors out of the
+verify column; ``--only`` runs the named files alone (one large file at a time); ``--verify-arg``
+passes an argument on to ``fgc verify`` (``--verify-arg=-p --verify-arg=init=chordal``).
 """
 
 from __future__ import annotations
 
 import argparse
-import contextlib
-import io
 import os
+import resource
+import subprocess
 import sys
 import time
 
 import gtsam
 
-from fgc.cli import main as cli_main
 from fgc.data import gtsam_data_dir
 from fgc.errors import FgcError
 from fgc.io import read_pose_graph
+
+VERIFY = "import sys; from fgc.cli import main; sys.exit(main(sys.argv[1:]))"
 
 
 def gtsam_count(path: str) -> tuple[str, int] | None:
@@ -37,28 +44,60 @@ def gtsam_count(path: str) -> tuple[str, int] | None:
     return None
 
 
-def verify(name: str) -> str:
-    out, err = io.StringIO(), io.StringIO()
-    t0 = time.perf_counter()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = cli_main(["verify", name])
-    dt = time.perf_counter() - t0
-    if code == 2:
-        return f"error: {err.getvalue().strip()[:120]}"
-    lines = [ln.strip() for ln in out.getvalue().splitlines()]
+def _cpu_of_children() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def verify(path: str, timeout: float, extra: list[str]) -> str:
+    """The verify cell of one file: verdict (wall s, CPU s; state difference[; reason])."""
+    cpu0, t0 = _cpu_of_children(), time.perf_counter()
+    try:
+        proc = subprocess.run([sys.executable, "-c", VERIFY, "verify", path, *extra],
+                              capture_output=True, text=True, timeout=timeout, check=False)
+    except subprocess.TimeoutExpired:
+        return (f"not finished: stopped after {timeout:.0f} s wall "
+                f"({_cpu_of_children() - cpu0:.0f} s CPU)")
+    times = f"{time.perf_counter() - t0:.0f} s wall, {_cpu_of_children() - cpu0:.0f} s CPU"
+    lines = [ln.strip() for ln in proc.stdout.splitlines()]
+    if proc.returncode not in (0, 1):
+        last = (proc.stderr.strip().splitlines() or ["(no message)"])[-1]
+        return f"error (exit {proc.returncode}, {times}): {last[:160]}"
     state = next((ln for ln in lines if ln.startswith("max state")), "")
-    return f"{'PASSED' if code == 0 else 'FAILED'} ({dt:.0f} s; {state})"
+    cell = f"{'PASSED' if proc.returncode == 0 else 'FAILED'} ({times}; {state})"
+    verdict = next((ln for ln in reversed(lines) if ln.startswith(("PASSED", "FAILED"))), "")
+    if not verdict.startswith("PASSED: fgc's answer matches"):  # say why, unless plain
+        cell += f" — {verdict[:400]}"
+    return cell
+
+
+def _row(cells: list[str]) -> str:
+    """A Markdown table row; a cell's own "|" and newlines cannot split it."""
+    return "| " + " | ".join(c.replace("|", "\\|").replace("\n", " ") for c in cells) + " |"
 
 
 def main() -> int:
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--no-verify", action="store_true")
-    ap.add_argument("--skip-verify-over", type=int, default=None)
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--verify", action="store_true", help="run fgc verify per file")
+    ap.add_argument("--timeout", type=float, default=900.0,
+                    help="seconds per verify run (default 900)")
+    ap.add_argument("--skip-verify-over", type=int, default=None, metavar="N")
+    ap.add_argument("--only", action="append", default=[], metavar="FILE",
+                    help="only this data file (repeatable)")
+    ap.add_argument("--verify-arg", action="append", default=[], metavar="ARG")
     ap.add_argument("--out")
     args = ap.parse_args()
-    rows = ["| file | GTSAM reader | GTSAM factors | fgc factors | fgc verify |",
-            "|---|---|---|---|---|"]
-    for name in sorted(os.listdir(gtsam_data_dir())):
+    names = sorted(os.listdir(gtsam_data_dir()))
+    unknown = sorted(set(args.only) - set(names))
+    if unknown:
+        ap.error(f"not in {gtsam_data_dir()}: {', '.join(unknown)}")
+    header = "| file | GTSAM reader | GTSAM factors | fgc factors |"
+    rows = [header + (" `fgc verify` |" if args.verify else ""),
+            "|---|---|---|---|" + ("---|" if args.verify else "")]
+    print("\n".join(rows), flush=True)
+    for name in names:
+        if args.only and name not in args.only:
+            continue
         path = str(gtsam_data_dir() / name)
         counted = gtsam_count(path)
         if counted is None:
@@ -69,13 +108,15 @@ def main() -> int:
             ok = True
         except FgcError as exc:
             fgc_cell, ok = f"refused: {str(exc).split(': ', 1)[-1][:110]}", False
-        if not ok or args.no_verify:
-            v = "—"
-        elif args.skip_verify_over is not None and n_gtsam > args.skip_verify_over:
-            v = f"not run (> {args.skip_verify_over} factors)"
-        else:
-            v = verify(name)
-        rows.append(f"| {name} | {reader} | {n_gtsam} | {fgc_cell} | {v} |".replace("\n", " "))
+        cells = [name, reader, str(n_gtsam), fgc_cell]
+        if args.verify:
+            if not ok:
+                cells.append("— (refused)")
+            elif args.skip_verify_over is not None and n_gtsam > args.skip_verify_over:
+                cells.append(f"not run (> {args.skip_verify_over} factors)")
+            else:
+                cells.append(verify(path, args.timeout, args.verify_arg))
+        rows.append(_row(cells))
         print(rows[-1], flush=True)
     if args.out:
         with open(args.out, "w") as fh:

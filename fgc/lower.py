@@ -34,7 +34,8 @@ def lower(graph: Graph, blocks: Sequence[FactorBlock], sched: Schedule, storage:
             specs.append(_block_spec(b, graph))
         instances.append(FactorSpec(types[b.type.key], tuple(str(k) for k in b.keys),
                                     tuple(b.indices)))
-    variables = tuple(VariableSpec(str(k), v.type.__name__, v.type.dim, v.type.storage_dim)
+    variables = tuple(VariableSpec(str(k), v.type.__name__, v.type.dim, v.type.storage_dim,
+                                   isinstance(k, int))
                       for k, v in graph.variables.items())
     return Program(name, variables, tuple(specs), tuple(instances), sched, storage, solver,
                    max_variables)

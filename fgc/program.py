@@ -138,10 +138,19 @@ class KernelText:
 
 @dataclass(frozen=True)
 class VariableSpec:
+    """A variable: ``key`` is the text of the graph's key (``str(k)``), ``int_key`` whether
+    that key was an int, so that results written by a backend give the user's key back."""
+
     key: str
     type_name: str
     dim: int
     storage_dim: int
+    int_key: bool = False
+
+    @property
+    def user_key(self) -> int | str:
+        """The graph's key: an int again if it was one."""
+        return int(self.key) if self.int_key else self.key
 
 
 @dataclass(frozen=True)
@@ -202,6 +211,9 @@ class Program:
         out = dataclasses.asdict(dataclasses.replace(self, schedule=None, storage=None))
         out["schedule"] = self.schedule.to_dict()
         out["storage"] = dataclasses.asdict(self.storage)
+        for v in out["variables"]:  # only an int key says so: str-keyed JSON is as before
+            if not v["int_key"]:
+                del v["int_key"]
         return out
 
     def to_json(self) -> str:

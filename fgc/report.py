@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import base64
 import dataclasses
+import re
 import tempfile
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -240,6 +241,31 @@ def render_html(r: dict, figure_uris: dict[str, str] | None = None) -> str:
     env = jinja2.Environment(loader=jinja2.PackageLoader("fgc", "templates"),
                              autoescape=True, undefined=jinja2.StrictUndefined,
                              trim_blocks=True, lstrip_blocks=True)
+    env.filters["breakable"] = breakable
+    laid_out = [{"title": s.title, "headers": s.headers, "rows": s.rows, "notes": s.notes,
+                 "kinds": column_kinds(s)} for s in sections(r)]
     return env.get_template(_TEMPLATE).render(
-        headline=headline(r), sections=sections(r), figures=figure_uris or {},
+        headline=headline(r), sections=laid_out, figures=figure_uris or {},
         template=_TEMPLATE)
+
+
+_NUMBER = re.compile(r"[-+]?[\d,.]+(e[-+]?\d+)?\s*(×|%|[a-zA-Zµ/]{1,4})?(\s*\(.*\))?|[—-]?")
+
+
+def breakable(text: str):
+    """``text`` HTML-escaped, with a line-break opportunity (``<wbr>``) after ``+``, ``,``,
+    ``_`` and ``/`` and between the words of a CamelCase name, so that a long block name wraps
+    at a word ("CombinedImu|Factor+|Lidar|Odometry|Factor") rather than overflow the page."""
+    import markupsafe
+
+    escaped = str(markupsafe.escape(text))
+    return markupsafe.Markup(re.sub(r"(?<=[+,_/])|(?<=[a-z0-9])(?=[A-Z])", "<wbr>", escaped))
+
+
+def column_kinds(section: Section) -> list[str]:
+    """"num" (right-aligned, never wrapped) or "text" (left-aligned, wrapped) per column: the
+    first column is the row's name; a column is a number column if every cell reads as a
+    number, optionally with a unit and a parenthesised remark."""
+    return ["text" if j == 0 or not all(_NUMBER.fullmatch(row[j].strip())
+                                        for row in section.rows) else "num"
+            for j in range(len(section.headers))]

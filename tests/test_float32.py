@@ -151,7 +151,7 @@ def test_host_resolution_equals_the_simulators(name, tmp_path):
     module = emit(program, tmp_path / "sim")[0]
     raw = runpy.run_path(str(module), run_name="fgc_rho_test")["run"](
         str(tmp_path / "data.txt"), None, "float32")
-    storage = [np.asarray(v, dtype=np.float64) for v in raw["values"]]
+    storage = [np.asarray(v["value"], dtype=np.float64) for v in raw["values"].values()]
     rho, variable = conditioning.resolution(whitened_jacobians(program, data, storage), storage,
                                             [v.dim for v in program.variables], "float32")
     assert rho == pytest.approx(raw["resolution"]["rho"], rel=RHO_RTOL)

@@ -85,6 +85,29 @@ def test_render_html_escapes_every_cell(monkeypatch):
         assert escaped in page, escaped
 
 
+def test_html_tables_fit_the_page(monkeypatch):
+    """A wide table scrolls in its own box; names wrap at CamelCase words and after + and ,
+    (still escaped); number columns stay right-aligned on one line."""
+    import fgc.report
+
+    report = {"spec": "s", "params": {}, "program": "p", "variables": 1, "factors": 1,
+              "block_instances": 1,
+              "solver": {"method": "lm", "linear": "qr", "precision": "float32",
+                         "ordering": "auto", "units": 1, "cpe": 1, "clock_mhz": 143.0}}
+    wide = Section("Factor blocks", ("block", "members", "ops", "time"),
+                   (("CombinedImuFactor+LidarOdometryFactor", "CombinedImuFactor, <b>Lidar",
+                     "777,057,347", "4.590 ms"), ("GPSFactor", "GPSFactor", "6", "—")))
+    monkeypatch.setattr(fgc.report, "sections", lambda r: [wide])
+    page = render_html(report)
+    assert "div.table { overflow-x: auto" in page and '<div class="table"><table>' in page
+    assert ('<td class="text">Combined<wbr>Imu<wbr>Factor+<wbr>Lidar<wbr>Odometry<wbr>Factor'
+            '</td>') in page
+    assert '<td class="text">Combined<wbr>Imu<wbr>Factor,<wbr> &lt;b&gt;Lidar</td>' in page
+    assert '<td class="num">777,057,347</td><td class="num">4.590 ms</td>' in page
+    assert '<th class="text">members</th><th class="num">ops</th>' in page
+    assert "td.num { white-space: nowrap; }" in page
+
+
 def test_format_table_aligns_columns():
     lines = format_table(("name", "n"), [("a", "1"), ("long name", "1,000")], indent="")
     assert lines == ["name           n", "a              1", "long name  1,000"]

@@ -6,12 +6,16 @@ algorithm (GN/LM, partial-QR or Cholesky elimination along the schedule) on a da
     result = sim.run(program, problem_data(graph, program), precision="float32")
     result.values["x3"], result.final_error, result.status
 
-The emitted program runs on its own: ``python out/<name>_sim.py data.txt result.json``.
+The emitted program runs on its own: ``python out/<name>_sim.py data.txt result.json``; its
+result names each value by the variable's key (``"values": {"x3": {"key": "x3", "type": "Pose2",
+"value": [...]}}``, an int key written as a JSON number), and ``sim.read_result(program,
+"result.json")`` reads it back as the SimResult ``run`` returns.
 """
 
 from .config import SimConfig
 from .emitter import EmitError, emit
 from .printer import SimPrinter
-from .runner import SimResult, linearize, run
+from .runner import SimResult, linearize, read_result, run
 
-__all__ = ["EmitError", "SimConfig", "SimPrinter", "SimResult", "emit", "linearize", "run"]
+__all__ = ["EmitError", "SimConfig", "SimPrinter", "SimResult", "emit", "linearize", "read_result",
+           "run"]

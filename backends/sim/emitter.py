@@ -2,11 +2,14 @@
 
 Everything the templates place is computed here or printed by :class:`SimPrinter`: the templates
 only loop over these fields. User-given names (problem, factor types) reach the emitted code only
-sanitised, in comments; variables, blocks and factors are referred to by index.
+sanitised, in comments; variables, blocks and factors are referred to by index. The variables'
+keys, which the result file names its values by, are data: JSON text (hex-coded unless plain) in
+string literals (:meth:`SimPrinter.json_text`), decoded at run time.
 """
 
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
@@ -22,6 +25,8 @@ from .config import SimConfig, comment
 from .printer import PrintedKernel, SimPrinter
 
 NOISE_KINDS = ("isotropic", "diagonal", "full")
+# the result file's format (2: values keyed by variable, {str(key): {"key", "type", "value"}})
+RESULT_FORMAT = "fgc-sim-result 2"
 # variable type → (retraction kind, tangent dim, storage dim); vector spaces are matched below
 RETRACT_KINDS = {"Pose3": ("pose3", 6, 12), "Rot3": ("rot3", 3, 9), "Pose2": ("pose2", 3, 4),
                  "Rot2": ("rot2", 1, 2)}
@@ -61,6 +66,7 @@ def _context(program: Program, config: SimConfig) -> dict:
     return {
         "fgc_version": fgc.__version__,
         "data_magic": MAGIC,
+        "result_format": json.dumps(RESULT_FORMAT),
         "structure_fingerprint": program.structure_fingerprint,
         "pivot_tolerance_float64": repr(float(config.pivot_tolerance_float64)),
         "pivot_tolerance_float32": repr(float(config.pivot_tolerance_float32)),
@@ -79,7 +85,9 @@ def _context(program: Program, config: SimConfig) -> dict:
         "solver": [(k, lit(v)) for k, v in _solver_options(program, config)],
         "variable_dims": lit([v.dim for v in program.variables]),
         "variable_storage": lit([v.storage_dim for v in program.variables]),
-        "retract_groups": lit(_retract_groups(program)),
+        "retract_groups": lit(_retract_groups(program)),  # checks the type names
+        "variables": [(printer.json_text(v.user_key), lit(v.type_name))
+                      for v in program.variables],
         "blocks": _blocks(program, printer),
         "steps": [lit(s) for s in _steps(program)],
         "back_substitution": lit(sched.back_substitution),

@@ -8,7 +8,9 @@ which NumPy treats as "weak" scalars: a float32 ``x`` keeps every intermediate i
 
 from __future__ import annotations
 
+import json
 import math
+import re
 from collections.abc import Sequence
 from typing import NamedTuple
 
@@ -23,6 +25,9 @@ from fgc.kernel import Kernel, drop_dead
 
 class PrintError(FgcError):
     """A kernel uses something the simulator's printer cannot express."""
+
+
+_PLAIN = re.compile(r"[A-Za-z0-9_.:+\- ]*")
 
 
 class PrintedKernel(NamedTuple):
@@ -128,6 +133,19 @@ class SimPrinter(NumPyPrinter):
         if isinstance(value, str) and value.isidentifier():
             return repr(value)
         raise PrintError(f"no literal for {value!r}")
+
+    @staticmethod
+    def json_text(value) -> str:
+        """A Python string literal holding ``value`` (a variable key) as JSON text: how user data
+        reach the emitted code, decoded by ``json_value`` at run time and never read as code.
+        An int, or a string of letters, digits, space and ``_.:+-``, is its JSON text
+        (``'"x0"'``, ``'7'``); any other is ``'hex:'`` and the hex digits of its UTF-8 JSON
+        text, so that no quote, backslash, newline or non-ASCII character of a user's string
+        reaches an emitted file (as the HLS backend's ``names`` rules demand of user text)."""
+        text = json.dumps(value, ensure_ascii=False)
+        if isinstance(value, int) or (isinstance(value, str) and _PLAIN.fullmatch(value)):
+            return repr(text)
+        return repr("hex:" + text.encode("utf-8").hex())
 
 
 def _group_logs(steps: list, exprs: list) -> tuple[list, list]:

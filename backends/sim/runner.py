@@ -9,7 +9,7 @@ import subprocess
 import sys
 import tempfile
 from collections.abc import Collection, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -21,17 +21,19 @@ from fgc.geometry import LieGroup
 from fgc.program import Program
 
 from .config import SimConfig
-from .emitter import emit
+from .emitter import RESULT_FORMAT, emit
 
 
 @dataclass(frozen=True)
 class SimResult:
     """What the simulator computed.
 
-    ``values``/``storage``: the final estimate per Program variable key (fgc values / raw storage
-    arrays); ``status`` is "converged", "max_iterations" or "failed" and ``reason`` says which
-    stopping rule or failure (e.g. "relative_decrease", "lambda_limit", "singular",
-    "precision_limit": float32 cannot place the state within its noise, never "converged");
+    ``values``/``storage``: the final estimate per Program variable key (``str`` of the graph's
+    key; fgc values / raw storage arrays), ``keys`` the graph's key per variable key and
+    ``user_values`` the values by the graph's keys (an int key stays an int); ``status`` is
+    "converged", "max_iterations" or "failed" and ``reason`` says which stopping rule or failure
+    (e.g. "relative_decrease", "lambda_limit", "singular", "precision_limit": float32 cannot
+    place the state within its noise, never "converged");
     ``final_error`` is GTSAM's graph error at ``values`` (the last accepted point);
     ``cost_log`` holds the initial cost and the cost after each accepted step (incremental
     runs: the initial and the final cost of the whole graph); ``updates`` lists, for an
@@ -65,6 +67,12 @@ class SimResult:
     warnings: tuple[str, ...] = ()
     linear: str = "qr"
     linear_precision: str | None = None  # the linear solver's precision (None: ``precision``)
+    keys: dict[str, int | str] = field(default_factory=dict)  # variable key → the user's key
+
+    @property
+    def user_values(self) -> dict[int | str, LieGroup]:
+        """``values`` by the graph's own keys (an int key is an int again)."""
+        return {self.keys.get(k, k): v for k, v in self.values.items()}
 
     @property
     def converged(self) -> bool:
@@ -220,35 +228,85 @@ def _explain(program: Program, exc: Exception) -> str:
     return message
 
 
+def read_result(program: Program, path: str | Path, config: SimConfig | None = None,
+                files: tuple[Path, ...] = ()) -> SimResult:
+    """The result file an emitted simulator of ``program`` wrote (``python <name>_sim.py DATA
+    RESULT.json``) as a :class:`SimResult`: values keyed by variable as :func:`run` returns
+    them. Raises FgcError naming the file if it is not such a result, is for another Program's
+    variables, or records a data error."""
+    path = Path(path)
+    try:
+        raw = json.loads(path.read_text())
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise FgcError(f"{path}: cannot read the simulator's result: {exc}") from None
+    if not isinstance(raw, dict) or raw.get("format") != RESULT_FORMAT:
+        have = raw.get("format") if isinstance(raw, dict) else None
+        raise FgcError(f"{path}: not an fgc simulator result of format '{RESULT_FORMAT}' "
+                       f"(format {have!r})")
+    if raw["status"] == "data_error":
+        raise DataError(f"{path}: the simulator refused its data: {raw['message']}")
+    return _result(program, raw, files, config or SimConfig(), where=str(path))
+
+
+def _keyed(program: Program, values: dict, where: str, complete: bool = True
+           ) -> dict[str, np.ndarray]:
+    """Program key → storage from a result's keyed values ({str(key): {"key", "type",
+    "value"}}), each checked against the Program's variable (key, int-ness, type, size);
+    ``complete``: every variable must have one."""
+    if not isinstance(values, dict):
+        raise FgcError(f"{where}: the result's values are not keyed by variable")
+    out = {}
+    for spec in program.variables:
+        entry = values.get(spec.key)
+        if entry is None:
+            if complete:
+                raise FgcError(f"{where}: the result has no value for variable {spec.key!r}")
+            continue
+        entry = entry if isinstance(entry, dict) else {}
+        key, number = entry.get("key"), np.asarray(entry.get("value", ()), dtype=np.float64)
+        if (type(key) is not type(spec.user_key) or key != spec.user_key
+                or entry.get("type") != spec.type_name or number.shape != (spec.storage_dim,)):
+            raise FgcError(f"{where}: the result's value for variable {spec.key!r} is "
+                           f"{entry.get('type')!r} key {key!r} of {number.size} numbers; the "
+                           f"Program has {spec.type_name} key {spec.user_key!r} of "
+                           f"{spec.storage_dim} (another Program's result?)")
+        out[spec.key] = number
+    extra = sorted(set(values) - {v.key for v in program.variables})
+    if extra:
+        raise FgcError(f"{where}: the result has values for variables the Program does not "
+                       f"have: {extra[:5]}")
+    return out
+
+
+def _values(program: Program, storage: dict[str, np.ndarray]) -> dict[str, LieGroup]:
+    types = {v.key: v for v in program.variables}
+    return {k: value_type(types[k].type_name, types[k].dim).from_storage(arr)
+            for k, arr in storage.items()}
+
+
 def _result(program: Program, raw: dict, files: tuple[Path, ...],
-            config: SimConfig) -> SimResult:
-    storage, values = {}, {}
-    for spec, numbers in zip(program.variables, raw["values"], strict=True):
-        arr = np.asarray(numbers, dtype=np.float64)
-        storage[spec.key] = arr
-        values[spec.key] = value_type(spec.type_name, spec.dim).from_storage(arr)
+            config: SimConfig, where: str = "the simulator") -> SimResult:
+    storage = _keyed(program, raw["values"], where)
+    values = _values(program, storage)
     singular, messages, warned = _explain_outcome(program, raw, config)
     return SimResult(values, storage, raw["status"], raw["reason"], raw["iterations"],
                      raw["initial_error"], raw["final_error"], tuple(raw["cost_log"]),
                      raw["precision"], raw["setup_seconds"], raw["solve_seconds"], files,
-                     _updates(program, raw.get("incremental")),
+                     _updates(program, raw.get("incremental"), where),
                      singular, raw.get("condition"), " ".join(messages), tuple(warned),
-                     raw.get("linear", program.solver.linear), raw.get("linear_precision"))
+                     raw.get("linear", program.solver.linear), raw.get("linear_precision"),
+                     {v.key: v.user_key for v in program.variables})
 
 
-def _updates(program: Program, raw: list[dict] | None) -> tuple[dict, ...] | None:
+def _updates(program: Program, raw: list[dict] | None, where: str
+             ) -> tuple[dict, ...] | None:
     """An incremental run's update records, each estimate as fgc values by variable key (only
     the variables that have arrived)."""
     if raw is None:
         return None
-    out = []
-    for update in raw:
-        values = {spec.key: value_type(spec.type_name, spec.dim).from_storage(
-            np.asarray(numbers, dtype=np.float64))
-            for spec, numbers in zip(program.variables, update["values"], strict=True)
-            if numbers is not None}
-        out.append({**update, "values": values})
-    return tuple(out)
+    return tuple({**update, "values": _values(program, _keyed(program, update["values"], where,
+                                                               complete=False))}
+                 for update in raw)
 
 
 def _explain_outcome(program: Program, raw: dict, config: SimConfig

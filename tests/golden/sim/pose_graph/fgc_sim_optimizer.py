@@ -24,7 +24,7 @@ import numpy
 
 RESOLUTION_LIMIT = 1.0  # ρ (see resolution): rounding the state moves a residual by ≥ 1σ
 MU_MIN = 1e-30  # μ never reaches 0 in LM: its damping rows keep every step well posed
-RESULT_FORMAT = "fgc-sim-result 1"
+RESULT_FORMAT = "fgc-sim-result 2"
 
 
 def _offsets(sizes):
@@ -267,7 +267,7 @@ def _step(problem, x, cost, lin, mu, opts, limits):
 def solve(spec, data_path, result_path=None, precision=None, lib=None, incremental=False):
     """Read ``data_path``, optimise (in one batch, or keyframe by keyframe following the
     compiled incremental plan), write the JSON result to ``result_path`` (if given) and return
-    it as a dict (values: each variable's storage, in the problem's variable order)."""
+    it as a dict (values: see ``keyed_values``)."""
     opts = dict(spec["solver"])
     precision = precision or opts["precision"]
     if incremental and spec["incremental"] is None:
@@ -294,6 +294,9 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
             opts["method"] == "gn" or opts["singular_lm_fails"]):
         status, reason = "failed", "singular"
     offsets = _offsets(spec["variable_storage"])
+    keys = variable_keys(spec)
+    if updates is not None:
+        updates = [{**u, "values": keyed_values(keys, u["values"])} for u in updates]
     result = {
         "format": RESULT_FORMAT, "status": status, "reason": reason,
         "converged": status == "converged", "iterations": it,
@@ -304,7 +307,8 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
         "diagnose_seconds": time.perf_counter() - t2, "incremental": updates,
         "singular": singular, "condition": (diagnosis or {}).get("condition"),
         "resolution": resolved,
-        "values": [x[a:b].astype(float).tolist() for a, b in zip(offsets[:-1], offsets[1:])],
+        "values": keyed_values(keys, [x[a:b].astype(float).tolist()
+                                      for a, b in zip(offsets[:-1], offsets[1:])]),
     }
     if result_path is not None:
         with open(result_path, "w") as handle:
@@ -339,6 +343,28 @@ def _singular(problem, reason, diagnosis, lib):
     if reason == "singular" and getattr(problem, "singular", None) is not None:
         return lib.diagnostics.singular_info(problem.spec, problem.singular)
     return None if diagnosis is None else diagnosis["singular"]
+
+
+def variable_keys(spec):
+    """(key, value type) per variable, in the problem's order: the user's keys (an int stays an
+    int), decoded from the text the problem module holds them as."""
+    return [(json_value(key), type_name) for key, type_name in spec["variables"]]
+
+
+def json_value(text):
+    """A key of the problem module's table: JSON text, or "hex:" and its UTF-8 in hex."""
+    if text.startswith("hex:"):
+        text = bytes.fromhex(text[4:]).decode("utf-8")
+    return json.loads(text)
+
+
+def keyed_values(keys, storages):
+    """The values as the result holds them: {str(key): {"key": key, "type": value type,
+    "value": storage numbers}} in the problem's variable order, for each variable with a value
+    (an incremental update's estimate has none for the variables yet to arrive)."""
+    return {str(key): {"key": key, "type": type_name, "value": value}
+            for (key, type_name), value in zip(keys, storages, strict=True)
+            if value is not None}
 
 
 def write_error(result_path, exc):

@@ -1045,6 +1045,15 @@ PROBLEM = {
     "num_factors": 7,
     "variable_dims": (6, 6, 6, 6, 6),
     "variable_storage": (12, 12, 12, 12, 12),
+    # per variable: its key as JSON text, "hex:" + hex digits if not plain (the user's key, an
+    # int stays an int; decoded, never run) and its value type; results are keyed by it
+    "variables": (
+        ('"x0"', 'Pose3'),
+        ('"x1"', 'Pose3'),
+        ('"x2"', 'Pose3'),
+        ('"x3"', 'Pose3'),
+        ('"x4"', 'Pose3'),
+    ),
     "retract_groups": (('pose3', (0, 1, 2, 3, 4)),),
     "blocks": BLOCKS,
     # (frontals, separator, entering factors as (block type, instance, member), children, parent)
