@@ -1,0 +1,202 @@
+"""Streaming: a chain example's keyframes fed one at a time to the simulator's incremental or
+fixed-lag update, per-keyframe results, the trajectory and its accuracy against the batch
+optimum. Behind ``fgc stream`` and :func:`fgc.stream`; ``fgc simulate / verify`` with
+``--incremental`` or ``--window`` use the same pieces.
+
+Modes (the simulator only; the HLS design and the native solver run batch solves — issue 19):
+
+- **incremental** (``SolverConfig.incremental_k`` = K, ``batch_every``): each keyframe
+  re-eliminates the newest K clusters on the kept Bayes net (paper A), batch steps re-eliminate
+  all; every variable keeps an estimate (back-substitution through the kept conditionals).
+- **fixed-lag window** (``window`` = W): after each keyframe the newest W keyframes are held; the
+  one leaving is marginalised into a dense Gaussian prior on the window, linear in the local
+  coordinates at the point where it was formed (its linearisation point never moves; every
+  other factor of the window is relinearised each iteration). Marginalised keyframes keep the
+  estimate of the update that marginalised them.
+
+Latency: the accelerator's cost model (``plan_cost``) prices batch iterations of the whole
+Program; a per-keyframe window update is not priced yet, so each update reports the simulator's
+wall time and says the model estimate is not available.
+"""
+
+from __future__ import annotations
+
+import queue
+import threading
+from collections.abc import Iterator
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from fgc.dsl import Graph
+from fgc.errors import FgcError
+from fgc.geometry import Pose2, Pose3
+
+MODEL_ESTIMATE = "not available: the cost model prices batch iterations only"
+HW_REFUSAL = "incremental mode runs in the simulator only (issue 19: HLS and native next)"
+
+
+@dataclass(frozen=True)
+class KeyframeResult:
+    """One keyframe's update: its index, mode ("incremental", "batch" or "fixed-lag"), the
+    first cluster re-eliminated, LM iterations, status, the window cost, the simulator's wall
+    time (s) and the estimate after the update (fgc values by key, of the variables that have
+    arrived — of the window, fixed-lag)."""
+
+    keyframe: int
+    mode: str
+    first: int
+    iterations: int
+    status: str
+    cost: float
+    seconds: float
+    values: dict
+
+    def newest(self, program) -> dict:
+        """The estimate of this keyframe's own variables."""
+        return {k: self.values[k] for k in program.schedule.clusters[self.keyframe]}
+
+
+def check_mode(incremental: int | None, batch_every, window: int | None) -> None:
+    if window is not None and (incremental is not None or batch_every is not None):
+        raise FgcError("--window (a fixed-lag window) excludes --incremental/--batch-every")
+    if batch_every is not None and incremental is None:
+        raise FgcError("--batch-every needs --incremental K: batch steps belong to an "
+                       "incremental plan")
+    if window is not None and window < 1:
+        raise FgcError(f"--window {window}: the window must hold at least 1 keyframe")
+
+
+def compile_stream(graph: Graph, solver=None, incremental: int | None = None,
+                   batch_every=None, window: int | None = None, name: str = "stream"):
+    """The Program for a stream: ``solver`` (a SolverConfig, default float64) with the
+    incremental plan, if asked for. Raises FgcError when the graph is not a chain."""
+    from fgc.compile import compile_graph
+    from fgc.program import SolverConfig
+
+    check_mode(incremental, batch_every, window)
+    solver = solver or SolverConfig(precision="float64")
+    if incremental is not None:
+        solver = replace(solver, incremental_k=incremental, batch_every=batch_every)
+    program = compile_graph(graph, solver, name=name)
+    if program.schedule.structure_class != "chain" or not program.schedule.clusters:
+        raise FgcError(f"streaming needs a chain of keyframes; the graph is "
+                       f"{program.schedule.structure_class}")
+    return program
+
+
+def run_stream(program, data, window: int | None = None, progress=None, precision=None):
+    """Run the simulator keyframe by keyframe (incremental plan if the Program has one, else
+    the fixed-lag ``window``); ``progress(KeyframeResult)`` after each keyframe. Returns the
+    SimResult."""
+    from fgc_backends import load
+
+    sim = load("sim")
+    incremental = program.schedule.incremental is not None
+    if not incremental and window is None:
+        raise FgcError("streaming needs --incremental K or --window W")
+    callback = None
+    if progress is not None:
+        def callback(raw):
+            progress(keyframe_result(program, raw))
+    return sim.run(program, data, precision=precision, incremental=incremental,
+                   window=window, progress=callback)
+
+
+def keyframe_result(program, record: dict) -> KeyframeResult:
+    """A KeyframeResult from an update record (raw storage lists or fgc values)."""
+    from fgc_backends.sim.runner import value_type
+
+    values = record["values"]
+    if isinstance(values, list):
+        values = {spec.key: value_type(spec.type_name, spec.dim).from_storage(
+            np.asarray(v, dtype=np.float64))
+            for spec, v in zip(program.variables, values, strict=True) if v is not None}
+    return KeyframeResult(record["keyframe"], record["mode"], record["first"],
+                          record["iterations"], record["status"], float(record["cost"]),
+                          float(record.get("seconds", float("nan"))), values)
+
+
+def stream(graph: Graph, window: int | None = None, incremental: int | None = None,
+           batch_every=None, solver=None) -> Iterator[KeyframeResult]:
+    """Feed ``graph``'s keyframes to the simulator one at a time and yield each keyframe's
+    :class:`KeyframeResult` as soon as its update is done (the simulator runs in a worker
+    thread). Either ``window`` (fixed-lag, W keyframes) or ``incremental`` (K, with optional
+    ``batch_every``)."""
+    from fgc.datafile import problem_data
+
+    if window is None and incremental is None:
+        raise FgcError("fgc.stream needs window=W or incremental=K")
+    program = compile_stream(graph, solver, incremental, batch_every, window)
+    data = problem_data(graph, program)
+    results: queue.Queue = queue.Queue()
+
+    def work():
+        try:
+            run_stream(program, data, window, lambda r: results.put(("update", r)))
+            results.put(("done", None))
+        except BaseException as exc:  # handed to the consumer, raised there
+            results.put(("error", exc))
+
+    worker = threading.Thread(target=work, daemon=True)
+    worker.start()
+    while True:
+        kind, item = results.get()
+        if kind == "update":
+            yield item
+        elif kind == "error":
+            raise item
+        else:
+            break
+    worker.join()
+
+
+# --------------------------------------------------------------------------------------------
+# accuracy and summaries
+# --------------------------------------------------------------------------------------------
+
+
+def poses(graph: Graph, values: dict) -> dict:
+    """The pose values (Pose3, else Pose2) of ``values`` ({str key: value}) in graph order."""
+    out = {str(k): values[str(k)] for k in graph.variables if str(k) in values}
+    kind = Pose3 if any(isinstance(v, Pose3) for v in out.values()) else Pose2
+    return {k: v for k, v in out.items() if isinstance(v, kind)}
+
+
+def batch_optimum(graph: Graph) -> dict:
+    """GTSAM's LM optimum of the whole graph ({str key: fgc value})."""
+    from fgc.reporting import gtsam_optimize
+    from fgc.verify import to_gtsam, values_from_gtsam
+
+    problem = to_gtsam(graph)
+    result, _ = gtsam_optimize(problem)
+    return {str(k): v for k, v in values_from_gtsam(graph, problem, result).items()}
+
+
+def accuracy(graph: Graph, final: dict, online: dict, optimum: dict) -> dict:
+    """ATE (translation m, rotation deg; no alignment: both in the graph's frame) of the final
+    streamed trajectory and of the online one (each keyframe's estimate when it arrived)
+    against the batch optimum, and the largest tangent-space distance of any variable."""
+    from fgc import metrics
+
+    ref = poses(graph, optimum)
+    out = {}
+    for name, values in (("final", final), ("online", online)):
+        est = poses(graph, values)
+        keys = [k for k in ref if k in est]
+        if not keys:
+            continue
+        e = metrics.as_trajectory({k: est[k] for k in keys})
+        r = metrics.as_trajectory({k: ref[k] for k in keys})
+        out[name] = {rel: metrics.ate(e, r, relation=rel).statistics()
+                     for rel in metrics.RELATIONS}
+    out["max_state_distance"] = max(float(np.linalg.norm(optimum[k].local(v)))
+                                    for k, v in final.items())
+    return out
+
+
+def timing_summary(seconds) -> dict:
+    s = np.asarray(list(seconds), dtype=float)
+    return {"updates": int(s.size), "median_ms": float(np.median(s) * 1e3),
+            "p99_ms": float(np.percentile(s, 99) * 1e3), "max_ms": float(s.max() * 1e3),
+            "total_s": float(s.sum())}
