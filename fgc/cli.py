@@ -495,6 +495,8 @@ def _newest_text(update, program) -> str:
 def _cmd_stream(args) -> int:
     from fgc import export, streaming
 
+    if not _streaming(args):
+        raise FgcError(f"fgc {args.command} needs --incremental K or --window W")
     graph, program, data = _stream_setup(args, "float64")
     window = getattr(args, "window", None)
     quiet = getattr(args, "quiet", False)

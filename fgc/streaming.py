@@ -78,7 +78,10 @@ def compile_stream(graph: Graph, solver=None, incremental: int | None = None,
     solver = solver or SolverConfig(precision="float64")
     if incremental is not None:
         solver = replace(solver, incremental_k=incremental, batch_every=batch_every)
-    program = compile_graph(graph, solver, name=name)
+    try:
+        program = compile_graph(graph, solver, name=name)
+    except ValueError as exc:  # the incremental plan's own checks (window, batch steps)
+        raise FgcError(f"incremental plan: {exc}") from None
     if program.schedule.structure_class != "chain" or not program.schedule.clusters:
         raise FgcError(f"streaming needs a chain of keyframes; the graph is "
                        f"{program.schedule.structure_class}")
