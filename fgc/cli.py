@@ -240,7 +240,12 @@ def _compile(args, precision_default: str):
     if derive_with_progress(graph, _show_progress(args)):
         stages.done("derive (cold)")
     config = solver_config(args, _precision_default(args, precision_default))
-    program = compile_graph(graph, config, name=_name(args.spec))
+    try:
+        program = compile_graph(graph, config, name=_name(args.spec))
+    except ValueError as exc:
+        if config.incremental_k is None:
+            raise
+        raise FgcError(f"incremental plan: {exc}") from None  # --incremental/--batch-every
     stages.done("compile")
     data = problem_data(graph, program)
     args.stages = stages

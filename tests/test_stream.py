@@ -154,6 +154,8 @@ def test_cli_refuses_incremental_on_hls_and_native(argv, capsys):
     (["stream", LIO, "--window", "3", "--incremental", "2"], "excludes"),
     (["stream", LIO, "--batch-every", "5"], "needs --incremental"),
     (["stream", LIO, "--window", "0"], "not a positive integer"),
+    (["compile", LIO, "-p", "N=4", "--incremental", "2", "--batch-every", "9,", "--out",
+      "unused"], "batch steps [9] lie outside"),
 ])
 def test_cli_bad_streaming_options(argv, message, capsys):
     assert main(argv) == 2
