@@ -171,3 +171,22 @@ def test_fixed_lag_distance_helper_is_discriminating():
     a = {"x": fgc.Vector3(np.zeros(3))}
     b = {"x": fgc.Vector3(np.ones(3))}
     assert oracles.per_keyframe_distance([{"values": a}], [b]) == [pytest.approx(np.sqrt(3))]
+
+
+@pytest.mark.heavy
+def test_lio_400_keyframes_streamed_through_a_window_of_30():
+    """Issue 19's real-data stream: 400 KITTI keyframes, fixed-lag W = 30; every update
+    converges, holds the newest 30 keyframes, and the online estimate stays within 3 m RMS of
+    the batch optimum (measured: see bench/bench_stream.py)."""
+    from fgc import streaming
+
+    graph = lio.build(N=400)
+    program = compile_stream(graph, window=30)
+    online = {}
+    result = run_stream(program, problem_data(graph, program), 30,
+                        lambda u: online.update(u.newest(program)))
+    assert result.converged and len(result.updates) == 400
+    assert all(u["first"] == max(0, u["keyframe"] - 30) for u in result.updates)
+    final = {str(k): v for k, v in result.values.items()}
+    acc = streaming.accuracy(graph, final, online, streaming.batch_optimum(graph))
+    assert acc["online"]["translation"]["rmse"] < 3.0, acc
