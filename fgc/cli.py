@@ -845,7 +845,8 @@ def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
         return
     s.add_argument("--linear", choices=("qr", "cholesky"), default="qr", help="linear solver")
     s.add_argument("--precision", choices=("float32", "float64"),
-                   help="arithmetic of the accelerator (default: float32; verify: float64)")
+                   help="arithmetic of the accelerator (default: float32; verify and the "
+                        "keyframe-by-keyframe modes: float64)")
     s.add_argument("--linear-precision", choices=("float32", "float64"),
                    help="widen the linear solver alone (default: --precision); float32 with a "
                         "float64 solver suits ill-conditioned Cholesky problems")
