@@ -508,15 +508,23 @@ def _cmd_stream(args) -> int:
     n = len(program.schedule.clusters)
     if not quiet:
         print(f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, "
-              f"simulator {program.solver.precision}; per-keyframe latency: simulator wall "
-              f"time (accelerator model estimate {streaming.MODEL_ESTIMATE})", flush=True)
+              f"simulator {program.solver.precision}; per keyframe: the accelerator plan's "
+              f"latency (model estimate: the update's iterations as batch iterations of a chain "
+              f"as long as its window; {streaming.UNPRICED} otherwise) and the simulator's "
+              "wall time", flush=True)
     online: dict = {}
+    pricer = streaming.UpdatePricer(graph, program, window)
+    priced: list = []
 
     def progress(update) -> None:
         online.update(update.newest(program))
+        price = pricer.price(update)
+        priced.append(price)
         if not quiet:
+            model = (f"{price['latency_ms']:7.3f} ms (model estimate, {price['window']}-keyframe"
+                     " chain)" if price else "model estimate not available")
             print(f"  keyframe {update.keyframe:>4} ({update.mode}, from {update.first}): "
-                  f"{update.iterations:>3} iterations, {update.status}, "
+                  f"{update.iterations:>3} iterations, {update.status}, {model}, "
                   f"{update.seconds * 1e3:8.2f} ms (simulator wall time); "
                   f"{_newest_text(update, program)}", flush=True)
 
@@ -531,7 +539,7 @@ def _cmd_stream(args) -> int:
               "incremental", "window": window, "incremental_k": program.solver.incremental_k,
               "batch_every": program.solver.batch_every, "status": result.status,
               "reason": result.reason, "iterations": result.iterations,
-              "model_estimate": streaming.MODEL_ESTIMATE, "simulator_update_time": times,
+              "model_estimate": priced, "simulator_update_time": times,
               "accuracy_vs_batch_optimum": acc,
               "updates": [{k: v for k, v in u.items() if k != "values"}
                           for u in result.updates]}
@@ -543,6 +551,12 @@ def _cmd_stream(args) -> int:
             f"{ate_online.get('rmse', float('nan')):.4g} m online")
     lines = [head, f"  largest tangent-space distance from the batch optimum "
                    f"{acc['max_state_distance']:.3g} (final estimate)"]
+    model = [p["latency_ms"] for p in priced if p]
+    if model:
+        lines.append(f"  accelerator plan per update (model estimate): median "
+                     f"{np.median(model):.3f} ms, p99 {np.percentile(model, 99):.3f} ms over "
+                     f"{len(model)} priced updates ({len(priced) - len(model)} not priced: "
+                     f"{streaming.UNPRICED})")
     if getattr(args, "tum", None):
         values = export.graph_values(graph, result.values)
         export.write_values(args.tum, values)

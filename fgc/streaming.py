@@ -14,9 +14,10 @@ Modes (the simulator only; the HLS design and the native solver run batch solves
   other factor of the window is relinearised each iteration). Marginalised keyframes keep the
   estimate of the update that marginalised them.
 
-Latency: the accelerator's cost model (``plan_cost``) prices batch iterations of the whole
-Program; a per-keyframe window update is not priced yet, so each update reports the simulator's
-wall time and says the model estimate is not available.
+Latency: the accelerator's cost model (``plan_cost``) prices batch iterations of a Program.
+:class:`UpdatePricer` prices an update as that many batch iterations of a chain as long as the
+update's window (a model estimate of an approximation: the window's dense marginal prior is
+priced as the chain's own priors); the simulator's wall time is reported beside it.
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ from fgc.dsl import Graph
 from fgc.errors import FgcError
 from fgc.geometry import Pose2, Pose3
 
-MODEL_ESTIMATE = "not available: the cost model prices batch iterations only"
+UNPRICED = "one-keyframe windows and window sizes past the first four others seen"
 HW_REFUSAL = "incremental mode runs in the simulator only (issue 19: HLS and native next)"
 
 
@@ -152,6 +153,61 @@ def stream(graph: Graph, window: int | None = None, incremental: int | None = No
         else:
             break
     worker.join()
+
+
+# --------------------------------------------------------------------------------------------
+# a model estimate per update
+# --------------------------------------------------------------------------------------------
+
+
+class UpdatePricer:
+    """The accelerator plan's price of a keyframe update (``plan_summary``, what ``fgc
+    simulate`` prints): the update's iterations priced as batch iterations of a chain of the
+    same factors with as many keyframes as the update re-eliminates (the graph's first S
+    keyframes, whose priors stand in for the window's marginal prior). One Program is compiled
+    per window size: the steady size (W + 1 of a fixed-lag window, K of an incremental plan)
+    and at most ``max_sizes`` others as they come (later sizes: not priced, None)."""
+
+    def __init__(self, graph: Graph, program, window: int | None = None, max_sizes: int = 4):
+        self.graph, self.program, self.max_sizes = graph, program, max_sizes
+        self.per_iteration: dict[int, dict | None] = {}
+        plan = program.schedule.incremental
+        steady = window + 1 if window is not None else (plan.window if plan else None)
+        n = len(program.schedule.clusters)
+        if steady is not None and 2 <= steady <= n:  # the size most updates have: first
+            self._add(steady)
+
+    def _add(self, size: int) -> None:
+        from fgc.reporting import plan_summary
+
+        self.per_iteration[size] = plan_summary(self._sub_program(size), 1)
+
+    def _sub_program(self, size: int):
+        from fgc.compile import compile_graph
+
+        clusters = self.program.schedule.clusters[:size]
+        keys = {k for c in clusters for k in c}
+        sub = Graph()
+        for k, var in self.graph.variables.items():
+            if str(k) in keys:
+                sub.add_variable(k, var.initial, var.type)
+        for f in self.graph.factors:
+            if all(str(k) in keys for k in f.keys):
+                sub.add(f)
+        solver = replace(self.program.solver, incremental_k=None, batch_every=None)
+        return compile_graph(sub, solver, name=f"{self.program.name}_window{size}")
+
+    def price(self, update: KeyframeResult) -> dict | None:
+        """{"cycles", "latency_ms", "window"} of the update, or None when not priced."""
+        size = update.keyframe - update.first + 1
+        if size not in self.per_iteration:
+            if len(self.per_iteration) > self.max_sizes or size < 2:
+                return None
+            self._add(size)
+        one = self.per_iteration[size]
+        k = max(1, update.iterations)
+        return {"cycles": k * one["iteration_cycles"], "latency_ms": k * one["latency_ms"],
+                "window": size}
 
 
 # --------------------------------------------------------------------------------------------

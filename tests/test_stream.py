@@ -117,7 +117,8 @@ def test_cli_stream_writes_tum_and_accuracy(tmp_path, capsys):
     text = capsys.readouterr().out
     assert rc == 0, text
     assert "keyframe    5 (fixed-lag, from 3)" in text and "(simulator wall time)" in text
-    assert "model estimate not available" in text
+    assert "ms (model estimate, 3-keyframe chain)" in text  # W + 1 keyframes re-eliminated
+    assert "accelerator plan per update (model estimate)" in text
     lines = tum.read_text().splitlines()
     assert len(lines) == 6 and all(len(line.split()) == 8 for line in lines)
     report = json.loads(out.read_text())
