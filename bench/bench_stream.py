@@ -78,12 +78,20 @@ def main(argv=None) -> int:
     data = problem_data(graph, program)
 
     def sim_row(name, prog, window):
-        online = {}
+        online, updates = {}, []
+
+        def keep(u):
+            online.update(u.newest(prog))
+            updates.append(u)
+
         result = streaming.run_stream(prog, data if prog is program else
-                                      problem_data(graph, prog), window,
-                                      lambda u: online.update(u.newest(prog)))
+                                      problem_data(graph, prog), window, keep)
         final = {str(k): v for k, v in result.values.items()}
         acc = streaming.accuracy(graph, final, online, optimum)
+        pricer = streaming.UpdatePricer(graph, prog, window)
+        model = [p["latency_ms"] for p in map(pricer.price, updates) if p]
+        acc["model_ms"] = {"median": float(np.median(model)),
+                           "p99": float(np.percentile(model, 99)), "priced": len(model)}
         rows.append((name, streaming.timing_summary(u["seconds"] for u in result.updates),
                      acc))
 
@@ -107,15 +115,19 @@ def main(argv=None) -> int:
           f"({out['batch_lm_seconds']:.2f} s)")
     print("update wall time per keyframe; ATE rmse (m, no alignment) against the batch optimum "
           "of the final trajectory and of the online one (each keyframe's estimate on arrival)")
-    print(f"{'':<55} {'median ms':>10} {'p99 ms':>10} {'ATE final':>10} {'ATE online':>11} "
-          f"{'max dist':>9}")
+    print("model: the accelerator plan's latency of each update (model estimate; "
+          "fgc.streaming.UpdatePricer), median / p99 over the priced updates")
+    print(f"{'':<55} {'median ms':>10} {'p99 ms':>10} {'model ms':>15} {'ATE final':>10} "
+          f"{'ATE online':>11} {'max dist':>9}")
     for name, t, acc in rows:
         nan = float("nan")
         ate = acc["final"]["translation"]["rmse"] if acc else nan
         ate_online = acc["online"]["translation"]["rmse"] if acc else nan
         dist = acc["max_state_distance"] if acc else nan
-        print(f"{name:<55} {t['median_ms']:>10.2f} {t['p99_ms']:>10.2f} {ate:>10.4g} "
-              f"{ate_online:>11.4g} {dist:>9.3g}")
+        m = (acc or {}).get("model_ms")
+        model = f"{m['median']:.3f} / {m['p99']:.3f}" if m else "-"
+        print(f"{name:<55} {t['median_ms']:>10.2f} {t['p99_ms']:>10.2f} {model:>15} "
+              f"{ate:>10.4g} {ate_online:>11.4g} {dist:>9.3g}")
     out["rows"] = [{"name": n, "time": t, "accuracy": a} for n, t, a in rows]
     if args.json:
         Path(args.json).write_text(json.dumps(out, indent=1, default=float) + "\n")

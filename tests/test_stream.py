@@ -177,8 +177,10 @@ def test_fixed_lag_distance_helper_is_discriminating():
 @pytest.mark.heavy
 def test_lio_400_keyframes_streamed_through_a_window_of_30():
     """Issue 19's real-data stream: 400 KITTI keyframes, fixed-lag W = 30; every update
-    converges, holds the newest 30 keyframes, and the online estimate stays within 3 m RMS of
-    the batch optimum (measured: see bench/bench_stream.py)."""
+    converges and holds the newest 30 keyframes. Against the batch optimum, measured ATE rmse
+    1.21 m for the final (frozen) trajectory and 5.37 m online — plain ISAM2's online estimate
+    is 5.37 m away too (bench/bench_stream.py): a keyframe's estimate on arrival has only its
+    own GPS fix ahead of the IMU prediction; bounds 2 m and 6 m."""
     from fgc import streaming
 
     graph = lio.build(N=400)
@@ -190,4 +192,5 @@ def test_lio_400_keyframes_streamed_through_a_window_of_30():
     assert all(u["first"] == max(0, u["keyframe"] - 30) for u in result.updates)
     final = {str(k): v for k, v in result.values.items()}
     acc = streaming.accuracy(graph, final, online, streaming.batch_optimum(graph))
-    assert acc["online"]["translation"]["rmse"] < 3.0, acc
+    assert acc["final"]["translation"]["rmse"] < 2.0, acc
+    assert acc["online"]["translation"]["rmse"] < 6.0, acc
