@@ -879,7 +879,7 @@ def _streaming_args(name: str, p: argparse.ArgumentParser) -> None:
                         "clusters (SolverConfig.incremental_k)")
     g.add_argument("--batch-every", type=_batch_every, metavar="B",
                    help="batch steps of the incremental plan: a period (10) or keyframe "
-                        "indices (5,15,25) (SolverConfig.batch_every)")
+                        "indices (5,15,25; one keyframe: 5,) (SolverConfig.batch_every)")
     if name != "report":
         g.add_argument("--window", type=_positive_int, metavar="W",
                        help="fixed-lag window: hold the newest W keyframes, marginalise the "
