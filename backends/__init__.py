@@ -17,6 +17,7 @@ from fgc.errors import FgcError
 BACKENDS: dict[str, str] = {
     "sim": "a standalone NumPy simulator of the accelerator (numerics, cycles, resources)",
     "hls": "Vitis HLS C++, testbench, tcl and Makefile",
+    "native": "the solver as a CPU program: C++ built on this machine, called through ctypes",
 }
 
 

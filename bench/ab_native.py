@@ -44,7 +44,11 @@ import lio  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.datafile import problem_data  # noqa: E402
 from fgc.program import SolverConfig  # noqa: E402
-from fgc_backends.hls import native  # noqa: E402
+
+try:
+    from fgc_backends import native  # noqa: E402
+except ImportError:  # a base revision from before the native backend split off the HLS one
+    from fgc_backends.hls import native  # noqa: E402
 
 
 def main() -> None:

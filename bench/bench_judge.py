@@ -19,7 +19,7 @@ from fgc.cli import load_spec
 from fgc.compile import compile_graph
 from fgc.datafile import problem_data
 from fgc.program import SolverConfig
-from fgc_backends.hls import native
+from fgc_backends import native
 from fgc_backends.hls.results import judge_precision, result_from_arrays
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"

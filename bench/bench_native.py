@@ -1,7 +1,7 @@
-"""The HLS backend's native build (the emitted C++ as a shared library) against GTSAM's LM.
+"""The native backend (the generated C++ built as a CPU shared library) against GTSAM's LM.
 
 For each problem both solvers start from the same initial values in one process: fgc compiles the
-graph, emits and builds the C++ (``fgc_backends.hls.native``, float64, ``-O3 -march=native``
+graph, emits and builds the C++ (``fgc_backends.native``, float64, ``-O3 -march=native``
 without FMA; not timed), then times the solve call only; GTSAM gets the same graph through
 ``fgc.verify.to_gtsam`` (not timed) and its ``LevenbergMarquardtOptimizer`` with the same
 tolerances and the same factorisation as fgc's row (multifrontal Cholesky or multifrontal QR; on
@@ -43,7 +43,7 @@ from fgc.compile import compile_graph  # noqa: E402
 from fgc.datafile import problem_data  # noqa: E402
 from fgc.program import SolverConfig  # noqa: E402
 from fgc.verify import to_gtsam, value_to_gtsam  # noqa: E402
-from fgc_backends.hls import native  # noqa: E402
+from fgc_backends import native  # noqa: E402
 from fgc_backends.hls.results import result_from_arrays  # noqa: E402
 
 

@@ -5,7 +5,7 @@ the float32 solution of each shipped example against its float64 solution.
 seed: the same graphs every run), solves each with the simulator in float64 and with GTSAM's LM
 in the same process, and prints the verdicts (match / mismatch / excluded / failed, see
 ``strategies.Outcome``), every case that is not a match, and the time fgc and GTSAM took in
-total. ``--native N`` also runs N random data sets through the native HLS library.
+total. ``--native N`` also runs N random data sets through the native library.
 
 ``float32`` solves each example in float64 and float32 with QR and Cholesky (and Cholesky with a
 float64 linear solver, the mixed design) and prints the
@@ -112,7 +112,7 @@ def cmd_property(args) -> int:
     if args.native:
         ncounts, nodd, nseconds = run_property(args.native, strategies.native_specs(),
                                                native_judge, args.seed)
-        print_run("native HLS library vs GTSAM LM (and vs the simulator ≤ 1e-6)", ncounts, nodd,
+        print_run("native library vs GTSAM LM (and vs the simulator ≤ 1e-6)", ncounts, nodd,
                   nseconds)
         bad += ncounts["mismatch"] + ncounts["failed"] + ncounts["error"]
     return 1 if bad else 0

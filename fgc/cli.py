@@ -1,6 +1,6 @@
 """The ``fgc`` command line.
 
-    fgc compile  SPEC --backend sim|hls --out DIR     emit a backend project (+ program.json, data)
+    fgc compile  SPEC --backend B --out DIR           emit a project of backend B: sim, hls, native
     fgc simulate SPEC [--json F]                      run the accelerator simulator, report cost
     fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
     fgc run      SPEC --backend native|sim            solve with the generated solver
@@ -195,6 +195,16 @@ def _hls_config(args, program):
     return hls.HlsConfig(**options)
 
 
+def _native_config(args, program):
+    """The native backend's config from --scalar (default: the Program's precision); --part
+    names an FPGA, which a CPU program has none of."""
+    if getattr(args, "part", None):
+        raise UsageError(f"fgc {args.command}: --part applies to fgc compile --backend hls only "
+                         "(the native backend builds a CPU program)")
+    native = _backend("native")
+    return native.NativeConfig(scalar=getattr(args, "scalar", None) or _c_scalar(program))
+
+
 class _Stages:
     """Stage timings for ``-v`` (stderr, so stdout stays deterministic)."""
 
@@ -375,9 +385,12 @@ def _cmd_compile(args) -> int:
         if args.backend == "hls":
             project = backend.emit(program, out, _hls_config(args, program))
             files = list(project.files)
+        elif args.backend == "native":
+            files = list(backend.emit(program, out, _native_config(args, program)).files)
         else:
             if getattr(args, "scalar", None) or getattr(args, "part", None):
-                raise UsageError("fgc compile: --scalar and --part apply to --backend hls only")
+                raise UsageError("fgc compile: --scalar applies to --backend hls or native "
+                                 "only, --part to --backend hls only")
             files = backend.emit(program, out)
     except OSError as exc:
         raise FgcError(f"--out {out}: cannot write the project: "
@@ -436,11 +449,11 @@ def _cmd_run(args) -> int:
 
     t0 = time.perf_counter()
     if args.backend == "native":
-        hls = _backend("hls")
-        result = hls.native.run(program, data, _hls_config(args, program))
+        result = _backend("native").run(program, data, _native_config(args, program))
     else:
         if getattr(args, "scalar", None) or getattr(args, "part", None):
-            raise UsageError("fgc run: --scalar and --part apply to --backend native only")
+            raise UsageError("fgc run: --scalar applies to --backend native only (and --part to "
+                             "fgc compile --backend hls)")
         result = _backend("sim").run(program, data)
     status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
@@ -821,10 +834,10 @@ def _hardware_args(p: argparse.ArgumentParser, name: str) -> None:
                         "(default: 143 MHz; run_hls.tcl 7 ns)")
     if name in ("compile", "run"):
         h.add_argument("--part", type=_part, metavar="PART",
-                       help="FPGA part for run_hls.tcl (default: xc7z045ffg900-2; the cost "
-                            "model's capacities stay the XC7Z045's)")
+                       help="FPGA part for run_hls.tcl, --backend hls only (default: "
+                            "xc7z045ffg900-2; the cost model's capacities stay the XC7Z045's)")
         h.add_argument("--scalar", type=_scalar, metavar="T",
-                       help="C++ scalar of the HLS accelerator: float, double or "
+                       help="C++ scalar of the HLS accelerator or native solver: float, double or "
                             "ap_fixed<W,I> (2 ≤ W ≤ 1024, 1 ≤ I ≤ W; needs fgc[hls-fixed]) "
                             "(default: from --precision)")
 
@@ -910,7 +923,8 @@ def _command_args(name: str, p: argparse.ArgumentParser) -> None:
                        help="print (and put in --json) the marginal covariances of these "
                             "variables at the estimate")
     if name == "compile":
-        p.add_argument("--backend", choices=("sim", "hls"), default="sim", help="backend")
+        p.add_argument("--backend", choices=("sim", "hls", "native"), default="sim",
+                       help="backend")
         p.add_argument("--out", required=True, metavar="DIR", help="output folder")
     elif name == "run":
         p.add_argument("--backend", choices=("native", "sim"), default="native", help="solver")

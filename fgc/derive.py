@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
-from fgc.cache import entry, load, source_digest, store
+from fgc.cache import Deferred, entry, load, source_digest, store
 from fgc.dsl import FactorType, MatrixType, storage_dim, type_name
 from fgc.errors import DerivationError
 from fgc.geometry import LieGroup, special
@@ -62,9 +62,27 @@ class SymbolicFactor:
     kernel: Kernel = field(compare=False)
     structure: tuple[tuple[tuple[str, ...], ...], ...]
 
+    def __reduce__(self):
+        # the expressions are unpickled only when used (see fgc.cache.Deferred)
+        return (_restore, (self.name, self.fingerprint, self.variables, self.measurements,
+                           self.structure, self.residual_dim,
+                           Deferred((self.expression, self.kernel))))
+
+    def __getattr__(self, name: str):
+        # only called for attributes not set: a restored factor's expression and kernel
+        deferred = self.__dict__.get("_deferred")
+        if name in ("expression", "kernel") and deferred is not None:
+            expression, kernel = deferred.get()
+            object.__setattr__(self, "expression", expression)
+            object.__setattr__(self, "kernel", kernel)
+            del self.__dict__["_deferred"]
+            return self.__dict__[name]
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+
     @property
     def residual_dim(self) -> int:
-        return self.expression.rows
+        rows = self.__dict__.get("_rows")
+        return rows if rows is not None else self.expression.rows
 
     @property
     def residual(self) -> sp.Matrix:
@@ -114,6 +132,17 @@ class SymbolicFactor:
     def evaluate_residual(self, values, measured: dict) -> np.ndarray:
         out = self._numeric_residual(*self._flat_inputs(values, measured))
         return np.asarray(out, dtype=float).reshape(-1)
+
+
+def _restore(name, fingerprint, variables, measurements, structure, rows, deferred
+             ) -> SymbolicFactor:
+    sf = object.__new__(SymbolicFactor)
+    for field_name, value in (("name", name), ("fingerprint", fingerprint),
+                              ("variables", variables), ("measurements", measurements),
+                              ("structure", structure), ("_rows", rows),
+                              ("_deferred", deferred)):
+        object.__setattr__(sf, field_name, value)
+    return sf
 
 
 def whitening_matrix(kind: str, dim: int, prefix: str = "noise") -> sp.Matrix:

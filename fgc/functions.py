@@ -105,27 +105,63 @@ def _power(factor: str, node: sp.Pow) -> sp.Expr:
 
 def check_expression(factor: str, expr: sp.Expr) -> sp.Expr:
     """``expr`` with float half-integer exponents made exact; :class:`DslError` naming
-    ``factor`` if it holds anything outside the whitelist."""
-    allowed = FUNCTIONS + DERIVATIVE_FUNCTIONS + SPECIAL
-    replace = {}
-    for node in sp.preorder_traversal(expr):
-        if isinstance(node, (sp.Add, sp.Mul)) or node.is_Symbol or node.is_Number \
-                or isinstance(node, sp.NumberSymbol):
-            if node.is_Number and not node.is_finite:
-                raise DslError(f"factor '{factor}': the residual holds the constant {node}")
+    ``factor`` if it holds anything outside the whitelist.
+
+    The expression is walked as a DAG, each distinct subexpression once: a traced residual
+    shares its subterms (the IMU factor's tree form has millions of nodes, its DAG thousands)."""
+    replace: dict = {}
+    seen: set = set()
+    stack = [expr]
+    while stack:
+        node = stack.pop()
+        if node in seen:
             continue
-        if isinstance(node, sp.Pow):
-            new = _power(factor, node)
-            if new is not node:
-                replace[node] = new
-            continue
-        if isinstance(node, allowed):
-            continue
-        name = type(node).__name__
-        alternative = _ALTERNATIVES.get(name, f"one of {_LISTED}")
-        raise DslError(f"factor '{factor}': the residual uses '{name}', which not every backend "
-                       f"can emit; use {alternative}")
-    return expr.xreplace(replace) if replace else expr
+        seen.add(node)
+        _check_node(factor, node, replace)
+        stack.extend(a for a in node.args if a not in seen)
+    return _rebuild(expr, replace) if replace else expr
+
+
+def _check_node(factor: str, node: sp.Basic, replace: dict) -> None:
+    if isinstance(node, (sp.Add, sp.Mul)) or node.is_Symbol or node.is_Number \
+            or isinstance(node, sp.NumberSymbol):
+        if node.is_Number and not node.is_finite:
+            raise DslError(f"factor '{factor}': the residual holds the constant {node}")
+        return
+    if isinstance(node, sp.Pow):
+        new = _power(factor, node)
+        if new is not node:
+            replace[node] = new
+        return
+    if isinstance(node, FUNCTIONS + DERIVATIVE_FUNCTIONS + SPECIAL):
+        return
+    name = type(node).__name__
+    alternative = _ALTERNATIVES.get(name, f"one of {_LISTED}")
+    raise DslError(f"factor '{factor}': the residual uses '{name}', which not every backend "
+                   f"can emit; use {alternative}")
+
+
+def _rebuild(expr: sp.Basic, replace: dict) -> sp.Basic:
+    """``expr.xreplace(replace)`` (outermost matches first), each shared subtree visited once."""
+    memo: dict = {}
+
+    def visit(e: sp.Basic) -> sp.Basic:
+        out = memo.get(e)
+        if out is None:
+            if e in replace:
+                out = replace[e]
+                if out.args:  # the replaced power's base may hold further replacements
+                    out = out.func(*(visit(a) for a in out.args))
+            elif e.args:
+                args = tuple(visit(a) for a in e.args)
+                out = e.func(*args) if any(
+                    a is not b for a, b in zip(args, e.args, strict=True)) else e
+            else:
+                out = e
+            memo[e] = out
+        return out
+
+    return visit(expr)
 
 
 def check_residual(factor: str, residual: sp.Matrix) -> sp.Matrix:

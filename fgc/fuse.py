@@ -45,7 +45,7 @@ from functools import cached_property
 
 import numpy as np
 
-from fgc.cache import cached, source_digest
+from fgc.cache import Deferred, cached, source_digest
 from fgc.derive import Block, SymbolicFactor, derive
 from fgc.dsl import Factor, FactorType, Graph
 from fgc.errors import DslError
@@ -83,10 +83,17 @@ class BlockType:
     variables: tuple[Block, ...]
     measurements: tuple[Block, ...]
     members: tuple[Member, ...]
-    kernel: Kernel = field(compare=False, repr=False)
-    cost_kernel: Kernel = field(compare=False, repr=False)
+    kernels: Deferred = field(compare=False, repr=False)  # (kernel, cost_kernel), as cached
     structure: tuple[tuple[tuple[str, ...], ...], ...] = field(repr=False)
     ops: BlockOps
+
+    @property
+    def kernel(self) -> Kernel:
+        return self.kernels.get()[0]
+
+    @property
+    def cost_kernel(self) -> Kernel:
+        return self.kernels.get()[1]
 
     @property
     def residual_dim(self) -> int:
@@ -244,10 +251,17 @@ def block_type(specs: Sequence[MemberSpec]) -> BlockType:
     name = "+".join(m.name for m in members)
     key = _block_key(members, variables)
     if key not in _MEMO:  # one object per pattern: its numeric kernels compile once
-        built = cached(("fuse", name), key, lambda: build_kernels(
-            specs[0][0], derived, members, variables, tuple(meas_blocks)), tuple)
+        built = cached(("fuse", name), key, lambda: _deferred_kernels(build_kernels(
+            specs[0][0], derived, members, variables, tuple(meas_blocks))), tuple)
         _MEMO[key] = BlockType(name, key, variables, tuple(meas_blocks), tuple(members), *built)
     return _MEMO[key]
+
+
+def _deferred_kernels(built: tuple) -> tuple:
+    """(kernel, cost kernel, structure, ops) → (Deferred((kernel, cost kernel)), structure, ops):
+    a warm compile reads the structure and op counts, the kernels only on a lowering miss."""
+    kernel, cost, structure, ops = built
+    return Deferred((kernel, cost)), structure, ops
 
 
 def _check_member(ftype: FactorType, sf: SymbolicFactor, pos: tuple, variables) -> None:

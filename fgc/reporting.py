@@ -6,6 +6,7 @@ Backends are passed in (never imported here), so fgc stays independent of any ba
 from __future__ import annotations
 
 import dataclasses
+import tempfile
 import time
 from importlib import import_module
 from pathlib import Path
@@ -92,10 +93,21 @@ def require_finite_start(graph: Graph, result) -> None:
 def verify_report(graph: Graph, program, data, sim) -> dict:
     """Simulator vs GTSAM's LM (same tight tolerances and iteration limit), linearisation check
     per factor type, and a verdict with its reason."""
-    from fgc.verify import linearization_checks, to_gtsam, values_from_gtsam
+    from fgc.verify import (
+        executed_checks,
+        linearization_checks,
+        sample_factors,
+        to_gtsam,
+        values_from_gtsam,
+    )
 
-    result = sim.run(program, data)
-    require_finite_start(graph, result)
+    with tempfile.TemporaryDirectory(prefix="fgc-verify-") as emitted:
+        result = sim.run(program, data, emitted)
+        require_finite_start(graph, result)
+        # the kernels the simulator executed, at the start and (if finite) at its answer
+        finite = all(np.all(np.isfinite(v)) for v in result.storage.values())
+        executed = sim.linearize(program, data, [None, result.storage] if finite else [None],
+                                 emitted=emitted, factors=sample_factors(graph))
     problem = to_gtsam(graph)
     checks = linearization_checks(graph, problem=problem)
     k_max = program.solver.max_iterations
@@ -105,6 +117,8 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
     ours = _values_by_key(graph, result.values)
     errors = state_errors(graph, ours, values_from_gtsam(graph, problem, gres))
     from_fgc = to_gtsam(graph, ours)
+    points = [("initial values", None, problem), ("final estimate", ours, from_fgc)]
+    executed = executed_checks(graph, program, points[:len(executed)], executed)
     fgc_err = float(problem.graph.error(from_fgc.values))
     gtsam_err = float(problem.graph.error(gres))
     rel = abs(fgc_err - gtsam_err) / max(gtsam_err, ERROR_FLOOR)
@@ -114,7 +128,8 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
               "linear": program.solver.linear, "ordering": program.schedule.ordering,
               "status": result.status, "reason": result.reason, "max_iterations": k_max,
               "linearization_error": max((c.error for c in checks), default=0.0),
-              "linearization_checks": [_check_dict(c) for c in checks], **errors,
+              "linearization_checks": [_check_dict(c) for c in checks],
+              "executed_kernel_checks": [_executed_dict(c) for c in executed], **errors,
               "fgc_final_error": fgc_err, "gtsam_final_error": gtsam_err,
               "relative_final_error_difference": rel, "iterations": result.iterations,
               "gtsam_iterations": giters, "fgc_solve_seconds": result.solve_seconds,
@@ -125,7 +140,7 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
         restart, restart_iters = gtsam_optimize(from_fgc, max_iterations=k_max)
         report["gtsam_from_fgc_error"] = float(problem.graph.error(restart))
         report["gtsam_from_fgc_iterations"] = restart_iters
-    report["passed"], report["verdict"] = _verdict(report, checks, matched)
+    report["passed"], report["verdict"] = _verdict(report, checks, matched, executed)
     report["summary"] = _verify_summary(report)
     report["_result_values"] = result.values  # popped by the CLI (--values, --marginals)
     return report
@@ -134,6 +149,12 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
 def _check_dict(c) -> dict:
     return {"factor_type": c.factor_type, "factors": c.factors, "error": c.error,
             "tolerance": c.tolerance, "method": c.method, "passed": c.passed}
+
+
+def _executed_dict(c) -> dict:
+    return {"factor_type": c.factor_type, "block": c.block, "checked": c.checked,
+            "factors": c.factors, "error": c.error, "where": c.where, "tolerance": c.tolerance,
+            "reference": c.reference, "sampled": c.sampled, "passed": c.passed}
 
 
 def _state_tolerance(r: dict) -> str:
@@ -167,7 +188,7 @@ def _limits(r: dict) -> str:
     return f"; {who} hit max_iterations ({r['max_iterations']})"
 
 
-def _verdict(r: dict, checks: list, matched: bool) -> tuple[bool, str]:
+def _verdict(r: dict, checks: list, matched: bool, executed: list = ()) -> tuple[bool, str]:
     """(passed, one line saying why)."""
     bad = [c for c in checks if c.custom and not c.passed]
     if bad:
@@ -175,6 +196,13 @@ def _verdict(r: dict, checks: list, matched: bool) -> tuple[bool, str]:
         return False, (f"FAILED: fgc's linearisation of factor type '{c.factor_type}' differs "
                        f"from GTSAM's ({c.method}) by {c.error:.2e} > tolerance "
                        f"{c.tolerance:g}: the derived residual or Jacobians are wrong or stale")
+    bad = [c for c in executed if not c.passed]
+    if bad:
+        c = max(bad, key=lambda c: c.error / c.tolerance)
+        return False, (f"FAILED: the simulator's kernel for factor type '{c.factor_type}' (block "
+                       f"'{c.block}') differs from {c.reference} by {c.error:.2e} > tolerance "
+                       f"{c.tolerance:g} at the {c.where}: the executed (fused) kernel is wrong "
+                       "or stale")
     dist = f"state distance {_state_distance(r)}"
     tol = _state_tolerance(r)
     fgc_err, gtsam_err = r["fgc_final_error"], r["gtsam_final_error"]
@@ -211,6 +239,8 @@ def _precision_text(r: dict) -> str:
 def _verify_summary(r: dict) -> list[str]:
     tol = (f"tolerance {STATE_TOL_F64:g}" if r["precision"] == "float64"
            else f"float32 bounds {ROT_TOL_F32:g} rad / {POS_TOL_F32:g} m")
+    from fgc.verify import EXECUTED_SAMPLE
+
     lines = [
         f"fgc verify: {r['variables']} variables, {r['factors']} factors, simulator "
         f"{_precision_text(r)} {r['linear']} {r['ordering']} vs GTSAM LM (QR)",
@@ -220,6 +250,17 @@ def _verify_summary(r: dict) -> list[str]:
             lines.append(f"  custom factor verify '{c['factor_type']}': checked against "
                          f"{c['method']}, tolerance {c['tolerance']:g}; max rel. diff "
                          f"{c['error']:.2e} over {c['factors']} factors")
+    executed = r.get("executed_kernel_checks", [])
+    if executed:
+        worst = max(c["error"] for c in executed)
+        checked = sum(c["checked"] for c in executed)
+        sampled = [c["factor_type"] for c in executed if c["sampled"]]
+        sample = (f"; {EXECUTED_SAMPLE} evenly spaced factors per point of "
+                  f"{', '.join(repr(n) for n in sampled)}" if sampled else "")
+        lines.append(f"  executed kernels (simulator) vs numerical derivatives (custom) / fgc's "
+                     f"per-factor derivation (built-in), at the initial values and the final "
+                     f"estimate: max rel. diff {worst:.2e} over {checked} factor evaluations, "
+                     f"tolerance {executed[0]['tolerance']:g}{sample}")
     builtin = [c for c in r["linearization_checks"] if not c["method"].startswith("numerical")]
     if builtin:
         worst = max(c["error"] for c in builtin)

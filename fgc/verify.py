@@ -451,6 +451,95 @@ def linearization_checks(graph: Graph, values: dict | None = None,
                                custom) for name, (n, err, custom) in worst.items()]
 
 
+# At most this many factors of one type are checked at each point (evenly spaced, so the same
+# ones every run); the simulator evaluates all of them, the reference side is the costly one.
+EXECUTED_SAMPLE = 200
+
+
+@dataclass(frozen=True)
+class ExecutedCheck:
+    """The linearisation the backend executes (the simulator's printed, fused block kernels)
+    against a reference, for the factors of one type, at the initial values and at the final
+    estimate: the largest relative difference of the whitened (A, b), relative to
+    max(1, |A|max, |b|max), and where it was found.
+
+    The reference of a custom factor is GTSAM's numerical CustomFactor (central differences of
+    the user's function); of a built-in, fgc's own per-factor derivation of it
+    (:func:`linearize_factor`, itself compared with GTSAM's factor by :class:`LinearizationCheck`),
+    so a fused kernel that differs from its members' derivations — wrong, stale, mis-shared —
+    fails either way."""
+
+    factor_type: str
+    block: str
+    checked: int  # factor evaluations compared (over both points)
+    factors: int  # factors of this type in the graph
+    error: float
+    where: str  # the point of the largest difference
+    tolerance: float
+    custom: bool
+    sampled: bool = False  # more than EXECUTED_SAMPLE factors: a sample of them was checked
+
+    @property
+    def passed(self) -> bool:
+        return bool(self.error <= self.tolerance)
+
+    @property
+    def reference(self) -> str:
+        return ("numerical derivatives (central differences)" if self.custom
+                else "fgc's per-factor derivation")
+
+
+def sample_factors(graph: Graph, limit: int = EXECUTED_SAMPLE) -> list[int]:
+    """Indices of the factors the executed-kernel check compares: every factor of a type with at
+    most ``limit`` factors, else ``limit`` of them evenly spaced in graph order."""
+    by_type: dict[str, list[int]] = {}
+    for i, f in enumerate(graph.factors):
+        by_type.setdefault(f.type.name, []).append(i)
+    out: list[int] = []
+    for indices in by_type.values():
+        if len(indices) <= limit:
+            out += indices
+        else:
+            out += [indices[int(j)] for j in np.unique(
+                np.linspace(0, len(indices) - 1, limit).round().astype(int))]
+    return sorted(out)
+
+
+def executed_checks(graph: Graph, program, points: list[tuple[str, dict | None, GtsamProblem]],
+                    executed: list[dict[int, tuple[np.ndarray, np.ndarray]]],
+                    limit: int = EXECUTED_SAMPLE) -> list[ExecutedCheck]:
+    """Per factor type (order of first appearance): the executed linearisation ``executed[p]``
+    ({graph factor index: (A, b)}, e.g. from ``fgc_backends.sim.linearize``) at each point
+    ``points[p] = (name, {key: value} or None for the initial values, its GtsamProblem)``
+    against the reference (:class:`ExecutedCheck`), on :func:`sample_factors`."""
+    block_of = {f: program.blocks[spec.block].name for spec in program.factors
+                for f in spec.factors}
+    worst: dict[str, list] = {}
+    sample = sample_factors(graph, limit)
+    for (where, values, problem), rows in zip(points, executed, strict=True):
+        for i in sample:
+            f = graph.factors[i]
+            custom = is_custom(f.type)
+            if custom:
+                a_ref, b_ref = problem.graph.at(i).linearize(problem.values).jacobian()
+            else:
+                a_ref, b_ref = linearize_factor(f, [_value(graph, values, k) for k in f.keys])
+            a_ex, b_ex = rows[i]
+            scale = max(1.0, np.abs(a_ref).max(), np.abs(b_ref).max())
+            err = max(np.abs(a_ex - a_ref).max(), np.abs(b_ex - b_ref).max()) / scale
+            err = float(err) if np.isfinite(err) else float("inf")
+            entry = worst.setdefault(f.type.name, [block_of.get(i, "?"), 0, 0.0, where, custom])
+            entry[1] += 1
+            if err > entry[2]:
+                entry[0], entry[2], entry[3] = block_of.get(i, "?"), err, where
+    totals: dict[str, int] = {}
+    for f in graph.factors:
+        totals[f.type.name] = totals.get(f.type.name, 0) + 1
+    return [ExecutedCheck(name, block, n, totals[name], err, where, FD_TOLERANCE, custom,
+                          totals[name] > limit)
+            for name, (block, n, err, where, custom) in worst.items()]
+
+
 def linearization_error(graph: Graph, values: dict | None = None) -> float:
     """Largest relative difference between fgc's and GTSAM's whitened linearisation (A, b) of
     any factor of ``graph`` at ``values`` (default: the initial values)."""

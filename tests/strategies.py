@@ -90,7 +90,7 @@ def graph_specs(draw, max_poses: int = 10) -> GraphSpec:
     return dataclasses.replace(spec, ordering=draw(st.sampled_from(orderings)))
 
 
-# Three fixed structures for the native HLS path: it builds C++ once per Program, so its
+# Three fixed structures for the native path: it builds C++ once per Program, so its
 # property test varies only the data (numbers, noise level, robust loss, perturbation).
 NATIVE_STRUCTURES = (
     GraphSpec("pose2", poses=6, landmarks=2, loop_closures=2, gps_every=0, noise_kind="full",
@@ -383,12 +383,11 @@ def compare(spec: GraphSpec) -> Outcome:
 
 
 def compare_native(spec: GraphSpec) -> tuple[Outcome, float]:
-    """Solve ``spec``'s graph with the native HLS library (built once per structure) and judge
+    """Solve ``spec``'s graph with the native library (built once per structure) and judge
     it against GTSAM; also returns the largest tangent distance to the simulator's solution."""
     from fgc.compile import compile_graph
     from fgc.datafile import problem_data
-    from fgc_backends import sim
-    from fgc_backends.hls import native
+    from fgc_backends import native, sim
 
     graph = build(spec)
     program = compile_graph(graph, solver(spec), name=f"property_{spec.family}")

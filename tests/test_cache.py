@@ -27,6 +27,7 @@ from fgc import cache, fuse, lower, storage
 from fgc import derive as derive_mod
 from fgc.cache import CacheWarning
 from fgc.cli import main
+from fgc.compile import compile_graph
 from fgc.geometry import Pose2
 
 ROUTES = {
@@ -158,6 +159,30 @@ def test_changed_parameter_with_one_cache_matches_a_fresh_cache(tmp_path, cache_
     _forget_memos()
     fresh = _run(spec, 2.0, tmp_path / "c.json")["final_error"]
     assert reused == fresh  # same program, same arithmetic: bit-identical
+
+
+def test_warm_compile_leaves_expressions_pickled_until_used(tmp_path, cache_dir):
+    """A warm compile reads a derivation's and a fused kernel's small parts only; the sympy
+    expressions (most of the unpickling time) are rebuilt on first use, equal to the fresh ones,
+    and the Program is the same as the cold compile's."""
+    spec = tmp_path / "spec.py"
+    spec.write_text(SPEC)
+    graph = _import(spec, "lazy_spec").build()
+    cold = compile_graph(graph)
+    ftype = next(f.type for f in graph.factors if f.type.name == "scaled_position")
+    fresh = derive_mod.derive(ftype)
+    fused = fuse.fuse(graph)
+    _forget_memos()
+    warm = compile_graph(graph)
+    assert warm.to_json() == cold.to_json()
+    sf = derive_mod.derive(ftype)
+    assert "_deferred" in sf.__dict__ and "kernel" not in sf.__dict__
+    assert sf.residual_dim == 2 and sf.structure == fresh.structure
+    assert sf.kernel == fresh.kernel and sf.expression == fresh.expression
+    assert "_deferred" not in sf.__dict__
+    block = next(t for t in fuse._MEMO.values() if t.name == "scaled_position")
+    assert block.kernels._blob is not None  # lowered from the cache: never unpickled
+    assert block.kernel == next(b.type for b in fused if b.type.name == block.name).kernel
 
 
 def test_unusable_cache_dir_warns_once_and_runs_uncached(tmp_path, monkeypatch, capsys):

@@ -128,7 +128,8 @@ def test_emit_rejects_two_clocks(tmp_path):
     (["compile", BEACONS, "--backend", "hls", "--out", "x", "--part", "a;b"], "plain part name"),
     (["compile", BEACONS, "--backend", "hls", "--out", "x", "--scalar", "double",
       "--precision", "float32"], "--scalar double contradicts --precision float32"),
-    (["compile", BEACONS, "--out", "x", "--scalar", "float"], "apply to --backend hls only"),
+    (["compile", BEACONS, "--out", "x", "--scalar", "float"],
+     "--scalar applies to --backend hls or native only"),
 ])
 def test_bad_hardware_options_exit_2_with_one_line(argv, needle, capsys, tmp_path,
                                                    monkeypatch):

@@ -3,9 +3,9 @@
 Random small graphs — every variable type, chains and loop closures (general graphs), every
 ``--solver`` (gn, lm) and ``--linear`` (qr, cholesky) — are compiled, emitted, and built with the
 project's own Makefile under its strict flags (``-Werror``): the testbench (``make csim``, which
-also runs it on the graph's data) and the native library (``make native``). The generator is
-seeded, so a failure names a reproducible case. g++ takes seconds per build, so the default run
-holds a representative handful, the sweep (>= 60 graphs) is ``heavy``.
+also runs it on the graph's data) and the native backend's library (``make native``). The
+generator is seeded, so a failure names a reproducible case. g++ takes seconds per build, so the
+default run holds a representative handful, the sweep (>= 60 graphs) is ``heavy``.
 """
 
 from __future__ import annotations
@@ -22,6 +22,7 @@ from fgc.datafile import problem_data
 from fgc.factors import BetweenFactor, PriorFactor
 from fgc.geometry import Point2, Point3, Pose2, Pose3, Rot2, Rot3, Vector3
 from fgc.program import SolverConfig
+from fgc_backends import native
 from fgc_backends.hls import HlsBuildError, HlsConfig, emit, make, run_csim
 
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None or shutil.which("make") is None,
@@ -61,8 +62,9 @@ def build_both(seed: int, tmp_path) -> None:
     project = emit(program, tmp_path / f"g{seed}", HlsConfig(scalar="double"))
     try:
         run_csim(project, program, problem_data(graph, program))
-        make(project, "native")
-    except HlsBuildError as exc:
+        project = native.emit(program, tmp_path / f"n{seed}", native.NativeConfig(scalar="double"))
+        native.make(project)
+    except (HlsBuildError, native.NativeBuildError) as exc:
         log = (project.directory / "build.log").read_text()
         pytest.fail(f"{what}: {exc}\n{log[-3000:]}")
 
@@ -96,9 +98,9 @@ def test_reported_failures_build(t, n, method, linear, tmp_path):
     TILE); GN + QR on a Pose2 chain of 7 on an unused operand pointer in a step pattern."""
     graph = _chain(t, n)
     program = compile_graph(graph, SolverConfig(method=method, linear=linear), name="r")
-    project = emit(program, tmp_path, HlsConfig(scalar="double"))
-    run_csim(project, program, problem_data(graph, program))
-    make(project, "native")
+    run_csim(emit(program, tmp_path / "hls", HlsConfig(scalar="double")), program,
+             problem_data(graph, program))
+    native.make(native.emit(program, tmp_path / "native", native.NativeConfig(scalar="double")))
 
 
 def test_build_failure_is_one_line_naming_the_log(tmp_path):
@@ -109,7 +111,7 @@ def test_build_failure_is_one_line_naming_the_log(tmp_path):
     source = project.directory / "r.cpp"
     source.write_text(source.read_text() + "\nthis is not C++;\n")
     with pytest.raises(HlsBuildError) as info:
-        make(project, "native")
+        make(project, "csim")
     message = str(info.value)
     assert "\n" not in message and "internal error" in message
     assert str(project.directory / "build.log") in message

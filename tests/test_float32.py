@@ -212,7 +212,7 @@ def test_native_run_1e6_m_from_the_origin_fails_with_the_reason(tmp_path, capsys
 
 
 def _native(graph):
-    from fgc_backends.hls import native
+    from fgc_backends import native
 
     program = compile_graph(graph, SolverConfig(precision="float32"))
     with warnings.catch_warnings(record=True) as caught:

@@ -21,13 +21,13 @@ from fgc.functions import DERIVATIVE_FUNCTIONS, FUNCTIONS
 from fgc.geometry import Point2
 from fgc.kernel import Kernel
 from fgc.program import SolverConfig
-from fgc_backends import sim
-from fgc_backends.hls import native
+from fgc_backends import native, sim
 from fgc_backends.hls.printer import print_kernel
 from fgc_backends.sim.printer import SimPrinter
 
 ROOT = Path(__file__).resolve().parent.parent
-TEMPLATES = ROOT / "backends" / "hls" / "templates"
+# the kernel templates (the native backend's; the HLS backend renders them too for now)
+TEMPLATES = ROOT / "backends" / "native" / "templates"
 X, Y = sp.symbols("x y", real=True)
 
 

@@ -1,4 +1,4 @@
-"""Golden tests: the examples' emitted projects (both backends) equal the files in tests/golden/.
+"""Golden tests: the examples' emitted projects (every backend) equal the files in tests/golden/.
 
 Each case runs ``fgc compile`` as a user would and compares every emitted source file byte for
 byte with the committed copy (``program.json`` and ``data.txt`` are left out: the first is checked
@@ -39,7 +39,7 @@ def _first_difference(name: str, want: bytes, got: bytes) -> str:
     return "\n".join(list(diff)[:20])
 
 
-@pytest.mark.parametrize("backend", ["sim", "hls"])
+@pytest.mark.parametrize("backend", ["sim", "hls", "native"])
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_emitted_project_equals_golden(case, backend, tmp_path, request, monkeypatch):
     monkeypatch.chdir(ROOT)

@@ -7,18 +7,12 @@ Tolerances:
   max(1, its largest entry);
 - float32 (``float``) against the float64 optimum: positions within 1 cm, rotations within 1 mrad
   (angle of R_aᵀR_b), other vectors within 1e-2;
-- the native library (ctypes, built with ``-O3 -march=native`` but no FMA) and the testbench give
-  bit-identical numbers, and so does the testbench whatever the number of lanes a block evaluates
-  side by side.
+- the testbench gives bit-identical numbers whatever the number of lanes a block evaluates side
+  by side (the native backend's library gives them too: ``test_native.py``).
 """
 
 from __future__ import annotations
 
-import platform
-import re
-import runpy
-import shutil
-import subprocess
 import sys
 from pathlib import Path
 
@@ -28,15 +22,13 @@ import pytest
 import fgc
 from fgc import noise
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data, write_data
-from fgc.errors import DataError
+from fgc.datafile import problem_data
 from fgc.factors import BetweenFactor, PriorFactor
 from fgc.geometry import Pose3
 from fgc.program import SolverConfig
 from fgc_backends import sim
-from fgc_backends.hls import HlsConfig, HlsConfigError, emit, make, native, run_csim
+from fgc_backends.hls import HlsConfig, HlsConfigError, emit, run_csim
 from fgc_backends.hls.config import ap_types_include
-from fgc_backends.hls.native import NativeSolver
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "examples"))
@@ -125,44 +117,6 @@ def test_csim_matches_the_simulator(example):
     _check_against_reference(name, program, result, reference, CASES[name][2])
 
 
-def test_native_library_gives_the_csim_numbers(example):
-    name, (program, project, data, result, _) = example
-    make(project, "native")
-    again = NativeSolver.load(program, project).run(data)
-    assert (again.iterations, again.status, again.reason) == \
-        (result.iterations, result.status, result.reason)
-    assert again.final_error == result.final_error
-    for key, value in result.values.items():
-        np.testing.assert_array_equal(again.values[key], value)
-
-
-def test_native_run_api_builds_once_and_agrees():
-    graph = pose_graph.build()
-    program = compile_graph(graph, SolverConfig(linear="qr"), name="w100_native")
-    data = problem_data(graph, program)
-    first = native.run(program, data)
-    assert native.load(program) is native.load(program)  # cached per content hash
-    reference = sim.run(program, data, precision="float64")
-    assert relative_worst(first.storage, reference.storage) <= F64_TOL
-    assert type(first.values["x1"]) is type(reference.values["x1"])  # geometry, as sim's
-    # solve() on flat arrays: the results are new arrays each call (the library writes into
-    # the solver's own buffers), and arrays the kernel would misread are refused
-    solver = native.load(program)
-    x, d = solver.flatten(data)
-    out1, errors1, info1 = solver.solve(x, d)
-    out2, _, _ = solver.solve(x + 0.0, d)
-    assert out1 is not out2 and not np.shares_memory(out1, out2)
-    np.testing.assert_array_equal(out1, out2)
-    np.testing.assert_array_equal(out1, np.concatenate([first.storage[k.key] for k in
-                                                        program.variables]))
-    assert errors1[1] == first.final_error and info1[0] == first.iterations
-    for bad, what in [(x[:-1], "x"), (x.astype(np.float32), "x"), (d[::2], "factor data"),
-                      (list(d), "factor data")]:
-        args = (bad, d) if what == "x" else (x, bad)
-        with pytest.raises(DataError, match=f"{what} must be a C-contiguous float64 array"):
-            solver.solve(*args)
-
-
 def robust_chain(n: int = 14) -> fgc.Graph:
     """Pose3 odometry and skip edges under Huber and Cauchy losses on diagonal and full noise,
     one gross outlier: robust reweighting, every noise kind and repeated step shapes."""
@@ -197,38 +151,6 @@ def test_robust_losses_and_gauss_newton_match_the_simulator(solver, tmp_path):
     _check_against_reference("robust", program, result, reference, "double")
 
 
-def _sim_problem(program, data, folder):
-    """The emitted simulator's Problem for ``data`` in float64 (its cost and linearize)."""
-    files = sim.emit(program, folder)
-    write_data(data, folder / "data.txt")
-    ns = runpy.run_path(str(files[0]), run_name="fgc_sim_probe")
-    lib = ns["LIB"]
-    return lib.optimizer.Problem(ns["PROBLEM"], lib.runtime.read_data(str(folder / "data.txt")),
-                                 "float64", lib)
-
-
-@pytest.mark.parametrize("case", ["robust", "lio"])
-def test_cost_and_rounding_noise_match_the_simulator(case, tmp_path):
-    """The kernel's cost and its rounding noise (the band try_steps grants a step that does not
-    lower the cost) against the simulator's at the initial values and at a random point near
-    them: every noise kind and robust loss (robust chain), the fused IMU block with its constant
-    tail rows (LIO). 1e-10 relative: the two sum in different orders."""
-    graph = robust_chain() if case == "robust" else lio.build(N=10)
-    program = compile_graph(graph, SolverConfig(linear="cholesky"), name=f"probe_{case}")
-    data = problem_data(graph, program)
-    solver = native.load(program)
-    problem = _sim_problem(program, data, tmp_path)
-    x0, d = solver.flatten(data)
-    rng = np.random.default_rng(11)
-    tangent = 1e-3 * rng.standard_normal(problem.n)
-    for x in (x0, problem.retract(x0, tangent)):
-        cost, band = solver.probe(np.ascontiguousarray(x), d)
-        _, _, noise_sim = problem.linearize(x)
-        assert cost == pytest.approx(float(problem.cost(x)), rel=1e-10)
-        assert band == pytest.approx(noise_sim, rel=1e-10)
-        assert 0 < band < 1e-9 * cost  # float64 rounding of x moves the cost by a few ulp
-
-
 def test_lanes_do_not_change_the_numbers(tmp_path):
     graph = robust_chain()
     program = compile_graph(graph, SolverConfig(linear="qr"), name="lanes")
@@ -239,42 +161,6 @@ def test_lanes_do_not_change_the_numbers(tmp_path):
     assert results[0].final_error == results[1].final_error
     for key, value in results[0].values.items():
         np.testing.assert_array_equal(results[1].values[key], value)
-
-
-def _disassembly(library: Path) -> str:
-    return subprocess.run(["objdump", "-d", str(library)], capture_output=True, text=True,
-                          check=True).stdout
-
-
-@pytest.mark.skipif(platform.machine() not in ("x86_64", "AMD64") or not shutil.which("objdump"),
-                    reason="the fused multiply-add check is for x86 builds")
-def test_native_build_holds_no_fused_multiply_add(tmp_path):
-    """The Makefile checks the native library for fused multiply-adds (GCC 12 emits vfmaddsub
-    under AVX-512 whatever -mno-fma says) and builds it again without AVX-512 if it has any;
-    a library that still has them is refused. FUSED (the pattern checked for) is set here to
-    one the first build matches, to take both branches on any x86 host."""
-    graph = robust_chain()
-    program = compile_graph(graph, SolverConfig(linear="qr"), name="fused")
-    project = emit(program, tmp_path / "p", HlsConfig(scalar="double"))
-    library = project.directory / "libfused.so"
-    make(project, "native")
-    assert not re.search(r"\bvfn?m(add|sub)", _disassembly(library))
-    wide = "avx512f" in Path("/proc/cpuinfo").read_text()
-    # every AVX-512 build uses zmm registers; the build again without AVX-512 none
-    again = subprocess.run(["make", "-s", "-B", "native", r"FUSED=%zmm"], cwd=project.directory,
-                           capture_output=True, text=True, check=True)
-    assert ("built again with -mno-avx512f" in again.stdout) == wide, again.stdout
-    assert "%zmm" not in _disassembly(library)
-    data = problem_data(graph, program)
-    solved = NativeSolver.load(program, project).run(data)
-    reference = run_csim(project, program, data)
-    assert solved.final_error == reference.final_error
-    # a pattern every build matches (any VEX instruction): refused, and no library is left
-    refused = subprocess.run(["make", "-s", "-B", "native", r"FUSED=\bv[a-z]"],
-                             cwd=project.directory, capture_output=True, text=True, check=False)
-    assert refused.returncode != 0
-    assert "still holds fused multiply-adds" in refused.stdout + refused.stderr
-    assert not library.exists()
 
 
 @pytest.mark.heavy

@@ -3,7 +3,7 @@
 - sparsity: the whitened pattern of each block and the Gram tiles that skip its structural zeros;
 - steps: the specialised step patterns move exactly what the generic table-driven assembly moves,
   and a QR pattern's Householder plan lists every row a reflection can touch;
-- printing for lanes, and the native build's flags.
+- printing for lanes (the native build's flags: ``test_native.py``).
 
 Whether the emitted C++ computes the simulator's numbers is ``test_hls_csim.py``'s job.
 """
@@ -23,7 +23,6 @@ from fgc.kernel import Kernel
 from fgc.program import SolverConfig
 from fgc_backends.hls import HlsConfigError
 from fgc_backends.hls.blocks import NOISE_KINDS, block_contexts
-from fgc_backends.hls.config import native_flags
 from fgc_backends.hls.printer import print_kernel
 from fgc_backends.hls.sparsity import TILE, ZERO, block_pattern
 from fgc_backends.hls.steps import step_patterns
@@ -231,9 +230,3 @@ def test_kernels_print_for_lanes():
     assert scalar.intermediates == ("const T t0 = fgc_sqrt(in[0]) + in[0]*in[1];",)
     assert vector.intermediates == ("const V t0 = v_fgc_sqrt(in[0]) + in[0]*in[1];",)
     assert vector.outputs == scalar.outputs
-
-
-def test_native_flags_keep_the_rounding():
-    x86 = native_flags("x86_64")
-    assert "-march=native" in x86 and "-mno-fma" in x86 and "-mprefer-vector-width=512" in x86
-    assert native_flags("aarch64") == ("-O3",)

@@ -9,7 +9,7 @@ state comparison and counted; they must stay rare (≤ 5 %). fgc must never repo
 
 Profiles:
 - default: 20 derandomised examples of up to 8 poses (the same graphs on every run, so CI is
-  deterministic), and 4 of the native HLS library on three fixed structures (one build each);
+  deterministic), and 4 of the native library on three fixed structures (one build each);
 - thorough: ``pytest -m heavy`` (500 simulator examples of up to 14 poses, 60 native) or
   ``python bench/bench_property.py`` (counts, excluded cases, timing).
 """

@@ -20,7 +20,7 @@ from fgc.errors import DataError
 from fgc.factors import BetweenFactor, PriorFactor
 from fgc.geometry import Pose2
 from fgc.program import Program, SolverConfig
-from fgc_backends import hls, sim
+from fgc_backends import hls, native, sim
 
 
 def ring(edges: list[tuple[int, int]]) -> fgc.Graph:
@@ -147,7 +147,7 @@ def test_hls_testbench_refuses_a_data_file_of_another_structure(two, tmp_path):
 @pytest.mark.heavy
 def test_native_library_refuses_data_of_another_structure(two):
     ga, gb, pa, pb = two
-    solver = hls.native.load(pa)
+    solver = native.load(pa)
     assert solver.run(problem_data(ga, pa)).converged
     with pytest.raises(DataError, match=rf"fingerprint {pb.structure_fingerprint}.*"
                                         rf"{pa.structure_fingerprint}"):

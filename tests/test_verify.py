@@ -99,12 +99,159 @@ def test_scaled_jacobian_fails(monkeypatch, capsys, private_cache):
     assert "range_to_beacon" in text.strip().splitlines()[-1]
 
 
+# --------------------------------------------------------------------------------------------
+# the kernels the simulator executes are checked (a wrong fused kernel fails)
+# --------------------------------------------------------------------------------------------
+
+
+def _plant_fused_kernel(block_name: str, member_type: str, scale: float = 1.02) -> None:
+    """Rewrite the private cache's fused kernel of ``block_name``: one computed Jacobian entry in
+    the first row of member ``member_type`` scaled by ``scale``; the lowered kernels built from
+    the correct one are deleted and the in-process memos emptied, so the next compile lowers,
+    emits and runs the planted kernel."""
+    import fgc.cache
+    import fgc.fuse
+    import fgc.lower
+
+    root = fgc.cache.cache_root()
+    (path,) = root.glob(f"fuse-{block_name}-*.pkl")
+    key = path.stem.rsplit("-", 1)[1]
+    kernels, structure, ops = fgc.cache.load(path, key, tuple)
+    kernel, cost = kernels.get()
+    bt = next(t for t in fgc.fuse._MEMO.values() if t.key == key)
+    member = next(m for m in bt.members if m.name == member_type)
+    m, row, pos, target = bt.residual_dim, member.rows[0], bt.residual_dim, None
+    for k, b in enumerate(bt.variables):
+        for j in range(b.dim):
+            index = pos + row * b.dim + j
+            if target is None and structure[k][row][j] == "x":
+                target = index
+        pos += m * b.dim
+    assert target is not None
+    outputs = list(kernel.outputs)
+    outputs[target] = sp.Float(scale) * outputs[target]
+    planted = dataclasses.replace(kernel, outputs=tuple(outputs))
+    fgc.cache.store(path, key, (fgc.cache.Deferred((planted, cost)), structure, ops))
+    for lowered in root.glob("lower-*.pkl"):
+        lowered.unlink()
+    fgc.fuse._MEMO.clear()
+    fgc.lower._LOWERED.clear()
+
+
+def test_wrong_fused_kernel_fails_naming_the_factor(capsys, tmp_path, private_cache):
+    """A fused kernel 2 % off in one Jacobian entry of the custom factor, the per-factor
+    derivation right: only the check of the executed kernel can see it."""
+    code, text = _verify([BEACONS, "-p", "steps=6"], capsys)
+    assert code == EXIT_OK, text  # the clean run, which also fills the private cache
+    _plant_fused_kernel("range_to_beacon", "range_to_beacon")
+    out = tmp_path / "v.json"
+    code, text = _verify([BEACONS, "-p", "steps=6", "--json", str(out)], capsys)
+    assert code == EXIT_FAILED, text
+    verdict = text.strip().splitlines()[-1]
+    assert verdict.startswith("  FAILED: the simulator's kernel for factor type "
+                              "'range_to_beacon'"), verdict
+    assert "numerical derivatives" in verdict
+    r = json.loads(out.read_text())
+    derived = {c["factor_type"]: c for c in r["linearization_checks"]}
+    assert derived["range_to_beacon"]["passed"] is True  # derive()'s kernel is not the wrong one
+    executed = {c["factor_type"]: c for c in r["executed_kernel_checks"]}
+    assert executed["range_to_beacon"]["passed"] is False
+    assert executed["range_to_beacon"]["error"] > FD_TOLERANCE
+    assert all(c["passed"] for name, c in executed.items() if name != "range_to_beacon")
+
+
+@fgc.factor
+def _pair_distance(x1: Pose2, x2: Pose2, *, measured: float):
+    """Distance between consecutive poses: fused with their between factor (same keys)."""
+    return [fgc.sqrt((x2.x() - x1.x()) ** 2 + (x2.y() - x1.y()) ** 2) - measured]
+
+
+def _fused_chain(n: int = 6) -> fgc.Graph:
+    from fgc.factors import BetweenFactor, PriorFactor
+
+    rng = np.random.default_rng(5)
+    g = fgc.Graph()
+    step = Pose2(1.0, 0.0, 0.2)
+    truth = [Pose2(0.0, 0.0, 0.0)]
+    for _ in range(1, n):
+        truth.append(truth[-1].compose(step))
+    for i, pose in enumerate(truth):
+        g.add_variable(f"x{i}", pose.retract(rng.normal(size=3) * 0.05))
+    g.add(PriorFactor("x0", truth[0], noise.isotropic(3, 0.01)))
+    for i in range(1, n):
+        g.add(BetweenFactor(f"x{i - 1}", f"x{i}", step, noise.diagonal([0.05, 0.05, 0.02])))
+        g.add(_pair_distance(f"x{i - 1}", f"x{i}", measured=1.0, noise=noise.isotropic(1, 0.05)))
+    return g
+
+
+@pytest.mark.parametrize("member, reference", [
+    ("BetweenFactorPose2", "fgc's per-factor derivation"),
+    ("_pair_distance", "numerical derivatives"),
+])
+def test_wrong_member_of_a_fused_block_fails(member, reference, private_cache):
+    """A block of two members (built-in between factor + custom distance): the planted error in
+    either member's rows fails, naming that member's factor type."""
+    graph = _fused_chain()
+    clean = fgc.verify(graph)
+    assert clean["passed"], clean["verdict"]
+    block = "BetweenFactorPose2+_pair_distance"
+    assert {c["block"] for c in clean["executed_kernel_checks"]} >= {block}
+    _plant_fused_kernel(block, member)
+    r = fgc.verify(graph)
+    assert not r["passed"]
+    assert r["verdict"].startswith(f"FAILED: the simulator's kernel for factor type '{member}' "
+                                   f"(block '{block}') differs from {reference}"), r["verdict"]
+
+
+def test_simulator_linearisation_is_cut_per_factor():
+    """sim.linearize: each graph factor's whitened (A, b) out of the fused blocks, in its own
+    key order, equal to the per-factor derivation; only the factors asked for."""
+    from fgc.compile import compile_graph
+    from fgc.datafile import problem_data
+    from fgc.verify import linearize_factor
+    from fgc_backends import sim
+
+    graph = _fused_chain()
+    program = compile_graph(graph)
+    assert any(len(b.members) == 2 for b in program.blocks)
+    moved = {v.key: graph.variables[v.key].initial.retract(np.full(3, 0.1)).storage_array()
+             for v in program.variables}
+    wanted = [0, 1, 2, 7, 10]
+    initial, other = sim.linearize(program, problem_data(graph, program), [None, moved],
+                                   factors=wanted)
+    assert sorted(initial) == sorted(other) == wanted
+    for rows, values in ((initial, {k: v.initial for k, v in graph.variables.items()}),
+                         (other, {k: graph.variables[k].type.from_storage(a)
+                                  for k, a in moved.items()})):
+        for i in wanted:
+            f = graph.factors[i]
+            a, b = linearize_factor(f, [values[k] for k in f.keys])
+            assert rows[i][0].shape == a.shape
+            assert np.abs(rows[i][0] - a).max() <= 1e-12 and np.abs(rows[i][1] - b).max() <= 1e-12
+
+
+def test_large_types_are_sampled_deterministically():
+    from fgc.verify import sample_factors
+
+    graph = _fused_chain(12)
+    picked = sample_factors(graph, limit=4)
+    assert picked == sample_factors(graph, limit=4)
+    by_type: dict = {}
+    for i in picked:
+        by_type.setdefault(graph.factors[i].type.name, []).append(i)
+    assert [len(v) for v in by_type.values()] == [1, 4, 4]  # the prior, 11 between, 11 distance
+    assert by_type["BetweenFactorPose2"][0] == 1 and by_type["BetweenFactorPose2"][-1] == 21
+
+
 def test_custom_factor_line_states_method_and_tolerance(capsys):
     code, text = _verify([BEACONS, "-p", "steps=6"], capsys)
     assert code == EXIT_OK, text
     line = next(s for s in text.splitlines() if "custom factor verify" in s)
     assert "'range_to_beacon'" in line
     assert "numerical derivatives (central differences), tolerance 1e-06" in line
+    executed = next(s for s in text.splitlines() if s.startswith("  executed kernels"))
+    assert "at the initial values and the final estimate" in executed
+    assert "sample" not in executed  # 6 steps: every factor is checked
     assert text.strip().splitlines()[-1].startswith("  PASSED: fgc's answer matches GTSAM's")
 
 

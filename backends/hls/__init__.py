@@ -1,16 +1,14 @@
-"""The HLS C++ backend: a Program → a Vitis HLS project that is also a host C++ program.
+"""The HLS C++ backend: a Program → a Vitis HLS project.
 
     from fgc_backends import hls
     project = hls.emit(program, "out/", hls.HlsConfig(scalar="double"))
     result = hls.run_csim(project, program, problem_data(graph, program))   # make csim
-    result = hls.native.run(program, problem_data(graph, program))          # ctypes
 
 Emitted files: ``<name>.h``/``<name>.cpp`` (the synthesisable kernel ``<name>_top``),
-``tb_<name>.cpp`` (testbench), ``native_<name>.cpp`` (C entry points), ``run_hls.tcl`` and a
-``Makefile`` (``make csim``, ``make native``).
+``tb_<name>.cpp`` (testbench), ``run_hls.tcl`` and a ``Makefile`` (``make csim``). The fast CPU
+solver is its own backend, :mod:`fgc_backends.native`.
 """
 
-from fgc_backends.hls import native
 from fgc_backends.hls.build import HlsBuildError, make, run_csim
 from fgc_backends.hls.config import HlsConfig, HlsConfigError
 from fgc_backends.hls.emitter import HlsProject, emit
@@ -20,4 +18,4 @@ from fgc_backends.hls.results import HlsResult
 
 __all__ = ["HlsBuildError", "HlsCodePrinter", "HlsConfig", "HlsConfigError", "HlsLintError",
            "HlsProject", "HlsResult", "LintIssue", "UnsupportedExpressionError", "emit",
-           "lint_source", "make", "native", "run_csim"]
+           "lint_source", "make", "run_csim"]

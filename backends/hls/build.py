@@ -1,4 +1,4 @@
-"""Build and run an emitted project with the host compiler: ``make csim`` and ``make native``.
+"""Build and run an emitted project with the host compiler: ``make csim``.
 
 The project's Makefile is the single description of the build; these helpers only call it with
 fixed target names and fixed file names inside the project folder (``data.txt``, ``result.txt``),
@@ -8,7 +8,6 @@ so no caller-chosen path ever reaches make or the shell.
 from __future__ import annotations
 
 import subprocess
-from pathlib import Path
 
 from fgc.datafile import ProblemData, write_data
 from fgc.errors import FgcError
@@ -27,7 +26,7 @@ class HlsBuildError(FgcError):
 
 def make(project: HlsProject, target: str) -> str:
     """Run ``make -s <target>`` in the project folder; returns its standard output."""
-    if target not in ("csim", "native", "clean"):
+    if target not in ("csim", "clean"):
         raise ValueError(f"unknown make target {target!r}")
     try:
         done = subprocess.run(["make", "-s", target], cwd=project.directory, capture_output=True,
@@ -53,8 +52,3 @@ def run_csim(project: HlsProject, program: Program, data: ProblemData) -> HlsRes
     result.unlink(missing_ok=True)
     make(project, "csim")
     return read_result(result, program, data, project.config.scalar)
-
-
-def library_path(project: HlsProject) -> Path:
-    """Where ``make native`` puts the shared library."""
-    return project.directory / f"lib{project.name}.so"

@@ -8,9 +8,8 @@ here; there are no global flags.
 
 from __future__ import annotations
 
-import platform
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 from fgc.errors import FgcError
@@ -47,22 +46,14 @@ class HlsConfig:
       ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
       widest elimination step this backend accepts; larger Programs fail at emit time.
-    - ``lanes``: factor instances a block evaluates side by side in the host builds (C
-      simulation and native), one lane each of a GCC/Clang vector type; ``None`` means one
+    - ``lanes``: factor instances a block evaluates side by side in the host build (the C
+      simulation), one lane each of a GCC/Clang vector type; ``None`` means one
       vector register, chosen by the compiler's target: 64 bytes where the build has AVX-512
       (8 doubles, 16 floats), else 32 (4 doubles, 8 floats). Synthesis (``__SYNTHESIS__``) and
       fixed point use one. Each lane computes exactly the scalar kernel, so results do not
       depend on it.
     - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation (portable: they
-      are the testbench's), and the base of the native build.
-    - ``native_cxxflags``: added for the native shared library only, which is built on the
-      machine that runs it: ``-O3 -march=native`` (AVX on x86, AVX-512 at full width where the
-      CPU has it) but no fused multiply-add — ``-mno-fma`` next to ``-ffp-contract=off`` in both
-      builds — so every operation rounds as in the C simulation and the two give bit-identical
-      results. GCC 12 still emits ``vfmaddsub`` under ``-ffp-contract=off -mno-fma`` where
-      AVX-512 is on, so with ``-mno-fma`` the Makefile checks the library (``objdump``) and
-      builds it again with ``-mno-avx512f`` if it holds any fused multiply-add. Set ``()`` to
-      build the native library with ``cxxflags`` alone.
+      are the testbench's; the native backend's ``NativeConfig`` starts from the same flags).
     - ``lambda_upper_bound`` / ``absolute_error_tol``: LM gives up when μ would pass the bound;
       it stops once the cost is at most the tolerance (the simulator's ``SimConfig`` options,
       same defaults, so both backends run the same algorithm).
@@ -79,7 +70,6 @@ class HlsConfig:
     cxx: str = "g++"
     cxxflags: tuple[str, ...] = ("-std=c++17", "-O2", "-ffp-contract=off", "-Wall", "-Wextra",
                                  "-Werror", "-Wno-unknown-pragmas")
-    native_cxxflags: tuple[str, ...] = field(default_factory=lambda: native_flags())
     lambda_upper_bound: float = 1e10
     absolute_error_tol: float = 1e-14
 
@@ -107,7 +97,7 @@ class HlsConfig:
         for name in ("max_variables", "max_step_columns"):
             if int(getattr(self, name)) < 1:
                 raise HlsConfigError(f"{name} must be ≥ 1, got {getattr(self, name)}")
-        for flag in (self.cxx, *self.cxxflags, *self.native_cxxflags):
+        for flag in (self.cxx, *self.cxxflags):
             if not re.match(r"^[A-Za-z0-9_+=./-]+$", flag):
                 raise HlsConfigError(f"compiler option {flag!r} has characters a Makefile would "
                                      "interpret")
@@ -191,14 +181,6 @@ def parse_clock(text: str) -> tuple[float, float]:
         raise HlsConfigError(f"clock {text!r} ({mhz:.4g} MHz, {ns:.4g} ns) is outside 1 MHz … "
                              "2 GHz")
     return mhz, ns
-
-
-def native_flags(machine: str | None = None) -> tuple[str, ...]:
-    """The native build's extra flags on ``machine`` (default: this one's architecture)."""
-    machine = (machine or platform.machine()).lower()
-    if machine in ("x86_64", "amd64", "i686", "i386"):
-        return ("-O3", "-march=native", "-mno-fma", "-mprefer-vector-width=512")
-    return ("-O3",)  # elsewhere -ffp-contract=off alone keeps the rounding; ISA flags differ
 
 
 def ap_types_include() -> Path:

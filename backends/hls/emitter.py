@@ -1,4 +1,4 @@
-"""emit: a Program → a Vitis HLS project (kernel, header, testbench, native wrapper, tcl, Makefile).
+"""emit: a Program → a Vitis HLS project (kernel, header, testbench, tcl, Makefile).
 
 Everything a template places is computed here (tables, offsets, sizes) or printed by the backend's
 printer (kernels, special functions, literals); templates only loop over these fields. The only
@@ -33,9 +33,10 @@ from fgc_backends.hls.tables import IntTable, build_tables, factor_data_words
 
 # template → emitted file name ({name} is the project identifier)
 FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
-         ("tb.cpp.jinja", "tb_{name}.cpp"), ("native.cpp.jinja", "native_{name}.cpp"),
-         ("run_hls.tcl.jinja", "run_hls.tcl"), ("Makefile.jinja", "Makefile"))
+         ("tb.cpp.jinja", "tb_{name}.cpp"), ("run_hls.tcl.jinja", "run_hls.tcl"),
+         ("Makefile.jinja", "Makefile"))
 SYNTHESISED = ("kernel.h.jinja", "kernel.cpp.jinja")
+NATIVE_TEMPLATES = Path(__file__).resolve().parent.parent / "native" / "templates"
 HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
 # Xilinx's ap_types headers trip g++'s flow-based warnings once inlined into our code (-isystem
 # cannot silence those); the warnings are theirs, so only these two are relaxed for ap_fixed.
@@ -76,7 +77,10 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     check_clock(program.solver.clock_mhz, config)
     project = identifier(name or program.name)
     context = _context(program, config, project)
-    env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
+    # kernel.h/kernel.cpp are read from the native backend's templates (the CPU program) until
+    # the dataflow design lands; this backend's own templates come first
+    loader = jinja2.FileSystemLoader([config.template_dir(), NATIVE_TEMPLATES])
+    env = jinja2.Environment(loader=loader,
                              undefined=jinja2.StrictUndefined, trim_blocks=True,
                              lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
     env.tests["constant_literal"] = is_constant_literal
@@ -191,8 +195,6 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "include_dirs": include, "part": config.part, "clock_ns": repr(float(config.clock_ns)),
         "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
                                                  * config.is_fixed_point),
-        "native_cxxflags": " ".join(config.native_cxxflags),
-        "fma_check": "-mno-fma" in config.native_cxxflags,
         "units": max(1, int(program.solver.units)), "cpe": max(1, int(program.solver.cpe)),
         "unit_sets": unit_sets, "structure_comment": comment(
             f"{program.schedule.structure_class} graph, {program.schedule.ordering} ordering"),

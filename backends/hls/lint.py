@@ -10,8 +10,8 @@ Rules, checked on code with comments and string literals blanked out:
 - ``tripcount``: every ``for`` loop compares its variable with a compile-time bound (integer
   literals and ALL_CAPS constants) or opens its body with ``#pragma HLS LOOP_TRIPCOUNT``.
 
-The testbench and the native wrapper run only on the host, so they are checked for ``alloc`` and
-``stl`` only (``synthesis=False``).
+The testbench and the native backend's files run only on the host, so they are checked for
+``alloc`` and ``stl`` only (``synthesis=False``).
 """
 
 from __future__ import annotations

@@ -16,9 +16,11 @@ arithmetic of that plan:
 
 Nothing here is emitted yet: the HLS templates do not read the plan (docs/hls.md).
 
-The QR sweep's structure (which rows and columns each Householder reflection touches) is read
-from the sim cost model's structural simulation (``householder_sweep`` / ``stacked_pattern``), a
-data source only; the timings here are this module's own.
+The QR and Cholesky timings follow the fixed unit headers the design calls
+(backends/hls/include/fgc_qr.h, fgc_cpe.h): :func:`qr_unit_loops` and :func:`cpe_round_depth`
+price the loops those headers execute and count under FGC_COUNT_CYCLES. The stacked matrix's
+structure (which rows each Householder reflection touches) is read from the sim cost model's
+``stacked_pattern``, a data source only.
 """
 
 from __future__ import annotations
@@ -201,6 +203,153 @@ def dot_loop(name: str, length: int, ops: OperatorTable, partials: int | None = 
     return Loop(name, length, math.ceil(la / k), lm + la * (1 + tree), repeat)
 
 
+def _region_cycles(processes: list[list[Loop]],
+                   waits: tuple[tuple[int, int, str], ...] = ()) -> int:
+    """A DATAFLOW region as :func:`phase_cycles` prices it: its slowest process plus the fill of
+    the others (the depth of their first loop that runs); processes with no running loop are
+    absent (fgc_cycles.h's ``total``). ``waits``: (process, on process, loop name suffix): the
+    process's first loop reads the stream of the other's first such loop as it comes, so it ends
+    its depth after that loop and the region takes no less than that plus the process's other
+    loops (fgc_cycles.h's FGC_WAIT)."""
+    procs = [(sum(lp.cycles for lp in loops), next((lp.depth for lp in loops if lp.trip > 0), 0))
+             for loops in processes if any(lp.trip > 0 for lp in loops)]
+    if not procs:
+        return 0
+    slow = max(range(len(procs)), key=lambda i: procs[i][0])
+    total = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+    for p, q, suffix in waits:
+        start = 0
+        for lp in processes[q]:
+            start += lp.cycles
+            if lp.name.endswith(suffix):
+                # the waiting process's first loop reads that loop's stream as it comes
+                running = [lp2 for lp2 in processes[p] if lp2.trip > 0]
+                if running:
+                    end = start + running[0].depth + sum(lp2.cycles for lp2 in running[1:])
+                    total = max(total, end)
+                break
+    return total
+
+
+def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
+                  partials: int | None = None, name: str = "s") -> list[Loop]:
+    """The loops of ``qr_step`` (backends/hls/include/fgc_qr.h) on one step, as it executes them.
+
+    ``pattern``: the structural rows × (f + s) non-zeros of the stacked matrix (the right-hand
+    side, dense, is added here); a structural non-zero is taken as non-zero in value. Returns one
+    ``Loop`` (trip 1) per DATAFLOW region ``qr_reflection`` j = -1 ... k - 1 (k = min(rows,
+    w + 1)), whose depth is the region's cycles (slowest process plus the others' fill, and no
+    less than the Evaluate's end, which reads its column as the Update unit streams it: the same
+    loops and rule as the header's FGC_CYCLES / FGC_WAIT counters), then the pivot check.
+    ``partials`` is the header's CFG::PARTIALS (default: the adder latency, II 1).
+    """
+    import numpy as np
+
+    la, lm, ld, ls = ops.add.latency, ops.mul.latency, ops.div.latency, ops.sqrt.latency
+    p = partials if partials is not None else la
+    nz = np.hstack([np.asarray(pattern, dtype=bool),
+                    np.ones((len(pattern), 1), dtype=bool)])
+    rows, cols = nz.shape
+    k = min(rows, cols)
+    local = -(-cols // units)
+
+    def dot(n):
+        kk = max(1, min(n, p))
+        tree = math.ceil(math.log2(kk)) if kk > 1 else 0
+        return math.ceil(la / kk), lm + la * (1 + tree)
+
+    # the active rows of each column as the units meet them (the fill of earlier reflections)
+    active = []
+    for j in range(k):
+        rows_j = [i for i in range(j, rows) if nz[i, j]]
+        if not rows_j:
+            active.append(0)  # all zero: skipped
+            continue
+        act = sorted(set(rows_j) | {j})
+        union = nz[act, j + 1:].any(axis=0)
+        nz[np.ix_(act, range(j + 1, cols))] = union
+        nz[act, j] = False
+        nz[j, j] = True
+        active.append(len(act))
+    out = []
+    for j in range(-1, k):
+        n = active[j] if j >= 0 else 0
+        procs = [[Loop("broadcast", n + 2, 1, 2)]]
+        for u in range(units):
+            # the unit's first column right of j takes its dot product while the vector arrives
+            c0 = j + 1 + (u - (j + 1)) % units
+            fused = n > 1 and c0 < cols
+            loops = [Loop("header", 2, 1, 1),
+                     Loop("vector", n, *(dot(n) if fused else (1, 1)))]
+            if n > 0 and j >= 0 and j % units == u:
+                loops.append(Loop("pivot_column", n, 1, 1))
+            for lc in range(local):
+                c = lc * units + u
+                if c <= j or c >= cols:
+                    continue
+                if n == 1:  # the pivot row alone: negated
+                    loops.append(Loop("negate", 1, 1, 1))
+                elif n > 1:
+                    if c != c0:
+                        loops.append(Loop("dot", n, *dot(n)))
+                    loops.append(Loop("scale", 1, 1, lm))
+                    if c == j + 1 and c < k:  # updated and streamed to the Evaluate at once
+                        loops.append(Loop("axpy_next_column", rows - j, 1, lm + la))
+                    else:
+                        loops.append(Loop("axpy", n, 1, lm + la))
+                if j >= 0:
+                    loops.append(Loop("row_out", 1, 1, 1))
+                if c == j + 1 and c < k and n <= 1:
+                    loops.append(Loop("next_column", rows - c, 1, 1))
+            procs.append(loops)
+        col = j + 1
+        waits = ()
+        if col < k:
+            # the Evaluate starts when the unit holding the column has streamed it
+            waits = ((len(procs), 1 + col % units, "next_column"),)
+            loops = [Loop("receive", rows - col, 1, 2)]
+            n2 = active[col]
+            if n2 > 0:
+                ii, depth = dot(n2)
+                loops += [Loop("norm", n2, ii, ld + depth), Loop("tail", 1, 1, ls + lm + la + ld)]
+            procs.append(loops)
+        # the collector: row j of R out (cond / update) and the running scale
+        first = 0 if j < frontal else frontal  # rows out with their zeros left of the diagonal
+        procs.append([Loop("header", 2, 1, 1)]
+                     + ([Loop("row", cols - first, 1, 2)] if 0 <= j < k else []))
+        out.append(Loop(f"{name}_reflection{j + 1}", 1, 1, _region_cycles(procs, waits)))
+    out.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
+    return out
+
+
+def cpe_round_depth(active: int, cpe: int, ops: OperatorTable) -> int:
+    """Depth of one ``cpe_round`` (backends/hls/include/fgc_cpe.h) as a loop of trip = its words
+    at II 1: the region's slowest process is a CPE with a pivot (words + 1 words, its latency
+    Ls + Ld + Lm + La deep), the others add their fill: each other CPE with a pivot its latency,
+    each idle CPE 1, the feed and the drain 2 each; + 1 for the status word."""
+    cpe_depth = ops.sqrt.latency + ops.div.latency + ops.mul.latency + ops.add.latency
+    return active * cpe_depth + (cpe - active) + 2 + 2 + 1
+
+
+def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
+                   name: str = "s") -> list[Loop]:
+    """The loops of ``cpe_step`` (backends/hls/include/fgc_cpe.h) on one step's [H | g] of f
+    frontal and s separator columns, as the csim counters count them: mu on the diagonal, one
+    ``Loop`` per round (trip = its words at II 1, depth :func:`cpe_round_depth`), the copy of
+    [H | g] when f = 0, the pivot check. The whole matrix as one step (f = n, s = 0) is what the
+    Cholesky phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
+    w = frontal + separator
+    loops = [Loop(f"{name}_damping", frontal, 1, ops.add.latency)]
+    for r, p0 in enumerate(range(0, frontal, cpe)):
+        m = w - p0
+        loops.append(Loop(f"{name}_round{r}", m * (m + 1) // 2 + m, 1,
+                          cpe_round_depth(min(cpe, frontal - p0), cpe, ops)))
+    if frontal == 0:
+        loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 1))
+    loops.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
+    return loops
+
+
 def _sim_table(ops: OperatorTable):
     from fgc_backends.sim.cost.params import OperatorCost
     from fgc_backends.sim.cost.params import OperatorTable as SimTable
@@ -299,7 +448,6 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
 
 
 def _qr(program, opts, ops, units, memories, channels, phases):
-    from fgc_backends.sim.cost.qr import householder_sweep
     from fgc_backends.sim.cost.structure import stacked_pattern
 
     sched = program.schedule
@@ -308,6 +456,8 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         2 if sched.structure_class == "chain" and sched.ordering == "two-ended" else 1)
     sets = max(1, min(sets, widest))
     damping = program.solver.method == "lm"
+    patterns = {st.index: stacked_pattern(program, st, damping) for st in sched.steps}
+    max_rows = max(pat.shape[0] for pat in patterns.values())
     for s in range(sets):
         units.append(Unit(f"qr{s}_evaluate", "Householder vector of a column", 1,
                           (("add", 2), ("mul", 2), ("div", 1), ("sqrt", 1))))
@@ -318,25 +468,17 @@ def _qr(program, opts, ops, units, memories, channels, phases):
                                 f"qr{s}_evaluate", f"qr{s}_update"))
         channels.append(Channel(f"qr{s}_r", "pingpong", 2, ops.word_bits, f"qr{s}_update",
                                 f"qr{s}_backsub"))
-    # per step: Evaluate of column k+1 overlaps Update of column k -> one process per step
+        # fgc_qr.h: the Update unit holding the next pivot column streams it to the Evaluate
+        channels.append(Channel(f"qr{s}_column", "stream", max_rows, ops.word_bits,
+                                f"qr{s}_update", f"qr{s}_evaluate"))
+    # per step: the regions of fgc_qr.h's qr_step (Evaluate of column k+1 overlaps the Update
+    # of column k in region k) and its store, one process per step
     step_proc = []
     max_words = 0
     for st in sched.steps:
-        sweep = householder_sweep(stacked_pattern(program, st, damping),
-                                  st.frontal_dim + st.new_factor_rows)
-        loops = []
-        for k, (rows, cols) in enumerate(sweep):
-            ev = dot_loop(f"s{st.index}_evaluate{k}", rows, ops)
-            ev_tail = ops.sqrt.latency + ops.add.latency + ops.mul.latency + ops.div.latency
-            col = dot_loop(f"s{st.index}_update{k}", rows, ops)
-            per_col = col.cycles + ops.mul.latency + rows + ops.mul.latency + ops.add.latency
-            update = math.ceil(cols / opts.units) * per_col
-            if k == 0:
-                loops.append(Loop(ev.name, 1, 1, ev.cycles + ev_tail))
-            nxt = sweep[k + 1][0] if k + 1 < len(sweep) else 0
-            nxt_eval = dot_loop("next", nxt, ops).cycles + ev_tail if nxt else 0
-            loops.append(Loop(f"s{st.index}_reflection{k}", 1, 1, max(update, nxt_eval)))
-            max_words = max(max_words, rows * cols)
+        pattern = patterns[st.index]
+        loops = qr_unit_loops(pattern, st.frontal_dim, opts.units, ops, name=f"s{st.index}")
+        max_words = max(max_words, pattern.shape[0] * (pattern.shape[1] + 1))
         step_proc.append((st, Process(f"qr_step{st.index}", "qr_update", tuple(loops))))
     for li, level in enumerate(sched.levels):
         procs = _assign([p for st, p in step_proc if st.index in level], sets, "qr", li)
@@ -389,15 +531,20 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
                                 "cholesky_in" if i == 0 else f"cpe{i - 1}", f"cpe{i}"))
     # a round streams the trailing lower triangle of [H | g] through the cascade, one word a
     # cycle; CPE j computes column j of the round (sqrt + divide) and updates the rest
-    cpe_depth = ops.sqrt.latency + ops.div.latency + ops.mul.latency + ops.add.latency
+    # (fgc_cpe.h's cpe_round: feed -> #CPE CPEs -> drain, see cpe_round_depth; the header
+    # streams the dense triangle, "blocked" storage prices the envelope's words only)
     lowest = hessian_envelope(program) if opts.hessian_storage == "blocked" else [n - 1] * n
     rounds = []
     for r in range(math.ceil(n / c)):
         m = n - r * c
         words = sum(lowest[j] - j + 1 for j in range(r * c, n)) + m
-        rounds.append(Loop(f"round{r}", words, 1, c * cpe_depth))
+        rounds.append(Loop(f"round{r}", words, 1, cpe_round_depth(min(c, m), c, ops)))
     phases.append(Phase("cholesky", True, (Process("cascade", "cpe", tuple(rounds)),),
                         linear=True))
+    # cpe_step's sequential loops around the rounds: mu on the diagonal, the pivots against the
+    # scale (the drain writes the factor out itself)
+    phases.append(Phase("cholesky_scalar", False, (Process("damping_and_check", "cpe", (
+        Loop("damping", n, 1, ops.add.latency), Loop("pivot_check", n, 1, 2))),), linear=True))
     units.append(Unit("trisolve", "Lᵀδ = z (Lz = g runs in the cascade)", 1,
                       (("add", 1), ("mul", 1), ("div", 1))))
     solve = dot_loop("rows", n, ops)

@@ -50,7 +50,7 @@ class HlsResult:
     """Final estimate per variable, iterations, errors, status.
 
     ``values``: key → array of the variable's storage (C simulation, ``NativeSolver.run``), or
-    key → fgc value from :func:`fgc_backends.hls.native.run`, which then keeps the arrays in
+    key → fgc value from :func:`fgc_backends.native.run`, which then keeps the arrays in
     ``storage`` (the simulator's ``SimResult`` layout: one result type across backends)."""
 
     values: dict

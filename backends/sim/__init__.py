@@ -12,6 +12,6 @@ The emitted program runs on its own: ``python out/<name>_sim.py data.txt result.
 from .config import SimConfig
 from .emitter import EmitError, emit
 from .printer import SimPrinter
-from .runner import SimResult, run
+from .runner import SimResult, linearize, run
 
-__all__ = ["EmitError", "SimConfig", "SimPrinter", "SimResult", "emit", "run"]
+__all__ = ["EmitError", "SimConfig", "SimPrinter", "SimResult", "emit", "linearize", "run"]

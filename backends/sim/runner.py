@@ -8,6 +8,7 @@ import runpy
 import subprocess
 import sys
 import tempfile
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -119,6 +120,73 @@ def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | 
             error.factor, error.variable = raw["factor"], raw["variable"]
             raise DataError(_explain(program, error))
     return _result(program, raw, files, config or SimConfig())
+
+
+def linearize(program: Program, data: ProblemData, points: Sequence[dict | None],
+              config: SimConfig | None = None, emitted: str | Path | None = None,
+              factors: Collection[int] | None = None
+              ) -> list[dict[int, tuple[np.ndarray, np.ndarray]]]:
+    """The whitened linearisation of every graph factor as the emitted simulator computes it.
+
+    Loads ``program``'s simulator (emitted into a temporary directory, or the one :func:`run`
+    or :func:`emit` wrote into ``emitted`` with the same ``config``) and, at each point of
+    ``points`` (``{variable key: storage array}``, None: the data's initial values), runs every
+    block type's error + Jacobian kernel over all its instances exactly as the solver does (the
+    printed, fused kernels; the run-time's whitening and robust reweighting), in float64. Per
+    point: {graph factor index: (A, b)} for every factor (or those in ``factors``), A over the
+    factor's own variables in its key order, b = −W·r (GTSAM's convention). ``fgc verify``
+    checks the executed kernels through this."""
+    check_structure(data, program)
+    if emitted is None:
+        with tempfile.TemporaryDirectory(prefix="fgc-sim-lin-") as tmp:
+            emit(program, tmp, config)
+            return linearize(program, data, points, config, tmp, factors)
+    out = Path(emitted)
+    module = out / (config or SimConfig()).files(program.name)[0][1]
+    if not module.is_file():
+        raise FgcError(f"{out}: no emitted simulator of problem '{program.name}' there")
+    namespace = runpy.run_path(str(module), run_name="fgc_sim_problem")
+    lib, spec = namespace["LIB"], namespace["PROBLEM"]
+    with tempfile.TemporaryDirectory(prefix="fgc-sim-lin-") as tmp:
+        data_path = Path(tmp) / "data.txt"
+        write_data(data, data_path)
+        try:
+            problem = lib.optimizer.Problem(spec, lib.runtime.read_data(
+                str(data_path), spec["structure"]), "float64", lib)
+        except lib.runtime.SimDataError as exc:
+            raise DataError(_explain(program, exc)) from None
+    results = []
+    for point in points:
+        x = problem.x0 if point is None else np.concatenate(
+            [np.asarray(point[v.key], dtype=np.float64).reshape(-1) for v in program.variables])
+        with np.errstate(all="ignore"):
+            results.append(_factor_rows(program, [b.linearize(x) for b in problem.blocks],
+                                        None if factors is None else set(factors)))
+    return results
+
+
+def _factor_rows(program: Program, abs_: list[np.ndarray], wanted: set[int] | None
+                 ) -> dict[int, tuple[np.ndarray, np.ndarray]]:
+    """Each block's [A | b] (instances, M, D + 1) cut into its member factors' (A, b) (only
+    the graph factors in ``wanted``, if given)."""
+    out: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+    seen = [0] * len(program.blocks)
+    for spec in program.factors:
+        block = program.blocks[spec.block]
+        ab = abs_[spec.block][seen[spec.block]]
+        seen[spec.block] += 1
+        starts = np.concatenate([[0], np.cumsum(block.variable_dims)]).astype(int)
+        for member, f in zip(block.members, spec.factors, strict=True):
+            if wanted is not None and f not in wanted:
+                continue
+            if not member.positions:
+                raise FgcError(f"block '{block.name}': the Program predates member positions; "
+                               "recompile it")
+            first, last = member.rows
+            cols = np.concatenate([np.arange(starts[p], starts[p + 1])
+                                   for p in member.positions])
+            out[f] = (ab[first:last][:, cols].copy(), ab[first:last, -1].copy())
+    return out
 
 
 def _check_window(program: Program, incremental: bool, window: int | None) -> None:

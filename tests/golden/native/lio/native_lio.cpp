@@ -1,9 +1,8 @@
-// generated from template {{ template }} by fgc {{ fgc_version }} — do not edit
-// C entry points of the native build (lib{{ name }}.so), called through ctypes by
-// fgc_backends.hls.native. Allocation-free: a scalar type other than double gets its copies of
+// generated from template native.cpp.jinja by fgc 0.1.0 — do not edit
+// C entry points of the native build (liblio.so), called through ctypes by
+// fgc_backends.native. Allocation-free: a scalar type other than double gets its copies of
 // the arrays in static buffers.
-#include "{{ name }}.h"
-{% if scalar != "double" %}
+#include "lio.h"
 
 namespace {
 
@@ -18,14 +17,13 @@ void convert_inputs(const double* x, const double* factor_data) {
 }
 
 }  // namespace
-{% endif %}
 
 extern "C" {
 
-// The structure fingerprint this library was compiled for (design {{ design_fingerprint }}): the
+// The structure fingerprint this library was compiled for (design bb965c6be1eb2446): the
 // caller refuses data of another structure before it reaches the kernel.
 const char* fgc_structure() {
-    return "{{ structure_fingerprint }}";
+    return "170b72b966b85a9b";
 }
 
 // Sizes the caller's arrays must have: {N_VARIABLES, N_FACTORS, N_X, N_DATA}.
@@ -35,27 +33,13 @@ void fgc_sizes(int out[4]) {
     out[2] = fgc::N_X;
     out[3] = fgc::N_DATA;
 }
-{% if scalar == "double" %}
-
-// Run the accelerator on the caller's double arrays: the scalar type is double, so they are
-// passed through as they are (the top function reads them into its own buffers).
-void fgc_run(const double* x, const double* factor_data, double* result, double* errors,
-             int* info) {
-    {{ name }}_top(x, factor_data, result, errors, info);
-}
-
-// The cost at x and its rounding noise (out = {cost, noise}), as the accelerator computes them.
-void fgc_probe(const double* x, const double* factor_data, double* out) {
-    {{ name }}_probe(x, factor_data, out);
-}
-{% else %}
 
 // Run the accelerator on double arrays (converted to the scalar type and back).
 void fgc_run(const double* x, const double* factor_data, double* result, double* errors,
              int* info) {
     convert_inputs(x, factor_data);
     fgc::T err[2];
-    {{ name }}_top(x_in, data, x_out, err, info);
+    lio_top(x_in, data, x_out, err, info);
     for (int i = 0; i < fgc::N_X; ++i) result[i] = static_cast<double>(x_out[i]);
     errors[0] = static_cast<double>(err[0]);
     errors[1] = static_cast<double>(err[1]);
@@ -65,10 +49,9 @@ void fgc_run(const double* x, const double* factor_data, double* result, double*
 void fgc_probe(const double* x, const double* factor_data, double* out) {
     convert_inputs(x, factor_data);
     fgc::T res[2];
-    {{ name }}_probe(x_in, data, res);
+    lio_probe(x_in, data, res);
     out[0] = static_cast<double>(res[0]);
     out[1] = static_cast<double>(res[1]);
 }
-{% endif %}
 
 }  // extern "C"

@@ -1,8 +1,8 @@
 // generated from template native.cpp.jinja by fgc 0.1.0 — do not edit
-// C entry points of the native build (libimu_window.so), called through ctypes by
-// fgc_backends.hls.native. Allocation-free: a scalar type other than double gets its copies of
+// C entry points of the native build (libpose_graph.so), called through ctypes by
+// fgc_backends.native. Allocation-free: a scalar type other than double gets its copies of
 // the arrays in static buffers.
-#include "imu_window.h"
+#include "pose_graph.h"
 
 namespace {
 
@@ -20,10 +20,10 @@ void convert_inputs(const double* x, const double* factor_data) {
 
 extern "C" {
 
-// The structure fingerprint this library was compiled for (design fd441f5c6b50b1c2): the
+// The structure fingerprint this library was compiled for (design 0d2070957d8ae99f): the
 // caller refuses data of another structure before it reaches the kernel.
 const char* fgc_structure() {
-    return "c85ca38da7557b18";
+    return "aec0bf602da30c22";
 }
 
 // Sizes the caller's arrays must have: {N_VARIABLES, N_FACTORS, N_X, N_DATA}.
@@ -39,7 +39,7 @@ void fgc_run(const double* x, const double* factor_data, double* result, double*
              int* info) {
     convert_inputs(x, factor_data);
     fgc::T err[2];
-    imu_window_top(x_in, data, x_out, err, info);
+    pose_graph_top(x_in, data, x_out, err, info);
     for (int i = 0; i < fgc::N_X; ++i) result[i] = static_cast<double>(x_out[i]);
     errors[0] = static_cast<double>(err[0]);
     errors[1] = static_cast<double>(err[1]);
@@ -49,7 +49,7 @@ void fgc_run(const double* x, const double* factor_data, double* result, double*
 void fgc_probe(const double* x, const double* factor_data, double* out) {
     convert_inputs(x, factor_data);
     fgc::T res[2];
-    imu_window_probe(x_in, data, res);
+    pose_graph_probe(x_in, data, res);
     out[0] = static_cast<double>(res[0]);
     out[1] = static_cast<double>(res[1]);
 }

@@ -1,12 +1,12 @@
-"""The native fast path: the emitted C++ built as a shared library and called through ctypes.
+"""The native solver: the emitted CPU program built as a shared library and called through ctypes.
 
-The same kernel object the C simulation links (``make native``) is wrapped by ``native_<name>.cpp``,
-whose ``fgc_run`` calls ``<name>_top`` on the caller's double arrays (converted to the scalar
-type in static buffers when that is not double): the solver allocates nothing. :func:`run` emits
-into a content-addressed folder under fgc's cache directory, builds once and keeps the loaded
-library for later calls.
+The solver (``<name>.cpp``, built by ``make native`` with the host's ISA) is wrapped by
+``native_<name>.cpp``, whose ``fgc_run`` calls ``<name>_top`` on the caller's double arrays
+(converted to the scalar type in static buffers when that is not double): the solver allocates
+nothing. :func:`run` emits into a content-addressed folder under fgc's cache directory, builds
+once and keeps the loaded library for later calls.
 
-    from fgc_backends.hls import native
+    from fgc_backends import native
     result = native.run(program, problem_data(graph, program))
 """
 
@@ -27,12 +27,12 @@ from fgc.cache import cache_dir
 from fgc.datafile import ProblemData, check_structure
 from fgc.errors import DataError
 from fgc.program import Program
-from fgc_backends.hls.build import library_path, make
-from fgc_backends.hls.config import HlsConfig
-from fgc_backends.hls.emitter import HlsProject, emit
 from fgc_backends.hls.names import identifier
 from fgc_backends.hls.results import HlsResult, judge_precision, result_from_arrays
 from fgc_backends.hls.tables import factor_data_words
+from fgc_backends.native.build import make
+from fgc_backends.native.config import NativeConfig
+from fgc_backends.native.emitter import NativeProject, emit
 
 _INTS = np.ctypeslib.ndpointer(dtype=np.int32, flags="C_CONTIGUOUS")
 _LOADED: dict[str, NativeSolver] = {}
@@ -55,7 +55,7 @@ class NativeSolver:
     """A loaded native build of one Program: :meth:`solve` on flat arrays, :meth:`run` on data."""
 
     program: Program
-    project: HlsProject
+    project: NativeProject
     library: ctypes.CDLL
     n_x: int
     n_data: int
@@ -70,8 +70,8 @@ class NativeSolver:
         self._run = self.library.fgc_run
 
     @classmethod
-    def load(cls, program: Program, project: HlsProject) -> NativeSolver:
-        lib = ctypes.CDLL(str(library_path(project)))
+    def load(cls, program: Program, project: NativeProject) -> NativeSolver:
+        lib = ctypes.CDLL(str(project.library))
         lib.fgc_sizes.argtypes = [_INTS]
         lib.fgc_run.argtypes = [ctypes.c_void_p] * 5
         lib.fgc_run.restype = None
@@ -84,7 +84,7 @@ class NativeSolver:
         built = lib.fgc_structure().decode("ascii")
         if (sizes[0], sizes[1]) != (len(program.variables), len(program.factors)) or (
                 built != program.structure_fingerprint):
-            raise DataError(f"{library_path(project)} was built for another structure: "
+            raise DataError(f"{project.library} was built for another structure: "
                             f"structure fingerprint {built}, the Program has "
                             f"{program.structure_fingerprint}")
         return cls(program, project, lib, int(sizes[2]), int(sizes[3]))
@@ -149,42 +149,44 @@ def host_key() -> str:
     return f"{platform.machine()}|{platform.processor()}|{cpu}"
 
 
-def project_key(program: Program, config: HlsConfig) -> str:
+def project_key(program: Program, config: NativeConfig) -> str:
     """Content hash of everything the build depends on (Program, config, templates, fgc, the
     host CPU)."""
     h = hashlib.sha256(program.to_json().encode())
     h.update(repr(config).encode())
     h.update(host_key().encode())
     h.update(fgc.__version__.encode())
-    for template in sorted(HlsConfig.template_dir().glob("*.jinja")):
+    for template in sorted(NativeConfig.template_dir().glob("*.jinja")):
         h.update(template.read_bytes())
-    for module in sorted(Path(__file__).parent.glob("*.py")):
+    # this backend's modules and the C-family helpers it prints with (fgc_backends.hls)
+    backends = Path(__file__).resolve().parent.parent
+    for module in sorted([*(backends / "native").glob("*.py"), *(backends / "hls").glob("*.py")]):
         h.update(module.read_bytes())
     return h.hexdigest()[:24]
 
 
-def default_config(program: Program) -> HlsConfig:
+def default_config(program: Program) -> NativeConfig:
     """The Program's own precision: ``double`` for float64, ``float`` for float32."""
-    return HlsConfig(scalar="double" if program.solver.precision == "float64" else "float")
+    return NativeConfig(scalar="double" if program.solver.precision == "float64" else "float")
 
 
-def load(program: Program, config: HlsConfig | None = None) -> NativeSolver:
+def load(program: Program, config: NativeConfig | None = None) -> NativeSolver:
     """Emit, build and load ``program``'s library, once per content hash: the build lives in
-    ``<fgc cache>/hls/<hash>`` and the loaded library is kept for the process."""
+    ``<fgc cache>/native/<hash>`` and the loaded library is kept for the process."""
     config = config or default_config(program)
     key = project_key(program, config)
     if key not in _LOADED:
-        folder = cache_dir() / "hls" / key
+        folder = cache_dir() / "native" / key
         name = identifier(program.name)
         if (folder / f"lib{name}.so").is_file():
-            project = HlsProject(folder, name, tuple(sorted(folder.iterdir())), config)
+            project = NativeProject(folder, name, tuple(sorted(folder.iterdir())), config)
         else:
             project = _build(program, config, folder)
         _LOADED[key] = NativeSolver.load(program, project)
     return _LOADED[key]
 
 
-def _build(program: Program, config: HlsConfig, folder: Path) -> HlsProject:
+def _build(program: Program, config: NativeConfig, folder: Path) -> NativeProject:
     """Emit and build in a private folder, then move it into place (parallel builds of the same
     Program do not see each other's half-written files)."""
     staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
@@ -196,10 +198,10 @@ def _build(program: Program, config: HlsConfig, folder: Path) -> HlsProject:
     except OSError:  # another process finished first: use its build
         shutil.rmtree(staging, ignore_errors=True)
     files = tuple(folder / p.name for p in project.files)
-    return HlsProject(folder, project.name, files, config)
+    return NativeProject(folder, project.name, files, config)
 
 
-def run(program: Program, data: ProblemData, config: HlsConfig | None = None) -> HlsResult:
+def run(program: Program, data: ProblemData, config: NativeConfig | None = None) -> HlsResult:
     """Solve ``data`` with the native build of ``program`` (default: the Program's precision).
 
     Like the simulator's result: ``values`` are fgc values (Pose3, …) by Program key and

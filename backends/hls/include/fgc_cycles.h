@@ -1,0 +1,236 @@
+// fgc_cycles.h: a C-simulation-only count of the cycles the accelerator plan assigns to the loops
+// the fixed units execute (backends/hls/plan.py: a loop of `trip` iterations at initiation interval
+// `ii` with pipeline depth `depth` takes (trip - 1) * ii + depth cycles, 0 when trip == 0).
+//
+// Every pipelined (or scalar) loop of fgc_qr.h and fgc_cpe.h reports itself once per execution
+// with FGC_CYCLES(process, instance, loop, trip, ii, depth); every entry into a DATAFLOW region
+// reports FGC_REGION(name) first. Unless the testbench build defines FGC_COUNT_CYCLES both macros
+// expand to nothing, so synthesis and the ordinary C simulation never see them.
+//
+// With FGC_COUNT_CYCLES the records are kept in the order they happen (fgc_cycles::log()); a
+// region's processes run one after another in C simulation, so a record belongs to the last region
+// entered, or to no region (region == -1) for the sequential code between regions, which must call
+// FGC_SEQUENTIAL() after a region returns; FGC_DRAINED(streams, n) at a region's end checks that
+// its n local streams were read empty. fgc_cycles::total() applies the plan's arithmetic:
+// sequential records add up; a dataflow region takes its slowest process (the sum of that
+// process's loops) plus the fill (the depth of the first loop that runs) of each other process,
+// as plan_cost does; and no less than the end of a process that waits for another's loop
+// (FGC_WAIT: the QR Evaluate reads the column the Update unit streams it): its first loop ends
+// its depth after that loop, its other loops follow.
+#ifndef FGC_CYCLES_H
+#define FGC_CYCLES_H
+
+#ifdef FGC_COUNT_CYCLES
+
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fgc_cycles {
+
+struct Record {
+    long region;  // index of the DATAFLOW region entry, -1 outside any region
+    std::string region_name;
+    std::string process;
+    int instance;  // unit index (Update unit, CPE), 0 for single processes
+    std::string loop;
+    long trip, ii, depth;
+    // a wait (trip 0): this process's first loop reads the stream of the first loop of
+    // (on_process, on_instance) whose name ends with on_loop, so it ends its depth after it
+    std::string on_process, on_loop;
+    int on_instance;
+    long cycles() const { return trip > 0 ? (trip - 1) * ii + depth : 0; }
+};
+
+struct State {
+    std::vector<Record> records;
+    long regions = 0;
+    long current = -1;
+    std::string current_name;
+};
+
+inline State& state() {
+    static State s;
+    return s;
+}
+
+inline const std::vector<Record>& log() { return state().records; }
+
+inline void reset() { state() = State(); }
+
+inline void region(const char* name) {
+    State& s = state();
+    s.current = s.regions++;
+    s.current_name = name;
+}
+
+inline void sequential() {
+    state().current = -1;
+    state().current_name.clear();
+}
+
+inline void add(const char* process, int instance, const char* loop, long trip, long ii,
+                long depth) {
+    State& s = state();
+    s.records.push_back(Record{s.current, s.current_name, process, instance, loop, trip, ii,
+                               depth, "", "", 0});
+}
+
+inline void wait(const char* process, int instance, const char* on_process, int on_instance,
+                 const char* on_loop) {
+    State& s = state();
+    s.records.push_back(Record{s.current, s.current_name, process, instance, "wait", 0, 1, 0,
+                               on_process, on_loop, on_instance});
+}
+
+inline bool ends_with(const std::string& text, const std::string& tail) {
+    return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(),
+                                                      tail) == 0;
+}
+
+// The plan's arithmetic over the log: see the comment at the top.
+inline long total() {
+    long sum = 0;
+    const std::vector<Record>& r = log();
+    std::size_t i = 0;
+    while (i < r.size()) {
+        if (r[i].region < 0) {
+            sum += r[i].cycles();
+            ++i;
+            continue;
+        }
+        // one region entry: per process (name, instance) its cycles and its first loop's depth
+        // (fill: the depth of the process's first loop that runs)
+        const long id = r[i].region;
+        const std::size_t begin = i;
+        std::map<std::pair<std::string, int>, std::pair<long, long>> procs;
+        std::vector<std::pair<std::string, int>> order;
+        for (; i < r.size() && r[i].region == id; ++i) {
+            const std::pair<std::string, int> key(r[i].process, r[i].instance);
+            if (procs.find(key) == procs.end()) {
+                procs[key] = std::make_pair(0L, -1L);
+                order.push_back(key);
+            }
+            procs[key].first += r[i].cycles();
+            if (procs[key].second < 0 && r[i].trip > 0) procs[key].second = r[i].depth;
+        }
+        long slow = 0, fills = 0;
+        std::size_t slowest = 0;
+        for (std::size_t p = 0; p < order.size(); ++p) {
+            if (procs[order[p]].first > slow) {
+                slow = procs[order[p]].first;
+                slowest = p;
+            }
+        }
+        for (std::size_t p = 0; p < order.size(); ++p)
+            if (p != slowest && procs[order[p]].second > 0) fills += procs[order[p]].second;
+        long region_cycles = slow + fills;
+        // a waiting process ends no earlier than the loop it waits for plus all of its own
+        for (std::size_t w = begin; w < i; ++w) {
+            if (r[w].on_process.empty()) continue;
+            long start = 0;
+            bool found = false;
+            for (std::size_t q = begin; q < i && !found; ++q) {
+                if (r[q].process != r[w].on_process || r[q].instance != r[w].on_instance) continue;
+                start += r[q].cycles();
+                found = ends_with(r[q].loop, r[w].on_loop);
+            }
+            if (!found) continue;
+            // its first loop reads that loop's stream as it comes: it ends its own depth after
+            // it; the rest of the waiting process follows
+            long end = start;
+            bool first = true;
+            for (std::size_t q = begin; q < i; ++q) {
+                if (r[q].process != r[w].process || r[q].instance != r[w].instance) continue;
+                if (r[q].trip <= 0) continue;
+                end += first ? r[q].depth : r[q].cycles();
+                first = false;
+            }
+            region_cycles = end > region_cycles ? end : region_cycles;
+        }
+        sum += region_cycles;
+    }
+    return sum;
+}
+
+// One line per record: region, process, instance, loop, trip, II, depth, cycles.
+inline void dump(std::FILE* out) {
+    for (const Record& x : log())
+        std::fprintf(out, "%ld %s %s %d %s %ld %ld %ld %ld\n", x.region,
+                     x.region < 0 ? "-" : x.region_name.c_str(), x.process.c_str(), x.instance,
+                     x.loop.c_str(), x.trip, x.ii, x.depth, x.cycles());
+}
+
+// A region's streams must be empty when it returns: a word left over (or missing, which the
+// csim stream reports when read) is a producer/consumer count mismatch, a hang in hardware.
+template <class S>
+inline void drained(const S* streams, int n, const char* what) {
+    for (int i = 0; i < n; ++i) {
+        if (!streams[i].empty()) {
+            std::fprintf(stderr, "fgc: %s[%d] holds %zu words after its region\n", what, i,
+                         streams[i].size());
+            std::abort();
+        }
+    }
+}
+
+}  // namespace fgc_cycles
+
+#define FGC_CYCLES(process, instance, loop, trip, ii, depth) \
+    ::fgc_cycles::add(process, instance, loop, trip, ii, depth)
+#define FGC_REGION(name) ::fgc_cycles::region(name)
+#define FGC_SEQUENTIAL() ::fgc_cycles::sequential()
+#define FGC_WAIT(process, instance, on_process, on_instance, on_loop) \
+    ::fgc_cycles::wait(process, instance, on_process, on_instance, on_loop)
+#define FGC_DRAINED(streams, n) ::fgc_cycles::drained(streams, n, #streams)
+
+#else
+
+#define FGC_CYCLES(process, instance, loop, trip, ii, depth) ((void)0)
+#define FGC_REGION(name) ((void)0)
+#define FGC_SEQUENTIAL() ((void)0)
+#define FGC_WAIT(process, instance, on_process, on_instance, on_loop) ((void)0)
+#define FGC_DRAINED(streams, n) ((void)0)
+
+#endif  // FGC_COUNT_CYCLES
+
+// Shared helpers of the units (namespace fgc_units), also without FGC_COUNT_CYCLES.
+namespace fgc_units {
+
+// ceil(a / b) and ceil(log2 a) for the counters' II and depth (constant expressions, C++14)
+constexpr int ceil_div(int a, int b) { return (a + b - 1) / b; }
+constexpr int ceil_log2(int a) { return a <= 1 ? 0 : 1 + ceil_log2((a + 1) / 2); }
+
+// A pipelined dot product of `length` terms with `partials` interleaved partial sums (plan.py's
+// dot_loop): II = ceil(add latency / k), depth = mul + add * (1 + ceil(log2 k)), k = min(length,
+// partials).
+inline int dot_ii(int length, int partials, int add_lat) {
+    const int k = length < partials ? (length < 1 ? 1 : length) : partials;
+    return ceil_div(add_lat, k);
+}
+inline int dot_depth(int length, int partials, int add_lat, int mul_lat) {
+    const int k = length < partials ? (length < 1 ? 1 : length) : partials;
+    return mul_lat + add_lat * (1 + ceil_log2(k));
+}
+
+// Fold P interleaved partial sums in a binary tree (ceil(log2 P) adds deep), a fixed order; the
+// dot products of fgc_qr.h, fgc_cpe.h and fgc_backsub.h end with it.
+template <class T, int P>
+inline T fold_partials(T part[P]) {
+#pragma HLS INLINE
+    for (int step = 1; step < P; step *= 2) {
+#pragma HLS UNROLL
+        for (int i = 0; i + step < P; i += 2 * step) {
+#pragma HLS UNROLL
+            part[i] += part[i + step];
+        }
+    }
+    return part[0];
+}
+
+}  // namespace fgc_units
+
+#endif  // FGC_CYCLES_H

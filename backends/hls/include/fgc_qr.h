@@ -1,0 +1,520 @@
+// fgc_qr.h: one QR unit set of the accelerator (paper A's linear solver): one elimination step's
+// frontal matrix factored by Householder reflections, an Evaluate process building each column's
+// Householder vector and N_UNITS Update processes applying it to their share of the columns.
+//
+// Fixed code, configured by a struct of constants (CFG, see qr_config_example below); the emitted
+// design (the hls-accel part of the backend) assembles each step's rows and calls qr_step<CFG>.
+//
+// ---- interface ------------------------------------------------------------------------------
+//
+//   template <class CFG>
+//   void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+//                int rows, int f, int s,
+//                typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+//                typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
+//                bool* singular);
+//
+// In: the step's stacked rows [A_f | A_s | b] (its factors' whitened rows, its children's update
+// rows and, for Levenberg-Marquardt, the damping rows sqrt(mu) I under the frontal columns: the
+// caller assembles them), `rows` rows of w + 1 = f + s + 1 columns: f frontal columns, s separator
+// columns, the right-hand side last. The work memory is banked N_UNITS ways by column: column c of
+// row i is work[c % N_UNITS][i][c / N_UNITS] (qr_put<CFG> / qr_get<CFG> write and read it, and
+// qr_scatter<CFG> fills the banks from a dense row-major matrix). Every entry of rows 0 ... rows-1,
+// columns 0 ... w must be written (zeros included); the memory is overwritten by the factor.
+// Declare it with `#pragma HLS ARRAY_PARTITION variable=work complete dim=1`: each bank is then
+// its own memory, passed to one Update process (UG1399, partitioned arrays in dataflow).
+//
+// Out (k = min(rows, w + 1) reflections, columns 0 ... k - 1):
+// - cond: the conditional (R | S | d), rows 0 ... f - 1 of the triangular factor, row-major with
+//   w + 1 columns: cond[i * (w + 1) + c]; zero left of the diagonal.
+// - update: the new factor for the parent, nf = max(0, min(rows, w) - f) rows (fgc's
+//   STEP_NF_ROWS) of the separator columns and the right-hand side, s + 1 columns:
+//   update[r * (s + 1) + c] = R[f + r][f + c]; zero left of its diagonal (the kernel's parent
+//   assembly copies whole rows).
+// - *singular: true if k < f or a frontal pivot |R_ii| (i < f) is not above
+//   CFG::SINGULAR_EPS * scale, scale = the largest |R_ic| over rows i < k, columns i ... w (the
+//   kernel's rule); also true, with nothing computed, if rows > MAX_ROWS, w + 1 > MAX_COLS or
+//   f > MAX_F. (k < f: the rows of cond from k on are not written.)
+//
+// ---- arithmetic (the kernel's householder(), kernel.cpp.jinja) --------------------------------
+//
+// For column j = 0 ... k - 1, over the rows i >= j whose entry in column j is non-zero plus the
+// pivot row j (the active rows): the column is divided by its largest magnitude big (|v| <= 1, so
+// v.v neither underflows nor overflows), norm2 = v.v (PARTIALS interleaved partial sums, folded in
+// a binary tree), alpha = -sign(v_0) sqrt(norm2), v_0 -= alpha, tau = 1 / (norm2 - alpha v_0_old);
+// every column c > j gets x -= (tau v.x) v over the active rows; R_jj = alpha big and the active
+// rows below it become 0. A column whose active entries are all 0 is skipped; with one active row
+// (the pivot) the reflection is the pivot row's negation, exactly, and is taken as that. The sums
+// are in a different order than the kernel's (interleaved partial sums instead of one chain per
+// column), so the results equal the kernel's to rounding (~1e-15 relative in double), not bit for
+// bit.
+//
+// ---- structure (UG1399 canonical dataflow) -------------------------------------------------
+//
+// A reflection's next pivot column depends on its Update, so the reflections are a sequential
+// loop in qr_step, one DATAFLOW region (qr_reflection) each, j = -1 ... k - 1. Region j:
+//
+//   qr_broadcast      reads the Householder vector of column j (vbuf, written by region j - 1's
+//                     Evaluate; a function argument read before it is written) and streams it to
+//                     each Update unit (vq[u]), its header (R_jj) to the collector (hq);
+//   qr_update<u>      u = 0 ... N_UNITS - 1 (one process each, through qr_update_units): applies
+//                     reflection j to its own columns c > j, c % N_UNITS == u, in ascending order,
+//                     in its own bank work[u] (read and written by that process only); each
+//                     column's entry in row j, final now, goes to the collector (rowq[u]); the
+//                     unit holding column j + 1 updates it first and streams it (rows j + 1 ...
+//                     rows - 1) to the Evaluate (colq[u]) in the same pass; each unit takes its
+//                     first column's dot product while the vector arrives;
+//   qr_evaluate       builds the Householder vector of column j + 1 from that stream while the
+//                     other columns are still being updated, and writes it to vbuf;
+//   qr_collect        writes row j of R (zeros, R_jj, then the units' entries in column order)
+//                     into cond or update and keeps the running scale (an argument read before
+//                     written).
+//
+// Each stream has one writer and one reader, no process returns a value, no channel goes back;
+// cond, update and the scale have one writer (the collector). Region -1 only streams column 0 to
+// the Evaluate (an empty reflection); region k - 1 only applies the last reflection. After the
+// loop qr_step checks the f pivots against the scale (sequential) and writes *singular: no pass
+// over the factor after the reflections.
+//
+// ---- cycles -------------------------------------------------------------------------------
+//
+// Every pipelined loop states its trip count, II and depth and reports them to FGC_CYCLES
+// (fgc_cycles.h; nothing unless FGC_COUNT_CYCLES is defined). n = active rows of the reflection,
+// m = rows below the pivot, P = CFG::PARTIALS, La / Lm / Ld / Ls = CFG::ADD_LAT / MUL_LAT / DIV_LAT
+// / SQRT_LAT, dot II = ceil(La / min(n, P)), dot depth = Lm + La (1 + ceil(log2 min(n, P))).
+// plan.py's qr_unit_loops prices these loops from the step's structure (tests/test_hls_units.py
+// checks that it equals the count).
+#ifndef FGC_QR_H
+#define FGC_QR_H
+
+#include <cmath>
+
+#include "fgc_cycles.h"
+#include "hls_stream.h"
+
+namespace fgc_units {
+
+// One word of a Householder vector on its way to the Update units: the first word of a vector is
+// {tau, n} (n active rows; n == 0: no reflection), the second {R_jj, j}, then n words {v_a, row}.
+template <class T>
+struct qr_word {
+    T val;
+    int idx;
+};
+
+// An example configuration (the emitted design defines its own with the step tables' maxima and
+// the operator table's latencies; plan.py prices the same constants).
+struct qr_config_example {
+    typedef double T;
+    static const int MAX_ROWS = 24;  // stacked rows of a step, damping rows included
+    static const int MAX_COLS = 13;  // w + 1: frontal + separator columns + right-hand side
+    static const int MAX_F = 6;      // frontal columns
+    static const int N_UNITS = 4;    // Update units (n_u, --units)
+    static const int LOCAL_COLS = ceil_div(MAX_COLS, N_UNITS);  // columns in one bank
+    static const int PARTIALS = 12;  // interleaved partial sums of a dot product (= ADD_LAT: II 1)
+    static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;  // float64 (plan)
+    static constexpr double SINGULAR_EPS = 1e-12;
+};
+
+template <class T>
+inline T qr_abs(T x) {
+    return x < T(0) ? T(-x) : x;
+}
+
+// Fill the banks from a dense row-major [A | b] (rows x cols); the rest of the banks is zeroed.
+template <class CFG>
+void qr_scatter(const typename CFG::T dense[CFG::MAX_ROWS][CFG::MAX_COLS], int rows, int cols,
+                typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
+    typedef typename CFG::T T;
+    for (int i = 0; i < CFG::MAX_ROWS; ++i) {
+        for (int c = 0; c < CFG::N_UNITS * CFG::LOCAL_COLS; ++c) {
+#pragma HLS PIPELINE II=1
+            const bool in = i < rows && c < cols && c < CFG::MAX_COLS;
+            work[c % CFG::N_UNITS][i][c / CFG::N_UNITS] = in ? dense[i][c] : T(0);
+        }
+    }
+}
+
+// Entry (i, c) of the banked matrix, read and written.
+template <class CFG>
+inline typename CFG::T qr_get(
+    const typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int i, int c) {
+#pragma HLS INLINE
+    return work[c % CFG::N_UNITS][i][c / CFG::N_UNITS];
+}
+template <class CFG>
+inline void qr_put(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int i,
+                   int c, typename CFG::T value) {
+#pragma HLS INLINE
+    work[c % CFG::N_UNITS][i][c / CFG::N_UNITS] = value;
+}
+
+// ---- the processes of one reflection ---------------------------------------------------------
+
+// Stream the Householder vector in vbuf to every Update unit, its two header words also to the
+// collector.
+template <class CFG>
+void qr_broadcast(const qr_word<typename CFG::T> vbuf[CFG::MAX_ROWS + 2],
+                  hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
+                  hls::stream<qr_word<typename CFG::T> >& hq) {
+    enum { MAX_WORDS = CFG::MAX_ROWS + 2 };
+    const int words = vbuf[0].idx + 2;
+    // trip n + 2, II 1, depth 2 (read, write)
+    for (int a = 0; a < words; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
+#pragma HLS PIPELINE II=1
+        const qr_word<typename CFG::T> x = vbuf[a];
+        for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+            vq[u].write(x);
+        }
+        if (a < 2) hq.write(x);
+    }
+    FGC_CYCLES("qr_broadcast", 0, "vector", words, 1, 2);
+}
+
+// Update unit U: reflection j on the columns of bank U right of j (cols = w + 1 columns in all);
+// each column's entry in row j, final after reflection j, goes to the collector (rowout); the
+// column j + 1, if it is here and j + 1 < k, goes to the Evaluate after its update (colout).
+template <class CFG, int U>
+void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CFG::T> >& vin,
+               typename CFG::T bank[CFG::MAX_ROWS][CFG::LOCAL_COLS],
+               hls::stream<typename CFG::T>& colout, hls::stream<typename CFG::T>& rowout) {
+    typedef typename CFG::T T;
+    const int P = CFG::PARTIALS;
+    static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
+    T v[CFG::MAX_ROWS];
+    int at[CFG::MAX_ROWS];
+    const qr_word<T> head = vin.read();
+    const qr_word<T> pivot = vin.read();
+    FGC_CYCLES("qr_update", U, "header", 2, 1, 1);
+    const int n = head.idx;
+    const T tau = head.val;
+    // this unit's first column right of j: its dot product runs while the vector arrives
+    const int c0 = j + 1 + ((U - (j + 1)) % CFG::N_UNITS + CFG::N_UNITS) % CFG::N_UNITS;
+    const bool fused = n > 1 && c0 < cols;
+    const int l0 = fused ? c0 / CFG::N_UNITS : 0;
+    T part0[P];
+#pragma HLS ARRAY_PARTITION variable=part0 complete
+    for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+        part0[t] = T(0);
+    }
+    // the vector, and v.x of column c0 with it: trip n, II ceil(La / min(n, P)), depth
+    // Lm + La (1 + ceil(log2 min(n, P))) (the dot's; II 1, depth 1 if there is no dot)
+    for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part0 inter false
+        const qr_word<T> x = vin.read();
+        v[a] = x.val;
+        at[a] = x.idx;
+        if (fused) part0[a % P] += x.val * bank[x.idx][l0];
+    }
+    if (fused) {
+        FGC_CYCLES("qr_update", U, "vector_dot", n, dot_ii(n, P, CFG::ADD_LAT),
+                   dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
+    } else {
+        FGC_CYCLES("qr_update", U, "vector", n, 1, 1);
+    }
+    const T dot0 = fold_partials<T, P>(part0);
+    if (n > 0 && j >= 0 && j % CFG::N_UNITS == U) {  // the pivot column: R_jj, zeros below
+        const int l = j / CFG::N_UNITS;
+        bank[j][l] = pivot.val;  // at[0] == j
+        // trip n - 1, II 1, depth 1
+        for (int a = 1; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+            bank[at[a]][l] = T(0);
+        }
+        FGC_CYCLES("qr_update", U, "pivot_column", n, 1, 1);
+    }
+    for (int l = 0; l < CFG::LOCAL_COLS; ++l) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
+        const int c = l * CFG::N_UNITS + U;
+        if (c <= j || c >= cols) continue;
+        if (n == 1) {
+            // one active row: the reflection is x -> -x on the pivot row, exactly (v = 2 sign,
+            // tau = 1/2: x - (tau v x) v = x - 2x), so it is taken as that: 1 cycle
+            bank[j][l] = -bank[j][l];
+            FGC_CYCLES("qr_update", U, "negate", 1, 1, 1);
+        } else if (n > 1) {
+            T dot = dot0;
+            if (c != c0) {
+                T part[P];
+#pragma HLS ARRAY_PARTITION variable=part complete
+                for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+                    part[t] = T(0);
+                }
+                // dot v.x: trip n, II ceil(La / min(n, P)), depth the dot loop's (see the top)
+                for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part inter false
+                    part[a % P] += v[a] * bank[at[a]][l];
+                }
+                dot = fold_partials<T, P>(part);
+                FGC_CYCLES("qr_update", U, "dot", n, dot_ii(n, P, CFG::ADD_LAT),
+                           dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
+            }
+            const T scaled = tau * dot;  // depth Lm
+            FGC_CYCLES("qr_update", U, "scale", 1, 1, CFG::MUL_LAT);
+            if (c == j + 1 && c < k) {
+                // the next pivot column: updated and streamed to the Evaluate in one pass over
+                // rows j ... rows - 1, the active rows (sorted) merged in:
+                // trip rows - j, II 1, depth Lm + La
+                int a = 0;
+                for (int i = j; i < rows; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+                    T x = bank[i][l];
+                    if (a < n && at[a] == i) {
+                        x -= scaled * v[a];
+                        bank[i][l] = x;
+                        ++a;
+                    }
+                    if (i > j) colout.write(x);
+                }
+                FGC_CYCLES("qr_update", U, "axpy_next_column", rows - j, 1,
+                           CFG::MUL_LAT + CFG::ADD_LAT);
+            } else {
+                // x -= (tau v.x) v: trip n, II 1, depth Lm + La
+                for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+                    bank[at[a]][l] -= scaled * v[a];
+                }
+                FGC_CYCLES("qr_update", U, "axpy", n, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+            }
+        }
+        if (j >= 0) {  // row j is final now: its entry in column c to the collector
+            rowout.write(bank[j][l]);
+            FGC_CYCLES("qr_update", U, "row_out", 1, 1, 1);
+        }
+        if (c == j + 1 && c < k && n <= 1) {
+            // the next pivot column to the Evaluate (no reflection to merge): trip rows - c,
+            // II 1, depth 1
+            for (int i = c; i < rows; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+                colout.write(bank[i][l]);
+            }
+            FGC_CYCLES("qr_update", U, "next_column", rows - c, 1, 1);
+        }
+    }
+}
+
+// The N_UNITS Update processes, U = 0 ... N_UNITS - 1, as separate calls in the region.
+template <class CFG, int U, bool END = (U == CFG::N_UNITS)>
+struct qr_update_units {
+    static void run(int j, int rows, int cols, int k,
+                    hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
+                    typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                    hls::stream<typename CFG::T> colq[CFG::N_UNITS],
+                    hls::stream<typename CFG::T> rowq[CFG::N_UNITS]) {
+#pragma HLS INLINE
+        qr_update<CFG, U>(j, rows, cols, k, vq[U], work[U], colq[U], rowq[U]);
+        qr_update_units<CFG, U + 1>::run(j, rows, cols, k, vq, work, colq, rowq);
+    }
+};
+
+template <class CFG, int U>
+struct qr_update_units<CFG, U, true> {
+    static void run(int, int, int, int, hls::stream<qr_word<typename CFG::T> >*,
+                    typename CFG::T (*)[CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                    hls::stream<typename CFG::T>*, hls::stream<typename CFG::T>*) {
+#pragma HLS INLINE
+    }
+};
+
+// Evaluate: the Householder vector of column j + 1 (if j + 1 < k) from the stream of the unit
+// that holds it, into vbuf ({tau, n}, {R, j + 1}, n words {v_a, row}).
+template <class CFG>
+void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS],
+                 qr_word<typename CFG::T> vbuf[CFG::MAX_ROWS + 2]) {
+    typedef typename CFG::T T;
+    const int P = CFG::PARTIALS;
+    const int col = j + 1;
+    if (col >= k) return;
+    const int owner = col % CFG::N_UNITS;
+    // (it reads the column as the owner streams it: the counters' critical path)
+    FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "next_column");
+    T x[CFG::MAX_ROWS];
+    int at[CFG::MAX_ROWS];
+    int n = 0;
+    T big = T(0);
+    // receive the column, keep the pivot and the non-zero rows, their largest magnitude:
+    // trip rows - col, II 1, depth 2 (read, compare)
+    for (int i = col; i < rows; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+        T e = T(0);
+        for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+            if (u == owner) e = colq[u].read();
+        }
+        if (i == col || e != T(0)) {
+            x[n] = e;
+            at[n] = i;
+            ++n;
+        }
+        const T mag = qr_abs(e);
+        big = mag > big ? mag : big;
+    }
+    FGC_CYCLES("qr_evaluate", 0, "receive", rows - col, 1, 2);
+    if (big == T(0)) {  // nothing to reflect
+        vbuf[0].val = T(0);
+        vbuf[0].idx = 0;
+        vbuf[1].val = T(0);
+        vbuf[1].idx = col;
+        return;
+    }
+    T part[P];
+#pragma HLS ARRAY_PARTITION variable=part complete
+    for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+        part[t] = T(0);
+    }
+    // v = x / big, v.v, and v into vbuf as it comes (v_0 is corrected below):
+    // trip n, II ceil(La / min(n, P)), depth Ld + dot depth
+    for (int a = 0; a < n; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part inter false
+        const T va = x[a] / big;
+        if (a == 0) x[0] = va;
+        vbuf[2 + a].val = va;
+        vbuf[2 + a].idx = at[a];
+        part[a % P] += va * va;
+    }
+    FGC_CYCLES("qr_evaluate", 0, "norm", n, dot_ii(n, P, CFG::ADD_LAT),
+               CFG::DIV_LAT + dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
+    const T norm2 = fold_partials<T, P>(part);
+    const T norm = std::sqrt(norm2);  // of the scaled column: >= 1
+    const T pivot = x[0];             // at[0] is the pivot row col
+    const T alpha = pivot >= T(0) ? T(-norm) : norm;
+    const T tau = T(1) / (norm2 - alpha * pivot);  // 2 / |v|^2, without a second sum
+    // sqrt, alpha * pivot, subtract, divide: depth Ls + Lm + La + Ld
+    FGC_CYCLES("qr_evaluate", 0, "tail", 1, 1,
+               CFG::SQRT_LAT + CFG::MUL_LAT + CFG::ADD_LAT + CFG::DIV_LAT);
+    vbuf[0].val = tau;
+    vbuf[0].idx = n;
+    vbuf[1].val = alpha * big;
+    vbuf[1].idx = col;
+    vbuf[2].val = pivot - alpha;
+}
+
+// The collector: row j of R, final after reflection j (R_jj from the header, the rest from the
+// Update units in column order), into cond (j < f) or update (f <= j < f + nf), and its largest
+// magnitude into the running scale (a function argument read before it is written).
+template <class CFG>
+void qr_collect(int j, int rows, int f, int s, int k, hls::stream<qr_word<typename CFG::T> >& hq,
+                hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
+                typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+                typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale) {
+    typedef typename CFG::T T;
+    const int w = f + s, cols = w + 1;
+    const int last = rows < w ? rows : w;
+    const int nf = last - f > 0 ? last - f : 0;
+    hq.read();  // {tau, n}
+    const T diag = hq.read().val;
+    FGC_CYCLES("qr_collect", 0, "header", 2, 1, 1);
+    if (j < 0 || j >= k) return;
+    T big = *scale;
+    // from the row's first column out (0 in cond, f in update: zeros left of the diagonal, as
+    // the parent's assembly copies whole rows) to the right-hand side:
+    // trip w + 1 - first, II 1, depth 2 (read, compare)
+    const int first = j < f ? 0 : f;
+    for (int c = first; c < cols; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
+#pragma HLS PIPELINE II=1
+        T x = T(0);
+        if (c == j) {
+            x = diag;
+        } else if (c > j) {
+            for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+                if (u == c % CFG::N_UNITS) x = rowq[u].read();
+            }
+        }
+        if (j < f) {
+            cond[j * cols + c] = x;
+        } else if (j - f < nf) {
+            update[(j - f) * (s + 1) + (c - f)] = x;
+        }
+        const T mag = qr_abs(x);
+        big = mag > big ? mag : big;
+    }
+    *scale = big;
+    FGC_CYCLES("qr_collect", 0, "row", cols - first, 1, 2);
+}
+
+// One reflection: the DATAFLOW region (see the top of the file).
+template <class CFG>
+void qr_reflection(int j, int rows, int f, int s, int cols, int k,
+                   qr_word<typename CFG::T> vbuf[CFG::MAX_ROWS + 2],
+                   typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                   typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+                   typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
+                   typename CFG::T* scale) {
+#pragma HLS DATAFLOW
+    enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
+    hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS];
+#pragma HLS STREAM variable=vq depth=V_DEPTH
+    hls::stream<qr_word<typename CFG::T> > hq;
+    hls::stream<typename CFG::T> colq[CFG::N_UNITS];
+#pragma HLS STREAM variable=colq depth=CFG::MAX_ROWS
+    hls::stream<typename CFG::T> rowq[CFG::N_UNITS];
+#pragma HLS STREAM variable=rowq depth=CFG::LOCAL_COLS
+    FGC_REGION("qr_reflection");
+    qr_broadcast<CFG>(vbuf, vq, hq);
+    qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, work, colq, rowq);
+    qr_evaluate<CFG>(j, rows, k, colq, vbuf);
+    qr_collect<CFG>(j, rows, f, s, k, hq, rowq, cond, update, scale);
+    FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
+    FGC_DRAINED(colq, CFG::N_UNITS);
+    FGC_DRAINED(rowq, CFG::N_UNITS);
+    FGC_DRAINED(&hq, 1);
+}
+
+// ---- the step ---------------------------------------------------------------------------------
+
+template <class CFG>
+void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows, int f,
+             int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+             typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular) {
+    typedef typename CFG::T T;
+    const int cols = f + s + 1;
+    if (rows < 0 || f < 0 || s < 0 || rows > CFG::MAX_ROWS || cols > CFG::MAX_COLS ||
+        f > CFG::MAX_F) {
+        *singular = true;  // outside the configuration: nothing is computed
+        return;
+    }
+    const int k = rows < cols ? rows : cols;
+    enum { MAX_REGIONS = CFG::MAX_COLS + 1 };
+    qr_word<T> vbuf[CFG::MAX_ROWS + 2];
+    vbuf[0].val = T(0);  // region -1: an empty reflection
+    vbuf[0].idx = 0;
+    vbuf[1].val = T(0);
+    vbuf[1].idx = -1;
+    T scale = T(0);
+    for (int j = -1; j < k; ++j) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
+        qr_reflection<CFG>(j, rows, f, s, cols, k, vbuf, work, cond, update, &scale);
+        FGC_SEQUENTIAL();
+    }
+    // the pivots against the scale: trip f, II 1, depth 2 (read, compare)
+    bool bad = k < f;
+    for (int i = 0; i < f; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
+#pragma HLS PIPELINE II=1
+        if (i >= k || !(qr_abs(cond[i * cols + i]) > CFG::SINGULAR_EPS * scale)) bad = true;
+    }
+    FGC_CYCLES("qr_step", 0, "pivot_check", f, 1, 2);
+    *singular = bad;
+}
+
+}  // namespace fgc_units
+
+#endif  // FGC_QR_H

@@ -1,0 +1,235 @@
+"""emit: a Program → a native CPU project (solver, header, C entry points, Makefile).
+
+The native backend is a CPU program, not a hardware design: the solver's C++ (``<name>.h``,
+``<name>.cpp``: the top function ``<name>_top`` and ``<name>_probe``) runs on the host, with
+SIMD lanes (GCC vector types) and host-only paths; ``native_<name>.cpp`` gives it C entry points
+for ctypes and the ``Makefile`` builds ``lib<name>.so`` with the host's ISA but no fused
+multiply-add, checking the library for any. There is no testbench and no synthesis script.
+
+Everything a template places is computed here or printed by the C-family printer
+(:mod:`fgc_backends.hls.printer`, shared with the HLS backend for now); user text reaches the
+files only through :mod:`fgc_backends.hls.names`. Limits are checked first, so a Program the
+backend cannot build fails here with a :class:`NativeConfigError`, never in g++.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import jinja2
+
+import fgc
+from fgc.datafile import MAGIC
+from fgc.program import Program
+from fgc_backends.hls.blocks import block_contexts
+from fgc_backends.hls.config import HlsConfigError, ap_types_include
+from fgc_backends.hls.lint import lint_files
+from fgc_backends.hls.names import comment, identifier
+from fgc_backends.hls.printer import HlsCodePrinter
+from fgc_backends.hls.results import REASONS, STATUSES
+from fgc_backends.hls.retract import retract_kinds
+from fgc_backends.hls.sparsity import TILE
+from fgc_backends.hls.special import SERIES_BELOW, coefficient_functions
+from fgc_backends.hls.steps import padded, step_patterns
+from fgc_backends.hls.tables import IntTable, build_tables, factor_data_words
+from fgc_backends.native.config import NativeConfig, NativeConfigError
+
+# template → emitted file name ({name} is the project identifier)
+FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
+         ("native.cpp.jinja", "native_{name}.cpp"), ("Makefile.jinja", "Makefile"))
+HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
+# Xilinx's ap_types headers trip g++'s flow-based warnings once inlined into our code (-isystem
+# cannot silence those); the warnings are theirs, so only these two are relaxed for ap_fixed.
+FIXED_POINT_FLAGS = ("-Wno-uninitialized", "-Wno-maybe-uninitialized")
+MU_MIN = 1e-30  # LM's μ never falls below this (the simulator's MU_MIN): damping stays on
+
+
+@dataclass(frozen=True)
+class NativeProject:
+    """An emitted native project: its folder, identifier and files (template order)."""
+
+    directory: Path
+    name: str
+    files: tuple[Path, ...]
+    config: NativeConfig
+
+    @property
+    def library(self) -> Path:
+        """Where ``make native`` puts the shared library."""
+        return self.directory / f"lib{self.name}.so"
+
+
+_LITERAL = re.compile(r"\(?-?T\([-+0-9.eE]+\)\)?")
+
+
+def is_constant_literal(expr: str) -> bool:
+    """Whether a printed kernel output is a plain constant of T (``T(1)``, ``(-T(1))``): a
+    scalar, not a V, so the kernel stores it as it is."""
+    return _LITERAL.fullmatch(expr) is not None
+
+
+def emit(program: Program, out_dir: str | Path, config: NativeConfig | None = None,
+         name: str | None = None) -> NativeProject:
+    """Write the native project of ``program`` into ``out_dir`` (created if needed).
+
+    ``name`` (default: the Program's name) is sanitised into the project identifier used for
+    file names and the top function ``<name>_top``. Emitting the same Program twice gives
+    byte-identical files. Every file is checked to allocate nothing and use no STL container
+    (:func:`fgc_backends.hls.lint.lint_files`, host rules).
+    """
+    config = for_program(program, config or NativeConfig())
+    config.check()
+    check_limits(program, config)
+    project = identifier(name or program.name)
+    context = _context(program, config, project)
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
+                             undefined=jinja2.StrictUndefined, trim_blocks=True,
+                             lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+    env.tests["constant_literal"] = is_constant_literal
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for template, pattern in FILES:
+        path = out / pattern.format(name=project)
+        path.write_text(env.get_template(template).render(**context, template=template,
+                                                          file_name=path.name))
+        paths.append(path)
+    issues = lint_files([p for p in paths if p.suffix in (".cpp", ".h")], synthesis=False)
+    if issues:
+        listing = "\n".join(str(i) for i in issues[:20])
+        raise NativeConfigError(f"internal error: the native project '{project}' allocates or "
+                                f"uses STL containers:\n{listing}")
+    return NativeProject(out, project, tuple(paths), config)
+
+
+def for_program(program: Program, config: NativeConfig) -> NativeConfig:
+    """``config`` with the linear solver's scalar the Program asks for: a Program compiled with
+    ``linear_precision="float64"`` gets a ``double`` linear solver unless
+    ``config.linear_scalar`` says otherwise."""
+    if config.linear_scalar is None and program.solver.mixed:
+        return dataclasses.replace(config, linear_scalar="double")
+    return config
+
+
+def check_limits(program: Program, config: NativeConfig) -> None:
+    """Raise :class:`NativeConfigError` if ``program`` exceeds what ``config`` can build."""
+    if program.max_variables > config.max_variables:
+        raise NativeConfigError(f"the Program's window of {program.max_variables} variables "
+                                f"exceeds the native backend's maximum of {config.max_variables} "
+                                "(NativeConfig.max_variables)")
+    if len(program.variables) > program.max_variables:
+        raise NativeConfigError(f"{len(program.variables)} variables exceed the compiled "
+                                f"maximum {program.max_variables}")
+    widest = max(s.frontal_dim + s.separator_dim for s in program.schedule.steps)
+    if widest > config.max_step_columns:
+        raise NativeConfigError(f"an elimination step has {widest} columns, more than the "
+                                f"backend's {config.max_step_columns} "
+                                "(NativeConfig.max_step_columns)")
+    if program.schedule.incremental is not None:
+        raise NativeConfigError("the native backend runs batch solves only; compile without "
+                                "incremental_k")
+    if config.is_fixed_point:
+        try:
+            ap_types_include()  # a clear error now rather than a missing header in g++
+        except HlsConfigError as exc:
+            raise NativeConfigError(str(exc)) from None
+
+
+def _epsilon(scalar_cxx: str) -> float:
+    """Machine epsilon of a scalar type given as C++ text (the LSB for fixed point)."""
+    if scalar_cxx == "float":
+        return 2.0 ** -23
+    if scalar_cxx == "double":
+        return 2.0 ** -52
+    width, integer = (int(x) for x in scalar_cxx[9:-1].split(","))
+    return 2.0 ** -(width - integer)
+
+
+def lanes(config: NativeConfig) -> int | None:
+    """Instances per block evaluation: ``config.lanes``; 1 for fixed point; else None, which
+    the emitted code decides at compile time: one vector register of the scalar type, 64 bytes
+    where the build has AVX-512 and 32 otherwise (8 or 4 doubles)."""
+    if config.is_fixed_point:
+        return 1
+    return config.lanes
+
+
+def _solver_context(program: Program, config: NativeConfig, printer: HlsCodePrinter) -> dict:
+    s, eps = program.solver, _epsilon(config.scalar_cxx)
+    lit = printer.literal
+    lm = s.method == "lm"
+    tries = 1
+    if lm:  # μ grows from at least MU_MIN by lambda_factor until it passes the upper bound
+        mu = MU_MIN
+        while mu <= config.lambda_upper_bound:
+            mu, tries = mu * s.lambda_factor, tries + 1
+    return {
+        "lm": lm, "cholesky": s.linear == "cholesky", "max_iterations": int(s.max_iterations),
+        "max_tries": tries, "lambda_initial": lit(s.lambda_initial if lm else 0.0),
+        "lambda_factor": lit(s.lambda_factor), "lambda_upper_bound": lit(config.lambda_upper_bound),
+        "mu_min": lit(MU_MIN), "eps_gradient": lit(s.eps_gradient),
+        "eps_step": lit(max(s.eps_step, 10 * eps)), "tol": lit(s.relative_error_tol),
+        "epsilon": lit(eps), "resolution": lit(16 * eps),
+        "absolute_error_tol": lit(config.absolute_error_tol), "singular_eps": lit(10 * eps),
+        "linear_singular_eps": lit(10 * _epsilon(config.linear_cxx)),
+        "comment": comment(f"{s.method} {s.linear} {s.ordering} n_u={s.units} cpe={s.cpe}"),
+    }
+
+
+def _context(program: Program, config: NativeConfig, project: str) -> dict:
+    printer = HlsCodePrinter({})
+    solver = _solver_context(program, config, printer)
+    tables = build_tables(program, damped=solver["lm"], cholesky=solver["cholesky"])
+    # the steps of a level run in the order of the HLS design's unit sets (one per chain end on
+    # a two-ended chain), so the two builds eliminate in one order and agree bit for bit
+    unit_sets = 2 if program.schedule.ordering == "two-ended" else 1
+    include = [str(ap_types_include())] if config.is_fixed_point else []
+    blocks = block_contexts(program)
+    patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
+                                           solver["cholesky"], solver["lm"])
+    max_ld = padded(tables.constant("MAX_W") + 1)
+    table = {t.name: t.values for t in tables.arrays}
+    # the widest separator of any step: the back-substitution's tiled loop over separator
+    # columns exists only if some separator spans a whole TILE (else g++ -Werror proves the dead
+    # loop would index past xs[MAX_W])
+    max_sep = max(w - f for w, f in zip(table["STEP_W"], table["STEP_F"], strict=True))
+    host_lanes = lanes(config)
+    return {
+        "cpu_program": True,
+        "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
+        "problem_comment": comment(program.name), "data_magic": MAGIC,
+        "structure_fingerprint": program.structure_fingerprint,
+        "design_fingerprint": program.fingerprint,
+        "scalar": config.scalar_cxx, "fixed_point": config.is_fixed_point,
+        "linear_scalar": config.linear_cxx, "mixed": config.mixed,
+        "include_dirs": include,
+        "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
+                                                 * config.is_fixed_point),
+        "host_flags": " ".join(config.host_flags),
+        "fma_check": "-mno-fma" in config.host_flags,
+        "units": max(1, int(program.solver.units)), "cpe": max(1, int(program.solver.cpe)),
+        "unit_sets": unit_sets, "structure_comment": comment(
+            f"{program.schedule.structure_class} graph, {program.schedule.ordering} ordering"),
+        "constants": tables.constants, "sizes": {
+            **dict(tables.constants),
+            "MAX_LEVEL_WIDTH": max(len(level) for level in program.schedule.levels),
+            "MAX_STORAGE": max(v.storage_dim for v in program.variables),
+            "MAX_LD": max_ld, "MAX_SEP": max_sep},
+        "max_variables": program.max_variables,
+        "header_tables": [t for t in tables.arrays if t.name in HEADER_TABLES],
+        "tables": [t for t in tables.arrays if t.name not in HEADER_TABLES]
+        + [IntTable("STEP_PATTERN", step_pattern)] * bool(patterns),
+        "blocks": blocks, "patterns": patterns, "retracts": retract_kinds(program), "tile": TILE,
+        # a generic step whose shape a pattern has is factored by that pattern's fixed routine
+        # (the same operations in the same order, no new unit): the chain ends' steps
+        "fixed_shapes": sorted({(p.w, p.f) for p in patterns if p.ld == max_ld}),
+        "lanes": host_lanes, "laned": host_lanes != 1, "lanes_auto": host_lanes is None,
+        "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
+        "solver": solver, "statuses": STATUSES, "reasons": REASONS,
+        "max_level_width": max(len(level) for level in program.schedule.levels),
+        "max_line_chars": 32 * max([v.storage_dim for v in program.variables] + [
+            factor_data_words(program, b) for b in range(len(program.blocks))]) + 64,
+    }
