@@ -8,10 +8,10 @@ before the window held, the factors across its edge kept linear where they were 
 keyframe (measured 1.8e-7, N = 12: fgc's LM stopping at a 1e-12 relative cost decrease).
 Against ``gtsam.BatchFixedLagSmoother`` (lag W − 1, timestamps = keyframe index) the estimates
 agree to 1e-9 until the first keyframe is marginalised (measured 1e-14) and to 5e-2 after it
-(measured 9.4e-3), a gap whose cause is not established: the same marginal built by hand as a
-LinearContainerFactor (Jacobian A where fgc's prior has A·J) and optimised by GTSAM's LM lands
-9e-5 from fgc and 6e-3 from the smoother, whose LM started from fgc's estimate lowers its window
-cost by only ~1e-5 relative: a shallow valley of a weakly observed problem (biases, velocities).
+(measured 9.4e-3). Not proven, but the evidence points at GTSAM's LM stopping short: its marginal
+LinearContainerFactor is relinearised with Jacobian A, not the derivative A·J of its error, so LM
+stalls along weakly observed directions (velocities, biases); the same window built by hand and
+solved by GTSAM's standard LM lands 9e-5 from fgc, the smoother's own LM loop 6e-3.
 """
 
 from __future__ import annotations
