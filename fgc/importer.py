@@ -1,7 +1,7 @@
 """The GTSAM import: a ``gtsam.NonlinearFactorGraph`` + ``Values`` as an fgc :class:`Graph`.
 
 :func:`from_gtsam` is the inverse of :func:`fgc.verify.to_gtsam` for the factors fgc has built in
-(one of the few places fgc imports gtsam on purpose, DESIGN.md "How it is checked"):
+(one of the few places fgc imports gtsam on purpose, docs/design.md "Verification"):
 
 - ``PriorFactor*`` / ``BetweenFactor*`` on Pose2, Pose3, Rot2, Rot3, Point2, Point3, Vector and
   ConstantBias; ``GPSFactor``; ``BearingRangeFactor2D``;

@@ -1,6 +1,6 @@
 """The GTSAM bridge: an fgc Graph as a ``gtsam.NonlinearFactorGraph`` + ``Values``, and checks.
 
-This is one of the few places fgc imports gtsam on purpose (DESIGN.md, "How it is checked").
+This is one of the few places fgc imports gtsam on purpose (docs/design.md, "Verification").
 Built-in factors become GTSAM's own factor of the same meaning (``BetweenFactorPose3``,
 ``CombinedImuFactor`` re-integrated from the raw IMU samples, ...), so a comparison is between two
 independent implementations. A user-written factor (one GTSAM does not ship) becomes a

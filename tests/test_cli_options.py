@@ -94,7 +94,7 @@ def test_clock_reaches_the_cost_model_and_run_hls_tcl(tmp_path, capsys):
     assert main(["compile", BEACONS, "--backend", "hls", "--out", str(out), "--clock", "200MHz",
                  "--part", "xczu9eg-ffvb1156-2-e", "--scalar", "double", "-q"]) == 0
     tcl = (out / "run_hls.tcl").read_text()
-    assert "create_clock -period 5.0 -name default" in tcl
+    assert "create_clock -period 5 -name default" in tcl
     assert "set_part {xczu9eg-ffvb1156-2-e}" in tcl
     program = json.loads((out / "program.json").read_text())
     assert program["solver"]["clock_mhz"] == 200.0

@@ -1,8 +1,9 @@
 """Golden tests: the examples' emitted projects (every backend) equal the files in tests/golden/.
 
 Each case runs ``fgc compile`` as a user would and compares every emitted source file byte for
-byte with the committed copy (``program.json`` and ``data.txt`` are left out: the first is checked
-by the Program's JSON round trip, the second holds measurements, not generated code). An
+byte with the committed copy (``program.json``, ``data.txt`` and ``reference.txt`` are left out:
+the first is checked by the Program's JSON round trip, the others hold measurements and the
+simulator's numbers, not generated code). An
 intended change of the emitted code is recorded with
 
     python -m pytest tests/test_golden.py --update-golden
@@ -21,7 +22,7 @@ from fgc.cli import main as cli_main
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = Path(__file__).resolve().parent / "golden"
-NOT_CODE = {"program.json", "data.txt"}
+NOT_CODE = {"program.json", "data.txt", "reference.txt"}
 CASES = {
     "lio": ["examples/lio.py", "-p", "N=8"],
     "imu_window": ["examples/imu_window.py", "-p", "N=8", "--linear", "cholesky"],

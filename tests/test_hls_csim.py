@@ -90,8 +90,8 @@ def _run(name: str, case, tmp_path_factory):
     program = compile_graph(graph, solver, name=name)
     project = emit(program, tmp_path_factory.mktemp(name), HlsConfig(scalar=scalar))
     data = problem_data(graph, program)
-    result = run_csim(project, program, data)
     reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)  # the testbench checks it too
     return program, project, data, result, reference
 
 
@@ -178,6 +178,13 @@ def test_fixed_point_builds_and_runs(tmp_path):
         pytest.skip("ap_fixed needs the optional hls4ml package (pip install 'fgc[hls-fixed]')")
     graph = pose_graph.build()
     program = compile_graph(graph, name="w100_fixed")
-    project = emit(program, tmp_path, HlsConfig(scalar="ap_fixed<40,16>"))
-    result = run_csim(project, program, problem_data(graph, program))
-    assert result.final_error < result.initial_error
+    # LM's default damping bound (1e10) does not fit ±32768: refused, never wrapped round
+    with pytest.raises(HlsConfigError, match="LAMBDA_UPPER_BOUND"):
+        emit(program, tmp_path / "default", HlsConfig(scalar="ap_fixed<40,16>"))
+    project = emit(program, tmp_path, HlsConfig(scalar="ap_fixed<40,16>",
+                                                lambda_upper_bound=1e4))
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)  # the testbench's float tolerance
+    pos, rot, vec = pose_errors(program, result.values, reference.storage)
+    assert result.converged and pos <= POS_TOL and rot <= ROT_TOL, (pos, rot)

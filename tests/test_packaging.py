@@ -1,4 +1,4 @@
-"""Packaging: every package directory is installed, under the name DESIGN.md gives it."""
+"""Packaging: every package directory is installed, under the name docs/design.md gives it."""
 
 from __future__ import annotations
 

@@ -12,8 +12,15 @@ import subprocess
 from fgc.datafile import ProblemData, write_data
 from fgc.errors import FgcError
 from fgc.program import Program
+from fgc_backends.hls.config import check_fixed_data
 from fgc_backends.hls.emitter import HlsProject
-from fgc_backends.hls.results import HlsResult, read_result
+from fgc_backends.hls.results import (
+    REFERENCE_FILE,
+    HlsResult,
+    read_result,
+    reference_run,
+    write_reference,
+)
 
 DATA_FILE, RESULT_FILE, BUILD_LOG = "data.txt", "result.txt", "build.log"
 BUILD_TIMEOUT_S = 900
@@ -43,11 +50,25 @@ def make(project: HlsProject, target: str) -> str:
     return done.stdout
 
 
-def run_csim(project: HlsProject, program: Program, data: ProblemData) -> HlsResult:
-    """Write ``data`` as the project's ``data.txt``, build and run the testbench (``make csim``)
-    and return the parsed ``result.txt``, with the host-side float32 verdict
-    (:func:`fgc_backends.hls.results.judge_precision`)."""
+def run_csim(project: HlsProject, program: Program, data: ProblemData,
+             reference=True) -> HlsResult:
+    """Write ``data`` as the project's ``data.txt`` and the simulator's result beside it as
+    ``reference.txt``, build and run the testbench (``make csim``, which fails with
+    :class:`HlsBuildError` if the result differs from the reference) and return the parsed
+    ``result.txt``, with the host-side float32 verdict
+    (:func:`fgc_backends.hls.results.judge_precision`).
+
+    ``reference``: True computes it (:func:`~fgc_backends.hls.results.reference_run`), a
+    simulator result of the same Program and data is used as it is, False writes none (the
+    testbench then says the result is unchecked)."""
+    check_fixed_data(project.config.scalar_cxx, program, data)  # saturation is no answer
     write_data(data, project.directory / DATA_FILE)
+    ref_path = project.directory / REFERENCE_FILE
+    ref_path.unlink(missing_ok=True)
+    if reference is True:
+        reference = reference_run(program, data)
+    if reference is not False and reference is not None:
+        write_reference(ref_path, program, reference)
     result = project.directory / RESULT_FILE
     result.unlink(missing_ok=True)
     make(project, "csim")

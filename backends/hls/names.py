@@ -45,3 +45,40 @@ def comment(text: str) -> str:
     """``text`` reduced to characters that are inert in C++, tcl and Makefile comments."""
     out = re.sub(r"[^A-Za-z0-9 _+.,:=()<>-]", "_", str(text))
     return out[:_MAX_COMMENT]
+
+
+_INT_KEY = re.compile(r"^-?[0-9]{1,18}$")
+_MAX_TOKEN = 48
+
+
+def key_token(key: str) -> str:
+    """A variable key as a token the result files and the testbench's string table may hold:
+    an integer key stays its digits; any other text keeps ``[A-Za-z0-9_.:+-]`` (the rest become
+    ``_``, at most 48 characters) and starts with a letter or ``_`` (else ``k_`` is put in
+    front), so it never reads back as an integer. Not unique by itself: :func:`key_tokens`."""
+    text = str(key)
+    if _INT_KEY.match(text):
+        return text
+    out = re.sub(r"[^A-Za-z0-9_.:+-]", "_", text)[:_MAX_TOKEN]
+    if not out or not (out[0].isalpha() or out[0] == "_"):
+        out = f"k_{out}"[:_MAX_TOKEN]
+    return out
+
+
+def key_tokens(keys) -> tuple[str, ...]:
+    """:func:`key_token` of each of ``keys`` (in order), made unique: a token already taken gets
+    ``~<position>`` appended (``~`` is in no single token, so these cannot collide)."""
+    out, seen = [], set()
+    for position, key in enumerate(keys):
+        token = key_token(key)
+        if token in seen:
+            token = f"{token}~{position}"
+        seen.add(token)
+        out.append(token)
+    return tuple(out)
+
+
+def token_key(token: str, key: str):
+    """The Python key of a variable whose Program key is ``key`` (Program keys are ``str``):
+    an integer key comes back as ``int``, as the graph declared it."""
+    return int(key) if _INT_KEY.match(key) and key_token(key) == token else key

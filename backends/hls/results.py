@@ -2,14 +2,24 @@
 
 The testbench writes (numbers with ``%.17g``, so doubles read back exactly)::
 
-    FGCRESULT 1
+    FGCRESULT 2
     STATUS <converged | max_iterations | failed>
     REASON <why it stopped: the simulator's reason names>
     ITERATIONS <n>
     INITIAL_ERROR <e0>
     FINAL_ERROR <e>
     VARIABLES <n>
-    <storage_dim> <v> ...          one line per variable, Program.variables order
+    <key> <storage_dim> <v> ...    one line per variable, Program.variables order
+
+``<key>`` is the variable's key token (:func:`fgc_backends.hls.names.key_tokens`: an integer key
+as its digits, other keys sanitised), from a table the emitter generates; :func:`read_result`
+checks each against the Program and returns the values under the graph's keys as well
+(``HlsResult.keyed_values``: integer keys as ``int``).
+
+**Reference.** Beside the data file, :func:`write_reference` puts the simulator's float64 result
+for the same Program and data (``reference.txt``; same layout, header ``FGCREFERENCE 1
+<structure fingerprint>``, then ``STATUS``, ``FINAL_ERROR``, ``VARIABLES`` and the keyed lines):
+the testbench compares its own result with it and exits 4 on a mismatch.
 
 Statuses and reasons are the simulator's (``fgc_backends.sim``), by the same names; the C++
 kernel reports them as indices into these tuples.
@@ -37,8 +47,11 @@ from fgc import conditioning
 from fgc.datafile import ProblemData
 from fgc.errors import DataError
 from fgc.program import Program
+from fgc_backends.hls.names import key_tokens, token_key
 
-RESULT_MAGIC = "FGCRESULT 1"
+RESULT_MAGIC = "FGCRESULT 2"
+REFERENCE_MAGIC = "FGCREFERENCE 1"
+REFERENCE_FILE = "reference.txt"
 STATUSES = ("converged", "max_iterations", "failed")
 REASONS = ("gradient", "step", "predicted_decrease", "absolute_error", "relative_decrease",
            "max_iterations", "non_finite", "singular", "cost_increased", "lambda_limit")
@@ -63,6 +76,9 @@ class HlsResult:
     resolution: float | None = None  # ρ at the solution (judge_precision; None: not judged)
     message: str = ""  # why the run failed, in words (empty when it converged)
     warnings: tuple[str, ...] = ()  # texts of the fgc warnings the verdict issued
+    # the storage arrays under the graph's keys, read from a keyed result file (integer keys as
+    # int: fgc.names.token_key); None when the result did not come from a file
+    keyed_values: dict | None = None
 
     @property
     def converged(self) -> bool:
@@ -87,6 +103,8 @@ def read_result(path: str | Path, program: Program, data: ProblemData | None = N
     verdict."""
     path = Path(path)
     lines = path.read_text().splitlines()
+    if not lines or lines[0] != RESULT_MAGIC:
+        raise DataError(f"{path}:1: expected '{RESULT_MAGIC}' (not a result file of this fgc)")
     fields = {}
     for number, key in enumerate(("STATUS", "REASON", "ITERATIONS", "INITIAL_ERROR",
                                   "FINAL_ERROR", "VARIABLES"), start=1):
@@ -94,19 +112,77 @@ def read_result(path: str | Path, program: Program, data: ProblemData | None = N
         if len(parts) != 2 or parts[0] != key:
             raise DataError(f"{path}:{number + 1}: expected '{key} <value>'")
         fields[key] = parts[1]
-    if lines[0] != RESULT_MAGIC or int(fields["VARIABLES"]) != len(program.variables):
-        raise DataError(f"{path}: not a result file of this Program")
-    x = []
-    for line in lines[7:7 + len(program.variables)]:
-        numbers = line.split()
-        x += [float(v) for v in numbers[1:]]
+    if int(fields["VARIABLES"]) != len(program.variables):
+        raise DataError(f"{path}:7: {fields['VARIABLES']} variables, the Program has "
+                        f"{len(program.variables)}: not a result file of this Program")
+    if fields["STATUS"] not in STATUSES or fields["REASON"] not in REASONS:
+        raise DataError(f"{path}: unknown status {fields['STATUS']!r} or reason "
+                        f"{fields['REASON']!r}")
+    x, keyed = _keyed_lines(path, lines, 7, program)
     result = result_from_arrays(program, np.array(x),
                                 (float(fields["INITIAL_ERROR"]), float(fields["FINAL_ERROR"])),
                                 int(fields["ITERATIONS"]), STATUSES.index(fields["STATUS"]),
                                 REASONS.index(fields["REASON"]))
+    result = replace(result, keyed_values=keyed)
     if data is None or scalar is None:
         return result
     return judge_precision(program, data, result, scalar)
+
+
+def _keyed_lines(path: Path, lines: list[str], first: int, program: Program
+                 ) -> tuple[list[float], dict]:
+    """The flat storage and {graph key: array} of the ``<key> <storage_dim> <v> ...`` lines
+    from ``lines[first]`` on; each key token must be the Program's (errors name the line)."""
+    x, keyed = [], {}
+    tokens = key_tokens(v.key for v in program.variables)
+    for i, (v, token) in enumerate(zip(program.variables, tokens, strict=True)):
+        number = first + i
+        parts = lines[number].split() if number < len(lines) else []
+        if len(parts) < 2 or parts[0] != token:
+            raise DataError(f"{path}:{number + 1}: expected the line of variable {token!r}, "
+                            f"found {parts[0] if parts else 'nothing'!r}")
+        try:
+            values = [float(p) for p in parts[2:]]
+            count = int(parts[1])
+        except ValueError:
+            raise DataError(f"{path}:{number + 1}: variable {token!r}: malformed numbers") \
+                from None
+        if count != v.storage_dim or len(values) != count:
+            raise DataError(f"{path}:{number + 1}: variable {token!r} ({v.type_name}) needs "
+                            f"{v.storage_dim} numbers, the line has {len(values)}")
+        x += values
+        keyed[token_key(token, v.key)] = np.array(values, dtype=np.float64)
+    return x, keyed
+
+
+def reference_run(program: Program, data: ProblemData):
+    """The simulator's float64 run of ``program`` on ``data``: the testbench's reference
+    (the simulator defines what the hardware computes; float64 so that a float accelerator is
+    judged against the optimum, not against another float32 rounding)."""
+    from fgc_backends import sim
+
+    return sim.run(program, data, precision="float64")
+
+
+def write_reference(path: str | Path, program: Program, reference) -> Path:
+    """Write ``reference`` (a simulator result of ``program``: ``storage``, ``final_error``,
+    ``status``) as the testbench's reference file; returns the path."""
+    path = Path(path)
+    if reference.status not in STATUSES:
+        raise DataError(f"reference status {reference.status!r} is not one of {STATUSES}")
+    tokens = key_tokens(v.key for v in program.variables)
+    error = float("nan") if reference.final_error is None else float(reference.final_error)
+    out = [f"{REFERENCE_MAGIC} {program.structure_fingerprint}", f"STATUS {reference.status}",
+           f"FINAL_ERROR {error!r}",
+           f"VARIABLES {len(program.variables)}"]
+    for v, token in zip(program.variables, tokens, strict=True):
+        values = np.asarray(reference.storage[v.key], dtype=np.float64).ravel()
+        if values.size != v.storage_dim or not np.all(np.isfinite(values)):
+            raise DataError(f"reference value of variable {v.key!r} is not {v.storage_dim} "
+                            "finite numbers")
+        out.append(" ".join([token, str(v.storage_dim), *(repr(float(x)) for x in values)]))
+    path.write_text("\n".join(out) + "\n")
+    return path
 
 
 def judge_precision(program: Program, data: ProblemData, result: HlsResult,

@@ -3,7 +3,7 @@
     report = estimate(program, iterations=8)           # CostParams() defaults: xc7z045, 143 MHz
     report.latency_ms, report.solve, report.resources, report.power_w, report.to_dict()
 
-The model follows the two papers' units (``papers.md``): a pipelined factor block with two modes,
+The model follows the two papers' units (docs/design.md): a pipelined factor block with two modes,
 partial-QR blocks with one Evaluate and n_u Update units (paper A) or an HGC unit and a cascade of
 #CPE Cholesky process elements (paper B), back-substitution, state update and control. Every
 latency, unit size and resource or power coefficient is a documented field of

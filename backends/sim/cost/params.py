@@ -21,7 +21,7 @@ Sources and assumptions, once (the per-field notes refer to them):
   both. The series is the longer path: 12 terms × (mul + add) in float32 (22 in float64, for the
   D coefficient's Bernoulli series). One rolled Horner loop per unit, so a unit accepts a new
   argument every ``terms`` cycles (``ii``).
-- **[B]** paper B (papers.md): "each CPE adds 6 DSPs"; Vivado power estimates C1 (20 CPEs)
+- **[B]** paper B (docs/design.md): "each CPE adds 6 DSPs"; Vivado power estimates C1 (20 CPEs)
   2.293 W, C2 (40) 2.956 W, C3 (80) 3.759 W.
 - **[fit]** values fitted to paper B's published points (``bench/bench_cost_model.py`` prints
   the fit): the power coefficients (static + one scale on XPE-like per-resource weights).

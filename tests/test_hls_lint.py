@@ -1,0 +1,368 @@
+"""The semantic HLS lint (fgc_backends.hls.lint.semantic_issues): one small synthetic C++ snippet
+per rule that breaks it, and its corrected version that passes; plus the lint on an emitted
+project (strict: every issue raises; legacy kernels: semantic issues are returned)."""
+
+from __future__ import annotations
+
+import pytest
+
+from fgc_backends.hls.lint import SEMANTIC_RULES, semantic_issues
+
+PRODUCER_CONSUMER = """
+#include <hls_stream.h>
+constexpr int N = 8;
+typedef float T;
+void produce(const T in[N], hls::stream<T>& out) {
+    for (int i = 0; i < N; ++i) out.write(in[i]);
+}
+void consume(hls::stream<T>& in, T out[N]) {
+    for (int i = 0; i < N; ++i) out[i] = in.read();
+}
+void scale(hls::stream<T>& in, hls::stream<T>& out) {
+    for (int i = 0; i < N; ++i) out.write(T(2) * in.read());
+}
+"""
+
+# rule -> (bad, good): the bad snippet breaks exactly that rule, the good one is its correction
+CASES = {
+    "dataflow": (PRODUCER_CONSUMER + """
+bool check(hls::stream<T>& in) { return in.read() > T(0); }
+void top(const T in[N], T out[N], int mode) {
+#pragma HLS DATAFLOW
+    hls::stream<T> s;
+    produce(in, s);
+    if (mode) consume(s, out);
+}
+""", PRODUCER_CONSUMER + """
+void top(const T in[N], T out[N]) {
+#pragma HLS DATAFLOW
+    hls::stream<T> s;
+    produce(in, s);
+    consume(s, out);
+}
+"""),
+    "channel": (PRODUCER_CONSUMER + """
+void top(const T in[N], T out[N]) {
+#pragma HLS DATAFLOW
+    hls::stream<T> s;
+    hls::stream<T> t;
+    produce(in, s);
+    scale(s, t);
+    consume(s, out);
+}
+""", PRODUCER_CONSUMER + """
+void top(const T in[N], T out[N]) {
+#pragma HLS DATAFLOW
+    hls::stream<T> s;
+    hls::stream<T> t;
+    produce(in, s);
+    scale(s, t);
+    consume(t, out);
+}
+"""),
+    "pointer": ("""
+constexpr int N = 4;
+const float A[N] = {1, 2, 3, 4};
+const float B[N] = {4, 3, 2, 1};
+float pick(int which, int i) {
+    const float* table = A;
+    if (which) table = B;
+    return table[i];
+}
+""", """
+constexpr int N = 4;
+const float A[N] = {1, 2, 3, 4};
+const float B[N] = {4, 3, 2, 1};
+float pick(int which, int i) {
+    const float* table = A;
+    const float a = table[i];
+    return which ? B[i] : a;
+}
+"""),
+    "function_pointer": ("""
+typedef float T;
+inline T twice(T x) { return T(2) * x; }
+template <T (*F)(T)>
+T apply(T x) { return F(x); }
+T run(T x) { return apply<twice>(x); }
+""", """
+typedef float T;
+inline T twice(T x) { return T(2) * x; }
+T run(T x) { return twice(x); }
+"""),
+    "partition": ("""
+constexpr int W = 32;
+void f(float a[W][W]) {
+#pragma HLS ARRAY_PARTITION variable=a cyclic factor=80 dim=2
+    for (int i = 0; i < W; ++i) a[i][0] = 0;
+}
+""", """
+constexpr int W = 32;
+void f(float a[W][W]) {
+#pragma HLS ARRAY_PARTITION variable=a cyclic factor=16 dim=2
+    for (int i = 0; i < W; ++i) a[i][0] = 0;
+}
+"""),
+    "pipeline": ("""
+constexpr int N = 16;
+void f(float a[N][N], float out[N]) {
+    for (int i = 0; i < N; ++i) {
+#pragma HLS PIPELINE II=1
+        float s = 0;
+        for (int j = 0; j < i; ++j) s += a[i][j];
+        out[i] = s;
+    }
+}
+""", """
+constexpr int N = 16;
+void f(float a[N][N], float out[N]) {
+    for (int i = 0; i < N; ++i) {
+#pragma HLS PIPELINE II=1
+        float s = 0;
+        for (int j = 0; j < N; ++j) s += j < i ? a[i][j] : 0.0f;
+        out[i] = s;
+    }
+}
+"""),
+    "dsp": ("""
+void f(const float a[8], float out[8]) {
+#pragma HLS ALLOCATION operation instances=fmul limit=250
+#pragma HLS ALLOCATION operation instances=fadd limit=100
+    for (int i = 0; i < 8; ++i) out[i] = a[i] * a[i] + a[i];
+}
+""", """
+void f(const float a[8], float out[8]) {
+#pragma HLS ALLOCATION operation instances=fmul limit=200
+#pragma HLS ALLOCATION operation instances=fadd limit=100
+    for (int i = 0; i < 8; ++i) out[i] = a[i] * a[i] + a[i];
+}
+"""),
+    "synthesis_macro": ("""
+float f(float x) {
+#ifndef __SYNTHESIS__
+    return x + 1;
+#else
+    return x;
+#endif
+}
+""", """
+float f(float x) { return x; }  // __SYNTHESIS__ in a comment is not code
+"""),
+}
+
+
+def _rules(text: str) -> set[str]:
+    return {i.rule for i in semantic_issues([("k.cpp", text)], part="xc7z045ffg900-2",
+                                            scalar="float")}
+
+
+def test_every_semantic_rule_has_a_case():
+    assert set(CASES) == set(SEMANTIC_RULES)
+
+
+@pytest.mark.parametrize("rule", sorted(CASES))
+def test_rule_fails_on_the_bad_snippet_and_passes_the_corrected_one(rule):
+    bad, good = CASES[rule]
+    assert _rules(bad) == {rule}
+    assert _rules(good) == set()
+
+
+def test_issues_name_file_line_and_the_offender():
+    bad = CASES["channel"][0]
+    [issue] = semantic_issues([("k.cpp", bad)])
+    assert issue.file == "k.cpp" and issue.rule == "channel"
+    assert issue.line == bad[:bad.index("#pragma HLS DATAFLOW")].count("\n") + 1
+    assert "'s' is read by 2 processes" in issue.message
+    assert "scale (line" in issue.message and "consume (line" in issue.message
+    [dsp] = semantic_issues([("k.cpp", CASES["dsp"][0])], part="xc7z045ffg900-2", scalar="float")
+    assert "imply 950 DSP (fmul 250x3, fadd 100x2)" in dsp.message and "900" in dsp.message
+    pointer = semantic_issues([("k.cpp", CASES["pointer"][0])])
+    assert [i.message for i in pointer] == [
+        "pointer 'table' in 'pick' is reassigned (HLS needs each pointer bound to one object)"]
+
+
+def test_more_dataflow_and_pointer_violations():
+    returns = PRODUCER_CONSUMER + """
+bool count(hls::stream<T>& in, T out[N]) { consume(in, out); return true; }
+void top(const T in[N], T out[N]) {
+#pragma HLS DATAFLOW
+    hls::stream<T> s;
+    bool ok;
+    produce(in, s);
+    ok = count(s, out);
+}
+"""
+    messages = [i.message for i in semantic_issues([("k.cpp", returns)])]
+    assert any("uses a process's return value" in m for m in messages)
+    assert any("process 'count' returns 'bool'" in m for m in messages)
+    looped = PRODUCER_CONSUMER + """
+void top(const T in[N], T out[N], int n) {
+#pragma HLS DATAFLOW
+    hls::stream<T> s[2];
+    for (int u = 0; u < n; ++u) produce(in, s[u]);
+}
+"""
+    assert "not a fully unrolled constant-bound loop" in str(semantic_issues([("k", looped)]))
+    unrolled = PRODUCER_CONSUMER + """
+void top(const T in[N], T out[2][N]) {
+#pragma HLS DATAFLOW
+    hls::stream<T> s[2];
+    for (int u = 0; u < 2; ++u) {
+#pragma HLS UNROLL
+        scale_in(in, s[u]);
+    }
+}
+void scale_in(const T in[N], hls::stream<T>& out) { produce(in, out); }
+"""
+    # 2 processes read `in` (one per unrolled copy): an input read twice is two consumers
+    issues = semantic_issues([("k", unrolled)])
+    assert [i.rule for i in issues] == ["channel"] and "'in' is read by 2" in issues[0].message
+    returned = "const float* row(const float* a, int i) { return a + 4 * i; }\n"
+    assert "returns a pointer" in str(semantic_issues([("k", returned)]))
+    walked = "float sum(const float* a) { float s = 0; for (int i = 0; i < 4; ++i) " \
+             "{ s += *a; ++a; } return s; }\n"
+    assert "pointer 'a' in 'sum' is reassigned" in str(semantic_issues([("k", walked)]))
+    # writing through a pointer or indexing it is not reassigning it
+    through = "void set(float* a) { *a = 1; a[1] = 2; const float* b = a; (void)b; }\n"
+    assert semantic_issues([("k", through)]) == []
+
+
+def test_partition_resolves_constants_across_files():
+    header = "#define MAX_W 32\nconstexpr int TILE = MAX_W / 4;\n"
+    source = """
+void f(float w[TILE][MAX_W]) {
+#pragma HLS ARRAY_PARTITION variable=w cyclic factor=16 dim=1
+#pragma HLS ARRAY_PARTITION variable=w cyclic factor=16 dim=2
+}
+"""
+    [issue] = semantic_issues([("k.h", header), ("k.cpp", source)])
+    assert issue.file == "k.cpp" and issue.line == 3
+    assert "factor 16 exceeds dimension 1 of size 8 ('TILE')" in issue.message
+
+
+def test_emit_lints_the_project_and_strict_mode_refuses_todays_kernel(tmp_path, monkeypatch):
+    import sys
+    from pathlib import Path
+
+    from fgc.compile import compile_graph
+    from fgc_backends.hls import HlsConfig, HlsLintError, emit
+    from fgc_backends.hls import emitter as hls_emitter
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "examples"))
+    import pose_graph
+
+    program = compile_graph(pose_graph.build("pose3example.txt"), name="lint_p3")
+    project = emit(program, tmp_path / "legacy", HlsConfig(scalar="double"))
+    rules = {i.rule for i in project.lint_issues}
+    # the legacy kernel's known violations (issue 18), found by the semantic rules
+    assert {"function_pointer", "pointer", "synthesis_macro"} <= rules
+    assert all(i.file in ("lint_p3.cpp", "lint_p3.h") for i in project.lint_issues)
+    monkeypatch.setattr(hls_emitter, "STRICT_LINT", True)
+    with pytest.raises(HlsLintError, match=r"lint_p3\.cpp:\d+: \[\w+\]"):
+        emit(program, tmp_path / "strict", HlsConfig(scalar="double"))
+
+
+def test_a_global_array_shared_by_two_processes_is_a_channel_with_two_writers():
+    shared = """
+constexpr int N = 8;
+float BUF[N];
+const float TABLE[N] = {0};
+void fill(const float in[N]) { for (int i = 0; i < N; ++i) BUF[i] = in[i] + TABLE[i]; }
+void clear() { for (int i = 0; i < N; ++i) BUF[i] = 0; }
+void top(const float a[N], const float b[N]) {
+#pragma HLS DATAFLOW
+    fill(a);
+    clear();
+}
+"""
+    [issue] = semantic_issues([("k.cpp", shared)])
+    assert issue.rule == "channel" and "'BUF' is written by 2 processes" in issue.message
+    assert "global" in issue.message  # the const TABLE read by one is no channel issue
+    fixed = shared.replace("    clear();\n", "")
+    assert semantic_issues([("k.cpp", fixed)]) == []
+
+
+def test_stream_arrays_and_constant_declarations_in_a_dataflow_region():
+    units = """
+constexpr int N = 8;
+constexpr int U = 2;
+typedef float T;
+void split(const T in[N], hls::stream<T> out[U]) {
+    for (int i = 0; i < N; ++i) out[i % U].write(in[i]);
+}
+void work(hls::stream<T>& in, hls::stream<T>& out) {
+    for (int i = 0; i < N / U; ++i) out.write(in.read());
+}
+void merge(hls::stream<T> in[U], T out[N]) {
+    for (int i = 0; i < N; ++i) out[i] = in[i % U].read();
+}
+void top(const T in[N], T out[N]) {
+#pragma HLS DATAFLOW
+    const int half = N / 2;
+    hls::stream<T> a[U];
+    hls::stream<T> b[U];
+#pragma HLS STREAM variable=a depth=4
+    split(in, a);
+    for (int u = 0; u < U; ++u) {
+#pragma HLS UNROLL
+        work(a[u], b[u]);
+    }
+    merge(b, out);
+}
+"""
+    assert semantic_issues([("k.cpp", units)]) == []
+    # a second reader of the stream array `a` (merge reads it too)
+    twice = units.replace("merge(b, out);", "merge(a, out);")
+    issues = semantic_issues([("k.cpp", twice)])
+    assert [i.rule for i in issues] == ["channel"]
+    assert "'a[u]' is read by 2 processes" in issues[0].message and "merge" in issues[0].message
+    computed = units.replace("const int half = N / 2;", "const int half = in_size(in);")
+    assert "dataflow" in {i.rule for i in semantic_issues([("k.cpp", computed)])}
+
+
+def test_inlined_unit_recursion_enums_and_macros_in_a_dataflow_region():
+    network = """
+#define REGION(name) ((void)0)
+typedef float T;
+constexpr int N = 8;
+struct Cfg { enum { UNITS = 2 }; };
+void split(const T in[N], hls::stream<T> out[Cfg::UNITS]) {
+    for (int i = 0; i < N; ++i) out[i % Cfg::UNITS].write(in[i]);
+}
+void work(hls::stream<T>& in, hls::stream<T>& out) {
+    for (int i = 0; i < N / Cfg::UNITS; ++i) out.write(in.read());
+}
+void merge(hls::stream<T> in[Cfg::UNITS], T out[N]) {
+    for (int i = 0; i < N; ++i) out[i] = in[i % Cfg::UNITS].read();
+}
+template <class CFG, int U, bool END = (U >= CFG::UNITS)>
+struct units {
+    static void run(hls::stream<T> a[CFG::UNITS], hls::stream<T> b[CFG::UNITS]) {
+#pragma HLS INLINE
+        work(a[U], b[U]);
+        units<CFG, U + 1>::run(a, b);
+    }
+};
+template <class CFG, int U>
+struct units<CFG, U, true> {
+    static void run(hls::stream<T>*, hls::stream<T>*) {
+#pragma HLS INLINE
+    }
+};
+void top(const T in[N], T out[N]) {
+#pragma HLS DATAFLOW
+    enum { DEPTH = 4 };
+    hls::stream<T> a[Cfg::UNITS];
+    hls::stream<T> b[Cfg::UNITS];
+#pragma HLS STREAM variable=a depth=DEPTH
+    REGION("top");
+    split(in, a);
+    units<Cfg, 0>::run(a, b);
+    merge(b, out);
+}
+"""
+    assert semantic_issues([("k.h", network)]) == []
+    issues = semantic_issues([("k.h", network.replace("merge(b, out);", "merge(a, out);"))])
+    assert [i.rule for i in issues] == ["channel"]
+    assert "'a[U]' is read by 2 processes" in issues[0].message
+    assert "work (line 19" in issues[0].message and "merge (line 38" in issues[0].message
