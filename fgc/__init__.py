@@ -33,6 +33,14 @@ from fgc.solve import solve, verify  # the functions (see the comment above)
 __version__ = "0.1.0"
 
 
+def stream(graph, window=None, incremental=None, batch_every=None, solver=None):
+    """Feed a chain's keyframes one at a time to the simulator (fixed-lag ``window`` or
+    ``incremental`` K) and yield each keyframe's result (:func:`fgc.streaming.stream`)."""
+    from fgc.streaming import stream as _stream
+
+    return _stream(graph, window, incremental, batch_every, solver)
+
+
 def from_gtsam(graph, values, key_names=None):
     """Convert a ``gtsam.NonlinearFactorGraph`` + ``gtsam.Values`` into an fgc Graph
     (see :func:`fgc.importer.from_gtsam`; gtsam is imported only when this is called)."""
@@ -42,6 +50,7 @@ def from_gtsam(graph, values, key_names=None):
 
 
 __all__ = [
+    "stream",
     "acos",
     "asin",
     "atan",

@@ -15,13 +15,14 @@ import numpy as np
 import pytest
 
 import fgc
+from fgc import oracles
 from fgc.compile import compile_graph
 from fgc.conditioning import IllConditionedWarning
 from fgc.datafile import problem_data
 from fgc.factors import BetweenFactor, PriorFactor
 from fgc.geometry import Point3, Pose2, Rot3
 from fgc.program import SolverConfig
-from fgc.verify import to_gtsam, value_from_gtsam, value_to_gtsam, values_from_gtsam
+from fgc.verify import to_gtsam, value_to_gtsam, values_from_gtsam
 from fgc_backends import sim
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -312,116 +313,14 @@ def test_incremental_imu_window_matches_isam2_and_batch(imu20):
         assert np.linalg.norm(imu20.values[key].local(value)) <= STATE_TOL
 
 
-def _linear_at(ref: Reference, factor, lin):
-    """``factor`` linearised (whitened) at ``lin``, as a factor of the local coordinates
-    s_i = Log(x̄_i⁻¹ x_i): error Σ A_i·s_i − b with Jacobians A_i·∂s_i/∂δ_i — fgc's τ (GTSAM's
-    LinearContainerFactor keeps A_i, which is not the derivative of its error)."""
-    import gtsam
-
-    a, b = factor.linearize(lin).jacobian()
-    keys = list(factor.keys())
-    graph_key = {k: key for key, k in ref.problem.keys.items()}
-    kinds = [ref.graph.variables[graph_key[k]].type.__name__ for k in keys]
-    if not set(kinds) <= {"Pose3", "ImuBias", "Vector3"}:
-        raise NotImplementedError(f"_linear_at: variable types {kinds}")
-
-    def read(kind, values, key):
-        value = _at(values, kind, key)
-        return value.vector() if kind == "ImuBias" else value
-
-    bars = [read(kind, lin, k) for kind, k in zip(kinds, keys, strict=True)]
-    cols = np.cumsum([0] + [6 if kind != "Vector3" else 3 for kind in kinds])
-
-    def error(this, values, jacobians):
-        r = -b
-        for i, (kind, key, bar) in enumerate(zip(kinds, keys, bars, strict=True)):
-            if kind == "Pose3":
-                shift = gtsam.Pose3.Logmap(bar.between(values.atPose3(key)))
-                jac = gtsam.Pose3.LogmapDerivative(shift)
-            else:
-                shift, jac = read(kind, values, key) - bar, np.eye(len(bar))
-            block = a[:, cols[i]:cols[i + 1]]
-            r = r + block @ shift
-            if jacobians is not None:
-                jacobians[i] = block @ jac
-        return r
-
-    return gtsam.CustomFactor(gtsam.noiseModel.Unit.Create(a.shape[0]), keys, error)
-
-
 def isam2_per_keyframe(ref: Reference, clusters, windows, tol: float = 1e-11) -> list[dict]:
-    """ISAM2 (QR, relinearising every variable it may, full back-substitution) keyframe by
-    keyframe; returns the estimate after each keyframe for the variables that have arrived.
-
-    ``windows`` holds per keyframe (first, batch) — fgc's policy — or None — plain ISAM2. With a
-    window, the variables of clusters before ``first`` are held (noRelinKeys) and the factors
-    reaching across into the window are kept linear at the estimate before the keyframe
-    (:func:`_linear_at`), as fgc keeps them inside τ; batch steps hold nothing and restore the
-    nonlinear factors. Each keyframe: update, then update() until no variable moves by ``tol``.
-    """
-    import gtsam
-
-    params = gtsam.ISAM2Params()
-    params.setFactorization("QR")
-    params.setRelinearizeThreshold(0.0)
-    params.relinearizeSkip = 1
-    gauss_newton = gtsam.ISAM2GaussNewtonParams()
-    gauss_newton.setWildfireThreshold(0.0)
-    params.setOptimizationParams(gauss_newton)
-    isam = gtsam.ISAM2(params)
-    cluster_of = {key: c for c, keys in enumerate(clusters) for key in keys}
-    spans = [[cluster_of[str(k)] for k in f.keys] for f in ref.graph.factors]
-    slot, linear, estimates = {}, set(), []
-    for c, keys in enumerate(clusters):
-        first, batch = (0, True) if windows is None else windows[c]
-        factors, values, remove, added = gtsam.NonlinearFactorGraph(), gtsam.Values(), [], []
-        for i, span in enumerate(spans):
-            if max(span) == c:
-                assert batch or min(span) >= first
-                factors.add(ref.problem.graph.at(i))
-                added.append(i)
-            elif i in slot and (not batch and min(span) < first) != (i in linear):
-                remove.append(slot[i])
-                linear.symmetric_difference_update({i})
-                factors.add(_linear_at(ref, ref.problem.graph.at(i), isam.calculateEstimate())
-                            if i in linear else ref.problem.graph.at(i))
-                added.append(i)
-        for key in keys:
-            values.insert(ref.problem.keys[ref.keys[key]],
-                          value_to_gtsam(ref.graph.variables[ref.keys[key]].initial))
-        held = None
-        if not batch:
-            held = gtsam.KeyList()
-            for key in (key for old in clusters[:first] for key in old):
-                held.push_back(ref.problem.keys[ref.keys[key]])
-        result = isam.update(factors, values, remove, None, held, None, False)
-        slot.update(zip(added, result.getNewFactorsIndices(), strict=True))
-        estimate = isam.calculateEstimate()
-        for _ in range(100):
-            isam.update(gtsam.NonlinearFactorGraph(), gtsam.Values(), [], None, held, None,
-                        False)
-            previous, estimate = estimate, isam.calculateEstimate()
-            if np.max(np.abs(previous.localCoordinates(estimate).vector())) < tol:
-                break
-        else:
-            raise AssertionError(f"ISAM2 did not settle at keyframe {c}")
-        variables = [ref.graph.variables[ref.keys[key]] for old in clusters[:c + 1]
-                     for key in old]
-        estimates.append({str(v.key): value_from_gtsam(v.type, _at(
-            estimate, v.type.__name__, ref.problem.keys[v.key])) for v in variables})
-    return estimates
-
-
-def _at(values, kind: str, key: int):
-    """The GTSAM value at ``key`` of an fgc variable of type ``kind``."""
-    return {"Pose3": values.atPose3, "ImuBias": values.atConstantBias}.get(
-        kind, values.atVector)(key)
+    """:func:`fgc.oracles.isam2_per_keyframe` on the reference's graph."""
+    return oracles.isam2_per_keyframe(ref.graph, ref.problem, clusters, windows, tol)
 
 
 def per_step_distance(result: sim.SimResult, estimates: list[dict]) -> list[float]:
     """Per keyframe, the largest tangent-space distance between fgc's and another estimate."""
-    return [max(float(np.linalg.norm(other[k].local(v))) for k, v in update["values"].items())
-            for update, other in zip(result.updates, estimates, strict=True)]
+    return oracles.per_keyframe_distance(result.updates, estimates)
 
 
 def test_incremental_lio_matches_isam2_after_every_keyframe(lio30):

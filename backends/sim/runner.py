@@ -89,18 +89,23 @@ class SimResult:
 
 def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | None = None,
         precision: str | None = None, config: SimConfig | None = None,
-        in_process: bool = True, incremental: bool = False) -> SimResult:
+        in_process: bool = True, incremental: bool = False, window: int | None = None,
+        progress=None) -> SimResult:
     """Emit ``program``'s simulator into ``out_dir`` (a temporary directory if None), run it on
     ``data`` (a ProblemData, written next to it as ``data.txt``, or a data file path) in this
     process (or as a subprocess) and read its result. ``precision`` overrides the Program's;
-    ``incremental`` runs keyframe by keyframe along the Program's incremental plan.
+    ``incremental`` runs keyframe by keyframe along the Program's incremental plan; ``window``
+    keyframe by keyframe in a fixed-lag window of that many keyframes (the oldest marginalised
+    into a prior; a chain Program, no incremental plan needed). ``progress`` (in process only)
+    is called with each keyframe's raw update record as it completes.
 
     Raises DataError when the data does not fit the Program (naming the line and factor), or
     were laid out for another structure (naming both structure fingerprints).
     """
     if out_dir is None:
         with tempfile.TemporaryDirectory(prefix="fgc-sim-") as tmp:
-            return run(program, data, tmp, precision, config, in_process, incremental)
+            return run(program, data, tmp, precision, config, in_process, incremental, window,
+                       progress)
     out = Path(out_dir)
     files = tuple(emit(program, out, config))
     if isinstance(data, ProblemData):
@@ -112,11 +117,12 @@ def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | 
     result_path = out / "result.json"
     if incremental and program.schedule.incremental is None:
         raise FgcError("the Program has no incremental plan (compile with incremental_k)")
+    _check_window(program, incremental, window)
     if in_process:
         raw = _run_in_process(program, files[0], data_path, result_path, precision,
-                              incremental)
+                              incremental, window, progress)
     else:
-        raw = _run_subprocess(files[0], data_path, result_path, precision, incremental)
+        raw = _run_subprocess(files[0], data_path, result_path, precision, incremental, window)
         if raw["status"] == "data_error":
             error = DataError(raw["message"])
             error.factor, error.variable = raw["factor"], raw["variable"]
@@ -191,22 +197,47 @@ def _factor_rows(program: Program, abs_: list[np.ndarray], wanted: set[int] | No
     return out
 
 
+def _check_window(program: Program, incremental: bool, window: int | None) -> None:
+    """A fixed-lag window needs a chain of keyframes and excludes the incremental plan."""
+    if window is None:
+        return
+    if incremental:
+        raise FgcError("choose either the incremental plan or a fixed-lag window, not both")
+    if isinstance(window, bool) or not isinstance(window, int) or window < 1:
+        raise FgcError(f"the fixed-lag window must be a positive number of keyframes, "
+                       f"got {window!r}")
+    if program.schedule.structure_class != "chain":
+        raise FgcError(f"a fixed-lag window needs a chain of keyframes; '{program.name}' is a "
+                       f"{program.schedule.structure_class} graph")
+    cluster_of = {k: c for c, keys in enumerate(program.schedule.clusters) for k in keys}
+    for f in program.factors:
+        spans = [cluster_of[k] for k in f.keys]
+        if max(spans) - min(spans) > window:
+            raise FgcError(f"a factor on {list(f.keys)} spans keyframes {min(spans)} to "
+                           f"{max(spans)}: the oldest is marginalised before the newest arrives "
+                           f"in a window of {window} keyframes")
+
+
 def _run_in_process(program: Program, module: Path, data: Path, result: Path,
-                    precision: str | None, incremental: bool) -> dict:
+                    precision: str | None, incremental: bool, window: int | None = None,
+                    progress=None) -> dict:
     namespace = runpy.run_path(str(module), run_name="fgc_sim_problem")
     try:
-        return namespace["run"](str(data), str(result), precision, incremental)
+        return namespace["run"](str(data), str(result), precision, incremental, window,
+                                progress)
     except namespace["LIB"].runtime.SimDataError as exc:
         raise DataError(_explain(program, exc)) from None
 
 
 def _run_subprocess(module: Path, data: Path, result: Path, precision: str | None,
-                    incremental: bool) -> dict:
+                    incremental: bool, window: int | None = None) -> dict:
     cmd = [sys.executable, str(module), str(data), str(result)]
     if precision:
         cmd += ["--precision", precision]
     if incremental:
         cmd.append("--incremental")
+    if window is not None:
+        cmd += ["--window", str(window)]
     result.unlink(missing_ok=True)
     proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
     if proc.returncode not in (0, 1, 2) or not result.is_file():

@@ -8,6 +8,7 @@ of 5 block types, a chain elimination schedule of 7 steps in
 file (fgc's run-time data format).
 
     python lio_sim.py DATA RESULT.json [--precision float32|float64]
+        [--incremental | --window W]
 """
 
 import argparse
@@ -2778,9 +2779,11 @@ PROBLEM = {
 }
 
 
-def run(data_path, result_path=None, precision=None, incremental=False):
+def run(data_path, result_path=None, precision=None, incremental=False, window=None,
+        progress=None):
     """Solve the problem in ``data_path``; see fgc_sim_optimizer.solve."""
-    return LIB.optimizer.solve(PROBLEM, data_path, result_path, precision, LIB, incremental)
+    return LIB.optimizer.solve(PROBLEM, data_path, result_path, precision, LIB, incremental,
+                               window, progress)
 
 
 def main(argv=None):
@@ -2790,9 +2793,12 @@ def main(argv=None):
     parser.add_argument("--precision", choices=("float32", "float64"), default=None)
     parser.add_argument("--incremental", action="store_true",
                         help="keyframe by keyframe, following the compiled incremental plan")
+    parser.add_argument("--window", type=int, metavar="W",
+                        help="keyframe by keyframe in a fixed-lag window of W keyframes, the "
+                             "keyframe leaving marginalised into a prior on the window")
     args = parser.parse_args(argv)
     try:
-        result = run(args.data, args.result, args.precision, args.incremental)
+        result = run(args.data, args.result, args.precision, args.incremental, args.window)
     except LIB.runtime.SimDataError as exc:
         LIB.optimizer.write_error(args.result, exc)
         print(f"{os.path.basename(__file__)}: error: {exc}", file=sys.stderr)

@@ -17,7 +17,21 @@ window: it is re-expressed at the new x_first to first order (S ← S·J, d ← 
 as a Bayes net holds a conditional on its parent's tangent at the parent's linearisation point.
 This is ISAM2 holding the kept variables (noRelinKeys) with the factors across the window's
 edge kept linear where they were last linearised.
+
+A fixed-lag window of W keyframes (``solve_fixed_lag``) is the same update with a window of the
+newest W + 1 clusters and no batch steps: on arrival of keyframe j the window j − W … j is
+optimised (the newest keyframes and the one about to leave), then eliminated once more; the
+factor τ its oldest cluster passes up is the Schur complement of that cluster's conditional —
+the dense Gaussian marginal prior on cluster j − W + 1, kept linear in the local coordinates at
+the point where it was formed (A·Log(x̄⁻¹x), Jacobian A·J: its linearisation point never moves,
+every other factor of the window is relinearised each iteration). The cluster leaving is
+dropped: its estimate stays where the update left it, no kept conditional is walked back, so an
+update costs the same however long the stream. This is GTSAM's fixed-lag smoothers' order
+(optimise, then marginalise the keys older than the lag; lag W − 1 with timestamps = keyframe
+index).
 """
+
+import time
 
 import numpy
 
@@ -221,10 +235,12 @@ class Chain:
 # --------------------------------------------------------------------------------------------
 
 
-def solve_incremental(problem, opts, optimize):
-    """Run every update of the plan; returns (x, status, reason, per-update records)."""
+def solve_incremental(problem, opts, optimize, progress=None):
+    """Run every update of the plan; returns (x, status, reason, per-update records).
+    ``progress`` (if given) is called with each update's record as soon as it is done."""
     chain, history, status, reason = Chain(problem), [], "converged", ""
     for keyframe, batch, clusters, _ in problem.spec["incremental"]:
+        t0 = time.perf_counter()
         new = [e[r == keyframe] for e, r in zip(chain.entry, chain.reach)]
         first = min([clusters[0]] + [int(n.min()) for n in new if len(n)])
         tau = chain.taus.get(first) if first > 0 else None
@@ -235,20 +251,62 @@ def solve_incremental(problem, opts, optimize):
         _store(chain, window, x)
         _back_substitute(chain, x, first)
         chain.x = x
+        seconds = time.perf_counter() - t0
         history.append({"keyframe": keyframe, "mode": "batch" if batch else "incremental",
                         "first": first, "iterations": it, "status": st, "reason": why,
-                        "cost": float(cost), "values": _snapshot(chain, keyframe)})
+                        "cost": float(cost), "seconds": seconds,
+                        "values": _snapshot(chain, keyframe)})
+        if progress is not None:
+            progress(history[-1])
         if st != "converged" and status == "converged":
             status, reason = st, f"keyframe {keyframe}: {why}"
     return chain.x, status, reason, history
 
 
-def _snapshot(chain, keyframe):
+def solve_fixed_lag(problem, opts, optimize, window, progress=None):
+    """Keyframe by keyframe with a fixed-lag window of ``window`` keyframes (module docstring);
+    returns (x, status, reason, per-update records). Each record's ``values`` holds the window
+    after the update (None elsewhere); x holds every variable, a marginalised one where the
+    last update that held it left it."""
+    if window < 1:
+        raise ValueError(f"the fixed-lag window must be >= 1 keyframe, got {window}")
+    chain, history, status, reason = Chain(problem), [], "converged", ""
+    for keyframe in range(len(chain.clusters)):
+        t0 = time.perf_counter()
+        first = max(0, keyframe - window)
+        for entry, reach in zip(chain.entry, chain.reach):
+            early = entry[reach == keyframe]
+            if len(early) and int(early.min()) < first:
+                raise ValueError(f"keyframe {keyframe}: a factor reaches back to keyframe "
+                                 f"{int(early.min())}, already marginalised by the "
+                                 f"{window}-keyframe window")
+        tau = chain.taus.get(first) if first > 0 else None
+        win = Window(problem, chain, first, keyframe, tau)
+        x, cost, it, _, st, why, _ = optimize(win, opts)
+        _store(chain, win, x)
+        for c in range(first):  # marginalised: nothing of theirs is needed again
+            chain.conds.pop(c, None)
+            chain.taus.pop(c, None)
+        chain.x = x
+        seconds = time.perf_counter() - t0
+        history.append({"keyframe": keyframe, "mode": "fixed-lag", "first": first,
+                        "iterations": it, "status": st, "reason": why, "cost": float(cost),
+                        "seconds": seconds,
+                        "values": _snapshot(chain, keyframe, max(0, keyframe - window + 1))})
+        if progress is not None:
+            progress(history[-1])
+        if st != "converged" and status == "converged":
+            status, reason = st, f"keyframe {keyframe}: {why}"
+    return chain.x, status, reason, history
+
+
+def _snapshot(chain, keyframe, oldest=0):
     """The estimate after an update: each variable's storage, in the problem's variable order,
-    None for the variables of clusters that have not arrived yet."""
+    None for the variables of clusters that have not arrived yet (or are older than cluster
+    ``oldest``)."""
     storage, off = chain.problem.spec["variable_storage"], chain.problem.x_off
     out = [None] * len(storage)
-    for c in range(keyframe + 1):
+    for c in range(oldest, keyframe + 1):
         for v in chain.clusters[c]:
             out[v] = chain.x[off[v]:off[v] + storage[v]].astype(float).tolist()
     return out

@@ -264,22 +264,28 @@ def _step(problem, x, cost, lin, mu, opts, limits):
 # --------------------------------------------------------------------------------------------
 
 
-def solve(spec, data_path, result_path=None, precision=None, lib=None, incremental=False):
-    """Read ``data_path``, optimise (in one batch, or keyframe by keyframe following the
-    compiled incremental plan), write the JSON result to ``result_path`` (if given) and return
-    it as a dict (values: see ``keyed_values``)."""
+def solve(spec, data_path, result_path=None, precision=None, lib=None, incremental=False,
+          window=None, progress=None):
+    """Read ``data_path``, optimise (in one batch, keyframe by keyframe following the compiled
+    incremental plan, or keyframe by keyframe in a fixed-lag ``window`` of keyframes), write the
+    JSON result to ``result_path`` (if given) and return it as a dict (values: see
+    ``keyed_values``). ``progress`` is called with each keyframe's update record as it
+    completes."""
     opts = dict(spec["solver"])
     precision = precision or opts["precision"]
     if incremental and spec["incremental"] is None:
         raise ValueError("this problem was compiled without an incremental plan")
+    if window is not None and (incremental or spec["clusters"] is None):
+        raise ValueError("a fixed-lag window needs a chain of keyframes and no incremental plan")
     t0 = time.perf_counter()
     data = lib.runtime.read_data(data_path, spec["structure"])
     problem = Problem(spec, data, precision, lib)
     t1 = time.perf_counter()
-    x, status, reason, it, mu, log, updates = _optimize_all(problem, opts, incremental)
+    x, status, reason, it, mu, log, updates = _optimize_all(problem, opts, incremental, window,
+                                                            progress)
     t2 = time.perf_counter()
     diagnosis = None  # rank and condition at the solution (batch solves)
-    if not incremental and opts["diagnose"] and reason not in ("singular", "non_finite"):
+    if updates is None and opts["diagnose"] and reason not in ("singular", "non_finite"):
         diagnosis = _diagnose(problem, data, x, opts)
     resolved = None  # float32 (any precision below float64): can it place the state at all?
     if problem.dtype != numpy.float64 and reason not in ("singular", "non_finite"):
@@ -317,13 +323,18 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
     return result
 
 
-def _optimize_all(problem, opts, incremental):
+def _optimize_all(problem, opts, incremental, window=None, progress=None):
     """(x, status, reason, iterations, μ, cost log, incremental updates or None)."""
-    if not incremental:
+    if not incremental and window is None:
         x, _, it, mu, status, reason, log = optimize(problem, opts)
         return x, status, reason, it, mu, log, None
     lib = problem.lib
-    x, status, reason, updates = lib.incremental.solve_incremental(problem, opts, optimize)
+    if window is not None:
+        x, status, reason, updates = lib.incremental.solve_fixed_lag(problem, opts, optimize,
+                                                                     window, progress)
+    else:
+        x, status, reason, updates = lib.incremental.solve_incremental(problem, opts, optimize,
+                                                                       progress)
     log = [float(problem.cost(problem.x0)), float(problem.cost(x))]
     return x, status, reason, sum(u["iterations"] for u in updates), 0.0, log, updates
 

@@ -1,0 +1,139 @@
+"""Streaming benchmark (issue 19, simulator side): per-update time distribution of fgc's
+simulator (fixed-lag window and/or incremental plan) against GTSAM's ISAM2 update and
+IncrementalFixedLagSmoother update on the same LIO keyframe stream, in one process, and each
+trajectory's difference from the batch optimum (GTSAM LM on the whole graph).
+
+    python bench/bench_stream.py --N 400 --window 30 [--incremental 3 --batch-every 5,15,25]
+
+The simulator is NumPy (a functional model of the accelerator, not a fast solver): its wall
+time is not the accelerator's latency, which the cost model does not price per update yet.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "examples"))
+
+
+def _isam2_times(graph, problem, clusters):
+    """One plain ISAM2 update per keyframe (QR, relinearise every variable): wall times and the
+    final estimate."""
+    import gtsam
+
+    from fgc import oracles
+    from fgc.verify import value_to_gtsam, values_from_gtsam
+
+    isam = gtsam.ISAM2(oracles._isam2_params())
+    keys = {str(k): k for k in graph.variables}
+    spans = oracles._cluster_spans(graph, clusters)
+    times, online = [], {}
+    for c, cluster in enumerate(clusters):
+        factors, values = gtsam.NonlinearFactorGraph(), gtsam.Values()
+        for i, span in enumerate(spans):
+            if max(span) == c:
+                factors.add(problem.graph.at(i))
+        for key in cluster:
+            values.insert(problem.keys[keys[key]],
+                          value_to_gtsam(graph.variables[keys[key]].initial))
+        t0 = time.perf_counter()
+        isam.update(factors, values)
+        times.append(time.perf_counter() - t0)
+        newest = [keys[key] for key in cluster]
+        online.update(oracles._read(graph, problem, isam.calculateEstimate(), newest))
+    estimate = values_from_gtsam(graph, problem, isam.calculateEstimate())
+    return times, {str(k): v for k, v in estimate.items()}, online
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--N", type=int, default=400, help="keyframes (lio.py: at most 470)")
+    p.add_argument("--window", type=int, default=30)
+    p.add_argument("--incremental", type=int)
+    p.add_argument("--batch-every", default=None)
+    p.add_argument("--json", help="write the numbers as JSON")
+    args = p.parse_args(argv)
+
+    import lio
+
+    from fgc import oracles, streaming
+    from fgc.datafile import problem_data
+    from fgc.verify import to_gtsam
+
+    graph = lio.build(N=args.N)
+    problem = to_gtsam(graph)
+    t0 = time.perf_counter()
+    optimum = streaming.batch_optimum(graph)
+    rows, out = [], {"N": args.N, "window": args.window,
+                     "batch_lm_seconds": time.perf_counter() - t0}
+    program = streaming.compile_stream(graph, window=args.window)
+    clusters = program.schedule.clusters
+    data = problem_data(graph, program)
+
+    def sim_row(name, prog, window):
+        online, updates = {}, []
+
+        def keep(u):
+            online.update(u.newest(prog))
+            updates.append(u)
+
+        result = streaming.run_stream(prog, data if prog is program else
+                                      problem_data(graph, prog), window, keep)
+        final = {str(k): v for k, v in result.values.items()}
+        acc = streaming.accuracy(graph, final, online, optimum)
+        pricer = streaming.UpdatePricer(graph, prog, window)
+        model = [p["latency_ms"] for p in map(pricer.price, updates) if p]
+        acc["model_ms"] = {"median": float(np.median(model)),
+                           "p99": float(np.percentile(model, 99)), "priced": len(model)}
+        rows.append((name, streaming.timing_summary(u["seconds"] for u in result.updates),
+                     acc))
+
+    sim_row(f"fgc simulator, fixed-lag W={args.window}", program, args.window)
+    if args.incremental:
+        batch = (tuple(int(s) for s in args.batch_every.split(",")) if args.batch_every
+                 and "," in args.batch_every else
+                 (int(args.batch_every) if args.batch_every else None))
+        inc = streaming.compile_stream(graph, incremental=args.incremental, batch_every=batch)
+        sim_row(f"fgc simulator, incremental K={args.incremental} batch {args.batch_every}",
+                inc, None)
+    times, final, online = _isam2_times(graph, problem, clusters)
+    rows.append(("gtsam ISAM2 update (1 per keyframe)", streaming.timing_summary(times),
+                 streaming.accuracy(graph, final, online, optimum)))
+    times = []
+    oracles.fixed_lag_per_keyframe(graph, problem, clusters, args.window, "incremental",
+                                   timings=times, estimates=False)
+    rows.append((f"gtsam IncrementalFixedLagSmoother lag {args.window - 1}",
+                 streaming.timing_summary(times), None))
+    print(f"LIO on KITTI, {args.N} keyframes streamed; batch optimum: GTSAM LM "
+          f"({out['batch_lm_seconds']:.2f} s)")
+    print("update wall time per keyframe; ATE rmse (m, no alignment) against the batch optimum "
+          "of the final trajectory and of the online one (each keyframe's estimate on arrival)")
+    print("model: the accelerator plan's latency of each update (model estimate; "
+          "fgc.streaming.UpdatePricer), median / p99 over the priced updates")
+    print(f"{'':<55} {'median ms':>10} {'p99 ms':>10} {'model ms':>15} {'ATE final':>10} "
+          f"{'ATE online':>11} {'max dist':>9}")
+    for name, t, acc in rows:
+        nan = float("nan")
+        ate = acc["final"]["translation"]["rmse"] if acc else nan
+        ate_online = acc["online"]["translation"]["rmse"] if acc else nan
+        dist = acc["max_state_distance"] if acc else nan
+        m = (acc or {}).get("model_ms")
+        model = f"{m['median']:.3f} / {m['p99']:.3f}" if m else "-"
+        print(f"{name:<55} {t['median_ms']:>10.2f} {t['p99_ms']:>10.2f} {model:>15} "
+              f"{ate:>10.4g} {ate_online:>11.4g} {dist:>9.3g}")
+    out["rows"] = [{"name": n, "time": t, "accuracy": a} for n, t, a in rows]
+    if args.json:
+        Path(args.json).write_text(json.dumps(out, indent=1, default=float) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    np.set_printoptions(precision=4)
+    sys.exit(main())
