@@ -230,19 +230,24 @@ def paper_b(cfg: Config) -> list[Row]:
     rows = []
     lo, hi = cfg.cpes[0], cfg.cpes[-1]
     costs = {(c, h): _cost(prog, cpe=c, hessian_storage=h)
-             for c in cfg.cpes for h in ("dense", "blocked")}
+             for c in cfg.cpes for h in ("frontal", "dense", "blocked")}
     def solve(c, h):
         cost = costs[c, h]
         return f"{cost.latency_ms * iters:.2f} ms" + (
             "" if cost.fits else f" (does not fit: {', '.join(cost.over)})")
 
     rows.append(Row(b, f"solve at #CPE={lo} / {hi}", "171 ms (5) / 8.97 ms (120)",
-                    " / ".join(solve(c, "dense") for c in (lo, hi)) + " dense H; blocked H "
+                    " / ".join(solve(c, "frontal") for c in (lo, hi))
+                    + " emitted (multifrontal: each step's frontal [H | g]); what-if whole-"
+                    "matrix designs: dense H "
+                    + " / ".join(solve(c, "dense") for c in (lo, hi)) + "; blocked H "
                     + " / ".join(solve(c, "blocked") for c in (lo, hi))
                     + f" ({iters} LM iterations, GTSAM's count on this problem)",
-                    "fgc's cascade streams H's whole trailing triangle (or its envelope when "
-                    "blocked) one word a cycle per round; the paper's iteration count and CPE "
-                    "pipeline are not known here"))
+                    "the emitted design streams each elimination step's frontal matrix through "
+                    "the cascade, one word a cycle per round, steps one after another (a step's "
+                    "f pivots < #CPE leave CPEs idle, so many CPEs stop helping); the what-if "
+                    "designs stream H's whole trailing triangle (or its envelope); the paper's "
+                    "iteration count and CPE pipeline are not known here"))
     cpe = build_plan(prog, PlanOptions.of(prog, cpe=lo)).unit("cpe")
     ops = build_plan(prog, PlanOptions.of(prog, cpe=lo)).ops
     per_cpe = sum(n * ops.op(k).dsp for k, n in cpe.operators) + cpe.extra_dsp
