@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import hashlib
 import inspect
-import math
 import sys
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -491,9 +490,3 @@ class Graph:
 
     def __repr__(self) -> str:
         return f"Graph({len(self.variables)} variables, {len(self.factors)} factors)"
-
-
-def finite_or_raise(x: float, what: str) -> float:
-    if not math.isfinite(x):
-        raise DataError(f"{what} is not finite ({x})")
-    return x

@@ -135,12 +135,6 @@ class HlsConfig:
         """The folder of this backend's jinja templates."""
         return Path(__file__).resolve().parent / "templates"
 
-    def printer(self, symbols: dict | None = None):
-        """A C++ printer for this backend's kernels (``symbols``: sympy Symbol → C++ text)."""
-        from fgc_backends.hls.printer import HlsCodePrinter
-
-        return HlsCodePrinter(symbols or {})
-
 
 def check_scalar(text: str) -> str:
     """``text`` if it is a scalar type the backend builds, else :class:`HlsConfigError`:
