@@ -217,3 +217,21 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     # QR: broadcast, the Updates, Evaluate and collect; Cholesky: feed, the CPEs and drain
     per_set = value + 3 if linear == "qr" else value + 2
     assert ran == {region: per_set} and len(procs) == sets * per_set
+
+
+@pytest.mark.parametrize("linear, option", [("qr", {"units": 2}),
+                                            ("qr", {"units": 3, "ordering": "serial"}),
+                                            ("cholesky", {"cpe": 4})])
+def test_cycle_counting_csim_equals_the_model(linear, option):
+    """Issue 18, item 5: the cycles the unit headers count as the C simulation runs (trip × II
+    + depth of every executed loop, regions and side-by-side unit sets as plan_cost combines
+    them) equal the plan's figure for the same solves, within 2 % (the plan adds a fill for
+    each unit set of a level even when it has no step)."""
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import measure
+
+    graph = lio.build(N=6) if linear == "qr" else imu_window.build(N=5)
+    solver = SolverConfig(method="gn", linear=linear, precision="float32", **option)
+    solves, counted, model = measure("t", graph, solver)
+    assert solves >= 1 and model > 0
+    assert abs(counted / model - 1) <= 0.02, (counted, model)

@@ -121,11 +121,13 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     assert phases["state_update"] == 174
     # LM decision: div 28 + 2 mul + 2 add + compare 2 = 68
     assert phases["lm_control"] == 68
-    # back-substitution: each Pose2 row is bounded by the chain mul + mul + add = 27 cycles
-    # (rows need at most 5 stream cycles); a step is 3 rows = 81; the first level has one
-    # step; the second two, one after the other (the emitted back_substitute is sequential)
+    # back-substitution (fgc_backsub.h's loops): the root step (f 3, s 0): reciprocals
+    # 2 + div 28 = 30, then per column last first a multiply 8 and the column above it
+    # (trip r, mul + add 19 deep): 8 + (1 + 19) + 8 + 19 + 8 = 63 -> 93. The second level has
+    # two steps (f 3, s 3), one after the other: each row's separator dot product of 3 terms
+    # at II ceil(11 / 3) = 4, depth 8 + 11 (1 + 2) + 11 = 52: 60 a row, 180 -> 273 a step
     assert plan.options.units == 2
-    assert phases["backsub_level0"] == 81 and phases["backsub_level1"] == 162
+    assert phases["backsub_level0"] == 93 and phases["backsub_level1"] == 2 * 273
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub_")))

@@ -516,19 +516,38 @@ def _qr(program, opts, ops, units, memories, channels, phases):
     _solver_memories(sizes, ops, memories)
 
 
+def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
+                  name: str = "bs") -> list[Loop]:
+    """The loops of ``cond_backsub`` (backends/hls/include/fgc_backsub.h) on one conditional of
+    f frontal and s separator columns, as its csim counters count them: per row the separator's
+    dot product (trip s, PARTIALS = the add latency interleaved sums, + one subtract), the f
+    reciprocals of the diagonal, then column by column (last first) one multiply and the
+    column above the pivot (trip r, II 1, multiply-add deep)."""
+    la, lm = ops.add.latency, ops.mul.latency
+    loops = []
+    for i in range(frontal):
+        if separator:
+            dot = dot_loop(f"{name}_sep{i}", separator, ops, partials=la)
+            loops.append(Loop(dot.name, dot.trip, dot.ii, dot.depth + la))
+    if frontal:
+        loops.append(Loop(f"{name}_reciprocals", frontal, 1, ops.div.latency))
+    for r in range(frontal - 1, -1, -1):
+        loops.append(Loop(f"{name}_solve{r}", 1, 1, lm))
+        if r:
+            loops.append(Loop(f"{name}_column{r}", r, 1, lm + la))
+    return loops
+
+
 def _backsub_phases(program, ops, phases, unit) -> None:
-    """The emitted back_substitute: one cond_backsub per step, root first, one after another;
-    each row bounded by its multiply-multiply-add chain or its stream of separator products."""
+    """The emitted back_substitute: one cond_backsub per step, root first, one after another
+    (:func:`backsub_loops`)."""
     sched = program.schedule
-    chain = 2 * ops.mul.latency + ops.add.latency
     for li, level in enumerate(sched.back_substitution):
         procs = []
         for i in level:
             st = sched.steps[i]
-            loops = [Loop(f"bs{i}_row{t}", 1, 1, max(d - t - 1 + p, chain))
-                     for d, p in zip(st.frontal_dims, st.parent_dims, strict=True)
-                     for t in range(d)]
-            procs.append(Process(f"backsub_step{i}", unit, tuple(loops)))
+            procs.append(Process(f"backsub_step{i}", unit, tuple(
+                backsub_loops(st.frontal_dim, st.separator_dim, ops, name=f"bs{i}"))))
         phases.append(Phase(f"backsub_level{li}", False, tuple(procs), linear=True))
 
 

@@ -47,6 +47,9 @@ struct Record {
 
 struct State {
     std::vector<Record> records;
+    // parallel groups (FGC_BRANCH / FGC_JOIN): (record index, 'b' a branch starts, 'j' the
+    // group ends); the processes of an enclosing DATAFLOW region that run side by side
+    std::vector<std::pair<std::size_t, char> > marks;
     long regions = 0;
     long current = -1;
     std::string current_name;
@@ -66,6 +69,9 @@ inline void region(const char* name) {
     s.current = s.regions++;
     s.current_name = name;
 }
+
+inline void branch() { state().marks.push_back(std::make_pair(state().records.size(), 'b')); }
+inline void join() { state().marks.push_back(std::make_pair(state().records.size(), 'j')); }
 
 inline void sequential() {
     state().current = -1;
@@ -91,12 +97,12 @@ inline bool ends_with(const std::string& text, const std::string& tail) {
                                                       tail) == 0;
 }
 
-// The plan's arithmetic over the log: see the comment at the top.
-inline long total() {
+// The plan's arithmetic over records [from, to) of the log: see the comment at the top.
+inline long total_range(std::size_t from, std::size_t to) {
     long sum = 0;
     const std::vector<Record>& r = log();
-    std::size_t i = 0;
-    while (i < r.size()) {
+    std::size_t i = from;
+    while (i < to) {
         if (r[i].region < 0) {
             sum += r[i].cycles();
             ++i;
@@ -108,7 +114,7 @@ inline long total() {
         const std::size_t begin = i;
         std::map<std::pair<std::string, int>, std::pair<long, long>> procs;
         std::vector<std::pair<std::string, int>> order;
-        for (; i < r.size() && r[i].region == id; ++i) {
+        for (; i < to && r[i].region == id; ++i) {
             const std::pair<std::string, int> key(r[i].process, r[i].instance);
             if (procs.find(key) == procs.end()) {
                 procs[key] = std::make_pair(0L, -1L);
@@ -156,6 +162,52 @@ inline long total() {
     return sum;
 }
 
+// The whole log: sequential stretches add up; a parallel group (branches marked by FGC_BRANCH
+// up to FGC_JOIN, e.g. the unit sets of one QR level) takes its slowest branch plus the fill
+// (first loop's depth) of each other branch, as plan_cost prices a dataflow phase.
+inline long total() {
+    const State& s = state();
+    const std::vector<Record>& r = s.records;
+    long sum = 0, slow = 0, slow_fill = 0, fills = 0;
+    std::size_t at = 0, start = 0;
+    bool open = false;
+    auto close_branch = [&](std::size_t end) {
+        const long c = total_range(start, end);
+        long f = 0;
+        for (std::size_t q = start; q < end; ++q) {
+            if (r[q].trip > 0) {
+                f = r[q].depth;
+                break;
+            }
+        }
+        if (c > slow) {
+            fills += slow_fill;
+            slow = c;
+            slow_fill = f;
+        } else {
+            fills += f;
+        }
+    };
+    for (const auto& m : s.marks) {
+        if (m.second == 'b') {
+            if (!open) {
+                sum += total_range(at, m.first);
+                open = true;
+                slow = slow_fill = fills = 0;
+            } else {
+                close_branch(m.first);
+            }
+            start = m.first;
+        } else if (open) {
+            close_branch(m.first);
+            sum += slow + fills;
+            open = false;
+            at = m.first;
+        }
+    }
+    return sum + total_range(at, r.size());
+}
+
 // One line per record: region, process, instance, loop, trip, II, depth, cycles.
 inline void dump(std::FILE* out) {
     for (const Record& x : log())
@@ -183,6 +235,8 @@ inline void drained(const S* streams, int n, const char* what) {
     ::fgc_cycles::add(process, instance, loop, trip, ii, depth)
 #define FGC_REGION(name) ::fgc_cycles::region(name)
 #define FGC_SEQUENTIAL() ::fgc_cycles::sequential()
+#define FGC_BRANCH() ::fgc_cycles::branch()
+#define FGC_JOIN() ::fgc_cycles::join()
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) \
     ::fgc_cycles::wait(process, instance, on_process, on_instance, on_loop)
 #define FGC_DRAINED(streams, n) ::fgc_cycles::drained(streams, n, #streams)
@@ -192,6 +246,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_CYCLES(process, instance, loop, trip, ii, depth) ((void)0)
 #define FGC_REGION(name) ((void)0)
 #define FGC_SEQUENTIAL() ((void)0)
+#define FGC_BRANCH() ((void)0)
+#define FGC_JOIN() ((void)0)
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) ((void)0)
 #define FGC_DRAINED(streams, n) ((void)0)
 

@@ -3277,6 +3277,7 @@ void qr_set0(int rows, int f, int s, L work[N_UNITS][MAX_ROWS][LOCAL_COLS],
              L cond[MAX_F * LesConfig::MAX_COLS], L update[LesConfig::MAX_COLS * LesConfig::MAX_COLS],
              bool* singular) {
 #pragma HLS ARRAY_PARTITION variable=work complete dim=1
+    FGC_BRANCH();  // csim cycle counting only: the unit sets of a level run side by side
     fgc_units::qr_step<LesConfig>(work, rows, f, s, cond, update, singular);
 }
 
@@ -3285,6 +3286,7 @@ void qr_set1(int rows, int f, int s, L work[N_UNITS][MAX_ROWS][LOCAL_COLS],
              L cond[MAX_F * LesConfig::MAX_COLS], L update[LesConfig::MAX_COLS * LesConfig::MAX_COLS],
              bool* singular) {
 #pragma HLS ARRAY_PARTITION variable=work complete dim=1
+    FGC_BRANCH();  // csim cycle counting only: the unit sets of a level run side by side
     fgc_units::qr_step<LesConfig>(work, rows, f, s, cond, update, singular);
 }
 
@@ -3389,6 +3391,7 @@ bool eliminate_all(T mu) {
                      has0 ? STEP_W[s0] - STEP_F[s0] : 0, WORK0, CONDBUF0, UPDBUF0, &bad0,
                      has1 ? STEP_ROWS[s1] : 0, has1 ? STEP_F[s1] : 0,
                      has1 ? STEP_W[s1] - STEP_F[s1] : 0, WORK1, CONDBUF1, UPDBUF1, &bad1);
+            FGC_JOIN();
             if (has0) {
                 ok = ok && !bad0;
                 commit(s0, CONDBUF0, UPDBUF0);

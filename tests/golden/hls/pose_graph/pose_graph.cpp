@@ -1392,6 +1392,7 @@ void qr_set0(int rows, int f, int s, L work[N_UNITS][MAX_ROWS][LOCAL_COLS],
              L cond[MAX_F * LesConfig::MAX_COLS], L update[LesConfig::MAX_COLS * LesConfig::MAX_COLS],
              bool* singular) {
 #pragma HLS ARRAY_PARTITION variable=work complete dim=1
+    FGC_BRANCH();  // csim cycle counting only: the unit sets of a level run side by side
     fgc_units::qr_step<LesConfig>(work, rows, f, s, cond, update, singular);
 }
 
@@ -1485,6 +1486,7 @@ bool eliminate_all(T mu) {
             bool bad0 = false;
             qr_level(has0 ? STEP_ROWS[s0] : 0, has0 ? STEP_F[s0] : 0,
                      has0 ? STEP_W[s0] - STEP_F[s0] : 0, WORK0, CONDBUF0, UPDBUF0, &bad0);
+            FGC_JOIN();
             if (has0) {
                 ok = ok && !bad0;
                 commit(s0, CONDBUF0, UPDBUF0);
