@@ -50,19 +50,28 @@ struct Dump {
 COUNTED = ("qr_level", "backsub_level", "cholesky")
 
 
+def counting_run(project, graph, program, main: str) -> str:
+    """Build ``project``'s testbench with the unit headers' counters on (-DFGC_COUNT_CYCLES)
+    and ``main`` (C++ whose static object reads fgc_cycles at exit), run it on ``graph``'s data
+    and return what it printed."""
+    folder = project.directory
+    write_data(problem_data(graph, program), folder / "data.txt")
+    (folder / "count_main.cpp").write_text(main)
+    subprocess.run(["g++", "-std=c++17", "-O1", "-DFGC_COUNT_CYCLES", "-Wno-unknown-pragmas",
+                    "-I", "csim_include", "-I", "include", f"tb_{project.name}.cpp",
+                    f"{project.name}.cpp", "count_main.cpp", "-o", "tb_count"], cwd=folder,
+                   check=True)
+    return subprocess.run(["./tb_count", "data.txt", "result.txt"], cwd=folder, check=True,
+                          capture_output=True, text=True).stdout
+
+
 def measure(name, graph, solver):
     program = compile_graph(graph, solver, name="cyc")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # designs over the part's DSP still simulate
         folder = Path(tempfile.mkdtemp(prefix="fgc-cycles-"))
         project = emit(program, folder, HlsConfig(scalar="float"))
-    write_data(problem_data(graph, program), folder / "data.txt")
-    (folder / "count_main.cpp").write_text(COUNT_MAIN)
-    subprocess.run(["g++", "-std=c++17", "-O1", "-DFGC_COUNT_CYCLES", "-Wno-unknown-pragmas",
-                    "-I", "csim_include", "-I", "include", "tb_cyc.cpp", "cyc.cpp",
-                    "count_main.cpp", "-o", "tb_count"], cwd=folder, check=True)
-    out = subprocess.run(["./tb_count", "data.txt", "result.txt"], cwd=folder, check=True,
-                         capture_output=True, text=True).stdout
+    out = counting_run(project, graph, program, COUNT_MAIN)
     line = next(x for x in out.splitlines() if x.startswith("total "))
     total = int(line.split()[1])
     # Gauss-Newton: one linear solve an iteration; the run's iterations from its result file

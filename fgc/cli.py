@@ -240,16 +240,22 @@ def derive_with_progress(graph: Graph, show: bool) -> int:
     return len(cold)
 
 
-def _compile(args, precision_default: str):
-    from fgc.compile import compile_graph
-    from fgc.datafile import problem_data
-
+def _load(args, precision_default: str):
+    """The spec's graph (derivations done, with progress) and its solver configuration, timed
+    in the returned stages."""
     stages = _Stages(args)
     graph = load_spec(args.spec, parse_params(args.param))
     stages.done("load spec")
     if derive_with_progress(graph, _show_progress(args)):
         stages.done("derive (cold)")
-    config = solver_config(args, _precision_default(args, precision_default))
+    return stages, graph, solver_config(args, _precision_default(args, precision_default))
+
+
+def _compile(args, precision_default: str):
+    from fgc.compile import compile_graph
+    from fgc.datafile import problem_data
+
+    stages, graph, config = _load(args, precision_default)
     try:
         program = compile_graph(graph, config, name=_name(args.spec))
     except ValueError as exc:
@@ -483,12 +489,7 @@ def _stream_setup(args, precision_default: str):
     from fgc.datafile import problem_data
     from fgc.streaming import compile_stream
 
-    stages = _Stages(args)
-    graph = load_spec(args.spec, parse_params(args.param))
-    stages.done("load spec")
-    if derive_with_progress(graph, _show_progress(args)):
-        stages.done("derive (cold)")
-    config = solver_config(args, _precision_default(args, precision_default))
+    stages, graph, config = _load(args, precision_default)
     program = compile_stream(graph, config, window=getattr(args, "window", None),
                              name=_name(args.spec))
     stages.done("compile")

@@ -14,7 +14,6 @@ Tolerances:
 from __future__ import annotations
 
 import re
-import subprocess
 import sys
 from pathlib import Path
 
@@ -24,7 +23,7 @@ import pytest
 import fgc
 from fgc import noise
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data, write_data
+from fgc.datafile import problem_data
 from fgc.factors import BetweenFactor, PriorFactor
 from fgc.geometry import Pose3
 from fgc.program import SolverConfig
@@ -202,14 +201,11 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     from fgc_backends.hls.plan import process_network
     graph = lio.build(N=6) if linear == "qr" else pose_graph.build()
     program = compile_graph(graph, SolverConfig(linear=linear, **{option: value}), name="net")
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import counting_run
+
     project = emit(program, tmp_path, HlsConfig(scalar="double"))
-    write_data(problem_data(graph, program), tmp_path / "data.txt")
-    (tmp_path / "count_main.cpp").write_text(COUNT_MAIN)
-    subprocess.run(["g++", "-std=c++17", "-O1", "-DFGC_COUNT_CYCLES", "-Wno-unknown-pragmas",
-                    "-I", "csim_include", "-I", "include", "tb_net.cpp", "net.cpp",
-                    "count_main.cpp", "-o", "tb_count"], cwd=tmp_path, check=True)
-    out = subprocess.run(["./tb_count", "data.txt", "result.txt"], cwd=tmp_path, check=True,
-                         capture_output=True, text=True).stdout
+    out = counting_run(project, graph, program, COUNT_MAIN)
     ran = dict((r, int(n)) for _, r, n in re.findall(r"^(region) (\w+) (\d+)$", out, re.M))
     procs, _ = process_network(accel_plan(program, project.config))
     region = "qr_reflection" if linear == "qr" else "cpe_round"
