@@ -42,8 +42,8 @@ sys.path.insert(0, str(ROOT / "examples"))
 import lio  # noqa: E402
 
 from fgc.compile import compile_graph  # noqa: E402
-from fgc.datafile import problem_data  # noqa: E402
-from fgc.program import SolverConfig  # noqa: E402
+from fgc.ir.datafile import problem_data  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
 
 try:
     from fgc_backends import native  # noqa: E402

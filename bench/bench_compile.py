@@ -29,7 +29,7 @@ sys.path.insert(0, {examples!r})
 import lio
 from fgc import compile as stages
 from fgc.compile import compile_graph
-from fgc.verify import to_gtsam
+from fgc.interop.to_gtsam import to_gtsam
 
 cpu = {{}}
 

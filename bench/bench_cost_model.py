@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from fgc.compile import compile_graph
-from fgc.program import Program, SolverConfig
+from fgc.ir.program import Program, SolverConfig
 from fgc_backends.sim.cost import CostParams, CostReport, describe, estimate
 from fgc_backends.sim.cost import calibration as cal
 

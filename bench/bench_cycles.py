@@ -29,8 +29,8 @@ import imu_window  # noqa: E402
 import lio  # noqa: E402
 
 from fgc.compile import compile_graph  # noqa: E402
-from fgc.datafile import problem_data, write_data  # noqa: E402
-from fgc.program import SolverConfig  # noqa: E402
+from fgc.ir.datafile import problem_data, write_data  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends.hls import HlsConfig, emit  # noqa: E402
 from fgc_backends.hls.emitter import accel_plan  # noqa: E402
 from fgc_backends.hls.plan import phase_cycles  # noqa: E402

@@ -38,10 +38,10 @@ DEFAULT_FACTORS = ("CombinedImuFactor(logmap)", "BetweenFactorPose3")
 CHILD = """
 import json, sys, time
 t0 = time.perf_counter()
-from fgc.derive import derive
-from fgc.factors import combined_imu_factor_type
+from fgc.compiler.derive import derive
+from fgc.frontend.factors import combined_imu_factor_type
 from fgc.factors.basic import between_factor_type
-from fgc.geometry import Pose3
+from fgc.frontend.geometry import Pose3
 t1 = time.perf_counter()
 ftype = {expr}
 t2 = time.perf_counter()

@@ -25,8 +25,8 @@ import range_beacons  # noqa: E402
 from test_hls_csim import pose_errors, relative_worst  # noqa: E402
 
 from fgc.compile import compile_graph  # noqa: E402
-from fgc.datafile import problem_data  # noqa: E402
-from fgc.program import SolverConfig  # noqa: E402
+from fgc.ir.datafile import problem_data  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends import sim  # noqa: E402
 from fgc_backends.hls import HlsConfig, emit, run_csim  # noqa: E402
 

@@ -1,7 +1,7 @@
 """What the host-side float32 verdict adds to a native run.
 
 ``NativeSolver.run`` judges every float result on the host (``judge_precision``: the Program's
-float64 linearisation at the returned solution and ρ, ``fgc.conditioning.resolution``). This
+float64 linearisation at the returned solution and ρ, ``fgc.ir.conditioning.resolution``). This
 script builds each shipped example's float32 native solver (not timed), then prints the best of
 ``--repeat`` warm calls of the bare solve (``NativeSolver.solve``) and of the verdict alone, and
 the verdict's ρ.
@@ -15,10 +15,10 @@ import argparse
 import time
 from pathlib import Path
 
-from fgc.cli import load_spec
+from fgc.app.cli import load_spec
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data
-from fgc.program import SolverConfig
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import native
 from fgc_backends.hls.results import judge_precision, result_from_arrays
 

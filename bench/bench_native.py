@@ -3,7 +3,7 @@
 For each problem both solvers start from the same initial values in one process: fgc compiles the
 graph, emits and builds the C++ (``fgc_backends.native``, float64, ``-O3 -march=native``
 without FMA; not timed), then times the solve call only; GTSAM gets the same graph through
-``fgc.verify.to_gtsam`` (not timed) and its ``LevenbergMarquardtOptimizer`` with the same
+``fgc.interop.to_gtsam.to_gtsam`` (not timed) and its ``LevenbergMarquardtOptimizer`` with the same
 tolerances and the same factorisation as fgc's row (multifrontal Cholesky or multifrontal QR; on
 the IMU window GTSAM's Cholesky stalls at 100 iterations, its QR converges) is timed from
 construction to ``optimize()``, given its COLAMD ordering computed beforehand (not timed, as
@@ -40,9 +40,9 @@ import imu_window  # noqa: E402
 import lio  # noqa: E402
 
 from fgc.compile import compile_graph  # noqa: E402
-from fgc.datafile import problem_data  # noqa: E402
-from fgc.program import SolverConfig  # noqa: E402
-from fgc.verify import to_gtsam, value_to_gtsam  # noqa: E402
+from fgc.interop.to_gtsam import to_gtsam, value_to_gtsam  # noqa: E402
+from fgc.ir.datafile import problem_data  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends import native  # noqa: E402
 from fgc_backends.hls.results import result_from_arrays  # noqa: E402
 

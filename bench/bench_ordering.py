@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import gtsam
 import numpy as np
 
-from fgc.schedule import GraphStructure, schedule
+from fgc.compiler.schedule import GraphStructure, schedule
 
 _PRIOR_SIGMA = 0.1
 

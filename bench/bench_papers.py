@@ -4,7 +4,7 @@ window) beside fgc's figure for the same configuration, with why they differ.
 fgc's hardware figures are the accelerator plan's arithmetic (``fgc_backends.hls.plan``:
 ``plan_cost(build_plan(...))``, model estimates at 143 MHz on the xc7z045); GTSAM's per-iteration
 time is measured here, in this process (gtsam python wheel, LM, median of timed ``iterate()``
-calls after one warm-up solve). Storage ratios are ``Program.storage`` (fgc/storage.py).
+calls after one warm-up solve). Storage ratios are ``Program.storage`` (fgc/compiler/storage.py).
 
     FGC_CACHE_DIR=... python bench/bench_papers.py            # LIO N=30, IMU N=50 (≈ 1-2 min)
     FGC_CACHE_DIR=... python bench/bench_papers.py --small    # LIO N=5, IMU N=5 (a smoke run)
@@ -26,7 +26,7 @@ import imu_window  # noqa: E402
 import lio  # noqa: E402
 
 from fgc.compile import compile_graph  # noqa: E402
-from fgc.program import SolverConfig  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends.hls.plan import (  # noqa: E402
     DEFAULT_ALLOCATION,
     PART_DSP,
@@ -95,7 +95,7 @@ def gtsam_ms_per_iteration(graph, cfg: Config) -> dict[str, tuple[float, float]]
     solver; the machine is shared, so the fastest is the least disturbed."""
     import gtsam
 
-    from fgc.verify import to_gtsam
+    from fgc.interop.to_gtsam import to_gtsam
 
     problem = to_gtsam(graph)
     out = {}
@@ -298,8 +298,8 @@ def paper_b(cfg: Config) -> list[Row]:
 
 
 def _lm_iterations(graph) -> int:
-    from fgc.reporting import gtsam_optimize
-    from fgc.verify import to_gtsam
+    from fgc.app.run_report import gtsam_optimize
+    from fgc.interop.to_gtsam import to_gtsam
 
     return max(1, gtsam_optimize(to_gtsam(graph), linear="qr")[1])
 

@@ -20,7 +20,7 @@ import imu_window  # noqa: E402
 import lio  # noqa: E402
 
 from fgc.compile import compile_graph  # noqa: E402
-from fgc.program import SolverConfig  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost  # noqa: E402
 from fgc_backends.sim.cost import estimate  # noqa: E402
 

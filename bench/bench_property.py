@@ -35,11 +35,11 @@ import pose_graph  # noqa: E402
 import strategies  # noqa: E402
 from hypothesis import HealthCheck, Phase, given, seed, settings  # noqa: E402
 
+from fgc.app.run_report import state_errors  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
-from fgc.conditioning import float32_kappa_limit  # noqa: E402
-from fgc.datafile import problem_data  # noqa: E402
-from fgc.program import SolverConfig  # noqa: E402
-from fgc.reporting import state_errors  # noqa: E402
+from fgc.ir.conditioning import float32_kappa_limit  # noqa: E402
+from fgc.ir.datafile import problem_data  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends import sim  # noqa: E402
 
 

@@ -3,7 +3,8 @@
 For each problem fgc compiles the graph and emits the simulator (not timed), loads the emitted
 module once, and times its solve: ``solve`` is the optimisation alone (data already in memory),
 ``+setup`` adds reading the data file and building the index tables. GTSAM gets the same graph
-through ``fgc.verify.to_gtsam`` (not timed) and its ``LevenbergMarquardtOptimizer`` with the same
+through ``fgc.interop.to_gtsam.to_gtsam`` (not timed) and its ``LevenbergMarquardtOptimizer`` with
+the same
 tolerances is timed from construction to ``optimize()``. Best of ``--repeat`` runs each; the ratio
 is fgc's solve over GTSAM's.
 
@@ -26,9 +27,9 @@ sys.path.insert(0, str(ROOT / "examples"))
 import lio  # noqa: E402
 
 from fgc.compile import compile_graph  # noqa: E402
-from fgc.datafile import problem_data, write_data  # noqa: E402
-from fgc.program import SolverConfig  # noqa: E402
-from fgc.verify import to_gtsam  # noqa: E402
+from fgc.interop.to_gtsam import to_gtsam  # noqa: E402
+from fgc.ir.datafile import problem_data, write_data  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends import sim  # noqa: E402
 
 

@@ -28,8 +28,8 @@ def _isam2_times(graph, problem, clusters):
     final estimate."""
     import gtsam
 
-    from fgc import oracles
-    from fgc.verify import value_to_gtsam, values_from_gtsam
+    from fgc.interop import oracles
+    from fgc.interop.to_gtsam import value_to_gtsam, values_from_gtsam
 
     isam = gtsam.ISAM2(oracles._isam2_params())
     keys = {str(k): k for k in graph.variables}
@@ -63,9 +63,10 @@ def main(argv=None) -> int:
 
     import lio
 
-    from fgc import oracles, streaming
-    from fgc.datafile import problem_data
-    from fgc.verify import to_gtsam
+    from fgc.app import streaming
+    from fgc.interop import oracles
+    from fgc.interop.to_gtsam import to_gtsam
+    from fgc.ir.datafile import problem_data
 
     graph = lio.build(N=args.N)
     problem = to_gtsam(graph)
@@ -116,7 +117,7 @@ def main(argv=None) -> int:
     print("update wall time per keyframe; ATE rmse (m, no alignment) against the batch optimum "
           "of the final trajectory and of the online one (each keyframe's estimate on arrival)")
     print("model: the accelerator plan's latency of each update (model estimate; "
-          "fgc.streaming.UpdatePricer), median / p99 over the priced updates")
+          "fgc.app.streaming.UpdatePricer), median / p99 over the priced updates")
     print(f"{'':<55} {'median ms':>10} {'p99 ms':>10} {'model ms':>15} {'ATE final':>10} "
           f"{'ATE online':>11} {'max dist':>9}")
     for name, t, acc in rows:

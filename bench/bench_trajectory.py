@@ -15,12 +15,12 @@ sys.path.insert(0, str(ROOT / "examples"))
 
 import lio  # noqa: E402
 
+from fgc.app.metrics import ate, rpe  # noqa: E402
+from fgc.app.run_report import gtsam_optimize  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
-from fgc.datafile import problem_data  # noqa: E402
-from fgc.metrics import ate, rpe  # noqa: E402
-from fgc.program import SolverConfig  # noqa: E402
-from fgc.reporting import gtsam_optimize  # noqa: E402
-from fgc.verify import to_gtsam, values_from_gtsam  # noqa: E402
+from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam  # noqa: E402
+from fgc.ir.datafile import problem_data  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends import sim  # noqa: E402
 
 

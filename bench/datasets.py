@@ -5,7 +5,8 @@ GTSAM, and with ``--verify`` what ``fgc verify`` says (float64 simulator vs GTSA
                              [--only FILE ...] [--verify-arg=ARG ...] [--out table.md]
 
 A file is listed when ``gtsam.load2D`` or ``gtsam.load3D`` returns at least one factor. fgc's
-column is ``fgc.io.read_pose_graph``'s factor count (it adds no factor: the gauge prior of
+column is ``fgc.interop.datasets.read_pose_graph``'s factor count (it adds no factor: the gauge
+prior of
 ``fgc verify`` comes later), or the reason it refuses the file. The verify column runs
 ``fgc verify FILE`` in a subprocess per file (exit 0 PASSED / 1 FAILED / 2 error), stopped after
 ``--timeout`` seconds; it gives the verdict, the wall and CPU time of that run (on a shared
@@ -26,11 +27,11 @@ import time
 
 import gtsam
 
-from fgc.data import gtsam_data_dir
 from fgc.errors import FgcError
-from fgc.io import read_pose_graph
+from fgc.interop.datasets import read_pose_graph
+from fgc.interop.gtsam_data import gtsam_data_dir
 
-VERIFY = "import sys; from fgc.cli import main; sys.exit(main(sys.argv[1:]))"
+VERIFY = "import sys; from fgc.app.cli import main; sys.exit(main(sys.argv[1:]))"
 
 
 def gtsam_count(path: str) -> tuple[str, int] | None:

@@ -4,16 +4,25 @@ Write factor graphs in Python (variables on Lie groups, factors as residual func
 Jacobians with sympy, schedules elimination, and emits an accelerator simulator and HLS C++.
 """
 
-# The one-call API fgc.solve / fgc.verify (imported last, below) shares its names with the
-# modules fgc/solve.py and fgc/verify.py. Both modules are loaded here, before the names are
-# bound to the functions, so that a later ``from fgc.verify import ...`` finds the module loaded
-# and does not rebind ``fgc.verify`` to it. Reach module contents with ``from fgc.verify import``.
-import fgc.verify as _verify_module  # noqa: F401
-from fgc import noise
-from fgc.dsl import Factor, FactorType, Graph, Matrix, factor
+from fgc.app.solve import solve, verify
 from fgc.errors import DataError, DerivationError, DslError, FgcError, StructureError
-from fgc.functions import acos, asin, atan, atan2, cos, exp, hypot, log, sin, sqrt, tan, tanh
-from fgc.geometry import (
+from fgc.frontend import noise
+from fgc.frontend.dsl import Factor, FactorType, Graph, Matrix, factor
+from fgc.frontend.functions import (
+    acos,
+    asin,
+    atan,
+    atan2,
+    cos,
+    exp,
+    hypot,
+    log,
+    sin,
+    sqrt,
+    tan,
+    tanh,
+)
+from fgc.frontend.geometry import (
     ImuBias,
     Point2,
     Point3,
@@ -28,23 +37,49 @@ from fgc.geometry import (
     Vector9,
     vector_type,
 )
-from fgc.solve import solve, verify  # the functions (see the comment above)
+
+# The front end's modules keep their public names: a user writes ``from fgc.factors import
+# PriorFactor`` or ``from fgc.geometry import Pose3`` (as the examples do), whatever folder the
+# module lives in. This table is the only place those names exist; fgc's own code imports the
+# real paths (tests/test_layout.py checks it).
+PUBLIC_MODULES = {
+    "geometry": "fgc.frontend.geometry",
+    "factors": "fgc.frontend.factors",
+    "noise": "fgc.frontend.noise",
+    "preintegration": "fgc.frontend.preintegration",
+    "data": "fgc.interop.gtsam_data",
+    "io": "fgc.interop.datasets",
+    "metrics": "fgc.app.metrics",
+}
+
+
+def _public_modules() -> None:
+    import importlib
+    import sys
+
+    for name, path in PUBLIC_MODULES.items():
+        module = importlib.import_module(path)
+        sys.modules[f"{__name__}.{name}"] = module
+        globals()[name] = module
+
+
+_public_modules()
 
 __version__ = "0.1.0"
 
 
 def stream(graph, window=None, incremental=None, batch_every=None, solver=None):
     """Feed a chain's keyframes one at a time to the simulator (fixed-lag ``window`` or
-    ``incremental`` K) and yield each keyframe's result (:func:`fgc.streaming.stream`)."""
-    from fgc.streaming import stream as _stream
+    ``incremental`` K) and yield each keyframe's result (:func:`fgc.app.streaming.stream`)."""
+    from fgc.app.streaming import stream as _stream
 
     return _stream(graph, window, incremental, batch_every, solver)
 
 
 def from_gtsam(graph, values, key_names=None):
     """Convert a ``gtsam.NonlinearFactorGraph`` + ``gtsam.Values`` into an fgc Graph
-    (see :func:`fgc.importer.from_gtsam`; gtsam is imported only when this is called)."""
-    from fgc.importer import from_gtsam as _from_gtsam
+    (see :func:`fgc.interop.from_gtsam.from_gtsam`; gtsam is imported only when this is called)."""
+    from fgc.interop.from_gtsam import from_gtsam as _from_gtsam
 
     return _from_gtsam(graph, values, key_names)
 

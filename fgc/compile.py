@@ -1,17 +1,17 @@
-"""The whole compiler, top to bottom: a Graph → a checked :class:`fgc.program.Program`.
+"""The whole compiler, top to bottom: a Graph → a checked :class:`fgc.ir.program.Program`.
 
     DSL graph ─► check ─► fuse (+ derive, CSE) ─► schedule ─► storage ─► lower ─► Program
 """
 
 from __future__ import annotations
 
-from fgc.dsl import Graph
+from fgc.compiler.fuse import fuse
+from fgc.compiler.lower import lower
+from fgc.compiler.schedule import FactorInfo, GraphStructure, VarInfo, check_structure, schedule
+from fgc.compiler.storage import ChainLayout, plan_storage
 from fgc.errors import DslError, StructureError
-from fgc.fuse import fuse
-from fgc.lower import lower
-from fgc.program import Program, SolverConfig, check_program
-from fgc.schedule import FactorInfo, GraphStructure, VarInfo, check_structure, schedule
-from fgc.storage import ChainLayout, plan_storage
+from fgc.frontend.dsl import Graph
+from fgc.ir.program import Program, SolverConfig, check_program
 
 
 def compile_graph(graph: Graph, solver: SolverConfig | None = None, name: str = "fgc_problem",

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from fgc.geometry import so3
-from fgc.preintegration import PreintegratedCombinedMeasurements
+from fgc.frontend.geometry import so3
+from fgc.frontend.preintegration import PreintegratedCombinedMeasurements
 
 
 def predicted_state(
@@ -71,4 +71,4 @@ def combined_imu_error(
 
 
 # The KITTI IMU log reader lives in fgc.data (examples use it too); re-exported for the tests.
-from fgc.data import ImuLog, kitti_params, read_kitti_imu  # noqa: E402, F401
+from fgc.interop.gtsam_data import ImuLog, kitti_params, read_kitti_imu  # noqa: E402, F401

@@ -3,7 +3,8 @@ strategy, the deterministic builder, and the comparison with GTSAM's LM.
 
 A recipe draws a family — Pose2 (odometry, loop closures, bearing-range landmarks, point priors),
 Pose3 (between / LiDAR-odometry factors, loop closures, GPS) or an IMU chain (CombinedImuFactors
-preintegrated by ``fgc.preintegration`` from synthetic samples, GPS) — with sizes, noise kind
+preintegrated by ``fgc.frontend.preintegration`` from synthetic samples, GPS) — with sizes, noise
+kind
 and level, robust loop closures, an initial perturbation, a duplicated factor and a solver
 configuration. The builder is deterministic in the recipe's seeds: a recipe reproduces a case.
 
@@ -21,7 +22,7 @@ import numpy as np
 from hypothesis import strategies as st
 
 import fgc
-from fgc.factors import (
+from fgc.frontend.factors import (
     BearingRangeFactor,
     BetweenFactor,
     CombinedImuFactor,
@@ -29,8 +30,8 @@ from fgc.factors import (
     LidarOdometryFactor,
     PriorFactor,
 )
-from fgc.geometry import ImuBias, Point2, Pose2, Pose3, Rot2, Rot3, Vector3
-from fgc.preintegration import ImuParams, PreintegratedCombinedMeasurements
+from fgc.frontend.geometry import ImuBias, Point2, Pose2, Pose3, Rot2, Rot3, Vector3
+from fgc.frontend.preintegration import ImuParams, PreintegratedCombinedMeasurements
 
 FAMILIES = ("pose2", "pose3", "imu")
 NOISE_KINDS = ("isotropic", "diagonal", "full")
@@ -329,7 +330,7 @@ class Outcome:
 
 def solver(spec: GraphSpec):
     """The recipe's SolverConfig."""
-    from fgc.program import SolverConfig
+    from fgc.ir.program import SolverConfig
 
     return SolverConfig(linear=spec.linear, method=spec.method, ordering=spec.ordering)
 
@@ -342,8 +343,8 @@ def gtsam_optimum(graph: fgc.Graph) -> tuple[dict, float, object]:
     own (Cholesky stalls on badly scaled problems; on one random Pose2 graph with landmarks QR
     stops after 3 iterations 9e-9 above the optimum that Cholesky and fgc both reach, 1.4e-6
     away in state), and a reference that stopped short is not a finding about fgc."""
-    from fgc.reporting import gtsam_optimize
-    from fgc.verify import to_gtsam, values_from_gtsam
+    from fgc.app.run_report import gtsam_optimize
+    from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
 
     problem = to_gtsam(graph)
     best = min((gtsam_optimize(problem, linear)[0] for linear in ("qr", "cholesky")),
@@ -354,7 +355,7 @@ def gtsam_optimum(graph: fgc.Graph) -> tuple[dict, float, object]:
 def judge(spec: GraphSpec, graph: fgc.Graph, values: dict, status: tuple[str, str],
           reference: tuple[dict, float, object]) -> Outcome:
     """Compare fgc's ``values`` ({graph key: value}) with GTSAM's ``reference``."""
-    from fgc.verify import to_gtsam
+    from fgc.interop.to_gtsam import to_gtsam
 
     theirs, gtsam_error, problem = reference
     ours_error = float(problem.graph.error(to_gtsam(graph, values).values))
@@ -371,7 +372,7 @@ def judge(spec: GraphSpec, graph: fgc.Graph, values: dict, status: tuple[str, st
 def compare(spec: GraphSpec) -> Outcome:
     """Compile ``spec``'s graph, solve it with the simulator (float64) and judge it."""
     from fgc.compile import compile_graph
-    from fgc.datafile import problem_data
+    from fgc.ir.datafile import problem_data
     from fgc_backends import sim
 
     graph = build(spec)
@@ -386,7 +387,7 @@ def compare_native(spec: GraphSpec) -> tuple[Outcome, float]:
     """Solve ``spec``'s graph with the native library (built once per structure) and judge
     it against GTSAM; also returns the largest tangent distance to the simulator's solution."""
     from fgc.compile import compile_graph
-    from fgc.datafile import problem_data
+    from fgc.ir.datafile import problem_data
     from fgc_backends import native, sim
 
     graph = build(spec)

@@ -23,12 +23,12 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import cache, fuse, lower, storage
-from fgc import derive as derive_mod
-from fgc.cache import CacheWarning
-from fgc.cli import main
+from fgc.app.cli import main
 from fgc.compile import compile_graph
-from fgc.geometry import Pose2
+from fgc.compiler import cache, fuse, lower, storage
+from fgc.compiler import derive as derive_mod
+from fgc.compiler.cache import CacheWarning
+from fgc.frontend.geometry import Pose2
 
 ROUTES = {
     "dict": ("K = {'s': 1.0}\n", "K['s']", "K['s'] = v"),
@@ -41,8 +41,9 @@ ROUTES = {
 
 SPEC = '''
 import fgc
-from fgc import Point2, Pose2, noise
-from fgc.factors import BetweenFactor, PriorFactor
+from fgc import Point2, Pose2
+from fgc.frontend import noise
+from fgc.frontend.factors import BetweenFactor, PriorFactor
 
 K = {"s": 1.0}
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from fgc.cli import EXIT_BAD_INPUT, EXIT_OK, main
+from fgc.app.cli import EXIT_BAD_INPUT, EXIT_OK, main
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
@@ -94,9 +94,8 @@ def test_g2o_file_from_gtsam_data_by_name(capsys):
 
 INF_SPEC = '''
 import fgc
-from fgc import Point2, noise
-
-
+from fgc import Point2
+from fgc.frontend import noise
 @fgc.factor
 def inverse_x(p: Point2, *, target: float):
     return [1 / p.x() - target, p.y()]
@@ -142,17 +141,17 @@ def test_unwritable_output_is_one_line_before_the_solve(argv, needle, tmp_path, 
 def test_write_failure_after_the_solve_keeps_the_result(tmp_path, capsys, monkeypatch):
     """A file that becomes unwritable during the solve: the summary is printed first, then one
     line naming the path (exit 2)."""
-    import fgc.cli
+    import fgc.app.cli
 
     out = tmp_path / "s.json"
-    write_text = fgc.cli.Path.write_text
+    write_text = fgc.app.cli.Path.write_text
 
     def refuse(self, *args, **kwargs):
         if str(self) == str(out):
             raise PermissionError(13, "Permission denied", str(self))
         return write_text(self, *args, **kwargs)
 
-    monkeypatch.setattr(fgc.cli.Path, "write_text", refuse)
+    monkeypatch.setattr(fgc.app.cli.Path, "write_text", refuse)
     code = main(["simulate", str(EXAMPLES / "pose_graph.py"), "-p", "dataset=pose3example.txt",
                  "--precision", "float64", "--json", str(out)])
     assert code == EXIT_BAD_INPUT
@@ -163,12 +162,12 @@ def test_write_failure_after_the_solve_keeps_the_result(tmp_path, capsys, monkey
 
 
 def test_unexpected_error_is_one_line(monkeypatch, capsys):
-    import fgc.reporting
+    import fgc.app.run_report
 
     def broken(*args, **kwargs):
         raise ZeroDivisionError("float division by zero")
 
-    monkeypatch.setattr(fgc.reporting, "simulate_report", broken)
+    monkeypatch.setattr(fgc.app.run_report, "simulate_report", broken)
     monkeypatch.delenv("FGC_TRACEBACK", raising=False)
     code = main(["simulate", str(EXAMPLES / "pose_graph.py"), "-p", "dataset=pose3example.txt"])
     assert code == EXIT_BAD_INPUT

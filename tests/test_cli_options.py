@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc.cli import derive_with_progress, main
+from fgc.app.cli import derive_with_progress, main
 
 ROOT = Path(__file__).resolve().parent.parent
 BEACONS = str(ROOT / "examples" / "range_beacons.py")
@@ -81,7 +81,7 @@ def test_progress_line_only_for_cold_derivations(tmp_path, monkeypatch, capsys):
 def test_quiet_never_shows_progress():
     from argparse import Namespace
 
-    from fgc.cli import _show_progress
+    from fgc.app.cli import _show_progress
 
     assert not _show_progress(Namespace(quiet=True, verbose=0))
     assert _show_progress(Namespace(quiet=False, verbose=1))
@@ -104,7 +104,7 @@ def test_clock_reaches_the_cost_model_and_run_hls_tcl(tmp_path, capsys):
 
 def test_emit_rejects_two_clocks(tmp_path):
     from fgc.compile import compile_graph
-    from fgc.program import SolverConfig
+    from fgc.ir.program import SolverConfig
     from fgc_backends import hls
 
     program = compile_graph(_beacons_graph(), SolverConfig(clock_mhz=200.0), name="beacons")
@@ -153,7 +153,7 @@ def test_modelled_figures_are_labelled(capsys):
 
 
 def _helix(n: int = 15):
-    from fgc.geometry import Pose3, Rot3
+    from fgc.frontend.geometry import Pose3, Rot3
 
     return [(0.1 * i, Pose3(Rot3.Expmap(np.array([0.1, -0.2, 0.4 * i])),
                             np.array([3 * np.cos(0.4 * i), 3 * np.sin(0.4 * i), 0.2 * i])))
@@ -163,8 +163,8 @@ def _helix(n: int = 15):
 def test_metrics_command(tmp_path, capsys):
     """EST is REF with every orientation turned by 10° about a fixed body axis and every
     position moved by (0.3, 0, 0.4) m: ATE 0.5 m and 10° at every pose without alignment."""
-    from fgc.geometry import Pose3, Rot3
-    from fgc.metrics import ate, read_tum, rpe, write_tum
+    from fgc.app.metrics import ate, read_tum, rpe, write_tum
+    from fgc.frontend.geometry import Pose3, Rot3
 
     ref = _helix()
     turn = Rot3.Expmap(np.radians(10.0) * np.array([1.0, 0.0, 0.0])).R

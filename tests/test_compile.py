@@ -11,9 +11,9 @@ import pytest
 
 import fgc
 from fgc.compile import compile_graph
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Pose2, Pose3
-from fgc.program import Program, ProgramError, SolverConfig
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Pose2, Pose3
+from fgc.ir.program import Program, ProgramError, SolverConfig
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "examples"))

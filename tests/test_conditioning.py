@@ -1,4 +1,4 @@
-"""The float32 conditioning warning (``fgc.conditioning``) and the simulator's κ estimate.
+"""The float32 conditioning warning (``fgc.ir.conditioning``) and the simulator's κ estimate.
 
 κ is the condition number of the whitened Jacobian at the solution with rows and columns scaled
 to unit norm; the simulator estimates it by power iteration along its Bayes net (12 iterations
@@ -16,16 +16,16 @@ import pytest
 import fgc
 from fgc import Point2, Pose2, Vector2
 from fgc.compile import compile_graph
-from fgc.conditioning import (
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.interop.to_gtsam import linearize_factor
+from fgc.ir.conditioning import (
     EPS32,
     IllConditionedWarning,
     float32_kappa_limit,
     float32_ok,
 )
-from fgc.datafile import problem_data
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.program import SolverConfig
-from fgc.verify import linearize_factor
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 
 

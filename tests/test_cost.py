@@ -18,8 +18,8 @@ import pytest
 import sympy as sp
 
 from fgc.compile import compile_graph
-from fgc.kernel import Kernel
-from fgc.program import KernelText, Program, SolverConfig
+from fgc.compiler.kernel import Kernel
+from fgc.ir.program import KernelText, Program, SolverConfig
 from fgc_backends.sim.cost import (
     CostParams,
     Device,

@@ -1,6 +1,7 @@
 """Factors written by the user in the DSL (not built-ins) against independent GTSAM factors.
 
-fgc's side is ``fgc.verify.linearize_factor`` (derived Jacobians, whitened); GTSAM's side is
+fgc's side is ``fgc.interop.to_gtsam.linearize_factor`` (derived Jacobians, whitened); GTSAM's side
+is
 ``factor.linearize(values).jacobian()`` of a native GTSAM factor or of a ``gtsam.CustomFactor``
 with Jacobians written here, so nothing of fgc's derivation is on the GTSAM side.
 
@@ -16,9 +17,10 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import Point3, Pose2, Pose3, Vector1, Vector2, noise
-from fgc.geometry import Rot3
-from fgc.verify import linearize_factor, noise_to_gtsam, value_to_gtsam
+from fgc import Point3, Pose2, Pose3, Vector1, Vector2
+from fgc.frontend import noise
+from fgc.frontend.geometry import Rot3
+from fgc.interop.to_gtsam import linearize_factor, noise_to_gtsam, value_to_gtsam
 
 TOL = 1e-9
 NUMERICAL_TOL = 1e-6

@@ -26,14 +26,14 @@ from strategies import gtsam_optimum
 import fgc
 from fgc import Point2, Pose2, Pose3, Vector1, Vector2
 from fgc.compile import compile_graph
-from fgc.conditioning import RankDeficientWarning
-from fgc.datafile import problem_data
 from fgc.errors import DataError, StructureError
-from fgc.factors import BetweenFactor, CombinedImuFactor, PriorFactor
-from fgc.geometry import Rot3
-from fgc.preintegration import ImuParams, PreintegratedCombinedMeasurements
-from fgc.program import SolverConfig
-from fgc.verify import to_gtsam
+from fgc.frontend.factors import BetweenFactor, CombinedImuFactor, PriorFactor
+from fgc.frontend.geometry import Rot3
+from fgc.frontend.preintegration import ImuParams, PreintegratedCombinedMeasurements
+from fgc.interop.to_gtsam import to_gtsam
+from fgc.ir.conditioning import RankDeficientWarning
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 from fgc_backends.sim import SimConfig
 
@@ -70,7 +70,7 @@ def gtsam_gauss_newton(graph: fgc.Graph) -> dict:
     """GTSAM's Gauss-Newton optimum with QR (LM's damping stalls on the 4e7-conditioned case)."""
     import gtsam
 
-    from fgc.verify import values_from_gtsam
+    from fgc.interop.to_gtsam import values_from_gtsam
 
     problem = to_gtsam(graph)
     params = gtsam.GaussNewtonParams()

@@ -12,12 +12,12 @@ import pytest
 import sympy as sp
 
 import fgc
-import fgc.derive as derive_module
+import fgc.compiler.derive as derive_module
 from fgc import ImuBias, Point3, Pose3, Rot3, Vector3
-from fgc.derive import derive
-from fgc.factors import combined_imu_factor_type
+from fgc.compiler.derive import derive
+from fgc.compiler.kernel import python_source
 from fgc.factors.basic import between_factor_type, gps_factor, prior_factor_type
-from fgc.kernel import python_source
+from fgc.frontend.factors import combined_imu_factor_type
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -226,7 +226,8 @@ def test_closure_constants_change_the_fingerprint(fresh_cache):
 
 
 def test_helpers_inside_fgc_packages_are_fingerprinted(tmp_path):
-    """A factor's helper in e.g. ``fgc.factors`` is not covered by derive's code version."""
+    """A factor's helper in e.g. ``fgc.frontend.factors`` is not covered by derive's code
+    version."""
     helper_v1 = "def offset(p):\n    return p.x()\n"
     helper_v2 = "def offset(p):\n    return p.y()\n"
     fps = []
@@ -260,10 +261,10 @@ def test_two_derivations_print_identical_kernels(fresh_cache, monkeypatch):
 
 PRINT_KERNEL = """
 import sys
-from fgc.derive import derive
+from fgc.compiler.derive import derive
 from fgc.factors.basic import between_factor_type
-from fgc.geometry import Pose3
-from fgc.kernel import python_source
+from fgc.frontend.geometry import Pose3
+from fgc.compiler.kernel import python_source
 sys.stdout.write(python_source(derive(between_factor_type(Pose3), use_cache=False).kernel))
 """
 

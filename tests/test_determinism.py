@@ -31,7 +31,7 @@ EXAMPLES = {  # small sizes: the derivations, which dominate, do not depend on t
 }
 SCRIPT = """
 import sys
-from fgc.cli import main
+from fgc.app.cli import main
 out, cases = sys.argv[1], eval(sys.argv[2])
 for run in ("cold", "warm"):
     for name, argv in cases.items():

@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import DataError, DslError, FgcError, Point3, Pose2, Pose3, noise
-from fgc.factors import BetweenFactor, PriorFactor
+from fgc import DataError, DslError, FgcError, Point3, Pose2, Pose3
+from fgc.frontend import noise
+from fgc.frontend.factors import BetweenFactor, PriorFactor
 
 
 @fgc.factor

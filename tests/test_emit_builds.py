@@ -16,12 +16,12 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import noise
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Point2, Point3, Pose2, Pose3, Rot2, Rot3, Vector3
-from fgc.program import SolverConfig
+from fgc.frontend import noise
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Point2, Point3, Pose2, Pose3, Rot2, Rot3, Vector3
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import native
 from fgc_backends.hls import HlsBuildError, HlsConfig, emit, make, run_csim
 

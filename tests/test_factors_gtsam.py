@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import noise
-from fgc.factors import (
+from fgc.frontend import noise
+from fgc.frontend.factors import (
     BearingRangeFactor,
     BetweenFactor,
     CombinedImuFactor,
@@ -22,9 +22,9 @@ from fgc.factors import (
     LidarOdometryFactor,
     PriorFactor,
 )
-from fgc.geometry import ImuBias, Point2, Point3, Pose2, Pose3, Rot2, Rot3, Vector3
-from fgc.preintegration import ImuParams, PreintegratedCombinedMeasurements
-from fgc.verify import linearization_error
+from fgc.frontend.geometry import ImuBias, Point2, Point3, Pose2, Pose3, Rot2, Rot3, Vector3
+from fgc.frontend.preintegration import ImuParams, PreintegratedCombinedMeasurements
+from fgc.interop.to_gtsam import linearization_error
 
 TOL = 1e-9
 N_POINTS = 100

@@ -4,12 +4,12 @@ A float32 state has a resolution: one unit in the last place of a coordinate nea
 0.0625 m, and a σ of 1e-9 is below the resolution of any coordinate. When rounding the state moves
 a whitened residual by a sigma or more, the float32 solver cannot reach the optimum to the data's
 accuracy: the simulator then reports status "failed", reason "precision_limit", with a
-:class:`fgc.conditioning.PrecisionLimitWarning` naming a variable, never "converged". Before,
+:class:`fgc.ir.conditioning.PrecisionLimitWarning` naming a variable, never "converged". Before,
 the ‖δ‖ ≤ 10 ulp·‖x‖ rule (‖x‖ ≈ 1e6) stopped at the first iteration and said "converged".
 
 The native solver and the C simulation (float kernels) get the same verdict, computed on the host
 after the run (``fgc_backends.hls.results.judge_precision``, ρ by
-:func:`fgc.conditioning.resolution`); before, they said "converged" in all three cases.
+:func:`fgc.ir.conditioning.resolution`); before, they said "converged" in all three cases.
 
 Tolerances: float64 runs reach their optimum (cost ≤ 1e-9); a float32 run that says "converged"
 is within 1 mm of the float64 optimum (plane registration) or within 1e-6 relative of its cost
@@ -28,13 +28,13 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import conditioning
 from fgc.compile import compile_graph
-from fgc.conditioning import PrecisionLimitWarning
-from fgc.datafile import problem_data
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Point3, Pose2, Pose3, Rot3
-from fgc.program import SolverConfig
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Point3, Pose2, Pose3, Rot3
+from fgc.ir import conditioning
+from fgc.ir.conditioning import PrecisionLimitWarning
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 from fgc_backends.sim.emitter import emit
 
@@ -138,9 +138,9 @@ CASES = {  # name → (graph, True when ρ ≥ 1 in float32)
 
 @pytest.mark.parametrize("name", list(CASES))
 def test_host_resolution_equals_the_simulators(name, tmp_path):
-    """The host ρ (fgc.conditioning.resolution on the Program's float64 linearisation) is the
+    """The host ρ (fgc.ir.conditioning.resolution on the Program's float64 linearisation) is the
     simulator's ρ at the simulator's float32 solution, and names the same variable."""
-    from fgc.datafile import write_data
+    from fgc.ir.datafile import write_data
     from fgc_backends.hls.results import whitened_jacobians
 
     build, beyond = CASES[name]
@@ -163,8 +163,8 @@ SPEC = """
 import numpy as np
 
 import fgc
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Pose2
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Pose2
 
 
 def build(offset: float = 0.0, sigma: float = 0.1, n: int = 10):
@@ -182,7 +182,7 @@ def build(offset: float = 0.0, sigma: float = 0.1, n: int = 10):
 
 
 def _native_cli(tmp_path, capsys, *params):
-    from fgc.cli import main
+    from fgc.app.cli import main
 
     spec = tmp_path / "f32chain.py"
     spec.write_text(SPEC)

@@ -1,4 +1,4 @@
-"""One set of functions for every backend (fgc.functions): the whitelist prints with both
+"""One set of functions for every backend (fgc.frontend.functions): the whitelist prints with both
 printers (and so do its derivatives), the emitted C++ defines every wrapper the HLS printer calls,
 and a function outside the whitelist is refused at the first trace, naming the factor."""
 
@@ -13,14 +13,14 @@ import pytest
 import sympy as sp
 
 import fgc
-from fgc import noise
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data
-from fgc.factors import PriorFactor
-from fgc.functions import DERIVATIVE_FUNCTIONS, FUNCTIONS
-from fgc.geometry import Point2
-from fgc.kernel import Kernel
-from fgc.program import SolverConfig
+from fgc.compiler.kernel import Kernel
+from fgc.frontend import noise
+from fgc.frontend.factors import PriorFactor
+from fgc.frontend.functions import DERIVATIVE_FUNCTIONS, FUNCTIONS
+from fgc.frontend.geometry import Point2
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import native, sim
 from fgc_backends.hls.printer import print_kernel
 from fgc_backends.sim.printer import SimPrinter

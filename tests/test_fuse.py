@@ -14,19 +14,19 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import noise
-from fgc.cache import cache_dir
-from fgc.derive import derive
-from fgc.factors import (
+from fgc.compiler.cache import cache_dir
+from fgc.compiler.derive import derive
+from fgc.compiler.fuse import OpCounts, block_type, fuse, group_factors
+from fgc.frontend import noise
+from fgc.frontend.factors import (
     BetweenFactor,
     CombinedImuFactor,
     GPSFactor,
     LidarOdometryFactor,
     PriorFactor,
 )
-from fgc.fuse import OpCounts, block_type, fuse, group_factors
-from fgc.geometry import ImuBias, Pose3, Vector3
-from fgc.preintegration import ImuParams, PreintegratedCombinedMeasurements
+from fgc.frontend.geometry import ImuBias, Pose3, Vector3
+from fgc.frontend.preintegration import ImuParams, PreintegratedCombinedMeasurements
 
 TOL = 1e-12
 IMU_LIDAR = "CombinedImuFactor+LidarOdometryFactor"
@@ -279,7 +279,7 @@ def test_op_counts(lio):
 
 
 def test_fused_kernel_is_cached(lio):
-    import fgc.fuse as fuse_module
+    import fgc.compiler.fuse as fuse_module
 
     _, blocks = lio
     block = next(b for b in blocks if b.type.name == IMU_LIDAR)

@@ -35,8 +35,8 @@ import pytest
 import sympy as sp
 
 import fgc
-from fgc.derive import derive
-from fgc.geometry import (
+from fgc.compiler.derive import derive
+from fgc.frontend.geometry import (
     ImuBias,
     Point2,
     Point3,
@@ -50,7 +50,7 @@ from fgc.geometry import (
     special,
     vector_type,
 )
-from fgc.verify import value_from_gtsam, value_to_gtsam
+from fgc.interop.to_gtsam import value_from_gtsam, value_to_gtsam
 
 TOL = 1e-12
 FLOAT32_TOL = 2e-6

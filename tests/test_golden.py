@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 
-from fgc.cli import main as cli_main
+from fgc.app.cli import main as cli_main
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = Path(__file__).resolve().parent / "golden"

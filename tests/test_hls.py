@@ -16,12 +16,13 @@ import pytest
 import sympy as sp
 
 import fgc
-from fgc import Pose2, noise
+from fgc import Pose2
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data
-from fgc.factors import PriorFactor
-from fgc.geometry import special
-from fgc.program import KernelText, Program
+from fgc.frontend import noise
+from fgc.frontend.factors import PriorFactor
+from fgc.frontend.geometry import special
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import KernelText, Program
 from fgc_backends.hls import (
     HlsConfig,
     HlsConfigError,

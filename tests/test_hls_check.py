@@ -19,12 +19,13 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import Pose2, noise
+from fgc import Pose2
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data
 from fgc.errors import DataError
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.program import SolverConfig
+from fgc.frontend import noise
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 from fgc_backends.hls import HlsConfig, emit, run_csim
 from fgc_backends.hls.build import HlsBuildError
@@ -258,7 +259,7 @@ def test_fixed_point_refuses_data_outside_the_format(tmp_path):
 def test_fgc_compile_writes_the_reference_beside_the_data(tmp_path):
     from pathlib import Path
 
-    from fgc.cli import main
+    from fgc.app.cli import main
 
     spec = str(Path(__file__).resolve().parent.parent / "examples" / "range_beacons.py")
     out = tmp_path / "prj"

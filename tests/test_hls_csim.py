@@ -21,12 +21,12 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import noise
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Pose3
-from fgc.program import SolverConfig
+from fgc.frontend import noise
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Pose3
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 from fgc_backends.hls import HlsConfig, HlsConfigError, emit, run_csim
 

@@ -19,8 +19,8 @@ import pytest
 import sympy as sp
 
 from fgc.compile import compile_graph
-from fgc.kernel import Kernel
-from fgc.program import SolverConfig
+from fgc.compiler.kernel import Kernel
+from fgc.ir.program import SolverConfig
 from fgc_backends.hls import HlsConfig, HlsConfigError
 from fgc_backends.hls.blocks import NOISE_KINDS, block_contexts
 from fgc_backends.hls.printer import print_kernel

@@ -21,13 +21,13 @@ import pytest
 
 import fgc
 from fgc import Point2, Pose2, Pose3, Rot2, Rot3
-from fgc.cli import main as cli_main
+from fgc.app.cli import main as cli_main
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data, read_data, write_data
 from fgc.errors import DataError, DslError, FgcError
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.io import read_pose_graph
-from fgc.program import SolverConfig
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.interop.datasets import read_pose_graph
+from fgc.ir.datafile import problem_data, read_data, write_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 
 SE2 = "VERTEX_SE2 {} 0.0 0.0 0.0"
@@ -103,7 +103,7 @@ def test_cli_reports_a_malformed_pose_graph_in_one_line(tmp_path, capsys):
 
 GOOD_BUILD = """
 import fgc
-from fgc.factors import PriorFactor
+from fgc.frontend.factors import PriorFactor
 def build(n=2):
     g = fgc.Graph()
     for i in range(n):

@@ -1,4 +1,4 @@
-"""fgc.importer.from_gtsam: GTSAM graphs imported into fgc, checked against GTSAM itself.
+"""fgc.interop.from_gtsam.from_gtsam: GTSAM graphs imported into fgc, checked against GTSAM itself.
 
 Tolerances: solutions ≤ 1e-6 in tangent distance and final errors ≤ 1e-6 relative against GTSAM's
 LevenbergMarquardtOptimizer (issue 6); per-factor linearisations (whitened A, b) ≤ 1e-9 relative;
@@ -14,11 +14,11 @@ import gtsam
 import numpy as np
 import pytest
 
-from fgc import noise as fn
+from fgc.app.solve import optimize
 from fgc.errors import FgcError
-from fgc.importer import default_key_name, from_gtsam, noise_from_gtsam
-from fgc.solve import optimize
-from fgc.verify import linearize_factor, noise_to_gtsam, to_gtsam, value_from_gtsam
+from fgc.frontend import noise as fn
+from fgc.interop.from_gtsam import default_key_name, from_gtsam, noise_from_gtsam
+from fgc.interop.to_gtsam import linearize_factor, noise_to_gtsam, to_gtsam, value_from_gtsam
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "examples"))
 import lio  # noqa: E402

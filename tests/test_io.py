@@ -1,5 +1,6 @@
-"""fgc.io reads GTSAM's example files to GTSAM's graph, refuses what it would drop, and
-fgc.export writes estimates (g2o / TUM / CSV, keyed JSON)."""
+"""fgc.interop.datasets reads GTSAM's example files to GTSAM's graph, refuses what it would drop,
+and
+fgc.interop.estimates writes estimates (g2o / TUM / CSV, keyed JSON)."""
 
 import json
 
@@ -7,12 +8,12 @@ import gtsam
 import numpy as np
 import pytest
 
-from fgc.cli import main as cli_main
-from fgc.data import gtsam_data_dir
+from fgc.app.cli import main as cli_main
 from fgc.errors import DataError
-from fgc.export import csv_text, g2o_text, tum_text, values_json
-from fgc.io import read_pose_graph
-from fgc.verify import to_gtsam
+from fgc.interop.datasets import read_pose_graph
+from fgc.interop.estimates import csv_text, g2o_text, tum_text, values_json
+from fgc.interop.gtsam_data import gtsam_data_dir
+from fgc.interop.to_gtsam import to_gtsam
 
 SMALL = ["example.graph", "w100.graph", "w100_30.g2o", "pose2example.txt", "noisyToyGraph.txt",
          "pose3example.txt", "pose3example-offdiagonal.txt", "toyExample.g2o", "Klaus3.g2o",

@@ -1,4 +1,4 @@
-"""Marginal covariances (fgc.marginals) against gtsam.Marginals on real problems: the lio
+"""Marginal covariances (fgc.app.marginals) against gtsam.Marginals on real problems: the lio
 window N=30 (examples/lio.py) and w100.graph, at fgc's optimum. Tolerance: 1e-9 relative
 (Frobenius norm of the difference over that of the reference block), float64.
 
@@ -14,10 +14,10 @@ import gtsam
 import numpy as np
 import pytest
 
+from fgc.app.marginals import marginal_covariances
+from fgc.app.solve import linearize, optimize
 from fgc.errors import FgcError
-from fgc.marginals import marginal_covariances
-from fgc.solve import linearize, optimize
-from fgc.verify import to_gtsam
+from fgc.interop.to_gtsam import to_gtsam
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 TOL = 1e-9

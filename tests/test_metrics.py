@@ -1,4 +1,4 @@
-"""fgc.metrics: TUM files, ATE and RPE on hand-computable trajectories, and against evo.
+"""fgc.app.metrics: TUM files, ATE and RPE on hand-computable trajectories, and against evo.
 
 Tolerances: hand-computed cases to 1e-12; evo (a test dependency) to 1e-9.
 """
@@ -8,9 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from fgc.errors import FgcError
-from fgc.geometry import Point3, Pose2, Pose3, Rot3
-from fgc.metrics import (
+from fgc.app.metrics import (
     Trajectory,
     as_trajectory,
     ate,
@@ -20,6 +18,8 @@ from fgc.metrics import (
     rpe,
     write_tum,
 )
+from fgc.errors import FgcError
+from fgc.frontend.geometry import Point3, Pose2, Pose3, Rot3
 
 
 def _wiggly(n: int = 20, seed: int = 0) -> list[tuple[float, Pose3]]:

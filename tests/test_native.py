@@ -23,11 +23,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fgc.cli import main
+from fgc.app.cli import main
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data, write_data
 from fgc.errors import DataError
-from fgc.program import SolverConfig
+from fgc.ir.datafile import problem_data, write_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import hls, native, sim
 from fgc_backends.native import NativeConfig, NativeConfigError, NativeSolver
 

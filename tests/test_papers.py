@@ -17,11 +17,11 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc.cli import EXIT_OK, build_parser, main
+from fgc.app.cli import EXIT_OK, build_parser, main
 from fgc.compile import compile_graph
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Pose2
-from fgc.program import SolverConfig
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Pose2
+from fgc.ir.program import SolverConfig
 from fgc_backends.hls.plan import (
     PlanError,
     PlanOptions,
@@ -39,7 +39,7 @@ BEACONS = str(ROOT / "examples" / "range_beacons.py")
 R_FULL = np.array([[10.0, 1.0, 2.0], [0.0, 20.0, 3.0], [0.0, 0.0, 30.0]])
 
 
-def _chain(linear: str, **solver) -> fgc.program.Program:
+def _chain(linear: str, **solver) -> fgc.ir.program.Program:
     """x0 -prior(isotropic)- x0 -between(full W)- x1 -between(full W)- x2, Pose2."""
     g = fgc.Graph()
     for i in range(3):
@@ -151,7 +151,7 @@ def test_phase_groups_and_power(qr_chain):
 
 
 def _program_of(argv):
-    from fgc.cli import _compile
+    from fgc.app.cli import _compile
 
     args = build_parser().parse_args(argv)
     return _compile(args, "float32")[1]

@@ -13,9 +13,9 @@ import pytest
 
 import fgc
 from fgc.compile import compile_graph
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Pose2
-from fgc.program import SolverConfig
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Pose2
+from fgc.ir.program import SolverConfig
 from fgc_backends.hls import operators
 from fgc_backends.hls.plan import (
     PART_DSP,
@@ -35,7 +35,7 @@ from fgc_backends.hls.plan import (
 F32 = operators.FLOAT32
 
 
-def _chain(linear: str, **solver) -> fgc.program.Program:
+def _chain(linear: str, **solver) -> fgc.ir.program.Program:
     g = fgc.Graph()
     for i in range(3):
         g.add_variable(f"x{i}", Pose2(float(i), 0.1 * i, 0.0))

@@ -1,4 +1,4 @@
-"""fgc.plots: each function returns its Figure and, given a path, writes it (non-trivial and
+"""fgc.app.plots: each function returns its Figure and, given a path, writes it (non-trivial and
 deterministic); honest axes; one clear error without matplotlib; ``fgc simulate --plot`` overlays
 GTSAM's solution and the GPS fixes."""
 
@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 
 from fgc.errors import FgcError
-from fgc.geometry import Point3, Pose2, Pose3, Rot3
+from fgc.frontend.geometry import Point3, Pose2, Pose3, Rot3
 
 pytest.importorskip("matplotlib")
 
-from fgc import plots  # noqa: E402
+from fgc.app import plots  # noqa: E402
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
@@ -144,7 +144,7 @@ def test_errors(tmp_path, monkeypatch):
 def test_missing_matplotlib_is_one_error_everywhere(tmp_path, monkeypatch, capsys):
     """fgc report --html without matplotlib: exit 2 with the install hint (not a page that
     silently lacks its figures)."""
-    from fgc.cli import main
+    from fgc.app.cli import main
 
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     assert main(["report", "examples/range_beacons.py", "--iterations", "2",
@@ -155,7 +155,7 @@ def test_missing_matplotlib_is_one_error_everywhere(tmp_path, monkeypatch, capsy
 def test_simulate_plot_overlays_gtsam_and_gps(tmp_path, monkeypatch):
     """``fgc simulate --plot`` gives the trajectory plot GTSAM's solution (which differs from
     the initial estimate: it is solved) and the GPS fixes of the graph's GPSFactors."""
-    from fgc.cli import main
+    from fgc.app.cli import main
 
     seen = {}
     real = plots.plot_trajectory

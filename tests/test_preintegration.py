@@ -1,4 +1,5 @@
-"""fgc.preintegration and the CombinedImuFactor reference (imu_reference.py) against GTSAM 4.3.
+"""fgc.frontend.preintegration and the CombinedImuFactor reference (imu_reference.py) against GTSAM
+4.3.
 
 Tolerances (float64):
 - ΔR: absolute 1e-9 on the matrix entries; Δp, Δv, Δt and the bias Jacobians: 1e-9 relative to
@@ -24,8 +25,8 @@ from gtsam.symbol_shorthand import B, V, X
 from imu_reference import combined_imu_error, kitti_params, predicted_state, read_kitti_imu
 
 from fgc.errors import DataError
-from fgc.geometry import so3
-from fgc.preintegration import ImuParams, PreintegratedCombinedMeasurements
+from fgc.frontend.geometry import so3
+from fgc.frontend.preintegration import ImuParams, PreintegratedCombinedMeasurements
 
 TOL = 1e-9
 GTSAM_NEAR_PI = 1e-3  # GTSAM's Logmap approximates the translation rows for |φ| > π − this

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from fgc.cli import EXIT_BAD_INPUT, EXIT_OK, build_parser, main
-from fgc.report import Section, format_table, render_html
+from fgc.app.cli import EXIT_BAD_INPUT, EXIT_OK, build_parser, main
+from fgc.app.design_report import Section, format_table, render_html
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 POSE3 = [str(EXAMPLES / "pose_graph.py"), "-p", "dataset=pose3example.txt"]
@@ -70,14 +70,14 @@ def test_html_escapes_user_strings(tmp_path, capsys):
 
 
 def test_render_html_escapes_every_cell(monkeypatch):
-    import fgc.report
+    import fgc.app.design_report
 
     report = {"spec": "a&b", "params": {"tag": "<u>"}, "program": "p", "variables": 1,
               "factors": 1, "block_instances": 1,
               "solver": {"method": "lm", "linear": "qr", "precision": "float32",
                          "ordering": "auto", "units": 1, "cpe": 1, "clock_mhz": 143.0}}
     evil = Section('"><img src=x onerror=alert(1)>', ("<th>",), (("<td>&",),), ("<i>note",))
-    monkeypatch.setattr(fgc.report, "sections", lambda r: [evil])
+    monkeypatch.setattr(fgc.app.design_report, "sections", lambda r: [evil])
     page = render_html(report, {"<fig>": "data:image/png;base64,AAAA"})
     assert "<img src=x" not in page and "&#34;&gt;&lt;img src=x" in page
     for escaped in ("&lt;th&gt;", "&lt;td&gt;&amp;", "&lt;i&gt;note", "a&amp;b", "&lt;u&gt;",
@@ -88,7 +88,7 @@ def test_render_html_escapes_every_cell(monkeypatch):
 def test_html_tables_fit_the_page(monkeypatch):
     """A wide table scrolls in its own box; names wrap at CamelCase words and after + and ,
     (still escaped); number columns stay right-aligned on one line."""
-    import fgc.report
+    import fgc.app.design_report
 
     report = {"spec": "s", "params": {}, "program": "p", "variables": 1, "factors": 1,
               "block_instances": 1,
@@ -97,7 +97,7 @@ def test_html_tables_fit_the_page(monkeypatch):
     wide = Section("Factor blocks", ("block", "members", "ops", "time"),
                    (("CombinedImuFactor+LidarOdometryFactor", "CombinedImuFactor, <b>Lidar",
                      "777,057,347", "4.590 ms"), ("GPSFactor", "GPSFactor", "6", "—")))
-    monkeypatch.setattr(fgc.report, "sections", lambda r: [wide])
+    monkeypatch.setattr(fgc.app.design_report, "sections", lambda r: [wide])
     page = render_html(report)
     assert "div.table { overflow-x: auto" in page and '<div class="table"><table>' in page
     assert ('<td class="text">Combined<wbr>Imu<wbr>Factor+<wbr>Lidar<wbr>Odometry<wbr>Factor'

@@ -18,10 +18,10 @@ import pytest
 
 import fgc
 from fgc.compile import compile_graph
-from fgc.datafile import problem_data, write_data
 from fgc.errors import FgcError
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Point2, Pose2
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Point2, Pose2
+from fgc.ir.datafile import problem_data, write_data
 from fgc_backends import sim
 
 ODD = ['q"); open("PWNED", "w")  # ', "t'''\n", "back\\slash", "new\nline", "ключ 漢",
@@ -106,7 +106,7 @@ def test_odd_str_keys_are_data_in_the_emitted_code(tmp_path):
 def test_incremental_updates_are_keyed(tmp_path):
     keys = [0, 1, 2, 3, 4, 5]
     graph = _chain(keys)
-    program = compile_graph(graph, fgc.program.SolverConfig(incremental_k=2))
+    program = compile_graph(graph, fgc.ir.program.SolverConfig(incremental_k=2))
     result = sim.run(program, problem_data(graph, program), tmp_path, incremental=True)
     raw = json.loads((tmp_path / "result.json").read_text())
     first = raw["incremental"][0]["values"]
@@ -128,7 +128,7 @@ def test_a_result_of_another_program_is_refused(tmp_path):
 
 
 def test_the_program_json_keeps_int_keys():
-    from fgc.program import Program
+    from fgc.ir.program import Program
 
     program = compile_graph(_chain([3, 4]))
     again = Program.from_json(program.to_json())

@@ -18,8 +18,7 @@ from pathlib import Path
 
 import pytest
 
-from fgc.errors import FgcError, StructureError
-from fgc.schedule import (
+from fgc.compiler.schedule import (
     FactorInfo,
     GraphStructure,
     IncrementalPlan,
@@ -28,6 +27,7 @@ from fgc.schedule import (
     check_schedule,
     schedule,
 )
+from fgc.errors import FgcError, StructureError
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -333,7 +333,7 @@ def test_schedule_is_independent_of_hash_seed():
     """Same JSON under different string-hash seeds (sets of keys never decide the order)."""
     code = (
         "import json, sys; sys.path.insert(0, 'tests'); import test_schedule as t;"
-        "from fgc.schedule import schedule;"
+        "from fgc.compiler.schedule import schedule;"
         "s = t.pose_chain(40, closures=((0, 20), (5, 35), (10, 30), (15, 39)));"
         "print(json.dumps([schedule(s).to_dict(), schedule(t.lio_chain(6, False)).to_dict()]))"
     )

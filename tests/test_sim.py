@@ -1,7 +1,7 @@
 """The simulator backend: printer, emitted run-time, emission rules, solver behaviour, bad data.
 
 Solutions are checked against GTSAM in ``test_sim_gtsam.py``; here the pieces are checked against
-fgc's own numeric definitions (fgc.geometry) and the solver paths against each other.
+fgc's own numeric definitions (fgc.frontend.geometry) and the solver paths against each other.
 """
 
 from __future__ import annotations
@@ -19,13 +19,13 @@ import sympy as sp
 
 import fgc
 from fgc.compile import compile_graph
-from fgc.conditioning import RankDeficientWarning
-from fgc.datafile import problem_data, write_data
+from fgc.compiler.kernel import Kernel
 from fgc.errors import DataError
-from fgc.factors import BetweenFactor, GPSFactor, PriorFactor
-from fgc.geometry import Point3, Pose2, Pose3, Rot2, Rot3, special
-from fgc.kernel import Kernel
-from fgc.program import SolverConfig
+from fgc.frontend.factors import BetweenFactor, GPSFactor, PriorFactor
+from fgc.frontend.geometry import Point3, Pose2, Pose3, Rot2, Rot3, special
+from fgc.ir.conditioning import RankDeficientWarning
+from fgc.ir.datafile import problem_data, write_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import load, sim
 from fgc_backends.sim.printer import SimPrinter
 

@@ -15,14 +15,14 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import oracles
 from fgc.compile import compile_graph
-from fgc.conditioning import IllConditionedWarning
-from fgc.datafile import problem_data
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Point3, Pose2, Rot3
-from fgc.program import SolverConfig
-from fgc.verify import to_gtsam, value_to_gtsam, values_from_gtsam
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Point3, Pose2, Rot3
+from fgc.interop import oracles
+from fgc.interop.to_gtsam import to_gtsam, value_to_gtsam, values_from_gtsam
+from fgc.ir.conditioning import IllConditionedWarning
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -314,7 +314,7 @@ def test_incremental_imu_window_matches_isam2_and_batch(imu20):
 
 
 def isam2_per_keyframe(ref: Reference, clusters, windows, tol: float = 1e-11) -> list[dict]:
-    """:func:`fgc.oracles.isam2_per_keyframe` on the reference's graph."""
+    """:func:`fgc.interop.oracles.isam2_per_keyframe` on the reference's graph."""
     return oracles.isam2_per_keyframe(ref.graph, ref.problem, clusters, windows, tol)
 
 

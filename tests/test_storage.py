@@ -14,10 +14,10 @@ import numpy as np
 import pytest
 from test_fuse import imu_window, lio_graph, random_values
 
-from fgc import noise
+from fgc.compiler.fuse import fuse
+from fgc.compiler.storage import ChainLayout, factor_structure, plan_storage
 from fgc.errors import StructureError
-from fgc.fuse import fuse
-from fgc.storage import ChainLayout, factor_structure, plan_storage
+from fgc.frontend import noise
 
 STATE = 15  # pose 6 + velocity 3 + bias 6
 

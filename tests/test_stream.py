@@ -4,7 +4,7 @@ backends that run batch solves only, the ``fgc.stream`` API.
 
 Fixed-lag tolerances (LIO, W = 3): against ``gtsam.ISAM2`` run with the same policy (keyframes
 before the window held, the factors across its edge kept linear where they were marginalised:
-:func:`fgc.oracles.isam2_per_keyframe`) every window variable agrees to 1e-6 after every
+:func:`fgc.interop.oracles.isam2_per_keyframe`) every window variable agrees to 1e-6 after every
 keyframe (measured 1.8e-7, N = 12: fgc's LM stopping at a 1e-12 relative cost decrease).
 Against ``gtsam.BatchFixedLagSmoother`` (lag W − 1, timestamps = keyframe index) the estimates
 agree to 1e-9 until the first keyframe is marginalised (measured 1e-14) and to 5e-2 after it
@@ -24,12 +24,12 @@ import numpy as np
 import pytest
 
 import fgc
-import fgc.factors
-from fgc import oracles
-from fgc.cli import main
-from fgc.datafile import problem_data
-from fgc.streaming import HW_REFUSAL, compile_stream, run_stream
-from fgc.verify import to_gtsam
+import fgc.frontend.factors
+from fgc.app.cli import main
+from fgc.app.streaming import HW_REFUSAL, compile_stream, run_stream
+from fgc.interop import oracles
+from fgc.interop.to_gtsam import to_gtsam
+from fgc.ir.datafile import problem_data
 
 ROOT = Path(__file__).resolve().parent.parent
 LIO = str(ROOT / "examples" / "lio.py")
@@ -182,8 +182,7 @@ def test_lio_400_keyframes_streamed_through_a_window_of_30():
     1.21 m for the final (frozen) trajectory and 5.37 m online — plain ISAM2's online estimate
     is 5.37 m away too (bench/bench_stream.py): a keyframe's estimate on arrival has only its
     own GPS fix ahead of the IMU prediction; bounds 2 m and 6 m."""
-    from fgc import streaming
-
+    from fgc.app import streaming
     graph = lio.build(N=400)
     program = compile_stream(graph, window=30)
     online = {}

@@ -15,11 +15,11 @@ import pytest
 
 import fgc
 from fgc.compile import compile_graph
-from fgc.datafile import MAGIC, problem_data, read_data, write_data
 from fgc.errors import DataError
-from fgc.factors import BetweenFactor, PriorFactor
-from fgc.geometry import Pose2
-from fgc.program import Program, SolverConfig
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Pose2
+from fgc.ir.datafile import MAGIC, problem_data, read_data, write_data
+from fgc.ir.program import Program, SolverConfig
 from fgc_backends import hls, native, sim
 
 

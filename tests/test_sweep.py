@@ -12,9 +12,9 @@ from pathlib import Path
 
 import pytest
 
-from fgc.cli import EXIT_BAD_INPUT, EXIT_OK, load_spec, main
-from fgc.program import SolverConfig
-from fgc.sweep import Design, design_space, group_programs
+from fgc.app.cli import EXIT_BAD_INPUT, EXIT_OK, load_spec, main
+from fgc.app.sweep import Design, design_space, group_programs
+from fgc.ir.program import SolverConfig
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 POSE3 = [str(EXAMPLES / "pose_graph.py"), "-p", "dataset=pose3example.txt"]
@@ -69,8 +69,8 @@ def test_simulator_does_not_depend_on_unit_counts(pose3_graph, tmp_path):
 
 
 def test_a_failing_group_is_reported_not_raised(pose3_graph):
-    from fgc.datafile import ProblemData
-    from fgc.sweep import evaluate_group
+    from fgc.app.sweep import evaluate_group
+    from fgc.ir.datafile import ProblemData
 
     designs = (Design("qr", "float64", units=1),)
     (_, program), = group_programs(pose3_graph, SolverConfig(), designs)

@@ -18,12 +18,13 @@ import pytest
 import sympy as sp
 
 import fgc
-import fgc.derive
-from fgc import Point2, Point3, Pose2, Pose3, Rot2, Vector2, noise
-from fgc.cli import EXIT_BAD_INPUT, EXIT_FAILED, EXIT_OK, main
-from fgc.derive import derive
+import fgc.compiler.derive
+from fgc import Point2, Point3, Pose2, Pose3, Rot2, Vector2
+from fgc.app.cli import EXIT_BAD_INPUT, EXIT_FAILED, EXIT_OK, main
+from fgc.compiler.derive import derive
 from fgc.errors import FgcError
-from fgc.verify import FD_TOLERANCE, linearization_checks, numeric_residual
+from fgc.frontend import noise
+from fgc.interop.to_gtsam import FD_TOLERANCE, linearization_checks, numeric_residual
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 BEACONS = str(EXAMPLES / "range_beacons.py")
@@ -37,7 +38,7 @@ def _example_factor_type(name: str, module: str = "range_beacons"):
 
 
 def _memo_key(ftype) -> str:
-    return fgc.derive.memo_key(ftype)
+    return fgc.compiler.derive.memo_key(ftype)
 
 
 def _verify(argv: list[str], capsys) -> tuple[int, str]:
@@ -61,20 +62,20 @@ def _old_range_to_beacon(pose: Pose2, beacon: Point2, *, measured: float):
 def private_cache(monkeypatch, tmp_path):
     """A derivation cache and in-process memos of the test's own: a test that plants a stale or
     wrong derivation must not leave kernels built from it where later compiles find them."""
-    import fgc.fuse
-    import fgc.lower
-    import fgc.storage
+    import fgc.compiler.fuse
+    import fgc.compiler.lower
+    import fgc.compiler.storage
 
     monkeypatch.setenv("FGC_CACHE_DIR", str(tmp_path / "fgc-cache"))
-    monkeypatch.setattr(fgc.fuse, "_MEMO", {})
-    monkeypatch.setattr(fgc.lower, "_LOWERED", {})
-    monkeypatch.setattr(fgc.storage, "_STRUCTURES", {})
+    monkeypatch.setattr(fgc.compiler.fuse, "_MEMO", {})
+    monkeypatch.setattr(fgc.compiler.lower, "_LOWERED", {})
+    monkeypatch.setattr(fgc.compiler.storage, "_STRUCTURES", {})
 
 
 def test_stale_derivation_fails(monkeypatch, capsys, tmp_path, private_cache):
     current = _example_factor_type("range_to_beacon")
     stale = derive(_old_range_to_beacon, use_cache=False)
-    monkeypatch.setitem(fgc.derive._MEMO, _memo_key(current), stale)
+    monkeypatch.setitem(fgc.compiler.derive._MEMO, _memo_key(current), stale)
     out = tmp_path / "v.json"
     code, text = _verify([BEACONS, "-p", "steps=6", "--json", str(out)], capsys)
     assert code == EXIT_FAILED, text
@@ -93,7 +94,7 @@ def test_scaled_jacobian_fails(monkeypatch, capsys, private_cache):
     m = sf.residual_dim
     outputs = sf.kernel.outputs[:m] + tuple(sp.Float(1.02) * e for e in sf.kernel.outputs[m:])
     wrong = dataclasses.replace(sf, kernel=dataclasses.replace(sf.kernel, outputs=outputs))
-    monkeypatch.setitem(fgc.derive._MEMO, _memo_key(current), wrong)
+    monkeypatch.setitem(fgc.compiler.derive._MEMO, _memo_key(current), wrong)
     code, text = _verify([BEACONS, "-p", "steps=6"], capsys)
     assert code == EXIT_FAILED, text
     assert "range_to_beacon" in text.strip().splitlines()[-1]
@@ -109,16 +110,16 @@ def _plant_fused_kernel(block_name: str, member_type: str, scale: float = 1.02) 
     the first row of member ``member_type`` scaled by ``scale``; the lowered kernels built from
     the correct one are deleted and the in-process memos emptied, so the next compile lowers,
     emits and runs the planted kernel."""
-    import fgc.cache
-    import fgc.fuse
-    import fgc.lower
+    import fgc.compiler.cache
+    import fgc.compiler.fuse
+    import fgc.compiler.lower
 
-    root = fgc.cache.cache_root()
+    root = fgc.compiler.cache.cache_root()
     (path,) = root.glob(f"fuse-{block_name}-*.pkl")
     key = path.stem.rsplit("-", 1)[1]
-    kernels, structure, ops = fgc.cache.load(path, key, tuple)
+    kernels, structure, ops = fgc.compiler.cache.load(path, key, tuple)
     kernel, cost = kernels.get()
-    bt = next(t for t in fgc.fuse._MEMO.values() if t.key == key)
+    bt = next(t for t in fgc.compiler.fuse._MEMO.values() if t.key == key)
     member = next(m for m in bt.members if m.name == member_type)
     m, row, pos, target = bt.residual_dim, member.rows[0], bt.residual_dim, None
     for k, b in enumerate(bt.variables):
@@ -131,11 +132,12 @@ def _plant_fused_kernel(block_name: str, member_type: str, scale: float = 1.02) 
     outputs = list(kernel.outputs)
     outputs[target] = sp.Float(scale) * outputs[target]
     planted = dataclasses.replace(kernel, outputs=tuple(outputs))
-    fgc.cache.store(path, key, (fgc.cache.Deferred((planted, cost)), structure, ops))
+    cache = fgc.compiler.cache
+    cache.store(path, key, (cache.Deferred((planted, cost)), structure, ops))
     for lowered in root.glob("lower-*.pkl"):
         lowered.unlink()
-    fgc.fuse._MEMO.clear()
-    fgc.lower._LOWERED.clear()
+    fgc.compiler.fuse._MEMO.clear()
+    fgc.compiler.lower._LOWERED.clear()
 
 
 def test_wrong_fused_kernel_fails_naming_the_factor(capsys, tmp_path, private_cache):
@@ -167,7 +169,7 @@ def _pair_distance(x1: Pose2, x2: Pose2, *, measured: float):
 
 
 def _fused_chain(n: int = 6) -> fgc.Graph:
-    from fgc.factors import BetweenFactor, PriorFactor
+    from fgc.frontend.factors import BetweenFactor, PriorFactor
 
     rng = np.random.default_rng(5)
     g = fgc.Graph()
@@ -207,8 +209,8 @@ def test_simulator_linearisation_is_cut_per_factor():
     """sim.linearize: each graph factor's whitened (A, b) out of the fused blocks, in its own
     key order, equal to the per-factor derivation; only the factors asked for."""
     from fgc.compile import compile_graph
-    from fgc.datafile import problem_data
-    from fgc.verify import linearize_factor
+    from fgc.interop.to_gtsam import linearize_factor
+    from fgc.ir.datafile import problem_data
     from fgc_backends import sim
 
     graph = _fused_chain()
@@ -231,7 +233,7 @@ def test_simulator_linearisation_is_cut_per_factor():
 
 
 def test_large_types_are_sampled_deterministically():
-    from fgc.verify import sample_factors
+    from fgc.interop.to_gtsam import sample_factors
 
     graph = _fused_chain(12)
     picked = sample_factors(graph, limit=4)
@@ -365,8 +367,9 @@ def test_function_that_fails_on_numbers_is_reported(capsys, tmp_path):
 LOOP_SPEC = '''
 import numpy as np
 import fgc
-from fgc import Pose2, noise
-from fgc.factors import BetweenFactor, PriorFactor
+from fgc import Pose2
+from fgc.frontend import noise
+from fgc.frontend.factors import BetweenFactor, PriorFactor
 
 
 def build(n=5, offset=5.0, twist=2e-5, rot_sigma=1e-3):

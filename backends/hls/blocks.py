@@ -14,8 +14,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from fgc.kernel import Kernel, drop_dead
-from fgc.program import BlockSpec, Program
+from fgc.compiler.kernel import Kernel, drop_dead
+from fgc.ir.program import BlockSpec, Program
 from fgc_backends.hls.names import comment
 from fgc_backends.hls.printer import PrintedKernel, print_kernel
 from fgc_backends.hls.sparsity import ZERO, BlockPattern, GramTiles, block_pattern

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import subprocess
 
-from fgc.datafile import ProblemData, write_data
 from fgc.errors import FgcError
-from fgc.program import Program
+from fgc.ir.datafile import ProblemData, write_data
+from fgc.ir.program import Program
 from fgc_backends.hls.config import check_fixed_data
 from fgc_backends.hls.emitter import HlsProject
 from fgc_backends.hls.results import (

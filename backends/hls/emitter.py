@@ -17,8 +17,8 @@ from pathlib import Path
 import jinja2
 
 import fgc
-from fgc.datafile import MAGIC
-from fgc.program import Program
+from fgc.ir.datafile import MAGIC
+from fgc.ir.program import Program
 from fgc_backends.hls.blocks import block_contexts
 from fgc_backends.hls.config import (
     HlsConfig,

@@ -109,7 +109,7 @@ class OperatorTable:
 
 OPERATOR_KINDS = ("add", "mul", "div", "sqrt", "recip_sqrt", "compare", "sincos", "atan2", "exp",
                   "log", "special")
-# fgc.kernel.OP_KINDS -> operator kinds of this table
+# fgc.compiler.kernel.OP_KINDS -> operator kinds of this table
 KERNEL_KINDS = {"trig": "sincos"}
 
 _PG = "PG060 (Floating-Point Operator v7.1), 7-series"

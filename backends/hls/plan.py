@@ -1,6 +1,7 @@
 """The accelerator plan: typed hardware for one Program and unit options, and its cost.
 
-:func:`build_plan` turns a :class:`fgc.program.Program` and :class:`PlanOptions` (n_u Update units,
+:func:`build_plan` turns a :class:`fgc.ir.program.Program` and :class:`PlanOptions` (n_u Update
+units,
 #CPE, QR unit sets, operator ALLOCATION limits) into an :class:`AcceleratorPlan`: units with their
 allocated operators, memories, channels and *phases* of processes made of loops (trip count, II,
 depth, all derived from :mod:`fgc_backends.hls.operators`). :func:`plan_cost` is nothing but the
@@ -33,7 +34,7 @@ import math
 from dataclasses import dataclass, field
 
 from fgc.errors import FgcError
-from fgc.program import Program
+from fgc.ir.program import Program
 
 from .operators import OperatorTable, table
 

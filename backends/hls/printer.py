@@ -19,11 +19,12 @@ from typing import NamedTuple
 import sympy as sp
 from sympy.printing.cxx import CXX17CodePrinter
 
+from fgc.compiler.kernel import Kernel
 from fgc.errors import FgcError
-from fgc.geometry import special
-from fgc.kernel import Kernel
+from fgc.frontend.geometry import special
 
-# one C++ wrapper per function of the DSL's whitelist (fgc.functions.FUNCTIONS) and per function
+# one C++ wrapper per function of the DSL's whitelist (fgc.frontend.functions.FUNCTIONS) and per
+# function
 # its derivatives introduce (sign, from Abs); tests/test_functions.py prints each
 _FUNCTIONS = {sp.sin: "fgc_sin", sp.cos: "fgc_cos", sp.tan: "fgc_tan", sp.atan2: "fgc_atan2",
               sp.atan: "fgc_atan", sp.exp: "fgc_exp", sp.log: "fgc_log", sp.asin: "fgc_asin",

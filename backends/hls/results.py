@@ -28,9 +28,9 @@ kernel reports them as indices into these tuples.
 for the data's noise (positions near 1e6 m, σ = 1e-9): :func:`judge_precision` checks it on the
 host after the run, never in the synthesisable kernel. It evaluates every factor's whitened
 Jacobian in float64 at the returned solution (the Program's block kernels, through the
-simulator's float64 linearisation) and ρ with :func:`fgc.conditioning.resolution`, the
+simulator's float64 linearisation) and ρ with :func:`fgc.ir.conditioning.resolution`, the
 simulator's formula; ρ ≥ 1 turns "converged" into status "failed", reason "precision_limit",
-with a :class:`fgc.conditioning.PrecisionLimitWarning` — the simulator's verdict.
+with a :class:`fgc.ir.conditioning.PrecisionLimitWarning` — the simulator's verdict.
 """
 
 from __future__ import annotations
@@ -43,10 +43,10 @@ from pathlib import Path
 
 import numpy as np
 
-from fgc import conditioning
-from fgc.datafile import ProblemData
 from fgc.errors import DataError
-from fgc.program import Program
+from fgc.ir import conditioning
+from fgc.ir.datafile import ProblemData
+from fgc.ir.program import Program
 from fgc_backends.hls.names import key_tokens, token_key
 
 RESULT_MAGIC = "FGCRESULT 2"
@@ -189,7 +189,7 @@ def judge_precision(program: Program, data: ProblemData, result: HlsResult,
                     scalar: str) -> HlsResult:
     """``result`` (storage arrays as ``values``) of a run in C++ ``scalar`` on ``data``, with
     the float32 verdict: ρ at the returned solution; ρ ≥ 1 warns
-    (:class:`fgc.conditioning.PrecisionLimitWarning`, the simulator's text) and a "converged"
+    (:class:`fgc.ir.conditioning.PrecisionLimitWarning`, the simulator's text) and a "converged"
     result becomes status "failed", reason "precision_limit". Double runs, and runs that ended
     singular or non-finite (as in the simulator), are returned unchanged; so are fixed-point
     scalars, whose resolution is not a relative eps (not judged)."""
@@ -239,7 +239,7 @@ def whitened_jacobians(program: Program, data: ProblemData, storage: list[np.nda
     """Every factor block's whitened Jacobian rows at ``storage`` (one array per variable),
     evaluated in float64 by the Program's own block kernels (the simulator's linearisation; the
     emitted simulator is kept per Program for the process), paired with their global tangent
-    columns: the ``parts`` of :func:`fgc.conditioning.resolution`."""
+    columns: the ``parts`` of :func:`fgc.ir.conditioning.resolution`."""
     namespace = _linearizer(program)
     lib = namespace["LIB"]
     rows = ([(np.asarray(v, dtype=np.float64), i + 1) for i, v in enumerate(storage)],

@@ -2,7 +2,8 @@
 
 The state update is the one piece of the solver that depends on a variable's type, not on its
 factors. Rather than hand-writing C++ per group, the retraction is derived symbolically from the
-same :mod:`fgc.geometry` classes the factors use (so it has GTSAM's conventions by construction)
+same :mod:`fgc.frontend.geometry` classes the factors use (so it has GTSAM's conventions by
+construction)
 and printed like a block kernel: ``retract_<kind>(x, d, out)`` reads the storage ``x`` and the
 tangent step ``d`` and writes the new storage.
 """
@@ -14,10 +15,10 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-import fgc.geometry as geometry
-from fgc.geometry import LieGroup
-from fgc.kernel import Kernel
-from fgc.program import Program
+import fgc.frontend.geometry as geometry
+from fgc.compiler.kernel import Kernel
+from fgc.frontend.geometry import LieGroup
+from fgc.ir.program import Program
 from fgc_backends.hls.config import HlsConfigError
 from fgc_backends.hls.printer import PrintedKernel, print_kernel
 
@@ -35,7 +36,7 @@ class RetractKind:
 
 
 def variable_class(type_name: str) -> type[LieGroup]:
-    """The :mod:`fgc.geometry` class called ``type_name`` (``VectorN`` for any N)."""
+    """The :mod:`fgc.frontend.geometry` class called ``type_name`` (``VectorN`` for any N)."""
     match = re.fullmatch(r"Vector([1-9][0-9]{0,3})", type_name)
     if match:
         return geometry.vector_type(int(match.group(1)))
@@ -66,7 +67,7 @@ def retract_kinds(program: Program) -> tuple[RetractKind, ...]:
         spec = program.variables[variables[0]]
         if (cls.storage_dim, cls.dim) != (spec.storage_dim, spec.dim):
             raise HlsConfigError(f"variable type {name!r}: the Program's sizes do not match "
-                                 "fgc.geometry's")
+                                 "fgc.frontend.geometry's")
         kernel = retract_kernel(cls)
         names = [f"x[{i}]" for i in range(cls.storage_dim)] + [f"d[{i}]" for i in range(cls.dim)]
         printed = print_kernel(kernel, names, f"retraction of kind {kind}", prefix="r")

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from fgc.program import BlockSpec
+from fgc.ir.program import BlockSpec
 from fgc_backends.hls.config import HlsConfigError
 
 ZERO, ONE, MINUS_ONE, VALUE = "0", "1", "-1", "x"

@@ -1,4 +1,4 @@
-"""fgc's robust special functions (:mod:`fgc.geometry.special`) as printed C++ bodies.
+"""fgc's robust special functions (:mod:`fgc.frontend.geometry.special`) as printed C++ bodies.
 
 The header template defines ``lie_A`` … ``lie_D1`` as inline functions of ``t = θ²``: the Taylor
 series (Horner form, coefficients from ``special.SERIES``) below ``t < 4`` and the closed form
@@ -13,8 +13,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from fgc.geometry import special
-from fgc.kernel import Kernel, drop_dead
+from fgc.compiler.kernel import Kernel, drop_dead
+from fgc.frontend.geometry import special
 from fgc_backends.hls.printer import HlsCodePrinter, print_kernel
 
 

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from fgc.program import Program
+from fgc.ir.program import Program
 
 
 @dataclass(frozen=True)
@@ -55,7 +55,7 @@ def _offsets(sizes: list[int]) -> list[int]:
 
 
 def factor_data_words(program: Program, block: int) -> int:
-    """Numbers on one data-file line of an instance of ``block`` (see :mod:`fgc.datafile`)."""
+    """Numbers on one data-file line of an instance of ``block`` (see :mod:`fgc.ir.datafile`)."""
     return sum(sum(n for _, n in m.measurements) + m.noise_params + 2
                for m in program.blocks[block].members)
 

@@ -22,8 +22,8 @@ from pathlib import Path
 import jinja2
 
 import fgc
-from fgc.datafile import MAGIC
-from fgc.program import Program
+from fgc.ir.datafile import MAGIC
+from fgc.ir.program import Program
 from fgc_backends.hls.blocks import block_contexts
 from fgc_backends.hls.config import HlsConfigError, ap_types_include
 from fgc_backends.hls.lint import lint_files

@@ -23,10 +23,10 @@ from pathlib import Path
 import numpy as np
 
 import fgc
-from fgc.cache import cache_dir
-from fgc.datafile import ProblemData, check_structure
+from fgc.compiler.cache import cache_dir
 from fgc.errors import DataError
-from fgc.program import Program
+from fgc.ir.datafile import ProblemData, check_structure
+from fgc.ir.program import Program
 from fgc_backends.hls.names import identifier
 from fgc_backends.hls.results import HlsResult, judge_precision, result_from_arrays
 from fgc_backends.hls.tables import factor_data_words
@@ -208,7 +208,7 @@ def run(program: Program, data: ProblemData, config: NativeConfig | None = None)
     ``storage`` the raw arrays (:meth:`NativeSolver.run` returns the arrays as ``values``)."""
     from dataclasses import replace
 
-    from fgc.export import values_from_storage
+    from fgc.interop.estimates import values_from_storage
 
     result = load(program, config).run(data)
     return replace(result, values=values_from_storage(program, result.values),

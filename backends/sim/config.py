@@ -30,7 +30,7 @@ class SimConfig:
     - ``diagnose``: after a batch solve, eliminate the undamped, row-equilibrated system at the
       solution once more in float64: names a variable the factors leave undetermined (also
       when LM's damping hid it) and estimates the condition number κ (see
-      :mod:`fgc.conditioning`), with ``condition_iterations`` power iterations per extreme
+      :mod:`fgc.ir.conditioning`), with ``condition_iterations`` power iterations per extreme
       singular value.
     - ``singular_lm_fails``: whether LM reports a rank-deficient solution (found by the
       diagnosis) as status "failed", reason "singular"; by default it keeps LM's status, names

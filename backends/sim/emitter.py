@@ -16,10 +16,10 @@ from pathlib import Path
 import jinja2
 
 import fgc
-from fgc.datafile import MAGIC
 from fgc.errors import FgcError
-from fgc.geometry import special
-from fgc.program import BlockSpec, Program
+from fgc.frontend.geometry import special
+from fgc.ir.datafile import MAGIC
+from fgc.ir.program import BlockSpec, Program
 
 from .config import SimConfig, comment
 from .printer import PrintedKernel, SimPrinter

@@ -18,9 +18,9 @@ import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.precedence import PRECEDENCE
 
+from fgc.compiler.kernel import Kernel, drop_dead
 from fgc.errors import FgcError
-from fgc.geometry import special
-from fgc.kernel import Kernel, drop_dead
+from fgc.frontend.geometry import special
 
 
 class PrintError(FgcError):

@@ -14,11 +14,12 @@ from pathlib import Path
 
 import numpy as np
 
-from fgc import conditioning, geometry
-from fgc.datafile import ProblemData, check_structure, write_data
 from fgc.errors import DataError, FgcError
-from fgc.geometry import LieGroup
-from fgc.program import Program
+from fgc.frontend import geometry
+from fgc.frontend.geometry import LieGroup
+from fgc.ir import conditioning
+from fgc.ir.datafile import ProblemData, check_structure, write_data
+from fgc.ir.program import Program
 
 from .config import SimConfig
 from .emitter import RESULT_FORMAT, emit
@@ -43,9 +44,9 @@ class SimResult:
 
     ``singular_variable`` is the key of the variable whose elimination pivot vanished (reason
     "singular", or LM's rank-deficient solution found by the diagnosis); ``condition`` the
-    diagnosis' κ at the solution (rows and columns equilibrated, :mod:`fgc.conditioning`);
+    diagnosis' κ at the solution (rows and columns equilibrated, :mod:`fgc.ir.conditioning`);
     ``message`` says in words why a run failed or what its warnings are, ``warnings`` holds
-    the texts of the :class:`fgc.conditioning.FgcWarning` s the run issued.
+    the texts of the :class:`fgc.ir.conditioning.FgcWarning` s the run issued.
     """
 
     values: dict[str, LieGroup]

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fgc.program import Program
+from fgc.ir.program import Program
 
 from .params import CostParams, OperatorTable
 from .structure import l_column_counts, row_counts

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from fgc.program import Program
+from fgc.ir.program import Program
 
 from .cholesky import CholeskyTiming, cholesky_timing
 from .kernels import BlockTiming, block_timings

@@ -16,7 +16,7 @@ from functools import lru_cache
 
 import sympy as sp
 
-from fgc.program import BlockSpec, KernelText, Program
+from fgc.ir.program import BlockSpec, KernelText, Program
 
 from .params import KINDS, CostParams, OperatorCounts, OperatorTable
 from .structure import whitened_pattern

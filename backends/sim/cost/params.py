@@ -16,7 +16,8 @@ Sources and assumptions, once (the per-field notes refer to them):
   an order of ±30 %, not post-route numbers.
 - **[HLS-math]** ``hls::sin``/``cos`` of the Vitis HLS math library: range reduction plus a
   polynomial, a few DSPs and ~3 k LUTs, latency of a few tens of cycles.
-- **[Lie]** fgc's Lie coefficients (``fgc.geometry.special``) are a Horner series in t = θ² for
+- **[Lie]** fgc's Lie coefficients (``fgc.frontend.geometry.special``) are a Horner series in t =
+θ² for
   small angles *and* a closed form (sin/cos and a divide) selected by t; the hardware computes
   both. The series is the longer path: 12 terms × (mul + add) in float32 (22 in float64, for the
   D coefficient's Bernoulli series). One rolled Horner loop per unit, so a unit accepts a new
@@ -135,7 +136,7 @@ class CostParams:
     """All latencies, unit sizes, resource and power coefficients of the cost model.
 
     Unit *counts* that the compiler chooses (n_u Update units, #CPE, clock, precision) come from
-    the Program's :class:`fgc.program.SolverConfig`; everything else is here. Latencies are in
+    the Program's :class:`fgc.ir.program.SolverConfig`; everything else is here. Latencies are in
     cycles at ``SolverConfig.clock_mhz`` (the defaults assume 143 MHz; they are not rescaled if
     the clock changes — re-time the operators instead).
     """

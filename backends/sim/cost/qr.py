@@ -24,8 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fgc.program import Program
-from fgc.schedule.ir import EliminationStep
+from fgc.compiler.schedule.ir import EliminationStep
+from fgc.ir.program import Program
 
 from .params import CostParams, OperatorTable
 from .structure import stacked_pattern

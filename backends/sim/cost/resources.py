@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from fgc.program import Program
+from fgc.ir.program import Program
 
 from .kernels import factor_pool_ops, used_pool
 from .params import CostParams, OperatorCounts, OperatorTable

@@ -3,7 +3,7 @@
 Everything here is boolean structure derived from the Program (``BlockSpec.structure`` codes,
 member noise kinds, the schedule's steps); no numbers. Whitening with a full (upper-triangular)
 square-root information matrix makes whitened row i a combination of rows i…m−1 of its member;
-isotropic and diagonal noise keep the Jacobian's zero pattern (as in ``fgc.storage``).
+isotropic and diagonal noise keep the Jacobian's zero pattern (as in ``fgc.compiler.storage``).
 """
 
 from __future__ import annotations
@@ -12,8 +12,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from fgc.program import BlockSpec, Program
-from fgc.schedule.ir import EliminationStep
+from fgc.compiler.schedule.ir import EliminationStep
+from fgc.ir.program import BlockSpec, Program
 
 
 def whitened_pattern(block: BlockSpec) -> tuple[np.ndarray, ...]:

@@ -275,7 +275,7 @@ L COND[N_COND];    // conditionals (R | d), one block per elimination step
 L NF[N_NF];        // update matrices passed to the parent step
 L GRAM[N_GRAM];    // per factor instance: packed lower triangle of [A | b]^T [A | b]
 
-// ---- the rest of the DSL's functions (fgc/functions.py), beside the header's wrappers
+// ---- the rest of the DSL's functions (fgc/frontend/functions.py), beside the header's wrappers
 inline T fgc_asin(T x) { return std::asin(x); }
 inline T fgc_acos(T x) { return std::acos(x); }
 inline T fgc_tanh(T x) { return std::tanh(x); }

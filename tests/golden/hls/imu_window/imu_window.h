@@ -55,7 +55,7 @@ inline T fgc_log1p(T x) { return std::log1p(x); }
 inline T fgc_abs(T x) { return std::fabs(x); }
 inline bool fgc_isfinite(T x) { return std::isfinite(x); }
 
-// ---- robust Lie coefficients of t = θ² (fgc/geometry/special.py): series below t < 4,
+// ---- robust Lie coefficients of t = θ² (fgc/frontend/geometry/special.py): series below t < 4,
 // closed form above
 inline T lie_A(T t) {
     if (t < T(4.0)) {

@@ -1,7 +1,7 @@
 # generated from template run_hls.tcl.jinja by fgc 0.1.0 — do not edit
 # Vitis HLS project of lio_top (lio).
 #   vitis_hls -f run_hls.tcl            C simulation, synthesis and C/RTL co-simulation
-# The testbench reads data.txt (write it with fgc.datafile.write_data), compares its result with
+# The testbench reads data.txt (write it with fgc.ir.datafile.write_data), compares its result with
 # reference.txt (the simulator's, written beside the data; exit 4 on a mismatch) and writes
 # result.txt. No include path is given: Vitis's own ap_fixed.h and hls_stream.h are used (the
 # Makefile's C simulation alone adds the stand-ins).

@@ -171,7 +171,7 @@ T DELTA[N_TANGENT];
 L COND[N_COND];    // conditionals (R | d), one block per elimination step
 L NF[N_NF];        // new factors passed to the parent step
 
-// ---- the rest of the DSL's functions (fgc/functions.py), beside the header's wrappers
+// ---- the rest of the DSL's functions (fgc/frontend/functions.py), beside the header's wrappers
 inline T fgc_asin(T x) { return std::asin(x); }
 inline T fgc_acos(T x) { return std::acos(x); }
 inline T fgc_tanh(T x) { return std::tanh(x); }

@@ -4,14 +4,14 @@
 
 Robust Lie coefficients of t = θ² (A = sin θ/θ, B = (1 − cos θ)/θ², C = (θ − sin θ)/θ³,
 D = 1/θ² − (1 + cos θ)/(2θ sin θ) and their t-derivatives A1 … D1), the SO(3) logarithm and the
-retraction (x ∘ Exp(δ)) of every variable type. The math is fgc's (fgc/geometry/special.py and
+retraction (x ∘ Exp(δ)) of every variable type. The math is fgc's (fgc/frontend/geometry/special.py and
 groups.py), rewritten to act on arrays of many instances at once: branches become numpy.where.
 Every function keeps its inputs' float dtype, so a float32 run computes in float32 throughout.
 """
 
 import numpy
 
-# Taylor series (in t) below this t, closed forms above it (see fgc/geometry/special.py).
+# Taylor series (in t) below this t, closed forms above it (see fgc/frontend/geometry/special.py).
 SERIES_BELOW = 4.0
 # Series coefficients c_0, c_1, … of each coefficient function, highest power first (Horner).
 SERIES = {

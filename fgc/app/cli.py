@@ -1,0 +1,1061 @@
+"""The ``fgc`` command line.
+
+    fgc compile  SPEC --backend B --out DIR           emit a project of backend B: sim, hls, native
+    fgc simulate SPEC [--json F]                      run the accelerator simulator, report cost
+    fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
+    fgc run      SPEC --backend native|sim            solve with the generated solver
+    fgc stream   SPEC --window W | --incremental K    keyframes one at a time (simulator)
+    fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
+    fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
+    fgc metrics  EST.tum REF.tum [--align se3]        ATE / RPE (translation m, rotation deg)
+    fgc cache    info|clear                           the derivation cache ($FGC_CACHE_DIR)
+
+SPEC is a ``.py`` file with ``build(**params)`` returning an ``fgc.Graph`` (``-p KEY=VALUE``), or a
+g2o/TORO file. Solver options are shared by every command. Exit codes: 0 success, 1 verification
+failed (or a solve did not converge), 2 bad input, a non-finite initial error, an output that
+cannot be written or an internal error (one clear line on stderr, never a traceback). Global
+options: ``--version``; ``-q`` prints only the result line; ``-v`` adds stage timings (stderr) and
+progress while factors are derived for the first time (also shown when stderr is a terminal).
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import importlib.util
+import inspect
+import json
+import os
+import re
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import NoReturn
+
+import numpy as np
+
+from fgc.errors import FgcError
+from fgc.frontend.dsl import Graph
+
+EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
+
+
+def parse_params(items: list[str]) -> dict:
+    """``["N=30", "dataset=w100.graph"]`` → ``{"N": 30, "dataset": "w100.graph"}``."""
+    params = {}
+    for item in items:
+        key, sep, raw = item.partition("=")
+        if not sep or not key.isidentifier():
+            raise FgcError(f"parameter {item!r} must look like KEY=VALUE")
+        try:
+            params[key] = ast.literal_eval(raw)
+        except (ValueError, SyntaxError):
+            params[key] = raw
+    return params
+
+
+def load_spec(path: str, params: dict) -> Graph:
+    """Build the graph of a spec: a ``.py`` file with ``build(**params)``, or a g2o/TORO file
+    (which gets a prior on its first pose to fix the gauge) given as a path or as the name of a
+    file in the gtsam wheel's example data (``fgc simulate w100.graph``)."""
+    p = Path(path)
+    if not p.is_file() and p.suffix != ".py" and p.name == path:
+        from fgc.interop.gtsam_data import gtsam_data_dir
+
+        candidate = gtsam_data_dir() / path
+        p = candidate if candidate.is_file() else p
+    if not p.is_file():
+        raise FgcError(f"{path}: no such file")
+    if p.suffix != ".py":
+        return _load_pose_graph_file(p, params)
+    spec = importlib.util.spec_from_file_location(f"fgc_spec_{p.stem}", p)
+    module = importlib.util.module_from_spec(spec)
+    try:
+        spec.loader.exec_module(module)
+    except FgcError:
+        raise
+    except Exception as exc:
+        raise FgcError(f"{path}: the spec failed to load: {type(exc).__name__}: {exc}") from exc
+    build = getattr(module, "build", None)
+    if not callable(build):
+        raise FgcError(f"{path}: a spec must define build(**params) returning an fgc.Graph")
+    unknown = _unknown_parameters(build, params)
+    if unknown:
+        raise FgcError(f"{path}: build() has no parameter {', '.join(map(repr, unknown))} "
+                       f"(it takes: {_parameter_list(build)})")
+    try:
+        graph = build(**params)
+    except FgcError:
+        raise
+    except TypeError as exc:
+        raise FgcError(f"{path}: build() rejected the parameters {sorted(params)}: {exc}") from exc
+    except Exception as exc:  # the user's code: one line naming the spec, not a traceback
+        raise FgcError(f"{path}: build() failed: {type(exc).__name__}: {exc}") from exc
+    if not isinstance(graph, Graph):
+        raise FgcError(f"{path}: build() returned {type(graph).__name__}, not an fgc.Graph")
+    return graph
+
+
+def _unknown_parameters(build, params: dict) -> list[str]:
+    """Names in ``params`` that ``build`` cannot take (none if it accepts **kwargs)."""
+    try:
+        sig = inspect.signature(build)
+    except (TypeError, ValueError):
+        return []
+    kinds = {p.kind for p in sig.parameters.values()}
+    if inspect.Parameter.VAR_KEYWORD in kinds:
+        return []
+    names = {n for n, p in sig.parameters.items()
+             if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)}
+    return sorted(k for k in params if k not in names)
+
+
+def _parameter_list(build) -> str:
+    """``build``'s parameters with their defaults, as -p would set them."""
+    parts = [f"{n}={p.default!r}" if p.default is not p.empty else n
+             for n, p in inspect.signature(build).parameters.items()
+             if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)]
+    return ", ".join(parts) or "no parameters"
+
+
+def _load_pose_graph_file(p: Path, params: dict) -> Graph:
+    from fgc.frontend import noise
+    from fgc.frontend.factors import PriorFactor
+    from fgc.interop.datasets import read_pose_graph
+
+    unknown = sorted(set(params) - {"prior_sigma", "init"})
+    if unknown:
+        raise FgcError(f"{p}: unknown parameters {unknown} for a g2o/TORO file "
+                       "(only prior_sigma, init=odometry|chordal)")
+    graph = read_pose_graph(p, init=str(params.get("init", "odometry")))
+    first = next(iter(graph.variables.values()))
+    sigma = float(params.get("prior_sigma", 1e-3))
+    graph.add(PriorFactor(first.key, first.initial, noise.isotropic(first.type.dim, sigma)))
+    return graph
+
+
+# --------------------------------------------------------------------------------------------
+# shared steps
+# --------------------------------------------------------------------------------------------
+
+
+def solver_config(args, precision_default: str):
+    from fgc.ir.program import SolverConfig
+
+    return SolverConfig(method=args.solver, linear=args.linear, ordering=args.ordering,
+                        precision=args.precision or precision_default,
+                        linear_precision=getattr(args, "linear_precision", None),
+                        units=args.units, cpe=args.cpe, max_iterations=args.max_iterations,
+                        incremental_k=getattr(args, "incremental", None),
+                        batch_every=getattr(args, "batch_every", None), **_clock_mhz(args))
+
+
+def _streaming(args) -> bool:
+    """Whether keyframe-by-keyframe mode was asked for (--incremental or --window); checks
+    the combination and refuses the backends that run batch solves only."""
+    from fgc.app.streaming import HW_REFUSAL, check_mode
+
+    incremental, window = getattr(args, "incremental", None), getattr(args, "window", None)
+    batch_every = getattr(args, "batch_every", None)
+    if incremental is None and window is None and batch_every is None:
+        return False
+    check_mode(incremental, batch_every, window)
+    if getattr(args, "backend", "sim") != "sim":
+        raise FgcError(f"--backend {args.backend}: {HW_REFUSAL}")
+    return True
+
+
+def _clock_mhz(args) -> dict:
+    """``{"clock_mhz": …}`` from ``--clock`` (nothing when it was not given)."""
+    clock = getattr(args, "clock", None)
+    return {"clock_mhz": clock[0]} if clock else {}
+
+
+def _precision_default(args, default: str) -> str:
+    """The precision a ``--scalar`` implies (float → float32, double → float64), checked
+    against an explicit ``--precision``; ``default`` otherwise."""
+    scalar = getattr(args, "scalar", None)
+    implied = {"float": "float32", "double": "float64"}.get(scalar or "")
+    if implied and args.precision and args.precision != implied:
+        raise UsageError(f"fgc {args.command}: --scalar {scalar} contradicts --precision "
+                         f"{args.precision}")
+    return implied or default
+
+
+def _hls_config(args, program):
+    """The HLS backend's config from --scalar, --part and --clock (one clock for the cost
+    model and run_hls.tcl: ``HlsConfig.clock_ns`` is ``1000 / SolverConfig.clock_mhz``)."""
+    hls = _backend("hls")
+    options = {"scalar": getattr(args, "scalar", None) or _c_scalar(program)}
+    if getattr(args, "part", None):
+        options["part"] = args.part
+    if getattr(args, "clock", None):
+        options["clock_ns"] = args.clock[1]
+    return hls.HlsConfig(**options)
+
+
+def _native_config(args, program):
+    """The native backend's config from --scalar (default: the Program's precision); --part
+    names an FPGA, which a CPU program has none of."""
+    if getattr(args, "part", None):
+        raise UsageError(f"fgc {args.command}: --part applies to fgc compile --backend hls only "
+                         "(the native backend builds a CPU program)")
+    native = _backend("native")
+    return native.NativeConfig(scalar=getattr(args, "scalar", None) or _c_scalar(program))
+
+
+class _Stages:
+    """Stage timings for ``-v`` (stderr, so stdout stays deterministic)."""
+
+    def __init__(self, args):
+        self.verbose = getattr(args, "verbose", 0) > 0
+        self.t0 = time.perf_counter()
+
+    def done(self, name: str) -> None:
+        t = time.perf_counter()
+        if self.verbose:
+            print(f"fgc: {name}: {t - self.t0:.2f} s", file=sys.stderr)
+        self.t0 = t
+
+
+def _show_progress(args) -> bool:
+    if getattr(args, "quiet", False):
+        return False
+    return getattr(args, "verbose", 0) > 0 or sys.stderr.isatty()
+
+
+def derive_with_progress(graph: Graph, show: bool) -> int:
+    """Derive every factor type of ``graph`` not yet in the disk cache, printing "deriving
+    factor X (n/m)…" on stderr before each when ``show``; returns how many were derived."""
+    from fgc.compiler.derive import derive, is_cached
+
+    types = list({f.type.name: f.type for f in graph.factors}.values())
+    cold = [ftype for ftype in types if not is_cached(ftype)]
+    for i, ftype in enumerate(cold, 1):
+        if show:
+            print(f"fgc: deriving factor {ftype.name} ({i}/{len(cold)}, not cached; "
+                  "sympy takes seconds per factor)…", file=sys.stderr, flush=True)
+        derive(ftype)
+    return len(cold)
+
+
+def _load(args, precision_default: str):
+    """The spec's graph (derivations done, with progress) and its solver configuration, timed
+    in the returned stages."""
+    stages = _Stages(args)
+    graph = load_spec(args.spec, parse_params(args.param))
+    stages.done("load spec")
+    if derive_with_progress(graph, _show_progress(args)):
+        stages.done("derive (cold)")
+    return stages, graph, solver_config(args, _precision_default(args, precision_default))
+
+
+def _compile(args, precision_default: str):
+    from fgc.compile import compile_graph
+    from fgc.ir.datafile import problem_data
+
+    stages, graph, config = _load(args, precision_default)
+    try:
+        program = compile_graph(graph, config, name=_name(args.spec))
+    except ValueError as exc:
+        if config.incremental_k is None:
+            raise
+        raise FgcError(f"incremental plan: {exc}") from None  # --incremental/--batch-every
+    stages.done("compile")
+    data = problem_data(graph, program)
+    args.stages = stages
+    return graph, program, data
+
+
+def _print(args, lines: list[str], result: str | None = None) -> None:
+    """``lines`` to stdout, or only ``result`` (default: the first line) under ``-q``."""
+    if getattr(args, "quiet", False):
+        print(result if result is not None else lines[0])
+    else:
+        print("\n".join(lines))
+    stages = getattr(args, "stages", None)
+    if stages is not None:
+        stages.done(args.command)
+
+
+def _name(spec: str) -> str:
+    """A C/Python-safe project name from the spec's file name."""
+    stem = "".join(c if c.isalnum() else "_" for c in Path(spec).stem.lower()).strip("_")
+    return stem if stem[:1].isalpha() else f"fgc_{stem or 'problem'}"
+
+
+def _write_json(path: str | None, report: dict) -> None:
+    if path:
+        _write_text(path, json.dumps(report, indent=2, sort_keys=True) + "\n", "--json")
+
+
+def _write_text(path: str, text: str, option: str) -> None:
+    """Write a user-named output file; an OSError becomes one line naming the path."""
+    try:
+        Path(path).write_text(text)
+    except OSError as exc:
+        raise FgcError(f"{option} {path}: cannot write the file: "
+                       f"{exc.strerror or exc}") from None
+
+
+# options naming an output, and whether each is a folder (checked before any solve starts)
+_OUTPUTS = (("json", "--json", False), ("html", "--html", False), ("out", "--out", True),
+            ("plot", "--plot", True), ("values", "--values", False), ("tum", "--tum", False))
+
+
+def check_outputs(args) -> None:
+    """Raise FgcError naming the path if an output given on the command line cannot be written,
+    before the (possibly long) solve, so no result is computed only to be lost."""
+    for attr, option, folder in _OUTPUTS:
+        path = getattr(args, attr, None)
+        if path:
+            _check_writable(str(path), option, folder)
+    if getattr(args, "values", None):
+        from fgc.interop.estimates import FORMATS
+
+        if Path(args.values).suffix.lower() not in FORMATS:
+            raise FgcError(f"--values {args.values}: unknown values format "
+                           f"{Path(args.values).suffix!r}; use {', '.join(FORMATS)}")
+
+
+def _check_writable(path: str, option: str, folder: bool) -> None:
+    p = Path(path)
+    if folder:
+        if p.exists() and not p.is_dir():
+            raise FgcError(f"{option} {path}: exists and is not a folder")
+        target = p
+        while not target.exists() and target != target.parent:
+            target = target.parent
+        if not target.is_dir():
+            raise FgcError(f"{option} {path}: cannot create the folder: {target} is not a "
+                           "folder")
+    else:
+        if p.is_dir():
+            raise FgcError(f"{option} {path}: is a folder, not a file")
+        target = p.parent
+        if not target.is_dir():
+            raise FgcError(f"{option} {path}: the folder {target} does not exist")
+        if p.exists() and not os.access(p, os.W_OK):
+            raise FgcError(f"{option} {path}: the file is not writable")
+    if not os.access(target, os.W_OK | os.X_OK):
+        raise FgcError(f"{option} {path}: no permission to write in {target}")
+
+
+def _estimates_out(args, graph: Graph, report: dict, result_values: dict) -> None:
+    """Keyed values into the JSON report; --values file; --marginals printed and reported."""
+    from fgc.interop import estimates as export
+    values = export.graph_values(graph, result_values)
+    report["values"] = export.values_json(values)
+    quiet = getattr(args, "quiet", False)
+    if getattr(args, "values", None):
+        fmt = export.write_values(args.values, values)
+        if not quiet:
+            print(f"  estimates → {args.values} ({fmt})")
+    if getattr(args, "marginals", None):
+        from fgc.app.marginals import marginal_covariances, parse_keys
+
+        covs = marginal_covariances(graph, parse_keys(args.marginals, graph), values)
+        report["marginals"] = {str(k): {"key": k, "covariance": c.tolist()}
+                               for k, c in covs.items()}
+        for k, c in covs.items() if not quiet else ():
+            print(f"  marginal covariance of {k!r} (diagonal): "
+                  + " ".join(f"{x:.6g}" for x in c.diagonal()))
+
+
+def _backend(name: str):
+    from fgc_backends import load
+
+    return load(name)
+
+
+# --------------------------------------------------------------------------------------------
+# commands
+# --------------------------------------------------------------------------------------------
+
+
+def _cmd_compile(args) -> int:
+    if _streaming(args) and args.window is not None:
+        raise UsageError("fgc compile: --window is a run-time mode of the simulator (the same "
+                         "simulator serves every window); pass it to simulate, verify or stream")
+    _, program, data = _compile(args, "float32")
+    from fgc.ir.datafile import write_data
+
+    out = Path(args.out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "program.json").write_text(program.to_json())
+        write_data(data, out / "data.txt")
+        backend = _backend(args.backend)
+        if args.backend == "hls":
+            project = backend.emit(program, out, _hls_config(args, program))
+            files = list(project.files)
+            # the testbench checks its result against the simulator's (exit 4 on a mismatch)
+            from fgc_backends.hls.results import REFERENCE_FILE, reference_run, write_reference
+
+            files.append(write_reference(out / REFERENCE_FILE, program,
+                                         reference_run(program, data)))
+        elif args.backend == "native":
+            files = list(backend.emit(program, out, _native_config(args, program)).files)
+        else:
+            if getattr(args, "scalar", None) or getattr(args, "part", None):
+                raise UsageError("fgc compile: --scalar applies to --backend hls or native "
+                                 "only, --part to --backend hls only")
+            files = backend.emit(program, out)
+    except OSError as exc:
+        raise FgcError(f"--out {out}: cannot write the project: "
+                       f"{exc.strerror or exc}{_filename(exc)}") from None
+    _print(args, [f"fgc compile {args.spec}: {len(program.variables)} variables, "
+                  f"{len(program.factors)} block instances → {out}/ ({len(files) + 2} files)"])
+    return EXIT_OK
+
+
+def _c_scalar(program) -> str:
+    return "float" if program.solver.precision == "float32" else "double"
+
+
+def _filename(exc: OSError) -> str:
+    return f" ({exc.filename})" if getattr(exc, "filename", None) else ""
+
+
+def _cmd_simulate(args) -> int:
+    from fgc.app.run_report import simulate_report
+
+    if _streaming(args):
+        return _cmd_stream(args)
+    graph, program, data = _compile(args, "float32")
+    try:
+        report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot)
+    except OSError as exc:
+        if not args.plot or not str(getattr(exc, "filename", "")).startswith(args.plot):
+            raise
+        raise FgcError(f"--plot {args.plot}: cannot write the plots: "
+                       f"{exc.strerror or exc}{_filename(exc)}") from None
+    _print(args, report.pop("summary"))
+    _estimates_out(args, graph, report, report.pop("_result_values"))
+    _write_json(args.json, report)
+    return EXIT_OK if report["status"] == "converged" else EXIT_FAILED
+
+
+def _cmd_verify(args) -> int:
+    from fgc.app.run_report import verify_report
+
+    if _streaming(args):
+        return _cmd_verify_stream(args)
+    graph, program, data = _compile(args, "float64")
+    report = verify_report(graph, program, data, _backend("sim"))
+    _print(args, report.pop("summary"),
+           f"fgc verify {args.spec}: {'PASSED' if report['passed'] else 'FAILED'}")
+    _estimates_out(args, graph, report, report.pop("_result_values"))
+    _write_json(args.json, report)
+    return EXIT_OK if report["passed"] else EXIT_FAILED
+
+
+def _cmd_run(args) -> int:
+    if _streaming(args):
+        return _cmd_stream(args)
+    graph, program, data = _compile(args, "float32")
+    import time
+
+    t0 = time.perf_counter()
+    if args.backend == "native":
+        result = _backend("native").run(program, data, _native_config(args, program))
+    else:
+        if getattr(args, "scalar", None) or getattr(args, "part", None):
+            raise UsageError("fgc run: --scalar applies to --backend native only (and --part to "
+                             "fgc compile --backend hls)")
+        result = _backend("sim").run(program, data)
+    status, final, iters = result.status, result.final_error, result.iterations
+    seconds = time.perf_counter() - t0
+    from fgc.app.run_report import require_finite_start
+
+    require_finite_start(graph, result)
+    report = {"backend": args.backend, "status": status, "reason": result.reason,
+              "final_error": final, "iterations": iters, "solve_seconds": seconds}
+    final_text = f"{final:.10g}" if final is not None else "not finite"
+    lines = [f"fgc run {args.spec} ({args.backend}): {status} ({result.reason}), {iters} "
+             f"iterations, final error {final_text}, {seconds * 1e3:.3f} ms (build/load "
+             "included on a first run)"]
+    if status != "converged" and result.message:
+        lines.append(f"fgc run: not converged: {result.message}")
+    _print(args, lines)
+    _estimates_out(args, graph, report, result.values)  # fgc values by Program key
+    _write_json(args.json, report)
+    return EXIT_OK if status == "converged" else EXIT_FAILED
+
+
+def _stream_setup(args, precision_default: str):
+    from fgc.app.streaming import compile_stream
+    from fgc.ir.datafile import problem_data
+
+    stages, graph, config = _load(args, precision_default)
+    program = compile_stream(graph, config, window=getattr(args, "window", None),
+                             name=_name(args.spec))
+    stages.done("compile")
+    args.stages = stages
+    return graph, program, problem_data(graph, program)
+
+
+def _mode_text(program, window) -> str:
+    if window is not None:
+        return f"fixed-lag window of {window} keyframes"
+    plan = program.schedule.incremental
+    batches = ",".join(str(b) for b in plan.batch_keyframes) or "none"
+    return f"incremental, newest {plan.window} clusters re-eliminated, batch steps {batches}"
+
+
+def _newest_text(update, program) -> str:
+    from fgc.frontend.geometry import Pose2, Pose3
+
+    parts = []
+    for key, value in update.newest(program).items():
+        if isinstance(value, (Pose3, Pose2)):
+            parts.append(f"{key} t=[" + " ".join(f"{x:.4f}" for x in np.asarray(value.t, float))
+                         + "]")
+    return ", ".join(parts) or f"{len(update.values)} variables"
+
+
+def _cmd_stream(args) -> int:
+    from fgc.app import streaming
+    from fgc.interop import estimates as export
+    if not _streaming(args):
+        raise FgcError(f"fgc {args.command} needs --incremental K or --window W")
+    graph, program, data = _stream_setup(args, "float64")
+    window = getattr(args, "window", None)
+    quiet = getattr(args, "quiet", False)
+    n = len(program.schedule.clusters)
+    if not quiet:
+        print(f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, "
+              f"simulator {program.solver.precision}; per keyframe: the accelerator plan's "
+              f"latency (model estimate: the update's iterations as batch iterations of a chain "
+              f"as long as its window; {streaming.UNPRICED} otherwise) and the simulator's "
+              "wall time", flush=True)
+    online: dict = {}
+    pricer = streaming.UpdatePricer(graph, program, window)
+    priced: list = []
+
+    def progress(update) -> None:
+        online.update(update.newest(program))
+        price = pricer.price(update)
+        priced.append(price)
+        if not quiet:
+            model = (f"{price['latency_ms']:7.3f} ms (model estimate, {price['window']}-keyframe"
+                     " chain)" if price else "model estimate not available")
+            print(f"  keyframe {update.keyframe:>4} ({update.mode}, from {update.first}): "
+                  f"{update.iterations:>3} iterations, {update.status}, {model}, "
+                  f"{update.seconds * 1e3:8.2f} ms (simulator wall time); "
+                  f"{_newest_text(update, program)}", flush=True)
+
+    result = streaming.run_stream(program, data, window, progress)
+    from fgc.app.run_report import require_finite_start
+
+    require_finite_start(graph, result)
+    final = {str(k): v for k, v in result.values.items()}
+    acc = streaming.accuracy(graph, final, online, streaming.batch_optimum(graph))
+    times = streaming.timing_summary(u["seconds"] for u in result.updates)
+    report = {"spec": args.spec, "keyframes": n, "mode": "fixed-lag" if window else
+              "incremental", "window": window, "incremental_k": program.solver.incremental_k,
+              "batch_every": program.solver.batch_every, "status": result.status,
+              "reason": result.reason, "iterations": result.iterations,
+              "model_estimate": priced, "simulator_update_time": times,
+              "accuracy_vs_batch_optimum": acc,
+              "updates": [{k: v for k, v in u.items() if k != "values"}
+                          for u in result.updates]}
+    ate = acc.get("final", {}).get("translation", {})
+    ate_online = acc.get("online", {}).get("translation", {})
+    head = (f"fgc stream {args.spec}: {result.status} over {n} keyframes; simulator update "
+            f"median {times['median_ms']:.2f} ms, p99 {times['p99_ms']:.2f} ms (wall time); "
+            f"vs batch optimum: ATE rmse {ate.get('rmse', float('nan')):.4g} m final, "
+            f"{ate_online.get('rmse', float('nan')):.4g} m online")
+    lines = [head, f"  largest tangent-space distance from the batch optimum "
+                   f"{acc['max_state_distance']:.3g} (final estimate)"]
+    model = [p["latency_ms"] for p in priced if p]
+    if model:
+        lines.append(f"  accelerator plan per update (model estimate): median "
+                     f"{np.median(model):.3f} ms, p99 {np.percentile(model, 99):.3f} ms over "
+                     f"{len(model)} priced updates ({len(priced) - len(model)} not priced: "
+                     f"{streaming.UNPRICED})")
+    if getattr(args, "tum", None):
+        values = export.graph_values(graph, result.values)
+        export.write_values(args.tum, values)
+        lines.append(f"  trajectory → {args.tum} (TUM, t = key order index)")
+    _print(args, lines)
+    _estimates_out(args, graph, report, result.values)
+    _write_json(args.json, report)
+    return EXIT_OK if result.status == "converged" else EXIT_FAILED
+
+
+def _cmd_verify_stream(args) -> int:
+    from fgc.app import streaming
+    from fgc.app.run_report import ROT_TOL_F32, STATE_TOL_F64, require_finite_start
+    from fgc.interop import oracles
+    from fgc.interop.to_gtsam import to_gtsam
+
+    graph, program, data = _stream_setup(args, "float64")
+    window = getattr(args, "window", None)
+    result = streaming.run_stream(program, data, window)
+    require_finite_start(graph, result)
+    problem = to_gtsam(graph)
+    clusters = program.schedule.clusters
+    windows = [(u["first"], u["mode"] == "batch") for u in result.updates]
+    oracle = oracles.isam2_per_keyframe(graph, problem, clusters, windows)
+    oracle = [{k: e[k] for k in u["values"]} for u, e in zip(result.updates, oracle,
+                                                              strict=True)]
+    dist = oracles.per_keyframe_distance(result.updates, oracle)
+    tol = STATE_TOL_F64 if program.solver.precision == "float64" else ROT_TOL_F32
+    worst = int(np.argmax(dist))
+    passed = result.status == "converged" and max(dist) <= tol
+    report = {"mode": "fixed-lag" if window else "incremental", "window": window,
+              "keyframes": len(clusters), "status": result.status, "tolerance": tol,
+              "per_keyframe_distance_isam2": dist, "passed": passed}
+    lines = [f"fgc verify {args.spec}: {len(clusters)} keyframes, {_mode_text(program, window)}"
+             f", simulator {program.solver.precision} vs gtsam.ISAM2 with the same policy "
+             "(older keyframes held, factors across the window's edge kept linear), after "
+             "every keyframe",
+             f"  largest state difference {max(dist):.2e} at keyframe {worst} (tolerance "
+             f"{tol:g})"]
+    if window is not None:
+        fls = oracles.fixed_lag_per_keyframe(graph, problem, clusters, window, "batch")
+        fdist = oracles.per_keyframe_distance(result.updates, fls)
+        report["per_keyframe_distance_batch_fixed_lag"] = fdist
+        lines.append(f"  gtsam.BatchFixedLagSmoother (lag {window - 1}, timestamps = keyframe "
+                     f"index): largest difference {max(fdist):.2e} (reported, not judged: "
+                     "measured up to 1e-2 on LIO once keyframes are marginalised; see the "
+                     "README)")
+    verdict = "PASSED" if passed else "FAILED"
+    lines.append(f"  {verdict}: " + (f"every keyframe within {tol:g} of ISAM2" if passed else
+                                     f"status {result.status}, largest difference "
+                                     f"{max(dist):.2e} > {tol:g}"))
+    _print(args, lines, f"fgc verify {args.spec}: {verdict}")
+    _estimates_out(args, graph, report, result.values)
+    _write_json(args.json, report)
+    return EXIT_OK if passed else EXIT_FAILED
+
+
+def _cmd_report(args) -> int:
+    from fgc.app.design_report import design_report, figures, format_text, render_html
+
+    if _streaming(args) and getattr(args, "window", None) is not None:
+        raise UsageError("fgc report: --window is a run-time mode; report the design with "
+                         "--incremental K (its plan is compiled in) or none")
+    graph, program, data = _compile(args, "float32")
+    report = design_report(args.spec, parse_params(args.param), graph, program, data,
+                           _backend("sim"), iterations=args.iterations)
+    c = report["cost"]
+    fits = "fits" if c["fits"] else "does NOT fit"
+    _print(args, format_text(report).rstrip("\n").split("\n"),
+           f"fgc report {args.spec}: {c['cycles']:,} cycles = {c['latency_ms']:.3f} ms at "
+           f"{c['clock_mhz']:g} MHz, {c['resources']['dsp']} DSP, {fits} {c['device']} "
+           "(model estimate)")
+    _write_json(args.json, report)
+    if args.html:
+        _write_text(args.html, render_html(report, figures(report)), "--html")
+    return EXIT_OK
+
+
+def _cmd_sweep(args) -> int:
+    from fgc.app import sweep
+    from fgc.ir.program import SolverConfig
+
+    args.stages = _Stages(args)
+    graph = load_spec(args.spec, parse_params(args.param))
+    args.stages.done("load spec")
+    if derive_with_progress(graph, _show_progress(args)):
+        args.stages.done("derive (cold)")
+    designs = sweep.design_space(args.units, args.cpe, args.precision, args.linear)
+    base = SolverConfig(method=args.solver, ordering=args.ordering,
+                        max_iterations=args.max_iterations, **_clock_mhz(args))
+    out = Path(args.out or f"fgc-sweep-{_name(args.spec)}")
+    with sweep.open_executor(args.jobs, args.executor) as pool, \
+            sweep.progress_bar(len(designs), args.progress) as progress:
+        result = sweep.run_sweep(graph, base, designs, pool, _name(args.spec), progress)
+    files = sweep.write_outputs(result, out, title=_name(args.spec))
+    _print(args, [*sweep.summary_lines(result, args.spec),
+                  f"wrote {', '.join(str(f) for f in files)}"])
+    failed = [r for r in result.rows if r["status"] != "converged"]
+    return EXIT_FAILED if failed else EXIT_OK
+
+
+def _cmd_metrics(args) -> int:
+    from fgc.app import metrics
+    est, ref = metrics.read_tum(args.estimate), metrics.read_tum(args.reference)
+    results, lines = {}, [f"fgc metrics {args.estimate} vs {args.reference}: {len(est)} poses, "
+                          f"alignment {args.align}, RPE delta {args.delta} frames"
+                          + (" (all pairs)" if args.all_pairs else "")]
+    for name, func, kw in (("ate", metrics.ate, {}),
+                           ("rpe", metrics.rpe, {"delta": args.delta,
+                                                 "all_pairs": args.all_pairs})):
+        for relation in metrics.RELATIONS:
+            res = func(est, ref, align=args.align, relation=relation,
+                       max_time_diff=args.max_time_diff, **kw)
+            stats = res.statistics()
+            results[f"{name}_{relation}"] = {"unit": res.unit, **stats}
+            lines.append(f"  {name.upper()} {relation:<11} [{res.unit:>3}]  " + "  ".join(
+                f"{k} {v:.6g}" for k, v in stats.items() if k != "sse"))
+        if name == "ate" and args.align != "none":
+            results["alignment"] = {"rotation": res.alignment.rotation.tolist(),
+                                    "translation": res.alignment.translation.tolist(),
+                                    "scale": res.alignment.scale}
+    _print(args, lines, lines[1].strip())
+    _write_json(args.json, results)
+    return EXIT_OK
+
+
+def _metrics_parser(sub) -> None:
+    p = sub.add_parser("metrics", help="ATE and RPE of a TUM trajectory against a reference "
+                       "(translation in m, rotation in degrees; evo's definitions)",
+                       description="fgc metrics: absolute trajectory error (ATE) and relative "
+                       "pose error (RPE) of EST against REF, both TUM files (timestamp tx ty tz "
+                       "qx qy qz qw) paired by index; translation (m) and rotation angle "
+                       "(degrees), as evo_ape / evo_rpe compute them",
+                       epilog="exit status: 0 success, 2 bad input (one line on stderr)",
+                       formatter_class=_Formatter)
+    p.add_argument("estimate", metavar="EST", help="estimated trajectory (TUM)")
+    p.add_argument("reference", metavar="REF", help="reference trajectory (TUM)")
+    p.add_argument("--align", choices=("none", "se3", "sim3"), default="none",
+                   help="Umeyama alignment of EST onto REF: se3 = evo's --align, sim3 = "
+                        "--align --correct_scale")
+    p.add_argument("--delta", type=_positive_int, default=1, metavar="N",
+                   help="RPE frame distance")
+    p.add_argument("--all-pairs", action="store_true",
+                   help="RPE over every pair (i, i+delta), not (0, delta), (delta, 2 delta), …")
+    p.add_argument("--max-time-diff", type=float, default=0.01, metavar="S",
+                   help="largest timestamp difference between paired poses")
+    p.add_argument("--json", metavar="FILE", help="also write the statistics as JSON")
+    _verbosity_args(p, suppress=True)
+    p.set_defaults(func=_cmd_metrics)
+
+
+# --------------------------------------------------------------------------------------------
+# parser
+# --------------------------------------------------------------------------------------------
+
+
+class UsageError(FgcError):
+    """A command line argparse rejects (reported as one line, exit 2)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse, but a bad argument is one line on stderr (via main), not usage + exit."""
+
+    def error(self, message: str) -> NoReturn:
+        raise UsageError(f"{self.prog}: {message} (see {self.prog} --help)")
+
+
+class _Formatter(argparse.RawDescriptionHelpFormatter):
+    """Keeps the description's layout and appends real defaults (not None/False) to help."""
+
+    def _get_help_string(self, action: argparse.Action) -> str:
+        text = action.help or ""
+        if action.default not in (None, False, [], argparse.SUPPRESS) and action.option_strings \
+                and "default" not in text:
+            default = action.default
+            if isinstance(default, tuple):
+                default = ",".join(str(v) for v in default)
+            text += f" (default: {default})"
+        return text
+
+
+def _positive_int(text: str) -> int:
+    if not text.strip().isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a positive integer")
+    return int(text)
+
+
+def _int_list(text: str) -> tuple[int, ...]:
+    """``"1,2,4"`` → ``(1, 2, 4)`` (positive, duplicates dropped)."""
+    items = [s.strip() for s in text.split(",")]
+    if not all(s.isdigit() and int(s) >= 1 for s in items):
+        raise argparse.ArgumentTypeError(
+            f"{text!r} is not a comma-separated list of positive integers (e.g. 1,2,4,8)")
+    return tuple(dict.fromkeys(int(s) for s in items))
+
+
+def _choice_list(choices: tuple[str, ...]) -> Callable[[str], tuple[str, ...]]:
+    """An argparse type for a comma-separated subset of ``choices``."""
+
+    def parse(text: str) -> tuple[str, ...]:
+        items = [s.strip() for s in text.split(",")]
+        bad = [s for s in items if s not in choices]
+        if bad:
+            raise argparse.ArgumentTypeError(
+                f"{text!r}: {', '.join(repr(b) for b in bad)} not among {', '.join(choices)}")
+        return tuple(dict.fromkeys(items))
+
+    return parse
+
+
+def _scheduler_address(text: str) -> str:
+    if not re.fullmatch(r"[a-z]+://[^\s/]+:[0-9]+", text):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a scheduler address like "
+                                         "tcp://host:8786")
+    return text
+
+
+def _clock(text: str) -> tuple[float, float]:
+    """``--clock``: MHz or ns → (MHz, ns)."""
+    from fgc_backends.hls.config import HlsConfigError, parse_clock
+
+    try:
+        return parse_clock(text)
+    except HlsConfigError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _scalar(text: str) -> str:
+    from fgc_backends.hls.config import HlsConfigError, check_scalar
+
+    text = re.sub(r"\s+", "", text)
+    try:
+        return check_scalar(text)
+    except HlsConfigError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _part(text: str) -> str:
+    if not re.fullmatch(r"[A-Za-z0-9_-]{1,64}", text):
+        raise argparse.ArgumentTypeError(f"FPGA part {text!r} is not a plain part name "
+                                         "(letters, digits, - and _)")
+    return text
+
+
+def _verbosity_args(p: argparse.ArgumentParser, suppress: bool) -> None:
+    """-v / -q, on the main parser and again on each command (so they go either side of it;
+    a command's copy must not reset what the main parser set, hence SUPPRESS there)."""
+    v = p.add_mutually_exclusive_group()
+    v.add_argument("-v", "--verbose", action="count",
+                   default=argparse.SUPPRESS if suppress else 0,
+                   help="stage timings and derivation progress on stderr")
+    v.add_argument("-q", "--quiet", action="store_true",
+                   default=argparse.SUPPRESS if suppress else False,
+                   help="print only the result line")
+
+
+def _hardware_args(p: argparse.ArgumentParser, name: str) -> None:
+    h = p.add_argument_group("hardware (the cost model's figures are model estimates)")
+    h.add_argument("--clock", type=_clock, metavar="F",
+                   help="accelerator clock, e.g. 143MHz or 7ns (a bare number ≥ 20 is MHz): "
+                        "the cost model's clock and, for --backend hls, run_hls.tcl's period "
+                        "(default: 143 MHz; run_hls.tcl 7 ns)")
+    if name in ("compile", "run"):
+        h.add_argument("--part", type=_part, metavar="PART",
+                       help="FPGA part for run_hls.tcl, --backend hls only (default: "
+                            "xc7z045ffg900-2; the cost model's capacities stay the XC7Z045's)")
+        h.add_argument("--scalar", type=_scalar, metavar="T",
+                       help="C++ scalar of the HLS accelerator or native solver: float, double or "
+                            "ap_fixed<W,I> (2 ≤ W ≤ 1024, 1 ≤ I ≤ W; needs fgc[hls-fixed]) "
+                            "(default: from --precision)")
+
+
+def _spec_args(p: argparse.ArgumentParser, json_help: str | None) -> None:
+    p.add_argument("spec", help="spec file (.py with build(**params)) or a g2o/TORO file")
+    p.add_argument("-p", "--param", action="append", default=[], metavar="KEY=VALUE",
+                   help="parameter passed to the spec's build() (repeatable)")
+    if json_help:
+        p.add_argument("--json", metavar="FILE", help=json_help)
+
+
+def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
+    s = p.add_argument_group("solver")
+    s.add_argument("--solver", choices=("gn", "lm"), default="lm", help="Gauss-Newton or LM")
+    s.add_argument("--ordering", default="auto",
+                   choices=("auto", "two-ended", "serial", "min-degree", "nested-dissection"),
+                   help="elimination ordering (auto = two-ended on chains)")
+    s.add_argument("--max-iterations", type=_positive_int, default=100, metavar="K",
+                   help="k_max")
+    if design_space:
+        d = p.add_argument_group("design space (comma-separated lists; the product is swept)")
+        d.add_argument("--linear", type=_choice_list(("qr", "cholesky")), metavar="LIST",
+                       default=("qr", "cholesky"), help="linear solvers: qr, cholesky")
+        d.add_argument("--precision", type=_choice_list(("float32", "float64")),
+                       metavar="LIST", default=("float32", "float64"),
+                       help="arithmetic of the accelerator: float32, float64")
+        d.add_argument("--units", type=_int_list, default=(1, 2, 4, 8), metavar="LIST",
+                       help="n_u Update units per QR block (QR designs)")
+        d.add_argument("--cpe", type=_int_list, default=(5, 20, 40, 80, 120), metavar="LIST",
+                       help="#CPE Cholesky process elements (Cholesky designs)")
+        return
+    s.add_argument("--linear", choices=("qr", "cholesky"), default="qr", help="linear solver")
+    s.add_argument("--precision", choices=("float32", "float64"),
+                   help="arithmetic of the accelerator (default: float32; verify and the "
+                        "keyframe-by-keyframe modes: float64)")
+    s.add_argument("--linear-precision", choices=("float32", "float64"),
+                   help="widen the linear solver alone (default: --precision); float32 with a "
+                        "float64 solver suits ill-conditioned Cholesky problems")
+    s.add_argument("--units", type=_positive_int, default=4, metavar="N",
+                   help="n_u Update units per QR block")
+    s.add_argument("--cpe", type=_positive_int, default=20, metavar="N",
+                   help="#CPE Cholesky process elements")
+
+
+def _streaming_args(name: str, p: argparse.ArgumentParser) -> None:
+    if name not in ("compile", "simulate", "verify", "run", "report", "stream"):
+        return
+    g = p.add_argument_group("keyframe by keyframe (the simulator only; issue 19)")
+    g.add_argument("--incremental", type=_positive_int, metavar="K",
+                   help="incremental smoothing: each keyframe re-eliminates the newest K "
+                        "clusters (SolverConfig.incremental_k)")
+    g.add_argument("--batch-every", type=_batch_every, metavar="B",
+                   help="batch steps of the incremental plan: a period (10) or keyframe "
+                        "indices (5,15,25; one keyframe: 5,) (SolverConfig.batch_every)")
+    if name != "report":
+        g.add_argument("--window", type=_positive_int, metavar="W",
+                       help="fixed-lag window: hold the newest W keyframes, marginalise the "
+                            "one leaving into a prior on the window")
+
+
+def _batch_every(text: str):
+    """``--batch-every``: ``10`` → a period, ``5,15,25`` → those keyframes."""
+    if "," not in text:
+        return _positive_int(text)
+    items = [s.strip() for s in text.split(",") if s.strip()]
+    if not items or not all(s.isdigit() for s in items):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a period or a comma-separated list "
+                                         "of keyframe indices (e.g. 5,15,25)")
+    return tuple(sorted({int(s) for s in items}))
+
+
+def _command_args(name: str, p: argparse.ArgumentParser) -> None:
+    _streaming_args(name, p)
+    if name == "stream":
+        p.add_argument("--tum", metavar="FILE", help="write the streamed trajectory (TUM)")
+    if name in ("simulate", "verify", "run", "stream"):
+        p.add_argument("--values", metavar="FILE",
+                       help="write the optimised values: .g2o, .tum/.txt (TUM poses, t = key "
+                            "order index) or .csv, by extension")
+    if name in ("simulate", "run"):
+        p.add_argument("--marginals", metavar="KEY,KEY",
+                       help="print (and put in --json) the marginal covariances of these "
+                            "variables at the estimate")
+    if name == "compile":
+        p.add_argument("--backend", choices=("sim", "hls", "native"), default="sim",
+                       help="backend")
+        p.add_argument("--out", required=True, metavar="DIR", help="output folder")
+    elif name == "run":
+        p.add_argument("--backend", choices=("native", "sim"), default="native", help="solver")
+    elif name == "simulate":
+        p.add_argument("--plot", metavar="DIR", help="write plots (needs matplotlib)")
+    elif name == "report":
+        p.add_argument("--html", metavar="FILE", help="also write a self-contained HTML page")
+        p.add_argument("--iterations", type=_positive_int, metavar="K",
+                       help="cost K iterations instead of running the simulator")
+    elif name == "sweep":
+        p.add_argument("--jobs", type=_positive_int, metavar="N",
+                       help="local worker processes (default: os.cpu_count())")
+        p.add_argument("--executor", type=_scheduler_address, metavar="ADDRESS",
+                       help="run on the Dask scheduler at ADDRESS (tcp://host:port) instead")
+        p.add_argument("--out", metavar="DIR",
+                       help="folder for sweep.csv, sweep.json, pareto.png, accuracy.png "
+                            "(default: fgc-sweep-NAME)")
+        p.add_argument("--progress", action=argparse.BooleanOptionalAction,
+                       help="progress bar on stderr (default: when stderr is a terminal)")
+
+
+_COMMANDS = (
+    # name, function, one-line help, what exit code 1 means, --json help
+    ("compile", _cmd_compile, "emit a backend project for a spec", None, None),
+    ("simulate", _cmd_simulate, "run the accelerator simulator: numbers, cycles, resources",
+     "the simulator did not converge", "also write the report as JSON"),
+    ("verify", _cmd_verify, "solve with the simulator and with GTSAM and compare",
+     "FAILED (the verdict line says why)", "also write the report as JSON"),
+    ("run", _cmd_run, "solve with the generated native solver (or the simulator)",
+     "the solve did not converge", "also write the report as JSON"),
+    ("report", _cmd_report, "the compiled design at a glance: blocks, schedule, storage, "
+     "cycles, resources, energy", None, "also write the report as JSON"),
+    ("stream", _cmd_stream, "feed a chain's keyframes one at a time to the simulator "
+     "(--window W or --incremental K): per-keyframe latency and estimate, trajectory, accuracy "
+     "against the batch optimum", "the stream did not converge", "also write the report as "
+     "JSON"),
+    ("sweep", _cmd_sweep, "design-space exploration: latency, resources, energy and accuracy "
+     "vs GTSAM per design, Pareto plot", "a design did not converge or failed", None),
+)
+
+
+def _cmd_cache(args) -> int:
+    from fgc.compiler import cache
+    if args.action == "clear":
+        n = cache.clear()
+        print(f"removed {n} entr{'y' if n == 1 else 'ies'} from {cache.cache_root()}")
+        return EXIT_OK
+    stats = cache.info()
+    if args.json_stdout:
+        print(json.dumps(stats, indent=2))
+        return EXIT_OK
+    print(f"cache dir: {stats['dir']}")
+    for kind, n in stats["entries"].items():
+        print(f"  {kind:<10} {n:>6} entries")
+    print(f"total size: {stats['bytes'] / 1e6:.1f} MB ({stats['bytes']} bytes)")
+    return EXIT_OK
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="fgc", description="fgc: a factor-graph compiler",
+                     epilog="Run 'fgc COMMAND --help' for a command's options. Exit status: 0 "
+                            "success, 1 verification failed (or a solve did not converge), 2 "
+                            "bad input (one line on stderr).", formatter_class=_Formatter)
+    from fgc import __version__
+
+    parser.add_argument("--version", action="version", version=f"fgc {__version__}")
+    _verbosity_args(parser, suppress=False)
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for name, func, help_text, fails, json_help in _COMMANDS:
+        epilog = ("exit status: 0 success" + (f", 1 {fails}" if fails else "")
+                  + ", 2 bad input (one line on stderr)")
+        p = sub.add_parser(name, help=help_text, description=f"fgc {name}: {help_text}",
+                           epilog=epilog, formatter_class=_Formatter)
+        _spec_args(p, json_help)
+        _solver_args(p, design_space=name == "sweep")
+        _command_args(name, p)
+        _hardware_args(p, name)
+        _verbosity_args(p, suppress=True)
+        p.set_defaults(func=func)
+    _metrics_parser(sub)
+    help_text = "the derivation cache ($FGC_CACHE_DIR, default ~/.cache/fgc): info or clear"
+    p = sub.add_parser("cache", help=help_text, description=f"fgc cache: {help_text}",
+                       epilog="exit status: 0 success", formatter_class=_Formatter)
+    p.add_argument("action", choices=("info", "clear"),
+                   help="info: directory, entries per kind, total size; clear: delete the entries")
+    p.add_argument("--json", action="store_true", dest="json_stdout",
+                   help="info as JSON on stdout")
+    _verbosity_args(p, suppress=True)
+    p.set_defaults(func=_cmd_cache)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run one command; every error reaches the user as one line on stderr (exit 2), never as a
+    traceback (set FGC_TRACEBACK=1 to see the traceback of an unexpected error)."""
+    args = None
+    try:
+        args = build_parser().parse_args(argv)
+        check_outputs(args)
+        return args.func(args)
+    except UsageError as exc:
+        print(str(exc), file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except FgcError as exc:
+        _error_line(args, str(exc))
+        return EXIT_BAD_INPUT
+    except BrokenPipeError:  # output piped into e.g. `head`: stop quietly, like other tools
+        sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush
+        return EXIT_OK
+    except OSError as exc:  # a file the user named (spec, data, output) cannot be read/written
+        _error_line(args, f"{exc.strerror or exc}{_filename(exc)}")
+        return EXIT_BAD_INPUT
+    except Exception as exc:
+        if os.environ.get("FGC_TRACEBACK"):
+            raise
+        _error_line(args, f"internal error (a bug in fgc; FGC_TRACEBACK=1 shows the traceback): "
+                          f"{type(exc).__name__}: {exc}")
+        return EXIT_BAD_INPUT
+
+
+def _error_line(args, text: str) -> None:
+    spec = getattr(args, "spec", None)
+    where = f"{spec}: " if spec and spec not in text else ""  # which spec, if not said
+    line = " ".join(f"fgc: error: {where}{text}".split())  # one line, whatever the message
+    print(line, file=sys.stderr)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,361 @@
+"""Reports behind ``fgc simulate`` and ``fgc verify``: plain dicts (JSON-able) with a summary.
+
+Backends are passed in (never imported here), so fgc stays independent of any backend.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import tempfile
+import time
+from importlib import import_module
+from pathlib import Path
+
+import numpy as np
+
+from fgc.frontend.dsl import Graph
+from fgc.frontend.geometry import Pose2, Pose3, Rot2, Rot3
+
+# float64 must reproduce GTSAM's optimum; float32 is the hardware type (issue 4's bounds)
+STATE_TOL_F64 = 1e-6
+ROT_TOL_F32, POS_TOL_F32 = 1e-3, 1e-2
+
+
+def _values_by_key(graph: Graph, result_values: dict) -> dict:
+    return {k: result_values[str(k)] for k in graph.variables}
+
+
+def state_errors(graph: Graph, ours: dict, theirs: dict) -> dict:
+    """Largest tangent-space distance, rotation angle (rad) and translation (m, for poses and
+    points) between two value sets of ``graph``'s variables."""
+    tangent = rot = pos = 0.0
+    for k in graph.variables:
+        a, b = theirs[k], ours[k]
+        tangent = max(tangent, float(np.linalg.norm(a.local(b))))
+        if isinstance(a, (Pose3, Pose2)):
+            pos = max(pos, float(np.linalg.norm(np.asarray(a.t, float) - np.asarray(b.t, float))))
+            rot = max(rot, _angle(a.r, b.r))
+        elif isinstance(a, (Rot3, Rot2)):
+            rot = max(rot, _angle(a, b))
+        else:
+            pos = max(pos, float(np.linalg.norm(a.local(b))))
+    return {"max_state_error": tangent, "max_rotation_error": rot,
+            "max_translation_error": pos}
+
+
+def _angle(a, b) -> float:
+    return float(np.linalg.norm(np.atleast_1d(a.local(b))))
+
+
+def gtsam_optimize(problem, linear: str = "qr", max_iterations: int = 100):
+    """GTSAM's LM with tight tolerances. The oracle uses GTSAM's multifrontal QR whatever fgc
+    solves with: the optimum does not depend on the linear solver, and GTSAM's Cholesky stalls on
+    badly scaled problems (IMU window N ≥ 50: 100 iterations, error 1e-6, where QR reaches 1e-20
+    in 5)."""
+    import gtsam
+
+    params = gtsam.LevenbergMarquardtParams()
+    params.setLinearSolverType("MULTIFRONTAL_QR" if linear == "qr" else "MULTIFRONTAL_CHOLESKY")
+    params.setRelativeErrorTol(1e-12)
+    params.setAbsoluteErrorTol(1e-14)
+    params.setMaxIterations(max_iterations)
+    optimizer = gtsam.LevenbergMarquardtOptimizer(problem.graph, problem.values, params)
+    result = optimizer.optimize()
+    return result, int(optimizer.iterations())
+
+
+# Final errors agree when they differ by at most this, relative to GTSAM's (or when both are
+# below ERROR_FLOOR, an exact fit).
+ERROR_RTOL, ERROR_FLOOR = 1e-6, 1e-12
+
+
+def require_finite_start(graph: Graph, result) -> None:
+    """Raise DataError naming the factor when the error at the initial values is not finite
+    (the solver cannot start: bad input, exit 2)."""
+    initial = getattr(result, "initial_error", None)
+    if initial is not None and np.isfinite(initial):
+        return
+    from fgc.compiler.derive import derive
+    from fgc.errors import DataError
+
+    for f in graph.factors:
+        vals = [graph.variables[k].initial for k in f.keys]
+        with np.errstate(all="ignore"):
+            r = np.asarray(derive(f.type).evaluate_residual(vals, f.measured), dtype=float)
+        if not np.all(np.isfinite(r)):
+            raise DataError(f"the error at the initial values is not finite: factor '{f.name}' "
+                            f"on {list(f.keys)} has residual {r.tolist()}; change the initial "
+                            "values or the residual function")
+    raise DataError("the error at the initial values is not finite; check the initial values "
+                    "and noise models")
+
+
+def verify_report(graph: Graph, program, data, sim) -> dict:
+    """Simulator vs GTSAM's LM (same tight tolerances and iteration limit), linearisation check
+    per factor type, and a verdict with its reason."""
+    from fgc.interop.to_gtsam import (
+        executed_checks,
+        linearization_checks,
+        sample_factors,
+        to_gtsam,
+        values_from_gtsam,
+    )
+
+    with tempfile.TemporaryDirectory(prefix="fgc-verify-") as emitted:
+        result = sim.run(program, data, emitted)
+        require_finite_start(graph, result)
+        # the kernels the simulator executed, at the start and (if finite) at its answer
+        finite = all(np.all(np.isfinite(v)) for v in result.storage.values())
+        executed = sim.linearize(program, data, [None, result.storage] if finite else [None],
+                                 emitted=emitted, factors=sample_factors(graph))
+    problem = to_gtsam(graph)
+    checks = linearization_checks(graph, problem=problem)
+    k_max = program.solver.max_iterations
+    t0 = time.perf_counter()
+    gres, giters = gtsam_optimize(problem, max_iterations=k_max)
+    gtsam_s = time.perf_counter() - t0
+    ours = _values_by_key(graph, result.values)
+    errors = state_errors(graph, ours, values_from_gtsam(graph, problem, gres))
+    from_fgc = to_gtsam(graph, ours)
+    points = [("initial values", None, problem), ("final estimate", ours, from_fgc)]
+    executed = executed_checks(graph, program, points[:len(executed)], executed)
+    fgc_err = float(problem.graph.error(from_fgc.values))
+    gtsam_err = float(problem.graph.error(gres))
+    rel = abs(fgc_err - gtsam_err) / max(gtsam_err, ERROR_FLOOR)
+    precision = program.solver.precision
+    report = {"variables": len(graph.variables), "factors": len(graph.factors),
+              "precision": precision, "linear_precision": program.solver.les_precision,
+              "linear": program.solver.linear, "ordering": program.schedule.ordering,
+              "status": result.status, "reason": result.reason, "max_iterations": k_max,
+              "linearization_error": max((c.error for c in checks), default=0.0),
+              "linearization_checks": [_check_dict(c) for c in checks],
+              "executed_kernel_checks": [_executed_dict(c) for c in executed], **errors,
+              "fgc_final_error": fgc_err, "gtsam_final_error": gtsam_err,
+              "relative_final_error_difference": rel, "iterations": result.iterations,
+              "gtsam_iterations": giters, "fgc_solve_seconds": result.solve_seconds,
+              "gtsam_seconds": gtsam_s}
+    matched = _state_matches(report)
+    if not matched and fgc_err <= gtsam_err + ERROR_RTOL * max(gtsam_err, ERROR_FLOOR):
+        # fgc is at least as low: is its answer an optimum GTSAM's LM cannot improve on?
+        restart, restart_iters = gtsam_optimize(from_fgc, max_iterations=k_max)
+        report["gtsam_from_fgc_error"] = float(problem.graph.error(restart))
+        report["gtsam_from_fgc_iterations"] = restart_iters
+    report["passed"], report["verdict"] = _verdict(report, checks, matched, executed)
+    report["summary"] = _verify_summary(report)
+    report["_result_values"] = result.values  # popped by the CLI (--values, --marginals)
+    return report
+
+
+def _check_dict(c) -> dict:
+    return {"factor_type": c.factor_type, "factors": c.factors, "error": c.error,
+            "tolerance": c.tolerance, "method": c.method, "passed": c.passed}
+
+
+def _executed_dict(c) -> dict:
+    return {"factor_type": c.factor_type, "block": c.block, "checked": c.checked,
+            "factors": c.factors, "error": c.error, "where": c.where, "tolerance": c.tolerance,
+            "reference": c.reference, "sampled": c.sampled, "passed": c.passed}
+
+
+def _state_tolerance(r: dict) -> str:
+    if r["precision"] == "float64":
+        return f"{STATE_TOL_F64:g}"
+    return f"{ROT_TOL_F32:g} rad / {POS_TOL_F32:g} m"
+
+
+def _state_distance(r: dict) -> str:
+    if r["precision"] == "float64":
+        return f"{r['max_state_error']:.2e}"
+    return f"{r['max_rotation_error']:.2e} rad / {r['max_translation_error']:.2e} m"
+
+
+def _state_matches(r: dict) -> bool:
+    if r["precision"] == "float64":
+        errors_agree = (r["relative_final_error_difference"] <= ERROR_RTOL
+                        or r["gtsam_final_error"] < ERROR_FLOOR)
+        return r["max_state_error"] <= STATE_TOL_F64 and errors_agree
+    return (r["max_rotation_error"] <= ROT_TOL_F32
+            and r["max_translation_error"] <= POS_TOL_F32)
+
+
+def _limits(r: dict) -> str:
+    """Which side stopped at the iteration limit, as a clause ("" when neither did)."""
+    hit = (["fgc"] if r["status"] == "max_iterations" else []) + (
+        ["GTSAM"] if r["gtsam_iterations"] >= r["max_iterations"] else [])
+    if not hit:
+        return ""
+    who = " and ".join(hit)
+    return f"; {who} hit max_iterations ({r['max_iterations']})"
+
+
+def _verdict(r: dict, checks: list, matched: bool, executed: list = ()) -> tuple[bool, str]:
+    """(passed, one line saying why)."""
+    bad = [c for c in checks if c.custom and not c.passed]
+    if bad:
+        c = max(bad, key=lambda c: c.error / c.tolerance)
+        return False, (f"FAILED: fgc's linearisation of factor type '{c.factor_type}' differs "
+                       f"from GTSAM's ({c.method}) by {c.error:.2e} > tolerance "
+                       f"{c.tolerance:g}: the derived residual or Jacobians are wrong or stale")
+    bad = [c for c in executed if not c.passed]
+    if bad:
+        c = max(bad, key=lambda c: c.error / c.tolerance)
+        return False, (f"FAILED: the simulator's kernel for factor type '{c.factor_type}' (block "
+                       f"'{c.block}') differs from {c.reference} by {c.error:.2e} > tolerance "
+                       f"{c.tolerance:g} at the {c.where}: the executed (fused) kernel is wrong "
+                       "or stale")
+    dist = f"state distance {_state_distance(r)}"
+    tol = _state_tolerance(r)
+    fgc_err, gtsam_err = r["fgc_final_error"], r["gtsam_final_error"]
+    if matched:
+        return True, (f"PASSED: fgc's answer matches GTSAM's: {dist} ≤ {tol}, final errors "
+                      f"within {ERROR_RTOL:g} relative{_limits(r)}")
+    if "gtsam_from_fgc_error" not in r:
+        return False, (f"FAILED: {dist} > {tol} and GTSAM reached the lower error ({gtsam_err:.10g}"
+                       f" < fgc {fgc_err:.10g}, relative difference "
+                       f"{r['relative_final_error_difference']:.1e} > {ERROR_RTOL:g})"
+                       f"{_limits(r)}")
+    restart, iters = r["gtsam_from_fgc_error"], r["gtsam_from_fgc_iterations"]
+    if restart < fgc_err - ERROR_RTOL * max(fgc_err, ERROR_FLOOR):
+        return False, (f"FAILED: {dist} > {tol}; fgc's final error {fgc_err:.10g} is not above "
+                       f"GTSAM's {gtsam_err:.10g}, but GTSAM's LM started from fgc's answer "
+                       f"lowers it to {restart:.10g} in {_n(iters, 'iteration')}, so fgc's "
+                       f"answer is not an optimum{_limits(r)}")
+    return True, (f"PASSED: fgc's optimum is at least as good as GTSAM's (final error fgc "
+                  f"{fgc_err:.10g} ≤ GTSAM {gtsam_err:.10g}) and GTSAM's LM started from fgc's "
+                  f"answer stays there ({restart:.10g} after {_n(iters, 'iteration')}); "
+                  f"{dist} > {tol}{_limits(r)}")
+
+
+def _n(count: int, noun: str) -> str:
+    return f"{count} {noun}{'' if count == 1 else 's'}"
+
+
+def _precision_text(r: dict) -> str:
+    """"float32", or "float32 (float64 linear solver)" for the mixed design."""
+    les = r["linear_precision"]
+    return r["precision"] + (f" ({les} linear solver)" if les != r["precision"] else "")
+
+
+def _verify_summary(r: dict) -> list[str]:
+    tol = (f"tolerance {STATE_TOL_F64:g}" if r["precision"] == "float64"
+           else f"float32 bounds {ROT_TOL_F32:g} rad / {POS_TOL_F32:g} m")
+    from fgc.interop.to_gtsam import EXECUTED_SAMPLE
+
+    lines = [
+        f"fgc verify: {r['variables']} variables, {r['factors']} factors, simulator "
+        f"{_precision_text(r)} {r['linear']} {r['ordering']} vs GTSAM LM (QR)",
+    ]
+    for c in r["linearization_checks"]:
+        if c["method"].startswith("numerical"):
+            lines.append(f"  custom factor verify '{c['factor_type']}': checked against "
+                         f"{c['method']}, tolerance {c['tolerance']:g}; max rel. diff "
+                         f"{c['error']:.2e} over {c['factors']} factors")
+    executed = r.get("executed_kernel_checks", [])
+    if executed:
+        worst = max(c["error"] for c in executed)
+        checked = sum(c["checked"] for c in executed)
+        sampled = [c["factor_type"] for c in executed if c["sampled"]]
+        sample = (f"; {EXECUTED_SAMPLE} evenly spaced factors per point of "
+                  f"{', '.join(repr(n) for n in sampled)}" if sampled else "")
+        lines.append(f"  executed kernels (simulator) vs numerical derivatives (custom) / fgc's "
+                     f"per-factor derivation (built-in), at the initial values and the final "
+                     f"estimate: max rel. diff {worst:.2e} over {checked} factor evaluations, "
+                     f"tolerance {executed[0]['tolerance']:g}{sample}")
+    builtin = [c for c in r["linearization_checks"] if not c["method"].startswith("numerical")]
+    if builtin:
+        worst = max(c["error"] for c in builtin)
+        lines.append(f"  linearisation vs GTSAM's own factors (max rel. diff)  {worst:.2e} "
+                     "(reported, not judged: GTSAM's own Jacobians can be inexact, e.g. Pose2 at "
+                     "small non-zero rotation residuals)")
+    lines += [
+        f"  final error: fgc {r['fgc_final_error']:.10g}  GTSAM {r['gtsam_final_error']:.10g}",
+        f"  max state difference: tangent {r['max_state_error']:.2e}, rotation "
+        f"{r['max_rotation_error']:.2e} rad, translation {r['max_translation_error']:.2e} m "
+        f"({tol})",
+        f"  iterations: fgc {r['iterations']} ({r['status']}), GTSAM {r['gtsam_iterations']} "
+        f"(limit {r['max_iterations']})",
+    ]
+    if "gtsam_from_fgc_error" in r:
+        lines.append(f"  GTSAM LM started from fgc's answer: error {r['gtsam_from_fgc_error']:.10g}"
+                     f" after {_n(r['gtsam_from_fgc_iterations'], 'iteration')}")
+    lines.append(f"  {r['verdict']}")
+    return lines
+
+
+def plan_summary(program, iterations: int) -> dict:
+    """The accelerator plan's hardware figures for ``iterations`` iterations of ``program``
+    (``fgc_backends.hls.plan.plan_summary``: plan_cost of build_plan with the Program's n_u,
+    #CPE, clock and precision). Looked up by name, as the backends are, so fgc imports none."""
+    return import_module("fgc_backends.hls.plan").plan_summary(program, iterations)
+
+
+def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = None) -> dict:
+    """Run the simulator, then cost the iterations it took with the accelerator plan."""
+    result = sim.run(program, data)
+    require_finite_start(graph, result)
+    cost = plan_summary(program, max(result.iterations, 1))
+    storage = program.storage
+    report = {
+        "status": result.status, "reason": result.reason, "iterations": result.iterations,
+        "initial_error": result.initial_error, "final_error": result.final_error,
+        "precision": program.solver.precision,
+        "linear_precision": program.solver.les_precision, "cycles": cost["cycles"],
+        "clock_mhz": cost["clock_mhz"], "latency_ms": cost["latency_ms"],
+        "cycles_by_unit": cost["cycles_by_unit"], "cost_source": cost["source"],
+        "resources": cost["resources"], "energy_mj": cost["energy_mj"],
+        "power_w": cost["power_w"],
+        "storage": {"dense_words": storage.dense_words, "stored_words": storage.steps[-1].words,
+                    "plan_memory_words": cost["memory_words"],
+                    "steps": [dataclasses.asdict(s) for s in storage.steps]},
+        "simulator_solve_seconds": result.solve_seconds,
+    }
+    if plot_dir:
+        report["plots"] = _plots(Path(plot_dir), graph, result, report)
+    report["summary"] = _simulate_summary(report, len(graph.variables))
+    report["_result_values"] = result.values  # popped by the CLI (--values, --marginals)
+    return report
+
+
+def _plots(out: Path, graph: Graph, result, report: dict) -> list[str]:
+    """latency.png, storage.png and, for graphs with poses, trajectory.png: fgc's solution over
+    GTSAM's LM solution (computed here: one GTSAM solve, milliseconds to a second or two for the
+    shipped examples, cheap next to the simulator) and the GPS fixes of the graph's GPSFactors."""
+    from fgc.app import plots
+    out.mkdir(parents=True, exist_ok=True)
+    steps = [(s["name"], s["words"]) for s in report["storage"]["steps"]]
+    files = [out / "latency.png", out / "storage.png"]
+    plots.plot_latency_breakdown(report["cycles_by_unit"], path=files[0])
+    plots.plot_storage_steps(report["storage"]["dense_words"], steps, path=files[1])
+    values = _values_by_key(graph, result.values)
+    if any(isinstance(v, (Pose3, Pose2)) for v in values.values()):
+        from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
+
+        problem = to_gtsam(graph)
+        reference = values_from_gtsam(graph, problem, gtsam_optimize(problem)[0])
+        gps = [np.asarray(getattr(f.measured["position"], "v", f.measured["position"]),
+                          float).ravel() for f in graph.factors if f.type.name == "GPSFactor"]
+        files.append(out / "trajectory.png")
+        plots.plot_trajectory(values, reference, np.array(gps) if gps else None,
+                              title="Trajectory (top view): fgc vs GTSAM LM", path=files[-1])
+    return [str(f) for f in files]
+
+
+def _simulate_summary(r: dict, n_vars: int) -> list[str]:
+    res = r["resources"]
+    return [
+        f"fgc simulate: {n_vars} variables, {_precision_text(r)}: {r['status']} after "
+        f"{r['iterations']} iterations, error {_number(r['initial_error'], '.6g')} → "
+        f"{_number(r['final_error'], '.10g')}",
+        f"  accelerator (model estimate): {r['cycles']:,} cycles = {r['latency_ms']:.3f} ms at "
+        f"{r['clock_mhz']:g} MHz (accelerator plan), energy {r['energy_mj']:.3f} mJ "
+        f"({r['power_w']:.2f} W: the sim model's power fit on the plan's resources)",
+        f"  resources (model estimate): {res['dsp']} DSP, {res['bram']:g} BRAM36, "
+        f"{res['lut']:,} LUT, {res['ff']:,} FF",
+        f"  storage: {r['storage']['stored_words']:,} words "
+        f"(dense {r['storage']['dense_words']:,}); plan memories "
+        f"{r['storage']['plan_memory_words']:,} words (model estimate)",
+    ]
+
+
+def _number(x: float | None, fmt: str) -> str:
+    return "not finite" if x is None or not np.isfinite(x) else format(x, fmt)

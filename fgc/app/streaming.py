@@ -1,0 +1,260 @@
+"""Streaming: a chain example's keyframes fed one at a time to the simulator's incremental or
+fixed-lag update, per-keyframe results, the trajectory and its accuracy against the batch
+optimum. Behind ``fgc stream`` and :func:`fgc.stream`; ``fgc simulate / verify`` with
+``--incremental`` or ``--window`` use the same pieces.
+
+Modes (the simulator only; the HLS design and the native solver run batch solves — issue 19):
+
+- **incremental** (``SolverConfig.incremental_k`` = K, ``batch_every``): each keyframe
+  re-eliminates the newest K clusters on the kept Bayes net (paper A), batch steps re-eliminate
+  all; every variable keeps an estimate (back-substitution through the kept conditionals).
+- **fixed-lag window** (``window`` = W): after each keyframe the newest W keyframes are held; the
+  one leaving is marginalised into a dense Gaussian prior on the window, linear in the local
+  coordinates at the point where it was formed (its linearisation point never moves; every
+  other factor of the window is relinearised each iteration). Marginalised keyframes keep the
+  estimate of the update that marginalised them.
+
+Latency: the accelerator's cost model (``plan_cost``) prices batch iterations of a Program.
+:class:`UpdatePricer` prices an update as that many batch iterations of a chain as long as the
+update's window (a model estimate of an approximation: the window's dense marginal prior is
+priced as the chain's own priors); the simulator's wall time is reported beside it.
+"""
+
+from __future__ import annotations
+
+import queue
+import threading
+from collections.abc import Iterator
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from fgc.errors import FgcError
+from fgc.frontend.dsl import Graph
+from fgc.frontend.geometry import Pose2, Pose3
+
+UNPRICED = "one-keyframe windows and window sizes past the first four others seen"
+HW_REFUSAL = "incremental mode runs in the simulator only (issue 19: HLS and native next)"
+
+
+@dataclass(frozen=True)
+class KeyframeResult:
+    """One keyframe's update: its index, mode ("incremental", "batch" or "fixed-lag"), the
+    first cluster re-eliminated, LM iterations, status, the window cost, the simulator's wall
+    time (s) and the estimate after the update (fgc values by key, of the variables that have
+    arrived — of the window, fixed-lag)."""
+
+    keyframe: int
+    mode: str
+    first: int
+    iterations: int
+    status: str
+    cost: float
+    seconds: float
+    values: dict
+
+    def newest(self, program) -> dict:
+        """The estimate of this keyframe's own variables."""
+        return {k: self.values[k] for k in program.schedule.clusters[self.keyframe]}
+
+
+def check_mode(incremental: int | None, batch_every, window: int | None) -> None:
+    if window is not None and (incremental is not None or batch_every is not None):
+        raise FgcError("--window (a fixed-lag window) excludes --incremental/--batch-every")
+    if batch_every is not None and incremental is None:
+        raise FgcError("--batch-every needs --incremental K: batch steps belong to an "
+                       "incremental plan")
+    if window is not None and window < 1:
+        raise FgcError(f"--window {window}: the window must hold at least 1 keyframe")
+
+
+def compile_stream(graph: Graph, solver=None, incremental: int | None = None,
+                   batch_every=None, window: int | None = None, name: str = "stream"):
+    """The Program for a stream: ``solver`` (a SolverConfig, default float64) with the
+    incremental plan, if asked for. Raises FgcError when the graph is not a chain."""
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+
+    check_mode(incremental, batch_every, window)
+    solver = solver or SolverConfig(precision="float64")
+    if incremental is not None:
+        solver = replace(solver, incremental_k=incremental, batch_every=batch_every)
+    try:
+        program = compile_graph(graph, solver, name=name)
+    except ValueError as exc:  # the incremental plan's own checks (window, batch steps)
+        raise FgcError(f"incremental plan: {exc}") from None
+    if program.schedule.structure_class != "chain" or not program.schedule.clusters:
+        raise FgcError(f"streaming needs a chain of keyframes; the graph is "
+                       f"{program.schedule.structure_class}")
+    return program
+
+
+def run_stream(program, data, window: int | None = None, progress=None, precision=None):
+    """Run the simulator keyframe by keyframe (incremental plan if the Program has one, else
+    the fixed-lag ``window``); ``progress(KeyframeResult)`` after each keyframe. Returns the
+    SimResult."""
+    from fgc_backends import load
+
+    sim = load("sim")
+    incremental = program.schedule.incremental is not None
+    if not incremental and window is None:
+        raise FgcError("streaming needs --incremental K or --window W")
+    callback = None
+    if progress is not None:
+        def callback(raw):
+            progress(keyframe_result(program, raw))
+    return sim.run(program, data, precision=precision, incremental=incremental,
+                   window=window, progress=callback)
+
+
+def keyframe_result(program, record: dict) -> KeyframeResult:
+    """A KeyframeResult from an update record (raw storage lists or fgc values)."""
+    from fgc_backends.sim.runner import value_type
+
+    values = record["values"]
+    if isinstance(values, list):
+        values = {spec.key: value_type(spec.type_name, spec.dim).from_storage(
+            np.asarray(v, dtype=np.float64))
+            for spec, v in zip(program.variables, values, strict=True) if v is not None}
+    return KeyframeResult(record["keyframe"], record["mode"], record["first"],
+                          record["iterations"], record["status"], float(record["cost"]),
+                          float(record.get("seconds", float("nan"))), values)
+
+
+def stream(graph: Graph, window: int | None = None, incremental: int | None = None,
+           batch_every=None, solver=None) -> Iterator[KeyframeResult]:
+    """Feed ``graph``'s keyframes to the simulator one at a time and yield each keyframe's
+    :class:`KeyframeResult` as soon as its update is done (the simulator runs in a worker
+    thread). Either ``window`` (fixed-lag, W keyframes) or ``incremental`` (K, with optional
+    ``batch_every``)."""
+    from fgc.ir.datafile import problem_data
+
+    if window is None and incremental is None:
+        raise FgcError("fgc.stream needs window=W or incremental=K")
+    program = compile_stream(graph, solver, incremental, batch_every, window)
+    data = problem_data(graph, program)
+    results: queue.Queue = queue.Queue()
+
+    def work():
+        try:
+            run_stream(program, data, window, lambda r: results.put(("update", r)))
+            results.put(("done", None))
+        except BaseException as exc:  # handed to the consumer, raised there
+            results.put(("error", exc))
+
+    worker = threading.Thread(target=work, daemon=True)
+    worker.start()
+    while True:
+        kind, item = results.get()
+        if kind == "update":
+            yield item
+        elif kind == "error":
+            raise item
+        else:
+            break
+    worker.join()
+
+
+# --------------------------------------------------------------------------------------------
+# a model estimate per update
+# --------------------------------------------------------------------------------------------
+
+
+class UpdatePricer:
+    """The accelerator plan's price of a keyframe update (``plan_summary``, what ``fgc
+    simulate`` prints): the update's iterations priced as batch iterations of a chain of the
+    same factors with as many keyframes as the update re-eliminates (the graph's first S
+    keyframes, whose priors stand in for the window's marginal prior). One Program is compiled
+    per window size: the steady size (W + 1 of a fixed-lag window, K of an incremental plan)
+    and at most ``max_sizes`` others as they come (later sizes: not priced, None)."""
+
+    def __init__(self, graph: Graph, program, window: int | None = None, max_sizes: int = 4):
+        self.graph, self.program, self.max_sizes = graph, program, max_sizes
+        self.per_iteration: dict[int, dict | None] = {}
+        plan = program.schedule.incremental
+        steady = window + 1 if window is not None else (plan.window if plan else None)
+        n = len(program.schedule.clusters)
+        if steady is not None and 2 <= steady <= n:  # the size most updates have: first
+            self._add(steady)
+
+    def _add(self, size: int) -> None:
+        from fgc.app.run_report import plan_summary
+
+        self.per_iteration[size] = plan_summary(self._sub_program(size), 1)
+
+    def _sub_program(self, size: int):
+        from fgc.compile import compile_graph
+
+        clusters = self.program.schedule.clusters[:size]
+        keys = {k for c in clusters for k in c}
+        sub = Graph()
+        for k, var in self.graph.variables.items():
+            if str(k) in keys:
+                sub.add_variable(k, var.initial, var.type)
+        for f in self.graph.factors:
+            if all(str(k) in keys for k in f.keys):
+                sub.add(f)
+        solver = replace(self.program.solver, incremental_k=None, batch_every=None)
+        return compile_graph(sub, solver, name=f"{self.program.name}_window{size}")
+
+    def price(self, update: KeyframeResult) -> dict | None:
+        """{"cycles", "latency_ms", "window"} of the update, or None when not priced."""
+        size = update.keyframe - update.first + 1
+        if size not in self.per_iteration:
+            if len(self.per_iteration) > self.max_sizes or size < 2:
+                return None
+            self._add(size)
+        one = self.per_iteration[size]
+        k = max(1, update.iterations)
+        return {"cycles": k * one["iteration_cycles"], "latency_ms": k * one["latency_ms"],
+                "window": size}
+
+
+# --------------------------------------------------------------------------------------------
+# accuracy and summaries
+# --------------------------------------------------------------------------------------------
+
+
+def poses(graph: Graph, values: dict) -> dict:
+    """The pose values (Pose3, else Pose2) of ``values`` ({str key: value}) in graph order."""
+    out = {str(k): values[str(k)] for k in graph.variables if str(k) in values}
+    kind = Pose3 if any(isinstance(v, Pose3) for v in out.values()) else Pose2
+    return {k: v for k, v in out.items() if isinstance(v, kind)}
+
+
+def batch_optimum(graph: Graph) -> dict:
+    """GTSAM's LM optimum of the whole graph ({str key: fgc value})."""
+    from fgc.app.run_report import gtsam_optimize
+    from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
+
+    problem = to_gtsam(graph)
+    result, _ = gtsam_optimize(problem)
+    return {str(k): v for k, v in values_from_gtsam(graph, problem, result).items()}
+
+
+def accuracy(graph: Graph, final: dict, online: dict, optimum: dict) -> dict:
+    """ATE (translation m, rotation deg; no alignment: both in the graph's frame) of the final
+    streamed trajectory and of the online one (each keyframe's estimate when it arrived)
+    against the batch optimum, and the largest tangent-space distance of any variable."""
+    from fgc.app import metrics
+    ref = poses(graph, optimum)
+    out = {}
+    for name, values in (("final", final), ("online", online)):
+        est = poses(graph, values)
+        keys = [k for k in ref if k in est]
+        if not keys:
+            continue
+        e = metrics.as_trajectory({k: est[k] for k in keys})
+        r = metrics.as_trajectory({k: ref[k] for k in keys})
+        out[name] = {rel: metrics.ate(e, r, relation=rel).statistics()
+                     for rel in metrics.RELATIONS}
+    out["max_state_distance"] = max(float(np.linalg.norm(optimum[k].local(v)))
+                                    for k, v in final.items())
+    return out
+
+
+def timing_summary(seconds) -> dict:
+    s = np.asarray(list(seconds), dtype=float)
+    return {"updates": int(s.size), "median_ms": float(np.median(s) * 1e3),
+            "p99_ms": float(np.percentile(s, 99) * 1e3), "max_ms": float(s.max() * 1e3),
+            "total_s": float(s.sum())}
