@@ -29,7 +29,6 @@ import argparse
 import ctypes
 import shutil
 import statistics
-import sys
 import tempfile
 import time
 from pathlib import Path
@@ -37,9 +36,10 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 
-import lio  # noqa: E402
+from fgc.app.specs import example  # noqa: E402
+
+lio = example("lio")
 
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.datafile import problem_data  # noqa: E402

@@ -25,8 +25,8 @@ ROOT = Path(__file__).resolve().parent.parent
 
 CHILD = """
 import json, sys, time
-sys.path.insert(0, {examples!r})
-import lio
+from fgc.app.specs import example
+lio = example("lio")
 from fgc import compile as stages
 from fgc.compile import compile_graph
 from fgc.interop.to_gtsam import to_gtsam
@@ -60,7 +60,7 @@ print(json.dumps({{"compile_s": t1 - t0, "compile_cpu_s": c1 - c0, "gtsam_graph_
 
 def run_once(n: int, cache: str) -> dict:
     env = dict(os.environ, FGC_CACHE_DIR=cache)
-    code = CHILD.format(examples=str(ROOT / "examples"), n=n)
+    code = CHILD.format(n=n)
     out = subprocess.run([sys.executable, "-c", code], env=env, check=True,
                          capture_output=True, text=True).stdout
     return json.loads(out.strip().splitlines()[-1])

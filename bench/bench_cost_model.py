@@ -15,19 +15,17 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 
+from fgc.app.specs import example
 from fgc.compile import compile_graph
 from fgc.ir.program import Program, SolverConfig
 from fgc_backends.sim.cost import CostParams, CostReport, describe, estimate
 from fgc_backends.sim.cost import calibration as cal
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "examples"))
-import imu_window  # noqa: E402
-import lio  # noqa: E402
+imu_window = example("imu_window")
+lio = example("lio")
 
 DESIGNS = tuple((p.name, p.cpe) for p in cal.PAPER_B_POWER)
 

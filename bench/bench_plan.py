@@ -11,13 +11,11 @@ Paper figures are whole-solve or whole-design numbers, printed for scale, not pe
 from __future__ import annotations
 
 import dataclasses
-import sys
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "examples"))
+from fgc.app.specs import example
 
-import imu_window  # noqa: E402
-import lio  # noqa: E402
+imu_window = example("imu_window")
+lio = example("lio")
 
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402

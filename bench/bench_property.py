@@ -27,11 +27,12 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "tests"))
-sys.path.insert(0, str(ROOT / "examples"))
 
-import imu_window  # noqa: E402
-import lio  # noqa: E402
-import pose_graph  # noqa: E402
+from fgc.app.specs import example  # noqa: E402
+
+imu_window = example("imu_window")
+lio = example("lio")
+pose_graph = example("pose_graph")
 import strategies  # noqa: E402
 from hypothesis import HealthCheck, Phase, given, seed, settings  # noqa: E402
 

@@ -16,15 +16,15 @@ from __future__ import annotations
 
 import argparse
 import runpy
-import sys
 import tempfile
 import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 
-import lio  # noqa: E402
+from fgc.app.specs import example  # noqa: E402
+
+lio = example("lio")
 
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.interop.to_gtsam import to_gtsam  # noqa: E402

@@ -7,13 +7,13 @@ on examples/lio.py, in evo's conventions: ATE (no alignment) and RPE (translatio
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 
-import lio  # noqa: E402
+from fgc.app.specs import example  # noqa: E402
+
+lio = example("lio")
 
 from fgc.app.metrics import ate, rpe  # noqa: E402
 from fgc.app.run_report import gtsam_optimize  # noqa: E402

@@ -9,7 +9,6 @@ the same tolerance ``fgc verify`` applies.
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -23,11 +22,9 @@ BEACONS = str(ROOT / "examples" / "range_beacons.py")
 
 
 def _beacons_graph():
-    sys.path.insert(0, str(ROOT / "examples"))
-    try:
-        import range_beacons
-    finally:
-        sys.path.pop(0)
+    from fgc.app.specs import example
+
+    range_beacons = example("range_beacons")
     return range_beacons.build(steps=8)
 
 

@@ -16,10 +16,11 @@ from fgc.frontend.geometry import Pose2, Pose3
 from fgc.ir.program import Program, ProgramError, SolverConfig
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 
-import imu_window  # noqa: E402
-import pose_graph  # noqa: E402
+from fgc.app.specs import example  # noqa: E402
+
+imu_window = example("imu_window")
+pose_graph = example("pose_graph")
 
 
 def _chain(n: int, prior: bool = True) -> fgc.Graph:
@@ -56,7 +57,7 @@ def test_compiling_twice_is_byte_identical():
 
 
 def test_deterministic_across_hash_seeds(tmp_path):
-    code = (f"import sys; sys.path.insert(0, {str(ROOT / 'examples')!r}); import pose_graph; "
+    code = ("import sys; from fgc.app.specs import example; pose_graph = example('pose_graph'); "
             "from fgc.compile import compile_graph; "
             "sys.stdout.write(compile_graph(pose_graph.build('pose3example.txt')).to_json())")
     outs = []

@@ -10,13 +10,12 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 import sympy as sp
 
+from fgc.app.specs import example
 from fgc.compile import compile_graph
 from fgc.compiler.kernel import Kernel
 from fgc.ir.program import KernelText, Program, SolverConfig
@@ -33,9 +32,8 @@ from fgc_backends.sim.cost import calibration as cal
 from fgc_backends.sim.cost.kernels import critical_path
 from fgc_backends.sim.cost.qr import householder_sweep
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "examples"))
-import imu_window  # noqa: E402
-import lio  # noqa: E402
+imu_window = example("imu_window")
+lio = example("lio")
 
 UNITS = (1, 2, 4, 8)
 CPES = (5, 10, 20, 40, 80, 120)

@@ -7,21 +7,18 @@ reconstructed IMU measurements against fgc's own preintegration ≤ 1e-9.
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import gtsam
 import numpy as np
 import pytest
 
 from fgc.app.solve import optimize
+from fgc.app.specs import example
 from fgc.errors import FgcError
 from fgc.frontend import noise as fn
 from fgc.interop.from_gtsam import default_key_name, from_gtsam, noise_from_gtsam
 from fgc.interop.to_gtsam import linearize_factor, noise_to_gtsam, to_gtsam, value_from_gtsam
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "examples"))
-import lio  # noqa: E402
+lio = example("lio")
 
 X, L = gtsam.symbol_shorthand.X, gtsam.symbol_shorthand.L
 _nm = gtsam.noiseModel

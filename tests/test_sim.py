@@ -30,10 +30,11 @@ from fgc_backends import load, sim
 from fgc_backends.sim.printer import SimPrinter
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 
-import imu_window  # noqa: E402
-import pose_graph  # noqa: E402
+from fgc.app.specs import example  # noqa: E402
+
+imu_window = example("imu_window")
+pose_graph = example("pose_graph")
 
 ALLOWED_IMPORTS = {"numpy", "argparse", "hashlib", "importlib", "importlib.util", "json", "os",
                    "sys", "time", "types"}
@@ -178,7 +179,7 @@ def test_emission_is_deterministic_labelled_and_numpy_only(pose3, emitted, tmp_p
 
 
 def test_emission_is_independent_of_hash_seeds(tmp_path):
-    code = (f"import sys; sys.path.insert(0, {str(ROOT / 'examples')!r}); import pose_graph; "
+    code = ("import sys; from fgc.app.specs import example; pose_graph = example('pose_graph'); "
             "from fgc.compile import compile_graph; from fgc_backends import sim; "
             "sim.emit(compile_graph(pose_graph.build('w100.graph')), sys.argv[1])")
     for seed in ("1", "2"):

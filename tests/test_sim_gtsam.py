@@ -8,7 +8,6 @@ equal to 1e-6 relative (absolute 1e-12 for zero-residual problems); float32 — 
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -26,11 +25,12 @@ from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 
-import imu_window  # noqa: E402
-import lio  # noqa: E402
-import pose_graph  # noqa: E402
+from fgc.app.specs import example  # noqa: E402
+
+imu_window = example("imu_window")
+lio = example("lio")
+pose_graph = example("pose_graph")
 
 STATE_TOL, ERROR_RTOL, ERROR_ATOL = 1e-6, 1e-6, 1e-12
 ROT_TOL_F32, POS_TOL_F32 = 1e-3, 1e-2

@@ -22,8 +22,6 @@ from __future__ import annotations
 
 import argparse
 import ast
-import importlib.util
-import inspect
 import json
 import os
 import re
@@ -35,6 +33,7 @@ from typing import NoReturn
 
 import numpy as np
 
+from fgc.app.specs import load_spec
 from fgc.errors import FgcError
 from fgc.frontend.dsl import Graph
 
@@ -53,86 +52,6 @@ def parse_params(items: list[str]) -> dict:
         except (ValueError, SyntaxError):
             params[key] = raw
     return params
-
-
-def load_spec(path: str, params: dict) -> Graph:
-    """Build the graph of a spec: a ``.py`` file with ``build(**params)``, or a g2o/TORO file
-    (which gets a prior on its first pose to fix the gauge) given as a path or as the name of a
-    file in the gtsam wheel's example data (``fgc simulate w100.graph``)."""
-    p = Path(path)
-    if not p.is_file() and p.suffix != ".py" and p.name == path:
-        from fgc.interop.gtsam_data import gtsam_data_dir
-
-        candidate = gtsam_data_dir() / path
-        p = candidate if candidate.is_file() else p
-    if not p.is_file():
-        raise FgcError(f"{path}: no such file")
-    if p.suffix != ".py":
-        return _load_pose_graph_file(p, params)
-    spec = importlib.util.spec_from_file_location(f"fgc_spec_{p.stem}", p)
-    module = importlib.util.module_from_spec(spec)
-    try:
-        spec.loader.exec_module(module)
-    except FgcError:
-        raise
-    except Exception as exc:
-        raise FgcError(f"{path}: the spec failed to load: {type(exc).__name__}: {exc}") from exc
-    build = getattr(module, "build", None)
-    if not callable(build):
-        raise FgcError(f"{path}: a spec must define build(**params) returning an fgc.Graph")
-    unknown = _unknown_parameters(build, params)
-    if unknown:
-        raise FgcError(f"{path}: build() has no parameter {', '.join(map(repr, unknown))} "
-                       f"(it takes: {_parameter_list(build)})")
-    try:
-        graph = build(**params)
-    except FgcError:
-        raise
-    except TypeError as exc:
-        raise FgcError(f"{path}: build() rejected the parameters {sorted(params)}: {exc}") from exc
-    except Exception as exc:  # the user's code: one line naming the spec, not a traceback
-        raise FgcError(f"{path}: build() failed: {type(exc).__name__}: {exc}") from exc
-    if not isinstance(graph, Graph):
-        raise FgcError(f"{path}: build() returned {type(graph).__name__}, not an fgc.Graph")
-    return graph
-
-
-def _unknown_parameters(build, params: dict) -> list[str]:
-    """Names in ``params`` that ``build`` cannot take (none if it accepts **kwargs)."""
-    try:
-        sig = inspect.signature(build)
-    except (TypeError, ValueError):
-        return []
-    kinds = {p.kind for p in sig.parameters.values()}
-    if inspect.Parameter.VAR_KEYWORD in kinds:
-        return []
-    names = {n for n, p in sig.parameters.items()
-             if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)}
-    return sorted(k for k in params if k not in names)
-
-
-def _parameter_list(build) -> str:
-    """``build``'s parameters with their defaults, as -p would set them."""
-    parts = [f"{n}={p.default!r}" if p.default is not p.empty else n
-             for n, p in inspect.signature(build).parameters.items()
-             if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)]
-    return ", ".join(parts) or "no parameters"
-
-
-def _load_pose_graph_file(p: Path, params: dict) -> Graph:
-    from fgc.frontend import noise
-    from fgc.frontend.factors import PriorFactor
-    from fgc.interop.datasets import read_pose_graph
-
-    unknown = sorted(set(params) - {"prior_sigma", "init"})
-    if unknown:
-        raise FgcError(f"{p}: unknown parameters {unknown} for a g2o/TORO file "
-                       "(only prior_sigma, init=odometry|chordal)")
-    graph = read_pose_graph(p, init=str(params.get("init", "odometry")))
-    first = next(iter(graph.variables.values()))
-    sigma = float(params.get("prior_sigma", 1e-3))
-    graph.add(PriorFactor(first.key, first.initial, noise.isotropic(first.type.dim, sigma)))
-    return graph
 
 
 # --------------------------------------------------------------------------------------------
