@@ -21,8 +21,8 @@ import numpy as np
 from fgc.app.specs import example
 from fgc.compile import compile_graph
 from fgc.ir.program import Program, SolverConfig
-from fgc_backends.sim.cost import CostParams, CostReport, describe, estimate
-from fgc_backends.sim.cost import calibration as cal
+from fgc_backends.cost import CostParams, CostReport, describe, estimate
+from fgc_backends.cost import calibration as cal
 
 imu_window = example("imu_window")
 lio = example("lio")

@@ -31,10 +31,10 @@ import lio  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.datafile import problem_data, write_data  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
+from fgc_backends.cfamily.results import read_result  # noqa: E402
 from fgc_backends.hls import HlsConfig, emit  # noqa: E402
 from fgc_backends.hls.emitter import accel_plan  # noqa: E402
 from fgc_backends.hls.plan import phase_cycles  # noqa: E402
-from fgc_backends.hls.results import read_result  # noqa: E402
 
 COUNT_MAIN = r"""
 #include <cstdio>

@@ -20,7 +20,7 @@ from fgc.compile import compile_graph
 from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
 from fgc_backends import native
-from fgc_backends.hls.results import judge_precision, result_from_arrays
+from fgc_backends.cfamily.results import judge_precision, result_from_arrays
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 

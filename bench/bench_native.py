@@ -44,7 +44,7 @@ from fgc.interop.to_gtsam import to_gtsam, value_to_gtsam  # noqa: E402
 from fgc.ir.datafile import problem_data  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends import native  # noqa: E402
-from fgc_backends.hls.results import result_from_arrays  # noqa: E402
+from fgc_backends.cfamily.results import result_from_arrays  # noqa: E402
 
 
 def best_times(fns, repeat: int, bout: int = 5):

@@ -54,7 +54,7 @@ class Config:
     units: tuple[int, ...] = (1, 2, 4, 8, 16, 32)
     alloc_scales: tuple[int, ...] = (1, 2, 4)
     cpes: tuple[int, ...] = (5, 20, 40, 80, 120)
-    c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/sim/cost/params.py)
+    c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/cost/params.py)
     gtsam_iterations: int = 5
     gtsam_repeats: int = 5
 

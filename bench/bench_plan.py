@@ -2,7 +2,7 @@
 
 LIO N = 30 (GN + QR, float32, two-ended and serial, n_u ∈ {1, 4, 8}) and imu_window N = 50
 (LM + Cholesky, float32, #CPE ∈ {5, 20, 80}); per-iteration latency in ms at 143 MHz, DSP,
-BRAM36, LUT, FF. ``today`` is ``fgc_backends.sim.cost.estimate`` (one accepted iteration).
+BRAM36, LUT, FF. ``today`` is ``fgc_backends.cost.estimate`` (one accepted iteration).
 Paper figures are whole-solve or whole-design numbers, printed for scale, not per iteration.
 
     FGC_CACHE_DIR=... python bench/bench_plan.py
@@ -19,8 +19,8 @@ lio = example("lio")
 
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
+from fgc_backends.cost import estimate  # noqa: E402
 from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost  # noqa: E402
-from fgc_backends.sim.cost import estimate  # noqa: E402
 
 PAPERS = {
     "lio": "paper A: two-ended 1.6x faster than serial; parallel 473 DSP / 163 BRAM36 / "

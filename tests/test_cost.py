@@ -1,4 +1,4 @@
-"""Tests of the accelerator cost model (backends/sim/cost).
+"""Tests of the accelerator cost model (backends/cost).
 
 Shape properties (monotone in n_u and #CPE, two-ended faster than serial, resources grow with
 units, float64 dearer than float32), the calibration against paper B's published figures
@@ -19,7 +19,7 @@ from fgc.app.specs import example
 from fgc.compile import compile_graph
 from fgc.compiler.kernel import Kernel
 from fgc.ir.program import KernelText, Program, SolverConfig
-from fgc_backends.sim.cost import (
+from fgc_backends.cost import (
     CostParams,
     Device,
     OperatorCost,
@@ -28,9 +28,9 @@ from fgc_backends.sim.cost import (
     describe,
     estimate,
 )
-from fgc_backends.sim.cost import calibration as cal
-from fgc_backends.sim.cost.kernels import critical_path
-from fgc_backends.sim.cost.qr import householder_sweep
+from fgc_backends.cost import calibration as cal
+from fgc_backends.cost.kernels import critical_path
+from fgc_backends.cost.qr import householder_sweep
 
 imu_window = example("imu_window")
 lio = example("lio")

@@ -8,7 +8,7 @@ accuracy: the simulator then reports status "failed", reason "precision_limit", 
 the ‖δ‖ ≤ 10 ulp·‖x‖ rule (‖x‖ ≈ 1e6) stopped at the first iteration and said "converged".
 
 The native solver and the C simulation (float kernels) get the same verdict, computed on the host
-after the run (``fgc_backends.hls.results.judge_precision``, ρ by
+after the run (``fgc_backends.cfamily.results.judge_precision``, ρ by
 :func:`fgc.ir.conditioning.resolution`); before, they said "converged" in all three cases.
 
 Tolerances: float64 runs reach their optimum (cost ≤ 1e-9); a float32 run that says "converged"
@@ -141,7 +141,7 @@ def test_host_resolution_equals_the_simulators(name, tmp_path):
     """The host ρ (fgc.ir.conditioning.resolution on the Program's float64 linearisation) is the
     simulator's ρ at the simulator's float32 solution, and names the same variable."""
     from fgc.ir.datafile import write_data
-    from fgc_backends.hls.results import whitened_jacobians
+    from fgc_backends.cfamily.results import whitened_jacobians
 
     build, beyond = CASES[name]
     graph = build()

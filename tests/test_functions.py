@@ -22,7 +22,7 @@ from fgc.frontend.geometry import Point2
 from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
 from fgc_backends import native, sim
-from fgc_backends.hls.printer import print_kernel
+from fgc_backends.cfamily.printer import print_kernel
 from fgc_backends.sim.printer import SimPrinter
 
 ROOT = Path(__file__).resolve().parent.parent

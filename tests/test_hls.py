@@ -23,6 +23,8 @@ from fgc.frontend.factors import PriorFactor
 from fgc.frontend.geometry import special
 from fgc.ir.datafile import problem_data
 from fgc.ir.program import KernelText, Program
+from fgc_backends.cfamily.names import comment, identifier
+from fgc_backends.cfamily.printer import HlsCodePrinter
 from fgc_backends.hls import (
     HlsConfig,
     HlsConfigError,
@@ -33,8 +35,6 @@ from fgc_backends.hls import (
     run_csim,
 )
 from fgc_backends.hls.lint import lint_files
-from fgc_backends.hls.names import comment, identifier
-from fgc_backends.hls.printer import HlsCodePrinter
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "examples"))

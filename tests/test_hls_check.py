@@ -27,10 +27,10 @@ from fgc.frontend.factors import BetweenFactor, PriorFactor
 from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
 from fgc_backends import sim
+from fgc_backends.cfamily.names import key_token, key_tokens, token_key
+from fgc_backends.cfamily.results import read_result, write_reference
 from fgc_backends.hls import HlsConfig, emit, run_csim
 from fgc_backends.hls.build import HlsBuildError
-from fgc_backends.hls.names import key_token, key_tokens, token_key
-from fgc_backends.hls.results import read_result, write_reference
 
 
 def chain(n: int = 6, keys=None) -> fgc.Graph:

@@ -21,12 +21,13 @@ import sympy as sp
 from fgc.compile import compile_graph
 from fgc.compiler.kernel import Kernel
 from fgc.ir.program import SolverConfig
-from fgc_backends.hls import HlsConfig, HlsConfigError
-from fgc_backends.hls.blocks import NOISE_KINDS, block_contexts
-from fgc_backends.hls.printer import print_kernel
-from fgc_backends.hls.sparsity import TILE, ZERO, block_pattern
-from fgc_backends.hls.steps import step_patterns
-from fgc_backends.hls.tables import build_tables
+from fgc_backends.cfamily.blocks import NOISE_KINDS, block_contexts
+from fgc_backends.cfamily.errors import CodegenError
+from fgc_backends.cfamily.printer import print_kernel
+from fgc_backends.cfamily.sparsity import TILE, ZERO, block_pattern
+from fgc_backends.cfamily.steps import step_patterns
+from fgc_backends.cfamily.tables import build_tables
+from fgc_backends.hls import HlsConfig
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "examples"))
@@ -95,7 +96,7 @@ def test_structure_disagreeing_with_the_kernel_is_refused(programs):
     i, j = next((i, j) for i, row in enumerate(codes[0]) for j, c in enumerate(row) if c == "x")
     codes[0][i][j] = ZERO
     bad = dataclasses.replace(block, structure=tuple(tuple(map(tuple, k)) for k in codes))
-    with pytest.raises(HlsConfigError, match="block type 7.*structure code '0'"):
+    with pytest.raises(CodegenError, match="block type 7.*structure code '0'"):
         block_pattern(bad, _kinds(bad), "block type 7")
 
 

@@ -16,7 +16,7 @@ from fgc.compile import compile_graph
 from fgc.frontend.factors import BetweenFactor, PriorFactor
 from fgc.frontend.geometry import Pose2
 from fgc.ir.program import SolverConfig
-from fgc_backends.hls import operators
+from fgc_backends.cost import operators
 from fgc_backends.hls.plan import (
     PART_DSP,
     AcceleratorPlan,

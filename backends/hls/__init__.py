@@ -11,12 +11,12 @@ synthesisable kernel ``<name>_top``), ``tb_<name>.cpp`` (testbench), ``run_hls.t
 :mod:`fgc_backends.native`.
 """
 
+from fgc_backends.cfamily.printer import HlsCodePrinter, UnsupportedExpressionError
+from fgc_backends.cfamily.results import HlsResult
 from fgc_backends.hls.build import HlsBuildError, make, run_csim
 from fgc_backends.hls.config import HlsConfig, HlsConfigError
 from fgc_backends.hls.emitter import HlsProject, emit
 from fgc_backends.hls.lint import HlsLintError, LintIssue, lint_source
-from fgc_backends.hls.printer import HlsCodePrinter, UnsupportedExpressionError
-from fgc_backends.hls.results import HlsResult
 
 __all__ = ["HlsBuildError", "HlsCodePrinter", "HlsConfig", "HlsConfigError", "HlsLintError",
            "HlsProject", "HlsResult", "LintIssue", "UnsupportedExpressionError", "emit",

@@ -12,15 +12,15 @@ import subprocess
 from fgc.errors import FgcError
 from fgc.ir.datafile import ProblemData, write_data
 from fgc.ir.program import Program
-from fgc_backends.hls.config import check_fixed_data
-from fgc_backends.hls.emitter import HlsProject
-from fgc_backends.hls.results import (
+from fgc_backends.cfamily.results import (
     REFERENCE_FILE,
     HlsResult,
     read_result,
     reference_run,
     write_reference,
 )
+from fgc_backends.hls.config import check_fixed_data
+from fgc_backends.hls.emitter import HlsProject
 
 DATA_FILE, RESULT_FILE, BUILD_LOG = "data.txt", "result.txt", "build.log"
 BUILD_TIMEOUT_S = 900
@@ -56,9 +56,9 @@ def run_csim(project: HlsProject, program: Program, data: ProblemData,
     ``reference.txt``, build and run the testbench (``make csim``, which fails with
     :class:`HlsBuildError` if the result differs from the reference) and return the parsed
     ``result.txt``, with the host-side float32 verdict
-    (:func:`fgc_backends.hls.results.judge_precision`).
+    (:func:`fgc_backends.cfamily.results.judge_precision`).
 
-    ``reference``: True computes it (:func:`~fgc_backends.hls.results.reference_run`), a
+    ``reference``: True computes it (:func:`~fgc_backends.cfamily.results.reference_run`), a
     simulator result of the same Program and data is used as it is, False writes none (the
     testbench then says the result is unchecked)."""
     check_fixed_data(project.config.scalar_cxx, program, data)  # saturation is no answer

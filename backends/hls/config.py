@@ -12,7 +12,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from fgc.errors import FgcError
+from fgc_backends.cfamily.errors import CodegenError
 
 SCALARS = ("float", "double")
 _AP_FIXED = re.compile(r"^ap_fixed<\s*(\d{1,4})\s*,\s*(-?\d{1,4})\s*>$")
@@ -21,7 +21,7 @@ AP_FIXED_MAX_WIDTH = 1024  # AP_INT_MAX_W, the ap_types headers' default limit o
 CLOCK_TOLERANCE = 0.005  # relative: 7 ns (142.86 MHz) and 143 MHz are the same clock
 
 
-class HlsConfigError(FgcError):
+class HlsConfigError(CodegenError):
     """An HLS backend option is invalid, or the Program exceeds the backend's limits."""
 
 

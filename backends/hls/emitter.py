@@ -2,7 +2,7 @@
 
 Everything a template places is computed here (tables, offsets, sizes) or printed by the backend's
 printer (kernels, special functions, literals); templates only loop over these fields. The only
-user text that reaches the files goes through :mod:`fgc_backends.hls.names`. Limits are checked
+user text that reaches the files goes through :mod:`fgc_backends.cfamily.names`. Limits are checked
 first, so a Program the backend cannot build fails here with an :class:`HlsConfigError`, never in
 g++.
 """
@@ -19,7 +19,15 @@ import jinja2
 import fgc
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import Program
-from fgc_backends.hls.blocks import block_contexts
+from fgc_backends.cfamily.blocks import block_contexts
+from fgc_backends.cfamily.names import comment, identifier, key_tokens
+from fgc_backends.cfamily.printer import HlsCodePrinter
+from fgc_backends.cfamily.results import REASONS, REFERENCE_MAGIC, RESULT_MAGIC, STATUSES
+from fgc_backends.cfamily.retract import retract_kinds
+from fgc_backends.cfamily.sparsity import TILE
+from fgc_backends.cfamily.special import SERIES_BELOW, coefficient_functions
+from fgc_backends.cfamily.steps import padded, step_patterns
+from fgc_backends.cfamily.tables import IntTable, build_tables, factor_data_words
 from fgc_backends.hls.config import (
     HlsConfig,
     HlsConfigError,
@@ -28,14 +36,6 @@ from fgc_backends.hls.config import (
     fixed_declaration,
 )
 from fgc_backends.hls.lint import lint_project
-from fgc_backends.hls.names import comment, identifier, key_tokens
-from fgc_backends.hls.printer import HlsCodePrinter
-from fgc_backends.hls.results import REASONS, REFERENCE_MAGIC, RESULT_MAGIC, STATUSES
-from fgc_backends.hls.retract import retract_kinds
-from fgc_backends.hls.sparsity import TILE
-from fgc_backends.hls.special import SERIES_BELOW, coefficient_functions
-from fgc_backends.hls.steps import padded, step_patterns
-from fgc_backends.hls.tables import IntTable, build_tables, factor_data_words
 
 # template → emitted file name ({name} is the project identifier): the dataflow accelerator the
 # plan describes (docs/hls.md). The CPU program is the native backend's (fgc_backends.native).
@@ -224,7 +224,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     network += [f"process {p}" for p in procs]
     network += [f"stream {ch.name} depth={ch.depth}: {ch.producer} -> {ch.consumer}"
                 for ch in streams]
-    from fgc_backends.hls.operators import table
+    from fgc_backends.cost.operators import table
     les = table("float32" if config.linear_cxx == "float" else "float64")
     return {"les": {"partials": les.add.latency, "add": les.add.latency,
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,

@@ -36,7 +36,7 @@ deliberately small C-like parser: function definitions and their parameters, cal
 - ``pipeline``: a ``PIPELINE`` loop (or function) holds only loops with constant bounds (start
   and end), which HLS unrolls completely;
 - ``dsp``: Σ over ``#pragma HLS ALLOCATION operation instances=<op> limit=<n>`` of n × the DSP of
-  one ``<op>`` (:mod:`fgc_backends.hls.operators`, by precision: ``f…``/``d…`` names, else the
+  one ``<op>`` (:mod:`fgc_backends.cost.operators`, by precision: ``f…``/``d…`` names, else the
   project's scalar) is at most the part's DSP count (:data:`PART_DSP`; each function is counted
   as one hardware instance);
 - ``synthesis_macro``: no ``__SYNTHESIS__`` in a synthesised file (C simulation must compile the
@@ -861,7 +861,7 @@ class _Checker:
                        if self.part.lower().startswith(k)), None)
         if family is None:
             return
-        from fgc_backends.hls import operators
+        from fgc_backends.cost import operators
 
         default = "float64" if self.scalar == "double" else "float32"
         total, parts, first = 0, [], None

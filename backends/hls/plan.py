@@ -4,7 +4,7 @@
 units,
 #CPE, QR unit sets, operator ALLOCATION limits) into an :class:`AcceleratorPlan`: units with their
 allocated operators, memories, channels and *phases* of processes made of loops (trip count, II,
-depth, all derived from :mod:`fgc_backends.hls.operators`). :func:`plan_cost` is nothing but the
+depth, all derived from :mod:`fgc_backends.cost.operators`). :func:`plan_cost` is nothing but the
 arithmetic of that plan:
 
 - a loop takes ``(trip - 1) * ii + depth`` cycles (0 when ``trip == 0``), repeated ``repeat``
@@ -35,8 +35,7 @@ from dataclasses import dataclass, field
 
 from fgc.errors import FgcError
 from fgc.ir.program import Program
-
-from .operators import OperatorTable, table
+from fgc_backends.cost.operators import OperatorTable, table
 
 PART = "xc7z045"
 PART_DSP, PART_BRAM36, PART_LUT, PART_FF = 900, 545, 218_600, 437_200
@@ -358,8 +357,8 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
 
 
 def _sim_table(ops: OperatorTable):
-    from fgc_backends.sim.cost.params import OperatorCost
-    from fgc_backends.sim.cost.params import OperatorTable as SimTable
+    from fgc_backends.cost.params import OperatorCost
+    from fgc_backends.cost.params import OperatorTable as SimTable
 
     def c(o):
         return OperatorCost(latency=o.latency, dsp=o.dsp, lut=o.lut, ff=o.ff, ii=o.ii)
@@ -375,7 +374,7 @@ def _sim_table(ops: OperatorTable):
 
 def build_plan(program: Program, options: PlanOptions | None = None) -> AcceleratorPlan:
     """The accelerator plan of ``program`` with ``options`` (default: the Program's solver)."""
-    from fgc_backends.sim.cost.kernels import critical_path
+    from fgc_backends.cost.kernels import critical_path
 
     opts = options or PlanOptions.of(program)
     for name in ("units", "cpe", "hgc_lanes"):
@@ -462,7 +461,7 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
 
 
 def _qr(program, opts, ops, units, memories, channels, phases):
-    from fgc_backends.sim.cost.structure import stacked_pattern
+    from fgc_backends.cost.structure import stacked_pattern
 
     sched = program.schedule
     widest = max(len(level) for level in sched.levels)
@@ -560,7 +559,7 @@ def _solver_memories(sizes, ops, memories) -> None:
 
 def _sizes(program) -> dict:
     """The emitted tables' sizes (MAX_ROWS, MAX_W, ...): the unit headers' CFG constants."""
-    from .tables import build_tables
+    from fgc_backends.cfamily.tables import build_tables
     t = build_tables(program, damped=program.solver.method == "lm",
                      cholesky=program.solver.linear == "cholesky")
     return dict(t.constants)
@@ -740,10 +739,10 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
 
 def plan_power_w(cost: Cost) -> float:
     """Power of a plan's design, W: not modelled by the plan itself. This applies the sim cost
-    model's approach (``backends/sim/cost/resources.power_w``: static power plus per-DSP, LUT,
+    model's approach (``backends/cost/resources.power_w``: static power plus per-DSP, LUT,
     FF and BRAM36 dynamic power, linear in the clock; coefficients fitted to paper B's three
     Vivado estimates) to the plan's resources."""
-    from fgc_backends.sim.cost.params import CostParams
+    from fgc_backends.cost.params import CostParams
 
     params = CostParams()
     dynamic_mw = (cost.dsp * params.power_dsp_mw + cost.lut * params.power_lut_mw

@@ -13,11 +13,11 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from fgc.errors import FgcError
+from fgc_backends.cfamily.errors import CodegenError
 from fgc_backends.hls.config import SCALARS, HlsConfigError, check_scalar
 
 
-class NativeConfigError(FgcError):
+class NativeConfigError(CodegenError):
     """A native backend option is invalid, or the Program exceeds the backend's limits."""
 
 

@@ -7,8 +7,8 @@ for ctypes and the ``Makefile`` builds ``lib<name>.so`` with the host's ISA but 
 multiply-add, checking the library for any. There is no testbench and no synthesis script.
 
 Everything a template places is computed here or printed by the C-family printer
-(:mod:`fgc_backends.hls.printer`, shared with the HLS backend for now); user text reaches the
-files only through :mod:`fgc_backends.hls.names`. Limits are checked first, so a Program the
+(:mod:`fgc_backends.cfamily.printer`, shared with the HLS backend for now); user text reaches the
+files only through :mod:`fgc_backends.cfamily.names`. Limits are checked first, so a Program the
 backend cannot build fails here with a :class:`NativeConfigError`, never in g++.
 """
 
@@ -24,17 +24,17 @@ import jinja2
 import fgc
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import Program
-from fgc_backends.hls.blocks import block_contexts
+from fgc_backends.cfamily.blocks import block_contexts
+from fgc_backends.cfamily.names import comment, identifier
+from fgc_backends.cfamily.printer import HlsCodePrinter
+from fgc_backends.cfamily.results import REASONS, STATUSES
+from fgc_backends.cfamily.retract import retract_kinds
+from fgc_backends.cfamily.sparsity import TILE
+from fgc_backends.cfamily.special import SERIES_BELOW, coefficient_functions
+from fgc_backends.cfamily.steps import padded, step_patterns
+from fgc_backends.cfamily.tables import IntTable, build_tables, factor_data_words
 from fgc_backends.hls.config import HlsConfigError, ap_types_include
 from fgc_backends.hls.lint import lint_files
-from fgc_backends.hls.names import comment, identifier
-from fgc_backends.hls.printer import HlsCodePrinter
-from fgc_backends.hls.results import REASONS, STATUSES
-from fgc_backends.hls.retract import retract_kinds
-from fgc_backends.hls.sparsity import TILE
-from fgc_backends.hls.special import SERIES_BELOW, coefficient_functions
-from fgc_backends.hls.steps import padded, step_patterns
-from fgc_backends.hls.tables import IntTable, build_tables, factor_data_words
 from fgc_backends.native.config import NativeConfig, NativeConfigError
 
 # template → emitted file name ({name} is the project identifier)

@@ -27,9 +27,9 @@ from fgc.compiler.cache import cache_dir
 from fgc.errors import DataError
 from fgc.ir.datafile import ProblemData, check_structure
 from fgc.ir.program import Program
-from fgc_backends.hls.names import identifier
-from fgc_backends.hls.results import HlsResult, judge_precision, result_from_arrays
-from fgc_backends.hls.tables import factor_data_words
+from fgc_backends.cfamily.names import identifier
+from fgc_backends.cfamily.results import HlsResult, judge_precision, result_from_arrays
+from fgc_backends.cfamily.tables import factor_data_words
 from fgc_backends.native.build import make
 from fgc_backends.native.config import NativeConfig
 from fgc_backends.native.emitter import NativeProject, emit
@@ -128,7 +128,7 @@ class NativeSolver:
 
     def run(self, data: ProblemData) -> HlsResult:
         """Solve ``data``; the result carries the host-side float32 verdict
-        (:func:`fgc_backends.hls.results.judge_precision`: a float build that cannot place the
+        (:func:`fgc_backends.cfamily.results.judge_precision`: a float build that cannot place the
         state within its noise says "failed", reason "precision_limit", never "converged")."""
         x, errors, info = self.solve(*self.flatten(data))
         return judge_precision(self.program, data,
@@ -158,9 +158,10 @@ def project_key(program: Program, config: NativeConfig) -> str:
     h.update(fgc.__version__.encode())
     for template in sorted(NativeConfig.template_dir().glob("*.jinja")):
         h.update(template.read_bytes())
-    # this backend's modules and the C-family helpers it prints with (fgc_backends.hls)
+    # this backend's modules and the C-family layer it prints with (fgc_backends.cfamily)
     backends = Path(__file__).resolve().parent.parent
-    for module in sorted([*(backends / "native").glob("*.py"), *(backends / "hls").glob("*.py")]):
+    for module in sorted([*(backends / "native").glob("*.py"),
+                          *(backends / "cfamily").glob("*.py")]):
         h.update(module.read_bytes())
     return h.hexdigest()[:24]
 

@@ -99,8 +99,7 @@ def evaluate_group(program: Program, data, designs: tuple[Design, ...]) -> Group
     """Worker entry point: simulate ``program`` on ``data`` once, then run the cost model for
     every design (all share the Program's linear solver and precision). Failures are returned,
     not raised, so one bad group does not end the sweep."""
-    from importlib import import_module
-
+    from fgc_backends import cost as cost_model
     from fgc_backends import load
 
     cpu0, wall0 = time.process_time(), time.perf_counter()
@@ -108,7 +107,6 @@ def evaluate_group(program: Program, data, designs: tuple[Design, ...]) -> Group
     solver = program.solver
     try:
         sim = load("sim")
-        cost_model = import_module(f"{sim.__name__}.cost")
         result = sim.run(program, data)
         costs = tuple(_cost_row(cost_model.estimate(
             dataclasses.replace(program, solver=d.solver(solver)),

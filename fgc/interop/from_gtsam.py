@@ -53,19 +53,16 @@ from fgc.frontend.geometry import (
     vector_type,
 )
 from fgc.frontend.noise import NoiseModel, RobustLoss, diagonal, isotropic, sqrt_information
+from fgc.interop import twins
 from fgc.interop.to_gtsam import value_from_gtsam, value_to_gtsam
 
 _nm = gtsam.noiseModel
-_PRIORS = {gtsam.PriorFactorPose2: Pose2, gtsam.PriorFactorPose3: Pose3,
-           gtsam.PriorFactorRot2: Rot2, gtsam.PriorFactorRot3: Rot3,
-           gtsam.PriorFactorPoint2: Point2, gtsam.PriorFactorPoint3: Point3,
-           gtsam.PriorFactorConstantBias: ImuBias, gtsam.PriorFactorVector: VectorSpace}
-_BETWEENS = {gtsam.BetweenFactorPose2: Pose2, gtsam.BetweenFactorPose3: Pose3,
-             gtsam.BetweenFactorRot2: Rot2, gtsam.BetweenFactorRot3: Rot3,
-             gtsam.BetweenFactorPoint2: Point2, gtsam.BetweenFactorPoint3: Point3,
-             gtsam.BetweenFactorConstantBias: ImuBias, gtsam.BetweenFactorVector: VectorSpace}
-_RANGES = {gtsam.RangeFactor2D: (Pose2, Point2), gtsam.RangeFactor3D: (Pose3, Point3),
-           gtsam.RangeFactorPose2: (Pose2, Pose2), gtsam.RangeFactorPose3: (Pose3, Pose3)}
+# fgc variable types by the twin tables' names (fgc.interop.twins: one table for both directions)
+_TYPES = {"Pose2": Pose2, "Pose3": Pose3, "Rot2": Rot2, "Rot3": Rot3, "Point2": Point2,
+          "Point3": Point3, "ImuBias": ImuBias, "Vector": VectorSpace}
+_PRIORS = {getattr(gtsam, cls): _TYPES[t] for t, cls in twins.PRIOR.items()}
+_BETWEENS = {getattr(gtsam, cls): _TYPES[t] for t, cls in twins.BETWEEN.items()}
+_RANGES = {getattr(gtsam, cls): (_TYPES[a], _TYPES[b]) for (a, b), cls in twins.RANGE.items()}
 _IMU_TYPES = (Pose3, Vector3, Pose3, Vector3, ImuBias, ImuBias)
 _IMU_TOL = 1e-9  # relative agreement demanded of a reconstructed CombinedImuFactor
 
@@ -179,13 +176,13 @@ def _convert(gf, index: int) -> _Converted:
             for cls, arg in table.items():
                 if isinstance(gf, cls):
                     return conv(gf, arg, noise_from_gtsam(gf.noiseModel()))
-        if isinstance(gf, gtsam.GPSFactor):
+        if isinstance(gf, getattr(gtsam, twins.GPS)):
             pos = np.asarray(gf.measurementIn(), float)
             noise = noise_from_gtsam(gf.noiseModel())
             return _Converted((Pose3,), lambda k, _: GPSFactor(k[0], pos, noise))
-        if isinstance(gf, gtsam.BearingRangeFactor2D):
+        if isinstance(gf, getattr(gtsam, twins.BEARING_RANGE)):
             return _bearing_range(gf, noise_from_gtsam(gf.noiseModel()))
-        if isinstance(gf, gtsam.CombinedImuFactor):
+        if isinstance(gf, getattr(gtsam, twins.COMBINED_IMU)):
             return _imu(gf, index, noise_from_gtsam(gf.noiseModel()))
         if isinstance(gf, gtsam.BearingRangeFactor3D):
             raise FgcError("BearingRangeFactor3D (Pose3 → Point3) has no fgc built-in: GTSAM "
@@ -240,7 +237,9 @@ def range_factor_type(pose_t: type[LieGroup], target_t: type[LieGroup]) -> Facto
 
     range_factor.__annotations__ = {"pose": pose_t, "target": target_t, "measured": float}
     suffix = target_t.__name__ if to_pose else ("2D" if pose_t is Pose2 else "3D")
-    return factor(range_factor, name=f"RangeFactor{suffix}")
+    ftype = factor(range_factor, name=f"RangeFactor{suffix}")
+    ftype.gtsam_kind = ("range", (pose_t.__name__, target_t.__name__))
+    return ftype
 
 
 # --------------------------------------------------------------------------------------------

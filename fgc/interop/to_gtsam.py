@@ -33,6 +33,7 @@ from fgc.frontend.geometry import (
     VectorSpace,
 )
 from fgc.frontend.noise import NoiseModel
+from fgc.interop import twins
 
 
 def _gtsam():
@@ -114,13 +115,20 @@ def noise_to_gtsam(noise: NoiseModel):
     return gtsam.noiseModel.Robust.Create(loss, base)
 
 
-_BETWEEN = {"Pose3": "BetweenFactorPose3", "Pose2": "BetweenFactorPose2",
-            "Rot3": "BetweenFactorRot3", "Rot2": "BetweenFactorRot2",
-            "Point3": "BetweenFactorPoint3", "Point2": "BetweenFactorPoint2",
-            "ImuBias": "BetweenFactorConstantBias"}
-_PRIOR = {"Pose3": "PriorFactorPose3", "Pose2": "PriorFactorPose2", "Rot3": "PriorFactorRot3",
-          "Rot2": "PriorFactorRot2", "Point3": "PriorFactorPoint3", "Point2": "PriorFactorPoint2",
-          "ImuBias": "PriorFactorConstantBias", "Vector3": "PriorFactorVector"}
+def twin_name(kind) -> str | None:
+    """The GTSAM class of a built-in factor kind (``FactorType.gtsam_kind``), from the one twin
+    table (:mod:`fgc.interop.twins`); ``None``: GTSAM's side is a numeric CustomFactor."""
+    if kind is None:
+        return None
+    name, arg = kind
+    if name == "prior":
+        return twins.PRIOR.get(twins.table_key(arg))
+    if name == "between":
+        return twins.BETWEEN.get(twins.table_key(arg))
+    if name == "range":
+        return twins.RANGE.get(tuple(arg))
+    return {"gps": twins.GPS, "bearing_range": twins.BEARING_RANGE,
+            "combined_imu": twins.COMBINED_IMU}.get(name)
 
 
 def factor_to_gtsam(f: Factor, keys: dict, graph: Graph):
@@ -132,12 +140,16 @@ def factor_to_gtsam(f: Factor, keys: dict, graph: Graph):
     types = [graph.variables[k].type for k in f.keys]
     if kind is not None:
         name, arg = kind
-        if name == "prior" and arg in _PRIOR:
+        twin = twin_name(kind)
+        if name == "prior" and twin:
             val = types[0].from_storage(f.measured["prior"])
-            return getattr(gtsam, _PRIOR[arg])(ks[0], value_to_gtsam(val), noise)
-        if name == "between" and arg in _BETWEEN:
+            return getattr(gtsam, twin)(ks[0], value_to_gtsam(val), noise)
+        if name == "between" and twin:
             val = types[0].from_storage(f.measured["measured"])
-            return getattr(gtsam, _BETWEEN[arg])(ks[0], ks[1], value_to_gtsam(val), noise)
+            return getattr(gtsam, twin)(ks[0], ks[1], value_to_gtsam(val), noise)
+        if name == "range" and twin:
+            measured = float(np.asarray(f.measured["measured"], float).ravel()[0])
+            return getattr(gtsam, twin)(ks[0], ks[1], measured, noise)
         if name == "gps":
             return gtsam.GPSFactor(ks[0], f.measured["position"], noise)
         if name == "bearing_range":
@@ -407,11 +419,7 @@ def values_from_gtsam(graph: Graph, problem: GtsamProblem, gvalues) -> dict:
 def is_custom(ftype) -> bool:
     """Whether GTSAM's side of a factor type is the numeric CustomFactor (no native twin)."""
     kind = getattr(ftype, "gtsam_kind", None)
-    if kind is None:
-        return True
-    name, arg = kind
-    return not ((name == "prior" and arg in _PRIOR) or (name == "between" and arg in _BETWEEN)
-                or name in ("gps", "bearing_range", "combined_imu"))
+    return twin_name(kind) is None
 
 
 @dataclass(frozen=True)

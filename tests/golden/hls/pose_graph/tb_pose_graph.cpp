@@ -51,7 +51,7 @@ const char* const REASON_NAMES[fgc::N_REASONS] = {
     "lambda_limit",
 };
 
-// each variable's key token (fgc_backends.hls.names.key_tokens: integer keys as digits, other
+// each variable's key token (fgc_backends.cfamily.names.key_tokens: integer keys as digits, other
 // keys sanitised) and where its rotation is stored: kind 0 none, 2 cos-sin, 3 a 3x3 matrix
 const char* const KEY_TOKENS[fgc::N_VARIABLES] = {
     "x0",

@@ -15,8 +15,8 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import dataclass
 
-from fgc_backends.hls.sparsity import TILE, BlockPattern
-from fgc_backends.hls.tables import Tables
+from fgc_backends.cfamily.sparsity import TILE, BlockPattern
+from fgc_backends.cfamily.tables import Tables
 
 MAX_PATTERNS = 8
 

@@ -11,7 +11,7 @@ The testbench writes (numbers with ``%.17g``, so doubles read back exactly)::
     VARIABLES <n>
     <key> <storage_dim> <v> ...    one line per variable, Program.variables order
 
-``<key>`` is the variable's key token (:func:`fgc_backends.hls.names.key_tokens`: an integer key
+``<key>`` is the variable's key token (:func:`fgc_backends.cfamily.names.key_tokens`: an integer key
 as its digits, other keys sanitised), from a table the emitter generates; :func:`read_result`
 checks each against the Program and returns the values under the graph's keys as well
 (``HlsResult.keyed_values``: integer keys as ``int``).
@@ -47,7 +47,7 @@ from fgc.errors import DataError
 from fgc.ir import conditioning
 from fgc.ir.datafile import ProblemData
 from fgc.ir.program import Program
-from fgc_backends.hls.names import key_tokens, token_key
+from fgc_backends.cfamily.names import key_tokens, token_key
 
 RESULT_MAGIC = "FGCRESULT 2"
 REFERENCE_MAGIC = "FGCREFERENCE 1"

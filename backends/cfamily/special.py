@@ -15,7 +15,7 @@ import sympy as sp
 
 from fgc.compiler.kernel import Kernel, drop_dead
 from fgc.frontend.geometry import special
-from fgc_backends.hls.printer import HlsCodePrinter, print_kernel
+from fgc_backends.cfamily.printer import HlsCodePrinter, print_kernel
 
 
 @dataclass(frozen=True)

@@ -16,9 +16,9 @@ import sympy as sp
 
 from fgc.compiler.kernel import Kernel, drop_dead
 from fgc.ir.program import BlockSpec, Program
-from fgc_backends.hls.names import comment
-from fgc_backends.hls.printer import PrintedKernel, print_kernel
-from fgc_backends.hls.sparsity import ZERO, BlockPattern, GramTiles, block_pattern
+from fgc_backends.cfamily.names import comment
+from fgc_backends.cfamily.printer import PrintedKernel, print_kernel
+from fgc_backends.cfamily.sparsity import ZERO, BlockPattern, GramTiles, block_pattern
 
 NOISE_KINDS = {"isotropic": 0, "diagonal": 1, "full": 2}
 

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from fgc.ir.program import BlockSpec
-from fgc_backends.hls.config import HlsConfigError
+from fgc_backends.cfamily.errors import CodegenError
 
 ZERO, ONE, MINUS_ONE, VALUE = "0", "1", "-1", "x"
 TILE = 4  # the Gram is computed in TILE × TILE tiles of columns (one SIMD register per tile row)
@@ -123,7 +123,7 @@ class GramTiles:
 def block_pattern(block: BlockSpec, kinds: tuple[int, ...], where: str) -> BlockPattern:
     """The pattern of ``block`` whose members have noise ``kinds`` (0, 1, 2 as above).
 
-    Raises :class:`HlsConfigError` naming ``where`` if a structure code disagrees with the
+    Raises :class:`CodegenError` naming ``where`` if a structure code disagrees with the
     block's kernel output (a "0" that is not zero, a "±1" that is not that constant).
     """
     m, d = block.residual_dim, sum(block.variable_dims)
@@ -157,6 +157,6 @@ def _check_against_kernel(block: BlockSpec, raw: list[list[str]], where: str) ->
                 expr, code = sp.sympify(outputs[pos]), raw[r][col + j]
                 pos += 1
                 if code != VALUE and expr != sp.Integer(int(code)):
-                    raise HlsConfigError(f"{where}: Jacobian entry ({r}, {col + j}) has structure "
+                    raise CodegenError(f"{where}: Jacobian entry ({r}, {col + j}) has structure "
                                          f"code {code!r} but the kernel computes {expr}")
         col += dim

@@ -39,7 +39,7 @@ Sources:
   guide gives no latency/resource table for them; latency and cost here are ``assumed``.
 - **design**: a choice of this plan, explained in the note.
 
-Where this table and ``backends/sim/cost/params.py`` disagree (see :data:`DISAGREEMENTS`): the
+Where this table and ``backends/cost/params.py`` disagree (see :data:`DISAGREEMENTS`): the
 sim table has no ``compare`` or ``recip_sqrt`` kind, lumps sin/cos/atan2 into one ``trig`` kind
 and has no ``exp``/``log``; it models the Lie coefficients as one ``special`` unit (series +
 closed form). The numbers of the kinds both have were kept equal on purpose; the float32 add and
@@ -113,7 +113,7 @@ OPERATOR_KINDS = ("add", "mul", "div", "sqrt", "recip_sqrt", "compare", "sincos"
 KERNEL_KINDS = {"trig": "sincos"}
 
 _PG = "PG060 (Floating-Point Operator v7.1), 7-series"
-_SIM = "equal to backends/sim/cost/params.py [PG060] until the PG060 rows are read"
+_SIM = "equal to backends/cost/params.py [PG060] until the PG060 rows are read"
 _CLASH = ("Clash clash-cores Clash.Cores.Xilinx.Floating (Explicit.hs): maximum latency of "
           "Floating-Point Operator v7.1, single, speed-optimised, full DSP usage")
 _RES = "DSP/LUT/FF " + _SIM

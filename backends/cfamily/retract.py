@@ -19,8 +19,8 @@ import fgc.frontend.geometry as geometry
 from fgc.compiler.kernel import Kernel
 from fgc.frontend.geometry import LieGroup
 from fgc.ir.program import Program
-from fgc_backends.hls.config import HlsConfigError
-from fgc_backends.hls.printer import PrintedKernel, print_kernel
+from fgc_backends.cfamily.errors import CodegenError
+from fgc_backends.cfamily.printer import PrintedKernel, print_kernel
 
 
 @dataclass(frozen=True)
@@ -43,7 +43,7 @@ def variable_class(type_name: str) -> type[LieGroup]:
     cls = getattr(geometry, type_name, None)
     if isinstance(cls, type) and issubclass(cls, LieGroup) and cls is not LieGroup:
         return cls
-    raise HlsConfigError(f"the HLS backend has no retraction for variable type {type_name!r}")
+    raise CodegenError(f"no C++ retraction for variable type {type_name!r}")
 
 
 def retract_kernel(cls: type[LieGroup]) -> Kernel:
@@ -66,7 +66,7 @@ def retract_kinds(program: Program) -> tuple[RetractKind, ...]:
         cls = variable_class(name)
         spec = program.variables[variables[0]]
         if (cls.storage_dim, cls.dim) != (spec.storage_dim, spec.dim):
-            raise HlsConfigError(f"variable type {name!r}: the Program's sizes do not match "
+            raise CodegenError(f"variable type {name!r}: the Program's sizes do not match "
                                  "fgc.frontend.geometry's")
         kernel = retract_kernel(cls)
         names = [f"x[{i}]" for i in range(cls.storage_dim)] + [f"d[{i}]" for i in range(cls.dim)]
