@@ -8,6 +8,7 @@ so no caller-chosen path ever reaches make or the shell.
 from __future__ import annotations
 
 import subprocess
+from pathlib import Path
 
 from fgc.errors import FgcError
 from fgc.ir.datafile import ProblemData, write_data
@@ -19,7 +20,7 @@ from fgc_backends.cfamily.results import (
     reference_run,
     write_reference,
 )
-from fgc_backends.hls.config import check_fixed_data
+from fgc_backends.hls.config import HlsConfig, check_fixed_data
 from fgc_backends.hls.emitter import HlsProject
 
 DATA_FILE, RESULT_FILE, BUILD_LOG = "data.txt", "result.txt", "build.log"
@@ -73,3 +74,22 @@ def run_csim(project: HlsProject, program: Program, data: ProblemData,
     result.unlink(missing_ok=True)
     make(project, "csim")
     return read_result(result, program, data, project.config.scalar)
+
+
+def run(program: Program, data: ProblemData, config: HlsConfig | None = None,
+        out_dir: str | Path | None = None) -> HlsResult:
+    """The backend contract's ``run``: emit ``program``'s accelerator into ``out_dir`` (a
+    temporary directory if None), run its C simulation against the simulator's reference
+    (:func:`run_csim`) and return the result with ``values`` as fgc values by Program key (the
+    raw arrays in ``storage``), as the simulator and the native backend do."""
+    import tempfile
+    from dataclasses import replace
+
+    from fgc.interop.estimates import values_from_storage
+    from fgc_backends.hls.emitter import emit
+
+    with tempfile.TemporaryDirectory(prefix="fgc-hls-") as tmp:
+        project = emit(program, out_dir or tmp, config)
+        result = run_csim(project, program, data)
+    return replace(result, values=values_from_storage(program, result.values),
+                   storage=result.values)

@@ -17,5 +17,7 @@ from fgc_backends.native.config import NativeConfig, NativeConfigError, host_fla
 from fgc_backends.native.emitter import NativeProject, emit
 from fgc_backends.native.solver import NativeSolver, default_config, load, run
 
-__all__ = ["NativeBuildError", "NativeConfig", "NativeConfigError", "NativeProject",
+Config = NativeConfig  # the backend contract's name (fgc_backends.CONTRACT)
+
+__all__ = ["Config", "NativeBuildError", "NativeConfig", "NativeConfigError", "NativeProject",
            "NativeSolver", "default_config", "emit", "host_flags", "load", "make", "run"]

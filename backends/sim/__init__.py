@@ -17,5 +17,7 @@ from .emitter import EmitError, emit
 from .printer import SimPrinter
 from .runner import SimResult, linearize, read_result, run
 
-__all__ = ["EmitError", "SimConfig", "SimPrinter", "SimResult", "emit", "linearize", "read_result",
-           "run"]
+Config = SimConfig  # the backend contract's name (fgc_backends.CONTRACT)
+
+__all__ = ["Config", "EmitError", "SimConfig", "SimPrinter", "SimResult", "emit", "linearize",
+           "read_result", "run"]

@@ -288,6 +288,19 @@ def _backend(name: str):
     return load(name)
 
 
+def _backend_names() -> tuple[str, ...]:
+    """The registry's backend names (fgc_backends.BACKENDS): the CLI hard-codes none."""
+    from fgc_backends import names
+
+    return names()
+
+
+def _backend_help() -> str:
+    from fgc_backends import BACKENDS
+
+    return "; ".join(f"{b.name}: {b.summary}" for b in BACKENDS.values())
+
+
 # --------------------------------------------------------------------------------------------
 # commands
 # --------------------------------------------------------------------------------------------
@@ -379,10 +392,12 @@ def _cmd_run(args) -> int:
     t0 = time.perf_counter()
     if args.backend == "native":
         result = _backend("native").run(program, data, _native_config(args, program))
+    elif args.backend == "hls":  # the accelerator's C simulation (make csim), g++ on this host
+        result = _backend("hls").run(program, data, _hls_config(args, program))
     else:
         if getattr(args, "scalar", None) or getattr(args, "part", None):
-            raise UsageError("fgc run: --scalar applies to --backend native only (and --part to "
-                             "fgc compile --backend hls)")
+            raise UsageError("fgc run: --scalar and --part apply to --backend native or hls, "
+                             "not to the simulator (which runs float32 or float64: --precision)")
         result = _backend("sim").run(program, data)
     status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
@@ -847,11 +862,12 @@ def _command_args(name: str, p: argparse.ArgumentParser) -> None:
                        help="print (and put in --json) the marginal covariances of these "
                             "variables at the estimate")
     if name == "compile":
-        p.add_argument("--backend", choices=("sim", "hls", "native"), default="sim",
-                       help="backend")
+        p.add_argument("--backend", choices=_backend_names(), default="sim",
+                       help="backend: " + _backend_help())
         p.add_argument("--out", required=True, metavar="DIR", help="output folder")
     elif name == "run":
-        p.add_argument("--backend", choices=("native", "sim"), default="native", help="solver")
+        p.add_argument("--backend", choices=_backend_names(), default="native",
+                       help="solver (hls: the accelerator's C simulation): " + _backend_help())
     elif name == "simulate":
         p.add_argument("--plot", metavar="DIR", help="write plots (needs matplotlib)")
     elif name == "report":
