@@ -32,10 +32,10 @@ from fgc.frontend.factors import (
 )
 from fgc.frontend.geometry import ImuBias, Point2, Pose2, Pose3, Rot2, Rot3, Vector3
 from fgc.frontend.preintegration import ImuParams, PreintegratedCombinedMeasurements
+from fgc.ir.codes import NOISE_KINDS, ROBUST_KINDS
 
 FAMILIES = ("pose2", "pose3", "imu")
-NOISE_KINDS = ("isotropic", "diagonal", "full")
-ROBUST = (None, "huber", "cauchy")
+ROBUST = (None, *ROBUST_KINDS)
 CHAIN_ORDERINGS = ("auto", "serial", "min-degree", "nested-dissection")
 GENERAL_ORDERINGS = ("auto", "min-degree", "nested-dissection")
 STATE_TOL, ERROR_RTOL, ERROR_ATOL = 1e-6, 1e-6, 1e-12

@@ -1,6 +1,6 @@
-"""Deterministic output: every shipped example, compiled for both backends, gives byte-identical
-files (the Program's JSON, the data file and every emitted source) twice in one process (the
-second time from a warm derivation cache) and in two processes with different
+"""Deterministic output: every shipped example, compiled for every registered backend, gives
+byte-identical files (the Program's JSON, the data file and every emitted source) twice in one
+process (the second time from a warm derivation cache) and in two processes with different
 ``PYTHONHASHSEED`` s, each starting from its own empty cache.
 
 Set iteration order, sympy's hash-dependent term order and dictionary order of unhashed keys are
@@ -21,6 +21,8 @@ from pathlib import Path
 
 import pytest
 
+from fgc_backends import names
+
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = {  # small sizes: the derivations, which dominate, do not depend on them
     "lio": ["examples/lio.py", "-p", "N=6"],
@@ -32,10 +34,11 @@ EXAMPLES = {  # small sizes: the derivations, which dominate, do not depend on t
 SCRIPT = """
 import sys
 from fgc.app.cli import main
+from fgc_backends import names
 out, cases = sys.argv[1], eval(sys.argv[2])
 for run in ("cold", "warm"):
     for name, argv in cases.items():
-        for backend in ("sim", "hls"):
+        for backend in names():
             code = main(["compile", *argv, "--backend", backend,
                          "--out", f"{out}/{run}/{name}/{backend}"])
             assert code == 0, (name, backend, code)
@@ -70,9 +73,9 @@ def test_examples_are_byte_identical_across_runs_and_hash_seeds(tmp_path, chosen
     assert outputs["1"].keys() == outputs["2"].keys()
     for name, text in outputs["1"].items():
         assert text == outputs["2"][name], f"{name}: differs between PYTHONHASHSEED 1 and 2"
-    names = {n.split("/")[0] for n in outputs["1"]}
-    assert names == set(cases)
-    for name in cases:  # both backends, the Program and the data file of each
+    examples = {n.split("/")[0] for n in outputs["1"]}
+    assert examples == set(cases)
+    for name in cases:  # every backend, the Program and the data file of each
         got = {n.split("/", 2)[1] for n in outputs["1"] if n.startswith(f"{name}/")}
-        assert got == {"sim", "hls"}, name
+        assert got == set(names()), name
         assert f"{name}/sim/program.json" in outputs["1"], name

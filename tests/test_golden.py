@@ -19,6 +19,7 @@ from pathlib import Path
 import pytest
 
 from fgc.app.cli import main as cli_main
+from fgc_backends import names
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = Path(__file__).resolve().parent / "golden"
@@ -43,7 +44,7 @@ def _first_difference(name: str, want: bytes, got: bytes) -> str:
     return "\n".join(list(diff)[:20])
 
 
-@pytest.mark.parametrize("backend", ["sim", "hls", "native"])
+@pytest.mark.parametrize("backend", names())
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_emitted_project_equals_golden(case, backend, tmp_path, request, monkeypatch):
     monkeypatch.chdir(ROOT)

@@ -20,8 +20,9 @@ import sympy as sp
 
 from fgc.compile import compile_graph
 from fgc.compiler.kernel import Kernel
+from fgc.ir.codes import NOISE_CODES
 from fgc.ir.program import SolverConfig
-from fgc_backends.cfamily.blocks import NOISE_KINDS, block_contexts
+from fgc_backends.cfamily.blocks import block_contexts
 from fgc_backends.cfamily.errors import CodegenError
 from fgc_backends.cfamily.printer import print_kernel
 from fgc_backends.cfamily.sparsity import TILE, ZERO, block_pattern
@@ -46,7 +47,7 @@ def programs() -> dict:
 
 
 def _kinds(block) -> tuple[int, ...]:
-    return tuple(NOISE_KINDS[m.noise_kind] for m in block.members)
+    return tuple(NOISE_CODES[m.noise_kind] for m in block.members)
 
 
 # ---- sparsity --------------------------------------------------------------------------------

@@ -15,12 +15,11 @@ from dataclasses import dataclass
 import sympy as sp
 
 from fgc.compiler.kernel import Kernel, drop_dead
+from fgc.ir.codes import NOISE_CODES
 from fgc.ir.program import BlockSpec, Program
 from fgc_backends.cfamily.names import comment
 from fgc_backends.cfamily.printer import PrintedKernel, print_kernel
 from fgc_backends.cfamily.sparsity import ZERO, BlockPattern, GramTiles, block_pattern
-
-NOISE_KINDS = {"isotropic": 0, "diagonal": 1, "full": 2}
 
 
 @dataclass(frozen=True)
@@ -114,7 +113,7 @@ def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, .
     noise_in = n_in
     for m in block.members:
         words = sum(n for _, n in m.measurements)
-        members.append(MemberSlot(m.rows[0], m.rows[1] - m.rows[0], NOISE_KINDS[m.noise_kind],
+        members.append(MemberSlot(m.rows[0], m.rows[1] - m.rows[0], NOISE_CODES[m.noise_kind],
                                   m.noise_params, words, data, meas_in, data + words, noise_in,
                                   data + words + m.noise_params))
         data += words + m.noise_params + 2

@@ -38,13 +38,14 @@ from __future__ import annotations
 import hashlib
 import runpy
 import tempfile
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
 
 from fgc.errors import DataError
 from fgc.ir import conditioning
+from fgc.ir.codes import REASONS, STATUSES
 from fgc.ir.datafile import ProblemData
 from fgc.ir.program import Program
 from fgc_backends.cfamily.names import key_tokens, token_key
@@ -52,9 +53,6 @@ from fgc_backends.cfamily.names import key_tokens, token_key
 RESULT_MAGIC = "FGCRESULT 2"
 REFERENCE_MAGIC = "FGCREFERENCE 1"
 REFERENCE_FILE = "reference.txt"
-STATUSES = ("converged", "max_iterations", "failed")
-REASONS = ("gradient", "step", "predicted_decrease", "absolute_error", "relative_decrease",
-           "max_iterations", "non_finite", "singular", "cost_increased", "lambda_limit")
 PRECISION_LIMIT = "precision_limit"  # a host-side verdict (judge_precision), not a kernel reason
 
 
@@ -79,6 +77,13 @@ class HlsResult:
     # the storage arrays under the graph's keys, read from a keyed result file (integer keys as
     # int: fgc.names.token_key); None when the result did not come from a file
     keyed_values: dict | None = None
+    keys: dict = field(default_factory=dict)  # Program variable key → the user's key (run())
+
+    @property
+    def user_values(self) -> dict:
+        """``values`` by the graph's own keys (an int key is an int again), as
+        ``SimResult.user_values``: filled by the backends' ``run``."""
+        return {self.keys.get(k, k): v for k, v in self.values.items()}
 
     @property
     def converged(self) -> bool:

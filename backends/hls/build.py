@@ -92,4 +92,4 @@ def run(program: Program, data: ProblemData, config: HlsConfig | None = None,
         project = emit(program, out_dir or tmp, config)
         result = run_csim(project, program, data)
     return replace(result, values=values_from_storage(program, result.values),
-                   storage=result.values)
+                   storage=result.values, keys={v.key: v.user_key for v in program.variables})

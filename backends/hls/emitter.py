@@ -17,12 +17,13 @@ from pathlib import Path
 import jinja2
 
 import fgc
+from fgc.ir.codes import NOISE_CODES, REASONS, ROBUST_CODES, STATUSES
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import Program
 from fgc_backends.cfamily.blocks import block_contexts
 from fgc_backends.cfamily.names import comment, identifier, key_tokens
 from fgc_backends.cfamily.printer import HlsCodePrinter
-from fgc_backends.cfamily.results import REASONS, REFERENCE_MAGIC, RESULT_MAGIC, STATUSES
+from fgc_backends.cfamily.results import REFERENCE_MAGIC, RESULT_MAGIC
 from fgc_backends.cfamily.retract import retract_kinds
 from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.cfamily.special import SERIES_BELOW, coefficient_functions
@@ -362,6 +363,7 @@ def _context(program: Program, config: HlsConfig, project: str, vector: bool = T
         "lanes": host_lanes, "laned": host_lanes != 1, "lanes_auto": host_lanes is None,
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,
+        "noise_codes": NOISE_CODES, "robust_codes": ROBUST_CODES,
         "key_tokens": key_tokens(v.key for v in program.variables),
         "rotations": [ROTATIONS.get(v.type_name, (0, 0)) for v in program.variables],
         "tb_double": config.scalar_cxx == "double", "tol": TB_TOLERANCES,

@@ -22,12 +22,12 @@ from pathlib import Path
 import jinja2
 
 import fgc
+from fgc.ir.codes import NOISE_CODES, REASONS, ROBUST_CODES, STATUSES
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import Program
 from fgc_backends.cfamily.blocks import block_contexts
 from fgc_backends.cfamily.names import comment, identifier
 from fgc_backends.cfamily.printer import HlsCodePrinter
-from fgc_backends.cfamily.results import REASONS, STATUSES
 from fgc_backends.cfamily.retract import retract_kinds
 from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.cfamily.special import SERIES_BELOW, coefficient_functions
@@ -229,6 +229,7 @@ def _context(program: Program, config: NativeConfig, project: str) -> dict:
         "lanes": host_lanes, "laned": host_lanes != 1, "lanes_auto": host_lanes is None,
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,
+        "noise_codes": NOISE_CODES, "robust_codes": ROBUST_CODES,
         "max_level_width": max(len(level) for level in program.schedule.levels),
         "max_line_chars": 32 * max([v.storage_dim for v in program.variables] + [
             factor_data_words(program, b) for b in range(len(program.blocks))]) + 64,

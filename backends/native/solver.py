@@ -213,4 +213,4 @@ def run(program: Program, data: ProblemData, config: NativeConfig | None = None)
 
     result = load(program, config).run(data)
     return replace(result, values=values_from_storage(program, result.values),
-                   storage=result.values)
+                   storage=result.values, keys={v.key: v.user_key for v in program.variables})

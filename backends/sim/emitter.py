@@ -18,13 +18,13 @@ import jinja2
 import fgc
 from fgc.errors import FgcError
 from fgc.frontend.geometry import special
+from fgc.ir.codes import NOISE_CODES, NOISE_KINDS, noise_param_count
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import BlockSpec, Program
 
 from .config import SimConfig, comment
 from .printer import PrintedKernel, SimPrinter
 
-NOISE_KINDS = ("isotropic", "diagonal", "full")
 # the result file's format (2: values keyed by variable, {str(key): {"key", "type", "value"}})
 RESULT_FORMAT = "fgc-sim-result 2"
 # variable type → (retraction kind, tangent dim, storage dim); vector spaces are matched below
@@ -193,13 +193,13 @@ def _members(block: BlockSpec) -> list[tuple]:
     for number, mem in enumerate(block.members):
         first, last = mem.rows
         rows = last - first
-        expected = {"isotropic": 1, "diagonal": rows, "full": rows * (rows + 1) // 2}
+        expected = {kind: noise_param_count(kind, rows) for kind in NOISE_KINDS}
         if expected.get(mem.noise_kind) != mem.noise_params:
             raise EmitError(f"block '{comment(block.name)}' member {number}: noise kind "
                             f"{comment(mem.noise_kind)} with {mem.noise_params} parameters")
         touches = [k for k, s in enumerate(block.structure)
                    if any(e != "0" for row in s[first:last] for e in row)]
-        out.append((first, last, NOISE_KINDS.index(mem.noise_kind), mem.noise_params,
+        out.append((first, last, NOISE_CODES[mem.noise_kind], mem.noise_params,
                     sum(size for _, size in mem.measurements), touches))
     return out
 

@@ -26,7 +26,7 @@ from fgc.compiler.kernel import Kernel, drop_dead, jacobian_kernel, numeric_func
 from fgc.errors import DerivationError
 from fgc.frontend.dsl import FactorType, MatrixType, storage_dim, type_name
 from fgc.frontend.geometry import LieGroup, special
-from fgc.frontend.noise import KINDS
+from fgc.ir.codes import NOISE_KINDS as KINDS
 
 GENERAL, ZERO, ONE, MINUS_ONE = "x", "0", "1", "-1"
 _PROBES = 3

@@ -14,8 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from fgc.errors import DataError
-
-KINDS = ("isotropic", "diagonal", "full")
+from fgc.ir.codes import ROBUST_KINDS
 
 
 def _finite_array(values, what: str) -> np.ndarray:
@@ -33,8 +32,8 @@ class RobustLoss:
     k: float
 
     def __post_init__(self):
-        if self.kind not in ("huber", "cauchy"):
-            raise DataError(f"unknown robust loss {self.kind!r}; use 'huber' or 'cauchy'")
+        if self.kind not in ROBUST_KINDS:
+            raise DataError(f"unknown robust loss {self.kind!r}; one of {ROBUST_KINDS}")
         if not (np.isfinite(self.k) and self.k > 0):
             raise DataError(f"robust loss {self.kind} needs a positive finite k, got {self.k}")
 

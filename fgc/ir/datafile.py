@@ -30,11 +30,11 @@ import numpy as np
 
 from fgc.errors import DataError
 from fgc.frontend.dsl import Graph
+from fgc.ir.codes import ROBUST_CODES
 from fgc.ir.program import Program
 
 MAGIC = "FGCDATA 2"
 FINGERPRINT = re.compile(r"[0-9a-f]{16}")
-ROBUST_CODES = {None: 0, "huber": 1, "cauchy": 2}
 
 
 @dataclass(frozen=True)
