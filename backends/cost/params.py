@@ -35,6 +35,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 from typing import Literal
 
+from .target import DEFAULT
+
 
 def _doc(default, doc: str):
     """A dataclass field with its documentation in ``metadata["doc"]``."""
@@ -123,11 +125,11 @@ FLOAT64 = OperatorTable(
 class Device:
     """Capacity of the target FPGA (utilisation is reported against it)."""
 
-    name: str = _doc("xc7z045", "part name (ZC706 board)")
-    dsp: int = _doc(900, "DSP48E1 slices (Zynq-7000 product table)")
-    bram36: int = _doc(545, "36 Kb block RAMs (Zynq-7000 product table)")
-    lut: int = _doc(218_600, "6-input LUTs (Zynq-7000 product table)")
-    ff: int = _doc(437_200, "flip-flops (Zynq-7000 product table)")
+    name: str = _doc(DEFAULT.name, "device name (ZC706 board; the table in cost/target.py)")
+    dsp: int = _doc(DEFAULT.dsp, "DSP48E1 slices (cost/target.py)")
+    bram36: int = _doc(DEFAULT.bram36, "36 Kb block RAMs (cost/target.py)")
+    lut: int = _doc(DEFAULT.lut, "6-input LUTs (cost/target.py)")
+    ff: int = _doc(DEFAULT.ff, "flip-flops (cost/target.py)")
     bram_bits: int = _doc(36_864, "bits per BRAM36 (36 Kb); a BRAM18 is half")
 
 

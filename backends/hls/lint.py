@@ -37,7 +37,7 @@ deliberately small C-like parser: function definitions and their parameters, cal
   and end), which HLS unrolls completely;
 - ``dsp``: Σ over ``#pragma HLS ALLOCATION operation instances=<op> limit=<n>`` of n × the DSP of
   one ``<op>`` (:mod:`fgc_backends.cost.operators`, by precision: ``f…``/``d…`` names, else the
-  project's scalar) is at most the part's DSP count (:data:`PART_DSP`; each function is counted
+  project's scalar) is at most the part's DSP count (``cost/target.py``; each function is counted
   as one hardware instance);
 - ``synthesis_macro``: no ``__SYNTHESIS__`` in a synthesised file (C simulation must compile the
   code that is synthesised).
@@ -236,9 +236,6 @@ def lint_project(project, synthesised: Iterable[Path], strict: bool = True) -> l
 
 SEMANTIC_RULES = ("dataflow", "channel", "pointer", "function_pointer", "partition", "pipeline",
                   "dsp", "synthesis_macro")
-# DSP48 slices per part family (AMD/Xilinx product tables: Zynq-7000, Zynq UltraScale+)
-PART_DSP = {"xc7z010": 80, "xc7z015": 160, "xc7z020": 220, "xc7z030": 400, "xc7z035": 900,
-            "xc7z045": 900, "xc7z100": 2020, "xczu3eg": 360, "xczu7ev": 1728, "xczu9eg": 2520}
 # Vitis HLS operation names of ALLOCATION → (operator kind, precision or None: the scalar's)
 ALLOCATION_OPS = {
     "fadd": ("add", "float32"), "fsub": ("add", "float32"), "dadd": ("add", "float64"),
@@ -857,11 +854,12 @@ class _Checker:
     def dsp(self) -> None:
         if not self.part:
             return
-        family = next((k for k in sorted(PART_DSP, key=len, reverse=True)
-                       if self.part.lower().startswith(k)), None)
-        if family is None:
-            return
         from fgc_backends.cost import operators
+        from fgc_backends.cost.target import device_of
+
+        device = device_of(self.part)
+        if device is None:
+            return
 
         default = "float64" if self.scalar == "double" else "float32"
         total, parts, first = 0, [], None
@@ -881,9 +879,9 @@ class _Checker:
                 total += limit * dsp
                 parts.append(f"{op} {limit}x{dsp}")
                 first = first or (name, code, m.start())
-        if first and total > PART_DSP[family]:
+        if first and total > device.dsp:
             self.add(*first, "dsp", f"the ALLOCATION limits imply {total} DSP "
-                     f"({', '.join(parts)}), more than the {PART_DSP[family]} of part "
+                     f"({', '.join(parts)}), more than the {device.dsp} of part "
                      f"{self.part}")
 
 

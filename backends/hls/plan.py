@@ -36,9 +36,10 @@ from dataclasses import dataclass, field
 from fgc.errors import FgcError
 from fgc.ir.program import Program
 from fgc_backends.cost.operators import OperatorTable, table
+from fgc_backends.cost.target import DEFAULT
 
-PART = "xc7z045"
-PART_DSP, PART_BRAM36, PART_LUT, PART_FF = 900, 545, 218_600, 437_200
+PART = DEFAULT.name  # the fit verdict's device (cost/target.py)
+PART_DSP, PART_BRAM36, PART_LUT, PART_FF = DEFAULT.dsp, DEFAULT.bram36, DEFAULT.lut, DEFAULT.ff
 BRAM18_BITS = 18 * 1024
 LUTRAM_MAX_BITS = 1024  # memories up to this size go to LUTRAM / registers (design)
 

@@ -1,0 +1,35 @@
+"""One target description (backends/cost/target.py): the cost model's device, the plan's fit
+verdict and the lint's DSP budget all read the same capacities."""
+
+from __future__ import annotations
+
+import pytest
+
+from fgc_backends.cost.params import CostParams
+from fgc_backends.cost.target import DEFAULT, DEVICES, UnknownPartError, capacity, device_of
+from fgc_backends.hls import plan
+from fgc_backends.hls.lint import semantic_issues
+
+
+def test_part_names_select_their_device_by_prefix():
+    assert device_of("xc7z045ffg900-2") is DEVICES["xc7z045"]
+    assert device_of("XCZU9EG-ffvb1156-2-e") is DEVICES["xczu9eg"]
+    assert device_of("xc7z0") is None
+    with pytest.raises(UnknownPartError, match="xcvu9p"):
+        capacity("xcvu9p-flga2104-2L-e")
+
+
+def test_cost_model_plan_and_lint_read_one_table():
+    device = CostParams().device
+    assert (device.name, device.dsp, device.bram36, device.lut, device.ff) == (
+        DEFAULT.name, DEFAULT.dsp, DEFAULT.bram36, DEFAULT.lut, DEFAULT.ff)
+    assert (DEFAULT.dsp, DEFAULT.bram36) == (plan.PART_DSP, plan.PART_BRAM36)
+    code = "void f(float a[4]) {\n#pragma HLS ALLOCATION operation instances=fmul limit=100\n}\n"
+    small, big = DEVICES["xc7z020"], DEVICES["xczu9eg"]
+    # 100 float multipliers: over the xc7z020's DSP, within the xczu9eg's
+    over = [i for i in semantic_issues([("k.cpp", code)], part="xc7z020-clg400-1", scalar="float")
+            if i.rule == "dsp"]
+    assert over and str(small.dsp) in over[0].message
+    assert not [i for i in semantic_issues([("k.cpp", code)], part="xczu9eg-ffvb1156-2-e",
+                                           scalar="float") if i.rule == "dsp"]
+    assert big.dsp > 100 * 3 > small.dsp
