@@ -15,20 +15,21 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 sys.path.insert(0, str(ROOT / "tests"))
 
-import imu_window  # noqa: E402
-import lio  # noqa: E402
-import pose_graph  # noqa: E402
-import range_beacons  # noqa: E402
 from test_hls_csim import pose_errors, relative_worst  # noqa: E402
 
+from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.datafile import problem_data  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends import sim  # noqa: E402
 from fgc_backends.hls import HlsConfig, emit, run_csim  # noqa: E402
+
+imu_window = example("imu_window")
+lio = example("lio")
+pose_graph = example("pose_graph")
+range_beacons = example("range_beacons")
 
 EXAMPLES = {"lio_N10": lambda: lio.build(N=10), "imu_window_N20": lambda: imu_window.build(N=20),
             "pose_graph_w100": lambda: pose_graph.build(),

@@ -11,21 +11,19 @@ emitted kernel and its unit header (``fgc_backends.hls.network.counts``), and th
 from __future__ import annotations
 
 import argparse
-import sys
 import tempfile
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "examples"))
-
-import imu_window  # noqa: E402
-import lio  # noqa: E402
-
+from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends.hls import HlsConfig, emit  # noqa: E402
 from fgc_backends.hls.emitter import accel_plan  # noqa: E402
 from fgc_backends.hls.network import counts  # noqa: E402
 from fgc_backends.hls.plan import process_network  # noqa: E402
+
+imu_window = example("imu_window")
+lio = example("lio")
 
 CASES = (("LIO N=30, QR", lambda: lio.build(N=30), "qr", "units", (1, 4, 8)),
          ("imu_window N=50, Cholesky", lambda: imu_window.build(N=50), "cholesky", "cpe",

@@ -28,23 +28,23 @@ Problems: examples/lio.py with N = 30 and 200 keyframes at the GPS fixes, imu_wi
 from __future__ import annotations
 
 import argparse
-import sys
 import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 
 import gtsam  # noqa: E402
-import imu_window  # noqa: E402
-import lio  # noqa: E402
 
+from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.interop.to_gtsam import to_gtsam, value_to_gtsam  # noqa: E402
 from fgc.ir.datafile import problem_data  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends import native  # noqa: E402
 from fgc_backends.cfamily.results import result_from_arrays  # noqa: E402
+
+imu_window = example("imu_window")
+lio = example("lio")
 
 
 def best_times(fns, repeat: int, bout: int = 5):

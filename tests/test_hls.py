@@ -17,6 +17,7 @@ import sympy as sp
 
 import fgc
 from fgc import Pose2
+from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph
 from fgc.frontend import noise
 from fgc.frontend.factors import PriorFactor
@@ -36,10 +37,10 @@ from fgc_backends.hls import (
 )
 from fgc_backends.hls.lint import lint_files
 
-ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
+pose_graph = example("pose_graph")
 
-import pose_graph  # noqa: E402
+ROOT = Path(__file__).resolve().parent.parent
+
 
 EVIL = 'ev"il*/ \n#include <stdio.h>\r[exec rm -rf x] $HOME ${X} \\ `id` \x07 é /* '
 
@@ -237,7 +238,7 @@ def test_emitting_twice_is_byte_identical(tmp_path, pose3_program):
 
 
 def test_emitting_is_identical_across_hash_seeds(tmp_path):
-    code = (f"import sys; sys.path.insert(0, {str(ROOT / 'examples')!r}); import pose_graph; "
+    code = ("import sys; from fgc.app.specs import example; pose_graph = example('pose_graph'); "
             "from fgc.compile import compile_graph; from fgc_backends.hls import emit; "
             "p = compile_graph(pose_graph.build('pose3example.txt'), name='p3'); "
             "emit(p, sys.argv[1])")

@@ -244,16 +244,14 @@ def test_emit_lints_the_dataflow_design_strictly(tmp_path):
     """The emitted accelerator, kernel and unit headers together, has no semantic issue (emit
     would raise); the CPU program the native backend builds has the known ones (issue 18), which
     is why it is not an HLS design."""
-    import sys
-    from pathlib import Path
 
+    from fgc.app.specs import example
     from fgc.compile import compile_graph
     from fgc_backends import native
     from fgc_backends.hls import HlsConfig, emit
     from fgc_backends.hls.lint import semantic_issues
 
-    sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "examples"))
-    import pose_graph
+    pose_graph = example("pose_graph")
 
     program = compile_graph(pose_graph.build("pose3example.txt"), name="lint_p3")
     project = emit(program, tmp_path / "accel", HlsConfig(scalar="double"))

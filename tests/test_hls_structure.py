@@ -11,13 +11,13 @@ Whether the emitted C++ computes the simulator's numbers is ``test_hls_csim.py``
 from __future__ import annotations
 
 import dataclasses
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 import sympy as sp
 
+from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph
 from fgc.compiler.kernel import Kernel
 from fgc.ir.codes import NOISE_CODES
@@ -30,11 +30,11 @@ from fgc_backends.cfamily.steps import step_patterns
 from fgc_backends.cfamily.tables import build_tables
 from fgc_backends.hls import HlsConfig
 
-ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
+lio = example("lio")
+pose_graph = example("pose_graph")
 
-import lio  # noqa: E402
-import pose_graph  # noqa: E402
+ROOT = Path(__file__).resolve().parent.parent
+
 
 
 @pytest.fixture(scope="module")

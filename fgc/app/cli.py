@@ -396,8 +396,8 @@ def _cmd_run(args) -> int:
         result = _backend("hls").run(program, data, _hls_config(args, program))
     else:
         if getattr(args, "scalar", None) or getattr(args, "part", None):
-            raise UsageError("fgc run: --scalar and --part apply to --backend native or hls, "
-                             "not to the simulator (which runs float32 or float64: --precision)")
+            raise UsageError("fgc run: --scalar applies to --backend native or hls, --part to "
+                             "--backend hls; the simulator runs float32 or float64 (--precision)")
         result = _backend("sim").run(program, data)
     status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
