@@ -34,7 +34,7 @@ _PROBE_TOL = 1e-11
 
 
 @dataclass(frozen=True)
-class Block:
+class KernelInput:
     """One input of a factor kernel: a variable or a measurement, and its storage symbols."""
 
     name: str
@@ -56,8 +56,8 @@ class SymbolicFactor:
 
     name: str
     fingerprint: str
-    variables: tuple[Block, ...]
-    measurements: tuple[Block, ...]
+    variables: tuple[KernelInput, ...]
+    measurements: tuple[KernelInput, ...]
     expression: sp.Matrix = field(compare=False)
     kernel: Kernel = field(compare=False)
     structure: tuple[tuple[tuple[str, ...], ...], ...]
@@ -275,10 +275,10 @@ def _node_text(node, ids: dict) -> str:
 def _derive_uncached(ftype: FactorType, fingerprint: str, traced=None) -> SymbolicFactor:
     var_values, meas_values, residual = traced if traced is not None else ftype.trace()
     var_blocks = tuple(
-        Block(a.name, a.type.__name__, a.type.dim, tuple(_symbols_of(var_values[a.name])))
+        KernelInput(a.name, a.type.__name__, a.type.dim, tuple(_symbols_of(var_values[a.name])))
         for a in ftype.variables)
     meas_blocks = tuple(
-        Block(a.name, _type_label(a.type), storage_dim(a.type),
+        KernelInput(a.name, _type_label(a.type), storage_dim(a.type),
               tuple(_symbols_of(meas_values[a.name])))
         for a in ftype.measurements)
     _check_free_symbols(ftype, residual, var_blocks + meas_blocks)

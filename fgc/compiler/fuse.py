@@ -49,7 +49,7 @@ from functools import cached_property
 import numpy as np
 
 from fgc.compiler.cache import Deferred, cached, source_digest
-from fgc.compiler.derive import Block, SymbolicFactor, derive
+from fgc.compiler.derive import KernelInput, SymbolicFactor, derive
 from fgc.compiler.fuse_kernels import (
     BlockOps,
     Member,
@@ -64,11 +64,11 @@ from fgc.frontend.dsl import Factor, FactorType, Graph
 from fgc.frontend.geometry import LieGroup
 from fgc.frontend.noise import NoiseModel
 
-__all__ = ["BlockOps", "BlockType", "FactorBlock", "Member", "MemberSpec", "OpCounts",
+__all__ = ["BlockOps", "BlockType", "FactorBlock", "Member", "MemberSignature", "OpCounts",
            "block_type", "fuse", "group_factors"]
 
 # (factor type, block-variable index of each of its variables, noise kind); lead first, at 0, 1, …
-MemberSpec = tuple[FactorType, tuple[int, ...], str]
+MemberSignature = tuple[FactorType, tuple[int, ...], str]
 
 
 @dataclass(frozen=True)
@@ -84,8 +84,8 @@ class BlockType:
 
     name: str
     key: str
-    variables: tuple[Block, ...]
-    measurements: tuple[Block, ...]
+    variables: tuple[KernelInput, ...]
+    measurements: tuple[KernelInput, ...]
     members: tuple[Member, ...]
     kernels: Deferred = field(compare=False, repr=False)  # (kernel, cost_kernel), as cached
     structure: tuple[tuple[tuple[str, ...], ...], ...] = field(repr=False)
@@ -237,7 +237,7 @@ def _positions(lead_keys: Sequence, keys: Sequence) -> tuple[int, ...]:
 _MEMO: dict[str, BlockType] = {}
 
 
-def block_type(specs: Sequence[MemberSpec]) -> BlockType:
+def block_type(specs: Sequence[MemberSignature]) -> BlockType:
     """The fused block type of ``specs`` (lead first): memoised, and cached on disk."""
     derived = [derive(t) for t, _, _ in specs]
     variables = derived[0].variables
@@ -248,7 +248,7 @@ def block_type(specs: Sequence[MemberSpec]) -> BlockType:
         members.append(Member(ftype.name, sf.fingerprint, tuple(pos), (row, row + m), kind, prefix,
                               tuple(b.name for b in sf.measurements),
                               noise_symbols(kind, m, prefix)))
-        meas_blocks += [Block(prefix + b.name, b.type_name, b.dim,
+        meas_blocks += [KernelInput(prefix + b.name, b.type_name, b.dim,
                               tuple(prefixed(s, prefix) for s in b.symbols))
                         for b in sf.measurements]
         row += m
@@ -277,7 +277,7 @@ def _check_member(ftype: FactorType, sf: SymbolicFactor, pos: tuple, variables) 
                            f"share block variable {p}")
 
 
-def _block_key(members: list[Member], variables: tuple[Block, ...]) -> str:
+def _block_key(members: list[Member], variables: tuple[KernelInput, ...]) -> str:
     h = hashlib.sha256()
     for m in members:
         h.update(f"{m.fingerprint}|{m.positions}|{m.noise_kind};".encode())

@@ -16,7 +16,7 @@ from dataclasses import astuple, dataclass, replace
 import numpy as np
 import sympy as sp
 
-from fgc.compiler.derive import Block, SymbolicFactor, tangent_seeds, whitening_matrix
+from fgc.compiler.derive import KernelInput, SymbolicFactor, tangent_seeds, whitening_matrix
 from fgc.compiler.kernel import Kernel, drop_dead, jacobian_kernel, tidy
 from fgc.frontend.dsl import FactorType
 
@@ -91,7 +91,7 @@ def noise_symbols(kind: str, dim: int, prefix: str) -> tuple[sp.Symbol, ...]:
     return tuple(w[i, j] for i, j in zip(*np.triu_indices(dim), strict=True))
 
 
-def _renaming(sf: SymbolicFactor, member: Member, variables: tuple[Block, ...]) -> dict:
+def _renaming(sf: SymbolicFactor, member: Member, variables: tuple[KernelInput, ...]) -> dict:
     """Member symbols → block symbols: variables onto the block's, measurements prefixed."""
     out = {}
     for p, b in zip(member.positions, sf.variables, strict=True):
@@ -102,7 +102,8 @@ def _renaming(sf: SymbolicFactor, member: Member, variables: tuple[Block, ...]) 
 
 
 def build_kernels(lead: FactorType, derived: list[SymbolicFactor], members: list[Member],
-                  variables: tuple[Block, ...], meas_blocks: tuple[Block, ...]) -> tuple:
+                  variables: tuple[KernelInput, ...],
+                  meas_blocks: tuple[KernelInput, ...]) -> tuple:
     """(kernel, cost kernel, structure, ops) of a block type; ``members`` lead first."""
     renames = [_renaming(sf, m, variables) for sf, m in zip(derived, members, strict=True)]
     structure = _structure(derived, members, variables)
@@ -152,7 +153,7 @@ def _renamed(kernel: Kernel, renaming: dict) -> Kernel:
                   tuple(sp.sympify(e).xreplace(renaming) for e in kernel.outputs))
 
 
-def _by_variable(kernel: Kernel, m: int, variables: tuple[Block, ...]) -> Kernel:
+def _by_variable(kernel: Kernel, m: int, variables: tuple[KernelInput, ...]) -> Kernel:
     """Outputs [r; J (m × n) row-major] → [r; J_1 row-major; J_2 row-major; …]."""
     n = sum(b.dim for b in variables)
     jac, outs, start = kernel.outputs[m:], list(kernel.outputs[:m]), 0
@@ -163,7 +164,7 @@ def _by_variable(kernel: Kernel, m: int, variables: tuple[Block, ...]) -> Kernel
 
 
 def _structure(derived: list[SymbolicFactor], members: list[Member],
-               variables: tuple[Block, ...]) -> tuple:
+               variables: tuple[KernelInput, ...]) -> tuple:
     """Each member's derived structure in its rows; "0" where it does not touch a variable."""
     out = []
     for k, vb in enumerate(variables):

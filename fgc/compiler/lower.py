@@ -12,8 +12,8 @@ from fgc.compiler.schedule import Schedule
 from fgc.compiler.storage import StoragePlan
 from fgc.frontend.dsl import Graph, storage_dim
 from fgc.ir.program import (
+    BlockInstance,
     BlockSpec,
-    FactorSpec,
     KernelText,
     MemberSpec,
     Program,
@@ -32,7 +32,7 @@ def lower(graph: Graph, blocks: Sequence[FactorBlock], sched: Schedule, storage:
         if b.type.key not in types:
             types[b.type.key] = len(specs)
             specs.append(_block_spec(b, graph))
-        instances.append(FactorSpec(types[b.type.key], tuple(str(k) for k in b.keys),
+        instances.append(BlockInstance(types[b.type.key], tuple(str(k) for k in b.keys),
                                     tuple(b.indices)))
     variables = tuple(VariableSpec(str(k), v.type.__name__, v.type.dim, v.type.storage_dim,
                                    isinstance(k, int))

@@ -186,7 +186,7 @@ class BlockSpec:
 
 
 @dataclass(frozen=True)
-class FactorSpec:
+class BlockInstance:
     """A block instance in the graph: its block type, variable keys and member factor indices."""
 
     block: int
@@ -199,7 +199,7 @@ class Program:
     name: str
     variables: tuple[VariableSpec, ...]
     blocks: tuple[BlockSpec, ...]
-    factors: tuple[FactorSpec, ...]
+    factors: tuple[BlockInstance, ...]
     schedule: Schedule
     storage: StoragePlan
     solver: SolverConfig
@@ -233,7 +233,7 @@ class Program:
             name=d["name"],
             variables=tuple(VariableSpec(**v) for v in d["variables"]),
             blocks=tuple(_block_from_dict(b) for b in d["blocks"]),
-            factors=tuple(FactorSpec(f["block"], tuple(f["keys"]), tuple(f["factors"]))
+            factors=tuple(BlockInstance(f["block"], tuple(f["keys"]), tuple(f["factors"]))
                           for f in d["factors"]),
             schedule=Schedule.from_dict(d["schedule"]),
             storage=StoragePlan(**storage),
