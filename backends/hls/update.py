@@ -113,6 +113,10 @@ class UpdatePrice:
         return self.cycles / (self.clock_mhz * 1e3)
 
     @property
+    def assumed_ms(self) -> float:
+        return self.assumed_cycles / (self.clock_mhz * 1e3)
+
+    @property
     def latency_with_assumed_ms(self) -> float:
         return (self.cycles + self.assumed_cycles) / (self.clock_mhz * 1e3)
 

@@ -34,7 +34,9 @@ from fgc.frontend.dsl import Graph
 from fgc.frontend.geometry import Pose2, Pose3
 
 UNPRICED = "one-keyframe windows and window sizes past the first four others seen"
-HW_REFUSAL = "incremental mode runs in the simulator only (issue 19: HLS and native next)"
+HW_REFUSAL = ("incremental and fixed-lag modes run in the simulator only (the HLS design runs "
+              "batch solves, its incremental mode is not emitted; fgc stream --backend hls "
+              "prices the updates on its plan; native: issue 19)")
 
 
 @dataclass(frozen=True)
