@@ -3,7 +3,8 @@ fixed-lag update, per-keyframe results, the trajectory and its accuracy against 
 optimum. Behind ``fgc stream`` and :func:`fgc.stream`; ``fgc simulate / verify`` with
 ``--incremental`` or ``--window`` use the same pieces.
 
-Modes (the simulator only; the HLS design and the native solver run batch solves — issue 19):
+Modes (the simulator only; the HLS design and the native solver run batch solves — issue 19;
+the accelerator's incremental mode is not emitted, :func:`update_model` prices its updates):
 
 - **incremental** (``SolverConfig.incremental_k`` = K, ``batch_every``): each keyframe
   re-eliminates the newest K clusters on the kept Bayes net (paper A), batch steps re-eliminate
@@ -18,6 +19,9 @@ Latency: the accelerator's cost model (``plan_cost``) prices batch iterations of
 :class:`UpdatePricer` prices an update as that many batch iterations of a chain as long as the
 update's window (a model estimate of an approximation: the window's dense marginal prior is
 priced as the chain's own priors); the simulator's wall time is reported beside it.
+:func:`update_model` (``fgc stream --backend hls``) prices each update as the plan's units would
+run the simulator's update: the window's factors and clusters only, the kept conditionals, batch
+keyframes as batch iterations of their Program (:mod:`fgc_backends.hls.update`, docs/hls.md).
 """
 
 from __future__ import annotations
