@@ -303,16 +303,18 @@ class UpdateModel:
         new = [i for i in range(len(p.factors)) if self.reach[i] == last]
         words = (sum(factor_data_words(p, p.factors[i].block) for i in new)
                  + sum(self.storage[k] for k in self.clusters[last]))
-        kept = sum(self.cdim[c] * (self.cdim[c] + self.cdim[c + 1] + 1)
-                   for c in range(first if mode != "fixed-lag" else 0))
+        # after the update: every cluster's conditional [R | S | d] (fixed-lag: the window's)
+        held = range(first, last + 1) if mode == "fixed-lag" else range(last + 1)
+        conds = sum(self.cdim[c] * (self.cdim[c] + (self.cdim[c + 1] if c < last else 0) + 1)
+                    for c in held)
         state = sum(self.storage[k] for c in range(last + 1) for k in self.clusters[c])
-        tau = self.tau_rows[first - 1] * (self.cdim[first] + 1) if first > 0 else 0
+        taus = sum(self.tau_rows[c] * (self.cdim[c + 1] + 1) for c in held if c < last)
         return [Term("transfer", math.ceil(words / self.rate), 1, True,
                      f"assumed: host → accelerator, the keyframe's {words} words (its new "
                      f"factors' data and initial values) at {self.rate} word(s) a cycle"),
                 Term("on_chip_state", 0, 1, True,
-                     f"assumed: the state ({state} words), the kept conditionals ({kept}) and "
-                     f"τ ({tau}) stay on chip between calls, no cycles")]
+                     f"assumed: the state ({state} words), the conditionals ({conds}) and the "
+                     f"factors passed up ({taus}) stay on chip between calls, no cycles")]
 
     # -- pieces --------------------------------------------------------------------------------
     def _instances(self, first, last) -> list[int]:
