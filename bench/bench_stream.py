@@ -4,9 +4,15 @@ IncrementalFixedLagSmoother update on the same LIO keyframe stream, in one proce
 trajectory's difference from the batch optimum (GTSAM LM on the whole graph).
 
     python bench/bench_stream.py --N 400 --window 30 [--incremental 3 --batch-every 5,15,25]
+    python bench/bench_stream.py --hls-model [--precision float32|float64] [--units 4]
 
 The simulator is NumPy (a functional model of the accelerator, not a fast solver): its wall
-time is not the accelerator's latency, which the cost model does not price per update yet.
+time is not the accelerator's latency. ``--hls-model`` is paper A's setting (LIO N = 30,
+incremental K = 3, batch at keyframes 5, 15, 25, float32 by default): each keyframe's update
+as the simulator ran it, priced by the accelerator plan's update model
+(``fgc_backends.hls.update``, model estimates; the accelerator's incremental mode is not
+emitted in C++), against GTSAM's ISAM2 update wall time on the same stream in this process
+(median of ``--repeat`` runs per keyframe).
 """
 
 from __future__ import annotations
@@ -15,6 +21,7 @@ import argparse
 import json
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -23,15 +30,15 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "examples"))
 
 
-def _isam2_times(graph, problem, clusters):
-    """One plain ISAM2 update per keyframe (QR, relinearise every variable): wall times and the
-    final estimate."""
+def _isam2_times(graph, problem, clusters, params=None):
+    """One ISAM2 update per keyframe (default ``params``: QR, relinearise every variable):
+    wall times and the final estimate."""
     import gtsam
 
     from fgc.interop import oracles
     from fgc.interop.to_gtsam import value_to_gtsam, values_from_gtsam
 
-    isam = gtsam.ISAM2(oracles._isam2_params())
+    isam = gtsam.ISAM2(params if params is not None else oracles._isam2_params())
     keys = {str(k): k for k in graph.variables}
     spans = oracles._cluster_spans(graph, clusters)
     times, online = [], {}
@@ -52,14 +59,123 @@ def _isam2_times(graph, problem, clusters):
     return times, {str(k): v for k, v in estimate.items()}, online
 
 
+def _batch(text):
+    if not text:
+        return None
+    if "," in text:
+        return tuple(int(s) for s in text.split(",") if s.strip())
+    return int(text)
+
+
+def hls_model(args) -> dict:
+    """Paper A's Fig. 5.3 setting: per-keyframe accelerator latency (update model on the HLS
+    plan) against GTSAM's ISAM2 update time on the same stream."""
+    import gtsam
+    import lio
+
+    from fgc.app import streaming
+    from fgc.interop.to_gtsam import to_gtsam
+    from fgc.ir.datafile import problem_data
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.hls.update import NOT_EMITTED
+
+    n, k = args.N or 30, args.incremental or 3
+    batch = _batch(args.batch_every if args.batch_every is not None else "5,15,25")
+    graph = lio.build(N=n)
+    solver = SolverConfig(precision=args.precision, units=args.units, cpe=args.cpe,
+                          linear=args.linear)
+    program = streaming.compile_stream(graph, solver, incremental=k, batch_every=batch)
+    model = streaming.update_model(graph, program)
+    updates = []
+    result = streaming.run_stream(program, problem_data(graph, program), None, updates.append)
+    prices = [model.price(u) for u in updates]
+    # the same update had it run one iteration (ISAM2 takes one Gauss-Newton step per update)
+    once = [model.price(replace(u, iterations=1)) for u in updates]
+    problem = to_gtsam(graph)
+    clusters = program.schedule.clusters
+    default = gtsam.ISAM2Params()  # GTSAM's defaults: Gauss-Newton, relinearise when > 0.1
+    runs = [_isam2_times(graph, problem, clusters)[0] for _ in range(args.repeat)]
+    runs_default = [_isam2_times(graph, problem, clusters, default)[0]
+                    for _ in range(args.repeat)]
+    isam = np.median(np.asarray(runs), axis=0) * 1e3
+    isam_default = np.median(np.asarray(runs_default), axis=0) * 1e3
+    rows = [{"keyframe": u.keyframe, "mode": u.mode, "first": u.first, "window": pr.window,
+             "iterations": u.iterations, "status": u.status, "model_ms": pr.latency_ms,
+             "model_with_assumed_ms": pr.latency_with_assumed_ms,
+             "model_one_iteration_ms": one.latency_ms,
+             "isam2_ms": float(isam[i]), "isam2_default_ms": float(isam_default[i]),
+             "simulator_ms": u.seconds * 1e3, "terms": pr.as_dict()["terms"]}
+            for i, (u, pr, one) in enumerate(zip(updates, prices, once, strict=True))]
+    sol = program.solver
+    unit = f"n_u = {sol.units}" if sol.linear == "qr" else f"#CPE = {sol.cpe}"
+    print(f"paper A's setting: LIO on KITTI, N = {n}, incremental K = {k}, batch at "
+          f"{args.batch_every or '5,15,25'}; simulator {sol.precision}: {result.status}")
+    print(f"accelerator: update model on the HLS plan ({sol.linear.upper()}, {unit}, "
+          f"{sol.precision}, {sol.clock_mhz:g} MHz) - model estimates; {NOT_EMITTED}")
+    print(f"ISAM2: one update per keyframe, wall time, median of {args.repeat} runs in this "
+          "process; 'all': QR, relinearise every variable (the oracle's policy); 'default': "
+          "gtsam.ISAM2Params()")
+    print("model ms: the plan's terms for the iterations the simulator ran; +assumed: with the "
+          "assumed terms; 1 it: the plan's terms had the update run one iteration")
+    head = (f"{'kf':>3} {'mode':<12} {'win':>3} {'it':>3} {'model ms':>9} {'+assumed':>9} "
+            f"{'1 it':>7} {'ISAM2 all':>10} {'ratio':>7} {'ISAM2 def':>10} {'ratio':>7}")
+    print(head)
+    for r in rows:
+        print(f"{r['keyframe']:>3} {r['mode']:<12} {r['window']:>3} {r['iterations']:>3} "
+              f"{r['model_ms']:>9.3f} {r['model_with_assumed_ms']:>9.3f} "
+              f"{r['model_one_iteration_ms']:>7.3f} "
+              f"{r['isam2_ms']:>10.3f} {r['isam2_ms'] / r['model_ms']:>7.2f} "
+              f"{r['isam2_default_ms']:>10.3f} {r['isam2_default_ms'] / r['model_ms']:>7.2f}")
+    summary = {}
+    for name, sel in (("all", rows), ("incremental", [r for r in rows if r["mode"] !=
+                                                       "batch"]),
+                      ("batch", [r for r in rows if r["mode"] == "batch"])):
+        if not sel:
+            continue
+        med = {key: float(np.median([r[key] for r in sel])) for key in
+               ("model_ms", "model_with_assumed_ms", "model_one_iteration_ms", "isam2_ms",
+                "isam2_default_ms")}
+        med["ratio_isam2"] = float(np.median([r["isam2_ms"] / r["model_ms"] for r in sel]))
+        med["ratio_isam2_default"] = float(np.median([r["isam2_default_ms"] / r["model_ms"]
+                                                      for r in sel]))
+        summary[name] = med
+        print(f"median {name:<12} ({len(sel):>2}) {med['model_ms']:>9.3f} "
+              f"{med['model_with_assumed_ms']:>9.3f} {med['model_one_iteration_ms']:>7.3f} "
+              f"{med['isam2_ms']:>10.3f} "
+              f"{med['ratio_isam2']:>7.2f} {med['isam2_default_ms']:>10.3f} "
+              f"{med['ratio_isam2_default']:>7.2f}")
+    print("ratio: ISAM2 time / model latency per keyframe (median of the ratios)")
+    return {"N": n, "incremental": k, "batch": batch, "precision": sol.precision,
+            "linear": sol.linear, "units": sol.units, "cpe": sol.cpe,
+            "clock_mhz": sol.clock_mhz, "status": result.status, "repeat": args.repeat,
+            "rows": rows, "median": summary, "not_emitted": NOT_EMITTED}
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--N", type=int, default=400, help="keyframes (lio.py: at most 470)")
+    p.add_argument("--N", type=int, default=None,
+                   help="keyframes (lio.py: at most 470; default 400, --hls-model 30)")
     p.add_argument("--window", type=int, default=30)
     p.add_argument("--incremental", type=int)
     p.add_argument("--batch-every", default=None)
+    p.add_argument("--hls-model", action="store_true",
+                   help="paper A's setting priced by the accelerator plan's update model "
+                        "against ISAM2 per keyframe")
+    p.add_argument("--precision", choices=("float32", "float64"), default="float32",
+                   help="--hls-model: the Program's and the plan's precision")
+    p.add_argument("--linear", choices=("qr", "cholesky"), default="qr")
+    p.add_argument("--units", type=int, default=4, help="--hls-model: n_u Update units")
+    p.add_argument("--cpe", type=int, default=20, help="--hls-model: #CPE (Cholesky)")
+    p.add_argument("--repeat", type=int, default=5,
+                   help="--hls-model: ISAM2 runs (per-keyframe median)")
     p.add_argument("--json", help="write the numbers as JSON")
     args = p.parse_args(argv)
+    if args.hls_model:
+        out = hls_model(args)
+        if args.json:
+            Path(args.json).write_text(json.dumps(out, indent=1, default=float) + "\n")
+        return 0
+    args.N = args.N or 400
 
     import lio
 
@@ -98,9 +214,7 @@ def main(argv=None) -> int:
 
     sim_row(f"fgc simulator, fixed-lag W={args.window}", program, args.window)
     if args.incremental:
-        batch = (tuple(int(s) for s in args.batch_every.split(",")) if args.batch_every
-                 and "," in args.batch_every else
-                 (int(args.batch_every) if args.batch_every else None))
+        batch = _batch(args.batch_every)
         inc = streaming.compile_stream(graph, incremental=args.incremental, batch_every=batch)
         sim_row(f"fgc simulator, incremental K={args.incremental} batch {args.batch_every}",
                 inc, None)

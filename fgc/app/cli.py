@@ -4,7 +4,8 @@
     fgc simulate SPEC [--json F]                      run the accelerator simulator, report cost
     fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
     fgc run      SPEC --backend native|sim            solve with the generated solver
-    fgc stream   SPEC --window W | --incremental K    keyframes one at a time (simulator)
+    fgc stream   SPEC --window W | --incremental K    keyframes one at a time (simulator;
+                 [--backend hls]                      hls: updates priced on the HLS plan)
     fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
     fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
     fgc metrics  EST.tum REF.tum [--align se3]        ATE / RPE (translation m, rotation deg)
@@ -80,8 +81,9 @@ def _streaming(args) -> bool:
     if incremental is None and window is None and batch_every is None:
         return False
     check_mode(incremental, batch_every, window)
-    if getattr(args, "backend", "sim") != "sim":
-        raise FgcError(f"--backend {args.backend}: {HW_REFUSAL}")
+    backend = getattr(args, "backend", "sim")
+    if backend != "sim" and not (args.command == "stream" and backend == "hls"):
+        raise FgcError(f"fgc {args.command} --backend {backend}: {HW_REFUSAL}")
     return True
 
 
@@ -457,28 +459,38 @@ def _cmd_stream(args) -> int:
     graph, program, data = _stream_setup(args, "float64")
     window = getattr(args, "window", None)
     quiet = getattr(args, "quiet", False)
+    hls = getattr(args, "backend", "sim") == "hls"
     n = len(program.schedule.clusters)
     if not quiet:
-        print(f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, "
-              f"simulator {program.solver.precision}; per keyframe: the accelerator plan's "
-              f"latency (model estimate: the update's iterations as batch iterations of a chain "
-              f"as long as its window; {streaming.UNPRICED} otherwise) and the simulator's "
-              "wall time", flush=True)
+        if hls:
+            print(_stream_hls_head(args, program, n, window), flush=True)
+        else:
+            print(f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, "
+                  f"simulator {program.solver.precision}; per keyframe: the accelerator plan's "
+                  f"latency (model estimate: the update's iterations as batch iterations of a "
+                  f"chain as long as its window; {streaming.UNPRICED} otherwise) and the "
+                  "simulator's wall time", flush=True)
     online: dict = {}
-    pricer = streaming.UpdatePricer(graph, program, window)
+    pricer = (streaming.update_model(graph, program) if hls
+              else streaming.UpdatePricer(graph, program, window))
     priced: list = []
 
     def progress(update) -> None:
         online.update(update.newest(program))
         price = pricer.price(update)
-        priced.append(price)
-        if not quiet:
-            model = (f"{price['latency_ms']:7.3f} ms (model estimate, {price['window']}-keyframe"
-                     " chain)" if price else "model estimate not available")
-            print(f"  keyframe {update.keyframe:>4} ({update.mode}, from {update.first}): "
-                  f"{update.iterations:>3} iterations, {update.status}, {model}, "
-                  f"{update.seconds * 1e3:8.2f} ms (simulator wall time); "
-                  f"{_newest_text(update, program)}", flush=True)
+        priced.append(price.as_dict() if hls else price)
+        if quiet:
+            return
+        if hls:
+            model = (f"accelerator {price.latency_ms:7.3f} ms + {price.assumed_ms:.3f} ms "
+                     f"assumed (model estimate, {price.window}-keyframe window)")
+        else:
+            model = (f"{price['latency_ms']:7.3f} ms (model estimate, {price['window']}-"
+                     "keyframe chain)" if price else "model estimate not available")
+        print(f"  keyframe {update.keyframe:>4} ({update.mode}, from {update.first}): "
+              f"{update.iterations:>3} iterations, {update.status}, {model}, "
+              f"{update.seconds * 1e3:8.2f} ms (simulator wall time); "
+              f"{_newest_text(update, program)}", flush=True)
 
     result = streaming.run_stream(program, data, window, progress)
     from fgc.app.run_report import require_finite_start
@@ -487,7 +499,8 @@ def _cmd_stream(args) -> int:
     final = {str(k): v for k, v in result.values.items()}
     acc = streaming.accuracy(graph, final, online, streaming.batch_optimum(graph))
     times = streaming.timing_summary(u["seconds"] for u in result.updates)
-    report = {"spec": args.spec, "keyframes": n, "mode": "fixed-lag" if window else
+    report = {"spec": args.spec, "backend": "hls" if hls else "sim", "keyframes": n,
+              "mode": "fixed-lag" if window else
               "incremental", "window": window, "incremental_k": program.solver.incremental_k,
               "batch_every": program.solver.batch_every, "status": result.status,
               "reason": result.reason, "iterations": result.iterations,
@@ -504,7 +517,15 @@ def _cmd_stream(args) -> int:
     lines = [head, f"  largest tangent-space distance from the batch optimum "
                    f"{acc['max_state_distance']:.3g} (final estimate)"]
     model = [p["latency_ms"] for p in priced if p]
-    if model:
+    if hls:
+        from fgc_backends.hls.update import NOT_EMITTED
+
+        report["not_emitted"] = NOT_EMITTED
+        extra = [p["latency_with_assumed_ms"] for p in priced]
+        lines.append(f"  accelerator per update (update model on the HLS plan, model estimate): "
+                     f"median {np.median(model):.3f} ms, p99 {np.percentile(model, 99):.3f} ms; "
+                     f"with the assumed terms median {np.median(extra):.3f} ms; {NOT_EMITTED}")
+    elif model:
         lines.append(f"  accelerator plan per update (model estimate): median "
                      f"{np.median(model):.3f} ms, p99 {np.percentile(model, 99):.3f} ms over "
                      f"{len(model)} priced updates ({len(priced) - len(model)} not priced: "
@@ -517,6 +538,18 @@ def _cmd_stream(args) -> int:
     _estimates_out(args, graph, report, result.values)
     _write_json(args.json, report)
     return EXIT_OK if result.status == "converged" else EXIT_FAILED
+
+
+def _stream_hls_head(args, program, n: int, window) -> str:
+    solver = program.solver
+    unit = (f"n_u = {solver.units} Update units" if solver.linear == "qr"
+            else f"#CPE = {solver.cpe}")
+    return (f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, simulator "
+            f"{solver.precision}; per keyframe: the accelerator's latency from the update model "
+            f"on the HLS plan ({solver.linear.upper()}, {unit}, {solver.precision}, "
+            f"{solver.clock_mhz:g} MHz; model estimate: the plan's terms, then the assumed "
+            "ones) beside the simulator's wall time and estimate. The accelerator's incremental "
+            "mode is not emitted in C++: the estimate comes from the simulator")
 
 
 def _cmd_verify_stream(args) -> int:
@@ -825,7 +858,8 @@ def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
 def _streaming_args(name: str, p: argparse.ArgumentParser) -> None:
     if name not in ("compile", "simulate", "verify", "run", "report", "stream"):
         return
-    g = p.add_argument_group("keyframe by keyframe (the simulator only; issue 19)")
+    g = p.add_argument_group("keyframe by keyframe (the simulator; fgc stream --backend hls "
+                             "prices the updates on the HLS plan; issue 19)")
     g.add_argument("--incremental", type=_positive_int, metavar="K",
                    help="incremental smoothing: each keyframe re-eliminates the newest K "
                         "clusters (SolverConfig.incremental_k)")
@@ -853,6 +887,12 @@ def _command_args(name: str, p: argparse.ArgumentParser) -> None:
     _streaming_args(name, p)
     if name == "stream":
         p.add_argument("--tum", metavar="FILE", help="write the streamed trajectory (TUM)")
+        p.add_argument("--backend", choices=_backend_names(), default="sim",
+                       help="sim: the simulator's updates and the plan's batch-iteration "
+                            "price; hls: the same updates priced by the accelerator plan's "
+                            "update model, --units / --cpe / --precision / --clock as for "
+                            "the HLS design (model estimates; its incremental mode is not "
+                            "emitted). native has no streaming mode")
     if name in ("simulate", "verify", "run", "stream"):
         p.add_argument("--values", metavar="FILE",
                        help="write the optimised values: .g2o, .tum/.txt (TUM poses, t = key "

@@ -3,7 +3,8 @@ fixed-lag update, per-keyframe results, the trajectory and its accuracy against 
 optimum. Behind ``fgc stream`` and :func:`fgc.stream`; ``fgc simulate / verify`` with
 ``--incremental`` or ``--window`` use the same pieces.
 
-Modes (the simulator only; the HLS design and the native solver run batch solves — issue 19):
+Modes (the simulator only; the HLS design and the native solver run batch solves — issue 19;
+the accelerator's incremental mode is not emitted, :func:`update_model` prices its updates):
 
 - **incremental** (``SolverConfig.incremental_k`` = K, ``batch_every``): each keyframe
   re-eliminates the newest K clusters on the kept Bayes net (paper A), batch steps re-eliminate
@@ -18,6 +19,9 @@ Latency: the accelerator's cost model (``plan_cost``) prices batch iterations of
 :class:`UpdatePricer` prices an update as that many batch iterations of a chain as long as the
 update's window (a model estimate of an approximation: the window's dense marginal prior is
 priced as the chain's own priors); the simulator's wall time is reported beside it.
+:func:`update_model` (``fgc stream --backend hls``) prices each update as the plan's units would
+run the simulator's update: the window's factors and clusters only, the kept conditionals, batch
+keyframes as batch iterations of their Program (:mod:`fgc_backends.hls.update`, docs/hls.md).
 """
 
 from __future__ import annotations
@@ -34,7 +38,9 @@ from fgc.frontend.dsl import Graph
 from fgc.frontend.geometry import Pose2, Pose3
 
 UNPRICED = "one-keyframe windows and window sizes past the first four others seen"
-HW_REFUSAL = "incremental mode runs in the simulator only (issue 19: HLS and native next)"
+HW_REFUSAL = ("incremental and fixed-lag modes run in the simulator only (the HLS design runs "
+              "batch solves, its incremental mode is not emitted; fgc stream --backend hls "
+              "prices the updates on its plan; native: issue 19)")
 
 
 @dataclass(frozen=True)
@@ -183,19 +189,7 @@ class UpdatePricer:
         self.per_iteration[size] = plan_summary(self._sub_program(size), 1)
 
     def _sub_program(self, size: int):
-        from fgc.compile import compile_graph
-
-        clusters = self.program.schedule.clusters[:size]
-        keys = {k for c in clusters for k in c}
-        sub = Graph()
-        for k, var in self.graph.variables.items():
-            if str(k) in keys:
-                sub.add_variable(k, var.initial, var.type)
-        for f in self.graph.factors:
-            if all(str(k) in keys for k in f.keys):
-                sub.add(f)
-        solver = replace(self.program.solver, incremental_k=None, batch_every=None)
-        return compile_graph(sub, solver, name=f"{self.program.name}_window{size}")
+        return prefix_program(self.graph, self.program, size)
 
     def price(self, update: KeyframeResult) -> dict | None:
         """{"cycles", "latency_ms", "window"} of the update, or None when not priced."""
@@ -208,6 +202,39 @@ class UpdatePricer:
         k = max(1, update.iterations)
         return {"cycles": k * one["iteration_cycles"], "latency_ms": k * one["latency_ms"],
                 "window": size}
+
+
+def prefix_program(graph: Graph, program, size: int):
+    """The batch Program of the chain's first ``size`` keyframes: their variables and the
+    factors among them, compiled with ``program``'s solver without its incremental plan (the
+    ordering as asked: two-ended on a chain by default, the batch design)."""
+    from fgc.compile import compile_graph
+
+    clusters = program.schedule.clusters[:size]
+    keys = {k for c in clusters for k in c}
+    sub = Graph()
+    for k, var in graph.variables.items():
+        if str(k) in keys:
+            sub.add_variable(k, var.initial, var.type)
+    for f in graph.factors:
+        if all(str(k) in keys for k in f.keys):
+            sub.add(f)
+    solver = replace(program.solver, incremental_k=None, batch_every=None)
+    return compile_graph(sub, solver, name=f"{program.name}_window{size}")
+
+
+def update_model(graph: Graph, program, units: int | None = None, cpe: int | None = None):
+    """The accelerator plan's update model of a stream over ``program``
+    (:class:`fgc_backends.hls.update.UpdateModel`; model estimates, the accelerator's
+    incremental mode is not emitted): ``units`` / ``cpe`` default to the Program's; a batch
+    keyframe j is priced on :func:`prefix_program` of its j + 1 keyframes."""
+    from fgc_backends.hls.plan import PlanOptions
+    from fgc_backends.hls.update import UpdateModel
+
+    changes = {k: v for k, v in (("units", units), ("cpe", cpe)) if v is not None}
+    options = PlanOptions.of(program, **changes)
+    return UpdateModel(program, options,
+                       batch_program=lambda j: prefix_program(graph, program, j + 1))
 
 
 # --------------------------------------------------------------------------------------------

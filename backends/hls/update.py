@@ -1,0 +1,418 @@
+"""A keyframe update of a stream priced on the accelerator plan (issue 19; model estimates).
+
+The emitted accelerator runs batch solves only: its incremental mode (state kept on chip between
+calls, a keyframe's measurements in, the newest clusters re-eliminated) is **not emitted** in
+C++. :class:`UpdateModel` prices what the simulator's update did (``fgc_sim_incremental``:
+``solve_incremental`` / ``solve_fixed_lag``) as the emitted units would run it, with the loops,
+IIs and depths of :mod:`fgc_backends.hls.plan` and its operator table:
+
+- per LM iteration the update ran (linearisations; rejected trial steps and the start's cost
+  pass are not priced, as :func:`~fgc_backends.hls.plan.plan_summary` prices a batch solve):
+  the factor datapaths over the window's block instances (Jacobian mode, then cost mode, at the
+  plan's instance-loop II and depth), the linear solver on the window's clusters only — QR:
+  :func:`~fgc_backends.hls.plan.qr_unit_loops` on each step's stacked pattern (the window's
+  factors, the previous step's new factor, the prior τ on the oldest cluster, √μ rows),
+  eliminated serially oldest first on one unit set (the simulator's order, root at the newest
+  cluster); Cholesky: the HGC's multiply-accumulates and
+  :func:`~fgc_backends.hls.plan.cpe_step_loops` per step — back-substitution through the
+  window (:func:`~fgc_backends.hls.plan.backsub_loops`), the state update of the window's
+  variables and one LM decision;
+- once per update: the store (the converged window eliminated once more without damping, its
+  conditionals and new factors kept) and, incremental mode, back-substitution through the kept
+  conditionals with a state update of their variables;
+- a batch keyframe j: its iterations as full batch iterations, ``plan_cost`` of the Program of
+  keyframes 0 … j (``batch_program(j)``; the stream's own Program at the last keyframe), plus
+  the store.
+
+Terms no emitted unit computes are listed apart and labelled *assumed*: τ's rows at x (A·J and
+b − A·Log(x̄⁻¹x)), re-expressing the newest kept conditional at its parent's new estimate, the
+Log maps of the kept back-substitution, the host → accelerator transfer of a keyframe's
+measurements and the on-chip state kept between calls. ``latency_ms`` counts the plan's terms
+only; ``latency_with_assumed_ms`` adds the assumed ones.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from fgc.errors import FgcError
+from fgc.ir.program import Program
+from fgc_backends.cost.operators import table
+from fgc_backends.cost.structure import whitened_pattern
+from fgc_backends.hls.plan import (
+    Loop,
+    Phase,
+    PlanOptions,
+    Process,
+    backsub_loops,
+    build_plan,
+    cpe_step_loops,
+    phase_cycles,
+    plan_cost,
+    qr_unit_loops,
+)
+
+NOT_EMITTED = ("the accelerator's incremental / fixed-lag mode is not emitted in C++ (the HLS "
+               "design runs batch solves); these are model estimates of the emitted units "
+               "running the simulator's update")
+MODES = ("incremental", "batch", "fixed-lag")
+
+
+class UpdateModelError(FgcError):
+    """An update the model cannot price (not a chain, a mode it does not know, a window
+    outside the stream)."""
+
+
+@dataclass(frozen=True)
+class Term:
+    """One priced part of an update: ``cycles`` in all (``each`` × ``times``), ``assumed`` when no
+    emitted unit computes it (then ``text`` says what is assumed)."""
+
+    name: str
+    each: int
+    times: int
+    assumed: bool
+    text: str
+
+    @property
+    def cycles(self) -> int:
+        return self.each * self.times
+
+
+@dataclass(frozen=True)
+class UpdatePrice:
+    """A keyframe update's model price: its terms, the plan's total and the assumed extras."""
+
+    keyframe: int
+    mode: str
+    first: int
+    iterations: int
+    clock_mhz: float
+    terms: tuple[Term, ...]
+
+    @property
+    def window(self) -> int:
+        """Clusters the update re-eliminated."""
+        return self.keyframe - self.first + 1
+
+    @property
+    def cycles(self) -> int:
+        """The plan's terms (assumed terms excluded)."""
+        return sum(t.cycles for t in self.terms if not t.assumed)
+
+    @property
+    def assumed_cycles(self) -> int:
+        return sum(t.cycles for t in self.terms if t.assumed)
+
+    @property
+    def latency_ms(self) -> float:
+        return self.cycles / (self.clock_mhz * 1e3)
+
+    @property
+    def assumed_ms(self) -> float:
+        return self.assumed_cycles / (self.clock_mhz * 1e3)
+
+    @property
+    def latency_with_assumed_ms(self) -> float:
+        return (self.cycles + self.assumed_cycles) / (self.clock_mhz * 1e3)
+
+    def term(self, name: str) -> Term:
+        for t in self.terms:
+            if t.name == name:
+                return t
+        raise KeyError(name)
+
+    def as_dict(self) -> dict:
+        return {"source": "accelerator plan update model (fgc_backends.hls.update; model "
+                          "estimate; incremental mode not emitted)",
+                "keyframe": self.keyframe, "mode": self.mode, "first": self.first,
+                "window": self.window, "iterations": self.iterations,
+                "cycles": self.cycles, "latency_ms": self.latency_ms,
+                "assumed_cycles": self.assumed_cycles,
+                "latency_with_assumed_ms": self.latency_with_assumed_ms,
+                "terms": [{"name": t.name, "cycles": t.cycles, "each": t.each, "times": t.times,
+                           "assumed": t.assumed, "text": t.text} for t in self.terms]}
+
+
+class UpdateModel:
+    """The accelerator plan's price of each update of a stream over ``program``'s chain.
+
+    ``options``: the plan's units (default ``PlanOptions.of(program)``: the Program's
+    ``--units`` / ``--cpe``). ``batch_program(j)`` returns the batch Program of keyframes
+    0 … j (needed for batch keyframes before the last). ``transfer_words_per_cycle``: the
+    assumed host → accelerator rate."""
+
+    def __init__(self, program: Program, options: PlanOptions | None = None,
+                 batch_program: Callable[[int], Program] | None = None,
+                 transfer_words_per_cycle: int = 1):
+        sched = program.schedule
+        if sched.structure_class != "chain" or not sched.clusters:
+            raise UpdateModelError(f"the update model needs a chain of keyframes; "
+                                   f"{program.name!r} is {sched.structure_class}")
+        if transfer_words_per_cycle < 1:
+            raise UpdateModelError(f"transfer_words_per_cycle must be ≥ 1, got "
+                                   f"{transfer_words_per_cycle}")
+        self.program, self.batch_program = program, batch_program
+        self.options = options or PlanOptions.of(program)
+        self.plan = build_plan(program, self.options)
+        self.ops = table(program.solver.precision)
+        self.les = table(program.solver.les_precision)
+        self.rate = transfer_words_per_cycle
+        self.qr = program.solver.linear == "qr"
+        self.damping = program.solver.method == "lm"
+        self._batch_cycles: dict[int, int] = {}
+        self._read_plan()
+        self._read_chain()
+
+    # -- what the batch plan already prices, per unit ------------------------------------------
+    def _read_plan(self) -> None:
+        phases = {ph.name: ph for ph in self.plan.phases}
+        self.factor_loop = {}  # (block, mode) -> the plan's instance loop (ii, depth)
+        for mode in ("jacobian", "cost"):
+            for proc in phases[f"factor_{mode}"].processes:
+                block = int(proc.name.split("_")[1])
+                self.factor_loop[block, mode] = proc.loops[0]
+        self.retract_loop = phases["state_update"].processes[0].loops[0]
+        self.lm_phase = phases["lm_control"]
+
+    def _read_chain(self) -> None:
+        p = self.program
+        self.clusters = p.schedule.clusters
+        self.dims = {v.key: v.dim for v in p.variables}
+        self.storage = {v.key: v.storage_dim for v in p.variables}
+        cluster_of = {k: c for c, keys in enumerate(self.clusters) for k in keys}
+        self.entry = [min(cluster_of[k] for k in f.keys) for f in p.factors]
+        self.reach = [max(cluster_of[k] for k in f.keys) for f in p.factors]
+        self.cdim = [sum(self.dims[k] for k in keys) for keys in self.clusters]
+        # rows of the factor each cluster passes to the next (a child's new factor or, once the
+        # cluster has left the window, the prior τ): the serial recurrence of the simulator's
+        # stores, min(rows - f, s) as the schedule trims a partial QR
+        self.tau_rows = []
+        carried = 0
+        for c, f in enumerate(self.cdim):
+            rows = carried + sum(p.blocks[p.factors[i].block].residual_dim
+                                 for i in range(len(p.factors))
+                                 if self.entry[i] == c and self.reach[i] <= c + 1)
+            s = self.cdim[c + 1] if c + 1 < len(self.cdim) else 0
+            carried = max(0, min(rows - f, s))
+            self.tau_rows.append(carried)
+
+    # -- pricing -----------------------------------------------------------------------------
+    def price(self, update) -> UpdatePrice:
+        """The price of one update (a :class:`fgc.app.streaming.KeyframeResult` or any object
+        with ``keyframe``, ``mode``, ``first`` and ``iterations``)."""
+        j, first, mode = int(update.keyframe), int(update.first), str(update.mode)
+        k = int(update.iterations)
+        n = len(self.clusters)
+        if mode not in MODES:
+            raise UpdateModelError(f"update mode {mode!r}: the model prices {', '.join(MODES)}")
+        if not 0 <= first <= j < n:
+            raise UpdateModelError(f"keyframe {j} from {first}: outside the stream's {n} "
+                                   "keyframes")
+        if mode == "batch" and first != 0:
+            raise UpdateModelError(f"keyframe {j}: a batch update re-eliminates every "
+                                   f"keyframe, but this one starts at {first}")
+        if k < 0:
+            raise UpdateModelError(f"keyframe {j}: {k} iterations")
+        terms = []
+        if mode == "batch":
+            terms.append(Term("batch_iteration", self.batch_iteration_cycles(j), k, False,
+                              f"plan_cost of the batch Program of keyframes 0…{j}"))
+        else:
+            terms += self._iteration_terms(first, j, k)
+        terms.append(Term("store", self._linear_cycles(first, j, damping=False), 1, False,
+                          "the converged window eliminated once more without damping, its "
+                          "conditionals and new factors kept (serial, oldest first)"))
+        if mode == "incremental" and first > 0:
+            terms += self._kept_terms(first, j)
+        terms += self._transfer_terms(first, j, mode)
+        return UpdatePrice(j, mode, first, k, self.plan.clock_mhz, tuple(terms))
+
+    def batch_iteration_cycles(self, j: int) -> int:
+        """One batch iteration of keyframes 0 … j: ``plan_cost(build_plan(P_j))``."""
+        if j not in self._batch_cycles:
+            if j == len(self.clusters) - 1:
+                program = self.program
+            elif self.batch_program is None:
+                raise UpdateModelError(f"keyframe {j}: a batch update before the last keyframe "
+                                       "needs batch_program (the Program of its keyframes)")
+            else:
+                program = self.batch_program(j)
+            self._batch_cycles[j] = plan_cost(build_plan(program, self.options)).cycles
+        return self._batch_cycles[j]
+
+    def window_iteration_phases(self, first: int, last: int) -> tuple[Phase, ...]:
+        """One LM iteration of the window first … last as the plan's phases (the plan's terms of
+        an incremental or fixed-lag iteration; τ's relinearisation is not among them)."""
+        inst = self._instances(first, last)
+        phases = [self._factor_phase("jacobian", inst)]
+        phases += self._linear_phases(first, last, self.damping)
+        variables = sum(len(self.clusters[c]) for c in range(first, last + 1))
+        phases.append(Phase("state_update", False, (Process("retract", "state_update", (
+            Loop("variables", variables, self.retract_loop.ii, self.retract_loop.depth),)),)))
+        phases.append(self._factor_phase("cost", inst))
+        phases.append(self.lm_phase)
+        return tuple(phases)
+
+    # -- the terms ----------------------------------------------------------------------------
+    def _iteration_terms(self, first, last, k) -> list[Term]:
+        out = []
+        for ph in self.window_iteration_phases(first, last):
+            out.append(Term(f"iteration:{ph.name}", phase_cycles(ph), k, False,
+                            "per LM iteration, the plan's loops on the window"))
+        if first > 0:
+            out.append(Term("iteration:prior_rows", self._prior_rows_cycles(first), k, True,
+                            "assumed: τ's rows at x (A·J, b − A·Log(x̄⁻¹x)) for the Jacobian "
+                            "and the cost pass on one multiply-add lane plus a state-update "
+                            "pass for the Log; no emitted unit computes them"))
+        return out
+
+    def _kept_terms(self, first, last) -> list[Term]:
+        """Back-substitution through the kept conditionals first − 1 … 0 (plan), with the
+        re-expression of the newest at its parent's new estimate and each parent's Log
+        (assumed)."""
+        loops = []
+        for c in range(first - 1, -1, -1):
+            loops += backsub_loops(self.cdim[c], self.cdim[c + 1], self.les, name=f"kept{c}")
+            loops.append(self._retract(len(self.clusters[c]), f"kept{c}_retract"))
+        kept = Process("kept_backsub", "backsub", tuple(loops))
+        f, s = self.cdim[first - 1], self.cdim[first]
+        la, lm = self.les.add.latency, self.les.mul.latency
+        reexpress = (Loop("reexpress", f * s * s + f * s, 1, lm + la).cycles
+                     + self._retract(len(self.clusters[first]), "log").cycles)
+        logs = sum(self._retract(len(self.clusters[c + 1]), "log").cycles for c in range(first))
+        return [Term("kept_backsub", kept.cycles, 1, False,
+                     f"back-substitution through the {first} kept conditionals (cond_backsub) "
+                     "and the state update of their variables"),
+                Term("kept_reexpress", reexpress, 1, True,
+                     "assumed: the newest kept conditional re-expressed at its parent's new "
+                     "estimate (S·J, d − S·Log) on one multiply-add lane, the Log as a "
+                     "state-update pass"),
+                Term("kept_logs", logs, 1, True,
+                     "assumed: Log(x̄⁻¹x) of each kept conditional's parent, each priced as a "
+                     "state-update pass (the design has no Log unit)")]
+
+    def _transfer_terms(self, first, last, mode) -> list[Term]:
+        from fgc_backends.cfamily.tables import factor_data_words
+
+        p = self.program
+        new = [i for i in range(len(p.factors)) if self.reach[i] == last]
+        words = (sum(factor_data_words(p, p.factors[i].block) for i in new)
+                 + sum(self.storage[k] for k in self.clusters[last]))
+        # after the update: every cluster's conditional [R | S | d] (fixed-lag: the window's)
+        held = range(first, last + 1) if mode == "fixed-lag" else range(last + 1)
+        conds = sum(self.cdim[c] * (self.cdim[c] + (self.cdim[c + 1] if c < last else 0) + 1)
+                    for c in held)
+        state = sum(self.storage[k] for c in range(last + 1) for k in self.clusters[c])
+        taus = sum(self.tau_rows[c] * (self.cdim[c + 1] + 1) for c in held if c < last)
+        return [Term("transfer", math.ceil(words / self.rate), 1, True,
+                     f"assumed: host → accelerator, the keyframe's {words} words (its new "
+                     f"factors' data and initial values) at {self.rate} word(s) a cycle"),
+                Term("on_chip_state", 0, 1, True,
+                     f"assumed: the state ({state} words), the conditionals ({conds}) and the "
+                     f"factors passed up ({taus}) stay on chip between calls, no cycles")]
+
+    # -- pieces --------------------------------------------------------------------------------
+    def _instances(self, first, last) -> list[int]:
+        return [i for i in range(len(self.program.factors))
+                if self.entry[i] >= first and self.reach[i] <= last]
+
+    def _factor_phase(self, mode, instances) -> Phase:
+        procs = []
+        for b in range(len(self.program.blocks)):
+            loop = self.factor_loop[b, mode]
+            count = sum(1 for i in instances if self.program.factors[i].block == b)
+            procs.append(Process(f"factor_{b}_{mode}", f"factor_{b}", (
+                Loop(loop.name, count, loop.ii, loop.depth),)))
+        return Phase(f"factor_{mode}", False, tuple(procs))
+
+    def _retract(self, variables, name) -> Loop:
+        return Loop(name, variables, self.retract_loop.ii, self.retract_loop.depth)
+
+    def _linear_cycles(self, first, last, damping) -> int:
+        return sum(phase_cycles(ph) for ph in self._linear_phases(first, last, damping))
+
+    def _linear_phases(self, first, last, damping) -> list[Phase]:
+        """The window's elimination (one step per cluster, oldest first) and back-substitution
+        (newest first), as the plan prices the emitted units' loops."""
+        phases = []
+        if self.qr:
+            for c in range(first, last + 1):
+                loops = qr_unit_loops(self.step_pattern(first, last, c, damping), self.cdim[c],
+                                      self.options.units, self.les, name=f"s{c}")
+                phases.append(Phase(f"qr_step{c}", True, (
+                    Process(f"qr_step{c}", "qr_update", tuple(loops)),), linear=True))
+        else:
+            macs = self._hgc_macs(first, last)
+            phases.append(Phase("hgc", False, (Process("hgc", "hgc", (
+                Loop("macs", math.ceil(macs / self.options.hgc_lanes), 1,
+                     self.les.mul.latency + self.les.add.latency),)),), linear=True))
+            loops = []
+            for c in range(first, last + 1):
+                s = self.cdim[c + 1] if c < last else 0
+                loops += cpe_step_loops(self.cdim[c], s, self.options.cpe, self.les,
+                                        name=f"s{c}")
+            phases.append(Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
+                                linear=True))
+        for c in range(last, first - 1, -1):
+            s = self.cdim[c + 1] if c < last else 0
+            phases.append(Phase(f"backsub_step{c}", False, (Process(
+                f"backsub_step{c}", "backsub",
+                tuple(backsub_loops(self.cdim[c], s, self.les, name=f"bs{c}"))),), linear=True))
+        return phases
+
+    def step_pattern(self, first, last, c, damping) -> np.ndarray:
+        """Structural rows × (frontal + separator) non-zeros of the window's step for cluster c:
+        whitened rows of the block instances entering at c, then the factor passed up from
+        cluster c − 1 (the previous step's new factor, or τ at the window's oldest cluster),
+        upper trapezoidal over cluster c, then with ``damping`` √μ rows on the frontal columns
+        (the row order of ``stacked_pattern``, which the emitted tables follow)."""
+        p = self.program
+        keys = list(self.clusters[c]) + (list(self.clusters[c + 1]) if c < last else [])
+        col, start = {}, 0
+        for key in keys:
+            col[key] = start
+            start += self.dims[key]
+        width, f = start, self.cdim[c]
+        rows = []
+        for i in range(len(p.factors)):
+            if self.entry[i] != c or self.reach[i] > last:
+                continue
+            spec = p.factors[i]
+            blk = p.blocks[spec.block]
+            out = np.zeros((blk.residual_dim, width), dtype=bool)
+            for key, mask in zip(spec.keys, whitened_pattern(blk), strict=True):
+                out[:, col[key]:col[key] + self.dims[key]] |= mask
+            rows.append(out)
+        if c > 0:  # a child's new factor (c > first) or τ (c == first > 0)
+            carried = self.tau_rows[c - 1]
+            block = np.zeros((carried, width), dtype=bool)
+            for i in range(carried):
+                block[i, i:f] = True
+            rows.append(block)
+        if damping:
+            rows.append(np.eye(f, width, dtype=bool))
+        return np.vstack(rows) if rows else np.zeros((0, width), dtype=bool)
+
+    def _hgc_macs(self, first, last) -> int:
+        p = self.program
+        macs = 0
+        for i in self._instances(first, last):
+            b = p.blocks[p.factors[i].block]
+            cols = sum(b.variable_dims)
+            macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
+        if first > 0:
+            n = self.cdim[first]
+            macs += self.tau_rows[first - 1] * (n * (n + 1) // 2 + n)
+        return macs
+
+    def _prior_rows_cycles(self, first) -> int:
+        rows, n = self.tau_rows[first - 1], self.cdim[first]
+        la, lm = self.ops.add.latency, self.ops.mul.latency
+        mac = Loop("prior_rows", rows * n * (n + 1), 1, lm + la)
+        log = self._retract(len(self.clusters[first]), "log")
+        return 2 * (mac.cycles + log.cycles)  # the Jacobian pass and the cost pass

@@ -1,0 +1,232 @@
+"""The accelerator plan's price of a stream's keyframe updates (issue 19:
+``fgc_backends.hls.update``, ``fgc stream --backend hls``).
+
+The update model composes the plan's own loops: a window spanning the whole chain, eliminated
+serially, must cost exactly what ``plan_cost`` says for the batch Program with the serial
+ordering (that checks the window's stacked patterns against ``stacked_pattern``); a batch
+keyframe costs ``plan_cost`` of the batch Program of its keyframes per iteration; more Update
+units, a wider window, more iterations or a longer kept Bayes net are never cheaper; assumed
+terms are labelled and kept out of the plan's latency. Pricing needs no simulator run: updates
+are given by their keyframe, mode, first cluster and iterations.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from types import SimpleNamespace
+
+import pytest
+
+import fgc
+import fgc.frontend.factors
+from fgc.app.cli import main
+from fgc.app.streaming import HW_REFUSAL, compile_stream, prefix_program, update_model
+from fgc.compile import compile_graph
+from fgc.ir.program import SolverConfig
+from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles, plan_cost
+from fgc_backends.hls.update import NOT_EMITTED, UpdateModel, UpdateModelError
+
+ROOT = Path(__file__).resolve().parent.parent
+LIO = str(ROOT / "examples" / "lio.py")
+sys.path.insert(0, str(ROOT / "examples"))
+
+import lio  # noqa: E402
+
+N = 8
+
+
+def update(keyframe, first, iterations=3, mode="incremental"):
+    return SimpleNamespace(keyframe=keyframe, first=first, iterations=iterations, mode=mode)
+
+
+@pytest.fixture(scope="module")
+def graph():
+    return lio.build(N=N)
+
+
+@pytest.fixture(scope="module")
+def stream(graph):
+    """An incremental LIO stream's Program (K = 3, batch at 5) and its update model."""
+    program = compile_stream(graph, SolverConfig(precision="float32"), incremental=3,
+                             batch_every=(5,))
+    return program, update_model(graph, program)
+
+
+@pytest.mark.parametrize("linear, units", [("qr", 1), ("qr", 4), ("cholesky", 4)])
+def test_a_whole_chain_window_costs_the_serial_batch_plan(graph, linear, units):
+    program = compile_graph(graph, SolverConfig(precision="float32", ordering="serial",
+                                                linear=linear), name="serial")
+    model = UpdateModel(program, PlanOptions.of(program, units=units))
+    phases = model.window_iteration_phases(0, N - 1)
+    assert sum(phase_cycles(ph) for ph in phases) == plan_cost(model.plan).cycles
+    # and a window of the newest clusters is cheaper than the whole chain
+    assert (sum(phase_cycles(ph) for ph in model.window_iteration_phases(N - 3, N - 1))
+            < plan_cost(model.plan).cycles)
+
+
+def test_a_batch_keyframe_costs_plan_cost_of_its_batch_program(graph, stream):
+    program, model = stream
+    price = model.price(update(5, 0, iterations=4, mode="batch"))
+    batch = plan_cost(build_plan(prefix_program(graph, program, 6), model.options))
+    assert price.term("batch_iteration").cycles == 4 * batch.cycles
+    assert price.term("batch_iteration").each == batch.cycles
+    assert price.cycles == 4 * batch.cycles + price.term("store").cycles
+    # at the last keyframe the batch Program is the stream's own
+    last = model.price(update(N - 1, 0, iterations=2, mode="batch"))
+    assert last.term("batch_iteration").each == plan_cost(build_plan(program,
+                                                                     model.options)).cycles
+    assert not any(t.name.startswith(("iteration:", "kept")) for t in price.terms)
+
+
+def test_a_batch_keyframe_before_the_last_needs_its_program(stream):
+    program, _ = stream
+    model = UpdateModel(program)
+    with pytest.raises(UpdateModelError, match="needs batch_program"):
+        model.price(update(5, 0, mode="batch"))
+
+
+def test_more_update_units_are_never_slower(graph, stream):
+    program, _ = stream
+    ups = [update(j, max(0, j - 2)) for j in range(N)] + [update(5, 0, mode="batch")]
+    previous = None
+    for units in (1, 2, 4, 8):
+        model = update_model(graph, program, units=units)
+        cycles = [model.price(u).cycles for u in ups]
+        if previous is not None:
+            assert all(c <= p for c, p in zip(cycles, previous, strict=True)), units
+            assert sum(cycles) < sum(previous)
+        previous = cycles
+
+
+def test_the_price_grows_with_iterations_window_and_kept_conditionals(stream):
+    _, model = stream
+    one, three = model.price(update(6, 4, iterations=1)), model.price(update(6, 4))
+    per = sum(t.each for t in one.terms if t.name.startswith("iteration:") and not t.assumed)
+    assert per > 0 and three.cycles - one.cycles == 2 * per
+    assert model.price(update(6, 3)).cycles > three.cycles  # a wider window
+    # later keyframes back-substitute through more kept conditionals
+    kept = [model.price(update(j, j - 2)).term("kept_backsub").cycles for j in (3, 5, 7)]
+    assert kept[0] < kept[1] < kept[2]
+    assert model.price(update(6, 4, iterations=0)).cycles < one.cycles
+
+
+def test_float64_costs_more_than_float32(graph):
+    prices = []
+    for precision in ("float32", "float64"):
+        program = compile_stream(graph, SolverConfig(precision=precision), incremental=3)
+        prices.append(update_model(graph, program).price(update(6, 4)).cycles)
+    assert prices[0] < prices[1]
+
+
+def test_cholesky_prices_the_cascade_with_its_cpe(graph):
+    program = compile_stream(graph, SolverConfig(precision="float32", linear="cholesky"),
+                             incremental=3)
+    a = update_model(graph, program, cpe=5).price(update(6, 4))
+    b = update_model(graph, program, cpe=20).price(update(6, 4))
+    assert a.term("iteration:cholesky").cycles != b.term("iteration:cholesky").cycles
+    assert a.term("iteration:hgc").cycles == b.term("iteration:hgc").cycles > 0
+
+
+def test_assumed_terms_are_labelled_and_kept_out_of_the_plan_latency(stream):
+    _, model = stream
+    price = model.price(update(6, 4))
+    assumed = [t for t in price.terms if t.assumed]
+    assert {t.name for t in assumed} >= {"iteration:prior_rows", "kept_reexpress",
+                                         "transfer", "on_chip_state"}
+    assert all(t.text.startswith("assumed") for t in assumed)
+    assert not any(t.text.startswith("assumed") for t in price.terms if not t.assumed)
+    assert price.cycles == sum(t.cycles for t in price.terms if not t.assumed)
+    assert price.latency_with_assumed_ms > price.latency_ms > 0
+    assert price.latency_ms == pytest.approx(price.cycles / (143.0 * 1e3))
+    d = price.as_dict()
+    assert "model estimate" in d["source"] and d["latency_ms"] == price.latency_ms
+    # the oldest window (nothing kept, no τ) has only the host transfer and state assumed
+    first = model.price(update(2, 0))
+    assert {t.name for t in first.terms if t.assumed} == {"transfer", "on_chip_state"}
+
+
+def test_a_fixed_lag_update_walks_no_kept_conditionals(graph):
+    program = compile_stream(graph, window=3)
+    price = update_model(graph, program).price(update(6, 3, mode="fixed-lag"))
+    names = {t.name for t in price.terms}
+    assert "iteration:prior_rows" in names and "store" in names
+    assert not any(n.startswith("kept") for n in names)
+
+
+@pytest.mark.parametrize("bad, message", [
+    (update(3, 1, mode="sideways"), "update mode 'sideways'"),
+    (update(N, 6), f"outside the stream's {N} keyframes"),
+    (update(4, 5), "outside"),
+    (update(5, 2, mode="batch"), "re-eliminates every keyframe"),
+    (update(5, 3, iterations=-1), "-1 iterations"),
+])
+def test_bad_updates_are_refused(stream, bad, message):
+    _, model = stream
+    with pytest.raises(UpdateModelError, match=message):
+        model.price(bad)
+
+
+def test_a_graph_that_is_not_a_chain_has_no_update_model():
+    graph = lio.build(N=5)
+    graph.add(fgc.factors.BetweenFactor("x0", "x3", fgc.Pose3(), fgc.noise.isotropic(6, 1)))
+    program = compile_graph(graph, SolverConfig(precision="float32"), name="loop")
+    with pytest.raises(fgc.FgcError, match="needs a chain of keyframes"):
+        UpdateModel(program)
+
+
+# --------------------------------------------------------------------------------------------
+# command line
+# --------------------------------------------------------------------------------------------
+
+
+def test_cli_stream_hls_prints_the_model_beside_the_simulator(tmp_path, capsys):
+    out, tum = tmp_path / "stream.json", tmp_path / "stream.tum"
+    rc = main(["stream", LIO, "-p", "N=6", "--incremental", "2", "--batch-every", "3,",
+               "--backend", "hls", "--units", "2", "--precision", "float32", "--json", str(out),
+               "--tum", str(tum)])
+    text = capsys.readouterr().out
+    assert rc == 0, text
+    assert "not emitted in C++" in text and "n_u = 2 Update units" in text
+    assert "keyframe    3 (batch, from 0)" in text and "ms assumed (model estimate" in text
+    assert "(simulator wall time)" in text and NOT_EMITTED in text
+    assert len(tum.read_text().splitlines()) == 6
+    report = json.loads(out.read_text())
+    assert report["backend"] == "hls" and report["not_emitted"] == NOT_EMITTED
+    # each keyframe's figure is the update model's price of the update the simulator ran
+    graph = lio.build(N=6)
+    program = compile_stream(graph, SolverConfig(precision="float32", units=2),
+                             incremental=2, batch_every=(3,))
+    model = update_model(graph, program)
+    for u, priced in zip(report["updates"], report["model_estimate"], strict=True):
+        again = model.price(SimpleNamespace(**{k: u[k] for k in ("keyframe", "mode", "first",
+                                                                  "iterations")}))
+        assert priced["cycles"] == again.cycles and priced["keyframe"] == u["keyframe"]
+        assert any(t["assumed"] for t in priced["terms"])
+
+
+def test_cli_stream_hls_fixed_lag_cholesky(capsys):
+    rc = main(["stream", LIO, "-p", "N=5", "--window", "2", "--backend", "hls", "--linear",
+               "cholesky", "--cpe", "5"])
+    text = capsys.readouterr().out
+    assert rc == 0, text
+    assert "CHOLESKY, #CPE = 5" in text and "keyframe    4 (fixed-lag, from 2)" in text
+
+
+@pytest.mark.parametrize("argv", [
+    ["stream", LIO, "-p", "N=4", "--backend", "native", "--incremental", "2"],
+    ["run", LIO, "-p", "N=4", "--backend", "hls", "--incremental", "2"],
+    ["run", LIO, "-p", "N=4", "--backend", "hls", "--window", "2"],
+])
+def test_cli_refuses_streaming_where_no_model_or_solver_runs_it(argv, capsys):
+    rc = main(argv)
+    err = capsys.readouterr().err
+    assert rc == 2 and HW_REFUSAL in err and f"--backend {argv[argv.index('--backend') + 1]}" \
+        in err
+    assert "Traceback" not in err and len(err.strip().splitlines()) == 1
+
+
+def test_cli_stream_hls_needs_a_mode(capsys):
+    assert main(["stream", LIO, "-p", "N=4", "--backend", "hls"]) == 2
+    assert "--incremental K or --window W" in capsys.readouterr().err
