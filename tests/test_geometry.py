@@ -715,3 +715,16 @@ def test_symbolic_coefficients_differentiate_to_their_derivative(name):
     assert special.COEFFICIENT_FUNCTIONS[name](sp.Integer(0)) == \
         sp.Rational(special.SERIES[name][0].numerator, special.SERIES[name][0].denominator)
     assert float(f.subs(t, sp.Float(0.7))) == float(special.coefficient(name, 0.7))
+
+
+def test_one_type_registry_by_name():
+    from fgc.frontend import geometry
+
+    assert geometry.type_named("Pose3") is geometry.Pose3
+    assert geometry.type_named("Vector7", 7) is geometry.vector_type(7)
+    for bad, needle in (("Pose4", "no fgc value type 'Pose4'"), ("LieGroup", "no fgc value"),
+                        ("Vector0", "no fgc value")):
+        with pytest.raises(geometry.UnknownTypeError, match=needle):
+            geometry.type_named(bad)
+    with pytest.raises(geometry.UnknownTypeError, match="dimension 6, not 3"):
+        geometry.type_named("Pose3", 3)

@@ -10,7 +10,6 @@ tangent step ``d`` and writes the new storage.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 import sympy as sp
@@ -37,13 +36,10 @@ class RetractKind:
 
 def variable_class(type_name: str) -> type[LieGroup]:
     """The :mod:`fgc.frontend.geometry` class called ``type_name`` (``VectorN`` for any N)."""
-    match = re.fullmatch(r"Vector([1-9][0-9]{0,3})", type_name)
-    if match:
-        return geometry.vector_type(int(match.group(1)))
-    cls = getattr(geometry, type_name, None)
-    if isinstance(cls, type) and issubclass(cls, LieGroup) and cls is not LieGroup:
-        return cls
-    raise CodegenError(f"no C++ retraction for variable type {type_name!r}")
+    try:
+        return geometry.type_named(type_name)
+    except geometry.UnknownTypeError as exc:
+        raise CodegenError(f"no C++ retraction for variable type {type_name!r}: {exc}") from exc
 
 
 def retract_kernel(cls: type[LieGroup]) -> Kernel:

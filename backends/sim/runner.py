@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import json
-import re
 import runpy
 import subprocess
 import sys
@@ -394,9 +393,4 @@ _FAILURES = {
 
 def value_type(type_name: str, dim: int) -> type[LieGroup]:
     """The fgc geometry class named ``type_name`` (``VectorN`` for any N)."""
-    if re.fullmatch(r"Vector\d+", type_name):
-        return geometry.vector_type(int(type_name[6:]))
-    cls = getattr(geometry, type_name, None)
-    if not (isinstance(cls, type) and issubclass(cls, LieGroup) and cls.dim == dim):
-        raise FgcError(f"no fgc value type '{type_name}' of dimension {dim}")
-    return cls
+    return geometry.type_named(type_name, dim)

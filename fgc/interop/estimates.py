@@ -52,11 +52,10 @@ def values_from_storage(program, storage: dict) -> dict[str, LieGroup]:
     out = {}
     for spec in program.variables:
         name = spec.type_name
-        cls = (geometry.vector_type(int(name[6:])) if name.startswith("Vector")
-               and name[6:].isdigit() else getattr(geometry, name, None))
-        if not (isinstance(cls, type) and issubclass(cls, LieGroup) and cls.dim == spec.dim):
-            raise FgcError(f"variable {spec.key!r}: no fgc value type {name!r} of dimension "
-                           f"{spec.dim}")
+        try:
+            cls = geometry.type_named(name, spec.dim)
+        except geometry.UnknownTypeError as exc:
+            raise FgcError(f"variable {spec.key!r}: {exc}") from exc
         out[spec.key] = cls.from_storage(storage[spec.key])
     return out
 

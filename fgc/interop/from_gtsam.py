@@ -40,6 +40,7 @@ from fgc.frontend.dsl import Factor, FactorType, Graph, Key, factor
 from fgc.frontend.factors import BearingRangeFactor, BetweenFactor, GPSFactor, PriorFactor
 from fgc.frontend.factors.imu import combined_imu_factor_type
 from fgc.frontend.geometry import (
+    TYPES,
     ImuBias,
     LieGroup,
     Point2,
@@ -58,8 +59,7 @@ from fgc.interop.to_gtsam import value_from_gtsam, value_to_gtsam
 
 _nm = gtsam.noiseModel
 # fgc variable types by the twin tables' names (fgc.interop.twins: one table for both directions)
-_TYPES = {"Pose2": Pose2, "Pose3": Pose3, "Rot2": Rot2, "Rot3": Rot3, "Point2": Point2,
-          "Point3": Point3, "ImuBias": ImuBias, "Vector": VectorSpace}
+_TYPES = {**TYPES, "Vector": VectorSpace}  # the registry (fgc.geometry.TYPES) + any vector
 _PRIORS = {getattr(gtsam, cls): _TYPES[t] for t, cls in twins.PRIOR.items()}
 _BETWEENS = {getattr(gtsam, cls): _TYPES[t] for t, cls in twins.BETWEEN.items()}
 _RANGES = {getattr(gtsam, cls): (_TYPES[a], _TYPES[b]) for (a, b), cls in twins.RANGE.items()}
