@@ -933,7 +933,8 @@ _COMMANDS = (
      "the simulator did not converge", "also write the report as JSON"),
     ("verify", _cmd_verify, "solve with the simulator and with GTSAM and compare",
      "FAILED (the verdict line says why)", "also write the report as JSON"),
-    ("run", _cmd_run, "solve with the generated native solver (or the simulator)",
+    ("run", _cmd_run, "solve with the generated native solver (or the simulator, or the HLS "
+                      "accelerator's C simulation: --backend sim|hls)",
      "the solve did not converge", "also write the report as JSON"),
     ("report", _cmd_report, "the compiled design at a glance: blocks, schedule, storage, "
      "cycles, resources, energy", None, "also write the report as JSON"),
