@@ -129,11 +129,7 @@ class Window:
         return delta.astype(self.dtype, copy=False)
 
     def retract(self, x, delta):
-        out = x.copy()
-        with numpy.errstate(all="ignore"):
-            for fn, sidx, tidx in self.groups:
-                out[sidx] = fn(x[sidx], delta[tidx])
-        return out
+        return self.lib.optimizer.retract_groups(x, delta, self.groups)
 
     # -- τ as a linear factor at its linearisation point ---------------------------------
     def _tau_rows(self, x):

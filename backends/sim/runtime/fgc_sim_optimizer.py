@@ -106,11 +106,17 @@ class Problem:
 
     def retract(self, x, delta):
         """x ⊕ δ: every variable retracted with its type's retraction."""
-        out = x.copy()
-        with numpy.errstate(all="ignore"):
-            for fn, sidx, tidx in self.groups:
-                out[sidx] = fn(x[sidx], delta[tidx])
-        return out
+        return retract_groups(x, delta, self.groups)
+
+
+def retract_groups(x, delta, groups):
+    """x ⊕ δ over ``groups``: (retraction over instances, storage indices, tangent indices) per
+    variable type, the indices one row per variable."""
+    out = x.copy()
+    with numpy.errstate(all="ignore"):
+        for fn, sidx, tidx in groups:
+            out[sidx] = fn(x[sidx], delta[tidx])
+    return out
 
 
 def les_dtype(dtype, linear_precision):
