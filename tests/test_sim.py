@@ -323,6 +323,23 @@ def test_gauss_newton_and_subprocess_run(pose3, tmp_path):
     assert np.array_equal(inproc.storage["x3"], sub.storage["x3"])
 
 
+def test_emitted_program_runs_where_fgc_cannot_be_imported(pose3, tmp_path):
+    """The copied run-time and the generated files need NumPy only: run the emitted program
+    from another folder with fgc, fgc_backends, sympy and jinja2 made unimportable."""
+    graph, program, data = pose3
+    files = sim.emit(program, tmp_path / "out")
+    write_data(data, tmp_path / "data.txt")
+    code = ("import runpy, sys\n"
+            "for name in ('fgc', 'fgc_backends', 'sympy', 'jinja2'):\n"
+            "    sys.modules[name] = None\n"
+            "sys.argv = [sys.argv[1], 'data.txt', 'result.json']\n"
+            "runpy.run_path(sys.argv[0], run_name='__main__')\n")
+    run = subprocess.run([sys.executable, "-c", code, str(files[0])], cwd=tmp_path,
+                         capture_output=True, text=True, check=False)
+    assert run.returncode == 0, run.stderr
+    assert sim.read_result(program, tmp_path / "result.json").converged
+
+
 def test_lm_that_does_not_converge_says_so(pose3):
     graph, _, data = pose3
     program = compile_graph(graph, SolverConfig(max_iterations=2))
