@@ -7,6 +7,7 @@ fgc's own numeric definitions (fgc.frontend.geometry) and the solver paths again
 from __future__ import annotations
 
 import ast
+import dataclasses
 import os
 import runpy
 import subprocess
@@ -21,13 +22,16 @@ import fgc
 from fgc.compile import compile_graph
 from fgc.compiler.kernel import Kernel
 from fgc.errors import DataError
+from fgc.frontend import geometry
 from fgc.frontend.factors import BetweenFactor, GPSFactor, PriorFactor
 from fgc.frontend.geometry import Point3, Pose2, Pose3, Rot2, Rot3, special
 from fgc.ir.conditioning import RankDeficientWarning
 from fgc.ir.datafile import problem_data, write_data
 from fgc.ir.program import SolverConfig
 from fgc_backends import load, sim
+from fgc_backends.sim import types as sim_types
 from fgc_backends.sim.printer import SimPrinter
+from fgc_backends.sim.runtime import fgc_sim_runtime, fgc_sim_special
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -109,43 +113,103 @@ def test_printer_rejects_unknown_functions():
 
 
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])
-def test_runtime_coefficients_match_fgc(emitted, dtype):
-    lib = emitted[1]["LIB"]
-    t = np.array([0.0, 1e-16, 1e-8, 0.3, 3.99, 4.0, 4.01, 9.0, np.pi**2], dtype=dtype)
+def test_runtime_coefficients_are_fgcs_bit_for_bit(emitted, dtype):
+    """The run-time's closed forms are written by hand (fgc_sim_special.py): they must give
+    exactly fgc's numbers, series and closed form, on both sides of the switch."""
+    ns = emitted[1]
+    t = np.concatenate([[0.0, 1e-16, 1e-8, 0.3, 3.99, 4.0, 4.01, 9.0, np.pi**2],
+                        np.geomspace(1e-20, 40.0, 2000), np.linspace(0.0, 9.9, 2000)]).astype(dtype)
+    assert sorted(ns["LIE"]) == sorted(special.COEFFICIENT_FUNCTIONS)
     for name in special.COEFFICIENT_FUNCTIONS:
-        got = lib.special.coefficient(name, t)
+        got = ns[f"lie_{name}"](t)  # the problem module's names, which its kernels call
         assert got.dtype == dtype
-        np.testing.assert_allclose(got, special.coefficient(name, t), rtol=1e-6 if
-                                   dtype == np.float32 else 1e-15, atol=0, err_msg=name)
+        np.testing.assert_array_equal(got, special.coefficient(name, t), err_msg=name)
+
+
+def test_emitted_constants_are_fgcs_series(emitted):
+    constants = emitted[1]["LIB"].constants
+    assert constants.SERIES_BELOW == special.SERIES_BELOW
+    assert {name: tuple(float(c) for c in reversed(coeffs))
+                                for name, coeffs in special.SERIES.items()} == constants.SERIES
 
 
 @pytest.mark.parametrize("theta", [0.0, 1e-8, 1e-4, 1.0, 2.5, np.pi - 1e-6, np.pi])
-def test_runtime_so3_log_matches_fgc(emitted, theta):
-    lib = emitted[1]["LIB"]
+def test_runtime_so3_log_matches_fgc(theta):
     rng = np.random.default_rng(1)
     axes = rng.normal(size=(4, 3))
     axes /= np.linalg.norm(axes, axis=1, keepdims=True)
     mats = np.array([Rot3.Expmap(a * theta).R for a in axes])
-    got = np.stack(lib.special.so3_log(*mats.reshape(4, 9).T), -1)
+    got = np.stack(fgc_sim_special.so3_log(*mats.reshape(4, 9).T), -1)
     want = np.array([special.so3_log_numeric(m) for m in mats])
     if theta == np.pi:  # ±ω are the same rotation
         got = got * np.sign(np.sum(got * want, 1, keepdims=True))
     np.testing.assert_allclose(got, want, atol=1e-12)
-    got32 = np.stack(lib.special.so3_log(*mats.astype(np.float32).reshape(4, 9).T), -1)
+    got32 = np.stack(fgc_sim_special.so3_log(*mats.astype(np.float32).reshape(4, 9).T), -1)
     assert got32.dtype == np.float32
 
 
-@pytest.mark.parametrize("cls, kind", [(Pose3, "pose3"), (Rot3, "rot3"), (Pose2, "pose2"),
-                                       (Rot2, "rot2")])
-def test_runtime_retract_matches_fgc(emitted, cls, kind):
-    lib = emitted[1]["LIB"]
+def _printed_type_kernel(kernel: Kernel):
+    """A variable type's kernel printed as the problem module prints it, over the run-time's
+    special functions (lie_* from fgc's series, so3_log), as f(part, …) over instances."""
+    printed = SimPrinter().kernel(kernel, "k")
+    source = "def k(x):\n" + "".join(f"    {line}\n" for line in printed.lines)
+    series = {name: tuple(float(c) for c in reversed(coeffs))
+              for name, coeffs in special.SERIES.items()}
+    ns = {"numpy": np, "so3_log": fgc_sim_special.so3_log}
+    lie = fgc_sim_special.lie_functions(special.SERIES_BELOW, series)
+    ns.update({f"lie_{name}": f for name, f in lie.items()})
+    exec(source, ns)  # noqa: S102 - our own printed code
+    return fgc_sim_special.over_instances(ns["k"])
+
+
+TYPES = [Pose3, Rot3, Pose2, Rot2, Point3, geometry.vector_type(3), geometry.ImuBias]
+
+
+@pytest.mark.parametrize("cls", TYPES, ids=lambda c: c.__name__)
+def test_printed_retract_and_local_match_fgc(cls):
+    retract = _printed_type_kernel(sim_types.retract_kernel(cls))
+    local = _printed_type_kernel(sim_types.local_kernel(cls))
     rng = np.random.default_rng(2)
     values = [cls.random(rng) for _ in range(5)]
     deltas = rng.normal(size=(5, cls.dim)) * np.array([1.0, 1e-9, 1e-5, 0.3, 2.0])[:, None]
     x = np.array([v.storage_array() for v in values])
-    got = lib.special.RETRACT[kind](x, deltas)
-    want = np.array([v.retract(d).storage_array() for v, d in zip(values, deltas, strict=True)])
-    np.testing.assert_allclose(got, want, atol=1e-12)
+    got = retract(x, deltas)
+    moved = [v.retract(d) for v, d in zip(values, deltas, strict=True)]
+    np.testing.assert_allclose(got, [m.storage_array() for m in moved], atol=1e-12)
+    back = local(x, got)
+    want = np.array([v.local(m) for v, m in zip(values, moved, strict=True)]).reshape(5, -1)
+    np.testing.assert_allclose(back, want, atol=1e-9)
+    np.testing.assert_allclose(back, deltas, atol=1e-9)  # Log(x⁻¹ (x ∘ Exp δ)) = δ
+    x32, d32 = x.astype(np.float32), deltas.astype(np.float32)
+    assert retract(x32, d32).dtype == np.float32 and local(x32, x32).dtype == np.float32
+
+
+def test_problem_module_holds_each_variable_types_kernels(pose3, emitted):
+    ns = emitted[1]
+    types = ns["PROBLEM"]["types"]
+    assert len(types) == 1 and ns["PROBLEM"]["retract_groups"] == ((0, (0, 1, 2, 3, 4)),)
+    retract = fgc_sim_special.over_instances(types[0][0])
+    rng = np.random.default_rng(3)
+    x = np.array([Pose3.random(rng).storage_array() for _ in range(3)])
+    d = rng.normal(size=(3, 6)) * 0.1
+    want = [Pose3.from_storage(list(a)).retract(b).storage_array()
+            for a, b in zip(x, d, strict=True)]
+    np.testing.assert_allclose(retract(x, d), want, atol=1e-12)
+
+
+def test_a_variable_type_fgc_does_not_know_is_refused(pose3):
+    program = pose3[1]
+    odd = dataclasses.replace(program.variables[0], type_name="Quaternion")
+    bad = dataclasses.replace(program, variables=(odd, *program.variables[1:]))
+    with pytest.raises(sim.EmitError, match="no retraction for variable type 'Quaternion'"):
+        sim_types.variable_types(bad, sim.EmitError)
+
+
+def test_emit_refuses_a_runtime_that_disagrees_with_the_data_format(pose3, tmp_path,
+                                                                    monkeypatch):
+    monkeypatch.setattr(fgc_sim_runtime, "DATA_MAGIC", "FGCDATA 0")
+    with pytest.raises(sim.EmitError, match="data file's magic"):
+        sim.emit(pose3[1], tmp_path)
 
 
 # --------------------------------------------------------------------------------------------
@@ -164,11 +228,17 @@ def test_emission_is_deterministic_labelled_and_numpy_only(pose3, emitted, tmp_p
     again = sim.emit(pose3[1], tmp_path)
     assert [p.name for p in again] == [p.name for p in files]
     assert files[0].name == "fgc_problem_sim.py"
+    runtime = {p.name: p for p in sim.SimConfig.runtime_files()}
+    assert [p.name for p in files[2:]] == list(runtime)
     for a, b in zip(files, again, strict=True):
         text = a.read_text()
         assert text == b.read_text(), a.name
-        template = "sim.py.jinja" if a == files[0] else f"{a.name}.jinja"
-        assert text.startswith(f"# generated from template {template} by fgc — do not edit\n")
+        if a.name in runtime:  # copied as it is
+            assert a.read_bytes() == runtime[a.name].read_bytes(), a.name
+        else:
+            template = "sim.py.jinja" if a == files[0] else f"{a.name}.jinja"
+            assert text.startswith(f"# generated from template {template} by fgc — do not "
+                                   "edit\n")
         imported = set()
         for node in ast.walk(ast.parse(text)):
             if isinstance(node, ast.Import):
@@ -251,6 +321,23 @@ def test_gauss_newton_and_subprocess_run(pose3, tmp_path):
     sub = sim.run(program, data, tmp_path / "b", in_process=False)
     assert inproc.converged and sub.converged
     assert np.array_equal(inproc.storage["x3"], sub.storage["x3"])
+
+
+def test_emitted_program_runs_where_fgc_cannot_be_imported(pose3, tmp_path):
+    """The copied run-time and the generated files need NumPy only: run the emitted program
+    from another folder with fgc, fgc_backends, sympy and jinja2 made unimportable."""
+    graph, program, data = pose3
+    files = sim.emit(program, tmp_path / "out")
+    write_data(data, tmp_path / "data.txt")
+    code = ("import runpy, sys\n"
+            "for name in ('fgc', 'fgc_backends', 'sympy', 'jinja2'):\n"
+            "    sys.modules[name] = None\n"
+            "sys.argv = [sys.argv[1], 'data.txt', 'result.json']\n"
+            "runpy.run_path(sys.argv[0], run_name='__main__')\n")
+    run = subprocess.run([sys.executable, "-c", code, str(files[0])], cwd=tmp_path,
+                         capture_output=True, text=True, check=False)
+    assert run.returncode == 0, run.stderr
+    assert sim.read_result(program, tmp_path / "result.json").converged
 
 
 def test_lm_that_does_not_converge_says_so(pose3):

@@ -1,8 +1,11 @@
 """The simulator backend: a Program → a standalone NumPy program that runs the accelerator's
 algorithm (GN/LM, partial-QR or Cholesky elimination along the schedule) on a data file.
 
+The run-time is the package :mod:`fgc_backends.sim.runtime`, copied verbatim into every emitted
+project; only the problem module and the constants module are generated (see ``emitter``).
+
     from fgc_backends import sim
-    files = sim.emit(program, "out/")                  # out/<name>_sim.py + run-time modules
+    files = sim.emit(program, "out/")  # out/<name>_sim.py, fgc_sim_constants.py, run-time
     result = sim.run(program, problem_data(graph, program), precision="float32")
     result.values["x3"], result.final_error, result.status
 

@@ -7,11 +7,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .printer import SimPrinter
+from .runtime import module_paths
 
-RUNTIME_TEMPLATES = ("fgc_sim_runtime.py.jinja", "fgc_sim_special.py.jinja",
-                     "fgc_sim_linear.py.jinja", "fgc_sim_optimizer.py.jinja",
-                     "fgc_sim_incremental.py.jinja", "fgc_sim_diagnostics.py.jinja")
+# the generated files: the problem module and the constants module (templates/), rendered; the
+# run-time modules (runtime/) are copied as they are
 PROGRAM_TEMPLATE = "sim.py.jinja"
+CONSTANTS_TEMPLATE = "fgc_sim_constants.py.jinja"
 
 
 @dataclass(frozen=True)
@@ -59,9 +60,14 @@ class SimConfig:
         return identifier(self.name or program_name)
 
     def files(self, program_name: str) -> tuple[tuple[str, str], ...]:
-        """(template, emitted file name) of every emitted file, problem module first."""
-        program = (PROGRAM_TEMPLATE, f"{self.stem(program_name)}_sim.py")
-        return (program, *((t, t.removesuffix(".jinja")) for t in RUNTIME_TEMPLATES))
+        """(template, emitted file name) of every generated file, problem module first."""
+        return ((PROGRAM_TEMPLATE, f"{self.stem(program_name)}_sim.py"),
+                (CONSTANTS_TEMPLATE, CONSTANTS_TEMPLATE.removesuffix(".jinja")))
+
+    @staticmethod
+    def runtime_files() -> tuple[Path, ...]:
+        """The run-time modules every emitted simulator holds a byte-identical copy of."""
+        return module_paths()
 
 
 def identifier(text: str) -> str:

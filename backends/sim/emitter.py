@@ -1,16 +1,18 @@
 """emit: a Program → the simulator's files (a problem module plus its NumPy run-time).
 
-Everything the templates place is computed here or printed by :class:`SimPrinter`: the templates
-only loop over these fields. User-given names (problem, factor types) reach the emitted code only
-sanitised, in comments; variables, blocks and factors are referred to by index. The variables'
-keys, which the result file names its values by, are data: JSON text (hex-coded unless plain) in
-string literals (:meth:`SimPrinter.json_text`), decoded at run time.
+Two files are generated: the problem module ``<name>_sim.py`` (block kernels, each variable
+type's retraction and local coordinates printed from :mod:`fgc.frontend.geometry`, tables,
+schedule) and ``fgc_sim_constants.py`` (fgc's Lie series). Everything their templates place is
+computed here or printed by :class:`SimPrinter`. The run-time modules of
+:mod:`fgc_backends.sim.runtime` are copied beside them byte for byte. User-given names (problem,
+factor types) reach the emitted code only sanitised, in comments; variables, blocks and factors
+are referred to by index. The variables' keys, which the result file names its values by, are
+data: JSON text (hex-coded unless plain) in string literals (:meth:`SimPrinter.json_text`),
+decoded at run time.
 """
 
 from __future__ import annotations
 
-import json
-import re
 from pathlib import Path
 
 import jinja2
@@ -18,19 +20,17 @@ import jinja2
 import fgc
 from fgc.errors import FgcError
 from fgc.frontend.geometry import special
-from fgc.ir.codes import NOISE_CODES, NOISE_KINDS, noise_param_count
+from fgc.ir.codes import NOISE_CODES, NOISE_KINDS, ROBUST_CODES, noise_param_count
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import BlockSpec, Program
 
 from .config import SimConfig, comment
 from .printer import PrintedKernel, SimPrinter
+from .runtime import fgc_sim_runtime
+from .runtime.fgc_sim_optimizer import RESULT_FORMAT
+from .types import VariableType, variable_types
 
-# the result file's format (2: values keyed by variable, {str(key): {"key", "type", "value"}})
-RESULT_FORMAT = "fgc-sim-result 2"
-# variable type → (retraction kind, tangent dim, storage dim); vector spaces are matched below
-RETRACT_KINDS = {"Pose3": ("pose3", 6, 12), "Rot3": ("rot3", 3, 9), "Pose2": ("pose2", 3, 4),
-                 "Rot2": ("rot2", 1, 2)}
-VECTOR_TYPES = re.compile(r"Point2|Point3|ImuBias|Vector\d+")
+__all__ = ["RESULT_FORMAT", "EmitError", "emit"]
 
 
 class EmitError(FgcError):
@@ -44,6 +44,7 @@ def emit(program: Program, out_dir: str | Path, config: SimConfig | None = None)
     Program twice gives byte-identical files.
     """
     config = config or SimConfig()
+    _check_runtime()
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
@@ -56,20 +57,33 @@ def emit(program: Program, out_dir: str | Path, config: SimConfig | None = None)
         path = out / file_name
         path.write_text(text)
         paths.append(path)
+    for source in config.runtime_files():
+        path = out / source.name
+        path.write_bytes(source.read_bytes())
+        paths.append(path)
     return paths
+
+
+def _check_runtime() -> None:
+    """The run-time reads fgc's data files standalone (no fgc import): its format words and
+    codes must be fgc's (fgc.ir.datafile, fgc.ir.codes)."""
+    robust = {None: fgc_sim_runtime.ROBUST_NONE, "huber": fgc_sim_runtime.ROBUST_HUBER,
+              "cauchy": fgc_sim_runtime.ROBUST_CAUCHY}
+    if (fgc_sim_runtime.DATA_MAGIC != MAGIC or robust != ROBUST_CODES
+            or fgc_sim_runtime.NOISE_KINDS != NOISE_KINDS):
+        raise EmitError("the simulator run-time (fgc_sim_runtime.py) disagrees with "
+                        "fgc.ir.datafile / fgc.ir.codes on the data file's magic, noise kinds "
+                        "or robust loss codes")
 
 
 def _context(program: Program, config: SimConfig) -> dict:
     printer = config.printer()
     lit = printer.literal
     sched = program.schedule
+    types = variable_types(program, EmitError)  # checks the type names
     return {
         "fgc_version": fgc.__version__,
-        "data_magic": MAGIC,
-        "result_format": json.dumps(RESULT_FORMAT),
         "structure_fingerprint": program.structure_fingerprint,
-        "pivot_tolerance_float64": repr(float(config.pivot_tolerance_float64)),
-        "pivot_tolerance_float32": repr(float(config.pivot_tolerance_float32)),
         "problem_comment": comment(program.name),
         "series_below": repr(float(special.SERIES_BELOW)),
         "series": [(name, ", ".join(repr(float(c)) for c in reversed(coeffs)))
@@ -85,7 +99,8 @@ def _context(program: Program, config: SimConfig) -> dict:
         "solver": [(k, lit(v)) for k, v in _solver_options(program, config)],
         "variable_dims": lit([v.dim for v in program.variables]),
         "variable_storage": lit([v.storage_dim for v in program.variables]),
-        "retract_groups": lit(_retract_groups(program)),  # checks the type names
+        "types": [_type(vt, printer) for vt in types],
+        "retract_groups": lit([(vt.kind, list(vt.variables)) for vt in types]),
         "variables": [(printer.json_text(v.user_key), lit(v.type_name))
                       for v in program.variables],
         "blocks": _blocks(program, printer),
@@ -124,26 +139,16 @@ def _solver_options(program: Program, config: SimConfig) -> list[tuple[str, obje
             ("absolute_error_tol", float(config.absolute_error_tol)),
             ("diagnose", bool(config.diagnose)),
             ("condition_iterations", int(config.condition_iterations)),
-            ("singular_lm_fails", bool(config.singular_lm_fails))]
+            ("singular_lm_fails", bool(config.singular_lm_fails)),
+            ("pivot_tolerance_float64", float(config.pivot_tolerance_float64)),
+            ("pivot_tolerance_float32", float(config.pivot_tolerance_float32))]
 
 
-def _retract_groups(program: Program) -> list[tuple[str, list[int]]]:
-    """Variable indices per retraction kind and size, in order of first appearance."""
-    groups: dict[tuple[str, int], list[int]] = {}
-    for i, v in enumerate(program.variables):
-        kind = _retract_kind(v.type_name, v.dim, v.storage_dim)
-        groups.setdefault((kind, v.storage_dim), []).append(i)
-    return [(kind, members) for (kind, _), members in groups.items()]
-
-
-def _retract_kind(type_name: str, dim: int, storage: int) -> str:
-    if VECTOR_TYPES.fullmatch(type_name) and dim == storage:
-        return "vector"
-    kind = RETRACT_KINDS.get(type_name)
-    if kind is None or kind[1:] != (dim, storage):
-        raise EmitError(f"the simulator has no retraction for variable type "
-                        f"'{comment(type_name)}' (dim {dim}, storage {storage})")
-    return kind[0]
+def _type(vt: VariableType, printer: SimPrinter) -> dict:
+    """A variable type's printed retraction and local coordinates."""
+    return {"kind": vt.kind, "comment": comment(vt.type_name), "storage_dim": vt.storage_dim,
+            "dim": vt.dim, "retract": printer.kernel(vt.retract, f"retract_{vt.kind}"),
+            "local": printer.kernel(vt.local, f"local_{vt.kind}")}
 
 
 # --------------------------------------------------------------------------------------------

@@ -22,7 +22,8 @@ import numpy
 
 
 def _load(name):
-    """A runtime module emitted next to this file, loaded once per file content."""
+    """A run-time (or the constants) module emitted next to this file, loaded once per file
+    content."""
     path = os.path.join(os.path.dirname(os.path.abspath(__file__)), name + ".py")
     with open(path, "rb") as handle:
         key = f"_fgc_sim_{hashlib.sha256(handle.read()).hexdigest()[:16]}_{name}"
@@ -35,17 +36,18 @@ def _load(name):
 
 
 LIB = types.SimpleNamespace(**{name: _load(f"fgc_sim_{name}")
-                               for name in ("special", "linear", "runtime", "optimizer",
-                                            "incremental", "diagnostics")})
+                               for name in ("constants", "special", "linear", "runtime",
+                                            "optimizer", "incremental", "diagnostics")})
 so3_log = LIB.special.so3_log
-lie_A = LIB.special.lie_A
-lie_A1 = LIB.special.lie_A1
-lie_B = LIB.special.lie_B
-lie_B1 = LIB.special.lie_B1
-lie_C = LIB.special.lie_C
-lie_C1 = LIB.special.lie_C1
-lie_D = LIB.special.lie_D
-lie_D1 = LIB.special.lie_D1
+LIE = LIB.special.lie_functions(LIB.constants.SERIES_BELOW, LIB.constants.SERIES)
+lie_A = LIE["A"]
+lie_A1 = LIE["A1"]
+lie_B = LIE["B"]
+lie_B1 = LIE["B1"]
+lie_C = LIE["C"]
+lie_C1 = LIE["C1"]
+lie_D = LIE["D"]
+lie_D1 = LIE["D1"]
 
 
 # --------------------------------------------------------------------------------------------
@@ -2646,6 +2648,230 @@ def cost_4(x):
 
 
 # --------------------------------------------------------------------------------------------
+# variable types: x ∘ Exp(δ) and Log(a⁻¹ b), printed from fgc.frontend.geometry; x is
+# (inputs × instances), out is (outputs × instances)
+# --------------------------------------------------------------------------------------------
+
+
+def retract_0(x):
+    """Variable type 0 (Pose3): inputs storage (12) then δ (6), outputs the
+    storage of x ∘ Exp(δ); 34 assignments."""
+    a0 = x[0]
+    a1 = x[1]
+    a2 = x[2]
+    a3 = x[3]
+    a4 = x[4]
+    a5 = x[5]
+    a6 = x[6]
+    a7 = x[7]
+    a8 = x[8]
+    a9 = x[9]
+    a10 = x[10]
+    a11 = x[11]
+    a12 = x[12]
+    a13 = x[13]
+    a14 = x[14]
+    a15 = x[15]
+    a16 = x[16]
+    a17 = x[17]
+    t0 = a13**2
+    t1 = a14**2
+    t2 = t0 + t1
+    t3 = -t2
+    t4 = a12**2
+    t5 = t2 + t4
+    t6 = lie_B(t5)
+    t7 = t3*t6 + 1
+    t8 = lie_A(t5)
+    t9 = a14*t8
+    t10 = a13*t6
+    t11 = a12*t10
+    t12 = t11 + t9
+    t13 = a13*t8
+    t14 = a14*t6
+    t15 = a12*t14
+    t16 = -t13 + t15
+    t17 = t11 - t9
+    t18 = -t1 - t4
+    t19 = t18*t6 + 1
+    t20 = a12*t8
+    t21 = a13*t14 + t20
+    t22 = t13 + t15
+    t23 = a13*a14*t6 - t20
+    t24 = -t0 - t4
+    t25 = t24*t6 + 1
+    t26 = lie_C(t5)
+    t27 = a12*t26
+    t28 = a13*t27
+    t29 = a14*t27
+    t30 = a15*(t26*t3 + 1) + a16*(-t14 + t28) + a17*(t10 + t29)
+    t31 = a12*t6
+    t32 = a15*(t14 + t28) + a16*(t18*t26 + 1) + a17*(a13*a14*t26 - t31)
+    t33 = a15*(-t10 + t29) + a16*(a13*a14*t26 + t31) + a17*(t24*t26 + 1)
+    out = numpy.zeros((12, x.shape[1]), dtype=x.dtype)
+    out[0] = a0*t7 + a1*t12 + a2*t16
+    out[1] = a0*t17 + a1*t19 + a2*t21
+    out[2] = a0*t22 + a1*t23 + a2*t25
+    out[3] = a3*t7 + a4*t12 + a5*t16
+    out[4] = a3*t17 + a4*t19 + a5*t21
+    out[5] = a3*t22 + a4*t23 + a5*t25
+    out[6] = a6*t7 + a7*t12 + a8*t16
+    out[7] = a6*t17 + a7*t19 + a8*t21
+    out[8] = a6*t22 + a7*t23 + a8*t25
+    out[9] = a0*t30 + a1*t32 + a2*t33 + a9
+    out[10] = a10 + a3*t30 + a4*t32 + a5*t33
+    out[11] = a11 + a6*t30 + a7*t32 + a8*t33
+    return out
+
+
+def local_0(x):
+    """Variable type 0 (Pose3): inputs the storage of a then of b (12 each), outputs
+    Log(a⁻¹ b) (6); 28 assignments."""
+    a0 = x[0]
+    a1 = x[1]
+    a2 = x[2]
+    a3 = x[3]
+    a4 = x[4]
+    a5 = x[5]
+    a6 = x[6]
+    a7 = x[7]
+    a8 = x[8]
+    a9 = x[9]
+    a10 = x[10]
+    a11 = x[11]
+    a12 = x[12]
+    a13 = x[13]
+    a14 = x[14]
+    a15 = x[15]
+    a16 = x[16]
+    a17 = x[17]
+    a18 = x[18]
+    a19 = x[19]
+    a20 = x[20]
+    a21 = x[21]
+    a22 = x[22]
+    a23 = x[23]
+    t0 = a0*a12 + a15*a3 + a18*a6
+    t1 = a0*a13 + a16*a3 + a19*a6
+    t2 = a0*a14 + a17*a3 + a20*a6
+    t3 = a1*a12 + a15*a4 + a18*a7
+    t4 = a1*a13 + a16*a4 + a19*a7
+    t5 = a1*a14 + a17*a4 + a20*a7
+    t6 = a12*a2 + a15*a5 + a18*a8
+    t7 = a13*a2 + a16*a5 + a19*a8
+    t8 = a14*a2 + a17*a5 + a20*a8
+    w0_0, w0_1, w0_2 = so3_log(t0, t1, t2, t3, t4, t5, t6, t7, t8)
+    t9 = w0_0
+    t10 = w0_1
+    t11 = w0_2
+    t12 = t10**2
+    t13 = t11**2
+    t14 = t12 + t13
+    t15 = t9**2
+    t16 = lie_D(t14 + t15)
+    t17 = a0*a21 - a0*a9 - a10*a3 - a11*a6 + a22*a3 + a23*a6
+    t18 = (0.5)*t11
+    t19 = t16*t9
+    t20 = t10*t19
+    t21 = a1*a21 - a1*a9 - a10*a4 - a11*a7 + a22*a4 + a23*a7
+    t22 = (0.5)*t10
+    t23 = t11*t19
+    t24 = -a10*a5 - a11*a8 + a2*a21 - a2*a9 + a22*a5 + a23*a8
+    t25 = (0.5)*t9
+    t26 = t10*t11*t16
+    out = numpy.zeros((6, x.shape[1]), dtype=x.dtype)
+    out[0] = t9
+    out[1] = t10
+    out[2] = t11
+    out[3] = t17*(-t14*t16 + 1) + t21*(t18 + t20) + t24*(-t22 + t23)
+    out[4] = t17*(-t18 + t20) + t21*(t16*(-t13 - t15) + 1) + t24*(t25 + t26)
+    out[5] = t17*(t22 + t23) + t21*(-t25 + t26) + t24*(t16*(-t12 - t15) + 1)
+    return out
+
+
+def retract_1(x):
+    """Variable type 1 (Vector3): inputs storage (3) then δ (3), outputs the
+    storage of x ∘ Exp(δ); 0 assignments."""
+    a0 = x[0]
+    a1 = x[1]
+    a2 = x[2]
+    a3 = x[3]
+    a4 = x[4]
+    a5 = x[5]
+    out = numpy.zeros((3, x.shape[1]), dtype=x.dtype)
+    out[0] = a0 + a3
+    out[1] = a1 + a4
+    out[2] = a2 + a5
+    return out
+
+
+def local_1(x):
+    """Variable type 1 (Vector3): inputs the storage of a then of b (3 each), outputs
+    Log(a⁻¹ b) (3); 0 assignments."""
+    a0 = x[0]
+    a1 = x[1]
+    a2 = x[2]
+    a3 = x[3]
+    a4 = x[4]
+    a5 = x[5]
+    out = numpy.zeros((3, x.shape[1]), dtype=x.dtype)
+    out[0] = -a0 + a3
+    out[1] = -a1 + a4
+    out[2] = -a2 + a5
+    return out
+
+
+def retract_2(x):
+    """Variable type 2 (ImuBias): inputs storage (6) then δ (6), outputs the
+    storage of x ∘ Exp(δ); 0 assignments."""
+    a0 = x[0]
+    a1 = x[1]
+    a2 = x[2]
+    a3 = x[3]
+    a4 = x[4]
+    a5 = x[5]
+    a6 = x[6]
+    a7 = x[7]
+    a8 = x[8]
+    a9 = x[9]
+    a10 = x[10]
+    a11 = x[11]
+    out = numpy.zeros((6, x.shape[1]), dtype=x.dtype)
+    out[0] = a0 + a6
+    out[1] = a1 + a7
+    out[2] = a2 + a8
+    out[3] = a3 + a9
+    out[4] = a10 + a4
+    out[5] = a11 + a5
+    return out
+
+
+def local_2(x):
+    """Variable type 2 (ImuBias): inputs the storage of a then of b (6 each), outputs
+    Log(a⁻¹ b) (6); 0 assignments."""
+    a0 = x[0]
+    a1 = x[1]
+    a2 = x[2]
+    a3 = x[3]
+    a4 = x[4]
+    a5 = x[5]
+    a6 = x[6]
+    a7 = x[7]
+    a8 = x[8]
+    a9 = x[9]
+    a10 = x[10]
+    a11 = x[11]
+    out = numpy.zeros((6, x.shape[1]), dtype=x.dtype)
+    out[0] = -a0 + a6
+    out[1] = -a1 + a7
+    out[2] = -a2 + a8
+    out[3] = -a3 + a9
+    out[4] = a10 - a4
+    out[5] = a11 - a5
+    return out
+
+
+# --------------------------------------------------------------------------------------------
 # structure tables (variables by index, in the Program's order)
 # --------------------------------------------------------------------------------------------
 
@@ -2727,6 +2953,8 @@ PROBLEM = {
         "diagnose": True,
         "condition_iterations": 12,
         "singular_lm_fails": False,
+        "pivot_tolerance_float64": 1e-10,
+        "pivot_tolerance_float32": 1e-05,
     },
     "num_factors": 18,
     "variable_dims": (6, 3, 6, 6, 3, 6, 6, 3, 6, 6, 3, 6, 6, 3, 6, 6, 3, 6, 6, 3, 6, 6, 3, 6),
@@ -2759,7 +2987,13 @@ PROBLEM = {
         ('"v7"', 'Vector3'),
         ('"b7"', 'ImuBias'),
     ),
-    "retract_groups": (('pose3', (0, 3, 6, 9, 12, 15, 18, 21)), ('vector', (1, 4, 7, 10, 13, 16, 19, 22)), ('vector', (2, 5, 8, 11, 14, 17, 20, 23))),
+    # per variable type: (retraction, local coordinates); variables by type
+    "types": (
+        (retract_0, local_0),  # Pose3
+        (retract_1, local_1),  # Vector3
+        (retract_2, local_2),  # ImuBias
+    ),
+    "retract_groups": ((0, (0, 3, 6, 9, 12, 15, 18, 21)), (1, (1, 4, 7, 10, 13, 16, 19, 22)), (2, (2, 5, 8, 11, 14, 17, 20, 23))),
     "blocks": BLOCKS,
     # (frontals, separator, entering factors as (block type, instance, member), children, parent)
     "steps": (

@@ -1,5 +1,4 @@
-# generated from template fgc_sim_incremental.py.jinja by fgc — do not edit
-# fgc 0.1.0
+# fgc simulator run-time (fgc_sim_incremental.py): copied verbatim into every emitted simulator
 """Incremental smoothing over a chain (paper A, Algorithm 3.2), as the compiled plan schedules it.
 
 Keyframe clusters arrive one by one. On arrival of cluster j the plan names a window of clusters
@@ -8,8 +7,8 @@ and optimised (GN/LM, clusters eliminated oldest to newest so the root is the ne
 the older part of the Bayes net is kept: its conditionals and the factor τ it passes into the
 window, linearised where they were last eliminated. τ enters the window as a linear factor in the
 local coordinates Log(x̄⁻¹x) at its linearisation point x̄: rows [A·J | b − A·Log(x̄⁻¹x)], J the
-Jacobian of that Log (GTSAM's LinearContainerFactor keeps A, a different cost away from x̄). After the
-window converges it is eliminated once more without damping (QR) to store its conditionals and
+Jacobian of that Log (GTSAM's LinearContainerFactor keeps A, a different cost away from x̄). After
+the window converges it is eliminated once more without damping (QR) to store its conditionals and
 new factors, and back-substitution walks the kept conditionals from the window down to cluster 0,
 so every variable gets an estimate: x_c = x̄_c ⊕ R⁻¹ (d − S·Log(x̄_c+1⁻¹ x_c+1)). The newest kept
 conditional (cluster first − 1) is not re-eliminated, but its parent x_first moved with the
@@ -50,16 +49,18 @@ class Window:
                                                                       variables])[:-1]])
         self.n = sum(dims[v] for v in variables)
         self.sel = [numpy.flatnonzero((e >= first) & (m <= last))
-                    for e, m in zip(chain.entry, chain.reach)]
-        sizes = [len(s) * b.m * (b.d + 1) for s, b in zip(self.sel, problem.blocks)]
+                    for e, m in zip(chain.entry, chain.reach, strict=True)]
+        sizes = [len(s) * b.m * (b.d + 1) for s, b in zip(self.sel, problem.blocks, strict=True)]
         self.base = numpy.concatenate([[0], numpy.cumsum(sizes)]).astype(numpy.intp)
         self.tmap = numpy.full(problem.n, -1, dtype=numpy.intp)  # global → window column
         for v in variables:
             start = problem.t_off[v]
             self.tmap[start:start + dims[v]] = self.offset[v] + numpy.arange(dims[v])
-        self.columns = [self.tmap[b.columns[s]] for b, s in zip(problem.blocks, self.sel)]
+        self.columns = [self.tmap[b.columns[s]]
+                        for b, s in zip(problem.blocks, self.sel, strict=True)]
         self.plan = self.lib.linear.make_plan(self._steps(), self.offset, dims, self._rows_of,
-                                              int(self.base[-1]) + self._tau_size())
+                                              int(self.base[-1]) + self._tau_size(),
+                                              problem.plan.tolerance)
         self.groups = _groups(problem, variables, self.offset)
 
     def _tau_size(self):
@@ -94,14 +95,16 @@ class Window:
     # -- the optimiser's interface -------------------------------------------------------
     def linearize(self, x):
         with numpy.errstate(all="ignore"):
-            parts = [b.linearize(x, s) for b, s in zip(self.problem.blocks, self.sel)]
+            parts = [b.linearize(x, s) for b, s in zip(self.problem.blocks, self.sel, strict=True)]
         if self.tau is not None:
             parts.append(self._tau_rows(x))
         g = numpy.zeros(self.n)
-        for ab, cols in zip(parts, self.columns):
+        blocks = parts[:len(self.columns)]  # τ's rows, last in parts, are added below
+        for ab, cols in zip(blocks, self.columns, strict=True):
             contrib = numpy.einsum("nmd,nm->nd", ab[..., :-1], ab[..., -1])
             g += numpy.bincount(cols.reshape(-1), contrib.reshape(-1), minlength=self.n)
-        pairs = [(ab, b.columns[s]) for ab, b, s in zip(parts, self.problem.blocks, self.sel)]
+        pairs = [(ab, b.columns[s])
+                 for ab, b, s in zip(blocks, self.problem.blocks, self.sel, strict=True)]
         if self.tau is not None:
             g[self._tau_columns()] += parts[-1][:, :-1].T @ parts[-1][:, -1]
             pairs.append((parts[-1][None], self.chain.tangent(self.first)[None]))
@@ -110,7 +113,7 @@ class Window:
 
     def cost(self, x):
         with numpy.errstate(all="ignore"):
-            total = sum((b.cost(x, s) for b, s in zip(self.problem.blocks, self.sel)),
+            total = sum((b.cost(x, s) for b, s in zip(self.problem.blocks, self.sel, strict=True)),
                         self.dtype.type(0))
             if self.tau is not None:
                 r = self._tau_rows(x)
@@ -126,11 +129,7 @@ class Window:
         return delta.astype(self.dtype, copy=False)
 
     def retract(self, x, delta):
-        out = x.copy()
-        with numpy.errstate(all="ignore"):
-            for fn, sidx, tidx in self.groups:
-                out[sidx] = fn(x[sidx], delta[tidx])
-        return out
+        return self.lib.optimizer.retract_groups(x, delta, self.groups)
 
     # -- τ as a linear factor at its linearisation point ---------------------------------
     def _tau_rows(self, x):
@@ -151,7 +150,7 @@ def _groups(problem, variables, offset):
     for kind, vs in spec["retract_groups"]:
         vs = [v for v in vs if v in chosen]
         if vs:
-            groups.append((problem.lib.special.RETRACT[kind],
+            groups.append((problem.retractions[kind],
                            numpy.array([problem.x_off[v] + numpy.arange(
                                spec["variable_storage"][v]) for v in vs]),
                            numpy.array([offset[v] + numpy.arange(spec["variable_dims"][v])
@@ -203,7 +202,7 @@ class Chain:
 
     def local(self, lin, x, c):
         """Log(x̄⁻¹ x) of cluster c's variables: ``lin`` is the cluster's storage x̄."""
-        local = self.problem.lib.special.LOCAL
+        local = self.problem.local_coordinates
         return numpy.concatenate([local[kind](lin[None, sp], x[None, xs])[0]
                                   for kind, sp, _, xs in self._parts(c)])
 
@@ -211,21 +210,21 @@ class Chain:
         """Log(x̄⁻¹ x) of cluster c and its derivative along x ⊕ δ (block diagonal), by central
         differences of the run-time's own Log and Exp: τ's rows must be the derivative of
         exactly the cost the window evaluates, or LM stalls on the mismatch."""
-        special, dims = self.problem.lib.special, self.problem.spec["variable_dims"]
+        problem, dims = self.problem, self.problem.spec["variable_dims"]
         h = numpy.sqrt(numpy.finfo(x.dtype).eps) * 10
         n = sum(dims[v] for v in self.clusters[c])
         jac = numpy.zeros((n, n), dtype=x.dtype)
         for kind, sp, tp, xs in self._parts(c):
             d = tp.stop - tp.start
             steps = numpy.concatenate([numpy.eye(d), -numpy.eye(d)]).astype(x.dtype) * h
-            moved = special.RETRACT[kind](numpy.repeat(x[None, xs], 2 * d, 0), steps)
-            logs = special.LOCAL[kind](numpy.repeat(lin[None, sp], 2 * d, 0), moved)
+            moved = problem.retractions[kind](numpy.repeat(x[None, xs], 2 * d, 0), steps)
+            logs = problem.local_coordinates[kind](numpy.repeat(lin[None, sp], 2 * d, 0), moved)
             jac[tp, tp] = ((logs[:d] - logs[d:]) / (2 * h)).T
         return self.local(lin, x, c), jac
 
     def retract(self, lin, delta, c):
         """x̄ ⊕ δ for cluster c's variables (storage ``lin``, tangent ``delta``)."""
-        retract = self.problem.lib.special.RETRACT
+        retract = self.problem.retractions
         return numpy.concatenate([retract[kind](lin[None, sp], delta[None, tp])[0]
                                   for kind, sp, tp, _ in self._parts(c)])
 
@@ -241,7 +240,7 @@ def solve_incremental(problem, opts, optimize, progress=None):
     chain, history, status, reason = Chain(problem), [], "converged", ""
     for keyframe, batch, clusters, _ in problem.spec["incremental"]:
         t0 = time.perf_counter()
-        new = [e[r == keyframe] for e, r in zip(chain.entry, chain.reach)]
+        new = [e[r == keyframe] for e, r in zip(chain.entry, chain.reach, strict=True)]
         first = min([clusters[0]] + [int(n.min()) for n in new if len(n)])
         tau = chain.taus.get(first) if first > 0 else None
         window = Window(problem, chain, first, keyframe, tau)
@@ -274,7 +273,7 @@ def solve_fixed_lag(problem, opts, optimize, window, progress=None):
     for keyframe in range(len(chain.clusters)):
         t0 = time.perf_counter()
         first = max(0, keyframe - window)
-        for entry, reach in zip(chain.entry, chain.reach):
+        for entry, reach in zip(chain.entry, chain.reach, strict=True):
             early = entry[reach == keyframe]
             if len(early) and int(early.min()) < first:
                 raise ValueError(f"keyframe {keyframe}: a factor reaches back to keyframe "

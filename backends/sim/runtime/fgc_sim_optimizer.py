@@ -1,5 +1,4 @@
-# generated from template fgc_sim_optimizer.py.jinja by fgc — do not edit
-# fgc {{ fgc_version }}
+# fgc simulator run-time (fgc_sim_optimizer.py): copied verbatim into every emitted simulator
 """The fgc simulator's optimiser: Gauss-Newton or Levenberg-Marquardt as the accelerator runs it.
 
 Levenberg-Marquardt follows paper B: linearise (error + Jacobian mode of the factor blocks), solve
@@ -24,7 +23,8 @@ import numpy
 
 RESOLUTION_LIMIT = 1.0  # ρ (see resolution): rounding the state moves a residual by ≥ 1σ
 MU_MIN = 1e-30  # μ never reaches 0 in LM: its damping rows keep every step well posed
-RESULT_FORMAT = {{ result_format }}
+# the result file's format (2: values keyed by variable, {str(key): {"key", "type", "value"}})
+RESULT_FORMAT = "fgc-sim-result 2"
 
 
 def _offsets(sizes):
@@ -53,8 +53,12 @@ class Problem:
         self.base = _offsets([b.n * b.m * (b.d + 1) for b in self.blocks])
         steps = [s[:4] for s in spec["steps"]]
         self.plan = lib.linear.make_plan(steps, self.t_off, dims, self._rows_of,
-                                         int(self.base[-1]))
-        self.groups = [(lib.special.RETRACT[kind],
+                                         int(self.base[-1]),
+                                         lib.linear.pivot_tolerances(spec["solver"]))
+        # per variable type (index into spec["types"]): x ∘ Exp(δ) and Log(a⁻¹ b) over instances
+        self.retractions = [lib.special.over_instances(r) for r, _ in spec["types"]]
+        self.local_coordinates = [lib.special.over_instances(lc) for _, lc in spec["types"]]
+        self.groups = [(self.retractions[kind],
                         numpy.array([x_off[v] + numpy.arange(storage[v]) for v in vs]),
                         numpy.array([self.t_off[v] + numpy.arange(dims[v]) for v in vs]))
                        for kind, vs in spec["retract_groups"]]
@@ -81,11 +85,12 @@ class Problem:
         with numpy.errstate(all="ignore"):
             abs_ = [b.linearize(x) for b in self.blocks]
         g = numpy.zeros(self.n)
-        for b, ab in zip(self.blocks, abs_):
+        for b, ab in zip(self.blocks, abs_, strict=True):
             contrib = numpy.einsum("nmd,nm->nd", ab[..., :-1], ab[..., -1])
             g += numpy.bincount(b.columns.reshape(-1), contrib.reshape(-1), minlength=self.n)
         # bincount accumulates in float64; g only steers (stopping rule, predicted decrease)
-        noise = cost_noise(self, x, [(ab, b.columns) for b, ab in zip(self.blocks, abs_)])
+        noise = cost_noise(self, x, [(ab, b.columns)
+                                     for b, ab in zip(self.blocks, abs_, strict=True)])
         return abs_, g.astype(self.dtype), noise
 
     def solve(self, abs_, mu):
@@ -100,12 +105,18 @@ class Problem:
         return delta.astype(self.dtype, copy=False)
 
     def retract(self, x, delta):
-        """x ⊕ δ: every variable retracted with its type's Expmap."""
-        out = x.copy()
-        with numpy.errstate(all="ignore"):
-            for fn, sidx, tidx in self.groups:
-                out[sidx] = fn(x[sidx], delta[tidx])
-        return out
+        """x ⊕ δ: every variable retracted with its type's retraction."""
+        return retract_groups(x, delta, self.groups)
+
+
+def retract_groups(x, delta, groups):
+    """x ⊕ δ over ``groups``: (retraction over instances, storage indices, tangent indices) per
+    variable type, the indices one row per variable."""
+    out = x.copy()
+    with numpy.errstate(all="ignore"):
+        for fn, sidx, tidx in groups:
+            out[sidx] = fn(x[sidx], delta[tidx])
+    return out
 
 
 def les_dtype(dtype, linear_precision):
@@ -155,7 +166,7 @@ def resolution(problem, x, parts):
 def _check_variables(variables, storage, error):
     if len(variables) != len(storage):
         raise error(f"the data file has {len(variables)} variables, the problem {len(storage)}")
-    for number, ((values, line), size) in enumerate(zip(variables, storage)):
+    for number, ((values, line), size) in enumerate(zip(variables, storage, strict=True)):
         if len(values) != size:
             raise error(f"line {line}: variable {number} needs {size} numbers, found "
                         f"{len(values)}", line, variable=number)
@@ -177,7 +188,7 @@ def _rows(spec, number, factors, lib):
     """The factor rows of block type ``number``'s instances as one (n × length) array."""
     length = sum(n_meas + n_params + 2 for _, _, _, n_params, n_meas, _ in spec["members"])
     rows = []
-    for i, index in enumerate(spec["factor_ids"]):
+    for index in spec["factor_ids"]:
         values, line = factors[index]
         if len(values) != length:
             raise lib.runtime.SimDataError(
@@ -290,8 +301,8 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
     resolved = None  # float32 (any precision below float64): can it place the state at all?
     if problem.dtype != numpy.float64 and reason not in ("singular", "non_finite"):
         abs_, _, _ = problem.linearize(x)
-        rho, variable = resolution(problem, x, [(ab, b.columns)
-                                                for b, ab in zip(problem.blocks, abs_)])
+        parts = [(ab, b.columns) for b, ab in zip(problem.blocks, abs_, strict=True)]
+        rho, variable = resolution(problem, x, parts)
         resolved = {"rho": rho, "variable": variable}
         if rho >= RESOLUTION_LIMIT and status == "converged":
             status, reason = "failed", "precision_limit"
@@ -314,7 +325,7 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
         "singular": singular, "condition": (diagnosis or {}).get("condition"),
         "resolution": resolved,
         "values": keyed_values(keys, [x[a:b].astype(float).tolist()
-                                      for a, b in zip(offsets[:-1], offsets[1:])]),
+                                      for a, b in zip(offsets[:-1], offsets[1:], strict=True)]),
     }
     if result_path is not None:
         with open(result_path, "w") as handle:

@@ -1,5 +1,4 @@
-# generated from template fgc_sim_linear.py.jinja by fgc — do not edit
-# fgc {{ fgc_version }}
+# fgc simulator run-time (fgc_sim_linear.py): copied verbatim into every emitted simulator
 """The linear solve of the fgc simulator: elimination along the compiled schedule.
 
 Each elimination step stacks the whitened rows [A | b] of the factors entering it, the new factors
@@ -16,8 +15,9 @@ columns, over the columns (frontals, separator, right-hand side). Then
 Back-substitution walks the Bayes net root first: δ_f = R_f⁻¹ (d − S δ_sep).
 
 Rank deficiency is caught at each step: a frontal column whose pivot (|R_jj| in QR, L_jj in
-Cholesky) is at most ``PIVOT_TOLERANCE`` times the norm of that column in the step's stacked
-matrix (damping rows included) lies, to working precision, in the span of the columns before it.
+Cholesky) is at most the pivot tolerance (:func:`pivot_tolerances`) times the norm of that column
+in the step's stacked matrix (damping rows included) lies, to working precision, in the span of
+the columns before it.
 An exactly dependent column keeps only rounding error, about √rows·eps of its norm (≈1e-15 in
 float64, ≈1e-6 in float32), so the tolerances sit well above that and well below the smallest
 relative pivots of well-posed problems (≈1e-4 on the shipped IMU window).
@@ -30,9 +30,12 @@ instead, which compute in float32 as the accelerator does.
 
 import numpy
 
-# relative pivot tolerance by working precision (SimConfig.pivot_tolerance_float64/_float32)
-PIVOT_TOLERANCE = {numpy.dtype(numpy.float64): {{ pivot_tolerance_float64 }},
-                   numpy.dtype(numpy.float32): {{ pivot_tolerance_float32 }}}
+
+def pivot_tolerances(solver):
+    """The relative pivot tolerance by working precision, from the problem's solver options
+    (SimConfig.pivot_tolerance_float64 / _float32)."""
+    return {numpy.dtype(numpy.float64): solver["pivot_tolerance_float64"],
+            numpy.dtype(numpy.float32): solver["pivot_tolerance_float32"]}
 
 
 class SingularError(Exception):
@@ -73,10 +76,11 @@ class StepPlan:
 
 class Plan:
     """All steps' tables and the layout of the work buffer: the factors' [A | b] entries (the
-    first ``size`` words), a zero word, the √μ word, then every step's new-factor region."""
+    first ``size`` words), a zero word, the √μ word, then every step's new-factor region;
+    ``tolerance``: the relative pivot tolerance by dtype (:func:`pivot_tolerances`)."""
 
-    def __init__(self, steps, size):
-        self.steps, self.size = steps, size
+    def __init__(self, steps, size, tolerance):
+        self.steps, self.size, self.tolerance = steps, size, tolerance
         self.zero, self.mu = size, size + 1
         self.length = max([st.region.stop for st in steps] + [size + 2])
 
@@ -87,8 +91,8 @@ class Plan:
         return buf
 
 
-def make_plan(steps, var_offset, var_dim, rows_of, size):
-    """Index tables of all steps.
+def make_plan(steps, var_offset, var_dim, rows_of, size, tolerance):
+    """Index tables of all steps (``tolerance``: see :class:`Plan`).
 
     ``steps``: (frontals, separator, entering, children) per step (variable indices; entering
     factors as keys of ``rows_of``); ``rows_of(entry)`` gives that factor's row starts in the
@@ -117,7 +121,7 @@ def make_plan(steps, var_offset, var_dim, rows_of, size):
         next_region = region.stop
         plan.append(StepPlan(index, f, width - f, cols[:f], cols[f:], numpy.concatenate(parts),
                              len(parts[0]), region, kids, flats))
-    return Plan(plan, size)
+    return Plan(plan, size, tolerance)
 
 
 def _gather(index, entering, local, width, var_dim, rows_of, zero):
@@ -179,7 +183,7 @@ def eliminate_qr(plan, factors, mu):
 def _eliminate_qr(plan, buf, mu):
     buf[plan.mu] = numpy.sqrt(buf.dtype.type(mu))
     conds = [None] * len(plan.steps)
-    tol = PIVOT_TOLERANCE[buf.dtype]
+    tol = plan.tolerance[buf.dtype]
     for st in plan.steps:
         m = buf[st.gather]
         r = qr_r(m)
@@ -198,12 +202,12 @@ def _eliminate_qr(plan, buf, mu):
 def _eliminate_cholesky(plan, buf, mu):
     dt = buf.dtype.type
     conds, update = [None] * len(plan.steps), [None] * len(plan.steps)
-    tol = PIVOT_TOLERANCE[buf.dtype]
+    tol = plan.tolerance[buf.dtype]
     for st in plan.steps:
         a = buf[st.gather[:st.rows]]
         h = a.T @ a
         flat = h.reshape(-1)
-        for (c, _), idx in zip(st.children, st.child_flat):
+        for (c, _), idx in zip(st.children, st.child_flat, strict=True):
             flat[idx] += update[c]
             update[c] = None
         if mu > 0:

@@ -1,5 +1,4 @@
-# generated from template fgc_sim_diagnostics.py.jinja by fgc — do not edit
-# fgc 0.1.0
+# fgc simulator run-time (fgc_sim_diagnostics.py): copied verbatim into every emitted simulator
 """Diagnosis of the linear system at a solution, in float64: rank and condition number.
 
 After a batch solve the simulator linearises at the solution and eliminates the whitened rows
@@ -67,7 +66,7 @@ def _equilibrate(ab):
 def condition(plan, conds, n, iterations):
     """σ_max/σ_min of R·D⁻¹ (None if a column of R is zero)."""
     scale = numpy.zeros(n)
-    for st, (r, s, _) in zip(plan.steps, conds):
+    for st, (r, s, _) in zip(plan.steps, conds, strict=True):
         scale[st.front] += numpy.sum(r * r, 0)
         scale[st.sep] += numpy.sum(s * s, 0)
     scale = numpy.sqrt(scale)
@@ -96,14 +95,14 @@ def _power(op, v, iterations):
 
 def _r_mul(plan, conds, u, n):
     out = numpy.zeros(n)
-    for st, (r, s, _) in zip(plan.steps, conds):
+    for st, (r, s, _) in zip(plan.steps, conds, strict=True):
         out[st.front] = r @ u[st.front] + s @ u[st.sep]
     return out
 
 
 def _rt_mul(plan, conds, w, n):
     out = numpy.zeros(n)
-    for st, (r, s, _) in zip(plan.steps, conds):
+    for st, (r, s, _) in zip(plan.steps, conds, strict=True):
         out[st.front] += r.T @ w[st.front]
         out[st.sep] += s.T @ w[st.front]
     return out

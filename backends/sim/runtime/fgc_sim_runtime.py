@@ -1,16 +1,19 @@
-# generated from template fgc_sim_runtime.py.jinja by fgc — do not edit
-# fgc 0.1.0
-"""The fgc simulator's run-time: data file, problem set-up, linearisation, cost, retraction.
+# fgc simulator run-time (fgc_sim_runtime.py): copied verbatim into every emitted simulator
+"""The fgc simulator's run-time: data file, problem set-up, linearisation and cost.
 
 A problem module (``<name>_sim.py``) holds the structure: variable and block tables, the block
-kernels and the elimination schedule. This module reads the data (measurements, noise, initial
-values) and evaluates all instances of a block type at once, in the chosen float dtype.
+kernels, each variable type's retraction and local coordinates, and the elimination schedule.
+This module reads the data (measurements, noise, initial values) and evaluates all instances of
+a block type at once, in the chosen float dtype.
+
+The data file's format words are fgc's (``fgc.ir.datafile.MAGIC`` and ``ROBUST_CODES``); the
+emitter refuses to emit a simulator whose run-time disagrees with them.
 """
 
 import numpy
 
 DATA_MAGIC = "FGCDATA 2"
-NOISE_KINDS = ("isotropic", "diagonal", "full")
+NOISE_KINDS = ("isotropic", "diagonal", "full")  # the problem module's noise kind codes
 ROBUST_NONE, ROBUST_HUBER, ROBUST_CAUCHY = 0, 1, 2
 ALL = slice(None)  # every instance of a block
 
@@ -139,7 +142,8 @@ class Block:
         out = self.spec["jacobian"](numpy.ascontiguousarray(inputs.T))
         ab = numpy.ascontiguousarray(out[self.perm].T).reshape(len(inputs), self.m, self.d + 1)
         ab[..., -1] *= -1
-        for (first, last, *_), noise, robust in zip(self.spec["members"], self.noise, self.robust):
+        members = zip(self.spec["members"], self.noise, self.robust, strict=True)
+        for (first, last, *_), noise, robust in members:
             rows = ab[:, first:last]
             rows[...] = noise(rows, sel)
             if robust is not None:
@@ -153,7 +157,7 @@ class Block:
         inputs = numpy.concatenate([x[self.storage[sel]], self.meas[sel], self.params[sel]], 1)
         costs = self.spec["cost"](numpy.ascontiguousarray(inputs.T))
         total = costs.dtype.type(0)
-        for half, robust in zip(costs, self.robust):
+        for half, robust in zip(costs, self.robust, strict=True):
             if robust is not None:
                 half = _robust_loss((robust[0][sel], robust[1][sel]), half)
             total += numpy.sum(half)
@@ -212,4 +216,5 @@ def _robust_loss(robust, half):
     e = numpy.sqrt(2 * half)
     huber = numpy.where(e <= k, half, k * e - 0.5 * k * k)
     cauchy = 0.5 * k * k * numpy.log1p(e * e / (k * k))
-    return numpy.where(code == ROBUST_HUBER, huber, numpy.where(code == ROBUST_CAUCHY, cauchy, half))
+    return numpy.where(code == ROBUST_HUBER, huber,
+                       numpy.where(code == ROBUST_CAUCHY, cauchy, half))
