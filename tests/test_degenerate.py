@@ -220,7 +220,7 @@ def test_lm_out_of_damping_reports_the_last_cost():
     """atan from x = 10: the Gauss-Newton step overshoots to x ≈ −138, so LM must damp; with a
     damping bound of 1e-2 it gives up at the initial point."""
     g = _one(angle_reading, 10.0, 0.0)
-    result = solve(g, config=SimConfig(lambda_upper_bound=1e-2))
+    result = solve(g, lambda_upper_bound=1e-2)
     assert (result.status, result.reason) == ("failed", "lambda_limit")
     assert result.final_error == pytest.approx(g.error(), rel=1e-12)
     assert result.values["x"][0] == 10.0 and "last accepted cost" in result.message

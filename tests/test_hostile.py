@@ -319,8 +319,9 @@ def test_hostile_names_never_reach_the_hls_project_raw(hostile_program, tmp_path
 
 def test_non_finite_solver_options_are_emitted_as_values(small_problem, tmp_path):
     """``inf`` has no Python literal: the simulator gets ``float("inf")``, not a NameError."""
-    from fgc_backends.sim import SimConfig
+    from dataclasses import replace
 
     _, program, data = small_problem
-    result = sim.run(program, data, tmp_path, config=SimConfig(lambda_upper_bound=float("inf")))
+    program = replace(program, solver=replace(program.solver, lambda_upper_bound=float("inf")))
+    result = sim.run(program, data, tmp_path)
     assert result.converged

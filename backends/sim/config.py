@@ -19,9 +19,8 @@ CONSTANTS_TEMPLATE = "fgc_sim_constants.py.jinja"
 class SimConfig:
     """How the simulator is emitted and run.
 
-    - ``lambda_upper_bound``: LM gives up (status "failed", reason "lambda_limit") when μ would
-      exceed this after rejected steps.
-    - ``absolute_error_tol``: stop (converged) once the cost is at most this.
+    LM's limits (``lambda_upper_bound``, ``absolute_error_tol``, ``mu_min``) are the Program's
+    (:class:`fgc.ir.program.SolverConfig`), as for every backend.
     - ``name``: file-name stem of the problem module (``<name>_sim.py``); default: the Program's
       name, sanitised to an identifier.
     - ``pivot_tolerance_float64`` / ``pivot_tolerance_float32``: an elimination pivot at most
@@ -38,8 +37,6 @@ class SimConfig:
       the variable in ``SimResult.singular_variable`` and warns (``RankDeficientWarning``).
     """
 
-    lambda_upper_bound: float = 1e10
-    absolute_error_tol: float = 1e-14
     name: str | None = None
     pivot_tolerance_float64: float = 1e-10
     pivot_tolerance_float32: float = 1e-5

@@ -348,7 +348,7 @@ def _explain_outcome(program: Program, raw: dict, config: SimConfig
     if raw["status"] == "failed" and raw["reason"] in _FAILURES:
         messages.append(_FAILURES[raw["reason"]].format(
             iterations=raw["iterations"], cost=raw["final_error"],
-            bound=config.lambda_upper_bound))
+            bound=program.solver.lambda_upper_bound))
     info = raw.get("singular")
     if info is not None and 0 <= info["variable"] < len(program.variables):
         spec = program.variables[info["variable"]]

@@ -15,6 +15,7 @@ from fgc.compiler.derive import derive
 from fgc.errors import FgcError
 from fgc.frontend.dsl import Graph
 from fgc.frontend.geometry import LieGroup
+from fgc.ir.program import SolverConfig
 
 MAX_DENSE_DIM = 20000
 
@@ -23,13 +24,13 @@ MAX_DENSE_DIM = 20000
 class SolverOptions:
     """Options of :func:`optimize`; tolerances are GTSAM's names and meanings."""
 
-    method: str = "lm"  # "lm" or "gn"
-    max_iterations: int = 100
-    relative_error_tol: float = 1e-12
-    absolute_error_tol: float = 1e-14
-    lambda_initial: float = 1e-5
-    lambda_factor: float = 10.0
-    lambda_upper_bound: float = 1e10
+    method: str = SolverConfig.method  # "lm" or "gn"; defaults: the backends' (SolverConfig)
+    max_iterations: int = SolverConfig.max_iterations
+    relative_error_tol: float = SolverConfig.relative_error_tol
+    absolute_error_tol: float = SolverConfig.absolute_error_tol
+    lambda_initial: float = SolverConfig.lambda_initial
+    lambda_factor: float = SolverConfig.lambda_factor
+    lambda_upper_bound: float = SolverConfig.lambda_upper_bound
 
 
 @dataclass(frozen=True)
@@ -132,8 +133,6 @@ def optimize(graph: Graph, options: SolverOptions | None = None) -> Solution:
 def _program(graph: Graph, config, options: dict, name: str):
     from fgc.compile import compile_graph
     from fgc.ir.datafile import problem_data
-    from fgc.ir.program import SolverConfig
-
     if config is not None and options:
         raise FgcError(f"pass either a SolverConfig or solver options, not both "
                        f"(got config and {sorted(options)})")
@@ -149,7 +148,8 @@ def _program(graph: Graph, config, options: dict, name: str):
 def solve(graph: Graph, config=None, backend: str = "sim", name: str = "problem",
           **options):
     """Compile ``graph`` and solve it with the accelerator simulator (``backend="sim"``) or the
-    generated native C++ solver (``"native"``): ``fgc.compile.compile_graph`` +
+    generated native C++ solver (``"native"``) or the HLS accelerator's C simulation
+    (``"hls"``; any registered backend): ``fgc.compile.compile_graph`` +
     ``problem_data`` + the backend's ``run``, in one call.
 
     In: an ``fgc.Graph``; a :class:`fgc.ir.program.SolverConfig` or its fields as keywords
@@ -157,14 +157,12 @@ def solve(graph: Graph, config=None, backend: str = "sim", name: str = "problem"
     backend's result: ``.values`` (final estimate by ``str(key)``), ``.status``
     ("converged", "max_iterations", "failed"), ``.iterations``, ``.final_error``.
     """
-    from fgc_backends import load
+    from fgc_backends import load, names
 
-    if backend not in ("sim", "native"):
-        raise FgcError(f"backend must be 'sim' or 'native', got {backend!r}")
+    if backend not in names():
+        raise FgcError(f"backend must be one of {', '.join(map(repr, names()))}, got {backend!r}")
     program, data = _program(graph, config, options, name)
-    if backend == "sim":
-        return load("sim").run(program, data)
-    return load("native").run(program, data)  # a CPU program: the Program's clock is moot
+    return load(backend).run(program, data)  # native: a CPU program, the clock is moot
 
 
 def verify(graph: Graph, config=None, name: str = "problem", **options) -> dict:

@@ -57,6 +57,13 @@ class SolverConfig:
     eps_gradient: float = 1e-12  # ε1: stop when ‖g‖∞ < ε1
     eps_step: float = 1e-12  # ε2: stop when ‖δ‖ < ε2 (‖x‖ + ε2)
     relative_error_tol: float = 1e-12
+    # LM's limits, one set for every backend (the simulator, the HLS design, the native solver
+    # and the dense reference solver print or read these): stop once the cost is at most
+    # absolute_error_tol; give up (failed / lambda_limit) when μ would pass lambda_upper_bound
+    # after rejected steps; μ never falls below mu_min after accepted ones (damping stays on)
+    absolute_error_tol: float = 1e-14
+    lambda_upper_bound: float = 1e10
+    mu_min: float = 1e-30
     incremental_k: int | None = None
     batch_every: tuple[int, ...] | int | None = None
 
@@ -79,9 +86,16 @@ class SolverConfig:
         for name in ("units", "cpe", "max_iterations"):
             if int(getattr(self, name)) < 1:
                 raise ProgramError(f"solver option {name} must be ≥ 1, got {getattr(self, name)}")
-        for name in ("clock_mhz", "lambda_initial", "lambda_factor", "eps_gradient", "eps_step"):
+        for name in ("clock_mhz", "lambda_initial", "lambda_factor", "eps_gradient", "eps_step",
+                     "lambda_upper_bound", "mu_min"):
             if not getattr(self, name) > 0:
                 raise ProgramError(f"solver option {name} must be > 0, got {getattr(self, name)}")
+        if not self.absolute_error_tol >= 0:
+            raise ProgramError("solver option absolute_error_tol must be ≥ 0, got "
+                               f"{self.absolute_error_tol}")
+        if self.method == "lm" and not self.mu_min <= self.lambda_initial:
+            raise ProgramError(f"solver option mu_min={self.mu_min:g} exceeds lambda_initial="
+                               f"{self.lambda_initial:g}: LM's damping floor above its start")
 
     @property
     def les_precision(self) -> str:

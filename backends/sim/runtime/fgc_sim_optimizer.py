@@ -22,7 +22,6 @@ import time
 import numpy
 
 RESOLUTION_LIMIT = 1.0  # ρ (see resolution): rounding the state moves a residual by ≥ 1σ
-MU_MIN = 1e-30  # μ never reaches 0 in LM: its damping rows keep every step well posed
 # the result file's format (2: values keyed by variable, {str(key): {"key", "type", "value"}})
 RESULT_FORMAT = "fgc-sim-result 2"
 
@@ -262,7 +261,8 @@ def _step(problem, x, cost, lin, mu, opts, limits):
             new = problem.cost(x_new)
             if numpy.isfinite(new) and (new < cost or mu <= 0
                                         or predicted <= band and new <= cost + band):
-                return "accept", x_new, new, max(mu / opts["lambda_factor"], MU_MIN), predicted
+                mu_next = max(mu / opts["lambda_factor"], opts["mu_min"])  # damping stays on
+                return "accept", x_new, new, mu_next, predicted
         if mu <= 0:
             return "failed", None, None, mu, "non_finite"
         mu *= opts["lambda_factor"]

@@ -16,7 +16,7 @@
 //   max(1, reference error) (a float state cannot rest exactly at the float64 optimum). The
 //   status is printed, not compared (float may stop on another criterion).
 //
-// Structure fingerprint c85ca38da7557b18 (design fd441f5c6b50b1c2): a data file
+// Structure fingerprint c85ca38da7557b18 (design cc355482bcc8c6bc): a data file
 // must carry it on its first line, since equal counts do not mean equal factor connectivity. The
 // check is host code, here; the kernel reads only numbers.
 #include <cmath>

@@ -16,7 +16,7 @@
 //   max(1, reference error) (a float state cannot rest exactly at the float64 optimum). The
 //   status is printed, not compared (float may stop on another criterion).
 //
-// Structure fingerprint 170b72b966b85a9b (design bb965c6be1eb2446): a data file
+// Structure fingerprint 170b72b966b85a9b (design 5d1d7dd8636f058d): a data file
 // must carry it on its first line, since equal counts do not mean equal factor connectivity. The
 // check is host code, here; the kernel reads only numbers.
 #include <cmath>

@@ -16,7 +16,7 @@
 //   max(1, reference error) (a float state cannot rest exactly at the float64 optimum). The
 //   status is printed, not compared (float may stop on another criterion).
 //
-// Structure fingerprint aec0bf602da30c22 (design 0d2070957d8ae99f): a data file
+// Structure fingerprint aec0bf602da30c22 (design fd68b88bb4d676ae): a data file
 // must carry it on its first line, since equal counts do not mean equal factor connectivity. The
 // check is host code, here; the kernel reads only numbers.
 #include <cmath>

@@ -20,7 +20,7 @@ void convert_inputs(const double* x, const double* factor_data) {
 
 extern "C" {
 
-// The structure fingerprint this library was compiled for (design fd441f5c6b50b1c2): the
+// The structure fingerprint this library was compiled for (design cc355482bcc8c6bc): the
 // caller refuses data of another structure before it reaches the kernel.
 const char* fgc_structure() {
     return "c85ca38da7557b18";

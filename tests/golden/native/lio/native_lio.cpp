@@ -20,7 +20,7 @@ void convert_inputs(const double* x, const double* factor_data) {
 
 extern "C" {
 
-// The structure fingerprint this library was compiled for (design bb965c6be1eb2446): the
+// The structure fingerprint this library was compiled for (design 5d1d7dd8636f058d): the
 // caller refuses data of another structure before it reaches the kernel.
 const char* fgc_structure() {
     return "170b72b966b85a9b";

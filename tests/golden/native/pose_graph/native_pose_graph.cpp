@@ -20,7 +20,7 @@ void convert_inputs(const double* x, const double* factor_data) {
 
 extern "C" {
 
-// The structure fingerprint this library was compiled for (design 0d2070957d8ae99f): the
+// The structure fingerprint this library was compiled for (design fd68b88bb4d676ae): the
 // caller refuses data of another structure before it reaches the kernel.
 const char* fgc_structure() {
     return "aec0bf602da30c22";

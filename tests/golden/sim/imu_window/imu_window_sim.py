@@ -2409,6 +2409,7 @@ PROBLEM = {
         "lambda_initial": 1e-05,
         "lambda_factor": 10.0,
         "lambda_upper_bound": 10000000000.0,
+        "mu_min": 1e-30,
         "eps_gradient": 1e-12,
         "eps_step": 1e-12,
         "relative_error_tol": 1e-12,
