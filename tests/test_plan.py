@@ -35,7 +35,7 @@ from fgc_backends.hls.plan import (
 F32 = operators.FLOAT32
 
 
-def _chain(linear: str, **solver) -> fgc.ir.program.Program:
+def _chain(linear: str, precision: str = "float32", **solver) -> fgc.ir.program.Program:
     g = fgc.Graph()
     for i in range(3):
         g.add_variable(f"x{i}", Pose2(float(i), 0.1 * i, 0.0))
@@ -44,7 +44,7 @@ def _chain(linear: str, **solver) -> fgc.ir.program.Program:
         g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
                             fgc.noise.isotropic(3, 0.1)))
     method = "gn" if linear == "qr" else "lm"
-    return compile_graph(g, SolverConfig(method=method, linear=linear, precision="float32",
+    return compile_graph(g, SolverConfig(method=method, linear=linear, precision=precision,
                                          **solver))
 
 
@@ -188,3 +188,30 @@ def test_bad_options_are_named(qr_chain):
         build_plan(qr_chain, PlanOptions.of(qr_chain, units=0))
     with pytest.raises(PlanError, match="ALLOCATION limit of mul"):
         build_plan(qr_chain, PlanOptions(allocation=(("mul", 0),)))
+
+
+@pytest.mark.parametrize("linear", ["qr", "cholesky"])
+def test_the_plan_prices_the_scalar_the_hls_config_emits(linear):
+    """A float design emitted for a float64 Program is priced in float32 operators and 32-bit
+    words (PlanOptions.for_config), as its unit headers' latencies are: the Program's precision
+    would price float64 cores the design does not hold."""
+    from fgc_backends.hls import HlsConfig
+    from fgc_backends.hls.emitter import accel_plan
+
+    program = _chain(linear, precision="float64")
+    assert program.solver.precision == "float64"
+    plan = accel_plan(program, HlsConfig(scalar="float"))
+    assert plan.ops.precision == "float32" and plan.precision == "float32"
+    assert {m.width for m in plan.memories} == {32}
+    f32 = operators.table("float32")
+    streams = [ch for ch in plan.channels if ch.kind == "stream"]
+    if linear == "qr":  # the reflector streams are 2 adder latencies deep (fgc_qr.h's V_DEPTH)
+        assert {ch.depth for ch in streams if "_v" in ch.name} == {2 * f32.add.latency}
+    as_program = build_plan(program, PlanOptions.of(program))
+    assert as_program.ops.precision == "float64"
+    assert plan_cost(plan).cycles < plan_cost(as_program).cycles
+    # a double design of the same Program is priced as the Program says
+    same = accel_plan(program, HlsConfig(scalar="double"))
+    assert plan_cost(same) == plan_cost(build_plan(program, PlanOptions.for_config(
+        HlsConfig(scalar="double"), program)))
+    assert plan_cost(same).cycles == plan_cost(as_program).cycles

@@ -197,9 +197,9 @@ class _AccelBlock:
 
 def accel_plan(program: Program, config: HlsConfig):
     """The accelerator plan the emitted design prints (the Program's n_u / #CPE, the config's
-    unit sets)."""
+    unit sets and scalar types: :meth:`PlanOptions.for_config`)."""
     from fgc_backends.hls.plan import PlanOptions, build_plan
-    return build_plan(program, PlanOptions.of(program, unit_sets=config.unit_sets))
+    return build_plan(program, PlanOptions.for_config(for_program(program, config), program))
 
 
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:

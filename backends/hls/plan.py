@@ -73,12 +73,39 @@ class PlanOptions:
     # as one matrix; "blocked", only H's envelope in chain (variable) order - Cholesky fills no
     # entry outside it - and the cascade streams only that
     hessian_storage: str = "frontal"
+    # the precisions the design computes in (operator table, word width): None = the Program's
+    # (SolverConfig.precision, and its les_precision for the linear solver); an HLS design
+    # emitted in another scalar than the Program's sets them (for_config)
+    precision: str | None = None
+    les_precision: str | None = None
 
     @classmethod
     def of(cls, program: Program, **changes) -> PlanOptions:
         base = dict(units=program.solver.units, cpe=program.solver.cpe)
         base.update(changes)
         return cls(**base)
+
+    @classmethod
+    def for_config(cls, config, program: Program, **changes) -> PlanOptions:
+        """The options of the design an HLS config emits for ``program``: the Program's n_u
+        and #CPE, the config's unit sets, and the operators of the scalar types it emits
+        (``HlsConfig.scalar_cxx`` for the whole accelerator, ``linear_cxx`` for the linear
+        solver), not the Program's precision: a float design of a float64 Program is priced in
+        float32 operators."""
+        base = dict(unit_sets=config.unit_sets, precision=scalar_precision(config.scalar_cxx),
+                    les_precision=scalar_precision(config.linear_cxx))
+        base.update(changes)
+        return cls.of(program, **base)
+
+
+def scalar_precision(scalar_cxx: str) -> str:
+    """The operator-table precision of an emitted C++ scalar type."""
+    if scalar_cxx == "float":
+        return "float32"
+    if scalar_cxx == "double":
+        return "float64"
+    raise PlanError(f"no operator table for the scalar type {scalar_cxx!r} (float32 and float64 "
+                    "only: fgc has no fixed-point operator table)")
 
 
 @dataclass(frozen=True)
@@ -150,7 +177,8 @@ class Memory:
 @dataclass(frozen=True)
 class Channel:
     name: str
-    kind: str  # "stream" (FIFO), "pingpong", or "buffer" (written by a region, read by the next)
+    kind: str  # "stream" (FIFO), or "pingpong" (two buffers: region j writes one while it reads
+    # the other, which region j - 1 wrote; the next region swaps them)
     depth: int
     width: int
     producer: str
@@ -389,8 +417,11 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     for kind, n in alloc.items():
         if n < 1:
             raise PlanError(f"ALLOCATION limit of {kind} must be ≥ 1, got {n}")
-    ops = table(program.solver.precision)
-    les = table(program.solver.les_precision)
+    precision = opts.precision or program.solver.precision
+    les_precision = opts.les_precision or (program.solver.les_precision if opts.precision is None
+                                           else precision)
+    ops = table(precision)
+    les = table(les_precision)
     sim_ops = _sim_table(ops)
     units, memories, channels, phases = [], [], [], []
 
@@ -455,7 +486,7 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     memories.append(Memory("state_trial", n_x, ops.word_bits, 1))  # X_TRIAL
     memories.append(Memory("gradient_delta", 2 * n_t, ops.word_bits, 2))  # G, DELTA
     memories.append(Memory("data", _sizes(program)["N_DATA"], ops.word_bits, 1))  # DATA_BUF
-    return AcceleratorPlan(program.name, program.solver.linear, program.solver.precision,
+    return AcceleratorPlan(program.name, program.solver.linear, precision,
                            program.solver.clock_mhz, opts, tuple(units), tuple(memories),
                            tuple(channels), tuple(phases), ops)
 
@@ -479,7 +510,7 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
         # the reflector to each Update unit (and its header to collect); each unit streams the
         # next column (its owner's) to Evaluate and its entries of R's row to collect; Evaluate
-        # writes the reflector buffer the next region broadcasts
+        # writes one of the reflector's two buffers, which the next region broadcasts
         for u in range(opts.units):
             channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
                                     ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
@@ -490,7 +521,7 @@ def _qr(program, opts, ops, units, memories, channels, phases):
                                     f"qr{s}_update{u}", f"qr{s}_evaluate"))
             channels.append(Channel(f"qr{s}_row{u}", "stream", 2, ops.word_bits,
                                     f"qr{s}_update{u}", f"qr{s}_collect"))
-        channels.append(Channel(f"qr{s}_vbuf", "buffer", max_rows + 2, ops.word_bits + 32,
+        channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 2, ops.word_bits + 32,
                                 f"qr{s}_evaluate", f"qr{s}_broadcast"))
     # per step: the regions of fgc_qr.h's qr_step (Evaluate of column k+1 overlaps the Update
     # of column k in region k) and its store, one process per step
@@ -639,9 +670,11 @@ def _cholesky_frontal(program, opts, ops, units, memories, channels, phases):
                       1, (("add", 1), ("mul", 1), ("div", 1))))
     _backsub_phases(program, ops, phases, "trisolve")
     cols = sizes["MAX_W"] + 1
-    # accel.cpp.jinja's GRAM, HF, CONDBUF, UPDBUF (the frontal matrix of one step at a time)
+    # accel.cpp.jinja's GRAM, HF, CONDBUF, UPDBUF (the frontal matrix of one step at a time) and
+    # cpe_step's second trailing-matrix buffer Hb (the rounds alternate between HF and Hb)
     memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
     memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    memories.append(Memory("frontal_b", sizes["MAX_W"] * cols, ops.word_bits, 1))
     memories.append(Memory("condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
     memories.append(Memory("updbuf", sizes["MAX_W"] * cols, ops.word_bits, 1))
     _solver_memories(sizes, ops, memories)
@@ -727,7 +760,8 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
             ff += u.instances * n * o.ff
         by_unit.append((u.name, unit_dsp))
     dsp = sum(d for _, d in by_unit)
-    channel_mems = tuple(Memory(ch.name, ch.depth, ch.width, 1) for ch in plan.channels)
+    channel_mems = tuple(Memory(ch.name, ch.depth * (2 if ch.kind == "pingpong" else 1), ch.width,
+                                2 if ch.kind == "pingpong" else 1) for ch in plan.channels)
     bram36 = sum(m.bram18 for m in plan.memories + channel_mems) / 2
     over = tuple(name for name, used, cap in (("DSP", dsp, PART_DSP),
                                               ("BRAM36", bram36, PART_BRAM36),
