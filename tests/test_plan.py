@@ -119,15 +119,20 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # retract: 3 variables at II 1, depth sqrt 28 + div 28 + sincos 40 + 4 × (mul 8 + add 11)
     # = 172 -> 2 + 172 = 174
     assert phases["state_update"] == 174
-    # LM decision: div 28 + 2 mul + 2 add + compare 2 = 68
-    assert phases["lm_control"] == 68
+    # LM control: the gradient's largest entry (9 entries, II compare 2, depth 4: 20), |x|
+    # (12 storage words, II add 11, depth mul + add 19: 140), the step test (9 entries, II 11,
+    # depth 2 (8 + 11) = 38: 126), the decision (div 28 + 2 mul + 2 add + compare 2 = 68), the
+    # accepted x copied (12 words, II 1, depth 2: 13): 367
+    assert phases["lm_control"] == 20 + 140 + 126 + 68 + 13
     # back-substitution (fgc_backsub.h's loops): the root step (f 3, s 0): reciprocals
     # 2 + div 28 = 30, then per column last first a multiply 8 and the column above it
-    # (trip r, mul + add 19 deep): 8 + (1 + 19) + 8 + 19 + 8 = 63 -> 93. The second level has
-    # two steps (f 3, s 3), one after the other: each row's separator dot product of 3 terms
-    # at II ceil(11 / 3) = 4, depth 8 + 11 (1 + 2) + 11 = 52: 60 a row, 180 -> 273 a step
+    # (trip r, mul + add 19 deep): 8 + (1 + 19) + 8 + 19 + 8 = 63 -> 93, + its conditional
+    # copied in (3 x 4 words, II 1, depth 2: 13) and the solution out (3: 4) -> 110. The second
+    # level has two steps (f 3, s 3), one after the other: each row's separator dot product of 3
+    # terms at II ceil(11 / 3) = 4, depth 8 + 11 (1 + 2) + 11 = 52: 60 a row, 180 -> 273 a step,
+    # + the copies (3 x 7 words: 22, the separator's 3: 4, the solution's 3: 4) -> 303
     assert plan.options.units == 2
-    assert phases["backsub_level0"] == 93 and phases["backsub_level1"] == 2 * 273
+    assert phases["backsub_level0"] == 110 and phases["backsub_level1"] == 2 * 303
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub_")))
