@@ -240,3 +240,19 @@ def test_cycle_counting_csim_equals_the_model(linear, option):
     counted = sum(c for c, _ in phases.values())
     model = sum(m for _, m in phases.values())
     assert abs(counted / model - 1) <= 0.02, (counted, model)
+
+
+def test_cycle_counting_covers_levenberg_marquardt_and_the_rounding_noise_pass():
+    """An LM run that rejects a trial step (pose_graph, float32): the rounding-noise pass the
+    plan prices per rejection runs and counts as priced, and LM's damping rows and retries are
+    in the counted phases too (within 2 %, as above)."""
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import measure
+
+    solver = SolverConfig(method="lm", linear="cholesky", cpe=3, precision="float32")
+    phases, events = measure("t", pose_graph.build(), solver)
+    assert events.get("noise", 0) >= 1
+    counted, model = phases["rounding_noise"]
+    assert counted > 0 and counted == model
+    for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
