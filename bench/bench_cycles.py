@@ -1,21 +1,25 @@
-"""The cycle-counting C simulation against the cost model (fgc issue 18, item 5).
+"""The cycle-counting C simulation against the cost model (fgc issue 18, item 5), per phase.
 
 For each example and configuration: emit the HLS accelerator, build its testbench with
--DFGC_COUNT_CYCLES (the unit headers' counters, backends/hls/include/fgc_cycles.h: every loop of
-the QR unit set, the Cholesky cascade and back-substitution reports trip, II and depth as it
-runs) and run it on the example's data; fgc_cycles::total() applies the plan's arithmetic to what
-ran. The model's figure is the plan's (backends/hls/plan.py) linear-solver phases the units
-execute (QR levels or the Cholesky cascade, and back-substitution) per linear solve, times the
-solves the run made. Gauss-Newton, so every solve is one iteration.
+-DFGC_COUNT_CYCLES (the counters of backends/hls/include/fgc_cycles.h: every loop of the QR unit
+sets, the Cholesky cascade and back-substitution, and every loop of the kernel around them - the
+factor datapaths, the gradient pass or HGC, stacking and commit or assembly and store, the state
+update, LM control, the top's copies and the rounding-noise pass - reports trip, II and depth as
+it runs, under the plan phase it belongs to) and run it on the example's data;
+fgc_cycles::phase_totals() applies the plan's arithmetic to what ran.
+
+The model's figure for a phase is the plan's (backends/hls/plan.py, the design the config emits:
+PlanOptions.for_config) cycles of one execution of that phase times the number of times the run
+executed it: the linearisations, linear solves, retractions, cost passes, rounding-noise passes
+and calls the counting build counted (FGC_EVENT). So the comparison checks the cycles per
+execution, not how many iterations the solver took. Gauss-Newton, float32 Program, float design.
 
     python bench/bench_cycles.py
-
-Only the units' loops are counted: the factor datapaths, stacking, commit, HGC, state update
-and LM control have no counters yet, and are left out of both figures.
 """
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 import tempfile
@@ -31,7 +35,6 @@ import lio  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.datafile import problem_data, write_data  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
-from fgc_backends.cfamily.results import read_result  # noqa: E402
 from fgc_backends.hls import HlsConfig, emit  # noqa: E402
 from fgc_backends.hls.emitter import accel_plan  # noqa: E402
 from fgc_backends.hls.plan import phase_cycles  # noqa: E402
@@ -44,10 +47,19 @@ struct Dump {
     Dump() { fgc_cycles::state(); }
     ~Dump() {
         std::printf("total %ld\n", fgc_cycles::total());
+        for (const auto& kv : fgc_cycles::phase_totals())
+            std::printf("phase %s %ld\n", kv.first.empty() ? "-" : kv.first.c_str(), kv.second);
+        for (const auto& kv : fgc_cycles::events())
+            std::printf("event %s %ld\n", kv.first.c_str(), kv.second);
     }
 } dump_at_exit;
 """
-COUNTED = ("qr_level", "backsub_level", "cholesky")
+# the plan phase group (phase_groups' names) -> what the run counts one execution of
+TRIGGER = {"setup": "call", "factor_jacobian": "linearize", "gradient": "linearize",
+           "hgc": "linearize", "qr_stack": "solve", "qr": "solve", "qr_commit": "solve",
+           "backsub": "solve", "assemble": "solve", "cholesky": "solve", "store": "solve",
+           "lm_control": "solve", "state_update": "retract", "factor_cost": "cost",
+           "rounding_noise": "noise"}
 
 
 def counting_run(project, graph, program, main: str) -> str:
@@ -65,40 +77,77 @@ def counting_run(project, graph, program, main: str) -> str:
                           capture_output=True, text=True).stdout
 
 
+def group(name: str) -> str:
+    """A plan phase's group: its name without the level number (qr_level3 -> qr)."""
+    head, _, tail = name.rpartition("_level")
+    return head if head and tail.isdigit() else name
+
+
 def measure(name, graph, solver):
+    """(phases, events): per phase group (csim cycles, model cycles) of one run, and the run's
+    event counts; the total is the sum over the groups."""
     program = compile_graph(graph, solver, name="cyc")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # designs over the part's DSP still simulate
         folder = Path(tempfile.mkdtemp(prefix="fgc-cycles-"))
         project = emit(program, folder, HlsConfig(scalar="float"))
     out = counting_run(project, graph, program, COUNT_MAIN)
-    line = next(x for x in out.splitlines() if x.startswith("total "))
-    total = int(line.split()[1])
-    # Gauss-Newton: one linear solve an iteration; the run's iterations from its result file
-    solves = read_result(folder / "result.txt", program).iterations
+    counted = {k: int(v) for k, v in re.findall(r"^phase (\S+) (\d+)$", out, re.M)}
+    events = {k: int(v) for k, v in re.findall(r"^event (\S+) (\d+)$", out, re.M)}
+    total = int(re.search(r"^total (\d+)$", out, re.M).group(1))
+    if sum(counted.values()) != total or "-" in counted:
+        raise RuntimeError(f"{name}: records outside a phase or phases not adding up: {out}")
     plan = accel_plan(program, project.config)
-    model = sum(phase_cycles(ph) for ph in plan.phases if ph.name.startswith(COUNTED))
-    return solves, total, model * solves
+    per: dict[str, int] = {}
+    for ph in plan.phases:
+        per[group(ph.name)] = per.get(group(ph.name), 0) + phase_cycles(ph)
+    phases = {}
+    for g in sorted(set(per) | set(counted)):
+        runs = events.get(TRIGGER[g], 0) if g in TRIGGER else 0
+        phases[g] = (counted.get(g, 0), per.get(g, 0) * runs)
+    return phases, events
+
+
+ORDER = ("setup", "factor_jacobian", "gradient", "hgc", "qr_stack", "qr", "qr_commit",
+         "assemble", "cholesky", "store", "backsub", "state_update", "factor_cost",
+         "lm_control", "rounding_noise")
+
+
+def cases():
+    out = []
+    for ordering in ("serial", "two-ended"):
+        for units in (1, 4, 8):
+            out.append((f"LIO N=30 QR {ordering} n_u={units}", lio.build(N=30),
+                        SolverConfig(method="gn", linear="qr", ordering=ordering,
+                                     units=units, precision="float32")))
+    # N = 20: at N = 50 undamped float32 Gauss-Newton stops singular inside its first solve
+    for cpe in (5, 20, 80):
+        out.append((f"imu_window N=20 Cholesky #CPE={cpe}", imu_window.build(N=20),
+                    SolverConfig(method="gn", linear="cholesky", cpe=cpe,
+                                 precision="float32")))
+    return out
 
 
 def main() -> None:
-    cases = []
-    for units in (1, 4, 8):
-        for ordering in ("serial", "two-ended"):
-            cases.append((f"LIO N=30 QR {ordering} n_u={units}", lio.build(N=30),
-                          SolverConfig(method="gn", linear="qr", ordering=ordering,
-                                       units=units, precision="float32")))
-    # N = 20: at N = 50 undamped float32 Gauss-Newton stops singular inside its first solve
-    for cpe in (5, 20, 80):
-        cases.append((f"imu_window N=20 Cholesky #CPE={cpe}", imu_window.build(N=20),
-                      SolverConfig(method="gn", linear="cholesky", cpe=cpe,
-                                   precision="float32")))
-    print(f"{'configuration':42} {'solves':>6} {'csim cycles':>12} {'model cycles':>12} "
-          f"{'csim/model':>10}")
-    for name, graph, solver in cases:
-        solves, counted, model = measure(name, graph, solver)
-        print(f"{name:42} {solves:6d} {counted:12,d} {model:12,d} {counted / model:10.3f}",
-              flush=True)
+    summary = []
+    for name, graph, solver in cases():
+        phases, events = measure(name, graph, solver)
+        print(f"{name}   (runs: " + ", ".join(f"{k} {v}" for k, v in sorted(events.items()))
+              + ")")
+        print(f"  {'phase':16} {'csim cycles':>12} {'model cycles':>12} {'csim/model':>10}")
+        for g in sorted(phases, key=lambda g: (ORDER.index(g) if g in ORDER else 99, g)):
+            c, m = phases[g]
+            if c or m:
+                ratio = f"{c / m:10.3f}" if m else f"{'-':>10}"
+                print(f"  {g:16} {c:12,d} {m:12,d} {ratio}")
+        c = sum(v[0] for v in phases.values())
+        m = sum(v[1] for v in phases.values())
+        print(f"  {'total':16} {c:12,d} {m:12,d} {c / m:10.3f}", flush=True)
+        summary.append((name, c, m))
+    print()
+    print(f"{'configuration':42} {'csim cycles':>12} {'model cycles':>12} {'csim/model':>10}")
+    for name, c, m in summary:
+        print(f"{name:42} {c:12,d} {m:12,d} {c / m:10.3f}")
 
 
 if __name__ == "__main__":

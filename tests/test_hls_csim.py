@@ -219,15 +219,40 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
                                             ("qr", {"units": 3, "ordering": "serial"}),
                                             ("cholesky", {"cpe": 4})])
 def test_cycle_counting_csim_equals_the_model(linear, option):
-    """Issue 18, item 5: the cycles the unit headers count as the C simulation runs (trip × II
-    + depth of every executed loop, regions and side-by-side unit sets as plan_cost combines
-    them) equal the plan's figure for the same solves, within 2 % (the plan adds a fill for
-    each unit set of a level even when it has no step)."""
+    """Issue 18, item 5: the cycles the counters count as the C simulation runs (trip × II +
+    depth of every executed loop of the units and of the kernel around them, regions and
+    side-by-side unit sets as plan_cost combines them) equal the plan's figure for the same
+    executions, per phase and in total, within 2 % (the plan adds a fill for each unit set of
+    a level even when it has no step; LM control prices an accepted step's copy every solve)."""
     sys.path.insert(0, str(ROOT / "bench"))
     from bench_cycles import measure
 
     graph = lio.build(N=6) if linear == "qr" else imu_window.build(N=5)
     solver = SolverConfig(method="gn", linear=linear, precision="float32", **option)
-    solves, counted, model = measure("t", graph, solver)
-    assert solves >= 1 and model > 0
+    phases, events = measure("t", graph, solver)
+    assert events["solve"] >= 1 and events["call"] == 1
+    expected = {"setup", "factor_jacobian", "factor_cost", "state_update", "lm_control",
+                "backsub"} | ({"gradient", "qr_stack", "qr", "qr_commit"} if linear == "qr"
+                              else {"hgc", "assemble", "cholesky", "store"})
+    assert expected <= {g for g, (c, m) in phases.items() if c > 0 and m > 0}
+    for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+    counted = sum(c for c, _ in phases.values())
+    model = sum(m for _, m in phases.values())
     assert abs(counted / model - 1) <= 0.02, (counted, model)
+
+
+def test_cycle_counting_covers_levenberg_marquardt_and_the_rounding_noise_pass():
+    """An LM run that rejects a trial step (pose_graph, float32): the rounding-noise pass the
+    plan prices per rejection runs and counts as priced, and LM's damping rows and retries are
+    in the counted phases too (within 2 %, as above)."""
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import measure
+
+    solver = SolverConfig(method="lm", linear="cholesky", cpe=3, precision="float32")
+    phases, events = measure("t", pose_graph.build(), solver)
+    assert events.get("noise", 0) >= 1
+    counted, model = phases["rounding_noise"]
+    assert counted > 0 and counted == model
+    for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)

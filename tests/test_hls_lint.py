@@ -366,3 +366,84 @@ void top(const T in[N], T out[N]) {
     assert [i.rule for i in issues] == ["channel"]
     assert "'a[U]' is read by 2 processes" in issues[0].message
     assert "work (line 19" in issues[0].message and "merge (line 38" in issues[0].message
+
+
+FEEDBACK = """
+constexpr int N = 8;
+typedef float T;
+void broadcast(const T v[N], hls::stream<T>& out) {
+    for (int i = 0; i < N; ++i) out.write(v[i]);
+}
+void evaluate(hls::stream<T>& in, T v[N]) {
+    for (int i = 0; i < N; ++i) v[i] = T(2) * in.read();
+}
+"""
+
+
+def test_a_channel_read_before_it_is_written_is_a_feedback():
+    """fgc_qr.h before issue 18's fix: the reflector buffer read by the broadcast and written by
+    the Evaluate of the same region, for the next invocation (and fgc_cpe.h's H, read by the feed
+    and written back by the drain)."""
+    old = FEEDBACK + """
+void reflection(T v[N]) {
+#pragma HLS DATAFLOW
+    hls::stream<T> s;
+    broadcast(v, s);
+    evaluate(s, v);
+}
+"""
+    [issue] = semantic_issues([("k.h", old)])
+    assert issue.rule == "channel"
+    assert "'v' is read by broadcast" in issue.message and "before evaluate" in issue.message
+    # the fix: two buffers, one only read and one only written, swapped between invocations
+    pingpong = FEEDBACK + """
+void reflection(const T vin[N], T vout[N]) {
+#pragma HLS DATAFLOW
+    hls::stream<T> s;
+    broadcast(vin, s);
+    evaluate(s, vout);
+}
+void step(T va[N], T vb[N], int n) {
+    for (int j = 0; j < n; ++j) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+        if ((j & 1) == 0) {
+            reflection(va, vb);
+        } else {
+            reflection(vb, va);
+        }
+    }
+}
+"""
+    assert semantic_issues([("k.h", pingpong)]) == []
+    # writer first, reader later: a forward channel, fine
+    forward = FEEDBACK + """
+void region(hls::stream<T>& in, hls::stream<T>& out) {
+#pragma HLS DATAFLOW
+    T v[N];
+    evaluate(in, v);
+    broadcast(v, out);
+}
+"""
+    assert semantic_issues([("k.h", forward)]) == []
+
+
+def test_a_channel_read_and_written_by_one_process_is_an_issue():
+    both = FEEDBACK + """
+void accumulate(const T in[N], T acc[N]) {
+    for (int i = 0; i < N; ++i) acc[i] += in[i];
+}
+void region(const T in[N], T acc[N], hls::stream<T>& out) {
+#pragma HLS DATAFLOW
+    accumulate(in, acc);
+    broadcast(acc, out);
+}
+"""
+    issues = semantic_issues([("k.h", both)])
+    assert {i.rule for i in issues} == {"channel"}
+    assert any("'acc' is read and written by the same process accumulate" in i.message
+               for i in issues)
+    # a memory only one process reads and writes (an Update unit's bank) is its own, no channel
+    own = both.replace("const T in[N], T acc[N], hls::stream<T>& out",
+                       "const T in[N], const T other[N], T acc[N], hls::stream<T>& out")
+    own = own.replace("    broadcast(acc, out);\n", "    broadcast(other, out);\n")
+    assert semantic_issues([("k.h", own)]) == []

@@ -99,8 +99,8 @@ def test_raw_storage_fewer_words_more_cycles(qr_chain):
     assert cr.cycles == cw.cycles + 53 and cr.linear_cycles == cw.linear_cycles + 53
     # its lanes are priced: n_u × (add 2 + mul 3) DSP
     assert cr.dsp == cw.dsp + 2 * 5
-    assert [ph.name for ph in raw.phases][:3] == ["factor_jacobian", "whiten_stack",
-                                                  "qr_level0"]
+    assert [ph.name for ph in raw.phases][:5] == ["factor_jacobian", "gradient", "whiten_stack",
+                                                  "qr_stack_level0", "qr_level0"]
 
 
 def test_blocked_hessian_by_hand(chol_chain):

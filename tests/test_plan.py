@@ -35,7 +35,7 @@ from fgc_backends.hls.plan import (
 F32 = operators.FLOAT32
 
 
-def _chain(linear: str, **solver) -> fgc.ir.program.Program:
+def _chain(linear: str, precision: str = "float32", **solver) -> fgc.ir.program.Program:
     g = fgc.Graph()
     for i in range(3):
         g.add_variable(f"x{i}", Pose2(float(i), 0.1 * i, 0.0))
@@ -44,7 +44,7 @@ def _chain(linear: str, **solver) -> fgc.ir.program.Program:
         g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
                             fgc.noise.isotropic(3, 0.1)))
     method = "gn" if linear == "qr" else "lm"
-    return compile_graph(g, SolverConfig(method=method, linear=linear, precision="float32",
+    return compile_graph(g, SolverConfig(method=method, linear=linear, precision=precision,
                                          **solver))
 
 
@@ -119,15 +119,20 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # retract: 3 variables at II 1, depth sqrt 28 + div 28 + sincos 40 + 4 × (mul 8 + add 11)
     # = 172 -> 2 + 172 = 174
     assert phases["state_update"] == 174
-    # LM decision: div 28 + 2 mul + 2 add + compare 2 = 68
-    assert phases["lm_control"] == 68
+    # LM control: the gradient's largest entry (9 entries, II compare 2, depth 4: 20), |x|
+    # (12 storage words, II add 11, depth mul + add 19: 140), the step test (9 entries, II 11,
+    # depth 2 (8 + 11) = 38: 126), the decision (div 28 + 2 mul + 2 add + compare 2 = 68), the
+    # accepted x copied (12 words, II 1, depth 2: 13): 367
+    assert phases["lm_control"] == 20 + 140 + 126 + 68 + 13
     # back-substitution (fgc_backsub.h's loops): the root step (f 3, s 0): reciprocals
     # 2 + div 28 = 30, then per column last first a multiply 8 and the column above it
-    # (trip r, mul + add 19 deep): 8 + (1 + 19) + 8 + 19 + 8 = 63 -> 93. The second level has
-    # two steps (f 3, s 3), one after the other: each row's separator dot product of 3 terms
-    # at II ceil(11 / 3) = 4, depth 8 + 11 (1 + 2) + 11 = 52: 60 a row, 180 -> 273 a step
+    # (trip r, mul + add 19 deep): 8 + (1 + 19) + 8 + 19 + 8 = 63 -> 93, + its conditional
+    # copied in (3 x 4 words, II 1, depth 2: 13) and the solution out (3: 4) -> 110. The second
+    # level has two steps (f 3, s 3), one after the other: each row's separator dot product of 3
+    # terms at II ceil(11 / 3) = 4, depth 8 + 11 (1 + 2) + 11 = 52: 60 a row, 180 -> 273 a step,
+    # + the copies (3 x 7 words: 22, the separator's 3: 4, the solution's 3: 4) -> 303
     assert plan.options.units == 2
-    assert phases["backsub_level0"] == 93 and phases["backsub_level1"] == 2 * 273
+    assert phases["backsub_level0"] == 110 and phases["backsub_level1"] == 2 * 303
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub_")))
@@ -188,3 +193,30 @@ def test_bad_options_are_named(qr_chain):
         build_plan(qr_chain, PlanOptions.of(qr_chain, units=0))
     with pytest.raises(PlanError, match="ALLOCATION limit of mul"):
         build_plan(qr_chain, PlanOptions(allocation=(("mul", 0),)))
+
+
+@pytest.mark.parametrize("linear", ["qr", "cholesky"])
+def test_the_plan_prices_the_scalar_the_hls_config_emits(linear):
+    """A float design emitted for a float64 Program is priced in float32 operators and 32-bit
+    words (PlanOptions.for_config), as its unit headers' latencies are: the Program's precision
+    would price float64 cores the design does not hold."""
+    from fgc_backends.hls import HlsConfig
+    from fgc_backends.hls.emitter import accel_plan
+
+    program = _chain(linear, precision="float64")
+    assert program.solver.precision == "float64"
+    plan = accel_plan(program, HlsConfig(scalar="float"))
+    assert plan.ops.precision == "float32" and plan.precision == "float32"
+    assert {m.width for m in plan.memories} == {32}
+    f32 = operators.table("float32")
+    streams = [ch for ch in plan.channels if ch.kind == "stream"]
+    if linear == "qr":  # the reflector streams are 2 adder latencies deep (fgc_qr.h's V_DEPTH)
+        assert {ch.depth for ch in streams if "_v" in ch.name} == {2 * f32.add.latency}
+    as_program = build_plan(program, PlanOptions.of(program))
+    assert as_program.ops.precision == "float64"
+    assert plan_cost(plan).cycles < plan_cost(as_program).cycles
+    # a double design of the same Program is priced as the Program says
+    same = accel_plan(program, HlsConfig(scalar="double"))
+    assert plan_cost(same) == plan_cost(build_plan(program, PlanOptions.for_config(
+        HlsConfig(scalar="double"), program)))
+    assert plan_cost(same).cycles == plan_cost(as_program).cycles

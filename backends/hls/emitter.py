@@ -186,11 +186,12 @@ def _allocation(unit, scalar_cxx: str, text: str) -> tuple[tuple[str, int], ...]
 class _AccelBlock:
     """A block's template context plus what the plan says about its datapath."""
 
-    def __init__(self, block, allocation, ii_jacobian: int, ii_cost: int):
+    def __init__(self, block, allocation, jacobian, cost, noise_row_depth: int):
         self._block = block
         self.allocation = allocation
-        self.ii_jacobian = ii_jacobian
-        self.ii_cost = ii_cost
+        self.ii_jacobian, self.depth_jacobian = jacobian.ii, jacobian.depth
+        self.ii_cost, self.depth_cost = cost.ii, cost.depth
+        self.noise_row_depth = noise_row_depth
 
     def __getattr__(self, name):
         return getattr(self._block, name)
@@ -198,25 +199,29 @@ class _AccelBlock:
 
 def accel_plan(program: Program, config: HlsConfig):
     """The accelerator plan the emitted design prints (the Program's n_u / #CPE, the config's
-    unit sets)."""
+    unit sets and scalar types: :meth:`PlanOptions.for_config`)."""
     from fgc_backends.hls.plan import PlanOptions, build_plan
-    return build_plan(program, PlanOptions.of(program, unit_sets=config.unit_sets))
+    return build_plan(program, PlanOptions.for_config(for_program(program, config), program))
 
 
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
-    from fgc_backends.hls.plan import process_network, unit_sets
+    from fgc_backends.cost.operators import table
+    from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
     plan = accel_plan(program, config)
     phase = {ph.name: ph for ph in plan.phases}
-    iis = {p.name: p.loops[0].ii for name in ("factor_jacobian", "factor_cost")
-           for p in phase[name].processes}
+    loops = {p.name: p.loops[0] for name in ("factor_jacobian", "factor_cost")
+             for p in phase[name].processes}
+    noise = {p.name: p.loops[2].depth for p in phase["rounding_noise"].processes
+             if p.name.startswith("noise_")}
     blocks = []
     for b in context["blocks"]:
         text = "\n".join((*b.jacobian.intermediates, *b.jacobian.outputs,
                           *b.cost.intermediates, *b.cost.outputs))
         blocks.append(_AccelBlock(b, _allocation(plan.unit(f"factor_{b.index}"),
                                                  config.scalar_cxx, text),
-                                  iis[f"factor_{b.index}_jacobian"], iis[f"factor_{b.index}_cost"]))
+                                  loops[f"factor_{b.index}_jacobian"],
+                                  loops[f"factor_{b.index}_cost"], noise[f"noise_{b.index}"]))
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
@@ -225,9 +230,11 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     network += [f"process {p}" for p in procs]
     network += [f"stream {ch.name} depth={ch.depth}: {ch.producer} -> {ch.consumer}"
                 for ch in streams]
-    from fgc_backends.cost.operators import table
     les = table("float32" if config.linear_cxx == "float" else "float64")
-    return {"les": {"partials": les.add.latency, "add": les.add.latency,
+    # the kernel's loops around the units, priced as the plan prices them (its FGC_CYCLES)
+    timing = {"kt": kernel_timing(plan.ops), "klt": kernel_timing(les)}
+    return {**timing,
+            "les": {"partials": les.add.latency, "add": les.add.latency,
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * _epsilon(config.linear_cxx))},
             "blocks": blocks, "network": network, "unit_sets": max(1, sets), "units": units,

@@ -25,7 +25,12 @@ deliberately small C-like parser: function definitions and their parameters, cal
 - ``channel``: each array, pointer, reference or ``hls::stream`` passed to the calls of a
   DATAFLOW block is written by at most one call and read by at most one; the direction comes
   from the callee's parameter (streams: ``.write(``/``.read(`` in its body; ``const``: a read;
-  others: assigned → written, used otherwise → read; passed on → the inner callee's use);
+  others: assigned → written, used otherwise → read; passed on → the inner callee's use). One
+  that is both written and read in the block (by two or more calls) must be written by one call
+  and read by a *different, later* one: a channel read before it is written (a feedback through
+  it between invocations of the region) or read and written by the same call is an issue. A
+  memory that a single call alone reads and writes (an Update unit's bank) is that process's
+  own, not a channel;
 - ``pointer``: no pointer variable or parameter is reassigned (``=``, ``+=``, ``++``…) after its
   initialisation, and no function returns a pointer;
 - ``function_pointer``: no function pointer (declarator ``(*f)(…)``), and no function defined in
@@ -529,9 +534,9 @@ class _Checker:
         lo, hi = _enclosing_block(code, pragma)
         calls: list[tuple[int, str, list[str], dict[str, int], str]] = []
         self._region(file, code, lo + 1, hi, calls, {}, pragma)
-        writers: dict[str, list[str]] = {}
-        readers: dict[str, list[str]] = {}
-        for pos, callee, args, loop, where in calls:
+        # per channel: (call index in region order, process label, its uses) of every access
+        access: dict[str, list[tuple[int, str, frozenset[str]]]] = {}
+        for order, (pos, callee, args, loop, where) in enumerate(calls):
             f = self.functions.get(callee)
             if f is None:
                 continue
@@ -555,37 +560,63 @@ class _Checker:
                         key = f"{base.group(1)}{subscript}"  # one element per copy
                     else:
                         copies *= trips
-                uses = self.uses(f, param, set())
+                uses = frozenset(self.uses(f, param, set()))
                 label = f"{callee} (line {_line(where, pos)}, argument {index + 1})"
-                labels = [label] if copies == 1 else [f"{label} x{copies}"] * copies
-                if "write" in uses:
-                    writers.setdefault(key, []).extend(labels)
-                if "read" in uses:
-                    readers.setdefault(key, []).extend(labels)
+                labels = [label] if copies == 1 else [f"{label} x{copies}#{c}"
+                                                      for c in range(copies)]
+                access.setdefault(key, []).extend((order, lb, uses) for lb in labels)
             # file-scope arrays a process reaches are channels too (issue 18's shared COND/NF)
             for g, uses in sorted(self.global_uses(f, set()).items()):
                 label = f"{callee} (line {_line(where, pos)}, global)"
                 copies = 1
                 for trips in loop.values():
                     copies *= trips
-                labels = [label] if copies == 1 else [f"{label} x{copies}"] * copies
-                if "write" in uses:
-                    writers.setdefault(g, []).extend(labels)
-                if "read" in uses:
-                    readers.setdefault(g, []).extend(labels)
-        for what, table in (("written", writers), ("read", readers)):
-            # a whole array passed to one process overlaps each element another one takes
-            bases = {k.split("[")[0] for k in table if "[" in k}
-            for key in [k for k in table if "[" in k]:
-                table[key] = table[key] + table.get(key.split("[")[0], [])
-            for base in bases:
-                table.pop(base, None)  # reported through its elements
-            for key, who in sorted(table.items()):
-                if len(who) > 1:
-                    self.add(file, code, pragma, "channel", f"'{key}' is {what} by "
-                             f"{len(who)} processes of the DATAFLOW region: "
-                             f"{', '.join(sorted(set(who), key=who.index))} "
-                             "(one producer and one consumer per channel)")
+                labels = [label] if copies == 1 else [f"{label} x{copies}#{c}"
+                                                      for c in range(copies)]
+                access.setdefault(g, []).extend((order, lb, frozenset(uses)) for lb in labels)
+        # a whole array passed to one process overlaps each element another one takes
+        bases = {k.split("[")[0] for k in access if "[" in k}
+        for key in [k for k in access if "[" in k]:
+            access[key] = access[key] + access.get(key.split("[")[0], [])
+        for base in bases:
+            access.pop(base, None)  # reported through its elements
+        for key, entries in sorted(access.items()):
+            self._channel(file, code, pragma, key, entries)
+
+    def _channel(self, file, code, pragma, key, entries) -> None:
+        """UG1399's canonical form for one channel of a DATAFLOW region: at most one writer and
+        one reader; a channel both written and read in the region is written by one process and
+        read by another, later one (no feedback through it, no process reading and writing it).
+        A memory that one process alone reads and writes is that process's own, no channel."""
+        def name(label):
+            return label.split("#")[0]
+
+        writers = [(o, lb) for o, lb, u in entries if "write" in u]
+        readers = [(o, lb) for o, lb, u in entries if "read" in u]
+        for what, who in (("written", writers), ("read", readers)):
+            if len(who) > 1:
+                names = [name(lb) for _, lb in who]
+                self.add(file, code, pragma, "channel", f"'{key}' is {what} by "
+                         f"{len(who)} processes of the DATAFLOW region: "
+                         f"{', '.join(sorted(set(names), key=names.index))} "
+                         "(one producer and one consumer per channel)")
+        processes = {lb for _, lb, _ in entries}
+        if not writers or not readers or len(processes) == 1:
+            return
+        for _, lb, u in entries:
+            if {"read", "write"} <= u:
+                self.add(file, code, pragma, "channel", f"'{key}' is read and written by the "
+                         f"same process {name(lb)} while another process of the DATAFLOW "
+                         "region also uses it (a channel has one writer and a different reader)")
+                return
+        first_write = min(o for o, _ in writers)
+        early = [(o, lb) for o, lb in readers if o <= first_write]
+        if early:
+            writer = next(lb for o, lb in writers if o == first_write)
+            self.add(file, code, pragma, "channel", f"'{key}' is read by {name(early[0][1])} "
+                     f"before {name(writer)} writes it in the DATAFLOW region: a feedback "
+                     "through the channel (the writer must come first; pass data between "
+                     "invocations through two buffers that alternate)")
 
     def _region(self, file, code, lo, hi, calls, loop, pragma) -> None:
         pos = lo

@@ -74,12 +74,39 @@ class PlanOptions:
     # as one matrix; "blocked", only H's envelope in chain (variable) order - Cholesky fills no
     # entry outside it - and the cascade streams only that
     hessian_storage: str = "frontal"
+    # the precisions the design computes in (operator table, word width): None = the Program's
+    # (SolverConfig.precision, and its les_precision for the linear solver); an HLS design
+    # emitted in another scalar than the Program's sets them (for_config)
+    precision: str | None = None
+    les_precision: str | None = None
 
     @classmethod
     def of(cls, program: Program, **changes) -> PlanOptions:
         base = dict(units=program.solver.units, cpe=program.solver.cpe)
         base.update(changes)
         return cls(**base)
+
+    @classmethod
+    def for_config(cls, config, program: Program, **changes) -> PlanOptions:
+        """The options of the design an HLS config emits for ``program``: the Program's n_u
+        and #CPE, the config's unit sets, and the operators of the scalar types it emits
+        (``HlsConfig.scalar_cxx`` for the whole accelerator, ``linear_cxx`` for the linear
+        solver), not the Program's precision: a float design of a float64 Program is priced in
+        float32 operators."""
+        base = dict(unit_sets=config.unit_sets, precision=scalar_precision(config.scalar_cxx),
+                    les_precision=scalar_precision(config.linear_cxx))
+        base.update(changes)
+        return cls.of(program, **base)
+
+
+def scalar_precision(scalar_cxx: str) -> str:
+    """The operator-table precision of an emitted C++ scalar type."""
+    if scalar_cxx == "float":
+        return "float32"
+    if scalar_cxx == "double":
+        return "float64"
+    raise PlanError(f"no operator table for the scalar type {scalar_cxx!r} (float32 and float64 "
+                    "only: fgc has no fixed-point operator table)")
 
 
 @dataclass(frozen=True)
@@ -110,12 +137,19 @@ class Process:
         return self.loops[0].depth if self.loops else 0
 
 
+PHASE_PER = ("iteration", "call", "rejection")
+
+
 @dataclass(frozen=True)
 class Phase:
     name: str
     dataflow: bool
     processes: tuple[Process, ...]
     linear: bool = False  # part of the linear-equation solver
+    # how often it runs: "iteration" (once an iteration: in Cost.cycles), "call" (once per
+    # accelerator call: the top's copies in and out), "rejection" (when a trial step does not
+    # lower the cost: the rounding-noise pass); the last two are in Cost.other_cycles
+    per: str = "iteration"
 
 
 @dataclass(frozen=True)
@@ -151,7 +185,8 @@ class Memory:
 @dataclass(frozen=True)
 class Channel:
     name: str
-    kind: str  # "stream" (FIFO), "pingpong", or "buffer" (written by a region, read by the next)
+    kind: str  # "stream" (FIFO), or "pingpong" (two buffers: region j writes one while it reads
+    # the other, which region j - 1 wrote; the next region swaps them)
     depth: int
     width: int
     producer: str
@@ -189,6 +224,7 @@ class Cost:
     over: tuple[str, ...]  # resources over the part's capacity
     dsp_by_unit: tuple[tuple[str, int], ...] = ()  # (unit, DSP of all its instances)
     words: int = 0  # words the plan's memories hold (channels not counted)
+    other_cycles: tuple[tuple[str, int], ...] = ()  # phases not run every iteration (Phase.per)
 
     @property
     def latency_ms(self) -> float:
@@ -357,6 +393,189 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     return loops
 
 
+def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
+    """(II, depth) of each kind of loop the emitted kernel runs around the units
+    (accel.cpp.jinja prints these numbers into its FGC_CYCLES counters, so plan and count share
+    them; what is counted is how often each loop runs and its trip count at run time):
+
+    - ``move``: one word read and written a cycle (II 1, depth 2); ``fill``: one word written
+      a cycle (II 1, depth 1);
+    - ``acc``: a sum of products into one accumulator: the recurrence through the adder sets
+      II = add latency, depth multiply + add; ``acc2``: two such sums side by side (the step
+      test's |δ|² and δ·(g + μδ)), depth 2 (multiply + add);
+    - ``sum``: a running sum (II = depth = add latency); ``rmw``: ``+=`` into a table-addressed
+      memory (the address may repeat: II = add latency, depth read + add + write);
+    - ``max``: a running maximum (compare and select: II = compare latency, depth + 2);
+    - ``root``: one square root (√μ); ``decision``: LM control's scalar decision (gain ratio
+      divide, two multiplies, two adds, a compare); ``retract``: the state update, one variable
+      a cycle through a retraction (square root, divide, sin/cos, four multiply-adds deep).
+    """
+    la, lm, lc = ops.add.latency, ops.mul.latency, ops.compare.latency
+    return {"move": (1, 2), "fill": (1, 1), "acc": (la, lm + la), "acc2": (la, 2 * (lm + la)),
+            "sum": (la, la), "rmw": (la, la + 2), "max": (lc, lc + 2),
+            "root": (1, ops.sqrt.latency),
+            "decision": (1, ops.div.latency + 2 * lm + 2 * la + lc),
+            "retract": (1, ops.sqrt.latency + ops.div.latency + ops.sincos.latency
+                        + 4 * (lm + la))}
+
+
+def _kloop(name: str, trip: int, kind: str, timing: dict, repeat: int = 1) -> Loop:
+    ii, depth = timing[kind]
+    return Loop(name, trip, ii, depth, repeat)
+
+
+def _block_shape(block) -> tuple[int, int, int, object]:
+    """(m, d, padded row stride, Gram tiles) of a block type as the emitted kernel lays it out
+    (fgc_backends.cfamily.blocks' pattern: rows padded to whole TILEs)."""
+    from fgc_backends.cfamily.blocks import NOISE_KINDS
+    from fgc_backends.cfamily.sparsity import block_pattern
+
+    kinds = tuple(NOISE_KINDS[m.noise_kind] for m in block.members)
+    pattern = block_pattern(block, kinds, f"block {block.name!r}")
+    return block.residual_dim, sum(block.variable_dims), pattern.padded, pattern.tiles()
+
+
+def _tables(program) -> dict:
+    """The emitted constant tables by name (the same arrays the kernel steps through)."""
+    from fgc_backends.cfamily.tables import build_tables
+    t = build_tables(program, damped=program.solver.method == "lm",
+                     cholesky=program.solver.linear == "cholesky")
+    return {a.name: a.values for a in t.arrays}
+
+
+def gradient_loops(program, timing: dict) -> list[Process]:
+    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded, the
+    column map, A^T b row by row, the finiteness check, the scatter into G), after G is zeroed."""
+    from fgc_backends.cfamily.sparsity import TILE
+
+    n_t = sum(v.dim for v in program.variables)
+    procs = [Process("zero_gradient", "gradient", (_kloop("zero", n_t, "fill", timing),))]
+    for i, b in enumerate(program.blocks):
+        m, d, padded, _ = _block_shape(b)
+        n = sum(1 for f in program.factors if f.block == i)
+        procs.append(Process(f"reduce_{i}", "gradient", (
+            _kloop("load", m * padded, "move", timing, n),
+            _kloop("columns", d, "fill", timing, n),
+            _kloop("rows", m, "acc", timing, n),
+            _kloop("check", padded // TILE, "sum", timing, n),
+            _kloop("scatter", d, "rmw", timing, n))))
+    return procs
+
+
+def hgc_loops(program, timing: dict) -> list[Process]:
+    """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded, the
+    column map, the Gram panels - one row of a panel a cycle into TILE x (tiles TILE)
+    accumulators, II = the adder latency - each panel out, the packing of the lower triangle,
+    its copy into GRAM, the gradient scatter and the finiteness check), after G is zeroed."""
+    from fgc_backends.cfamily.sparsity import TILE
+
+    n_t = sum(v.dim for v in program.variables)
+    procs = [Process("zero_gradient", "hgc", (_kloop("zero", n_t, "fill", timing),))]
+    for i, b in enumerate(program.blocks):
+        m, d, padded, tiles = _block_shape(b)
+        n = sum(1 for f in program.factors if f.block == i)
+        cols = d + 1
+        loops = [_kloop("load", m * padded, "move", timing, n),
+                 _kloop("columns", d, "fill", timing, n),
+                 _kloop("zero_square", padded * padded, "fill", timing, n)]
+        for k in range(tiles.count):
+            rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
+            loops += [_kloop("panel", rows, "acc", timing, n),
+                      _kloop("panel_out", TILE * wide * TILE, "fill", timing, n)]
+        loops += [_kloop("pack", cols * cols, "fill", timing, n),
+                  _kloop("gram_out", cols * (cols + 1) // 2, "move", timing, n),
+                  _kloop("scatter", d, "rmw", timing, n),
+                  _kloop("check", cols, "sum", timing, n)]
+        procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
+    return procs
+
+
+def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
+                timing: dict) -> list[Loop]:
+    """accel.cpp.jinja's stack() of step s into its unit set's banks: the rows zeroed (all
+    n_u banks a cycle), each factor's rows [A | b] and each child's new-factor rows a word a
+    cycle, the damping rows' diagonal."""
+    f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
+    local = -(-(max_w + 1) // units)
+    loops = [_kloop("zero", m * local, "fill", timing)]
+    fb = tables["STEP_FACTOR_BEGIN"]
+    for e in range(fb[s], fb[s + 1]):
+        fac = tables["STEP_FACTORS"][e]
+        words = tables["FACTOR_A_OFF"][fac + 1] - tables["FACTOR_A_OFF"][fac]
+        loops.append(_kloop("factor_rows", words, "move", timing))
+    cb = tables["STEP_CHILD_BEGIN"]
+    for e in range(cb[s], cb[s + 1]):
+        c = tables["STEP_CHILDREN"][e]
+        sc = tables["STEP_W"][c] - tables["STEP_F"][c]
+        loops.append(_kloop("child_rows", tables["STEP_NF_ROWS"][c] * (sc + 1), "move", timing))
+    if damped:
+        loops.append(_kloop("damping", f, "fill", timing))
+    return loops
+
+
+def commit_loops(tables: dict, s: int, timing: dict, cholesky: bool) -> list[Loop]:
+    """A step's conditional into COND and its new factor (QR's commit(): STEP_NF_ROWS rows)
+    or update matrix (Cholesky's store at the end of eliminate(): w - f rows) into NF, a word a
+    cycle."""
+    w, f = tables["STEP_W"][s], tables["STEP_F"][s]
+    nf = w - f if cholesky else tables["STEP_NF_ROWS"][s]
+    return [_kloop("cond", f * (w + 1), "move", timing),
+            _kloop("nf", nf * (w - f + 1), "move", timing)]
+
+
+def assemble_loops(tables: dict, s: int, max_w: int, timing: dict) -> list[Loop]:
+    """Cholesky's eliminate(): step s's [H | g] zeroed (MAX_W + 1 words a row, a word a cycle),
+    then per factor its Gram's lower triangle added row by row and its gradient entries, per
+    child its update matrix's rows and gradient entries (each += into the table-addressed
+    frontal matrix)."""
+    w = tables["STEP_W"][s]
+    loops = [_kloop("zero", w * (max_w + 1), "fill", timing)]
+    fb = tables["STEP_FACTOR_BEGIN"]
+    for e in range(fb[s], fb[s + 1]):
+        fac = tables["STEP_FACTORS"][e]
+        d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
+        loops += [_kloop("gram_row", p + 1, "rmw", timing) for p in range(d)]
+        loops.append(_kloop("gram_gradient", d, "rmw", timing))
+    cb = tables["STEP_CHILD_BEGIN"]
+    for e in range(cb[s], cb[s + 1]):
+        c = tables["STEP_CHILDREN"][e]
+        sc = tables["STEP_W"][c] - tables["STEP_F"][c]
+        for a in range(sc):
+            loops += [_kloop("child_row", sc - a, "rmw", timing),
+                      _kloop("child_gradient", 1, "rmw", timing)]
+    return loops
+
+
+def backsub_copies(tables: dict, s: int, timing: dict) -> tuple[list[Loop], list[Loop]]:
+    """back_substitute()'s copies around cond_backsub for step s: the conditional from COND and
+    the separator's solution in; the frontal solution out."""
+    w, f = tables["STEP_W"][s], tables["STEP_F"][s]
+    return ([_kloop("cond_in", f * (w + 1), "move", timing),
+             _kloop("separator_in", w - f, "move", timing)],
+            [_kloop("solution_out", f, "move", timing)])
+
+
+def rounding_noise_loops(program, timing: dict) -> list[Process]:
+    """rounding_noise_all(): each variable's largest storage entry, then per instance its rows
+    loaded, the column scales, the rows' moved terms (a row a cycle, its TILE partial sums
+    unrolled) and their sum (TILE rows a step into TILE partial sums)."""
+    from fgc_backends.cfamily.sparsity import TILE
+
+    la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
+    procs = [Process("variable_scale", "lm_control", tuple(
+        _kloop("scale", v.storage_dim, "max", timing) for v in program.variables))]
+    for i, b in enumerate(program.blocks):
+        m, _, padded, _ = _block_shape(b)
+        n = sum(1 for f in program.factors if f.block == i)
+        row_depth = 2 * lm + la * (padded // TILE + 2)
+        procs.append(Process(f"noise_{i}", "lm_control", (
+            _kloop("load", m * padded, "move", timing, n),
+            _kloop("scales", padded, "fill", timing, n),
+            Loop("rows", m, 1, row_depth, n),
+            _kloop("terms", -(-m // TILE), "acc2", timing, n))))
+    return procs
+
+
 def _sim_table(ops: OperatorTable):
     from fgc_backends.cost.params import OperatorCost
     from fgc_backends.cost.params import OperatorTable as SimTable
@@ -390,8 +609,11 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     for kind, n in alloc.items():
         if n < 1:
             raise PlanError(f"ALLOCATION limit of {kind} must be ≥ 1, got {n}")
-    ops = table(program.solver.precision)
-    les = table(program.solver.les_precision)
+    precision = opts.precision or program.solver.precision
+    les_precision = opts.les_precision or (program.solver.les_precision if opts.precision is None
+                                           else precision)
+    ops = table(precision)
+    les = table(les_precision)
     sim_ops = _sim_table(ops)
     units, memories, channels, phases = [], [], [], []
 
@@ -422,6 +644,9 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
         memories.append(Memory(f"ab_{i}", words, ops.word_bits, 1))
     # the emitted instance loops (evaluate_<b>, cost_of_<b>) run one block type after another
     phases.append(Phase("factor_jacobian", False, tuple(jac)))
+    timing = kernel_timing(ops)
+    if program.solver.linear == "qr":  # Cholesky's gradient comes with the HGC (_cholesky)
+        phases.append(Phase("gradient", False, tuple(gradient_loops(program, timing))))
     if opts.jacobian_storage == "raw":
         # whitening while stacking: W·[J | -r] of each instance, one multiply-accumulate a
         # cycle in each of n_u lanes, before the solver reads the rows
@@ -436,27 +661,39 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     else:
         _cholesky(program, opts, les, units, memories, channels, phases)
 
-    # state update: one retract per variable, pipelined one a cycle
-    n_var = len(program.variables)
-    retract_depth = (ops.sqrt.latency + ops.div.latency + ops.sincos.latency
-                     + 4 * (ops.mul.latency + ops.add.latency))
+    # state update: one retract per variable, pipelined one a cycle, variable type by type
+    # (retract_all's loop per kind)
+    kinds: dict[str, int] = {}
+    for v in program.variables:
+        kinds[v.type_name] = kinds.get(v.type_name, 0) + 1
     units.append(Unit("state_update", "retract x ⊕ δ", 1,
                       (("add", 3), ("mul", 4), ("sqrt", 1), ("div", 1), ("trig", 2))))
-    phases.append(Phase("state_update", False, (
-        Process("retract", "state_update", (Loop("variables", n_var, 1, retract_depth),)),)))
+    phases.append(Phase("state_update", False, (Process("retract", "state_update", tuple(
+        _kloop(f"kind{k}", n, "retract", timing) for k, n in enumerate(kinds.values()))),)))
     phases.append(Phase("factor_cost", False, tuple(cost)))
-    lm_depth = ops.div.latency + 2 * ops.mul.latency + 2 * ops.add.latency + ops.compare.latency
-    units.append(Unit("lm_control", "gain ratio, μ update, stopping rules", 1,
-                      (("add", 1), ("mul", 1), ("div", 1), ("compare", 1))))
-    phases.append(Phase("lm_control", False, (
-        Process("decide", "lm_control", (Loop("decision", 1, 1, lm_depth),)),)))
     n_x = sum(v.storage_dim for v in program.variables)
     n_t = sum(v.dim for v in program.variables)
+    # LM control (optimize / try_steps): the gradient's largest entry, |x|, the step test over
+    # δ (|δ|² and the predicted decrease), the scalar decision, the accepted x copied back
+    units.append(Unit("lm_control", "gain ratio, μ update, stopping rules", 1,
+                      (("add", 1), ("mul", 1), ("div", 1), ("compare", 1))))
+    phases.append(Phase("lm_control", False, (Process("decide", "lm_control", (
+        _kloop("gradient_max", n_t, "max", timing), _kloop("x_norm", n_x, "acc", timing),
+        _kloop("step_test", n_t, "acc2", timing), _kloop("decision", 1, "decision", timing),
+        _kloop("accept", n_x, "move", timing))),)))
+    # once per call: the top's copies of x and the data in and x out
+    n_data = _sizes(program)["N_DATA"]
+    phases.append(Phase("setup", False, (Process("top", "lm_control", (
+        _kloop("x_in", n_x, "move", timing), _kloop("data_in", n_data, "move", timing),
+        _kloop("x_out", n_x, "move", timing))),), per="call"))
+    # when a trial step does not lower the cost: the rounding-noise band from AB
+    phases.append(Phase("rounding_noise", False, tuple(rounding_noise_loops(program, timing)),
+                        per="rejection"))
     memories.append(Memory("state", n_x, ops.word_bits, 1))  # X
     memories.append(Memory("state_trial", n_x, ops.word_bits, 1))  # X_TRIAL
     memories.append(Memory("gradient_delta", 2 * n_t, ops.word_bits, 2))  # G, DELTA
     memories.append(Memory("data", _sizes(program)["N_DATA"], ops.word_bits, 1))  # DATA_BUF
-    return AcceleratorPlan(program.name, program.solver.linear, program.solver.precision,
+    return AcceleratorPlan(program.name, program.solver.linear, precision,
                            program.solver.clock_mhz, opts, tuple(units), tuple(memories),
                            tuple(channels), tuple(phases), ops)
 
@@ -480,7 +717,7 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
         # the reflector to each Update unit (and its header to collect); each unit streams the
         # next column (its owner's) to Evaluate and its entries of R's row to collect; Evaluate
-        # writes the reflector buffer the next region broadcasts
+        # writes one of the reflector's two buffers, which the next region broadcasts
         for u in range(opts.units):
             channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
                                     ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
@@ -491,7 +728,7 @@ def _qr(program, opts, ops, units, memories, channels, phases):
                                     f"qr{s}_update{u}", f"qr{s}_evaluate"))
             channels.append(Channel(f"qr{s}_row{u}", "stream", 2, ops.word_bits,
                                     f"qr{s}_update{u}", f"qr{s}_collect"))
-        channels.append(Channel(f"qr{s}_vbuf", "buffer", max_rows + 2, ops.word_bits + 32,
+        channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 2, ops.word_bits + 32,
                                 f"qr{s}_evaluate", f"qr{s}_broadcast"))
     # per step: the regions of fgc_qr.h's qr_step (Evaluate of column k+1 overlaps the Update
     # of column k in region k) and its store, one process per step
@@ -500,9 +737,22 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         pattern = patterns[st.index]
         loops = qr_unit_loops(pattern, st.frontal_dim, opts.units, ops, name=f"s{st.index}")
         step_proc.append((st, Process(f"qr_step{st.index}", "qr_update", tuple(loops))))
+    tables = _tables(program)
+    timing = kernel_timing(ops)
+    max_w = _sizes(program)["MAX_W"]
     for li, level in enumerate(sched.levels):
+        # eliminate_all: each step stacked into its unit set's banks (√μ once per solve
+        # first), the level's steps on the unit sets side by side, each result committed
+        stack = [Process("root_mu", "qr_stack", (_kloop("root_mu", 1, "root", timing),))] \
+            if li == 0 else []
+        stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
+            tables, i, opts.units, max_w, damping, timing))) for i in level]
+        phases.append(Phase(f"qr_stack_level{li}", False, tuple(stack), linear=True))
         procs = _assign([p for st, p in step_proc if st.index in level], sets, "qr", li)
         phases.append(Phase(f"qr_level{li}", True, procs, linear=True))
+        phases.append(Phase(f"qr_commit_level{li}", False, tuple(
+            Process(f"commit{i}", "qr_commit", tuple(commit_loops(tables, i, timing, False)))
+            for i in level), linear=True))
     _backsub_phases(program, ops, phases, "backsub")
     units.append(Unit("backsub", "back-substitution (cond_backsub)", 1,
                       (("add", 1), ("mul", 2))))
@@ -543,12 +793,15 @@ def _backsub_phases(program, ops, phases, unit) -> None:
     """The emitted back_substitute: one cond_backsub per step, root first, one after another
     (:func:`backsub_loops`)."""
     sched = program.schedule
+    tables, timing = _tables(program), kernel_timing(ops)
     for li, level in enumerate(sched.back_substitution):
         procs = []
         for i in level:
             st = sched.steps[i]
+            before, after = backsub_copies(tables, i, timing)
             procs.append(Process(f"backsub_step{i}", unit, tuple(
-                backsub_loops(st.frontal_dim, st.separator_dim, ops, name=f"bs{i}"))))
+                before + backsub_loops(st.frontal_dim, st.separator_dim, ops, name=f"bs{i}")
+                + after)))
         phases.append(Phase(f"backsub_level{li}", False, tuple(procs), linear=True))
 
 
@@ -588,9 +841,13 @@ def _cholesky(program, opts, ops, units, memories, channels, phases):
         macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
     units.append(Unit("hgc", "Hessian/gradient accumulation", opts.hgc_lanes,
                       (("add", 1), ("mul", 1))))
-    phases.append(Phase("hgc", False, (Process("hgc", "hgc", (
-        Loop("macs", math.ceil(macs / opts.hgc_lanes), 1,
-             ops.mul.latency + ops.add.latency),)),), linear=True))
+    if opts.hessian_storage == "frontal":  # as emitted: reduce_<b>'s loops (hgc_loops)
+        phases.append(Phase("hgc", False, tuple(hgc_loops(program, kernel_timing(ops))),
+                            linear=True))
+    else:
+        phases.append(Phase("hgc", False, (Process("hgc", "hgc", (
+            Loop("macs", math.ceil(macs / opts.hgc_lanes), 1,
+                 ops.mul.latency + ops.add.latency),)),), linear=True))
     units.append(Unit("cpe", "Cholesky process element: Evaluate + Update", c,
                       (("add", 1), ("mul", 1), ("div", 1), ("sqrt", 1)), extra_dsp=1))
     if opts.hessian_storage == "frontal":
@@ -634,15 +891,27 @@ def _cholesky_frontal(program, opts, ops, units, memories, channels, phases):
     loops = []
     for st in program.schedule.steps:
         loops += cpe_step_loops(st.frontal_dim, st.separator_dim, c, ops, name=f"s{st.index}")
+    tables, timing = _tables(program), kernel_timing(ops)
+    # eliminate(s): [H | g] assembled from GRAM and the children's update matrices, the
+    # cascade, the conditional and update matrix stored into COND / NF
+    phases.append(Phase("assemble", False, tuple(
+        Process(f"assemble{st.index}", "cpe", tuple(assemble_loops(
+            tables, st.index, sizes["MAX_W"], timing))) for st in program.schedule.steps),
+        linear=True))
     phases.append(Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
                         linear=True))
+    phases.append(Phase("store", False, tuple(
+        Process(f"store{st.index}", "cpe", tuple(commit_loops(tables, st.index, timing, True)))
+        for st in program.schedule.steps), linear=True))
     units.append(Unit("trisolve", "back-substitution (cond_backsub; Lz = g rides the cascade)",
                       1, (("add", 1), ("mul", 1), ("div", 1))))
     _backsub_phases(program, ops, phases, "trisolve")
     cols = sizes["MAX_W"] + 1
-    # accel.cpp.jinja's GRAM, HF, CONDBUF, UPDBUF (the frontal matrix of one step at a time)
+    # accel.cpp.jinja's GRAM, HF, CONDBUF, UPDBUF (the frontal matrix of one step at a time) and
+    # cpe_step's second trailing-matrix buffer Hb (the rounds alternate between HF and Hb)
     memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
     memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    memories.append(Memory("frontal_b", sizes["MAX_W"] * cols, ops.word_bits, 1))
     memories.append(Memory("condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
     memories.append(Memory("updbuf", sizes["MAX_W"] * cols, ops.word_bits, 1))
     _solver_memories(sizes, ops, memories)
@@ -714,9 +983,10 @@ def phase_cycles(phase: Phase) -> int:
 
 
 def plan_cost(plan: AcceleratorPlan) -> Cost:
-    per = tuple((ph.name, phase_cycles(ph)) for ph in plan.phases)
+    per = tuple((ph.name, phase_cycles(ph)) for ph in plan.phases if ph.per == "iteration")
+    other = tuple((ph.name, phase_cycles(ph)) for ph in plan.phases if ph.per != "iteration")
     cycles = sum(c for _, c in per)
-    linear = sum(phase_cycles(ph) for ph in plan.phases if ph.linear)
+    linear = sum(phase_cycles(ph) for ph in plan.phases if ph.linear and ph.per == "iteration")
     lut = ff = 0
     by_unit = []
     for u in plan.units:
@@ -728,14 +998,15 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
             ff += u.instances * n * o.ff
         by_unit.append((u.name, unit_dsp))
     dsp = sum(d for _, d in by_unit)
-    channel_mems = tuple(Memory(ch.name, ch.depth, ch.width, 1) for ch in plan.channels)
+    channel_mems = tuple(Memory(ch.name, ch.depth * (2 if ch.kind == "pingpong" else 1), ch.width,
+                                2 if ch.kind == "pingpong" else 1) for ch in plan.channels)
     bram36 = sum(m.bram18 for m in plan.memories + channel_mems) / 2
     over = tuple(name for name, used, cap in (("DSP", dsp, PART_DSP),
                                               ("BRAM36", bram36, PART_BRAM36),
                                               ("LUT", lut, PART_LUT), ("FF", ff, PART_FF))
                  if used > cap)
     return Cost(cycles, per, linear, dsp, lut, ff, bram36, plan.clock_mhz, not over, over,
-                tuple(by_unit), sum(m.words for m in plan.memories))
+                tuple(by_unit), sum(m.words for m in plan.memories), other)
 
 
 def plan_power_w(cost: Cost) -> float:

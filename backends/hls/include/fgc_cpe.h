@@ -19,7 +19,8 @@
 // i <= c < w is the upper triangle of the frontal-and-separator Hessian (the sum of its factors'
 // Grams and its children's update matrices), H[i][w] the gradient; entries left of the diagonal
 // are not read. mu (Levenberg-Marquardt damping, 0 for Gauss-Newton) is added to the f frontal
-// diagonal entries here. H is overwritten.
+// diagonal entries here. H is overwritten (it is one of the cascade's two trailing-matrix
+// buffers; cpe_step holds the other).
 //
 // Out:
 // - cond: the conditional (R | S | d): rows 0 ... f - 1 of U = L^T, row-major with w + 1 columns,
@@ -47,22 +48,25 @@
 // ---- structure (UG1399 canonical dataflow) -------------------------------------------------
 //
 // Round r (pivots p0 = r N_CPE ... min(f, p0 + N_CPE) - 1) is one DATAFLOW region, cpe_round; the
-// rounds are a sequential loop in cpe_step (round r + 1 reads what round r wrote back):
+// rounds are a sequential loop in cpe_step (round r + 1 reads what round r wrote back). The
+// trailing matrix goes from round to round through two arrays, H and cpe_step's own Hb,
+// alternating with the parity of r: round r reads one (Hin, only read in the region) and writes
+// the other (Hout, only written), round r + 1 the other way round:
 //
-//   cpe_feed      streams rows p0 ... w - 1 of [H | g], row i from its diagonal to the gradient
-//                 (w + 1 - i words), then a status word 0, into link[0]; H is a function argument
-//                 read here and written by cpe_drain (read before write);
+//   cpe_feed      streams rows p0 ... w - 1 of Hin, row i from its diagonal to the gradient
+//                 (w + 1 - i words), then a status word 0, into link[0];
 //   cpe<K>        K = 0 ... N_CPE - 1 (one process each, through cpe_cascade): reads link[K],
 //                 writes link[K + 1]. Its pivot is p = p0 + K (none if p >= f: it passes every
 //                 word). Rows p0 ... p - 1 (rows of U of the CPEs before it) pass; row p is the
 //                 first row it changes: Evaluate (check, sqrt, 1 / pivot, the row of U, kept in
 //                 the CPE and passed on); every later row is Updated entry by entry and passed on.
 //                 The status word passes ORed with its own not-positive-definite flag;
-//   cpe_drain     writes the words back into H (rows of U and the trailing matrix); the round's
+//   cpe_drain     writes the words into Hout (rows of U and the trailing matrix); the round's
 //                 final rows also straight out: its pivots' rows of U into cond (and their frontal
 //                 entries' largest magnitude into its scale output) and, in the last round, the
 //                 trailing rows into update; the status into its output argument. It is the only
-//                 writer of cond, update, the scale and the status in the region.
+//                 writer of Hout, cond, update, the scale and the status in the region; each
+//                 stream and array of the region has one writer and one later reader.
 //
 // cpe_step adds mu first (sequential), runs the rounds, and checks the pivots against the largest
 // scale of the rounds last (sequential, f compares): no copy of the factor after the cascade.
@@ -110,7 +114,7 @@ inline int cpe_words(int first, int w) {
 
 // Stream rows p0 ... w - 1 (upper triangle and gradient), then the status word.
 template <class CFG>
-void cpe_feed(const typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int p0, int w,
+void cpe_feed(const typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int w,
               hls::stream<typename CFG::T>& out) {
     typedef typename CFG::T T;
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
@@ -120,7 +124,7 @@ void cpe_feed(const typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int p0, int w,
     for (int t = 0; t < words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
-        out.write(H[i][c]);
+        out.write(Hin[i][c]);
         if (c == w) {
             ++i;
             c = i;
@@ -214,12 +218,12 @@ struct cpe_cascade<CFG, K, true> {
     }
 };
 
-// Write the round's words back into H, the final ones also out: the rows of U of the round's
+// Write the round's words into Hout, the final ones also out: the rows of U of the round's
 // pivots into cond (their frontal entries' largest magnitude into *scale) and, in the last round,
 // the trailing rows into update; the status into *bad.
 template <class CFG>
 void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
-               typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS],
+               typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS], typename CFG::T* scale,
                bool* bad) {
@@ -236,7 +240,7 @@ void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
         const T x = in.read();
-        H[i][c] = x;
+        Hout[i][c] = x;
         if (i < done) {
             cond[i * cols + c] = x;
             const T mag = c < f ? cpe_abs(x) : T(0);
@@ -258,7 +262,8 @@ void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
 
 // One round of N_CPE pivots from p0: the DATAFLOW region (see the top of the file).
 template <class CFG>
-void cpe_round(int p0, int w, int f, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS],
+void cpe_round(int p0, int w, int f, const typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS],
+               typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS], typename CFG::T* scale,
                bool* bad) {
@@ -267,9 +272,9 @@ void cpe_round(int p0, int w, int f, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS
     hls::stream<typename CFG::T> link[CFG::N_CPE + 1];
 #pragma HLS STREAM variable=link depth=LINK_DEPTH
     FGC_REGION("cpe_round");
-    cpe_feed<CFG>(H, p0, w, link[0]);
+    cpe_feed<CFG>(Hin, p0, w, link[0]);
     cpe_cascade<CFG, 0>::run(p0, w, f, link);
-    cpe_drain<CFG>(link[CFG::N_CPE], p0, w, f, H, cond, update, scale, bad);
+    cpe_drain<CFG>(link[CFG::N_CPE], p0, w, f, Hout, cond, update, scale, bad);
     FGC_DRAINED(link, CFG::N_CPE + 1);  // csim only (fgc_cycles.h)
 }
 
@@ -296,11 +301,19 @@ void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typena
     FGC_CYCLES("cpe_step", 0, "damping", f, 1, CFG::ADD_LAT);
     bool npd = false;
     T scale = T(0);
-    for (int p0 = 0; p0 < f; p0 += CFG::N_CPE) {
+    // the trailing matrix's second buffer: round r reads H and writes Hb for even r, the other
+    // way round for odd r (a ping-pong between rounds, no array read and written in one)
+    T Hb[CFG::MAX_W][CFG::MAX_COLS];
+    for (int r = 0; r * CFG::N_CPE < f; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_ROUNDS
+        const int p0 = r * CFG::N_CPE;
         bool round_bad = false;
         T round_scale = T(0);
-        cpe_round<CFG>(p0, w, f, H, cond, update, &round_scale, &round_bad);
+        if ((r & 1) == 0) {
+            cpe_round<CFG>(p0, w, f, H, Hb, cond, update, &round_scale, &round_bad);
+        } else {
+            cpe_round<CFG>(p0, w, f, Hb, H, cond, update, &round_scale, &round_bad);
+        }
         FGC_SEQUENTIAL();
         npd = npd || round_bad;
         scale = round_scale > scale ? round_scale : scale;

@@ -17,6 +17,13 @@
 // as plan_cost does; and no less than the end of a process that waits for another's loop
 // (FGC_WAIT: the QR Evaluate reads the column the Update unit streams it): its first loop ends
 // its depth after that loop, its other loops follow.
+//
+// The kernel's own loops (factor datapaths, gradient / HGC, stacking, commit, assembly, state
+// update, LM control, the rounding-noise pass) report themselves the same way. FGC_PHASE(name)
+// names the plan phase (group) the following records belong to, and FGC_EVENT(name) counts one
+// execution of something the plan prices per execution (a linearisation, a linear solve, a
+// retraction, a cost pass, ...); fgc_cycles::phase_totals() applies total()'s arithmetic to each
+// run of records of one phase, and fgc_cycles::events() lists the counts.
 #ifndef FGC_CYCLES_H
 #define FGC_CYCLES_H
 
@@ -34,6 +41,7 @@ namespace fgc_cycles {
 struct Record {
     long region;  // index of the DATAFLOW region entry, -1 outside any region
     std::string region_name;
+    std::string phase;  // the plan phase (FGC_PHASE) the record belongs to
     std::string process;
     int instance;  // unit index (Update unit, CPE), 0 for single processes
     std::string loop;
@@ -53,6 +61,8 @@ struct State {
     long regions = 0;
     long current = -1;
     std::string current_name;
+    std::string phase;
+    std::map<std::string, long> events;
 };
 
 inline State& state() {
@@ -70,6 +80,9 @@ inline void region(const char* name) {
     s.current_name = name;
 }
 
+inline void phase(const char* name) { state().phase = name; }
+inline void event(const char* name) { ++state().events[name]; }
+
 inline void branch() { state().marks.push_back(std::make_pair(state().records.size(), 'b')); }
 inline void join() { state().marks.push_back(std::make_pair(state().records.size(), 'j')); }
 
@@ -81,15 +94,15 @@ inline void sequential() {
 inline void add(const char* process, int instance, const char* loop, long trip, long ii,
                 long depth) {
     State& s = state();
-    s.records.push_back(Record{s.current, s.current_name, process, instance, loop, trip, ii,
-                               depth, "", "", 0});
+    s.records.push_back(Record{s.current, s.current_name, s.phase, process, instance, loop, trip,
+                               ii, depth, "", "", 0});
 }
 
 inline void wait(const char* process, int instance, const char* on_process, int on_instance,
                  const char* on_loop) {
     State& s = state();
-    s.records.push_back(Record{s.current, s.current_name, process, instance, "wait", 0, 1, 0,
-                               on_process, on_loop, on_instance});
+    s.records.push_back(Record{s.current, s.current_name, s.phase, process, instance, "wait", 0,
+                               1, 0, on_process, on_loop, on_instance});
 }
 
 inline bool ends_with(const std::string& text, const std::string& tail) {
@@ -162,14 +175,15 @@ inline long total_range(std::size_t from, std::size_t to) {
     return sum;
 }
 
-// The whole log: sequential stretches add up; a parallel group (branches marked by FGC_BRANCH
-// up to FGC_JOIN, e.g. the unit sets of one QR level) takes its slowest branch plus the fill
-// (first loop's depth) of each other branch, as plan_cost prices a dataflow phase.
-inline long total() {
+// Records [from, to) of the log: sequential stretches add up; a parallel group (branches marked
+// by FGC_BRANCH up to FGC_JOIN, e.g. the unit sets of one QR level) takes its slowest branch
+// plus the fill (first loop's depth) of each other branch, as plan_cost prices a dataflow phase.
+// A branch mark at `from` and a join mark at `to` belong to the span.
+inline long span_total(std::size_t from, std::size_t to) {
     const State& s = state();
     const std::vector<Record>& r = s.records;
     long sum = 0, slow = 0, slow_fill = 0, fills = 0;
-    std::size_t at = 0, start = 0;
+    std::size_t at = from, start = from;
     bool open = false;
     auto close_branch = [&](std::size_t end) {
         const long c = total_range(start, end);
@@ -189,6 +203,8 @@ inline long total() {
         }
     };
     for (const auto& m : s.marks) {
+        if (m.second == 'b' ? (m.first < from || m.first >= to) : (m.first <= from || m.first > to))
+            continue;
         if (m.second == 'b') {
             if (!open) {
                 sum += total_range(at, m.first);
@@ -205,8 +221,32 @@ inline long total() {
             at = m.first;
         }
     }
-    return sum + total_range(at, r.size());
+    if (open) {  // a group the span ends inside: its branches so far
+        close_branch(to);
+        return sum + slow + fills;
+    }
+    return sum + total_range(at, to);
 }
+
+// The whole log.
+inline long total() { return span_total(0, log().size()); }
+
+// Per phase (FGC_PHASE), the cycles of its records: each run of consecutive records of one
+// phase priced as span_total prices it, the runs of a phase added up.
+inline std::map<std::string, long> phase_totals() {
+    const std::vector<Record>& r = log();
+    std::map<std::string, long> out;
+    std::size_t i = 0;
+    while (i < r.size()) {
+        std::size_t j = i;
+        while (j < r.size() && r[j].phase == r[i].phase) ++j;
+        out[r[i].phase] += span_total(i, j);
+        i = j;
+    }
+    return out;
+}
+
+inline const std::map<std::string, long>& events() { return state().events; }
 
 // One line per record: region, process, instance, loop, trip, II, depth, cycles.
 inline void dump(std::FILE* out) {
@@ -240,6 +280,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) \
     ::fgc_cycles::wait(process, instance, on_process, on_instance, on_loop)
 #define FGC_DRAINED(streams, n) ::fgc_cycles::drained(streams, n, #streams)
+#define FGC_PHASE(name) ::fgc_cycles::phase(name)
+#define FGC_EVENT(name) ::fgc_cycles::event(name)
 
 #else
 
@@ -250,6 +292,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_JOIN() ((void)0)
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) ((void)0)
 #define FGC_DRAINED(streams, n) ((void)0)
+#define FGC_PHASE(name) ((void)0)
+#define FGC_EVENT(name) ((void)0)
 
 #endif  // FGC_COUNT_CYCLES
 

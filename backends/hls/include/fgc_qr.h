@@ -52,29 +52,33 @@
 // ---- structure (UG1399 canonical dataflow) -------------------------------------------------
 //
 // A reflection's next pivot column depends on its Update, so the reflections are a sequential
-// loop in qr_step, one DATAFLOW region (qr_reflection) each, j = -1 ... k - 1. Region j:
+// loop in qr_step, one DATAFLOW region (qr_reflection) each, j = -1 ... k - 1. The Householder
+// vector goes from one region to the next through two buffers, va and vb, alternating with the
+// parity of j: region j reads one (vin) and writes the other (vout), region j + 1 the other way
+// round, so within a region each buffer is only read or only written. Region j:
 //
-//   qr_broadcast      reads the Householder vector of column j (vbuf, written by region j - 1's
-//                     Evaluate; a function argument read before it is written) and streams it to
-//                     each Update unit (vq[u]), its header (R_jj) to the collector (hq);
+//   qr_broadcast      reads the Householder vector of column j (vin, written by region j - 1's
+//                     Evaluate) and streams it to each Update unit (vq[u]), its header (R_jj) to
+//                     the collector (hq);
 //   qr_update<u>      u = 0 ... N_UNITS - 1 (one process each, through qr_update_units): applies
 //                     reflection j to its own columns c > j, c % N_UNITS == u, in ascending order,
-//                     in its own bank work[u] (read and written by that process only); each
-//                     column's entry in row j, final now, goes to the collector (rowq[u]); the
-//                     unit holding column j + 1 updates it first and streams it (rows j + 1 ...
-//                     rows - 1) to the Evaluate (colq[u]) in the same pass; each unit takes its
-//                     first column's dot product while the vector arrives;
+//                     in its own bank work[u] (read and written by that process only: its
+//                     memory, no channel); each column's entry in row j, final now, goes to the
+//                     collector (rowq[u]); the unit holding column j + 1 updates it first and
+//                     streams it (rows j + 1 ... rows - 1) to the Evaluate (colq[u]) in the same
+//                     pass; each unit takes its first column's dot product while the vector
+//                     arrives;
 //   qr_evaluate       builds the Householder vector of column j + 1 from that stream while the
-//                     other columns are still being updated, and writes it to vbuf;
+//                     other columns are still being updated, and writes it to vout;
 //   qr_collect        writes row j of R (zeros, R_jj, then the units' entries in column order)
-//                     into cond or update and keeps the running scale (an argument read before
-//                     written).
+//                     into cond or update and keeps the running scale (its own memory).
 //
-// Each stream has one writer and one reader, no process returns a value, no channel goes back;
-// cond, update and the scale have one writer (the collector). Region -1 only streams column 0 to
-// the Evaluate (an empty reflection); region k - 1 only applies the last reflection. After the
-// loop qr_step checks the f pivots against the scale (sequential) and writes *singular: no pass
-// over the factor after the reflections.
+// Each stream has one writer and one later reader, no process returns a value, no channel goes
+// back; vin is only read (by the broadcast), vout only written (by the Evaluate); cond, update
+// and the scale have one writer (the collector). Region -1 only streams column 0 to the Evaluate
+// (an empty reflection); region k - 1 only applies the last reflection. After the loop qr_step
+// checks the f pivots against the scale (sequential) and writes *singular: no pass over the
+// factor after the reflections.
 //
 // ---- cycles -------------------------------------------------------------------------------
 //
@@ -151,19 +155,19 @@ inline void qr_put(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_
 
 // ---- the processes of one reflection ---------------------------------------------------------
 
-// Stream the Householder vector in vbuf to every Update unit, its two header words also to the
+// Stream the Householder vector in vin to every Update unit, its two header words also to the
 // collector.
 template <class CFG>
-void qr_broadcast(const qr_word<typename CFG::T> vbuf[CFG::MAX_ROWS + 2],
+void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 2],
                   hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
                   hls::stream<qr_word<typename CFG::T> >& hq) {
     enum { MAX_WORDS = CFG::MAX_ROWS + 2 };
-    const int words = vbuf[0].idx + 2;
+    const int words = vin[0].idx + 2;
     // trip n + 2, II 1, depth 2 (read, write)
     for (int a = 0; a < words; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
-        const qr_word<typename CFG::T> x = vbuf[a];
+        const qr_word<typename CFG::T> x = vin[a];
         for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
             vq[u].write(x);
@@ -329,10 +333,10 @@ struct qr_update_units<CFG, U, true> {
 };
 
 // Evaluate: the Householder vector of column j + 1 (if j + 1 < k) from the stream of the unit
-// that holds it, into vbuf ({tau, n}, {R, j + 1}, n words {v_a, row}).
+// that holds it, into vout ({tau, n}, {R, j + 1}, n words {v_a, row}).
 template <class CFG>
 void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS],
-                 qr_word<typename CFG::T> vbuf[CFG::MAX_ROWS + 2]) {
+                 qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 2]) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     const int col = j + 1;
@@ -364,10 +368,10 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     }
     FGC_CYCLES("qr_evaluate", 0, "receive", rows - col, 1, 2);
     if (big == T(0)) {  // nothing to reflect
-        vbuf[0].val = T(0);
-        vbuf[0].idx = 0;
-        vbuf[1].val = T(0);
-        vbuf[1].idx = col;
+        vout[0].val = T(0);
+        vout[0].idx = 0;
+        vout[1].val = T(0);
+        vout[1].idx = col;
         return;
     }
     T part[P];
@@ -376,7 +380,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS UNROLL
         part[t] = T(0);
     }
-    // v = x / big, v.v, and v into vbuf as it comes (v_0 is corrected below):
+    // v = x / big, v.v, and v into vout as it comes (v_0 is corrected below):
     // trip n, II ceil(La / min(n, P)), depth Ld + dot depth
     for (int a = 0; a < n; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
@@ -384,8 +388,8 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS DEPENDENCE variable=part inter false
         const T va = x[a] / big;
         if (a == 0) x[0] = va;
-        vbuf[2 + a].val = va;
-        vbuf[2 + a].idx = at[a];
+        vout[2 + a].val = va;
+        vout[2 + a].idx = at[a];
         part[a % P] += va * va;
     }
     FGC_CYCLES("qr_evaluate", 0, "norm", n, dot_ii(n, P, CFG::ADD_LAT),
@@ -398,11 +402,11 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     // sqrt, alpha * pivot, subtract, divide: depth Ls + Lm + La + Ld
     FGC_CYCLES("qr_evaluate", 0, "tail", 1, 1,
                CFG::SQRT_LAT + CFG::MUL_LAT + CFG::ADD_LAT + CFG::DIV_LAT);
-    vbuf[0].val = tau;
-    vbuf[0].idx = n;
-    vbuf[1].val = alpha * big;
-    vbuf[1].idx = col;
-    vbuf[2].val = pivot - alpha;
+    vout[0].val = tau;
+    vout[0].idx = n;
+    vout[1].val = alpha * big;
+    vout[1].idx = col;
+    vout[2].val = pivot - alpha;
 }
 
 // The collector: row j of R, final after reflection j (R_jj from the header, the rest from the
@@ -453,7 +457,8 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<qr_word<typena
 // One reflection: the DATAFLOW region (see the top of the file).
 template <class CFG>
 void qr_reflection(int j, int rows, int f, int s, int cols, int k,
-                   qr_word<typename CFG::T> vbuf[CFG::MAX_ROWS + 2],
+                   const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 2],
+                   qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 2],
                    typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
                    typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                    typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
@@ -468,9 +473,9 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     hls::stream<typename CFG::T> rowq[CFG::N_UNITS];
 #pragma HLS STREAM variable=rowq depth=CFG::LOCAL_COLS
     FGC_REGION("qr_reflection");
-    qr_broadcast<CFG>(vbuf, vq, hq);
+    qr_broadcast<CFG>(vin, vq, hq);
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, work, colq, rowq);
-    qr_evaluate<CFG>(j, rows, k, colq, vbuf);
+    qr_evaluate<CFG>(j, rows, k, colq, vout);
     qr_collect<CFG>(j, rows, f, s, k, hq, rowq, cond, update, scale);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
     FGC_DRAINED(colq, CFG::N_UNITS);
@@ -493,15 +498,21 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
     }
     const int k = rows < cols ? rows : cols;
     enum { MAX_REGIONS = CFG::MAX_COLS + 1 };
-    qr_word<T> vbuf[CFG::MAX_ROWS + 2];
-    vbuf[0].val = T(0);  // region -1: an empty reflection
-    vbuf[0].idx = 0;
-    vbuf[1].val = T(0);
-    vbuf[1].idx = -1;
+    // the reflector's two buffers: region j reads va and writes vb for even j + 1, the other way
+    // round for odd j + 1 (a ping-pong between regions, no buffer read and written in one)
+    qr_word<T> va[CFG::MAX_ROWS + 2], vb[CFG::MAX_ROWS + 2];
+    va[0].val = T(0);  // region -1 reads va: an empty reflection
+    va[0].idx = 0;
+    va[1].val = T(0);
+    va[1].idx = -1;
     T scale = T(0);
     for (int j = -1; j < k; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
-        qr_reflection<CFG>(j, rows, f, s, cols, k, vbuf, work, cond, update, &scale);
+        if (((j + 1) & 1) == 0) {
+            qr_reflection<CFG>(j, rows, f, s, cols, k, va, vb, work, cond, update, &scale);
+        } else {
+            qr_reflection<CFG>(j, rows, f, s, cols, k, vb, va, work, cond, update, &scale);
+        }
         FGC_SEQUENTIAL();
     }
     // the pivots against the scale: trip f, II 1, depth 2 (read, compare)

@@ -1993,8 +1993,15 @@ void gram_panel(const T ab[], const int rows[], int first, int n, int p0, int q0
         }
     }
     for (int i = 0; i < TILE; ++i) {
-        for (int j = 0; j < WIDE * TILE; ++j) sq[(p0 + i) * STRIDE + q0 + j] = acc[i][j];
+        for (int j = 0; j < WIDE * TILE; ++j) {
+#pragma HLS PIPELINE II=1
+            sq[(p0 + i) * STRIDE + q0 + j] = acc[i][j];
+        }
     }
+    // a row of the panel a cycle (the accumulators' recurrence through the adder sets the II),
+    // then the panel out a word a cycle
+    FGC_CYCLES("hgc", 0, "panel", n, 11, 19);
+    FGC_CYCLES("hgc", 0, "panel_out", TILE * WIDE * TILE, 1, 1);
 }
 
 // The packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p < COLS, at p (p + 1) / 2
@@ -2002,7 +2009,11 @@ void gram_panel(const T ab[], const int rows[], int first, int n, int p0, int q0
 template <int STRIDE, int COLS, int ROWS, int PANELS, int TILES>
 void gram(const T ab[], const int tiles[], const int rows[], L out[]) {
     L sq[STRIDE * STRIDE];
-    for (int i = 0; i < STRIDE * STRIDE; ++i) sq[i] = L(0);
+    for (int i = 0; i < STRIDE * STRIDE; ++i) {
+#pragma HLS PIPELINE II=1
+        sq[i] = L(0);
+    }
+    FGC_CYCLES("hgc", 0, "zero_square", STRIDE * STRIDE, 1, 1);
     for (int t = 0; t < PANELS; ++t) {
         const int p0 = tiles[5 * t], q0 = tiles[5 * t + 1], first = tiles[5 * t + 2];
         const int n = tiles[5 * t + 3];
@@ -2014,9 +2025,11 @@ void gram(const T ab[], const int tiles[], const int rows[], L out[]) {
     }
     for (int p = 0; p < COLS; ++p) {
         for (int q = 0; q < COLS; ++q) {
+#pragma HLS PIPELINE II=1
             if (q <= p) out[p * (p + 1) / 2 + q] = sq[p * STRIDE + q];
         }
     }
+    FGC_CYCLES("hgc", 0, "pack", COLS * COLS, 1, 1);
 }
 
 // From one instance's packed Gram of [A | b] (row COLS - 1 is b^T A, then b^T b): the local
@@ -2301,13 +2314,17 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
         }
     }
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 7, 108, 864);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 32 columns
 void load_rows_0(int f, T ab[480]) {
     const int a0 = FACTOR_A_OFF[f];
     for (int r = 0; r < 15; ++r) {
-        for (int c = 0; c < 32; ++c) ab[r * 32 + c] = c < 31 ? T(AB[a0 + r * 31 + c]) : T(0);
+        for (int c = 0; c < 32; ++c) {
+#pragma HLS PIPELINE II=1
+            ab[r * 32 + c] = c < 31 ? T(AB[a0 + r * 31 + c]) : T(0);
+        }
     }
 }
 
@@ -2326,10 +2343,18 @@ bool reduce_0() {
         for (int j = 0; j < 3; ++j) col[15 + j] = VAR_T_OFF[FACTOR_VARS[vb + 3]] + j;
         for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
         for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
+        FGC_CYCLES("reduce_0", 0, "load", 480, 1, 2);
+        FGC_CYCLES("reduce_0", 0, "columns", 30, 1, 1);
         L h[496];
         gram<32, 31, 15, 20, 36>(ab, BLOCK0_TILES, BLOCK0_TILE_ROWS, h);
-        for (int e = 0; e < 496; ++e) GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
+        for (int e = 0; e < 496; ++e) {
+#pragma HLS PIPELINE II=1
+            GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
+        }
+        FGC_CYCLES("reduce_0", 0, "gram_out", 496, 1, 2);
         finite = gradient_from_gram<31>(h, col) && finite;
+        FGC_CYCLES("reduce_0", 0, "scatter", 30, 11, 13);
+        FGC_CYCLES("reduce_0", 0, "check", 31, 11, 11);
     }
     return finite;
 }
@@ -2350,6 +2375,10 @@ T noise_0(T noise) {
         for (int j = 0; j < 6; ++j) scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
         for (int j = 0; j < 6; ++j) scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
         noise += rounding_noise<32, 31, 15>(ab, scale);
+        FGC_CYCLES("noise_0", 0, "load", 480, 1, 2);
+        FGC_CYCLES("noise_0", 0, "scales", 32, 1, 1);
+        FGC_CYCLES("noise_0", 0, "rows", 15, 1, 126);
+        FGC_CYCLES("noise_0", 0, "terms", 4, 11, 38);
     }
     return noise;
 }
@@ -2367,6 +2396,7 @@ T cost_of_0(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 193], DATA_BUF[FACTOR_DATA_OFF[f] + 194]);
         total += cost;
     }
+    FGC_CYCLES("factor_0_cost", 0, "instances", 7, 36, 796);
     return total;
 }
 
@@ -2398,13 +2428,17 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 36, 581);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns
 void load_rows_1(int f, T ab[48]) {
     const int a0 = FACTOR_A_OFF[f];
     for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 8; ++c) ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int c = 0; c < 8; ++c) {
+#pragma HLS PIPELINE II=1
+            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        }
     }
 }
 
@@ -2418,10 +2452,18 @@ bool reduce_1() {
         load_rows_1(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        FGC_CYCLES("reduce_1", 0, "load", 48, 1, 2);
+        FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
         L h[28];
         gram<8, 7, 6, 2, 3>(ab, BLOCK1_TILES, BLOCK1_TILE_ROWS, h);
-        for (int e = 0; e < 28; ++e) GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
+        for (int e = 0; e < 28; ++e) {
+#pragma HLS PIPELINE II=1
+            GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
+        }
+        FGC_CYCLES("reduce_1", 0, "gram_out", 28, 1, 2);
         finite = gradient_from_gram<7>(h, col) && finite;
+        FGC_CYCLES("reduce_1", 0, "scatter", 6, 11, 13);
+        FGC_CYCLES("reduce_1", 0, "check", 7, 11, 11);
     }
     return finite;
 }
@@ -2437,6 +2479,10 @@ T noise_1(T noise) {
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 6>(ab, scale);
+        FGC_CYCLES("noise_1", 0, "load", 48, 1, 2);
+        FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
+        FGC_CYCLES("noise_1", 0, "rows", 6, 1, 60);
+        FGC_CYCLES("noise_1", 0, "terms", 2, 11, 38);
     }
     return noise;
 }
@@ -2454,6 +2500,7 @@ T cost_of_1(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         total += cost;
     }
+    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 24, 475);
     return total;
 }
 
@@ -2485,13 +2532,17 @@ void evaluate_2(const T x[N_X]) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
         }
     }
+    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 1, 11);
 }
 
 // block 2's whitened rows of instance f from AB, padded to 4 columns
 void load_rows_2(int f, T ab[12]) {
     const int a0 = FACTOR_A_OFF[f];
     for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 4; ++c) ab[r * 4 + c] = c < 4 ? T(AB[a0 + r * 4 + c]) : T(0);
+        for (int c = 0; c < 4; ++c) {
+#pragma HLS PIPELINE II=1
+            ab[r * 4 + c] = c < 4 ? T(AB[a0 + r * 4 + c]) : T(0);
+        }
     }
 }
 
@@ -2505,10 +2556,18 @@ bool reduce_2() {
         load_rows_2(f, ab);
         int col[3];  // per column: its tangent entry
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        FGC_CYCLES("reduce_2", 0, "load", 12, 1, 2);
+        FGC_CYCLES("reduce_2", 0, "columns", 3, 1, 1);
         L h[10];
         gram<4, 4, 3, 1, 1>(ab, BLOCK2_TILES, BLOCK2_TILE_ROWS, h);
-        for (int e = 0; e < 10; ++e) GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
+        for (int e = 0; e < 10; ++e) {
+#pragma HLS PIPELINE II=1
+            GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
+        }
+        FGC_CYCLES("reduce_2", 0, "gram_out", 10, 1, 2);
         finite = gradient_from_gram<4>(h, col) && finite;
+        FGC_CYCLES("reduce_2", 0, "scatter", 3, 11, 13);
+        FGC_CYCLES("reduce_2", 0, "check", 4, 11, 11);
     }
     return finite;
 }
@@ -2524,6 +2583,10 @@ T noise_2(T noise) {
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
         for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<4, 4, 3>(ab, scale);
+        FGC_CYCLES("noise_2", 0, "load", 12, 1, 2);
+        FGC_CYCLES("noise_2", 0, "scales", 4, 1, 1);
+        FGC_CYCLES("noise_2", 0, "rows", 3, 1, 49);
+        FGC_CYCLES("noise_2", 0, "terms", 1, 11, 38);
     }
     return noise;
 }
@@ -2541,6 +2604,7 @@ T cost_of_2(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         total += cost;
     }
+    FGC_CYCLES("factor_2_cost", 0, "instances", 1, 11, 49);
     return total;
 }
 
@@ -2572,13 +2636,17 @@ void evaluate_3(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
+    FGC_CYCLES("factor_3_jacobian", 0, "instances", 1, 1, 11);
 }
 
 // block 3's whitened rows of instance f from AB, padded to 8 columns
 void load_rows_3(int f, T ab[48]) {
     const int a0 = FACTOR_A_OFF[f];
     for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 8; ++c) ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int c = 0; c < 8; ++c) {
+#pragma HLS PIPELINE II=1
+            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        }
     }
 }
 
@@ -2592,10 +2660,18 @@ bool reduce_3() {
         load_rows_3(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
+        FGC_CYCLES("reduce_3", 0, "load", 48, 1, 2);
+        FGC_CYCLES("reduce_3", 0, "columns", 6, 1, 1);
         L h[28];
         gram<8, 7, 6, 2, 3>(ab, BLOCK3_TILES, BLOCK3_TILE_ROWS, h);
-        for (int e = 0; e < 28; ++e) GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
+        for (int e = 0; e < 28; ++e) {
+#pragma HLS PIPELINE II=1
+            GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
+        }
+        FGC_CYCLES("reduce_3", 0, "gram_out", 28, 1, 2);
         finite = gradient_from_gram<7>(h, col) && finite;
+        FGC_CYCLES("reduce_3", 0, "scatter", 6, 11, 13);
+        FGC_CYCLES("reduce_3", 0, "check", 7, 11, 11);
     }
     return finite;
 }
@@ -2611,6 +2687,10 @@ T noise_3(T noise) {
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 6>(ab, scale);
+        FGC_CYCLES("noise_3", 0, "load", 48, 1, 2);
+        FGC_CYCLES("noise_3", 0, "scales", 8, 1, 1);
+        FGC_CYCLES("noise_3", 0, "rows", 6, 1, 60);
+        FGC_CYCLES("noise_3", 0, "terms", 2, 11, 38);
     }
     return noise;
 }
@@ -2628,16 +2708,25 @@ T cost_of_3(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
         total += cost;
     }
+    FGC_CYCLES("factor_3_cost", 0, "instances", 1, 11, 60);
     return total;
 }
 
 // Linearise every factor: the datapaths in Jacobian mode into AB, then the gradient and Grams.
 bool linearize_all(const T x[N_X]) {
-    for (int i = 0; i < N_TANGENT; ++i) G[i] = T(0);
+    FGC_EVENT("linearize");
+    FGC_PHASE("hgc");
+    for (int i = 0; i < N_TANGENT; ++i) {
+#pragma HLS PIPELINE II=1
+        G[i] = T(0);
+    }
+    FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
+    FGC_PHASE("factor_jacobian");
     evaluate_0(x);
     evaluate_1(x);
     evaluate_2(x);
     evaluate_3(x);
+    FGC_PHASE("hgc");
     bool finite = true;
     finite = reduce_0() && finite;
     finite = reduce_1() && finite;
@@ -2648,6 +2737,8 @@ bool linearize_all(const T x[N_X]) {
 
 // The cost's rounding noise at x, the linearisation point (AB holds its whitened rows).
 T rounding_noise_all(const T x[N_X]) {
+    FGC_EVENT("noise");
+    FGC_PHASE("rounding_noise");
     for (int v = 0; v < N_VARIABLES; ++v) {  // largest storage entry of each variable, at least 1
         T scale = T(1);
         for (int i = VAR_X_OFF[v]; i < VAR_X_OFF[v + 1]; ++i) {
@@ -2655,6 +2746,7 @@ T rounding_noise_all(const T x[N_X]) {
             scale = fgc_abs(x[i]) > scale ? fgc_abs(x[i]) : scale;
         }
         VAR_SCALE[v] = scale;
+        FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 2, 4);
     }
     T noise = T(0);
     noise = noise_0(noise);
@@ -2666,6 +2758,8 @@ T rounding_noise_all(const T x[N_X]) {
 
 // The graph's cost (GTSAM's error) at x: every datapath in cost mode.
 T total_cost(const T x[N_X]) {
+    FGC_EVENT("cost");
+    FGC_PHASE("factor_cost");
     T total = T(0);
     total = cost_of_0(x, total);
     total = cost_of_1(x, total);
@@ -2743,6 +2837,8 @@ void retract_2(const T x[6], const T d[6], T out[6]) {
 }
 
 void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
+    FGC_EVENT("retract");
+    FGC_PHASE("state_update");
     for (int i = 0; i < 8; ++i) {
         const int v = KIND0_VARIABLES[i];
         T xv[12], dv[6], ov[12];
@@ -2751,6 +2847,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_0(xv, dv, ov);
         for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
+    FGC_CYCLES("retract", 0, "variables", 8, 1, 172);
     for (int i = 0; i < 8; ++i) {
         const int v = KIND1_VARIABLES[i];
         T xv[3], dv[3], ov[3];
@@ -2759,6 +2856,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_1(xv, dv, ov);
         for (int k = 0; k < 3; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
+    FGC_CYCLES("retract", 1, "variables", 8, 1, 172);
     for (int i = 0; i < 8; ++i) {
         const int v = KIND2_VARIABLES[i];
         T xv[6], dv[6], ov[6];
@@ -2767,6 +2865,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_2(xv, dv, ov);
         for (int k = 0; k < 6; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
+    FGC_CYCLES("retract", 2, "variables", 8, 1, 172);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -2793,11 +2892,17 @@ L UPDBUF[MAX_W * LesConfig::MAX_COLS];  // its update matrix (Schur complement |
 
 // Step s: assemble, factor, store. False if not positive definite or a pivot is too small.
 bool eliminate(int s, T mu) {
+    FGC_PHASE("assemble");
     const int w = STEP_W[s], f = STEP_F[s];
     for (int i = 0; i < w; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=30
-        for (int c = 0; c < MAX_W + 1; ++c) HF[i][c] = T(0);
+        for (int c = 0; c < MAX_W + 1; ++c) {
+#pragma HLS PIPELINE II=1
+            HF[i][c] = T(0);
+        }
     }
+    FGC_CYCLES("assemble", 0, "zero", w * (MAX_W + 1), 1, 1);
+    // the += below into the table-addressed HF: II = the adder latency (an address may repeat)
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=4
         const int fac = STEP_FACTORS[e];
@@ -2812,11 +2917,13 @@ bool eliminate(int s, T mu) {
                 const int lo = b < a ? b : a, hi = b < a ? a : b;
                 HF[lo][hi] += GRAM[g0 + p * (p + 1) / 2 + q];
             }
+            FGC_CYCLES("assemble", 0, "gram_row", p + 1, 11, 13);
         }
         for (int p = 0; p < d; ++p) {
 #pragma HLS LOOP_TRIPCOUNT max=30
             HF[FACTOR_COLMAP[cb + p]][w] += GRAM[g0 + d * (d + 1) / 2 + p];
         }
+        FGC_CYCLES("assemble", 0, "gram_gradient", d, 11, 13);
     }
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=2
@@ -2832,28 +2939,37 @@ bool eliminate(int s, T mu) {
                 const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
                 HF[lo][hi] += NF[u0 + a * (sc + 1) + b];
             }
+            FGC_CYCLES("assemble", 0, "child_row", sc - a, 11, 13);
             HF[STEP_SEPMAP[mb + a]][w] += NF[u0 + a * (sc + 1) + sc];
+            FGC_CYCLES("assemble", 0, "child_gradient", 1, 11, 13);
         }
     }
     bool not_pd = false, singular = false;
+    FGC_PHASE("cholesky");
     fgc_units::cpe_step<LesConfig>(HF, f, w - f, mu, CONDBUF, UPDBUF, &not_pd, &singular);
     if (singular) return false;
+    FGC_PHASE("store");
     const int c0 = STEP_COND_OFF[s];
     for (int i = 0; i < f * (w + 1); ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=930
+#pragma HLS PIPELINE II=1
         COND[c0 + i] = CONDBUF[i];
     }
+    FGC_CYCLES("store", 0, "cond", f * (w + 1), 1, 2);
     const int sw = w - f;
     const int u0 = STEP_NF_OFF[s];
     for (int i = 0; i < sw * (sw + 1); ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=930
+#pragma HLS PIPELINE II=1
         NF[u0 + i] = UPDBUF[i];
     }
+    FGC_CYCLES("store", 0, "nf", sw * (sw + 1), 1, 2);
     return true;
 }
 
 // Eliminate every step in schedule order, level by level.
 bool eliminate_all(T mu) {
+    FGC_EVENT("solve");
     bool ok = true;
     for (int i = 0; i < N_STEPS; ++i) {
         if (ok) ok = eliminate(LEVEL_STEPS[i], mu);
@@ -2863,6 +2979,7 @@ bool eliminate_all(T mu) {
 
 // Back-substitution root first: per step x_f = R^-1 (d - S x_s) (cond_backsub, fgc_backsub.h).
 void back_substitute() {
+    FGC_PHASE("backsub");
     for (int l = N_LEVELS - 1; l >= 0; --l) {
         for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=2
@@ -2873,18 +2990,24 @@ void back_substitute() {
             L cond[MAX_F * LesConfig::MAX_COLS];
             for (int e = 0; e < f * (w + 1); ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=930
+#pragma HLS PIPELINE II=1
                 cond[e] = COND[c0 + e];
             }
+            FGC_CYCLES("backsub_copy", 0, "cond_in", f * (w + 1), 1, 2);
             L xs[LesConfig::MAX_COLS], x[MAX_F];
             for (int a = 0; a < w - f; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=30
+#pragma HLS PIPELINE II=1
                 xs[a] = DELTA[STEP_COL[cb + f + a]];
             }
+            FGC_CYCLES("backsub_copy", 0, "separator_in", w - f, 1, 2);
             fgc_units::cond_backsub<LesConfig>(cond, f, w - f, xs, x);
             for (int c = 0; c < f; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=30
+#pragma HLS PIPELINE II=1
                 DELTA[STEP_COL[cb + c]] = x[c];
             }
+            FGC_CYCLES("backsub_copy", 0, "solution_out", f, 1, 2);
         }
     }
 }
@@ -2912,6 +3035,8 @@ Step try_steps(T cost, T mu[1]) {
     T x_norm2 = T(0);
     for (int i = 0; i < N_X; ++i) x_norm2 += X[i] * X[i];
     const T x_norm = fgc_sqrt(x_norm2);
+    FGC_PHASE("lm_control");
+    FGC_CYCLES("lm_control", 0, "x_norm", N_X, 11, 19);
     for (int t = 0; t < MAX_TRIES; ++t) {
         const bool solved = solve(mu[0]);
         if (!solved && !(mu[0] > T(0))) return Step{2, REASON_SINGULAR, cost, T(0)};
@@ -2923,6 +3048,9 @@ Step try_steps(T cost, T mu[1]) {
             predicted += DELTA[i] * (G[i] + mu[0] * DELTA[i]);
         }
         predicted = T(0.5) * predicted;
+        FGC_PHASE("lm_control");
+        FGC_CYCLES("lm_control", 0, "step_test", N_TANGENT, 11, 38);
+        FGC_CYCLES("lm_control", 0, "decision", 1, 1, 68);
         if (ok) {
             if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
             retract_all(X, DELTA, X_TRIAL);
@@ -2967,6 +3095,8 @@ void optimize(T errors[2], int info[3]) {
         ++it;
         T g_max = T(0);
         for (int i = 0; i < N_TANGENT; ++i) g_max = fgc_abs(G[i]) > g_max ? fgc_abs(G[i]) : g_max;
+        FGC_PHASE("lm_control");
+        FGC_CYCLES("lm_control", 0, "gradient_max", N_TANGENT, 2, 4);
         if (g_max < EPS_GRADIENT) {
             status = STATUS_CONVERGED;
             reason = REASON_GRADIENT;
@@ -2982,6 +3112,8 @@ void optimize(T errors[2], int info[3]) {
                                                                     : step.predicted;
         const T change = cost > T(0) ? T(moved / cost) : T(0);
         for (int i = 0; i < N_X; ++i) X[i] = X_TRIAL[i];
+        FGC_PHASE("lm_control");
+        FGC_CYCLES("lm_control", 0, "accept", N_X, 1, 2);
         cost = step.cost;
         if (cost <= ABS_TOL) {
             status = STATUS_CONVERGED;
@@ -3008,8 +3140,23 @@ void imu_window_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=errors
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
-    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
-    for (int i = 0; i < fgc::N_DATA; ++i) fgc::DATA_BUF[i] = data[i];
+    FGC_EVENT("call");
+    FGC_PHASE("setup");
+    for (int i = 0; i < fgc::N_X; ++i) {
+#pragma HLS PIPELINE II=1
+        fgc::X[i] = x_in[i];
+    }
+    for (int i = 0; i < fgc::N_DATA; ++i) {
+#pragma HLS PIPELINE II=1
+        fgc::DATA_BUF[i] = data[i];
+    }
+    FGC_CYCLES("top", 0, "x_in", fgc::N_X, 1, 2);
+    FGC_CYCLES("top", 0, "data_in", fgc::N_DATA, 1, 2);
     fgc::optimize(errors, info);
-    for (int i = 0; i < fgc::N_X; ++i) x_out[i] = fgc::X[i];
+    FGC_PHASE("setup");
+    for (int i = 0; i < fgc::N_X; ++i) {
+#pragma HLS PIPELINE II=1
+        x_out[i] = fgc::X[i];
+    }
+    FGC_CYCLES("top", 0, "x_out", fgc::N_X, 1, 2);
 }

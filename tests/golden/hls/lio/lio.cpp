@@ -2460,13 +2460,17 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 36, 581);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 8 columns
 void load_rows_0(int f, T ab[48]) {
     const int a0 = FACTOR_A_OFF[f];
     for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 8; ++c) ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int c = 0; c < 8; ++c) {
+#pragma HLS PIPELINE II=1
+            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        }
     }
 }
 
@@ -2481,6 +2485,12 @@ bool reduce_0() {
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         finite = accumulate<8, 7, 6>(ab, col) && finite;
+        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
+        FGC_CYCLES("reduce_0", 0, "load", 48, 1, 2);
+        FGC_CYCLES("reduce_0", 0, "columns", 6, 1, 1);
+        FGC_CYCLES("reduce_0", 0, "rows", 6, 11, 19);
+        FGC_CYCLES("reduce_0", 0, "check", 2, 11, 11);
+        FGC_CYCLES("reduce_0", 0, "scatter", 6, 11, 13);
     }
     return finite;
 }
@@ -2496,6 +2506,10 @@ T noise_0(T noise) {
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 6>(ab, scale);
+        FGC_CYCLES("noise_0", 0, "load", 48, 1, 2);
+        FGC_CYCLES("noise_0", 0, "scales", 8, 1, 1);
+        FGC_CYCLES("noise_0", 0, "rows", 6, 1, 60);
+        FGC_CYCLES("noise_0", 0, "terms", 2, 11, 38);
     }
     return noise;
 }
@@ -2513,6 +2527,7 @@ T cost_of_0(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 18], DATA_BUF[FACTOR_DATA_OFF[f] + 19]);
         total += cost;
     }
+    FGC_CYCLES("factor_0_cost", 0, "instances", 1, 24, 475);
     return total;
 }
 
@@ -2544,13 +2559,17 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
         }
     }
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 1, 11);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 4 columns
 void load_rows_1(int f, T ab[12]) {
     const int a0 = FACTOR_A_OFF[f];
     for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 4; ++c) ab[r * 4 + c] = c < 4 ? T(AB[a0 + r * 4 + c]) : T(0);
+        for (int c = 0; c < 4; ++c) {
+#pragma HLS PIPELINE II=1
+            ab[r * 4 + c] = c < 4 ? T(AB[a0 + r * 4 + c]) : T(0);
+        }
     }
 }
 
@@ -2565,6 +2584,12 @@ bool reduce_1() {
         int col[3];  // per column: its tangent entry
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         finite = accumulate<4, 4, 3>(ab, col) && finite;
+        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
+        FGC_CYCLES("reduce_1", 0, "load", 12, 1, 2);
+        FGC_CYCLES("reduce_1", 0, "columns", 3, 1, 1);
+        FGC_CYCLES("reduce_1", 0, "rows", 3, 11, 19);
+        FGC_CYCLES("reduce_1", 0, "check", 1, 11, 11);
+        FGC_CYCLES("reduce_1", 0, "scatter", 3, 11, 13);
     }
     return finite;
 }
@@ -2580,6 +2605,10 @@ T noise_1(T noise) {
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
         for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<4, 4, 3>(ab, scale);
+        FGC_CYCLES("noise_1", 0, "load", 12, 1, 2);
+        FGC_CYCLES("noise_1", 0, "scales", 4, 1, 1);
+        FGC_CYCLES("noise_1", 0, "rows", 3, 1, 49);
+        FGC_CYCLES("noise_1", 0, "terms", 1, 11, 38);
     }
     return noise;
 }
@@ -2597,6 +2626,7 @@ T cost_of_1(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         total += cost;
     }
+    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 11, 49);
     return total;
 }
 
@@ -2628,13 +2658,17 @@ void evaluate_2(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
+    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 1, 11);
 }
 
 // block 2's whitened rows of instance f from AB, padded to 8 columns
 void load_rows_2(int f, T ab[48]) {
     const int a0 = FACTOR_A_OFF[f];
     for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 8; ++c) ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int c = 0; c < 8; ++c) {
+#pragma HLS PIPELINE II=1
+            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        }
     }
 }
 
@@ -2649,6 +2683,12 @@ bool reduce_2() {
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         finite = accumulate<8, 7, 6>(ab, col) && finite;
+        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
+        FGC_CYCLES("reduce_2", 0, "load", 48, 1, 2);
+        FGC_CYCLES("reduce_2", 0, "columns", 6, 1, 1);
+        FGC_CYCLES("reduce_2", 0, "rows", 6, 11, 19);
+        FGC_CYCLES("reduce_2", 0, "check", 2, 11, 11);
+        FGC_CYCLES("reduce_2", 0, "scatter", 6, 11, 13);
     }
     return finite;
 }
@@ -2664,6 +2704,10 @@ T noise_2(T noise) {
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 6>(ab, scale);
+        FGC_CYCLES("noise_2", 0, "load", 48, 1, 2);
+        FGC_CYCLES("noise_2", 0, "scales", 8, 1, 1);
+        FGC_CYCLES("noise_2", 0, "rows", 6, 1, 60);
+        FGC_CYCLES("noise_2", 0, "terms", 2, 11, 38);
     }
     return noise;
 }
@@ -2681,6 +2725,7 @@ T cost_of_2(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
         total += cost;
     }
+    FGC_CYCLES("factor_2_cost", 0, "instances", 1, 11, 60);
     return total;
 }
 
@@ -2952,13 +2997,17 @@ void evaluate_3(const T x[N_X]) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
         }
     }
+    FGC_CYCLES("factor_3_jacobian", 0, "instances", 7, 143, 864);
 }
 
 // block 3's whitened rows of instance f from AB, padded to 32 columns
 void load_rows_3(int f, T ab[672]) {
     const int a0 = FACTOR_A_OFF[f];
     for (int r = 0; r < 21; ++r) {
-        for (int c = 0; c < 32; ++c) ab[r * 32 + c] = c < 31 ? T(AB[a0 + r * 31 + c]) : T(0);
+        for (int c = 0; c < 32; ++c) {
+#pragma HLS PIPELINE II=1
+            ab[r * 32 + c] = c < 31 ? T(AB[a0 + r * 31 + c]) : T(0);
+        }
     }
 }
 
@@ -2978,6 +3027,12 @@ bool reduce_3() {
         for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
         for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
         finite = accumulate<32, 31, 21>(ab, col) && finite;
+        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
+        FGC_CYCLES("reduce_3", 0, "load", 672, 1, 2);
+        FGC_CYCLES("reduce_3", 0, "columns", 30, 1, 1);
+        FGC_CYCLES("reduce_3", 0, "rows", 21, 11, 19);
+        FGC_CYCLES("reduce_3", 0, "check", 8, 11, 11);
+        FGC_CYCLES("reduce_3", 0, "scatter", 30, 11, 13);
     }
     return finite;
 }
@@ -2998,6 +3053,10 @@ T noise_3(T noise) {
         for (int j = 0; j < 6; ++j) scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
         for (int j = 0; j < 6; ++j) scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
         noise += rounding_noise<32, 31, 21>(ab, scale);
+        FGC_CYCLES("noise_3", 0, "load", 672, 1, 2);
+        FGC_CYCLES("noise_3", 0, "scales", 32, 1, 1);
+        FGC_CYCLES("noise_3", 0, "rows", 21, 1, 126);
+        FGC_CYCLES("noise_3", 0, "terms", 6, 11, 38);
     }
     return noise;
 }
@@ -3016,6 +3075,7 @@ T cost_of_3(const T x[N_X], T total) {
         cost += robust_loss(half[1], DATA_BUF[FACTOR_DATA_OFF[f] + 213], DATA_BUF[FACTOR_DATA_OFF[f] + 214]);
         total += cost;
     }
+    FGC_CYCLES("factor_3_cost", 0, "instances", 7, 60, 807);
     return total;
 }
 
@@ -3047,13 +3107,17 @@ void evaluate_4(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
+    FGC_CYCLES("factor_4_jacobian", 0, "instances", 8, 1, 11);
 }
 
 // block 4's whitened rows of instance f from AB, padded to 8 columns
 void load_rows_4(int f, T ab[24]) {
     const int a0 = FACTOR_A_OFF[f];
     for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 8; ++c) ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int c = 0; c < 8; ++c) {
+#pragma HLS PIPELINE II=1
+            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        }
     }
 }
 
@@ -3068,6 +3132,12 @@ bool reduce_4() {
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         finite = accumulate<8, 7, 3>(ab, col) && finite;
+        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
+        FGC_CYCLES("reduce_4", 0, "load", 24, 1, 2);
+        FGC_CYCLES("reduce_4", 0, "columns", 6, 1, 1);
+        FGC_CYCLES("reduce_4", 0, "rows", 3, 11, 19);
+        FGC_CYCLES("reduce_4", 0, "check", 2, 11, 11);
+        FGC_CYCLES("reduce_4", 0, "scatter", 6, 11, 13);
     }
     return finite;
 }
@@ -3083,6 +3153,10 @@ T noise_4(T noise) {
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 3>(ab, scale);
+        FGC_CYCLES("noise_4", 0, "load", 24, 1, 2);
+        FGC_CYCLES("noise_4", 0, "scales", 8, 1, 1);
+        FGC_CYCLES("noise_4", 0, "rows", 3, 1, 60);
+        FGC_CYCLES("noise_4", 0, "terms", 1, 11, 38);
     }
     return noise;
 }
@@ -3100,17 +3174,26 @@ T cost_of_4(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         total += cost;
     }
+    FGC_CYCLES("factor_4_cost", 0, "instances", 8, 11, 49);
     return total;
 }
 
 // Linearise every factor: the datapaths in Jacobian mode into AB, then the gradient.
 bool linearize_all(const T x[N_X]) {
-    for (int i = 0; i < N_TANGENT; ++i) G[i] = T(0);
+    FGC_EVENT("linearize");
+    FGC_PHASE("gradient");
+    for (int i = 0; i < N_TANGENT; ++i) {
+#pragma HLS PIPELINE II=1
+        G[i] = T(0);
+    }
+    FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
+    FGC_PHASE("factor_jacobian");
     evaluate_0(x);
     evaluate_1(x);
     evaluate_2(x);
     evaluate_3(x);
     evaluate_4(x);
+    FGC_PHASE("gradient");
     bool finite = true;
     finite = reduce_0() && finite;
     finite = reduce_1() && finite;
@@ -3122,6 +3205,8 @@ bool linearize_all(const T x[N_X]) {
 
 // The cost's rounding noise at x, the linearisation point (AB holds its whitened rows).
 T rounding_noise_all(const T x[N_X]) {
+    FGC_EVENT("noise");
+    FGC_PHASE("rounding_noise");
     for (int v = 0; v < N_VARIABLES; ++v) {  // largest storage entry of each variable, at least 1
         T scale = T(1);
         for (int i = VAR_X_OFF[v]; i < VAR_X_OFF[v + 1]; ++i) {
@@ -3129,6 +3214,7 @@ T rounding_noise_all(const T x[N_X]) {
             scale = fgc_abs(x[i]) > scale ? fgc_abs(x[i]) : scale;
         }
         VAR_SCALE[v] = scale;
+        FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 2, 4);
     }
     T noise = T(0);
     noise = noise_0(noise);
@@ -3141,6 +3227,8 @@ T rounding_noise_all(const T x[N_X]) {
 
 // The graph's cost (GTSAM's error) at x: every datapath in cost mode.
 T total_cost(const T x[N_X]) {
+    FGC_EVENT("cost");
+    FGC_PHASE("factor_cost");
     T total = T(0);
     total = cost_of_0(x, total);
     total = cost_of_1(x, total);
@@ -3219,6 +3307,8 @@ void retract_2(const T x[6], const T d[6], T out[6]) {
 }
 
 void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
+    FGC_EVENT("retract");
+    FGC_PHASE("state_update");
     for (int i = 0; i < 8; ++i) {
         const int v = KIND0_VARIABLES[i];
         T xv[12], dv[6], ov[12];
@@ -3227,6 +3317,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_0(xv, dv, ov);
         for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
+    FGC_CYCLES("retract", 0, "variables", 8, 1, 172);
     for (int i = 0; i < 8; ++i) {
         const int v = KIND1_VARIABLES[i];
         T xv[3], dv[3], ov[3];
@@ -3235,6 +3326,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_1(xv, dv, ov);
         for (int k = 0; k < 3; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
+    FGC_CYCLES("retract", 1, "variables", 8, 1, 172);
     for (int i = 0; i < 8; ++i) {
         const int v = KIND2_VARIABLES[i];
         T xv[6], dv[6], ov[6];
@@ -3243,6 +3335,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_2(xv, dv, ov);
         for (int k = 0; k < 6; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
+    FGC_CYCLES("retract", 2, "variables", 8, 1, 172);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -3304,33 +3397,50 @@ void qr_level(int rows0, int f0, int s0,
     qr_set1(rows1, f1, s1, work1, cond1, update1, bad1);
 }
 
-// Stack step s into a unit set's banks: every entry of its rows, zeros included.
+// Stack step s into a unit set's banks: every entry of its rows, zeros included. Each loop
+// writes a word a cycle (the zeroing all N_UNITS banks of a column at once), counted as the
+// plan's stack_loops price them.
 void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
+    FGC_PHASE("qr_stack");
     const int w = STEP_W[s], f = STEP_F[s], m = STEP_ROWS[s];
-    for (int i = 0; i < m; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=87
-        for (int c = 0; c < LOCAL_COLS; ++c) {
-            for (int u = 0; u < N_UNITS; ++u) bank[u][i][c] = T(0);
+    for (int e = 0, i = 0, c = 0; e < m * LOCAL_COLS; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=696
+#pragma HLS PIPELINE II=1
+        for (int u = 0; u < N_UNITS; ++u) {
+#pragma HLS UNROLL
+            bank[u][i][c] = T(0);
+        }
+        if (c == LOCAL_COLS - 1) {
+            c = 0;
+            ++i;
+        } else {
+            ++c;
         }
     }
+    FGC_CYCLES("stack", 0, "zero", m * LOCAL_COLS, 1, 1);
     int row = 0;
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=5
         const int fac = STEP_FACTORS[e];
         const int cb = FACTOR_COLMAP_BEGIN[fac];
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
-        const int rows = (FACTOR_A_OFF[fac + 1] - FACTOR_A_OFF[fac]) / (d + 1);
         const int a0 = FACTOR_A_OFF[fac];
-        for (int r = 0; r < rows; ++r) {
-#pragma HLS LOOP_TRIPCOUNT max=87
-            for (int c = 0; c < d; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-                const int t = FACTOR_COLMAP[cb + c];
-                bank[t % N_UNITS][row][t / N_UNITS] = AB[a0 + r * (d + 1) + c];
+        const int words = FACTOR_A_OFF[fac + 1] - a0;  // its rows x (d + 1)
+        // row r, column c of its [A | b] into the step's row `row + r`
+        for (int k = 0, r = 0, c = 0; k < words; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=2697
+#pragma HLS PIPELINE II=1
+            const int t = c < d ? FACTOR_COLMAP[cb + c] : w;
+            bank[t % N_UNITS][row + r][t / N_UNITS] = AB[a0 + k];
+            if (c == d) {
+                c = 0;
+                ++r;
+            } else {
+                ++c;
             }
-            bank[w % N_UNITS][row][w / N_UNITS] = AB[a0 + r * (d + 1) + d];
-            row = row + 1;
         }
+        FGC_CYCLES("stack", 0, "factor_rows", words, 1, 2);
+        row = row + words / (d + 1);
     }
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=2
@@ -3338,43 +3448,57 @@ void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
         const int sc = STEP_W[c] - STEP_F[c];
         const int mb = STEP_SEPMAP_BEGIN[c];
         const int n0 = STEP_NF_OFF[c];
-        for (int r = 0; r < STEP_NF_ROWS[c]; ++r) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-            for (int q = 0; q < sc; ++q) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-                const int t = STEP_SEPMAP[mb + q];
-                bank[t % N_UNITS][row][t / N_UNITS] = NF[n0 + r * (sc + 1) + q];
+        const int words = STEP_NF_ROWS[c] * (sc + 1);
+        for (int k = 0, r = 0, q = 0; k < words; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=961
+#pragma HLS PIPELINE II=1
+            const int t = q < sc ? STEP_SEPMAP[mb + q] : w;
+            bank[t % N_UNITS][row + r][t / N_UNITS] = NF[n0 + k];
+            if (q == sc) {
+                q = 0;
+                ++r;
+            } else {
+                ++q;
             }
-            bank[w % N_UNITS][row][w / N_UNITS] = NF[n0 + r * (sc + 1) + sc];
-            row = row + 1;
         }
+        FGC_CYCLES("stack", 0, "child_rows", words, 1, 2);
+        row = row + STEP_NF_ROWS[c];
     }
     for (int j = 0; j < f; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=30
-        bank[j % N_UNITS][row][j / N_UNITS] = root_mu;
-        row = row + 1;
+#pragma HLS PIPELINE II=1
+        bank[j % N_UNITS][row + j][j / N_UNITS] = root_mu;
     }
+    FGC_CYCLES("stack", 0, "damping", f, 1, 1);
 }
 
-// A unit set's result for step s into COND and NF.
+// A unit set's result for step s into COND and NF, a word a cycle.
 void commit(int s, const L cond[MAX_F * LesConfig::MAX_COLS],
             const L update[LesConfig::MAX_COLS * LesConfig::MAX_COLS]) {
+    FGC_PHASE("qr_commit");
     const int w = STEP_W[s], f = STEP_F[s], sw = w - f;
     const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
     for (int i = 0; i < f * (w + 1); ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=930
+#pragma HLS PIPELINE II=1
         COND[c0 + i] = cond[i];
     }
+    FGC_CYCLES("commit", 0, "cond", f * (w + 1), 1, 2);
     for (int i = 0; i < STEP_NF_ROWS[s] * (sw + 1); ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=961
+#pragma HLS PIPELINE II=1
         NF[n0 + i] = update[i];
     }
+    FGC_CYCLES("commit", 0, "nf", STEP_NF_ROWS[s] * (sw + 1), 1, 2);
 }
 
 // Eliminate every step, level by level: a level's steps are independent, the unit sets take
 // them 2 at a time (stack, the sets' DATAFLOW region, commit). False if rank deficient.
 bool eliminate_all(T mu) {
+    FGC_EVENT("solve");
+    FGC_PHASE("qr_stack");
     const T root_mu = fgc_sqrt(mu);
+    FGC_CYCLES("stack", 0, "root_mu", 1, 1, 28);
     bool ok = true;
     for (int l = 0; l < N_LEVELS; ++l) {
         for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 2) {
@@ -3387,6 +3511,7 @@ bool eliminate_all(T mu) {
             const int s1 = has1 ? LEVEL_STEPS[i + 1] : 0;
             if (has1) stack(s1, root_mu, WORK1);
             bool bad1 = false;
+            FGC_PHASE("qr");
             qr_level(has0 ? STEP_ROWS[s0] : 0, has0 ? STEP_F[s0] : 0,
                      has0 ? STEP_W[s0] - STEP_F[s0] : 0, WORK0, CONDBUF0, UPDBUF0, &bad0,
                      has1 ? STEP_ROWS[s1] : 0, has1 ? STEP_F[s1] : 0,
@@ -3407,6 +3532,7 @@ bool eliminate_all(T mu) {
 
 // Back-substitution root first: per step x_f = R^-1 (d - S x_s) (cond_backsub, fgc_backsub.h).
 void back_substitute() {
+    FGC_PHASE("backsub");
     for (int l = N_LEVELS - 1; l >= 0; --l) {
         for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=2
@@ -3417,18 +3543,24 @@ void back_substitute() {
             L cond[MAX_F * LesConfig::MAX_COLS];
             for (int e = 0; e < f * (w + 1); ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=930
+#pragma HLS PIPELINE II=1
                 cond[e] = COND[c0 + e];
             }
+            FGC_CYCLES("backsub_copy", 0, "cond_in", f * (w + 1), 1, 2);
             L xs[LesConfig::MAX_COLS], x[MAX_F];
             for (int a = 0; a < w - f; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=30
+#pragma HLS PIPELINE II=1
                 xs[a] = DELTA[STEP_COL[cb + f + a]];
             }
+            FGC_CYCLES("backsub_copy", 0, "separator_in", w - f, 1, 2);
             fgc_units::cond_backsub<LesConfig>(cond, f, w - f, xs, x);
             for (int c = 0; c < f; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=30
+#pragma HLS PIPELINE II=1
                 DELTA[STEP_COL[cb + c]] = x[c];
             }
+            FGC_CYCLES("backsub_copy", 0, "solution_out", f, 1, 2);
         }
     }
 }
@@ -3456,6 +3588,8 @@ Step try_steps(T cost, T mu[1]) {
     T x_norm2 = T(0);
     for (int i = 0; i < N_X; ++i) x_norm2 += X[i] * X[i];
     const T x_norm = fgc_sqrt(x_norm2);
+    FGC_PHASE("lm_control");
+    FGC_CYCLES("lm_control", 0, "x_norm", N_X, 11, 19);
     for (int t = 0; t < MAX_TRIES; ++t) {
         const bool solved = solve(mu[0]);
         if (!solved && !(mu[0] > T(0))) return Step{2, REASON_SINGULAR, cost, T(0)};
@@ -3467,6 +3601,9 @@ Step try_steps(T cost, T mu[1]) {
             predicted += DELTA[i] * (G[i] + mu[0] * DELTA[i]);
         }
         predicted = T(0.5) * predicted;
+        FGC_PHASE("lm_control");
+        FGC_CYCLES("lm_control", 0, "step_test", N_TANGENT, 11, 38);
+        FGC_CYCLES("lm_control", 0, "decision", 1, 1, 68);
         if (ok) {
             if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
             retract_all(X, DELTA, X_TRIAL);
@@ -3511,6 +3648,8 @@ void optimize(T errors[2], int info[3]) {
         ++it;
         T g_max = T(0);
         for (int i = 0; i < N_TANGENT; ++i) g_max = fgc_abs(G[i]) > g_max ? fgc_abs(G[i]) : g_max;
+        FGC_PHASE("lm_control");
+        FGC_CYCLES("lm_control", 0, "gradient_max", N_TANGENT, 2, 4);
         if (g_max < EPS_GRADIENT) {
             status = STATUS_CONVERGED;
             reason = REASON_GRADIENT;
@@ -3526,6 +3665,8 @@ void optimize(T errors[2], int info[3]) {
                                                                     : step.predicted;
         const T change = cost > T(0) ? T(moved / cost) : T(0);
         for (int i = 0; i < N_X; ++i) X[i] = X_TRIAL[i];
+        FGC_PHASE("lm_control");
+        FGC_CYCLES("lm_control", 0, "accept", N_X, 1, 2);
         cost = step.cost;
         if (cost <= ABS_TOL) {
             status = STATUS_CONVERGED;
@@ -3552,8 +3693,23 @@ void lio_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=errors
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
-    for (int i = 0; i < fgc::N_X; ++i) fgc::X[i] = x_in[i];
-    for (int i = 0; i < fgc::N_DATA; ++i) fgc::DATA_BUF[i] = data[i];
+    FGC_EVENT("call");
+    FGC_PHASE("setup");
+    for (int i = 0; i < fgc::N_X; ++i) {
+#pragma HLS PIPELINE II=1
+        fgc::X[i] = x_in[i];
+    }
+    for (int i = 0; i < fgc::N_DATA; ++i) {
+#pragma HLS PIPELINE II=1
+        fgc::DATA_BUF[i] = data[i];
+    }
+    FGC_CYCLES("top", 0, "x_in", fgc::N_X, 1, 2);
+    FGC_CYCLES("top", 0, "data_in", fgc::N_DATA, 1, 2);
     fgc::optimize(errors, info);
-    for (int i = 0; i < fgc::N_X; ++i) x_out[i] = fgc::X[i];
+    FGC_PHASE("setup");
+    for (int i = 0; i < fgc::N_X; ++i) {
+#pragma HLS PIPELINE II=1
+        x_out[i] = fgc::X[i];
+    }
+    FGC_CYCLES("top", 0, "x_out", fgc::N_X, 1, 2);
 }
