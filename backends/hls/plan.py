@@ -427,10 +427,10 @@ def _kloop(name: str, trip: int, kind: str, timing: dict, repeat: int = 1) -> Lo
 def _block_shape(block) -> tuple[int, int, int, object]:
     """(m, d, padded row stride, Gram tiles) of a block type as the emitted kernel lays it out
     (fgc_backends.cfamily.blocks' pattern: rows padded to whole TILEs)."""
-    from fgc_backends.cfamily.blocks import NOISE_KINDS
+    from fgc.ir.codes import NOISE_CODES
     from fgc_backends.cfamily.sparsity import block_pattern
 
-    kinds = tuple(NOISE_KINDS[m.noise_kind] for m in block.members)
+    kinds = tuple(NOISE_CODES[m.noise_kind] for m in block.members)
     pattern = block_pattern(block, kinds, f"block {block.name!r}")
     return block.residual_dim, sum(block.variable_dims), pattern.padded, pattern.tiles()
 
