@@ -33,3 +33,26 @@ def test_cost_model_plan_and_lint_read_one_table():
     assert not [i for i in semantic_issues([("k.cpp", code)], part="xczu9eg-ffvb1156-2-e",
                                            scalar="float") if i.rule == "dsp"]
     assert big.dsp > 100 * 3 > small.dsp
+
+
+def test_the_emitted_part_sets_the_fit_verdict():
+    """A design that fits the xc7z045 does not fit an xc7z020 (220 DSP): the plan's verdict
+    reads the HLS config's part, and an unknown part is refused by name."""
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.hls import HlsConfig, HlsConfigError
+
+    from test_backends import _chain
+
+    program = compile_graph(_chain(), SolverConfig(precision="float32"), name="parts")
+    verdicts = {}
+    for part in ("xc7z045ffg900-2", "xc7z020clg400-1"):
+        cost = plan.plan_cost(plan.build_plan(program, plan.PlanOptions.for_config(
+            HlsConfig(scalar="float", part=part), program)))
+        verdicts[part] = (cost.fits, cost.over, cost.dsp)
+    assert verdicts["xc7z045ffg900-2"][0], verdicts
+    dsp = verdicts["xc7z045ffg900-2"][2]
+    assert dsp > DEVICES["xc7z020"].dsp, "the test needs a design over the xc7z020's DSP"
+    assert verdicts["xc7z020clg400-1"][:2] == (False, ("DSP",)), verdicts
+    with pytest.raises(HlsConfigError, match="xcvu9p.*known devices"):
+        HlsConfig(part="xcvu9p-flga2104-2L-e").check()

@@ -96,6 +96,13 @@ class HlsConfig:
                                      "linear solver can only be widened")
         if not _PART.match(self.part):
             raise HlsConfigError(f"FPGA part {self.part!r} is not a plain part name")
+        from fgc_backends.cost.target import DEVICES, device_of
+
+        if device_of(self.part) is None:
+            raise HlsConfigError(f"FPGA part {self.part!r}: fgc knows no capacities for its "
+                                 f"device (the plan's fit verdict and the lint's DSP budget need "
+                                 f"them); known devices: {', '.join(DEVICES)} "
+                                 "(backends/cost/target.py)")
         if not (0.5 <= float(self.clock_ns) <= 1000.0):
             raise HlsConfigError(f"clock period {self.clock_ns} ns is outside 0.5 … 1000 ns")
         if self.unit_sets is not None and not 1 <= int(self.unit_sets) <= 8:

@@ -36,7 +36,7 @@ from dataclasses import dataclass, field
 from fgc.errors import FgcError
 from fgc.ir.program import Program
 from fgc_backends.cost.operators import OperatorTable, table
-from fgc_backends.cost.target import DEFAULT
+from fgc_backends.cost.target import DEFAULT, DEFAULT_PART, capacity
 
 PART = DEFAULT.name  # the fit verdict's device (cost/target.py)
 PART_DSP, PART_BRAM36, PART_LUT, PART_FF = DEFAULT.dsp, DEFAULT.bram36, DEFAULT.lut, DEFAULT.ff
@@ -79,6 +79,9 @@ class PlanOptions:
     # emitted in another scalar than the Program's sets them (for_config)
     precision: str | None = None
     les_precision: str | None = None
+    # the FPGA part whose device capacities the fit verdict uses (cost/target.py; an HLS
+    # design's HlsConfig.part, which run_hls.tcl names)
+    part: str = DEFAULT_PART
 
     @classmethod
     def of(cls, program: Program, **changes) -> PlanOptions:
@@ -94,7 +97,7 @@ class PlanOptions:
         solver), not the Program's precision: a float design of a float64 Program is priced in
         float32 operators."""
         base = dict(unit_sets=config.unit_sets, precision=scalar_precision(config.scalar_cxx),
-                    les_precision=scalar_precision(config.linear_cxx))
+                    les_precision=scalar_precision(config.linear_cxx), part=config.part)
         base.update(changes)
         return cls.of(program, **base)
 
@@ -1001,9 +1004,10 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
     channel_mems = tuple(Memory(ch.name, ch.depth * (2 if ch.kind == "pingpong" else 1), ch.width,
                                 2 if ch.kind == "pingpong" else 1) for ch in plan.channels)
     bram36 = sum(m.bram18 for m in plan.memories + channel_mems) / 2
-    over = tuple(name for name, used, cap in (("DSP", dsp, PART_DSP),
-                                              ("BRAM36", bram36, PART_BRAM36),
-                                              ("LUT", lut, PART_LUT), ("FF", ff, PART_FF))
+    device = capacity(plan.options.part)
+    over = tuple(name for name, used, cap in (("DSP", dsp, device.dsp),
+                                              ("BRAM36", bram36, device.bram36),
+                                              ("LUT", lut, device.lut), ("FF", ff, device.ff))
                  if used > cap)
     return Cost(cycles, per, linear, dsp, lut, ff, bram36, plan.clock_mhz, not over, over,
                 tuple(by_unit), sum(m.words for m in plan.memories), other)
@@ -1035,17 +1039,20 @@ def phase_groups(cost: Cost) -> tuple[tuple[str, int], ...]:
 def plan_summary(program: Program, iterations: int, options: PlanOptions | None = None) -> dict:
     """What ``fgc simulate`` / ``fgc report`` print as hardware figures, all from
     ``plan_cost(build_plan(program, options))``: ``iterations`` × one iteration's cycles by
-    phase group, latency, resources and their share of the xc7z045, memory words, and power /
+    phase group, latency, resources and their share of the part's device (``options.part``,
+    default the xc7z045), memory words, and power /
     energy (:func:`plan_power_w`: the sim model's power approach on the plan's resources)."""
     plan = build_plan(program, options)
     c = plan_cost(plan)
     k = max(1, int(iterations))
-    caps = {"dsp": PART_DSP, "bram": PART_BRAM36, "lut": PART_LUT, "ff": PART_FF}
+    device = capacity(plan.options.part)
+    caps = {"dsp": device.dsp, "bram": device.bram36, "lut": device.lut, "ff": device.ff}
     res = {"dsp": c.dsp, "bram": c.bram36, "lut": c.lut, "ff": c.ff}
     power = plan_power_w(c)
     latency_ms = k * c.latency_ms
     return {"source": "accelerator plan (fgc_backends.hls.plan: plan_cost of build_plan)",
-            "device": PART, "clock_mhz": c.clock_mhz, "iterations": k,
+            "device": device.name, "part": plan.options.part, "clock_mhz": c.clock_mhz,
+            "iterations": k,
             "cycles": k * c.cycles, "iteration_cycles": c.cycles, "latency_ms": latency_ms,
             "linear_cycles": k * c.linear_cycles,
             "cycles_by_unit": {name: k * cyc for name, cyc in phase_groups(c)},

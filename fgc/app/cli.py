@@ -807,7 +807,8 @@ def _hardware_args(p: argparse.ArgumentParser, name: str) -> None:
     if name in ("compile", "run"):
         h.add_argument("--part", type=_part, metavar="PART",
                        help="FPGA part for run_hls.tcl, --backend hls only (default: "
-                            "xc7z045ffg900-2; the cost model's capacities stay the XC7Z045's)")
+                            "xc7z045ffg900-2); the plan's fit verdict and the lint's DSP budget "
+                            "use its device's capacities (backends/cost/target.py)")
         h.add_argument("--scalar", type=_scalar, metavar="T",
                        help="C++ scalar of the HLS accelerator or native solver: float, double or "
                             "ap_fixed<W,I> (2 ≤ W ≤ 1024, 1 ≤ I ≤ W; needs fgc[hls-fixed]) "
