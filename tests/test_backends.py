@@ -19,6 +19,7 @@ from fgc.frontend.geometry import Pose2
 from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
 from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
+from fgc.ir.result import FIELDS, SolveResult
 from fgc_backends import BACKENDS, CONTRACT, load, names
 
 
@@ -69,6 +70,9 @@ def test_run_gives_gtsams_optimum_as_keyed_fgc_values(name, tmp_path):
     graph = _chain()
     program = compile_graph(graph, SolverConfig(precision="float64"), name="contract")
     result = load(name).run(program, problem_data(graph, program))
+    assert isinstance(result, SolveResult), (name, type(result))
+    for field in FIELDS:
+        assert hasattr(result, field), (name, field)
     assert result.status == "converged", (name, result.status, result.reason)
     problem = to_gtsam(graph)
     params = gtsam.LevenbergMarquardtParams()

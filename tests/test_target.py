@@ -38,11 +38,11 @@ def test_cost_model_plan_and_lint_read_one_table():
 def test_the_emitted_part_sets_the_fit_verdict():
     """A design that fits the xc7z045 does not fit an xc7z020 (220 DSP): the plan's verdict
     reads the HLS config's part, and an unknown part is refused by name."""
+    from test_backends import _chain
+
     from fgc.compile import compile_graph
     from fgc.ir.program import SolverConfig
     from fgc_backends.hls import HlsConfig, HlsConfigError
-
-    from test_backends import _chain
 
     program = compile_graph(_chain(), SolverConfig(precision="float32"), name="parts")
     verdicts = {}

@@ -48,6 +48,7 @@ from fgc.ir import conditioning
 from fgc.ir.codes import REASONS, STATUSES
 from fgc.ir.datafile import ProblemData
 from fgc.ir.program import Program
+from fgc.ir.result import SolveResult
 from fgc_backends.cfamily.names import key_tokens, token_key
 
 RESULT_MAGIC = "FGCRESULT 2"
@@ -57,7 +58,7 @@ PRECISION_LIMIT = "precision_limit"  # a host-side verdict (judge_precision), no
 
 
 @dataclass(frozen=True)
-class HlsResult:
+class HlsResult(SolveResult):
     """Final estimate per variable, iterations, errors, status.
 
     ``values``: key → array of the variable's storage (C simulation, ``NativeSolver.run``), or
@@ -79,15 +80,6 @@ class HlsResult:
     keyed_values: dict | None = None
     keys: dict = field(default_factory=dict)  # Program variable key → the user's key (run())
 
-    @property
-    def user_values(self) -> dict:
-        """``values`` by the graph's own keys (an int key is an int again), as
-        ``SimResult.user_values``: filled by the backends' ``run``."""
-        return {self.keys.get(k, k): v for k, v in self.values.items()}
-
-    @property
-    def converged(self) -> bool:
-        return self.status == "converged"
 
 
 def result_from_arrays(program: Program, x: np.ndarray, errors, iterations: int, status: int,

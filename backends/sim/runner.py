@@ -19,13 +19,14 @@ from fgc.frontend.geometry import LieGroup
 from fgc.ir import conditioning
 from fgc.ir.datafile import ProblemData, check_structure, write_data
 from fgc.ir.program import Program
+from fgc.ir.result import SolveResult
 
 from .config import SimConfig
 from .emitter import RESULT_FORMAT, emit
 
 
 @dataclass(frozen=True)
-class SimResult:
+class SimResult(SolveResult):
     """What the simulator computed.
 
     ``values``/``storage``: the final estimate per Program variable key (``str`` of the graph's
@@ -69,14 +70,6 @@ class SimResult:
     linear_precision: str | None = None  # the linear solver's precision (None: ``precision``)
     keys: dict[str, int | str] = field(default_factory=dict)  # variable key → the user's key
 
-    @property
-    def user_values(self) -> dict[int | str, LieGroup]:
-        """``values`` by the graph's own keys (an int key is an int again)."""
-        return {self.keys.get(k, k): v for k, v in self.values.items()}
-
-    @property
-    def converged(self) -> bool:
-        return self.status == "converged"
 
     @property
     def float32_ok(self) -> bool | None:
