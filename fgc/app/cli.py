@@ -37,6 +37,7 @@ import numpy as np
 from fgc.app.specs import load_spec
 from fgc.errors import FgcError
 from fgc.frontend.dsl import Graph
+from fgc.ir.codes import ORDERINGS
 
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
 
@@ -827,8 +828,9 @@ def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
     s = p.add_argument_group("solver")
     s.add_argument("--solver", choices=("gn", "lm"), default="lm", help="Gauss-Newton or LM")
     s.add_argument("--ordering", default="auto",
-                   choices=("auto", "two-ended", "serial", "min-degree", "nested-dissection"),
-                   help="elimination ordering (auto = two-ended on chains)")
+                   choices=ORDERINGS,
+                   help="elimination ordering (auto = two-ended on chains, min-degree "
+                        "otherwise; natural = declaration order)")
     s.add_argument("--max-iterations", type=_positive_int, default=100, metavar="K",
                    help="k_max")
     if design_space:

@@ -17,6 +17,12 @@ NOISE_CODES: dict[str, int] = {kind: code for code, kind in enumerate(NOISE_KIND
 ROBUST_KINDS: tuple[str, ...] = ("huber", "cauchy")
 ROBUST_CODES: dict[str | None, int] = {None: 0} | {k: i + 1 for i, k in enumerate(ROBUST_KINDS)}
 
+# elimination orderings a SolverConfig may ask for (fgc.compiler.schedule implements each):
+# auto = two-ended on chains, min-degree otherwise; natural = declaration order (GTSAM's
+# Ordering.Natural)
+ORDERINGS: tuple[str, ...] = ("auto", "two-ended", "serial", "min-degree", "nested-dissection",
+                              "natural")
+
 STATUSES: tuple[str, ...] = ("converged", "max_iterations", "failed")
 REASONS: tuple[str, ...] = ("gradient", "step", "predicted_decrease", "absolute_error",
                             "relative_decrease", "max_iterations", "non_finite", "singular",

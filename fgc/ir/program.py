@@ -21,10 +21,10 @@ from fgc.compiler.schedule import Schedule
 from fgc.compiler.storage import StoragePlan, StorageStep
 from fgc.errors import FgcError
 from fgc.frontend.geometry import special
+from fgc.ir.codes import ORDERINGS  # the one list (the schedule and the CLI read it)
 
 PROGRAM_VERSION = 1
 METHODS, LINEAR_SOLVERS, PRECISIONS = ("gn", "lm"), ("qr", "cholesky"), ("float32", "float64")
-ORDERINGS = ("auto", "two-ended", "serial", "min-degree", "nested-dissection")
 
 
 class ProgramError(FgcError):

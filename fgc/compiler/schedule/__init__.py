@@ -38,6 +38,7 @@ from fgc.compiler.schedule.structure import (
     check_structure,
 )
 from fgc.errors import StructureError
+from fgc.ir.codes import ORDERINGS  # the one list of orderings
 
 __all__ = [
     "ORDERINGS",
@@ -53,7 +54,7 @@ __all__ = [
     "schedule",
 ]
 
-ORDERINGS = ("auto", "serial", "two-ended", "min-degree", "nested-dissection", "natural")
+
 _CHAIN_ORDERINGS = ("serial", "two-ended")
 
 
