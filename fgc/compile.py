@@ -1,6 +1,10 @@
 """The whole compiler, top to bottom: a Graph → a checked :class:`fgc.ir.program.Program`.
 
-    DSL graph ─► check ─► fuse (+ derive, CSE) ─► schedule ─► storage ─► lower ─► Program
+    DSL graph ─► check ─► schedule ─► fuse (+ derive, CSE) ─► storage ─► lower ─► Program
+
+The structure (check, schedule) comes first: it needs no symbolic work, so a graph that cannot
+be solved fails in milliseconds rather than after its derivations. The stages live in
+``fgc/compiler/`` in the same order; the Program's types in ``fgc/ir/``.
 """
 
 from __future__ import annotations
