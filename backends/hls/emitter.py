@@ -2,7 +2,7 @@
 
 Everything a template places is computed here (tables, offsets, sizes) or printed by the backend's
 printer (kernels, special functions, literals); the templates place them (loops over the
-fields, conditionals on the configuration, no arithmetic of their own). The only
+fields, conditionals on the configuration, offsets multiplied out in place). The only
 user text that reaches the files goes through :mod:`fgc_backends.cfamily.names`. Limits are checked
 first, so a Program the backend cannot build fails here with an :class:`HlsConfigError`, never in
 g++.
