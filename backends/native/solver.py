@@ -29,9 +29,10 @@ from fgc.ir.datafile import ProblemData, check_structure
 from fgc.ir.program import Program
 from fgc_backends.cfamily.names import identifier
 from fgc_backends.cfamily.results import HlsResult, judge_precision, result_from_arrays
+from fgc_backends.cfamily.scalars import check_fixed_data
 from fgc_backends.cfamily.tables import factor_data_words
 from fgc_backends.native.build import make
-from fgc_backends.native.config import NativeConfig
+from fgc_backends.native.config import NativeConfig, NativeConfigError
 from fgc_backends.native.emitter import NativeProject, emit
 
 _INTS = np.ctypeslib.ndpointer(dtype=np.int32, flags="C_CONTIGUOUS")
@@ -91,7 +92,8 @@ class NativeSolver:
 
     def flatten(self, data: ProblemData) -> tuple[np.ndarray, np.ndarray]:
         """The data as the kernel's two flat arrays, checked against the compiled layout and
-        structure fingerprint."""
+        structure fingerprint, and for a fixed-point build against the format's range (a value
+        outside it is a :class:`NativeConfigError` naming it: saturating it is no answer)."""
         p = self.program
         check_structure(data, p)
         if len(data.variables) != len(p.variables) or len(data.factors) != len(p.factors):
@@ -106,6 +108,7 @@ class NativeSolver:
             if len(f) != factor_data_words(p, spec.block):
                 raise DataError(f"factor instance {i} needs {factor_data_words(p, spec.block)} "
                                 f"numbers, got {len(f)}")
+        check_fixed_data(self.project.config.scalar_cxx, p, data, NativeConfigError)
         x = np.ascontiguousarray(np.concatenate(data.variables), dtype=np.float64)
         d = np.ascontiguousarray(np.concatenate(data.factors), dtype=np.float64)
         return x, d

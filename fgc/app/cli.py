@@ -737,12 +737,13 @@ def _clock(text: str) -> tuple[float, float]:
 
 
 def _scalar(text: str) -> str:
-    from fgc_backends.hls.config import HlsConfigError, check_scalar
+    from fgc_backends.cfamily.errors import CodegenError
+    from fgc_backends.cfamily.scalars import check_scalar
 
     text = re.sub(r"\s+", "", text)
     try:
         return check_scalar(text)
-    except HlsConfigError as exc:
+    except CodegenError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
 
 
