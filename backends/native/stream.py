@@ -1,0 +1,374 @@
+"""Fixed-lag streaming on the native solver: per keyframe, the compiled C++ solves the window of
+the newest keyframes with the marginal prior of the keyframes that left it (issue 19).
+
+The semantics are the simulator's fixed-lag window (``solve_fixed_lag`` in the emitted
+simulator's incremental module): on arrival of keyframe j the window j − W … j (the newest W
+keyframes and the one about to leave) is optimised from the current estimates; then the oldest
+keyframe is eliminated from the window's linearisation at the optimum, and the factor it passes
+to the next keyframe — the Schur complement of its conditional, a dense Gaussian prior — enters
+the next window, linear in the local coordinates at the point where it was formed (its
+linearisation point never moves; every other factor is relinearised each iteration).
+
+How the native solver runs it. A solver is compiled once, for a *template* window: the graph's
+first W + 1 keyframes with their factors, plus on every keyframe a ``marginal_prior`` factor
+(:func:`marginal_prior_type`: r = Log(x̄⁻¹x) − m per variable, whitened by a full square-root
+information R, so its cost is ½‖R·Log(x̄⁻¹x) − R·m‖², exactly the simulator's ½‖A·s − b‖² with
+R = A, m = A⁻¹b). Each update fills that one structure with numbers:
+
+- window slot i holds keyframe first + i; a template factor takes the numbers of the graph factor
+  on the same slots (same factor type, same variables by position in their keyframes); a template
+  factor without one (the first keyframe's priors once the window has moved on) and a graph
+  factor that reaches past j (during the first W updates) get a zero square-root information:
+  they contribute nothing, neither cost nor Jacobian;
+- the slot-0 prior carries the marginal (zero before any keyframe left); during the first W
+  updates the slots past j are not in the problem: their variables are held by a unit prior at
+  their current value (zero residual, zero gradient: their step is exactly zero), decoupled from
+  the window by the zero-weighted factors between them;
+- a graph factor inside the window that no template factor matches (the stream's pattern of
+  factors is not the same for every window) is refused (:class:`NativeStreamError`).
+
+The marginalisation itself runs in Python (NumPy) on the simulator's run-time (the same
+kernels' Jacobians, whitening and robust weights, and its Log and its derivative): one
+linearisation of the leaving keyframe's factors and one QR of a (rows × 2 keyframes) matrix per
+update. Its time is reported beside the native solve's (``marginal_seconds``; ``seconds`` is the
+whole update: data assembly, the native solve and the marginalisation).
+"""
+
+from __future__ import annotations
+
+import inspect
+import runpy
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from fgc.errors import FgcError
+from fgc.frontend.dsl import FactorType, Graph, Matrix
+from fgc.frontend.noise import NoiseModel
+from fgc.ir.datafile import ProblemData, factor_words, write_data
+from fgc.ir.program import Program
+
+_PRIOR_TYPES: dict[tuple[type, ...], FactorType] = {}
+
+
+class NativeStreamError(FgcError):
+    """The stream cannot run on the native solver (a window whose factors differ from the
+    template's, a factor spanning more than two keyframes, a singular marginal)."""
+
+
+def _marginal_prior(*variables, **measured):
+    """Local coordinates Log(x̄⁻¹x) of each variable at its linearisation point ``at<i>``, stacked,
+    minus ``mean``: whitened by R, R·Log(x̄⁻¹x) − R·mean."""
+    local = []
+    for i, value in enumerate(variables):
+        local += list(measured[f"at{i}"].local(value))
+    mean = measured["mean"]
+    return [local[k] - mean[k, 0] for k in range(len(local))]
+
+
+def marginal_prior_type(types: tuple[type, ...]) -> FactorType:
+    """The dense prior factor type on a keyframe whose variables have ``types`` (in order):
+    variables ``x0 …``, measurements ``at0 …`` (the linearisation point, same types) and
+    ``mean`` (a column of the keyframe's tangent dimension)."""
+    if types not in _PRIOR_TYPES:
+        dim = sum(t.dim for t in types)
+        params = [inspect.Parameter(f"x{i}", inspect.Parameter.POSITIONAL_OR_KEYWORD,
+                                    annotation=t) for i, t in enumerate(types)]
+        params += [inspect.Parameter(f"at{i}", inspect.Parameter.KEYWORD_ONLY, annotation=t)
+                   for i, t in enumerate(types)]
+        params.append(inspect.Parameter("mean", inspect.Parameter.KEYWORD_ONLY,
+                                        annotation=Matrix(dim, 1)))
+
+        def marginal_prior(*variables, **measured):
+            return _marginal_prior(*variables, **measured)
+
+        marginal_prior.__signature__ = inspect.Signature(params)
+        marginal_prior.__annotations__ = {p.name: p.annotation for p in params}
+        name = "MarginalPrior" + "".join(t.__name__ for t in types)
+        _PRIOR_TYPES[types] = FactorType(marginal_prior, name=name)
+    return _PRIOR_TYPES[types]
+
+
+@dataclass
+class NativeStreamResult:
+    """A native fixed-lag stream: the final estimate (every variable where the last update that
+    held it left it), per-update records as the simulator's (``keyframe``, ``mode``, ``first``,
+    ``iterations``, ``status``, ``reason``, ``cost``, ``seconds``, ``values``) plus
+    ``solve_seconds`` (the native call) and ``marginal_seconds``."""
+
+    values: dict
+    storage: dict
+    status: str
+    reason: str
+    iterations: int
+    updates: list = field(default_factory=list)
+    initial_error: float | None = None
+    template: Program | None = None
+
+
+class _Simulator:
+    """The emitted simulator's run-time on the whole stream: Jacobians of the leaving keyframe's
+    factors, local coordinates and their derivative (the marginal's linearisation)."""
+
+    def __init__(self, program: Program, data: ProblemData):
+        from fgc_backends import sim
+
+        self._tmp = tempfile.TemporaryDirectory(prefix="fgc-native-stream-")
+        out = Path(self._tmp.name)
+        module = sim.emit(program, out)[0]
+        write_data(data, out / "data.txt")
+        namespace = runpy.run_path(str(module), run_name="fgc_sim_problem")
+        lib, spec = namespace["LIB"], namespace["PROBLEM"]
+        self.problem = lib.optimizer.Problem(
+            spec, lib.runtime.read_data(str(out / "data.txt"), spec["structure"]), "float64",
+            lib)
+        self.chain = lib.incremental.Chain(self.problem)
+
+    def marginal(self, x: np.ndarray, c: int, tau) -> tuple[np.ndarray, np.ndarray]:
+        """Eliminate keyframe c from its factors (and the prior ``tau`` = (A, b, x̄) on it)
+        linearised at ``x``: the dense factor [A | b] it passes to keyframe c + 1."""
+        chain, problem = self.chain, self.problem
+        cols = np.concatenate([chain.tangent(c), chain.tangent(c + 1)])
+        where = np.full(problem.n, -1, dtype=np.intp)
+        where[cols] = np.arange(cols.size)
+        nc, width = chain.tangent(c).size, cols.size
+        stacks = []
+        for b, block in enumerate(problem.blocks):
+            sel = np.flatnonzero(chain.entry[b] == c)
+            if not sel.size:
+                continue
+            if np.any(chain.reach[b][sel] > c + 1):
+                raise NativeStreamError(f"a factor of keyframe {c} reaches past keyframe "
+                                        f"{c + 1}: the native fixed-lag window marginalises "
+                                        "factors between consecutive keyframes only")
+            with np.errstate(all="ignore"):
+                ab = block.linearize(x, sel)
+            local = where[block.columns[sel]]  # (instances, d)
+            rows = np.zeros((sel.size, block.m, width + 1))
+            for i in range(sel.size):
+                np.add.at(rows[i], (slice(None), local[i]), ab[i, :, :-1])
+            rows[:, :, -1] = ab[:, :, -1]
+            stacks.append(rows.reshape(-1, width + 1))
+        if tau is not None:
+            a, rhs, lin = tau
+            shift, jac = chain.local_jacobian(lin, x, c)
+            rows = np.zeros((a.shape[0], width + 1))
+            rows[:, :nc] = a @ jac
+            rows[:, -1] = rhs - a @ shift
+            stacks.append(rows)
+        stacked = np.concatenate(stacks)
+        n1 = width - nc
+        if stacked.shape[0] < width:
+            raise NativeStreamError(f"keyframe {c}: {stacked.shape[0]} rows cannot determine "
+                                    f"the {width} columns of its conditional and marginal")
+        r = np.linalg.qr(stacked, mode="r")
+        new = r[nc:nc + n1, nc:]
+        return new[:, :-1].copy(), new[:, -1].copy()
+
+
+class FixedLagStream:
+    """The native solver compiled for a fixed-lag window of ``window`` keyframes over the chain
+    ``program`` (compiled from ``graph``); :meth:`run` streams ``data``."""
+
+    def __init__(self, graph: Graph, program: Program, window: int, config=None):
+        from fgc.compile import compile_graph
+        from fgc_backends import native
+
+        if program.schedule.structure_class != "chain" or not program.schedule.clusters:
+            raise NativeStreamError("native streaming needs a chain of keyframes")
+        if isinstance(window, bool) or not isinstance(window, int) or window < 1:
+            raise NativeStreamError(f"the fixed-lag window must be a positive number of "
+                                    f"keyframes, got {window!r}")
+        self.graph, self.program, self.window = graph, program, window
+        clusters = program.schedule.clusters
+        self.size = size = min(window + 1, len(clusters))
+        original = {str(k): k for k in graph.variables}
+        self.cluster_of = {k: c for c, keys in enumerate(clusters) for k in keys}
+        self.position = {k: p for keys in clusters for p, k in enumerate(keys)}
+        types = [tuple(graph.variables[original[k]].type for k in keys) for keys in clusters]
+        for c, kinds in enumerate(types):
+            if kinds != types[0]:
+                raise NativeStreamError(f"keyframe {c} has variables of types "
+                                        f"{[t.__name__ for t in kinds]}, keyframe 0 "
+                                        f"{[t.__name__ for t in types[0]]}: a window slides "
+                                        "over keyframes of one kind")
+        self.types = types
+
+        template = Graph()
+        for c in range(size):
+            for k in clusters[c]:
+                var = graph.variables[original[k]]
+                template.add_variable(var.key, var.initial, var.type)
+        self.signatures, self.template_factors = [], []
+        for f in graph.factors:
+            spans = [self.cluster_of[str(k)] for k in f.keys]
+            if max(spans) < size:
+                template.add(f)
+                self.template_factors.append(f)
+                self.signatures.append(self._signature(f, 0))
+        self.prior_types = []
+        for c in range(size):
+            keys = [original[k] for k in clusters[c]]
+            ptype = marginal_prior_type(types[c])
+            dim = sum(t.dim for t in types[c])
+            lin = {f"at{i}": graph.variables[k].initial for i, k in enumerate(keys)}
+            template.add(ptype(*keys, noise=NoiseModel("full", np.eye(dim)),
+                               mean=np.zeros((dim, 1)), **lin))
+            self.prior_types.append((ptype, dim))
+        solver = program.solver
+        self.template = compile_graph(template, solver, name=f"{program.name}_lag{window}")
+        self.solver = native.load(self.template, config)
+        self.config = self.solver.project.config
+        # every graph factor by its signature (type, (keyframe, position) per variable)
+        self.by_signature = {self._signature(f, 0): i for i, f in enumerate(graph.factors)}
+        self.spans = [(min(s), max(s)) for s in
+                      ([self.cluster_of[str(k)] for k in f.keys] for f in graph.factors)]
+        self._words = {}
+        self._zero = {}
+
+    def _signature(self, f, shift: int) -> tuple:
+        return (f.type.name, tuple((self.cluster_of[str(k)] + shift, self.position[str(k)])
+                                   for k in f.keys))
+
+    # -- the numbers of one update ----------------------------------------------------------
+    def _factor(self, index: int, member) -> np.ndarray:
+        if index not in self._words:
+            f = self.graph.factors[index]
+            self._words[index] = np.concatenate(factor_words(f.measured, f.noise, member))
+        return self._words[index]
+
+    def _zeroed(self, t: int, member) -> np.ndarray:
+        if t not in self._zero:
+            f = self.template_factors[t]
+            noise = NoiseModel(f.noise.kind, np.zeros_like(f.noise.sqrt_information),
+                               f.noise.robust)
+            self._zero[t] = np.concatenate(factor_words(f.measured, noise, member))
+        return self._zero[t]
+
+    def _prior(self, slot: int, member, lin: list, r: np.ndarray, mean: np.ndarray):
+        measured = {f"at{i}": v for i, v in enumerate(lin)}
+        measured["mean"] = mean
+        return np.concatenate(factor_words(measured, NoiseModel("full", r), member))
+
+    def assemble(self, estimate: dict, first: int, last: int, tau):
+        """(x, d, matched): the template's flat arrays for the window first … last and the
+        graph factors the window holds."""
+        clusters = self.program.schedule.clusters
+        slot_keys = [clusters[first + s] for s in range(self.size)]
+        x = np.concatenate([estimate[slot_keys[self.cluster_of[v.key]][self.position[v.key]]]
+                            for v in self.template.variables])
+        words, matched = [], 0
+        n_template = len(self.template_factors)
+        for spec in self.template.factors:
+            block = self.template.blocks[spec.block]
+            for member, t in zip(block.members, spec.factors, strict=True):
+                if t < n_template:
+                    kind, cells = self.signatures[t]
+                    slots = [c for c, _ in cells]
+                    index = self.by_signature.get((kind, tuple((c + first, p)
+                                                               for c, p in cells)))
+                    if index is not None and max(slots) + first <= last:
+                        words.append(self._factor(index, member))
+                        matched += 1
+                    else:
+                        words.append(self._zeroed(t, member))
+                    continue
+                slot = t - n_template
+                _, dim = self.prior_types[slot]
+                lin = [estimate[k] for k in slot_keys[slot]]
+                if slot == 0 and tau is not None:
+                    words.append(self._prior(slot, member, tau[2], tau[0], tau[1]))
+                elif first + slot > last:  # not arrived yet: held where it is
+                    words.append(self._prior(slot, member, lin, np.eye(dim), np.zeros(dim)))
+                else:
+                    words.append(self._prior(slot, member, lin, np.zeros((dim, dim)),
+                                             np.zeros(dim)))
+        spans = self.spans
+        inside = sum(1 for lo, hi in spans if lo >= first and hi <= last)
+        if matched != inside:
+            raise NativeStreamError(f"keyframes {first} … {last}: the window holds {inside} "
+                                    f"factors but the compiled template matches {matched}: the "
+                                    "stream's factors do not repeat keyframe by keyframe")
+        return x, np.concatenate(words)
+
+    def _check_once(self, x, d) -> None:
+        """The first update's arrays against the template's layout (sizes, per-block words)."""
+        t = self.template
+        sizes, pos = [], 0
+        for spec in t.factors:
+            from fgc_backends.cfamily.tables import factor_data_words
+            n = factor_data_words(t, spec.block)
+            sizes.append(d[pos:pos + n])
+            pos += n
+        variables, pos = [], 0
+        for v in t.variables:
+            variables.append(x[pos:pos + v.storage_dim])
+            pos += v.storage_dim
+        self.solver.flatten(ProblemData(tuple(variables), tuple(sizes), t.structure_fingerprint))
+
+    # -- the stream ---------------------------------------------------------------------------
+    def run(self, data: ProblemData, progress=None) -> NativeStreamResult:
+        from fgc.interop.estimates import values_from_storage
+        from fgc_backends.cfamily.results import REASONS, STATUSES
+
+        program, window = self.program, self.window
+        clusters = program.schedule.clusters
+        simulator = _Simulator(program, data)
+        x_off = simulator.problem.x_off
+        index = {v.key: i for i, v in enumerate(program.variables)}
+        full = np.concatenate([np.asarray(v, dtype=np.float64) for v in data.variables])
+        estimate = {v.key: full[x_off[i]:x_off[i + 1]] for i, v in enumerate(program.variables)}
+        tau, records, status, reason, total_iterations = None, [], "converged", "", 0
+        for j in range(len(clusters)):
+            t0 = time.perf_counter()
+            first = max(0, j - window)
+            x, d = self.assemble(estimate, first, j, tau)
+            if j == 0:
+                self._check_once(x, d)
+            t1 = time.perf_counter()
+            x_out, errors, info = self.solver.solve(x, d)
+            t2 = time.perf_counter()
+            pos = 0
+            for v in self.template.variables:
+                slot = self.cluster_of[v.key]
+                if first + slot <= j:
+                    key = clusters[first + slot][self.position[v.key]]
+                    estimate[key][:] = x_out[pos:pos + v.storage_dim]
+                pos += v.storage_dim
+            t3 = time.perf_counter()
+            if j >= window and j + 1 < len(clusters):  # keyframe j − W leaves: its marginal
+                a, b = simulator.marginal(full, first, None if tau is None else (
+                    tau[0], tau[3], tau[4]))
+                signs = np.where(np.diag(a) < 0, -1.0, 1.0)
+                a, b = a * signs[:, None], b * signs
+                if np.min(np.abs(np.diag(a))) <= 1e-12 * max(1.0, np.max(np.abs(a))):
+                    raise NativeStreamError(f"keyframe {first}: its marginal prior on keyframe "
+                                            f"{first + 1} is singular")
+                lin = [estimate[k].copy() for k in clusters[first + 1]]
+                # the prior on keyframe first + 1: R = A, mean A⁻¹b at x̄ (for the template), and
+                # (A, b, x̄) for the next marginalisation
+                tau = (a, np.linalg.solve(a, b), lin, b, np.concatenate(lin))
+            t4 = time.perf_counter()
+            iterations, st, why = int(info[0]), STATUSES[int(info[1])], REASONS[int(info[2])]
+            total_iterations += iterations
+            oldest = max(0, j - window + 1)
+            snapshot = [None] * len(program.variables)
+            for c in range(oldest, j + 1):
+                for k in clusters[c]:
+                    snapshot[index[k]] = estimate[k].tolist()
+            records.append({"keyframe": j, "mode": "fixed-lag", "first": first,
+                            "iterations": iterations, "status": st, "reason": why,
+                            "cost": float(errors[1]), "seconds": t4 - t0,
+                            "solve_seconds": t2 - t1, "marginal_seconds": t4 - t3,
+                            "values": snapshot})
+            if progress is not None:
+                progress(records[-1])
+            if st != "converged" and status == "converged":
+                status, reason = st, f"keyframe {j}: {why}"
+        storage = {k: v.copy() for k, v in estimate.items()}
+        return NativeStreamResult(values_from_storage(program, storage), storage, status,
+                                  reason, total_iterations, records, template=self.template)
+
