@@ -202,7 +202,10 @@ def _context(program: Program, config: NativeConfig, project: str) -> dict:
     # loop would index past xs[MAX_W])
     max_sep = max(w - f for w, f in zip(table["STEP_W"], table["STEP_F"], strict=True))
     host_lanes = lanes(config)
+    row_words = [len(b.instances) * b.m * b.stride for b in blocks]  # fgc_rows' layout
     return {
+        "rows_offsets": [sum(row_words[:i]) for i in range(len(blocks))],
+        "n_rows": sum(row_words),
         "cpu_program": True,
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,

@@ -78,6 +78,8 @@ class NativeSolver:
         lib.fgc_run.restype = None
         lib.fgc_probe.argtypes = [ctypes.c_void_p] * 3
         lib.fgc_probe.restype = None
+        lib.fgc_rows.argtypes = [ctypes.c_void_p] * 3
+        lib.fgc_rows.restype = None
         lib.fgc_structure.argtypes = []
         lib.fgc_structure.restype = ctypes.c_char_p
         sizes = np.zeros(4, dtype=np.int32)
@@ -128,6 +130,29 @@ class NativeSolver:
                                _address(d, self.n_data, "the factor data"),
                                out.__array_interface__["data"][0])
         return float(out[0]), float(out[1])
+
+    def row_layout(self) -> list[tuple[int, int, int, int]]:
+        """Per block type of the Program: (first word in :meth:`rows`' output, instances,
+        residual rows m, columns d + 1), the instances in Program order of that block type."""
+        out, pos = [], 0
+        for b, block in enumerate(self.program.blocks):
+            count = sum(1 for f in self.program.factors if f.block == b)
+            m, cols = block.residual_dim, sum(block.variable_dims) + 1
+            out.append((pos, count, m, cols))
+            pos += count * m * cols
+        return out
+
+    def rows(self, x: np.ndarray, d: np.ndarray) -> np.ndarray:
+        """The whitened rows [A | b] (b = −W·r, GTSAM's convention) of every factor instance at
+        flat ``x``, as the solver linearises them, laid out as :meth:`row_layout` says."""
+        if not hasattr(self, "_rows_out"):
+            layout = self.row_layout()
+            last = layout[-1] if layout else (0, 0, 0, 0)
+            self._rows_out = np.empty(last[0] + last[1] * last[2] * last[3])
+        self.library.fgc_rows(_address(x, self.n_x, "x"),
+                              _address(d, self.n_data, "the factor data"),
+                              self._rows_out.__array_interface__["data"][0])
+        return self._rows_out.copy()
 
     def run(self, data: ProblemData) -> HlsResult:
         """Solve ``data``; the result carries the host-side float32 verdict

@@ -27,28 +27,26 @@ R = A, m = A⁻¹b). Each update fills that one structure with numbers:
 - a graph factor inside the window that no template factor matches (the stream's pattern of
   factors is not the same for every window) is refused (:class:`NativeStreamError`).
 
-The marginalisation itself runs in Python (NumPy) on the simulator's run-time (the same
-kernels' Jacobians, whitening and robust weights, and its Log and its derivative): one
-linearisation of the leaving keyframe's factors and one QR of a (rows × 2 keyframes) matrix per
-update. Its time is reported beside the native solve's (``marginal_seconds``; ``seconds`` is the
-whole update: data assembly, the native solve and the marginalisation).
+The marginalisation: the native library linearises the window at its optimum
+(``fgc_rows``: the whitened rows of every factor, as its LM does, marginal prior included, whose
+Jacobian is the exact derivative of Log), and NumPy eliminates the leaving keyframe with one QR
+of the (rows × two keyframes) matrix of the factors on it. Its time is reported beside the
+native solve's (``marginal_seconds``; ``seconds`` is the whole update: data assembly, the native
+solve and the marginalisation).
 """
 
 from __future__ import annotations
 
 import inspect
-import runpy
-import tempfile
 import time
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 from fgc.errors import FgcError
 from fgc.frontend.dsl import FactorType, Graph, Matrix
 from fgc.frontend.noise import NoiseModel
-from fgc.ir.datafile import ProblemData, factor_words, write_data
+from fgc.ir.datafile import ProblemData, factor_words
 from fgc.ir.program import Program
 
 _PRIOR_TYPES: dict[tuple[type, ...], FactorType] = {}
@@ -105,68 +103,9 @@ class NativeStreamResult:
     reason: str
     iterations: int
     updates: list = field(default_factory=list)
-    initial_error: float | None = None
+    initial_error: float | None = None  # GTSAM's error of the whole graph at the initial values
+    final_error: float | None = None  # … and at the final estimate
     template: Program | None = None
-
-
-class _Simulator:
-    """The emitted simulator's run-time on the whole stream: Jacobians of the leaving keyframe's
-    factors, local coordinates and their derivative (the marginal's linearisation)."""
-
-    def __init__(self, program: Program, data: ProblemData):
-        from fgc_backends import sim
-
-        self._tmp = tempfile.TemporaryDirectory(prefix="fgc-native-stream-")
-        out = Path(self._tmp.name)
-        module = sim.emit(program, out)[0]
-        write_data(data, out / "data.txt")
-        namespace = runpy.run_path(str(module), run_name="fgc_sim_problem")
-        lib, spec = namespace["LIB"], namespace["PROBLEM"]
-        self.problem = lib.optimizer.Problem(
-            spec, lib.runtime.read_data(str(out / "data.txt"), spec["structure"]), "float64",
-            lib)
-        self.chain = lib.incremental.Chain(self.problem)
-
-    def marginal(self, x: np.ndarray, c: int, tau) -> tuple[np.ndarray, np.ndarray]:
-        """Eliminate keyframe c from its factors (and the prior ``tau`` = (A, b, x̄) on it)
-        linearised at ``x``: the dense factor [A | b] it passes to keyframe c + 1."""
-        chain, problem = self.chain, self.problem
-        cols = np.concatenate([chain.tangent(c), chain.tangent(c + 1)])
-        where = np.full(problem.n, -1, dtype=np.intp)
-        where[cols] = np.arange(cols.size)
-        nc, width = chain.tangent(c).size, cols.size
-        stacks = []
-        for b, block in enumerate(problem.blocks):
-            sel = np.flatnonzero(chain.entry[b] == c)
-            if not sel.size:
-                continue
-            if np.any(chain.reach[b][sel] > c + 1):
-                raise NativeStreamError(f"a factor of keyframe {c} reaches past keyframe "
-                                        f"{c + 1}: the native fixed-lag window marginalises "
-                                        "factors between consecutive keyframes only")
-            with np.errstate(all="ignore"):
-                ab = block.linearize(x, sel)
-            local = where[block.columns[sel]]  # (instances, d)
-            rows = np.zeros((sel.size, block.m, width + 1))
-            for i in range(sel.size):
-                np.add.at(rows[i], (slice(None), local[i]), ab[i, :, :-1])
-            rows[:, :, -1] = ab[:, :, -1]
-            stacks.append(rows.reshape(-1, width + 1))
-        if tau is not None:
-            a, rhs, lin = tau
-            shift, jac = chain.local_jacobian(lin, x, c)
-            rows = np.zeros((a.shape[0], width + 1))
-            rows[:, :nc] = a @ jac
-            rows[:, -1] = rhs - a @ shift
-            stacks.append(rows)
-        stacked = np.concatenate(stacks)
-        n1 = width - nc
-        if stacked.shape[0] < width:
-            raise NativeStreamError(f"keyframe {c}: {stacked.shape[0]} rows cannot determine "
-                                    f"the {width} columns of its conditional and marginal")
-        r = np.linalg.qr(stacked, mode="r")
-        new = r[nc:nc + n1, nc:]
-        return new[:, :-1].copy(), new[:, -1].copy()
 
 
 class FixedLagStream:
@@ -228,6 +167,61 @@ class FixedLagStream:
                       ([self.cluster_of[str(k)] for k in f.keys] for f in graph.factors)]
         self._words = {}
         self._zero = {}
+        self._marginal_plan()
+
+    def _marginal_plan(self) -> None:
+        """Where the rows of the factors that eliminate slot 0 lie in the solver's
+        linearisation (:meth:`NativeSolver.rows`) and which columns of the (slot 0, slot 1)
+        matrix each of their variables' tangent columns is."""
+        t = self.template
+        dims = {v.key: v.dim for v in t.variables}
+        column, width = {}, 0
+        for slot in (0, 1):
+            for v in t.variables:
+                if self.cluster_of[v.key] == slot:
+                    column[v.key] = width
+                    width += dims[v.key]
+        self.n0 = sum(dims[v.key] for v in t.variables if self.cluster_of[v.key] == 0)
+        self.width = width
+        layout = self.solver.row_layout()
+        seen = [0] * len(t.blocks)
+        self.slot0 = []  # (first word, m, columns, target columns)
+        for spec in t.factors:
+            k = seen[spec.block]
+            seen[spec.block] += 1
+            slots = [self.cluster_of[key] for key in spec.keys]
+            if min(slots) != 0:
+                continue
+            if max(slots) > 1:
+                raise NativeStreamError(f"a factor on {list(spec.keys)} spans keyframes 0 to "
+                                        f"{max(slots)}: the native fixed-lag window marginalises "
+                                        "factors between consecutive keyframes only")
+            pos, _, m, cols = layout[spec.block]
+            targets = np.concatenate([column[key] + np.arange(dims[key]) for key in spec.keys])
+            self.slot0.append((pos + k * m * cols, m, cols, targets))
+
+    def marginal(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Eliminate slot 0 from the window's linearisation at ``x`` (the solver's own rows: its
+        factors and its marginal prior): the dense factor [A | b] it passes to slot 1, A upper
+        triangular with a positive diagonal."""
+        rows = self.solver.rows(x, d)
+        stacks = []
+        for start, m, cols, targets in self.slot0:
+            block = rows[start:start + m * cols].reshape(m, cols)
+            part = np.zeros((m, self.width + 1))
+            part[:, targets] = block[:, :-1]
+            part[:, -1] = block[:, -1]
+            stacks.append(part)
+        stacked = np.concatenate(stacks)
+        n0, n1 = self.n0, self.width - self.n0
+        if stacked.shape[0] < self.width:
+            raise NativeStreamError(f"{stacked.shape[0]} rows cannot determine the "
+                                    f"{self.width} columns of the leaving keyframe's "
+                                    "conditional and marginal")
+        r = np.linalg.qr(stacked, mode="r")
+        a, b = r[n0:n0 + n1, n0:-1], r[n0:n0 + n1, -1]
+        signs = np.where(np.diag(a) < 0, -1.0, 1.0)
+        return a * signs[:, None], b * signs
 
     def _signature(self, f, shift: int) -> tuple:
         return (f.type.name, tuple((self.cluster_of[str(k)] + shift, self.position[str(k)])
@@ -316,18 +310,19 @@ class FixedLagStream:
 
         program, window = self.program, self.window
         clusters = program.schedule.clusters
-        simulator = _Simulator(program, data)
-        x_off = simulator.problem.x_off
+        offsets = np.concatenate([[0], np.cumsum([v.storage_dim for v in program.variables])])
         index = {v.key: i for i, v in enumerate(program.variables)}
         full = np.concatenate([np.asarray(v, dtype=np.float64) for v in data.variables])
-        estimate = {v.key: full[x_off[i]:x_off[i + 1]] for i, v in enumerate(program.variables)}
+        estimate = {v.key: full[offsets[i]:offsets[i + 1]]
+                    for i, v in enumerate(program.variables)}
         tau, records, status, reason, total_iterations = None, [], "converged", "", 0
         for j in range(len(clusters)):
             t0 = time.perf_counter()
             first = max(0, j - window)
+            if j == 0:  # once, untimed: the arrays against the template's layout
+                self._check_once(*self.assemble(estimate, 0, 0, None))
+                t0 = time.perf_counter()
             x, d = self.assemble(estimate, first, j, tau)
-            if j == 0:
-                self._check_once(x, d)
             t1 = time.perf_counter()
             x_out, errors, info = self.solver.solve(x, d)
             t2 = time.perf_counter()
@@ -340,17 +335,13 @@ class FixedLagStream:
                 pos += v.storage_dim
             t3 = time.perf_counter()
             if j >= window and j + 1 < len(clusters):  # keyframe j − W leaves: its marginal
-                a, b = simulator.marginal(full, first, None if tau is None else (
-                    tau[0], tau[3], tau[4]))
-                signs = np.where(np.diag(a) < 0, -1.0, 1.0)
-                a, b = a * signs[:, None], b * signs
-                if np.min(np.abs(np.diag(a))) <= 1e-12 * max(1.0, np.max(np.abs(a))):
+                a, b = self.marginal(x_out, d)
+                if np.min(np.diag(a)) <= 1e-12 * max(1.0, float(np.max(np.abs(a)))):
                     raise NativeStreamError(f"keyframe {first}: its marginal prior on keyframe "
                                             f"{first + 1} is singular")
-                lin = [estimate[k].copy() for k in clusters[first + 1]]
-                # the prior on keyframe first + 1: R = A, mean A⁻¹b at x̄ (for the template), and
-                # (A, b, x̄) for the next marginalisation
-                tau = (a, np.linalg.solve(a, b), lin, b, np.concatenate(lin))
+                # the prior on keyframe first + 1 at x̄ = its estimate now: R = A, mean A⁻¹b
+                tau = (a, np.linalg.solve(a, b), [estimate[k].copy()
+                                                  for k in clusters[first + 1]])
             t4 = time.perf_counter()
             iterations, st, why = int(info[0]), STATUSES[int(info[1])], REASONS[int(info[2])]
             total_iterations += iterations
@@ -369,6 +360,11 @@ class FixedLagStream:
             if st != "converged" and status == "converged":
                 status, reason = st, f"keyframe {j}: {why}"
         storage = {k: v.copy() for k, v in estimate.items()}
-        return NativeStreamResult(values_from_storage(program, storage), storage, status,
-                                  reason, total_iterations, records, template=self.template)
+        values = values_from_storage(program, storage)
+        original = {str(k): k for k in self.graph.variables}
+        with np.errstate(all="ignore"):
+            initial_error = self.graph.error()
+            final_error = self.graph.error({original[k]: v for k, v in values.items()})
+        return NativeStreamResult(values, storage, status, reason, total_iterations, records,
+                                  float(initial_error), float(final_error), self.template)
 

@@ -4,7 +4,7 @@
     fgc simulate SPEC [--json F]                      run the accelerator simulator, report cost
     fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
     fgc run      SPEC --backend native|sim            solve with the generated solver
-    fgc stream   SPEC --window W | --incremental K    keyframes one at a time (simulator)
+    fgc stream   SPEC --window W | --incremental K    keyframes one at a time (sim; native: -W)
     fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
     fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
     fgc metrics  EST.tum REF.tum [--align se3]        ATE / RPE (translation m, rotation deg)
@@ -73,14 +73,18 @@ def solver_config(args, precision_default: str):
 def _streaming(args) -> bool:
     """Whether keyframe-by-keyframe mode was asked for (--incremental or --window); checks
     the combination and refuses the backends that run batch solves only."""
-    from fgc.app.streaming import HW_REFUSAL, check_mode
+    from fgc.app.streaming import HW_REFUSAL, NATIVE_REFUSAL, check_mode
 
     incremental, window = getattr(args, "incremental", None), getattr(args, "window", None)
     batch_every = getattr(args, "batch_every", None)
     if incremental is None and window is None and batch_every is None:
         return False
     check_mode(incremental, batch_every, window)
-    if getattr(args, "backend", "sim") != "sim":
+    backend = getattr(args, "backend", "sim")
+    if backend == "native" and args.command == "stream":
+        if incremental is not None or batch_every is not None:
+            raise FgcError(f"--backend native: {NATIVE_REFUSAL}")
+    elif backend != "sim":
         raise FgcError(f"--backend {args.backend}: {HW_REFUSAL}")
     return True
 
@@ -458,11 +462,13 @@ def _cmd_stream(args) -> int:
     window = getattr(args, "window", None)
     quiet = getattr(args, "quiet", False)
     n = len(program.schedule.clusters)
+    backend = getattr(args, "backend", "sim")
+    who = "native solver" if backend == "native" else "simulator"
     if not quiet:
         print(f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, "
-              f"simulator {program.solver.precision}; per keyframe: the accelerator plan's "
+              f"{who} {program.solver.precision}; per keyframe: the accelerator plan's "
               f"latency (model estimate: the update's iterations as batch iterations of a chain "
-              f"as long as its window; {streaming.UNPRICED} otherwise) and the simulator's "
+              f"as long as its window; {streaming.UNPRICED} otherwise) and the {who}'s "
               "wall time", flush=True)
     online: dict = {}
     pricer = streaming.UpdatePricer(graph, program, window)
@@ -477,10 +483,11 @@ def _cmd_stream(args) -> int:
                      " chain)" if price else "model estimate not available")
             print(f"  keyframe {update.keyframe:>4} ({update.mode}, from {update.first}): "
                   f"{update.iterations:>3} iterations, {update.status}, {model}, "
-                  f"{update.seconds * 1e3:8.2f} ms (simulator wall time); "
+                  f"{update.seconds * 1e3:8.2f} ms ({who} wall time); "
                   f"{_newest_text(update, program)}", flush=True)
 
-    result = streaming.run_stream(program, data, window, progress)
+    result = streaming.run_stream(program, data, window, progress, backend=backend,
+                                  graph=graph)
     from fgc.app.run_report import require_finite_start
 
     require_finite_start(graph, result)
@@ -491,13 +498,14 @@ def _cmd_stream(args) -> int:
               "incremental", "window": window, "incremental_k": program.solver.incremental_k,
               "batch_every": program.solver.batch_every, "status": result.status,
               "reason": result.reason, "iterations": result.iterations,
-              "model_estimate": priced, "simulator_update_time": times,
+              "backend": backend, "model_estimate": priced,
+              f"{'native' if backend == 'native' else 'simulator'}_update_time": times,
               "accuracy_vs_batch_optimum": acc,
               "updates": [{k: v for k, v in u.items() if k != "values"}
                           for u in result.updates]}
     ate = acc.get("final", {}).get("translation", {})
     ate_online = acc.get("online", {}).get("translation", {})
-    head = (f"fgc stream {args.spec}: {result.status} over {n} keyframes; simulator update "
+    head = (f"fgc stream {args.spec}: {result.status} over {n} keyframes; {who} update "
             f"median {times['median_ms']:.2f} ms, p99 {times['p99_ms']:.2f} ms (wall time); "
             f"vs batch optimum: ATE rmse {ate.get('rmse', float('nan')):.4g} m final, "
             f"{ate_online.get('rmse', float('nan')):.4g} m online")
@@ -869,6 +877,10 @@ def _command_args(name: str, p: argparse.ArgumentParser) -> None:
     elif name == "run":
         p.add_argument("--backend", choices=_backend_names(), default="native",
                        help="solver (hls: the accelerator's C simulation): " + _backend_help())
+    elif name == "stream":
+        p.add_argument("--backend", choices=("sim", "native"), default="sim",
+                       help="who solves each update: the simulator, or the native solver "
+                            "(fixed-lag --window only)")
     elif name == "simulate":
         p.add_argument("--plot", metavar="DIR", help="write plots (needs matplotlib)")
     elif name == "report":
