@@ -1,12 +1,16 @@
-"""Streaming benchmark (issue 19, simulator side): per-update time distribution of fgc's
+"""Streaming benchmark (issue 19): per-update time distribution of fgc's native solver and
 simulator (fixed-lag window and/or incremental plan) against GTSAM's ISAM2 update and
 IncrementalFixedLagSmoother update on the same LIO keyframe stream, in one process, and each
 trajectory's difference from the batch optimum (GTSAM LM on the whole graph).
 
     python bench/bench_stream.py --N 400 --window 30 [--incremental 3 --batch-every 5,15,25]
+    python bench/bench_stream.py --N 400 --window 30 --skip-sim     # native and GTSAM only
 
-The simulator is NumPy (a functional model of the accelerator, not a fast solver): its wall
-time is not the accelerator's latency, which the cost model does not price per update yet.
+The native row (fgc_backends.native.stream) times each whole update: assembling the window's
+numbers, the native LM solve and the marginalisation of the keyframe leaving; its "solve" and
+"marginal" lines split that time. Its library is built before the stream (not timed). The
+simulator is NumPy (a functional model of the accelerator, not a fast solver): its wall time is
+not the accelerator's latency, which the "model" column estimates.
 """
 
 from __future__ import annotations
@@ -58,6 +62,8 @@ def main(argv=None) -> int:
     p.add_argument("--window", type=int, default=30)
     p.add_argument("--incremental", type=int)
     p.add_argument("--batch-every", default=None)
+    p.add_argument("--skip-sim", action="store_true",
+                   help="leave out the simulator's rows (minutes on 400 keyframes)")
     p.add_argument("--json", help="write the numbers as JSON")
     args = p.parse_args(argv)
 
@@ -96,7 +102,22 @@ def main(argv=None) -> int:
         rows.append((name, streaming.timing_summary(u["seconds"] for u in result.updates),
                      acc))
 
-    sim_row(f"fgc simulator, fixed-lag W={args.window}", program, args.window)
+    from fgc_backends.native.stream import FixedLagStream
+
+    native_stream = FixedLagStream(graph, program, args.window)  # built here, not timed
+    online: dict = {}
+    result = native_stream.run(data, lambda r: online.update(
+        streaming.keyframe_result(program, r).newest(program)))
+    final = {str(k): v for k, v in result.values.items()}
+    native_acc = streaming.accuracy(graph, final, online, optimum)
+    rows.append((f"fgc native, fixed-lag W={args.window} (whole update)",
+                 streaming.timing_summary(u["seconds"] for u in result.updates), native_acc))
+    out["native_split"] = {part: streaming.timing_summary(u[f"{part}_seconds"]
+                                                          for u in result.updates)
+                           for part in ("solve", "marginal")}
+    out["native_status"] = result.status
+    if not args.skip_sim:
+        sim_row(f"fgc simulator, fixed-lag W={args.window}", program, args.window)
     if args.incremental:
         batch = (tuple(int(s) for s in args.batch_every.split(",")) if args.batch_every
                  and "," in args.batch_every else
@@ -129,6 +150,11 @@ def main(argv=None) -> int:
         model = f"{m['median']:.3f} / {m['p99']:.3f}" if m else "-"
         print(f"{name:<55} {t['median_ms']:>10.2f} {t['p99_ms']:>10.2f} {model:>15} "
               f"{ate:>10.4g} {ate_online:>11.4g} {dist:>9.3g}")
+    split = out["native_split"]
+    print(f"native update split: LM solve median {split['solve']['median_ms']:.3f} ms, p99 "
+          f"{split['solve']['p99_ms']:.3f} ms; marginalisation median "
+          f"{split['marginal']['median_ms']:.3f} ms, p99 {split['marginal']['p99_ms']:.3f} ms "
+          f"(status {out['native_status']})")
     out["rows"] = [{"name": n, "time": t, "accuracy": a} for n, t, a in rows]
     if args.json:
         Path(args.json).write_text(json.dumps(out, indent=1, default=float) + "\n")

@@ -103,8 +103,9 @@ class NativeStreamResult:
     reason: str
     iterations: int
     updates: list = field(default_factory=list)
-    initial_error: float | None = None  # GTSAM's error of the whole graph at the initial values
-    final_error: float | None = None  # … and at the final estimate
+    # the first window's cost at the initial values (finite: the solver could start); the whole
+    # graph's error is not evaluated (the stream never holds the whole graph)
+    initial_error: float | None = None
     template: Program | None = None
 
 
@@ -163,11 +164,17 @@ class FixedLagStream:
         self.config = self.solver.project.config
         # every graph factor by its signature (type, (keyframe, position) per variable)
         self.by_signature = {self._signature(f, 0): i for i, f in enumerate(graph.factors)}
-        self.spans = [(min(s), max(s)) for s in
-                      ([self.cluster_of[str(k)] for k in f.keys] for f in graph.factors)]
+        spans = [[self.cluster_of[str(k)] for k in f.keys] for f in graph.factors]
+        self.span_lo = np.array([min(s) for s in spans])
+        self.span_hi = np.array([max(s) for s in spans])
+        # the words of a slot's prior after its linearisation point: unit (held) or zero
+        self._held = [self._prior_tail(np.eye(dim), np.zeros(dim)) for _, dim in self.prior_types]
+        self._unused = [self._prior_tail(np.zeros((dim, dim)), np.zeros(dim))
+                        for _, dim in self.prior_types]
         self._words = {}
         self._zero = {}
         self._marginal_plan()
+        self._check_prior_layout()
 
     def _marginal_plan(self) -> None:
         """Where the rows of the factors that eliminate slot 0 lie in the solver's
@@ -242,10 +249,33 @@ class FixedLagStream:
             self._zero[t] = np.concatenate(factor_words(f.measured, noise, member))
         return self._zero[t]
 
-    def _prior(self, slot: int, member, lin: list, r: np.ndarray, mean: np.ndarray):
-        measured = {f"at{i}": v for i, v in enumerate(lin)}
-        measured["mean"] = mean
-        return np.concatenate(factor_words(measured, NoiseModel("full", r), member))
+    def _prior_tail(self, r: np.ndarray, mean: np.ndarray) -> np.ndarray:
+        """A marginal prior's words after its linearisation point: the mean, the square-root
+        information's upper triangle (a full noise model's parameters) and no robust loss
+        (factor_words' layout, checked against it in :meth:`_check_prior_layout`)."""
+        return np.concatenate([mean, r[np.triu_indices(r.shape[0])], [0.0, 0.0]])
+
+    def _check_prior_layout(self) -> None:
+        """The template's prior members take their words as :meth:`_prior_tail` lays them out."""
+        n_template = len(self.template_factors)
+        for spec in self.template.factors:
+            block = self.template.blocks[spec.block]
+            for member, t in zip(block.members, spec.factors, strict=True):
+                if t < n_template:
+                    continue
+                ptype, dim = self.prior_types[t - n_template]
+                names = [name for name, _ in member.measurements]
+                lin = [np.arange(v.storage_dim, dtype=float) + 10 * i for i, v in enumerate(
+                    v for v in self.template.variables
+                    if self.cluster_of[v.key] == t - n_template)]
+                r, mean = np.triu(np.arange(dim * dim, dtype=float).reshape(dim, dim)), \
+                    np.arange(dim, dtype=float) - 7
+                measured = {**{f"at{i}": v for i, v in enumerate(lin)}, "mean": mean}
+                expected = np.concatenate(factor_words(measured, NoiseModel("full", r), member))
+                if names != [*measured] or not np.array_equal(
+                        expected, np.concatenate([*lin, self._prior_tail(r, mean)])):
+                    raise NativeStreamError(f"internal error: {ptype.name}'s data layout is not "
+                                            "the one the stream assembles")
 
     def assemble(self, estimate: dict, first: int, last: int, tau):
         """(x, d, matched): the template's flat arrays for the window first … last and the
@@ -256,6 +286,7 @@ class FixedLagStream:
                             for v in self.template.variables])
         words, matched = [], 0
         n_template = len(self.template_factors)
+        tau_tail = None if tau is None else self._prior_tail(tau[0], tau[1])
         for spec in self.template.factors:
             block = self.template.blocks[spec.block]
             for member, t in zip(block.members, spec.factors, strict=True):
@@ -271,17 +302,13 @@ class FixedLagStream:
                         words.append(self._zeroed(t, member))
                     continue
                 slot = t - n_template
-                _, dim = self.prior_types[slot]
-                lin = [estimate[k] for k in slot_keys[slot]]
-                if slot == 0 and tau is not None:
-                    words.append(self._prior(slot, member, tau[2], tau[0], tau[1]))
+                if slot == 0 and tau is not None:  # the marginal of the keyframes that left
+                    words += [*tau[2], tau_tail]
                 elif first + slot > last:  # not arrived yet: held where it is
-                    words.append(self._prior(slot, member, lin, np.eye(dim), np.zeros(dim)))
-                else:
-                    words.append(self._prior(slot, member, lin, np.zeros((dim, dim)),
-                                             np.zeros(dim)))
-        spans = self.spans
-        inside = sum(1 for lo, hi in spans if lo >= first and hi <= last)
+                    words += [*(estimate[k] for k in slot_keys[slot]), self._held[slot]]
+                else:  # no prior: zero square-root information
+                    words += [*(estimate[k] for k in slot_keys[slot]), self._unused[slot]]
+        inside = int(np.count_nonzero((self.span_lo >= first) & (self.span_hi <= last)))
         if matched != inside:
             raise NativeStreamError(f"keyframes {first} … {last}: the window holds {inside} "
                                     f"factors but the compiled template matches {matched}: the "
@@ -326,6 +353,8 @@ class FixedLagStream:
             t1 = time.perf_counter()
             x_out, errors, info = self.solver.solve(x, d)
             t2 = time.perf_counter()
+            if j == 0:
+                initial_error = float(errors[0])
             pos = 0
             for v in self.template.variables:
                 slot = self.cluster_of[v.key]
@@ -360,11 +389,7 @@ class FixedLagStream:
             if st != "converged" and status == "converged":
                 status, reason = st, f"keyframe {j}: {why}"
         storage = {k: v.copy() for k, v in estimate.items()}
-        values = values_from_storage(program, storage)
-        original = {str(k): k for k in self.graph.variables}
-        with np.errstate(all="ignore"):
-            initial_error = self.graph.error()
-            final_error = self.graph.error({original[k]: v for k, v in values.items()})
-        return NativeStreamResult(values, storage, status, reason, total_iterations, records,
-                                  float(initial_error), float(final_error), self.template)
+        return NativeStreamResult(values_from_storage(program, storage), storage, status,
+                                  reason, total_iterations, records, initial_error,
+                                  self.template)
 
