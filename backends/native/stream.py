@@ -10,7 +10,7 @@ the next window, linear in the local coordinates at the point where it was forme
 linearisation point never moves; every other factor is relinearised each iteration).
 
 How the native solver runs it. A solver is compiled once, for a *template* window: the graph's
-first W + 1 keyframes with their factors, plus on every keyframe a ``marginal_prior`` factor
+first W + 1 keyframes with their factors, plus on every keyframe a ``MarginalPrior…`` factor
 (:func:`marginal_prior_type`: r = Log(x̄⁻¹x) − m per variable, whitened by a full square-root
 information R, so its cost is ½‖R·Log(x̄⁻¹x) − R·m‖², exactly the simulator's ½‖A·s − b‖² with
 R = A, m = A⁻¹b). Each update fills that one structure with numbers:
@@ -278,8 +278,10 @@ class FixedLagStream:
                                             "the one the stream assembles")
 
     def assemble(self, estimate: dict, first: int, last: int, tau):
-        """(x, d, matched): the template's flat arrays for the window first … last and the
-        graph factors the window holds."""
+        """(x, d): the template's flat arrays (storage, factor data) for the window first …
+        last, from the current ``estimate`` and the marginal ``tau`` (R, mean, x̄ per
+        variable) on keyframe ``first``; :class:`NativeStreamError` if the window holds a graph
+        factor the template does not match."""
         clusters = self.program.schedule.clusters
         slot_keys = [clusters[first + s] for s in range(self.size)]
         x = np.concatenate([estimate[slot_keys[self.cluster_of[v.key]][self.position[v.key]]]
