@@ -22,7 +22,13 @@ import pytest
 import fgc
 import fgc.frontend.factors
 from fgc.app.cli import main
-from fgc.app.streaming import HW_REFUSAL, compile_stream, prefix_program, update_model
+from fgc.app.streaming import (
+    HW_REFUSAL,
+    NATIVE_REFUSAL,
+    compile_stream,
+    prefix_program,
+    update_model,
+)
 from fgc.compile import compile_graph
 from fgc.ir.program import SolverConfig
 from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles, plan_cost
@@ -214,15 +220,15 @@ def test_cli_stream_hls_fixed_lag_cholesky(capsys):
     assert "CHOLESKY, #CPE = 5" in text and "keyframe    4 (fixed-lag, from 2)" in text
 
 
-@pytest.mark.parametrize("argv", [
-    ["stream", LIO, "-p", "N=4", "--backend", "native", "--incremental", "2"],
-    ["run", LIO, "-p", "N=4", "--backend", "hls", "--incremental", "2"],
-    ["run", LIO, "-p", "N=4", "--backend", "hls", "--window", "2"],
+@pytest.mark.parametrize("argv, refusal", [
+    (["stream", LIO, "-p", "N=4", "--backend", "native", "--incremental", "2"], NATIVE_REFUSAL),
+    (["run", LIO, "-p", "N=4", "--backend", "hls", "--incremental", "2"], HW_REFUSAL),
+    (["run", LIO, "-p", "N=4", "--backend", "hls", "--window", "2"], HW_REFUSAL),
 ])
-def test_cli_refuses_streaming_where_no_model_or_solver_runs_it(argv, capsys):
+def test_cli_refuses_streaming_where_no_model_or_solver_runs_it(argv, refusal, capsys):
     rc = main(argv)
     err = capsys.readouterr().err
-    assert rc == 2 and HW_REFUSAL in err and f"--backend {argv[argv.index('--backend') + 1]}" \
+    assert rc == 2 and refusal in err and f"--backend {argv[argv.index('--backend') + 1]}" \
         in err
     assert "Traceback" not in err and len(err.strip().splitlines()) == 1
 

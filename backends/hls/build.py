@@ -20,7 +20,8 @@ from fgc_backends.cfamily.results import (
     reference_run,
     write_reference,
 )
-from fgc_backends.hls.config import HlsConfig, check_fixed_data
+from fgc_backends.cfamily.scalars import check_fixed_data
+from fgc_backends.hls.config import HlsConfig, HlsConfigError
 from fgc_backends.hls.emitter import HlsProject
 
 DATA_FILE, RESULT_FILE, BUILD_LOG = "data.txt", "result.txt", "build.log"
@@ -62,7 +63,7 @@ def run_csim(project: HlsProject, program: Program, data: ProblemData,
     ``reference``: True computes it (:func:`~fgc_backends.cfamily.results.reference_run`), a
     simulator result of the same Program and data is used as it is, False writes none (the
     testbench then says the result is unchecked)."""
-    check_fixed_data(project.config.scalar_cxx, program, data)  # saturation is no answer
+    check_fixed_data(project.config.scalar_cxx, program, data, HlsConfigError)  # no saturating
     write_data(data, project.directory / DATA_FILE)
     ref_path = project.directory / REFERENCE_FILE
     ref_path.unlink(missing_ok=True)

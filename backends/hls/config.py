@@ -12,12 +12,11 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from fgc_backends.cfamily import scalars
 from fgc_backends.cfamily.errors import CodegenError
+from fgc_backends.cfamily.scalars import SCALARS
 
-SCALARS = ("float", "double")
-_AP_FIXED = re.compile(r"^ap_fixed<\s*(\d{1,4})\s*,\s*(-?\d{1,4})\s*>$")
 _PART = re.compile(r"^[A-Za-z0-9_-]{1,64}$")
-AP_FIXED_MAX_WIDTH = 1024  # AP_INT_MAX_W, the ap_types headers' default limit on W
 CLOCK_TOLERANCE = 0.005  # relative: 7 ns (142.86 MHz) and 143 MHz are the same clock
 
 
@@ -30,17 +29,11 @@ class HlsConfig:
     """Options of the HLS backend.
 
     - ``scalar``: the C++ scalar type ``T`` of the whole accelerator: ``"float"`` (paper A and B's
-      hardware), ``"double"``, or ``"ap_fixed<W,I>"`` with 2 ≤ W ≤ 1024 and 1 ≤ I ≤ W
-      (:func:`check_scalar`; needs the Xilinx ``ap_types`` headers of the optional ``hls4ml``
-      package; see :func:`ap_types_include`). ``fgc compile --scalar`` sets it. Fixed point is
-      declared ``ap_fixed<W, I, AP_RND_CONV, AP_SAT>`` (round to nearest, saturate: no
-      wrap-around); every constant the kernel holds is range-checked at emit time
-      (:func:`check_fixed_constants`) and the data before a C simulation
-      (:func:`check_fixed_data`); LM's floors and tolerances below one LSB are raised to one
-      LSB. **Math that leaves the fixed type**: sqrt, sin, cos, tan, atan, atan2, exp, log,
-      log1p, asin, acos and tanh are computed in ``double`` (``std::``) and rounded back, so a
-      synthesised fixed-point design would hold double-precision cores for them. A Pose2
-      chain solves to within 1e-4 of float64 in ``ap_fixed<40,16>`` (tests/test_hls_check.py).
+      hardware) or ``"double"``. ``fgc compile --scalar`` sets it. The vocabulary is the
+      C-family one (:func:`fgc_backends.cfamily.scalars.check_scalar`), which also names
+      ``"ap_fixed<W,I>"``; the dataflow design has no fixed-point units yet, so emitting it in
+      fixed point is refused with that reason (the native backend builds it:
+      ``fgc_backends.native``).
     - ``linear_scalar``: the scalar type ``L`` of the linear-equation solver alone (Hessian
       accumulation, elimination, back-substitution; ``"float"`` or ``"double"``, at least as
       wide as ``scalar``), the mixed design; ``None`` means ``scalar``, or ``"double"`` for a
@@ -83,7 +76,7 @@ class HlsConfig:
 
     def check(self) -> None:
         """Raise :class:`HlsConfigError` naming the first invalid option."""
-        check_scalar(self.scalar)
+        scalars.check_scalar(self.scalar, HlsConfigError)
         if self.linear_scalar is not None:
             if self.linear_scalar not in SCALARS:
                 raise HlsConfigError(f"linear solver scalar type {self.linear_scalar!r}: expected "
@@ -119,7 +112,7 @@ class HlsConfig:
 
     @property
     def is_fixed_point(self) -> bool:
-        return self.scalar.startswith("ap_fixed")
+        return scalars.is_fixed_point(self.scalar)
 
     @property
     def linear_cxx(self) -> str:
@@ -134,33 +127,12 @@ class HlsConfig:
     @property
     def scalar_cxx(self) -> str:
         """The scalar type as C++ text (whitespace normalised)."""
-        m = _AP_FIXED.match(self.scalar)
-        return f"ap_fixed<{m.group(1)}, {m.group(2)}>" if m else self.scalar
+        return scalars.scalar_cxx(self.scalar)
 
     @staticmethod
     def template_dir() -> Path:
         """The folder of this backend's jinja templates."""
         return Path(__file__).resolve().parent / "templates"
-
-
-def check_scalar(text: str) -> str:
-    """``text`` if it is a scalar type the backend builds, else :class:`HlsConfigError`:
-    ``float``, ``double`` or ``ap_fixed<W,I>`` with 2 ≤ W ≤ 1024 total bits and 1 ≤ I ≤ W
-    integer bits (sign included), so that there are a sign bit and at least one value bit."""
-    if text in SCALARS:
-        return text
-    m = _AP_FIXED.match(text)
-    if not m:
-        raise HlsConfigError(f"HLS scalar type {text!r}: expected 'float', 'double' or "
-                             "'ap_fixed<W,I>'")
-    width, integer = int(m.group(1)), int(m.group(2))
-    if not 2 <= width <= AP_FIXED_MAX_WIDTH:
-        raise HlsConfigError(f"HLS scalar type {text!r}: width W={width} must be 2 … "
-                             f"{AP_FIXED_MAX_WIDTH} bits")
-    if not 1 <= integer <= width:
-        raise HlsConfigError(f"HLS scalar type {text!r}: integer bits I={integer} must be 1 … "
-                             f"W={width} (sign bit included)")
-    return text
 
 
 def check_clock(clock_mhz: float, config: HlsConfig) -> None:
@@ -190,89 +162,3 @@ def parse_clock(text: str) -> tuple[float, float]:
         raise HlsConfigError(f"clock {text!r} ({mhz:.4g} MHz, {ns:.4g} ns) is outside 1 MHz … "
                              "2 GHz")
     return mhz, ns
-
-
-def ap_types_include() -> Path:
-    """The folder holding ``ap_fixed.h`` from the optional ``hls4ml`` package.
-
-    hls4ml ships Xilinx's Apache-2.0 ``ap_types`` headers; fgc never vendors them. Raises
-    :class:`HlsConfigError` with the install command when they are missing.
-    """
-    import importlib.util
-
-    spec = importlib.util.find_spec("hls4ml")
-    if spec is not None and spec.submodule_search_locations:
-        root = Path(next(iter(spec.submodule_search_locations)))
-        for candidate in sorted(root.glob("templates/*/ap_types")):
-            if (candidate / "ap_fixed.h").is_file():
-                if not re.match(r"^[A-Za-z0-9_./+-]+$", str(candidate)):
-                    raise HlsConfigError(f"the ap_types folder {str(candidate)!r} has characters "
-                                         "a Makefile or tcl script would interpret")
-                return candidate
-    raise HlsConfigError("scalar type ap_fixed needs Xilinx's ap_types headers, which fgc takes "
-                         "from the optional hls4ml package: pip install 'fgc[hls-fixed]'")
-
-
-# ---- fixed point: the format's range, and the constants and data that must fit it -------------
-
-FIXED_QUANTIZATION = "AP_RND_CONV, AP_SAT"  # round to nearest (even); saturate, never wrap
-
-
-def fixed_format(scalar: str) -> tuple[int, int] | None:
-    """(W, I) of an ``ap_fixed<W,I>`` scalar, None for floating point."""
-    m = _AP_FIXED.match(scalar)
-    return (int(m.group(1)), int(m.group(2))) if m else None
-
-
-def fixed_declaration(scalar: str) -> str:
-    """The C++ type the kernel declares ``T`` as: ``ap_fixed<W, I, AP_RND_CONV, AP_SAT>`` (an
-    overflow saturates explicitly instead of wrapping round, a result rounds to nearest), or the
-    floating-point type itself."""
-    fmt = fixed_format(scalar)
-    return f"ap_fixed<{fmt[0]}, {fmt[1]}, {FIXED_QUANTIZATION}>" if fmt else scalar
-
-
-def fixed_range(scalar: str) -> tuple[float, float, float]:
-    """(lowest, highest, LSB) of ``ap_fixed<W,I>``: -2^(I-1) … 2^(I-1) - 2^-(W-I)."""
-    width, integer = fixed_format(scalar)
-    lsb = 2.0 ** -(width - integer)
-    return -(2.0 ** (integer - 1)), 2.0 ** (integer - 1) - lsb, lsb
-
-
-def check_fixed_constants(scalar: str, constants) -> None:
-    """Raise :class:`HlsConfigError` naming the first of ``constants`` ((name, value) pairs:
-    what the kernel would hold) outside the range of ``scalar`` (an ``ap_fixed<W,I>``), which
-    the format could only saturate; floating-point scalars hold every finite constant."""
-    if fixed_format(scalar) is None:
-        return
-    lo, hi, _ = fixed_range(scalar)
-    for name, value in constants:
-        if not lo <= float(value) <= hi:
-            raise HlsConfigError(
-                f"constant {name} = {float(value)!r} does not fit {scalar} (range {lo:g} … "
-                f"{hi:.6g}): the kernel would hold a saturated value. Use more integer bits or "
-                "a smaller constant (HlsConfig.lambda_upper_bound bounds LM's damping)")
-
-
-def check_fixed_data(scalar: str, program, data) -> None:
-    """Raise :class:`HlsConfigError` naming the variable or factor whose initial value or data
-    (measurements, square-root information) does not fit ``scalar``'s range."""
-    if fixed_format(scalar) is None:
-        return
-    import numpy as np
-
-    lo, hi, _ = fixed_range(scalar)
-    for v, values in zip(program.variables, data.variables, strict=True):
-        bad = np.flatnonzero((np.asarray(values) < lo) | (np.asarray(values) > hi))
-        if bad.size:
-            raise HlsConfigError(f"variable {v.key!r}: initial value entry {int(bad[0])} = "
-                                 f"{float(values[bad[0]])!r} does not fit {scalar} (range {lo:g} "
-                                 f"… {hi:.6g})")
-    for index, (spec, values) in enumerate(zip(program.factors, data.factors, strict=True)):
-        bad = np.flatnonzero((np.asarray(values) < lo) | (np.asarray(values) > hi))
-        if bad.size:
-            block = program.blocks[spec.block].name
-            raise HlsConfigError(f"factor instance {index} ({block} on {list(spec.keys)}): data "
-                                 f"entry {int(bad[0])} = {float(values[bad[0]])!r} does not fit "
-                                 f"{scalar} (range {lo:g} … {hi:.6g}; a square-root information "
-                                 "1/sigma counts)")

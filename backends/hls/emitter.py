@@ -26,17 +26,18 @@ from fgc_backends.cfamily.names import comment, identifier, key_tokens
 from fgc_backends.cfamily.printer import HlsCodePrinter
 from fgc_backends.cfamily.results import REFERENCE_MAGIC, RESULT_MAGIC
 from fgc_backends.cfamily.retract import retract_kinds
+from fgc_backends.cfamily.scalars import (
+    FIXED_POINT_FLAGS,
+    ap_types_include,
+    epsilon,
+    fixed_declaration,
+    lsb_floor,
+)
 from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.cfamily.special import SERIES_BELOW, coefficient_functions
 from fgc_backends.cfamily.steps import padded, step_patterns
 from fgc_backends.cfamily.tables import IntTable, build_tables, factor_data_words
-from fgc_backends.hls.config import (
-    HlsConfig,
-    HlsConfigError,
-    ap_types_include,
-    check_clock,
-    fixed_declaration,
-)
+from fgc_backends.hls.config import HlsConfig, HlsConfigError, check_clock
 from fgc_backends.hls.lint import lint_project
 
 # template → emitted file name ({name} is the project identifier): the dataflow accelerator the
@@ -47,9 +48,6 @@ FILES = (("accel.h.jinja", "{name}.h"), ("accel.cpp.jinja", "{name}.cpp"),
 SYNTHESISED = ("accel.h.jinja", "accel.cpp.jinja")
 INCLUDE = Path(__file__).resolve().parent / "include"  # copied into every project
 HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
-# Xilinx's ap_types headers trip g++'s flow-based warnings once inlined into our code (-isystem
-# cannot silence those); the warnings are theirs, so only these two are relaxed for ap_fixed.
-FIXED_POINT_FLAGS = ("-Wno-uninitialized", "-Wno-maybe-uninitialized")
 # the testbench's comparison with the reference (see tb.cpp.jinja's header for the reasons)
 TB_TOLERANCES = {"rel": "1e-9", "rot": "1e-3", "vec": "1e-2", "error": "1e-2"}
 # where a variable type stores its rotation: (kind, offset), kind 2 = cos-sin, 3 = 3x3 matrix
@@ -237,7 +235,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     return {**timing,
             "les": {"partials": les.add.latency, "add": les.add.latency,
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
-                    "singular_eps": repr(10 * _epsilon(config.linear_cxx))},
+                    "singular_eps": repr(10 * epsilon(config.linear_cxx))},
             "blocks": blocks, "network": network, "unit_sets": max(1, sets), "units": units,
             "cpe": plan.options.cpe, "plan": plan,
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
@@ -269,7 +267,7 @@ def check_limits(program: Program, config: HlsConfig) -> None:
         raise HlsConfigError("the HLS backend runs batch solves only; compile without "
                              "incremental_k")
     if config.is_fixed_point:
-        ap_types_include()  # a clear error now rather than a missing header in g++
+        ap_types_include(HlsConfigError)  # a clear error now, not a missing header in g++
 
 
 def tcl_clock(clock_mhz: float) -> dict:
@@ -278,16 +276,6 @@ def tcl_clock(clock_mhz: float) -> dict:
     describe one clock."""
     mhz = float(clock_mhz)
     return {"clock_mhz": f"{mhz:g}", "clock_ns": f"{1000.0 / mhz:.6g}"}
-
-
-def _epsilon(scalar_cxx: str) -> float:
-    """Machine epsilon of a scalar type given as C++ text (the LSB for fixed point)."""
-    if scalar_cxx == "float":
-        return 2.0 ** -23
-    if scalar_cxx == "double":
-        return 2.0 ** -52
-    width, integer = (int(x) for x in scalar_cxx[9:-1].split(","))
-    return 2.0 ** -(width - integer)
 
 
 def lanes(config: HlsConfig) -> int | None:
@@ -300,11 +288,11 @@ def lanes(config: HlsConfig) -> int | None:
 
 
 def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter) -> dict:
-    s, eps = program.solver, _epsilon(config.scalar_cxx)
+    s, eps = program.solver, epsilon(config.scalar_cxx)
     lit = printer.literal
     if config.is_fixed_point:  # a floor or tolerance below one LSB would round to 0: one LSB
         def lit(value, _literal=printer.literal):
-            return _literal(value if value == 0 or abs(value) >= eps else eps)
+            return _literal(lsb_floor(value, config.scalar_cxx))
     lm = s.method == "lm"
     tries = 1
     if lm:  # μ grows from at least MU_MIN by lambda_factor until it passes the upper bound
@@ -319,7 +307,7 @@ def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter
         "eps_step": lit(max(s.eps_step, 10 * eps)), "tol": lit(s.relative_error_tol),
         "epsilon": lit(eps), "resolution": lit(16 * eps),
         "absolute_error_tol": lit(config.absolute_error_tol), "singular_eps": lit(10 * eps),
-        "linear_singular_eps": lit(10 * _epsilon(config.linear_cxx)),
+        "linear_singular_eps": lit(10 * epsilon(config.linear_cxx)),
         "comment": comment(f"{s.method} {s.linear} {s.ordering} n_u={s.units} cpe={s.cpe}"),
     }
 
@@ -330,7 +318,7 @@ def _context(program: Program, config: HlsConfig, project: str, vector: bool = T
     tables = build_tables(program, damped=solver["lm"], cholesky=solver["cholesky"])
     two_ended = program.schedule.ordering == "two-ended"
     unit_sets = config.unit_sets or (2 if two_ended else 1)
-    include = [str(ap_types_include())] if config.is_fixed_point else []
+    include = [str(ap_types_include(HlsConfigError))] if config.is_fixed_point else []
     blocks = block_contexts(program, vector=vector)
     patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
                                            solver["cholesky"], solver["lm"])

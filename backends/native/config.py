@@ -2,8 +2,8 @@
 
 The native backend builds the generated C++ as a CPU program, so of the HLS backend's options it
 keeps only what shapes a host build: no FPGA part, no clock, no unit sets (the CPU runs the unit
-sets' steps one after another, as the C simulation does). The scalar vocabulary is the HLS
-backend's (:func:`fgc_backends.hls.config.check_scalar`): one kernel, two builds.
+sets' steps one after another, as the C simulation does). The scalar vocabulary is the C-family
+one the HLS backend uses too (:mod:`fgc_backends.cfamily.scalars`).
 """
 
 from __future__ import annotations
@@ -13,8 +13,9 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from fgc_backends.cfamily import scalars
 from fgc_backends.cfamily.errors import CodegenError
-from fgc_backends.hls.config import SCALARS, HlsConfigError, check_scalar
+from fgc_backends.cfamily.scalars import SCALARS
 
 
 class NativeConfigError(CodegenError):
@@ -34,9 +35,15 @@ class NativeConfig:
     """Options of the native backend.
 
     - ``scalar``: the C++ scalar type ``T``: ``"float"``, ``"double"`` or ``"ap_fixed<W,I>"``
-      (as the HLS backend's, :func:`fgc_backends.hls.config.check_scalar`; fixed point needs
-      the optional ``hls4ml`` package's ``ap_types`` headers). ``fgc run --scalar`` sets it;
-      :func:`fgc_backends.native.default_config` takes it from the Program's precision.
+      (:func:`fgc_backends.cfamily.scalars.check_scalar`). ``fgc run --scalar`` sets it;
+      :func:`fgc_backends.native.default_config` takes it from the Program's precision. Fixed
+      point needs the optional ``hls4ml`` package's ``ap_types`` headers and is declared
+      ``ap_fixed<W, I, AP_RND_CONV, AP_SAT>`` (round to nearest, saturate, never wrap); every
+      constant the solver holds is range-checked at emit time and refused, naming it, if it
+      does not fit (LM's default ``lambda_upper_bound`` 1e10 needs I ≥ 35 integer bits), and so
+      is the data before a solve (:meth:`NativeSolver.flatten`); floors and tolerances below
+      one LSB are raised to one LSB. sqrt and the trigonometric, exponential and logarithmic
+      functions are computed in ``double`` and rounded back to ``T``.
     - ``linear_scalar``: the linear solver's scalar ``L`` (``"float"`` or ``"double"``, at
       least as wide as ``scalar``); ``None`` means ``scalar``, or ``"double"`` for a Program
       whose ``SolverConfig.linear_precision`` is float64.
@@ -74,10 +81,7 @@ class NativeConfig:
 
     def check(self) -> None:
         """Raise :class:`NativeConfigError` naming the first invalid option."""
-        try:
-            check_scalar(self.scalar)
-        except HlsConfigError as exc:
-            raise NativeConfigError(str(exc)) from None
+        scalars.check_scalar(self.scalar, NativeConfigError)
         if self.linear_scalar is not None:
             if self.linear_scalar not in SCALARS:
                 raise NativeConfigError(f"linear solver scalar type {self.linear_scalar!r}: "
@@ -100,13 +104,12 @@ class NativeConfig:
 
     @property
     def is_fixed_point(self) -> bool:
-        return self.scalar.startswith("ap_fixed")
+        return scalars.is_fixed_point(self.scalar)
 
     @property
     def scalar_cxx(self) -> str:
         """The scalar type as C++ text (whitespace normalised)."""
-        m = re.match(r"^ap_fixed<\s*(\d{1,4})\s*,\s*(-?\d{1,4})\s*>$", self.scalar)
-        return f"ap_fixed<{m.group(1)}, {m.group(2)}>" if m else self.scalar
+        return scalars.scalar_cxx(self.scalar)
 
     @property
     def linear_cxx(self) -> str:

@@ -29,11 +29,19 @@ from fgc_backends.cfamily.blocks import block_contexts
 from fgc_backends.cfamily.names import comment, identifier
 from fgc_backends.cfamily.printer import HlsCodePrinter
 from fgc_backends.cfamily.retract import retract_kinds
+from fgc_backends.cfamily.scalars import (
+    FIXED_POINT_FLAGS,
+    ap_types_include,
+    check_fixed_constants,
+    epsilon,
+    fixed_declaration,
+    kernel_constants,
+    lsb_floor,
+)
 from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.cfamily.special import SERIES_BELOW, coefficient_functions
 from fgc_backends.cfamily.steps import padded, step_patterns
 from fgc_backends.cfamily.tables import IntTable, build_tables, factor_data_words
-from fgc_backends.hls.config import HlsConfigError, ap_types_include
 from fgc_backends.hls.lint import lint_files
 from fgc_backends.native.config import NativeConfig, NativeConfigError
 
@@ -41,9 +49,7 @@ from fgc_backends.native.config import NativeConfig, NativeConfigError
 FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
          ("native.cpp.jinja", "native_{name}.cpp"), ("Makefile.jinja", "Makefile"))
 HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
-# Xilinx's ap_types headers trip g++'s flow-based warnings once inlined into our code (-isystem
-# cannot silence those); the warnings are theirs, so only these two are relaxed for ap_fixed.
-FIXED_POINT_FLAGS = ("-Wno-uninitialized", "-Wno-maybe-uninitialized")
+SOLVER_FILES = ("kernel.h.jinja", "kernel.cpp.jinja")  # the files whose constants T must hold
 MU_MIN = 1e-30  # LM's μ never falls below this (the simulator's MU_MIN): damping stays on
 
 
@@ -89,13 +95,22 @@ def emit(program: Program, out_dir: str | Path, config: NativeConfig | None = No
                              undefined=jinja2.StrictUndefined, trim_blocks=True,
                              lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
     env.tests["constant_literal"] = is_constant_literal
+    texts = {}
+    for template, pattern in FILES:
+        file_name = pattern.format(name=project)
+        texts[template, file_name] = env.get_template(template).render(
+            **context, template=template, file_name=file_name)
+    # before anything is written: a constant outside ap_fixed<W,I> would saturate silently
+    check_fixed_constants(config.scalar_cxx, kernel_constants(
+        (file_name, text) for (template, file_name), text in texts.items()
+        if template in SOLVER_FILES), NativeConfigError,
+        hint="a smaller constant (NativeConfig.lambda_upper_bound bounds LM's damping)")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     paths = []
-    for template, pattern in FILES:
-        path = out / pattern.format(name=project)
-        path.write_text(env.get_template(template).render(**context, template=template,
-                                                          file_name=path.name))
+    for (_, file_name), text in texts.items():
+        path = out / file_name
+        path.write_text(text)
         paths.append(path)
     issues = lint_files([p for p in paths if p.suffix in (".cpp", ".h")], synthesis=False)
     if issues:
@@ -132,20 +147,7 @@ def check_limits(program: Program, config: NativeConfig) -> None:
         raise NativeConfigError("the native backend runs batch solves only; compile without "
                                 "incremental_k")
     if config.is_fixed_point:
-        try:
-            ap_types_include()  # a clear error now rather than a missing header in g++
-        except HlsConfigError as exc:
-            raise NativeConfigError(str(exc)) from None
-
-
-def _epsilon(scalar_cxx: str) -> float:
-    """Machine epsilon of a scalar type given as C++ text (the LSB for fixed point)."""
-    if scalar_cxx == "float":
-        return 2.0 ** -23
-    if scalar_cxx == "double":
-        return 2.0 ** -52
-    width, integer = (int(x) for x in scalar_cxx[9:-1].split(","))
-    return 2.0 ** -(width - integer)
+        ap_types_include(NativeConfigError)  # a clear error now, not a missing header in g++
 
 
 def lanes(config: NativeConfig) -> int | None:
@@ -158,8 +160,11 @@ def lanes(config: NativeConfig) -> int | None:
 
 
 def _solver_context(program: Program, config: NativeConfig, printer: HlsCodePrinter) -> dict:
-    s, eps = program.solver, _epsilon(config.scalar_cxx)
+    s, eps = program.solver, epsilon(config.scalar_cxx)
     lit = printer.literal
+    if config.is_fixed_point:  # a floor or tolerance below one LSB would round to 0: one LSB
+        def lit(value, _literal=printer.literal):
+            return _literal(lsb_floor(value, config.scalar_cxx))
     lm = s.method == "lm"
     tries = 1
     if lm:  # μ grows from at least MU_MIN by lambda_factor until it passes the upper bound
@@ -174,7 +179,7 @@ def _solver_context(program: Program, config: NativeConfig, printer: HlsCodePrin
         "eps_step": lit(max(s.eps_step, 10 * eps)), "tol": lit(s.relative_error_tol),
         "epsilon": lit(eps), "resolution": lit(16 * eps),
         "absolute_error_tol": lit(config.absolute_error_tol), "singular_eps": lit(10 * eps),
-        "linear_singular_eps": lit(10 * _epsilon(config.linear_cxx)),
+        "linear_singular_eps": lit(10 * epsilon(config.linear_cxx)),
         "comment": comment(f"{s.method} {s.linear} {s.ordering} n_u={s.units} cpe={s.cpe}"),
     }
 
@@ -186,7 +191,7 @@ def _context(program: Program, config: NativeConfig, project: str) -> dict:
     # the steps of a level run in the order of the HLS design's unit sets (one per chain end on
     # a two-ended chain), so the two builds eliminate in one order and agree bit for bit
     unit_sets = 2 if program.schedule.ordering == "two-ended" else 1
-    include = [str(ap_types_include())] if config.is_fixed_point else []
+    include = [str(ap_types_include(NativeConfigError))] if config.is_fixed_point else []
     blocks = block_contexts(program)
     patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
                                            solver["cholesky"], solver["lm"])
@@ -197,13 +202,17 @@ def _context(program: Program, config: NativeConfig, project: str) -> dict:
     # loop would index past xs[MAX_W])
     max_sep = max(w - f for w, f in zip(table["STEP_W"], table["STEP_F"], strict=True))
     host_lanes = lanes(config)
+    row_words = [len(b.instances) * b.m * b.stride for b in blocks]  # fgc_rows' layout
     return {
+        "rows_offsets": [sum(row_words[:i]) for i in range(len(blocks))],
+        "n_rows": sum(row_words),
         "cpu_program": True,
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,
         "structure_fingerprint": program.structure_fingerprint,
         "design_fingerprint": program.fingerprint,
         "scalar": config.scalar_cxx, "fixed_point": config.is_fixed_point,
+        "scalar_decl": fixed_declaration(config.scalar_cxx),
         "linear_scalar": config.linear_cxx, "mixed": config.mixed,
         "include_dirs": include,
         "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS

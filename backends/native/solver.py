@@ -29,9 +29,10 @@ from fgc.ir.datafile import ProblemData, check_structure
 from fgc.ir.program import Program
 from fgc_backends.cfamily.names import identifier
 from fgc_backends.cfamily.results import HlsResult, judge_precision, result_from_arrays
+from fgc_backends.cfamily.scalars import check_fixed_data
 from fgc_backends.cfamily.tables import factor_data_words
 from fgc_backends.native.build import make
-from fgc_backends.native.config import NativeConfig
+from fgc_backends.native.config import NativeConfig, NativeConfigError
 from fgc_backends.native.emitter import NativeProject, emit
 
 _INTS = np.ctypeslib.ndpointer(dtype=np.int32, flags="C_CONTIGUOUS")
@@ -77,6 +78,8 @@ class NativeSolver:
         lib.fgc_run.restype = None
         lib.fgc_probe.argtypes = [ctypes.c_void_p] * 3
         lib.fgc_probe.restype = None
+        lib.fgc_rows.argtypes = [ctypes.c_void_p] * 3
+        lib.fgc_rows.restype = None
         lib.fgc_structure.argtypes = []
         lib.fgc_structure.restype = ctypes.c_char_p
         sizes = np.zeros(4, dtype=np.int32)
@@ -91,7 +94,8 @@ class NativeSolver:
 
     def flatten(self, data: ProblemData) -> tuple[np.ndarray, np.ndarray]:
         """The data as the kernel's two flat arrays, checked against the compiled layout and
-        structure fingerprint."""
+        structure fingerprint, and for a fixed-point build against the format's range (a value
+        outside it is a :class:`NativeConfigError` naming it: saturating it is no answer)."""
         p = self.program
         check_structure(data, p)
         if len(data.variables) != len(p.variables) or len(data.factors) != len(p.factors):
@@ -106,6 +110,7 @@ class NativeSolver:
             if len(f) != factor_data_words(p, spec.block):
                 raise DataError(f"factor instance {i} needs {factor_data_words(p, spec.block)} "
                                 f"numbers, got {len(f)}")
+        check_fixed_data(self.project.config.scalar_cxx, p, data, NativeConfigError)
         x = np.ascontiguousarray(np.concatenate(data.variables), dtype=np.float64)
         d = np.ascontiguousarray(np.concatenate(data.factors), dtype=np.float64)
         return x, d
@@ -125,6 +130,29 @@ class NativeSolver:
                                _address(d, self.n_data, "the factor data"),
                                out.__array_interface__["data"][0])
         return float(out[0]), float(out[1])
+
+    def row_layout(self) -> list[tuple[int, int, int, int]]:
+        """Per block type of the Program: (first word in :meth:`rows`' output, instances,
+        residual rows m, columns d + 1), the instances in Program order of that block type."""
+        out, pos = [], 0
+        for b, block in enumerate(self.program.blocks):
+            count = sum(1 for f in self.program.factors if f.block == b)
+            m, cols = block.residual_dim, sum(block.variable_dims) + 1
+            out.append((pos, count, m, cols))
+            pos += count * m * cols
+        return out
+
+    def rows(self, x: np.ndarray, d: np.ndarray) -> np.ndarray:
+        """The whitened rows [A | b] (b = −W·r, GTSAM's convention) of every factor instance at
+        flat ``x``, as the solver linearises them, laid out as :meth:`row_layout` says."""
+        if not hasattr(self, "_rows_out"):
+            layout = self.row_layout()
+            last = layout[-1] if layout else (0, 0, 0, 0)
+            self._rows_out = np.empty(last[0] + last[1] * last[2] * last[3])
+        self.library.fgc_rows(_address(x, self.n_x, "x"),
+                              _address(d, self.n_data, "the factor data"),
+                              self._rows_out.__array_interface__["data"][0])
+        return self._rows_out.copy()
 
     def run(self, data: ProblemData) -> HlsResult:
         """Solve ``data``; the result carries the host-side float32 verdict

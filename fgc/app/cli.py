@@ -5,7 +5,8 @@
     fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
     fgc run      SPEC --backend native|sim            solve with the generated solver
     fgc stream   SPEC --window W | --incremental K    keyframes one at a time (simulator;
-                 [--backend hls]                      hls: updates priced on the HLS plan)
+                 [--backend sim|hls|native]           hls: updates priced on the HLS plan;
+                                                      native: --window only)
     fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
     fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
     fgc metrics  EST.tum REF.tum [--align se3]        ATE / RPE (translation m, rotation deg)
@@ -75,7 +76,7 @@ def solver_config(args, precision_default: str):
 def _streaming(args) -> bool:
     """Whether keyframe-by-keyframe mode was asked for (--incremental or --window); checks
     the combination and refuses the backends that run batch solves only."""
-    from fgc.app.streaming import HW_REFUSAL, check_mode
+    from fgc.app.streaming import HW_REFUSAL, NATIVE_REFUSAL, check_mode
 
     incremental, window = getattr(args, "incremental", None), getattr(args, "window", None)
     batch_every = getattr(args, "batch_every", None)
@@ -83,7 +84,10 @@ def _streaming(args) -> bool:
         return False
     check_mode(incremental, batch_every, window)
     backend = getattr(args, "backend", "sim")
-    if backend != "sim" and not (args.command == "stream" and backend == "hls"):
+    if args.command == "stream" and backend == "native":
+        if incremental is not None or batch_every is not None:
+            raise FgcError(f"--backend native: {NATIVE_REFUSAL}")
+    elif backend != "sim" and not (args.command == "stream" and backend == "hls"):
         raise FgcError(f"fgc {args.command} --backend {backend}: {HW_REFUSAL}")
     return True
 
@@ -462,15 +466,17 @@ def _cmd_stream(args) -> int:
     quiet = getattr(args, "quiet", False)
     hls = getattr(args, "backend", "sim") == "hls"
     n = len(program.schedule.clusters)
+    backend = getattr(args, "backend", "sim")
+    who = "native solver" if backend == "native" else "simulator"
     if not quiet:
         if hls:
             print(_stream_hls_head(args, program, n, window), flush=True)
         else:
             print(f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, "
-                  f"simulator {program.solver.precision}; per keyframe: the accelerator plan's "
+                  f"{who} {program.solver.precision}; per keyframe: the accelerator plan's "
                   f"latency (model estimate: the update's iterations as batch iterations of a "
                   f"chain as long as its window; {streaming.UNPRICED} otherwise) and the "
-                  "simulator's wall time", flush=True)
+                  f"{who}'s wall time", flush=True)
     online: dict = {}
     pricer = (streaming.update_model(graph, program) if hls
               else streaming.UpdatePricer(graph, program, window))
@@ -490,28 +496,31 @@ def _cmd_stream(args) -> int:
                      "keyframe chain)" if price else "model estimate not available")
         print(f"  keyframe {update.keyframe:>4} ({update.mode}, from {update.first}): "
               f"{update.iterations:>3} iterations, {update.status}, {model}, "
-              f"{update.seconds * 1e3:8.2f} ms (simulator wall time); "
+              f"{update.seconds * 1e3:8.2f} ms ({who} wall time); "
               f"{_newest_text(update, program)}", flush=True)
 
-    result = streaming.run_stream(program, data, window, progress)
+
+    result = streaming.run_stream(program, data, window, progress, backend=backend,
+                                  graph=graph)
     from fgc.app.run_report import require_finite_start
 
     require_finite_start(graph, result)
     final = {str(k): v for k, v in result.values.items()}
     acc = streaming.accuracy(graph, final, online, streaming.batch_optimum(graph))
     times = streaming.timing_summary(u["seconds"] for u in result.updates)
-    report = {"spec": args.spec, "backend": "hls" if hls else "sim", "keyframes": n,
+    report = {"spec": args.spec, "keyframes": n,
               "mode": "fixed-lag" if window else
               "incremental", "window": window, "incremental_k": program.solver.incremental_k,
               "batch_every": program.solver.batch_every, "status": result.status,
               "reason": result.reason, "iterations": result.iterations,
-              "model_estimate": priced, "simulator_update_time": times,
+              "backend": backend, "model_estimate": priced,
+              f"{'native' if backend == 'native' else 'simulator'}_update_time": times,
               "accuracy_vs_batch_optimum": acc,
               "updates": [{k: v for k, v in u.items() if k != "values"}
                           for u in result.updates]}
     ate = acc.get("final", {}).get("translation", {})
     ate_online = acc.get("online", {}).get("translation", {})
-    head = (f"fgc stream {args.spec}: {result.status} over {n} keyframes; simulator update "
+    head = (f"fgc stream {args.spec}: {result.status} over {n} keyframes; {who} update "
             f"median {times['median_ms']:.2f} ms, p99 {times['p99_ms']:.2f} ms (wall time); "
             f"vs batch optimum: ATE rmse {ate.get('rmse', float('nan')):.4g} m final, "
             f"{ate_online.get('rmse', float('nan')):.4g} m online")
@@ -771,12 +780,13 @@ def _clock(text: str) -> tuple[float, float]:
 
 
 def _scalar(text: str) -> str:
-    from fgc_backends.hls.config import HlsConfigError, check_scalar
+    from fgc_backends.cfamily.errors import CodegenError
+    from fgc_backends.cfamily.scalars import check_scalar
 
     text = re.sub(r"\s+", "", text)
     try:
         return check_scalar(text)
-    except HlsConfigError as exc:
+    except CodegenError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
 
 
@@ -895,7 +905,8 @@ def _command_args(name: str, p: argparse.ArgumentParser) -> None:
                             "price; hls: the same updates priced by the accelerator plan's "
                             "update model, --units / --cpe / --precision / --clock as for "
                             "the HLS design (model estimates; its incremental mode is not "
-                            "emitted). native has no streaming mode")
+                            "emitted); native: the native solver solves each update "
+                            "(fixed-lag --window only)")
     if name in ("simulate", "verify", "run", "stream"):
         p.add_argument("--values", metavar="FILE",
                        help="write the optimised values: .g2o, .tum/.txt (TUM poses, t = key "

@@ -3,8 +3,9 @@ fixed-lag update, per-keyframe results, the trajectory and its accuracy against 
 optimum. Behind ``fgc stream`` and :func:`fgc.stream`; ``fgc simulate / verify`` with
 ``--incremental`` or ``--window`` use the same pieces.
 
-Modes (the simulator only; the HLS design and the native solver run batch solves — issue 19;
-the accelerator's incremental mode is not emitted, :func:`update_model` prices its updates):
+Modes (the simulator; the native solver runs the fixed-lag window too, ``backend="native"``:
+:mod:`fgc_backends.native.stream`; the HLS design runs batch solves — issue 19: the
+accelerator's incremental mode is not emitted, :func:`update_model` prices its updates):
 
 - **incremental** (``SolverConfig.incremental_k`` = K, ``batch_every``): each keyframe
   re-eliminates the newest K clusters on the kept Bayes net (paper A), batch steps re-eliminate
@@ -38,9 +39,12 @@ from fgc.frontend.dsl import Graph
 from fgc.frontend.geometry import Pose2, Pose3
 
 UNPRICED = "one-keyframe windows and window sizes past the first four others seen"
-HW_REFUSAL = ("incremental and fixed-lag modes run in the simulator only (the HLS design runs "
-              "batch solves, its incremental mode is not emitted; fgc stream --backend hls "
-              "prices the updates on its plan; native: issue 19)")
+HW_REFUSAL = ("incremental and fixed-lag modes run in the simulator (fgc stream --backend native "
+              "runs the fixed-lag window on the native solver; the HLS design runs batch solves, "
+              "its incremental mode is not emitted; fgc stream --backend hls prices the updates "
+              "on its plan)")
+NATIVE_REFUSAL = ("the native solver streams the fixed-lag window (--window W); the incremental "
+                  "plan (--incremental) runs in the simulator only")
 
 
 @dataclass(frozen=True)
@@ -95,12 +99,17 @@ def compile_stream(graph: Graph, solver=None, incremental: int | None = None,
     return program
 
 
-def run_stream(program, data, window: int | None = None, progress=None, precision=None):
+def run_stream(program, data, window: int | None = None, progress=None, precision=None,
+               backend: str = "sim", graph: Graph | None = None):
     """Run the simulator keyframe by keyframe (incremental plan if the Program has one, else
     the fixed-lag ``window``); ``progress(KeyframeResult)`` after each keyframe. Returns the
-    SimResult."""
+    SimResult. ``backend="native"``: the native solver runs the fixed-lag window instead (it
+    needs the ``graph`` the Program was compiled from; returns a
+    :class:`fgc_backends.native.stream.NativeStreamResult`)."""
     from fgc_backends import load
 
+    if backend == "native":
+        return _run_native_stream(program, data, window, progress, graph)
     sim = load("sim")
     incremental = program.schedule.incremental is not None
     if not incremental and window is None:
@@ -111,6 +120,20 @@ def run_stream(program, data, window: int | None = None, progress=None, precisio
             progress(keyframe_result(program, raw))
     return sim.run(program, data, precision=precision, incremental=incremental,
                    window=window, progress=callback)
+
+
+def _run_native_stream(program, data, window, progress, graph):
+    from fgc_backends.native.stream import FixedLagStream
+
+    if program.schedule.incremental is not None or window is None:
+        raise FgcError(NATIVE_REFUSAL)
+    if graph is None:
+        raise FgcError("native streaming needs the graph the Program was compiled from")
+    callback = None
+    if progress is not None:
+        def callback(raw):
+            progress(keyframe_result(program, raw))
+    return FixedLagStream(graph, program, window).run(data, callback)
 
 
 def keyframe_result(program, record: dict) -> KeyframeResult:

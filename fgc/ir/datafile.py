@@ -57,6 +57,15 @@ def check_structure(data: ProblemData, program: Program, what: str = "the data")
                         "for this Program)")
 
 
+def factor_words(measured: dict, noise, member) -> list[np.ndarray]:
+    """One factor's numbers in a block instance's data, as arrays: its measurements in the
+    member's order, its noise parameters, its robust loss (code, k)."""
+    robust = noise.robust
+    return [*(np.asarray(measured[name], float).reshape(-1) for name, _ in member.measurements),
+            noise.params(), np.array([ROBUST_CODES[robust.kind if robust else None],
+                                      robust.k if robust else 0.0])]
+
+
 def problem_data(graph: Graph, program: Program) -> ProblemData:
     """Collect ``graph``'s data in the layout of ``program`` (compiled from the same structure)."""
     by_key = {str(k): v for k, v in graph.variables.items()}
@@ -89,12 +98,7 @@ def problem_data(graph: Graph, program: Program) -> ProblemData:
                 raise DataError(f"factor {index} ('{f.name}', a {f.type.name}) connects "
                                 f"{keys}, the compiled Program connects {expected}: the graph "
                                 "has another structure (compile it, or use its own Program)")
-            parts += [np.asarray(f.measured[name], float).reshape(-1)
-                      for name, _ in member.measurements]
-            parts.append(f.noise.params())
-            robust = f.noise.robust
-            parts.append(np.array([ROBUST_CODES[robust.kind if robust else None],
-                                   robust.k if robust else 0.0]))
+            parts += factor_words(f.measured, f.noise, member)
         factors.append(np.concatenate(parts))
     return ProblemData(variables, tuple(factors), program.structure_fingerprint)
 

@@ -3034,8 +3034,11 @@ const V* gather_0(const T* x, int first, bool cost, V in[30]) {
 // block 0, instances first ... first + LANES - 1: residual + Jacobian (its 33
 // structural non-zeros of 6 x 7), whiten. Mode 1 (noise_mode false): accumulate the gradient
 // and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
-// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
-bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise. Mode 4
+// (rows_out given, host only): copy each instance's whitened rows [A | b] (6 x 7, row-major)
+// to rows_out + instance * 42, nothing else.
+bool linearize_0(const T* x, int first, bool noise_mode, T* noise,
+                   double* rows_out = nullptr) {
     V in[30];
     const V* dat = gather_0(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
@@ -3051,6 +3054,15 @@ bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<8, 7, 6, 1, 6>(raw[l] + 0, ab[l] + 0, line + 12);
         reweight<8, 7, 6>(ab[l] + 0, line[18], line[19]);
+#ifndef __SYNTHESIS__
+        if (rows_out != nullptr) {
+            double* out = rows_out + (first + l) * 42;
+            for (int r = 0; r < 6; ++r) {
+                for (int c = 0; c < 7; ++c) out[r * 7 + c] = static_cast<double>(ab[l][r * 8 + c]);
+            }
+            continue;
+        }
+#endif
         if (noise_mode) {
             T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 8; ++c) scale[c] = T(0);
@@ -3140,8 +3152,11 @@ const V* gather_1(const T* x, int first, bool cost, V in[7]) {
 // block 1, instances first ... first + LANES - 1: residual + Jacobian (its 6
 // structural non-zeros of 3 x 4), whiten. Mode 1 (noise_mode false): accumulate the gradient
 // and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
-// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
-bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise. Mode 4
+// (rows_out given, host only): copy each instance's whitened rows [A | b] (3 x 4, row-major)
+// to rows_out + instance * 12, nothing else.
+bool linearize_1(const T* x, int first, bool noise_mode, T* noise,
+                   double* rows_out = nullptr) {
     V in[7];
     const V* dat = gather_1(x, first, false, in);
     // rows [J | r] padded to 4 (whole tiles): the Jacobian writes only its structural
@@ -3157,6 +3172,15 @@ bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<4, 4, 3, 0, 3>(raw[l] + 0, ab[l] + 0, line + 3);
         reweight<4, 4, 3>(ab[l] + 0, line[4], line[5]);
+#ifndef __SYNTHESIS__
+        if (rows_out != nullptr) {
+            double* out = rows_out + (first + l) * 12;
+            for (int r = 0; r < 3; ++r) {
+                for (int c = 0; c < 4; ++c) out[r * 4 + c] = static_cast<double>(ab[l][r * 4 + c]);
+            }
+            continue;
+        }
+#endif
         if (noise_mode) {
             T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 4; ++c) scale[c] = T(0);
@@ -3246,8 +3270,11 @@ const V* gather_2(const T* x, int first, bool cost, V in[13]) {
 // block 2, instances first ... first + LANES - 1: residual + Jacobian (its 12
 // structural non-zeros of 6 x 7), whiten. Mode 1 (noise_mode false): accumulate the gradient
 // and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
-// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
-bool linearize_2(const T* x, int first, bool noise_mode, T* noise) {
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise. Mode 4
+// (rows_out given, host only): copy each instance's whitened rows [A | b] (6 x 7, row-major)
+// to rows_out + instance * 42, nothing else.
+bool linearize_2(const T* x, int first, bool noise_mode, T* noise,
+                   double* rows_out = nullptr) {
     V in[13];
     const V* dat = gather_2(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
@@ -3263,6 +3290,15 @@ bool linearize_2(const T* x, int first, bool noise_mode, T* noise) {
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<8, 7, 6, 0, 6>(raw[l] + 0, ab[l] + 0, line + 6);
         reweight<8, 7, 6>(ab[l] + 0, line[7], line[8]);
+#ifndef __SYNTHESIS__
+        if (rows_out != nullptr) {
+            double* out = rows_out + (first + l) * 42;
+            for (int r = 0; r < 6; ++r) {
+                for (int c = 0; c < 7; ++c) out[r * 7 + c] = static_cast<double>(ab[l][r * 8 + c]);
+            }
+            continue;
+        }
+#endif
         if (noise_mode) {
             T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 8; ++c) scale[c] = T(0);
@@ -3596,8 +3632,11 @@ void whiten_tail_3_0(const T* raw, T* ab, const T* p) {
 // block 3, instances first ... first + LANES - 1: residual + Jacobian (its 240
 // structural non-zeros of 21 x 31), whiten. Mode 1 (noise_mode false): accumulate the gradient
 // and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
-// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
-bool linearize_3(const T* x, int first, bool noise_mode, T* noise) {
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise. Mode 4
+// (rows_out given, host only): copy each instance's whitened rows [A | b] (21 x 31, row-major)
+// to rows_out + instance * 651, nothing else.
+bool linearize_3(const T* x, int first, bool noise_mode, T* noise,
+                   double* rows_out = nullptr) {
     V in[253];
     const V* dat = gather_3(x, first, false, in);
     // rows [J | r] padded to 32 (whole tiles): the Jacobian writes only its structural
@@ -3616,6 +3655,15 @@ bool linearize_3(const T* x, int first, bool noise_mode, T* noise) {
         reweight<32, 31, 15>(ab[l] + 0, line[193], line[194]);
         whiten<32, 31, 6, 1, 6>(raw[l] + 480, ab[l] + 480, line + 207);
         reweight<32, 31, 6>(ab[l] + 480, line[213], line[214]);
+#ifndef __SYNTHESIS__
+        if (rows_out != nullptr) {
+            double* out = rows_out + (first + l) * 651;
+            for (int r = 0; r < 21; ++r) {
+                for (int c = 0; c < 31; ++c) out[r * 31 + c] = static_cast<double>(ab[l][r * 32 + c]);
+            }
+            continue;
+        }
+#endif
         if (noise_mode) {
             T scale[32];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 32; ++c) scale[c] = T(0);
@@ -3716,8 +3764,11 @@ const V* gather_4(const T* x, int first, bool cost, V in[16]) {
 // block 4, instances first ... first + LANES - 1: residual + Jacobian (its 12
 // structural non-zeros of 3 x 7), whiten. Mode 1 (noise_mode false): accumulate the gradient
 // and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
-// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
-bool linearize_4(const T* x, int first, bool noise_mode, T* noise) {
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise. Mode 4
+// (rows_out given, host only): copy each instance's whitened rows [A | b] (3 x 7, row-major)
+// to rows_out + instance * 21, nothing else.
+bool linearize_4(const T* x, int first, bool noise_mode, T* noise,
+                   double* rows_out = nullptr) {
     V in[16];
     const V* dat = gather_4(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
@@ -3733,6 +3784,15 @@ bool linearize_4(const T* x, int first, bool noise_mode, T* noise) {
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<8, 7, 3, 0, 3>(raw[l] + 0, ab[l] + 0, line + 3);
         reweight<8, 7, 3>(ab[l] + 0, line[4], line[5]);
+#ifndef __SYNTHESIS__
+        if (rows_out != nullptr) {
+            double* out = rows_out + (first + l) * 21;
+            for (int r = 0; r < 3; ++r) {
+                for (int c = 0; c < 7; ++c) out[r * 7 + c] = static_cast<double>(ab[l][r * 8 + c]);
+            }
+            continue;
+        }
+#endif
         if (noise_mode) {
             T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 8; ++c) scale[c] = T(0);
@@ -3798,6 +3858,20 @@ T rounding_noise_all(const T* x) {
     for (int i = 0; i < 8; i += LANES) linearize_4(x, i, true, &noise);
     return noise;
 }
+
+#ifndef __SYNTHESIS__
+// The whitened rows [A | b] of every factor instance at x (mode 4), block by block, each block's
+// instances in order: what a caller eliminating part of the graph itself (the fixed-lag
+// stream's marginalisation) needs.
+void linearized_rows(const T* x, double* out) {
+    T unused = T(0);
+    for (int i = 0; i < 1; i += LANES) linearize_0(x, i, false, &unused, out + 0);
+    for (int i = 0; i < 1; i += LANES) linearize_1(x, i, false, &unused, out + 42);
+    for (int i = 0; i < 1; i += LANES) linearize_2(x, i, false, &unused, out + 54);
+    for (int i = 0; i < 7; i += LANES) linearize_3(x, i, false, &unused, out + 96);
+    for (int i = 0; i < 8; i += LANES) linearize_4(x, i, false, &unused, out + 4653);
+}
+#endif
 
 // The graph's cost (GTSAM's error) at x: every block in cost mode.
 T total_cost(const T* x) {
@@ -5367,5 +5441,10 @@ void lio_probe(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], fgc:
     fgc::host_inputs(x_in, data);
     out[0] = fgc::total_cost(fgc::X);
     out[1] = fgc::rounding_noise_all(fgc::X);
+}
+
+void lio_rows(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], double* out) {
+    fgc::host_inputs(x_in, data);
+    fgc::linearized_rows(fgc::X, out);
 }
 #endif

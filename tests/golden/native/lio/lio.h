@@ -202,6 +202,9 @@ void lio_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 // to the scalar type, the tolerance the step test in try_steps grants a step that is not below
 // the cost), computed as the accelerator computes them: out = {cost, noise}.
 void lio_probe(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], fgc::T out[2]);
+// the whitened rows [A | b] of every factor instance at x_in (4821 numbers: per block, per instance,
+// residual rows x (tangent columns + 1), row-major)
+void lio_rows(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], double* out);
 #endif
 
 #endif  // FGC_LIO_H

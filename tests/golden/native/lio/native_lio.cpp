@@ -54,4 +54,10 @@ void fgc_probe(const double* x, const double* factor_data, double* out) {
     out[1] = static_cast<double>(res[1]);
 }
 
+// The whitened rows [A | b] of every factor instance at x (4821 numbers), block by block.
+void fgc_rows(const double* x, const double* factor_data, double* out) {
+    convert_inputs(x, factor_data);
+    lio_rows(x_in, data, out);
+}
+
 }  // extern "C"

@@ -1393,8 +1393,11 @@ const V* gather_0(const T* x, int first, bool cost, V in[37]) {
 // block 0, instances first ... first + LANES - 1: residual + Jacobian (its 60
 // structural non-zeros of 6 x 13), whiten. Mode 1 (noise_mode false): accumulate the gradient
 // and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
-// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
-bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise. Mode 4
+// (rows_out given, host only): copy each instance's whitened rows [A | b] (6 x 13, row-major)
+// to rows_out + instance * 78, nothing else.
+bool linearize_0(const T* x, int first, bool noise_mode, T* noise,
+                   double* rows_out = nullptr) {
     V in[37];
     const V* dat = gather_0(x, first, false, in);
     // rows [J | r] padded to 16 (whole tiles): the Jacobian writes only its structural
@@ -1410,6 +1413,15 @@ bool linearize_0(const T* x, int first, bool noise_mode, T* noise) {
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<16, 13, 6, 0, 6>(raw[l] + 0, ab[l] + 0, line + 12);
         reweight<16, 13, 6>(ab[l] + 0, line[13], line[14]);
+#ifndef __SYNTHESIS__
+        if (rows_out != nullptr) {
+            double* out = rows_out + (first + l) * 78;
+            for (int r = 0; r < 6; ++r) {
+                for (int c = 0; c < 13; ++c) out[r * 13 + c] = static_cast<double>(ab[l][r * 16 + c]);
+            }
+            continue;
+        }
+#endif
         if (noise_mode) {
             T scale[16];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 16; ++c) scale[c] = T(0);
@@ -1501,8 +1513,11 @@ const V* gather_1(const T* x, int first, bool cost, V in[25]) {
 // block 1, instances first ... first + LANES - 1: residual + Jacobian (its 33
 // structural non-zeros of 6 x 7), whiten. Mode 1 (noise_mode false): accumulate the gradient
 // and the whitened rows into the A buffer; false if not finite. Mode 3 (true): only add
-// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise.
-bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
+// the cost's rounding noise (how far the cost moves when x is rounded to T) to *noise. Mode 4
+// (rows_out given, host only): copy each instance's whitened rows [A | b] (6 x 7, row-major)
+// to rows_out + instance * 42, nothing else.
+bool linearize_1(const T* x, int first, bool noise_mode, T* noise,
+                   double* rows_out = nullptr) {
     V in[25];
     const V* dat = gather_1(x, first, false, in);
     // rows [J | r] padded to 8 (whole tiles): the Jacobian writes only its structural
@@ -1518,6 +1533,15 @@ bool linearize_1(const T* x, int first, bool noise_mode, T* noise) {
         const T* line = DATA_BUF + FACTOR_DATA_OFF[f];
         whiten<8, 7, 6, 0, 6>(raw[l] + 0, ab[l] + 0, line + 12);
         reweight<8, 7, 6>(ab[l] + 0, line[13], line[14]);
+#ifndef __SYNTHESIS__
+        if (rows_out != nullptr) {
+            double* out = rows_out + (first + l) * 42;
+            for (int r = 0; r < 6; ++r) {
+                for (int c = 0; c < 7; ++c) out[r * 7 + c] = static_cast<double>(ab[l][r * 8 + c]);
+            }
+            continue;
+        }
+#endif
         if (noise_mode) {
             T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
             for (int c = 0; c < 8; ++c) scale[c] = T(0);
@@ -1577,6 +1601,17 @@ T rounding_noise_all(const T* x) {
     for (int i = 0; i < 1; i += LANES) linearize_1(x, i, true, &noise);
     return noise;
 }
+
+#ifndef __SYNTHESIS__
+// The whitened rows [A | b] of every factor instance at x (mode 4), block by block, each block's
+// instances in order: what a caller eliminating part of the graph itself (the fixed-lag
+// stream's marginalisation) needs.
+void linearized_rows(const T* x, double* out) {
+    T unused = T(0);
+    for (int i = 0; i < 6; i += LANES) linearize_0(x, i, false, &unused, out + 0);
+    for (int i = 0; i < 1; i += LANES) linearize_1(x, i, false, &unused, out + 468);
+}
+#endif
 
 // The graph's cost (GTSAM's error) at x: every block in cost mode.
 T total_cost(const T* x) {
@@ -2039,5 +2074,10 @@ void pose_graph_probe(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA
     fgc::host_inputs(x_in, data);
     out[0] = fgc::total_cost(fgc::X);
     out[1] = fgc::rounding_noise_all(fgc::X);
+}
+
+void pose_graph_rows(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], double* out) {
+    fgc::host_inputs(x_in, data);
+    fgc::linearized_rows(fgc::X, out);
 }
 #endif

@@ -200,6 +200,9 @@ void pose_graph_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 // to the scalar type, the tolerance the step test in try_steps grants a step that is not below
 // the cost), computed as the accelerator computes them: out = {cost, noise}.
 void pose_graph_probe(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], fgc::T out[2]);
+// the whitened rows [A | b] of every factor instance at x_in (510 numbers: per block, per instance,
+// residual rows x (tangent columns + 1), row-major)
+void pose_graph_rows(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA], double* out);
 #endif
 
 #endif  // FGC_POSE_GRAPH_H
