@@ -40,12 +40,13 @@ def main(argv=None) -> int:
     print(f"{'linear':9s} {'scalar':18s} {'status':10s} {'iter':>4s} {'max error':>10s} "
           f"{'cost rel':>10s}")
     for linear in ("cholesky", "qr"):
-        program = compile_graph(graph, SolverConfig(linear=linear), name=f"fx_bench_{linear}")
+        program = compile_graph(graph, SolverConfig(linear=linear,
+                                                    lambda_upper_bound=args.lambda_upper_bound),
+                                name=f"fx_bench_{linear}")
         data = problem_data(graph, program)
         reference = sim.run(program, data, precision="float64")
         for scalar in (args.scalar, "double"):
-            config = native.NativeConfig(scalar=scalar,
-                                         lambda_upper_bound=args.lambda_upper_bound)
+            config = native.NativeConfig(scalar=scalar)
             result = native.run(program, data, config)
             rel = abs(result.final_error - reference.final_error) / reference.final_error
             print(f"{linear:9s} {scalar:18s} {result.status:10s} {result.iterations:4d} "

@@ -92,9 +92,10 @@ def test_without_ap_types_fixed_point_is_a_clear_error(tmp_path, monkeypatch):
     real = importlib.util.find_spec
     monkeypatch.setattr(importlib.util, "find_spec",
                         lambda name, *a: None if name == "hls4ml" else real(name, *a))
-    program = compile_graph(pose2_loop(), SolverConfig(linear="cholesky"), name="fx_none")
+    program = compile_graph(pose2_loop(), SolverConfig(linear="cholesky", lambda_upper_bound=1e4),
+                            name="fx_none")
     with pytest.raises(NativeConfigError, match=r"hls4ml"):
-        native.emit(program, tmp_path, NativeConfig(scalar=FIXED, lambda_upper_bound=1e4))
+        native.emit(program, tmp_path, NativeConfig(scalar=FIXED))
 
 
 # ---- emitted and built -------------------------------------------------------------------------
@@ -106,7 +107,7 @@ def test_a_constant_that_would_saturate_is_refused_naming_it(tmp_path):
     # LM's default bound 1e10 is far outside ±32768 (it used to wrap round to -7168)
     with pytest.raises(NativeConfigError, match=r"constant LAMBDA_UPPER_BOUND = 10000000000\.0 "
                                                 r"does not fit ap_fixed<40, 16> \(range -32768"
-                                                r".*NativeConfig\.lambda_upper_bound"):
+                                                r".*SolverConfig\.lambda_upper_bound"):
         native.emit(program, tmp_path / "p", NativeConfig(scalar=FIXED))
     assert not (tmp_path / "p").exists()  # refused before anything is written
     # with enough integer bits the same bound fits: 2^(35-1) > 1e10
@@ -115,8 +116,9 @@ def test_a_constant_that_would_saturate_is_refused_naming_it(tmp_path):
 
 @needs_ap_types
 def test_the_declaration_and_the_lsb_floors(tmp_path):
-    program = compile_graph(pose2_loop(), SolverConfig(linear="cholesky"), name="fx_decl")
-    native.emit(program, tmp_path, NativeConfig(scalar=FIXED, lambda_upper_bound=1e4))
+    program = compile_graph(pose2_loop(), SolverConfig(linear="cholesky", lambda_upper_bound=1e4),
+                            name="fx_decl")
+    native.emit(program, tmp_path, NativeConfig(scalar=FIXED))
     header = (tmp_path / "fx_decl.h").read_text()
     assert "typedef ap_fixed<40, 16, AP_RND_CONV, AP_SAT> T;" in header  # saturate, never wrap
     assert "leave the fixed type: computed in double" in header  # called out
@@ -134,10 +136,11 @@ def test_the_declaration_and_the_lsb_floors(tmp_path):
 @pytest.mark.parametrize("linear", ["cholesky", "qr"])
 def test_a_pose2_loop_solves_to_float64(linear):
     graph = pose2_loop()
-    program = compile_graph(graph, SolverConfig(linear=linear), name=f"fx_{linear}")
+    program = compile_graph(graph, SolverConfig(linear=linear, lambda_upper_bound=1e4),
+                            name=f"fx_{linear}")
     data = problem_data(graph, program)
     reference = sim.run(program, data, precision="float64")
-    result = native.run(program, data, NativeConfig(scalar=FIXED, lambda_upper_bound=1e4))
+    result = native.run(program, data, NativeConfig(scalar=FIXED))
     assert result.converged and reference.converged
     worst = max(float(np.max(np.abs(result.storage[v.key] - reference.storage[v.key])))
                 for v in program.variables)
@@ -158,9 +161,10 @@ def _line(far: float, sigma: float) -> fgc.Graph:
 
 @needs_ap_types
 def test_data_outside_the_format_is_refused_before_a_solve():
-    config = NativeConfig(scalar=FIXED, lambda_upper_bound=1e4)
+    config = NativeConfig(scalar=FIXED)
     graph = _line(4e4, 0.2)  # the last pose starts 40 km away: beyond ±32768
-    program = compile_graph(graph, SolverConfig(linear="cholesky"), name="fx_far")
+    program = compile_graph(graph, SolverConfig(linear="cholesky", lambda_upper_bound=1e4),
+                            name="fx_far")
     with pytest.raises(NativeConfigError, match=r"variable '2': initial value entry 0 = 40000\.0 "
                                                 r"does not fit ap_fixed<40, 16>"):
         native.run(program, problem_data(graph, program), config)

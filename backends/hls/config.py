@@ -47,17 +47,10 @@ class HlsConfig:
       ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
       widest elimination step this backend accepts; larger Programs fail at emit time.
-    - ``lanes``: factor instances a block evaluates side by side in the host build (the C
-      simulation), one lane each of a GCC/Clang vector type; ``None`` means one
-      vector register, chosen by the compiler's target: 64 bytes where the build has AVX-512
-      (8 doubles, 16 floats), else 32 (4 doubles, 8 floats). Synthesis (``__SYNTHESIS__``) and
-      fixed point use one. Each lane computes exactly the scalar kernel, so results do not
-      depend on it.
     - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation (portable: they
       are the testbench's; the native backend's ``NativeConfig`` starts from the same flags).
-    - ``lambda_upper_bound`` / ``absolute_error_tol``: LM gives up when μ would pass the bound;
-      it stops once the cost is at most the tolerance (the simulator's ``SimConfig`` options,
-      same defaults, so both backends run the same algorithm).
+    LM's limits (``lambda_upper_bound``, ``absolute_error_tol``, ``mu_min``) are the Program's
+    (:class:`fgc.ir.program.SolverConfig`), as for every backend.
     """
 
     scalar: str = "float"
@@ -67,12 +60,9 @@ class HlsConfig:
     unit_sets: int | None = None
     max_variables: int = 8192
     max_step_columns: int = 512
-    lanes: int | None = None
     cxx: str = "g++"
     cxxflags: tuple[str, ...] = ("-std=c++17", "-O2", "-ffp-contract=off", "-Wall", "-Wextra",
                                  "-Werror", "-Wno-unknown-pragmas")
-    lambda_upper_bound: float = 1e10
-    absolute_error_tol: float = 1e-14
 
     def check(self) -> None:
         """Raise :class:`HlsConfigError` naming the first invalid option."""
@@ -100,8 +90,6 @@ class HlsConfig:
             raise HlsConfigError(f"clock period {self.clock_ns} ns is outside 0.5 … 1000 ns")
         if self.unit_sets is not None and not 1 <= int(self.unit_sets) <= 8:
             raise HlsConfigError(f"unit_sets must be 1 … 8, got {self.unit_sets}")
-        if self.lanes is not None and self.lanes not in (1, 2, 4, 8, 16):
-            raise HlsConfigError(f"lanes must be 1, 2, 4, 8 or 16, got {self.lanes}")
         for name in ("max_variables", "max_step_columns"):
             if int(getattr(self, name)) < 1:
                 raise HlsConfigError(f"{name} must be ≥ 1, got {getattr(self, name)}")

@@ -31,8 +31,8 @@ from fgc_backends.cfamily.scalars import (
     ap_types_include,
     epsilon,
     fixed_declaration,
-    lsb_floor,
 )
+from fgc_backends.cfamily.solver import solver_context
 from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.cfamily.special import SERIES_BELOW, coefficient_functions
 from fgc_backends.cfamily.steps import padded, step_patterns
@@ -52,7 +52,6 @@ HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
 TB_TOLERANCES = {"rel": "1e-9", "rot": "1e-3", "vec": "1e-2", "error": "1e-2"}
 # where a variable type stores its rotation: (kind, offset), kind 2 = cos-sin, 3 = 3x3 matrix
 ROTATIONS = {"Rot2": (2, 0), "Pose2": (2, 2), "Rot3": (3, 0), "Pose3": (3, 0)}
-MU_MIN = 1e-30  # LM's μ never falls below this (the simulator's MU_MIN): damping stays on
 
 
 @dataclass(frozen=True)
@@ -278,43 +277,12 @@ def tcl_clock(clock_mhz: float) -> dict:
     return {"clock_mhz": f"{mhz:g}", "clock_ns": f"{1000.0 / mhz:.6g}"}
 
 
-def lanes(config: HlsConfig) -> int | None:
-    """Instances per block evaluation on the host: ``config.lanes``; 1 for fixed point; else
-    None, which the emitted code decides at compile time: one vector register of the scalar
-    type, 64 bytes where the build has AVX-512 and 32 otherwise (8 or 4 doubles)."""
-    if config.is_fixed_point:
-        return 1
-    return config.lanes
 
-
-def _solver_context(program: Program, config: HlsConfig, printer: HlsCodePrinter) -> dict:
-    s, eps = program.solver, epsilon(config.scalar_cxx)
-    lit = printer.literal
-    if config.is_fixed_point:  # a floor or tolerance below one LSB would round to 0: one LSB
-        def lit(value, _literal=printer.literal):
-            return _literal(lsb_floor(value, config.scalar_cxx))
-    lm = s.method == "lm"
-    tries = 1
-    if lm:  # μ grows from at least MU_MIN by lambda_factor until it passes the upper bound
-        mu = MU_MIN
-        while mu <= config.lambda_upper_bound:
-            mu, tries = mu * s.lambda_factor, tries + 1
-    return {
-        "lm": lm, "cholesky": s.linear == "cholesky", "max_iterations": int(s.max_iterations),
-        "max_tries": tries, "lambda_initial": lit(s.lambda_initial if lm else 0.0),
-        "lambda_factor": lit(s.lambda_factor), "lambda_upper_bound": lit(config.lambda_upper_bound),
-        "mu_min": lit(MU_MIN), "eps_gradient": lit(s.eps_gradient),
-        "eps_step": lit(max(s.eps_step, 10 * eps)), "tol": lit(s.relative_error_tol),
-        "epsilon": lit(eps), "resolution": lit(16 * eps),
-        "absolute_error_tol": lit(config.absolute_error_tol), "singular_eps": lit(10 * eps),
-        "linear_singular_eps": lit(10 * epsilon(config.linear_cxx)),
-        "comment": comment(f"{s.method} {s.linear} {s.ordering} n_u={s.units} cpe={s.cpe}"),
-    }
 
 
 def _context(program: Program, config: HlsConfig, project: str, vector: bool = True) -> dict:
     printer = HlsCodePrinter({})
-    solver = _solver_context(program, config, printer)
+    solver = solver_context(program, config, printer)
     tables = build_tables(program, damped=solver["lm"], cholesky=solver["cholesky"])
     two_ended = program.schedule.ordering == "two-ended"
     unit_sets = config.unit_sets or (2 if two_ended else 1)
@@ -328,7 +296,6 @@ def _context(program: Program, config: HlsConfig, project: str, vector: bool = T
     # columns exists only if some separator spans a whole TILE (else g++ -Werror proves the dead
     # loop would index past xs[MAX_W])
     max_sep = max(w - f for w, f in zip(table["STEP_W"], table["STEP_F"], strict=True))
-    host_lanes = lanes(config)
     return {
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,
@@ -356,7 +323,6 @@ def _context(program: Program, config: HlsConfig, project: str, vector: bool = T
         # a generic step whose shape a pattern has is factored by that pattern's fixed routine
         # (the same operations in the same order, no new unit): the chain ends' steps
         "fixed_shapes": sorted({(p.w, p.f) for p in patterns if p.ld == max_ld}),
-        "lanes": host_lanes, "laned": host_lanes != 1, "lanes_auto": host_lanes is None,
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,
         "noise_codes": NOISE_CODES, "robust_codes": ROBUST_CODES,

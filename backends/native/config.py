@@ -62,9 +62,8 @@ class NativeConfig:
       any fused multiply-add. Set ``()`` to build with ``cxxflags`` alone.
     - ``max_variables`` / ``max_step_columns``: the largest window and the widest elimination
       step accepted; larger Programs fail at emit time.
-    - ``lambda_upper_bound`` / ``absolute_error_tol``: LM gives up when μ would pass the bound;
-      it stops once the cost is at most the tolerance (the simulator's ``SimConfig`` options,
-      same defaults, so the backends run the same algorithm).
+    LM's limits (``lambda_upper_bound``, ``absolute_error_tol``, ``mu_min``) are the Program's
+    (:class:`fgc.ir.program.SolverConfig`), as for every backend.
     """
 
     scalar: str = "double"
@@ -76,8 +75,6 @@ class NativeConfig:
     host_flags: tuple[str, ...] = field(default_factory=lambda: host_flags())
     max_variables: int = 8192
     max_step_columns: int = 512
-    lambda_upper_bound: float = 1e10
-    absolute_error_tol: float = 1e-14
 
     def check(self) -> None:
         """Raise :class:`NativeConfigError` naming the first invalid option."""

@@ -33,11 +33,10 @@ from fgc_backends.cfamily.scalars import (
     FIXED_POINT_FLAGS,
     ap_types_include,
     check_fixed_constants,
-    epsilon,
     fixed_declaration,
     kernel_constants,
-    lsb_floor,
 )
+from fgc_backends.cfamily.solver import solver_context
 from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.cfamily.special import SERIES_BELOW, coefficient_functions
 from fgc_backends.cfamily.steps import padded, step_patterns
@@ -50,7 +49,6 @@ FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
          ("native.cpp.jinja", "native_{name}.cpp"), ("Makefile.jinja", "Makefile"))
 HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
 SOLVER_FILES = ("kernel.h.jinja", "kernel.cpp.jinja")  # the files whose constants T must hold
-MU_MIN = 1e-30  # LM's μ never falls below this (the simulator's MU_MIN): damping stays on
 
 
 @dataclass(frozen=True)
@@ -104,7 +102,8 @@ def emit(program: Program, out_dir: str | Path, config: NativeConfig | None = No
     check_fixed_constants(config.scalar_cxx, kernel_constants(
         (file_name, text) for (template, file_name), text in texts.items()
         if template in SOLVER_FILES), NativeConfigError,
-        hint="a smaller constant (NativeConfig.lambda_upper_bound bounds LM's damping)")
+        hint="a smaller constant (SolverConfig.lambda_upper_bound, fgc --lambda-upper-bound, "
+             "bounds LM's damping)")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     paths = []
@@ -159,34 +158,11 @@ def lanes(config: NativeConfig) -> int | None:
     return config.lanes
 
 
-def _solver_context(program: Program, config: NativeConfig, printer: HlsCodePrinter) -> dict:
-    s, eps = program.solver, epsilon(config.scalar_cxx)
-    lit = printer.literal
-    if config.is_fixed_point:  # a floor or tolerance below one LSB would round to 0: one LSB
-        def lit(value, _literal=printer.literal):
-            return _literal(lsb_floor(value, config.scalar_cxx))
-    lm = s.method == "lm"
-    tries = 1
-    if lm:  # μ grows from at least MU_MIN by lambda_factor until it passes the upper bound
-        mu = MU_MIN
-        while mu <= config.lambda_upper_bound:
-            mu, tries = mu * s.lambda_factor, tries + 1
-    return {
-        "lm": lm, "cholesky": s.linear == "cholesky", "max_iterations": int(s.max_iterations),
-        "max_tries": tries, "lambda_initial": lit(s.lambda_initial if lm else 0.0),
-        "lambda_factor": lit(s.lambda_factor), "lambda_upper_bound": lit(config.lambda_upper_bound),
-        "mu_min": lit(MU_MIN), "eps_gradient": lit(s.eps_gradient),
-        "eps_step": lit(max(s.eps_step, 10 * eps)), "tol": lit(s.relative_error_tol),
-        "epsilon": lit(eps), "resolution": lit(16 * eps),
-        "absolute_error_tol": lit(config.absolute_error_tol), "singular_eps": lit(10 * eps),
-        "linear_singular_eps": lit(10 * epsilon(config.linear_cxx)),
-        "comment": comment(f"{s.method} {s.linear} {s.ordering} n_u={s.units} cpe={s.cpe}"),
-    }
 
 
 def _context(program: Program, config: NativeConfig, project: str) -> dict:
     printer = HlsCodePrinter({})
-    solver = _solver_context(program, config, printer)
+    solver = solver_context(program, config, printer)
     tables = build_tables(program, damped=solver["lm"], cholesky=solver["cholesky"])
     # the steps of a level run in the order of the HLS design's unit sets (one per chain end on
     # a two-ended chain), so the two builds eliminate in one order and agree bit for bit

@@ -70,7 +70,14 @@ def solver_config(args, precision_default: str):
                         linear_precision=getattr(args, "linear_precision", None),
                         units=args.units, cpe=args.cpe, max_iterations=args.max_iterations,
                         incremental_k=getattr(args, "incremental", None),
-                        batch_every=getattr(args, "batch_every", None), **_clock_mhz(args))
+                        batch_every=getattr(args, "batch_every", None), **_clock_mhz(args),
+                        **_lm_limits(args))
+
+
+def _lm_limits(args) -> dict:
+    """``{"lambda_upper_bound": …}`` from ``--lambda-upper-bound`` (nothing when not given)."""
+    bound = getattr(args, "lambda_upper_bound", None)
+    return {"lambda_upper_bound": bound} if bound is not None else {}
 
 
 def _streaming(args) -> bool:
@@ -641,7 +648,8 @@ def _cmd_sweep(args) -> int:
         args.stages.done("derive (cold)")
     designs = sweep.design_space(args.units, args.cpe, args.precision, args.linear)
     base = SolverConfig(method=args.solver, ordering=args.ordering,
-                        max_iterations=args.max_iterations, **_clock_mhz(args))
+                        max_iterations=args.max_iterations, **_clock_mhz(args),
+                        **_lm_limits(args))
     out = Path(args.out or f"fgc-sweep-{_name(args.spec)}")
     with sweep.open_executor(args.jobs, args.executor) as pool, \
             sweep.progress_bar(len(designs), args.progress) as progress:
@@ -731,6 +739,16 @@ class _Formatter(argparse.RawDescriptionHelpFormatter):
                 default = ",".join(str(v) for v in default)
             text += f" (default: {default})"
         return text
+
+
+def _positive_float(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
+    if not (value > 0 and np.isfinite(value)):
+        raise argparse.ArgumentTypeError(f"expected a positive finite number, got {text!r}")
+    return value
 
 
 def _positive_int(text: str) -> int:
@@ -843,6 +861,9 @@ def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
                         "otherwise; natural = declaration order)")
     s.add_argument("--max-iterations", type=_positive_int, default=100, metavar="K",
                    help="k_max")
+    s.add_argument("--lambda-upper-bound", type=_positive_float, metavar="X",
+                   help="LM gives up (failed, lambda_limit) when its damping would pass X "
+                        "(default 1e10; an ap_fixed<W,I> scalar must hold it)")
     if design_space:
         d = p.add_argument_group("design space (comma-separated lists; the product is swept)")
         d.add_argument("--linear", type=_choice_list(("qr", "cholesky")), metavar="LIST",
