@@ -185,3 +185,29 @@ def ap_types_include(error: type[CodegenError] = CodegenError) -> Path:
     raise error("scalar type ap_fixed needs Xilinx's ap_types headers, which fgc takes from the "
                 "optional hls4ml package: pip install 'fgc[hls-fixed]' (or pip install --no-deps "
                 "hls4ml)")
+
+
+class ScalarTypes:
+    """The scalar-type views of a C++ backend's config (HlsConfig, NativeConfig): both hold
+    ``scalar`` (float, double or ap_fixed<W,I>) and ``linear_scalar`` (None: the same)."""
+
+    __slots__ = ()
+
+    @property
+    def is_fixed_point(self) -> bool:
+        return is_fixed_point(self.scalar)
+
+    @property
+    def scalar_cxx(self) -> str:
+        """The scalar type as C++ text (whitespace normalised)."""
+        return scalar_cxx(self.scalar)
+
+    @property
+    def linear_cxx(self) -> str:
+        """The linear solver's scalar type as C++ text (``scalar_cxx`` unless widened)."""
+        return self.linear_scalar or self.scalar_cxx
+
+    @property
+    def mixed(self) -> bool:
+        """Whether the linear solver is wider than the rest of the design."""
+        return self.linear_cxx != self.scalar_cxx

@@ -25,7 +25,7 @@ class HlsConfigError(CodegenError):
 
 
 @dataclass(frozen=True)
-class HlsConfig:
+class HlsConfig(scalars.ScalarTypes):
     """Options of the HLS backend.
 
     - ``scalar``: the C++ scalar type ``T`` of the whole accelerator: ``"float"`` (paper A and B's
@@ -98,24 +98,9 @@ class HlsConfig:
                 raise HlsConfigError(f"compiler option {flag!r} has characters a Makefile would "
                                      "interpret")
 
-    @property
-    def is_fixed_point(self) -> bool:
-        return scalars.is_fixed_point(self.scalar)
 
-    @property
-    def linear_cxx(self) -> str:
-        """The linear solver's scalar type as C++ text (``scalar_cxx`` unless widened)."""
-        return self.linear_scalar or self.scalar_cxx
 
-    @property
-    def mixed(self) -> bool:
-        """Whether the linear solver is wider than the rest of the accelerator."""
-        return self.linear_cxx != self.scalar_cxx
 
-    @property
-    def scalar_cxx(self) -> str:
-        """The scalar type as C++ text (whitespace normalised)."""
-        return scalars.scalar_cxx(self.scalar)
 
     @staticmethod
     def template_dir() -> Path:

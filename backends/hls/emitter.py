@@ -21,6 +21,7 @@ import fgc
 from fgc.ir.codes import NOISE_CODES, REASONS, ROBUST_CODES, STATUSES
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import Program
+from fgc_backends.cfamily import limits
 from fgc_backends.cfamily.blocks import block_contexts
 from fgc_backends.cfamily.names import comment, identifier, key_tokens
 from fgc_backends.cfamily.printer import HlsCodePrinter
@@ -114,28 +115,6 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
                                    for i, (t, _) in enumerate(FILES) if t in SYNTHESISED]
                           + units, strict=True)
     return dataclasses.replace(result, lint_issues=tuple(issues))
-
-
-_NAMED_CONSTANT = re.compile(r"\bconst\s+[TL]\s+([A-Z_][A-Z0-9_]*)\s*=\s*\(?(-?)[TL]\("
-                             r"([-+0-9.eE]+)\)")
-_T_LITERAL = re.compile(r"\b[TL]\(([-+]?[0-9][0-9.eE+-]*)\)")
-
-
-def kernel_constants(files) -> list[tuple[str, float]]:
-    """(name, value) of every scalar constant in the synthesised ``files`` ((name, text)
-    pairs): named ``const T NAME = T(v)`` by their names, other ``T(v)`` literals by file and
-    line."""
-    out = []
-    for file, text in files:
-        named = {}
-        for m in _NAMED_CONSTANT.finditer(text):
-            named[m.start(3) - 2] = m.group(1)
-            out.append((m.group(1), float(m.group(2) + m.group(3))))
-        for m in _T_LITERAL.finditer(text):
-            if m.start() not in named:
-                line = text.count("\n", 0, m.start()) + 1
-                out.append((f"T({m.group(1)}) at {file}:{line}", float(m.group(1))))
-    return out
 
 
 def _copy_headers(out: Path) -> list[Path]:
@@ -241,32 +220,13 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
 
 
 def for_program(program: Program, config: HlsConfig) -> HlsConfig:
-    """``config`` with the linear solver's scalar the Program asks for: a Program compiled with
-    ``linear_precision="float64"`` (the mixed design) gets a ``double`` linear solver unless
-    ``config.linear_scalar`` says otherwise."""
-    if config.linear_scalar is None and program.solver.mixed:
-        return dataclasses.replace(config, linear_scalar="double")
-    return config
+    """``config`` with the linear solver's scalar the Program asks for (the mixed design)."""
+    return limits.for_program(program, config)
 
 
 def check_limits(program: Program, config: HlsConfig) -> None:
     """Raise :class:`HlsConfigError` if ``program`` exceeds what ``config`` can build."""
-    if program.max_variables > config.max_variables:
-        raise HlsConfigError(f"the Program's window of {program.max_variables} variables exceeds "
-                             f"the HLS backend's maximum of {config.max_variables} "
-                             "(HlsConfig.max_variables)")
-    if len(program.variables) > program.max_variables:
-        raise HlsConfigError(f"{len(program.variables)} variables exceed the compiled maximum "
-                             f"{program.max_variables}")
-    widest = max(s.frontal_dim + s.separator_dim for s in program.schedule.steps)
-    if widest > config.max_step_columns:
-        raise HlsConfigError(f"an elimination step has {widest} columns, more than the backend's "
-                             f"{config.max_step_columns} (HlsConfig.max_step_columns)")
-    if program.schedule.incremental is not None:
-        raise HlsConfigError("the HLS backend runs batch solves only; compile without "
-                             "incremental_k")
-    if config.is_fixed_point:
-        ap_types_include(HlsConfigError)  # a clear error now, not a missing header in g++
+    limits.check_limits(program, config, HlsConfigError, "the HLS backend", "HlsConfig")
 
 
 def tcl_clock(clock_mhz: float) -> dict:

@@ -31,7 +31,7 @@ def host_flags(machine: str | None = None) -> tuple[str, ...]:
 
 
 @dataclass(frozen=True)
-class NativeConfig:
+class NativeConfig(scalars.ScalarTypes):
     """Options of the native backend.
 
     - ``scalar``: the C++ scalar type ``T``: ``"float"``, ``"double"`` or ``"ap_fixed<W,I>"``
@@ -99,24 +99,9 @@ class NativeConfig:
                 raise NativeConfigError(f"compiler option {flag!r} has characters a Makefile "
                                         "would interpret")
 
-    @property
-    def is_fixed_point(self) -> bool:
-        return scalars.is_fixed_point(self.scalar)
 
-    @property
-    def scalar_cxx(self) -> str:
-        """The scalar type as C++ text (whitespace normalised)."""
-        return scalars.scalar_cxx(self.scalar)
 
-    @property
-    def linear_cxx(self) -> str:
-        """The linear solver's scalar type as C++ text (``scalar_cxx`` unless widened)."""
-        return self.linear_scalar or self.scalar_cxx
 
-    @property
-    def mixed(self) -> bool:
-        """Whether the linear solver is wider than the rest of the solver."""
-        return self.linear_cxx != self.scalar_cxx
 
     @staticmethod
     def template_dir() -> Path:

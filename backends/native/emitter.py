@@ -14,7 +14,6 @@ backend cannot build fails here with a :class:`NativeConfigError`, never in g++.
 
 from __future__ import annotations
 
-import dataclasses
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -25,6 +24,7 @@ import fgc
 from fgc.ir.codes import NOISE_CODES, REASONS, ROBUST_CODES, STATUSES
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import Program
+from fgc_backends.cfamily import limits
 from fgc_backends.cfamily.blocks import block_contexts
 from fgc_backends.cfamily.names import comment, identifier
 from fgc_backends.cfamily.printer import HlsCodePrinter
@@ -120,33 +120,13 @@ def emit(program: Program, out_dir: str | Path, config: NativeConfig | None = No
 
 
 def for_program(program: Program, config: NativeConfig) -> NativeConfig:
-    """``config`` with the linear solver's scalar the Program asks for: a Program compiled with
-    ``linear_precision="float64"`` gets a ``double`` linear solver unless
-    ``config.linear_scalar`` says otherwise."""
-    if config.linear_scalar is None and program.solver.mixed:
-        return dataclasses.replace(config, linear_scalar="double")
-    return config
+    """``config`` with the linear solver's scalar the Program asks for (the mixed design)."""
+    return limits.for_program(program, config)
 
 
 def check_limits(program: Program, config: NativeConfig) -> None:
     """Raise :class:`NativeConfigError` if ``program`` exceeds what ``config`` can build."""
-    if program.max_variables > config.max_variables:
-        raise NativeConfigError(f"the Program's window of {program.max_variables} variables "
-                                f"exceeds the native backend's maximum of {config.max_variables} "
-                                "(NativeConfig.max_variables)")
-    if len(program.variables) > program.max_variables:
-        raise NativeConfigError(f"{len(program.variables)} variables exceed the compiled "
-                                f"maximum {program.max_variables}")
-    widest = max(s.frontal_dim + s.separator_dim for s in program.schedule.steps)
-    if widest > config.max_step_columns:
-        raise NativeConfigError(f"an elimination step has {widest} columns, more than the "
-                                f"backend's {config.max_step_columns} "
-                                "(NativeConfig.max_step_columns)")
-    if program.schedule.incremental is not None:
-        raise NativeConfigError("the native backend runs batch solves only; compile without "
-                                "incremental_k")
-    if config.is_fixed_point:
-        ap_types_include(NativeConfigError)  # a clear error now, not a missing header in g++
+    limits.check_limits(program, config, NativeConfigError, "the native backend", "NativeConfig")
 
 
 def lanes(config: NativeConfig) -> int | None:
