@@ -20,34 +20,20 @@ from pathlib import Path
 
 import jinja2
 
-import fgc
-from fgc.ir.codes import NOISE_CODES, REASONS, ROBUST_CODES, STATUSES
-from fgc.ir.datafile import MAGIC
 from fgc.ir.program import Program
 from fgc_backends.cfamily import limits
-from fgc_backends.cfamily.blocks import block_contexts
-from fgc_backends.cfamily.names import comment, identifier
-from fgc_backends.cfamily.printer import HlsCodePrinter
-from fgc_backends.cfamily.retract import retract_kinds
+from fgc_backends.cfamily.context import common_context
+from fgc_backends.cfamily.names import identifier
 from fgc_backends.cfamily.scalars import (
-    FIXED_POINT_FLAGS,
-    ap_types_include,
     check_fixed_constants,
-    fixed_declaration,
     kernel_constants,
 )
-from fgc_backends.cfamily.solver import solver_context
-from fgc_backends.cfamily.sparsity import TILE
-from fgc_backends.cfamily.special import SERIES_BELOW, coefficient_functions
-from fgc_backends.cfamily.steps import padded, step_patterns
-from fgc_backends.cfamily.tables import IntTable, build_tables, factor_data_words
 from fgc_backends.hls.lint import lint_files
 from fgc_backends.native.config import NativeConfig, NativeConfigError
 
 # template → emitted file name ({name} is the project identifier)
 FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
          ("native.cpp.jinja", "native_{name}.cpp"), ("Makefile.jinja", "Makefile"))
-HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
 SOLVER_FILES = ("kernel.h.jinja", "kernel.cpp.jinja")  # the files whose constants T must hold
 
 
@@ -141,61 +127,18 @@ def lanes(config: NativeConfig) -> int | None:
 
 
 def _context(program: Program, config: NativeConfig, project: str) -> dict:
-    printer = HlsCodePrinter({})
-    solver = solver_context(program, config, printer)
-    tables = build_tables(program, damped=solver["lm"], cholesky=solver["cholesky"])
     # the steps of a level run in the order of the HLS design's unit sets (one per chain end on
     # a two-ended chain), so the two builds eliminate in one order and agree bit for bit
     unit_sets = 2 if program.schedule.ordering == "two-ended" else 1
-    include = [str(ap_types_include(NativeConfigError))] if config.is_fixed_point else []
-    blocks = block_contexts(program)
-    patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
-                                           solver["cholesky"], solver["lm"])
-    max_ld = padded(tables.constant("MAX_W") + 1)
-    table = {t.name: t.values for t in tables.arrays}
-    # the widest separator of any step: the back-substitution's tiled loop over separator
-    # columns exists only if some separator spans a whole TILE (else g++ -Werror proves the dead
-    # loop would index past xs[MAX_W])
-    max_sep = max(w - f for w, f in zip(table["STEP_W"], table["STEP_F"], strict=True))
+    context = common_context(program, config, project, NativeConfigError, unit_sets=unit_sets)
+    blocks = context["blocks"]
     host_lanes = lanes(config)
     row_words = [len(b.instances) * b.m * b.stride for b in blocks]  # fgc_rows' layout
-    return {
+    return context | {
         "rows_offsets": [sum(row_words[:i]) for i in range(len(blocks))],
         "n_rows": sum(row_words),
         "cpu_program": True,
-        "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
-        "problem_comment": comment(program.name), "data_magic": MAGIC,
-        "structure_fingerprint": program.structure_fingerprint,
-        "design_fingerprint": program.fingerprint,
-        "scalar": config.scalar_cxx, "fixed_point": config.is_fixed_point,
-        "scalar_decl": fixed_declaration(config.scalar_cxx),
-        "linear_scalar": config.linear_cxx, "mixed": config.mixed,
-        "include_dirs": include,
-        "cxx": config.cxx, "cxxflags": " ".join(config.cxxflags + FIXED_POINT_FLAGS
-                                                 * config.is_fixed_point),
         "host_flags": " ".join(config.host_flags),
         "fma_check": "-mno-fma" in config.host_flags,
-        "units": max(1, int(program.solver.units)), "cpe": max(1, int(program.solver.cpe)),
-        "unit_sets": unit_sets, "structure_comment": comment(
-            f"{program.schedule.structure_class} graph, {program.schedule.ordering} ordering"),
-        "constants": tables.constants, "sizes": {
-            **dict(tables.constants),
-            "MAX_LEVEL_WIDTH": max(len(level) for level in program.schedule.levels),
-            "MAX_STORAGE": max(v.storage_dim for v in program.variables),
-            "MAX_LD": max_ld, "MAX_SEP": max_sep},
-        "max_variables": program.max_variables,
-        "header_tables": [t for t in tables.arrays if t.name in HEADER_TABLES],
-        "tables": [t for t in tables.arrays if t.name not in HEADER_TABLES]
-        + [IntTable("STEP_PATTERN", step_pattern)] * bool(patterns),
-        "blocks": blocks, "patterns": patterns, "retracts": retract_kinds(program), "tile": TILE,
-        # a generic step whose shape a pattern has is factored by that pattern's fixed routine
-        # (the same operations in the same order, no new unit): the chain ends' steps
-        "fixed_shapes": sorted({(p.w, p.f) for p in patterns if p.ld == max_ld}),
         "lanes": host_lanes, "laned": host_lanes != 1, "lanes_auto": host_lanes is None,
-        "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
-        "solver": solver, "statuses": STATUSES, "reasons": REASONS,
-        "noise_codes": NOISE_CODES, "robust_codes": ROBUST_CODES,
-        "max_level_width": max(len(level) for level in program.schedule.levels),
-        "max_line_chars": 32 * max([v.storage_dim for v in program.variables] + [
-            factor_data_words(program, b) for b in range(len(program.blocks))]) + 64,
     }
