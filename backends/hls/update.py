@@ -36,8 +36,8 @@ Terms no emitted unit computes are listed apart and labelled *assumed*: τ's row
 b − A·Log(x̄⁻¹x)), re-expressing the newest kept conditional at its parent's new estimate, the
 Log maps of the kept back-substitution, the host → accelerator transfer of a keyframe's
 measurements before the call (the top's copy-in is the ``setup`` term), the on-chip state kept
-between calls and, when the record does not count them, rejected steps (none). ``latency_ms`` counts the plan's terms
-only; ``latency_with_assumed_ms`` adds the assumed ones.
+between calls and, when the record does not count them, rejected steps (none). ``latency_ms``
+counts the plan's terms only; ``latency_with_assumed_ms`` adds the assumed ones.
 """
 
 from __future__ import annotations
