@@ -72,13 +72,55 @@ def test_a_whole_chain_window_costs_the_serial_batch_plan(graph, linear, units):
             < plan_cost(model.plan).cycles)
 
 
+def test_per_call_and_per_rejection_terms_are_the_plans_phases(graph):
+    """Over a whole stream the setup copies every variable's initial value and every factor's
+    data in exactly once, as the batch plan's setup does once per call; a window spanning the
+    chain prices the plan's rounding-noise pass; a record that counts its rejected steps is
+    priced per rejection, one that does not has the pass assumed and counted zero times."""
+    program = compile_graph(graph, SolverConfig(precision="float32", ordering="serial"),
+                            name="serial")
+    model = UpdateModel(program)
+    plan = {ph.name: ph for ph in model.plan.phases}
+    assert plan["setup"].per == "call" and plan["rounding_noise"].per == "rejection"
+    whole = {lp.name: lp.trip for lp in plan["setup"].processes[0].loops}
+    trips = {"x_in": 0, "data_in": 0}
+    for j in range(N):
+        loops = {lp.name: lp.trip for lp in model.setup_phase(max(0, j - 2), j,
+                                                              "incremental").processes[0].loops}
+        trips["x_in"] += loops["x_in"]
+        trips["data_in"] += loops["data_in"]
+        assert loops["x_out"] == sum(v.storage_dim for v in program.variables
+                                     if v.key in {k for c in range(j + 1)
+                                                  for k in model.clusters[c]})
+    assert trips == {"x_in": whole["x_in"], "data_in": whole["data_in"]}
+    fixed = {lp.name: lp.trip for lp in model.setup_phase(5, 7, "fixed-lag").processes[0].loops}
+    assert fixed["x_out"] < whole["x_out"] == fixed["x_out"] + sum(
+        v.storage_dim for v in program.variables
+        if v.key in {k for c in range(5) for k in model.clusters[c]})
+    assert (phase_cycles(model.rounding_noise_phase(0, N - 1))
+            == phase_cycles(plan["rounding_noise"]))
+    counted = model.price(SimpleNamespace(keyframe=6, first=4, iterations=3,
+                                          mode="incremental", rejections=2))
+    uncounted = model.price(update(6, 4))
+    noise = counted.term("rounding_noise")
+    assert not noise.assumed and noise.times == 2 and noise.each > 0
+    assert noise.each == phase_cycles(model.rounding_noise_phase(4, 6))
+    assert uncounted.term("rounding_noise").assumed and uncounted.term("rounding_noise").times == 0
+    assert counted.cycles == uncounted.cycles + 2 * noise.each
+    assert counted.term("setup").cycles == phase_cycles(model.setup_phase(4, 6, "incremental"))
+    with pytest.raises(UpdateModelError, match="-1 rejected steps"):
+        model.price(SimpleNamespace(keyframe=6, first=4, iterations=3, mode="incremental",
+                                    rejections=-1))
+
+
 def test_a_batch_keyframe_costs_plan_cost_of_its_batch_program(graph, stream):
     program, model = stream
     price = model.price(update(5, 0, iterations=4, mode="batch"))
     batch = plan_cost(build_plan(prefix_program(graph, program, 6), model.options))
     assert price.term("batch_iteration").cycles == 4 * batch.cycles
     assert price.term("batch_iteration").each == batch.cycles
-    assert price.cycles == 4 * batch.cycles + price.term("store").cycles
+    assert price.cycles == (4 * batch.cycles + price.term("store").cycles
+                            + price.term("setup").cycles)
     # at the last keyframe the batch Program is the stream's own
     last = model.price(update(N - 1, 0, iterations=2, mode="batch"))
     assert last.term("batch_iteration").each == plan_cost(build_plan(program,
@@ -148,9 +190,11 @@ def test_assumed_terms_are_labelled_and_kept_out_of_the_plan_latency(stream):
     assert price.latency_ms == pytest.approx(price.cycles / (143.0 * 1e3))
     d = price.as_dict()
     assert "model estimate" in d["source"] and d["latency_ms"] == price.latency_ms
-    # the oldest window (nothing kept, no τ) has only the host transfer and state assumed
+    # the oldest window (nothing kept, no τ) has only the host transfer, the state and the
+    # uncounted rejections assumed
     first = model.price(update(2, 0))
-    assert {t.name for t in first.terms if t.assumed} == {"transfer", "on_chip_state"}
+    assert {t.name for t in first.terms if t.assumed} == {"transfer", "on_chip_state",
+                                                          "rounding_noise"}
 
 
 def test_a_fixed_lag_update_walks_no_kept_conditionals(graph):

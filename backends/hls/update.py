@@ -8,27 +8,36 @@ IIs and depths of :mod:`fgc_backends.hls.plan` and its operator table:
 
 - per LM iteration the update ran (linearisations; rejected trial steps and the start's cost
   pass are not priced, as :func:`~fgc_backends.hls.plan.plan_summary` prices a batch solve):
-  the factor datapaths over the window's block instances (Jacobian mode, then cost mode, at the
-  plan's instance-loop II and depth), the linear solver on the window's clusters only — QR:
-  :func:`~fgc_backends.hls.plan.qr_unit_loops` on each step's stacked pattern (the window's
-  factors, the previous step's new factor, the prior τ on the oldest cluster, √μ rows),
-  eliminated serially oldest first on one unit set (the simulator's order, root at the newest
-  cluster); Cholesky: the HGC's multiply-accumulates and
-  :func:`~fgc_backends.hls.plan.cpe_step_loops` per step — back-substitution through the
-  window (:func:`~fgc_backends.hls.plan.backsub_loops`), the state update of the window's
-  variables and one LM decision;
+  every per-iteration phase of the batch plan, built with the plan's own loop constructors on
+  the window (its block instances, its variables, its clusters' steps at their sizes,
+  eliminated serially oldest first on one unit set: the simulator's order, root at the newest
+  cluster; :meth:`UpdateModel.window_tables` gives the constructors the window's step and
+  factor tables): the factor datapaths (Jacobian mode, then cost mode), QR's gradient pass over
+  AB, the linear solver — QR: per step its stack (√μ first), ``qr_unit_loops`` on its stacked
+  pattern (the window's factors, the previous step's new factor, the prior τ on the oldest
+  cluster, √μ rows) and its commit; Cholesky: the HGC, each step's assembly, the cascade
+  (``cpe_step_loops``), each step's store — back-substitution through the window with its
+  copies, the state update of the window's variables per type and LM control over them; a
+  window spanning the whole chain costs exactly ``plan_cost`` of the serially ordered batch
+  Program;
 - once per update: the store (the converged window eliminated once more without damping, its
-  conditionals and new factors kept) and, incremental mode, back-substitution through the kept
-  conditionals with a state update of their variables;
+  conditionals and new factors kept), the plan's per-call copies (``setup``: the keyframe's new
+  initial values and data in, the changed estimate out) and, incremental mode,
+  back-substitution through the kept conditionals (with its copies) and a state update of
+  their variables;
+- per rejected trial step, when the update record counts them (``rejections``): the plan's
+  rounding-noise pass on the window; the simulator's records do not, so the pass is an assumed
+  term counted zero times (its price per rejection in ``each``);
 - a batch keyframe j: its iterations as full batch iterations, ``plan_cost`` of the Program of
   keyframes 0 … j (``batch_program(j)``; the stream's own Program at the last keyframe), plus
-  the store.
+  the store and the setup.
 
 Terms no emitted unit computes are listed apart and labelled *assumed*: τ's rows at x (A·J and
 b − A·Log(x̄⁻¹x)), re-expressing the newest kept conditional at its parent's new estimate, the
 Log maps of the kept back-substitution, the host → accelerator transfer of a keyframe's
-measurements and the on-chip state kept between calls. ``latency_ms`` counts the plan's terms
-only; ``latency_with_assumed_ms`` adds the assumed ones.
+measurements before the call (the top's copy-in is the ``setup`` term), the on-chip state kept
+between calls and, when the record does not count them, rejected steps (none). ``latency_ms``
+counts the plan's terms only; ``latency_with_assumed_ms`` adds the assumed ones.
 """
 
 from __future__ import annotations
@@ -36,6 +45,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -48,12 +58,22 @@ from fgc_backends.hls.plan import (
     Phase,
     PlanOptions,
     Process,
+    _kloop,
+    _sizes,
+    assemble_loops,
+    backsub_copies,
     backsub_loops,
     build_plan,
+    commit_loops,
     cpe_step_loops,
+    gradient_loops,
+    hgc_loops,
+    kernel_timing,
     phase_cycles,
     plan_cost,
     qr_unit_loops,
+    rounding_noise_loops,
+    stack_loops,
 )
 
 NOT_EMITTED = ("the accelerator's incremental / fixed-lag mode is not emitted in C++ (the HLS "
@@ -159,8 +179,10 @@ class UpdateModel:
         self.program, self.batch_program = program, batch_program
         self.options = options or PlanOptions.of(program)
         self.plan = build_plan(program, self.options)
-        self.ops = table(program.solver.precision)
-        self.les = table(program.solver.les_precision)
+        self.ops = self.plan.ops  # the accelerator's scalar, and the linear solver's (plan's)
+        self.les = table(self.options.les_precision or (
+            program.solver.les_precision if self.options.precision is None
+            else self.plan.precision))
         self.rate = transfer_words_per_cycle
         self.qr = program.solver.linear == "qr"
         self.damping = program.solver.method == "lm"
@@ -176,8 +198,11 @@ class UpdateModel:
             for proc in phases[f"factor_{mode}"].processes:
                 block = int(proc.name.split("_")[1])
                 self.factor_loop[block, mode] = proc.loops[0]
-        self.retract_loop = phases["state_update"].processes[0].loops[0]
-        self.lm_phase = phases["lm_control"]
+        # the plan's kernel loop timings (in the accelerator's scalar) and the emitted buffer
+        # sizes (MAX_W: the stack's and the assembly's row stride)
+        self.timing = kernel_timing(self.plan.ops)
+        self.les_timing = kernel_timing(self.les)
+        self.max_w = _sizes(self.program)["MAX_W"]
 
     def _read_chain(self) -> None:
         p = self.program
@@ -229,6 +254,10 @@ class UpdateModel:
                           "conditionals and new factors kept (serial, oldest first)"))
         if mode == "incremental" and first > 0:
             terms += self._kept_terms(first, j)
+        terms.append(Term("setup", phase_cycles(self.setup_phase(first, j, mode)), 1, False,
+                          "once per update (the plan's per-call copies): the keyframe's new "
+                          "initial values and data in, the changed estimate out"))
+        terms.append(self._rejection_term(update, 0 if mode == "batch" else first, j))
         terms += self._transfer_terms(first, j, mode)
         return UpdatePrice(j, mode, first, k, self.plan.clock_mhz, tuple(terms))
 
@@ -246,17 +275,50 @@ class UpdateModel:
         return self._batch_cycles[j]
 
     def window_iteration_phases(self, first: int, last: int) -> tuple[Phase, ...]:
-        """One LM iteration of the window first … last as the plan's phases (the plan's terms of
-        an incremental or fixed-lag iteration; τ's relinearisation is not among them)."""
+        """One LM iteration of the window first … last as the plan's phases, in the plan's
+        order, built with the plan's own loop constructors on the window (its block instances,
+        its variables, its clusters' steps eliminated serially oldest first): the Jacobian
+        pass, QR's gradient pass (Cholesky's comes with the HGC), the linear solver (stack, QR
+        step and commit per cluster; or HGC, assembly, cascade and store), back-substitution
+        with its copies, the state update per variable type, the cost pass and LM control.
+        τ's relinearisation is not among them (an assumed term)."""
         inst = self._instances(first, last)
+        view = self._view(first, last, inst)
         phases = [self._factor_phase("jacobian", inst)]
+        if self.qr:
+            phases.append(Phase("gradient", False, tuple(gradient_loops(view, self.timing))))
         phases += self._linear_phases(first, last, self.damping)
-        variables = sum(len(self.clusters[c]) for c in range(first, last + 1))
-        phases.append(Phase("state_update", False, (Process("retract", "state_update", (
-            Loop("variables", variables, self.retract_loop.ii, self.retract_loop.depth),)),)))
+        phases.append(Phase("state_update", False, (Process(
+            "retract", "state_update", tuple(self._retract_loops(view.variables))),)))
         phases.append(self._factor_phase("cost", inst))
-        phases.append(self.lm_phase)
+        phases.append(self._lm_phase(view.variables))
         return tuple(phases)
+
+    def setup_phase(self, first: int, last: int, mode: str) -> Phase:
+        """The plan's once-per-call copies (its ``setup`` phase: x in, the data in, x out) for
+        one update: the keyframe's new variables' initial values and its new factors' data in
+        (the rest of the state and data stays on chip), and out the estimate the update
+        changed (fixed-lag: the window's variables; incremental and batch: every keyframe's
+        up to this one, as back-substitution through the kept conditionals changes them)."""
+        from fgc_backends.cfamily.tables import factor_data_words
+
+        p = self.program
+        new = [i for i in range(len(p.factors)) if self.reach[i] == last]
+        data = sum(factor_data_words(p, p.factors[i].block) for i in new)
+        x_in = sum(self.storage[k] for k in self.clusters[last])
+        out_from = first if mode == "fixed-lag" else 0
+        x_out = sum(self.storage[k] for c in range(out_from, last + 1) for k in self.clusters[c])
+        t = self.timing
+        return Phase("setup", False, (Process("top", "lm_control", (
+            _kloop("x_in", x_in, "move", t), _kloop("data_in", data, "move", t),
+            _kloop("x_out", x_out, "move", t))),), per="call")
+
+    def rounding_noise_phase(self, first: int, last: int) -> Phase:
+        """The plan's per-rejection rounding-noise pass on the window's variables and block
+        instances."""
+        inst = self._instances(first, last)
+        return Phase("rounding_noise", False, tuple(rounding_noise_loops(
+            self._view(first, last, inst), self.timing)), per="rejection")
 
     # -- the terms ----------------------------------------------------------------------------
     def _iteration_terms(self, first, last, k) -> list[Term]:
@@ -271,14 +333,32 @@ class UpdateModel:
                             "pass for the Log; no emitted unit computes them"))
         return out
 
+    def _rejection_term(self, update, first, last) -> Term:
+        each = phase_cycles(self.rounding_noise_phase(first, last))
+        rejected = getattr(update, "rejections", None)
+        if rejected is not None:
+            if int(rejected) < 0:
+                raise UpdateModelError(f"keyframe {update.keyframe}: {rejected} rejected steps")
+            return Term("rounding_noise", each, int(rejected), False,
+                        "per rejected trial step the update reports: the plan's rounding-noise "
+                        "pass on the window")
+        return Term("rounding_noise", each, 0, True,
+                    f"assumed: no rejected trial step (the update record does not count them); "
+                    f"each would add the plan's rounding-noise pass on the window, {each} "
+                    "cycles")
+
     def _kept_terms(self, first, last) -> list[Term]:
         """Back-substitution through the kept conditionals first − 1 … 0 (plan), with the
         re-expression of the newest at its parent's new estimate and each parent's Log
         (assumed)."""
         loops = []
         for c in range(first - 1, -1, -1):
-            loops += backsub_loops(self.cdim[c], self.cdim[c + 1], self.les, name=f"kept{c}")
-            loops.append(self._retract(len(self.clusters[c]), f"kept{c}_retract"))
+            f, sep = self.cdim[c], self.cdim[c + 1]
+            before, after = backsub_copies({"STEP_W": [f + sep], "STEP_F": [f]}, 0,
+                                           self.les_timing)
+            loops += before + backsub_loops(f, sep, self.les, name=f"kept{c}") + after
+        keys = {k for c in range(first) for k in self.clusters[c]}
+        loops += self._retract_loops([v for v in self.program.variables if v.key in keys])
         kept = Process("kept_backsub", "backsub", tuple(loops))
         f, s = self.cdim[first - 1], self.cdim[first]
         la, lm = self.les.add.latency, self.les.mul.latency
@@ -286,8 +366,8 @@ class UpdateModel:
                      + self._retract(len(self.clusters[first]), "log").cycles)
         logs = sum(self._retract(len(self.clusters[c + 1]), "log").cycles for c in range(first))
         return [Term("kept_backsub", kept.cycles, 1, False,
-                     f"back-substitution through the {first} kept conditionals (cond_backsub) "
-                     "and the state update of their variables"),
+                     f"back-substitution through the {first} kept conditionals (cond_backsub "
+                     "with its copies) and the state update of their variables"),
                 Term("kept_reexpress", reexpress, 1, True,
                      "assumed: the newest kept conditional re-expressed at its parent's new "
                      "estimate (S·J, d − S·Log) on one multiply-add lane, the Log as a "
@@ -311,7 +391,8 @@ class UpdateModel:
         taus = sum(self.tau_rows[c] * (self.cdim[c + 1] + 1) for c in held if c < last)
         return [Term("transfer", math.ceil(words / self.rate), 1, True,
                      f"assumed: host → accelerator, the keyframe's {words} words (its new "
-                     f"factors' data and initial values) at {self.rate} word(s) a cycle"),
+                     f"factors' data and initial values) at {self.rate} word(s) a cycle, "
+                     "before the call (the top's copy-in is the setup term)"),
                 Term("on_chip_state", 0, 1, True,
                      f"assumed: the state ({state} words), the conditionals ({conds}) and the "
                      f"factors passed up ({taus}) stay on chip between calls, no cycles")]
@@ -330,39 +411,130 @@ class UpdateModel:
                 Loop(loop.name, count, loop.ii, loop.depth),)))
         return Phase(f"factor_{mode}", False, tuple(procs))
 
+    def _view(self, first, last, instances) -> SimpleNamespace:
+        """The window as the plan's loop constructors read a Program: its variables (cluster
+        order), the block types and its block instances."""
+        p = self.program
+        keys = {k for c in range(first, last + 1) for k in self.clusters[c]}
+        return SimpleNamespace(variables=[v for v in p.variables if v.key in keys],
+                               blocks=p.blocks, factors=[p.factors[i] for i in instances])
+
     def _retract(self, variables, name) -> Loop:
-        return Loop(name, variables, self.retract_loop.ii, self.retract_loop.depth)
+        return _kloop(name, variables, "retract", self.timing)
+
+    def _retract_loops(self, variables) -> list[Loop]:
+        """retract_all's loop per variable type (the plan's state update) over ``variables``."""
+        kinds: dict[str, int] = {}
+        for v in variables:
+            kinds[v.type_name] = kinds.get(v.type_name, 0) + 1
+        return [self._retract(n, f"kind{k}") for k, n in enumerate(kinds.values())]
+
+    def _lm_phase(self, variables) -> Phase:
+        """LM control (the plan's loops) over the window's δ and x."""
+        n_x = sum(v.storage_dim for v in variables)
+        n_t = sum(v.dim for v in variables)
+        t = self.timing
+        return Phase("lm_control", False, (Process("decide", "lm_control", (
+            _kloop("gradient_max", n_t, "max", t), _kloop("x_norm", n_x, "acc", t),
+            _kloop("step_test", n_t, "acc2", t), _kloop("decision", 1, "decision", t),
+            _kloop("accept", n_x, "move", t))),))
 
     def _linear_cycles(self, first, last, damping) -> int:
         return sum(phase_cycles(ph) for ph in self._linear_phases(first, last, damping))
 
+    def window_tables(self, first, last) -> dict:
+        """The emitted step and factor tables the plan's loop constructors read, for the window
+        eliminated serially oldest first: step ``c - first`` is cluster c (frontal: its
+        variables; separator: cluster c + 1's, none at the newest), its factors the window's
+        block instances entering at c, its child step c − 1; at the oldest cluster of a window
+        that starts after 0 the child is τ, the factor passed up from cluster first − 1 (an
+        extra step at the end of the tables, ``tau_rows`` rows over cluster first). Row counts
+        follow the tables' rule (``build_tables``: the damped rows count when the solver
+        damps)."""
+        p = self.program
+        width = len(range(first, last + 1))
+        inst = self._instances(first, last)
+        f = [self.cdim[c] for c in range(first, last + 1)]
+        w = [self.cdim[c] + (self.cdim[c + 1] if c < last else 0) for c in range(first, last + 1)]
+        factors_of = [[n for n, i in enumerate(inst) if self.entry[i] == c]
+                      for c in range(first, last + 1)]
+        a_words = [p.blocks[p.factors[i].block].residual_dim
+                   * (1 + sum(p.blocks[p.factors[i].block].variable_dims)) for i in inst]
+        d = [sum(p.blocks[p.factors[i].block].variable_dims) for i in inst]
+        children = [[s - 1] if s > 0 else ([width] if first > 0 else []) for s in range(width)]
+        # τ as the oldest step's child (QR: tau_rows rows over cluster first; Cholesky: its
+        # Hessian over cluster first, an update matrix)
+        nf_rows = [0] * width + ([self.tau_rows[first - 1] if self.qr else self.cdim[first]]
+                                 if first > 0 else [])
+        for s in range(width):
+            rows = (sum(p.blocks[p.factors[inst[n]].block].residual_dim for n in factors_of[s])
+                    + sum(nf_rows[c] for c in children[s]) + f[s] * self.damping)
+            nf_rows[s] = max(0, min(rows, w[s]) - f[s]) if self.qr else w[s] - f[s]
+        if first > 0:
+            f.append(self.cdim[first - 1])
+            w.append(self.cdim[first - 1] + self.cdim[first])
+        rows_of = [sum(p.blocks[p.factors[inst[n]].block].residual_dim for n in factors_of[s])
+                   + sum(nf_rows[c] for c in children[s]) + f[s] * self.damping
+                   for s in range(width)]
+        return {"STEP_F": f, "STEP_W": w, "STEP_ROWS": rows_of, "STEP_NF_ROWS": nf_rows,
+                "STEP_FACTOR_BEGIN": _offsets([len(x) for x in factors_of]),
+                "STEP_FACTORS": [n for x in factors_of for n in x],
+                "STEP_CHILD_BEGIN": _offsets([len(x) for x in children]),
+                "STEP_CHILDREN": [c for x in children for c in x],
+                "FACTOR_A_OFF": _offsets(a_words), "FACTOR_COLMAP_BEGIN": _offsets(d)}
+
     def _linear_phases(self, first, last, damping) -> list[Phase]:
-        """The window's elimination (one step per cluster, oldest first) and back-substitution
-        (newest first), as the plan prices the emitted units' loops."""
+        """The window's linear solver as the plan's phases, one step per cluster, oldest first
+        (the simulator's order; the serial schedule's levels): QR: per step its stack (√μ
+        first, when damping), its ``qr_step`` and its commit; Cholesky: the HGC (``hgc_loops``
+        over the window's instances), each step's assembly, the cascade, each step's store;
+        then back-substitution newest first with its copies."""
+        tables = self.window_tables(first, last)
+        lt = self.les_timing
+        inst = self._instances(first, last)
+        steps = range(last - first + 1)
         phases = []
         if self.qr:
-            for c in range(first, last + 1):
+            for s in steps:
+                c = first + s
+                stack = [Process("root_mu", "qr_stack", (_kloop("root_mu", 1, "root", lt),))] \
+                    if s == 0 and damping else []
+                stack.append(Process(f"stack{s}", "qr_stack", tuple(stack_loops(
+                    tables, s, self.options.units, self.max_w, damping, lt))))
+                phases.append(Phase(f"qr_stack_level{s}", False, tuple(stack), linear=True))
                 loops = qr_unit_loops(self.step_pattern(first, last, c, damping), self.cdim[c],
                                       self.options.units, self.les, name=f"s{c}")
-                phases.append(Phase(f"qr_step{c}", True, (
-                    Process(f"qr_step{c}", "qr_update", tuple(loops)),), linear=True))
+                phases.append(Phase(f"qr_level{s}", True, (
+                    Process(f"qr{s}_set0", "set0", tuple(loops)),), linear=True))
+                phases.append(Phase(f"qr_commit_level{s}", False, (Process(
+                    f"commit{s}", "qr_commit", tuple(commit_loops(tables, s, lt, False))),),
+                    linear=True))
         else:
-            macs = self._hgc_macs(first, last)
-            phases.append(Phase("hgc", False, (Process("hgc", "hgc", (
-                Loop("macs", math.ceil(macs / self.options.hgc_lanes), 1,
-                     self.les.mul.latency + self.les.add.latency),)),), linear=True))
+            view = self._view(first, last, inst)
+            phases.append(Phase("hgc", False, tuple(hgc_loops(view, lt)), linear=True))
+            phases.append(Phase("assemble", False, tuple(
+                Process(f"assemble{s}", "cpe", tuple(assemble_loops(tables, s, self.max_w, lt)))
+                for s in steps), linear=True))
             loops = []
-            for c in range(first, last + 1):
-                s = self.cdim[c + 1] if c < last else 0
-                loops += cpe_step_loops(self.cdim[c], s, self.options.cpe, self.les,
+            for s in steps:
+                c = first + s
+                sep = self.cdim[c + 1] if c < last else 0
+                loops += cpe_step_loops(self.cdim[c], sep, self.options.cpe, self.les,
                                         name=f"s{c}")
             phases.append(Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
                                 linear=True))
-        for c in range(last, first - 1, -1):
-            s = self.cdim[c + 1] if c < last else 0
-            phases.append(Phase(f"backsub_step{c}", False, (Process(
-                f"backsub_step{c}", "backsub",
-                tuple(backsub_loops(self.cdim[c], s, self.les, name=f"bs{c}"))),), linear=True))
+            phases.append(Phase("store", False, tuple(
+                Process(f"store{s}", "cpe", tuple(commit_loops(tables, s, lt, True)))
+                for s in steps), linear=True))
+        unit = "backsub" if self.qr else "trisolve"
+        for level, s in enumerate(reversed(steps)):
+            c = first + s
+            sep = self.cdim[c + 1] if c < last else 0
+            before, after = backsub_copies(tables, s, lt)
+            phases.append(Phase(f"backsub_level{level}", False, (Process(
+                f"backsub_step{s}", unit,
+                tuple(before + backsub_loops(self.cdim[c], sep, self.les, name=f"bs{c}")
+                      + after)),), linear=True))
         return phases
 
     def step_pattern(self, first, last, c, damping) -> np.ndarray:
@@ -398,21 +570,16 @@ class UpdateModel:
             rows.append(np.eye(f, width, dtype=bool))
         return np.vstack(rows) if rows else np.zeros((0, width), dtype=bool)
 
-    def _hgc_macs(self, first, last) -> int:
-        p = self.program
-        macs = 0
-        for i in self._instances(first, last):
-            b = p.blocks[p.factors[i].block]
-            cols = sum(b.variable_dims)
-            macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
-        if first > 0:
-            n = self.cdim[first]
-            macs += self.tau_rows[first - 1] * (n * (n + 1) // 2 + n)
-        return macs
-
     def _prior_rows_cycles(self, first) -> int:
         rows, n = self.tau_rows[first - 1], self.cdim[first]
         la, lm = self.ops.add.latency, self.ops.mul.latency
         mac = Loop("prior_rows", rows * n * (n + 1), 1, lm + la)
         log = self._retract(len(self.clusters[first]), "log")
         return 2 * (mac.cycles + log.cycles)  # the Jacobian pass and the cost pass
+
+
+def _offsets(sizes) -> list[int]:
+    out = [0]
+    for n in sizes:
+        out.append(out[-1] + n)
+    return out
