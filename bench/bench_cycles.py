@@ -21,23 +21,23 @@ from __future__ import annotations
 
 import re
 import subprocess
-import sys
 import tempfile
 import warnings
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 
-import imu_window  # noqa: E402
-import lio  # noqa: E402
 
+from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.datafile import problem_data, write_data  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends.hls import HlsConfig, emit  # noqa: E402
 from fgc_backends.hls.emitter import accel_plan  # noqa: E402
 from fgc_backends.hls.plan import phase_cycles  # noqa: E402
+
+imu_window = example("imu_window")
+lio = example("lio")
 
 COUNT_MAIN = r"""
 #include <cstdio>

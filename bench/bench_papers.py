@@ -15,16 +15,10 @@ from __future__ import annotations
 import argparse
 import re
 import statistics
-import sys
 import time
 from dataclasses import dataclass
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "examples"))
-
-import imu_window  # noqa: E402
-import lio  # noqa: E402
-
+from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends.hls.plan import (  # noqa: E402
@@ -35,6 +29,9 @@ from fgc_backends.hls.plan import (  # noqa: E402
     plan_cost,
     plan_power_w,
 )
+
+imu_window = example("imu_window")
+lio = example("lio")
 
 
 @dataclass(frozen=True)

@@ -34,7 +34,6 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
 
 
 def _isam2_times(graph, problem, clusters, params=None):
@@ -78,7 +77,10 @@ def hls_model(args) -> dict:
     """Paper A's Fig. 5.3 setting: per-keyframe accelerator latency (update model on the HLS
     plan) against GTSAM's ISAM2 update time on the same stream."""
     import gtsam
-    import lio
+
+    from fgc.app.specs import example
+
+    lio = example("lio")
 
     from fgc.app import streaming
     from fgc.interop.to_gtsam import to_gtsam
@@ -186,7 +188,9 @@ def main(argv=None) -> int:
         return 0
     args.N = args.N or 400
 
-    import lio
+    from fgc.app.specs import example
+
+    lio = example("lio")
 
     from fgc.app import streaming
     from fgc.interop import oracles

@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 import fgc
+from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph
 from fgc.frontend import noise
 from fgc.frontend.factors import BetweenFactor, PriorFactor
@@ -30,12 +31,12 @@ from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 from fgc_backends.hls import HlsConfig, HlsConfigError, emit, run_csim
 
-ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "examples"))
+imu_window = example("imu_window")
+lio = example("lio")
+pose_graph = example("pose_graph")
 
-import imu_window  # noqa: E402
-import lio  # noqa: E402
-import pose_graph  # noqa: E402
+ROOT = Path(__file__).resolve().parent.parent
+
 
 F64_TOL = 1e-9
 POS_TOL, ROT_TOL, VEC_TOL = 1e-2, 1e-3, 1e-2

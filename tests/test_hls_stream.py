@@ -13,7 +13,6 @@ are given by their keyframe, mode, first cluster and iterations.
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -22,6 +21,7 @@ import pytest
 import fgc
 import fgc.frontend.factors
 from fgc.app.cli import main
+from fgc.app.specs import example  # noqa: E402
 from fgc.app.streaming import (
     HW_REFUSAL,
     NATIVE_REFUSAL,
@@ -34,11 +34,11 @@ from fgc.ir.program import SolverConfig
 from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles, plan_cost
 from fgc_backends.hls.update import NOT_EMITTED, UpdateModel, UpdateModelError
 
+lio = example("lio")
+
 ROOT = Path(__file__).resolve().parent.parent
 LIO = str(ROOT / "examples" / "lio.py")
-sys.path.insert(0, str(ROOT / "examples"))
 
-import lio  # noqa: E402
 
 N = 8
 

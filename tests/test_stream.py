@@ -17,7 +17,6 @@ solved by GTSAM's standard LM lands 9e-5 from fgc, the smoother's own LM loop 6e
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -26,16 +25,17 @@ import pytest
 import fgc
 import fgc.frontend.factors
 from fgc.app.cli import main
+from fgc.app.specs import example  # noqa: E402
 from fgc.app.streaming import HW_REFUSAL, compile_stream, run_stream
 from fgc.interop import oracles
 from fgc.interop.to_gtsam import to_gtsam
 from fgc.ir.datafile import problem_data
 
+lio = example("lio")
+
 ROOT = Path(__file__).resolve().parent.parent
 LIO = str(ROOT / "examples" / "lio.py")
-sys.path.insert(0, str(ROOT / "examples"))
 
-import lio  # noqa: E402
 
 W = 3
 
