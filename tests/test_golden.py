@@ -26,6 +26,7 @@ import pytest
 from fgc.app.cli import main as cli_main
 from fgc_backends import names
 from fgc_backends.sim import SimConfig
+from fgc_backends.sim.runtime import SHARED
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = Path(__file__).resolve().parent / "golden"
@@ -83,8 +84,10 @@ def test_emitted_sim_runtime_is_the_package_source(case, tmp_path, monkeypatch):
     spec, *params = CASES[case]
     assert cli_main(["compile", spec, *params, "--backend", "sim", "--out", str(out)]) == 0
     source = sorted((ROOT / "backends" / "sim" / "runtime").glob("fgc_sim_*.py"))
-    assert sorted(SIM_RUNTIME) == [p.name for p in source], "runtime/ and its module list differ"
-    for path in source:
+    shared = [ROOT / "fgc" / "frontend" / "geometry" / f"{name}.py" for name in SHARED]
+    assert sorted(SIM_RUNTIME) == sorted(p.name for p in source + shared), \
+        "runtime/ and its module list differ"
+    for path in source + shared:
         copy = out / path.name
         assert copy.is_file(), f"{case}: {path.name} was not emitted"
         assert copy.read_bytes() == path.read_bytes(), f"{case}: {path.name} is not a verbatim copy"

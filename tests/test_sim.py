@@ -24,7 +24,7 @@ from fgc.compiler.kernel import Kernel
 from fgc.errors import DataError
 from fgc.frontend import geometry
 from fgc.frontend.factors import BetweenFactor, GPSFactor, PriorFactor
-from fgc.frontend.geometry import Point3, Pose2, Pose3, Rot2, Rot3, special
+from fgc.frontend.geometry import Point3, Pose2, Pose3, Rot2, Rot3, lie_closed_forms, special
 from fgc.ir.conditioning import RankDeficientWarning
 from fgc.ir.datafile import problem_data, write_data
 from fgc.ir.program import SolverConfig
@@ -114,8 +114,8 @@ def test_printer_rejects_unknown_functions():
 
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])
 def test_runtime_coefficients_are_fgcs_bit_for_bit(emitted, dtype):
-    """The run-time's closed forms are written by hand (fgc_sim_special.py): they must give
-    exactly fgc's numbers, series and closed form, on both sides of the switch."""
+    """The problem module's Lie coefficients (the run-time's switch and series over fgc's own
+    copied closed forms) give exactly fgc's numbers on both sides of the switch."""
     ns = emitted[1]
     t = np.concatenate([[0.0, 1e-16, 1e-8, 0.3, 3.99, 4.0, 4.01, 9.0, np.pi**2],
                         np.geomspace(1e-20, 40.0, 2000), np.linspace(0.0, 9.9, 2000)]).astype(dtype)
@@ -156,7 +156,7 @@ def _printed_type_kernel(kernel: Kernel):
     series = {name: tuple(float(c) for c in reversed(coeffs))
               for name, coeffs in special.SERIES.items()}
     ns = {"numpy": np, "so3_log": fgc_sim_special.so3_log}
-    lie = fgc_sim_special.lie_functions(special.SERIES_BELOW, series)
+    lie = fgc_sim_special.lie_functions(special.SERIES_BELOW, series, lie_closed_forms)
     ns.update({f"lie_{name}": f for name, f in lie.items()})
     exec(source, ns)  # noqa: S102 - our own printed code
     return fgc_sim_special.over_instances(ns["k"])

@@ -10,74 +10,43 @@ emitted constants module (``fgc_sim_constants``) holds them as printed from fgc,
 :func:`lie_functions` takes them. Every function keeps its inputs' float dtype, so a float32 run
 computes in float32 throughout.
 
-The closed forms and the branches of the logarithm are the one part of the simulator's geometry
-still written by hand (the per-type retraction and local coordinates are printed from
-``fgc.frontend.geometry`` into the problem module); the backend's tests hold them to fgc's.
+The closed forms are fgc's own (``fgc/frontend/geometry/lie_closed_forms.py``, copied beside
+this file and handed in); the branches of the vectorised logarithm are the one part of the
+simulator's geometry written here (the per-type retraction and local coordinates are printed
+from ``fgc.frontend.geometry`` into the problem module); the backend's tests hold it to fgc's.
 """
 
 import numpy
 
 
-def lie_functions(series_below, series):
+def lie_functions(series_below, series, forms):
     """{name: f(t)} of every coefficient in ``series`` (name → its Taylor coefficients c_0, c_1,
     … in t, highest power first), each by its series below t = ``series_below`` and its closed
-    form above."""
-    return {name: _coefficient_function(name, series_below, coeffs)
+    form above; ``forms`` is fgc's ``lie_closed_forms`` module (copied beside this one)."""
+    return {name: _coefficient_function(name, series_below, coeffs, forms)
             for name, coeffs in series.items()}
 
 
-def _coefficient_function(name, series_below, coeffs):
+def _coefficient_function(name, series_below, coeffs, forms):
     def lie(t):
-        return coefficient(name, t, series_below, coeffs)
+        return coefficient(name, t, series_below, coeffs, forms)
 
     lie.__name__ = f"lie_{name}"
     return lie
 
 
-def _horner(coeffs, t):
-    acc = numpy.zeros_like(t)
-    for c in coeffs:
-        acc = acc * t + t.dtype.type(c)
-    return acc
-
-
-def _closed_form(name, t):
-    th = numpy.sqrt(t)
-    s, c = numpy.sin(th), numpy.cos(th)
-    a = s / th
-    b = 2.0 * numpy.sin(0.5 * th) ** 2 / t
-    cc = (th - s) / (th * t)
-    if name == "A":
-        return a
-    if name == "B":
-        return b
-    if name == "C":
-        return cc
-    if name == "A1":
-        return (c - a) / (2.0 * t)
-    if name == "B1":
-        return (0.5 * a - b) / t
-    if name == "C1":
-        return (b - 3.0 * cc) / (2.0 * t)
-    cot_half = numpy.cos(0.5 * th) / numpy.sin(0.5 * th)
-    if name == "D":
-        return 1.0 / t - cot_half / (2.0 * th)
-    csc2 = 1.0 / numpy.sin(0.5 * th) ** 2
-    d_dth = -2.0 / (th * t) + csc2 / (4.0 * th) + cot_half / (2.0 * t)
-    return d_dth / (2.0 * th)
-
-
-def coefficient(name, t, series_below, coeffs):
+def coefficient(name, t, series_below, coeffs, forms):
     """Coefficient ``name`` at t = θ² (array or scalar, dtype kept): its series ``coeffs``
-    (highest power first) below ``series_below``, its closed form above."""
+    (highest power first) below ``series_below``, its closed form above (``forms``: fgc's
+    ``lie_closed_forms``)."""
     t = numpy.asarray(t)
     small = t < series_below
-    series = _horner(coeffs, t)
+    series = forms.horner(coeffs, t)
     if numpy.all(small):
         return series
     safe = numpy.where(small, t.dtype.type(series_below), t)
     with numpy.errstate(all="ignore"):
-        closed = _closed_form(name, safe)
+        closed = forms.closed_form(name, safe)
     return numpy.where(small, series, closed).astype(t.dtype, copy=False)
 
 

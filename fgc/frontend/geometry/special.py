@@ -31,6 +31,7 @@ import numpy as np
 import sympy as sp
 
 from fgc.errors import DerivationError
+from fgc.frontend.geometry.lie_closed_forms import closed_form, horner
 
 # Use the Taylor series for t = θ² below this (|θ| < 2 rad): the closed forms of C1, D and D1
 # cancel badly for θ ≈ 1 (≈ 2e-13 relative in float64, 1e-4 in float32 for D1 at t = 1).
@@ -75,38 +76,10 @@ def _horner(name: str, t: np.ndarray) -> np.ndarray:
     coeffs = _FLOAT_SERIES.get(name)
     if coeffs is None:
         coeffs = _FLOAT_SERIES[name] = tuple(float(c) for c in reversed(SERIES[name]))
-    acc = np.zeros_like(t)
-    for c in coeffs:
-        acc = acc * t + t.dtype.type(c)
-    return acc
+    return horner(coeffs, t)
 
 
-def _closed_forms(name: str, t: np.ndarray) -> np.ndarray:
-    th = np.sqrt(t)
-    s, c = np.sin(th), np.cos(th)
-    a = s / th
-    b = 2.0 * np.sin(0.5 * th) ** 2 / t
-    cc = (th - s) / (th * t)
-    if name == "A":
-        return a
-    if name == "B":
-        return b
-    if name == "C":
-        return cc
-    if name == "A1":
-        return (c - a) / (2.0 * t)
-    if name == "B1":
-        return (0.5 * a - b) / t
-    if name == "C1":
-        return (b - 3.0 * cc) / (2.0 * t)
-    cot_half = np.cos(0.5 * th) / np.sin(0.5 * th)
-    if name == "D":
-        return 1.0 / t - cot_half / (2.0 * th)
-    if name == "D1":
-        csc2 = 1.0 / np.sin(0.5 * th) ** 2
-        d_dth = -2.0 / (th * t) + csc2 / (4.0 * th) + cot_half / (2.0 * t)
-        return d_dth / (2.0 * th)
-    raise KeyError(name)
+_closed_forms = closed_form  # one copy, shared with the emitted simulator (lie_closed_forms.py)
 
 
 def coefficient(name: str, t):

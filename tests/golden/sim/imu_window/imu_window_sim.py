@@ -39,7 +39,8 @@ LIB = types.SimpleNamespace(**{name: _load(f"fgc_sim_{name}")
                                for name in ("constants", "special", "linear", "runtime",
                                             "optimizer", "incremental", "diagnostics")})
 so3_log = LIB.special.so3_log
-LIE = LIB.special.lie_functions(LIB.constants.SERIES_BELOW, LIB.constants.SERIES)
+LIE = LIB.special.lie_functions(LIB.constants.SERIES_BELOW, LIB.constants.SERIES,
+                                _load("lie_closed_forms"))
 lie_A = LIE["A"]
 lie_A1 = LIE["A1"]
 lie_B = LIE["B"]
