@@ -7,9 +7,8 @@ through ctypes (timed against GTSAM's LM by bench/bench_native.py).
 
 Emitted files: ``<name>.h``/``<name>.cpp`` (the solver, ``<name>_top``), ``native_<name>.cpp``
 (C entry points) and a ``Makefile`` (``make native`` → ``lib<name>.so``). It is not a hardware
-design: its C++ is today's HLS kernel built for the host (SIMD lanes, host-only paths, no fused
-multiply-add), so it gives the HLS C simulation's numbers bit for bit and the simulator's to
-1e-9 (double).
+design: a CPU program (SIMD lanes, host-only paths, no fused multiply-add) that meets the
+simulator's numbers to 1e-9 (double), as the HLS C simulation does.
 """
 
 from fgc_backends.native.build import NativeBuildError, make
