@@ -422,7 +422,9 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
                         + 4 * (lm + la))}
 
 
-def _kloop(name: str, trip: int, kind: str, timing: dict, repeat: int = 1) -> Loop:
+def kernel_loop(name: str, trip: int, kind: str, timing: dict, repeat: int = 1) -> Loop:
+    """A loop of the kernel's own code (not a unit's) with ``trip`` iterations of kind ``kind``
+    (move, acc, retract, …): its II and depth from ``timing`` (:func:`kernel_timing`)."""
     ii, depth = timing[kind]
     return Loop(name, trip, ii, depth, repeat)
 
@@ -452,16 +454,16 @@ def gradient_loops(program, timing: dict) -> list[Process]:
     from fgc_backends.cfamily.sparsity import TILE
 
     n_t = sum(v.dim for v in program.variables)
-    procs = [Process("zero_gradient", "gradient", (_kloop("zero", n_t, "fill", timing),))]
+    procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", n_t, "fill", timing),))]
     for i, b in enumerate(program.blocks):
         m, d, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         procs.append(Process(f"reduce_{i}", "gradient", (
-            _kloop("load", m * padded, "move", timing, n),
-            _kloop("columns", d, "fill", timing, n),
-            _kloop("rows", m, "acc", timing, n),
-            _kloop("check", padded // TILE, "sum", timing, n),
-            _kloop("scatter", d, "rmw", timing, n))))
+            kernel_loop("load", m * padded, "move", timing, n),
+            kernel_loop("columns", d, "fill", timing, n),
+            kernel_loop("rows", m, "acc", timing, n),
+            kernel_loop("check", padded // TILE, "sum", timing, n),
+            kernel_loop("scatter", d, "rmw", timing, n))))
     return procs
 
 
@@ -473,22 +475,22 @@ def hgc_loops(program, timing: dict) -> list[Process]:
     from fgc_backends.cfamily.sparsity import TILE
 
     n_t = sum(v.dim for v in program.variables)
-    procs = [Process("zero_gradient", "hgc", (_kloop("zero", n_t, "fill", timing),))]
+    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
     for i, b in enumerate(program.blocks):
         m, d, padded, tiles = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         cols = d + 1
-        loops = [_kloop("load", m * padded, "move", timing, n),
-                 _kloop("columns", d, "fill", timing, n),
-                 _kloop("zero_square", padded * padded, "fill", timing, n)]
+        loops = [kernel_loop("load", m * padded, "move", timing, n),
+                 kernel_loop("columns", d, "fill", timing, n),
+                 kernel_loop("zero_square", padded * padded, "fill", timing, n)]
         for k in range(tiles.count):
             rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
-            loops += [_kloop("panel", rows, "acc", timing, n),
-                      _kloop("panel_out", TILE * wide * TILE, "fill", timing, n)]
-        loops += [_kloop("pack", cols * cols, "fill", timing, n),
-                  _kloop("gram_out", cols * (cols + 1) // 2, "move", timing, n),
-                  _kloop("scatter", d, "rmw", timing, n),
-                  _kloop("check", cols, "sum", timing, n)]
+            loops += [kernel_loop("panel", rows, "acc", timing, n),
+                      kernel_loop("panel_out", TILE * wide * TILE, "fill", timing, n)]
+        loops += [kernel_loop("pack", cols * cols, "fill", timing, n),
+                  kernel_loop("gram_out", cols * (cols + 1) // 2, "move", timing, n),
+                  kernel_loop("scatter", d, "rmw", timing, n),
+                  kernel_loop("check", cols, "sum", timing, n)]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
 
@@ -500,19 +502,20 @@ def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
     cycle, the damping rows' diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
-    loops = [_kloop("zero", m * local, "fill", timing)]
+    loops = [kernel_loop("zero", m * local, "fill", timing)]
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
         words = tables["FACTOR_A_OFF"][fac + 1] - tables["FACTOR_A_OFF"][fac]
-        loops.append(_kloop("factor_rows", words, "move", timing))
+        loops.append(kernel_loop("factor_rows", words, "move", timing))
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
-        loops.append(_kloop("child_rows", tables["STEP_NF_ROWS"][c] * (sc + 1), "move", timing))
+        loops.append(kernel_loop("child_rows", tables["STEP_NF_ROWS"][c] * (sc + 1), "move",
+                                 timing))
     if damped:
-        loops.append(_kloop("damping", f, "fill", timing))
+        loops.append(kernel_loop("damping", f, "fill", timing))
     return loops
 
 
@@ -522,8 +525,8 @@ def commit_loops(tables: dict, s: int, timing: dict, cholesky: bool) -> list[Loo
     cycle."""
     w, f = tables["STEP_W"][s], tables["STEP_F"][s]
     nf = w - f if cholesky else tables["STEP_NF_ROWS"][s]
-    return [_kloop("cond", f * (w + 1), "move", timing),
-            _kloop("nf", nf * (w - f + 1), "move", timing)]
+    return [kernel_loop("cond", f * (w + 1), "move", timing),
+            kernel_loop("nf", nf * (w - f + 1), "move", timing)]
 
 
 def assemble_loops(tables: dict, s: int, max_w: int, timing: dict) -> list[Loop]:
@@ -532,20 +535,20 @@ def assemble_loops(tables: dict, s: int, max_w: int, timing: dict) -> list[Loop]
     child its update matrix's rows and gradient entries (each += into the table-addressed
     frontal matrix)."""
     w = tables["STEP_W"][s]
-    loops = [_kloop("zero", w * (max_w + 1), "fill", timing)]
+    loops = [kernel_loop("zero", w * (max_w + 1), "fill", timing)]
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
         d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
-        loops += [_kloop("gram_row", p + 1, "rmw", timing) for p in range(d)]
-        loops.append(_kloop("gram_gradient", d, "rmw", timing))
+        loops += [kernel_loop("gram_row", p + 1, "rmw", timing) for p in range(d)]
+        loops.append(kernel_loop("gram_gradient", d, "rmw", timing))
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
         for a in range(sc):
-            loops += [_kloop("child_row", sc - a, "rmw", timing),
-                      _kloop("child_gradient", 1, "rmw", timing)]
+            loops += [kernel_loop("child_row", sc - a, "rmw", timing),
+                      kernel_loop("child_gradient", 1, "rmw", timing)]
     return loops
 
 
@@ -553,9 +556,9 @@ def backsub_copies(tables: dict, s: int, timing: dict) -> tuple[list[Loop], list
     """back_substitute()'s copies around cond_backsub for step s: the conditional from COND and
     the separator's solution in; the frontal solution out."""
     w, f = tables["STEP_W"][s], tables["STEP_F"][s]
-    return ([_kloop("cond_in", f * (w + 1), "move", timing),
-             _kloop("separator_in", w - f, "move", timing)],
-            [_kloop("solution_out", f, "move", timing)])
+    return ([kernel_loop("cond_in", f * (w + 1), "move", timing),
+             kernel_loop("separator_in", w - f, "move", timing)],
+            [kernel_loop("solution_out", f, "move", timing)])
 
 
 def rounding_noise_loops(program, timing: dict) -> list[Process]:
@@ -566,16 +569,16 @@ def rounding_noise_loops(program, timing: dict) -> list[Process]:
 
     la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
     procs = [Process("variable_scale", "lm_control", tuple(
-        _kloop("scale", v.storage_dim, "max", timing) for v in program.variables))]
+        kernel_loop("scale", v.storage_dim, "max", timing) for v in program.variables))]
     for i, b in enumerate(program.blocks):
         m, _, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         row_depth = 2 * lm + la * (padded // TILE + 2)
         procs.append(Process(f"noise_{i}", "lm_control", (
-            _kloop("load", m * padded, "move", timing, n),
-            _kloop("scales", padded, "fill", timing, n),
+            kernel_loop("load", m * padded, "move", timing, n),
+            kernel_loop("scales", padded, "fill", timing, n),
             Loop("rows", m, 1, row_depth, n),
-            _kloop("terms", -(-m // TILE), "acc2", timing, n))))
+            kernel_loop("terms", -(-m // TILE), "acc2", timing, n))))
     return procs
 
 
@@ -671,8 +674,7 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
         kinds[v.type_name] = kinds.get(v.type_name, 0) + 1
     units.append(Unit("state_update", "retract x ⊕ δ", 1,
                       (("add", 3), ("mul", 4), ("sqrt", 1), ("div", 1), ("trig", 2))))
-    phases.append(Phase("state_update", False, (Process("retract", "state_update", tuple(
-        _kloop(f"kind{k}", n, "retract", timing) for k, n in enumerate(kinds.values()))),)))
+    phases.append(state_update_phase(tuple(kinds.values()), timing))
     phases.append(Phase("factor_cost", False, tuple(cost)))
     n_x = sum(v.storage_dim for v in program.variables)
     n_t = sum(v.dim for v in program.variables)
@@ -680,15 +682,9 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     # δ (|δ|² and the predicted decrease), the scalar decision, the accepted x copied back
     units.append(Unit("lm_control", "gain ratio, μ update, stopping rules", 1,
                       (("add", 1), ("mul", 1), ("div", 1), ("compare", 1))))
-    phases.append(Phase("lm_control", False, (Process("decide", "lm_control", (
-        _kloop("gradient_max", n_t, "max", timing), _kloop("x_norm", n_x, "acc", timing),
-        _kloop("step_test", n_t, "acc2", timing), _kloop("decision", 1, "decision", timing),
-        _kloop("accept", n_x, "move", timing))),)))
+    phases.append(lm_control_phase(n_t, n_x, timing))
     # once per call: the top's copies of x and the data in and x out
-    n_data = _sizes(program)["N_DATA"]
-    phases.append(Phase("setup", False, (Process("top", "lm_control", (
-        _kloop("x_in", n_x, "move", timing), _kloop("data_in", n_data, "move", timing),
-        _kloop("x_out", n_x, "move", timing))),), per="call"))
+    phases.append(setup_phase(n_x, _sizes(program)["N_DATA"], n_x, timing))
     # when a trial step does not lower the cost: the rounding-noise band from AB
     phases.append(Phase("rounding_noise", False, tuple(rounding_noise_loops(program, timing)),
                         per="rejection"))
@@ -746,7 +742,7 @@ def _qr(program, opts, ops, units, memories, channels, phases):
     for li, level in enumerate(sched.levels):
         # eliminate_all: each step stacked into its unit set's banks (√μ once per solve
         # first), the level's steps on the unit sets side by side, each result committed
-        stack = [Process("root_mu", "qr_stack", (_kloop("root_mu", 1, "root", timing),))] \
+        stack = [Process("root_mu", "qr_stack", (kernel_loop("root_mu", 1, "root", timing),))] \
             if li == 0 else []
         stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
             tables, i, opts.units, max_w, damping, timing))) for i in level]
@@ -812,6 +808,38 @@ def _solver_memories(sizes, ops, memories) -> None:
     """The linear solver's stores: conditionals (R | d) and the factors passed to parents."""
     memories.append(Memory("cond", sizes["N_COND"], ops.word_bits, 1))
     memories.append(Memory("nf", sizes["N_NF"], ops.word_bits, 1))
+
+
+def state_update_phase(per_kind: tuple[int, ...], timing: dict) -> Phase:
+    """The state update as emitted (retract_all): one pipelined loop per variable type over its
+    ``per_kind`` variables."""
+    return Phase("state_update", False, (Process("retract", "state_update", tuple(
+        kernel_loop(f"kind{k}", n, "retract", timing) for k, n in enumerate(per_kind))),))
+
+
+def lm_control_phase(n_t: int, n_x: int, timing: dict) -> Phase:
+    """LM control as emitted (optimize / try_steps) over ``n_t`` tangent and ``n_x`` storage
+    words: the gradient's largest entry, |x|, the step test over δ, the scalar decision, the
+    accepted x copied back."""
+    return Phase("lm_control", False, (Process("decide", "lm_control", (
+        kernel_loop("gradient_max", n_t, "max", timing),
+        kernel_loop("x_norm", n_x, "acc", timing),
+        kernel_loop("step_test", n_t, "acc2", timing),
+        kernel_loop("decision", 1, "decision", timing),
+        kernel_loop("accept", n_x, "move", timing))),))
+
+
+def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict) -> Phase:
+    """The top's copies once per call: ``x_in`` state words and ``data_in`` data words in,
+    ``x_out`` state words out."""
+    return Phase("setup", False, (Process("top", "lm_control", (
+        kernel_loop("x_in", x_in, "move", timing), kernel_loop("data_in", data_in, "move", timing),
+        kernel_loop("x_out", x_out, "move", timing))),), per="call")
+
+
+def plan_sizes(program) -> dict:
+    """The emitted kernel's sizes (MAX_W, N_DATA, …) as the C++ tables define them."""
+    return _sizes(program)
 
 
 def _sizes(program) -> dict:

@@ -58,8 +58,6 @@ from fgc_backends.hls.plan import (
     Phase,
     PlanOptions,
     Process,
-    _kloop,
-    _sizes,
     assemble_loops,
     backsub_copies,
     backsub_loops,
@@ -68,11 +66,15 @@ from fgc_backends.hls.plan import (
     cpe_step_loops,
     gradient_loops,
     hgc_loops,
+    kernel_loop,
     kernel_timing,
+    lm_control_phase,
     phase_cycles,
     plan_cost,
+    plan_sizes,
     qr_unit_loops,
     rounding_noise_loops,
+    setup_phase,
     stack_loops,
 )
 
@@ -202,7 +204,7 @@ class UpdateModel:
         # sizes (MAX_W: the stack's and the assembly's row stride)
         self.timing = kernel_timing(self.plan.ops)
         self.les_timing = kernel_timing(self.les)
-        self.max_w = _sizes(self.program)["MAX_W"]
+        self.max_w = plan_sizes(self.program)["MAX_W"]
 
     def _read_chain(self) -> None:
         p = self.program
@@ -308,10 +310,7 @@ class UpdateModel:
         x_in = sum(self.storage[k] for k in self.clusters[last])
         out_from = first if mode == "fixed-lag" else 0
         x_out = sum(self.storage[k] for c in range(out_from, last + 1) for k in self.clusters[c])
-        t = self.timing
-        return Phase("setup", False, (Process("top", "lm_control", (
-            _kloop("x_in", x_in, "move", t), _kloop("data_in", data, "move", t),
-            _kloop("x_out", x_out, "move", t))),), per="call")
+        return setup_phase(x_in, data, x_out, self.timing)
 
     def rounding_noise_phase(self, first: int, last: int) -> Phase:
         """The plan's per-rejection rounding-noise pass on the window's variables and block
@@ -420,7 +419,7 @@ class UpdateModel:
                                blocks=p.blocks, factors=[p.factors[i] for i in instances])
 
     def _retract(self, variables, name) -> Loop:
-        return _kloop(name, variables, "retract", self.timing)
+        return kernel_loop(name, variables, "retract", self.timing)
 
     def _retract_loops(self, variables) -> list[Loop]:
         """retract_all's loop per variable type (the plan's state update) over ``variables``."""
@@ -433,11 +432,7 @@ class UpdateModel:
         """LM control (the plan's loops) over the window's δ and x."""
         n_x = sum(v.storage_dim for v in variables)
         n_t = sum(v.dim for v in variables)
-        t = self.timing
-        return Phase("lm_control", False, (Process("decide", "lm_control", (
-            _kloop("gradient_max", n_t, "max", t), _kloop("x_norm", n_x, "acc", t),
-            _kloop("step_test", n_t, "acc2", t), _kloop("decision", 1, "decision", t),
-            _kloop("accept", n_x, "move", t))),))
+        return lm_control_phase(n_t, n_x, self.timing)
 
     def _linear_cycles(self, first, last, damping) -> int:
         return sum(phase_cycles(ph) for ph in self._linear_phases(first, last, damping))
@@ -497,7 +492,7 @@ class UpdateModel:
         if self.qr:
             for s in steps:
                 c = first + s
-                stack = [Process("root_mu", "qr_stack", (_kloop("root_mu", 1, "root", lt),))] \
+                stack = [Process("root_mu", "qr_stack", (kernel_loop("root_mu", 1, "root", lt),))] \
                     if s == 0 and damping else []
                 stack.append(Process(f"stack{s}", "qr_stack", tuple(stack_loops(
                     tables, s, self.options.units, self.max_w, damping, lt))))
