@@ -139,7 +139,7 @@ def test_more_update_units_are_never_slower(graph, stream):
     program, _ = stream
     ups = [update(j, max(0, j - 2)) for j in range(N)] + [update(5, 0, mode="batch")]
     previous = None
-    for units in (1, 2, 4, 8):
+    for units in (1, 8):  # two models (each compiles its batch prefixes): ~15 s, not 35
         model = update_model(graph, program, units=units)
         cycles = [model.price(u).cycles for u in ups]
         if previous is not None:
