@@ -159,7 +159,29 @@ def _line(far: float, sigma: float) -> fgc.Graph:
     return graph
 
 
+FAR_INITIAL = r"variable '2': initial value entry 0 = 40000\.0 does not fit ap_fixed<40, 16>"
+STIFF_DATA = (r"factor instance 1 \(BetweenFactorPose2 on \['0', '1'\]\): data entry \d+ = "
+              r"99999\.99.* does not fit")
+
+
+def test_data_outside_the_format_is_named():
+    """The check NativeSolver.flatten runs before every solve (no build needed here; the
+    end-to-end refusal through a built library is the heavy test below)."""
+    from fgc_backends.cfamily.scalars import check_fixed_data
+
+    program = compile_graph(_line(4e4, 0.2), SolverConfig(linear="cholesky"), name="fx_far")
+    with pytest.raises(NativeConfigError, match=FAR_INITIAL):
+        check_fixed_data(FIXED, program, problem_data(_line(4e4, 0.2), program), NativeConfigError)
+    with pytest.raises(NativeConfigError, match=STIFF_DATA):
+        check_fixed_data(FIXED, program, problem_data(_line(2.0, 1e-5), program),
+                         NativeConfigError)
+    check_fixed_data(FIXED, program, problem_data(_line(2.0, 0.2), program), NativeConfigError)
+    check_fixed_data("double", program, problem_data(_line(4e4, 1e-5), program),
+                     NativeConfigError)  # floating point holds them
+
+
 @needs_ap_types
+@pytest.mark.heavy  # a ~35 s ap_fixed build
 def test_data_outside_the_format_is_refused_before_a_solve():
     config = NativeConfig(scalar=FIXED)
     graph = _line(4e4, 0.2)  # the last pose starts 40 km away: beyond ±32768

@@ -162,6 +162,7 @@ def test_a_pose2_chain_with_a_prior_on_every_keyframe_streams():
         assert np.linalg.norm(value.local(native.values[key])) <= STREAM_TOL
 
 
+@pytest.mark.heavy  # builds its own library (~25 s); the API path above runs by default
 def test_cli_stream_backend_native(tmp_path, capsys):
     out = tmp_path / "stream.json"
     tum = tmp_path / "lio.tum"
