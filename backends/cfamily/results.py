@@ -62,7 +62,7 @@ class HlsResult(SolveResult):
     """Final estimate per variable, iterations, errors, status.
 
     ``values``: key → array of the variable's storage (C simulation, ``NativeSolver.run``), or
-    key → fgc value from :func:`fgc_backends.native.run`, which then keeps the arrays in
+    key → fgc value from the backends' ``run`` (:func:`keyed`), which then keeps the arrays in
     ``storage`` (the simulator's ``SimResult`` layout: one result type across backends)."""
 
     values: dict
@@ -80,6 +80,14 @@ class HlsResult(SolveResult):
     keyed_values: dict | None = None
     keys: dict = field(default_factory=dict)  # Program variable key → the user's key (run())
 
+
+def keyed(result: HlsResult, program: Program) -> HlsResult:
+    """``result`` (storage arrays as ``values``) as the backend contract's ``run`` returns it:
+    ``values`` fgc values by Program key, the arrays in ``storage``, ``keys`` to the graph's."""
+    from fgc.interop.estimates import values_from_storage
+
+    return replace(result, values=values_from_storage(program, result.values),
+                   storage=result.values, keys={v.key: v.user_key for v in program.variables})
 
 
 def result_from_arrays(program: Program, x: np.ndarray, errors, iterations: int, status: int,

@@ -16,6 +16,7 @@ from fgc.ir.program import Program
 from fgc_backends.cfamily.results import (
     REFERENCE_FILE,
     HlsResult,
+    keyed,
     read_result,
     reference_run,
     write_reference,
@@ -84,13 +85,10 @@ def run(program: Program, data: ProblemData, config: HlsConfig | None = None,
     (:func:`run_csim`) and return the result with ``values`` as fgc values by Program key (the
     raw arrays in ``storage``), as the simulator and the native backend do."""
     import tempfile
-    from dataclasses import replace
 
-    from fgc.interop.estimates import values_from_storage
     from fgc_backends.hls.emitter import emit
 
     with tempfile.TemporaryDirectory(prefix="fgc-hls-") as tmp:
         project = emit(program, out_dir or tmp, config)
         result = run_csim(project, program, data)
-    return replace(result, values=values_from_storage(program, result.values),
-                   storage=result.values, keys={v.key: v.user_key for v in program.variables})
+    return keyed(result, program)

@@ -28,7 +28,7 @@ from fgc.errors import DataError
 from fgc.ir.datafile import ProblemData, check_structure
 from fgc.ir.program import Program
 from fgc_backends.cfamily.names import identifier
-from fgc_backends.cfamily.results import HlsResult, judge_precision, result_from_arrays
+from fgc_backends.cfamily.results import HlsResult, judge_precision, keyed, result_from_arrays
 from fgc_backends.cfamily.scalars import check_fixed_data
 from fgc_backends.cfamily.tables import factor_data_words
 from fgc_backends.native.build import make
@@ -235,10 +235,4 @@ def run(program: Program, data: ProblemData, config: NativeConfig | None = None)
 
     Like the simulator's result: ``values`` are fgc values (Pose3, …) by Program key and
     ``storage`` the raw arrays (:meth:`NativeSolver.run` returns the arrays as ``values``)."""
-    from dataclasses import replace
-
-    from fgc.interop.estimates import values_from_storage
-
-    result = load(program, config).run(data)
-    return replace(result, values=values_from_storage(program, result.values),
-                   storage=result.values, keys={v.key: v.user_key for v in program.variables})
+    return keyed(load(program, config).run(data), program)

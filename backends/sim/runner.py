@@ -70,7 +70,6 @@ class SimResult(SolveResult):
     linear_precision: str | None = None  # the linear solver's precision (None: ``precision``)
     keys: dict[str, int | str] = field(default_factory=dict)  # variable key → the user's key
 
-
     @property
     def float32_ok(self) -> bool | None:
         """Whether κ is below the float32 limit of this run's linear solver (None: unknown):
@@ -304,7 +303,7 @@ def _keyed(program: Program, values: dict, where: str, complete: bool = True
 
 def _values(program: Program, storage: dict[str, np.ndarray]) -> dict[str, LieGroup]:
     types = {v.key: v for v in program.variables}
-    return {k: value_type(types[k].type_name, types[k].dim).from_storage(arr)
+    return {k: geometry.type_named(types[k].type_name, types[k].dim).from_storage(arr)
             for k, arr in storage.items()}
 
 
@@ -382,8 +381,3 @@ _FAILURES = {
     "non_finite": "the cost or linearisation became non-finite after {iterations} iterations "
                   "(last finite cost {cost}); check the initial values and noise models.",
 }
-
-
-def value_type(type_name: str, dim: int) -> type[LieGroup]:
-    """The fgc geometry class named ``type_name`` (``VectorN`` for any N)."""
-    return geometry.type_named(type_name, dim)

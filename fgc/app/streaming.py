@@ -138,11 +138,11 @@ def _run_native_stream(program, data, window, progress, graph):
 
 def keyframe_result(program, record: dict) -> KeyframeResult:
     """A KeyframeResult from an update record (raw storage lists or fgc values)."""
-    from fgc_backends.sim.runner import value_type
+    from fgc.frontend.geometry import type_named
 
     values = record["values"]
     if isinstance(values, list):
-        values = {spec.key: value_type(spec.type_name, spec.dim).from_storage(
+        values = {spec.key: type_named(spec.type_name, spec.dim).from_storage(
             np.asarray(v, dtype=np.float64))
             for spec, v in zip(program.variables, values, strict=True) if v is not None}
     return KeyframeResult(record["keyframe"], record["mode"], record["first"],
