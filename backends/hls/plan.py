@@ -669,12 +669,9 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
 
     # state update: one retract per variable, pipelined one a cycle, variable type by type
     # (retract_all's loop per kind)
-    kinds: dict[str, int] = {}
-    for v in program.variables:
-        kinds[v.type_name] = kinds.get(v.type_name, 0) + 1
     units.append(Unit("state_update", "retract x ⊕ δ", 1,
                       (("add", 3), ("mul", 4), ("sqrt", 1), ("div", 1), ("trig", 2))))
-    phases.append(state_update_phase(tuple(kinds.values()), timing))
+    phases.append(state_update_phase(program.variables, timing))
     phases.append(Phase("factor_cost", False, tuple(cost)))
     n_x = sum(v.storage_dim for v in program.variables)
     n_t = sum(v.dim for v in program.variables)
@@ -810,11 +807,20 @@ def _solver_memories(sizes, ops, memories) -> None:
     memories.append(Memory("nf", sizes["N_NF"], ops.word_bits, 1))
 
 
-def state_update_phase(per_kind: tuple[int, ...], timing: dict) -> Phase:
-    """The state update as emitted (retract_all): one pipelined loop per variable type over its
-    ``per_kind`` variables."""
-    return Phase("state_update", False, (Process("retract", "state_update", tuple(
-        kernel_loop(f"kind{k}", n, "retract", timing) for k, n in enumerate(per_kind))),))
+def retract_loops(variables, timing: dict) -> tuple[Loop, ...]:
+    """retract_all's loops over ``variables`` (VariableSpecs): one pipelined loop per variable
+    type, in first-seen order."""
+    kinds: dict[str, int] = {}
+    for v in variables:
+        kinds[v.type_name] = kinds.get(v.type_name, 0) + 1
+    return tuple(kernel_loop(f"kind{k}", n, "retract", timing)
+                 for k, n in enumerate(kinds.values()))
+
+
+def state_update_phase(variables, timing: dict) -> Phase:
+    """The state update as emitted (retract_all) over ``variables``."""
+    return Phase("state_update", False, (Process("retract", "state_update",
+                                                 retract_loops(variables, timing)),))
 
 
 def lm_control_phase(n_t: int, n_x: int, timing: dict) -> Phase:

@@ -73,9 +73,11 @@ from fgc_backends.hls.plan import (
     plan_cost,
     plan_sizes,
     qr_unit_loops,
+    retract_loops,
     rounding_noise_loops,
     setup_phase,
     stack_loops,
+    state_update_phase,
 )
 
 NOT_EMITTED = ("the accelerator's incremental / fixed-lag mode is not emitted in C++ (the HLS "
@@ -290,8 +292,7 @@ class UpdateModel:
         if self.qr:
             phases.append(Phase("gradient", False, tuple(gradient_loops(view, self.timing))))
         phases += self._linear_phases(first, last, self.damping)
-        phases.append(Phase("state_update", False, (Process(
-            "retract", "state_update", tuple(self._retract_loops(view.variables))),)))
+        phases.append(state_update_phase(view.variables, self.timing))
         phases.append(self._factor_phase("cost", inst))
         phases.append(self._lm_phase(view.variables))
         return tuple(phases)
@@ -357,7 +358,7 @@ class UpdateModel:
                                            self.les_timing)
             loops += before + backsub_loops(f, sep, self.les, name=f"kept{c}") + after
         keys = {k for c in range(first) for k in self.clusters[c]}
-        loops += self._retract_loops([v for v in self.program.variables if v.key in keys])
+        loops += retract_loops([v for v in self.program.variables if v.key in keys], self.timing)
         kept = Process("kept_backsub", "backsub", tuple(loops))
         f, s = self.cdim[first - 1], self.cdim[first]
         la, lm = self.les.add.latency, self.les.mul.latency
@@ -420,13 +421,6 @@ class UpdateModel:
 
     def _retract(self, variables, name) -> Loop:
         return kernel_loop(name, variables, "retract", self.timing)
-
-    def _retract_loops(self, variables) -> list[Loop]:
-        """retract_all's loop per variable type (the plan's state update) over ``variables``."""
-        kinds: dict[str, int] = {}
-        for v in variables:
-            kinds[v.type_name] = kinds.get(v.type_name, 0) + 1
-        return [self._retract(n, f"kind{k}") for k, n in enumerate(kinds.values())]
 
     def _lm_phase(self, variables) -> Phase:
         """LM control (the plan's loops) over the window's δ and x."""
