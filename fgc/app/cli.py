@@ -3,7 +3,7 @@
     fgc compile  SPEC --backend B --out DIR           emit a project of backend B: sim, hls, native
     fgc simulate SPEC [--json F]                      run the accelerator simulator, report cost
     fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
-    fgc run      SPEC --backend native|sim            solve with the generated solver
+    fgc run      SPEC --backend native|sim|hls        solve with the generated solver
     fgc stream   SPEC --window W | --incremental K    keyframes one at a time (simulator;
                  [--backend sim|hls|native]           hls: updates priced on the HLS plan;
                                                       native: --window only)
@@ -471,9 +471,9 @@ def _cmd_stream(args) -> int:
     graph, program, data = _stream_setup(args, "float64")
     window = getattr(args, "window", None)
     quiet = getattr(args, "quiet", False)
-    hls = getattr(args, "backend", "sim") == "hls"
     n = len(program.schedule.clusters)
     backend = getattr(args, "backend", "sim")
+    hls = backend == "hls"
     who = "native solver" if backend == "native" else "simulator"
     if not quiet:
         if hls:
@@ -505,7 +505,6 @@ def _cmd_stream(args) -> int:
               f"{update.iterations:>3} iterations, {update.status}, {model}, "
               f"{update.seconds * 1e3:8.2f} ms ({who} wall time); "
               f"{_newest_text(update, program)}", flush=True)
-
 
     result = streaming.run_stream(program, data, window, progress, backend=backend,
                                   graph=graph)
