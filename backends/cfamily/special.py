@@ -3,8 +3,8 @@
 The header template defines ``lie_A`` … ``lie_D1`` as inline functions of ``t = θ²``: the Taylor
 series (Horner form, coefficients from ``special.SERIES``) below ``t < 4`` and the closed form
 above it. The closed forms are written here once as small sympy kernels — the same formulas as
-``special._closed_forms`` — and printed by the backend's printer, so no arithmetic is spelled out
-in a template.
+``fgc/frontend/geometry/lie_closed_forms.py`` (NumPy, which the simulator copies) — and printed
+by the backend's printer, so no arithmetic is spelled out in a template.
 """
 
 from __future__ import annotations

@@ -79,9 +79,6 @@ def _horner(name: str, t: np.ndarray) -> np.ndarray:
     return horner(coeffs, t)
 
 
-_closed_forms = closed_form  # one copy, shared with the emitted simulator (lie_closed_forms.py)
-
-
 def coefficient(name: str, t):
     """Evaluate coefficient ``name`` (A, B, C, D, A1, B1, C1, D1) at ``t = θ²``.
 
@@ -94,7 +91,7 @@ def coefficient(name: str, t):
     series = _horner(name, arr)
     safe = np.where(small, arr.dtype.type(SERIES_BELOW), arr)
     with np.errstate(all="ignore"):
-        closed = _closed_forms(name, safe)
+        closed = closed_form(name, safe)  # lie_closed_forms: the simulator copies it
     out = np.where(small, series, closed).astype(arr.dtype)
     return out if out.ndim else out.dtype.type(out)
 
