@@ -42,6 +42,7 @@ def common_context(program: Program, config, project: str, error: type[Exception
     # columns exists only if some separator spans a whole TILE (else g++ -Werror proves the dead
     # loop would index past xs[MAX_W])
     max_sep = max(w - f for w, f in zip(table["STEP_W"], table["STEP_F"], strict=True))
+    level_width = max(len(level) for level in program.schedule.levels)
     return {
         "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,
@@ -58,7 +59,7 @@ def common_context(program: Program, config, project: str, error: type[Exception
             f"{program.schedule.structure_class} graph, {program.schedule.ordering} ordering"),
         "constants": tables.constants, "sizes": {
             **dict(tables.constants),
-            "MAX_LEVEL_WIDTH": max(len(level) for level in program.schedule.levels),
+            "MAX_LEVEL_WIDTH": level_width,
             "MAX_STORAGE": max(v.storage_dim for v in program.variables),
             "MAX_LD": max_ld, "MAX_SEP": max_sep},
         "max_variables": program.max_variables,
@@ -72,7 +73,7 @@ def common_context(program: Program, config, project: str, error: type[Exception
         "coefficients": coefficient_functions(), "series_below": printer.literal(SERIES_BELOW),
         "solver": solver, "statuses": STATUSES, "reasons": REASONS,
         "noise_codes": NOISE_CODES, "robust_codes": ROBUST_CODES,
-        "max_level_width": max(len(level) for level in program.schedule.levels),
+        "max_level_width": level_width,
         "max_line_chars": 32 * max([v.storage_dim for v in program.variables] + [
             factor_data_words(program, b) for b in range(len(program.blocks))]) + 64,
     }
