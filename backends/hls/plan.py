@@ -38,7 +38,8 @@ from fgc.ir.program import Program
 from fgc_backends.cost.operators import OperatorTable, table
 from fgc_backends.cost.target import DEFAULT, DEFAULT_PART, capacity
 
-PART = DEFAULT.name  # the fit verdict's device (cost/target.py)
+# the default device (cost/target.py); PlanOptions.part selects the fit verdict's
+PART = DEFAULT.name
 PART_DSP, PART_BRAM36, PART_LUT, PART_FF = DEFAULT.dsp, DEFAULT.bram36, DEFAULT.lut, DEFAULT.ff
 BRAM18_BITS = 18 * 1024
 LUTRAM_MAX_BITS = 1024  # memories up to this size go to LUTRAM / registers (design)
