@@ -4,9 +4,11 @@ testbench solves the update's window; the host holds the kept Bayes net.
 The windows are the native stream's (:mod:`fgc_backends.native.stream`): a *template* window
 Program — the chain's first S keyframes with a ``MarginalPrior…`` factor on every keyframe — is
 emitted once as an HLS project (:func:`fgc_backends.hls.emitter.emit`, ``double`` for agreement
-with the simulator, ``float`` as the hardware), its C simulation built on the first update and
-re-run on every later update's numbers (:func:`fgc_backends.hls.build.run_csim` with
-``reference=False``: the testbench reads the new ``data.txt``, nothing is rebuilt).
+with the simulator, ``float`` as the hardware; kept in fgc's cache directory by content hash,
+with its built testbench once a stream has built it, and copied into each stream's own
+folder), its C simulation built on the first update and re-run on every later update's numbers
+(:func:`fgc_backends.hls.build.run_csim` with ``reference=False``: the testbench reads the new
+``data.txt``, nothing is rebuilt).
 
 What runs where. The C simulation runs each window's LM solve. Everything between updates runs
 on the host in Python, as for the native stream: the kept conditionals, the marginal prior τ a
@@ -20,6 +22,9 @@ paper A's accelerator; the on-chip state between calls is not emitted.
 
 from __future__ import annotations
 
+import hashlib
+import os
+import shutil
 import tempfile
 import weakref
 from pathlib import Path
@@ -38,15 +43,21 @@ class _Csim:
 
     def _emit_csim(self, scalar: str, out_dir) -> None:
         from fgc_backends.hls.config import HlsConfig
-        from fgc_backends.hls.emitter import emit
+        from fgc_backends.hls.emitter import HlsProject
 
         if out_dir is None:
             tmp = tempfile.mkdtemp(prefix="fgc-hls-stream-")
             weakref.finalize(self, _remove, tmp)
             out_dir = tmp
         self.scalar = scalar
-        self.project = emit(self.template, Path(out_dir) / f"window{self.size}",
-                            HlsConfig(scalar=scalar))
+        config = HlsConfig(scalar=scalar)
+        self._cached = _cached_project(self.template, config)
+        work = Path(out_dir) / f"window{self.size}"
+        shutil.rmtree(work, ignore_errors=True)
+        shutil.copytree(self._cached.directory, work)  # its mtimes too: a built one stays built
+        self.project = HlsProject(work, self._cached.name,
+                                  tuple(work / f.name for f in self._cached.files), config)
+        self._built = (self._cached.directory / _BUILT).is_file()
         t = self.template
         self._factor_words = [factor_data_words(t, spec.block) for spec in t.factors]
 
@@ -85,6 +96,9 @@ class _Csim:
             (folder / build.RESULT_FILE).unlink(missing_ok=True)
             build.make(self.project, "csim")
             result = read_result(folder / build.RESULT_FILE, self.template)
+        if not self._built:  # the first run built the testbench: keep the build for later
+            _keep_build(self.project, self._cached.directory)
+            self._built = True
         x_out = np.concatenate([np.asarray(result.values[v.key], dtype=np.float64)
                                 for v in self.template.variables])
         info = np.array([result.iterations, STATUSES.index(result.status),
@@ -93,9 +107,63 @@ class _Csim:
 
 
 def _remove(folder: str) -> None:
-    import shutil
-
     shutil.rmtree(folder, ignore_errors=True)
+
+
+_BUILT = ".fgc-stream-built"
+
+
+def _project_key(template, config) -> str:
+    """Content hash of what the emitted and built testbench depends on: the template Program,
+    the config, fgc, the HLS backend's and C-family layer's sources and the host."""
+    import fgc
+    from fgc_backends.native.solver import host_key
+
+    h = hashlib.sha256(template.to_json().encode())
+    h.update(repr(config).encode())
+    h.update(fgc.__version__.encode())
+    h.update(host_key().encode())
+    backends = Path(__file__).resolve().parent.parent
+    for path in sorted([*(backends / "hls").rglob("*"), *(backends / "cfamily").rglob("*.py")]):
+        if path.is_file() and path.name != "stream.py" and "__pycache__" not in path.parts:
+            h.update(str(path.relative_to(backends)).encode())
+            h.update(path.read_bytes())
+    return h.hexdigest()[:24]
+
+
+def _cached_project(template, config):
+    """The template's emitted project in ``<fgc cache>/hls-stream/<hash>`` (emitted once per
+    content hash; a stream copies it into its own folder, as two streams may run at once)."""
+    from fgc.compiler.cache import cache_dir
+    from fgc_backends.cfamily.names import identifier
+    from fgc_backends.hls.emitter import HlsProject, emit
+
+    folder = cache_dir() / "hls-stream" / _project_key(template, config)
+    if not folder.is_dir():
+        staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
+        shutil.rmtree(staging, ignore_errors=True)
+        emit(template, staging, config)
+        try:
+            os.replace(staging, folder)
+        except OSError:  # another process finished first: use its project
+            shutil.rmtree(staging, ignore_errors=True)
+    files = tuple(sorted(p for p in folder.iterdir() if p.is_file() and p.name != _BUILT))
+    return HlsProject(folder, identifier(template.name), files, config)
+
+
+def _keep_build(project, cached: Path) -> None:
+    """Copy a stream's built project back into the cache (atomically; first one wins)."""
+    staging = cached.with_name(f"{cached.name}.built{os.getpid()}")
+    shutil.rmtree(staging, ignore_errors=True)
+    shutil.copytree(project.directory, staging)
+    (staging / _BUILT).write_text("built\n")
+    old = cached.with_name(f"{cached.name}.old{os.getpid()}")
+    try:
+        os.replace(cached, old)
+        os.replace(staging, cached)
+    except OSError:
+        shutil.rmtree(staging, ignore_errors=True)
+    shutil.rmtree(old, ignore_errors=True)
 
 
 def _native_double():
