@@ -7,7 +7,9 @@ ordering (that checks the window's stacked patterns against ``stacked_pattern``)
 keyframe costs ``plan_cost`` of the batch Program of its keyframes per iteration; more Update
 units, a wider window, more iterations or a longer kept Bayes net are never cheaper; assumed
 terms are labelled and kept out of the plan's latency. Pricing needs no simulator run: updates
-are given by their keyframe, mode, first cluster and iterations.
+are given by their keyframe, mode, first cluster and iterations. The command-line cases run
+``--model-only`` (the simulator's updates, priced); the C simulation solving each update is
+tests/test_hls_stream_csim.py.
 """
 
 from __future__ import annotations
@@ -24,7 +26,6 @@ from fgc.app.cli import main
 from fgc.app.specs import example  # noqa: E402
 from fgc.app.streaming import (
     HW_REFUSAL,
-    NATIVE_REFUSAL,
     compile_stream,
     prefix_program,
     update_model,
@@ -234,8 +235,8 @@ def test_a_graph_that_is_not_a_chain_has_no_update_model():
 def test_cli_stream_hls_prints_the_model_beside_the_simulator(tmp_path, capsys):
     out, tum = tmp_path / "stream.json", tmp_path / "stream.tum"
     rc = main(["stream", LIO, "-p", "N=6", "--incremental", "2", "--batch-every", "3,",
-               "--backend", "hls", "--units", "2", "--precision", "float32", "--json", str(out),
-               "--tum", str(tum)])
+               "--backend", "hls", "--model-only", "--units", "2", "--precision", "float32",
+               "--json", str(out), "--tum", str(tum)])
     text = capsys.readouterr().out
     assert rc == 0, text
     assert "not emitted in C++" in text and "n_u = 2 Update units" in text
@@ -257,23 +258,23 @@ def test_cli_stream_hls_prints_the_model_beside_the_simulator(tmp_path, capsys):
 
 
 def test_cli_stream_hls_fixed_lag_cholesky(capsys):
-    rc = main(["stream", LIO, "-p", "N=5", "--window", "2", "--backend", "hls", "--linear",
-               "cholesky", "--cpe", "5"])
+    rc = main(["stream", LIO, "-p", "N=5", "--window", "2", "--backend", "hls", "--model-only",
+               "--linear", "cholesky", "--cpe", "5"])
     text = capsys.readouterr().out
     assert rc == 0, text
     assert "CHOLESKY, #CPE = 5" in text and "keyframe    4 (fixed-lag, from 2)" in text
 
 
 @pytest.mark.parametrize("argv, refusal", [
-    (["stream", LIO, "-p", "N=4", "--backend", "native", "--incremental", "2"], NATIVE_REFUSAL),
+    (["stream", LIO, "-p", "N=4", "--backend", "native", "--incremental", "2", "--model-only"],
+     "--model-only prices the simulator's updates on the HLS plan: it needs --backend hls"),
     (["run", LIO, "-p", "N=4", "--backend", "hls", "--incremental", "2"], HW_REFUSAL),
     (["run", LIO, "-p", "N=4", "--backend", "hls", "--window", "2"], HW_REFUSAL),
 ])
 def test_cli_refuses_streaming_where_no_model_or_solver_runs_it(argv, refusal, capsys):
     rc = main(argv)
     err = capsys.readouterr().err
-    assert rc == 2 and refusal in err and f"--backend {argv[argv.index('--backend') + 1]}" \
-        in err
+    assert rc == 2 and refusal in err and "--backend" in err
     assert "Traceback" not in err and len(err.strip().splitlines()) == 1
 
 

@@ -80,9 +80,10 @@ from fgc_backends.hls.plan import (
     state_update_phase,
 )
 
-NOT_EMITTED = ("the accelerator's incremental / fixed-lag mode is not emitted in C++ (the HLS "
-               "design runs batch solves); these are model estimates of the emitted units "
-               "running the simulator's update")
+NOT_EMITTED = ("the accelerator's on-chip incremental state is not emitted in C++: the HLS "
+               "design solves each update's window as a batch solve and the kept Bayes net "
+               "(conditionals, marginal prior, back-substitution) lives on the host; these are "
+               "model estimates of the emitted units running the update")
 MODES = ("incremental", "batch", "fixed-lag")
 
 

@@ -39,7 +39,7 @@ from __future__ import annotations
 
 import inspect
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -109,22 +109,23 @@ class NativeStreamResult:
     template: Program | None = None
 
 
-class FixedLagStream:
-    """The native solver compiled for a fixed-lag window of ``window`` keyframes over the chain
-    ``program`` (compiled from ``graph``); :meth:`run` streams ``data``."""
+class WindowSolver:
+    """The native solver compiled for a *template* window of ``size`` keyframes of the chain
+    ``program`` (compiled from ``graph``): the graph's first ``size`` keyframes with their
+    factors and a ``MarginalPrior…`` factor on every keyframe, compiled as a batch Program
+    (the stream's solver options without an incremental plan); :meth:`assemble` fills it with
+    the numbers of any window of at most ``size`` keyframes, :meth:`eliminate` eliminates the
+    window from the solver's rows at a point (module docstring)."""
 
-    def __init__(self, graph: Graph, program: Program, window: int, config=None):
+    def __init__(self, graph: Graph, program: Program, size: int, config=None):
         from fgc.compile import compile_graph
         from fgc_backends import native
 
         if program.schedule.structure_class != "chain" or not program.schedule.clusters:
             raise NativeStreamError("native streaming needs a chain of keyframes")
-        if isinstance(window, bool) or not isinstance(window, int) or window < 1:
-            raise NativeStreamError(f"the fixed-lag window must be a positive number of "
-                                    f"keyframes, got {window!r}")
-        self.graph, self.program, self.window = graph, program, window
+        self.graph, self.program = graph, program
         clusters = program.schedule.clusters
-        self.size = size = min(window + 1, len(clusters))
+        self.size = size = min(size, len(clusters))
         original = {str(k): k for k in graph.variables}
         self.cluster_of = {k: c for c, keys in enumerate(clusters) for k in keys}
         self.position = {k: p for keys in clusters for p, k in enumerate(keys)}
@@ -158,8 +159,8 @@ class FixedLagStream:
             template.add(ptype(*keys, noise=NoiseModel("full", np.eye(dim)),
                                mean=np.zeros((dim, 1)), **lin))
             self.prior_types.append((ptype, dim))
-        solver = program.solver
-        self.template = compile_graph(template, solver, name=f"{program.name}_lag{window}")
+        solver = replace(program.solver, incremental_k=None, batch_every=None)
+        self.template = compile_graph(template, solver, name=f"{program.name}_window{size}")
         self.solver = native.load(self.template, config)
         self.config = self.solver.project.config
         # every graph factor by its signature (type, (keyframe, position) per variable)
@@ -173,62 +174,83 @@ class FixedLagStream:
                         for _, dim in self.prior_types]
         self._words = {}
         self._zero = {}
-        self._marginal_plan()
+        self._row_plan()
         self._check_prior_layout()
 
-    def _marginal_plan(self) -> None:
-        """Where the rows of the factors that eliminate slot 0 lie in the solver's
-        linearisation (:meth:`NativeSolver.rows`) and which columns of the (slot 0, slot 1)
-        matrix each of their variables' tangent columns is."""
+    def _row_plan(self) -> None:
+        """Where each template factor's rows lie in the solver's linearisation
+        (:meth:`NativeSolver.rows`), by the oldest slot it touches, and which columns of the
+        (that slot, the next) matrix its variables' tangent columns are."""
         t = self.template
         dims = {v.key: v.dim for v in t.variables}
-        column, width = {}, 0
-        for slot in (0, 1):
-            for v in t.variables:
-                if self.cluster_of[v.key] == slot:
-                    column[v.key] = width
-                    width += dims[v.key]
-        self.n0 = sum(dims[v.key] for v in t.variables if self.cluster_of[v.key] == 0)
-        self.width = width
+        within, self.slot_dims = {}, [0] * self.size
+        for v in t.variables:
+            slot = self.cluster_of[v.key]
+            within[v.key] = self.slot_dims[slot]
+            self.slot_dims[slot] += dims[v.key]
         layout = self.solver.row_layout()
         seen = [0] * len(t.blocks)
-        self.slot0 = []  # (first word, m, columns, target columns)
+        self.by_slot = [[] for _ in range(self.size)]  # (first word, m, columns, targets, keys)
         for spec in t.factors:
             k = seen[spec.block]
             seen[spec.block] += 1
             slots = [self.cluster_of[key] for key in spec.keys]
-            if min(slots) != 0:
-                continue
-            if max(slots) > 1:
-                raise NativeStreamError(f"a factor on {list(spec.keys)} spans keyframes 0 to "
-                                        f"{max(slots)}: the native fixed-lag window marginalises "
-                                        "factors between consecutive keyframes only")
+            lo = min(slots)
             pos, _, m, cols = layout[spec.block]
-            targets = np.concatenate([column[key] + np.arange(dims[key]) for key in spec.keys])
-            self.slot0.append((pos + k * m * cols, m, cols, targets))
+            targets = np.concatenate([within[key] + (self.slot_dims[lo] if slot > lo else 0)
+                                      + np.arange(dims[key])
+                                      for key, slot in zip(spec.keys, slots, strict=True)])
+            self.by_slot[lo].append((pos + k * m * cols, m, cols, targets, max(slots),
+                                     spec.keys))
+
+    def eliminate(self, x: np.ndarray, d: np.ndarray, count: int,
+                  pass_last: bool = False) -> tuple[list, list]:
+        """Eliminate slots 0 … count − 1, oldest first, from the solver's rows at ``x`` (its
+        factors and its marginal priors, undamped, one QR per slot): per slot its conditional
+        (R, S, d) — R·δ_s + S·δ_s+1 = d, S empty for the last slot unless ``pass_last`` — and
+        the dense factor [A | b] it passes to the next slot (None for the last slot unless
+        ``pass_last``). Factors from the last slot into the next one are left out unless
+        ``pass_last`` (past the window they carry zero square-root information)."""
+        rows = self.solver.rows(x, d)
+        conds, passed, carry = [], [], None
+        for s in range(count):
+            last = s == count - 1
+            n0 = self.slot_dims[s]
+            n1 = self.slot_dims[s + 1] if s + 1 < self.size and (pass_last or not last) else 0
+            width = n0 + n1
+            stacks = []
+            if carry is not None:
+                part = np.zeros((carry.shape[0], width + 1))
+                part[:, :n0], part[:, -1] = carry[:, :-1], carry[:, -1]
+                stacks.append(part)
+            for start, m, cols, targets, hi, keys in self.by_slot[s]:
+                if hi > s + 1:
+                    raise NativeStreamError(f"a factor on {list(keys)} spans keyframes {s} to "
+                                            f"{hi} of the window: native streaming eliminates "
+                                            "factors between consecutive keyframes only")
+                if hi > s and n1 == 0:
+                    continue
+                block = rows[start:start + m * cols].reshape(m, cols)
+                part = np.zeros((m, width + 1))
+                part[:, targets] = block[:, :-1]
+                part[:, -1] = block[:, -1]
+                stacks.append(part)
+            stacked = np.concatenate(stacks)
+            if stacked.shape[0] < n0:
+                raise NativeStreamError(f"window slot {s}: {stacked.shape[0]} rows cannot "
+                                        f"determine its {n0} columns")
+            r = np.linalg.qr(stacked, mode="r")
+            conds.append((r[:n0, :n0], r[:n0, n0:width], r[:n0, -1]))
+            carry = r[n0:width, n0:] if n1 else None
+            passed.append(carry)
+        return conds, passed
 
     def marginal(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Eliminate slot 0 from the window's linearisation at ``x`` (the solver's own rows: its
         factors and its marginal prior): the dense factor [A | b] it passes to slot 1, A upper
         triangular with a positive diagonal."""
-        rows = self.solver.rows(x, d)
-        stacks = []
-        for start, m, cols, targets in self.slot0:
-            block = rows[start:start + m * cols].reshape(m, cols)
-            part = np.zeros((m, self.width + 1))
-            part[:, targets] = block[:, :-1]
-            part[:, -1] = block[:, -1]
-            stacks.append(part)
-        stacked = np.concatenate(stacks)
-        n0, n1 = self.n0, self.width - self.n0
-        if stacked.shape[0] < self.width:
-            raise NativeStreamError(f"{stacked.shape[0]} rows cannot determine the "
-                                    f"{self.width} columns of the leaving keyframe's "
-                                    "conditional and marginal")
-        r = np.linalg.qr(stacked, mode="r")
-        a, b = r[n0:n0 + n1, n0:-1], r[n0:n0 + n1, -1]
-        signs = np.where(np.diag(a) < 0, -1.0, 1.0)
-        return a * signs[:, None], b * signs
+        _, passed = self.eliminate(x, d, 1, pass_last=True)
+        return as_prior(passed[0], self.slot_dims[1], "slot 0")[:2]
 
     def _signature(self, f, shift: int) -> tuple:
         return (f.type.name, tuple((self.cluster_of[str(k)] + shift, self.position[str(k)])
@@ -332,19 +354,164 @@ class FixedLagStream:
             pos += v.storage_dim
         self.solver.flatten(ProblemData(tuple(variables), tuple(sizes), t.structure_fingerprint))
 
-    # -- the stream ---------------------------------------------------------------------------
-    def run(self, data: ProblemData, progress=None) -> NativeStreamResult:
-        from fgc.interop.estimates import values_from_storage
+    # -- one window solve ---------------------------------------------------------------------
+    def solve(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The window's LM solve on the template's flat arrays: (x, errors, info) as
+        :meth:`NativeSolver.solve` returns them (the native library; a subclass may run
+        another build of the same template)."""
+        return self.solver.solve(x, d)
+
+    def store(self, estimate: dict, x_out: np.ndarray, first: int, last: int) -> None:
+        """Write the window's optimum ``x_out`` (template layout) into ``estimate`` for the
+        keyframes first … last (slots past ``last`` are held: not written)."""
+        clusters = self.program.schedule.clusters
+        pos = 0
+        for v in self.template.variables:
+            slot = self.cluster_of[v.key]
+            if first + slot <= last:
+                key = clusters[first + slot][self.position[v.key]]
+                estimate[key][:] = x_out[pos:pos + v.storage_dim]
+            pos += v.storage_dim
+
+
+def as_prior(rows: np.ndarray, n: int, what: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A passed factor [A | b] on a keyframe of tangent dimension ``n`` as a marginal prior:
+    (R, b, mean) with R = A row-signed to a positive diagonal (the cost ½‖A·s − b‖² is
+    unchanged) and mean = R⁻¹b; :class:`NativeStreamError` if it does not determine all n
+    directions."""
+    if rows is None or rows.shape[0] < n:
+        have = 0 if rows is None else rows.shape[0]
+        raise NativeStreamError(f"{what}: {have} rows cannot determine the {n} columns of the "
+                                "factor it passes to the next keyframe")
+    a, b = rows[:n, :-1], rows[:n, -1]
+    signs = np.where(np.diag(a) < 0, -1.0, 1.0)
+    a, b = a * signs[:, None], b * signs
+    if np.min(np.diag(a)) <= 1e-12 * max(1.0, float(np.max(np.abs(a)))):
+        raise NativeStreamError(f"{what}: the marginal prior it passes to the next keyframe is "
+                                "singular")
+    return a, b, np.linalg.solve(a, b)
+
+
+class _ClusterGeometry:
+    """Retraction x̄ ∘ Exp(δ) and local coordinates Log(x̄⁻¹x) of one keyframe's variables on
+    their stacked storage, in NumPy: the sympy-derived kernels the simulator prints
+    (:func:`fgc_backends.cfamily.retract.retract_kernel`, :func:`fgc_backends.sim.types.
+    local_kernel`) compiled to Python, vector spaces as plain sums."""
+
+    def __init__(self, types):
+        from fgc.compiler.kernel import numeric_function
+        from fgc.frontend.geometry.base import VectorSpace
+        from fgc_backends.cfamily.retract import retract_kernel
+        from fgc_backends.sim.types import local_kernel
+
+        self.parts, s, t = [], 0, 0
+        for cls in types:
+            flat = issubclass(cls, VectorSpace) and cls.storage_dim == cls.dim
+            fns = None if flat else (numeric_function(retract_kernel(cls)),
+                                     numeric_function(local_kernel(cls)))
+            self.parts.append((fns, slice(s, s + cls.storage_dim), slice(t, t + cls.dim)))
+            s, t = s + cls.storage_dim, t + cls.dim
+        self.dim = t
+
+    def local(self, lin: np.ndarray, x: np.ndarray) -> np.ndarray:
+        out = np.empty(self.dim)
+        for fns, sp, tp in self.parts:
+            out[tp] = x[sp] - lin[sp] if fns is None else fns[1](*lin[sp], *x[sp])
+        return out
+
+    def retract(self, lin: np.ndarray, delta: np.ndarray) -> np.ndarray:
+        out = np.empty(lin.size)
+        for fns, sp, tp in self.parts:
+            out[sp] = lin[sp] + delta[tp] if fns is None else fns[0](*lin[sp], *delta[tp])
+        return out
+
+    def local_jacobian(self, lin: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Log(x̄⁻¹x) and its derivative along x ∘ Exp(δ) (block diagonal), by central
+        differences as the simulator forms it (``Chain.local_jacobian``)."""
+        h = np.sqrt(np.finfo(np.float64).eps) * 10
+        jac = np.zeros((self.dim, self.dim))
+        for fns, sp, tp in self.parts:
+            if fns is None:
+                jac[tp, tp] = np.eye(tp.stop - tp.start)
+                continue
+            for i in range(tp.stop - tp.start):
+                step = np.zeros(tp.stop - tp.start)
+                step[i] = h
+                plus = fns[1](*lin[sp], *fns[0](*x[sp], *step))
+                minus = fns[1](*lin[sp], *fns[0](*x[sp], *(-step)))
+                jac[tp, tp.start + i] = (np.asarray(plus) - np.asarray(minus)) / (2 * h)
+        return self.local(lin, x), jac
+
+
+class _Stream:
+    """What the two stream kinds share: the estimate, the records, the result."""
+
+    def __init__(self, program: Program):
+        self.program = program
+        self.clusters = program.schedule.clusters
+        self.index = {v.key: i for i, v in enumerate(program.variables)}
+
+    def _start(self, data: ProblemData) -> dict:
+        program = self.program
+        offsets = np.concatenate([[0], np.cumsum([v.storage_dim for v in program.variables])])
+        full = np.concatenate([np.asarray(v, dtype=np.float64) for v in data.variables])
+        self._full = full
+        return {v.key: full[offsets[i]:offsets[i + 1]] for i, v in enumerate(program.variables)}
+
+    def _cluster(self, estimate: dict, c: int) -> np.ndarray:
+        return np.concatenate([estimate[k] for k in self.clusters[c]])
+
+    def _set_cluster(self, estimate: dict, c: int, value: np.ndarray) -> None:
+        pos = 0
+        for k in self.clusters[c]:
+            n = estimate[k].size
+            estimate[k][:] = value[pos:pos + n]
+            pos += n
+
+    def _snapshot(self, estimate: dict, oldest: int, newest: int) -> list:
+        snapshot = [None] * len(self.program.variables)
+        for c in range(oldest, newest + 1):
+            for k in self.clusters[c]:
+                snapshot[self.index[k]] = estimate[k].tolist()
+        return snapshot
+
+    @staticmethod
+    def _info(info) -> tuple[int, str, str]:
         from fgc_backends.cfamily.results import REASONS, STATUSES
 
-        program, window = self.program, self.window
-        clusters = program.schedule.clusters
-        offsets = np.concatenate([[0], np.cumsum([v.storage_dim for v in program.variables])])
-        index = {v.key: i for i, v in enumerate(program.variables)}
-        full = np.concatenate([np.asarray(v, dtype=np.float64) for v in data.variables])
-        estimate = {v.key: full[offsets[i]:offsets[i + 1]]
-                    for i, v in enumerate(program.variables)}
-        tau, records, status, reason, total_iterations = None, [], "converged", "", 0
+        return int(info[0]), STATUSES[int(info[1])], REASONS[int(info[2])]
+
+    def _result(self, estimate, records, initial_error, template) -> NativeStreamResult:
+        from fgc.interop.estimates import values_from_storage
+
+        status, reason = "converged", ""
+        for r in records:
+            if r["status"] != "converged":
+                status, reason = r["status"], f"keyframe {r['keyframe']}: {r['reason']}"
+                break
+        storage = {k: v.copy() for k, v in estimate.items()}
+        return NativeStreamResult(values_from_storage(self.program, storage), storage, status,
+                                  reason, sum(r["iterations"] for r in records), records,
+                                  initial_error, template)
+
+
+class FixedLagStream(WindowSolver):
+    """The native solver compiled for a fixed-lag window of ``window`` keyframes over the chain
+    ``program`` (compiled from ``graph``): a template of W + 1 keyframes; :meth:`run` streams
+    ``data``."""
+
+    def __init__(self, graph: Graph, program: Program, window: int, config=None):
+        if isinstance(window, bool) or not isinstance(window, int) or window < 1:
+            raise NativeStreamError(f"the fixed-lag window must be a positive number of "
+                                    f"keyframes, got {window!r}")
+        super().__init__(graph, program, window + 1, config)
+        self.window = window
+
+    def run(self, data: ProblemData, progress=None) -> NativeStreamResult:
+        window, stream = self.window, _Stream(self.program)
+        clusters = stream.clusters
+        estimate = stream._start(data)
+        tau, records, initial_error = None, [], None
         for j in range(len(clusters)):
             t0 = time.perf_counter()
             first = max(0, j - window)
@@ -353,45 +520,120 @@ class FixedLagStream:
                 t0 = time.perf_counter()
             x, d = self.assemble(estimate, first, j, tau)
             t1 = time.perf_counter()
-            x_out, errors, info = self.solver.solve(x, d)
+            x_out, errors, info = self.solve(x, d)
             t2 = time.perf_counter()
             if j == 0:
                 initial_error = float(errors[0])
-            pos = 0
-            for v in self.template.variables:
-                slot = self.cluster_of[v.key]
-                if first + slot <= j:
-                    key = clusters[first + slot][self.position[v.key]]
-                    estimate[key][:] = x_out[pos:pos + v.storage_dim]
-                pos += v.storage_dim
+            self.store(estimate, x_out, first, j)
             t3 = time.perf_counter()
             if j >= window and j + 1 < len(clusters):  # keyframe j − W leaves: its marginal
-                a, b = self.marginal(x_out, d)
-                if np.min(np.diag(a)) <= 1e-12 * max(1.0, float(np.max(np.abs(a)))):
-                    raise NativeStreamError(f"keyframe {first}: its marginal prior on keyframe "
-                                            f"{first + 1} is singular")
+                _, passed = self.eliminate(x_out, d, 1, pass_last=True)
+                a, _, mean = as_prior(passed[0], self.slot_dims[1], f"keyframe {first}")
                 # the prior on keyframe first + 1 at x̄ = its estimate now: R = A, mean A⁻¹b
-                tau = (a, np.linalg.solve(a, b), [estimate[k].copy()
-                                                  for k in clusters[first + 1]])
+                tau = (a, mean, [estimate[k].copy() for k in clusters[first + 1]])
             t4 = time.perf_counter()
-            iterations, st, why = int(info[0]), STATUSES[int(info[1])], REASONS[int(info[2])]
-            total_iterations += iterations
-            oldest = max(0, j - window + 1)
-            snapshot = [None] * len(program.variables)
-            for c in range(oldest, j + 1):
-                for k in clusters[c]:
-                    snapshot[index[k]] = estimate[k].tolist()
+            iterations, st, why = stream._info(info)
             records.append({"keyframe": j, "mode": "fixed-lag", "first": first,
                             "iterations": iterations, "status": st, "reason": why,
                             "cost": float(errors[1]), "seconds": t4 - t0,
                             "solve_seconds": t2 - t1, "marginal_seconds": t4 - t3,
-                            "values": snapshot})
+                            "values": stream._snapshot(estimate, max(0, j - window + 1), j)})
             if progress is not None:
                 progress(records[-1])
-            if st != "converged" and status == "converged":
-                status, reason = st, f"keyframe {j}: {why}"
-        storage = {k: v.copy() for k, v in estimate.items()}
-        return NativeStreamResult(values_from_storage(program, storage), storage, status,
-                                  reason, total_iterations, records, initial_error,
-                                  self.template)
+        return stream._result(estimate, records, initial_error, self.template)
 
+
+class IncrementalStream:
+    """The native solver running the simulator's incremental plan (``solve_incremental``:
+    paper A's re-elimination of the newest K clusters on the kept Bayes net, batch steps
+    re-eliminating every cluster). One :class:`WindowSolver` per template size: the largest
+    incremental window (K, or more when a factor reaches further back) serves every
+    incremental update, held slots padding the first ones; each batch step larger than that
+    has its own template of its keyframes, compiled once per distinct size
+    (``progress_build(size, index, count)`` before each). ``window_solver`` makes the window
+    solvers (default :class:`WindowSolver`; the HLS C simulation passes its own)."""
+
+    def __init__(self, graph: Graph, program: Program, config=None, progress_build=None,
+                 window_solver=None):
+        plan = program.schedule.incremental
+        if plan is None:
+            raise NativeStreamError("the Program has no incremental plan (--incremental K)")
+        if program.schedule.structure_class != "chain" or not program.schedule.clusters:
+            raise NativeStreamError("native streaming needs a chain of keyframes")
+        self.graph, self.program, self.plan = graph, program, plan
+        clusters = program.schedule.clusters
+        cluster_of = {k: c for c, keys in enumerate(clusters) for k in keys}
+        spans = [[cluster_of[str(k)] for k in f.keys] for f in graph.factors]
+        self.updates = []  # (keyframe, batch, first)
+        for u in plan.updates:
+            early = [min(s) for s in spans if max(s) == u.keyframe]
+            self.updates.append((u.keyframe, u.mode == "batch",
+                                 min([u.clusters[0], *early])))
+        steady = max([j - first + 1 for j, batch, first in self.updates if not batch],
+                     default=1)
+        sizes = sorted({steady} | {j - first + 1 for j, batch, first in self.updates
+                                   if batch and j - first + 1 > steady})
+        make = window_solver or (lambda size: WindowSolver(graph, program, size, config))
+        self.solvers = {}
+        for i, size in enumerate(sizes):
+            if progress_build is not None:
+                progress_build(size, i, len(sizes))
+            self.solvers[size] = make(size)
+        self.sizes = sizes
+        types = self.solvers[sizes[0]].types
+        self.geometry = _ClusterGeometry(types[0])
+
+    def solver_for(self, size: int) -> WindowSolver:
+        """The smallest compiled template that holds a window of ``size`` keyframes."""
+        return self.solvers[next(s for s in self.sizes if s >= size)]
+
+    def run(self, data: ProblemData, progress=None) -> NativeStreamResult:
+        stream, geometry = _Stream(self.program), self.geometry
+        estimate = stream._start(data)
+        conds, taus, records, initial_error = {}, {}, [], None
+        for n, (j, batch, first) in enumerate(self.updates):
+            win = self.solver_for(j - first + 1)
+            if n == 0:  # once, untimed: the arrays against each template's layout
+                for w in self.solvers.values():
+                    w._check_once(*w.assemble(estimate, 0, 0, None))
+            t0 = time.perf_counter()
+            prior = None
+            if first > 0:
+                rows, lin = taus[first]
+                a, _, mean = as_prior(rows, win.slot_dims[0], f"keyframe {first - 1}")
+                prior = (a, mean, lin)
+            x, d = win.assemble(estimate, first, j, prior)
+            t1 = time.perf_counter()
+            x_out, errors, info = win.solve(x, d)
+            t2 = time.perf_counter()
+            if n == 0:
+                initial_error = float(errors[0])
+            win.store(estimate, x_out, first, j)
+            if first > 0:  # the newest kept conditional, re-expressed at its parent's estimate
+                (r, s, dv), lin, lin_next = conds[first - 1]
+                x_first = stream._cluster(estimate, first)
+                shift, jac = geometry.local_jacobian(lin_next, x_first)
+                conds[first - 1] = ((r, s @ jac, dv - s @ shift), lin, x_first)
+            window_conds, passed = win.eliminate(x_out, d, j - first + 1)
+            for i, cond in enumerate(window_conds):
+                c = first + i
+                lin_next = stream._cluster(estimate, c + 1) if c < j else None
+                conds[c] = (cond, stream._cluster(estimate, c), lin_next)
+                if c < j:
+                    taus[c + 1] = (passed[i], [estimate[k].copy() for k in stream.clusters[c + 1]])
+            for c in range(first - 1, -1, -1):  # back-substitution through the kept part
+                (r, s, dv), lin, lin_next = conds[c]
+                rhs = dv - s @ geometry.local(lin_next, stream._cluster(estimate, c + 1))
+                stream._set_cluster(estimate, c, geometry.retract(lin, np.linalg.solve(r, rhs)))
+            t3 = time.perf_counter()
+            iterations, st, why = stream._info(info)
+            records.append({"keyframe": j, "mode": "batch" if batch else "incremental",
+                            "first": first, "iterations": iterations, "status": st,
+                            "reason": why, "cost": float(errors[1]), "seconds": t3 - t0,
+                            "solve_seconds": t2 - t1, "store_seconds": t3 - t2,
+                            "window_keyframes": win.size,
+                            "values": stream._snapshot(estimate, 0, j)})
+            if progress is not None:
+                progress(records[-1])
+        return stream._result(estimate, records, initial_error,
+                              self.solvers[self.sizes[0]].template)

@@ -5,8 +5,8 @@
     fgc verify   SPEC [--json F]                      simulator vs GTSAM's LM, exit 1 if FAILED
     fgc run      SPEC --backend native|sim|hls        solve with the generated solver
     fgc stream   SPEC --window W | --incremental K    keyframes one at a time (simulator;
-                 [--backend sim|hls|native]           hls: updates priced on the HLS plan;
-                                                      native: --window only)
+                 [--backend sim|hls|native]           native solver; hls: C simulation per
+                                                      update, priced on the HLS plan)
     fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
     fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
     fgc metrics  EST.tum REF.tum [--align se3]        ATE / RPE (translation m, rotation deg)
@@ -83,7 +83,7 @@ def _lm_limits(args) -> dict:
 def _streaming(args) -> bool:
     """Whether keyframe-by-keyframe mode was asked for (--incremental or --window); checks
     the combination and refuses the backends that run batch solves only."""
-    from fgc.app.streaming import HW_REFUSAL, NATIVE_REFUSAL, check_mode
+    from fgc.app.streaming import HW_REFUSAL, check_mode
 
     incremental, window = getattr(args, "incremental", None), getattr(args, "window", None)
     batch_every = getattr(args, "batch_every", None)
@@ -91,10 +91,10 @@ def _streaming(args) -> bool:
         return False
     check_mode(incremental, batch_every, window)
     backend = getattr(args, "backend", "sim")
-    if args.command == "stream" and backend == "native":
-        if incremental is not None or batch_every is not None:
-            raise FgcError(f"--backend native: {NATIVE_REFUSAL}")
-    elif backend != "sim" and not (args.command == "stream" and backend == "hls"):
+    if getattr(args, "model_only", False) and backend != "hls":
+        raise FgcError("--model-only prices the simulator's updates on the HLS plan: it needs "
+                       "--backend hls")
+    if backend != "sim" and args.command != "stream":
         raise FgcError(f"fgc {args.command} --backend {backend}: {HW_REFUSAL}")
     return True
 
@@ -474,10 +474,13 @@ def _cmd_stream(args) -> int:
     n = len(program.schedule.clusters)
     backend = getattr(args, "backend", "sim")
     hls = backend == "hls"
-    who = "native solver" if backend == "native" else "simulator"
+    model_only = hls and getattr(args, "model_only", False)
+    runs = "sim" if model_only else backend
+    who = {"native": "native solver", "hls": "HLS C simulation"}.get(runs, "simulator")
+    timed = {"native": "native", "hls": "csim"}.get(runs, "simulator")
     if not quiet:
         if hls:
-            print(_stream_hls_head(args, program, n, window), flush=True)
+            print(_stream_hls_head(args, program, n, window, model_only), flush=True)
         else:
             print(f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, "
                   f"{who} {program.solver.precision}; per keyframe: the accelerator plan's "
@@ -506,8 +509,13 @@ def _cmd_stream(args) -> int:
               f"{update.seconds * 1e3:8.2f} ms ({who} wall time); "
               f"{_newest_text(update, program)}", flush=True)
 
-    result = streaming.run_stream(program, data, window, progress, backend=backend,
-                                  graph=graph)
+    def building(size, index, count) -> None:
+        if not quiet:
+            print(f"  compiling the {who}'s {size}-keyframe template window ({index + 1} of "
+                  f"{count}; built once, reused by every update of that size)", flush=True)
+
+    result = streaming.run_stream(program, data, window, progress, backend=runs,
+                                  graph=graph, progress_build=building)
     from fgc.app.run_report import require_finite_start
 
     require_finite_start(graph, result)
@@ -519,8 +527,8 @@ def _cmd_stream(args) -> int:
               "incremental", "window": window, "incremental_k": program.solver.incremental_k,
               "batch_every": program.solver.batch_every, "status": result.status,
               "reason": result.reason, "iterations": result.iterations,
-              "backend": backend, "model_estimate": priced,
-              f"{'native' if backend == 'native' else 'simulator'}_update_time": times,
+              "backend": backend, "solved_by": who, "model_estimate": priced,
+              f"{timed}_update_time": times,
               "accuracy_vs_batch_optimum": acc,
               "updates": [{k: v for k, v in u.items() if k != "values"}
                           for u in result.updates]}
@@ -556,16 +564,23 @@ def _cmd_stream(args) -> int:
     return EXIT_OK if result.status == "converged" else EXIT_FAILED
 
 
-def _stream_hls_head(args, program, n: int, window) -> str:
+def _stream_hls_head(args, program, n: int, window, model_only: bool) -> str:
     solver = program.solver
     unit = (f"n_u = {solver.units} Update units" if solver.linear == "qr"
             else f"#CPE = {solver.cpe}")
-    return (f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, simulator "
-            f"{solver.precision}; per keyframe: the accelerator's latency from the update model "
-            f"on the HLS plan ({solver.linear.upper()}, {unit}, {solver.precision}, "
-            f"{solver.clock_mhz:g} MHz; model estimate: the plan's terms, then the assumed "
-            "ones) beside the simulator's wall time and estimate. The accelerator's incremental "
-            "mode is not emitted in C++: the estimate comes from the simulator")
+    scalar = "double" if solver.precision == "float64" else "float"
+    who = (f"simulator {solver.precision}" if model_only else
+           f"the HLS design's C simulation ({scalar}) per update, the kept Bayes net on the host")
+    tail = ("The accelerator's incremental mode is not emitted in C++: the estimate comes from "
+            "the simulator" if model_only else
+            "Each update's window is solved by the C simulation of an emitted template window "
+            "(built once); its conditionals, marginal prior and back-substitution are kept on "
+            "the host, not on chip")
+    return (f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, {who}; per "
+            f"keyframe: the accelerator's latency from the update model on the HLS plan "
+            f"({solver.linear.upper()}, {unit}, {solver.precision}, {solver.clock_mhz:g} MHz; "
+            "model estimate: the plan's terms, then the assumed ones) beside the wall time and "
+            f"estimate. {tail}")
 
 
 def _cmd_verify_stream(args) -> int:
@@ -891,8 +906,8 @@ def _solver_args(p: argparse.ArgumentParser, design_space: bool) -> None:
 def _streaming_args(name: str, p: argparse.ArgumentParser) -> None:
     if name not in ("compile", "simulate", "verify", "run", "report", "stream"):
         return
-    g = p.add_argument_group("keyframe by keyframe (the simulator; fgc stream --backend hls "
-                             "prices the updates on the HLS plan; issue 19)")
+    g = p.add_argument_group("keyframe by keyframe (the simulator; fgc stream --backend native "
+                             "or hls solves each update in compiled code; issue 19)")
     g.add_argument("--incremental", type=_positive_int, metavar="K",
                    help="incremental smoothing: each keyframe re-eliminates the newest K "
                         "clusters (SolverConfig.incremental_k)")
@@ -922,11 +937,15 @@ def _command_args(name: str, p: argparse.ArgumentParser) -> None:
         p.add_argument("--tum", metavar="FILE", help="write the streamed trajectory (TUM)")
         p.add_argument("--backend", choices=_backend_names(), default="sim",
                        help="sim: the simulator's updates and the plan's batch-iteration "
-                            "price; hls: the same updates priced by the accelerator plan's "
-                            "update model, --units / --cpe / --precision / --clock as for "
-                            "the HLS design (model estimates; its incremental mode is not "
-                            "emitted); native: the native solver solves each update "
-                            "(fixed-lag --window only)")
+                            "price; native: the native solver solves each update; hls: the "
+                            "HLS design's C simulation solves each update (--precision "
+                            "float64: double, float32: float), priced by the accelerator "
+                            "plan's update model, --units / --cpe / --clock as for the HLS "
+                            "design (model estimates). native and hls compile a template "
+                            "window once and keep the Bayes net on the host")
+        p.add_argument("--model-only", action="store_true",
+                       help="with --backend hls: no C simulation; the simulator's updates "
+                            "priced by the update model")
     if name in ("simulate", "verify", "run", "stream"):
         p.add_argument("--values", metavar="FILE",
                        help="write the optimised values: .g2o, .tum/.txt (TUM poses, t = key "
@@ -972,9 +991,10 @@ _COMMANDS = (
      "the solve did not converge", "also write the report as JSON"),
     ("report", _cmd_report, "the compiled design at a glance: blocks, schedule, storage, "
      "cycles, resources, energy", None, "also write the report as JSON"),
-    ("stream", _cmd_stream, "feed a chain's keyframes one at a time to the simulator "
-     "(--window W or --incremental K): per-keyframe latency and estimate, trajectory, accuracy "
-     "against the batch optimum", "the stream did not converge", "also write the report as "
+    ("stream", _cmd_stream, "feed a chain's keyframes one at a time to the simulator, the "
+     "native solver or the HLS C simulation (--window W or --incremental K): per-keyframe "
+     "latency and estimate, trajectory, accuracy against the batch optimum",
+     "the stream did not converge", "also write the report as "
      "JSON"),
     ("sweep", _cmd_sweep, "design-space exploration: latency, resources, energy and accuracy "
      "vs GTSAM per design, Pareto plot", "a design did not converge or failed", None),

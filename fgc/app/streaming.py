@@ -1,11 +1,17 @@
-"""Streaming: a chain example's keyframes fed one at a time to the simulator's incremental or
-fixed-lag update, per-keyframe results, the trajectory and its accuracy against the batch
-optimum. Behind ``fgc stream`` and :func:`fgc.stream`; ``fgc simulate / verify`` with
-``--incremental`` or ``--window`` use the same pieces.
+"""Streaming: a chain example's keyframes fed one at a time to an incremental or fixed-lag
+update, per-keyframe results, the trajectory and its accuracy against the batch optimum. Behind
+``fgc stream`` and :func:`fgc.stream`; ``fgc simulate / verify`` with ``--incremental`` or
+``--window`` use the same pieces.
 
-Modes (the simulator; the native solver runs the fixed-lag window too, ``backend="native"``:
-:mod:`fgc_backends.native.stream`; the HLS design runs batch solves — issue 19: the
-accelerator's incremental mode is not emitted, :func:`update_model` prices its updates):
+Who runs the updates (``run_stream(..., backend=)``): the simulator (``"sim"``, the reference
+semantics: the emitted simulator's incremental module); the native solver (``"native"``,
+:mod:`fgc_backends.native.stream`) and the HLS design's C simulation (``"hls"``,
+:mod:`fgc_backends.hls.stream`) run the same updates on a *template* window Program compiled
+once, each update's LM solve in the compiled code and the kept Bayes net (conditionals, the
+marginal prior, the store elimination and back-substitution) on the host in NumPy — for the HLS
+path that is not paper A's on-chip state, see docs/hls.md.
+
+Modes:
 
 - **incremental** (``SolverConfig.incremental_k`` = K, ``batch_every``): each keyframe
   re-eliminates the newest K clusters on the kept Bayes net (paper A), batch steps re-eliminate
@@ -21,8 +27,8 @@ Latency: the accelerator's cost model (``plan_cost``) prices batch iterations of
 update's window (a model estimate of an approximation: the window's dense marginal prior is
 priced as the chain's own priors); the simulator's wall time is reported beside it.
 :func:`update_model` (``fgc stream --backend hls``) prices each update as the plan's units would
-run the simulator's update: the window's factors and clusters only, the kept conditionals, batch
-keyframes as batch iterations of their Program (:mod:`fgc_backends.hls.update`, docs/hls.md).
+run it: the window's factors and clusters only, the kept conditionals, batch keyframes as batch
+iterations of their Program (:mod:`fgc_backends.hls.update`, docs/hls.md).
 """
 
 from __future__ import annotations
@@ -39,12 +45,9 @@ from fgc.frontend.dsl import Graph
 from fgc.frontend.geometry import Pose2, Pose3
 
 UNPRICED = "one-keyframe windows and window sizes past the first four others seen"
-HW_REFUSAL = ("incremental and fixed-lag modes run in the simulator (fgc stream --backend native "
-              "runs the fixed-lag window on the native solver; the HLS design runs batch solves, "
-              "its incremental mode is not emitted; fgc stream --backend hls prices the updates "
-              "on its plan)")
-NATIVE_REFUSAL = ("the native solver streams the fixed-lag window (--window W); the incremental "
-                  "plan (--incremental) runs in the simulator only")
+HW_REFUSAL = ("incremental and fixed-lag modes run keyframe by keyframe in fgc stream (--backend "
+              "sim, native or hls: the simulator, the native solver or the HLS design's C "
+              "simulation solves each update); this command runs batch solves on this backend")
 
 
 @dataclass(frozen=True)
@@ -100,20 +103,25 @@ def compile_stream(graph: Graph, solver=None, incremental: int | None = None,
 
 
 def run_stream(program, data, window: int | None = None, progress=None, precision=None,
-               backend: str = "sim", graph: Graph | None = None):
-    """Run the simulator keyframe by keyframe (incremental plan if the Program has one, else
-    the fixed-lag ``window``); ``progress(KeyframeResult)`` after each keyframe. Returns the
-    SimResult. ``backend="native"``: the native solver runs the fixed-lag window instead (it
-    needs the ``graph`` the Program was compiled from; returns a
-    :class:`fgc_backends.native.stream.NativeStreamResult`)."""
+               backend: str = "sim", graph: Graph | None = None, scalar: str | None = None,
+               progress_build=None):
+    """Run the updates keyframe by keyframe (the incremental plan if the Program has one, else
+    the fixed-lag ``window``); ``progress(KeyframeResult)`` after each keyframe.
+
+    ``backend="sim"``: the simulator (returns its SimResult). ``"native"``: the native solver;
+    ``"hls"``: the HLS design's C simulation (``scalar`` "double" or "float", default the
+    Program's precision). Both need the ``graph`` the Program was compiled from, compile their
+    template windows first (``progress_build(size, index, count)`` before each) and return a
+    :class:`fgc_backends.native.stream.NativeStreamResult`."""
     from fgc_backends import load
 
-    if backend == "native":
-        return _run_native_stream(program, data, window, progress, graph)
-    sim = load("sim")
     incremental = program.schedule.incremental is not None
     if not incremental and window is None:
         raise FgcError("streaming needs --incremental K or --window W")
+    if backend in ("native", "hls"):
+        return _run_compiled_stream(program, data, window, progress, graph, backend, scalar,
+                                    progress_build)
+    sim = load("sim")
     callback = None
     if progress is not None:
         def callback(raw):
@@ -122,18 +130,34 @@ def run_stream(program, data, window: int | None = None, progress=None, precisio
                    window=window, progress=callback)
 
 
-def _run_native_stream(program, data, window, progress, graph):
-    from fgc_backends.native.stream import FixedLagStream
+def _run_compiled_stream(program, data, window, progress, graph, backend, scalar,
+                         progress_build):
+    from fgc_backends.native.stream import FixedLagStream, IncrementalStream
 
-    if program.schedule.incremental is not None or window is None:
-        raise FgcError(NATIVE_REFUSAL)
     if graph is None:
-        raise FgcError("native streaming needs the graph the Program was compiled from")
+        raise FgcError(f"{backend} streaming needs the graph the Program was compiled from")
+    incremental = program.schedule.incremental is not None
+    if backend == "hls":
+        from fgc_backends.hls.stream import CsimFixedLagStream, incremental_stream
+
+        scalar = scalar or ("double" if program.solver.precision == "float64" else "float")
+        if incremental:
+            runner = incremental_stream(graph, program, scalar, progress_build=progress_build)
+        else:
+            if progress_build is not None:
+                progress_build(window + 1, 0, 1)
+            runner = CsimFixedLagStream(graph, program, window, scalar)
+    elif incremental:
+        runner = IncrementalStream(graph, program, progress_build=progress_build)
+    else:
+        if progress_build is not None:
+            progress_build(window + 1, 0, 1)
+        runner = FixedLagStream(graph, program, window)
     callback = None
     if progress is not None:
         def callback(raw):
             progress(keyframe_result(program, raw))
-    return FixedLagStream(graph, program, window).run(data, callback)
+    return runner.run(data, callback)
 
 
 def keyframe_result(program, record: dict) -> KeyframeResult:
@@ -151,11 +175,11 @@ def keyframe_result(program, record: dict) -> KeyframeResult:
 
 
 def stream(graph: Graph, window: int | None = None, incremental: int | None = None,
-           batch_every=None, solver=None) -> Iterator[KeyframeResult]:
-    """Feed ``graph``'s keyframes to the simulator one at a time and yield each keyframe's
-    :class:`KeyframeResult` as soon as its update is done (the simulator runs in a worker
-    thread). Either ``window`` (fixed-lag, W keyframes) or ``incremental`` (K, with optional
-    ``batch_every``)."""
+           batch_every=None, solver=None, backend: str = "sim") -> Iterator[KeyframeResult]:
+    """Feed ``graph``'s keyframes one at a time to ``backend`` (sim, native or hls, as
+    :func:`run_stream`) and yield each keyframe's :class:`KeyframeResult` as soon as its update
+    is done (the updates run in a worker thread). Either ``window`` (fixed-lag, W keyframes) or
+    ``incremental`` (K, with optional ``batch_every``)."""
     from fgc.ir.datafile import problem_data
 
     if window is None and incremental is None:
@@ -166,7 +190,8 @@ def stream(graph: Graph, window: int | None = None, incremental: int | None = No
 
     def work():
         try:
-            run_stream(program, data, window, lambda r: results.put(("update", r)))
+            run_stream(program, data, window, lambda r: results.put(("update", r)),
+                       backend=backend, graph=graph)
             results.put(("done", None))
         except BaseException as exc:  # handed to the consumer, raised there
             results.put(("error", exc))

@@ -1,0 +1,197 @@
+"""Streaming on the HLS design's C simulation (issue 19): per keyframe, the emitted accelerator's
+testbench solves the update's window; the host holds the kept Bayes net.
+
+The windows are the native stream's (:mod:`fgc_backends.native.stream`): a *template* window
+Program — the chain's first S keyframes with a ``MarginalPrior…`` factor on every keyframe — is
+emitted once as an HLS project (:func:`fgc_backends.hls.emitter.emit`, ``double`` for agreement
+with the simulator, ``float`` as the hardware; kept in fgc's cache directory by content hash,
+with its built testbench once a stream has built it, and copied into each stream's own
+folder), its C simulation built on the first update and re-run on every later update's numbers
+(:func:`fgc_backends.hls.build.run_csim` with ``reference=False``: the testbench reads the new
+``data.txt``, nothing is rebuilt).
+
+What runs where. The C simulation runs each window's LM solve. Everything between updates runs
+on the host in Python, as for the native stream: the kept conditionals, the marginal prior τ a
+window's oldest keyframe carries, the undamped store elimination at the window's optimum, the
+back-substitution down to keyframe 0 and the first-order re-expression of the newest kept
+conditional. The store elimination needs the window's whitened rows at the optimum, which the
+testbench does not report: the host linearises with the native ``double`` build of the same
+template (``fgc_rows``). So in this path the kept Bayes net lives on the host, not on chip as in
+paper A's accelerator; the on-chip state between calls is not emitted.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import shutil
+import tempfile
+import weakref
+from pathlib import Path
+
+import numpy as np
+
+from fgc.ir.codes import REASONS, STATUSES
+from fgc.ir.datafile import ProblemData
+from fgc_backends.cfamily.tables import factor_data_words
+from fgc_backends.native.stream import FixedLagStream, IncrementalStream, WindowSolver
+
+
+class _Csim:
+    """The C simulation of a template window: emitted into ``out_dir`` (a private temporary
+    folder if None), built on the first :meth:`solve`."""
+
+    def _emit_csim(self, scalar: str, out_dir) -> None:
+        from fgc_backends.hls.config import HlsConfig
+        from fgc_backends.hls.emitter import HlsProject
+
+        if out_dir is None:
+            tmp = tempfile.mkdtemp(prefix="fgc-hls-stream-")
+            weakref.finalize(self, _remove, tmp)
+            out_dir = tmp
+        self.scalar = scalar
+        config = HlsConfig(scalar=scalar)
+        self._cached = _cached_project(self.template, config)
+        work = Path(out_dir) / f"window{self.size}"
+        shutil.rmtree(work, ignore_errors=True)
+        shutil.copytree(self._cached.directory, work)  # its mtimes too: a built one stays built
+        self.project = HlsProject(work, self._cached.name,
+                                  tuple(work / f.name for f in self._cached.files), config)
+        self._built = (self._cached.directory / _BUILT).is_file()
+        t = self.template
+        self._factor_words = [factor_data_words(t, spec.block) for spec in t.factors]
+
+    def _data(self, x: np.ndarray, d: np.ndarray) -> ProblemData:
+        t = self.template
+        variables, pos = [], 0
+        for v in t.variables:
+            variables.append(x[pos:pos + v.storage_dim])
+            pos += v.storage_dim
+        factors, pos = [], 0
+        for n in self._factor_words:
+            factors.append(d[pos:pos + n])
+            pos += n
+        return ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint)
+
+    def solve(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The window's LM solve by the C simulation: (x, errors, info) in the native solver's
+        layout (x the template's flat storage, errors (initial, final), info (iterations,
+        status code, reason code))."""
+        from fgc_backends.hls import build
+
+        data = self._data(x, d)
+        if self.scalar == "double":
+            result = build.run_csim(self.project, self.template, data, reference=False)
+        else:
+            # run_csim's float verdict re-checks the window's conditioning in the simulator,
+            # which refuses the template's absent factors (zero square-root information): the
+            # same testbench run, its result read without that verdict (the stream is judged
+            # against the simulator per keyframe instead)
+            from fgc.ir.datafile import write_data
+            from fgc_backends.cfamily.results import REFERENCE_FILE, read_result
+
+            folder = self.project.directory
+            write_data(data, folder / build.DATA_FILE)
+            (folder / REFERENCE_FILE).unlink(missing_ok=True)
+            (folder / build.RESULT_FILE).unlink(missing_ok=True)
+            build.make(self.project, "csim")
+            result = read_result(folder / build.RESULT_FILE, self.template)
+        if not self._built:  # the first run built the testbench: keep the build for later
+            _keep_build(self.project, self._cached.directory)
+            self._built = True
+        x_out = np.concatenate([np.asarray(result.values[v.key], dtype=np.float64)
+                                for v in self.template.variables])
+        info = np.array([result.iterations, STATUSES.index(result.status),
+                         REASONS.index(result.reason)], dtype=np.int32)
+        return x_out, np.array([result.initial_error, result.final_error]), info
+
+
+def _remove(folder: str) -> None:
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+_BUILT = ".fgc-stream-built"
+
+
+def _project_key(template, config) -> str:
+    """Content hash of what the emitted and built testbench depends on: the template Program,
+    the config, fgc, the HLS backend's and C-family layer's sources and the host."""
+    import fgc
+    from fgc_backends.native.solver import host_key
+
+    h = hashlib.sha256(template.to_json().encode())
+    h.update(repr(config).encode())
+    h.update(fgc.__version__.encode())
+    h.update(host_key().encode())
+    backends = Path(__file__).resolve().parent.parent
+    for path in sorted([*(backends / "hls").rglob("*"), *(backends / "cfamily").rglob("*.py")]):
+        if path.is_file() and path.name != "stream.py" and "__pycache__" not in path.parts:
+            h.update(str(path.relative_to(backends)).encode())
+            h.update(path.read_bytes())
+    return h.hexdigest()[:24]
+
+
+def _cached_project(template, config):
+    """The template's emitted project in ``<fgc cache>/hls-stream/<hash>`` (emitted once per
+    content hash; a stream copies it into its own folder, as two streams may run at once)."""
+    from fgc.compiler.cache import cache_dir
+    from fgc_backends.cfamily.names import identifier
+    from fgc_backends.hls.emitter import HlsProject, emit
+
+    folder = cache_dir() / "hls-stream" / _project_key(template, config)
+    if not folder.is_dir():
+        staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
+        shutil.rmtree(staging, ignore_errors=True)
+        emit(template, staging, config)
+        try:
+            os.replace(staging, folder)
+        except OSError:  # another process finished first: use its project
+            shutil.rmtree(staging, ignore_errors=True)
+    files = tuple(sorted(p for p in folder.iterdir() if p.is_file() and p.name != _BUILT))
+    return HlsProject(folder, identifier(template.name), files, config)
+
+
+def _keep_build(project, cached: Path) -> None:
+    """Copy a stream's built project back into the cache (atomically; first one wins)."""
+    staging = cached.with_name(f"{cached.name}.built{os.getpid()}")
+    shutil.rmtree(staging, ignore_errors=True)
+    shutil.copytree(project.directory, staging)
+    (staging / _BUILT).write_text("built\n")
+    old = cached.with_name(f"{cached.name}.old{os.getpid()}")
+    try:
+        os.replace(cached, old)
+        os.replace(staging, cached)
+    except OSError:
+        shutil.rmtree(staging, ignore_errors=True)
+    shutil.rmtree(old, ignore_errors=True)
+
+
+def _native_double():
+    from fgc_backends.native.config import NativeConfig
+
+    return NativeConfig(scalar="double")
+
+
+class CsimWindow(_Csim, WindowSolver):
+    """A template window solved by its HLS C simulation (``scalar`` "double" or "float"); the
+    host's rows at the optimum from the native double build of the same template."""
+
+    def __init__(self, graph, program, size: int, scalar: str = "double", out_dir=None):
+        WindowSolver.__init__(self, graph, program, size, _native_double())
+        self._emit_csim(scalar, out_dir)
+
+
+class CsimFixedLagStream(_Csim, FixedLagStream):
+    """The fixed-lag window of ``window`` keyframes, each update solved by the C simulation."""
+
+    def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None):
+        FixedLagStream.__init__(self, graph, program, window, _native_double())
+        self._emit_csim(scalar, out_dir)
+
+
+def incremental_stream(graph, program, scalar: str = "double", out_dir=None,
+                       progress_build=None) -> IncrementalStream:
+    """The incremental plan with every window solved by the C simulation of its template."""
+    return IncrementalStream(graph, program, progress_build=progress_build,
+                             window_solver=lambda size: CsimWindow(graph, program, size, scalar,
+                                                                   out_dir))
