@@ -197,7 +197,7 @@ struct Dump {
                                                    ("cholesky", "cpe", 4)])
 def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     """The unit headers' cycle log (-DFGC_COUNT_CYCLES) of a C simulation run: the processes
-    that ran in one reflection / one CPE round are the plan's, n_u + 3 or #CPE + 2."""
+    that ran in one reflection / one CPE round are the plan's, n_u + 4 or #CPE + 2."""
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.plan import process_network
     graph = lio.build(N=6) if linear == "qr" else pose_graph.build()
@@ -211,8 +211,9 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     procs, _ = process_network(accel_plan(program, project.config))
     region = "qr_reflection" if linear == "qr" else "cpe_round"
     sets = 2 if linear == "qr" else 1  # LIO is a two-ended chain: two unit sets
-    # QR: broadcast, the Updates, Evaluate and collect; Cholesky: feed, the CPEs and drain
-    per_set = value + 3 if linear == "qr" else value + 2
+    # QR: broadcast, qr_finish, the Updates, Evaluate and collect; Cholesky: feed, the CPEs and
+    # drain
+    per_set = value + 4 if linear == "qr" else value + 2
     assert ran == {region: per_set} and len(procs) == sets * per_set
 
 
