@@ -766,8 +766,19 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
             tables, i, opts.units, max_w, damping, timing))) for i in level]
         phases.append(Phase(f"qr_stack_level{li}", False, tuple(stack), linear=True))
-        procs = _assign([p for st, p in step_proc if st.index in level], sets, "qr", li)
-        phases.append(Phase(f"qr_level{li}", True, procs, linear=True))
+        # eliminate_all hands a level's steps to the unit sets `sets` at a time, in level
+        # order: each chunk a DATAFLOW region of its sets side by side, the chunks one after
+        # another
+        by_index = {st.index: p for st, p in step_proc}
+        chunks = [_assign([by_index[i] for i in level[c:c + sets]], sets, "qr", li)
+                  for c in range(0, len(level), sets)]
+        if len(chunks) == 1:
+            phases.append(Phase(f"qr_level{li}", True, chunks[0], linear=True))
+        else:
+            phases.append(Phase(f"qr_level{li}", False, tuple(
+                Process(f"qr{li}_chunk{c}", "qr_sets", (Loop(
+                    f"qr{li}_chunk{c}", 1, 1, phase_cycles(Phase("chunk", True, procs))),))
+                for c, procs in enumerate(chunks)), linear=True))
         phases.append(Phase(f"qr_commit_level{li}", False, tuple(
             Process(f"commit{i}", "qr_commit", tuple(commit_loops(tables, i, timing, False)))
             for i in level), linear=True))
@@ -879,7 +890,8 @@ def _sizes(program) -> dict:
 
 
 def _assign(procs, sets, tag, li):
-    """Independent steps of one level on ``sets`` unit sets, longest first (one process/set)."""
+    """Independent steps on ``sets`` unit sets, longest first (one process per set that has
+    a step)."""
     loads = [[] for _ in range(sets)]
     for p in sorted(procs, key=lambda p: -p.cycles):
         i = min(range(sets), key=lambda j: sum(q.cycles for q in loads[j]))
