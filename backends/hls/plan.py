@@ -309,11 +309,6 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     rows, cols = nz.shape
     k = min(rows, cols)
 
-    def dot(n):
-        kk = max(1, min(n, p))
-        tree = math.ceil(math.log2(kk)) if kk > 1 else 0
-        return math.ceil(la / kk), lm + la * (1 + tree)
-
     # the active rows of each column as the units meet them (the fill of earlier reflections)
     active = []
     for j in range(k):
@@ -328,6 +323,7 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
         nz[j, j] = True
         active.append(len(act))
     tree = math.ceil(math.log2(p)) if p > 1 else 0
+    tree1 = math.ceil(math.log2(p + 1))  # the fold of the P partials and the pivot's term
     out = []
     for j in range(-1, k):
         n = active[j] if j >= 0 else 0
@@ -341,11 +337,20 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             c0 = j + 1 + (u - (j + 1)) % units
             next_here = c0 == j + 1 and c0 < k
             fused = n > 1 and next_here
-            # the vector loop waits for v_0, the tail words for tau (qr_finish's)
-            waits += [(len(procs), 1, 1, "v0"), (len(procs), 2, 1, "tau")]
+            # the n - 1 words below the pivot (the next pivot column's dot over them), then v_0
+            # (waiting for qr_finish's square root: its term is one more leaf of the fold's
+            # tree), then tau and R_jj (waiting for qr_finish's divide)
+            below = max(n - 1, 0)
             loops = [Loop("header", 1, 1, 1),
-                     Loop("vector_dot" if fused else "vector", n, *(dot(n) if fused else (1, 1))),
-                     Loop("tail", 2, 1, 1)]
+                     Loop("vector_dot", below, 1, lm + la) if fused else
+                     Loop("vector", below, 1, 1)]
+            waits.append((len(procs), len(loops), 1, "v0"))
+            if fused:
+                loops += [Loop("pivot_term", 1, 1, lm), Loop("fold", 1, 1, la * tree1)]
+            else:
+                loops.append(Loop("pivot_word", 1, 1, 1))
+            waits.append((len(procs), len(loops), 1, "tau"))
+            loops.append(Loop("tail", 2, 1, 1))
             if n > 0 and j >= 0 and j % units == u:
                 loops.append(Loop("pivot_column", n, 1, 1))
             if next_here:  # updated and streamed to the Evaluate first

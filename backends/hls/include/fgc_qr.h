@@ -256,28 +256,45 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
 #pragma HLS UNROLL
         part0[t] = T(0);
     }
-    // the vector (the n - 1 words below the pivot from the broadcast, then v_0 from qr_finish:
-    // the loop waits for it), and v.x of the next pivot column with it: trip n, II ceil(La /
-    // min(n, P)), depth Lm + La (1 + ceil(log2 min(n, P))) (the dot's; II 1, depth 1 if there
-    // is no dot)
-    FGC_WAIT("qr_update", U, "qr_finish", 0, "v0");
-    for (int a = 0; a < n; ++a) {
+    // the n - 1 words below the pivot from the broadcast, and v.x of the next pivot column over
+    // them (a partial is met again P >= La iterations later): trip n - 1, II 1, depth Lm + La
+    // (II 1, depth 1 if there is no dot)
+    const int below = n > 1 ? n - 1 : 0;
+    for (int a = 1; a <= below; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part0 inter false
-        const qr_word<T> x = a + 1 < n ? vin.read() : tin.read();
-        const int at_a = a + 1 < n ? a + 1 : 0;
-        v[at_a] = x.val;
-        at[at_a] = x.idx;
-        if (fused) part0[a % P] += x.val * bank[x.idx][l0];
+        const qr_word<T> x = vin.read();
+        v[a] = x.val;
+        at[a] = x.idx;
+        if (fused) part0[(a - 1) % P] += x.val * bank[x.idx][l0];
     }
     if (fused) {
-        FGC_CYCLES("qr_update", U, "vector_dot", n, dot_ii(n, P, CFG::ADD_LAT),
-                   dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
+        FGC_CYCLES("qr_update", U, "vector_dot", below, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     } else {
-        FGC_CYCLES("qr_update", U, "vector", n, 1, 1);
+        FGC_CYCLES("qr_update", U, "vector", below, 1, 1);
     }
-    if (n == 0) tin.read();  // {v_0, j} of no reflection
+    // v_0 from qr_finish (it waits for the square root); in the next pivot column's dot its
+    // term v_0 x_0 is one more leaf of the fold's tree, so the other terms need not wait for it
+    FGC_WAIT("qr_update", U, "qr_finish", 0, "v0");
+    const qr_word<T> w0 = tin.read();
+    v[0] = w0.val;
+    at[0] = w0.idx;
+    T dot0 = T(0);
+    if (fused) {
+        T leaves[P + 1];
+#pragma HLS ARRAY_PARTITION variable=leaves complete
+        for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+            leaves[t] = part0[t];
+        }
+        leaves[P] = w0.val * bank[j][l0];  // depth Lm
+        FGC_CYCLES("qr_update", U, "pivot_term", 1, 1, CFG::MUL_LAT);
+        dot0 = fold_partials<T, P + 1>(leaves);  // depth La ceil(log2 (P + 1))
+        FGC_CYCLES("qr_update", U, "fold", 1, 1, CFG::ADD_LAT * ceil_log2(P + 1));
+    } else {
+        FGC_CYCLES("qr_update", U, "pivot_word", 1, 1, 1);
+    }
     // tau and R_jj (qr_finish's last words; what follows waits for them)
     FGC_WAIT("qr_update", U, "qr_finish", 0, "tau");
     const T tau = tin.read().val;
@@ -296,7 +313,7 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     }
     if (next_here) {
         if (n > 1) {
-            const T scaled = tau * fold_partials<T, P>(part0);  // depth Lm
+            const T scaled = tau * dot0;  // depth Lm
             FGC_CYCLES("qr_update", U, "scale", 1, 1, CFG::MUL_LAT);
             // updated and streamed to the Evaluate in one pass over rows j ... rows - 1, the
             // active rows (sorted) merged in: trip rows - j, II 1, depth Lm + La
