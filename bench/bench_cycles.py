@@ -83,14 +83,15 @@ def group(name: str) -> str:
     return head if head and tail.isdigit() else name
 
 
-def measure(name, graph, solver):
-    """(phases, events): per phase group (csim cycles, model cycles) of one run, and the run's
-    event counts; the total is the sum over the groups."""
+def measure(name, graph, solver, config: HlsConfig | None = None):
+    """(phases, events): per phase group (csim cycles, model cycles) of one run of the design
+    ``config`` emits (default: the float design), and the run's event counts; the total is the
+    sum over the groups."""
     program = compile_graph(graph, solver, name="cyc")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # designs over the part's DSP still simulate
         folder = Path(tempfile.mkdtemp(prefix="fgc-cycles-"))
-        project = emit(program, folder, HlsConfig(scalar="float"))
+        project = emit(program, folder, config or HlsConfig(scalar="float"))
     out = counting_run(project, graph, program, COUNT_MAIN)
     counted = {k: int(v) for k, v in re.findall(r"^phase (\S+) (\d+)$", out, re.M)}
     events = {k: int(v) for k, v in re.findall(r"^event (\S+) (\d+)$", out, re.M)}

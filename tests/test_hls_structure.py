@@ -260,11 +260,11 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
     level = next(r for r in read_network(kernel) if r.function == "qr_level")
     assert level.processes == ("qr_set0", "qr_set1")  # two-ended chain: two unit sets
     (reflection,) = [r for r in read_network(header) if r.streams]
-    assert reflection.processes == ("qr_broadcast", "qr_update_units::run", "qr_evaluate",
-                                    "qr_collect")
+    assert reflection.processes == ("qr_broadcast", "qr_finish", "qr_update_units::run",
+                                    "qr_evaluate", "qr_collect")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     assert counts(kernel, header) == (len(procs), len(streams))
-    assert (len(procs), len(streams)) == ((units + 3) * 2, 2 * (3 * units + 1))
+    assert (len(procs), len(streams)) == ((units + 4) * 2, 2 * (4 * units + 1))
     for p in procs:  # the comment block lists the plan's network
         assert f"//   process {p}\n" in kernel
 

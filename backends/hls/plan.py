@@ -251,30 +251,40 @@ def dot_loop(name: str, length: int, ops: OperatorTable, partials: int | None = 
 
 
 def _region_cycles(processes: list[list[Loop]],
-                   waits: tuple[tuple[int, int, str], ...] = ()) -> int:
+                   waits: tuple[tuple[int, int, int, str], ...] = ()) -> int:
     """A DATAFLOW region as :func:`phase_cycles` prices it: its slowest process plus the fill of
     the others (the depth of their first loop that runs); processes with no running loop are
-    absent (fgc_cycles.h's ``total``). ``waits``: (process, on process, loop name suffix): the
-    process's first loop reads the stream of the other's first such loop as it comes, so it ends
-    its depth after that loop and the region takes no less than that plus the process's other
-    loops (fgc_cycles.h's FGC_WAIT)."""
+    absent (fgc_cycles.h's ``total``). ``waits``: (process, loop, on process, loop name suffix):
+    that loop of the process (or, if it does not run, the process's next one that does) reads
+    the stream the other's first such loop writes, as it comes, so it ends no earlier than its
+    depth after that loop; each process's loops follow one another, in the region's order, and
+    the region takes no less than any process's last loop's end (fgc_cycles.h's FGC_WAIT)."""
     procs = [(sum(lp.cycles for lp in loops), next((lp.depth for lp in loops if lp.trip > 0), 0))
              for loops in processes if any(lp.trip > 0 for lp in loops)]
     if not procs:
         return 0
     slow = max(range(len(procs)), key=lambda i: procs[i][0])
     total = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
-    for p, q, suffix in waits:
-        start = 0
-        for lp in processes[q]:
-            start += lp.cycles
-            if lp.name.endswith(suffix):
-                # the waiting process's first loop reads that loop's stream as it comes
-                running = [lp2 for lp2 in processes[p] if lp2.trip > 0]
-                if running:
-                    end = start + running[0].depth + sum(lp2.cycles for lp2 in running[1:])
-                    total = max(total, end)
-                break
+    if not waits:
+        return total
+    ends: dict[tuple[int, int], int] = {}
+    for p, loops in enumerate(processes):
+        clock, pending = 0, None
+        for li, lp in enumerate(loops):
+            for wp, wl, q, suffix in waits:
+                if (wp, wl) != (p, li):
+                    continue
+                at = next((ends[q, x] for x, lq in enumerate(processes[q])
+                           if lq.name.endswith(suffix) and (q, x) in ends), None)
+                if at is not None:
+                    pending = at if pending is None else max(pending, at)
+            if lp.trip <= 0:
+                continue
+            end = clock + lp.cycles
+            if pending is not None:
+                end, pending = max(end, pending + lp.depth), None
+            clock = ends[p, li] = end
+            total = max(total, end)
     return total
 
 
@@ -298,12 +308,6 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                     np.ones((len(pattern), 1), dtype=bool)])
     rows, cols = nz.shape
     k = min(rows, cols)
-    local = -(-cols // units)
-
-    def dot(n):
-        kk = max(1, min(n, p))
-        tree = math.ceil(math.log2(kk)) if kk > 1 else 0
-        return math.ceil(la / kk), lm + la * (1 + tree)
 
     # the active rows of each column as the units meet them (the fill of earlier reflections)
     active = []
@@ -318,53 +322,68 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
         nz[act, j] = False
         nz[j, j] = True
         active.append(len(act))
+    tree = math.ceil(math.log2(p)) if p > 1 else 0
+    tree1 = math.ceil(math.log2(p + 1))  # the fold of the P partials and the pivot's term
     out = []
     for j in range(-1, k):
         n = active[j] if j >= 0 else 0
-        procs = [[Loop("broadcast", n + 2, 1, 2)]]
+        # the broadcast (index 0) streams the vector, qr_finish (1) computes v_0, tau, R_jj
+        procs = [[Loop("vector", max(n, 1), 1, 2)],
+                 [Loop("read", 2, 1, 1), Loop("v0", 1, 1, ls + la if n else 1),
+                  Loop("tau", 1, 1, lm + ld if n else 1)]]
+        waits = []
         for u in range(units):
-            # the unit's first column right of j takes its dot product while the vector arrives
+            # the unit's first column right of j; the next pivot column if it is j + 1 < k
             c0 = j + 1 + (u - (j + 1)) % units
-            fused = n > 1 and c0 < cols
-            loops = [Loop("header", 2, 1, 1),
-                     Loop("vector", n, *(dot(n) if fused else (1, 1)))]
+            next_here = c0 == j + 1 and c0 < k
+            fused = n > 1 and next_here
+            # the n - 1 words below the pivot (the next pivot column's dot over them), then v_0
+            # (waiting for qr_finish's square root: its term is one more leaf of the fold's
+            # tree), then tau and R_jj (waiting for qr_finish's divide)
+            below = max(n - 1, 0)
+            loops = [Loop("header", 1, 1, 1),
+                     Loop("vector_dot", below, 1, lm + la) if fused else
+                     Loop("vector", below, 1, 1)]
+            waits.append((len(procs), len(loops), 1, "v0"))
+            if fused:
+                loops += [Loop("pivot_term", 1, 1, lm), Loop("fold", 1, 1, la * tree1)]
+            else:
+                loops.append(Loop("pivot_word", 1, 1, 1))
+            waits.append((len(procs), len(loops), 1, "tau"))
+            loops.append(Loop("tail", 2, 1, 1))
             if n > 0 and j >= 0 and j % units == u:
                 loops.append(Loop("pivot_column", n, 1, 1))
-            for lc in range(local):
-                c = lc * units + u
-                if c <= j or c >= cols:
-                    continue
-                if n == 1:  # the pivot row alone: negated
-                    loops.append(Loop("negate", 1, 1, 1))
-                elif n > 1:
-                    if c != c0:
-                        loops.append(Loop("dot", n, *dot(n)))
-                    loops.append(Loop("scale", 1, 1, lm))
-                    if c == j + 1 and c < k:  # updated and streamed to the Evaluate at once
-                        loops.append(Loop("axpy_next_column", rows - j, 1, lm + la))
-                    else:
-                        loops.append(Loop("axpy", n, 1, lm + la))
+            if next_here:  # updated and streamed to the Evaluate first
+                if n > 1:
+                    loops += [Loop("scale", 1, 1, lm),
+                              Loop("axpy_next_column", rows - j, 1, lm + la)]
+                else:
+                    if n == 1:
+                        loops.append(Loop("negate", 1, 1, 1))
+                    loops.append(Loop("next_column", rows - c0, 1, 1))
                 if j >= 0:
                     loops.append(Loop("row_out", 1, 1, 1))
-                if c == j + 1 and c < k and n <= 1:
-                    loops.append(Loop("next_column", rows - c, 1, 1))
+            # the unit's other columns right of j, through the flattened loops
+            lb = c0 // units + (1 if next_here else 0)
+            r = (cols - 1 - u) // units - lb + 1 if c0 < cols else 0
+            if r > 0 and n > 1:
+                loops += [Loop("dots", n * r, 1, lm + la), Loop("fold_scale", r, 1, la * tree + lm),
+                          Loop("axpys", n * r, 1, lm + la)]
+            elif r > 0 and j >= 0:
+                loops.append(Loop("negate_rows" if n == 1 else "rows_out", r, 1, 1))
             procs.append(loops)
         col = j + 1
-        waits = ()
         if col < k:
-            # the Evaluate starts when the unit holding the column has streamed it
-            waits = ((len(procs), 1 + col % units, "next_column"),)
-            loops = [Loop("receive", rows - col, 1, 2)]
-            n2 = active[col]
-            if n2 > 0:
-                ii, depth = dot(n2)
-                loops += [Loop("norm", n2, ii, ld + depth), Loop("tail", 1, 1, ls + lm + la + ld)]
-            procs.append(loops)
+            # the Evaluate starts when the unit holding the column streams it; the squares are
+            # summed as the column arrives, then folded (the tail is the next region's qr_finish)
+            waits.append((len(procs), 0, 2 + col % units, "next_column"))
+            procs.append([Loop("receive_norm", rows - col, 1, lm + la),
+                          Loop("fold", 1, 1, la * tree)])
         # the collector: row j of R out (cond / update) and the running scale
         first = 0 if j < frontal else frontal  # rows out with their zeros left of the diagonal
-        procs.append([Loop("header", 2, 1, 1)]
+        procs.append([Loop("header", 1, 1, 1)]
                      + ([Loop("row", cols - first, 1, 2)] if 0 <= j < k else []))
-        out.append(Loop(f"{name}_reflection{j + 1}", 1, 1, _region_cycles(procs, waits)))
+        out.append(Loop(f"{name}_reflection{j + 1}", 1, 1, _region_cycles(procs, tuple(waits))))
     out.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
     return out
 
@@ -712,21 +731,28 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         units.append(Unit(f"qr{s}_update", "apply the reflector to a column", opts.units,
                           (("add", 1), ("mul", 1))))
         # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
-        # the reflector to each Update unit (and its header to collect); each unit streams the
-        # next column (its owner's) to Evaluate and its entries of R's row to collect; Evaluate
-        # writes one of the reflector's two buffers, which the next region broadcasts
+        # the vector below the pivot to each Update unit while qr_finish computes v_0, tau and
+        # R_jj from the norm and the pivot and streams them to each unit (R_jj also to collect);
+        # each unit streams the next column (its owner's) to Evaluate and its entries of R's
+        # row to collect; Evaluate writes one of the vector's and one of the norm's two
+        # buffers, which the next region's broadcast and qr_finish read
         for u in range(opts.units):
             channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
                                     ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
-        channels.append(Channel(f"qr{s}_h", "stream", 2, ops.word_bits + 32,
-                                f"qr{s}_broadcast", f"qr{s}_collect"))
+        for u in range(opts.units):
+            channels.append(Channel(f"qr{s}_t{u}", "stream", 3, ops.word_bits + 32,
+                                    f"qr{s}_finish", f"qr{s}_update{u}"))
+        channels.append(Channel(f"qr{s}_r", "stream", 1, ops.word_bits,
+                                f"qr{s}_finish", f"qr{s}_collect"))
         for u in range(opts.units):
             channels.append(Channel(f"qr{s}_col{u}", "stream", max_rows, ops.word_bits,
                                     f"qr{s}_update{u}", f"qr{s}_evaluate"))
             channels.append(Channel(f"qr{s}_row{u}", "stream", 2, ops.word_bits,
                                     f"qr{s}_update{u}", f"qr{s}_collect"))
-        channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 2, ops.word_bits + 32,
+        channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 1, ops.word_bits + 32,
                                 f"qr{s}_evaluate", f"qr{s}_broadcast"))
+        channels.append(Channel(f"qr{s}_hbuf", "pingpong", 2, ops.word_bits + 32,
+                                f"qr{s}_evaluate", f"qr{s}_finish"))
     # per step: the regions of fgc_qr.h's qr_step (Evaluate of column k+1 overlaps the Update
     # of column k in region k) and its store, one process per step
     step_proc = []
@@ -745,8 +771,19 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
             tables, i, opts.units, max_w, damping, timing))) for i in level]
         phases.append(Phase(f"qr_stack_level{li}", False, tuple(stack), linear=True))
-        procs = _assign([p for st, p in step_proc if st.index in level], sets, "qr", li)
-        phases.append(Phase(f"qr_level{li}", True, procs, linear=True))
+        # eliminate_all hands a level's steps to the unit sets `sets` at a time, in level
+        # order: each chunk a DATAFLOW region of its sets side by side, the chunks one after
+        # another
+        by_index = {st.index: p for st, p in step_proc}
+        chunks = [_assign([by_index[i] for i in level[c:c + sets]], sets, "qr", li)
+                  for c in range(0, len(level), sets)]
+        if len(chunks) == 1:
+            phases.append(Phase(f"qr_level{li}", True, chunks[0], linear=True))
+        else:
+            phases.append(Phase(f"qr_level{li}", False, tuple(
+                Process(f"qr{li}_chunk{c}", "qr_sets", (Loop(
+                    f"qr{li}_chunk{c}", 1, 1, phase_cycles(Phase("chunk", True, procs))),))
+                for c, procs in enumerate(chunks)), linear=True))
         phases.append(Phase(f"qr_commit_level{li}", False, tuple(
             Process(f"commit{i}", "qr_commit", tuple(commit_loops(tables, i, timing, False)))
             for i in level), linear=True))
@@ -858,7 +895,8 @@ def _sizes(program) -> dict:
 
 
 def _assign(procs, sets, tag, li):
-    """Independent steps of one level on ``sets`` unit sets, longest first (one process/set)."""
+    """Independent steps on ``sets`` unit sets, longest first (one process per set that has
+    a step)."""
     loads = [[] for _ in range(sets)]
     for p in sorted(procs, key=lambda p: -p.cycles):
         i = min(range(sets), key=lambda j: sum(q.cycles for q in loads[j]))
@@ -1122,7 +1160,8 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
     stream channels."""
     if plan.linear == "qr":
         procs = tuple(p for s in range(unit_sets(plan)) for p in (
-            f"qr{s}_broadcast", *(f"qr{s}_update{u}" for u in range(plan.options.units)),
+            f"qr{s}_broadcast", f"qr{s}_finish",
+            *(f"qr{s}_update{u}" for u in range(plan.options.units)),
             f"qr{s}_evaluate", f"qr{s}_collect"))
     else:
         procs = ("cpe_feed", *(f"cpe{i}" for i in range(plan.options.cpe)), "cpe_drain")

@@ -14,9 +14,10 @@
 // its n local streams were read empty. fgc_cycles::total() applies the plan's arithmetic:
 // sequential records add up; a dataflow region takes its slowest process (the sum of that
 // process's loops) plus the fill (the depth of the first loop that runs) of each other process,
-// as plan_cost does; and no less than the end of a process that waits for another's loop
-// (FGC_WAIT: the QR Evaluate reads the column the Update unit streams it): its first loop ends
-// its depth after that loop, its other loops follow.
+// as plan_cost does; and no less than the end of any process's last loop when its loops that
+// wait for another's (FGC_WAIT before a loop: it reads the stream that loop of an earlier process
+// of the region writes - the QR Evaluate the column the Update unit streams, an Update unit v_0
+// and tau from qr_finish) end no earlier than their depth after the loop they wait for.
 //
 // The kernel's own loops (factor datapaths, gradient / HGC, stacking, commit, assembly, state
 // update, LM control, the rounding-noise pass) report themselves the same way. FGC_PHASE(name)
@@ -46,7 +47,7 @@ struct Record {
     int instance;  // unit index (Update unit, CPE), 0 for single processes
     std::string loop;
     long trip, ii, depth;
-    // a wait (trip 0): this process's first loop reads the stream of the first loop of
+    // a wait (trip 0): this process's next loop that runs reads the stream of the first loop of
     // (on_process, on_instance) whose name ends with on_loop, so it ends its depth after it
     std::string on_process, on_loop;
     int on_instance;
@@ -147,27 +148,33 @@ inline long total_range(std::size_t from, std::size_t to) {
         for (std::size_t p = 0; p < order.size(); ++p)
             if (p != slowest && procs[order[p]].second > 0) fills += procs[order[p]].second;
         long region_cycles = slow + fills;
-        // a waiting process ends no earlier than the loop it waits for plus all of its own
-        for (std::size_t w = begin; w < i; ++w) {
-            if (r[w].on_process.empty()) continue;
-            long start = 0;
-            bool found = false;
-            for (std::size_t q = begin; q < i && !found; ++q) {
-                if (r[q].process != r[w].on_process || r[q].instance != r[w].on_instance) continue;
-                start += r[q].cycles();
-                found = ends_with(r[q].loop, r[w].on_loop);
+        // per process, in the region's order, the end of each of its loops: a loop ends its
+        // cycles after the one before it, and a loop that waits (FGC_WAIT before it: it reads
+        // another process's stream as that process's loop writes it) no earlier than its depth
+        // after the end of that loop; the region ends no earlier than any process's last loop
+        std::vector<long> ends(i - begin, -1);
+        std::map<std::pair<std::string, int>, long> clock;
+        std::map<std::pair<std::string, int>, long> pending;  // waits not yet applied
+        for (std::size_t q = begin; q < i; ++q) {
+            const std::pair<std::string, int> key(r[q].process, r[q].instance);
+            if (!r[q].on_process.empty()) {
+                long at = -1;  // the end of the first loop of on_process named ... on_loop
+                for (std::size_t x = begin; x < q && at < 0; ++x)
+                    if (r[x].process == r[q].on_process && r[x].instance == r[q].on_instance &&
+                        ends_with(r[x].loop, r[q].on_loop) && ends[x - begin] >= 0)
+                        at = ends[x - begin];
+                if (at >= 0 && (!pending.count(key) || pending[key] < at)) pending[key] = at;
+                continue;
             }
-            if (!found) continue;
-            // its first loop reads that loop's stream as it comes: it ends its own depth after
-            // it; the rest of the waiting process follows
-            long end = start;
-            bool first = true;
-            for (std::size_t q = begin; q < i; ++q) {
-                if (r[q].process != r[w].process || r[q].instance != r[w].instance) continue;
-                if (r[q].trip <= 0) continue;
-                end += first ? r[q].depth : r[q].cycles();
-                first = false;
+            if (r[q].trip <= 0) continue;
+            long end = clock[key] + r[q].cycles();
+            if (pending.count(key)) {
+                const long waited = pending[key] + r[q].depth;
+                end = waited > end ? waited : end;
+                pending.erase(key);
             }
+            clock[key] = end;
+            ends[q - begin] = end;
             region_cycles = end > region_cycles ? end : region_cycles;
         }
         sum += region_cycles;

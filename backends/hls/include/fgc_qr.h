@@ -155,33 +155,87 @@ inline void qr_put(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_
 
 // ---- the processes of one reflection ---------------------------------------------------------
 
-// Stream the Householder vector in vin to every Update unit, its two header words also to the
-// collector.
+// Stream the Householder vector in vin to every Update unit: the header {0, n}, then the n - 1
+// words below the pivot (v_a = x_a, final as the Evaluate wrote them); the pivot's v_0 comes
+// from qr_finish, which computes it meanwhile.
 template <class CFG>
-void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 2],
-                  hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
-                  hls::stream<qr_word<typename CFG::T> >& hq) {
-    enum { MAX_WORDS = CFG::MAX_ROWS + 2 };
-    const int words = vin[0].idx + 2;
-    // trip n + 2, II 1, depth 2 (read, write)
+void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1],
+                  hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS]) {
+    const int n = vin[0].idx;
+    const int words = n > 0 ? n : 1;
+    // trip max(n, 1), II 1, depth 2 (read, write)
     for (int a = 0; a < words; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-        const qr_word<typename CFG::T> x = vin[a];
+        const qr_word<typename CFG::T> x = vin[a == 0 ? 0 : a + 1];
         for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
             vq[u].write(x);
         }
-        if (a < 2) hq.write(x);
     }
     FGC_CYCLES("qr_broadcast", 0, "vector", words, 1, 2);
+}
+
+// The Evaluate's tail, while the vector streams: from the column's squared norm and pivot (hin:
+// {norm2, n}, {x_0, j}) alpha = -sign(x_0) sqrt(norm2), v_0 = x_0 - alpha and tau = 1 / (norm2 -
+// alpha x_0) (2 / |v|^2, without a second sum); {v_0, j}, {tau, n}, {R_jj = alpha, j} to every
+// Update unit, R_jj to the collector. n = 0 (no reflection): zeros.
+template <class CFG>
+void qr_finish(const qr_word<typename CFG::T> hin[2],
+               hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS],
+               hls::stream<typename CFG::T>& rq) {
+    typedef typename CFG::T T;
+    const T norm2 = hin[0].val, pivot = hin[1].val;
+    const int n = hin[0].idx, j = hin[1].idx;
+    FGC_CYCLES("qr_finish", 0, "read", 2, 1, 1);
+    qr_word<T> w0, w1, w2;
+    w0.idx = j;
+    w1.idx = n;
+    w2.idx = j;
+    T alpha = T(0);
+    if (n > 0) {
+        const T norm = std::sqrt(norm2);
+        alpha = pivot >= T(0) ? T(-norm) : norm;
+        w0.val = pivot - alpha;
+        // sqrt, subtract: depth Ls + La (v_0 out)
+        FGC_CYCLES("qr_finish", 0, "v0", 1, 1, CFG::SQRT_LAT + CFG::ADD_LAT);
+        w1.val = T(1) / (norm2 - alpha * pivot);
+        // alpha x_0 (beside the subtract), subtract, divide: depth Lm + Ld after v_0 (tau out)
+        FGC_CYCLES("qr_finish", 0, "tau", 1, 1, CFG::MUL_LAT + CFG::DIV_LAT);
+    } else {
+        w0.val = T(0);
+        w1.val = T(0);
+        FGC_CYCLES("qr_finish", 0, "v0", 1, 1, 1);
+        FGC_CYCLES("qr_finish", 0, "tau", 1, 1, 1);
+    }
+    for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+        tq[u].write(w0);
+    }
+    w2.val = alpha;
+    for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+        tq[u].write(w1);
+    }
+    for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+        tq[u].write(w2);
+    }
+    rq.write(alpha);
 }
 
 // Update unit U: reflection j on the columns of bank U right of j (cols = w + 1 columns in all);
 // each column's entry in row j, final after reflection j, goes to the collector (rowout); the
 // column j + 1, if it is here and j + 1 < k, goes to the Evaluate after its update (colout).
+//
+// The column j + 1 (the next pivot) is on the critical path: its owner takes its dot product
+// while the vector arrives, updates it and streams it to the Evaluate first. The unit's other
+// columns go through three flattened pipelined loops (every column's dot product, then the folds
+// and scales, then every column's update), so a unit pays each pipeline's depth once per
+// reflection, not once per column.
 template <class CFG, int U>
 void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CFG::T> >& vin,
+               hls::stream<qr_word<typename CFG::T> >& tin,
                typename CFG::T bank[CFG::MAX_ROWS][CFG::LOCAL_COLS],
                hls::stream<typename CFG::T>& colout, hls::stream<typename CFG::T>& rowout) {
     typedef typename CFG::T T;
@@ -189,42 +243,66 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
     T v[CFG::MAX_ROWS];
     int at[CFG::MAX_ROWS];
-    const qr_word<T> head = vin.read();
-    const qr_word<T> pivot = vin.read();
-    FGC_CYCLES("qr_update", U, "header", 2, 1, 1);
-    const int n = head.idx;
-    const T tau = head.val;
-    // this unit's first column right of j: its dot product runs while the vector arrives
+    const int n = vin.read().idx;  // {0, n}
+    FGC_CYCLES("qr_update", U, "header", 1, 1, 1);
+    // this unit's first column right of j; it is the next pivot column if it is j + 1 < k
     const int c0 = j + 1 + ((U - (j + 1)) % CFG::N_UNITS + CFG::N_UNITS) % CFG::N_UNITS;
-    const bool fused = n > 1 && c0 < cols;
-    const int l0 = fused ? c0 / CFG::N_UNITS : 0;
+    const bool next_here = c0 == j + 1 && c0 < k;
+    const bool fused = n > 1 && next_here;
+    const int l0 = c0 / CFG::N_UNITS;
     T part0[P];
 #pragma HLS ARRAY_PARTITION variable=part0 complete
     for (int t = 0; t < P; ++t) {
 #pragma HLS UNROLL
         part0[t] = T(0);
     }
-    // the vector, and v.x of column c0 with it: trip n, II ceil(La / min(n, P)), depth
-    // Lm + La (1 + ceil(log2 min(n, P))) (the dot's; II 1, depth 1 if there is no dot)
-    for (int a = 0; a < n; ++a) {
+    // the n - 1 words below the pivot from the broadcast, and v.x of the next pivot column over
+    // them (a partial is met again P >= La iterations later): trip n - 1, II 1, depth Lm + La
+    // (II 1, depth 1 if there is no dot)
+    const int below = n > 1 ? n - 1 : 0;
+    for (int a = 1; a <= below; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part0 inter false
         const qr_word<T> x = vin.read();
         v[a] = x.val;
         at[a] = x.idx;
-        if (fused) part0[a % P] += x.val * bank[x.idx][l0];
+        if (fused) part0[(a - 1) % P] += x.val * bank[x.idx][l0];
     }
     if (fused) {
-        FGC_CYCLES("qr_update", U, "vector_dot", n, dot_ii(n, P, CFG::ADD_LAT),
-                   dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
+        FGC_CYCLES("qr_update", U, "vector_dot", below, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     } else {
-        FGC_CYCLES("qr_update", U, "vector", n, 1, 1);
+        FGC_CYCLES("qr_update", U, "vector", below, 1, 1);
     }
-    const T dot0 = fold_partials<T, P>(part0);
+    // v_0 from qr_finish (it waits for the square root); in the next pivot column's dot its
+    // term v_0 x_0 is one more leaf of the fold's tree, so the other terms need not wait for it
+    FGC_WAIT("qr_update", U, "qr_finish", 0, "v0");
+    const qr_word<T> w0 = tin.read();
+    v[0] = w0.val;
+    at[0] = w0.idx;
+    T dot0 = T(0);
+    if (fused) {
+        T leaves[P + 1];
+#pragma HLS ARRAY_PARTITION variable=leaves complete
+        for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+            leaves[t] = part0[t];
+        }
+        leaves[P] = w0.val * bank[j][l0];  // depth Lm
+        FGC_CYCLES("qr_update", U, "pivot_term", 1, 1, CFG::MUL_LAT);
+        dot0 = fold_partials<T, P + 1>(leaves);  // depth La ceil(log2 (P + 1))
+        FGC_CYCLES("qr_update", U, "fold", 1, 1, CFG::ADD_LAT * ceil_log2(P + 1));
+    } else {
+        FGC_CYCLES("qr_update", U, "pivot_word", 1, 1, 1);
+    }
+    // tau and R_jj (qr_finish's last words; what follows waits for them)
+    FGC_WAIT("qr_update", U, "qr_finish", 0, "tau");
+    const T tau = tin.read().val;
+    const T r_jj = tin.read().val;
+    FGC_CYCLES("qr_update", U, "tail", 2, 1, 1);
     if (n > 0 && j >= 0 && j % CFG::N_UNITS == U) {  // the pivot column: R_jj, zeros below
         const int l = j / CFG::N_UNITS;
-        bank[j][l] = pivot.val;  // at[0] == j
+        bank[j][l] = r_jj;  // at[0] == j
         // trip n - 1, II 1, depth 1
         for (int a = 1; a < n; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
@@ -233,79 +311,114 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
         }
         FGC_CYCLES("qr_update", U, "pivot_column", n, 1, 1);
     }
-    for (int l = 0; l < CFG::LOCAL_COLS; ++l) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
-        const int c = l * CFG::N_UNITS + U;
-        if (c <= j || c >= cols) continue;
-        if (n == 1) {
+    if (next_here) {
+        if (n > 1) {
+            const T scaled = tau * dot0;  // depth Lm
+            FGC_CYCLES("qr_update", U, "scale", 1, 1, CFG::MUL_LAT);
+            // updated and streamed to the Evaluate in one pass over rows j ... rows - 1, the
+            // active rows (sorted) merged in: trip rows - j, II 1, depth Lm + La
+            int a = 0;
+            for (int i = j; i < rows; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+                T x = bank[i][l0];
+                if (a < n && at[a] == i) {
+                    x -= scaled * v[a];
+                    bank[i][l0] = x;
+                    ++a;
+                }
+                if (i > j) colout.write(x);
+            }
+            FGC_CYCLES("qr_update", U, "axpy_next_column", rows - j, 1,
+                       CFG::MUL_LAT + CFG::ADD_LAT);
+        } else {
             // one active row: the reflection is x -> -x on the pivot row, exactly (v = 2 sign,
             // tau = 1/2: x - (tau v x) v = x - 2x), so it is taken as that: 1 cycle
-            bank[j][l] = -bank[j][l];
-            FGC_CYCLES("qr_update", U, "negate", 1, 1, 1);
-        } else if (n > 1) {
-            T dot = dot0;
-            if (c != c0) {
-                T part[P];
-#pragma HLS ARRAY_PARTITION variable=part complete
-                for (int t = 0; t < P; ++t) {
-#pragma HLS UNROLL
-                    part[t] = T(0);
-                }
-                // dot v.x: trip n, II ceil(La / min(n, P)), depth the dot loop's (see the top)
-                for (int a = 0; a < n; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=part inter false
-                    part[a % P] += v[a] * bank[at[a]][l];
-                }
-                dot = fold_partials<T, P>(part);
-                FGC_CYCLES("qr_update", U, "dot", n, dot_ii(n, P, CFG::ADD_LAT),
-                           dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
+            if (n == 1) {
+                bank[j][l0] = -bank[j][l0];
+                FGC_CYCLES("qr_update", U, "negate", 1, 1, 1);
             }
-            const T scaled = tau * dot;  // depth Lm
-            FGC_CYCLES("qr_update", U, "scale", 1, 1, CFG::MUL_LAT);
-            if (c == j + 1 && c < k) {
-                // the next pivot column: updated and streamed to the Evaluate in one pass over
-                // rows j ... rows - 1, the active rows (sorted) merged in:
-                // trip rows - j, II 1, depth Lm + La
-                int a = 0;
-                for (int i = j; i < rows; ++i) {
+            // to the Evaluate as it is (no reflection to merge): trip rows - c0, II 1, depth 1
+            for (int i = c0; i < rows; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-                    T x = bank[i][l];
-                    if (a < n && at[a] == i) {
-                        x -= scaled * v[a];
-                        bank[i][l] = x;
-                        ++a;
-                    }
-                    if (i > j) colout.write(x);
-                }
-                FGC_CYCLES("qr_update", U, "axpy_next_column", rows - j, 1,
-                           CFG::MUL_LAT + CFG::ADD_LAT);
-            } else {
-                // x -= (tau v.x) v: trip n, II 1, depth Lm + La
-                for (int a = 0; a < n; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
-#pragma HLS PIPELINE II=1
-                    bank[at[a]][l] -= scaled * v[a];
-                }
-                FGC_CYCLES("qr_update", U, "axpy", n, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+                colout.write(bank[i][l0]);
             }
+            FGC_CYCLES("qr_update", U, "next_column", rows - c0, 1, 1);
         }
-        if (j >= 0) {  // row j is final now: its entry in column c to the collector
-            rowout.write(bank[j][l]);
+        if (j >= 0) {  // row j is final now: its entry in column c0 to the collector
+            rowout.write(bank[j][l0]);
             FGC_CYCLES("qr_update", U, "row_out", 1, 1, 1);
         }
-        if (c == j + 1 && c < k && n <= 1) {
-            // the next pivot column to the Evaluate (no reflection to merge): trip rows - c,
-            // II 1, depth 1
-            for (int i = c; i < rows; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+    }
+    // the unit's other columns right of j: local columns lb ... lb + r - 1
+    const int lb = next_here ? l0 + 1 : l0;
+    const int r = c0 < cols ? (cols - 1 - U) / CFG::N_UNITS - lb + 1 : 0;
+    if (r <= 0) return;
+    if (n > 1) {
+        T part[CFG::LOCAL_COLS][P];
+#pragma HLS ARRAY_PARTITION variable=part complete dim=2
+        T scaled[CFG::LOCAL_COLS];
+        enum { MAX_BATCH = CFG::MAX_ROWS * CFG::LOCAL_COLS };  // pragma constants: enums
+        // every column's v.x, column by column, P interleaved partial sums each (a partial is
+        // met again P >= La iterations later; its first term overwrites it):
+        // trip n r, II 1, depth Lm + La
+        for (int e = 0, l = lb, a = 0; e < n * r; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
 #pragma HLS PIPELINE II=1
-                colout.write(bank[i][l]);
+#pragma HLS DEPENDENCE variable=part inter false
+            const T term = v[a] * bank[at[a]][l];
+            part[l][a % P] = a < P ? term : T(part[l][a % P] + term);
+            if (a == n - 1) {
+                a = 0;
+                ++l;
+            } else {
+                ++a;
             }
-            FGC_CYCLES("qr_update", U, "next_column", rows - c, 1, 1);
         }
+        FGC_CYCLES("qr_update", U, "dots", n * r, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+        // per column the partial sums folded (a ceil(log2 P)-deep adder tree) and scaled by tau:
+        // trip r, II 1, depth La ceil(log2 P) + Lm
+        for (int l = lb; l < lb + r; ++l) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
+#pragma HLS PIPELINE II=1
+            T p[P];
+#pragma HLS ARRAY_PARTITION variable=p complete
+            for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+                p[t] = t < n ? part[l][t] : T(0);
+            }
+            scaled[l] = tau * fold_partials<T, P>(p);
+        }
+        FGC_CYCLES("qr_update", U, "fold_scale", r, 1,
+                   CFG::ADD_LAT * ceil_log2(P) + CFG::MUL_LAT);
+        // x -= (tau v.x) v, column by column; the entry in row j (active row 0) goes to the
+        // collector as it is updated: trip n r, II 1, depth Lm + La
+        for (int e = 0, l = lb, a = 0; e < n * r; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
+#pragma HLS PIPELINE II=1
+            const T x = bank[at[a]][l] - scaled[l] * v[a];
+            bank[at[a]][l] = x;
+            if (a == 0) rowout.write(x);
+            if (a == n - 1) {
+                a = 0;
+                ++l;
+            } else {
+                ++a;
+            }
+        }
+        FGC_CYCLES("qr_update", U, "axpys", n * r, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+    } else if (j >= 0) {
+        // no reflection (an all-zero column: row j as it is) or the pivot row's negation (one
+        // active row), each entry to the collector: trip r, II 1, depth 1
+        for (int l = lb; l < lb + r; ++l) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
+#pragma HLS PIPELINE II=1
+            const T x = n == 1 ? T(-bank[j][l]) : bank[j][l];
+            bank[j][l] = x;
+            rowout.write(x);
+        }
+        FGC_CYCLES("qr_update", U, n == 1 ? "negate_rows" : "rows_out", r, 1, 1);
     }
 }
 
@@ -314,29 +427,36 @@ template <class CFG, int U, bool END = (U == CFG::N_UNITS)>
 struct qr_update_units {
     static void run(int j, int rows, int cols, int k,
                     hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
+                    hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS],
                     typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
                     hls::stream<typename CFG::T> colq[CFG::N_UNITS],
                     hls::stream<typename CFG::T> rowq[CFG::N_UNITS]) {
 #pragma HLS INLINE
-        qr_update<CFG, U>(j, rows, cols, k, vq[U], work[U], colq[U], rowq[U]);
-        qr_update_units<CFG, U + 1>::run(j, rows, cols, k, vq, work, colq, rowq);
+        qr_update<CFG, U>(j, rows, cols, k, vq[U], tq[U], work[U], colq[U], rowq[U]);
+        qr_update_units<CFG, U + 1>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
     }
 };
 
 template <class CFG, int U>
 struct qr_update_units<CFG, U, true> {
     static void run(int, int, int, int, hls::stream<qr_word<typename CFG::T> >*,
+                    hls::stream<qr_word<typename CFG::T> >*,
                     typename CFG::T (*)[CFG::MAX_ROWS][CFG::LOCAL_COLS],
                     hls::stream<typename CFG::T>*, hls::stream<typename CFG::T>*) {
 #pragma HLS INLINE
     }
 };
 
-// Evaluate: the Householder vector of column j + 1 (if j + 1 < k) from the stream of the unit
-// that holds it, into vout ({tau, n}, {R, j + 1}, n words {v_a, row}).
+// Evaluate: column j + 1's Householder vector (if j + 1 < k) from the stream of the unit that
+// holds it, as it arrives: its pivot and non-zero rows into vout ({0, n}, then n words {x_a,
+// row}: v_a = x_a below the pivot) and its squared norm (P interleaved partial sums, folded) with
+// the pivot into hout ({norm2, n}, {x_0, j + 1}), which the next region's qr_finish turns into
+// v_0, tau and R_jj while its broadcast streams the rest. Nothing follows the column's last
+// word but the fold.
 template <class CFG>
 void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS],
-                 qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 2]) {
+                 qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1],
+                 qr_word<typename CFG::T> hout[2]) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     const int col = j + 1;
@@ -344,76 +464,51 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     const int owner = col % CFG::N_UNITS;
     // (it reads the column as the owner streams it: the counters' critical path)
     FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "next_column");
-    T x[CFG::MAX_ROWS];
-    int at[CFG::MAX_ROWS];
-    int n = 0;
-    T big = T(0);
-    // receive the column, keep the pivot and the non-zero rows, their largest magnitude:
-    // trip rows - col, II 1, depth 2 (read, compare)
-    for (int i = col; i < rows; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
-#pragma HLS PIPELINE II=1
-        T e = T(0);
-        for (int u = 0; u < CFG::N_UNITS; ++u) {
-#pragma HLS UNROLL
-            if (u == owner) e = colq[u].read();
-        }
-        if (i == col || e != T(0)) {
-            x[n] = e;
-            at[n] = i;
-            ++n;
-        }
-        const T mag = qr_abs(e);
-        big = mag > big ? mag : big;
-    }
-    FGC_CYCLES("qr_evaluate", 0, "receive", rows - col, 1, 2);
-    if (big == T(0)) {  // nothing to reflect
-        vout[0].val = T(0);
-        vout[0].idx = 0;
-        vout[1].val = T(0);
-        vout[1].idx = col;
-        return;
-    }
     T part[P];
 #pragma HLS ARRAY_PARTITION variable=part complete
     for (int t = 0; t < P; ++t) {
 #pragma HLS UNROLL
         part[t] = T(0);
     }
-    // v = x / big, v.v, and v into vout as it comes (v_0 is corrected below):
-    // trip n, II ceil(La / min(n, P)), depth Ld + dot depth
-    for (int a = 0; a < n; ++a) {
+    int n = 0;
+    T pivot = T(0);
+    // receive the column, keep the pivot and the non-zero rows, sum the squares:
+    // trip rows - col, II 1, depth Lm + La
+    for (int i = col; i < rows; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter false
-        const T va = x[a] / big;
-        if (a == 0) x[0] = va;
-        vout[2 + a].val = va;
-        vout[2 + a].idx = at[a];
-        part[a % P] += va * va;
+        T e = T(0);
+        for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+            if (u == owner) e = colq[u].read();
+        }
+        if (i == col) pivot = e;
+        if (i == col || e != T(0)) {
+            vout[1 + n].val = e;
+            vout[1 + n].idx = i;
+            ++n;
+        }
+        part[(i - col) % P] += e * e;
     }
-    FGC_CYCLES("qr_evaluate", 0, "norm", n, dot_ii(n, P, CFG::ADD_LAT),
-               CFG::DIV_LAT + dot_depth(n, P, CFG::ADD_LAT, CFG::MUL_LAT));
-    const T norm2 = fold_partials<T, P>(part);
-    const T norm = std::sqrt(norm2);  // of the scaled column: >= 1
-    const T pivot = x[0];             // at[0] is the pivot row col
-    const T alpha = pivot >= T(0) ? T(-norm) : norm;
-    const T tau = T(1) / (norm2 - alpha * pivot);  // 2 / |v|^2, without a second sum
-    // sqrt, alpha * pivot, subtract, divide: depth Ls + Lm + La + Ld
-    FGC_CYCLES("qr_evaluate", 0, "tail", 1, 1,
-               CFG::SQRT_LAT + CFG::MUL_LAT + CFG::ADD_LAT + CFG::DIV_LAT);
-    vout[0].val = tau;
+    FGC_CYCLES("qr_evaluate", 0, "receive_norm", rows - col, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+    const T norm2 = fold_partials<T, P>(part);  // depth La ceil(log2 P)
+    FGC_CYCLES("qr_evaluate", 0, "fold", 1, 1, CFG::ADD_LAT * ceil_log2(P));
+    // nothing to reflect (every entry 0, or too small to square): n = 0
+    if (!(norm2 > T(0))) n = 0;
+    vout[0].val = T(0);
     vout[0].idx = n;
-    vout[1].val = alpha * big;
-    vout[1].idx = col;
-    vout[2].val = pivot - alpha;
+    hout[0].val = norm2;
+    hout[0].idx = n;
+    hout[1].val = pivot;
+    hout[1].idx = col;
 }
 
-// The collector: row j of R, final after reflection j (R_jj from the header, the rest from the
+// The collector: row j of R, final after reflection j (R_jj from qr_finish, the rest from the
 // Update units in column order), into cond (j < f) or update (f <= j < f + nf), and its largest
 // magnitude into the running scale (a function argument read before it is written).
 template <class CFG>
-void qr_collect(int j, int rows, int f, int s, int k, hls::stream<qr_word<typename CFG::T> >& hq,
+void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::T>& rq,
                 hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
                 typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale) {
@@ -421,9 +516,8 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<qr_word<typena
     const int w = f + s, cols = w + 1;
     const int last = rows < w ? rows : w;
     const int nf = last - f > 0 ? last - f : 0;
-    hq.read();  // {tau, n}
-    const T diag = hq.read().val;
-    FGC_CYCLES("qr_collect", 0, "header", 2, 1, 1);
+    const T diag = rq.read();
+    FGC_CYCLES("qr_collect", 0, "header", 1, 1, 1);
     if (j < 0 || j >= k) return;
     T big = *scale;
     // from the row's first column out (0 in cond, f in update: zeros left of the diagonal, as
@@ -457,8 +551,10 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<qr_word<typena
 // One reflection: the DATAFLOW region (see the top of the file).
 template <class CFG>
 void qr_reflection(int j, int rows, int f, int s, int cols, int k,
-                   const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 2],
-                   qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 2],
+                   const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1],
+                   const qr_word<typename CFG::T> hin[2],
+                   qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1],
+                   qr_word<typename CFG::T> hout[2],
                    typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
                    typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                    typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
@@ -467,20 +563,24 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
     hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS];
 #pragma HLS STREAM variable=vq depth=V_DEPTH
-    hls::stream<qr_word<typename CFG::T> > hq;
+    hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS];
+#pragma HLS STREAM variable=tq depth=3
+    hls::stream<typename CFG::T> rq;
     hls::stream<typename CFG::T> colq[CFG::N_UNITS];
 #pragma HLS STREAM variable=colq depth=CFG::MAX_ROWS
     hls::stream<typename CFG::T> rowq[CFG::N_UNITS];
 #pragma HLS STREAM variable=rowq depth=CFG::LOCAL_COLS
     FGC_REGION("qr_reflection");
-    qr_broadcast<CFG>(vin, vq, hq);
-    qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, work, colq, rowq);
-    qr_evaluate<CFG>(j, rows, k, colq, vout);
-    qr_collect<CFG>(j, rows, f, s, k, hq, rowq, cond, update, scale);
+    qr_broadcast<CFG>(vin, vq);
+    qr_finish<CFG>(hin, tq, rq);
+    qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
+    qr_evaluate<CFG>(j, rows, k, colq, vout, hout);
+    qr_collect<CFG>(j, rows, f, s, k, rq, rowq, cond, update, scale);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
+    FGC_DRAINED(tq, CFG::N_UNITS);
     FGC_DRAINED(colq, CFG::N_UNITS);
     FGC_DRAINED(rowq, CFG::N_UNITS);
-    FGC_DRAINED(&hq, 1);
+    FGC_DRAINED(&rq, 1);
 }
 
 // ---- the step ---------------------------------------------------------------------------------
@@ -498,20 +598,23 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
     }
     const int k = rows < cols ? rows : cols;
     enum { MAX_REGIONS = CFG::MAX_COLS + 1 };
-    // the reflector's two buffers: region j reads va and writes vb for even j + 1, the other way
-    // round for odd j + 1 (a ping-pong between regions, no buffer read and written in one)
-    qr_word<T> va[CFG::MAX_ROWS + 2], vb[CFG::MAX_ROWS + 2];
-    va[0].val = T(0);  // region -1 reads va: an empty reflection
+    // the reflector's two buffers (vector va / vb, norm and pivot ha / hb): region j reads va, ha
+    // and writes vb, hb for even j + 1, the other way round for odd j + 1 (a ping-pong between
+    // regions, no buffer read and written in one)
+    qr_word<T> va[CFG::MAX_ROWS + 1], vb[CFG::MAX_ROWS + 1], ha[2], hb[2];
+    va[0].val = T(0);  // region -1 reads va, ha: an empty reflection
     va[0].idx = 0;
-    va[1].val = T(0);
-    va[1].idx = -1;
+    ha[0].val = T(0);
+    ha[0].idx = 0;
+    ha[1].val = T(0);
+    ha[1].idx = -1;
     T scale = T(0);
     for (int j = -1; j < k; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
         if (((j + 1) & 1) == 0) {
-            qr_reflection<CFG>(j, rows, f, s, cols, k, va, vb, work, cond, update, &scale);
+            qr_reflection<CFG>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond, update, &scale);
         } else {
-            qr_reflection<CFG>(j, rows, f, s, cols, k, vb, va, work, cond, update, &scale);
+            qr_reflection<CFG>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond, update, &scale);
         }
         FGC_SEQUENTIAL();
     }
