@@ -750,9 +750,10 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         phases.append(Phase(f"qr_commit_level{li}", False, tuple(
             Process(f"commit{i}", "qr_commit", tuple(commit_loops(tables, i, timing, False)))
             for i in level), linear=True))
-    _backsub_phases(program, ops, phases, "backsub")
-    units.append(Unit("backsub", "back-substitution (cond_backsub)", 1,
-                      (("add", 1), ("mul", 2))))
+    _backsub_phases(program, ops, phases, "backsub", sets)
+    for s in range(sets):
+        units.append(Unit(f"qr{s}_backsub", "back-substitution (cond_backsub)", 1,
+                          (("add", 1), ("mul", 2))))
     sizes = _sizes(program)
     cols = sizes["MAX_W"] + 1
     local = -(-cols // opts.units)
@@ -767,16 +768,18 @@ def _qr(program, opts, ops, units, memories, channels, phases):
 def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
                   name: str = "bs") -> list[Loop]:
     """The loops of ``cond_backsub`` (backends/hls/include/fgc_backsub.h) on one conditional of
-    f frontal and s separator columns, as its csim counters count them: per row the separator's
-    dot product (trip s, PARTIALS = the add latency interleaved sums, + one subtract), the f
-    reciprocals of the diagonal, then column by column (last first) one multiply and the
-    column above the pivot (trip r, II 1, multiply-add deep)."""
+    f frontal and s separator columns, as its csim counters count them: the rows' partial sums
+    zeroed (all PARTIALS banks a cycle), the separator's share S xs of every row in one loop
+    (trip f s, II 1: consecutive iterations hit different rows, PARTIALS = the add latency
+    interleaved sums per row, multiply-add deep), each row's partial sums folded and subtracted
+    from d (trip f, II 1, La (1 + ⌈log₂ PARTIALS⌉) deep), the f reciprocals of the diagonal, then
+    column by column (last first) one multiply and the column above the pivot (trip r, II 1,
+    multiply-add deep)."""
     la, lm = ops.add.latency, ops.mul.latency
-    loops = []
-    for i in range(frontal):
-        if separator:
-            dot = dot_loop(f"{name}_sep{i}", separator, ops, partials=la)
-            loops.append(Loop(dot.name, dot.trip, dot.ii, dot.depth + la))
+    tree = math.ceil(math.log2(la)) if la > 1 else 0
+    loops = [Loop(f"{name}_zero", frontal, 1, 1),
+             Loop(f"{name}_separator", frontal * separator, 1, lm + la),
+             Loop(f"{name}_fold", frontal, 1, la * (1 + tree))]
     if frontal:
         loops.append(Loop(f"{name}_reciprocals", frontal, 1, ops.div.latency))
     for r in range(frontal - 1, -1, -1):
@@ -786,20 +789,37 @@ def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
     return loops
 
 
-def _backsub_phases(program, ops, phases, unit) -> None:
-    """The emitted back_substitute: one cond_backsub per step, root first, one after another
-    (:func:`backsub_loops`)."""
-    sched = program.schedule
+def backsub_chunk_loops(tables: dict, steps, ops: OperatorTable, timing: dict,
+                        sets: int) -> list[Loop]:
+    """back_substitute() on ``steps`` (at most ``sets``: one chunk of a level, one step per unit
+    set): their conditionals and separator solutions copied in side by side (a word of each
+    step a cycle, two memory ports: II ⌈sets / 2⌉), the ``backsub_level`` DATAFLOW region (one
+    ``cond_backsub`` process per unit set: the slowest plus the others' fill), the frontal
+    solutions out side by side."""
+    ii = -(-sets // 2)
+    sizes = [(tables["STEP_F"][s], tables["STEP_W"][s]) for s in steps]
+    region = _region_cycles([backsub_loops(f, w - f, ops, name=f"bs{s}")
+                             for s, (f, w) in zip(steps, sizes)])
+    _, depth = timing["move"]
+    return [Loop("cond_in", max(f * (w + 1) for f, w in sizes), ii, depth),
+            Loop("separator_in", max(w - f for f, w in sizes), ii, depth),
+            Loop("backsub_level", 1, 1, region),
+            Loop("solution_out", max(f for f, _ in sizes), ii, depth)]
+
+
+def _backsub_phases(program, ops, phases, unit, sets: int = 1) -> None:
+    """The emitted back_substitute: levels root first, each level's steps (LEVEL_STEPS order)
+    ``sets`` at a time through the ``backsub_level`` region (:func:`backsub_chunk_loops`)."""
     tables, timing = _tables(program), kernel_timing(ops)
-    for li, level in enumerate(sched.back_substitution):
+    begin, order = tables["LEVEL_BEGIN"], tables["LEVEL_STEPS"]
+    for li in range(len(begin) - 2, -1, -1):
         procs = []
-        for i in level:
-            st = sched.steps[i]
-            before, after = backsub_copies(tables, i, timing)
-            procs.append(Process(f"backsub_step{i}", unit, tuple(
-                before + backsub_loops(st.frontal_dim, st.separator_dim, ops, name=f"bs{i}")
-                + after)))
-        phases.append(Phase(f"backsub_level{li}", False, tuple(procs), linear=True))
+        for i in range(begin[li], begin[li + 1], sets):
+            chunk = order[i:min(i + sets, begin[li + 1])]
+            procs.append(Process("backsub_" + "_".join(f"step{s}" for s in chunk), unit,
+                                 tuple(backsub_chunk_loops(tables, chunk, ops, timing, sets))))
+        phases.append(Phase(f"backsub_level{len(begin) - 2 - li}", False, tuple(procs),
+                            linear=True))
 
 
 def _solver_memories(sizes, ops, memories) -> None:
