@@ -409,6 +409,8 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
       test's |δ|² and δ·(g + μδ)), depth 2 (multiply + add);
     - ``sum``: a running sum (II = depth = add latency); ``rmw``: ``+=`` into a table-addressed
       memory (the address may repeat: II = add latency, depth read + add + write);
+      ``scatter``: ``+=`` into a table-addressed memory where every iteration of the loop has
+      its own address (II 1, depth read + add + write);
     - ``max``: a running maximum (compare and select: II = compare latency, depth + 2);
     - ``root``: one square root (√μ); ``decision``: LM control's scalar decision (gain ratio
       divide, two multiplies, two adds, a compare); ``retract``: the state update, one variable
@@ -416,7 +418,7 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
     """
     la, lm, lc = ops.add.latency, ops.mul.latency, ops.compare.latency
     return {"move": (1, 2), "fill": (1, 1), "acc": (la, lm + la), "acc2": (la, 2 * (lm + la)),
-            "sum": (la, la), "rmw": (la, la + 2), "max": (lc, lc + 2),
+            "sum": (la, la), "rmw": (la, la + 2), "scatter": (1, la + 2), "max": (lc, lc + 2),
             "root": (1, ops.sqrt.latency),
             "decision": (1, ops.div.latency + 2 * lm + 2 * la + lc),
             "retract": (1, ops.sqrt.latency + ops.div.latency + ops.sincos.latency
@@ -428,6 +430,20 @@ def kernel_loop(name: str, trip: int, kind: str, timing: dict, repeat: int = 1) 
     (move, acc, retract, …): its II and depth from ``timing`` (:func:`kernel_timing`)."""
     ii, depth = timing[kind]
     return Loop(name, trip, ii, depth, repeat)
+
+
+def kernel_dot(name: str, length: int, timing: dict, repeat: int = 1) -> Loop:
+    """A kernel loop summing ``length`` terms into the adder latency's interleaved partial sums
+    (accel.cpp.jinja's T_PARTIALS / L_PARTIALS), priced by the dot-product rule
+    (:func:`dot_loop`) with the latencies of ``timing`` (:func:`kernel_timing`)."""
+    la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
+    k = max(1, min(length, la))
+    return Loop(name, length, math.ceil(la / k), lm + la * (1 + _ceil_log2(k)), repeat)
+
+
+def _ceil_log2(n: int) -> int:
+    """⌈log₂ n⌉ (0 for n ≤ 1): the adds of a tree folding n sums (fgc_cycles.h's ceil_log2)."""
+    return math.ceil(math.log2(n)) if n > 1 else 0
 
 
 def _block_shape(block) -> tuple[int, int, int, object]:
@@ -451,9 +467,10 @@ def _tables(program) -> dict:
 
 def gradient_loops(program, timing: dict) -> list[Process]:
     """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded, the
-    column map, A^T b row by row, the finiteness check, the scatter into G), after G is zeroed."""
-    from fgc_backends.cfamily.sparsity import TILE
-
+    column map, A^T b a row a cycle into the adder latency's interleaved partial sums of every
+    column (a dot product of m terms, :func:`kernel_dot`), the finiteness check's tree over the
+    padded columns, the scatter into G at II 1), after G is zeroed."""
+    la = timing["acc"][0]
     n_t = sum(v.dim for v in program.variables)
     procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", n_t, "fill", timing),))]
     for i, b in enumerate(program.blocks):
@@ -462,16 +479,17 @@ def gradient_loops(program, timing: dict) -> list[Process]:
         procs.append(Process(f"reduce_{i}", "gradient", (
             kernel_loop("load", m * padded, "move", timing, n),
             kernel_loop("columns", d, "fill", timing, n),
-            kernel_loop("rows", m, "acc", timing, n),
-            kernel_loop("check", padded // TILE, "sum", timing, n),
-            kernel_loop("scatter", d, "rmw", timing, n))))
+            kernel_dot("rows", m, timing, n),
+            Loop("check", 1, 1, la * _ceil_log2(padded), n),
+            kernel_loop("scatter", d, "scatter", timing, n))))
     return procs
 
 
 def hgc_loops(program, timing: dict) -> list[Process]:
     """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded, the
-    column map, the Gram panels - one row of a panel a cycle into TILE x (tiles TILE)
-    accumulators, II = the adder latency - each panel out, the packing of the lower triangle,
+    column map, the Gram panels - one row of a panel a cycle into the adder latency's
+    interleaved partial sums of TILE x (tiles TILE) entries, a dot product of its rows
+    (:func:`kernel_dot`) - each panel out (folded), the packing of the lower triangle,
     its copy into GRAM, the gradient scatter and the finiteness check), after G is zeroed."""
     from fgc_backends.cfamily.sparsity import TILE
 
@@ -486,7 +504,7 @@ def hgc_loops(program, timing: dict) -> list[Process]:
                  kernel_loop("zero_square", padded * padded, "fill", timing, n)]
         for k in range(tiles.count):
             rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
-            loops += [kernel_loop("panel", rows, "acc", timing, n),
+            loops += [kernel_dot("panel", rows, timing, n),
                       kernel_loop("panel_out", TILE * wide * TILE, "fill", timing, n)]
         loops += [kernel_loop("pack", cols * cols, "fill", timing, n),
                   kernel_loop("gram_out", cols * (cols + 1) // 2, "move", timing, n),
@@ -532,24 +550,22 @@ def commit_loops(tables: dict, s: int, timing: dict, cholesky: bool) -> list[Loo
 
 def assemble_loops(tables: dict, s: int, max_w: int, timing: dict) -> list[Loop]:
     """Cholesky's eliminate(): step s's [H | g] zeroed (MAX_W + 1 words a row, a word a cycle),
-    then per factor its Gram's lower triangle added row by row and its gradient entries, per
-    child its update matrix's rows and gradient entries (each += into the table-addressed
-    frontal matrix)."""
+    then per factor its packed Gram's lower triangle and gradient row (d (d + 1) / 2 + d
+    entries), per child its update matrix's upper triangle and reduced g (s (s + 1) / 2 + s),
+    each one loop of ``+=`` into the table-addressed frontal matrix whose entries all go to
+    different addresses (``scatter``: II 1)."""
     w = tables["STEP_W"][s]
     loops = [kernel_loop("zero", w * (max_w + 1), "fill", timing)]
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
         d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
-        loops += [kernel_loop("gram_row", p + 1, "rmw", timing) for p in range(d)]
-        loops.append(kernel_loop("gram_gradient", d, "rmw", timing))
+        loops.append(kernel_loop("gram", d * (d + 1) // 2 + d, "scatter", timing))
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
-        for a in range(sc):
-            loops += [kernel_loop("child_row", sc - a, "rmw", timing),
-                      kernel_loop("child_gradient", 1, "rmw", timing)]
+        loops.append(kernel_loop("child", sc * (sc + 1) // 2 + sc, "scatter", timing))
     return loops
 
 
@@ -799,7 +815,7 @@ def backsub_chunk_loops(tables: dict, steps, ops: OperatorTable, timing: dict,
     ii = -(-sets // 2)
     sizes = [(tables["STEP_F"][s], tables["STEP_W"][s]) for s in steps]
     region = _region_cycles([backsub_loops(f, w - f, ops, name=f"bs{s}")
-                             for s, (f, w) in zip(steps, sizes)])
+                             for s, (f, w) in zip(steps, sizes, strict=True)])
     _, depth = timing["move"]
     return [Loop("cond_in", max(f * (w + 1) for f, w in sizes), ii, depth),
             Loop("separator_in", max(w - f for f, w in sizes), ii, depth),
