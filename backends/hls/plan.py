@@ -487,10 +487,11 @@ def gradient_loops(program, timing: dict) -> list[Process]:
 
 def hgc_loops(program, timing: dict) -> list[Process]:
     """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded, the
-    column map, the Gram panels - one row of a panel a cycle into the adder latency's
-    interleaved partial sums of TILE x (tiles TILE) entries, a dot product of its rows
-    (:func:`kernel_dot`) - each panel out (folded), the packing of the lower triangle,
-    its copy into GRAM, the gradient scatter and the finiteness check), after G is zeroed."""
+    column map, its packed Gram in GRAM zeroed, the Gram panels - one row of a panel a cycle
+    into the adder latency's interleaved partial sums of TILE x (tiles TILE) entries, a dot
+    product of its rows (:func:`kernel_dot`) - each panel's lower-triangle entries out into GRAM
+    (folded, a word a cycle), the gradient scatter from GRAM (II 1) and the finiteness check
+    over the diagonal (interleaved partial sums: the dot-product rule)), after G is zeroed."""
     from fgc_backends.cfamily.sparsity import TILE
 
     n_t = sum(v.dim for v in program.variables)
@@ -501,15 +502,13 @@ def hgc_loops(program, timing: dict) -> list[Process]:
         cols = d + 1
         loops = [kernel_loop("load", m * padded, "move", timing, n),
                  kernel_loop("columns", d, "fill", timing, n),
-                 kernel_loop("zero_square", padded * padded, "fill", timing, n)]
+                 kernel_loop("zero_gram", cols * (cols + 1) // 2, "fill", timing, n)]
         for k in range(tiles.count):
             rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
             loops += [kernel_dot("panel", rows, timing, n),
                       kernel_loop("panel_out", TILE * wide * TILE, "fill", timing, n)]
-        loops += [kernel_loop("pack", cols * cols, "fill", timing, n),
-                  kernel_loop("gram_out", cols * (cols + 1) // 2, "move", timing, n),
-                  kernel_loop("scatter", d, "rmw", timing, n),
-                  kernel_loop("check", cols, "sum", timing, n)]
+        loops += [kernel_loop("scatter", d, "scatter", timing, n),
+                  kernel_dot("check", cols, timing, n)]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
 
