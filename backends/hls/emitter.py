@@ -201,8 +201,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
             "blocks": blocks, "network": network, "unit_sets": max(1, sets), "units": units,
-            # back_substitute's copies: a word of each unit set's step a cycle, two ports
-            "bs_ii": -(-max(1, sets) // 2),
+            # back_substitute's copies: the memories' two ports shared out over the unit sets
+            "bs_words": max(1, 2 // max(1, sets)), "bs_ii": -(-max(1, sets) // 2),
             "cpe": plan.options.cpe, "plan": plan,
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
 

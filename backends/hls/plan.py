@@ -42,6 +42,7 @@ from fgc_backends.cost.target import DEFAULT, DEFAULT_PART, capacity
 PART = DEFAULT.name
 PART_DSP, PART_BRAM36, PART_LUT, PART_FF = DEFAULT.dsp, DEFAULT.bram36, DEFAULT.lut, DEFAULT.ff
 BRAM18_BITS = 18 * 1024
+PORTS = 2  # words a cycle a copy moves through a memory's two ports (accel.cpp.jinja's PORTS)
 LUTRAM_MAX_BITS = 1024  # memories up to this size go to LUTRAM / registers (design)
 
 # default ALLOCATION limits of the factor datapath, per kernel operator kind (design: the sim
@@ -441,6 +442,11 @@ def kernel_dot(name: str, length: int, timing: dict, repeat: int = 1) -> Loop:
     return Loop(name, length, math.ceil(la / k), lm + la * (1 + _ceil_log2(k)), repeat)
 
 
+def _ported(words: int) -> int:
+    """Iterations of a copy of ``words`` words at :data:`PORTS` words a cycle."""
+    return -(-words // PORTS)
+
+
 def _ceil_log2(n: int) -> int:
     """⌈log₂ n⌉ (0 for n ≤ 1): the adds of a tree folding n sums (fgc_cycles.h's ceil_log2)."""
     return math.ceil(math.log2(n)) if n > 1 else 0
@@ -466,10 +472,11 @@ def _tables(program) -> dict:
 
 
 def gradient_loops(program, timing: dict) -> list[Process]:
-    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded, the
-    column map, A^T b a row a cycle into the adder latency's interleaved partial sums of every
-    column (a dot product of m terms, :func:`kernel_dot`), the finiteness check's tree over the
-    padded columns, the scatter into G at II 1), after G is zeroed."""
+    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded,
+    :data:`PORTS` words a cycle, the column map, A^T b a row a cycle into the adder latency's
+    interleaved partial sums of every column (a dot product of m terms, :func:`kernel_dot`),
+    the finiteness check's tree over the padded columns, the scatter into G at II 1), after G
+    is zeroed."""
     la = timing["acc"][0]
     n_t = sum(v.dim for v in program.variables)
     procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", n_t, "fill", timing),))]
@@ -477,7 +484,7 @@ def gradient_loops(program, timing: dict) -> list[Process]:
         m, d, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         procs.append(Process(f"reduce_{i}", "gradient", (
-            kernel_loop("load", m * padded, "move", timing, n),
+            kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("columns", d, "fill", timing, n),
             kernel_dot("rows", m, timing, n),
             Loop("check", 1, 1, la * _ceil_log2(padded), n),
@@ -486,12 +493,13 @@ def gradient_loops(program, timing: dict) -> list[Process]:
 
 
 def hgc_loops(program, timing: dict) -> list[Process]:
-    """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded, the
-    column map, its packed Gram in GRAM zeroed, the Gram panels - one row of a panel a cycle
-    into the adder latency's interleaved partial sums of TILE x (tiles TILE) entries, a dot
-    product of its rows (:func:`kernel_dot`) - each panel's lower-triangle entries out into GRAM
-    (folded, a word a cycle), the gradient scatter from GRAM (II 1) and the finiteness check
-    over the diagonal (interleaved partial sums: the dot-product rule)), after G is zeroed."""
+    """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded,
+    :data:`PORTS` words a cycle, the column map, its packed Gram in GRAM zeroed, the Gram
+    panels - one row of a panel a cycle into the adder latency's interleaved partial sums of
+    TILE x (tiles TILE) entries, a dot product of its rows (:func:`kernel_dot`) - each panel's
+    lower-triangle entries out into GRAM (folded, a word a cycle), the gradient scatter from
+    GRAM (II 1) and the finiteness check over the diagonal (interleaved partial sums: the
+    dot-product rule)), after G is zeroed."""
     from fgc_backends.cfamily.sparsity import TILE
 
     n_t = sum(v.dim for v in program.variables)
@@ -500,7 +508,7 @@ def hgc_loops(program, timing: dict) -> list[Process]:
         m, d, padded, tiles = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         cols = d + 1
-        loops = [kernel_loop("load", m * padded, "move", timing, n),
+        loops = [kernel_loop("load", _ported(m * padded), "move", timing, n),
                  kernel_loop("columns", d, "fill", timing, n),
                  kernel_loop("zero_gram", cols * (cols + 1) // 2, "fill", timing, n)]
         for k in range(tiles.count):
@@ -516,8 +524,8 @@ def hgc_loops(program, timing: dict) -> list[Process]:
 def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
                 timing: dict) -> list[Loop]:
     """accel.cpp.jinja's stack() of step s into its unit set's banks: the rows zeroed (all
-    n_u banks a cycle), each factor's rows [A | b] and each child's new-factor rows a word a
-    cycle, the damping rows' diagonal."""
+    n_u banks a cycle), each factor's rows [A | b] and each child's new-factor rows
+    :data:`PORTS` words a cycle, the damping rows' diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
     loops = [kernel_loop("zero", m * local, "fill", timing)]
@@ -525,13 +533,13 @@ def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
         words = tables["FACTOR_A_OFF"][fac + 1] - tables["FACTOR_A_OFF"][fac]
-        loops.append(kernel_loop("factor_rows", words, "move", timing))
+        loops.append(kernel_loop("factor_rows", _ported(words), "move", timing))
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
-        loops.append(kernel_loop("child_rows", tables["STEP_NF_ROWS"][c] * (sc + 1), "move",
-                                 timing))
+        loops.append(kernel_loop("child_rows", _ported(tables["STEP_NF_ROWS"][c] * (sc + 1)),
+                                 "move", timing))
     if damped:
         loops.append(kernel_loop("damping", f, "fill", timing))
     return loops
@@ -539,12 +547,12 @@ def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
 
 def commit_loops(tables: dict, s: int, timing: dict, cholesky: bool) -> list[Loop]:
     """A step's conditional into COND and its new factor (QR's commit(): STEP_NF_ROWS rows)
-    or update matrix (Cholesky's store at the end of eliminate(): w - f rows) into NF, a word a
-    cycle."""
+    or update matrix (Cholesky's store at the end of eliminate(): w - f rows) into NF,
+    :data:`PORTS` words a cycle."""
     w, f = tables["STEP_W"][s], tables["STEP_F"][s]
     nf = w - f if cholesky else tables["STEP_NF_ROWS"][s]
-    return [kernel_loop("cond", f * (w + 1), "move", timing),
-            kernel_loop("nf", nf * (w - f + 1), "move", timing)]
+    return [kernel_loop("cond", _ported(f * (w + 1)), "move", timing),
+            kernel_loop("nf", _ported(nf * (w - f + 1)), "move", timing)]
 
 
 def assemble_loops(tables: dict, s: int, max_w: int, timing: dict) -> list[Loop]:
@@ -569,18 +577,20 @@ def assemble_loops(tables: dict, s: int, max_w: int, timing: dict) -> list[Loop]
 
 
 def backsub_copies(tables: dict, s: int, timing: dict) -> tuple[list[Loop], list[Loop]]:
-    """back_substitute()'s copies around cond_backsub for step s: the conditional from COND and
-    the separator's solution in; the frontal solution out."""
+    """back_substitute()'s copies around cond_backsub for step s alone on one unit (one unit
+    set, :data:`PORTS` words a cycle): the conditional from COND and the separator's solution
+    in; the frontal solution out."""
     w, f = tables["STEP_W"][s], tables["STEP_F"][s]
-    return ([kernel_loop("cond_in", f * (w + 1), "move", timing),
-             kernel_loop("separator_in", w - f, "move", timing)],
-            [kernel_loop("solution_out", f, "move", timing)])
+    return ([kernel_loop("cond_in", _ported(f * (w + 1)), "move", timing),
+             kernel_loop("separator_in", _ported(w - f), "move", timing)],
+            [kernel_loop("solution_out", _ported(f), "move", timing)])
 
 
 def rounding_noise_loops(program, timing: dict) -> list[Process]:
     """rounding_noise_all(): each variable's largest storage entry, then per instance its rows
-    loaded, the column scales, the rows' moved terms (a row a cycle, its TILE partial sums
-    unrolled) and their sum (TILE rows a step into TILE partial sums)."""
+    loaded (:data:`PORTS` words a cycle), the column scales, the rows' moved terms (a row a
+    cycle, its TILE partial sums unrolled) and their sum (TILE rows a step into TILE partial
+    sums)."""
     from fgc_backends.cfamily.sparsity import TILE
 
     la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
@@ -591,7 +601,7 @@ def rounding_noise_loops(program, timing: dict) -> list[Process]:
         n = sum(1 for f in program.factors if f.block == i)
         row_depth = 2 * lm + la * (padded // TILE + 2)
         procs.append(Process(f"noise_{i}", "lm_control", (
-            kernel_loop("load", m * padded, "move", timing, n),
+            kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("scales", padded, "fill", timing, n),
             Loop("rows", m, 1, row_depth, n),
             kernel_loop("terms", -(-m // TILE), "acc2", timing, n))))
@@ -807,19 +817,23 @@ def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
 def backsub_chunk_loops(tables: dict, steps, ops: OperatorTable, timing: dict,
                         sets: int) -> list[Loop]:
     """back_substitute() on ``steps`` (at most ``sets``: one chunk of a level, one step per unit
-    set): their conditionals and separator solutions copied in side by side (a word of each
-    step a cycle, two memory ports: II ⌈sets / 2⌉), the ``backsub_level`` DATAFLOW region (one
-    ``cond_backsub`` process per unit set: the slowest plus the others' fill), the frontal
-    solutions out side by side."""
-    ii = -(-sets // 2)
+    set): their conditionals and separator solutions copied in side by side (the memories' two
+    ports shared out: ``max(1, PORTS // sets)`` words of each step an iteration at II
+    ⌈sets / PORTS⌉), the ``backsub_level`` DATAFLOW region (one ``cond_backsub`` process per
+    unit set: the slowest plus the others' fill), the frontal solutions out side by side."""
+    per, ii = max(1, PORTS // sets), -(-sets // PORTS)
     sizes = [(tables["STEP_F"][s], tables["STEP_W"][s]) for s in steps]
     region = _region_cycles([backsub_loops(f, w - f, ops, name=f"bs{s}")
                              for s, (f, w) in zip(steps, sizes, strict=True)])
     _, depth = timing["move"]
-    return [Loop("cond_in", max(f * (w + 1) for f, w in sizes), ii, depth),
-            Loop("separator_in", max(w - f for f, w in sizes), ii, depth),
+
+    def copy(name, words):
+        return Loop(name, -(-max(words) // per), ii, depth)
+
+    return [copy("cond_in", [f * (w + 1) for f, w in sizes]),
+            copy("separator_in", [w - f for f, w in sizes]),
             Loop("backsub_level", 1, 1, region),
-            Loop("solution_out", max(f for f, _ in sizes), ii, depth)]
+            copy("solution_out", [f for f, _ in sizes])]
 
 
 def _backsub_phases(program, ops, phases, unit, sets: int = 1) -> None:
