@@ -414,8 +414,10 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
       its own address (II 1, depth read + add + write);
     - ``max``: a running maximum (compare and select: II = compare latency, depth + 2);
     - ``root``: one square root (√μ); ``decision``: LM control's scalar decision (gain ratio
-      divide, two multiplies, two adds, a compare); ``retract``: the state update, one variable
-      a cycle through a retraction (square root, divide, sin/cos, four multiply-adds deep).
+      divide, two multiplies, two adds, a compare); ``retract``: one variable a cycle through a
+      retraction-sized datapath (square root, divide, sin/cos, four multiply-adds deep), what
+      the update model assumes for a Log pass (the emitted state update is priced per type by
+      :func:`retract_datapath`).
     """
     la, lm, lc = ops.add.latency, ops.mul.latency, ops.compare.latency
     return {"move": (1, 2), "fill": (1, 1), "acc": (la, lm + la), "acc2": (la, 2 * (lm + la)),
@@ -693,11 +695,12 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     else:
         _cholesky(program, opts, les, units, memories, channels, phases)
 
-    # state update: one retract per variable, pipelined one a cycle, variable type by type
-    # (retract_all's loop per kind)
-    units.append(Unit("state_update", "retract x ⊕ δ", 1,
-                      (("add", 3), ("mul", 4), ("sqrt", 1), ("div", 1), ("trig", 2))))
-    phases.append(state_update_phase(program.variables, timing))
+    # state update: one retract datapath per variable type (ALLOCATION as the factor datapaths'),
+    # its variables pipelined through it, type by type (retract_all's loop per kind)
+    for k, name in enumerate(_type_counts(program.variables)):
+        units.append(Unit(f"state_update_{k}", f"retract x ⊕ δ of {name}", 1,
+                          retract_datapath(name, ops, opts.allocation)[0]))
+    phases.append(state_update_phase(program.variables, ops, opts.allocation))
     phases.append(Phase("factor_cost", False, tuple(cost)))
     n_x = sum(v.storage_dim for v in program.variables)
     n_t = sum(v.dim for v in program.variables)
@@ -857,20 +860,47 @@ def _solver_memories(sizes, ops, memories) -> None:
     memories.append(Memory("nf", sizes["N_NF"], ops.word_bits, 1))
 
 
-def retract_loops(variables, timing: dict) -> tuple[Loop, ...]:
-    """retract_all's loops over ``variables`` (VariableSpecs): one pipelined loop per variable
-    type, in first-seen order."""
+def _type_counts(variables) -> dict[str, int]:
+    """Variables per type, in first-seen order (retract_all's kinds)."""
     kinds: dict[str, int] = {}
     for v in variables:
         kinds[v.type_name] = kinds.get(v.type_name, 0) + 1
-    return tuple(kernel_loop(f"kind{k}", n, "retract", timing)
-                 for k, n in enumerate(kinds.values()))
+    return kinds
 
 
-def state_update_phase(variables, timing: dict) -> Phase:
+def retract_datapath(type_name: str, ops: OperatorTable,
+                     allocation=DEFAULT_ALLOCATION) -> tuple[tuple[tuple[str, int], ...], int, int]:
+    """The state-update datapath of one variable type as emitted (accel.cpp.jinja's
+    retract_<k>, its ALLOCATION limits): (allocated operators, II, depth). Operators per kind:
+    the retraction's count, at most the ``allocation`` limit (the factor datapaths' rule); II:
+    max over kinds of ⌈count × op II / allocated⌉; depth: the retraction's critical path."""
+    from fgc.ir.program import KernelText
+    from fgc_backends.cfamily.retract import retract_kernel, variable_class
+    from fgc_backends.cost.kernels import critical_path
+
+    kernel = retract_kernel(variable_class(type_name))
+    counts = kernel.op_counts()
+    alloc = dict(allocation)
+    allocated = tuple((k, min(alloc[k], n)) for k, n in counts.items() if n > 0 and k in alloc)
+    ii = max([1] + [math.ceil(counts[k] * ops.op(k).ii / n) for k, n in allocated])
+    return allocated, ii, critical_path(KernelText.of(kernel), _sim_table(ops))
+
+
+def retract_loops(variables, ops: OperatorTable,
+                  allocation=DEFAULT_ALLOCATION) -> tuple[Loop, ...]:
+    """retract_all's loops over ``variables`` (VariableSpecs): one pipelined loop per variable
+    type, in first-seen order, at its datapath's II and depth (:func:`retract_datapath`)."""
+    loops = []
+    for k, (name, n) in enumerate(_type_counts(variables).items()):
+        _, ii, depth = retract_datapath(name, ops, allocation)
+        loops.append(Loop(f"kind{k}", n, ii, depth))
+    return tuple(loops)
+
+
+def state_update_phase(variables, ops: OperatorTable, allocation=DEFAULT_ALLOCATION) -> Phase:
     """The state update as emitted (retract_all) over ``variables``."""
     return Phase("state_update", False, (Process("retract", "state_update",
-                                                 retract_loops(variables, timing)),))
+                                                 retract_loops(variables, ops, allocation)),))
 
 
 def lm_control_phase(n_t: int, n_x: int, timing: dict) -> Phase:
