@@ -49,6 +49,10 @@ LUTRAM_MAX_BITS = 1024  # memories up to this size go to LUTRAM / registers (des
 # model's factor pool, so both models share one datapath size)
 DEFAULT_ALLOCATION = (("add", 16), ("mul", 24), ("div", 4), ("sqrt", 2), ("trig", 2),
                       ("special", 2))
+# default ALLOCATION limits of the state update's datapath per variable type (design: it runs
+# once per trial step over the variables, so it is kept small; a Pose3 retraction at these
+# limits takes a variable every 36 cycles, set by its special functions)
+STATE_ALLOCATION = (("add", 4), ("mul", 6), ("div", 1), ("sqrt", 1), ("trig", 2), ("special", 1))
 
 
 JACOBIAN_STORAGE = ("whitened", "raw")
@@ -65,6 +69,7 @@ class PlanOptions:
     cpe: int = 20  # Cholesky process elements
     unit_sets: int | None = None  # QR unit sets: None = 2 for two-ended chains, else 1
     allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
+    state_allocation: tuple[tuple[str, int], ...] = STATE_ALLOCATION  # retract_<k>'s limits
     hgc_lanes: int = 16  # multiply-accumulate lanes of the Hessian/gradient unit
     # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
     # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and
@@ -640,7 +645,7 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
             raise PlanError(f"plan option {name} must be one of {', '.join(allowed)}, "
                             f"got {getattr(opts, name)!r}")
     alloc = dict(opts.allocation)
-    for kind, n in alloc.items():
+    for kind, n in (*alloc.items(), *opts.state_allocation):
         if n < 1:
             raise PlanError(f"ALLOCATION limit of {kind} must be ≥ 1, got {n}")
     precision = opts.precision or program.solver.precision
@@ -695,12 +700,12 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     else:
         _cholesky(program, opts, les, units, memories, channels, phases)
 
-    # state update: one retract datapath per variable type (ALLOCATION as the factor datapaths'),
-    # its variables pipelined through it, type by type (retract_all's loop per kind)
+    # state update: one retract datapath per variable type (ALLOCATION: state_allocation's
+    # limits), its variables pipelined through it, type by type (retract_all's loop per kind)
     for k, name in enumerate(_type_counts(program.variables)):
         units.append(Unit(f"state_update_{k}", f"retract x ⊕ δ of {name}", 1,
-                          retract_datapath(name, ops, opts.allocation)[0]))
-    phases.append(state_update_phase(program.variables, ops, opts.allocation))
+                          retract_datapath(name, ops, opts.state_allocation)[0]))
+    phases.append(state_update_phase(program.variables, ops, opts.state_allocation))
     phases.append(Phase("factor_cost", False, tuple(cost)))
     n_x = sum(v.storage_dim for v in program.variables)
     n_t = sum(v.dim for v in program.variables)
@@ -869,10 +874,11 @@ def _type_counts(variables) -> dict[str, int]:
 
 
 def retract_datapath(type_name: str, ops: OperatorTable,
-                     allocation=DEFAULT_ALLOCATION) -> tuple[tuple[tuple[str, int], ...], int, int]:
+                     allocation=STATE_ALLOCATION) -> tuple[tuple[tuple[str, int], ...], int, int]:
     """The state-update datapath of one variable type as emitted (accel.cpp.jinja's
     retract_<k>, its ALLOCATION limits): (allocated operators, II, depth). Operators per kind:
-    the retraction's count, at most the ``allocation`` limit (the factor datapaths' rule); II:
+    the retraction's count, at most the ``allocation`` limit (the factor datapaths' rule,
+    ``PlanOptions.state_allocation``'s limits); II:
     max over kinds of ⌈count × op II / allocated⌉; depth: the retraction's critical path."""
     from fgc.ir.program import KernelText
     from fgc_backends.cfamily.retract import retract_kernel, variable_class
@@ -887,7 +893,7 @@ def retract_datapath(type_name: str, ops: OperatorTable,
 
 
 def retract_loops(variables, ops: OperatorTable,
-                  allocation=DEFAULT_ALLOCATION) -> tuple[Loop, ...]:
+                  allocation=STATE_ALLOCATION) -> tuple[Loop, ...]:
     """retract_all's loops over ``variables`` (VariableSpecs): one pipelined loop per variable
     type, in first-seen order, at its datapath's II and depth (:func:`retract_datapath`)."""
     loops = []
@@ -897,7 +903,7 @@ def retract_loops(variables, ops: OperatorTable,
     return tuple(loops)
 
 
-def state_update_phase(variables, ops: OperatorTable, allocation=DEFAULT_ALLOCATION) -> Phase:
+def state_update_phase(variables, ops: OperatorTable, allocation=STATE_ALLOCATION) -> Phase:
     """The state update as emitted (retract_all) over ``variables``."""
     return Phase("state_update", False, (Process("retract", "state_update",
                                                  retract_loops(variables, ops, allocation)),))
