@@ -301,10 +301,15 @@ def test_allocation_limits_are_the_plans(tmp_path):
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
     plan = accel_plan(program, HlsConfig())
     found = allocations((out / "lio.cpp").read_text())
-    assert set(found) == {f"factor_{b}" for b in range(len(program.blocks))}
-    for b in range(len(program.blocks)):
-        limits = dict(plan.unit(f"factor_{b}").operators)
-        ops = {n[1:]: lim for kind, n, lim in found[f"factor_{b}"] if kind == "operation"}
+    # the factor datapaths (factor_<b>) and the state update's per variable type (retract_<k>)
+    pairs = [(f"factor_{b}", f"factor_{b}") for b in range(len(program.blocks))]
+    pairs += [(f"retract_{u.name.rsplit('_', 1)[1]}", u.name) for u in plan.units
+              if u.name.startswith("state_update_")]
+    assert len(pairs) > len(program.blocks)
+    assert set(found) == {function for function, _ in pairs}
+    for function, unit in pairs:
+        limits = dict(plan.unit(unit).operators)
+        ops = {n[1:]: lim for kind, n, lim in found[function] if kind == "operation"}
         assert ops == {k: v for k, v in limits.items() if k in ("add", "mul", "div", "sqrt")}
-        assert all(n.startswith("d") for kind, n, _ in found[f"factor_{b}"]
+        assert all(n.startswith("d") for kind, n, _ in found[function]
                    if kind == "operation")  # double: dadd, dmul, ...

@@ -424,9 +424,12 @@ def test_cycle_counts(driver):
     assert region == words + cpe_depth + 2 + 2 + (f - 1) * cpe_depth + (20 - f)
     sequential = loop(f, 1, la) + loop(f, 1, 2)  # damping, pivot check
     p = 12  # the driver's PARTIALS
-    k = min(s, p)
-    dot = loop(s, math.ceil(la / k), lm + la * (1 + math.ceil(math.log2(k))) + la)
-    backsub = f * dot + loop(f, 1, ld) + sum(lm + loop(r, 1, lm + la) for r in range(f))
+    # cond_backsub: the rows' partial sums zeroed, the f s separator terms in one II-1 loop
+    # (multiply-add deep), each row's P partial sums folded (La (1 + ⌈log₂ P⌉) deep), the
+    # reciprocals, then the triangle column by column
+    fold = loop(f, 1, la * (1 + math.ceil(math.log2(p))))
+    backsub = (loop(f, 1, 1) + loop(f * s, 1, lm + la) + fold + loop(f, 1, ld)
+               + sum(lm + loop(r, 1, lm + la) for r in range(f)))
     assert twenty.cycles == region + sequential
     assert twenty.backsub == backsub
 

@@ -15,8 +15,10 @@ import fgc
 from fgc.compile import compile_graph
 from fgc.frontend.factors import BetweenFactor, PriorFactor
 from fgc.frontend.geometry import Pose2
-from fgc.ir.program import SolverConfig
+from fgc.ir.program import KernelText, SolverConfig
+from fgc_backends.cfamily.retract import retract_kernel, variable_class
 from fgc_backends.cost import operators
+from fgc_backends.cost.kernels import critical_path
 from fgc_backends.hls.plan import (
     PART_DSP,
     AcceleratorPlan,
@@ -27,9 +29,11 @@ from fgc_backends.hls.plan import (
     PlanOptions,
     Process,
     Unit,
+    _sim_table,
     build_plan,
     dot_loop,
     plan_cost,
+    retract_datapath,
 )
 
 F32 = operators.FLOAT32
@@ -116,23 +120,32 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     plan = build_plan(qr_chain)
     c = plan_cost(plan)
     phases = dict(c.phase_cycles)
-    # retract: 3 variables at II 1, depth sqrt 28 + div 28 + sincos 40 + 4 × (mul 8 + add 11)
-    # = 172 -> 2 + 172 = 174
-    assert phases["state_update"] == 174
+    # retract: the Pose2 datapath (the state update's default limits add 4, mul 6, trig 2,
+    # special 1) for the retraction's 8 adds, 17 multiplies, 2 sin/cos and 2 special functions;
+    # II = max(8 / 4, ⌈17 / 6⌉, 2 / 2, 2 specials x II 12 / 1) = 24; its depth is the
+    # retraction's critical path: 3 variables take 2 x 24 + depth
+    allocated, ii, depth = retract_datapath("Pose2", F32)
+    assert dict(allocated) == {"add": 4, "mul": 6, "trig": 2, "special": 1} and ii == 24
+    assert depth == critical_path(KernelText.of(retract_kernel(variable_class("Pose2"))),
+                                  _sim_table(F32))
+    assert phases["state_update"] == 2 * 24 + depth
     # LM control: the gradient's largest entry (9 entries, II compare 2, depth 4: 20), |x|
     # (12 storage words, II add 11, depth mul + add 19: 140), the step test (9 entries, II 11,
     # depth 2 (8 + 11) = 38: 126), the decision (div 28 + 2 mul + 2 add + compare 2 = 68), the
     # accepted x copied (12 words, II 1, depth 2: 13): 367
     assert phases["lm_control"] == 20 + 140 + 126 + 68 + 13
-    # back-substitution (fgc_backsub.h's loops): the root step (f 3, s 0): reciprocals
-    # 2 + div 28 = 30, then per column last first a multiply 8 and the column above it
-    # (trip r, mul + add 19 deep): 8 + (1 + 19) + 8 + 19 + 8 = 63 -> 93, + its conditional
-    # copied in (3 x 4 words, II 1, depth 2: 13) and the solution out (3: 4) -> 110. The second
-    # level has two steps (f 3, s 3), one after the other: each row's separator dot product of 3
-    # terms at II ceil(11 / 3) = 4, depth 8 + 11 (1 + 2) + 11 = 52: 60 a row, 180 -> 273 a step,
-    # + the copies (3 x 7 words: 22, the separator's 3: 4, the solution's 3: 4) -> 303
+    # back-substitution (fgc_backsub.h's loops in the backsub_level region; two unit sets, so
+    # the copies move one word of each set's step a cycle). The root step (f 3, s 0): its
+    # conditional copied in (3 x 4 words, II 1, depth 2: 13); cond_backsub: the partial sums
+    # zeroed (3 at depth 1: 3), no separator terms, the rows' folds (3, depth 11 (1 + 4) = 55:
+    # 57), reciprocals 2 + div 28 = 30, then per column last first a multiply 8 and the column
+    # above it (trip r, mul + add 19 deep): 8 + (1 + 19) + 8 + 19 + 8 = 63 -> 153; the solution
+    # out (3: 4) -> 170. The second level has two steps (f 3, s 3) side by side: copies in
+    # 3 x 7 words (22) and the separator's 3 (4); each cond_backsub 3 + the 9 separator terms
+    # in one loop (8 + 19 = 27) + 57 + 30 + 63 = 180, the region the slower plus the other's
+    # fill (its zeroing's depth 1): 181; the solutions out (4) -> 211
     assert plan.options.units == 2
-    assert phases["backsub_level0"] == 110 and phases["backsub_level1"] == 2 * 303
+    assert phases["backsub_level0"] == 170 and phases["backsub_level1"] == 211
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub_")))

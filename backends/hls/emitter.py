@@ -185,6 +185,14 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                                                  config.scalar_cxx, text),
                                   loops[f"factor_{b.index}_jacobian"],
                                   loops[f"factor_{b.index}_cost"], noise[f"noise_{b.index}"]))
+    # the state update's datapath per variable type: the plan's operators, II and depth
+    retract = {}
+    for k in context["retracts"]:
+        text = "\n".join((*k.printed.intermediates, *k.printed.outputs))
+        loop = phase["state_update"].processes[0].loops[k.kind]
+        retract[k.kind] = {"allocation": _allocation(plan.unit(f"state_update_{k.kind}"),
+                                                     config.scalar_cxx, text),
+                           "ii": loop.ii, "depth": loop.depth}
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
@@ -200,7 +208,10 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "les": {"partials": les.add.latency, "add": les.add.latency,
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
-            "blocks": blocks, "network": network, "unit_sets": max(1, sets), "units": units,
+            "blocks": blocks, "network": network, "retract_hw": retract,
+            "unit_sets": max(1, sets), "units": units,
+            # back_substitute's copies: the memories' two ports shared out over the unit sets
+            "bs_words": max(1, 2 // max(1, sets)), "bs_ii": -(-max(1, sets) // 2),
             "cpe": plan.options.cpe, "plan": plan,
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
 

@@ -42,12 +42,17 @@ from fgc_backends.cost.target import DEFAULT, DEFAULT_PART, capacity
 PART = DEFAULT.name
 PART_DSP, PART_BRAM36, PART_LUT, PART_FF = DEFAULT.dsp, DEFAULT.bram36, DEFAULT.lut, DEFAULT.ff
 BRAM18_BITS = 18 * 1024
+PORTS = 2  # words a cycle a copy moves through a memory's two ports (accel.cpp.jinja's PORTS)
 LUTRAM_MAX_BITS = 1024  # memories up to this size go to LUTRAM / registers (design)
 
 # default ALLOCATION limits of the factor datapath, per kernel operator kind (design: the sim
 # model's factor pool, so both models share one datapath size)
 DEFAULT_ALLOCATION = (("add", 16), ("mul", 24), ("div", 4), ("sqrt", 2), ("trig", 2),
                       ("special", 2))
+# default ALLOCATION limits of the state update's datapath per variable type (design: it runs
+# once per trial step over the variables, so it is kept small; a Pose3 retraction at these
+# limits takes a variable every 36 cycles, set by its special functions)
+STATE_ALLOCATION = (("add", 4), ("mul", 6), ("div", 1), ("sqrt", 1), ("trig", 2), ("special", 1))
 
 
 JACOBIAN_STORAGE = ("whitened", "raw")
@@ -64,6 +69,7 @@ class PlanOptions:
     cpe: int = 20  # Cholesky process elements
     unit_sets: int | None = None  # QR unit sets: None = 2 for two-ended chains, else 1
     allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
+    state_allocation: tuple[tuple[str, int], ...] = STATE_ALLOCATION  # retract_<k>'s limits
     hgc_lanes: int = 16  # multiply-accumulate lanes of the Hessian/gradient unit
     # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
     # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and
@@ -428,14 +434,18 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
       test's |δ|² and δ·(g + μδ)), depth 2 (multiply + add);
     - ``sum``: a running sum (II = depth = add latency); ``rmw``: ``+=`` into a table-addressed
       memory (the address may repeat: II = add latency, depth read + add + write);
+      ``scatter``: ``+=`` into a table-addressed memory where every iteration of the loop has
+      its own address (II 1, depth read + add + write);
     - ``max``: a running maximum (compare and select: II = compare latency, depth + 2);
     - ``root``: one square root (√μ); ``decision``: LM control's scalar decision (gain ratio
-      divide, two multiplies, two adds, a compare); ``retract``: the state update, one variable
-      a cycle through a retraction (square root, divide, sin/cos, four multiply-adds deep).
+      divide, two multiplies, two adds, a compare); ``retract``: one variable a cycle through a
+      retraction-sized datapath (square root, divide, sin/cos, four multiply-adds deep), what
+      the update model assumes for a Log pass (the emitted state update is priced per type by
+      :func:`retract_datapath`).
     """
     la, lm, lc = ops.add.latency, ops.mul.latency, ops.compare.latency
     return {"move": (1, 2), "fill": (1, 1), "acc": (la, lm + la), "acc2": (la, 2 * (lm + la)),
-            "sum": (la, la), "rmw": (la, la + 2), "max": (lc, lc + 2),
+            "sum": (la, la), "rmw": (la, la + 2), "scatter": (1, la + 2), "max": (lc, lc + 2),
             "root": (1, ops.sqrt.latency),
             "decision": (1, ops.div.latency + 2 * lm + 2 * la + lc),
             "retract": (1, ops.sqrt.latency + ops.div.latency + ops.sincos.latency
@@ -447,6 +457,25 @@ def kernel_loop(name: str, trip: int, kind: str, timing: dict, repeat: int = 1) 
     (move, acc, retract, …): its II and depth from ``timing`` (:func:`kernel_timing`)."""
     ii, depth = timing[kind]
     return Loop(name, trip, ii, depth, repeat)
+
+
+def kernel_dot(name: str, length: int, timing: dict, repeat: int = 1) -> Loop:
+    """A kernel loop summing ``length`` terms into the adder latency's interleaved partial sums
+    (accel.cpp.jinja's T_PARTIALS / L_PARTIALS), priced by the dot-product rule
+    (:func:`dot_loop`) with the latencies of ``timing`` (:func:`kernel_timing`)."""
+    la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
+    k = max(1, min(length, la))
+    return Loop(name, length, math.ceil(la / k), lm + la * (1 + _ceil_log2(k)), repeat)
+
+
+def _ported(words: int) -> int:
+    """Iterations of a copy of ``words`` words at :data:`PORTS` words a cycle."""
+    return -(-words // PORTS)
+
+
+def _ceil_log2(n: int) -> int:
+    """⌈log₂ n⌉ (0 for n ≤ 1): the adds of a tree folding n sums (fgc_cycles.h's ceil_log2)."""
+    return math.ceil(math.log2(n)) if n > 1 else 0
 
 
 def _block_shape(block) -> tuple[int, int, int, object]:
@@ -469,29 +498,34 @@ def _tables(program) -> dict:
 
 
 def gradient_loops(program, timing: dict) -> list[Process]:
-    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded, the
-    column map, A^T b row by row, the finiteness check, the scatter into G), after G is zeroed."""
-    from fgc_backends.cfamily.sparsity import TILE
-
+    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded,
+    :data:`PORTS` words a cycle, the column map, A^T b a row a cycle into the adder latency's
+    interleaved partial sums of every column (a dot product of m terms, :func:`kernel_dot`),
+    the finiteness check's tree over the padded columns, the scatter into G at II 1), after G
+    is zeroed."""
+    la = timing["acc"][0]
     n_t = sum(v.dim for v in program.variables)
     procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", n_t, "fill", timing),))]
     for i, b in enumerate(program.blocks):
         m, d, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         procs.append(Process(f"reduce_{i}", "gradient", (
-            kernel_loop("load", m * padded, "move", timing, n),
+            kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("columns", d, "fill", timing, n),
-            kernel_loop("rows", m, "acc", timing, n),
-            kernel_loop("check", padded // TILE, "sum", timing, n),
-            kernel_loop("scatter", d, "rmw", timing, n))))
+            kernel_dot("rows", m, timing, n),
+            Loop("check", 1, 1, la * _ceil_log2(padded), n),
+            kernel_loop("scatter", d, "scatter", timing, n))))
     return procs
 
 
 def hgc_loops(program, timing: dict) -> list[Process]:
-    """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded, the
-    column map, the Gram panels - one row of a panel a cycle into TILE x (tiles TILE)
-    accumulators, II = the adder latency - each panel out, the packing of the lower triangle,
-    its copy into GRAM, the gradient scatter and the finiteness check), after G is zeroed."""
+    """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded,
+    :data:`PORTS` words a cycle, the column map, its packed Gram in GRAM zeroed, the Gram
+    panels - one row of a panel a cycle into the adder latency's interleaved partial sums of
+    TILE x (tiles TILE) entries, a dot product of its rows (:func:`kernel_dot`) - each panel's
+    lower-triangle entries out into GRAM (folded, a word a cycle), the gradient scatter from
+    GRAM (II 1) and the finiteness check over the diagonal (interleaved partial sums: the
+    dot-product rule)), after G is zeroed."""
     from fgc_backends.cfamily.sparsity import TILE
 
     n_t = sum(v.dim for v in program.variables)
@@ -500,17 +534,15 @@ def hgc_loops(program, timing: dict) -> list[Process]:
         m, d, padded, tiles = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         cols = d + 1
-        loops = [kernel_loop("load", m * padded, "move", timing, n),
+        loops = [kernel_loop("load", _ported(m * padded), "move", timing, n),
                  kernel_loop("columns", d, "fill", timing, n),
-                 kernel_loop("zero_square", padded * padded, "fill", timing, n)]
+                 kernel_loop("zero_gram", cols * (cols + 1) // 2, "fill", timing, n)]
         for k in range(tiles.count):
             rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
-            loops += [kernel_loop("panel", rows, "acc", timing, n),
+            loops += [kernel_dot("panel", rows, timing, n),
                       kernel_loop("panel_out", TILE * wide * TILE, "fill", timing, n)]
-        loops += [kernel_loop("pack", cols * cols, "fill", timing, n),
-                  kernel_loop("gram_out", cols * (cols + 1) // 2, "move", timing, n),
-                  kernel_loop("scatter", d, "rmw", timing, n),
-                  kernel_loop("check", cols, "sum", timing, n)]
+        loops += [kernel_loop("scatter", d, "scatter", timing, n),
+                  kernel_dot("check", cols, timing, n)]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
 
@@ -518,8 +550,8 @@ def hgc_loops(program, timing: dict) -> list[Process]:
 def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
                 timing: dict) -> list[Loop]:
     """accel.cpp.jinja's stack() of step s into its unit set's banks: the rows zeroed (all
-    n_u banks a cycle), each factor's rows [A | b] and each child's new-factor rows a word a
-    cycle, the damping rows' diagonal."""
+    n_u banks a cycle), each factor's rows [A | b] and each child's new-factor rows
+    :data:`PORTS` words a cycle, the damping rows' diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
     loops = [kernel_loop("zero", m * local, "fill", timing)]
@@ -527,13 +559,13 @@ def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
         words = tables["FACTOR_A_OFF"][fac + 1] - tables["FACTOR_A_OFF"][fac]
-        loops.append(kernel_loop("factor_rows", words, "move", timing))
+        loops.append(kernel_loop("factor_rows", _ported(words), "move", timing))
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
-        loops.append(kernel_loop("child_rows", tables["STEP_NF_ROWS"][c] * (sc + 1), "move",
-                                 timing))
+        loops.append(kernel_loop("child_rows", _ported(tables["STEP_NF_ROWS"][c] * (sc + 1)),
+                                 "move", timing))
     if damped:
         loops.append(kernel_loop("damping", f, "fill", timing))
     return loops
@@ -541,50 +573,50 @@ def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
 
 def commit_loops(tables: dict, s: int, timing: dict, cholesky: bool) -> list[Loop]:
     """A step's conditional into COND and its new factor (QR's commit(): STEP_NF_ROWS rows)
-    or update matrix (Cholesky's store at the end of eliminate(): w - f rows) into NF, a word a
-    cycle."""
+    or update matrix (Cholesky's store at the end of eliminate(): w - f rows) into NF,
+    :data:`PORTS` words a cycle."""
     w, f = tables["STEP_W"][s], tables["STEP_F"][s]
     nf = w - f if cholesky else tables["STEP_NF_ROWS"][s]
-    return [kernel_loop("cond", f * (w + 1), "move", timing),
-            kernel_loop("nf", nf * (w - f + 1), "move", timing)]
+    return [kernel_loop("cond", _ported(f * (w + 1)), "move", timing),
+            kernel_loop("nf", _ported(nf * (w - f + 1)), "move", timing)]
 
 
 def assemble_loops(tables: dict, s: int, max_w: int, timing: dict) -> list[Loop]:
     """Cholesky's eliminate(): step s's [H | g] zeroed (MAX_W + 1 words a row, a word a cycle),
-    then per factor its Gram's lower triangle added row by row and its gradient entries, per
-    child its update matrix's rows and gradient entries (each += into the table-addressed
-    frontal matrix)."""
+    then per factor its packed Gram's lower triangle and gradient row (d (d + 1) / 2 + d
+    entries), per child its update matrix's upper triangle and reduced g (s (s + 1) / 2 + s),
+    each one loop of ``+=`` into the table-addressed frontal matrix whose entries all go to
+    different addresses (``scatter``: II 1)."""
     w = tables["STEP_W"][s]
     loops = [kernel_loop("zero", w * (max_w + 1), "fill", timing)]
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
         d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
-        loops += [kernel_loop("gram_row", p + 1, "rmw", timing) for p in range(d)]
-        loops.append(kernel_loop("gram_gradient", d, "rmw", timing))
+        loops.append(kernel_loop("gram", d * (d + 1) // 2 + d, "scatter", timing))
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
-        for a in range(sc):
-            loops += [kernel_loop("child_row", sc - a, "rmw", timing),
-                      kernel_loop("child_gradient", 1, "rmw", timing)]
+        loops.append(kernel_loop("child", sc * (sc + 1) // 2 + sc, "scatter", timing))
     return loops
 
 
 def backsub_copies(tables: dict, s: int, timing: dict) -> tuple[list[Loop], list[Loop]]:
-    """back_substitute()'s copies around cond_backsub for step s: the conditional from COND and
-    the separator's solution in; the frontal solution out."""
+    """back_substitute()'s copies around cond_backsub for step s alone on one unit (one unit
+    set, :data:`PORTS` words a cycle): the conditional from COND and the separator's solution
+    in; the frontal solution out."""
     w, f = tables["STEP_W"][s], tables["STEP_F"][s]
-    return ([kernel_loop("cond_in", f * (w + 1), "move", timing),
-             kernel_loop("separator_in", w - f, "move", timing)],
-            [kernel_loop("solution_out", f, "move", timing)])
+    return ([kernel_loop("cond_in", _ported(f * (w + 1)), "move", timing),
+             kernel_loop("separator_in", _ported(w - f), "move", timing)],
+            [kernel_loop("solution_out", _ported(f), "move", timing)])
 
 
 def rounding_noise_loops(program, timing: dict) -> list[Process]:
     """rounding_noise_all(): each variable's largest storage entry, then per instance its rows
-    loaded, the column scales, the rows' moved terms (a row a cycle, its TILE partial sums
-    unrolled) and their sum (TILE rows a step into TILE partial sums)."""
+    loaded (:data:`PORTS` words a cycle), the column scales, the rows' moved terms (a row a
+    cycle, its TILE partial sums unrolled) and their sum (TILE rows a step into TILE partial
+    sums)."""
     from fgc_backends.cfamily.sparsity import TILE
 
     la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
@@ -595,7 +627,7 @@ def rounding_noise_loops(program, timing: dict) -> list[Process]:
         n = sum(1 for f in program.factors if f.block == i)
         row_depth = 2 * lm + la * (padded // TILE + 2)
         procs.append(Process(f"noise_{i}", "lm_control", (
-            kernel_loop("load", m * padded, "move", timing, n),
+            kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("scales", padded, "fill", timing, n),
             Loop("rows", m, 1, row_depth, n),
             kernel_loop("terms", -(-m // TILE), "acc2", timing, n))))
@@ -632,7 +664,7 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
             raise PlanError(f"plan option {name} must be one of {', '.join(allowed)}, "
                             f"got {getattr(opts, name)!r}")
     alloc = dict(opts.allocation)
-    for kind, n in alloc.items():
+    for kind, n in (*alloc.items(), *opts.state_allocation):
         if n < 1:
             raise PlanError(f"ALLOCATION limit of {kind} must be ≥ 1, got {n}")
     precision = opts.precision or program.solver.precision
@@ -687,11 +719,12 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     else:
         _cholesky(program, opts, les, units, memories, channels, phases)
 
-    # state update: one retract per variable, pipelined one a cycle, variable type by type
-    # (retract_all's loop per kind)
-    units.append(Unit("state_update", "retract x ⊕ δ", 1,
-                      (("add", 3), ("mul", 4), ("sqrt", 1), ("div", 1), ("trig", 2))))
-    phases.append(state_update_phase(program.variables, timing))
+    # state update: one retract datapath per variable type (ALLOCATION: state_allocation's
+    # limits), its variables pipelined through it, type by type (retract_all's loop per kind)
+    for k, name in enumerate(_type_counts(program.variables)):
+        units.append(Unit(f"state_update_{k}", f"retract x ⊕ δ of {name}", 1,
+                          retract_datapath(name, ops, opts.state_allocation)[0]))
+    phases.append(state_update_phase(program.variables, ops, opts.state_allocation))
     phases.append(Phase("factor_cost", False, tuple(cost)))
     n_x = sum(v.storage_dim for v in program.variables)
     n_t = sum(v.dim for v in program.variables)
@@ -787,9 +820,10 @@ def _qr(program, opts, ops, units, memories, channels, phases):
         phases.append(Phase(f"qr_commit_level{li}", False, tuple(
             Process(f"commit{i}", "qr_commit", tuple(commit_loops(tables, i, timing, False)))
             for i in level), linear=True))
-    _backsub_phases(program, ops, phases, "backsub")
-    units.append(Unit("backsub", "back-substitution (cond_backsub)", 1,
-                      (("add", 1), ("mul", 2))))
+    _backsub_phases(program, ops, phases, "backsub", sets)
+    for s in range(sets):
+        units.append(Unit(f"qr{s}_backsub", "back-substitution (cond_backsub)", 1,
+                          (("add", 1), ("mul", 2))))
     sizes = _sizes(program)
     cols = sizes["MAX_W"] + 1
     local = -(-cols // opts.units)
@@ -804,16 +838,18 @@ def _qr(program, opts, ops, units, memories, channels, phases):
 def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
                   name: str = "bs") -> list[Loop]:
     """The loops of ``cond_backsub`` (backends/hls/include/fgc_backsub.h) on one conditional of
-    f frontal and s separator columns, as its csim counters count them: per row the separator's
-    dot product (trip s, PARTIALS = the add latency interleaved sums, + one subtract), the f
-    reciprocals of the diagonal, then column by column (last first) one multiply and the
-    column above the pivot (trip r, II 1, multiply-add deep)."""
+    f frontal and s separator columns, as its csim counters count them: the rows' partial sums
+    zeroed (all PARTIALS banks a cycle), the separator's share S xs of every row in one loop
+    (trip f s, II 1: consecutive iterations hit different rows, PARTIALS = the add latency
+    interleaved sums per row, multiply-add deep), each row's partial sums folded and subtracted
+    from d (trip f, II 1, La (1 + ⌈log₂ PARTIALS⌉) deep), the f reciprocals of the diagonal, then
+    column by column (last first) one multiply and the column above the pivot (trip r, II 1,
+    multiply-add deep)."""
     la, lm = ops.add.latency, ops.mul.latency
-    loops = []
-    for i in range(frontal):
-        if separator:
-            dot = dot_loop(f"{name}_sep{i}", separator, ops, partials=la)
-            loops.append(Loop(dot.name, dot.trip, dot.ii, dot.depth + la))
+    tree = math.ceil(math.log2(la)) if la > 1 else 0
+    loops = [Loop(f"{name}_zero", frontal, 1, 1),
+             Loop(f"{name}_separator", frontal * separator, 1, lm + la),
+             Loop(f"{name}_fold", frontal, 1, la * (1 + tree))]
     if frontal:
         loops.append(Loop(f"{name}_reciprocals", frontal, 1, ops.div.latency))
     for r in range(frontal - 1, -1, -1):
@@ -823,20 +859,41 @@ def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
     return loops
 
 
-def _backsub_phases(program, ops, phases, unit) -> None:
-    """The emitted back_substitute: one cond_backsub per step, root first, one after another
-    (:func:`backsub_loops`)."""
-    sched = program.schedule
+def backsub_chunk_loops(tables: dict, steps, ops: OperatorTable, timing: dict,
+                        sets: int) -> list[Loop]:
+    """back_substitute() on ``steps`` (at most ``sets``: one chunk of a level, one step per unit
+    set): their conditionals and separator solutions copied in side by side (the memories' two
+    ports shared out: ``max(1, PORTS // sets)`` words of each step an iteration at II
+    ⌈sets / PORTS⌉), the ``backsub_level`` DATAFLOW region (one ``cond_backsub`` process per
+    unit set: the slowest plus the others' fill), the frontal solutions out side by side."""
+    per, ii = max(1, PORTS // sets), -(-sets // PORTS)
+    sizes = [(tables["STEP_F"][s], tables["STEP_W"][s]) for s in steps]
+    region = _region_cycles([backsub_loops(f, w - f, ops, name=f"bs{s}")
+                             for s, (f, w) in zip(steps, sizes, strict=True)])
+    _, depth = timing["move"]
+
+    def copy(name, words):
+        return Loop(name, -(-max(words) // per), ii, depth)
+
+    return [copy("cond_in", [f * (w + 1) for f, w in sizes]),
+            copy("separator_in", [w - f for f, w in sizes]),
+            Loop("backsub_level", 1, 1, region),
+            copy("solution_out", [f for f, _ in sizes])]
+
+
+def _backsub_phases(program, ops, phases, unit, sets: int = 1) -> None:
+    """The emitted back_substitute: levels root first, each level's steps (LEVEL_STEPS order)
+    ``sets`` at a time through the ``backsub_level`` region (:func:`backsub_chunk_loops`)."""
     tables, timing = _tables(program), kernel_timing(ops)
-    for li, level in enumerate(sched.back_substitution):
+    begin, order = tables["LEVEL_BEGIN"], tables["LEVEL_STEPS"]
+    for li in range(len(begin) - 2, -1, -1):
         procs = []
-        for i in level:
-            st = sched.steps[i]
-            before, after = backsub_copies(tables, i, timing)
-            procs.append(Process(f"backsub_step{i}", unit, tuple(
-                before + backsub_loops(st.frontal_dim, st.separator_dim, ops, name=f"bs{i}")
-                + after)))
-        phases.append(Phase(f"backsub_level{li}", False, tuple(procs), linear=True))
+        for i in range(begin[li], begin[li + 1], sets):
+            chunk = order[i:min(i + sets, begin[li + 1])]
+            procs.append(Process("backsub_" + "_".join(f"step{s}" for s in chunk), unit,
+                                 tuple(backsub_chunk_loops(tables, chunk, ops, timing, sets))))
+        phases.append(Phase(f"backsub_level{len(begin) - 2 - li}", False, tuple(procs),
+                            linear=True))
 
 
 def _solver_memories(sizes, ops, memories) -> None:
@@ -845,20 +902,48 @@ def _solver_memories(sizes, ops, memories) -> None:
     memories.append(Memory("nf", sizes["N_NF"], ops.word_bits, 1))
 
 
-def retract_loops(variables, timing: dict) -> tuple[Loop, ...]:
-    """retract_all's loops over ``variables`` (VariableSpecs): one pipelined loop per variable
-    type, in first-seen order."""
+def _type_counts(variables) -> dict[str, int]:
+    """Variables per type, in first-seen order (retract_all's kinds)."""
     kinds: dict[str, int] = {}
     for v in variables:
         kinds[v.type_name] = kinds.get(v.type_name, 0) + 1
-    return tuple(kernel_loop(f"kind{k}", n, "retract", timing)
-                 for k, n in enumerate(kinds.values()))
+    return kinds
 
 
-def state_update_phase(variables, timing: dict) -> Phase:
+def retract_datapath(type_name: str, ops: OperatorTable,
+                     allocation=STATE_ALLOCATION) -> tuple[tuple[tuple[str, int], ...], int, int]:
+    """The state-update datapath of one variable type as emitted (accel.cpp.jinja's
+    retract_<k>, its ALLOCATION limits): (allocated operators, II, depth). Operators per kind:
+    the retraction's count, at most the ``allocation`` limit (the factor datapaths' rule,
+    ``PlanOptions.state_allocation``'s limits); II:
+    max over kinds of ⌈count × op II / allocated⌉; depth: the retraction's critical path."""
+    from fgc.ir.program import KernelText
+    from fgc_backends.cfamily.retract import retract_kernel, variable_class
+    from fgc_backends.cost.kernels import critical_path
+
+    kernel = retract_kernel(variable_class(type_name))
+    counts = kernel.op_counts()
+    alloc = dict(allocation)
+    allocated = tuple((k, min(alloc[k], n)) for k, n in counts.items() if n > 0 and k in alloc)
+    ii = max([1] + [math.ceil(counts[k] * ops.op(k).ii / n) for k, n in allocated])
+    return allocated, ii, critical_path(KernelText.of(kernel), _sim_table(ops))
+
+
+def retract_loops(variables, ops: OperatorTable,
+                  allocation=STATE_ALLOCATION) -> tuple[Loop, ...]:
+    """retract_all's loops over ``variables`` (VariableSpecs): one pipelined loop per variable
+    type, in first-seen order, at its datapath's II and depth (:func:`retract_datapath`)."""
+    loops = []
+    for k, (name, n) in enumerate(_type_counts(variables).items()):
+        _, ii, depth = retract_datapath(name, ops, allocation)
+        loops.append(Loop(f"kind{k}", n, ii, depth))
+    return tuple(loops)
+
+
+def state_update_phase(variables, ops: OperatorTable, allocation=STATE_ALLOCATION) -> Phase:
     """The state update as emitted (retract_all) over ``variables``."""
     return Phase("state_update", False, (Process("retract", "state_update",
-                                                 retract_loops(variables, timing)),))
+                                                 retract_loops(variables, ops, allocation)),))
 
 
 def lm_control_phase(n_t: int, n_x: int, timing: dict) -> Phase:

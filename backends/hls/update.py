@@ -293,7 +293,8 @@ class UpdateModel:
         if self.qr:
             phases.append(Phase("gradient", False, tuple(gradient_loops(view, self.timing))))
         phases += self._linear_phases(first, last, self.damping)
-        phases.append(state_update_phase(view.variables, self.timing))
+        phases.append(state_update_phase(view.variables, self.plan.ops,
+                                         self.plan.options.state_allocation))
         phases.append(self._factor_phase("cost", inst))
         phases.append(self._lm_phase(view.variables))
         return tuple(phases)
@@ -359,7 +360,8 @@ class UpdateModel:
                                            self.les_timing)
             loops += before + backsub_loops(f, sep, self.les, name=f"kept{c}") + after
         keys = {k for c in range(first) for k in self.clusters[c]}
-        loops += retract_loops([v for v in self.program.variables if v.key in keys], self.timing)
+        loops += retract_loops([v for v in self.program.variables if v.key in keys],
+                               self.plan.ops, self.plan.options.state_allocation)
         kept = Process("kept_backsub", "backsub", tuple(loops))
         f, s = self.cdim[first - 1], self.cdim[first]
         la, lm = self.les.add.latency, self.les.mul.latency

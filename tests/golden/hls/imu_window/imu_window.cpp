@@ -7,7 +7,8 @@
 // -> the HGC (Gram of each factor) -> per step the frontal matrix through the #CPE cascade
 // -> back-substitution -> state update (retract) -> the factor datapaths (cost mode) -> LM control.
 //
-// Process network (from the plan; every DATAFLOW region below is one of these):
+// The elimination's process network (from the plan; every DATAFLOW region of the units is one of
+// these; back_substitute's backsub_level region runs one cond_backsub per unit set side by side):
 //   22 processes, 21 streams (cpe=20)
 //   process cpe_feed
 //   process cpe0
@@ -76,6 +77,11 @@ const T ABS_TOL = T(1e-14);
 const T SINGULAR_EPS = T(1.1920928955078125e-06);
 const int TILE = 4;  // partial sums interleaved TILE ways; rows padded to whole TILEs
 const int MAX_LD = 32;  // padded row length of the widest step
+// the plan's operator latencies of T and L; the kernel's dot products and Grams interleave
+// ADD_LAT partial sums (a sum comes back to the adder after it is done: II 1)
+const int PORTS = 2;  // words a cycle through a memory's two ports (true dual-port RAM): the copies
+const int T_ADD_LAT = 11, T_MUL_LAT = 8, T_PARTIALS = T_ADD_LAT;
+const int L_ADD_LAT = 11, L_MUL_LAT = 8, L_PARTIALS = L_ADD_LAT;
 const int N_CPE = 20;  // --cpe: process elements of the cascade
 const int STATUS_CONVERGED = 0;
 const int STATUS_MAX_ITERATIONS = 1;
@@ -1951,7 +1957,8 @@ void reweight(T ab[], T code, T k) {
 template <int STRIDE, int COLS, int ROWS>
 T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T moved[ROWS], b_abs[ROWS];
-    for (int r = 0; r < ROWS; ++r) {
+    for (int r = 0; r < ROWS; ++r) {  // a row a cycle: its terms unrolled
+#pragma HLS PIPELINE II=1
         T part[TILE];
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
         for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
@@ -1962,7 +1969,8 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     }
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
-    for (int r0 = 0; r0 < ROWS; r0 += TILE) {
+    for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
+#pragma HLS PIPELINE II=11
         for (int t = 0; t < TILE; ++t) {
             if (r0 + t < ROWS) {
                 const T m = moved[r0 + t];
@@ -1974,72 +1982,93 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
 }
 
 // HGC (paper B), one panel of WIDE tiles side by side: rows p0 ... p0 + TILE - 1, columns
-// q0 ... q0 + WIDE TILE - 1 of the square buffer, summed over the n rows rows[first ...] in order,
-// one row per cycle into TILE x WIDE TILE accumulators.
-template <int STRIDE, int ROWS, int WIDE>
-void gram_panel(const T ab[], const int rows[], int first, int n, int p0, int q0, L sq[]) {
-    L acc[TILE][WIDE * TILE];  // the linear solver's scalar: the HGC accumulates in it
+// q0 ... q0 + WIDE TILE - 1 of the Gram, summed over the n rows rows[first ...] in order, one row
+// per cycle into TILE x WIDE TILE accumulators, written packed into the instance's GRAM at g0.
+template <int STRIDE, int COLS, int ROWS, int WIDE>
+void gram_panel(const T ab[], const int rows[], int first, int n, int p0, int q0, int g0) {
+    // the linear solver's scalar: the HGC accumulates in it; row k into partial sum
+    // k % L_PARTIALS of every entry (a row a cycle: II 1), folded per entry on the way out
+    L acc[L_PARTIALS][TILE][WIDE * TILE];
 #pragma HLS ARRAY_PARTITION variable=acc complete dim=0
-    for (int i = 0; i < TILE; ++i) {
-        for (int j = 0; j < WIDE * TILE; ++j) acc[i][j] = L(0);
+    for (int t = 0; t < L_PARTIALS; ++t) {
+#pragma HLS UNROLL
+        for (int i = 0; i < TILE; ++i) {
+#pragma HLS UNROLL
+            for (int j = 0; j < WIDE * TILE; ++j) {
+#pragma HLS UNROLL
+                acc[t][i][j] = L(0);
+            }
+        }
     }
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=ROWS
-#pragma HLS PIPELINE
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=acc inter false
         const int r = rows[first + k];
         for (int i = 0; i < TILE; ++i) {
             const L ap = ab[r * STRIDE + p0 + i];
-            for (int j = 0; j < WIDE * TILE; ++j) acc[i][j] += ap * L(ab[r * STRIDE + q0 + j]);
+            for (int j = 0; j < WIDE * TILE; ++j) acc[k % L_PARTIALS][i][j] += ap * L(ab[r * STRIDE + q0 + j]);
         }
     }
     for (int i = 0; i < TILE; ++i) {
         for (int j = 0; j < WIDE * TILE; ++j) {
 #pragma HLS PIPELINE II=1
-            sq[(p0 + i) * STRIDE + q0 + j] = acc[i][j];
+            L part[L_PARTIALS];
+            for (int t = 0; t < L_PARTIALS; ++t) part[t] = acc[t][i][j];
+            const int p = p0 + i, q = q0 + j;  // the lower triangle's entries into GRAM, packed
+            if (q <= p && p < COLS) GRAM[g0 + p * (p + 1) / 2 + q] = fgc_units::fold_partials<L, L_PARTIALS>(part);
         }
     }
-    // a row of the panel a cycle (the accumulators' recurrence through the adder sets the II),
-    // then the panel out a word a cycle
-    FGC_CYCLES("hgc", 0, "panel", n, 11, 19);
+    // the rows as a dot product of n terms (the plan's rule: its depth holds the fold), then
+    // the panel out a word a cycle
+    FGC_CYCLES("hgc", 0, "panel", n, fgc_units::dot_ii(n, L_PARTIALS, L_ADD_LAT),
+               fgc_units::dot_depth(n, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     FGC_CYCLES("hgc", 0, "panel_out", TILE * WIDE * TILE, 1, 1);
 }
 
 // The packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p < COLS, at p (p + 1) / 2
-// + q) of rows of STRIDE, from the block's non-zero tiles (tiles left out are structural zeros).
+// + q) of rows of STRIDE into GRAM at g0: zeroed, then the block's non-zero tiles (tiles left
+// out are structural zeros).
 template <int STRIDE, int COLS, int ROWS, int PANELS, int TILES>
-void gram(const T ab[], const int tiles[], const int rows[], L out[]) {
-    L sq[STRIDE * STRIDE];
-    for (int i = 0; i < STRIDE * STRIDE; ++i) {
+void gram(const T ab[], const int tiles[], const int rows[], int g0) {
+    for (int e = 0; e < COLS * (COLS + 1) / 2; ++e) {
 #pragma HLS PIPELINE II=1
-        sq[i] = L(0);
+        GRAM[g0 + e] = L(0);
     }
-    FGC_CYCLES("hgc", 0, "zero_square", STRIDE * STRIDE, 1, 1);
+    FGC_CYCLES("hgc", 0, "zero_gram", COLS * (COLS + 1) / 2, 1, 1);
     for (int t = 0; t < PANELS; ++t) {
         const int p0 = tiles[5 * t], q0 = tiles[5 * t + 1], first = tiles[5 * t + 2];
         const int n = tiles[5 * t + 3];
         if (tiles[5 * t + 4] == 2) {
-            gram_panel<STRIDE, ROWS, 2>(ab, rows, first, n, p0, q0, sq);
+            gram_panel<STRIDE, COLS, ROWS, 2>(ab, rows, first, n, p0, q0, g0);
         } else {
-            gram_panel<STRIDE, ROWS, 1>(ab, rows, first, n, p0, q0, sq);
+            gram_panel<STRIDE, COLS, ROWS, 1>(ab, rows, first, n, p0, q0, g0);
         }
     }
-    for (int p = 0; p < COLS; ++p) {
-        for (int q = 0; q < COLS; ++q) {
-#pragma HLS PIPELINE II=1
-            if (q <= p) out[p * (p + 1) / 2 + q] = sq[p * STRIDE + q];
-        }
-    }
-    FGC_CYCLES("hgc", 0, "pack", COLS * COLS, 1, 1);
 }
 
-// From one instance's packed Gram of [A | b] (row COLS - 1 is b^T A, then b^T b): the local
-// gradient A^T b (column c into G[col[c]]). False if the Gram is not finite.
+// From one instance's packed Gram of [A | b] in GRAM at g0 (row COLS - 1 is b^T A, then b^T b):
+// the local gradient A^T b (column c into G[col[c]]: distinct entries, II 1). False if the
+// Gram's diagonal (summed into L_PARTIALS interleaved partial sums) is not finite.
 template <int COLS>
-bool gradient_from_gram(const L h[], const int col[COLS - 1]) {
-    for (int c = 0; c < COLS - 1; ++c) G[col[c]] += T(h[(COLS - 1) * COLS / 2 + c]);
-    L check = L(0);
-    for (int c = 0; c < COLS; ++c) check += h[c * (c + 1) / 2 + c];
-    return fgc_isfinite(T(check));
+bool gradient_from_gram(int g0, const int col[COLS - 1]) {
+    for (int c = 0; c < COLS - 1; ++c) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=G inter false
+        G[col[c]] += T(GRAM[g0 + (COLS - 1) * COLS / 2 + c]);
+    }
+    L part[L_PARTIALS];
+#pragma HLS ARRAY_PARTITION variable=part complete
+    for (int t = 0; t < L_PARTIALS; ++t) {
+#pragma HLS UNROLL
+        part[t] = L(0);
+    }
+    for (int c = 0; c < COLS; ++c) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part inter false
+        part[c % L_PARTIALS] += GRAM[g0 + c * (c + 1) / 2 + c];
+    }
+    return fgc_isfinite(T(fgc_units::fold_partials<L, L_PARTIALS>(part)));
 }
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
@@ -2317,13 +2346,14 @@ void evaluate_0(const T x[N_X]) {
     FGC_CYCLES("factor_0_jacobian", 0, "instances", 7, 108, 864);
 }
 
-// block 0's whitened rows of instance f from AB, padded to 32 columns
+// block 0's whitened rows of instance f from AB, padded to 32 columns (a multiple of PORTS)
 void load_rows_0(int f, T ab[480]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 15; ++r) {
-        for (int c = 0; c < 32; ++c) {
+    for (int e = 0; e < 480; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 32 + c] = c < 31 ? T(AB[a0 + r * 31 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 32, c = (e + h) % 32;
+            ab[e + h] = c < 31 ? T(AB[a0 + r * 31 + c]) : T(0);
         }
     }
 }
@@ -2335,6 +2365,7 @@ bool reduce_0() {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[480];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=32
         load_rows_0(f, ab);
         int col[30];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
@@ -2343,18 +2374,13 @@ bool reduce_0() {
         for (int j = 0; j < 3; ++j) col[15 + j] = VAR_T_OFF[FACTOR_VARS[vb + 3]] + j;
         for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
         for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
-        FGC_CYCLES("reduce_0", 0, "load", 480, 1, 2);
+        FGC_CYCLES("reduce_0", 0, "load", 240, 1, 2);
         FGC_CYCLES("reduce_0", 0, "columns", 30, 1, 1);
-        L h[496];
-        gram<32, 31, 15, 20, 36>(ab, BLOCK0_TILES, BLOCK0_TILE_ROWS, h);
-        for (int e = 0; e < 496; ++e) {
-#pragma HLS PIPELINE II=1
-            GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
-        }
-        FGC_CYCLES("reduce_0", 0, "gram_out", 496, 1, 2);
-        finite = gradient_from_gram<31>(h, col) && finite;
-        FGC_CYCLES("reduce_0", 0, "scatter", 30, 11, 13);
-        FGC_CYCLES("reduce_0", 0, "check", 31, 11, 11);
+        gram<32, 31, 15, 20, 36>(ab, BLOCK0_TILES, BLOCK0_TILE_ROWS, FACTOR_GRAM_OFF[f]);
+        finite = gradient_from_gram<31>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_0", 0, "scatter", 30, 1, 13);
+        FGC_CYCLES("reduce_0", 0, "check", 31, fgc_units::dot_ii(31, L_PARTIALS, L_ADD_LAT),
+                   fgc_units::dot_depth(31, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
     return finite;
 }
@@ -2365,6 +2391,7 @@ T noise_0(T noise) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[480];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=32
         load_rows_0(f, ab);
         T scale[32];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 32; ++c) scale[c] = T(0);
@@ -2375,7 +2402,7 @@ T noise_0(T noise) {
         for (int j = 0; j < 6; ++j) scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
         for (int j = 0; j < 6; ++j) scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
         noise += rounding_noise<32, 31, 15>(ab, scale);
-        FGC_CYCLES("noise_0", 0, "load", 480, 1, 2);
+        FGC_CYCLES("noise_0", 0, "load", 240, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 32, 1, 1);
         FGC_CYCLES("noise_0", 0, "rows", 15, 1, 126);
         FGC_CYCLES("noise_0", 0, "terms", 4, 11, 38);
@@ -2431,13 +2458,14 @@ void evaluate_1(const T x[N_X]) {
     FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 36, 581);
 }
 
-// block 1's whitened rows of instance f from AB, padded to 8 columns
+// block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_1(int f, T ab[48]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 8; ++c) {
+    for (int e = 0; e < 48; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 8, c = (e + h) % 8;
+            ab[e + h] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
         }
     }
 }
@@ -2449,21 +2477,17 @@ bool reduce_1() {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_1(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_1", 0, "load", 48, 1, 2);
+        FGC_CYCLES("reduce_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
-        L h[28];
-        gram<8, 7, 6, 2, 3>(ab, BLOCK1_TILES, BLOCK1_TILE_ROWS, h);
-        for (int e = 0; e < 28; ++e) {
-#pragma HLS PIPELINE II=1
-            GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
-        }
-        FGC_CYCLES("reduce_1", 0, "gram_out", 28, 1, 2);
-        finite = gradient_from_gram<7>(h, col) && finite;
-        FGC_CYCLES("reduce_1", 0, "scatter", 6, 11, 13);
-        FGC_CYCLES("reduce_1", 0, "check", 7, 11, 11);
+        gram<8, 7, 6, 2, 3>(ab, BLOCK1_TILES, BLOCK1_TILE_ROWS, FACTOR_GRAM_OFF[f]);
+        finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 13);
+        FGC_CYCLES("reduce_1", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
+                   fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
     return finite;
 }
@@ -2474,12 +2498,13 @@ T noise_1(T noise) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_1(f, ab);
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 6>(ab, scale);
-        FGC_CYCLES("noise_1", 0, "load", 48, 1, 2);
+        FGC_CYCLES("noise_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
         FGC_CYCLES("noise_1", 0, "rows", 6, 1, 60);
         FGC_CYCLES("noise_1", 0, "terms", 2, 11, 38);
@@ -2535,13 +2560,14 @@ void evaluate_2(const T x[N_X]) {
     FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 1, 11);
 }
 
-// block 2's whitened rows of instance f from AB, padded to 4 columns
+// block 2's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
 void load_rows_2(int f, T ab[12]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 4; ++c) {
+    for (int e = 0; e < 12; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 4 + c] = c < 4 ? T(AB[a0 + r * 4 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 4, c = (e + h) % 4;
+            ab[e + h] = c < 4 ? T(AB[a0 + r * 4 + c]) : T(0);
         }
     }
 }
@@ -2553,21 +2579,17 @@ bool reduce_2() {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[12];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=4
         load_rows_2(f, ab);
         int col[3];  // per column: its tangent entry
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_2", 0, "load", 12, 1, 2);
+        FGC_CYCLES("reduce_2", 0, "load", 6, 1, 2);
         FGC_CYCLES("reduce_2", 0, "columns", 3, 1, 1);
-        L h[10];
-        gram<4, 4, 3, 1, 1>(ab, BLOCK2_TILES, BLOCK2_TILE_ROWS, h);
-        for (int e = 0; e < 10; ++e) {
-#pragma HLS PIPELINE II=1
-            GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
-        }
-        FGC_CYCLES("reduce_2", 0, "gram_out", 10, 1, 2);
-        finite = gradient_from_gram<4>(h, col) && finite;
-        FGC_CYCLES("reduce_2", 0, "scatter", 3, 11, 13);
-        FGC_CYCLES("reduce_2", 0, "check", 4, 11, 11);
+        gram<4, 4, 3, 1, 1>(ab, BLOCK2_TILES, BLOCK2_TILE_ROWS, FACTOR_GRAM_OFF[f]);
+        finite = gradient_from_gram<4>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_2", 0, "scatter", 3, 1, 13);
+        FGC_CYCLES("reduce_2", 0, "check", 4, fgc_units::dot_ii(4, L_PARTIALS, L_ADD_LAT),
+                   fgc_units::dot_depth(4, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
     return finite;
 }
@@ -2578,12 +2600,13 @@ T noise_2(T noise) {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[12];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=4
         load_rows_2(f, ab);
         T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
         for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<4, 4, 3>(ab, scale);
-        FGC_CYCLES("noise_2", 0, "load", 12, 1, 2);
+        FGC_CYCLES("noise_2", 0, "load", 6, 1, 2);
         FGC_CYCLES("noise_2", 0, "scales", 4, 1, 1);
         FGC_CYCLES("noise_2", 0, "rows", 3, 1, 49);
         FGC_CYCLES("noise_2", 0, "terms", 1, 11, 38);
@@ -2639,13 +2662,14 @@ void evaluate_3(const T x[N_X]) {
     FGC_CYCLES("factor_3_jacobian", 0, "instances", 1, 1, 11);
 }
 
-// block 3's whitened rows of instance f from AB, padded to 8 columns
+// block 3's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_3(int f, T ab[48]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 8; ++c) {
+    for (int e = 0; e < 48; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 8, c = (e + h) % 8;
+            ab[e + h] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
         }
     }
 }
@@ -2657,21 +2681,17 @@ bool reduce_3() {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_3(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_3", 0, "load", 48, 1, 2);
+        FGC_CYCLES("reduce_3", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_3", 0, "columns", 6, 1, 1);
-        L h[28];
-        gram<8, 7, 6, 2, 3>(ab, BLOCK3_TILES, BLOCK3_TILE_ROWS, h);
-        for (int e = 0; e < 28; ++e) {
-#pragma HLS PIPELINE II=1
-            GRAM[FACTOR_GRAM_OFF[f] + e] = h[e];
-        }
-        FGC_CYCLES("reduce_3", 0, "gram_out", 28, 1, 2);
-        finite = gradient_from_gram<7>(h, col) && finite;
-        FGC_CYCLES("reduce_3", 0, "scatter", 6, 11, 13);
-        FGC_CYCLES("reduce_3", 0, "check", 7, 11, 11);
+        gram<8, 7, 6, 2, 3>(ab, BLOCK3_TILES, BLOCK3_TILE_ROWS, FACTOR_GRAM_OFF[f]);
+        finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_3", 0, "scatter", 6, 1, 13);
+        FGC_CYCLES("reduce_3", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
+                   fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
     return finite;
 }
@@ -2682,12 +2702,13 @@ T noise_3(T noise) {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_3(f, ab);
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 6>(ab, scale);
-        FGC_CYCLES("noise_3", 0, "load", 48, 1, 2);
+        FGC_CYCLES("noise_3", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_3", 0, "scales", 8, 1, 1);
         FGC_CYCLES("noise_3", 0, "rows", 6, 1, 60);
         FGC_CYCLES("noise_3", 0, "terms", 2, 11, 38);
@@ -2768,9 +2789,13 @@ T total_cost(const T x[N_X]) {
     return total;
 }
 
-// ---- state update: retraction x (+) delta, one unit per variable type
+// ---- state update: retraction x (+) delta, one datapath per variable type; the ALLOCATION
+// limits are the plan's operators of unit state_update_<k> (the factor datapaths' limits)
 // kind 0: Pose3
 void retract_0(const T x[12], const T d[6], T out[12]) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=6
     const T r0 = (d[1]*d[1]);
     const T r1 = (d[2]*d[2]);
     const T r2 = r0 + r1;
@@ -2821,6 +2846,8 @@ void retract_0(const T x[12], const T d[6], T out[12]) {
 
 // kind 1: Vector3
 void retract_1(const T x[3], const T d[3], T out[3]) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=3
     out[0] = d[0] + x[0];
     out[1] = d[1] + x[1];
     out[2] = d[2] + x[2];
@@ -2828,6 +2855,8 @@ void retract_1(const T x[3], const T d[3], T out[3]) {
 
 // kind 2: ImuBias
 void retract_2(const T x[6], const T d[6], T out[6]) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=4
     out[0] = d[0] + x[0];
     out[1] = d[1] + x[1];
     out[2] = d[2] + x[2];
@@ -2839,7 +2868,8 @@ void retract_2(const T x[6], const T d[6], T out[6]) {
 void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
     FGC_EVENT("retract");
     FGC_PHASE("state_update");
-    for (int i = 0; i < 8; ++i) {
+    for (int i = 0; i < 8; ++i) {  // a variable every II=36 cycles (the plan's)
+#pragma HLS PIPELINE II=36
         const int v = KIND0_VARIABLES[i];
         T xv[12], dv[6], ov[12];
         for (int k = 0; k < 12; ++k) xv[k] = x[VAR_X_OFF[v] + k];
@@ -2847,8 +2877,9 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_0(xv, dv, ov);
         for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 0, "variables", 8, 1, 172);
-    for (int i = 0; i < 8; ++i) {
+    FGC_CYCLES("retract", 0, "variables", 8, 36, 277);
+    for (int i = 0; i < 8; ++i) {  // a variable every II=1 cycles (the plan's)
+#pragma HLS PIPELINE II=1
         const int v = KIND1_VARIABLES[i];
         T xv[3], dv[3], ov[3];
         for (int k = 0; k < 3; ++k) xv[k] = x[VAR_X_OFF[v] + k];
@@ -2856,8 +2887,9 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_1(xv, dv, ov);
         for (int k = 0; k < 3; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 1, "variables", 8, 1, 172);
-    for (int i = 0; i < 8; ++i) {
+    FGC_CYCLES("retract", 1, "variables", 8, 1, 11);
+    for (int i = 0; i < 8; ++i) {  // a variable every II=2 cycles (the plan's)
+#pragma HLS PIPELINE II=2
         const int v = KIND2_VARIABLES[i];
         T xv[6], dv[6], ov[6];
         for (int k = 0; k < 6; ++k) xv[k] = x[VAR_X_OFF[v] + k];
@@ -2865,7 +2897,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_2(xv, dv, ov);
         for (int k = 0; k < 6; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 2, "variables", 8, 1, 172);
+    FGC_CYCLES("retract", 2, "variables", 8, 2, 11);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -2902,28 +2934,32 @@ bool eliminate(int s, T mu) {
         }
     }
     FGC_CYCLES("assemble", 0, "zero", w * (MAX_W + 1), 1, 1);
-    // the += below into the table-addressed HF: II = the adder latency (an address may repeat)
+    // each factor's packed Gram (H's lower triangle, then its gradient row) and each child's
+    // update matrix (upper triangle and reduced g), one entry a cycle += into HF: within one
+    // loop every entry goes to its own address (the column maps are one-to-one), so no
+    // iteration waits for another's add (II 1); a later loop's entry may meet the same address
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=4
         const int fac = STEP_FACTORS[e];
         const int cb = FACTOR_COLMAP_BEGIN[fac];
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
         const int g0 = FACTOR_GRAM_OFF[fac];
-        for (int p = 0; p < d; ++p) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-            for (int q = 0; q <= p; ++q) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-                const int a = FACTOR_COLMAP[cb + p], b = FACTOR_COLMAP[cb + q];
-                const int lo = b < a ? b : a, hi = b < a ? a : b;
-                HF[lo][hi] += GRAM[g0 + p * (p + 1) / 2 + q];
+        const int n = d * (d + 1) / 2 + d;  // entry (p, q), q <= p, at p (p + 1) / 2 + q; row d: g
+        for (int k = 0, p = 0, q = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=495
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=HF inter false
+            const int a = p < d ? FACTOR_COLMAP[cb + p] : w, b = FACTOR_COLMAP[cb + q];
+            const int lo = b < a ? b : a, hi = b < a ? a : b;
+            HF[lo][hi] += GRAM[g0 + k];
+            if (q == p) {
+                q = 0;
+                ++p;
+            } else {
+                ++q;
             }
-            FGC_CYCLES("assemble", 0, "gram_row", p + 1, 11, 13);
         }
-        for (int p = 0; p < d; ++p) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-            HF[FACTOR_COLMAP[cb + p]][w] += GRAM[g0 + d * (d + 1) / 2 + p];
-        }
-        FGC_CYCLES("assemble", 0, "gram_gradient", d, 11, 13);
+        FGC_CYCLES("assemble", 0, "gram", n, 1, 13);
     }
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=2
@@ -2931,18 +2967,22 @@ bool eliminate(int s, T mu) {
         const int sc = STEP_W[c] - STEP_F[c];
         const int mb = STEP_SEPMAP_BEGIN[c];
         const int u0 = STEP_NF_OFF[c];
-        for (int a = 0; a < sc; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-            for (int b = a; b < sc; ++b) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-                const int ma = STEP_SEPMAP[mb + a], mbb = STEP_SEPMAP[mb + b];
-                const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
-                HF[lo][hi] += NF[u0 + a * (sc + 1) + b];
+        const int n = sc * (sc + 1) / 2 + sc;  // row a: columns a ... sc - 1, then its g (column sc)
+        for (int k = 0, a = 0, b = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=495
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=HF inter false
+            const int ma = STEP_SEPMAP[mb + a], mbb = b < sc ? STEP_SEPMAP[mb + b] : w;
+            const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
+            HF[lo][hi] += NF[u0 + a * (sc + 1) + b];
+            if (b == sc) {
+                ++a;
+                b = a;
+            } else {
+                ++b;
             }
-            FGC_CYCLES("assemble", 0, "child_row", sc - a, 11, 13);
-            HF[STEP_SEPMAP[mb + a]][w] += NF[u0 + a * (sc + 1) + sc];
-            FGC_CYCLES("assemble", 0, "child_gradient", 1, 11, 13);
         }
+        FGC_CYCLES("assemble", 0, "child", n, 1, 13);
     }
     bool not_pd = false, singular = false;
     FGC_PHASE("cholesky");
@@ -2950,20 +2990,26 @@ bool eliminate(int s, T mu) {
     if (singular) return false;
     FGC_PHASE("store");
     const int c0 = STEP_COND_OFF[s];
-    for (int i = 0; i < f * (w + 1); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=930
+    const int nc = f * (w + 1);
+    for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=465
 #pragma HLS PIPELINE II=1
-        COND[c0 + i] = CONDBUF[i];
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nc) COND[c0 + i + h] = CONDBUF[i + h];
+        }
     }
-    FGC_CYCLES("store", 0, "cond", f * (w + 1), 1, 2);
+    FGC_CYCLES("store", 0, "cond", (nc + PORTS - 1) / PORTS, 1, 2);
     const int sw = w - f;
     const int u0 = STEP_NF_OFF[s];
-    for (int i = 0; i < sw * (sw + 1); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=930
+    const int nu = sw * (sw + 1);
+    for (int i = 0; i < nu; i += PORTS) {
+#pragma HLS LOOP_TRIPCOUNT max=465
 #pragma HLS PIPELINE II=1
-        NF[u0 + i] = UPDBUF[i];
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nu) NF[u0 + i + h] = UPDBUF[i + h];
+        }
     }
-    FGC_CYCLES("store", 0, "nf", sw * (sw + 1), 1, 2);
+    FGC_CYCLES("store", 0, "nf", (nu + PORTS - 1) / PORTS, 1, 2);
     return true;
 }
 
@@ -2977,37 +3023,72 @@ bool eliminate_all(T mu) {
     return ok;
 }
 
-// Back-substitution root first: per step x_f = R^-1 (d - S x_s) (cond_backsub, fgc_backsub.h).
+// ---- back-substitution: one unit per unit set, each on its own buffers (a level's steps go
+// 1 at a time to the units, side by side in the backsub_level DATAFLOW region)
+const int BS_WORDS = 2;  // words of each unit's step a copy moves an iteration (PORTS shared out)
+L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // unit 0's conditional (R | S | d)
+L BS_XS0[LesConfig::MAX_COLS];  // its separator's solution
+L BS_X0[MAX_F];  // its frontal solution
+
+// Back-substitution unit 0: x = R^-1 (d - S xs) of one step (f = 0: none this time).
+void backsub_set0(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
+                  const L xs[LesConfig::MAX_COLS], L x[MAX_F]) {
+    FGC_BRANCH();  // csim cycle counting only: the units of a level run side by side
+    fgc_units::cond_backsub<LesConfig>(cond, f, s, xs, x);
+}
+
+// One chunk of a level's steps on the 1 back-substitution unit(s) side by side.
+void backsub_level(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
+                   const L xs0[LesConfig::MAX_COLS], L x0[MAX_F]) {
+#pragma HLS DATAFLOW
+    backsub_set0(cond0, f0, s0, xs0, x0);
+}
+
+// Back-substitution root first: per level its steps 1 at a time (LEVEL_STEPS order):
+// their conditionals and separator solutions in side by side (BS_WORDS words of each step an
+// iteration), the backsub_level region, their frontal solutions out into DELTA side by side.
 void back_substitute() {
     FGC_PHASE("backsub");
     for (int l = N_LEVELS - 1; l >= 0; --l) {
-        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; ++i) {
+        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 1) {
 #pragma HLS LOOP_TRIPCOUNT max=2
-            const int s = LEVEL_STEPS[i];
-            const int w = STEP_W[s], f = STEP_F[s];
-            const int cb = STEP_COL_BEGIN[s];
-            const int c0 = STEP_COND_OFF[s];
-            L cond[MAX_F * LesConfig::MAX_COLS];
-            for (int e = 0; e < f * (w + 1); ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=930
+            const bool has0 = i + 0 < LEVEL_BEGIN[l + 1];
+            const int s0 = has0 ? LEVEL_STEPS[i + 0] : 0;
+            const int f0 = has0 ? STEP_F[s0] : 0;
+            const int sep0 = has0 ? STEP_W[s0] - STEP_F[s0] : 0;
+            const int n0 = f0 * (f0 + sep0 + 1);
+            const int c0 = STEP_COND_OFF[s0], cb0 = STEP_COL_BEGIN[s0];
+            int most = 0, most_sep = 0, most_f = 0;
+            most = n0 > most ? n0 : most;
+            most_sep = sep0 > most_sep ? sep0 : most_sep;
+            most_f = f0 > most_f ? f0 : most_f;
+            // BS_WORDS words of each step an iteration: the memories' PORTS ports shared out
+            for (int e = 0; e < most; e += BS_WORDS) {
+#pragma HLS LOOP_TRIPCOUNT max=465
 #pragma HLS PIPELINE II=1
-                cond[e] = COND[c0 + e];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (e + h < n0) BS_COND0[e + h] = COND[c0 + e + h];
+                }
             }
-            FGC_CYCLES("backsub_copy", 0, "cond_in", f * (w + 1), 1, 2);
-            L xs[LesConfig::MAX_COLS], x[MAX_F];
-            for (int a = 0; a < w - f; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=30
+            FGC_CYCLES("backsub_copy", 0, "cond_in", (most + BS_WORDS - 1) / BS_WORDS, 1, 2);
+            for (int a = 0; a < most_sep; a += BS_WORDS) {
+#pragma HLS LOOP_TRIPCOUNT max=15
 #pragma HLS PIPELINE II=1
-                xs[a] = DELTA[STEP_COL[cb + f + a]];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (a + h < sep0) BS_XS0[a + h] = DELTA[STEP_COL[cb0 + f0 + a + h]];
+                }
             }
-            FGC_CYCLES("backsub_copy", 0, "separator_in", w - f, 1, 2);
-            fgc_units::cond_backsub<LesConfig>(cond, f, w - f, xs, x);
-            for (int c = 0; c < f; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=30
+            FGC_CYCLES("backsub_copy", 0, "separator_in", (most_sep + BS_WORDS - 1) / BS_WORDS, 1, 2);
+            backsub_level(BS_COND0, f0, sep0, BS_XS0, BS_X0);
+            FGC_JOIN();
+            for (int c = 0; c < most_f; c += BS_WORDS) {
+#pragma HLS LOOP_TRIPCOUNT max=15
 #pragma HLS PIPELINE II=1
-                DELTA[STEP_COL[cb + c]] = x[c];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (c + h < f0) DELTA[STEP_COL[cb0 + c + h]] = BS_X0[c + h];
+                }
             }
-            FGC_CYCLES("backsub_copy", 0, "solution_out", f, 1, 2);
+            FGC_CYCLES("backsub_copy", 0, "solution_out", (most_f + BS_WORDS - 1) / BS_WORDS, 1, 2);
         }
     }
 }

@@ -7,7 +7,8 @@
 // -> per schedule level the QR unit set(s): Evaluate + n_u Update units over streams
 // -> back-substitution -> state update (retract) -> the factor datapaths (cost mode) -> LM control.
 //
-// Process network (from the plan; every DATAFLOW region below is one of these):
+// The elimination's process network (from the plan; every DATAFLOW region of the units is one of
+// these; back_substitute's backsub_level region runs one cond_backsub per unit set side by side):
 //   14 processes, 26 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
 //   process qr0_update0
@@ -73,6 +74,11 @@ const T ABS_TOL = T(1e-14);
 const T SINGULAR_EPS = T(1.1920928955078125e-06);
 const int TILE = 4;  // partial sums interleaved TILE ways; rows padded to whole TILEs
 const int MAX_LD = 32;  // padded row length of the widest step
+// the plan's operator latencies of T and L; the kernel's dot products and Grams interleave
+// ADD_LAT partial sums (a sum comes back to the adder after it is done: II 1)
+const int PORTS = 2;  // words a cycle through a memory's two ports (true dual-port RAM): the copies
+const int T_ADD_LAT = 11, T_MUL_LAT = 8, T_PARTIALS = T_ADD_LAT;
+const int L_ADD_LAT = 11, L_MUL_LAT = 8, L_PARTIALS = L_ADD_LAT;
 const int N_UNITS = 4;  // --units: Update units per unit set
 const int LOCAL_COLS = (MAX_W + 1 + N_UNITS - 1) / N_UNITS;  // columns of [W | b] per bank
 const int STATUS_CONVERGED = 0;
@@ -2377,7 +2383,8 @@ void reweight(T ab[], T code, T k) {
 template <int STRIDE, int COLS, int ROWS>
 T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T moved[ROWS], b_abs[ROWS];
-    for (int r = 0; r < ROWS; ++r) {
+    for (int r = 0; r < ROWS; ++r) {  // a row a cycle: its terms unrolled
+#pragma HLS PIPELINE II=1
         T part[TILE];
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
         for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
@@ -2388,7 +2395,8 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     }
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
-    for (int r0 = 0; r0 < ROWS; r0 += TILE) {
+    for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
+#pragma HLS PIPELINE II=11
         for (int t = 0; t < TILE; ++t) {
             if (r0 + t < ROWS) {
                 const T m = moved[r0 + t];
@@ -2399,29 +2407,53 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]], summed down the
-// columns). False if an entry is infinite or NaN.
+// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]]). Row r goes
+// into partial sum r % T_PARTIALS of every column (a row a cycle: II 1), the partial sums are
+// folded per column, then scattered into G (the columns' entries are distinct: II 1). False if
+// an entry is infinite or NaN.
 template <int STRIDE, int COLS, int ROWS>
 bool accumulate(const T ab[], const int col[COLS - 1]) {
-    T g[STRIDE], check[STRIDE];
-    for (int c = 0; c < STRIDE; ++c) {
-        g[c] = T(0);
-        check[c] = T(0);
-    }
-    for (int r = 0; r < ROWS; ++r) {
-        const T b = ab[r * STRIDE + COLS - 1];
+    T g[T_PARTIALS][STRIDE], check[T_PARTIALS][STRIDE];
+#pragma HLS ARRAY_PARTITION variable=g complete dim=0
+#pragma HLS ARRAY_PARTITION variable=check complete dim=0
+    for (int t = 0; t < T_PARTIALS; ++t) {
+#pragma HLS UNROLL
         for (int c = 0; c < STRIDE; ++c) {
-            g[c] += ab[r * STRIDE + c] * b;
-            check[c] += ab[r * STRIDE + c] - ab[r * STRIDE + c];  // 0, or NaN for inf / NaN
+#pragma HLS UNROLL
+            g[t][c] = T(0);
+            check[t][c] = T(0);
         }
     }
-    T bad[TILE];
-    for (int t = 0; t < TILE; ++t) bad[t] = T(0);
-    for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
-        for (int t = 0; t < TILE; ++t) bad[t] += check[c0 + t];
+    for (int r = 0; r < ROWS; ++r) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=g inter false
+#pragma HLS DEPENDENCE variable=check inter false
+        const T b = ab[r * STRIDE + COLS - 1];
+        for (int c = 0; c < STRIDE; ++c) {
+            g[r % T_PARTIALS][c] += ab[r * STRIDE + c] * b;
+            check[r % T_PARTIALS][c] += ab[r * STRIDE + c] - ab[r * STRIDE + c];  // 0, or NaN for inf / NaN
+        }
     }
-    for (int c = 0; c < COLS - 1; ++c) G[col[c]] += g[c];
-    return fgc_isfinite((bad[0] + bad[1]) + (bad[2] + bad[3]));
+    T sum[STRIDE], bad[STRIDE];
+#pragma HLS ARRAY_PARTITION variable=sum complete
+#pragma HLS ARRAY_PARTITION variable=bad complete
+    for (int c = 0; c < STRIDE; ++c) {
+#pragma HLS UNROLL
+        T pg[T_PARTIALS], pc[T_PARTIALS];
+        for (int t = 0; t < T_PARTIALS; ++t) {
+            pg[t] = g[t][c];
+            pc[t] = check[t][c];
+        }
+        sum[c] = fgc_units::fold_partials<T, T_PARTIALS>(pg);
+        bad[c] = fgc_units::fold_partials<T, T_PARTIALS>(pc);
+    }
+    const T bad_all = fgc_units::fold_partials<T, STRIDE>(bad);
+    for (int c = 0; c < COLS - 1; ++c) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=G inter false
+        G[col[c]] += sum[c];
+    }
+    return fgc_isfinite(bad_all);
 }
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
@@ -2463,13 +2495,14 @@ void evaluate_0(const T x[N_X]) {
     FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 36, 581);
 }
 
-// block 0's whitened rows of instance f from AB, padded to 8 columns
+// block 0's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_0(int f, T ab[48]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 8; ++c) {
+    for (int e = 0; e < 48; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 8, c = (e + h) % 8;
+            ab[e + h] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
         }
     }
 }
@@ -2481,16 +2514,19 @@ bool reduce_0() {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_0(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         finite = accumulate<8, 7, 6>(ab, col) && finite;
-        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
-        FGC_CYCLES("reduce_0", 0, "load", 48, 1, 2);
+        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
+        // the finiteness check's tree over the columns, the scatter into G
+        FGC_CYCLES("reduce_0", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_0", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_0", 0, "rows", 6, 11, 19);
-        FGC_CYCLES("reduce_0", 0, "check", 2, 11, 11);
-        FGC_CYCLES("reduce_0", 0, "scatter", 6, 11, 13);
+        FGC_CYCLES("reduce_0", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_0", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
+        FGC_CYCLES("reduce_0", 0, "scatter", 6, 1, 13);
     }
     return finite;
 }
@@ -2501,12 +2537,13 @@ T noise_0(T noise) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_0(f, ab);
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 6>(ab, scale);
-        FGC_CYCLES("noise_0", 0, "load", 48, 1, 2);
+        FGC_CYCLES("noise_0", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 8, 1, 1);
         FGC_CYCLES("noise_0", 0, "rows", 6, 1, 60);
         FGC_CYCLES("noise_0", 0, "terms", 2, 11, 38);
@@ -2562,13 +2599,14 @@ void evaluate_1(const T x[N_X]) {
     FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 1, 11);
 }
 
-// block 1's whitened rows of instance f from AB, padded to 4 columns
+// block 1's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
 void load_rows_1(int f, T ab[12]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 4; ++c) {
+    for (int e = 0; e < 12; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 4 + c] = c < 4 ? T(AB[a0 + r * 4 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 4, c = (e + h) % 4;
+            ab[e + h] = c < 4 ? T(AB[a0 + r * 4 + c]) : T(0);
         }
     }
 }
@@ -2580,16 +2618,19 @@ bool reduce_1() {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[12];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=4
         load_rows_1(f, ab);
         int col[3];  // per column: its tangent entry
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         finite = accumulate<4, 4, 3>(ab, col) && finite;
-        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
-        FGC_CYCLES("reduce_1", 0, "load", 12, 1, 2);
+        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
+        // the finiteness check's tree over the columns, the scatter into G
+        FGC_CYCLES("reduce_1", 0, "load", 6, 1, 2);
         FGC_CYCLES("reduce_1", 0, "columns", 3, 1, 1);
-        FGC_CYCLES("reduce_1", 0, "rows", 3, 11, 19);
-        FGC_CYCLES("reduce_1", 0, "check", 1, 11, 11);
-        FGC_CYCLES("reduce_1", 0, "scatter", 3, 11, 13);
+        FGC_CYCLES("reduce_1", 0, "rows", 3, fgc_units::dot_ii(3, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(3, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_1", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(4));
+        FGC_CYCLES("reduce_1", 0, "scatter", 3, 1, 13);
     }
     return finite;
 }
@@ -2600,12 +2641,13 @@ T noise_1(T noise) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[12];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=4
         load_rows_1(f, ab);
         T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
         for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<4, 4, 3>(ab, scale);
-        FGC_CYCLES("noise_1", 0, "load", 12, 1, 2);
+        FGC_CYCLES("noise_1", 0, "load", 6, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 4, 1, 1);
         FGC_CYCLES("noise_1", 0, "rows", 3, 1, 49);
         FGC_CYCLES("noise_1", 0, "terms", 1, 11, 38);
@@ -2661,13 +2703,14 @@ void evaluate_2(const T x[N_X]) {
     FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 1, 11);
 }
 
-// block 2's whitened rows of instance f from AB, padded to 8 columns
+// block 2's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_2(int f, T ab[48]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 8; ++c) {
+    for (int e = 0; e < 48; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 8, c = (e + h) % 8;
+            ab[e + h] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
         }
     }
 }
@@ -2679,16 +2722,19 @@ bool reduce_2() {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_2(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         finite = accumulate<8, 7, 6>(ab, col) && finite;
-        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
-        FGC_CYCLES("reduce_2", 0, "load", 48, 1, 2);
+        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
+        // the finiteness check's tree over the columns, the scatter into G
+        FGC_CYCLES("reduce_2", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_2", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_2", 0, "rows", 6, 11, 19);
-        FGC_CYCLES("reduce_2", 0, "check", 2, 11, 11);
-        FGC_CYCLES("reduce_2", 0, "scatter", 6, 11, 13);
+        FGC_CYCLES("reduce_2", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_2", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
+        FGC_CYCLES("reduce_2", 0, "scatter", 6, 1, 13);
     }
     return finite;
 }
@@ -2699,12 +2745,13 @@ T noise_2(T noise) {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_2(f, ab);
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 6>(ab, scale);
-        FGC_CYCLES("noise_2", 0, "load", 48, 1, 2);
+        FGC_CYCLES("noise_2", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_2", 0, "scales", 8, 1, 1);
         FGC_CYCLES("noise_2", 0, "rows", 6, 1, 60);
         FGC_CYCLES("noise_2", 0, "terms", 2, 11, 38);
@@ -3000,13 +3047,14 @@ void evaluate_3(const T x[N_X]) {
     FGC_CYCLES("factor_3_jacobian", 0, "instances", 7, 143, 864);
 }
 
-// block 3's whitened rows of instance f from AB, padded to 32 columns
+// block 3's whitened rows of instance f from AB, padded to 32 columns (a multiple of PORTS)
 void load_rows_3(int f, T ab[672]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 21; ++r) {
-        for (int c = 0; c < 32; ++c) {
+    for (int e = 0; e < 672; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 32 + c] = c < 31 ? T(AB[a0 + r * 31 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 32, c = (e + h) % 32;
+            ab[e + h] = c < 31 ? T(AB[a0 + r * 31 + c]) : T(0);
         }
     }
 }
@@ -3018,6 +3066,7 @@ bool reduce_3() {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[672];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=32
         load_rows_3(f, ab);
         int col[30];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
@@ -3027,12 +3076,14 @@ bool reduce_3() {
         for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
         for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
         finite = accumulate<32, 31, 21>(ab, col) && finite;
-        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
-        FGC_CYCLES("reduce_3", 0, "load", 672, 1, 2);
+        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
+        // the finiteness check's tree over the columns, the scatter into G
+        FGC_CYCLES("reduce_3", 0, "load", 336, 1, 2);
         FGC_CYCLES("reduce_3", 0, "columns", 30, 1, 1);
-        FGC_CYCLES("reduce_3", 0, "rows", 21, 11, 19);
-        FGC_CYCLES("reduce_3", 0, "check", 8, 11, 11);
-        FGC_CYCLES("reduce_3", 0, "scatter", 30, 11, 13);
+        FGC_CYCLES("reduce_3", 0, "rows", 21, fgc_units::dot_ii(21, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(21, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_3", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(32));
+        FGC_CYCLES("reduce_3", 0, "scatter", 30, 1, 13);
     }
     return finite;
 }
@@ -3043,6 +3094,7 @@ T noise_3(T noise) {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[672];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=32
         load_rows_3(f, ab);
         T scale[32];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 32; ++c) scale[c] = T(0);
@@ -3053,7 +3105,7 @@ T noise_3(T noise) {
         for (int j = 0; j < 6; ++j) scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
         for (int j = 0; j < 6; ++j) scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
         noise += rounding_noise<32, 31, 21>(ab, scale);
-        FGC_CYCLES("noise_3", 0, "load", 672, 1, 2);
+        FGC_CYCLES("noise_3", 0, "load", 336, 1, 2);
         FGC_CYCLES("noise_3", 0, "scales", 32, 1, 1);
         FGC_CYCLES("noise_3", 0, "rows", 21, 1, 126);
         FGC_CYCLES("noise_3", 0, "terms", 6, 11, 38);
@@ -3110,13 +3162,14 @@ void evaluate_4(const T x[N_X]) {
     FGC_CYCLES("factor_4_jacobian", 0, "instances", 8, 1, 11);
 }
 
-// block 4's whitened rows of instance f from AB, padded to 8 columns
+// block 4's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_4(int f, T ab[24]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 8; ++c) {
+    for (int e = 0; e < 24; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 8, c = (e + h) % 8;
+            ab[e + h] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
         }
     }
 }
@@ -3128,16 +3181,19 @@ bool reduce_4() {
         const int f = BLOCK4_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[24];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_4(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         finite = accumulate<8, 7, 3>(ab, col) && finite;
-        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
-        FGC_CYCLES("reduce_4", 0, "load", 24, 1, 2);
+        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
+        // the finiteness check's tree over the columns, the scatter into G
+        FGC_CYCLES("reduce_4", 0, "load", 12, 1, 2);
         FGC_CYCLES("reduce_4", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_4", 0, "rows", 3, 11, 19);
-        FGC_CYCLES("reduce_4", 0, "check", 2, 11, 11);
-        FGC_CYCLES("reduce_4", 0, "scatter", 6, 11, 13);
+        FGC_CYCLES("reduce_4", 0, "rows", 3, fgc_units::dot_ii(3, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(3, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_4", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
+        FGC_CYCLES("reduce_4", 0, "scatter", 6, 1, 13);
     }
     return finite;
 }
@@ -3148,12 +3204,13 @@ T noise_4(T noise) {
         const int f = BLOCK4_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[24];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_4(f, ab);
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 3>(ab, scale);
-        FGC_CYCLES("noise_4", 0, "load", 24, 1, 2);
+        FGC_CYCLES("noise_4", 0, "load", 12, 1, 2);
         FGC_CYCLES("noise_4", 0, "scales", 8, 1, 1);
         FGC_CYCLES("noise_4", 0, "rows", 3, 1, 60);
         FGC_CYCLES("noise_4", 0, "terms", 1, 11, 38);
@@ -3238,9 +3295,13 @@ T total_cost(const T x[N_X]) {
     return total;
 }
 
-// ---- state update: retraction x (+) delta, one unit per variable type
+// ---- state update: retraction x (+) delta, one datapath per variable type; the ALLOCATION
+// limits are the plan's operators of unit state_update_<k> (the factor datapaths' limits)
 // kind 0: Pose3
 void retract_0(const T x[12], const T d[6], T out[12]) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=6
     const T r0 = (d[1]*d[1]);
     const T r1 = (d[2]*d[2]);
     const T r2 = r0 + r1;
@@ -3291,6 +3352,8 @@ void retract_0(const T x[12], const T d[6], T out[12]) {
 
 // kind 1: Vector3
 void retract_1(const T x[3], const T d[3], T out[3]) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=3
     out[0] = d[0] + x[0];
     out[1] = d[1] + x[1];
     out[2] = d[2] + x[2];
@@ -3298,6 +3361,8 @@ void retract_1(const T x[3], const T d[3], T out[3]) {
 
 // kind 2: ImuBias
 void retract_2(const T x[6], const T d[6], T out[6]) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=4
     out[0] = d[0] + x[0];
     out[1] = d[1] + x[1];
     out[2] = d[2] + x[2];
@@ -3309,7 +3374,8 @@ void retract_2(const T x[6], const T d[6], T out[6]) {
 void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
     FGC_EVENT("retract");
     FGC_PHASE("state_update");
-    for (int i = 0; i < 8; ++i) {
+    for (int i = 0; i < 8; ++i) {  // a variable every II=36 cycles (the plan's)
+#pragma HLS PIPELINE II=36
         const int v = KIND0_VARIABLES[i];
         T xv[12], dv[6], ov[12];
         for (int k = 0; k < 12; ++k) xv[k] = x[VAR_X_OFF[v] + k];
@@ -3317,8 +3383,9 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_0(xv, dv, ov);
         for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 0, "variables", 8, 1, 172);
-    for (int i = 0; i < 8; ++i) {
+    FGC_CYCLES("retract", 0, "variables", 8, 36, 277);
+    for (int i = 0; i < 8; ++i) {  // a variable every II=1 cycles (the plan's)
+#pragma HLS PIPELINE II=1
         const int v = KIND1_VARIABLES[i];
         T xv[3], dv[3], ov[3];
         for (int k = 0; k < 3; ++k) xv[k] = x[VAR_X_OFF[v] + k];
@@ -3326,8 +3393,9 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_1(xv, dv, ov);
         for (int k = 0; k < 3; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 1, "variables", 8, 1, 172);
-    for (int i = 0; i < 8; ++i) {
+    FGC_CYCLES("retract", 1, "variables", 8, 1, 11);
+    for (int i = 0; i < 8; ++i) {  // a variable every II=2 cycles (the plan's)
+#pragma HLS PIPELINE II=2
         const int v = KIND2_VARIABLES[i];
         T xv[6], dv[6], ov[6];
         for (int k = 0; k < 6; ++k) xv[k] = x[VAR_X_OFF[v] + k];
@@ -3335,7 +3403,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_2(xv, dv, ov);
         for (int k = 0; k < 6; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 2, "variables", 8, 1, 172);
+    FGC_CYCLES("retract", 2, "variables", 8, 2, 11);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -3397,9 +3465,10 @@ void qr_level(int rows0, int f0, int s0,
     qr_set1(rows1, f1, s1, work1, cond1, update1, bad1);
 }
 
-// Stack step s into a unit set's banks: every entry of its rows, zeros included. Each loop
-// writes a word a cycle (the zeroing all N_UNITS banks of a column at once), counted as the
-// plan's stack_loops price them.
+// Stack step s into a unit set's banks: every entry of its rows, zeros included. The zeroing
+// writes a word of all N_UNITS banks a cycle, the rows PORTS words a cycle (AB's or NF's two
+// ports, into any banks: each bank has two ports too), the damping rows a word a cycle; counted
+// as the plan's stack_loops price them.
 void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
     FGC_PHASE("qr_stack");
     const int w = STEP_W[s], f = STEP_F[s], m = STEP_ROWS[s];
@@ -3427,19 +3496,23 @@ void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
         const int a0 = FACTOR_A_OFF[fac];
         const int words = FACTOR_A_OFF[fac + 1] - a0;  // its rows x (d + 1)
         // row r, column c of its [A | b] into the step's row `row + r`
-        for (int k = 0, r = 0, c = 0; k < words; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=2697
+        for (int k = 0, r = 0, c = 0; k < words; k += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=1349
 #pragma HLS PIPELINE II=1
-            const int t = c < d ? FACTOR_COLMAP[cb + c] : w;
-            bank[t % N_UNITS][row + r][t / N_UNITS] = AB[a0 + k];
-            if (c == d) {
-                c = 0;
-                ++r;
-            } else {
-                ++c;
+            for (int h = 0; h < PORTS; ++h) {
+                if (k + h < words) {
+                    const int t = c < d ? FACTOR_COLMAP[cb + c] : w;
+                    bank[t % N_UNITS][row + r][t / N_UNITS] = AB[a0 + k + h];
+                    if (c == d) {
+                        c = 0;
+                        ++r;
+                    } else {
+                        ++c;
+                    }
+                }
             }
         }
-        FGC_CYCLES("stack", 0, "factor_rows", words, 1, 2);
+        FGC_CYCLES("stack", 0, "factor_rows", (words + PORTS - 1) / PORTS, 1, 2);
         row = row + words / (d + 1);
     }
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
@@ -3449,19 +3522,23 @@ void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
         const int mb = STEP_SEPMAP_BEGIN[c];
         const int n0 = STEP_NF_OFF[c];
         const int words = STEP_NF_ROWS[c] * (sc + 1);
-        for (int k = 0, r = 0, q = 0; k < words; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=961
+        for (int k = 0, r = 0, q = 0; k < words; k += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=481
 #pragma HLS PIPELINE II=1
-            const int t = q < sc ? STEP_SEPMAP[mb + q] : w;
-            bank[t % N_UNITS][row + r][t / N_UNITS] = NF[n0 + k];
-            if (q == sc) {
-                q = 0;
-                ++r;
-            } else {
-                ++q;
+            for (int h = 0; h < PORTS; ++h) {
+                if (k + h < words) {
+                    const int t = q < sc ? STEP_SEPMAP[mb + q] : w;
+                    bank[t % N_UNITS][row + r][t / N_UNITS] = NF[n0 + k + h];
+                    if (q == sc) {
+                        q = 0;
+                        ++r;
+                    } else {
+                        ++q;
+                    }
+                }
             }
         }
-        FGC_CYCLES("stack", 0, "child_rows", words, 1, 2);
+        FGC_CYCLES("stack", 0, "child_rows", (words + PORTS - 1) / PORTS, 1, 2);
         row = row + STEP_NF_ROWS[c];
     }
     for (int j = 0; j < f; ++j) {
@@ -3472,24 +3549,29 @@ void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
     FGC_CYCLES("stack", 0, "damping", f, 1, 1);
 }
 
-// A unit set's result for step s into COND and NF, a word a cycle.
+// A unit set's result for step s into COND and NF, PORTS words a cycle.
 void commit(int s, const L cond[MAX_F * LesConfig::MAX_COLS],
             const L update[LesConfig::MAX_COLS * LesConfig::MAX_COLS]) {
     FGC_PHASE("qr_commit");
     const int w = STEP_W[s], f = STEP_F[s], sw = w - f;
     const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
-    for (int i = 0; i < f * (w + 1); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=930
+    const int nc = f * (w + 1), nu = STEP_NF_ROWS[s] * (sw + 1);
+    for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=465
 #pragma HLS PIPELINE II=1
-        COND[c0 + i] = cond[i];
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nc) COND[c0 + i + h] = cond[i + h];
+        }
     }
-    FGC_CYCLES("commit", 0, "cond", f * (w + 1), 1, 2);
-    for (int i = 0; i < STEP_NF_ROWS[s] * (sw + 1); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=961
+    FGC_CYCLES("commit", 0, "cond", (nc + PORTS - 1) / PORTS, 1, 2);
+    for (int i = 0; i < nu; i += PORTS) {
+#pragma HLS LOOP_TRIPCOUNT max=481
 #pragma HLS PIPELINE II=1
-        NF[n0 + i] = update[i];
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nu) NF[n0 + i + h] = update[i + h];
+        }
     }
-    FGC_CYCLES("commit", 0, "nf", STEP_NF_ROWS[s] * (sw + 1), 1, 2);
+    FGC_CYCLES("commit", 0, "nf", (nu + PORTS - 1) / PORTS, 1, 2);
 }
 
 // Eliminate every step, level by level: a level's steps are independent, the unit sets take
@@ -3530,37 +3612,98 @@ bool eliminate_all(T mu) {
     return ok;
 }
 
-// Back-substitution root first: per step x_f = R^-1 (d - S x_s) (cond_backsub, fgc_backsub.h).
+// ---- back-substitution: one unit per unit set, each on its own buffers (a level's steps go
+// 2 at a time to the units, side by side in the backsub_level DATAFLOW region)
+const int BS_WORDS = 1;  // words of each unit's step a copy moves an iteration (PORTS shared out)
+L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // unit 0's conditional (R | S | d)
+L BS_XS0[LesConfig::MAX_COLS];  // its separator's solution
+L BS_X0[MAX_F];  // its frontal solution
+L BS_COND1[MAX_F * LesConfig::MAX_COLS];  // unit 1's conditional (R | S | d)
+L BS_XS1[LesConfig::MAX_COLS];  // its separator's solution
+L BS_X1[MAX_F];  // its frontal solution
+
+// Back-substitution unit 0: x = R^-1 (d - S xs) of one step (f = 0: none this time).
+void backsub_set0(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
+                  const L xs[LesConfig::MAX_COLS], L x[MAX_F]) {
+    FGC_BRANCH();  // csim cycle counting only: the units of a level run side by side
+    fgc_units::cond_backsub<LesConfig>(cond, f, s, xs, x);
+}
+
+// Back-substitution unit 1: x = R^-1 (d - S xs) of one step (f = 0: none this time).
+void backsub_set1(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
+                  const L xs[LesConfig::MAX_COLS], L x[MAX_F]) {
+    FGC_BRANCH();  // csim cycle counting only: the units of a level run side by side
+    fgc_units::cond_backsub<LesConfig>(cond, f, s, xs, x);
+}
+
+// One chunk of a level's steps on the 2 back-substitution unit(s) side by side.
+void backsub_level(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
+                   const L xs0[LesConfig::MAX_COLS], L x0[MAX_F],
+                   const L cond1[MAX_F * LesConfig::MAX_COLS], int f1, int s1,
+                   const L xs1[LesConfig::MAX_COLS], L x1[MAX_F]) {
+#pragma HLS DATAFLOW
+    backsub_set0(cond0, f0, s0, xs0, x0);
+    backsub_set1(cond1, f1, s1, xs1, x1);
+}
+
+// Back-substitution root first: per level its steps 2 at a time (LEVEL_STEPS order):
+// their conditionals and separator solutions in side by side (BS_WORDS words of each step an
+// iteration), the backsub_level region, their frontal solutions out into DELTA side by side.
 void back_substitute() {
     FGC_PHASE("backsub");
     for (int l = N_LEVELS - 1; l >= 0; --l) {
-        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; ++i) {
+        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=2
-            const int s = LEVEL_STEPS[i];
-            const int w = STEP_W[s], f = STEP_F[s];
-            const int cb = STEP_COL_BEGIN[s];
-            const int c0 = STEP_COND_OFF[s];
-            L cond[MAX_F * LesConfig::MAX_COLS];
-            for (int e = 0; e < f * (w + 1); ++e) {
+            const bool has0 = i + 0 < LEVEL_BEGIN[l + 1];
+            const int s0 = has0 ? LEVEL_STEPS[i + 0] : 0;
+            const int f0 = has0 ? STEP_F[s0] : 0;
+            const int sep0 = has0 ? STEP_W[s0] - STEP_F[s0] : 0;
+            const int n0 = f0 * (f0 + sep0 + 1);
+            const int c0 = STEP_COND_OFF[s0], cb0 = STEP_COL_BEGIN[s0];
+            const bool has1 = i + 1 < LEVEL_BEGIN[l + 1];
+            const int s1 = has1 ? LEVEL_STEPS[i + 1] : 0;
+            const int f1 = has1 ? STEP_F[s1] : 0;
+            const int sep1 = has1 ? STEP_W[s1] - STEP_F[s1] : 0;
+            const int n1 = f1 * (f1 + sep1 + 1);
+            const int c1 = STEP_COND_OFF[s1], cb1 = STEP_COL_BEGIN[s1];
+            int most = 0, most_sep = 0, most_f = 0;
+            most = n0 > most ? n0 : most;
+            most_sep = sep0 > most_sep ? sep0 : most_sep;
+            most_f = f0 > most_f ? f0 : most_f;
+            most = n1 > most ? n1 : most;
+            most_sep = sep1 > most_sep ? sep1 : most_sep;
+            most_f = f1 > most_f ? f1 : most_f;
+            // BS_WORDS words of each step an iteration: the memories' PORTS ports shared out
+            for (int e = 0; e < most; e += BS_WORDS) {
 #pragma HLS LOOP_TRIPCOUNT max=930
 #pragma HLS PIPELINE II=1
-                cond[e] = COND[c0 + e];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (e + h < n0) BS_COND0[e + h] = COND[c0 + e + h];
+                    if (e + h < n1) BS_COND1[e + h] = COND[c1 + e + h];
+                }
             }
-            FGC_CYCLES("backsub_copy", 0, "cond_in", f * (w + 1), 1, 2);
-            L xs[LesConfig::MAX_COLS], x[MAX_F];
-            for (int a = 0; a < w - f; ++a) {
+            FGC_CYCLES("backsub_copy", 0, "cond_in", (most + BS_WORDS - 1) / BS_WORDS, 1, 2);
+            for (int a = 0; a < most_sep; a += BS_WORDS) {
 #pragma HLS LOOP_TRIPCOUNT max=30
 #pragma HLS PIPELINE II=1
-                xs[a] = DELTA[STEP_COL[cb + f + a]];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (a + h < sep0) BS_XS0[a + h] = DELTA[STEP_COL[cb0 + f0 + a + h]];
+                    if (a + h < sep1) BS_XS1[a + h] = DELTA[STEP_COL[cb1 + f1 + a + h]];
+                }
             }
-            FGC_CYCLES("backsub_copy", 0, "separator_in", w - f, 1, 2);
-            fgc_units::cond_backsub<LesConfig>(cond, f, w - f, xs, x);
-            for (int c = 0; c < f; ++c) {
+            FGC_CYCLES("backsub_copy", 0, "separator_in", (most_sep + BS_WORDS - 1) / BS_WORDS, 1, 2);
+            backsub_level(BS_COND0, f0, sep0, BS_XS0, BS_X0,
+                          BS_COND1, f1, sep1, BS_XS1, BS_X1);
+            FGC_JOIN();
+            for (int c = 0; c < most_f; c += BS_WORDS) {
 #pragma HLS LOOP_TRIPCOUNT max=30
 #pragma HLS PIPELINE II=1
-                DELTA[STEP_COL[cb + c]] = x[c];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (c + h < f0) DELTA[STEP_COL[cb0 + c + h]] = BS_X0[c + h];
+                    if (c + h < f1) DELTA[STEP_COL[cb1 + c + h]] = BS_X1[c + h];
+                }
             }
-            FGC_CYCLES("backsub_copy", 0, "solution_out", f, 1, 2);
+            FGC_CYCLES("backsub_copy", 0, "solution_out", (most_f + BS_WORDS - 1) / BS_WORDS, 1, 2);
         }
     }
 }

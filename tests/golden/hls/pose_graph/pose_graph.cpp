@@ -7,7 +7,8 @@
 // -> per schedule level the QR unit set(s): Evaluate + n_u Update units over streams
 // -> back-substitution -> state update (retract) -> the factor datapaths (cost mode) -> LM control.
 //
-// Process network (from the plan; every DATAFLOW region below is one of these):
+// The elimination's process network (from the plan; every DATAFLOW region of the units is one of
+// these; back_substitute's backsub_level region runs one cond_backsub per unit set side by side):
 //   7 processes, 13 streams (n_u=4, 1 unit set(s))
 //   process qr0_broadcast
 //   process qr0_update0
@@ -53,6 +54,11 @@ const T ABS_TOL = T(1e-14);
 const T SINGULAR_EPS = T(1.1920928955078125e-06);
 const int TILE = 4;  // partial sums interleaved TILE ways; rows padded to whole TILEs
 const int MAX_LD = 20;  // padded row length of the widest step
+// the plan's operator latencies of T and L; the kernel's dot products and Grams interleave
+// ADD_LAT partial sums (a sum comes back to the adder after it is done: II 1)
+const int PORTS = 2;  // words a cycle through a memory's two ports (true dual-port RAM): the copies
+const int T_ADD_LAT = 11, T_MUL_LAT = 8, T_PARTIALS = T_ADD_LAT;
+const int L_ADD_LAT = 11, L_MUL_LAT = 8, L_PARTIALS = L_ADD_LAT;
 const int N_UNITS = 4;  // --units: Update units per unit set
 const int LOCAL_COLS = (MAX_W + 1 + N_UNITS - 1) / N_UNITS;  // columns of [W | b] per bank
 const int STATUS_CONVERGED = 0;
@@ -1040,7 +1046,8 @@ void reweight(T ab[], T code, T k) {
 template <int STRIDE, int COLS, int ROWS>
 T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T moved[ROWS], b_abs[ROWS];
-    for (int r = 0; r < ROWS; ++r) {
+    for (int r = 0; r < ROWS; ++r) {  // a row a cycle: its terms unrolled
+#pragma HLS PIPELINE II=1
         T part[TILE];
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
         for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
@@ -1051,7 +1058,8 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     }
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
-    for (int r0 = 0; r0 < ROWS; r0 += TILE) {
+    for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
+#pragma HLS PIPELINE II=11
         for (int t = 0; t < TILE; ++t) {
             if (r0 + t < ROWS) {
                 const T m = moved[r0 + t];
@@ -1062,29 +1070,53 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]], summed down the
-// columns). False if an entry is infinite or NaN.
+// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]]). Row r goes
+// into partial sum r % T_PARTIALS of every column (a row a cycle: II 1), the partial sums are
+// folded per column, then scattered into G (the columns' entries are distinct: II 1). False if
+// an entry is infinite or NaN.
 template <int STRIDE, int COLS, int ROWS>
 bool accumulate(const T ab[], const int col[COLS - 1]) {
-    T g[STRIDE], check[STRIDE];
-    for (int c = 0; c < STRIDE; ++c) {
-        g[c] = T(0);
-        check[c] = T(0);
-    }
-    for (int r = 0; r < ROWS; ++r) {
-        const T b = ab[r * STRIDE + COLS - 1];
+    T g[T_PARTIALS][STRIDE], check[T_PARTIALS][STRIDE];
+#pragma HLS ARRAY_PARTITION variable=g complete dim=0
+#pragma HLS ARRAY_PARTITION variable=check complete dim=0
+    for (int t = 0; t < T_PARTIALS; ++t) {
+#pragma HLS UNROLL
         for (int c = 0; c < STRIDE; ++c) {
-            g[c] += ab[r * STRIDE + c] * b;
-            check[c] += ab[r * STRIDE + c] - ab[r * STRIDE + c];  // 0, or NaN for inf / NaN
+#pragma HLS UNROLL
+            g[t][c] = T(0);
+            check[t][c] = T(0);
         }
     }
-    T bad[TILE];
-    for (int t = 0; t < TILE; ++t) bad[t] = T(0);
-    for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
-        for (int t = 0; t < TILE; ++t) bad[t] += check[c0 + t];
+    for (int r = 0; r < ROWS; ++r) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=g inter false
+#pragma HLS DEPENDENCE variable=check inter false
+        const T b = ab[r * STRIDE + COLS - 1];
+        for (int c = 0; c < STRIDE; ++c) {
+            g[r % T_PARTIALS][c] += ab[r * STRIDE + c] * b;
+            check[r % T_PARTIALS][c] += ab[r * STRIDE + c] - ab[r * STRIDE + c];  // 0, or NaN for inf / NaN
+        }
     }
-    for (int c = 0; c < COLS - 1; ++c) G[col[c]] += g[c];
-    return fgc_isfinite((bad[0] + bad[1]) + (bad[2] + bad[3]));
+    T sum[STRIDE], bad[STRIDE];
+#pragma HLS ARRAY_PARTITION variable=sum complete
+#pragma HLS ARRAY_PARTITION variable=bad complete
+    for (int c = 0; c < STRIDE; ++c) {
+#pragma HLS UNROLL
+        T pg[T_PARTIALS], pc[T_PARTIALS];
+        for (int t = 0; t < T_PARTIALS; ++t) {
+            pg[t] = g[t][c];
+            pc[t] = check[t][c];
+        }
+        sum[c] = fgc_units::fold_partials<T, T_PARTIALS>(pg);
+        bad[c] = fgc_units::fold_partials<T, T_PARTIALS>(pc);
+    }
+    const T bad_all = fgc_units::fold_partials<T, STRIDE>(bad);
+    for (int c = 0; c < COLS - 1; ++c) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=G inter false
+        G[col[c]] += sum[c];
+    }
+    return fgc_isfinite(bad_all);
 }
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
@@ -1127,13 +1159,14 @@ void evaluate_0(const T x[N_X]) {
     FGC_CYCLES("factor_0_jacobian", 0, "instances", 6, 40, 614);
 }
 
-// block 0's whitened rows of instance f from AB, padded to 16 columns
+// block 0's whitened rows of instance f from AB, padded to 16 columns (a multiple of PORTS)
 void load_rows_0(int f, T ab[96]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 16; ++c) {
+    for (int e = 0; e < 96; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 16 + c] = c < 13 ? T(AB[a0 + r * 13 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 16, c = (e + h) % 16;
+            ab[e + h] = c < 13 ? T(AB[a0 + r * 13 + c]) : T(0);
         }
     }
 }
@@ -1145,17 +1178,20 @@ bool reduce_0() {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[96];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=16
         load_rows_0(f, ab);
         int col[12];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         for (int j = 0; j < 6; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
         finite = accumulate<16, 13, 6>(ab, col) && finite;
-        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
-        FGC_CYCLES("reduce_0", 0, "load", 96, 1, 2);
+        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
+        // the finiteness check's tree over the columns, the scatter into G
+        FGC_CYCLES("reduce_0", 0, "load", 48, 1, 2);
         FGC_CYCLES("reduce_0", 0, "columns", 12, 1, 1);
-        FGC_CYCLES("reduce_0", 0, "rows", 6, 11, 19);
-        FGC_CYCLES("reduce_0", 0, "check", 4, 11, 11);
-        FGC_CYCLES("reduce_0", 0, "scatter", 12, 11, 13);
+        FGC_CYCLES("reduce_0", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_0", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(16));
+        FGC_CYCLES("reduce_0", 0, "scatter", 12, 1, 13);
     }
     return finite;
 }
@@ -1166,13 +1202,14 @@ T noise_0(T noise) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[96];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=16
         load_rows_0(f, ab);
         T scale[16];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 16; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         for (int j = 0; j < 6; ++j) scale[6 + j] = VAR_SCALE[FACTOR_VARS[vb + 1]];
         noise += rounding_noise<16, 13, 6>(ab, scale);
-        FGC_CYCLES("noise_0", 0, "load", 96, 1, 2);
+        FGC_CYCLES("noise_0", 0, "load", 48, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 16, 1, 1);
         FGC_CYCLES("noise_0", 0, "rows", 6, 1, 82);
         FGC_CYCLES("noise_0", 0, "terms", 2, 11, 38);
@@ -1228,13 +1265,14 @@ void evaluate_1(const T x[N_X]) {
     FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 36, 581);
 }
 
-// block 1's whitened rows of instance f from AB, padded to 8 columns
+// block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_1(int f, T ab[48]) {
     const int a0 = FACTOR_A_OFF[f];
-    for (int r = 0; r < 6; ++r) {
-        for (int c = 0; c < 8; ++c) {
+    for (int e = 0; e < 48; e += PORTS) {  // PORTS words a cycle
 #pragma HLS PIPELINE II=1
-            ab[r * 8 + c] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            const int r = (e + h) / 8, c = (e + h) % 8;
+            ab[e + h] = c < 7 ? T(AB[a0 + r * 7 + c]) : T(0);
         }
     }
 }
@@ -1246,16 +1284,19 @@ bool reduce_1() {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_1(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         finite = accumulate<8, 7, 6>(ab, col) && finite;
-        // load, column map, A^T b a row at a time, the finiteness check, the scatter into G
-        FGC_CYCLES("reduce_1", 0, "load", 48, 1, 2);
+        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
+        // the finiteness check's tree over the columns, the scatter into G
+        FGC_CYCLES("reduce_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_1", 0, "rows", 6, 11, 19);
-        FGC_CYCLES("reduce_1", 0, "check", 2, 11, 11);
-        FGC_CYCLES("reduce_1", 0, "scatter", 6, 11, 13);
+        FGC_CYCLES("reduce_1", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_1", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
+        FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 13);
     }
     return finite;
 }
@@ -1266,12 +1307,13 @@ T noise_1(T noise) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
         load_rows_1(f, ab);
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         noise += rounding_noise<8, 7, 6>(ab, scale);
-        FGC_CYCLES("noise_1", 0, "load", 48, 1, 2);
+        FGC_CYCLES("noise_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
         FGC_CYCLES("noise_1", 0, "rows", 6, 1, 60);
         FGC_CYCLES("noise_1", 0, "terms", 2, 11, 38);
@@ -1344,9 +1386,13 @@ T total_cost(const T x[N_X]) {
     return total;
 }
 
-// ---- state update: retraction x (+) delta, one unit per variable type
+// ---- state update: retraction x (+) delta, one datapath per variable type; the ALLOCATION
+// limits are the plan's operators of unit state_update_<k> (the factor datapaths' limits)
 // kind 0: Pose3
 void retract_0(const T x[12], const T d[6], T out[12]) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=6
     const T r0 = (d[1]*d[1]);
     const T r1 = (d[2]*d[2]);
     const T r2 = r0 + r1;
@@ -1398,7 +1444,8 @@ void retract_0(const T x[12], const T d[6], T out[12]) {
 void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
     FGC_EVENT("retract");
     FGC_PHASE("state_update");
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < 5; ++i) {  // a variable every II=36 cycles (the plan's)
+#pragma HLS PIPELINE II=36
         const int v = KIND0_VARIABLES[i];
         T xv[12], dv[6], ov[12];
         for (int k = 0; k < 12; ++k) xv[k] = x[VAR_X_OFF[v] + k];
@@ -1406,7 +1453,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_0(xv, dv, ov);
         for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 0, "variables", 5, 1, 172);
+    FGC_CYCLES("retract", 0, "variables", 5, 36, 277);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -1451,9 +1498,10 @@ void qr_level(int rows0, int f0, int s0,
     qr_set0(rows0, f0, s0, work0, cond0, update0, bad0);
 }
 
-// Stack step s into a unit set's banks: every entry of its rows, zeros included. Each loop
-// writes a word a cycle (the zeroing all N_UNITS banks of a column at once), counted as the
-// plan's stack_loops price them.
+// Stack step s into a unit set's banks: every entry of its rows, zeros included. The zeroing
+// writes a word of all N_UNITS banks a cycle, the rows PORTS words a cycle (AB's or NF's two
+// ports, into any banks: each bank has two ports too), the damping rows a word a cycle; counted
+// as the plan's stack_loops price them.
 void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
     FGC_PHASE("qr_stack");
     const int w = STEP_W[s], f = STEP_F[s], m = STEP_ROWS[s];
@@ -1481,19 +1529,23 @@ void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
         const int a0 = FACTOR_A_OFF[fac];
         const int words = FACTOR_A_OFF[fac + 1] - a0;  // its rows x (d + 1)
         // row r, column c of its [A | b] into the step's row `row + r`
-        for (int k = 0, r = 0, c = 0; k < words; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=1026
+        for (int k = 0, r = 0, c = 0; k < words; k += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=513
 #pragma HLS PIPELINE II=1
-            const int t = c < d ? FACTOR_COLMAP[cb + c] : w;
-            bank[t % N_UNITS][row + r][t / N_UNITS] = AB[a0 + k];
-            if (c == d) {
-                c = 0;
-                ++r;
-            } else {
-                ++c;
+            for (int h = 0; h < PORTS; ++h) {
+                if (k + h < words) {
+                    const int t = c < d ? FACTOR_COLMAP[cb + c] : w;
+                    bank[t % N_UNITS][row + r][t / N_UNITS] = AB[a0 + k + h];
+                    if (c == d) {
+                        c = 0;
+                        ++r;
+                    } else {
+                        ++c;
+                    }
+                }
             }
         }
-        FGC_CYCLES("stack", 0, "factor_rows", words, 1, 2);
+        FGC_CYCLES("stack", 0, "factor_rows", (words + PORTS - 1) / PORTS, 1, 2);
         row = row + words / (d + 1);
     }
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
@@ -1503,19 +1555,23 @@ void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
         const int mb = STEP_SEPMAP_BEGIN[c];
         const int n0 = STEP_NF_OFF[c];
         const int words = STEP_NF_ROWS[c] * (sc + 1);
-        for (int k = 0, r = 0, q = 0; k < words; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=361
+        for (int k = 0, r = 0, q = 0; k < words; k += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=181
 #pragma HLS PIPELINE II=1
-            const int t = q < sc ? STEP_SEPMAP[mb + q] : w;
-            bank[t % N_UNITS][row + r][t / N_UNITS] = NF[n0 + k];
-            if (q == sc) {
-                q = 0;
-                ++r;
-            } else {
-                ++q;
+            for (int h = 0; h < PORTS; ++h) {
+                if (k + h < words) {
+                    const int t = q < sc ? STEP_SEPMAP[mb + q] : w;
+                    bank[t % N_UNITS][row + r][t / N_UNITS] = NF[n0 + k + h];
+                    if (q == sc) {
+                        q = 0;
+                        ++r;
+                    } else {
+                        ++q;
+                    }
+                }
             }
         }
-        FGC_CYCLES("stack", 0, "child_rows", words, 1, 2);
+        FGC_CYCLES("stack", 0, "child_rows", (words + PORTS - 1) / PORTS, 1, 2);
         row = row + STEP_NF_ROWS[c];
     }
     for (int j = 0; j < f; ++j) {
@@ -1526,24 +1582,29 @@ void stack(int s, T root_mu, L bank[N_UNITS][MAX_ROWS][LOCAL_COLS]) {
     FGC_CYCLES("stack", 0, "damping", f, 1, 1);
 }
 
-// A unit set's result for step s into COND and NF, a word a cycle.
+// A unit set's result for step s into COND and NF, PORTS words a cycle.
 void commit(int s, const L cond[MAX_F * LesConfig::MAX_COLS],
             const L update[LesConfig::MAX_COLS * LesConfig::MAX_COLS]) {
     FGC_PHASE("qr_commit");
     const int w = STEP_W[s], f = STEP_F[s], sw = w - f;
     const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
-    for (int i = 0; i < f * (w + 1); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=342
+    const int nc = f * (w + 1), nu = STEP_NF_ROWS[s] * (sw + 1);
+    for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=171
 #pragma HLS PIPELINE II=1
-        COND[c0 + i] = cond[i];
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nc) COND[c0 + i + h] = cond[i + h];
+        }
     }
-    FGC_CYCLES("commit", 0, "cond", f * (w + 1), 1, 2);
-    for (int i = 0; i < STEP_NF_ROWS[s] * (sw + 1); ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=361
+    FGC_CYCLES("commit", 0, "cond", (nc + PORTS - 1) / PORTS, 1, 2);
+    for (int i = 0; i < nu; i += PORTS) {
+#pragma HLS LOOP_TRIPCOUNT max=181
 #pragma HLS PIPELINE II=1
-        NF[n0 + i] = update[i];
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nu) NF[n0 + i + h] = update[i + h];
+        }
     }
-    FGC_CYCLES("commit", 0, "nf", STEP_NF_ROWS[s] * (sw + 1), 1, 2);
+    FGC_CYCLES("commit", 0, "nf", (nu + PORTS - 1) / PORTS, 1, 2);
 }
 
 // Eliminate every step, level by level: a level's steps are independent, the unit sets take
@@ -1574,37 +1635,72 @@ bool eliminate_all(T mu) {
     return ok;
 }
 
-// Back-substitution root first: per step x_f = R^-1 (d - S x_s) (cond_backsub, fgc_backsub.h).
+// ---- back-substitution: one unit per unit set, each on its own buffers (a level's steps go
+// 1 at a time to the units, side by side in the backsub_level DATAFLOW region)
+const int BS_WORDS = 2;  // words of each unit's step a copy moves an iteration (PORTS shared out)
+L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // unit 0's conditional (R | S | d)
+L BS_XS0[LesConfig::MAX_COLS];  // its separator's solution
+L BS_X0[MAX_F];  // its frontal solution
+
+// Back-substitution unit 0: x = R^-1 (d - S xs) of one step (f = 0: none this time).
+void backsub_set0(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
+                  const L xs[LesConfig::MAX_COLS], L x[MAX_F]) {
+    FGC_BRANCH();  // csim cycle counting only: the units of a level run side by side
+    fgc_units::cond_backsub<LesConfig>(cond, f, s, xs, x);
+}
+
+// One chunk of a level's steps on the 1 back-substitution unit(s) side by side.
+void backsub_level(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
+                   const L xs0[LesConfig::MAX_COLS], L x0[MAX_F]) {
+#pragma HLS DATAFLOW
+    backsub_set0(cond0, f0, s0, xs0, x0);
+}
+
+// Back-substitution root first: per level its steps 1 at a time (LEVEL_STEPS order):
+// their conditionals and separator solutions in side by side (BS_WORDS words of each step an
+// iteration), the backsub_level region, their frontal solutions out into DELTA side by side.
 void back_substitute() {
     FGC_PHASE("backsub");
     for (int l = N_LEVELS - 1; l >= 0; --l) {
-        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; ++i) {
+        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 1) {
 #pragma HLS LOOP_TRIPCOUNT max=2
-            const int s = LEVEL_STEPS[i];
-            const int w = STEP_W[s], f = STEP_F[s];
-            const int cb = STEP_COL_BEGIN[s];
-            const int c0 = STEP_COND_OFF[s];
-            L cond[MAX_F * LesConfig::MAX_COLS];
-            for (int e = 0; e < f * (w + 1); ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=342
+            const bool has0 = i + 0 < LEVEL_BEGIN[l + 1];
+            const int s0 = has0 ? LEVEL_STEPS[i + 0] : 0;
+            const int f0 = has0 ? STEP_F[s0] : 0;
+            const int sep0 = has0 ? STEP_W[s0] - STEP_F[s0] : 0;
+            const int n0 = f0 * (f0 + sep0 + 1);
+            const int c0 = STEP_COND_OFF[s0], cb0 = STEP_COL_BEGIN[s0];
+            int most = 0, most_sep = 0, most_f = 0;
+            most = n0 > most ? n0 : most;
+            most_sep = sep0 > most_sep ? sep0 : most_sep;
+            most_f = f0 > most_f ? f0 : most_f;
+            // BS_WORDS words of each step an iteration: the memories' PORTS ports shared out
+            for (int e = 0; e < most; e += BS_WORDS) {
+#pragma HLS LOOP_TRIPCOUNT max=171
 #pragma HLS PIPELINE II=1
-                cond[e] = COND[c0 + e];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (e + h < n0) BS_COND0[e + h] = COND[c0 + e + h];
+                }
             }
-            FGC_CYCLES("backsub_copy", 0, "cond_in", f * (w + 1), 1, 2);
-            L xs[LesConfig::MAX_COLS], x[MAX_F];
-            for (int a = 0; a < w - f; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=18
+            FGC_CYCLES("backsub_copy", 0, "cond_in", (most + BS_WORDS - 1) / BS_WORDS, 1, 2);
+            for (int a = 0; a < most_sep; a += BS_WORDS) {
+#pragma HLS LOOP_TRIPCOUNT max=9
 #pragma HLS PIPELINE II=1
-                xs[a] = DELTA[STEP_COL[cb + f + a]];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (a + h < sep0) BS_XS0[a + h] = DELTA[STEP_COL[cb0 + f0 + a + h]];
+                }
             }
-            FGC_CYCLES("backsub_copy", 0, "separator_in", w - f, 1, 2);
-            fgc_units::cond_backsub<LesConfig>(cond, f, w - f, xs, x);
-            for (int c = 0; c < f; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=18
+            FGC_CYCLES("backsub_copy", 0, "separator_in", (most_sep + BS_WORDS - 1) / BS_WORDS, 1, 2);
+            backsub_level(BS_COND0, f0, sep0, BS_XS0, BS_X0);
+            FGC_JOIN();
+            for (int c = 0; c < most_f; c += BS_WORDS) {
+#pragma HLS LOOP_TRIPCOUNT max=9
 #pragma HLS PIPELINE II=1
-                DELTA[STEP_COL[cb + c]] = x[c];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (c + h < f0) DELTA[STEP_COL[cb0 + c + h]] = BS_X0[c + h];
+                }
             }
-            FGC_CYCLES("backsub_copy", 0, "solution_out", f, 1, 2);
+            FGC_CYCLES("backsub_copy", 0, "solution_out", (most_f + BS_WORDS - 1) / BS_WORDS, 1, 2);
         }
     }
 }
