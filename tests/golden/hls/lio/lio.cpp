@@ -9,8 +9,9 @@
 //
 // The elimination's process network (from the plan; every DATAFLOW region of the units is one of
 // these; back_substitute's backsub_level region runs one cond_backsub per unit set side by side):
-//   14 processes, 26 streams (n_u=4, 2 unit set(s))
+//   16 processes, 34 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
+//   process qr0_finish
 //   process qr0_update0
 //   process qr0_update1
 //   process qr0_update2
@@ -18,6 +19,7 @@
 //   process qr0_evaluate
 //   process qr0_collect
 //   process qr1_broadcast
+//   process qr1_finish
 //   process qr1_update0
 //   process qr1_update1
 //   process qr1_update2
@@ -28,7 +30,11 @@
 //   stream qr0_v1 depth=22: qr0_broadcast -> qr0_update1
 //   stream qr0_v2 depth=22: qr0_broadcast -> qr0_update2
 //   stream qr0_v3 depth=22: qr0_broadcast -> qr0_update3
-//   stream qr0_h depth=2: qr0_broadcast -> qr0_collect
+//   stream qr0_t0 depth=3: qr0_finish -> qr0_update0
+//   stream qr0_t1 depth=3: qr0_finish -> qr0_update1
+//   stream qr0_t2 depth=3: qr0_finish -> qr0_update2
+//   stream qr0_t3 depth=3: qr0_finish -> qr0_update3
+//   stream qr0_r depth=1: qr0_finish -> qr0_collect
 //   stream qr0_col0 depth=87: qr0_update0 -> qr0_evaluate
 //   stream qr0_row0 depth=2: qr0_update0 -> qr0_collect
 //   stream qr0_col1 depth=87: qr0_update1 -> qr0_evaluate
@@ -41,7 +47,11 @@
 //   stream qr1_v1 depth=22: qr1_broadcast -> qr1_update1
 //   stream qr1_v2 depth=22: qr1_broadcast -> qr1_update2
 //   stream qr1_v3 depth=22: qr1_broadcast -> qr1_update3
-//   stream qr1_h depth=2: qr1_broadcast -> qr1_collect
+//   stream qr1_t0 depth=3: qr1_finish -> qr1_update0
+//   stream qr1_t1 depth=3: qr1_finish -> qr1_update1
+//   stream qr1_t2 depth=3: qr1_finish -> qr1_update2
+//   stream qr1_t3 depth=3: qr1_finish -> qr1_update3
+//   stream qr1_r depth=1: qr1_finish -> qr1_collect
 //   stream qr1_col0 depth=87: qr1_update0 -> qr1_evaluate
 //   stream qr1_row0 depth=2: qr1_update0 -> qr1_collect
 //   stream qr1_col1 depth=87: qr1_update1 -> qr1_evaluate
@@ -3423,8 +3433,8 @@ struct LesConfig {
 
 // ---- partial QR (paper A): per step the stacked rows [A | b] of its factors, its children's new
 // factors and the damping rows sqrt(mu) I, column c in bank c % N_UNITS of its unit set's work
-// memory; qr_step runs one DATAFLOW region per reflection (qr_broadcast -> 4 qr_update units ->
-// qr_evaluate, 8 streams) and stores the conditional and the new factor. A schedule
+// memory; qr_step runs one DATAFLOW region per reflection (qr_broadcast, qr_finish -> 4 qr_update
+// units -> qr_evaluate, qr_collect; 17 streams) and stores the conditional and the new factor. A schedule
 // level's steps go 2 at a time to the unit sets, side by side in one DATAFLOW region.
 L WORK0[N_UNITS][MAX_ROWS][LOCAL_COLS];  // unit set 0's banks (partitioned in qr_set0)
 L CONDBUF0[MAX_F * LesConfig::MAX_COLS];  // its step's conditional
