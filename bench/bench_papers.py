@@ -184,13 +184,18 @@ def paper_a(cfg: Config) -> list[Row]:
                     f"{two_opts['jacobian_storage']} Jacobians; best of {tried} designs)",
                     f"limited by {_dominant(two)} of the cycles ({levels} sequential QR levels"
                     f" × ~{qr_cycles // max(levels, 1):,} cycles; a step is {refl[0]} "
-                    f"Householder reflections one after another, ~{refl[1]:.0f} cycles each, "
-                    f"{dot_depth} of them the depth of the column dot product - multiply + "
-                    "adder tree at the documented add latency 11 - and the rest the column "
-                    "stream): with n_u ≥ the columns more Update units cannot shorten that "
-                    "chain; paper A's QR block takes a few hundred cycles a step, which needs "
-                    "reflections that overlap (the next Evaluate starting on the first updated "
-                    "column), a design the plan does not contain"))
+                    f"Householder reflections, one DATAFLOW region each, ~{refl[1]:.0f} cycles "
+                    f"each, {dot_depth} of them the depth of one dot product - multiply + "
+                    "adder tree at the documented add latency 11 - and the rest the batched "
+                    "Updates' fold / scale and update pipelines and the column stream): within "
+                    "a reflection the design overlaps what it can (the next pivot column is "
+                    "updated and streamed to the Evaluate first; qr_finish's square root and "
+                    "divide run under the next region's broadcast), but region j + 1 starts "
+                    "only when region j has drained, so with n_u ≥ the columns more Update "
+                    "units cannot shorten that chain; paper A's few hundred cycles a step "
+                    "would need reflections pipelined into each other (a column taking "
+                    "reflection j + 1 while others still take j), a design the plan does not "
+                    "contain"))
     rows.append(Row(a, "parallel (two-ended) resources", "473 DSP / 163 BRAM36 / 184,990 LUT / "
                     "211,895 FF", _res(two) + " (best design)",
                     "operator DSP/LUT/FF are assumed (operators.py); the factor datapaths are "

@@ -39,46 +39,54 @@
 // ---- arithmetic (the kernel's householder(), kernel.cpp.jinja) --------------------------------
 //
 // For column j = 0 ... k - 1, over the rows i >= j whose entry in column j is non-zero plus the
-// pivot row j (the active rows): the column is divided by its largest magnitude big (|v| <= 1, so
-// v.v neither underflows nor overflows), norm2 = v.v (PARTIALS interleaved partial sums, folded in
-// a binary tree), alpha = -sign(v_0) sqrt(norm2), v_0 -= alpha, tau = 1 / (norm2 - alpha v_0_old);
-// every column c > j gets x -= (tau v.x) v over the active rows; R_jj = alpha big and the active
-// rows below it become 0. A column whose active entries are all 0 is skipped; with one active row
-// (the pivot) the reflection is the pivot row's negation, exactly, and is taken as that. The sums
-// are in a different order than the kernel's (interleaved partial sums instead of one chain per
-// column), so the results equal the kernel's to rounding (~1e-15 relative in double), not bit for
-// bit.
+// pivot row j (the active rows): norm2 = x.x summed as the column arrives (PARTIALS interleaved
+// partial sums, folded in a binary tree; no scaling by the largest magnitude, so in float32 it
+// overflows for entries beyond ~1e19, and a column of entries below ~1e-19, whose squares
+// underflow to 0, is skipped as zero: a documented limit), alpha =
+// -sign(x_0) sqrt(norm2), v_0 = x_0 - alpha, v_a = x_a below the pivot, tau = 1 / (norm2 - alpha
+// x_0) (= 2 / v.v, without a second sum); every column c > j gets x -= (tau v.x) v over the active
+// rows; R_jj = alpha and the active rows below it become 0. A column whose active entries are all
+// 0 is skipped; with one active row (the pivot) the reflection is the pivot row's negation,
+// exactly, and is taken as that. The sums are in a different order than the kernel's
+// (interleaved partial sums instead of one chain per column), so the results equal the kernel's
+// to rounding (~1e-15 relative in double), not bit for bit.
 //
 // ---- structure (UG1399 canonical dataflow) -------------------------------------------------
 //
 // A reflection's next pivot column depends on its Update, so the reflections are a sequential
-// loop in qr_step, one DATAFLOW region (qr_reflection) each, j = -1 ... k - 1. The Householder
-// vector goes from one region to the next through two buffers, va and vb, alternating with the
-// parity of j: region j reads one (vin) and writes the other (vout), region j + 1 the other way
-// round, so within a region each buffer is only read or only written. Region j:
+// loop in qr_step, one DATAFLOW region (qr_reflection) each, j = -1 ... k - 1. What goes from
+// one region to the next, column j's vector below the pivot (v) and its squared norm with its
+// pivot (h), does so through two buffer pairs, va / ha and vb / hb, alternating with the parity
+// of j: region j reads one pair (vin, hin) and writes the other (vout, hout), region j + 1 the
+// other way round, so within a region each buffer is only read or only written. Region j:
 //
-//   qr_broadcast      reads the Householder vector of column j (vin, written by region j - 1's
-//                     Evaluate) and streams it to each Update unit (vq[u]), its header (R_jj) to
-//                     the collector (hq);
+//   qr_broadcast      streams the words of column j's vector below the pivot (vin) to each
+//                     Update unit (vq[u]);
+//   qr_finish         meanwhile turns hin ({norm2, n}, {x_0, j}) into v_0, tau and R_jj (the
+//                     square root and the divide, the Evaluate's tail, overlapped with the
+//                     broadcast) and streams them to each Update unit (tq[u]), R_jj also to the
+//                     collector (rq);
 //   qr_update<u>      u = 0 ... N_UNITS - 1 (one process each, through qr_update_units): applies
-//                     reflection j to its own columns c > j, c % N_UNITS == u, in ascending order,
-//                     in its own bank work[u] (read and written by that process only: its
-//                     memory, no channel); each column's entry in row j, final now, goes to the
-//                     collector (rowq[u]); the unit holding column j + 1 updates it first and
-//                     streams it (rows j + 1 ... rows - 1) to the Evaluate (colq[u]) in the same
-//                     pass; each unit takes its first column's dot product while the vector
-//                     arrives;
-//   qr_evaluate       builds the Householder vector of column j + 1 from that stream while the
-//                     other columns are still being updated, and writes it to vout;
+//                     reflection j to its own columns c > j, c % N_UNITS == u, in its own bank
+//                     work[u] (read and written by that process only: its memory, no channel).
+//                     The unit holding column j + 1 takes that column's dot product while the
+//                     vector arrives, updates it and streams it (rows j + 1 ... rows - 1) to the
+//                     Evaluate (colq[u]) first; its other columns are batched: every column's
+//                     dot product, then every fold and scale by tau, then every column's update,
+//                     three pipelined loops that each pay their depth once per reflection. Each
+//                     column's entry in row j, final now, goes to the collector (rowq[u]);
+//   qr_evaluate       takes column j + 1 from that stream as it arrives: its words below the
+//                     pivot into vout, its squared norm and pivot into hout (the next region's
+//                     qr_finish does the rest);
 //   qr_collect        writes row j of R (zeros, R_jj, then the units' entries in column order)
 //                     into cond or update and keeps the running scale (its own memory).
 //
 // Each stream has one writer and one later reader, no process returns a value, no channel goes
-// back; vin is only read (by the broadcast), vout only written (by the Evaluate); cond, update
-// and the scale have one writer (the collector). Region -1 only streams column 0 to the Evaluate
-// (an empty reflection); region k - 1 only applies the last reflection. After the loop qr_step
-// checks the f pivots against the scale (sequential) and writes *singular: no pass over the
-// factor after the reflections.
+// back; vin / hin are only read (by the broadcast / qr_finish), vout / hout only written (by the
+// Evaluate); cond, update and the scale have one writer (the collector). Region -1 only streams
+// column 0 to the Evaluate (an empty reflection); region k - 1 only applies the last
+// reflection. After the loop qr_step checks the f pivots against the scale (sequential) and
+// writes *singular: no pass over the factor after the reflections.
 //
 // ---- cycles -------------------------------------------------------------------------------
 //
@@ -98,8 +106,9 @@
 
 namespace fgc_units {
 
-// One word of a Householder vector on its way to the Update units: the first word of a vector is
-// {tau, n} (n active rows; n == 0: no reflection), the second {R_jj, j}, then n words {v_a, row}.
+// One word of a Householder vector on its way to the Update units: from the broadcast the header
+// {0, n} (n active rows; n == 0: no reflection), then n - 1 words {v_a, row} below the pivot;
+// from qr_finish {v_0, j}, {tau, n}, {R_jj, j}.
 template <class T>
 struct qr_word {
     T val;
