@@ -233,3 +233,33 @@ def test_the_plan_prices_the_scalar_the_hls_config_emits(linear):
     assert plan_cost(same) == plan_cost(build_plan(program, PlanOptions.for_config(
         HlsConfig(scalar="double"), program)))
     assert plan_cost(same).cycles == plan_cost(as_program).cycles
+
+
+def test_allocation_follows_the_instances():
+    """A block type's datapath gets ⌈limit × instances / most instances⌉ of each operator
+    (PlanOptions.allocation_scaling "instances"): imu_window N = 50's once-evaluated priors no
+    longer hold the IMU datapath's 24 multipliers, which is what lets #CPE = 80 fit the
+    xc7z045's 900 DSP; a one-instance datapath's depth is at least its operators' issue time,
+    and the priced cycles stay those of the uniform allocation here."""
+    from fgc.app.specs import example
+
+    program = compile_graph(example("imu_window").build(N=50),
+                            SolverConfig(linear="cholesky", cpe=80, precision="float32"))
+    scaled = build_plan(program)
+    uniform = build_plan(program, PlanOptions.of(program, allocation_scaling="uniform"))
+    imu = next(i for i, b in enumerate(program.blocks) if b.name.startswith("CombinedImu"))
+    prior = next(i for i, b in enumerate(program.blocks) if b.name == "PriorFactorPose3")
+    assert dict(scaled.unit(f"factor_{imu}").operators) == dict(
+        uniform.unit(f"factor_{imu}").operators)
+    assert dict(scaled.unit(f"factor_{prior}").operators)["mul"] == 1  # ⌈24 × 1 / 49⌉
+    a, b = plan_cost(scaled), plan_cost(uniform)
+    assert a.fits and a.dsp <= PART_DSP and not b.fits and "DSP" in b.over
+    assert a.cycles == b.cycles
+    for phase in scaled.phases:
+        for proc in phase.processes:
+            if proc.name == f"factor_{prior}_jacobian":
+                loop, = proc.loops
+                ops = program.blocks[prior].ops_after
+                assert loop.depth >= ops["mul"] and loop.ii >= ops["mul"]
+    with pytest.raises(PlanError, match="allocation_scaling"):
+        build_plan(program, PlanOptions.of(program, allocation_scaling="even"))

@@ -55,6 +55,7 @@ DEFAULT_ALLOCATION = (("add", 16), ("mul", 24), ("div", 4), ("sqrt", 2), ("trig"
 STATE_ALLOCATION = (("add", 4), ("mul", 6), ("div", 1), ("sqrt", 1), ("trig", 2), ("special", 1))
 
 
+ALLOCATION_SCALING = ("instances", "uniform")
 JACOBIAN_STORAGE = ("whitened", "raw")
 HESSIAN_STORAGE = ("frontal", "dense", "blocked")
 
@@ -69,6 +70,13 @@ class PlanOptions:
     cpe: int = 20  # Cholesky process elements
     unit_sets: int | None = None  # QR unit sets: None = 2 for two-ended chains, else 1
     allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
+    # how a block type's datapath gets its share of ``allocation``: "instances" (default): in
+    # proportion to its instances against the most numerous block type's, ⌈limit × n / n_max⌉
+    # and at least 1 (a prior evaluated once a linearisation does not get the IMU datapath's
+    # operators: the factor_jacobian phase runs the types one after another, so a type's
+    # loop takes n × II either way, and the DSP go where the instances are); "uniform": every
+    # type gets the whole limit (capped by its own operation counts in both rules)
+    allocation_scaling: str = "instances"
     state_allocation: tuple[tuple[str, int], ...] = STATE_ALLOCATION  # retract_<k>'s limits
     hgc_lanes: int = 16  # multiply-accumulate lanes of the Hessian/gradient unit
     # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
@@ -659,7 +667,8 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
         if int(getattr(opts, name)) < 1:
             raise PlanError(f"plan option {name} must be ≥ 1, got {getattr(opts, name)}")
     for name, allowed in (("jacobian_storage", JACOBIAN_STORAGE),
-                          ("hessian_storage", HESSIAN_STORAGE)):
+                          ("hessian_storage", HESSIAN_STORAGE),
+                          ("allocation_scaling", ALLOCATION_SCALING)):
         if getattr(opts, name) not in allowed:
             raise PlanError(f"plan option {name} must be one of {', '.join(allowed)}, "
                             f"got {getattr(opts, name)!r}")
@@ -678,20 +687,27 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     # factor datapath: one per block type, shared by the Jacobian and the cost mode
     jac, cost = [], []
     whiten_macs = 0
+    n_of = [sum(1 for f in program.factors if f.block == i) for i in range(len(program.blocks))]
+    most = max(n_of, default=1)
     for i, b in enumerate(program.blocks):
         name = f"factor_{i}"
+        instances = n_of[i]
         used = {k: max(b.ops_after.get(k, 0), b.ops_cost.get(k, 0)) for k in alloc}
-        allocated = tuple((k, min(alloc[k], n)) for k, n in used.items() if n > 0)
+        share = {k: alloc[k] if opts.allocation_scaling == "uniform"
+                 else max(1, math.ceil(alloc[k] * instances / most)) for k in alloc}
+        allocated = tuple((k, min(share[k], n)) for k, n in used.items() if n > 0)
         units.append(Unit(name, f"factor datapath of block {b.name!r} (both modes)", 1,
                           allocated))
-        instances = sum(1 for f in program.factors if f.block == i)
         for mode, counts, text, out in (("jacobian", b.ops_after, b.kernel, jac),
                                         ("cost", b.ops_cost, b.cost_kernel, cost)):
-            ii = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
-                            for k, n in allocated])
+            issue = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
+                               for k, n in allocated])
+            ii = issue
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
                 ii = max(ii, ops.add.latency)  # simulator's): a recurrence through the adder
-            depth = critical_path(text, sim_ops)
+            # one evaluation ends no earlier than its critical path, nor before the allocated
+            # operators have issued all its operations (a lower bound of the schedule's depth)
+            depth = max(critical_path(text, sim_ops), issue)
             out.append(Process(f"{name}_{mode}", name,
                                (Loop(f"{name}_{mode}_instances", instances, ii, depth),)))
         if opts.jacobian_storage == "raw":

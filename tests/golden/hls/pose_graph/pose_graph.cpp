@@ -715,9 +715,9 @@ void factor_0(int mode, const T in[24], const T dat[13],
 void factor_1(int mode, const T in[12], const T dat[13],
               T raw[48], T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     if (mode == 0) {
         const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
         const T t1 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
@@ -1249,10 +1249,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=36 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=103 cycles (the plan's)
 void evaluate_1(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=36
+#pragma HLS PIPELINE II=103
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13], half[1];
         gather_1(x, f, in, dat);
@@ -1267,7 +1267,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 36, 581);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 581);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -1326,10 +1326,10 @@ T noise_1(T noise) {
     return noise;
 }
 
-// block 1, cost mode: `total` plus the cost of its instances in order, one every II=24 cycles
+// block 1, cost mode: `total` plus the cost of its instances in order, one every II=48 cycles
 T cost_of_1(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=24
+#pragma HLS PIPELINE II=48
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13], half[1];
         T unused[48];
@@ -1339,7 +1339,7 @@ T cost_of_1(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         total += cost;
     }
-    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 24, 475);
+    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 48, 475);
     return total;
 }
 
