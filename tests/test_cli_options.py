@@ -127,6 +127,18 @@ def test_emit_rejects_two_clocks(tmp_path):
       "--precision", "float32"], "--scalar double contradicts --precision float32"),
     (["compile", BEACONS, "--out", "x", "--scalar", "float"],
      "--scalar applies to --backend hls or native only"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--allocation", "mul=0"],
+     "'mul=0': expected KIND=N"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--allocation", "fma=4"],
+     "'fma=4': expected KIND=N with KIND one of add, mul"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--allocation", "mul=4,mul=8"],
+     "mul is given twice"),
+    (["compile", BEACONS, "--out", "x", "--allocation", "mul=4"],
+     "--allocation applies to --backend hls only (not sim)"),
+    (["compile", BEACONS, "--backend", "native", "--out", "x", "--unit-sets", "2"],
+     "--unit-sets applies to --backend hls only (not native)"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--unit-sets", "9"],
+     "unit_sets must be 1 … 8"),
 ])
 def test_bad_hardware_options_exit_2_with_one_line(argv, needle, capsys, tmp_path,
                                                    monkeypatch):
@@ -219,3 +231,34 @@ def test_one_call_native_follows_the_program_clock():
     native = fgc.solve(graph, backend="native", clock_mhz=200.0)
     assert native.status == "converged"
     assert native.final_error == pytest.approx(sim.final_error, rel=1e-9)
+
+
+def test_allocation_and_unit_sets_shape_the_emitted_design(tmp_path):
+    """--allocation sets the heaviest block type's ALLOCATION limits (the others get their
+    instance share, kinds not named keep the defaults) and --unit-sets the QR unit sets; the
+    emitted pragmas and processes are the plan's for that HlsConfig."""
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import hls
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import allocations
+
+    lio = str(ROOT / "examples" / "lio.py")
+    out = tmp_path / "lio"
+    assert main(["compile", lio, "-p", "N=5", "--backend", "hls", "--out", str(out),
+                 "--units", "2", "--unit-sets", "1", "--allocation", "mul=48,add=32",
+                 "-q"]) == 0
+    kernel = (out / "lio.cpp").read_text()
+    found = allocations(kernel)
+    program = compile_graph(example("lio").build(N=5), SolverConfig(units=2), name="lio")
+    config = hls.HlsConfig(allocation=(("mul", 48), ("add", 32)), unit_sets=1)
+    plan = accel_plan(program, config)
+    heavy = max(range(len(program.blocks)), key=lambda i: sum(
+        program.blocks[i].ops_after.values()) * sum(f.block == i for f in program.factors))
+    limits = dict(plan.unit(f"factor_{heavy}").operators)
+    assert limits["mul"] == 48 and limits["add"] == 32 and limits["div"] == 4  # div: default
+    assert ("operation", "fmul", 48) in found[f"factor_{heavy}"]
+    assert "qr0_update1" in kernel and "qr1_" not in kernel  # one unit set, n_u = 2
+    two = accel_plan(program, hls.HlsConfig())
+    assert dict(two.unit(f"factor_{heavy}").operators)["mul"] == 24

@@ -45,6 +45,11 @@ class HlsConfig(scalars.ScalarTypes):
       ``fgc ... --clock`` sets both.
     - ``unit_sets``: QR/Cholesky unit sets that eliminate the steps of one level side by side;
       ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
+    - ``allocation``: the factor datapaths' ALLOCATION limits per operator kind (``add``,
+      ``mul``, ``div``, ``sqrt``, ``trig``, ``special``), as ``((kind, limit), …)``; kinds not
+      named keep the plan's default (``fgc_backends.hls.plan.DEFAULT_ALLOCATION``), which is
+      what ``None`` means. The plan shares each limit out over the block types by instance
+      count (``PlanOptions.allocation_scaling``). ``fgc compile --allocation mul=48,add=32``.
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
       widest elimination step this backend accepts; larger Programs fail at emit time.
     - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation (portable: they
@@ -58,6 +63,7 @@ class HlsConfig(scalars.ScalarTypes):
     part: str = "xc7z045ffg900-2"
     clock_ns: float = 7.0
     unit_sets: int | None = None
+    allocation: tuple[tuple[str, int], ...] | None = None
     max_variables: int = 8192
     max_step_columns: int = 512
     cxx: str = "g++"
@@ -90,6 +96,21 @@ class HlsConfig(scalars.ScalarTypes):
             raise HlsConfigError(f"clock period {self.clock_ns} ns is outside 0.5 … 1000 ns")
         if self.unit_sets is not None and not 1 <= int(self.unit_sets) <= 8:
             raise HlsConfigError(f"unit_sets must be 1 … 8, got {self.unit_sets}")
+        if self.allocation is not None:
+            from fgc_backends.hls.plan import DEFAULT_ALLOCATION
+
+            kinds = dict(DEFAULT_ALLOCATION)
+            for item in self.allocation:
+                if not (isinstance(item, tuple) and len(item) == 2 and item[0] in kinds
+                        and isinstance(item[1], int) and not isinstance(item[1], bool)):
+                    raise HlsConfigError(f"allocation entry {item!r}: expected (kind, limit) "
+                                         f"with kind one of {', '.join(kinds)}")
+                if not 1 <= item[1] <= 4096:
+                    raise HlsConfigError(f"allocation limit of {item[0]} must be 1 … 4096, got "
+                                         f"{item[1]}")
+            names = [k for k, _ in self.allocation]
+            if len(set(names)) != len(names):
+                raise HlsConfigError(f"allocation names a kind twice: {names}")
         for name in ("max_variables", "max_step_columns"):
             if int(getattr(self, name)) < 1:
                 raise HlsConfigError(f"{name} must be ≥ 1, got {getattr(self, name)}")

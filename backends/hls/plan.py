@@ -70,12 +70,13 @@ class PlanOptions:
     cpe: int = 20  # Cholesky process elements
     unit_sets: int | None = None  # QR unit sets: None = 2 for two-ended chains, else 1
     allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
-    # how a block type's datapath gets its share of ``allocation``: "instances" (default): in
-    # proportion to its instances against the most numerous block type's, ⌈limit × n / n_max⌉
-    # and at least 1 (a prior evaluated once a linearisation does not get the IMU datapath's
-    # operators: the factor_jacobian phase runs the types one after another, so a type's
-    # loop takes n × II either way, and the DSP go where the instances are); "uniform": every
-    # type gets the whole limit (capped by its own operation counts in both rules)
+    # how a block type's datapath gets its share of ``allocation``: "instances" (default): the
+    # heaviest type (most operations × instances) gets the limits, every other type
+    # ⌈limit × min(1, n / n_heaviest)⌉ (at least 1) for its n instances, so a prior evaluated
+    # once a linearisation does not hold the IMU datapath's operators (the factor_jacobian
+    # phase runs the types one after another: a type's loop takes n × II, which grows by the
+    # same factor its operators shrink only for the few-instance types); "uniform": every type
+    # gets the whole limit (capped by its own operation counts in both rules)
     allocation_scaling: str = "instances"
     state_allocation: tuple[tuple[str, int], ...] = STATE_ALLOCATION  # retract_<k>'s limits
     hgc_lanes: int = 16  # multiply-accumulate lanes of the Hessian/gradient unit
@@ -113,6 +114,9 @@ class PlanOptions:
         float32 operators."""
         base = dict(unit_sets=config.unit_sets, precision=scalar_precision(config.scalar_cxx),
                     les_precision=scalar_precision(config.linear_cxx), part=config.part)
+        if getattr(config, "allocation", None):  # the config's limits over the defaults
+            base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
+                                        **dict(config.allocation)}.items())
         base.update(changes)
         return cls.of(program, **base)
 
@@ -688,13 +692,15 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     jac, cost = [], []
     whiten_macs = 0
     n_of = [sum(1 for f in program.factors if f.block == i) for i in range(len(program.blocks))]
-    most = max(n_of, default=1)
+    work = [n * sum(b.ops_after.values()) for n, b in zip(n_of, program.blocks, strict=True)]
+    heaviest = n_of[max(range(len(work)), key=work.__getitem__)] if work else 1
     for i, b in enumerate(program.blocks):
         name = f"factor_{i}"
         instances = n_of[i]
         used = {k: max(b.ops_after.get(k, 0), b.ops_cost.get(k, 0)) for k in alloc}
         share = {k: alloc[k] if opts.allocation_scaling == "uniform"
-                 else max(1, math.ceil(alloc[k] * instances / most)) for k in alloc}
+                 else max(1, math.ceil(alloc[k] * min(1.0, instances / heaviest)))
+                 for k in alloc}
         allocated = tuple((k, min(share[k], n)) for k, n in used.items() if n > 0)
         units.append(Unit(name, f"factor datapath of block {b.name!r} (both modes)", 1,
                           allocated))

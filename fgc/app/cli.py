@@ -125,7 +125,19 @@ def _hls_config(args, program):
         options["part"] = args.part
     if getattr(args, "clock", None):
         options["clock_ns"] = args.clock[1]
+    if getattr(args, "allocation", None):
+        options["allocation"] = args.allocation
+    if getattr(args, "unit_sets", None):
+        options["unit_sets"] = args.unit_sets
     return hls.HlsConfig(**options)
+
+
+def _refuse_hls_design(args, backend: str) -> None:
+    """--allocation and --unit-sets shape the HLS design: other backends have no such thing."""
+    for flag in ("allocation", "unit_sets"):
+        if getattr(args, flag, None):
+            raise UsageError(f"fgc {args.command}: --{flag.replace('_', '-')} applies to "
+                             f"--backend hls only (not {backend})")
 
 
 def _native_config(args, program):
@@ -134,6 +146,7 @@ def _native_config(args, program):
     if getattr(args, "part", None):
         raise UsageError(f"fgc {args.command}: --part applies to fgc compile --backend hls only "
                          "(the native backend builds a CPU program)")
+    _refuse_hls_design(args, "native")
     native = _backend("native")
     return native.NativeConfig(scalar=getattr(args, "scalar", None) or _c_scalar(program))
 
@@ -347,6 +360,7 @@ def _cmd_compile(args) -> int:
             if getattr(args, "scalar", None) or getattr(args, "part", None):
                 raise UsageError("fgc compile: --scalar applies to --backend hls or native "
                                  "only, --part to --backend hls only")
+            _refuse_hls_design(args, args.backend)
             files = backend.emit(program, out)
     except OSError as exc:
         raise FgcError(f"--out {out}: cannot write the project: "
@@ -412,6 +426,7 @@ def _cmd_run(args) -> int:
         if getattr(args, "scalar", None) or getattr(args, "part", None):
             raise UsageError("fgc run: --scalar applies to --backend native or hls, --part to "
                              "--backend hls; the simulator runs float32 or float64 (--precision)")
+        _refuse_hls_design(args, "sim")
         result = _backend("sim").run(program, data)
     status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
@@ -822,6 +837,22 @@ def _scalar(text: str) -> str:
         raise argparse.ArgumentTypeError(str(exc)) from None
 
 
+def _allocation(text: str) -> tuple[tuple[str, int], ...]:
+    from fgc_backends.hls.plan import DEFAULT_ALLOCATION
+
+    kinds, out = dict(DEFAULT_ALLOCATION), {}
+    for item in text.split(","):
+        kind, sep, value = item.strip().partition("=")
+        if not sep or kind not in kinds or not value.strip().isdigit() or int(value) < 1:
+            raise argparse.ArgumentTypeError(
+                f"{item.strip()!r}: expected KIND=N with KIND one of {', '.join(kinds)} and N a "
+                "whole number ≥ 1")
+        if kind in out:
+            raise argparse.ArgumentTypeError(f"{kind} is given twice")
+        out[kind] = int(value)
+    return tuple(out.items())
+
+
 def _part(text: str) -> str:
     if not re.fullmatch(r"[A-Za-z0-9_-]{1,64}", text):
         raise argparse.ArgumentTypeError(f"FPGA part {text!r} is not a plain part name "
@@ -856,6 +887,14 @@ def _hardware_args(p: argparse.ArgumentParser, name: str) -> None:
                        help="C++ scalar of the HLS accelerator or native solver: float, double or "
                             "ap_fixed<W,I> (2 ≤ W ≤ 1024, 1 ≤ I ≤ W; needs fgc[hls-fixed]) "
                             "(default: from --precision)")
+        h.add_argument("--allocation", type=_allocation, metavar="KIND=N,…",
+                       help="--backend hls: the factor datapaths' ALLOCATION limits, e.g. "
+                            "mul=48,add=32 (kinds add, mul, div, sqrt, trig, special; the others "
+                            "keep the defaults add 16, mul 24, div 4, sqrt 2, trig 2, special 2); "
+                            "each block type gets a share by its instance count")
+        h.add_argument("--unit-sets", type=_positive_int, metavar="S",
+                       help="--backend hls: unit sets eliminating a level's steps side by side, "
+                            "1 … 8 (default: 2 on a two-ended chain, else 1)")
 
 
 def _spec_args(p: argparse.ArgumentParser, json_help: str | None) -> None:
