@@ -272,8 +272,8 @@ inline T fgc_sign(T x) { return x > T(0) ? T(1) : x < T(0) ? T(-1) : T(0); }
 void factor_0(int mode, const T in[12], const T dat[18],
               T raw[48], T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=2
-#pragma HLS ALLOCATION operation instances=fmul limit=3
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=4
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     if (mode == 0) {
         const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
@@ -565,8 +565,8 @@ void factor_0(int mode, const T in[12], const T dat[18],
 void factor_1(int mode, const T in[3], const T dat[4],
               T raw[12], T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=2
-#pragma HLS ALLOCATION operation instances=fmul limit=3
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=4
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     if (mode == 0) {
         raw[0] = T(1);
@@ -589,8 +589,8 @@ void factor_1(int mode, const T in[3], const T dat[4],
 void factor_2(int mode, const T in[6], const T dat[7],
               T raw[48], T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=2
-#pragma HLS ALLOCATION operation instances=fmul limit=3
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=4
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     if (mode == 0) {
         raw[0] = T(1);
@@ -622,8 +622,8 @@ void factor_2(int mode, const T in[6], const T dat[7],
 void factor_3(int mode, const T in[42], const T dat[211],
               T raw[672], T half[2]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=14
-#pragma HLS ALLOCATION operation instances=fmul limit=21
+#pragma HLS ALLOCATION operation instances=fadd limit=16
+#pragma HLS ALLOCATION operation instances=fmul limit=24
 #pragma HLS ALLOCATION operation instances=fdiv limit=4
     if (mode == 0) {
         const T t0 = in[30] - dat[63];
@@ -2484,10 +2484,10 @@ void gather_0(const T x[N_X], int f, T in[12], T dat[18]) {
 }
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=137 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=103 cycles (the plan's)
 void evaluate_0(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=137
+#pragma HLS PIPELINE II=103
         const int f = BLOCK0_INSTANCES[i];
         T in[12], dat[18], half[1];
         gather_0(x, f, in, dat);
@@ -2502,7 +2502,7 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 137, 581);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 103, 581);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -2588,10 +2588,10 @@ void gather_1(const T x[N_X], int f, T in[3], T dat[4]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 6 structural non-zeros of
-// 3 x 4), whitening, into AB; one instance every II=2 cycles (the plan's)
+// 3 x 4), whitening, into AB; one instance every II=1 cycles (the plan's)
 void evaluate_1(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=2
+#pragma HLS PIPELINE II=1
         const int f = BLOCK1_INSTANCES[i];
         T in[3], dat[4], half[1];
         gather_1(x, f, in, dat);
@@ -2606,7 +2606,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 2, 11);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 1, 11);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
@@ -2692,10 +2692,10 @@ void gather_2(const T x[N_X], int f, T in[6], T dat[7]) {
 }
 
 // block 2, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=3 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=2 cycles (the plan's)
 void evaluate_2(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=3
+#pragma HLS PIPELINE II=2
         const int f = BLOCK2_INSTANCES[i];
         T in[6], dat[7], half[1];
         gather_2(x, f, in, dat);
@@ -2710,7 +2710,7 @@ void evaluate_2(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 3, 11);
+    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 2, 11);
 }
 
 // block 2's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -3033,10 +3033,10 @@ void whiten_tail_3_0(const T raw[], T ab[], const T p[]) {
 }
 
 // block 3, Jacobian mode: per instance residual + Jacobian (its 240 structural non-zeros of
-// 21 x 31), whitening, into AB; one instance every II=164 cycles (the plan's)
+// 21 x 31), whitening, into AB; one instance every II=143 cycles (the plan's)
 void evaluate_3(const T x[N_X]) {
     for (int i = 0; i < 7; ++i) {
-#pragma HLS PIPELINE II=164
+#pragma HLS PIPELINE II=143
         const int f = BLOCK3_INSTANCES[i];
         T in[42], dat[211], half[2];
         gather_3(x, f, in, dat);
@@ -3054,7 +3054,7 @@ void evaluate_3(const T x[N_X]) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
         }
     }
-    FGC_CYCLES("factor_3_jacobian", 0, "instances", 7, 164, 864);
+    FGC_CYCLES("factor_3_jacobian", 0, "instances", 7, 143, 864);
 }
 
 // block 3's whitened rows of instance f from AB, padded to 32 columns (a multiple of PORTS)
