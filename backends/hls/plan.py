@@ -74,9 +74,9 @@ class PlanOptions:
     # heaviest type (most operations × instances) gets the limits, every other type
     # ⌈limit × min(1, n / n_heaviest)⌉ (at least 1) for its n instances, so a prior evaluated
     # once a linearisation does not hold the IMU datapath's operators (the factor_jacobian
-    # phase runs the types one after another: a type's loop takes n × II, which grows by the
-    # same factor its operators shrink only for the few-instance types); "uniform": every type
-    # gets the whole limit (capped by its own operation counts in both rules)
+    # phase runs the types one after another; a few-instance type's loop is short whatever
+    # its II); "uniform": every type gets the whole limit (capped by its own operation counts
+    # in both rules)
     allocation_scaling: str = "instances"
     state_allocation: tuple[tuple[str, int], ...] = STATE_ALLOCATION  # retract_<k>'s limits
     hgc_lanes: int = 16  # multiply-accumulate lanes of the Hessian/gradient unit
