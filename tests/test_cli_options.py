@@ -139,6 +139,12 @@ def test_emit_rejects_two_clocks(tmp_path):
      "--unit-sets applies to --backend hls only (not native)"),
     (["compile", BEACONS, "--backend", "hls", "--out", "x", "--unit-sets", "9"],
      "unit_sets must be 1 … 8"),
+    (["report", BEACONS, "--iterations", "1", "--scalar", "ap_fixed<32,16>"],
+     "the HLS dataflow design is float or double only"),
+    (["report", BEACONS, "--iterations", "1", "--unit-sets", "9"], "unit_sets must be 1 … 8"),
+    (["report", BEACONS, "--iterations", "1", "--part", "xc9z999"], "fgc knows no capacities"),
+    (["simulate", BEACONS, "--incremental", "3", "--allocation", "mul=4"],
+     "--allocation shapes the batch design"),
 ])
 def test_bad_hardware_options_exit_2_with_one_line(argv, needle, capsys, tmp_path,
                                                    monkeypatch):
@@ -262,3 +268,35 @@ def test_allocation_and_unit_sets_shape_the_emitted_design(tmp_path):
     assert "qr0_update1" in kernel and "qr1_" not in kernel  # one unit set, n_u = 2
     two = accel_plan(program, hls.HlsConfig())
     assert dict(two.unit(f"factor_{heavy}").operators)["mul"] == 24
+
+
+def test_report_prices_the_design_compile_emits(tmp_path, capsys):
+    """fgc report / simulate with --scalar, --part, --allocation and --unit-sets price the plan
+    of the design fgc compile --backend hls emits with the same flags (emitter.accel_plan)."""
+    import json
+
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import hls
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.plan import plan_cost
+
+    lio = str(ROOT / "examples" / "lio.py")
+    flags = ["-p", "N=5", "--units", "2", "--iterations", "2"]
+    design = ["--scalar", "double", "--unit-sets", "1", "--allocation", "mul=48,add=32",
+              "--part", "xc7z020clg400-1"]
+    assert main(["report", lio, *flags, "--json", str(tmp_path / "d.json"), "-q"]) == 0
+    assert main(["report", lio, *flags, *design, "--json", str(tmp_path / "r.json"), "-q"]) == 0
+    assert "does NOT fit xc7z020" in capsys.readouterr().out
+    default = json.loads((tmp_path / "d.json").read_text())["cost"]
+    priced = json.loads((tmp_path / "r.json").read_text())["cost"]
+    program = compile_graph(example("lio").build(N=5),
+                            SolverConfig(units=2, precision="float64"), name="lio")
+    plan = accel_plan(program, hls.HlsConfig(scalar="double", unit_sets=1,
+                                             allocation=(("mul", 48), ("add", 32)),
+                                             part="xc7z020clg400-1"))
+    cost = plan_cost(plan)
+    assert priced["cycles"] == 2 * cost.cycles and priced["resources"]["dsp"] == cost.dsp
+    assert priced["device"] == "xc7z020" and not priced["fits"]
+    assert priced["cycles"] != default["cycles"] and priced["resources"] != default["resources"]

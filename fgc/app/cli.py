@@ -132,6 +132,20 @@ def _hls_config(args, program):
     return hls.HlsConfig(**options)
 
 
+def _plan_options(args, program):
+    """The accelerator plan's options for the design ``fgc compile --backend hls`` emits with
+    the same --scalar, --part, --clock, --allocation and --unit-sets (what ``fgc simulate`` and
+    ``fgc report`` price). A fixed-point --scalar is refused: the dataflow design has no
+    fixed-point units and the plan no fixed-point operator table."""
+    config = _hls_config(args, program)
+    config.check()
+    if config.is_fixed_point:
+        raise UsageError(f"fgc {args.command}: --scalar {config.scalar}: the HLS dataflow design "
+                         "is float or double only (no fixed-point operator table to price it); "
+                         "the native backend runs ap_fixed (fgc run --backend native --scalar)")
+    return _backend("hls").emitter.accel_plan(program, config).options
+
+
 def _refuse_hls_design(args, backend: str) -> None:
     """--allocation and --unit-sets shape the HLS design: other backends have no such thing."""
     for flag in ("allocation", "unit_sets"):
@@ -382,10 +396,16 @@ def _cmd_simulate(args) -> int:
     from fgc.app.run_report import simulate_report
 
     if _streaming(args):
+        for flag in ("part", "allocation", "unit_sets"):
+            if getattr(args, flag, None):
+                raise UsageError(f"fgc simulate: --{flag.replace('_', '-')} shapes the batch "
+                                 "design; the stream's update model prices the Program's own "
+                                 "(drop it, or simulate without --incremental / --window)")
         return _cmd_stream(args)
     graph, program, data = _compile(args, "float32")
     try:
-        report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot)
+        report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot,
+                                 plan_options=_plan_options(args, program))
     except OSError as exc:
         if not args.plot or not str(getattr(exc, "filename", "")).startswith(args.plot):
             raise
@@ -653,7 +673,8 @@ def _cmd_report(args) -> int:
                          "--incremental K (its plan is compiled in) or none")
     graph, program, data = _compile(args, "float32")
     report = design_report(args.spec, parse_params(args.param), graph, program, data,
-                           _backend("sim"), iterations=args.iterations)
+                           _backend("sim"), iterations=args.iterations,
+                           plan_options=_plan_options(args, program))
     c = report["cost"]
     fits = "fits" if c["fits"] else "does NOT fit"
     _print(args, format_text(report).rstrip("\n").split("\n"),
@@ -878,22 +899,29 @@ def _hardware_args(p: argparse.ArgumentParser, name: str) -> None:
                    help="accelerator clock, e.g. 143MHz or 7ns (a bare number ≥ 20 is MHz): "
                         "the cost model's clock and, for --backend hls, run_hls.tcl's period "
                         "(default: 143 MHz; run_hls.tcl 7 ns)")
-    if name in ("compile", "run"):
+    if name in ("compile", "run", "simulate", "report"):
+        priced = name in ("simulate", "report")
+        where = ("the design priced: the HLS design that fgc compile --backend hls emits with "
+                 "the same flags" if priced else "--backend hls")
         h.add_argument("--part", type=_part, metavar="PART",
-                       help="FPGA part for run_hls.tcl, --backend hls only (default: "
-                            "xc7z045ffg900-2); the plan's fit verdict and the lint's DSP budget "
-                            "use its device's capacities (backends/cost/target.py)")
+                       help=("FPGA part whose capacities the plan's fit verdict uses" if priced
+                             else "FPGA part for run_hls.tcl, --backend hls only")
+                            + " (default: xc7z045ffg900-2); the plan's fit verdict and the lint's "
+                            "DSP budget use its device's capacities (backends/cost/target.py)")
         h.add_argument("--scalar", type=_scalar, metavar="T",
-                       help="C++ scalar of the HLS accelerator or native solver: float, double or "
-                            "ap_fixed<W,I> (2 ≤ W ≤ 1024, 1 ≤ I ≤ W; needs fgc[hls-fixed]) "
-                            "(default: from --precision)")
+                       help=("C++ scalar of the priced HLS design: float or double (implies "
+                             "--precision; the dataflow design has no fixed-point operator table)"
+                             if priced else
+                             "C++ scalar of the HLS accelerator or native solver: float, double "
+                             "or ap_fixed<W,I> (2 ≤ W ≤ 1024, 1 ≤ I ≤ W; needs fgc[hls-fixed])")
+                            + " (default: from --precision)")
         h.add_argument("--allocation", type=_allocation, metavar="KIND=N,…",
-                       help="--backend hls: the factor datapaths' ALLOCATION limits, e.g. "
+                       help=f"{where}: the factor datapaths' ALLOCATION limits, e.g. "
                             "mul=48,add=32 (kinds add, mul, div, sqrt, trig, special; the others "
                             "keep the defaults add 16, mul 24, div 4, sqrt 2, trig 2, special 2); "
                             "each block type gets a share by its instance count")
         h.add_argument("--unit-sets", type=_positive_int, metavar="S",
-                       help="--backend hls: unit sets eliminating a level's steps side by side, "
+                       help=f"{where}: unit sets eliminating a level's steps side by side, "
                             "1 … 8 (default: 2 on a two-ended chain, else 1)")
 
 

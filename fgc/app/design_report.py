@@ -46,12 +46,13 @@ class Section:
 
 
 def design_report(spec: str, params: dict, graph: Graph, program, data, sim,
-                  iterations: int | None = None) -> dict:
+                  iterations: int | None = None, plan_options=None) -> dict:
     """The report of ``program`` (compiled from ``graph``) as a JSON-able dict.
 
     The hardware figures are the accelerator plan's (:func:`fgc.app.run_report.plan_summary`) for
     ``iterations`` iterations; when that is None the simulator ``sim`` solves ``data`` first and
-    its iteration count is used (and its outcome reported).
+    its iteration count is used (and its outcome reported). ``plan_options`` are the priced
+    design's (default: the Program's own, ``PlanOptions.of``).
     """
     solve = {"source": "--iterations", "iterations": iterations}
     if iterations is None:
@@ -61,7 +62,7 @@ def design_report(spec: str, params: dict, graph: Graph, program, data, sim,
                  "status": result.status, "reason": result.reason,
                  "initial_error": result.initial_error, "final_error": result.final_error}
         iterations = max(result.iterations, 1)
-    cost = plan_summary(program, iterations)
+    cost = plan_summary(program, iterations, plan_options)
     return {
         "spec": spec, "params": {k: _plain_param(v) for k, v in params.items()},
         "program": program.name, "variables": len(program.variables),

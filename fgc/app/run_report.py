@@ -282,18 +282,22 @@ def _verify_summary(r: dict) -> list[str]:
     return lines
 
 
-def plan_summary(program, iterations: int) -> dict:
+def plan_summary(program, iterations: int, options=None) -> dict:
     """The accelerator plan's hardware figures for ``iterations`` iterations of ``program``
-    (``fgc_backends.hls.plan.plan_summary``: plan_cost of build_plan with the Program's n_u,
-    #CPE, clock and precision). Looked up by name, as the backends are, so fgc imports none."""
-    return import_module("fgc_backends.hls.plan").plan_summary(program, iterations)
+    (``fgc_backends.hls.plan.plan_summary``: plan_cost of build_plan with ``options``, by
+    default the Program's n_u, #CPE, clock and precision; the CLI passes the options of the
+    design ``fgc compile --backend hls`` would emit with the same flags). Looked up by name, as
+    the backends are, so fgc imports none."""
+    return import_module("fgc_backends.hls.plan").plan_summary(program, iterations, options)
 
 
-def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = None) -> dict:
-    """Run the simulator, then cost the iterations it took with the accelerator plan."""
+def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = None,
+                    plan_options=None) -> dict:
+    """Run the simulator, then cost the iterations it took with the accelerator plan
+    (``plan_options``: the priced design, default the Program's)."""
     result = sim.run(program, data)
     require_finite_start(graph, result)
-    cost = plan_summary(program, max(result.iterations, 1))
+    cost = plan_summary(program, max(result.iterations, 1), plan_options)
     storage = program.storage
     report = {
         "status": result.status, "reason": result.reason, "iterations": result.iterations,
