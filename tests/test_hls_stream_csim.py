@@ -53,9 +53,11 @@ def _distances(program, stream_result, sim_updates):
 
 @pytest.fixture(scope="module")
 def lio8():
-    """LIO N = 8, K = 4: one 4-keyframe template, emitted and built once."""
+    """LIO N = 8, K = 4: one 4-keyframe template, emitted and built once. Named ``lio`` as
+    ``lio8_paper_a`` below is: its 4-keyframe template is the same Program, so the second
+    fixture takes the emitted and built project from the cache instead of another g++ build."""
     graph = example("lio").build(N=8)
-    program = compile_stream(graph, incremental=4)
+    program = compile_stream(graph, incremental=4, name="lio")
     data = problem_data(graph, program)
     sim_updates = []
     run_stream(program, data, None, sim_updates.append)
