@@ -18,6 +18,7 @@ import json
 from pathlib import Path
 from types import SimpleNamespace
 
+import numpy as np
 import pytest
 
 import fgc
@@ -101,17 +102,25 @@ def test_per_call_and_per_rejection_terms_are_the_plans_phases(graph):
     assert (phase_cycles(model.rounding_noise_phase(0, N - 1))
             == phase_cycles(plan["rounding_noise"]))
     counted = model.price(SimpleNamespace(keyframe=6, first=4, iterations=3,
-                                          mode="incremental", rejections=2))
+                                          mode="incremental", rejected=3, noise_passes=2))
     uncounted = model.price(update(6, 4))
-    noise = counted.term("rounding_noise")
+    noise, trial = counted.term("rounding_noise"), counted.term("rejected_trial")
     assert not noise.assumed and noise.times == 2 and noise.each > 0
     assert noise.each == phase_cycles(model.rounding_noise_phase(4, 6))
-    assert uncounted.term("rounding_noise").assumed and uncounted.term("rounding_noise").times == 0
-    assert counted.cycles == uncounted.cycles + 2 * noise.each
+    assert not trial.assumed and trial.times == 3
+    # a rejected trial re-solves, retracts, costs and tests the step: an iteration without
+    # the Jacobian and gradient passes and without LM control's other loops
+    iteration = {ph.name: phase_cycles(ph) for ph in model.window_iteration_phases(4, 6)}
+    solve_try = sum(iteration.values()) - iteration["factor_jacobian"] - iteration["gradient"]
+    assert solve_try - iteration["lm_control"] < trial.each < solve_try
+    for name in ("rounding_noise", "rejected_trial"):
+        assert uncounted.term(name).assumed and uncounted.term(name).times == 0
+    assert counted.cycles == uncounted.cycles + 2 * noise.each + 3 * trial.each
     assert counted.term("setup").cycles == phase_cycles(model.setup_phase(4, 6, "incremental"))
-    with pytest.raises(UpdateModelError, match="-1 rejected steps"):
-        model.price(SimpleNamespace(keyframe=6, first=4, iterations=3, mode="incremental",
-                                    rejections=-1))
+    for rejected, passes in ((-1, 0), (1, 2)):
+        with pytest.raises(UpdateModelError, match=f"{rejected} rejected steps with {passes}"):
+            model.price(SimpleNamespace(keyframe=6, first=4, iterations=3, mode="incremental",
+                                        rejected=rejected, noise_passes=passes))
 
 
 def test_a_batch_keyframe_costs_plan_cost_of_its_batch_program(graph, stream):
@@ -195,7 +204,7 @@ def test_assumed_terms_are_labelled_and_kept_out_of_the_plan_latency(stream):
     # uncounted rejections assumed
     first = model.price(update(2, 0))
     assert {t.name for t in first.terms if t.assumed} == {"transfer", "on_chip_state",
-                                                          "rounding_noise"}
+                                                          "rounding_noise", "rejected_trial"}
 
 
 def test_a_fixed_lag_update_walks_no_kept_conditionals(graph):
@@ -281,3 +290,58 @@ def test_cli_refuses_streaming_where_no_model_or_solver_runs_it(argv, refusal, c
 def test_cli_stream_hls_needs_a_mode(capsys):
     assert main(["stream", LIO, "-p", "N=4", "--backend", "hls"]) == 2
     assert "--incremental K or --window W" in capsys.readouterr().err
+
+
+def test_the_simulator_counts_rejected_trial_steps():
+    """The simulator's LM counts each trial step it retracts, costs and rejects, and each
+    iteration that works out the rounding-noise band for one (the update model prices both):
+    on f(x) = x⁴ with a Hessian a hundred times too small, every iteration's first trials
+    overshoot and μ grows until a step lowers the cost."""
+    from fgc_backends.sim.runtime import fgc_sim_optimizer
+
+    class SingularError(Exception):
+        pass
+
+    class Quartic:
+        dtype = np.dtype(np.float64)
+        x0 = np.array([2.0])
+        lib = SimpleNamespace(linear=SimpleNamespace(SingularError=SingularError))
+
+        def cost(self, x):
+            return float(x[0] ** 4)
+
+        def linearize(self, x):
+            return [np.zeros((1, 2))], np.array([4 * x[0] ** 3]), 0.0
+
+        def solve(self, abs_, mu):
+            return np.array([-self.g / (0.01 * self.h + mu)])
+
+        def retract(self, x, delta):
+            return x + delta
+
+    problem = Quartic()
+    opts = {"eps_step": 1e-12, "lambda_initial": 1e-5, "method": "lm", "max_iterations": 3,
+            "eps_gradient": 1e-12, "lambda_factor": 10.0, "mu_min": 1e-12,
+            "lambda_upper_bound": 1e10, "absolute_error_tol": 0.0, "relative_error_tol": 0.0}
+    tried = []
+
+    trials = []  # per iteration, the points costed
+
+    def linearize(x):
+        problem.g, problem.h = 4 * x[0] ** 3, 12 * x[0] ** 2
+        trials.append([])
+        return Quartic.linearize(problem, x)
+
+    def cost(x):
+        tried.append(float(x[0]))
+        if trials:
+            trials[-1].append(float(x[0]))
+        return Quartic.cost(problem, x)
+
+    problem.linearize, problem.cost = linearize, cost
+    x, final, iterations, *_ = fgc_sim_optimizer.optimize(problem, opts)
+    assert iterations == 3 and final < 16.0
+    # every costed point but the start and the three accepted ones was a rejected trial
+    assert problem.rejected == len(tried) - 1 - 3 > 3
+    # the band is worked out once in each iteration that rejected a trial at a finite cost
+    assert problem.noise_passes == sum(len(t) > 1 for t in trials) >= 1

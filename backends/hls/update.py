@@ -25,9 +25,12 @@ IIs and depths of :mod:`fgc_backends.hls.plan` and its operator table:
   initial values and data in, the changed estimate out) and, incremental mode,
   back-substitution through the kept conditionals (with its copies) and a state update of
   their variables;
-- per rejected trial step, when the update record counts them (``rejections``): the plan's
-  rounding-noise pass on the window; the simulator's records do not, so the pass is an assumed
-  term counted zero times (its price per rejection in ``each``);
+- per rejected trial step, as the simulator's update record counts them (``rejected``): the
+  linear solve again at the grown μ, the state update, the cost pass and the step test
+  (:meth:`UpdateModel.trial_cycles`); per iteration with such a step at a finite cost
+  (``noise_passes``) the plan's rounding-noise pass on the window; a record without the counts
+  (the native and C-simulation streams') gets both as assumed terms counted zero times (their
+  price in ``each``);
 - a batch keyframe j: its iterations as full batch iterations, ``plan_cost`` of the Program of
   keyframes 0 … j (``batch_program(j)``; the stream's own Program at the last keyframe), plus
   the store and the setup.
@@ -262,7 +265,7 @@ class UpdateModel:
         terms.append(Term("setup", phase_cycles(self.setup_phase(first, j, mode)), 1, False,
                           "once per update (the plan's per-call copies): the keyframe's new "
                           "initial values and data in, the changed estimate out"))
-        terms.append(self._rejection_term(update, 0 if mode == "batch" else first, j))
+        terms += self._rejection_terms(update, 0 if mode == "batch" else first, j, mode)
         terms += self._transfer_terms(first, j, mode)
         return UpdatePrice(j, mode, first, k, self.plan.clock_mhz, tuple(terms))
 
@@ -335,19 +338,63 @@ class UpdateModel:
                             "pass for the Log; no emitted unit computes them"))
         return out
 
-    def _rejection_term(self, update, first, last) -> Term:
-        each = phase_cycles(self.rounding_noise_phase(first, last))
-        rejected = getattr(update, "rejections", None)
-        if rejected is not None:
-            if int(rejected) < 0:
-                raise UpdateModelError(f"keyframe {update.keyframe}: {rejected} rejected steps")
-            return Term("rounding_noise", each, int(rejected), False,
-                        "per rejected trial step the update reports: the plan's rounding-noise "
-                        "pass on the window")
-        return Term("rounding_noise", each, 0, True,
-                    f"assumed: no rejected trial step (the update record does not count them); "
-                    f"each would add the plan's rounding-noise pass on the window, {each} "
-                    "cycles")
+    def _rejection_terms(self, update, first, last, mode) -> list[Term]:
+        """LM's rejected trial steps, as the update record counts them (``rejected``: trial
+        steps retracted, costed and not accepted; ``noise_passes``: iterations in which one was
+        rejected at a finite cost, when the kernel works out the rounding-noise band). A record
+        without the counts (the native and C-simulation streams') gets both assumed zero."""
+        trial = self.trial_cycles(first, last, mode)
+        noise = phase_cycles(self.rounding_noise_phase(first, last))
+        rejected = getattr(update, "rejected", None)
+        passes = getattr(update, "noise_passes", None)
+        if rejected is None or passes is None:
+            return [Term("rejected_trial", trial, 0, True,
+                         f"assumed: no rejected trial step (the update record does not count "
+                         f"them); each would add a re-solve at the grown μ, the state update, "
+                         f"the cost pass and the step test, {trial} cycles"),
+                    Term("rounding_noise", noise, 0, True,
+                         f"assumed: no rounding-noise pass (the update record does not count "
+                         f"rejected steps); each would add the plan's pass on the window, "
+                         f"{noise} cycles")]
+        rejected, passes = int(rejected), int(passes)
+        if rejected < 0 or not 0 <= passes <= rejected:
+            raise UpdateModelError(f"keyframe {update.keyframe}: {rejected} rejected steps with "
+                                   f"{passes} rounding-noise passes")
+        return [Term("rejected_trial", trial, rejected, False,
+                     "per rejected trial step the update reports: the linear solve again at the "
+                     "grown μ (the Jacobians and gradient are kept), the state update, the cost "
+                     "pass and LM control's step test"),
+                Term("rounding_noise", noise, passes, False,
+                     "per iteration with a rejected step at a finite cost: the plan's "
+                     "rounding-noise pass on the window (the band is worked out once)")]
+
+    def trial_cycles(self, first: int, last: int, mode: str) -> int:
+        """One rejected trial step as the kernel runs it (``try_steps``): the per-iteration
+        phases without the Jacobian pass and the gradient / HGC (kept from the linearisation),
+        LM control reduced to the step test and its decision. A batch keyframe: the batch
+        Program's own plan; otherwise the window's phases."""
+        if mode == "batch":
+            program = (self.program if last == len(self.clusters) - 1
+                       else self.batch_program(last) if self.batch_program is not None
+                       else None)
+            if program is None:
+                raise UpdateModelError(f"keyframe {last}: a batch update before the last "
+                                       "keyframe needs batch_program (the Program of its "
+                                       "keyframes)")
+            phases = [ph for ph in build_plan(program, self.options).phases
+                      if ph.per == "iteration"]
+        else:
+            phases = list(self.window_iteration_phases(first, last))
+        total = 0
+        for ph in phases:
+            if ph.name in ("factor_jacobian", "gradient", "hgc"):
+                continue
+            if ph.name == "lm_control":
+                ph = Phase(ph.name, ph.dataflow, tuple(
+                    Process(pr.name, pr.unit, tuple(lp for lp in pr.loops if lp.name.startswith(
+                        ("step_test", "decision")))) for pr in ph.processes))
+            total += phase_cycles(ph)
+        return total
 
     def _kept_terms(self, first, last) -> list[Term]:
         """Back-substitution through the kept conditionals first − 1 … 0 (plan), with the

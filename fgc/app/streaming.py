@@ -65,6 +65,10 @@ class KeyframeResult:
     cost: float
     seconds: float
     values: dict
+    # LM's rejected trial steps and the iterations that worked out the rounding-noise band
+    # (the simulator's records count them; the native and C-simulation streams' do not: None)
+    rejected: int | None = None
+    noise_passes: int | None = None
 
     def newest(self, program) -> dict:
         """The estimate of this keyframe's own variables."""
@@ -171,7 +175,8 @@ def keyframe_result(program, record: dict) -> KeyframeResult:
             for spec, v in zip(program.variables, values, strict=True) if v is not None}
     return KeyframeResult(record["keyframe"], record["mode"], record["first"],
                           record["iterations"], record["status"], float(record["cost"]),
-                          float(record.get("seconds", float("nan"))), values)
+                          float(record.get("seconds", float("nan"))), values,
+                          record.get("rejected"), record.get("noise_passes"))
 
 
 def stream(graph: Graph, window: int | None = None, incremental: int | None = None,

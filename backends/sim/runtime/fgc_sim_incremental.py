@@ -253,6 +253,7 @@ def solve_incremental(problem, opts, optimize, progress=None):
         seconds = time.perf_counter() - t0
         history.append({"keyframe": keyframe, "mode": "batch" if batch else "incremental",
                         "first": first, "iterations": it, "status": st, "reason": why,
+                        "rejected": window.rejected, "noise_passes": window.noise_passes,
                         "cost": float(cost), "seconds": seconds,
                         "values": _snapshot(chain, keyframe)})
         if progress is not None:
@@ -289,7 +290,9 @@ def solve_fixed_lag(problem, opts, optimize, window, progress=None):
         chain.x = x
         seconds = time.perf_counter() - t0
         history.append({"keyframe": keyframe, "mode": "fixed-lag", "first": first,
-                        "iterations": it, "status": st, "reason": why, "cost": float(cost),
+                        "iterations": it, "status": st, "reason": why,
+                        "rejected": win.rejected, "noise_passes": win.noise_passes,
+                        "cost": float(cost),
                         "seconds": seconds,
                         "values": _snapshot(chain, keyframe, max(0, keyframe - window + 1))})
         if progress is not None:

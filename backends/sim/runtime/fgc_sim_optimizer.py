@@ -203,7 +203,12 @@ def _rows(spec, number, factors, lib):
 
 
 def optimize(problem, opts):
-    """Run the solver; returns (x, final cost, iterations, μ, status, reason, cost log)."""
+    """Run the solver; returns (x, final cost, iterations, μ, status, reason, cost log).
+    ``problem.rejected`` counts the trial steps tried (retracted and costed) and not accepted,
+    ``problem.noise_passes`` the iterations in which one was rejected with a finite cost: the
+    accelerator works out the rounding-noise band then, once per iteration (the update model
+    prices both)."""
+    problem.rejected = problem.noise_passes = 0
     eps = float(numpy.finfo(problem.dtype).eps)
     # ‖δ‖ can only shrink to the storage's resolution: never ask for less than 10 ulp.
     limits = {"eps_step": max(opts["eps_step"], 10 * eps), "resolution": 16 * eps}
@@ -244,6 +249,7 @@ def _step(problem, x, cost, lin, mu, opts, limits):
     """
     abs_, g, band = lin
     singular = problem.lib.linear.SingularError
+    noise = False  # the band worked out in this iteration (the accelerator's rule)
     while True:
         try:
             delta = problem.solve(abs_, mu)
@@ -263,6 +269,10 @@ def _step(problem, x, cost, lin, mu, opts, limits):
                                         or predicted <= band and new <= cost + band):
                 mu_next = max(mu / opts["lambda_factor"], opts["mu_min"])  # damping stays on
                 return "accept", x_new, new, mu_next, predicted
+            problem.rejected += 1
+            if numpy.isfinite(new) and not noise:
+                noise = True
+                problem.noise_passes += 1
         if mu <= 0:
             return "failed", None, None, mu, "non_finite"
         mu *= opts["lambda_factor"]
