@@ -284,6 +284,37 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     assert f"//   stream cpe_link{cpe} " in kernel
 
 
+def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
+    """Issue 18: LM control's sums (|x|² in try_steps, the step test's ‖δ‖² and δᵀ(g + μδ))
+    go a term a cycle (PIPELINE II=1) into as many interleaved partial sums as the adder's
+    latency, the gradient's largest entry into as many partial maxima as the compare's, the
+    partial arrays completely partitioned; the plan prices those loops at II 1 (one
+    accumulator each, as before, runs at II = the adder's latency)."""
+    from fgc_backends.hls import HlsConfig
+    from fgc_backends.hls.emitter import accel_plan
+    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
+    kernel = (out / "lio.cpp").read_text()
+    plan = accel_plan(program, HlsConfig(scalar="double"))
+    assert plan.ops.add.latency > 1 and plan.ops.compare.latency > 1
+    assert f"T_ADD_LAT = {plan.ops.add.latency}," in kernel and "T_PARTIALS = T_ADD_LAT;" in kernel
+    assert f"T_CMP_LAT = {plan.ops.compare.latency}," in kernel
+    assert "T_MAXIMA = T_CMP_LAT;" in kernel
+    for array, update in (("xp", "xp[i % T_PARTIALS] += X[i] * X[i];"),
+                          ("dp", "dp[i % T_PARTIALS] += d * d;"),
+                          ("pp", "pp[i % T_PARTIALS] += d * (G[i] + mu[0] * d);"),
+                          ("gp", "gp[i % T_MAXIMA] = a > gp[i % T_MAXIMA]")):
+        at = kernel.index(update)
+        loop = kernel[kernel.rindex("for (int i = 0;", 0, at):at]
+        assert "#pragma HLS PIPELINE II=1\n" in loop, array
+        assert f"#pragma HLS DEPENDENCE variable={array} inter false" in loop, array
+        assert f"#pragma HLS ARRAY_PARTITION variable={array} complete" in kernel, array
+    loops = {lp.name: lp for ph in plan.phases if ph.name.startswith("lm_")
+             for pr in ph.processes for lp in pr.loops}
+    n_t = sum(v.dim for v in program.variables)
+    assert n_t >= plan.ops.add.latency
+    assert all(loops[n].ii == 1 for n in ("gradient_max", "x_norm", "step_test"))
+
+
 def test_accelerator_kernel_has_no_host_only_code(tmp_path):
     for linear in ("qr", "cholesky"):
         _, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear=linear)

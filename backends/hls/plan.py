@@ -471,13 +471,20 @@ def kernel_loop(name: str, trip: int, kind: str, timing: dict, repeat: int = 1) 
     return Loop(name, trip, ii, depth, repeat)
 
 
-def kernel_dot(name: str, length: int, timing: dict, repeat: int = 1) -> Loop:
+def kernel_dot(name: str, length: int, timing: dict, repeat: int = 1, kind: str = "acc",
+               lead: int = 0) -> Loop:
     """A kernel loop summing ``length`` terms into the adder latency's interleaved partial sums
     (accel.cpp.jinja's T_PARTIALS / L_PARTIALS), priced by the dot-product rule
-    (:func:`dot_loop`) with the latencies of ``timing`` (:func:`kernel_timing`)."""
-    la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
-    k = max(1, min(length, la))
-    return Loop(name, length, math.ceil(la / k), lm + la * (1 + _ceil_log2(k)), repeat)
+    (:func:`dot_loop`) with the latencies of ``timing`` (:func:`kernel_timing`).
+
+    ``kind`` is the recurrence the partials break: ``"acc"`` (a sum: the adder's latency, the
+    multiply ahead of it) or ``"max"`` (a running maximum into partial maxima: the compare's
+    latency, the read and |·| ahead of it, the fold a tree of compares); ``lead``: latency
+    ahead of the multiply (the step test's g + μδ)."""
+    ii, depth = timing[kind]
+    k = max(1, min(length, ii))
+    return Loop(name, length, math.ceil(ii / k), lead + (depth - ii) + ii * (1 + _ceil_log2(k)),
+                repeat)
 
 
 def _ported(words: int) -> int:
@@ -752,9 +759,11 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     n_t = sum(v.dim for v in program.variables)
     # LM control (optimize / try_steps): the gradient's largest entry, |x|, the step test over
     # δ (|δ|² and the predicted decrease), the scalar decision, the accepted x copied back
+    # (the step test at II 1 starts three multiplies and three adds a cycle: μδ, δ·δ,
+    # δ·(g + μδ); g + μδ and the two partial sums)
     units.append(Unit("lm_control", "gain ratio, μ update, stopping rules", 1,
-                      (("add", 1), ("mul", 1), ("div", 1), ("compare", 1))))
-    phases.append(lm_control_phase(n_t, n_x, timing))
+                      (("add", 3), ("mul", 3), ("div", 1), ("compare", 1))))
+    phases += lm_control_phases(n_t, n_x, timing)
     # once per call: the top's copies of x and the data in and x out
     phases.append(setup_phase(n_x, _sizes(program)["N_DATA"], n_x, timing))
     # when a trial step does not lower the cost: the rounding-noise band from AB
@@ -968,16 +977,26 @@ def state_update_phase(variables, ops: OperatorTable, allocation=STATE_ALLOCATIO
                                                  retract_loops(variables, ops, allocation)),))
 
 
-def lm_control_phase(n_t: int, n_x: int, timing: dict) -> Phase:
+def lm_control_phases(n_t: int, n_x: int, timing: dict) -> tuple[Phase, ...]:
     """LM control as emitted (optimize / try_steps) over ``n_t`` tangent and ``n_x`` storage
-    words: the gradient's largest entry, |x|, the step test over δ, the scalar decision, the
-    accepted x copied back."""
-    return Phase("lm_control", False, (Process("decide", "lm_control", (
-        kernel_loop("gradient_max", n_t, "max", timing),
-        kernel_loop("x_norm", n_x, "acc", timing),
-        kernel_loop("step_test", n_t, "acc2", timing),
-        kernel_loop("decision", 1, "decision", timing),
-        kernel_loop("accept", n_x, "move", timing))),))
+    words, in three phases by how often their loops run: ``lm_iteration`` once per
+    linearisation (the gradient's largest entry; |x|, at the top of try_steps), ``lm_control``
+    once per linear solve (the step test over δ, the scalar decision) and ``lm_accept`` once
+    per accepted step (x_trial copied into x). A plan iteration has one of each; an LM retry
+    adds a solve, not an iteration, and the last iteration of a run often accepts nothing. The
+    gradient maximum is partial maxima and the sums (|x|², ‖δ‖² and δᵀ(g + μδ)) interleaved
+    partial sums, all PIPELINEd at II 1 and priced by the dot-product rule
+    (:func:`kernel_dot`); the step test's terms pass a multiply and an add (g + μδ) before
+    their product."""
+    lead = timing["acc"][1]  # μδ, then g + μδ
+    return (Phase("lm_iteration", False, (Process("iterate", "lm_control", (
+                kernel_dot("gradient_max", n_t, timing, kind="max"),
+                kernel_dot("x_norm", n_x, timing))),)),
+            Phase("lm_control", False, (Process("decide", "lm_control", (
+                kernel_dot("step_test", n_t, timing, lead=lead),
+                kernel_loop("decision", 1, "decision", timing))),)),
+            Phase("lm_accept", False, (Process("accept", "lm_control", (
+                kernel_loop("accept", n_x, "move", timing),)),)))
 
 
 def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict) -> Phase:
