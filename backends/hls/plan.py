@@ -1279,11 +1279,21 @@ def unit_sets(plan: AcceleratorPlan) -> int:
     return sum(1 for u in plan.units if u.name.endswith("_evaluate"))
 
 
+def backsub_units(plan: AcceleratorPlan) -> int:
+    """Back-substitution units of ``plan``: one per QR unit set, one for Cholesky (the
+    emitted ``backsub_set<u>`` processes of back_substitute's ``backsub_level`` region)."""
+    return max(1, unit_sets(plan))
+
+
 def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Channel, ...]]:
-    """The dataflow processes and streams the emitter prints for ``plan``'s linear solver (the
-    unit headers' regions): per QR unit set broadcast, n_u Update units, Evaluate and collect;
-    for Cholesky the feed, the #CPE process elements and the drain. Streams are the plan's
-    stream channels."""
+    """The dataflow processes and streams the emitter prints for ``plan``: the linear solver's
+    (the unit headers' regions: per QR unit set broadcast, qr_finish, n_u Update units,
+    Evaluate and collect; for Cholesky the feed, the #CPE process elements and the drain),
+    then back-substitution's (the kernel's ``backsub_level`` region: one ``backsub_set<u>``
+    per unit, :func:`backsub_units`, side by side). Streams are the plan's stream channels;
+    the back-substitution units have none (each reads its own conditional and separator
+    buffers and writes its own frontal buffer, the region's arguments: nothing passes from
+    one unit to another)."""
     if plan.linear == "qr":
         procs = tuple(p for s in range(unit_sets(plan)) for p in (
             f"qr{s}_broadcast", f"qr{s}_finish",
@@ -1291,4 +1301,5 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
             f"qr{s}_evaluate", f"qr{s}_collect"))
     else:
         procs = ("cpe_feed", *(f"cpe{i}" for i in range(plan.options.cpe)), "cpe_drain")
+    procs += tuple(f"backsub_set{u}" for u in range(backsub_units(plan)))
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")

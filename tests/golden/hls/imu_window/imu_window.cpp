@@ -7,9 +7,10 @@
 // -> the HGC (Gram of each factor) -> per step the frontal matrix through the #CPE cascade
 // -> back-substitution -> state update (retract) -> the factor datapaths (cost mode) -> LM control.
 //
-// The elimination's process network (from the plan; every DATAFLOW region of the units is one of
-// these; back_substitute's backsub_level region runs one cond_backsub per unit set side by side):
-//   22 processes, 21 streams (cpe=20)
+// The linear solver's process network (from the plan): the units' DATAFLOW regions, then
+// back_substitute's backsub_level region (backsub_set<u>: one cond_backsub unit per unit set,
+// side by side, no streams between them):
+//   23 processes, 21 streams (cpe=20)
 //   process cpe_feed
 //   process cpe0
 //   process cpe1
@@ -32,6 +33,7 @@
 //   process cpe18
 //   process cpe19
 //   process cpe_drain
+//   process backsub_set0
 //   stream cpe_link0 depth=30: cpe_feed -> cpe0
 //   stream cpe_link1 depth=30: cpe0 -> cpe1
 //   stream cpe_link2 depth=30: cpe1 -> cpe2

@@ -7,9 +7,10 @@
 // -> per schedule level the QR unit set(s): Evaluate + n_u Update units over streams
 // -> back-substitution -> state update (retract) -> the factor datapaths (cost mode) -> LM control.
 //
-// The elimination's process network (from the plan; every DATAFLOW region of the units is one of
-// these; back_substitute's backsub_level region runs one cond_backsub per unit set side by side):
-//   16 processes, 34 streams (n_u=4, 2 unit set(s))
+// The linear solver's process network (from the plan): the units' DATAFLOW regions, then
+// back_substitute's backsub_level region (backsub_set<u>: one cond_backsub unit per unit set,
+// side by side, no streams between them):
+//   18 processes, 34 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -26,6 +27,8 @@
 //   process qr1_update3
 //   process qr1_evaluate
 //   process qr1_collect
+//   process backsub_set0
+//   process backsub_set1
 //   stream qr0_v0 depth=22: qr0_broadcast -> qr0_update0
 //   stream qr0_v1 depth=22: qr0_broadcast -> qr0_update1
 //   stream qr0_v2 depth=22: qr0_broadcast -> qr0_update2
