@@ -442,13 +442,15 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
     - ``move``: one word read and written a cycle (II 1, depth 2); ``fill``: one word written
       a cycle (II 1, depth 1);
     - ``acc``: a sum of products into one accumulator: the recurrence through the adder sets
-      II = add latency, depth multiply + add; ``acc2``: two such sums side by side (the step
-      test's |δ|² and δ·(g + μδ)), depth 2 (multiply + add);
+      II = add latency, depth multiply + add (interleaved into partial sums by
+      :func:`kernel_dot`); ``acc2``: a term through two multiply-adds before its sum (the
+      rounding-noise pass's terms), depth 2 (multiply + add);
     - ``sum``: a running sum (II = depth = add latency); ``rmw``: ``+=`` into a table-addressed
       memory (the address may repeat: II = add latency, depth read + add + write);
       ``scatter``: ``+=`` into a table-addressed memory where every iteration of the loop has
       its own address (II 1, depth read + add + write);
-    - ``max``: a running maximum (compare and select: II = compare latency, depth + 2);
+    - ``max``: a running maximum (compare and select: II = compare latency, depth + 2 for the
+      read and |·|; into partial maxima by :func:`kernel_dot`, LM control's gradient maximum);
     - ``root``: one square root (√μ); ``decision``: LM control's scalar decision (gain ratio
       divide, two multiplies, two adds, a compare); ``retract``: one variable a cycle through a
       retraction-sized datapath (square root, divide, sin/cos, four multiply-adds deep), what
