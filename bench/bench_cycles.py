@@ -58,8 +58,8 @@ struct Dump {
 TRIGGER = {"setup": "call", "factor_jacobian": "linearize", "gradient": "linearize",
            "hgc": "linearize", "qr_stack": "solve", "qr": "solve", "qr_commit": "solve",
            "backsub": "solve", "assemble": "solve", "cholesky": "solve", "store": "solve",
-           "lm_control": "solve", "state_update": "retract", "factor_cost": "cost",
-           "rounding_noise": "noise"}
+           "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
+           "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}
 
 
 def counting_run(project, graph, program, main: str) -> str:
@@ -111,7 +111,7 @@ def measure(name, graph, solver, config: HlsConfig | None = None):
 
 ORDER = ("setup", "factor_jacobian", "gradient", "hgc", "qr_stack", "qr", "qr_commit",
          "assemble", "cholesky", "store", "backsub", "state_update", "factor_cost",
-         "lm_control", "rounding_noise")
+         "lm_iteration", "lm_control", "lm_accept", "rounding_noise")
 
 
 def cases():

@@ -1,8 +1,9 @@
 """The emitted HLS accelerator's process network per option, beside the plan's.
 
 LIO N = 30 (QR, two-ended: two unit sets) for n_u ∈ {1, 4, 8} and imu_window N = 50 (Cholesky)
-for #CPE ∈ {5, 20, 80}: the processes and streams of the linear solver, read back from the
-emitted kernel and its unit header (``fgc_backends.hls.network.counts``), and the plan's
+for #CPE ∈ {5, 20, 80}: the processes and streams of the linear solver and of
+back-substitution (the kernel's backsub_level region: one unit per unit set), read back from
+the emitted kernel and its unit header (``fgc_backends.hls.network.counts``), and the plan's
 (``plan.process_network``). Every project is linted inside ``emit``.
 
     FGC_CACHE_DIR=... python bench/bench_hls_network.py [--out DIR]

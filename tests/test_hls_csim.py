@@ -197,7 +197,8 @@ struct Dump {
                                                    ("cholesky", "cpe", 4)])
 def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     """The unit headers' cycle log (-DFGC_COUNT_CYCLES) of a C simulation run: the processes
-    that ran in one reflection / one CPE round are the plan's, n_u + 4 or #CPE + 2."""
+    that ran in one reflection / one CPE round are the plan's, n_u + 4 or #CPE + 2 (the plan's
+    network adds one back-substitution unit per unit set)."""
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.plan import process_network
     graph = lio.build(N=6) if linear == "qr" else pose_graph.build()
@@ -214,7 +215,10 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     # QR: broadcast, qr_finish, the Updates, Evaluate and collect; Cholesky: feed, the CPEs and
     # drain
     per_set = value + 4 if linear == "qr" else value + 2
-    assert ran == {region: per_set} and len(procs) == sets * per_set
+    assert ran == {region: per_set}
+    # and back-substitution's backsub_level region: one unit per unit set
+    assert len(procs) == sets * per_set + sets and procs[-sets:] == tuple(
+        f"backsub_set{u}" for u in range(sets))
 
 
 @pytest.mark.parametrize("linear, option", [("qr", {"units": 2}),

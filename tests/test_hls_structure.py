@@ -252,7 +252,7 @@ def _texts(directory, name, header):
 @pytest.mark.parametrize("units", [1, 4, 8])
 def test_units_change_the_emitted_qr_network(tmp_path, units):
     from fgc_backends.hls.emitter import accel_plan
-    from fgc_backends.hls.network import counts, read_network
+    from fgc_backends.hls.network import backsub_region, counts, read_network
     from fgc_backends.hls.plan import process_network
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr", units=units)
     kernel, header = _texts(out, "lio", "fgc_qr.h")
@@ -262,9 +262,12 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
     (reflection,) = [r for r in read_network(header) if r.streams]
     assert reflection.processes == ("qr_broadcast", "qr_finish", "qr_update_units::run",
                                     "qr_evaluate", "qr_collect")
+    backsub = backsub_region(kernel)
+    assert backsub.processes == ("backsub_set0", "backsub_set1") and not backsub.streams
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     assert counts(kernel, header) == (len(procs), len(streams))
-    assert (len(procs), len(streams)) == ((units + 4) * 2, 2 * (4 * units + 1))
+    assert (len(procs), len(streams)) == ((units + 4) * 2 + 2, 2 * (4 * units + 1))
+    assert tuple(p for p in procs if p.startswith("backsub")) == backsub.processes
     for p in procs:  # the comment block lists the plan's network
         assert f"//   process {p}\n" in kernel
 
@@ -280,8 +283,58 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     (region,) = read_network(header)
     assert region.processes == ("cpe_feed", "cpe_cascade::run", "cpe_drain")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
-    assert counts(kernel, header) == (len(procs), len(streams)) == (cpe + 2, cpe + 1)
+    assert counts(kernel, header) == (len(procs), len(streams)) == (cpe + 3, cpe + 1)
+    assert procs[-1] == "backsub_set0" and "//   process backsub_set0\n" in kernel
     assert f"//   stream cpe_link{cpe} " in kernel
+
+
+def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
+    """Issue 18: LM control's sums (|x|² in try_steps, the step test's ‖δ‖² and δᵀ(g + μδ))
+    go a term a cycle (PIPELINE II=1) into as many interleaved partial sums as the adder's
+    latency, the gradient's largest entry into as many partial maxima as the compare's, the
+    partial arrays completely partitioned; the plan prices those loops at II 1 (one
+    accumulator each, as before, runs at II = the adder's latency)."""
+    from fgc_backends.hls import HlsConfig
+    from fgc_backends.hls.emitter import accel_plan
+    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
+    kernel = (out / "lio.cpp").read_text()
+    plan = accel_plan(program, HlsConfig(scalar="double"))
+    assert plan.ops.add.latency > 1 and plan.ops.compare.latency > 1
+    assert f"T_ADD_LAT = {plan.ops.add.latency}," in kernel and "T_PARTIALS = T_ADD_LAT;" in kernel
+    assert f"T_CMP_LAT = {plan.ops.compare.latency}," in kernel
+    assert "T_MAXIMA = T_CMP_LAT;" in kernel
+    for array, update in (("xp", "xp[i % T_PARTIALS] += X[i] * X[i];"),
+                          ("dp", "dp[i % T_PARTIALS] += d * d;"),
+                          ("pp", "pp[i % T_PARTIALS] += d * (G[i] + mu[0] * d);"),
+                          ("gp", "gp[i % T_MAXIMA] = a > gp[i % T_MAXIMA]")):
+        at = kernel.index(update)
+        loop = kernel[kernel.rindex("for (int i = 0;", 0, at):at]
+        assert "#pragma HLS PIPELINE II=1\n" in loop, array
+        assert f"#pragma HLS DEPENDENCE variable={array} inter false" in loop, array
+        assert f"#pragma HLS ARRAY_PARTITION variable={array} complete" in kernel, array
+    loops = {lp.name: lp for ph in plan.phases if ph.name.startswith("lm_")
+             for pr in ph.processes for lp in pr.loops}
+    n_t = sum(v.dim for v in program.variables)
+    assert n_t >= plan.ops.add.latency
+    assert all(loops[n].ii == 1 for n in ("gradient_max", "x_norm", "step_test"))
+
+
+def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):
+    """The read-back counts what the text holds: a kernel whose backsub_level region lost a
+    unit's call (or gained a stream) no longer equals the plan's network."""
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import counts
+    from fgc_backends.hls.plan import process_network
+    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr", units=2)
+    kernel, header = _texts(out, "lio", "fgc_qr.h")
+    procs, streams = process_network(accel_plan(program, HlsConfig()))
+    assert counts(kernel, header) == (len(procs), len(streams))
+    call = "    backsub_set1(cond1, f1, s1, xs1, x1);\n"
+    assert kernel.count(call) == 1
+    assert counts(kernel.replace(call, ""), header) == (len(procs) - 1, len(streams))
+    extra = "#pragma HLS DATAFLOW\n    hls::stream<L> spare;\n"
+    widened = kernel.replace("#pragma HLS DATAFLOW\n    backsub_set0", extra + "    backsub_set0")
+    assert counts(widened, header) == (len(procs), len(streams) + 1)
 
 
 def test_accelerator_kernel_has_no_host_only_code(tmp_path):

@@ -129,11 +129,15 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     assert depth == critical_path(KernelText.of(retract_kernel(variable_class("Pose2"))),
                                   _sim_table(F32))
     assert phases["state_update"] == 2 * 24 + depth
-    # LM control: the gradient's largest entry (9 entries, II compare 2, depth 4: 20), |x|
-    # (12 storage words, II add 11, depth mul + add 19: 140), the step test (9 entries, II 11,
-    # depth 2 (8 + 11) = 38: 126), the decision (div 28 + 2 mul + 2 add + compare 2 = 68), the
-    # accepted x copied (12 words, II 1, depth 2: 13): 367
-    assert phases["lm_control"] == 20 + 140 + 126 + 68 + 13
+    # LM control per linearisation: the gradient's largest entry (9 entries into 2 = compare
+    # latency partial maxima: II 1, depth |.| 2 + compare 2 (1 + 1) = 6: 14), |x| (12 storage
+    # words into 11 partial sums: II 1, depth mul 8 + add 11 (1 + ⌈log₂ 11⌉) = 63: 74); per
+    # solve: the step test (9 entries, 9 partial sums: II ⌈11 / 9⌉ = 2, depth μδ and g + μδ
+    # 19 + 63 = 82: 98), the decision (div 28 + 2 mul + 2 add + compare 2 = 68); per accepted
+    # step: x copied (12 words, II 1, depth 2: 13)
+    assert phases["lm_iteration"] == 14 + 74
+    assert phases["lm_control"] == 98 + 68
+    assert phases["lm_accept"] == 13
     # back-substitution (fgc_backsub.h's loops in the backsub_level region; two unit sets, so
     # the copies move one word of each set's step a cycle). The root step (f 3, s 0): its
     # conditional copied in (3 x 4 words, II 1, depth 2: 13); cond_backsub: the partial sums

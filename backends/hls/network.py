@@ -64,10 +64,18 @@ def allocations(text: str) -> dict[str, tuple[tuple[str, str, int], ...]]:
     return out
 
 
+def backsub_region(kernel: str) -> Region:
+    """The kernel's back-substitution region (``backsub_level``: one process per unit)."""
+    (region,) = [r for r in read_network(kernel) if r.function == "backsub_level"]
+    return region
+
+
 def counts(kernel: str, units: str) -> tuple[int, int]:
-    """Processes and streams of the linear solver's network: the kernel's unit-set region (QR:
-    how many unit sets run side by side; Cholesky: one cascade) times the unit header's
-    innermost region (one reflection, one CPE round) with the kernel's N_UNITS / N_CPE."""
+    """Processes and streams of the kernel's process network: the linear solver's - the
+    kernel's unit-set region (QR: how many unit sets run side by side; Cholesky: one cascade)
+    times the unit header's innermost region (one reflection, one CPE round) with the kernel's
+    N_UNITS / N_CPE - and back-substitution's region (:func:`backsub_region`: its process
+    calls and any streams it declares)."""
     const = {k: int(v) for k, v in _CONSTANT.findall(kernel)}
     cfg = {f"CFG::{k}": v for k, v in const.items()}
     sets = next((len(r.processes) for r in read_network(kernel) if r.function == "qr_level"), 1)
@@ -80,11 +88,20 @@ def counts(kernel: str, units: str) -> tuple[int, int]:
                 procs += const["N_UNITS"] if "update" in call else const["N_CPE"]
             else:
                 procs += 1
-        for _, size in region.streams:
-            expr = size or "1"
-            for k, v in cfg.items():
-                expr = expr.replace(k, str(v))
-            if not re.fullmatch(r"[0-9+\-* ]+", expr):
-                raise ValueError(f"stream array size {size!r} is not a constant expression")
-            streams += eval(expr)  # noqa: S307 - digits and + - * only (checked above)
-    return procs * sets, streams * sets
+        streams += _stream_count(region, cfg)
+    backsub = backsub_region(kernel)
+    return (procs * sets + len(backsub.processes),
+            streams * sets + _stream_count(backsub, cfg))
+
+
+def _stream_count(region: Region, cfg: dict) -> int:
+    """Streams ``region`` declares (an array of streams counts its constant size)."""
+    n = 0
+    for _, size in region.streams:
+        expr = size or "1"
+        for k, v in cfg.items():
+            expr = expr.replace(k, str(v))
+        if not re.fullmatch(r"[0-9+\-* ]+", expr):
+            raise ValueError(f"stream array size {size!r} is not a constant expression")
+        n += eval(expr)  # noqa: S307 - digits and + - * only (checked above)
+    return n

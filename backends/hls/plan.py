@@ -442,13 +442,15 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
     - ``move``: one word read and written a cycle (II 1, depth 2); ``fill``: one word written
       a cycle (II 1, depth 1);
     - ``acc``: a sum of products into one accumulator: the recurrence through the adder sets
-      II = add latency, depth multiply + add; ``acc2``: two such sums side by side (the step
-      test's |δ|² and δ·(g + μδ)), depth 2 (multiply + add);
+      II = add latency, depth multiply + add (interleaved into partial sums by
+      :func:`kernel_dot`); ``acc2``: a term through two multiply-adds before its sum (the
+      rounding-noise pass's terms), depth 2 (multiply + add);
     - ``sum``: a running sum (II = depth = add latency); ``rmw``: ``+=`` into a table-addressed
       memory (the address may repeat: II = add latency, depth read + add + write);
       ``scatter``: ``+=`` into a table-addressed memory where every iteration of the loop has
       its own address (II 1, depth read + add + write);
-    - ``max``: a running maximum (compare and select: II = compare latency, depth + 2);
+    - ``max``: a running maximum (compare and select: II = compare latency, depth + 2 for the
+      read and |·|; into partial maxima by :func:`kernel_dot`, LM control's gradient maximum);
     - ``root``: one square root (√μ); ``decision``: LM control's scalar decision (gain ratio
       divide, two multiplies, two adds, a compare); ``retract``: one variable a cycle through a
       retraction-sized datapath (square root, divide, sin/cos, four multiply-adds deep), what
@@ -471,13 +473,20 @@ def kernel_loop(name: str, trip: int, kind: str, timing: dict, repeat: int = 1) 
     return Loop(name, trip, ii, depth, repeat)
 
 
-def kernel_dot(name: str, length: int, timing: dict, repeat: int = 1) -> Loop:
+def kernel_dot(name: str, length: int, timing: dict, repeat: int = 1, kind: str = "acc",
+               lead: int = 0) -> Loop:
     """A kernel loop summing ``length`` terms into the adder latency's interleaved partial sums
     (accel.cpp.jinja's T_PARTIALS / L_PARTIALS), priced by the dot-product rule
-    (:func:`dot_loop`) with the latencies of ``timing`` (:func:`kernel_timing`)."""
-    la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
-    k = max(1, min(length, la))
-    return Loop(name, length, math.ceil(la / k), lm + la * (1 + _ceil_log2(k)), repeat)
+    (:func:`dot_loop`) with the latencies of ``timing`` (:func:`kernel_timing`).
+
+    ``kind`` is the recurrence the partials break: ``"acc"`` (a sum: the adder's latency, the
+    multiply ahead of it) or ``"max"`` (a running maximum into partial maxima: the compare's
+    latency, the read and |·| ahead of it, the fold a tree of compares); ``lead``: latency
+    ahead of the multiply (the step test's g + μδ)."""
+    ii, depth = timing[kind]
+    k = max(1, min(length, ii))
+    return Loop(name, length, math.ceil(ii / k), lead + (depth - ii) + ii * (1 + _ceil_log2(k)),
+                repeat)
 
 
 def _ported(words: int) -> int:
@@ -752,9 +761,11 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     n_t = sum(v.dim for v in program.variables)
     # LM control (optimize / try_steps): the gradient's largest entry, |x|, the step test over
     # δ (|δ|² and the predicted decrease), the scalar decision, the accepted x copied back
+    # (the step test at II 1 starts three multiplies and three adds a cycle: μδ, δ·δ,
+    # δ·(g + μδ); g + μδ and the two partial sums)
     units.append(Unit("lm_control", "gain ratio, μ update, stopping rules", 1,
-                      (("add", 1), ("mul", 1), ("div", 1), ("compare", 1))))
-    phases.append(lm_control_phase(n_t, n_x, timing))
+                      (("add", 3), ("mul", 3), ("div", 1), ("compare", 1))))
+    phases += lm_control_phases(n_t, n_x, timing)
     # once per call: the top's copies of x and the data in and x out
     phases.append(setup_phase(n_x, _sizes(program)["N_DATA"], n_x, timing))
     # when a trial step does not lower the cost: the rounding-noise band from AB
@@ -968,16 +979,26 @@ def state_update_phase(variables, ops: OperatorTable, allocation=STATE_ALLOCATIO
                                                  retract_loops(variables, ops, allocation)),))
 
 
-def lm_control_phase(n_t: int, n_x: int, timing: dict) -> Phase:
+def lm_control_phases(n_t: int, n_x: int, timing: dict) -> tuple[Phase, ...]:
     """LM control as emitted (optimize / try_steps) over ``n_t`` tangent and ``n_x`` storage
-    words: the gradient's largest entry, |x|, the step test over δ, the scalar decision, the
-    accepted x copied back."""
-    return Phase("lm_control", False, (Process("decide", "lm_control", (
-        kernel_loop("gradient_max", n_t, "max", timing),
-        kernel_loop("x_norm", n_x, "acc", timing),
-        kernel_loop("step_test", n_t, "acc2", timing),
-        kernel_loop("decision", 1, "decision", timing),
-        kernel_loop("accept", n_x, "move", timing))),))
+    words, in three phases by how often their loops run: ``lm_iteration`` once per
+    linearisation (the gradient's largest entry; |x|, at the top of try_steps), ``lm_control``
+    once per linear solve (the step test over δ, the scalar decision) and ``lm_accept`` once
+    per accepted step (x_trial copied into x). A plan iteration has one of each; an LM retry
+    adds a solve, not an iteration, and the last iteration of a run often accepts nothing. The
+    gradient maximum is partial maxima and the sums (|x|², ‖δ‖² and δᵀ(g + μδ)) interleaved
+    partial sums, all PIPELINEd at II 1 and priced by the dot-product rule
+    (:func:`kernel_dot`); the step test's terms pass a multiply and an add (g + μδ) before
+    their product."""
+    lead = timing["acc"][1]  # μδ, then g + μδ
+    return (Phase("lm_iteration", False, (Process("iterate", "lm_control", (
+                kernel_dot("gradient_max", n_t, timing, kind="max"),
+                kernel_dot("x_norm", n_x, timing))),)),
+            Phase("lm_control", False, (Process("decide", "lm_control", (
+                kernel_dot("step_test", n_t, timing, lead=lead),
+                kernel_loop("decision", 1, "decision", timing))),)),
+            Phase("lm_accept", False, (Process("accept", "lm_control", (
+                kernel_loop("accept", n_x, "move", timing),)),)))
 
 
 def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict) -> Phase:
@@ -1260,11 +1281,21 @@ def unit_sets(plan: AcceleratorPlan) -> int:
     return sum(1 for u in plan.units if u.name.endswith("_evaluate"))
 
 
+def backsub_units(plan: AcceleratorPlan) -> int:
+    """Back-substitution units of ``plan``: one per QR unit set, one for Cholesky (the
+    emitted ``backsub_set<u>`` processes of back_substitute's ``backsub_level`` region)."""
+    return max(1, unit_sets(plan))
+
+
 def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Channel, ...]]:
-    """The dataflow processes and streams the emitter prints for ``plan``'s linear solver (the
-    unit headers' regions): per QR unit set broadcast, n_u Update units, Evaluate and collect;
-    for Cholesky the feed, the #CPE process elements and the drain. Streams are the plan's
-    stream channels."""
+    """The dataflow processes and streams the emitter prints for ``plan``: the linear solver's
+    (the unit headers' regions: per QR unit set broadcast, qr_finish, n_u Update units,
+    Evaluate and collect; for Cholesky the feed, the #CPE process elements and the drain),
+    then back-substitution's (the kernel's ``backsub_level`` region: one ``backsub_set<u>``
+    per unit, :func:`backsub_units`, side by side). Streams are the plan's stream channels;
+    the back-substitution units have none (each reads its own conditional and separator
+    buffers and writes its own frontal buffer, the region's arguments: nothing passes from
+    one unit to another)."""
     if plan.linear == "qr":
         procs = tuple(p for s in range(unit_sets(plan)) for p in (
             f"qr{s}_broadcast", f"qr{s}_finish",
@@ -1272,4 +1303,5 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
             f"qr{s}_evaluate", f"qr{s}_collect"))
     else:
         procs = ("cpe_feed", *(f"cpe{i}" for i in range(plan.options.cpe)), "cpe_drain")
+    procs += tuple(f"backsub_set{u}" for u in range(backsub_units(plan)))
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")

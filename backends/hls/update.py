@@ -71,7 +71,7 @@ from fgc_backends.hls.plan import (
     hgc_loops,
     kernel_loop,
     kernel_timing,
-    lm_control_phase,
+    lm_control_phases,
     phase_cycles,
     plan_cost,
     plan_sizes,
@@ -299,7 +299,7 @@ class UpdateModel:
         phases.append(state_update_phase(view.variables, self.plan.ops,
                                          self.plan.options.state_allocation))
         phases.append(self._factor_phase("cost", inst))
-        phases.append(self._lm_phase(view.variables))
+        phases += self._lm_phases(view.variables)
         return tuple(phases)
 
     def setup_phase(self, first: int, last: int, mode: str) -> Phase:
@@ -472,11 +472,11 @@ class UpdateModel:
     def _retract(self, variables, name) -> Loop:
         return kernel_loop(name, variables, "retract", self.timing)
 
-    def _lm_phase(self, variables) -> Phase:
-        """LM control (the plan's loops) over the window's δ and x."""
+    def _lm_phases(self, variables) -> tuple[Phase, ...]:
+        """LM control (the plan's two phases) over the window's δ and x."""
         n_x = sum(v.storage_dim for v in variables)
         n_t = sum(v.dim for v in variables)
-        return lm_control_phase(n_t, n_x, self.timing)
+        return lm_control_phases(n_t, n_x, self.timing)
 
     def _linear_cycles(self, first, last, damping) -> int:
         return sum(phase_cycles(ph) for ph in self._linear_phases(first, last, damping))

@@ -338,6 +338,20 @@ inline T fold_partials(T part[P]) {
     return part[0];
 }
 
+// Fold P partial maxima in a binary tree (ceil(log2 P) compares deep), a fixed order.
+template <class T, int P>
+inline T fold_maxima(T part[P]) {
+#pragma HLS INLINE
+    for (int step = 1; step < P; step *= 2) {
+#pragma HLS UNROLL
+        for (int i = 0; i < P; i += 2 * step) {
+#pragma HLS UNROLL
+            if (i + step < P && part[i + step] > part[i]) part[i] = part[i + step];
+        }
+    }
+    return part[0];
+}
+
 }  // namespace fgc_units
 
 #endif  // FGC_CYCLES_H

@@ -7,9 +7,10 @@
 // -> the HGC (Gram of each factor) -> per step the frontal matrix through the #CPE cascade
 // -> back-substitution -> state update (retract) -> the factor datapaths (cost mode) -> LM control.
 //
-// The elimination's process network (from the plan; every DATAFLOW region of the units is one of
-// these; back_substitute's backsub_level region runs one cond_backsub per unit set side by side):
-//   22 processes, 21 streams (cpe=20)
+// The linear solver's process network (from the plan): the units' DATAFLOW regions, then
+// back_substitute's backsub_level region (backsub_set<u>: one cond_backsub unit per unit set,
+// side by side, no streams between them):
+//   23 processes, 21 streams (cpe=20)
 //   process cpe_feed
 //   process cpe0
 //   process cpe1
@@ -32,6 +33,7 @@
 //   process cpe18
 //   process cpe19
 //   process cpe_drain
+//   process backsub_set0
 //   stream cpe_link0 depth=30: cpe_feed -> cpe0
 //   stream cpe_link1 depth=30: cpe0 -> cpe1
 //   stream cpe_link2 depth=30: cpe1 -> cpe2
@@ -82,6 +84,8 @@ const int MAX_LD = 32;  // padded row length of the widest step
 const int PORTS = 2;  // words a cycle through a memory's two ports (true dual-port RAM): the copies
 const int T_ADD_LAT = 11, T_MUL_LAT = 8, T_PARTIALS = T_ADD_LAT;
 const int L_ADD_LAT = 11, L_MUL_LAT = 8, L_PARTIALS = L_ADD_LAT;
+// LM control's running maximum: the compare's latency, |.| ahead of it; T_MAXIMA partial maxima
+const int T_CMP_LAT = 2, T_ABS_LAT = 2, T_MAXIMA = T_CMP_LAT;
 const int N_CPE = 20;  // --cpe: process elements of the cascade
 const int STATUS_CONVERGED = 0;
 const int STATUS_MAX_ITERATIONS = 1;
@@ -3113,25 +3117,52 @@ struct Step {
 
 Step try_steps(T cost, T mu[1]) {
     T band = T(-1);  // not yet known
-    T x_norm2 = T(0);
-    for (int i = 0; i < N_X; ++i) x_norm2 += X[i] * X[i];
-    const T x_norm = fgc_sqrt(x_norm2);
-    FGC_PHASE("lm_control");
-    FGC_CYCLES("lm_control", 0, "x_norm", N_X, 11, 19);
+    // |x|^2: word i into partial sum i % T_PARTIALS (a word a cycle: II 1), folded in a tree;
+    // once per call (per linearisation), not per solve
+    T xp[T_PARTIALS];
+#pragma HLS ARRAY_PARTITION variable=xp complete
+    for (int p = 0; p < T_PARTIALS; ++p) {
+#pragma HLS UNROLL
+        xp[p] = T(0);
+    }
+    for (int i = 0; i < N_X; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=xp inter false
+        xp[i % T_PARTIALS] += X[i] * X[i];
+    }
+    const T x_norm = fgc_sqrt(fgc_units::fold_partials<T, T_PARTIALS>(xp));
+    FGC_PHASE("lm_iteration");
+    FGC_CYCLES("iterate", 0, "x_norm", N_X, fgc_units::dot_ii(N_X, T_PARTIALS, T_ADD_LAT),
+               fgc_units::dot_depth(N_X, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
     for (int t = 0; t < MAX_TRIES; ++t) {
         const bool solved = solve(mu[0]);
         if (!solved && !(mu[0] > T(0))) return Step{2, REASON_SINGULAR, cost, T(0)};
         bool ok = solved;
-        T d2 = T(0), predicted = T(0);
-        for (int i = 0; i < N_TANGENT; ++i) {
-            ok = ok && fgc_isfinite(DELTA[i]);
-            d2 += DELTA[i] * DELTA[i];
-            predicted += DELTA[i] * (G[i] + mu[0] * DELTA[i]);
+        // the step test: |delta|^2 and delta^T (g + mu delta), entry i into partial sums
+        // i % T_PARTIALS of each (II 1), folded in a tree
+        T dp[T_PARTIALS], pp[T_PARTIALS];
+#pragma HLS ARRAY_PARTITION variable=dp complete
+#pragma HLS ARRAY_PARTITION variable=pp complete
+        for (int p = 0; p < T_PARTIALS; ++p) {
+#pragma HLS UNROLL
+            dp[p] = T(0);
+            pp[p] = T(0);
         }
-        predicted = T(0.5) * predicted;
+        for (int i = 0; i < N_TANGENT; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=dp inter false
+#pragma HLS DEPENDENCE variable=pp inter false
+            const T d = DELTA[i];
+            ok = ok && fgc_isfinite(d);
+            dp[i % T_PARTIALS] += d * d;
+            pp[i % T_PARTIALS] += d * (G[i] + mu[0] * d);
+        }
+        const T d2 = fgc_units::fold_partials<T, T_PARTIALS>(dp);
+        const T predicted = T(0.5) * fgc_units::fold_partials<T, T_PARTIALS>(pp);
         FGC_PHASE("lm_control");
-        FGC_CYCLES("lm_control", 0, "step_test", N_TANGENT, 11, 38);
-        FGC_CYCLES("lm_control", 0, "decision", 1, 1, 68);
+        FGC_CYCLES("decide", 0, "step_test", N_TANGENT, fgc_units::dot_ii(N_TANGENT, T_PARTIALS, T_ADD_LAT),
+                   T_MUL_LAT + T_ADD_LAT + fgc_units::dot_depth(N_TANGENT, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("decide", 0, "decision", 1, 1, 68);
         if (ok) {
             if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
             retract_all(X, DELTA, X_TRIAL);
@@ -3174,10 +3205,24 @@ void optimize(T errors[2], int info[3]) {
             break;
         }
         ++it;
-        T g_max = T(0);
-        for (int i = 0; i < N_TANGENT; ++i) g_max = fgc_abs(G[i]) > g_max ? fgc_abs(G[i]) : g_max;
-        FGC_PHASE("lm_control");
-        FGC_CYCLES("lm_control", 0, "gradient_max", N_TANGENT, 2, 4);
+        // the gradient's largest entry: entry i into partial maximum i % T_MAXIMA (II 1),
+        // folded in a tree of compares
+        T gp[T_MAXIMA];
+#pragma HLS ARRAY_PARTITION variable=gp complete
+        for (int p = 0; p < T_MAXIMA; ++p) {
+#pragma HLS UNROLL
+            gp[p] = T(0);
+        }
+        for (int i = 0; i < N_TANGENT; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=gp inter false
+            const T a = fgc_abs(G[i]);
+            gp[i % T_MAXIMA] = a > gp[i % T_MAXIMA] ? a : gp[i % T_MAXIMA];
+        }
+        const T g_max = fgc_units::fold_maxima<T, T_MAXIMA>(gp);
+        FGC_PHASE("lm_iteration");
+        FGC_CYCLES("iterate", 0, "gradient_max", N_TANGENT, fgc_units::dot_ii(N_TANGENT, T_MAXIMA, T_CMP_LAT),
+                   fgc_units::dot_depth(N_TANGENT, T_MAXIMA, T_CMP_LAT, T_ABS_LAT));
         if (g_max < EPS_GRADIENT) {
             status = STATUS_CONVERGED;
             reason = REASON_GRADIENT;
@@ -3193,8 +3238,9 @@ void optimize(T errors[2], int info[3]) {
                                                                     : step.predicted;
         const T change = cost > T(0) ? T(moved / cost) : T(0);
         for (int i = 0; i < N_X; ++i) X[i] = X_TRIAL[i];
-        FGC_PHASE("lm_control");
-        FGC_CYCLES("lm_control", 0, "accept", N_X, 1, 2);
+        FGC_EVENT("accept");
+        FGC_PHASE("lm_accept");
+        FGC_CYCLES("accept", 0, "accept", N_X, 1, 2);
         cost = step.cost;
         if (cost <= ABS_TOL) {
             status = STATUS_CONVERGED;
