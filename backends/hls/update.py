@@ -370,9 +370,10 @@ class UpdateModel:
 
     def trial_cycles(self, first: int, last: int, mode: str) -> int:
         """One rejected trial step as the kernel runs it (``try_steps``): the per-iteration
-        phases without the Jacobian pass and the gradient / HGC (kept from the linearisation),
-        LM control reduced to the step test and its decision. A batch keyframe: the batch
-        Program's own plan; otherwise the window's phases."""
+        phases without the Jacobian pass, the gradient / HGC and LM control's per-linearisation
+        and per-accept loops (``lm_iteration``, ``lm_accept``): the linear solve, the state
+        update, the cost pass and the step test with its decision (``lm_control``). A batch
+        keyframe: the batch Program's own plan; otherwise the window's phases."""
         if mode == "batch":
             program = (self.program if last == len(self.clusters) - 1
                        else self.batch_program(last) if self.batch_program is not None
@@ -385,16 +386,10 @@ class UpdateModel:
                       if ph.per == "iteration"]
         else:
             phases = list(self.window_iteration_phases(first, last))
-        total = 0
-        for ph in phases:
-            if ph.name in ("factor_jacobian", "gradient", "hgc"):
-                continue
-            if ph.name == "lm_control":
-                ph = Phase(ph.name, ph.dataflow, tuple(
-                    Process(pr.name, pr.unit, tuple(lp for lp in pr.loops if lp.name.startswith(
-                        ("step_test", "decision")))) for pr in ph.processes))
-            total += phase_cycles(ph)
-        return total
+        # kept from the linearisation: the Jacobian pass, the gradient / HGC and LM control's
+        # once-per-linearisation loops; nothing accepted: no copy of the trial x
+        kept = ("factor_jacobian", "gradient", "hgc", "lm_iteration", "lm_accept")
+        return sum(phase_cycles(ph) for ph in phases if ph.name not in kept)
 
     def _kept_terms(self, first, last) -> list[Term]:
         """Back-substitution through the kept conditionals first − 1 … 0 (plan), with the
