@@ -268,6 +268,62 @@ def test_a_corrupted_kept_conditional_is_caught(incremental8, monkeypatch):
     assert max(dist) > 100 * STREAM_TOL
 
 
+def _python_walk(stream, kept, x):
+    """The reference back-substitution (the host's NumPy formula before it was compiled):
+    x_c = lin_c ⊕ R_c⁻¹(d_c − S_c·Log(lin_next_c⁻¹ x_c+1)), c = count − 1 … 0."""
+    geometry = stream.geometry
+    for c in range(kept.count - 1, -1, -1):
+        rhs = kept.d[c] - kept.s[c] @ geometry.local(kept.lin_next[c], x[c + 1])
+        x[c] = geometry.retract(kept.lin[c], np.linalg.solve(kept.r[c], rhs))
+    return x
+
+
+def test_the_compiled_kept_walk_is_the_python_formula(incremental8):
+    """The native library's back-substitution through the kept conditionals (fgc_kept_walk) on
+    the kept Bayes net the real stream left (LIO N = 8, K = 4): the same estimate as the NumPy
+    formula to 1e-14 per storage entry (measured 1.4e-17: the two back-substitutions' rounding,
+    LAPACK's solve against a row-by-row one), from keyframes it must write (NaN before the walk);
+    the re-expression's Log and its central-difference Jacobian (fgc_local_jacobian) likewise
+    (measured identical; 1e-8 is the central differences' rounding bound, eps·|Log| / h)."""
+    *_, stream, native = incremental8
+    kept = stream.kept
+    assert stream.compiled is not None and kept.count == native.updates[-1]["first"] == 4
+    expected = _python_walk(stream, kept, kept.x.copy())
+    walked = kept.x.copy()
+    walked[:kept.count] = np.nan
+    stream.compiled.walk(kept.count, kept.r, kept.s, kept.d, kept.lin, kept.lin_next, walked)
+    assert np.isfinite(walked).all()
+    assert np.abs(walked - expected).max() <= 1e-14
+    assert np.array_equal(walked, kept.x)  # what the stream's last update computed
+    # at the points the stream re-expressed at (Log ≈ 0) and between consecutive keyframes
+    pairs = [(kept.lin_next[c], kept.x[c + 1]) for c in range(kept.count)]
+    pairs += [(kept.lin[c], kept.x[c + 1]) for c in range(kept.count)]
+    for lin, x in pairs:
+        local, jac = stream.geometry.local_jacobian(lin, x)
+        compiled_local, compiled_jac = stream.compiled.local_jacobian(lin, x)
+        assert np.abs(compiled_local - local).max() <= 1e-14 * max(1.0, np.abs(local).max())
+        assert np.abs(compiled_jac - jac).max() <= 1e-8
+    assert np.abs(jac - np.eye(len(local))).max() > 1e-3  # a keyframe's motion, not I
+
+
+def test_the_compiled_host_path_agrees_with_the_python_one(incremental8):
+    """The whole stream with the host work compiled (default) and in NumPy (host="python", the
+    path before): the same iterations, every variable after every keyframe within 1e-12
+    (measured 1.4e-17, identical until the first walk; on LIO N = 8, K = 3 with a batch step at
+    5 the last keyframe differs by 7.9e-10: the window's LM carries a 1e-14 difference of
+    earlier updates through a kept conditional)."""
+    graph, program, data, _, _, stream, native = incremental8
+    python = IncrementalStream(graph, program, host="python")
+    assert python.compiled is None
+    reference = python.run(data)
+    dist = []
+    for record, expected in zip(native.updates, reference.updates, strict=True):
+        assert record["iterations"] == expected["iterations"]
+        mine, theirs = (keyframe_result(program, r).values for r in (record, expected))
+        dist.append(max(float(np.linalg.norm(theirs[k].local(v))) for k, v in mine.items()))
+    assert max(dist) <= 1e-12, dist
+
+
 @pytest.mark.heavy  # ~14 s: the batch optimum and accuracy summary of the CLI report
 def test_cli_stream_backend_native_incremental(incremental8, capsys):
     """The CLI path of the same stream (its template is built already)."""
