@@ -562,16 +562,32 @@ class _Stream:
                 x_all[c, offsets[p]:offsets[p + 1]] = estimate[k]
                 estimate[k] = x_all[c, offsets[p]:offsets[p + 1]]
             self._keyframe_index.append([self.index[k] for k in keys])
+        # per position in a keyframe: its variables' indices over the keyframes, as a slice
+        # (start, step) when they are evenly spaced in the Program's order (the usual
+        # keyframe-major order), else None
+        self._spaced = []
+        for p in range(len(first)):
+            column = [row[p] for row in self._keyframe_index]
+            step = column[1] - column[0] if len(column) > 1 else 1
+            even = step > 0 and column == list(range(column[0], column[0] + step * len(column),
+                                                     step))
+            self._spaced.append((column[0], step) if even else None)
         return estimate, x_all
 
     def _snapshot_keyframes(self, x_all: np.ndarray, newest: int) -> list:
-        """:meth:`_snapshot` of keyframes 0 … newest from the keyframe-major array (one
-        conversion of the rows to lists, then list slices)."""
+        """:meth:`_snapshot` of keyframes 0 … newest from the keyframe-major array: per position
+        in a keyframe, one conversion of its column block to lists, placed by a slice
+        assignment (a loop where the Program's order is not evenly spaced)."""
         snapshot = [None] * len(self.program.variables)
-        for row, indices in zip(x_all[:newest + 1].tolist(), self._keyframe_index[:newest + 1],
-                                strict=True):
-            for (a, b), i in zip(self._layout, indices, strict=True):
-                snapshot[i] = row[a:b]
+        count = newest + 1
+        for p, ((a, b), spaced) in enumerate(zip(self._layout, self._spaced, strict=True)):
+            values = x_all[:count, a:b].tolist()
+            if spaced is not None:
+                start, step = spaced
+                snapshot[start:start + step * count:step] = values
+            else:
+                for row, value in zip(self._keyframe_index[:count], values, strict=True):
+                    snapshot[row[p]] = value
         return snapshot
 
     def _snapshot(self, estimate: dict, oldest: int, newest: int) -> list:
