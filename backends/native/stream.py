@@ -94,8 +94,11 @@ def marginal_prior_type(types: tuple[type, ...]) -> FactorType:
 class NativeStreamResult:
     """A native fixed-lag stream: the final estimate (every variable where the last update that
     held it left it), per-update records as the simulator's (``keyframe``, ``mode``, ``first``,
-    ``iterations``, ``status``, ``reason``, ``cost``, ``seconds``, ``values``) plus
-    ``solve_seconds`` (the native call) and ``marginal_seconds``."""
+    ``iterations``, ``status``, ``reason``, ``cost``, ``seconds``, ``values``: per Program
+    variable its storage, None where the update holds none; a list per variable in the
+    fixed-lag stream, a tuple in the incremental one, :class:`IncrementalStream`) plus
+    ``solve_seconds`` (the native call) and ``marginal_seconds`` (fixed-lag) or
+    ``store_seconds`` (incremental)."""
 
     values: dict
     storage: dict
@@ -575,13 +578,16 @@ class _Stream:
         return estimate, x_all
 
     def _snapshot_keyframes(self, x_all: np.ndarray, newest: int) -> list:
-        """:meth:`_snapshot` of keyframes 0 … newest from the keyframe-major array: per position
-        in a keyframe, one conversion of its column block to lists, placed by a slice
-        assignment (a loop where the Program's order is not evenly spaced)."""
+        """:meth:`_snapshot` of keyframes 0 … newest from the keyframe-major array, each
+        variable's storage a tuple: per position in a keyframe, its column block converted at
+        once and placed by a slice assignment (a loop where the Program's order is not evenly
+        spaced). Tuples, not lists: tuples of floats leave the garbage collector's lists after
+        its first pass, while the lists of every record kept (O(j²) of them over a stream) made
+        its collections cost as much as the rest of the stream's host work."""
         snapshot = [None] * len(self.program.variables)
         count = newest + 1
         for p, ((a, b), spaced) in enumerate(zip(self._layout, self._spaced, strict=True)):
-            values = x_all[:count, a:b].tolist()
+            values = list(zip(*x_all[:count, a:b].T.tolist(), strict=True))
             if spaced is not None:
                 start, step = spaced
                 snapshot[start:start + step * count:step] = values
