@@ -324,6 +324,19 @@ def test_the_compiled_host_path_agrees_with_the_python_one(incremental8):
     assert max(dist) <= 1e-12, dist
 
 
+def test_a_library_without_the_stream_host_code_falls_back_to_numpy(incremental8):
+    """A float or fixed-point build has no fgc_kept_walk: the stream runs the NumPy formulas."""
+    from types import SimpleNamespace
+
+    from fgc_backends.native.stream import _CompiledGeometry
+
+    *_, stream, _ = incremental8
+    window = stream.solvers[stream.sizes[0]]
+    assert _CompiledGeometry.of(window, stream.geometry) is not None
+    bare = SimpleNamespace(solver=SimpleNamespace(library=object()))
+    assert _CompiledGeometry.of(bare, stream.geometry) is None
+
+
 @pytest.mark.heavy  # ~14 s: the batch optimum and accuracy summary of the CLI report
 def test_cli_stream_backend_native_incremental(incremental8, capsys):
     """The CLI path of the same stream (its template is built already)."""

@@ -488,7 +488,7 @@ class _CompiledGeometry:
     def of(cls, window: WindowSolver, geometry: _ClusterGeometry) -> _CompiledGeometry | None:
         """The compiled host kernels of ``window``'s native library for its keyframes (kinds by
         the library's retraction order: first appearance of each type in the template)."""
-        library = window.solver.library
+        library = getattr(getattr(window, "solver", None), "library", None)
         if not (hasattr(library, "fgc_kept_walk") and hasattr(library, "fgc_local_jacobian")):
             return None
         order: dict[str, int] = {}
