@@ -19,8 +19,9 @@ native estimate is from the simulator's after every keyframe.
 Default mode. The native fixed-lag row (fgc_backends.native.stream) times each whole update:
 assembling the window's numbers, the native LM solve and the marginalisation of the keyframe
 leaving; its "solve" and "marginal" lines split that time. With ``--incremental`` a native
-incremental row (IncrementalStream; the whole update: the library's window solve plus the
-host's store elimination and back-substitution through the kept conditionals, split likewise)
+incremental row (IncrementalStream; the whole update: the library's window solve, the host's
+assembly and NumPy store elimination of the window, and the back-substitution through every kept
+conditional and the re-expression, one library call each; split into the solve and the rest)
 and its distance from gtsam.ISAM2 run with the same policy and from the plain ISAM2 row. The
 libraries are built before the stream (not timed). The simulator is NumPy (a functional model
 of the accelerator, not a fast solver): its wall time is not the accelerator's latency, which
@@ -185,9 +186,10 @@ def hls_model(args) -> dict:
           f"{sol.precision}, {sol.clock_mhz:g} MHz) - model estimates, not measured; "
           f"{NOT_EMITTED}")
     print(f"native: fgc_backends.native.stream.IncrementalStream, double, the same K and batch "
-          f"keyframes; wall time of the whole update (the library's LM solve of the window "
-          f"plus the host's NumPy store elimination and back-substitution through the kept "
-          f"conditionals), median of {args.repeat} runs in this process, its template "
+          f"keyframes; wall time of the whole update (the library's LM solve of the window, "
+          f"the host's assembly and NumPy store elimination of the window, and the "
+          f"back-substitution through the kept conditionals and the re-expression, one "
+          f"library call each), median of {args.repeat} runs in this process, its template "
           f"libraries built before timing; 'solve': the library call alone "
           f"(status {', '.join(sorted(statuses))})")
     print(f"ISAM2: one update per keyframe, wall time, median of {args.repeat} runs in this "
@@ -417,7 +419,8 @@ def main(argv=None) -> int:
         split = out["native_incremental_split"]
         print(f"native incremental update split: library LM solve median "
               f"{split['solve']['median_ms']:.3f} ms, p99 {split['solve']['p99_ms']:.3f} ms; "
-              f"host store elimination + back-substitution through the kept conditionals "
+              f"after the solve (store elimination in NumPy; re-expression and back-substitution "
+              f"through the kept conditionals in the library) "
               f"median {split['store']['median_ms']:.3f} ms, p99 "
               f"{split['store']['p99_ms']:.3f} ms (status {out['native_incremental_status']})")
         vs = out["native_incremental_vs_isam2"]

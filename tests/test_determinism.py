@@ -79,3 +79,21 @@ def test_examples_are_byte_identical_across_runs_and_hash_seeds(tmp_path, chosen
         got = {n.split("/", 2)[1] for n in outputs["1"] if n.startswith(f"{name}/")}
         assert got == set(names()), name
         assert f"{name}/sim/program.json" in outputs["1"], name
+
+
+def test_a_double_native_build_with_the_stream_host_code_is_byte_identical(tmp_path):
+    """The examples above compile in float32, whose native build has no stream host code; a
+    float64 Pose3 graph's native build holds it (fgc_kept_walk, fgc_local_jacobian and the Log
+    kernels printed for them) and is byte-identical under two hash seeds, each from an empty
+    cache."""
+    outputs = {}
+    for seed in ("1", "2"):
+        env = dict(os.environ, PYTHONHASHSEED=seed, FGC_CACHE_DIR=str(tmp_path / f"cache{seed}"))
+        out = tmp_path / f"seed{seed}"
+        subprocess.run([sys.executable, "-m", "fgc.app.cli", "compile", *EXAMPLES["pose3"],
+                        "--precision", "float64", "--backend", "native", "--out", str(out)],
+                       cwd=ROOT, env=env, check=True, capture_output=True, text=True)
+        outputs[seed] = _files(out)
+    assert outputs["1"] == outputs["2"]
+    kernel = outputs["1"]["pose_graph.cpp"].decode()
+    assert "kept_walk(" in kernel and "void local_0(" in kernel and "so3_log(" in kernel

@@ -52,6 +52,47 @@ def retract_kernel(cls: type[LieGroup]) -> Kernel:
     return Kernel(tuple(x + d), tuple(reps), tuple(reduced))
 
 
+def local_kernel(cls: type[LieGroup]) -> Kernel:
+    """Kernel with inputs (storage of a, storage of b) and outputs Log(a⁻¹ b) (``a.local(b)``)."""
+    a = [sp.Symbol(f"a{i}", real=True) for i in range(cls.storage_dim)]
+    b = [sp.Symbol(f"b{i}", real=True) for i in range(cls.storage_dim)]
+    tangent = cls.from_storage(list(a)).local(cls.from_storage(list(b)))
+    outputs = [sp.sympify(tangent[i]) for i in range(cls.dim)]
+    reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols("_l", real=True), order="none")
+    return Kernel(tuple(a + b), tuple(reps), tuple(reduced))
+
+
+@dataclass(frozen=True)
+class LocalKind:
+    """The local coordinates Log(a⁻¹b) of one variable type (a :class:`RetractKind`'s ``kind``)
+    as a printed kernel ``local_<kind>(a, b, out)``; ``flat``: a vector space stored as its
+    tangent, whose Log is b − a (the host stream takes it as that, and its derivative as I)."""
+
+    kind: int
+    type_name: str
+    storage_dim: int
+    dim: int
+    flat: bool
+    printed: PrintedKernel
+
+
+def local_kinds(program: Program) -> tuple[LocalKind, ...]:
+    """One :class:`LocalKind` per variable type of ``program``, in the order (and with the
+    indices) of :func:`retract_kinds`."""
+    kinds, seen = [], {}
+    for spec in program.variables:
+        seen.setdefault(spec.type_name, spec)
+    for kind, name in enumerate(seen):
+        cls = variable_class(name)
+        names = [f"a[{i}]" for i in range(cls.storage_dim)] + [
+            f"b[{i}]" for i in range(cls.storage_dim)]
+        printed = print_kernel(local_kernel(cls), names, f"local coordinates of kind {kind}",
+                               prefix="l")
+        flat = issubclass(cls, geometry.VectorSpace) and cls.storage_dim == cls.dim
+        kinds.append(LocalKind(kind, name, cls.storage_dim, cls.dim, flat, printed))
+    return tuple(kinds)
+
+
 def retract_kinds(program: Program) -> tuple[RetractKind, ...]:
     """One :class:`RetractKind` per variable type of ``program``, in first-appearance order."""
     order: dict[str, list[int]] = {}

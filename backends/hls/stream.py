@@ -11,13 +11,14 @@ folder), its C simulation built on the first update and re-run on every later up
 ``data.txt``, nothing is rebuilt).
 
 What runs where. The C simulation runs each window's LM solve. Everything between updates runs
-on the host in Python, as for the native stream: the kept conditionals, the marginal prior τ a
-window's oldest keyframe carries, the undamped store elimination at the window's optimum, the
-back-substitution down to keyframe 0 and the first-order re-expression of the newest kept
-conditional. The store elimination needs the window's whitened rows at the optimum, which the
-testbench does not report: the host linearises with the native ``double`` build of the same
-template (``fgc_rows``). So in this path the kept Bayes net lives on the host, not on chip as in
-paper A's accelerator; the on-chip state between calls is not emitted.
+on the host, as for the native stream: the kept conditionals, the marginal prior τ a window's
+oldest keyframe carries and the undamped store elimination at the window's optimum in Python;
+the back-substitution down to keyframe 0 and the first-order re-expression of the newest kept
+conditional in the native ``double`` build of the same template (``fgc_kept_walk``,
+``fgc_local_jacobian``), which also gives the store elimination the window's whitened rows at
+the optimum that the testbench does not report (``fgc_rows``). So in this path the kept Bayes
+net lives on the host, not on chip as in paper A's accelerator; the on-chip state between calls
+is not emitted.
 """
 
 from __future__ import annotations

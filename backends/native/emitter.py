@@ -19,17 +19,24 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import jinja2
+import numpy as np
 
 from fgc.ir.program import Program
 from fgc_backends.cfamily import limits
 from fgc_backends.cfamily.context import common_context
 from fgc_backends.cfamily.names import identifier
+from fgc_backends.cfamily.printer import HlsCodePrinter
+from fgc_backends.cfamily.retract import local_kinds
 from fgc_backends.cfamily.scalars import (
     check_fixed_constants,
     kernel_constants,
 )
 from fgc_backends.hls.lint import lint_files
 from fgc_backends.native.config import NativeConfig, NativeConfigError
+
+# the central-difference step of the stream's re-expression Jacobian (fgc_local_jacobian), the
+# simulator's (Chain.local_jacobian)
+JACOBIAN_STEP = float(np.sqrt(np.finfo(np.float64).eps) * 10)
 
 # template → emitted file name ({name} is the project identifier)
 FILES = (("kernel.h.jinja", "{name}.h"), ("kernel.cpp.jinja", "{name}.cpp"),
@@ -134,7 +141,13 @@ def _context(program: Program, config: NativeConfig, project: str) -> dict:
     blocks = context["blocks"]
     host_lanes = lanes(config)
     row_words = [len(b.instances) * b.m * b.stride for b in blocks]  # fgc_rows' layout
+    # the incremental stream's host work (fgc_kept_walk, fgc_local_jacobian) in a double build:
+    # the stream's host arithmetic is double, whatever another build's scalar
+    stream_host = config.scalar_cxx == "double"
     return context | {
+        "stream_host": stream_host,
+        "locals": local_kinds(program) if stream_host else (),
+        "jacobian_step": HlsCodePrinter({}).literal(JACOBIAN_STEP),
         "rows_offsets": [sum(row_words[:i]) for i in range(len(blocks))],
         "n_rows": sum(row_words),
         "cpu_program": True,

@@ -94,8 +94,11 @@ def marginal_prior_type(types: tuple[type, ...]) -> FactorType:
 class NativeStreamResult:
     """A native fixed-lag stream: the final estimate (every variable where the last update that
     held it left it), per-update records as the simulator's (``keyframe``, ``mode``, ``first``,
-    ``iterations``, ``status``, ``reason``, ``cost``, ``seconds``, ``values``) plus
-    ``solve_seconds`` (the native call) and ``marginal_seconds``."""
+    ``iterations``, ``status``, ``reason``, ``cost``, ``seconds``, ``values``: per Program
+    variable its storage, None where the update holds none; a list per variable in the
+    fixed-lag stream, a tuple in the incremental one, :class:`IncrementalStream`) plus
+    ``solve_seconds`` (the native call) and ``marginal_seconds`` (fixed-lag) or
+    ``store_seconds`` (incremental)."""
 
     values: dict
     storage: dict
@@ -107,6 +110,22 @@ class NativeStreamResult:
     # graph's error is not evaluated (the stream never holds the whole graph)
     initial_error: float | None = None
     template: Program | None = None
+
+
+@dataclass
+class KeptNet:
+    """The kept Bayes net of an incremental stream, keyframe-major: conditional c is
+    R_c·δ_c + S_c·δ_c+1 = d_c (``r``, ``s``: n × n each; ``d``), linearised at ``lin`` [c] with
+    its parent at ``lin_next`` [c]; ``x`` the estimate (one keyframe's storage a row);
+    ``count``: how many conditionals the last back-substitution walked (its window's first)."""
+
+    count: int
+    r: np.ndarray
+    s: np.ndarray
+    d: np.ndarray
+    lin: np.ndarray
+    lin_next: np.ndarray
+    x: np.ndarray
 
 
 class WindowSolver:
@@ -443,6 +462,75 @@ class _ClusterGeometry:
         return self.local(lin, x), jac
 
 
+class _CompiledGeometry:
+    """The incremental stream's per-update host arithmetic in a native library (a double build:
+    ``fgc_kept_walk`` and ``fgc_local_jacobian``, emitted beside the solver from the same
+    retraction and Log kernels its factors use): the back-substitution through every kept
+    conditional in one call on contiguous arrays, and the re-expression's Log and its
+    central-difference Jacobian. :meth:`of` is None for a library without them (a float or
+    fixed-point build): the stream then runs :class:`_ClusterGeometry` in Python."""
+
+    def __init__(self, library, kinds: np.ndarray, n: int, m: int):
+        import ctypes
+
+        self.kinds, self.n, self.m = kinds, n, m
+        self._kinds = kinds.__array_interface__["data"][0]
+        self._walk, self._jacobian = library.fgc_kept_walk, library.fgc_local_jacobian
+        self._walk.argtypes = [ctypes.c_int] * 2 + [ctypes.c_void_p] + [ctypes.c_int] * 2 + [
+            ctypes.c_void_p] * 6
+        self._walk.restype = ctypes.c_int
+        self._jacobian.argtypes = [ctypes.c_int, ctypes.c_void_p, ctypes.c_int, ctypes.c_int] + [
+            ctypes.c_void_p] * 4
+        self._jacobian.restype = ctypes.c_int
+        self._local, self._jac = np.empty(n), np.empty((n, n))
+
+    @classmethod
+    def of(cls, window: WindowSolver, geometry: _ClusterGeometry) -> _CompiledGeometry | None:
+        """The compiled host kernels of ``window``'s native library for its keyframes (kinds by
+        the library's retraction order: first appearance of each type in the template)."""
+        library = getattr(getattr(window, "solver", None), "library", None)
+        if not (hasattr(library, "fgc_kept_walk") and hasattr(library, "fgc_local_jacobian")):
+            return None
+        order: dict[str, int] = {}
+        for v in window.template.variables:
+            order.setdefault(v.type_name, len(order))
+        by_key = {v.key: v for v in window.template.variables}
+        keys = window.program.schedule.clusters[0]
+        kinds = np.array([order[by_key[k].type_name] for k in keys], dtype=np.int32)
+        m = sum(by_key[k].storage_dim for k in keys)
+        return cls(library, kinds, geometry.dim, m)
+
+    def local_jacobian(self, lin: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """As :meth:`_ClusterGeometry.local_jacobian` (the same central differences), compiled."""
+        lin, x = np.ascontiguousarray(lin), np.ascontiguousarray(x)
+        if self._jacobian(len(self.kinds), self._kinds, self.n, self.m, _data(lin, self.m),
+                          _data(x, self.m), _data(self._local, self.n),
+                          _data(self._jac, self.n * self.n)):
+            raise NativeStreamError("internal error: the library's keyframe layout is not the "
+                                    "stream's")
+        return self._local.copy(), self._jac.copy()
+
+    def walk(self, count: int, r, s, d, lin, lin_next, x) -> None:
+        """x_c = lin_c ⊕ R_c⁻¹(d_c − S_c·Log(lin_next_c⁻¹ x_c+1)) for c = count − 1 … 0, in place
+        on ``x`` (keyframe-major storage; x_count is read): the arrays keyframe-major, C order."""
+        n, m = self.n, self.m
+        if count == 0:
+            return
+        if self._walk(count, len(self.kinds), self._kinds, n, m, _data(r, count * n * n),
+                      _data(s, count * n * n), _data(d, count * n), _data(lin, count * m),
+                      _data(lin_next, count * m), _data(x, (count + 1) * m)):
+            raise NativeStreamError("internal error: the library's keyframe layout is not the "
+                                    "stream's")
+
+
+def _data(a: np.ndarray, at_least: int) -> int:
+    """The address of float64 C-contiguous ``a`` holding at least ``at_least`` numbers."""
+    if a.dtype != np.float64 or not a.flags.c_contiguous or a.size < at_least:
+        raise NativeStreamError(f"internal error: an array of {a.size} {a.dtype} numbers where "
+                                f"{at_least} contiguous float64 are read")
+    return a.__array_interface__["data"][0]
+
+
 class _Stream:
     """What the two stream kinds share: the estimate, the records, the result."""
 
@@ -458,15 +546,55 @@ class _Stream:
         self._full = full
         return {v.key: full[offsets[i]:offsets[i + 1]] for i, v in enumerate(program.variables)}
 
-    def _cluster(self, estimate: dict, c: int) -> np.ndarray:
-        return np.concatenate([estimate[k] for k in self.clusters[c]])
+    def _start_keyframes(self, data: ProblemData) -> tuple[dict, np.ndarray]:
+        """As :meth:`_start`, the keyframes' variables held keyframe-major in one array (each
+        keyframe's storage a row, its variables in cluster order; every keyframe of one
+        layout): (estimate by key, views into that array; the array)."""
+        estimate = self._start(data)
+        first = self.clusters[0]
+        sizes = [estimate[k].size for k in first]
+        x_all = np.empty((len(self.clusters), sum(sizes)))
+        offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(int)
+        self._layout = [(int(offsets[p]), int(offsets[p + 1])) for p in range(len(first))]
+        self._keyframe_index = []
+        for c, keys in enumerate(self.clusters):
+            if [estimate[k].size for k in keys] != sizes:
+                raise NativeStreamError(f"keyframe {c}'s variables are not laid out as keyframe "
+                                        "0's")
+            for p, k in enumerate(keys):
+                x_all[c, offsets[p]:offsets[p + 1]] = estimate[k]
+                estimate[k] = x_all[c, offsets[p]:offsets[p + 1]]
+            self._keyframe_index.append([self.index[k] for k in keys])
+        # per position in a keyframe: its variables' indices over the keyframes, as a slice
+        # (start, step) when they are evenly spaced in the Program's order (the usual
+        # keyframe-major order), else None
+        self._spaced = []
+        for p in range(len(first)):
+            column = [row[p] for row in self._keyframe_index]
+            step = column[1] - column[0] if len(column) > 1 else 1
+            even = step > 0 and column == list(range(column[0], column[0] + step * len(column),
+                                                     step))
+            self._spaced.append((column[0], step) if even else None)
+        return estimate, x_all
 
-    def _set_cluster(self, estimate: dict, c: int, value: np.ndarray) -> None:
-        pos = 0
-        for k in self.clusters[c]:
-            n = estimate[k].size
-            estimate[k][:] = value[pos:pos + n]
-            pos += n
+    def _snapshot_keyframes(self, x_all: np.ndarray, newest: int) -> list:
+        """:meth:`_snapshot` of keyframes 0 … newest from the keyframe-major array, each
+        variable's storage a tuple: per position in a keyframe, its column block converted at
+        once and placed by a slice assignment (a loop where the Program's order is not evenly
+        spaced). Tuples, not lists: tuples of floats leave the garbage collector's lists after
+        its first pass, while the lists of every record kept (O(j²) of them over a stream) made
+        its collections cost as much as the rest of the stream's host work."""
+        snapshot = [None] * len(self.program.variables)
+        count = newest + 1
+        for p, ((a, b), spaced) in enumerate(zip(self._layout, self._spaced, strict=True)):
+            values = list(zip(*x_all[:count, a:b].T.tolist(), strict=True))
+            if spaced is not None:
+                start, step = spaced
+                snapshot[start:start + step * count:step] = values
+            else:
+                for row, value in zip(self._keyframe_index[:count], values, strict=True):
+                    snapshot[row[p]] = value
+        return snapshot
 
     def _snapshot(self, estimate: dict, oldest: int, newest: int) -> list:
         snapshot = [None] * len(self.program.variables)
@@ -551,10 +679,21 @@ class IncrementalStream:
     incremental update, held slots padding the first ones; each batch step larger than that
     has its own template of its keyframes, compiled once per distinct size
     (``progress_build(size, index, count)`` before each). ``window_solver`` makes the window
-    solvers (default :class:`WindowSolver`; the HLS C simulation passes its own)."""
+    solvers (default :class:`WindowSolver`; the HLS C simulation passes its own).
+
+    Per update, after the window's solve: the newest kept conditional is re-expressed at its
+    parent's new estimate (Log and its central-difference Jacobian), the window is eliminated
+    at its optimum (NumPy QR on the library's rows, O(window)), and every kept conditional is
+    back-substituted, c = first − 1 … 0. The kept Bayes net and the estimate live in
+    keyframe-major arrays (:class:`KeptNet`, ``self.kept`` after :meth:`run`), so the
+    re-expression and the whole back-substitution are one library call each
+    (:class:`_CompiledGeometry`: a double build's ``fgc_local_jacobian`` and ``fgc_kept_walk``).
+    ``host="python"`` runs the same formulas in NumPy (:class:`_ClusterGeometry`, the path
+    before they were compiled), as does a library without them (a float or fixed-point
+    build)."""
 
     def __init__(self, graph: Graph, program: Program, config=None, progress_build=None,
-                 window_solver=None):
+                 window_solver=None, host: str = "native"):
         plan = program.schedule.incremental
         if plan is None:
             raise NativeStreamError("the Program has no incremental plan (--incremental K)")
@@ -582,18 +721,32 @@ class IncrementalStream:
         self.sizes = sizes
         types = self.solvers[sizes[0]].types
         self.geometry = _ClusterGeometry(types[0])
+        # the kept back-substitution and the re-expression's Jacobian: compiled (a double
+        # library) unless host="python" (the reference formulas in NumPy, as before)
+        if host not in ("native", "python"):
+            raise NativeStreamError(f"host must be 'native' or 'python', got {host!r}")
+        self.compiled = (None if host == "python"
+                         else _CompiledGeometry.of(self.solvers[sizes[0]], self.geometry))
 
     def solver_for(self, size: int) -> WindowSolver:
         """The smallest compiled template that holds a window of ``size`` keyframes."""
         return self.solvers[next(s for s in self.sizes if s >= size)]
 
     def run(self, data: ProblemData, progress=None) -> NativeStreamResult:
-        stream, geometry = _Stream(self.program), self.geometry
-        estimate = stream._start(data)
-        conds, taus, records, initial_error = {}, {}, [], None
-        for n, (j, batch, first) in enumerate(self.updates):
+        stream, geometry, compiled = _Stream(self.program), self.geometry, self.compiled
+        estimate, x_all = stream._start_keyframes(data)
+        count, n = len(stream.clusters), geometry.dim
+        # the kept Bayes net, keyframe-major: conditional c is R_c·δ_c + S_c·δ_c+1 = d_c,
+        # linearised at lin_c with its parent at lin_next_c (complete: S_c spans the parent)
+        kept_r, kept_s = np.zeros((count, n, n)), np.zeros((count, n, n))
+        kept_d = np.zeros((count, n))
+        kept_lin, kept_next = np.zeros_like(x_all), np.zeros_like(x_all)
+        complete = np.zeros(count, dtype=bool)
+        local_jacobian = (geometry if compiled is None else compiled).local_jacobian
+        taus, records, initial_error = {}, [], None
+        for n_update, (j, batch, first) in enumerate(self.updates):
             win = self.solver_for(j - first + 1)
-            if n == 0:  # once, untimed: the arrays against each template's layout
+            if n_update == 0:  # once, untimed: the arrays against each template's layout
                 for w in self.solvers.values():
                     w._check_once(*w.assemble(estimate, 0, 0, None))
             t0 = time.perf_counter()
@@ -606,25 +759,35 @@ class IncrementalStream:
             t1 = time.perf_counter()
             x_out, errors, info = win.solve(x, d)
             t2 = time.perf_counter()
-            if n == 0:
+            if n_update == 0:
                 initial_error = float(errors[0])
             win.store(estimate, x_out, first, j)
             if first > 0:  # the newest kept conditional, re-expressed at its parent's estimate
-                (r, s, dv), lin, lin_next = conds[first - 1]
-                x_first = stream._cluster(estimate, first)
-                shift, jac = geometry.local_jacobian(lin_next, x_first)
-                conds[first - 1] = ((r, s @ jac, dv - s @ shift), lin, x_first)
+                c = first - 1
+                if not complete[c]:
+                    raise NativeStreamError(f"keyframe {c}: its kept conditional does not reach "
+                                            f"keyframe {first}")
+                shift, jac = local_jacobian(kept_next[c], x_all[first])
+                kept_d[c] -= kept_s[c] @ shift
+                kept_s[c] = kept_s[c] @ jac
+                kept_next[c] = x_all[first]
             window_conds, passed = win.eliminate(x_out, d, j - first + 1)
-            for i, cond in enumerate(window_conds):
+            for i, (r, s, dv) in enumerate(window_conds):
                 c = first + i
-                lin_next = stream._cluster(estimate, c + 1) if c < j else None
-                conds[c] = (cond, stream._cluster(estimate, c), lin_next)
+                kept_r[c], kept_d[c], kept_lin[c] = r, dv, x_all[c]
+                complete[c] = c < j
                 if c < j:
+                    kept_s[c], kept_next[c] = s, x_all[c + 1]
                     taus[c + 1] = (passed[i], [estimate[k].copy() for k in stream.clusters[c + 1]])
-            for c in range(first - 1, -1, -1):  # back-substitution through the kept part
-                (r, s, dv), lin, lin_next = conds[c]
-                rhs = dv - s @ geometry.local(lin_next, stream._cluster(estimate, c + 1))
-                stream._set_cluster(estimate, c, geometry.retract(lin, np.linalg.solve(r, rhs)))
+            if first > 0 and not complete[:first].all():
+                raise NativeStreamError(f"keyframes 0 … {first - 1}: a kept conditional does not "
+                                        "reach its parent")
+            if compiled is not None:  # back-substitution through the kept part: one call
+                compiled.walk(first, kept_r, kept_s, kept_d, kept_lin, kept_next, x_all)
+            else:
+                for c in range(first - 1, -1, -1):
+                    rhs = kept_d[c] - kept_s[c] @ geometry.local(kept_next[c], x_all[c + 1])
+                    x_all[c] = geometry.retract(kept_lin[c], np.linalg.solve(kept_r[c], rhs))
             t3 = time.perf_counter()
             iterations, st, why = stream._info(info)
             records.append({"keyframe": j, "mode": "batch" if batch else "incremental",
@@ -632,8 +795,10 @@ class IncrementalStream:
                             "reason": why, "cost": float(errors[1]), "seconds": t3 - t0,
                             "solve_seconds": t2 - t1, "store_seconds": t3 - t2,
                             "window_keyframes": win.size,
-                            "values": stream._snapshot(estimate, 0, j)})
+                            "values": stream._snapshot_keyframes(x_all, j)})
             if progress is not None:
                 progress(records[-1])
+        # the kept Bayes net as the last update left it (keyframes 0 … its first − 1 walked)
+        self.kept = KeptNet(first, kept_r, kept_s, kept_d, kept_lin, kept_next, x_all)
         return stream._result(estimate, records, initial_error,
                               self.solvers[self.sizes[0]].template)

@@ -13,11 +13,10 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 
-import sympy as sp
-
 from fgc.compiler.kernel import Kernel
 from fgc.frontend.geometry import LieGroup
 from fgc.ir.program import Program
+from fgc_backends.cfamily import retract
 from fgc_backends.cfamily.errors import CodegenError
 from fgc_backends.cfamily.retract import retract_kernel, variable_class
 
@@ -42,15 +41,8 @@ def _retract(cls: type[LieGroup]) -> Kernel:
     return retract_kernel(cls)
 
 
-@functools.cache
-def local_kernel(cls: type[LieGroup]) -> Kernel:
-    """Kernel with inputs (storage of a, storage of b) and outputs Log(a⁻¹ b) (``a.local(b)``)."""
-    a = [sp.Symbol(f"a{i}", real=True) for i in range(cls.storage_dim)]
-    b = [sp.Symbol(f"b{i}", real=True) for i in range(cls.storage_dim)]
-    tangent = cls.from_storage(list(a)).local(cls.from_storage(list(b)))
-    outputs = [sp.sympify(tangent[i]) for i in range(cls.dim)]
-    reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols("_l", real=True), order="none")
-    return Kernel(tuple(a + b), tuple(reps), tuple(reduced))
+# Log(a⁻¹ b) (a.local(b)), derived once per type: the C-family backends print the same kernel
+local_kernel = functools.cache(retract.local_kernel)
 
 
 def variable_types(program: Program, error: type[Exception]) -> tuple[VariableType, ...]:
