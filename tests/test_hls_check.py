@@ -28,7 +28,12 @@ from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 from fgc_backends.cfamily.names import key_token, key_tokens, token_key
-from fgc_backends.cfamily.results import read_result, write_reference
+from fgc_backends.cfamily.results import (
+    ERROR_FLOOR_FACTOR,
+    error_floor,
+    read_result,
+    write_reference,
+)
 from fgc_backends.hls import HlsConfig, emit, run_csim
 from fgc_backends.hls.build import HlsBuildError
 
@@ -101,7 +106,7 @@ def test_a_reference_of_another_structure_is_refused(project):
     ref.write_text("\n".join([lines[0][:-4] + "beef", *lines[1:]]) + "\n")
     done = _tb(proj, "data.txt", "result.txt", "reference.txt")
     assert done.returncode == 2 and "not a reference file of this structure" in done.stderr
-    ref.write_text("\n".join([*lines[:5], "x9 4 0 0 1 0", *lines[6:]]) + "\n")
+    ref.write_text("\n".join([*lines[:6], "x9 4 0 0 1 0", *lines[7:]]) + "\n")
     done = _tb(proj, "data.txt", "result.txt", "reference.txt")
     assert done.returncode == 2 and "expected '1 4 <numbers>'" in done.stderr
 
@@ -183,7 +188,8 @@ def test_fgc_compile_writes_the_reference_beside_the_data(tmp_path):
     assert main(["compile", spec, "--backend", "hls", "--scalar", "double", "--out",
                  str(out), "-q"]) == 0
     reference = (out / "reference.txt").read_text().splitlines()
-    assert reference[0].startswith("FGCREFERENCE 1 ") and reference[1] == "STATUS converged"
+    assert reference[0].startswith("FGCREFERENCE 2 ") and reference[1] == "STATUS converged"
+    assert reference[3] == "ERROR_FLOOR 0.0"  # a double design rests at the optimum
     done = subprocess.run(["make", "-s", "csim"], cwd=out, capture_output=True, text=True,
                           check=False)
     assert done.returncode == 0, done.stderr
@@ -208,6 +214,23 @@ def test_float_testbench_tolerates_1cm_1mrad_and_no_more(tmp_path):
         return _tb(proj, "data.txt", "result.txt", "reference.txt")
 
     assert check(0.005, 0.0005).returncode == 0
+    # the final error: within 1e-2 x max(1, reference) + 10 x the cost of the reference rounded
+    # to float, no more
+    floor = error_floor(program, data, reference, "float")
+    assert 0 < floor < 1e-2
+    allowed = 1e-2 * max(1.0, reference.final_error) + ERROR_FLOOR_FACTOR * floor
+    result = read_result(proj.directory / "result.txt", program)
+    for shift, code in ((0.5, 0), (2.0, 4)):
+        write_reference(tmp_path / "reference.txt", program, dataclasses.replace(
+            reference, final_error=result.final_error - shift * allowed), floor)
+        done = _tb(proj, "data.txt", "result.txt", "reference.txt")
+        assert done.returncode == code, done.stderr
+    assert "MISMATCH: final error" in done.stderr
+    lines = (tmp_path / "reference.txt").read_text().splitlines()
+    (tmp_path / "reference.txt").write_text("\n".join([*lines[:3], "ERROR_FLOOR -1",
+                                                       *lines[4:]]) + "\n")
+    done = _tb(proj, "data.txt", "result.txt", "reference.txt")
+    assert done.returncode == 2 and "a finite number >= 0" in done.stderr
     done = check(0.02, 0.0)
     assert done.returncode == 4 and "MISMATCH: variable 4 entry 0" in done.stderr
     done = check(0.0, 0.002)

@@ -19,7 +19,11 @@ checks each against the Program and returns the values under the graph's keys as
 **Reference.** Beside the data file, :func:`write_reference` puts the simulator's float64 result
 for the same Program and data (``reference.txt``; same layout, header ``FGCREFERENCE 1
 <structure fingerprint>``, then ``STATUS``, ``FINAL_ERROR``, ``VARIABLES`` and the keyed lines):
-the testbench compares its own result with it and exits 4 on a mismatch.
+the testbench compares its own result with it and exits 4 on a mismatch. Version 2 adds
+``ERROR_FLOOR <f>`` after ``FINAL_ERROR``: the cost at the reference state rounded to the
+design's scalar (:func:`error_floor`; 0 for double), how far from the float64 optimum's cost a
+state held in float (or ap_fixed) can be expected to rest; the testbench's final-error
+tolerance for such a design adds ``ERROR_FLOOR_FACTOR`` times it.
 
 Statuses and reasons are the simulator's (``fgc_backends.sim``), by the same names; the C++
 kernel reports them as indices into these tuples.
@@ -52,7 +56,11 @@ from fgc.ir.result import SolveResult
 from fgc_backends.cfamily.names import key_tokens, token_key
 
 RESULT_MAGIC = "FGCRESULT 2"
-REFERENCE_MAGIC = "FGCREFERENCE 1"
+REFERENCE_MAGIC = "FGCREFERENCE 2"
+# a float (ap_fixed) state rests a few units in the last place from the float64 optimum: its
+# cost may exceed the optimum's by this many times the cost of the optimum rounded to the scalar
+# (the cost grows with the square of the state's distance: 10 ≈ three units in the last place)
+ERROR_FLOOR_FACTOR = 10.0
 REFERENCE_FILE = "reference.txt"
 PRECISION_LIMIT = "precision_limit"  # a host-side verdict (judge_precision), not a kernel reason
 
@@ -169,16 +177,46 @@ def reference_run(program: Program, data: ProblemData):
     return sim.run(program, data, precision="float64")
 
 
-def write_reference(path: str | Path, program: Program, reference) -> Path:
+def error_floor(program: Program, data: ProblemData, reference, scalar: str) -> float:
+    """The cost (float64, the simulator's) at ``reference``'s state rounded to the C++
+    ``scalar``: 0 for double; float rounds each stored entry to float32, ap_fixed<W,I> to its
+    grid of 2^-(W-I). The lowest cost a state held in that scalar can be expected to rest at
+    near the float64 optimum (imu_window N = 50: the optimum's 1e-19 becomes 9.3e-3 in float),
+    so the testbench's final-error check does not ask a float design for a cost its state
+    cannot represent."""
+    from fgc_backends.cfamily.scalars import fixed_format
+    from fgc_backends.sim import run as sim_run
+
+    if scalar == "double" or reference.final_error is None:
+        return 0.0
+    fmt = fixed_format(scalar)
+    rounded = []
+    for v in program.variables:
+        x = np.asarray(reference.storage[v.key], dtype=np.float64).ravel()
+        if fmt is None:
+            rounded.append(x.astype(np.float32).astype(np.float64))
+        else:
+            step = 2.0 ** -(fmt[0] - fmt[1])
+            rounded.append(np.round(x / step) * step)
+    at = ProblemData(tuple(rounded), data.factors, data.structure)
+    floor = float(sim_run(program, at, precision="float64").initial_error)
+    return floor if np.isfinite(floor) and floor > 0 else 0.0
+
+
+def write_reference(path: str | Path, program: Program, reference,
+                    floor: float = 0.0) -> Path:
     """Write ``reference`` (a simulator result of ``program``: ``storage``, ``final_error``,
-    ``status``) as the testbench's reference file; returns the path."""
+    ``status``) as the testbench's reference file, with the design's ``floor``
+    (:func:`error_floor`); returns the path."""
     path = Path(path)
     if reference.status not in STATUSES:
         raise DataError(f"reference status {reference.status!r} is not one of {STATUSES}")
+    if not (np.isfinite(floor) and floor >= 0):
+        raise DataError(f"reference error floor {floor!r} is not a finite number ≥ 0")
     tokens = key_tokens(v.key for v in program.variables)
     error = float("nan") if reference.final_error is None else float(reference.final_error)
     out = [f"{REFERENCE_MAGIC} {program.structure_fingerprint}", f"STATUS {reference.status}",
-           f"FINAL_ERROR {error!r}",
+           f"FINAL_ERROR {error!r}", f"ERROR_FLOOR {float(floor)!r}",
            f"VARIABLES {len(program.variables)}"]
     for v, token in zip(program.variables, tokens, strict=True):
         values = np.asarray(reference.storage[v.key], dtype=np.float64).ravel()

@@ -16,6 +16,7 @@ from fgc.ir.program import Program
 from fgc_backends.cfamily.results import (
     REFERENCE_FILE,
     HlsResult,
+    error_floor,
     keyed,
     read_result,
     reference_run,
@@ -71,7 +72,8 @@ def run_csim(project: HlsProject, program: Program, data: ProblemData,
     if reference is True:
         reference = reference_run(program, data)
     if reference is not False and reference is not None:
-        write_reference(ref_path, program, reference)
+        write_reference(ref_path, program, reference,
+                        error_floor(program, data, reference, project.config.scalar_cxx))
     result = project.directory / RESULT_FILE
     result.unlink(missing_ok=True)
     make(project, "csim")

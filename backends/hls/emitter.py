@@ -21,7 +21,7 @@ from fgc.ir.program import Program
 from fgc_backends.cfamily import limits
 from fgc_backends.cfamily.context import common_context
 from fgc_backends.cfamily.names import comment, identifier, key_tokens
-from fgc_backends.cfamily.results import REFERENCE_MAGIC, RESULT_MAGIC
+from fgc_backends.cfamily.results import ERROR_FLOOR_FACTOR, REFERENCE_MAGIC, RESULT_MAGIC
 from fgc_backends.cfamily.scalars import (
     epsilon,
 )
@@ -246,6 +246,7 @@ def _context(program: Program, config: HlsConfig, project: str, vector: bool = T
         "key_tokens": key_tokens(v.key for v in program.variables),
         "rotations": [ROTATIONS.get(v.type_name, (0, 0)) for v in program.variables],
         "tb_double": config.scalar_cxx == "double", "tol": TB_TOLERANCES,
+        "error_floor_factor": repr(ERROR_FLOOR_FACTOR),
         "tolerance_comment": comment(f"T = {config.scalar_cxx}, linear solver "
                                      f"{config.linear_cxx}"),
         "reference_magic": REFERENCE_MAGIC, "result_magic": RESULT_MAGIC,
