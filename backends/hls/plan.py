@@ -445,9 +445,7 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
       II = add latency, depth multiply + add (interleaved into partial sums by
       :func:`kernel_dot`); ``acc2``: a term through two multiply-adds before its sum (the
       rounding-noise pass's terms), depth 2 (multiply + add);
-    - ``sum``: a running sum (II = depth = add latency); ``rmw``: ``+=`` into a table-addressed
-      memory (the address may repeat: II = add latency, depth read + add + write);
-      ``scatter``: ``+=`` into a table-addressed memory where every iteration of the loop has
+    - ``scatter``: ``+=`` into a table-addressed memory where every iteration of the loop has
       its own address (II 1, depth read + add + write);
     - ``max``: a running maximum (compare and select: II = compare latency, depth + 2 for the
       read and |·|; into partial maxima by :func:`kernel_dot`, LM control's gradient maximum);
@@ -459,7 +457,7 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
     """
     la, lm, lc = ops.add.latency, ops.mul.latency, ops.compare.latency
     return {"move": (1, 2), "fill": (1, 1), "acc": (la, lm + la), "acc2": (la, 2 * (lm + la)),
-            "sum": (la, la), "rmw": (la, la + 2), "scatter": (1, la + 2), "max": (lc, lc + 2),
+            "scatter": (1, la + 2), "max": (lc, lc + 2),
             "root": (1, ops.sqrt.latency),
             "decision": (1, ops.div.latency + 2 * lm + 2 * la + lc),
             "retract": (1, ops.sqrt.latency + ops.div.latency + ops.sincos.latency
