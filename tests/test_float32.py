@@ -253,15 +253,24 @@ def test_native_plane_registration_far_from_the_origin_is_not_silently_off():
 @pytest.mark.heavy
 @pytest.mark.skipif(shutil.which("g++") is None, reason="no g++")
 def test_csim_1e6_m_from_the_origin_says_it_did_not_converge(tmp_path):
-    """The C simulation (make csim, float kernel) of the chain 1e6 m from the origin: the parsed
-    result says failed / precision_limit with the warning (before: "converged")."""
+    """The C simulation (make csim, float kernel) of the chain 1e6 m from the origin: checked
+    against the float64 reference the testbench refuses it (HlsMismatchError naming the first
+    mismatch; before: an "internal error" saying the build failed); unchecked, the parsed result
+    says failed / precision_limit with the warning (before: "converged")."""
     from fgc_backends import hls
+    from fgc_backends.hls.build import HlsMismatchError
 
     graph = chain(1e6, 0.1)
     program = compile_graph(graph, SolverConfig(precision="float32"))
     project = hls.emit(program, tmp_path / "project", hls.HlsConfig(scalar="float"))
+    data = problem_data(graph, program)
+    # against the float64 reference, the self-checking testbench says no (exit 4), by name
+    with pytest.raises(HlsMismatchError, match=r"differs from the reference \(reference.txt\): "
+                                               r"variable x\d+: rotation differs"):
+        hls.run_csim(project, program, data)
+    # and without it, the host's verdict on the parsed result
     with pytest.warns(PrecisionLimitWarning, match="cannot place variable 'x"):
-        result = hls.run_csim(project, program, problem_data(graph, program))
+        result = hls.run_csim(project, program, data, reference=False)
     assert (result.status, result.reason) == ("failed", "precision_limit")
     assert result.final_error > 1.0
 

@@ -13,13 +13,13 @@ synthesisable kernel ``<name>_top``), ``tb_<name>.cpp`` (testbench), ``run_hls.t
 
 from fgc_backends.cfamily.printer import HlsCodePrinter, UnsupportedExpressionError
 from fgc_backends.cfamily.results import HlsResult
-from fgc_backends.hls.build import HlsBuildError, make, run, run_csim
+from fgc_backends.hls.build import HlsBuildError, HlsMismatchError, make, run, run_csim
 from fgc_backends.hls.config import HlsConfig, HlsConfigError
 from fgc_backends.hls.emitter import HlsProject, emit
 from fgc_backends.hls.lint import HlsLintError, LintIssue, lint_source
 
 Config = HlsConfig  # the backend contract's name (fgc_backends.CONTRACT)
 
-__all__ = ["HlsBuildError", "HlsCodePrinter", "HlsConfig", "HlsConfigError", "HlsLintError",
-           "HlsProject", "HlsResult", "LintIssue", "UnsupportedExpressionError", "emit",
-           "lint_source", "make", "run", "run_csim", "Config"]
+__all__ = ["HlsBuildError", "HlsMismatchError", "HlsCodePrinter", "HlsConfig", "HlsConfigError",
+           "HlsLintError", "HlsProject", "HlsResult", "LintIssue", "UnsupportedExpressionError",
+           "emit", "lint_source", "make", "run", "run_csim", "Config"]

@@ -35,6 +35,11 @@ class HlsBuildError(FgcError):
     build); the message is one line naming ``build.log``, which holds the compiler's output."""
 
 
+class HlsMismatchError(HlsBuildError):
+    """The testbench built and ran, and its result differs from the reference beside the data
+    (it exits 4): the message names the first mismatch the testbench printed."""
+
+
 def make(project: HlsProject, target: str) -> str:
     """Run ``make -s <target>`` in the project folder; returns its standard output."""
     if target not in ("csim", "clean"):
@@ -48,6 +53,12 @@ def make(project: HlsProject, target: str) -> str:
     if done.returncode != 0:
         log = project.directory / BUILD_LOG
         log.write_text(done.stdout + done.stderr)
+        mismatch = next((line for line in done.stderr.splitlines()
+                         if line.startswith("MISMATCH: ")), None)
+        if mismatch is not None:  # it built and ran: the testbench's check said no (exit 4)
+            raise HlsMismatchError(f"make {target} failed: the C simulation's result differs "
+                                   f"from the reference ({REFERENCE_FILE}): "
+                                   f"{mismatch[len('MISMATCH: '):]}; full output in {log}")
         raise HlsBuildError(f"internal error: make {target} failed (exit {done.returncode}) on "
                             f"the project fgc generated (a bug in fgc if the build failed); "
                             f"full output in {log}")
