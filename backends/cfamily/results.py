@@ -20,10 +20,10 @@ checks each against the Program and returns the values under the graph's keys as
 for the same Program and data (``reference.txt``; same layout, header ``FGCREFERENCE 1
 <structure fingerprint>``, then ``STATUS``, ``FINAL_ERROR``, ``VARIABLES`` and the keyed lines):
 the testbench compares its own result with it and exits 4 on a mismatch. Version 2 adds
-``ERROR_FLOOR <f>`` after ``FINAL_ERROR``: the cost at the reference state rounded to the
-design's scalar (:func:`error_floor`; 0 for double), how far from the float64 optimum's cost a
-state held in float (or ap_fixed) can be expected to rest; the testbench's final-error
-tolerance for such a design adds ``ERROR_FLOOR_FACTOR`` times it.
+``ERROR_FLOOR <f>`` after ``FINAL_ERROR``: how much the cost rises when the reference state
+is rounded to the design's scalar (:func:`error_floor`; 0 for double), how far above the
+float64 optimum's cost a state held in float (or ap_fixed) can be expected to rest; the
+testbench's final-error tolerance for such a design adds ``ERROR_FLOOR_FACTOR`` times it.
 
 Statuses and reasons are the simulator's (``fgc_backends.sim``), by the same names; the C++
 kernel reports them as indices into these tuples.
@@ -178,28 +178,28 @@ def reference_run(program: Program, data: ProblemData):
 
 
 def error_floor(program: Program, data: ProblemData, reference, scalar: str) -> float:
-    """The cost (float64, the simulator's) at ``reference``'s state rounded to the C++
-    ``scalar``: 0 for double; float rounds each stored entry to float32, ap_fixed<W,I> to its
-    grid of 2^-(W-I). The lowest cost a state held in that scalar can be expected to rest at
-    near the float64 optimum (imu_window N = 50: the optimum's 1e-19 becomes 9.3e-3 in float),
-    so the testbench's final-error check does not ask a float design for a cost its state
-    cannot represent."""
+    """How much the cost (float64, the simulator's) rises when ``reference``'s state is rounded
+    to the C++ ``scalar``: 0 for double; float rounds each stored entry to float32,
+    ap_fixed<W,I> to its grid of 2^-(W-I). How far above the float64 optimum's cost a state
+    held in that scalar can be expected to rest (imu_window N = 50: the optimum's 1e-19 becomes
+    9.3e-3 in float), so the testbench's final-error check does not ask a float design for a
+    cost its state cannot represent."""
     from fgc_backends.cfamily.scalars import fixed_format
-    from fgc_backends.sim import run as sim_run
+    from fgc_backends.sim import costs
 
     if scalar == "double" or reference.final_error is None:
         return 0.0
     fmt = fixed_format(scalar)
-    rounded = []
+    rounded = {}
     for v in program.variables:
         x = np.asarray(reference.storage[v.key], dtype=np.float64).ravel()
         if fmt is None:
-            rounded.append(x.astype(np.float32).astype(np.float64))
+            rounded[v.key] = x.astype(np.float32).astype(np.float64)
         else:
             step = 2.0 ** -(fmt[0] - fmt[1])
-            rounded.append(np.round(x / step) * step)
-    at = ProblemData(tuple(rounded), data.factors, data.structure)
-    floor = float(sim_run(program, at, precision="float64").initial_error)
+            rounded[v.key] = np.round(x / step) * step
+    at_reference, at_rounded = costs(program, data, [dict(reference.storage), rounded])
+    floor = at_rounded - at_reference  # what the rounding adds to the optimum's cost
     return floor if np.isfinite(floor) and floor > 0 else 0.0
 
 

@@ -136,11 +136,33 @@ def linearize(program: Program, data: ProblemData, points: Sequence[dict | None]
     point: {graph factor index: (A, b)} for every factor (or those in ``factors``), A over the
     factor's own variables in its key order, b = −W·r (GTSAM's convention). ``fgc verify``
     checks the executed kernels through this."""
+    problem = _float64_problem(program, data, config, emitted)
+    results = []
+    for x in _points(program, problem, points):
+        with np.errstate(all="ignore"):
+            results.append(_factor_rows(program, [b.linearize(x) for b in problem.blocks],
+                                        None if factors is None else set(factors)))
+    return results
+
+
+def costs(program: Program, data: ProblemData, points: Sequence[dict | None],
+          config: SimConfig | None = None, emitted: str | Path | None = None) -> list[float]:
+    """The simulator's total cost (GTSAM's graph error, its cost-only mode, float64) of
+    ``program`` on ``data`` at each of ``points`` (as :func:`linearize` takes them), without
+    solving anything."""
+    problem = _float64_problem(program, data, config, emitted)
+    return [float(problem.cost(x)) for x in _points(program, problem, points)]
+
+
+def _float64_problem(program: Program, data: ProblemData, config: SimConfig | None,
+                     emitted: str | Path | None):
+    """The emitted simulator's float64 Problem of ``program`` on ``data`` (emitted into a
+    temporary directory when ``emitted`` is None, else loaded from it)."""
     check_structure(data, program)
     if emitted is None:
         with tempfile.TemporaryDirectory(prefix="fgc-sim-lin-") as tmp:
             emit(program, tmp, config)
-            return linearize(program, data, points, config, tmp, factors)
+            return _float64_problem(program, data, config, tmp)
     out = Path(emitted)
     module = out / (config or SimConfig()).files(program.name)[0][1]
     if not module.is_file():
@@ -151,18 +173,18 @@ def linearize(program: Program, data: ProblemData, points: Sequence[dict | None]
         data_path = Path(tmp) / "data.txt"
         write_data(data, data_path)
         try:
-            problem = lib.optimizer.Problem(spec, lib.runtime.read_data(
+            return lib.optimizer.Problem(spec, lib.runtime.read_data(
                 str(data_path), spec["structure"]), "float64", lib)
         except lib.runtime.SimDataError as exc:
             raise DataError(_explain(program, exc)) from None
-    results = []
+
+
+def _points(program: Program, problem, points: Sequence[dict | None]):
+    """Each point (``{variable key: storage array}``, None: the data's initial values) as the
+    problem's storage vector."""
     for point in points:
-        x = problem.x0 if point is None else np.concatenate(
+        yield problem.x0 if point is None else np.concatenate(
             [np.asarray(point[v.key], dtype=np.float64).reshape(-1) for v in program.variables])
-        with np.errstate(all="ignore"):
-            results.append(_factor_rows(program, [b.linearize(x) for b in problem.blocks],
-                                        None if factors is None else set(factors)))
-    return results
 
 
 def _factor_rows(program: Program, abs_: list[np.ndarray], wanted: set[int] | None

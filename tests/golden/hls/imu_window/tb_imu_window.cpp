@@ -13,9 +13,9 @@
 // - float: against the float64 optimum, each rotation (Rot2/Pose2 cos-sin, Rot3/Pose3 matrix)
 //   within 1e-3 rad (angle of R_ref^T R), every other entry (positions in m, velocities,
 //   biases) within 1e-2 absolute (1 cm), and the final error within 1e-2 x
-//   max(1, reference error) + 10.0 x the reference's ERROR_FLOOR (the cost of the
-//   float64 optimum rounded to float: a float state cannot rest exactly at the float64
-//   optimum). The status is printed, not compared (float may stop on another criterion).
+//   max(1, reference error) + 10.0 x the reference's ERROR_FLOOR (what rounding the
+//   float64 optimum to float adds to its cost: a float state cannot rest exactly at the
+//   float64 optimum). The status is printed, not compared (float may stop on another criterion).
 //
 // Structure fingerprint c85ca38da7557b18 (design cc355482bcc8c6bc): a data file
 // must carry it on its first line, since equal counts do not mean equal factor connectivity. The
