@@ -57,6 +57,7 @@ from fgc.ir.program import Program
 from fgc_backends.cost.operators import table
 from fgc_backends.cost.structure import whitened_pattern
 from fgc_backends.hls.plan import (
+    AcceleratorPlan,
     Loop,
     Phase,
     PlanOptions,
@@ -194,7 +195,8 @@ class UpdateModel:
         self.rate = transfer_words_per_cycle
         self.qr = program.solver.linear == "qr"
         self.damping = program.solver.method == "lm"
-        self._batch_cycles: dict[int, int] = {}
+        self._batch_plans: dict[int, AcceleratorPlan] = {}
+        self._window_phases: dict[tuple[int, int], tuple[Phase, ...]] = {}
         self._read_plan()
         self._read_chain()
 
@@ -271,7 +273,11 @@ class UpdateModel:
 
     def batch_iteration_cycles(self, j: int) -> int:
         """One batch iteration of keyframes 0 … j: ``plan_cost(build_plan(P_j))``."""
-        if j not in self._batch_cycles:
+        return plan_cost(self._batch_plan(j)).cycles
+
+    def _batch_plan(self, j: int) -> AcceleratorPlan:
+        """The plan of the batch Program of keyframes 0 … j (the stream's own at the last)."""
+        if j not in self._batch_plans:
             if j == len(self.clusters) - 1:
                 program = self.program
             elif self.batch_program is None:
@@ -279,8 +285,8 @@ class UpdateModel:
                                        "needs batch_program (the Program of its keyframes)")
             else:
                 program = self.batch_program(j)
-            self._batch_cycles[j] = plan_cost(build_plan(program, self.options)).cycles
-        return self._batch_cycles[j]
+            self._batch_plans[j] = build_plan(program, self.options)
+        return self._batch_plans[j]
 
     def window_iteration_phases(self, first: int, last: int) -> tuple[Phase, ...]:
         """One LM iteration of the window first … last as the plan's phases, in the plan's
@@ -289,7 +295,13 @@ class UpdateModel:
         pass, QR's gradient pass (Cholesky's comes with the HGC), the linear solver (stack, QR
         step and commit per cluster; or HGC, assembly, cascade and store), back-substitution
         with its copies, the state update per variable type, the cost pass and LM control.
-        τ's relinearisation is not among them (an assumed term)."""
+        τ's relinearisation is not among them (an assumed term). Built once per window (an
+        update prices its iterations and its rejected trials from them)."""
+        if (first, last) not in self._window_phases:
+            self._window_phases[first, last] = self._build_window_phases(first, last)
+        return self._window_phases[first, last]
+
+    def _build_window_phases(self, first: int, last: int) -> tuple[Phase, ...]:
         inst = self._instances(first, last)
         view = self._view(first, last, inst)
         phases = [self._factor_phase("jacobian", inst)]
@@ -375,15 +387,7 @@ class UpdateModel:
         update, the cost pass and the step test with its decision (``lm_control``). A batch
         keyframe: the batch Program's own plan; otherwise the window's phases."""
         if mode == "batch":
-            program = (self.program if last == len(self.clusters) - 1
-                       else self.batch_program(last) if self.batch_program is not None
-                       else None)
-            if program is None:
-                raise UpdateModelError(f"keyframe {last}: a batch update before the last "
-                                       "keyframe needs batch_program (the Program of its "
-                                       "keyframes)")
-            phases = [ph for ph in build_plan(program, self.options).phases
-                      if ph.per == "iteration"]
+            phases = [ph for ph in self._batch_plan(last).phases if ph.per == "iteration"]
         else:
             phases = list(self.window_iteration_phases(first, last))
         # kept from the linearisation: the Jacobian pass, the gradient / HGC and LM control's
