@@ -40,6 +40,14 @@ class HlsMismatchError(HlsBuildError):
     (it exits 4): the message names the first mismatch the testbench printed."""
 
 
+def write_project_reference(project: HlsProject, program: Program, data: ProblemData,
+                            reference) -> Path:
+    """``reference.txt`` in ``project``: ``reference`` (a simulator result of ``program`` on
+    ``data``) with the error floor of the project's scalar (:func:`error_floor`)."""
+    return write_reference(project.directory / REFERENCE_FILE, program, reference,
+                           error_floor(program, data, reference, project.config.scalar_cxx))
+
+
 def make(project: HlsProject, target: str) -> str:
     """Run ``make -s <target>`` in the project folder; returns its standard output."""
     if target not in ("csim", "clean"):
@@ -83,8 +91,7 @@ def run_csim(project: HlsProject, program: Program, data: ProblemData,
     if reference is True:
         reference = reference_run(program, data)
     if reference is not False and reference is not None:
-        write_reference(ref_path, program, reference,
-                        error_floor(program, data, reference, project.config.scalar_cxx))
+        write_project_reference(project, program, data, reference)
     result = project.directory / RESULT_FILE
     result.unlink(missing_ok=True)
     make(project, "csim")

@@ -364,16 +364,10 @@ def _cmd_compile(args) -> int:
             project = backend.emit(program, out, _hls_config(args, program))
             files = list(project.files)
             # the testbench checks its result against the simulator's (exit 4 on a mismatch)
-            from fgc_backends.cfamily.results import (
-                REFERENCE_FILE,
-                error_floor,
-                reference_run,
-                write_reference,
-            )
+            from fgc_backends.cfamily.results import reference_run
 
-            reference = reference_run(program, data)
-            floor = error_floor(program, data, reference, project.config.scalar_cxx)
-            files.append(write_reference(out / REFERENCE_FILE, program, reference, floor))
+            files.append(backend.build.write_project_reference(
+                project, program, data, reference_run(program, data)))
         elif args.backend == "native":
             files = list(backend.emit(program, out, _native_config(args, program)).files)
         else:
