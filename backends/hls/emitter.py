@@ -37,6 +37,9 @@ SYNTHESISED = ("accel.h.jinja", "accel.cpp.jinja")
 INCLUDE = Path(__file__).resolve().parent / "include"  # copied into every project
 # the testbench's comparison with the reference (see tb.cpp.jinja's header for the reasons)
 TB_TOLERANCES = {"rel": "1e-9", "rot": "1e-3", "vec": "1e-2", "error": "1e-2"}
+# the on-chip fixed-lag window's stream file and its result (tb.cpp.jinja's --stream mode)
+STREAM_MAGIC = "FGC-STREAM 1"
+STREAM_RESULT_MAGIC = "FGC-STREAM-RESULT 1"
 # where a variable type stores its rotation: (kind, offset), kind 2 = cos-sin, 3 = 3x3 matrix
 ROTATIONS = {"Rot2": (2, 0), "Pose2": (2, 2), "Rot3": (3, 0), "Pose3": (3, 0)}
 
@@ -63,12 +66,16 @@ def is_constant_literal(expr: str) -> bool:
 
 
 def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
-         name: str | None = None) -> HlsProject:
+         name: str | None = None, stream=None) -> HlsProject:
     """Write the HLS project of ``program`` into ``out_dir`` (created if needed).
 
     ``name`` (default: the Program's name) is sanitised into the project identifier used for
     file names and the top function ``<name>_top``. Emitting the same Program twice gives
     byte-identical files. Every synthesised file is linted (:func:`lint_project`).
+
+    ``stream``: a :class:`fgc_backends.hls.window.WindowLayout` whose template ``program`` is:
+    the design gets the on-chip fixed-lag window's top ``<name>_stream`` (the synthesis top) and
+    the testbench its ``--stream`` mode.
     """
     config = for_program(program, config or HlsConfig())
     config.check()
@@ -78,6 +85,10 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     project = identifier(name or program.name)
     context = _context(program, config, project, vector=False)
     context.update(accel_context(program, config, context))
+    if stream is not None and stream.template is not program:
+        raise HlsConfigError("internal error: the stream layout is not of the emitted Program")
+    context["stream"] = None if stream is None else stream.context(config.linear_cxx)
+    context["stream_magic"], context["stream_result_magic"] = STREAM_MAGIC, STREAM_RESULT_MAGIC
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
                              undefined=jinja2.StrictUndefined, trim_blocks=True,
                              lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)

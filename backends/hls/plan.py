@@ -458,7 +458,7 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
     la, lm, lc = ops.add.latency, ops.mul.latency, ops.compare.latency
     return {"move": (1, 2), "fill": (1, 1), "acc": (la, lm + la), "acc2": (la, 2 * (lm + la)),
             "scatter": (1, la + 2), "max": (lc, lc + 2),
-            "root": (1, ops.sqrt.latency),
+            "root": (1, ops.sqrt.latency), "div": (ops.div.latency, ops.div.latency),
             "decision": (1, ops.div.latency + 2 * lm + 2 * la + lc),
             "retract": (1, ops.sqrt.latency + ops.div.latency + ops.sincos.latency
                         + 4 * (lm + la))}

@@ -132,18 +132,22 @@ def _project_key(template, config) -> str:
     return h.hexdigest()[:24]
 
 
-def _cached_project(template, config):
+def _cached_project(template, config, stream=None):
     """The template's emitted project in ``<fgc cache>/hls-stream/<hash>`` (emitted once per
-    content hash; a stream copies it into its own folder, as two streams may run at once)."""
+    content hash; a stream copies it into its own folder, as two streams may run at once);
+    ``stream``: the on-chip window's layout (emitted with its stream top)."""
     from fgc.compiler.cache import cache_dir
     from fgc_backends.cfamily.names import identifier
     from fgc_backends.hls.emitter import HlsProject, emit
 
-    folder = cache_dir() / "hls-stream" / _project_key(template, config)
+    key = _project_key(template, config)
+    if stream is not None:
+        key = f"{key}-w{stream.window}"
+    folder = cache_dir() / "hls-stream" / key
     if not folder.is_dir():
         staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
         shutil.rmtree(staging, ignore_errors=True)
-        emit(template, staging, config)
+        emit(template, staging, config, stream=stream)
         try:
             os.replace(staging, folder)
         except OSError:  # another process finished first: use its project
@@ -196,3 +200,163 @@ def incremental_stream(graph, program, scalar: str = "double", out_dir=None,
     return IncrementalStream(graph, program, progress_build=progress_build,
                              window_solver=lambda size: CsimWindow(graph, program, size, scalar,
                                                                    out_dir))
+
+
+class OnChipFixedLagStream:
+    """The fixed-lag window of ``window`` keyframes on the accelerator itself
+    (:mod:`fgc_backends.hls.window`): one emitted design whose ``<name>_stream`` top keeps the
+    window, its factors' words and τ in its memories between calls. Its C simulation runs the
+    whole stream in one testbench run (``tb --stream``): the reset call with the template's
+    slots, then per keyframe only that keyframe's storage and data words; the host reads back
+    each update's window. ``scalar``: the design's T ("double" for agreement, "float" the
+    hardware). Nothing of the window is assembled or eliminated on the host."""
+
+    def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None):
+        from fgc_backends.hls.config import HlsConfig
+        from fgc_backends.hls.emitter import HlsProject
+        from fgc_backends.hls.window import WindowLayout
+
+        self.layout = WindowLayout(graph, program, window)
+        self.program, self.window, self.scalar = program, window, scalar
+        self.template = self.layout.template
+        if out_dir is None:
+            tmp = tempfile.mkdtemp(prefix="fgc-hls-window-")
+            weakref.finalize(self, _remove, tmp)
+            out_dir = tmp
+        config = HlsConfig(scalar=scalar)
+        self._cached = _cached_project(self.template, config, self.layout)
+        work = Path(out_dir) / f"window{window}_onchip"
+        shutil.rmtree(work, ignore_errors=True)
+        shutil.copytree(self._cached.directory, work)
+        self.project = HlsProject(work, self._cached.name,
+                                  tuple(work / f.name for f in self._cached.files), config)
+        self._built = (self._cached.directory / _BUILT).is_file()
+
+    def _write_inputs(self, data: ProblemData, estimate: dict) -> int:
+        """data.txt (the reset call) and stream.txt (every keyframe's words) in the project."""
+        from fgc.ir.datafile import write_data
+        from fgc_backends.hls import build
+        from fgc_backends.hls.emitter import STREAM_MAGIC
+
+        lay, t = self.layout, self.template
+        x, d = lay.reset_words(estimate)
+        variables, pos = [], 0
+        for v in t.variables:
+            variables.append(x[pos:pos + v.storage_dim])
+            pos += v.storage_dim
+        factors, pos = [], 0
+        for spec in t.factors:
+            n = factor_data_words(t, spec.block)
+            factors.append(d[pos:pos + n])
+            pos += n
+        write_data(ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint),
+                   self.project.directory / build.DATA_FILE)
+        clusters = self.program.schedule.clusters
+        lines = [f"{STREAM_MAGIC} {t.structure_fingerprint}", f"KEYFRAMES {len(clusters)}"]
+        held = None
+        for j, keys in enumerate(clusters):
+            held = lay.check_holds(held, j)
+            x_new = np.concatenate([estimate[k] for k in keys])
+            _, words = lay.keyframe_words(j, x_new)
+            lines += _chunks(x_new) + _chunks(words)
+        (self.project.directory / STREAM_FILE).write_text("\n".join(lines) + "\n")
+        return len(clusters)
+
+    def run(self, data: ProblemData, progress=None):
+        """Stream ``data``'s keyframes through the C simulation; a
+        :class:`~fgc_backends.native.stream.NativeStreamResult` with the fixed-lag records
+        (``seconds``: NaN — a C simulation's wall time is not the accelerator's; its latency is
+        the update model's)."""
+        import subprocess
+
+        from fgc_backends.hls import build
+        from fgc_backends.hls.window import OnChipWindowError
+        from fgc_backends.native.stream import _Stream
+
+        stream = _Stream(self.program)
+        estimate = stream._start(data)
+        count = self._write_inputs(data, estimate)
+        folder = self.project.directory
+        exe = f"tb_{self.project.name}"
+        for args in (["make", "-s", exe],
+                     [f"./{exe}", "--stream", build.DATA_FILE, STREAM_FILE, STREAM_RESULT_FILE]):
+            try:
+                done = subprocess.run(args, cwd=folder, capture_output=True, text=True,
+                                      timeout=build.BUILD_TIMEOUT_S, check=False)
+            except subprocess.TimeoutExpired:
+                raise build.HlsBuildError(f"{' '.join(args)} in {folder} took over "
+                                          f"{build.BUILD_TIMEOUT_S} s") from None
+            if done.returncode != 0:
+                log = folder / build.BUILD_LOG
+                log.write_text(done.stdout + done.stderr)
+                raise build.HlsBuildError(f"internal error: {' '.join(args)} failed (exit "
+                                          f"{done.returncode}) on the project fgc generated; "
+                                          f"full output in {log}")
+        if not self._built:
+            _keep_build(self.project, self._cached.directory)
+            self._built = True
+        lay, window = self.layout, self.window
+        records, initial_error = [], None
+        for j, (head, x_out) in enumerate(_read_stream_result(folder / STREAM_RESULT_FILE,
+                                                              count, lay.n_x)):
+            first = max(0, j - window)
+            if head["SLOT"] != min(j, lay.size - 1):
+                raise OnChipWindowError(f"keyframe {j}: the accelerator put it in slot "
+                                        f"{head['SLOT']}, the host expected "
+                                        f"{min(j, lay.size - 1)}")
+            if head["MARGINAL"] == 2:
+                raise OnChipWindowError(f"keyframe {first}: the marginal prior it passes to the "
+                                        "next keyframe is singular (the accelerator did not "
+                                        "write it)")
+            if j == 0:
+                initial_error = head["INITIAL_ERROR"]
+            lay.store(estimate, x_out, first, j)
+            records.append({"keyframe": j, "mode": "fixed-lag", "first": first,
+                            "iterations": head["ITERATIONS"], "status": head["STATUS"],
+                            "reason": head["REASON"], "cost": head["FINAL_ERROR"],
+                            "seconds": float("nan"), "marginal": head["MARGINAL"] == 1,
+                            "values": stream._snapshot(estimate, max(0, j - window + 1), j)})
+            if progress is not None:
+                progress(records[-1])
+        return stream._result(estimate, records, initial_error, self.template)
+
+
+STREAM_FILE, STREAM_RESULT_FILE = "stream.txt", "stream_result.txt"
+
+
+def _chunks(values: np.ndarray, size: int = 16) -> list[str]:
+    vals = np.asarray(values, dtype=np.float64).reshape(-1)
+    if not np.all(np.isfinite(vals)):
+        from fgc.ir.datafile import DataError
+
+        raise DataError("refusing to write a non-finite number to a stream file")
+    return [" ".join([str(len(vals[i:i + size]))] + [repr(float(v)) for v in vals[i:i + size]])
+            for i in range(0, len(vals), size)]
+
+
+def _read_stream_result(path: Path, count: int, n_x: int):
+    """(head fields, x) per keyframe from the testbench's stream result."""
+    from fgc.ir.datafile import DataError
+    from fgc_backends.hls.emitter import STREAM_RESULT_MAGIC
+
+    lines = path.read_text().splitlines()
+    if not lines or lines[0] != STREAM_RESULT_MAGIC:
+        raise DataError(f"{path}:1: expected '{STREAM_RESULT_MAGIC}'")
+    if len(lines) != 1 + 2 * count:
+        raise DataError(f"{path}: {(len(lines) - 1) // 2} keyframes, expected {count}")
+    out = []
+    for j in range(count):
+        words = lines[1 + 2 * j].split()
+        head = dict(zip(words[0::2], words[1::2], strict=True))
+        for key in ("KEYFRAME", "SLOT", "ITERATIONS", "MARGINAL"):
+            head[key] = int(head[key])
+        for key in ("INITIAL_ERROR", "FINAL_ERROR"):
+            head[key] = float(head[key])
+        if head["KEYFRAME"] != j or head["STATUS"] not in STATUSES or \
+                head["REASON"] not in REASONS:
+            raise DataError(f"{path}:{2 + 2 * j}: a malformed keyframe line")
+        x = lines[2 + 2 * j].split()
+        if x[:2] != ["X", str(n_x)] or len(x) != n_x + 2:
+            raise DataError(f"{path}:{3 + 2 * j}: expected 'X {n_x} <numbers>'")
+        out.append((head, np.array([float(v) for v in x[2:]])))
+    return out

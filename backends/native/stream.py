@@ -128,17 +128,16 @@ class KeptNet:
     x: np.ndarray
 
 
-class WindowSolver:
-    """The native solver compiled for a *template* window of ``size`` keyframes of the chain
-    ``program`` (compiled from ``graph``): the graph's first ``size`` keyframes with their
-    factors and a ``MarginalPrior…`` factor on every keyframe, compiled as a batch Program
-    (the stream's solver options without an incremental plan); :meth:`assemble` fills it with
-    the numbers of any window of at most ``size`` keyframes, :meth:`eliminate` eliminates the
-    window from the solver's rows at a point (module docstring)."""
+class WindowTemplate:
+    """A *template* window of ``size`` keyframes of the chain ``program`` (compiled from
+    ``graph``): the graph's first ``size`` keyframes with their factors and a ``MarginalPrior…``
+    factor on every keyframe, compiled as a batch Program (the stream's solver options without
+    an incremental plan; ``self.template``); :meth:`assemble` fills it with the numbers of any
+    window of at most ``size`` keyframes. No solver: :class:`WindowSolver` adds the native one,
+    the HLS backend's on-chip window (:mod:`fgc_backends.hls.window`) its own."""
 
-    def __init__(self, graph: Graph, program: Program, size: int, config=None):
+    def __init__(self, graph: Graph, program: Program, size: int):
         from fgc.compile import compile_graph
-        from fgc_backends import native
 
         if program.schedule.structure_class != "chain" or not program.schedule.clusters:
             raise NativeStreamError("native streaming needs a chain of keyframes")
@@ -180,8 +179,6 @@ class WindowSolver:
             self.prior_types.append((ptype, dim))
         solver = replace(program.solver, incremental_k=None, batch_every=None)
         self.template = compile_graph(template, solver, name=f"{program.name}_window{size}")
-        self.solver = native.load(self.template, config)
-        self.config = self.solver.project.config
         # every graph factor by its signature (type, (keyframe, position) per variable)
         self.by_signature = {self._signature(f, 0): i for i, f in enumerate(graph.factors)}
         spans = [[self.cluster_of[str(k)] for k in f.keys] for f in graph.factors]
@@ -193,83 +190,8 @@ class WindowSolver:
                         for _, dim in self.prior_types]
         self._words = {}
         self._zero = {}
-        self._row_plan()
         self._check_prior_layout()
 
-    def _row_plan(self) -> None:
-        """Where each template factor's rows lie in the solver's linearisation
-        (:meth:`NativeSolver.rows`), by the oldest slot it touches, and which columns of the
-        (that slot, the next) matrix its variables' tangent columns are."""
-        t = self.template
-        dims = {v.key: v.dim for v in t.variables}
-        within, self.slot_dims = {}, [0] * self.size
-        for v in t.variables:
-            slot = self.cluster_of[v.key]
-            within[v.key] = self.slot_dims[slot]
-            self.slot_dims[slot] += dims[v.key]
-        layout = self.solver.row_layout()
-        seen = [0] * len(t.blocks)
-        self.by_slot = [[] for _ in range(self.size)]  # (first word, m, columns, targets, keys)
-        for spec in t.factors:
-            k = seen[spec.block]
-            seen[spec.block] += 1
-            slots = [self.cluster_of[key] for key in spec.keys]
-            lo = min(slots)
-            pos, _, m, cols = layout[spec.block]
-            targets = np.concatenate([within[key] + (self.slot_dims[lo] if slot > lo else 0)
-                                      + np.arange(dims[key])
-                                      for key, slot in zip(spec.keys, slots, strict=True)])
-            self.by_slot[lo].append((pos + k * m * cols, m, cols, targets, max(slots),
-                                     spec.keys))
-
-    def eliminate(self, x: np.ndarray, d: np.ndarray, count: int,
-                  pass_last: bool = False) -> tuple[list, list]:
-        """Eliminate slots 0 … count − 1, oldest first, from the solver's rows at ``x`` (its
-        factors and its marginal priors, undamped, one QR per slot): per slot its conditional
-        (R, S, d) — R·δ_s + S·δ_s+1 = d, S empty for the last slot unless ``pass_last`` — and
-        the dense factor [A | b] it passes to the next slot (None for the last slot unless
-        ``pass_last``). Factors from the last slot into the next one are left out unless
-        ``pass_last`` (past the window they carry zero square-root information)."""
-        rows = self.solver.rows(x, d)
-        conds, passed, carry = [], [], None
-        for s in range(count):
-            last = s == count - 1
-            n0 = self.slot_dims[s]
-            n1 = self.slot_dims[s + 1] if s + 1 < self.size and (pass_last or not last) else 0
-            width = n0 + n1
-            stacks = []
-            if carry is not None:
-                part = np.zeros((carry.shape[0], width + 1))
-                part[:, :n0], part[:, -1] = carry[:, :-1], carry[:, -1]
-                stacks.append(part)
-            for start, m, cols, targets, hi, keys in self.by_slot[s]:
-                if hi > s + 1:
-                    raise NativeStreamError(f"a factor on {list(keys)} spans keyframes {s} to "
-                                            f"{hi} of the window: native streaming eliminates "
-                                            "factors between consecutive keyframes only")
-                if hi > s and n1 == 0:
-                    continue
-                block = rows[start:start + m * cols].reshape(m, cols)
-                part = np.zeros((m, width + 1))
-                part[:, targets] = block[:, :-1]
-                part[:, -1] = block[:, -1]
-                stacks.append(part)
-            stacked = np.concatenate(stacks)
-            if stacked.shape[0] < n0:
-                raise NativeStreamError(f"window slot {s}: {stacked.shape[0]} rows cannot "
-                                        f"determine its {n0} columns")
-            r = np.linalg.qr(stacked, mode="r")
-            conds.append((r[:n0, :n0], r[:n0, n0:width], r[:n0, -1]))
-            carry = r[n0:width, n0:] if n1 else None
-            passed.append(carry)
-        return conds, passed
-
-    def marginal(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Eliminate slot 0 from the window's linearisation at ``x`` (the solver's own rows: its
-        factors and its marginal prior): the dense factor [A | b] it passes to slot 1, A upper
-        triangular with a positive diagonal."""
-        _, passed = self.eliminate(x, d, 1, pass_last=True)
-        return as_prior(passed[0], self.slot_dims[1], "slot 0")[:2]
 
     def _signature(self, f, shift: int) -> tuple:
         return (f.type.name, tuple((self.cluster_of[str(k)] + shift, self.position[str(k)])
@@ -358,6 +280,107 @@ class WindowSolver:
                                     "stream's factors do not repeat keyframe by keyframe")
         return x, np.concatenate(words)
 
+    def store(self, estimate: dict, x_out: np.ndarray, first: int, last: int) -> None:
+        """Write the window's optimum ``x_out`` (template layout) into ``estimate`` for the
+        keyframes first … last (slots past ``last`` are held: not written)."""
+        clusters = self.program.schedule.clusters
+        pos = 0
+        for v in self.template.variables:
+            slot = self.cluster_of[v.key]
+            if first + slot <= last:
+                key = clusters[first + slot][self.position[v.key]]
+                estimate[key][:] = x_out[pos:pos + v.storage_dim]
+            pos += v.storage_dim
+
+
+class WindowSolver(WindowTemplate):
+    """The native solver compiled for a :class:`WindowTemplate` of ``size`` keyframes;
+    :meth:`eliminate` eliminates the window from the solver's rows at a point (module
+    docstring)."""
+
+    def __init__(self, graph: Graph, program: Program, size: int, config=None):
+        from fgc_backends import native
+
+        super().__init__(graph, program, size)
+        self.solver = native.load(self.template, config)
+        self.config = self.solver.project.config
+        self._row_plan()
+
+    def _row_plan(self) -> None:
+        """Where each template factor's rows lie in the solver's linearisation
+        (:meth:`NativeSolver.rows`), by the oldest slot it touches, and which columns of the
+        (that slot, the next) matrix its variables' tangent columns are."""
+        t = self.template
+        dims = {v.key: v.dim for v in t.variables}
+        within, self.slot_dims = {}, [0] * self.size
+        for v in t.variables:
+            slot = self.cluster_of[v.key]
+            within[v.key] = self.slot_dims[slot]
+            self.slot_dims[slot] += dims[v.key]
+        layout = self.solver.row_layout()
+        seen = [0] * len(t.blocks)
+        self.by_slot = [[] for _ in range(self.size)]  # (first word, m, columns, targets, keys)
+        for spec in t.factors:
+            k = seen[spec.block]
+            seen[spec.block] += 1
+            slots = [self.cluster_of[key] for key in spec.keys]
+            lo = min(slots)
+            pos, _, m, cols = layout[spec.block]
+            targets = np.concatenate([within[key] + (self.slot_dims[lo] if slot > lo else 0)
+                                      + np.arange(dims[key])
+                                      for key, slot in zip(spec.keys, slots, strict=True)])
+            self.by_slot[lo].append((pos + k * m * cols, m, cols, targets, max(slots),
+                                     spec.keys))
+
+    def eliminate(self, x: np.ndarray, d: np.ndarray, count: int,
+                  pass_last: bool = False) -> tuple[list, list]:
+        """Eliminate slots 0 … count − 1, oldest first, from the solver's rows at ``x`` (its
+        factors and its marginal priors, undamped, one QR per slot): per slot its conditional
+        (R, S, d) — R·δ_s + S·δ_s+1 = d, S empty for the last slot unless ``pass_last`` — and
+        the dense factor [A | b] it passes to the next slot (None for the last slot unless
+        ``pass_last``). Factors from the last slot into the next one are left out unless
+        ``pass_last`` (past the window they carry zero square-root information)."""
+        rows = self.solver.rows(x, d)
+        conds, passed, carry = [], [], None
+        for s in range(count):
+            last = s == count - 1
+            n0 = self.slot_dims[s]
+            n1 = self.slot_dims[s + 1] if s + 1 < self.size and (pass_last or not last) else 0
+            width = n0 + n1
+            stacks = []
+            if carry is not None:
+                part = np.zeros((carry.shape[0], width + 1))
+                part[:, :n0], part[:, -1] = carry[:, :-1], carry[:, -1]
+                stacks.append(part)
+            for start, m, cols, targets, hi, keys in self.by_slot[s]:
+                if hi > s + 1:
+                    raise NativeStreamError(f"a factor on {list(keys)} spans keyframes {s} to "
+                                            f"{hi} of the window: native streaming eliminates "
+                                            "factors between consecutive keyframes only")
+                if hi > s and n1 == 0:
+                    continue
+                block = rows[start:start + m * cols].reshape(m, cols)
+                part = np.zeros((m, width + 1))
+                part[:, targets] = block[:, :-1]
+                part[:, -1] = block[:, -1]
+                stacks.append(part)
+            stacked = np.concatenate(stacks)
+            if stacked.shape[0] < n0:
+                raise NativeStreamError(f"window slot {s}: {stacked.shape[0]} rows cannot "
+                                        f"determine its {n0} columns")
+            r = np.linalg.qr(stacked, mode="r")
+            conds.append((r[:n0, :n0], r[:n0, n0:width], r[:n0, -1]))
+            carry = r[n0:width, n0:] if n1 else None
+            passed.append(carry)
+        return conds, passed
+
+    def marginal(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Eliminate slot 0 from the window's linearisation at ``x`` (the solver's own rows: its
+        factors and its marginal prior): the dense factor [A | b] it passes to slot 1, A upper
+        triangular with a positive diagonal."""
+        _, passed = self.eliminate(x, d, 1, pass_last=True)
+        return as_prior(passed[0], self.slot_dims[1], "slot 0")[:2]
+
     def _check_once(self, x, d) -> None:
         """The first update's arrays against the template's layout (sizes, per-block words)."""
         t = self.template
@@ -379,18 +402,6 @@ class WindowSolver:
         :meth:`NativeSolver.solve` returns them (the native library; a subclass may run
         another build of the same template)."""
         return self.solver.solve(x, d)
-
-    def store(self, estimate: dict, x_out: np.ndarray, first: int, last: int) -> None:
-        """Write the window's optimum ``x_out`` (template layout) into ``estimate`` for the
-        keyframes first … last (slots past ``last`` are held: not written)."""
-        clusters = self.program.schedule.clusters
-        pos = 0
-        for v in self.template.variables:
-            slot = self.cluster_of[v.key]
-            if first + slot <= last:
-                key = clusters[first + slot][self.position[v.key]]
-                estimate[key][:] = x_out[pos:pos + v.storage_dim]
-            pos += v.storage_dim
 
 
 def as_prior(rows: np.ndarray, n: int, what: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -1,0 +1,339 @@
+"""The fixed-lag window on chip (issue 19): the accelerator keeps the window between calls and
+takes one keyframe's measurements per call.
+
+The design is the batch accelerator of a *template* window (:class:`~fgc_backends.native.stream.
+WindowTemplate`: the chain's first W + 1 keyframes, a ``MarginalPrior…`` factor on each) with a
+second top function, ``<name>_stream`` (accel.cpp.jinja's stream section), that owns the
+window's state in the accelerator's memories (``X``: the slots' variables, ``DATA_BUF``: every
+factor's words, the marginal prior τ among them) and runs one update a call:
+
+1. keyframe j enters slot m = min(j, W); once the window is full (j > W) every slot first moves
+   down one (``stream_shift``: slot s takes slot s + 1's variables and the words of the factor one
+   keyframe later, a factor without one there gets zero square-root information; slot 0's prior
+   takes slot 1's, which is τ);
+2. the call's inputs — keyframe j's initial storage and the words of the factors that end at it
+   (``keyframe_words``: measurements and noise, a factor the stream lacks with zero square-root
+   information) and of its slot's prior (its linearisation point, zero information) — are
+   written to their slot (``stream_in``, the ``NEW_DEST`` table);
+3. LM on the window (``optimize``, the batch design's units);
+4. window full (m = W): keyframe j − W leaves. The window is linearised at its optimum and slot 0's
+   elimination step is run once more at μ = 0 on unit set 0 (``marginalize``); the new factor it
+   passes to slot 1 ([A | b], upper triangular: the QR unit's rows) becomes τ, signed to a
+   positive diagonal, its mean A⁻¹b by back-substitution, written into slot 1's prior with slot 1's
+   estimate as the linearisation point (a singular marginal is reported, not written).
+
+This is the native stream's update (:class:`~fgc_backends.native.stream.FixedLagStream`) with
+the host's window assembly and NumPy marginalisation replaced by the accelerator's own memories
+and units; held slots during the first W updates keep their reset values under a unit prior, as
+there. :class:`WindowLayout` computes the tables the stream section reads and the words of each
+call; the host driver is :class:`fgc_backends.hls.stream.OnChipFixedLagStream`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from fgc.errors import FgcError
+from fgc.ir.datafile import factor_words
+from fgc_backends.cfamily.tables import build_tables
+from fgc_backends.native.stream import WindowTemplate
+
+KEEP, ZERO = -1, -2  # DATA_SHIFT codes besides a source word: keep the word, write zero
+
+
+class OnChipWindowError(FgcError):
+    """The stream cannot run on the on-chip window (a Cholesky design, a slot whose
+    elimination does not pass a whole prior to the next, a stream whose factors do not repeat
+    keyframe by keyframe)."""
+
+
+@dataclass(frozen=True)
+class Member:
+    """One factor of the template in the data buffer: template factor ``t`` (graph factors
+    first, then the slots' priors), its words ``start`` … ``start + words``, its last
+    ``noise`` words the noise parameters and the robust loss; ``slots``: its keyframes' slots
+    (a prior: its slot); ``cells``: (slot, position) per variable (None for a prior)."""
+
+    t: int
+    start: int
+    words: int
+    noise: int
+    slots: tuple[int, ...]
+    cells: tuple | None
+    kind: str
+    prior: bool
+
+    @property
+    def hi(self) -> int:
+        return max(self.slots)
+
+
+class WindowLayout(WindowTemplate):
+    """The template of a fixed-lag window of ``window`` keyframes (W + 1 slots) and the tables
+    of its on-chip stream (module docstring)."""
+
+    def __init__(self, graph, program, window: int):
+        if isinstance(window, bool) or not isinstance(window, int) or window < 1:
+            raise OnChipWindowError(f"the fixed-lag window must be a positive number of "
+                                    f"keyframes, got {window!r}")
+        super().__init__(graph, program, window + 1)
+        self.window = window
+        t = self.template
+        if t.solver.linear != "qr":
+            raise OnChipWindowError(
+                "the on-chip fixed-lag window marginalises with the QR unit's new factor (paper "
+                f"A's design); {program.name!r} is compiled for Cholesky: compile it with "
+                "--linear-solver qr")
+        tables = {tab.name: tab.values for tab in build_tables(t, t.solver.method == "lm",
+                                                                False).arrays}
+        self.tables = tables
+        x_off = tables["VAR_X_OFF"]
+        index = {v.key: i for i, v in enumerate(t.variables)}
+        slots = self.size
+        clusters = program.schedule.clusters
+        # slot s's variables' storage words in cluster order (one keyframe's record order)
+        self.slot_x = []
+        for s in range(slots):
+            words = []
+            for k in clusters[s]:
+                i = index[k]
+                words += range(x_off[i], x_off[i + 1])
+            self.slot_x.append(words)
+        self.kf_words = len(self.slot_x[0])
+        self.kf_dim = self.prior_types[0][1]
+        self.members = self._members(tables["FACTOR_DATA_OFF"])
+        self.n_x, self.n_data = x_off[-1], tables["FACTOR_DATA_OFF"][-1]
+        self._shift_tables()
+        self._leaf(tables, index)
+
+    # -- where each factor's words lie -----------------------------------------------------
+    def _members(self, data_off) -> list[Member]:
+        t = self.template
+        n_template = len(self.template_factors)
+        out = []
+        for spec, start in zip(t.factors, data_off, strict=False):
+            block = t.blocks[spec.block]
+            pos = start
+            for member, ti in zip(block.members, spec.factors, strict=True):
+                if ti < n_template:
+                    f = self.template_factors[ti]
+                    parts = factor_words(f.measured, f.noise, member)
+                    kind, cells = self.signatures[ti]
+                    slots = tuple(c for c, _ in cells)
+                    prior = False
+                else:
+                    slot = ti - n_template
+                    dim = self.prior_types[slot][1]
+                    parts = [np.zeros(self.kf_words + dim), np.zeros(dim * (dim + 1) // 2),
+                             np.zeros(2)]
+                    kind, cells, slots, prior = "prior", None, (slot,), True
+                words = sum(p.size for p in parts)
+                out.append(Member(ti, pos, words, parts[-1].size + parts[-2].size, slots, cells,
+                                  kind, prior))
+                pos += words
+        if pos_total(out) != data_off[-1]:
+            raise OnChipWindowError("internal error: the template's factor words are not laid "
+                                    "out as the data file's")
+        return out
+
+    def _shift_tables(self) -> None:
+        last = self.size - 1
+        x_shift = [KEEP] * self.n_x
+        for s in range(last):
+            for dst, src in zip(self.slot_x[s], self.slot_x[s + 1], strict=True):
+                x_shift[dst] = src
+        data_shift = [KEEP] * self.n_data
+        by_cells = {(m.kind, m.cells): m for m in self.members if not m.prior}
+        prior_of = {m.slots[0]: m for m in self.members if m.prior}
+        self.prior_of = prior_of
+        for m in self.members:
+            if m.hi == last:
+                continue  # written by the keyframe that enters the newest slot
+            if m.prior:
+                source = prior_of[m.slots[0] + 1]
+            else:
+                source = by_cells.get((m.kind, tuple((c + 1, p) for c, p in m.cells)))
+            if source is None:  # no such factor one keyframe on: zero square-root information
+                for w in range(m.start + m.words - m.noise, m.start + m.words):
+                    data_shift[w] = ZERO
+                continue
+            if source.words != m.words or source.noise != m.noise:
+                raise OnChipWindowError(f"internal error: a {m.kind} factor is laid out in "
+                                        f"{m.words} words on slots {m.slots} and "
+                                        f"{source.words} one keyframe on")
+            for k in range(m.words):
+                data_shift[m.start + k] = source.start + k
+        self.x_moves, self.data_moves = _moves(x_shift), _moves(data_shift)
+        # per slot m: the data words a keyframe entering slot m brings (its factors ending at
+        # m and m's prior), ascending
+        self.new_dest = []
+        for s in range(self.size):
+            words = []
+            for m in self.members:
+                if m.hi == s:
+                    words += range(m.start, m.start + m.words)
+            self.new_dest.append(sorted(words))
+
+    def _leaf(self, tables, index) -> None:
+        """The elimination step of slot 0: its frontal variables slot 0's, its separator slot
+        1's in the prior's tangent order, passing at least a whole prior's rows."""
+        t = self.template
+        clusters = self.program.schedule.clusters
+        t_off = tables["VAR_T_OFF"]
+        self.leaf_step = None
+        if self.size < 2:
+            return
+        for step in t.schedule.steps:
+            if set(step.frontals) == set(clusters[0]):
+                self.leaf_step = step.index
+        s = self.leaf_step
+        if s is None:
+            raise OnChipWindowError("the template's schedule does not eliminate slot 0 in a step "
+                                    "of its own: its marginal cannot be read off a unit")
+        begin = tables["STEP_COL_BEGIN"]
+        cols = tables["STEP_COL"][begin[s]:begin[s + 1]]
+        f = tables["STEP_F"][s]
+        want = [c for k in clusters[1] for c in range(t_off[index[k]], t_off[index[k] + 1])]
+        if list(cols[f:]) != want:
+            raise OnChipWindowError("the template's slot-0 step does not pass its new factor on "
+                                    "slot 1's variables in their order: the marginal cannot be "
+                                    "read off the QR unit")
+        rows = tables["STEP_NF_ROWS"][s]
+        if rows < self.kf_dim:
+            raise OnChipWindowError(f"slot 0's elimination passes {rows} rows to slot 1, fewer "
+                                    f"than its {self.kf_dim} tangent directions: the marginal "
+                                    "prior would be singular")
+
+    # -- what the emitter places ---------------------------------------------------------------
+    def context(self, linear_cxx: str) -> dict:
+        """The stream section's constants and tables (accel.h.jinja / accel.cpp.jinja);
+        ``linear_cxx``: the linear solver's scalar (τ's singularity threshold)."""
+        new_begin = np.cumsum([0] + [len(d) for d in self.new_dest]).tolist()
+        return {"window": self.window, "slots": self.size, "kf_x": self.kf_words,
+                "kf_t": self.kf_dim,
+                "leaf_step": self.leaf_step if self.leaf_step is not None else 0,
+                "marginal": self.leaf_step is not None and self.size == self.window + 1,
+                "prior1": self.prior_of[1].start if self.size > 1 else 0,
+                # as_prior's 1e-12 in double; float's resolution is 1e-7
+                "singular": "1e-12" if linear_cxx == "double" else "1e-5",
+                "x_moves": [w for pair in self.x_moves for w in pair],
+                "data_moves": [w for pair in self.data_moves for w in pair],
+                "slot_x": [w for s in self.slot_x for w in s],
+                "new_dest": [w for d in self.new_dest for w in d],
+                "new_begin": new_begin,
+                "max_new": max(len(d) for d in self.new_dest)}
+
+    # -- the words of the calls ------------------------------------------------------------
+    def reset_words(self, estimate: dict) -> tuple[np.ndarray, np.ndarray]:
+        """The reset call's (x, data): the template's slots at ``estimate`` (keyframes 0 … W),
+        every factor with zero square-root information, every prior a unit one at its slot's
+        value (held)."""
+        clusters = self.program.schedule.clusters
+        x = np.zeros(self.n_x)
+        for s in range(self.size):
+            x[self.slot_x[s]] = np.concatenate([estimate[k] for k in clusters[s]])
+        data = np.zeros(self.n_data)
+        members = self._member_objects()
+        for m in self.members:
+            if m.prior:
+                s = m.slots[0]
+                words = np.concatenate([x[self.slot_x[s]], self._held[s]])
+            else:
+                words = self._zeroed(m.t, members[m.t])
+            data[m.start:m.start + m.words] = words
+        return x, data
+
+    def keyframe_words(self, j: int, x_new: np.ndarray) -> tuple[int, np.ndarray]:
+        """(slot, data words) of keyframe j's call (``x_new``: its initial storage, cluster
+        order): its slot's factors and prior in ``NEW_DEST`` order."""
+        m = min(j, self.size - 1)
+        first = j - m
+        members = self._member_objects()
+        buf = np.zeros(self.n_data)
+        for mem in self.members:
+            if mem.hi != m:
+                continue
+            if mem.prior:
+                words = np.concatenate([x_new, self._unused[m]])
+            else:
+                index = self.by_signature.get((mem.kind, tuple((c + first, p)
+                                                               for c, p in mem.cells)))
+                words = (self._zeroed(mem.t, members[mem.t]) if index is None
+                         else self._factor(index, members[mem.t]))
+            buf[mem.start:mem.start + mem.words] = words
+        return m, buf[self.new_dest[m]]
+
+    def _member_objects(self) -> dict:
+        if not hasattr(self, "_by_t"):
+            t = self.template
+            self._by_t = {ti: member for spec in t.factors
+                          for member, ti in zip(t.blocks[spec.block].members, spec.factors,
+                                                strict=True)}
+        return self._by_t
+
+    def check_holds(self, held: list, j: int) -> list:
+        """The graph factor each template factor holds after keyframe j's call (``held``: as
+        after the previous call, None before the first), shifted and filled as the chip does;
+        :class:`OnChipWindowError` if a graph factor inside the window j − W … j is not held
+        (the stream's factors do not repeat keyframe by keyframe)."""
+        last = self.size - 1
+        m = min(j, last)
+        first = j - m
+        by_cells = {(mem.kind, mem.cells): i for i, mem in enumerate(self.members)
+                    if not mem.prior}
+        if held is None:
+            held = [None] * len(self.members)
+        if j > last:
+            moved = [None] * len(held)
+            for i, mem in enumerate(self.members):
+                if mem.prior or mem.hi == last:
+                    continue
+                src = by_cells.get((mem.kind, tuple((c + 1, p) for c, p in mem.cells)))
+                moved[i] = None if src is None else held[src]
+            held = moved
+        for i, mem in enumerate(self.members):
+            if not mem.prior and mem.hi == m:
+                held[i] = self.by_signature.get((mem.kind, tuple((c + first, p)
+                                                                 for c, p in mem.cells)))
+        inside = set(np.flatnonzero((self.span_lo >= first) & (self.span_hi <= j)).tolist())
+        have = {h for h in held if h is not None}
+        if inside != have:
+            missing = sorted(inside - have)
+            f = self.graph.factors[missing[0]] if missing else None
+            what = (f"the {f.type.name} factor on {[str(k) for k in f.keys]}" if f is not None
+                    else "a factor outside it")
+            raise OnChipWindowError(f"keyframes {first} … {j}: the on-chip window does not hold "
+                                    f"{what}: the stream's factors do not repeat keyframe by "
+                                    "keyframe as the template's")
+        return held
+
+
+def _moves(shift: list[int]) -> list[tuple[int, int]]:
+    """The shift's (target, source) pairs (source ZERO: write zero) in an order that reads
+    every word before it is overwritten: each word is the source of at most one target (slot
+    s + 1 to slot s), so the pairs form chains, each run from the target whose own word no
+    one reads."""
+    read_by = {src: dst for dst, src in enumerate(shift) if src >= 0}
+    if len(read_by) != sum(1 for src in shift if src >= 0):
+        raise OnChipWindowError("internal error: a word is the shift source of two targets")
+    order, done = [], set()
+    for dst, src in enumerate(shift):
+        if src == KEEP or dst in done or dst in read_by:
+            continue  # a chain starts at a target no one reads (its old word is dropped)
+        word = dst
+        while True:
+            order.append((word, shift[word]))
+            done.add(word)
+            nxt = shift[word]
+            if nxt < 0 or nxt in done or shift[nxt] == KEEP:
+                break
+            word = nxt
+    if len(order) != sum(1 for src in shift if src != KEEP):
+        raise OnChipWindowError("internal error: the shift has a cycle")
+    return order
+
+
+def pos_total(members: list[Member]) -> int:
+    return members[-1].start + members[-1].words if members else 0
