@@ -122,6 +122,8 @@ class UpdatePrice:
     iterations: int
     clock_mhz: float
     terms: tuple[Term, ...]
+    source: str = ("accelerator plan update model (fgc_backends.hls.update; model estimate; "
+                   "incremental mode not emitted)")
 
     @property
     def window(self) -> int:
@@ -156,8 +158,7 @@ class UpdatePrice:
         raise KeyError(name)
 
     def as_dict(self) -> dict:
-        return {"source": "accelerator plan update model (fgc_backends.hls.update; model "
-                          "estimate; incremental mode not emitted)",
+        return {"source": self.source,
                 "keyframe": self.keyframe, "mode": self.mode, "first": self.first,
                 "window": self.window, "iterations": self.iterations,
                 "cycles": self.cycles, "latency_ms": self.latency_ms,

@@ -337,3 +337,135 @@ def _moves(shift: list[int]) -> list[tuple[int, int]]:
 
 def pos_total(members: list[Member]) -> int:
     return members[-1].start + members[-1].words if members else 0
+
+
+# the plan phase group (its name without the level number) -> the run event that executes it
+# once (FGC_EVENT in accel.cpp.jinja; bench/bench_cycles.py counts the same way)
+PHASE_TRIGGER = {"factor_jacobian": "linearize", "gradient": "linearize", "qr_stack": "solve",
+                 "qr": "solve", "qr_commit": "solve", "backsub": "solve",
+                 "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
+                 "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}
+STREAM_SOURCE = ("accelerator plan of the emitted on-chip fixed-lag window "
+                 "(fgc_backends.hls.window; model estimate)")
+
+
+def phase_group(name: str) -> str:
+    """A plan phase's group: its name without the level number (qr_level3 -> qr)."""
+    head, _, tail = name.rpartition("_level")
+    return head if head and tail.isdigit() else name
+
+
+class WindowUpdateModel:
+    """The price of each call of the on-chip fixed-lag window's design
+    (``<name>_stream``): the accelerator plan of the emitted template
+    (:func:`fgc_backends.hls.emitter.accel_plan`, the design ``config`` emits) for the solve's
+    phases, each priced per execution times how often the update ran it, and the stream
+    section's own loops, priced as accel.cpp.jinja counts them: the keyframe's words in, the
+    shift, the marginalisation (a linearisation, slot 0's step on unit set 0 at μ = 0, τ's signs,
+    mean and words) and the window out. Every figure is a model estimate of the emitted
+    structure; :meth:`price` takes the update's event counts when a counting C simulation gives
+    them, else derives them from its iterations (no rejected steps)."""
+
+    def __init__(self, layout: WindowLayout, config):
+        from fgc_backends.cost.operators import table
+        from fgc_backends.cost.structure import stacked_pattern
+        from fgc_backends.hls.emitter import accel_plan, for_program
+        from fgc_backends.hls.plan import (
+            Phase,
+            Process,
+            _tables,
+            commit_loops,
+            kernel_loop,
+            kernel_timing,
+            phase_cycles,
+            plan_sizes,
+            qr_unit_loops,
+            stack_loops,
+        )
+
+        self.layout = layout
+        t = layout.template
+        config = for_program(t, config)
+        self.plan = plan = accel_plan(t, config)
+        self.clock_mhz = plan.clock_mhz
+        self.group = {}
+        for ph in plan.phases:
+            if ph.per in ("iteration", "rejection"):
+                g = phase_group(ph.name)
+                self.group[g] = self.group.get(g, 0) + phase_cycles(ph)
+        kt = kernel_timing(plan.ops)
+        les = table("float32" if config.linear_cxx == "float" else "float64")
+        lt = kernel_timing(les)
+
+        def cycles(*loops):
+            return phase_cycles(Phase("x", False, (Process("x", "x", tuple(loops)),)))
+
+        ctx = layout.context(config.linear_cxx)
+        n_x, n_t = layout.n_x, layout.kf_dim
+        self.keyframe_in = [cycles(kernel_loop("x", layout.kf_words, "move", kt),
+                                   kernel_loop("d", len(d), "move", kt))
+                            for d in layout.new_dest]
+        self.shift = cycles(kernel_loop("x", len(layout.x_moves), "move", kt),
+                            kernel_loop("d", len(layout.data_moves), "move", kt))
+        self.x_out = cycles(kernel_loop("x", n_x, "move", kt))
+        self.marginal = 0
+        if ctx["marginal"]:
+            s = layout.leaf_step
+            tables = _tables(t)
+            damping = t.solver.method == "lm"
+            step = t.schedule.steps[s]
+            qr = phase_cycles(Phase("leaf", True, (Process("leaf", "qr", tuple(qr_unit_loops(
+                stacked_pattern(t, step, damping), step.frontal_dim, max(1, t.solver.units),
+                les, name="leaf"))),)))
+            stack = cycles(*stack_loops(tables, s, max(1, t.solver.units),
+                                        plan_sizes(t)["MAX_W"], damping, kt))
+            commit = cycles(*commit_loops(tables, s, kt, False))
+            tail = cycles(kernel_loop("sign", n_t * (n_t + 1), "max", kt),
+                          kernel_loop("mean", n_t * (n_t - 1) // 2, "acc", lt),
+                          kernel_loop("divide", n_t, "div", lt),
+                          kernel_loop("tau_out", layout.kf_words + n_t + n_t * (n_t + 1) // 2
+                                      + 2, "move", kt))
+            self.marginal_parts = {"linearize": self.group["factor_jacobian"]
+                                   + self.group["gradient"],
+                                   "stack": stack, "qr": qr, "commit": commit, "tau": tail}
+            self.marginal = sum(self.marginal_parts.values())
+
+    @staticmethod
+    def events_of(iterations: int, rejected: int = 0, noise: int = 0) -> dict:
+        """The solve's event counts from its iterations: each iteration a linearisation, a
+        solve, a retraction, a cost pass and (but the last, which converged) an accepted step;
+        the start's cost pass; ``rejected`` trial steps add a solve, a retraction and a cost
+        pass each."""
+        k = int(iterations)
+        return {"linearize": k, "solve": k + rejected, "retract": k + rejected,
+                "cost": 1 + k + rejected, "accept": max(0, k - 1), "noise": noise}
+
+    def price(self, keyframe: int, iterations: int, events: dict | None = None):
+        """The :class:`~fgc_backends.hls.update.UpdatePrice` of keyframe ``keyframe``'s call."""
+        from fgc_backends.hls.update import Term, UpdatePrice
+
+        lay = self.layout
+        m = min(keyframe, lay.size - 1)
+        first = max(0, keyframe - lay.window)
+        ev = dict(events) if events is not None else self.events_of(iterations)
+        terms = [Term("keyframe_in", self.keyframe_in[m], 1, False,
+                      f"keyframe {keyframe}'s storage and {len(lay.new_dest[m])} data words in "
+                      f"(slot {m})")]
+        if keyframe >= lay.size:
+            terms.append(Term("shift", self.shift, 1, False,
+                              "every slot down one: its variables, its factors' words, τ"))
+        for g in sorted(self.group):
+            trigger = PHASE_TRIGGER.get(g)
+            if trigger is None:
+                continue
+            times = ev.get(trigger, 0)
+            if times:
+                terms.append(Term(g, self.group[g], times, False,
+                                  f"the window's {g} phase, once per {trigger}"))
+        if m == lay.window and self.marginal:
+            terms.append(Term("marginal", self.marginal, 1, False,
+                              "keyframe leaving: the window linearised at its optimum, slot 0's "
+                              "QR step at μ = 0 on unit set 0, τ's signs, mean and words"))
+        terms.append(Term("x_out", self.x_out, 1, False, "the window's storage out"))
+        return UpdatePrice(keyframe, "fixed-lag", first, int(iterations),
+                           self.clock_mhz, tuple(terms), STREAM_SOURCE)

@@ -1,0 +1,106 @@
+"""The on-chip fixed-lag window's cycles: its counting C simulation against the update model, per
+keyframe (fgc issue 19).
+
+For LIO at N keyframes and window W: emit the on-chip window's design (``<name>_stream``,
+backends/hls/window.py), build its testbench with -DFGC_COUNT_CYCLES (every loop of the kernel and
+the units reports trip, II and depth as it runs: fgc_cycles.h) and stream the keyframes through it
+(``tb --stream``): after each call the testbench prints that update's cycles and events. The model
+(``WindowUpdateModel``) prices the same call from the emitted plan: each solve phase per execution
+times the events the call ran, plus the stream section's loops (keyframe in, shift, marginal, out).
+Prints per keyframe csim and model cycles, their ratio, and the update latency at the plan's clock
+(model estimates), then the agreement of the streamed estimate with the native fixed-lag stream.
+
+    python bench/bench_stream_cycles.py [--keyframes N] [--window W] [--scalar float|double]
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import subprocess
+import tempfile
+import warnings
+
+import numpy as np
+
+from fgc.app.specs import example
+from fgc.app.streaming import compile_stream, keyframe_result
+from fgc.ir.datafile import problem_data
+from fgc_backends.hls.config import HlsConfig
+from fgc_backends.hls.stream import OnChipFixedLagStream
+from fgc_backends.hls.window import WindowUpdateModel
+from fgc_backends.native.stream import FixedLagStream
+
+
+def counted(stream: OnChipFixedLagStream) -> list[tuple[int, dict]]:
+    """(cycles, events) per keyframe of a counting build of the stream's testbench (the inputs
+    its last :meth:`run` wrote)."""
+    folder, name = stream.project.directory, stream.project.name
+    stream.phases = []  # per keyframe: csim cycles per plan phase
+    subprocess.run(["g++", "-std=c++17", "-O1", "-DFGC_COUNT_CYCLES", "-Wno-unknown-pragmas",
+                    "-I", "csim_include", "-I", "include", f"tb_{name}.cpp", f"{name}.cpp",
+                    "-o", "tb_count"], cwd=folder, check=True)
+    out = subprocess.run(["./tb_count", "--stream", "data.txt", "stream.txt", "count.txt"],
+                         cwd=folder, check=True, capture_output=True, text=True).stdout
+    rows = []
+    for line in out.splitlines():
+        m = re.match(r"^cycles (\d+) (\d+)(.*)$", line)
+        if m:
+            events = {k: int(v) for k, v in re.findall(r"(\S+)=(\d+)", m.group(3))}
+            stream.phases.append({k[6:]: v for k, v in events.items() if k.startswith("phase:")})
+            events = {k: v for k, v in events.items() if not k.startswith("phase:")}
+            rows.append((int(m.group(2)), events))
+    return rows
+
+
+def measure(keyframes: int, window: int, scalar: str):
+    graph = example("lio").build(N=keyframes)
+    program = compile_stream(graph, window=window, name="lio_stream")
+    data = problem_data(graph, program)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # a double design over the part's DSP still simulates
+        stream = OnChipFixedLagStream(graph, program, window, scalar,
+                                      out_dir=tempfile.mkdtemp(prefix="fgc-stream-cycles-"))
+        result = stream.run(data)
+        model = WindowUpdateModel(stream.layout, HlsConfig(scalar=scalar))
+    rows = []
+    for record, (cycles, events) in zip(result.updates, counted(stream), strict=True):
+        ev = dict(events)
+        if record.get("marginal"):
+            ev["linearize"] = ev.get("linearize", 0) - 1  # the marginal's own, in its term
+        price = model.price(record["keyframe"], record["iterations"], ev)
+        rows.append((record, cycles, price))
+    return graph, program, data, result, rows, stream
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--keyframes", type=int, default=30)
+    ap.add_argument("--window", type=int, default=10)
+    ap.add_argument("--scalar", choices=("float", "double"), default="float")
+    args = ap.parse_args()
+    graph, program, data, result, rows, _ = measure(args.keyframes, args.window, args.scalar)
+    print(f"LIO N = {args.keyframes}, fixed-lag W = {args.window}, {args.scalar} design "
+          f"(on-chip window, model estimates at {rows[0][2].clock_mhz:g} MHz)")
+    print(f"{'keyframe':>8} {'iters':>5} {'csim cycles':>12} {'model cycles':>12} "
+          f"{'csim/model':>10} {'model ms':>9}")
+    ratios = []
+    for record, cycles, price in rows:
+        ratios.append(cycles / price.cycles)
+        print(f"{record['keyframe']:>8} {record['iterations']:>5} {cycles:>12,} "
+              f"{price.cycles:>12,} {cycles / price.cycles:>10.3f} {price.latency_ms:>9.3f}")
+    lat = [p.latency_ms for _, _, p in rows]
+    print(f"csim/model {min(ratios):.3f} … {max(ratios):.3f}; update latency median "
+          f"{np.median(lat):.3f} ms, p99 {np.percentile(lat, 99):.3f} ms (model estimate)")
+    native = FixedLagStream(graph, program, args.window).run(data)
+    worst = 0.0
+    for a, b in zip(result.updates, native.updates, strict=True):
+        ua, ub = keyframe_result(program, a), keyframe_result(program, b)
+        worst = max(worst, max(float(np.linalg.norm(ub.values[k].local(v)))
+                               for k, v in ua.values.items()))
+    print(f"on-chip window vs native fixed-lag stream, worst tangent-space distance over every "
+          f"keyframe's window: {worst:.2e}")
+
+
+if __name__ == "__main__":
+    main()
