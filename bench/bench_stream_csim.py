@@ -48,7 +48,7 @@ def main(argv=None) -> int:
     from fgc.interop import oracles
     from fgc.interop.to_gtsam import to_gtsam
     from fgc.ir.datafile import problem_data
-    from fgc_backends.hls.stream import CsimFixedLagStream, incremental_stream
+    from fgc_backends.hls.stream import OnChipFixedLagStream, incremental_stream
 
     graph = example("lio").build(N=args.N)
     if args.window is None:
@@ -70,7 +70,7 @@ def main(argv=None) -> int:
         stream = incremental_stream(graph, program, args.scalar, progress_build=lambda size, i, n:
                                     print(f"  template {i + 1}/{n}: {size} keyframes", flush=True))
     else:
-        stream = CsimFixedLagStream(graph, program, args.window, args.scalar)
+        stream = OnChipFixedLagStream(graph, program, args.window, args.scalar)
     csim = stream.run(data)
     t2 = time.perf_counter()
     print(f"  simulator stream {t1 - t0:.1f} s, C simulation stream {t2 - t1:.1f} s "

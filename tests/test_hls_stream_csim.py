@@ -32,7 +32,7 @@ from fgc.app.streaming import compile_stream, keyframe_result, run_stream
 from fgc.interop import oracles
 from fgc.interop.to_gtsam import to_gtsam
 from fgc.ir.datafile import problem_data
-from fgc_backends.hls.stream import CsimFixedLagStream, incremental_stream
+from fgc_backends.hls.stream import OnChipFixedLagStream, incremental_stream
 from fgc_backends.native.stream import WindowSolver
 
 STREAM_TOL = 1e-8  # double design vs simulator, tangent-space distance per variable
@@ -116,7 +116,7 @@ def test_hls_csim_fixed_lag_agrees_with_the_simulator():
     data = problem_data(graph, program)
     sim_updates = []
     run_stream(program, data, 3, sim_updates.append)
-    csim = CsimFixedLagStream(graph, program, 3, "double").run(data)
+    csim = OnChipFixedLagStream(graph, program, 3, "double").run(data)
     assert csim.status == "converged"
     assert max(_distances(program, csim, sim_updates)) <= STREAM_TOL
 
@@ -192,7 +192,7 @@ def test_hls_csim_fixed_lag_against_gtsam_after_every_keyframe():
     g++ build), a few seconds when it is."""
     graph = example("lio").build(N=8)
     program = compile_stream(graph, window=3)
-    csim = CsimFixedLagStream(graph, program, 3, "double").run(problem_data(graph, program))
+    csim = OnChipFixedLagStream(graph, program, 3, "double").run(problem_data(graph, program))
     assert csim.status == "converged"
     same = _isam2_distances(graph, program, csim, [(u["first"], False) for u in csim.updates])
     assert max(same) <= ISAM2_TOL, same

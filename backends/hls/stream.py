@@ -35,7 +35,7 @@ import numpy as np
 from fgc.ir.codes import REASONS, STATUSES
 from fgc.ir.datafile import ProblemData
 from fgc_backends.cfamily.tables import factor_data_words
-from fgc_backends.native.stream import FixedLagStream, IncrementalStream, WindowSolver
+from fgc_backends.native.stream import IncrementalStream, WindowSolver
 
 
 class _Csim:
@@ -186,14 +186,6 @@ class CsimWindow(_Csim, WindowSolver):
         self._emit_csim(scalar, out_dir)
 
 
-class CsimFixedLagStream(_Csim, FixedLagStream):
-    """The fixed-lag window of ``window`` keyframes, each update solved by the C simulation."""
-
-    def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None):
-        FixedLagStream.__init__(self, graph, program, window, _native_double())
-        self._emit_csim(scalar, out_dir)
-
-
 def incremental_stream(graph, program, scalar: str = "double", out_dir=None,
                        progress_build=None) -> IncrementalStream:
     """The incremental plan with every window solved by the C simulation of its template."""
@@ -233,34 +225,7 @@ class OnChipFixedLagStream:
         self._built = (self._cached.directory / _BUILT).is_file()
 
     def _write_inputs(self, data: ProblemData, estimate: dict) -> int:
-        """data.txt (the reset call) and stream.txt (every keyframe's words) in the project."""
-        from fgc.ir.datafile import write_data
-        from fgc_backends.hls import build
-        from fgc_backends.hls.emitter import STREAM_MAGIC
-
-        lay, t = self.layout, self.template
-        x, d = lay.reset_words(estimate)
-        variables, pos = [], 0
-        for v in t.variables:
-            variables.append(x[pos:pos + v.storage_dim])
-            pos += v.storage_dim
-        factors, pos = [], 0
-        for spec in t.factors:
-            n = factor_data_words(t, spec.block)
-            factors.append(d[pos:pos + n])
-            pos += n
-        write_data(ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint),
-                   self.project.directory / build.DATA_FILE)
-        clusters = self.program.schedule.clusters
-        lines = [f"{STREAM_MAGIC} {t.structure_fingerprint}", f"KEYFRAMES {len(clusters)}"]
-        held = None
-        for j, keys in enumerate(clusters):
-            held = lay.check_holds(held, j)
-            x_new = np.concatenate([estimate[k] for k in keys])
-            _, words = lay.keyframe_words(j, x_new)
-            lines += _chunks(x_new) + _chunks(words)
-        (self.project.directory / STREAM_FILE).write_text("\n".join(lines) + "\n")
-        return len(clusters)
+        return write_stream_inputs(self.layout, estimate, self.project.directory)
 
     def run(self, data: ProblemData, progress=None):
         """Stream ``data``'s keyframes through the C simulation; a
@@ -322,6 +287,60 @@ class OnChipFixedLagStream:
 
 
 STREAM_FILE, STREAM_RESULT_FILE = "stream.txt", "stream_result.txt"
+
+
+def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
+    """The on-chip window's testbench inputs in ``folder``: data.txt (the reset call: the
+    template's slots at ``estimate``, its factors with zero information, its priors held) and
+    stream.txt (per keyframe its storage and its data words, in lines of at most 16 numbers);
+    returns the number of keyframes. Each keyframe is checked against what the window holds
+    (:meth:`~fgc_backends.hls.window.WindowLayout.check_holds`)."""
+    from fgc.ir.datafile import write_data
+    from fgc_backends.hls import build
+    from fgc_backends.hls.emitter import STREAM_MAGIC
+
+    t = layout.template
+    x, d = layout.reset_words(estimate)
+    variables, pos = [], 0
+    for v in t.variables:
+        variables.append(x[pos:pos + v.storage_dim])
+        pos += v.storage_dim
+    factors, pos = [], 0
+    for spec in t.factors:
+        n = factor_data_words(t, spec.block)
+        factors.append(d[pos:pos + n])
+        pos += n
+    write_data(ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint),
+               Path(folder) / build.DATA_FILE)
+    clusters = layout.program.schedule.clusters
+    lines = [f"{STREAM_MAGIC} {t.structure_fingerprint}", f"KEYFRAMES {len(clusters)}"]
+    held = None
+    for j, keys in enumerate(clusters):
+        held = layout.check_holds(held, j)
+        x_new = np.concatenate([estimate[k] for k in keys])
+        _, words = layout.keyframe_words(j, x_new)
+        lines += _chunks(x_new) + _chunks(words)
+    (Path(folder) / STREAM_FILE).write_text("\n".join(lines) + "\n")
+    return len(clusters)
+
+
+def emit_window(graph, program, window: int, data: ProblemData, out_dir, config):
+    """``fgc compile --backend hls --window W``: the on-chip window's design for ``program``'s
+    chain emitted into ``out_dir`` (its synthesis top ``<name>_stream``) with its testbench's
+    inputs for ``data``'s stream (data.txt, stream.txt: ``make`` builds, ``tb_<name> --stream
+    data.txt stream.txt stream_result.txt`` runs it). Returns the project."""
+    import dataclasses
+
+    from fgc_backends.hls.emitter import emit
+    from fgc_backends.hls.window import WindowLayout
+    from fgc_backends.native.stream import _Stream
+
+    layout = WindowLayout(graph, program, window)
+    project = emit(layout.template, out_dir, config, stream=layout)
+    estimate = _Stream(program)._start(data)
+    write_stream_inputs(layout, estimate, project.directory)
+    extra = tuple(project.directory / f for f in ("data.txt", STREAM_FILE))
+    return dataclasses.replace(project, files=project.files + extra)
 
 
 def _chunks(values: np.ndarray, size: int = 16) -> list[str]:

@@ -94,7 +94,8 @@ def _streaming(args) -> bool:
     if getattr(args, "model_only", False) and backend != "hls":
         raise FgcError("--model-only prices the simulator's updates on the HLS plan: it needs "
                        "--backend hls")
-    if backend != "sim" and args.command != "stream":
+    if backend != "sim" and args.command != "stream" and not (
+            args.command == "compile" and backend == "hls" and window is not None):
         raise FgcError(f"fgc {args.command} --backend {backend}: {HW_REFUSAL}")
     return True
 
@@ -348,9 +349,14 @@ def _backend_help() -> str:
 
 
 def _cmd_compile(args) -> int:
-    if _streaming(args) and args.window is not None:
-        raise UsageError("fgc compile: --window is a run-time mode of the simulator (the same "
-                         "simulator serves every window); pass it to simulate, verify or stream")
+    window = getattr(args, "window", None) if _streaming(args) else None
+    if window is not None and args.backend != "hls":
+        raise UsageError("fgc compile: --window is a run-time mode of the simulator and the "
+                         "native solver (the same build serves every window); pass it to "
+                         "simulate, verify or stream, or compile the on-chip window with "
+                         "--backend hls")
+    if window is not None:
+        return _compile_window(args, window)
     _, program, data = _compile(args, "float32")
     from fgc.ir.datafile import write_data
 
@@ -381,6 +387,26 @@ def _cmd_compile(args) -> int:
                        f"{exc.strerror or exc}{_filename(exc)}") from None
     _print(args, [f"fgc compile {args.spec}: {len(program.variables)} variables, "
                   f"{len(program.factors)} block instances → {out}/ ({len(files) + 2} files)"])
+    return EXIT_OK
+
+
+def _compile_window(args, window: int) -> int:
+    """``fgc compile --backend hls --window W``: the on-chip fixed-lag window's design."""
+    from fgc_backends.hls.stream import emit_window
+
+    graph, program, data = _stream_setup(args, "float32")
+    out = Path(args.out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "program.json").write_text(program.to_json())
+        project = emit_window(graph, program, window, data, out, _hls_config(args, program))
+    except OSError as exc:
+        raise FgcError(f"--out {out}: cannot write the project: "
+                       f"{exc.strerror or exc}{_filename(exc)}") from None
+    _print(args, [f"fgc compile {args.spec}: on-chip fixed-lag window of {window} keyframes "
+                  f"({len(program.schedule.clusters)} in the stream), top "
+                  f"{project.name}_stream → {out}/ ({len(project.files) + 1} files; make && "
+                  f"./tb_{project.name} --stream data.txt stream.txt stream_result.txt)"])
     return EXIT_OK
 
 
@@ -523,8 +549,12 @@ def _cmd_stream(args) -> int:
                   f"chain as long as its window; {streaming.UNPRICED} otherwise) and the "
                   f"{who}'s wall time", flush=True)
     online: dict = {}
-    pricer = (streaming.update_model(graph, program) if hls
-              else streaming.UpdatePricer(graph, program, window))
+    if hls and window is not None:  # the emitted on-chip window's own design
+        pricer = streaming.WindowPricer(graph, program, window)
+    elif hls:
+        pricer = streaming.update_model(graph, program)
+    else:
+        pricer = streaming.UpdatePricer(graph, program, window)
     priced: list = []
 
     def progress(update) -> None:
@@ -533,15 +563,18 @@ def _cmd_stream(args) -> int:
         priced.append(price.as_dict() if hls else price)
         if quiet:
             return
-        if hls:
+        if hls and window is not None:
+            model = f"accelerator {price.latency_ms:7.3f} ms (model estimate, on-chip window)"
+        elif hls:
             model = (f"accelerator {price.latency_ms:7.3f} ms + {price.assumed_ms:.3f} ms "
                      f"assumed (model estimate, {price.window}-keyframe window)")
         else:
             model = (f"{price['latency_ms']:7.3f} ms (model estimate, {price['window']}-"
                      "keyframe chain)" if price else "model estimate not available")
+        wall = ("" if update.seconds != update.seconds  # NaN: no wall time to show
+                else f"{update.seconds * 1e3:8.2f} ms ({who} wall time); ")
         print(f"  keyframe {update.keyframe:>4} ({update.mode}, from {update.first}): "
-              f"{update.iterations:>3} iterations, {update.status}, {model}, "
-              f"{update.seconds * 1e3:8.2f} ms ({who} wall time); "
+              f"{update.iterations:>3} iterations, {update.status}, {model}, {wall}"
               f"{_newest_text(update, program)}", flush=True)
 
     def building(size, index, count) -> None:
@@ -569,14 +602,20 @@ def _cmd_stream(args) -> int:
                           for u in result.updates]}
     ate = acc.get("final", {}).get("translation", {})
     ate_online = acc.get("online", {}).get("translation", {})
-    head = (f"fgc stream {args.spec}: {result.status} over {n} keyframes; {who} update "
-            f"median {times['median_ms']:.2f} ms, p99 {times['p99_ms']:.2f} ms (wall time); "
+    wall = (f"{who} update median {times['median_ms']:.2f} ms, p99 {times['p99_ms']:.2f} ms "
+            "(wall time)" if times["median_ms"] == times["median_ms"]
+            else f"{who}: no wall time (a C simulation's is not the accelerator's)")
+    head = (f"fgc stream {args.spec}: {result.status} over {n} keyframes; {wall}; "
             f"vs batch optimum: ATE rmse {ate.get('rmse', float('nan')):.4g} m final, "
             f"{ate_online.get('rmse', float('nan')):.4g} m online")
     lines = [head, f"  largest tangent-space distance from the batch optimum "
                    f"{acc['max_state_distance']:.3g} (final estimate)"]
     model = [p["latency_ms"] for p in priced if p]
-    if hls:
+    if hls and window is not None:
+        lines.append(f"  accelerator per update (the on-chip window's emitted design priced on "
+                     f"its plan, model estimate): median {np.median(model):.3f} ms, p99 "
+                     f"{np.percentile(model, 99):.3f} ms")
+    elif hls:
         from fgc_backends.hls.update import NOT_EMITTED
 
         report["not_emitted"] = NOT_EMITTED
@@ -604,6 +643,17 @@ def _stream_hls_head(args, program, n: int, window, model_only: bool) -> str:
     unit = (f"n_u = {solver.units} Update units" if solver.linear == "qr"
             else f"#CPE = {solver.cpe}")
     scalar = "double" if solver.precision == "float64" else "float"
+    if window is not None:
+        who = (f"simulator {solver.precision}" if model_only else
+               f"the on-chip window's C simulation ({scalar})")
+        tail = ("The emitted design keeps the window, its factors' words and the marginal prior "
+                "in its memories between calls; a call brings one keyframe's storage and data "
+                "words, and the keyframe leaving is marginalised on the accelerator's QR unit"
+                + (" (the estimate comes from the simulator)" if model_only else ""))
+        return (f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, {who}; "
+                f"per keyframe: the accelerator's latency, the emitted design's plan per call "
+                f"({solver.linear.upper()}, n_u = {solver.units}, {solver.precision}, "
+                f"{solver.clock_mhz:g} MHz; model estimate), beside the estimate. {tail}")
     who = (f"simulator {solver.precision}" if model_only else
            f"the HLS design's C simulation ({scalar}) per update, the kept Bayes net on the host")
     tail = ("The accelerator's incremental mode is not emitted in C++: the estimate comes from "

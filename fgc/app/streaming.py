@@ -142,7 +142,7 @@ def _run_compiled_stream(program, data, window, progress, graph, backend, scalar
         raise FgcError(f"{backend} streaming needs the graph the Program was compiled from")
     incremental = program.schedule.incremental is not None
     if backend == "hls":
-        from fgc_backends.hls.stream import CsimFixedLagStream, incremental_stream
+        from fgc_backends.hls.stream import OnChipFixedLagStream, incremental_stream
 
         scalar = scalar or ("double" if program.solver.precision == "float64" else "float")
         if incremental:
@@ -150,7 +150,7 @@ def _run_compiled_stream(program, data, window, progress, graph, backend, scalar
         else:
             if progress_build is not None:
                 progress_build(window + 1, 0, 1)
-            runner = CsimFixedLagStream(graph, program, window, scalar)
+            runner = OnChipFixedLagStream(graph, program, window, scalar)
     elif incremental:
         runner = IncrementalStream(graph, program, progress_build=progress_build)
     else:
@@ -274,6 +274,23 @@ def prefix_program(graph: Graph, program, size: int):
             sub.add(f)
     solver = replace(program.solver, incremental_k=None, batch_every=None)
     return compile_graph(sub, solver, name=f"{program.name}_window{size}")
+
+
+class WindowPricer:
+    """The on-chip fixed-lag window's price of each update
+    (:class:`fgc_backends.hls.window.WindowUpdateModel` on the design ``fgc compile --backend hls
+    --window W`` emits; model estimates): ``price(update)`` from its keyframe and iterations."""
+
+    def __init__(self, graph: Graph, program, window: int, scalar: str | None = None):
+        from fgc_backends.hls.config import HlsConfig
+        from fgc_backends.hls.window import WindowLayout, WindowUpdateModel
+
+        scalar = scalar or ("double" if program.solver.precision == "float64" else "float")
+        self.model = WindowUpdateModel(WindowLayout(graph, program, window),
+                                       HlsConfig(scalar=scalar))
+
+    def price(self, update):
+        return self.model.price(int(update.keyframe), int(update.iterations))
 
 
 def update_model(graph: Graph, program, units: int | None = None, cpe: int | None = None):

@@ -1,0 +1,132 @@
+"""The fixed-lag window on chip (issue 19: fgc_backends.hls.window): the design's ``<name>_stream``
+top keeps the window between calls and takes one keyframe's words per call.
+
+- the C simulation (double design, LIO N = 6, W = 2: the window fills, slides three times and
+  marginalises four keyframes on the QR unit) agrees with the native fixed-lag stream, whose
+  window is assembled and marginalised on the host, after every keyframe to 1e-10 in the tangent
+  space (measured 1.6e-14 at N = 8, W = 3), with the same iteration counts; a wrong shift table
+  breaks the agreement;
+- a keyframe brings only its own words: the slot's factors and prior, far fewer than the window's;
+- the update model prices each call from the emitted plan: the shift once the window is full,
+  the marginalisation when a keyframe leaves; a Cholesky design is refused by name;
+- ``fgc compile --backend hls --window W`` emits the streaming top as the synthesis top, with its
+  testbench inputs; ``fgc stream --backend hls --window W`` runs it.
+Heavy (tests/test_hls_stream_csim.py): the same window against GTSAM at W = 3.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from fgc.app.cli import main
+from fgc.app.specs import example
+from fgc.app.streaming import compile_stream, keyframe_result
+from fgc.ir.datafile import problem_data
+from fgc_backends.hls.config import HlsConfig
+from fgc_backends.hls.stream import OnChipFixedLagStream
+from fgc_backends.hls.window import OnChipWindowError, WindowLayout, WindowUpdateModel
+from fgc_backends.native.stream import FixedLagStream
+
+TOL = 1e-10  # tangent-space distance per variable, on-chip csim (double) vs native stream
+LIO = str(Path(__file__).resolve().parent.parent / "examples" / "lio.py")
+
+
+def _worst(program, a, b) -> float:
+    worst = 0.0
+    for ra, rb in zip(a.updates, b.updates, strict=True):
+        ua, ub = keyframe_result(program, ra), keyframe_result(program, rb)
+        assert (ua.keyframe, ua.first) == (ub.keyframe, ub.first)
+        assert set(ua.values) == set(ub.values)
+        worst = max(worst, max(float(np.linalg.norm(ub.values[k].local(v)))
+                               for k, v in ua.values.items()))
+    return worst
+
+
+@pytest.fixture(scope="module")
+def lio6(tmp_path_factory):
+    graph = example("lio").build(N=6)
+    program = compile_stream(graph, window=2, name="lio_w")
+    data = problem_data(graph, program)
+    stream = OnChipFixedLagStream(graph, program, 2, "double",
+                                  out_dir=tmp_path_factory.mktemp("onchip"))
+    return graph, program, data, stream, stream.run(data), FixedLagStream(graph, program, 2).run(
+        data)
+
+
+def test_on_chip_window_agrees_with_the_native_stream_after_every_keyframe(lio6):
+    _, program, _, _, chip, native = lio6
+    assert chip.status == "converged"
+    assert [u["iterations"] for u in chip.updates] == [u["iterations"] for u in native.updates]
+    assert _worst(program, chip, native) <= TOL
+    # keyframes 2 … 5 fill the window: each then marginalises its oldest on the chip
+    assert [u["marginal"] for u in chip.updates] == [False, False, True, True, True, True]
+
+
+def test_a_keyframe_brings_only_its_own_words(lio6):
+    _, _, _, stream, _, _ = lio6
+    lay = stream.layout
+    steady = len(lay.new_dest[-1])
+    assert lay.kf_words == 21 and steady < lay.n_data / 2
+    lines = (stream.project.directory / "stream.txt").read_text().splitlines()
+    numbers = sum(int(line.split()[0]) for line in lines[2:])
+    assert numbers == sum(lay.kf_words + len(lay.new_dest[min(j, 2)]) for j in range(6))
+
+
+def test_a_wrong_shift_breaks_the_agreement(lio6, tmp_path):
+    graph, program, data, _, _, native = lio6
+    bad = OnChipFixedLagStream(graph, program, 2, "double", out_dir=tmp_path)
+    cpp = bad.project.directory / f"{bad.project.name}.cpp"
+    text = cpp.read_text()
+    # the factors stay in their slots on a shift (the variables' move alone changes only
+    # where LM starts: 9e-8 at the optimum)
+    patched = text.replace("DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? word : T(0);",
+                           "DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? "
+                           "DATA_BUF[DATA_MOVES[2 * k]] : T(0);")
+    assert patched != text
+    cpp.write_text(patched)
+    try:
+        chip = bad.run(data)
+    except Exception:  # noqa: BLE001 - a failure is as good as a disagreement here
+        return
+    assert _worst(program, chip, native) > 1e-3
+
+
+def test_the_update_model_prices_the_calls_of_the_emitted_design(lio6):
+    graph, program, _, stream, chip, _ = lio6
+    model = WindowUpdateModel(stream.layout, HlsConfig(scalar="double"))
+    prices = [model.price(u["keyframe"], u["iterations"]) for u in chip.updates]
+    names = [{t.name for t in p.terms} for p in prices]
+    assert all("shift" not in n for n in names[:3]) and all("shift" in n for n in names[3:])
+    assert all("marginal" not in n for n in names[:2]) and all("marginal" in n for n in names[2:])
+    assert all(not t.assumed for p in prices for t in p.terms)
+    assert all(p.cycles > 0 and p.latency_ms > 0 for p in prices)
+    # one more iteration costs one more iteration's phases
+    one, two = model.price(4, 1), model.price(4, 2)
+    assert two.cycles - one.cycles == sum(model.group[g] for g in model.group
+                                          if g not in ("rounding_noise",))
+
+
+def test_a_cholesky_design_is_refused_by_name():
+    graph = example("lio").build(N=4)
+    program = compile_stream(graph, window=2)
+    program = replace(program, solver=replace(program.solver, linear="cholesky"))
+    with pytest.raises(OnChipWindowError, match="Cholesky"):
+        WindowLayout(graph, program, 2)
+
+
+def test_cli_compile_and_stream_the_on_chip_window(tmp_path, capsys):
+    out = tmp_path / "w"
+    assert main(["compile", LIO, "-p", "N=5", "--window", "2", "--backend", "hls",
+                 "--scalar", "double", "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "on-chip fixed-lag window of 2 keyframes" in text
+    tcl = (out / "run_hls.tcl").read_text()
+    assert "set_top lio_window3_stream" in tcl and "--stream data.txt stream.txt" in tcl
+    assert (out / "stream.txt").read_text().startswith("FGC-STREAM 1 ")
+    assert main(["stream", LIO, "-p", "N=5", "--window", "2", "--backend", "hls"]) == 0
+    text = capsys.readouterr().out
+    assert "on-chip window's C simulation" in text and "(model estimate, on-chip window)" in text
