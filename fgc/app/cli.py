@@ -549,7 +549,8 @@ def _cmd_stream(args) -> int:
                   f"chain as long as its window; {streaming.UNPRICED} otherwise) and the "
                   f"{who}'s wall time", flush=True)
     online: dict = {}
-    if hls and window is not None:  # the emitted on-chip window's own design
+    on_chip = hls and window is not None and program.solver.linear == "qr"
+    if on_chip:  # the emitted on-chip window's own design
         pricer = streaming.WindowPricer(graph, program, window)
     elif hls:
         pricer = streaming.update_model(graph, program)
@@ -563,7 +564,7 @@ def _cmd_stream(args) -> int:
         priced.append(price.as_dict() if hls else price)
         if quiet:
             return
-        if hls and window is not None:
+        if on_chip:
             model = f"accelerator {price.latency_ms:7.3f} ms (model estimate, on-chip window)"
         elif hls:
             model = (f"accelerator {price.latency_ms:7.3f} ms + {price.assumed_ms:.3f} ms "
@@ -611,7 +612,7 @@ def _cmd_stream(args) -> int:
     lines = [head, f"  largest tangent-space distance from the batch optimum "
                    f"{acc['max_state_distance']:.3g} (final estimate)"]
     model = [p["latency_ms"] for p in priced if p]
-    if hls and window is not None:
+    if on_chip:
         lines.append(f"  accelerator per update (the on-chip window's emitted design priced on "
                      f"its plan, model estimate): median {np.median(model):.3f} ms, p99 "
                      f"{np.percentile(model, 99):.3f} ms")
@@ -643,7 +644,7 @@ def _stream_hls_head(args, program, n: int, window, model_only: bool) -> str:
     unit = (f"n_u = {solver.units} Update units" if solver.linear == "qr"
             else f"#CPE = {solver.cpe}")
     scalar = "double" if solver.precision == "float64" else "float"
-    if window is not None:
+    if window is not None and solver.linear == "qr":
         who = (f"simulator {solver.precision}" if model_only else
                f"the on-chip window's C simulation ({scalar})")
         tail = ("The emitted design keeps the window, its factors' words and the marginal prior "

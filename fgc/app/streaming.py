@@ -47,7 +47,8 @@ from fgc.frontend.geometry import Pose2, Pose3
 UNPRICED = "one-keyframe windows and window sizes past the first four others seen"
 HW_REFUSAL = ("incremental and fixed-lag modes run keyframe by keyframe in fgc stream (--backend "
               "sim, native or hls: the simulator, the native solver or the HLS design's C "
-              "simulation solves each update); this command runs batch solves on this backend")
+              "simulation solves each update; fgc compile --backend hls --window W emits the "
+              "on-chip fixed-lag window); this command runs batch solves on this backend")
 
 
 @dataclass(frozen=True)
