@@ -1,5 +1,7 @@
-"""Streaming on the HLS design's C simulation (issue 19): per keyframe, the emitted accelerator's
-testbench solves the update's window; the host holds the kept Bayes net.
+"""Streaming on the HLS design's C simulation (issue 19). The fixed-lag window runs on chip
+(:class:`OnChipFixedLagStream`, :mod:`fgc_backends.hls.window`: one testbench run streams every
+keyframe through the design's ``<name>_stream`` top). The incremental plan: per keyframe, the
+emitted accelerator's testbench solves the update's window; the host holds the kept Bayes net.
 
 The windows are the native stream's (:mod:`fgc_backends.native.stream`): a *template* window
 Program — the chain's first S keyframes with a ``MarginalPrior…`` factor on every keyframe — is

@@ -192,7 +192,6 @@ class WindowTemplate:
         self._zero = {}
         self._check_prior_layout()
 
-
     def _signature(self, f, shift: int) -> tuple:
         return (f.type.name, tuple((self.cluster_of[str(k)] + shift, self.position[str(k)])
                                    for k in f.keys))
