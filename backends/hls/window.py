@@ -401,6 +401,13 @@ class WindowUpdateModel:
             return phase_cycles(Phase("x", False, (Process("x", "x", tuple(loops)),)))
 
         ctx = layout.context(config.linear_cxx)
+        self.layout_marginal = ctx["marginal"]
+        self.les, self._held, self._qr = les, [], {}
+        from fgc_backends.hls.plan import unit_sets
+
+        self.sets = max(1, unit_sets(plan))
+        if self.qr_cycles(frozenset(), True) != self.group["qr"]:
+            raise OnChipWindowError("internal error: the model's QR steps are not the plan's")
         n_x, n_t = layout.n_x, layout.kf_dim
         self.keyframe_in = [cycles(kernel_loop("x", layout.kf_words, "move", kt),
                                    kernel_loop("d", len(d), "move", kt))
@@ -428,7 +435,75 @@ class WindowUpdateModel:
             self.marginal_parts = {"linearize": self.group["factor_jacobian"]
                                    + self.group["gradient"],
                                    "stack": stack, "qr": qr, "commit": commit, "tau": tail}
-            self.marginal = sum(self.marginal_parts.values())
+            self.marginal = sum(self.marginal_parts.values())  # every row non-zero (a bound)
+
+    # -- the QR units on the rows that are non-zero in this update -----------------------------
+    def zero_factors(self, keyframe: int) -> frozenset:
+        """The template factors (indices ``Member.t``) whose rows are zero during keyframe
+        ``keyframe``'s solve: graph factors the window does not hold (not arrived, or gone
+        with no counterpart one keyframe on) and the priors without information (every slot's
+        but slot 0's once τ is there, and the held slots' during the first W updates)."""
+        lay = self.layout
+        while len(self._held) <= keyframe:
+            j = len(self._held)
+            self._held.append(lay.check_holds(self._held[-1] if self._held else None, j))
+        held = self._held[keyframe]
+        m = min(keyframe, lay.size - 1)
+        zero = {mem.t for mem, h in zip(lay.members, held, strict=True)
+                if not mem.prior and h is None}
+        for mem in lay.members:
+            if not mem.prior:
+                continue
+            s = mem.slots[0]
+            tau = s == 0 and keyframe >= lay.size and self.layout_marginal
+            if s <= m and not tau:
+                zero.add(mem.t)  # unused: zero square-root information (held slots: unit)
+        return frozenset(zero)
+
+    def qr_cycles(self, zero: frozenset, damped: bool, leaf_only: bool = False) -> int:
+        """The QR unit sets' cycles of one linear solve (every level's DATAFLOW regions, the
+        plan's assignment of a level's steps to the sets) with the rows of the ``zero``
+        factors and, unless ``damped``, the √μ rows zero: the Evaluate unit skips a row that is
+        zero in its column (fgc_qr.h), so these rows cost nothing. ``leaf_only``: slot 0's
+        step alone on unit set 0 (the marginalisation)."""
+        key = (zero, damped, leaf_only)
+        if key not in self._qr:
+            self._qr[key] = self._qr_cycles(zero, damped, leaf_only)
+        return self._qr[key]
+
+    def _qr_cycles(self, zero, damped, leaf_only) -> int:
+        from fgc_backends.cost.structure import entering_blocks, stacked_pattern
+        from fgc_backends.hls.plan import Phase, Process, _assign, phase_cycles, qr_unit_loops
+
+        t = self.layout.template
+        lm = t.solver.method == "lm"
+        units = max(1, t.solver.units)
+        procs = {}
+        for st in t.schedule.steps:
+            if leaf_only and st.index != self.layout.leaf_step:
+                continue
+            pattern = stacked_pattern(t, st, lm).copy()
+            row = 0
+            for i in entering_blocks(t, st):
+                spec = t.factors[i]
+                block = t.blocks[spec.block]
+                for member, ti in zip(block.members, spec.factors, strict=True):
+                    if ti in zero:
+                        pattern[row + member.rows[0]:row + member.rows[1]] = False
+                row += block.residual_dim
+            if lm and not damped:
+                pattern[pattern.shape[0] - st.frontal_dim:] = False
+            procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
+                pattern, st.frontal_dim, units, self.les, name=f"s{st.index}")))
+        if leaf_only:
+            return phase_cycles(Phase("leaf", True, (procs[self.layout.leaf_step],)))
+        sets = self.sets
+        total = 0
+        for li, level in enumerate(t.schedule.levels):
+            chunks = [_assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
+                      for c in range(0, len(level), sets)]
+            total += sum(phase_cycles(Phase("chunk", True, chunk)) for chunk in chunks)
+        return total
 
     @staticmethod
     def events_of(iterations: int, rejected: int = 0, noise: int = 0) -> dict:
@@ -454,16 +529,22 @@ class WindowUpdateModel:
         if keyframe >= lay.size:
             terms.append(Term("shift", self.shift, 1, False,
                               "every slot down one: its variables, its factors' words, τ"))
+        zero = self.zero_factors(keyframe)
         for g in sorted(self.group):
             trigger = PHASE_TRIGGER.get(g)
             if trigger is None:
                 continue
             times = ev.get(trigger, 0)
+            each = self.qr_cycles(zero, True) if g == "qr" else self.group[g]
             if times:
-                terms.append(Term(g, self.group[g], times, False,
-                                  f"the window's {g} phase, once per {trigger}"))
+                terms.append(Term(g, each, times, False,
+                                  f"the window's {g} phase, once per {trigger}" + (
+                                      " (on its rows non-zero in this update)" if g == "qr"
+                                      else "")))
         if m == lay.window and self.marginal:
-            terms.append(Term("marginal", self.marginal, 1, False,
+            marginal = (self.marginal - self.marginal_parts["qr"]
+                        + self.qr_cycles(zero, False, leaf_only=True))
+            terms.append(Term("marginal", marginal, 1, False,
                               "keyframe leaving: the window linearised at its optimum, slot 0's "
                               "QR step at μ = 0 on unit set 0, τ's signs, mean and words"))
         terms.append(Term("x_out", self.x_out, 1, False, "the window's storage out"))
