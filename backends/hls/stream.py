@@ -144,7 +144,7 @@ def _cached_project(template, config, stream=None):
 
     key = _project_key(template, config)
     if stream is not None:
-        key = f"{key}-w{stream.window}"
+        key = f"{key}-w{stream.window}" + (f"-kept{stream.kept}" if stream.kept else "")
     folder = cache_dir() / "hls-stream" / key
     if not folder.is_dir():
         staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
@@ -205,12 +205,15 @@ class OnChipFixedLagStream:
     each update's window. ``scalar``: the design's T ("double" for agreement, "float" the
     hardware). Nothing of the window is assembled or eliminated on the host."""
 
+    kept = False  # the incremental subclass keeps the keyframes that leave
+    mode = "fixed-lag"
+
     def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None):
         from fgc_backends.hls.config import HlsConfig
         from fgc_backends.hls.emitter import HlsProject
         from fgc_backends.hls.window import WindowLayout
 
-        self.layout = WindowLayout(graph, program, window)
+        self.layout = WindowLayout(graph, program, window, kept=self.kept)
         self.program, self.window, self.scalar = program, window, scalar
         self.template = self.layout.template
         if out_dir is None:
@@ -219,7 +222,7 @@ class OnChipFixedLagStream:
             out_dir = tmp
         config = HlsConfig(scalar=scalar)
         self._cached = _cached_project(self.template, config, self.layout)
-        work = Path(out_dir) / f"window{window}_onchip"
+        work = Path(out_dir) / f"window{window}_onchip{'_kept' if self.kept else ''}"
         shutil.rmtree(work, ignore_errors=True)
         shutil.copytree(self._cached.directory, work)
         self.project = HlsProject(work, self._cached.name,
@@ -264,8 +267,10 @@ class OnChipFixedLagStream:
             self._built = True
         lay, window = self.layout, self.window
         records, initial_error = [], None
-        for j, (head, x_out) in enumerate(_read_stream_result(folder / STREAM_RESULT_FILE,
-                                                              count, lay.n_x)):
+        kf = lay.kf_words
+        x_all = None
+        for j, (head, x_out, x_kept) in enumerate(_read_stream_result(
+                folder / STREAM_RESULT_FILE, count, lay.n_x, self.kept)):
             first = max(0, j - window)
             if head["SLOT"] != min(j, lay.size - 1):
                 raise OnChipWindowError(f"keyframe {j}: the accelerator put it in slot "
@@ -278,14 +283,63 @@ class OnChipFixedLagStream:
             if j == 0:
                 initial_error = head["INITIAL_ERROR"]
             lay.store(estimate, x_out, first, j)
-            records.append({"keyframe": j, "mode": "fixed-lag", "first": first,
+            if self.kept:  # the kept keyframes 0 … first − 1 as the walk left them
+                if x_kept.size != first * kf:
+                    raise OnChipWindowError(f"keyframe {j}: the accelerator returned "
+                                            f"{x_kept.size // kf} kept keyframes, expected {first}")
+                clusters = self.program.schedule.clusters
+                for c in range(first):
+                    pos = 0
+                    for k in clusters[c]:
+                        n = estimate[k].size
+                        estimate[k][:] = x_kept[c * kf + pos:c * kf + pos + n]
+                        pos += n
+            records.append({"keyframe": j, "mode": self.mode, "first": first,
                             "iterations": head["ITERATIONS"], "status": head["STATUS"],
                             "reason": head["REASON"], "cost": head["FINAL_ERROR"],
                             "seconds": float("nan"), "marginal": head["MARGINAL"] == 1,
-                            "values": stream._snapshot(estimate, max(0, j - window + 1), j)})
+                            "values": stream._snapshot(
+                                estimate, 0 if self.kept else max(0, j - window + 1), j)})
             if progress is not None:
                 progress(records[-1])
         return stream._result(estimate, records, initial_error, self.template)
+
+
+class OnChipIncrementalStream(OnChipFixedLagStream):
+    """The incremental plan on the accelerator itself: the on-chip window of the newest K
+    keyframes (W = K − 1 in :class:`OnChipFixedLagStream`'s terms) plus the kept Bayes net in the
+    design's memories — each keyframe that leaves is kept as its conditional from the QR unit,
+    the newest kept one re-expressed at its parent's new estimate and every kept keyframe walked
+    back each update (accel.cpp.jinja's ``reexpress``, ``keep``, ``kept_walk``). Plans with
+    batch steps are refused: a batch step re-solves the whole chain, which the K-keyframe design
+    does not hold (:class:`~fgc_backends.hls.window.OnChipWindowError`; the host-kept C
+    simulation, :func:`incremental_stream`, runs them)."""
+
+    kept = True
+    mode = "incremental"
+
+    def __init__(self, graph, program, scalar: str = "double", out_dir=None):
+        from fgc_backends.hls.window import OnChipWindowError
+
+        plan = program.schedule.incremental
+        if plan is None:
+            raise OnChipWindowError("the Program has no incremental plan (--incremental K)")
+        if plan.batch_keyframes:
+            raise OnChipWindowError(
+                f"batch steps at keyframes {', '.join(map(str, plan.batch_keyframes))} re-solve "
+                "the whole chain, which the on-chip design (the newest K keyframes and the kept "
+                "conditionals) does not hold: drop --batch-every, or run the host-kept C "
+                "simulation")
+        k = plan.window
+        for u in plan.updates:
+            if u.mode != "incremental" or tuple(u.clusters) != tuple(
+                    range(max(0, u.keyframe - k + 1), u.keyframe + 1)):
+                raise OnChipWindowError(f"keyframe {u.keyframe}: its update re-eliminates "
+                                        f"keyframes {list(u.clusters)}, not the newest {k}: the "
+                                        "on-chip window slides one keyframe a call")
+        if k < 2:
+            raise OnChipWindowError("--incremental 1 keeps no window to slide: K ≥ 2 on chip")
+        super().__init__(graph, program, k - 1, scalar, out_dir)
 
 
 STREAM_FILE, STREAM_RESULT_FILE = "stream.txt", "stream_result.txt"
@@ -355,19 +409,21 @@ def _chunks(values: np.ndarray, size: int = 16) -> list[str]:
             for i in range(0, len(vals), size)]
 
 
-def _read_stream_result(path: Path, count: int, n_x: int):
-    """(head fields, x) per keyframe from the testbench's stream result."""
+def _read_stream_result(path: Path, count: int, n_x: int, kept: bool = False):
+    """(head fields, x, kept keyframes' storage) per keyframe from the testbench's stream
+    result."""
     from fgc.ir.datafile import DataError
     from fgc_backends.hls.emitter import STREAM_RESULT_MAGIC
 
     lines = path.read_text().splitlines()
     if not lines or lines[0] != STREAM_RESULT_MAGIC:
         raise DataError(f"{path}:1: expected '{STREAM_RESULT_MAGIC}'")
-    if len(lines) != 1 + 2 * count:
-        raise DataError(f"{path}: {(len(lines) - 1) // 2} keyframes, expected {count}")
+    per = 3 if kept else 2
+    if len(lines) != 1 + per * count:
+        raise DataError(f"{path}: {(len(lines) - 1) // per} keyframes, expected {count}")
     out = []
     for j in range(count):
-        words = lines[1 + 2 * j].split()
+        words = lines[1 + per * j].split()
         head = dict(zip(words[0::2], words[1::2], strict=True))
         for key in ("KEYFRAME", "SLOT", "ITERATIONS", "MARGINAL"):
             head[key] = int(head[key])
@@ -375,9 +431,15 @@ def _read_stream_result(path: Path, count: int, n_x: int):
             head[key] = float(head[key])
         if head["KEYFRAME"] != j or head["STATUS"] not in STATUSES or \
                 head["REASON"] not in REASONS:
-            raise DataError(f"{path}:{2 + 2 * j}: a malformed keyframe line")
-        x = lines[2 + 2 * j].split()
+            raise DataError(f"{path}:{2 + per * j}: a malformed keyframe line")
+        x = lines[2 + per * j].split()
         if x[:2] != ["X", str(n_x)] or len(x) != n_x + 2:
-            raise DataError(f"{path}:{3 + 2 * j}: expected 'X {n_x} <numbers>'")
-        out.append((head, np.array([float(v) for v in x[2:]])))
+            raise DataError(f"{path}:{3 + per * j}: expected 'X {n_x} <numbers>'")
+        held = np.zeros(0)
+        if kept:
+            k = lines[3 + per * j].split()
+            if k[:1] != ["KEPT"] or len(k) != int(k[1]) + 2:
+                raise DataError(f"{path}:{4 + per * j}: expected 'KEPT <count> <numbers>'")
+            held = np.array([float(v) for v in k[2:]])
+        out.append((head, np.array([float(v) for v in x[2:]]), held))
     return out

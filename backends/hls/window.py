@@ -74,12 +74,14 @@ class WindowLayout(WindowTemplate):
     """The template of a fixed-lag window of ``window`` keyframes (W + 1 slots) and the tables
     of its on-chip stream (module docstring)."""
 
-    def __init__(self, graph, program, window: int):
+    def __init__(self, graph, program, window: int, kept: bool = False):
         if isinstance(window, bool) or not isinstance(window, int) or window < 1:
             raise OnChipWindowError(f"the fixed-lag window must be a positive number of "
                                     f"keyframes, got {window!r}")
         super().__init__(graph, program, window + 1)
         self.window = window
+        # incremental mode: every keyframe that leaves the window is kept as its conditional
+        self.kept = len(program.schedule.clusters) if kept else 0
         t = self.template
         if t.solver.linear != "qr":
             raise OnChipWindowError(
@@ -223,7 +225,32 @@ class WindowLayout(WindowTemplate):
                 "slot_x": [w for s in self.slot_x for w in s],
                 "new_dest": [w for d in self.new_dest for w in d],
                 "new_begin": new_begin,
-                "max_new": max(len(d) for d in self.new_dest)}
+                "max_new": max(len(d) for d in self.new_dest),
+                **self._kept_context(linear_cxx)}
+
+    def _kept_context(self, linear_cxx: str) -> dict:
+        """The kept Bayes net's constants (incremental mode): the Log kernels, slot 0's
+        variables by kind and offset, the re-expression's central-difference step."""
+        if not self.kept:
+            return {"kept": 0}
+        from fgc_backends.cfamily.printer import HlsCodePrinter
+        from fgc_backends.cfamily.retract import local_kinds
+
+        t = self.template
+        locals_ = local_kinds(t)
+        kind_of = {k.type_name: k for k in locals_}
+        by_key = {v.key: v for v in t.variables}
+        kf_vars, s_off, t_off = [], 0, 0
+        for key in self.program.schedule.clusters[0]:
+            v = by_key[key]
+            k = kind_of[v.type_name]
+            kf_vars.append({"kind": k.kind, "flat": k.flat, "dim": v.dim, "s": s_off,
+                            "t": t_off})
+            s_off += v.storage_dim
+            t_off += v.dim
+        eps = np.finfo(np.float64 if linear_cxx == "double" else np.float32).eps
+        return {"kept": self.kept, "locals": locals_, "kf_vars": kf_vars,
+                "jacobian_step": HlsCodePrinter({}).literal(float(np.sqrt(eps) * 10))}
 
     # -- the words of the calls ------------------------------------------------------------
     def reset_words(self, estimate: dict) -> tuple[np.ndarray, np.ndarray]:
