@@ -10,7 +10,8 @@ times the events the call ran, plus the stream section's loops (keyframe in, shi
 Prints per keyframe csim and model cycles, their ratio, and the update latency at the plan's clock
 (model estimates), then the agreement of the streamed estimate with the native fixed-lag stream.
 
-    python bench/bench_stream_cycles.py [--keyframes N] [--window W] [--scalar float|double]
+    python bench/bench_stream_cycles.py [--keyframes N] [--window W | --incremental K]
+                                        [--scalar float|double]
 """
 
 from __future__ import annotations
@@ -27,9 +28,9 @@ from fgc.app.specs import example
 from fgc.app.streaming import compile_stream, keyframe_result
 from fgc.ir.datafile import problem_data
 from fgc_backends.hls.config import HlsConfig
-from fgc_backends.hls.stream import OnChipFixedLagStream
+from fgc_backends.hls.stream import OnChipFixedLagStream, OnChipIncrementalStream
 from fgc_backends.hls.window import WindowUpdateModel
-from fgc_backends.native.stream import FixedLagStream
+from fgc_backends.native.stream import FixedLagStream, IncrementalStream
 
 
 def counted(stream: OnChipFixedLagStream) -> list[tuple[int, dict]]:
@@ -53,14 +54,18 @@ def counted(stream: OnChipFixedLagStream) -> list[tuple[int, dict]]:
     return rows
 
 
-def measure(keyframes: int, window: int, scalar: str):
+def measure(keyframes: int, window: int, scalar: str, incremental: int | None = None):
     graph = example("lio").build(N=keyframes)
-    program = compile_stream(graph, window=window, name="lio_stream")
-    data = problem_data(graph, program)
+    out = tempfile.mkdtemp(prefix="fgc-stream-cycles-")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # a double design over the part's DSP still simulates
-        stream = OnChipFixedLagStream(graph, program, window, scalar,
-                                      out_dir=tempfile.mkdtemp(prefix="fgc-stream-cycles-"))
+        if incremental:
+            program = compile_stream(graph, incremental=incremental, name="lio_stream")
+            stream = OnChipIncrementalStream(graph, program, scalar, out_dir=out)
+        else:
+            program = compile_stream(graph, window=window, name="lio_stream")
+            stream = OnChipFixedLagStream(graph, program, window, scalar, out_dir=out)
+        data = problem_data(graph, program)
         result = stream.run(data)
         model = WindowUpdateModel(stream.layout, HlsConfig(scalar=scalar))
     rows = []
@@ -78,10 +83,16 @@ def main() -> None:
     ap.add_argument("--keyframes", type=int, default=30)
     ap.add_argument("--window", type=int, default=10)
     ap.add_argument("--scalar", choices=("float", "double"), default="float")
+    ap.add_argument("--incremental", type=int, metavar="K",
+                    help="the incremental plan on chip (newest K keyframes, the kept Bayes net) "
+                         "instead of the fixed-lag window")
     args = ap.parse_args()
-    graph, program, data, result, rows, _ = measure(args.keyframes, args.window, args.scalar)
-    print(f"LIO N = {args.keyframes}, fixed-lag W = {args.window}, {args.scalar} design "
-          f"(on-chip window, model estimates at {rows[0][2].clock_mhz:g} MHz)")
+    graph, program, data, result, rows, _ = measure(args.keyframes, args.window, args.scalar,
+                                                    args.incremental)
+    mode = (f"incremental K = {args.incremental}" if args.incremental
+            else f"fixed-lag W = {args.window}")
+    print(f"LIO N = {args.keyframes}, {mode}, {args.scalar} design "
+          f"(on chip, model estimates at {rows[0][2].clock_mhz:g} MHz)")
     print(f"{'keyframe':>8} {'iters':>5} {'csim cycles':>12} {'model cycles':>12} "
           f"{'csim/model':>10} {'model ms':>9}")
     ratios = []
@@ -92,14 +103,15 @@ def main() -> None:
     lat = [p.latency_ms for _, _, p in rows]
     print(f"csim/model {min(ratios):.3f} … {max(ratios):.3f}; update latency median "
           f"{np.median(lat):.3f} ms, p99 {np.percentile(lat, 99):.3f} ms (model estimate)")
-    native = FixedLagStream(graph, program, args.window).run(data)
+    native = (IncrementalStream(graph, program) if args.incremental
+              else FixedLagStream(graph, program, args.window)).run(data)
     worst = 0.0
     for a, b in zip(result.updates, native.updates, strict=True):
         ua, ub = keyframe_result(program, a), keyframe_result(program, b)
         worst = max(worst, max(float(np.linalg.norm(ub.values[k].local(v)))
                                for k, v in ua.values.items()))
-    print(f"on-chip window vs native fixed-lag stream, worst tangent-space distance over every "
-          f"keyframe's window: {worst:.2e}")
+    print(f"on chip vs the native {mode} stream, worst tangent-space distance over every "
+          f"keyframe's estimate: {worst:.2e}")
 
 
 if __name__ == "__main__":

@@ -124,8 +124,8 @@ def test_hls_csim_fixed_lag_agrees_with_the_simulator():
 @pytest.mark.heavy
 def test_cli_stream_backend_hls_runs_the_c_simulation(tmp_path, capsys):
     out = tmp_path / "stream.json"
-    assert main(["stream", LIO, "-p", "N=6", "--incremental", "3", "--backend", "hls",
-                 "--json", str(out)]) == 0
+    assert main(["stream", LIO, "-p", "N=6", "--incremental", "3", "--batch-every", "3",
+                 "--backend", "hls", "--json", str(out)]) == 0
     text = capsys.readouterr().out
     assert "compiling the HLS C simulation's 3-keyframe template window" in text
     assert "(HLS C simulation wall time)" in text and "kept on the host, not on chip" in text

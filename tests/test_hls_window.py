@@ -13,7 +13,12 @@ top keeps the window between calls and takes one keyframe's words per call.
   at N = 8, W = 3); a Cholesky design is refused by name;
 - ``fgc compile --backend hls --window W`` emits the streaming top as the synthesis top, with its
   testbench inputs; ``fgc stream --backend hls --window W`` runs it.
-Heavy (tests/test_hls_stream_csim.py): the same window against GTSAM at W = 3.
+- the incremental plan on chip (K = 3, no batch steps; LIO N = 6: three keyframes kept as their
+  conditionals in the design's memories, walked back every update) agrees with the native
+  incremental stream to 1e-8 (measured 1.4e-9 at N = 8) and with gtsam.ISAM2 fed the same
+  keyframes with fgc's policy to 1e-6, after every keyframe; a plan with batch steps is refused
+  on chip by name.
+Heavy (tests/test_hls_stream_csim.py): the fixed-lag window against GTSAM at W = 3.
 """
 
 from __future__ import annotations
@@ -27,13 +32,19 @@ import pytest
 from fgc.app.cli import main
 from fgc.app.specs import example
 from fgc.app.streaming import compile_stream, keyframe_result
+from fgc.interop import oracles
+from fgc.interop.to_gtsam import to_gtsam
 from fgc.ir.datafile import problem_data
 from fgc_backends.hls.config import HlsConfig
-from fgc_backends.hls.stream import OnChipFixedLagStream
+from fgc_backends.hls.stream import OnChipFixedLagStream, OnChipIncrementalStream
 from fgc_backends.hls.window import OnChipWindowError, WindowLayout, WindowUpdateModel
-from fgc_backends.native.stream import FixedLagStream
+from fgc_backends.native.stream import FixedLagStream, IncrementalStream
 
 TOL = 1e-10  # tangent-space distance per variable, on-chip csim (double) vs native stream
+# incremental: the kept conditional's re-expression differentiates Log by central differences
+# (step 1.5e-7), whose rounding (eps / h ~ 1e-9) differs between two builds of the same formula
+TOL_KEPT = 1e-8
+ISAM2_TOL = 1e-6  # vs gtsam.ISAM2 fed the same keyframes with fgc's policy
 LIO = str(Path(__file__).resolve().parent.parent / "examples" / "lio.py")
 
 
@@ -133,4 +144,50 @@ def test_cli_compile_and_stream_the_on_chip_window(tmp_path, capsys):
     assert (out / "stream.txt").read_text().startswith("FGC-STREAM 1 ")
     assert main(["stream", LIO, "-p", "N=5", "--window", "2", "--backend", "hls"]) == 0
     text = capsys.readouterr().out
-    assert "on-chip window's C simulation" in text and "(model estimate, on-chip window)" in text
+    assert "on-chip design's C simulation" in text and "(model estimate, on chip)" in text
+
+
+# --------------------------------------------------------------------------------------------
+# the incremental plan on chip: the kept Bayes net in the design's memories
+# --------------------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def lio6_incremental(tmp_path_factory):
+    graph = example("lio").build(N=6)
+    program = compile_stream(graph, incremental=3, name="lio_k")
+    data = problem_data(graph, program)
+    stream = OnChipIncrementalStream(graph, program, "double",
+                                     out_dir=tmp_path_factory.mktemp("onchip_kept"))
+    return graph, program, stream.run(data), IncrementalStream(graph, program).run(data)
+
+
+def test_on_chip_incremental_agrees_with_the_native_stream(lio6_incremental):
+    _, program, chip, native = lio6_incremental
+    assert chip.status == "converged"
+    assert [u["first"] for u in chip.updates] == [0, 0, 0, 1, 2, 3]
+    assert [u["iterations"] for u in chip.updates] == [u["iterations"] for u in native.updates]
+    # every keyframe so far after every update: the kept ones as the on-chip walk left them
+    assert [len(keyframe_result(program, u).values) for u in chip.updates] == [
+        3 * (j + 1) for j in range(6)]
+    assert _worst(program, chip, native) <= TOL_KEPT
+
+
+def test_on_chip_incremental_against_isam2_with_the_same_policy(lio6_incremental):
+    graph, program, chip, _ = lio6_incremental
+    windows = [(u["first"], False) for u in chip.updates]
+    isam = oracles.isam2_per_keyframe(graph, to_gtsam(graph), program.schedule.clusters,
+                                      windows)
+    values = [{"values": keyframe_result(program, u).values} for u in chip.updates]
+    dist = oracles.per_keyframe_distance(values, isam)
+    assert len(dist) == 6 and max(dist) <= ISAM2_TOL, dist
+
+
+def test_on_chip_incremental_refuses_batch_steps(capsys):
+    graph = example("lio").build(N=6)
+    program = compile_stream(graph, incremental=3, batch_every=(4,))
+    with pytest.raises(OnChipWindowError, match="batch steps at keyframes 4"):
+        OnChipIncrementalStream(graph, program)
+    assert main(["compile", LIO, "-p", "N=6", "--incremental", "3", "--batch-every", "4",
+                 "--backend", "hls", "--out", "unused"]) == 2
+    assert "batch steps at keyframes 4 re-solve the whole chain" in capsys.readouterr().err

@@ -142,7 +142,6 @@ def test_cli_simulate_incremental(capsys):
 
 @pytest.mark.parametrize("argv", [
     ["run", LIO, "--backend", "native", "--incremental", "3"],
-    ["compile", LIO, "--backend", "hls", "--out", "unused", "--incremental", "3"],
     ["compile", LIO, "--backend", "native", "--out", "unused", "--incremental", "3"],
 ])
 def test_cli_refuses_incremental_on_hls_and_native(argv, capsys):

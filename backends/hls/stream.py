@@ -319,27 +319,34 @@ class OnChipIncrementalStream(OnChipFixedLagStream):
     mode = "incremental"
 
     def __init__(self, graph, program, scalar: str = "double", out_dir=None):
-        from fgc_backends.hls.window import OnChipWindowError
+        check_incremental_on_chip(program)
+        super().__init__(graph, program, program.schedule.incremental.window - 1, scalar,
+                         out_dir)
 
-        plan = program.schedule.incremental
-        if plan is None:
-            raise OnChipWindowError("the Program has no incremental plan (--incremental K)")
-        if plan.batch_keyframes:
-            raise OnChipWindowError(
-                f"batch steps at keyframes {', '.join(map(str, plan.batch_keyframes))} re-solve "
-                "the whole chain, which the on-chip design (the newest K keyframes and the kept "
-                "conditionals) does not hold: drop --batch-every, or run the host-kept C "
-                "simulation")
-        k = plan.window
-        for u in plan.updates:
-            if u.mode != "incremental" or tuple(u.clusters) != tuple(
-                    range(max(0, u.keyframe - k + 1), u.keyframe + 1)):
-                raise OnChipWindowError(f"keyframe {u.keyframe}: its update re-eliminates "
-                                        f"keyframes {list(u.clusters)}, not the newest {k}: the "
-                                        "on-chip window slides one keyframe a call")
-        if k < 2:
-            raise OnChipWindowError("--incremental 1 keeps no window to slide: K ≥ 2 on chip")
-        super().__init__(graph, program, k - 1, scalar, out_dir)
+
+def check_incremental_on_chip(program) -> None:
+    """:class:`~fgc_backends.hls.window.OnChipWindowError` unless ``program``'s incremental plan
+    runs on chip: no batch steps, every update the newest K keyframes, K ≥ 2."""
+    from fgc_backends.hls.window import OnChipWindowError
+
+    plan = program.schedule.incremental
+    if plan is None:
+        raise OnChipWindowError("the Program has no incremental plan (--incremental K)")
+    if plan.batch_keyframes:
+        raise OnChipWindowError(
+            f"batch steps at keyframes {', '.join(map(str, plan.batch_keyframes))} re-solve "
+            "the whole chain, which the on-chip design (the newest K keyframes and the kept "
+            "conditionals) does not hold: drop --batch-every, or run the host-kept C "
+            "simulation")
+    k = plan.window
+    for u in plan.updates:
+        if u.mode != "incremental" or tuple(u.clusters) != tuple(
+                range(max(0, u.keyframe - k + 1), u.keyframe + 1)):
+            raise OnChipWindowError(f"keyframe {u.keyframe}: its update re-eliminates "
+                                    f"keyframes {list(u.clusters)}, not the newest {k}: the "
+                                    "on-chip window slides one keyframe a call")
+    if k < 2:
+        raise OnChipWindowError("--incremental 1 keeps no window to slide: K ≥ 2 on chip")
 
 
 STREAM_FILE, STREAM_RESULT_FILE = "stream.txt", "stream_result.txt"
@@ -380,18 +387,23 @@ def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
     return len(clusters)
 
 
-def emit_window(graph, program, window: int, data: ProblemData, out_dir, config):
-    """``fgc compile --backend hls --window W``: the on-chip window's design for ``program``'s
-    chain emitted into ``out_dir`` (its synthesis top ``<name>_stream``) with its testbench's
-    inputs for ``data``'s stream (data.txt, stream.txt: ``make`` builds, ``tb_<name> --stream
-    data.txt stream.txt stream_result.txt`` runs it). Returns the project."""
+def emit_window(graph, program, window: int | None, data: ProblemData, out_dir, config):
+    """``fgc compile --backend hls --window W | --incremental K``: the on-chip design for
+    ``program``'s chain (``window`` None: its incremental plan, which must have no batch steps)
+    emitted into ``out_dir`` (its synthesis top ``<name>_stream``) with its testbench's inputs
+    for ``data``'s stream (data.txt, stream.txt: ``make`` builds, ``tb_<name> --stream data.txt
+    stream.txt stream_result.txt`` runs it). Returns the project."""
     import dataclasses
 
     from fgc_backends.hls.emitter import emit
     from fgc_backends.hls.window import WindowLayout
     from fgc_backends.native.stream import _Stream
 
-    layout = WindowLayout(graph, program, window)
+    if window is None:
+        check_incremental_on_chip(program)
+        layout = WindowLayout(graph, program, program.schedule.incremental.window - 1, kept=True)
+    else:
+        layout = WindowLayout(graph, program, window)
     project = emit(layout.template, out_dir, config, stream=layout)
     estimate = _Stream(program)._start(data)
     write_stream_inputs(layout, estimate, project.directory)

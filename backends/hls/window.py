@@ -398,6 +398,7 @@ class WindowUpdateModel:
         from fgc_backends.cost.structure import stacked_pattern
         from fgc_backends.hls.emitter import accel_plan, for_program
         from fgc_backends.hls.plan import (
+            Loop,
             Phase,
             Process,
             _tables,
@@ -442,6 +443,20 @@ class WindowUpdateModel:
         self.shift = cycles(kernel_loop("x", len(layout.x_moves), "move", kt),
                             kernel_loop("d", len(layout.data_moves), "move", kt))
         self.x_out = cycles(kernel_loop("x", n_x, "move", kt))
+        if layout.kept:  # the kept Bayes net's loops, as accel.cpp.jinja counts them
+            n, kf = n_t, layout.kf_words
+            move_kf = cycles(kernel_loop("x", kf, "move", kt))
+            one = cycles(kernel_loop("pass", 1, "retract", kt))  # a Log or a retraction
+            dot = cycles(kernel_loop("dot", n, "acc", lt))
+            divide = cycles(kernel_loop("divide", 1, "div", lt))
+            difference = phase_cycles(Phase("x", False, (Process("x", "x", (
+                Loop("difference", n, 1, kt["div"][1]),)),)))
+            self.kept_reexpress = (move_kf + one + n * (4 * one + difference)
+                                   + n * (n + 1) * dot + move_kf)
+            self.kept_store = cycles(kernel_loop("cond", n * (2 * n + 1), "move", kt)) + move_kf
+            self.kept_walk_each = one + n * dot + n * (dot + divide) + one + move_kf
+            self.kept_walk_base = move_kf
+
         self.marginal = 0
         if ctx["marginal"]:
             s = layout.leaf_step
@@ -574,6 +589,23 @@ class WindowUpdateModel:
             terms.append(Term("marginal", marginal, 1, False,
                               "keyframe leaving: the window linearised at its optimum, slot 0's "
                               "QR step at μ = 0 on unit set 0, τ's signs, mean and words"))
+        if lay.kept:
+            if first > 0:
+                terms.append(Term("kept_reexpress", self.kept_reexpress, 1, False,
+                                  f"keyframe {first - 1}'s kept conditional re-expressed at "
+                                  "its parent's new estimate: Log, its central-difference "
+                                  "Jacobian (4n + 1 datapath passes), S·Log and S·J"))
+            if m == lay.window and self.marginal:
+                terms.append(Term("kept_store", self.kept_store, 1, False,
+                                  f"keyframe {first}'s conditional (R | S | d) and its "
+                                  "linearisation points kept"))
+            terms.append(Term("kept_walk", self.kept_walk_base + first * self.kept_walk_each, 1,
+                              False, f"the walk back through {first} kept conditionals: per "
+                                     "keyframe a Log, S·Log, R⁻¹ by rows, a retraction"))
+            if first:
+                terms.append(Term("x_kept_out", first * lay.kf_words + 1, 1, False,
+                                  "the kept keyframes' estimates out, a word a cycle"))
         terms.append(Term("x_out", self.x_out, 1, False, "the window's storage out"))
-        return UpdatePrice(keyframe, "fixed-lag", first, int(iterations),
+        return UpdatePrice(keyframe, "incremental" if lay.kept else "fixed-lag", first,
+                           int(iterations),
                            self.clock_mhz, tuple(terms), STREAM_SOURCE)

@@ -95,7 +95,7 @@ def _streaming(args) -> bool:
         raise FgcError("--model-only prices the simulator's updates on the HLS plan: it needs "
                        "--backend hls")
     if backend != "sim" and args.command != "stream" and not (
-            args.command == "compile" and backend == "hls" and window is not None):
+            args.command == "compile" and backend == "hls"):
         raise FgcError(f"fgc {args.command} --backend {backend}: {HW_REFUSAL}")
     return True
 
@@ -355,7 +355,7 @@ def _cmd_compile(args) -> int:
                          "native solver (the same build serves every window); pass it to "
                          "simulate, verify or stream, or compile the on-chip window with "
                          "--backend hls")
-    if window is not None:
+    if args.backend == "hls" and _streaming(args):
         return _compile_window(args, window)
     _, program, data = _compile(args, "float32")
     from fgc.ir.datafile import write_data
@@ -390,8 +390,8 @@ def _cmd_compile(args) -> int:
     return EXIT_OK
 
 
-def _compile_window(args, window: int) -> int:
-    """``fgc compile --backend hls --window W``: the on-chip fixed-lag window's design."""
+def _compile_window(args, window: int | None) -> int:
+    """``fgc compile --backend hls --window W | --incremental K``: the on-chip design."""
     from fgc_backends.hls.stream import emit_window
 
     graph, program, data = _stream_setup(args, "float32")
@@ -403,7 +403,10 @@ def _compile_window(args, window: int) -> int:
     except OSError as exc:
         raise FgcError(f"--out {out}: cannot write the project: "
                        f"{exc.strerror or exc}{_filename(exc)}") from None
-    _print(args, [f"fgc compile {args.spec}: on-chip fixed-lag window of {window} keyframes "
+    what = (f"on-chip fixed-lag window of {window} keyframes" if window is not None else
+            f"on-chip incremental design, the newest {program.schedule.incremental.window} "
+            "keyframes re-eliminated and the kept Bayes net")
+    _print(args, [f"fgc compile {args.spec}: {what} "
                   f"({len(program.schedule.clusters)} in the stream), top "
                   f"{project.name}_stream → {out}/ ({len(project.files) + 1} files; make && "
                   f"./tb_{project.name} --stream data.txt stream.txt stream_result.txt)"])
@@ -549,8 +552,8 @@ def _cmd_stream(args) -> int:
                   f"chain as long as its window; {streaming.UNPRICED} otherwise) and the "
                   f"{who}'s wall time", flush=True)
     online: dict = {}
-    on_chip = hls and window is not None and program.solver.linear == "qr"
-    if on_chip:  # the emitted on-chip window's own design
+    on_chip = hls and streaming.on_chip(program, window)
+    if on_chip:  # the emitted on-chip design's own price
         pricer = streaming.WindowPricer(graph, program, window)
     elif hls:
         pricer = streaming.update_model(graph, program)
@@ -565,7 +568,7 @@ def _cmd_stream(args) -> int:
         if quiet:
             return
         if on_chip:
-            model = f"accelerator {price.latency_ms:7.3f} ms (model estimate, on-chip window)"
+            model = f"accelerator {price.latency_ms:7.3f} ms (model estimate, on chip)"
         elif hls:
             model = (f"accelerator {price.latency_ms:7.3f} ms + {price.assumed_ms:.3f} ms "
                      f"assumed (model estimate, {price.window}-keyframe window)")
@@ -613,8 +616,8 @@ def _cmd_stream(args) -> int:
                    f"{acc['max_state_distance']:.3g} (final estimate)"]
     model = [p["latency_ms"] for p in priced if p]
     if on_chip:
-        lines.append(f"  accelerator per update (the on-chip window's emitted design priced on "
-                     f"its plan, model estimate): median {np.median(model):.3f} ms, p99 "
+        lines.append(f"  accelerator per update (the on-chip design priced on its plan, model "
+                     f"estimate): median {np.median(model):.3f} ms, p99 "
                      f"{np.percentile(model, 99):.3f} ms")
     elif hls:
         from fgc_backends.hls.update import NOT_EMITTED
@@ -644,12 +647,18 @@ def _stream_hls_head(args, program, n: int, window, model_only: bool) -> str:
     unit = (f"n_u = {solver.units} Update units" if solver.linear == "qr"
             else f"#CPE = {solver.cpe}")
     scalar = "double" if solver.precision == "float64" else "float"
-    if window is not None and solver.linear == "qr":
+    from fgc.app.streaming import on_chip
+
+    if on_chip(program, window):
         who = (f"simulator {solver.precision}" if model_only else
-               f"the on-chip window's C simulation ({scalar})")
+               f"the on-chip design's C simulation ({scalar})")
+        kept = ("" if window is not None else
+                ", kept as its conditional with every earlier one (the kept Bayes net on chip, "
+                "walked back each update)")
         tail = ("The emitted design keeps the window, its factors' words and the marginal prior "
                 "in its memories between calls; a call brings one keyframe's storage and data "
-                "words, and the keyframe leaving is marginalised on the accelerator's QR unit"
+                "words, and the keyframe leaving the window is eliminated on the accelerator's "
+                f"QR unit{kept}"
                 + (" (the estimate comes from the simulator)" if model_only else ""))
         return (f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, {who}; "
                 f"per keyframe: the accelerator's latency, the emitted design's plan per call "

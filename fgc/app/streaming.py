@@ -143,10 +143,18 @@ def _run_compiled_stream(program, data, window, progress, graph, backend, scalar
         raise FgcError(f"{backend} streaming needs the graph the Program was compiled from")
     incremental = program.schedule.incremental is not None
     if backend == "hls":
-        from fgc_backends.hls.stream import OnChipFixedLagStream, incremental_stream
+        from fgc_backends.hls.stream import (
+            OnChipFixedLagStream,
+            OnChipIncrementalStream,
+            incremental_stream,
+        )
 
         scalar = scalar or ("double" if program.solver.precision == "float64" else "float")
-        if incremental:
+        if incremental and on_chip(program, None):
+            if progress_build is not None:
+                progress_build(program.schedule.incremental.window, 0, 1)
+            runner = OnChipIncrementalStream(graph, program, scalar)
+        elif incremental:
             runner = incremental_stream(graph, program, scalar, progress_build=progress_build)
         else:
             if progress_build is not None:
@@ -277,18 +285,32 @@ def prefix_program(graph: Graph, program, size: int):
     return compile_graph(sub, solver, name=f"{program.name}_window{size}")
 
 
-class WindowPricer:
-    """The on-chip fixed-lag window's price of each update
-    (:class:`fgc_backends.hls.window.WindowUpdateModel` on the design ``fgc compile --backend hls
-    --window W`` emits; model estimates): ``price(update)`` from its keyframe and iterations."""
+def on_chip(program, window: int | None) -> bool:
+    """Whether the HLS design runs the stream on chip (:mod:`fgc_backends.hls.window`): a QR
+    design with a fixed-lag window, or with an incremental plan of K ≥ 2 and no batch steps
+    (a batch step re-solves the whole chain, which the on-chip design does not hold)."""
+    if program.solver.linear != "qr":
+        return False
+    if window is not None:
+        return True
+    plan = program.schedule.incremental
+    return plan is not None and not plan.batch_keyframes and plan.window >= 2
 
-    def __init__(self, graph: Graph, program, window: int, scalar: str | None = None):
+
+class WindowPricer:
+    """The on-chip design's price of each update (:class:`fgc_backends.hls.window.
+    WindowUpdateModel` on the design ``fgc compile --backend hls --window W`` or ``--incremental
+    K`` emits; model estimates): ``price(update)`` from its keyframe and iterations."""
+
+    def __init__(self, graph: Graph, program, window: int | None, scalar: str | None = None):
         from fgc_backends.hls.config import HlsConfig
         from fgc_backends.hls.window import WindowLayout, WindowUpdateModel
 
         scalar = scalar or ("double" if program.solver.precision == "float64" else "float")
-        self.model = WindowUpdateModel(WindowLayout(graph, program, window),
-                                       HlsConfig(scalar=scalar))
+        layout = (WindowLayout(graph, program, window) if window is not None else
+                  WindowLayout(graph, program, program.schedule.incremental.window - 1,
+                               kept=True))
+        self.model = WindowUpdateModel(layout, HlsConfig(scalar=scalar))
 
     def price(self, update):
         return self.model.price(int(update.keyframe), int(update.iterations))
