@@ -268,7 +268,6 @@ class OnChipFixedLagStream:
         lay, window = self.layout, self.window
         records, initial_error = [], None
         kf = lay.kf_words
-        x_all = None
         for j, (head, x_out, x_kept) in enumerate(_read_stream_result(
                 folder / STREAM_RESULT_FILE, count, lay.n_x, self.kept)):
             first = max(0, j - window)
