@@ -93,9 +93,12 @@ def stacked_pattern(program: Program, step: EliminationStep, damping: bool) -> n
 
 
 def entering_blocks(program: Program, step: EliminationStep) -> list[int]:
-    """Indices of block instances whose member factors enter ``step``."""
+    """Indices of block instances that enter ``step``: those whose first member factor does
+    (a fused instance's rows are stacked whole, where the emitted tables put them:
+    ``fgc_backends.cfamily.tables.factor_steps``), even when a later member's own variable is
+    eliminated after it (a prior fused into the factor that reaches its keyframe)."""
     entering = set(step.factors)
-    return [i for i, f in enumerate(program.factors) if entering.intersection(f.factors)]
+    return [i for i, f in enumerate(program.factors) if f.factors[0] in entering]
 
 
 def _factor_rows(program: Program, index: int, cols: dict, width: int) -> np.ndarray:

@@ -66,7 +66,7 @@ def is_constant_literal(expr: str) -> bool:
 
 
 def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
-         name: str | None = None, stream=None) -> HlsProject:
+         name: str | None = None, stream=None, kernel_only: bool = False) -> HlsProject:
     """Write the HLS project of ``program`` into ``out_dir`` (created if needed).
 
     ``name`` (default: the Program's name) is sanitised into the project identifier used for
@@ -75,7 +75,9 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
 
     ``stream``: a :class:`fgc_backends.hls.window.WindowLayout` whose template ``program`` is:
     the design gets the on-chip fixed-lag window's top ``<name>_stream`` (the synthesis top) and
-    the testbench its ``--stream`` mode.
+    the testbench its ``--stream`` mode; with a ``BatchLayout`` (and ``kernel_only``: the kernel
+    and its header alone, no testbench, Makefile or script) the batch kernel of the on-chip
+    incremental design, a second file of that design.
     """
     config = for_program(program, config or HlsConfig())
     config.check()
@@ -89,6 +91,8 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
         raise HlsConfigError("internal error: the stream layout is not of the emitted Program")
     context["stream"] = None if stream is None else stream.context(config.linear_cxx)
     context["stream_magic"], context["stream_result_magic"] = STREAM_MAGIC, STREAM_RESULT_MAGIC
+    batch = getattr(stream, "batch", None)
+    context["extra_sources"] = [f"{batch.project}.cpp"] if batch is not None else []
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
                              undefined=jinja2.StrictUndefined, trim_blocks=True,
                              lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
@@ -97,6 +101,8 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     out.mkdir(parents=True, exist_ok=True)
     texts = {}
     for template, pattern in FILES:
+        if kernel_only and template not in SYNTHESISED:
+            continue
         name_ = pattern.format(name=project)
         texts[name_] = env.get_template(template).render(**context, template=template,
                                                          file_name=name_)
@@ -108,9 +114,11 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     units = _copy_headers(out)
     result = HlsProject(out, project, tuple(paths), config)
     # the unit headers are synthesised with the kernel: the semantic rules read them together
-    issues = lint_project(result, [out / FILES[i][1].format(name=project)
-                                   for i, (t, _) in enumerate(FILES) if t in SYNTHESISED]
-                          + units, strict=True)
+    # (a batch kernel's file, emitted before this project, was linted on its own: its symbols
+    # are its file's, the same names as this kernel's)
+    synthesised = [out / FILES[i][1].format(name=project)
+                   for i, (t, _) in enumerate(FILES) if t in SYNTHESISED]
+    issues = lint_project(result, synthesised + units, strict=True)
     return dataclasses.replace(result, lint_issues=tuple(issues))
 
 

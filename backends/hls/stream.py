@@ -145,10 +145,17 @@ def _cached_project(template, config, stream=None):
     key = _project_key(template, config)
     if stream is not None:
         key = f"{key}-w{stream.window}" + (f"-kept{stream.kept}" if stream.kept else "")
+        if stream.batch is not None:
+            b = stream.batch
+            key += "-b" + hashlib.sha256(f"{b.template.to_json()}{b.keyframes}".encode()
+                                         ).hexdigest()[:12]
     folder = cache_dir() / "hls-stream" / key
     if not folder.is_dir():
         staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
         shutil.rmtree(staging, ignore_errors=True)
+        if stream is not None and stream.batch is not None:
+            staging.mkdir(parents=True)
+            emit(stream.batch.template, staging, config, stream=stream.batch, kernel_only=True)
         emit(template, staging, config, stream=stream)
         try:
             os.replace(staging, folder)
@@ -208,12 +215,13 @@ class OnChipFixedLagStream:
     kept = False  # the incremental subclass keeps the keyframes that leave
     mode = "fixed-lag"
 
-    def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None):
+    def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None,
+                 layout=None):
         from fgc_backends.hls.config import HlsConfig
         from fgc_backends.hls.emitter import HlsProject
         from fgc_backends.hls.window import WindowLayout
 
-        self.layout = WindowLayout(graph, program, window, kept=self.kept)
+        self.layout = layout or WindowLayout(graph, program, window, kept=self.kept)
         self.program, self.window, self.scalar = program, window, scalar
         self.template = self.layout.template
         if out_dir is None:
@@ -268,9 +276,10 @@ class OnChipFixedLagStream:
         lay, window = self.layout, self.window
         records, initial_error = [], None
         kf = lay.kf_words
+        batches = set(lay.batch.keyframes) if lay.batch is not None else set()
         for j, (head, x_out, x_kept) in enumerate(_read_stream_result(
                 folder / STREAM_RESULT_FILE, count, lay.n_x, self.kept)):
-            first = max(0, j - window)
+            first = max(0, j - window)  # the window's oldest keyframe
             if head["SLOT"] != min(j, lay.size - 1):
                 raise OnChipWindowError(f"keyframe {j}: the accelerator put it in slot "
                                         f"{head['SLOT']}, the host expected "
@@ -293,7 +302,9 @@ class OnChipFixedLagStream:
                         n = estimate[k].size
                         estimate[k][:] = x_kept[c * kf + pos:c * kf + pos + n]
                         pos += n
-            records.append({"keyframe": j, "mode": self.mode, "first": first,
+            batch = j in batches
+            records.append({"keyframe": j, "mode": "batch" if batch else self.mode,
+                            "first": 0 if batch else first,
                             "iterations": head["ITERATIONS"], "status": head["STATUS"],
                             "reason": head["REASON"], "cost": head["FINAL_ERROR"],
                             "seconds": float("nan"), "marginal": head["MARGINAL"] == 1,
@@ -318,27 +329,39 @@ class OnChipIncrementalStream(OnChipFixedLagStream):
     mode = "incremental"
 
     def __init__(self, graph, program, scalar: str = "double", out_dir=None):
-        check_incremental_on_chip(program)
         super().__init__(graph, program, program.schedule.incremental.window - 1, scalar,
-                         out_dir)
+                         out_dir, incremental_layout(graph, program))
+
+
+def incremental_layout(graph, program):
+    """The on-chip incremental design's layout: the window of the newest K keyframes with the
+    kept net and, when the plan has batch steps, the batch kernel of keyframes 0 … the last
+    batch step (:class:`~fgc_backends.hls.window.BatchLayout`)."""
+    from fgc_backends.hls.window import BatchLayout, WindowLayout
+
+    check_incremental_on_chip(program)
+    plan = program.schedule.incremental
+    batch = (BatchLayout(graph, program, max(plan.batch_keyframes) + 1, plan.batch_keyframes)
+             if plan.batch_keyframes else None)
+    return WindowLayout(graph, program, plan.window - 1, kept=True, batch=batch)
 
 
 def check_incremental_on_chip(program) -> None:
     """:class:`~fgc_backends.hls.window.OnChipWindowError` unless ``program``'s incremental plan
-    runs on chip: no batch steps, every update the newest K keyframes, K ≥ 2."""
+    runs on chip: every incremental update the newest K keyframes, every batch step keyframes
+    0 … j, K ≥ 2."""
     from fgc_backends.hls.window import OnChipWindowError
 
     plan = program.schedule.incremental
     if plan is None:
         raise OnChipWindowError("the Program has no incremental plan (--incremental K)")
-    if plan.batch_keyframes:
-        raise OnChipWindowError(
-            f"batch steps at keyframes {', '.join(map(str, plan.batch_keyframes))} re-solve "
-            "the whole chain, which the on-chip design (the newest K keyframes and the kept "
-            "conditionals) does not hold: drop --batch-every, or run the host-kept C "
-            "simulation")
     k = plan.window
     for u in plan.updates:
+        if u.mode == "batch":
+            if tuple(u.clusters) != tuple(range(u.keyframe + 1)):
+                raise OnChipWindowError(f"keyframe {u.keyframe}: a batch step that re-eliminates "
+                                        f"keyframes {list(u.clusters)}, not 0 … {u.keyframe}")
+            continue
         if u.mode != "incremental" or tuple(u.clusters) != tuple(
                 range(max(0, u.keyframe - k + 1), u.keyframe + 1)):
             raise OnChipWindowError(f"keyframe {u.keyframe}: its update re-eliminates "
@@ -376,11 +399,17 @@ def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
                Path(folder) / build.DATA_FILE)
     clusters = layout.program.schedule.clusters
     lines = [f"{STREAM_MAGIC} {t.structure_fingerprint}", f"KEYFRAMES {len(clusters)}"]
+    batch = layout.batch
+    if batch is not None:
+        bx, bd = batch.reset_words(estimate)
+        lines += ["BATCH_RESET", *_chunks(bx), *_chunks(bd)]
     held = None
     for j, keys in enumerate(clusters):
         held = layout.check_holds(held, j)
         x_new = np.concatenate([estimate[k] for k in keys])
         _, words = layout.keyframe_words(j, x_new)
+        if batch is not None and j < batch.size:
+            words = np.concatenate([words, batch.keyframe_words(j, x_new)])
         lines += _chunks(x_new) + _chunks(words)
     (Path(folder) / STREAM_FILE).write_text("\n".join(lines) + "\n")
     return len(clusters)
@@ -399,10 +428,11 @@ def emit_window(graph, program, window: int | None, data: ProblemData, out_dir, 
     from fgc_backends.native.stream import _Stream
 
     if window is None:
-        check_incremental_on_chip(program)
-        layout = WindowLayout(graph, program, program.schedule.incremental.window - 1, kept=True)
+        layout = incremental_layout(graph, program)
     else:
         layout = WindowLayout(graph, program, window)
+    if layout.batch is not None:  # its second file first: the window's lint reads it
+        emit(layout.batch.template, out_dir, config, stream=layout.batch, kernel_only=True)
     project = emit(layout.template, out_dir, config, stream=layout)
     estimate = _Stream(program)._start(data)
     write_stream_inputs(layout, estimate, project.directory)

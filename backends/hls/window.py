@@ -74,7 +74,7 @@ class WindowLayout(WindowTemplate):
     """The template of a fixed-lag window of ``window`` keyframes (W + 1 slots) and the tables
     of its on-chip stream (module docstring)."""
 
-    def __init__(self, graph, program, window: int, kept: bool = False):
+    def __init__(self, graph, program, window: int, kept: bool = False, batch=None):
         if isinstance(window, bool) or not isinstance(window, int) or window < 1:
             raise OnChipWindowError(f"the fixed-lag window must be a positive number of "
                                     f"keyframes, got {window!r}")
@@ -82,6 +82,7 @@ class WindowLayout(WindowTemplate):
         self.window = window
         # incremental mode: every keyframe that leaves the window is kept as its conditional
         self.kept = len(program.schedule.clusters) if kept else 0
+        self.batch = batch  # the batch kernel's BatchLayout (incremental plans with batch steps)
         t = self.template
         if t.solver.linear != "qr":
             raise OnChipWindowError(
@@ -226,7 +227,25 @@ class WindowLayout(WindowTemplate):
                 "new_dest": [w for d in self.new_dest for w in d],
                 "new_begin": new_begin,
                 "max_new": max(len(d) for d in self.new_dest),
-                **self._kept_context(linear_cxx)}
+                "role": "window", "in_x": self.n_x, "in_data": self.n_data,
+                **self._kept_context(linear_cxx), **self._batch_context()}
+
+    def _batch_context(self) -> dict:
+        """What the window's stream top needs of the batch kernel: its names, sizes and the
+        batch keyframes (a ROM flag per keyframe)."""
+        b = self.batch
+        if b is None:
+            return {"batch": None}
+        keyframes = set(b.keyframes)
+        in_x = max(self.n_x, b.n_x)
+        in_data = max(self.n_data, b.n_data, max(len(d) for d in self.new_dest)
+                      + max(len(d) for d in b.new_dest))
+        return {"in_x": in_x, "in_data": in_data, "batch": {"name": b.project, "slots": b.size, "n_x": b.n_x,
+                          "n_data": b.n_data, "new_begin": b.new_begin(),
+                          "is_batch": [int(j in keyframes) for j in range(self.kept)],
+                          "in_x": max(self.n_x, b.n_x), "in_data": max(
+                              self.n_data, b.n_data, max(len(d) for d in self.new_dest)
+                              + max(len(d) for d in b.new_dest))}}
 
     def _kept_context(self, linear_cxx: str) -> dict:
         """The kept Bayes net's constants (incremental mode): the Log kernels, slot 0's
@@ -335,6 +354,100 @@ class WindowLayout(WindowTemplate):
                                     f"{what}: the stream's factors do not repeat keyframe by "
                                     "keyframe as the template's")
         return held
+
+
+class BatchLayout(WindowTemplate):
+    """The batch kernel of the on-chip incremental design: a template of the chain's first
+    ``size`` keyframes (the last batch step's), eliminated serially oldest first so that each
+    keyframe's step leaves its conditional on the next (the kept net's form) and passes the
+    next its τ; slot c holds keyframe c (no shift). ``keyframes``: the plan's batch steps."""
+
+    def __init__(self, graph, program, size: int, keyframes):
+        from fgc_backends.cfamily.names import identifier
+
+        super().__init__(graph, program, size, ordering="serial")
+        self.window = size - 1
+        self.keyframes = tuple(keyframes)
+        t = self.template
+        if t.solver.linear != "qr":
+            raise OnChipWindowError("the on-chip batch kernel keeps the QR unit's conditionals: "
+                                    "compile with --linear-solver qr")
+        tables = {tab.name: tab.values for tab in build_tables(t, t.solver.method == "lm",
+                                                                False).arrays}
+        x_off = tables["VAR_X_OFF"]
+        index = {v.key: i for i, v in enumerate(t.variables)}
+        clusters = program.schedule.clusters
+        self.slot_x = []
+        for s in range(self.size):
+            words = []
+            for k in clusters[s]:
+                i = index[k]
+                words += range(x_off[i], x_off[i + 1])
+            self.slot_x.append(words)
+        self.kf_words = len(self.slot_x[0])
+        self.kf_dim = self.prior_types[0][1]
+        self.members = self._members(tables["FACTOR_DATA_OFF"])
+        self.n_x, self.n_data = x_off[-1], tables["FACTOR_DATA_OFF"][-1]
+        self.new_dest = []
+        for s in range(self.size):
+            words = []
+            for m in self.members:
+                if m.hi == s:
+                    words += range(m.start, m.start + m.words)
+            self.new_dest.append(sorted(words))
+        # each slot's elimination step: frontal the slot, separator the next slot, in order
+        t_off = tables["VAR_T_OFF"]
+        self.slot_step = []
+        begin = tables["STEP_COL_BEGIN"]
+        for s in range(self.size):
+            step = next((st for st in t.schedule.steps if set(st.frontals) == set(clusters[s])),
+                        None)
+            if step is None:
+                raise OnChipWindowError(f"the batch template does not eliminate keyframe {s} in "
+                                        "a step of its own")
+            cols = tables["STEP_COL"][begin[step.index]:begin[step.index + 1]]
+            f = tables["STEP_F"][step.index]
+            want = [c for k in clusters[s + 1] for c in range(t_off[index[k]],
+                                                                t_off[index[k] + 1])] \
+                if s + 1 < self.size else []
+            if list(cols[f:]) != want:
+                raise OnChipWindowError(f"the batch template's step of keyframe {s} is not "
+                                        "conditioned on the next keyframe alone, in order")
+            self.slot_step.append(step.index)
+        self.project = identifier(t.name)
+
+    # the factor words and the reset are laid out as the window's
+    _members = WindowLayout._members
+    _member_objects = WindowLayout._member_objects
+    reset_words = WindowLayout.reset_words
+
+    def new_begin(self) -> list[int]:
+        return np.cumsum([0] + [len(d) for d in self.new_dest]).tolist()
+
+    def context(self, linear_cxx: str) -> dict:
+        """The batch kernel's section (accel.cpp.jinja, role "batch")."""
+        return {"role": "batch", "slots": self.size, "kf_x": self.kf_words,
+                "kf_t": self.kf_dim, "slot_x": [w for s in self.slot_x for w in s],
+                "new_dest": [w for d in self.new_dest for w in d],
+                "new_begin": self.new_begin(), "slot_step": self.slot_step,
+                "max_new": max(len(d) for d in self.new_dest), "kept": 0, "batch": None,
+                "marginal": False}
+
+    def keyframe_words(self, j: int, x_new: np.ndarray) -> np.ndarray:
+        """Keyframe j's words for slot j (j < size)."""
+        members = self._member_objects()
+        buf = np.zeros(self.n_data)
+        for mem in self.members:
+            if mem.hi != j:
+                continue
+            if mem.prior:
+                words = np.concatenate([x_new, self._unused[j]])
+            else:
+                index = self.by_signature.get((mem.kind, mem.cells))
+                words = (self._zeroed(mem.t, members[mem.t]) if index is None
+                         else self._factor(index, members[mem.t]))
+            buf[mem.start:mem.start + mem.words] = words
+        return buf[self.new_dest[j]]
 
 
 def _moves(shift: list[int]) -> list[tuple[int, int]]:

@@ -136,7 +136,7 @@ class WindowTemplate:
     window of at most ``size`` keyframes. No solver: :class:`WindowSolver` adds the native one,
     the HLS backend's on-chip window (:mod:`fgc_backends.hls.window`) its own."""
 
-    def __init__(self, graph: Graph, program: Program, size: int):
+    def __init__(self, graph: Graph, program: Program, size: int, ordering: str | None = None):
         from fgc.compile import compile_graph
 
         if program.schedule.structure_class != "chain" or not program.schedule.clusters:
@@ -178,7 +178,10 @@ class WindowTemplate:
                                mean=np.zeros((dim, 1)), **lin))
             self.prior_types.append((ptype, dim))
         solver = replace(program.solver, incremental_k=None, batch_every=None)
-        self.template = compile_graph(template, solver, name=f"{program.name}_window{size}")
+        if ordering is not None:
+            solver = replace(solver, ordering=ordering)
+        kind = "window" if ordering is None else ordering
+        self.template = compile_graph(template, solver, name=f"{program.name}_{kind}{size}")
         # every graph factor by its signature (type, (keyframe, position) per variable)
         self.by_signature = {self._signature(f, 0): i for i, f in enumerate(graph.factors)}
         spans = [[self.cluster_of[str(k)] for k in f.keys] for f in graph.factors]
