@@ -38,8 +38,9 @@ def counted(stream: OnChipFixedLagStream) -> list[tuple[int, dict]]:
     its last :meth:`run` wrote)."""
     folder, name = stream.project.directory, stream.project.name
     stream.phases = []  # per keyframe: csim cycles per plan phase
+    kernels = sorted(p.name for p in folder.glob("*.cpp") if not p.name.startswith("tb_"))
     subprocess.run(["g++", "-std=c++17", "-O1", "-DFGC_COUNT_CYCLES", "-Wno-unknown-pragmas",
-                    "-I", "csim_include", "-I", "include", f"tb_{name}.cpp", f"{name}.cpp",
+                    "-I", "csim_include", "-I", "include", f"tb_{name}.cpp", *kernels,
                     "-o", "tb_count"], cwd=folder, check=True)
     out = subprocess.run(["./tb_count", "--stream", "data.txt", "stream.txt", "count.txt"],
                          cwd=folder, check=True, capture_output=True, text=True).stdout
@@ -54,13 +55,15 @@ def counted(stream: OnChipFixedLagStream) -> list[tuple[int, dict]]:
     return rows
 
 
-def measure(keyframes: int, window: int, scalar: str, incremental: int | None = None):
+def measure(keyframes: int, window: int, scalar: str, incremental: int | None = None,
+            batch_every=None):
     graph = example("lio").build(N=keyframes)
     out = tempfile.mkdtemp(prefix="fgc-stream-cycles-")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # a double design over the part's DSP still simulates
         if incremental:
-            program = compile_stream(graph, incremental=incremental, name="lio_stream")
+            program = compile_stream(graph, incremental=incremental, batch_every=batch_every,
+                                     name="lio_stream")
             stream = OnChipIncrementalStream(graph, program, scalar, out_dir=out)
         else:
             program = compile_stream(graph, window=window, name="lio_stream")
@@ -71,8 +74,10 @@ def measure(keyframes: int, window: int, scalar: str, incremental: int | None = 
     rows = []
     for record, (cycles, events) in zip(result.updates, counted(stream), strict=True):
         ev = dict(events)
-        if record.get("marginal"):
-            ev["linearize"] = ev.get("linearize", 0) - 1  # the marginal's own, in its term
+        if record.get("marginal") or record["mode"] == "batch":
+            ev["linearize"] = ev.get("linearize", 0) - 1  # the store's own, in its term
+        if record["mode"] == "batch":
+            ev["solve"] = ev.get("solve", 0) - 1  # the batch store's elimination, in its term
         price = model.price(record["keyframe"], record["iterations"], ev)
         rows.append((record, cycles, price))
     return graph, program, data, result, rows, stream
@@ -83,22 +88,25 @@ def main() -> None:
     ap.add_argument("--keyframes", type=int, default=30)
     ap.add_argument("--window", type=int, default=10)
     ap.add_argument("--scalar", choices=("float", "double"), default="float")
+    ap.add_argument("--batch-every", metavar="J,J,...", type=lambda t: tuple(
+        int(v) for v in t.split(",")), help="batch steps of the incremental plan (keyframes)")
     ap.add_argument("--incremental", type=int, metavar="K",
                     help="the incremental plan on chip (newest K keyframes, the kept Bayes net) "
                          "instead of the fixed-lag window")
     args = ap.parse_args()
     graph, program, data, result, rows, _ = measure(args.keyframes, args.window, args.scalar,
-                                                    args.incremental)
-    mode = (f"incremental K = {args.incremental}" if args.incremental
-            else f"fixed-lag W = {args.window}")
+                                                    args.incremental, args.batch_every)
+    mode = (f"incremental K = {args.incremental}" + (
+        f", batch at {','.join(map(str, args.batch_every))}" if args.batch_every else "")
+        if args.incremental else f"fixed-lag W = {args.window}")
     print(f"LIO N = {args.keyframes}, {mode}, {args.scalar} design "
           f"(on chip, model estimates at {rows[0][2].clock_mhz:g} MHz)")
-    print(f"{'keyframe':>8} {'iters':>5} {'csim cycles':>12} {'model cycles':>12} "
+    print(f"{'keyframe':>8} {'mode':>11} {'iters':>5} {'csim cycles':>12} {'model cycles':>12} "
           f"{'csim/model':>10} {'model ms':>9}")
     ratios = []
     for record, cycles, price in rows:
         ratios.append(cycles / price.cycles)
-        print(f"{record['keyframe']:>8} {record['iterations']:>5} {cycles:>12,} "
+        print(f"{record['keyframe']:>8} {record['mode']:>11} {record['iterations']:>5} {cycles:>12,} "
               f"{price.cycles:>12,} {cycles / price.cycles:>10.3f} {price.latency_ms:>9.3f}")
     lat = [p.latency_ms for _, _, p in rows]
     print(f"csim/model {min(ratios):.3f} … {max(ratios):.3f}; update latency median "

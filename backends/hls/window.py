@@ -495,6 +495,56 @@ def phase_group(name: str) -> str:
     return head if head and tail.isdigit() else name
 
 
+def qr_solve_cycles(t, zero: frozenset, damped: bool, sets: int, les, leaf=None) -> int:
+    """The QR unit sets' cycles of one linear solve of template ``t`` (every level's DATAFLOW
+    regions, the plan's assignment of a level's steps to ``sets`` unit sets) with the rows of
+    the ``zero`` template factors and, unless ``damped``, the √μ rows zero: the Evaluate unit
+    skips a row that is zero in its column (fgc_qr.h). ``leaf``: that step alone on unit set 0."""
+    from fgc_backends.cost.structure import entering_blocks, stacked_pattern
+    from fgc_backends.hls.plan import Phase, Process, _assign, phase_cycles, qr_unit_loops
+
+    lm = t.solver.method == "lm"
+    units = max(1, t.solver.units)
+    procs = {}
+    for st in t.schedule.steps:
+        if leaf is not None and st.index != leaf:
+            continue
+        pattern = stacked_pattern(t, st, lm).copy()
+        row = 0
+        for i in entering_blocks(t, st):
+            spec = t.factors[i]
+            block = t.blocks[spec.block]
+            for member, ti in zip(block.members, spec.factors, strict=True):
+                if ti in zero:
+                    pattern[row + member.rows[0]:row + member.rows[1]] = False
+            row += block.residual_dim
+        if lm and not damped:
+            pattern[pattern.shape[0] - st.frontal_dim:] = False
+        procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
+            pattern, st.frontal_dim, units, les, name=f"s{st.index}")))
+    if leaf is not None:
+        return phase_cycles(Phase("leaf", True, (procs[leaf],)))
+    total = 0
+    for li, level in enumerate(t.schedule.levels):
+        chunks = [_assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
+                  for c in range(0, len(level), sets)]
+        total += sum(phase_cycles(Phase("chunk", True, chunk)) for chunk in chunks)
+    return total
+
+
+def plan_groups(plan) -> dict:
+    """Per phase group of ``plan`` (its name without the level number) the cycles of one
+    execution of its per-iteration and per-rejection phases."""
+    from fgc_backends.hls.plan import phase_cycles
+
+    group: dict[str, int] = {}
+    for ph in plan.phases:
+        if ph.per in ("iteration", "rejection"):
+            g = phase_group(ph.name)
+            group[g] = group.get(g, 0) + phase_cycles(ph)
+    return group
+
+
 class WindowUpdateModel:
     """The price of each call of the on-chip fixed-lag window's design
     (``<name>_stream``): the accelerator plan of the emitted template
@@ -556,6 +606,7 @@ class WindowUpdateModel:
         self.shift = cycles(kernel_loop("x", len(layout.x_moves), "move", kt),
                             kernel_loop("d", len(layout.data_moves), "move", kt))
         self.x_out = cycles(kernel_loop("x", n_x, "move", kt))
+        self.x_out_kf = cycles(kernel_loop("x", layout.kf_words, "move", kt))
         if layout.kept:  # the kept Bayes net's loops, as accel.cpp.jinja counts them
             n, kf = n_t, layout.kf_words
             move_kf = cycles(kernel_loop("x", kf, "move", kt))
@@ -582,7 +633,13 @@ class WindowUpdateModel:
             stack = cycles(*stack_loops(tables, s, max(1, t.solver.units),
                                         plan_sizes(t)["MAX_W"], damping, kt))
             commit = cycles(*commit_loops(tables, s, kt, False))
-            tail = cycles(kernel_loop("sign", n_t * (n_t + 1), "max", kt),
+            self.write_tau = cycles(kernel_loop("sign", n_t * (n_t + 1), "max", kt),
+                                    kernel_loop("mean", n_t * (n_t - 1) // 2, "acc", lt),
+                                    kernel_loop("divide", n_t, "div", lt),
+                                    kernel_loop("tau_out", layout.kf_words + n_t
+                                                + n_t * (n_t + 1) // 2 + 2, "move", kt))
+            tail = cycles(kernel_loop("rows", n_t * (n_t + 1), "move", kt),
+                          kernel_loop("sign", n_t * (n_t + 1), "max", kt),
                           kernel_loop("mean", n_t * (n_t - 1) // 2, "acc", lt),
                           kernel_loop("divide", n_t, "div", lt),
                           kernel_loop("tau_out", layout.kf_words + n_t + n_t * (n_t + 1) // 2
@@ -591,6 +648,20 @@ class WindowUpdateModel:
                                    + self.group["gradient"],
                                    "stack": stack, "qr": qr, "commit": commit, "tau": tail}
             self.marginal = sum(self.marginal_parts.values())  # every row non-zero (a bound)
+        self.batch = None
+        if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
+            b = layout.batch
+            bplan = accel_plan(b.template, config)
+            n, kf = n_t, layout.kf_words
+            words = n * (2 * n + 1)
+            self.batch = {
+                "layout": b, "plan": bplan, "group": plan_groups(bplan),
+                "sets": max(1, unit_sets(bplan)),
+                "in": [cycles(kernel_loop("x", kf, "move", kt), kernel_loop("d", len(d), "move",
+                                                                              kt))
+                       for d in b.new_dest],
+                "move": lambda words_: cycles(kernel_loop("x", words_, "move", kt)),
+                "words": words}
 
     # -- the QR units on the rows that are non-zero in this update -----------------------------
     def zero_factors(self, keyframe: int) -> frozenset:
@@ -627,38 +698,69 @@ class WindowUpdateModel:
         return self._qr[key]
 
     def _qr_cycles(self, zero, damped, leaf_only) -> int:
-        from fgc_backends.cost.structure import entering_blocks, stacked_pattern
-        from fgc_backends.hls.plan import Phase, Process, _assign, phase_cycles, qr_unit_loops
+        return qr_solve_cycles(self.layout.template, zero, damped, self.sets, self.les,
+                               self.layout.leaf_step if leaf_only else None)
 
-        t = self.layout.template
-        lm = t.solver.method == "lm"
-        units = max(1, t.solver.units)
-        procs = {}
-        for st in t.schedule.steps:
-            if leaf_only and st.index != self.layout.leaf_step:
-                continue
-            pattern = stacked_pattern(t, st, lm).copy()
-            row = 0
-            for i in entering_blocks(t, st):
-                spec = t.factors[i]
-                block = t.blocks[spec.block]
-                for member, ti in zip(block.members, spec.factors, strict=True):
-                    if ti in zero:
-                        pattern[row + member.rows[0]:row + member.rows[1]] = False
-                row += block.residual_dim
-            if lm and not damped:
-                pattern[pattern.shape[0] - st.frontal_dim:] = False
-            procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
-                pattern, st.frontal_dim, units, self.les, name=f"s{st.index}")))
-        if leaf_only:
-            return phase_cycles(Phase("leaf", True, (procs[self.layout.leaf_step],)))
-        sets = self.sets
-        total = 0
-        for li, level in enumerate(t.schedule.levels):
-            chunks = [_assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
-                      for c in range(0, len(level), sets)]
-            total += sum(phase_cycles(Phase("chunk", True, chunk)) for chunk in chunks)
-        return total
+    def _kept_out_terms(self, keyframe: int) -> list:
+        from fgc_backends.hls.update import Term
+
+        first = max(0, keyframe - self.layout.window)
+        if not (self.layout.kept and first):
+            return []
+        return [Term("x_kept_out", first * self.layout.kf_words + 1, 1, False,
+                     "the kept keyframes' estimates out, a word a cycle")]
+
+    def batch_zero_factors(self, j: int) -> frozenset:
+        """The batch template's factors with zero rows at a batch step at keyframe j: factors
+        not arrived (past j) or absent from the stream, and every prior of slots 0 … j (no
+        information; the slots past j hold unit priors)."""
+        b = self.batch["layout"]
+        zero = set()
+        for mem in b.members:
+            if mem.prior:
+                if mem.slots[0] <= j:
+                    zero.add(mem.t)
+            elif mem.hi > j or b.by_signature.get((mem.kind, mem.cells)) is None:
+                zero.add(mem.t)
+        return frozenset(zero)
+
+    def _batch_terms(self, j: int, ev: dict) -> list:
+        """A batch step's terms, as accel.cpp.jinja's batch_step and the batch kernel's
+        batch_solve count them."""
+        from fgc_backends.hls.update import Term
+
+        batch, lay = self.batch, self.layout
+        b, group, move = batch["layout"], batch["group"], batch["move"]
+        kf, words = lay.kf_words, batch["words"]
+        zero = self.batch_zero_factors(j)
+        qr_damped = qr_solve_cycles(b.template, zero, True, batch["sets"], self.les)
+        qr_store = qr_solve_cycles(b.template, zero, False, batch["sets"], self.les)
+        terms = [Term("batch_gather", move((j + 1) * kf), 2, False,
+                      f"keyframes 0 … {j}'s estimates to the batch kernel (gathered, copied in)")]
+        for g in sorted(group):
+            trigger = PHASE_TRIGGER.get(g)
+            times = ev.get(trigger, 0) if trigger else 0
+            if times:
+                each = qr_damped if g == "qr" else group[g]
+                terms.append(Term(f"batch_{g}", each, times, False,
+                                  f"the batch kernel's {g} phase, once per {trigger}"))
+        store = (group["factor_jacobian"] + group["gradient"] + group["qr_stack"] + qr_store
+                 + group["qr_commit"])
+        terms.append(Term("batch_store", store, 1, False,
+                          f"keyframes 0 … {j} linearised at the optimum and eliminated serially "
+                          "at μ = 0 (their conditionals and the factors they pass)"))
+        out = move((j + 1) * kf) + move(j * words) + (
+            move(lay.kf_dim * (lay.kf_dim + 1)) if j >= lay.window else 0) + move((j + 1) * kf)
+        terms.append(Term("batch_out", out, 1, False,
+                          "the optimum, the conditionals and τ out of the batch kernel, the "
+                          "optimum scattered to the kept memory and the window"))
+        if j >= lay.window:
+            kept = j - lay.window + 1
+            terms.append(Term("batch_kept", move(kept * words) + move(kept * kf)
+                              + self.write_tau, 1, False,
+                              f"the kept net rebuilt: keyframes 0 … {j - lay.window}'s "
+                              "conditionals and points, τ written for the next window"))
+        return terms
 
     @staticmethod
     def events_of(iterations: int, rejected: int = 0, noise: int = 0) -> dict:
@@ -684,6 +786,20 @@ class WindowUpdateModel:
         if keyframe >= lay.size:
             terms.append(Term("shift", self.shift, 1, False,
                               "every slot down one: its variables, its factors' words, τ"))
+        batch = self.batch
+        if batch is not None:
+            if keyframe >= lay.size:
+                terms.append(Term("leave", self.x_out_kf, 1, False,
+                                  "the leaving keyframe's estimate into the kept memory"))
+            if keyframe < batch["layout"].size:
+                terms.append(Term("batch_in", batch["in"][keyframe], 1, False,
+                                  "the keyframe's words into the batch kernel's slot"))
+            if keyframe in batch["layout"].keyframes:
+                terms += self._batch_terms(keyframe, ev)
+                terms += self._kept_out_terms(keyframe)
+                terms.append(Term("x_out", self.x_out, 1, False, "the window's storage out"))
+                return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
+                                   tuple(terms), STREAM_SOURCE)
         zero = self.zero_factors(keyframe)
         for g in sorted(self.group):
             trigger = PHASE_TRIGGER.get(g)
@@ -715,9 +831,7 @@ class WindowUpdateModel:
             terms.append(Term("kept_walk", self.kept_walk_base + first * self.kept_walk_each, 1,
                               False, f"the walk back through {first} kept conditionals: per "
                                      "keyframe a Log, S·Log, R⁻¹ by rows, a retraction"))
-            if first:
-                terms.append(Term("x_kept_out", first * lay.kf_words + 1, 1, False,
-                                  "the kept keyframes' estimates out, a word a cycle"))
+            terms += self._kept_out_terms(keyframe)
         terms.append(Term("x_out", self.x_out, 1, False, "the window's storage out"))
         return UpdatePrice(keyframe, "incremental" if lay.kept else "fixed-lag", first,
                            int(iterations),
