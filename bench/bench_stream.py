@@ -9,8 +9,9 @@ trajectory's difference from the batch optimum (GTSAM LM on the whole graph).
 
 ``--hls-model`` is paper A's setting (LIO N = 30, incremental K = 3, batch at keyframes 5, 15,
 25, float32 by default; its Fig. 5.3): per keyframe, the update as the simulator ran it, priced
-by the accelerator plan's update model (``fgc_backends.hls.update``: model estimates, not
-measurements; the accelerator's incremental mode is not emitted in C++), beside two wall times
+on the emitted on-chip incremental design's plan (``fgc_backends.hls.window.WindowUpdateModel``:
+model estimates, not measurements; a Cholesky design is priced by the host-kept path's update
+model, ``fgc_backends.hls.update``), beside two wall times
 measured in this process, median of ``--repeat`` runs per keyframe, the runs interleaved: the
 native solver's IncrementalStream on the same stream (same K and batch keyframes, double; its
 template libraries built before timing) and GTSAM's ISAM2 update. It also prints how far the
@@ -131,7 +132,10 @@ def hls_model(args) -> dict:
     solver = SolverConfig(precision=args.precision, units=args.units, cpe=args.cpe,
                           linear=args.linear)
     program = streaming.compile_stream(graph, solver, incremental=k, batch_every=batch)
-    model = streaming.update_model(graph, program)
+    on_chip = streaming.on_chip(program, None)
+    # the emitted on-chip design's own price (QR); Cholesky: the update model of the host-kept path
+    model = (streaming.WindowPricer(graph, program, None) if on_chip
+             else streaming.update_model(graph, program))
     updates = []
     result = streaming.run_stream(program, problem_data(graph, program), None, updates.append)
     prices = [model.price(u) for u in updates]
@@ -182,9 +186,15 @@ def hls_model(args) -> dict:
     unit = f"n_u = {sol.units}" if sol.linear == "qr" else f"#CPE = {sol.cpe}"
     print(f"paper A's setting: LIO on KITTI, N = {n}, incremental K = {k}, batch at "
           f"{args.batch_every or '5,15,25'}; simulator {sol.precision}: {result.status}")
-    print(f"accelerator: update model on the HLS plan ({sol.linear.upper()}, {unit}, "
-          f"{sol.precision}, {sol.clock_mhz:g} MHz) - model estimates, not measured; "
-          f"{NOT_EMITTED}")
+    if on_chip:
+        print(f"accelerator: the on-chip incremental design (the window, the kept Bayes net and "
+              f"the batch kernel in its memories; fgc compile --backend hls --incremental "
+              f"{k} --batch-every ...) priced on its plan ({sol.linear.upper()}, {unit}, "
+              f"{sol.precision}, {sol.clock_mhz:g} MHz) - model estimates, not measured")
+    else:
+        print(f"accelerator: update model on the HLS plan ({sol.linear.upper()}, {unit}, "
+              f"{sol.precision}, {sol.clock_mhz:g} MHz) - model estimates, not measured; "
+              f"{NOT_EMITTED}")
     print(f"native: fgc_backends.native.stream.IncrementalStream, double, the same K and batch "
           f"keyframes; wall time of the whole update (the library's LM solve of the window, "
           f"the host's assembly and NumPy store elimination of the window, and the "

@@ -40,6 +40,9 @@ def main(argv=None) -> int:
     p.add_argument("--window", type=int, default=None,
                    help="a fixed-lag window of W keyframes instead of the incremental plan")
     p.add_argument("--scalar", choices=("double", "float"), default="double")
+    p.add_argument("--host-kept", action="store_true",
+                   help="the incremental plan's earlier path: each window solved by the C "
+                        "simulation, the kept Bayes net on the host (default: on chip)")
     p.add_argument("--json", help="write the per-keyframe distances as JSON")
     args = p.parse_args(argv)
 
@@ -48,7 +51,11 @@ def main(argv=None) -> int:
     from fgc.interop import oracles
     from fgc.interop.to_gtsam import to_gtsam
     from fgc.ir.datafile import problem_data
-    from fgc_backends.hls.stream import OnChipFixedLagStream, incremental_stream
+    from fgc_backends.hls.stream import (
+        OnChipFixedLagStream,
+        OnChipIncrementalStream,
+        incremental_stream,
+    )
 
     graph = example("lio").build(N=args.N)
     if args.window is None:
@@ -66,9 +73,11 @@ def main(argv=None) -> int:
     sim = []
     run_stream(program, data, args.window, sim.append)
     t1 = time.perf_counter()
-    if args.window is None:
+    if args.window is None and args.host_kept:
         stream = incremental_stream(graph, program, args.scalar, progress_build=lambda size, i, n:
                                     print(f"  template {i + 1}/{n}: {size} keyframes", flush=True))
+    elif args.window is None:  # the on-chip design: the window, the kept net, the batch kernel
+        stream = OnChipIncrementalStream(graph, program, args.scalar)
     else:
         stream = OnChipFixedLagStream(graph, program, args.window, args.scalar)
     csim = stream.run(data)

@@ -106,7 +106,8 @@ def main() -> None:
     ratios = []
     for record, cycles, price in rows:
         ratios.append(cycles / price.cycles)
-        print(f"{record['keyframe']:>8} {record['mode']:>11} {record['iterations']:>5} {cycles:>12,} "
+        print(f"{record['keyframe']:>8} {record['mode']:>11} {record['iterations']:>5} "
+              f"{cycles:>12,} "
               f"{price.cycles:>12,} {cycles / price.cycles:>10.3f} {price.latency_ms:>9.3f}")
     lat = [p.latency_ms for _, _, p in rows]
     print(f"csim/model {min(ratios):.3f} … {max(ratios):.3f}; update latency median "

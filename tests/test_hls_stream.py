@@ -243,28 +243,42 @@ def test_a_graph_that_is_not_a_chain_has_no_update_model():
 
 
 def test_cli_stream_hls_prints_the_model_beside_the_simulator(tmp_path, capsys):
+    """``--model-only`` on a QR Program: the simulator's updates priced on the on-chip
+    incremental design's plan (its window, kept net and batch kernel), every term the plan's."""
     out, tum = tmp_path / "stream.json", tmp_path / "stream.tum"
     rc = main(["stream", LIO, "-p", "N=6", "--incremental", "2", "--batch-every", "3,",
                "--backend", "hls", "--model-only", "--units", "2", "--precision", "float32",
                "--json", str(out), "--tum", str(tum)])
     text = capsys.readouterr().out
     assert rc == 0, text
-    assert "not emitted in C++" in text and "n_u = 2 Update units" in text
-    assert "keyframe    3 (batch, from 0)" in text and "ms assumed (model estimate" in text
-    assert "(simulator wall time)" in text and NOT_EMITTED in text
+    assert "kept Bayes net on chip" in text and "n_u = 2" in text
+    assert "keyframe    3 (batch, from 0)" in text and "(model estimate, on chip)" in text
+    assert "(simulator wall time)" in text and "BRAM36 (model estimate" in text
     assert len(tum.read_text().splitlines()) == 6
     report = json.loads(out.read_text())
-    assert report["backend"] == "hls" and report["not_emitted"] == NOT_EMITTED
-    # each keyframe's figure is the update model's price of the update the simulator ran
+    assert report["backend"] == "hls" and "not_emitted" not in report
+    # each keyframe's figure is the on-chip design's price of the update the simulator ran
     graph = lio.build(N=6)
     program = compile_stream(graph, SolverConfig(precision="float32", units=2),
                              incremental=2, batch_every=(3,))
-    model = update_model(graph, program)
+    from fgc.app.streaming import WindowPricer
+
+    model = WindowPricer(graph, program, None)
     for u, priced in zip(report["updates"], report["model_estimate"], strict=True):
         again = model.price(SimpleNamespace(**{k: u[k] for k in ("keyframe", "mode", "first",
                                                                   "iterations")}))
         assert priced["cycles"] == again.cycles and priced["keyframe"] == u["keyframe"]
-        assert any(t["assumed"] for t in priced["terms"])
+        assert not any(t["assumed"] for t in priced["terms"])
+
+
+def test_cli_stream_hls_cholesky_prices_the_host_kept_path(capsys):
+    """A Cholesky Program has no on-chip design: the update model of the host-kept path, its
+    assumed terms and the reason printed."""
+    rc = main(["stream", LIO, "-p", "N=5", "--incremental", "2", "--backend", "hls",
+               "--model-only", "--linear", "cholesky", "--cpe", "5"])
+    text = capsys.readouterr().out
+    assert rc == 0, text
+    assert "ms assumed (model estimate" in text and NOT_EMITTED in text
 
 
 def test_cli_stream_hls_fixed_lag_cholesky(capsys):

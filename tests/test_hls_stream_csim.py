@@ -32,7 +32,11 @@ from fgc.app.streaming import compile_stream, keyframe_result, run_stream
 from fgc.interop import oracles
 from fgc.interop.to_gtsam import to_gtsam
 from fgc.ir.datafile import problem_data
-from fgc_backends.hls.stream import OnChipFixedLagStream, incremental_stream
+from fgc_backends.hls.stream import (
+    OnChipFixedLagStream,
+    OnChipIncrementalStream,
+    incremental_stream,
+)
 from fgc_backends.native.stream import WindowSolver
 
 STREAM_TOL = 1e-8  # double design vs simulator, tangent-space distance per variable
@@ -123,16 +127,18 @@ def test_hls_csim_fixed_lag_agrees_with_the_simulator():
 
 @pytest.mark.heavy
 def test_cli_stream_backend_hls_runs_the_c_simulation(tmp_path, capsys):
+    """``fgc stream --backend hls --incremental`` runs the on-chip design's C simulation (paper
+    A's policy: a batch step at keyframe 3) and prices it on its plan, with its resources."""
     out = tmp_path / "stream.json"
     assert main(["stream", LIO, "-p", "N=6", "--incremental", "3", "--batch-every", "3",
                  "--backend", "hls", "--json", str(out)]) == 0
     text = capsys.readouterr().out
-    assert "compiling the HLS C simulation's 3-keyframe template window" in text
-    assert "(HLS C simulation wall time)" in text and "kept on the host, not on chip" in text
-    assert "ms assumed (model estimate" in text
+    assert "the on-chip design's C simulation" in text and "kept Bayes net on chip" in text
+    assert "(model estimate, on chip)" in text and "BRAM36 (model estimate" in text
     report = json.loads(out.read_text())
     assert report["solved_by"] == "HLS C simulation" and len(report["model_estimate"]) == 6
-    assert report["csim_update_time"]["updates"] == 6
+    assert [p["mode"] for p in report["model_estimate"]].count("batch") == 1
+    assert report["on_chip_resources"]["parts"]["batch kernel"][0] > 0
 
 
 # --------------------------------------------------------------------------------------------
@@ -206,14 +212,14 @@ def test_hls_csim_fixed_lag_against_gtsam_after_every_keyframe():
 
 @pytest.mark.heavy
 def test_hls_csim_paper_a_setting_against_isam2_at_n30():
-    """Paper A's setting at its own size (LIO N = 30, K = 3, batch at 5, 15, 25, double design;
-    templates of 3, 6, 16 and 26 keyframes: about 6 min of emit and g++ on a cold cache): every
-    variable after every keyframe within 1e-6 of gtsam.ISAM2 with the same policy (measured
-    7.0e-8, keyframe 3; ``python bench/bench_stream_csim.py`` prints the table) and far from
-    plain ISAM2 (1.3e-2)."""
+    """Paper A's setting at its own size on chip (LIO N = 30, K = 3, batch at 5, 15, 25, double
+    design: the 3-keyframe window with the kept net and the 26-keyframe batch kernel, one C
+    simulation of the whole stream): every variable after every keyframe within 1e-6 of
+    gtsam.ISAM2 with the same policy (``python bench/bench_stream_csim.py`` prints the table)
+    and far from plain ISAM2."""
     graph = example("lio").build(N=30)
     program = compile_stream(graph, incremental=3, batch_every=(5, 15, 25), name="lio")
-    csim = incremental_stream(graph, program, "double").run(problem_data(graph, program))
+    csim = OnChipIncrementalStream(graph, program, "double").run(problem_data(graph, program))
     assert csim.status == "converged"
     assert [u["mode"] for u in csim.updates].count("batch") == 3
     windows = [(u["first"], u["mode"] == "batch") for u in csim.updates]

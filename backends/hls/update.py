@@ -1,8 +1,10 @@
 """A keyframe update of a stream priced on the accelerator plan (issue 19; model estimates).
 
-The emitted accelerator runs batch solves only: its incremental mode (state kept on chip between
-calls, a keyframe's measurements in, the newest clusters re-eliminated) is **not emitted** in
-C++. :class:`UpdateModel` prices what the simulator's update did (``fgc_sim_incremental``:
+The on-chip designs of a QR Program (``fgc_backends.hls.window``: the fixed-lag window, the
+incremental plan with its kept Bayes net and batch kernel) are priced by their own
+``WindowUpdateModel``. This module prices the path where no on-chip design is emitted (a
+Cholesky Program: each window solved as a batch solve, the kept net on the host):
+:class:`UpdateModel` prices what the simulator's update did (``fgc_sim_incremental``:
 ``solve_incremental`` / ``solve_fixed_lag``) as the emitted units would run it, with the loops,
 IIs and depths of :mod:`fgc_backends.hls.plan` and its operator table:
 
@@ -84,8 +86,9 @@ from fgc_backends.hls.plan import (
     state_update_phase,
 )
 
-NOT_EMITTED = ("the accelerator's on-chip incremental state is not emitted in C++: the HLS "
-               "design solves each update's window as a batch solve and the kept Bayes net "
+NOT_EMITTED = ("a Cholesky design's on-chip incremental state is not emitted in C++ (the "
+               "on-chip design, fgc_backends.hls.window, keeps the QR unit's conditionals): this "
+               "HLS design solves each update's window as a batch solve and the kept Bayes net "
                "(conditionals, marginal prior, back-substitution) lives on the host; these are "
                "model estimates of the emitted units running the update")
 MODES = ("incremental", "batch", "fixed-lag")

@@ -79,6 +79,12 @@ class WindowLayout(WindowTemplate):
             raise OnChipWindowError(f"the fixed-lag window must be a positive number of "
                                     f"keyframes, got {window!r}")
         super().__init__(graph, program, window + 1)
+        first = set(program.schedule.clusters[0])
+        if self.size > 1 and not any(set(st.frontals) == first
+                                     for st in self.template.schedule.steps):
+            # a short chain's two-ended schedule may eliminate slot 0 with its neighbour in one
+            # step: the serial order gives it its own (its marginal is that step's new factor)
+            super().__init__(graph, program, window + 1, ordering="serial")
         self.window = window
         # incremental mode: every keyframe that leaves the window is kept as its conditional
         self.kept = len(program.schedule.clusters) if kept else 0
@@ -240,12 +246,10 @@ class WindowLayout(WindowTemplate):
         in_x = max(self.n_x, b.n_x)
         in_data = max(self.n_data, b.n_data, max(len(d) for d in self.new_dest)
                       + max(len(d) for d in b.new_dest))
-        return {"in_x": in_x, "in_data": in_data, "batch": {"name": b.project, "slots": b.size, "n_x": b.n_x,
+        return {"in_x": in_x, "in_data": in_data,
+                "batch": {"name": b.project, "slots": b.size, "n_x": b.n_x,
                           "n_data": b.n_data, "new_begin": b.new_begin(),
-                          "is_batch": [int(j in keyframes) for j in range(self.kept)],
-                          "in_x": max(self.n_x, b.n_x), "in_data": max(
-                              self.n_data, b.n_data, max(len(d) for d in self.new_dest)
-                              + max(len(d) for d in b.new_dest))}}
+                          "is_batch": [int(j in keyframes) for j in range(self.kept)]}}
 
     def _kept_context(self, linear_cxx: str) -> dict:
         """The kept Bayes net's constants (incremental mode): the Log kernels, slot 0's
@@ -700,6 +704,42 @@ class WindowUpdateModel:
     def _qr_cycles(self, zero, damped, leaf_only) -> int:
         return qr_solve_cycles(self.layout.template, zero, damped, self.sets, self.les,
                                self.layout.leaf_step if leaf_only else None)
+
+    def resources(self) -> dict:
+        """The whole on-chip design's DSP and BRAM36 (model estimates): the window kernel's
+        plan, the batch kernel's (its own units: a second accelerator of the same design), and
+        the memories the stream section adds (the kept net, the batch buffers)."""
+        from fgc_backends.cost.target import capacity
+        from fgc_backends.hls.plan import Memory, plan_cost
+
+        lay = self.layout
+        window = plan_cost(self.plan)
+        dsp, bram36 = window.dsp, window.bram36
+        parts = {"window kernel": (window.dsp, window.bram36)}
+        t_bits, l_bits = self.plan.ops.word_bits, self.les.word_bits
+        mems = []
+        if lay.kept:
+            n, kf, count = lay.kf_dim, lay.kf_words, lay.kept
+            mems += [Memory("kept_r", count * n * n, l_bits, 1),
+                     Memory("kept_s", count * n * n, l_bits, 1),
+                     Memory("kept_d", count * n, l_bits, 1),
+                     Memory("kept_points", 2 * count * kf, t_bits, 1),
+                     Memory("x_kept", count * kf, t_bits, 1)]
+        if self.batch is not None:
+            bcost = plan_cost(self.batch["plan"])
+            parts["batch kernel"] = (bcost.dsp, bcost.bram36)
+            dsp += bcost.dsp
+            bram36 += bcost.bram36
+            b = self.batch["layout"]
+            mems += [Memory("batch_x", b.size * lay.kf_words, t_bits, 1),
+                     Memory("batch_cond", b.size * self.batch["words"], l_bits, 1)]
+        extra = sum(m.bram18 for m in mems) / 2
+        parts["stream memories"] = (0, extra)
+        bram36 += extra
+        device = capacity(self.plan.options.part)
+        return {"dsp": dsp, "bram36": bram36, "parts": parts,
+                "fits": dsp <= device.dsp and bram36 <= device.bram36,
+                "part": self.plan.options.part}
 
     def _kept_out_terms(self, keyframe: int) -> list:
         from fgc_backends.hls.update import Term

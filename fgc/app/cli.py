@@ -619,6 +619,13 @@ def _cmd_stream(args) -> int:
         lines.append(f"  accelerator per update (the on-chip design priced on its plan, model "
                      f"estimate): median {np.median(model):.3f} ms, p99 "
                      f"{np.percentile(model, 99):.3f} ms")
+        res = pricer.model.resources()
+        report["on_chip_resources"] = res
+        parts = ", ".join(f"{name} {d} DSP / {b:g} BRAM36" for name, (d, b) in
+                          res["parts"].items())
+        lines.append(f"  on-chip design: {res['dsp']} DSP, {res['bram36']:g} BRAM36 (model "
+                     f"estimate: {parts}); "
+                     + ("fits " if res["fits"] else "does not fit ") + res["part"])
     elif hls:
         from fgc_backends.hls.update import NOT_EMITTED
 

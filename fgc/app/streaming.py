@@ -287,14 +287,20 @@ def prefix_program(graph: Graph, program, size: int):
 
 def on_chip(program, window: int | None) -> bool:
     """Whether the HLS design runs the stream on chip (:mod:`fgc_backends.hls.window`): a QR
-    design with a fixed-lag window, or with an incremental plan of K ≥ 2 and no batch steps
-    (a batch step re-solves the whole chain, which the on-chip design does not hold)."""
+    design with a fixed-lag window, or with an incremental plan whose updates the on-chip
+    design runs (K ≥ 2: the newest K keyframes, batch steps on its batch kernel)."""
     if program.solver.linear != "qr":
         return False
     if window is not None:
         return True
-    plan = program.schedule.incremental
-    return plan is not None and not plan.batch_keyframes and plan.window >= 2
+    from fgc_backends.hls.stream import check_incremental_on_chip
+    from fgc_backends.hls.window import OnChipWindowError
+
+    try:
+        check_incremental_on_chip(program)
+    except OnChipWindowError:
+        return False
+    return True
 
 
 class WindowPricer:
@@ -307,13 +313,19 @@ class WindowPricer:
         from fgc_backends.hls.window import WindowLayout, WindowUpdateModel
 
         scalar = scalar or ("double" if program.solver.precision == "float64" else "float")
+        from fgc_backends.hls.stream import incremental_layout
+
         layout = (WindowLayout(graph, program, window) if window is not None else
-                  WindowLayout(graph, program, program.schedule.incremental.window - 1,
-                               kept=True))
+                  incremental_layout(graph, program))
         self.model = WindowUpdateModel(layout, HlsConfig(scalar=scalar))
 
     def price(self, update):
-        return self.model.price(int(update.keyframe), int(update.iterations))
+        price = self.model.price(int(update.keyframe), int(update.iterations))
+        if price.mode != update.mode or price.first != update.first:
+            raise FgcError(f"internal error: keyframe {update.keyframe} is a {update.mode} "
+                           f"update from {update.first}, the on-chip design's model prices a "
+                           f"{price.mode} one from {price.first}")
+        return price
 
 
 def update_model(graph: Graph, program, units: int | None = None, cpe: int | None = None):
