@@ -736,8 +736,10 @@ def _cmd_report(args) -> int:
     from fgc.app.design_report import design_report, figures, format_text, render_html
 
     if _streaming(args) and getattr(args, "window", None) is not None:
-        raise UsageError("fgc report: --window is a run-time mode; report the design with "
-                         "--incremental K (its plan is compiled in) or none")
+        raise UsageError("fgc report: --window is a streaming mode; fgc report prices the batch "
+                         "design (with --incremental K its plan is compiled in); the on-chip "
+                         "fixed-lag window is priced per update, with its DSP and BRAM, by fgc "
+                         "stream --backend hls [--model-only] --window W")
     graph, program, data = _compile(args, "float32")
     report = design_report(args.spec, parse_params(args.param), graph, program, data,
                            _backend("sim"), iterations=args.iterations,
