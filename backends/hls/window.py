@@ -273,7 +273,17 @@ class WindowLayout(WindowTemplate):
             t_off += v.dim
         eps = np.finfo(np.float64 if linear_cxx == "double" else np.float32).eps
         return {"kept": self.kept, "locals": locals_, "kf_vars": kf_vars,
-                "jacobian_step": HlsCodePrinter({}).literal(float(np.sqrt(eps) * 10))}
+                "jacobian_step": HlsCodePrinter({}).literal(float(np.sqrt(eps) * 10)),
+                "mv_ii": self.matvec_ii(linear_cxx)}
+
+    def matvec_ii(self, linear_cxx: str) -> int:
+        """The kept net's matrix-vector loop's II: a row's sum returns to the adder every
+        KF_T iterations, so ceil(multiply-add depth of L / KF_T)."""
+        from fgc_backends.cost.operators import table
+        from fgc_backends.hls.plan import kernel_timing
+
+        depth = kernel_timing(table("float32" if linear_cxx == "float" else "float64"))["acc"][1]
+        return max(1, -(-depth // self.kf_dim))
 
     # -- the words of the calls ------------------------------------------------------------
     def reset_words(self, estimate: dict) -> tuple[np.ndarray, np.ndarray]:
@@ -615,14 +625,19 @@ class WindowUpdateModel:
             n, kf = n_t, layout.kf_words
             move_kf = cycles(kernel_loop("x", kf, "move", kt))
             one = cycles(kernel_loop("pass", 1, "retract", kt))  # a Log or a retraction
-            dot = cycles(kernel_loop("dot", n, "acc", lt))
             divide = cycles(kernel_loop("divide", 1, "div", lt))
             difference = phase_cycles(Phase("x", False, (Process("x", "x", (
                 Loop("difference", n, 1, kt["div"][1]),)),)))
+            matvec = phase_cycles(Phase("x", False, (Process("x", "x", (Loop(
+                "matvec", n * n, layout.matvec_ii(config.linear_cxx), lt["acc"][1]),)),)))
+            scatter = cycles(kernel_loop("scatter", n, "scatter", lt))
+            move_n = cycles(kernel_loop("row", n, "move", kt))
+            columns = sum(cycles(Loop("column", i, 1, lt["acc"][1])) for i in range(1, n))
             self.kept_reexpress = (move_kf + one + n * (4 * one + difference)
-                                   + n * (n + 1) * dot + move_kf)
+                                   + matvec + scatter + n * (move_n + matvec) + move_kf)
             self.kept_store = cycles(kernel_loop("cond", n * (2 * n + 1), "move", kt)) + move_kf
-            self.kept_walk_each = one + n * dot + n * (dot + divide) + one + move_kf
+            self.kept_walk_each = (one + matvec + scatter + n * divide + columns + one
+                                   + move_kf)
             self.kept_walk_base = move_kf
 
         self.marginal = 0
