@@ -24,6 +24,7 @@ Heavy (tests/test_hls_stream_csim.py): the fixed-lag window against GTSAM at W =
 
 from __future__ import annotations
 
+import json
 from dataclasses import replace
 from pathlib import Path
 
@@ -212,3 +213,18 @@ def test_a_cholesky_incremental_plan_stays_on_the_host():
     assert on_chip(program, None)
     cholesky = replace(program, solver=replace(program.solver, linear="cholesky"))
     assert not on_chip(cholesky, None)
+
+
+def test_cli_report_incremental_prices_the_on_chip_design(tmp_path, capsys):
+    """``fgc report --incremental K``: the design fgc compile --backend hls emits for the
+    stream (the on-chip incremental design), priced per update, with its DSP and BRAM."""
+    out = tmp_path / "report.json"
+    assert main(["report", LIO, "-p", "N=5", "--incremental", "2", "--batch-every", "3",
+                 "--json", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert text.startswith("fgc report") and "kept Bayes net on chip" in text
+    assert "on-chip design:" in text and "batch kernel" in text
+    report = json.loads(out.read_text())
+    assert len(report["model_estimate"]) == 5 and report["on_chip_resources"]["dsp"] > 0
+    assert main(["report", LIO, "-p", "N=5", "--incremental", "2", "--html",
+                 str(tmp_path / "r.html")]) == 2

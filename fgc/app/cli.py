@@ -95,7 +95,7 @@ def _streaming(args) -> bool:
         raise FgcError("--model-only prices the simulator's updates on the HLS plan: it needs "
                        "--backend hls")
     if backend != "sim" and args.command != "stream" and not (
-            args.command == "compile" and backend == "hls"):
+            args.command in ("compile", "report") and backend == "hls"):
         raise FgcError(f"fgc {args.command} --backend {backend}: {HW_REFUSAL}")
     return True
 
@@ -527,12 +527,12 @@ def _newest_text(update, program) -> str:
     return ", ".join(parts) or f"{len(update.values)} variables"
 
 
-def _cmd_stream(args) -> int:
+def _cmd_stream(args, precision_default: str = "float64") -> int:
     from fgc.app import streaming
     from fgc.interop import estimates as export
     if not _streaming(args):
         raise FgcError(f"fgc {args.command} needs --incremental K or --window W")
-    graph, program, data = _stream_setup(args, "float64")
+    graph, program, data = _stream_setup(args, precision_default)
     window = getattr(args, "window", None)
     quiet = getattr(args, "quiet", False)
     n = len(program.schedule.clusters)
@@ -546,7 +546,8 @@ def _cmd_stream(args) -> int:
         if hls:
             print(_stream_hls_head(args, program, n, window, model_only), flush=True)
         else:
-            print(f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, "
+            print(f"fgc {_stream_word(args)} {args.spec}: {n} keyframes, "
+                  f"{_mode_text(program, window)}, "
                   f"{who} {program.solver.precision}; per keyframe: the accelerator plan's "
                   f"latency (model estimate: the update's iterations as batch iterations of a "
                   f"chain as long as its window; {streaming.UNPRICED} otherwise) and the "
@@ -609,7 +610,7 @@ def _cmd_stream(args) -> int:
     wall = (f"{who} update median {times['median_ms']:.2f} ms, p99 {times['p99_ms']:.2f} ms "
             "(wall time)" if times["median_ms"] == times["median_ms"]
             else f"{who}: no wall time (a C simulation's is not the accelerator's)")
-    head = (f"fgc stream {args.spec}: {result.status} over {n} keyframes; {wall}; "
+    head = (f"fgc {_stream_word(args)} {args.spec}: {result.status} over {n} keyframes; {wall}; "
             f"vs batch optimum: ATE rmse {ate.get('rmse', float('nan')):.4g} m final, "
             f"{ate_online.get('rmse', float('nan')):.4g} m online")
     lines = [head, f"  largest tangent-space distance from the batch optimum "
@@ -667,7 +668,8 @@ def _stream_hls_head(args, program, n: int, window, model_only: bool) -> str:
                 "words, and the keyframe leaving the window is eliminated on the accelerator's "
                 f"QR unit{kept}"
                 + (" (the estimate comes from the simulator)" if model_only else ""))
-        return (f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, {who}; "
+        return (f"fgc {_stream_word(args)} {args.spec}: {n} keyframes, "
+                f"{_mode_text(program, window)}, {who}; "
                 f"per keyframe: the accelerator's latency, the emitted design's plan per call "
                 f"({solver.linear.upper()}, n_u = {solver.units}, {solver.precision}, "
                 f"{solver.clock_mhz:g} MHz; model estimate), beside the estimate. {tail}")
@@ -678,7 +680,8 @@ def _stream_hls_head(args, program, n: int, window, model_only: bool) -> str:
             "Each update's window is solved by the C simulation of an emitted template window "
             "(built once); its conditionals, marginal prior and back-substitution are kept on "
             "the host, not on chip")
-    return (f"fgc stream {args.spec}: {n} keyframes, {_mode_text(program, window)}, {who}; per "
+    return (f"fgc {_stream_word(args)} {args.spec}: {n} keyframes, "
+            f"{_mode_text(program, window)}, {who}; per "
             f"keyframe: the accelerator's latency from the update model on the HLS plan "
             f"({solver.linear.upper()}, {unit}, {solver.precision}, {solver.clock_mhz:g} MHz; "
             "model estimate: the plan's terms, then the assumed ones) beside the wall time and "
@@ -735,11 +738,8 @@ def _cmd_verify_stream(args) -> int:
 def _cmd_report(args) -> int:
     from fgc.app.design_report import design_report, figures, format_text, render_html
 
-    if _streaming(args) and getattr(args, "window", None) is not None:
-        raise UsageError("fgc report: --window is a streaming mode; fgc report prices the batch "
-                         "design (with --incremental K its plan is compiled in); the on-chip "
-                         "fixed-lag window is priced per update, with its DSP and BRAM, by fgc "
-                         "stream --backend hls [--model-only] --window W")
+    if _streaming(args):
+        return _report_stream(args)
     graph, program, data = _compile(args, "float32")
     report = design_report(args.spec, parse_params(args.param), graph, program, data,
                            _backend("sim"), iterations=args.iterations,
@@ -754,6 +754,28 @@ def _cmd_report(args) -> int:
     if args.html:
         _write_text(args.html, render_html(report, figures(report)), "--html")
     return EXIT_OK
+
+
+def _stream_word(args) -> str:
+    """How a stream's output names its command: ``report`` when fgc report priced it, else
+    ``stream`` (simulate and stream run the same stream)."""
+    return "report" if getattr(args, "command", None) == "report" else "stream"
+
+
+def _report_stream(args) -> int:
+    """``fgc report --window W | --incremental K``: the design ``fgc compile --backend hls``
+    emits for the stream, priced per update on the simulator's updates (``fgc stream --backend
+    hls --model-only``): the on-chip design for a QR Program, the host-kept path's update model
+    for Cholesky; its DSP and BRAM."""
+    if getattr(args, "html", None):
+        raise UsageError("fgc report --html renders batch designs; a stream's per-update report "
+                         "is text and --json")
+    for flag in ("part", "allocation", "unit_sets", "scalar"):
+        if getattr(args, flag, None):
+            raise UsageError(f"fgc report: --{flag.replace('_', '-')} shapes the batch design; "
+                             "the stream's design is priced on the Program's own")
+    args.backend, args.model_only = "hls", True
+    return _cmd_stream(args, precision_default="float32")
 
 
 def _cmd_sweep(args) -> int:
