@@ -65,16 +65,7 @@ class _Csim:
         self._factor_words = [factor_data_words(t, spec.block) for spec in t.factors]
 
     def _data(self, x: np.ndarray, d: np.ndarray) -> ProblemData:
-        t = self.template
-        variables, pos = [], 0
-        for v in t.variables:
-            variables.append(x[pos:pos + v.storage_dim])
-            pos += v.storage_dim
-        factors, pos = [], 0
-        for n in self._factor_words:
-            factors.append(d[pos:pos + n])
-            pos += n
-        return ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint)
+        return template_data(self.template, x, d, self._factor_words)
 
     def solve(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The window's LM solve by the C simulation: (x, errors, info) in the native solver's
@@ -107,6 +98,23 @@ class _Csim:
         info = np.array([result.iterations, STATUSES.index(result.status),
                          REASONS.index(result.reason)], dtype=np.int32)
         return x_out, np.array([result.initial_error, result.final_error]), info
+
+
+def template_data(t, x: np.ndarray, d: np.ndarray, factor_words=None) -> ProblemData:
+    """The template Program ``t``'s flat storage ``x`` and factor data ``d`` as a ProblemData
+    (per variable its storage, per block instance its words; ``factor_words``: the instances'
+    word counts, if already known)."""
+    if factor_words is None:
+        factor_words = [factor_data_words(t, spec.block) for spec in t.factors]
+    variables, pos = [], 0
+    for v in t.variables:
+        variables.append(x[pos:pos + v.storage_dim])
+        pos += v.storage_dim
+    factors, pos = [], 0
+    for n in factor_words:
+        factors.append(d[pos:pos + n])
+        pos += n
+    return ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint)
 
 
 def _remove(folder: str) -> None:
@@ -386,17 +394,7 @@ def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
 
     t = layout.template
     x, d = layout.reset_words(estimate)
-    variables, pos = [], 0
-    for v in t.variables:
-        variables.append(x[pos:pos + v.storage_dim])
-        pos += v.storage_dim
-    factors, pos = [], 0
-    for spec in t.factors:
-        n = factor_data_words(t, spec.block)
-        factors.append(d[pos:pos + n])
-        pos += n
-    write_data(ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint),
-               Path(folder) / build.DATA_FILE)
+    write_data(template_data(t, x, d), Path(folder) / build.DATA_FILE)
     clusters = layout.program.schedule.clusters
     lines = [f"{STREAM_MAGIC} {t.structure_fingerprint}", f"KEYFRAMES {len(clusters)}"]
     batch = layout.batch

@@ -98,13 +98,22 @@ class WindowLayout(WindowTemplate):
         tables = {tab.name: tab.values for tab in build_tables(t, t.solver.method == "lm",
                                                                 False).arrays}
         self.tables = tables
+        index = self._read_layout(tables)
+        self._shift_tables()
+        self._leaf(tables, index)
+
+    def _read_layout(self, tables) -> dict:
+        """Where each slot's variables and each factor's words lie in the template's memories:
+        ``slot_x`` (slot s's storage words in cluster order: one keyframe's record order),
+        ``members``, ``new_dest`` (per slot the data words a keyframe entering it brings: its
+        factors ending there and its prior, ascending), the sizes. Returns each variable's
+        index by key."""
+        t = self.template
         x_off = tables["VAR_X_OFF"]
         index = {v.key: i for i, v in enumerate(t.variables)}
-        slots = self.size
-        clusters = program.schedule.clusters
-        # slot s's variables' storage words in cluster order (one keyframe's record order)
+        clusters = self.program.schedule.clusters
         self.slot_x = []
-        for s in range(slots):
+        for s in range(self.size):
             words = []
             for k in clusters[s]:
                 i = index[k]
@@ -114,8 +123,14 @@ class WindowLayout(WindowTemplate):
         self.kf_dim = self.prior_types[0][1]
         self.members = self._members(tables["FACTOR_DATA_OFF"])
         self.n_x, self.n_data = x_off[-1], tables["FACTOR_DATA_OFF"][-1]
-        self._shift_tables()
-        self._leaf(tables, index)
+        self.new_dest = []
+        for s in range(self.size):
+            words = []
+            for m in self.members:
+                if m.hi == s:
+                    words += range(m.start, m.start + m.words)
+            self.new_dest.append(sorted(words))
+        return index
 
     # -- where each factor's words lie -----------------------------------------------------
     def _members(self, data_off) -> list[Member]:
@@ -175,15 +190,6 @@ class WindowLayout(WindowTemplate):
             for k in range(m.words):
                 data_shift[m.start + k] = source.start + k
         self.x_moves, self.data_moves = _moves(x_shift), _moves(data_shift)
-        # per slot m: the data words a keyframe entering slot m brings (its factors ending at
-        # m and m's prior), ascending
-        self.new_dest = []
-        for s in range(self.size):
-            words = []
-            for m in self.members:
-                if m.hi == s:
-                    words += range(m.start, m.start + m.words)
-            self.new_dest.append(sorted(words))
 
     def _leaf(self, tables, index) -> None:
         """The elimination step of slot 0: its frontal variables slot 0's, its separator slot
@@ -388,27 +394,8 @@ class BatchLayout(WindowTemplate):
                                     "compile with --linear-solver qr")
         tables = {tab.name: tab.values for tab in build_tables(t, t.solver.method == "lm",
                                                                 False).arrays}
-        x_off = tables["VAR_X_OFF"]
-        index = {v.key: i for i, v in enumerate(t.variables)}
+        index = self._read_layout(tables)
         clusters = program.schedule.clusters
-        self.slot_x = []
-        for s in range(self.size):
-            words = []
-            for k in clusters[s]:
-                i = index[k]
-                words += range(x_off[i], x_off[i + 1])
-            self.slot_x.append(words)
-        self.kf_words = len(self.slot_x[0])
-        self.kf_dim = self.prior_types[0][1]
-        self.members = self._members(tables["FACTOR_DATA_OFF"])
-        self.n_x, self.n_data = x_off[-1], tables["FACTOR_DATA_OFF"][-1]
-        self.new_dest = []
-        for s in range(self.size):
-            words = []
-            for m in self.members:
-                if m.hi == s:
-                    words += range(m.start, m.start + m.words)
-            self.new_dest.append(sorted(words))
         # each slot's elimination step: frontal the slot, separator the next slot, in order
         t_off = tables["VAR_T_OFF"]
         self.slot_step = []
@@ -431,6 +418,7 @@ class BatchLayout(WindowTemplate):
         self.project = identifier(t.name)
 
     # the factor words and the reset are laid out as the window's
+    _read_layout = WindowLayout._read_layout
     _members = WindowLayout._members
     _member_objects = WindowLayout._member_objects
     reset_words = WindowLayout.reset_words
