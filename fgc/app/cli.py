@@ -397,9 +397,9 @@ def _compile_window(args, window: int | None) -> int:
     graph, program, data = _stream_setup(args, "float32")
     out = Path(args.out)
     try:
-        out.mkdir(parents=True, exist_ok=True)
-        (out / "program.json").write_text(program.to_json())
+        # the design first: a stream it cannot run is refused before anything is written
         project = emit_window(graph, program, window, data, out, _hls_config(args, program))
+        (out / "program.json").write_text(program.to_json())
     except OSError as exc:
         raise FgcError(f"--out {out}: cannot write the project: "
                        f"{exc.strerror or exc}{_filename(exc)}") from None
