@@ -34,7 +34,9 @@ from fgc.ir.datafile import problem_data, write_data  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends.hls import HlsConfig, emit  # noqa: E402
 from fgc_backends.hls.emitter import accel_plan  # noqa: E402
+from fgc_backends.hls.plan import PHASE_TRIGGER as TRIGGER  # noqa: E402
 from fgc_backends.hls.plan import phase_cycles  # noqa: E402
+from fgc_backends.hls.plan import phase_group as group  # noqa: E402
 
 imu_window = example("imu_window")
 lio = example("lio")
@@ -54,12 +56,6 @@ struct Dump {
     }
 } dump_at_exit;
 """
-# the plan phase group (phase_groups' names) -> what the run counts one execution of
-TRIGGER = {"setup": "call", "factor_jacobian": "linearize", "gradient": "linearize",
-           "hgc": "linearize", "qr_stack": "solve", "qr": "solve", "qr_commit": "solve",
-           "backsub": "solve", "assemble": "solve", "cholesky": "solve", "store": "solve",
-           "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
-           "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}
 
 
 def counting_run(project, graph, program, main: str) -> str:
@@ -75,12 +71,6 @@ def counting_run(project, graph, program, main: str) -> str:
                    check=True)
     return subprocess.run(["./tb_count", "data.txt", "result.txt"], cwd=folder, check=True,
                           capture_output=True, text=True).stdout
-
-
-def group(name: str) -> str:
-    """A plan phase's group: its name without the level number (qr_level3 -> qr)."""
-    head, _, tail = name.rpartition("_level")
-    return head if head and tail.isdigit() else name
 
 
 def measure(name, graph, solver, config: HlsConfig | None = None):

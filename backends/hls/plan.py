@@ -1230,7 +1230,7 @@ def phase_groups(cost: Cost) -> tuple[tuple[str, int], ...]:
     and ``qr_level4`` add up under ``qr``), in first-seen order."""
     groups: dict[str, int] = {}
     for name, cycles in cost.phase_cycles:
-        key = name.rsplit("_level", 1)[0] if name.rsplit("_level", 1)[-1].isdigit() else name
+        key = phase_group(name)
         groups[key] = groups.get(key, 0) + cycles
     return tuple(groups.items())
 
@@ -1303,3 +1303,31 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
         procs = ("cpe_feed", *(f"cpe{i}" for i in range(plan.options.cpe)), "cpe_drain")
     procs += tuple(f"backsub_set{u}" for u in range(backsub_units(plan)))
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
+
+
+# the plan phase group (a phase's name without its level number) -> the run event (FGC_EVENT in
+# accel.cpp.jinja) that executes it once: how a counting C simulation's phases are priced
+# (bench/bench_cycles.py) and how the on-chip stream's model counts a call's phases
+# (fgc_backends.hls.window)
+PHASE_TRIGGER = {"setup": "call", "factor_jacobian": "linearize", "gradient": "linearize",
+                 "hgc": "linearize", "qr_stack": "solve", "qr": "solve", "qr_commit": "solve",
+                 "backsub": "solve", "assemble": "solve", "cholesky": "solve", "store": "solve",
+                 "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
+                 "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}
+
+
+def phase_group(name: str) -> str:
+    """A plan phase's group: its name without the level number (qr_level3 -> qr)."""
+    head, _, tail = name.rpartition("_level")
+    return head if head and tail.isdigit() else name
+
+
+def plan_groups(plan: AcceleratorPlan) -> dict[str, int]:
+    """Per phase group of ``plan`` the cycles of one execution of its per-iteration and
+    per-rejection phases."""
+    group: dict[str, int] = {}
+    for ph in plan.phases:
+        if ph.per in ("iteration", "rejection"):
+            g = phase_group(ph.name)
+            group[g] = group.get(g, 0) + phase_cycles(ph)
+    return group

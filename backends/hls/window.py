@@ -37,10 +37,10 @@ import numpy as np
 
 from fgc.errors import FgcError
 from fgc.ir.datafile import factor_words
-from fgc_backends.cfamily.tables import build_tables
+from fgc_backends.hls.plan import PHASE_TRIGGER, plan_groups
 from fgc_backends.native.stream import WindowTemplate
 
-KEEP, ZERO = -1, -2  # DATA_SHIFT codes besides a source word: keep the word, write zero
+KEEP, ZERO = -1, -2  # shift codes besides a source word: keep the word, write zero
 
 
 class OnChipWindowError(FgcError):
@@ -89,15 +89,10 @@ class WindowLayout(WindowTemplate):
         # incremental mode: every keyframe that leaves the window is kept as its conditional
         self.kept = len(program.schedule.clusters) if kept else 0
         self.batch = batch  # the batch kernel's BatchLayout (incremental plans with batch steps)
-        t = self.template
-        if t.solver.linear != "qr":
-            raise OnChipWindowError(
-                "the on-chip fixed-lag window marginalises with the QR unit's new factor (paper "
-                f"A's design); {program.name!r} is compiled for Cholesky: compile it with "
-                "--linear-solver qr")
-        tables = {tab.name: tab.values for tab in build_tables(t, t.solver.method == "lm",
-                                                                False).arrays}
-        self.tables = tables
+        _check_qr(self.template, program)
+        from fgc_backends.hls.plan import _tables
+
+        tables = _tables(self.template)
         index = self._read_layout(tables)
         self._shift_tables()
         self._leaf(tables, index)
@@ -169,16 +164,24 @@ class WindowLayout(WindowTemplate):
             for dst, src in zip(self.slot_x[s], self.slot_x[s + 1], strict=True):
                 x_shift[dst] = src
         data_shift = [KEEP] * self.n_data
-        by_cells = {(m.kind, m.cells): m for m in self.members if not m.prior}
-        prior_of = {m.slots[0]: m for m in self.members if m.prior}
-        self.prior_of = prior_of
-        for m in self.members:
+        by_cells = {(m.kind, m.cells): i for i, m in enumerate(self.members) if not m.prior}
+        self.prior_of = {m.slots[0]: m for m in self.members if m.prior}
+        # per member the member a shift moves into it (the same factor one keyframe on; a
+        # prior: the next slot's), None for the newest slot's (the keyframe writes them) and a
+        # factor with no counterpart one keyframe on
+        self.next_member = [None] * len(self.members)
+        for i, m in enumerate(self.members):
+            if m.hi == last:
+                continue
+            if m.prior:
+                self.next_member[i] = self.members.index(self.prior_of[m.slots[0] + 1])
+            else:
+                self.next_member[i] = by_cells.get((m.kind, tuple((c + 1, p)
+                                                                   for c, p in m.cells)))
+        for m, nxt in zip(self.members, self.next_member, strict=True):
             if m.hi == last:
                 continue  # written by the keyframe that enters the newest slot
-            if m.prior:
-                source = prior_of[m.slots[0] + 1]
-            else:
-                source = by_cells.get((m.kind, tuple((c + 1, p) for c, p in m.cells)))
+            source = None if nxt is None else self.members[nxt]
             if source is None:  # no such factor one keyframe on: zero square-root information
                 for w in range(m.start + m.words - m.noise, m.start + m.words):
                     data_shift[w] = ZERO
@@ -196,25 +199,11 @@ class WindowLayout(WindowTemplate):
         1's in the prior's tangent order, passing at least a whole prior's rows."""
         t = self.template
         clusters = self.program.schedule.clusters
-        t_off = tables["VAR_T_OFF"]
         self.leaf_step = None
         if self.size < 2:
             return
-        for step in t.schedule.steps:
-            if set(step.frontals) == set(clusters[0]):
-                self.leaf_step = step.index
-        s = self.leaf_step
-        if s is None:
-            raise OnChipWindowError("the template's schedule does not eliminate slot 0 in a step "
-                                    "of its own: its marginal cannot be read off a unit")
-        begin = tables["STEP_COL_BEGIN"]
-        cols = tables["STEP_COL"][begin[s]:begin[s + 1]]
-        f = tables["STEP_F"][s]
-        want = [c for k in clusters[1] for c in range(t_off[index[k]], t_off[index[k] + 1])]
-        if list(cols[f:]) != want:
-            raise OnChipWindowError("the template's slot-0 step does not pass its new factor on "
-                                    "slot 1's variables in their order: the marginal cannot be "
-                                    "read off the QR unit")
+        self.leaf_step = s = _slot_step(t, clusters, tables, index, 0, self.size,
+                                        "the marginal cannot be read off the QR unit")
         rows = tables["STEP_NF_ROWS"][s]
         if rows < self.kf_dim:
             raise OnChipWindowError(f"slot 0's elimination passes {rows} rows to slot 1, fewer "
@@ -225,7 +214,6 @@ class WindowLayout(WindowTemplate):
     def context(self, linear_cxx: str) -> dict:
         """The stream section's constants and tables (accel.h.jinja / accel.cpp.jinja);
         ``linear_cxx``: the linear solver's scalar (τ's singularity threshold)."""
-        new_begin = np.cumsum([0] + [len(d) for d in self.new_dest]).tolist()
         return {"window": self.window, "slots": self.size, "kf_x": self.kf_words,
                 "kf_t": self.kf_dim,
                 "leaf_step": self.leaf_step if self.leaf_step is not None else 0,
@@ -237,7 +225,7 @@ class WindowLayout(WindowTemplate):
                 "data_moves": [w for pair in self.data_moves for w in pair],
                 "slot_x": [w for s in self.slot_x for w in s],
                 "new_dest": [w for d in self.new_dest for w in d],
-                "new_begin": new_begin,
+                "new_begin": self.new_begin(),
                 "max_new": max(len(d) for d in self.new_dest),
                 "role": "window", "in_x": self.n_x, "in_data": self.n_data,
                 **self._kept_context(linear_cxx), **self._batch_context()}
@@ -311,11 +299,20 @@ class WindowLayout(WindowTemplate):
             data[m.start:m.start + m.words] = words
         return x, data
 
+    def new_begin(self) -> list[int]:
+        """Where each slot's run of ``new_dest`` begins (and the last ends)."""
+        return np.cumsum([0] + [len(d) for d in self.new_dest]).tolist()
+
     def keyframe_words(self, j: int, x_new: np.ndarray) -> tuple[int, np.ndarray]:
         """(slot, data words) of keyframe j's call (``x_new``: its initial storage, cluster
         order): its slot's factors and prior in ``NEW_DEST`` order."""
         m = min(j, self.size - 1)
-        first = j - m
+        return m, self._slot_words(m, j - m, x_new)
+
+    def _slot_words(self, m: int, first: int, x_new: np.ndarray) -> np.ndarray:
+        """The data words a keyframe brings into slot m when slot 0 holds keyframe ``first``:
+        the graph factor of each factor ending at m (zero square-root information where the
+        stream has none) and its prior (linearised at ``x_new``, no information)."""
         members = self._member_objects()
         buf = np.zeros(self.n_data)
         for mem in self.members:
@@ -329,7 +326,7 @@ class WindowLayout(WindowTemplate):
                 words = (self._zeroed(mem.t, members[mem.t]) if index is None
                          else self._factor(index, members[mem.t]))
             buf[mem.start:mem.start + mem.words] = words
-        return m, buf[self.new_dest[m]]
+        return buf[self.new_dest[m]]
 
     def _member_objects(self) -> dict:
         if not hasattr(self, "_by_t"):
@@ -347,18 +344,11 @@ class WindowLayout(WindowTemplate):
         last = self.size - 1
         m = min(j, last)
         first = j - m
-        by_cells = {(mem.kind, mem.cells): i for i, mem in enumerate(self.members)
-                    if not mem.prior}
         if held is None:
             held = [None] * len(self.members)
         if j > last:
-            moved = [None] * len(held)
-            for i, mem in enumerate(self.members):
-                if mem.prior or mem.hi == last:
-                    continue
-                src = by_cells.get((mem.kind, tuple((c + 1, p) for c, p in mem.cells)))
-                moved[i] = None if src is None else held[src]
-            held = moved
+            held = [None if mem.prior or src is None else held[src]
+                    for mem, src in zip(self.members, self.next_member, strict=True)]
         for i, mem in enumerate(self.members):
             if not mem.prior and mem.hi == m:
                 held[i] = self.by_signature.get((mem.kind, tuple((c + first, p)
@@ -389,42 +379,25 @@ class BatchLayout(WindowTemplate):
         self.window = size - 1
         self.keyframes = tuple(keyframes)
         t = self.template
-        if t.solver.linear != "qr":
-            raise OnChipWindowError("the on-chip batch kernel keeps the QR unit's conditionals: "
-                                    "compile with --linear-solver qr")
-        tables = {tab.name: tab.values for tab in build_tables(t, t.solver.method == "lm",
-                                                                False).arrays}
+        _check_qr(t, program)
+        from fgc_backends.hls.plan import _tables
+
+        tables = _tables(t)
         index = self._read_layout(tables)
         clusters = program.schedule.clusters
         # each slot's elimination step: frontal the slot, separator the next slot, in order
-        t_off = tables["VAR_T_OFF"]
-        self.slot_step = []
-        begin = tables["STEP_COL_BEGIN"]
-        for s in range(self.size):
-            step = next((st for st in t.schedule.steps if set(st.frontals) == set(clusters[s])),
-                        None)
-            if step is None:
-                raise OnChipWindowError(f"the batch template does not eliminate keyframe {s} in "
-                                        "a step of its own")
-            cols = tables["STEP_COL"][begin[step.index]:begin[step.index + 1]]
-            f = tables["STEP_F"][step.index]
-            want = [c for k in clusters[s + 1] for c in range(t_off[index[k]],
-                                                                t_off[index[k] + 1])] \
-                if s + 1 < self.size else []
-            if list(cols[f:]) != want:
-                raise OnChipWindowError(f"the batch template's step of keyframe {s} is not "
-                                        "conditioned on the next keyframe alone, in order")
-            self.slot_step.append(step.index)
+        self.slot_step = [_slot_step(t, clusters, tables, index, s, self.size,
+                                     "the batch kernel cannot keep its conditional")
+                          for s in range(self.size)]
         self.project = identifier(t.name)
 
     # the factor words and the reset are laid out as the window's
     _read_layout = WindowLayout._read_layout
     _members = WindowLayout._members
     _member_objects = WindowLayout._member_objects
+    _slot_words = WindowLayout._slot_words
     reset_words = WindowLayout.reset_words
-
-    def new_begin(self) -> list[int]:
-        return np.cumsum([0] + [len(d) for d in self.new_dest]).tolist()
+    new_begin = WindowLayout.new_begin
 
     def context(self, linear_cxx: str) -> dict:
         """The batch kernel's section (accel.cpp.jinja, role "batch")."""
@@ -437,19 +410,33 @@ class BatchLayout(WindowTemplate):
 
     def keyframe_words(self, j: int, x_new: np.ndarray) -> np.ndarray:
         """Keyframe j's words for slot j (j < size)."""
-        members = self._member_objects()
-        buf = np.zeros(self.n_data)
-        for mem in self.members:
-            if mem.hi != j:
-                continue
-            if mem.prior:
-                words = np.concatenate([x_new, self._unused[j]])
-            else:
-                index = self.by_signature.get((mem.kind, mem.cells))
-                words = (self._zeroed(mem.t, members[mem.t]) if index is None
-                         else self._factor(index, members[mem.t]))
-            buf[mem.start:mem.start + mem.words] = words
-        return buf[self.new_dest[j]]
+        return self._slot_words(j, 0, x_new)
+
+
+def _check_qr(t, program) -> None:
+    if t.solver.linear != "qr":
+        raise OnChipWindowError(
+            "the on-chip design marginalises and keeps conditionals with the QR unit's rows "
+            f"(paper A's design); {program.name!r} is compiled for Cholesky: compile it with "
+            "--linear qr")
+
+
+def _slot_step(t, clusters, tables, index, s: int, size: int, why: str) -> int:
+    """The elimination step of template ``t`` (``size`` slots) whose frontal variables are slot
+    s's and whose separator is slot s + 1's, in their tangent order (none for the last slot):
+    its index, or :class:`OnChipWindowError` naming ``why`` it is needed."""
+    step = next((st for st in t.schedule.steps if set(st.frontals) == set(clusters[s])), None)
+    if step is None:
+        raise OnChipWindowError(f"the template's schedule does not eliminate slot {s} in a "
+                                f"step of its own: {why}")
+    t_off, begin = tables["VAR_T_OFF"], tables["STEP_COL_BEGIN"]
+    cols = tables["STEP_COL"][begin[step.index]:begin[step.index + 1]]
+    want = ([c for k in clusters[s + 1] for c in range(t_off[index[k]], t_off[index[k] + 1])]
+            if s + 1 < size else [])
+    if list(cols[tables["STEP_F"][step.index]:]) != want:
+        raise OnChipWindowError(f"the template's step of slot {s} is not conditioned on slot "
+                                f"{s + 1}'s variables alone, in their order: {why}")
+    return step.index
 
 
 def _moves(shift: list[int]) -> list[tuple[int, int]]:
@@ -481,20 +468,8 @@ def pos_total(members: list[Member]) -> int:
     return members[-1].start + members[-1].words if members else 0
 
 
-# the plan phase group (its name without the level number) -> the run event that executes it
-# once (FGC_EVENT in accel.cpp.jinja; bench/bench_cycles.py counts the same way)
-PHASE_TRIGGER = {"factor_jacobian": "linearize", "gradient": "linearize", "qr_stack": "solve",
-                 "qr": "solve", "qr_commit": "solve", "backsub": "solve",
-                 "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
-                 "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}
 STREAM_SOURCE = ("accelerator plan of the emitted on-chip fixed-lag window "
                  "(fgc_backends.hls.window; model estimate)")
-
-
-def phase_group(name: str) -> str:
-    """A plan phase's group: its name without the level number (qr_level3 -> qr)."""
-    head, _, tail = name.rpartition("_level")
-    return head if head and tail.isdigit() else name
 
 
 def qr_solve_cycles(t, zero: frozenset, damped: bool, sets: int, les, leaf=None) -> int:
@@ -534,19 +509,6 @@ def qr_solve_cycles(t, zero: frozenset, damped: bool, sets: int, les, leaf=None)
     return total
 
 
-def plan_groups(plan) -> dict:
-    """Per phase group of ``plan`` (its name without the level number) the cycles of one
-    execution of its per-iteration and per-rejection phases."""
-    from fgc_backends.hls.plan import phase_cycles
-
-    group: dict[str, int] = {}
-    for ph in plan.phases:
-        if ph.per in ("iteration", "rejection"):
-            g = phase_group(ph.name)
-            group[g] = group.get(g, 0) + phase_cycles(ph)
-    return group
-
-
 class WindowUpdateModel:
     """The price of each call of the on-chip fixed-lag window's design
     (``<name>_stream``): the accelerator plan of the emitted template
@@ -560,7 +522,6 @@ class WindowUpdateModel:
 
     def __init__(self, layout: WindowLayout, config):
         from fgc_backends.cost.operators import table
-        from fgc_backends.cost.structure import stacked_pattern
         from fgc_backends.hls.emitter import accel_plan, for_program
         from fgc_backends.hls.plan import (
             Loop,
@@ -572,8 +533,8 @@ class WindowUpdateModel:
             kernel_timing,
             phase_cycles,
             plan_sizes,
-            qr_unit_loops,
             stack_loops,
+            unit_sets,
         )
 
         self.layout = layout
@@ -581,11 +542,7 @@ class WindowUpdateModel:
         config = for_program(t, config)
         self.plan = plan = accel_plan(t, config)
         self.clock_mhz = plan.clock_mhz
-        self.group = {}
-        for ph in plan.phases:
-            if ph.per in ("iteration", "rejection"):
-                g = phase_group(ph.name)
-                self.group[g] = self.group.get(g, 0) + phase_cycles(ph)
+        self.group = plan_groups(plan)
         kt = kernel_timing(plan.ops)
         les = table("float32" if config.linear_cxx == "float" else "float64")
         lt = kernel_timing(les)
@@ -596,8 +553,6 @@ class WindowUpdateModel:
         ctx = layout.context(config.linear_cxx)
         self.layout_marginal = ctx["marginal"]
         self.les, self._held, self._qr = les, [], {}
-        from fgc_backends.hls.plan import unit_sets
-
         self.sets = max(1, unit_sets(plan))
         if self.qr_cycles(frozenset(), True) != self.group["qr"]:
             raise OnChipWindowError("internal error: the model's QR steps are not the plan's")
@@ -628,33 +583,24 @@ class WindowUpdateModel:
                                    + move_kf)
             self.kept_walk_base = move_kf
 
+        # the marginalisation but its QR step (priced per update on its non-zero rows): the
+        # linearisation, slot 0's stack and commit, NF's rows copied, write_tau
         self.marginal = 0
         if ctx["marginal"]:
             s = layout.leaf_step
             tables = _tables(t)
-            damping = t.solver.method == "lm"
-            step = t.schedule.steps[s]
-            qr = phase_cycles(Phase("leaf", True, (Process("leaf", "qr", tuple(qr_unit_loops(
-                stacked_pattern(t, step, damping), step.frontal_dim, max(1, t.solver.units),
-                les, name="leaf"))),)))
-            stack = cycles(*stack_loops(tables, s, max(1, t.solver.units),
-                                        plan_sizes(t)["MAX_W"], damping, kt))
-            commit = cycles(*commit_loops(tables, s, kt, False))
             self.write_tau = cycles(kernel_loop("sign", n_t * (n_t + 1), "max", kt),
                                     kernel_loop("mean", n_t * (n_t - 1) // 2, "acc", lt),
                                     kernel_loop("divide", n_t, "div", lt),
                                     kernel_loop("tau_out", layout.kf_words + n_t
                                                 + n_t * (n_t + 1) // 2 + 2, "move", kt))
-            tail = cycles(kernel_loop("rows", n_t * (n_t + 1), "move", kt),
-                          kernel_loop("sign", n_t * (n_t + 1), "max", kt),
-                          kernel_loop("mean", n_t * (n_t - 1) // 2, "acc", lt),
-                          kernel_loop("divide", n_t, "div", lt),
-                          kernel_loop("tau_out", layout.kf_words + n_t + n_t * (n_t + 1) // 2
-                                      + 2, "move", kt))
-            self.marginal_parts = {"linearize": self.group["factor_jacobian"]
-                                   + self.group["gradient"],
-                                   "stack": stack, "qr": qr, "commit": commit, "tau": tail}
-            self.marginal = sum(self.marginal_parts.values())  # every row non-zero (a bound)
+            self.marginal = (self.group["factor_jacobian"] + self.group["gradient"]
+                             + cycles(*stack_loops(tables, s, max(1, t.solver.units),
+                                                   plan_sizes(t)["MAX_W"],
+                                                   t.solver.method == "lm", kt))
+                             + cycles(*commit_loops(tables, s, kt, False))
+                             + cycles(kernel_loop("rows", n_t * (n_t + 1), "move", kt))
+                             + self.write_tau)
         self.batch = None
         if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
             b = layout.batch
@@ -701,12 +647,10 @@ class WindowUpdateModel:
         step alone on unit set 0 (the marginalisation)."""
         key = (zero, damped, leaf_only)
         if key not in self._qr:
-            self._qr[key] = self._qr_cycles(zero, damped, leaf_only)
+            self._qr[key] = qr_solve_cycles(self.layout.template, zero, damped, self.sets,
+                                            self.les,
+                                            self.layout.leaf_step if leaf_only else None)
         return self._qr[key]
-
-    def _qr_cycles(self, zero, damped, leaf_only) -> int:
-        return qr_solve_cycles(self.layout.template, zero, damped, self.sets, self.les,
-                               self.layout.leaf_step if leaf_only else None)
 
     def resources(self) -> dict:
         """The whole on-chip design's DSP and BRAM36 (model estimates): the window kernel's
@@ -856,8 +800,7 @@ class WindowUpdateModel:
                                       " (on its rows non-zero in this update)" if g == "qr"
                                       else "")))
         if m == lay.window and self.marginal:
-            marginal = (self.marginal - self.marginal_parts["qr"]
-                        + self.qr_cycles(zero, False, leaf_only=True))
+            marginal = self.marginal + self.qr_cycles(zero, False, leaf_only=True)
             terms.append(Term("marginal", marginal, 1, False,
                               "keyframe leaving: the window linearised at its optimum, slot 0's "
                               "QR step at μ = 0 on unit set 0, τ's signs, mean and words"))
