@@ -52,11 +52,19 @@ def make(project: HlsProject, target: str) -> str:
     """Run ``make -s <target>`` in the project folder; returns its standard output."""
     if target not in ("csim", "clean"):
         raise ValueError(f"unknown make target {target!r}")
+    return run_command(project, ["make", "-s", target], f"make {target}")
+
+
+def run_command(project: HlsProject, args: list[str], what: str) -> str:
+    """Run ``args`` in the project folder (a build or the built testbench, at most
+    BUILD_TIMEOUT_S); returns its standard output. A failure writes the output to BUILD_LOG
+    and raises :class:`HlsMismatchError` if the testbench printed a MISMATCH line (it built and
+    ran: its check against the reference said no), else :class:`HlsBuildError`."""
     try:
-        done = subprocess.run(["make", "-s", target], cwd=project.directory, capture_output=True,
-                              text=True, timeout=BUILD_TIMEOUT_S, check=False)
+        done = subprocess.run(args, cwd=project.directory, capture_output=True, text=True,
+                              timeout=BUILD_TIMEOUT_S, check=False)
     except subprocess.TimeoutExpired:
-        raise HlsBuildError(f"make {target} in {project.directory} took over "
+        raise HlsBuildError(f"{what} in {project.directory} took over "
                             f"{BUILD_TIMEOUT_S} s") from None
     if done.returncode != 0:
         log = project.directory / BUILD_LOG
@@ -64,10 +72,10 @@ def make(project: HlsProject, target: str) -> str:
         mismatch = next((line for line in done.stderr.splitlines()
                          if line.startswith("MISMATCH: ")), None)
         if mismatch is not None:  # it built and ran: the testbench's check said no (exit 4)
-            raise HlsMismatchError(f"make {target} failed: the C simulation's result differs "
+            raise HlsMismatchError(f"{what} failed: the C simulation's result differs "
                                    f"from the reference ({REFERENCE_FILE}): "
                                    f"{mismatch[len('MISMATCH: '):]}; full output in {log}")
-        raise HlsBuildError(f"internal error: make {target} failed (exit {done.returncode}) on "
+        raise HlsBuildError(f"internal error: {what} failed (exit {done.returncode}) on "
                             f"the project fgc generated (a bug in fgc if the build failed); "
                             f"full output in {log}")
     return done.stdout

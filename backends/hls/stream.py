@@ -45,22 +45,8 @@ class _Csim:
     folder if None), built on the first :meth:`solve`."""
 
     def _emit_csim(self, scalar: str, out_dir) -> None:
-        from fgc_backends.hls.config import HlsConfig
-        from fgc_backends.hls.emitter import HlsProject
-
-        if out_dir is None:
-            tmp = tempfile.mkdtemp(prefix="fgc-hls-stream-")
-            weakref.finalize(self, _remove, tmp)
-            out_dir = tmp
         self.scalar = scalar
-        config = HlsConfig(scalar=scalar)
-        self._cached = _cached_project(self.template, config)
-        work = Path(out_dir) / f"window{self.size}"
-        shutil.rmtree(work, ignore_errors=True)
-        shutil.copytree(self._cached.directory, work)  # its mtimes too: a built one stays built
-        self.project = HlsProject(work, self._cached.name,
-                                  tuple(work / f.name for f in self._cached.files), config)
-        self._built = (self._cached.directory / _BUILT).is_file()
+        _working_copy(self, scalar, out_dir, f"window{self.size}")
         t = self.template
         self._factor_words = [factor_data_words(t, spec.block) for spec in t.factors]
 
@@ -115,6 +101,28 @@ def template_data(t, x: np.ndarray, d: np.ndarray, factor_words=None) -> Problem
         factors.append(d[pos:pos + n])
         pos += n
     return ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint)
+
+
+def _working_copy(owner, scalar: str, out_dir, name: str, stream=None) -> None:
+    """``owner.project``: a copy, in ``out_dir`` (a private temporary folder if None, removed
+    with ``owner``), of ``owner.template``'s project from the cache (:func:`_cached_project`,
+    with ``stream``'s on-chip design), its mtimes too: a built one stays built; ``owner._cached``
+    and ``owner._built`` say where it came from and whether it is built."""
+    from fgc_backends.hls.config import HlsConfig
+    from fgc_backends.hls.emitter import HlsProject
+
+    if out_dir is None:
+        tmp = tempfile.mkdtemp(prefix="fgc-hls-stream-")
+        weakref.finalize(owner, _remove, tmp)
+        out_dir = tmp
+    config = HlsConfig(scalar=scalar)
+    owner._cached = _cached_project(owner.template, config, stream)
+    work = Path(out_dir) / name
+    shutil.rmtree(work, ignore_errors=True)
+    shutil.copytree(owner._cached.directory, work)
+    owner.project = HlsProject(work, owner._cached.name,
+                               tuple(work / f.name for f in owner._cached.files), config)
+    owner._built = (owner._cached.directory / _BUILT).is_file()
 
 
 def _remove(folder: str) -> None:
@@ -225,59 +233,31 @@ class OnChipFixedLagStream:
 
     def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None,
                  layout=None):
-        from fgc_backends.hls.config import HlsConfig
-        from fgc_backends.hls.emitter import HlsProject
         from fgc_backends.hls.window import WindowLayout
 
         self.layout = layout or WindowLayout(graph, program, window, kept=self.kept)
         self.program, self.window, self.scalar = program, window, scalar
         self.template = self.layout.template
-        if out_dir is None:
-            tmp = tempfile.mkdtemp(prefix="fgc-hls-window-")
-            weakref.finalize(self, _remove, tmp)
-            out_dir = tmp
-        config = HlsConfig(scalar=scalar)
-        self._cached = _cached_project(self.template, config, self.layout)
-        work = Path(out_dir) / f"window{window}_onchip{'_kept' if self.kept else ''}"
-        shutil.rmtree(work, ignore_errors=True)
-        shutil.copytree(self._cached.directory, work)
-        self.project = HlsProject(work, self._cached.name,
-                                  tuple(work / f.name for f in self._cached.files), config)
-        self._built = (self._cached.directory / _BUILT).is_file()
-
-    def _write_inputs(self, data: ProblemData, estimate: dict) -> int:
-        return write_stream_inputs(self.layout, estimate, self.project.directory)
+        _working_copy(self, scalar, out_dir,
+                      f"window{window}_onchip{'_kept' if self.kept else ''}", self.layout)
 
     def run(self, data: ProblemData, progress=None):
         """Stream ``data``'s keyframes through the C simulation; a
         :class:`~fgc_backends.native.stream.NativeStreamResult` with the fixed-lag records
         (``seconds``: NaN — a C simulation's wall time is not the accelerator's; its latency is
         the update model's)."""
-        import subprocess
-
         from fgc_backends.hls import build
         from fgc_backends.hls.window import OnChipWindowError
         from fgc_backends.native.stream import _Stream
 
         stream = _Stream(self.program)
         estimate = stream._start(data)
-        count = self._write_inputs(data, estimate)
         folder = self.project.directory
+        count = write_stream_inputs(self.layout, estimate, folder)
         exe = f"tb_{self.project.name}"
-        for args in (["make", "-s", exe],
-                     [f"./{exe}", "--stream", build.DATA_FILE, STREAM_FILE, STREAM_RESULT_FILE]):
-            try:
-                done = subprocess.run(args, cwd=folder, capture_output=True, text=True,
-                                      timeout=build.BUILD_TIMEOUT_S, check=False)
-            except subprocess.TimeoutExpired:
-                raise build.HlsBuildError(f"{' '.join(args)} in {folder} took over "
-                                          f"{build.BUILD_TIMEOUT_S} s") from None
-            if done.returncode != 0:
-                log = folder / build.BUILD_LOG
-                log.write_text(done.stdout + done.stderr)
-                raise build.HlsBuildError(f"internal error: {' '.join(args)} failed (exit "
-                                          f"{done.returncode}) on the project fgc generated; "
-                                          f"full output in {log}")
+        build.run_command(self.project, ["make", "-s", exe], f"make {exe}")
+        build.run_command(self.project, [f"./{exe}", "--stream", build.DATA_FILE, STREAM_FILE,
+                                         STREAM_RESULT_FILE], f"{exe} --stream")
         if not self._built:
             _keep_build(self.project, self._cached.directory)
             self._built = True
