@@ -743,7 +743,7 @@ class WindowUpdateModel:
                           "optimum scattered to the kept memory and the window"))
         if j >= lay.window:
             kept = j - lay.window + 1
-            terms.append(Term("batch_kept", move(kept * words) + move(kept * kf)
+            terms.append(Term("batch_kept", kept * move(words) + move(kept * kf)
                               + self.write_tau, 1, False,
                               f"the kept net rebuilt: keyframes 0 … {j - lay.window}'s "
                               "conditionals and points, τ written for the next window"))
