@@ -2,7 +2,7 @@
 
 Each example (examples/*.py, pose_graph on both of its datasets) in double with QR and with
 Cholesky, and in float with QR: double must agree with the float64 simulator within 1e-9
-relative (tests/test_hls_csim.py's measure), float within 1 cm / 1 mrad / 1e-2.
+relative (tests/hls/test_hls_csim.py's measure), float within 1 cm / 1 mrad / 1e-2.
 
     FGC_CACHE_DIR=... python bench/bench_hls_examples.py [example:linear:scalar ...]
 """

@@ -9,7 +9,7 @@ computes for both orderings. Times: fgc's whole ``schedule()`` call against ``Or
 Run:  python bench/bench_ordering.py [--large]   (--large adds w10000.graph)
 
 The helpers here (``load_*``, ``structure_from_gtsam``, ``gtsam_fill``) are reused by
-``tests/test_schedule.py``.
+``tests/compiler/test_schedule.py``.
 """
 
 from __future__ import annotations

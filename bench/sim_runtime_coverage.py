@@ -7,7 +7,7 @@ lines executed in any copy to the package source of the same name (a copy has th
 numbers: it is the same bytes) and reports the coverage of the sources.
 
     pip install coverage          # not among the test extras
-    python bench/sim_runtime_coverage.py [--tests tests/test_sim.py ...] [--show-missing]
+    python bench/sim_runtime_coverage.py [--tests tests/sim/test_sim.py ...] [--show-missing]
 
 Tests that run a simulator in a subprocess (``in_process=False``, the emitted program's command
 line) are not traced, so the number is a lower bound.
@@ -23,8 +23,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 RUNTIME = ROOT / "backends" / "sim" / "runtime"
-SIM_TESTS = ("tests/test_sim.py", "tests/test_sim_gtsam.py", "tests/test_float32.py",
-             "tests/test_stream.py", "tests/test_marginals.py")
+SIM_TESTS = ("tests/sim/test_sim.py", "tests/sim/test_sim_gtsam.py", "tests/sim/test_float32.py",
+             "tests/app/test_stream.py", "tests/sim/test_marginals.py")
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,5 +1,5 @@
 """A Pose2 loop: n poses on a circle of radius 3 m, noisy odometry closing the loop, a prior on
-pose 0; the fixed-point example (tests/test_native_fixed.py, bench/bench_fixed.py).
+pose 0; the fixed-point example (tests/native/test_native_fixed.py, bench/bench_fixed.py).
 
     fgc run examples/pose2_loop.py --backend native --scalar "ap_fixed<64,35>"
     python bench/bench_fixed.py      # ap_fixed<40,16> with LM's damping bound lowered to 1e4

@@ -1,10 +1,10 @@
 """Pure-NumPy reference of GTSAM 4.3's ``CombinedImuFactor`` error, plus a KITTI IMU log reader.
 
 This file is the *spec* fgc's symbolic IMU factor implements: every formula is a short composition
-of Exp / Log / Jr⁻¹ / matrix products, and ``tests/test_preintegration.py`` checks it against
-``gtsam.CombinedImuFactor.unwhitenedError`` (and ``evaluateError``) to 1e-9 in both of GTSAM 4.3's
-error modes (``ImuFactorErrorMode.Logmap``, the default, and ``ImuFactorErrorMode.ComponentWise``).
-``docs/imu.md`` has the same formulas in math notation.
+of Exp / Log / Jr⁻¹ / matrix products, and ``tests/frontend/test_preintegration.py`` checks it
+against ``gtsam.CombinedImuFactor.unwhitenedError`` (and ``evaluateError``) to 1e-9 in both of
+GTSAM 4.3's error modes (``ImuFactorErrorMode.Logmap``, the default, and
+``ImuFactorErrorMode.ComponentWise``). ``docs/imu.md`` has the same formulas in math notation.
 
 The error is unwhitened, 15 rows: [rotation (3), position (3), velocity (3), bias_acc (3),
 bias_gyro (3)]. GTSAM whitens it with ``pim.residual_covariance()``.

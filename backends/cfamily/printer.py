@@ -25,7 +25,7 @@ from fgc.frontend.geometry import special
 
 # one C++ wrapper per function of the DSL's whitelist (fgc.frontend.functions.FUNCTIONS) and per
 # function
-# its derivatives introduce (sign, from Abs); tests/test_functions.py prints each
+# its derivatives introduce (sign, from Abs); tests/frontend/test_functions.py prints each
 _FUNCTIONS = {sp.sin: "fgc_sin", sp.cos: "fgc_cos", sp.tan: "fgc_tan", sp.atan2: "fgc_atan2",
               sp.atan: "fgc_atan", sp.exp: "fgc_exp", sp.log: "fgc_log", sp.asin: "fgc_asin",
               sp.acos: "fgc_acos", sp.tanh: "fgc_tanh", sp.Abs: "fgc_abs", sp.sign: "fgc_sign"}

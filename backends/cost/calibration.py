@@ -2,7 +2,7 @@
 
 Paper B (docs/design.md) reports whole-solve latencies of its IMU-window accelerator (ZC706,
 143 MHz, float32) and Vivado power estimates of three built designs. Paper A reports the
-two-ended over serial speed-up on the LIO chain. ``tests/test_cost.py`` checks the model against
+two-ended over serial speed-up on the LIO chain. ``tests/hls/test_cost.py`` checks the model against
 them within the tolerances below; ``bench/bench_cost_model.py`` prints the comparison.
 
 **Iterations.** Paper B replaces VINS-Fusion's Ceres back end, whose EuRoC configurations cap the

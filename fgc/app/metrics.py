@@ -1,7 +1,7 @@
 """Trajectory metrics: TUM export, absolute trajectory error (ATE) and relative pose error (RPE).
 
 The definitions are evo's (``evo`` 1.38, Grupp 2017), so numbers can be quoted side by side with
-``evo_ape`` / ``evo_rpe``; ``tests/test_metrics.py`` compares against evo itself (a test
+``evo_ape`` / ``evo_rpe``; ``tests/app/test_metrics.py`` compares against evo itself (a test
 dependency, ``fgc[test]``; not a runtime dependency of fgc):
 
 - **TUM format**: one line per pose, ``timestamp tx ty tz qx qy qz qw`` (Hamilton unit quaternion,

@@ -2,11 +2,11 @@
 
 Every function here works on floats (``math``) and on the symbolic values a residual is traced
 with (sympy), and every backend prints it and the functions its derivative introduces (``sign``
-from ``abs``): the simulator's NumPy printer and the HLS C++ printer (tests/test_functions.py
-prints each with both). :func:`check_residual` runs once per factor type, right after tracing
-(:meth:`fgc.frontend.dsl.FactorType.trace`), so a function no backend can emit is refused there,
-naming
-the factor, the function and the alternative, instead of failing at ``--backend hls``.
+from ``abs``): the simulator's NumPy printer and the HLS C++ printer
+(tests/frontend/test_functions.py prints each with both). :func:`check_residual` runs once per
+factor type, right after tracing (:meth:`fgc.frontend.dsl.FactorType.trace`), so a function no
+backend can emit is refused there, naming the factor, the function and the alternative, instead
+of failing at ``--backend hls``.
 
 Powers: ``x**k`` for integer or half-integer ``k`` with -7 <= k <= 8 (so a Jacobian's
 ``x**(k-1)`` still prints as multiplies and at most one square root); a float exponent that is

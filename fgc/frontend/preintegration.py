@@ -6,8 +6,8 @@ its Jacobians with respect to the accelerometer and gyroscope bias, and a 15×15
 [θ, p, v, b_acc, b_gyro]. The update equations, the bias correction, the prediction and the two
 residual charts of GTSAM 4.3's ``CombinedImuFactor`` are written down in ``docs/imu.md``.
 
-fgc never calls GTSAM here; ``tests/test_preintegration.py`` checks every quantity against GTSAM
-4.3.0 on the KITTI IMU log shipped in the gtsam wheel.
+fgc never calls GTSAM here; ``tests/frontend/test_preintegration.py`` checks every quantity
+against GTSAM 4.3.0 on the KITTI IMU log shipped in the gtsam wheel.
 """
 
 from __future__ import annotations

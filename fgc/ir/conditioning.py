@@ -23,7 +23,7 @@ lio N=30 32 and N=100 55 stay within 1e-4 m and 3e-6 rad with both solvers; the 
 errs by 3.5e-3 m, 6.9e-2 m and 0.13 m — past the 1 cm bound exactly where κ crosses 1/√eps32,
 which is where fgc starts to warn. (With numpy 2.4.6, float32 Cholesky at N = 20 no longer
 stops: its cost falls below its own rounding noise and it runs to max_iterations, 5.5 mm off —
-reported as not converged; ``tests/test_sim_gtsam.py``.)
+reported as not converged; ``tests/sim/test_sim_gtsam.py``.)
 The raw κ (no equilibration) and the cheaper ratio max|R_ii|/min|R_ii| do not separate these
 cases (both rank w100 and lio above imu N=20).
 """

@@ -19,7 +19,7 @@ from fgc.app.solve import linearize, optimize
 from fgc.errors import FgcError
 from fgc.interop.to_gtsam import to_gtsam
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 TOL = 1e-9
 
 

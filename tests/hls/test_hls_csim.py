@@ -35,7 +35,7 @@ imu_window = example("imu_window")
 lio = example("lio")
 pose_graph = example("pose_graph")
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 F64_TOL = 1e-9

@@ -12,7 +12,7 @@ import pytest
 from fgc.app.cli import EXIT_BAD_INPUT, EXIT_OK, build_parser, main
 from fgc.app.design_report import Section, format_table, render_html
 
-EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 POSE3 = [str(EXAMPLES / "pose_graph.py"), "-p", "dataset=pose3example.txt"]
 COMMANDS = ("compile", "simulate", "verify", "run", "report", "sweep")
 

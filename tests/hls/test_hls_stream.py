@@ -9,7 +9,7 @@ units, a wider window, more iterations or a longer kept Bayes net are never chea
 terms are labelled and kept out of the plan's latency. Pricing needs no simulator run: updates
 are given by their keyframe, mode, first cluster and iterations. The command-line cases run
 ``--model-only`` (the simulator's updates, priced); the C simulation solving each update is
-tests/test_hls_stream_csim.py.
+tests/hls/test_hls_stream_csim.py.
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from fgc_backends.hls.update import NOT_EMITTED, UpdateModel, UpdateModelError
 
 lio = example("lio")
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 LIO = str(ROOT / "examples" / "lio.py")
 
 

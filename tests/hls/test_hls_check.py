@@ -183,7 +183,7 @@ def test_fgc_compile_writes_the_reference_beside_the_data(tmp_path):
 
     from fgc.app.cli import main
 
-    spec = str(Path(__file__).resolve().parent.parent / "examples" / "range_beacons.py")
+    spec = str(Path(__file__).resolve().parents[2] / "examples" / "range_beacons.py")
     out = tmp_path / "prj"
     assert main(["compile", spec, "--backend", "hls", "--scalar", "double", "--out",
                  str(out), "-q"]) == 0

@@ -24,7 +24,7 @@ from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
 from fgc_backends import sim
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 from fgc.app.specs import example  # noqa: E402
 

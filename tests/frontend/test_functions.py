@@ -25,7 +25,7 @@ from fgc_backends import native, sim
 from fgc_backends.cfamily.printer import print_kernel
 from fgc_backends.sim.printer import SimPrinter
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 # the kernel templates (the native backend's; the HLS backend renders them too for now)
 TEMPLATES = ROOT / "backends" / "native" / "templates"
 X, Y = sp.symbols("x y", real=True)

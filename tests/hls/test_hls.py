@@ -39,7 +39,7 @@ from fgc_backends.hls.lint import lint_files
 
 pose_graph = example("pose_graph")
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 EVIL = 'ev"il*/ \n#include <stdio.h>\r[exec rm -rf x] $HOME ${X} \\ `id` \x07 é /* '

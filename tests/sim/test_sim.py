@@ -33,7 +33,7 @@ from fgc_backends.sim import types as sim_types
 from fgc_backends.sim.printer import SimPrinter
 from fgc_backends.sim.runtime import fgc_sim_runtime, fgc_sim_special
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 from fgc.app.specs import example  # noqa: E402
 

@@ -33,7 +33,7 @@ from fgc_backends.hls import HlsConfig
 lio = example("lio")
 pose_graph = example("pose_graph")
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 

@@ -239,7 +239,7 @@ def test_native_incremental_agrees_with_the_simulator_after_every_keyframe(incre
 
 
 def test_native_incremental_matches_isam2_with_the_same_policy(incremental8):
-    """As the simulator's test does (tests/test_sim_gtsam.py): ISAM2 fed the same factors
+    """As the simulator's test does (tests/sim/test_sim_gtsam.py): ISAM2 fed the same factors
     keyframe by keyframe, the keyframes before the window held, the factors across its edge
     kept linear; every variable after every keyframe within 1e-6."""
     graph, program, _, _, _, _, native = incremental8

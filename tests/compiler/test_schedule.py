@@ -29,7 +29,7 @@ from fgc.compiler.schedule import (
 )
 from fgc.errors import FgcError, StructureError
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _load_bench():

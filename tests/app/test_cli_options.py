@@ -17,7 +17,7 @@ import pytest
 import fgc
 from fgc.app.cli import derive_with_progress, main
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 BEACONS = str(ROOT / "examples" / "range_beacons.py")
 
 

@@ -19,7 +19,7 @@ from fgc.compiler.kernel import python_source
 from fgc.factors.basic import between_factor_type, gps_factor, prior_factor_type
 from fgc.frontend.factors import combined_imu_factor_type
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture

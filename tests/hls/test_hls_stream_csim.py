@@ -40,7 +40,7 @@ from fgc_backends.hls.stream import (
 from fgc_backends.native.stream import WindowSolver
 
 STREAM_TOL = 1e-8  # double design vs simulator, tangent-space distance per variable
-LIO = str(Path(__file__).resolve().parent.parent / "examples" / "lio.py")
+LIO = str(Path(__file__).resolve().parents[2] / "examples" / "lio.py")
 
 
 def _distances(program, stream_result, sim_updates):
@@ -193,7 +193,7 @@ def test_hls_csim_fixed_lag_against_gtsam_after_every_keyframe():
     gtsam.ISAM2 with the window's policy (keyframes before it held, the factors across its edge
     kept linear where they were marginalised) within 1e-6; ``BatchFixedLagSmoother`` (lag
     W − 1) within 1e-9 until the first keyframe is marginalised and 5e-2 after it (GTSAM's LM
-    stops short on its marginal factor: tests/test_stream.py). Heavy as its sibling above, whose
+    stops short on its marginal factor: tests/app/test_stream.py). Heavy as its sibling above, whose
     4-keyframe template it shares: about 65 s when that project is not cached yet (emit and
     g++ build), a few seconds when it is."""
     graph = example("lio").build(N=8)

@@ -18,7 +18,7 @@ import pytest
 
 from fgc_backends.cost.operators import table
 
-INCLUDE = Path(__file__).resolve().parents[1] / "backends" / "hls" / "include"
+INCLUDE = Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
 
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None, reason="needs g++")
 

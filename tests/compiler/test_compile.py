@@ -15,7 +15,7 @@ from fgc.frontend.factors import BetweenFactor, PriorFactor
 from fgc.frontend.geometry import Pose2, Pose3
 from fgc.ir.program import Program, ProgramError, SolverConfig
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 from fgc.app.specs import example  # noqa: E402
 

@@ -33,7 +33,7 @@ from fgc.ir.datafile import problem_data
 
 lio = example("lio")
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 LIO = str(ROOT / "examples" / "lio.py")
 
 

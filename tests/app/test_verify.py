@@ -26,7 +26,7 @@ from fgc.errors import FgcError
 from fgc.frontend import noise
 from fgc.interop.to_gtsam import FD_TOLERANCE, linearization_checks, numeric_residual
 
-EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 BEACONS = str(EXAMPLES / "range_beacons.py")
 
 

@@ -19,7 +19,7 @@ top keeps the window between calls and takes one keyframe's words per call.
   native incremental stream to 1e-8 (measured 1.9e-9 at N = 8, 2.7e-8 at paper A's N = 30) and
   with gtsam.ISAM2 fed the same keyframes with fgc's policy to 1e-6, after every keyframe; the
   model prices the batch step on the batch kernel's plan.
-Heavy (tests/test_hls_stream_csim.py): the fixed-lag window against GTSAM at W = 3.
+Heavy (tests/hls/test_hls_stream_csim.py): the fixed-lag window against GTSAM at W = 3.
 """
 
 from __future__ import annotations
@@ -47,7 +47,7 @@ TOL = 1e-10  # tangent-space distance per variable, on-chip csim (double) vs nat
 # (step 1.5e-7), whose rounding (eps / h ~ 1e-9) differs between two builds of the same formula
 TOL_KEPT = 1e-8
 ISAM2_TOL = 1e-6  # vs gtsam.ISAM2 fed the same keyframes with fgc's policy
-LIO = str(Path(__file__).resolve().parent.parent / "examples" / "lio.py")
+LIO = str(Path(__file__).resolve().parents[2] / "examples" / "lio.py")
 
 
 def _worst(program, a, b) -> float:

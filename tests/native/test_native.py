@@ -31,8 +31,8 @@ from fgc.ir.program import SolverConfig
 from fgc_backends import native, sim
 from fgc_backends.native import NativeConfig, NativeConfigError, NativeSolver
 
-ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(Path(__file__).resolve().parent))
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from test_hls_csim import (  # noqa: E402
     CASES,
@@ -64,7 +64,7 @@ def test_native_library_gives_the_csim_numbers(name, tmp_path):
     """The native CPU program and the accelerator's C simulation are different programs (SIMD
     lanes and step patterns against the dataflow units): both meet the simulator's numbers to
     the precision's tolerance on the same cases, so each other's. The C simulation's half is
-    tests/test_hls_csim.py's test_csim_matches_the_simulator (same CASES, same check): built
+    tests/hls/test_hls_csim.py's test_csim_matches_the_simulator (same CASES, same check): built
     here again it only cost time."""
     program, data, scalar = _program(name, CASES[name])
     reference = sim.run(program, data, precision="float64")

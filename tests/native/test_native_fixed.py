@@ -1,5 +1,5 @@
 """The native solver in ``ap_fixed<W,I>`` (fgc_backends.native; the HLS accelerator refuses fixed
-point, tests/test_hls.py).
+point, tests/hls/test_hls.py).
 
 - ``T`` is declared ``ap_fixed<W, I, AP_RND_CONV, AP_SAT>``: it rounds and saturates, never wraps;
 - a constant the solver would hold outside the format's range is refused at emit time, naming

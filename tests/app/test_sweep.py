@@ -16,7 +16,7 @@ from fgc.app.cli import EXIT_BAD_INPUT, EXIT_OK, load_spec, main
 from fgc.app.sweep import Design, design_space, group_programs
 from fgc.ir.program import SolverConfig
 
-EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 POSE3 = [str(EXAMPLES / "pose_graph.py"), "-p", "dataset=pose3example.txt"]
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

@@ -350,7 +350,7 @@ def hls_householder(tmp_path_factory):
     folder = tmp_path_factory.mktemp("hh")
     program = compile_graph(chain(0.0, 0.1, n=3), SolverConfig(method="gn"))
     # the native CPU program's householder; the accelerator's QR is the unit header fgc_qr.h,
-    # tested by tests/test_hls_units.py
+    # tested by tests/hls/test_hls_units.py
     project = native.emit(program, folder / "project", native.NativeConfig(scalar="float"))
     source = folder / "driver.cpp"
     source.write_text(DRIVER.replace("KERNEL", str(project.directory / f"{project.name}.cpp")))

@@ -9,7 +9,7 @@ import pytest
 
 from fgc.app.cli import EXIT_BAD_INPUT, EXIT_OK, main
 
-EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def test_verify_pose3example_matches_gtsam(tmp_path, capsys):
