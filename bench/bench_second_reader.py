@@ -1,0 +1,93 @@
+"""The plan's price beside the second reader's (issue 32): emit each design, read the emitted
+C++ back with :mod:`fgc_backends.hls.reader` (what Vitis would instantiate: operators per
+pipelined loop, every call site its own module; II as the memories and recurrences allow) and
+print, per design, the plan's DSP / BRAM36 / cycles per iteration beside the reader's DSP lower
+bound and its count of loops whose declared II the text cannot meet.
+
+    python bench/bench_second_reader.py            # LIO N=30 (QR) and imu_window N=50 (Cholesky)
+    python bench/bench_second_reader.py --quick    # LIO N=8, imu_window N=10, fewer designs
+
+Model estimates (no vendor tool here): the reader's DSP is a lower bound on what Vitis binds.
+"""
+
+from __future__ import annotations
+
+import argparse
+import tempfile
+import time
+from pathlib import Path
+
+from fgc.app.specs import example
+from fgc.compile import compile_graph
+from fgc.ir.program import SolverConfig
+from fgc_backends.cost.operators import table
+from fgc_backends.hls import HlsConfig, emit
+from fgc_backends.hls.plan import DEFAULT_ALLOCATION, PlanOptions, build_plan, plan_cost
+from fgc_backends.hls.reader import check, emitted_files, read_design
+
+
+def _dsp_of(precision: str) -> dict[str, int]:
+    tab = table(precision)
+    return {"add": tab.add.dsp, "mul": tab.mul.dsp, "div": tab.div.dsp, "sqrt": tab.sqrt.dsp,
+            "special": tab.special.dsp}
+
+
+def measure(program, config: HlsConfig, out: Path) -> dict:
+    emit(program, out, config)
+    cost = plan_cost(build_plan(program, PlanOptions.for_config(config, program)))
+    files, top = emitted_files(out)
+    precision = "float64" if config.scalar == "double" else "float32"
+    design = read_design(files, top, table(precision).add.latency)
+    issues = check(design.loops)
+    return dict(plan_dsp=cost.dsp, plan_bram36=cost.bram36, plan_cycles=cost.cycles,
+                reader_dsp=design.dsp(_dsp_of(precision)),
+                ii_short=sum(i.rule == "ii_ports" for i in issues),
+                recurrences=sum(i.rule == "ii_recurrence" for i in issues),
+                worst=max((r.ii_bound / r.ii for r in design.loops), default=1.0))
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--quick", action="store_true", help="small problems, fewer designs")
+    args = parser.parse_args(argv)
+    lio_n, imu_n = (8, 10) if args.quick else (30, 50)
+    units = (1, 4) if args.quick else (1, 4, 8, 32)
+    cpes = (5, 20) if args.quick else (5, 20, 80)
+    doubled = tuple((k, 2 * v) for k, v in DEFAULT_ALLOCATION)
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        lio = example("lio")
+        for n_u in units:
+            for alloc in (None, doubled):
+                program = compile_graph(lio.build(N=lio_n), name="lio",
+                                        solver=SolverConfig(units=n_u))
+                config = HlsConfig(allocation=alloc)
+                t0 = time.perf_counter()
+                m = measure(program, config, Path(tmp) / f"lio_{n_u}_{bool(alloc)}")
+                rows.append((f"LIO N={lio_n} QR n_u={n_u}" + (" ALLOCATION x2" if alloc else ""),
+                             m, time.perf_counter() - t0))
+        imu = example("imu_window")
+        for cpe in cpes:
+            program = compile_graph(imu.build(N=imu_n), name="imu",
+                                    solver=SolverConfig(linear="cholesky", cpe=cpe))
+            t0 = time.perf_counter()
+            m = measure(program, HlsConfig(), Path(tmp) / f"imu_{cpe}")
+            rows.append((f"imu_window N={imu_n} Cholesky #CPE={cpe}", m,
+                         time.perf_counter() - t0))
+    print(f"{'design':42s} {'plan DSP':>9s} {'reader DSP':>10s} {'ratio':>6s} "
+          f"{'BRAM36':>7s} {'cycles/it':>10s} {'II short':>8s} {'carried':>7s} "
+          f"{'worst II':>8s}")
+    for name, m, _ in rows:
+        print(f"{name:42s} {m['plan_dsp']:9d} {m['reader_dsp']:10d} "
+              f"{m['reader_dsp'] / max(1, m['plan_dsp']):6.2f} {m['plan_bram36']:7.1f} "
+              f"{m['plan_cycles']:10d} {m['ii_short']:8d} {m['recurrences']:7d} "
+              f"{m['worst']:7.1f}x")
+    print("model estimates: plan = fgc's accelerator plan; reader = what the emitted text "
+          "instantiates (a lower bound); 'II short': pipelined loops whose memories cannot give "
+          "the declared II; 'carried': loops with a read-modify-write Vitis must assume carried; "
+          "'worst II': the largest ratio of the II the text allows to the declared II")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

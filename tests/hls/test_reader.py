@@ -1,0 +1,192 @@
+"""The second reader (fgc_backends.hls.reader): what Vitis would build, read from the emitted
+text alone. Each planted defect of issue 32 (a fold inside a pipelined loop, a long write into
+an unpartitioned global, a data-dependent read-modify-write without DEPENDENCE) makes the check
+fail, and its correction passes; on an emitted design the reader finds every Update unit copy
+and every pipelined loop the plan prints."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from fgc_backends.hls.reader import check, check_dsp, emitted_files, read_design, read_project
+
+ADD_LATENCY = 4  # a float adder's stages in these snippets
+DSP = {"add": 2, "mul": 3, "div": 0, "sqrt": 0, "special": 0}
+
+FOLD = """
+typedef float T;
+template <class T, int P>
+inline T fold_partials(T part[P]) {
+#pragma HLS INLINE
+    for (int step = 1; step < P; step *= 2) {
+#pragma HLS UNROLL
+        for (int i = 0; i < P; i += 2 * step) {
+#pragma HLS UNROLL
+            if (i + step < P) part[i] += part[i + step];
+        }
+    }
+    return part[0];
+}
+void scale_rows(const T part[64][11], T tau, T out[64]) {
+    for (int l = 0; l < 64; ++l) {
+#pragma HLS PIPELINE II=1
+        T p[11];
+        for (int t = 0; t < 11; ++t) p[t] = part[l][t];
+        out[l] = tau * fold_partials<T, 11>(p);
+    }
+}
+void top(const T part[64][11], T tau, T out[64]) {
+    scale_rows(part, tau, out);
+}
+"""
+
+
+def test_a_fold_inside_a_pipelined_loop_holds_its_adders():
+    """fold_partials<11> at II 1: 10 adders and a multiplier (23 DSP), not the 1 + 1 (5 DSP) a
+    per-unit price assumes; the design check fails against 5 and passes against 23."""
+    design = read_design([("fold.cpp", FOLD)], "top", ADD_LATENCY)
+    (loop,) = design.loops
+    assert dict(loop.ops) == {"add": 10, "mul": 1}
+    assert dict(loop.instances) == {"add": 10, "mul": 1}
+    assert design.dsp(DSP) == 23
+    (issue,) = check_dsp(design, plan_dsp=5, dsp_of=DSP)
+    assert issue.rule == "dsp_bound" and "at least 23" in issue.message
+    assert check_dsp(design, plan_dsp=23, dsp_of=DSP) == []
+    # at II 4 the same loop shares its adders: ceil(10 / 4)
+    slower = read_design([("fold.cpp", FOLD.replace("II=1", "II=4"))], "top", ADD_LATENCY)
+    assert dict(slower.loops[0].instances) == {"add": 3, "mul": 1}
+
+
+WRITE_ROWS = """
+typedef float T;
+const int N_A = 20000;
+T AB[N_A];
+{partition}
+void evaluate(const T rows[29][651]) {{
+    for (int i = 0; i < 29; ++i) {{
+#pragma HLS PIPELINE II=143
+        T ab[651];
+        for (int c = 0; c < 651; ++c) ab[c] = rows[i][c] * T(2);
+        const int a0 = i * 651;
+        for (int r = 0; r < 21; ++r) {{
+            for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 31 + c];
+        }}
+    }}
+}}
+"""
+
+
+def test_a_long_write_into_an_unpartitioned_global_bounds_the_ii():
+    """651 words an iteration through AB's two ports: II >= 326, above the declared 143; the
+    local ab is not judged (Vitis's throughput-driven partitioning); AB cyclic by 4 passes."""
+    readings = read_project([("ab.cpp", WRITE_ROWS.format(partition=""))], ADD_LATENCY)
+    (loop,) = readings
+    assert ("AB", 651, 1) in loop.accesses and loop.ii_ports == 326
+    (issue,) = check(readings)
+    assert issue.rule == "ii_ports" and "'AB'" in issue.message and "II >= 326" in issue.message
+    assert issue.file == "ab.cpp" and issue.line == 8  # the PIPELINE pragma
+    fixed = WRITE_ROWS.format(partition="#pragma HLS ARRAY_PARTITION variable=AB cyclic factor=4")
+    readings = read_project([("ab.cpp", fixed)], ADD_LATENCY)
+    assert readings[0].ii_ports == 82 and check(readings) == []
+
+
+RMW = """
+typedef float T;
+const int ROWS = 64, COLS = 8;
+T BANK[ROWS][COLS];
+void axpys(const int at[ROWS], const T v[ROWS], const T s[COLS], int n, int r) {
+    for (int e = 0, l = 0, a = 0; e < n * r; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=512
+#pragma HLS PIPELINE II=1
+%DEPENDENCE%
+        const T x = BANK[at[a]][l] - s[l] * v[a];
+        BANK[at[a]][l] = x;
+        if (a == n - 1) {
+            a = 0;
+            ++l;
+        } else {
+            ++a;
+        }
+    }
+}
+"""
+
+
+def test_a_data_dependent_read_modify_write_needs_dependence():
+    """BANK[at[a]][l] read and written at an address read from memory: Vitis assumes a carried
+    dependence (II >= the adder's latency) unless a DEPENDENCE pragma says there is none."""
+    readings = read_project([("rmw.cpp", RMW.replace("%DEPENDENCE%", ""))], ADD_LATENCY)
+    assert readings[0].recurrence == ("BANK",)
+    (issue,) = check(readings)
+    assert issue.rule == "ii_recurrence" and f"II >= {ADD_LATENCY}" in issue.message
+    free = RMW.replace("%DEPENDENCE%", "#pragma HLS DEPENDENCE variable=BANK inter false")
+    assert check(read_project([("rmw.cpp", free)], ADD_LATENCY)) == []
+    # a loop whose address moves with its own variable carries nothing
+    moving = RMW.replace("BANK[at[a]][l]", "BANK[e % ROWS][l]").replace("%DEPENDENCE%", "")
+    assert check(read_project([("rmw.cpp", moving)], ADD_LATENCY)) == []
+
+
+def test_a_carried_scalar_sum_and_a_partitioned_unrolled_store():
+    text = """
+typedef float T;
+const int N = 128;
+T OUT[4][N];
+#pragma HLS ARRAY_PARTITION variable=OUT complete dim=1
+T dot(const T a[N], const T b[N]) {
+    T sum = T(0);
+    for (int i = 0; i < N; ++i) {
+#pragma HLS PIPELINE II=1
+        sum += a[i] * b[i];
+    }
+    return sum;
+}
+void spread(const T a[N]) {
+    for (int i = 0; i < N; ++i) {
+#pragma HLS PIPELINE II=1
+        for (int u = 0; u < 4; ++u) OUT[u][i] = a[i];
+    }
+}
+"""
+    readings = {r.function: r for r in read_project([("s.cpp", text)], ADD_LATENCY)}
+    assert readings["dot"].recurrence == ("sum",) and readings["dot"].ii_bound == ADD_LATENCY
+    assert readings["spread"].accesses == () and readings["spread"].ii_bound == 1
+
+
+@pytest.fixture(scope="module")
+def chain_design(tmp_path_factory):
+    import fgc
+    from fgc import Pose2
+    from fgc.compile import compile_graph
+    from fgc.frontend import noise
+    from fgc.frontend.factors import BetweenFactor, PriorFactor
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.hls import HlsConfig, emit
+
+    graph = fgc.Graph()
+    for i in range(8):
+        graph.add_variable(f"x{i}", Pose2(1.0 * i, 0.1 * i, 0.05 * i))
+    graph.add(PriorFactor("x0", Pose2(0.0, 0.0, 0.0), noise.isotropic(3, 0.1)))
+    for i in range(7):
+        graph.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
+                                noise.isotropic(3, 0.1)))
+    program = compile_graph(graph, name="reader_chain", solver=SolverConfig(units=3))
+    out = tmp_path_factory.mktemp("reader") / "accel"
+    emit(program, out, HlsConfig())
+    return out
+
+
+def test_an_emitted_design_read_back(chain_design):
+    """Every pipelined loop the kernel prints is read (one per instantiation of a template),
+    each Update unit is its own module at every call site of the reflection (3 units x 2 unit
+    sets x 2 parity sites), and every loop's II is read from its pragma."""
+    files, top = emitted_files(chain_design)
+    design = read_design(files, top, ADD_LATENCY)
+    text = "\n".join(t for _, t in files)
+    pragmas = len(re.findall(r"#pragma HLS PIPELINE II=", text))
+    assert len({(r.file, r.line) for r in design.loops}) == pragmas
+    modules = dict(design.modules)
+    assert modules["qr_update"] == 3 * 2 * 2
+    assert all(r.ii >= 1 and r.ii_bound >= 1 for r in design.loops)
+    assert design.dsp(DSP) > 0
