@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import math
 import re
+import tempfile
 from collections import deque
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -139,6 +140,7 @@ class _Scan:
     edges: list[_Line] = field(default_factory=list)  # between and bearing-range lines, in order
     dims: set = field(default_factory=set)
     vertex_lines: int = 0
+    clean: list = field(default_factory=list)  # the checked data lines, blanks made single
 
 
 def _fields(line: str) -> list[str]:
@@ -149,7 +151,8 @@ def _parse_line(tag: str, fields: list[str], where: str) -> _Line:
     """Field count, integer ids, finite numbers (module docstring); DataError otherwise."""
     fmt = _FORMATS[tag]
     got = len(fields) - 1
-    if got == fmt.width and _WHOLE[tag].match(" ".join(fields[1:])):  # the common case, at once
+    whole = _WHOLE.get(tag)
+    if whole and got == fmt.width and whole.match(" ".join(fields[1:])):  # the common case
         n = len(fmt.ids)
         if all(len(t) <= 16 for t in fields[1:1 + n]):  # < 10**16 < _MAX_ID
             nums = [float(t) for t in fields[1 + n:]]
@@ -270,8 +273,9 @@ def _positive_definite(matrix: np.ndarray, what: str) -> None:
         except np.linalg.LinAlgError:
             chol = None
         ok = chol is not None and bool(np.all(np.isfinite(chol))) and np.all(np.diag(chol) > 0)
-        if ok:  # the inverse, which GTSAM and fgc form, must be finite too
-            ok = bool(np.all(np.isfinite(np.linalg.inv(chol))))
+        if ok:  # the covariance, which GTSAM forms for a diagonal information, must be finite
+            inv = np.linalg.inv(chol)
+            ok = bool(np.all(np.isfinite(inv.T @ inv)))
     if not ok:
         raise DataError(f"{what} is not positive definite (or not representable as one in "
                         "double precision)")
@@ -294,6 +298,7 @@ def _scan(path: Path, prefix: str | None) -> _Scan:
         kind = line.fmt.kind
         if kind == "passed_over":
             continue
+        scan.clean.append(" ".join(fields))
         scan.dims.add(line.fmt.dim)
         if kind in ("pose", "point"):
             scan.vertex_lines += 1
@@ -326,7 +331,7 @@ def _check_references(scan: _Scan, prefix: str | None) -> None:
             have = scan.vertices.get((ns, i))
             name = shown(i) if ns == "pose" else repr(f"l{i}")
             if have is None and ns in declared:
-                what = "vertex" if ns == "pose" else "landmark"
+                what = "pose" if ns == "pose" else "landmark"
                 raise DataError(f"{e.where}: {e.tag} refers to undeclared {what} {name} (the "
                                 f"file declares its {what}s with vertex lines)")
             if have is None and ns == "pose" and i not in chained:
@@ -362,11 +367,17 @@ def read_pose_graph(path: str | Path, key_prefix: str | None = "x",
                         f"{path}: no edges that GTSAM's readers turn into factors (no vertices "
                         "found either)")
     is3d = 3 in scan.dims
-    try:
-        graph, values = (gtsam.load3D if is3d else gtsam.load2D)(str(path))
-    except (RuntimeError, ValueError) as exc:
-        raise DataError(f"{path}: GTSAM's {'load3D' if is3d else 'load2D'} rejects the file: "
-                        f"{exc}") from None
+    # GTSAM's reader gets the checked data lines alone (no comments, passed-over lines or odd
+    # blanks: its load2D reads two ids from every line that is not a between edge, and a
+    # comment's words stop it reading the rest of the file)
+    with tempfile.TemporaryDirectory(prefix="fgc-read-") as tmp:
+        clean = Path(tmp) / ("data" + path.suffix)
+        clean.write_text("\n".join(scan.clean) + "\n", encoding="ascii")
+        try:
+            graph, values = (gtsam.load3D if is3d else gtsam.load2D)(str(clean))
+        except (RuntimeError, ValueError) as exc:
+            raise DataError(f"{path}: GTSAM's {'load3D' if is3d else 'load2D'} rejects the "
+                            f"file: {exc}") from None
     _check_against_gtsam(scan, graph)
     if init == "chordal" and is3d:
         values = _chordal(graph, values)
