@@ -94,9 +94,9 @@ _FORMATS = {
     "VERTEX_XY": _Format("point", 2, ("id",), ("x", "y")),
     **{t: _Format("between", 2, ("id1", "id2"), _BETWEEN2)
        for t in ("EDGE2", "EDGE_SE2", "EDGE", "ODOMETRY")},
-    "BR": _Format("bearing_range", 2, ("pose id", "landmark id"),
-                  ("bearing", "range", "bearing sigma", "range sigma")),
-    "LANDMARK": _Format("bearing_range", 2, ("pose id", "landmark id"),
+    "BR": _Format("bearing_range", 2, ("pose_id", "landmark_id"),
+                  ("bearing", "range", "sigma_bearing", "sigma_range")),
+    "LANDMARK": _Format("bearing_range", 2, ("pose_id", "landmark_id"),
                         ("x", "y", "cov_xx", "cov_xy", "cov_yy")),
     "VERTEX3": _Format("pose", 3, ("id",), _POSE3_RPY),
     "VERTEX_SE3:QUAT": _Format("pose", 3, ("id",), _POSE3_QUAT),
@@ -227,7 +227,7 @@ def _check_values(line: _Line) -> None:
         bearing, rng, s_b, s_r = nums
         if rng < 0:
             raise DataError(f"{where}: BR range is {rng!r}: a range cannot be negative")
-        for name, s in (("bearing sigma", s_b), ("range sigma", s_r)):
+        for name, s in (("sigma_bearing", s_b), ("sigma_range", s_r)):
             _positive(s, f"{where}: BR {name}", square=True)
     elif tag == "LANDMARK":
         _, _, cxx, cxy, cyy = nums
