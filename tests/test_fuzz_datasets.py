@@ -63,7 +63,7 @@ SMALL = {
         "EDGE 0 1 1.0 0.05 0.1 0.01 0 0.02 0.003 0 0",
         "EDGE 1 2 1.0 0.05 -0.3 0.01 0 0 0.02 0 0.004",
         "BR 0 7 0.9 2.5 0.05 0.1", "BR 1 8 -1.2 2.1 0.02 0.2",
-        "LANDMARK 2 7 -0.5 2.0 0.4 0.1 0.4", "LANDMARK 2 8 1.0 -2.0 0.3 0 0.5",
+        "LANDMARK 2 7 -0.5 2.0 0.4 0 0.4", "LANDMARK 2 8 1.0 -2.0 0.3 0 0.30005",
         "FIX 0", "EQUIV 1 1", "PARAMS_SE2OFFSET 0 0.1 0 0",
     ],
     "small3d.graph": [
@@ -196,9 +196,11 @@ def mutations(base: str, lines: list[str], rng: random.Random) -> list[Case]:
                 add(f"number-{bad}-L{i}", with_line(i, fields), True)
             for other in ("1e308", "-1e308", "1e-320", "2.5", "-0.0", "3e-5"):
                 fields = list(f)
-                fields[rng.choice(nums)] = other
+                k = rng.choice(nums)
+                fields[k] = other
                 add(f"number->{other}-L{i}", with_line(i, fields), False,
-                    "another decimal number: valid unless a check refuses it")
+                    f"another valid number ({other}) as field {k} of a {f[0]} line, read as "
+                    "written")
     if vertex is not None:
         add(f"duplicate-vertex-L{vertex}", lines + [lines[vertex]], True)
     if between is not None:
@@ -239,6 +241,13 @@ def mutations(base: str, lines: list[str], rng: random.Random) -> list[Case]:
         else:
             fields[5] = "-0.4"
             add(f"indefinite-covariance-L{br}", with_line(br, fields), True)
+            for cov in ("0.4 0.1 0.4", "0.4 0 0.5"):  # GTSAM would replace these by σ = 1, 1
+                fields = f[:5] + cov.split()
+                add(f"landmark-covariance-{cov.replace(' ', '_')}-L{br}", with_line(br, fields),
+                    True)
+    if edge is not None:
+        add(f"duplicate-edge-L{edge}", lines + [lines[edge]], False,
+            "a repeated measurement: two factors, as GTSAM reads it")
     quat = pick(lambda k: k[0] in ("pose3q", "between3q"))
     if quat is not None:
         kind, n_ids, f = _kind(lines[quat])

@@ -75,6 +75,39 @@ def test_vertexless_toro_file_chains_odometry(tmp_path):
     assert len(read_pose_graph(path, init="chordal").factors) == 4
 
 
+def test_comment_lines_do_not_stop_gtsams_reader(tmp_path):
+    """GTSAM's load2D reads two ids from every line that is not a between edge, so a comment's
+    words end its reading silently; fgc gives it the checked data lines alone and reads all."""
+    lines = (gtsam_data_dir() / "example.graph").read_text().splitlines()
+    path = tmp_path / "commented.graph"
+    path.write_text("\n".join(["# example.graph, with comments"] + lines[:100]
+                              + ["# the rest"] + lines[100:]) + "\n")
+    ggraph, _ = gtsam.load2D(str(path))
+    assert ggraph.size() == 0  # GTSAM's own reader: nothing after the first comment
+    assert len(read_pose_graph(path).factors) == 516
+
+
+def test_gtsam_reading_a_line_otherwise_is_refused_by_line(tmp_path, monkeypatch):
+    """fgc compares GTSAM's factors with its own reading of each line: a GTSAM reader that read
+    one measurement differently (here: made to) is a DataError naming that line."""
+    path = tmp_path / "w.graph"
+    path.write_text((gtsam_data_dir() / "w100_30.g2o").read_text())
+    load2d = gtsam.load2D
+
+    def misreading(name, *args):
+        graph, values = load2d(name, *args)
+        gf = graph.at(3)
+        graph.replace(3, gtsam.BetweenFactorPose2(gf.keys()[0], gf.keys()[1],
+                                                  gtsam.Pose2(1.0, 2.0, 0.3), gf.noiseModel()))
+        return graph, values
+
+    monkeypatch.setattr(gtsam, "load2D", misreading)
+    edge4 = [i for i, x in enumerate(path.read_text().splitlines(), 1) if x.startswith("EDGE")][3]
+    with pytest.raises(DataError, match=rf"w\.graph:{edge4}: GTSAM's reader made another "
+                                        r"measurement of this EDGE2 line"):
+        read_pose_graph(path)
+
+
 @pytest.mark.heavy
 @pytest.mark.parametrize("name", ["w20000.txt", "victoria_park.txt", "sphere2500.txt",
                                   "sphere2500_groundtruth.txt", "w10000.graph"])

@@ -230,11 +230,16 @@ def _check_values(line: _Line) -> None:
         for name, s in (("sigma_bearing", s_b), ("sigma_range", s_r)):
             _positive(s, f"{where}: BR {name}", square=True)
     elif tag == "LANDMARK":
-        _, _, cxx, cxy, cyy = nums
+        cxx, cxy, cyy = nums[2:]
         _positive_definite(np.array([[cxx, cxy], [cxy, cyy]]),
                            f"{where}: LANDMARK covariance [[cov_xx, cov_xy], [cov_xy, cov_yy]]")
-        if abs(cxx - cyy) < 1e-4:  # GTSAM then takes σ_bearing = √(cov_xx/10), σ_range = √cov_xx
-            _positive(cxx / 10.0, f"{where}: LANDMARK cov_xx / 10 (GTSAM's bearing variance)")
+        if cxy != 0.0 or not abs(cxx - cyy) < 1e-4:
+            raise DataError(
+                f"{where}: LANDMARK covariance cov_xx {cxx!r}, cov_xy {cxy!r}, cov_yy {cyy!r}: "
+                "GTSAM's reader models a landmark's noise from cov_xx alone (σ_bearing = "
+                "√(cov_xx/10), σ_range = √cov_xx) when cov_xy = 0 and |cov_xx − cov_yy| < 1e-4, "
+                "and otherwise replaces it by σ = 1, 1; fgc refuses a covariance GTSAM would drop")
+        _positive(cxx / 10.0, f"{where}: LANDMARK cov_xx / 10 (GTSAM's bearing variance)")
 
 
 def _variances_2d(line: _Line) -> None:
