@@ -17,7 +17,8 @@ drawn from a seeded generator, so the same files every run. Each outcome is clas
   independent parse, or an accepted file whose mutation must be refused (a silent misread).
 
 The default run reads ``FAST`` files spread over every mutation kind; ``-m heavy`` reads all
-``len(CASES)`` (≥ 300). ``python tests/test_fuzz_datasets.py`` prints the counts per outcome.
+``len(CASES)`` (≥ 300). ``python tests/interop/test_fuzz_datasets.py`` prints the counts per
+outcome.
 """
 
 from __future__ import annotations
