@@ -75,6 +75,21 @@ def test_vertexless_toro_file_chains_odometry(tmp_path):
     assert len(read_pose_graph(path, init="chordal").factors) == 4
 
 
+def test_verify_refuses_the_misread_it_once_passed(tmp_path, capsys):
+    """Issue 34: example.graph with one landmark id written 144.7 was read by GTSAM with every
+    field shifted, and `fgc verify` said PASSED because GTSAM misread it the same way; now the
+    line is refused, exit 2, in one line naming file, line and field."""
+    lines = (gtsam_data_dir() / "example.graph").read_text().splitlines()
+    k = next(i for i, x in enumerate(lines) if x.startswith("BR 0 144 "))
+    lines[k] = lines[k].replace("BR 0 144 ", "BR 0 144.7 ")
+    path = tmp_path / "example.graph"
+    path.write_text("\n".join(lines) + "\n")
+    assert cli_main(["verify", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert f"example.graph:{k + 1}: BR landmark_id is '144.7', not a non-negative integer" in err
+
+
 def test_comment_lines_do_not_stop_gtsams_reader(tmp_path):
     """GTSAM's load2D reads two ids from every line that is not a between edge, so a comment's
     words end its reading silently; fgc gives it the checked data lines alone and reads all."""

@@ -559,11 +559,16 @@ def test_float32_verdict_states_the_compared_errors(capsys, tmp_path):
     assert "within 1e-06 relative" not in r["verdict"]
 
 
-def test_status_is_named_once():
+def test_status_is_named_once(capsys):
     from fgc.app.run_report import status_text
 
     assert status_text("max_iterations", "max_iterations") == "max_iterations"
     assert status_text("converged", "step") == "converged (step)"
+    assert main(["run", str(EXAMPLES / "pose_graph.py"), "--backend", "sim",
+                 "--max-iterations", "1"]) == EXIT_FAILED
+    first = capsys.readouterr().out.splitlines()[0]
+    assert "(sim): max_iterations, 1 iterations" in first
+    assert "max_iterations (max_iterations)" not in first
 
 
 @pytest.mark.heavy
