@@ -431,7 +431,7 @@ def _check_against_gtsam(scan: _Scan, graph) -> None:
         groups.setdefault(line.tag, []).append(n)
     for tag, rows in groups.items():
         lines = [scan.edges[n] for n in rows]
-        measured, info = expected_measurements(tag, np.array([ln.nums for ln in lines]))
+        measured, info = _expected_measurements(tag, np.array([ln.nums for ln in lines]))
         got = np.array([_gtsam_measurement(factors[n].measured()) for n in rows])
         r = np.array([factors[n].noiseModel().R() for n in rows], float)
         got_info = np.einsum("nki,nkj->nij", r, r)
@@ -458,7 +458,7 @@ def _gtsam_measurement(m) -> list[float]:
     return [m.bearing().c(), m.bearing().s(), m.range()]  # BearingRange2D
 
 
-def expected_measurements(tag: str, nums: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _expected_measurements(tag: str, nums: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """What GTSAM's reader makes of checked edge lines of one tag (rows of ``nums``), computed
     by fgc: measurements as rows [c, s, range] (bearing-range), [x, y, c, s] (Pose2) or
     [t, rotation matrix row-major] (Pose3), and information matrices."""
