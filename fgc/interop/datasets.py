@@ -138,7 +138,7 @@ class _Scan:
     path: Path
     vertices: dict = field(default_factory=dict)  # (namespace, id) → (dim, where)
     edges: list[_Line] = field(default_factory=list)  # between and bearing-range lines, in order
-    dims: set = field(default_factory=set)
+    dims: dict = field(default_factory=dict)  # dimension → its first line
     vertex_lines: int = 0
     clean: list = field(default_factory=list)  # the checked data lines, blanks made single
 
@@ -304,7 +304,7 @@ def _scan(path: Path, prefix: str | None) -> _Scan:
         if kind == "passed_over":
             continue
         scan.clean.append(" ".join(fields))
-        scan.dims.add(line.fmt.dim)
+        scan.dims.setdefault(line.fmt.dim, (lineno, where))
         if kind in ("pose", "point"):
             scan.vertex_lines += 1
             key = (kind, line.ids[0])
@@ -318,7 +318,10 @@ def _scan(path: Path, prefix: str | None) -> _Scan:
             scan.edges.append(line)
     _check_references(scan, prefix)
     if len(scan.dims) > 1:
-        raise DataError(f"{path}: mixes 2D and 3D tags; GTSAM's readers take one or the other")
+        (_, first), (_, other) = sorted(scan.dims.values())
+        kind = {w: f"{d}D" for d, (_, w) in scan.dims.items()}
+        raise DataError(f"{other}: a {kind[other]} line in a file of {kind[first]} lines (the "
+                        f"first at {first}); GTSAM's readers take one or the other")
     return scan
 
 

@@ -388,7 +388,7 @@ def compare(graph, text: str) -> str:
 # classification
 # --------------------------------------------------------------------------------------------
 
-FILE_LEVEL = ("mixes 2D and 3D tags", "no edge")
+FILE_LEVEL = ("no edge",)
 VALID = ("tabs", "spaces", "crlf", "vtab", "comments")  # must be accepted
 
 
