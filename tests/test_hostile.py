@@ -47,21 +47,32 @@ def _file(tmp_path: Path, lines: list[str], name: str = "bad.g2o") -> Path:
 
 
 @pytest.mark.parametrize("bad, needle", [
-    ("VERTEX_SE2 1 0.0", "needs 4 values, got 2"),
-    ("VERTEX_SE2 1 a b c", "malformed VERTEX_SE2"),
-    ("VERTEX_SE2 1.5 0 0 0", "malformed VERTEX_SE2"),
+    ("VERTEX_SE2 1 0.0", "takes 4 fields after the tag .*got 2"),
+    ("VERTEX_SE2 1 a b c", "VERTEX_SE2 x is 'a', not a number"),
+    ("VERTEX_SE2 1.5 0 0 0", "id is '1.5', not a non-negative integer"),
     ("VERTEX_SE2 1 nan 0 0", "non-finite"),
     ("VERTEX_SE2 1 0 inf 0", "non-finite"),
     ("VERTEX_SE2 1 1e999 0 0", "non-finite"),
-    ("VERTEX_SE2 -1 0 0 0", "negative vertex id"),
-    ("VERTEX_SE2 " + "9" * 5000 + " 0 0 0", "malformed VERTEX_SE2"),
+    ("VERTEX_SE2 -1 0 0 0", "id is '-1', not a non-negative integer"),
+    ("VERTEX_SE2 " + "9" * 5000 + " 0 0 0", "does not fit a GTSAM key"),
     ("VERTEX_SE2 0 0 0 0", "declared twice"),
     ("EDGE_SE2 0 0 1 0 0 100 0 0 100 0 100", "to itself"),
-    ("EDGE_SE2 0 7 1 0 0 100 0 0 100 0 100", "undeclared vertex 'x7'"),
-    ("EDGE_SE2 0 1 1 0 0 -100 0 0 100 0 100", "not positive definite"),
+    ("EDGE_SE2 0 7 1 0 0 100 0 0 100 0 100", "undeclared pose 'x7'"),
+    # issue 34: BR lines went to GTSAM's reader unchecked and were misread
+    ("BR 0 144.7 0.185 9.13 0.0349 0.1", r"BR landmark_id is '144\.7', not a non-negative"),
+    ("BR 0 5 0.1 2 0.03 0.1 BR 1 5 0.2 2 0.03 0.1", r"BR takes 6 fields .*got 13 \(a trailing"),
+    ("BR 0 5 0.1 2 0.03 0.1 7", "BR takes 6 fields"),
+    ("EDGE_SE2 0 1 1 0 0 100 0 0 100 0 100 0", "EDGE_SE2 takes 11 fields"),
+    ("EDGE2 0 1 1 0 0 100 0 100 100 0 0 x", "EDGE2 takes 11 fields"),
+    ("BR 7 5 0.1 2 0.03 0.1", "BR refers to undeclared pose 'x7'"),
+    ("BR 0 5 0.1 2 abc 0.1", "BR sigma_bearing is 'abc', not a number"),
+    ("BR 0 5 0.1 2 0.03 -0.1", "BR sigma_range is -0.1; it must be positive"),
+    ("VERTEX_SE3:QUAT 3 0 0 0 1e308 0 0 1", "quaternion .* non-finite norm"),
+    ("EDGE_SE2 0 1 1 0 0 100 5 0 100 0 100", "fits neither layout GTSAM's load2D reads"),
+    ("EDGE_SE2 0 1 1 0 0 -100 0 0 100 0 100", "variance c_xx is -100.0; it must be positive"),
     ("EDGE_SE2 0 1 1 0 0 100 0 0 100 0 nan", "non-finite"),
-    ("EDGE2 0 1 1 0 0 100 0 100 100", "EDGE2 needs 11 values"),
-    ("VERTEX_SE3:QUAT 3 0 0 0 0 0 0 0", "quaternion has zero"),
+    ("EDGE2 0 1 1 0 0 100 0 100 100", "EDGE2 takes 11 fields"),
+    ("VERTEX_SE3:QUAT 3 0 0 0 0 0 0 0", "quaternion .* has zero"),
     ("EDGE_SE2 0 2 1 0 0 100 0 0 100 0 100", "x2.*Pose3.*Pose2"),
 ])
 def test_malformed_pose_graph_lines_name_file_and_line(tmp_path, bad, needle):
@@ -86,7 +97,7 @@ def test_huge_vertex_ids_are_refused_by_line(tmp_path):
     # wrapped around
     big = 10**30
     path = _file(tmp_path, [SE2.format(big), SE2.format(big + 1), EDGE.format(big, big + 1)])
-    with pytest.raises(DataError, match=r"bad\.g2o:1: vertex id .* does not fit a GTSAM key"):
+    with pytest.raises(DataError, match=r"bad\.g2o:1: VERTEX_SE2 id .* does not fit a GTSAM key"):
         read_pose_graph(path)
 
 

@@ -479,13 +479,13 @@ def _cmd_run(args) -> int:
         result = _backend("sim").run(program, data)
     status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
-    from fgc.app.run_report import require_finite_start
+    from fgc.app.run_report import require_finite_start, status_text
 
     require_finite_start(graph, result)
     report = {"backend": args.backend, "status": status, "reason": result.reason,
               "final_error": final, "iterations": iters, "solve_seconds": seconds}
     final_text = f"{final:.10g}" if final is not None else "not finite"
-    lines = [f"fgc run {args.spec} ({args.backend}): {status} ({result.reason}), {iters} "
+    lines = [f"fgc run {args.spec} ({args.backend}): {status_text(status, result.reason)}, {iters} "
              f"iterations, final error {final_text}, {seconds * 1e3:.3f} ms (build/load "
              "included on a first run)"]
     if status != "converged" and result.message:
@@ -726,9 +726,10 @@ def _cmd_verify_stream(args) -> int:
                      "measured up to 1e-2 on LIO once keyframes are marginalised; see the "
                      "README)")
     verdict = "PASSED" if passed else "FAILED"
-    lines.append(f"  {verdict}: " + (f"every keyframe within {tol:g} of ISAM2" if passed else
-                                     f"status {result.status}, largest difference "
-                                     f"{max(dist):.2e} > {tol:g}"))
+    why = ([f"fgc's stream ended {result.status}"] if result.status != "converged" else []) + (
+        [f"largest difference {max(dist):.2e} > {tol:g}"] if max(dist) > tol else [])
+    lines.append(f"  {verdict}: " + (f"fgc's stream converged and every keyframe is within "
+                                     f"{tol:g} of ISAM2" if passed else "; ".join(why)))
     _print(args, lines, f"fgc verify {args.spec}: {verdict}")
     _estimates_out(args, graph, report, result.values)
     _write_json(args.json, report)

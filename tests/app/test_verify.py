@@ -254,7 +254,8 @@ def test_custom_factor_line_states_method_and_tolerance(capsys):
     executed = next(s for s in text.splitlines() if s.startswith("  executed kernels"))
     assert "at the initial values and the final estimate" in executed
     assert "sample" not in executed  # 6 steps: every factor is checked
-    assert text.strip().splitlines()[-1].startswith("  PASSED: fgc's answer matches GTSAM's")
+    assert text.strip().splitlines()[-1].startswith("  PASSED: fgc converged")
+    assert "its answer matches GTSAM's" in text.strip().splitlines()[-1]
 
 
 # --------------------------------------------------------------------------------------------
@@ -417,19 +418,157 @@ def test_iteration_limits_are_named_when_it_fails(capsys, tmp_path):
     assert code == EXIT_FAILED, text
     r = json.loads(out.read_text())
     assert r["gtsam_from_fgc_error"] < r["fgc_final_error"] * (1 - 1e-6)
-    assert r["verdict"].startswith("FAILED: state distance")
-    assert "GTSAM's LM started from fgc's answer lowers it" in r["verdict"]
-    assert r["verdict"].endswith("fgc and GTSAM hit max_iterations (2)")
+    assert r["verdict"].startswith("FAILED: not converged: fgc and GTSAM stopped at the "
+                                   "iteration limit (2) and GTSAM's LM started from fgc's "
+                                   "answer lowers it")
+    assert r["verdict"].endswith("raise --max-iterations")
     assert text.strip().splitlines()[-1] == f"  {r['verdict']}"
 
 
-def test_matching_answers_at_the_limit_pass_and_say_so(capsys):
-    """fgc's LM takes GTSAM's steps: after one iteration both are at the same point."""
-    code, text = _verify([str(EXAMPLES / "pose_graph.py"), "--max-iterations", "1"], capsys)
-    assert code == EXIT_OK, text
+def test_matching_answers_at_the_limit_are_not_a_pass(capsys, tmp_path):
+    """fgc's LM takes GTSAM's steps: after one iteration both are at the same point, neither at
+    an optimum (issue 35: both sides stopping at the limit in the same place is no evidence)."""
+    out = tmp_path / "v.json"
+    code, text = _verify([str(EXAMPLES / "pose_graph.py"), "--max-iterations", "1",
+                          "--json", str(out)], capsys)
+    assert code == EXIT_FAILED, text
+    r = json.loads(out.read_text())
+    assert r["max_state_error"] <= 1e-6  # the answers do match
     verdict = text.strip().splitlines()[-1]
-    assert verdict.startswith("  PASSED: fgc's answer matches GTSAM's")
-    assert verdict.endswith("fgc and GTSAM hit max_iterations (1)")
+    assert verdict.startswith("  FAILED: not converged: fgc and GTSAM stopped at the iteration "
+                              "limit (1)")
+    assert "fgc stopped at its iteration limit after 1 iteration" in verdict
+    assert "  iterations: fgc 1 (max_iterations), GTSAM 1 (limit 1)" in text  # said once
+
+
+def test_at_the_limit_an_optimum_passes_and_says_so(capsys, tmp_path):
+    """Both sides stop at 4 iterations, at the optimum: GTSAM's LM started from fgc's answer
+    stays there within the limit, which is the evidence; the verdict names the limit."""
+    out = tmp_path / "v.json"
+    code, text = _verify([str(EXAMPLES / "pose_graph.py"), "--max-iterations", "4",
+                          "--json", str(out)], capsys)
+    assert code == EXIT_OK, text
+    r = json.loads(out.read_text())
+    assert r["status"] == "max_iterations"
+    assert r["gtsam_from_fgc_iterations"] < 4
+    assert r["gtsam_from_fgc_error"] >= r["fgc_final_error"] * (1 - 1e-6)
+    assert r["verdict"].startswith("PASSED at the iteration limit: fgc and GTSAM stopped at the "
+                                   "iteration limit (4), but the answers match")
+
+
+FAR = """VERTEX_SE3:QUAT 0 0 0 0 0 0 0 1
+VERTEX_SE3:QUAT 1 1 0 0 0 0 0 1
+VERTEX_SE3:QUAT 2 2 0 3.4e39 0 0 0 1
+EDGE_SE3:QUAT 0 1 1 0 0 0 0 0 1 {info}
+EDGE_SE3:QUAT 1 2 1 0 0 0 0 0 1 {info}
+""".format(info=" ".join("1" if r == c else "0" for r in range(6) for c in range(r, 6)))
+
+
+def test_a_failed_fgc_solve_is_not_passed(capsys, tmp_path):
+    """A vertex at z = 3.4e39: fgc's LM gives up; GTSAM's agreement (it does not move either)
+    is no evidence: FAILED naming fgc's status, exit 1 (issue 34)."""
+    path = tmp_path / "far.g2o"
+    path.write_text(FAR)
+    out = tmp_path / "v.json"
+    code, text = _verify([str(path), "--json", str(out)], capsys)
+    assert code == EXIT_FAILED, text
+    r = json.loads(out.read_text())
+    assert r["status"] == "failed" and not r["passed"]
+    assert r["verdict"].startswith(f"FAILED: fgc's own solve failed: fgc failed ({r['reason']})")
+
+
+COINCIDENT = """
+import fgc
+from fgc import Point2, noise
+from fgc.frontend.factors import PriorFactor
+
+
+@fgc.factor
+def distance(p: Point2, q: Point2, *, measured: float):
+    d = p.v - q.v
+    return [fgc.hypot(d[0], d[1]) - measured]
+
+
+def build():
+    g = fgc.Graph().add_variable("p", Point2(1.0, 2.0)).add_variable("q", Point2(1.0, 2.0))
+    g.add(PriorFactor("p", Point2(1.0, 2.0), noise.isotropic(2, 0.1)))
+    g.add(PriorFactor("q", Point2(1.5, 2.0), noise.isotropic(2, 1.0)))
+    return g.add(distance("p", "q", measured=0.5, noise=noise.isotropic(1, 0.1)))
+"""
+
+
+def test_a_singular_input_point_is_named_not_blamed_on_the_derivation(capsys, tmp_path):
+    """A distance between coincident points (0/0 in its Jacobian) is the input's problem: the
+    verdict names the factor and its variables, not a wrong or stale derivation (issue 35)."""
+    spec = tmp_path / "coincident.py"
+    spec.write_text(COINCIDENT)
+    code, text = _verify([str(spec)], capsys)
+    assert code == EXIT_FAILED, text
+    verdict = text.strip().splitlines()[-1]
+    assert verdict.startswith("  FAILED: an input problem, not a derivation error: factor "
+                              "'distance' on 'p', 'q'")
+    assert "coincident points" in verdict and "wrong or stale" not in verdict
+
+
+def test_a_discontinuity_at_the_input_is_found_by_a_nearby_point():
+    """Finite Jacobians that differ from central differences at the input but agree nearby:
+    atan2 exactly on its branch cut (p = (-1, 0)), where the central difference jumps by 2π, is
+    named as the input's problem; off the cut nothing is."""
+    from fgc.app.run_report import input_problem
+
+    @fgc.factor(name="heading")
+    def heading(p: Point2, *, measured: float):
+        return [fgc.atan2(p.v[1], p.v[0]) - measured]
+
+    def graph(y: float):
+        g = fgc.Graph().add_variable("p", Point2(-1.0, y))
+        return g.add(heading("p", measured=3.0, noise=noise.isotropic(1, 0.1)))
+
+    found = input_problem(graph(0.0))
+    assert found is not None and found.startswith("factor 'heading' on 'p': at the initial "
+                                                  "values its derived Jacobians differ")
+    assert input_problem(graph(0.5)) is None
+
+
+def test_float32_compares_final_errors_and_says_so():
+    """In float32 the states must agree within the float32 bounds *and* the final errors
+    (fgc's answer evaluated in float64) within max(1e-3 relative, 0.5 absolute); issue 34's
+    case, 1.10 against 1.3e-19, fails, and a matching sentence names both numbers."""
+    from fgc.app.run_report import _errors_agree, _state_matches
+
+    r = {"precision": "float32", "max_rotation_error": 1e-5, "max_translation_error": 1e-4,
+         "fgc_final_error": 1.10, "gtsam_final_error": 1.3e-19,
+         "relative_final_error_difference": 1.10 / 1e-12}
+    assert not _state_matches(r)
+    ok, sentence = _errors_agree(r)
+    assert not ok and "fgc 1.1, GTSAM 1.3e-19" in sentence and "not within" in sentence
+    r["fgc_final_error"] = 0.3
+    assert _state_matches(r)
+    assert "within max(0.001 relative, 0.5 absolute)" in _errors_agree(r)[1]
+
+
+def test_float32_verdict_states_the_compared_errors(capsys, tmp_path):
+    out = tmp_path / "v.json"
+    code, text = _verify([str(EXAMPLES / "pose_graph.py"), "--precision", "float32",
+                          "--json", str(out)], capsys)
+    assert code == EXIT_OK, text
+    r = json.loads(out.read_text())
+    assert f"final errors fgc {r['fgc_final_error']:.10g}, GTSAM {r['gtsam_final_error']:.10g}" \
+        in r["verdict"]
+    assert "within max(0.001 relative, 0.5 absolute)" in r["verdict"]
+    assert "within 1e-06 relative" not in r["verdict"]
+
+
+def test_status_is_named_once(capsys):
+    from fgc.app.run_report import status_text
+
+    assert status_text("max_iterations", "max_iterations") == "max_iterations"
+    assert status_text("converged", "step") == "converged (step)"
+    assert main(["run", str(EXAMPLES / "pose_graph.py"), "--backend", "sim",
+                 "--max-iterations", "1"]) == EXIT_FAILED
+    first = capsys.readouterr().out.splitlines()[0]
+    assert "(sim): max_iterations, 1 iterations" in first
+    assert "max_iterations (max_iterations)" not in first
 
 
 @pytest.mark.heavy

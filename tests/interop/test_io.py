@@ -50,11 +50,11 @@ def test_small_files_read_to_gtsams_graph(name):
 
 
 @pytest.mark.parametrize("name, message", [
-    ("sphere_smallnoise.graph", r"sphere_smallnoise\.graph:2202: GTSAM's reader returned 1 "
-                                r"factors for the file's 8647 between lines \(EDGE3"),
+    ("sphere_smallnoise.graph", r"sphere_smallnoise\.graph:2201: EDGE3 takes 29 fields after "
+                                r"the tag .*, got 8 \(a field missing"),
     ("cityTrees_reduced_1k.g2o", r"cityTrees_reduced_1k\.g2o:1000: tag 'LANDMARK2'"),
-    ("known_landmark_localization_3.g2o", r"factor \d+ \(BearingRangeFactor3D\).*no fgc "
-                                          r"built-in.*EDGE_SE3_TRACKXYZ"),
+    ("known_landmark_localization_3.g2o", r"localization_3\.g2o:\d+: EDGE_SE3_TRACKXYZ lines are "
+                                          r"refused: .*BearingRangeFactor3D.*no fgc built-in"),
     ("example_with_vertices.g2o", r"16 vertices but no edge lines"),
 ])
 def test_what_fgc_cannot_represent_is_refused_by_line(name, message):
@@ -73,6 +73,54 @@ def test_vertexless_toro_file_chains_odometry(tmp_path):
     assert list(graph.variables) == [0, 1, 2, 3, 4]  # int keys stay ints
     assert graph.error() == pytest.approx(0.0, abs=1e-20)
     assert len(read_pose_graph(path, init="chordal").factors) == 4
+
+
+def test_verify_refuses_the_misread_it_once_passed(tmp_path, capsys):
+    """Issue 34: example.graph with one landmark id written 144.7 was read by GTSAM with every
+    field shifted, and `fgc verify` said PASSED because GTSAM misread it the same way; now the
+    line is refused, exit 2, in one line naming file, line and field."""
+    lines = (gtsam_data_dir() / "example.graph").read_text().splitlines()
+    k = next(i for i, x in enumerate(lines) if x.startswith("BR 0 144 "))
+    lines[k] = lines[k].replace("BR 0 144 ", "BR 0 144.7 ")
+    path = tmp_path / "example.graph"
+    path.write_text("\n".join(lines) + "\n")
+    assert cli_main(["verify", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert f"example.graph:{k + 1}: BR landmark_id is '144.7', not a non-negative integer" in err
+
+
+def test_comment_lines_do_not_stop_gtsams_reader(tmp_path):
+    """GTSAM's load2D reads two ids from every line that is not a between edge, so a comment's
+    words end its reading silently; fgc gives it the checked data lines alone and reads all."""
+    lines = (gtsam_data_dir() / "example.graph").read_text().splitlines()
+    path = tmp_path / "commented.graph"
+    path.write_text("\n".join(["# example.graph, with comments"] + lines[:100]
+                              + ["# the rest"] + lines[100:]) + "\n")
+    ggraph, _ = gtsam.load2D(str(path))
+    assert ggraph.size() == 0  # GTSAM's own reader: nothing after the first comment
+    assert len(read_pose_graph(path).factors) == 516
+
+
+def test_gtsam_reading_a_line_otherwise_is_refused_by_line(tmp_path, monkeypatch):
+    """fgc compares GTSAM's factors with its own reading of each line: a GTSAM reader that read
+    one measurement differently (here: made to) is a DataError naming that line."""
+    path = tmp_path / "w.graph"
+    path.write_text((gtsam_data_dir() / "w100_30.g2o").read_text())
+    load2d = gtsam.load2D
+
+    def misreading(name, *args):
+        graph, values = load2d(name, *args)
+        gf = graph.at(3)
+        graph.replace(3, gtsam.BetweenFactorPose2(gf.keys()[0], gf.keys()[1],
+                                                  gtsam.Pose2(1.0, 2.0, 0.3), gf.noiseModel()))
+        return graph, values
+
+    monkeypatch.setattr(gtsam, "load2D", misreading)
+    edge4 = [i for i, x in enumerate(path.read_text().splitlines(), 1) if x.startswith("EDGE")][3]
+    with pytest.raises(DataError, match=rf"w\.graph:{edge4}: GTSAM's reader made another "
+                                        r"measurement of this EDGE2 line"):
+        read_pose_graph(path)
 
 
 @pytest.mark.heavy
