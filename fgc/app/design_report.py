@@ -186,10 +186,11 @@ def _resources_section(r: dict) -> Section:
     names = (("dsp", "DSP48E1"), ("bram", "BRAM36"), ("lut", "LUT"), ("ff", "FF"))
     rows = tuple((label, f"{res[key]:,}" if isinstance(res[key], int) else f"{res[key]:,g}",
                   f"{util[key]:.1%}") for key, label in names)
-    fits = "fits" if c["fits"] else "does NOT fit"
+    from fgc.app.run_report import fit_verdict
+
     return Section(f"Resources on {c['device']} (model estimate)",
                    ("resource", "used (model estimate)", "of device"), rows,
-                   (f"{fits} {c['device']} (model estimate); power {c['power_w']:.2f} W, energy "
+                   (f"{fit_verdict(c)} (model estimate); power {c['power_w']:.2f} W, energy "
                     f"{c['energy_mj']:.3f} mJ per solve (model estimate: the plan has no power "
                     "model; the sim model's power fit applied to the plan's resources)",
                     f"memories of the plan: {c['memory_words']:,} words (model estimate)"))

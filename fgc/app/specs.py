@@ -73,12 +73,25 @@ def load_spec(path: str, params: dict) -> Graph:
     except FgcError:
         raise
     except TypeError as exc:
-        raise FgcError(f"{path}: build() rejected the parameters {sorted(params)}: {exc}") from exc
+        if exc.__traceback__.tb_next is None:  # raised binding the call, not inside build()
+            raise FgcError(f"{path}: build() rejected the parameters {sorted(params)}: "
+                           f"{exc}") from exc
+        raise FgcError(f"{path}: build() failed{_where(p, exc)}: TypeError: {exc}") from exc
     except Exception as exc:  # the user's code: one line naming the spec, not a traceback
-        raise FgcError(f"{path}: build() failed: {type(exc).__name__}: {exc}") from exc
+        raise FgcError(f"{path}: build() failed{_where(p, exc)}: {type(exc).__name__}: "
+                       f"{exc}") from exc
     if not isinstance(graph, Graph):
         raise FgcError(f"{path}: build() returned {type(graph).__name__}, not an fgc.Graph")
     return graph
+
+
+def _where(spec: Path, exc: BaseException) -> str:
+    """`` at line N``: the innermost line of the spec file on ``exc``'s traceback."""
+    import traceback
+
+    lines = [f.lineno for f in traceback.extract_tb(exc.__traceback__)
+             if Path(f.filename).resolve() == spec.resolve()]
+    return f" at line {lines[-1]}" if lines else ""
 
 
 def _unknown_parameters(build, params: dict) -> list[str]:
