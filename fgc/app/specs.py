@@ -125,7 +125,9 @@ def _load_pose_graph_file(p: Path, params: dict) -> Graph:
     if unknown:
         raise FgcError(f"{p}: unknown parameters {unknown} for a g2o/TORO file "
                        "(only prior_sigma, init=odometry|chordal)")
-    graph = read_pose_graph(p, init=str(params.get("init", "odometry")))
+    # the file's own ids are the keys (GTSAM's readers' keys: an int stays an int, a landmark
+    # is GTSAM's Symbol string "l<id>"), so results go back to GTSAM under the same keys
+    graph = read_pose_graph(p, key_prefix=None, init=str(params.get("init", "odometry")))
     first = next(iter(graph.variables.values()))
     sigma = float(params.get("prior_sigma", 1e-3))
     graph.add(PriorFactor(first.key, first.initial, noise.isotropic(first.type.dim, sigma)))
