@@ -318,6 +318,11 @@ def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = Non
     if plot_dir:
         report["plots"] = _plots(Path(plot_dir), graph, result, report)
     report["summary"] = _simulate_summary(report, len(graph.variables))
+    if plot_dir:
+        names = ", ".join(Path(f).name for f in report["plots"])
+        missing = ("" if len(report["plots"]) > 2 else "; no trajectory or attitude plot: the "
+                   "graph has no Pose2/Pose3 or Rot2/Rot3 variables")
+        report["summary"].append(f"  plots → {plot_dir}: {names}{missing}")
     report["_result_values"] = result.values  # popped by the CLI (--values, --marginals)
     return report
 
@@ -325,7 +330,9 @@ def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = Non
 def _plots(out: Path, graph: Graph, result, report: dict) -> list[str]:
     """latency.png, storage.png and, for graphs with poses, trajectory.png: fgc's solution over
     GTSAM's LM solution (computed here: one GTSAM solve, milliseconds to a second or two for the
-    shipped examples, cheap next to the simulator) and the GPS fixes of the graph's GPSFactors."""
+    shipped examples, cheap next to the simulator), the GPS fixes of the graph's GPSFactors and
+    the landmarks (Point2 / Point3 variables: beacons too) of both; for rotation-only graphs,
+    attitude.png (attitude over the variables, fgc and GTSAM)."""
     from fgc.app import plots
     out.mkdir(parents=True, exist_ok=True)
     steps = [(s["name"], s["words"]) for s in report["storage"]["steps"]]
@@ -333,16 +340,24 @@ def _plots(out: Path, graph: Graph, result, report: dict) -> list[str]:
     plots.plot_latency_breakdown(report["cycles_by_unit"], path=files[0])
     plots.plot_storage_steps(report["storage"]["dense_words"], steps, path=files[1])
     values = _values_by_key(graph, result.values)
-    if any(isinstance(v, (Pose3, Pose2)) for v in values.values()):
+    poses = any(isinstance(v, (Pose3, Pose2)) for v in values.values())
+    rotations = any(isinstance(v, (Rot3, Rot2)) for v in values.values())
+    if poses or rotations:
         from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
 
         problem = to_gtsam(graph)
         reference = values_from_gtsam(graph, problem, gtsam_optimize(problem)[0])
+    if poses:
         gps = [np.asarray(getattr(f.measured["position"], "v", f.measured["position"]),
                           float).ravel() for f in graph.factors if f.type.name == "GPSFactor"]
         files.append(out / "trajectory.png")
         plots.plot_trajectory(values, reference, np.array(gps) if gps else None,
-                              title="Trajectory (top view): fgc vs GTSAM LM", path=files[-1])
+                              title="Trajectory (top view): fgc vs GTSAM LM", path=files[-1],
+                              landmarks=values, gtsam_landmarks=reference)
+    elif rotations:
+        files.append(out / "attitude.png")
+        plots.plot_attitude(values, reference, title="Attitude: fgc vs GTSAM LM",
+                            path=files[-1])
     return [str(f) for f in files]
 
 
