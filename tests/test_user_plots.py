@@ -100,3 +100,12 @@ def test_simulate_says_when_a_graph_gets_no_trajectory_or_attitude_plot(tmp_path
                     "noise.isotropic(2, 0.1)))\n    return g\n")
     assert main(["simulate", str(spec), "--plot", str(tmp_path / "p")]) == 0
     assert "no trajectory or attitude plot" in capsys.readouterr().out
+
+
+def test_a_rotation_only_stream_says_ate_is_not_applicable(tmp_path, capsys):
+    """No positions, no ATE: the summary says so instead of printing "ATE rmse nan m"."""
+    spec = tmp_path / "attitude.py"
+    spec.write_text(ROT3_SPEC)
+    assert main(["stream", str(spec), "--window", "3"]) == 0
+    text = capsys.readouterr().out
+    assert "ATE not applicable (no Pose2/Pose3 variables" in text and "nan" not in text
