@@ -616,8 +616,8 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
     wall = (f"{who} update median {times['median_ms']:.2f} ms, p99 {times['p99_ms']:.2f} ms "
             "(wall time)" if times["median_ms"] == times["median_ms"]
             else f"{who}: no wall time (a C simulation's is not the accelerator's)")
-    ate_text = (f"ATE rmse {ate['rmse']:.4g} m final, {ate_online.get('rmse', float('nan')):.4g}"
-                " m online" if "rmse" in ate and "rmse" in ate_online else
+    ate_text = (f"ATE rmse {ate['rmse']:.4g} m final, {ate_online['rmse']:.4g} m online"
+                if "rmse" in ate and "rmse" in ate_online else
                 "ATE not applicable (no Pose2/Pose3 variables: no trajectory)")
     head = (f"fgc {_stream_word(args)} {args.spec}: {result.status} over {n} keyframes; {wall}; "
             f"vs batch optimum: {ate_text}")
