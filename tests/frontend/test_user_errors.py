@@ -134,9 +134,9 @@ def test_a_type_error_inside_build_is_not_blamed_on_the_parameters(tmp_path):
 
 
 @pytest.mark.parametrize("spec, params, says", [
-    ("examples/lio.py", {"N": -5}, "lio: N must be at least 2 keyframes, got -5"),
-    ("examples/lio.py", {"N": 5, "first": -1}, "lio: first must be a GPS fix index"),
-    ("examples/range_beacons.py", {"steps": -5}, "steps must be at least 1, got -5"),
+    ("examples/lio.py", {"N": -5}, "lio: N=-5: N must be at least 2 keyframes"),
+    ("examples/lio.py", {"N": 5, "first": -1}, "lio: first=-1: first must be a GPS fix index"),
+    ("examples/range_beacons.py", {"steps": -5}, "steps=-5: steps must be at least 1"),
 ])
 def test_out_of_range_spec_parameters_name_the_parameter_and_bound(spec, params, says):
     with pytest.raises(DataError) as exc:
