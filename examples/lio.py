@@ -76,8 +76,13 @@ def build(N: int = 30, first: int = 1, gps_sigma: float = 1.0,  # noqa: N803 - p
 
 def _keyframes(times, gps, n: int, first: int, dt: float | None):
     """Keyframe times, reference positions and the GPS fixes [(keyframe, position)]."""
+    if n < 2:
+        raise fgc.DataError(f"lio: N={n}: N must be at least 2 keyframes")
+    if not 0 <= first < len(times):
+        raise fgc.DataError(f"lio: first={first}: first must be a GPS fix index from 0 to "
+                            f"{len(times) - 1}")
     if dt is None:
-        if n < 2 or first < 0 or first + n > len(times):
+        if first + n > len(times):
             raise fgc.DataError(f"lio: N={n} keyframes from GPS fix {first} exceed the "
                                 f"{len(times)} fixes in the data")
         t, p = times[first:first + n], gps[first:first + n]

@@ -18,6 +18,8 @@ def range_to_beacon(pose: Pose2, beacon: Point2, *, measured: float):
 
 
 def build(steps: int = 20, seed: int = 0) -> fgc.Graph:
+    if steps < 1:
+        raise fgc.DataError(f"range_beacons: steps={steps}: steps must be at least 1")
     rng = np.random.default_rng(seed)
     graph = fgc.Graph()
     beacons = {"b0": Point2(5.0, 5.0), "b1": Point2(-5.0, 8.0)}

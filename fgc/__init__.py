@@ -84,7 +84,17 @@ def from_gtsam(graph, values, key_names=None):
     return _from_gtsam(graph, values, key_names)
 
 
+def to_gtsam_values(values, keys=None):
+    """fgc values {key: value} as a ``gtsam.Values`` under the same keys (an int stays that int,
+    ``"x1"`` becomes ``gtsam.Symbol('x', 1)``; see
+    :func:`fgc.interop.to_gtsam.values_to_gtsam`). A solve's result has ``.gtsam_values()``."""
+    from fgc.interop.to_gtsam import values_to_gtsam
+
+    return values_to_gtsam(values, keys)
+
+
 __all__ = [
+    "to_gtsam_values",
     "stream",
     "acos",
     "asin",

@@ -479,15 +479,21 @@ def _cmd_run(args) -> int:
         result = _backend("sim").run(program, data)
     status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
-    from fgc.app.run_report import require_finite_start, status_text
+    from fgc.app.run_report import (
+        final_error_text,
+        float64_error,
+        require_finite_start,
+        status_text,
+    )
 
     require_finite_start(graph, result)
     report = {"backend": args.backend, "status": status, "reason": result.reason,
-              "final_error": final, "iterations": iters, "solve_seconds": seconds}
-    final_text = f"{final:.10g}" if final is not None else "not finite"
-    lines = [f"fgc run {args.spec} ({args.backend}): {status_text(status, result.reason)}, {iters} "
-             f"iterations, final error {final_text}, {seconds * 1e3:.3f} ms (build/load "
-             "included on a first run)"]
+              "final_error": final, "iterations": iters, "solve_seconds": seconds,
+              "final_error_float64": float64_error(graph, result.values),
+              "precision": program.solver.precision}
+    lines = [f"fgc run {args.spec} ({args.backend}): {status_text(status, result.reason)}, "
+             f"{iters} iterations, final error {final_error_text(report)}, "
+             f"{seconds * 1e3:.3f} ms (build/load included on a first run)"]
     if status != "converged" and result.message:
         lines.append(f"fgc run: not converged: {result.message}")
     _print(args, lines)
@@ -610,9 +616,11 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
     wall = (f"{who} update median {times['median_ms']:.2f} ms, p99 {times['p99_ms']:.2f} ms "
             "(wall time)" if times["median_ms"] == times["median_ms"]
             else f"{who}: no wall time (a C simulation's is not the accelerator's)")
+    ate_text = (f"ATE rmse {ate['rmse']:.4g} m final, {ate_online['rmse']:.4g} m online"
+                if "rmse" in ate and "rmse" in ate_online else
+                "ATE not applicable (no Pose2/Pose3 variables: no trajectory)")
     head = (f"fgc {_stream_word(args)} {args.spec}: {result.status} over {n} keyframes; {wall}; "
-            f"vs batch optimum: ATE rmse {ate.get('rmse', float('nan')):.4g} m final, "
-            f"{ate_online.get('rmse', float('nan')):.4g} m online")
+            f"vs batch optimum: {ate_text}")
     lines = [head, f"  largest tangent-space distance from the batch optimum "
                    f"{acc['max_state_distance']:.3g} (final estimate)"]
     model = [p["latency_ms"] for p in priced if p]

@@ -22,7 +22,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from fgc.app.run_report import plan_summary, require_finite_start
+from fgc.app.run_report import (
+    final_error_text,
+    fit_verdict,
+    float64_error,
+    plan_summary,
+    require_finite_start,
+)
 from fgc.frontend.dsl import Graph
 
 _TEMPLATE = "report.html.jinja"
@@ -60,7 +66,9 @@ def design_report(spec: str, params: dict, graph: Graph, program, data, sim,
         require_finite_start(graph, result)
         solve = {"source": "simulator", "iterations": result.iterations,
                  "status": result.status, "reason": result.reason,
-                 "initial_error": result.initial_error, "final_error": result.final_error}
+                 "initial_error": result.initial_error, "final_error": result.final_error,
+                 "final_error_float64": float64_error(graph, result.values),
+                 "precision": program.solver.precision}
         iterations = max(result.iterations, 1)
     cost = plan_summary(program, iterations, plan_options)
     return {
@@ -171,7 +179,7 @@ def _cycles_section(r: dict) -> Section:
     rows.append(("total", f"{total:,}", f"{c['latency_ms']:.3f} ms"))
     if solve["source"] == "simulator":
         note = (f"{c['iterations']} iterations from the simulator ({solve['status']}, final "
-                f"error {solve['final_error']:.6g}) at {c['clock_mhz']:g} MHz")
+                f"error {final_error_text(solve)}) at {c['clock_mhz']:g} MHz")
     else:
         note = f"{c['iterations']} iterations (--iterations) at {c['clock_mhz']:g} MHz"
     return Section("Modelled cycles by phase (whole solve; model estimate, accelerator plan)",
@@ -186,10 +194,9 @@ def _resources_section(r: dict) -> Section:
     names = (("dsp", "DSP48E1"), ("bram", "BRAM36"), ("lut", "LUT"), ("ff", "FF"))
     rows = tuple((label, f"{res[key]:,}" if isinstance(res[key], int) else f"{res[key]:,g}",
                   f"{util[key]:.1%}") for key, label in names)
-    fits = "fits" if c["fits"] else "does NOT fit"
     return Section(f"Resources on {c['device']} (model estimate)",
                    ("resource", "used (model estimate)", "of device"), rows,
-                   (f"{fits} {c['device']} (model estimate); power {c['power_w']:.2f} W, energy "
+                   (f"{fit_verdict(c)} (model estimate); power {c['power_w']:.2f} W, energy "
                     f"{c['energy_mj']:.3f} mJ per solve (model estimate: the plan has no power "
                     "model; the sim model's power fit applied to the plan's resources)",
                     f"memories of the plan: {c['memory_words']:,} words (model estimate)"))

@@ -99,29 +99,116 @@ def _positions(values) -> np.ndarray:
     raise FgcError(f"cannot read positions from a {type(values).__name__}")
 
 
+# the x-y extents of a trajectory plot are drawn to scale (equal aspect) when neither is more
+# than this many times the other; a long, thin trajectory gets free axes (said in the title)
+EQUAL_ASPECT_UP_TO = 4.0
+
+
+def _points(points) -> np.ndarray | None:
+    """(N, 3) positions of landmarks: an fgc values dict (its Point2 / Point3 entries), or an
+    (N, 2|3) array; None when there are none."""
+    if points is None:
+        return None
+    if isinstance(points, Mapping):
+        from fgc.frontend.geometry import Point2, Point3
+
+        rows = [np.append(np.asarray(v.to_storage(), float), [0.0] * (v.dim == 2))
+                for v in points.values() if isinstance(v, (Point2, Point3))]
+        return np.array(rows) if rows else None
+    arr = np.asarray(points, float).reshape(len(points), -1)
+    if arr.size == 0:
+        return None
+    return np.column_stack([arr[:, :2], arr[:, 2] if arr.shape[1] > 2 else np.zeros(len(arr))])
+
+
 @_styled
 def plot_trajectory(fgc_values, gtsam_values=None, gps=None,
-                    title: str = "Trajectory (top view)", path: str | Path | None = None):
-    """Top view (x–y) of fgc's estimate, optionally GTSAM's and GPS fixes.
+                    title: str = "Trajectory (top view)", path: str | Path | None = None,
+                    landmarks=None, gtsam_landmarks=None):
+    """Top view (x–y) of fgc's estimate, optionally GTSAM's, GPS fixes and landmarks.
 
     In: ``fgc_values`` an fgc values dict (``Solution.values``: its Pose3, else Pose2, entries in
     order) or anything :func:`fgc.app.metrics.as_trajectory` accepts; ``gtsam_values`` the same or a
-    ``gtsam.Values``; ``gps`` an (N, 2|3) array of positions; ``path`` to save. Out: the Figure.
+    ``gtsam.Values``; ``gps`` an (N, 2|3) array of positions; ``landmarks`` /
+    ``gtsam_landmarks`` fgc's and GTSAM's landmark (beacon) estimates: a values dict (its Point2 /
+    Point3 entries) or an (N, 2|3) array; ``path`` to save. The axes are to scale when the x and
+    y extents are within :data:`EQUAL_ASPECT_UP_TO` of each other, else free (the title says
+    "axes not to scale"). Out: the Figure.
     """
     _check_path(path)
     fig, ax = _figure()
     est = _positions(fgc_values)
     ax.plot(est[:, 0], est[:, 1], "o-", ms=3, lw=1.5, color="tab:blue", label="fgc")
+    drawn = [est]
     if gtsam_values is not None:
         ref = _positions(gtsam_values)
         ax.plot(ref[:, 0], ref[:, 1], "s--", ms=4, lw=1.0, mfc="none", color="tab:orange",
                 label="GTSAM")
+        drawn.append(ref)
     if gps is not None:
         g = np.asarray(gps, float).reshape(len(gps), -1)
         ax.scatter(g[:, 0], g[:, 1], marker="x", s=25, color="tab:green", label="GPS", zorder=3)
+        drawn.append(np.column_stack([g[:, :2], np.zeros(len(g))]))
+    for pts, style in ((_points(landmarks), dict(marker="*", s=60, color="tab:red",
+                                                  label="landmarks (fgc)", zorder=4)),
+                       (_points(gtsam_landmarks), dict(marker="D", s=40, facecolors="none",
+                                                       edgecolors="tab:purple", zorder=4,
+                                                       label="landmarks (GTSAM)"))):
+        if pts is not None:
+            ax.scatter(pts[:, 0], pts[:, 1], **style)
+            drawn.append(pts)
     ax.plot(est[0, 0], est[0, 1], "k^", ms=8, label="start")
-    ax.set(xlabel="x [m]", ylabel="y [m]", title=title, aspect="equal")
+    allpts = np.vstack(drawn)
+    span = np.ptp(allpts[:, :2], axis=0)
+    to_scale = (min(span) > 0 and max(span) / min(span) <= EQUAL_ASPECT_UP_TO) or max(span) == 0
+    ax.set(xlabel="x [m]", ylabel="y [m]", aspect="equal" if to_scale else "auto",
+           title=title if to_scale else f"{title} (axes not to scale)")
     ax.legend(loc="best")
+    return _finish(fig, path)
+
+
+def _attitude(values) -> tuple[list, np.ndarray]:
+    """(keys, (N, 3) roll, pitch, yaw in degrees, unwrapped along the keys) of the Rot3 entries
+    of a values dict, or (keys, (N, 1) angle) of its Rot2 entries."""
+    from fgc.frontend.geometry import Rot2, Rot3
+
+    rot3 = [(k, np.asarray(v.R, float)) for k, v in values.items() if isinstance(v, Rot3)]
+    if rot3:
+        r = np.array([m for _, m in rot3])
+        angles = np.column_stack([np.arctan2(r[:, 2, 1], r[:, 2, 2]),
+                                  -np.arcsin(np.clip(r[:, 2, 0], -1.0, 1.0)),
+                                  np.arctan2(r[:, 1, 0], r[:, 0, 0])])
+        return [k for k, _ in rot3], np.degrees(np.unwrap(angles, axis=0))
+    rot2 = [(k, v) for k, v in values.items() if isinstance(v, Rot2)]
+    if not rot2:
+        raise FgcError("plot_attitude: the values hold no Rot3 or Rot2 entries")
+    theta = np.unwrap([np.arctan2(float(v.s), float(v.c)) for _, v in rot2])
+    return [k for k, _ in rot2], np.degrees(theta)[:, None]
+
+
+@_styled
+def plot_attitude(fgc_values: Mapping, gtsam_values: Mapping | None = None,
+                  title: str = "Attitude over the variables", path: str | Path | None = None):
+    """Attitude against the rotation variables' order (a rotation-only problem has no
+    trajectory to draw): roll, pitch, yaw (ZYX, degrees, unwrapped) of the Rot3 entries, or the
+    angle of the Rot2 entries, fgc solid and GTSAM dashed. In: fgc values dicts; ``path`` to
+    save. Out: the Figure."""
+    _check_path(path)
+    fig, ax = _figure(7.2, 4.2)
+    keys, ours = _attitude(fgc_values)
+    names = ("roll", "pitch", "yaw") if ours.shape[1] == 3 else ("angle",)
+    colors = ("tab:blue", "tab:orange", "tab:green")
+    index = np.arange(len(keys))
+    for j, name in enumerate(names):
+        ax.plot(index, ours[:, j], "o-", ms=3, lw=1.5, color=colors[j], label=f"{name} (fgc)")
+    if gtsam_values is not None:
+        _, ref = _attitude(gtsam_values)
+        for j, name in enumerate(names):
+            ax.plot(index, ref[:, j], "--", lw=1.0, color=colors[j], label=f"{name} (GTSAM)")
+    step = max(1, len(keys) // 12)
+    ax.set_xticks(index[::step], [str(k) for k in keys[::step]])
+    ax.set(xlabel="variable (key order)", ylabel="angle [deg]", title=title)
+    ax.legend(loc="best", ncols=2 if gtsam_values is not None else 1)
     return _finish(fig, path)
 
 

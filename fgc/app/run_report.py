@@ -72,7 +72,7 @@ ERROR_RTOL, ERROR_FLOOR = 1e-6, 1e-12
 ERROR_RTOL_F32, ERROR_ATOL_F32 = 1e-3, 0.5
 
 
-def status_text(status: str, reason: str) -> str:
+def status_text(status: str, reason: str | None) -> str:
     """A solve's status with its reason, once when they are the same word
     ("max_iterations", not "max_iterations (max_iterations)")."""
     return status if not reason or reason == status else f"{status} ({reason})"
@@ -433,10 +433,17 @@ def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = Non
                     "plan_memory_words": cost["memory_words"],
                     "steps": [dataclasses.asdict(s) for s in storage.steps]},
         "simulator_solve_seconds": result.solve_seconds,
+        "final_error_float64": float64_error(graph, result.values),
+        "fits": cost["fits"], "device": cost["device"], "utilization": cost["utilization"],
     }
     if plot_dir:
         report["plots"] = _plots(Path(plot_dir), graph, result, report)
     report["summary"] = _simulate_summary(report, len(graph.variables))
+    if plot_dir:
+        names = ", ".join(Path(f).name for f in report["plots"])
+        missing = ("" if len(report["plots"]) > 2 else "; no trajectory or attitude plot: the "
+                   "graph has no Pose2/Pose3 or Rot2/Rot3 variables")
+        report["summary"].append(f"  plots → {plot_dir}: {names}{missing}")
     report["_result_values"] = result.values  # popped by the CLI (--values, --marginals)
     return report
 
@@ -444,7 +451,9 @@ def simulate_report(graph: Graph, program, data, sim, plot_dir: str | None = Non
 def _plots(out: Path, graph: Graph, result, report: dict) -> list[str]:
     """latency.png, storage.png and, for graphs with poses, trajectory.png: fgc's solution over
     GTSAM's LM solution (computed here: one GTSAM solve, milliseconds to a second or two for the
-    shipped examples, cheap next to the simulator) and the GPS fixes of the graph's GPSFactors."""
+    shipped examples, cheap next to the simulator), the GPS fixes of the graph's GPSFactors and
+    the landmarks (Point2 / Point3 variables: beacons too) of both; for rotation-only graphs,
+    attitude.png (attitude over the variables, fgc and GTSAM)."""
     from fgc.app import plots
     out.mkdir(parents=True, exist_ok=True)
     steps = [(s["name"], s["words"]) for s in report["storage"]["steps"]]
@@ -452,30 +461,98 @@ def _plots(out: Path, graph: Graph, result, report: dict) -> list[str]:
     plots.plot_latency_breakdown(report["cycles_by_unit"], path=files[0])
     plots.plot_storage_steps(report["storage"]["dense_words"], steps, path=files[1])
     values = _values_by_key(graph, result.values)
-    if any(isinstance(v, (Pose3, Pose2)) for v in values.values()):
+    poses = any(isinstance(v, (Pose3, Pose2)) for v in values.values())
+    rotations = any(isinstance(v, (Rot3, Rot2)) for v in values.values())
+    if poses or rotations:
         from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
 
         problem = to_gtsam(graph)
         reference = values_from_gtsam(graph, problem, gtsam_optimize(problem)[0])
+    if poses:
         gps = [np.asarray(getattr(f.measured["position"], "v", f.measured["position"]),
                           float).ravel() for f in graph.factors if f.type.name == "GPSFactor"]
         files.append(out / "trajectory.png")
         plots.plot_trajectory(values, reference, np.array(gps) if gps else None,
-                              title="Trajectory (top view): fgc vs GTSAM LM", path=files[-1])
+                              title="Trajectory (top view): fgc vs GTSAM LM", path=files[-1],
+                              landmarks=values, gtsam_landmarks=reference)
+    elif rotations:
+        files.append(out / "attitude.png")
+        plots.plot_attitude(values, reference, title="Attitude: fgc vs GTSAM LM",
+                            path=files[-1])
     return [str(f) for f in files]
+
+
+_RESOURCE_NAMES = (("dsp", "DSP"), ("bram", "BRAM36"), ("lut", "LUT"), ("ff", "FF"))
+
+
+def fit_verdict(cost: dict) -> str:
+    """"fits xc7z045" or "does NOT fit xc7z045: BRAM36 14.3× the device's" — the accelerator
+    plan's verdict (``plan_summary``'s ``fits`` / ``utilization``), as ``fgc report`` and
+    ``fgc simulate`` print it."""
+    if cost["fits"]:
+        return f"fits {cost['device']}"
+    over = [f"{label} {cost['utilization'][key]:.3g}× the device's"
+            for key, label in _RESOURCE_NAMES if cost["utilization"].get(key, 0.0) > 1.0]
+    return f"does NOT fit {cost['device']}" + (f": {', '.join(over)}" if over else "")
+
+
+def float64_error(graph: Graph, values: dict) -> float:
+    """The graph's error Σ ½‖R r‖² (robust losses included; GTSAM's ``graph.error``) at
+    ``values`` (graph key or its ``str`` → value), evaluated in float64 whatever precision the
+    values were solved in: a float32 design's own cost figure is rounded and can lie below the
+    true optimum. NaN when the state is not finite."""
+    from fgc.compiler.derive import derive
+    from fgc.interop.estimates import graph_values
+
+    storage = {k: np.asarray(v.to_storage(), dtype=np.float64)
+               for k, v in graph_values(graph, values).items()}
+    if not all(np.all(np.isfinite(s)) for s in storage.values()):
+        return float("nan")
+    by_type: dict = {}
+    for f in graph.factors:
+        by_type.setdefault(f.type, []).append(f)
+    total = 0.0
+    for ftype, factors in by_type.items():  # one vectorised residual call per factor type
+        d = derive(ftype)
+        names = [b.name for b in d.measurements]
+        inputs = np.array([np.concatenate([storage[k] for k in f.keys]
+                                          + [np.ravel(f.measured[n]) for n in names])
+                           for f in factors])
+        total += _noise_error(factors, d.evaluate_residuals(inputs))
+    return total
+
+
+def _noise_error(factors: list, r: np.ndarray) -> float:
+    """Σ of GTSAM's factor errors ½‖R r‖² (ρ(‖R r‖) for robust noise) over ``factors``."""
+    info = np.stack([f.noise.sqrt_information for f in factors])
+    with np.errstate(all="ignore"):
+        e = np.linalg.norm(np.einsum("nij,nj->ni", info, r), axis=1)
+    total = float(0.5 * np.sum(np.where([f.noise.robust is None for f in factors], e * e, 0.0)))
+    return total + sum(float(f.noise.robust.loss(x)) for f, x in zip(factors, e, strict=True)
+                       if f.noise.robust is not None)
+
+
+def final_error_text(r: dict) -> str:
+    """The float64 final error, and the design's own figure beside it when the design is not
+    float64 (``r``: a report with ``final_error_float64``, ``final_error``, ``precision``)."""
+    text = f"{_number(r['final_error_float64'], '.10g')} (float64 at the returned state"
+    if r.get("precision", "float64") != "float64":
+        text += f"; the {r['precision']} design's own figure {_number(r['final_error'], '.10g')}"
+    return text + ")"
 
 
 def _simulate_summary(r: dict, n_vars: int) -> list[str]:
     res = r["resources"]
     return [
-        f"fgc simulate: {n_vars} variables, {_precision_text(r)}: {r['status']} after "
+        f"fgc simulate: {n_vars} variables, {_precision_text(r)}: "
+        f"{status_text(r['status'], r['reason'])} after "
         f"{r['iterations']} iterations, error {_number(r['initial_error'], '.6g')} → "
-        f"{_number(r['final_error'], '.10g')}",
+        f"{final_error_text(r)}",
         f"  accelerator (model estimate): {r['cycles']:,} cycles = {r['latency_ms']:.3f} ms at "
         f"{r['clock_mhz']:g} MHz (accelerator plan), energy {r['energy_mj']:.3f} mJ "
         f"({r['power_w']:.2f} W: the sim model's power fit on the plan's resources)",
         f"  resources (model estimate): {res['dsp']} DSP, {res['bram']:g} BRAM36, "
-        f"{res['lut']:,} LUT, {res['ff']:,} FF",
+        f"{res['lut']:,} LUT, {res['ff']:,} FF; {fit_verdict(r)}",
         f"  storage: {r['storage']['stored_words']:,} words "
         f"(dense {r['storage']['dense_words']:,}); plan memories "
         f"{r['storage']['plan_memory_words']:,} words (model estimate)",

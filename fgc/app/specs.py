@@ -73,12 +73,25 @@ def load_spec(path: str, params: dict) -> Graph:
     except FgcError:
         raise
     except TypeError as exc:
-        raise FgcError(f"{path}: build() rejected the parameters {sorted(params)}: {exc}") from exc
+        if exc.__traceback__.tb_next is None:  # raised binding the call, not inside build()
+            raise FgcError(f"{path}: build() rejected the parameters {sorted(params)}: "
+                           f"{exc}") from exc
+        raise FgcError(f"{path}: build() failed{_where(p, exc)}: TypeError: {exc}") from exc
     except Exception as exc:  # the user's code: one line naming the spec, not a traceback
-        raise FgcError(f"{path}: build() failed: {type(exc).__name__}: {exc}") from exc
+        raise FgcError(f"{path}: build() failed{_where(p, exc)}: {type(exc).__name__}: "
+                       f"{exc}") from exc
     if not isinstance(graph, Graph):
         raise FgcError(f"{path}: build() returned {type(graph).__name__}, not an fgc.Graph")
     return graph
+
+
+def _where(spec: Path, exc: BaseException) -> str:
+    """`` at line N``: the innermost line of the spec file on ``exc``'s traceback."""
+    import traceback
+
+    lines = [f.lineno for f in traceback.extract_tb(exc.__traceback__)
+             if Path(f.filename).resolve() == spec.resolve()]
+    return f" at line {lines[-1]}" if lines else ""
 
 
 def _unknown_parameters(build, params: dict) -> list[str]:
@@ -112,7 +125,9 @@ def _load_pose_graph_file(p: Path, params: dict) -> Graph:
     if unknown:
         raise FgcError(f"{p}: unknown parameters {unknown} for a g2o/TORO file "
                        "(only prior_sigma, init=odometry|chordal)")
-    graph = read_pose_graph(p, init=str(params.get("init", "odometry")))
+    # the file's own ids are the keys (GTSAM's readers' keys: an int stays an int, a landmark
+    # is GTSAM's Symbol string "l<id>"), so results go back to GTSAM under the same keys
+    graph = read_pose_graph(p, key_prefix=None, init=str(params.get("init", "odometry")))
     first = next(iter(graph.variables.values()))
     sigma = float(params.get("prior_sigma", 1e-3))
     graph.add(PriorFactor(first.key, first.initial, noise.isotropic(first.type.dim, sigma)))

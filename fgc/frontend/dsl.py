@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import hashlib
 import inspect
+import re
 import sys
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -28,7 +29,7 @@ import numpy as np
 import sympy as sp
 
 from fgc.errors import DataError, DslError, FgcError
-from fgc.frontend.functions import check_residual, numpy_on_symbols
+from fgc.frontend.functions import check_residual, library_function_error, numpy_on_symbols
 from fgc.frontend.geometry import LieGroup, Rot2, Rot3, VectorSpace
 from fgc.frontend.noise import NoiseModel
 
@@ -188,6 +189,8 @@ class FactorType:
             with _truth_of_symbols_forbidden():
                 out = self.func(*vars_.values(), **meas)
         except TypeError as exc:
+            if (error := library_function_error(self.name, exc)) is not None:
+                raise error from None
             if (numpy_error := numpy_on_symbols(self.name, exc)) is not None:
                 raise numpy_error from None
             if _is_symbolic_branch(exc):
@@ -201,13 +204,40 @@ class FactorType:
         except FgcError as exc:  # e.g. a geometry DataError: say which factor's function raised it
             if str(exc).startswith(f"factor '{self.name}'"):
                 raise
-            raise type(exc)(f"factor '{self.name}': {exc}") from exc
+            raise type(exc)(f"factor '{self.name}' ({self._signature()}): {exc}") from exc
         except Exception as exc:
+            if (error := library_function_error(self.name, exc)) is not None:
+                raise error from None
             if (numpy_error := numpy_on_symbols(self.name, exc)) is not None:
                 raise numpy_error from None
+            if type(exc).__name__ == "ShapeError":  # sympy's, on values of different sizes
+                raise DslError(self._shape_message(exc)) from None
             raise DslError(f"factor '{self.name}': calling the residual function failed: "
                            f"{type(exc).__name__}: {exc}") from exc
         return vars_, meas, check_residual(self.name, residual_vector(out, self.name))
+
+    def _signature(self) -> str:
+        """``pose: Pose2, beacon: Point3; measured: float`` (the annotations, for messages)."""
+        def show(args):
+            return ", ".join(f"{a.name}: {type_name(a.type)}" for a in args)
+        return show(self.variables) + (f"; {show(self.measurements)}" if self.measurements
+                                       else "")
+
+    def _shape_message(self, exc: Exception) -> str:
+        """A size mismatch while tracing, with the arguments of each size it involves (a Point2
+        variable annotated Point3 meets a Pose2's 2-vector: both are named, with their types)."""
+        sizes = [int(n) for n in re.findall(r"\((\d+), 1\)", str(exc))]
+        groups = []
+        for size in dict.fromkeys(sizes):
+            args = [a for a in self.variables + self.measurements if _extent(a.type) == size]
+            if args:
+                groups.append(f"{size}D: " + ", ".join(f"'{a.name}' ({type_name(a.type)})"
+                                                       for a in args))
+        which = ("; ".join(groups) + "; one of these annotations is likely wrong (e.g. a Point2 "
+                 "variable annotated Point3)") if len(groups) > 1 else (
+            f"the annotations are {self._signature()}")
+        return (f"factor '{self.name}': the residual function combines vectors of different "
+                f"sizes (sympy: {exc}): {which}")
 
     @property
     def residual_dim(self) -> int:
@@ -216,13 +246,28 @@ class FactorType:
         return self._residual_dim
 
     # -- instances ---------------------------------------------------------------------------
-    def __call__(self, *keys, noise: NoiseModel, name: str | None = None, source=None,
-                 **measured) -> Factor:
+    def __call__(self, *keys, noise: NoiseModel | None = None, name: str | None = None,
+                 source=None, **measured) -> Factor:
         """A factor of this type on variable ``keys`` with measurements given by keyword.
 
         ``source`` optionally records where the measurements came from (e.g. the IMU
         preintegration object), for the GTSAM bridge."""
+        if noise is None:
+            raise DslError(f"factor '{name or self.name}' on {list(keys)}: no noise model; pass "
+                           "noise=fgc.noise.isotropic(d, sigma) (or diagonal / covariance), d "
+                           "the residual's dimension")
         return Factor.create(self, keys, measured, noise, name, source)
+
+
+def _extent(t) -> int | None:
+    """The size of the vectors a value of type ``t`` takes part in (a pose's translation)."""
+    if t is float:
+        return 1
+    if isinstance(t, MatrixType):
+        return t.rows
+    if isinstance(t, type) and issubclass(t, VectorSpace):
+        return t.dim
+    return {"Pose2": 2, "Rot2": 2, "Pose3": 3, "Rot3": 3}.get(getattr(t, "__name__", ""))
 
 
 def _parse_signature(func, name: str) -> tuple[tuple[Argument, ...], tuple[Argument, ...]]:

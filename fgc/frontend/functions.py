@@ -193,3 +193,112 @@ def numpy_on_symbols(factor: str, exc: BaseException) -> DslError | None:
                             f"value (residuals are traced with sympy); use {instead}, which works "
                             "on both")
     return None
+
+
+# math / numpy functions by name (numpy's spellings too) → what to write in a residual instead
+_SMOOTH = "a smooth residual (it has no derivative where it jumps or kinks)"
+_NO_TEST = "no test on a variable (residuals are straight-line math on the variables)"
+_REPLACEMENTS = {
+    **{n: f"fgc.{n}(x)" for n in ("sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "exp",
+                                  "log", "tanh")},
+    "arcsin": "fgc.asin(x)", "arccos": "fgc.acos(x)", "arctan": "fgc.atan(x)",
+    "atan2": "fgc.atan2(y, x)", "arctan2": "fgc.atan2(y, x)", "hypot": "fgc.hypot(x, y)",
+    "fabs": "abs(x)", "absolute": "abs(x)", "abs": "abs(x)",
+    "pow": "x**k (k an integer or half-integer from -7 to 8)",
+    "power": "x**k (k an integer or half-integer from -7 to 8)",
+    "float_power": "x**k (k an integer or half-integer from -7 to 8)", "square": "x * x",
+    "sinh": _ALTERNATIVES["sinh"], "cosh": _ALTERNATIVES["cosh"],
+    "asinh": "fgc.log(x + fgc.sqrt(x * x + 1))", "arcsinh": "fgc.log(x + fgc.sqrt(x * x + 1))",
+    "acosh": "fgc.log(x + fgc.sqrt(x * x - 1))", "arccosh": "fgc.log(x + fgc.sqrt(x * x - 1))",
+    "atanh": "fgc.log((1 + x) / (1 - x)) / 2", "arctanh": "fgc.log((1 + x) / (1 - x)) / 2",
+    "log10": "fgc.log(x) / math.log(10)", "log2": "fgc.log(x) / math.log(2)",
+    "log1p": "fgc.log(1 + x)", "expm1": "fgc.exp(x) - 1", "exp2": "fgc.exp(x * math.log(2))",
+    "degrees": "x * (180 / math.pi)", "rad2deg": "x * (180 / math.pi)",
+    "radians": "x * (math.pi / 180)", "deg2rad": "x * (math.pi / 180)",
+    "dist": "fgc.sqrt(dx * dx + dy * dy + ...) (fgc.hypot(dx, dy) in 2D)",
+    "norm": "fgc.sqrt(x * x + y * y + ...) (fgc.hypot(x, y) in 2D)",
+    "cbrt": "fgc.exp(fgc.log(x) / 3) for x > 0 (every backend emits integer and half-integer "
+            "powers only)",
+    **{n: _SMOOTH for n in ("sign", "copysign", "floor", "ceil", "trunc", "fmod", "remainder",
+                            "modf", "maximum", "minimum", "fmax", "fmin", "clip", "round",
+                            "rint", "fix", "heaviside", "max", "min")},
+    **{n: _NO_TEST for n in ("isfinite", "isnan", "isinf", "isclose", "allclose", "where")},
+}
+_LIBRARY_FRAMES = ("sympy", "numpy", "fgc.", "mpmath")
+
+
+def called_function(exc: BaseException):
+    """The function whose call, written in the user's code, raised ``exc``, or None.
+
+    The innermost traceback frame outside sympy, numpy and fgc is the user's residual (or a
+    helper it calls); the instruction it stopped at is a call whose source span names the
+    function (``math.atan2(...)``, ``np.linalg.norm(v)``, or a name imported with ``from math
+    import atan2``), resolved in that frame's namespace."""
+    import ast
+    import builtins
+    import linecache
+
+    tb, user = exc.__traceback__, None
+    while tb is not None:
+        if not tb.tb_frame.f_globals.get("__name__", "").startswith(_LIBRARY_FRAMES):
+            user = tb
+        tb = tb.tb_next
+    if user is None:
+        return None
+    frame = user.tb_frame
+    try:
+        line, end, col, end_col = list(frame.f_code.co_positions())[user.tb_lasti // 2]
+        lines = [x.encode() for x in linecache.getlines(frame.f_code.co_filename,
+                                                        frame.f_globals)[line - 1:end]]
+        if line is None or end is None or col is None or end_col is None or not lines:
+            return None
+        joined = b"".join(lines)  # positions are UTF-8 byte offsets
+        text = joined[col:len(joined) - len(lines[-1]) + end_col]
+        node = ast.parse(text.decode().strip(), mode="eval").body
+    except (IndexError, SyntaxError, UnicodeDecodeError, ValueError, TypeError):
+        return None
+    if not isinstance(node, ast.Call):
+        return None
+
+    def resolve(n):
+        if isinstance(n, ast.Name):
+            for scope in (frame.f_locals, frame.f_globals, vars(builtins)):
+                if n.id in scope:
+                    return scope[n.id]
+            raise LookupError(n.id)
+        if isinstance(n, ast.Attribute):
+            return getattr(resolve(n.value), n.attr)
+        raise LookupError(type(n).__name__)
+
+    try:
+        return resolve(node.func)
+    except Exception:  # noqa: BLE001 - an expression we cannot resolve: no better message
+        return None
+
+
+def library_function_error(factor: str, exc: BaseException) -> DslError | None:
+    """The :class:`DslError` for a ``math`` or ``numpy`` function called on the symbolic values
+    a residual is traced with, naming the function and the ``fgc.`` function (or expression) to
+    write instead; None when the failing call is not one of theirs."""
+    import numpy as np
+
+    fn = called_function(exc)
+    if fn is None:
+        return None
+    module = getattr(fn, "__module__", None) or ""
+    name = getattr(fn, "__name__", "")
+    if isinstance(fn, np.ufunc):
+        module = "numpy"
+    if module == "math":
+        shown = f"math.{name}"
+    elif module == "numpy" or module.startswith("numpy."):
+        sub = module.split(".")[1] if module.count(".") and not module.split(".")[1].startswith(
+            "_") else ""
+        shown = f"np.{sub + '.' if sub else ''}{name}"
+    else:
+        return None
+    instead = _REPLACEMENTS.get(name, f"one of {_LISTED}")
+    tail = (f"write {instead} instead (fgc's functions work on numbers and on symbolic values)"
+            if "fgc." in instead or instead.startswith(("x", "abs")) else f"use {instead}")
+    return DslError(f"factor '{factor}': {shown}() works on numbers only, not on the symbolic "
+                    f"values a residual is traced with; {tail}")

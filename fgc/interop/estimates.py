@@ -2,19 +2,26 @@
 
 Backends key their results by the Program's variable keys (``str`` of the graph's keys);
 :func:`graph_values` maps them back to the user's key objects (an int key stays an int).
+A ``gtsam.Values`` under the same keys: :func:`fgc.interop.to_gtsam.values_to_gtsam` (or a
+result's ``gtsam_values()``).
 
 File formats, chosen by :func:`write_values` from the extension:
 
 - ``.g2o``: ``VERTEX_SE2 id x y θ``, ``VERTEX_SE3:QUAT id x y z qx qy qz qw``, ``VERTEX_XY id x
-  y``, ``VERTEX_TRACKXYZ id x y z``. Int keys are the ids; other keys get their index in the
-  graph's variable order, written first as ``# fgc key <id> <key>`` comment lines. Variables of
-  other types (velocities, biases, rotations) cannot be g2o vertices and are refused.
+  y``, ``VERTEX_TRACKXYZ id x y z``, written so that GTSAM's readers (``readG2o``, ``load2D``,
+  ``load3D``) give back the graph's keys: a pose's int key is its id; a point keyed ``"l<j>"``
+  (GTSAM's landmark Symbol ``L(j)``, as a dataset's landmarks are keyed) is written with id
+  ``j``, which those readers key as ``L(j)`` again. Other keys get their index in the graph's
+  variable order, listed first as ``# fgc key <id> <key>`` comment lines (an int-keyed point is
+  written with its int, which GTSAM reads back as ``L(int)``). Variables of other types
+  (velocities, biases, rotations) cannot be g2o vertices and are refused.
 - ``.tum`` / ``.txt``: TUM trajectory lines ``t x y z qx qy qz qw`` for the Pose2 / Pose3
   variables (a Pose2 at z = 0, rotated about z). fgc graphs carry no times, so ``t`` is the
   pose's index in key order (0, 1, 2, …); other variables are not written.
-- ``.csv``: ``key,type,<storage...>`` one row per variable, storage as the type's
-  ``storage_names`` (a header line per type would differ, so the names are in the docs of each
-  type: Pose2 x y c s, Pose3 R00..R22 tx ty tz, ...).
+- ``.csv``: a header ``key,type,<names>`` and one row per variable; the names are the union of
+  the variables' ``storage_names`` in order of first use (Pose2 ``x y c s``, Pose3 ``R00..R22
+  tx ty tz``, Point3 ``x y z``, ...), each row filling its own type's columns and leaving the
+  others empty. A key is written as it is (an int as its digits).
 """
 
 from __future__ import annotations
@@ -61,10 +68,19 @@ def values_from_storage(program, storage: dict) -> dict[str, LieGroup]:
 
 
 def values_json(values: dict[Key, LieGroup]) -> dict:
-    """JSON-able {str(key): {"key": key (int stays int), "type": name, "value": storage}}."""
-    return {str(k): {"key": k, "type": type(v).__name__,
-                     "value": [float(x) for x in np.asarray(v.to_storage(), float)]}
-            for k, v in values.items()}
+    """JSON-able {str(key): {"key": key (int stays int), "type": name, "value": storage}}, and
+    ``"gtsam_key"`` (the int GTSAM key: the int itself, or the Symbol's key for ``"x1"``) when
+    the key stands for one."""
+    from fgc.interop.to_gtsam import gtsam_key
+
+    out = {}
+    for k, v in values.items():
+        entry = {"key": k, "type": type(v).__name__,
+                 "value": [float(x) for x in np.asarray(v.to_storage(), float)]}
+        if (g := gtsam_key(k)) is not None:
+            entry["gtsam_key"] = g
+        out[str(k)] = entry
+    return out
 
 
 def _quaternion(m: np.ndarray) -> tuple[float, float, float, float]:
@@ -99,17 +115,39 @@ def _fmt(numbers) -> str:
     return " ".join(f"{float(x):.17g}" for x in numbers)
 
 
-def g2o_text(values: dict[Key, LieGroup]) -> str:
-    ids = {}
-    header = []
-    for i, k in enumerate(values):
+def _landmark_index(key) -> int | None:
+    """j for a point keyed ``"l<j>"`` (GTSAM's ``L(j)``, which its g2o readers give a
+    ``VERTEX_XY j`` / ``VERTEX_TRACKXYZ j``)."""
+    if isinstance(key, str) and key[:1] == "l" and key[1:].isdigit() and key[1:].isascii():
+        return int(key[1:])
+    return None
+
+
+def g2o_ids(values: dict[Key, LieGroup]) -> tuple[dict, list[str]]:
+    """{key: g2o vertex id} and the ``# fgc key`` comment lines (module docstring)."""
+    ids, header = {}, []
+    for i, (k, v) in enumerate(values.items()):
+        point = isinstance(v, (Point2, Point3))
         if isinstance(k, int) and not isinstance(k, bool) and k >= 0:
             ids[k] = k
+        elif point and _landmark_index(k) is not None:
+            ids[k] = _landmark_index(k)
         else:
             ids[k] = i
             header.append(f"# fgc key {i} {k}")
-    if len(set(ids.values())) != len(ids):
-        raise FgcError("g2o export: int keys and other keys' indices collide; use .csv")
+    for kind in (False, True):  # poses and points are separate key spaces in GTSAM's readers
+        taken: dict = {}
+        for k, v in values.items():
+            if isinstance(v, (Point2, Point3)) == kind:
+                if ids[k] in taken:
+                    raise FgcError(f"g2o export: variables {taken[ids[k]]!r} and {k!r} would "
+                                   f"both be vertex {ids[k]}; use .csv")
+                taken[ids[k]] = k
+    return ids, header
+
+
+def g2o_text(values: dict[Key, LieGroup]) -> str:
+    ids, header = g2o_ids(values)
     lines = []
     for k, v in values.items():
         if isinstance(v, Pose2):
@@ -140,10 +178,14 @@ def tum_text(values: dict[Key, LieGroup]) -> str:
 
 
 def csv_text(values: dict[Key, LieGroup]) -> str:
+    names = list(dict.fromkeys(n for v in values.values() for n in type(v).storage_names))
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["key", "type", *names])
     for k, v in values.items():
-        w.writerow([k, type(v).__name__, *(f"{float(x):.17g}" for x in v.to_storage())])
+        cells = dict(zip(type(v).storage_names, v.to_storage(), strict=True))
+        w.writerow([k, type(v).__name__, *(f"{float(cells[n]):.17g}" if n in cells else ""
+                                           for n in names)])
     return buf.getvalue()
 
 

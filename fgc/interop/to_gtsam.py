@@ -13,6 +13,7 @@ above :data:`FD_TOLERANCE`, and as a different optimum.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -92,6 +93,40 @@ def _read_value(values, t: type[LieGroup], key: int) -> LieGroup:
         return value_from_gtsam(t, values.atVector(key) if t not in (Point2, Point3)
                                 else (values.atPoint2 if t is Point2 else values.atPoint3)(key))
     raise FgcError(f"cannot read a {t.__name__} from gtsam.Values ({gtsam.__name__})")
+
+
+_SYMBOL_KEY = re.compile(r"([A-Za-z])(\d+)")
+
+
+def gtsam_key(key) -> int | None:
+    """The GTSAM key an fgc key stands for: an int is itself, a string that is a letter and an
+    index (``"x1"``, ``"l5"``: how :func:`fgc.from_gtsam` and the dataset reader name a
+    ``gtsam.Symbol``) is that Symbol's key; None for any other key (``"landmark"``)."""
+    if isinstance(key, (int, np.integer)) and not isinstance(key, bool):
+        return int(key) if 0 <= key < 2**64 else None
+    m = _SYMBOL_KEY.fullmatch(key) if isinstance(key, str) else None
+    if m is None or int(m.group(2)) >= 2**56:  # a Symbol keeps 56 bits for the index
+        return None
+    return int(_gtsam().Symbol(m.group(1), int(m.group(2))).key())
+
+
+def values_to_gtsam(values: dict, keys: dict | None = None):
+    """fgc values {key: value} (a solve's ``result.user_values``, ``graph_values``) as a
+    ``gtsam.Values`` under the user's keys: an int key stays that int, ``"x1"`` / ``"l5"``
+    become ``gtsam.Symbol('x', 1)`` / ``Symbol('l', 5)`` (:func:`gtsam_key`); ``keys``
+    {fgc key: GTSAM key} names any other key (FgcError naming a key that has neither)."""
+    gtsam = _gtsam()
+    out, used = gtsam.Values(), {}
+    for k, v in values.items():
+        g = (keys or {}).get(k, gtsam_key(k))
+        if g is None:
+            raise FgcError(f"variable {k!r}: no GTSAM key for it (GTSAM keys are ints or "
+                           "Symbols such as 'x1'); pass keys={fgc key: GTSAM key}")
+        if g in used:
+            raise FgcError(f"variables {used[g]!r} and {k!r} map to the same GTSAM key {g}")
+        used[g] = k
+        out.insert(int(g), value_to_gtsam(v))
+    return out
 
 
 # --------------------------------------------------------------------------------------------

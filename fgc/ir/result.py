@@ -25,6 +25,14 @@ class SolveResult:
         """``values`` by the graph's own keys (an int key is an int again)."""
         return {self.keys.get(k, k): v for k, v in self.values.items()}
 
+    def gtsam_values(self, keys: dict | None = None):
+        """The estimate as a ``gtsam.Values`` under the graph's own keys (an int stays that
+        int, ``"x1"`` is ``gtsam.Symbol('x', 1)``; ``keys`` maps any other key):
+        :func:`fgc.interop.to_gtsam.values_to_gtsam` of :attr:`user_values`."""
+        from fgc.interop.to_gtsam import values_to_gtsam
+
+        return values_to_gtsam(self.user_values, keys)
+
     @property
     def converged(self) -> bool:
         return self.status == "converged"

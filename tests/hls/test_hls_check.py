@@ -166,7 +166,7 @@ def test_tcl_uses_vitis_headers_one_clock_and_the_reference(tmp_path):
                             name="chk_tcl")
     proj = emit(program, tmp_path / "p", HlsConfig(scalar="double", clock_ns=5.0))
     tcl = (proj.directory / "run_hls.tcl").read_text()
-    code = [line for line in tcl.splitlines() if not line.startswith("#")]
+    code = [line.strip() for line in tcl.splitlines() if not line.startswith("#")]
     assert not any("-I" in line or "isystem" in line or "ap_types" in line for line in code)
     assert 'set cflags "-std=c++14"' in code
     assert code.count("create_clock -period 5 -name default") == 1

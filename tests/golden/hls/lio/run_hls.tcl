@@ -1,6 +1,11 @@
 # generated from template run_hls.tcl.jinja by fgc 0.1.0 — do not edit
 # Vitis HLS project of lio_top (lio).
-#   vitis_hls -f run_hls.tcl            C simulation, synthesis and C/RTL co-simulation
+#   vitis_hls -f run_hls.tcl            C simulation, synthesis, C/RTL co-simulation, and the IP
+#                                       exported for Vivado's IP catalog (export_design, under
+#                                       lio_prj/solution1/impl/; add that folder to
+#                                       Vivado's IP repositories)
+#   FGC_HLS_STEPS="csim" vitis_hls -f run_hls.tcl      only some steps (any of csim csynth
+#                                       cosim export; cosim and export need csynth in the same run)
 # The testbench reads data.txt (write it with fgc.ir.datafile.write_data), compares its result with
 # reference.txt (the simulator's, written beside the data; exit 4 on a mismatch) and writes
 # result.txt. No include path is given: Vitis's own ap_fixed.h and hls_stream.h are used (the
@@ -16,7 +21,34 @@ add_files -tb reference.txt
 open_solution -reset solution1 -flow_target vivado
 set_part {xc7z045ffg900-2}
 create_clock -period 6.99301 -name default
-csim_design -argv "data.txt result.txt reference.txt"
-csynth_design
-cosim_design -argv "data.txt result.txt reference.txt"
+if {[info exists ::env(FGC_HLS_STEPS)]} {
+  set steps $::env(FGC_HLS_STEPS)
+} else {
+  set steps "csim csynth cosim export"
+}
+foreach step $steps {
+  if {[lsearch -exact {csim csynth cosim export} $step] < 0} {
+    puts stderr "run_hls.tcl: unknown step '$step' in FGC_HLS_STEPS (csim csynth cosim export)"
+    exit 2
+  }
+}
+set synthesised [expr {[lsearch -exact $steps csynth] >= 0}]
+foreach step {cosim export} {
+  if {[lsearch -exact $steps $step] >= 0 && !$synthesised} {
+    puts stderr "run_hls.tcl: step '$step' needs csynth in the same run (the project is reset)"
+    exit 2
+  }
+}
+if {[lsearch -exact $steps csim] >= 0} {
+  csim_design -argv "data.txt result.txt reference.txt"
+}
+if {$synthesised} {
+  csynth_design
+}
+if {[lsearch -exact $steps cosim] >= 0} {
+  cosim_design -argv "data.txt result.txt reference.txt"
+}
+if {[lsearch -exact $steps export] >= 0} {
+  export_design -format ip_catalog -rtl verilog -display_name "fgc lio_top"
+}
 exit
