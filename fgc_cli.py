@@ -10,8 +10,12 @@ runs the package's (heavy) ``__init__`` first.
 
 from __future__ import annotations
 
+import atexit
+import contextlib
+import os
 import signal
 import sys
+from typing import NoReturn
 
 EXIT_INTERRUPTED = 130
 
@@ -34,20 +38,39 @@ def _by_interrupt(exc: BaseException) -> bool:
     return False
 
 
+def _exit_interrupted() -> NoReturn:
+    """Exit with status 130 after the clean-up of a normal exit (the ``atexit`` functions:
+    temporary folders), then at once: CPython ends a process whose interrupt was raised inside
+    ``exec``/``eval`` of a string (dataclasses and sympy define functions that way) by SIGINT
+    at exit, even when the interrupt was handled, so a plain return would not always be 130."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # a second Ctrl-C must not stop the clean-up
+    try:
+        atexit._run_exitfuncs()
+    finally:
+        for stream in (sys.stdout, sys.stderr):
+            with contextlib.suppress(Exception):
+                stream.flush()
+        os._exit(EXIT_INTERRUPTED)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run ``fgc`` (:func:`fgc.app.cli.main`); an interrupt before it runs is handled here."""
     try:
         from fgc.app.cli import main as cli_main
     except KeyboardInterrupt:
-        return _interrupted()
+        _interrupted()
+        _exit_interrupted()
     except ImportError as exc:  # an extension module interrupted while it initialised
         if _by_interrupt(exc):
-            return _interrupted()
+            _interrupted()
+            _exit_interrupted()
         raise
     try:
         code = cli_main(argv)
     except KeyboardInterrupt:  # between the import and cli_main's own handler
-        return _interrupted()
+        code = _interrupted()
+    if code == EXIT_INTERRUPTED:
+        _exit_interrupted()
     # the command is done: a Ctrl-C now (while the interpreter exits and removes temporary
     # folders) must neither print a traceback nor stop that clean-up
     signal.signal(signal.SIGINT, signal.SIG_IGN)

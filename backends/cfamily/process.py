@@ -2,8 +2,9 @@
 
 ``make`` starts compilers of its own; ``subprocess.run`` kills only its direct child when the
 caller is interrupted, so the compilers would go on writing into a folder fgc is removing. Here
-the tool runs in a session (process group) of its own and the whole group is killed on any
-exception, Ctrl-C's KeyboardInterrupt included. fgc's own handler then prints one line.
+the tool runs in a session (process group) of its own and the whole group is stopped on any
+exception, Ctrl-C's KeyboardInterrupt included: SIGTERM first, so the compilers remove their
+temporary files, then SIGKILL. fgc's own handler then prints one line.
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ import contextlib
 import os
 import signal
 import subprocess
+import time
 from pathlib import Path
 
 
@@ -29,10 +31,32 @@ def run_tool(args: list[str], cwd: str | Path, timeout: float) -> subprocess.Com
     return subprocess.CompletedProcess(args, proc.returncode, out, err)
 
 
+TERM_GRACE_S = 2.0  # how long make and the compilers get to remove their temporary files
+
+
 def _kill_group(proc: subprocess.Popen) -> None:
+    """SIGTERM to the tool's process group (make deletes a half-written target, the compiler
+    driver its temporary files in $TMPDIR), SIGKILL to what is left after TERM_GRACE_S."""
     with contextlib.suppress(OSError):
-        os.killpg(proc.pid, signal.SIGKILL)
+        os.killpg(proc.pid, signal.SIGTERM)
+    deadline = time.monotonic() + TERM_GRACE_S
+    with contextlib.suppress(BaseException):  # a second Ctrl-C: go straight to SIGKILL
+        proc.communicate(timeout=TERM_GRACE_S)
+        while time.monotonic() < deadline and _group_alive(proc.pid):  # make's children
+            time.sleep(0.02)
+    with contextlib.suppress(OSError):
+        os.killpg(proc.pid, signal.SIGKILL)  # stragglers of the group (and its leader)
     with contextlib.suppress(OSError):
         proc.kill()
-    with contextlib.suppress(BaseException):  # a second Ctrl-C must not leave a zombie behind
+    with contextlib.suppress(BaseException):  # reap it: no zombie left behind
         proc.communicate()
+
+
+def _group_alive(pgid: int) -> bool:
+    try:
+        os.killpg(pgid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:
+        return True
+    return True

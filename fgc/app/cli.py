@@ -1265,4 +1265,6 @@ def _error_line(args, text: str) -> None:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from fgc_cli import main as entry  # the console script's entry: Ctrl-C handled throughout
+
+    sys.exit(entry())
