@@ -461,3 +461,59 @@ def test_every_fault_with_real_builds_and_two_specs(warm, tmp_path, monkeypatch)
             shutil.rmtree(case)
     print("native cache faults:", counts)
     assert counts == {"faults": 3 * len(FAULTS), "rebuilds": 3 * len(FAULTS), "stale": 0}
+
+
+# --------------------------------------------------------------------------------------------
+# the HLS stream's cached projects (hls-stream/<hash>)
+# --------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("how", ["truncate", "empty", "delete manifest", "foreign"])
+def test_a_damaged_hls_stream_project_is_emitted_again(how, warm, tmp_path, monkeypatch):
+    from fgc_backends.hls.config import HlsConfig
+    from fgc_backends.hls.stream import _cached_project
+
+    spec, _ = warm
+    monkeypatch.setenv("FGC_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setattr(cache, "_SWEPT", set())
+    config = HlsConfig(scalar="double")
+    first = _cached_project(spec.program, config)
+    clean = {p.name: p.read_bytes() for p in first.files}
+    assert MANIFEST not in clean and cache.check_manifest(first.directory,
+                                                          first.directory.name) is None
+    victim = next(p for p in first.files if p.suffix == ".cpp")
+    if how == "truncate":
+        victim.write_bytes(victim.read_bytes()[:100])
+    elif how == "empty":
+        victim.write_bytes(b"")
+    elif how == "delete manifest":
+        (first.directory / MANIFEST).unlink()
+    else:  # the folder of another hash copied under this one
+        text = (first.directory / MANIFEST).read_text()
+        (first.directory / MANIFEST).write_text(text.replace(first.directory.name, "f" * 24))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        again = _cached_project(spec.program, config)
+    msgs = _warnings(caught)
+    assert len(msgs) == 1 and str(first.directory) in msgs[0], msgs
+    assert {p.name: p.read_bytes() for p in again.files} == clean
+    assert not _leftovers(tmp_path / "cache")
+
+
+def test_an_unwritable_cache_emits_the_hls_stream_project_in_a_temporary_folder(
+        warm, tmp_path, monkeypatch):
+    from fgc_backends.hls.config import HlsConfig
+    from fgc_backends.hls.stream import _cached_project
+
+    spec, _ = warm
+    root = tmp_path / "cache"
+    root.mkdir()
+    (root / "hls-stream").write_text("not a folder")
+    monkeypatch.setenv("FGC_CACHE_DIR", str(root))
+    monkeypatch.setattr(cache, "_UNUSABLE", set())
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        project = _cached_project(spec.program, HlsConfig(scalar="double"))
+    assert len(_warnings(caught)) == 1
+    assert not project.directory.is_relative_to(root) and project.files
+    assert sorted(p.name for p in root.iterdir()) == ["hls-stream"]
