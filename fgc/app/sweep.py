@@ -153,13 +153,12 @@ def open_executor(jobs: int | None = None, address: str | None = None) -> Iterat
         try:
             yield Pool(executor, n, f"{n} local processes")
         except BaseException:  # Ctrl-C (or an error): stop the running groups, start no more
-            executor.shutdown(wait=False, cancel_futures=True)
             for proc in list((getattr(executor, "_processes", None) or {}).values()):
                 with suppress(OSError):
-                    os.kill(proc.pid, signal.SIGINT)  # their task unwinds, cleaning up
+                    os.kill(proc.pid, signal.SIGINT)  # a running group unwinds, cleaning up
+            executor.shutdown(wait=True, cancel_futures=True)  # all workers gone on return
             raise
-        finally:
-            executor.shutdown(wait=True)
+        executor.shutdown(wait=True)
         return
     client_class = _dask_client_class()
     try:
