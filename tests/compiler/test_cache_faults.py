@@ -18,8 +18,8 @@ never answer from a stale or foreign build.
   leftovers, and nothing else.
 
 The derivation cache's own corruption fuzz (truncate, flip, swap; 10 cases, 200 heavy) is in
-tests/test_cache.py; here its remaining faults (empty entry, entry deleted mid-run,
-interrupted write, stale temporaries). Interrupts of whole commands: tests/test_interrupts.py.
+tests/compiler/test_cache.py; here its remaining faults (empty entry, entry deleted mid-run,
+interrupted write, stale temporaries). Interrupts of whole commands: tests/app/test_interrupts.py.
 """
 
 from __future__ import annotations
@@ -396,9 +396,13 @@ def test_an_interrupted_derivation_write_leaves_no_temporary(tmp_path, monkeypat
 
 def _forget_memos() -> None:
     """Drop the in-process memos of derived/fused/lowered work (the disk cache is then read)."""
-    from test_cache import _forget_memos as forget
+    from fgc.compiler import derive, fuse, lower, storage
 
-    forget()
+    derive._MEMO.clear()
+    derive._KEYS.clear()
+    fuse._MEMO.clear()
+    lower._LOWERED.clear()
+    storage._STRUCTURES.clear()
 
 
 # --------------------------------------------------------------------------------------------

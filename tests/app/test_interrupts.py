@@ -8,7 +8,8 @@ terminal starts a foreground job, and sends SIGINT to the whole process group af
 random delay (at least 0.4 s: before that the Python interpreter itself is starting — its
 ``site`` module, the environment's ``.pth`` files — and no program's code runs yet), as Ctrl-C
 does. A run that finished before the signal (exit 0) is counted apart; the tests check that most
-runs were really interrupted. 4 cases by default, 20 with ``-m heavy``.
+runs were really interrupted. 4 cases by default; with ``-m heavy`` 20 more and 12 of verify,
+``run --backend hls``, ``stream --backend native`` and ``sweep``.
 """
 
 from __future__ import annotations
@@ -51,6 +52,14 @@ COMMANDS = {
     "simulate": ["simulate", "{spec}", "--json", "{out}/sim.json"],
     "run native": ["run", "{spec}", "--backend", "native"],
     "stream": ["stream", "{spec}", "--window", "2", "--json", "{out}/stream.json"],
+}
+# the other commands that build, run subprocesses or workers (heavy only)
+MORE_COMMANDS = {
+    "verify": ["verify", "{spec}"],
+    "run hls": ["run", "{spec}", "--backend", "hls"],
+    "stream native": ["stream", "{spec}", "--window", "2", "--backend", "native"],
+    "sweep": ["sweep", "{spec}", "--units", "1,2", "--precision", "float32,float64", "--jobs",
+              "2", "--out", "{out}"],
 }
 TEMP = re.compile(r"\.(tmp|built|old)\d+$")
 
@@ -100,9 +109,9 @@ def interrupt(name: str, delay: float, spec: Path, cache: Path, work: Path) -> s
     out, tmp = work / "out", work / "tmp"
     out.mkdir(parents=True)
     tmp.mkdir()
-    if name == "run native":  # a cold build: the interrupt lands in make or g++ most often
+    if "native" in name:  # a cold build: the interrupt lands in make or g++ most often
         shutil.rmtree(cache / "native", ignore_errors=True)
-    args = [a.format(spec=spec, out=out) for a in COMMANDS[name]]
+    args = [a.format(spec=spec, out=out) for a in {**COMMANDS, **MORE_COMMANDS}[name]]
     proc = subprocess.Popen([sys.executable, "-m", "fgc_cli", *args], env=_env(tmp, cache),
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                             start_new_session=True)
@@ -132,10 +141,9 @@ def interrupt(name: str, delay: float, spec: Path, cache: Path, work: Path) -> s
     return outcome
 
 
-def _interrupts(n: int, setup, tmp_path, max_delay: float) -> dict:
+def _interrupts(n: int, setup, tmp_path, max_delay: float, names=tuple(COMMANDS)) -> dict:
     spec, cache = setup
     rng = random.Random(34)
-    names = list(COMMANDS)
     counts = {"interrupted": 0, "finished": 0}
     for i in range(n):
         name = names[i % len(names)]
@@ -153,6 +161,13 @@ def test_interrupts(setup, tmp_path):
 @pytest.mark.heavy
 def test_interrupts_20(setup, tmp_path):
     _interrupts(20, setup, tmp_path, 6.0)
+
+
+@pytest.mark.heavy
+def test_interrupts_of_the_other_commands(setup, tmp_path):
+    """verify, run --backend hls (make csim), stream --backend native and sweep (worker
+    processes, which ignore Ctrl-C while idle and unwind on it while working)."""
+    _interrupts(12, setup, tmp_path, 12.0, tuple(MORE_COMMANDS))
 
 
 def test_an_interrupted_import_of_gtsam_is_an_interrupt_not_a_missing_package(monkeypatch):
