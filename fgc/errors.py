@@ -25,3 +25,21 @@ class StructureError(FgcError):
 
 class DataError(FgcError):
     """A measurement, initial value or data file is malformed or non-finite."""
+
+
+def caused_by_interrupt(exc: BaseException | None) -> bool:
+    """Whether ``exc`` is, or was raised because of, a KeyboardInterrupt (Ctrl-C): an extension
+    module interrupted while it initialises reports an ImportError whose cause is the interrupt,
+    and an error raised while unwinding from one carries it as its context. Such an error is an
+    interrupt, not a missing package or a bug."""
+    seen: set[int] = set()
+    todo = [exc]
+    while todo:
+        exc = todo.pop()
+        if exc is None or id(exc) in seen:
+            continue
+        if isinstance(exc, KeyboardInterrupt):
+            return True
+        seen.add(id(exc))
+        todo += [exc.__cause__, exc.__context__]
+    return False

@@ -13,6 +13,7 @@ from pathlib import Path
 from fgc.errors import FgcError
 from fgc.ir.datafile import ProblemData, write_data
 from fgc.ir.program import Program
+from fgc_backends.cfamily.process import run_tool
 from fgc_backends.cfamily.results import (
     REFERENCE_FILE,
     HlsResult,
@@ -61,8 +62,7 @@ def run_command(project: HlsProject, args: list[str], what: str) -> str:
     and raises :class:`HlsMismatchError` if the testbench printed a MISMATCH line (it built and
     ran: its check against the reference said no), else :class:`HlsBuildError`."""
     try:
-        done = subprocess.run(args, cwd=project.directory, capture_output=True, text=True,
-                              timeout=BUILD_TIMEOUT_S, check=False)
+        done = run_tool(args, project.directory, BUILD_TIMEOUT_S)  # killed if interrupted
     except subprocess.TimeoutExpired:
         raise HlsBuildError(f"{what} in {project.directory} took over "
                             f"{BUILD_TIMEOUT_S} s") from None

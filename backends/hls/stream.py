@@ -25,6 +25,8 @@ is not emitted.
 
 from __future__ import annotations
 
+import atexit
+import contextlib
 import hashlib
 import os
 import shutil
@@ -34,6 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fgc.compiler.cache import MANIFEST
 from fgc.ir.codes import REASONS, STATUSES
 from fgc.ir.datafile import ProblemData
 from fgc_backends.cfamily.tables import factor_data_words
@@ -119,7 +122,7 @@ def _working_copy(owner, scalar: str, out_dir, name: str, stream=None) -> None:
     owner._cached = _cached_project(owner.template, config, stream)
     work = Path(out_dir) / name
     shutil.rmtree(work, ignore_errors=True)
-    shutil.copytree(owner._cached.directory, work)
+    shutil.copytree(owner._cached.directory, work, ignore=shutil.ignore_patterns(MANIFEST))
     owner.project = HlsProject(work, owner._cached.name,
                                tuple(work / f.name for f in owner._cached.files), config)
     owner._built = (owner._cached.directory / _BUILT).is_file()
@@ -153,10 +156,12 @@ def _project_key(template, config) -> str:
 def _cached_project(template, config, stream=None):
     """The template's emitted project in ``<fgc cache>/hls-stream/<hash>`` (emitted once per
     content hash; a stream copies it into its own folder, as two streams may run at once);
-    ``stream``: the on-chip window's layout (emitted with its stream top)."""
-    from fgc.compiler.cache import cache_dir
+    ``stream``: the on-chip window's layout (emitted with its stream top). A cached project is
+    used only if its manifest (the hash, the SHA-256 of every file) holds, else it is emitted
+    again with one warning; an unwritable cache emits into a temporary folder (one warning)."""
+    from fgc.compiler.cache import cache_dir, check_manifest, discard_folder, unusable
     from fgc_backends.cfamily.names import identifier
-    from fgc_backends.hls.emitter import HlsProject, emit
+    from fgc_backends.hls.emitter import HlsProject
 
     key = _project_key(template, config)
     if stream is not None:
@@ -165,35 +170,70 @@ def _cached_project(template, config, stream=None):
             b = stream.batch
             key += "-b" + hashlib.sha256(f"{b.template.to_json()}{b.keyframes}".encode()
                                          ).hexdigest()[:12]
-    folder = cache_dir() / "hls-stream" / key
-    if not folder.is_dir():
-        staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
-        shutil.rmtree(staging, ignore_errors=True)
+    root, folder = cache_dir(), None
+    if root is not None:
+        folder = root / "hls-stream" / key
+        if folder.exists() and (why := check_manifest(folder, key)) is not None:
+            discard_folder(folder, why)
+        if not folder.is_dir():
+            try:
+                _emit_into(template, config, stream, folder)
+            except OSError as exc:  # read-only or full: emit outside the cache
+                unusable(root, f"cannot write {folder.parent}: {exc.strerror or exc}")
+                folder = None
+    if folder is None:
+        tmp = tempfile.mkdtemp(prefix="fgc-hls-stream-")
+        atexit.register(_remove, tmp)
+        folder = Path(tmp) / key
+        _emit_into(template, config, stream, folder)
+    files = tuple(sorted(p for p in folder.iterdir()
+                         if p.is_file() and p.name not in (_BUILT, MANIFEST)))
+    return HlsProject(folder, identifier(template.name), files, config)
+
+
+def _emit_into(template, config, stream, folder: Path) -> None:
+    """Emit into a private staging folder with its manifest, then move it to ``folder`` (first
+    one wins); the staging folder never outlives this call, interrupted or not."""
+    from fgc.compiler.cache import write_manifest
+    from fgc_backends.hls.emitter import emit
+
+    staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
+    shutil.rmtree(staging, ignore_errors=True)
+    try:
         if stream is not None and stream.batch is not None:
             staging.mkdir(parents=True)
             emit(stream.batch.template, staging, config, stream=stream.batch, kernel_only=True)
         emit(template, staging, config, stream=stream)
-        try:
+        write_manifest(staging, folder.name)
+        with contextlib.suppress(OSError):  # another process finished first: use its project
             os.replace(staging, folder)
-        except OSError:  # another process finished first: use its project
-            shutil.rmtree(staging, ignore_errors=True)
-    files = tuple(sorted(p for p in folder.iterdir() if p.is_file() and p.name != _BUILT))
-    return HlsProject(folder, identifier(template.name), files, config)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
 
 
 def _keep_build(project, cached: Path) -> None:
-    """Copy a stream's built project back into the cache (atomically; first one wins)."""
+    """Copy a stream's built project back into the cache (atomically; first one wins), with its
+    manifest; a cache that cannot take it is left as it was (one warning)."""
+    from fgc.compiler.cache import unusable, write_manifest
+
     staging = cached.with_name(f"{cached.name}.built{os.getpid()}")
-    shutil.rmtree(staging, ignore_errors=True)
-    shutil.copytree(project.directory, staging)
-    (staging / _BUILT).write_text("built\n")
     old = cached.with_name(f"{cached.name}.old{os.getpid()}")
+    shutil.rmtree(staging, ignore_errors=True)
     try:
-        os.replace(cached, old)
+        shutil.copytree(project.directory, staging)
+        (staging / _BUILT).write_text("built\n")
+        write_manifest(staging, cached.name)
+        if cached.is_dir():  # (gone if the cache was cleared meanwhile)
+            os.replace(cached, old)
         os.replace(staging, cached)
-    except OSError:
+    except OSError as exc:
+        if not cached.is_dir() and old.is_dir():  # put the unbuilt project back
+            with contextlib.suppress(OSError):
+                os.replace(old, cached)
+        unusable(cached.parent.parent, f"cannot write {cached.parent}: {exc.strerror or exc}")
+    finally:
         shutil.rmtree(staging, ignore_errors=True)
-    shutil.rmtree(old, ignore_errors=True)
+        shutil.rmtree(old, ignore_errors=True)
 
 
 def _native_double():

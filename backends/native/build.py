@@ -9,6 +9,7 @@ from __future__ import annotations
 import subprocess
 
 from fgc.errors import FgcError
+from fgc_backends.cfamily.process import run_tool
 from fgc_backends.native.emitter import NativeProject
 
 BUILD_LOG = "build.log"
@@ -22,12 +23,11 @@ class NativeBuildError(FgcError):
 
 def make(project: NativeProject, target: str = "native") -> str:
     """Run ``make -s <target>`` (``native`` or ``clean``) in the project folder; returns its
-    standard output."""
+    standard output. make and its compilers are killed if this is interrupted."""
     if target not in ("native", "clean"):
         raise ValueError(f"unknown make target {target!r}")
     try:
-        done = subprocess.run(["make", "-s", target], cwd=project.directory, capture_output=True,
-                              text=True, timeout=BUILD_TIMEOUT_S, check=False)
+        done = run_tool(["make", "-s", target], project.directory, BUILD_TIMEOUT_S)
     except subprocess.TimeoutExpired:
         raise NativeBuildError(f"make {target} in {project.directory} took over "
                                f"{BUILD_TIMEOUT_S} s") from None

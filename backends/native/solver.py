@@ -12,18 +12,27 @@ once and keeps the loaded library for later calls.
 
 from __future__ import annotations
 
+import atexit
 import ctypes
 import hashlib
 import os
 import platform
 import shutil
+import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 import fgc
-from fgc.compiler.cache import cache_dir
+from fgc.compiler.cache import (
+    MANIFEST,
+    cache_dir,
+    check_manifest,
+    discard_folder,
+    unusable,
+    write_manifest,
+)
 from fgc.errors import DataError
 from fgc.ir.datafile import ProblemData, check_structure
 from fgc.ir.program import Program
@@ -203,33 +212,63 @@ def default_config(program: Program) -> NativeConfig:
 
 def load(program: Program, config: NativeConfig | None = None) -> NativeSolver:
     """Emit, build and load ``program``'s library, once per content hash: the build lives in
-    ``<fgc cache>/native/<hash>`` and the loaded library is kept for the process."""
+    ``<fgc cache>/native/<hash>`` and the loaded library is kept for the process. A cached build
+    is used only if its manifest says it was built for this hash and every file (the library
+    above all) is byte for byte what was built; else it is rebuilt, with one warning. A cache
+    directory that cannot be written (read-only, full) gives one warning and the build is done
+    in a temporary folder, removed when the process exits."""
     config = config or default_config(program)
     key = project_key(program, config)
     if key not in _LOADED:
-        folder = cache_dir() / "native" / key
-        name = identifier(program.name)
-        if (folder / f"lib{name}.so").is_file():
-            project = NativeProject(folder, name, tuple(sorted(folder.iterdir())), config)
-        else:
-            project = _build(program, config, folder)
-        _LOADED[key] = NativeSolver.load(program, project)
+        _LOADED[key] = NativeSolver.load(program, _project(program, config, key))
     return _LOADED[key]
 
 
-def _build(program: Program, config: NativeConfig, folder: Path) -> NativeProject:
-    """Emit and build in a private folder, then move it into place (parallel builds of the same
-    Program do not see each other's half-written files)."""
+def _project(program: Program, config: NativeConfig, key: str) -> NativeProject:
+    """The built project of ``key``: the cached one if intact, else a new build in the cache,
+    else (the cache cannot be written) one in a temporary folder."""
+    name = identifier(program.name)
+    root = cache_dir()
+    if root is not None:
+        folder = root / "native" / key
+        if folder.exists():
+            why = check_manifest(folder, key, required=(f"lib{name}.so",))
+            if why is None:
+                return NativeProject(folder, name, _files(folder), config)
+            discard_folder(folder, why)
+        try:
+            return _build(program, config, folder, key)
+        except OSError as exc:  # read-only or full: build outside the cache
+            unusable(root, f"cannot write {folder.parent}: {exc.strerror or exc}")
+    tmp = Path(tempfile.mkdtemp(prefix="fgc-native-"))
+    atexit.register(shutil.rmtree, tmp, True)  # the loaded library stays mapped
+    return _build(program, config, tmp / key, key)
+
+
+def _files(folder: Path) -> tuple[Path, ...]:
+    return tuple(sorted(p for p in folder.iterdir() if p.name != MANIFEST))
+
+
+def _build(program: Program, config: NativeConfig, folder: Path, key: str) -> NativeProject:
+    """Emit and build in a private folder, record its manifest, then move it into place
+    (parallel builds of the same Program do not see each other's half-written files; an
+    interrupted or failed build leaves no folder behind)."""
     staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
     shutil.rmtree(staging, ignore_errors=True)
-    project = emit(program, staging, config)
-    make(project, "native")
     try:
-        os.replace(staging, folder)
-    except OSError:  # another process finished first: use its build
+        project = emit(program, staging, config)
+        make(project, "native")
+        write_manifest(staging, key)
+        try:
+            os.replace(staging, folder)
+        except OSError:  # another process finished first: use its build if it is intact
+            if check_manifest(folder, key, required=(project.library.name,)) is not None:
+                shutil.rmtree(folder, ignore_errors=True)
+                os.replace(staging, folder)
+    finally:  # nothing left behind: moved into place, or removed (failed, interrupted)
         shutil.rmtree(staging, ignore_errors=True)
-    files = tuple(folder / p.name for p in project.files)
-    return NativeProject(folder, project.name, files, config)
+    return NativeProject(folder, project.name, tuple(folder / p.name for p in project.files),
+                         config)
 
 
 def run(program: Program, data: ProblemData, config: NativeConfig | None = None) -> HlsResult:

@@ -10,12 +10,13 @@
     fgc report   SPEC [--json F] [--html F]           the compiled design at a glance
     fgc sweep    SPEC --units 1,2,4 --cpe 5,20 ...    design-space exploration, Pareto plot
     fgc metrics  EST.tum REF.tum [--align se3]        ATE / RPE (translation m, rotation deg)
-    fgc cache    info|clear                           the derivation cache ($FGC_CACHE_DIR)
+    fgc cache    info|clear                           derivations and builds ($FGC_CACHE_DIR)
 
 SPEC is a ``.py`` file with ``build(**params)`` returning an ``fgc.Graph`` (``-p KEY=VALUE``), or a
 g2o/TORO file. Solver options are shared by every command. Exit codes: 0 success, 1 verification
 failed (or a solve did not converge), 2 bad input, a non-finite initial error, an output that
-cannot be written or an internal error (one clear line on stderr, never a traceback). Global
+cannot be written or an internal error (one clear line on stderr, never a traceback), 130
+interrupted (Ctrl-C: ``fgc: interrupted``, temporary files removed). Global
 options: ``--version``; ``-q`` prints only the result line; ``-v`` adds stage timings (stderr) and
 progress while factors are derived for the first time (also shown when stderr is a terminal).
 """
@@ -36,11 +37,12 @@ from typing import NoReturn
 import numpy as np
 
 from fgc.app.specs import load_spec
-from fgc.errors import FgcError
+from fgc.errors import FgcError, caused_by_interrupt
 from fgc.frontend.dsl import Graph
 from fgc.ir.codes import ORDERINGS
 
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_INTERRUPTED = 130  # Ctrl-C
 
 
 def parse_params(items: list[str]) -> dict:
@@ -1207,11 +1209,13 @@ def build_parser() -> argparse.ArgumentParser:
         _verbosity_args(p, suppress=True)
         p.set_defaults(func=func)
     _metrics_parser(sub)
-    help_text = "the derivation cache ($FGC_CACHE_DIR, default ~/.cache/fgc): info or clear"
+    help_text = ("fgc's cache ($FGC_CACHE_DIR, default ~/.cache/fgc: derivations, native and "
+                 "HLS-stream builds): info or clear")
     p = sub.add_parser("cache", help=help_text, description=f"fgc cache: {help_text}",
                        epilog="exit status: 0 success", formatter_class=_Formatter)
     p.add_argument("action", choices=("info", "clear"),
-                   help="info: directory, entries per kind, total size; clear: delete the entries")
+                   help="info: directory, entries per kind, total size; clear: delete all of "
+                        "them")
     p.add_argument("--json", action="store_true", dest="json_stdout",
                    help="info as JSON on stdout")
     _verbosity_args(p, suppress=True)
@@ -1221,30 +1225,45 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """Run one command; every error reaches the user as one line on stderr (exit 2), never as a
-    traceback (set FGC_TRACEBACK=1 to see the traceback of an unexpected error)."""
+    traceback (set FGC_TRACEBACK=1 to see the traceback of an unexpected error). Ctrl-C prints
+    ``fgc: interrupted`` and exits 130 (temporary files are removed as the stack unwinds)."""
     args = None
     try:
         args = build_parser().parse_args(argv)
         check_outputs(args)
         return args.func(args)
+    except KeyboardInterrupt:
+        return interrupted()
     except UsageError as exc:
         print(str(exc), file=sys.stderr)
         return EXIT_BAD_INPUT
     except FgcError as exc:
+        if caused_by_interrupt(exc):
+            return interrupted()
         _error_line(args, str(exc))
         return EXIT_BAD_INPUT
     except BrokenPipeError:  # output piped into e.g. `head`: stop quietly, like other tools
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush
         return EXIT_OK
     except OSError as exc:  # a file the user named (spec, data, output) cannot be read/written
+        if caused_by_interrupt(exc):
+            return interrupted()
         _error_line(args, f"{exc.strerror or exc}{_filename(exc)}")
         return EXIT_BAD_INPUT
     except Exception as exc:
+        if caused_by_interrupt(exc):  # e.g. an extension module's ImportError caused by Ctrl-C
+            return interrupted()
         if os.environ.get("FGC_TRACEBACK"):
             raise
         _error_line(args, f"internal error (a bug in fgc; FGC_TRACEBACK=1 shows the traceback): "
                           f"{type(exc).__name__}: {exc}")
         return EXIT_BAD_INPUT
+
+
+def interrupted() -> int:
+    """Ctrl-C: one line on stderr, exit status 130 (128 + SIGINT, as shells report it)."""
+    print("fgc: interrupted", file=sys.stderr, flush=True)
+    return EXIT_INTERRUPTED
 
 
 def _error_line(args, text: str) -> None:
@@ -1255,4 +1274,6 @@ def _error_line(args, text: str) -> None:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from fgc_cli import main as entry  # the console script's entry: Ctrl-C handled throughout
+
+    sys.exit(entry())

@@ -25,11 +25,13 @@ import csv
 import dataclasses
 import json
 import os
+import signal
 import socket
 import sys
+import threading
 import time
 from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -147,8 +149,16 @@ def open_executor(jobs: int | None = None, address: str | None = None) -> Iterat
     ``address`` (``tcp://host:port``) through its ``concurrent.futures`` executor."""
     if address is None:
         n = jobs or os.cpu_count() or 1
-        with cf.ProcessPoolExecutor(max_workers=n) as executor:
+        executor = cf.ProcessPoolExecutor(max_workers=n, initializer=_ignore_interrupts)
+        try:
             yield Pool(executor, n, f"{n} local processes")
+        except BaseException:  # Ctrl-C (or an error): stop the running groups, start no more
+            for proc in list((getattr(executor, "_processes", None) or {}).values()):
+                with suppress(OSError):
+                    os.kill(proc.pid, signal.SIGINT)  # a running group unwinds, cleaning up
+            executor.shutdown(wait=True, cancel_futures=True)  # all workers gone on return
+            raise
+        executor.shutdown(wait=True)
         return
     client_class = _dask_client_class()
     try:
@@ -158,6 +168,25 @@ def open_executor(jobs: int | None = None, address: str | None = None) -> Iterat
     with client:
         n = sum(client.nthreads().values())
         yield Pool(client.get_executor(), n, f"Dask cluster at {address} ({n} worker threads)")
+
+
+def _ignore_interrupts() -> None:
+    """A local worker ignores Ctrl-C while it waits for work (the sweep's process handles it
+    and interrupts the running groups: :func:`_interruptible`), so no worker prints a traceback."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _interruptible(fn, *args):
+    """``fn(*args)`` in a local worker with Ctrl-C raising KeyboardInterrupt while it runs (its
+    temporary folders are removed as it unwinds; the interrupt is returned to the sweep's process
+    as the task's exception, not printed); elsewhere (a Dask thread) just ``fn(*args)``."""
+    if threading.current_thread() is not threading.main_thread():
+        return fn(*args)
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        return fn(*args)
+    finally:
+        signal.signal(signal.SIGINT, previous)
 
 
 def _dask_client_class() -> type:
@@ -217,7 +246,8 @@ def run_sweep(graph: Graph, base: SolverConfig, designs: Sequence[Design], pool:
         data = data or problem_data(graph, program)  # one layout for every group
         members = tuple(d for d in designs if (d.linear, d.precision) == key)
         t0 = t0 or time.perf_counter()  # the workers' window opens at the first task
-        futures[pool.executor.submit(evaluate_group, program, data, members)] = key
+        futures[pool.executor.submit(_interruptible, evaluate_group, program, data,
+                                     members)] = key
     reference, gtsam_values = _gtsam_reference(graph)
     groups = {}
     for future in cf.as_completed(futures):

@@ -12,16 +12,27 @@ A file holds a header line (format tag, full key, SHA-256 of the payload) and th
 Reads are validated: a wrong tag, key or checksum, an unpicklable payload or one of the wrong type
 means the entry is discarded, recomputed and rewritten, with one :class:`CacheWarning` naming the
 file. Writes are atomic (temporary file + rename) so parallel compiles never read half a file. A
-cache directory that cannot be created or written gives one warning and fgc continues uncached.
+cache directory that cannot be created or written (read-only, full) gives one warning and fgc
+continues uncached.
+
+The backends keep built projects in sub-folders of the same directory (:data:`FOLDERS`:
+``native/<hash>`` for the native solver's libraries, ``hls-stream/<hash>`` for the streaming HLS
+C simulations), each with a manifest of the key it was built for and the SHA-256 of its files
+(:func:`write_manifest`, :func:`check_manifest`), checked before anything in it is used.
+Temporary files and folders (``*.tmp<PID>`` and the like) of a process that died are removed the
+first time a later process uses the directory (:func:`sweep_stale`); ``fgc cache clear`` removes
+entries, built projects and leftovers alike.
 """
 
 from __future__ import annotations
 
 import contextlib
 import hashlib
+import json
 import os
 import pickle
 import re
+import shutil
 from collections.abc import Callable
 from functools import cache
 from pathlib import Path
@@ -33,6 +44,12 @@ T = TypeVar("T")
 
 _MAGIC = b"fgc-cache-1"
 KINDS = ("derive", "fuse", "lower", "structure")
+# sub-folders of the cache directory holding the backends' built projects, one folder a hash
+FOLDERS = ("native", "hls-stream")
+MANIFEST = "fgc-manifest.json"
+# the suffix of a temporary file or folder of process PID: ``.tmpPID`` (entries, staging builds),
+# ``.builtPID`` / ``.oldPID`` (hls-stream's swap of a built project into place)
+_TEMP = re.compile(r"\.(tmp|built|old)(\d+)$")
 
 
 class CacheWarning(FgcWarning):
@@ -58,11 +75,65 @@ def cache_root() -> Path:
 _UNUSABLE: set[str] = set()  # directories already warned about in this process
 
 
-def _unusable(path: Path, why: str) -> None:
+def unusable(path: Path, why: str) -> None:
+    """Say once per process that the cache directory ``path`` cannot be used (``why``); the
+    derivation cache and the backends' builds then work uncached (in temporary folders)."""
     if str(path) not in _UNUSABLE:
         _UNUSABLE.add(str(path))
         warn(f"fgc cache directory {path} is unusable ({why}); continuing without a "
-             "derivation cache (set FGC_CACHE_DIR to a writable directory)", CacheWarning)
+             "cache (set FGC_CACHE_DIR to a writable directory)", CacheWarning)
+
+
+_unusable = unusable
+_SWEPT: set[str] = set()  # directories whose dead processes' leftovers were removed
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # EPERM: it exists (another user's)
+        return True
+    return True
+
+
+def _remove(path: Path) -> None:
+    if path.is_dir() and not path.is_symlink():
+        shutil.rmtree(path, ignore_errors=True)
+    else:
+        with contextlib.suppress(OSError):
+            path.unlink(missing_ok=True)
+
+
+def _temporary(path: Path, live: bool) -> bool:
+    """Whether ``path`` is a temporary of fgc's (in its cache directory or a FOLDERS folder) and,
+    unless ``live``, of a process that is no longer running."""
+    match = _TEMP.search(path.name)
+    if match is None:
+        return False
+    if path.parent.name not in FOLDERS and path.name.split("-", 1)[0] not in KINDS:
+        return False  # not one of ours (FGC_CACHE_DIR may be a directory shared with others)
+    return live or not _alive(int(match.group(2)))
+
+
+def sweep_stale(root: Path) -> int:
+    """Remove the temporary files and folders that processes which are no longer running left
+    in the cache directory ``root`` (killed while writing an entry or building a project);
+    returns how many. Done once per process and directory, by :func:`cache_dir`."""
+    n = 0
+    for folder in (root, *(root / f for f in FOLDERS)):
+        try:
+            names = list(folder.iterdir())
+        except OSError:
+            continue
+        for path in names:
+            if _temporary(path, live=False):
+                _remove(path)
+                n += 1
+    return n
 
 
 def cache_dir() -> Path | None:
@@ -81,6 +152,9 @@ def cache_dir() -> Path | None:
     if not path.is_dir():
         _unusable(path, "not a directory")
         return None
+    if str(path) not in _SWEPT:
+        _SWEPT.add(str(path))
+        sweep_stale(path)
     return path
 
 
@@ -149,6 +223,10 @@ def store(path: Path | None, key: str, obj) -> None:
         _unusable(path.parent, f"cannot write: {exc.strerror or type(exc).__name__}")
         with contextlib.suppress(OSError):
             tmp.unlink(missing_ok=True)
+    except BaseException:  # interrupted (Ctrl-C): leave nothing half-written behind
+        with contextlib.suppress(OSError):
+            tmp.unlink(missing_ok=True)
+        raise
 
 
 class Deferred:
@@ -193,6 +271,69 @@ def cached(kind_name: tuple[str, str], key: str, build: Callable[[], T],
 
 
 # --------------------------------------------------------------------------------------------
+# built projects: manifests
+# --------------------------------------------------------------------------------------------
+
+
+def file_digest(path: Path) -> str:
+    """SHA-256 (hex) of the file at ``path``."""
+    h = hashlib.sha256()
+    with path.open("rb") as fh:
+        for block in iter(lambda: fh.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def write_manifest(folder: Path, key: str) -> None:
+    """Record in ``folder`` (a built project, before it is moved into the cache) the key it was
+    built for and the SHA-256 of each of its files."""
+    files = {p.name: file_digest(p) for p in sorted(folder.iterdir())
+             if p.is_file() and p.name != MANIFEST}
+    (folder / MANIFEST).write_text(json.dumps({"format": 1, "key": key, "files": files},
+                                              indent=1, sort_keys=True) + "\n")
+
+
+def check_manifest(folder: Path, key: str, required: tuple[str, ...] = ()) -> str | None:
+    """Why the project in ``folder`` cannot be used for ``key`` (no or a foreign manifest, a
+    file missing, changed, truncated), or None if every file it recorded is as written and
+    ``required`` are among them."""
+    try:
+        manifest = json.loads((folder / MANIFEST).read_text())
+        files = manifest["files"]
+        recorded = manifest["key"]
+    except FileNotFoundError:
+        return "no manifest (an unfinished or foreign build)"
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        return f"unreadable manifest ({type(exc).__name__})"
+    if recorded != key or not isinstance(files, dict):
+        return "it holds the build of another key"
+    for name in required:
+        if name not in files:
+            return f"{name} is not in its manifest"
+    for name, digest in files.items():
+        path = folder / name
+        try:
+            if file_digest(path) != digest:
+                return f"{name} differs from what was built (truncated or replaced)"
+        except OSError as exc:
+            return f"{name} cannot be read ({exc.strerror or type(exc).__name__})"
+    return None
+
+
+def discard_folder(folder: Path, why: str) -> None:
+    """Remove a damaged built project (one warning naming it): moved aside first, so another
+    process finds either the whole folder or none."""
+    warn(f"fgc cache entry {folder} discarded ({why}); rebuilding it", CacheWarning)
+    aside = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
+    _remove(aside)
+    try:
+        os.replace(folder, aside)
+    except OSError:
+        aside = folder
+    _remove(aside)
+
+
+# --------------------------------------------------------------------------------------------
 # fgc cache info / clear
 # --------------------------------------------------------------------------------------------
 
@@ -205,22 +346,45 @@ def _entries(root: Path) -> list[Path]:
                   and (p.suffix == ".pkl" or ".tmp" in p.suffix))
 
 
+def _size(path: Path) -> int:
+    if not path.is_dir():
+        return path.stat().st_size
+    return sum(p.lstat().st_size for p in path.rglob("*") if p.is_file())
+
+
 def info() -> dict:
-    """The cache directory, its number of entries per kind and their total size in bytes."""
+    """The cache directory, its number of entries per kind (derivation kinds, and the backends'
+    built projects per folder) and their total size in bytes."""
     root = cache_root()
-    counts = dict.fromkeys(KINDS, 0)
+    counts = dict.fromkeys((*KINDS, *FOLDERS), 0)
     size = 0
     for p in _entries(root):
         if p.suffix == ".pkl":
             counts[p.name.split("-", 1)[0]] += 1
         size += p.stat().st_size
+    for name in FOLDERS:
+        folder = root / name
+        if folder.is_dir():
+            for p in folder.iterdir():
+                if p.is_dir() and not _temporary(p, live=True):
+                    counts[name] += 1
+                size += _size(p)
     return {"dir": str(root), "entries": counts, "bytes": size}
 
 
 def clear() -> int:
-    """Delete every fgc cache entry (only fgc's own files); returns how many were removed."""
+    """Delete everything fgc keeps in the cache directory (derivation entries, built projects,
+    temporary leftovers; no other file); returns how many entries and projects were removed."""
+    root = cache_root()
     n = 0
-    for p in _entries(cache_root()):
+    for p in _entries(root):
         p.unlink(missing_ok=True)
         n += 1
+    for name in FOLDERS:
+        folder = root / name
+        if folder.is_dir() and not folder.is_symlink():
+            n += sum(1 for p in folder.iterdir() if p.is_dir() and not _temporary(p, live=True))
+            shutil.rmtree(folder)
+        elif folder.is_symlink():
+            folder.unlink()
     return n

@@ -20,7 +20,7 @@ import numpy as np
 import sympy as sp
 
 from fgc.compiler.derive import derive
-from fgc.errors import FgcError
+from fgc.errors import FgcError, caused_by_interrupt
 from fgc.frontend.dsl import Factor, Graph, MatrixType
 from fgc.frontend.geometry import (
     ImuBias,
@@ -41,6 +41,8 @@ def _gtsam():
     try:
         import gtsam
     except ImportError as exc:  # pragma: no cover - gtsam is a core dependency
+        if caused_by_interrupt(exc):  # Ctrl-C while its extension initialised: not missing
+            raise KeyboardInterrupt from exc
         raise FgcError("the GTSAM bridge needs the 'gtsam' package (pip install gtsam)") from exc
     return gtsam
 

@@ -109,7 +109,7 @@ def warn(message: str, category: type[FgcWarning]) -> None:
     warnings.warn(message, category, stacklevel=level)
 
 
-_OWN_MODULES = ("fgc.", "fgc_backends.")
+_OWN_MODULES = ("fgc.", "fgc_backends.", "fgc_cli")  # fgc_cli: the console script's entry
 
 
 def warn_if_ill_conditioned(kappa: float | None, linear: str, precision: str,
