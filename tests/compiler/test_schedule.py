@@ -332,7 +332,7 @@ def test_structure_and_plan_round_trip_through_json():
 def test_schedule_is_independent_of_hash_seed():
     """Same JSON under different string-hash seeds (sets of keys never decide the order)."""
     code = (
-        "import json, sys; sys.path.insert(0, 'tests'); import test_schedule as t;"
+        "import json, sys; sys.path.insert(0, 'tests/compiler'); import test_schedule as t;"
         "from fgc.compiler.schedule import schedule;"
         "s = t.pose_chain(40, closures=((0, 20), (5, 35), (10, 30), (15, 39)));"
         "print(json.dumps([schedule(s).to_dict(), schedule(t.lio_chain(6, False)).to_dict()]))"

@@ -32,7 +32,7 @@ from fgc_backends import native, sim
 from fgc_backends.native import NativeConfig, NativeConfigError, NativeSolver
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "hls"))
 
 from test_hls_csim import (  # noqa: E402
     CASES,
