@@ -1,0 +1,554 @@
+"""Streaming on the HLS design's C simulation (issue 19). The fixed-lag window runs on chip
+(:class:`OnChipFixedLagStream`, :mod:`fgc_backends.hls.window`: one testbench run streams every
+keyframe through the design's ``<name>_stream`` top). The incremental plan: per keyframe, the
+emitted accelerator's testbench solves the update's window; the host holds the kept Bayes net.
+
+The windows are the native stream's (:mod:`fgc_backends.native.streaming`): a *template* window
+Program — the chain's first S keyframes with a ``MarginalPrior…`` factor on every keyframe — is
+emitted once as an HLS project (:func:`fgc_backends.hls.emitter.emit`, ``double`` for agreement
+with the simulator, ``float`` as the hardware; kept in fgc's cache directory by content hash,
+with its built testbench once a stream has built it, and copied into each stream's own
+folder), its C simulation built on the first update and re-run on every later update's numbers
+(:func:`fgc_backends.hls.build.run_csim` with ``reference=False``: the testbench reads the new
+``data.txt``, nothing is rebuilt).
+
+What runs where. The C simulation runs each window's LM solve. Everything between updates runs
+on the host, as for the native stream: the kept conditionals, the marginal prior τ a window's
+oldest keyframe carries and the undamped store elimination at the window's optimum in Python;
+the back-substitution down to keyframe 0 and the first-order re-expression of the newest kept
+conditional in the native ``double`` build of the same template (``fgc_kept_walk``,
+``fgc_local_jacobian``), which also gives the store elimination the window's whitened rows at
+the optimum that the testbench does not report (``fgc_rows``). So in this path the kept Bayes
+net lives on the host, not on chip as in paper A's accelerator; the on-chip state between calls
+is not emitted.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import shutil
+import tempfile
+import weakref
+from pathlib import Path
+
+import numpy as np
+
+import fgc_backends
+from fgc.ir.codes import REASONS, STATUSES
+from fgc.ir.datafile import ProblemData
+from fgc.ir.stream import StreamError, StreamProgram
+from fgc.version import __version__
+from fgc_backends.cfamily.host import host_key
+from fgc_backends.cfamily.stream import IncrementalDriver, StreamState, TemplateSolver
+from fgc_backends.cfamily.tables import factor_data_words
+
+
+class _Csim:
+    """The C simulation of a template window: emitted into ``out_dir`` (a private temporary
+    folder if None), built on the first :meth:`solve`."""
+
+    def _emit_csim(self, scalar: str, out_dir) -> None:
+        self.scalar = scalar
+        _working_copy(self, scalar, out_dir, f"window{self.size}")
+        t = self.template
+        self._factor_words = [factor_data_words(t, spec.block) for spec in t.factors]
+
+    def _data(self, x: np.ndarray, d: np.ndarray) -> ProblemData:
+        return template_data(self.template, x, d, self._factor_words)
+
+    def solve(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The window's LM solve by the C simulation: (x, errors, info) in the native solver's
+        layout (x the template's flat storage, errors (initial, final), info (iterations,
+        status code, reason code))."""
+        from fgc_backends.hls import build
+
+        data = self._data(x, d)
+        if self.scalar == "double":
+            result = build.run_csim(self.project, self.template, data, reference=False)
+        else:
+            # run_csim's float verdict re-checks the window's conditioning in the simulator,
+            # which refuses the template's absent factors (zero square-root information): the
+            # same testbench run, its result read without that verdict (the stream is judged
+            # against the simulator per keyframe instead)
+            from fgc.ir.datafile import write_data
+            from fgc_backends.cfamily.results import REFERENCE_FILE, read_result
+
+            folder = self.project.directory
+            write_data(data, folder / build.DATA_FILE)
+            (folder / REFERENCE_FILE).unlink(missing_ok=True)
+            (folder / build.RESULT_FILE).unlink(missing_ok=True)
+            build.make(self.project, "csim")
+            result = read_result(folder / build.RESULT_FILE, self.template)
+        if not self._built:  # the first run built the testbench: keep the build for later
+            _keep_build(self.project, self._cached.directory)
+            self._built = True
+        x_out = np.concatenate([np.asarray(result.values[v.key], dtype=np.float64)
+                                for v in self.template.variables])
+        info = np.array([result.iterations, STATUSES.index(result.status),
+                         REASONS.index(result.reason)], dtype=np.int32)
+        return x_out, np.array([result.initial_error, result.final_error]), info
+
+
+def template_data(t, x: np.ndarray, d: np.ndarray, factor_words=None) -> ProblemData:
+    """The template Program ``t``'s flat storage ``x`` and factor data ``d`` as a ProblemData
+    (per variable its storage, per block instance its words; ``factor_words``: the instances'
+    word counts, if already known)."""
+    if factor_words is None:
+        factor_words = [factor_data_words(t, spec.block) for spec in t.factors]
+    variables, pos = [], 0
+    for v in t.variables:
+        variables.append(x[pos:pos + v.storage_dim])
+        pos += v.storage_dim
+    factors, pos = [], 0
+    for n in factor_words:
+        factors.append(d[pos:pos + n])
+        pos += n
+    return ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint)
+
+
+def _working_copy(owner, scalar: str, out_dir, name: str, stream=None) -> None:
+    """``owner.project``: a copy, in ``out_dir`` (a private temporary folder if None, removed
+    with ``owner``), of ``owner.template``'s project from the cache (:func:`_cached_project`,
+    with ``stream``'s on-chip design), its mtimes too: a built one stays built; ``owner._cached``
+    and ``owner._built`` say where it came from and whether it is built."""
+    from fgc_backends.hls.config import HlsConfig
+    from fgc_backends.hls.emitter import HlsProject
+
+    if out_dir is None:
+        tmp = tempfile.mkdtemp(prefix="fgc-hls-stream-")
+        weakref.finalize(owner, _remove, tmp)
+        out_dir = tmp
+    config = HlsConfig(scalar=scalar)
+    owner._cached = _cached_project(owner.template, config, stream)
+    work = Path(out_dir) / name
+    shutil.rmtree(work, ignore_errors=True)
+    shutil.copytree(owner._cached.directory, work)
+    owner.project = HlsProject(work, owner._cached.name,
+                               tuple(work / f.name for f in owner._cached.files), config)
+    owner._built = (owner._cached.directory / _BUILT).is_file()
+
+
+def _remove(folder: str) -> None:
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+_BUILT = ".fgc-stream-built"
+
+
+def _project_key(template, config) -> str:
+    """Content hash of what the emitted and built testbench depends on: the template Program,
+    the config, fgc, the HLS backend's and C-family layer's sources and the host."""
+    h = hashlib.sha256(template.to_json().encode())
+    h.update(repr(config).encode())
+    h.update(__version__.encode())
+    h.update(host_key().encode())
+    backends = Path(__file__).resolve().parent.parent
+    for path in sorted([*(backends / "hls").rglob("*"), *(backends / "cfamily").rglob("*.py")]):
+        if path.is_file() and path.name not in ("stream.py", "streaming.py") and \
+                "__pycache__" not in path.parts:
+            h.update(str(path.relative_to(backends)).encode())
+            h.update(path.read_bytes())
+    return h.hexdigest()[:24]
+
+
+def _cached_project(template, config, stream=None):
+    """The template's emitted project in ``<fgc cache>/hls-stream/<hash>`` (emitted once per
+    content hash; a stream copies it into its own folder, as two streams may run at once);
+    ``stream``: the on-chip window's layout (emitted with its stream top)."""
+    from fgc.compiler.cache import cache_dir
+    from fgc_backends.cfamily.names import identifier
+    from fgc_backends.hls.emitter import HlsProject, emit
+
+    key = _project_key(template, config)
+    if stream is not None:
+        key = f"{key}-w{stream.window}" + (f"-kept{stream.kept}" if stream.kept else "")
+        if stream.batch is not None:
+            b = stream.batch
+            key += "-b" + hashlib.sha256(f"{b.template.to_json()}{b.keyframes}".encode()
+                                         ).hexdigest()[:12]
+    folder = cache_dir() / "hls-stream" / key
+    if not folder.is_dir():
+        staging = folder.with_name(f"{folder.name}.tmp{os.getpid()}")
+        shutil.rmtree(staging, ignore_errors=True)
+        if stream is not None and stream.batch is not None:
+            staging.mkdir(parents=True)
+            emit(stream.batch.template, staging, config, stream=stream.batch, kernel_only=True)
+        emit(template, staging, config, stream=stream)
+        try:
+            os.replace(staging, folder)
+        except OSError:  # another process finished first: use its project
+            shutil.rmtree(staging, ignore_errors=True)
+    files = tuple(sorted(p for p in folder.iterdir() if p.is_file() and p.name != _BUILT))
+    return HlsProject(folder, identifier(template.name), files, config)
+
+
+def _keep_build(project, cached: Path) -> None:
+    """Copy a stream's built project back into the cache (atomically; first one wins)."""
+    staging = cached.with_name(f"{cached.name}.built{os.getpid()}")
+    shutil.rmtree(staging, ignore_errors=True)
+    shutil.copytree(project.directory, staging)
+    (staging / _BUILT).write_text("built\n")
+    old = cached.with_name(f"{cached.name}.old{os.getpid()}")
+    try:
+        os.replace(cached, old)
+        os.replace(staging, cached)
+    except OSError:
+        shutil.rmtree(staging, ignore_errors=True)
+    shutil.rmtree(old, ignore_errors=True)
+
+
+def _native_double(template):
+    """The native backend's double build of ``template``, reached through the registry (the
+    host's rows at the optimum and the kept net's compiled walk: what the testbench does not
+    report)."""
+    native = fgc_backends.load("native")
+    return native.load(template, native.Config(scalar="double"))
+
+
+class CsimWindow(_Csim, TemplateSolver):
+    """A template window solved by its HLS C simulation (``scalar`` "double" or "float"); the
+    host's rows at the optimum from the native double build of the same template."""
+
+    def __init__(self, graph, program, size: int, scalar: str = "double", out_dir=None):
+        TemplateSolver.__init__(self, graph, program, size, _native_double)
+        self._emit_csim(scalar, out_dir)
+
+
+def incremental_stream(graph, program, scalar: str = "double", out_dir=None,
+                       progress_build=None) -> IncrementalDriver:
+    """The incremental plan with every window solved by the C simulation of its template."""
+    return IncrementalDriver(graph, program, progress_build=progress_build,
+                             window_solver=lambda size: CsimWindow(graph, program, size, scalar,
+                                                                   out_dir))
+
+
+class OnChipFixedLagStream:
+    """The fixed-lag window of ``window`` keyframes on the accelerator itself
+    (:mod:`fgc_backends.hls.window`): one emitted design whose ``<name>_stream`` top keeps the
+    window, its factors' words and τ in its memories between calls. Its C simulation runs the
+    whole stream in one testbench run (``tb --stream``): the reset call with the template's
+    slots, then per keyframe only that keyframe's storage and data words; the host reads back
+    each update's window. ``scalar``: the design's T ("double" for agreement, "float" the
+    hardware). Nothing of the window is assembled or eliminated on the host."""
+
+    kept = False  # the incremental subclass keeps the keyframes that leave
+    mode = "fixed-lag"
+
+    def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None,
+                 layout=None):
+        from fgc_backends.hls.window import WindowLayout
+
+        self.layout = layout or WindowLayout(graph, program, window, kept=self.kept)
+        self.program, self.window, self.scalar = program, window, scalar
+        self.template = self.layout.template
+        _working_copy(self, scalar, out_dir,
+                      f"window{window}_onchip{'_kept' if self.kept else ''}", self.layout)
+
+    def run(self, data: ProblemData, progress=None):
+        """Stream ``data``'s keyframes through the C simulation; a
+        :class:`~fgc_backends.cfamily.stream.StreamResult` with the fixed-lag records
+        (``seconds``: NaN — a C simulation's wall time is not the accelerator's; its latency is
+        the update model's)."""
+        from fgc_backends.hls import build
+        from fgc_backends.hls.window import OnChipWindowError
+
+        stream = StreamState(self.program)
+        estimate = stream._start(data)
+        folder = self.project.directory
+        count = write_stream_inputs(self.layout, estimate, folder)
+        exe = f"tb_{self.project.name}"
+        build.run_command(self.project, ["make", "-s", exe], f"make {exe}")
+        build.run_command(self.project, [f"./{exe}", "--stream", build.DATA_FILE, STREAM_FILE,
+                                         STREAM_RESULT_FILE], f"{exe} --stream")
+        if not self._built:
+            _keep_build(self.project, self._cached.directory)
+            self._built = True
+        lay, window = self.layout, self.window
+        records, initial_error = [], None
+        kf = lay.kf_words
+        batches = set(lay.batch.keyframes) if lay.batch is not None else set()
+        for j, (head, x_out, x_kept) in enumerate(_read_stream_result(
+                folder / STREAM_RESULT_FILE, count, lay.n_x, self.kept)):
+            first = max(0, j - window)  # the window's oldest keyframe
+            if head["SLOT"] != min(j, lay.size - 1):
+                raise OnChipWindowError(f"keyframe {j}: the accelerator put it in slot "
+                                        f"{head['SLOT']}, the host expected "
+                                        f"{min(j, lay.size - 1)}")
+            if head["MARGINAL"] == 2:
+                raise OnChipWindowError(f"keyframe {first}: the marginal prior it passes to the "
+                                        "next keyframe is singular (the accelerator did not "
+                                        "write it)")
+            if j == 0:
+                initial_error = head["INITIAL_ERROR"]
+            lay.store(estimate, x_out, first, j)
+            if self.kept:  # the kept keyframes 0 … first − 1 as the walk left them
+                if x_kept.size != first * kf:
+                    raise OnChipWindowError(f"keyframe {j}: the accelerator returned "
+                                            f"{x_kept.size // kf} kept keyframes, expected {first}")
+                clusters = self.program.schedule.clusters
+                for c in range(first):
+                    pos = 0
+                    for k in clusters[c]:
+                        n = estimate[k].size
+                        estimate[k][:] = x_kept[c * kf + pos:c * kf + pos + n]
+                        pos += n
+            batch = j in batches
+            records.append({"keyframe": j, "mode": "batch" if batch else self.mode,
+                            "first": 0 if batch else first,
+                            "iterations": head["ITERATIONS"], "status": head["STATUS"],
+                            "reason": head["REASON"], "cost": head["FINAL_ERROR"],
+                            "seconds": float("nan"), "marginal": head["MARGINAL"] == 1,
+                            "values": stream._snapshot(
+                                estimate, 0 if self.kept else max(0, j - window + 1), j)})
+            if progress is not None:
+                progress(records[-1])
+        return stream._result(estimate, records, initial_error, self.template)
+
+
+class OnChipIncrementalStream(OnChipFixedLagStream):
+    """The incremental plan on the accelerator itself: the on-chip window of the newest K
+    keyframes (W = K − 1 in :class:`OnChipFixedLagStream`'s terms) plus the kept Bayes net in the
+    design's memories — each keyframe that leaves is kept as its conditional from the QR unit,
+    the newest kept one re-expressed at its parent's new estimate and every kept keyframe walked
+    back each update (accel.cpp.jinja's ``reexpress``, ``keep``, ``kept_walk``). Plans with
+    batch steps are refused: a batch step re-solves the whole chain, which the K-keyframe design
+    does not hold (:class:`~fgc_backends.hls.window.OnChipWindowError`; the host-kept C
+    simulation, :func:`incremental_stream`, runs them)."""
+
+    kept = True
+    mode = "incremental"
+
+    def __init__(self, graph, program, scalar: str = "double", out_dir=None):
+        super().__init__(graph, program, program.schedule.incremental.window - 1, scalar,
+                         out_dir, incremental_layout(graph, program))
+
+
+def incremental_layout(graph, program):
+    """The on-chip incremental design's layout: the window of the newest K keyframes with the
+    kept net and, when the plan has batch steps, the batch kernel of keyframes 0 … the last
+    batch step (:class:`~fgc_backends.hls.window.BatchLayout`)."""
+    from fgc_backends.hls.window import BatchLayout, WindowLayout
+
+    check_incremental_on_chip(program)
+    plan = program.schedule.incremental
+    batch = (BatchLayout(graph, program, max(plan.batch_keyframes) + 1, plan.batch_keyframes)
+             if plan.batch_keyframes else None)
+    return WindowLayout(graph, program, plan.window - 1, kept=True, batch=batch)
+
+
+def check_incremental_on_chip(program) -> None:
+    """:class:`~fgc_backends.hls.window.OnChipWindowError` unless ``program``'s incremental plan
+    runs on chip: every incremental update the newest K keyframes, every batch step keyframes
+    0 … j, K ≥ 2."""
+    from fgc_backends.hls.window import OnChipWindowError
+
+    plan = program.schedule.incremental
+    if plan is None:
+        raise OnChipWindowError("the Program has no incremental plan (--incremental K)")
+    k = plan.window
+    for u in plan.updates:
+        if u.mode == "batch":
+            if tuple(u.clusters) != tuple(range(u.keyframe + 1)):
+                raise OnChipWindowError(f"keyframe {u.keyframe}: a batch step that re-eliminates "
+                                        f"keyframes {list(u.clusters)}, not 0 … {u.keyframe}")
+            continue
+        if u.mode != "incremental" or tuple(u.clusters) != tuple(
+                range(max(0, u.keyframe - k + 1), u.keyframe + 1)):
+            raise OnChipWindowError(f"keyframe {u.keyframe}: its update re-eliminates "
+                                    f"keyframes {list(u.clusters)}, not the newest {k}: the "
+                                    "on-chip window slides one keyframe a call")
+    if k < 2:
+        raise OnChipWindowError("--incremental 1 keeps no window to slide: K ≥ 2 on chip")
+
+
+STREAM_FILE, STREAM_RESULT_FILE = "stream.txt", "stream_result.txt"
+
+
+def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
+    """The on-chip window's testbench inputs in ``folder``: data.txt (the reset call: the
+    template's slots at ``estimate``, its factors with zero information, its priors held) and
+    stream.txt (per keyframe its storage and its data words, in lines of at most 16 numbers);
+    returns the number of keyframes. Each keyframe is checked against what the window holds
+    (:meth:`~fgc_backends.hls.window.WindowLayout.check_holds`)."""
+    from fgc.ir.datafile import write_data
+    from fgc_backends.hls import build
+    from fgc_backends.hls.emitter import STREAM_MAGIC
+
+    t = layout.template
+    x, d = layout.reset_words(estimate)
+    write_data(template_data(t, x, d), Path(folder) / build.DATA_FILE)
+    clusters = layout.program.schedule.clusters
+    lines = [f"{STREAM_MAGIC} {t.structure_fingerprint}", f"KEYFRAMES {len(clusters)}"]
+    batch = layout.batch
+    if batch is not None:
+        bx, bd = batch.reset_words(estimate)
+        lines += ["BATCH_RESET", *_chunks(bx), *_chunks(bd)]
+    held = None
+    for j, keys in enumerate(clusters):
+        held = layout.check_holds(held, j)
+        x_new = np.concatenate([estimate[k] for k in keys])
+        _, words = layout.keyframe_words(j, x_new)
+        if batch is not None and j < batch.size:
+            words = np.concatenate([words, batch.keyframe_words(j, x_new)])
+        lines += _chunks(x_new) + _chunks(words)
+    (Path(folder) / STREAM_FILE).write_text("\n".join(lines) + "\n")
+    return len(clusters)
+
+
+def layout_of(sp: StreamProgram):
+    """The on-chip design's layout of ``sp``: the fixed-lag window of its policy's W, or its
+    incremental plan's window with the kept net (:func:`incremental_layout`)."""
+    from fgc_backends.hls.window import WindowLayout
+
+    if sp.window is None:
+        return incremental_layout(sp.graph, sp.program)
+    return WindowLayout(sp.graph, sp.program, sp.window)
+
+
+def on_chip(sp: StreamProgram) -> bool:
+    """Whether the HLS design runs ``sp`` on chip (:mod:`fgc_backends.hls.window`): a QR design
+    with a fixed-lag window, or with an incremental plan whose updates the on-chip design runs
+    (K ≥ 2: the newest K keyframes, batch steps on its batch kernel)."""
+    from fgc_backends.hls.window import OnChipWindowError
+
+    if sp.program.solver.linear != "qr":
+        return False
+    if sp.window is not None:
+        return True
+    try:
+        check_incremental_on_chip(sp.program)
+    except OnChipWindowError:
+        return False
+    return True
+
+
+def emit_window(sp: StreamProgram, out_dir, config, data: ProblemData | None = None):
+    """``fgc compile --backend hls --window W | --incremental K``: the on-chip design for
+    ``sp``'s chain (its policy: a fixed-lag window, or an incremental plan) emitted into
+    ``out_dir`` (its synthesis top ``<name>_stream``) with its testbench's inputs for ``data``'s
+    stream (default the graph's own: data.txt, stream.txt: ``make`` builds, ``tb_<name> --stream
+    data.txt stream.txt stream_result.txt`` runs it). Returns the project."""
+    import dataclasses
+
+    from fgc.ir.datafile import problem_data
+    from fgc_backends.hls.emitter import emit
+
+    layout = layout_of(sp)
+    if layout.batch is not None:  # its second file first: the window's lint reads it
+        emit(layout.batch.template, out_dir, config, stream=layout.batch, kernel_only=True)
+    project = emit(layout.template, out_dir, config, stream=layout)
+    data = data if data is not None else problem_data(sp.graph, sp.program)
+    estimate = StreamState(sp.program)._start(data)
+    write_stream_inputs(layout, estimate, project.directory)
+    extra = tuple(project.directory / f for f in ("data.txt", STREAM_FILE))
+    return dataclasses.replace(project, files=project.files + extra)
+
+
+class HlsStream:
+    """The contract's stream runner on the HLS design's C simulation: on chip
+    (:class:`OnChipFixedLagStream`, :class:`OnChipIncrementalStream`) when :func:`on_chip`,
+    else the host-kept incremental path (:func:`incremental_stream`). ``config``: an HlsConfig
+    (its ``scalar``, default the Program's precision: ``double`` for float64)."""
+
+    def __init__(self, sp: StreamProgram, config=None):
+        sp.slots.check("the HLS design's stream", StreamError)
+        self.sp = sp
+        scalar = getattr(config, "scalar", None)
+        self.scalar = scalar or ("double" if sp.program.solver.precision == "float64"
+                                 else "float")
+        self.on_chip = on_chip(sp)
+        self.who, self.timing_key = "HLS C simulation", "csim"
+
+    def run(self, data: ProblemData, progress=None, progress_build=None):
+        """Stream ``data`` (as :meth:`fgc_backends.native.streaming.NativeStream.run`)."""
+        sp = self.sp
+        if sp.incremental and self.on_chip:
+            if progress_build is not None:
+                progress_build(sp.program.schedule.incremental.window, 0, 1)
+            runner = OnChipIncrementalStream(sp.graph, sp.program, self.scalar)
+        elif sp.incremental:
+            runner = incremental_stream(sp.graph, sp.program, self.scalar,
+                                        progress_build=progress_build)
+        else:
+            if progress_build is not None:
+                progress_build(sp.window + 1, 0, 1)
+            runner = OnChipFixedLagStream(sp.graph, sp.program, sp.window, self.scalar)
+        return runner.run(data, progress)
+
+
+def stream(sp: StreamProgram, config=None) -> HlsStream:
+    """The backend contract's ``stream``: a runner of ``sp`` on the C simulation."""
+    return HlsStream(sp, config)
+
+
+def window_model(sp: StreamProgram, scalar: str | None = None):
+    """The on-chip design's :class:`~fgc_backends.hls.window.WindowUpdateModel` (the design
+    ``fgc compile --backend hls`` emits for ``sp``; ``scalar`` default the Program's)."""
+    from fgc_backends.hls.config import HlsConfig
+    from fgc_backends.hls.window import WindowUpdateModel
+
+    scalar = scalar or ("double" if sp.program.solver.precision == "float64" else "float")
+    return WindowUpdateModel(layout_of(sp), HlsConfig(scalar=scalar))
+
+
+def update_model(graph, program, units: int | None = None, cpe: int | None = None):
+    """The accelerator plan's update model of a stream over the chain ``program`` (compiled
+    from ``graph``; :class:`fgc_backends.hls.update.
+    UpdateModel`; model estimates, the accelerator's incremental mode is not emitted): ``units``
+    / ``cpe`` default to the Program's; a batch keyframe j is priced on the batch Program of
+    its j + 1 keyframes (:func:`fgc.compiler.stream.prefix_program`)."""
+    from fgc.compiler.stream import prefix_program
+    from fgc_backends.hls.plan import PlanOptions
+    from fgc_backends.hls.update import UpdateModel
+
+    changes = {k: v for k, v in (("units", units), ("cpe", cpe)) if v is not None}
+    options = PlanOptions.of(program, **changes)
+    return UpdateModel(program, options,
+                       batch_program=lambda j: prefix_program(graph, program, j + 1))
+
+
+def _chunks(values: np.ndarray, size: int = 16) -> list[str]:
+    vals = np.asarray(values, dtype=np.float64).reshape(-1)
+    if not np.all(np.isfinite(vals)):
+        from fgc.ir.datafile import DataError
+
+        raise DataError("refusing to write a non-finite number to a stream file")
+    return [" ".join([str(len(vals[i:i + size]))] + [repr(float(v)) for v in vals[i:i + size]])
+            for i in range(0, len(vals), size)]
+
+
+def _read_stream_result(path: Path, count: int, n_x: int, kept: bool = False):
+    """(head fields, x, kept keyframes' storage) per keyframe from the testbench's stream
+    result."""
+    from fgc.ir.datafile import DataError
+    from fgc_backends.hls.emitter import STREAM_RESULT_MAGIC
+
+    lines = path.read_text().splitlines()
+    if not lines or lines[0] != STREAM_RESULT_MAGIC:
+        raise DataError(f"{path}:1: expected '{STREAM_RESULT_MAGIC}'")
+    per = 3 if kept else 2
+    if len(lines) != 1 + per * count:
+        raise DataError(f"{path}: {(len(lines) - 1) // per} keyframes, expected {count}")
+    out = []
+    for j in range(count):
+        words = lines[1 + per * j].split()
+        head = dict(zip(words[0::2], words[1::2], strict=True))
+        for key in ("KEYFRAME", "SLOT", "ITERATIONS", "MARGINAL"):
+            head[key] = int(head[key])
+        for key in ("INITIAL_ERROR", "FINAL_ERROR"):
+            head[key] = float(head[key])
+        if head["KEYFRAME"] != j or head["STATUS"] not in STATUSES or \
+                head["REASON"] not in REASONS:
+            raise DataError(f"{path}:{2 + per * j}: a malformed keyframe line")
+        x = lines[2 + per * j].split()
+        if x[:2] != ["X", str(n_x)] or len(x) != n_x + 2:
+            raise DataError(f"{path}:{3 + per * j}: expected 'X {n_x} <numbers>'")
+        held = np.zeros(0)
+        if kept:
+            k = lines[3 + per * j].split()
+            if k[:1] != ["KEPT"] or len(k) != int(k[1]) + 2:
+                raise DataError(f"{path}:{4 + per * j}: expected 'KEPT <count> <numbers>'")
+            held = np.array([float(v) for v in k[2:]])
+        out.append((head, np.array([float(v) for v in x[2:]]), held))
+    return out
