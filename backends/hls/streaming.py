@@ -25,6 +25,7 @@ is not emitted.
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import os
 import shutil
@@ -35,13 +36,28 @@ from pathlib import Path
 import numpy as np
 
 import fgc_backends
+from fgc.compiler.cache import cache_dir
+from fgc.compiler.stream import prefix_program
 from fgc.ir.codes import REASONS, STATUSES
-from fgc.ir.datafile import ProblemData
+from fgc.ir.datafile import DataError, ProblemData, problem_data, write_data
 from fgc.ir.stream import StreamError, StreamProgram
 from fgc.version import __version__
 from fgc_backends.cfamily.host import host_key
+from fgc_backends.cfamily.names import identifier
+from fgc_backends.cfamily.results import REFERENCE_FILE, read_result
 from fgc_backends.cfamily.stream import IncrementalDriver, StreamState, TemplateSolver
 from fgc_backends.cfamily.tables import factor_data_words
+from fgc_backends.hls import build
+from fgc_backends.hls.config import HlsConfig
+from fgc_backends.hls.emitter import STREAM_MAGIC, STREAM_RESULT_MAGIC, HlsProject, emit
+from fgc_backends.hls.plan import PlanOptions
+from fgc_backends.hls.update import UpdateModel
+from fgc_backends.hls.window import (
+    BatchLayout,
+    OnChipWindowError,
+    WindowLayout,
+    WindowUpdateModel,
+)
 
 
 class _Csim:
@@ -61,8 +77,6 @@ class _Csim:
         """The window's LM solve by the C simulation: (x, errors, info) in the native solver's
         layout (x the template's flat storage, errors (initial, final), info (iterations,
         status code, reason code))."""
-        from fgc_backends.hls import build
-
         data = self._data(x, d)
         if self.scalar == "double":
             result = build.run_csim(self.project, self.template, data, reference=False)
@@ -71,9 +85,6 @@ class _Csim:
             # which refuses the template's absent factors (zero square-root information): the
             # same testbench run, its result read without that verdict (the stream is judged
             # against the simulator per keyframe instead)
-            from fgc.ir.datafile import write_data
-            from fgc_backends.cfamily.results import REFERENCE_FILE, read_result
-
             folder = self.project.directory
             write_data(data, folder / build.DATA_FILE)
             (folder / REFERENCE_FILE).unlink(missing_ok=True)
@@ -112,9 +123,6 @@ def _working_copy(owner, scalar: str, out_dir, name: str, stream=None) -> None:
     with ``owner``), of ``owner.template``'s project from the cache (:func:`_cached_project`,
     with ``stream``'s on-chip design), its mtimes too: a built one stays built; ``owner._cached``
     and ``owner._built`` say where it came from and whether it is built."""
-    from fgc_backends.hls.config import HlsConfig
-    from fgc_backends.hls.emitter import HlsProject
-
     if out_dir is None:
         tmp = tempfile.mkdtemp(prefix="fgc-hls-stream-")
         weakref.finalize(owner, _remove, tmp)
@@ -156,10 +164,6 @@ def _cached_project(template, config, stream=None):
     """The template's emitted project in ``<fgc cache>/hls-stream/<hash>`` (emitted once per
     content hash; a stream copies it into its own folder, as two streams may run at once);
     ``stream``: the on-chip window's layout (emitted with its stream top)."""
-    from fgc.compiler.cache import cache_dir
-    from fgc_backends.cfamily.names import identifier
-    from fgc_backends.hls.emitter import HlsProject, emit
-
     key = _project_key(template, config)
     if stream is not None:
         key = f"{key}-w{stream.window}" + (f"-kept{stream.kept}" if stream.kept else "")
@@ -237,8 +241,6 @@ class OnChipFixedLagStream:
 
     def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None,
                  layout=None):
-        from fgc_backends.hls.window import WindowLayout
-
         self.layout = layout or WindowLayout(graph, program, window, kept=self.kept)
         self.program, self.window, self.scalar = program, window, scalar
         self.template = self.layout.template
@@ -250,9 +252,6 @@ class OnChipFixedLagStream:
         :class:`~fgc_backends.cfamily.stream.StreamResult` with the fixed-lag records
         (``seconds``: NaN — a C simulation's wall time is not the accelerator's; its latency is
         the update model's)."""
-        from fgc_backends.hls import build
-        from fgc_backends.hls.window import OnChipWindowError
-
         stream = StreamState(self.program)
         estimate = stream._start(data)
         folder = self.project.directory
@@ -328,8 +327,6 @@ def incremental_layout(graph, program):
     """The on-chip incremental design's layout: the window of the newest K keyframes with the
     kept net and, when the plan has batch steps, the batch kernel of keyframes 0 … the last
     batch step (:class:`~fgc_backends.hls.window.BatchLayout`)."""
-    from fgc_backends.hls.window import BatchLayout, WindowLayout
-
     check_incremental_on_chip(program)
     plan = program.schedule.incremental
     batch = (BatchLayout(graph, program, max(plan.batch_keyframes) + 1, plan.batch_keyframes)
@@ -341,8 +338,6 @@ def check_incremental_on_chip(program) -> None:
     """:class:`~fgc_backends.hls.window.OnChipWindowError` unless ``program``'s incremental plan
     runs on chip: every incremental update the newest K keyframes, every batch step keyframes
     0 … j, K ≥ 2."""
-    from fgc_backends.hls.window import OnChipWindowError
-
     plan = program.schedule.incremental
     if plan is None:
         raise OnChipWindowError("the Program has no incremental plan (--incremental K)")
@@ -371,10 +366,6 @@ def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
     stream.txt (per keyframe its storage and its data words, in lines of at most 16 numbers);
     returns the number of keyframes. Each keyframe is checked against what the window holds
     (:meth:`~fgc_backends.hls.window.WindowLayout.check_holds`)."""
-    from fgc.ir.datafile import write_data
-    from fgc_backends.hls import build
-    from fgc_backends.hls.emitter import STREAM_MAGIC
-
     t = layout.template
     x, d = layout.reset_words(estimate)
     write_data(template_data(t, x, d), Path(folder) / build.DATA_FILE)
@@ -399,8 +390,6 @@ def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
 def layout_of(sp: StreamProgram):
     """The on-chip design's layout of ``sp``: the fixed-lag window of its policy's W, or its
     incremental plan's window with the kept net (:func:`incremental_layout`)."""
-    from fgc_backends.hls.window import WindowLayout
-
     if sp.window is None:
         return incremental_layout(sp.graph, sp.program)
     return WindowLayout(sp.graph, sp.program, sp.window)
@@ -410,8 +399,6 @@ def on_chip(sp: StreamProgram) -> bool:
     """Whether the HLS design runs ``sp`` on chip (:mod:`fgc_backends.hls.window`): a QR design
     with a fixed-lag window, or with an incremental plan whose updates the on-chip design runs
     (K ≥ 2: the newest K keyframes, batch steps on its batch kernel)."""
-    from fgc_backends.hls.window import OnChipWindowError
-
     if sp.program.solver.linear != "qr":
         return False
     if sp.window is not None:
@@ -429,10 +416,6 @@ def emit_window(sp: StreamProgram, out_dir, config, data: ProblemData | None = N
     ``out_dir`` (its synthesis top ``<name>_stream``) with its testbench's inputs for ``data``'s
     stream (default the graph's own: data.txt, stream.txt: ``make`` builds, ``tb_<name> --stream
     data.txt stream.txt stream_result.txt`` runs it). Returns the project."""
-    import dataclasses
-
-    from fgc.ir.datafile import problem_data
-    from fgc_backends.hls.emitter import emit
 
     layout = layout_of(sp)
     if layout.batch is not None:  # its second file first: the window's lint reads it
@@ -452,7 +435,7 @@ class HlsStream:
     (its ``scalar``, default the Program's precision: ``double`` for float64)."""
 
     def __init__(self, sp: StreamProgram, config=None):
-        sp.slots.check("the HLS design's stream", StreamError)
+        sp.slots.check("the HLS design", StreamError)
         self.sp = sp
         scalar = getattr(config, "scalar", None)
         self.scalar = scalar or ("double" if sp.program.solver.precision == "float64"
@@ -485,9 +468,6 @@ def stream(sp: StreamProgram, config=None) -> HlsStream:
 def window_model(sp: StreamProgram, scalar: str | None = None):
     """The on-chip design's :class:`~fgc_backends.hls.window.WindowUpdateModel` (the design
     ``fgc compile --backend hls`` emits for ``sp``; ``scalar`` default the Program's)."""
-    from fgc_backends.hls.config import HlsConfig
-    from fgc_backends.hls.window import WindowUpdateModel
-
     scalar = scalar or ("double" if sp.program.solver.precision == "float64" else "float")
     return WindowUpdateModel(layout_of(sp), HlsConfig(scalar=scalar))
 
@@ -498,10 +478,6 @@ def update_model(graph, program, units: int | None = None, cpe: int | None = Non
     UpdateModel`; model estimates, the accelerator's incremental mode is not emitted): ``units``
     / ``cpe`` default to the Program's; a batch keyframe j is priced on the batch Program of
     its j + 1 keyframes (:func:`fgc.compiler.stream.prefix_program`)."""
-    from fgc.compiler.stream import prefix_program
-    from fgc_backends.hls.plan import PlanOptions
-    from fgc_backends.hls.update import UpdateModel
-
     changes = {k: v for k, v in (("units", units), ("cpe", cpe)) if v is not None}
     options = PlanOptions.of(program, **changes)
     return UpdateModel(program, options,
@@ -511,7 +487,6 @@ def update_model(graph, program, units: int | None = None, cpe: int | None = Non
 def _chunks(values: np.ndarray, size: int = 16) -> list[str]:
     vals = np.asarray(values, dtype=np.float64).reshape(-1)
     if not np.all(np.isfinite(vals)):
-        from fgc.ir.datafile import DataError
 
         raise DataError("refusing to write a non-finite number to a stream file")
     return [" ".join([str(len(vals[i:i + size]))] + [repr(float(v)) for v in vals[i:i + size]])
@@ -521,9 +496,6 @@ def _chunks(values: np.ndarray, size: int = 16) -> list[str]:
 def _read_stream_result(path: Path, count: int, n_x: int, kept: bool = False):
     """(head fields, x, kept keyframes' storage) per keyframe from the testbench's stream
     result."""
-    from fgc.ir.datafile import DataError
-    from fgc_backends.hls.emitter import STREAM_RESULT_MAGIC
-
     lines = path.read_text().splitlines()
     if not lines or lines[0] != STREAM_RESULT_MAGIC:
         raise DataError(f"{path}:1: expected '{STREAM_RESULT_MAGIC}'")
