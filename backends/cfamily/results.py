@@ -47,6 +47,7 @@ from pathlib import Path
 
 import numpy as np
 
+import fgc_backends
 from fgc.errors import DataError
 from fgc.ir import conditioning
 from fgc.ir.codes import REASONS, STATUSES
@@ -171,10 +172,9 @@ def _keyed_lines(path: Path, lines: list[str], first: int, program: Program
 def reference_run(program: Program, data: ProblemData):
     """The simulator's float64 run of ``program`` on ``data``: the testbench's reference
     (the simulator defines what the hardware computes; float64 so that a float accelerator is
-    judged against the optimum, not against another float32 rounding)."""
-    from fgc_backends import sim
-
-    return sim.run(program, data, precision="float64")
+    judged against the optimum, not against another float32 rounding). The simulator is
+    reached through the registry: this layer imports no backend."""
+    return fgc_backends.load("sim").run(program, data, precision="float64")
 
 
 def error_floor(program: Program, data: ProblemData, reference, scalar: str) -> float:
@@ -185,8 +185,8 @@ def error_floor(program: Program, data: ProblemData, reference, scalar: str) -> 
     9.3e-3 in float), so the testbench's final-error check does not ask a float design for a
     cost its state cannot represent."""
     from fgc_backends.cfamily.scalars import fixed_format
-    from fgc_backends.sim import costs
 
+    costs = fgc_backends.load("sim").costs
     if scalar == "double" or reference.final_error is None:
         return 0.0
     fmt = fixed_format(scalar)
@@ -267,11 +267,9 @@ def _linearizer(program: Program) -> dict:
         return known[1]
     key = hashlib.sha256(program.to_json().encode()).hexdigest()
     if key not in _LINEARIZERS:
-        from fgc_backends.sim.config import SimConfig
-        from fgc_backends.sim.emitter import emit
-
+        sim = fgc_backends.load("sim")  # the contract's emit, through the registry
         with tempfile.TemporaryDirectory(prefix="fgc-judge-") as tmp:
-            files = emit(program, Path(tmp), SimConfig())
+            files = sim.emit(program, Path(tmp), sim.Config())
             _LINEARIZERS[key] = runpy.run_path(str(files[0]), run_name="fgc_judge_problem")
     _BY_ID[id(program)] = (program, _LINEARIZERS[key])
     return _LINEARIZERS[key]
