@@ -49,12 +49,14 @@ import numpy as np
 
 import fgc_backends
 from fgc.errors import DataError
+from fgc.interop.estimates import values_from_storage
 from fgc.ir import conditioning
 from fgc.ir.codes import REASONS, STATUSES
 from fgc.ir.datafile import ProblemData
 from fgc.ir.program import Program
 from fgc.ir.result import SolveResult
 from fgc_backends.cfamily.names import key_tokens, token_key
+from fgc_backends.cfamily.scalars import fixed_format
 
 RESULT_MAGIC = "FGCRESULT 2"
 REFERENCE_MAGIC = "FGCREFERENCE 2"
@@ -93,8 +95,6 @@ class HlsResult(SolveResult):
 def keyed(result: HlsResult, program: Program) -> HlsResult:
     """``result`` (storage arrays as ``values``) as the backend contract's ``run`` returns it:
     ``values`` fgc values by Program key, the arrays in ``storage``, ``keys`` to the graph's."""
-    from fgc.interop.estimates import values_from_storage
-
     return replace(result, values=values_from_storage(program, result.values),
                    storage=result.values, keys={v.key: v.user_key for v in program.variables})
 
@@ -184,8 +184,6 @@ def error_floor(program: Program, data: ProblemData, reference, scalar: str) -> 
     held in that scalar can be expected to rest (imu_window N = 50: the optimum's 1e-19 becomes
     9.3e-3 in float), so the testbench's final-error check does not ask a float design for a
     cost its state cannot represent."""
-    from fgc_backends.cfamily.scalars import fixed_format
-
     costs = fgc_backends.load("sim").costs
     if scalar == "double" or reference.final_error is None:
         return 0.0
