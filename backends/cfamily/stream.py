@@ -141,8 +141,9 @@ class TemplateSolver(WindowTemplate):
             for start, m, cols, targets, hi, keys in self.by_slot[s]:
                 if hi > s + 1:
                     raise StreamError(f"a factor on {list(keys)} spans keyframes {s} to "
-                                            f"{hi} of the window: native streaming eliminates "
-                                            "factors between consecutive keyframes only")
+                                      f"{hi} of the window: a template window "
+                                      "eliminates factors between consecutive keyframes "
+                                      "only")
                 if hi > s and n1 == 0:
                     continue
                 block = rows[start:start + m * cols].reshape(m, cols)
@@ -153,7 +154,7 @@ class TemplateSolver(WindowTemplate):
             stacked = np.concatenate(stacks)
             if stacked.shape[0] < n0:
                 raise StreamError(f"window slot {s}: {stacked.shape[0]} rows cannot "
-                                        f"determine its {n0} columns")
+                                  f"determine its {n0} columns")
             r = np.linalg.qr(stacked, mode="r")
             conds.append((r[:n0, :n0], r[:n0, n0:width], r[:n0, -1]))
             carry = r[n0:width, n0:] if n1 else None
@@ -197,13 +198,13 @@ def as_prior(rows: np.ndarray, n: int, what: str) -> tuple[np.ndarray, np.ndarra
     if rows is None or rows.shape[0] < n:
         have = 0 if rows is None else rows.shape[0]
         raise StreamError(f"{what}: {have} rows cannot determine the {n} columns of the "
-                                "factor it passes to the next keyframe")
+                          "factor it passes to the next keyframe")
     a, b = rows[:n, :-1], rows[:n, -1]
     signs = np.where(np.diag(a) < 0, -1.0, 1.0)
     a, b = a * signs[:, None], b * signs
     if np.min(np.diag(a)) <= 1e-12 * max(1.0, float(np.max(np.abs(a)))):
         raise StreamError(f"{what}: the marginal prior it passes to the next keyframe is "
-                                "singular")
+                          "singular")
     return a, b, np.linalg.solve(a, b)
 
 
@@ -296,7 +297,7 @@ class _CompiledGeometry:
                           _data(x, self.m), _data(self._local, self.n),
                           _data(self._jac, self.n * self.n)):
             raise StreamError("internal error: the library's keyframe layout is not the "
-                                    "stream's")
+                              "stream's")
         return self._local.copy(), self._jac.copy()
 
     def walk(self, count: int, r, s, d, lin, lin_next, x) -> None:
@@ -309,14 +310,14 @@ class _CompiledGeometry:
                       _data(s, count * n * n), _data(d, count * n), _data(lin, count * m),
                       _data(lin_next, count * m), _data(x, (count + 1) * m)):
             raise StreamError("internal error: the library's keyframe layout is not the "
-                                    "stream's")
+                              "stream's")
 
 
 def _data(a: np.ndarray, at_least: int) -> int:
     """The address of float64 C-contiguous ``a`` holding at least ``at_least`` numbers."""
     if a.dtype != np.float64 or not a.flags.c_contiguous or a.size < at_least:
         raise StreamError(f"internal error: an array of {a.size} {a.dtype} numbers where "
-                                f"{at_least} contiguous float64 are read")
+                          f"{at_least} contiguous float64 are read")
     return a.__array_interface__["data"][0]
 
 
@@ -349,7 +350,7 @@ class StreamState:
         for c, keys in enumerate(self.clusters):
             if [estimate[k].size for k in keys] != sizes:
                 raise StreamError(f"keyframe {c}'s variables are not laid out as keyframe "
-                                        "0's")
+                                  "0's")
             for p, k in enumerate(keys):
                 x_all[c, offsets[p]:offsets[p + 1]] = estimate[k]
                 estimate[k] = x_all[c, offsets[p]:offsets[p + 1]]
@@ -416,7 +417,7 @@ class FixedLagDriver(TemplateSolver):
     def __init__(self, graph: Graph, program: Program, window: int, load):
         if isinstance(window, bool) or not isinstance(window, int) or window < 1:
             raise StreamError(f"the fixed-lag window must be a positive number of "
-                                    f"keyframes, got {window!r}")
+                              f"keyframes, got {window!r}")
         slot_layout(graph, program, FixedLag(window)).check("a template window", StreamError)
         super().__init__(graph, program, window + 1, load)
         self.window = window
@@ -545,7 +546,7 @@ class IncrementalDriver:
                 c = first - 1
                 if not complete[c]:
                     raise StreamError(f"keyframe {c}: its kept conditional does not reach "
-                                            f"keyframe {first}")
+                                      f"keyframe {first}")
                 shift, jac = local_jacobian(kept_next[c], x_all[first])
                 kept_d[c] -= kept_s[c] @ shift
                 kept_s[c] = kept_s[c] @ jac
@@ -560,7 +561,7 @@ class IncrementalDriver:
                     taus[c + 1] = (passed[i], [estimate[k].copy() for k in stream.clusters[c + 1]])
             if first > 0 and not complete[:first].all():
                 raise StreamError(f"keyframes 0 … {first - 1}: a kept conditional does not "
-                                        "reach its parent")
+                                  "reach its parent")
             if compiled is not None:  # back-substitution through the kept part: one call
                 compiled.walk(first, kept_r, kept_s, kept_d, kept_lin, kept_next, x_all)
             else:

@@ -367,7 +367,7 @@ class WindowTemplate:
                 if names != [*measured] or not np.array_equal(
                         expected, np.concatenate([*lin, self._prior_tail(r, mean)])):
                     raise StreamError(f"internal error: {ptype.name}'s data layout is not "
-                                            "the one the stream assembles")
+                                      "the one the stream assembles")
 
     def assemble(self, estimate: dict, first: int, last: int, tau):
         """(x, d): the template's flat arrays (storage, factor data) for the window first …
@@ -405,8 +405,8 @@ class WindowTemplate:
         inside = int(np.count_nonzero((self.span_lo >= first) & (self.span_hi <= last)))
         if matched != inside:
             raise StreamError(f"keyframes {first} … {last}: the window holds {inside} "
-                                    f"factors but the compiled template matches {matched}: the "
-                                    "stream's factors do not repeat keyframe by keyframe")
+                              f"factors but the compiled template matches {matched}: the "
+                              "stream's factors do not repeat keyframe by keyframe")
         return x, np.concatenate(words)
 
     def store(self, estimate: dict, x_out: np.ndarray, first: int, last: int) -> None:
