@@ -17,7 +17,7 @@ native solver's IncrementalStream on the same stream (same K and batch keyframes
 template libraries built before timing) and GTSAM's ISAM2 update. It also prints how far the
 native estimate is from the simulator's after every keyframe.
 
-Default mode. The native fixed-lag row (fgc_backends.native.stream) times each whole update:
+Default mode. The native fixed-lag row (fgc_backends.native.streaming) times each whole update:
 assembling the window's numbers, the native LM solve and the marginalisation of the keyframe
 leaving; its "solve" and "marginal" lines split that time. With ``--incremental`` a native
 incremental row (IncrementalStream; the whole update: the library's window solve, the host's
@@ -100,7 +100,7 @@ def _native_incremental(graph, program, log=print):
     """The native IncrementalStream of ``program`` (double), its template libraries built here
     (not timed)."""
     from fgc_backends.native.config import NativeConfig
-    from fgc_backends.native.stream import IncrementalStream
+    from fgc_backends.native.streaming import IncrementalStream
 
     def built(size, i, count):
         log(f"building the native {size}-keyframe template window ({i + 1} of {count}; "
@@ -195,7 +195,7 @@ def hls_model(args) -> dict:
         print(f"accelerator: update model on the HLS plan ({sol.linear.upper()}, {unit}, "
               f"{sol.precision}, {sol.clock_mhz:g} MHz) - model estimates, not measured; "
               f"{NOT_EMITTED}")
-    print(f"native: fgc_backends.native.stream.IncrementalStream, double, the same K and batch "
+    print(f"native: fgc_backends.native.streaming.IncrementalStream, double, the same K and batch "
           f"keyframes; wall time of the whole update (the library's LM solve of the window, "
           f"the host's assembly and NumPy store elimination of the window, and the "
           f"back-substitution through the kept conditionals and the re-expression, one "
@@ -332,7 +332,7 @@ def main(argv=None) -> int:
                      acc))
         return final, updates
 
-    from fgc_backends.native.stream import FixedLagStream
+    from fgc_backends.native.streaming import FixedLagStream
 
     native_stream = FixedLagStream(graph, program, args.window)  # built here, not timed
     online: dict = {}

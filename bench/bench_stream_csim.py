@@ -17,7 +17,7 @@ the C simulation's estimate from
 
 The template windows are emitted and built once (fgc's cache, ``hls-stream/``); the first run
 spends most of its time in g++. The kept Bayes net lives on the host in this path
-(``fgc_backends.hls.stream``): what is checked is the emitted accelerator's window solves
+(``fgc_backends.hls.streaming``): what is checked is the emitted accelerator's window solves
 inside a stream.
 """
 
@@ -51,7 +51,7 @@ def main(argv=None) -> int:
     from fgc.interop import oracles
     from fgc.interop.to_gtsam import to_gtsam
     from fgc.ir.datafile import problem_data
-    from fgc_backends.hls.stream import (
+    from fgc_backends.hls.streaming import (
         OnChipFixedLagStream,
         OnChipIncrementalStream,
         incremental_stream,

@@ -37,6 +37,7 @@ from fgc.frontend.geometry import (
     Vector9,
     vector_type,
 )
+from fgc.version import __version__  # noqa: F401  (one home: fgc/version.py)
 
 # The front end's modules keep their public names: a user writes ``from fgc.factors import
 # PriorFactor`` or ``from fgc.geometry import Pose3`` (as the examples do), whatever folder the
@@ -65,7 +66,6 @@ def _public_modules() -> None:
 
 _public_modules()
 
-__version__ = "0.1.0"
 
 
 def stream(graph, window=None, incremental=None, batch_every=None, solver=None):

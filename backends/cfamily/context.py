@@ -5,10 +5,10 @@ lanes and row export), so knowledge of a Program's tables lives here once."""
 
 from __future__ import annotations
 
-import fgc
 from fgc.ir.codes import NOISE_CODES, REASONS, ROBUST_CODES, STATUSES
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import Program
+from fgc.version import __version__
 from fgc_backends.cfamily.blocks import block_contexts
 from fgc_backends.cfamily.names import comment
 from fgc_backends.cfamily.printer import HlsCodePrinter
@@ -44,7 +44,7 @@ def common_context(program: Program, config, project: str, error: type[Exception
     max_sep = max(w - f for w, f in zip(table["STEP_W"], table["STEP_F"], strict=True))
     level_width = max(len(level) for level in program.schedule.levels)
     return {
-        "fgc_version": fgc.__version__, "name": project, "guard": project.upper(),
+        "fgc_version": __version__, "name": project, "guard": project.upper(),
         "problem_comment": comment(program.name), "data_magic": MAGIC,
         "structure_fingerprint": program.structure_fingerprint,
         "design_fingerprint": program.fingerprint,

@@ -47,13 +47,16 @@ from pathlib import Path
 
 import numpy as np
 
+import fgc_backends
 from fgc.errors import DataError
+from fgc.interop.estimates import values_from_storage
 from fgc.ir import conditioning
 from fgc.ir.codes import REASONS, STATUSES
 from fgc.ir.datafile import ProblemData
 from fgc.ir.program import Program
 from fgc.ir.result import SolveResult
 from fgc_backends.cfamily.names import key_tokens, token_key
+from fgc_backends.cfamily.scalars import fixed_format
 
 RESULT_MAGIC = "FGCRESULT 2"
 REFERENCE_MAGIC = "FGCREFERENCE 2"
@@ -92,8 +95,6 @@ class HlsResult(SolveResult):
 def keyed(result: HlsResult, program: Program) -> HlsResult:
     """``result`` (storage arrays as ``values``) as the backend contract's ``run`` returns it:
     ``values`` fgc values by Program key, the arrays in ``storage``, ``keys`` to the graph's."""
-    from fgc.interop.estimates import values_from_storage
-
     return replace(result, values=values_from_storage(program, result.values),
                    storage=result.values, keys={v.key: v.user_key for v in program.variables})
 
@@ -171,10 +172,9 @@ def _keyed_lines(path: Path, lines: list[str], first: int, program: Program
 def reference_run(program: Program, data: ProblemData):
     """The simulator's float64 run of ``program`` on ``data``: the testbench's reference
     (the simulator defines what the hardware computes; float64 so that a float accelerator is
-    judged against the optimum, not against another float32 rounding)."""
-    from fgc_backends import sim
-
-    return sim.run(program, data, precision="float64")
+    judged against the optimum, not against another float32 rounding). The simulator is
+    reached through the registry: this layer imports no backend."""
+    return fgc_backends.load("sim").run(program, data, precision="float64")
 
 
 def error_floor(program: Program, data: ProblemData, reference, scalar: str) -> float:
@@ -184,9 +184,7 @@ def error_floor(program: Program, data: ProblemData, reference, scalar: str) -> 
     held in that scalar can be expected to rest (imu_window N = 50: the optimum's 1e-19 becomes
     9.3e-3 in float), so the testbench's final-error check does not ask a float design for a
     cost its state cannot represent."""
-    from fgc_backends.cfamily.scalars import fixed_format
-    from fgc_backends.sim import costs
-
+    costs = fgc_backends.load("sim").costs
     if scalar == "double" or reference.final_error is None:
         return 0.0
     fmt = fixed_format(scalar)
@@ -267,11 +265,9 @@ def _linearizer(program: Program) -> dict:
         return known[1]
     key = hashlib.sha256(program.to_json().encode()).hexdigest()
     if key not in _LINEARIZERS:
-        from fgc_backends.sim.config import SimConfig
-        from fgc_backends.sim.emitter import emit
-
+        sim = fgc_backends.load("sim")  # the contract's emit, through the registry
         with tempfile.TemporaryDirectory(prefix="fgc-judge-") as tmp:
-            files = emit(program, Path(tmp), SimConfig())
+            files = sim.emit(program, Path(tmp), sim.Config())
             _LINEARIZERS[key] = runpy.run_path(str(files[0]), run_name="fgc_judge_problem")
     _BY_ID[id(program)] = (program, _LINEARIZERS[key])
     return _LINEARIZERS[key]

@@ -11,15 +11,30 @@ synthesisable kernel ``<name>_top``), ``tb_<name>.cpp`` (testbench), ``run_hls.t
 :mod:`fgc_backends.native`.
 """
 
+from fgc.ir.stream import StreamProgram
 from fgc_backends.cfamily.printer import HlsCodePrinter, UnsupportedExpressionError
 from fgc_backends.cfamily.results import HlsResult
+from fgc_backends.hls import emitter
 from fgc_backends.hls.build import HlsBuildError, HlsMismatchError, make, run, run_csim
 from fgc_backends.hls.config import HlsConfig, HlsConfigError
-from fgc_backends.hls.emitter import HlsProject, emit
+from fgc_backends.hls.emitter import HlsProject
 from fgc_backends.hls.lint import HlsLintError, LintIssue, lint_source
+from fgc_backends.hls.streaming import emit_window, on_chip, stream, update_model, window_model
+from fgc_backends.hls.update import NOT_EMITTED
 
 Config = HlsConfig  # the backend contract's name (fgc_backends.CONTRACT)
 
+
+def emit(program, out_dir, config=None, **options) -> HlsProject:
+    """The contract's ``emit``: a Program's batch design (:func:`fgc_backends.hls.emitter.emit`,
+    ``options`` passed on), or a :class:`~fgc.ir.stream.StreamProgram`'s on-chip streaming
+    design with its testbench's stream inputs (:func:`fgc_backends.hls.streaming.emit_window`:
+    the policy read from the StreamProgram)."""
+    if isinstance(program, StreamProgram):
+        return emit_window(program, out_dir, config)
+    return emitter.emit(program, out_dir, config, **options)
+
 __all__ = ["HlsBuildError", "HlsMismatchError", "HlsCodePrinter", "HlsConfig", "HlsConfigError",
            "HlsLintError", "HlsProject", "HlsResult", "LintIssue", "UnsupportedExpressionError",
-           "emit", "lint_source", "make", "run", "run_csim", "Config"]
+           "NOT_EMITTED", "emit", "lint_source", "make", "on_chip", "run", "run_csim", "stream",
+           "update_model", "window_model", "Config"]

@@ -57,28 +57,20 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from fgc.errors import FgcError
+from fgc_backends.cfamily.lint import (  # the host rules, shared with the native backend
+    LintIssue,
+    host_issues,
+    line_of,
+    strip_comments_and_strings,
+    synthesis_view,
+    views,
+)
 
 
 class HlsLintError(FgcError):
     """Emitted C++ breaks a synthesisability rule (each issue names file, line and rule)."""
 
 
-@dataclass(frozen=True)
-class LintIssue:
-    file: str
-    line: int
-    rule: str
-    message: str
-
-    def __str__(self) -> str:
-        return f"{self.file}:{self.line}: [{self.rule}] {self.message}"
-
-
-_ALLOC = re.compile(r"\b(new|delete|malloc|calloc|realloc|free|alloca)\b")
-_STL = re.compile(r"\bstd::(vector|list|deque|map|multimap|set|multiset|unordered_\w+|string|"
-                  r"queue|priority_queue|stack|function|shared_ptr|unique_ptr)\b|"
-                  r"#\s*include\s*<(vector|list|deque|map|set|unordered_\w+|string|queue|stack|"
-                  r"memory|functional)>")
 _UNBOUNDED = re.compile(r"\b(while|do|goto)\b")
 _FOR = re.compile(r"\bfor\s*\(")
 _BOUND = re.compile(r"^\s*\w+\s*(<|<=|>|>=)\s*([A-Z0-9_+\-*/() ]+)\s*$")
@@ -88,31 +80,11 @@ _CALL = re.compile(r"\b([A-Za-z_]\w*)\s*(<[^<>;]*>)?\s*\(")
 _KEYWORDS = {"if", "for", "while", "switch", "return", "sizeof", "do", "catch"}
 
 
-def strip_comments_and_strings(text: str) -> str:
-    """``text`` with comments and string/char literals replaced by spaces (newlines kept)."""
-    pattern = re.compile(r'//[^\n]*|/\*.*?\*/|"(\\.|[^"\\\n])*"|\'(\\.|[^\'\\\n])*\'', re.S)
-    return pattern.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
-
-
-_COUNTING = re.compile(r"#\s*ifdef\s+FGC_COUNT_CYCLES\b(.*?)#\s*else\b", re.S)
-
-
-def synthesis_view(text: str) -> str:
-    """``text`` as synthesis sees it: the csim-only cycle counters (the ``#ifdef
-    FGC_COUNT_CYCLES`` branch of fgc_cycles.h, which only a counting testbench defines) blanked
-    out, lines kept."""
-    return _COUNTING.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
-
-
 def lint_source(text: str, file: str = "<source>", synthesis: bool = True) -> list[LintIssue]:
     """All rule violations in one C++ source text."""
-    code = strip_comments_and_strings(synthesis_view(text))
     # pragmas stay visible to the trip-count rule, but their words are not code
-    plain = re.sub(r"#\s*pragma[^\n]*", lambda m: " " * len(m.group(0)), code)
-    issues = [LintIssue(file, _line(plain, m.start()), "alloc", f"dynamic allocation "
-                        f"'{m.group(1)}'") for m in _ALLOC.finditer(plain)]
-    issues += [LintIssue(file, _line(code, m.start()), "stl", f"STL container "
-                         f"'{m.group(0).strip()}'") for m in _STL.finditer(code)]
+    code, plain = views(text)
+    issues = host_issues(code, plain, file)
     if synthesis:
         issues += [LintIssue(file, _line(plain, m.start()), "unbounded",
                              f"'{m.group(1)}' has no bounded trip count")
@@ -122,8 +94,7 @@ def lint_source(text: str, file: str = "<source>", synthesis: bool = True) -> li
     return sorted(issues, key=lambda i: (i.line, i.rule))
 
 
-def _line(text: str, pos: int) -> int:
-    return text.count("\n", 0, pos) + 1
+_line = line_of
 
 
 def _matching(text: str, start: int, open_: str, close: str) -> int:

@@ -1,7 +1,7 @@
 """The fixed-lag window on chip (issue 19): the accelerator keeps the window between calls and
 takes one keyframe's measurements per call.
 
-The design is the batch accelerator of a *template* window (:class:`~fgc_backends.native.stream.
+The design is the batch accelerator of a *template* window (:class:`~fgc.compiler.stream.
 WindowTemplate`: the chain's first W + 1 keyframes, a ``MarginalPrior…`` factor on each) with a
 second top function, ``<name>_stream`` (accel.cpp.jinja's stream section), that owns the
 window's state in the accelerator's memories (``X``: the slots' variables, ``DATA_BUF``: every
@@ -22,11 +22,11 @@ factor's words, the marginal prior τ among them) and runs one update a call:
    positive diagonal, its mean A⁻¹b by back-substitution, written into slot 1's prior with slot 1's
    estimate as the linearisation point (a singular marginal is reported, not written).
 
-This is the native stream's update (:class:`~fgc_backends.native.stream.FixedLagStream`) with
+This is the native stream's update (:class:`~fgc_backends.cfamily.stream.FixedLagDriver`) with
 the host's window assembly and NumPy marginalisation replaced by the accelerator's own memories
 and units; held slots during the first W updates keep their reset values under a unit prior, as
 there. :class:`WindowLayout` computes the tables the stream section reads and the words of each
-call; the host driver is :class:`fgc_backends.hls.stream.OnChipFixedLagStream`.
+call; the host driver is :class:`fgc_backends.hls.streaming.OnChipFixedLagStream`.
 """
 
 from __future__ import annotations
@@ -35,10 +35,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fgc.compiler.stream import WindowTemplate
 from fgc.errors import FgcError
 from fgc.ir.datafile import factor_words
 from fgc_backends.hls.plan import PHASE_TRIGGER, plan_groups
-from fgc_backends.native.stream import WindowTemplate
 
 KEEP, ZERO = -1, -2  # shift codes besides a source word: keep the word, write zero
 

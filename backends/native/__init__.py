@@ -15,8 +15,9 @@ from fgc_backends.native.build import NativeBuildError, make
 from fgc_backends.native.config import NativeConfig, NativeConfigError, host_flags
 from fgc_backends.native.emitter import NativeProject, emit
 from fgc_backends.native.solver import NativeSolver, default_config, load, run
+from fgc_backends.native.streaming import stream
 
 Config = NativeConfig  # the backend contract's name (fgc_backends.CONTRACT)
 
 __all__ = ["Config", "NativeBuildError", "NativeConfig", "NativeConfigError", "NativeProject",
-           "NativeSolver", "default_config", "emit", "host_flags", "load", "make", "run"]
+           "NativeSolver", "default_config", "emit", "host_flags", "load", "make", "run", "stream"]

@@ -24,6 +24,7 @@ import numpy as np
 from fgc.ir.program import Program
 from fgc_backends.cfamily import limits
 from fgc_backends.cfamily.context import common_context
+from fgc_backends.cfamily.lint import lint_host_files
 from fgc_backends.cfamily.names import identifier
 from fgc_backends.cfamily.printer import HlsCodePrinter
 from fgc_backends.cfamily.retract import local_kinds
@@ -31,7 +32,6 @@ from fgc_backends.cfamily.scalars import (
     check_fixed_constants,
     kernel_constants,
 )
-from fgc_backends.hls.lint import lint_files
 from fgc_backends.native.config import NativeConfig, NativeConfigError
 
 # the central-difference step of the stream's re-expression Jacobian (fgc_local_jacobian), the
@@ -75,7 +75,7 @@ def emit(program: Program, out_dir: str | Path, config: NativeConfig | None = No
     ``name`` (default: the Program's name) is sanitised into the project identifier used for
     file names and the top function ``<name>_top``. Emitting the same Program twice gives
     byte-identical files. Every file is checked to allocate nothing and use no STL container
-    (:func:`fgc_backends.hls.lint.lint_files`, host rules).
+    (:func:`fgc_backends.cfamily.lint.lint_host_files`, host rules).
     """
     config = for_program(program, config or NativeConfig())
     config.check()
@@ -104,7 +104,7 @@ def emit(program: Program, out_dir: str | Path, config: NativeConfig | None = No
         path = out / file_name
         path.write_text(text)
         paths.append(path)
-    issues = lint_files([p for p in paths if p.suffix in (".cpp", ".h")], synthesis=False)
+    issues = lint_host_files([p for p in paths if p.suffix in (".cpp", ".h")])
     if issues:
         listing = "\n".join(str(i) for i in issues[:20])
         raise NativeConfigError(f"internal error: the native project '{project}' allocates or "

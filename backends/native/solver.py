@@ -16,7 +16,6 @@ import atexit
 import ctypes
 import hashlib
 import os
-import platform
 import shutil
 import tempfile
 from dataclasses import dataclass
@@ -24,7 +23,6 @@ from pathlib import Path
 
 import numpy as np
 
-import fgc
 from fgc.compiler.cache import (
     MANIFEST,
     cache_dir,
@@ -36,6 +34,8 @@ from fgc.compiler.cache import (
 from fgc.errors import DataError
 from fgc.ir.datafile import ProblemData, check_structure
 from fgc.ir.program import Program
+from fgc.version import __version__
+from fgc_backends.cfamily.host import host_key
 from fgc_backends.cfamily.names import identifier
 from fgc_backends.cfamily.results import HlsResult, judge_precision, keyed, result_from_arrays
 from fgc_backends.cfamily.scalars import check_fixed_data
@@ -173,34 +173,22 @@ class NativeSolver:
                                self.project.config.scalar)
 
 
-def host_key() -> str:
-    """The machine the native build is for: ``-march=native`` code may not run elsewhere, so a
-    cache shared between machines keeps one build per CPU model and feature set."""
-    cpu = ""
-    try:
-        with open("/proc/cpuinfo", encoding="utf-8", errors="replace") as fh:
-            cpu = "".join(sorted({line for line in fh if line.startswith(("model name",
-                                                                           "flags"))}))
-    except OSError:
-        pass
-    return f"{platform.machine()}|{platform.processor()}|{cpu}"
-
-
 def project_key(program: Program, config: NativeConfig) -> str:
     """Content hash of everything the build depends on (Program, config, templates, fgc, the
     host CPU)."""
     h = hashlib.sha256(program.to_json().encode())
     h.update(repr(config).encode())
     h.update(host_key().encode())
-    h.update(fgc.__version__.encode())
+    h.update(__version__.encode())
     for template in sorted(NativeConfig.template_dir().glob("*.jinja")):
         h.update(template.read_bytes())
     # this backend's modules and the C-family layer it prints with (fgc_backends.cfamily);
-    # not the streaming driver (stream.py), which calls builds but prints nothing into them
+    # not the streaming drivers (streaming.py, cfamily's stream.py), which call builds but print
+    # nothing into them
     backends = Path(__file__).resolve().parent.parent
     for module in sorted([*(backends / "native").glob("*.py"),
                           *(backends / "cfamily").glob("*.py")]):
-        if module.name != "stream.py":
+        if module.name not in ("stream.py", "streaming.py"):
             h.update(module.read_bytes())
     return h.hexdigest()[:24]
 

@@ -19,8 +19,9 @@ from .config import SimConfig
 from .emitter import EmitError, emit
 from .printer import SimPrinter
 from .runner import SimResult, costs, linearize, read_result, run
+from .streaming import stream
 
 Config = SimConfig  # the backend contract's name (fgc_backends.CONTRACT)
 
-__all__ = ["Config", "EmitError", "SimConfig", "SimPrinter", "SimResult", "costs", "emit",
+__all__ = ["Config", "EmitError", "SimConfig", "SimPrinter", "SimResult", "costs", "emit", "stream",
            "linearize", "read_result", "run"]

@@ -17,12 +17,12 @@ from pathlib import Path
 
 import jinja2
 
-import fgc
 from fgc.errors import FgcError
 from fgc.frontend.geometry import special
 from fgc.ir.codes import NOISE_CODES, NOISE_KINDS, ROBUST_CODES, noise_param_count
 from fgc.ir.datafile import MAGIC
 from fgc.ir.program import BlockSpec, Program
+from fgc.version import __version__
 
 from .config import SimConfig, comment
 from .printer import PrintedKernel, SimPrinter
@@ -82,7 +82,7 @@ def _context(program: Program, config: SimConfig) -> dict:
     sched = program.schedule
     types = variable_types(program, EmitError)  # checks the type names
     return {
-        "fgc_version": fgc.__version__,
+        "fgc_version": __version__,
         "structure_fingerprint": program.structure_fingerprint,
         "problem_comment": comment(program.name),
         "series_below": repr(float(special.SERIES_BELOW)),

@@ -93,13 +93,20 @@ def _streaming(args) -> bool:
         return False
     check_mode(incremental, batch_every, window)
     backend = getattr(args, "backend", "sim")
-    if getattr(args, "model_only", False) and backend != "hls":
+    if getattr(args, "model_only", False) and not _backend_info(backend).hardware:
         raise FgcError("--model-only prices the simulator's updates on the HLS plan: it needs "
                        "--backend hls")
     if backend != "sim" and args.command != "stream" and not (
-            args.command in ("compile", "report") and backend == "hls"):
+            args.command in ("compile", "report") and _backend_info(backend).stream_design):
         raise FgcError(f"fgc {args.command} --backend {backend}: {HW_REFUSAL}")
     return True
+
+
+def _backend_info(name: str):
+    """The registry's entry of backend ``name`` (fgc_backends.BACKENDS)."""
+    from fgc_backends import BACKENDS
+
+    return BACKENDS[name]
 
 
 def _clock_mhz(args) -> dict:
@@ -352,13 +359,13 @@ def _backend_help() -> str:
 
 def _cmd_compile(args) -> int:
     window = getattr(args, "window", None) if _streaming(args) else None
-    if window is not None and args.backend != "hls":
+    if _streaming(args) and _backend_info(args.backend).stream_design:
+        return _compile_window(args, window)
+    if window is not None:
         raise UsageError("fgc compile: --window is a run-time mode of the simulator and the "
                          "native solver (the same build serves every window); pass it to "
                          "simulate, verify or stream, or compile the on-chip window with "
                          "--backend hls")
-    if args.backend == "hls" and _streaming(args):
-        return _compile_window(args, window)
     _, program, data = _compile(args, "float32")
     from fgc.ir.datafile import write_data
 
@@ -393,14 +400,14 @@ def _cmd_compile(args) -> int:
 
 
 def _compile_window(args, window: int | None) -> int:
-    """``fgc compile --backend hls --window W | --incremental K``: the on-chip design."""
-    from fgc_backends.hls.stream import emit_window
-
-    graph, program, data = _stream_setup(args, "float32")
+    """``fgc compile --backend hls --window W | --incremental K``: the on-chip design (the
+    backend's ``emit`` of the StreamProgram: its policy, not a loose window, shapes it)."""
+    sp, _ = _stream_setup(args, "float32")
+    program = sp.program
     out = Path(args.out)
     try:
         # the design first: a stream it cannot run is refused before anything is written
-        project = emit_window(graph, program, window, data, out, _hls_config(args, program))
+        project = _backend(args.backend).emit(sp, out, _hls_config(args, program))
         (out / "program.json").write_text(program.to_json())
     except OSError as exc:
         raise FgcError(f"--out {out}: cannot write the project: "
@@ -505,15 +512,19 @@ def _cmd_run(args) -> int:
 
 
 def _stream_setup(args, precision_default: str):
-    from fgc.app.streaming import compile_stream
+    """The stream stage's StreamProgram (the options' policy) and the graph's data."""
+    from fgc.compiler.stream import compile_stream, policy_of
     from fgc.ir.datafile import problem_data
 
     stages, graph, config = _load(args, precision_default)
-    program = compile_stream(graph, config, window=getattr(args, "window", None),
-                             name=_name(args.spec))
+    if config.incremental_k is not None:  # _load put the plan in the solver options
+        policy = policy_of(config.incremental_k, config.batch_every)
+    else:
+        policy = policy_of(window=getattr(args, "window", None))
+    sp = compile_stream(graph, config, policy, name=_name(args.spec))
     stages.done("compile")
     args.stages = stages
-    return graph, program, problem_data(graph, program)
+    return sp, problem_data(graph, sp.program)
 
 
 def _mode_text(program, window) -> str:
@@ -540,19 +551,21 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
     from fgc.interop import estimates as export
     if not _streaming(args):
         raise FgcError(f"fgc {args.command} needs --incremental K or --window W")
-    graph, program, data = _stream_setup(args, precision_default)
-    window = getattr(args, "window", None)
+    sp, data = _stream_setup(args, precision_default)
+    graph, program, window = sp.graph, sp.program, sp.window
     quiet = getattr(args, "quiet", False)
     n = len(program.schedule.clusters)
     backend = getattr(args, "backend", "sim")
-    hls = backend == "hls"
+    hls = _backend_info(backend).hardware  # the backend prices its own design
     model_only = hls and getattr(args, "model_only", False)
     runs = "sim" if model_only else backend
-    who = {"native": "native solver", "hls": "HLS C simulation"}.get(runs, "simulator")
-    timed = {"native": "native", "hls": "csim"}.get(runs, "simulator")
+    # the backend's runner first: a stream it cannot run is refused before anything is printed
+    runner = streaming.make_runner(sp, runs)
+    who, timed = runner.who, runner.timing_key
+    on_chip = hls and _backend(backend).on_chip(sp)
     if not quiet:
         if hls:
-            print(_stream_hls_head(args, program, n, window, model_only), flush=True)
+            print(_stream_hls_head(args, program, n, window, model_only, on_chip), flush=True)
         else:
             print(f"fgc {_stream_word(args)} {args.spec}: {n} keyframes, "
                   f"{_mode_text(program, window)}, "
@@ -561,11 +574,10 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
                   f"chain as long as its window; {streaming.UNPRICED} otherwise) and the "
                   f"{who}'s wall time", flush=True)
     online: dict = {}
-    on_chip = hls and streaming.on_chip(program, window)
     if on_chip:  # the emitted on-chip design's own price
-        pricer = streaming.WindowPricer(graph, program, window)
+        pricer = streaming.WindowPricer(graph, program, window, backend=backend)
     elif hls:
-        pricer = streaming.update_model(graph, program)
+        pricer = streaming.update_model(graph, program, backend=backend)
     else:
         pricer = streaming.UpdatePricer(graph, program, window)
     priced: list = []
@@ -595,8 +607,8 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
             print(f"  compiling the {who}'s {size}-keyframe template window ({index + 1} of "
                   f"{count}; built once, reused by every update of that size)", flush=True)
 
-    result = streaming.run_stream(program, data, window, progress, backend=runs,
-                                  graph=graph, progress_build=building)
+    result = streaming.run_stream(program, data, window, progress, progress_build=building,
+                                  sp=sp, runner=runner)
     from fgc.app.run_report import require_finite_start
 
     require_finite_start(graph, result)
@@ -638,7 +650,7 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
                      f"estimate: {parts}); "
                      + ("fits " if res["fits"] else "does not fit ") + res["part"])
     elif hls:
-        from fgc_backends.hls.update import NOT_EMITTED
+        NOT_EMITTED = _backend(backend).NOT_EMITTED  # noqa: N806  (the backend's constant)
 
         report["not_emitted"] = NOT_EMITTED
         extra = [p["latency_with_assumed_ms"] for p in priced]
@@ -660,14 +672,12 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
     return EXIT_OK if result.status == "converged" else EXIT_FAILED
 
 
-def _stream_hls_head(args, program, n: int, window, model_only: bool) -> str:
+def _stream_hls_head(args, program, n: int, window, model_only: bool, on_chip: bool) -> str:
     solver = program.solver
     unit = (f"n_u = {solver.units} Update units" if solver.linear == "qr"
             else f"#CPE = {solver.cpe}")
     scalar = "double" if solver.precision == "float64" else "float"
-    from fgc.app.streaming import on_chip
-
-    if on_chip(program, window):
+    if on_chip:
         who = (f"simulator {solver.precision}" if model_only else
                f"the on-chip design's C simulation ({scalar})")
         kept = ("" if window is not None else
@@ -704,9 +714,9 @@ def _cmd_verify_stream(args) -> int:
     from fgc.interop import oracles
     from fgc.interop.to_gtsam import to_gtsam
 
-    graph, program, data = _stream_setup(args, "float64")
-    window = getattr(args, "window", None)
-    result = streaming.run_stream(program, data, window)
+    sp, data = _stream_setup(args, "float64")
+    graph, program, window = sp.graph, sp.program, sp.window
+    result = streaming.run_stream(program, data, window, sp=sp)
     require_finite_start(graph, result)
     problem = to_gtsam(graph)
     clusters = program.schedule.clusters

@@ -3,13 +3,13 @@ update, per-keyframe results, the trajectory and its accuracy against the batch 
 ``fgc stream`` and :func:`fgc.stream`; ``fgc simulate / verify`` with ``--incremental`` or
 ``--window`` use the same pieces.
 
-Who runs the updates (``run_stream(..., backend=)``): the simulator (``"sim"``, the reference
-semantics: the emitted simulator's incremental module); the native solver (``"native"``,
-:mod:`fgc_backends.native.stream`) and the HLS design's C simulation (``"hls"``,
-:mod:`fgc_backends.hls.stream`) run the same updates on a *template* window Program compiled
-once, each update's LM solve in the compiled code and the kept Bayes net (conditionals, the
-marginal prior, the store elimination and back-substitution) on the host in NumPy — for the HLS
-path that is not paper A's on-chip state, see docs/hls.md.
+The stream itself is the middle end's (:mod:`fgc.compiler.stream`: a
+:class:`fgc.ir.stream.StreamProgram`, the chain Program with its policy and slot layout); who
+runs the updates (``run_stream(..., backend=)``) is a backend reached through the registry and
+its contract's ``stream`` (``fgc_backends.load(name).stream(stream_program, config)``): the
+simulator (the reference semantics: the emitted simulator's incremental module), the native
+solver or the HLS design's C simulation (template windows compiled once, docs/native.md,
+docs/hls.md).
 
 Modes:
 
@@ -36,13 +36,25 @@ from __future__ import annotations
 import queue
 import threading
 from collections.abc import Iterator
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
+from fgc.app import metrics
+from fgc.app.run_report import gtsam_optimize, plan_summary
+from fgc.compiler.stream import check_mode, compile_chain, policy_of, prefix_program, stream_program
 from fgc.errors import FgcError
 from fgc.frontend.dsl import Graph
-from fgc.frontend.geometry import Pose2, Pose3
+from fgc.frontend.geometry import Pose2, Pose3, type_named
+from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
+from fgc.ir.datafile import problem_data
+from fgc.ir.stream import StreamProgram
+from fgc_backends import load
+
+__all__ = ["KeyframeResult", "StreamProgram", "UpdatePricer", "WindowPricer", "accuracy",
+           "batch_optimum", "check_mode", "compile_stream", "keyframe_result", "make_runner",
+           "on_chip", "poses", "prefix_program", "run_stream", "stream", "stream_program",
+           "timing_summary", "update_model"]
 
 UNPRICED = "one-keyframe windows and window sizes past the first four others seen"
 HW_REFUSAL = ("incremental and fixed-lag modes run keyframe by keyframe in fgc stream (--backend "
@@ -76,107 +88,48 @@ class KeyframeResult:
         return {k: self.values[k] for k in program.schedule.clusters[self.keyframe]}
 
 
-def check_mode(incremental: int | None, batch_every, window: int | None) -> None:
-    if window is not None and (incremental is not None or batch_every is not None):
-        raise FgcError("--window (a fixed-lag window) excludes --incremental/--batch-every")
-    if batch_every is not None and incremental is None:
-        raise FgcError("--batch-every needs --incremental K: batch steps belong to an "
-                       "incremental plan")
-    if window is not None and window < 1:
-        raise FgcError(f"--window {window}: the window must hold at least 1 keyframe")
-
-
 def compile_stream(graph: Graph, solver=None, incremental: int | None = None,
                    batch_every=None, window: int | None = None, name: str = "stream"):
     """The Program for a stream: ``solver`` (a SolverConfig, default float64) with the
-    incremental plan, if asked for. Raises FgcError when the graph is not a chain."""
-    from fgc.compile import compile_graph
-    from fgc.ir.program import SolverConfig
-
-    check_mode(incremental, batch_every, window)
-    solver = solver or SolverConfig(precision="float64")
-    if incremental is not None:
-        solver = replace(solver, incremental_k=incremental, batch_every=batch_every)
-    try:
-        program = compile_graph(graph, solver, name=name)
-    except ValueError as exc:  # the incremental plan's own checks (window, batch steps)
-        raise FgcError(f"incremental plan: {exc}") from None
-    if program.schedule.structure_class != "chain" or not program.schedule.clusters:
-        raise FgcError(f"streaming needs a chain of keyframes; the graph is "
-                       f"{program.schedule.structure_class}")
-    return program
+    incremental plan, if asked for. Raises FgcError when the graph is not a chain
+    (:func:`fgc.compiler.stream.compile_chain`; :func:`stream_program` adds the policy and the
+    slot layout)."""
+    return compile_chain(graph, solver, policy_of(incremental, batch_every, window), name)
 
 
 def run_stream(program, data, window: int | None = None, progress=None, precision=None,
                backend: str = "sim", graph: Graph | None = None, scalar: str | None = None,
-               progress_build=None):
+               progress_build=None, sp: StreamProgram | None = None, runner=None):
     """Run the updates keyframe by keyframe (the incremental plan if the Program has one, else
     the fixed-lag ``window``); ``progress(KeyframeResult)`` after each keyframe.
 
-    ``backend="sim"``: the simulator (returns its SimResult). ``"native"``: the native solver;
-    ``"hls"``: the HLS design's C simulation (``scalar`` "double" or "float", default the
-    Program's precision). Both need the ``graph`` the Program was compiled from, compile their
-    template windows first (``progress_build(size, index, count)`` before each) and return a
-    :class:`fgc_backends.native.stream.NativeStreamResult`."""
-    from fgc_backends import load
-
-    incremental = program.schedule.incremental is not None
-    if not incremental and window is None:
-        raise FgcError("streaming needs --incremental K or --window W")
-    if backend in ("native", "hls"):
-        return _run_compiled_stream(program, data, window, progress, graph, backend, scalar,
-                                    progress_build)
-    sim = load("sim")
+    ``backend`` is reached through the contract (:func:`make_runner`): ``"sim"`` returns the
+    simulator's SimResult (``precision`` overrides the Program's); ``"native"`` and ``"hls"``
+    (``scalar`` "double" or "float", default the Program's precision) need the ``graph`` the
+    Program was compiled from, compile their template windows first (``progress_build(size,
+    index, count)`` before each) and return a :class:`fgc_backends.cfamily.stream.StreamResult`.
+    ``sp``: the StreamProgram, ``runner`` the backend's runner of it, if already made."""
+    sp = sp or stream_program(graph, program, window)
     callback = None
     if progress is not None:
         def callback(raw):
             progress(keyframe_result(program, raw))
-    return sim.run(program, data, precision=precision, incremental=incremental,
-                   window=window, progress=callback)
+    runner = runner or make_runner(sp, backend, precision=precision, scalar=scalar)
+    return runner.run(data, callback, progress_build)
 
 
-def _run_compiled_stream(program, data, window, progress, graph, backend, scalar,
-                         progress_build):
-    from fgc_backends.native.stream import FixedLagStream, IncrementalStream
-
-    if graph is None:
-        raise FgcError(f"{backend} streaming needs the graph the Program was compiled from")
-    incremental = program.schedule.incremental is not None
-    if backend == "hls":
-        from fgc_backends.hls.stream import (
-            OnChipFixedLagStream,
-            OnChipIncrementalStream,
-            incremental_stream,
-        )
-
-        scalar = scalar or ("double" if program.solver.precision == "float64" else "float")
-        if incremental and on_chip(program, None):
-            if progress_build is not None:
-                progress_build(program.schedule.incremental.window, 0, 1)
-            runner = OnChipIncrementalStream(graph, program, scalar)
-        elif incremental:
-            runner = incremental_stream(graph, program, scalar, progress_build=progress_build)
-        else:
-            if progress_build is not None:
-                progress_build(window + 1, 0, 1)
-            runner = OnChipFixedLagStream(graph, program, window, scalar)
-    elif incremental:
-        runner = IncrementalStream(graph, program, progress_build=progress_build)
-    else:
-        if progress_build is not None:
-            progress_build(window + 1, 0, 1)
-        runner = FixedLagStream(graph, program, window)
-    callback = None
-    if progress is not None:
-        def callback(raw):
-            progress(keyframe_result(program, raw))
-    return runner.run(data, callback)
+def make_runner(sp: StreamProgram, backend: str = "sim", precision=None, scalar=None):
+    """``backend``'s stream runner of ``sp`` (the contract's ``stream``): checked when made, so
+    a stream the backend cannot run is refused before anything runs. ``precision`` (the
+    simulator's) and ``scalar`` (a C-family backend's Config) only when given."""
+    module = load(backend)
+    if precision is not None:
+        return module.stream(sp, precision=precision)
+    return module.stream(sp, module.Config(scalar=scalar) if scalar is not None else None)
 
 
 def keyframe_result(program, record: dict) -> KeyframeResult:
     """A KeyframeResult from an update record (raw storage lists or fgc values)."""
-    from fgc.frontend.geometry import type_named
-
     values = record["values"]
     if isinstance(values, list):
         values = {spec.key: type_named(spec.type_name, spec.dim).from_storage(
@@ -194,8 +147,6 @@ def stream(graph: Graph, window: int | None = None, incremental: int | None = No
     :func:`run_stream`) and yield each keyframe's :class:`KeyframeResult` as soon as its update
     is done (the updates run in a worker thread). Either ``window`` (fixed-lag, W keyframes) or
     ``incremental`` (K, with optional ``batch_every``)."""
-    from fgc.ir.datafile import problem_data
-
     if window is None and incremental is None:
         raise FgcError("fgc.stream needs window=W or incremental=K")
     program = compile_stream(graph, solver, incremental, batch_every, window)
@@ -246,8 +197,6 @@ class UpdatePricer:
             self._add(steady)
 
     def _add(self, size: int) -> None:
-        from fgc.app.run_report import plan_summary
-
         self.per_iteration[size] = plan_summary(self._sub_program(size), 1)
 
     def _sub_program(self, size: int):
@@ -266,58 +215,20 @@ class UpdatePricer:
                 "window": size}
 
 
-def prefix_program(graph: Graph, program, size: int):
-    """The batch Program of the chain's first ``size`` keyframes: their variables and the
-    factors among them, compiled with ``program``'s solver without its incremental plan (the
-    ordering as asked: two-ended on a chain by default, the batch design)."""
-    from fgc.compile import compile_graph
-
-    clusters = program.schedule.clusters[:size]
-    keys = {k for c in clusters for k in c}
-    sub = Graph()
-    for k, var in graph.variables.items():
-        if str(k) in keys:
-            sub.add_variable(k, var.initial, var.type)
-    for f in graph.factors:
-        if all(str(k) in keys for k in f.keys):
-            sub.add(f)
-    solver = replace(program.solver, incremental_k=None, batch_every=None)
-    return compile_graph(sub, solver, name=f"{program.name}_window{size}")
-
-
-def on_chip(program, window: int | None) -> bool:
-    """Whether the HLS design runs the stream on chip (:mod:`fgc_backends.hls.window`): a QR
-    design with a fixed-lag window, or with an incremental plan whose updates the on-chip
-    design runs (K ≥ 2: the newest K keyframes, batch steps on its batch kernel)."""
-    if program.solver.linear != "qr":
-        return False
-    if window is not None:
-        return True
-    from fgc_backends.hls.stream import check_incremental_on_chip
-    from fgc_backends.hls.window import OnChipWindowError
-
-    try:
-        check_incremental_on_chip(program)
-    except OnChipWindowError:
-        return False
-    return True
+def on_chip(program, window: int | None, graph: Graph | None = None,
+            backend: str = "hls") -> bool:
+    """Whether the hardware ``backend``'s design runs the stream on chip (its ``on_chip``)."""
+    return load(backend).on_chip(stream_program(graph, program, window))
 
 
 class WindowPricer:
-    """The on-chip design's price of each update (:class:`fgc_backends.hls.window.
-    WindowUpdateModel` on the design ``fgc compile --backend hls --window W`` or ``--incremental
-    K`` emits; model estimates): ``price(update)`` from its keyframe and iterations."""
+    """The on-chip design's price of each update (``fgc_backends.hls.window_model``: the
+    design ``fgc compile --backend hls --window W`` or ``--incremental K`` emits; model
+    estimates): ``price(update)`` from its keyframe and iterations."""
 
-    def __init__(self, graph: Graph, program, window: int | None, scalar: str | None = None):
-        from fgc_backends.hls.config import HlsConfig
-        from fgc_backends.hls.window import WindowLayout, WindowUpdateModel
-
-        scalar = scalar or ("double" if program.solver.precision == "float64" else "float")
-        from fgc_backends.hls.stream import incremental_layout
-
-        layout = (WindowLayout(graph, program, window) if window is not None else
-                  incremental_layout(graph, program))
-        self.model = WindowUpdateModel(layout, HlsConfig(scalar=scalar))
+    def __init__(self, graph: Graph, program, window: int | None, scalar: str | None = None,
+                 backend: str = "hls"):
+        self.model = load(backend).window_model(stream_program(graph, program, window), scalar)
 
     def price(self, update):
         price = self.model.price(int(update.keyframe), int(update.iterations))
@@ -328,18 +239,13 @@ class WindowPricer:
         return price
 
 
-def update_model(graph: Graph, program, units: int | None = None, cpe: int | None = None):
+def update_model(graph: Graph, program, units: int | None = None, cpe: int | None = None,
+                 backend: str = "hls"):
     """The accelerator plan's update model of a stream over ``program``
-    (:class:`fgc_backends.hls.update.UpdateModel`; model estimates, the accelerator's
-    incremental mode is not emitted): ``units`` / ``cpe`` default to the Program's; a batch
-    keyframe j is priced on :func:`prefix_program` of its j + 1 keyframes."""
-    from fgc_backends.hls.plan import PlanOptions
-    from fgc_backends.hls.update import UpdateModel
-
-    changes = {k: v for k, v in (("units", units), ("cpe", cpe)) if v is not None}
-    options = PlanOptions.of(program, **changes)
-    return UpdateModel(program, options,
-                       batch_program=lambda j: prefix_program(graph, program, j + 1))
+    (``fgc_backends.hls.update_model``; model estimates, the accelerator's incremental mode is
+    not emitted): ``units`` / ``cpe`` default to the Program's; a batch keyframe j is priced on
+    :func:`prefix_program` of its j + 1 keyframes."""
+    return load(backend).update_model(graph, program, units, cpe)
 
 
 # --------------------------------------------------------------------------------------------
@@ -356,9 +262,6 @@ def poses(graph: Graph, values: dict) -> dict:
 
 def batch_optimum(graph: Graph) -> dict:
     """GTSAM's LM optimum of the whole graph ({str key: fgc value})."""
-    from fgc.app.run_report import gtsam_optimize
-    from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
-
     problem = to_gtsam(graph)
     result, _ = gtsam_optimize(problem)
     return {str(k): v for k, v in values_from_gtsam(graph, problem, result).items()}
@@ -368,7 +271,6 @@ def accuracy(graph: Graph, final: dict, online: dict, optimum: dict) -> dict:
     """ATE (translation m, rotation deg; no alignment: both in the graph's frame) of the final
     streamed trajectory and of the online one (each keyframe's estimate when it arrived)
     against the batch optimum, and the largest tangent-space distance of any variable."""
-    from fgc.app import metrics
     ref = poses(graph, optimum)
     out = {}
     for name, values in (("final", final), ("online", online)):

@@ -475,7 +475,7 @@ def test_every_fault_with_real_builds_and_two_specs(warm, tmp_path, monkeypatch)
 @pytest.mark.parametrize("how", ["truncate", "empty", "delete manifest", "foreign"])
 def test_a_damaged_hls_stream_project_is_emitted_again(how, warm, tmp_path, monkeypatch):
     from fgc_backends.hls.config import HlsConfig
-    from fgc_backends.hls.stream import _cached_project
+    from fgc_backends.hls.streaming import _cached_project
 
     spec, _ = warm
     monkeypatch.setenv("FGC_CACHE_DIR", str(tmp_path / "cache"))
@@ -507,7 +507,7 @@ def test_a_damaged_hls_stream_project_is_emitted_again(how, warm, tmp_path, monk
 def test_an_unwritable_cache_emits_the_hls_stream_project_in_a_temporary_folder(
         warm, tmp_path, monkeypatch):
     from fgc_backends.hls.config import HlsConfig
-    from fgc_backends.hls.stream import _cached_project
+    from fgc_backends.hls.streaming import _cached_project
 
     spec, _ = warm
     root = tmp_path / "cache"

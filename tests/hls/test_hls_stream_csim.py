@@ -1,4 +1,4 @@
-"""Streaming on the HLS design's C simulation (issue 19: fgc_backends.hls.stream): the template
+"""Streaming on the HLS design's C simulation (issue 19: fgc_backends.hls.streaming): the template
 window emitted once, its testbench re-run per keyframe on that update's numbers, the kept Bayes
 net on the host.
 
@@ -32,12 +32,12 @@ from fgc.app.streaming import compile_stream, keyframe_result, run_stream
 from fgc.interop import oracles
 from fgc.interop.to_gtsam import to_gtsam
 from fgc.ir.datafile import problem_data
-from fgc_backends.hls.stream import (
+from fgc_backends.cfamily.stream import TemplateSolver
+from fgc_backends.hls.streaming import (
     OnChipFixedLagStream,
     OnChipIncrementalStream,
     incremental_stream,
 )
-from fgc_backends.native.stream import WindowSolver
 
 STREAM_TOL = 1e-8  # double design vs simulator, tangent-space distance per variable
 LIO = str(Path(__file__).resolve().parents[2] / "examples" / "lio.py")
@@ -81,7 +81,7 @@ def test_hls_csim_incremental_agrees_with_the_simulator_after_every_keyframe(lio
 
 def test_a_corrupted_kept_conditional_is_caught_on_the_csim_path(lio8, monkeypatch):
     program, data, sim_updates, stream, _ = lio8
-    eliminate = WindowSolver.eliminate
+    eliminate = TemplateSolver.eliminate  # the host driver's, which the csim path uses
 
     def corrupted(self, x, d, count, pass_last=False):
         conds, passed = eliminate(self, x, d, count, pass_last)
@@ -89,7 +89,7 @@ def test_a_corrupted_kept_conditional_is_caught_on_the_csim_path(lio8, monkeypat
         conds[0] = (r, s, dv + 1e-4)
         return conds, passed
 
-    monkeypatch.setattr(WindowSolver, "eliminate", corrupted)
+    monkeypatch.setattr(TemplateSolver, "eliminate", corrupted)
     dist = _distances(program, stream.run(data), sim_updates)
     assert max(dist) > 100 * STREAM_TOL
 

@@ -38,9 +38,9 @@ from fgc.interop import oracles
 from fgc.interop.to_gtsam import to_gtsam
 from fgc.ir.datafile import problem_data
 from fgc_backends.hls.config import HlsConfig
-from fgc_backends.hls.stream import OnChipFixedLagStream, OnChipIncrementalStream
+from fgc_backends.hls.streaming import OnChipFixedLagStream, OnChipIncrementalStream
 from fgc_backends.hls.window import OnChipWindowError, WindowLayout, WindowUpdateModel
-from fgc_backends.native.stream import FixedLagStream, IncrementalStream
+from fgc_backends.native.streaming import FixedLagStream, IncrementalStream
 
 TOL = 1e-10  # tangent-space distance per variable, on-chip csim (double) vs native stream
 # incremental: the kept conditional's re-expression differentiates Log by central differences
@@ -228,3 +228,30 @@ def test_cli_report_incremental_prices_the_on_chip_design(tmp_path, capsys):
     assert len(report["model_estimate"]) == 5 and report["on_chip_resources"]["dsp"] > 0
     assert main(["report", LIO, "-p", "N=5", "--incremental", "2", "--html",
                  str(tmp_path / "r.html")]) == 2
+
+
+def test_the_on_chip_window_holds_a_prior_on_every_5th_keyframe():
+    """The stream stage's template holds every factor any window holds (issue 34 item 7): the
+    on-chip layout of a Pose2 chain with a prior on every 5th keyframe holds each window's
+    factors after every call (check_holds, which refused it before), its priors on every slot."""
+    from fgc import Graph, Pose2
+    from fgc.compiler.stream import stream_program
+    from fgc.frontend import noise
+    from fgc.frontend.factors import BetweenFactor, PriorFactor
+    from fgc_backends.hls.streaming import layout_of
+
+    graph = Graph()
+    for i in range(12):
+        graph.add_variable(i, Pose2(float(i), 0.0, 0.0))
+    for i in range(0, 12, 5):
+        graph.add(PriorFactor(i, Pose2(float(i), 0.0, 0.0), noise.isotropic(3, 0.1)))
+    for i in range(11):
+        graph.add(BetweenFactor(i, i + 1, Pose2(1.0, 0.0, 0.0), noise.isotropic(3, 0.2)))
+    program = compile_stream(graph, window=3)
+    layout = layout_of(stream_program(graph, program, 3))
+    priors = sorted(m.slots[0] for m in layout.members if m.kind.startswith("PriorFactor"))
+    assert priors == [0, 1, 2, 3]
+    held = None
+    for j in range(12):
+        held = layout.check_holds(held, j)
+    assert sum(h is not None for h in held) == 4  # keyframes 8 … 11: 3 betweens, the prior on 10

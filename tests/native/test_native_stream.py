@@ -1,5 +1,5 @@
-"""Native streaming (issue 19, native side: fgc_backends.native.stream): per keyframe the compiled
-C++ solves the window — fixed-lag with the marginal prior of the keyframes that left it,
+"""Native streaming (issue 19, native side: fgc_backends.native.streaming): per keyframe the
+compiled C++ solves the window — fixed-lag with the marginal prior of the keyframes that left it,
 incremental with the factor the kept Bayes net passes up — and NumPy keeps the rest.
 
 - against the simulator's fixed-lag run (same window, same marginalisation semantics) every
@@ -30,14 +30,14 @@ import pytest
 import fgc
 from fgc import Pose2
 from fgc.app.cli import main
-from fgc.app.specs import EXAMPLES, example
+from fgc.app.specs import EXAMPLES, example, load_spec
 from fgc.app.streaming import compile_stream, keyframe_result, run_stream
 from fgc.frontend import noise
 from fgc.frontend.factors import BetweenFactor, PriorFactor
 from fgc.interop import oracles
 from fgc.interop.to_gtsam import to_gtsam
 from fgc.ir.datafile import problem_data
-from fgc_backends.native.stream import (
+from fgc_backends.native.streaming import (
     FixedLagStream,
     IncrementalStream,
     NativeStreamError,
@@ -158,22 +158,74 @@ def _chain(priors_at) -> fgc.Graph:
     return g
 
 
-def test_a_stream_whose_factors_do_not_repeat_is_refused():
-    graph = _chain([0, 5])  # a second prior at keyframe 5: no window slot holds one
-    program = compile_stream(graph, window=2)
-    with pytest.raises(NativeStreamError, match=r"keyframes 3 … 5: the window holds 3 factors "
-                                                r"but the compiled template matches 2"):
-        run_stream(program, problem_data(graph, program), 2, backend="native", graph=graph)
-
-
-def test_a_pose2_chain_with_a_prior_on_every_keyframe_streams():
-    graph = _chain(range(8))
-    program = compile_stream(graph, window=2)
+@pytest.mark.parametrize("priors_at, policy", [
+    ([0, 5], {"window": 2}),              # a second prior no first window holds (issue 34, 7)
+    ([0, 5], {"incremental": 3}),
+    (range(0, 8, 5), {"window": 3}),      # a prior on every 5th keyframe
+])
+def test_a_stream_whose_factors_do_not_repeat_streams_as_the_simulator(priors_at, policy):
+    """The template window holds every factor any window of its size holds (the union over the
+    stream), so a chain whose factors differ from keyframe to keyframe streams natively with the
+    simulator's numbers (STREAM_TOL per variable)."""
+    graph = _chain(priors_at)
+    program = compile_stream(graph, **policy)
     data = problem_data(graph, program)
-    simulated = run_stream(program, data, 2)
-    native = run_stream(program, data, 2, backend="native", graph=graph)
+    window = policy.get("window")
+    simulated = run_stream(program, data, window)
+    native = run_stream(program, data, window, backend="native", graph=graph)
+    assert native.status == "converged" and simulated.converged
     for key, value in simulated.values.items():
         assert np.linalg.norm(value.local(native.values[key])) <= STREAM_TOL
+
+
+SWAP_SPEC = """\
+import fgc
+from fgc import Point2, Pose2
+from fgc.frontend import noise
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+
+
+@fgc.factor
+def offset(pose: Pose2, point: Point2, *, measured: float):
+    return [pose.range(point) - measured]
+
+
+def build(swap: int = 3):
+    g = fgc.Graph()
+    for i in range(6):
+        pose, point = (f"x{i}", Pose2(float(i), 0.0, 0.0)), (f"l{i}", Point2(float(i), 1.0))
+        for key, value in ((point, pose) if i == swap else (pose, point)):
+            g.add_variable(key, value)
+    g.add(PriorFactor("x0", Pose2(0.0, 0.0, 0.0), noise.isotropic(3, 0.1)))
+    g.add(PriorFactor("l0", Point2(0.0, 1.0), noise.isotropic(2, 0.1)))
+    for i in range(5):
+        g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0), noise.isotropic(3, 0.2)))
+        g.add(BetweenFactor(f"l{i}", f"l{i + 1}", Point2(1.0, 0.0), noise.isotropic(2, 0.2)))
+    for i in range(6):
+        g.add(offset(f"x{i}", f"l{i}", measured=1.0, noise=noise.isotropic(1, 0.1)))
+    return g
+"""
+
+
+def test_a_chain_no_window_can_hold_is_refused_before_anything_is_printed(tmp_path, capsys):
+    """A chain whose keyframe 3 declares its variables in another order (Point2, Pose2): the
+    simulator streams it; the native stream refuses it with an FgcError naming the keyframe,
+    before the stream's header is printed or anything is built."""
+    spec = tmp_path / "swap.py"
+    spec.write_text(SWAP_SPEC)
+    graph = load_spec(str(spec), {})
+    program = compile_stream(graph, window=2)
+    data = problem_data(graph, program)
+    assert run_stream(program, data, 2).converged  # the simulator streams it
+    with pytest.raises(NativeStreamError, match=r"the native solver cannot stream this chain: "
+                                                r"keyframe 3 has variables of types "
+                                                r"\['Point2', 'Pose2'\], keyframe 0 "
+                                                r"\['Pose2', 'Point2'\]"):
+        run_stream(program, data, 2, backend="native", graph=graph)
+    assert main(["stream", str(spec), "--window", "2", "--backend", "native"]) == 2
+    out, err = capsys.readouterr()
+    assert out == ""  # nothing printed before the refusal: no header, no build
+    assert "the native solver cannot stream this chain: keyframe 3" in err
 
 
 @pytest.mark.heavy  # builds its own library (~25 s); the API path above runs by default
@@ -328,7 +380,7 @@ def test_a_library_without_the_stream_host_code_falls_back_to_numpy(incremental8
     """A float or fixed-point build has no fgc_kept_walk: the stream runs the NumPy formulas."""
     from types import SimpleNamespace
 
-    from fgc_backends.native.stream import _CompiledGeometry
+    from fgc_backends.native.streaming import _CompiledGeometry
 
     *_, stream, _ = incremental8
     window = stream.solvers[stream.sizes[0]]

@@ -3,7 +3,7 @@
 keyframe through the design's ``<name>_stream`` top). The incremental plan: per keyframe, the
 emitted accelerator's testbench solves the update's window; the host holds the kept Bayes net.
 
-The windows are the native stream's (:mod:`fgc_backends.native.stream`): a *template* window
+The windows are the native stream's (:mod:`fgc_backends.native.streaming`): a *template* window
 Program — the chain's first S keyframes with a ``MarginalPrior…`` factor on every keyframe — is
 emitted once as an HLS project (:func:`fgc_backends.hls.emitter.emit`, ``double`` for agreement
 with the simulator, ``float`` as the hardware; kept in fgc's cache directory by content hash,
@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import atexit
 import contextlib
+import dataclasses
 import hashlib
 import os
 import shutil
@@ -36,11 +37,35 @@ from pathlib import Path
 
 import numpy as np
 
-from fgc.compiler.cache import MANIFEST
+import fgc_backends
+from fgc.compiler.cache import (
+    MANIFEST,
+    cache_dir,
+    check_manifest,
+    discard_folder,
+    unusable,
+)
+from fgc.compiler.stream import prefix_program
 from fgc.ir.codes import REASONS, STATUSES
-from fgc.ir.datafile import ProblemData
+from fgc.ir.datafile import DataError, ProblemData, problem_data, write_data
+from fgc.ir.stream import StreamError, StreamProgram
+from fgc.version import __version__
+from fgc_backends.cfamily.host import host_key
+from fgc_backends.cfamily.names import identifier
+from fgc_backends.cfamily.results import REFERENCE_FILE, read_result
+from fgc_backends.cfamily.stream import IncrementalDriver, StreamState, TemplateSolver
 from fgc_backends.cfamily.tables import factor_data_words
-from fgc_backends.native.stream import IncrementalStream, WindowSolver
+from fgc_backends.hls import build
+from fgc_backends.hls.config import HlsConfig
+from fgc_backends.hls.emitter import STREAM_MAGIC, STREAM_RESULT_MAGIC, HlsProject, emit
+from fgc_backends.hls.plan import PlanOptions
+from fgc_backends.hls.update import UpdateModel
+from fgc_backends.hls.window import (
+    BatchLayout,
+    OnChipWindowError,
+    WindowLayout,
+    WindowUpdateModel,
+)
 
 
 class _Csim:
@@ -60,8 +85,6 @@ class _Csim:
         """The window's LM solve by the C simulation: (x, errors, info) in the native solver's
         layout (x the template's flat storage, errors (initial, final), info (iterations,
         status code, reason code))."""
-        from fgc_backends.hls import build
-
         data = self._data(x, d)
         if self.scalar == "double":
             result = build.run_csim(self.project, self.template, data, reference=False)
@@ -70,9 +93,6 @@ class _Csim:
             # which refuses the template's absent factors (zero square-root information): the
             # same testbench run, its result read without that verdict (the stream is judged
             # against the simulator per keyframe instead)
-            from fgc.ir.datafile import write_data
-            from fgc_backends.cfamily.results import REFERENCE_FILE, read_result
-
             folder = self.project.directory
             write_data(data, folder / build.DATA_FILE)
             (folder / REFERENCE_FILE).unlink(missing_ok=True)
@@ -111,9 +131,6 @@ def _working_copy(owner, scalar: str, out_dir, name: str, stream=None) -> None:
     with ``owner``), of ``owner.template``'s project from the cache (:func:`_cached_project`,
     with ``stream``'s on-chip design), its mtimes too: a built one stays built; ``owner._cached``
     and ``owner._built`` say where it came from and whether it is built."""
-    from fgc_backends.hls.config import HlsConfig
-    from fgc_backends.hls.emitter import HlsProject
-
     if out_dir is None:
         tmp = tempfile.mkdtemp(prefix="fgc-hls-stream-")
         weakref.finalize(owner, _remove, tmp)
@@ -138,16 +155,14 @@ _BUILT = ".fgc-stream-built"
 def _project_key(template, config) -> str:
     """Content hash of what the emitted and built testbench depends on: the template Program,
     the config, fgc, the HLS backend's and C-family layer's sources and the host."""
-    import fgc
-    from fgc_backends.native.solver import host_key
-
     h = hashlib.sha256(template.to_json().encode())
     h.update(repr(config).encode())
-    h.update(fgc.__version__.encode())
+    h.update(__version__.encode())
     h.update(host_key().encode())
     backends = Path(__file__).resolve().parent.parent
     for path in sorted([*(backends / "hls").rglob("*"), *(backends / "cfamily").rglob("*.py")]):
-        if path.is_file() and path.name != "stream.py" and "__pycache__" not in path.parts:
+        if path.is_file() and path.name not in ("stream.py", "streaming.py") and \
+                "__pycache__" not in path.parts:
             h.update(str(path.relative_to(backends)).encode())
             h.update(path.read_bytes())
     return h.hexdigest()[:24]
@@ -159,10 +174,6 @@ def _cached_project(template, config, stream=None):
     ``stream``: the on-chip window's layout (emitted with its stream top). A cached project is
     used only if its manifest (the hash, the SHA-256 of every file) holds, else it is emitted
     again with one warning; an unwritable cache emits into a temporary folder (one warning)."""
-    from fgc.compiler.cache import cache_dir, check_manifest, discard_folder, unusable
-    from fgc_backends.cfamily.names import identifier
-    from fgc_backends.hls.emitter import HlsProject
-
     key = _project_key(template, config)
     if stream is not None:
         key = f"{key}-w{stream.window}" + (f"-kept{stream.kept}" if stream.kept else "")
@@ -236,25 +247,27 @@ def _keep_build(project, cached: Path) -> None:
         shutil.rmtree(old, ignore_errors=True)
 
 
-def _native_double():
-    from fgc_backends.native.config import NativeConfig
+def _native_double(template):
+    """The native backend's double build of ``template``, reached through the registry (the
+    host's rows at the optimum and the kept net's compiled walk: what the testbench does not
+    report)."""
+    native = fgc_backends.load("native")
+    return native.load(template, native.Config(scalar="double"))
 
-    return NativeConfig(scalar="double")
 
-
-class CsimWindow(_Csim, WindowSolver):
+class CsimWindow(_Csim, TemplateSolver):
     """A template window solved by its HLS C simulation (``scalar`` "double" or "float"); the
     host's rows at the optimum from the native double build of the same template."""
 
     def __init__(self, graph, program, size: int, scalar: str = "double", out_dir=None):
-        WindowSolver.__init__(self, graph, program, size, _native_double())
+        TemplateSolver.__init__(self, graph, program, size, _native_double)
         self._emit_csim(scalar, out_dir)
 
 
 def incremental_stream(graph, program, scalar: str = "double", out_dir=None,
-                       progress_build=None) -> IncrementalStream:
+                       progress_build=None) -> IncrementalDriver:
     """The incremental plan with every window solved by the C simulation of its template."""
-    return IncrementalStream(graph, program, progress_build=progress_build,
+    return IncrementalDriver(graph, program, progress_build=progress_build,
                              window_solver=lambda size: CsimWindow(graph, program, size, scalar,
                                                                    out_dir))
 
@@ -273,8 +286,6 @@ class OnChipFixedLagStream:
 
     def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None,
                  layout=None):
-        from fgc_backends.hls.window import WindowLayout
-
         self.layout = layout or WindowLayout(graph, program, window, kept=self.kept)
         self.program, self.window, self.scalar = program, window, scalar
         self.template = self.layout.template
@@ -283,14 +294,10 @@ class OnChipFixedLagStream:
 
     def run(self, data: ProblemData, progress=None):
         """Stream ``data``'s keyframes through the C simulation; a
-        :class:`~fgc_backends.native.stream.NativeStreamResult` with the fixed-lag records
+        :class:`~fgc_backends.cfamily.stream.StreamResult` with the fixed-lag records
         (``seconds``: NaN — a C simulation's wall time is not the accelerator's; its latency is
         the update model's)."""
-        from fgc_backends.hls import build
-        from fgc_backends.hls.window import OnChipWindowError
-        from fgc_backends.native.stream import _Stream
-
-        stream = _Stream(self.program)
+        stream = StreamState(self.program)
         estimate = stream._start(data)
         folder = self.project.directory
         count = write_stream_inputs(self.layout, estimate, folder)
@@ -365,8 +372,6 @@ def incremental_layout(graph, program):
     """The on-chip incremental design's layout: the window of the newest K keyframes with the
     kept net and, when the plan has batch steps, the batch kernel of keyframes 0 … the last
     batch step (:class:`~fgc_backends.hls.window.BatchLayout`)."""
-    from fgc_backends.hls.window import BatchLayout, WindowLayout
-
     check_incremental_on_chip(program)
     plan = program.schedule.incremental
     batch = (BatchLayout(graph, program, max(plan.batch_keyframes) + 1, plan.batch_keyframes)
@@ -378,8 +383,6 @@ def check_incremental_on_chip(program) -> None:
     """:class:`~fgc_backends.hls.window.OnChipWindowError` unless ``program``'s incremental plan
     runs on chip: every incremental update the newest K keyframes, every batch step keyframes
     0 … j, K ≥ 2."""
-    from fgc_backends.hls.window import OnChipWindowError
-
     plan = program.schedule.incremental
     if plan is None:
         raise OnChipWindowError("the Program has no incremental plan (--incremental K)")
@@ -408,10 +411,6 @@ def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
     stream.txt (per keyframe its storage and its data words, in lines of at most 16 numbers);
     returns the number of keyframes. Each keyframe is checked against what the window holds
     (:meth:`~fgc_backends.hls.window.WindowLayout.check_holds`)."""
-    from fgc.ir.datafile import write_data
-    from fgc_backends.hls import build
-    from fgc_backends.hls.emitter import STREAM_MAGIC
-
     t = layout.template
     x, d = layout.reset_words(estimate)
     write_data(template_data(t, x, d), Path(folder) / build.DATA_FILE)
@@ -433,35 +432,106 @@ def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
     return len(clusters)
 
 
-def emit_window(graph, program, window: int | None, data: ProblemData, out_dir, config):
+def layout_of(sp: StreamProgram):
+    """The on-chip design's layout of ``sp``: the fixed-lag window of its policy's W, or its
+    incremental plan's window with the kept net (:func:`incremental_layout`)."""
+    if sp.window is None:
+        return incremental_layout(sp.graph, sp.program)
+    return WindowLayout(sp.graph, sp.program, sp.window)
+
+
+def on_chip(sp: StreamProgram) -> bool:
+    """Whether the HLS design runs ``sp`` on chip (:mod:`fgc_backends.hls.window`): a QR design
+    with a fixed-lag window, or with an incremental plan whose updates the on-chip design runs
+    (K ≥ 2: the newest K keyframes, batch steps on its batch kernel)."""
+    if sp.program.solver.linear != "qr":
+        return False
+    if sp.window is not None:
+        return True
+    try:
+        check_incremental_on_chip(sp.program)
+    except OnChipWindowError:
+        return False
+    return True
+
+
+def emit_window(sp: StreamProgram, out_dir, config, data: ProblemData | None = None):
     """``fgc compile --backend hls --window W | --incremental K``: the on-chip design for
-    ``program``'s chain (``window`` None: its incremental plan, which must have no batch steps)
-    emitted into ``out_dir`` (its synthesis top ``<name>_stream``) with its testbench's inputs
-    for ``data``'s stream (data.txt, stream.txt: ``make`` builds, ``tb_<name> --stream data.txt
-    stream.txt stream_result.txt`` runs it). Returns the project."""
-    import dataclasses
+    ``sp``'s chain (its policy: a fixed-lag window, or an incremental plan) emitted into
+    ``out_dir`` (its synthesis top ``<name>_stream``) with its testbench's inputs for ``data``'s
+    stream (default the graph's own: data.txt, stream.txt: ``make`` builds, ``tb_<name> --stream
+    data.txt stream.txt stream_result.txt`` runs it). Returns the project."""
 
-    from fgc_backends.hls.emitter import emit
-    from fgc_backends.hls.window import WindowLayout
-    from fgc_backends.native.stream import _Stream
-
-    if window is None:
-        layout = incremental_layout(graph, program)
-    else:
-        layout = WindowLayout(graph, program, window)
+    layout = layout_of(sp)
     if layout.batch is not None:  # its second file first: the window's lint reads it
         emit(layout.batch.template, out_dir, config, stream=layout.batch, kernel_only=True)
     project = emit(layout.template, out_dir, config, stream=layout)
-    estimate = _Stream(program)._start(data)
+    data = data if data is not None else problem_data(sp.graph, sp.program)
+    estimate = StreamState(sp.program)._start(data)
     write_stream_inputs(layout, estimate, project.directory)
     extra = tuple(project.directory / f for f in ("data.txt", STREAM_FILE))
     return dataclasses.replace(project, files=project.files + extra)
 
 
+class HlsStream:
+    """The contract's stream runner on the HLS design's C simulation: on chip
+    (:class:`OnChipFixedLagStream`, :class:`OnChipIncrementalStream`) when :func:`on_chip`,
+    else the host-kept incremental path (:func:`incremental_stream`). ``config``: an HlsConfig
+    (its ``scalar``, default the Program's precision: ``double`` for float64)."""
+
+    def __init__(self, sp: StreamProgram, config=None):
+        sp.slots.check("the HLS design", StreamError)
+        self.sp = sp
+        scalar = getattr(config, "scalar", None)
+        self.scalar = scalar or ("double" if sp.program.solver.precision == "float64"
+                                 else "float")
+        self.on_chip = on_chip(sp)
+        self.who, self.timing_key = "HLS C simulation", "csim"
+
+    def run(self, data: ProblemData, progress=None, progress_build=None):
+        """Stream ``data`` (as :meth:`fgc_backends.native.streaming.NativeStream.run`)."""
+        sp = self.sp
+        if sp.incremental and self.on_chip:
+            if progress_build is not None:
+                progress_build(sp.program.schedule.incremental.window, 0, 1)
+            runner = OnChipIncrementalStream(sp.graph, sp.program, self.scalar)
+        elif sp.incremental:
+            runner = incremental_stream(sp.graph, sp.program, self.scalar,
+                                        progress_build=progress_build)
+        else:
+            if progress_build is not None:
+                progress_build(sp.window + 1, 0, 1)
+            runner = OnChipFixedLagStream(sp.graph, sp.program, sp.window, self.scalar)
+        return runner.run(data, progress)
+
+
+def stream(sp: StreamProgram, config=None) -> HlsStream:
+    """The backend contract's ``stream``: a runner of ``sp`` on the C simulation."""
+    return HlsStream(sp, config)
+
+
+def window_model(sp: StreamProgram, scalar: str | None = None):
+    """The on-chip design's :class:`~fgc_backends.hls.window.WindowUpdateModel` (the design
+    ``fgc compile --backend hls`` emits for ``sp``; ``scalar`` default the Program's)."""
+    scalar = scalar or ("double" if sp.program.solver.precision == "float64" else "float")
+    return WindowUpdateModel(layout_of(sp), HlsConfig(scalar=scalar))
+
+
+def update_model(graph, program, units: int | None = None, cpe: int | None = None):
+    """The accelerator plan's update model of a stream over the chain ``program`` (compiled
+    from ``graph``; :class:`fgc_backends.hls.update.
+    UpdateModel`; model estimates, the accelerator's incremental mode is not emitted): ``units``
+    / ``cpe`` default to the Program's; a batch keyframe j is priced on the batch Program of
+    its j + 1 keyframes (:func:`fgc.compiler.stream.prefix_program`)."""
+    changes = {k: v for k, v in (("units", units), ("cpe", cpe)) if v is not None}
+    options = PlanOptions.of(program, **changes)
+    return UpdateModel(program, options,
+                       batch_program=lambda j: prefix_program(graph, program, j + 1))
+
+
 def _chunks(values: np.ndarray, size: int = 16) -> list[str]:
     vals = np.asarray(values, dtype=np.float64).reshape(-1)
     if not np.all(np.isfinite(vals)):
-        from fgc.ir.datafile import DataError
 
         raise DataError("refusing to write a non-finite number to a stream file")
     return [" ".join([str(len(vals[i:i + size]))] + [repr(float(v)) for v in vals[i:i + size]])
@@ -471,9 +541,6 @@ def _chunks(values: np.ndarray, size: int = 16) -> list[str]:
 def _read_stream_result(path: Path, count: int, n_x: int, kept: bool = False):
     """(head fields, x, kept keyframes' storage) per keyframe from the testbench's stream
     result."""
-    from fgc.ir.datafile import DataError
-    from fgc_backends.hls.emitter import STREAM_RESULT_MAGIC
-
     lines = path.read_text().splitlines()
     if not lines or lines[0] != STREAM_RESULT_MAGIC:
         raise DataError(f"{path}:1: expected '{STREAM_RESULT_MAGIC}'")

@@ -1,104 +1,57 @@
-"""Fixed-lag streaming on the native solver: per keyframe, the compiled C++ solves the window of
-the newest keyframes with the marginal prior of the keyframes that left it (issue 19).
+"""The host side of a stream on a compiled C-family template window, shared by the native solver
+(:mod:`fgc_backends.native.streaming`) and the HLS design's host-kept C simulation
+(:mod:`fgc_backends.hls.streaming`): the updates' loop, the marginalisation and the kept Bayes net
+in NumPy (or in the compiled library's host kernels), the estimate and the records.
 
-The semantics are the simulator's fixed-lag window (``solve_fixed_lag`` in the emitted
-simulator's incremental module): on arrival of keyframe j the window j − W … j (the newest W
-keyframes and the one about to leave) is optimised from the current estimates; then the oldest
-keyframe is eliminated from the window's linearisation at the optimum, and the factor it passes
-to the next keyframe — the Schur complement of its conditional, a dense Gaussian prior — enters
-the next window, linear in the local coordinates at the point where it was formed (its
-linearisation point never moves; every other factor is relinearised each iteration).
+The semantics are the simulator's (``solve_fixed_lag`` / ``solve_incremental`` in the emitted
+simulator's incremental module). The template window and how each update fills it are the
+middle end's (:mod:`fgc.compiler.stream`); what runs the window's LM solve is a *compiled
+solver* handed in by the backend (``load(template)``: an object with ``solve``, ``rows``,
+``row_layout``, ``flatten``, ``project.config`` and, for the compiled host kernels,
+``library`` — the native library's :class:`~fgc_backends.native.solver.NativeSolver`).
 
-How the native solver runs it. A solver is compiled once, for a *template* window: the graph's
-first W + 1 keyframes with their factors, plus on every keyframe a ``MarginalPrior…`` factor
-(:func:`marginal_prior_type`: r = Log(x̄⁻¹x) − m per variable, whitened by a full square-root
-information R, so its cost is ½‖R·Log(x̄⁻¹x) − R·m‖², exactly the simulator's ½‖A·s − b‖² with
-R = A, m = A⁻¹b). Each update fills that one structure with numbers:
-
-- window slot i holds keyframe first + i; a template factor takes the numbers of the graph factor
-  on the same slots (same factor type, same variables by position in their keyframes); a template
-  factor without one (the first keyframe's priors once the window has moved on) and a graph
-  factor that reaches past j (during the first W updates) get a zero square-root information:
-  they contribute nothing, neither cost nor Jacobian;
-- the slot-0 prior carries the marginal (zero before any keyframe left); during the first W
-  updates the slots past j are not in the problem: their variables are held by a unit prior at
-  their current value (zero residual, zero gradient: their step is exactly zero), decoupled from
-  the window by the zero-weighted factors between them;
-- a graph factor inside the window that no template factor matches (the stream's pattern of
-  factors is not the same for every window) is refused (:class:`NativeStreamError`).
-
-The marginalisation: the native library linearises the window at its optimum
-(``fgc_rows``: the whitened rows of every factor, as its LM does, marginal prior included, whose
-Jacobian is the exact derivative of Log), and NumPy eliminates the leaving keyframe with one QR
-of the (rows × two keyframes) matrix of the factors on it. Its time is reported beside the
-native solve's (``marginal_seconds``; ``seconds`` is the whole update: data assembly, the native
+Fixed-lag (:class:`FixedLagDriver`): on arrival of keyframe j the window j − W … j is optimised
+from the current estimates; then the oldest keyframe is eliminated from the window's
+linearisation at the optimum (the solver's whitened rows, marginal prior included, one QR of
+the rows × two keyframes matrix of the factors on it), and the factor it passes to the next
+keyframe — the Schur complement of its conditional, a dense Gaussian prior — enters the next
+window, linear in the local coordinates at the point where it was formed. Its time is reported
+beside the solve's (``marginal_seconds``; ``seconds`` is the whole update: data assembly, the
 solve and the marginalisation).
+
+Incremental (:class:`IncrementalDriver`): the kept Bayes net, as its docstring says.
 """
 
 from __future__ import annotations
 
-import inspect
+import ctypes
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from fgc.errors import FgcError
-from fgc.frontend.dsl import FactorType, Graph, Matrix
-from fgc.frontend.noise import NoiseModel
-from fgc.ir.datafile import ProblemData, factor_words
+from fgc.compiler.kernel import numeric_function
+from fgc.compiler.stream import WindowTemplate, slot_layout
+from fgc.frontend.dsl import Graph
+from fgc.frontend.geometry.base import VectorSpace
+from fgc.interop.estimates import values_from_storage
+from fgc.ir.codes import REASONS, STATUSES
+from fgc.ir.datafile import ProblemData
 from fgc.ir.program import Program
-
-_PRIOR_TYPES: dict[tuple[type, ...], FactorType] = {}
-
-
-class NativeStreamError(FgcError):
-    """The stream cannot run on the native solver (a window whose factors differ from the
-    template's, a factor spanning more than two keyframes, a singular marginal)."""
-
-
-def _marginal_prior(*variables, **measured):
-    """Local coordinates Log(x̄⁻¹x) of each variable at its linearisation point ``at<i>``, stacked,
-    minus ``mean``: whitened by R, R·Log(x̄⁻¹x) − R·mean."""
-    local = []
-    for i, value in enumerate(variables):
-        local += list(measured[f"at{i}"].local(value))
-    mean = measured["mean"]
-    return [local[k] - mean[k, 0] for k in range(len(local))]
-
-
-def marginal_prior_type(types: tuple[type, ...]) -> FactorType:
-    """The dense prior factor type on a keyframe whose variables have ``types`` (in order):
-    variables ``x0 …``, measurements ``at0 …`` (the linearisation point, same types) and
-    ``mean`` (a column of the keyframe's tangent dimension)."""
-    if types not in _PRIOR_TYPES:
-        dim = sum(t.dim for t in types)
-        params = [inspect.Parameter(f"x{i}", inspect.Parameter.POSITIONAL_OR_KEYWORD,
-                                    annotation=t) for i, t in enumerate(types)]
-        params += [inspect.Parameter(f"at{i}", inspect.Parameter.KEYWORD_ONLY, annotation=t)
-                   for i, t in enumerate(types)]
-        params.append(inspect.Parameter("mean", inspect.Parameter.KEYWORD_ONLY,
-                                        annotation=Matrix(dim, 1)))
-
-        def marginal_prior(*variables, **measured):
-            return _marginal_prior(*variables, **measured)
-
-        marginal_prior.__signature__ = inspect.Signature(params)
-        marginal_prior.__annotations__ = {p.name: p.annotation for p in params}
-        name = "MarginalPrior" + "".join(t.__name__ for t in types)
-        _PRIOR_TYPES[types] = FactorType(marginal_prior, name=name)
-    return _PRIOR_TYPES[types]
+from fgc.ir.stream import FixedLag, Incremental, StreamError
+from fgc_backends.cfamily.retract import local_kernel, retract_kernel
+from fgc_backends.cfamily.tables import factor_data_words
 
 
 @dataclass
-class NativeStreamResult:
-    """A native fixed-lag stream: the final estimate (every variable where the last update that
-    held it left it), per-update records as the simulator's (``keyframe``, ``mode``, ``first``,
-    ``iterations``, ``status``, ``reason``, ``cost``, ``seconds``, ``values``: per Program
-    variable its storage, None where the update holds none; a list per variable in the
-    fixed-lag stream, a tuple in the incremental one, :class:`IncrementalStream`) plus
-    ``solve_seconds`` (the native call) and ``marginal_seconds`` (fixed-lag) or
-    ``store_seconds`` (incremental)."""
+class StreamResult:
+    """A stream on compiled template windows (native solver, HLS C simulation): the final
+    estimate (every variable where the last update that held it left it), per-update records
+    as the simulator's (``keyframe``, ``mode``, ``first``, ``iterations``, ``status``,
+    ``reason``, ``cost``, ``seconds``, ``values``: per Program variable its storage, None where
+    the update holds none; a list per variable in the fixed-lag stream, a tuple in the
+    incremental one, :class:`IncrementalDriver`) plus ``solve_seconds`` (the compiled solve)
+    and ``marginal_seconds`` (fixed-lag) or ``store_seconds`` (incremental)."""
 
     values: dict
     storage: dict
@@ -128,183 +81,14 @@ class KeptNet:
     x: np.ndarray
 
 
-class WindowTemplate:
-    """A *template* window of ``size`` keyframes of the chain ``program`` (compiled from
-    ``graph``): the graph's first ``size`` keyframes with their factors and a ``MarginalPrior…``
-    factor on every keyframe, compiled as a batch Program (the stream's solver options without
-    an incremental plan; ``self.template``); :meth:`assemble` fills it with the numbers of any
-    window of at most ``size`` keyframes. No solver: :class:`WindowSolver` adds the native one,
-    the HLS backend's on-chip window (:mod:`fgc_backends.hls.window`) its own."""
+class TemplateSolver(WindowTemplate):
+    """A :class:`~fgc.compiler.stream.WindowTemplate` of ``size`` keyframes with the solver
+    ``load(template)`` compiles for it (module docstring); :meth:`eliminate` eliminates the
+    window from the solver's rows at a point."""
 
-    def __init__(self, graph: Graph, program: Program, size: int, ordering: str | None = None):
-        from fgc.compile import compile_graph
-
-        if program.schedule.structure_class != "chain" or not program.schedule.clusters:
-            raise NativeStreamError("native streaming needs a chain of keyframes")
-        self.graph, self.program = graph, program
-        clusters = program.schedule.clusters
-        self.size = size = min(size, len(clusters))
-        original = {str(k): k for k in graph.variables}
-        self.cluster_of = {k: c for c, keys in enumerate(clusters) for k in keys}
-        self.position = {k: p for keys in clusters for p, k in enumerate(keys)}
-        types = [tuple(graph.variables[original[k]].type for k in keys) for keys in clusters]
-        for c, kinds in enumerate(types):
-            if kinds != types[0]:
-                raise NativeStreamError(f"keyframe {c} has variables of types "
-                                        f"{[t.__name__ for t in kinds]}, keyframe 0 "
-                                        f"{[t.__name__ for t in types[0]]}: a window slides "
-                                        "over keyframes of one kind")
-        self.types = types
-
-        template = Graph()
-        for c in range(size):
-            for k in clusters[c]:
-                var = graph.variables[original[k]]
-                template.add_variable(var.key, var.initial, var.type)
-        self.signatures, self.template_factors = [], []
-        for f in graph.factors:
-            spans = [self.cluster_of[str(k)] for k in f.keys]
-            if max(spans) < size:
-                template.add(f)
-                self.template_factors.append(f)
-                self.signatures.append(self._signature(f, 0))
-        self.prior_types = []
-        for c in range(size):
-            keys = [original[k] for k in clusters[c]]
-            ptype = marginal_prior_type(types[c])
-            dim = sum(t.dim for t in types[c])
-            lin = {f"at{i}": graph.variables[k].initial for i, k in enumerate(keys)}
-            template.add(ptype(*keys, noise=NoiseModel("full", np.eye(dim)),
-                               mean=np.zeros((dim, 1)), **lin))
-            self.prior_types.append((ptype, dim))
-        solver = replace(program.solver, incremental_k=None, batch_every=None)
-        if ordering is not None:
-            solver = replace(solver, ordering=ordering)
-        kind = "window" if ordering is None else ordering
-        self.template = compile_graph(template, solver, name=f"{program.name}_{kind}{size}")
-        # every graph factor by its signature (type, (keyframe, position) per variable)
-        self.by_signature = {self._signature(f, 0): i for i, f in enumerate(graph.factors)}
-        spans = [[self.cluster_of[str(k)] for k in f.keys] for f in graph.factors]
-        self.span_lo = np.array([min(s) for s in spans])
-        self.span_hi = np.array([max(s) for s in spans])
-        # the words of a slot's prior after its linearisation point: unit (held) or zero
-        self._held = [self._prior_tail(np.eye(dim), np.zeros(dim)) for _, dim in self.prior_types]
-        self._unused = [self._prior_tail(np.zeros((dim, dim)), np.zeros(dim))
-                        for _, dim in self.prior_types]
-        self._words = {}
-        self._zero = {}
-        self._check_prior_layout()
-
-    def _signature(self, f, shift: int) -> tuple:
-        return (f.type.name, tuple((self.cluster_of[str(k)] + shift, self.position[str(k)])
-                                   for k in f.keys))
-
-    # -- the numbers of one update ----------------------------------------------------------
-    def _factor(self, index: int, member) -> np.ndarray:
-        if index not in self._words:
-            f = self.graph.factors[index]
-            self._words[index] = np.concatenate(factor_words(f.measured, f.noise, member))
-        return self._words[index]
-
-    def _zeroed(self, t: int, member) -> np.ndarray:
-        if t not in self._zero:
-            f = self.template_factors[t]
-            noise = NoiseModel(f.noise.kind, np.zeros_like(f.noise.sqrt_information),
-                               f.noise.robust)
-            self._zero[t] = np.concatenate(factor_words(f.measured, noise, member))
-        return self._zero[t]
-
-    def _prior_tail(self, r: np.ndarray, mean: np.ndarray) -> np.ndarray:
-        """A marginal prior's words after its linearisation point: the mean, the square-root
-        information's upper triangle (a full noise model's parameters) and no robust loss
-        (factor_words' layout, checked against it in :meth:`_check_prior_layout`)."""
-        return np.concatenate([mean, r[np.triu_indices(r.shape[0])], [0.0, 0.0]])
-
-    def _check_prior_layout(self) -> None:
-        """The template's prior members take their words as :meth:`_prior_tail` lays them out."""
-        n_template = len(self.template_factors)
-        for spec in self.template.factors:
-            block = self.template.blocks[spec.block]
-            for member, t in zip(block.members, spec.factors, strict=True):
-                if t < n_template:
-                    continue
-                ptype, dim = self.prior_types[t - n_template]
-                names = [name for name, _ in member.measurements]
-                lin = [np.arange(v.storage_dim, dtype=float) + 10 * i for i, v in enumerate(
-                    v for v in self.template.variables
-                    if self.cluster_of[v.key] == t - n_template)]
-                r, mean = np.triu(np.arange(dim * dim, dtype=float).reshape(dim, dim)), \
-                    np.arange(dim, dtype=float) - 7
-                measured = {**{f"at{i}": v for i, v in enumerate(lin)}, "mean": mean}
-                expected = np.concatenate(factor_words(measured, NoiseModel("full", r), member))
-                if names != [*measured] or not np.array_equal(
-                        expected, np.concatenate([*lin, self._prior_tail(r, mean)])):
-                    raise NativeStreamError(f"internal error: {ptype.name}'s data layout is not "
-                                            "the one the stream assembles")
-
-    def assemble(self, estimate: dict, first: int, last: int, tau):
-        """(x, d): the template's flat arrays (storage, factor data) for the window first …
-        last, from the current ``estimate`` and the marginal ``tau`` (R, mean, x̄ per
-        variable) on keyframe ``first``; :class:`NativeStreamError` if the window holds a graph
-        factor the template does not match."""
-        clusters = self.program.schedule.clusters
-        slot_keys = [clusters[first + s] for s in range(self.size)]
-        x = np.concatenate([estimate[slot_keys[self.cluster_of[v.key]][self.position[v.key]]]
-                            for v in self.template.variables])
-        words, matched = [], 0
-        n_template = len(self.template_factors)
-        tau_tail = None if tau is None else self._prior_tail(tau[0], tau[1])
-        for spec in self.template.factors:
-            block = self.template.blocks[spec.block]
-            for member, t in zip(block.members, spec.factors, strict=True):
-                if t < n_template:
-                    kind, cells = self.signatures[t]
-                    slots = [c for c, _ in cells]
-                    index = self.by_signature.get((kind, tuple((c + first, p)
-                                                               for c, p in cells)))
-                    if index is not None and max(slots) + first <= last:
-                        words.append(self._factor(index, member))
-                        matched += 1
-                    else:
-                        words.append(self._zeroed(t, member))
-                    continue
-                slot = t - n_template
-                if slot == 0 and tau is not None:  # the marginal of the keyframes that left
-                    words += [*tau[2], tau_tail]
-                elif first + slot > last:  # not arrived yet: held where it is
-                    words += [*(estimate[k] for k in slot_keys[slot]), self._held[slot]]
-                else:  # no prior: zero square-root information
-                    words += [*(estimate[k] for k in slot_keys[slot]), self._unused[slot]]
-        inside = int(np.count_nonzero((self.span_lo >= first) & (self.span_hi <= last)))
-        if matched != inside:
-            raise NativeStreamError(f"keyframes {first} … {last}: the window holds {inside} "
-                                    f"factors but the compiled template matches {matched}: the "
-                                    "stream's factors do not repeat keyframe by keyframe")
-        return x, np.concatenate(words)
-
-    def store(self, estimate: dict, x_out: np.ndarray, first: int, last: int) -> None:
-        """Write the window's optimum ``x_out`` (template layout) into ``estimate`` for the
-        keyframes first … last (slots past ``last`` are held: not written)."""
-        clusters = self.program.schedule.clusters
-        pos = 0
-        for v in self.template.variables:
-            slot = self.cluster_of[v.key]
-            if first + slot <= last:
-                key = clusters[first + slot][self.position[v.key]]
-                estimate[key][:] = x_out[pos:pos + v.storage_dim]
-            pos += v.storage_dim
-
-
-class WindowSolver(WindowTemplate):
-    """The native solver compiled for a :class:`WindowTemplate` of ``size`` keyframes;
-    :meth:`eliminate` eliminates the window from the solver's rows at a point (module
-    docstring)."""
-
-    def __init__(self, graph: Graph, program: Program, size: int, config=None):
-        from fgc_backends import native
-
+    def __init__(self, graph: Graph, program: Program, size: int, load):
         super().__init__(graph, program, size)
-        self.solver = native.load(self.template, config)
+        self.solver = load(self.template)
         self.config = self.solver.project.config
         self._row_plan()
 
@@ -356,9 +140,10 @@ class WindowSolver(WindowTemplate):
                 stacks.append(part)
             for start, m, cols, targets, hi, keys in self.by_slot[s]:
                 if hi > s + 1:
-                    raise NativeStreamError(f"a factor on {list(keys)} spans keyframes {s} to "
-                                            f"{hi} of the window: native streaming eliminates "
-                                            "factors between consecutive keyframes only")
+                    raise StreamError(f"a factor on {list(keys)} spans keyframes {s} to "
+                                      f"{hi} of the window: a template window "
+                                      "eliminates factors between consecutive keyframes "
+                                      "only")
                 if hi > s and n1 == 0:
                     continue
                 block = rows[start:start + m * cols].reshape(m, cols)
@@ -368,8 +153,8 @@ class WindowSolver(WindowTemplate):
                 stacks.append(part)
             stacked = np.concatenate(stacks)
             if stacked.shape[0] < n0:
-                raise NativeStreamError(f"window slot {s}: {stacked.shape[0]} rows cannot "
-                                        f"determine its {n0} columns")
+                raise StreamError(f"window slot {s}: {stacked.shape[0]} rows cannot "
+                                  f"determine its {n0} columns")
             r = np.linalg.qr(stacked, mode="r")
             conds.append((r[:n0, :n0], r[:n0, n0:width], r[:n0, -1]))
             carry = r[n0:width, n0:] if n1 else None
@@ -388,7 +173,6 @@ class WindowSolver(WindowTemplate):
         t = self.template
         sizes, pos = [], 0
         for spec in t.factors:
-            from fgc_backends.cfamily.tables import factor_data_words
             n = factor_data_words(t, spec.block)
             sizes.append(d[pos:pos + n])
             pos += n
@@ -409,33 +193,28 @@ class WindowSolver(WindowTemplate):
 def as_prior(rows: np.ndarray, n: int, what: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """A passed factor [A | b] on a keyframe of tangent dimension ``n`` as a marginal prior:
     (R, b, mean) with R = A row-signed to a positive diagonal (the cost ½‖A·s − b‖² is
-    unchanged) and mean = R⁻¹b; :class:`NativeStreamError` if it does not determine all n
+    unchanged) and mean = R⁻¹b; :class:`StreamError` if it does not determine all n
     directions."""
     if rows is None or rows.shape[0] < n:
         have = 0 if rows is None else rows.shape[0]
-        raise NativeStreamError(f"{what}: {have} rows cannot determine the {n} columns of the "
-                                "factor it passes to the next keyframe")
+        raise StreamError(f"{what}: {have} rows cannot determine the {n} columns of the "
+                          "factor it passes to the next keyframe")
     a, b = rows[:n, :-1], rows[:n, -1]
     signs = np.where(np.diag(a) < 0, -1.0, 1.0)
     a, b = a * signs[:, None], b * signs
     if np.min(np.diag(a)) <= 1e-12 * max(1.0, float(np.max(np.abs(a)))):
-        raise NativeStreamError(f"{what}: the marginal prior it passes to the next keyframe is "
-                                "singular")
+        raise StreamError(f"{what}: the marginal prior it passes to the next keyframe is "
+                          "singular")
     return a, b, np.linalg.solve(a, b)
 
 
 class _ClusterGeometry:
     """Retraction x̄ ∘ Exp(δ) and local coordinates Log(x̄⁻¹x) of one keyframe's variables on
     their stacked storage, in NumPy: the sympy-derived kernels the simulator prints
-    (:func:`fgc_backends.cfamily.retract.retract_kernel`, :func:`fgc_backends.sim.types.
-    local_kernel`) compiled to Python, vector spaces as plain sums."""
+    (:func:`fgc_backends.cfamily.retract.retract_kernel` and ``local_kernel``) compiled to
+    Python, vector spaces as plain sums."""
 
     def __init__(self, types):
-        from fgc.compiler.kernel import numeric_function
-        from fgc.frontend.geometry.base import VectorSpace
-        from fgc_backends.cfamily.retract import retract_kernel
-        from fgc_backends.sim.types import local_kernel
-
         self.parts, s, t = [], 0, 0
         for cls in types:
             flat = issubclass(cls, VectorSpace) and cls.storage_dim == cls.dim
@@ -484,8 +263,6 @@ class _CompiledGeometry:
     fixed-point build): the stream then runs :class:`_ClusterGeometry` in Python."""
 
     def __init__(self, library, kinds: np.ndarray, n: int, m: int):
-        import ctypes
-
         self.kinds, self.n, self.m = kinds, n, m
         self._kinds = kinds.__array_interface__["data"][0]
         self._walk, self._jacobian = library.fgc_kept_walk, library.fgc_local_jacobian
@@ -498,7 +275,7 @@ class _CompiledGeometry:
         self._local, self._jac = np.empty(n), np.empty((n, n))
 
     @classmethod
-    def of(cls, window: WindowSolver, geometry: _ClusterGeometry) -> _CompiledGeometry | None:
+    def of(cls, window: TemplateSolver, geometry: _ClusterGeometry) -> _CompiledGeometry | None:
         """The compiled host kernels of ``window``'s native library for its keyframes (kinds by
         the library's retraction order: first appearance of each type in the template)."""
         library = getattr(getattr(window, "solver", None), "library", None)
@@ -519,8 +296,8 @@ class _CompiledGeometry:
         if self._jacobian(len(self.kinds), self._kinds, self.n, self.m, _data(lin, self.m),
                           _data(x, self.m), _data(self._local, self.n),
                           _data(self._jac, self.n * self.n)):
-            raise NativeStreamError("internal error: the library's keyframe layout is not the "
-                                    "stream's")
+            raise StreamError("internal error: the library's keyframe layout is not the "
+                              "stream's")
         return self._local.copy(), self._jac.copy()
 
     def walk(self, count: int, r, s, d, lin, lin_next, x) -> None:
@@ -532,19 +309,19 @@ class _CompiledGeometry:
         if self._walk(count, len(self.kinds), self._kinds, n, m, _data(r, count * n * n),
                       _data(s, count * n * n), _data(d, count * n), _data(lin, count * m),
                       _data(lin_next, count * m), _data(x, (count + 1) * m)):
-            raise NativeStreamError("internal error: the library's keyframe layout is not the "
-                                    "stream's")
+            raise StreamError("internal error: the library's keyframe layout is not the "
+                              "stream's")
 
 
 def _data(a: np.ndarray, at_least: int) -> int:
     """The address of float64 C-contiguous ``a`` holding at least ``at_least`` numbers."""
     if a.dtype != np.float64 or not a.flags.c_contiguous or a.size < at_least:
-        raise NativeStreamError(f"internal error: an array of {a.size} {a.dtype} numbers where "
-                                f"{at_least} contiguous float64 are read")
+        raise StreamError(f"internal error: an array of {a.size} {a.dtype} numbers where "
+                          f"{at_least} contiguous float64 are read")
     return a.__array_interface__["data"][0]
 
 
-class _Stream:
+class StreamState:
     """What the two stream kinds share: the estimate, the records, the result."""
 
     def __init__(self, program: Program):
@@ -572,8 +349,8 @@ class _Stream:
         self._keyframe_index = []
         for c, keys in enumerate(self.clusters):
             if [estimate[k].size for k in keys] != sizes:
-                raise NativeStreamError(f"keyframe {c}'s variables are not laid out as keyframe "
-                                        "0's")
+                raise StreamError(f"keyframe {c}'s variables are not laid out as keyframe "
+                                  "0's")
             for p, k in enumerate(keys):
                 x_all[c, offsets[p]:offsets[p + 1]] = estimate[k]
                 estimate[k] = x_all[c, offsets[p]:offsets[p + 1]]
@@ -618,38 +395,35 @@ class _Stream:
 
     @staticmethod
     def _info(info) -> tuple[int, str, str]:
-        from fgc_backends.cfamily.results import REASONS, STATUSES
-
         return int(info[0]), STATUSES[int(info[1])], REASONS[int(info[2])]
 
-    def _result(self, estimate, records, initial_error, template) -> NativeStreamResult:
-        from fgc.interop.estimates import values_from_storage
-
+    def _result(self, estimate, records, initial_error, template) -> StreamResult:
         status, reason = "converged", ""
         for r in records:
             if r["status"] != "converged":
                 status, reason = r["status"], f"keyframe {r['keyframe']}: {r['reason']}"
                 break
         storage = {k: v.copy() for k, v in estimate.items()}
-        return NativeStreamResult(values_from_storage(self.program, storage), storage, status,
+        return StreamResult(values_from_storage(self.program, storage), storage, status,
                                   reason, sum(r["iterations"] for r in records), records,
                                   initial_error, template)
 
 
-class FixedLagStream(WindowSolver):
-    """The native solver compiled for a fixed-lag window of ``window`` keyframes over the chain
+class FixedLagDriver(TemplateSolver):
+    """A solver compiled (``load``) for a fixed-lag window of ``window`` keyframes over the chain
     ``program`` (compiled from ``graph``): a template of W + 1 keyframes; :meth:`run` streams
     ``data``."""
 
-    def __init__(self, graph: Graph, program: Program, window: int, config=None):
+    def __init__(self, graph: Graph, program: Program, window: int, load):
         if isinstance(window, bool) or not isinstance(window, int) or window < 1:
-            raise NativeStreamError(f"the fixed-lag window must be a positive number of "
-                                    f"keyframes, got {window!r}")
-        super().__init__(graph, program, window + 1, config)
+            raise StreamError(f"the fixed-lag window must be a positive number of "
+                              f"keyframes, got {window!r}")
+        slot_layout(graph, program, FixedLag(window)).check("a template window", StreamError)
+        super().__init__(graph, program, window + 1, load)
         self.window = window
 
-    def run(self, data: ProblemData, progress=None) -> NativeStreamResult:
-        window, stream = self.window, _Stream(self.program)
+    def run(self, data: ProblemData, progress=None) -> StreamResult:
+        window, stream = self.window, StreamState(self.program)
         clusters = stream.clusters
         estimate = stream._start(data)
         tau, records, initial_error = None, [], None
@@ -684,15 +458,15 @@ class FixedLagStream(WindowSolver):
         return stream._result(estimate, records, initial_error, self.template)
 
 
-class IncrementalStream:
-    """The native solver running the simulator's incremental plan (``solve_incremental``:
+class IncrementalDriver:
+    """Compiled template windows running the simulator's incremental plan (``solve_incremental``:
     paper A's re-elimination of the newest K clusters on the kept Bayes net, batch steps
-    re-eliminating every cluster). One :class:`WindowSolver` per template size: the largest
+    re-eliminating every cluster). One :class:`TemplateSolver` per template size: the largest
     incremental window (K, or more when a factor reaches further back) serves every
     incremental update, held slots padding the first ones; each batch step larger than that
     has its own template of its keyframes, compiled once per distinct size
-    (``progress_build(size, index, count)`` before each). ``window_solver`` makes the window
-    solvers (default :class:`WindowSolver`; the HLS C simulation passes its own).
+    (``progress_build(size, index, count)`` before each). ``window_solver(size)`` makes the
+    window solvers (:class:`TemplateSolver`: the native solver's, or the HLS C simulation's).
 
     Per update, after the window's solve: the newest kept conditional is re-expressed at its
     parent's new estimate (Log and its central-difference Jacobian), the window is eliminated
@@ -705,27 +479,20 @@ class IncrementalStream:
     before they were compiled), as does a library without them (a float or fixed-point
     build)."""
 
-    def __init__(self, graph: Graph, program: Program, config=None, progress_build=None,
-                 window_solver=None, host: str = "native"):
+    def __init__(self, graph: Graph, program: Program, window_solver, progress_build=None,
+                 host: str = "native"):
         plan = program.schedule.incremental
         if plan is None:
-            raise NativeStreamError("the Program has no incremental plan (--incremental K)")
+            raise StreamError("the Program has no incremental plan (--incremental K)")
         if program.schedule.structure_class != "chain" or not program.schedule.clusters:
-            raise NativeStreamError("native streaming needs a chain of keyframes")
+            raise StreamError("streaming on a template window needs a chain of keyframes")
         self.graph, self.program, self.plan = graph, program, plan
-        clusters = program.schedule.clusters
-        cluster_of = {k: c for c, keys in enumerate(clusters) for k in keys}
-        spans = [[cluster_of[str(k)] for k in f.keys] for f in graph.factors]
-        self.updates = []  # (keyframe, batch, first)
-        for u in plan.updates:
-            early = [min(s) for s in spans if max(s) == u.keyframe]
-            self.updates.append((u.keyframe, u.mode == "batch",
-                                 min([u.clusters[0], *early])))
-        steady = max([j - first + 1 for j, batch, first in self.updates if not batch],
-                     default=1)
-        sizes = sorted({steady} | {j - first + 1 for j, batch, first in self.updates
-                                   if batch and j - first + 1 > steady})
-        make = window_solver or (lambda size: WindowSolver(graph, program, size, config))
+        slots = slot_layout(graph, program, Incremental(program.solver.incremental_k,
+                                                        program.solver.batch_every))
+        slots.check("a template window", StreamError)
+        self.updates = [(u.keyframe, u.batch, u.first) for u in slots.updates]
+        sizes = list(slots.sizes)
+        make = window_solver
         self.solvers = {}
         for i, size in enumerate(sizes):
             if progress_build is not None:
@@ -737,16 +504,16 @@ class IncrementalStream:
         # the kept back-substitution and the re-expression's Jacobian: compiled (a double
         # library) unless host="python" (the reference formulas in NumPy, as before)
         if host not in ("native", "python"):
-            raise NativeStreamError(f"host must be 'native' or 'python', got {host!r}")
+            raise StreamError(f"host must be 'native' or 'python', got {host!r}")
         self.compiled = (None if host == "python"
                          else _CompiledGeometry.of(self.solvers[sizes[0]], self.geometry))
 
-    def solver_for(self, size: int) -> WindowSolver:
+    def solver_for(self, size: int) -> TemplateSolver:
         """The smallest compiled template that holds a window of ``size`` keyframes."""
         return self.solvers[next(s for s in self.sizes if s >= size)]
 
-    def run(self, data: ProblemData, progress=None) -> NativeStreamResult:
-        stream, geometry, compiled = _Stream(self.program), self.geometry, self.compiled
+    def run(self, data: ProblemData, progress=None) -> StreamResult:
+        stream, geometry, compiled = StreamState(self.program), self.geometry, self.compiled
         estimate, x_all = stream._start_keyframes(data)
         count, n = len(stream.clusters), geometry.dim
         # the kept Bayes net, keyframe-major: conditional c is R_c·δ_c + S_c·δ_c+1 = d_c,
@@ -778,8 +545,8 @@ class IncrementalStream:
             if first > 0:  # the newest kept conditional, re-expressed at its parent's estimate
                 c = first - 1
                 if not complete[c]:
-                    raise NativeStreamError(f"keyframe {c}: its kept conditional does not reach "
-                                            f"keyframe {first}")
+                    raise StreamError(f"keyframe {c}: its kept conditional does not reach "
+                                      f"keyframe {first}")
                 shift, jac = local_jacobian(kept_next[c], x_all[first])
                 kept_d[c] -= kept_s[c] @ shift
                 kept_s[c] = kept_s[c] @ jac
@@ -793,8 +560,8 @@ class IncrementalStream:
                     kept_s[c], kept_next[c] = s, x_all[c + 1]
                     taus[c + 1] = (passed[i], [estimate[k].copy() for k in stream.clusters[c + 1]])
             if first > 0 and not complete[:first].all():
-                raise NativeStreamError(f"keyframes 0 … {first - 1}: a kept conditional does not "
-                                        "reach its parent")
+                raise StreamError(f"keyframes 0 … {first - 1}: a kept conditional does not "
+                                  "reach its parent")
             if compiled is not None:  # back-substitution through the kept part: one call
                 compiled.walk(first, kept_r, kept_s, kept_d, kept_lin, kept_next, x_all)
             else:
