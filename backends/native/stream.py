@@ -181,7 +181,8 @@ class WindowTemplate:
         if ordering is not None:
             solver = replace(solver, ordering=ordering)
         kind = "window" if ordering is None else ordering
-        self.template = compile_graph(template, solver, name=f"{program.name}_{kind}{size}")
+        self.template = compile_graph(template, solver, name=f"{program.name}_{kind}{size}",
+                                      local_frame=False)  # window data are world coordinates
         # every graph factor by its signature (type, (keyframe, position) per variable)
         self.by_signature = {self._signature(f, 0): i for i, f in enumerate(graph.factors)}
         spans = [[self.cluster_of[str(k)] for k in f.keys] for f in graph.factors]

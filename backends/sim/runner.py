@@ -16,7 +16,7 @@ import numpy as np
 from fgc.errors import DataError, FgcError
 from fgc.frontend import geometry
 from fgc.frontend.geometry import LieGroup
-from fgc.ir import conditioning
+from fgc.ir import conditioning, frame
 from fgc.ir.datafile import ProblemData, check_structure, write_data
 from fgc.ir.program import Program
 from fgc.ir.result import SolveResult
@@ -180,11 +180,15 @@ def _float64_problem(program: Program, data: ProblemData, config: SimConfig | No
 
 
 def _points(program: Program, problem, points: Sequence[dict | None]):
-    """Each point (``{variable key: storage array}``, None: the data's initial values) as the
-    problem's storage vector."""
+    """Each point (``{variable key: storage array}`` in world coordinates, None: the data's
+    initial values) as the problem's storage vector (in the Program's local frame)."""
     for point in points:
-        yield problem.x0 if point is None else np.concatenate(
-            [np.asarray(point[v.key], dtype=np.float64).reshape(-1) for v in program.variables])
+        if point is None:
+            yield problem.x0
+            continue
+        local = frame.to_local(program, {v.key: point[v.key] for v in program.variables})
+        yield np.concatenate([np.asarray(local[v.key], dtype=np.float64).reshape(-1)
+                              for v in program.variables])
 
 
 def _factor_rows(program: Program, abs_: list[np.ndarray], wanted: set[int] | None
@@ -331,7 +335,7 @@ def _values(program: Program, storage: dict[str, np.ndarray]) -> dict[str, LieGr
 
 def _result(program: Program, raw: dict, files: tuple[Path, ...],
             config: SimConfig, where: str = "the simulator") -> SimResult:
-    storage = _keyed(program, raw["values"], where)
+    storage = frame.to_world(program, _keyed(program, raw["values"], where))
     values = _values(program, storage)
     singular, messages, warned = _explain_outcome(program, raw, config)
     return SimResult(values, storage, raw["status"], raw["reason"], raw["iterations"],
@@ -349,9 +353,8 @@ def _updates(program: Program, raw: list[dict] | None, where: str
     the variables that have arrived)."""
     if raw is None:
         return None
-    return tuple({**update, "values": _values(program, _keyed(program, update["values"], where,
-                                                               complete=False))}
-                 for update in raw)
+    return tuple({**update, "values": _values(program, frame.to_world(program, _keyed(
+        program, update["values"], where, complete=False)))} for update in raw)
 
 
 def _explain_outcome(program: Program, raw: dict, config: SimConfig

@@ -98,7 +98,9 @@ def compile_stream(graph: Graph, solver=None, incremental: int | None = None,
     if incremental is not None:
         solver = replace(solver, incremental_k=incremental, batch_every=batch_every)
     try:
-        program = compile_graph(graph, solver, name=name)
+        # no local frame (fgc.ir.frame): the streaming paths assemble window data in world
+        # coordinates from the estimates they keep
+        program = compile_graph(graph, solver, name=name, local_frame=False)
     except ValueError as exc:  # the incremental plan's own checks (window, batch steps)
         raise FgcError(f"incremental plan: {exc}") from None
     if program.schedule.structure_class != "chain" or not program.schedule.clusters:
@@ -282,7 +284,7 @@ def prefix_program(graph: Graph, program, size: int):
         if all(str(k) in keys for k in f.keys):
             sub.add(f)
     solver = replace(program.solver, incremental_k=None, batch_every=None)
-    return compile_graph(sub, solver, name=f"{program.name}_window{size}")
+    return compile_graph(sub, solver, name=f"{program.name}_window{size}", local_frame=False)
 
 
 def on_chip(program, window: int | None) -> bool:
