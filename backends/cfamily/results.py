@@ -250,7 +250,7 @@ def judge_precision(program: Program, data: ProblemData, result: HlsResult,
     rho, index = conditioning.resolution(whitened_jacobians(program, data, storage), storage,
                                          [v.dim for v in program.variables], precision)
     if rho < conditioning.RESOLUTION_LIMIT:
-        return replace(result, resolution=rho)
+        return _judge_distance(program, data, replace(result, resolution=rho), precision)
     spec = program.variables[index]
     text = conditioning.precision_limit_message(spec.key, spec.type_name, rho, precision)
     conditioning.warn(text, conditioning.PrecisionLimitWarning)
@@ -258,6 +258,24 @@ def judge_precision(program: Program, data: ProblemData, result: HlsResult,
     if status == "converged":
         status, reason = "failed", PRECISION_LIMIT
     return replace(result, status=status, reason=reason, resolution=rho, message=text,
+                   warnings=(*result.warnings, text))
+
+
+def _judge_distance(program: Program, data: ProblemData, result: HlsResult,
+                    precision: str) -> HlsResult:
+    """A converged ``result`` more than ``conditioning.STEP_LIMIT`` σ from the float64 optimum
+    (``fgc_backends.sim.remaining_step``, the simulator's verdict) fails with reason
+    "precision_limit" and a :class:`fgc.ir.conditioning.PrecisionLimitWarning`."""
+    from fgc_backends.sim import remaining_step
+
+    if result.status != "converged":
+        return result
+    sigmas = remaining_step(program, data, dict(result.values))
+    if sigmas is None or sigmas < conditioning.STEP_LIMIT:
+        return result
+    text = conditioning.remaining_step_message(sigmas, precision)
+    conditioning.warn(text, conditioning.PrecisionLimitWarning)
+    return replace(result, status="failed", reason=PRECISION_LIMIT, message=text,
                    warnings=(*result.warnings, text))
 
 

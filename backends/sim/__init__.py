@@ -18,9 +18,9 @@ result names each value by the variable's key (``"values": {"x3": {"key": "x3", 
 from .config import SimConfig
 from .emitter import EmitError, emit
 from .printer import SimPrinter
-from .runner import SimResult, costs, linearize, read_result, run
+from .runner import SimResult, costs, linearize, read_result, remaining_step, run
 
 Config = SimConfig  # the backend contract's name (fgc_backends.CONTRACT)
 
 __all__ = ["Config", "EmitError", "SimConfig", "SimPrinter", "SimResult", "costs", "emit",
-           "linearize", "read_result", "run"]
+           "linearize", "read_result", "remaining_step", "run"]
