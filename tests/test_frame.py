@@ -183,3 +183,23 @@ def test_full_grid_within_a_sigma_or_says_why(backend):
     for kind, offset, status, reason, dsigma in _grid(backend):
         assert (status == "converged" and dsigma <= SIGMA_GOAL) or (
             status == "failed" and reason == "precision_limit"), (kind, offset, status, dsigma)
+
+
+@pytest.mark.heavy
+@pytest.mark.skipif(shutil.which("g++") is None, reason="no g++")
+def test_native_world_coordinates_more_than_a_sigma_off_say_so():
+    """The host verdict (judge_precision) of the native float solver on the world-coordinate
+    chain at 1e4 m: failed / precision_limit with the distance warning (before: "converged")."""
+    from fgc_backends import native
+
+    graph, sig = chain("pose2", 1e4)
+    program = compile_graph(graph, F32, local_frame=False)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        result = native.run(program, problem_data(graph, program),
+                            native.NativeConfig(scalar="float"))
+    dsigma = sigma_distance(graph, result.values, gtsam_optimum(graph), sig)
+    assert (result.converged and dsigma <= SIGMA_GOAL) or (
+        result.reason == "precision_limit" and any(
+            "σ from the optimum" in str(w.message) or "cannot place" in str(w.message)
+            for w in caught)), (result.status, dsigma)
