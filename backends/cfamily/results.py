@@ -266,11 +266,11 @@ def _judge_distance(program: Program, data: ProblemData, result: HlsResult,
     """A converged ``result`` more than ``conditioning.STEP_LIMIT`` σ from the float64 optimum
     (``fgc_backends.sim.remaining_step``, the simulator's verdict) fails with reason
     "precision_limit" and a :class:`fgc.ir.conditioning.PrecisionLimitWarning`."""
-    from fgc_backends.sim import remaining_step
+    import fgc_backends  # the simulator through the registry: this layer imports no backend
 
     if result.status != "converged":
         return result
-    sigmas = remaining_step(program, data, dict(result.values))
+    sigmas = fgc_backends.load("sim").remaining_step(program, data, dict(result.values))
     if sigmas is None or sigmas < conditioning.STEP_LIMIT:
         return result
     text = conditioning.remaining_step_message(sigmas, precision)
