@@ -9,21 +9,28 @@ be solved fails in milliseconds rather than after its derivations. The stages li
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from fgc.compiler.fuse import fuse
 from fgc.compiler.lower import lower
 from fgc.compiler.schedule import FactorInfo, GraphStructure, VarInfo, check_structure, schedule
 from fgc.compiler.storage import ChainLayout, plan_storage
 from fgc.errors import DslError, StructureError
 from fgc.frontend.dsl import Graph
+from fgc.ir import frame
 from fgc.ir.program import Program, SolverConfig, check_program
 
 
 def compile_graph(graph: Graph, solver: SolverConfig | None = None, name: str = "fgc_problem",
-                  max_variables: int | None = None) -> Program:
+                  max_variables: int | None = None, local_frame: bool = True) -> Program:
     """Compile ``graph``'s structure into a Program for ``solver`` (default options).
 
     Structure errors (unconstrained variable, gauge freedom, more variables than
-    ``max_variables``) are raised before any symbolic or numeric work.
+    ``max_variables``) are raised before any symbolic or numeric work. A graph far from the
+    origin gets a local frame (``Program.frame``, ``fgc.ir.frame``: what float32 needs, and the
+    same for every precision so that one data file serves every design of the graph) unless
+    ``local_frame`` is False (the streaming paths, whose data are assembled keyframe by keyframe
+    in world coordinates).
     """
     solver = solver or SolverConfig()
     solver.check()
@@ -35,6 +42,8 @@ def compile_graph(graph: Graph, solver: SolverConfig | None = None, name: str = 
     blocks = fuse(graph)                                          # derive + CSE per block type
     storage = plan_storage(blocks, chain_layout(graph, sched), solver.linear)
     program = lower(graph, blocks, sched, storage, solver, name, limit)
+    if local_frame:
+        program = replace(program, frame=frame.choose(graph))
     check_program(program)
     return program
 

@@ -50,7 +50,7 @@ import numpy as np
 import fgc_backends
 from fgc.errors import DataError
 from fgc.interop.estimates import values_from_storage
-from fgc.ir import conditioning
+from fgc.ir import conditioning, frame
 from fgc.ir.codes import REASONS, STATUSES
 from fgc.ir.datafile import ProblemData
 from fgc.ir.program import Program
@@ -101,13 +101,14 @@ def keyed(result: HlsResult, program: Program) -> HlsResult:
 
 def result_from_arrays(program: Program, x: np.ndarray, errors, iterations: int, status: int,
                        reason: int) -> HlsResult:
-    """Assemble a result from the flat storage vector and the kernel's report."""
+    """Assemble a result from the flat storage vector (in the Program's local frame, as the
+    kernel holds it) and the kernel's report; the values are in world coordinates."""
     values, pos = {}, 0
     for v in program.variables:
         values[v.key] = np.array(x[pos:pos + v.storage_dim], dtype=np.float64)
         pos += v.storage_dim
-    return HlsResult(values, int(iterations), float(errors[0]), float(errors[1]),
-                     STATUSES[status], REASONS[reason])
+    return HlsResult(frame.to_world(program, values), int(iterations), float(errors[0]),
+                     float(errors[1]), STATUSES[status], REASONS[reason])
 
 
 def read_result(path: str | Path, program: Program, data: ProblemData | None = None,
@@ -137,7 +138,8 @@ def read_result(path: str | Path, program: Program, data: ProblemData | None = N
                                 (float(fields["INITIAL_ERROR"]), float(fields["FINAL_ERROR"])),
                                 int(fields["ITERATIONS"]), STATUSES.index(fields["STATUS"]),
                                 REASONS.index(fields["REASON"]))
-    result = replace(result, keyed_values=keyed)
+    result = replace(result, keyed_values={key: result.values[v.key] for key, v in  # world
+                                           zip(keyed, program.variables, strict=True)})
     if data is None or scalar is None:
         return result
     return judge_precision(program, data, result, scalar)
@@ -188,15 +190,16 @@ def error_floor(program: Program, data: ProblemData, reference, scalar: str) -> 
     if scalar == "double" or reference.final_error is None:
         return 0.0
     fmt = fixed_format(scalar)
-    rounded = {}
+    rounded, local = {}, frame.to_local(program, dict(reference.storage))  # the design's state
     for v in program.variables:
-        x = np.asarray(reference.storage[v.key], dtype=np.float64).ravel()
+        x = np.asarray(local[v.key], dtype=np.float64).ravel()
         if fmt is None:
             rounded[v.key] = x.astype(np.float32).astype(np.float64)
         else:
             step = 2.0 ** -(fmt[0] - fmt[1])
             rounded[v.key] = np.round(x / step) * step
-    at_reference, at_rounded = costs(program, data, [dict(reference.storage), rounded])
+    at_reference, at_rounded = costs(program, data, [dict(reference.storage),
+                                                     frame.to_world(program, rounded)])
     floor = at_rounded - at_reference  # what the rounding adds to the optimum's cost
     return floor if np.isfinite(floor) and floor > 0 else 0.0
 
@@ -212,12 +215,13 @@ def write_reference(path: str | Path, program: Program, reference,
     if not (np.isfinite(floor) and floor >= 0):
         raise DataError(f"reference error floor {floor!r} is not a finite number ≥ 0")
     tokens = key_tokens(v.key for v in program.variables)
+    local = frame.to_local(program, dict(reference.storage))  # the testbench's frame
     error = float("nan") if reference.final_error is None else float(reference.final_error)
     out = [f"{REFERENCE_MAGIC} {program.structure_fingerprint}", f"STATUS {reference.status}",
            f"FINAL_ERROR {error!r}", f"ERROR_FLOOR {float(floor)!r}",
            f"VARIABLES {len(program.variables)}"]
     for v, token in zip(program.variables, tokens, strict=True):
-        values = np.asarray(reference.storage[v.key], dtype=np.float64).ravel()
+        values = np.asarray(local[v.key], dtype=np.float64).ravel()
         if values.size != v.storage_dim or not np.all(np.isfinite(values)):
             raise DataError(f"reference value of variable {v.key!r} is not {v.storage_dim} "
                             "finite numbers")
@@ -237,13 +241,14 @@ def judge_precision(program: Program, data: ProblemData, result: HlsResult,
     precision = conditioning.SCALAR_PRECISION.get(scalar)
     if precision in (None, "float64") or result.reason in ("singular", "non_finite"):
         return result
-    storage = [np.asarray(result.values[v.key], dtype=np.float64) for v in program.variables]
+    local = frame.to_local(program, result.values)  # the state as the solver held it
+    storage = [np.asarray(local[v.key], dtype=np.float64) for v in program.variables]
     if not all(np.all(np.isfinite(v)) for v in storage):
         return result
     rho, index = conditioning.resolution(whitened_jacobians(program, data, storage), storage,
                                          [v.dim for v in program.variables], precision)
     if rho < conditioning.RESOLUTION_LIMIT:
-        return replace(result, resolution=rho)
+        return _judge_distance(program, data, replace(result, resolution=rho), precision)
     spec = program.variables[index]
     text = conditioning.precision_limit_message(spec.key, spec.type_name, rho, precision)
     conditioning.warn(text, conditioning.PrecisionLimitWarning)
@@ -251,6 +256,24 @@ def judge_precision(program: Program, data: ProblemData, result: HlsResult,
     if status == "converged":
         status, reason = "failed", PRECISION_LIMIT
     return replace(result, status=status, reason=reason, resolution=rho, message=text,
+                   warnings=(*result.warnings, text))
+
+
+def _judge_distance(program: Program, data: ProblemData, result: HlsResult,
+                    precision: str) -> HlsResult:
+    """A converged ``result`` more than ``conditioning.STEP_LIMIT`` σ from the float64 optimum
+    (``fgc_backends.sim.remaining_step``, the simulator's verdict) fails with reason
+    "precision_limit" and a :class:`fgc.ir.conditioning.PrecisionLimitWarning`."""
+    import fgc_backends  # the simulator through the registry: this layer imports no backend
+
+    if result.status != "converged":
+        return result
+    sigmas = fgc_backends.load("sim").remaining_step(program, data, dict(result.values))
+    if sigmas is None or sigmas < conditioning.STEP_LIMIT:
+        return result
+    text = conditioning.remaining_step_message(sigmas, precision)
+    conditioning.warn(text, conditioning.PrecisionLimitWarning)
+    return replace(result, status="failed", reason=PRECISION_LIMIT, message=text,
                    warnings=(*result.warnings, text))
 
 

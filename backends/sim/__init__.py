@@ -18,10 +18,10 @@ result names each value by the variable's key (``"values": {"x3": {"key": "x3", 
 from .config import SimConfig
 from .emitter import EmitError, emit
 from .printer import SimPrinter
-from .runner import SimResult, costs, linearize, read_result, run
+from .runner import SimResult, costs, linearize, read_result, remaining_step, run
 from .streaming import stream
 
 Config = SimConfig  # the backend contract's name (fgc_backends.CONTRACT)
 
-__all__ = ["Config", "EmitError", "SimConfig", "SimPrinter", "SimResult", "costs", "emit", "stream",
-           "linearize", "read_result", "run"]
+__all__ = ["Config", "EmitError", "SimConfig", "SimPrinter", "SimResult", "costs", "emit",
+           "linearize", "read_result", "remaining_step", "run", "stream"]

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import runpy
 import subprocess
@@ -16,8 +17,8 @@ import numpy as np
 from fgc.errors import DataError, FgcError
 from fgc.frontend import geometry
 from fgc.frontend.geometry import LieGroup
-from fgc.ir import conditioning
-from fgc.ir.datafile import ProblemData, check_structure, write_data
+from fgc.ir import conditioning, frame
+from fgc.ir.datafile import ProblemData, check_structure, read_data, write_data
 from fgc.ir.program import Program
 from fgc.ir.result import SolveResult
 
@@ -119,7 +120,50 @@ def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | 
             error = DataError(raw["message"])
             error.factor, error.variable = raw["factor"], raw["variable"]
             raise DataError(_explain(program, error))
-    return _result(program, raw, files, config or SimConfig())
+    result = _result(program, raw, files, config or SimConfig())
+    if result.precision != "float64" and result.status == "converged" and not incremental \
+            and window is None:
+        result = _judge_distance(program, data if isinstance(data, ProblemData) else
+                                 read_data(data_path), result, config, out)
+    return result
+
+
+def remaining_step(program: Program, data: ProblemData, storage: dict,
+                   config: SimConfig | None = None, emitted: str | Path | None = None
+                   ) -> float | None:
+    """How far, in σ, the state ``storage`` ({variable key: storage}, world coordinates) is from
+    the optimum of ``program`` on ``data`` to first order: the whitened length ‖A·δ‖₂ of the
+    float64 Gauss-Newton step δ from it (the simulator's float64 linearisation and elimination;
+    ``emitted``: as :func:`linearize`). None when that system is singular or not finite."""
+    problem = _float64_problem(program, data, config, emitted)
+    x = next(_points(program, problem, [storage]))
+    with np.errstate(all="ignore"):
+        abs_, _, _ = problem.linearize(x)
+        if not all(np.all(np.isfinite(ab)) for ab in abs_):
+            return None
+        try:
+            delta = problem.solve(abs_, 0.0)
+        except problem.lib.linear.SingularError:
+            return None
+        moved = [np.einsum("nmd,nd->nm", ab[..., :-1], delta[block.columns])
+                 for block, ab in zip(problem.blocks, abs_, strict=True)]
+    length = float(np.sqrt(sum(float(np.sum(m * m)) for m in moved)))
+    return length if np.isfinite(length) else None
+
+
+def _judge_distance(program: Program, data: ProblemData, result: SimResult,
+                    config: SimConfig | None, emitted: Path) -> SimResult:
+    """A converged low-precision ``result`` more than :data:`conditioning.STEP_LIMIT` σ from the
+    float64 optimum (:func:`remaining_step`) fails with reason "precision_limit" and a
+    :class:`conditioning.PrecisionLimitWarning` (:mod:`fgc.ir.conditioning`)."""
+    sigmas = remaining_step(program, data, result.storage, config, emitted)
+    if sigmas is None or sigmas < conditioning.STEP_LIMIT:
+        return result
+    text = conditioning.remaining_step_message(sigmas, result.precision)
+    conditioning.warn(text, conditioning.PrecisionLimitWarning)
+    return dataclasses.replace(result, status="failed", reason="precision_limit",
+                               message=" ".join(filter(None, (result.message, text))),
+                               warnings=(*result.warnings, text))
 
 
 def linearize(program: Program, data: ProblemData, points: Sequence[dict | None],
@@ -180,11 +224,15 @@ def _float64_problem(program: Program, data: ProblemData, config: SimConfig | No
 
 
 def _points(program: Program, problem, points: Sequence[dict | None]):
-    """Each point (``{variable key: storage array}``, None: the data's initial values) as the
-    problem's storage vector."""
+    """Each point (``{variable key: storage array}`` in world coordinates, None: the data's
+    initial values) as the problem's storage vector (in the Program's local frame)."""
     for point in points:
-        yield problem.x0 if point is None else np.concatenate(
-            [np.asarray(point[v.key], dtype=np.float64).reshape(-1) for v in program.variables])
+        if point is None:
+            yield problem.x0
+            continue
+        local = frame.to_local(program, {v.key: point[v.key] for v in program.variables})
+        yield np.concatenate([np.asarray(local[v.key], dtype=np.float64).reshape(-1)
+                              for v in program.variables])
 
 
 def _factor_rows(program: Program, abs_: list[np.ndarray], wanted: set[int] | None
@@ -331,7 +379,7 @@ def _values(program: Program, storage: dict[str, np.ndarray]) -> dict[str, LieGr
 
 def _result(program: Program, raw: dict, files: tuple[Path, ...],
             config: SimConfig, where: str = "the simulator") -> SimResult:
-    storage = _keyed(program, raw["values"], where)
+    storage = frame.to_world(program, _keyed(program, raw["values"], where))
     values = _values(program, storage)
     singular, messages, warned = _explain_outcome(program, raw, config)
     return SimResult(values, storage, raw["status"], raw["reason"], raw["iterations"],
@@ -349,9 +397,8 @@ def _updates(program: Program, raw: list[dict] | None, where: str
     the variables that have arrived)."""
     if raw is None:
         return None
-    return tuple({**update, "values": _values(program, _keyed(program, update["values"], where,
-                                                               complete=False))}
-                 for update in raw)
+    return tuple({**update, "values": _values(program, frame.to_world(program, _keyed(
+        program, update["values"], where, complete=False)))} for update in raw)
 
 
 def _explain_outcome(program: Program, raw: dict, config: SimConfig

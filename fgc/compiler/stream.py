@@ -84,7 +84,9 @@ def compile_chain(graph: Graph, solver: SolverConfig | None = None,
     if isinstance(policy, Incremental):
         solver = replace(solver, incremental_k=policy.k, batch_every=policy.batch_every)
     try:
-        program = compile_graph(graph, solver, name=name)
+        # no local frame (fgc.ir.frame): the streaming paths assemble window data in world
+        # coordinates from the estimates they keep
+        program = compile_graph(graph, solver, name=name, local_frame=False)
     except ValueError as exc:  # the incremental plan's own checks (window, batch steps)
         raise FgcError(f"incremental plan: {exc}") from None
     if program.schedule.structure_class != "chain" or not program.schedule.clusters:
@@ -186,7 +188,7 @@ def prefix_program(graph: Graph, program: Program, size: int) -> Program:
         if all(str(k) in keys for k in f.keys):
             sub.add(f)
     solver = replace(program.solver, incremental_k=None, batch_every=None)
-    return compile_graph(sub, solver, name=f"{program.name}_window{size}")
+    return compile_graph(sub, solver, name=f"{program.name}_window{size}", local_frame=False)
 
 
 def _marginal_prior(*variables, **measured):
@@ -282,7 +284,8 @@ class WindowTemplate:
         if ordering is not None:
             solver = replace(solver, ordering=ordering)
         kind = "window" if ordering is None else ordering
-        self.template = compile_graph(template, solver, name=f"{program.name}_{kind}{size}")
+        self.template = compile_graph(template, solver, name=f"{program.name}_{kind}{size}",
+                                      local_frame=False)  # window data are world coordinates
         # every graph factor by its signature (type, (keyframe, position) per variable)
         self.by_signature = {self._signature(f, 0): i for i, f in enumerate(graph.factors)}
         spans = [[self.cluster_of[str(k)] for k in f.keys] for f in graph.factors]

@@ -67,7 +67,9 @@ def factor_words(measured: dict, noise, member) -> list[np.ndarray]:
 
 
 def problem_data(graph: Graph, program: Program) -> ProblemData:
-    """Collect ``graph``'s data in the layout of ``program`` (compiled from the same structure)."""
+    """Collect ``graph``'s data in the layout of ``program`` (compiled from the same structure);
+    a Program with a local frame (``Program.frame``, :mod:`fgc.ir.frame`) gets its positions
+    relative to the frame's origin, as every reader of its results expects."""
     by_key = {str(k): v for k, v in graph.variables.items()}
     if [v.key for v in program.variables] != list(by_key):
         raise DataError("the graph's variables do not match the compiled Program's")
@@ -79,7 +81,10 @@ def problem_data(graph: Graph, program: Program) -> ProblemData:
     if sum(len(spec.factors) for spec in program.factors) != len(graph.factors):
         raise DataError(f"the graph has {len(graph.factors)} factors, the compiled Program "
                         f"{sum(len(spec.factors) for spec in program.factors)}")
-    variables = tuple(by_key[v.key].initial.storage_array() for v in program.variables)
+    frame = program.frame  # a float32 Program's local frame (fgc.ir.frame): positions relative
+    variables = tuple(by_key[v.key].initial.storage_array() if frame is None else
+                      frame.move(v.type_name, by_key[v.key].initial.storage_array(), -1.0)
+                      for v in program.variables)
     factors = []
     for spec in program.factors:
         block = program.blocks[spec.block]
@@ -98,7 +103,8 @@ def problem_data(graph: Graph, program: Program) -> ProblemData:
                 raise DataError(f"factor {index} ('{f.name}', a {f.type.name}) connects "
                                 f"{keys}, the compiled Program connects {expected}: the graph "
                                 "has another structure (compile it, or use its own Program)")
-            parts += factor_words(f.measured, f.noise, member)
+            measured = f.measured if frame is None else frame.local_measured(f)
+            parts += factor_words(measured, f.noise, member)
         factors.append(np.concatenate(parts))
     return ProblemData(variables, tuple(factors), program.structure_fingerprint)
 

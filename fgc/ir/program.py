@@ -22,6 +22,7 @@ from fgc.compiler.storage import StoragePlan, StorageStep
 from fgc.errors import FgcError
 from fgc.frontend.geometry import special
 from fgc.ir.codes import ORDERINGS  # the one list (the schedule and the CLI read it)
+from fgc.ir.frame import Frame
 
 PROGRAM_VERSION = 1
 METHODS, LINEAR_SOLVERS, PRECISIONS = ("gn", "lm"), ("qr", "cholesky"), ("float32", "float64")
@@ -219,10 +220,17 @@ class Program:
     solver: SolverConfig
     max_variables: int
     version: int = PROGRAM_VERSION
+    # float32: the local frame its data are written in (``fgc.ir.frame``; None: world
+    # coordinates, and no ``frame`` entry in the JSON)
+    frame: Frame | None = None
 
     # -- JSON --------------------------------------------------------------------------------
     def to_dict(self) -> dict:
-        out = dataclasses.asdict(dataclasses.replace(self, schedule=None, storage=None))
+        out = dataclasses.asdict(dataclasses.replace(self, schedule=None, storage=None,
+                                                     frame=None))
+        del out["frame"]
+        if self.frame is not None:
+            out["frame"] = self.frame.to_dict()
         out["schedule"] = self.schedule.to_dict()
         out["storage"] = dataclasses.asdict(self.storage)
         for v in out["variables"]:  # only an int key says so: str-keyed JSON is as before
@@ -254,6 +262,7 @@ class Program:
             solver=SolverConfig(**solver),
             max_variables=d["max_variables"],
             version=d["version"],
+            frame=Frame.from_dict(d["frame"]) if d.get("frame") is not None else None,
         )
 
     @classmethod
@@ -292,14 +301,18 @@ def _digest(obj) -> str:
 
 
 def structure_summary(p: Program) -> dict:
-    """The fields :attr:`Program.structure_fingerprint` digests (JSON-serialisable)."""
-    return {
+    """The fields :attr:`Program.structure_fingerprint` digests (JSON-serialisable); a local
+    frame (``fgc.ir.frame``) changes what the data's positions mean, so it is digested too."""
+    out = {
         "variables": [[v.key, v.type_name, v.dim, v.storage_dim] for v in p.variables],
         "blocks": [[b.variable_types, [[m.factor_type, m.rows, m.noise_kind, m.noise_params,
                                         m.measurements, m.positions] for m in b.members]]
                    for b in p.blocks],
         "factors": [[f.block, f.keys, f.factors] for f in p.factors],
     }
+    if p.frame is not None:
+        out["frame"] = p.frame.to_dict()
+    return out
 
 
 def _tuples(x):

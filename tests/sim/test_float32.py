@@ -54,8 +54,8 @@ def chain(offset: float, sigma: float, n: int = 10) -> fgc.Graph:
     return g
 
 
-def runs(graph: fgc.Graph):
-    program = compile_graph(graph, SolverConfig())
+def runs(graph: fgc.Graph, local_frame: bool = True):
+    program = compile_graph(graph, SolverConfig(), local_frame=local_frame)
     data = problem_data(graph, program)
     f64 = sim.run(program, data)
     with warnings.catch_warnings(record=True) as caught:
@@ -65,9 +65,11 @@ def runs(graph: fgc.Graph):
 
 
 @pytest.mark.parametrize("offset, sigma", [(1e6, 0.1), (0.0, 1e-9)],
-                         ids=["1e6-m-from-the-origin", "sigma-1e-9"])
+                         ids=["1e6-m-from-the-origin-world-frame", "sigma-1e-9"])
 def test_float32_beyond_its_resolution_says_it_did_not_converge(offset, sigma):
-    f64, f32, warned = runs(chain(offset, sigma))
+    """Solved in world coordinates (``local_frame=False``: what a problem the local frame
+    cannot move gets, tests/test_frame.py), or with a σ no frame helps."""
+    f64, f32, warned = runs(chain(offset, sigma), local_frame=False)
     assert f64.converged and f64.final_error <= 1e-9  # the optimum is exact
     # measured before: "converged" (reason "step") at 352.4 (1e6 m), 2.85e4 (σ = 1e-9)
     assert f32.final_error > 1.0
@@ -128,7 +130,7 @@ def test_plane_registration_far_from_the_origin_is_not_silently_off():
 
 RHO_RTOL = 1e-6  # host ρ (float64 Jacobian) vs the simulator's (float32); measured ≤ 5.6e-8
 
-CASES = {  # name → (graph, True when ρ ≥ 1 in float32)
+CASES = {  # name → (graph, True when ρ ≥ 1 in float32); solved in world coordinates
     "1e6-m-from-the-origin": (lambda: chain(1e6, 0.1), True),
     "sigma-1e-9": (lambda: chain(0.0, 1e-9), True),
     "plane-1e5-m": (lambda: plane_registration(np.array([1e5, 2e4, 30.0]))[0], True),
@@ -145,7 +147,7 @@ def test_host_resolution_equals_the_simulators(name, tmp_path):
 
     build, beyond = CASES[name]
     graph = build()
-    program = compile_graph(graph, SolverConfig())
+    program = compile_graph(graph, SolverConfig(), local_frame=False)
     data = problem_data(graph, program)
     write_data(data, tmp_path / "data.txt")
     module = emit(program, tmp_path / "sim")[0]
@@ -196,19 +198,21 @@ def _native_cli(tmp_path, capsys, *params):
 
 
 @pytest.mark.skipif(shutil.which("g++") is None, reason="no g++")
-def test_native_run_1e6_m_from_the_origin_fails_with_the_reason(tmp_path, capsys):
-    """fgc run --backend native (float32, the default) on the chain 1e6 m from the origin:
-    exit 1, status failed, reason precision_limit, the simulator's warning; before: exit 0,
-    "converged". The same build (same structure) near the origin converges without a warning."""
-    code, report, out, warned = _native_cli(tmp_path, capsys, "offset=1e6")
+def test_native_run_beyond_float32_fails_with_the_reason(tmp_path, capsys):
+    """fgc run --backend native (float32, the default) on the chain with σ = 1e-9: exit 1,
+    status failed, reason precision_limit, the simulator's warning. 1e6 m from the origin
+    (before the local frame: exit 1, precision_limit) and at the origin it converges without a
+    warning."""
+    code, report, out, warned = _native_cli(tmp_path, capsys, "sigma=1e-9")
     assert (code, report["status"]) == (1, "failed"), out
     assert report["reason"] == "precision_limit"
     assert "precision_limit" in out and "cannot place variable 'x" in out
     assert len(warned) == 1 and "recentre" in str(warned[0].message)
     assert report["final_error"] > 1.0
-    code, report, out, warned = _native_cli(tmp_path, capsys, "offset=0")
-    assert (code, report["status"]) == (0, "converged") and not warned, out
-    assert report["final_error"] <= 1e-6
+    for offset in ("offset=1e6", "offset=0"):
+        code, report, out, warned = _native_cli(tmp_path, capsys, offset)
+        assert (code, report["status"]) == (0, "converged") and not warned, out
+        assert report["final_error"] <= 1e-6
 
 
 def _native(graph):
@@ -261,7 +265,7 @@ def test_csim_1e6_m_from_the_origin_says_it_did_not_converge(tmp_path):
     from fgc_backends.hls.build import HlsMismatchError
 
     graph = chain(1e6, 0.1)
-    program = compile_graph(graph, SolverConfig(precision="float32"))
+    program = compile_graph(graph, SolverConfig(precision="float32"), local_frame=False)
     project = hls.emit(program, tmp_path / "project", hls.HlsConfig(scalar="float"))
     data = problem_data(graph, program)
     # against the float64 reference, the self-checking testbench says no (exit 4), by name
