@@ -421,6 +421,34 @@ def _filename(exc: OSError) -> str:
     return f" ({exc.filename})" if getattr(exc, "filename", None) else ""
 
 
+def _progress(args, command: str, program):
+    """The per-iteration progress display of a solve (fgc.app.progress): stderr unless -q."""
+    from fgc.app.progress import Progress
+
+    return Progress(f"fgc {command}", program.solver.max_iterations,
+                    show=not getattr(args, "quiet", False))
+
+
+class _WithProgress:
+    """The simulator backend with a progress display on its batch solves (for the reports
+    that take the backend module and call its ``run``)."""
+
+    def __init__(self, backend, display) -> None:
+        self._backend, self._display = backend, display
+
+    def __getattr__(self, name: str):
+        return getattr(self._backend, name)
+
+    def run(self, program, data, *rest, **options):
+        if not rest and "progress" not in options and not options.get("incremental"):
+            options["progress"] = self._display
+        self._display.start()
+        try:
+            return self._backend.run(program, data, *rest, **options)
+        finally:
+            self._display.finish()
+
+
 def _cmd_simulate(args) -> int:
     from fgc.app.run_report import simulate_report
 
@@ -433,7 +461,9 @@ def _cmd_simulate(args) -> int:
         return _cmd_stream(args)
     graph, program, data = _compile(args, "float32")
     try:
-        report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot,
+        display = _progress(args, f"simulate {args.spec}", program)
+        report = simulate_report(graph, program, data, _WithProgress(_backend("sim"), display),
+                                 plot_dir=args.plot,
                                  plan_options=_plan_options(args, program))
     except OSError as exc:
         if not args.plot or not str(getattr(exc, "filename", "")).startswith(args.plot):
@@ -452,7 +482,8 @@ def _cmd_verify(args) -> int:
     if _streaming(args):
         return _cmd_verify_stream(args)
     graph, program, data = _compile(args, "float64")
-    report = verify_report(graph, program, data, _backend("sim"))
+    display = _progress(args, f"verify {args.spec}", program)
+    report = verify_report(graph, program, data, _WithProgress(_backend("sim"), display))
     _print(args, report.pop("summary"),
            f"fgc verify {args.spec}: {'PASSED' if report['passed'] else 'FAILED'}")
     _estimates_out(args, graph, report, report.pop("_result_values"))
@@ -467,8 +498,16 @@ def _cmd_run(args) -> int:
     import time
 
     t0 = time.perf_counter()
+    display = _progress(args, f"run {args.spec}", program)
+    timings: dict = {}
     if args.backend == "native":
-        result = _backend("native").run(program, data, _native_config(args, program))
+        config = _native_config(args, program)
+        if not getattr(args, "quiet", False):
+            print(f"fgc run: building or loading the native library "
+                  f"({len(program.variables)} variables; a first build runs g++: seconds to "
+                  "minutes for a large graph)…", file=sys.stderr, flush=True)
+        result = _backend("native").run(program, data, config, progress=display,
+                                        timings=timings)
     elif args.backend == "hls":  # the accelerator's C simulation (make csim), g++ on this host
         result = _backend("hls").run(program, data, _hls_config(args, program))
     else:
@@ -476,24 +515,47 @@ def _cmd_run(args) -> int:
             raise UsageError("fgc run: --scalar applies to --backend native or hls, --part to "
                              "--backend hls; the simulator runs float32 or float64 (--precision)")
         _refuse_hls_design(args, "sim")
-        result = _backend("sim").run(program, data)
+        result = _backend("sim").run(program, data, progress=display)
+        timings = {"setup_seconds": result.setup_seconds, "solve_seconds": result.solve_seconds}
+    display.finish()
     status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
     from fgc.app.run_report import require_finite_start
 
     require_finite_start(graph, result)
+    solve_s = timings.get("solve_seconds", seconds)
     report = {"backend": args.backend, "status": status, "reason": result.reason,
-              "final_error": final, "iterations": iters, "solve_seconds": seconds}
+              "final_error": final, "iterations": iters, "solve_seconds": solve_s,
+              **{k: v for k, v in timings.items() if k != "solve_seconds"},
+              "total_seconds": seconds, "progress": display.records}
     final_text = f"{final:.10g}" if final is not None else "not finite"
     lines = [f"fgc run {args.spec} ({args.backend}): {status} ({result.reason}), {iters} "
-             f"iterations, final error {final_text}, {seconds * 1e3:.3f} ms (build/load "
-             "included on a first run)"]
+             f"iterations, final error {final_text}, "
+             f"{_run_times(args.backend, solve_s, timings, seconds)}"]
     if status != "converged" and result.message:
         lines.append(f"fgc run: not converged: {result.message}")
     _print(args, lines)
     _estimates_out(args, graph, report, result.values)  # fgc values by Program key
     _write_json(args.json, report)
     return EXIT_OK if status == "converged" else EXIT_FAILED
+
+
+def _run_times(backend: str, solve_s: float, timings: dict, total_s: float) -> str:
+    """The solve's time, with what the build / load / set-up took beside it."""
+    if backend == "native":
+        if timings.get("built"):
+            extra = ("native library built (emit + g++) and loaded in "
+                     f"{timings['build_seconds']:.2f} s")
+        elif timings.get("load_seconds"):
+            extra = ("cached native library loaded in "
+                     f"{timings['load_seconds'] * 1e3:.1f} ms")
+        else:
+            extra = "native library already loaded"
+        return f"solve {solve_s * 1e3:.3f} ms ({extra})"
+    if backend == "sim":
+        return (f"solve {solve_s * 1e3:.3f} ms (simulator emit, data and set-up "
+                f"{(total_s - solve_s) * 1e3:.1f} ms)")
+    return f"{total_s * 1e3:.3f} ms (emit, make csim build and C simulation run)"
 
 
 def _stream_setup(args, precision_default: str):
