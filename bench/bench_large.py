@@ -29,6 +29,7 @@ import gtsam  # noqa: E402
 
 from fgc.app.specs import load_spec  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
+from fgc.errors import FgcError  # noqa: E402
 from fgc.interop.to_gtsam import to_gtsam, value_to_gtsam  # noqa: E402
 from fgc.ir.datafile import problem_data  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
@@ -111,7 +112,11 @@ def main() -> None:
           f"{'fgc s':>9}{'gtsam s':>9}{'ratio':>8}{'it':>5}{'it_g':>5}"
           f"{'error fgc':>17}{'error gtsam':>17}")
     for name in args.files:
-        bench_file(name, args.linear, args.iterations, args.repeat, args.gtsam_ordering_untimed)
+        try:
+            bench_file(name, args.linear, args.iterations, args.repeat,
+                       args.gtsam_ordering_untimed)
+        except FgcError as exc:  # a file fgc cannot read as it is: say so, go on
+            print(f"{name:<19}not benchmarked: {exc}", flush=True)
 
 
 if __name__ == "__main__":
