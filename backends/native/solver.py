@@ -262,7 +262,9 @@ def run(program: Program, data: ProblemData, config: NativeConfig | None = None,
 
     Like the simulator's result: ``values`` are fgc values (Pose3, …) by Program key and
     ``storage`` the raw arrays (:meth:`NativeSolver.run` returns the arrays as ``values``).
-    ``progress``: called after each iteration (:meth:`NativeSolver.solve`). ``timings`` (a
+    ``progress``: called after each iteration (:meth:`NativeSolver.solve`); if it has a
+    ``start()`` method (:class:`fgc.app.progress.Progress`) that is called once the library is
+    loaded, just before the solve. ``timings`` (a
     dict, optional) receives ``build_seconds`` (emit + g++ on a first run, else finding the
     cached library), ``load_seconds`` (ctypes loading it; 0 when this process has it already),
     ``solve_seconds`` (the solve call alone) and ``built`` (whether g++ ran)."""
@@ -273,11 +275,14 @@ def run(program: Program, data: ProblemData, config: NativeConfig | None = None,
                         ).is_file()
     solver = load(program, config)
     t1 = time.perf_counter()
+    if progress is not None and callable(getattr(progress, "start", None)):
+        progress.start()  # a display's clock times the solve, not the build before it
     result = solver.run(data, progress)
     t2 = time.perf_counter()
     if timings is not None:
         # load() builds (if needed) and loads in one call: a cached library's share is its
         # loading, a first run's is mostly g++
+        # (finding a cached library includes its content hash over the Program's JSON)
         timings.update({"built": not cached, "build_seconds": 0.0 if cached else t1 - t0,
                         "load_seconds": 0.0 if loaded else (t1 - t0 if cached else 0.0),
                         "solve_seconds": t2 - t1})

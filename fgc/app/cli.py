@@ -547,7 +547,7 @@ def _run_times(backend: str, solve_s: float, timings: dict, total_s: float) -> s
             extra = ("native library built (emit + g++) and loaded in "
                      f"{timings['build_seconds']:.2f} s")
         elif timings.get("load_seconds"):
-            extra = ("cached native library loaded in "
+            extra = ("cached native library found and loaded in "
                      f"{timings['load_seconds'] * 1e3:.1f} ms")
         else:
             extra = "native library already loaded"
