@@ -421,12 +421,25 @@ def _filename(exc: OSError) -> str:
     return f" ({exc.filename})" if getattr(exc, "filename", None) else ""
 
 
-def _progress(args, command: str, program):
-    """The per-iteration progress display of a solve (fgc.app.progress): stderr unless -q."""
+SIM_LARGE_VARIABLES = 2000  # above this, the simulator says what it is before it starts
+
+
+def _progress(args, command: str, program, simulator: bool = False):
+    """The per-iteration progress display of a solve (fgc.app.progress): stderr unless -q.
+    With ``simulator``, a large Program gets a note first: the simulator steps every
+    elimination step in NumPy (the accelerator's model, not a fast solver)."""
     from fgc.app.progress import Progress
 
-    return Progress(f"fgc {command}", program.solver.max_iterations,
-                    show=not getattr(args, "quiet", False))
+    quiet = getattr(args, "quiet", False)
+    if simulator and not quiet and len(program.variables) > SIM_LARGE_VARIABLES:
+        widest = max(s.frontal_dim + s.separator_dim for s in program.schedule.steps)
+        print(f"fgc {command}: {len(program.variables)} variables, "
+              f"{len(program.schedule.steps)} elimination steps (widest {widest} columns) "
+              "stepped one by one in NumPy by the accelerator simulator: expect seconds to "
+              "minutes per iteration (each iteration's time and an estimate of the rest "
+              "follow); `fgc run --backend native` solves it in compiled code",
+              file=sys.stderr, flush=True)
+    return Progress(f"fgc {command}", program.solver.max_iterations, show=not quiet)
 
 
 class _WithProgress:
@@ -461,7 +474,7 @@ def _cmd_simulate(args) -> int:
         return _cmd_stream(args)
     graph, program, data = _compile(args, "float32")
     try:
-        display = _progress(args, f"simulate {args.spec}", program)
+        display = _progress(args, f"simulate {args.spec}", program, simulator=True)
         report = simulate_report(graph, program, data, _WithProgress(_backend("sim"), display),
                                  plot_dir=args.plot,
                                  plan_options=_plan_options(args, program))
@@ -482,7 +495,7 @@ def _cmd_verify(args) -> int:
     if _streaming(args):
         return _cmd_verify_stream(args)
     graph, program, data = _compile(args, "float64")
-    display = _progress(args, f"verify {args.spec}", program)
+    display = _progress(args, f"verify {args.spec}", program, simulator=True)
     report = verify_report(graph, program, data, _WithProgress(_backend("sim"), display))
     _print(args, report.pop("summary"),
            f"fgc verify {args.spec}: {'PASSED' if report['passed'] else 'FAILED'}")
@@ -498,7 +511,7 @@ def _cmd_run(args) -> int:
     import time
 
     t0 = time.perf_counter()
-    display = _progress(args, f"run {args.spec}", program)
+    display = _progress(args, f"run {args.spec}", program, simulator=args.backend == "sim")
     timings: dict = {}
     if args.backend == "native":
         config = _native_config(args, program)
