@@ -169,3 +169,18 @@ def test_w10000_runs_natively_to_gtsams_optimum():
         values.insert(problem.keys[key], value_to_gtsam(result.values[str(key)]))
     # both at the same optimum: GTSAM's own error at each, to 1e-6 relative
     assert problem.graph.error(values) == pytest.approx(problem.graph.error(optimum), rel=1e-6)
+
+
+def test_cli_simulate_logs_progress_and_quiet_prints_none(tmp_path, capsys):
+    spec = tmp_path / "ring_spec.py"
+    here = str(Path(__file__).resolve().parent)
+    spec.write_text(f"import sys\nsys.path.insert(0, {here!r})\nfrom test_scale import ring\n"
+                    "\n\ndef build():\n    return ring(n=20, closures=4)\n")
+    out = tmp_path / "sim.json"
+    main(["-q", "simulate", str(spec), "--precision", "float64", "--json", str(out)])
+    captured = capsys.readouterr()
+    assert "iteration" not in captured.err  # -q: no progress display
+    report = json.loads(out.read_text())
+    its = [r["iteration"] for r in report["progress"]]
+    assert its and its == sorted(set(its)) and its[-1] <= report["iterations"]
+    assert all(r["elapsed_seconds"] >= 0 and r["error"] >= 0 for r in report["progress"])

@@ -485,6 +485,7 @@ def _cmd_simulate(args) -> int:
                        f"{exc.strerror or exc}{_filename(exc)}") from None
     _print(args, report.pop("summary"))
     _estimates_out(args, graph, report, report.pop("_result_values"))
+    report["progress"] = display.records
     _write_json(args.json, report)
     return EXIT_OK if report["status"] == "converged" else EXIT_FAILED
 
@@ -497,6 +498,7 @@ def _cmd_verify(args) -> int:
     graph, program, data = _compile(args, "float64")
     display = _progress(args, f"verify {args.spec}", program, simulator=True)
     report = verify_report(graph, program, data, _WithProgress(_backend("sim"), display))
+    report["progress"] = display.records
     _print(args, report.pop("summary"),
            f"fgc verify {args.spec}: {'PASSED' if report['passed'] else 'FAILED'}")
     _estimates_out(args, graph, report, report.pop("_result_values"))
