@@ -3285,26 +3285,54 @@ FGC_INLINE bool store_step(T (*H)[LD], int w, int f, int s, T scale) {
 // each Evaluate one row of U and Update the rows after it, streaming to the next. Then the
 // conditional (R | S | d) = rows of U (L^T, L^-1 H_fs, L^-1 g_f) and the update matrix (Schur
 // complement, upper, and reduced gradient) for the parent. False if not positive definite.
-// One later row i of a frontal matrix through the Updates of a panel of pn rows of U (pivot):
-// from the row's tile boundary to the end of the padded row.
+// One later row i of a frontal matrix through the Updates of n rows of U (P[0 ... n), a panel
+// or every frontal row): from the row's tile boundary to the end of the padded row.
 template <int LD>
-FGC_INLINE void later_row_update(T (*H)[LD], const T (*pivot)[LD], int pn, int i, int end) {
-    T u[TILE];
-    for (int k = 0; k < pn; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=4
-        u[k] = pivot[k][i];
-    }
+FGC_INLINE void later_row_update(T (*H)[LD], const T (*P)[LD], int n, int i, int end) {
     for (int c0 = i - i % TILE; c0 < end; c0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=8
 #pragma HLS PIPELINE
         T h[TILE];
         for (int t = 0; t < TILE; ++t) h[t] = H[i][c0 + t];
-        for (int k = 0; k < pn; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=4
-            for (int t = 0; t < TILE; ++t) h[t] -= u[k] * pivot[k][c0 + t];
+        for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+            const T u = P[k][i];
+            for (int t = 0; t < TILE; ++t) h[t] -= u * P[k][c0 + t];
         }
         for (int t = 0; t < TILE; ++t) H[i][c0 + t] = h[t];
     }
+}
+
+// Rows i0 ... i1 - 1 through the Updates of n rows of U (P): one row at a time up to a tile
+// boundary, then TILE rows at a time (they share a start column: TILE independent accumulator
+// chains instead of one), then the rest. Every entry takes the Updates k = 0 ... n - 1 in order,
+// exactly as one row at a time would (bit for bit).
+template <int LD>
+FGC_INLINE void later_rows_update(T (*H)[LD], const T (*P)[LD], int n, int i0, int i1,
+                                  int end) {
+    int i = i0;
+    for (; i < i1 && i % TILE != 0; ++i) later_row_update<LD>(H, P, n, i, end);
+    for (; i + TILE <= i1; i += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=7
+        for (int c0 = i; c0 < end; c0 += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+            T h[TILE][TILE];
+            for (int r = 0; r < TILE; ++r) {
+                for (int t = 0; t < TILE; ++t) h[r][t] = H[i + r][c0 + t];
+            }
+            for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+                for (int r = 0; r < TILE; ++r) {
+                    const T u = P[k][i + r];
+                    for (int t = 0; t < TILE; ++t) h[r][t] -= u * P[k][c0 + t];
+                }
+            }
+            for (int r = 0; r < TILE; ++r) {
+                for (int t = 0; t < TILE; ++t) H[i + r][c0 + t] = h[r][t];
+            }
+        }
+    }
+    for (; i < i1; ++i) later_row_update<LD>(H, P, n, i, end);
 }
 
 template <int LD>
@@ -3364,38 +3392,15 @@ bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
                 }
             }
         }
-        // the later rows through the panel's Updates: one row at a time up to a tile boundary,
-        // then TILE rows at a time (they share a start column; TILE independent accumulator
-        // chains instead of one: on a 594-column step this loop is the factorisation's time),
-        // then the rest. Every entry takes the same Updates in the same order as one row at a
-        // time, so the result is bit for bit the same.
-        int i = j + pn;
-        for (; i < w && i % TILE != 0; ++i) later_row_update<LD>(H, pivot, pn, i, end);
-        for (; i + TILE <= w; i += TILE) {
-#pragma HLS LOOP_TRIPCOUNT max=7
-            T u[TILE][TILE];
-            for (int r = 0; r < TILE; ++r) {
-                for (int k = 0; k < pn; ++k) u[r][k] = pivot[k][i + r];
-            }
-            for (int c0 = i; c0 < end; c0 += TILE) {
-#pragma HLS LOOP_TRIPCOUNT max=8
-                T h[TILE][TILE];
-                for (int r = 0; r < TILE; ++r) {
-                    for (int t = 0; t < TILE; ++t) h[r][t] = H[i + r][c0 + t];
-                }
-                for (int k = 0; k < pn; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=4
-                    for (int r = 0; r < TILE; ++r) {
-                        for (int t = 0; t < TILE; ++t) h[r][t] -= u[r][k] * pivot[k][c0 + t];
-                    }
-                }
-                for (int r = 0; r < TILE; ++r) {
-                    for (int t = 0; t < TILE; ++t) H[i + r][c0 + t] = h[r][t];
-                }
-            }
-        }
-        for (; i < w; ++i) later_row_update<LD>(H, pivot, pn, i, end);
+        // the frontal rows after the panel through its Updates (they are the next panels)
+        later_rows_update<LD>(H, pivot, pn, j + pn, f, end);
     }
+    // the separator rows through every frontal row's Updates in one pass (rows 0 ... f - 1 of H
+    // are U now): each entry takes the Updates k = 0 ... f - 1 in the order the panels would
+    // have applied them, bit for bit, but is read and written once instead of once per panel
+    // (on a wide step with few frontal columns the passes over the separator rows were the
+    // factorisation's time)
+    later_rows_update<LD>(H, H, f, f, w, end);
     // the largest |U_ic| of the frontal block, in TILE running maxima (a maximum does not depend
     // on the order it is taken in)
     T largest[TILE];
