@@ -517,7 +517,7 @@ def _cmd_run(args) -> int:
     timings: dict = {}
     if args.backend == "native":
         config = _native_config(args, program)
-        if not getattr(args, "quiet", False):
+        if not getattr(args, "quiet", False) and sys.stderr.isatty():
             print(f"fgc run: building or loading the native library "
                   f"({len(program.variables)} variables; a first build runs g++: seconds to "
                   "minutes for a large graph)…", file=sys.stderr, flush=True)
