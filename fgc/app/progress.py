@@ -3,9 +3,9 @@
 A backend calls the display with one record per accepted iteration (``iteration``, ``error``,
 ``lambda`` and, where the backend knows it, ``relative_decrease``). Every record is kept (the
 JSON log's ``progress``: the same fields plus ``elapsed_seconds``); nothing is printed until the
-solve has run for ``delay`` seconds, so a solve of a few milliseconds stays silent. After that
-one line per iteration goes to stderr: on a terminal it overwrites itself (``\\r``, cleared at
-the end), otherwise whole lines at most one every ``interval`` seconds (plus the last). The line
+solve has run for ``delay`` seconds (1 s on a terminal, 2 s otherwise), so a short solve stays
+silent. After that one line per iteration goes to stderr: on a terminal it overwrites itself
+(``\\r``, cleared at the end), otherwise whole lines at most one every ``interval`` seconds (plus the last). The line
 holds the iteration, the error, LM's damping, the elapsed time and an estimate of what is left:
 at most the remaining iterations (``max_iterations``) at the mean time per iteration so far,
 which is an upper bound (a solve usually converges before its iteration limit).
@@ -22,7 +22,8 @@ import sys
 import time
 from typing import TextIO
 
-DELAY_S = 1.0
+DELAY_S = 1.0  # on a terminal
+PLAIN_DELAY_S = 2.0  # plain lines (a log, a pipe): only solves that are clearly long
 INTERVAL_S = 1.0
 
 
@@ -30,14 +31,15 @@ class Progress:
     """A progress display for one solve (module docstring); callable with a record."""
 
     def __init__(self, label: str, max_iterations: int, show: bool = True,
-                 stream: TextIO | None = None, delay: float = DELAY_S,
+                 stream: TextIO | None = None, delay: float | None = None,
                  interval: float = INTERVAL_S) -> None:
         self.label = label
         self.max_iterations = max(1, int(max_iterations))
         self.show = show
         self.stream = stream if stream is not None else sys.stderr
         self.tty = bool(getattr(self.stream, "isatty", lambda: False)())
-        self.delay, self.interval = delay, interval
+        self.delay = delay if delay is not None else (DELAY_S if self.tty else PLAIN_DELAY_S)
+        self.interval = interval
         self.records: list[dict] = []
         self.t0 = time.perf_counter()
         self._printed_at: float | None = None
