@@ -5,10 +5,10 @@ A backend calls the display with one record per accepted iteration (``iteration`
 JSON log's ``progress``: the same fields plus ``elapsed_seconds``); nothing is printed until the
 solve has run for ``delay`` seconds (1 s on a terminal, 2 s otherwise), so a short solve stays
 silent. After that one line per iteration goes to stderr: on a terminal it overwrites itself
-(``\\r``, cleared at the end), otherwise whole lines at most one every ``interval`` seconds (plus the last). The line
-holds the iteration, the error, LM's damping, the elapsed time and an estimate of what is left:
-at most the remaining iterations (``max_iterations``) at the mean time per iteration so far,
-which is an upper bound (a solve usually converges before its iteration limit).
+(``\\r``, cleared at the end), otherwise whole lines at most one every ``interval`` seconds
+(plus the last). The line holds the iteration, the error, LM's damping, the elapsed time and an
+estimate of what is left: at most the remaining iterations (``max_iterations``) at the mean time
+per iteration so far, an upper bound (a solve usually converges before its iteration limit).
 
     display = Progress("fgc run w10000.graph", max_iterations=100)
     result = native.run(program, data, progress=display)
