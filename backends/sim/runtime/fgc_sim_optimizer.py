@@ -231,9 +231,10 @@ def optimize(problem, opts):
         change = max(abs(cost - new), info) / cost if cost > 0 else 0.0
         x, cost = x_new, new
         log.append(float(cost))
-        if problem.on_iteration is not None:
-            problem.on_iteration({"iteration": it, "error": float(cost), "lambda": float(mu),
-                                  "relative_decrease": float(change)})
+        hook = getattr(problem, "on_iteration", None)  # a batch Problem's (not a Window's)
+        if hook is not None:
+            hook({"iteration": it, "error": float(cost), "lambda": float(mu),
+                  "relative_decrease": float(change)})
         if cost <= opts["absolute_error_tol"]:
             return x, cost, it, mu, "converged", "absolute_error", log
         if change <= opts["relative_error_tol"]:
