@@ -184,3 +184,7 @@ def test_cli_simulate_logs_progress_and_quiet_prints_none(tmp_path, capsys):
     its = [r["iteration"] for r in report["progress"]]
     assert its and its == sorted(set(its)) and its[-1] <= report["iterations"]
     assert all(r["elapsed_seconds"] >= 0 and r["error"] >= 0 for r in report["progress"])
+    # verify's simulator solve is logged the same way
+    main(["-q", "verify", str(spec), "--json", str(out)])
+    report = json.loads(out.read_text())
+    assert report["progress"] and report["progress"][-1]["iteration"] <= report["iterations"]

@@ -453,7 +453,10 @@ class _WithProgress:
         return getattr(self._backend, name)
 
     def run(self, program, data, *rest, **options):
-        if not rest and "progress" not in options and not options.get("incremental"):
+        # a batch solve (out_dir, precision, config, in_process may be given by position)
+        batch = (len(rest) <= 4 and not options.get("incremental")
+                 and options.get("window") is None and "progress" not in options)
+        if batch:
             options["progress"] = self._display
         self._display.start()
         try:
