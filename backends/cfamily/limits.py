@@ -23,8 +23,9 @@ def check_limits(program: Program, config, error: type[Exception], backend: str,
                  config_name: str) -> None:
     """Raise ``error`` if ``program`` exceeds what ``config`` can build: its window, its widest
     elimination step, an incremental plan (both C++ backends run batch solves), a fixed-point
-    scalar without the ap_types headers."""
-    if program.max_variables > config.max_variables:
+    scalar without the ap_types headers. A bound of ``None`` (the native backend's default) is
+    no bound."""
+    if config.max_variables is not None and program.max_variables > config.max_variables:
         raise error(f"the Program's window of {program.max_variables} variables exceeds "
                     f"{backend}'s maximum of {config.max_variables} "
                     f"({config_name}.max_variables)")
@@ -32,7 +33,7 @@ def check_limits(program: Program, config, error: type[Exception], backend: str,
         raise error(f"{len(program.variables)} variables exceed the compiled maximum "
                     f"{program.max_variables}")
     widest = max(s.frontal_dim + s.separator_dim for s in program.schedule.steps)
-    if widest > config.max_step_columns:
+    if config.max_step_columns is not None and widest > config.max_step_columns:
         raise error(f"an elimination step has {widest} columns, more than {backend}'s "
                     f"{config.max_step_columns} ({config_name}.max_step_columns)")
     if program.schedule.incremental is not None:

@@ -107,6 +107,7 @@ def _factor_arrays(program: Program, var_index: dict, entering: list[int], steps
                    t_off: list[int]) -> list[IntTable]:
     block_of, data_off, a_off, gram_off, var_lists, colmaps = [], [], [], [], [], []
     data_pos = a_pos = gram_pos = 0
+    columns_of: dict[int, dict[int, int]] = {}  # per step: global tangent index → its column
     for f, step in zip(program.factors, entering, strict=True):
         block = program.blocks[f.block]
         block_of.append(f.block)
@@ -118,7 +119,10 @@ def _factor_arrays(program: Program, var_index: dict, entering: list[int], steps
         gram_pos += (sum(block.variable_dims) + 1) * (sum(block.variable_dims) + 2) // 2
         variables = [var_index[k] for k in f.keys]
         var_lists.append(variables)
-        where = {g: c for c, g in enumerate(_step_columns(steps[step], var_index, t_off))}
+        if step not in columns_of:
+            columns_of[step] = {g: c for c, g in enumerate(_step_columns(steps[step], var_index,
+                                                                         t_off))}
+        where = columns_of[step]
         colmaps.append([where[g] for v in variables for g in range(t_off[v], t_off[v + 1])])
     return [IntTable("FACTOR_BLOCK", tuple(block_of)),
             IntTable("FACTOR_DATA_OFF", (*data_off, data_pos)),

@@ -60,8 +60,10 @@ class NativeConfig(scalars.ScalarTypes):
       ``-ffp-contract=off -mno-fma`` where AVX-512 is on, so with ``-mno-fma`` the Makefile
       checks the library (``objdump``) and builds it again with ``-mno-avx512f`` if it holds
       any fused multiply-add. Set ``()`` to build with ``cxxflags`` alone.
-    - ``max_variables`` / ``max_step_columns``: the largest window and the widest elimination
-      step accepted; larger Programs fail at emit time.
+    - ``max_variables`` / ``max_step_columns``: optional bounds on the window and on the widest
+      elimination step, for a build that must stay within a size (a hardware-like budget);
+      ``None`` (the default) accepts any size: the kernel's buffers are sized from the Program
+      (its tables' widths and counts), so a CPU build has no limit of its own.
     LM's limits (``lambda_upper_bound``, ``absolute_error_tol``, ``mu_min``) are the Program's
     (:class:`fgc.ir.program.SolverConfig`), as for every backend.
     """
@@ -73,8 +75,8 @@ class NativeConfig(scalars.ScalarTypes):
     cxxflags: tuple[str, ...] = ("-std=c++17", "-O2", "-ffp-contract=off", "-Wall", "-Wextra",
                                  "-Werror", "-Wno-unknown-pragmas")
     host_flags: tuple[str, ...] = field(default_factory=lambda: host_flags())
-    max_variables: int = 8192
-    max_step_columns: int = 512
+    max_variables: int | None = None
+    max_step_columns: int | None = None
 
     def check(self) -> None:
         """Raise :class:`NativeConfigError` naming the first invalid option."""
@@ -92,16 +94,12 @@ class NativeConfig(scalars.ScalarTypes):
         if self.lanes is not None and self.lanes not in (1, 2, 4, 8, 16):
             raise NativeConfigError(f"lanes must be 1, 2, 4, 8 or 16, got {self.lanes}")
         for name in ("max_variables", "max_step_columns"):
-            if int(getattr(self, name)) < 1:
+            if getattr(self, name) is not None and int(getattr(self, name)) < 1:
                 raise NativeConfigError(f"{name} must be ≥ 1, got {getattr(self, name)}")
         for flag in (self.cxx, *self.cxxflags, *self.host_flags):
             if not re.match(r"^[A-Za-z0-9_+=./-]+$", flag):
                 raise NativeConfigError(f"compiler option {flag!r} has characters a Makefile "
                                         "would interpret")
-
-
-
-
 
     @staticmethod
     def template_dir() -> Path:

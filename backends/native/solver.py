@@ -18,6 +18,7 @@ import hashlib
 import os
 import shutil
 import tempfile
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -45,6 +46,9 @@ from fgc_backends.native.config import NativeConfig, NativeConfigError
 from fgc_backends.native.emitter import NativeProject, emit
 
 _INTS = np.ctypeslib.ndpointer(dtype=np.int32, flags="C_CONTIGUOUS")
+# fgc_set_progress's hook: (iteration, cost, damping for the next iteration, relative decrease)
+_PROGRESS = ctypes.CFUNCTYPE(None, ctypes.c_int, ctypes.c_double, ctypes.c_double,
+                             ctypes.c_double)
 _LOADED: dict[str, NativeSolver] = {}
 
 
@@ -124,10 +128,29 @@ class NativeSolver:
         d = np.ascontiguousarray(np.concatenate(data.factors), dtype=np.float64)
         return x, d
 
-    def solve(self, x: np.ndarray, d: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Run on flat arrays (from :meth:`flatten`); returns (x_out, errors, info), new arrays."""
-        self._run(_address(x, self.n_x, "x"), _address(d, self.n_data, "the factor data"),
-                  *self._outputs)
+    def solve(self, x: np.ndarray, d: np.ndarray, progress=None
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Run on flat arrays (from :meth:`flatten`); returns (x_out, errors, info), new arrays.
+
+        ``progress`` (optional) is called after each accepted iteration with a dict:
+        ``iteration``, ``error`` (the cost after it), ``lambda`` (LM's damping for the next
+        iteration) and ``relative_decrease``; without it the kernel runs with no hook."""
+        x_at, d_at = _address(x, self.n_x, "x"), _address(d, self.n_data, "the factor data")
+        if progress is None:
+            self._run(x_at, d_at, *self._outputs)
+        else:
+            def hook(it: int, cost: float, mu: float, change: float) -> None:
+                progress({"iteration": it, "error": cost, "lambda": mu,
+                          "relative_decrease": change})
+
+            setter = self.library.fgc_set_progress
+            setter.argtypes, setter.restype = [_PROGRESS], None
+            c_hook = _PROGRESS(hook)  # kept alive until the hook is cleared below
+            setter(c_hook)
+            try:
+                self._run(x_at, d_at, *self._outputs)
+            finally:
+                setter(_PROGRESS())
         return self._out.copy(), self._errors.copy(), self._info.copy()
 
     def probe(self, x: np.ndarray, d: np.ndarray) -> tuple[float, float]:
@@ -163,11 +186,12 @@ class NativeSolver:
                               self._rows_out.__array_interface__["data"][0])
         return self._rows_out.copy()
 
-    def run(self, data: ProblemData) -> HlsResult:
-        """Solve ``data``; the result carries the host-side float32 verdict
+    def run(self, data: ProblemData, progress=None) -> HlsResult:
+        """Solve ``data`` (``progress``: as in :meth:`solve`); the result carries the host-side
+        float32 verdict
         (:func:`fgc_backends.cfamily.results.judge_precision`: a float build that cannot place the
         state within its noise says "failed", reason "precision_limit", never "converged")."""
-        x, errors, info = self.solve(*self.flatten(data))
+        x, errors, info = self.solve(*self.flatten(data), progress=progress)
         return judge_precision(self.program, data,
                                result_from_arrays(self.program, x, errors, *info),
                                self.project.config.scalar)
@@ -259,9 +283,34 @@ def _build(program: Program, config: NativeConfig, folder: Path, key: str) -> Na
                          config)
 
 
-def run(program: Program, data: ProblemData, config: NativeConfig | None = None) -> HlsResult:
+def run(program: Program, data: ProblemData, config: NativeConfig | None = None,
+        progress=None, timings: dict | None = None) -> HlsResult:
     """Solve ``data`` with the native build of ``program`` (default: the Program's precision).
 
     Like the simulator's result: ``values`` are fgc values (Pose3, …) by Program key and
-    ``storage`` the raw arrays (:meth:`NativeSolver.run` returns the arrays as ``values``)."""
-    return keyed(load(program, config).run(data), program)
+    ``storage`` the raw arrays (:meth:`NativeSolver.run` returns the arrays as ``values``).
+    ``progress``: called after each iteration (:meth:`NativeSolver.solve`); if it has a
+    ``start()`` method (:class:`fgc.app.progress.Progress`) that is called once the library is
+    loaded, just before the solve. ``timings`` (a
+    dict, optional) receives ``build_seconds`` (emit + g++ on a first run, else finding the
+    cached library), ``load_seconds`` (ctypes loading it; 0 when this process has it already),
+    ``solve_seconds`` (the solve call alone) and ``built`` (whether g++ ran)."""
+    t0 = time.perf_counter()
+    key = project_key(program, config or default_config(program))
+    loaded = key in _LOADED
+    cached = loaded or (cache_dir() / "native" / key / f"lib{identifier(program.name)}.so"
+                        ).is_file()
+    solver = load(program, config)
+    t1 = time.perf_counter()
+    if progress is not None and callable(getattr(progress, "start", None)):
+        progress.start()  # a display's clock times the solve, not the build before it
+    result = solver.run(data, progress)
+    t2 = time.perf_counter()
+    if timings is not None:
+        # load() builds (if needed) and loads in one call: a cached library's share is its
+        # loading, a first run's is mostly g++
+        # (finding a cached library includes its content hash over the Program's JSON)
+        timings.update({"built": not cached, "build_seconds": 0.0 if cached else t1 - t0,
+                        "load_seconds": 0.0 if loaded else (t1 - t0 if cached else 0.0),
+                        "solve_seconds": t2 - t1})
+    return keyed(result, program)

@@ -430,6 +430,50 @@ def _filename(exc: OSError) -> str:
     return f" ({exc.filename})" if getattr(exc, "filename", None) else ""
 
 
+SIM_LARGE_VARIABLES = 2000  # above this, the simulator says what it is before it starts
+
+
+def _progress(args, command: str, program, simulator: bool = False):
+    """The per-iteration progress display of a solve (fgc.app.progress): stderr unless -q.
+    With ``simulator``, a large Program gets a note first: the simulator steps every
+    elimination step in NumPy (the accelerator's model, not a fast solver)."""
+    from fgc.app.progress import Progress
+
+    quiet = getattr(args, "quiet", False)
+    if simulator and not quiet and len(program.variables) > SIM_LARGE_VARIABLES:
+        widest = max(s.frontal_dim + s.separator_dim for s in program.schedule.steps)
+        print(f"fgc {command}: {len(program.variables)} variables, "
+              f"{len(program.schedule.steps)} elimination steps (widest {widest} columns) "
+              "stepped one by one in NumPy by the accelerator simulator: expect seconds to "
+              "minutes per iteration (each iteration's time and an estimate of the rest "
+              "follow); `fgc run --backend native` solves it in compiled code",
+              file=sys.stderr, flush=True)
+    return Progress(f"fgc {command}", program.solver.max_iterations, show=not quiet)
+
+
+class _WithProgress:
+    """The simulator backend with a progress display on its batch solves (for the reports
+    that take the backend module and call its ``run``)."""
+
+    def __init__(self, backend, display) -> None:
+        self._backend, self._display = backend, display
+
+    def __getattr__(self, name: str):
+        return getattr(self._backend, name)
+
+    def run(self, program, data, *rest, **options):
+        # a batch solve (out_dir, precision, config, in_process may be given by position)
+        batch = (len(rest) <= 4 and not options.get("incremental")
+                 and options.get("window") is None and "progress" not in options)
+        if batch:
+            options["progress"] = self._display
+        self._display.start()
+        try:
+            return self._backend.run(program, data, *rest, **options)
+        finally:
+            self._display.finish()
+
+
 def _cmd_simulate(args) -> int:
     from fgc.app.run_report import simulate_report
 
@@ -442,7 +486,9 @@ def _cmd_simulate(args) -> int:
         return _cmd_stream(args)
     graph, program, data = _compile(args, "float32")
     try:
-        report = simulate_report(graph, program, data, _backend("sim"), plot_dir=args.plot,
+        display = _progress(args, f"simulate {args.spec}", program, simulator=True)
+        report = simulate_report(graph, program, data, _WithProgress(_backend("sim"), display),
+                                 plot_dir=args.plot,
                                  plan_options=_plan_options(args, program))
     except OSError as exc:
         if not args.plot or not str(getattr(exc, "filename", "")).startswith(args.plot):
@@ -451,6 +497,7 @@ def _cmd_simulate(args) -> int:
                        f"{exc.strerror or exc}{_filename(exc)}") from None
     _print(args, report.pop("summary"))
     _estimates_out(args, graph, report, report.pop("_result_values"))
+    report["progress"] = display.records
     _write_json(args.json, report)
     return EXIT_OK if report["status"] == "converged" else EXIT_FAILED
 
@@ -461,7 +508,9 @@ def _cmd_verify(args) -> int:
     if _streaming(args):
         return _cmd_verify_stream(args)
     graph, program, data = _compile(args, "float64")
-    report = verify_report(graph, program, data, _backend("sim"))
+    display = _progress(args, f"verify {args.spec}", program, simulator=True)
+    report = verify_report(graph, program, data, _WithProgress(_backend("sim"), display))
+    report["progress"] = display.records
     _print(args, report.pop("summary"),
            f"fgc verify {args.spec}: {'PASSED' if report['passed'] else 'FAILED'}")
     _estimates_out(args, graph, report, report.pop("_result_values"))
@@ -476,8 +525,16 @@ def _cmd_run(args) -> int:
     import time
 
     t0 = time.perf_counter()
+    display = _progress(args, f"run {args.spec}", program, simulator=args.backend == "sim")
+    timings: dict = {}
     if args.backend == "native":
-        result = _backend("native").run(program, data, _native_config(args, program))
+        config = _native_config(args, program)
+        if not getattr(args, "quiet", False) and sys.stderr.isatty():
+            print(f"fgc run: building or loading the native library "
+                  f"({len(program.variables)} variables; a first build runs g++: seconds to "
+                  "minutes for a large graph)…", file=sys.stderr, flush=True)
+        result = _backend("native").run(program, data, config, progress=display,
+                                        timings=timings)
     elif args.backend == "hls":  # the accelerator's C simulation (make csim), g++ on this host
         result = _backend("hls").run(program, data, _hls_config(args, program))
     else:
@@ -485,7 +542,9 @@ def _cmd_run(args) -> int:
             raise UsageError("fgc run: --scalar applies to --backend native or hls, --part to "
                              "--backend hls; the simulator runs float32 or float64 (--precision)")
         _refuse_hls_design(args, "sim")
-        result = _backend("sim").run(program, data)
+        result = _backend("sim").run(program, data, progress=display)
+        timings = {"setup_seconds": result.setup_seconds, "solve_seconds": result.solve_seconds}
+    display.finish()
     status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
     from fgc.app.run_report import (
@@ -496,19 +555,40 @@ def _cmd_run(args) -> int:
     )
 
     require_finite_start(graph, result)
+    solve_s = timings.get("solve_seconds", seconds)
     report = {"backend": args.backend, "status": status, "reason": result.reason,
-              "final_error": final, "iterations": iters, "solve_seconds": seconds,
+              "final_error": final, "iterations": iters, "solve_seconds": solve_s,
+              **{k: v for k, v in timings.items() if k != "solve_seconds"},
+              "total_seconds": seconds, "progress": display.records,
               "final_error_float64": float64_error(graph, result.values),
               "precision": program.solver.precision}
     lines = [f"fgc run {args.spec} ({args.backend}): {status_text(status, result.reason)}, "
              f"{iters} iterations, final error {final_error_text(report)}, "
-             f"{seconds * 1e3:.3f} ms (build/load included on a first run)"]
+             f"{_run_times(args.backend, solve_s, timings, seconds)}"]
     if status != "converged" and result.message:
         lines.append(f"fgc run: not converged: {result.message}")
     _print(args, lines)
     _estimates_out(args, graph, report, result.values)  # fgc values by Program key
     _write_json(args.json, report)
     return EXIT_OK if status == "converged" else EXIT_FAILED
+
+
+def _run_times(backend: str, solve_s: float, timings: dict, total_s: float) -> str:
+    """The solve's time, with what the build / load / set-up took beside it."""
+    if backend == "native":
+        if timings.get("built"):
+            extra = ("native library built (emit + g++) and loaded in "
+                     f"{timings['build_seconds']:.2f} s")
+        elif timings.get("load_seconds"):
+            extra = ("cached native library found and loaded in "
+                     f"{timings['load_seconds'] * 1e3:.1f} ms")
+        else:
+            extra = "native library already loaded"
+        return f"solve {solve_s * 1e3:.3f} ms ({extra})"
+    if backend == "sim":
+        return (f"solve {solve_s * 1e3:.3f} ms (simulator emit, data and set-up "
+                f"{(total_s - solve_s) * 1e3:.1f} ms)")
+    return f"{total_s * 1e3:.3f} ms (emit, make csim build and C simulation run)"
 
 
 def _stream_setup(args, precision_default: str):
@@ -581,8 +661,14 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
     else:
         pricer = streaming.UpdatePricer(graph, program, window)
     priced: list = []
+    builds = {"seconds": 0.0, "since": None}  # building the template windows (g++ or cache)
 
     def progress(update) -> None:
+        if builds["since"] is not None:  # the first update after a build: that build's time
+            since = time.perf_counter() - builds["since"]
+            seconds = update.seconds if update.seconds == update.seconds else 0.0
+            builds["seconds"] += max(0.0, since - seconds)
+            builds["since"] = None
         online.update(update.newest(program))
         price = pricer.price(update)
         priced.append(price.as_dict() if hls else price)
@@ -603,12 +689,15 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
               f"{_newest_text(update, program)}", flush=True)
 
     def building(size, index, count) -> None:
+        builds["since"] = time.perf_counter()
         if not quiet:
             print(f"  compiling the {who}'s {size}-keyframe template window ({index + 1} of "
                   f"{count}; built once, reused by every update of that size)", flush=True)
 
+    started = time.perf_counter()
     result = streaming.run_stream(program, data, window, progress, progress_build=building,
                                   sp=sp, runner=runner)
+    stream_wall = time.perf_counter() - started
     from fgc.app.run_report import require_finite_start
 
     require_finite_start(graph, result)
@@ -622,7 +711,8 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
               "reason": result.reason, "iterations": result.iterations,
               "backend": backend, "solved_by": who, "model_estimate": priced,
               f"{timed}_update_time": times,
-              "accuracy_vs_batch_optimum": acc,
+              "accuracy_vs_batch_optimum": acc, "wall_seconds": stream_wall,
+              "build_seconds": builds["seconds"],
               "updates": [{k: v for k, v in u.items() if k != "values"}
                           for u in result.updates]}
     ate = acc.get("final", {}).get("translation", {})
@@ -637,6 +727,10 @@ def _cmd_stream(args, precision_default: str = "float64") -> int:
             f"vs batch optimum: {ate_text}")
     lines = [head, f"  largest tangent-space distance from the batch optimum "
                    f"{acc['max_state_distance']:.3g} (final estimate)"]
+    if runs == "native" and builds["seconds"] > 0.05 * stream_wall:  # the build was the cost
+        lines.append(f"  wall time {stream_wall:.1f} s, of which {builds['seconds']:.1f} s "
+                     "building or loading the native library's template window(s) (built once "
+                     "per design: a later run finds them in the cache)")
     model = [p["latency_ms"] for p in priced if p]
     if on_chip:
         lines.append(f"  accelerator per update (the on-chip design priced on its plan, model "

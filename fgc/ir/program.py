@@ -240,6 +240,12 @@ class Program:
 
     def to_json(self) -> str:
         """Canonical JSON (sorted keys): equal Programs give byte-identical text."""
+        return self._canonical_json
+
+    @functools.cached_property
+    def _canonical_json(self) -> str:
+        # once per Program: on a 10,000-pose graph to_dict takes seconds, and the fingerprint,
+        # the native cache key and --out each want it
         return json.dumps(self.to_dict(), indent=1, sort_keys=True) + "\n"
 
     @classmethod
@@ -287,7 +293,7 @@ class Program:
         kernels, the elimination orderings and schedule, the storage plan and every solver
         option (the Program's canonical JSON without its name). Same spec → same
         fingerprint."""
-        d = self.to_dict()
+        d = json.loads(self.to_json())  # the same JSON text as to_dict()'s, from the cache
         d.pop("name")
         return _digest(d)
 

@@ -37,6 +37,7 @@ class Problem:
         self.spec, self.lib, self.dtype = spec, lib, numpy.dtype(dtype)
         self.les_dtype = les_dtype(self.dtype, spec["solver"]["linear_precision"])
         self.singular = None  # the last SingularError of an elimination
+        self.on_iteration = None  # a batch solve's per-iteration callback (solve's progress)
         variables, factors = data
         dims, storage = spec["variable_dims"], spec["variable_storage"]
         _check_variables(variables, storage, lib.runtime.SimDataError)
@@ -230,6 +231,10 @@ def optimize(problem, opts):
         change = max(abs(cost - new), info) / cost if cost > 0 else 0.0
         x, cost = x_new, new
         log.append(float(cost))
+        hook = getattr(problem, "on_iteration", None)  # a batch Problem's (not a Window's)
+        if hook is not None:
+            hook({"iteration": it, "error": float(cost), "lambda": float(mu),
+                  "relative_decrease": float(change)})
         if cost <= opts["absolute_error_tol"]:
             return x, cost, it, mu, "converged", "absolute_error", log
         if change <= opts["relative_error_tol"]:
@@ -291,7 +296,8 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
     incremental plan, or keyframe by keyframe in a fixed-lag ``window`` of keyframes), write the
     JSON result to ``result_path`` (if given) and return it as a dict (values: see
     ``keyed_values``). ``progress`` is called with each keyframe's update record as it
-    completes."""
+    completes (incremental and fixed-lag solves) or, in a batch solve, with each accepted
+    iteration's record (iteration, error, lambda, relative_decrease)."""
     opts = dict(spec["solver"])
     precision = precision or opts["precision"]
     if incremental and spec["incremental"] is None:
@@ -301,6 +307,8 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
     t0 = time.perf_counter()
     data = lib.runtime.read_data(data_path, spec["structure"])
     problem = Problem(spec, data, precision, lib)
+    if not incremental and window is None:
+        problem.on_iteration = progress
     t1 = time.perf_counter()
     x, status, reason, it, mu, log, updates = _optimize_all(problem, opts, incremental, window,
                                                             progress)

@@ -57,6 +57,12 @@ __all__ = [
 
 _CHAIN_ORDERINGS = ("serial", "two-ended")
 
+# ``auto`` tries nested dissection on general graphs up to this many variables only: its
+# bisections (Kernighan–Lin) took 20 s of a 10,000-pose graph's compile, and on large pose graphs
+# (long-range loop closures, no small separators) it lost to minimum degree anyway. Ask for
+# ``nested-dissection`` by name to have it at any size.
+AUTO_DISSECTION_MAX_VARIABLES = 5000
+
 
 def schedule(
     structure: GraphStructure,
@@ -69,11 +75,13 @@ def schedule(
 
     ``ordering`` is one of :data:`ORDERINGS`: ``auto`` means two-ended on chains and the better of
     minimum degree and nested dissection on general graphs (nested dissection only when it has no
-    more fill and fewer sequential levels). A sequence of variable keys is a custom ordering
-    (GTSAM's ``Ordering.CUSTOM``; recorded as ``"custom"``), e.g. to schedule GTSAM's COLAMD
-    order. ``incremental_k`` (chains only) adds an :class:`IncrementalPlan` re-eliminating the
-    newest k clusters per arrival, with batch updates at ``batch_every`` (a period or a list of
-    arrival indices). ``max_variables`` bounds the structure's size (the compiled window).
+    more fill and fewer sequential levels; tried up to :data:`AUTO_DISSECTION_MAX_VARIABLES`
+    variables, above which ``auto`` is minimum degree). A sequence of variable keys is a custom
+    ordering (GTSAM's ``Ordering.CUSTOM``; recorded as ``"custom"``), e.g. to schedule GTSAM's
+    COLAMD order. ``incremental_k`` (chains only) adds an :class:`IncrementalPlan`
+    re-eliminating the newest k clusters per arrival, with batch updates at ``batch_every`` (a
+    period or a list of arrival indices). ``max_variables`` bounds the structure's size (the
+    compiled window).
 
     Structure errors (:class:`StructureError`, naming the variable, component or step) are raised
     before any numerics; ``ValueError`` for an unknown ordering or bad plan arguments. The result
@@ -128,8 +136,9 @@ def _eliminate_with(
     if ordering == "natural":
         return ordering, eliminate(graph, supernodes(graph, natural_order(graph)))
     by_min_degree = eliminate(graph, supernodes(graph, min_degree_order(graph)))
-    if ordering == "min-degree":
-        return ordering, by_min_degree
+    if ordering == "min-degree" or (ordering == "auto"
+                                    and graph.size > AUTO_DISSECTION_MAX_VARIABLES):
+        return "min-degree", by_min_degree
     by_dissection = eliminate(graph, supernodes(graph, nested_dissection_order(graph)))
     if ordering == "nested-dissection" or _prefer_dissection(by_min_degree, by_dissection):
         return "nested-dissection", by_dissection

@@ -78,10 +78,14 @@ def min_degree_order(graph: VariableGraph, rank: Sequence[int] | None = None) ->
         eliminated[v] = True
         order.append(v)
         neighbours = sorted(adjacency[v])
+        clique = set(neighbours)
         for u in neighbours:
             adjacency[u].discard(v)
-            adjacency[u].update(w for w in neighbours if w != u)
-            degree[u] = sum(graph.dims[w] for w in adjacency[u])
+            added = clique - adjacency[u]
+            added.discard(u)
+            adjacency[u] |= added
+            # the same sum as over the whole new neighbourhood, kept up to date by difference
+            degree[u] += sum(graph.dims[w] for w in added) - graph.dims[v]
             heapq.heappush(heap, (rank[u], degree[u], u))
     return order
 

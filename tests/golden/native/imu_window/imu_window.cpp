@@ -3271,7 +3271,9 @@ FGC_INLINE bool store_step(T (*H)[LD], int w, int f, int s, T scale) {
     T* u = NF + STEP_NF_OFF[s];
     for (int a = 0; a < sw; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=30
-        for (int b = 0; b <= sw; ++b) {
+        // the upper triangle and the reduced gradient only: the parent reads nothing else (half
+        // the copy, which was a sixth of a wide-stepped solve's time)
+        for (int b = a; b <= sw; ++b) {
 #pragma HLS LOOP_TRIPCOUNT max=30
             u[a * (sw + 1) + b] = H[f + a][f + b];
         }
@@ -3285,6 +3287,56 @@ FGC_INLINE bool store_step(T (*H)[LD], int w, int f, int s, T scale) {
 // each Evaluate one row of U and Update the rows after it, streaming to the next. Then the
 // conditional (R | S | d) = rows of U (L^T, L^-1 H_fs, L^-1 g_f) and the update matrix (Schur
 // complement, upper, and reduced gradient) for the parent. False if not positive definite.
+// One later row i of a frontal matrix through the Updates of n rows of U (P[0 ... n), a panel
+// or every frontal row): from the row's tile boundary to the end of the padded row.
+template <int LD>
+FGC_INLINE void later_row_update(T (*H)[LD], const T (*P)[LD], int n, int i, int end) {
+    for (int c0 = i - i % TILE; c0 < end; c0 += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+#pragma HLS PIPELINE
+        T h[TILE];
+        for (int t = 0; t < TILE; ++t) h[t] = H[i][c0 + t];
+        for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+            const T u = P[k][i];
+            for (int t = 0; t < TILE; ++t) h[t] -= u * P[k][c0 + t];
+        }
+        for (int t = 0; t < TILE; ++t) H[i][c0 + t] = h[t];
+    }
+}
+
+// Rows i0 ... i1 - 1 through the Updates of n rows of U (P): one row at a time up to a tile
+// boundary, then TILE rows at a time (they share a start column: TILE independent accumulator
+// chains instead of one), then the rest. Every entry takes the Updates k = 0 ... n - 1 in order,
+// exactly as one row at a time would (bit for bit).
+template <int LD>
+FGC_INLINE void later_rows_update(T (*H)[LD], const T (*P)[LD], int n, int i0, int i1,
+                                  int end) {
+    int i = i0;
+    for (; i < i1 && i % TILE != 0; ++i) later_row_update<LD>(H, P, n, i, end);
+    for (; i + TILE <= i1; i += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=7
+        for (int c0 = i; c0 < end; c0 += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+            T h[TILE][TILE];
+            for (int r = 0; r < TILE; ++r) {
+                for (int t = 0; t < TILE; ++t) h[r][t] = H[i + r][c0 + t];
+            }
+            for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+                for (int r = 0; r < TILE; ++r) {
+                    const T u = P[k][i + r];
+                    for (int t = 0; t < TILE; ++t) h[r][t] -= u * P[k][c0 + t];
+                }
+            }
+            for (int r = 0; r < TILE; ++r) {
+                for (int t = 0; t < TILE; ++t) H[i + r][c0 + t] = h[r][t];
+            }
+        }
+    }
+    for (; i < i1; ++i) later_row_update<LD>(H, P, n, i, end);
+}
+
 template <int LD>
 bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
     // Rows are updated from the tile boundary at or left of the diagonal to the end of the
@@ -3342,26 +3394,15 @@ bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
                 }
             }
         }
-        for (int i = j + pn; i < w; ++i) {  // the later rows through the panel's Updates
-#pragma HLS LOOP_TRIPCOUNT max=30
-            T u[TILE];
-            for (int k = 0; k < pn; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=4
-                u[k] = pivot[k][i];
-            }
-            for (int c0 = i - i % TILE; c0 < end; c0 += TILE) {
-#pragma HLS LOOP_TRIPCOUNT max=8
-#pragma HLS PIPELINE
-                T h[TILE];
-                for (int t = 0; t < TILE; ++t) h[t] = H[i][c0 + t];
-                for (int k = 0; k < pn; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=4
-                    for (int t = 0; t < TILE; ++t) h[t] -= u[k] * pivot[k][c0 + t];
-                }
-                for (int t = 0; t < TILE; ++t) H[i][c0 + t] = h[t];
-            }
-        }
+        // the frontal rows after the panel through its Updates (they are the next panels)
+        later_rows_update<LD>(H, pivot, pn, j + pn, f, end);
     }
+    // the separator rows through every frontal row's Updates in one pass (rows 0 ... f - 1 of H
+    // are U now): each entry takes the Updates k = 0 ... f - 1 in the order the panels would
+    // have applied them, bit for bit, but is read and written once instead of once per panel
+    // (on a wide step with few frontal columns the passes over the separator rows were the
+    // factorisation's time)
+    later_rows_update<LD>(H, H, f, f, w, end);
     // the largest |U_ic| of the frontal block, in TILE running maxima (a maximum does not depend
     // on the order it is taken in)
     T largest[TILE];
@@ -3532,9 +3573,13 @@ bool eliminate_step(int s, T mu) {
     static T H[MAX_W][MAX_LD];  // upper triangle of H, gradient in column w, zero padding
 #pragma HLS ARRAY_PARTITION variable=H cyclic factor=20 dim=2
     const int w = STEP_W[s];
+    // zero the step's padded rows only: nothing reads a row past its padded end, and a zeroing
+    // of MAX_LD columns per row cost more than the factorisation of a graph's many narrow steps
+    // when one step is wide (sphere2500: 594 columns)
+    const int end = (w + TILE) / TILE * TILE;
     for (int i = 0; i < w; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=30
-        for (int c = 0; c < MAX_LD; ++c) H[i][c] = T(0);
+        for (int c = 0; c < end; ++c) H[i][c] = T(0);
     }
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=4
@@ -5036,6 +5081,10 @@ void optimize(T errors[2], int info[3]) {
         const T change = cost > T(0) ? T(moved / cost) : T(0);
         for (int i = 0; i < N_X; ++i) X[i] = X_TRIAL[i];
         cost = step.cost;
+        if (progress_hook != nullptr) {
+            progress_hook(it, static_cast<double>(cost), static_cast<double>(mu),
+                          static_cast<double>(change));
+        }
         if (cost <= ABS_TOL) {
             status = STATUS_CONVERGED;
             reason = REASON_ABSOLUTE_ERROR;
@@ -5063,6 +5112,9 @@ void host_inputs(const T* x_in, const T* data) {
 #endif
 
 }  // namespace
+
+void (*progress_hook)(int, double, double, double) = nullptr;
+
 }  // namespace fgc
 
 void imu_window_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],

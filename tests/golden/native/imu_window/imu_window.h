@@ -188,6 +188,13 @@ inline T so3_log_z(T r00, T r01, T r02, T r10, T r11, T r12, T r20, T r21, T r22
     return w[2];
 }
 
+#ifndef __SYNTHESIS__
+// Host only: called after each accepted iteration of the top function with (iteration, cost,
+// LM's damping for the next iteration, the relative decrease) when set; null (the default)
+// costs one test per iteration. fgc's progress display sets it through fgc_set_progress.
+extern void (*progress_hook)(int, double, double, double);
+#endif
+
 }  // namespace fgc
 
 // The accelerator: optimise the variables x_in (storage, VAR_X_OFF layout) given the factor data

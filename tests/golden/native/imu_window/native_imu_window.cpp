@@ -26,6 +26,12 @@ const char* fgc_structure() {
     return "c85ca38da7557b18";
 }
 
+// Set (or with null clear) the function called after each accepted iteration of fgc_run with
+// (iteration, cost, damping, relative decrease): fgc's progress display on long solves.
+void fgc_set_progress(void (*hook)(int, double, double, double)) {
+    fgc::progress_hook = hook;
+}
+
 // Sizes the caller's arrays must have: {N_VARIABLES, N_FACTORS, N_X, N_DATA}.
 void fgc_sizes(int out[4]) {
     out[0] = fgc::N_VARIABLES;

@@ -4104,9 +4104,10 @@ bool eliminate_step(int s, T root_mu) {
     static T W[MAX_ROWS][MAX_LD];
 #pragma HLS ARRAY_PARTITION variable=W cyclic factor=4 dim=2
     const int w = STEP_W[s], f = STEP_F[s], m = STEP_ROWS[s];
+    const int end = (w + TILE) / TILE * TILE;  // the padded row: nothing reads past it
     for (int i = 0; i < m; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=87
-        for (int c = 0; c < MAX_LD; ++c) W[i][c] = T(0);
+        for (int c = 0; c < end; ++c) W[i][c] = T(0);
     }
     int row = 0;
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
@@ -5388,6 +5389,10 @@ void optimize(T errors[2], int info[3]) {
         const T change = cost > T(0) ? T(moved / cost) : T(0);
         for (int i = 0; i < N_X; ++i) X[i] = X_TRIAL[i];
         cost = step.cost;
+        if (progress_hook != nullptr) {
+            progress_hook(it, static_cast<double>(cost), static_cast<double>(mu),
+                          static_cast<double>(change));
+        }
         if (cost <= ABS_TOL) {
             status = STATUS_CONVERGED;
             reason = REASON_ABSOLUTE_ERROR;
@@ -5416,6 +5421,9 @@ void host_inputs(const T* x_in, const T* data) {
 #endif
 
 }  // namespace
+
+void (*progress_hook)(int, double, double, double) = nullptr;
+
 }  // namespace fgc
 
 void lio_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
