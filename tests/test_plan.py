@@ -1,4 +1,4 @@
-"""Tests of the accelerator plan (backends/hls/plan.py) and its operator table (operators.py).
+"""Tests of the accelerator plan (backends/hls/plan/) and its operator table (operators.py).
 
 Cheap: a 3-pose Pose2 chain compiles in well under a second from a warm cache. The cost
 arithmetic is checked against hand computations written out below from the float32 table
@@ -17,8 +17,8 @@ from fgc.frontend.factors import BetweenFactor, PriorFactor
 from fgc.frontend.geometry import Pose2
 from fgc.ir.program import KernelText, SolverConfig
 from fgc_backends.cfamily.retract import retract_kernel, variable_class
-from fgc_backends.cost import operators
 from fgc_backends.cost.kernels import critical_path
+from fgc_backends.hls import operators
 from fgc_backends.hls.plan import (
     PART_DSP,
     AcceleratorPlan,

@@ -35,7 +35,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 from typing import Literal
 
-from .target import DEFAULT
+from fgc_backends.hls.target import DEFAULT
 
 
 def _doc(default, doc: str):
@@ -125,11 +125,11 @@ FLOAT64 = OperatorTable(
 class Device:
     """Capacity of the target FPGA (utilisation is reported against it)."""
 
-    name: str = _doc(DEFAULT.name, "device name (ZC706 board; the table in cost/target.py)")
-    dsp: int = _doc(DEFAULT.dsp, "DSP48E1 slices (cost/target.py)")
-    bram36: int = _doc(DEFAULT.bram36, "36 Kb block RAMs (cost/target.py)")
-    lut: int = _doc(DEFAULT.lut, "6-input LUTs (cost/target.py)")
-    ff: int = _doc(DEFAULT.ff, "flip-flops (cost/target.py)")
+    name: str = _doc(DEFAULT.name, "device name (ZC706 board; the table in hls/target.py)")
+    dsp: int = _doc(DEFAULT.dsp, "DSP48E1 slices (hls/target.py)")
+    bram36: int = _doc(DEFAULT.bram36, "36 Kb block RAMs (hls/target.py)")
+    lut: int = _doc(DEFAULT.lut, "6-input LUTs (hls/target.py)")
+    ff: int = _doc(DEFAULT.ff, "flip-flops (hls/target.py)")
     bram_bits: int = _doc(36_864, "bits per BRAM36 (36 Kb); a BRAM18 is half")
 
 

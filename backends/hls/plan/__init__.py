@@ -3,7 +3,7 @@
 :func:`build_plan` turns a :class:`fgc.ir.program.Program` and :class:`PlanOptions` (n_u Update
 units, #CPE, QR unit sets, operator ALLOCATION limits) into an :class:`AcceleratorPlan`: units
 with their allocated operators, memories, channels and *phases* of processes made of loops
-(trip count, II, depth, all derived from :mod:`fgc_backends.cost.operators`). Each piece of
+(trip count, II, depth, all derived from :mod:`fgc_backends.hls.operators`). Each piece of
 hardware is a unit of :mod:`fgc_backends.hls.units` (its loops, their pricing, its phases and
 header); the plan is their contributions. :func:`plan_cost` is nothing but the arithmetic of a
 plan (:mod:`.cost`).
@@ -21,7 +21,6 @@ what-if designs for the design space: :func:`emitted_options` says which.
 """
 
 # the model, loop rules and options first: the units (imported by .assemble) build on them
-from fgc_backends.cost.target import DEFAULT
 from fgc_backends.hls.plan.model import (
     BRAM18_BITS,
     LUTRAM_MAX_BITS,
@@ -37,6 +36,7 @@ from fgc_backends.hls.plan.model import (
     Process,
     Unit,
 )
+from fgc_backends.hls.target import DEFAULT
 
 from fgc_backends.hls.plan.loops import (  # isort: skip
     _assign,
@@ -62,7 +62,12 @@ from fgc_backends.hls.plan.options import (  # isort: skip
     PlanOptions,
     scalar_precision,
 )
-from fgc_backends.hls.plan.cost import phase_cycles, plan_cost, plan_power_w  # isort: skip
+from fgc_backends.hls.plan.cost import (  # isort: skip
+    merge_plans,
+    phase_cycles,
+    plan_cost,
+    plan_power_w,
+)
 from fgc_backends.hls.plan.assemble import PlanBuild, build_plan  # isort: skip
 from fgc_backends.hls.plan.report import (  # isort: skip
     EMITTED,
@@ -105,7 +110,7 @@ from fgc_backends.hls.units.state_update import (  # isort: skip
     state_update_phase,
 )
 
-# the default device (cost/target.py); PlanOptions.part selects the fit verdict's
+# the default device (hls/target.py); PlanOptions.part selects the fit verdict's
 PART = DEFAULT.name
 PART_DSP, PART_BRAM36, PART_LUT, PART_FF = DEFAULT.dsp, DEFAULT.bram36, DEFAULT.lut, DEFAULT.ff
 
@@ -118,7 +123,7 @@ __all__ = [
     "_sim_table", "_sizes", "_tables", "assemble_loops", "backsub_chunk_loops", "backsub_copies",
     "backsub_loops", "backsub_units", "build_plan", "commit_loops", "cpe_round_depth",
     "cpe_step_loops", "dot_loop", "emitted_options", "gradient_loops", "hessian_envelope",
-    "hgc_loops", "kernel_dot", "kernel_loop", "kernel_timing", "lm_control_phases",
+    "hgc_loops", "kernel_dot", "kernel_loop", "kernel_timing", "lm_control_phases", "merge_plans",
     "phase_cycles", "phase_group", "phase_groups", "plan_cost", "plan_groups", "plan_power_w",
     "plan_sizes", "plan_summary", "process_network", "qr_unit_loops", "raw_jacobian_words",
     "retract_datapath", "retract_loops", "rounding_noise_loops", "scalar_precision",

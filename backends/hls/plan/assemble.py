@@ -8,8 +8,8 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from fgc.ir.program import Program
-from fgc_backends.cost.operators import OperatorTable, table
 from fgc_backends.hls import units as unit_registry
+from fgc_backends.hls.operators import OperatorTable
 from fgc_backends.hls.plan.loops import _sizes, _tables, kernel_timing
 from fgc_backends.hls.plan.model import AcceleratorPlan, PlanError
 from fgc_backends.hls.plan.options import (
@@ -18,6 +18,7 @@ from fgc_backends.hls.plan.options import (
     JACOBIAN_STORAGE,
     PlanOptions,
 )
+from fgc_backends.hls.target import target_of
 
 
 @dataclass
@@ -80,7 +81,8 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     precision = opts.precision or program.solver.precision
     les_precision = opts.les_precision or (program.solver.les_precision if opts.precision is None
                                            else precision)
-    ctx = PlanBuild(program, opts, table(precision), table(les_precision))
+    target = target_of(opts.part, program.solver.clock_mhz)
+    ctx = PlanBuild(program, opts, target.ops(precision), target.ops(les_precision))
     for unit in unit_registry.REGISTRY:
         if unit.applies(program, opts):
             unit.build(ctx)

@@ -11,8 +11,9 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from fgc_backends.cost.params import CostParams
-from fgc_backends.cost.target import capacity
 from fgc_backends.hls.plan.model import AcceleratorPlan, Cost, Memory, Phase
 
 
@@ -45,13 +46,27 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
     channel_mems = tuple(Memory(ch.name, ch.depth * (2 if ch.kind == "pingpong" else 1), ch.width,
                                 2 if ch.kind == "pingpong" else 1) for ch in plan.channels)
     bram36 = sum(m.bram18 for m in plan.memories + channel_mems) / 2
-    device = capacity(plan.options.part)
+    device = plan.target.device
     over = tuple(name for name, used, cap in (("DSP", dsp, device.dsp),
                                               ("BRAM36", bram36, device.bram36),
                                               ("LUT", lut, device.lut), ("FF", ff, device.ff))
                  if used > cap)
     return Cost(cycles, per, linear, dsp, lut, ff, bram36, plan.clock_mhz, not over, over,
                 tuple(by_unit), sum(m.words for m in plan.memories), other)
+
+
+def merge_plans(plan: AcceleratorPlan, other: AcceleratorPlan | None = None,
+                memories: tuple[Memory, ...] = ()) -> AcceleratorPlan:
+    """One plan of a design made of ``plan``, a second accelerator ``other`` beside it (its
+    units, memories and channels, names prefixed ``batch_``; its phases are its own calls',
+    not this plan's iteration) and extra ``memories``: what :func:`plan_cost` prices as one
+    design (the on-chip stream's window and batch kernels)."""
+    units, mems, channels = plan.units, plan.memories + tuple(memories), plan.channels
+    if other is not None:
+        units += tuple(replace(u, name=f"batch_{u.name}") for u in other.units)
+        mems += tuple(replace(m, name=f"batch_{m.name}") for m in other.memories)
+        channels += tuple(replace(c, name=f"batch_{c.name}") for c in other.channels)
+    return replace(plan, units=units, memories=mems, channels=channels)
 
 
 def plan_power_w(cost: Cost) -> float:

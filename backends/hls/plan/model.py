@@ -15,7 +15,8 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from fgc.errors import FgcError
-from fgc_backends.cost.operators import OperatorTable
+from fgc_backends.hls.operators import OperatorTable
+from fgc_backends.hls.target import Target
 
 if TYPE_CHECKING:  # options import the model
     from fgc_backends.hls.plan.options import PlanOptions
@@ -126,6 +127,11 @@ class AcceleratorPlan:
     channels: tuple[Channel, ...]
     phases: tuple[Phase, ...]
     ops: OperatorTable = field(repr=False)
+
+    @property
+    def target(self) -> Target:
+        """The part (``options.part``) and clock this plan is priced for."""
+        return Target(self.options.part, self.clock_mhz)
 
     def unit(self, name: str) -> Unit:
         return next(u for u in self.units if u.name == name)

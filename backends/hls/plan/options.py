@@ -10,8 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from fgc.ir.program import Program
-from fgc_backends.cost.target import DEFAULT_PART
 from fgc_backends.hls.plan.model import PlanError
+from fgc_backends.hls.target import DEFAULT_PART
 
 # default ALLOCATION limits of the factor datapath, per kernel operator kind (design: the sim
 # model's factor pool, so both models share one datapath size)
@@ -62,7 +62,7 @@ class PlanOptions:
     # emitted in another scalar than the Program's sets them (for_config)
     precision: str | None = None
     les_precision: str | None = None
-    # the FPGA part whose device capacities the fit verdict uses (cost/target.py; an HLS
+    # the FPGA part whose device capacities the fit verdict uses (hls/target.py; an HLS
     # design's HlsConfig.part, which run_hls.tcl names)
     part: str = DEFAULT_PART
 

@@ -4,7 +4,6 @@ options the emitter builds and the emitted process network."""
 from __future__ import annotations
 
 from fgc.ir.program import Program
-from fgc_backends.cost.target import capacity
 from fgc_backends.hls.plan.assemble import build_plan
 from fgc_backends.hls.plan.cost import phase_cycles, plan_cost, plan_power_w
 from fgc_backends.hls.plan.model import AcceleratorPlan, Channel, Cost
@@ -30,7 +29,7 @@ def plan_summary(program: Program, iterations: int, options: PlanOptions | None 
     plan = build_plan(program, options)
     c = plan_cost(plan)
     k = max(1, int(iterations))
-    device = capacity(plan.options.part)
+    device = plan.target.device
     caps = {"dsp": device.dsp, "bram": device.bram36, "lut": device.lut, "ff": device.ff}
     res = {"dsp": c.dsp, "bram": c.bram36, "lut": c.lut, "ff": c.ff}
     power = plan_power_w(c)

@@ -14,6 +14,26 @@ def solver_memories(sizes, ops, memories) -> None:
     memories.append(Memory("nf", sizes["N_NF"], ops.word_bits, 1))
 
 
+def stream_memories(layout, t_bits: int, l_bits: int, batch_words: int) -> tuple[Memory, ...]:
+    """The memories the on-chip stream section adds to the window kernel
+    (``fgc_backends.hls.window``): the kept Bayes net's conditionals (R, S, d) and linearisation
+    points, the kept estimates, and with a batch kernel its estimates and conditionals
+    (``batch_words`` words a keyframe)."""
+    mems = []
+    if layout.kept:
+        n, kf, count = layout.kf_dim, layout.kf_words, layout.kept
+        mems += [Memory("kept_r", count * n * n, l_bits, 1),
+                 Memory("kept_s", count * n * n, l_bits, 1),
+                 Memory("kept_d", count * n, l_bits, 1),
+                 Memory("kept_points", 2 * count * kf, t_bits, 1),
+                 Memory("x_kept", count * kf, t_bits, 1)]
+    if layout.batch is not None:
+        b = layout.batch
+        mems += [Memory("batch_x", b.size * layout.kf_words, t_bits, 1),
+                 Memory("batch_cond", b.size * batch_words, l_bits, 1)]
+    return tuple(mems)
+
+
 def build(ctx) -> None:
     """X, X_TRIAL, G with DELTA (two banks) and DATA_BUF."""
     program, ops = ctx.program, ctx.ops

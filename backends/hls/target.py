@@ -1,7 +1,12 @@
-"""The target FPGA: one table of device capacities, read by the analytic cost model
-(``params.Device``), the accelerator plan's fit verdict (``hls.plan``), the HLS lint's DSP budget
-and, through ``HlsConfig.part``, ``run_hls.tcl``. The clock is ``SolverConfig.clock_mhz``
-(``HlsConfig.clock_ns`` must agree with it: ``hls.config.check_clock``).
+"""The target of a design: :class:`Target` — the FPGA part, looked up to its device's capacities
+and family, the clock, and the operator table at that part and clock (:meth:`Target.ops`).
+
+Every pricer reads the hardware through a Target: the accelerator plan (its operators, its fit
+verdict), the update and window models (through the plan), the HLS lint's DSP budget; the
+analytic cost model (``cost.params.Device``) takes its default device from :data:`DEFAULT`.
+The part comes from ``HlsConfig.part`` (``PlanOptions.part``; ``run_hls.tcl`` names it), the
+clock from the Program (``SolverConfig.clock_mhz``: the one source; ``HlsConfig.clock_ns``, when
+given, must agree with it: ``hls.config.check_clock``).
 
 Capacities are the AMD/Xilinx product tables' figures per device (Zynq-7000 SoC and Zynq
 UltraScale+ MPSoC product selection guides): DSP slices, 36 Kb block RAMs, LUTs, flip-flops.
@@ -15,6 +20,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from fgc.errors import FgcError
+from fgc_backends.hls import operators
+from fgc_backends.hls.operators import OperatorTable
 
 
 @dataclass(frozen=True)
@@ -66,3 +73,38 @@ def capacity(part: str) -> DeviceCapacity:
 
 
 DEFAULT = capacity(DEFAULT_PART)
+
+
+FAMILIES = {"xc7z": "7series", "xczu": "ultrascale+"}  # device name prefix -> part family
+
+
+@dataclass(frozen=True)
+class Target:
+    """One design's target: ``part`` (a part name whose device is in :data:`DEVICES`) at
+    ``clock_mhz``. ``device`` holds the capacities, ``family`` the part family the operator
+    table is keyed by."""
+
+    part: str = DEFAULT_PART
+    clock_mhz: float = 143.0
+
+    @property
+    def device(self) -> DeviceCapacity:
+        return capacity(self.part)
+
+    @property
+    def family(self) -> str:
+        name = self.device.name
+        return next(f for prefix, f in FAMILIES.items() if name.startswith(prefix))
+
+    def ops(self, precision: str) -> OperatorTable:
+        """The operator table of ``precision`` on this part at this clock."""
+        return operators.table(precision)
+
+
+def target_of(part: str, clock_mhz: float) -> Target:
+    """The :class:`Target` of ``part`` at ``clock_mhz``, refusing an unknown part
+    (:class:`UnknownPartError`) or a clock that is not positive."""
+    capacity(part)
+    if not float(clock_mhz) > 0:
+        raise UnknownPartError(f"clock {clock_mhz!r} MHz of part {part!r} must be positive")
+    return Target(part, float(clock_mhz))
