@@ -97,8 +97,8 @@ class Target:
         return next(f for prefix, f in FAMILIES.items() if name.startswith(prefix))
 
     def ops(self, precision: str) -> OperatorTable:
-        """The operator table of ``precision`` on this part at this clock."""
-        return operators.table(precision)
+        """The operator table of ``precision`` on this part's family at this clock."""
+        return operators.table(precision, self.family, self.clock_mhz)
 
 
 def target_of(part: str, clock_mhz: float) -> Target:

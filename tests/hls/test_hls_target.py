@@ -36,3 +36,38 @@ def test_the_programs_clock_is_the_designs_unless_a_period_is_given():
     check_clock(200.0, HlsConfig(clock_ns=5.0))
     with pytest.raises(Exception, match="clock mismatch"):
         check_clock(200.0, HlsConfig(clock_ns=7.0))
+
+
+def test_the_operator_table_follows_family_and_clock():
+    # ≤ 150 MHz: the stage counts of Vitis's generated cores (7-series the deeper binding)
+    slow = Target(DEFAULT_PART, 143.0).ops("float32")
+    assert (slow.add.latency, slow.mul.latency, slow.div.latency, slow.sqrt.latency) == \
+        (4, 3, 15, 15)
+    fast_fabric = Target("xczu9eg-ffvb1156-2-e", 143.0).ops("float32")
+    assert (fast_fabric.add.latency, fast_fabric.mul.latency, fast_fabric.div.latency) == \
+        (3, 2, 9)
+    # above 150 MHz: the core's maximum latencies (PG060)
+    hot = Target(DEFAULT_PART, 250.0).ops("float32")
+    assert (hot.add.latency, hot.mul.latency, hot.div.latency) == (11, 8, 28)
+    # and the plan prices with its target's table
+    program = chain(4, linear="qr")
+    a = build_plan(program)
+    b = build_plan(program, PlanOptions.of(program, part="xczu9eg-ffvb1156-2-e"))
+    assert a.ops.add.latency == 4 and b.ops.add.latency == 3
+    assert plan_cost(b).cycles < plan_cost(a).cycles
+
+
+def test_every_row_has_a_source_and_the_analytic_model_reads_the_same_table():
+    from fgc_backends.cost.params import FLOAT32 as MODEL32
+    from fgc_backends.hls import operators
+
+    for key, t in operators.TABLES.items():
+        for kind, op in t.entries():
+            assert op.source and op.status in ("documented", "assumed"), (key, kind)
+            if op.status == "documented" and "Vitis core name" in op.source:
+                assert "assumed" in op.note, (key, kind)  # the family/clock pairing
+    f32 = operators.table("float32")
+    assert (MODEL32.add.latency, MODEL32.mul.latency, MODEL32.div.latency) == \
+        (f32.add.latency, f32.mul.latency, f32.div.latency)
+    with pytest.raises(ValueError, match="family"):
+        operators.table("float32", "virtex2")

@@ -13,8 +13,7 @@ import math
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cfamily.tables import build_tables
-from fgc_backends.cost.params import OperatorCost
-from fgc_backends.cost.params import OperatorTable as SimTable
+from fgc_backends.cost.params import view
 from fgc_backends.hls.operators import OperatorTable
 from fgc_backends.hls.plan.model import PORTS, Loop, Process
 
@@ -170,9 +169,5 @@ def _assign(procs, sets, tag, li):
 
 
 def _sim_table(ops: OperatorTable):
-
-    def c(o):
-        return OperatorCost(latency=o.latency, dsp=o.dsp, lut=o.lut, ff=o.ff, ii=o.ii)
-
-    return SimTable(word_bits=ops.word_bits, add=c(ops.add), mul=c(ops.mul), div=c(ops.div),
-                    sqrt=c(ops.sqrt), trig=c(ops.sincos), special=c(ops.special))
+    """The critical-path walker's per-kind view of ``ops`` (``cost.params.view``)."""
+    return view(ops)
