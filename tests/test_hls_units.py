@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fgc_backends.hls.operators import table
+from fgc_backends.cost.operators import table
 
 INCLUDE = Path(__file__).resolve().parents[1] / "backends" / "hls" / "include"
 

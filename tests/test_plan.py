@@ -18,8 +18,8 @@ from fgc.frontend.factors import BetweenFactor, PriorFactor
 from fgc.frontend.geometry import Pose2
 from fgc.ir.program import KernelText, SolverConfig
 from fgc_backends.cfamily.retract import retract_kernel, variable_class
+from fgc_backends.cost import operators
 from fgc_backends.cost.kernels import critical_path
-from fgc_backends.hls import operators
 from fgc_backends.hls.plan import (
     PART_DSP,
     AcceleratorPlan,

@@ -8,7 +8,7 @@ at 143 MHz, the board and clock of both papers.
 Sources and assumptions, once (the per-field notes refer to them):
 
 - **[PG060]** the operators' latencies and resources are the HLS backend's one operator table
-  (``backends/hls/operators.py``: per part family, precision and clock, each row with its
+  (``backends/cost/operators.py``: per part family, precision and clock, each row with its
   source — Vitis core names, PG060's maximum latencies — or "assumed" with the reason);
   :func:`view` gives this model its six kinds. The defaults are the xc7z045's at 143 MHz.
 - **[HLS-math]** ``hls::sin``/``cos`` of the Vitis HLS math library: range reduction plus a
@@ -32,8 +32,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 from typing import Literal
 
-from fgc_backends.hls import operators
-from fgc_backends.hls.target import DEFAULT
+from . import operators
+from .target import DEFAULT
 
 
 def _doc(default, doc: str):
@@ -97,7 +97,7 @@ class OperatorTable:
 
 
 def view(ops: operators.OperatorTable) -> OperatorTable:
-    """This model's per-kind view of the one operator table (``backends/hls/operators.py``):
+    """This model's per-kind view of the one operator table (``backends/cost/operators.py``):
     its six kinds, ``trig`` being one sin/cos call."""
     def c(o):
         return OperatorCost(latency=o.latency, dsp=o.dsp, lut=o.lut, ff=o.ff, ii=o.ii)
@@ -116,11 +116,11 @@ FLOAT64 = view(operators.FLOAT64)
 class Device:
     """Capacity of the target FPGA (utilisation is reported against it)."""
 
-    name: str = _doc(DEFAULT.name, "device name (ZC706 board; the table in hls/target.py)")
-    dsp: int = _doc(DEFAULT.dsp, "DSP48E1 slices (hls/target.py)")
-    bram36: int = _doc(DEFAULT.bram36, "36 Kb block RAMs (hls/target.py)")
-    lut: int = _doc(DEFAULT.lut, "6-input LUTs (hls/target.py)")
-    ff: int = _doc(DEFAULT.ff, "flip-flops (hls/target.py)")
+    name: str = _doc(DEFAULT.name, "device name (ZC706 board; the table in cost/target.py)")
+    dsp: int = _doc(DEFAULT.dsp, "DSP48E1 slices (cost/target.py)")
+    bram36: int = _doc(DEFAULT.bram36, "36 Kb block RAMs (cost/target.py)")
+    lut: int = _doc(DEFAULT.lut, "6-input LUTs (cost/target.py)")
+    ff: int = _doc(DEFAULT.ff, "flip-flops (cost/target.py)")
     bram_bits: int = _doc(36_864, "bits per BRAM36 (36 Kb); a BRAM18 is half")
 
 

@@ -41,7 +41,7 @@ deliberately small C-like parser: function definitions and their parameters, cal
 - ``pipeline``: a ``PIPELINE`` loop (or function) holds only loops with constant bounds (start
   and end), which HLS unrolls completely;
 - ``dsp``: Σ over ``#pragma HLS ALLOCATION operation instances=<op> limit=<n>`` of n × the DSP of
-  one ``<op>`` (:mod:`fgc_backends.hls.operators`, by precision: ``f…``/``d…`` names, else the
+  one ``<op>`` (:mod:`fgc_backends.cost.operators`, by precision: ``f…``/``d…`` names, else the
   project's scalar) is at most the part's DSP count (``hls/target.py``; each function is counted
   as one hardware instance);
 - ``synthesis_macro``: no ``__SYNTHESIS__`` in a synthesised file (C simulation must compile the

@@ -58,8 +58,8 @@ def test_the_operator_table_follows_family_and_clock():
 
 
 def test_every_row_has_a_source_and_the_analytic_model_reads_the_same_table():
+    from fgc_backends.cost import operators
     from fgc_backends.cost.params import FLOAT32 as MODEL32
-    from fgc_backends.hls import operators
 
     for key, t in operators.TABLES.items():
         for kind, op in t.entries():

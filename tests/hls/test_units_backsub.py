@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from hls_programs import chain
 
-from fgc_backends.hls.operators import FLOAT32
+from fgc_backends.cost.operators import FLOAT32
 from fgc_backends.hls.plan import build_plan
 from fgc_backends.hls.units.backsub import backsub_loops
 

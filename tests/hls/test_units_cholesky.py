@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 from hls_programs import chain
 
-from fgc_backends.hls.operators import FLOAT32
+from fgc_backends.cost.operators import FLOAT32
 from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
 from fgc_backends.hls.units.cholesky import cpe_round_depth, cpe_step_loops
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from hls_programs import chain
 
-from fgc_backends.hls.operators import FLOAT32
+from fgc_backends.cost.operators import FLOAT32
 from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles
 from fgc_backends.hls.units.qr import qr_unit_loops, unit_sets_of
 

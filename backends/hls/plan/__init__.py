@@ -3,7 +3,7 @@
 :func:`build_plan` turns a :class:`fgc.ir.program.Program` and :class:`PlanOptions` (n_u Update
 units, #CPE, QR unit sets, operator ALLOCATION limits) into an :class:`AcceleratorPlan`: units
 with their allocated operators, memories, channels and *phases* of processes made of loops
-(trip count, II, depth, all derived from :mod:`fgc_backends.hls.operators`). Each piece of
+(trip count, II, depth, all derived from :mod:`fgc_backends.cost.operators`). Each piece of
 hardware is a unit of :mod:`fgc_backends.hls.units` (its loops, their pricing, its phases and
 header); the plan is their contributions. :func:`plan_cost` is nothing but the arithmetic of a
 plan (:mod:`.cost`).

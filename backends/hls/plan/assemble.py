@@ -8,8 +8,8 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from fgc.ir.program import Program
+from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls import units as unit_registry
-from fgc_backends.hls.operators import OperatorTable
 from fgc_backends.hls.plan.loops import _sizes, _tables, kernel_timing
 from fgc_backends.hls.plan.model import AcceleratorPlan, PlanError
 from fgc_backends.hls.plan.options import (

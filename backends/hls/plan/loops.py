@@ -2,7 +2,7 @@
 loop kinds (:func:`kernel_timing`) and the emitted tables' sizes the loops run over.
 
 Every II and depth here comes from the operator table the plan is built with
-(:mod:`fgc_backends.hls.operators`); the units (:mod:`fgc_backends.hls.units`) build their
+(:mod:`fgc_backends.cost.operators`); the units (:mod:`fgc_backends.hls.units`) build their
 loops from these rules.
 """
 
@@ -13,8 +13,8 @@ import math
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cfamily.tables import build_tables
+from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.cost.params import view
-from fgc_backends.hls.operators import OperatorTable
 from fgc_backends.hls.plan.model import PORTS, Loop, Process
 
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from fgc.errors import FgcError
-from fgc_backends.hls.operators import OperatorTable
+from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.target import Target
 
 if TYPE_CHECKING:  # options import the model

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-from fgc_backends.hls.operators import OperatorTable
+from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.plan.loops import _ported, _region_cycles, dot_loop, kernel_loop
 from fgc_backends.hls.plan.model import PORTS, Loop, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec

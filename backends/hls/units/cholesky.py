@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 from fgc_backends.cfamily.sparsity import TILE
-from fgc_backends.hls.operators import OperatorTable
+from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_dot, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.memories import solver_memories

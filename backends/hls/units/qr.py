@@ -8,8 +8,8 @@ import math
 
 import numpy as np
 
+from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.cost.structure import stacked_pattern
-from fgc_backends.hls.operators import OperatorTable
 from fgc_backends.hls.plan.cost import phase_cycles
 from fgc_backends.hls.plan.loops import _assign, _ported, _region_cycles, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit

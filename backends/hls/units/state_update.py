@@ -9,7 +9,7 @@ import math
 from fgc.ir.program import KernelText
 from fgc_backends.cfamily.retract import retract_kernel, variable_class
 from fgc_backends.cost.kernels import critical_path
-from fgc_backends.hls.operators import OperatorTable
+from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.plan.loops import _sim_table
 from fgc_backends.hls.plan.model import Loop, Phase, Process, Unit
 from fgc_backends.hls.plan.options import STATE_ALLOCATION

@@ -43,7 +43,7 @@ DSP/LUT/FF):
   synthesisable approximations with no published latency table: assumed.
 - **design**: fgc's Lie coefficients (series and closed form, one rolled Horner loop a unit).
 
-Before this table (issue 32): ``backends/cost/operators.py`` (the plan: float32 add 11, mul 8,
+Before this table (issue 32): this module (the plan: float32 add 11, mul 8,
 div/sqrt 28, compare 2; float64 12 / 9 / 57) and ``backends/cost/params.py`` (the analytic
 model: float32 add 8, mul 5, div/sqrt 28) disagreed, and neither knew the part or the clock.
 """
