@@ -8,7 +8,7 @@ update, LM control, the top's copies and the rounding-noise pass - reports trip,
 it runs, under the plan phase it belongs to) and run it on the example's data;
 fgc_cycles::phase_totals() applies the plan's arithmetic to what ran.
 
-The model's figure for a phase is the plan's (backends/hls/plan.py, the design the config emits:
+The model's figure for a phase is the plan's (backends/hls/plan/, the design the config emits:
 PlanOptions.for_config) cycles of one execution of that phase times the number of times the run
 executed it: the linearisations, linear solves, retractions, cost passes, rounding-noise passes
 and calls the counting build counted (FGC_EVENT). So the comparison checks the cycles per

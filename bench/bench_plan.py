@@ -1,4 +1,4 @@
-"""The accelerator plan's cost (backends/hls/plan.py) beside today's model and the papers.
+"""The accelerator plan's cost (backends/hls/plan/) beside today's model and the papers.
 
 LIO N = 30 (GN + QR, float32, two-ended and serial, n_u ∈ {1, 4, 8}) and imu_window N = 50
 (LM + Cholesky, float32, #CPE ∈ {5, 20, 80}); per-iteration latency in ms at 143 MHz, DSP,

@@ -1,49 +1,51 @@
-"""The operator table of the accelerator plan: latency and cost of each floating-point operator.
+"""The one operator table: latency (the stages Vitis HLS binds), II and DSP/LUT/FF of each
+floating-point operator, keyed by part family, precision and clock.
 
-One frozen table per precision, read by :mod:`fgc_backends.hls.plan` (and, later, by the emitter
-and the cost model). Every entry is an :class:`Operator` carrying its ``source`` and whether its
-numbers are ``documented`` (read from the cited document) or ``assumed`` (chosen, with the reason
-in ``note``). Target: Zynq-7000 xc7z045, -2 speed grade, 143 MHz (7 ns), the part and clock of
-both papers; Zynq-7000 programmable logic is Kintex-7 class fabric.
+Every pricer reads it through the design's :class:`fgc_backends.hls.target.Target` (part and
+clock): the accelerator plan, the update and window models, the HLS lint's DSP budget and the
+analytic cost model (``backends/cost/params.py`` takes its per-kind view, :func:`table`, from
+here: there is no second table). :func:`table` picks the row set of ``(family, precision)`` whose
+clock band holds the clock.
 
-Sources:
+Families: ``7series`` (Zynq-7000, Kintex-7-class fabric: xc7z…) and ``ultrascale+`` (Zynq
+UltraScale+: xczu…). Clock bands: up to 150 MHz (the papers' 143 MHz, 7 ns) and above.
 
-- **PG060**: Xilinx LogiCORE *Floating-Point Operator v7.1* product guide and its per-family
-  resource-utilisation page (xilinx.com "ip_docs/pru_files/floating-point.html": Fmax, LUT, FF,
-  DSP per configuration and family). The search tool found the guide and that page, but no stored
-  excerpt reached their latency or utilisation rows (the stored copies of PG060, DS816 and DS335
-  hold the title pages only), so no number here is read from PG060 itself. Structure that *is*
-  PG060's own description (and not a number): the add/sub and multiply cores use DSP48E1 slices
-  in "full usage", divide and square root are LUT/FF-only iterative-digit designs whose latency
-  grows with the fraction width (≈ mantissa bits + a few cycles), and compare is a LUT-only core.
-  The core's older data sheet (DS816, v6.0, which adds Zynq-7000 to the families) lists
-  reciprocal and reciprocal square root among its operators; whether Vitis HLS binds
-  ``1/sqrt(x)`` to that operator was not established, so ``recip_sqrt`` is costed as sqrt then
-  divide.
-- **Clash**: the Clash compiler's binding of that core, ``clash-cores`` module
-  ``Clash.Cores.Xilinx.Floating`` (github.com/clash-lang/clash-compiler,
-  clash-cores/src/Clash/Cores/Xilinx/Floating/Explicit.hs, "The default delay for floating
-  point addition with default customization"), documents the core's *maximum* latency for
-  single precision with its default customisation (speed-optimised, full DSP usage): add and
-  subtract 11, multiply 8, divide 28 cycles, compare 2. Those are the float32 latencies below
-  (status ``documented``). PG060's "Latency and Rate Configuration" section (quoted in the
-  Clash pull request that added these defaults, github.com/clash-lang/clash-compiler/pull/2333)
-  says the latency can be set between 0 and that maximum and that a slower clock meets timing
-  with fewer stages: the maximum is an upper bound at 143 MHz, where Vitis HLS picks fewer
-  stages (its generated cores are named by their stage count, e.g. ``fadd_..._5_full_dsp`` in
-  public Vitis projects, at clocks this table does not know). Their DSP/LUT/FF, and all
-  float64, square-root and HLS-math entries, remain ``assumed`` (``resource_status`` says which
-  half of an entry is sourced): no stored source gives them for the xc7z045.
-- **UG1399**: *Vitis HLS User Guide*, "HLS Math Library": functions in ``hls_math.h`` are
-  synthesisable bit-approximate implementations (1-4 ULP) in single and double precision. The
-  guide gives no latency/resource table for them; latency and cost here are ``assumed``.
-- **design**: a choice of this plan, explained in the note.
+Sources, per row (``Operator.source``, ``status`` for the latency, ``resource_status`` for
+DSP/LUT/FF):
 
-Where this table and ``backends/cost/params.py`` disagree (see :data:`DISAGREEMENTS`): the
-sim table has no ``compare`` or ``recip_sqrt`` kind, lumps sin/cos/atan2 into one ``trig`` kind
-and has no ``exp``/``log``; it models the Lie coefficients as one ``special`` unit (series +
-closed form). The numbers of the kinds both have were kept equal on purpose; the float32 add and
-multiply latencies now differ (11 and 8 here, documented; 8 and 5 there, assumed).
+- **Vitis core names**: Vitis HLS names each floating-point core it binds
+  ``<op>_<in>ns_<in>ns_<out>_<stages>_<impl>`` and records its scheduled ``LATENCY`` (= stages -
+  1) in its ``SynModuleInfo``; public Vitis HLS projects' generated files hold, e.g.,
+  ``fadd_32ns_32ns_32_4_full_dsp`` (LATENCY 3) and ``fadd_32ns_32ns_32_5_full_dsp`` (LATENCY
+  4), ``fmul_32ns_32ns_32_3_max_dsp`` (2) and ``fmul_32ns_32ns_32_4_max_dsp`` (3),
+  ``fdiv_32ns_32ns_32_16_no_dsp`` (15) and ``fdiv_32ns_32ns_32_10_no_dsp`` (9),
+  ``fcmp_32ns_32ns_1_2_no_dsp`` (1); in double ``dadd_64ns_64ns_64_5_full_dsp`` (4) and
+  ``_7_`` (6), ``dmul_64ns_64ns_64_5_max_dsp`` (4) and ``_7_`` (6),
+  ``ddiv_64ns_64ns_64_22_no_dsp`` (21), ``_31_`` (30) and ``_59_`` (58). The latencies are
+  documented by those names; *which* binding a part family takes at a clock is not (the
+  projects' part and clock were not established), so the pairing is assumed: the slower
+  7-series fabric takes the deeper of the two common bindings at ≤ 150 MHz, UltraScale+ the
+  shallower (the note of each row says so). Square root is bound like divide
+  (``fsqrt_32ns_32ns_32_16_no_dsp`` beside ``fdiv_…_16_no_dsp``); double square root is
+  assumed equal to double divide.
+- **PG060 maximum**: above 150 MHz the core's *maximum* latency for the default
+  customisation (speed-optimised, full DSP usage), single precision add 11, multiply 8,
+  divide 28, compare 2, as the Clash compiler's binding of the Floating-Point Operator core
+  documents them (clash-cores ``Clash.Cores.Xilinx.Floating``); double assumed in proportion.
+  PG060 says the latency may be set between 0 and that maximum and that a slower clock meets
+  timing with fewer stages, which is what the ≤ 150 MHz rows are.
+- **PG060 structure** (not a number): add/sub and multiply use DSP slices in full/max usage,
+  divide and square root are LUT/FF-only iterative designs, compare is LUT-only. DSP/LUT/FF
+  figures are assumed (no stored source gives them per family): 7-series float32 add 2 DSP,
+  multiply 3; float64 add 3, multiply 11; UltraScale+'s DSP48E2 (27 × 18 multiplier) is taken
+  to need the same counts.
+- **UG1399** (Vitis HLS Math Library, ``hls_math.h``): sin/cos, atan2, exp, log are
+  synthesisable approximations with no published latency table: assumed.
+- **design**: fgc's Lie coefficients (series and closed form, one rolled Horner loop a unit).
+
+Before this table (issue 32): this module (the plan: float32 add 11, mul 8,
+div/sqrt 28, compare 2; float64 12 / 9 / 57) and ``backends/cost/params.py`` (the analytic
+model: float32 add 8, mul 5, div/sqrt 28) disagreed, and neither knew the part or the clock.
 """
 
 from __future__ import annotations
@@ -51,22 +53,23 @@ from __future__ import annotations
 from dataclasses import dataclass, fields
 
 PRECISIONS = ("float32", "float64")
+FAMILIES = ("7series", "ultrascale+")
+BANDS = (150.0, float("inf"))  # clock bands, MHz: a row set applies up to its band's clock
 
 
 @dataclass(frozen=True)
 class Operator:
-    """One pipelined operator instance (II = ``ii``): latency, DSP48E1/LUT/FF, provenance."""
+    """One pipelined operator instance (II = ``ii``): latency, DSP/LUT/FF, provenance."""
 
     latency: int
     dsp: int
     lut: int
     ff: int
     source: str
-    status: str  # "documented" or "assumed"
+    status: str  # of the latency: "documented" or "assumed"
     note: str = ""
     ii: int = 1
-    resource_status: str = "assumed"  # of dsp/lut/ff; ``status`` is the latency's
-
+    resource_status: str = "assumed"  # of dsp/lut/ff
 
     def __post_init__(self):
         for st in (self.status, self.resource_status):
@@ -78,12 +81,12 @@ class Operator:
 
 @dataclass(frozen=True)
 class OperatorTable:
-    """All operators of one precision at one clock on one part."""
+    """All operators of one precision on one part family in one clock band."""
 
     precision: str
     word_bits: int
-    clock_mhz: float
-    part: str
+    clock_mhz: float  # the band's upper clock (inf: above the last band)
+    part: str  # the part family
     add: Operator  # add / subtract
     mul: Operator
     div: Operator
@@ -112,84 +115,131 @@ OPERATOR_KINDS = ("add", "mul", "div", "sqrt", "recip_sqrt", "compare", "sincos"
 # fgc.compiler.kernel.OP_KINDS -> operator kinds of this table
 KERNEL_KINDS = {"trig": "sincos"}
 
-_PG = "PG060 (Floating-Point Operator v7.1), 7-series"
-_SIM = "equal to backends/cost/params.py [PG060] until the PG060 rows are read"
-_CLASH = ("Clash clash-cores Clash.Cores.Xilinx.Floating (Explicit.hs): maximum latency of "
-          "Floating-Point Operator v7.1, single, speed-optimised, full DSP usage")
-_RES = "DSP/LUT/FF " + _SIM
+_CORE = "Vitis core name {} (LATENCY {}) in public Vitis HLS projects"
+_PAIR = "; binding for this family and clock assumed (projects' part/clock not established)"
+_MAX = ("PG060 maximum latency, single, default customisation (Clash clash-cores "
+        "Clash.Cores.Xilinx.Floating)")
+_MAX64 = "assumed: PG060 maximum for double, in proportion to the single-precision maximum"
 _UG = "UG1399 Vitis HLS Math Library (hls_math.h); no latency table published there"
-
-FLOAT32 = OperatorTable(
-    precision="float32", word_bits=32, clock_mhz=143.0, part="xc7z045-2",
-    add=Operator(11, 2, 220, 370, _CLASH, "documented",
-                 "latency 11 (was 8, assumed); " + _RES + "; full-DSP add/sub"),
-    mul=Operator(8, 3, 80, 150, _CLASH, "documented",
-                 "latency 8 (was 5, assumed); " + _RES + "; full-DSP multiply"),
-    div=Operator(28, 0, 800, 1400, _CLASH, "documented",
-                 "latency 28 (≈ 24-bit fraction + 4, PG060's structure); " + _RES
-                 + "; LUT-only"),
-    sqrt=Operator(28, 0, 500, 820, _PG, "assumed", _SIM + "; LUT-only, like divide"),
-    recip_sqrt=Operator(32, 0, 1300, 2200, _PG, "assumed",
-                        "design: bound as sqrt then divide when the core's rsqrt is not used "
-                        "(HLS binds 1/sqrt(x) so); LUT/FF = sqrt + div"),
-    compare=Operator(2, 0, 40, 30, _CLASH, "documented",
-                     "latency 2; LUT/FF assumed; LUT-only compare core"),
-    sincos=Operator(40, 12, 2800, 3000, _UG, "assumed",
-                    "equal to sim params [HLS-math] trig: range reduction + polynomial"),
-    atan2=Operator(48, 12, 3200, 3400, _UG, "assumed",
-                   "design: sincos-like polynomial plus a divide-free octant reduction"),
-    exp=Operator(30, 8, 1500, 1800, _UG, "assumed", "not used by the kernels today"),
-    log=Operator(30, 8, 1700, 2000, _UG, "assumed", "not used by the kernels today"),
-    special=Operator(160, 17, 4200, 5800, "design", "assumed",
-                     "sim params [Lie]: 12 Horner terms × (mul + add) beside the closed form",
-                     ii=12),
-)
-
-FLOAT64 = OperatorTable(
-    precision="float64", word_bits=64, clock_mhz=143.0, part="xc7z045-2",
-    add=Operator(12, 3, 680, 1000, _PG, "assumed", _SIM + "; full-DSP add/sub"),
-    mul=Operator(9, 11, 200, 420, _PG, "assumed", _SIM + "; full-DSP multiply"),
-    div=Operator(57, 0, 3200, 6000, _PG, "assumed",
-                 _SIM + "; LUT-only, latency ≈ 53-bit fraction + 4 (PG060's structure)"),
-    sqrt=Operator(57, 0, 1800, 3300, _PG, "assumed", _SIM + "; LUT-only, like divide"),
-    recip_sqrt=Operator(66, 0, 5000, 9300, _PG, "assumed",
-                        "design: sqrt then divide; LUT/FF = sqrt + div"),
-    compare=Operator(2, 0, 70, 40, _PG, "assumed", "LUT-only compare core"),
-    sincos=Operator(60, 30, 7000, 7000, _UG, "assumed", "equal to sim params [HLS-math] trig"),
-    atan2=Operator(72, 30, 8000, 8000, _UG, "assumed", "design: like sincos plus reduction"),
-    exp=Operator(45, 20, 4000, 4500, _UG, "assumed", "not used by the kernels today"),
-    log=Operator(45, 20, 4500, 5000, _UG, "assumed", "not used by the kernels today"),
-    special=Operator(470, 44, 11700, 15000, "design", "assumed",
-                     "sim params [Lie]: 22 Horner terms × (mul + add) beside the closed form",
-                     ii=22),
-)
-
-TABLES = {"float32": FLOAT32, "float64": FLOAT64}
-
-DISAGREEMENTS = (
-    "float32 add / multiply latency: 11 / 8 here (documented, Clash's binding of PG060's core), "
-    "8 / 5 in sim params (assumed)",
-    "sim params has no compare kind: its LM decision path ignores the compare latency",
-    "sim params has no recip_sqrt: Householder α/τ are modelled as sqrt + div there too",
-    "sim params 'trig' stands for sin, cos and atan alike; here atan2 is its own, dearer entry",
-    "sim params has no exp/log (no kernel uses them; listed here for completeness)",
-    "ap_fixed: no entry here or there - fixed point is not a precision fgc supports yet",
-)
+_RES = "DSP/LUT/FF assumed (PG060 structure: {})"
 
 
-def table(precision: str) -> OperatorTable:
-    """The operator table of ``precision``."""
-    try:
-        return TABLES[precision]
-    except KeyError:
-        raise ValueError(f"precision must be one of {', '.join(PRECISIONS)}, "
-                         f"got {precision!r}") from None
+def _core(latency, dsp, lut, ff, core, impl, pairing=_PAIR):
+    return Operator(latency, dsp, lut, ff, _CORE.format(core, latency), "documented",
+                    _RES.format(impl) + pairing)
+
+
+def _shared(word_bits: int, sqrt: Operator, div: Operator, big: bool) -> dict:
+    """The entries no core name gives (HLS-math functions, Lie coefficients, 1/sqrt)."""
+    rs = Operator(sqrt.latency + div.latency, 0, sqrt.lut + div.lut, sqrt.ff + div.ff,
+                  "design", "assumed", "sqrt then divide (HLS binds 1/sqrt(x) so)")
+    if not big:
+        return dict(recip_sqrt=rs,
+                    sincos=Operator(40, 12, 2800, 3000, _UG, "assumed",
+                                    "range reduction + polynomial"),
+                    atan2=Operator(48, 12, 3200, 3400, _UG, "assumed",
+                                   "sincos-like polynomial plus an octant reduction"),
+                    exp=Operator(30, 8, 1500, 1800, _UG, "assumed", "not used by the kernels"),
+                    log=Operator(30, 8, 1700, 2000, _UG, "assumed", "not used by the kernels"),
+                    special=Operator(160, 17, 4200, 5800, "design", "assumed",
+                                     "12 Horner terms × (mul + add) beside the closed form",
+                                     ii=12))
+    return dict(recip_sqrt=rs,
+                sincos=Operator(60, 30, 7000, 7000, _UG, "assumed", "range reduction + poly"),
+                atan2=Operator(72, 30, 8000, 8000, _UG, "assumed", "like sincos plus reduction"),
+                exp=Operator(45, 20, 4000, 4500, _UG, "assumed", "not used by the kernels"),
+                log=Operator(45, 20, 4500, 5000, _UG, "assumed", "not used by the kernels"),
+                special=Operator(470, 44, 11700, 15000, "design", "assumed",
+                                 "22 Horner terms × (mul + add) beside the closed form", ii=22))
+
+
+def _f32(family: str, band: float, add, mul, div, sqrt, compare) -> OperatorTable:
+    return OperatorTable("float32", 32, band, family, add, mul, div, sqrt, compare=compare,
+                         **_shared(32, sqrt, div, False))
+
+
+def _f64(family: str, band: float, add, mul, div, sqrt, compare) -> OperatorTable:
+    return OperatorTable("float64", 64, band, family, add, mul, div, sqrt, compare=compare,
+                         **_shared(64, sqrt, div, True))
+
+
+_FULL, _MAXD, _LUT = "full-DSP add/sub", "max-DSP multiply", "LUT-only iterative"
+_CMP = _core(1, 0, 40, 30, "fcmp_32ns_32ns_1_2_no_dsp", "LUT-only compare", "")
+_CMP64 = Operator(1, 0, 70, 40, "assumed: like fcmp_32ns_32ns_1_2_no_dsp", "assumed",
+                  "LUT-only compare")
+
+_MAX32 = dict(add=Operator(11, 2, 220, 370, _MAX, "documented", _RES.format(_FULL)),
+              mul=Operator(8, 3, 80, 150, _MAX, "documented", _RES.format(_MAXD)),
+              div=Operator(28, 0, 800, 1400, _MAX, "documented", _RES.format(_LUT)),
+              sqrt=Operator(28, 0, 500, 820, _MAX, "assumed", "like divide; " + _RES.format(_LUT)),
+              compare=Operator(2, 0, 40, 30, _MAX, "documented", _RES.format("LUT-only")))
+_MAX64D = dict(add=Operator(12, 3, 680, 1000, _MAX64, "assumed", _RES.format(_FULL)),
+               mul=Operator(9, 11, 200, 420, _MAX64, "assumed", _RES.format(_MAXD)),
+               div=Operator(57, 0, 3200, 6000, _MAX64, "assumed", _RES.format(_LUT)),
+               sqrt=Operator(57, 0, 1800, 3300, _MAX64, "assumed", _RES.format(_LUT)),
+               compare=Operator(2, 0, 70, 40, _MAX64, "assumed", _RES.format("LUT-only")))
+
+TABLES: dict[tuple[str, str, float], OperatorTable] = {}
+for _family in FAMILIES:
+    TABLES[_family, "float32", BANDS[1]] = _f32(_family, BANDS[1], **_MAX32)
+    TABLES[_family, "float64", BANDS[1]] = _f64(_family, BANDS[1], **_MAX64D)
+
+# ≤ 150 MHz: the bindings of the Vitis core names (the deeper one on 7-series)
+TABLES["7series", "float32", BANDS[0]] = _f32(
+    "7series", BANDS[0],
+    add=_core(4, 2, 220, 370, "fadd_32ns_32ns_32_5_full_dsp", _FULL),
+    mul=_core(3, 3, 80, 150, "fmul_32ns_32ns_32_4_max_dsp", _MAXD),
+    div=_core(15, 0, 800, 1400, "fdiv_32ns_32ns_32_16_no_dsp", _LUT),
+    sqrt=_core(15, 0, 500, 820, "fsqrt_32ns_32ns_32_16_no_dsp", _LUT),
+    compare=_CMP)
+TABLES["ultrascale+", "float32", BANDS[0]] = _f32(
+    "ultrascale+", BANDS[0],
+    add=_core(3, 2, 220, 370, "fadd_32ns_32ns_32_4_full_dsp", _FULL),
+    mul=_core(2, 3, 80, 150, "fmul_32ns_32ns_32_3_max_dsp", _MAXD),
+    div=_core(9, 0, 800, 1400, "fdiv_32ns_32ns_32_10_no_dsp", _LUT),
+    sqrt=Operator(9, 0, 500, 820, "assumed: bound like fdiv_32ns_32ns_32_10_no_dsp", "assumed",
+                  _RES.format(_LUT)),
+    compare=_CMP)
+TABLES["7series", "float64", BANDS[0]] = _f64(
+    "7series", BANDS[0],
+    add=_core(6, 3, 680, 1000, "dadd_64ns_64ns_64_7_full_dsp", _FULL),
+    mul=_core(6, 11, 200, 420, "dmul_64ns_64ns_64_7_max_dsp", _MAXD),
+    div=_core(30, 0, 3200, 6000, "ddiv_64ns_64ns_64_31_no_dsp", _LUT),
+    sqrt=Operator(30, 0, 1800, 3300, "assumed: bound like ddiv_64ns_64ns_64_31_no_dsp",
+                  "assumed", _RES.format(_LUT)),
+    compare=_CMP64)
+TABLES["ultrascale+", "float64", BANDS[0]] = _f64(
+    "ultrascale+", BANDS[0],
+    add=_core(4, 3, 680, 1000, "dadd_64ns_64ns_64_5_full_dsp", _FULL),
+    mul=_core(4, 11, 200, 420, "dmul_64ns_64ns_64_5_max_dsp", _MAXD),
+    div=_core(21, 0, 3200, 6000, "ddiv_64ns_64ns_64_22_no_dsp", _LUT),
+    sqrt=Operator(21, 0, 1800, 3300, "assumed: bound like ddiv_64ns_64ns_64_22_no_dsp",
+                  "assumed", _RES.format(_LUT)),
+    compare=_CMP64)
+
+# the default design's tables (Zynq-7000 at 143 MHz)
+FLOAT32 = TABLES["7series", "float32", BANDS[0]]
+FLOAT64 = TABLES["7series", "float64", BANDS[0]]
+
+
+def table(precision: str, family: str = "7series", clock_mhz: float = 143.0) -> OperatorTable:
+    """The operator table of ``precision`` on ``family`` at ``clock_mhz`` (the row set of the
+    first clock band that holds it). Pricers call it through ``Target.ops``."""
+    if precision not in PRECISIONS:
+        raise ValueError(f"precision must be one of {', '.join(PRECISIONS)}, got {precision!r}")
+    if family not in FAMILIES:
+        raise ValueError(f"part family must be one of {', '.join(FAMILIES)}, got {family!r}")
+    if not float(clock_mhz) > 0:
+        raise ValueError(f"clock must be positive, got {clock_mhz!r} MHz")
+    band = next(b for b in BANDS if float(clock_mhz) <= b)
+    return TABLES[family, precision, band]
 
 
 def describe(t: OperatorTable) -> str:
     """A Markdown table of ``t``: kind, latency, DSP, LUT, FF, status, source."""
-    lines = [f"| {t.precision} | latency | II | DSP | LUT | FF | status | source / note |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    clock = "> 150 MHz" if t.clock_mhz == BANDS[1] else f"≤ {t.clock_mhz:g} MHz"
+    lines = [f"| {t.precision}, {t.part}, {clock} | latency | II | DSP | LUT | FF | status | "
+             "source / note |", "| --- | --- | --- | --- | --- | --- | --- | --- |"]
     for kind, o in t.entries():
         status = o.status if o.status == o.resource_status else (
             f"latency {o.status}, resources {o.resource_status}")

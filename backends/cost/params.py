@@ -7,13 +7,10 @@ at 143 MHz, the board and clock of both papers.
 
 Sources and assumptions, once (the per-field notes refer to them):
 
-- **[PG060]** Xilinx *Floating-Point Operator v7.1* product guide, 7-series resource and latency
-  tables, "full DSP usage" configurations (what Vitis HLS binds ``fadd``/``fmul`` to by default):
-  an adder takes 2 DSP48E1 (float32) or 3 (float64), a multiplier 3 or 11, divider and square
-  root none (LUT/FF only). Latencies are chosen inside the IP's range so that the operator closes
-  timing at 143 MHz with margin (float32: add 8, mul 5, divide 28, sqrt 28, the IP's maximum for
-  the iterative ones); LUT/FF counts are rounded values of the same tables. They are estimates to
-  an order of ±30 %, not post-route numbers.
+- **[PG060]** the operators' latencies and resources are the HLS backend's one operator table
+  (``backends/cost/operators.py``: per part family, precision and clock, each row with its
+  source — Vitis core names, PG060's maximum latencies — or "assumed" with the reason);
+  :func:`view` gives this model its six kinds. The defaults are the xc7z045's at 143 MHz.
 - **[HLS-math]** ``hls::sin``/``cos`` of the Vitis HLS math library: range reduction plus a
   polynomial, a few DSPs and ~3 k LUTs, latency of a few tens of cycles.
 - **[Lie]** fgc's Lie coefficients (``fgc.frontend.geometry.special``) are a Horner series in t =
@@ -35,6 +32,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 from typing import Literal
 
+from . import operators
 from .target import DEFAULT
 
 
@@ -98,27 +96,20 @@ class OperatorTable:
         return sum(n * self.cost(kind).latency for kind, n in path.items())
 
 
-FLOAT32 = OperatorTable(
-    word_bits=32,
-    add=OperatorCost(latency=8, dsp=2, lut=220, ff=370),  # [PG060]
-    mul=OperatorCost(latency=5, dsp=3, lut=80, ff=150),  # [PG060]
-    div=OperatorCost(latency=28, dsp=0, lut=800, ff=1400),  # [PG060]
-    sqrt=OperatorCost(latency=28, dsp=0, lut=500, ff=820),  # [PG060]
-    trig=OperatorCost(latency=40, dsp=12, lut=2800, ff=3000),  # [HLS-math]
-    # 12 Horner terms × (mul 5 + add 8) + select; 1 mul + 1 add + a trig + a divider. [Lie]
-    special=OperatorCost(latency=160, dsp=17, lut=4200, ff=5800, ii=12),
-)
+def view(ops: operators.OperatorTable) -> OperatorTable:
+    """This model's per-kind view of the one operator table (``backends/cost/operators.py``):
+    its six kinds, ``trig`` being one sin/cos call."""
+    def c(o):
+        return OperatorCost(latency=o.latency, dsp=o.dsp, lut=o.lut, ff=o.ff, ii=o.ii)
 
-FLOAT64 = OperatorTable(
-    word_bits=64,
-    add=OperatorCost(latency=12, dsp=3, lut=680, ff=1000),  # [PG060]
-    mul=OperatorCost(latency=9, dsp=11, lut=200, ff=420),  # [PG060]
-    div=OperatorCost(latency=57, dsp=0, lut=3200, ff=6000),  # [PG060]
-    sqrt=OperatorCost(latency=57, dsp=0, lut=1800, ff=3300),  # [PG060]
-    trig=OperatorCost(latency=60, dsp=30, lut=7000, ff=7000),  # [HLS-math]
-    # 22 Horner terms × (mul 9 + add 12) + select. [Lie]
-    special=OperatorCost(latency=470, dsp=44, lut=11700, ff=15000, ii=22),
-)
+    return OperatorTable(word_bits=ops.word_bits, add=c(ops.add), mul=c(ops.mul),
+                         div=c(ops.div), sqrt=c(ops.sqrt), trig=c(ops.sincos),
+                         special=c(ops.special))
+
+
+# the default target's (xc7z045, 143 MHz) operators, read from the one table [PG060]
+FLOAT32 = view(operators.FLOAT32)
+FLOAT64 = view(operators.FLOAT64)
 
 
 @dataclass(frozen=True)

@@ -1,13 +1,13 @@
-"""The target FPGA: one table of device capacities, read by the analytic cost model
-(``params.Device``), the accelerator plan's fit verdict (``hls.plan``), the HLS lint's DSP budget
-and, through ``HlsConfig.part``, ``run_hls.tcl``. The clock is ``SolverConfig.clock_mhz``
-(``HlsConfig.clock_ns`` must agree with it: ``hls.config.check_clock``).
+"""Device capacities by part: one table of what each FPGA holds, read through
+:class:`fgc_backends.hls.target.Target` by the accelerator plan's fit verdict and the HLS lint's
+DSP budget, and by the analytic cost model (``params.Device``) for its default device. It sits in
+``cost`` (backend-neutral, no imports) so the analytic model reads it without importing the HLS
+backend.
 
 Capacities are the AMD/Xilinx product tables' figures per device (Zynq-7000 SoC and Zynq
 UltraScale+ MPSoC product selection guides): DSP slices, 36 Kb block RAMs, LUTs, flip-flops.
 A part name (``xc7z045ffg900-2``) selects its device by prefix; package and speed grade do not
-change the capacities (the speed grade changes the operators' achievable clock, which the
-operator table's latencies assume: -2 at 143 MHz).
+change the capacities.
 """
 
 from __future__ import annotations

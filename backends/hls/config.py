@@ -38,11 +38,12 @@ class HlsConfig(scalars.ScalarTypes):
       accumulation, elimination, back-substitution; ``"float"`` or ``"double"``, at least as
       wide as ``scalar``), the mixed design; ``None`` means ``scalar``, or ``"double"`` for a
       Program whose ``SolverConfig.linear_precision`` is float64.
-    - ``part`` / ``clock_ns``: FPGA part and clock period for ``run_hls.tcl`` (ZC706, 7 ns:
-      about 143 MHz). The cost model reads the clock from ``SolverConfig.clock_mhz``; emitting
-      a Program whose clock differs from ``1000 / clock_ns`` by more than 0.5 % is an error
-      (:func:`check_clock`), so the cost figures and the synthesis script describe one clock.
-      ``fgc ... --clock`` sets both.
+    - ``part``: the FPGA part for ``run_hls.tcl``, the plan's fit verdict and operator table
+      (``fgc_backends.hls.target.Target``; ZC706's xc7z045 by default).
+    - ``clock_ns``: ``None`` (default): the Program's clock, ``SolverConfig.clock_mhz`` - the one
+      source of the design's clock (the plan prices at it, ``run_hls.tcl`` gets its period). A
+      period given here must be that clock (0.5 %, :func:`check_clock`); ``fgc ... --clock``
+      sets both.
     - ``unit_sets``: QR/Cholesky unit sets that eliminate the steps of one level side by side;
       ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
     - ``allocation``: the factor datapaths' ALLOCATION limits per operator kind (``add``,
@@ -61,7 +62,7 @@ class HlsConfig(scalars.ScalarTypes):
     scalar: str = "float"
     linear_scalar: str | None = None
     part: str = "xc7z045ffg900-2"
-    clock_ns: float = 7.0
+    clock_ns: float | None = None
     unit_sets: int | None = None
     allocation: tuple[tuple[str, int], ...] | None = None
     max_variables: int = 8192
@@ -85,14 +86,14 @@ class HlsConfig(scalars.ScalarTypes):
                                      "linear solver can only be widened")
         if not _PART.match(self.part):
             raise HlsConfigError(f"FPGA part {self.part!r} is not a plain part name")
-        from fgc_backends.cost.target import DEVICES, device_of
+        from fgc_backends.hls.target import DEVICES, device_of
 
         if device_of(self.part) is None:
             raise HlsConfigError(f"FPGA part {self.part!r}: fgc knows no capacities for its "
                                  f"device (the plan's fit verdict and the lint's DSP budget need "
                                  f"them); known devices: {', '.join(DEVICES)} "
-                                 "(backends/cost/target.py)")
-        if not (0.5 <= float(self.clock_ns) <= 1000.0):
+                                 "(backends/hls/target.py)")
+        if self.clock_ns is not None and not (0.5 <= float(self.clock_ns) <= 1000.0):
             raise HlsConfigError(f"clock period {self.clock_ns} ns is outside 0.5 … 1000 ns")
         if self.unit_sets is not None and not 1 <= int(self.unit_sets) <= 8:
             raise HlsConfigError(f"unit_sets must be 1 … 8, got {self.unit_sets}")
@@ -131,7 +132,10 @@ class HlsConfig(scalars.ScalarTypes):
 
 def check_clock(clock_mhz: float, config: HlsConfig) -> None:
     """Raise :class:`HlsConfigError` if the cost model's clock (``SolverConfig.clock_mhz``) and
-    ``config.clock_ns`` (``run_hls.tcl``'s period) are not the same clock (0.5 %)."""
+    ``config.clock_ns`` (``run_hls.tcl``'s period) are not the same clock (0.5 %); a config
+    without a period takes the Program's."""
+    if config.clock_ns is None:
+        return
     tcl_mhz = 1000.0 / float(config.clock_ns)
     if abs(tcl_mhz - float(clock_mhz)) > CLOCK_TOLERANCE * float(clock_mhz):
         raise HlsConfigError(f"clock mismatch: the Program is costed at {clock_mhz:g} MHz "

@@ -89,7 +89,7 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     context.update(accel_context(program, config, context))
     if stream is not None and stream.template is not program:
         raise HlsConfigError("internal error: the stream layout is not of the emitted Program")
-    context["stream"] = None if stream is None else stream.context(config.linear_cxx)
+    context["stream"] = None if stream is None else stream.context(config.linear_cxx, config.part)
     context["stream_magic"], context["stream_result_magic"] = STREAM_MAGIC, STREAM_RESULT_MAGIC
     batch = getattr(stream, "batch", None)
     context["extra_sources"] = [f"{batch.project}.cpp"] if batch is not None else []
@@ -188,7 +188,6 @@ def accel_plan(program: Program, config: HlsConfig):
 
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
-    from fgc_backends.cost.operators import table
     from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
     plan = accel_plan(program, config)
     phase = {ph.name: ph for ph in plan.phases}
@@ -220,7 +219,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     network += [f"process {p}" for p in procs]
     network += [f"stream {ch.name} depth={ch.depth}: {ch.producer} -> {ch.consumer}"
                 for ch in streams]
-    les = table("float32" if config.linear_cxx == "float" else "float64")
+    les = plan.target.ops("float32" if config.linear_cxx == "float" else "float64")
     # the kernel's loops around the units, priced as the plan prices them (its FGC_CYCLES)
     timing = {"kt": kernel_timing(plan.ops), "klt": kernel_timing(les)}
     return {**timing,

@@ -42,7 +42,7 @@ deliberately small C-like parser: function definitions and their parameters, cal
   and end), which HLS unrolls completely;
 - ``dsp``: Σ over ``#pragma HLS ALLOCATION operation instances=<op> limit=<n>`` of n × the DSP of
   one ``<op>`` (:mod:`fgc_backends.cost.operators`, by precision: ``f…``/``d…`` names, else the
-  project's scalar) is at most the part's DSP count (``cost/target.py``; each function is counted
+  project's scalar) is at most the part's DSP count (``hls/target.py``; each function is counted
   as one hardware instance);
 - ``synthesis_macro``: no ``__SYNTHESIS__`` in a synthesised file (C simulation must compile the
   code that is synthesised).
@@ -856,8 +856,7 @@ class _Checker:
     def dsp(self) -> None:
         if not self.part:
             return
-        from fgc_backends.cost import operators
-        from fgc_backends.cost.target import device_of
+        from fgc_backends.hls.target import Target, device_of
 
         device = device_of(self.part)
         if device is None:
@@ -877,7 +876,7 @@ class _Checker:
                 if op not in ALLOCATION_OPS or limit is None:
                     continue
                 kind, precision = ALLOCATION_OPS[op]
-                dsp = operators.table(precision or default).op(kind).dsp
+                dsp = Target(self.part).ops(precision or default).op(kind).dsp
                 total += limit * dsp
                 parts.append(f"{op} {limit}x{dsp}")
                 first = first or (name, code, m.start())

@@ -56,7 +56,6 @@ import numpy as np
 
 from fgc.errors import FgcError
 from fgc.ir.program import Program
-from fgc_backends.cost.operators import table
 from fgc_backends.cost.structure import whitened_pattern
 from fgc_backends.hls.plan import (
     AcceleratorPlan,
@@ -193,7 +192,7 @@ class UpdateModel:
         self.options = options or PlanOptions.of(program)
         self.plan = build_plan(program, self.options)
         self.ops = self.plan.ops  # the accelerator's scalar, and the linear solver's (plan's)
-        self.les = table(self.options.les_precision or (
+        self.les = self.plan.target.ops(self.options.les_precision or (
             program.solver.les_precision if self.options.precision is None
             else self.plan.precision))
         self.rate = transfer_words_per_cycle

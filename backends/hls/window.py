@@ -39,6 +39,7 @@ from fgc.compiler.stream import WindowTemplate
 from fgc.errors import FgcError
 from fgc.ir.datafile import factor_words
 from fgc_backends.hls.plan import PHASE_TRIGGER, plan_groups
+from fgc_backends.hls.target import DEFAULT_PART
 
 KEEP, ZERO = -1, -2  # shift codes besides a source word: keep the word, write zero
 
@@ -211,7 +212,7 @@ class WindowLayout(WindowTemplate):
                                     "prior would be singular")
 
     # -- what the emitter places ---------------------------------------------------------------
-    def context(self, linear_cxx: str) -> dict:
+    def context(self, linear_cxx: str, part: str = DEFAULT_PART) -> dict:
         """The stream section's constants and tables (accel.h.jinja / accel.cpp.jinja);
         ``linear_cxx``: the linear solver's scalar (τ's singularity threshold)."""
         return {"window": self.window, "slots": self.size, "kf_x": self.kf_words,
@@ -228,7 +229,7 @@ class WindowLayout(WindowTemplate):
                 "new_begin": self.new_begin(),
                 "max_new": max(len(d) for d in self.new_dest),
                 "role": "window", "in_x": self.n_x, "in_data": self.n_data,
-                **self._kept_context(linear_cxx), **self._batch_context()}
+                **self._kept_context(linear_cxx, part), **self._batch_context()}
 
     def _batch_context(self) -> dict:
         """What the window's stream top needs of the batch kernel: its names, sizes and the
@@ -245,7 +246,7 @@ class WindowLayout(WindowTemplate):
                           "n_data": b.n_data, "new_begin": b.new_begin(),
                           "is_batch": [int(j in keyframes) for j in range(self.kept)]}}
 
-    def _kept_context(self, linear_cxx: str) -> dict:
+    def _kept_context(self, linear_cxx: str, part: str) -> dict:
         """The kept Bayes net's constants (incremental mode): the Log kernels, slot 0's
         variables by kind and offset, the re-expression's central-difference step."""
         if not self.kept:
@@ -268,15 +269,17 @@ class WindowLayout(WindowTemplate):
         eps = np.finfo(np.float64 if linear_cxx == "double" else np.float32).eps
         return {"kept": self.kept, "locals": locals_, "kf_vars": kf_vars,
                 "jacobian_step": HlsCodePrinter({}).literal(float(np.sqrt(eps) * 10)),
-                "mv_ii": self.matvec_ii(linear_cxx)}
+                "mv_ii": self.matvec_ii(linear_cxx, part)}
 
-    def matvec_ii(self, linear_cxx: str) -> int:
+    def matvec_ii(self, linear_cxx: str, part: str = DEFAULT_PART) -> int:
         """The kept net's matrix-vector loop's II: a row's sum returns to the adder every
         KF_T iterations, so ceil(multiply-add depth of L / KF_T)."""
-        from fgc_backends.cost.operators import table
         from fgc_backends.hls.plan import kernel_timing
+        from fgc_backends.hls.target import target_of
 
-        depth = kernel_timing(table("float32" if linear_cxx == "float" else "float64"))["acc"][1]
+        ops = target_of(part, self.program.solver.clock_mhz).ops(
+            "float32" if linear_cxx == "float" else "float64")
+        depth = kernel_timing(ops)["acc"][1]
         return max(1, -(-depth // self.kf_dim))
 
     # -- the words of the calls ------------------------------------------------------------
@@ -399,7 +402,7 @@ class BatchLayout(WindowTemplate):
     reset_words = WindowLayout.reset_words
     new_begin = WindowLayout.new_begin
 
-    def context(self, linear_cxx: str) -> dict:
+    def context(self, linear_cxx: str, part: str = DEFAULT_PART) -> dict:
         """The batch kernel's section (accel.cpp.jinja, role "batch")."""
         return {"role": "batch", "slots": self.size, "kf_x": self.kf_words,
                 "kf_t": self.kf_dim, "slot_x": [w for s in self.slot_x for w in s],
@@ -521,7 +524,6 @@ class WindowUpdateModel:
     them, else derives them from its iterations (no rejected steps)."""
 
     def __init__(self, layout: WindowLayout, config):
-        from fgc_backends.cost.operators import table
         from fgc_backends.hls.emitter import accel_plan, for_program
         from fgc_backends.hls.plan import (
             Loop,
@@ -544,13 +546,13 @@ class WindowUpdateModel:
         self.clock_mhz = plan.clock_mhz
         self.group = plan_groups(plan)
         kt = kernel_timing(plan.ops)
-        les = table("float32" if config.linear_cxx == "float" else "float64")
+        les = plan.target.ops("float32" if config.linear_cxx == "float" else "float64")
         lt = kernel_timing(les)
 
         def cycles(*loops):
             return phase_cycles(Phase("x", False, (Process("x", "x", tuple(loops)),)))
 
-        ctx = layout.context(config.linear_cxx)
+        ctx = layout.context(config.linear_cxx, config.part)
         self.layout_marginal = ctx["marginal"]
         self.les, self._held, self._qr = les, [], {}
         self.sets = max(1, unit_sets(plan))
@@ -571,8 +573,9 @@ class WindowUpdateModel:
             divide = cycles(kernel_loop("divide", 1, "div", lt))
             difference = phase_cycles(Phase("x", False, (Process("x", "x", (
                 Loop("difference", n, 1, kt["div"][1]),)),)))
+            mv_ii = layout.matvec_ii(config.linear_cxx, config.part)
             matvec = phase_cycles(Phase("x", False, (Process("x", "x", (Loop(
-                "matvec", n * n, layout.matvec_ii(config.linear_cxx), lt["acc"][1]),)),)))
+                "matvec", n * n, mv_ii, lt["acc"][1]),)),)))
             scatter = cycles(kernel_loop("scatter", n, "scatter", lt))
             move_n = cycles(kernel_loop("row", n, "move", kt))
             columns = sum(cycles(Loop("column", i, 1, lt["acc"][1])) for i in range(1, n))
@@ -652,40 +655,36 @@ class WindowUpdateModel:
                                             self.layout.leaf_step if leaf_only else None)
         return self._qr[key]
 
-    def resources(self) -> dict:
-        """The whole on-chip design's DSP and BRAM36 (model estimates): the window kernel's
-        plan, the batch kernel's (its own units: a second accelerator of the same design), and
-        the memories the stream section adds (the kept net, the batch buffers)."""
-        from fgc_backends.cost.target import capacity
-        from fgc_backends.hls.plan import Memory, plan_cost
+    def design_plan(self):
+        """The whole on-chip design as one plan: the window kernel's plan, the batch kernel's
+        units, memories and channels (a second accelerator of the same design, its names
+        prefixed ``batch_``) and the memories the stream section adds
+        (:func:`fgc_backends.hls.units.memories.stream_memories`)."""
+        from fgc_backends.hls.plan import merge_plans
+        from fgc_backends.hls.units.memories import stream_memories
 
-        lay = self.layout
+        batch = self.batch
+        return merge_plans(self.plan, batch["plan"] if batch is not None else None,
+                           stream_memories(self.layout, self.plan.ops.word_bits,
+                                           self.les.word_bits,
+                                           batch["words"] if batch is not None else 0))
+
+    def resources(self) -> dict:
+        """The whole on-chip design's DSP and BRAM36 (model estimates): ``plan_cost`` of
+        :meth:`design_plan`, and its parts: the window kernel, the batch kernel, the stream
+        memories."""
+        from fgc_backends.hls.plan import plan_cost
+
+        design = plan_cost(self.design_plan())
         window = plan_cost(self.plan)
-        dsp, bram36 = window.dsp, window.bram36
         parts = {"window kernel": (window.dsp, window.bram36)}
-        t_bits, l_bits = self.plan.ops.word_bits, self.les.word_bits
-        mems = []
-        if lay.kept:
-            n, kf, count = lay.kf_dim, lay.kf_words, lay.kept
-            mems += [Memory("kept_r", count * n * n, l_bits, 1),
-                     Memory("kept_s", count * n * n, l_bits, 1),
-                     Memory("kept_d", count * n, l_bits, 1),
-                     Memory("kept_points", 2 * count * kf, t_bits, 1),
-                     Memory("x_kept", count * kf, t_bits, 1)]
         if self.batch is not None:
             bcost = plan_cost(self.batch["plan"])
             parts["batch kernel"] = (bcost.dsp, bcost.bram36)
-            dsp += bcost.dsp
-            bram36 += bcost.bram36
-            b = self.batch["layout"]
-            mems += [Memory("batch_x", b.size * lay.kf_words, t_bits, 1),
-                     Memory("batch_cond", b.size * self.batch["words"], l_bits, 1)]
-        extra = sum(m.bram18 for m in mems) / 2
-        parts["stream memories"] = (0, extra)
-        bram36 += extra
-        device = capacity(self.plan.options.part)
-        return {"dsp": dsp, "bram36": bram36, "parts": parts,
-                "fits": dsp <= device.dsp and bram36 <= device.bram36,
+        parts["stream memories"] = (0, design.bram36 - sum(b for _, b in parts.values()))
+        device = self.plan.target.device
+        return {"dsp": design.dsp, "bram36": design.bram36, "parts": parts,
+                "fits": design.dsp <= device.dsp and design.bram36 <= device.bram36,
                 "part": self.plan.options.part}
 
     def _kept_out_terms(self, keyframe: int) -> list:

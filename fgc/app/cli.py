@@ -1113,7 +1113,7 @@ def _hardware_args(p: argparse.ArgumentParser, name: str) -> None:
                        help=("FPGA part whose capacities the plan's fit verdict uses" if priced
                              else "FPGA part for run_hls.tcl, --backend hls only")
                             + " (default: xc7z045ffg900-2); the plan's fit verdict and the lint's "
-                            "DSP budget use its device's capacities (backends/cost/target.py)")
+                            "DSP budget use its device's capacities (backends/hls/target.py)")
         h.add_argument("--scalar", type=_scalar, metavar="T",
                        help=("C++ scalar of the priced HLS design: float or double (implies "
                              "--precision; the dataflow design has no fixed-point operator table)"

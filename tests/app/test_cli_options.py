@@ -99,15 +99,18 @@ def test_clock_reaches_the_cost_model_and_run_hls_tcl(tmp_path, capsys):
     assert "typedef double T;" in (out / "range_beacons.h").read_text()
 
 
-def test_emit_rejects_two_clocks(tmp_path):
+def test_emit_takes_the_programs_clock_and_rejects_a_second_one(tmp_path):
     from fgc.compile import compile_graph
     from fgc.ir.program import SolverConfig
     from fgc_backends import hls
 
     program = compile_graph(_beacons_graph(), SolverConfig(clock_mhz=200.0), name="beacons")
     with pytest.raises(hls.HlsConfigError, match=r"clock mismatch: .* 200 MHz .*clock_ns=7"):
-        hls.emit(program, tmp_path, hls.HlsConfig(scalar="double"))
+        hls.emit(program, tmp_path, hls.HlsConfig(scalar="double", clock_ns=7.0))
     hls.emit(program, tmp_path, hls.HlsConfig(scalar="double", clock_ns=5.0))  # agrees
+    # no period given: the Program's clock (SolverConfig.clock_mhz) is the design's
+    hls.emit(program, tmp_path / "own", hls.HlsConfig(scalar="double"))
+    assert "create_clock -period 5 " in (tmp_path / "own" / "run_hls.tcl").read_text()
 
 
 @pytest.mark.parametrize("argv, needle", [

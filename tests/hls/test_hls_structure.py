@@ -299,7 +299,8 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
     kernel = (out / "lio.cpp").read_text()
     plan = accel_plan(program, HlsConfig(scalar="double"))
-    assert plan.ops.add.latency > 1 and plan.ops.compare.latency > 1
+    # at 143 MHz the compare core is one stage (fcmp_..._1_2_no_dsp): one partial maximum
+    assert plan.ops.add.latency > 1 and plan.ops.compare.latency >= 1
     assert f"T_ADD_LAT = {plan.ops.add.latency}," in kernel and "T_PARTIALS = T_ADD_LAT;" in kernel
     assert f"T_CMP_LAT = {plan.ops.compare.latency}," in kernel
     assert "T_MAXIMA = T_CMP_LAT;" in kernel

@@ -1,8 +1,9 @@
-"""Tests of the accelerator plan (backends/hls/plan.py) and its operator table (operators.py).
+"""Tests of the accelerator plan (backends/hls/plan/) and its operator table (operators.py).
 
 Cheap: a 3-pose Pose2 chain compiles in well under a second from a warm cache. The cost
 arithmetic is checked against hand computations written out below from the float32 table
-(add 11, mul 8, div 28, sqrt 28, compare 2, sincos 40 cycles; add 2 DSP, mul 3 DSP).
+(the xc7z045 at 143 MHz: add 4, mul 3, div 15, sqrt 15, compare 1, sincos 40 cycles; add 2
+DSP, mul 3 DSP).
 """
 
 from __future__ import annotations
@@ -87,13 +88,13 @@ def test_table_is_frozen_and_every_entry_has_a_source():
 
 
 def test_dot_loop_ii_from_adder_latency():
-    # adder latency 11: one partial sum -> II 11; 4 partial sums -> II 3; 11 -> II 1
-    assert F32.add.latency == 11 and F32.mul.latency == 8
-    assert dot_loop("d", 20, F32, partials=1).ii == 11
-    assert dot_loop("d", 20, F32, partials=4).ii == 3
+    # adder latency 4: one partial sum -> II 4; 3 partial sums -> II 2; 4 -> II 1
+    assert F32.add.latency == 4 and F32.mul.latency == 3
+    assert dot_loop("d", 20, F32, partials=1).ii == 4
+    assert dot_loop("d", 20, F32, partials=3).ii == 2
     d = dot_loop("d", 20, F32)
-    # k = 11 partial sums: II 1, depth mul 8 + add 11 × (1 + ⌈log2 11⌉ = 4) = 63; 19 + 63 = 82
-    assert (d.ii, d.depth, d.cycles) == (1, 63, 82)
+    # k = 4 partial sums: II 1, depth mul 3 + add 4 × (1 + ⌈log2 4⌉ = 2) = 15; 19 + 15 = 34
+    assert (d.ii, d.depth, d.cycles) == (1, 15, 34)
 
 
 def test_cost_of_a_hand_made_plan():
@@ -129,27 +130,27 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     assert depth == critical_path(KernelText.of(retract_kernel(variable_class("Pose2"))),
                                   _sim_table(F32))
     assert phases["state_update"] == 2 * 24 + depth
-    # LM control per linearisation: the gradient's largest entry (9 entries into 2 = compare
-    # latency partial maxima: II 1, depth |.| 2 + compare 2 (1 + 1) = 6: 14), |x| (12 storage
-    # words into 11 partial sums: II 1, depth mul 8 + add 11 (1 + ⌈log₂ 11⌉) = 63: 74); per
-    # solve: the step test (9 entries, 9 partial sums: II ⌈11 / 9⌉ = 2, depth μδ and g + μδ
-    # 19 + 63 = 82: 98), the decision (div 28 + 2 mul + 2 add + compare 2 = 68); per accepted
-    # step: x copied (12 words, II 1, depth 2: 13)
-    assert phases["lm_iteration"] == 14 + 74
-    assert phases["lm_control"] == 98 + 68
+    # LM control per linearisation: the gradient's largest entry (9 entries into 1 = compare
+    # latency partial maximum: II 1, depth |.| 2 + compare 1 = 3: 11), |x| (12 storage words
+    # into 4 partial sums: II 1, depth mul 3 + add 4 (1 + ⌈log₂ 4⌉) = 15: 26); per solve: the
+    # step test (9 entries, 4 partial sums: II 1, depth μδ and g + μδ 7 + 15 = 22: 30), the
+    # decision (div 15 + 2 mul + 2 add + compare 1 = 30); per accepted step: x copied (12
+    # words, II 1, depth 2: 13)
+    assert phases["lm_iteration"] == 11 + 26
+    assert phases["lm_control"] == 30 + 30
     assert phases["lm_accept"] == 13
     # back-substitution (fgc_backsub.h's loops in the backsub_level region; two unit sets, so
     # the copies move one word of each set's step a cycle). The root step (f 3, s 0): its
     # conditional copied in (3 x 4 words, II 1, depth 2: 13); cond_backsub: the partial sums
-    # zeroed (3 at depth 1: 3), no separator terms, the rows' folds (3, depth 11 (1 + 4) = 55:
-    # 57), reciprocals 2 + div 28 = 30, then per column last first a multiply 8 and the column
-    # above it (trip r, mul + add 19 deep): 8 + (1 + 19) + 8 + 19 + 8 = 63 -> 153; the solution
-    # out (3: 4) -> 170. The second level has two steps (f 3, s 3) side by side: copies in
+    # zeroed (3 at depth 1: 3), no separator terms, the rows' folds (3, depth 4 (1 + 2) = 12:
+    # 14), reciprocals 2 + div 15 = 17, then per column last first a multiply 3 and the column
+    # above it (trip r, mul + add 7 deep): 3 + (1 + 7) + 3 + 7 + 3 = 24 -> 58; the solution
+    # out (3: 4) -> 75. The second level has two steps (f 3, s 3) side by side: copies in
     # 3 x 7 words (22) and the separator's 3 (4); each cond_backsub 3 + the 9 separator terms
-    # in one loop (8 + 19 = 27) + 57 + 30 + 63 = 180, the region the slower plus the other's
-    # fill (its zeroing's depth 1): 181; the solutions out (4) -> 211
+    # in one loop (8 + 7 = 15) + 14 + 17 + 24 = 73, the region the slower plus the other's
+    # fill (its zeroing's depth 1): 74; the solutions out (4) -> 104
     assert plan.options.units == 2
-    assert phases["backsub_level0"] == 170 and phases["backsub_level1"] == 211
+    assert phases["backsub_level0"] == 75 and phases["backsub_level1"] == 104
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub_")))
@@ -244,7 +245,7 @@ def test_allocation_follows_the_instances():
     (PlanOptions.allocation_scaling "instances"): imu_window N = 50's once-evaluated priors no
     longer hold the IMU datapath's 24 multipliers, which is what lets #CPE = 80 fit the
     xc7z045's 900 DSP; a one-instance datapath's depth is at least its operators' issue time,
-    and the priced cycles stay those of the uniform allocation here."""
+    and the priced cycles stay within 0.1 % of the uniform allocation's here."""
     from fgc.app.specs import example
 
     program = compile_graph(example("imu_window").build(N=50),
@@ -258,7 +259,11 @@ def test_allocation_follows_the_instances():
     assert dict(scaled.unit(f"factor_{prior}").operators)["mul"] == 1  # ⌈24 × 1 / 49⌉
     a, b = plan_cost(scaled), plan_cost(uniform)
     assert a.fits and a.dsp <= PART_DSP and not b.fits and "DSP" in b.over
-    assert a.cycles == b.cycles
+    # the cycles move only where a one-instance datapath now waits for its operators to issue
+    # (at the 143 MHz latencies the prior's issue time, not its critical path, sets its depth)
+    moved = {k for k, v in a.phase_cycles if v != dict(b.phase_cycles)[k]}
+    assert moved <= {"factor_jacobian", "factor_cost"}
+    assert 0 <= a.cycles - b.cycles <= 0.001 * b.cycles
     for phase in scaled.phases:
         for proc in phase.processes:
             if proc.name == f"factor_{prior}_jacobian":

@@ -1,4 +1,4 @@
-"""One target description (backends/cost/target.py): the cost model's device, the plan's fit
+"""One target description (backends/hls/target.py): the cost model's device, the plan's fit
 verdict and the lint's DSP budget all read the same capacities."""
 
 from __future__ import annotations
@@ -6,9 +6,9 @@ from __future__ import annotations
 import pytest
 
 from fgc_backends.cost.params import CostParams
-from fgc_backends.cost.target import DEFAULT, DEVICES, UnknownPartError, capacity, device_of
 from fgc_backends.hls import plan
 from fgc_backends.hls.lint import semantic_issues
+from fgc_backends.hls.target import DEFAULT, DEVICES, UnknownPartError, capacity, device_of
 
 
 def test_part_names_select_their_device_by_prefix():

@@ -82,10 +82,10 @@ const int MAX_LD = 32;  // padded row length of the widest step
 // the plan's operator latencies of T and L; the kernel's dot products and Grams interleave
 // ADD_LAT partial sums (a sum comes back to the adder after it is done: II 1)
 const int PORTS = 2;  // words a cycle through a memory's two ports (true dual-port RAM): the copies
-const int T_ADD_LAT = 11, T_MUL_LAT = 8, T_PARTIALS = T_ADD_LAT;
-const int L_ADD_LAT = 11, L_MUL_LAT = 8, L_PARTIALS = L_ADD_LAT;
+const int T_ADD_LAT = 4, T_MUL_LAT = 3, T_PARTIALS = T_ADD_LAT;
+const int L_ADD_LAT = 4, L_MUL_LAT = 3, L_PARTIALS = L_ADD_LAT;
 // LM control's running maximum: the compare's latency, |.| ahead of it; T_MAXIMA partial maxima
-const int T_CMP_LAT = 2, T_ABS_LAT = 2, T_MAXIMA = T_CMP_LAT;
+const int T_CMP_LAT = 1, T_ABS_LAT = 2, T_MAXIMA = T_CMP_LAT;
 const int N_CPE = 20;  // --cpe: process elements of the cascade
 const int STATUS_CONVERGED = 0;
 const int STATUS_MAX_ITERATIONS = 1;
@@ -1974,7 +1974,7 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
     for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
-#pragma HLS PIPELINE II=11
+#pragma HLS PIPELINE II=4
         for (int t = 0; t < TILE; ++t) {
             if (r0 + t < ROWS) {
                 const T m = moved[r0 + t];
@@ -2347,7 +2347,7 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 7, 108, 864);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 7, 108, 621);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 32 columns (a multiple of PORTS)
@@ -2382,7 +2382,7 @@ bool reduce_0() {
         FGC_CYCLES("reduce_0", 0, "columns", 30, 1, 1);
         gram<32, 31, 15, 20, 36>(ab, BLOCK0_TILES, BLOCK0_TILE_ROWS, FACTOR_GRAM_OFF[f]);
         finite = gradient_from_gram<31>(FACTOR_GRAM_OFF[f], col) && finite;
-        FGC_CYCLES("reduce_0", 0, "scatter", 30, 1, 13);
+        FGC_CYCLES("reduce_0", 0, "scatter", 30, 1, 6);
         FGC_CYCLES("reduce_0", 0, "check", 31, fgc_units::dot_ii(31, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(31, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
@@ -2408,8 +2408,8 @@ T noise_0(T noise) {
         noise += rounding_noise<32, 31, 15>(ab, scale);
         FGC_CYCLES("noise_0", 0, "load", 240, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 32, 1, 1);
-        FGC_CYCLES("noise_0", 0, "rows", 15, 1, 126);
-        FGC_CYCLES("noise_0", 0, "terms", 4, 11, 38);
+        FGC_CYCLES("noise_0", 0, "rows", 15, 1, 46);
+        FGC_CYCLES("noise_0", 0, "terms", 4, 4, 14);
     }
     return noise;
 }
@@ -2427,7 +2427,7 @@ T cost_of_0(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 193], DATA_BUF[FACTOR_DATA_OFF[f] + 194]);
         total += cost;
     }
-    FGC_CYCLES("factor_0_cost", 0, "instances", 7, 36, 796);
+    FGC_CYCLES("factor_0_cost", 0, "instances", 7, 36, 596);
     return total;
 }
 
@@ -2459,7 +2459,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 581);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -2489,7 +2489,7 @@ bool reduce_1() {
         FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
         gram<8, 7, 6, 2, 3>(ab, BLOCK1_TILES, BLOCK1_TILE_ROWS, FACTOR_GRAM_OFF[f]);
         finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
-        FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 13);
+        FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_1", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
@@ -2510,8 +2510,8 @@ T noise_1(T noise) {
         noise += rounding_noise<8, 7, 6>(ab, scale);
         FGC_CYCLES("noise_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_1", 0, "rows", 6, 1, 60);
-        FGC_CYCLES("noise_1", 0, "terms", 2, 11, 38);
+        FGC_CYCLES("noise_1", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_1", 0, "terms", 2, 4, 14);
     }
     return noise;
 }
@@ -2529,7 +2529,7 @@ T cost_of_1(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         total += cost;
     }
-    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 48, 475);
+    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 48, 377);
     return total;
 }
 
@@ -2561,7 +2561,7 @@ void evaluate_2(const T x[N_X]) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
         }
     }
-    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 1, 11);
+    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 1, 4);
 }
 
 // block 2's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
@@ -2591,7 +2591,7 @@ bool reduce_2() {
         FGC_CYCLES("reduce_2", 0, "columns", 3, 1, 1);
         gram<4, 4, 3, 1, 1>(ab, BLOCK2_TILES, BLOCK2_TILE_ROWS, FACTOR_GRAM_OFF[f]);
         finite = gradient_from_gram<4>(FACTOR_GRAM_OFF[f], col) && finite;
-        FGC_CYCLES("reduce_2", 0, "scatter", 3, 1, 13);
+        FGC_CYCLES("reduce_2", 0, "scatter", 3, 1, 6);
         FGC_CYCLES("reduce_2", 0, "check", 4, fgc_units::dot_ii(4, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(4, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
@@ -2612,16 +2612,16 @@ T noise_2(T noise) {
         noise += rounding_noise<4, 4, 3>(ab, scale);
         FGC_CYCLES("noise_2", 0, "load", 6, 1, 2);
         FGC_CYCLES("noise_2", 0, "scales", 4, 1, 1);
-        FGC_CYCLES("noise_2", 0, "rows", 3, 1, 49);
-        FGC_CYCLES("noise_2", 0, "terms", 1, 11, 38);
+        FGC_CYCLES("noise_2", 0, "rows", 3, 1, 18);
+        FGC_CYCLES("noise_2", 0, "terms", 1, 4, 14);
     }
     return noise;
 }
 
-// block 2, cost mode: `total` plus the cost of its instances in order, one every II=11 cycles
+// block 2, cost mode: `total` plus the cost of its instances in order, one every II=4 cycles
 T cost_of_2(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=11
+#pragma HLS PIPELINE II=4
         const int f = BLOCK2_INSTANCES[i];
         T in[3], dat[4], half[1];
         T unused[12];
@@ -2631,7 +2631,7 @@ T cost_of_2(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         total += cost;
     }
-    FGC_CYCLES("factor_2_cost", 0, "instances", 1, 11, 49);
+    FGC_CYCLES("factor_2_cost", 0, "instances", 1, 4, 18);
     return total;
 }
 
@@ -2663,7 +2663,7 @@ void evaluate_3(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_3_jacobian", 0, "instances", 1, 2, 11);
+    FGC_CYCLES("factor_3_jacobian", 0, "instances", 1, 2, 4);
 }
 
 // block 3's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -2693,7 +2693,7 @@ bool reduce_3() {
         FGC_CYCLES("reduce_3", 0, "columns", 6, 1, 1);
         gram<8, 7, 6, 2, 3>(ab, BLOCK3_TILES, BLOCK3_TILE_ROWS, FACTOR_GRAM_OFF[f]);
         finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
-        FGC_CYCLES("reduce_3", 0, "scatter", 6, 1, 13);
+        FGC_CYCLES("reduce_3", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_3", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
@@ -2714,16 +2714,16 @@ T noise_3(T noise) {
         noise += rounding_noise<8, 7, 6>(ab, scale);
         FGC_CYCLES("noise_3", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_3", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_3", 0, "rows", 6, 1, 60);
-        FGC_CYCLES("noise_3", 0, "terms", 2, 11, 38);
+        FGC_CYCLES("noise_3", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_3", 0, "terms", 2, 4, 14);
     }
     return noise;
 }
 
-// block 3, cost mode: `total` plus the cost of its instances in order, one every II=11 cycles
+// block 3, cost mode: `total` plus the cost of its instances in order, one every II=5 cycles
 T cost_of_3(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=11
+#pragma HLS PIPELINE II=5
         const int f = BLOCK3_INSTANCES[i];
         T in[6], dat[7], half[1];
         T unused[48];
@@ -2733,7 +2733,7 @@ T cost_of_3(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
         total += cost;
     }
-    FGC_CYCLES("factor_3_cost", 0, "instances", 1, 11, 60);
+    FGC_CYCLES("factor_3_cost", 0, "instances", 1, 5, 22);
     return total;
 }
 
@@ -2771,7 +2771,7 @@ T rounding_noise_all(const T x[N_X]) {
             scale = fgc_abs(x[i]) > scale ? fgc_abs(x[i]) : scale;
         }
         VAR_SCALE[v] = scale;
-        FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 2, 4);
+        FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 1, 3);
     }
     T noise = T(0);
     noise = noise_0(noise);
@@ -2881,7 +2881,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_0(xv, dv, ov);
         for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 0, "variables", 8, 36, 277);
+    FGC_CYCLES("retract", 0, "variables", 8, 36, 203);
     for (int i = 0; i < 8; ++i) {  // a variable every II=1 cycles (the plan's)
 #pragma HLS PIPELINE II=1
         const int v = KIND1_VARIABLES[i];
@@ -2891,7 +2891,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_1(xv, dv, ov);
         for (int k = 0; k < 3; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 1, "variables", 8, 1, 11);
+    FGC_CYCLES("retract", 1, "variables", 8, 1, 4);
     for (int i = 0; i < 8; ++i) {  // a variable every II=2 cycles (the plan's)
 #pragma HLS PIPELINE II=2
         const int v = KIND2_VARIABLES[i];
@@ -2901,7 +2901,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_2(xv, dv, ov);
         for (int k = 0; k < 6; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 2, "variables", 8, 2, 11);
+    FGC_CYCLES("retract", 2, "variables", 8, 2, 4);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -2913,8 +2913,8 @@ struct LesConfig {
     static const int MAX_COLS = ::fgc::MAX_W + 1;  // w + 1: frontal, separator, right-hand side
     static const int MAX_F = ::fgc::MAX_F;
     static const int N_CPE = ::fgc::N_CPE;
-    static const int PARTIALS = 11;  // interleaved partial sums (= ADD_LAT: II 1)
-    static const int ADD_LAT = 11, MUL_LAT = 8, DIV_LAT = 28, SQRT_LAT = 28;
+    static const int PARTIALS = 4;  // interleaved partial sums (= ADD_LAT: II 1)
+    static const int ADD_LAT = 4, MUL_LAT = 3, DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
 };
 
@@ -2963,7 +2963,7 @@ bool eliminate(int s, T mu) {
                 ++q;
             }
         }
-        FGC_CYCLES("assemble", 0, "gram", n, 1, 13);
+        FGC_CYCLES("assemble", 0, "gram", n, 1, 6);
     }
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=2
@@ -2986,7 +2986,7 @@ bool eliminate(int s, T mu) {
                 ++b;
             }
         }
-        FGC_CYCLES("assemble", 0, "child", n, 1, 13);
+        FGC_CYCLES("assemble", 0, "child", n, 1, 6);
     }
     bool not_pd = false, singular = false;
     FGC_PHASE("cholesky");
@@ -3162,7 +3162,7 @@ Step try_steps(T cost, T mu[1]) {
         FGC_PHASE("lm_control");
         FGC_CYCLES("decide", 0, "step_test", N_TANGENT, fgc_units::dot_ii(N_TANGENT, T_PARTIALS, T_ADD_LAT),
                    T_MUL_LAT + T_ADD_LAT + fgc_units::dot_depth(N_TANGENT, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("decide", 0, "decision", 1, 1, 68);
+        FGC_CYCLES("decide", 0, "decision", 1, 1, 30);
         if (ok) {
             if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
             retract_all(X, DELTA, X_TRIAL);

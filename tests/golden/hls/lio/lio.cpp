@@ -29,10 +29,10 @@
 //   process qr1_collect
 //   process backsub_set0
 //   process backsub_set1
-//   stream qr0_v0 depth=22: qr0_broadcast -> qr0_update0
-//   stream qr0_v1 depth=22: qr0_broadcast -> qr0_update1
-//   stream qr0_v2 depth=22: qr0_broadcast -> qr0_update2
-//   stream qr0_v3 depth=22: qr0_broadcast -> qr0_update3
+//   stream qr0_v0 depth=8: qr0_broadcast -> qr0_update0
+//   stream qr0_v1 depth=8: qr0_broadcast -> qr0_update1
+//   stream qr0_v2 depth=8: qr0_broadcast -> qr0_update2
+//   stream qr0_v3 depth=8: qr0_broadcast -> qr0_update3
 //   stream qr0_t0 depth=3: qr0_finish -> qr0_update0
 //   stream qr0_t1 depth=3: qr0_finish -> qr0_update1
 //   stream qr0_t2 depth=3: qr0_finish -> qr0_update2
@@ -46,10 +46,10 @@
 //   stream qr0_row2 depth=2: qr0_update2 -> qr0_collect
 //   stream qr0_col3 depth=87: qr0_update3 -> qr0_evaluate
 //   stream qr0_row3 depth=2: qr0_update3 -> qr0_collect
-//   stream qr1_v0 depth=22: qr1_broadcast -> qr1_update0
-//   stream qr1_v1 depth=22: qr1_broadcast -> qr1_update1
-//   stream qr1_v2 depth=22: qr1_broadcast -> qr1_update2
-//   stream qr1_v3 depth=22: qr1_broadcast -> qr1_update3
+//   stream qr1_v0 depth=8: qr1_broadcast -> qr1_update0
+//   stream qr1_v1 depth=8: qr1_broadcast -> qr1_update1
+//   stream qr1_v2 depth=8: qr1_broadcast -> qr1_update2
+//   stream qr1_v3 depth=8: qr1_broadcast -> qr1_update3
 //   stream qr1_t0 depth=3: qr1_finish -> qr1_update0
 //   stream qr1_t1 depth=3: qr1_finish -> qr1_update1
 //   stream qr1_t2 depth=3: qr1_finish -> qr1_update2
@@ -90,10 +90,10 @@ const int MAX_LD = 32;  // padded row length of the widest step
 // the plan's operator latencies of T and L; the kernel's dot products and Grams interleave
 // ADD_LAT partial sums (a sum comes back to the adder after it is done: II 1)
 const int PORTS = 2;  // words a cycle through a memory's two ports (true dual-port RAM): the copies
-const int T_ADD_LAT = 11, T_MUL_LAT = 8, T_PARTIALS = T_ADD_LAT;
-const int L_ADD_LAT = 11, L_MUL_LAT = 8, L_PARTIALS = L_ADD_LAT;
+const int T_ADD_LAT = 4, T_MUL_LAT = 3, T_PARTIALS = T_ADD_LAT;
+const int L_ADD_LAT = 4, L_MUL_LAT = 3, L_PARTIALS = L_ADD_LAT;
 // LM control's running maximum: the compare's latency, |.| ahead of it; T_MAXIMA partial maxima
-const int T_CMP_LAT = 2, T_ABS_LAT = 2, T_MAXIMA = T_CMP_LAT;
+const int T_CMP_LAT = 1, T_ABS_LAT = 2, T_MAXIMA = T_CMP_LAT;
 const int N_UNITS = 4;  // --units: Update units per unit set
 const int LOCAL_COLS = (MAX_W + 1 + N_UNITS - 1) / N_UNITS;  // columns of [W | b] per bank
 const int STATUS_CONVERGED = 0;
@@ -2411,7 +2411,7 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
     for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
-#pragma HLS PIPELINE II=11
+#pragma HLS PIPELINE II=4
         for (int t = 0; t < TILE; ++t) {
             if (r0 + t < ROWS) {
                 const T m = moved[r0 + t];
@@ -2507,7 +2507,7 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 103, 581);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 103, 416);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -2541,7 +2541,7 @@ bool reduce_0() {
         FGC_CYCLES("reduce_0", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
         FGC_CYCLES("reduce_0", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
-        FGC_CYCLES("reduce_0", 0, "scatter", 6, 1, 13);
+        FGC_CYCLES("reduce_0", 0, "scatter", 6, 1, 6);
     }
     return finite;
 }
@@ -2560,8 +2560,8 @@ T noise_0(T noise) {
         noise += rounding_noise<8, 7, 6>(ab, scale);
         FGC_CYCLES("noise_0", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_0", 0, "rows", 6, 1, 60);
-        FGC_CYCLES("noise_0", 0, "terms", 2, 11, 38);
+        FGC_CYCLES("noise_0", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_0", 0, "terms", 2, 4, 14);
     }
     return noise;
 }
@@ -2579,7 +2579,7 @@ T cost_of_0(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 18], DATA_BUF[FACTOR_DATA_OFF[f] + 19]);
         total += cost;
     }
-    FGC_CYCLES("factor_0_cost", 0, "instances", 1, 48, 475);
+    FGC_CYCLES("factor_0_cost", 0, "instances", 1, 48, 377);
     return total;
 }
 
@@ -2611,7 +2611,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 1, 11);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 1, 4);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
@@ -2645,7 +2645,7 @@ bool reduce_1() {
         FGC_CYCLES("reduce_1", 0, "rows", 3, fgc_units::dot_ii(3, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(3, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
         FGC_CYCLES("reduce_1", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(4));
-        FGC_CYCLES("reduce_1", 0, "scatter", 3, 1, 13);
+        FGC_CYCLES("reduce_1", 0, "scatter", 3, 1, 6);
     }
     return finite;
 }
@@ -2664,16 +2664,16 @@ T noise_1(T noise) {
         noise += rounding_noise<4, 4, 3>(ab, scale);
         FGC_CYCLES("noise_1", 0, "load", 6, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 4, 1, 1);
-        FGC_CYCLES("noise_1", 0, "rows", 3, 1, 49);
-        FGC_CYCLES("noise_1", 0, "terms", 1, 11, 38);
+        FGC_CYCLES("noise_1", 0, "rows", 3, 1, 18);
+        FGC_CYCLES("noise_1", 0, "terms", 1, 4, 14);
     }
     return noise;
 }
 
-// block 1, cost mode: `total` plus the cost of its instances in order, one every II=11 cycles
+// block 1, cost mode: `total` plus the cost of its instances in order, one every II=4 cycles
 T cost_of_1(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=11
+#pragma HLS PIPELINE II=4
         const int f = BLOCK1_INSTANCES[i];
         T in[3], dat[4], half[1];
         T unused[12];
@@ -2683,7 +2683,7 @@ T cost_of_1(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         total += cost;
     }
-    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 11, 49);
+    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 4, 18);
     return total;
 }
 
@@ -2715,7 +2715,7 @@ void evaluate_2(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 2, 11);
+    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 2, 4);
 }
 
 // block 2's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -2749,7 +2749,7 @@ bool reduce_2() {
         FGC_CYCLES("reduce_2", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
         FGC_CYCLES("reduce_2", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
-        FGC_CYCLES("reduce_2", 0, "scatter", 6, 1, 13);
+        FGC_CYCLES("reduce_2", 0, "scatter", 6, 1, 6);
     }
     return finite;
 }
@@ -2768,16 +2768,16 @@ T noise_2(T noise) {
         noise += rounding_noise<8, 7, 6>(ab, scale);
         FGC_CYCLES("noise_2", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_2", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_2", 0, "rows", 6, 1, 60);
-        FGC_CYCLES("noise_2", 0, "terms", 2, 11, 38);
+        FGC_CYCLES("noise_2", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_2", 0, "terms", 2, 4, 14);
     }
     return noise;
 }
 
-// block 2, cost mode: `total` plus the cost of its instances in order, one every II=11 cycles
+// block 2, cost mode: `total` plus the cost of its instances in order, one every II=5 cycles
 T cost_of_2(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=11
+#pragma HLS PIPELINE II=5
         const int f = BLOCK2_INSTANCES[i];
         T in[6], dat[7], half[1];
         T unused[48];
@@ -2787,7 +2787,7 @@ T cost_of_2(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
         total += cost;
     }
-    FGC_CYCLES("factor_2_cost", 0, "instances", 1, 11, 60);
+    FGC_CYCLES("factor_2_cost", 0, "instances", 1, 5, 22);
     return total;
 }
 
@@ -3059,7 +3059,7 @@ void evaluate_3(const T x[N_X]) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
         }
     }
-    FGC_CYCLES("factor_3_jacobian", 0, "instances", 7, 143, 864);
+    FGC_CYCLES("factor_3_jacobian", 0, "instances", 7, 143, 621);
 }
 
 // block 3's whitened rows of instance f from AB, padded to 32 columns (a multiple of PORTS)
@@ -3098,7 +3098,7 @@ bool reduce_3() {
         FGC_CYCLES("reduce_3", 0, "rows", 21, fgc_units::dot_ii(21, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(21, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
         FGC_CYCLES("reduce_3", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(32));
-        FGC_CYCLES("reduce_3", 0, "scatter", 30, 1, 13);
+        FGC_CYCLES("reduce_3", 0, "scatter", 30, 1, 6);
     }
     return finite;
 }
@@ -3122,8 +3122,8 @@ T noise_3(T noise) {
         noise += rounding_noise<32, 31, 21>(ab, scale);
         FGC_CYCLES("noise_3", 0, "load", 336, 1, 2);
         FGC_CYCLES("noise_3", 0, "scales", 32, 1, 1);
-        FGC_CYCLES("noise_3", 0, "rows", 21, 1, 126);
-        FGC_CYCLES("noise_3", 0, "terms", 6, 11, 38);
+        FGC_CYCLES("noise_3", 0, "rows", 21, 1, 46);
+        FGC_CYCLES("noise_3", 0, "terms", 6, 4, 14);
     }
     return noise;
 }
@@ -3142,7 +3142,7 @@ T cost_of_3(const T x[N_X], T total) {
         cost += robust_loss(half[1], DATA_BUF[FACTOR_DATA_OFF[f] + 213], DATA_BUF[FACTOR_DATA_OFF[f] + 214]);
         total += cost;
     }
-    FGC_CYCLES("factor_3_cost", 0, "instances", 7, 60, 807);
+    FGC_CYCLES("factor_3_cost", 0, "instances", 7, 60, 600);
     return total;
 }
 
@@ -3174,7 +3174,7 @@ void evaluate_4(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_4_jacobian", 0, "instances", 8, 1, 11);
+    FGC_CYCLES("factor_4_jacobian", 0, "instances", 8, 1, 4);
 }
 
 // block 4's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -3208,7 +3208,7 @@ bool reduce_4() {
         FGC_CYCLES("reduce_4", 0, "rows", 3, fgc_units::dot_ii(3, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(3, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
         FGC_CYCLES("reduce_4", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
-        FGC_CYCLES("reduce_4", 0, "scatter", 6, 1, 13);
+        FGC_CYCLES("reduce_4", 0, "scatter", 6, 1, 6);
     }
     return finite;
 }
@@ -3227,16 +3227,16 @@ T noise_4(T noise) {
         noise += rounding_noise<8, 7, 3>(ab, scale);
         FGC_CYCLES("noise_4", 0, "load", 12, 1, 2);
         FGC_CYCLES("noise_4", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_4", 0, "rows", 3, 1, 60);
-        FGC_CYCLES("noise_4", 0, "terms", 1, 11, 38);
+        FGC_CYCLES("noise_4", 0, "rows", 3, 1, 22);
+        FGC_CYCLES("noise_4", 0, "terms", 1, 4, 14);
     }
     return noise;
 }
 
-// block 4, cost mode: `total` plus the cost of its instances in order, one every II=11 cycles
+// block 4, cost mode: `total` plus the cost of its instances in order, one every II=4 cycles
 T cost_of_4(const T x[N_X], T total) {
     for (int i = 0; i < 8; ++i) {
-#pragma HLS PIPELINE II=11
+#pragma HLS PIPELINE II=4
         const int f = BLOCK4_INSTANCES[i];
         T in[12], dat[4], half[1];
         T unused[24];
@@ -3246,7 +3246,7 @@ T cost_of_4(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         total += cost;
     }
-    FGC_CYCLES("factor_4_cost", 0, "instances", 8, 11, 49);
+    FGC_CYCLES("factor_4_cost", 0, "instances", 8, 4, 18);
     return total;
 }
 
@@ -3286,7 +3286,7 @@ T rounding_noise_all(const T x[N_X]) {
             scale = fgc_abs(x[i]) > scale ? fgc_abs(x[i]) : scale;
         }
         VAR_SCALE[v] = scale;
-        FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 2, 4);
+        FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 1, 3);
     }
     T noise = T(0);
     noise = noise_0(noise);
@@ -3398,7 +3398,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_0(xv, dv, ov);
         for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 0, "variables", 8, 36, 277);
+    FGC_CYCLES("retract", 0, "variables", 8, 36, 203);
     for (int i = 0; i < 8; ++i) {  // a variable every II=1 cycles (the plan's)
 #pragma HLS PIPELINE II=1
         const int v = KIND1_VARIABLES[i];
@@ -3408,7 +3408,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_1(xv, dv, ov);
         for (int k = 0; k < 3; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 1, "variables", 8, 1, 11);
+    FGC_CYCLES("retract", 1, "variables", 8, 1, 4);
     for (int i = 0; i < 8; ++i) {  // a variable every II=2 cycles (the plan's)
 #pragma HLS PIPELINE II=2
         const int v = KIND2_VARIABLES[i];
@@ -3418,7 +3418,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_2(xv, dv, ov);
         for (int k = 0; k < 6; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 2, "variables", 8, 2, 11);
+    FGC_CYCLES("retract", 2, "variables", 8, 2, 4);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -3431,8 +3431,8 @@ struct LesConfig {
     static const int MAX_F = ::fgc::MAX_F;
     static const int N_UNITS = ::fgc::N_UNITS;
     static const int LOCAL_COLS = ::fgc::LOCAL_COLS;
-    static const int PARTIALS = 11;  // interleaved partial sums (= ADD_LAT: II 1)
-    static const int ADD_LAT = 11, MUL_LAT = 8, DIV_LAT = 28, SQRT_LAT = 28;
+    static const int PARTIALS = 4;  // interleaved partial sums (= ADD_LAT: II 1)
+    static const int ADD_LAT = 4, MUL_LAT = 3, DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
 };
 
@@ -3595,7 +3595,7 @@ bool eliminate_all(T mu) {
     FGC_EVENT("solve");
     FGC_PHASE("qr_stack");
     const T root_mu = fgc_sqrt(mu);
-    FGC_CYCLES("stack", 0, "root_mu", 1, 1, 28);
+    FGC_CYCLES("stack", 0, "root_mu", 1, 1, 15);
     bool ok = true;
     for (int l = 0; l < N_LEVELS; ++l) {
         for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 2) {
@@ -3788,7 +3788,7 @@ Step try_steps(T cost, T mu[1]) {
         FGC_PHASE("lm_control");
         FGC_CYCLES("decide", 0, "step_test", N_TANGENT, fgc_units::dot_ii(N_TANGENT, T_PARTIALS, T_ADD_LAT),
                    T_MUL_LAT + T_ADD_LAT + fgc_units::dot_depth(N_TANGENT, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("decide", 0, "decision", 1, 1, 68);
+        FGC_CYCLES("decide", 0, "decision", 1, 1, 30);
         if (ok) {
             if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
             retract_all(X, DELTA, X_TRIAL);

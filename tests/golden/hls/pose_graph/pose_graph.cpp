@@ -20,10 +20,10 @@
 //   process qr0_evaluate
 //   process qr0_collect
 //   process backsub_set0
-//   stream qr0_v0 depth=22: qr0_broadcast -> qr0_update0
-//   stream qr0_v1 depth=22: qr0_broadcast -> qr0_update1
-//   stream qr0_v2 depth=22: qr0_broadcast -> qr0_update2
-//   stream qr0_v3 depth=22: qr0_broadcast -> qr0_update3
+//   stream qr0_v0 depth=8: qr0_broadcast -> qr0_update0
+//   stream qr0_v1 depth=8: qr0_broadcast -> qr0_update1
+//   stream qr0_v2 depth=8: qr0_broadcast -> qr0_update2
+//   stream qr0_v3 depth=8: qr0_broadcast -> qr0_update3
 //   stream qr0_t0 depth=3: qr0_finish -> qr0_update0
 //   stream qr0_t1 depth=3: qr0_finish -> qr0_update1
 //   stream qr0_t2 depth=3: qr0_finish -> qr0_update2
@@ -64,10 +64,10 @@ const int MAX_LD = 20;  // padded row length of the widest step
 // the plan's operator latencies of T and L; the kernel's dot products and Grams interleave
 // ADD_LAT partial sums (a sum comes back to the adder after it is done: II 1)
 const int PORTS = 2;  // words a cycle through a memory's two ports (true dual-port RAM): the copies
-const int T_ADD_LAT = 11, T_MUL_LAT = 8, T_PARTIALS = T_ADD_LAT;
-const int L_ADD_LAT = 11, L_MUL_LAT = 8, L_PARTIALS = L_ADD_LAT;
+const int T_ADD_LAT = 4, T_MUL_LAT = 3, T_PARTIALS = T_ADD_LAT;
+const int L_ADD_LAT = 4, L_MUL_LAT = 3, L_PARTIALS = L_ADD_LAT;
 // LM control's running maximum: the compare's latency, |.| ahead of it; T_MAXIMA partial maxima
-const int T_CMP_LAT = 2, T_ABS_LAT = 2, T_MAXIMA = T_CMP_LAT;
+const int T_CMP_LAT = 1, T_ABS_LAT = 2, T_MAXIMA = T_CMP_LAT;
 const int N_UNITS = 4;  // --units: Update units per unit set
 const int LOCAL_COLS = (MAX_W + 1 + N_UNITS - 1) / N_UNITS;  // columns of [W | b] per bank
 const int STATUS_CONVERGED = 0;
@@ -1068,7 +1068,7 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
     for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
-#pragma HLS PIPELINE II=11
+#pragma HLS PIPELINE II=4
         for (int t = 0; t < TILE; ++t) {
             if (r0 + t < ROWS) {
                 const T m = moved[r0 + t];
@@ -1165,7 +1165,7 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 13; ++c) AB[a0 + r * 13 + c] = ab[r * 16 + c];
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 6, 40, 614);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 6, 40, 428);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 16 columns (a multiple of PORTS)
@@ -1200,7 +1200,7 @@ bool reduce_0() {
         FGC_CYCLES("reduce_0", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
         FGC_CYCLES("reduce_0", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(16));
-        FGC_CYCLES("reduce_0", 0, "scatter", 12, 1, 13);
+        FGC_CYCLES("reduce_0", 0, "scatter", 12, 1, 6);
     }
     return finite;
 }
@@ -1220,8 +1220,8 @@ T noise_0(T noise) {
         noise += rounding_noise<16, 13, 6>(ab, scale);
         FGC_CYCLES("noise_0", 0, "load", 48, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 16, 1, 1);
-        FGC_CYCLES("noise_0", 0, "rows", 6, 1, 82);
-        FGC_CYCLES("noise_0", 0, "terms", 2, 11, 38);
+        FGC_CYCLES("noise_0", 0, "rows", 6, 1, 30);
+        FGC_CYCLES("noise_0", 0, "terms", 2, 4, 14);
     }
     return noise;
 }
@@ -1239,7 +1239,7 @@ T cost_of_0(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         total += cost;
     }
-    FGC_CYCLES("factor_0_cost", 0, "instances", 6, 24, 505);
+    FGC_CYCLES("factor_0_cost", 0, "instances", 6, 24, 388);
     return total;
 }
 
@@ -1271,7 +1271,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 581);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -1305,7 +1305,7 @@ bool reduce_1() {
         FGC_CYCLES("reduce_1", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
         FGC_CYCLES("reduce_1", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
-        FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 13);
+        FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 6);
     }
     return finite;
 }
@@ -1324,8 +1324,8 @@ T noise_1(T noise) {
         noise += rounding_noise<8, 7, 6>(ab, scale);
         FGC_CYCLES("noise_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_1", 0, "rows", 6, 1, 60);
-        FGC_CYCLES("noise_1", 0, "terms", 2, 11, 38);
+        FGC_CYCLES("noise_1", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_1", 0, "terms", 2, 4, 14);
     }
     return noise;
 }
@@ -1343,7 +1343,7 @@ T cost_of_1(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         total += cost;
     }
-    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 48, 475);
+    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 48, 377);
     return total;
 }
 
@@ -1377,7 +1377,7 @@ T rounding_noise_all(const T x[N_X]) {
             scale = fgc_abs(x[i]) > scale ? fgc_abs(x[i]) : scale;
         }
         VAR_SCALE[v] = scale;
-        FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 2, 4);
+        FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 1, 3);
     }
     T noise = T(0);
     noise = noise_0(noise);
@@ -1462,7 +1462,7 @@ void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
         retract_0(xv, dv, ov);
         for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 0, "variables", 5, 36, 277);
+    FGC_CYCLES("retract", 0, "variables", 5, 36, 203);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -1475,8 +1475,8 @@ struct LesConfig {
     static const int MAX_F = ::fgc::MAX_F;
     static const int N_UNITS = ::fgc::N_UNITS;
     static const int LOCAL_COLS = ::fgc::LOCAL_COLS;
-    static const int PARTIALS = 11;  // interleaved partial sums (= ADD_LAT: II 1)
-    static const int ADD_LAT = 11, MUL_LAT = 8, DIV_LAT = 28, SQRT_LAT = 28;
+    static const int PARTIALS = 4;  // interleaved partial sums (= ADD_LAT: II 1)
+    static const int ADD_LAT = 4, MUL_LAT = 3, DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
 };
 
@@ -1622,7 +1622,7 @@ bool eliminate_all(T mu) {
     FGC_EVENT("solve");
     FGC_PHASE("qr_stack");
     const T root_mu = fgc_sqrt(mu);
-    FGC_CYCLES("stack", 0, "root_mu", 1, 1, 28);
+    FGC_CYCLES("stack", 0, "root_mu", 1, 1, 15);
     bool ok = true;
     for (int l = 0; l < N_LEVELS; ++l) {
         for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 1) {
@@ -1779,7 +1779,7 @@ Step try_steps(T cost, T mu[1]) {
         FGC_PHASE("lm_control");
         FGC_CYCLES("decide", 0, "step_test", N_TANGENT, fgc_units::dot_ii(N_TANGENT, T_PARTIALS, T_ADD_LAT),
                    T_MUL_LAT + T_ADD_LAT + fgc_units::dot_depth(N_TANGENT, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("decide", 0, "decision", 1, 1, 68);
+        FGC_CYCLES("decide", 0, "decision", 1, 1, 30);
         if (ok) {
             if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
             retract_all(X, DELTA, X_TRIAL);

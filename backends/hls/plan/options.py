@@ -1,0 +1,98 @@
+"""The design options of an accelerator plan (:class:`PlanOptions`) and their defaults.
+
+The factor datapath's and the state update's default ``ALLOCATION`` limits live here as the
+options' defaults; the units that apply them are :mod:`fgc_backends.hls.units.datapath` and
+:mod:`fgc_backends.hls.units.state_update`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from fgc.ir.program import Program
+from fgc_backends.hls.plan.model import PlanError
+from fgc_backends.hls.target import DEFAULT_PART
+
+# default ALLOCATION limits of the factor datapath, per kernel operator kind (design: the sim
+# model's factor pool, so both models share one datapath size)
+DEFAULT_ALLOCATION = (("add", 16), ("mul", 24), ("div", 4), ("sqrt", 2), ("trig", 2),
+                      ("special", 2))
+
+# default ALLOCATION limits of the state update's datapath per variable type (design: it runs
+# once per trial step over the variables, so it is kept small; a Pose3 retraction at these
+# limits takes a variable every 36 cycles, set by its special functions)
+STATE_ALLOCATION = (("add", 4), ("mul", 6), ("div", 1), ("sqrt", 1), ("trig", 2), ("special", 1))
+
+
+ALLOCATION_SCALING = ("instances", "uniform")
+
+JACOBIAN_STORAGE = ("whitened", "raw")
+
+HESSIAN_STORAGE = ("frontal", "dense", "blocked")
+
+
+@dataclass(frozen=True)
+class PlanOptions:
+    units: int = 4  # n_u Update units per QR unit set
+    cpe: int = 20  # Cholesky process elements
+    unit_sets: int | None = None  # QR unit sets: None = 2 for two-ended chains, else 1
+    allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
+    # how a block type's datapath gets its share of ``allocation``: "instances" (default): the
+    # heaviest type (most operations × instances) gets the limits, every other type
+    # ⌈limit × min(1, n / n_heaviest)⌉ (at least 1) for its n instances, so a prior evaluated
+    # once a linearisation does not hold the IMU datapath's operators (the factor_jacobian
+    # phase runs the types one after another; a few-instance type's loop is short whatever
+    # its II); "uniform": every type gets the whole limit (capped by its own operation counts
+    # in both rules)
+    allocation_scaling: str = "instances"
+    state_allocation: tuple[tuple[str, int], ...] = STATE_ALLOCATION  # retract_<k>'s limits
+    hgc_lanes: int = 16  # multiply-accumulate lanes of the Hessian/gradient unit
+    # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
+    # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and
+    # ±1 entries are not stored), the residual and W's parameters, whitened while stacking
+    # (a "whiten_stack" phase of multiply-accumulates before the linear solver)
+    jacobian_storage: str = "whitened"
+    # Cholesky: "frontal" (emitted): each elimination step's frontal [H | g] through the cascade
+    # in turn (multifrontal); what-if, not emitted: "dense", the whole lower triangle of [H | g]
+    # as one matrix; "blocked", only H's envelope in chain (variable) order - Cholesky fills no
+    # entry outside it - and the cascade streams only that
+    hessian_storage: str = "frontal"
+    # the precisions the design computes in (operator table, word width): None = the Program's
+    # (SolverConfig.precision, and its les_precision for the linear solver); an HLS design
+    # emitted in another scalar than the Program's sets them (for_config)
+    precision: str | None = None
+    les_precision: str | None = None
+    # the FPGA part whose device capacities the fit verdict uses (hls/target.py; an HLS
+    # design's HlsConfig.part, which run_hls.tcl names)
+    part: str = DEFAULT_PART
+
+    @classmethod
+    def of(cls, program: Program, **changes) -> PlanOptions:
+        base = dict(units=program.solver.units, cpe=program.solver.cpe)
+        base.update(changes)
+        return cls(**base)
+
+    @classmethod
+    def for_config(cls, config, program: Program, **changes) -> PlanOptions:
+        """The options of the design an HLS config emits for ``program``: the Program's n_u
+        and #CPE, the config's unit sets, and the operators of the scalar types it emits
+        (``HlsConfig.scalar_cxx`` for the whole accelerator, ``linear_cxx`` for the linear
+        solver), not the Program's precision: a float design of a float64 Program is priced in
+        float32 operators."""
+        base = dict(unit_sets=config.unit_sets, precision=scalar_precision(config.scalar_cxx),
+                    les_precision=scalar_precision(config.linear_cxx), part=config.part)
+        if getattr(config, "allocation", None):  # the config's limits over the defaults
+            base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
+                                        **dict(config.allocation)}.items())
+        base.update(changes)
+        return cls.of(program, **base)
+
+
+def scalar_precision(scalar_cxx: str) -> str:
+    """The operator-table precision of an emitted C++ scalar type."""
+    if scalar_cxx == "float":
+        return "float32"
+    if scalar_cxx == "double":
+        return "float64"
+    raise PlanError(f"no operator table for the scalar type {scalar_cxx!r} (float32 and float64 "
+                    "only: fgc has no fixed-point operator table)")

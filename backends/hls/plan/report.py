@@ -1,0 +1,113 @@
+"""What the plan reports: phase groups, the summary ``fgc simulate`` / ``fgc report`` print, the
+options the emitter builds and the emitted process network."""
+
+from __future__ import annotations
+
+from fgc.ir.program import Program
+from fgc_backends.hls.plan.assemble import build_plan
+from fgc_backends.hls.plan.cost import phase_cycles, plan_cost, plan_power_w
+from fgc_backends.hls.plan.model import AcceleratorPlan, Channel, Cost
+from fgc_backends.hls.plan.options import PlanOptions
+
+
+def phase_groups(cost: Cost) -> tuple[tuple[str, int], ...]:
+    """Per-iteration cycles of the plan's phases with their level number dropped (``qr_level3``
+    and ``qr_level4`` add up under ``qr``), in first-seen order."""
+    groups: dict[str, int] = {}
+    for name, cycles in cost.phase_cycles:
+        key = phase_group(name)
+        groups[key] = groups.get(key, 0) + cycles
+    return tuple(groups.items())
+
+
+def plan_summary(program: Program, iterations: int, options: PlanOptions | None = None) -> dict:
+    """What ``fgc simulate`` / ``fgc report`` print as hardware figures, all from
+    ``plan_cost(build_plan(program, options))``: ``iterations`` × one iteration's cycles by
+    phase group, latency, resources and their share of the part's device (``options.part``,
+    default the xc7z045), memory words, and power /
+    energy (:func:`plan_power_w`: the sim model's power approach on the plan's resources)."""
+    plan = build_plan(program, options)
+    c = plan_cost(plan)
+    k = max(1, int(iterations))
+    device = plan.target.device
+    caps = {"dsp": device.dsp, "bram": device.bram36, "lut": device.lut, "ff": device.ff}
+    res = {"dsp": c.dsp, "bram": c.bram36, "lut": c.lut, "ff": c.ff}
+    power = plan_power_w(c)
+    latency_ms = k * c.latency_ms
+    return {"source": "accelerator plan (fgc_backends.hls.plan: plan_cost of build_plan)",
+            "device": device.name, "part": plan.options.part, "clock_mhz": c.clock_mhz,
+            "iterations": k,
+            "cycles": k * c.cycles, "iteration_cycles": c.cycles, "latency_ms": latency_ms,
+            "linear_cycles": k * c.linear_cycles,
+            "cycles_by_unit": {name: k * cyc for name, cyc in phase_groups(c)},
+            "resources": res, "utilization": {key: res[key] / caps[key] for key in caps},
+            "fits": c.fits, "memory_words": c.words, "power_w": power,
+            "energy_mj": power * latency_ms}
+
+
+EMITTED = {"jacobian_storage": ("whitened",), "hessian_storage": ("frontal",)}
+
+
+def emitted_options(options: PlanOptions) -> list[str]:
+    """The options of ``options`` the HLS emitter does not build (what-if designs), as text."""
+    return [f"{k}={getattr(options, k)!r}" for k, ok in EMITTED.items()
+            if getattr(options, k) not in ok]
+
+
+def unit_sets(plan: AcceleratorPlan) -> int:
+    """QR unit sets of ``plan`` (0 for Cholesky)."""
+    return sum(1 for u in plan.units if u.name.endswith("_evaluate"))
+
+
+def backsub_units(plan: AcceleratorPlan) -> int:
+    """Back-substitution units of ``plan``: one per QR unit set, one for Cholesky (the
+    emitted ``backsub_set<u>`` processes of back_substitute's ``backsub_level`` region)."""
+    return max(1, unit_sets(plan))
+
+
+def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Channel, ...]]:
+    """The dataflow processes and streams the emitter prints for ``plan``: the linear solver's
+    (the unit headers' regions: per QR unit set broadcast, qr_finish, n_u Update units,
+    Evaluate and collect; for Cholesky the feed, the #CPE process elements and the drain),
+    then back-substitution's (the kernel's ``backsub_level`` region: one ``backsub_set<u>``
+    per unit, :func:`backsub_units`, side by side). Streams are the plan's stream channels;
+    the back-substitution units have none (each reads its own conditional and separator
+    buffers and writes its own frontal buffer, the region's arguments: nothing passes from
+    one unit to another)."""
+    if plan.linear == "qr":
+        procs = tuple(p for s in range(unit_sets(plan)) for p in (
+            f"qr{s}_broadcast", f"qr{s}_finish",
+            *(f"qr{s}_update{u}" for u in range(plan.options.units)),
+            f"qr{s}_evaluate", f"qr{s}_collect"))
+    else:
+        procs = ("cpe_feed", *(f"cpe{i}" for i in range(plan.options.cpe)), "cpe_drain")
+    procs += tuple(f"backsub_set{u}" for u in range(backsub_units(plan)))
+    return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
+
+
+# the plan phase group (a phase's name without its level number) -> the run event (FGC_EVENT in
+# accel.cpp.jinja) that executes it once: how a counting C simulation's phases are priced
+# (bench/bench_cycles.py) and how the on-chip stream's model counts a call's phases
+# (fgc_backends.hls.window)
+PHASE_TRIGGER = {"setup": "call", "factor_jacobian": "linearize", "gradient": "linearize",
+                 "hgc": "linearize", "qr_stack": "solve", "qr": "solve", "qr_commit": "solve",
+                 "backsub": "solve", "assemble": "solve", "cholesky": "solve", "store": "solve",
+                 "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
+                 "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}
+
+
+def phase_group(name: str) -> str:
+    """A plan phase's group: its name without the level number (qr_level3 -> qr)."""
+    head, _, tail = name.rpartition("_level")
+    return head if head and tail.isdigit() else name
+
+
+def plan_groups(plan: AcceleratorPlan) -> dict[str, int]:
+    """Per phase group of ``plan`` the cycles of one execution of its per-iteration and
+    per-rejection phases."""
+    group: dict[str, int] = {}
+    for ph in plan.phases:
+        if ph.per in ("iteration", "rejection"):
+            g = phase_group(ph.name)
+            group[g] = group.get(g, 0) + phase_cycles(ph)
+    return group

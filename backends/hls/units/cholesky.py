@@ -1,0 +1,206 @@
+"""The Cholesky unit (paper B): the HGC (H = JᵀJ, g = Jᵀr per instance) and the cascade of #CPE
+process elements (``include/fgc_cpe.h``'s ``cpe_step``), each elimination step's frontal
+[H | g] assembled, factored and stored (multifrontal, as emitted); what-if designs factor the
+whole [H | g] (dense, or its envelope: "blocked") through one cascade."""
+
+from __future__ import annotations
+
+import math
+
+from fgc_backends.cfamily.sparsity import TILE
+from fgc_backends.cost.operators import OperatorTable
+from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_dot, kernel_loop
+from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
+from fgc_backends.hls.units.memories import solver_memories
+from fgc_backends.hls.units.qr import commit_loops
+from fgc_backends.hls.units.spec import UnitSpec
+
+
+def cpe_round_depth(active: int, cpe: int, ops: OperatorTable) -> int:
+    """Depth of one ``cpe_round`` (backends/hls/include/fgc_cpe.h) as a loop of trip = its words
+    at II 1: the region's slowest process is a CPE with a pivot (words + 1 words, its latency
+    Ls + Ld + Lm + La deep), the others add their fill: each other CPE with a pivot its latency,
+    each idle CPE 1, the feed and the drain 2 each; + 1 for the status word."""
+    cpe_depth = ops.sqrt.latency + ops.div.latency + ops.mul.latency + ops.add.latency
+    return active * cpe_depth + (cpe - active) + 2 + 2 + 1
+
+
+def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
+                   name: str = "s") -> list[Loop]:
+    """The loops of ``cpe_step`` (backends/hls/include/fgc_cpe.h) on one step's [H | g] of f
+    frontal and s separator columns, as the csim counters count them: mu on the diagonal, one
+    ``Loop`` per round (trip = its words at II 1, depth :func:`cpe_round_depth`), the copy of
+    [H | g] when f = 0, the pivot check. The whole matrix as one step (f = n, s = 0) is what the
+    Cholesky phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
+    w = frontal + separator
+    loops = [Loop(f"{name}_damping", frontal, 1, ops.add.latency)]
+    for r, p0 in enumerate(range(0, frontal, cpe)):
+        m = w - p0
+        loops.append(Loop(f"{name}_round{r}", m * (m + 1) // 2 + m, 1,
+                          cpe_round_depth(min(cpe, frontal - p0), cpe, ops)))
+    if frontal == 0:
+        loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 1))
+    loops.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
+    return loops
+
+
+def hgc_loops(program, timing: dict) -> list[Process]:
+    """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded,
+    :data:`PORTS` words a cycle, the column map, its packed Gram in GRAM zeroed, the Gram
+    panels - one row of a panel a cycle into the adder latency's interleaved partial sums of
+    TILE x (tiles TILE) entries, a dot product of its rows (:func:`kernel_dot`) - each panel's
+    lower-triangle entries out into GRAM (folded, a word a cycle), the gradient scatter from
+    GRAM (II 1) and the finiteness check over the diagonal (interleaved partial sums: the
+    dot-product rule)), after G is zeroed."""
+    n_t = sum(v.dim for v in program.variables)
+    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
+    for i, b in enumerate(program.blocks):
+        m, d, padded, tiles = _block_shape(b)
+        n = sum(1 for f in program.factors if f.block == i)
+        cols = d + 1
+        loops = [kernel_loop("load", _ported(m * padded), "move", timing, n),
+                 kernel_loop("columns", d, "fill", timing, n),
+                 kernel_loop("zero_gram", cols * (cols + 1) // 2, "fill", timing, n)]
+        for k in range(tiles.count):
+            rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
+            loops += [kernel_dot("panel", rows, timing, n),
+                      kernel_loop("panel_out", TILE * wide * TILE, "fill", timing, n)]
+        loops += [kernel_loop("scatter", d, "scatter", timing, n),
+                  kernel_dot("check", cols, timing, n)]
+        procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
+    return procs
+
+
+def assemble_loops(tables: dict, s: int, max_w: int, timing: dict) -> list[Loop]:
+    """Cholesky's eliminate(): step s's [H | g] zeroed (MAX_W + 1 words a row, a word a cycle),
+    then per factor its packed Gram's lower triangle and gradient row (d (d + 1) / 2 + d
+    entries), per child its update matrix's upper triangle and reduced g (s (s + 1) / 2 + s),
+    each one loop of ``+=`` into the table-addressed frontal matrix whose entries all go to
+    different addresses (``scatter``: II 1)."""
+    w = tables["STEP_W"][s]
+    loops = [kernel_loop("zero", w * (max_w + 1), "fill", timing)]
+    fb = tables["STEP_FACTOR_BEGIN"]
+    for e in range(fb[s], fb[s + 1]):
+        fac = tables["STEP_FACTORS"][e]
+        d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
+        loops.append(kernel_loop("gram", d * (d + 1) // 2 + d, "scatter", timing))
+    cb = tables["STEP_CHILD_BEGIN"]
+    for e in range(cb[s], cb[s + 1]):
+        c = tables["STEP_CHILDREN"][e]
+        sc = tables["STEP_W"][c] - tables["STEP_F"][c]
+        loops.append(kernel_loop("child", sc * (sc + 1) // 2 + sc, "scatter", timing))
+    return loops
+
+
+def hessian_envelope(program) -> list[int]:
+    """For each column j of H (variables in the Program's order), its lowest structurally
+    non-zero row: H's envelope, which the Cholesky factor fills and does not leave."""
+    start, k = {}, 0
+    for v in program.variables:
+        start[v.key] = k
+        k += v.dim
+    n = k
+    dims = {v.key: v.dim for v in program.variables}
+    first = list(range(n))  # first non-zero column of each row
+    for f in program.factors:
+        lo = min(start[key] for key in f.keys)
+        for key in f.keys:
+            for i in range(start[key], start[key] + dims[key]):
+                first[i] = min(first[i], lo)
+    lowest = list(range(n))
+    for i, fi in enumerate(first):
+        for j in range(fi, i + 1):
+            lowest[j] = max(lowest[j], i)
+    return lowest
+
+
+def build(ctx) -> None:
+    """The HGC unit and phase, the #CPE cascade, and (as emitted) the frontal steps' assembly,
+    factorisation and store, or (what-if) one whole-matrix factorisation."""
+    program, opts, ops = ctx.program, ctx.opts, ctx.les
+    n = program.storage.columns
+    c = opts.cpe
+    # HGC: H = JᵀJ, g = Jᵀr over each instance's dense block rows × columns
+    macs = 0
+    for f in program.factors:
+        b = program.blocks[f.block]
+        cols = sum(b.variable_dims)
+        macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
+    ctx.units.append(Unit("hgc", "Hessian/gradient accumulation", opts.hgc_lanes,
+                          (("add", 1), ("mul", 1))))
+    if opts.hessian_storage == "frontal":  # as emitted: reduce_<b>'s loops (hgc_loops)
+        ctx.add_phase("solve", Phase("hgc", False, tuple(hgc_loops(program, ctx.les_timing)),
+                                     linear=True))
+    else:
+        ctx.add_phase("solve", Phase("hgc", False, (Process("hgc", "hgc", (
+            Loop("macs", math.ceil(macs / opts.hgc_lanes), 1,
+                 ops.mul.latency + ops.add.latency),)),), linear=True))
+    ctx.units.append(Unit("cpe", "Cholesky process element: Evaluate + Update", c,
+                          (("add", 1), ("mul", 1), ("div", 1), ("sqrt", 1)), extra_dsp=1))
+    if opts.hessian_storage == "frontal":
+        _frontal(ctx)
+        return
+    # what-if designs (not emitted): the whole [H | g] factored as one matrix, dense or by its
+    # envelope ("blocked", paper B's choice), through one cascade
+    for i in range(c):
+        ctx.channels.append(Channel(f"cpe_fifo{i}", "stream", n, ops.word_bits,
+                                    "cholesky_in" if i == 0 else f"cpe{i - 1}", f"cpe{i}"))
+    lowest = hessian_envelope(program) if opts.hessian_storage == "blocked" else [n - 1] * n
+    rounds = []
+    for r in range(math.ceil(n / c)):
+        m = n - r * c
+        words = sum(lowest[j] - j + 1 for j in range(r * c, n)) + m
+        rounds.append(Loop(f"round{r}", words, 1, cpe_round_depth(min(c, m), c, ops)))
+    ctx.add_phase("solve", Phase("cholesky", True, (Process("cascade", "cpe", tuple(rounds)),),
+                                 linear=True))
+    ctx.add_phase("solve", Phase("cholesky_scalar", False, (Process("damping_and_check", "cpe", (
+        Loop("damping", n, 1, ops.add.latency), Loop("pivot_check", n, 1, 2))),), linear=True))
+    ctx.memories.append(Memory("hessian", sum(lo - j + 1 for j, lo in enumerate(lowest)) + n,
+                               ops.word_bits, max(1, c // 4)))
+
+
+def _frontal(ctx) -> None:
+    """The emitted multifrontal Cholesky: per elimination step (one after another) its frontal
+    [H | g] through fgc_cpe.h's cpe_step (feed -> #CPE CPEs -> drain per round of #CPE pivots)
+    (back-substitution step by step is :mod:`fgc_backends.hls.units.backsub`'s)."""
+    program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
+    sizes = ctx.sizes
+    for i in range(c + 1):
+        ctx.channels.append(Channel(f"cpe_link{i}", "stream", sizes["MAX_W"], ops.word_bits,
+                                    "cpe_feed" if i == 0 else f"cpe{i - 1}",
+                                    f"cpe{i}" if i < c else "cpe_drain"))
+    loops = []
+    for st in program.schedule.steps:
+        loops += cpe_step_loops(st.frontal_dim, st.separator_dim, c, ops, name=f"s{st.index}")
+    tables, timing = ctx.tables, ctx.les_timing
+    # eliminate(s): [H | g] assembled from GRAM and the children's update matrices, the
+    # cascade, the conditional and update matrix stored into COND / NF
+    ctx.add_phase("solve", Phase("assemble", False, tuple(
+        Process(f"assemble{st.index}", "cpe", tuple(assemble_loops(
+            tables, st.index, sizes["MAX_W"], timing))) for st in program.schedule.steps),
+        linear=True))
+    ctx.add_phase("solve", Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
+                                 linear=True))
+    ctx.add_phase("solve", Phase("store", False, tuple(
+        Process(f"store{st.index}", "cpe", tuple(commit_loops(tables, st.index, timing, True)))
+        for st in program.schedule.steps), linear=True))
+    cols = sizes["MAX_W"] + 1
+    # accel.cpp.jinja's GRAM, HF, CONDBUF, UPDBUF (the frontal matrix of one step at a time) and
+    # cpe_step's second trailing-matrix buffer Hb (the rounds alternate between HF and Hb)
+    ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
+    ctx.memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    ctx.memories.append(Memory("frontal_b", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    ctx.memories.append(Memory("condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
+    ctx.memories.append(Memory("updbuf", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    solver_memories(sizes, ops, ctx.memories)
+
+
+SPEC = UnitSpec(
+    name="cholesky", role="HGC and the cascade of #CPE Cholesky process elements",
+    build=build, phases=("hgc", "assemble", "cholesky", "store", "cholesky_scalar"),
+    header="fgc_cpe.h",
+    constants=(("CPE", "#CPE process elements (PlanOptions.cpe)"),
+               ("MAX_W", "widest frontal matrix")),
+    printed_by="accel.cpp.jinja: eliminate -> fgc_cpe.h cpe_step",
+    applies=lambda program, options: program.solver.linear == "cholesky")
+

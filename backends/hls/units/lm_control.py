@@ -1,0 +1,89 @@
+"""LM control (optimize / try_steps): the gradient's maximum, |x|, the step test, the scalar
+decision, the accepted state copied back; the top's copies once per call and the rounding-noise
+pass on a rejected step. Kernel code of accel.cpp.jinja (no static header)."""
+
+from __future__ import annotations
+
+from fgc_backends.cfamily.sparsity import TILE
+from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_dot, kernel_loop
+from fgc_backends.hls.plan.model import Loop, Phase, Process, Unit
+from fgc_backends.hls.units.spec import UnitSpec
+
+
+def lm_control_phases(n_t: int, n_x: int, timing: dict) -> tuple[Phase, ...]:
+    """LM control as emitted (optimize / try_steps) over ``n_t`` tangent and ``n_x`` storage
+    words, in three phases by how often their loops run: ``lm_iteration`` once per
+    linearisation (the gradient's largest entry; |x|, at the top of try_steps), ``lm_control``
+    once per linear solve (the step test over δ, the scalar decision) and ``lm_accept`` once
+    per accepted step (x_trial copied into x). A plan iteration has one of each; an LM retry
+    adds a solve, not an iteration, and the last iteration of a run often accepts nothing. The
+    gradient maximum is partial maxima and the sums (|x|², ‖δ‖² and δᵀ(g + μδ)) interleaved
+    partial sums, all PIPELINEd at II 1 and priced by the dot-product rule
+    (:func:`kernel_dot`); the step test's terms pass a multiply and an add (g + μδ) before
+    their product."""
+    lead = timing["acc"][1]  # μδ, then g + μδ
+    return (Phase("lm_iteration", False, (Process("iterate", "lm_control", (
+                kernel_dot("gradient_max", n_t, timing, kind="max"),
+                kernel_dot("x_norm", n_x, timing))),)),
+            Phase("lm_control", False, (Process("decide", "lm_control", (
+                kernel_dot("step_test", n_t, timing, lead=lead),
+                kernel_loop("decision", 1, "decision", timing))),)),
+            Phase("lm_accept", False, (Process("accept", "lm_control", (
+                kernel_loop("accept", n_x, "move", timing),)),)))
+
+
+def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict) -> Phase:
+    """The top's copies once per call: ``x_in`` state words and ``data_in`` data words in,
+    ``x_out`` state words out."""
+    return Phase("setup", False, (Process("top", "lm_control", (
+        kernel_loop("x_in", x_in, "move", timing), kernel_loop("data_in", data_in, "move", timing),
+        kernel_loop("x_out", x_out, "move", timing))),), per="call")
+
+
+def rounding_noise_loops(program, timing: dict) -> list[Process]:
+    """rounding_noise_all(): each variable's largest storage entry, then per instance its rows
+    loaded (:data:`PORTS` words a cycle), the column scales, the rows' moved terms (a row a
+    cycle, its TILE partial sums unrolled) and their sum (TILE rows a step into TILE partial
+    sums)."""
+    la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
+    procs = [Process("variable_scale", "lm_control", tuple(
+        kernel_loop("scale", v.storage_dim, "max", timing) for v in program.variables))]
+    for i, b in enumerate(program.blocks):
+        m, _, padded, _ = _block_shape(b)
+        n = sum(1 for f in program.factors if f.block == i)
+        row_depth = 2 * lm + la * (padded // TILE + 2)
+        procs.append(Process(f"noise_{i}", "lm_control", (
+            kernel_loop("load", _ported(m * padded), "move", timing, n),
+            kernel_loop("scales", padded, "fill", timing, n),
+            Loop("rows", m, 1, row_depth, n),
+            kernel_loop("terms", -(-m // TILE), "acc2", timing, n))))
+    return procs
+
+
+def build(ctx) -> None:
+    """The lm_control unit and its phases: per iteration, per call (setup) and per rejected
+    step (rounding noise)."""
+    program, timing = ctx.program, ctx.timing
+    n_x = sum(v.storage_dim for v in program.variables)
+    n_t = sum(v.dim for v in program.variables)
+    # LM control (optimize / try_steps): the gradient's largest entry, |x|, the step test over
+    # δ (|δ|² and the predicted decrease), the scalar decision, the accepted x copied back
+    # (the step test at II 1 starts three multiplies and three adds a cycle: μδ, δ·δ,
+    # δ·(g + μδ); g + μδ and the two partial sums)
+    ctx.units.append(Unit("lm_control", "gain ratio, μ update, stopping rules", 1,
+                          (("add", 3), ("mul", 3), ("div", 1), ("compare", 1))))
+    for phase in lm_control_phases(n_t, n_x, timing):
+        ctx.add_phase("control", phase)
+    # once per call: the top's copies of x and the data in and x out
+    ctx.add_phase("call", setup_phase(n_x, ctx.sizes["N_DATA"], n_x, timing))
+    # when a trial step does not lower the cost: the rounding-noise band from AB
+    ctx.add_phase("rejection", Phase("rounding_noise", False,
+                                     tuple(rounding_noise_loops(program, timing)),
+                                     per="rejection"))
+
+
+SPEC = UnitSpec(
+    name="lm_control", role="LM control, the top's copies and the rounding-noise pass",
+    build=build, phases=("lm_iteration", "lm_control", "lm_accept", "setup", "rounding_noise"),
+    printed_by="accel.cpp.jinja: optimize, try_steps, rounding_noise_all")
+

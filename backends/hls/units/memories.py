@@ -1,0 +1,52 @@
+"""The kernel's stores: the state (X, X_TRIAL), the gradient and step (G, DELTA), the data buffer
+(DATA_BUF) the stream section writes a keyframe's words into, and the linear solver's
+conditionals and passed factors (COND, NF)."""
+
+from __future__ import annotations
+
+from fgc_backends.hls.plan.model import Memory
+from fgc_backends.hls.units.spec import UnitSpec
+
+
+def solver_memories(sizes, ops, memories) -> None:
+    """The linear solver's stores: conditionals (R | d) and the factors passed to parents."""
+    memories.append(Memory("cond", sizes["N_COND"], ops.word_bits, 1))
+    memories.append(Memory("nf", sizes["N_NF"], ops.word_bits, 1))
+
+
+def stream_memories(layout, t_bits: int, l_bits: int, batch_words: int) -> tuple[Memory, ...]:
+    """The memories the on-chip stream section adds to the window kernel
+    (``fgc_backends.hls.window``): the kept Bayes net's conditionals (R, S, d) and linearisation
+    points, the kept estimates, and with a batch kernel its estimates and conditionals
+    (``batch_words`` words a keyframe)."""
+    mems = []
+    if layout.kept:
+        n, kf, count = layout.kf_dim, layout.kf_words, layout.kept
+        mems += [Memory("kept_r", count * n * n, l_bits, 1),
+                 Memory("kept_s", count * n * n, l_bits, 1),
+                 Memory("kept_d", count * n, l_bits, 1),
+                 Memory("kept_points", 2 * count * kf, t_bits, 1),
+                 Memory("x_kept", count * kf, t_bits, 1)]
+    if layout.batch is not None:
+        b = layout.batch
+        mems += [Memory("batch_x", b.size * layout.kf_words, t_bits, 1),
+                 Memory("batch_cond", b.size * batch_words, l_bits, 1)]
+    return tuple(mems)
+
+
+def build(ctx) -> None:
+    """X, X_TRIAL, G with DELTA (two banks) and DATA_BUF."""
+    program, ops = ctx.program, ctx.ops
+    n_x = sum(v.storage_dim for v in program.variables)
+    n_t = sum(v.dim for v in program.variables)
+    ctx.memories.append(Memory("state", n_x, ops.word_bits, 1))  # X
+    ctx.memories.append(Memory("state_trial", n_x, ops.word_bits, 1))  # X_TRIAL
+    ctx.memories.append(Memory("gradient_delta", 2 * n_t, ops.word_bits, 2))  # G, DELTA
+    ctx.memories.append(Memory("data", ctx.sizes["N_DATA"], ops.word_bits, 1))  # DATA_BUF
+
+
+SPEC = UnitSpec(name="memories", role="state, gradient/step and data memories", build=build,
+                phases=(), printed_by="accel.cpp.jinja: X, X_TRIAL, G, DELTA, DATA_BUF")
+
+
+

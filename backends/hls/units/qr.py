@@ -1,0 +1,249 @@
+"""The Householder QR unit sets (paper A): per set one Evaluate unit and n_u Update units
+around ``qr_reflection``'s DATAFLOW region (``include/fgc_qr.h``), each elimination step
+stacked into the set's banks and committed to COND / NF by the kernel."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fgc_backends.cost.operators import OperatorTable
+from fgc_backends.cost.structure import stacked_pattern
+from fgc_backends.hls.plan.cost import phase_cycles
+from fgc_backends.hls.plan.loops import _assign, _ported, _region_cycles, kernel_loop
+from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
+from fgc_backends.hls.units.memories import solver_memories
+from fgc_backends.hls.units.spec import UnitSpec
+
+
+def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
+                  partials: int | None = None, name: str = "s") -> list[Loop]:
+    """The loops of ``qr_step`` (backends/hls/include/fgc_qr.h) on one step, as it executes them.
+
+    ``pattern``: the structural rows × (f + s) non-zeros of the stacked matrix (the right-hand
+    side, dense, is added here); a structural non-zero is taken as non-zero in value. Returns one
+    ``Loop`` (trip 1) per DATAFLOW region ``qr_reflection`` j = -1 ... k - 1 (k = min(rows,
+    w + 1)), whose depth is the region's cycles (slowest process plus the others' fill, and no
+    less than the Evaluate's end, which reads its column as the Update unit streams it: the same
+    loops and rule as the header's FGC_CYCLES / FGC_WAIT counters), then the pivot check.
+    ``partials`` is the header's CFG::PARTIALS (default: the adder latency, II 1).
+    """
+    la, lm, ld, ls = ops.add.latency, ops.mul.latency, ops.div.latency, ops.sqrt.latency
+    p = partials if partials is not None else la
+    nz = np.hstack([np.asarray(pattern, dtype=bool),
+                    np.ones((len(pattern), 1), dtype=bool)])
+    rows, cols = nz.shape
+    k = min(rows, cols)
+
+    # the active rows of each column as the units meet them (the fill of earlier reflections)
+    active = []
+    for j in range(k):
+        rows_j = [i for i in range(j, rows) if nz[i, j]]
+        if not rows_j:
+            active.append(0)  # all zero: skipped
+            continue
+        act = sorted(set(rows_j) | {j})
+        union = nz[act, j + 1:].any(axis=0)
+        nz[np.ix_(act, range(j + 1, cols))] = union
+        nz[act, j] = False
+        nz[j, j] = True
+        active.append(len(act))
+    tree = math.ceil(math.log2(p)) if p > 1 else 0
+    tree1 = math.ceil(math.log2(p + 1))  # the fold of the P partials and the pivot's term
+    out = []
+    for j in range(-1, k):
+        n = active[j] if j >= 0 else 0
+        # the broadcast (index 0) streams the vector, qr_finish (1) computes v_0, tau, R_jj
+        procs = [[Loop("vector", max(n, 1), 1, 2)],
+                 [Loop("read", 2, 1, 1), Loop("v0", 1, 1, ls + la if n else 1),
+                  Loop("tau", 1, 1, lm + ld if n else 1)]]
+        waits = []
+        for u in range(units):
+            # the unit's first column right of j; the next pivot column if it is j + 1 < k
+            c0 = j + 1 + (u - (j + 1)) % units
+            next_here = c0 == j + 1 and c0 < k
+            fused = n > 1 and next_here
+            # the n - 1 words below the pivot (the next pivot column's dot over them), then v_0
+            # (waiting for qr_finish's square root: its term is one more leaf of the fold's
+            # tree), then tau and R_jj (waiting for qr_finish's divide)
+            below = max(n - 1, 0)
+            loops = [Loop("header", 1, 1, 1),
+                     Loop("vector_dot", below, 1, lm + la) if fused else
+                     Loop("vector", below, 1, 1)]
+            waits.append((len(procs), len(loops), 1, "v0"))
+            if fused:
+                loops += [Loop("pivot_term", 1, 1, lm), Loop("fold", 1, 1, la * tree1)]
+            else:
+                loops.append(Loop("pivot_word", 1, 1, 1))
+            waits.append((len(procs), len(loops), 1, "tau"))
+            loops.append(Loop("tail", 2, 1, 1))
+            if n > 0 and j >= 0 and j % units == u:
+                loops.append(Loop("pivot_column", n, 1, 1))
+            if next_here:  # updated and streamed to the Evaluate first
+                if n > 1:
+                    loops += [Loop("scale", 1, 1, lm),
+                              Loop("axpy_next_column", rows - j, 1, lm + la)]
+                else:
+                    if n == 1:
+                        loops.append(Loop("negate", 1, 1, 1))
+                    loops.append(Loop("next_column", rows - c0, 1, 1))
+                if j >= 0:
+                    loops.append(Loop("row_out", 1, 1, 1))
+            # the unit's other columns right of j, through the flattened loops
+            lb = c0 // units + (1 if next_here else 0)
+            r = (cols - 1 - u) // units - lb + 1 if c0 < cols else 0
+            if r > 0 and n > 1:
+                loops += [Loop("dots", n * r, 1, lm + la), Loop("fold_scale", r, 1, la * tree + lm),
+                          Loop("axpys", n * r, 1, lm + la)]
+            elif r > 0 and j >= 0:
+                loops.append(Loop("negate_rows" if n == 1 else "rows_out", r, 1, 1))
+            procs.append(loops)
+        col = j + 1
+        if col < k:
+            # the Evaluate starts when the unit holding the column streams it; the squares are
+            # summed as the column arrives, then folded (the tail is the next region's qr_finish)
+            waits.append((len(procs), 0, 2 + col % units, "next_column"))
+            procs.append([Loop("receive_norm", rows - col, 1, lm + la),
+                          Loop("fold", 1, 1, la * tree)])
+        # the collector: row j of R out (cond / update) and the running scale
+        first = 0 if j < frontal else frontal  # rows out with their zeros left of the diagonal
+        procs.append([Loop("header", 1, 1, 1)]
+                     + ([Loop("row", cols - first, 1, 2)] if 0 <= j < k else []))
+        out.append(Loop(f"{name}_reflection{j + 1}", 1, 1, _region_cycles(procs, tuple(waits))))
+    out.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
+    return out
+
+
+def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
+                timing: dict) -> list[Loop]:
+    """accel.cpp.jinja's stack() of step s into its unit set's banks: the rows zeroed (all
+    n_u banks a cycle), each factor's rows [A | b] and each child's new-factor rows
+    :data:`PORTS` words a cycle, the damping rows' diagonal."""
+    f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
+    local = -(-(max_w + 1) // units)
+    loops = [kernel_loop("zero", m * local, "fill", timing)]
+    fb = tables["STEP_FACTOR_BEGIN"]
+    for e in range(fb[s], fb[s + 1]):
+        fac = tables["STEP_FACTORS"][e]
+        words = tables["FACTOR_A_OFF"][fac + 1] - tables["FACTOR_A_OFF"][fac]
+        loops.append(kernel_loop("factor_rows", _ported(words), "move", timing))
+    cb = tables["STEP_CHILD_BEGIN"]
+    for e in range(cb[s], cb[s + 1]):
+        c = tables["STEP_CHILDREN"][e]
+        sc = tables["STEP_W"][c] - tables["STEP_F"][c]
+        loops.append(kernel_loop("child_rows", _ported(tables["STEP_NF_ROWS"][c] * (sc + 1)),
+                                 "move", timing))
+    if damped:
+        loops.append(kernel_loop("damping", f, "fill", timing))
+    return loops
+
+
+def commit_loops(tables: dict, s: int, timing: dict, cholesky: bool) -> list[Loop]:
+    """A step's conditional into COND and its new factor (QR's commit(): STEP_NF_ROWS rows)
+    or update matrix (Cholesky's store at the end of eliminate(): w - f rows) into NF,
+    :data:`PORTS` words a cycle."""
+    w, f = tables["STEP_W"][s], tables["STEP_F"][s]
+    nf = w - f if cholesky else tables["STEP_NF_ROWS"][s]
+    return [kernel_loop("cond", _ported(f * (w + 1)), "move", timing),
+            kernel_loop("nf", _ported(nf * (w - f + 1)), "move", timing)]
+
+
+def unit_sets_of(program, opts) -> int:
+    """QR unit sets: the options' (default 2 for a two-ended chain, else 1), at most the widest
+    level's steps."""
+    sched = program.schedule
+    widest = max(len(level) for level in sched.levels)
+    sets = opts.unit_sets if opts.unit_sets is not None else (
+        2 if sched.structure_class == "chain" and sched.ordering == "two-ended" else 1)
+    return max(1, min(sets, widest))
+
+
+def build(ctx) -> None:
+    """The unit sets, their streams, per level the stack, the steps' regions and the commit,
+    and the sets' memories (accel.cpp.jinja's WORK<s>, CONDBUF<s>, UPDBUF<s>)."""
+    program, opts, ops = ctx.program, ctx.opts, ctx.les
+    sched = program.schedule
+    sets = ctx.shared["sets"] = unit_sets_of(program, opts)
+    damping = program.solver.method == "lm"
+    patterns = {st.index: stacked_pattern(program, st, damping) for st in sched.steps}
+    max_rows = ctx.sizes["MAX_ROWS"]
+    for s in range(sets):
+        ctx.units.append(Unit(f"qr{s}_evaluate", "Householder vector of a column", 1,
+                              (("add", 2), ("mul", 2), ("div", 1), ("sqrt", 1))))
+        ctx.units.append(Unit(f"qr{s}_update", "apply the reflector to a column", opts.units,
+                              (("add", 1), ("mul", 1))))
+        # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
+        # the vector below the pivot to each Update unit while qr_finish computes v_0, tau and
+        # R_jj from the norm and the pivot and streams them to each unit (R_jj also to collect);
+        # each unit streams the next column (its owner's) to Evaluate and its entries of R's
+        # row to collect; Evaluate writes one of the vector's and one of the norm's two
+        # buffers, which the next region's broadcast and qr_finish read
+        channels = ctx.channels
+        for u in range(opts.units):
+            channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
+                                    ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
+        for u in range(opts.units):
+            channels.append(Channel(f"qr{s}_t{u}", "stream", 3, ops.word_bits + 32,
+                                    f"qr{s}_finish", f"qr{s}_update{u}"))
+        channels.append(Channel(f"qr{s}_r", "stream", 1, ops.word_bits,
+                                f"qr{s}_finish", f"qr{s}_collect"))
+        for u in range(opts.units):
+            channels.append(Channel(f"qr{s}_col{u}", "stream", max_rows, ops.word_bits,
+                                    f"qr{s}_update{u}", f"qr{s}_evaluate"))
+            channels.append(Channel(f"qr{s}_row{u}", "stream", 2, ops.word_bits,
+                                    f"qr{s}_update{u}", f"qr{s}_collect"))
+        channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 1, ops.word_bits + 32,
+                                f"qr{s}_evaluate", f"qr{s}_broadcast"))
+        channels.append(Channel(f"qr{s}_hbuf", "pingpong", 2, ops.word_bits + 32,
+                                f"qr{s}_evaluate", f"qr{s}_finish"))
+    # per step: the regions of fgc_qr.h's qr_step (Evaluate of column k+1 overlaps the Update
+    # of column k in region k) and its store, one process per step
+    by_index = {st.index: Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
+        patterns[st.index], st.frontal_dim, opts.units, ops, name=f"s{st.index}")))
+        for st in sched.steps}
+    tables, timing = ctx.tables, ctx.les_timing
+    max_w = ctx.sizes["MAX_W"]
+    for li, level in enumerate(sched.levels):
+        # eliminate_all: each step stacked into its unit set's banks (√μ once per solve
+        # first), the level's steps on the unit sets side by side, each result committed
+        stack = [Process("root_mu", "qr_stack", (kernel_loop("root_mu", 1, "root", timing),))] \
+            if li == 0 else []
+        stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
+            tables, i, opts.units, max_w, damping, timing))) for i in level]
+        ctx.add_phase("solve", Phase(f"qr_stack_level{li}", False, tuple(stack), linear=True))
+        # eliminate_all hands a level's steps to the unit sets `sets` at a time, in level
+        # order: each chunk a DATAFLOW region of its sets side by side, the chunks one after
+        # another
+        chunks = [_assign([by_index[i] for i in level[c:c + sets]], sets, "qr", li)
+                  for c in range(0, len(level), sets)]
+        if len(chunks) == 1:
+            ctx.add_phase("solve", Phase(f"qr_level{li}", True, chunks[0], linear=True))
+        else:
+            ctx.add_phase("solve", Phase(f"qr_level{li}", False, tuple(
+                Process(f"qr{li}_chunk{c}", "qr_sets", (Loop(
+                    f"qr{li}_chunk{c}", 1, 1, phase_cycles(Phase("chunk", True, procs))),))
+                for c, procs in enumerate(chunks)), linear=True))
+        ctx.add_phase("solve", Phase(f"qr_commit_level{li}", False, tuple(
+            Process(f"commit{i}", "qr_commit", tuple(commit_loops(tables, i, timing, False)))
+            for i in level), linear=True))
+    sizes = ctx.sizes
+    cols = sizes["MAX_W"] + 1
+    local = -(-cols // opts.units)
+    for s in range(sets):  # accel.cpp.jinja's WORK<s>, CONDBUF<s>, UPDBUF<s>
+        ctx.memories.append(Memory(f"qr{s}_work", opts.units * sizes["MAX_ROWS"] * local,
+                                   ops.word_bits, opts.units))
+        ctx.memories.append(Memory(f"qr{s}_condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
+        ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
+    solver_memories(sizes, ops, ctx.memories)
+
+
+SPEC = UnitSpec(
+    name="qr", role="Householder QR unit sets: Evaluate + n_u Update units per set",
+    build=build, phases=("qr_stack", "qr", "qr_commit"), header="fgc_qr.h",
+    constants=(("UNITS", "n_u Update units (PlanOptions.units)"),
+               ("PARTIALS", "interleaved partial sums of a dot product (the adder latency)"),
+               ("MAX_ROWS", "rows of the widest stacked step"), ("MAX_W", "widest step")),
+    printed_by="accel.cpp.jinja: qr_set<s> -> fgc_qr.h qr_step",
+    applies=lambda program, options: program.solver.linear == "qr")
+

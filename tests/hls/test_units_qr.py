@@ -1,0 +1,68 @@
+"""The QR unit (backends/hls/units/qr.py): its unit sets, streams and memories as the plan holds
+them, and its step loops."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hls_programs import chain
+
+from fgc_backends.cost.operators import FLOAT32
+from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles
+from fgc_backends.hls.units.qr import qr_unit_loops, unit_sets_of
+
+
+@pytest.fixture(scope="module")
+def two_ended():
+    return chain(7, linear="qr")  # auto ordering: two-ended on a chain
+
+
+@pytest.fixture(scope="module")
+def serial():
+    return chain(7, linear="qr", ordering="serial")
+
+
+def test_unit_sets_default_to_two_on_a_two_ended_chain_and_are_capped(two_ended, serial):
+    widest = max(len(level) for level in two_ended.schedule.levels)
+    assert widest == 2
+    assert unit_sets_of(two_ended, PlanOptions.of(two_ended)) == 2
+    assert unit_sets_of(two_ended, PlanOptions.of(two_ended, unit_sets=5)) == widest
+    assert unit_sets_of(serial, PlanOptions.of(serial)) == 1
+
+
+@pytest.mark.parametrize("n_u", [1, 3])
+def test_each_set_has_an_evaluate_unit_n_u_update_units_and_their_streams(two_ended, n_u):
+    plan = build_plan(two_ended, PlanOptions.of(two_ended, units=n_u))
+    for s in range(2):
+        assert plan.unit(f"qr{s}_evaluate").instances == 1
+        assert plan.unit(f"qr{s}_update").instances == n_u
+        assert plan.unit(f"qr{s}_backsub").instances == 1
+        mine = [c for c in plan.channels if c.name.startswith(f"qr{s}_")]
+        # per Update unit: the vector, tau/R_jj, its column to Evaluate, its row out; R_jj once
+        assert sum(c.kind == "stream" for c in mine) == 4 * n_u + 1
+        assert sum(c.kind == "pingpong" for c in mine) == 2
+        work = next(m for m in plan.memories if m.name == f"qr{s}_work")
+        assert work.banks == n_u
+    assert {"cond", "nf"} <= {m.name for m in plan.memories}
+
+
+def test_more_update_units_never_slow_a_step():
+    pattern = np.ones((9, 6), dtype=bool)
+    cycles = [sum(lp.cycles for lp in qr_unit_loops(pattern, 3, u, FLOAT32)) for u in (1, 2, 4)]
+    assert cycles[0] > cycles[1] >= cycles[2]
+
+
+def test_a_zero_row_costs_nothing_in_the_reflections():
+    dense = np.ones((6, 4), dtype=bool)
+    sparse = dense.copy()
+    sparse[5] = False  # a row with no structural non-zero (a factor absent from this update)
+    full = [lp.cycles for lp in qr_unit_loops(dense, 2, 2, FLOAT32)]
+    less = [lp.cycles for lp in qr_unit_loops(sparse, 2, 2, FLOAT32)]
+    assert sum(less) < sum(full)
+
+
+def test_the_qr_phases_are_the_solvers_linear_phases(serial):
+    plan = build_plan(serial)
+    qr = [ph for ph in plan.phases if ph.name.startswith("qr_")]
+    assert qr and all(ph.linear for ph in qr)
+    assert sum(phase_cycles(ph) for ph in qr) > 0
