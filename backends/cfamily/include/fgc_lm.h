@@ -105,7 +105,11 @@ void optimize(typename CFG::T errors[2], int info[3]) {
         }
         const Step<T> step = try_steps<CFG>(cost, mu);
         if (step.kind != 0) {
-            status = step.kind == 1 ? CFG::STATUS_CONVERGED : CFG::STATUS_FAILED;
+            if (step.kind == 1) {  // (not ?: over the codes: C++14 would odr-use them)
+                status = CFG::STATUS_CONVERGED;
+            } else {
+                status = CFG::STATUS_FAILED;
+            }
             reason = step.reason;
             break;
         }
