@@ -15,10 +15,8 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-import jinja2
-
 from fgc.ir.program import Program
-from fgc_backends.cfamily import limits
+from fgc_backends.cfamily import limits, sources
 from fgc_backends.cfamily.context import common_context
 from fgc_backends.cfamily.names import comment, identifier, key_tokens
 from fgc_backends.cfamily.results import ERROR_FLOOR_FACTOR, REFERENCE_MAGIC, RESULT_MAGIC
@@ -93,9 +91,7 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     context["stream_magic"], context["stream_result_magic"] = STREAM_MAGIC, STREAM_RESULT_MAGIC
     batch = getattr(stream, "batch", None)
     context["extra_sources"] = [f"{batch.project}.cpp"] if batch is not None else []
-    env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
-                             undefined=jinja2.StrictUndefined, trim_blocks=True,
-                             lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+    env = sources.environment(config.template_dir())
     env.tests["constant_literal"] = is_constant_literal
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -123,7 +119,8 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
 
 
 def _copy_headers(out: Path) -> list[Path]:
-    """The csim stand-in for hls_stream.h into ``csim_include/`` and the unit headers into
+    """The csim stand-in for hls_stream.h into ``csim_include/`` and the unit headers (this
+    backend's and the C-family ones it shares with the native solver, fgc_lm.h) into
     ``include/``: the project builds on its own (only the Makefile puts csim_include on the
     include path; Vitis has its own hls_stream.h). Returns the unit headers (synthesised, so
     linted with the kernel; the stand-in is host code, never synthesised)."""
@@ -135,7 +132,7 @@ def _copy_headers(out: Path) -> list[Path]:
             target.write_bytes(header.read_bytes())
             if sub == "include":
                 units.append(target)
-    return units
+    return sorted(units + sources.copy_headers(out / "include"))
 
 
 def check_accel(program: Program, config: HlsConfig) -> None:

@@ -18,11 +18,10 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-import jinja2
 import numpy as np
 
 from fgc.ir.program import Program
-from fgc_backends.cfamily import limits
+from fgc_backends.cfamily import limits, sources
 from fgc_backends.cfamily.context import common_context
 from fgc_backends.cfamily.lint import lint_host_files
 from fgc_backends.cfamily.names import identifier
@@ -82,9 +81,7 @@ def emit(program: Program, out_dir: str | Path, config: NativeConfig | None = No
     check_limits(program, config)
     project = identifier(name or program.name)
     context = _context(program, config, project)
-    env = jinja2.Environment(loader=jinja2.FileSystemLoader(config.template_dir()),
-                             undefined=jinja2.StrictUndefined, trim_blocks=True,
-                             lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+    env = sources.environment(config.template_dir())
     env.tests["constant_literal"] = is_constant_literal
     texts = {}
     for template, pattern in FILES:
@@ -104,7 +101,8 @@ def emit(program: Program, out_dir: str | Path, config: NativeConfig | None = No
         path = out / file_name
         path.write_text(text)
         paths.append(path)
-    issues = lint_host_files([p for p in paths if p.suffix in (".cpp", ".h")])
+    shared = sources.copy_headers(out / "include")  # fgc_lm.h: LM control, shared with HLS
+    issues = lint_host_files([p for p in paths + shared if p.suffix in (".cpp", ".h")])
     if issues:
         listing = "\n".join(str(i) for i in issues[:20])
         raise NativeConfigError(f"internal error: the native project '{project}' allocates or "

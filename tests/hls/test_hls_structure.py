@@ -297,22 +297,23 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
     from fgc_backends.hls import HlsConfig
     from fgc_backends.hls.emitter import accel_plan
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
-    kernel = (out / "lio.cpp").read_text()
+    kernel, units = _texts(out, "lio", "fgc_lm_units.h")  # the reductions: LmConfig's hooks
     plan = accel_plan(program, HlsConfig(scalar="double"))
     # at 143 MHz the compare core is one stage (fcmp_..._1_2_no_dsp): one partial maximum
     assert plan.ops.add.latency > 1 and plan.ops.compare.latency >= 1
     assert f"T_ADD_LAT = {plan.ops.add.latency}," in kernel and "T_PARTIALS = T_ADD_LAT;" in kernel
     assert f"T_CMP_LAT = {plan.ops.compare.latency}," in kernel
     assert "T_MAXIMA = T_CMP_LAT;" in kernel
-    for array, update in (("xp", "xp[i % T_PARTIALS] += X[i] * X[i];"),
-                          ("dp", "dp[i % T_PARTIALS] += d * d;"),
-                          ("pp", "pp[i % T_PARTIALS] += d * (G[i] + mu[0] * d);"),
-                          ("gp", "gp[i % T_MAXIMA] = a > gp[i % T_MAXIMA]")):
-        at = kernel.index(update)
-        loop = kernel[kernel.rindex("for (int i = 0;", 0, at):at]
+    assert "PARTIALS = T_PARTIALS," in kernel and "MAXIMA = T_MAXIMA," in kernel
+    for array, update in (("xp", "xp[i % CFG::PARTIALS] += x[i] * x[i];"),
+                          ("dp", "dp[i % CFG::PARTIALS] += d * d;"),
+                          ("pp", "pp[i % CFG::PARTIALS] += d * (g[i] + mu * d);"),
+                          ("gp", "gp[i % CFG::MAXIMA] = a > gp[i % CFG::MAXIMA]")):
+        at = units.index(update)
+        loop = units[units.rindex("for (int i = 0;", 0, at):at]
         assert "#pragma HLS PIPELINE II=1\n" in loop, array
         assert f"#pragma HLS DEPENDENCE variable={array} inter false" in loop, array
-        assert f"#pragma HLS ARRAY_PARTITION variable={array} complete" in kernel, array
+        assert f"#pragma HLS ARRAY_PARTITION variable={array} complete" in units, array
     loops = {lp.name: lp for ph in plan.phases if ph.name.startswith("lm_")
              for pr in ph.processes for lp in pr.loops}
     n_t = sum(v.dim for v in program.variables)

@@ -188,8 +188,9 @@ def test_native_project_is_a_cpu_program_and_fgc_run_is_unchanged(tmp_path, caps
     assert main(["compile", BEACONS, "--backend", "native", "--out", str(nat), "-q"]) == 0
     assert main(["compile", BEACONS, "--backend", "hls", "--out", str(hw), "-q"]) == 0
     assert sorted(p.name for p in nat.iterdir()) == [
-        "Makefile", "data.txt", "native_range_beacons.cpp", "program.json", "range_beacons.cpp",
-        "range_beacons.h"]
+        "Makefile", "data.txt", "include", "native_range_beacons.cpp", "program.json",
+        "range_beacons.cpp", "range_beacons.h"]
+    assert sorted(p.name for p in (nat / "include").iterdir()) == ["fgc_lm.h"]  # shared LM
     assert "native_range_beacons.cpp" not in {p.name for p in hw.iterdir()}
     makefile = (nat / "Makefile").read_text()
     assert "csim" not in makefile and "tb_" not in makefile and "native:" in makefile

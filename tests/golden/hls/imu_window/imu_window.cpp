@@ -60,6 +60,8 @@
 #include "hls_stream.h"
 #include "fgc_cpe.h"
 #include "fgc_backsub.h"
+#include "fgc_lm.h"
+#include "fgc_lm_units.h"
 
 namespace fgc {
 namespace {
@@ -77,16 +79,6 @@ const T EPSILON = T(1.1920928955078125e-07);  // of the scalar type
 const T RESOLUTION = T(1.9073486328125e-06);  // 16 eps: the cost's relative resolution
 const T ABS_TOL = T(1e-14);
 const T SINGULAR_EPS = T(1.1920928955078125e-06);
-const int TILE = 4;  // partial sums interleaved TILE ways; rows padded to whole TILEs
-const int MAX_LD = 32;  // padded row length of the widest step
-// the plan's operator latencies of T and L; the kernel's dot products and Grams interleave
-// ADD_LAT partial sums (a sum comes back to the adder after it is done: II 1)
-const int PORTS = 2;  // words a cycle through a memory's two ports (true dual-port RAM): the copies
-const int T_ADD_LAT = 4, T_MUL_LAT = 3, T_PARTIALS = T_ADD_LAT;
-const int L_ADD_LAT = 4, L_MUL_LAT = 3, L_PARTIALS = L_ADD_LAT;
-// LM control's running maximum: the compare's latency, |.| ahead of it; T_MAXIMA partial maxima
-const int T_CMP_LAT = 1, T_ABS_LAT = 2, T_MAXIMA = T_CMP_LAT;
-const int N_CPE = 20;  // --cpe: process elements of the cascade
 const int STATUS_CONVERGED = 0;
 const int STATUS_MAX_ITERATIONS = 1;
 const int STATUS_FAILED = 2;
@@ -100,6 +92,16 @@ const int REASON_NON_FINITE = 6;
 const int REASON_SINGULAR = 7;
 const int REASON_COST_INCREASED = 8;
 const int REASON_LAMBDA_LIMIT = 9;
+const int TILE = 4;  // partial sums interleaved TILE ways; rows padded to whole TILEs
+const int MAX_LD = 32;  // padded row length of the widest step
+// the plan's operator latencies of T and L; the kernel's dot products and Grams interleave
+// ADD_LAT partial sums (a sum comes back to the adder after it is done: II 1)
+const int PORTS = 2;  // words a cycle through a memory's two ports (true dual-port RAM): the copies
+const int T_ADD_LAT = 4, T_MUL_LAT = 3, T_PARTIALS = T_ADD_LAT;
+const int L_ADD_LAT = 4, L_MUL_LAT = 3, L_PARTIALS = L_ADD_LAT;
+// LM control's running maximum: the compare's latency, |.| ahead of it; T_MAXIMA partial maxima
+const int T_CMP_LAT = 1, T_ABS_LAT = 2, T_MAXIMA = T_CMP_LAT;
+const int N_CPE = 20;  // --cpe: process elements of the cascade
 
 // ---- the schedule and layout as constant tables (ROMs; see fgc_backends/hls/tables.py)
 const int VAR_T_OFF[25] = {
@@ -2913,6 +2915,15 @@ struct LesConfig {
     static const int MAX_COLS = ::fgc::MAX_W + 1;  // w + 1: frontal, separator, right-hand side
     static const int MAX_F = ::fgc::MAX_F;
     static const int N_CPE = ::fgc::N_CPE;
+    static const bool LM = true;  // false: Gauss-Newton, no damping rows
+    // fgc_eliminate.h's loops: the tables' largest trip counts, the plan's (II, depth) of L
+    static const int MAX_STEP_FACTORS = 4, MAX_CHILDREN = 2;
+    static const int TRIP_COND = 465;  // a conditional, PORTS words a cycle
+    static const int TRIP_PACKED = 495;  // a packed Gram or update matrix
+    static const int TRIP_UPDATE = 465;  // an update matrix, PORTS words a cycle
+    static const int FILL_II = 1, FILL_DEPTH = 1;
+    static const int MOVE_II = 1, MOVE_DEPTH = 2;
+    static const int SCATTER_II = 1, SCATTER_DEPTH = 6;
     static const int PARTIALS = 4;  // interleaved partial sums (= ADD_LAT: II 1)
     static const int ADD_LAT = 4, MUL_LAT = 3, DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
@@ -2926,105 +2937,12 @@ L HF[MAX_W][LesConfig::MAX_COLS];  // the step's [H | g]
 L CONDBUF[MAX_F * LesConfig::MAX_COLS];  // its conditional (R | S | d)
 L UPDBUF[MAX_W * LesConfig::MAX_COLS];  // its update matrix (Schur complement | reduced g)
 
-// Step s: assemble, factor, store. False if not positive definite or a pivot is too small.
-bool eliminate(int s, T mu) {
-    FGC_PHASE("assemble");
-    const int w = STEP_W[s], f = STEP_F[s];
-    for (int i = 0; i < w; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-        for (int c = 0; c < MAX_W + 1; ++c) {
-#pragma HLS PIPELINE II=1
-            HF[i][c] = T(0);
-        }
-    }
-    FGC_CYCLES("assemble", 0, "zero", w * (MAX_W + 1), 1, 1);
-    // each factor's packed Gram (H's lower triangle, then its gradient row) and each child's
-    // update matrix (upper triangle and reduced g), one entry a cycle += into HF: within one
-    // loop every entry goes to its own address (the column maps are one-to-one), so no
-    // iteration waits for another's add (II 1); a later loop's entry may meet the same address
-    for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=4
-        const int fac = STEP_FACTORS[e];
-        const int cb = FACTOR_COLMAP_BEGIN[fac];
-        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
-        const int g0 = FACTOR_GRAM_OFF[fac];
-        const int n = d * (d + 1) / 2 + d;  // entry (p, q), q <= p, at p (p + 1) / 2 + q; row d: g
-        for (int k = 0, p = 0, q = 0; k < n; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=495
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HF inter false
-            const int a = p < d ? FACTOR_COLMAP[cb + p] : w, b = FACTOR_COLMAP[cb + q];
-            const int lo = b < a ? b : a, hi = b < a ? a : b;
-            HF[lo][hi] += GRAM[g0 + k];
-            if (q == p) {
-                q = 0;
-                ++p;
-            } else {
-                ++q;
-            }
-        }
-        FGC_CYCLES("assemble", 0, "gram", n, 1, 6);
-    }
-    for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=2
-        const int c = STEP_CHILDREN[e];
-        const int sc = STEP_W[c] - STEP_F[c];
-        const int mb = STEP_SEPMAP_BEGIN[c];
-        const int u0 = STEP_NF_OFF[c];
-        const int n = sc * (sc + 1) / 2 + sc;  // row a: columns a ... sc - 1, then its g (column sc)
-        for (int k = 0, a = 0, b = 0; k < n; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=495
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HF inter false
-            const int ma = STEP_SEPMAP[mb + a], mbb = b < sc ? STEP_SEPMAP[mb + b] : w;
-            const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
-            HF[lo][hi] += NF[u0 + a * (sc + 1) + b];
-            if (b == sc) {
-                ++a;
-                b = a;
-            } else {
-                ++b;
-            }
-        }
-        FGC_CYCLES("assemble", 0, "child", n, 1, 6);
-    }
-    bool not_pd = false, singular = false;
-    FGC_PHASE("cholesky");
-    fgc_units::cpe_step<LesConfig>(HF, f, w - f, mu, CONDBUF, UPDBUF, &not_pd, &singular);
-    if (singular) return false;
-    FGC_PHASE("store");
-    const int c0 = STEP_COND_OFF[s];
-    const int nc = f * (w + 1);
-    for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
-#pragma HLS LOOP_TRIPCOUNT max=465
-#pragma HLS PIPELINE II=1
-        for (int h = 0; h < PORTS; ++h) {
-            if (i + h < nc) COND[c0 + i + h] = CONDBUF[i + h];
-        }
-    }
-    FGC_CYCLES("store", 0, "cond", (nc + PORTS - 1) / PORTS, 1, 2);
-    const int sw = w - f;
-    const int u0 = STEP_NF_OFF[s];
-    const int nu = sw * (sw + 1);
-    for (int i = 0; i < nu; i += PORTS) {
-#pragma HLS LOOP_TRIPCOUNT max=465
-#pragma HLS PIPELINE II=1
-        for (int h = 0; h < PORTS; ++h) {
-            if (i + h < nu) NF[u0 + i + h] = UPDBUF[i + h];
-        }
-    }
-    FGC_CYCLES("store", 0, "nf", (nu + PORTS - 1) / PORTS, 1, 2);
-    return true;
-}
+// the elimination driver (fgc_eliminate.h) on these tables and memories
+#define FGC_ELIMINATE_CHOLESKY
+#include "fgc_eliminate.h"
 
-// Eliminate every step in schedule order, level by level.
 bool eliminate_all(T mu) {
-    FGC_EVENT("solve");
-    bool ok = true;
-    for (int i = 0; i < N_STEPS; ++i) {
-        if (ok) ok = eliminate(LEVEL_STEPS[i], mu);
-    }
-    return ok;
+    return cholesky_eliminate_all<LesConfig>(mu);
 }
 
 // ---- back-substitution: one unit per unit set, each on its own buffers (a level's steps go
@@ -3104,157 +3022,57 @@ bool solve(T mu) {
     return true;
 }
 
-// ---- LM control (paper B): solve, try x (+) delta in cost mode, accept or grow mu. A step
-// whose predicted decrease 0.5 delta^T (g + mu delta) is within the cost's resolution `band`
-// (16 eps of the cost, or its rounding noise at X if larger) is judged by that prediction (the
-// simulator's rule); the band is worked out only for a step that does not lower the cost.
-struct Step {
-    int kind;  // 0 accept, 1 converged, 2 failed
-    int reason;
-    T cost;
-    T predicted;
+// ---- LM control (paper B): the rules in fgc_lm.h (shared with the native solver), its
+// reductions in fgc_lm_units.h (interleaved partial sums at II 1); here the kernel's constants
+// and hooks. fgc_lm::optimize<LmConfig>: GN/LM iterations from X.
+struct LmConfig {
+    typedef ::fgc::T T;
+    static const int MAX_ITERATIONS = ::fgc::MAX_ITERATIONS, MAX_TRIES = ::fgc::MAX_TRIES;
+    static const bool LM = true;  // false: Gauss-Newton, mu stays 0
+    static const int STATUS_CONVERGED = ::fgc::STATUS_CONVERGED;
+    static const int STATUS_MAX_ITERATIONS = ::fgc::STATUS_MAX_ITERATIONS;
+    static const int STATUS_FAILED = ::fgc::STATUS_FAILED;
+    static const int REASON_GRADIENT = ::fgc::REASON_GRADIENT;
+    static const int REASON_STEP = ::fgc::REASON_STEP;
+    static const int REASON_PREDICTED_DECREASE = ::fgc::REASON_PREDICTED_DECREASE;
+    static const int REASON_ABSOLUTE_ERROR = ::fgc::REASON_ABSOLUTE_ERROR;
+    static const int REASON_RELATIVE_DECREASE = ::fgc::REASON_RELATIVE_DECREASE;
+    static const int REASON_MAX_ITERATIONS = ::fgc::REASON_MAX_ITERATIONS;
+    static const int REASON_NON_FINITE = ::fgc::REASON_NON_FINITE;
+    static const int REASON_SINGULAR = ::fgc::REASON_SINGULAR;
+    static const int REASON_COST_INCREASED = ::fgc::REASON_COST_INCREASED;
+    static const int REASON_LAMBDA_LIMIT = ::fgc::REASON_LAMBDA_LIMIT;
+    static T lambda_initial() { return LAMBDA_INITIAL; }
+    static T lambda_factor() { return LAMBDA_FACTOR; }
+    static T lambda_upper_bound() { return LAMBDA_UPPER_BOUND; }
+    static T mu_min() { return MU_MIN; }
+    static T eps_gradient() { return EPS_GRADIENT; }
+    static T eps_step() { return EPS_STEP; }
+    static T rel_tol() { return REL_TOL; }
+    static T resolution() { return RESOLUTION; }
+    static T abs_tol() { return ABS_TOL; }
+    static T root(T x) { return fgc_sqrt(x); }
+    static T magnitude(T x) { return fgc_abs(x); }
+    static bool finite(T x) { return fgc_isfinite(x); }
+    static T cost_x() { return total_cost(X); }
+    static bool linearize_x() { return linearize_all(X); }
+    static bool solve_at(T mu) { return solve(mu); }
+    static void retract_trial() { retract_all(X, DELTA, X_TRIAL); }
+    static T cost_trial() { return total_cost(X_TRIAL); }
+    static T noise_x() { return rounding_noise_all(X); }
+    static const int N_X = ::fgc::N_X, N_TANGENT = ::fgc::N_TANGENT;
+    static const int PARTIALS = T_PARTIALS, ADD_LAT = T_ADD_LAT, MUL_LAT = T_MUL_LAT;
+    static const int MAXIMA = T_MAXIMA, CMP_LAT = T_CMP_LAT, ABS_LAT = T_ABS_LAT;
+    static const int MOVE_II = 1, MOVE_DEPTH = 2;
+    static const int DECISION_II = 1, DECISION_DEPTH = 30;
+    static T x_norm() { return fgc_units::lm_x_norm<LmConfig>(X); }
+    static bool step_test(bool solved, T mu, T out[2]) {
+        return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);
+    }
+    static T gradient_max() { return fgc_units::lm_gradient_max<LmConfig>(G); }
+    static void accept_trial() { fgc_units::lm_accept<LmConfig>(X, X_TRIAL); }
+    static void accepted(int, T, T, T) {}  // no host to tell on chip
 };
-
-Step try_steps(T cost, T mu[1]) {
-    T band = T(-1);  // not yet known
-    // |x|^2: word i into partial sum i % T_PARTIALS (a word a cycle: II 1), folded in a tree;
-    // once per call (per linearisation), not per solve
-    T xp[T_PARTIALS];
-#pragma HLS ARRAY_PARTITION variable=xp complete
-    for (int p = 0; p < T_PARTIALS; ++p) {
-#pragma HLS UNROLL
-        xp[p] = T(0);
-    }
-    for (int i = 0; i < N_X; ++i) {
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=xp inter false
-        xp[i % T_PARTIALS] += X[i] * X[i];
-    }
-    const T x_norm = fgc_sqrt(fgc_units::fold_partials<T, T_PARTIALS>(xp));
-    FGC_PHASE("lm_iteration");
-    FGC_CYCLES("iterate", 0, "x_norm", N_X, fgc_units::dot_ii(N_X, T_PARTIALS, T_ADD_LAT),
-               fgc_units::dot_depth(N_X, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-    for (int t = 0; t < MAX_TRIES; ++t) {
-        const bool solved = solve(mu[0]);
-        if (!solved && !(mu[0] > T(0))) return Step{2, REASON_SINGULAR, cost, T(0)};
-        bool ok = solved;
-        // the step test: |delta|^2 and delta^T (g + mu delta), entry i into partial sums
-        // i % T_PARTIALS of each (II 1), folded in a tree
-        T dp[T_PARTIALS], pp[T_PARTIALS];
-#pragma HLS ARRAY_PARTITION variable=dp complete
-#pragma HLS ARRAY_PARTITION variable=pp complete
-        for (int p = 0; p < T_PARTIALS; ++p) {
-#pragma HLS UNROLL
-            dp[p] = T(0);
-            pp[p] = T(0);
-        }
-        for (int i = 0; i < N_TANGENT; ++i) {
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=dp inter false
-#pragma HLS DEPENDENCE variable=pp inter false
-            const T d = DELTA[i];
-            ok = ok && fgc_isfinite(d);
-            dp[i % T_PARTIALS] += d * d;
-            pp[i % T_PARTIALS] += d * (G[i] + mu[0] * d);
-        }
-        const T d2 = fgc_units::fold_partials<T, T_PARTIALS>(dp);
-        const T predicted = T(0.5) * fgc_units::fold_partials<T, T_PARTIALS>(pp);
-        FGC_PHASE("lm_control");
-        FGC_CYCLES("decide", 0, "step_test", N_TANGENT, fgc_units::dot_ii(N_TANGENT, T_PARTIALS, T_ADD_LAT),
-                   T_MUL_LAT + T_ADD_LAT + fgc_units::dot_depth(N_TANGENT, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("decide", 0, "decision", 1, 1, 30);
-        if (ok) {
-            if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
-            retract_all(X, DELTA, X_TRIAL);
-            const T trial = total_cost(X_TRIAL);
-            bool accept = fgc_isfinite(trial) && (trial < cost || !(mu[0] > T(0)));
-            if (!accept && fgc_isfinite(trial)) {
-                if (band < T(0)) {
-                    const T noise = rounding_noise_all(X);
-                    band = RESOLUTION * cost > noise ? T(RESOLUTION * cost) : noise;
-                }
-                accept = predicted <= band && trial <= cost + band;
-            }
-            if (accept) {
-                mu[0] = mu[0] / LAMBDA_FACTOR > MU_MIN ? T(mu[0] / LAMBDA_FACTOR) : MU_MIN;
-                return Step{0, 0, trial, predicted};
-            }
-        }
-        if (!(mu[0] > T(0))) return Step{2, REASON_NON_FINITE, cost, T(0)};
-        mu[0] = mu[0] * LAMBDA_FACTOR;
-        if (mu[0] > LAMBDA_UPPER_BOUND) return Step{2, REASON_LAMBDA_LIMIT, cost, T(0)};
-    }
-    return Step{2, REASON_LAMBDA_LIMIT, cost, T(0)};
-}
-
-// GN/LM iterations from X; returns {iterations, status, reason} and the initial and final cost.
-void optimize(T errors[2], int info[3]) {
-    T cost = total_cost(X);
-    errors[0] = cost;
-    T mu[1] = {LAMBDA_INITIAL};
-    int it = 0, status = STATUS_MAX_ITERATIONS, reason = REASON_MAX_ITERATIONS;
-    if (!fgc_isfinite(cost)) {
-        status = STATUS_FAILED;
-        reason = REASON_NON_FINITE;
-    }
-    for (int k = 0; k < MAX_ITERATIONS; ++k) {
-        if (status != STATUS_MAX_ITERATIONS) break;
-        if (!linearize_all(X)) {
-            status = STATUS_FAILED;
-            reason = REASON_NON_FINITE;
-            break;
-        }
-        ++it;
-        // the gradient's largest entry: entry i into partial maximum i % T_MAXIMA (II 1),
-        // folded in a tree of compares
-        T gp[T_MAXIMA];
-#pragma HLS ARRAY_PARTITION variable=gp complete
-        for (int p = 0; p < T_MAXIMA; ++p) {
-#pragma HLS UNROLL
-            gp[p] = T(0);
-        }
-        for (int i = 0; i < N_TANGENT; ++i) {
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=gp inter false
-            const T a = fgc_abs(G[i]);
-            gp[i % T_MAXIMA] = a > gp[i % T_MAXIMA] ? a : gp[i % T_MAXIMA];
-        }
-        const T g_max = fgc_units::fold_maxima<T, T_MAXIMA>(gp);
-        FGC_PHASE("lm_iteration");
-        FGC_CYCLES("iterate", 0, "gradient_max", N_TANGENT, fgc_units::dot_ii(N_TANGENT, T_MAXIMA, T_CMP_LAT),
-                   fgc_units::dot_depth(N_TANGENT, T_MAXIMA, T_CMP_LAT, T_ABS_LAT));
-        if (g_max < EPS_GRADIENT) {
-            status = STATUS_CONVERGED;
-            reason = REASON_GRADIENT;
-            break;
-        }
-        const Step step = try_steps(cost, mu);
-        if (step.kind != 0) {
-            status = step.kind == 1 ? STATUS_CONVERGED : STATUS_FAILED;
-            reason = step.reason;
-            break;
-        }
-        const T moved = fgc_abs(cost - step.cost) > step.predicted ? fgc_abs(cost - step.cost)
-                                                                    : step.predicted;
-        const T change = cost > T(0) ? T(moved / cost) : T(0);
-        for (int i = 0; i < N_X; ++i) X[i] = X_TRIAL[i];
-        FGC_EVENT("accept");
-        FGC_PHASE("lm_accept");
-        FGC_CYCLES("accept", 0, "accept", N_X, 1, 2);
-        cost = step.cost;
-        if (cost <= ABS_TOL) {
-            status = STATUS_CONVERGED;
-            reason = REASON_ABSOLUTE_ERROR;
-        } else if (change <= REL_TOL) {
-            status = STATUS_CONVERGED;
-            reason = REASON_RELATIVE_DECREASE;
-        }
-    }
-    errors[1] = cost;
-    info[0] = it;
-    info[1] = status;
-    info[2] = reason;
-}
 
 }  // namespace
 }  // namespace fgc
@@ -3279,7 +3097,7 @@ void imu_window_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
     }
     FGC_CYCLES("top", 0, "x_in", fgc::N_X, 1, 2);
     FGC_CYCLES("top", 0, "data_in", fgc::N_DATA, 1, 2);
-    fgc::optimize(errors, info);
+    fgc_lm::optimize<fgc::LmConfig>(errors, info);
     FGC_PHASE("setup");
     for (int i = 0; i < fgc::N_X; ++i) {
 #pragma HLS PIPELINE II=1

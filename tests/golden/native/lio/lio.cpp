@@ -17,6 +17,8 @@
 
 #include <cstring>
 
+#include "fgc_lm.h"
+
 // Inlined where it is called on the host (GCC keeps small fixed-size arrays in registers, and
 // never splits a function returning a vector off as a call); HLS inlines by its own pragmas
 #if defined(__GNUC__) && !defined(__SYNTHESIS__)
@@ -5301,111 +5303,77 @@ bool solve(T mu) {
     return true;
 }
 
-// ---- trust-region control (paper B): solve, try x (+) delta in cost mode, accept or grow mu.
-// Near the optimum the cost's rounding noise hides real progress, so a step whose predicted
-// decrease 0.5 delta^T (g + mu delta) is within the cost's resolution `band` (16 eps of the cost,
-// or its rounding noise at X if larger) is judged by that prediction (the simulator's rule). The
-// band is worked out only for a step that does not lower the cost, once per linearisation.
-struct Step {
-    int kind;  // 0 accept, 1 converged, 2 failed
-    int reason;
-    T cost;
-    T predicted;
-};
-
-Step try_steps(T cost, T* mu) {
-    T band = T(-1);  // not yet known
-    T x_norm2 = T(0);
-    for (int i = 0; i < N_X; ++i) x_norm2 += X[i] * X[i];
-    const T x_norm = fgc_sqrt(x_norm2);
-    for (int t = 0; t < MAX_TRIES; ++t) {
-        const bool solved = solve(*mu);
-        if (!solved && !(*mu > T(0))) return Step{2, REASON_SINGULAR, cost, T(0)};
+// ---- trust-region control (paper B): the rules in fgc_lm.h (shared with the HLS kernel); here
+// the kernel's constants and hooks, its sums plain loops. fgc_lm::optimize<LmConfig>: GN/LM
+// iterations from X.
+struct LmConfig {
+    typedef ::fgc::T T;
+    static const int MAX_ITERATIONS = ::fgc::MAX_ITERATIONS, MAX_TRIES = ::fgc::MAX_TRIES;
+    static const bool LM = true;  // false: Gauss-Newton, mu stays 0
+    static const int STATUS_CONVERGED = ::fgc::STATUS_CONVERGED;
+    static const int STATUS_MAX_ITERATIONS = ::fgc::STATUS_MAX_ITERATIONS;
+    static const int STATUS_FAILED = ::fgc::STATUS_FAILED;
+    static const int REASON_GRADIENT = ::fgc::REASON_GRADIENT;
+    static const int REASON_STEP = ::fgc::REASON_STEP;
+    static const int REASON_PREDICTED_DECREASE = ::fgc::REASON_PREDICTED_DECREASE;
+    static const int REASON_ABSOLUTE_ERROR = ::fgc::REASON_ABSOLUTE_ERROR;
+    static const int REASON_RELATIVE_DECREASE = ::fgc::REASON_RELATIVE_DECREASE;
+    static const int REASON_MAX_ITERATIONS = ::fgc::REASON_MAX_ITERATIONS;
+    static const int REASON_NON_FINITE = ::fgc::REASON_NON_FINITE;
+    static const int REASON_SINGULAR = ::fgc::REASON_SINGULAR;
+    static const int REASON_COST_INCREASED = ::fgc::REASON_COST_INCREASED;
+    static const int REASON_LAMBDA_LIMIT = ::fgc::REASON_LAMBDA_LIMIT;
+    static T lambda_initial() { return LAMBDA_INITIAL; }
+    static T lambda_factor() { return LAMBDA_FACTOR; }
+    static T lambda_upper_bound() { return LAMBDA_UPPER_BOUND; }
+    static T mu_min() { return MU_MIN; }
+    static T eps_gradient() { return EPS_GRADIENT; }
+    static T eps_step() { return EPS_STEP; }
+    static T rel_tol() { return REL_TOL; }
+    static T resolution() { return RESOLUTION; }
+    static T abs_tol() { return ABS_TOL; }
+    static T root(T x) { return fgc_sqrt(x); }
+    static T magnitude(T x) { return fgc_abs(x); }
+    static bool finite(T x) { return fgc_isfinite(x); }
+    static T cost_x() { return total_cost(X); }
+    static bool linearize_x() { return linearize_all(X); }
+    static bool solve_at(T mu) { return solve(mu); }
+    static void retract_trial() { retract_all(X, DELTA, X_TRIAL); }
+    static T cost_trial() { return total_cost(X_TRIAL); }
+    static T noise_x() { return rounding_noise_all(X); }
+    static T x_norm() {
+        T x_norm2 = T(0);
+        for (int i = 0; i < N_X; ++i) x_norm2 += X[i] * X[i];
+        return fgc_sqrt(x_norm2);
+    }
+    static bool step_test(bool solved, T mu, T out[2]) {
         bool ok = solved;
         T d2 = T(0), predicted = T(0);
         for (int i = 0; i < N_TANGENT; ++i) {
             ok = ok && fgc_isfinite(DELTA[i]);
             d2 += DELTA[i] * DELTA[i];
-            predicted += DELTA[i] * (G[i] + *mu * DELTA[i]);
+            predicted += DELTA[i] * (G[i] + mu * DELTA[i]);
         }
-        predicted = T(0.5) * predicted;
-        if (ok) {
-            if (fgc_sqrt(d2) <= EPS_STEP * (x_norm + EPS_STEP)) return Step{1, REASON_STEP, cost, T(0)};
-            retract_all(X, DELTA, X_TRIAL);
-            const T trial = total_cost(X_TRIAL);
-            bool accept = fgc_isfinite(trial) && (trial < cost || !(*mu > T(0)));
-            if (!accept && fgc_isfinite(trial)) {
-                if (band < T(0)) {
-                    const T noise = rounding_noise_all(X);
-                    band = RESOLUTION * cost > noise ? T(RESOLUTION * cost) : noise;
-                }
-                accept = predicted <= band && trial <= cost + band;
-            }
-            if (accept) {
-                *mu = *mu / LAMBDA_FACTOR > MU_MIN ? T(*mu / LAMBDA_FACTOR) : MU_MIN;
-                return Step{0, 0, trial, predicted};
-            }
-        }
-        if (!(*mu > T(0))) return Step{2, REASON_NON_FINITE, cost, T(0)};
-        *mu = *mu * LAMBDA_FACTOR;
-        if (*mu > LAMBDA_UPPER_BOUND) return Step{2, REASON_LAMBDA_LIMIT, cost, T(0)};
+        out[0] = d2;
+        out[1] = T(0.5) * predicted;
+        return ok;
     }
-    return Step{2, REASON_LAMBDA_LIMIT, cost, T(0)};
-}
-
-// GN/LM iterations from X; returns {iterations, status, reason} and the initial and final cost.
-void optimize(T errors[2], int info[3]) {
-    T cost = total_cost(X);
-    errors[0] = cost;
-    T mu = LAMBDA_INITIAL;
-    int it = 0, status = STATUS_MAX_ITERATIONS, reason = REASON_MAX_ITERATIONS;
-    if (!fgc_isfinite(cost)) {
-        status = STATUS_FAILED;
-        reason = REASON_NON_FINITE;
-    }
-    for (int k = 0; k < MAX_ITERATIONS; ++k) {
-        if (status != STATUS_MAX_ITERATIONS) break;
-        if (!linearize_all(X)) {
-            status = STATUS_FAILED;
-            reason = REASON_NON_FINITE;
-            break;
-        }
-        ++it;
+    static T gradient_max() {
         T g_max = T(0);
         for (int i = 0; i < N_TANGENT; ++i) g_max = fgc_abs(G[i]) > g_max ? fgc_abs(G[i]) : g_max;
-        if (g_max < EPS_GRADIENT) {
-            status = STATUS_CONVERGED;
-            reason = REASON_GRADIENT;
-            break;
-        }
-        const Step step = try_steps(cost, &mu);
-        if (step.kind != 0) {
-            status = step.kind == 1 ? STATUS_CONVERGED : STATUS_FAILED;
-            reason = step.reason;
-            break;
-        }
-        const T moved = fgc_abs(cost - step.cost) > step.predicted ? fgc_abs(cost - step.cost)
-                                                                    : step.predicted;
-        const T change = cost > T(0) ? T(moved / cost) : T(0);
+        return g_max;
+    }
+    static void accept_trial() {
         for (int i = 0; i < N_X; ++i) X[i] = X_TRIAL[i];
-        cost = step.cost;
+    }
+    // after each accepted step: the host's progress display, when one is set (fgc_set_progress)
+    static void accepted(int it, T cost, T mu, T change) {
         if (progress_hook != nullptr) {
             progress_hook(it, static_cast<double>(cost), static_cast<double>(mu),
                           static_cast<double>(change));
         }
-        if (cost <= ABS_TOL) {
-            status = STATUS_CONVERGED;
-            reason = REASON_ABSOLUTE_ERROR;
-        } else if (change <= REL_TOL) {
-            status = STATUS_CONVERGED;
-            reason = REASON_RELATIVE_DECREASE;
-        }
     }
-    errors[1] = cost;
-    info[0] = it;
-    info[1] = status;
-    info[2] = reason;
-}
+};
 
 #ifndef __SYNTHESIS__
 // The host's inputs: x into X, the caller's data read where it is, laned once per call.
@@ -5440,7 +5408,7 @@ void lio_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #else
     fgc::host_inputs(x_in, data);
 #endif
-    fgc::optimize(errors, info);
+    fgc_lm::optimize<fgc::LmConfig>(errors, info);
     for (int i = 0; i < fgc::N_X; ++i) x_out[i] = fgc::X[i];
 }
 

@@ -1,0 +1,139 @@
+// fgc_lm.h: Levenberg-Marquardt / Gauss-Newton control, shared by the native solver and the HLS
+// accelerator (one copy of the rules: a change to a stopping test lands here and in both).
+//
+//   template <class CFG> void optimize(typename CFG::T errors[2], int info[3]);
+//
+// GN/LM iterations from the kernel's estimate X: errors = {initial cost, final cost}, info =
+// {iterations, status, reason}. Per iteration: linearise, stop on a small gradient, then
+// try_steps: solve at mu, take x (+) delta in cost mode, accept (mu shrinks) or grow mu. A step
+// whose predicted decrease 0.5 delta^T (g + mu delta) is within the cost's resolution `band`
+// (16 eps of the cost, or its rounding noise at X if larger) is judged by that prediction (the
+// simulator's rule); the band is worked out only for a step that does not lower the cost, once
+// per linearisation.
+//
+// CFG (the kernel defines it; fgc_backends/cfamily/templates/common.jinja prints its constants)
+// holds what is the problem's or the backend's:
+//   T; MAX_ITERATIONS, MAX_TRIES; LM (false: Gauss-Newton, mu stays 0); the STATUS_* and
+//   REASON_* codes; the scalar settings as functions returning T (lambda_initial(),
+//   lambda_factor(), lambda_upper_bound(), mu_min(), eps_gradient(), eps_step(), rel_tol(),
+//   resolution(), abs_tol()); root (sqrt), magnitude (abs), finite (isfinite) of T;
+//   the kernel's hooks: cost_x() (the cost at X), linearize_x() (false: not finite),
+//   gradient_max() (the gradient's largest |entry|), x_norm() (|X|), solve_at(mu) (false:
+//   singular), step_test(solved, mu, out) (false: not solved or delta not finite; out = {|delta|^2,
+//   predicted decrease}), retract_trial() (X_TRIAL = X (+) DELTA), cost_trial() (the cost at
+//   X_TRIAL), noise_x() (the cost's rounding noise at X), accept_trial() (X = X_TRIAL),
+//   accepted(it, cost, mu, change) (after each accepted step: the native host's progress).
+// The reductions live in the hooks: the HLS kernel's run in interleaved partial sums at II 1
+// (fgc_lm_units.h) and count cycles, the native solver's are plain loops.
+#ifndef FGC_LM_H
+#define FGC_LM_H
+
+namespace fgc_lm {
+
+template <class T>
+struct Step {
+    int kind;  // 0 accept, 1 converged, 2 failed
+    int reason;
+    T cost;
+    T predicted;
+};
+
+template <class CFG>
+Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
+    typedef typename CFG::T T;
+    T band = T(-1);  // not yet known
+    const T x_norm = CFG::x_norm();  // once per call (per linearisation), not per solve
+    for (int t = 0; t < CFG::MAX_TRIES; ++t) {
+        const bool solved = CFG::solve_at(mu[0]);
+        if (!solved && !(mu[0] > T(0))) return Step<T>{2, CFG::REASON_SINGULAR, cost, T(0)};
+        T test[2];  // |delta|^2, the predicted decrease
+        const bool ok = CFG::step_test(solved, mu[0], test);
+        const T d2 = test[0], predicted = test[1];
+        if (ok) {
+            if (CFG::root(d2) <= CFG::eps_step() * (x_norm + CFG::eps_step())) {
+                return Step<T>{1, CFG::REASON_STEP, cost, T(0)};
+            }
+            CFG::retract_trial();
+            const T trial = CFG::cost_trial();
+            bool accept = CFG::finite(trial) && (trial < cost || !(mu[0] > T(0)));
+            if (!accept && CFG::finite(trial)) {
+                if (band < T(0)) {
+                    const T noise = CFG::noise_x();
+                    band = CFG::resolution() * cost > noise ? T(CFG::resolution() * cost) : noise;
+                }
+                accept = predicted <= band && trial <= cost + band;
+            }
+            if (accept) {
+                if (CFG::LM) {
+                    mu[0] = mu[0] / CFG::lambda_factor() > CFG::mu_min()
+                                ? T(mu[0] / CFG::lambda_factor()) : CFG::mu_min();
+                }
+                return Step<T>{0, 0, trial, predicted};
+            }
+        }
+        if (!(mu[0] > T(0))) return Step<T>{2, CFG::REASON_NON_FINITE, cost, T(0)};
+        mu[0] = mu[0] * CFG::lambda_factor();
+        if (mu[0] > CFG::lambda_upper_bound()) {
+            return Step<T>{2, CFG::REASON_LAMBDA_LIMIT, cost, T(0)};
+        }
+    }
+    return Step<T>{2, CFG::REASON_LAMBDA_LIMIT, cost, T(0)};
+}
+
+template <class CFG>
+void optimize(typename CFG::T errors[2], int info[3]) {
+    typedef typename CFG::T T;
+    T cost = CFG::cost_x();
+    errors[0] = cost;
+    T mu[1] = {CFG::lambda_initial()};
+    int it = 0, status = CFG::STATUS_MAX_ITERATIONS, reason = CFG::REASON_MAX_ITERATIONS;
+    if (!CFG::finite(cost)) {
+        status = CFG::STATUS_FAILED;
+        reason = CFG::REASON_NON_FINITE;
+    }
+    for (int k = 0; k < CFG::MAX_ITERATIONS; ++k) {
+        if (status != CFG::STATUS_MAX_ITERATIONS) break;
+        if (!CFG::linearize_x()) {
+            status = CFG::STATUS_FAILED;
+            reason = CFG::REASON_NON_FINITE;
+            break;
+        }
+        ++it;
+        if (CFG::gradient_max() < CFG::eps_gradient()) {
+            status = CFG::STATUS_CONVERGED;
+            reason = CFG::REASON_GRADIENT;
+            break;
+        }
+        const Step<T> step = try_steps<CFG>(cost, mu);
+        if (step.kind != 0) {
+            if (step.kind == 1) {  // (not ?: over the codes: C++14 would odr-use them)
+                status = CFG::STATUS_CONVERGED;
+            } else {
+                status = CFG::STATUS_FAILED;
+            }
+            reason = step.reason;
+            break;
+        }
+        const T moved = CFG::magnitude(cost - step.cost) > step.predicted ? CFG::magnitude(cost - step.cost)
+                                                                    : step.predicted;
+        const T change = cost > T(0) ? T(moved / cost) : T(0);
+        CFG::accept_trial();
+        cost = step.cost;
+        CFG::accepted(it, cost, mu[0], change);
+        if (cost <= CFG::abs_tol()) {
+            status = CFG::STATUS_CONVERGED;
+            reason = CFG::REASON_ABSOLUTE_ERROR;
+        } else if (change <= CFG::rel_tol()) {
+            status = CFG::STATUS_CONVERGED;
+            reason = CFG::REASON_RELATIVE_DECREASE;
+        }
+    }
+    errors[1] = cost;
+    info[0] = it;
+    info[1] = status;
+    info[2] = reason;
+}
+
+}  // namespace fgc_lm
+
+#endif  // FGC_LM_H

@@ -1,0 +1,254 @@
+// fgc_eliminate.h: the elimination driver of the dataflow kernel, around its linear-solver units
+// (fgc_cpe.h's cascade, fgc_qr.h's QR unit): what goes into a step's unit and where its result
+// goes. Per step s of the schedule:
+//
+//   Cholesky: bool cholesky_eliminate<CFG>(s, mu)  [H | g] assembled from the step's factors'
+//             Grams and its children's update matrices, factored by the cascade, the
+//             conditional into COND and the update matrix into NF; false if singular.
+//             bool cholesky_eliminate_all<CFG>(mu)  every step in schedule order.
+//   QR:       void qr_stack<CFG>(s, root_mu, bank)  the step's rows into a unit set's banks
+//             (its factors' [A | b], its children's new factors, sqrt(mu) I if CFG::LM).
+//             void qr_commit<CFG>(s, cond, update)  a unit set's result into COND and NF.
+//
+// The unit-set wiring (qr_set<u>, qr_level, eliminate_all; a level's steps side by side) is the
+// kernel's: it depends on the number of unit sets.
+//
+// Included by the kernel inside its namespace (fgc::, or fgc::les for the mixed design), after
+// its schedule tables and memories, which these functions name: STEP_W, STEP_F, STEP_ROWS,
+// STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
+// STEP_SEPMAP, STEP_NF_OFF, STEP_NF_ROWS, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP,
+// FACTOR_A_OFF, FACTOR_GRAM_OFF, LEVEL_STEPS, N_STEPS (tables); AB, GRAM, COND, NF, PORTS and, for
+// Cholesky, HF, CONDBUF, UPDBUF (memories). CFG is the kernel's LesConfig: T (the linear
+// solver's scalar), the unit's sizes, LM, the tables' largest trip counts (MAX_STEP_FACTORS,
+// MAX_CHILDREN, TRIP_*) and the (II, depth) of the plan's fill, move and scatter loops; cycles
+// to FGC_CYCLES as the plan prices them. Define FGC_ELIMINATE_CHOLESKY or FGC_ELIMINATE_QR
+// first: the other solver's memories do not exist.
+#ifndef FGC_ELIMINATE_H
+#define FGC_ELIMINATE_H
+
+#ifdef FGC_ELIMINATE_CHOLESKY
+// Step s: assemble, factor, store. False if not positive definite or a pivot is too small.
+template <class CFG>
+bool cholesky_eliminate(int s, typename CFG::T mu) {
+    typedef typename CFG::T T;
+    FGC_PHASE("assemble");
+    const int w = STEP_W[s], f = STEP_F[s];
+    for (int i = 0; i < w; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
+        for (int c = 0; c < CFG::MAX_W + 1; ++c) {
+#pragma HLS PIPELINE II=1
+            HF[i][c] = T(0);
+        }
+    }
+    FGC_CYCLES("assemble", 0, "zero", w * (CFG::MAX_W + 1), CFG::FILL_II, CFG::FILL_DEPTH);
+    // each factor's packed Gram (H's lower triangle, then its gradient row) and each child's
+    // update matrix (upper triangle and reduced g), one entry a cycle += into HF: within one
+    // loop every entry goes to its own address (the column maps are one-to-one), so no
+    // iteration waits for another's add (II 1); a later loop's entry may meet the same address
+    for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
+        const int fac = STEP_FACTORS[e];
+        const int cb = FACTOR_COLMAP_BEGIN[fac];
+        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
+        const int g0 = FACTOR_GRAM_OFF[fac];
+        const int n = d * (d + 1) / 2 + d;  // entry (p, q), q <= p, at p (p + 1) / 2 + q; row d: g
+        for (int k = 0, p = 0, q = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=HF inter false
+            const int a = p < d ? FACTOR_COLMAP[cb + p] : w, b = FACTOR_COLMAP[cb + q];
+            const int lo = b < a ? b : a, hi = b < a ? a : b;
+            HF[lo][hi] += GRAM[g0 + k];
+            if (q == p) {
+                q = 0;
+                ++p;
+            } else {
+                ++q;
+            }
+        }
+        FGC_CYCLES("assemble", 0, "gram", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
+    }
+    for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
+        const int c = STEP_CHILDREN[e];
+        const int sc = STEP_W[c] - STEP_F[c];
+        const int mb = STEP_SEPMAP_BEGIN[c];
+        const int u0 = STEP_NF_OFF[c];
+        const int n = sc * (sc + 1) / 2 + sc;  // row a: columns a ... sc - 1, then its g (column sc)
+        for (int k = 0, a = 0, b = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=HF inter false
+            const int ma = STEP_SEPMAP[mb + a], mbb = b < sc ? STEP_SEPMAP[mb + b] : w;
+            const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
+            HF[lo][hi] += NF[u0 + a * (sc + 1) + b];
+            if (b == sc) {
+                ++a;
+                b = a;
+            } else {
+                ++b;
+            }
+        }
+        FGC_CYCLES("assemble", 0, "child", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
+    }
+    bool not_pd = false, singular = false;
+    FGC_PHASE("cholesky");
+    fgc_units::cpe_step<CFG>(HF, f, w - f, mu, CONDBUF, UPDBUF, &not_pd, &singular);
+    if (singular) return false;
+    FGC_PHASE("store");
+    const int c0 = STEP_COND_OFF[s];
+    const int nc = f * (w + 1);
+    for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_COND
+#pragma HLS PIPELINE II=1
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nc) COND[c0 + i + h] = CONDBUF[i + h];
+        }
+    }
+    FGC_CYCLES("store", 0, "cond", (nc + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    const int sw = w - f;
+    const int u0 = STEP_NF_OFF[s];
+    const int nu = sw * (sw + 1);
+    for (int i = 0; i < nu; i += PORTS) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_UPDATE
+#pragma HLS PIPELINE II=1
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nu) NF[u0 + i + h] = UPDBUF[i + h];
+        }
+    }
+    FGC_CYCLES("store", 0, "nf", (nu + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    return true;
+}
+
+// Eliminate every step in schedule order, level by level.
+template <class CFG>
+bool cholesky_eliminate_all(typename CFG::T mu) {
+    FGC_EVENT("solve");
+    bool ok = true;
+    for (int i = 0; i < N_STEPS; ++i) {
+        if (ok) ok = cholesky_eliminate<CFG>(LEVEL_STEPS[i], mu);
+    }
+    return ok;
+}
+#endif  // FGC_ELIMINATE_CHOLESKY
+
+#ifdef FGC_ELIMINATE_QR
+// Stack step s into a unit set's banks: every entry of its rows, zeros included. The zeroing
+// writes a word of all N_UNITS banks a cycle, the rows PORTS words a cycle (AB's or NF's two
+// ports, into any banks: each bank has two ports too), the damping rows a word a cycle; counted
+// as the plan's stack_loops price them.
+template <class CFG>
+void qr_stack(int s, typename CFG::T root_mu,
+              typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
+    typedef typename CFG::T T;
+    FGC_PHASE("qr_stack");
+    const int w = STEP_W[s], f = STEP_F[s], m = STEP_ROWS[s];
+    for (int e = 0, i = 0, c = 0; e < m * CFG::LOCAL_COLS; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BANKS
+#pragma HLS PIPELINE II=1
+        for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+            bank[u][i][c] = T(0);
+        }
+        if (c == CFG::LOCAL_COLS - 1) {
+            c = 0;
+            ++i;
+        } else {
+            ++c;
+        }
+    }
+    FGC_CYCLES("stack", 0, "zero", m * CFG::LOCAL_COLS, CFG::FILL_II, CFG::FILL_DEPTH);
+    int row = 0;
+    for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
+        const int fac = STEP_FACTORS[e];
+        const int cb = FACTOR_COLMAP_BEGIN[fac];
+        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
+        const int a0 = FACTOR_A_OFF[fac];
+        const int words = FACTOR_A_OFF[fac + 1] - a0;  // its rows x (d + 1)
+        // row r, column c of its [A | b] into the step's row `row + r`
+        for (int k = 0, r = 0, c = 0; k < words; k += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_ROWS
+#pragma HLS PIPELINE II=1
+            for (int h = 0; h < PORTS; ++h) {
+                if (k + h < words) {
+                    const int t = c < d ? FACTOR_COLMAP[cb + c] : w;
+                    bank[t % CFG::N_UNITS][row + r][t / CFG::N_UNITS] = AB[a0 + k + h];
+                    if (c == d) {
+                        c = 0;
+                        ++r;
+                    } else {
+                        ++c;
+                    }
+                }
+            }
+        }
+        FGC_CYCLES("stack", 0, "factor_rows", (words + PORTS - 1) / PORTS, CFG::MOVE_II,
+                   CFG::MOVE_DEPTH);
+        row = row + words / (d + 1);
+    }
+    for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
+        const int c = STEP_CHILDREN[e];
+        const int sc = STEP_W[c] - STEP_F[c];
+        const int mb = STEP_SEPMAP_BEGIN[c];
+        const int n0 = STEP_NF_OFF[c];
+        const int words = STEP_NF_ROWS[c] * (sc + 1);
+        for (int k = 0, r = 0, q = 0; k < words; k += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_UPDATE
+#pragma HLS PIPELINE II=1
+            for (int h = 0; h < PORTS; ++h) {
+                if (k + h < words) {
+                    const int t = q < sc ? STEP_SEPMAP[mb + q] : w;
+                    bank[t % CFG::N_UNITS][row + r][t / CFG::N_UNITS] = NF[n0 + k + h];
+                    if (q == sc) {
+                        q = 0;
+                        ++r;
+                    } else {
+                        ++q;
+                    }
+                }
+            }
+        }
+        FGC_CYCLES("stack", 0, "child_rows", (words + PORTS - 1) / PORTS, CFG::MOVE_II,
+                   CFG::MOVE_DEPTH);
+        row = row + STEP_NF_ROWS[c];
+    }
+    if (CFG::LM) {  // Gauss-Newton: no damping rows
+        for (int j = 0; j < f; ++j) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
+#pragma HLS PIPELINE II=1
+            bank[j % CFG::N_UNITS][row + j][j / CFG::N_UNITS] = root_mu;
+        }
+        FGC_CYCLES("stack", 0, "damping", f, CFG::FILL_II, CFG::FILL_DEPTH);
+    }
+}
+
+// A unit set's result for step s into COND and NF, PORTS words a cycle.
+template <class CFG>
+void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+               const typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS]) {
+    FGC_PHASE("qr_commit");
+    const int w = STEP_W[s], f = STEP_F[s], sw = w - f;
+    const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
+    const int nc = f * (w + 1), nu = STEP_NF_ROWS[s] * (sw + 1);
+    for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_COND
+#pragma HLS PIPELINE II=1
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nc) COND[c0 + i + h] = cond[i + h];
+        }
+    }
+    FGC_CYCLES("commit", 0, "cond", (nc + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    for (int i = 0; i < nu; i += PORTS) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_UPDATE
+#pragma HLS PIPELINE II=1
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < nu) NF[n0 + i + h] = update[i + h];
+        }
+    }
+    FGC_CYCLES("commit", 0, "nf", (nu + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);
+}
+#endif  // FGC_ELIMINATE_QR
+
+#endif  // FGC_ELIMINATE_H

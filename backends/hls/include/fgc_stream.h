@@ -1,0 +1,359 @@
+// fgc_stream.h: the streaming designs' on-chip state (fgc_backends/hls/window.py), the
+// fixed-lag window and the incremental design's kept Bayes net, around the kernel's LM:
+//
+//   FGC_STREAM_WINDOW    stream_shift<CFG>()    every slot down one (X and DATA_BUF keep the window)
+//                        stream_in<CFG>(m, ...) the call's keyframe into slot m
+//   FGC_STREAM_MARGINAL  marginalize<CFG>()     slot 0's elimination at the optimum -> tau, the
+//                        write_tau<CFG>(rows)   factor written into slot 1's prior
+//   FGC_STREAM_KEPT      reexpress<CFG>(c), keep<CFG>(c), kept_walk<CFG>(first): the kept
+//                        conditionals, re-expressed, stored and walked back from the window
+//                        (kept_matvec<CFG>, kept_conditional<CFG> inside)
+//   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
+//                        kernel (its own file), the kept net rebuilt from its conditionals
+//
+// Define the parts the design has, then include this file inside the kernel's namespace after
+// its tables and memories, which the functions name (the window's X, DATA_BUF, COND, NF, the
+// schedule's STEP_* and the stream's SLOT_X, NEW_DEST, X_MOVES, DATA_MOVES, N_X_MOVES,
+// N_DATA_MOVES, STREAM_* constants; KEPT_*, X_KEPT, BATCH_* where kept / batch), with the problem's
+// kernels: linearize_all and, kept, keyframe_local / keyframe_retract (each variable's Log and
+// retraction). T and L are the kernel's scalars. CFG is the kernel's StreamConfig: the plan's
+// (II, depth) of T's move / max / retract / div and L's acc / div / scatter loops, MV_II (the kept
+// matrix-vector product's), MAX_NEW and TRIP_BATCH_X (trip counts), and the hooks
+// leaf_step() (slot 0's step once more at mu = 0) and batch_solve(...) (the batch kernel's
+// entry). Cycles to FGC_CYCLES as the plan prices them.
+#ifndef FGC_STREAM_H
+#define FGC_STREAM_H
+
+#ifdef FGC_STREAM_WINDOW
+// Every slot down one: slot s takes slot s + 1's variables and the words of the factor one
+// keyframe on (zero noise words where there is none; slot 0's prior takes slot 1's, tau). The
+// pairs are ordered so each word is read before it is overwritten: no iteration reads a word an
+// earlier one wrote.
+template <class CFG>
+void stream_shift() {
+    FGC_PHASE("stream_shift");
+    for (int k = 0; k < N_X_MOVES; ++k) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=X inter false
+        X[X_MOVES[2 * k]] = X[X_MOVES[2 * k + 1]];
+    }
+    FGC_CYCLES("stream", 0, "shift_x", N_X_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    for (int k = 0; k < N_DATA_MOVES; ++k) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=DATA_BUF inter false
+        const int src = DATA_MOVES[2 * k + 1];
+        const T word = DATA_BUF[src >= 0 ? src : 0];
+        DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? word : T(0);
+    }
+    FGC_CYCLES("stream", 0, "shift_data", N_DATA_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+// The call's keyframe into slot m: its storage, then its factors' and its prior's words.
+template <class CFG>
+void stream_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
+    FGC_PHASE("setup");
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        X[SLOT_X[m * STREAM_KF_X + k]] = x_in[k];
+    }
+    FGC_CYCLES("top", 0, "keyframe_x_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
+#pragma HLS PIPELINE II=1
+        DATA_BUF[NEW_DEST[b + k]] = data[k];
+    }
+    FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+#endif  // FGC_STREAM_WINDOW
+
+#ifdef FGC_STREAM_MARGINAL
+// tau from the rows [A | b] (KF_T x (KF_T + 1), upper triangular) a step passes to slot 1: signed to
+// a positive diagonal, its mean A^-1 b by back-substitution, written with slot 1's estimate as its
+// linearisation point into slot 1's prior. False, nothing written, if it is singular.
+template <class CFG>
+bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)]) {
+    FGC_PHASE("marginal");
+    L a[STREAM_KF_T][STREAM_KF_T + 1];
+    L largest = L(1), smallest = L(0);
+    for (int i = 0; i < STREAM_KF_T; ++i) {
+        const L sign = rows[i * (STREAM_KF_T + 1) + i] < L(0) ? L(-1) : L(1);
+        for (int c = 0; c <= STREAM_KF_T; ++c) {
+#pragma HLS PIPELINE II=1
+            const L v = sign * rows[i * (STREAM_KF_T + 1) + c];
+            a[i][c] = v;
+            const L mag = v < L(0) ? L(-v) : v;
+            if (c < STREAM_KF_T && mag > largest) largest = mag;
+            if (c == i && (i == 0 || v < smallest)) smallest = v;
+        }
+    }
+    FGC_CYCLES("marginal", 0, "sign", STREAM_KF_T * (STREAM_KF_T + 1), CFG::T_MAX_II, CFG::T_MAX_DEPTH);
+    if (!(smallest > L(STREAM_SINGULAR) * largest)) return false;
+    L mean[STREAM_KF_T];
+    for (int i = STREAM_KF_T - 1; i >= 0; --i) {
+        L acc = a[i][STREAM_KF_T];
+        for (int c = i + 1; c < STREAM_KF_T; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T
+#pragma HLS PIPELINE II=CFG::L_ACC_II
+            acc -= a[i][c] * mean[c];
+        }
+        mean[i] = acc / a[i][i];
+    }
+    FGC_CYCLES("marginal", 0, "mean", STREAM_KF_T * (STREAM_KF_T - 1) / 2, CFG::L_ACC_II, CFG::L_ACC_DEPTH);
+    FGC_CYCLES("marginal", 0, "divide", STREAM_KF_T, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        DATA_BUF[STREAM_PRIOR1 + k] = X[SLOT_X[STREAM_KF_X + k]];
+    }
+    for (int i = 0; i < STREAM_KF_T; ++i) {
+#pragma HLS PIPELINE II=1
+        DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + i] = T(mean[i]);
+    }
+    for (int i = 0, w = STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T; i < STREAM_KF_T; ++i) {
+        for (int c = i; c < STREAM_KF_T; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T
+#pragma HLS PIPELINE II=1
+            DATA_BUF[w++] = T(a[i][c]);
+        }
+    }
+    DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2] = T(0);  // no robust loss
+    DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 1] = T(0);
+    FGC_CYCLES("marginal", 0, "tau_out", STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 2, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    return true;
+}
+
+// Keyframe first leaves: tau, the factor slot 0's elimination at the window's optimum passes to
+// slot 1 ([A | b], upper triangular from the QR unit), signed to a positive diagonal, its mean
+// A^-1 b by back-substitution, written with slot 1's estimate as its linearisation point into
+// slot 1's prior (which the next call's shift moves to slot 0). False, nothing written, if the
+// window is not finite at its optimum, slot 0 is rank deficient or tau is singular.
+template <class CFG>
+bool marginalize() {
+    FGC_EVENT("marginal");
+    if (!linearize_all(X)) return false;
+    if (!CFG::leaf_step()) return false;
+    FGC_PHASE("marginal");
+    const int n0 = STEP_NF_OFF[STREAM_LEAF_STEP];
+    L rows[STREAM_KF_T * (STREAM_KF_T + 1)];
+    for (int e = 0; e < STREAM_KF_T * (STREAM_KF_T + 1); ++e) {
+#pragma HLS PIPELINE II=1
+        rows[e] = NF[n0 + e];
+    }
+    FGC_CYCLES("marginal", 0, "rows", STREAM_KF_T * (STREAM_KF_T + 1), CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    return write_tau<CFG>(rows);
+}
+#endif  // FGC_STREAM_MARGINAL
+
+#ifdef FGC_STREAM_KEPT
+// One datapath pass over a keyframe's variables (its Log or its retraction, each variable's
+// kernel in turn), priced as one pass through a retraction-sized datapath.
+#define FGC_KEPT_PASS(name) FGC_CYCLES("kept", 0, name, 1, CFG::T_RETRACT_II, CFG::T_RETRACT_DEPTH)
+
+// acc[i] = sum_k m[i][k] v[k] (m row-major, KF_T x KF_T) for every row at once: k outer, the rows
+// inner, one product a cycle at II STREAM_MV_II (a row's sum comes back to the adder every KF_T
+// iterations, so II = ceil(multiply-add depth / KF_T)); each row summed in k order, as a dot
+// product adds it.
+template <class CFG>
+void kept_matvec(const L m[STREAM_KF_T * STREAM_KF_T], const L v[STREAM_KF_T], L acc[STREAM_KF_T]) {
+    for (int e = 0; e < STREAM_KF_T * STREAM_KF_T; ++e) {
+#pragma HLS PIPELINE II=CFG::MV_II
+#pragma HLS DEPENDENCE variable=acc inter false
+        const int k = e / STREAM_KF_T, i = e % STREAM_KF_T;
+        const L prev = k == 0 ? L(0) : acc[i];
+        acc[i] = prev + m[i * STREAM_KF_T + k] * v[k];
+    }
+    FGC_CYCLES("kept", 0, "matvec", STREAM_KF_T * STREAM_KF_T, CFG::MV_II, CFG::L_ACC_DEPTH);
+}
+
+// The newest kept conditional c, re-expressed at its parent's new estimate x (the window's slot 0):
+// d_c -= S_c Log(next^-1 x), S_c = S_c J with J the derivative of Log(next^-1 (x (+) delta)) by
+// central differences of step STREAM_H (the simulator's Chain.local_jacobian); next_c = x.
+template <class CFG>
+void reexpress(int c) {
+    FGC_PHASE("kept");
+    const T h = T(STREAM_H);
+    T x[STREAM_KF_X], base[STREAM_KF_T], plus[STREAM_KF_T], minus[STREAM_KF_T], step[STREAM_KF_T];
+    T moved[STREAM_KF_X];
+    L jt[STREAM_KF_T][STREAM_KF_T];  // J transposed: column k of J in row k
+    L local[STREAM_KF_T], srow[STREAM_KF_T];
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        x[k] = X[SLOT_X[k]];
+    }
+    FGC_CYCLES("kept", 0, "parent_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    keyframe_local(KEPT_NEXT + c * STREAM_KF_X, x, base);
+    FGC_KEPT_PASS("log");
+    for (int i = 0; i < STREAM_KF_T; ++i) {
+        for (int k = 0; k < STREAM_KF_T; ++k) step[k] = T(0);
+        step[i] = h;
+        keyframe_retract(x, step, moved);
+        FGC_KEPT_PASS("retract");
+        keyframe_local(KEPT_NEXT + c * STREAM_KF_X, moved, plus);
+        FGC_KEPT_PASS("log");
+        step[i] = T(-h);
+        keyframe_retract(x, step, moved);
+        FGC_KEPT_PASS("retract");
+        keyframe_local(KEPT_NEXT + c * STREAM_KF_X, moved, minus);
+        FGC_KEPT_PASS("log");
+        for (int k = 0; k < STREAM_KF_T; ++k) {
+#pragma HLS PIPELINE II=1
+            jt[i][k] = L((plus[k] - minus[k]) / (T(2) * h));
+        }
+        FGC_CYCLES("kept", 0, "difference", STREAM_KF_T, 1, CFG::T_DIV_DEPTH);
+    }
+    for (int k = 0; k < STREAM_KF_T; ++k) local[k] = L(base[k]);
+    L shift[STREAM_KF_T];
+    kept_matvec<CFG>(KEPT_S + c * STREAM_KF_T * STREAM_KF_T, local, shift);  // S Log(next^-1 x)
+    for (int i = 0; i < STREAM_KF_T; ++i) {
+#pragma HLS PIPELINE II=1
+        KEPT_D[c * STREAM_KF_T + i] -= shift[i];
+    }
+    FGC_CYCLES("kept", 0, "d_update", STREAM_KF_T, CFG::L_SCATTER_II, CFG::L_SCATTER_DEPTH);
+    for (int i = 0; i < STREAM_KF_T; ++i) {  // row i of S J = J^T (row i of S), in place
+        for (int k = 0; k < STREAM_KF_T; ++k) {
+#pragma HLS PIPELINE II=1
+            srow[k] = KEPT_S[(c * STREAM_KF_T + i) * STREAM_KF_T + k];
+        }
+        FGC_CYCLES("kept", 0, "row_in", STREAM_KF_T, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        kept_matvec<CFG>(&jt[0][0], srow, KEPT_S + (c * STREAM_KF_T + i) * STREAM_KF_T);
+    }
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        KEPT_NEXT[c * STREAM_KF_X + k] = x[k];
+    }
+    FGC_CYCLES("kept", 0, "next_out", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+// A conditional (R | S | d, row-major KF_T x (2 KF_T + 1): a QR unit's COND block) stored as
+// kept keyframe c's, a word a cycle.
+template <class CFG>
+void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) {
+    const int cols = 2 * STREAM_KF_T + 1;
+    for (int e = 0; e < STREAM_KF_T * (2 * STREAM_KF_T + 1); ++e) {
+#pragma HLS PIPELINE II=1
+        const int i = e / cols, k = e % cols;
+        const L v = cond[e];
+        if (k < STREAM_KF_T) {
+            KEPT_R[(c * STREAM_KF_T + i) * STREAM_KF_T + k] = v;
+        } else if (k < 2 * STREAM_KF_T) {
+            KEPT_S[(c * STREAM_KF_T + i) * STREAM_KF_T + k - STREAM_KF_T] = v;
+        } else {
+            KEPT_D[c * STREAM_KF_T + i] = v;
+        }
+    }
+    FGC_CYCLES("kept", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+// Slot 0's conditional (COND of its step: R | S | d, row-major f x (w + 1)) kept as keyframe c's,
+// linearised at slot 0's estimate with its parent at slot 1's; a word a cycle.
+template <class CFG>
+void keep(int c) {
+    FGC_PHASE("kept");
+    kept_conditional<CFG>(c, COND + STEP_COND_OFF[STREAM_LEAF_STEP]);
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        KEPT_LIN[c * STREAM_KF_X + k] = X[SLOT_X[k]];
+        KEPT_NEXT[c * STREAM_KF_X + k] = X[SLOT_X[STREAM_KF_X + k]];
+    }
+    FGC_CYCLES("kept", 0, "points", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+// Back-substitution through the kept conditionals c = first - 1 ... 0 from the window's slot 0
+// (keyframe first): x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
+template <class CFG>
+void kept_walk(int first) {
+    FGC_PHASE("kept");
+    T parent[STREAM_KF_X], local_t[STREAM_KF_T], out[STREAM_KF_X], delta_t[STREAM_KF_T];
+    L local[STREAM_KF_T], delta[STREAM_KF_T], row[STREAM_KF_T];
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        parent[k] = X[SLOT_X[k]];
+    }
+    FGC_CYCLES("kept", 0, "parent_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    for (int c = first - 1; c >= 0; --c) {
+#pragma HLS LOOP_TRIPCOUNT max=KEPT_MAX
+        keyframe_local(KEPT_NEXT + c * STREAM_KF_X, parent, local_t);
+        FGC_KEPT_PASS("log");
+        for (int k = 0; k < STREAM_KF_T; ++k) local[k] = L(local_t[k]);
+        kept_matvec<CFG>(KEPT_S + c * STREAM_KF_T * STREAM_KF_T, local, row);  // S_c Log(next^-1 x_c+1)
+        for (int i = 0; i < STREAM_KF_T; ++i) {
+#pragma HLS PIPELINE II=1
+            delta[i] = KEPT_D[c * STREAM_KF_T + i] - row[i];
+        }
+        FGC_CYCLES("kept", 0, "rhs", STREAM_KF_T, CFG::L_SCATTER_II, CFG::L_SCATTER_DEPTH);
+        // R_c upper triangular, column by column: delta_i final, then taken off the rows above it
+        for (int i = STREAM_KF_T - 1; i >= 0; --i) {
+            delta[i] = delta[i] / KEPT_R[(c * STREAM_KF_T + i) * STREAM_KF_T + i];
+            FGC_CYCLES("kept", 0, "divide", 1, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
+            for (int r = 0; r < i; ++r) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T
+#pragma HLS PIPELINE II=1
+                delta[r] -= KEPT_R[(c * STREAM_KF_T + r) * STREAM_KF_T + i] * delta[i];
+            }
+            FGC_CYCLES("kept", 0, "column", i, 1, CFG::L_ACC_DEPTH);
+        }
+        for (int i = 0; i < STREAM_KF_T; ++i) delta_t[i] = T(delta[i]);
+        keyframe_retract(KEPT_LIN + c * STREAM_KF_X, delta_t, out);
+        FGC_KEPT_PASS("retract");
+        for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+            X_KEPT[c * STREAM_KF_X + k] = out[k];
+            parent[k] = out[k];
+        }
+        FGC_CYCLES("kept", 0, "estimate_out", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    }
+}
+#endif  // FGC_STREAM_KEPT
+
+#ifdef FGC_STREAM_BATCH
+// A batch step at keyframe j: keyframes 0 … j (the kept ones, then the window's) re-solved by the
+// batch kernel; their optimum back, and (once the window is full) the kept net rebuilt from its
+// conditionals, keyframes 0 … j - W, and tau written for the next window's oldest. Returns the
+// marginal code (0 none, 1 tau written, 2 singular or rank deficient).
+template <class CFG>
+int batch_step(int j, int first, T errors[2], int info[5]) {
+    FGC_PHASE("batch_in");
+    for (int e = 0; e < (j + 1) * STREAM_KF_X; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BATCH_X
+#pragma HLS PIPELINE II=1
+        const int c = e / STREAM_KF_X, k = e % STREAM_KF_X;
+        BATCH_X[e] = c < first ? X_KEPT[e] : X[SLOT_X[(c - first) * STREAM_KF_X + k]];
+    }
+    FGC_CYCLES("batch", 0, "gather", (j + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    int binfo[4];
+    CFG::batch_solve(j, j >= STREAM_W ? j - STREAM_W : -1, BATCH_X, BATCH_COND, BATCH_TAU, errors,
+                      binfo);
+    for (int i = 0; i < 3; ++i) info[i] = binfo[i];
+    FGC_PHASE("batch_out");
+    for (int e = 0; e < (j + 1) * STREAM_KF_X; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BATCH_X
+#pragma HLS PIPELINE II=1
+        const int c = e / STREAM_KF_X, k = e % STREAM_KF_X;
+        if (c < first) {
+            X_KEPT[e] = BATCH_X[e];
+        } else {
+            X[SLOT_X[(c - first) * STREAM_KF_X + k]] = BATCH_X[e];
+        }
+    }
+    FGC_CYCLES("batch", 0, "scatter", (j + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    if (j < STREAM_W) return binfo[3] ? 0 : 2;
+    const int words = STREAM_KF_T * (2 * STREAM_KF_T + 1);
+    for (int c = 0; c <= j - STREAM_W; ++c) {  // the conditionals of keyframes 0 … j - W
+#pragma HLS LOOP_TRIPCOUNT max=BATCH_SLOTS
+        kept_conditional<CFG>(c, BATCH_COND + c * words);
+    }
+    for (int e = 0; e < (j - STREAM_W + 1) * STREAM_KF_X; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BATCH_X
+#pragma HLS PIPELINE II=1
+        KEPT_LIN[e] = BATCH_X[e];
+        KEPT_NEXT[e] = BATCH_X[e + STREAM_KF_X];
+    }
+    FGC_CYCLES("batch", 0, "points", (j - STREAM_W + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    if (!binfo[3]) return 2;
+    return write_tau<CFG>(BATCH_TAU) ? 1 : 2;
+}
+#endif  // FGC_STREAM_BATCH
+
+#undef FGC_KEPT_PASS
+
+#endif  // FGC_STREAM_H
