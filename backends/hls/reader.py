@@ -130,7 +130,7 @@ _SUBSCRIPTED = re.compile(r"\b([A-Za-z_]\w*)\s*((?:\[[^\[\]]*(?:\[[^\]]*\][^\[\]
                           r"(\s*[-+*/]?=(?!=))?")
 _GLOBAL = re.compile(r"^[ \t]*(?:static\s+)?(?:const\s+)?(" + FLOAT_TYPES + r"|int|bool)\s+"
                      r"([A-Za-z_]\w*)\s*((?:\[[^\]]*\]\s*)+)(?:=[^;]*)?;", re.M)
-_CALL = re.compile(r"\b([A-Za-z_]\w*)\s*(<[^;{}()]*?>)?\s*\(")
+_CALL = re.compile(r"\b([A-Za-z_]\w*)\s*(<[^;{}()=&|]*?>)?\s*\(")
 
 
 def _blank_macros(code: str) -> str:
@@ -181,10 +181,12 @@ class _Reader:
         # Struct::name -> [(specialisation's template arguments or None, function)]
         self.members: dict[str, list[tuple[tuple[str, ...] | None, _Function]]] = {}
         self.defaults: dict[str, tuple[str, ...]] = {}  # struct template -> its parameters
+        self.structs: set[str] = set()  # every struct's name
         for name, code in self.files:
             structs = []
             for m in re.finditer(r"(?:template\s*<([^{};]*?)>\s*)?\bstruct\s+(\w+)\s*"
                                  r"(<[^{};]*>)?\s*\{", code):
+                self.structs.add(m.group(2))
                 structs.append((m.start(), _matching(code, m.end() - 1, "{", "}"),
                                 tuple(_split_top(m.group(3)[1:-1])) if m.group(3) else None))
                 if m.group(1) and not m.group(3):
@@ -567,13 +569,15 @@ class _Reader:
         specialisation chosen where the arguments match it)."""
         owner = re.search(r"\b(\w+)\s*(<[^;{}()]*>)?\s*::\s*$", text[max(0, m.start() - 160):
                                                                      m.start()])
-        if owner and owner.group(1) not in ("fgc", "fgc_units", "std", "hls"):
-            variants = self.members.get(f"{owner.group(1)}::{m.group(1)}")
+        struct = owner and env.get(f"type:{owner.group(1)}", owner.group(1))
+        if owner and struct in self.structs:  # a member of a struct (else a namespace's)
+            variants = self.members.get(f"{struct}::{m.group(1)}")
             if not variants:
                 return None
             args = _split_top(owner.group(2)[1:-1]) if owner.group(2) else []
             values = [self._value(a, env) for a in args]
-            params = self.defaults.get(owner.group(1), ())
+            params = self.defaults.get(struct, ())
+            types = self._bind_types(params, args, env)
             bound = {}
             for param, value in zip(params, values, strict=False):
                 name = re.search(r"(\w+)\s*(?:=.*)?$", param)
@@ -603,16 +607,38 @@ class _Reader:
                     chosen = f
                     break
             ints = [v for a, v in zip(args, values, strict=True) if v is not None]
-            return chosen, dict(zip(chosen.template_ints, ints, strict=False))
+            return chosen, {**dict(zip(chosen.template_ints, ints, strict=False)), **types}
         f = self.functions.get(m.group(1))
         if f is None:
             return None
-        cenv: dict[str, int] = {}
-        if m.group(2) and f.template_ints:
-            ints = [v for a in _split_top(m.group(2)[1:-1])
-                    if (v := self._value(a, env)) is not None]
-            cenv = dict(zip(f.template_ints, ints, strict=False))
+        cenv: dict = {}
+        if m.group(2):
+            args = _split_top(m.group(2)[1:-1])
+            params = self._template_params(f)
+            cenv.update(self._bind_types(params, args, env))
+            if f.template_ints:
+                ints = [v for a in args if (v := self._value(a, env)) is not None]
+                cenv.update(zip(f.template_ints, ints, strict=False))
         return f, cenv
+
+    @staticmethod
+    def _template_params(f: _Function) -> tuple[str, ...]:
+        """The parameters of the ``template <...>`` that introduces ``f`` (none: ())."""
+        start = max(f.code.rfind(c, 0, f.start) for c in ";{}")
+        header = re.search(r"template\s*<([^{};]*?)>", f.code[start + 1:f.start])
+        return tuple(_split_top(header.group(1))) if header else ()
+
+    @staticmethod
+    def _bind_types(params: tuple[str, ...], args: list[str], env: dict) -> dict:
+        """``type:NAME`` -> the struct a class template parameter is bound to (namespaces
+        dropped; a parameter passed on, the struct it is bound to)."""
+        out = {}
+        for param, arg in zip(params, args, strict=False):
+            kind = re.match(r"^\s*(class|typename)\s+(\w+)", param)
+            if kind:
+                name = arg.strip().split("::")[-1].strip()
+                out[f"type:{kind.group(2)}"] = env.get(f"type:{name}", name)
+        return out
 
     @staticmethod
     def allocation(text: str) -> dict[str, int]:

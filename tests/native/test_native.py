@@ -200,8 +200,11 @@ def test_native_project_is_a_cpu_program_and_fgc_run_is_unchanged(tmp_path, caps
     out = tmp_path / "run.json"
     code = main(["run", BEACONS, "--backend", "native", "--json", str(out)])
     line = capsys.readouterr().out
+    # the final error evaluated in float64 at the returned state, the float32 design's own
+    # figure (unchanged by the split) beside it
     assert line.startswith(f"fgc run {BEACONS} (native): converged (step), 4 iterations, final "
-                           "error 12.30312729, ")
+                           "error 12.3031253 ")
+    assert "the float32 design's own figure 12.30312729)" in line
     report = json.loads(out.read_text())
     assert code == 0 and report["backend"] == "native"
     for field in ("final_error", "iterations", "reason", "status"):
