@@ -131,7 +131,7 @@ def build(n=2):
     ("x = 1\n", [], "must define build(**params)"),
     ("build = 3\n", [], "must define build(**params)"),
     ("def build():\n    return None\n", [], "returned NoneType, not an fgc.Graph"),
-    ("def build():\n    return 1 / 0\n", [], "build() failed: ZeroDivisionError"),
+    ("def build():\n    return 1 / 0\n", [], "build() failed at line 2: ZeroDivisionError"),
     ("def build(**kw):\n    raise ValueError(kw)\n", ["-p", "n=-3"], "ValueError: {'n': -3}"),
     (GOOD_BUILD, ["-p", "n=-1"], "the graph has no factors"),
     (GOOD_BUILD, ["-p", "n=2.5"], "'float' object cannot be interpreted as an integer"),
