@@ -63,27 +63,19 @@ from fgc_backends.hls.plan import (
     Phase,
     PlanOptions,
     Process,
-    assemble_loops,
-    backsub_copies,
-    backsub_loops,
     build_plan,
-    commit_loops,
-    cpe_step_loops,
-    gradient_loops,
-    hgc_loops,
     kernel_loop,
     kernel_timing,
-    lm_control_phases,
     phase_cycles,
     plan_cost,
     plan_sizes,
-    qr_unit_loops,
-    retract_loops,
-    rounding_noise_loops,
-    setup_phase,
-    stack_loops,
-    state_update_phase,
 )
+from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops
+from fgc_backends.hls.units.cholesky import assemble_loops, cpe_step_loops, hgc_loops
+from fgc_backends.hls.units.datapath import gradient_loops
+from fgc_backends.hls.units.lm_control import lm_control_phases, rounding_noise_loops, setup_phase
+from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
+from fgc_backends.hls.units.state_update import retract_loops, state_update_phase
 
 NOT_EMITTED = ("a Cholesky design's on-chip incremental state is not emitted in C++ (the "
                "on-chip design, fgc_backends.hls.window, keeps the QR unit's conditionals): this "

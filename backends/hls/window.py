@@ -481,7 +481,8 @@ def qr_solve_cycles(t, zero: frozenset, damped: bool, sets: int, les, leaf=None)
     the ``zero`` template factors and, unless ``damped``, the √μ rows zero: the Evaluate unit
     skips a row that is zero in its column (fgc_qr.h). ``leaf``: that step alone on unit set 0."""
     from fgc_backends.cost.structure import entering_blocks, stacked_pattern
-    from fgc_backends.hls.plan import Phase, Process, _assign, phase_cycles, qr_unit_loops
+    from fgc_backends.hls.plan import Phase, Process, _assign, phase_cycles
+    from fgc_backends.hls.units.qr import qr_unit_loops
 
     lm = t.solver.method == "lm"
     units = max(1, t.solver.units)
@@ -530,14 +531,13 @@ class WindowUpdateModel:
             Phase,
             Process,
             _tables,
-            commit_loops,
             kernel_loop,
             kernel_timing,
             phase_cycles,
             plan_sizes,
-            stack_loops,
             unit_sets,
         )
+        from fgc_backends.hls.units.qr import commit_loops, stack_loops
 
         self.layout = layout
         t = layout.template

@@ -461,7 +461,7 @@ def test_cpe_no_frontal_columns(driver):
 def test_plan_prices_the_qr_unit(driver, units):
     """plan.qr_unit_loops (what plan.py's QR phases are made of) equals the counted cycles of
     qr_step on a sparse stack: structural zeros, a child's trapezoid, damping rows."""
-    from fgc_backends.hls.plan import qr_unit_loops
+    from fgc_backends.hls.units.qr import qr_unit_loops
 
     rng = np.random.default_rng(40 + units)
     f, s = 6, 7
@@ -480,7 +480,8 @@ def test_plan_prices_the_qr_unit(driver, units):
 def test_plan_prices_the_cpe_rounds(driver):
     """plan.cpe_round_depth: a whole matrix as one step (f = n, s = 0), as plan.py's Cholesky
     phase prices it, equals the counted cycles for 1, 5 and 20 CPEs (idle CPEs included)."""
-    from fgc_backends.hls.plan import Loop, cpe_round_depth
+    from fgc_backends.hls.plan import Loop
+    from fgc_backends.hls.units.cholesky import cpe_round_depth
 
     ops = DRIVER_OPS
     n = 23
@@ -499,7 +500,7 @@ def test_plan_prices_the_cpe_rounds(driver):
 def test_plan_prices_multifrontal_cpe_steps(driver):
     """plan.cpe_step_loops on steps with separators (the rounds stream the separator rows too,
     the last round has idle CPEs) and with no frontal columns."""
-    from fgc_backends.hls.plan import cpe_step_loops
+    from fgc_backends.hls.units.cholesky import cpe_step_loops
 
     ops = DRIVER_OPS
     rng = np.random.default_rng(12)

@@ -34,8 +34,8 @@ from fgc_backends.hls.plan import (
     build_plan,
     dot_loop,
     plan_cost,
-    retract_datapath,
 )
+from fgc_backends.hls.units.state_update import retract_datapath
 
 F32 = operators.FLOAT32
 

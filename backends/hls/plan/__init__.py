@@ -81,35 +81,6 @@ from fgc_backends.hls.plan.report import (  # isort: skip
     process_network,
     unit_sets,
 )
-from fgc_backends.hls.units.backsub import (  # isort: skip
-    backsub_chunk_loops,
-    backsub_copies,
-    backsub_loops,
-)
-from fgc_backends.hls.units.cholesky import (  # isort: skip
-    assemble_loops,
-    cpe_round_depth,
-    cpe_step_loops,
-    hessian_envelope,
-    hgc_loops,
-)
-from fgc_backends.hls.units.datapath import (  # isort: skip
-    gradient_loops,
-    raw_jacobian_words,
-    whitening_macs,
-)
-from fgc_backends.hls.units.lm_control import (  # isort: skip
-    lm_control_phases,
-    rounding_noise_loops,
-    setup_phase,
-)
-from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops  # isort: skip
-from fgc_backends.hls.units.state_update import (  # isort: skip
-    retract_datapath,
-    retract_loops,
-    state_update_phase,
-)
-
 # the default device (hls/target.py); PlanOptions.part selects the fit verdict's
 PART = DEFAULT.name
 PART_DSP, PART_BRAM36, PART_LUT, PART_FF = DEFAULT.dsp, DEFAULT.bram36, DEFAULT.lut, DEFAULT.ff
@@ -120,12 +91,8 @@ __all__ = [
     "PART_LUT", "PHASE_PER", "PHASE_TRIGGER", "PORTS", "STATE_ALLOCATION", "AcceleratorPlan",
     "Channel", "Cost", "Loop", "Memory", "Phase", "PlanBuild", "PlanError", "PlanOptions",
     "Process", "Unit", "_assign", "_block_shape", "_ceil_log2", "_ported", "_region_cycles",
-    "_sim_table", "_sizes", "_tables", "assemble_loops", "backsub_chunk_loops", "backsub_copies",
-    "backsub_loops", "backsub_units", "build_plan", "commit_loops", "cpe_round_depth",
-    "cpe_step_loops", "dot_loop", "emitted_options", "gradient_loops", "hessian_envelope",
-    "hgc_loops", "kernel_dot", "kernel_loop", "kernel_timing", "lm_control_phases", "merge_plans",
+    "_sim_table", "_sizes", "_tables", "backsub_units", "build_plan", "dot_loop",
+    "emitted_options", "kernel_dot", "kernel_loop", "kernel_timing", "merge_plans",
     "phase_cycles", "phase_group", "phase_groups", "plan_cost", "plan_groups", "plan_power_w",
-    "plan_sizes", "plan_summary", "process_network", "qr_unit_loops", "raw_jacobian_words",
-    "retract_datapath", "retract_loops", "rounding_noise_loops", "scalar_precision",
-    "setup_phase", "stack_loops", "state_update_phase", "unit_sets", "whitening_macs",
+    "plan_sizes", "plan_summary", "process_network", "scalar_precision", "unit_sets",
 ]

@@ -6,7 +6,6 @@ slot (:data:`~fgc_backends.hls.units.spec.SLOTS`), of its phases. Adding a unit:
 defining ``SPEC`` and one line here (docs/design.md, "Adding an HLS unit").
 """
 
-from fgc_backends.hls import plan as _plan  # noqa: F401  (the plan's model first: see below)
 from fgc_backends.hls.units import (
     backsub,
     cholesky,
@@ -18,8 +17,9 @@ from fgc_backends.hls.units import (
 )
 from fgc_backends.hls.units.spec import SLOTS, UnitSpec
 
-# the plan package imports this registry while it loads, and the units import the plan's data
-# model: importing the plan first makes either entry point load the model before any unit
+# the units import the plan's data model and loop pricing (plan.model, plan.loops); the plan
+# package imports no unit at load time (only plan.assemble reads this registry), so either entry
+# point loads the model before any unit and no import circle runs through the two packages
 
 REGISTRY: tuple[UnitSpec, ...] = (
     datapath.SPEC,
