@@ -40,7 +40,10 @@ def _kernel(expr) -> Kernel:
 
 
 def _emitted_cpp() -> str:
-    return (TEMPLATES / "kernel.cpp.jinja").read_text() + (TEMPLATES / "kernel.h.jinja").read_text()
+    """The native kernel's templates and the C-family macros they print the functions from."""
+    shared = ROOT / "backends" / "cfamily" / "templates" / "common.jinja"
+    return ((TEMPLATES / "kernel.cpp.jinja").read_text() + (TEMPLATES / "kernel.h.jinja").read_text()
+            + shared.read_text())
 
 
 @pytest.mark.parametrize("f", FUNCTIONS + DERIVATIVE_FUNCTIONS, ids=lambda f: f.__name__)

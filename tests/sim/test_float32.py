@@ -359,6 +359,7 @@ def hls_householder(tmp_path_factory):
     source = folder / "driver.cpp"
     source.write_text(DRIVER.replace("KERNEL", str(project.directory / f"{project.name}.cpp")))
     subprocess.run(["g++", "-std=c++17", "-O2", "-ffp-contract=off", "-Wno-unknown-pragmas",
+                    "-I", str(project.directory / "include"),  # fgc_lm.h, shared LM control
                     str(source), "-o", str(folder / "driver")], check=True)
 
     def run(matrix: np.ndarray):
