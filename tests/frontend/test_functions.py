@@ -42,8 +42,8 @@ def _kernel(expr) -> Kernel:
 def _emitted_cpp() -> str:
     """The native kernel's templates and the C-family macros they print the functions from."""
     shared = ROOT / "backends" / "cfamily" / "templates" / "common.jinja"
-    return ((TEMPLATES / "kernel.cpp.jinja").read_text() + (TEMPLATES / "kernel.h.jinja").read_text()
-            + shared.read_text())
+    return "".join(path.read_text() for path in (TEMPLATES / "kernel.cpp.jinja",
+                                                  TEMPLATES / "kernel.h.jinja", shared))
 
 
 @pytest.mark.parametrize("f", FUNCTIONS + DERIVATIVE_FUNCTIONS, ids=lambda f: f.__name__)
