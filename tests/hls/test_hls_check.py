@@ -5,8 +5,9 @@
   says the result is unchecked and succeeds;
 - ``result.txt`` names every value by its variable's key token; reading it back gives the
   graph's keys (integer keys as ``int``) and refuses a file whose keys are not the Program's;
-- ``run_hls.tcl`` adds no include path (Vitis's own ``ap_fixed.h`` / ``hls_stream.h``), has one
-  clock (the cost model's), the part, and passes the reference to ``csim_design``.
+- ``run_hls.tcl`` adds only ``include/`` (fgc's unit headers; Vitis's own ``ap_fixed.h`` /
+  ``hls_stream.h`` are used), has one clock (the cost model's), the part, and passes the
+  reference to ``csim_design``.
 """
 
 from __future__ import annotations
@@ -167,8 +168,15 @@ def test_tcl_uses_vitis_headers_one_clock_and_the_reference(tmp_path):
     proj = emit(program, tmp_path / "p", HlsConfig(scalar="double", clock_ns=5.0))
     tcl = (proj.directory / "run_hls.tcl").read_text()
     code = [line.strip() for line in tcl.splitlines() if not line.startswith("#")]
-    assert not any("-I" in line or "isystem" in line or "ap_types" in line for line in code)
-    assert 'set cflags "-std=c++14"' in code
+    # the unit headers the kernel includes by name (fgc_qr.h, fgc_lm.h, ...) are found in
+    # include/; no other include path, so Vitis's own ap_fixed.h / hls_stream.h are used
+    assert 'set cflags "-std=c++14 -Iinclude"' in code
+    flags = [line.replace("-Iinclude", "") for line in code]
+    assert not any("-I" in line or "isystem" in line or "ap_types" in line for line in flags)
+    assert "csim_include" not in tcl.replace("stand-ins in csim_include/", "")
+    included = {h for h in re.findall(r'#include "(fgc_\w+\.h)"', (proj.directory /
+                                                                   "chk_tcl.cpp").read_text())}
+    assert included and all((proj.directory / "include" / h).is_file() for h in included)
     assert code.count("create_clock -period 5 -name default") == 1
     assert sum("create_clock" in line for line in code) == 1
     assert "set_part {xc7z045ffg900-2}" in code

@@ -8,10 +8,11 @@
 #                                       cosim export; cosim and export need csynth in the same run)
 # The testbench reads data.txt (write it with fgc.ir.datafile.write_data), compares its result with
 # reference.txt (the simulator's, written beside the data; exit 4 on a mismatch) and writes
-# result.txt. No include path is given: Vitis's own ap_fixed.h and hls_stream.h are used (the
-# Makefile's C simulation alone adds the stand-ins).
+# result.txt. The one include path is include/ (fgc's unit headers: fgc_qr.h, fgc_lm.h, ...);
+# Vitis's own ap_fixed.h and hls_stream.h are used (the Makefile's C simulation alone adds the
+# stand-ins in csim_include/).
 # One clock: 143 MHz, the clock the cost model prices (SolverConfig.clock_mhz).
-set cflags "-std=c++14"
+set cflags "-std=c++14 -Iinclude"
 open_project -reset imu_window_prj
 set_top imu_window_top
 add_files imu_window.cpp -cflags $cflags
