@@ -173,7 +173,7 @@ def test_tcl_uses_vitis_headers_one_clock_and_the_reference(tmp_path):
     assert 'set cflags "-std=c++14 -Iinclude"' in code
     flags = [line.replace("-Iinclude", "") for line in code]
     assert not any("-I" in line or "isystem" in line or "ap_types" in line for line in flags)
-    assert "csim_include" not in tcl.replace("stand-ins in csim_include/", "")
+    assert "csim_include" not in tcl
     included = {h for h in re.findall(r'#include "(fgc_\w+\.h)"', (proj.directory /
                                                                    "chk_tcl.cpp").read_text())}
     assert included and all((proj.directory / "include" / h).is_file() for h in included)

@@ -10,7 +10,7 @@
 # reference.txt (the simulator's, written beside the data; exit 4 on a mismatch) and writes
 # result.txt. The one include path is include/ (fgc's unit headers: fgc_qr.h, fgc_lm.h, ...);
 # Vitis's own ap_fixed.h and hls_stream.h are used (the Makefile's C simulation alone adds the
-# stand-ins in csim_include/).
+# stand-ins).
 # One clock: 143 MHz, the clock the cost model prices (SolverConfig.clock_mhz).
 set cflags "-std=c++14 -Iinclude"
 open_project -reset pose_graph_prj
