@@ -427,22 +427,6 @@ class _Reader:
         return {"<": a < b, "<=": a <= b, ">": a > b, ">=": a >= b, "==": a == b,
                 "!=": a != b}[m.group(2)]
 
-    def _trips(self, header: list[str], env: dict[str, int]) -> int | None:
-        init = re.match(r"^(?:const\s+)?(?:int|unsigned)?\s*(\w+)\s*=\s*([^,]+)",
-                        header[0].strip())
-        bound = re.match(r"^\s*(\w+)\s*(<=|<)\s*(.+)$", header[1].strip())
-        if not init or not bound:
-            return None
-        lo, hi = self._value(init.group(2), env), self._value(bound.group(3), env)
-        inc = 1
-        s = re.match(r"^\w+\s*\+=\s*(.+)$", header[2].strip())
-        if s:
-            inc = self._value(s.group(1), env) or 0
-        if lo is None or hi is None or inc <= 0:
-            return None
-        hi += bound.group(2) == "<="
-        return max(0, -(-(hi - lo) // inc))
-
     def _tripcount(self, body: str, env: dict[str, int]) -> int | None:
         m = re.match(r"\s*#\s*pragma\s+HLS\s+LOOP_TRIPCOUNT\s+max\s*=\s*([\w:]+)", body)
         return self._value(m.group(1), env) if m else None
