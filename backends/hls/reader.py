@@ -148,13 +148,18 @@ def _blank_macros(code: str) -> str:
     return "".join(out)
 
 
+def _own_level(text: str) -> str:
+    """``text`` with every brace block inside it replaced by ';' (what its own level says)."""
+    while True:
+        new = re.sub(r"\{[^{}]*\}", ";", text)
+        if new == text:
+            return text
+        text = new
+
+
 def _pipelined(body: str) -> bool:
     """Whether a loop body (its own level, not a nested loop's) holds a PIPELINE pragma."""
-    while True:
-        new = re.sub(r"\{[^{}]*\}", ";", body)
-        if new == body:
-            break
-        body = new
+    body = _own_level(body)
     return re.search(r"#\s*pragma\s+HLS\s+PIPELINE\b(?![^\n]*\boff\b)", body, re.I) is not None
 
 
@@ -690,12 +695,8 @@ class _Reader:
             v = self._param_var(f, p)
             if v is not None:
                 scope[p.name] = v
-        before = code[f.body[0] + 1:open_]
-        while True:  # blocks closed before the loop declare nothing that lives into it
-            new = re.sub(r"\{[^{}]*\}", ";", before)
-            if new == before:
-                break
-            before = new
+        # blocks closed before the loop declare nothing that lives into it
+        before = _own_level(code[f.body[0] + 1:open_])
         for name, (is_float, dims) in self._declarations(before).items():
             scope[name] = _Var(is_float, dims, name, "local")
         outer = frozenset({v.alias for v in scope.values()} | set(self.globals))
