@@ -20,27 +20,27 @@ from pathlib import Path
 from fgc.app.specs import example
 from fgc.compile import compile_graph
 from fgc.ir.program import SolverConfig
-from fgc_backends.cost.operators import table
 from fgc_backends.hls import HlsConfig, emit
 from fgc_backends.hls.plan import DEFAULT_ALLOCATION, PlanOptions, build_plan, plan_cost
 from fgc_backends.hls.reader import check, emitted_files, read_design
 
 
-def _dsp_of(precision: str) -> dict[str, int]:
-    tab = table(precision)
+def _dsp_of(tab) -> dict[str, int]:
     return {"add": tab.add.dsp, "mul": tab.mul.dsp, "div": tab.div.dsp, "sqrt": tab.sqrt.dsp,
             "special": tab.special.dsp}
 
 
 def measure(program, config: HlsConfig, out: Path) -> dict:
     emit(program, out, config)
-    cost = plan_cost(build_plan(program, PlanOptions.for_config(config, program)))
+    plan = build_plan(program, PlanOptions.for_config(config, program))
+    cost = plan_cost(plan)
     files, top = emitted_files(out)
     precision = "float64" if config.scalar == "double" else "float32"
-    design = read_design(files, top, table(precision).add.latency)
+    tab = plan.target.ops(precision)  # the design's part and clock, as the plan prices it
+    design = read_design(files, top, tab.add.latency)
     issues = check(design.loops)
     return dict(plan_dsp=cost.dsp, plan_bram36=cost.bram36, plan_cycles=cost.cycles,
-                reader_dsp=design.dsp(_dsp_of(precision)),
+                reader_dsp=design.dsp(_dsp_of(tab)),
                 ii_short=sum(i.rule == "ii_ports" for i in issues),
                 recurrences=sum(i.rule == "ii_recurrence" for i in issues),
                 worst=max((r.ii_bound / r.ii for r in design.loops), default=1.0))
