@@ -1,0 +1,95 @@
+"""``fgc verify SPEC``: the simulator against GTSAM's LM (batch) or gtsam.ISAM2 with the same
+policy after every keyframe (--window / --incremental); exit 1 when FAILED."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fgc.app.commands.options import streaming_args, values_arg
+from fgc.app.commands.outputs import estimates_out, print_lines, write_json
+from fgc.app.commands.steps import (
+    EXIT_FAILED,
+    EXIT_OK,
+    WithProgress,
+    compile_spec,
+    is_streaming,
+    load_backend,
+    progress_display,
+)
+from fgc.app.commands.stream import mode_text, stream_setup
+
+NAME = "verify"
+HELP = "solve with the simulator and with GTSAM and compare"
+FAILS = "FAILED (the verdict line says why)"
+JSON_HELP = "also write the report as JSON"
+HARDWARE = None  # hardware_args: --clock only
+
+
+def add_arguments(p) -> None:
+    streaming_args(p)
+    values_arg(p)
+
+
+
+def cmd_verify(args) -> int:
+    from fgc.app.run_report import verify_report
+
+    if is_streaming(args):
+        return _verify_stream(args)
+    graph, program, data = compile_spec(args, "float64")
+    display = progress_display(args, f"verify {args.spec}", program, simulator=True)
+    report = verify_report(graph, program, data, WithProgress(load_backend("sim"), display))
+    report["progress"] = display.records
+    print_lines(args, report.pop("summary"),
+           f"fgc verify {args.spec}: {'PASSED' if report['passed'] else 'FAILED'}")
+    estimates_out(args, graph, report, report.pop("_result_values"))
+    write_json(args.json, report)
+    return EXIT_OK if report["passed"] else EXIT_FAILED
+
+
+def _verify_stream(args) -> int:
+    from fgc.app import streaming
+    from fgc.app.run_report import ROT_TOL_F32, STATE_TOL_F64, require_finite_start
+    from fgc.interop import oracles
+    from fgc.interop.to_gtsam import to_gtsam
+
+    sp, data = stream_setup(args, "float64")
+    graph, program, window = sp.graph, sp.program, sp.window
+    result = streaming.run_stream(program, data, window, sp=sp)
+    require_finite_start(graph, result)
+    problem = to_gtsam(graph)
+    clusters = program.schedule.clusters
+    windows = [(u["first"], u["mode"] == "batch") for u in result.updates]
+    oracle = oracles.isam2_per_keyframe(graph, problem, clusters, windows)
+    oracle = [{k: e[k] for k in u["values"]} for u, e in zip(result.updates, oracle,
+                                                              strict=True)]
+    dist = oracles.per_keyframe_distance(result.updates, oracle)
+    tol = STATE_TOL_F64 if program.solver.precision == "float64" else ROT_TOL_F32
+    worst = int(np.argmax(dist))
+    passed = result.status == "converged" and max(dist) <= tol
+    report = {"mode": "fixed-lag" if window else "incremental", "window": window,
+              "keyframes": len(clusters), "status": result.status, "tolerance": tol,
+              "per_keyframe_distance_isam2": dist, "passed": passed}
+    lines = [f"fgc verify {args.spec}: {len(clusters)} keyframes, {mode_text(program, window)}"
+             f", simulator {program.solver.precision} vs gtsam.ISAM2 with the same policy "
+             "(older keyframes held, factors across the window's edge kept linear), after "
+             "every keyframe",
+             f"  largest state difference {max(dist):.2e} at keyframe {worst} (tolerance "
+             f"{tol:g})"]
+    if window is not None:
+        fls = oracles.fixed_lag_per_keyframe(graph, problem, clusters, window, "batch")
+        fdist = oracles.per_keyframe_distance(result.updates, fls)
+        report["per_keyframe_distance_batch_fixed_lag"] = fdist
+        lines.append(f"  gtsam.BatchFixedLagSmoother (lag {window - 1}, timestamps = keyframe "
+                     f"index): largest difference {max(fdist):.2e} (reported, not judged: "
+                     "measured up to 1e-2 on LIO once keyframes are marginalised; see the "
+                     "README)")
+    verdict = "PASSED" if passed else "FAILED"
+    why = ([f"fgc's stream ended {result.status}"] if result.status != "converged" else []) + (
+        [f"largest difference {max(dist):.2e} > {tol:g}"] if max(dist) > tol else [])
+    lines.append(f"  {verdict}: " + (f"fgc's stream converged and every keyframe is within "
+                                     f"{tol:g} of ISAM2" if passed else "; ".join(why)))
+    print_lines(args, lines, f"fgc verify {args.spec}: {verdict}")
+    estimates_out(args, graph, report, result.values)
+    write_json(args.json, report)
+    return EXIT_OK if passed else EXIT_FAILED
