@@ -16,7 +16,7 @@ from fgc_backends.cfamily.printer import HlsCodePrinter, UnsupportedExpressionEr
 from fgc_backends.cfamily.results import HlsResult
 from fgc_backends.hls import emitter
 from fgc_backends.hls.build import HlsBuildError, HlsMismatchError, make, run, run_csim
-from fgc_backends.hls.config import HlsConfig, HlsConfigError
+from fgc_backends.hls.config import DesignOptions, HlsConfig, HlsConfigError
 from fgc_backends.hls.emitter import HlsProject
 from fgc_backends.hls.lint import HlsLintError, LintIssue, lint_source
 from fgc_backends.hls.streaming import emit_window, on_chip, stream, update_model, window_model
@@ -34,7 +34,7 @@ def emit(program, out_dir, config=None, **options) -> HlsProject:
         return emit_window(program, out_dir, config)
     return emitter.emit(program, out_dir, config, **options)
 
-__all__ = ["HlsBuildError", "HlsMismatchError", "HlsCodePrinter", "HlsConfig", "HlsConfigError",
-           "HlsLintError", "HlsProject", "HlsResult", "LintIssue", "UnsupportedExpressionError",
-           "NOT_EMITTED", "emit", "lint_source", "make", "on_chip", "run", "run_csim", "stream",
-           "update_model", "window_model", "Config"]
+__all__ = ["DesignOptions", "HlsBuildError", "HlsMismatchError", "HlsCodePrinter", "HlsConfig",
+           "HlsConfigError", "HlsLintError", "HlsProject", "HlsResult", "LintIssue",
+           "UnsupportedExpressionError", "NOT_EMITTED", "emit", "lint_source", "make", "on_chip",
+           "run", "run_csim", "stream", "update_model", "window_model", "Config"]

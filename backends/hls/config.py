@@ -1,4 +1,12 @@
-"""Configuration of the HLS C++ backend: one documented, frozen dataclass.
+"""Configuration of the HLS C++ backend: two documented, frozen dataclasses.
+
+:class:`DesignOptions` is the design's shape beyond the Program's solver settings: its target
+(the FPGA part; the clock is the Program's, ``SolverConfig.clock_mhz``, and a period given here
+must agree with it) and the units' options (unit sets, the factor datapaths' ALLOCATION). It is
+the one place these are validated (:meth:`DesignOptions.check`) and the one source the
+accelerator plan's options are built from (:meth:`DesignOptions.plan_options`;
+``PlanOptions.for_config`` asks the config). :class:`HlsConfig` carries it (``config.design``)
+beside the C++ it emits: the scalar types, the Program limits, the C simulation's compiler.
 
 Like SymForce's code-generation configs, the config answers where the backend's templates live
 (:meth:`HlsConfig.template_dir`) and which sympy printer prints its kernels
@@ -8,20 +16,125 @@ here; there are no global flags.
 
 from __future__ import annotations
 
+import dataclasses
 import re
-from dataclasses import dataclass
+from dataclasses import InitVar, dataclass
 from pathlib import Path
 
+from fgc.ir.program import Program
 from fgc_backends.cfamily import scalars
 from fgc_backends.cfamily.errors import CodegenError
 from fgc_backends.cfamily.scalars import SCALARS
+from fgc_backends.hls.plan.options import DEFAULT_ALLOCATION, PlanOptions, scalar_precision
+from fgc_backends.hls.target import DEFAULT_PART, DEVICES, Target, device_of, target_of
 
-_PART = re.compile(r"^[A-Za-z0-9_-]{1,64}$")
+PART_NAME = re.compile(r"^[A-Za-z0-9_-]{1,64}$")  # a part name is printed into run_hls.tcl
 CLOCK_TOLERANCE = 0.005  # relative: 7 ns (142.86 MHz) and 143 MHz are the same clock
+CLOCK_NS = (0.5, 1000.0)  # the clock periods fgc prices and synthesises (2 GHz … 1 MHz)
+UNIT_SETS = (1, 8)  # QR/Cholesky unit sets eliminating one level's steps side by side
+ALLOCATION_LIMIT = (1, 4096)  # one operator kind's ALLOCATION limit in a factor datapath
 
 
 class HlsConfigError(CodegenError):
     """An HLS backend option is invalid, or the Program exceeds the backend's limits."""
+
+
+@dataclass(frozen=True)
+class DesignOptions:
+    """The HLS design's options beyond the Program (``HlsConfig.design``).
+
+    - ``part``: the FPGA part for ``run_hls.tcl``, the plan's fit verdict and operator table
+      (:class:`fgc_backends.hls.target.Target`; ZC706's xc7z045 by default).
+    - ``clock_ns``: ``None`` (default): the Program's clock, ``SolverConfig.clock_mhz`` - the one
+      source of the design's clock (the plan prices at it, ``run_hls.tcl`` gets its period). A
+      period given here must be that clock (0.5 %, :meth:`check`); ``fgc ... --clock`` sets both.
+    - ``unit_sets``: QR/Cholesky unit sets that eliminate the steps of one level side by side;
+      ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
+    - ``allocation``: the factor datapaths' ALLOCATION limits per operator kind (``add``,
+      ``mul``, ``div``, ``sqrt``, ``trig``, ``special``), as ``((kind, limit), …)``; kinds not
+      named keep the plan's default (``fgc_backends.hls.plan.DEFAULT_ALLOCATION``), which is
+      what ``None`` means. The plan shares each limit out over the block types by instance
+      count (``PlanOptions.allocation_scaling``). ``fgc compile --allocation mul=48,add=32``.
+
+    The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
+    (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
+    """
+
+    part: str = DEFAULT_PART
+    clock_ns: float | None = None
+    unit_sets: int | None = None
+    allocation: tuple[tuple[str, int], ...] | None = None
+
+    def check(self, program: Program | None = None) -> None:
+        """Raise :class:`HlsConfigError` naming the first invalid option; with ``program``, also
+        when ``clock_ns`` is not the Program's clock."""
+        if not isinstance(self.part, str) or not PART_NAME.match(self.part):
+            raise HlsConfigError(f"FPGA part {self.part!r} is not a plain part name")
+        if device_of(self.part) is None:
+            raise HlsConfigError(f"FPGA part {self.part!r}: fgc knows no capacities for its "
+                                 f"device (the plan's fit verdict and the lint's DSP budget need "
+                                 f"them); known devices: {', '.join(DEVICES)} "
+                                 "(backends/hls/target.py)")
+        low, high = CLOCK_NS
+        if self.clock_ns is not None and not (low <= float(self.clock_ns) <= high):
+            raise HlsConfigError(f"clock period {self.clock_ns} ns is outside {low:g} … {high:g} "
+                                 "ns")
+        low, high = UNIT_SETS
+        if self.unit_sets is not None and not low <= int(self.unit_sets) <= high:
+            raise HlsConfigError(f"unit_sets must be {low} … {high}, got {self.unit_sets}")
+        if self.allocation is not None:
+            _check_allocation(self.allocation)
+        if program is not None:
+            self.check_clock(program.solver.clock_mhz)
+
+    def check_clock(self, clock_mhz: float) -> None:
+        """Raise :class:`HlsConfigError` if the cost model's clock (``SolverConfig.clock_mhz``)
+        and ``clock_ns`` (``run_hls.tcl``'s period) are not the same clock (0.5 %); without a
+        period the design takes the Program's."""
+        if self.clock_ns is None:
+            return
+        tcl_mhz = 1000.0 / float(self.clock_ns)
+        if abs(tcl_mhz - float(clock_mhz)) > CLOCK_TOLERANCE * float(clock_mhz):
+            raise HlsConfigError(f"clock mismatch: the Program is costed at {clock_mhz:g} MHz "
+                                 f"(SolverConfig.clock_mhz) but HlsConfig.clock_ns="
+                                 f"{self.clock_ns:g} is {tcl_mhz:.4g} MHz; set both (fgc --clock "
+                                 "sets both)")
+
+    def target(self, program: Program) -> Target:
+        """The design's :class:`Target`: this part at the Program's clock."""
+        return target_of(self.part, program.solver.clock_mhz)
+
+    def plan_options(self, program: Program, precision: str | None = None,
+                     les_precision: str | None = None, **changes) -> PlanOptions:
+        """The accelerator plan's options of this design for ``program``: the Program's n_u and
+        #CPE, these unit sets, part and ALLOCATION limits (over the defaults), and the
+        precisions the design computes in (None: the Program's)."""
+        base = dict(unit_sets=self.unit_sets, part=self.part, precision=precision,
+                    les_precision=les_precision)
+        if self.allocation:  # the design's limits over the defaults
+            base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
+                                        **dict(self.allocation)}.items())
+        base.update(changes)
+        return PlanOptions.of(program, **base)
+
+
+def _check_allocation(allocation) -> None:
+    kinds = dict(DEFAULT_ALLOCATION)
+    low, high = ALLOCATION_LIMIT
+    for item in allocation:
+        if not (isinstance(item, tuple) and len(item) == 2 and item[0] in kinds
+                and isinstance(item[1], int) and not isinstance(item[1], bool)):
+            raise HlsConfigError(f"allocation entry {item!r}: expected (kind, limit) with kind "
+                                 f"one of {', '.join(kinds)}")
+        if not low <= item[1] <= high:
+            raise HlsConfigError(f"allocation limit of {item[0]} must be {low} … {high}, got "
+                                 f"{item[1]}")
+    names = [k for k, _ in allocation]
+    if len(set(names)) != len(names):
+        raise HlsConfigError(f"allocation names a kind twice: {names}")
+
+
+_DESIGN_FIELDS = tuple(f.name for f in dataclasses.fields(DesignOptions))
 
 
 @dataclass(frozen=True)
@@ -38,19 +151,11 @@ class HlsConfig(scalars.ScalarTypes):
       accumulation, elimination, back-substitution; ``"float"`` or ``"double"``, at least as
       wide as ``scalar``), the mixed design; ``None`` means ``scalar``, or ``"double"`` for a
       Program whose ``SolverConfig.linear_precision`` is float64.
-    - ``part``: the FPGA part for ``run_hls.tcl``, the plan's fit verdict and operator table
-      (``fgc_backends.hls.target.Target``; ZC706's xc7z045 by default).
-    - ``clock_ns``: ``None`` (default): the Program's clock, ``SolverConfig.clock_mhz`` - the one
-      source of the design's clock (the plan prices at it, ``run_hls.tcl`` gets its period). A
-      period given here must be that clock (0.5 %, :func:`check_clock`); ``fgc ... --clock``
-      sets both.
-    - ``unit_sets``: QR/Cholesky unit sets that eliminate the steps of one level side by side;
-      ``None`` means two on a two-ended chain (one per end, as in paper A) and one otherwise.
-    - ``allocation``: the factor datapaths' ALLOCATION limits per operator kind (``add``,
-      ``mul``, ``div``, ``sqrt``, ``trig``, ``special``), as ``((kind, limit), …)``; kinds not
-      named keep the plan's default (``fgc_backends.hls.plan.DEFAULT_ALLOCATION``), which is
-      what ``None`` means. The plan shares each limit out over the block types by instance
-      count (``PlanOptions.allocation_scaling``). ``fgc compile --allocation mul=48,add=32``.
+    - ``design``: the design's :class:`DesignOptions` (part, clock period, unit sets,
+      ALLOCATION limits). The old keywords still work and read through:
+      ``HlsConfig(part="xczu9eg-ffvb1156-2-e", unit_sets=2)`` is
+      ``HlsConfig(design=DesignOptions(part=…, unit_sets=2))`` and ``config.part`` is
+      ``config.design.part``.
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
       widest elimination step this backend accepts; larger Programs fail at emit time.
     - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation (portable: they
@@ -61,18 +166,31 @@ class HlsConfig(scalars.ScalarTypes):
 
     scalar: str = "float"
     linear_scalar: str | None = None
-    part: str = "xc7z045ffg900-2"
-    clock_ns: float | None = None
-    unit_sets: int | None = None
-    allocation: tuple[tuple[str, int], ...] | None = None
+    design: DesignOptions = DesignOptions()
     max_variables: int = 8192
     max_step_columns: int = 512
     cxx: str = "g++"
     cxxflags: tuple[str, ...] = ("-std=c++17", "-O2", "-ffp-contract=off", "-Wall", "-Wextra",
                                  "-Werror", "-Wno-unknown-pragmas")
+    # the design's options by their old names (HlsConfig(part=…)): folded into ``design``
+    part: InitVar[str | None] = None
+    clock_ns: InitVar[float | None] = None
+    unit_sets: InitVar[int | None] = None
+    allocation: InitVar[tuple[tuple[str, int], ...] | None] = None
 
-    def check(self) -> None:
-        """Raise :class:`HlsConfigError` naming the first invalid option."""
+    def __post_init__(self, part, clock_ns, unit_sets, allocation) -> None:
+        if not isinstance(self.design, DesignOptions):
+            raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
+                                 f"{type(self.design).__name__}")
+        given = {name: value for name, value in zip(_DESIGN_FIELDS,
+                                                     (part, clock_ns, unit_sets, allocation),
+                                                     strict=True) if value is not None}
+        if given:
+            object.__setattr__(self, "design", dataclasses.replace(self.design, **given))
+
+    def check(self, program: Program | None = None) -> None:
+        """Raise :class:`HlsConfigError` naming the first invalid option; with ``program``, also
+        a design clock that is not the Program's (:meth:`DesignOptions.check`)."""
         scalars.check_scalar(self.scalar, HlsConfigError)
         if self.linear_scalar is not None:
             if self.linear_scalar not in SCALARS:
@@ -84,34 +202,7 @@ class HlsConfig(scalars.ScalarTypes):
             if self.scalar == "double" and self.linear_scalar == "float":
                 raise HlsConfigError("linear_scalar 'float' is narrower than scalar 'double': the "
                                      "linear solver can only be widened")
-        if not _PART.match(self.part):
-            raise HlsConfigError(f"FPGA part {self.part!r} is not a plain part name")
-        from fgc_backends.hls.target import DEVICES, device_of
-
-        if device_of(self.part) is None:
-            raise HlsConfigError(f"FPGA part {self.part!r}: fgc knows no capacities for its "
-                                 f"device (the plan's fit verdict and the lint's DSP budget need "
-                                 f"them); known devices: {', '.join(DEVICES)} "
-                                 "(backends/hls/target.py)")
-        if self.clock_ns is not None and not (0.5 <= float(self.clock_ns) <= 1000.0):
-            raise HlsConfigError(f"clock period {self.clock_ns} ns is outside 0.5 … 1000 ns")
-        if self.unit_sets is not None and not 1 <= int(self.unit_sets) <= 8:
-            raise HlsConfigError(f"unit_sets must be 1 … 8, got {self.unit_sets}")
-        if self.allocation is not None:
-            from fgc_backends.hls.plan import DEFAULT_ALLOCATION
-
-            kinds = dict(DEFAULT_ALLOCATION)
-            for item in self.allocation:
-                if not (isinstance(item, tuple) and len(item) == 2 and item[0] in kinds
-                        and isinstance(item[1], int) and not isinstance(item[1], bool)):
-                    raise HlsConfigError(f"allocation entry {item!r}: expected (kind, limit) "
-                                         f"with kind one of {', '.join(kinds)}")
-                if not 1 <= item[1] <= 4096:
-                    raise HlsConfigError(f"allocation limit of {item[0]} must be 1 … 4096, got "
-                                         f"{item[1]}")
-            names = [k for k, _ in self.allocation]
-            if len(set(names)) != len(names):
-                raise HlsConfigError(f"allocation names a kind twice: {names}")
+        self.design.check(program)
         for name in ("max_variables", "max_step_columns"):
             if int(getattr(self, name)) < 1:
                 raise HlsConfigError(f"{name} must be ≥ 1, got {getattr(self, name)}")
@@ -120,9 +211,14 @@ class HlsConfig(scalars.ScalarTypes):
                 raise HlsConfigError(f"compiler option {flag!r} has characters a Makefile would "
                                      "interpret")
 
-
-
-
+    def plan_options(self, program: Program, **changes) -> PlanOptions:
+        """The options of the design this config emits for ``program``
+        (:meth:`DesignOptions.plan_options`) priced in the scalar types it emits
+        (``scalar_cxx`` for the whole accelerator, ``linear_cxx`` for the linear solver), not
+        the Program's precision: a float design of a float64 Program is priced in float32
+        operators."""
+        return self.design.plan_options(program, scalar_precision(self.scalar_cxx),
+                                        scalar_precision(self.linear_cxx), **changes)
 
     @staticmethod
     def template_dir() -> Path:
@@ -131,16 +227,16 @@ class HlsConfig(scalars.ScalarTypes):
 
 
 def check_clock(clock_mhz: float, config: HlsConfig) -> None:
-    """Raise :class:`HlsConfigError` if the cost model's clock (``SolverConfig.clock_mhz``) and
-    ``config.clock_ns`` (``run_hls.tcl``'s period) are not the same clock (0.5 %); a config
-    without a period takes the Program's."""
-    if config.clock_ns is None:
-        return
-    tcl_mhz = 1000.0 / float(config.clock_ns)
-    if abs(tcl_mhz - float(clock_mhz)) > CLOCK_TOLERANCE * float(clock_mhz):
-        raise HlsConfigError(f"clock mismatch: the Program is costed at {clock_mhz:g} MHz "
-                             f"(SolverConfig.clock_mhz) but HlsConfig.clock_ns={config.clock_ns:g} "
-                             f"is {tcl_mhz:.4g} MHz; set both (fgc --clock sets both)")
+    """Raise :class:`HlsConfigError` if ``config``'s clock period is not ``clock_mhz``
+    (:meth:`DesignOptions.check_clock`)."""
+    config.design.check_clock(clock_mhz)
+
+
+# the design's options read through the config (config.part is config.design.part); set after
+# the dataclass is made, so its __init__ still takes them as keywords (the InitVars above)
+for _name in _DESIGN_FIELDS:
+    setattr(HlsConfig, _name, property(lambda self, _name=_name: getattr(self.design, _name),
+                                       doc=f"``design.{_name}`` (:class:`DesignOptions`)"))
 
 
 def parse_clock(text: str) -> tuple[float, float]:

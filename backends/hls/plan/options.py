@@ -74,18 +74,9 @@ class PlanOptions:
 
     @classmethod
     def for_config(cls, config, program: Program, **changes) -> PlanOptions:
-        """The options of the design an HLS config emits for ``program``: the Program's n_u
-        and #CPE, the config's unit sets, and the operators of the scalar types it emits
-        (``HlsConfig.scalar_cxx`` for the whole accelerator, ``linear_cxx`` for the linear
-        solver), not the Program's precision: a float design of a float64 Program is priced in
-        float32 operators."""
-        base = dict(unit_sets=config.unit_sets, precision=scalar_precision(config.scalar_cxx),
-                    les_precision=scalar_precision(config.linear_cxx), part=config.part)
-        if getattr(config, "allocation", None):  # the config's limits over the defaults
-            base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
-                                        **dict(config.allocation)}.items())
-        base.update(changes)
-        return cls.of(program, **base)
+        """The options of the design an HLS config emits for ``program``, built from its
+        design options in the scalar types it emits (``HlsConfig.plan_options``)."""
+        return config.plan_options(program, **changes)
 
 
 def scalar_precision(scalar_cxx: str) -> str:

@@ -96,19 +96,19 @@ def implied_precision(args, default: str) -> str:
 
 
 def hls_config(args, program):
-    """The HLS backend's config from --scalar, --part and --clock (one clock for the cost
-    model and run_hls.tcl: ``HlsConfig.clock_ns`` is ``1000 / SolverConfig.clock_mhz``)."""
+    """The HLS backend's config: --scalar (default: the Program's precision) and the design's
+    options (``HlsConfig.design``) from --part, --clock, --allocation and --unit-sets (one
+    clock for the cost model and run_hls.tcl: ``clock_ns`` is ``1000 / SolverConfig.clock_mhz``;
+    ``DesignOptions.check`` checks them)."""
     hls = load_backend("hls")
-    options = {"scalar": getattr(args, "scalar", None) or c_scalar(program)}
-    if getattr(args, "part", None):
-        options["part"] = args.part
-    if getattr(args, "clock", None):
-        options["clock_ns"] = args.clock[1]
-    if getattr(args, "allocation", None):
-        options["allocation"] = args.allocation
-    if getattr(args, "unit_sets", None):
-        options["unit_sets"] = args.unit_sets
-    return hls.HlsConfig(**options)
+    clock = getattr(args, "clock", None)
+    design = hls.DesignOptions(**{
+        name: value for name, value in (
+            ("part", getattr(args, "part", None)), ("clock_ns", clock[1] if clock else None),
+            ("allocation", getattr(args, "allocation", None)),
+            ("unit_sets", getattr(args, "unit_sets", None))) if value})
+    return hls.HlsConfig(scalar=getattr(args, "scalar", None) or c_scalar(program),
+                         design=design)
 
 
 def plan_options(args, program):
@@ -117,7 +117,7 @@ def plan_options(args, program):
     ``fgc report`` price). A fixed-point --scalar is refused: the dataflow design has no
     fixed-point units and the plan no fixed-point operator table."""
     config = hls_config(args, program)
-    config.check()
+    config.check(program)
     if config.is_fixed_point:
         raise UsageError(f"fgc {args.command}: --scalar {config.scalar}: the HLS dataflow design "
                          "is float or double only (no fixed-point operator table to price it); "
