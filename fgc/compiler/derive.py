@@ -372,6 +372,7 @@ def storage_tangent_jacobian(t: type[LieGroup], prefix: str) -> sp.Matrix:
 def _with_structure(sf: SymbolicFactor, ftype: FactorType) -> SymbolicFactor:
     """Classify each Jacobian entry; entries fixed at 0/±1 become exact constants."""
     probes = _probe_jacobians(sf, ftype)
+    guarded = _guarded_symbols(sf.kernel)
     outputs = list(sf.kernel.outputs)
     structure, pos, m = [], sf.residual_dim, sf.residual_dim
     for k, block in enumerate(sf.variables):
@@ -379,8 +380,12 @@ def _with_structure(sf: SymbolicFactor, ftype: FactorType) -> SymbolicFactor:
         for i in range(m):
             row = []
             for j in range(block.dim):
-                samples = None if probes is None else np.array([p[k][i, j] for p in probes])
-                code = _classify(sp.sympify(outputs[pos]), samples)
+                expr = sp.sympify(outputs[pos])
+                # an entry through a singular-point convention can be constant at regular
+                # points only (a bearing's ∂/∂θ is -1, GTSAM's 0 at the point itself)
+                samples = None if probes is None or _is_guarded(expr, guarded) else \
+                    np.array([p[k][i, j] for p in probes])
+                code = _classify(expr, samples)
                 if code != GENERAL:
                     outputs[pos] = sp.Integer(int(code))
                 row.append(code)
@@ -391,6 +396,20 @@ def _with_structure(sf: SymbolicFactor, ftype: FactorType) -> SymbolicFactor:
     kernel = Kernel(kernel.inputs, drop_dead(kernel.assignments, kernel.outputs), kernel.outputs)
     return SymbolicFactor(sf.name, sf.fingerprint, sf.variables, sf.measurements, sf.expression,
                           kernel, tuple(structure))
+
+
+def _is_guarded(expr: sp.Expr, guarded: set) -> bool:
+    return bool(expr.free_symbols & guarded) or expr.has(special.GuardedQuotient)
+
+
+def _guarded_symbols(kernel: Kernel) -> set:
+    """The kernel's intermediates that depend on a :class:`special.GuardedQuotient` (a
+    singular-point convention), directly or through other intermediates."""
+    guarded: set = set()
+    for x, e in kernel.assignments:
+        if _is_guarded(e, guarded):
+            guarded.add(x)
+    return guarded
 
 
 def _classify(expr: sp.Expr, samples: np.ndarray | None) -> str:
@@ -440,6 +459,7 @@ def _code_version() -> str:
     geometry = sorted(f"frontend/geometry/{f.name}"
                       for f in (fgc_root / "frontend" / "geometry").glob("*.py"))
     h = hashlib.sha256(source_digest("compiler/derive.py", "frontend/dsl.py", "compiler/kernel.py",
+                                     "frontend/functions.py",
                                      *geometry))
     h.update(sp.__version__.encode())
     return h.hexdigest()[:16]

@@ -285,7 +285,8 @@ class VectorSpace(LieGroup):
         return dot(self.v, as_vector(other, self.dim))
 
     def norm(self):
-        return sqrt(self.dot(self))
+        """|v|; differentiated with GTSAM's convention at the zero vector (norm2 / norm3)."""
+        return special.vector_norm(*(self.v[i] for i in range(self.dim)))
 
     def squared_norm(self):
         return self.dot(self)
