@@ -129,6 +129,29 @@ class SymbolicFactor:
             pos += m * b.dim
         return r, jacs
 
+    @cached_property
+    def _guard_margins(self):
+        """``g - t`` of every :class:`special.GuardedQuotient` of the kernel, compiled (None if
+        it has none)."""
+        guards = set()
+        for e in [e for _, e in self.kernel.assignments] + list(self.kernel.outputs):
+            guards |= sp.sympify(e).atoms(special.GuardedQuotient)
+        if not guards:
+            return None
+        margins = tuple(q.args[2] - q.args[3] for q in sorted(guards, key=sp.default_sort_key))
+        return numeric_function(Kernel(self.kernel.inputs,
+                                       drop_dead(self.kernel.assignments, margins), margins))
+
+    def singular_at(self, values, measured: dict) -> bool:
+        """Whether a singular-point convention is in force at these values (a guard at or
+        below its threshold: a norm of a zero vector, a bearing to a coincident point), where
+        the residual is not differentiable and the Jacobian is GTSAM's convention."""
+        fn = self._guard_margins
+        if fn is None:
+            return False
+        margins = np.asarray(fn(*self._flat_inputs(values, measured)), dtype=float)
+        return bool(np.any(margins <= 0))
+
     def evaluate_residual(self, values, measured: dict) -> np.ndarray:
         out = self._numeric_residual(*self._flat_inputs(values, measured))
         return np.asarray(out, dtype=float).reshape(-1)
