@@ -324,10 +324,10 @@ class Pose3(LieGroup):
         return Point3(self.r.R.T @ (_point_vector(p, 3) - self.t))
 
     def range(self, p):
-        """Distance to a point, GTSAM ``Pose3.range``: the norm of the point in this pose's
-        frame, so the Jacobian at coincident points is GTSAM's there (norm3's all-ones row in
-        the local frame)."""
-        d = self.transformTo(p).v
+        """Distance to a point (GTSAM ``Pose3.range``: the norm of the world-frame difference,
+        with norm3's all-ones Jacobian at coincident points,
+        :class:`~fgc.frontend.geometry.special.VectorNorm`)."""
+        d = _point_vector(p, 3) - self.t
         r = special.vector_norm(d[0], d[1], d[2])
         return r if is_symbolic(r) else float(r)
 
