@@ -286,7 +286,9 @@ class VectorSpace(LieGroup):
 
     def norm(self):
         """|v|; differentiated with GTSAM's convention at the zero vector (norm2 / norm3)."""
-        return special.vector_norm(*(self.v[i] for i in range(self.dim)))
+        if self.symbolic:
+            return special.VectorNorm(*(self.v[i] for i in range(self.dim)))
+        return sqrt(self.dot(self))
 
     def squared_norm(self):
         return self.dot(self)

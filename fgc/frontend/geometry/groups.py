@@ -174,8 +174,7 @@ class Pose2(LieGroup):
         """Distance to a point (GTSAM ``Pose2.range``: its norm's Jacobian at coincident points,
         :class:`~fgc.frontend.geometry.special.VectorNorm`)."""
         d = _point_vector(p, 2) - self.t
-        r = special.vector_norm(d[0], d[1])
-        return r if is_symbolic(r) else float(r)
+        return special.VectorNorm(d[0], d[1]) if is_symbolic(*d) else float(np.sqrt(d @ d))
 
 
 class Rot3(LieGroup):
@@ -328,8 +327,7 @@ class Pose3(LieGroup):
         with norm3's all-ones Jacobian at coincident points,
         :class:`~fgc.frontend.geometry.special.VectorNorm`)."""
         d = _point_vector(p, 3) - self.t
-        r = special.vector_norm(d[0], d[1], d[2])
-        return r if is_symbolic(r) else float(r)
+        return special.VectorNorm(*d) if is_symbolic(*d) else float(np.sqrt(d @ d))
 
 
 def _float_dtype(v):

@@ -338,13 +338,6 @@ class VectorNorm(sp.Function):
         return sp.sqrt(sp.Add(*[x * x for x in self.args]))
 
 
-def vector_norm(*xs):
-    """|x| numeric or symbolic (GTSAM's norm convention when differentiated)."""
-    if any(isinstance(x, sp.Basic) for x in xs):
-        return VectorNorm(*xs)
-    return np.sqrt(sum(x * x for x in xs))
-
-
 def relative_bearing(x, y):
     """(cos, sin) of the direction of ``(x, y)``, GTSAM's ``Rot2::relativeBearing``: the
     identity (1, 0) with a zero Jacobian where ``|(x, y)| ≤ BEARING_TINY``."""
@@ -352,7 +345,7 @@ def relative_bearing(x, y):
         n = VectorNorm(x, y)
         tiny = sp.Float(BEARING_TINY)
         return GuardedQuotient(x, n, n, tiny, sp.S.One), GuardedQuotient(y, n, n, tiny, sp.S.Zero)
-    n = np.sqrt(x * x + y * y)
+    n = (x * x + y * y) ** 0.5
     if n > BEARING_TINY:
         return x / n, y / n
     return type(n)(1.0), type(n)(0.0)
