@@ -129,3 +129,34 @@ def test_the_dsl_spells_norms_as_vector_norm():
     assert fgc.hypot(3.0, 4.0) == 5.0 and float(Point2(3.0, 4.0).norm()) == 5.0
     c, s = special.relative_bearing(0.0, 0.0)
     assert (c, s) == (1.0, 0.0)  # GTSAM: the identity rotation
+
+
+def test_every_backend_printer_prints_the_guard_without_dividing_by_zero():
+    """The simulator's NumPy (run here on a coincident and a regular instance side by side:
+    finite, equal to the derivation, no NumPy warning) and the C++ printers, scalar and
+    lane-wise (the C++ itself is compiled and run by tests/test_singular_start.py)."""
+    import warnings
+
+    from fgc_backends.cfamily.printer import print_kernel
+    from fgc_backends.sim.printer import SimPrinter
+
+    sf = derive(point_distance)
+    printed = SimPrinter().kernel(sf.kernel, "k")
+    assert any("numpy.where" in line for line in printed.lines)
+    ns: dict = {"numpy": np}
+    exec("def k(x):\n" + "\n".join("    " + line for line in printed.lines), ns)  # noqa: S102
+    x = np.array([[1.0, 1.0], [2.0, 2.0], [1.0, 4.0], [2.0, 6.0], [1.0, 1.0]])  # p, q, measured
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = ns["k"](x)
+    assert np.all(np.isfinite(out))
+    for i in range(2):
+        r, jacs = sf.evaluate([Point2(*x[0:2, i]), Point2(*x[2:4, i])], {"measured": x[4:, i]})
+        assert np.allclose(out[:, i], np.concatenate([r, *[j.ravel() for j in jacs]]),
+                           rtol=1e-15, atol=0)
+    names = [f"in[{i}]" for i in range(len(sf.kernel.inputs))]
+    scalar = print_kernel(sf.kernel, names, "point_distance")
+    lanes = print_kernel(sf.kernel, names, "point_distance", vector=True)
+    text = "\n".join(scalar.intermediates + scalar.outputs)
+    assert "fgc_guarded_quotient(" in text and "v_fgc_guarded_quotient(" not in text
+    assert "v_fgc_guarded_quotient(" in "\n".join(lanes.intermediates + lanes.outputs)
