@@ -244,9 +244,10 @@ def _fgc_status(r: dict) -> str:
 def input_problem(graph: Graph, factor_types: set | None = None) -> str | None:
     """The first factor (of ``factor_types``, default all) whose linearisation at the initial
     values is not finite, or whose derived Jacobians differ from central differences there but
-    agree at a nearby point: a singular or non-differentiable point of its residual (coincident
-    points of a distance or a bearing, ...), which is the input's problem, not the derivation's.
-    None when there is none."""
+    agree at a nearby point: a singular or non-differentiable point of its residual (a
+    direction at 0, atan2 on its branch cut, ...), which is the input's problem, not the
+    derivation's. Coincident points of a norm or a bearing are not: fgc derives GTSAM's
+    convention there (``singular_at``). None when there is none."""
     from fgc.interop.to_gtsam import (
         FD_TOLERANCE,
         is_custom,
@@ -266,7 +267,7 @@ def input_problem(graph: Graph, factor_types: set | None = None) -> str | None:
         if not (np.all(np.isfinite(a)) and np.all(np.isfinite(b))):
             what = "residual" if not np.all(np.isfinite(b)) else "Jacobian"
             return (f"{on}: its {what} at the initial values is not finite (a singular point "
-                    "of the residual, e.g. a distance or bearing between coincident points); "
+                    "of the residual, e.g. a direction x / |x| at x = 0); "
                     "change those initial values")
         if not is_custom(f.type) or singular_at(f, values):
             continue  # built-in, or at a singular point where GTSAM's convention applies
@@ -277,7 +278,7 @@ def input_problem(graph: Graph, factor_types: set | None = None) -> str | None:
         if linearization_checks(_single(f, nearby))[0].error <= FD_TOLERANCE:
             return (f"{on}: at the initial values its derived Jacobians differ from central "
                     "differences, but agree at a nearby point, so the residual is not "
-                    "differentiable there (e.g. a distance between coincident points); "
+                    "differentiable there (e.g. atan2 on its branch cut); "
                     "change those initial values")
     return None
 
