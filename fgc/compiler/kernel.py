@@ -236,7 +236,7 @@ def _identifier(sym: sp.Symbol, i: int) -> str:
 def numeric_function(kernel: Kernel):
     """Compile a kernel to a Python callable over NumPy scalars/arrays.
 
-    The callable raises no NumPy floating-point warning: a 0/0 or an overflow (a range Jacobian
+    The callable raises no NumPy floating-point warning: a 0/0 or an overflow (a direction x / |x|
     at x = 0) gives inf/NaN outputs, which every caller checks and reports naming the
     factor (``require_finite_start``, verify's linearisation checks), instead of an unworded
     ``<fgc kernel>: RuntimeWarning`` on stderr."""
