@@ -3,9 +3,9 @@
 Issue 34 reported "failed after 0 iterations" for such problems; at regular points every
 backend's LM stops on its gradient rule at the first linearisation (‖g‖∞ = 0 < eps_gradient),
 so these tests pin that down for the simulator (fast), the native solver and the HLS C
-simulation (heavy: C++ builds). The reported failure needs coincident points (a range, bearing
-or custom distance whose Jacobian is 0/0 there: "non_finite" after 0 iterations), which is a
-derivative convention, not a stopping rule: not covered here.
+simulation (heavy: C++ builds). The reported failure needed coincident points (a range, bearing
+or custom distance whose Jacobian was 0/0 there: "non_finite" after 0 iterations), which is a
+derivative convention, not a stopping rule: tests/test_singular_start.py.
 """
 
 from __future__ import annotations

@@ -139,6 +139,10 @@ class HlsCodePrinter(CXX17CodePrinter):
         args = ", ".join(self._print(a) for a in expr.args)
         if isinstance(expr, (special.LieCoefficient, special.SO3LogComponent)):
             return f"{self.call}{type(expr).__name__}({args})"
+        if isinstance(expr, special.GuardedQuotient):  # a / b where g > t, else f
+            return f"{self.call}fgc_guarded_quotient({args})"
+        if isinstance(expr, special.VectorNorm):
+            return self._print(expr.expanded())
         for func, name in _FUNCTIONS.items():
             if isinstance(expr, func):
                 return f"{self.call}{name}({args})"
@@ -168,7 +172,8 @@ def check_supported(exprs: Iterable[sp.Expr], where: str) -> None:
     Checked before printing so that the error names the block and the offending function
     instead of surfacing as a g++ failure.
     """
-    allowed_funcs = tuple(_FUNCTIONS) + (special.LieCoefficient, special.SO3LogComponent)
+    allowed_funcs = tuple(_FUNCTIONS) + (special.LieCoefficient, special.SO3LogComponent,
+                                         *special.GUARD_FUNCTIONS)
     for expr in exprs:
         for node in sp.preorder_traversal(sp.sympify(expr)):
             if node.is_Atom or isinstance(node, (sp.Add, sp.Mul)):

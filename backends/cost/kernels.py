@@ -16,6 +16,7 @@ from functools import lru_cache
 
 import sympy as sp
 
+from fgc.frontend.geometry import special
 from fgc.ir.program import BlockSpec, KernelText, Program
 
 from .params import KINDS, CostParams, OperatorCounts, OperatorTable
@@ -69,6 +70,8 @@ def _ready(expr: sp.Expr, ready: dict, lat: dict, balanced: bool) -> int:
         return _pow_ready(expr, args[0], lat, balanced)
     if isinstance(expr, _TRIG):
         return max(args) + lat["trig"]
+    if isinstance(expr, special.GuardedQuotient):  # a divide, then a select
+        return max(args) + lat["div"]
     # Lie coefficients, SO(3) log components and anything unknown: the slowest unit.
     return max(args) + lat["special"]
 

@@ -88,6 +88,14 @@ class SimPrinter(NumPyPrinter):
             return f"{type(expr).__name__}({self._print(expr.args[0])})"
         if isinstance(expr, special.SO3LogComponent):
             raise PrintError("so3_log components must be grouped before printing")
+        if isinstance(expr, special.GuardedQuotient):
+            # a / b where g > t, else f; b is replaced by 1 where the quotient is not taken, so
+            # no lane divides by 0
+            a, b, g, t, f = (self._print(x) for x in expr.args)
+            cond = f"({g} > {t})"
+            return f"numpy.where({cond}, {a} / numpy.where({cond}, {b}, 1), {f})"
+        if isinstance(expr, special.VectorNorm):
+            return self._print(expr.expanded())
         return super()._print_Function(expr)
 
     def _print_not_supported(self, expr) -> str:

@@ -168,13 +168,15 @@ def verify_report(graph: Graph, program, data, sim) -> dict:
 
 def _check_dict(c) -> dict:
     return {"factor_type": c.factor_type, "factors": c.factors, "error": c.error,
-            "tolerance": c.tolerance, "method": c.method, "passed": c.passed}
+            "tolerance": c.tolerance, "method": c.method, "passed": c.passed,
+            "singular": c.singular}
 
 
 def _executed_dict(c) -> dict:
     return {"factor_type": c.factor_type, "block": c.block, "checked": c.checked,
             "factors": c.factors, "error": c.error, "where": c.where, "tolerance": c.tolerance,
-            "reference": c.reference, "sampled": c.sampled, "passed": c.passed}
+            "reference": c.reference, "sampled": c.sampled, "passed": c.passed,
+            "singular": c.singular}
 
 
 def _state_tolerance(r: dict) -> str:
@@ -242,14 +244,16 @@ def _fgc_status(r: dict) -> str:
 def input_problem(graph: Graph, factor_types: set | None = None) -> str | None:
     """The first factor (of ``factor_types``, default all) whose linearisation at the initial
     values is not finite, or whose derived Jacobians differ from central differences there but
-    agree at a nearby point: a singular or non-differentiable point of its residual (coincident
-    points of a distance or a bearing, ...), which is the input's problem, not the derivation's.
-    None when there is none."""
+    agree at a nearby point: a singular or non-differentiable point of its residual (a
+    direction at 0, atan2 on its branch cut, ...), which is the input's problem, not the
+    derivation's. Coincident points of a norm or a bearing are not: fgc derives GTSAM's
+    convention there (``singular_at``). None when there is none."""
     from fgc.interop.to_gtsam import (
         FD_TOLERANCE,
         is_custom,
         linearization_checks,
         linearize_factor,
+        singular_at,
     )
 
     rng = np.random.default_rng(0)
@@ -263,10 +267,10 @@ def input_problem(graph: Graph, factor_types: set | None = None) -> str | None:
         if not (np.all(np.isfinite(a)) and np.all(np.isfinite(b))):
             what = "residual" if not np.all(np.isfinite(b)) else "Jacobian"
             return (f"{on}: its {what} at the initial values is not finite (a singular point "
-                    "of the residual, e.g. a distance or bearing between coincident points); "
+                    "of the residual, e.g. a direction x / |x| at x = 0); "
                     "change those initial values")
-        if not is_custom(f.type):
-            continue
+        if not is_custom(f.type) or singular_at(f, values):
+            continue  # built-in, or at a singular point where GTSAM's convention applies
         here = _single(f, values)
         if linearization_checks(here)[0].error <= FD_TOLERANCE:
             continue
@@ -274,7 +278,7 @@ def input_problem(graph: Graph, factor_types: set | None = None) -> str | None:
         if linearization_checks(_single(f, nearby))[0].error <= FD_TOLERANCE:
             return (f"{on}: at the initial values its derived Jacobians differ from central "
                     "differences, but agree at a nearby point, so the residual is not "
-                    "differentiable there (e.g. a distance between coincident points); "
+                    "differentiable there (e.g. atan2 on its branch cut); "
                     "change those initial values")
     return None
 
@@ -357,6 +361,13 @@ def _precision_text(r: dict) -> str:
     return r["precision"] + (f" ({les} linear solver)" if les != r["precision"] else "")
 
 
+def _singular_text(c: dict) -> str:
+    n = c.get("singular", 0)
+    return (f" ({n} at a singular point of the residual, e.g. coincident points: residual "
+            "compared, Jacobian GTSAM's convention there, where none exists to compare)"
+            if n else "")
+
+
 def _verify_summary(r: dict) -> list[str]:
     tol = (f"tolerance {STATE_TOL_F64:g}" if r["precision"] == "float64"
            else f"float32 bounds {ROT_TOL_F32:g} rad / {POS_TOL_F32:g} m")
@@ -370,7 +381,7 @@ def _verify_summary(r: dict) -> list[str]:
         if c["method"].startswith("numerical"):
             lines.append(f"  custom factor verify '{c['factor_type']}': checked against "
                          f"{c['method']}, tolerance {c['tolerance']:g}; max rel. diff "
-                         f"{c['error']:.2e} over {c['factors']} factors")
+                         f"{c['error']:.2e} over {c['factors']} factors{_singular_text(c)}")
     executed = r.get("executed_kernel_checks", [])
     if executed:
         worst = max(c["error"] for c in executed)
@@ -381,7 +392,8 @@ def _verify_summary(r: dict) -> list[str]:
         lines.append(f"  executed kernels (simulator) vs numerical derivatives (custom) / fgc's "
                      f"per-factor derivation (built-in), at the initial values and the final "
                      f"estimate: max rel. diff {worst:.2e} over {checked} factor evaluations, "
-                     f"tolerance {executed[0]['tolerance']:g}{sample}")
+                     f"tolerance {executed[0]['tolerance']:g}{sample}"
+                     f"{_singular_text({'singular': sum(c['singular'] for c in executed)})}")
     builtin = [c for c in r["linearization_checks"] if not c["method"].startswith("numerical")]
     if builtin:
         worst = max(c["error"] for c in builtin)

@@ -129,6 +129,29 @@ class SymbolicFactor:
             pos += m * b.dim
         return r, jacs
 
+    @cached_property
+    def _guard_margins(self):
+        """``g - t`` of every :class:`special.GuardedQuotient` of the kernel, compiled (None if
+        it has none)."""
+        guards = set()
+        for e in [e for _, e in self.kernel.assignments] + list(self.kernel.outputs):
+            guards |= sp.sympify(e).atoms(special.GuardedQuotient)
+        if not guards:
+            return None
+        margins = tuple(q.args[2] - q.args[3] for q in sorted(guards, key=sp.default_sort_key))
+        return numeric_function(Kernel(self.kernel.inputs,
+                                       drop_dead(self.kernel.assignments, margins), margins))
+
+    def singular_at(self, values, measured: dict) -> bool:
+        """Whether a singular-point convention is in force at these values (a guard at or
+        below its threshold: a norm of a zero vector, a bearing to a coincident point), where
+        the residual is not differentiable and the Jacobian is GTSAM's convention."""
+        fn = self._guard_margins
+        if fn is None:
+            return False
+        margins = np.asarray(fn(*self._flat_inputs(values, measured)), dtype=float)
+        return bool(np.any(margins <= 0))
+
     def evaluate_residual(self, values, measured: dict) -> np.ndarray:
         out = self._numeric_residual(*self._flat_inputs(values, measured))
         return np.asarray(out, dtype=float).reshape(-1)
@@ -372,6 +395,7 @@ def storage_tangent_jacobian(t: type[LieGroup], prefix: str) -> sp.Matrix:
 def _with_structure(sf: SymbolicFactor, ftype: FactorType) -> SymbolicFactor:
     """Classify each Jacobian entry; entries fixed at 0/±1 become exact constants."""
     probes = _probe_jacobians(sf, ftype)
+    guarded = _guarded_symbols(sf.kernel)
     outputs = list(sf.kernel.outputs)
     structure, pos, m = [], sf.residual_dim, sf.residual_dim
     for k, block in enumerate(sf.variables):
@@ -379,8 +403,12 @@ def _with_structure(sf: SymbolicFactor, ftype: FactorType) -> SymbolicFactor:
         for i in range(m):
             row = []
             for j in range(block.dim):
-                samples = None if probes is None else np.array([p[k][i, j] for p in probes])
-                code = _classify(sp.sympify(outputs[pos]), samples)
+                expr = sp.sympify(outputs[pos])
+                # an entry through a singular-point convention can be constant at regular
+                # points only (a bearing's ∂/∂θ is -1, GTSAM's 0 at the point itself)
+                samples = None if probes is None or _is_guarded(expr, guarded) else \
+                    np.array([p[k][i, j] for p in probes])
+                code = _classify(expr, samples)
                 if code != GENERAL:
                     outputs[pos] = sp.Integer(int(code))
                 row.append(code)
@@ -391,6 +419,20 @@ def _with_structure(sf: SymbolicFactor, ftype: FactorType) -> SymbolicFactor:
     kernel = Kernel(kernel.inputs, drop_dead(kernel.assignments, kernel.outputs), kernel.outputs)
     return SymbolicFactor(sf.name, sf.fingerprint, sf.variables, sf.measurements, sf.expression,
                           kernel, tuple(structure))
+
+
+def _is_guarded(expr: sp.Expr, guarded: set) -> bool:
+    return bool(expr.free_symbols & guarded) or expr.has(special.GuardedQuotient)
+
+
+def _guarded_symbols(kernel: Kernel) -> set:
+    """The kernel's intermediates that depend on a :class:`special.GuardedQuotient` (a
+    singular-point convention), directly or through other intermediates."""
+    guarded: set = set()
+    for x, e in kernel.assignments:
+        if _is_guarded(e, guarded):
+            guarded.add(x)
+    return guarded
 
 
 def _classify(expr: sp.Expr, samples: np.ndarray | None) -> str:
@@ -440,6 +482,7 @@ def _code_version() -> str:
     geometry = sorted(f"frontend/geometry/{f.name}"
                       for f in (fgc_root / "frontend" / "geometry").glob("*.py"))
     h = hashlib.sha256(source_digest("compiler/derive.py", "frontend/dsl.py", "compiler/kernel.py",
+                                     "frontend/functions.py",
                                      *geometry))
     h.update(sp.__version__.encode())
     return h.hexdigest()[:16]

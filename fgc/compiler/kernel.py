@@ -79,6 +79,9 @@ def _count_ops(expr: sp.Expr, counts: Counter) -> None:
             counts["trig"] += 1
         elif isinstance(node, (special.LieCoefficient, special.SO3LogComponent)):
             counts["special"] += 1
+        elif isinstance(node, special.GuardedQuotient):  # a compare, a divide and a select
+            counts["add"] += 1
+            counts["div"] += 1
 
 
 def _count_pow(node: sp.Pow, counts: Counter) -> None:
@@ -130,7 +133,10 @@ def jacobian_kernel(residual: sp.Matrix, seeds: list[tuple[sp.Symbol, dict[int, 
         dr = _forward(e, deriv, calls)
         jac_entries.extend(dr.get(c, sp.Integer(0)) for c in range(n_tangent))
     inputs = tuple(s for s, _ in seeds)
-    kernel = Kernel(inputs, tuple(out), tuple(reduced) + tuple(jac_entries))
+    # the norms' derivative rule (GTSAM's convention at 0) is used; they are square roots now
+    expand = special.expand_norms
+    kernel = Kernel(inputs, tuple((x, expand(e)) for x, e in out),
+                    tuple(expand(e) for e in tuple(reduced) + tuple(jac_entries)))
     return tidy(kernel), len(reduced)
 
 
@@ -201,7 +207,8 @@ class _Printer(NumPyPrinter):
     """NumPy printer that leaves fgc's special functions as calls into a given namespace."""
 
     def _print_Function(self, expr):
-        if isinstance(expr, (special.LieCoefficient, special.SO3LogComponent)):
+        if isinstance(expr, (special.LieCoefficient, special.SO3LogComponent,
+                             *special.GUARD_FUNCTIONS)):
             args = ", ".join(self._print(a) for a in expr.args)
             return f"{type(expr).__name__}({args})"
         return super()._print_Function(expr)
@@ -229,8 +236,8 @@ def _identifier(sym: sp.Symbol, i: int) -> str:
 def numeric_function(kernel: Kernel):
     """Compile a kernel to a Python callable over NumPy scalars/arrays.
 
-    The callable raises no NumPy floating-point warning: a 0/0 or an overflow (a range Jacobian
-    at zero distance) gives inf/NaN outputs, which every caller checks and reports naming the
+    The callable raises no NumPy floating-point warning: a 0/0 or an overflow (a direction x / |x|
+    at x = 0) gives inf/NaN outputs, which every caller checks and reports naming the
     factor (``require_finite_start``, verify's linearisation checks), instead of an unworded
     ``<fgc kernel>: RuntimeWarning`` on stderr."""
     ns: dict = {"numpy": np, "np": np}

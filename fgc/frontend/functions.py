@@ -59,8 +59,9 @@ def atan2(y, x):
 
 
 def hypot(x, y):
-    """``sqrt(x² + y²)`` on floats (``math.hypot``) or symbolic values."""
-    return sp.sqrt(x * x + y * y) if _symbolic(x, y) else math.hypot(float(x), float(y))
+    """``sqrt(x² + y²)`` on floats (``math.hypot``) or symbolic values, differentiated with
+    GTSAM's norm convention at (0, 0) (:class:`~fgc.frontend.geometry.special.VectorNorm`)."""
+    return special.VectorNorm(x, y) if _symbolic(x, y) else math.hypot(float(x), float(y))
 
 
 # The whitelist: sympy function classes a traced residual may contain (besides +, *, powers,
@@ -68,7 +69,8 @@ def hypot(x, y):
 FUNCTIONS: tuple[type, ...] = (sp.sin, sp.cos, sp.tan, sp.asin, sp.acos, sp.atan, sp.atan2,
                                sp.exp, sp.log, sp.tanh, sp.Abs)
 DERIVATIVE_FUNCTIONS: tuple[type, ...] = (sp.sign,)
-SPECIAL: tuple[type, ...] = (special.LieCoefficient, special.SO3LogComponent)
+SPECIAL: tuple[type, ...] = (special.LieCoefficient, special.SO3LogComponent,
+                             *special.GUARD_FUNCTIONS)
 MIN_POWER, MAX_POWER = -7, 8
 
 # what to write instead of a function outside the whitelist
@@ -104,6 +106,19 @@ def _power(factor: str, node: sp.Pow) -> sp.Expr:
     return node if exp is node.exp else sp.Pow(node.base, exp)
 
 
+def _norm_of(node: sp.Pow) -> sp.Expr | None:
+    """``sqrt(a² + b² + …)`` (two or more squares, ``x ** 0.5`` too) as the norm
+    ``vector_norm(a, b, …)``, whose derivative follows GTSAM's convention where all of them are
+    0 (a distance between coincident points) instead of 0/0; None for any other power."""
+    exp = node.exp
+    if not (exp == sp.Rational(1, 2) or (exp.is_Float and float(exp) == 0.5)):
+        return None
+    terms = sp.Add.make_args(node.base)
+    if len(terms) < 2 or not all(isinstance(t, sp.Pow) and t.exp == 2 for t in terms):
+        return None
+    return special.VectorNorm(*(t.base for t in terms))
+
+
 def check_expression(factor: str, expr: sp.Expr) -> sp.Expr:
     """``expr`` with float half-integer exponents made exact; :class:`DslError` naming
     ``factor`` if it holds anything outside the whitelist.
@@ -130,6 +145,10 @@ def _check_node(factor: str, node: sp.Basic, replace: dict) -> None:
             raise DslError(f"factor '{factor}': the residual holds the constant {node}")
         return
     if isinstance(node, sp.Pow):
+        norm = _norm_of(node)
+        if norm is not None:
+            replace[node] = norm
+            return
         new = _power(factor, node)
         if new is not node:
             replace[node] = new

@@ -116,7 +116,8 @@ class SolverConfig:
 
 def _namespace() -> dict:
     ns = {name: getattr(sp, name) for name in dir(sp) if not name.startswith("_")}
-    for cls in (*special.COEFFICIENT_FUNCTIONS.values(), *special.SO3_LOG_FUNCTIONS):
+    for cls in (*special.COEFFICIENT_FUNCTIONS.values(), *special.SO3_LOG_FUNCTIONS,
+                *special.GUARD_FUNCTIONS):
         ns[cls.__name__] = cls
     return ns
 

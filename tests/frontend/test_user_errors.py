@@ -145,20 +145,30 @@ def test_out_of_range_spec_parameters_name_the_parameter_and_bound(spec, params,
 
 
 def test_fgc_kernels_raise_no_numpy_warning_at_zero_distance():
-    """A range residual's Jacobian at zero distance is 0/0: the kernel returns non-finite
-    numbers (callers report them naming the factor), not an unworded RuntimeWarning."""
+    """A range's Jacobian at zero distance is GTSAM's convention (finite: the all-ones row of
+    norm2, issue 34 item 5); a residual that is 0/0 there (a direction cosine) returns
+    non-finite numbers (callers report them naming the factor), not an unworded
+    RuntimeWarning."""
     from fgc.compiler.derive import derive
 
     @fgc.factor
     def range_to_beacon(pose: Pose2, beacon: Point2, *, measured: float):
         return [pose.range(beacon) - measured]
 
+    @fgc.factor
+    def cosine_to_beacon(pose: Pose2, beacon: Point2, *, measured: float):
+        return [(beacon.v[0] - pose.x()) / pose.range(beacon) - measured]
+
+    at = [Pose2(1.0, 2.0, 0.0), Point2(1.0, 2.0)]
     f = range_to_beacon("x0", "b0", measured=1.0, noise=ONE)
+    g = cosine_to_beacon("x0", "b0", measured=1.0, noise=ONE)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        r, jacobians = derive(f.type).evaluate([Pose2(1.0, 2.0, 0.0), Point2(1.0, 2.0)],
-                                               f.measured)
-    assert np.all(np.isfinite(r)) and not all(np.all(np.isfinite(j)) for j in jacobians)
+        r, jacobians = derive(f.type).evaluate(at, f.measured)
+        r_cos, _ = derive(g.type).evaluate(at, g.measured)
+    assert np.all(np.isfinite(r)) and [j.tolist() for j in jacobians] == [[[-1.0, -1.0, 0.0]],
+                                                                          [[1.0, 1.0]]]
+    assert not np.all(np.isfinite(r_cos))
 
 
 def test_status_is_not_repeated_as_its_reason():

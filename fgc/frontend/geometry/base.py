@@ -285,6 +285,9 @@ class VectorSpace(LieGroup):
         return dot(self.v, as_vector(other, self.dim))
 
     def norm(self):
+        """|v|; differentiated with GTSAM's convention at the zero vector (norm2 / norm3)."""
+        if self.symbolic:
+            return special.VectorNorm(*(self.v[i] for i in range(self.dim)))
         return sqrt(self.dot(self))
 
     def squared_norm(self):

@@ -10,6 +10,7 @@ import numpy as np
 import sympy as sp
 
 from fgc.errors import DataError
+from fgc.frontend.geometry import special
 from fgc.frontend.geometry.base import (
     LieGroup,
     as_vector,
@@ -167,12 +168,13 @@ class Pose2(LieGroup):
     def bearing(self, p) -> Rot2:
         """Bearing to a point in this pose's frame, as a Rot2 (GTSAM ``Pose2.bearing``)."""
         d = self.transformTo(p).v
-        n = (d[0] * d[0] + d[1] * d[1]) ** 0.5 if not is_symbolic(*d) else sp.sqrt(dot(d, d))
-        return Rot2(d[0] / n, d[1] / n)
+        return Rot2(*special.relative_bearing(d[0], d[1]))
 
     def range(self, p):
+        """Distance to a point (GTSAM ``Pose2.range``: its norm's Jacobian at coincident points,
+        :class:`~fgc.frontend.geometry.special.VectorNorm`)."""
         d = _point_vector(p, 2) - self.t
-        return sp.sqrt(dot(d, d)) if is_symbolic(*d) else float(np.sqrt(d @ d))
+        return special.VectorNorm(d[0], d[1]) if is_symbolic(*d) else float(np.sqrt(d @ d))
 
 
 class Rot3(LieGroup):
@@ -321,8 +323,11 @@ class Pose3(LieGroup):
         return Point3(self.r.R.T @ (_point_vector(p, 3) - self.t))
 
     def range(self, p):
+        """Distance to a point (GTSAM ``Pose3.range``: the norm of the world-frame difference,
+        with norm3's all-ones Jacobian at coincident points,
+        :class:`~fgc.frontend.geometry.special.VectorNorm`)."""
         d = _point_vector(p, 3) - self.t
-        return sp.sqrt(dot(d, d)) if is_symbolic(*d) else float(np.sqrt(d @ d))
+        return special.VectorNorm(*d) if is_symbolic(*d) else float(np.sqrt(d @ d))
 
 
 def _float_dtype(v):

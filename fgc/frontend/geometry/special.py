@@ -238,9 +238,129 @@ def numeric_namespace() -> dict[str, object]:
         ns[cls.__name__] = (lambda n: lambda t: coefficient(n, t))(name)
     for axis, cls in enumerate(SO3_LOG_FUNCTIONS):
         ns[cls.__name__] = (lambda a: lambda *e: _log_entries(a, e))(axis)
+    ns["GuardedQuotient"] = guarded_quotient_numeric
+    ns["VectorNorm"] = vector_norm_numeric
     return ns
 
 
 def _log_entries(axis: int, entries) -> np.floating:
     mat = np.array(entries)
     return so3_log_numeric(mat.reshape(3, 3))[axis]
+
+
+# --------------------------------------------------------------------------------------------
+# GTSAM's conventions at singular points: the norm of a zero vector, the bearing to a point
+# at the observer's position
+# --------------------------------------------------------------------------------------------
+
+# GTSAM's norm2 / norm3 (behind Pose2::range, Pose3::range, distance2): at |v| ≤ NORM_TINY the
+# Jacobian of |v| is the all-ones row (a fixed direction, not 0/0).
+NORM_TINY = 1e-10
+# GTSAM's Rot2::relativeBearing (behind Pose2::bearing): at |d| ≤ BEARING_TINY the bearing is
+# the identity rotation and its Jacobian zero.
+BEARING_TINY = 1e-5
+
+
+def guarded_quotient_numeric(a, b, g, t, f):
+    """``a / b`` where ``g > t``, else ``f`` (elementwise; no division where ``g ≤ t``)."""
+    cond = np.asarray(g) > t
+    if cond.ndim == 0:
+        return a / b if cond else f + 0 * a
+    return np.where(cond, a / np.where(cond, b, 1), f)
+
+
+def vector_norm_numeric(*xs):
+    """``sqrt(Σ x²)`` elementwise, in the inputs' dtype."""
+    return np.sqrt(sum(x * x for x in xs))
+
+
+class GuardedQuotient(sp.Function):
+    """``guarded_quotient(a, b, g, t, f)``: ``a / b`` where ``g > t``, else ``f`` (``t`` and ``f``
+    numbers). The one branch printed by every backend (a select: the quotient is never
+    evaluated where ``g ≤ t``); it carries GTSAM's conventions at singular points, which hold
+    ``f`` on a neighbourhood ``g ≤ t``, so its derivative is that of ``a / b`` where ``g > t``
+    and 0 elsewhere (``g`` is a guard, not differentiated)."""
+
+    nargs = 5
+
+    @classmethod
+    def eval(cls, a, b, g, t, f):
+        if not (t.is_Number and f.is_Number):
+            raise DerivationError(f"guarded_quotient needs a numeric threshold and fallback, "
+                                  f"not {t}, {f}")
+        if g.is_Number:
+            return a / b if g > t else f
+        if a.is_zero and f.is_zero:
+            return sp.S.Zero
+        return None
+
+    def fdiff(self, argindex=1):
+        a, b, g, t, _ = self.args
+        if argindex == 1:
+            return GuardedQuotient(sp.S.One, b, g, t, sp.S.Zero)
+        if argindex == 2:
+            return GuardedQuotient(-a, b * b, g, t, sp.S.Zero)
+        return sp.S.Zero  # the guard, threshold and fallback move nothing
+
+    def _eval_evalf(self, prec):
+        vals = [x.evalf(prec) for x in self.args]
+        if all(v.is_number for v in vals):
+            a, b, g, t, f = vals
+            return (a / b).evalf(prec) if g > t else f.evalf(prec)
+        return None
+
+
+class VectorNorm(sp.Function):
+    """``vector_norm(x1, …, xn) = sqrt(Σ xᵢ²)`` with GTSAM's Jacobian at the zero vector
+    (norm2 / norm3): ``∂/∂xᵢ = xᵢ / |x|`` where ``|x| > NORM_TINY`` and 1 elsewhere, so a range
+    or distance between coincident points moves them apart instead of giving 0/0."""
+
+    @classmethod
+    def eval(cls, *xs):
+        if not xs:
+            raise DerivationError("vector_norm needs at least one argument")
+        if all(x.is_number for x in xs):
+            return sp.sqrt(sp.Add(*[x * x for x in xs]))
+        return None
+
+    def fdiff(self, argindex=1):
+        return GuardedQuotient(self.args[argindex - 1], self, self, sp.Float(NORM_TINY),
+                               sp.S.One)
+
+    def _eval_is_nonnegative(self):
+        return True
+
+    def _eval_is_real(self):
+        return all(x.is_real for x in self.args) or None
+
+    def expanded(self) -> sp.Expr:
+        """The plain ``sqrt(Σ xᵢ²)`` it stands for once derivatives are taken."""
+        return sp.sqrt(sp.Add(*[x * x for x in self.args]))
+
+
+def relative_bearing(x, y):
+    """(cos, sin) of the direction of ``(x, y)``, GTSAM's ``Rot2::relativeBearing``: the
+    identity (1, 0) with a zero Jacobian where ``|(x, y)| ≤ BEARING_TINY``."""
+    if isinstance(x, sp.Basic) or isinstance(y, sp.Basic):
+        n = VectorNorm(x, y)
+        tiny = sp.Float(BEARING_TINY)
+        return GuardedQuotient(x, n, n, tiny, sp.S.One), GuardedQuotient(y, n, n, tiny, sp.S.Zero)
+    n = (x * x + y * y) ** 0.5
+    if n > BEARING_TINY:
+        return x / n, y / n
+    return type(n)(1.0), type(n)(0.0)
+
+
+GUARD_FUNCTIONS = (GuardedQuotient, VectorNorm)
+
+
+def expand_norms(expr: sp.Expr) -> sp.Expr:
+    """``expr`` with every :class:`VectorNorm` written as the square root it is (after
+    differentiation, where its derivative rule has done its work)."""
+    if not isinstance(expr, sp.Basic):
+        return expr
+    norms = expr.atoms(VectorNorm)
+    while norms:  # a norm of norms: the outer one's expansion still holds the inner ones
+        expr = expr.xreplace({n: n.expanded() for n in norms})
+        norms = expr.atoms(VectorNorm)
+    return expr

@@ -193,6 +193,9 @@ inline T fgc_asin(T x) { return std::asin(x); }
 inline T fgc_acos(T x) { return std::acos(x); }
 inline T fgc_tanh(T x) { return std::tanh(x); }
 inline T fgc_sign(T x) { return x > T(0) ? T(1) : x < T(0) ? T(-1) : T(0); }
+// a / b where g > t, else f: GTSAM's conventions at singular points (a norm's or a bearing's
+// derivative at coincident points; fgc/frontend/geometry/special.py), no division where g <= t
+inline T fgc_guarded_quotient(T a, T b, T g, T t, T f) { return g > t ? T(a / b) : f; }
 
 // ---- factor datapaths: one per block type, shared by the Jacobian mode (0: residual and
 // Jacobian into `raw`) and the cost mode (1: the members' 1/2 |W r|^2 into `half`); the

@@ -354,6 +354,9 @@ inline T fgc_asin(T x) { return std::asin(x); }
 inline T fgc_acos(T x) { return std::acos(x); }
 inline T fgc_tanh(T x) { return std::tanh(x); }
 inline T fgc_sign(T x) { return x > T(0) ? T(1) : x < T(0) ? T(-1) : T(0); }
+// a / b where g > t, else f: GTSAM's conventions at singular points (a norm's or a bearing's
+// derivative at coincident points; fgc/frontend/geometry/special.py), no division where g <= t
+inline T fgc_guarded_quotient(T a, T b, T g, T t, T f) { return g > t ? T(a / b) : f; }
 
 // ---- lanes: a factor block evaluates LANES instances side by side, as values of type V
 #ifdef __SYNTHESIS__
@@ -454,6 +457,13 @@ FGC_INLINE V v_lie_D1(const V& t) {
     for (int l = 0; l < LANES; ++l) series = series && lane(t, l) < T(4.0);
     if (series) return T(0.001388888888888889) + t*(T(6.613756613756614e-05) + t*(T(2.48015873015873e-06) + t*(T(8.35070279514724e-08) + t*(T(2.6420950693437467e-09) + t*(T(8.029521918410807e-11) + t*(T(2.372776207425808e-12) + t*(T(6.868849645022276e-14) + t*(T(1.9573818287022555e-15) + t*(T(5.5090028283602297e-17) + t*(T(1.5349911154393775e-18) + t*(T(4.241648447555361e-20) + t*(T(1.163957265514881e-21) + t*(T(3.1751334332727565e-23) + t*(T(8.617186003308303e-25) + t*(T(2.328275960983784e-26) + t*(T(6.266191399131027e-28) + t*(T(1.6806121662771081e-29) + t*(T(4.4935425898311966e-31) + t*(T(1.1981343524964268e-32) + t*(T(3.1866552573834097e-34)))))))))))))))))))));
     return lanewise<lie_D1>(t);
+}
+template <class A, class B, class G>  // a constant argument is a T, a computed one a V
+inline V v_fgc_guarded_quotient(const A& a, const B& b, const G& g, T t, T f) {
+    T r[LANES];
+    for (int l = 0; l < LANES; ++l)
+        r[l] = fgc_guarded_quotient(lane(a, l), lane(b, l), lane(g, l), t, f);
+    return load_lanes(r);
 }
 inline V v_fgc_atan2(const V& y, const V& x) {
     T r[LANES];
