@@ -6,10 +6,14 @@ too: neither may import a backend), the largest strongly connected component of 
 import graph (a set of modules that import each other in a circle, function-level imports
 included), and the share of imports written inside functions rather than at module level.
 
-    python bench/import_graph.py [--root DIR] [--json FILE]
+    python bench/import_graph.py [--root DIR] [--json FILE] [--inner]
+    python bench/import_graph.py --startup MODULE [MODULE …]
 
 ``--root``: another checkout of the project (default: this one), e.g. an earlier commit's tree
-from ``git archive``.
+from ``git archive``. ``--inner``: also list the function-level imports per module (each should
+have a measured reason: start-up time, an import circle). ``--startup``: what importing the
+MODULEs adds to ``import fgc.app.cli`` (the command line's start-up), the best of 5 fresh
+interpreters each (this one does import).
 """
 
 from __future__ import annotations
@@ -17,6 +21,10 @@ from __future__ import annotations
 import argparse
 import ast
 import json
+import subprocess
+import sys
+import time
+from collections import Counter
 from pathlib import Path
 
 import networkx as nx
@@ -87,11 +95,35 @@ def layer(mod: str) -> str | None:
     return None
 
 
+def startup_seconds(modules: list[str], runs: int = 5) -> float:
+    """The best wall time of ``runs`` fresh interpreters importing ``modules``."""
+    best = float("inf")
+    for _ in range(runs):
+        start = time.perf_counter()
+        subprocess.run([sys.executable, "-c", f"import {', '.join(modules)}"], check=True)
+        best = min(best, time.perf_counter() - start)
+    return best
+
+
+def startup(extra: list[str]) -> None:
+    base = startup_seconds(["fgc.app.cli"])
+    both = startup_seconds(["fgc.app.cli", *extra])
+    print(f"import fgc.app.cli: {base:.2f} s; with {', '.join(extra)}: {both:.2f} s "
+          f"(+{both - base:.2f} s; best of 5 each)")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--root", type=Path, default=ROOT, help="the checkout to read")
     parser.add_argument("--json", help="also write the figures as JSON")
+    parser.add_argument("--inner", action="store_true",
+                        help="list the function-level imports per module")
+    parser.add_argument("--startup", nargs="+", metavar="MODULE",
+                        help="time what importing MODULE adds to the CLI's start-up")
     args = parser.parse_args()
+    if args.startup:
+        startup(args.startup)
+        return
     known = modules(args.root)
     edges = imports(known)
     sibling = sorted({(a, b, line) for a, b, _, line in edges
@@ -112,6 +144,9 @@ def main() -> None:
     for mod in sorted(largest) if len(largest) > 1 else ():
         print(f"  {mod}")
     print(f"function-level imports: {inner} of {len(edges)} ({100 * inner / len(edges):.1f} %)")
+    for mod, count in Counter(a for a, _, fn, _ in edges if fn).most_common() if args.inner else ():
+        print(f"  {count:>3} {mod}: " + ", ".join(sorted({b for a, b, fn, _ in edges
+                                                          if fn and a == mod})))
     if args.json:
         Path(args.json).write_text(json.dumps({
             "modules": len(known), "imports": len(edges),

@@ -155,7 +155,8 @@ class HlsConfig(scalars.ScalarTypes):
       ALLOCATION limits). The old keywords still work and read through:
       ``HlsConfig(part="xczu9eg-ffvb1156-2-e", unit_sets=2)`` is
       ``HlsConfig(design=DesignOptions(part=…, unit_sets=2))`` and ``config.part`` is
-      ``config.design.part``.
+      ``config.design.part``. An old keyword given as ``None`` keeps the design's value (to
+      clear one, replace the design: ``dataclasses.replace(config.design, unit_sets=None)``).
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
       widest elimination step this backend accepts; larger Programs fail at emit time.
     - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation (portable: they

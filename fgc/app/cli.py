@@ -32,6 +32,7 @@ import os
 import sys
 from pathlib import Path  # noqa: F401  (tests patch Path.write_text through this module)
 
+from fgc import __version__
 from fgc.app.commands import cache, metrics, report, run, simulate, stream, sweep, verify
 from fgc.app.commands import compile as compile_command
 from fgc.app.commands.options import (
@@ -87,8 +88,6 @@ def build_parser() -> argparse.ArgumentParser:
                     epilog="Run 'fgc COMMAND --help' for a command's options. Exit status: 0 "
                            "success, 1 verification failed (or a solve did not converge), 2 "
                            "bad input (one line on stderr).", formatter_class=Formatter)
-    from fgc import __version__
-
     parser.add_argument("--version", action="version", version=f"fgc {__version__}")
     verbosity_args(parser, suppress=False)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")

@@ -6,6 +6,7 @@ import json
 
 from fgc.app.commands.options import Formatter, verbosity_args
 from fgc.app.commands.steps import EXIT_OK
+from fgc.compiler import cache
 
 NAME = "cache"
 HELP = ("fgc's cache ($FGC_CACHE_DIR, default ~/.cache/fgc: derivations, native and "
@@ -26,7 +27,6 @@ def add_parser(sub):
 
 
 def cmd_cache(args) -> int:
-    from fgc.compiler import cache
     if args.action == "clear":
         n = cache.clear()
         print(f"removed {n} entr{'y' if n == 1 else 'ies'} from {cache.cache_root()}")

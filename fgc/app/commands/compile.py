@@ -22,6 +22,8 @@ from fgc.app.commands.steps import (
 )
 from fgc.app.commands.stream import stream_setup
 from fgc.errors import FgcError
+from fgc.ir.datafile import write_data
+from fgc_backends.cfamily.results import reference_run
 
 NAME = "compile"
 HELP = "emit a backend project for a spec"
@@ -48,8 +50,6 @@ def cmd_compile(args) -> int:
                          "simulate, verify or stream, or compile the on-chip window with "
                          "--backend hls")
     _, program, data = compile_spec(args, "float32")
-    from fgc.ir.datafile import write_data
-
     out = Path(args.out)
     try:
         out.mkdir(parents=True, exist_ok=True)
@@ -60,8 +60,6 @@ def cmd_compile(args) -> int:
             project = backend.emit(program, out, hls_config(args, program))
             files = list(project.files)
             # the testbench checks its result against the simulator's (exit 4 on a mismatch)
-            from fgc_backends.cfamily.results import reference_run
-
             files.append(backend.build.write_project_reference(
                 project, program, data, reference_run(program, data)))
         elif args.backend == "native":

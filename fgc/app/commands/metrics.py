@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from fgc.app import metrics
 from fgc.app.commands.options import Formatter, positive_int, verbosity_args
 from fgc.app.commands.outputs import print_lines, write_json
 from fgc.app.commands.steps import EXIT_OK
@@ -10,7 +11,6 @@ NAME = "metrics"
 
 
 def cmd_metrics(args) -> int:
-    from fgc.app import metrics
     est, ref = metrics.read_tum(args.estimate), metrics.read_tum(args.reference)
     results, lines = {}, [f"fgc metrics {args.estimate} vs {args.reference}: {len(est)} poses, "
                           f"alignment {args.align}, RPE delta {args.delta} frames"

@@ -13,6 +13,8 @@ import numpy as np
 
 from fgc.errors import FgcError
 from fgc.ir.codes import ORDERINGS
+from fgc_backends.cfamily.errors import CodegenError
+from fgc_backends.cfamily.scalars import check_scalar
 
 
 class UsageError(FgcError):
@@ -88,6 +90,8 @@ def scheduler_address(text: str) -> str:
 
 def clock_arg(text: str) -> tuple[float, float]:
     """``--clock``: MHz or ns → (MHz, ns)."""
+    # the HLS backend is imported when an option needs it, not for every command: it adds about
+    # a second to start-up (python bench/import_graph.py --startup fgc_backends.hls)
     from fgc_backends.hls.config import HlsConfigError, parse_clock
 
     try:
@@ -97,9 +101,6 @@ def clock_arg(text: str) -> tuple[float, float]:
 
 
 def scalar_arg(text: str) -> str:
-    from fgc_backends.cfamily.errors import CodegenError
-    from fgc_backends.cfamily.scalars import check_scalar
-
     text = re.sub(r"\s+", "", text)
     try:
         return check_scalar(text)
@@ -108,7 +109,7 @@ def scalar_arg(text: str) -> str:
 
 
 def allocation_arg(text: str) -> tuple[tuple[str, int], ...]:
-    from fgc_backends.hls.plan import DEFAULT_ALLOCATION
+    from fgc_backends.hls.plan import DEFAULT_ALLOCATION  # when used (see clock_arg)
 
     kinds, out = dict(DEFAULT_ALLOCATION), {}
     for item in text.split(","):

@@ -8,8 +8,11 @@ import json
 import os
 from pathlib import Path
 
+from fgc.app.marginals import marginal_covariances, parse_keys
 from fgc.errors import FgcError
 from fgc.frontend.dsl import Graph
+from fgc.interop import estimates as export
+from fgc.interop.estimates import FORMATS
 
 
 def print_lines(args, lines: list[str], result: str | None = None) -> None:
@@ -49,12 +52,9 @@ def check_outputs(args) -> None:
         path = getattr(args, attr, None)
         if path:
             _check_writable(str(path), option, folder)
-    if getattr(args, "values", None):
-        from fgc.interop.estimates import FORMATS
-
-        if Path(args.values).suffix.lower() not in FORMATS:
-            raise FgcError(f"--values {args.values}: unknown values format "
-                           f"{Path(args.values).suffix!r}; use {', '.join(FORMATS)}")
+    if getattr(args, "values", None) and Path(args.values).suffix.lower() not in FORMATS:
+        raise FgcError(f"--values {args.values}: unknown values format "
+                       f"{Path(args.values).suffix!r}; use {', '.join(FORMATS)}")
 
 
 def _check_writable(path: str, option: str, folder: bool) -> None:
@@ -82,7 +82,6 @@ def _check_writable(path: str, option: str, folder: bool) -> None:
 
 def estimates_out(args, graph: Graph, report: dict, result_values: dict) -> None:
     """Keyed values into the JSON report; --values file; --marginals printed and reported."""
-    from fgc.interop import estimates as export
     values = export.graph_values(graph, result_values)
     report["values"] = export.values_json(values)
     quiet = getattr(args, "quiet", False)
@@ -91,8 +90,6 @@ def estimates_out(args, graph: Graph, report: dict, result_values: dict) -> None
         if not quiet:
             print(f"  estimates → {args.values} ({fmt})")
     if getattr(args, "marginals", None):
-        from fgc.app.marginals import marginal_covariances, parse_keys
-
         covs = marginal_covariances(graph, parse_keys(args.marginals, graph), values)
         report["marginals"] = {str(k): {"key": k, "covariance": c.tolist()}
                                for k, c in covs.items()}

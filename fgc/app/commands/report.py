@@ -14,6 +14,7 @@ from fgc.app.commands.steps import (
     plan_options,
 )
 from fgc.app.commands.stream import cmd_stream
+from fgc.app.design_report import design_report, figures, format_text, render_html
 
 NAME = "report"
 HELP = ("the compiled design at a glance: blocks, schedule, storage, cycles, resources, "
@@ -32,8 +33,6 @@ def add_arguments(p) -> None:
 
 
 def cmd_report(args) -> int:
-    from fgc.app.design_report import design_report, figures, format_text, render_html
-
     if is_streaming(args):
         return _report_stream(args)
     graph, program, data = compile_spec(args, "float32")

@@ -4,6 +4,7 @@ status, error and times."""
 from __future__ import annotations
 
 import sys
+import time
 
 from fgc.app.commands.options import UsageError, marginals_arg, streaming_args, values_arg
 from fgc.app.commands.outputs import estimates_out, print_lines, write_json
@@ -21,6 +22,7 @@ from fgc.app.commands.steps import (
     refuse_hls_design,
 )
 from fgc.app.commands.stream import cmd_stream
+from fgc.app.run_report import final_error_text, float64_error, require_finite_start, status_text
 
 NAME = "run"
 HELP = ("solve with the generated native solver (or the simulator, or the HLS accelerator's C "
@@ -43,8 +45,6 @@ def cmd_run(args) -> int:
     if is_streaming(args):
         return cmd_stream(args)
     graph, program, data = compile_spec(args, "float32")
-    import time
-
     t0 = time.perf_counter()
     display = progress_display(args, f"run {args.spec}", program, simulator=args.backend == "sim")
     timings: dict = {}
@@ -68,12 +68,6 @@ def cmd_run(args) -> int:
     display.finish()
     status, final, iters = result.status, result.final_error, result.iterations
     seconds = time.perf_counter() - t0
-    from fgc.app.run_report import (
-        final_error_text,
-        float64_error,
-        require_finite_start,
-        status_text,
-    )
 
     require_finite_start(graph, result)
     solve_s = timings.get("solve_seconds", seconds)

@@ -3,6 +3,7 @@ design's plan); with --window / --incremental the stream's per-update prices."""
 
 from __future__ import annotations
 
+from fgc.app import run_report
 from fgc.app.commands.options import UsageError, marginals_arg, streaming_args, values_arg
 from fgc.app.commands.outputs import estimates_out, print_lines, write_json
 from fgc.app.commands.steps import (
@@ -35,8 +36,6 @@ def add_arguments(p) -> None:
 
 
 def cmd_simulate(args) -> int:
-    from fgc.app.run_report import simulate_report
-
     if is_streaming(args):
         for flag in ("part", "allocation", "unit_sets"):
             if getattr(args, flag, None):
@@ -47,9 +46,9 @@ def cmd_simulate(args) -> int:
     graph, program, data = compile_spec(args, "float32")
     try:
         display = progress_display(args, f"simulate {args.spec}", program, simulator=True)
-        report = simulate_report(graph, program, data, WithProgress(load_backend("sim"), display),
-                                 plot_dir=args.plot,
-                                 plan_options=plan_options(args, program))
+        sim = WithProgress(load_backend("sim"), display)
+        report = run_report.simulate_report(graph, program, data, sim, plot_dir=args.plot,
+                                            plan_options=plan_options(args, program))
     except OSError as exc:
         if not args.plot or not str(getattr(exc, "filename", "")).startswith(args.plot):
             raise

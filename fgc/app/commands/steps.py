@@ -11,9 +11,16 @@ import time
 from pathlib import Path
 
 from fgc.app.commands.options import UsageError
+from fgc.app.progress import Progress
 from fgc.app.specs import load_spec
+from fgc.app.streaming import HW_REFUSAL, check_mode
+from fgc.compile import compile_graph
+from fgc.compiler.derive import derive, is_cached
 from fgc.errors import FgcError
 from fgc.frontend.dsl import Graph
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
+from fgc_backends import BACKENDS, load, names
 
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
 EXIT_INTERRUPTED = 130  # Ctrl-C
@@ -34,8 +41,6 @@ def parse_params(items: list[str]) -> dict:
 
 
 def solver_config(args, precision_default: str):
-    from fgc.ir.program import SolverConfig
-
     return SolverConfig(method=args.solver, linear=args.linear, ordering=args.ordering,
                         precision=args.precision or precision_default,
                         linear_precision=getattr(args, "linear_precision", None),
@@ -54,8 +59,6 @@ def lm_limits(args) -> dict:
 def is_streaming(args) -> bool:
     """Whether keyframe-by-keyframe mode was asked for (--incremental or --window); checks
     the combination and refuses the backends that run batch solves only."""
-    from fgc.app.streaming import HW_REFUSAL, check_mode
-
     incremental, window = getattr(args, "incremental", None), getattr(args, "window", None)
     batch_every = getattr(args, "batch_every", None)
     if incremental is None and window is None and batch_every is None:
@@ -73,8 +76,6 @@ def is_streaming(args) -> bool:
 
 def backend_info(name: str):
     """The registry's entry of backend ``name`` (fgc_backends.BACKENDS)."""
-    from fgc_backends import BACKENDS
-
     return BACKENDS[name]
 
 
@@ -167,8 +168,6 @@ def show_progress(args) -> bool:
 def derive_with_progress(graph: Graph, show: bool) -> int:
     """Derive every factor type of ``graph`` not yet in the disk cache, printing "deriving
     factor X (n/m)…" on stderr before each when ``show``; returns how many were derived."""
-    from fgc.compiler.derive import derive, is_cached
-
     types = list({f.type.name: f.type for f in graph.factors}.values())
     cold = [ftype for ftype in types if not is_cached(ftype)]
     for i, ftype in enumerate(cold, 1):
@@ -191,9 +190,6 @@ def load_graph(args, precision_default: str):
 
 
 def compile_spec(args, precision_default: str):
-    from fgc.compile import compile_graph
-    from fgc.ir.datafile import problem_data
-
     stages, graph, config = load_graph(args, precision_default)
     try:
         program = compile_graph(graph, config, name=project_name(args.spec))
@@ -214,21 +210,15 @@ def project_name(spec: str) -> str:
 
 
 def load_backend(name: str):
-    from fgc_backends import load
-
     return load(name)
 
 
 def backend_names() -> tuple[str, ...]:
     """The registry's backend names (fgc_backends.BACKENDS): the CLI hard-codes none."""
-    from fgc_backends import names
-
     return names()
 
 
 def backend_help() -> str:
-    from fgc_backends import BACKENDS
-
     return "; ".join(f"{b.name}: {b.summary}" for b in BACKENDS.values())
 
 
@@ -247,8 +237,6 @@ def progress_display(args, command: str, program, simulator: bool = False):
     """The per-iteration progress display of a solve (fgc.app.progress): stderr unless -q.
     With ``simulator``, a large Program gets a note first: the simulator steps every
     elimination step in NumPy (the accelerator's model, not a fast solver)."""
-    from fgc.app.progress import Progress
-
     quiet = getattr(args, "quiet", False)
     if simulator and not quiet and len(program.variables) > SIM_LARGE_VARIABLES:
         widest = max(s.frontal_dim + s.separator_dim for s in program.schedule.steps)

@@ -9,6 +9,7 @@ import time
 
 import numpy as np
 
+from fgc.app import streaming
 from fgc.app.commands.options import streaming_args, values_arg
 from fgc.app.commands.outputs import estimates_out, print_lines, write_json
 from fgc.app.commands.steps import (
@@ -21,7 +22,12 @@ from fgc.app.commands.steps import (
     load_graph,
     project_name,
 )
+from fgc.app.run_report import require_finite_start
+from fgc.compiler.stream import compile_stream, policy_of
 from fgc.errors import FgcError
+from fgc.frontend.geometry import Pose2, Pose3
+from fgc.interop import estimates as export
+from fgc.ir.datafile import problem_data
 
 NAME = "stream"
 HELP = ("feed a chain's keyframes one at a time to the simulator, the native solver or the HLS "
@@ -52,9 +58,6 @@ def add_arguments(p) -> None:
 
 def stream_setup(args, precision_default: str):
     """The stream stage's StreamProgram (the options' policy) and the graph's data."""
-    from fgc.compiler.stream import compile_stream, policy_of
-    from fgc.ir.datafile import problem_data
-
     stages, graph, config = load_graph(args, precision_default)
     if config.incremental_k is not None:  # load_graph put the plan in the solver options
         policy = policy_of(config.incremental_k, config.batch_every)
@@ -75,8 +78,6 @@ def mode_text(program, window) -> str:
 
 
 def _newest_text(update, program) -> str:
-    from fgc.frontend.geometry import Pose2, Pose3
-
     parts = []
     for key, value in update.newest(program).items():
         if isinstance(value, (Pose3, Pose2)):
@@ -92,8 +93,6 @@ def stream_word(args) -> str:
 
 
 def cmd_stream(args, precision_default: str = "float64") -> int:
-    from fgc.app import streaming
-    from fgc.interop import estimates as export
     if not is_streaming(args):
         raise FgcError(f"fgc {args.command} needs --incremental K or --window W")
     sp, data = stream_setup(args, precision_default)
@@ -163,8 +162,6 @@ def cmd_stream(args, precision_default: str = "float64") -> int:
     result = streaming.run_stream(program, data, window, progress, progress_build=building,
                                   sp=sp, runner=runner)
     stream_wall = time.perf_counter() - started
-    from fgc.app.run_report import require_finite_start
-
     require_finite_start(graph, result)
     final = {str(k): v for k, v in result.values.items()}
     acc = streaming.accuracy(graph, final, online, streaming.batch_optimum(graph))

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from fgc.app import sweep
 from fgc.app.commands.options import positive_int, scheduler_address
 from fgc.app.commands.outputs import print_lines
 from fgc.app.commands.steps import (
@@ -19,6 +20,7 @@ from fgc.app.commands.steps import (
     show_progress,
 )
 from fgc.app.specs import load_spec
+from fgc.ir.program import SolverConfig
 
 NAME = "sweep"
 HELP = ("design-space exploration: latency, resources, energy and accuracy vs GTSAM per "
@@ -42,9 +44,6 @@ def add_arguments(p) -> None:
 
 
 def cmd_sweep(args) -> int:
-    from fgc.app import sweep
-    from fgc.ir.program import SolverConfig
-
     args.stages = Stages(args)
     graph = load_spec(args.spec, parse_params(args.param))
     args.stages.done("load spec")

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fgc.app import streaming
 from fgc.app.commands.options import streaming_args, values_arg
 from fgc.app.commands.outputs import estimates_out, print_lines, write_json
 from fgc.app.commands.steps import (
@@ -17,6 +18,9 @@ from fgc.app.commands.steps import (
     progress_display,
 )
 from fgc.app.commands.stream import mode_text, stream_setup
+from fgc.app.run_report import ROT_TOL_F32, STATE_TOL_F64, require_finite_start, verify_report
+from fgc.interop import oracles
+from fgc.interop.to_gtsam import to_gtsam
 
 NAME = "verify"
 HELP = "solve with the simulator and with GTSAM and compare"
@@ -32,8 +36,6 @@ def add_arguments(p) -> None:
 
 
 def cmd_verify(args) -> int:
-    from fgc.app.run_report import verify_report
-
     if is_streaming(args):
         return _verify_stream(args)
     graph, program, data = compile_spec(args, "float64")
@@ -48,10 +50,6 @@ def cmd_verify(args) -> int:
 
 
 def _verify_stream(args) -> int:
-    from fgc.app import streaming
-    from fgc.app.run_report import ROT_TOL_F32, STATE_TOL_F64, require_finite_start
-    from fgc.interop import oracles
-    from fgc.interop.to_gtsam import to_gtsam
 
     sp, data = stream_setup(args, "float64")
     graph, program, window = sp.graph, sp.program, sp.window
