@@ -190,6 +190,7 @@ class Row:
     verdict: str = "unread"  # "fits", "over", "unread"
     bound: str = ""  # the figure that decided (or, unread, the plan's tightest)
     implied_by: str = ""  # the read design a verdict follows from
+    reader_at_least: int = 0  # implied over: the reader's DSP is at least the implying read's
     read_seconds: float = 0.0
     details: dict = field(default_factory=dict)
 
@@ -217,8 +218,9 @@ class Row:
 
     @property
     def dsp(self) -> int:
-        """The honest DSP: max(plan, reader) where read."""
-        return max(self.cost.dsp, self.reader_dsp or 0)
+        """The honest DSP: max(plan, reader) where read (where a refusal is implied, the
+        implying read's DSP, a lower bound of this design's)."""
+        return max(self.cost.dsp, self.reader_dsp or self.reader_at_least)
 
     def judge(self) -> None:
         """Set ``verdict`` / ``bound`` from the figures known (a read design, or the plan's over
@@ -401,7 +403,7 @@ def search(programs: Mapping[str, Program], space: Space = Space(), max_reads: i
                 o.bound = f"reader DSP <= {r.reader_dsp:,}/{o.caps['dsp']:,}"
             elif r.verdict == "over" and r.candidate.below(o.candidate) and \
                     r.reader_dsp > o.caps["dsp"]:
-                o.verdict, o.implied_by = "over", r.label
+                o.verdict, o.implied_by, o.reader_at_least = "over", r.label, r.reader_dsp
                 o.bound = f"reader DSP >= {r.reader_dsp:,}/{o.caps['dsp']:,}"
     best_i = known_fit()
     best = rows[best_i] if best_i < len(rows) else None
