@@ -282,8 +282,23 @@ def run_sweep(graph: Graph, base: SolverConfig, designs: Sequence[Design], pool:
         searches = fit_search(programs, designs, fit_reads, fit_progress)
         _add_fit(rows, searches, name)
         for precision, result in searches.items():
-            fit_lines += [f"re-priced fit, {precision}:", *result.lines()]
+            floor = _floor(result, programs, precision)
+            fit_lines += [f"re-priced fit, {precision}:", *result.lines(floor)]
     return SweepResult(tuple(rows), reference, timing, tuple(fit_lines))
+
+
+def _floor(result, programs: dict, precision: str):
+    """The latency floor (fgc.app.floor) of the best design's Program (else the fastest's), at
+    its plan's operator table."""
+    from fgc.app.floor import latency_floor
+    from fgc_backends.hls.plan import PlanOptions, build_plan
+
+    row = result.best or result.rows[0]
+    c = row.candidate
+    program = next(p for (lin, prec), p in programs.items()
+                   if lin == c.linear and prec == precision)
+    program = c.program({c.linear: program})
+    return latency_floor(program, build_plan(program, PlanOptions.of(program)).ops)
 
 
 def fit_search(programs: dict, designs: Sequence[Design], reads: int,

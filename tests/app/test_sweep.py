@@ -135,6 +135,7 @@ def test_sweep_fit_verdicts_best_and_warnings(tmp_path, capsys, monkeypatch):
     assert rows[4]["fit"] == "over" and rows[4]["reader_dsp"] == "1200"
     assert rows[1]["fit"] == "fits" and rows[1]["best"] == "True"
     assert "best design that fits: qr n_u=1" in stdout
+    assert "latency floor" in stdout and "the floor; limited by" in stdout
     if _has("matplotlib"):
         assert (out / "fit.png").read_bytes()[:8] == PNG_MAGIC
 
