@@ -910,9 +910,7 @@ def _cmd_sweep(args) -> int:
     with sweep.open_executor(args.jobs, args.executor) as pool, \
             sweep.progress_bar(len(designs), args.progress) as progress:
         result = sweep.run_sweep(graph, base, designs, pool, _name(args.spec), progress,
-                                 fit_reads=args.fit_reads,
-                                 fit_progress=(lambda line: print(line, file=sys.stderr))
-                                 if _show_progress(args) else None)
+                                 **sweep.fit_options(args, _show_progress(args)))
     files = sweep.write_outputs(result, out, title=_name(args.spec))
     _print(args, [*sweep.summary_lines(result, args.spec),
                   f"wrote {', '.join(str(f) for f in files)}"])
@@ -1013,12 +1011,6 @@ def _positive_float(text: str) -> float:
 def _positive_int(text: str) -> int:
     if not text.strip().isdigit() or int(text) < 1:
         raise argparse.ArgumentTypeError(f"{text!r} is not a positive integer")
-    return int(text)
-
-
-def _nonnegative_int(text: str) -> int:
-    if not text.strip().isdigit():
-        raise argparse.ArgumentTypeError(f"{text!r} is not a non-negative integer")
     return int(text)
 
 
@@ -1259,10 +1251,9 @@ def _command_args(name: str, p: argparse.ArgumentParser) -> None:
                             "(default: fgc-sweep-NAME)")
         p.add_argument("--progress", action=argparse.BooleanOptionalAction,
                        help="progress bar on stderr (default: when stderr is a terminal)")
-        p.add_argument("--fit-reads", type=_nonnegative_int, default=2, metavar="N",
-                       help="designs per precision the fit search may emit and read with the "
-                            "second reader (DSP = max(plan, reader)); 0: the plan alone; "
-                            "reads are cached in FGC_CACHE_DIR (default 2)")
+        from fgc.app.sweep import add_fit_arguments
+
+        add_fit_arguments(p)
 
 
 _COMMANDS = (

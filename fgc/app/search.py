@@ -87,17 +87,34 @@ class Space:
 
 
 def qr_unit_axis() -> tuple:
-    """The QR unit kinds when ``PlanOptions`` has a ``qr_unit`` option (and ``HlsConfig`` the
-    same field, so the emitter builds it): ``QR_UNITS`` of the options module if it names them,
-    else the option's default alone; () when there is no such option."""
-    from fgc_backends.hls import HlsConfig
+    """The QR unit kinds when ``PlanOptions`` has a ``qr_unit`` option (and ``HlsConfig`` or its
+    design options the same field, so the emitter builds it): ``QR_UNITS`` of the options
+    module if it names them, else the option's default alone; () when there is no such
+    option."""
     from fgc_backends.hls.plan import options
 
     names = {f.name: f for f in dataclasses.fields(options.PlanOptions)}
-    if "qr_unit" not in names or "qr_unit" not in {f.name for f in dataclasses.fields(HlsConfig)}:
+    if "qr_unit" not in names or "qr_unit" not in _config_names():
         return ()
     kinds = getattr(options, "QR_UNITS", None)
     return tuple(kinds) if kinds else (names["qr_unit"].default,)
+
+
+def _init_names(cls) -> set[str]:
+    import inspect
+
+    return set(inspect.signature(cls).parameters)
+
+
+def _config_names() -> set[str]:
+    """The option names an ``HlsConfig`` takes: its own, and its design options' where the
+    config carries them (``HlsConfig.design``)."""
+    from fgc_backends.hls import HlsConfig
+    from fgc_backends.hls import config as hls_config
+
+    names = _init_names(HlsConfig)
+    design = getattr(hls_config, "DesignOptions", None)
+    return names | (_init_names(design) if design is not None else set())
 
 
 @dataclass(frozen=True)
@@ -138,7 +155,13 @@ class Candidate:
                   **dict(self.extra))
         if space.part is not None:
             kw["part"] = space.part
-        return HlsConfig(**kw)
+        direct = {k: v for k, v in kw.items() if k in _init_names(HlsConfig)}
+        design = {k: v for k, v in kw.items() if k not in direct}
+        if design:  # options only the design-options object knows (HlsConfig.design)
+            from fgc_backends.hls import config as hls_config
+
+            direct["design"] = hls_config.DesignOptions(**design)
+        return HlsConfig(**direct)
 
     def below(self, other: Candidate) -> bool:
         """Every ordered axis of this design <= ``other``'s, the rest equal: the reader's DSP

@@ -301,6 +301,29 @@ def _floor(result, programs: dict, precision: str):
     return latency_floor(program, build_plan(program, PlanOptions.of(program)).ops)
 
 
+def add_fit_arguments(parser) -> None:
+    """``fgc sweep``'s fit-search option (``--fit-reads``)."""
+    import argparse
+
+    def count(text: str) -> int:
+        if not text.strip().isdigit():
+            raise argparse.ArgumentTypeError(f"{text!r} is not a non-negative integer")
+        return int(text)
+
+    parser.add_argument("--fit-reads", type=count, default=2, metavar="N",
+                        help="designs per precision the fit search may emit and read with the "
+                             "second reader (DSP = max(plan, reader)); 0: the plan alone; "
+                             "reads are cached in FGC_CACHE_DIR (default 2)")
+
+
+def fit_options(args, show_progress: bool) -> dict:
+    """:func:`run_sweep`'s fit-search keywords from ``fgc sweep``'s parsed arguments (progress
+    lines on stderr when ``show_progress``)."""
+    return {"fit_reads": args.fit_reads,
+            "fit_progress": (lambda line: print(line, file=sys.stderr)) if show_progress
+            else None}
+
+
 def fit_search(programs: dict, designs: Sequence[Design], reads: int,
                progress: Callable[[str], None] | None = None) -> dict:
     """Per precision, :func:`fgc.app.search.search` over the sweep's designs as the HLS backend
