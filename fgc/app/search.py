@@ -410,8 +410,9 @@ def search(programs: Mapping[str, Program], space: Space = Space(), max_reads: i
         pending = undecided()
         r = _next_read(pending, probed)
         probed.add((r.candidate.linear, r.candidate.extra))
-        say(f"  reading {r.label} (plan {r.cycles:,} cycles, {r.cost.dsp:,} DSP): emit + second "
-            f"reader, {len(pending)} undecided faster than the best so far")
+        say(f"  reading {r.label} (plan {r.cycles:,} cycles, {r.cost.dsp:,} DSP) with the "
+            f"second reader (emitted unless cached): {len(pending)} undecided faster than the "
+            "best so far")
         figures, hit = fn(r.candidate.program(programs), r.candidate.config(space))
         r.reader_dsp, r.details, r.read = int(figures["dsp"]), figures, "cached" if hit else "read"
         r.read_seconds = float(figures.get("seconds", 0.0))
