@@ -178,6 +178,7 @@ def test_executor_without_dask_is_a_clear_error(monkeypatch, capsys):
     (["--jobs", "0"], "--jobs: '0' is not a positive integer"),
     (["--executor", "localhost"], "--executor: 'localhost' is not a scheduler address"),
     (["-p", "bogus=1"], "bogus"),
+    (["--fit-reads", "-1"], "--fit-reads: '-1' is not a non-negative integer"),
 ])
 def test_bad_sweep_input_exit_code_2(extra, needle, capsys):
     assert main(["sweep", *POSE3, *extra]) == EXIT_BAD_INPUT
