@@ -157,7 +157,12 @@ def _res(c) -> str:
 
 
 def _honest(row) -> str:
-    read = "not read" if row.reader_dsp is None else f"reader {row.reader_dsp:,}"
+    if row.reader_dsp is not None:
+        read = f"reader {row.reader_dsp:,}"
+    elif row.reader_at_least:
+        read = f"reader >= {row.reader_at_least:,}, implied by {row.implied_by}"
+    else:
+        read = "not read"
     return (f"{row.dsp:,} DSP (plan {row.cost.dsp:,}, {read}) / {row.cost.bram36:g} BRAM36 / "
             f"{row.cost.lut:,} LUT / {row.cost.ff:,} FF")
 
