@@ -210,7 +210,7 @@ class Row:
     caps: dict  # the part's capacities: dsp, bram36, lut, ff
     reader_dsp: int | None = None
     read: str = ""  # "", "read" (emitted and read now), "cached"
-    verdict: str = "unread"  # "fits", "over", "unread"
+    verdict: str = "unread"  # "fits", "over", "unread", "unbuildable" (the emitter refuses it)
     bound: str = ""  # the figure that decided (or, unread, the plan's tightest)
     implied_by: str = ""  # the read design a verdict follows from
     reader_at_least: int = 0  # implied over: the reader's DSP is at least the implying read's
@@ -413,7 +413,13 @@ def search(programs: Mapping[str, Program], space: Space = Space(), max_reads: i
         say(f"  reading {r.label} (plan {r.cycles:,} cycles, {r.cost.dsp:,} DSP) with the "
             f"second reader (emitted unless cached): {len(pending)} undecided faster than the "
             "best so far")
-        figures, hit = fn(r.candidate.program(programs), r.candidate.config(space))
+        try:
+            figures, hit = fn(r.candidate.program(programs), r.candidate.config(space))
+        except FgcError as exc:  # the emitter refuses the design: it is no candidate
+            r.verdict, r.bound, r.read = "unbuildable", f"{type(exc).__name__}: {exc}", "read"
+            reads += 1
+            say(f"  {r.label}: not emitted ({r.bound})")
+            continue
         r.reader_dsp, r.details, r.read = int(figures["dsp"]), figures, "cached" if hit else "read"
         r.read_seconds = float(figures.get("seconds", 0.0))
         cached += hit

@@ -95,6 +95,23 @@ def test_a_read_budget_leaves_designs_unread_and_says_so(programs):
     assert any("raise the read budget" in line for line in result.lines())
 
 
+def test_a_design_the_emitter_refuses_is_no_candidate(programs):
+    """A read that fails with an FgcError (the emitter refuses the design) marks that design
+    unbuildable and implies nothing about the others; the search goes on."""
+    from fgc.errors import FgcError
+
+    def read(program, config):
+        if program.solver.units == 2:
+            raise FgcError("refused")
+        return {"dsp": 100}, False
+
+    space = Space(linears=("qr",), units=(1, 2), unit_sets=(1,))
+    result = search({"qr": programs["qr"]}, space, max_reads=4, reader_fn=read)
+    verdicts = {r.candidate.units: r.verdict for r in result.rows}
+    assert verdicts == {2: "unbuildable", 1: "fits"} and result.best.candidate.units == 1
+    assert "refused" in next(r.bound for r in result.rows if r.verdict == "unbuildable")
+
+
 def test_monotone_order_and_space_checks():
     small, big = Candidate("qr", 1, 1, None, 1), Candidate("qr", 4, 2, None, 2)
     assert small.below(big) and not big.below(small)
