@@ -206,22 +206,23 @@ def _bench():
 
 
 def test_best_design_is_the_fastest_that_fits(qr_chain):
+    """bench_papers' best design is the search's: on the plan alone (no reads) the fastest
+    design the plan fits, over n_u × unit sets × ALLOCATION scale."""
     bench = _bench()
-    cfg = bench.Config(units=(1, 2, 4), alloc_scales=(1, 2))
-    (opts, best), tried = bench.best_design(qr_chain, cfg)
-    assert tried == 3 * 2 * 2 * 2  # n_u × unit sets {1, 2} × ALLOCATION scale × storage
+    cfg = bench.Config(units=(1, 2, 4), unit_sets=(1, 2), alloc_scales=(1, 2), reads=0)
+    result = bench.best_design({"qr": qr_chain}, cfg, linears=("qr",))
+    assert len(result.rows) == 3 * 2 * 2
     brute = []
     for units in cfg.units:
         for sets in (1, 2):
             for scale in cfg.alloc_scales:
-                for storage in ("whitened", "raw"):
-                    c = plan_cost(build_plan(qr_chain, PlanOptions.of(
-                        qr_chain, units=units, unit_sets=sets, allocation=bench._scaled(scale),
-                        jacobian_storage=storage)))
-                    if c.fits:
-                        brute.append(c.cycles)
-    assert best.cycles == min(brute) and best.fits
-    assert opts["units"] in cfg.units and opts["jacobian_storage"] in ("whitened", "raw")
+                c = plan_cost(build_plan(qr_chain, PlanOptions.of(
+                    qr_chain, units=units, unit_sets=sets,
+                    allocation=bench._scaled(scale))))
+                if c.fits:
+                    brute.append(c.cycles)
+    assert result.best.cycles == min(brute) and result.best.cost.fits
+    assert result.best.verdict == "unread" and result.reads == 0
 
 
 def test_gtsam_timing_and_table_layout():

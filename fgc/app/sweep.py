@@ -16,6 +16,15 @@ apply. Groups run in parallel on any ``concurrent.futures.Executor`` (local proc
 cluster's executor); workers receive the Program and its data, never the spec file, so remote
 workers need fgc installed but not the user's files. GTSAM's LM optimum, the accuracy reference,
 is computed once, in this process, while the workers run.
+
+The fit verdict (``fit_reads`` not None) is the design-space search's (:mod:`fgc.app.search`,
+the one bench_papers uses): per precision, the sweep's designs as the HLS backend emits them,
+priced by the accelerator plan and judged on DSP = max(plan, the second reader's DSP of the
+emitted design), BRAM36/LUT/FF from the plan; each row gets the plan's latency and DSP, the
+reader's DSP where read, the verdict (fits / over / unread) and the figure that bound it, the
+fastest design that fits is marked ``best``, and designs the re-pricing puts over the part are
+raised as :class:`fgc_backends.hls.lint.HlsFitWarning`. ``fit_reads`` bounds the designs
+emitted and read per precision (0: the plan's figures alone).
 """
 
 from __future__ import annotations
@@ -41,7 +50,8 @@ from fgc.ir.program import Program, SolverConfig, check_program
 
 COLUMNS = ("linear", "precision", "units", "cpe", "status", "iterations", "latency_ms", "cycles",
            "dsp", "bram", "lut", "ff", "power_w", "energy_mj", "fits", "max_rotation_error",
-           "max_translation_error", "final_error", "pareto", "error")
+           "max_translation_error", "final_error", "pareto", "error", "plan_latency_ms",
+           "plan_dsp", "reader_dsp", "honest_dsp", "plan_bram36", "fit", "fit_bound", "best")
 
 
 @dataclass(frozen=True)
@@ -210,6 +220,7 @@ class SweepResult:
     rows: tuple[dict, ...]
     reference: dict
     timing: dict
+    fit_lines: tuple[str, ...] = ()  # the search's table and best design, per precision
 
 
 def group_programs(graph: Graph, base: SolverConfig, designs: Sequence[Design],
@@ -233,16 +244,20 @@ def group_programs(graph: Graph, base: SolverConfig, designs: Sequence[Design],
 
 def run_sweep(graph: Graph, base: SolverConfig, designs: Sequence[Design], pool: Pool,
               name: str = "fgc_problem",
-              progress: Callable[[int], None] | None = None) -> SweepResult:
+              progress: Callable[[int], None] | None = None, fit_reads: int | None = None,
+              fit_progress: Callable[[str], None] | None = None) -> SweepResult:
     """Evaluate ``designs`` on ``pool``: a simulator run per (linear, precision) group, the cost
-    model per design, accuracy against GTSAM's LM optimum; ``progress(n)`` after n designs.
+    model per design, accuracy against GTSAM's LM optimum; ``progress(n)`` after n designs;
+    with ``fit_reads`` (not None) the search's fit verdict per design (:func:`fit_search`;
+    ``fit_progress`` gets its progress lines).
 
     Each group is submitted as soon as it is compiled, so compiling the next linear solver and
     GTSAM's optimisation overlap with the workers."""
     from fgc.ir.datafile import problem_data
 
-    futures, data, t0 = {}, None, None
+    futures, data, t0, programs = {}, None, None, {}
     for key, program in group_programs(graph, base, designs, name):
+        programs[key] = program
         data = data or problem_data(graph, program)  # one layout for every group
         members = tuple(d for d in designs if (d.linear, d.precision) == key)
         t0 = t0 or time.perf_counter()  # the workers' window opens at the first task
@@ -261,7 +276,97 @@ def run_sweep(graph: Graph, base: SolverConfig, designs: Sequence[Design], pool:
               "designs": len(designs), "wall_seconds": wall, "worker_cpu_seconds": cpu,
               "cpu_utilization": cpu / (wall * busy) if wall > 0 else 0.0,
               "task_workers": sorted({g.worker for g in groups.values()})}
-    return SweepResult(tuple(_rows(graph, designs, groups, gtsam_values)), reference, timing)
+    rows = _rows(graph, designs, groups, gtsam_values)
+    fit_lines: list[str] = []
+    if fit_reads is not None:
+        searches = fit_search(programs, designs, fit_reads, fit_progress)
+        _add_fit(rows, searches, name)
+        for precision, result in searches.items():
+            floor = _floor(result, programs, precision)
+            fit_lines += [f"re-priced fit, {precision}:", *result.lines(floor)]
+    return SweepResult(tuple(rows), reference, timing, tuple(fit_lines))
+
+
+def _floor(result, programs: dict, precision: str):
+    """The latency floor (fgc.app.floor) of the best design's Program (else the fastest's), at
+    its plan's operator table."""
+    from fgc.app.floor import latency_floor
+    from fgc_backends.hls.plan import PlanOptions, build_plan
+
+    row = result.best or result.rows[0]
+    c = row.candidate
+    program = next(p for (lin, prec), p in programs.items()
+                   if lin == c.linear and prec == precision)
+    program = c.program({c.linear: program})
+    return latency_floor(program, build_plan(program, PlanOptions.of(program)).ops)
+
+
+def add_fit_arguments(parser) -> None:
+    """``fgc sweep``'s fit-search option (``--fit-reads``)."""
+    import argparse
+
+    def count(text: str) -> int:
+        if not text.strip().isdigit():
+            raise argparse.ArgumentTypeError(f"{text!r} is not a non-negative integer")
+        return int(text)
+
+    parser.add_argument("--fit-reads", type=count, default=2, metavar="N",
+                        help="designs per precision the fit search may emit and read with the "
+                             "second reader (DSP = max(plan, reader)); 0: the plan alone; "
+                             "reads are cached in FGC_CACHE_DIR (default 2)")
+
+
+def fit_options(args, show_progress: bool) -> dict:
+    """:func:`run_sweep`'s fit-search keywords from ``fgc sweep``'s parsed arguments (progress
+    lines on stderr when ``show_progress``)."""
+    return {"fit_reads": args.fit_reads,
+            "fit_progress": (lambda line: print(line, file=sys.stderr)) if show_progress
+            else None}
+
+
+def fit_search(programs: dict, designs: Sequence[Design], reads: int,
+               progress: Callable[[str], None] | None = None) -> dict:
+    """Per precision, :func:`fgc.app.search.search` over the sweep's designs as the HLS backend
+    emits them (its default unit sets and ALLOCATION): ``programs`` is {(linear, precision):
+    Program}; at most ``reads`` designs emitted and read per precision."""
+    from fgc.app.search import Space, search
+
+    out = {}
+    for precision in sorted({d.precision for d in designs}):
+        members = [d for d in designs if d.precision == precision]
+        progs = {lin: p for (lin, prec), p in programs.items() if prec == precision}
+        space = Space(linears=tuple(progs),
+                      units=tuple(sorted({d.units for d in members if d.units})) or (1,),
+                      cpe=tuple(sorted({d.cpe for d in members if d.cpe})) or (5,),
+                      scalar="float" if precision == "float32" else "double")
+        out[precision] = search(progs, space, max_reads=max(0, reads), reader=reads > 0,
+                                progress=progress)
+    return out
+
+
+def _add_fit(rows: list[dict], searches: dict, name: str) -> None:
+    """The search's figures and verdict into each sweep row; an HlsFitWarning per design the
+    plan fits but the honest figures do not."""
+    import warnings
+
+    from fgc.app.search import fit_warnings
+    from fgc_backends.hls.lint import HlsFitWarning
+
+    for precision, result in searches.items():
+        by = {(r.candidate.linear, r.candidate.units, r.candidate.cpe): r for r in result.rows}
+        for row in rows:
+            if row["precision"] != precision:
+                continue
+            r = by.get((row["linear"], row["units"], row["cpe"]))
+            if r is None:
+                continue
+            row.update({"plan_latency_ms": r.latency_ms, "plan_dsp": r.cost.dsp,
+                        "reader_dsp": r.reader_dsp, "plan_bram36": r.cost.bram36,
+                        "fit": r.verdict, "fit_bound": r.bound, "honest_dsp": r.dsp,
+                        "part_dsp": r.caps["dsp"],
+                        "best": r is result.best and r.verdict == "fits"})
+        for message in fit_warnings(result, name):
+            warnings.warn(message, HlsFitWarning, stacklevel=2)
 
 
 def _gtsam_reference(graph: Graph) -> tuple[dict, dict]:
@@ -314,7 +419,7 @@ def table_lines(result: SweepResult) -> list[str]:
     from fgc.app.design_report import format_table
 
     headers = ("design", "status", "iter", "latency ms", "DSP", "BRAM36", "LUT", "FF",
-               "energy mJ", "fits", "rot err rad", "pos err m", "front")
+               "energy mJ", "fits", "rot err rad", "pos err m", "front", "re-priced fit")
     return format_table(headers, [_display(r) for r in result.rows])
 
 
@@ -325,7 +430,7 @@ def summary_lines(result: SweepResult, spec: str) -> list[str]:
                 for r in result.rows if r["error"] is not None}
     return [f"fgc sweep {spec}: {len(result.rows)} designs; accuracy vs GTSAM LM (final error "
             f"{ref['final_error']:.6g} after {ref['iterations']} iterations)",
-            *table_lines(result), *failures,
+            *table_lines(result), *failures, *result.fit_lines,
             f"{t['tasks']} simulator runs on {t['executor']}: wall {t['wall_seconds']:.1f} s, "
             f"worker CPU {t['worker_cpu_seconds']:.1f} s ({t['cpu_utilization']:.0%} of the "
             "busy workers' time)"]
@@ -333,12 +438,13 @@ def summary_lines(result: SweepResult, spec: str) -> list[str]:
 
 def _display(r: dict) -> tuple[str, ...]:
     if r["error"] is not None:
-        return (r["label"], "error", "-", *("-" for _ in range(10)))
+        return (r["label"], "error", "-", *("-" for _ in range(11)))
     return (r["label"], r["status"], str(r["iterations"]), f"{r['latency_ms']:.3f}",
             f"{r['dsp']:,}", f"{r['bram']:g}", f"{r['lut']:,}", f"{r['ff']:,}",
             f"{r['energy_mj']:.3f}", "yes" if r["fits"] else "no",
             f"{r['max_rotation_error']:.1e}", f"{r['max_translation_error']:.1e}",
-            "*" if r["pareto"] else "")
+            "*" if r["pareto"] else "",
+            (r["fit"] + (" (best)" if r.get("best") else "")) if r.get("fit") else "-")
 
 
 def write_outputs(result: SweepResult, out: Path, title: str = "Design space") -> list[Path]:
@@ -370,7 +476,43 @@ def _plots(result: SweepResult, out: Path, title: str) -> list[Path]:
                       title=f"{title}: latency vs DSP{note}", path=files[0])
     plots.plot_accuracy(_accuracy_points(result.rows),
                         title=f"{title}: accuracy vs GTSAM's LM optimum", path=files[1])
+    if any(r.get("fit") for r in result.rows):
+        files.append(out / "fit.png")
+        plot_fit(result.rows, title=f"{title}: re-priced fit", path=files[-1])
     return files
+
+
+def plot_fit(rows: Sequence[dict], title: str, path: Path):
+    """Plan latency against the honest DSP (max(plan, reader) where read) per design, marked by
+    its re-priced verdict, the best design that fits starred, the part's DSP dashed."""
+    from fgc.app import plots
+
+    @plots._styled
+    def draw():
+        fig, ax = plots._figure()
+        styles = {"fits": ("tab:green", "o"), "over": ("tab:red", "x"),
+                  "unread": ("0.6", "s")}
+        for verdict, (color, marker) in styles.items():
+            pts = [r for r in rows if r.get("fit") == verdict]
+            if pts:
+                ax.scatter([r["honest_dsp"] for r in pts],
+                           [r["plan_latency_ms"] for r in pts], color=color, marker=marker,
+                           s=30, label=verdict)
+        for r in rows:
+            if r.get("best"):
+                ax.scatter([r["honest_dsp"]], [r["plan_latency_ms"]],
+                           marker="*", s=200, color="tab:green", edgecolor="k", zorder=3,
+                           label=f"best: {r['label']}")
+        caps = sorted({r["part_dsp"] for r in rows if r.get("fit")})
+        for cap in caps:
+            ax.axvline(cap, color="k", lw=0.8, ls="--", label=f"the part's {cap:,} DSP")
+        ax.set(xlabel="DSP = max(plan, second reader) (model estimates; a refusal implied by "
+                      "a read: that read's)",
+               ylabel="latency per iteration [ms] (plan)", title=title)
+        ax.legend(loc="best")
+        return plots._finish(fig, path)
+
+    return draw()
 
 
 def _accuracy_points(rows: Sequence[dict]) -> list[dict]:

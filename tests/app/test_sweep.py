@@ -86,7 +86,8 @@ def _read_csv(path: Path) -> list[dict]:
 def test_sweep_on_local_processes(tmp_path, capsys):
     out = tmp_path / "sweep"
     code = main(["sweep", *POSE3, "--units", "1,4", "--cpe", "5", "--linear", "qr,cholesky",
-                 "--precision", "float32,float64", "--jobs", "2", "--out", str(out)])
+                 "--precision", "float32,float64", "--jobs", "2", "--out", str(out),
+                 "--fit-reads", "0"])
     stdout = capsys.readouterr().out
     assert code == EXIT_OK, stdout
     rows = _read_csv(out / "sweep.csv")
@@ -105,9 +106,38 @@ def test_sweep_on_local_processes(tmp_path, capsys):
     assert report["timing"]["tasks"] == 4 and report["timing"]["workers"] == 2
     assert str(os.getpid()) not in " ".join(report["timing"]["task_workers"])
     assert "qr f32 n_u=4" in stdout
+    # the plan alone (no reads): no design is known to fit, the plan-fitting ones stay unread
+    assert {r["fit"] for r in rows} <= {"unread", "over"} and "re-priced fit, float32:" in stdout
     if _has("matplotlib"):
         for name in ("pareto.png", "accuracy.png"):
             assert (out / name).read_bytes()[:8] == PNG_MAGIC
+
+
+def test_sweep_fit_verdicts_best_and_warnings(tmp_path, capsys, monkeypatch):
+    """The sweep's re-priced fit: each design's verdict from the search, the fastest that fits
+    marked best, HlsFitWarning for a design the plan fits but the reader puts over the part
+    (a stub reader here, its DSP growing with n_u: over the xc7z045 from n_u = 4; the real
+    reader is exercised in test_search.py)."""
+    from fgc.app import search
+    from fgc_backends.hls.lint import HlsFitWarning
+
+    def reader(program, config, digest=None, use_cache=True):
+        return {"dsp": 300 * program.solver.units}, False
+
+    monkeypatch.setattr(search, "read_dsp", reader)
+    out = tmp_path / "sweep"
+    with pytest.warns(HlsFitWarning, match="n_u=4 .* does not fit xc7z045 as re-priced"):
+        code = main(["sweep", *POSE3, "--units", "1,4", "--linear", "qr", "--precision",
+                     "float32", "--jobs", "1", "--out", str(out), "--fit-reads", "2"])
+    stdout = capsys.readouterr().out
+    assert code == EXIT_OK, stdout
+    rows = {int(r["units"]): r for r in _read_csv(out / "sweep.csv")}
+    assert rows[4]["fit"] == "over" and rows[4]["reader_dsp"] == "1200"
+    assert rows[1]["fit"] == "fits" and rows[1]["best"] == "True"
+    assert "best design that fits: qr n_u=1" in stdout
+    assert "latency floor" in stdout and "the floor; limited by" in stdout
+    if _has("matplotlib"):
+        assert (out / "fit.png").read_bytes()[:8] == PNG_MAGIC
 
 
 def _has(module: str) -> bool:
@@ -122,7 +152,7 @@ def test_sweep_on_a_dask_cluster(tmp_path, capsys):
                                   threads_per_worker=1, dashboard_address=None) as cluster:
         code = main(["sweep", *POSE3, "--units", "2", "--linear", "qr", "--precision",
                      "float32,float64", "--executor", cluster.scheduler_address,
-                     "--out", str(tmp_path)])
+                     "--out", str(tmp_path), "--fit-reads", "0"])
     assert code == EXIT_OK, capsys.readouterr().out
     report = json.loads((tmp_path / "sweep.json").read_text())
     assert report["timing"]["executor"].startswith("Dask cluster at tcp://127.0.0.1:")
@@ -148,6 +178,7 @@ def test_executor_without_dask_is_a_clear_error(monkeypatch, capsys):
     (["--jobs", "0"], "--jobs: '0' is not a positive integer"),
     (["--executor", "localhost"], "--executor: 'localhost' is not a scheduler address"),
     (["-p", "bogus=1"], "bogus"),
+    (["--fit-reads", "-1"], "--fit-reads: '-1' is not a non-negative integer"),
 ])
 def test_bad_sweep_input_exit_code_2(extra, needle, capsys):
     assert main(["sweep", *POSE3, *extra]) == EXIT_BAD_INPUT

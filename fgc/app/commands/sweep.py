@@ -40,6 +40,7 @@ def add_arguments(p) -> None:
                         "(default: fgc-sweep-NAME)")
     p.add_argument("--progress", action=argparse.BooleanOptionalAction,
                    help="progress bar on stderr (default: when stderr is a terminal)")
+    sweep.add_fit_arguments(p)
 
 
 
@@ -56,7 +57,8 @@ def cmd_sweep(args) -> int:
     out = Path(args.out or f"fgc-sweep-{project_name(args.spec)}")
     with sweep.open_executor(args.jobs, args.executor) as pool, \
             sweep.progress_bar(len(designs), args.progress) as progress:
-        result = sweep.run_sweep(graph, base, designs, pool, project_name(args.spec), progress)
+        result = sweep.run_sweep(graph, base, designs, pool, project_name(args.spec), progress,
+                                 **sweep.fit_options(args, show_progress(args)))
     files = sweep.write_outputs(result, out, title=project_name(args.spec))
     print_lines(args, [*sweep.summary_lines(result, args.spec),
                   f"wrote {', '.join(str(f) for f in files)}"])

@@ -1,0 +1,472 @@
+"""Design-space search: the fastest accelerator design that fits its part, judged honestly.
+
+    space = Space(units=(1, 4, 16), unit_sets=(1, 2), alloc_scales=(1, 2), cpe=(5, 20))
+    result = search({"qr": qr_program, "cholesky": chol_program}, space, progress=print)
+    print("\\n".join(result.lines()))      # every design, its verdict and what bound it
+
+Each candidate is an emitted HLS design (:class:`Candidate`: linear solver, n_u, QR unit sets,
+#CPE, the factor datapaths' ``ALLOCATION`` scale, and any option the plan grows: a ``qr_unit``
+field of ``PlanOptions`` becomes an axis when present). Its speed is the accelerator plan's
+(``plan_cost(build_plan(program, PlanOptions.for_config(config, program)))``: cycles of one
+iteration); its fit is judged on honest figures:
+
+- **DSP** = max(the plan's DSP, the second reader's DSP of the emitted design:
+  ``fgc_backends.hls.reader``, what Vitis would instantiate from the text, a lower bound). Once
+  the plan is proven to price at least what the reader reads, the max is a no-op;
+- **BRAM36, LUT, FF** from the plan.
+
+A design fits when every figure is within the part's capacity; the figure with the largest share
+of its capacity is the one that *bound* the verdict, and each row names it.
+
+Reading a design means emitting it (tens of seconds for LIO N=30), so the search reads as few as
+it can, and caches what it read:
+
+1. every candidate is priced by the plan (cheap); one the plan already puts over the part is
+   refused without reading;
+2. the reader's DSP grows with every ordered axis (more Update units, unit sets, CPEs or
+   ALLOCATION never instantiate fewer operators), so a read that fits proves every design
+   below it (on every axis) fits, and a read over the part refuses every design above it;
+3. among the undecided designs faster than the fastest design known to fit, the search reads
+   first each family's smallest (a linear solver with its unordered options: if the smallest
+   is over the part, so is the family), then the median by plan cycles (a bisection), until
+   none is left or ``max_reads`` reads are spent; undecided designs left are reported as such
+   (``unread``), and so is the number of faster designs the best was not checked against.
+
+Reads are cached under ``$FGC_CACHE_DIR`` (kind ``reader``), keyed by the Program's fingerprint,
+the HLS config and a digest of the backends' sources (a change to the emitter reads again).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import tempfile
+import time
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from fgc.errors import FgcError
+from fgc.ir.program import Program
+
+ORDERED = ("units", "unit_sets", "cpe", "alloc_scale")  # axes the reader's DSP grows with
+READ_KIND = "reader"
+
+
+class SearchError(FgcError):
+    """The design space is malformed (an unknown option, an empty axis)."""
+
+
+@dataclass(frozen=True)
+class Space:
+    """The axes searched. ``units`` and ``unit_sets`` apply to QR designs, ``cpe`` to Cholesky
+    ones; ``unit_sets=None`` means the emitter's default (two on a two-ended chain, else one);
+    ``alloc_scales`` multiply the factor datapaths' default ``ALLOCATION`` limits; ``extra``:
+    further ``PlanOptions`` fields the emitter knows as ``HlsConfig`` fields, (name, values)."""
+
+    linears: tuple[str, ...] = ("qr", "cholesky")
+    units: tuple[int, ...] = (1, 2, 4, 8, 16, 32)
+    unit_sets: tuple[int | None, ...] = (None,)
+    cpe: tuple[int, ...] = (5, 20, 40, 80, 120)
+    alloc_scales: tuple[int, ...] = (1,)
+    scalar: str = "float"
+    part: str | None = None  # None: HlsConfig's default part
+    extra: tuple[tuple[str, tuple], ...] = ()
+
+    def __post_init__(self):
+        for name in ("linears", "units", "unit_sets", "cpe", "alloc_scales"):
+            if not getattr(self, name):
+                raise SearchError(f"design space: axis {name!r} is empty")
+        bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales) if int(u) < 1]
+        bad += [s for s in self.unit_sets if s is not None and int(s) < 1]
+        if bad:
+            raise SearchError(f"design space: counts must be >= 1, got {bad}")
+        unknown = sorted(set(self.linears) - {"qr", "cholesky"})
+        if unknown:
+            raise SearchError(f"design space: unknown linear solver(s) {unknown}")
+
+
+def qr_unit_axis() -> tuple:
+    """The QR unit kinds when ``PlanOptions`` has a ``qr_unit`` option (and ``HlsConfig`` or its
+    design options the same field, so the emitter builds it): ``QR_UNITS`` of the options
+    module if it names them, else the option's default alone; () when there is no such
+    option."""
+    from fgc_backends.hls.plan import options
+
+    names = {f.name: f for f in dataclasses.fields(options.PlanOptions)}
+    if "qr_unit" not in names or "qr_unit" not in _config_names():
+        return ()
+    kinds = getattr(options, "QR_UNITS", None)
+    return tuple(kinds) if kinds else (names["qr_unit"].default,)
+
+
+def _init_names(cls) -> set[str]:
+    import inspect
+
+    return set(inspect.signature(cls).parameters)
+
+
+def _config_names() -> set[str]:
+    """The option names an ``HlsConfig`` takes: its own, and its design options' where the
+    config carries them (``HlsConfig.design``)."""
+    from fgc_backends.hls import HlsConfig
+    from fgc_backends.hls import config as hls_config
+
+    names = _init_names(HlsConfig)
+    design = getattr(hls_config, "DesignOptions", None)
+    return names | (_init_names(design) if design is not None else set())
+
+
+@dataclass(frozen=True)
+class Candidate:
+    """One emitted design: what the search varies."""
+
+    linear: str
+    units: int | None = None  # QR
+    unit_sets: int | None = None  # QR; None: the emitter's default
+    cpe: int | None = None  # Cholesky
+    alloc_scale: int = 1
+    extra: tuple[tuple[str, object], ...] = ()
+
+    @property
+    def label(self) -> str:
+        if self.linear == "qr":
+            sets = "default" if self.unit_sets is None else str(self.unit_sets)
+            head = f"qr n_u={self.units} sets={sets}"
+        else:
+            head = f"cholesky #CPE={self.cpe}"
+        tail = "".join(f" {k}={v}" for k, v in self.extra)
+        return f"{head} ALLOC×{self.alloc_scale}{tail}"
+
+    def program(self, programs: Mapping[str, Program]) -> Program:
+        p = programs[self.linear]
+        solver = dataclasses.replace(p.solver, units=self.units or p.solver.units,
+                                     cpe=self.cpe or p.solver.cpe)
+        return dataclasses.replace(p, solver=solver)
+
+    def config(self, space: Space):
+        """The ``HlsConfig`` that emits this design."""
+        from fgc_backends.hls import HlsConfig
+        from fgc_backends.hls.plan import DEFAULT_ALLOCATION
+
+        alloc = (None if self.alloc_scale == 1
+                 else tuple((k, n * self.alloc_scale) for k, n in DEFAULT_ALLOCATION))
+        kw = dict(scalar=space.scalar, unit_sets=self.unit_sets, allocation=alloc,
+                  **dict(self.extra))
+        if space.part is not None:
+            kw["part"] = space.part
+        direct = {k: v for k, v in kw.items() if k in _init_names(HlsConfig)}
+        design = {k: v for k, v in kw.items() if k not in direct}
+        if design:  # options only the design-options object knows (HlsConfig.design)
+            from fgc_backends.hls import config as hls_config
+
+            direct["design"] = hls_config.DesignOptions(**design)
+        return HlsConfig(**direct)
+
+    def below(self, other: Candidate) -> bool:
+        """Every ordered axis of this design <= ``other``'s, the rest equal: the reader's DSP
+        of this design is at most ``other``'s."""
+        if (self.linear, self.extra) != (other.linear, other.extra):
+            return False
+        for axis in ORDERED:
+            a, b = getattr(self, axis), getattr(other, axis)
+            if a is None or b is None:
+                if a != b:
+                    return False
+            elif a > b:
+                return False
+        return True
+
+
+def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate, ...]:
+    """The cartesian product over the axes that apply to each linear solver present."""
+    extra_axes = list(space.extra)
+    if "qr_unit" not in dict(extra_axes) and qr_unit_axis():
+        extra_axes.append(("qr_unit", qr_unit_axis()))
+    extras = [()]
+    for name, values in extra_axes:
+        extras = [e + ((name, v),) for e in extras for v in values]
+    out = []
+    for linear in space.linears:
+        if linear not in programs:
+            continue
+        for scale in space.alloc_scales:
+            if linear == "qr":
+                for units in space.units:
+                    for sets in space.unit_sets:
+                        for e in extras:
+                            out.append(Candidate("qr", units, sets, None, scale, e))
+            else:
+                out += [Candidate("cholesky", None, None, c, scale) for c in space.cpe]
+    return tuple(dict.fromkeys(out))
+
+
+@dataclass
+class Row:
+    """One candidate: the plan's price, the reader's DSP if read, the verdict and its reason."""
+
+    candidate: Candidate
+    cost: object  # the plan's Cost
+    caps: dict  # the part's capacities: dsp, bram36, lut, ff
+    reader_dsp: int | None = None
+    read: str = ""  # "", "read" (emitted and read now), "cached"
+    verdict: str = "unread"  # "fits", "over", "unread", "unbuildable" (the emitter refuses it)
+    bound: str = ""  # the figure that decided (or, unread, the plan's tightest)
+    implied_by: str = ""  # the read design a verdict follows from
+    reader_at_least: int = 0  # implied over: the reader's DSP is at least the implying read's
+    read_seconds: float = 0.0
+    details: dict = field(default_factory=dict)
+
+    @property
+    def label(self) -> str:
+        return self.candidate.label
+
+    @property
+    def cycles(self) -> int:
+        return self.cost.cycles
+
+    @property
+    def latency_ms(self) -> float:
+        return self.cost.latency_ms
+
+    def figures(self) -> list[tuple[str, float, float]]:
+        """(figure, value, capacity) of every honest figure known."""
+        c = self.cost
+        out = [("plan DSP", c.dsp, self.caps["dsp"]),
+               ("plan BRAM36", c.bram36, self.caps["bram36"]),
+               ("plan LUT", c.lut, self.caps["lut"]), ("plan FF", c.ff, self.caps["ff"])]
+        if self.reader_dsp is not None:
+            out.insert(1, ("reader DSP", self.reader_dsp, self.caps["dsp"]))
+        return out
+
+    @property
+    def dsp(self) -> int:
+        """The honest DSP: max(plan, reader) where read (where a refusal is implied, the
+        implying read's DSP, a lower bound of this design's)."""
+        return max(self.cost.dsp, self.reader_dsp or self.reader_at_least)
+
+    def judge(self) -> None:
+        """Set ``verdict`` / ``bound`` from the figures known (a read design, or the plan's over
+        the part); an unread design the plan fits stays ``unread``."""
+        name, value, cap = max(self.figures(), key=lambda f: f[1] / f[2])
+        self.bound = f"{name} {value:,.0f}/{cap:,}"
+        if value > cap:
+            self.verdict = "over"
+        elif self.reader_dsp is not None:
+            self.verdict = "fits"
+
+
+@dataclass(frozen=True)
+class SearchResult:
+    rows: tuple[Row, ...]  # fastest (plan cycles) first
+    best: Row | None  # the fastest design that fits
+    reads: int  # designs emitted and read in this search (cache hits not counted)
+    cached: int
+    unchecked_faster: int  # undecided designs faster than ``best`` (read budget spent)
+    part: str
+    seconds: float
+
+    def lines(self, floor=None) -> list[str]:
+        """The table of every design and the best; ``floor`` (:class:`fgc.app.floor.Floor`)
+        adds the latency floor and what limits the best design."""
+        from fgc.app.design_report import format_table
+
+        headers = ("design", "cycles/it", "ms/it", "plan DSP", "reader DSP", "BRAM36", "fit",
+                   "bound by", "how")
+        body = []
+        for r in self.rows:
+            how = r.read or (f"implied by {r.implied_by}" if r.implied_by else
+                             ("plan" if r.verdict == "over" else "-"))
+            body.append(((("* " if r is self.best else "  ") + r.label), f"{r.cycles:,}",
+                         f"{r.latency_ms:.3f}", f"{r.cost.dsp:,}",
+                         "-" if r.reader_dsp is None else f"{r.reader_dsp:,}",
+                         f"{r.cost.bram36:g}", r.verdict, r.bound, how))
+        out = [f"design search on {self.part}: {len(self.rows)} designs, {self.reads} emitted "
+               f"and read, {self.cached} from the cache ({self.seconds:.0f} s); fit: DSP = "
+               "max(plan, second reader), BRAM36/LUT/FF from the plan",
+               *format_table(headers, body)]
+        if self.best is None:
+            out.append("no design is known to fit" + (
+                f" ({self.unchecked_faster} left unread: raise the read budget)"
+                if self.unchecked_faster else ""))
+            return out
+        b = self.best
+        read = "-" if b.reader_dsp is None else f"{b.reader_dsp:,}"
+        out.append(f"best design that fits: {b.label}: {b.cycles:,} cycles = "
+                   f"{b.latency_ms:.3f} ms per iteration, {b.dsp:,} DSP "
+                   f"(plan {b.cost.dsp:,}, reader {read}), {b.cost.bram36:g} BRAM36; "
+                   + (f"bound by {b.bound}" if b.verdict == "fits" else
+                      "judged on the plan alone: not read")
+                   + (f"; {self.unchecked_faster} faster design(s) left unread (read budget)"
+                      if self.unchecked_faster else ""))
+        if floor is not None:
+            from fgc.app.floor import limits_line
+
+            out += [f"  {floor.describe()}", f"  best design: {limits_line(floor, b.cost)}"]
+        return out
+
+
+def sources_digest() -> str:
+    """Digest of the backends' sources (Python, templates, headers): what emits a design."""
+    import fgc_backends
+
+    root = Path(fgc_backends.__file__).parent
+    h = hashlib.sha256()
+    for path in sorted(root.rglob("*")):
+        if path.is_file() and path.suffix in (".py", ".jinja", ".h", ".cpp", ".tcl") \
+                and "__pycache__" not in path.parts:
+            h.update(str(path.relative_to(root)).encode() + b"\0" + path.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+def _precision(config) -> str:
+    from fgc_backends.hls.plan import scalar_precision
+
+    return scalar_precision(config.scalar_cxx)
+
+
+def read_dsp(program: Program, config, digest: str | None = None,
+             use_cache: bool = True) -> tuple[dict, bool]:
+    """The second reader's figures of ``program`` emitted with ``config``: (``{"dsp", "ii_short",
+    "carried", "operators", "seconds"}``, whether they came from the cache)."""
+    from fgc.compiler import cache
+    from fgc_backends.hls import emit
+    from fgc_backends.hls.plan import PlanOptions, build_plan
+    from fgc_backends.hls.reader import check, emitted_files, read_design
+
+    key = hashlib.sha256("\0".join((program.fingerprint, repr(config),
+                                    digest or sources_digest())).encode()).hexdigest()
+    path = cache.entry(READ_KIND, program.name, key) if use_cache else None
+    hit = cache.load(path, key, dict)
+    if hit is not None:
+        return hit, True
+    t0 = time.perf_counter()
+    tab = build_plan(program, PlanOptions.for_config(config, program)).target.ops(
+        _precision(config))
+    with tempfile.TemporaryDirectory(prefix="fgc-search-") as tmp:
+        import warnings
+
+        from fgc_backends.hls.lint import HlsFitWarning
+
+        with warnings.catch_warnings():  # the search reports the fit itself
+            warnings.simplefilter("ignore", HlsFitWarning)
+            emit(program, Path(tmp) / "design", config)
+        files, top = emitted_files(Path(tmp) / "design")
+        design = read_design(files, top, tab.add.latency)
+    dsp_of = {k: tab.op(k).dsp for k in ("add", "mul", "div", "sqrt", "special")}
+    issues = check(design.loops)
+    out = {"dsp": design.dsp(dsp_of), "operators": dict(design.operators),
+           "ii_short": sum(i.rule == "ii_ports" for i in issues),
+           "carried": sum(i.rule == "ii_recurrence" for i in issues),
+           "seconds": time.perf_counter() - t0}
+    cache.store(path, key, out)
+    return out, False
+
+
+def price(program: Program, cand: Candidate, space: Space):
+    """The plan's Cost of ``cand`` and the part's capacities."""
+    from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
+
+    config = cand.config(space)
+    plan = build_plan(program, PlanOptions.for_config(config, program))
+    d = plan.target.device
+    return plan_cost(plan), {"dsp": d.dsp, "bram36": d.bram36, "lut": d.lut, "ff": d.ff}, d.name
+
+
+def search(programs: Mapping[str, Program], space: Space = Space(), max_reads: int = 8,
+           reader: bool = True, progress: Callable[[str], None] | None = None,
+           reader_fn: Callable | None = None, use_cache: bool = True) -> SearchResult:
+    """The fastest design of ``space`` that fits, over ``programs`` (linear solver → Program,
+    compiled for that solver; n_u and #CPE are set per candidate). ``reader=False`` judges on
+    the plan alone (no design is then known to fit: every plan-fitting design stays unread and
+    the best is the fastest of them, marked as plan-only); ``reader_fn(program, config)`` →
+    (figures, cached) replaces :func:`read_dsp` (tests)."""
+    t0 = time.perf_counter()
+    say = progress or (lambda s: None)
+    cands = candidates(space, programs)
+    if not cands:
+        raise SearchError("design space: no candidate (no Program for its linear solvers)")
+    rows, part = [], ""
+    for i, c in enumerate(cands):
+        cost, caps, part = price(c.program(programs), c, space)
+        rows.append(Row(c, cost, caps))
+        if progress and (i + 1) % 10 == 0:
+            say(f"  priced {i + 1}/{len(cands)} designs")
+    rows.sort(key=lambda r: (r.cycles, r.cost.dsp, r.label))
+    for r in rows:
+        r.judge()
+    digest = sources_digest() if reader and reader_fn is None else None
+    fn = reader_fn or (lambda p, cfg: read_dsp(p, cfg, digest, use_cache))
+    reads = cached = 0
+
+    def known_fit() -> int:
+        return next((i for i, r in enumerate(rows) if r.verdict == "fits"), len(rows))
+
+    def undecided() -> list[Row]:
+        return [r for r in rows[:known_fit()] if r.verdict == "unread"]
+
+    probed: set = set()
+    while reader and undecided() and reads < max_reads:
+        pending = undecided()
+        r = _next_read(pending, probed)
+        probed.add((r.candidate.linear, r.candidate.extra))
+        say(f"  reading {r.label} (plan {r.cycles:,} cycles, {r.cost.dsp:,} DSP) with the "
+            f"second reader (emitted unless cached): {len(pending)} undecided faster than the "
+            "best so far")
+        try:
+            figures, hit = fn(r.candidate.program(programs), r.candidate.config(space))
+        except FgcError as exc:  # the emitter refuses the design: it is no candidate
+            r.verdict, r.bound, r.read = "unbuildable", f"{type(exc).__name__}: {exc}", "read"
+            reads += 1
+            say(f"  {r.label}: not emitted ({r.bound})")
+            continue
+        r.reader_dsp, r.details, r.read = int(figures["dsp"]), figures, "cached" if hit else "read"
+        r.read_seconds = float(figures.get("seconds", 0.0))
+        cached += hit
+        reads += not hit
+        r.judge()
+        for o in rows:  # what the reader's monotonicity proves about the others
+            if o.verdict != "unread" or o is r:
+                continue
+            if r.verdict == "fits" and o.candidate.below(r.candidate):
+                o.verdict, o.implied_by = "fits", r.label
+                o.bound = f"reader DSP <= {r.reader_dsp:,}/{o.caps['dsp']:,}"
+            elif r.verdict == "over" and r.candidate.below(o.candidate) and \
+                    r.reader_dsp > o.caps["dsp"]:
+                o.verdict, o.implied_by, o.reader_at_least = "over", r.label, r.reader_dsp
+                o.bound = f"reader DSP >= {r.reader_dsp:,}/{o.caps['dsp']:,}"
+    best_i = known_fit()
+    best = rows[best_i] if best_i < len(rows) else None
+    unchecked = len(undecided()) if reader else 0
+    if not reader:
+        best = next((r for r in rows if r.verdict == "unread"), None)
+    say(f"  search done: {reads} designs read, {cached} cached, "
+        f"{time.perf_counter() - t0:.0f} s")
+    return SearchResult(tuple(rows), best, reads, cached, unchecked, part,
+                        time.perf_counter() - t0)
+
+
+def _next_read(pending: list[Row], probed: set) -> Row:
+    """The next design to read: first, per family (linear solver and unordered options) not
+    read yet, its smallest undecided design (nothing undecided below it: if that one is over
+    the part, the whole family is); then the median by plan cycles (a bisection: a fit there
+    settles every slower design, a refusal every design above it)."""
+    for r in reversed(pending):  # slowest first: the smallest designs
+        family = (r.candidate.linear, r.candidate.extra)
+        if family not in probed and not any(
+                o is not r and o.candidate.below(r.candidate) for o in pending):
+            return r
+    return pending[len(pending) // 2]
+
+
+def fit_warnings(result: SearchResult, name: str) -> list[str]:
+    """One message per design the plan fits but the honest figures do not: what ``fgc sweep``
+    raises as ``HlsFitWarning``."""
+    return [f"{name}: {r.label} does not fit {result.part} as re-priced: {r.bound} "
+            f"(plan DSP {r.cost.dsp:,})" for r in result.rows
+            if r.verdict == "over" and r.cost.fits]
+
+
+__all__ = ["Candidate", "Row", "SearchError", "SearchResult", "Space", "candidates",
+           "fit_warnings", "price", "read_dsp", "search", "sources_digest"]
+

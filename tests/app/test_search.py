@@ -1,0 +1,172 @@
+"""The design-space search (fgc.app.search) and the latency floor (fgc.app.floor): a design the
+plan fits but the second reader does not is refused; the reader's monotonicity decides designs
+without reading them, and never the other way; the floor is below every design's cycles."""
+
+from __future__ import annotations
+
+import pytest
+
+import fgc
+from fgc.app.floor import PARTS, latency_floor, limits_line, phase_excess
+from fgc.app.search import Candidate, SearchError, Space, fit_warnings, search
+from fgc.compile import compile_graph
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Pose2
+from fgc.ir.program import SolverConfig
+from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
+
+
+def _chain(n: int = 4) -> fgc.Graph:
+    g = fgc.Graph()
+    for i in range(n):
+        g.add_variable(f"x{i}", Pose2(float(i), 0.1 * i, 0.0))
+    g.add(PriorFactor("x0", Pose2(0.0, 0.0, 0.0), fgc.noise.isotropic(3, 0.1)))
+    for i in range(n - 1):
+        g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
+                            fgc.noise.isotropic(3, 0.1)))
+    return g
+
+
+@pytest.fixture(scope="module")
+def programs():
+    g = _chain()
+    return {lin: compile_graph(g, SolverConfig(method=m, linear=lin, precision="float32"),
+                               name="chain")
+            for lin, m in (("qr", "gn"), ("cholesky", "lm"))}
+
+
+def test_a_design_the_plan_fits_but_the_reader_does_not_is_refused(programs):
+    """A real emitted design: a 4-pose Pose2 chain, QR, n_u = 1. The plan prices it within the
+    xc7z045's 900 DSP; the second reader reads the emitted text's operators as Vitis would
+    instantiate them and finds more than the part has: the search refuses it, says the reader
+    bound it, and raises it as a fit warning."""
+    space = Space(linears=("qr",), units=(1,), unit_sets=(1,))
+    result = search({"qr": programs["qr"]}, space, max_reads=1)
+    (row,) = result.rows
+    assert row.cost.fits and row.cost.dsp <= 900  # the plan alone would take it
+    assert row.reader_dsp is not None and row.reader_dsp > 900
+    assert row.verdict == "over" and row.bound.startswith("reader DSP")
+    assert result.best is None
+    assert len(fit_warnings(result, "chain")) == 1
+    assert any("no design is known to fit" in line for line in result.lines())
+
+
+def _stub(readings):
+    """A reader returning ``readings[(units, sets, alloc)]`` and recording what was read."""
+    seen = []
+
+    def read(program, config):
+        key = (program.solver.units, config.unit_sets,
+               1 if config.allocation is None else config.allocation[0][1] // 16)
+        seen.append(key)
+        return {"dsp": readings[key]}, False
+
+    return read, seen
+
+
+def test_the_search_reads_few_and_what_it_implies_holds(programs):
+    """A monotone stub reader: every design read or implied gets the verdict its own reading
+    would give, the best is the fastest that fits among them, and fewer designs are read than
+    there are."""
+    space = Space(linears=("qr",), units=(1, 2, 4, 8), unit_sets=(1, 2), alloc_scales=(1, 2))
+    readings = {(u, s, a): 100 * u * s + 50 * a for u in (1, 2, 4, 8) for s in (1, 2)
+                for a in (1, 2)}  # over 900 from n_u × sets >= 16
+    read, seen = _stub(readings)
+    result = search({"qr": programs["qr"]}, space, max_reads=16, reader_fn=read)
+    assert len(seen) < len(result.rows)
+    for r in result.rows:
+        c = r.candidate
+        truth = max(readings[(c.units, c.unit_sets, c.alloc_scale)], r.cost.dsp) <= 900 \
+            and r.cost.fits
+        assert r.verdict in ("fits", "over", "unread")
+        if r.verdict != "unread":
+            assert (r.verdict == "fits") == truth, r.label
+    fitting = [r for r in result.rows if r.verdict == "fits"]
+    assert result.best is fitting[0]
+    assert all(r.verdict == "over" for r in result.rows if r.cycles < result.best.cycles)
+    assert result.unchecked_faster == 0
+
+
+def test_a_read_budget_leaves_designs_unread_and_says_so(programs):
+    space = Space(linears=("qr",), units=(1, 2, 4, 8), unit_sets=(1,))
+    read, seen = _stub({(u, 1, 1): 100 for u in (1, 2, 4, 8)})
+    result = search({"qr": programs["qr"]}, space, max_reads=0, reader_fn=read)
+    assert seen == [] and result.best is None and result.unchecked_faster == 4
+    assert any("raise the read budget" in line for line in result.lines())
+
+
+def test_a_design_the_emitter_refuses_is_no_candidate(programs):
+    """A read that fails with an FgcError (the emitter refuses the design) marks that design
+    unbuildable and implies nothing about the others; the search goes on."""
+    from fgc.errors import FgcError
+
+    def read(program, config):
+        if program.solver.units == 2:
+            raise FgcError("refused")
+        return {"dsp": 100}, False
+
+    space = Space(linears=("qr",), units=(1, 2), unit_sets=(1,))
+    result = search({"qr": programs["qr"]}, space, max_reads=4, reader_fn=read)
+    verdicts = {r.candidate.units: r.verdict for r in result.rows}
+    assert verdicts == {2: "unbuildable", 1: "fits"} and result.best.candidate.units == 1
+    assert "refused" in next(r.bound for r in result.rows if r.verdict == "unbuildable")
+
+
+def test_monotone_order_and_space_checks():
+    small, big = Candidate("qr", 1, 1, None, 1), Candidate("qr", 4, 2, None, 2)
+    assert small.below(big) and not big.below(small)
+    assert not Candidate("qr", 1, None, None, 1).below(big)  # the default sets: not ordered
+    assert not Candidate("cholesky", cpe=5).below(big)
+    with pytest.raises(SearchError):
+        Space(units=())
+    with pytest.raises(SearchError):
+        Space(linears=("lu",))
+    with pytest.raises(SearchError):
+        Space(cpe=(0,))
+
+
+@pytest.mark.parametrize("linear", ["qr", "cholesky"])
+def test_the_floor_is_below_every_design(programs, linear):
+    """The floor is a chain every design must run, at the operator table's latencies: each
+    design's plan cycles (and each floor part's share of them) are at least the floor's."""
+    program = programs[linear]
+    ops = build_plan(program, PlanOptions.of(program)).ops
+    floor = latency_floor(program, ops)
+    assert [p for p, _ in floor.parts] == list(PARTS) and floor.cycles > 0
+    by_index = {s.index: s for s in program.schedule.steps}
+    paths = set()
+    for leaf in (s for s in by_index.values() if not s.children):
+        step, pivots = leaf, 0
+        while step is not None:
+            pivots += step.frontal_dim
+            step = by_index.get(step.parent)
+        paths.add(pivots)
+    assert floor.pivots in paths  # one leaf-to-root path of the elimination tree
+    for kw in ({"units": 1}, {"units": 32, "unit_sets": 2}, {"cpe": 5}, {"cpe": 120}):
+        cost = plan_cost(build_plan(program, PlanOptions.of(program, **kw)))
+        assert floor.cycles <= cost.cycles
+        for part, design, part_floor in phase_excess(floor, cost.phase_cycles):
+            if part in ("eliminate", "back-substitute"):
+                assert part_floor <= design, (kw, part)
+        assert "the floor; limited by" in limits_line(floor, cost)
+
+
+def test_cholesky_floor_by_hand(programs):
+    """The Cholesky chain floor by hand: every pivot on the path sqrt + div + mul + add, one
+    add at each step with children, the leaf's H entries (mul + ⌈log₂ rows⌉ adds)."""
+    import math
+
+    program = compile_graph(_chain(), SolverConfig(method="lm", linear="cholesky",
+                                                   ordering="serial", precision="float32"))
+    ops = build_plan(program, PlanOptions.of(program)).ops
+    floor = latency_floor(program, ops)
+    steps = program.schedule.steps
+    assert len(program.schedule.roots) == 1 and all(len(s.children) <= 1 for s in steps)
+    la, lm = ops.add.latency, ops.mul.latency
+    pivot = ops.sqrt.latency + ops.div.latency + lm + la
+    leaf = next(s for s in steps if not s.children)
+    expect = (sum(s.frontal_dim for s in steps) * pivot
+              + la * sum(1 for s in steps if s.children)
+              + lm + math.ceil(math.log2(leaf.rows)) * la)
+    assert floor.part("eliminate") == expect
+    assert floor.part("back-substitute") == floor.unknowns * (lm + la)
