@@ -44,6 +44,7 @@ template <class TT, int N, bool STRICT>
 struct cpe_cfg {
     typedef TT T;
     static const int MAX_W = 30, MAX_COLS = 31, MAX_F = 25, N_CPE = N, PARTIALS = 12;
+    static const int N_COND = MAX_F * MAX_COLS, N_NF = MAX_W * MAX_COLS;
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;
     static constexpr double SINGULAR_EPS = STRICT ? 1e-12 : 1e-3;
 };
@@ -119,7 +120,7 @@ static void run_cpe(int f, int s, double mu) {
             if (i < C::MAX_W && c < C::MAX_COLS) H[i][c] = T(x);
         }
     bool not_pd = false, singular = false;
-    fgc_units::cpe_step<C>(H, f, s, T(mu), cond, update, &not_pd, &singular);
+    fgc_units::cpe_step<C>(H, f, s, T(mu), cond, 0, update, 0, &not_pd, &singular);
     cycles("cycles");
     std::printf("flags %d %d\n", int(not_pd), int(singular));
     const bool fits = w <= C::MAX_W && f <= C::MAX_F;
@@ -342,7 +343,8 @@ def cpe_expected(h, f, s, mu):
     u = lf.T
     sm = np.linalg.solve(lf, full[:f, f:])
     d = np.linalg.solve(lf, g[:f])
-    cond = np.hstack([u, sm, d[:, None]])
+    # fgc_cpe.h leaves each row as its pivot left it: row i of U scaled by U_ii = sqrt(d_i)
+    cond = np.diag(np.diag(u)) @ np.hstack([u, sm, d[:, None]])
     schur = full[f:, f:] - sm.T @ sm
     gs = g[f:] - sm.T @ d
     upd = np.hstack([np.triu(schur), gs[:, None]])
@@ -413,20 +415,26 @@ def test_cycle_counts(driver):
         return (trip - 1) * ii + depth if trip > 0 else 0
 
     # N_CPE = 20, one round (p0 = 0, w = 15, all 10 pivots): the region's slowest process plus the
-    # others' fill, then the damping and store loops
+    # others' fill, then the singularity scale and the pivot check
     w, f, s = 15, 10, 5
     words = w * (w + 1) // 2 + w
 
-    # a CPE is one stream of the words and the status word, as deep as its latency if it has a
-    # pivot; the feed and the drain are 2 deep
-    cpe_depth = ls + ld + lm + la
-    procs = ([(loop(words + 1, 1, 2), 2)]
-             + [(loop(words + 1, 1, cpe_depth), cpe_depth)] * f
-             + [(loop(words + 1, 1, 1), 1)] * (20 - f) + [(loop(words + 1, 1, 2), 2)])
+    # every process is one stream of the words and the status word: the feed La + 2 deep (mu
+    # added), a tap with a pivot 2 (its divide runs beside the stream), a CPE with a pivot
+    # 2 Lm + La + 2 plus its wait for r (Ld - its row's w + 1 - p words, if more), an idle tap
+    # or CPE 1, the drain 2
+    def cpe(p):
+        return 2 * lm + la + 2 + max(0, ld - (w + 1 - p))
+
+    procs = ([(loop(words + 1, 1, la + 2), la + 2)]
+             + [(loop(words + 1, 1, 2), 2)] * f
+             + [(loop(words + 1, 1, cpe(p)), cpe(p)) for p in range(f)]
+             + [(loop(words + 1, 1, 1), 1)] * 2 * (20 - f) + [(loop(words + 1, 1, 2), 2)])
     slow = max(range(len(procs)), key=lambda i: procs[i][0])
     region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
-    assert region == words + cpe_depth + 2 + 2 + (f - 1) * cpe_depth + (20 - f)
-    sequential = loop(f, 1, la) + loop(f, 1, 2)  # damping, pivot check
+    assert region == (words + la + 2 + 2 * f + sum(cpe(p) for p in range(f)) + 2 * (20 - f)
+                      + 2)
+    sequential = loop(f, 1, lm + ld + 2) + loop(f, 1, lm + 2)  # scale, pivot check
     p = 12  # the driver's PARTIALS
     # cond_backsub: the rows' partial sums zeroed, the f s separator terms in one II-1 loop
     # (multiply-add deep), each row's P partial sums folded (La (1 + ⌈log₂ P⌉) deep), the
@@ -481,7 +489,7 @@ def test_plan_prices_the_cpe_rounds(driver):
     """plan.cpe_round_depth: a whole matrix as one step (f = n, s = 0), as plan.py's Cholesky
     phase prices it, equals the counted cycles for 1, 5 and 20 CPEs (idle CPEs included)."""
     from fgc_backends.hls.plan import Loop
-    from fgc_backends.hls.units.cholesky import cpe_round_depth
+    from fgc_backends.hls.units.cholesky import cpe_round_depth, cpe_wait
 
     ops = DRIVER_OPS
     n = 23
@@ -491,9 +499,11 @@ def test_plan_prices_the_cpe_rounds(driver):
         rounds = []
         for r in range(-(-n // c)):
             m = n - r * c
-            depth = cpe_round_depth(min(c, m), c, ops)
-            rounds.append(Loop("round", m * (m + 1) // 2 + m, 1, depth))
-        scalar = Loop("damping", n, 1, ops.add.latency).cycles + Loop("check", n, 1, 2).cycles
+            waits = sum(cpe_wait(p, n, ops) for p in range(r * c, min(n, r * c + c)))
+            depth = cpe_round_depth(min(c, m), c, ops, waits)
+            rounds.append(Loop("round", m * (m + 1) // 2 + m + 1, 1, depth))
+        scalar = (Loop("scale", n, 1, ops.mul.latency + ops.div.latency + 2).cycles
+                  + Loop("check", n, 1, ops.mul.latency + 2).cycles)
         assert res.cycles == sum(lp.cycles for lp in rounds) + scalar
 
 
