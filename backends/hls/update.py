@@ -544,7 +544,8 @@ class UpdateModel:
                     linear=True))
         else:
             view = self._view(first, last, inst)
-            phases.append(Phase("hgc", False, tuple(hgc_loops(view, lt)), linear=True))
+            phases.append(Phase("hgc", False,
+                                tuple(hgc_loops(view, lt, self.options.hgc_lanes)), linear=True))
             phases.append(Phase("assemble", False, tuple(
                 Process(f"assemble{s}", "cpe", tuple(assemble_loops(tables, s, lt)))
                 for s in steps), linear=True))

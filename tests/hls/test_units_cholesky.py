@@ -44,6 +44,9 @@ def test_a_step_runs_one_round_per_cpe_pivots():
     assert len(rounds) == 3  # ⌈5 / 2⌉
     w = 7
     assert rounds[0].trip == w * (w + 1) // 2 + w + 1  # + the status word
+    # after each round but the last, the rows it leaves (2 ... 6, then 4 ... 6) back into H
+    backs = [lp.trip for lp in loops if "_back" in lp.name]
+    assert backs == [5 * 6 // 2 + 5, 3 * 4 // 2 + 3]
     # one step's pivots (5) in one round of 20 CPEs: 15 idle taps and CPEs
     (one,) = [lp for lp in cpe_step_loops(5, 2, 20, FLOAT32) if "_round" in lp.name]
     assert one.depth == 6 + 5 * 14 + sum(cpe_wait(p, 7, FLOAT32) for p in range(5)) + 30 + 2
@@ -65,8 +68,7 @@ def test_the_emitted_design_assembles_factors_and_the_cascade_stores_each_step(p
     assert sum(c.name.startswith("cpe_link") for c in plan.channels) == 3  # #CPE + 1
     assert sum(c.name.startswith("cpe_tapped") for c in plan.channels) == 2
     assert sum(c.name.startswith("cpe_recip") for c in plan.channels) == 2
-    assert {"gram", "frontal", "trailing_a", "trailing_b", "cond", "nf"} <= {
-        m.name for m in plan.memories}
+    assert {"gram", "frontal", "trailing", "cond", "nf"} <= {m.name for m in plan.memories}
     # no pass clears HF or GRAM
     loops = {lp.name for ph in plan.phases if ph.name == "assemble" for p in ph.processes
              for lp in p.loops}
@@ -86,3 +88,26 @@ def test_a_what_if_whole_matrix_design_has_its_own_phases(program, storage):
     if storage == "blocked":
         dense = plan_cost(build_plan(program, PlanOptions.of(program, hessian_storage="dense")))
         assert plan_cost(plan).cycles < dense.cycles
+
+
+def test_the_hgc_is_priced_per_block_type_as_its_panel_rows_bind_it():
+    # a Pose2 chain: the between block (5 instances) gets the hgc_lanes lanes, the prior (one
+    # instance) one lane (its row loop at II 2 TILE^2 = 32)
+    from fgc_backends.hls.units.cholesky import gram_ii, hgc_operators
+
+    program = chain(6, linear="cholesky")
+    counts = {}
+    for f in program.factors:
+        counts[f.block] = counts.get(f.block, 0) + 1
+    many = max(counts, key=counts.get)
+    one = next(b for b, n in counts.items() if n == 1)
+    assert gram_ii(program, many, 16) == 2 and gram_ii(program, many, 32) == 1
+    assert gram_ii(program, one, 16) == 32
+    ops = dict(hgc_operators(program, 16, 4))
+    assert dict(ops[many]) == {"add": 16 + 2 * 3 + 2, "mul": 16}
+    assert dict(ops[one]) == {"add": 1 + 2 * 3 + 2, "mul": 1}
+    plan = build_plan(program)
+    assert {f"hgc_{b}" for b in counts} <= {u.name for u in plan.units}
+    panels = [lp for ph in plan.phases if ph.name == "hgc" for p in ph.processes
+              if p.name == f"reduce_{many}" for lp in p.loops if lp.name == "panel"]
+    assert panels and all(lp.ii == 2 for lp in panels)

@@ -22,7 +22,7 @@
 // diagonal entries as the first round reads them. H is left all zero: every word the cascade
 // reads it clears, so the next step's assembly adds into zeros without a clearing pass (the
 // assembly writes only words the cascade reads: the upper triangle and the gradient of rows
-// 0 ... w - 1). cpe_step holds the two buffers the trailing matrix goes through between rounds.
+// 0 ... w - 1). cpe_step holds the buffer the trailing matrix goes through between rounds.
 //
 // Out:
 // - cond[c0 + i * (w + 1) + c], i < f, c >= i: the conditional, row i of the factor as the pivot
@@ -51,10 +51,11 @@
 // ---- structure (UG1399 canonical dataflow) -------------------------------------------------
 //
 // Round r (pivots p0 = r N_CPE ... min(f, p0 + N_CPE) - 1) is one DATAFLOW region, cpe_round; the
-// rounds are a sequential loop in cpe_step (round r + 1 reads what round r wrote back). Round 0
-// reads H, round r >= 1 the trailing buffer round r - 1 wrote (two, alternating): in each region
-// the feed is the only process that touches its input array and the drain the only one that
-// touches its output array:
+// rounds are a sequential loop in cpe_step around the region's one call site (two call sites
+// would be two copies of the cascade in hardware). Every round reads H; the drain writes the
+// rows a round leaves for the next into cpe_step's Tb, and a copy loop puts them back into H
+// before that round (multi-round steps only: f > N_CPE). In each region the feed is the only
+// process that touches H and the drain the only one that touches Tb:
 //
 //   cpe_feed      streams rows p0 ... w - 1 of Hin, row i from its diagonal to the gradient
 //                 (w + 1 - i words; + mu on the frontal diagonal in round 0), clearing each word
@@ -73,7 +74,8 @@
 //                 and the trailing rows into update (last round) or Hout (the next round's input);
 //                 the status into its output argument.
 //
-// cpe_step runs the rounds and checks the pivots last (sequential, 2 f iterations).
+// cpe_step runs the rounds (each but the last followed by its copy back) and checks the pivots
+// last (sequential, 2 f iterations).
 //
 // Each stream has one writer and one later reader; no process waits for a later one (the tap
 // writes recip[K] Ld cycles after the pivot while it goes on streaming: tapped[K] is deep enough
@@ -207,10 +209,15 @@ void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
     T r = T(0);
     bool bad = false;
     int i = p + 1, c = p + 1;  // the word's place once t >= trail
-    // trip words + 1, II 1, depth 2 Lm + La + 2 (+ the wait for r: cpe_wait)
+    // trip words + 1, II 1, depth 2 Lm + La + 2 (+ the wait for r: cpe_wait). h carries no
+    // recurrence: what is written into it is the input word, never a function of h, and h[k]
+    // (written at word before + k, a register: h is partitioned) is first read w - p >= 2
+    // words later (row p + 1's entry in column p + k), so no iteration reads what the one
+    // before it writes
     for (int t = 0; t <= words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=h inter false
         const T x = in.read();
         if (t >= before && t < trail) h[t - before] = x;
         if (t == before) bad = !(x > T(0));
@@ -335,6 +342,7 @@ void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typena
               int u0, bool* not_pd, bool* singular) {
     typedef typename CFG::T T;
     enum { MAX_ROUNDS = (CFG::MAX_F + CFG::N_CPE - 1) / CFG::N_CPE };
+    enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int w = f + s;
     if (f < 0 || s < 0 || w > CFG::MAX_W || f > CFG::MAX_F) {
         *not_pd = true;  // outside the configuration: nothing is computed
@@ -342,22 +350,34 @@ void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typena
         return;
     }
     bool npd = false;
-    // the trailing matrix between rounds: round r >= 1 reads the buffer round r - 1 wrote
-    T Ta[CFG::MAX_W][CFG::MAX_COLS], Tb[CFG::MAX_W][CFG::MAX_COLS];
+    // the trailing matrix between rounds: each round reads H (clearing it) and writes the
+    // rows it leaves for the next round into Tb, which go back into H before that round. One
+    // call site of the region (two would be two copies of the cascade in hardware)
+    T Tb[CFG::MAX_W][CFG::MAX_COLS];
     T dpiv[CFG::MAX_F], rmax[CFG::MAX_F];  // each pivot row's pivot and largest frontal |h|
     for (int r = 0; r * CFG::N_CPE < f; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_ROUNDS
         const int p0 = r * CFG::N_CPE;
         bool round_bad = false;
-        if (r == 0) {
-            cpe_round<CFG>(p0, w, f, mu, H, Ta, cond, c0, update, u0, dpiv, rmax, &round_bad);
-        } else if ((r & 1) == 1) {
-            cpe_round<CFG>(p0, w, f, T(0), Ta, Tb, cond, c0, update, u0, dpiv, rmax, &round_bad);
-        } else {
-            cpe_round<CFG>(p0, w, f, T(0), Tb, Ta, cond, c0, update, u0, dpiv, rmax, &round_bad);
-        }
+        cpe_round<CFG>(p0, w, f, r == 0 ? mu : T(0), H, Tb, cond, c0, update, u0, dpiv, rmax,
+                       &round_bad);
         FGC_SEQUENTIAL();
         npd = npd || round_bad;
+        // rows done ... w - 1 back into H for the next round: trip their words, II 1, depth 2
+        const int done = p0 + CFG::N_CPE;
+        const int back = done < f ? cpe_words(done, w) : 0;
+        for (int t = 0, i = done, c = done; t < back; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
+#pragma HLS PIPELINE II=1
+            H[i][c] = Tb[i][c];
+            if (c == w) {
+                ++i;
+                c = i;
+            } else {
+                ++c;
+            }
+        }
+        FGC_CYCLES("cpe_step", 0, "back", back, 1, 2);
     }
     // f == 0: no round; the update matrix is [H | g] as it came (read and cleared)
     const int words = f == 0 ? cpe_words(0, w) : 0;

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-from fgc_backends.cfamily.sparsity import TILE
+from fgc_backends.cfamily.sparsity import PANEL_TILES, TILE
 from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_dot, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
@@ -42,7 +42,8 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
                    name: str = "s") -> list[Loop]:
     """The loops of ``cpe_step`` (backends/hls/include/fgc_cpe.h) on one step's [H | g] of f
     frontal and s separator columns, as the csim counters count them: one ``Loop`` per round
-    (trip = its words + the status word at II 1, depth :func:`cpe_round_depth`), the copy of
+    (trip = its words + the status word at II 1, depth :func:`cpe_round_depth`), after each
+    round but the last the copy of the rows it leaves back into H (a word a cycle), the copy of
     [H | g] when f = 0, the singularity scale (trip f, depth Lm + Ld + 2) and the pivot check
     (trip f, depth Lm + 2). The whole matrix as one step (f = n, s = 0) is what the Cholesky
     phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
@@ -54,6 +55,10 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
         waits = sum(cpe_wait(p, w, ops) for p in pivots)
         loops.append(Loop(f"{name}_round{r}", m * (m + 1) // 2 + m + 1, 1,
                           cpe_round_depth(len(pivots), cpe, ops, waits)))
+        done = p0 + cpe
+        if done < frontal:  # the rows left for the next round back into H
+            k = w - done
+            loops.append(Loop(f"{name}_back{r}", k * (k + 1) // 2 + k, 1, 2))
     if frontal == 0:
         loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 2))
     loops.append(Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2))
@@ -61,26 +66,54 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     return loops
 
 
-def hgc_loops(program, timing: dict) -> list[Process]:
+def gram_ii(program, block: int, lanes: int) -> int:
+    """The II of block ``block``'s Gram panel rows (accel.cpp.jinja's gram_panel<..., GII>):
+    a row holds TILE x 2 TILE multiply-adds, so ``lanes`` multiply-add lanes take
+    ceil(2 TILE^2 / lanes) cycles a row; a block type with one instance (a prior: a few
+    hundred cycles an iteration at one lane) gets one lane."""
+    macs = TILE * PANEL_TILES * TILE
+    if sum(1 for f in program.factors if f.block == block) <= 1:
+        return macs
+    return -(-macs // max(1, min(lanes, macs)))
+
+
+def hgc_operators(program, lanes: int, partials: int) -> list[tuple[int, tuple]]:
+    """(block, operators) of each block type's HGC as accel.cpp.jinja's loops bind them: the
+    panel rows' multiply-add lanes (:func:`gram_ii`), the panel out's fold of ``partials``
+    partial sums (partials - 1 adders), the gradient scatter's adder and the finiteness
+    check's adder and fold (partials - 1)."""
+    macs = TILE * PANEL_TILES * TILE
+    out = []
+    for i in range(len(program.blocks)):
+        if not any(f.block == i for f in program.factors):
+            continue
+        mac = -(-macs // gram_ii(program, i, lanes))
+        out.append((i, (("add", mac + 2 * (partials - 1) + 2), ("mul", mac))))
+    return out
+
+
+def hgc_loops(program, timing: dict, lanes: int = 16) -> list[Process]:
     """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded,
-    :data:`PORTS` words a cycle, the column map, the Gram panels - one row of a panel a cycle
-    into the adder latency's interleaved partial sums of TILE x (tiles TILE) entries, a dot
-    product of its rows (:func:`kernel_dot`) - each panel's lower-triangle entries out into GRAM
-    (folded, a word a cycle), the gradient scatter from GRAM (II 1) and the finiteness check
-    over the diagonal (interleaved partial sums: the dot-product rule)), after G is zeroed. The
-    structural zeros between the panels are never written: GRAM keeps its initial zeros there,
-    so no pass clears it."""
+    :data:`PORTS` words a cycle, the column map, the Gram panels - one row of a panel every
+    :func:`gram_ii` cycles into the adder latency's interleaved partial sums of TILE x 2 TILE
+    entries, a dot product of its rows (:func:`kernel_dot`) - each panel's lower-triangle
+    entries out into GRAM (folded, a word a cycle), the gradient scatter from GRAM (II 1) and
+    the finiteness check over the diagonal (interleaved partial sums: the dot-product rule)),
+    after G is zeroed. The structural zeros between the panels are never written: GRAM keeps
+    its initial zeros there, so no pass clears it."""
     n_t = sum(v.dim for v in program.variables)
     procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
     for i, b in enumerate(program.blocks):
         m, d, padded, tiles = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         cols = d + 1
+        gii = gram_ii(program, i, lanes)
         loops = [kernel_loop("load", _ported(m * padded), "move", timing, n),
                  kernel_loop("columns", d, "fill", timing, n)]
         for k in range(tiles.count):
             rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
-            loops += [kernel_dot("panel", rows, timing, n),
+            dot = kernel_dot("panel", rows, timing, n)
+            loops += [Loop("panel", rows, max(gii, dot.ii), dot.depth, n),
                       kernel_loop("panel_out", TILE * wide * TILE, "fill", timing, n)]
         loops += [kernel_loop("scatter", d, "scatter", timing, n),
                   kernel_dot("check", cols, timing, n)]
@@ -142,12 +175,15 @@ def build(ctx) -> None:
         b = program.blocks[f.block]
         cols = sum(b.variable_dims)
         macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
-    ctx.units.append(Unit("hgc", "Hessian/gradient accumulation", opts.hgc_lanes,
-                          (("add", 1), ("mul", 1))))
     if opts.hessian_storage == "frontal":  # as emitted: reduce_<b>'s loops (hgc_loops)
-        ctx.add_phase("solve", Phase("hgc", False, tuple(hgc_loops(program, ctx.les_timing)),
-                                     linear=True))
+        # one Gram unit per block type (the template instance its reduce_<b> calls)
+        for i, unit_ops in hgc_operators(program, opts.hgc_lanes, ops.add.latency):
+            ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
+        ctx.add_phase("solve", Phase("hgc", False, tuple(
+            hgc_loops(program, ctx.les_timing, opts.hgc_lanes)), linear=True))
     else:
+        ctx.units.append(Unit("hgc", "Hessian/gradient accumulation", opts.hgc_lanes,
+                              (("add", 1), ("mul", 1))))
         ctx.add_phase("solve", Phase("hgc", False, (Process("hgc", "hgc", (
             Loop("macs", math.ceil(macs / opts.hgc_lanes), 1,
                  ops.mul.latency + ops.add.latency),)),), linear=True))
@@ -217,11 +253,10 @@ def _frontal(ctx) -> None:
     ctx.add_phase("solve", Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
                                  linear=True))
     # accel.cpp.jinja's GRAM and HF (the frontal matrix of one step at a time) and cpe_step's
-    # two trailing-matrix buffers (round r >= 1 reads the one round r - 1 wrote)
+    # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF)
     ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
     ctx.memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
-    ctx.memories.append(Memory("trailing_a", sizes["MAX_W"] * cols, ops.word_bits, 1))
-    ctx.memories.append(Memory("trailing_b", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    ctx.memories.append(Memory("trailing", sizes["MAX_W"] * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)
 
 
