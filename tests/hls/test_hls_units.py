@@ -504,7 +504,7 @@ def test_plan_prices_the_cpe_rounds(driver):
             rounds.append(Loop("round", m * (m + 1) // 2 + m + 1, 1, depth))
             if r * c + c < n:  # the rows left back into H
                 k = n - r * c - c
-                rounds.append(Loop("back", k * (k + 1) // 2 + k, 1, 2))
+                rounds.append(Loop("back", (k * (k + 1) // 2 + k + 1) // 2, 1, 2))
         scalar = (Loop("scale", n, 1, ops.mul.latency + ops.div.latency + 2).cycles
                   + Loop("check", n, 1, ops.mul.latency + 2).cycles)
         assert res.cycles == sum(lp.cycles for lp in rounds) + scalar

@@ -44,9 +44,10 @@ def test_a_step_runs_one_round_per_cpe_pivots():
     assert len(rounds) == 3  # ⌈5 / 2⌉
     w = 7
     assert rounds[0].trip == w * (w + 1) // 2 + w + 1  # + the status word
-    # after each round but the last, the rows it leaves (2 ... 6, then 4 ... 6) back into H
+    # after each round but the last, the rows it leaves (2 ... 6, then 4 ... 6) back into H,
+    # two words a cycle
     backs = [lp.trip for lp in loops if "_back" in lp.name]
-    assert backs == [5 * 6 // 2 + 5, 3 * 4 // 2 + 3]
+    assert backs == [(5 * 6 // 2 + 5 + 1) // 2, (3 * 4 // 2 + 3 + 1) // 2]
     # one step's pivots (5) in one round of 20 CPEs: 15 idle taps and CPEs
     (one,) = [lp for lp in cpe_step_loops(5, 2, 20, FLOAT32) if "_round" in lp.name]
     assert one.depth == 6 + 5 * 14 + sum(cpe_wait(p, 7, FLOAT32) for p in range(5)) + 30 + 2
@@ -104,8 +105,8 @@ def test_the_hgc_is_priced_per_block_type_as_its_panel_rows_bind_it():
     assert gram_ii(program, many, 16) == 2 and gram_ii(program, many, 32) == 1
     assert gram_ii(program, one, 16) == 32
     ops = dict(hgc_operators(program, 16, 4))
-    assert dict(ops[many]) == {"add": 16 + 2 * 3 + 2, "mul": 16}
-    assert dict(ops[one]) == {"add": 1 + 2 * 3 + 2, "mul": 1}
+    assert dict(ops[many]) == {"add": 16 + 3 * 3 + 2, "mul": 16}
+    assert dict(ops[one]) == {"add": 1 + 3 * 3 + 2, "mul": 1}
     plan = build_plan(program)
     assert {f"hgc_{b}" for b in counts} <= {u.name for u in plan.units}
     panels = [lp for ph in plan.phases if ph.name == "hgc" for p in ph.processes

@@ -363,21 +363,26 @@ void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typena
                        &round_bad);
         FGC_SEQUENTIAL();
         npd = npd || round_bad;
-        // rows done ... w - 1 back into H for the next round: trip their words, II 1, depth 2
+        // rows done ... w - 1 back into H for the next round, two words a cycle (the arrays'
+        // two ports): trip half their words, II 1, depth 2
         const int done = p0 + CFG::N_CPE;
         const int back = done < f ? cpe_words(done, w) : 0;
-        for (int t = 0, i = done, c = done; t < back; ++t) {
-#pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
+        for (int t = 0, i = done, c = done; t < back; t += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS/2
 #pragma HLS PIPELINE II=1
-            H[i][c] = Tb[i][c];
-            if (c == w) {
-                ++i;
-                c = i;
-            } else {
-                ++c;
+            for (int h = 0; h < 2; ++h) {
+                if (t + h < back) {
+                    H[i][c] = Tb[i][c];
+                    if (c == w) {
+                        ++i;
+                        c = i;
+                    } else {
+                        ++c;
+                    }
+                }
             }
         }
-        FGC_CYCLES("cpe_step", 0, "back", back, 1, 2);
+        FGC_CYCLES("cpe_step", 0, "back", (back + 1) / 2, 1, 2);
     }
     // f == 0: no round; the update matrix is [H | g] as it came (read and cleared)
     const int words = f == 0 ? cpe_words(0, w) : 0;

@@ -43,7 +43,7 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     """The loops of ``cpe_step`` (backends/hls/include/fgc_cpe.h) on one step's [H | g] of f
     frontal and s separator columns, as the csim counters count them: one ``Loop`` per round
     (trip = its words + the status word at II 1, depth :func:`cpe_round_depth`), after each
-    round but the last the copy of the rows it leaves back into H (a word a cycle), the copy of
+    round but the last the copy of the rows it leaves back into H (two words a cycle), the copy of
     [H | g] when f = 0, the singularity scale (trip f, depth Lm + Ld + 2) and the pivot check
     (trip f, depth Lm + 2). The whole matrix as one step (f = n, s = 0) is what the Cholesky
     phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
@@ -58,7 +58,7 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
         done = p0 + cpe
         if done < frontal:  # the rows left for the next round back into H
             k = w - done
-            loops.append(Loop(f"{name}_back{r}", k * (k + 1) // 2 + k, 1, 2))
+            loops.append(Loop(f"{name}_back{r}", (k * (k + 1) // 2 + k + 1) // 2, 1, 2))
     if frontal == 0:
         loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 2))
     loops.append(Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2))
@@ -79,16 +79,16 @@ def gram_ii(program, block: int, lanes: int) -> int:
 
 def hgc_operators(program, lanes: int, partials: int) -> list[tuple[int, tuple]]:
     """(block, operators) of each block type's HGC as accel.cpp.jinja's loops bind them: the
-    panel rows' multiply-add lanes (:func:`gram_ii`), the panel out's fold of ``partials``
-    partial sums (partials - 1 adders), the gradient scatter's adder and the finiteness
-    check's adder and fold (partials - 1)."""
+    panel rows' multiply-add lanes (:func:`gram_ii`), the panel out's two folds of
+    ``partials`` partial sums a cycle (2 (partials - 1) adders), the gradient scatter's adder
+    and the finiteness check's adder and fold (partials - 1)."""
     macs = TILE * PANEL_TILES * TILE
     out = []
     for i in range(len(program.blocks)):
         if not any(f.block == i for f in program.factors):
             continue
         mac = -(-macs // gram_ii(program, i, lanes))
-        out.append((i, (("add", mac + 2 * (partials - 1) + 2), ("mul", mac))))
+        out.append((i, (("add", mac + 3 * (partials - 1) + 2), ("mul", mac))))
     return out
 
 
@@ -97,8 +97,9 @@ def hgc_loops(program, timing: dict, lanes: int = 16) -> list[Process]:
     :data:`PORTS` words a cycle, the column map, the Gram panels - one row of a panel every
     :func:`gram_ii` cycles into the adder latency's interleaved partial sums of TILE x 2 TILE
     entries, a dot product of its rows (:func:`kernel_dot`) - each panel's lower-triangle
-    entries out into GRAM (folded, a word a cycle), the gradient scatter from GRAM (II 1) and
-    the finiteness check over the diagonal (interleaved partial sums: the dot-product rule)),
+    entries out into GRAM (folded, two a cycle: GRAM's two ports), the gradient scatter from
+    GRAM (II 1) and the finiteness check over the diagonal (interleaved partial sums: the
+    dot-product rule)),
     after G is zeroed. The structural zeros between the panels are never written: GRAM keeps
     its initial zeros there, so no pass clears it."""
     n_t = sum(v.dim for v in program.variables)
@@ -108,13 +109,15 @@ def hgc_loops(program, timing: dict, lanes: int = 16) -> list[Process]:
         n = sum(1 for f in program.factors if f.block == i)
         cols = d + 1
         gii = gram_ii(program, i, lanes)
+        la = timing["acc"][0]  # the adder's latency: L_PARTIALS partial sums, folded
+        fold = la * (math.ceil(math.log2(la)) if la > 1 else 0)
         loops = [kernel_loop("load", _ported(m * padded), "move", timing, n),
                  kernel_loop("columns", d, "fill", timing, n)]
         for k in range(tiles.count):
             rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
             dot = kernel_dot("panel", rows, timing, n)
             loops += [Loop("panel", rows, max(gii, dot.ii), dot.depth, n),
-                      kernel_loop("panel_out", TILE * wide * TILE, "fill", timing, n)]
+                      Loop("panel_out", TILE * wide * TILE // 2, 1, fold + 2, n)]
         loops += [kernel_loop("scatter", d, "scatter", timing, n),
                   kernel_dot("check", cols, timing, n)]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
