@@ -225,9 +225,10 @@ void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
         const bool upd = t >= trail && t < words;
         const int hi = upd ? i - p : 0, hc = upd ? c - p : 0;
         const T y = h[hc] * r;
-        const T z = h[hi] * y;
+        const T z = upd ? h[hi] * y : T(0);
+        const T o = x - z;  // a word that passes: x - 0 = x
         if (t < words) {
-            out.write(x - (upd ? z : T(0)));
+            out.write(o);
         } else {
             out.write(bad || x != T(0) ? T(1) : T(0));  // the status
         }
