@@ -122,8 +122,11 @@ static void run_cpe(int f, int s, double mu) {
     bool not_pd = false, singular = false;
     fgc_units::cpe_step<C>(H, f, s, T(mu), cond, 0, update, 0, &not_pd, &singular);
     cycles("cycles");
-    std::printf("flags %d %d\n", int(not_pd), int(singular));
     const bool fits = w <= C::MAX_W && f <= C::MAX_F;
+    int left = 0;  // words of H's upper triangle and gradient the cascade did not clear
+    for (int i = 0; fits && i < w; ++i)
+        for (int c = i; c <= w; ++c) left += H[i][c] != T(0);
+    std::printf("flags %d %d %d\n", int(not_pd), int(singular), left);
     std::vector<double> a(cond, cond + (fits ? f * (w + 1) : 0));
     std::vector<double> b(update, update + (fits ? s * (s + 1) : 0));
     print("cond", a.data(), int(a.size()));
@@ -196,7 +199,9 @@ def driver(tmp_path_factory):
 class Result:
     def __init__(self, lines):
         fields = {ln.split()[0]: ln.split()[1:] for ln in lines}
-        self.not_pd, self.singular = (bool(int(x)) for x in fields["flags"])
+        flags = [int(x) for x in fields["flags"]]
+        self.not_pd, self.singular = bool(flags[0]), bool(flags[1])
+        self.left = flags[2] if len(flags) > 2 else 0  # cpe_step: H's words not cleared
         self.cond = np.array([float(x) for x in fields["cond"]])
         self.update = np.array([float(x) for x in fields["update"]])
         self.x = np.array([float(x) for x in fields.get("x", [])])
@@ -359,6 +364,7 @@ def test_cpe_matches_numpy(driver, cpe):
     for (_, _, _, f, s, mu, h), res in zip(cases, run(driver, cases), strict=True):
         cond, upd = cpe_expected(h, f, s, mu)
         assert not res.not_pd and not res.singular
+        assert res.left == 0  # the cascade leaves H clear for the next step's assembly
         scale = max(np.abs(cond).max(), 1.0)
         # left of the diagonal nothing is written (the driver fills NaN there)
         got_cond = np.triu(res.cond.reshape(f, f + s + 1))
@@ -458,7 +464,7 @@ def test_cpe_no_frontal_columns(driver):
     """f = 0: no round runs; the update matrix is [H | g] as it came."""
     h = spd_stack(np.random.default_rng(9), 0, 4)
     (res,) = run(driver, [("cpe", 5, 0, 0, 4, 0.0, h)])
-    assert not res.not_pd and not res.singular and res.cond.size == 0
+    assert not res.not_pd and not res.singular and res.cond.size == 0 and res.left == 0
     np.testing.assert_array_equal(np.triu(res.update.reshape(4, 5)), np.triu(h))
 
 
