@@ -336,16 +336,19 @@ def paper_b(cfg: Config) -> list[Row]:
                     + " / ".join(solve(c, "blocked") for c in (lo, hi))
                     + f" ({iters} LM iterations, GTSAM's count on this problem)",
                     "the emitted design streams each elimination step's frontal matrix through "
-                    "the cascade, one word a cycle per round, steps one after another (a step's "
-                    "f pivots < #CPE leave CPEs idle, so many CPEs stop helping); the what-if "
+                    "the cascade, one word a cycle per round, steps one after another; a pivot "
+                    "no longer stalls the stream (about 14 cycles a CPE in float32), so a step "
+                    "costs about its words and CPEs beyond its f pivots only pass words on "
+                    "(docs/hls.md, 'The Cholesky cascade'); the what-if "
                     "designs stream H's whole trailing triangle (or its envelope); the paper's "
                     "iteration count and CPE pipeline are not known here"))
     cpe = build_plan(prog, PlanOptions.of(prog, cpe=lo)).unit("cpe")
     ops = build_plan(prog, PlanOptions.of(prog, cpe=lo)).ops
     per_cpe = sum(n * ops.op(k).dsp for k, n in cpe.operators) + cpe.extra_dsp
     rows.append(Row(b, "DSP per CPE", "6", str(per_cpe),
-                    "add 2 + multiply 3 (assumed DSP of the full-DSP cores) + 1 extra; divide "
-                    "and sqrt are LUT-only"))
+                    "per CPE an adder 2 + two multipliers 3 each (assumed DSP of the full-DSP "
+                    "cores: its Update loop's x - h_i (h_c / d)); its tap's divide is LUT-only "
+                    "and no square root is taken"))
     c123 = [c for c in cfg.c123 if (c, "dense") in costs] or list(cfg.c123)
     for c in c123:
         if (c, "dense") not in costs:
@@ -357,7 +360,8 @@ def paper_b(cfg: Config) -> list[Row]:
                               for c in c123),
                     "the plan's factor datapaths (one per block type, ALLOCATION-limited) and "
                     "16 HGC lanes add a fixed ~"
-                    f"{costs[c123[0], 'dense'].dsp - 6 * c123[0]} DSP to the CPEs' 6 each; "
+                    f"{costs[c123[0], 'dense'].dsp - per_cpe * c123[0]} DSP to the CPEs' "
+                    f"{per_cpe} each; "
                     "paper B's factor units are smaller"))
     c1 = costs[(c123[0], "dense")]
     c1b = costs[(c123[0], "blocked")]

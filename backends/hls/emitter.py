@@ -186,6 +186,7 @@ def accel_plan(program: Program, config: HlsConfig):
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
     from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
+    from fgc_backends.hls.units.cholesky import gram_ii
     plan = accel_plan(program, config)
     phase = {ph.name: ph for ph in plan.phases}
     loops = {p.name: p.loops[0] for name in ("factor_jacobian", "factor_cost")
@@ -200,6 +201,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                                                  config.scalar_cxx, text),
                                   loops[f"factor_{b.index}_jacobian"],
                                   loops[f"factor_{b.index}_cost"], noise[f"noise_{b.index}"]))
+        # Cholesky's HGC: the II of the block's Gram panel rows (its multiply-add lanes)
+        blocks[-1].gram_ii = gram_ii(program, b.index, plan.options.hgc_lanes)
     # the state update's datapath per variable type: the plan's operators, II and depth
     retract = {}
     for k in context["retracts"]:

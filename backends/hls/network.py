@@ -84,8 +84,8 @@ def counts(kernel: str, units: str) -> tuple[int, int]:
         if not region.streams:
             continue
         for call in region.processes:
-            if call.endswith("::run"):  # one process per unit: N_UNITS updates, N_CPE CPEs
-                procs += const["N_UNITS"] if "update" in call else const["N_CPE"]
+            if call.endswith("::run"):  # per unit: N_UNITS updates; N_CPE taps and CPEs
+                procs += const["N_UNITS"] if "update" in call else 2 * const["N_CPE"]
             else:
                 procs += 1
         streams += _stream_count(region, cfg)

@@ -544,9 +544,10 @@ class UpdateModel:
                     linear=True))
         else:
             view = self._view(first, last, inst)
-            phases.append(Phase("hgc", False, tuple(hgc_loops(view, lt)), linear=True))
+            phases.append(Phase("hgc", False,
+                                tuple(hgc_loops(view, lt, self.options.hgc_lanes)), linear=True))
             phases.append(Phase("assemble", False, tuple(
-                Process(f"assemble{s}", "cpe", tuple(assemble_loops(tables, s, self.max_w, lt)))
+                Process(f"assemble{s}", "cpe", tuple(assemble_loops(tables, s, lt)))
                 for s in steps), linear=True))
             loops = []
             for s in steps:
@@ -554,11 +555,9 @@ class UpdateModel:
                 sep = self.cdim[c + 1] if c < last else 0
                 loops += cpe_step_loops(self.cdim[c], sep, self.options.cpe, self.les,
                                         name=f"s{c}")
+            # the cascade's drain stores the conditionals and update matrices (no store pass)
             phases.append(Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
                                 linear=True))
-            phases.append(Phase("store", False, tuple(
-                Process(f"store{s}", "cpe", tuple(commit_loops(tables, s, lt, True)))
-                for s in steps), linear=True))
         unit = "backsub" if self.qr else "trisolve"
         for level, s in enumerate(reversed(steps)):
             c = first + s

@@ -283,7 +283,8 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     (region,) = read_network(header)
     assert region.processes == ("cpe_feed", "cpe_cascade::run", "cpe_drain")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
-    assert counts(kernel, header) == (len(procs), len(streams)) == (cpe + 3, cpe + 1)
+    # feed, per CPE its tap and itself, drain, back-substitution; links, tapped and recip
+    assert counts(kernel, header) == (len(procs), len(streams)) == (2 * cpe + 3, 3 * cpe + 1)
     assert procs[-1] == "backsub_set0" and "//   process backsub_set0\n" in kernel
     assert f"//   stream cpe_link{cpe} " in kernel
 

@@ -44,6 +44,7 @@ template <class TT, int N, bool STRICT>
 struct cpe_cfg {
     typedef TT T;
     static const int MAX_W = 30, MAX_COLS = 31, MAX_F = 25, N_CPE = N, PARTIALS = 12;
+    static const int N_COND = MAX_F * MAX_COLS, N_NF = MAX_W * MAX_COLS;
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;
     static constexpr double SINGULAR_EPS = STRICT ? 1e-12 : 1e-3;
 };
@@ -119,10 +120,13 @@ static void run_cpe(int f, int s, double mu) {
             if (i < C::MAX_W && c < C::MAX_COLS) H[i][c] = T(x);
         }
     bool not_pd = false, singular = false;
-    fgc_units::cpe_step<C>(H, f, s, T(mu), cond, update, &not_pd, &singular);
+    fgc_units::cpe_step<C>(H, f, s, T(mu), cond, 0, update, 0, &not_pd, &singular);
     cycles("cycles");
-    std::printf("flags %d %d\n", int(not_pd), int(singular));
     const bool fits = w <= C::MAX_W && f <= C::MAX_F;
+    int left = 0;  // words of H's upper triangle and gradient the cascade did not clear
+    for (int i = 0; fits && i < w; ++i)
+        for (int c = i; c <= w; ++c) left += H[i][c] != T(0);
+    std::printf("flags %d %d %d\n", int(not_pd), int(singular), left);
     std::vector<double> a(cond, cond + (fits ? f * (w + 1) : 0));
     std::vector<double> b(update, update + (fits ? s * (s + 1) : 0));
     print("cond", a.data(), int(a.size()));
@@ -195,7 +199,9 @@ def driver(tmp_path_factory):
 class Result:
     def __init__(self, lines):
         fields = {ln.split()[0]: ln.split()[1:] for ln in lines}
-        self.not_pd, self.singular = (bool(int(x)) for x in fields["flags"])
+        flags = [int(x) for x in fields["flags"]]
+        self.not_pd, self.singular = bool(flags[0]), bool(flags[1])
+        self.left = flags[2] if len(flags) > 2 else 0  # cpe_step: H's words not cleared
         self.cond = np.array([float(x) for x in fields["cond"]])
         self.update = np.array([float(x) for x in fields["update"]])
         self.x = np.array([float(x) for x in fields.get("x", [])])
@@ -342,7 +348,8 @@ def cpe_expected(h, f, s, mu):
     u = lf.T
     sm = np.linalg.solve(lf, full[:f, f:])
     d = np.linalg.solve(lf, g[:f])
-    cond = np.hstack([u, sm, d[:, None]])
+    # fgc_cpe.h leaves each row as its pivot left it: row i of U scaled by U_ii = sqrt(d_i)
+    cond = np.diag(np.diag(u)) @ np.hstack([u, sm, d[:, None]])
     schur = full[f:, f:] - sm.T @ sm
     gs = g[f:] - sm.T @ d
     upd = np.hstack([np.triu(schur), gs[:, None]])
@@ -357,6 +364,7 @@ def test_cpe_matches_numpy(driver, cpe):
     for (_, _, _, f, s, mu, h), res in zip(cases, run(driver, cases), strict=True):
         cond, upd = cpe_expected(h, f, s, mu)
         assert not res.not_pd and not res.singular
+        assert res.left == 0  # the cascade leaves H clear for the next step's assembly
         scale = max(np.abs(cond).max(), 1.0)
         # left of the diagonal nothing is written (the driver fills NaN there)
         got_cond = np.triu(res.cond.reshape(f, f + s + 1))
@@ -413,20 +421,26 @@ def test_cycle_counts(driver):
         return (trip - 1) * ii + depth if trip > 0 else 0
 
     # N_CPE = 20, one round (p0 = 0, w = 15, all 10 pivots): the region's slowest process plus the
-    # others' fill, then the damping and store loops
+    # others' fill, then the singularity scale and the pivot check
     w, f, s = 15, 10, 5
     words = w * (w + 1) // 2 + w
 
-    # a CPE is one stream of the words and the status word, as deep as its latency if it has a
-    # pivot; the feed and the drain are 2 deep
-    cpe_depth = ls + ld + lm + la
-    procs = ([(loop(words + 1, 1, 2), 2)]
-             + [(loop(words + 1, 1, cpe_depth), cpe_depth)] * f
-             + [(loop(words + 1, 1, 1), 1)] * (20 - f) + [(loop(words + 1, 1, 2), 2)])
+    # every process is one stream of the words and the status word: the feed La + 2 deep (mu
+    # added), a tap with a pivot 2 (its divide runs beside the stream), a CPE with a pivot
+    # 2 Lm + La + 2 plus its wait for r (Ld - its row's w + 1 - p words, if more), an idle tap
+    # or CPE 1, the drain 2
+    def cpe(p):
+        return 2 * lm + la + 2 + max(0, ld - (w + 1 - p))
+
+    procs = ([(loop(words + 1, 1, la + 2), la + 2)]
+             + [(loop(words + 1, 1, 2), 2)] * f
+             + [(loop(words + 1, 1, cpe(p)), cpe(p)) for p in range(f)]
+             + [(loop(words + 1, 1, 1), 1)] * 2 * (20 - f) + [(loop(words + 1, 1, 2), 2)])
     slow = max(range(len(procs)), key=lambda i: procs[i][0])
     region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
-    assert region == words + cpe_depth + 2 + 2 + (f - 1) * cpe_depth + (20 - f)
-    sequential = loop(f, 1, la) + loop(f, 1, 2)  # damping, pivot check
+    assert region == (words + la + 2 + 2 * f + sum(cpe(p) for p in range(f)) + 2 * (20 - f)
+                      + 2)
+    sequential = loop(f, 1, lm + ld + 2) + loop(f, 1, lm + 2)  # scale, pivot check
     p = 12  # the driver's PARTIALS
     # cond_backsub: the rows' partial sums zeroed, the f s separator terms in one II-1 loop
     # (multiply-add deep), each row's P partial sums folded (La (1 + ⌈log₂ P⌉) deep), the
@@ -450,7 +464,7 @@ def test_cpe_no_frontal_columns(driver):
     """f = 0: no round runs; the update matrix is [H | g] as it came."""
     h = spd_stack(np.random.default_rng(9), 0, 4)
     (res,) = run(driver, [("cpe", 5, 0, 0, 4, 0.0, h)])
-    assert not res.not_pd and not res.singular and res.cond.size == 0
+    assert not res.not_pd and not res.singular and res.cond.size == 0 and res.left == 0
     np.testing.assert_array_equal(np.triu(res.update.reshape(4, 5)), np.triu(h))
 
 
@@ -481,7 +495,7 @@ def test_plan_prices_the_cpe_rounds(driver):
     """plan.cpe_round_depth: a whole matrix as one step (f = n, s = 0), as plan.py's Cholesky
     phase prices it, equals the counted cycles for 1, 5 and 20 CPEs (idle CPEs included)."""
     from fgc_backends.hls.plan import Loop
-    from fgc_backends.hls.units.cholesky import cpe_round_depth
+    from fgc_backends.hls.units.cholesky import cpe_round_depth, cpe_wait
 
     ops = DRIVER_OPS
     n = 23
@@ -491,9 +505,14 @@ def test_plan_prices_the_cpe_rounds(driver):
         rounds = []
         for r in range(-(-n // c)):
             m = n - r * c
-            depth = cpe_round_depth(min(c, m), c, ops)
-            rounds.append(Loop("round", m * (m + 1) // 2 + m, 1, depth))
-        scalar = Loop("damping", n, 1, ops.add.latency).cycles + Loop("check", n, 1, 2).cycles
+            waits = sum(cpe_wait(p, n, ops) for p in range(r * c, min(n, r * c + c)))
+            depth = cpe_round_depth(min(c, m), c, ops, waits)
+            rounds.append(Loop("round", m * (m + 1) // 2 + m + 1, 1, depth))
+            if r * c + c < n:  # the rows left back into H
+                k = n - r * c - c
+                rounds.append(Loop("back", (k * (k + 1) // 2 + k + 1) // 2, 1, 2))
+        scalar = (Loop("scale", n, 1, ops.mul.latency + ops.div.latency + 2).cycles
+                  + Loop("check", n, 1, ops.mul.latency + 2).cycles)
         assert res.cycles == sum(lp.cycles for lp in rounds) + scalar
 
 

@@ -8,7 +8,12 @@ from hls_programs import chain
 
 from fgc_backends.cost.operators import FLOAT32
 from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
-from fgc_backends.hls.units.cholesky import cpe_round_depth, cpe_step_loops
+from fgc_backends.hls.units.cholesky import (
+    cpe_depth,
+    cpe_round_depth,
+    cpe_step_loops,
+    cpe_wait,
+)
 
 
 @pytest.fixture(scope="module")
@@ -16,11 +21,21 @@ def program():
     return chain(5, linear="cholesky", cpe=2)
 
 
-def test_a_round_is_as_deep_as_its_pivoting_cpes_plus_the_others_fill():
-    # float32 on the xc7z045 at 143 MHz: sqrt 15 + div 15 + mul 3 + add 4 = 37 per CPE with a
-    # pivot; 1 per idle CPE; feed 2, drain 2, status 1
-    assert cpe_round_depth(2, 3, FLOAT32) == 2 * 37 + 1 + 5
-    assert cpe_round_depth(3, 3, FLOAT32) == 3 * 37 + 5
+def test_a_round_is_as_deep_as_what_each_process_adds_to_the_stream():
+    # float32 on the xc7z045 at 143 MHz: add 4, mul 3, div 15. The feed La + 2 = 6; a CPE with
+    # a pivot its tap 2 + its Update loop 2 Lm + La + 2 = 14; an idle tap and CPE 1 each; the
+    # drain 2
+    assert cpe_depth(FLOAT32) == 14
+    assert cpe_round_depth(2, 3, FLOAT32) == 6 + 2 * 14 + 2 + 2
+    assert cpe_round_depth(3, 3, FLOAT32, waits=5) == 6 + 3 * 14 + 5 + 2
+
+
+def test_a_cpe_waits_for_its_reciprocal_only_after_a_short_row():
+    # the tap's r = 1 / d comes Ld + 2 cycles after the pivot; the CPE needs it after the
+    # pivot's row of w + 1 - p words
+    assert cpe_wait(0, 30, FLOAT32) == 0  # 31 words
+    assert cpe_wait(15, 30, FLOAT32) == 0  # 16 words, Ld = 15
+    assert cpe_wait(29, 30, FLOAT32) == 13  # 2 words
 
 
 def test_a_step_runs_one_round_per_cpe_pivots():
@@ -28,17 +43,39 @@ def test_a_step_runs_one_round_per_cpe_pivots():
     rounds = [lp for lp in loops if "_round" in lp.name]
     assert len(rounds) == 3  # ⌈5 / 2⌉
     w = 7
-    assert rounds[0].trip == w * (w + 1) // 2 + w
+    assert rounds[0].trip == w * (w + 1) // 2 + w + 1  # + the status word
+    # after each round but the last, the rows it leaves (2 ... 6, then 4 ... 6) back into H,
+    # two words a cycle
+    backs = [lp.trip for lp in loops if "_back" in lp.name]
+    assert backs == [(5 * 6 // 2 + 5 + 1) // 2, (3 * 4 // 2 + 3 + 1) // 2]
+    # one step's pivots (5) in one round of 20 CPEs: 15 idle taps and CPEs
+    (one,) = [lp for lp in cpe_step_loops(5, 2, 20, FLOAT32) if "_round" in lp.name]
+    assert one.depth == 6 + 5 * 14 + sum(cpe_wait(p, 7, FLOAT32) for p in range(5)) + 30 + 2
 
 
-def test_the_emitted_design_assembles_factors_and_stores_each_step(program):
+def test_more_cpes_than_a_steps_pivots_only_add_idle_fill():
+    few = sum(lp.cycles for lp in cpe_step_loops(15, 15, 15, FLOAT32))
+    many = sum(lp.cycles for lp in cpe_step_loops(15, 15, 80, FLOAT32))
+    assert many - few == 2 * 65
+
+
+def test_the_emitted_design_assembles_factors_and_the_cascade_stores_each_step(program):
     plan = build_plan(program)
     names = [ph.name for ph in plan.phases]
-    assert names.index("hgc") < names.index("assemble") < names.index("cholesky") \
-        < names.index("store")
+    assert names.index("hgc") < names.index("assemble") < names.index("cholesky")
+    assert "store" not in names  # the drain writes COND and NF
     assert plan.unit("cpe").instances == 2
+    assert dict(plan.unit("cpe").operators) == {"add": 1, "mul": 2, "div": 1}
     assert sum(c.name.startswith("cpe_link") for c in plan.channels) == 3  # #CPE + 1
-    assert {"gram", "frontal", "frontal_b", "cond", "nf"} <= {m.name for m in plan.memories}
+    assert sum(c.name.startswith("cpe_tapped") for c in plan.channels) == 2
+    assert sum(c.name.startswith("cpe_recip") for c in plan.channels) == 2
+    assert {"gram", "frontal", "trailing", "cond", "nf"} <= {m.name for m in plan.memories}
+    # no pass clears HF or GRAM
+    loops = {lp.name for ph in plan.phases if ph.name == "assemble" for p in ph.processes
+             for lp in p.loops}
+    loops |= {lp.name for ph in plan.phases if ph.name == "hgc" for p in ph.processes
+              if p.name.startswith("reduce_") for lp in p.loops}
+    assert loops and not {"zero", "zero_gram"} & loops
 
 
 @pytest.mark.parametrize("storage", ["dense", "blocked"])
@@ -52,3 +89,26 @@ def test_a_what_if_whole_matrix_design_has_its_own_phases(program, storage):
     if storage == "blocked":
         dense = plan_cost(build_plan(program, PlanOptions.of(program, hessian_storage="dense")))
         assert plan_cost(plan).cycles < dense.cycles
+
+
+def test_the_hgc_is_priced_per_block_type_as_its_panel_rows_bind_it():
+    # a Pose2 chain: the between block (5 instances) gets the hgc_lanes lanes, the prior (one
+    # instance) one lane (its row loop at II 2 TILE^2 = 32)
+    from fgc_backends.hls.units.cholesky import gram_ii, hgc_operators
+
+    program = chain(6, linear="cholesky")
+    counts = {}
+    for f in program.factors:
+        counts[f.block] = counts.get(f.block, 0) + 1
+    many = max(counts, key=counts.get)
+    one = next(b for b, n in counts.items() if n == 1)
+    assert gram_ii(program, many, 16) == 2 and gram_ii(program, many, 32) == 1
+    assert gram_ii(program, one, 16) == 32
+    ops = dict(hgc_operators(program, 16, 4))
+    assert dict(ops[many]) == {"add": 16 + 3 * 3 + 2, "mul": 16}
+    assert dict(ops[one]) == {"add": 1 + 3 * 3 + 2, "mul": 1}
+    plan = build_plan(program)
+    assert {f"hgc_{b}" for b in counts} <= {u.name for u in plan.units}
+    panels = [lp for ph in plan.phases if ph.name == "hgc" for p in ph.processes
+              if p.name == f"reduce_{many}" for lp in p.loops if lp.name == "panel"]
+    assert panels and all(lp.ii == 2 for lp in panels)

@@ -3,15 +3,15 @@
 // pivots a round; between rounds the trailing matrix goes back to memory.
 //
 // Fixed code, configured by a struct of constants (CFG, see cpe_config_example below); the emitted
-// design (the hls-accel part of the backend) assembles each step's [H | g] and calls cpe_step<CFG>.
+// design (fgc_eliminate.h's cholesky_eliminate) assembles each step's [H | g] and calls
+// cpe_step<CFG>.
 //
 // ---- interface ------------------------------------------------------------------------------
 //
 //   template <class CFG>
 //   void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
-//                 typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-//                 typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS],
-//                 bool* not_pd, bool* singular);
+//                 typename CFG::T cond[CFG::N_COND], int c0,
+//                 typename CFG::T update[CFG::N_NF], int u0, bool* not_pd, bool* singular);
 //
 //   and cond_backsub<CFG> (fgc_backsub.h, included) for the step's back-substitution.
 //
@@ -19,69 +19,81 @@
 // i <= c < w is the upper triangle of the frontal-and-separator Hessian (the sum of its factors'
 // Grams and its children's update matrices), H[i][w] the gradient; entries left of the diagonal
 // are not read. mu (Levenberg-Marquardt damping, 0 for Gauss-Newton) is added to the f frontal
-// diagonal entries here. H is overwritten (it is one of the cascade's two trailing-matrix
-// buffers; cpe_step holds the other).
+// diagonal entries as the first round reads them. H is left all zero: every word the cascade
+// reads it clears, so the next step's assembly adds into zeros without a clearing pass (the
+// assembly writes only words the cascade reads: the upper triangle and the gradient of rows
+// 0 ... w - 1). cpe_step holds the buffer the trailing matrix goes through between rounds.
 //
 // Out:
-// - cond: the conditional (R | S | d): rows 0 ... f - 1 of U = L^T, row-major with w + 1 columns,
-//   cond[i * (w + 1) + c], c >= i (R = U_ff upper triangular, S = L_ff^-1 H_fs, d = L_ff^-1 g_f,
-//   the forward solve L z = g riding in the cascade as the last column); left of the diagonal
-//   nothing is written (back-substitution never reads it).
-// - update: the Schur complement for the parent, s rows of s + 1 columns:
-//   update[a * (s + 1) + b] = (H_ss - S^T S)[a][b] for a <= b < s, the reduced gradient
-//   g_s - S^T d in column s (b = s); left of the diagonal nothing is written (the parent reads
-//   an update matrix's upper triangle).
+// - cond[c0 + i * (w + 1) + c], i < f, c >= i: the conditional, row i of the factor as the pivot
+//   left it: h_i = sqrt(d_i) U_i, U = L^T (R = U_ff, S, and d = L^-1 g in column w, the forward
+//   solve riding in the cascade as the last column), each row scaled by the square root of its
+//   pivot d_i = h_ii. The back-substitution R x = d - S xs solves the same system from these rows
+//   (a row and its right-hand side scaled alike), so no square root is ever taken. Left of the
+//   diagonal nothing is written (back-substitution never reads it).
+// - update[u0 + a * (s + 1) + b]: the Schur complement for the parent, s rows of s + 1 columns,
+//   (H_ss - S^T S)[a][b] for a <= b < s and the reduced gradient g_s - S^T d in column s; left of
+//   the diagonal nothing is written (the parent reads an update matrix's upper triangle).
+//   cond and update are the kernel's COND and NF: no copy after the cascade.
 // - *not_pd: a pivot (after the updates of the earlier pivots) was not > 0: not positive definite;
 //   *singular: not_pd, or a pivot |U_ii| (i < f) is not above CFG::SINGULAR_EPS * scale, scale =
-//   the largest |U_ic|, i <= c < f (the kernel's rule). Both true, with nothing computed, if
-//   w > MAX_W or f > MAX_F. cond and update are written in any case.
-// - the back-substitution R x = d - S xs is cond_backsub<CFG> (fgc_backsub.h): the trisolve
-//   unit of plan.py, sequential; R^T is never needed since L z = g ran in the cascade.
+//   the largest |U_ic|, i <= c < f (the kernel's rule, evaluated on h: U_ii^2 = d_i and
+//   |U_ic| = |h_ic| / sqrt(d_i), so d_i > eps^2 max_j (max_c |h_jc|)^2 / d_j). Both true, with
+//   nothing computed, if w > MAX_W or f > MAX_F.
 //
-// ---- arithmetic (the kernel's cholesky_frontal, kernel.cpp.jinja) -----------------------------
+// ---- arithmetic ---------------------------------------------------------------------------
 //
-// Pivot p: d = H[p][p] (must be > 0), inv = 1 / sqrt(d), U[p][c] = H[p][c] * inv (c >= p); every
-// later row i > p: H[i][c] -= U[p][i] * U[p][c] (c >= i). The kernel updates the entries of the
-// pivot's tile as (H_pi / H_pp) * H_pc, here always U_pi * U_pc: equal to rounding (~1e-15
-// relative in double), not bit for bit.
+// Pivot p: d = H[p][p] (must be > 0), r = 1 / d; row p leaves as it is (h = row p); every later
+// row i > p: H[i][c] -= h[i] * (h[c] * r) (c >= i, the gradient column included), the
+// right-looking update H - h h^T / d. The kernel's cholesky_frontal updates with U_pi U_pc, U = h
+// / sqrt(d): equal to rounding (~1e-15 relative in double), not bit for bit.
 //
 // ---- structure (UG1399 canonical dataflow) -------------------------------------------------
 //
 // Round r (pivots p0 = r N_CPE ... min(f, p0 + N_CPE) - 1) is one DATAFLOW region, cpe_round; the
-// rounds are a sequential loop in cpe_step (round r + 1 reads what round r wrote back). The
-// trailing matrix goes from round to round through two arrays, H and cpe_step's own Hb,
-// alternating with the parity of r: round r reads one (Hin, only read in the region) and writes
-// the other (Hout, only written), round r + 1 the other way round:
+// rounds are a sequential loop in cpe_step around the region's one call site (two call sites
+// would be two copies of the cascade in hardware). Every round reads H; the drain writes the
+// rows a round leaves for the next into cpe_step's Tb, and a copy loop puts them back into H
+// before that round (multi-round steps only: f > N_CPE). In each region the feed is the only
+// process that touches H and the drain the only one that touches Tb:
 //
 //   cpe_feed      streams rows p0 ... w - 1 of Hin, row i from its diagonal to the gradient
-//                 (w + 1 - i words), then a status word 0, into link[0];
-//   cpe<K>        K = 0 ... N_CPE - 1 (one process each, through cpe_cascade): reads link[K],
-//                 writes link[K + 1]. Its pivot is p = p0 + K (none if p >= f: it passes every
-//                 word). Rows p0 ... p - 1 (rows of U of the CPEs before it) pass; row p is the
-//                 first row it changes: Evaluate (check, sqrt, 1 / pivot, the row of U, kept in
-//                 the CPE and passed on); every later row is Updated entry by entry and passed on.
-//                 The status word passes ORed with its own not-positive-definite flag;
-//   cpe_drain     writes the words into Hout (rows of U and the trailing matrix); the round's
-//                 final rows also straight out: its pivots' rows of U into cond (and their frontal
-//                 entries' largest magnitude into its scale output) and, in the last round, the
-//                 trailing rows into update; the status into its output argument. It is the only
-//                 writer of Hout, cond, update, the scale and the status in the region; each
-//                 stream and array of the region has one writer and one later reader.
+//                 (w + 1 - i words; + mu on the frontal diagonal in round 0), clearing each word
+//                 it reads, then a status word 0, into link[0];
+//   cpe_tap<K>    K = 0 ... N_CPE - 1: passes link[K] on to tapped[K] and, when the word is its
+//                 CPE's pivot d, sends r = 1 / d into recip[K]: the divide runs beside the stream,
+//                 its latency hidden behind the pivot's row (the CPE needs r only after the row);
+//   cpe<K>        reads tapped[K], writes link[K + 1]. Its pivot is p = p0 + K (none if p >= f:
+//                 it passes every word). Rows p0 ... p - 1 (the rows of the CPEs before it) and
+//                 its pivot row p pass unchanged, row p kept as h; every later word is Updated,
+//                 x - h[i] (h[c] r), r read from recip[K] at the first of them. The status word
+//                 passes ORed with its own not-positive-definite flag. One pipelined loop at
+//                 II 1 over the round's words: two multipliers and an adder;
+//   cpe_drain     writes the round's final rows out: its pivots' rows into cond (each row's
+//                 pivot and its largest frontal |h| into dpiv / rmax for the singularity check),
+//                 and the trailing rows into update (last round) or Hout (the next round's input);
+//                 the status into its output argument.
 //
-// cpe_step adds mu first (sequential), runs the rounds, and checks the pivots against the largest
-// scale of the rounds last (sequential, f compares): no copy of the factor after the cascade.
+// cpe_step runs the rounds (each but the last followed by its copy back) and checks the pivots
+// last (sequential, 2 f iterations).
+//
+// Each stream has one writer and one later reader; no process waits for a later one (the tap
+// writes recip[K] Ld cycles after the pivot while it goes on streaming: tapped[K] is deep enough
+// - MAX_COLS + DIV_LAT + 2 words - that the tap never stalls on it while its CPE waits for r).
 //
 // ---- cycles -------------------------------------------------------------------------------
 //
-// Each pipelined loop states its trip count, II and depth and reports them to FGC_CYCLES
-// (fgc_cycles.h). A round streams m (m + 1) / 2 + m words, m = w - p0 (plan.py's round words);
-// a CPE counts as one stream of them, depth Ls + Ld + Lm + La (La / Lm / Ld / Ls = CFG::ADD_LAT /
-// MUL_LAT / DIV_LAT / SQRT_LAT). plan.py's cpe_round_depth / cpe_step_loops price these loops
-// (tests/test_hls_units.py checks that they equal the count).
+// A round streams m (m + 1) / 2 + m words, m = w - p0, + the status word; every process is one
+// pipelined loop of them at II 1, so the round takes its words plus the depth every process adds
+// to the stream (plan.py's cpe_round_depth): the feed La + 2, a tap 2, a CPE with a pivot
+// 2 Lm + La + 2 plus its wait for r, max(0, Ld - (w + 1 - p)) (0 when its row is at least Ld
+// words long), an idle tap or CPE 1 each, the drain 2 (La / Lm / Ld = CFG::ADD_LAT / MUL_LAT /
+// DIV_LAT). Paper B's CPE (sqrt, then divide, then its row scaled, then the update: Ls + Ld +
+// Lm + La a CPE) stalled the stream on every pivot; here a pivot costs the stream 2 Lm + La + 4.
+// Each loop reports trip, II and depth to FGC_CYCLES (fgc_cycles.h); tests/hls/test_hls_units.py
+// checks the plan's cpe_step_loops against the count.
 #ifndef FGC_CPE_H
 #define FGC_CPE_H
-
-#include <cmath>
 
 #include "fgc_backsub.h"
 #include "fgc_cycles.h"
@@ -96,6 +108,7 @@ struct cpe_config_example {
     static const int MAX_COLS = MAX_W + 1;   // + the gradient
     static const int MAX_F = 6;              // frontal columns
     static const int N_CPE = 5;              // Cholesky process elements (--cpe)
+    static const int N_COND = 512, N_NF = 512;  // the kernel's COND and NF
     static const int PARTIALS = 12;          // partial sums of cond_backsub's dots (>= ADD_LAT)
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;  // float64 (plan)
     static constexpr double SINGULAR_EPS = 1e-12;
@@ -112,19 +125,32 @@ inline int cpe_words(int first, int w) {
     return m > 0 ? m * (m + 1) / 2 + m : 0;
 }
 
-// Stream rows p0 ... w - 1 (upper triangle and gradient), then the status word.
+// The cycles CPE K waits for r = 1 / d: the tap sends r Ld + 2 cycles after the pivot passes
+// it, and the CPE needs it after the pivot's row (row words w + 1 - p).
 template <class CFG>
-void cpe_feed(const typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int w,
-              hls::stream<typename CFG::T>& out) {
+inline int cpe_wait(int p, int w) {
+    const int row = w + 1 - p;
+    return CFG::DIV_LAT > row ? CFG::DIV_LAT - row : 0;
+}
+
+// Stream rows p0 ... w - 1 (upper triangle and gradient; dmu added on the diagonal of rows
+// i < f), clearing each word read, then the status word.
+template <class CFG>
+void cpe_feed(typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int w, int f,
+              typename CFG::T dmu, hls::stream<typename CFG::T>& out) {
     typedef typename CFG::T T;
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int words = cpe_words(p0, w);
     int i = p0, c = p0;
-    // trip m (m + 1) / 2 + m, II 1, depth 2 (read, write)
+    // trip m (m + 1) / 2 + m, II 1, depth La + 2 (read, add, write); each word read then cleared
+    // (one read and one write a cycle: the two ports), a word no other iteration touches
     for (int t = 0; t < words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
-        out.write(Hin[i][c]);
+#pragma HLS DEPENDENCE variable=Hin inter false
+        const T x = Hin[i][c];
+        Hin[i][c] = T(0);
+        out.write(x + (c == i && i < f ? dmu : T(0)));
         if (c == w) {
             ++i;
             c = i;
@@ -133,13 +159,34 @@ void cpe_feed(const typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int 
         }
     }
     out.write(T(0));  // status: nothing wrong upstream
-    FGC_CYCLES("cpe_feed", 0, "rows", words + 1, 1, 2);
+    FGC_CYCLES("cpe_feed", 0, "rows", words + 1, 1, CFG::ADD_LAT + 2);
+}
+
+// Tap K: the stream on to CPE K, and 1 / (its pivot) beside it.
+template <class CFG, int K>
+void cpe_tap(int p0, int w, int f, hls::stream<typename CFG::T>& in,
+             hls::stream<typename CFG::T>& out, hls::stream<typename CFG::T>& recip) {
+    typedef typename CFG::T T;
+    enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
+    const int p = p0 + K;
+    const int words = cpe_words(p0, w);
+    const int at = p < f ? words - cpe_words(p, w) : -1;  // the pivot's word, -1: no pivot
+    // trip words + 1, II 1; the words pass in 2 cycles (read, write), r leaves Ld + 2 cycles
+    // after the pivot (the divide's latency, beside the stream)
+    for (int t = 0; t <= words; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
+#pragma HLS PIPELINE II=1
+        const T x = in.read();
+        out.write(x);
+        if (t == at) recip.write(T(1) / x);
+    }
+    FGC_CYCLES("cpe_tap", K, at < 0 ? "pass" : "stream", words + 1, 1, at < 0 ? 1 : 2);
 }
 
 // CPE K of the cascade for the round starting at pivot p0.
 template <class CFG, int K>
 void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
-         hls::stream<typename CFG::T>& out) {
+         hls::stream<typename CFG::T>& recip, hls::stream<typename CFG::T>& out) {
     typedef typename CFG::T T;
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int p = p0 + K;
@@ -154,79 +201,80 @@ void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
         FGC_CYCLES("cpe", K, "pass", words + 1, 1, 1);
         return;
     }
-    const int before = words - cpe_words(p, w);  // rows p0 ... p - 1
-    // rows of U from the CPEs before: trip before, II 1, depth 1 (this and the next two loops
-    // are priced together as the CPE's one stream, see the count at the end)
-    for (int t = 0; t < before; ++t) {
+    const int before = words - cpe_words(p, w);  // rows p0 ... p - 1 pass
+    const int row = w + 1 - p;                   // then the pivot's row, kept as h
+    const int trail = before + row;              // then the later rows, Updated
+    T h[CFG::MAX_COLS];  // row p, h[c - p]
+#pragma HLS ARRAY_PARTITION variable=h complete
+    T r = T(0);
+    bool bad = false;
+    int i = p + 1, c = p + 1;  // the word's place once t >= trail
+    // trip words + 1, II 1, depth 2 Lm + La + 2 (+ the wait for r: cpe_wait). h carries no
+    // recurrence: what is written into it is the input word, never a function of h, and h[k]
+    // (written at word before + k, a register: h is partitioned) is first read w - p >= 2
+    // words later (row p + 1's entry in column p + k), so no iteration reads what the one
+    // before it writes
+    for (int t = 0; t <= words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
-        out.write(in.read());
-    }
-    // Evaluate: the pivot, its square root and reciprocal (Ls + Ld, the stream stalls)
-    T u[CFG::MAX_COLS];  // row p of U, u[c - p]
-    const T d = in.read();
-    const bool bad = !(d > T(0));
-    const T inv = T(1) / std::sqrt(d);
-    u[0] = d * inv;
-    out.write(u[0]);
-    // the rest of row p of U: trip w - p, II 1, depth Lm (after the Evaluate's Ls + Ld)
-    for (int c = p + 1; c <= w; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
-#pragma HLS PIPELINE II=1
-        const T x = in.read() * inv;
-        u[c - p] = x;
-        out.write(x);
-    }
-    // Update the later rows entry by entry: trip (w-p-1)(w-p)/2 + w-p-1, II 1, depth Lm + La
-    const int after = cpe_words(p + 1, w);
-    int i = p + 1, c = p + 1;
-    for (int t = 0; t < after; ++t) {
-#pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
-#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=h inter false
         const T x = in.read();
-        out.write(x - u[i - p] * u[c - p]);
-        if (c == w) {
-            ++i;
-            c = i;
+        if (t >= before && t < trail) h[t - before] = x;
+        if (t == before) bad = !(x > T(0));
+        if (t == trail) r = recip.read();  // the status word when row p is the last
+        const bool upd = t >= trail && t < words;
+        const int hi = upd ? i - p : 0, hc = upd ? c - p : 0;
+        const T y = h[hc] * r;
+        const T z = upd ? h[hi] * y : T(0);
+        const T o = x - z;  // a word that passes: x - 0 = x
+        if (t < words) {
+            out.write(o);
         } else {
-            ++c;
+            out.write(bad || x != T(0) ? T(1) : T(0));  // the status
+        }
+        if (upd) {
+            if (c == w) {
+                ++i;
+                c = i;
+            } else {
+                ++c;
+            }
         }
     }
-    const T status = in.read();
-    out.write(bad || status != T(0) ? T(1) : T(0));
-    // The four loops are one stream of words + 1 words at a word a cycle whose only stall is the
-    // Evaluate: counted as one loop, trip words + 1, II 1, depth Ls + Ld + Lm + La (the CPE's
-    // latency, what it adds to the cascade; plan.py's cpe_depth).
     FGC_CYCLES("cpe", K, "stream", words + 1, 1,
-               CFG::SQRT_LAT + CFG::DIV_LAT + CFG::MUL_LAT + CFG::ADD_LAT);
+               2 * CFG::MUL_LAT + CFG::ADD_LAT + 2 + cpe_wait<CFG>(p, w));
 }
 
-// The N_CPE processes, K = 0 ... N_CPE - 1, as separate calls in the region.
+// The N_CPE taps and CPEs, K = 0 ... N_CPE - 1, as separate calls in the region.
 template <class CFG, int K, bool END = (K == CFG::N_CPE)>
 struct cpe_cascade {
-    static void run(int p0, int w, int f, hls::stream<typename CFG::T> link[CFG::N_CPE + 1]) {
+    static void run(int p0, int w, int f, hls::stream<typename CFG::T> link[CFG::N_CPE + 1],
+                    hls::stream<typename CFG::T> tapped[CFG::N_CPE],
+                    hls::stream<typename CFG::T> recip[CFG::N_CPE]) {
 #pragma HLS INLINE
-        cpe<CFG, K>(p0, w, f, link[K], link[K + 1]);
-        cpe_cascade<CFG, K + 1>::run(p0, w, f, link);
+        cpe_tap<CFG, K>(p0, w, f, link[K], tapped[K], recip[K]);
+        cpe<CFG, K>(p0, w, f, tapped[K], recip[K], link[K + 1]);
+        cpe_cascade<CFG, K + 1>::run(p0, w, f, link, tapped, recip);
     }
 };
 
 template <class CFG, int K>
 struct cpe_cascade<CFG, K, true> {
-    static void run(int, int, int, hls::stream<typename CFG::T>*) {
+    static void run(int, int, int, hls::stream<typename CFG::T>*, hls::stream<typename CFG::T>*,
+                    hls::stream<typename CFG::T>*) {
 #pragma HLS INLINE
     }
 };
 
-// Write the round's words into Hout, the final ones also out: the rows of U of the round's
-// pivots into cond (their frontal entries' largest magnitude into *scale) and, in the last round,
-// the trailing rows into update; the status into *bad.
+// Write the round's words out: the rows of its pivots into cond (each row's pivot into dpiv and
+// its largest frontal |h| into rmax), the trailing rows into update (last round) or Hout; the
+// status into *bad.
 template <class CFG>
 void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
                typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
-               typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-               typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS], typename CFG::T* scale,
-               bool* bad) {
+               typename CFG::T cond[CFG::N_COND], int c0,
+               typename CFG::T update[CFG::N_NF], int u0,
+               typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F], bool* bad) {
     typedef typename CFG::T T;
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int words = cpe_words(p0, w);
@@ -240,13 +288,16 @@ void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
         const T x = in.read();
-        Hout[i][c] = x;
         if (i < done) {
-            cond[i * cols + c] = x;
+            cond[c0 + i * cols + c] = x;
             const T mag = c < f ? cpe_abs(x) : T(0);
-            big = mag > big ? mag : big;
-        } else if (last && i >= f) {
-            update[(i - f) * (s + 1) + (c - f)] = x;
+            big = c == i || mag > big ? mag : big;  // the row's largest so far
+            if (c == i) dpiv[i] = x;
+            if (c == w) rmax[i] = big;
+        } else if (last) {
+            update[u0 + (i - f) * (s + 1) + (c - f)] = x;
+        } else {
+            Hout[i][c] = x;
         }
         if (c == w) {
             ++i;
@@ -255,75 +306,93 @@ void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
             ++c;
         }
     }
-    *scale = big;
     *bad = in.read() != T(0);
     FGC_CYCLES("cpe_drain", 0, "rows", words + 1, 1, 2);
 }
 
 // One round of N_CPE pivots from p0: the DATAFLOW region (see the top of the file).
 template <class CFG>
-void cpe_round(int p0, int w, int f, const typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS],
+void cpe_round(int p0, int w, int f, typename CFG::T dmu,
+               typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
-               typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-               typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS], typename CFG::T* scale,
+               typename CFG::T cond[CFG::N_COND], int c0, typename CFG::T update[CFG::N_NF],
+               int u0, typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F],
                bool* bad) {
 #pragma HLS DATAFLOW
-    enum { LINK_DEPTH = CFG::MAX_W };  // plan.py's cpe_fifo channels: depth n
+    enum { LINK_DEPTH = CFG::MAX_W, TAP_DEPTH = CFG::MAX_COLS + CFG::DIV_LAT + 2 };
     hls::stream<typename CFG::T> link[CFG::N_CPE + 1];
+    hls::stream<typename CFG::T> tapped[CFG::N_CPE];
+    hls::stream<typename CFG::T> recip[CFG::N_CPE];
 #pragma HLS STREAM variable=link depth=LINK_DEPTH
+#pragma HLS STREAM variable=tapped depth=TAP_DEPTH
+#pragma HLS STREAM variable=recip depth=2
     FGC_REGION("cpe_round");
-    cpe_feed<CFG>(Hin, p0, w, link[0]);
-    cpe_cascade<CFG, 0>::run(p0, w, f, link);
-    cpe_drain<CFG>(link[CFG::N_CPE], p0, w, f, Hout, cond, update, scale, bad);
+    cpe_feed<CFG>(Hin, p0, w, f, dmu, link[0]);
+    cpe_cascade<CFG, 0>::run(p0, w, f, link, tapped, recip);
+    cpe_drain<CFG>(link[CFG::N_CPE], p0, w, f, Hout, cond, c0, update, u0, dpiv, rmax, bad);
     FGC_DRAINED(link, CFG::N_CPE + 1);  // csim only (fgc_cycles.h)
+    FGC_DRAINED(tapped, CFG::N_CPE);
+    FGC_DRAINED(recip, CFG::N_CPE);
 }
 
 // ---- the step ---------------------------------------------------------------------------------
 
 template <class CFG>
 void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
-              typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-              typename CFG::T update[CFG::MAX_W * CFG::MAX_COLS], bool* not_pd, bool* singular) {
+              typename CFG::T cond[CFG::N_COND], int c0, typename CFG::T update[CFG::N_NF],
+              int u0, bool* not_pd, bool* singular) {
     typedef typename CFG::T T;
     enum { MAX_ROUNDS = (CFG::MAX_F + CFG::N_CPE - 1) / CFG::N_CPE };
+    enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int w = f + s;
     if (f < 0 || s < 0 || w > CFG::MAX_W || f > CFG::MAX_F) {
         *not_pd = true;  // outside the configuration: nothing is computed
         *singular = true;
         return;
     }
-    // mu on the frontal diagonal: trip f, II 1, depth La
-    for (int j = 0; j < f; ++j) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-#pragma HLS PIPELINE II=1
-        H[j][j] += mu;
-    }
-    FGC_CYCLES("cpe_step", 0, "damping", f, 1, CFG::ADD_LAT);
     bool npd = false;
-    T scale = T(0);
-    // the trailing matrix's second buffer: round r reads H and writes Hb for even r, the other
-    // way round for odd r (a ping-pong between rounds, no array read and written in one)
-    T Hb[CFG::MAX_W][CFG::MAX_COLS];
+    // the trailing matrix between rounds: each round reads H (clearing it) and writes the
+    // rows it leaves for the next round into Tb, which go back into H before that round. One
+    // call site of the region (two would be two copies of the cascade in hardware)
+    T Tb[CFG::MAX_W][CFG::MAX_COLS];
+    T dpiv[CFG::MAX_F], rmax[CFG::MAX_F];  // each pivot row's pivot and largest frontal |h|
     for (int r = 0; r * CFG::N_CPE < f; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_ROUNDS
         const int p0 = r * CFG::N_CPE;
         bool round_bad = false;
-        T round_scale = T(0);
-        if ((r & 1) == 0) {
-            cpe_round<CFG>(p0, w, f, H, Hb, cond, update, &round_scale, &round_bad);
-        } else {
-            cpe_round<CFG>(p0, w, f, Hb, H, cond, update, &round_scale, &round_bad);
-        }
+        cpe_round<CFG>(p0, w, f, r == 0 ? mu : T(0), H, Tb, cond, c0, update, u0, dpiv, rmax,
+                       &round_bad);
         FGC_SEQUENTIAL();
         npd = npd || round_bad;
-        scale = round_scale > scale ? round_scale : scale;
+        // rows done ... w - 1 back into H for the next round, two words a cycle (the arrays'
+        // two ports): trip half their words, II 1, depth 2
+        const int done = p0 + CFG::N_CPE;
+        const int back = done < f ? cpe_words(done, w) : 0;
+        for (int t = 0, i = done, c = done; t < back; t += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS/2
+#pragma HLS PIPELINE II=1
+            for (int h = 0; h < 2; ++h) {
+                if (t + h < back) {
+                    H[i][c] = Tb[i][c];
+                    if (c == w) {
+                        ++i;
+                        c = i;
+                    } else {
+                        ++c;
+                    }
+                }
+            }
+        }
+        FGC_CYCLES("cpe_step", 0, "back", (back + 1) / 2, 1, 2);
     }
-    // f == 0: no round; the update matrix is [H | g] as it came
+    // f == 0: no round; the update matrix is [H | g] as it came (read and cleared)
     const int words = f == 0 ? cpe_words(0, w) : 0;
     for (int t = 0, i = 0, c = 0; t < words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
 #pragma HLS PIPELINE II=1
-        update[i * (w + 1) + c] = H[i][c];
+#pragma HLS DEPENDENCE variable=H inter false
+        update[u0 + i * (w + 1) + c] = H[i][c];
+        H[i][c] = T(0);
         if (c == w) {
             ++i;
             c = i;
@@ -331,15 +400,26 @@ void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typena
             ++c;
         }
     }
-    FGC_CYCLES("cpe_step", 0, "no_pivots", words, 1, 1);
-    // the pivots against the scale: trip f, II 1, depth 2 (read, compare)
+    FGC_CYCLES("cpe_step", 0, "no_pivots", words, 1, 2);
+    // the scale: max_i rmax_i^2 / d_i (= the largest |U_ic|, squared): trip f, II 1,
+    // depth Lm + Ld + 2 (read, multiply, divide, compare)
+    T scale2 = T(0);
+    for (int i = 0; i < f; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
+#pragma HLS PIPELINE II=1
+        const T q = rmax[i] * rmax[i] / dpiv[i];
+        scale2 = q > scale2 ? q : scale2;
+    }
+    FGC_CYCLES("cpe_step", 0, "scale", f, 1, CFG::MUL_LAT + CFG::DIV_LAT + 2);
+    // the pivots against it: d_i > eps^2 scale^2 (U_ii > eps scale): trip f, II 1, depth 2
+    const T floor2 = T(CFG::SINGULAR_EPS * CFG::SINGULAR_EPS) * scale2;
     bool tiny = false;
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
-        if (!(cpe_abs(cond[i * (w + 1) + i]) > CFG::SINGULAR_EPS * scale)) tiny = true;
+        if (!(dpiv[i] > floor2)) tiny = true;
     }
-    FGC_CYCLES("cpe_step", 0, "pivot_check", f, 1, 2);
+    FGC_CYCLES("cpe_step", 0, "pivot_check", f, 1, CFG::MUL_LAT + 2);
     *not_pd = npd;
     *singular = npd || tiny;
 }

@@ -3,8 +3,9 @@
 // goes. Per step s of the schedule:
 //
 //   Cholesky: bool cholesky_eliminate<CFG>(s, mu)  [H | g] assembled from the step's factors'
-//             Grams and its children's update matrices, factored by the cascade, the
-//             conditional into COND and the update matrix into NF; false if singular.
+//             Grams and its children's update matrices into HF (which the cascade left
+//             zero), factored by the cascade, whose drain writes the conditional into COND
+//             and the update matrix into NF; false if singular.
 //             bool cholesky_eliminate_all<CFG>(mu)  every step in schedule order.
 //   QR:       void qr_stack<CFG>(s, root_mu, bank)  the step's rows into a unit set's banks
 //             (its factors' [A | b], its children's new factors, sqrt(mu) I if CFG::LM).
@@ -18,7 +19,7 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_NF_ROWS, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP,
 // FACTOR_A_OFF, FACTOR_GRAM_OFF, LEVEL_STEPS, N_STEPS (tables); AB, GRAM, COND, NF, PORTS and, for
-// Cholesky, HF, CONDBUF, UPDBUF (memories). CFG is the kernel's LesConfig: T (the linear
+// Cholesky, HF (memories). CFG is the kernel's LesConfig: T (the linear
 // solver's scalar), the unit's sizes, LM, the tables' largest trip counts (MAX_STEP_FACTORS,
 // MAX_CHILDREN, TRIP_*) and the (II, depth) of the plan's fill, move and scatter loops; cycles
 // to FGC_CYCLES as the plan prices them. Define FGC_ELIMINATE_CHOLESKY or FGC_ELIMINATE_QR
@@ -30,17 +31,10 @@
 // Step s: assemble, factor, store. False if not positive definite or a pivot is too small.
 template <class CFG>
 bool cholesky_eliminate(int s, typename CFG::T mu) {
-    typedef typename CFG::T T;
     FGC_PHASE("assemble");
     const int w = STEP_W[s], f = STEP_F[s];
-    for (int i = 0; i < w; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
-        for (int c = 0; c < CFG::MAX_W + 1; ++c) {
-#pragma HLS PIPELINE II=1
-            HF[i][c] = T(0);
-        }
-    }
-    FGC_CYCLES("assemble", 0, "zero", w * (CFG::MAX_W + 1), CFG::FILL_II, CFG::FILL_DEPTH);
+    // HF is all zero here: the cascade clears every word it reads (fgc_cpe.h's cpe_feed), and
+    // these loops write only words it reads (the upper triangle and the gradient of rows < w)
     // each factor's packed Gram (H's lower triangle, then its gradient row) and each child's
     // update matrix (upper triangle and reduced g), one entry a cycle += into HF: within one
     // loop every entry goes to its own address (the column maps are one-to-one), so no
@@ -93,31 +87,10 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
     }
     bool not_pd = false, singular = false;
     FGC_PHASE("cholesky");
-    fgc_units::cpe_step<CFG>(HF, f, w - f, mu, CONDBUF, UPDBUF, &not_pd, &singular);
-    if (singular) return false;
-    FGC_PHASE("store");
-    const int c0 = STEP_COND_OFF[s];
-    const int nc = f * (w + 1);
-    for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
-#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_COND
-#pragma HLS PIPELINE II=1
-        for (int h = 0; h < PORTS; ++h) {
-            if (i + h < nc) COND[c0 + i + h] = CONDBUF[i + h];
-        }
-    }
-    FGC_CYCLES("store", 0, "cond", (nc + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);
-    const int sw = w - f;
-    const int u0 = STEP_NF_OFF[s];
-    const int nu = sw * (sw + 1);
-    for (int i = 0; i < nu; i += PORTS) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_UPDATE
-#pragma HLS PIPELINE II=1
-        for (int h = 0; h < PORTS; ++h) {
-            if (i + h < nu) NF[u0 + i + h] = UPDBUF[i + h];
-        }
-    }
-    FGC_CYCLES("store", 0, "nf", (nu + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);
-    return true;
+    // the conditional straight into COND and the update matrix into NF (the cascade's drain)
+    fgc_units::cpe_step<CFG>(HF, f, w - f, mu, COND, STEP_COND_OFF[s], NF, STEP_NF_OFF[s],
+                             &not_pd, &singular);
+    return !singular;
 }
 
 // Eliminate every step in schedule order, level by level.

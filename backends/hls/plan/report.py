@@ -68,7 +68,8 @@ def backsub_units(plan: AcceleratorPlan) -> int:
 def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Channel, ...]]:
     """The dataflow processes and streams the emitter prints for ``plan``: the linear solver's
     (the unit headers' regions: per QR unit set broadcast, qr_finish, n_u Update units,
-    Evaluate and collect; for Cholesky the feed, the #CPE process elements and the drain),
+    Evaluate and collect; for Cholesky the feed, per process element its tap and CPE, and the
+    drain),
     then back-substitution's (the kernel's ``backsub_level`` region: one ``backsub_set<u>``
     per unit, :func:`backsub_units`, side by side). Streams are the plan's stream channels;
     the back-substitution units have none (each reads its own conditional and separator
@@ -80,7 +81,8 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
             *(f"qr{s}_update{u}" for u in range(plan.options.units)),
             f"qr{s}_evaluate", f"qr{s}_collect"))
     else:
-        procs = ("cpe_feed", *(f"cpe{i}" for i in range(plan.options.cpe)), "cpe_drain")
+        procs = ("cpe_feed", *(p for i in range(plan.options.cpe)
+                               for p in (f"cpe_tap{i}", f"cpe{i}")), "cpe_drain")
     procs += tuple(f"backsub_set{u}" for u in range(backsub_units(plan)))
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
 

@@ -7,78 +7,130 @@ from __future__ import annotations
 
 import math
 
-from fgc_backends.cfamily.sparsity import TILE
+from fgc_backends.cfamily.sparsity import PANEL_TILES, TILE
 from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_dot, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.memories import solver_memories
-from fgc_backends.hls.units.qr import commit_loops
 from fgc_backends.hls.units.spec import UnitSpec
 
 
-def cpe_round_depth(active: int, cpe: int, ops: OperatorTable) -> int:
+def cpe_depth(ops: OperatorTable) -> int:
+    """What a CPE with a pivot adds to its round's stream (backends/hls/include/fgc_cpe.h): its
+    tap 2 (read, write; the divide 1 / d runs beside the stream) and its Update loop
+    2 Lm + La + 2 (h[c] r, times h[i], subtracted; read, write)."""
+    return 2 + 2 * ops.mul.latency + ops.add.latency + 2
+
+
+def cpe_wait(p: int, w: int, ops: OperatorTable) -> int:
+    """The cycles the CPE of pivot p waits for r = 1 / d (fgc_cpe.h's cpe_wait): the tap sends
+    it Ld + 2 cycles after the pivot, the CPE needs it after the pivot's row of w + 1 - p
+    words."""
+    return max(0, ops.div.latency - (w + 1 - p))
+
+
+def cpe_round_depth(active: int, cpe: int, ops: OperatorTable, waits: int = 0) -> int:
     """Depth of one ``cpe_round`` (backends/hls/include/fgc_cpe.h) as a loop of trip = its words
-    at II 1: the region's slowest process is a CPE with a pivot (words + 1 words, its latency
-    Ls + Ld + Lm + La deep), the others add their fill: each other CPE with a pivot its latency,
-    each idle CPE 1, the feed and the drain 2 each; + 1 for the status word."""
-    cpe_depth = ops.sqrt.latency + ops.div.latency + ops.mul.latency + ops.add.latency
-    return active * cpe_depth + (cpe - active) + 2 + 2 + 1
+    + 1 (the status word) at II 1: every process of the region is one pipelined loop of those
+    words, so the region takes the words plus what each process adds to the stream: the feed
+    La + 2 (mu added on the diagonal), each CPE with a pivot :func:`cpe_depth` (+ ``waits``,
+    the sum of their :func:`cpe_wait`), each idle tap and CPE 1, the drain 2."""
+    return ops.add.latency + 2 + active * cpe_depth(ops) + waits + 2 * (cpe - active) + 2
 
 
 def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
                    name: str = "s") -> list[Loop]:
     """The loops of ``cpe_step`` (backends/hls/include/fgc_cpe.h) on one step's [H | g] of f
-    frontal and s separator columns, as the csim counters count them: mu on the diagonal, one
-    ``Loop`` per round (trip = its words at II 1, depth :func:`cpe_round_depth`), the copy of
-    [H | g] when f = 0, the pivot check. The whole matrix as one step (f = n, s = 0) is what the
-    Cholesky phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
+    frontal and s separator columns, as the csim counters count them: one ``Loop`` per round
+    (trip = its words + the status word at II 1, depth :func:`cpe_round_depth`), after each
+    round but the last the copy of the rows it leaves back into H (two words a cycle), the copy of
+    [H | g] when f = 0, the singularity scale (trip f, depth Lm + Ld + 2) and the pivot check
+    (trip f, depth Lm + 2). The whole matrix as one step (f = n, s = 0) is what the Cholesky
+    phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
     w = frontal + separator
-    loops = [Loop(f"{name}_damping", frontal, 1, ops.add.latency)]
+    loops = []
     for r, p0 in enumerate(range(0, frontal, cpe)):
         m = w - p0
-        loops.append(Loop(f"{name}_round{r}", m * (m + 1) // 2 + m, 1,
-                          cpe_round_depth(min(cpe, frontal - p0), cpe, ops)))
+        pivots = range(p0, min(frontal, p0 + cpe))
+        waits = sum(cpe_wait(p, w, ops) for p in pivots)
+        loops.append(Loop(f"{name}_round{r}", m * (m + 1) // 2 + m + 1, 1,
+                          cpe_round_depth(len(pivots), cpe, ops, waits)))
+        done = p0 + cpe
+        if done < frontal:  # the rows left for the next round back into H
+            k = w - done
+            loops.append(Loop(f"{name}_back{r}", (k * (k + 1) // 2 + k + 1) // 2, 1, 2))
     if frontal == 0:
-        loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 1))
-    loops.append(Loop(f"{name}_pivot_check", frontal, 1, 2))
+        loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 2))
+    loops.append(Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2))
+    loops.append(Loop(f"{name}_pivot_check", frontal, 1, ops.mul.latency + 2))
     return loops
 
 
-def hgc_loops(program, timing: dict) -> list[Process]:
+def gram_ii(program, block: int, lanes: int) -> int:
+    """The II of block ``block``'s Gram panel rows (accel.cpp.jinja's gram_panel<..., GII>):
+    a row holds TILE x 2 TILE multiply-adds, so ``lanes`` multiply-add lanes take
+    ceil(2 TILE^2 / lanes) cycles a row; a block type with one instance (a prior: a few
+    hundred cycles an iteration at one lane) gets one lane."""
+    macs = TILE * PANEL_TILES * TILE
+    if sum(1 for f in program.factors if f.block == block) <= 1:
+        return macs
+    return -(-macs // max(1, min(lanes, macs)))
+
+
+def hgc_operators(program, lanes: int, partials: int) -> list[tuple[int, tuple]]:
+    """(block, operators) of each block type's HGC as accel.cpp.jinja's loops bind them: the
+    panel rows' multiply-add lanes (:func:`gram_ii`), the panel out's two folds of
+    ``partials`` partial sums a cycle (2 (partials - 1) adders), the gradient scatter's adder
+    and the finiteness check's adder and fold (partials - 1)."""
+    macs = TILE * PANEL_TILES * TILE
+    out = []
+    for i in range(len(program.blocks)):
+        if not any(f.block == i for f in program.factors):
+            continue
+        mac = -(-macs // gram_ii(program, i, lanes))
+        out.append((i, (("add", mac + 3 * (partials - 1) + 2), ("mul", mac))))
+    return out
+
+
+def hgc_loops(program, timing: dict, lanes: int = 16) -> list[Process]:
     """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded,
-    :data:`PORTS` words a cycle, the column map, its packed Gram in GRAM zeroed, the Gram
-    panels - one row of a panel a cycle into the adder latency's interleaved partial sums of
-    TILE x (tiles TILE) entries, a dot product of its rows (:func:`kernel_dot`) - each panel's
-    lower-triangle entries out into GRAM (folded, a word a cycle), the gradient scatter from
+    :data:`PORTS` words a cycle, the column map, the Gram panels - one row of a panel every
+    :func:`gram_ii` cycles into the adder latency's interleaved partial sums of TILE x 2 TILE
+    entries, a dot product of its rows (:func:`kernel_dot`) - each panel's lower-triangle
+    entries out into GRAM (folded, two a cycle: GRAM's two ports), the gradient scatter from
     GRAM (II 1) and the finiteness check over the diagonal (interleaved partial sums: the
-    dot-product rule)), after G is zeroed."""
+    dot-product rule)),
+    after G is zeroed. The structural zeros between the panels are never written: GRAM keeps
+    its initial zeros there, so no pass clears it."""
     n_t = sum(v.dim for v in program.variables)
     procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
     for i, b in enumerate(program.blocks):
         m, d, padded, tiles = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         cols = d + 1
+        gii = gram_ii(program, i, lanes)
+        la = timing["acc"][0]  # the adder's latency: L_PARTIALS partial sums, folded
+        fold = la * (math.ceil(math.log2(la)) if la > 1 else 0)
         loops = [kernel_loop("load", _ported(m * padded), "move", timing, n),
-                 kernel_loop("columns", d, "fill", timing, n),
-                 kernel_loop("zero_gram", cols * (cols + 1) // 2, "fill", timing, n)]
+                 kernel_loop("columns", d, "fill", timing, n)]
         for k in range(tiles.count):
             rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
-            loops += [kernel_dot("panel", rows, timing, n),
-                      kernel_loop("panel_out", TILE * wide * TILE, "fill", timing, n)]
+            dot = kernel_dot("panel", rows, timing, n)
+            loops += [Loop("panel", rows, max(gii, dot.ii), dot.depth, n),
+                      Loop("panel_out", TILE * wide * TILE // 2, 1, fold + 2, n)]
         loops += [kernel_loop("scatter", d, "scatter", timing, n),
                   kernel_dot("check", cols, timing, n)]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
 
 
-def assemble_loops(tables: dict, s: int, max_w: int, timing: dict) -> list[Loop]:
-    """Cholesky's eliminate(): step s's [H | g] zeroed (MAX_W + 1 words a row, a word a cycle),
-    then per factor its packed Gram's lower triangle and gradient row (d (d + 1) / 2 + d
-    entries), per child its update matrix's upper triangle and reduced g (s (s + 1) / 2 + s),
-    each one loop of ``+=`` into the table-addressed frontal matrix whose entries all go to
-    different addresses (``scatter``: II 1)."""
-    w = tables["STEP_W"][s]
-    loops = [kernel_loop("zero", w * (max_w + 1), "fill", timing)]
+def assemble_loops(tables: dict, s: int, timing: dict) -> list[Loop]:
+    """Cholesky's eliminate(): into step s's [H | g] (all zero: the cascade clears every word
+    it reads, so no clearing pass), per factor its packed Gram's lower triangle and gradient
+    row (d (d + 1) / 2 + d entries), per child its update matrix's upper triangle and reduced g
+    (s (s + 1) / 2 + s), each one loop of ``+=`` into the table-addressed frontal matrix whose
+    entries all go to different addresses (``scatter``: II 1)."""
+    loops = []
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
@@ -126,17 +178,22 @@ def build(ctx) -> None:
         b = program.blocks[f.block]
         cols = sum(b.variable_dims)
         macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
-    ctx.units.append(Unit("hgc", "Hessian/gradient accumulation", opts.hgc_lanes,
-                          (("add", 1), ("mul", 1))))
     if opts.hessian_storage == "frontal":  # as emitted: reduce_<b>'s loops (hgc_loops)
-        ctx.add_phase("solve", Phase("hgc", False, tuple(hgc_loops(program, ctx.les_timing)),
-                                     linear=True))
+        # one Gram unit per block type (the template instance its reduce_<b> calls)
+        for i, unit_ops in hgc_operators(program, opts.hgc_lanes, ops.add.latency):
+            ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
+        ctx.add_phase("solve", Phase("hgc", False, tuple(
+            hgc_loops(program, ctx.les_timing, opts.hgc_lanes)), linear=True))
     else:
+        ctx.units.append(Unit("hgc", "Hessian/gradient accumulation", opts.hgc_lanes,
+                              (("add", 1), ("mul", 1))))
         ctx.add_phase("solve", Phase("hgc", False, (Process("hgc", "hgc", (
             Loop("macs", math.ceil(macs / opts.hgc_lanes), 1,
                  ops.mul.latency + ops.add.latency),)),), linear=True))
-    ctx.units.append(Unit("cpe", "Cholesky process element: Evaluate + Update", c,
-                          (("add", 1), ("mul", 1), ("div", 1), ("sqrt", 1)), extra_dsp=1))
+    # a CPE as fgc_cpe.h's loops bind it: its tap's loop divides (1 / d), its Update loop
+    # multiplies twice and subtracts, at II 1 (one operator of each a loop)
+    ctx.units.append(Unit("cpe", "Cholesky process element: tap (1 / d) + Update", c,
+                          (("add", 1), ("mul", 2), ("div", 1))))
     if opts.hessian_storage == "frontal":
         _frontal(ctx)
         return
@@ -150,54 +207,65 @@ def build(ctx) -> None:
     for r in range(math.ceil(n / c)):
         m = n - r * c
         words = sum(lowest[j] - j + 1 for j in range(r * c, n)) + m
-        rounds.append(Loop(f"round{r}", words, 1, cpe_round_depth(min(c, m), c, ops)))
+        waits = sum(cpe_wait(p, lowest[p], ops) for p in range(r * c, min(n, r * c + c)))
+        rounds.append(Loop(f"round{r}", words + 1, 1,
+                           cpe_round_depth(min(c, m), c, ops, waits)))
     ctx.add_phase("solve", Phase("cholesky", True, (Process("cascade", "cpe", tuple(rounds)),),
                                  linear=True))
-    ctx.add_phase("solve", Phase("cholesky_scalar", False, (Process("damping_and_check", "cpe", (
-        Loop("damping", n, 1, ops.add.latency), Loop("pivot_check", n, 1, 2))),), linear=True))
+    ctx.add_phase("solve", Phase("cholesky_scalar", False, (Process("scale_and_check", "cpe", (
+        Loop("scale", n, 1, ops.mul.latency + ops.div.latency + 2),
+        Loop("pivot_check", n, 1, ops.mul.latency + 2))),), linear=True))
     ctx.memories.append(Memory("hessian", sum(lo - j + 1 for j, lo in enumerate(lowest)) + n,
                                ops.word_bits, max(1, c // 4)))
 
 
 def _frontal(ctx) -> None:
     """The emitted multifrontal Cholesky: per elimination step (one after another) its frontal
-    [H | g] through fgc_cpe.h's cpe_step (feed -> #CPE CPEs -> drain per round of #CPE pivots)
-    (back-substitution step by step is :mod:`fgc_backends.hls.units.backsub`'s)."""
+    [H | g] assembled into HF (left zero by the step before), then fgc_cpe.h's cpe_step (feed ->
+    #CPE taps and CPEs -> drain per round of #CPE pivots), whose drain writes the conditional
+    into COND and the update matrix into NF (back-substitution step by step is
+    :mod:`fgc_backends.hls.units.backsub`'s)."""
     program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
     sizes = ctx.sizes
+    cols = sizes["MAX_W"] + 1
+    # cpe_round's streams: link[0 ... #CPE] (feed -> tap 0, CPE K -> tap K + 1, CPE #CPE - 1 ->
+    # drain), tapped[K] (tap K -> CPE K, deep enough for the tap never to stall while its CPE
+    # waits for r) and recip[K] (r = 1 / d, tap K -> CPE K)
     for i in range(c + 1):
         ctx.channels.append(Channel(f"cpe_link{i}", "stream", sizes["MAX_W"], ops.word_bits,
                                     "cpe_feed" if i == 0 else f"cpe{i - 1}",
-                                    f"cpe{i}" if i < c else "cpe_drain"))
+                                    f"cpe_tap{i}" if i < c else "cpe_drain"))
+    for i in range(c):
+        ctx.channels.append(Channel(f"cpe_tapped{i}", "stream", cols + ops.div.latency + 2,
+                                    ops.word_bits, f"cpe_tap{i}", f"cpe{i}"))
+        ctx.channels.append(Channel(f"cpe_recip{i}", "stream", 2, ops.word_bits,
+                                    f"cpe_tap{i}", f"cpe{i}"))
+    # the feed's adder (mu on the diagonal), the singularity scale's multiplier and divider and
+    # the check's threshold multiplier: one operator of each a loop (cpe_step's sequential code)
+    ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
+                          (("add", 1), ("mul", 2), ("div", 1))))
     loops = []
     for st in program.schedule.steps:
         loops += cpe_step_loops(st.frontal_dim, st.separator_dim, c, ops, name=f"s{st.index}")
     tables, timing = ctx.tables, ctx.les_timing
-    # eliminate(s): [H | g] assembled from GRAM and the children's update matrices, the
-    # cascade, the conditional and update matrix stored into COND / NF
+    # eliminate(s): [H | g] assembled from GRAM and the children's update matrices, then the
+    # cascade, which stores the conditional into COND and the update matrix into NF
     ctx.add_phase("solve", Phase("assemble", False, tuple(
-        Process(f"assemble{st.index}", "cpe", tuple(assemble_loops(
-            tables, st.index, sizes["MAX_W"], timing))) for st in program.schedule.steps),
-        linear=True))
+        Process(f"assemble{st.index}", "cpe", tuple(assemble_loops(tables, st.index, timing)))
+        for st in program.schedule.steps), linear=True))
     ctx.add_phase("solve", Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
                                  linear=True))
-    ctx.add_phase("solve", Phase("store", False, tuple(
-        Process(f"store{st.index}", "cpe", tuple(commit_loops(tables, st.index, timing, True)))
-        for st in program.schedule.steps), linear=True))
-    cols = sizes["MAX_W"] + 1
-    # accel.cpp.jinja's GRAM, HF, CONDBUF, UPDBUF (the frontal matrix of one step at a time) and
-    # cpe_step's second trailing-matrix buffer Hb (the rounds alternate between HF and Hb)
+    # accel.cpp.jinja's GRAM and HF (the frontal matrix of one step at a time) and cpe_step's
+    # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF)
     ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
     ctx.memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
-    ctx.memories.append(Memory("frontal_b", sizes["MAX_W"] * cols, ops.word_bits, 1))
-    ctx.memories.append(Memory("condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
-    ctx.memories.append(Memory("updbuf", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    ctx.memories.append(Memory("trailing", sizes["MAX_W"] * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)
 
 
 SPEC = UnitSpec(
     name="cholesky", role="HGC and the cascade of #CPE Cholesky process elements",
-    build=build, phases=("hgc", "assemble", "cholesky", "store", "cholesky_scalar"),
+    build=build, phases=("hgc", "assemble", "cholesky", "cholesky_scalar"),
     header="fgc_cpe.h",
     constants=(("CPE", "#CPE process elements (PlanOptions.cpe)"),
                ("MAX_W", "widest frontal matrix")),

@@ -10,51 +10,111 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_level region (backsub_set<u>: one cond_backsub unit per unit set,
 // side by side, no streams between them):
-//   23 processes, 21 streams (cpe=20)
+//   43 processes, 61 streams (cpe=20)
 //   process cpe_feed
+//   process cpe_tap0
 //   process cpe0
+//   process cpe_tap1
 //   process cpe1
+//   process cpe_tap2
 //   process cpe2
+//   process cpe_tap3
 //   process cpe3
+//   process cpe_tap4
 //   process cpe4
+//   process cpe_tap5
 //   process cpe5
+//   process cpe_tap6
 //   process cpe6
+//   process cpe_tap7
 //   process cpe7
+//   process cpe_tap8
 //   process cpe8
+//   process cpe_tap9
 //   process cpe9
+//   process cpe_tap10
 //   process cpe10
+//   process cpe_tap11
 //   process cpe11
+//   process cpe_tap12
 //   process cpe12
+//   process cpe_tap13
 //   process cpe13
+//   process cpe_tap14
 //   process cpe14
+//   process cpe_tap15
 //   process cpe15
+//   process cpe_tap16
 //   process cpe16
+//   process cpe_tap17
 //   process cpe17
+//   process cpe_tap18
 //   process cpe18
+//   process cpe_tap19
 //   process cpe19
 //   process cpe_drain
 //   process backsub_set0
-//   stream cpe_link0 depth=30: cpe_feed -> cpe0
-//   stream cpe_link1 depth=30: cpe0 -> cpe1
-//   stream cpe_link2 depth=30: cpe1 -> cpe2
-//   stream cpe_link3 depth=30: cpe2 -> cpe3
-//   stream cpe_link4 depth=30: cpe3 -> cpe4
-//   stream cpe_link5 depth=30: cpe4 -> cpe5
-//   stream cpe_link6 depth=30: cpe5 -> cpe6
-//   stream cpe_link7 depth=30: cpe6 -> cpe7
-//   stream cpe_link8 depth=30: cpe7 -> cpe8
-//   stream cpe_link9 depth=30: cpe8 -> cpe9
-//   stream cpe_link10 depth=30: cpe9 -> cpe10
-//   stream cpe_link11 depth=30: cpe10 -> cpe11
-//   stream cpe_link12 depth=30: cpe11 -> cpe12
-//   stream cpe_link13 depth=30: cpe12 -> cpe13
-//   stream cpe_link14 depth=30: cpe13 -> cpe14
-//   stream cpe_link15 depth=30: cpe14 -> cpe15
-//   stream cpe_link16 depth=30: cpe15 -> cpe16
-//   stream cpe_link17 depth=30: cpe16 -> cpe17
-//   stream cpe_link18 depth=30: cpe17 -> cpe18
-//   stream cpe_link19 depth=30: cpe18 -> cpe19
+//   stream cpe_link0 depth=30: cpe_feed -> cpe_tap0
+//   stream cpe_link1 depth=30: cpe0 -> cpe_tap1
+//   stream cpe_link2 depth=30: cpe1 -> cpe_tap2
+//   stream cpe_link3 depth=30: cpe2 -> cpe_tap3
+//   stream cpe_link4 depth=30: cpe3 -> cpe_tap4
+//   stream cpe_link5 depth=30: cpe4 -> cpe_tap5
+//   stream cpe_link6 depth=30: cpe5 -> cpe_tap6
+//   stream cpe_link7 depth=30: cpe6 -> cpe_tap7
+//   stream cpe_link8 depth=30: cpe7 -> cpe_tap8
+//   stream cpe_link9 depth=30: cpe8 -> cpe_tap9
+//   stream cpe_link10 depth=30: cpe9 -> cpe_tap10
+//   stream cpe_link11 depth=30: cpe10 -> cpe_tap11
+//   stream cpe_link12 depth=30: cpe11 -> cpe_tap12
+//   stream cpe_link13 depth=30: cpe12 -> cpe_tap13
+//   stream cpe_link14 depth=30: cpe13 -> cpe_tap14
+//   stream cpe_link15 depth=30: cpe14 -> cpe_tap15
+//   stream cpe_link16 depth=30: cpe15 -> cpe_tap16
+//   stream cpe_link17 depth=30: cpe16 -> cpe_tap17
+//   stream cpe_link18 depth=30: cpe17 -> cpe_tap18
+//   stream cpe_link19 depth=30: cpe18 -> cpe_tap19
 //   stream cpe_link20 depth=30: cpe19 -> cpe_drain
+//   stream cpe_tapped0 depth=48: cpe_tap0 -> cpe0
+//   stream cpe_recip0 depth=2: cpe_tap0 -> cpe0
+//   stream cpe_tapped1 depth=48: cpe_tap1 -> cpe1
+//   stream cpe_recip1 depth=2: cpe_tap1 -> cpe1
+//   stream cpe_tapped2 depth=48: cpe_tap2 -> cpe2
+//   stream cpe_recip2 depth=2: cpe_tap2 -> cpe2
+//   stream cpe_tapped3 depth=48: cpe_tap3 -> cpe3
+//   stream cpe_recip3 depth=2: cpe_tap3 -> cpe3
+//   stream cpe_tapped4 depth=48: cpe_tap4 -> cpe4
+//   stream cpe_recip4 depth=2: cpe_tap4 -> cpe4
+//   stream cpe_tapped5 depth=48: cpe_tap5 -> cpe5
+//   stream cpe_recip5 depth=2: cpe_tap5 -> cpe5
+//   stream cpe_tapped6 depth=48: cpe_tap6 -> cpe6
+//   stream cpe_recip6 depth=2: cpe_tap6 -> cpe6
+//   stream cpe_tapped7 depth=48: cpe_tap7 -> cpe7
+//   stream cpe_recip7 depth=2: cpe_tap7 -> cpe7
+//   stream cpe_tapped8 depth=48: cpe_tap8 -> cpe8
+//   stream cpe_recip8 depth=2: cpe_tap8 -> cpe8
+//   stream cpe_tapped9 depth=48: cpe_tap9 -> cpe9
+//   stream cpe_recip9 depth=2: cpe_tap9 -> cpe9
+//   stream cpe_tapped10 depth=48: cpe_tap10 -> cpe10
+//   stream cpe_recip10 depth=2: cpe_tap10 -> cpe10
+//   stream cpe_tapped11 depth=48: cpe_tap11 -> cpe11
+//   stream cpe_recip11 depth=2: cpe_tap11 -> cpe11
+//   stream cpe_tapped12 depth=48: cpe_tap12 -> cpe12
+//   stream cpe_recip12 depth=2: cpe_tap12 -> cpe12
+//   stream cpe_tapped13 depth=48: cpe_tap13 -> cpe13
+//   stream cpe_recip13 depth=2: cpe_tap13 -> cpe13
+//   stream cpe_tapped14 depth=48: cpe_tap14 -> cpe14
+//   stream cpe_recip14 depth=2: cpe_tap14 -> cpe14
+//   stream cpe_tapped15 depth=48: cpe_tap15 -> cpe15
+//   stream cpe_recip15 depth=2: cpe_tap15 -> cpe15
+//   stream cpe_tapped16 depth=48: cpe_tap16 -> cpe16
+//   stream cpe_recip16 depth=2: cpe_tap16 -> cpe16
+//   stream cpe_tapped17 depth=48: cpe_tap17 -> cpe17
+//   stream cpe_recip17 depth=2: cpe_tap17 -> cpe17
+//   stream cpe_tapped18 depth=48: cpe_tap18 -> cpe18
+//   stream cpe_recip18 depth=2: cpe_tap18 -> cpe18
+//   stream cpe_tapped19 depth=48: cpe_tap19 -> cpe19
+//   stream cpe_recip19 depth=2: cpe_tap19 -> cpe19
 #include "imu_window.h"
 
 #include "hls_stream.h"
@@ -285,7 +345,7 @@ T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
 L COND[N_COND];    // conditionals (R | d), one block per elimination step
 L NF[N_NF];        // update matrices passed to the parent step
-L GRAM[N_GRAM];    // per factor instance: packed lower triangle of [A | b]^T [A | b]
+L GRAM[N_GRAM] = {};  // per factor instance: packed lower triangle of [A | b]^T [A | b] (structural zeros never written)
 
 // ---- the rest of the DSL's functions (fgc/frontend/functions.py), beside the header's wrappers
 inline T fgc_asin(T x) { return std::asin(x); }
@@ -1990,20 +2050,24 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// HGC (paper B), one panel of WIDE tiles side by side: rows p0 ... p0 + TILE - 1, columns
-// q0 ... q0 + WIDE TILE - 1 of the Gram, summed over the n rows rows[first ...] in order, one row
-// per cycle into TILE x WIDE TILE accumulators, written packed into the instance's GRAM at g0.
-template <int STRIDE, int COLS, int ROWS, int WIDE>
-void gram_panel(const T ab[], const int rows[], int first, int n, int p0, int q0, int g0) {
+// HGC (paper B), one panel of `wide` (1 or 2) tiles side by side: rows p0 ... p0 + TILE - 1,
+// columns q0 ... q0 + wide TILE - 1 of the Gram, summed over the n rows rows[first ...] in order,
+// one row every GII cycles into TILE x 2 TILE accumulators (a one-tile panel's right half sums
+// zeros), written packed into the instance's GRAM at g0. One template instance per block type:
+// its row loop holds TILE x 2 TILE multiply-adds, so at II GII Vitis binds
+// ceil(2 TILE^2 / GII) multipliers and adders (the plan's hgc_<b> unit: its lanes).
+template <int STRIDE, int COLS, int ROWS, int GII>
+void gram_panel(const T ab[], const int rows[], int first, int n, int p0, int q0, int wide,
+                int g0) {
     // the linear solver's scalar: the HGC accumulates in it; row k into partial sum
-    // k % L_PARTIALS of every entry (a row a cycle: II 1), folded per entry on the way out
-    L acc[L_PARTIALS][TILE][WIDE * TILE];
+    // k % L_PARTIALS of every entry (a row every GII cycles), folded per entry on the way out
+    L acc[L_PARTIALS][TILE][2 * TILE];
 #pragma HLS ARRAY_PARTITION variable=acc complete dim=0
     for (int t = 0; t < L_PARTIALS; ++t) {
 #pragma HLS UNROLL
         for (int i = 0; i < TILE; ++i) {
 #pragma HLS UNROLL
-            for (int j = 0; j < WIDE * TILE; ++j) {
+            for (int j = 0; j < 2 * TILE; ++j) {
 #pragma HLS UNROLL
                 acc[t][i][j] = L(0);
             }
@@ -2011,49 +2075,36 @@ void gram_panel(const T ab[], const int rows[], int first, int n, int p0, int q0
     }
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=ROWS
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=GII
 #pragma HLS DEPENDENCE variable=acc inter false
         const int r = rows[first + k];
         for (int i = 0; i < TILE; ++i) {
             const L ap = ab[r * STRIDE + p0 + i];
-            for (int j = 0; j < WIDE * TILE; ++j) acc[k % L_PARTIALS][i][j] += ap * L(ab[r * STRIDE + q0 + j]);
+            for (int j = 0; j < 2 * TILE; ++j) {
+                const int q = q0 + j < STRIDE ? q0 + j : q0;  // a one-tile panel at the edge
+                acc[k % L_PARTIALS][i][j] += ap * L(ab[r * STRIDE + q]);
+            }
         }
     }
-    for (int i = 0; i < TILE; ++i) {
-        for (int j = 0; j < WIDE * TILE; ++j) {
+    // the panel out two entries a cycle (GRAM's two ports), each folded from its partial sums
+    for (int e = 0; e < TILE * wide * TILE; e += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=TILE*TILE
 #pragma HLS PIPELINE II=1
+        for (int h = 0; h < 2; ++h) {
+            const int i = (e + h) / (wide * TILE), j = (e + h) % (wide * TILE);
             L part[L_PARTIALS];
             for (int t = 0; t < L_PARTIALS; ++t) part[t] = acc[t][i][j];
             const int p = p0 + i, q = q0 + j;  // the lower triangle's entries into GRAM, packed
             if (q <= p && p < COLS) GRAM[g0 + p * (p + 1) / 2 + q] = fgc_units::fold_partials<L, L_PARTIALS>(part);
         }
     }
-    // the rows as a dot product of n terms (the plan's rule: its depth holds the fold), then
-    // the panel out a word a cycle
-    FGC_CYCLES("hgc", 0, "panel", n, fgc_units::dot_ii(n, L_PARTIALS, L_ADD_LAT),
+    // the rows as a dot product of n terms at II GII or the dot-product rule's, whichever is
+    // larger (the plan's rule: its depth holds the fold), then the panel out two entries a
+    // cycle through the fold (La ceil(log2 L_PARTIALS) deep, + read and write)
+    FGC_CYCLES("hgc", 0, "panel", n,
+               GII > fgc_units::dot_ii(n, L_PARTIALS, L_ADD_LAT) ? GII : fgc_units::dot_ii(n, L_PARTIALS, L_ADD_LAT),
                fgc_units::dot_depth(n, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
-    FGC_CYCLES("hgc", 0, "panel_out", TILE * WIDE * TILE, 1, 1);
-}
-
-// The packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p < COLS, at p (p + 1) / 2
-// + q) of rows of STRIDE into GRAM at g0: zeroed, then the block's non-zero tiles (tiles left
-// out are structural zeros).
-template <int STRIDE, int COLS, int ROWS, int PANELS, int TILES>
-void gram(const T ab[], const int tiles[], const int rows[], int g0) {
-    for (int e = 0; e < COLS * (COLS + 1) / 2; ++e) {
-#pragma HLS PIPELINE II=1
-        GRAM[g0 + e] = L(0);
-    }
-    FGC_CYCLES("hgc", 0, "zero_gram", COLS * (COLS + 1) / 2, 1, 1);
-    for (int t = 0; t < PANELS; ++t) {
-        const int p0 = tiles[5 * t], q0 = tiles[5 * t + 1], first = tiles[5 * t + 2];
-        const int n = tiles[5 * t + 3];
-        if (tiles[5 * t + 4] == 2) {
-            gram_panel<STRIDE, COLS, ROWS, 2>(ab, rows, first, n, p0, q0, g0);
-        } else {
-            gram_panel<STRIDE, COLS, ROWS, 1>(ab, rows, first, n, p0, q0, g0);
-        }
-    }
+    FGC_CYCLES("hgc", 0, "panel_out", TILE * wide * TILE / 2, 1, L_ADD_LAT * fgc_units::ceil_log2(L_PARTIALS) + 2);
 }
 
 // From one instance's packed Gram of [A | b] in GRAM at g0 (row COLS - 1 is b^T A, then b^T b):
@@ -2385,7 +2436,15 @@ bool reduce_0() {
         for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
         FGC_CYCLES("reduce_0", 0, "load", 240, 1, 2);
         FGC_CYCLES("reduce_0", 0, "columns", 30, 1, 1);
-        gram<32, 31, 15, 20, 36>(ab, BLOCK0_TILES, BLOCK0_TILE_ROWS, FACTOR_GRAM_OFF[f]);
+        // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
+        // into GRAM: the block's non-zero tiles, a panel at a time. Tiles left out are structural
+        // zeros, and no pass clears them: no code writes their entries, so they keep GRAM's
+        // initial zeros (the global's initialiser, the RAM's initial contents) from call to call
+        for (int t = 0; t < 20; ++t) {
+            const int p0 = BLOCK0_TILES[5 * t], q0 = BLOCK0_TILES[5 * t + 1];
+            const int first = BLOCK0_TILES[5 * t + 2], n = BLOCK0_TILES[5 * t + 3];
+            gram_panel<32, 31, 15, 2>(ab, BLOCK0_TILE_ROWS, first, n, p0, q0, BLOCK0_TILES[5 * t + 4], FACTOR_GRAM_OFF[f]);
+        }
         finite = gradient_from_gram<31>(FACTOR_GRAM_OFF[f], col) && finite;
         FGC_CYCLES("reduce_0", 0, "scatter", 30, 1, 6);
         FGC_CYCLES("reduce_0", 0, "check", 31, fgc_units::dot_ii(31, L_PARTIALS, L_ADD_LAT),
@@ -2492,7 +2551,15 @@ bool reduce_1() {
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         FGC_CYCLES("reduce_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
-        gram<8, 7, 6, 2, 3>(ab, BLOCK1_TILES, BLOCK1_TILE_ROWS, FACTOR_GRAM_OFF[f]);
+        // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
+        // into GRAM: the block's non-zero tiles, a panel at a time. Tiles left out are structural
+        // zeros, and no pass clears them: no code writes their entries, so they keep GRAM's
+        // initial zeros (the global's initialiser, the RAM's initial contents) from call to call
+        for (int t = 0; t < 2; ++t) {
+            const int p0 = BLOCK1_TILES[5 * t], q0 = BLOCK1_TILES[5 * t + 1];
+            const int first = BLOCK1_TILES[5 * t + 2], n = BLOCK1_TILES[5 * t + 3];
+            gram_panel<8, 7, 6, 32>(ab, BLOCK1_TILE_ROWS, first, n, p0, q0, BLOCK1_TILES[5 * t + 4], FACTOR_GRAM_OFF[f]);
+        }
         finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
         FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_1", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
@@ -2594,7 +2661,15 @@ bool reduce_2() {
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         FGC_CYCLES("reduce_2", 0, "load", 6, 1, 2);
         FGC_CYCLES("reduce_2", 0, "columns", 3, 1, 1);
-        gram<4, 4, 3, 1, 1>(ab, BLOCK2_TILES, BLOCK2_TILE_ROWS, FACTOR_GRAM_OFF[f]);
+        // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
+        // into GRAM: the block's non-zero tiles, a panel at a time. Tiles left out are structural
+        // zeros, and no pass clears them: no code writes their entries, so they keep GRAM's
+        // initial zeros (the global's initialiser, the RAM's initial contents) from call to call
+        for (int t = 0; t < 1; ++t) {
+            const int p0 = BLOCK2_TILES[5 * t], q0 = BLOCK2_TILES[5 * t + 1];
+            const int first = BLOCK2_TILES[5 * t + 2], n = BLOCK2_TILES[5 * t + 3];
+            gram_panel<4, 4, 3, 32>(ab, BLOCK2_TILE_ROWS, first, n, p0, q0, BLOCK2_TILES[5 * t + 4], FACTOR_GRAM_OFF[f]);
+        }
         finite = gradient_from_gram<4>(FACTOR_GRAM_OFF[f], col) && finite;
         FGC_CYCLES("reduce_2", 0, "scatter", 3, 1, 6);
         FGC_CYCLES("reduce_2", 0, "check", 4, fgc_units::dot_ii(4, L_PARTIALS, L_ADD_LAT),
@@ -2696,7 +2771,15 @@ bool reduce_3() {
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         FGC_CYCLES("reduce_3", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_3", 0, "columns", 6, 1, 1);
-        gram<8, 7, 6, 2, 3>(ab, BLOCK3_TILES, BLOCK3_TILE_ROWS, FACTOR_GRAM_OFF[f]);
+        // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
+        // into GRAM: the block's non-zero tiles, a panel at a time. Tiles left out are structural
+        // zeros, and no pass clears them: no code writes their entries, so they keep GRAM's
+        // initial zeros (the global's initialiser, the RAM's initial contents) from call to call
+        for (int t = 0; t < 2; ++t) {
+            const int p0 = BLOCK3_TILES[5 * t], q0 = BLOCK3_TILES[5 * t + 1];
+            const int first = BLOCK3_TILES[5 * t + 2], n = BLOCK3_TILES[5 * t + 3];
+            gram_panel<8, 7, 6, 32>(ab, BLOCK3_TILE_ROWS, first, n, p0, q0, BLOCK3_TILES[5 * t + 4], FACTOR_GRAM_OFF[f]);
+        }
         finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
         FGC_CYCLES("reduce_3", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_3", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
@@ -2918,6 +3001,7 @@ struct LesConfig {
     static const int MAX_COLS = ::fgc::MAX_W + 1;  // w + 1: frontal, separator, right-hand side
     static const int MAX_F = ::fgc::MAX_F;
     static const int N_CPE = ::fgc::N_CPE;
+    static const int N_COND = ::fgc::N_COND, N_NF = ::fgc::N_NF;  // the cascade's drain writes them
     static const bool LM = true;  // false: Gauss-Newton, no damping rows
     // fgc_eliminate.h's loops: the tables' largest trip counts, the plan's (II, depth) of L
     static const int MAX_STEP_FACTORS = 4, MAX_CHILDREN = 2;
@@ -2934,11 +3018,10 @@ struct LesConfig {
 
 // ---- multifrontal Cholesky (paper B): per step the frontal matrix [H | g] (upper triangle,
 // row-major, the gradient in column w) from its factors' Grams and its children's update
-// matrices; cpe_step adds mu and runs the rounds of the #CPE cascade (one DATAFLOW region per
-// round: cpe_feed -> cpe<0> ... cpe<19> -> cpe_drain, 21 streams), then stores.
-L HF[MAX_W][LesConfig::MAX_COLS];  // the step's [H | g]
-L CONDBUF[MAX_F * LesConfig::MAX_COLS];  // its conditional (R | S | d)
-L UPDBUF[MAX_W * LesConfig::MAX_COLS];  // its update matrix (Schur complement | reduced g)
+// matrices; cpe_step runs the rounds of the #CPE cascade (one DATAFLOW region per round:
+// cpe_feed (+ mu) -> cpe_tap<0>, cpe<0> ... cpe_tap<19>, cpe<19> -> cpe_drain, 61 streams),
+// whose drain writes the conditional into COND and the update matrix into NF.
+L HF[MAX_W][LesConfig::MAX_COLS];  // the step's [H | g]; all zero between steps (the cascade clears what it reads)
 
 // the elimination driver (fgc_eliminate.h) on these tables and memories
 #define FGC_ELIMINATE_CHOLESKY
