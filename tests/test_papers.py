@@ -123,10 +123,11 @@ def test_blocked_hessian_by_hand(chol_chain):
     def rounds(plan):
         return next(ph for ph in plan.phases if ph.name == "cholesky").processes[0].loops
 
-    # #CPE 1: round 0 streams the envelope + g (45 words) instead of the triangle + g (54)
-    assert rounds(dense)[0].trip == 54 and rounds(blocked)[0].trip == 45
+    # #CPE 1: round 0 streams the envelope + g (45 words) instead of the triangle + g (54),
+    # each round with its status word
+    assert rounds(dense)[0].trip == 54 + 1 and rounds(blocked)[0].trip == 45 + 1
     assert [lp.trip for lp in rounds(blocked)] == [
-        sum(lo - j + 1 for j, lo in enumerate(hessian_envelope(chol_chain)) if j >= r) + n - r
+        sum(lo - j + 1 for j, lo in enumerate(hessian_envelope(chol_chain)) if j >= r) + n - r + 1
         for r in range(n)]
     cd, cb = plan_cost(dense), plan_cost(blocked)
     assert cb.cycles < cd.cycles and cb.words == cd.words - 9
