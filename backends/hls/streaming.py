@@ -59,13 +59,9 @@ from fgc_backends.hls import build
 from fgc_backends.hls.config import HlsConfig
 from fgc_backends.hls.emitter import STREAM_MAGIC, STREAM_RESULT_MAGIC, HlsProject, emit
 from fgc_backends.hls.plan import PlanOptions
+from fgc_backends.hls.plan.stream import WindowUpdateModel
 from fgc_backends.hls.update import UpdateModel
-from fgc_backends.hls.window import (
-    BatchLayout,
-    OnChipWindowError,
-    WindowLayout,
-    WindowUpdateModel,
-)
+from fgc_backends.hls.window import BatchLayout, OnChipWindowError, WindowLayout
 
 
 class _Csim:
@@ -511,7 +507,7 @@ def stream(sp: StreamProgram, config=None) -> HlsStream:
 
 
 def window_model(sp: StreamProgram, scalar: str | None = None):
-    """The on-chip design's :class:`~fgc_backends.hls.window.WindowUpdateModel` (the design
+    """The on-chip design's :class:`~fgc_backends.hls.plan.stream.WindowUpdateModel` (the design
     ``fgc compile --backend hls`` emits for ``sp``; ``scalar`` default the Program's)."""
     scalar = scalar or ("double" if sp.program.solver.precision == "float64" else "float")
     return WindowUpdateModel(layout_of(sp), HlsConfig(scalar=scalar))
