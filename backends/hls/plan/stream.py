@@ -122,12 +122,10 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
     ``leaf``: that step alone on unit set 0."""
     lm = t.solver.method == "lm"
     units = max(1, t.solver.units)
-    procs = {}
+    procs, passed = {}, {}
     for st in t.schedule.steps:
-        if leaf is not None and st.index != leaf:
-            continue
         pattern = stacked_pattern(t, st, lm).copy()
-        cols = step_columns(t, st) if unit else {}
+        cols = step_columns(t, st)
         row = 0
         for i in entering_blocks(t, st):
             spec = t.factors[i]
@@ -144,8 +142,16 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
                     pattern[lo:hi] = False
                     pattern[np.arange(lo, hi), own] = True
             row += block.residual_dim
+        for child in st.children:  # a child's new factor: its rows that are zero in value
+            for i, zero_row in enumerate(passed.get(child, ())):
+                if zero_row:
+                    pattern[row + i] = False
+            row += t.schedule.steps[child].new_factor_rows
         if lm and not damped:
             pattern[pattern.shape[0] - st.frontal_dim:] = False
+        passed[st.index] = _zero_passed_rows(pattern, st.frontal_dim, st.new_factor_rows)
+        if leaf is not None and st.index != leaf:
+            continue
         procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
             pattern, st.frontal_dim, units, les, name=f"s{st.index}")))
     if leaf is not None:
@@ -156,6 +162,26 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
             chunk = _assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
             phases.append(Phase(f"qr_level{li}_{c}", True, chunk, linear=True))
     return tuple(phases)
+
+
+def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
+    """Which of the ``passed`` rows of the new factor a step hands its parent are zero in value:
+    the step's rows after QR (the fill rule of :func:`~fgc_backends.hls.units.qr.qr_unit_loops`:
+    a reflection's active rows take the union of their patterns right of its column), rows
+    ``frontal`` … ``frontal + passed - 1`` over the separator's columns. A window's held or not
+    yet arrived slots pass such rows (no factor reaches their separator): the parent's
+    Evaluate skips them."""
+    nz = np.asarray(pattern, dtype=bool).copy()
+    rows, cols = nz.shape
+    for j in range(min(rows, cols)):
+        act = [i for i in range(j, rows) if nz[i, j]]
+        if not act:
+            continue
+        act = sorted(set(act) | {j})
+        nz[np.ix_(act, range(j + 1, cols))] = nz[act, j + 1:].any(axis=0)
+        nz[act, j] = False
+        nz[j, j] = True
+    return [frontal + i >= rows or not nz[frontal + i, frontal:].any() for i in range(passed)]
 
 
 def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
@@ -326,11 +352,11 @@ class WindowUpdateModel:
         batch_solve count them."""
         batch, lay, st = self.batch, self.layout, self.stream
         b, group = batch["layout"], batch["group"]
-        zero = b.zero_factors(j)
+        zero, unit = b.zero_factors(j), b.unit_factors(j)
         qr_damped = qr_solve_cycles(batch["plan"], b.template, zero, True, batch["sets"],
-                                    self.les)
+                                    self.les, unit=unit)
         qr_store = qr_solve_cycles(batch["plan"], b.template, zero, False, batch["sets"],
-                                   self.les)
+                                   self.les, unit=unit)
         terms = [Term("batch_gather", st[f"stream_batch{j}_gather"], 2, False,
                       f"keyframes 0 … {j}'s estimates to the batch kernel (gathered, copied in)")]
         for g in sorted(group):
@@ -391,7 +417,7 @@ class WindowUpdateModel:
                                   "the window's storage out"))
                 return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
                                    tuple(terms), STREAM_SOURCE)
-        zero, unit = self.zero_factors(keyframe), frozenset()
+        zero, unit = self.zero_factors(keyframe), lay.unit_factors(keyframe)
         for g in sorted(self.group):
             trigger = PHASE_TRIGGER.get(g)
             if trigger is None:
