@@ -11,7 +11,7 @@ trajectory's difference from the batch optimum (GTSAM LM on the whole graph).
 25, float32 by default; its Fig. 5.3): per keyframe, the update as the simulator ran it, priced
 on the emitted on-chip incremental design's plan
 (``fgc_backends.hls.plan.stream.WindowUpdateModel``: model estimates, not measurements; a
-Cholesky design is priced by the host-kept path's update model, ``fgc_backends.hls.update``),
+Cholesky design is priced by the host-kept path's update model, ``fgc_backends.hls.plan.update``),
 beside two wall times
 measured in this process, median of ``--repeat`` runs per keyframe, the runs interleaved: the
 native solver's IncrementalStream on the same stream (same K and batch keyframes, double; its
@@ -125,7 +125,7 @@ def hls_model(args) -> dict:
     from fgc.interop.to_gtsam import to_gtsam
     from fgc.ir.datafile import problem_data
     from fgc.ir.program import SolverConfig
-    from fgc_backends.hls.update import NOT_EMITTED
+    from fgc_backends.hls.plan.update import NOT_EMITTED
 
     n, k = args.N or 30, args.incremental or 3
     batch = _batch(args.batch_every if args.batch_every is not None else "5,15,25")

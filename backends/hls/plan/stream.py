@@ -11,7 +11,7 @@ non-zero in that update are the plan's QR phases on that update's stacked patter
 is :func:`~fgc_backends.hls.plan.plan_cost` of a phase of the design, composed per update by how
 often the update ran it (:meth:`WindowUpdateModel.price`). The layouts say which words move and
 which rows are zero; this module prices them. :class:`Term` and :class:`UpdatePrice` are the
-priced record both stream models return (:mod:`fgc_backends.hls.update` prices the host-kept
+priced record both stream models return (:mod:`fgc_backends.hls.plan.update` prices the host-kept
 path of a Cholesky design).
 """
 
@@ -59,7 +59,7 @@ class UpdatePrice:
     iterations: int
     clock_mhz: float
     terms: tuple[Term, ...]
-    source: str = ("accelerator plan update model (fgc_backends.hls.update; model estimate; "
+    source: str = ("accelerator plan update model (fgc_backends.hls.plan.update; model estimate; "
                    "incremental mode not emitted)")
 
     @property
