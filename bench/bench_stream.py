@@ -4,14 +4,15 @@ IncrementalFixedLagSmoother update on the same LIO keyframe stream, in one proce
 trajectory's difference from the batch optimum (GTSAM LM on the whole graph).
 
     python bench/bench_stream.py --N 400 --window 30 [--incremental 3 --batch-every 5,15,25]
-    python bench/bench_stream.py --hls-model [--precision float32|float64] [--units 4]
+    python bench/bench_stream.py --hls-model [--precision float32|float64] [--units 4] [--reader]
     python bench/bench_stream.py --N 400 --window 30 --skip-sim     # native and GTSAM only
 
 ``--hls-model`` is paper A's setting (LIO N = 30, incremental K = 3, batch at keyframes 5, 15,
 25, float32 by default; its Fig. 5.3): per keyframe, the update as the simulator ran it, priced
-on the emitted on-chip incremental design's plan (``fgc_backends.hls.window.WindowUpdateModel``:
-model estimates, not measurements; a Cholesky design is priced by the host-kept path's update
-model, ``fgc_backends.hls.update``), beside two wall times
+on the emitted on-chip incremental design's plan
+(``fgc_backends.hls.plan.stream.WindowUpdateModel``: model estimates, not measurements; a
+Cholesky design is priced by the host-kept path's update model, ``fgc_backends.hls.plan.update``),
+beside two wall times
 measured in this process, median of ``--repeat`` runs per keyframe, the runs interleaved: the
 native solver's IncrementalStream on the same stream (same K and batch keyframes, double; its
 template libraries built before timing) and GTSAM's ISAM2 update. It also prints how far the
@@ -124,7 +125,7 @@ def hls_model(args) -> dict:
     from fgc.interop.to_gtsam import to_gtsam
     from fgc.ir.datafile import problem_data
     from fgc.ir.program import SolverConfig
-    from fgc_backends.hls.update import NOT_EMITTED
+    from fgc_backends.hls.plan.update import NOT_EMITTED
 
     n, k = args.N or 30, args.incremental or 3
     batch = _batch(args.batch_every if args.batch_every is not None else "5,15,25")
@@ -248,6 +249,15 @@ def hls_model(args) -> dict:
               f"{med['ratio_isam2_native']:>8.2f} {med['isam2_default_ms']:>10.3f} "
               f"{med['ratio_isam2_default']:>8.2f} {med['ratio_isam2_default_native']:>8.2f}")
     print("ratios: median over the keyframes of the per-keyframe ratios")
+    lat = [r["model_ms"] for r in rows]
+    tails = {"model_median_ms": float(np.median(lat)),
+             "model_p99_ms": float(np.percentile(lat, 99)),
+             "isam2_median_ms": float(np.median([r["isam2_ms"] for r in rows]))}
+    tails["ratio_isam2_of_medians"] = tails["isam2_median_ms"] / tails["model_median_ms"]
+    print(f"per-update latency (model, every keyframe): median {tails['model_median_ms']:.3f} ms, "
+          f"p99 {tails['model_p99_ms']:.3f} ms; ISAM2 all median {tails['isam2_median_ms']:.3f} "
+          f"ms; ISAM2 median / model median {tails['ratio_isam2_of_medians']:.2f}")
+    resources = _design_resources(args, graph, program, model) if on_chip else None
     print("ISAM2 all / the native library's LM solve alone (without the host's part of the "
           "update): median " + ", ".join(f"{name} {med['ratio_isam2_native_solve']:.2f}"
                                          for name, med in summary.items()))
@@ -263,7 +273,41 @@ def hls_model(args) -> dict:
             "linear": sol.linear, "units": sol.units, "cpe": sol.cpe,
             "clock_mhz": sol.clock_mhz, "status": result.status, "repeat": args.repeat,
             "native_status": sorted(statuses), "native_vs_simulator": agreement,
-            "rows": rows, "median": summary, "not_emitted": NOT_EMITTED}
+            "rows": rows, "median": summary, "tails": tails, "resources": resources,
+            "not_emitted": NOT_EMITTED}
+
+
+def _design_resources(args, graph, program, pricer) -> dict:
+    """The on-chip design's DSP / BRAM36 as its plan prices them (``resources()``: window
+    kernel, batch kernel, stream memories) and, with ``--reader``, the second reader's DSP of
+    the emitted design (``fgc_backends.hls.reader.read_design`` of the ``<name>_stream`` top:
+    every call site its own module; a lower bound on what Vitis binds)."""
+    res = pricer.model.resources()
+    parts = ", ".join(f"{k} {d} DSP / {b:g} BRAM36" for k, (d, b) in res["parts"].items())
+    print(f"design (plan): {res['dsp']} DSP, {res['bram36']:g} BRAM36 on {res['part']} "
+          f"({'fits' if res['fits'] else 'does not fit'}; {parts})")
+    out = {"plan_dsp": res["dsp"], "plan_bram36": res["bram36"], "fits": res["fits"],
+           "parts": {k: list(v) for k, v in res["parts"].items()}}
+    if args.reader:
+        import tempfile
+
+        import fgc_backends
+        from fgc.app.streaming import stream_program
+        from fgc_backends.hls.reader import emitted_files, read_design
+
+        hls = fgc_backends.load("hls")
+        scalar = "float" if args.precision == "float32" else "double"
+        with tempfile.TemporaryDirectory(prefix="fgc-bench-stream-") as folder:
+            hls.emit(stream_program(graph, program, None), folder, hls.Config(scalar=scalar))
+            files, top = emitted_files(folder)
+        tab = pricer.model.plan.ops
+        design = read_design(files, top, tab.add.latency)
+        dsp = design.dsp({k: getattr(tab, k).dsp for k in ("add", "mul", "div", "sqrt",
+                                                           "special")})
+        print(f"design (second reader, {top}): {dsp} DSP (a lower bound on what Vitis binds "
+              "from the emitted text)")
+        out["reader_dsp"] = dsp
+    return out
 
 
 def main(argv=None) -> int:
@@ -286,6 +330,9 @@ def main(argv=None) -> int:
     p.add_argument("--skip-sim", action="store_true",
                    help="leave out the simulator's rows (minutes on 400 keyframes)")
     p.add_argument("--json", help="write the numbers as JSON")
+    p.add_argument("--reader", action="store_true",
+                   help="--hls-model: also emit the on-chip design and read its DSP back with "
+                        "the second reader (minutes)")
     args = p.parse_args(argv)
     if args.hls_model:
         out = hls_model(args)

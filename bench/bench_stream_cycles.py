@@ -28,8 +28,8 @@ from fgc.app.specs import example
 from fgc.app.streaming import compile_stream, keyframe_result
 from fgc.ir.datafile import problem_data
 from fgc_backends.hls.config import HlsConfig
+from fgc_backends.hls.plan.stream import WindowUpdateModel
 from fgc_backends.hls.streaming import OnChipFixedLagStream, OnChipIncrementalStream
-from fgc_backends.hls.window import WindowUpdateModel
 from fgc_backends.native.streaming import FixedLagStream, IncrementalStream
 
 

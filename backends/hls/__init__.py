@@ -19,8 +19,8 @@ from fgc_backends.hls.build import HlsBuildError, HlsMismatchError, make, run, r
 from fgc_backends.hls.config import DesignOptions, HlsConfig, HlsConfigError
 from fgc_backends.hls.emitter import HlsProject
 from fgc_backends.hls.lint import HlsLintError, LintIssue, lint_source
+from fgc_backends.hls.plan.update import NOT_EMITTED
 from fgc_backends.hls.streaming import emit_window, on_chip, stream, update_model, window_model
-from fgc_backends.hls.update import NOT_EMITTED
 
 Config = HlsConfig  # the backend contract's name (fgc_backends.CONTRACT)
 

@@ -59,13 +59,9 @@ from fgc_backends.hls import build
 from fgc_backends.hls.config import HlsConfig
 from fgc_backends.hls.emitter import STREAM_MAGIC, STREAM_RESULT_MAGIC, HlsProject, emit
 from fgc_backends.hls.plan import PlanOptions
-from fgc_backends.hls.update import UpdateModel
-from fgc_backends.hls.window import (
-    BatchLayout,
-    OnChipWindowError,
-    WindowLayout,
-    WindowUpdateModel,
-)
+from fgc_backends.hls.plan.stream import WindowUpdateModel
+from fgc_backends.hls.plan.update import UpdateModel
+from fgc_backends.hls.window import BatchLayout, OnChipWindowError, WindowLayout
 
 
 class _Csim:
@@ -511,7 +507,7 @@ def stream(sp: StreamProgram, config=None) -> HlsStream:
 
 
 def window_model(sp: StreamProgram, scalar: str | None = None):
-    """The on-chip design's :class:`~fgc_backends.hls.window.WindowUpdateModel` (the design
+    """The on-chip design's :class:`~fgc_backends.hls.plan.stream.WindowUpdateModel` (the design
     ``fgc compile --backend hls`` emits for ``sp``; ``scalar`` default the Program's)."""
     scalar = scalar or ("double" if sp.program.solver.precision == "float64" else "float")
     return WindowUpdateModel(layout_of(sp), HlsConfig(scalar=scalar))
@@ -519,7 +515,7 @@ def window_model(sp: StreamProgram, scalar: str | None = None):
 
 def update_model(graph, program, units: int | None = None, cpe: int | None = None):
     """The accelerator plan's update model of a stream over the chain ``program`` (compiled
-    from ``graph``; :class:`fgc_backends.hls.update.
+    from ``graph``; :class:`fgc_backends.hls.plan.update.
     UpdateModel`; model estimates, the accelerator's incremental mode is not emitted): ``units``
     / ``cpe`` default to the Program's; a batch keyframe j is priced on the batch Program of
     its j + 1 keyframes (:func:`fgc.compiler.stream.prefix_program`)."""

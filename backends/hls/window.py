@@ -38,7 +38,6 @@ import numpy as np
 from fgc.compiler.stream import WindowTemplate
 from fgc.errors import FgcError
 from fgc.ir.datafile import factor_words
-from fgc_backends.hls.plan import PHASE_TRIGGER, plan_groups
 from fgc_backends.hls.target import DEFAULT_PART
 
 KEEP, ZERO = -1, -2  # shift codes besides a source word: keep the word, write zero
@@ -339,6 +338,35 @@ class WindowLayout(WindowTemplate):
                                                 strict=True)}
         return self._by_t
 
+    def zero_factors(self, keyframe: int, marginal: bool) -> frozenset:
+        """The template factors (indices ``Member.t``) whose rows are zero during keyframe
+        ``keyframe``'s solve: graph factors the window does not hold (not arrived, or gone
+        with no counterpart one keyframe on) and the priors without information (every slot's
+        but slot 0's once τ is there — ``marginal``: the design writes τ — and the held slots'
+        during the first W updates)."""
+        held_by = self.__dict__.setdefault("_held_by", [])
+        while len(held_by) <= keyframe:
+            held_by.append(self.check_holds(held_by[-1] if held_by else None, len(held_by)))
+        held = held_by[keyframe]
+        m = min(keyframe, self.size - 1)
+        zero = {mem.t for mem, h in zip(self.members, held, strict=True)
+                if not mem.prior and h is None}
+        for mem in self.members:
+            if not mem.prior:
+                continue
+            s = mem.slots[0]
+            tau = s == 0 and keyframe >= self.size and marginal
+            if s <= m and not tau:
+                zero.add(mem.t)  # unused: zero square-root information (held slots: unit)
+        return frozenset(zero)
+
+    def unit_factors(self, keyframe: int) -> frozenset:
+        """The priors holding a slot during keyframe ``keyframe``'s solve (the slots past it
+        while the window fills): R = I at the slot's reset value, whitened rows the
+        identity."""
+        m = min(keyframe, self.size - 1)
+        return frozenset(mem.t for mem in self.members if mem.prior and mem.slots[0] > m)
+
     def check_holds(self, held: list, j: int) -> list:
         """The graph factor each template factor holds after keyframe j's call (``held``: as
         after the previous call, None before the first), shifted and filled as the chip does;
@@ -415,6 +443,24 @@ class BatchLayout(WindowTemplate):
         """Keyframe j's words for slot j (j < size)."""
         return self._slot_words(j, 0, x_new)
 
+    def zero_factors(self, j: int) -> frozenset:
+        """The batch template's factors with zero rows at a batch step at keyframe j: factors
+        not arrived (past j) or absent from the stream, and every prior of slots 0 … j (no
+        information; the slots past j hold unit priors)."""
+        zero = set()
+        for mem in self.members:
+            if mem.prior:
+                if mem.slots[0] <= j:
+                    zero.add(mem.t)
+            elif mem.hi > j or self.by_signature.get((mem.kind, mem.cells)) is None:
+                zero.add(mem.t)
+        return frozenset(zero)
+
+    def unit_factors(self, j: int) -> frozenset:
+        """The priors holding the slots past j at a batch step at keyframe j (R = I at the
+        slot's reset value, whitened rows the identity)."""
+        return frozenset(mem.t for mem in self.members if mem.prior and mem.slots[0] > j)
+
 
 def _check_qr(t, program) -> None:
     if t.solver.linear != "qr":
@@ -469,355 +515,3 @@ def _moves(shift: list[int]) -> list[tuple[int, int]]:
 
 def pos_total(members: list[Member]) -> int:
     return members[-1].start + members[-1].words if members else 0
-
-
-STREAM_SOURCE = ("accelerator plan of the emitted on-chip fixed-lag window "
-                 "(fgc_backends.hls.window; model estimate)")
-
-
-def qr_solve_cycles(t, zero: frozenset, damped: bool, sets: int, les, leaf=None) -> int:
-    """The QR unit sets' cycles of one linear solve of template ``t`` (every level's DATAFLOW
-    regions, the plan's assignment of a level's steps to ``sets`` unit sets) with the rows of
-    the ``zero`` template factors and, unless ``damped``, the √μ rows zero: the Evaluate unit
-    skips a row that is zero in its column (fgc_qr.h). ``leaf``: that step alone on unit set 0."""
-    from fgc_backends.cost.structure import entering_blocks, stacked_pattern
-    from fgc_backends.hls.plan import Phase, Process, _assign, phase_cycles
-    from fgc_backends.hls.units.qr import qr_unit_loops
-
-    lm = t.solver.method == "lm"
-    units = max(1, t.solver.units)
-    procs = {}
-    for st in t.schedule.steps:
-        if leaf is not None and st.index != leaf:
-            continue
-        pattern = stacked_pattern(t, st, lm).copy()
-        row = 0
-        for i in entering_blocks(t, st):
-            spec = t.factors[i]
-            block = t.blocks[spec.block]
-            for member, ti in zip(block.members, spec.factors, strict=True):
-                if ti in zero:
-                    pattern[row + member.rows[0]:row + member.rows[1]] = False
-            row += block.residual_dim
-        if lm and not damped:
-            pattern[pattern.shape[0] - st.frontal_dim:] = False
-        procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
-            pattern, st.frontal_dim, units, les, name=f"s{st.index}")))
-    if leaf is not None:
-        return phase_cycles(Phase("leaf", True, (procs[leaf],)))
-    total = 0
-    for li, level in enumerate(t.schedule.levels):
-        chunks = [_assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
-                  for c in range(0, len(level), sets)]
-        total += sum(phase_cycles(Phase("chunk", True, chunk)) for chunk in chunks)
-    return total
-
-
-class WindowUpdateModel:
-    """The price of each call of the on-chip fixed-lag window's design
-    (``<name>_stream``): the accelerator plan of the emitted template
-    (:func:`fgc_backends.hls.emitter.accel_plan`, the design ``config`` emits) for the solve's
-    phases, each priced per execution times how often the update ran it, and the stream
-    section's own loops, priced as accel.cpp.jinja counts them: the keyframe's words in, the
-    shift, the marginalisation (a linearisation, slot 0's step on unit set 0 at μ = 0, τ's signs,
-    mean and words) and the window out. Every figure is a model estimate of the emitted
-    structure; :meth:`price` takes the update's event counts when a counting C simulation gives
-    them, else derives them from its iterations (no rejected steps)."""
-
-    def __init__(self, layout: WindowLayout, config):
-        from fgc_backends.hls.emitter import accel_plan, for_program
-        from fgc_backends.hls.plan import (
-            Loop,
-            Phase,
-            Process,
-            _tables,
-            kernel_loop,
-            kernel_timing,
-            phase_cycles,
-            plan_sizes,
-            unit_sets,
-        )
-        from fgc_backends.hls.units.qr import commit_loops, stack_loops
-
-        self.layout = layout
-        t = layout.template
-        config = for_program(t, config)
-        self.plan = plan = accel_plan(t, config)
-        self.clock_mhz = plan.clock_mhz
-        self.group = plan_groups(plan)
-        kt = kernel_timing(plan.ops)
-        les = plan.target.ops("float32" if config.linear_cxx == "float" else "float64")
-        lt = kernel_timing(les)
-
-        def cycles(*loops):
-            return phase_cycles(Phase("x", False, (Process("x", "x", tuple(loops)),)))
-
-        ctx = layout.context(config.linear_cxx, config.part)
-        self.layout_marginal = ctx["marginal"]
-        self.les, self._held, self._qr = les, [], {}
-        self.sets = max(1, unit_sets(plan))
-        if self.qr_cycles(frozenset(), True) != self.group["qr"]:
-            raise OnChipWindowError("internal error: the model's QR steps are not the plan's")
-        n_x, n_t = layout.n_x, layout.kf_dim
-        self.keyframe_in = [cycles(kernel_loop("x", layout.kf_words, "move", kt),
-                                   kernel_loop("d", len(d), "move", kt))
-                            for d in layout.new_dest]
-        self.shift = cycles(kernel_loop("x", len(layout.x_moves), "move", kt),
-                            kernel_loop("d", len(layout.data_moves), "move", kt))
-        self.x_out = cycles(kernel_loop("x", n_x, "move", kt))
-        self.x_out_kf = cycles(kernel_loop("x", layout.kf_words, "move", kt))
-        if layout.kept:  # the kept Bayes net's loops, as accel.cpp.jinja counts them
-            n, kf = n_t, layout.kf_words
-            move_kf = cycles(kernel_loop("x", kf, "move", kt))
-            one = cycles(kernel_loop("pass", 1, "retract", kt))  # a Log or a retraction
-            divide = cycles(kernel_loop("divide", 1, "div", lt))
-            difference = phase_cycles(Phase("x", False, (Process("x", "x", (
-                Loop("difference", n, 1, kt["div"][1]),)),)))
-            mv_ii = layout.matvec_ii(config.linear_cxx, config.part)
-            matvec = phase_cycles(Phase("x", False, (Process("x", "x", (Loop(
-                "matvec", n * n, mv_ii, lt["acc"][1]),)),)))
-            scatter = cycles(kernel_loop("scatter", n, "scatter", lt))
-            move_n = cycles(kernel_loop("row", n, "move", kt))
-            columns = sum(cycles(Loop("column", i, 1, lt["acc"][1])) for i in range(1, n))
-            self.kept_reexpress = (move_kf + one + n * (4 * one + difference)
-                                   + matvec + scatter + n * (move_n + matvec) + move_kf)
-            self.kept_store = cycles(kernel_loop("cond", n * (2 * n + 1), "move", kt)) + move_kf
-            self.kept_walk_each = (one + matvec + scatter + n * divide + columns + one
-                                   + move_kf)
-            self.kept_walk_base = move_kf
-
-        # the marginalisation but its QR step (priced per update on its non-zero rows): the
-        # linearisation, slot 0's stack and commit, NF's rows copied, write_tau
-        self.marginal = 0
-        if ctx["marginal"]:
-            s = layout.leaf_step
-            tables = _tables(t)
-            self.write_tau = cycles(kernel_loop("sign", n_t * (n_t + 1), "max", kt),
-                                    kernel_loop("mean", n_t * (n_t - 1) // 2, "acc", lt),
-                                    kernel_loop("divide", n_t, "div", lt),
-                                    kernel_loop("tau_out", layout.kf_words + n_t
-                                                + n_t * (n_t + 1) // 2 + 2, "move", kt))
-            self.marginal = (self.group["factor_jacobian"] + self.group["gradient"]
-                             + cycles(*stack_loops(tables, s, max(1, t.solver.units),
-                                                   plan_sizes(t)["MAX_W"],
-                                                   t.solver.method == "lm", kt))
-                             + cycles(*commit_loops(tables, s, kt, False))
-                             + cycles(kernel_loop("rows", n_t * (n_t + 1), "move", kt))
-                             + self.write_tau)
-        self.batch = None
-        if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
-            b = layout.batch
-            bplan = accel_plan(b.template, config)
-            n, kf = n_t, layout.kf_words
-            words = n * (2 * n + 1)
-            self.batch = {
-                "layout": b, "plan": bplan, "group": plan_groups(bplan),
-                "sets": max(1, unit_sets(bplan)),
-                "in": [cycles(kernel_loop("x", kf, "move", kt), kernel_loop("d", len(d), "move",
-                                                                              kt))
-                       for d in b.new_dest],
-                "move": lambda words_: cycles(kernel_loop("x", words_, "move", kt)),
-                "words": words}
-
-    # -- the QR units on the rows that are non-zero in this update -----------------------------
-    def zero_factors(self, keyframe: int) -> frozenset:
-        """The template factors (indices ``Member.t``) whose rows are zero during keyframe
-        ``keyframe``'s solve: graph factors the window does not hold (not arrived, or gone
-        with no counterpart one keyframe on) and the priors without information (every slot's
-        but slot 0's once τ is there, and the held slots' during the first W updates)."""
-        lay = self.layout
-        while len(self._held) <= keyframe:
-            j = len(self._held)
-            self._held.append(lay.check_holds(self._held[-1] if self._held else None, j))
-        held = self._held[keyframe]
-        m = min(keyframe, lay.size - 1)
-        zero = {mem.t for mem, h in zip(lay.members, held, strict=True)
-                if not mem.prior and h is None}
-        for mem in lay.members:
-            if not mem.prior:
-                continue
-            s = mem.slots[0]
-            tau = s == 0 and keyframe >= lay.size and self.layout_marginal
-            if s <= m and not tau:
-                zero.add(mem.t)  # unused: zero square-root information (held slots: unit)
-        return frozenset(zero)
-
-    def qr_cycles(self, zero: frozenset, damped: bool, leaf_only: bool = False) -> int:
-        """The QR unit sets' cycles of one linear solve (every level's DATAFLOW regions, the
-        plan's assignment of a level's steps to the sets) with the rows of the ``zero``
-        factors and, unless ``damped``, the √μ rows zero: the Evaluate unit skips a row that is
-        zero in its column (fgc_qr.h), so these rows cost nothing. ``leaf_only``: slot 0's
-        step alone on unit set 0 (the marginalisation)."""
-        key = (zero, damped, leaf_only)
-        if key not in self._qr:
-            self._qr[key] = qr_solve_cycles(self.layout.template, zero, damped, self.sets,
-                                            self.les,
-                                            self.layout.leaf_step if leaf_only else None)
-        return self._qr[key]
-
-    def design_plan(self):
-        """The whole on-chip design as one plan: the window kernel's plan, the batch kernel's
-        units, memories and channels (a second accelerator of the same design, its names
-        prefixed ``batch_``) and the memories the stream section adds
-        (:func:`fgc_backends.hls.units.memories.stream_memories`)."""
-        from fgc_backends.hls.plan import merge_plans
-        from fgc_backends.hls.units.memories import stream_memories
-
-        batch = self.batch
-        return merge_plans(self.plan, batch["plan"] if batch is not None else None,
-                           stream_memories(self.layout, self.plan.ops.word_bits,
-                                           self.les.word_bits,
-                                           batch["words"] if batch is not None else 0))
-
-    def resources(self) -> dict:
-        """The whole on-chip design's DSP and BRAM36 (model estimates): ``plan_cost`` of
-        :meth:`design_plan`, and its parts: the window kernel, the batch kernel, the stream
-        memories."""
-        from fgc_backends.hls.plan import plan_cost
-
-        design = plan_cost(self.design_plan())
-        window = plan_cost(self.plan)
-        parts = {"window kernel": (window.dsp, window.bram36)}
-        if self.batch is not None:
-            bcost = plan_cost(self.batch["plan"])
-            parts["batch kernel"] = (bcost.dsp, bcost.bram36)
-        parts["stream memories"] = (0, design.bram36 - sum(b for _, b in parts.values()))
-        device = self.plan.target.device
-        return {"dsp": design.dsp, "bram36": design.bram36, "parts": parts,
-                "fits": design.dsp <= device.dsp and design.bram36 <= device.bram36,
-                "part": self.plan.options.part}
-
-    def _kept_out_terms(self, keyframe: int) -> list:
-        from fgc_backends.hls.update import Term
-
-        first = max(0, keyframe - self.layout.window)
-        if not (self.layout.kept and first):
-            return []
-        return [Term("x_kept_out", first * self.layout.kf_words + 1, 1, False,
-                     "the kept keyframes' estimates out, a word a cycle")]
-
-    def batch_zero_factors(self, j: int) -> frozenset:
-        """The batch template's factors with zero rows at a batch step at keyframe j: factors
-        not arrived (past j) or absent from the stream, and every prior of slots 0 … j (no
-        information; the slots past j hold unit priors)."""
-        b = self.batch["layout"]
-        zero = set()
-        for mem in b.members:
-            if mem.prior:
-                if mem.slots[0] <= j:
-                    zero.add(mem.t)
-            elif mem.hi > j or b.by_signature.get((mem.kind, mem.cells)) is None:
-                zero.add(mem.t)
-        return frozenset(zero)
-
-    def _batch_terms(self, j: int, ev: dict) -> list:
-        """A batch step's terms, as accel.cpp.jinja's batch_step and the batch kernel's
-        batch_solve count them."""
-        from fgc_backends.hls.update import Term
-
-        batch, lay = self.batch, self.layout
-        b, group, move = batch["layout"], batch["group"], batch["move"]
-        kf, words = lay.kf_words, batch["words"]
-        zero = self.batch_zero_factors(j)
-        qr_damped = qr_solve_cycles(b.template, zero, True, batch["sets"], self.les)
-        qr_store = qr_solve_cycles(b.template, zero, False, batch["sets"], self.les)
-        terms = [Term("batch_gather", move((j + 1) * kf), 2, False,
-                      f"keyframes 0 … {j}'s estimates to the batch kernel (gathered, copied in)")]
-        for g in sorted(group):
-            trigger = PHASE_TRIGGER.get(g)
-            times = ev.get(trigger, 0) if trigger else 0
-            if times:
-                each = qr_damped if g == "qr" else group[g]
-                terms.append(Term(f"batch_{g}", each, times, False,
-                                  f"the batch kernel's {g} phase, once per {trigger}"))
-        store = (group["factor_jacobian"] + group["gradient"] + group["qr_stack"] + qr_store
-                 + group["qr_commit"])
-        terms.append(Term("batch_store", store, 1, False,
-                          f"keyframes 0 … {j} linearised at the optimum and eliminated serially "
-                          "at μ = 0 (their conditionals and the factors they pass)"))
-        out = move((j + 1) * kf) + move(j * words) + (
-            move(lay.kf_dim * (lay.kf_dim + 1)) if j >= lay.window else 0) + move((j + 1) * kf)
-        terms.append(Term("batch_out", out, 1, False,
-                          "the optimum, the conditionals and τ out of the batch kernel, the "
-                          "optimum scattered to the kept memory and the window"))
-        if j >= lay.window:
-            kept = j - lay.window + 1
-            terms.append(Term("batch_kept", kept * move(words) + move(kept * kf)
-                              + self.write_tau, 1, False,
-                              f"the kept net rebuilt: keyframes 0 … {j - lay.window}'s "
-                              "conditionals and points, τ written for the next window"))
-        return terms
-
-    @staticmethod
-    def events_of(iterations: int, rejected: int = 0, noise: int = 0) -> dict:
-        """The solve's event counts from its iterations: each iteration a linearisation, a
-        solve, a retraction, a cost pass and (but the last, which converged) an accepted step;
-        the start's cost pass; ``rejected`` trial steps add a solve, a retraction and a cost
-        pass each."""
-        k = int(iterations)
-        return {"linearize": k, "solve": k + rejected, "retract": k + rejected,
-                "cost": 1 + k + rejected, "accept": max(0, k - 1), "noise": noise}
-
-    def price(self, keyframe: int, iterations: int, events: dict | None = None):
-        """The :class:`~fgc_backends.hls.update.UpdatePrice` of keyframe ``keyframe``'s call."""
-        from fgc_backends.hls.update import Term, UpdatePrice
-
-        lay = self.layout
-        m = min(keyframe, lay.size - 1)
-        first = max(0, keyframe - lay.window)
-        ev = dict(events) if events is not None else self.events_of(iterations)
-        terms = [Term("keyframe_in", self.keyframe_in[m], 1, False,
-                      f"keyframe {keyframe}'s storage and {len(lay.new_dest[m])} data words in "
-                      f"(slot {m})")]
-        if keyframe >= lay.size:
-            terms.append(Term("shift", self.shift, 1, False,
-                              "every slot down one: its variables, its factors' words, τ"))
-        batch = self.batch
-        if batch is not None:
-            if keyframe >= lay.size:
-                terms.append(Term("leave", self.x_out_kf, 1, False,
-                                  "the leaving keyframe's estimate into the kept memory"))
-            if keyframe < batch["layout"].size:
-                terms.append(Term("batch_in", batch["in"][keyframe], 1, False,
-                                  "the keyframe's words into the batch kernel's slot"))
-            if keyframe in batch["layout"].keyframes:
-                terms += self._batch_terms(keyframe, ev)
-                terms += self._kept_out_terms(keyframe)
-                terms.append(Term("x_out", self.x_out, 1, False, "the window's storage out"))
-                return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
-                                   tuple(terms), STREAM_SOURCE)
-        zero = self.zero_factors(keyframe)
-        for g in sorted(self.group):
-            trigger = PHASE_TRIGGER.get(g)
-            if trigger is None:
-                continue
-            times = ev.get(trigger, 0)
-            each = self.qr_cycles(zero, True) if g == "qr" else self.group[g]
-            if times:
-                terms.append(Term(g, each, times, False,
-                                  f"the window's {g} phase, once per {trigger}" + (
-                                      " (on its rows non-zero in this update)" if g == "qr"
-                                      else "")))
-        if m == lay.window and self.marginal:
-            marginal = self.marginal + self.qr_cycles(zero, False, leaf_only=True)
-            terms.append(Term("marginal", marginal, 1, False,
-                              "keyframe leaving: the window linearised at its optimum, slot 0's "
-                              "QR step at μ = 0 on unit set 0, τ's signs, mean and words"))
-        if lay.kept:
-            if first > 0:
-                terms.append(Term("kept_reexpress", self.kept_reexpress, 1, False,
-                                  f"keyframe {first - 1}'s kept conditional re-expressed at "
-                                  "its parent's new estimate: Log, its central-difference "
-                                  "Jacobian (4n + 1 datapath passes), S·Log and S·J"))
-            if m == lay.window and self.marginal:
-                terms.append(Term("kept_store", self.kept_store, 1, False,
-                                  f"keyframe {first}'s conditional (R | S | d) and its "
-                                  "linearisation points kept"))
-            terms.append(Term("kept_walk", self.kept_walk_base + first * self.kept_walk_each, 1,
-                              False, f"the walk back through {first} kept conditionals: per "
-                                     "keyframe a Log, S·Log, R⁻¹ by rows, a retraction"))
-            terms += self._kept_out_terms(keyframe)
-        terms.append(Term("x_out", self.x_out, 1, False, "the window's storage out"))
-        return UpdatePrice(keyframe, "incremental" if lay.kept else "fixed-lag", first,
-                           int(iterations),
-                           self.clock_mhz, tuple(terms), STREAM_SOURCE)

@@ -28,7 +28,7 @@ update's window (a model estimate of an approximation: the window's dense margin
 priced as the chain's own priors); the simulator's wall time is reported beside it.
 :func:`update_model` (``fgc stream --backend hls``) prices each update as the plan's units would
 run it: the window's factors and clusters only, the kept conditionals, batch keyframes as batch
-iterations of their Program (:mod:`fgc_backends.hls.update`, docs/hls.md).
+iterations of their Program (:mod:`fgc_backends.hls.plan.update`, docs/hls.md).
 """
 
 from __future__ import annotations

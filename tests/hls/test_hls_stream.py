@@ -1,5 +1,5 @@
 """The accelerator plan's price of a stream's keyframe updates (issue 19:
-``fgc_backends.hls.update``, ``fgc stream --backend hls``).
+``fgc_backends.hls.plan.update``, ``fgc stream --backend hls``).
 
 The update model composes the plan's own loops: a window spanning the whole chain, eliminated
 serially, must cost exactly what ``plan_cost`` says for the batch Program with the serial
@@ -34,7 +34,7 @@ from fgc.app.streaming import (
 from fgc.compile import compile_graph
 from fgc.ir.program import SolverConfig
 from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles, plan_cost
-from fgc_backends.hls.update import NOT_EMITTED, UpdateModel, UpdateModelError
+from fgc_backends.hls.plan.update import NOT_EMITTED, UpdateModel, UpdateModelError
 
 lio = example("lio")
 

@@ -38,8 +38,9 @@ from fgc.interop import oracles
 from fgc.interop.to_gtsam import to_gtsam
 from fgc.ir.datafile import problem_data
 from fgc_backends.hls.config import HlsConfig
+from fgc_backends.hls.plan.stream import WindowUpdateModel
 from fgc_backends.hls.streaming import OnChipFixedLagStream, OnChipIncrementalStream
-from fgc_backends.hls.window import OnChipWindowError, WindowLayout, WindowUpdateModel
+from fgc_backends.hls.window import OnChipWindowError, WindowLayout
 from fgc_backends.native.streaming import FixedLagStream, IncrementalStream
 
 TOL = 1e-10  # tangent-space distance per variable, on-chip csim (double) vs native stream

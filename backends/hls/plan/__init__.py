@@ -10,7 +10,9 @@ plan (:mod:`.cost`).
 
 Modules: :mod:`.model` (the data model), :mod:`.options` (design options), :mod:`.loops` (loop
 rules shared by the units), :mod:`.assemble` (the units → a plan), :mod:`.cost` (the pricer),
-:mod:`.report` (phase groups, the summary, the emitted process network). This package re-exports
+:mod:`.report` (phase groups, the summary, the emitted process network); :mod:`.stream` and
+:mod:`.update` price a stream's updates (the on-chip design; the host-kept path) and are imported
+by their users, not here. This package re-exports
 their public names (and the units' loop constructors, for the update and window models).
 
 The HLS emitter prints this plan (accel.cpp.jinja): its units are the emitted processes, its

@@ -59,7 +59,7 @@ class Process:
     def fill(self) -> int:
         return self.loops[0].depth if self.loops else 0
 
-PHASE_PER = ("iteration", "call", "rejection")
+PHASE_PER = ("iteration", "call", "rejection", "stream")
 
 
 @dataclass(frozen=True)
@@ -70,7 +70,8 @@ class Phase:
     linear: bool = False  # part of the linear-equation solver
     # how often it runs: "iteration" (once an iteration: in Cost.cycles), "call" (once per
     # accelerator call: the top's copies in and out), "rejection" (when a trial step does not
-    # lower the cost: the rounding-noise pass); the last two are in Cost.other_cycles
+    # lower the cost: the rounding-noise pass), "stream" (the on-chip stream section's loops, once
+    # per update that runs them: plan/stream.py); all but the first are in Cost.other_cycles
     per: str = "iteration"
 
 

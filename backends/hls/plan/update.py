@@ -49,7 +49,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
 from types import SimpleNamespace
 
 import numpy as np
@@ -70,6 +69,7 @@ from fgc_backends.hls.plan import (
     plan_cost,
     plan_sizes,
 )
+from fgc_backends.hls.plan.stream import Term, UpdatePrice
 from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops
 from fgc_backends.hls.units.cholesky import assemble_loops, cpe_step_loops, hgc_loops
 from fgc_backends.hls.units.datapath import gradient_loops
@@ -88,78 +88,6 @@ MODES = ("incremental", "batch", "fixed-lag")
 class UpdateModelError(FgcError):
     """An update the model cannot price (not a chain, a mode it does not know, a window
     outside the stream)."""
-
-
-@dataclass(frozen=True)
-class Term:
-    """One priced part of an update: ``cycles`` in all (``each`` × ``times``), ``assumed`` when no
-    emitted unit computes it (then ``text`` says what is assumed)."""
-
-    name: str
-    each: int
-    times: int
-    assumed: bool
-    text: str
-
-    @property
-    def cycles(self) -> int:
-        return self.each * self.times
-
-
-@dataclass(frozen=True)
-class UpdatePrice:
-    """A keyframe update's model price: its terms, the plan's total and the assumed extras."""
-
-    keyframe: int
-    mode: str
-    first: int
-    iterations: int
-    clock_mhz: float
-    terms: tuple[Term, ...]
-    source: str = ("accelerator plan update model (fgc_backends.hls.update; model estimate; "
-                   "incremental mode not emitted)")
-
-    @property
-    def window(self) -> int:
-        """Clusters the update re-eliminated."""
-        return self.keyframe - self.first + 1
-
-    @property
-    def cycles(self) -> int:
-        """The plan's terms (assumed terms excluded)."""
-        return sum(t.cycles for t in self.terms if not t.assumed)
-
-    @property
-    def assumed_cycles(self) -> int:
-        return sum(t.cycles for t in self.terms if t.assumed)
-
-    @property
-    def latency_ms(self) -> float:
-        return self.cycles / (self.clock_mhz * 1e3)
-
-    @property
-    def assumed_ms(self) -> float:
-        return self.assumed_cycles / (self.clock_mhz * 1e3)
-
-    @property
-    def latency_with_assumed_ms(self) -> float:
-        return (self.cycles + self.assumed_cycles) / (self.clock_mhz * 1e3)
-
-    def term(self, name: str) -> Term:
-        for t in self.terms:
-            if t.name == name:
-                return t
-        raise KeyError(name)
-
-    def as_dict(self) -> dict:
-        return {"source": self.source,
-                "keyframe": self.keyframe, "mode": self.mode, "first": self.first,
-                "window": self.window, "iterations": self.iterations,
-                "cycles": self.cycles, "latency_ms": self.latency_ms,
-                "assumed_cycles": self.assumed_cycles,
-                "latency_with_assumed_ms": self.latency_with_assumed_ms,
-                "terms": [{"name": t.name, "cycles": t.cycles, "each": t.each, "times": t.times,
-                           "assumed": t.assumed, "text": t.text} for t in self.terms]}
 
 
 class UpdateModel:

@@ -1,0 +1,457 @@
+"""The price of a stream's updates on the on-chip design (issue 31: one pricer).
+
+The on-chip stream (:mod:`fgc_backends.hls.window`: the fixed-lag window, or the incremental
+plan's window with its kept Bayes net and batch kernel) is one design: the window kernel's plan,
+the batch kernel's units and memories beside it and the stream section's memories
+(:meth:`WindowUpdateModel.design_plan`). Its price is that plan's: the stream section's own loops
+(the keyframe's words in, the shift, the marginalisation but its QR step, the kept net's
+re-expression, store and walk, the batch kernel's copies, the window out) are phases of the design
+plan run once per update (``Phase.per == "stream"``), and each update's QR steps on the rows
+non-zero in that update are the plan's QR phases on that update's stacked patterns; every figure
+is :func:`~fgc_backends.hls.plan.plan_cost` of a phase of the design, composed per update by how
+often the update ran it (:meth:`WindowUpdateModel.price`). The layouts say which words move and
+which rows are zero; this module prices them. :class:`Term` and :class:`UpdatePrice` are the
+priced record both stream models return (:mod:`fgc_backends.hls.plan.update` prices the host-kept
+path of a Cholesky design).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from fgc_backends.cost.structure import entering_blocks, stacked_pattern, step_columns
+from fgc_backends.hls.plan.cost import merge_plans, plan_cost
+from fgc_backends.hls.plan.loops import _assign, _tables, kernel_loop, kernel_timing, plan_sizes
+from fgc_backends.hls.plan.model import Loop, Phase, PlanError, Process
+from fgc_backends.hls.plan.report import PHASE_TRIGGER, plan_groups, unit_sets
+from fgc_backends.hls.units.memories import stream_memories
+from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
+
+STREAM_SOURCE = ("accelerator plan of the emitted on-chip fixed-lag window "
+                 "(fgc_backends.hls.plan.stream; model estimate)")
+
+
+@dataclass(frozen=True)
+class Term:
+    """One priced part of an update: ``cycles`` in all (``each`` × ``times``), ``assumed`` when no
+    emitted unit computes it (then ``text`` says what is assumed)."""
+
+    name: str
+    each: int
+    times: int
+    assumed: bool
+    text: str
+
+    @property
+    def cycles(self) -> int:
+        return self.each * self.times
+
+
+@dataclass(frozen=True)
+class UpdatePrice:
+    """A keyframe update's model price: its terms, the plan's total and the assumed extras."""
+
+    keyframe: int
+    mode: str
+    first: int
+    iterations: int
+    clock_mhz: float
+    terms: tuple[Term, ...]
+    source: str = ("accelerator plan update model (fgc_backends.hls.plan.update; model estimate; "
+                   "incremental mode not emitted)")
+
+    @property
+    def window(self) -> int:
+        """Clusters the update re-eliminated."""
+        return self.keyframe - self.first + 1
+
+    @property
+    def cycles(self) -> int:
+        """The plan's terms (assumed terms excluded)."""
+        return sum(t.cycles for t in self.terms if not t.assumed)
+
+    @property
+    def assumed_cycles(self) -> int:
+        return sum(t.cycles for t in self.terms if t.assumed)
+
+    @property
+    def latency_ms(self) -> float:
+        return self.cycles / (self.clock_mhz * 1e3)
+
+    @property
+    def assumed_ms(self) -> float:
+        return self.assumed_cycles / (self.clock_mhz * 1e3)
+
+    @property
+    def latency_with_assumed_ms(self) -> float:
+        return (self.cycles + self.assumed_cycles) / (self.clock_mhz * 1e3)
+
+    def term(self, name: str) -> Term:
+        for t in self.terms:
+            if t.name == name:
+                return t
+        raise KeyError(name)
+
+    def as_dict(self) -> dict:
+        return {"source": self.source,
+                "keyframe": self.keyframe, "mode": self.mode, "first": self.first,
+                "window": self.window, "iterations": self.iterations,
+                "cycles": self.cycles, "latency_ms": self.latency_ms,
+                "assumed_cycles": self.assumed_cycles,
+                "latency_with_assumed_ms": self.latency_with_assumed_ms,
+                "terms": [{"name": t.name, "cycles": t.cycles, "each": t.each, "times": t.times,
+                           "assumed": t.assumed, "text": t.text} for t in self.terms]}
+
+
+def _stream_phase(name: str, *loops: Loop) -> Phase:
+    """One of the stream section's sequential loop runs, once per update that runs it."""
+    return Phase(f"stream_{name}", False, (Process(f"stream_{name}", "stream", tuple(loops)),),
+                 per="stream")
+
+
+def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
+                    unit: frozenset = frozenset()) -> tuple[Phase, ...]:
+    """The QR unit sets' DATAFLOW regions of one linear solve of template ``t`` (every level's,
+    the plan's assignment of a level's steps to ``sets`` unit sets) with the rows of the
+    ``zero`` template factors and, unless ``damped``, the √μ rows zero: the Evaluate unit skips
+    a row that is zero in its column (fgc_qr.h), so these rows cost nothing. The ``unit``
+    template factors (priors holding a slot under R = I at its linearisation point: their
+    whitened rows are the identity) have one non-zero a row, on their own tangent direction.
+    ``leaf``: that step alone on unit set 0."""
+    lm = t.solver.method == "lm"
+    units = max(1, t.solver.units)
+    procs, passed = {}, {}
+    for st in t.schedule.steps:
+        pattern = stacked_pattern(t, st, lm).copy()
+        cols = step_columns(t, st)
+        row = 0
+        for i in entering_blocks(t, st):
+            spec = t.factors[i]
+            block = t.blocks[spec.block]
+            for member, ti in zip(block.members, spec.factors, strict=True):
+                lo, hi = row + member.rows[0], row + member.rows[1]
+                if ti in zero:
+                    pattern[lo:hi] = False
+                elif ti in unit:
+                    own = [c for p in member.positions for c in cols[spec.keys[p]]]
+                    if len(own) != hi - lo:
+                        raise PlanError(f"internal error: a unit prior of {hi - lo} rows on "
+                                        f"{len(own)} columns")
+                    pattern[lo:hi] = False
+                    pattern[np.arange(lo, hi), own] = True
+            row += block.residual_dim
+        for child in st.children:  # a child's new factor: its rows that are zero in value
+            for i, zero_row in enumerate(passed.get(child, ())):
+                if zero_row:
+                    pattern[row + i] = False
+            row += t.schedule.steps[child].new_factor_rows
+        if lm and not damped:
+            pattern[pattern.shape[0] - st.frontal_dim:] = False
+        passed[st.index] = _zero_passed_rows(pattern, st.frontal_dim, st.new_factor_rows)
+        if leaf is not None and st.index != leaf:
+            continue
+        procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
+            pattern, st.frontal_dim, units, les, name=f"s{st.index}")))
+    if leaf is not None:
+        return (Phase("qr_leaf", True, (procs[leaf],), linear=True),)
+    phases = []
+    for li, level in enumerate(t.schedule.levels):
+        for c in range(0, len(level), sets):
+            chunk = _assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
+            phases.append(Phase(f"qr_level{li}_{c}", True, chunk, linear=True))
+    return tuple(phases)
+
+
+def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
+    """Which of the ``passed`` rows of the new factor a step hands its parent are zero in value:
+    the step's rows after QR (the fill rule of :func:`~fgc_backends.hls.units.qr.qr_unit_loops`:
+    a reflection's active rows take the union of their patterns right of its column), rows
+    ``frontal`` … ``frontal + passed - 1`` over the separator's columns. A window's held or not
+    yet arrived slots pass such rows (no factor reaches their separator): the parent's
+    Evaluate skips them."""
+    nz = np.asarray(pattern, dtype=bool).copy()
+    rows, cols = nz.shape
+    for j in range(min(rows, cols)):
+        act = [i for i in range(j, rows) if nz[i, j]]
+        if not act:
+            continue
+        act = sorted(set(act) | {j})
+        nz[np.ix_(act, range(j + 1, cols))] = nz[act, j + 1:].any(axis=0)
+        nz[act, j] = False
+        nz[j, j] = True
+    return [frontal + i >= rows or not nz[frontal + i, frontal:].any() for i in range(passed)]
+
+
+def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
+                    unit: frozenset = frozenset()) -> int:
+    """``plan_cost`` of ``plan`` (a design holding the QR unit sets) running
+    :func:`qr_solve_phases` as its iteration."""
+    return plan_cost(replace(plan, phases=qr_solve_phases(t, zero, damped, sets, les, leaf,
+                                                          unit))).cycles
+
+
+class WindowUpdateModel:
+    """The price of each call of the on-chip window's design (``<name>_stream``): the
+    accelerator plan of the emitted template (:func:`fgc_backends.hls.emitter.accel_plan`, the
+    design ``config`` emits) for the solve's phases, each priced per execution times how often
+    the update ran it, and the stream section's own loops as phases of the same design
+    (:meth:`design_plan`), priced as accel.cpp.jinja counts them: the keyframe's words in, the
+    shift, the marginalisation (a linearisation, slot 0's step on unit set 0 at μ = 0, τ's signs,
+    mean and words) and the window out. Every figure is a model estimate of the emitted
+    structure; :meth:`price` takes the update's event counts when a counting C simulation gives
+    them, else derives them from its iterations (no rejected steps)."""
+
+    def __init__(self, layout, config):
+        from fgc_backends.hls.emitter import accel_plan, for_program
+
+        self.layout = layout
+        t = layout.template
+        config = for_program(t, config)
+        self.plan = plan = accel_plan(t, config)
+        self.clock_mhz = plan.clock_mhz
+        self.group = plan_groups(plan)
+        self.les = plan.target.ops("float32" if config.linear_cxx == "float" else "float64")
+        self._qr = {}
+        self.sets = max(1, unit_sets(plan))
+        if self.qr_cycles(frozenset(), True) != self.group["qr"]:
+            raise PlanError("internal error: the stream model's QR steps are not the plan's")
+        ctx = layout.context(config.linear_cxx, config.part)
+        self.layout_marginal = ctx["marginal"]
+        self.batch = None
+        if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
+            bplan = accel_plan(layout.batch.template, config)
+            self.batch = {"layout": layout.batch, "plan": bplan, "group": plan_groups(bplan),
+                          "sets": max(1, unit_sets(bplan))}
+        phases = self._stream_phases(kernel_timing(plan.ops), kernel_timing(self.les),
+                                     layout.matvec_ii(config.linear_cxx, config.part))
+        self._design = replace(self._merged(), phases=self.plan.phases + phases)
+        self.stream = dict(plan_cost(self._design).other_cycles)
+
+    def _stream_phases(self, kt: dict, lt: dict, mv_ii: int) -> tuple[Phase, ...]:
+        """The stream section's loops (accel.cpp.jinja's stream top), one phase per part an
+        update runs whole."""
+        lay = self.layout
+        n, kf = lay.kf_dim, lay.kf_words
+        t = lay.template
+
+        def move(name, words, repeat=1):
+            return kernel_loop(name, words, "move", kt, repeat)
+
+        out = [_stream_phase(f"keyframe_in{m}", move("x", kf), move("d", len(d)))
+               for m, d in enumerate(lay.new_dest)]
+        out += [_stream_phase("shift", move("x", len(lay.x_moves)),
+                              move("d", len(lay.data_moves))),
+                _stream_phase("x_out", move("x", lay.n_x)),
+                _stream_phase("x_out_kf", move("x", kf))]
+        write_tau = (kernel_loop("sign", n * (n + 1), "max", kt),
+                     kernel_loop("mean", n * (n - 1) // 2, "acc", lt),
+                     kernel_loop("divide", n, "div", lt),
+                     move("tau_out", kf + n + n * (n + 1) // 2 + 2))
+        if lay.kept:  # the kept Bayes net's loops, as accel.cpp.jinja counts them
+            one = kernel_loop("pass", 1, "retract", kt)  # a Log or a retraction
+            matvec = Loop("matvec", n * n, mv_ii, lt["acc"][1])
+            scatter = kernel_loop("scatter", n, "scatter", lt)
+            columns = tuple(Loop("column", i, 1, lt["acc"][1]) for i in range(1, n))
+            out += [_stream_phase("kept_reexpress", move("x", kf), one,
+                                  replace(one, repeat=4 * n),
+                                  Loop("difference", n, 1, kt["div"][1], n), matvec, scatter,
+                                  move("row", n, n), replace(matvec, repeat=n), move("x", kf)),
+                    _stream_phase("kept_store", move("cond", n * (2 * n + 1)), move("x", kf)),
+                    _stream_phase("kept_walk_each", one, matvec, scatter,
+                                  kernel_loop("divide", 1, "div", lt, n), *columns, one,
+                                  move("x", kf)),
+                    _stream_phase("kept_walk_base", move("x", kf))]
+        if self.layout_marginal:  # the marginalisation but its linearisation and QR step
+            s = lay.leaf_step
+            tables = _tables(t)
+            out += [_stream_phase("marginal", *stack_loops(tables, s, max(1, t.solver.units),
+                                                           plan_sizes(t)["MAX_W"],
+                                                           t.solver.method == "lm", kt),
+                                  *commit_loops(tables, s, kt, False),
+                                  move("rows", n * (n + 1)), *write_tau)]
+        if self.batch is not None:
+            b = lay.batch
+            words = n * (2 * n + 1)
+            out += [_stream_phase(f"batch_in{c}", move("x", kf), move("d", len(d)))
+                    for c, d in enumerate(b.new_dest)]
+            for j in b.keyframes:
+                out.append(_stream_phase(f"batch{j}_gather", move("x", (j + 1) * kf)))
+                out.append(_stream_phase(f"batch{j}_out", move("x", (j + 1) * kf),
+                                         move("x", j * words),
+                                         *((move("x", n * (n + 1)),) if j >= lay.window
+                                           else ()),
+                                         move("x", (j + 1) * kf)))
+                if j >= lay.window:
+                    kept = j - lay.window + 1
+                    out.append(_stream_phase(f"batch{j}_kept", move("x", words, kept),
+                                             move("x", kept * kf), *write_tau))
+        return tuple(out)
+
+    def _merged(self):
+        """The window kernel's plan, the batch kernel's units, memories and channels (a second
+        accelerator of the same design, its names prefixed ``batch_``) and the memories the
+        stream section adds (:func:`fgc_backends.hls.units.memories.stream_memories`)."""
+        batch = self.batch
+        n = self.layout.kf_dim
+        return merge_plans(self.plan, batch["plan"] if batch is not None else None,
+                           stream_memories(self.layout, self.plan.ops.word_bits,
+                                           self.les.word_bits,
+                                           n * (2 * n + 1) if batch is not None else 0))
+
+    def design_plan(self):
+        """The whole on-chip design as one plan (:meth:`_merged`) with the stream section's
+        phases (``per == "stream"``)."""
+        return self._design
+
+    # -- the QR units on the rows that are non-zero in this update -----------------------------
+    def qr_cycles(self, zero: frozenset, damped: bool, leaf_only: bool = False,
+                  unit: frozenset = frozenset()) -> int:
+        """The QR unit sets' cycles of one linear solve with the rows of the ``zero`` factors
+        and, unless ``damped``, the √μ rows zero, the ``unit`` priors' rows the identity
+        (:func:`qr_solve_phases`). ``leaf_only``: slot 0's step alone on unit set 0 (the
+        marginalisation)."""
+        key = (zero, damped, leaf_only, unit)
+        if key not in self._qr:
+            self._qr[key] = qr_solve_cycles(self.plan, self.layout.template, zero, damped,
+                                            self.sets, self.les,
+                                            self.layout.leaf_step if leaf_only else None, unit)
+        return self._qr[key]
+
+    def zero_factors(self, keyframe: int) -> frozenset:
+        """The window's template factors with zero rows during keyframe ``keyframe``'s solve
+        (:meth:`fgc_backends.hls.window.WindowLayout.zero_factors`)."""
+        return self.layout.zero_factors(keyframe, self.layout_marginal)
+
+    def resources(self) -> dict:
+        """The whole on-chip design's DSP and BRAM36 (model estimates): ``plan_cost`` of
+        :meth:`design_plan`, and its parts: the window kernel, the batch kernel, the stream
+        memories."""
+        design = plan_cost(self._design)
+        window = plan_cost(self.plan)
+        parts = {"window kernel": (window.dsp, window.bram36)}
+        if self.batch is not None:
+            bcost = plan_cost(self.batch["plan"])
+            parts["batch kernel"] = (bcost.dsp, bcost.bram36)
+        parts["stream memories"] = (0, design.bram36 - sum(b for _, b in parts.values()))
+        device = self.plan.target.device
+        return {"dsp": design.dsp, "bram36": design.bram36, "parts": parts,
+                "fits": design.dsp <= device.dsp and design.bram36 <= device.bram36,
+                "part": self.plan.options.part}
+
+    def _kept_out_terms(self, keyframe: int) -> list:
+        first = max(0, keyframe - self.layout.window)
+        if not (self.layout.kept and first):
+            return []
+        return [Term("x_kept_out", first * self.layout.kf_words + 1, 1, False,
+                     "the kept keyframes' estimates out, a word a cycle")]
+
+    def _batch_terms(self, j: int, ev: dict) -> list:
+        """A batch step's terms, as accel.cpp.jinja's batch_step and the batch kernel's
+        batch_solve count them."""
+        batch, lay, st = self.batch, self.layout, self.stream
+        b, group = batch["layout"], batch["group"]
+        zero, unit = b.zero_factors(j), b.unit_factors(j)
+        qr_damped = qr_solve_cycles(batch["plan"], b.template, zero, True, batch["sets"],
+                                    self.les, unit=unit)
+        qr_store = qr_solve_cycles(batch["plan"], b.template, zero, False, batch["sets"],
+                                   self.les, unit=unit)
+        terms = [Term("batch_gather", st[f"stream_batch{j}_gather"], 2, False,
+                      f"keyframes 0 … {j}'s estimates to the batch kernel (gathered, copied in)")]
+        for g in sorted(group):
+            trigger = PHASE_TRIGGER.get(g)
+            times = ev.get(trigger, 0) if trigger else 0
+            if times:
+                each = qr_damped if g == "qr" else group[g]
+                terms.append(Term(f"batch_{g}", each, times, False,
+                                  f"the batch kernel's {g} phase, once per {trigger}"))
+        store = (group["factor_jacobian"] + group["gradient"] + group["qr_stack"] + qr_store
+                 + group["qr_commit"])
+        terms.append(Term("batch_store", store, 1, False,
+                          f"keyframes 0 … {j} linearised at the optimum and eliminated serially "
+                          "at μ = 0 (their conditionals and the factors they pass)"))
+        terms.append(Term("batch_out", st[f"stream_batch{j}_out"], 1, False,
+                          "the optimum, the conditionals and τ out of the batch kernel, the "
+                          "optimum scattered to the kept memory and the window"))
+        if j >= lay.window:
+            terms.append(Term("batch_kept", st[f"stream_batch{j}_kept"], 1, False,
+                              f"the kept net rebuilt: keyframes 0 … {j - lay.window}'s "
+                              "conditionals and points, τ written for the next window"))
+        return terms
+
+    @staticmethod
+    def events_of(iterations: int, rejected: int = 0, noise: int = 0) -> dict:
+        """The solve's event counts from its iterations: each iteration a linearisation, a
+        solve, a retraction, a cost pass and (but the last, which converged) an accepted step;
+        the start's cost pass; ``rejected`` trial steps add a solve, a retraction and a cost
+        pass each."""
+        k = int(iterations)
+        return {"linearize": k, "solve": k + rejected, "retract": k + rejected,
+                "cost": 1 + k + rejected, "accept": max(0, k - 1), "noise": noise}
+
+    def price(self, keyframe: int, iterations: int, events: dict | None = None):
+        """The :class:`UpdatePrice` of keyframe ``keyframe``'s call."""
+        lay, st = self.layout, self.stream
+        m = min(keyframe, lay.size - 1)
+        first = max(0, keyframe - lay.window)
+        ev = dict(events) if events is not None else self.events_of(iterations)
+        terms = [Term("keyframe_in", st[f"stream_keyframe_in{m}"], 1, False,
+                      f"keyframe {keyframe}'s storage and {len(lay.new_dest[m])} data words in "
+                      f"(slot {m})")]
+        if keyframe >= lay.size:
+            terms.append(Term("shift", st["stream_shift"], 1, False,
+                              "every slot down one: its variables, its factors' words, τ"))
+        batch = self.batch
+        if batch is not None:
+            if keyframe >= lay.size:
+                terms.append(Term("leave", st["stream_x_out_kf"], 1, False,
+                                  "the leaving keyframe's estimate into the kept memory"))
+            if keyframe < batch["layout"].size:
+                terms.append(Term("batch_in", st[f"stream_batch_in{keyframe}"], 1, False,
+                                  "the keyframe's words into the batch kernel's slot"))
+            if keyframe in batch["layout"].keyframes:
+                terms += self._batch_terms(keyframe, ev)
+                terms += self._kept_out_terms(keyframe)
+                terms.append(Term("x_out", st["stream_x_out"], 1, False,
+                                  "the window's storage out"))
+                return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
+                                   tuple(terms), STREAM_SOURCE)
+        zero, unit = self.zero_factors(keyframe), lay.unit_factors(keyframe)
+        for g in sorted(self.group):
+            trigger = PHASE_TRIGGER.get(g)
+            if trigger is None:
+                continue
+            times = ev.get(trigger, 0)
+            each = self.qr_cycles(zero, True, unit=unit) if g == "qr" else self.group[g]
+            if times:
+                terms.append(Term(g, each, times, False,
+                                  f"the window's {g} phase, once per {trigger}" + (
+                                      " (on its rows non-zero in this update)" if g == "qr"
+                                      else "")))
+        if m == lay.window and self.layout_marginal:
+            marginal = (self.group["factor_jacobian"] + self.group["gradient"]
+                        + st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True))
+            terms.append(Term("marginal", marginal, 1, False,
+                              "keyframe leaving: the window linearised at its optimum, slot 0's "
+                              "QR step at μ = 0 on unit set 0, τ's signs, mean and words"))
+        if lay.kept:
+            if first > 0:
+                terms.append(Term("kept_reexpress", st["stream_kept_reexpress"], 1, False,
+                                  f"keyframe {first - 1}'s kept conditional re-expressed at "
+                                  "its parent's new estimate: Log, its central-difference "
+                                  "Jacobian (4n + 1 datapath passes), S·Log and S·J"))
+            if m == lay.window and self.layout_marginal:
+                terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
+                                  f"keyframe {first}'s conditional (R | S | d) and its "
+                                  "linearisation points kept"))
+            terms.append(Term("kept_walk", st["stream_kept_walk_base"]
+                              + first * st["stream_kept_walk_each"], 1,
+                              False, f"the walk back through {first} kept conditionals: per "
+                                     "keyframe a Log, S·Log, R⁻¹ by rows, a retraction"))
+            terms += self._kept_out_terms(keyframe)
+        terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
+        return UpdatePrice(keyframe, "incremental" if lay.kept else "fixed-lag", first,
+                           int(iterations),
+                           self.clock_mhz, tuple(terms), STREAM_SOURCE)
+
