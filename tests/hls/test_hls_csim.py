@@ -193,8 +193,10 @@ struct Dump {
 """
 
 
-@pytest.mark.parametrize("linear, option, value", [("qr", "units", 1), ("qr", "units", 3),
-                                                   ("cholesky", "cpe", 4)])
+# n_u = 3 (heavy: about 30 s on 2 cores) repeats n_u = 1's check with more Update units
+@pytest.mark.parametrize("linear, option, value", [
+    ("qr", "units", 1), pytest.param("qr", "units", 3, marks=pytest.mark.heavy),
+    ("cholesky", "cpe", 4)])
 def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     """The unit headers' cycle log (-DFGC_COUNT_CYCLES) of a C simulation run: the processes
     that ran in one reflection / one CPE round are the plan's, n_u + 4 or 2 #CPE + 2 (the plan's
@@ -221,8 +223,11 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
         f"backsub_set{u}" for u in range(sets))
 
 
+# the serial ordering with 3 units (heavy: about 30 s on 2 cores) repeats the two-ended case's
+# counting on a one-set design
 @pytest.mark.parametrize("linear, option", [("qr", {"units": 2}),
-                                            ("qr", {"units": 3, "ordering": "serial"}),
+                                            pytest.param("qr", {"units": 3, "ordering": "serial"},
+                                                         marks=pytest.mark.heavy),
                                             ("cholesky", {"cpe": 4})])
 def test_cycle_counting_csim_equals_the_model(linear, option):
     """Issue 18, item 5: the cycles the counters count as the C simulation runs (trip × II +

@@ -242,6 +242,7 @@ def test_a_graph_that_is_not_a_chain_has_no_update_model():
 # --------------------------------------------------------------------------------------------
 
 
+@pytest.mark.heavy  # about 45 s on 2 cores; test_hls_window's CLI test streams the on-chip design
 def test_cli_stream_hls_prints_the_model_beside_the_simulator(tmp_path, capsys):
     """``--model-only`` on a QR Program: the simulator's updates priced on the on-chip
     incremental design's plan (its window, kept net and batch kernel), every term the plan's."""

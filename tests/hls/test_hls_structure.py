@@ -249,7 +249,8 @@ def _texts(directory, name, header):
     return (directory / f"{name}.cpp").read_text(), (directory / "include" / header).read_text()
 
 
-@pytest.mark.parametrize("units", [1, 4, 8])
+# n_u = 4 (heavy) lies between the two ends the default run checks
+@pytest.mark.parametrize("units", [1, pytest.param(4, marks=pytest.mark.heavy), 8])
 def test_units_change_the_emitted_qr_network(tmp_path, units):
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import backsub_region, counts, read_network
