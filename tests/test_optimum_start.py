@@ -75,19 +75,10 @@ def test_simulator_at_its_optimum_converges(name, precision):
     _check(_solve(GRAPHS[name](), "sim", precision))
 
 
-# The float testbench's rotation check reads 9 storage entries of a variable without a rotation:
-# on a graph of Point2 variables only, g++ flags it (-Werror=aggressive-loop-optimizations) and
-# `make csim` does not build (tb.cpp.jinja's rotation_angle; reported, not fixed here).
-_TB_BUG = pytest.mark.xfail(strict=True, reason="float testbench rotation_angle on a graph "
-                            "without rotations does not build (reported to the lead)")
-
-
 @pytest.mark.heavy
 @pytest.mark.skipif(shutil.which("g++") is None, reason="no g++")
 @pytest.mark.parametrize("precision", ["float64", "float32"])
 @pytest.mark.parametrize("backend", ["native", "hls"])
 @pytest.mark.parametrize("name", list(GRAPHS))
-def test_cpp_backends_at_their_optimum_converge(name, backend, precision, request):
-    if (name, backend, precision) == ("distance-at-optimum", "hls", "float32"):
-        request.applymarker(_TB_BUG)
+def test_cpp_backends_at_their_optimum_converge(name, backend, precision):
     _check(_solve(GRAPHS[name](), backend, precision))

@@ -150,16 +150,10 @@ def test_native_from_coincident_landmark_reaches_gtsams_optimum():
     _check("bearing-range-2d", "native", "float64")
 
 
-# the float testbench does not build for a graph without rotations (tests/test_optimum_start.py)
-_NO_ROTATION = {"beacon-distance"}
-
-
 @pytest.mark.heavy
 @pytest.mark.skipif(shutil.which("g++") is None, reason="no g++")
 @pytest.mark.parametrize("precision", ["float64", "float32"])
 @pytest.mark.parametrize("backend", ["native", "hls"])
 @pytest.mark.parametrize("name", list(GRAPHS))
 def test_cpp_backends_from_coincident_points_reach_gtsams_optimum(name, backend, precision):
-    if backend == "hls" and precision == "float32" and name in _NO_ROTATION:
-        pytest.skip("float testbench without rotations (known, tests/test_optimum_start.py)")
     _check(name, backend, precision)
