@@ -298,6 +298,12 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
     ``keyed_values``). ``progress`` is called with each keyframe's update record as it
     completes (incremental and fixed-lag solves) or, in a batch solve, with each accepted
     iteration's record (iteration, error, lambda, relative_decrease)."""
+    with lib.linear.one_blas_thread():  # small dense kernels: threads only wait (see there)
+        return _solve(spec, data_path, result_path, precision, lib, incremental, window,
+                      progress)
+
+
+def _solve(spec, data_path, result_path, precision, lib, incremental, window, progress):
     opts = dict(spec["solver"])
     precision = precision or opts["precision"]
     if incremental and spec["incremental"] is None:
