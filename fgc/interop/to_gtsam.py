@@ -472,10 +472,11 @@ class LinearizationCheck:
     judged by the optimum it leads to."""
 
     factor_type: str
-    factors: int
+    factors: int  # factors compared
     error: float
     tolerance: float | None
     custom: bool
+    sampled: bool = False  # a built-in type checked on an evenly spaced sample of its factors
 
     @property
     def passed(self) -> bool | None:
@@ -488,22 +489,34 @@ class LinearizationCheck:
 
 
 def linearization_checks(graph: Graph, values: dict | None = None,
-                         problem: GtsamProblem | None = None) -> list[LinearizationCheck]:
+                         problem: GtsamProblem | None = None,
+                         builtin_sample: int | None = None) -> list[LinearizationCheck]:
     """Per factor type, in order of first appearance: the largest relative difference between
     fgc's and GTSAM's whitened linearisation (A, b) of its factors at ``values`` (default: the
-    initial values), relative to max(1, |A|max, |b|max)."""
+    initial values), relative to max(1, |A|max, |b|max).
+
+    ``builtin_sample``: a built-in type (reported, never judged: see
+    :class:`LinearizationCheck`) with more factors than this is compared on that many of them,
+    evenly spaced (:func:`sample_factors`); a custom type always on all of its factors."""
     problem = problem if problem is not None else to_gtsam(graph, values)
     worst: dict[str, list] = {}
+    chosen = None
+    if builtin_sample is not None:
+        chosen = set(sample_factors(graph, builtin_sample))
     for i, f in enumerate(graph.factors):
+        custom = is_custom(f.type)
+        if chosen is not None and not custom and i not in chosen:
+            worst.setdefault(f.type.name, [0, 0.0, custom, False])[3] = True
+            continue
         a_fgc, b_fgc = linearize_factor(f, [_value(graph, values, k) for k in f.keys])
         a_g, b_g = problem.graph.at(i).linearize(problem.values).jacobian()
         scale = max(1.0, np.abs(a_g).max(), np.abs(b_g).max())
         err = max(np.abs(a_fgc - a_g).max() / scale, np.abs(b_fgc - b_g).max() / scale)
-        entry = worst.setdefault(f.type.name, [0, 0.0, is_custom(f.type)])
+        entry = worst.setdefault(f.type.name, [0, 0.0, custom, False])
         entry[0] += 1
         entry[1] = float(max(entry[1], err)) if np.isfinite(err) else float("inf")
-    return [LinearizationCheck(name, n, err, FD_TOLERANCE if custom else None,
-                               custom) for name, (n, err, custom) in worst.items()]
+    return [LinearizationCheck(name, n, err, FD_TOLERANCE if custom else None, custom, sampled)
+            for name, (n, err, custom, sampled) in worst.items()]
 
 
 # At most this many factors of one type are checked at each point (evenly spaced, so the same

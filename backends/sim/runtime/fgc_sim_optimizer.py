@@ -51,10 +51,7 @@ class Problem:
         self.blocks = [lib.runtime.Block(b, i, _rows(b, i, factors, lib), x_off, self.t_off,
                                          self.dtype) for i, b in enumerate(spec["blocks"])]
         self.base = _offsets([b.n * b.m * (b.d + 1) for b in self.blocks])
-        steps = [s[:4] for s in spec["steps"]]
-        self.plan = lib.linear.make_plan(steps, self.t_off, dims, self._rows_of,
-                                         int(self.base[-1]),
-                                         lib.linear.pivot_tolerances(spec["solver"]))
+        self._plan = None  # the elimination's index tables: built by the first solve
         # per variable type (index into spec["types"]): x ∘ Exp(δ) and Log(a⁻¹ b) over instances
         self.retractions = [lib.special.over_instances(r) for r, _ in spec["types"]]
         self.local_coordinates = [lib.special.over_instances(lc) for _, lc in spec["types"]]
@@ -62,6 +59,19 @@ class Problem:
                         numpy.array([x_off[v] + numpy.arange(storage[v]) for v in vs]),
                         numpy.array([self.t_off[v] + numpy.arange(dims[v]) for v in vs]))
                        for kind, vs in spec["retract_groups"]]
+
+    @property
+    def plan(self):
+        """The elimination steps' index tables (``fgc_sim_linear.make_plan``), built when a
+        solve first needs them: a Problem that only linearises or costs (verify's kernel
+        check) never builds them."""
+        if self._plan is None:
+            spec = self.spec
+            self._plan = self.lib.linear.make_plan(
+                [s[:4] for s in spec["steps"]], self.t_off, spec["variable_dims"],
+                self._rows_of, int(self.base[-1]),
+                self.lib.linear.pivot_tolerances(spec["solver"]))
+        return self._plan
 
     def _rows_of(self, entry):
         """Factor ``entry`` = (block, instance, member): its rows' starts in the flat [A | b]
