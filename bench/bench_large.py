@@ -101,7 +101,7 @@ def bench_file(name: str, linears, iterations: int, repeat: int, ordering_untime
         e_gtsam = problem.graph.error(values)
         print(f"{name:<19}{linear:<9}{t_read:>6.1f}{t_compile:>8.1f}{t_build:>7.1f}{widest:>6}"
               f"{t_fgc:>9.3f}{t_gtsam:>9.3f}{t_gtsam / t_fgc:>7.1f}x"
-              f"{c_fgc:>9.3f}{c_gtsam:>9.3f}{c_gtsam / c_fgc:>7.1f}x{result.iterations:>5}"
+              f"{c_fgc:>9.3f}{c_gtsam:>10.3f}{c_gtsam / c_fgc:>9.1f}x{result.iterations:>5}"
               f"{it_gtsam:>5}{e_fgc:>17.10g}{e_gtsam:>17.10g}", flush=True)
 
 
@@ -115,7 +115,7 @@ def main() -> None:
                         help="compute GTSAM's COLAMD ordering before timing (fgc's is compiled)")
     args = parser.parse_args()
     print(f"{'file':<19}{'linear':<9}{'read':>6}{'compile':>8}{'build':>7}{'width':>6}"
-          f"{'fgc s':>9}{'gtsam s':>9}{'ratio':>8}{'fgc cpu':>9}{'gtsam cpu':>9}{'cpu ratio':>8}"
+          f"{'fgc s':>9}{'gtsam s':>9}{'ratio':>8}{'fgc cpu':>9}{'gtsam cpu':>10}{'cpu ratio':>10}"
           f"{'it':>5}{'it_g':>5}"
           f"{'error fgc':>17}{'error gtsam':>17}")
     for name in args.files:
