@@ -472,7 +472,7 @@ class LinearizationCheck:
     judged by the optimum it leads to."""
 
     factor_type: str
-    factors: int
+    factors: int  # factors compared
     error: float
     tolerance: float | None
     custom: bool
@@ -480,6 +480,7 @@ class LinearizationCheck:
     # bearing): not differentiable there, fgc's Jacobian is GTSAM's convention and central
     # differences are no reference, so only their residual b is compared
     singular: int = 0
+    sampled: bool = False  # a built-in type checked on an evenly spaced sample of its factors
 
     @property
     def passed(self) -> bool | None:
@@ -492,29 +493,40 @@ class LinearizationCheck:
 
 
 def linearization_checks(graph: Graph, values: dict | None = None,
-                         problem: GtsamProblem | None = None) -> list[LinearizationCheck]:
+                         problem: GtsamProblem | None = None,
+                         builtin_sample: int | None = None) -> list[LinearizationCheck]:
     """Per factor type, in order of first appearance: the largest relative difference between
     fgc's and GTSAM's whitened linearisation (A, b) of its factors at ``values`` (default: the
-    initial values), relative to max(1, |A|max, |b|max)."""
+    initial values), relative to max(1, |A|max, |b|max).
+
+    ``builtin_sample``: a built-in type (reported, never judged: see
+    :class:`LinearizationCheck`) with more factors than this is compared on that many of them,
+    evenly spaced (:func:`sample_factors`); a custom type always on all of its factors."""
     problem = problem if problem is not None else to_gtsam(graph, values)
     worst: dict[str, list] = {}
+    chosen = None
+    if builtin_sample is not None:
+        chosen = set(sample_factors(graph, builtin_sample))
     for i, f in enumerate(graph.factors):
+        custom = is_custom(f.type)
+        if chosen is not None and not custom and i not in chosen:
+            worst.setdefault(f.type.name, [0, 0.0, custom, 0, False])[4] = True
+            continue
         point = [_value(graph, values, k) for k in f.keys]
         a_fgc, b_fgc = linearize_factor(f, point)
         a_g, b_g = problem.graph.at(i).linearize(problem.values).jacobian()
-        custom = is_custom(f.type)
         singular = custom and singular_at(f, point)
         scale = max(1.0, np.abs(a_g).max(), np.abs(b_g).max())
         err = np.abs(b_fgc - b_g).max() / scale
         if not singular:
             err = max(np.abs(a_fgc - a_g).max() / scale, err)
-        entry = worst.setdefault(f.type.name, [0, 0.0, custom, 0])
+        entry = worst.setdefault(f.type.name, [0, 0.0, custom, 0, False])
         entry[0] += 1
         entry[1] = float(max(entry[1], err)) if np.isfinite(err) else float("inf")
         entry[3] += int(singular)
     return [LinearizationCheck(name, n, err, FD_TOLERANCE if custom else None,
-                               custom, singular) for name, (n, err, custom, singular)
-            in worst.items()]
+                               custom, singular, sampled)
+            for name, (n, err, custom, singular, sampled) in worst.items()]
 
 
 def singular_at(f: Factor, values: list) -> bool:

@@ -583,3 +583,29 @@ def test_w10000_passes(capsys, tmp_path):
     r = json.loads(out.read_text())
     assert r["verdict"].startswith("PASSED"), r["verdict"]
     assert r["fgc_final_error"] <= r["gtsam_final_error"] * (1 + 1e-6)
+
+
+def test_builtin_linearization_check_on_a_sample_custom_on_all():
+    """verify compares a built-in type (reported, not judged) with GTSAM's own factor on an
+    evenly spaced sample, a custom type on every factor."""
+    rng = np.random.default_rng(3)
+    g = fgc.Graph()
+    for i in range(12):
+        g.add_variable(i, Pose2(float(i), 0.1 * i, 0.05 * i))
+    for i in range(11):
+        g.add(fgc.factors.BetweenFactor(i, i + 1, Pose2(1.0, 0.1, 0.05),
+                                        noise.diagonal([0.1, 0.1, 0.05])))
+    g.add_variable("l", Point3(1.0, 2.0, 3.0))
+    for _ in range(5):
+        g.add(_matrix_measurement("l", H=rng.normal(size=(2, 3)), z=Vector2(1.0, 2.0),
+                                  noise=noise.isotropic(2, 0.01)))
+    everything = {c.factor_type: c for c in linearization_checks(g)}
+    sampled = {c.factor_type: c for c in linearization_checks(g, builtin_sample=4)}
+    assert set(sampled) == set(everything)
+    between = next(n for n, c in sampled.items() if not c.custom)
+    assert sampled[between].sampled and sampled[between].factors == 4
+    assert not everything[between].sampled and everything[between].factors == 11
+    assert sampled[between].error <= everything[between].error
+    custom = sampled["_matrix_measurement"]
+    assert custom.custom and not custom.sampled and custom.factors == 5
+    assert custom.error == everything["_matrix_measurement"].error

@@ -40,8 +40,9 @@ from fgc.app.specs import example  # noqa: E402
 imu_window = example("imu_window")
 pose_graph = example("pose_graph")
 
-ALLOWED_IMPORTS = {"numpy", "argparse", "hashlib", "importlib", "importlib.util", "json", "os",
-                   "sys", "time", "types"}
+# (contextlib, ctypes: fgc_sim_linear's one_blas_thread sets OpenBLAS' thread count)
+ALLOWED_IMPORTS = {"numpy", "argparse", "contextlib", "ctypes", "hashlib", "importlib",
+                   "importlib.util", "json", "os", "sys", "time", "types"}
 
 
 @pytest.fixture(scope="module")
@@ -491,3 +492,17 @@ def test_incremental_on_a_nonlinear_chain_approaches_batch_as_the_window_grows()
         assert inc.converged
         gaps.append(max(np.linalg.norm(batch.values[k].local(v)) for k, v in inc.values.items()))
     assert gaps[0] < 2e-3 and gaps[1] < gaps[0]
+
+
+def test_one_blas_thread_sets_one_thread_and_restores_the_count():
+    from fgc_backends.sim.runtime import fgc_sim_linear as lin
+
+    controls = lin._openblas_controls()
+    if not controls:
+        pytest.skip("no OpenBLAS in this process (numpy built against another BLAS)")
+    before = [get() for _, get in controls]
+    with lin.one_blas_thread():
+        assert [get() for _, get in controls] == [1] * len(controls)
+        a = np.random.default_rng(0).normal(size=(60, 20))
+        assert np.allclose(np.abs(np.linalg.qr(a, mode="r")), np.abs(np.linalg.qr(a)[1]))
+    assert [get() for _, get in controls] == before

@@ -60,7 +60,8 @@ class Window:
                         for b, s in zip(problem.blocks, self.sel, strict=True)]
         self.plan = self.lib.linear.make_plan(self._steps(), self.offset, dims, self._rows_of,
                                               int(self.base[-1]) + self._tau_size(),
-                                              problem.plan.tolerance)
+                                              self.lib.linear.pivot_tolerances(
+                                                  problem.spec["solver"]))
         self.groups = _groups(problem, variables, self.offset)
 
     def _tau_size(self):

@@ -26,7 +26,16 @@ Dense kernels: in float64 numpy's LAPACK routines (Householder QR, Cholesky, tri
 LU, which does no pivoting on a triangular matrix) compute in the working precision. numpy's
 LAPACK bindings promote float32 to float64, so float32 runs use the explicit column loops below
 instead, which compute in float32 as the accelerator does.
+
+Those matrices are small (one step's stacked rows: at most a few hundred columns on w10000), and
+OpenBLAS splits them over threads that spin while they wait for each other: on a loaded 2-core
+machine a 924 × 100 QR took 2.9 s with its threads and 6 ms on one. A solve therefore runs its
+dense kernels with one BLAS thread (:func:`one_blas_thread`, OpenBLAS only: other BLAS libraries
+are left as they are).
 """
+
+import contextlib
+import ctypes
 
 import numpy
 
@@ -36,6 +45,51 @@ def pivot_tolerances(solver):
     (SimConfig.pivot_tolerance_float64 / _float32)."""
     return {numpy.dtype(numpy.float64): solver["pivot_tolerance_float64"],
             numpy.dtype(numpy.float32): solver["pivot_tolerance_float32"]}
+
+
+# OpenBLAS' thread-count setters and getters, by the names its builds export (plain, 64-bit
+# integer interface, SciPy's prefixed build for numpy's wheels)
+_OPENBLAS_THREADS = (("openblas_set_num_threads", "openblas_get_num_threads"),
+                     ("openblas_set_num_threads64_", "openblas_get_num_threads64_"),
+                     ("scipy_openblas_set_num_threads64_", "scipy_openblas_get_num_threads64_"),
+                     ("scipy_openblas_set_num_threads", "scipy_openblas_get_num_threads"))
+
+
+def _openblas_controls():
+    """(set, get) of every OpenBLAS loaded in this process (read from /proc/self/maps; none
+    where there is no such file)."""
+    try:
+        with open("/proc/self/maps") as maps:
+            paths = {line.split()[-1] for line in maps if "openblas" in line.lower()}
+    except OSError:
+        return []
+    controls = []
+    for path in sorted(paths):
+        try:
+            lib = ctypes.CDLL(path)  # already loaded: the same library, not a second copy
+        except OSError:
+            continue
+        for set_name, get_name in _OPENBLAS_THREADS:
+            setter, getter = getattr(lib, set_name, None), getattr(lib, get_name, None)
+            if setter is not None and getter is not None:
+                setter.argtypes, setter.restype, getter.restype = [ctypes.c_int], None, ctypes.c_int
+                controls.append((setter, getter))
+                break
+    return controls
+
+
+@contextlib.contextmanager
+def one_blas_thread():
+    """Run the block with OpenBLAS on one thread, then restore its thread count."""
+    controls = _openblas_controls()
+    before = [getter() for _, getter in controls]
+    for setter, _ in controls:
+        setter(1)
+    try:
+        yield
+    finally:
+        for (setter, _), n in zip(controls, before, strict=True):
+            setter(n)
 
 
 class SingularError(Exception):

@@ -51,10 +51,8 @@ class Problem:
         self.blocks = [lib.runtime.Block(b, i, _rows(b, i, factors, lib), x_off, self.t_off,
                                          self.dtype) for i, b in enumerate(spec["blocks"])]
         self.base = _offsets([b.n * b.m * (b.d + 1) for b in self.blocks])
-        steps = [s[:4] for s in spec["steps"]]
-        self.plan = lib.linear.make_plan(steps, self.t_off, dims, self._rows_of,
-                                         int(self.base[-1]),
-                                         lib.linear.pivot_tolerances(spec["solver"]))
+        self._plan = None  # the elimination's index tables: built by the first solve
+        self._columns = {}  # block type → its variables' column offsets (_rows_of)
         # per variable type (index into spec["types"]): x ∘ Exp(δ) and Log(a⁻¹ b) over instances
         self.retractions = [lib.special.over_instances(r) for r, _ in spec["types"]]
         self.local_coordinates = [lib.special.over_instances(lc) for _, lc in spec["types"]]
@@ -63,16 +61,31 @@ class Problem:
                         numpy.array([self.t_off[v] + numpy.arange(dims[v]) for v in vs]))
                        for kind, vs in spec["retract_groups"]]
 
+    @property
+    def plan(self):
+        """The elimination steps' index tables (``fgc_sim_linear.make_plan``), built when a
+        solve first needs them: a Problem that only linearises or costs (verify's kernel
+        check) never builds them."""
+        if self._plan is None:
+            spec = self.spec
+            self._plan = self.lib.linear.make_plan(
+                [s[:4] for s in spec["steps"]], self.t_off, spec["variable_dims"],
+                self._rows_of, int(self.base[-1]),
+                self.lib.linear.pivot_tolerances(spec["solver"]))
+        return self._plan
+
     def _rows_of(self, entry):
         """Factor ``entry`` = (block, instance, member): its rows' starts in the flat [A | b]
         of all blocks, {variable: column offset} of the variables it touches, rhs offset."""
         b, i, member = entry
         blk = self.blocks[b]
         first, last, *_, touches = blk.spec["members"][member]
-        col = _offsets(blk.spec["variable_dims"])
+        col = self._columns.get(b)
+        if col is None:  # each block type's column offsets, once (64k factors on w10000)
+            col = self._columns[b] = _offsets(blk.spec["variable_dims"]).tolist()
         inst = blk.spec["instances"][i]
         starts = self.base[b] + (i * blk.m + numpy.arange(first, last)) * (blk.d + 1)
-        return starts, {inst[k]: int(col[k]) for k in touches}, blk.d
+        return starts, {inst[k]: col[k] for k in touches}, blk.d
 
     def cost(self, x):
         """Total cost (GTSAM's graph error) at storage vector ``x``: the cost-only mode."""
@@ -298,6 +311,12 @@ def solve(spec, data_path, result_path=None, precision=None, lib=None, increment
     ``keyed_values``). ``progress`` is called with each keyframe's update record as it
     completes (incremental and fixed-lag solves) or, in a batch solve, with each accepted
     iteration's record (iteration, error, lambda, relative_decrease)."""
+    with lib.linear.one_blas_thread():  # small dense kernels: threads only wait (see there)
+        return _solve(spec, data_path, result_path, precision, lib, incremental, window,
+                      progress)
+
+
+def _solve(spec, data_path, result_path, precision, lib, incremental, window, progress):
     opts = dict(spec["solver"])
     precision = precision or opts["precision"]
     if incremental and spec["incremental"] is None:

@@ -3619,6 +3619,28 @@ bool eliminate_step(int s, T mu) {
         const int sc = STEP_W[c] - STEP_F[c];
         const int* map = STEP_SEPMAP + STEP_SEPMAP_BEGIN[c];
         const T* u = NF + STEP_NF_OFF[c];
+        bool ascending = true;  // the child's separator in the parent's column order
+        for (int a = 1; a < sc; ++a) ascending = ascending && map[a - 1] < map[a];
+        if (ascending) {  // the upper triangle lands in the upper triangle: no min / max per entry
+            // and the separator falls into runs of consecutive parent columns (a variable's
+            // at least): each run of a row is one contiguous, vectorised add
+            static int run_end[MAX_W];
+            for (int b = sc - 1; b >= 0; --b) {
+                run_end[b] = b + 1 < sc && map[b + 1] == map[b] + 1 ? run_end[b + 1] : b + 1;
+            }
+            for (int a = 0; a < sc; ++a) {
+                T* row = H[map[a]];
+                const T* ua = u + a * (sc + 1);
+                for (int b = a; b < sc; b = run_end[b]) {
+                    T* dst = row + map[b];
+                    const T* src = ua + b;
+                    const int n = run_end[b] - b;
+                    for (int t = 0; t < n; ++t) dst[t] += src[t];
+                }
+                row[w] += ua[sc];
+            }
+            continue;
+        }
         for (int a = 0; a < sc; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=30
             for (int b = a; b < sc; ++b) {
