@@ -186,6 +186,8 @@ def accel_plan(program: Program, config: HlsConfig):
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
     from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
+    from fgc_backends.hls.plan.model import Unit
+    from fgc_backends.hls.units.datapath import factor_allocation
     plan = accel_plan(program, config)
     phase = {ph.name: ph for ph in plan.phases}
     loops = {p.name: p.loops[0] for name in ("factor_jacobian", "factor_cost")
@@ -193,11 +195,13 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     noise = {p.name: p.loops[2].depth for p in phase["rounding_noise"].processes
              if p.name.startswith("noise_")}
     blocks = []
+    # factor_<b>'s ALLOCATION limits (the plan's unit is what Vitis binds around them)
+    allocations = factor_allocation(program, plan.options)
     for b in context["blocks"]:
         text = "\n".join((*b.jacobian.intermediates, *b.jacobian.outputs,
                           *b.cost.intermediates, *b.cost.outputs))
-        blocks.append(_AccelBlock(b, _allocation(plan.unit(f"factor_{b.index}"),
-                                                 config.scalar_cxx, text),
+        limits = Unit(f"factor_{b.index}", "ALLOCATION", 1, allocations[b.index])
+        blocks.append(_AccelBlock(b, _allocation(limits, config.scalar_cxx, text),
                                   loops[f"factor_{b.index}_jacobian"],
                                   loops[f"factor_{b.index}_cost"], noise[f"noise_{b.index}"]))
     # the state update's datapath per variable type: the plan's operators, II and depth
