@@ -1959,12 +1959,14 @@ void reweight(T ab[], T code, T k) {
 // The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
 // moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
 // |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
-// partial sums: a fixed order, and no chain from row to row.
-template <int STRIDE, int COLS, int ROWS>
+// partial sums: a fixed order, and no chain from row to row. A row every GROUPS = STRIDE / TILE
+// cycles: the row's STRIDE products share TILE multipliers and adders (the rejected step's pass
+// is rare: parallelism there does not pay).
+template <int STRIDE, int COLS, int ROWS, int GROUPS>
 T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T moved[ROWS], b_abs[ROWS];
-    for (int r = 0; r < ROWS; ++r) {  // a row a cycle: its terms unrolled
-#pragma HLS PIPELINE II=1
+    for (int r = 0; r < ROWS; ++r) {
+#pragma HLS PIPELINE II=GROUPS
         T part[TILE];
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
         for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
@@ -2330,10 +2332,10 @@ void whiten_tail_0_0(const T raw[], T ab[], const T p[]) {
 }
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 180 structural non-zeros of
-// 15 x 31), whitening, into AB; one instance every II=108 cycles (the plan's)
+// 15 x 31), whitening, into AB; one instance every II=233 cycles (the plan's)
 void evaluate_0(const T x[N_X]) {
     for (int i = 0; i < 7; ++i) {
-#pragma HLS PIPELINE II=108
+#pragma HLS PIPELINE II=233
         const int f = BLOCK0_INSTANCES[i];
         T in[42], dat[193], half[1];
         gather_0(x, f, in, dat);
@@ -2349,7 +2351,7 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 7, 108, 621);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 7, 233, 621);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 32 columns (a multiple of PORTS)
@@ -2407,19 +2409,19 @@ T noise_0(T noise) {
         for (int j = 0; j < 3; ++j) scale[15 + j] = VAR_SCALE[FACTOR_VARS[vb + 3]];
         for (int j = 0; j < 6; ++j) scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
         for (int j = 0; j < 6; ++j) scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
-        noise += rounding_noise<32, 31, 15>(ab, scale);
+        noise += rounding_noise<32, 31, 15, 8>(ab, scale);
         FGC_CYCLES("noise_0", 0, "load", 240, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 32, 1, 1);
-        FGC_CYCLES("noise_0", 0, "rows", 15, 1, 46);
+        FGC_CYCLES("noise_0", 0, "rows", 15, 8, 46);
         FGC_CYCLES("noise_0", 0, "terms", 4, 4, 14);
     }
     return noise;
 }
 
-// block 0, cost mode: `total` plus the cost of its instances in order, one every II=36 cycles
+// block 0, cost mode: `total` plus the cost of its instances in order, one every II=98 cycles
 T cost_of_0(const T x[N_X], T total) {
     for (int i = 0; i < 7; ++i) {
-#pragma HLS PIPELINE II=36
+#pragma HLS PIPELINE II=98
         const int f = BLOCK0_INSTANCES[i];
         T in[42], dat[193], half[1];
         T unused[480];
@@ -2429,7 +2431,7 @@ T cost_of_0(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 193], DATA_BUF[FACTOR_DATA_OFF[f] + 194]);
         total += cost;
     }
-    FGC_CYCLES("factor_0_cost", 0, "instances", 7, 36, 596);
+    FGC_CYCLES("factor_0_cost", 0, "instances", 7, 98, 596);
     return total;
 }
 
@@ -2509,10 +2511,10 @@ T noise_1(T noise) {
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6>(ab, scale);
+        noise += rounding_noise<8, 7, 6, 2>(ab, scale);
         FGC_CYCLES("noise_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_1", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_1", 0, "rows", 6, 2, 22);
         FGC_CYCLES("noise_1", 0, "terms", 2, 4, 14);
     }
     return noise;
@@ -2545,10 +2547,10 @@ void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
 }
 
 // block 2, Jacobian mode: per instance residual + Jacobian (its 6 structural non-zeros of
-// 3 x 4), whitening, into AB; one instance every II=1 cycles (the plan's)
+// 3 x 4), whitening, into AB; one instance every II=6 cycles (the plan's)
 void evaluate_2(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=6
         const int f = BLOCK2_INSTANCES[i];
         T in[3], dat[4], half[1];
         gather_2(x, f, in, dat);
@@ -2563,7 +2565,7 @@ void evaluate_2(const T x[N_X]) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
         }
     }
-    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 1, 4);
+    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 6, 4);
 }
 
 // block 2's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
@@ -2611,7 +2613,7 @@ T noise_2(T noise) {
         T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
         for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<4, 4, 3>(ab, scale);
+        noise += rounding_noise<4, 4, 3, 1>(ab, scale);
         FGC_CYCLES("noise_2", 0, "load", 6, 1, 2);
         FGC_CYCLES("noise_2", 0, "scales", 4, 1, 1);
         FGC_CYCLES("noise_2", 0, "rows", 3, 1, 18);
@@ -2647,10 +2649,10 @@ void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
 }
 
 // block 3, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=2 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=21 cycles (the plan's)
 void evaluate_3(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=2
+#pragma HLS PIPELINE II=21
         const int f = BLOCK3_INSTANCES[i];
         T in[6], dat[7], half[1];
         gather_3(x, f, in, dat);
@@ -2665,7 +2667,7 @@ void evaluate_3(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_3_jacobian", 0, "instances", 1, 2, 4);
+    FGC_CYCLES("factor_3_jacobian", 0, "instances", 1, 21, 4);
 }
 
 // block 3's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -2713,10 +2715,10 @@ T noise_3(T noise) {
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6>(ab, scale);
+        noise += rounding_noise<8, 7, 6, 2>(ab, scale);
         FGC_CYCLES("noise_3", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_3", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_3", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_3", 0, "rows", 6, 2, 22);
         FGC_CYCLES("noise_3", 0, "terms", 2, 4, 14);
     }
     return noise;

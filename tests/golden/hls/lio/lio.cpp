@@ -2396,12 +2396,14 @@ void reweight(T ab[], T code, T k) {
 // The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
 // moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
 // |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
-// partial sums: a fixed order, and no chain from row to row.
-template <int STRIDE, int COLS, int ROWS>
+// partial sums: a fixed order, and no chain from row to row. A row every GROUPS = STRIDE / TILE
+// cycles: the row's STRIDE products share TILE multipliers and adders (the rejected step's pass
+// is rare: parallelism there does not pay).
+template <int STRIDE, int COLS, int ROWS, int GROUPS>
 T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T moved[ROWS], b_abs[ROWS];
-    for (int r = 0; r < ROWS; ++r) {  // a row a cycle: its terms unrolled
-#pragma HLS PIPELINE II=1
+    for (int r = 0; r < ROWS; ++r) {
+#pragma HLS PIPELINE II=GROUPS
         T part[TILE];
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
         for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
@@ -2424,53 +2426,44 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]]). Row r goes
-// into partial sum r % T_PARTIALS of every column (a row a cycle: II 1), the partial sums are
-// folded per column, then scattered into G (the columns' entries are distinct: II 1). False if
-// an entry is infinite or NaN.
-template <int STRIDE, int COLS, int ROWS>
+// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]]). TILE columns of
+// a row a cycle (II 1: TILE multipliers and adders); row r goes into partial sum r % T_PARTIALS
+// of its columns, so an accumulator comes back DIST = T_PARTIALS * STRIDE / TILE iterations
+// later (the DEPENDENCE's distance, at least the adder's latency). Then a column a cycle: its
+// partial sums folded and added into G (the columns' entries are distinct: II 1). False if an
+// entry is infinite or NaN.
+template <int STRIDE, int COLS, int ROWS, int DIST>
 bool accumulate(const T ab[], const int col[COLS - 1]) {
-    T g[T_PARTIALS][STRIDE], check[T_PARTIALS][STRIDE];
+    T g[T_PARTIALS][STRIDE];
 #pragma HLS ARRAY_PARTITION variable=g complete dim=0
-#pragma HLS ARRAY_PARTITION variable=check complete dim=0
     for (int t = 0; t < T_PARTIALS; ++t) {
 #pragma HLS UNROLL
         for (int c = 0; c < STRIDE; ++c) {
 #pragma HLS UNROLL
             g[t][c] = T(0);
-            check[t][c] = T(0);
         }
     }
+    bool finite = true;
     for (int r = 0; r < ROWS; ++r) {
+        for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=g inter false
-#pragma HLS DEPENDENCE variable=check inter false
-        const T b = ab[r * STRIDE + COLS - 1];
-        for (int c = 0; c < STRIDE; ++c) {
-            g[r % T_PARTIALS][c] += ab[r * STRIDE + c] * b;
-            check[r % T_PARTIALS][c] += ab[r * STRIDE + c] - ab[r * STRIDE + c];  // 0, or NaN for inf / NaN
+#pragma HLS DEPENDENCE variable=g inter true distance=DIST
+            const T b = ab[r * STRIDE + COLS - 1];
+            for (int t = 0; t < TILE; ++t) {
+                const T a = ab[r * STRIDE + c0 + t];
+                g[r % T_PARTIALS][c0 + t] += a * b;
+                finite = finite && fgc_isfinite(a);
+            }
         }
     }
-    T sum[STRIDE], bad[STRIDE];
-#pragma HLS ARRAY_PARTITION variable=sum complete
-#pragma HLS ARRAY_PARTITION variable=bad complete
-    for (int c = 0; c < STRIDE; ++c) {
-#pragma HLS UNROLL
-        T pg[T_PARTIALS], pc[T_PARTIALS];
-        for (int t = 0; t < T_PARTIALS; ++t) {
-            pg[t] = g[t][c];
-            pc[t] = check[t][c];
-        }
-        sum[c] = fgc_units::fold_partials<T, T_PARTIALS>(pg);
-        bad[c] = fgc_units::fold_partials<T, T_PARTIALS>(pc);
-    }
-    const T bad_all = fgc_units::fold_partials<T, STRIDE>(bad);
-    for (int c = 0; c < COLS - 1; ++c) {
+    for (int c = 0; c < COLS - 1; ++c) {  // a column a cycle: its partial sums folded, into G
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=G inter false
-        G[col[c]] += sum[c];
+        T pg[T_PARTIALS];
+        for (int t = 0; t < T_PARTIALS; ++t) pg[t] = g[t][c];
+        G[col[c]] += fgc_units::fold_partials<T, T_PARTIALS>(pg);
     }
-    return fgc_isfinite(bad_all);
+    return finite;
 }
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
@@ -2535,15 +2528,14 @@ bool reduce_0() {
         load_rows_0(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate<8, 7, 6>(ab, col) && finite;
-        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
-        // the finiteness check's tree over the columns, the scatter into G
+        finite = accumulate<8, 7, 6, 8>(ab, col) && finite;
+        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
+        // groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_0", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_0", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_0", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_0", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
-        FGC_CYCLES("reduce_0", 0, "scatter", 6, 1, 6);
+        FGC_CYCLES("reduce_0", 0, "rows", 12, fgc_units::dot_ii(12, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(12, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_0", 0, "scatter", 6, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -2559,10 +2551,10 @@ T noise_0(T noise) {
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6>(ab, scale);
+        noise += rounding_noise<8, 7, 6, 2>(ab, scale);
         FGC_CYCLES("noise_0", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_0", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_0", 0, "rows", 6, 2, 22);
         FGC_CYCLES("noise_0", 0, "terms", 2, 4, 14);
     }
     return noise;
@@ -2595,10 +2587,10 @@ void gather_1(const T x[N_X], int f, T in[3], T dat[4]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 6 structural non-zeros of
-// 3 x 4), whitening, into AB; one instance every II=1 cycles (the plan's)
+// 3 x 4), whitening, into AB; one instance every II=6 cycles (the plan's)
 void evaluate_1(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=6
         const int f = BLOCK1_INSTANCES[i];
         T in[3], dat[4], half[1];
         gather_1(x, f, in, dat);
@@ -2613,7 +2605,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 1, 4);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 6, 4);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
@@ -2639,15 +2631,14 @@ bool reduce_1() {
         load_rows_1(f, ab);
         int col[3];  // per column: its tangent entry
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate<4, 4, 3>(ab, col) && finite;
-        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
-        // the finiteness check's tree over the columns, the scatter into G
+        finite = accumulate<4, 4, 3, 4>(ab, col) && finite;
+        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
+        // groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_1", 0, "load", 6, 1, 2);
         FGC_CYCLES("reduce_1", 0, "columns", 3, 1, 1);
         FGC_CYCLES("reduce_1", 0, "rows", 3, fgc_units::dot_ii(3, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(3, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_1", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(4));
-        FGC_CYCLES("reduce_1", 0, "scatter", 3, 1, 6);
+        FGC_CYCLES("reduce_1", 0, "scatter", 3, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -2663,7 +2654,7 @@ T noise_1(T noise) {
         T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
         for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<4, 4, 3>(ab, scale);
+        noise += rounding_noise<4, 4, 3, 1>(ab, scale);
         FGC_CYCLES("noise_1", 0, "load", 6, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 4, 1, 1);
         FGC_CYCLES("noise_1", 0, "rows", 3, 1, 18);
@@ -2699,10 +2690,10 @@ void gather_2(const T x[N_X], int f, T in[6], T dat[7]) {
 }
 
 // block 2, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=2 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=21 cycles (the plan's)
 void evaluate_2(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=2
+#pragma HLS PIPELINE II=21
         const int f = BLOCK2_INSTANCES[i];
         T in[6], dat[7], half[1];
         gather_2(x, f, in, dat);
@@ -2717,7 +2708,7 @@ void evaluate_2(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 2, 4);
+    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 21, 4);
 }
 
 // block 2's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -2743,15 +2734,14 @@ bool reduce_2() {
         load_rows_2(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate<8, 7, 6>(ab, col) && finite;
-        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
-        // the finiteness check's tree over the columns, the scatter into G
+        finite = accumulate<8, 7, 6, 8>(ab, col) && finite;
+        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
+        // groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_2", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_2", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_2", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_2", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
-        FGC_CYCLES("reduce_2", 0, "scatter", 6, 1, 6);
+        FGC_CYCLES("reduce_2", 0, "rows", 12, fgc_units::dot_ii(12, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(12, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_2", 0, "scatter", 6, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -2767,10 +2757,10 @@ T noise_2(T noise) {
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6>(ab, scale);
+        noise += rounding_noise<8, 7, 6, 2>(ab, scale);
         FGC_CYCLES("noise_2", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_2", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_2", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_2", 0, "rows", 6, 2, 22);
         FGC_CYCLES("noise_2", 0, "terms", 2, 4, 14);
     }
     return noise;
@@ -3040,10 +3030,10 @@ void whiten_tail_3_0(const T raw[], T ab[], const T p[]) {
 }
 
 // block 3, Jacobian mode: per instance residual + Jacobian (its 240 structural non-zeros of
-// 21 x 31), whitening, into AB; one instance every II=143 cycles (the plan's)
+// 21 x 31), whitening, into AB; one instance every II=326 cycles (the plan's)
 void evaluate_3(const T x[N_X]) {
     for (int i = 0; i < 7; ++i) {
-#pragma HLS PIPELINE II=143
+#pragma HLS PIPELINE II=326
         const int f = BLOCK3_INSTANCES[i];
         T in[42], dat[211], half[2];
         gather_3(x, f, in, dat);
@@ -3061,7 +3051,7 @@ void evaluate_3(const T x[N_X]) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
         }
     }
-    FGC_CYCLES("factor_3_jacobian", 0, "instances", 7, 143, 621);
+    FGC_CYCLES("factor_3_jacobian", 0, "instances", 7, 326, 621);
 }
 
 // block 3's whitened rows of instance f from AB, padded to 32 columns (a multiple of PORTS)
@@ -3092,15 +3082,14 @@ bool reduce_3() {
         for (int j = 0; j < 3; ++j) col[15 + j] = VAR_T_OFF[FACTOR_VARS[vb + 3]] + j;
         for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
         for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
-        finite = accumulate<32, 31, 21>(ab, col) && finite;
-        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
-        // the finiteness check's tree over the columns, the scatter into G
+        finite = accumulate<32, 31, 21, 32>(ab, col) && finite;
+        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
+        // groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_3", 0, "load", 336, 1, 2);
         FGC_CYCLES("reduce_3", 0, "columns", 30, 1, 1);
-        FGC_CYCLES("reduce_3", 0, "rows", 21, fgc_units::dot_ii(21, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(21, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_3", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(32));
-        FGC_CYCLES("reduce_3", 0, "scatter", 30, 1, 6);
+        FGC_CYCLES("reduce_3", 0, "rows", 168, fgc_units::dot_ii(168, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(168, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_3", 0, "scatter", 30, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -3121,19 +3110,19 @@ T noise_3(T noise) {
         for (int j = 0; j < 3; ++j) scale[15 + j] = VAR_SCALE[FACTOR_VARS[vb + 3]];
         for (int j = 0; j < 6; ++j) scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
         for (int j = 0; j < 6; ++j) scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
-        noise += rounding_noise<32, 31, 21>(ab, scale);
+        noise += rounding_noise<32, 31, 21, 8>(ab, scale);
         FGC_CYCLES("noise_3", 0, "load", 336, 1, 2);
         FGC_CYCLES("noise_3", 0, "scales", 32, 1, 1);
-        FGC_CYCLES("noise_3", 0, "rows", 21, 1, 46);
+        FGC_CYCLES("noise_3", 0, "rows", 21, 8, 46);
         FGC_CYCLES("noise_3", 0, "terms", 6, 4, 14);
     }
     return noise;
 }
 
-// block 3, cost mode: `total` plus the cost of its instances in order, one every II=60 cycles
+// block 3, cost mode: `total` plus the cost of its instances in order, one every II=108 cycles
 T cost_of_3(const T x[N_X], T total) {
     for (int i = 0; i < 7; ++i) {
-#pragma HLS PIPELINE II=60
+#pragma HLS PIPELINE II=108
         const int f = BLOCK3_INSTANCES[i];
         T in[42], dat[211], half[2];
         T unused[672];
@@ -3144,7 +3133,7 @@ T cost_of_3(const T x[N_X], T total) {
         cost += robust_loss(half[1], DATA_BUF[FACTOR_DATA_OFF[f] + 213], DATA_BUF[FACTOR_DATA_OFF[f] + 214]);
         total += cost;
     }
-    FGC_CYCLES("factor_3_cost", 0, "instances", 7, 60, 600);
+    FGC_CYCLES("factor_3_cost", 0, "instances", 7, 108, 600);
     return total;
 }
 
@@ -3158,10 +3147,10 @@ void gather_4(const T x[N_X], int f, T in[12], T dat[4]) {
 }
 
 // block 4, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
-// 3 x 7), whitening, into AB; one instance every II=1 cycles (the plan's)
+// 3 x 7), whitening, into AB; one instance every II=11 cycles (the plan's)
 void evaluate_4(const T x[N_X]) {
     for (int i = 0; i < 8; ++i) {
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=11
         const int f = BLOCK4_INSTANCES[i];
         T in[12], dat[4], half[1];
         gather_4(x, f, in, dat);
@@ -3176,7 +3165,7 @@ void evaluate_4(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_4_jacobian", 0, "instances", 8, 1, 4);
+    FGC_CYCLES("factor_4_jacobian", 0, "instances", 8, 11, 4);
 }
 
 // block 4's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -3202,15 +3191,14 @@ bool reduce_4() {
         load_rows_4(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate<8, 7, 3>(ab, col) && finite;
-        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
-        // the finiteness check's tree over the columns, the scatter into G
+        finite = accumulate<8, 7, 3, 8>(ab, col) && finite;
+        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
+        // groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_4", 0, "load", 12, 1, 2);
         FGC_CYCLES("reduce_4", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_4", 0, "rows", 3, fgc_units::dot_ii(3, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(3, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_4", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
-        FGC_CYCLES("reduce_4", 0, "scatter", 6, 1, 6);
+        FGC_CYCLES("reduce_4", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_4", 0, "scatter", 6, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -3226,19 +3214,19 @@ T noise_4(T noise) {
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 3>(ab, scale);
+        noise += rounding_noise<8, 7, 3, 2>(ab, scale);
         FGC_CYCLES("noise_4", 0, "load", 12, 1, 2);
         FGC_CYCLES("noise_4", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_4", 0, "rows", 3, 1, 22);
+        FGC_CYCLES("noise_4", 0, "rows", 3, 2, 22);
         FGC_CYCLES("noise_4", 0, "terms", 1, 4, 14);
     }
     return noise;
 }
 
-// block 4, cost mode: `total` plus the cost of its instances in order, one every II=4 cycles
+// block 4, cost mode: `total` plus the cost of its instances in order, one every II=6 cycles
 T cost_of_4(const T x[N_X], T total) {
     for (int i = 0; i < 8; ++i) {
-#pragma HLS PIPELINE II=4
+#pragma HLS PIPELINE II=6
         const int f = BLOCK4_INSTANCES[i];
         T in[12], dat[4], half[1];
         T unused[24];
@@ -3248,7 +3236,7 @@ T cost_of_4(const T x[N_X], T total) {
         cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         total += cost;
     }
-    FGC_CYCLES("factor_4_cost", 0, "instances", 8, 4, 18);
+    FGC_CYCLES("factor_4_cost", 0, "instances", 8, 6, 18);
     return total;
 }
 

@@ -1053,12 +1053,14 @@ void reweight(T ab[], T code, T k) {
 // The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
 // moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
 // |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
-// partial sums: a fixed order, and no chain from row to row.
-template <int STRIDE, int COLS, int ROWS>
+// partial sums: a fixed order, and no chain from row to row. A row every GROUPS = STRIDE / TILE
+// cycles: the row's STRIDE products share TILE multipliers and adders (the rejected step's pass
+// is rare: parallelism there does not pay).
+template <int STRIDE, int COLS, int ROWS, int GROUPS>
 T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T moved[ROWS], b_abs[ROWS];
-    for (int r = 0; r < ROWS; ++r) {  // a row a cycle: its terms unrolled
-#pragma HLS PIPELINE II=1
+    for (int r = 0; r < ROWS; ++r) {
+#pragma HLS PIPELINE II=GROUPS
         T part[TILE];
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
         for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
@@ -1081,53 +1083,44 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]]). Row r goes
-// into partial sum r % T_PARTIALS of every column (a row a cycle: II 1), the partial sums are
-// folded per column, then scattered into G (the columns' entries are distinct: II 1). False if
-// an entry is infinite or NaN.
-template <int STRIDE, int COLS, int ROWS>
+// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]]). TILE columns of
+// a row a cycle (II 1: TILE multipliers and adders); row r goes into partial sum r % T_PARTIALS
+// of its columns, so an accumulator comes back DIST = T_PARTIALS * STRIDE / TILE iterations
+// later (the DEPENDENCE's distance, at least the adder's latency). Then a column a cycle: its
+// partial sums folded and added into G (the columns' entries are distinct: II 1). False if an
+// entry is infinite or NaN.
+template <int STRIDE, int COLS, int ROWS, int DIST>
 bool accumulate(const T ab[], const int col[COLS - 1]) {
-    T g[T_PARTIALS][STRIDE], check[T_PARTIALS][STRIDE];
+    T g[T_PARTIALS][STRIDE];
 #pragma HLS ARRAY_PARTITION variable=g complete dim=0
-#pragma HLS ARRAY_PARTITION variable=check complete dim=0
     for (int t = 0; t < T_PARTIALS; ++t) {
 #pragma HLS UNROLL
         for (int c = 0; c < STRIDE; ++c) {
 #pragma HLS UNROLL
             g[t][c] = T(0);
-            check[t][c] = T(0);
         }
     }
+    bool finite = true;
     for (int r = 0; r < ROWS; ++r) {
+        for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=g inter false
-#pragma HLS DEPENDENCE variable=check inter false
-        const T b = ab[r * STRIDE + COLS - 1];
-        for (int c = 0; c < STRIDE; ++c) {
-            g[r % T_PARTIALS][c] += ab[r * STRIDE + c] * b;
-            check[r % T_PARTIALS][c] += ab[r * STRIDE + c] - ab[r * STRIDE + c];  // 0, or NaN for inf / NaN
+#pragma HLS DEPENDENCE variable=g inter true distance=DIST
+            const T b = ab[r * STRIDE + COLS - 1];
+            for (int t = 0; t < TILE; ++t) {
+                const T a = ab[r * STRIDE + c0 + t];
+                g[r % T_PARTIALS][c0 + t] += a * b;
+                finite = finite && fgc_isfinite(a);
+            }
         }
     }
-    T sum[STRIDE], bad[STRIDE];
-#pragma HLS ARRAY_PARTITION variable=sum complete
-#pragma HLS ARRAY_PARTITION variable=bad complete
-    for (int c = 0; c < STRIDE; ++c) {
-#pragma HLS UNROLL
-        T pg[T_PARTIALS], pc[T_PARTIALS];
-        for (int t = 0; t < T_PARTIALS; ++t) {
-            pg[t] = g[t][c];
-            pc[t] = check[t][c];
-        }
-        sum[c] = fgc_units::fold_partials<T, T_PARTIALS>(pg);
-        bad[c] = fgc_units::fold_partials<T, T_PARTIALS>(pc);
-    }
-    const T bad_all = fgc_units::fold_partials<T, STRIDE>(bad);
-    for (int c = 0; c < COLS - 1; ++c) {
+    for (int c = 0; c < COLS - 1; ++c) {  // a column a cycle: its partial sums folded, into G
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=G inter false
-        G[col[c]] += sum[c];
+        T pg[T_PARTIALS];
+        for (int t = 0; t < T_PARTIALS; ++t) pg[t] = g[t][c];
+        G[col[c]] += fgc_units::fold_partials<T, T_PARTIALS>(pg);
     }
-    return fgc_isfinite(bad_all);
+    return finite;
 }
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
@@ -1194,15 +1187,14 @@ bool reduce_0() {
         int col[12];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         for (int j = 0; j < 6; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
-        finite = accumulate<16, 13, 6>(ab, col) && finite;
-        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
-        // the finiteness check's tree over the columns, the scatter into G
+        finite = accumulate<16, 13, 6, 16>(ab, col) && finite;
+        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
+        // groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_0", 0, "load", 48, 1, 2);
         FGC_CYCLES("reduce_0", 0, "columns", 12, 1, 1);
-        FGC_CYCLES("reduce_0", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_0", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(16));
-        FGC_CYCLES("reduce_0", 0, "scatter", 12, 1, 6);
+        FGC_CYCLES("reduce_0", 0, "rows", 24, fgc_units::dot_ii(24, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(24, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_0", 0, "scatter", 12, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -1219,10 +1211,10 @@ T noise_0(T noise) {
         for (int c = 0; c < 16; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         for (int j = 0; j < 6; ++j) scale[6 + j] = VAR_SCALE[FACTOR_VARS[vb + 1]];
-        noise += rounding_noise<16, 13, 6>(ab, scale);
+        noise += rounding_noise<16, 13, 6, 4>(ab, scale);
         FGC_CYCLES("noise_0", 0, "load", 48, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 16, 1, 1);
-        FGC_CYCLES("noise_0", 0, "rows", 6, 1, 30);
+        FGC_CYCLES("noise_0", 0, "rows", 6, 4, 30);
         FGC_CYCLES("noise_0", 0, "terms", 2, 4, 14);
     }
     return noise;
@@ -1299,15 +1291,14 @@ bool reduce_1() {
         load_rows_1(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate<8, 7, 6>(ab, col) && finite;
-        // load, column map, A^T b a row at a time (a dot product of m terms: the plan's rule),
-        // the finiteness check's tree over the columns, the scatter into G
+        finite = accumulate<8, 7, 6, 8>(ab, col) && finite;
+        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
+        // groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_1", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_1", 0, "check", 1, 1, T_ADD_LAT * fgc_units::ceil_log2(8));
-        FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 6);
+        FGC_CYCLES("reduce_1", 0, "rows", 12, fgc_units::dot_ii(12, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(12, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -1323,10 +1314,10 @@ T noise_1(T noise) {
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6>(ab, scale);
+        noise += rounding_noise<8, 7, 6, 2>(ab, scale);
         FGC_CYCLES("noise_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_1", 0, "rows", 6, 1, 22);
+        FGC_CYCLES("noise_1", 0, "rows", 6, 2, 22);
         FGC_CYCLES("noise_1", 0, "terms", 2, 4, 14);
     }
     return noise;
