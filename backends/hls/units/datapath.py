@@ -158,7 +158,6 @@ def build(ctx) -> None:
         name = f"factor_{i}"
         instances = len(bc.instances)
         allocated = allocations[i]
-        capped = {k for k, _ in allocated if k in ("add", "mul", "div", "sqrt")}
         both = {k: b.ops_after.get(k, 0) + b.ops_cost.get(k, 0)
                 for k in set(b.ops_after) | set(b.ops_cost)}
         bound = []
@@ -180,12 +179,21 @@ def build(ctx) -> None:
             # (the cost loop twice: total_cost has two call sites, LM control's cost at X and
             # at X_TRIAL, each its own RTL instance)
             copies = COST_CALL_SITES if mode == "cost" else 1
-            bound.append(BoundLoop(f"{name}_{mode}", tuple(both.items()), ii,
-                                   tuple((k, n) for k, n in allocated if k in capped), copies))
-            bound.append(BoundLoop(f"{name}_{mode}_own", tuple(own.items()), ii, (), copies))
-        ctx.units.append(bound_unit(name, f"factor datapath of block {b.name!r} (its Jacobian "
-                                    "and cost call sites, whitening, robust weights)", bound,
-                                    table=ops))
+            # (the emitter prints every limit: operation instances for the arithmetic,
+            # function instances for trig and special, which Vitis honours alike)
+            factor = BoundLoop(f"{name}_{mode}", tuple(both.items()), ii, allocated, copies)
+            bound.append(factor.instances(ops))
+            # the loop's own operations: pipelined cores (robust_loss's log1p an hls_math
+            # function, not the rolled Horner unit the table's "special" II describes)
+            bound.append(BoundLoop(f"{name}_{mode}_own", tuple(own.items()), ii, (),
+                                   copies).instances())
+        operators: dict[str, int] = {}
+        for part in bound:
+            for k, n in part.items():
+                operators[k] = operators.get(k, 0) + n
+        ctx.units.append(Unit(name, f"factor datapath of block {b.name!r} (its Jacobian and "
+                              "cost call sites, whitening, robust weights)", 1,
+                              tuple(sorted(operators.items()))))
         if opts.jacobian_storage == "raw":
             words = raw_jacobian_words(b) * instances
             whiten_macs += whitening_macs(b) * instances
