@@ -740,7 +740,7 @@ class _Reader:
         for d in re.finditer(r"DEPENDENCE\b([^\n]*)", body, re.I):
             args = d.group(1)
             name = re.search(r"variable\s*=\s*(\w+)", args)
-            dist = re.search(r"distance\s*=\s*(\w+)", args)
+            dist = re.search(r"distance\s*=\s*(\w+(?:\s*::\s*\w+)*)", args)
             if name and dist and re.search(r"inter\s+true", args, re.I):
                 value = self._value(dist.group(1), env)
                 if value is not None and value > 0:
@@ -776,15 +776,24 @@ class DesignReading:
     loops: tuple[LoopReading, ...]
     operators: tuple[tuple[str, int], ...]  # operator instances by kind, the whole design
     modules: tuple[tuple[str, int], ...]  # function -> RTL instances
+    # file -> operator instances by kind of the functions defined there (their own code and
+    # pipelined loops; a callee's in its own file)
+    by_file: tuple[tuple[str, tuple[tuple[str, int], ...]], ...] = ()
 
-    def dsp(self, dsp_of: dict[str, int]) -> int:
-        return sum(n * dsp_of.get(kind, 0) for kind, n in self.operators)
+    def dsp(self, dsp_of: dict[str, int], files: Iterable[str] | None = None) -> int:
+        """DSP of the whole design, or of the functions defined in ``files``."""
+        if files is None:
+            return sum(n * dsp_of.get(kind, 0) for kind, n in self.operators)
+        wanted = set(files)
+        return sum(n * dsp_of.get(kind, 0) for file, ops in self.by_file if file in wanted
+                   for kind, n in ops)
 
 
 def _design(reader: _Reader, top: str) -> DesignReading:
     loops = reader.loops()
     operators: Counter = Counter()
     modules: Counter = Counter()
+    by_file: dict[str, Counter] = {}
 
     def own(f: _Function, env: dict[str, int]) -> Counter:
         reader.flatten = False
@@ -802,13 +811,16 @@ def _design(reader: _Reader, top: str) -> DesignReading:
         if depth > 40 or mult == 0:
             return
         modules[f.qualname] += mult
+        here = by_file.setdefault(f.file, Counter())
         for kind, n in own(f, env).items():
             operators[kind] += n * mult
+            here[kind] += n * mult
         for r in loops:
             if r.function == f.name and r.file == f.file and dict(r.template) == {
                     k: v for k, v in env.items() if k in f.template_ints}:
                 for kind, n in r.instances:
                     operators[kind] += n * mult
+                    here[kind] += n * mult
         for callee, cenv, times in calls(f.text, env):
             visit(callee, cenv, mult * times, depth + 1)
 
@@ -843,7 +855,9 @@ def _design(reader: _Reader, top: str) -> DesignReading:
         raise KeyError(top)
     visit(reader.functions[top], {}, 1, 0)
     return DesignReading(top, tuple(loops), tuple(sorted(operators.items())),
-                         tuple(sorted(modules.items())))
+                         tuple(sorted(modules.items())),
+                         tuple(sorted((file, tuple(sorted(c.items())))
+                                      for file, c in by_file.items())))
 
 
 def read_design(files: Iterable[tuple[str, str]], top: str, add_latency: int

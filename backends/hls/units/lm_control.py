@@ -74,19 +74,20 @@ def build(ctx) -> None:
     # its operators as Vitis binds them (plan.binding): each pipelined loop its own (|x|²: a
     # multiply-add a cycle; the step test: three; the gradient maximum: a compare), the
     # scalar decision sequential (one of each kind it uses); the rounding-noise pass per block
-    # type (rounding_noise<…> is one module per block shape): a row every padded / TILE
-    # cycles through its padded products and moved's three adds, then the rows' terms
+    # type (each noise_<b> calls rounding_noise<…>: its own module): a row every padded / TILE
+    # cycles through its padded products and moved's three adds, then the rows' terms, and
+    # noise_<b>'s running sum
     la = ctx.ops.add.latency
     loops = [BoundLoop("x_norm", (("add", 1), ("mul", 1)), 1),
              BoundLoop("step_test", (("add", 3), ("mul", 3)), 1),
              BoundLoop("gradient_max", (("compare", 1),), 1),
              BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
-    shapes = {_block_shape(b)[2] for b in program.blocks}
-    for padded in sorted(shapes):
-        loops += [BoundLoop(f"noise_rows_{padded}", (("add", padded + 3), ("mul", padded + 1)),
+    for i, b in enumerate(program.blocks):  # noise_<b>'s call: its own instance
+        padded = _block_shape(b)[2]
+        loops += [BoundLoop(f"noise_rows_{i}", (("add", padded + 3), ("mul", padded + 1)),
                             padded // TILE),
-                  BoundLoop(f"noise_terms_{padded}", (("add", 2 * TILE), ("mul", 3 * TILE)),
-                            la)]
+                  BoundLoop(f"noise_terms_{i}", (("add", 2 * TILE), ("mul", 3 * TILE)), la),
+                  BoundLoop(f"noise_sum_{i}", (("add", 1),), 0)]
     ctx.units.append(bound_unit("lm_control", "gain ratio, μ update, stopping rules, "
                                 "rounding noise", loops, table=ctx.ops))
     for phase in lm_control_phases(n_t, n_x, timing):
