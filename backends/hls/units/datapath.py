@@ -94,6 +94,13 @@ def factor_allocation(program, opts) -> list[tuple[tuple[str, int], ...]]:
     return out
 
 
+def mode_allocation(limits, counts: dict) -> tuple[tuple[str, int], ...]:
+    """The ``ALLOCATION`` limits of one mode's function (``factor_<b>``: the Jacobian's counts,
+    ``factor_cost_<b>``: the cost's): the block's ``limits`` (:func:`factor_allocation`), at
+    most that mode's operations."""
+    return tuple((k, min(n, counts.get(k, 0))) for k, n in limits if counts.get(k, 0) > 0)
+
+
 def whitening_ops(bc) -> dict[str, int]:
     """The operations of one ``evaluate_<b>`` iteration outside ``factor_<b>`` (its ALLOCATION
     does not reach them), as accel.cpp.jinja prints them for block context ``bc``
@@ -157,13 +164,11 @@ def build(ctx) -> None:
     for i, (b, bc) in enumerate(zip(program.blocks, ctx.blocks, strict=True)):
         name = f"factor_{i}"
         instances = len(bc.instances)
-        allocated = allocations[i]
-        both = {k: b.ops_after.get(k, 0) + b.ops_cost.get(k, 0)
-                for k in set(b.ops_after) | set(b.ops_cost)}
         bound = []
         for mode, counts, text, out, own in (
                 ("jacobian", b.ops_after, b.kernel, jac, whitening_ops(bc)),
                 ("cost", b.ops_cost, b.cost_kernel, cost, robust_ops(bc))):
+            allocated = mode_allocation(allocations[i], counts)
             issue = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
                                for k, n in allocated])
             ii = max(issue, loop_ii(instance_accesses(bc, mode)))
@@ -174,14 +179,14 @@ def build(ctx) -> None:
             depth = max(critical_path(text, sim_ops), issue)
             out.append(Process(f"{name}_{mode}", name,
                                (Loop(f"{name}_{mode}_instances", instances, ii, depth),)))
-            # factor_<b> (both modes' code) under its ALLOCATION at this call site, and the
+            # factor_<b> / factor_cost_<b> under its ALLOCATION at this call site, and the
             # loop's own operations
             # (the cost loop twice: total_cost has two call sites, LM control's cost at X and
             # at X_TRIAL, each its own RTL instance)
             copies = COST_CALL_SITES if mode == "cost" else 1
             # (the emitter prints every limit: operation instances for the arithmetic,
             # function instances for trig and special, which Vitis honours alike)
-            factor = BoundLoop(f"{name}_{mode}", tuple(both.items()), ii, allocated, copies)
+            factor = BoundLoop(f"{name}_{mode}", tuple(counts.items()), ii, allocated, copies)
             bound.append(factor.instances(ops))
             # the loop's own operations: pipelined cores (robust_loss's log1p an hls_math
             # function, not the rolled Horner unit the table's "special" II describes)
