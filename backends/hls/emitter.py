@@ -167,7 +167,7 @@ class _AccelBlock:
 
     def __init__(self, block, allocation, jacobian, cost, noise_row_depth: int):
         self._block = block
-        self.allocation = allocation
+        self.allocation, self.allocation_cost = allocation  # factor_<b>, factor_cost_<b>
         self.ii_jacobian, self.depth_jacobian = jacobian.ii, jacobian.depth
         self.ii_cost, self.depth_cost = cost.ii, cost.depth
         self.noise_row_depth = noise_row_depth
@@ -186,7 +186,9 @@ def accel_plan(program: Program, config: HlsConfig):
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
     from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
+    from fgc_backends.hls.plan.model import Unit
     from fgc_backends.hls.units.cholesky import gram_ii
+    from fgc_backends.hls.units.datapath import factor_allocation, mode_allocation
     plan = accel_plan(program, config)
     phase = {ph.name: ph for ph in plan.phases}
     loops = {p.name: p.loops[0] for name in ("factor_jacobian", "factor_cost")
@@ -194,11 +196,18 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     noise = {p.name: p.loops[2].depth for p in phase["rounding_noise"].processes
              if p.name.startswith("noise_")}
     blocks = []
+    # factor_<b>'s ALLOCATION limits (the plan's unit is what Vitis binds around them)
+    allocations = factor_allocation(program, plan.options)
     for b in context["blocks"]:
-        text = "\n".join((*b.jacobian.intermediates, *b.jacobian.outputs,
-                          *b.cost.intermediates, *b.cost.outputs))
-        blocks.append(_AccelBlock(b, _allocation(plan.unit(f"factor_{b.index}"),
-                                                 config.scalar_cxx, text),
+        block = program.blocks[b.index]
+        jac = Unit(f"factor_{b.index}", "ALLOCATION", 1,
+                   mode_allocation(allocations[b.index], block.ops_after))
+        cost = Unit(f"factor_cost_{b.index}", "ALLOCATION", 1,
+                    mode_allocation(allocations[b.index], block.ops_cost))
+        jac_text = "\n".join((*b.jacobian.intermediates, *b.jacobian.outputs))
+        cost_text = "\n".join((*b.cost.intermediates, *b.cost.outputs))
+        blocks.append(_AccelBlock(b, (_allocation(jac, config.scalar_cxx, jac_text),
+                                      _allocation(cost, config.scalar_cxx, cost_text)),
                                   loops[f"factor_{b.index}_jacobian"],
                                   loops[f"factor_{b.index}_cost"], noise[f"noise_{b.index}"]))
         # Cholesky's HGC: the II of the block's Gram panel rows (its multiply-add lanes)

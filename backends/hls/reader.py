@@ -314,6 +314,7 @@ class _Reader:
         the pipelined loop (a read-modify-write of one of them is carried)."""
         total = _Count()
         pos, n = 0, len(text)
+        taken: bool | None = None  # the last if's condition, when the template fixes it
         while pos < n:
             m = _CONTROL.search(text, pos)
             if not m:
@@ -345,12 +346,15 @@ class _Reader:
                 condition = text[open_ + 1:close]
                 total.add(self.statement(condition, scope, env, loop_var, outer, depth))
                 body, pos = self._body(text, close + 1)
-                if self._condition(condition, env) is not False:
+                taken = self._condition(condition, env)
+                if taken is not False:
                     total.add(self.count(body, scope, env, loop_var, outer, depth))
                 continue
             if word == "else":
                 body, pos = self._body(text, m.end())
-                total.add(self.count(body, scope, env, loop_var, outer, depth))
+                if taken is not True:  # a branch known taken: its else is never built
+                    total.add(self.count(body, scope, env, loop_var, outer, depth))
+                taken = None
                 continue
             if word == "#":
                 pos = text.find("\n", m.start())
@@ -545,7 +549,8 @@ class _Reader:
             finally:
                 self.returns_float = saved
             if self.allocation(f.text):  # its own module under ALLOCATION: counted apart
-                capped = _Count(accesses=result.accesses, recurrences=result.recurrences)
+                capped = _Count(accesses=result.accesses, recurrences=result.recurrences,
+                                rw=result.rw)
                 capped.capped = {f.name: result.ops, **result.capped}
                 result = capped
             self.memo[key] = result
@@ -729,11 +734,26 @@ class _Reader:
         free = set(re.findall(r"DEPENDENCE\s+variable\s*=\s*(\w+)[^\n]*inter\s+false", body,
                               re.I))
         free |= {scope[name].alias for name in free if name in scope}
+        # DEPENDENCE ... inter true distance=D: the element comes back D iterations later, so
+        # the recurrence through the adder allows II ceil(latency / D)
+        distance: dict[str, int] = {}
+        for d in re.finditer(r"DEPENDENCE\b([^\n]*)", body, re.I):
+            args = d.group(1)
+            name = re.search(r"variable\s*=\s*(\w+)", args)
+            dist = re.search(r"distance\s*=\s*(\w+(?:\s*::\s*\w+)*)", args)
+            if name and dist and re.search(r"inter\s+true", args, re.I):
+                value = self._value(dist.group(1), env)
+                if value is not None and value > 0:
+                    for n in {name.group(1), scope[name.group(1)].alias if name.group(1) in
+                              scope else name.group(1)}:
+                        distance[n] = value
         for alias, uses in count.rw.items():
             kinds = {k for k, _ in uses}
             if kinds == {"r", "w"} and any(fixed for _, fixed in uses):
                 count.recurrences.add(alias)
         carried = tuple(sorted(r for r in count.recurrences if r not in free))
+        ii_recurrence = max([0] + [math.ceil(self.add_latency / distance[r]) if r in distance
+                                   else self.add_latency for r in carried])
         label = re.search(r'FGC_CYCLES\(\s*"(\w+)"', code[close:close + 400])
         return LoopReading(
             file=f.file, line=_line(code, pragma), function=f.name,
@@ -741,7 +761,7 @@ class _Reader:
             label=label.group(1) if label else None, ii=ii,
             ops=tuple(sorted(count.ops.items())), instances=tuple(sorted(instances.items())),
             accesses=tuple(accesses), ii_ports=ii_ports, recurrence=carried,
-            ii_recurrence=self.add_latency if carried else 0)
+            ii_recurrence=ii_recurrence)
 
 
 @dataclass(frozen=True)
@@ -756,15 +776,24 @@ class DesignReading:
     loops: tuple[LoopReading, ...]
     operators: tuple[tuple[str, int], ...]  # operator instances by kind, the whole design
     modules: tuple[tuple[str, int], ...]  # function -> RTL instances
+    # file -> operator instances by kind of the functions defined there (their own code and
+    # pipelined loops; a callee's in its own file)
+    by_file: tuple[tuple[str, tuple[tuple[str, int], ...]], ...] = ()
 
-    def dsp(self, dsp_of: dict[str, int]) -> int:
-        return sum(n * dsp_of.get(kind, 0) for kind, n in self.operators)
+    def dsp(self, dsp_of: dict[str, int], files: Iterable[str] | None = None) -> int:
+        """DSP of the whole design, or of the functions defined in ``files``."""
+        if files is None:
+            return sum(n * dsp_of.get(kind, 0) for kind, n in self.operators)
+        wanted = set(files)
+        return sum(n * dsp_of.get(kind, 0) for file, ops in self.by_file if file in wanted
+                   for kind, n in ops)
 
 
 def _design(reader: _Reader, top: str) -> DesignReading:
     loops = reader.loops()
     operators: Counter = Counter()
     modules: Counter = Counter()
+    by_file: dict[str, Counter] = {}
 
     def own(f: _Function, env: dict[str, int]) -> Counter:
         reader.flatten = False
@@ -782,13 +811,16 @@ def _design(reader: _Reader, top: str) -> DesignReading:
         if depth > 40 or mult == 0:
             return
         modules[f.qualname] += mult
+        here = by_file.setdefault(f.file, Counter())
         for kind, n in own(f, env).items():
             operators[kind] += n * mult
+            here[kind] += n * mult
         for r in loops:
             if r.function == f.name and r.file == f.file and dict(r.template) == {
                     k: v for k, v in env.items() if k in f.template_ints}:
                 for kind, n in r.instances:
                     operators[kind] += n * mult
+                    here[kind] += n * mult
         for callee, cenv, times in calls(f.text, env):
             visit(callee, cenv, mult * times, depth + 1)
 
@@ -823,7 +855,9 @@ def _design(reader: _Reader, top: str) -> DesignReading:
         raise KeyError(top)
     visit(reader.functions[top], {}, 1, 0)
     return DesignReading(top, tuple(loops), tuple(sorted(operators.items())),
-                         tuple(sorted(modules.items())))
+                         tuple(sorted(modules.items())),
+                         tuple(sorted((file, tuple(sorted(c.items())))
+                                      for file, c in by_file.items())))
 
 
 def read_design(files: Iterable[tuple[str, str]], top: str, add_latency: int

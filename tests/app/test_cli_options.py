@@ -9,6 +9,7 @@ the same tolerance ``fgc verify`` applies.
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -163,11 +164,14 @@ def test_modelled_figures_are_labelled(capsys):
     assert "accelerator (model estimate): " in out and "resources (model estimate): " in out
     assert main(["report", BEACONS, "--iterations", "3"]) == 0
     out = capsys.readouterr().out
-    assert "fits xc7z045 (model estimate)" in out
+    # the verdict either way (range_beacons no longer fits as issue 32 re-prices it)
+    verdict = re.compile(r"(?:fits|does NOT fit) xc7z045.*\(model estimate\)")
+    assert verdict.search(out)
     assert "Modelled cycles by phase (whole solve; model estimate, accelerator plan)" in out
     assert main(["report", BEACONS, "--iterations", "3", "-q"]) == 0
     line = capsys.readouterr().out
-    assert line.count("\n") == 1 and line.rstrip().endswith("fits xc7z045 (model estimate)")
+    assert line.count("\n") == 1 and verdict.search(line)
+    assert line.rstrip().endswith("xc7z045 (model estimate)")
 
 
 def _helix(n: int = 15):
@@ -265,12 +269,13 @@ def test_allocation_and_unit_sets_shape_the_emitted_design(tmp_path):
     plan = accel_plan(program, config)
     heavy = max(range(len(program.blocks)), key=lambda i: sum(
         program.blocks[i].ops_after.values()) * sum(f.block == i for f in program.factors))
-    limits = dict(plan.unit(f"factor_{heavy}").operators)
+    from fgc_backends.hls.units.datapath import factor_allocation  # the emitted limits
+    limits = dict(factor_allocation(program, plan.options)[heavy])
     assert limits["mul"] == 48 and limits["add"] == 32 and limits["div"] == 4  # div: default
     assert ("operation", "fmul", 48) in found[f"factor_{heavy}"]
     assert "qr0_update1" in kernel and "qr1_" not in kernel  # one unit set, n_u = 2
     two = accel_plan(program, hls.HlsConfig())
-    assert dict(two.unit(f"factor_{heavy}").operators)["mul"] == 24
+    assert dict(factor_allocation(program, two.options)[heavy])["mul"] == 24
 
 
 def test_report_prices_the_design_compile_emits(tmp_path, capsys):

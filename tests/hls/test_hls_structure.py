@@ -357,15 +357,23 @@ def test_allocation_limits_are_the_plans(tmp_path):
     from fgc_backends.hls.network import allocations
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
     plan = accel_plan(program, HlsConfig())
+    from fgc_backends.hls.units.datapath import factor_allocation, mode_allocation
     found = allocations((out / "lio.cpp").read_text())
-    # the factor datapaths (factor_<b>) and the state update's per variable type (retract_<k>)
-    pairs = [(f"factor_{b}", f"factor_{b}") for b in range(len(program.blocks))]
+    # the factor datapaths per mode (factor_<b>: the Jacobian's, factor_cost_<b>: the cost's
+    # operations under the block's limits) and the state update's per variable type
+    # (retract_<k>: its unit's operators)
+    shared = factor_allocation(program, plan.options)
+    limits_of = {}
+    for b, block in enumerate(program.blocks):
+        limits_of[f"factor_{b}"] = dict(mode_allocation(shared[b], block.ops_after))
+        limits_of[f"factor_cost_{b}"] = dict(mode_allocation(shared[b], block.ops_cost))
+    pairs = [(name, None) for name in limits_of]
     pairs += [(f"retract_{u.name.rsplit('_', 1)[1]}", u.name) for u in plan.units
               if u.name.startswith("state_update_")]
-    assert len(pairs) > len(program.blocks)
+    assert len(pairs) > 2 * len(program.blocks)
     assert set(found) == {function for function, _ in pairs}
     for function, unit in pairs:
-        limits = dict(plan.unit(unit).operators)
+        limits = limits_of[function] if unit is None else dict(plan.unit(unit).operators)
         ops = {n[1:]: lim for kind, n, lim in found[function] if kind == "operation"}
         assert ops == {k: v for k, v in limits.items() if k in ("add", "mul", "div", "sqrt")}
         assert all(n.startswith("d") for kind, n, _ in found[function]

@@ -245,9 +245,10 @@ def test_the_plan_prices_the_scalar_the_hls_config_emits(linear):
 def test_allocation_follows_the_instances():
     """A block type's datapath gets ⌈limit × instances / most instances⌉ of each operator
     (PlanOptions.allocation_scaling "instances"): imu_window N = 50's once-evaluated priors no
-    longer hold the IMU datapath's 24 multipliers, which is what lets #CPE = 40 fit the
-    xc7z045's 900 DSP; a one-instance datapath's depth is at least its operators' issue time,
-    and the priced cycles stay within 0.1 % of the uniform allocation's here."""
+    longer hold the IMU datapath's 24 multipliers, which is what let #CPE = 80 fit the
+    xc7z045's 900 DSP as the plan priced it before issue 32; a one-instance datapath's depth is
+    at least its operators' issue time, and the priced cycles stay within 0.1 % of the uniform
+    allocation's here."""
     from fgc.app.specs import example
 
     program = compile_graph(example("imu_window").build(N=50),
@@ -256,11 +257,15 @@ def test_allocation_follows_the_instances():
     uniform = build_plan(program, PlanOptions.of(program, allocation_scaling="uniform"))
     imu = next(i for i, b in enumerate(program.blocks) if b.name.startswith("CombinedImu"))
     prior = next(i for i, b in enumerate(program.blocks) if b.name == "PriorFactorPose3")
-    assert dict(scaled.unit(f"factor_{imu}").operators) == dict(
-        uniform.unit(f"factor_{imu}").operators)
-    assert dict(scaled.unit(f"factor_{prior}").operators)["mul"] == 1  # ⌈24 × 1 / 49⌉
+    # the emitted ALLOCATION limits (the unit's operators are what Vitis binds around them)
+    from fgc_backends.hls.units.datapath import factor_allocation
+    limits = factor_allocation(program, scaled.options)
+    assert limits[imu] == factor_allocation(program, uniform.options)[imu]
+    assert dict(limits[prior])["mul"] == 1  # ⌈24 × 1 / 49⌉
     a, b = plan_cost(scaled), plan_cost(uniform)
-    assert a.fits and a.dsp <= PART_DSP and not b.fits and "DSP" in b.over
+    # scaling saves DSP (priced as Vitis binds the loops, issue 32, neither fits #CPE = 80 on
+    # the xc7z045 any more: the factor datapaths' two call sites and whitening count)
+    assert a.dsp < b.dsp and not b.fits and "DSP" in b.over
     # the cycles move only where a one-instance datapath now waits for its operators to issue
     # (at the 143 MHz latencies the prior's issue time, not its critical path, sets its depth)
     moved = {k for k, v in a.phase_cycles if v != dict(b.phase_cycles)[k]}

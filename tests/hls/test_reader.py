@@ -190,3 +190,75 @@ def test_an_emitted_design_read_back(chain_design):
     assert modules["qr_update"] == 3 * 2 * 2
     assert all(r.ii >= 1 and r.ii_bound >= 1 for r in design.loops)
     assert design.dsp(DSP) > 0
+
+
+CAPPED_RMW = """
+typedef float T;
+T ACC[16];
+void bump(const int at[4], T v) {
+#pragma HLS ALLOCATION operation instances=fadd limit=1
+    ACC[at[0]] += v;
+}
+void run(const int at[4], const T v[64]) {
+    for (int i = 0; i < 64; ++i) {
+#pragma HLS PIPELINE II=1
+        bump(at, v[i]);
+    }
+}
+void top(const int at[4], const T v[64]) { run(at, v); }
+"""
+
+
+def test_a_capped_callee_keeps_its_read_modify_write():
+    """ACC[at[0]] += v inside a function under ALLOCATION: the loop calling it at II 1 still
+    carries the dependence (issue 32 part 3: the capped callee's record was dropped)."""
+    (loop,) = read_project([("capped.cpp", CAPPED_RMW)], ADD_LATENCY)
+    assert loop.recurrence == ("ACC",) and loop.ii_bound == ADD_LATENCY
+    assert [i.rule for i in check([loop])] == ["ii_recurrence"]
+
+
+DISTANCE = """
+typedef float T;
+void sums(const T v[256], T out[4]) {
+    T acc[4];
+    for (int i = 0; i < 256; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=acc inter true distance=D
+        acc[0] += v[i];
+    }
+    out[0] = acc[0];
+}
+void top(const T v[256], T out[4]) { sums(v, out); }
+"""
+
+
+@pytest.mark.parametrize("distance, bound", [(1, 4), (2, 2), (4, 1), (8, 1)])
+def test_a_declared_distance_bounds_the_ii_by_the_latency_over_it(distance, bound):
+    """DEPENDENCE inter true distance=D on a carried sum: II >= ceil(adder latency / D)."""
+    (loop,) = read_project([("d.cpp", DISTANCE.replace("=D", f"={distance}"))], ADD_LATENCY)
+    assert loop.ii_bound == bound
+    assert bool(check([loop])) == (bound > 1)
+
+
+BRANCHES = """
+typedef float T;
+template <int KIND>
+void pick(const T a[8], T out[8]) {
+    for (int i = 0; i < 8; ++i) {
+#pragma HLS PIPELINE II=1
+        if (KIND == 2) {
+            out[i] = a[i] * a[i] + a[i];
+        } else {
+            out[i] = a[i] * T(3);
+        }
+    }
+}
+void top(const T a[8], T out[8], T o2[8]) { pick<2>(a, out); pick<0>(a, o2); }
+"""
+
+
+def test_only_the_branch_the_template_takes_is_built():
+    loops = {dict(r.template)["KIND"]: r for r in read_project([("b.cpp", BRANCHES)],
+                                                               ADD_LATENCY)}
+    assert dict(loops[2].ops) == {"add": 1, "mul": 1}
+    assert dict(loops[0].ops) == {"mul": 1}

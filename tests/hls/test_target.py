@@ -49,14 +49,14 @@ def test_the_emitted_part_sets_the_fit_verdict():
     for part in ("xc7z045ffg900-2", "xc7z020clg400-1"):
         cost = plan.plan_cost(plan.build_plan(program, plan.PlanOptions.for_config(
             HlsConfig(scalar="float", part=part), program)))
-        verdicts[part] = (cost.fits, cost.over, cost.dsp, cost.lut)
+        verdicts[part] = (cost.fits, cost.over, cost.dsp, cost.lut, cost.ff)
     assert verdicts["xc7z045ffg900-2"][:2] == (True, ()), verdicts
-    _, _, dsp, lut = verdicts["xc7z045ffg900-2"]
+    _, _, dsp, lut, ff = verdicts["xc7z045ffg900-2"]
     small = DEVICES["xc7z020"]
     assert dsp > small.dsp, "the test needs a design over the xc7z020's DSP"
     # the verdict names exactly the resources over the small part's capacities
-    expected = tuple(name for name, used, cap in (("DSP", dsp, small.dsp), ("LUT", lut, small.lut))
-                     if used > cap)
+    expected = tuple(name for name, used, cap in (("DSP", dsp, small.dsp), ("LUT", lut, small.lut),
+                                                  ("FF", ff, small.ff)) if used > cap)
     assert verdicts["xc7z020clg400-1"][:2] == (False, expected), verdicts
     with pytest.raises(HlsConfigError, match="xcvu9p.*known devices"):
         HlsConfig(part="xcvu9p-flga2104-2L-e").check()

@@ -36,7 +36,8 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
     T rhs[CFG::MAX_F], inv[CFG::MAX_F];
     // S xs, every row at once: PARTIALS interleaved partial sums per row (bank a % P of part),
     // the entries S_ia in column order, a's rows one after another. Consecutive iterations hit
-    // different rows and a partial sum comes back every P f >= ADD_LAT iterations: II 1.
+    // different rows and a partial sum comes back every P f >= P >= ADD_LAT iterations (the
+    // DEPENDENCE's distance, at least P): II 1.
     T part[CFG::PARTIALS][CFG::MAX_F];
 #pragma HLS ARRAY_PARTITION variable=part complete dim=1
     for (int i = 0; i < f; ++i) {
@@ -49,7 +50,7 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
     for (int e = 0, a = 0, i = 0; e < f * s; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F*CFG::MAX_COLS
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=part inter false
+#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
         part[a % P][i] += cond[i * cols + f + a] * xs[a];
         if (i == f - 1) {
             i = 0;

@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from fgc.ir.program import Program
+from fgc_backends.cfamily.blocks import block_contexts
 from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls import units as unit_registry
 from fgc_backends.hls.plan.loops import _sizes, _tables, kernel_timing
@@ -51,6 +52,11 @@ class PlanBuild:
     @cached_property
     def tables(self) -> dict:
         return _tables(self.program)
+
+    @cached_property
+    def blocks(self) -> tuple:
+        """The block contexts the kernel is printed from (scalar T: the accelerator's)."""
+        return block_contexts(self.program, vector=False)
 
     @cached_property
     def sizes(self) -> dict:

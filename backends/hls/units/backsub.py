@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 from fgc_backends.cost.operators import OperatorTable
+from fgc_backends.hls.plan.binding import BoundLoop, sum_operators
 from fgc_backends.hls.plan.loops import _ported, _region_cycles, dot_loop, kernel_loop
 from fgc_backends.hls.plan.model import PORTS, Loop, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
@@ -84,6 +85,19 @@ def backsub_phases(ctx, unit: str, sets: int = 1) -> None:
                                      linear=True))
 
 
+def backsub_operators(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
+    """cond_backsub's operators as Vitis binds them (:mod:`fgc_backends.hls.plan.binding`):
+    each pipelined loop its own at II 1 (S xs: a multiply-add; the fold: PARTIALS - 1 adds and
+    the subtraction from d; the reciprocals: a divide; the column above the pivot: a
+    multiply-add), the pivot's multiply sequential; PARTIALS is the adder's latency."""
+    partials = ops.add.latency
+    return sum_operators((BoundLoop("separator", (("add", 1), ("mul", 1)), 1),
+                          BoundLoop("fold", (("add", partials),), 1),
+                          BoundLoop("reciprocals", (("div", 1),), 1),
+                          BoundLoop("solve", (("mul", 1),), 0),
+                          BoundLoop("column", (("add", 1), ("mul", 1)), 1)), ops)
+
+
 def build(ctx) -> None:
     """QR: one back-substitution unit per unit set; Cholesky: the trisolve unit (as emitted:
     cond_backsub step by step; what-if: Lᵀδ = z by rows, Lz = g riding the cascade)."""
@@ -93,11 +107,11 @@ def build(ctx) -> None:
         backsub_phases(ctx, "backsub", sets)
         for s in range(sets):
             ctx.units.append(Unit(f"qr{s}_backsub", "back-substitution (cond_backsub)", 1,
-                                  (("add", 1), ("mul", 2))))
+                                  backsub_operators(ops)))
         return
     if opts.hessian_storage == "frontal":
         ctx.units.append(Unit("trisolve", "back-substitution (cond_backsub; Lz = g rides the "
-                              "cascade)", 1, (("add", 1), ("mul", 1), ("div", 1))))
+                              "cascade)", 1, backsub_operators(ops)))
         backsub_phases(ctx, "trisolve")
         return
     n = program.storage.columns

@@ -7,7 +7,10 @@ from __future__ import annotations
 
 import math
 
+from fgc.ir.codes import NOISE_CODES
+from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.cost.kernels import critical_path
+from fgc_backends.hls.plan.binding import BoundLoop, bound_unit, loop_ii
 from fgc_backends.hls.plan.loops import (
     _block_shape,
     _ceil_log2,
@@ -22,11 +25,12 @@ from fgc_backends.hls.units.spec import UnitSpec
 
 def gradient_loops(program, timing: dict) -> list[Process]:
     """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded,
-    :data:`PORTS` words a cycle, the column map, A^T b a row a cycle into the adder latency's
-    interleaved partial sums of every column (a dot product of m terms, :func:`kernel_dot`),
-    the finiteness check's tree over the padded columns, the scatter into G at II 1), after G
-    is zeroed."""
-    la = timing["acc"][0]
+    :data:`PORTS` words a cycle, the column map, A^T b TILE columns of a row a cycle into the
+    adder latency's interleaved partial sums (a dot product of m × padded / TILE terms,
+    :func:`kernel_dot`; the finiteness check rides along), the scatter into G at II 1), after
+    G is zeroed. The scatter folds each column's partial sums on the way (a
+    ⌈log₂ T_PARTIALS⌉-level tree in its depth)."""
+    la = timing["acc"][0]  # T_PARTIALS: the adder's latency
     n_t = sum(v.dim for v in program.variables)
     procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", n_t, "fill", timing),))]
     for i, b in enumerate(program.blocks):
@@ -35,9 +39,9 @@ def gradient_loops(program, timing: dict) -> list[Process]:
         procs.append(Process(f"reduce_{i}", "gradient", (
             kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("columns", d, "fill", timing, n),
-            kernel_dot("rows", m, timing, n),
-            Loop("check", 1, 1, la * _ceil_log2(padded), n),
-            kernel_loop("scatter", d, "scatter", timing, n))))
+            kernel_dot("rows", m * (padded // TILE), timing, n),
+            Loop("scatter", d, timing["scatter"][0],
+                 timing["scatter"][1] + la * _ceil_log2(la), n))))
     return procs
 
 
@@ -69,33 +73,105 @@ def whitening_macs(b) -> int:
     return macs
 
 
-def build(ctx) -> None:
-    """Per block type a datapath unit and its AB memory; the factor_jacobian and factor_cost
-    phases (the emitted instance loops run one block type after another); QR's gradient pass;
-    raw Jacobians' whitening (what-if)."""
-    program, opts, ops = ctx.program, ctx.opts, ctx.ops
-    sim_ops = _sim_table(ops)
+COST_CALL_SITES = 2  # total_cost(X) and total_cost(X_TRIAL): LM control's two cost hooks
+
+
+def factor_allocation(program, opts) -> list[tuple[tuple[str, int], ...]]:
+    """Per block type the ``ALLOCATION`` limits its ``factor_<b>`` function is emitted with:
+    the options' limits (scaled by the block's share of the work, ``allocation_scaling``), at
+    most what the datapath uses in either mode."""
     alloc = dict(opts.allocation)
-    jac, cost = [], []
-    whiten_macs = 0
     n_of = [sum(1 for f in program.factors if f.block == i) for i in range(len(program.blocks))]
     work = [n * sum(b.ops_after.values()) for n, b in zip(n_of, program.blocks, strict=True)]
     heaviest = n_of[max(range(len(work)), key=work.__getitem__)] if work else 1
+    out = []
     for i, b in enumerate(program.blocks):
-        name = f"factor_{i}"
-        instances = n_of[i]
         used = {k: max(b.ops_after.get(k, 0), b.ops_cost.get(k, 0)) for k in alloc}
         share = {k: alloc[k] if opts.allocation_scaling == "uniform"
-                 else max(1, math.ceil(alloc[k] * min(1.0, instances / heaviest)))
+                 else max(1, math.ceil(alloc[k] * min(1.0, n_of[i] / heaviest)))
                  for k in alloc}
-        allocated = tuple((k, min(share[k], n)) for k, n in used.items() if n > 0)
-        ctx.units.append(Unit(name, f"factor datapath of block {b.name!r} (both modes)", 1,
-                              allocated))
-        for mode, counts, text, out in (("jacobian", b.ops_after, b.kernel, jac),
-                                        ("cost", b.ops_cost, b.cost_kernel, cost)):
+        out.append(tuple((k, min(share[k], n)) for k, n in used.items() if n > 0))
+    return out
+
+
+def mode_allocation(limits, counts: dict) -> tuple[tuple[str, int], ...]:
+    """The ``ALLOCATION`` limits of one mode's function (``factor_<b>``: the Jacobian's counts,
+    ``factor_cost_<b>``: the cost's): the block's ``limits`` (:func:`factor_allocation`), at
+    most that mode's operations."""
+    return tuple((k, min(n, counts.get(k, 0))) for k, n in limits if counts.get(k, 0) > 0)
+
+
+def whitening_ops(bc) -> dict[str, int]:
+    """The operations of one ``evaluate_<b>`` iteration outside ``factor_<b>`` (its ALLOCATION
+    does not reach them), as accel.cpp.jinja prints them for block context ``bc``
+    (``fgc_backends.cfamily.blocks.BlockContext``): per member ``whiten`` (full noise: row i's
+    leading product for every row, then R_ij times row j for the dense rows j > i; otherwise one
+    product an entry), its ``whiten_tail`` (an add per constant entry, a multiply-add per
+    right-hand side) and ``reweight`` (‖e‖², two square roots, the weight's divides, the rows
+    scaled)."""
+    s, ops = bc.padded, {"add": 0, "mul": 0, "div": 0, "sqrt": 0}
+    for m in bc.members:
+        r, d = m.rows, m.dense
+        if m.kind == NOISE_CODES["full"]:
+            ops["mul"] += r * s + s * d * (d - 1) // 2
+            ops["add"] += s * d * (d - 1) // 2
+        else:
+            ops["mul"] += r * s
+        for _, _, _, entries in m.tail:
+            ops["add"] += len(entries) + 1
+            ops["mul"] += 1
+        ops["add"] += r + 1  # reweight: the squared norm, k² + e²
+        ops["mul"] += r + 3 + r * s
+        ops["div"] += 2
+        ops["sqrt"] += 2
+    return ops
+
+
+def robust_ops(bc) -> dict[str, int]:
+    """The operations of one ``cost_of_<b>`` iteration outside ``factor_<b>``: per member
+    ``robust_loss`` (its Huber and Cauchy branches both built) and its sum, then the total's."""
+    nm = len(bc.members)
+    return {"add": 2 * nm + 1, "mul": 9 * nm, "div": nm, "sqrt": nm, "special": nm}
+
+
+def instance_accesses(bc, mode: str) -> list[tuple[int, int]]:
+    """(accesses, banks) of one instance to each global memory the Jacobian (``mode``
+    "jacobian") or cost loop touches: X (the variables' storage), DATA_BUF (its measurements
+    and noise parameters, two robust words a member) and, in Jacobian mode, AB (its whitened
+    rows, m × (d + 1) words). None of them is partitioned (one bank, two ports)."""
+    data = sum(m.meas_words + m.n_params + 2 for m in bc.members)
+    out = [(bc.n_x_in, 1), (data, 1)]
+    if mode == "jacobian":
+        out.append((bc.m * bc.stride, 1))
+    return out
+
+
+def build(ctx) -> None:
+    """Per block type a datapath unit and its AB memory; the factor_jacobian and factor_cost
+    phases (the emitted instance loops run one block type after another); QR's gradient pass;
+    raw Jacobians' whitening (what-if).
+
+    Each instance loop runs at the II its allocated operators and its memories allow (the
+    larger: :func:`~fgc_backends.hls.plan.binding.loop_ii`); the unit's operators are what
+    Vitis binds (:mod:`fgc_backends.hls.plan.binding`): both call sites of ``factor_<b>``
+    (Jacobian and cost loop) under its ``ALLOCATION``, plus each loop's own operations outside
+    it (whitening, robust weights) at the loop's II."""
+    program, opts, ops = ctx.program, ctx.opts, ctx.ops
+    sim_ops = _sim_table(ops)
+    jac, cost = [], []
+    whiten_macs = 0
+    allocations = factor_allocation(program, opts)
+    for i, (b, bc) in enumerate(zip(program.blocks, ctx.blocks, strict=True)):
+        name = f"factor_{i}"
+        instances = len(bc.instances)
+        bound = []
+        for mode, counts, text, out, own in (
+                ("jacobian", b.ops_after, b.kernel, jac, whitening_ops(bc)),
+                ("cost", b.ops_cost, b.cost_kernel, cost, robust_ops(bc))):
+            allocated = mode_allocation(allocations[i], counts)
             issue = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
                                for k, n in allocated])
-            ii = issue
+            ii = max(issue, loop_ii(instance_accesses(bc, mode)))
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
                 ii = max(ii, ops.add.latency)  # simulator's): a recurrence through the adder
             # one evaluation ends no earlier than its critical path, nor before the allocated
@@ -103,6 +179,26 @@ def build(ctx) -> None:
             depth = max(critical_path(text, sim_ops), issue)
             out.append(Process(f"{name}_{mode}", name,
                                (Loop(f"{name}_{mode}_instances", instances, ii, depth),)))
+            # factor_<b> / factor_cost_<b> under its ALLOCATION at this call site, and the
+            # loop's own operations
+            # (the cost loop twice: total_cost has two call sites, LM control's cost at X and
+            # at X_TRIAL, each its own RTL instance)
+            copies = COST_CALL_SITES if mode == "cost" else 1
+            # (the emitter prints every limit: operation instances for the arithmetic,
+            # function instances for trig and special, which Vitis honours alike)
+            factor = BoundLoop(f"{name}_{mode}", tuple(counts.items()), ii, allocated, copies)
+            bound.append(factor.instances(ops))
+            # the loop's own operations: pipelined cores (robust_loss's log1p an hls_math
+            # function, not the rolled Horner unit the table's "special" II describes)
+            bound.append(BoundLoop(f"{name}_{mode}_own", tuple(own.items()), ii, (),
+                                   copies).instances())
+        operators: dict[str, int] = {}
+        for part in bound:
+            for k, n in part.items():
+                operators[k] = operators.get(k, 0) + n
+        ctx.units.append(Unit(name, f"factor datapath of block {b.name!r} (its Jacobian and "
+                              "cost call sites, whitening, robust weights)", 1,
+                              tuple(sorted(operators.items()))))
         if opts.jacobian_storage == "raw":
             words = raw_jacobian_words(b) * instances
             whiten_macs += whitening_macs(b) * instances
@@ -113,6 +209,15 @@ def build(ctx) -> None:
     if program.solver.linear == "qr":  # Cholesky's gradient comes with the HGC (units.cholesky)
         ctx.add_phase("linearize", Phase("gradient", False,
                                          tuple(gradient_loops(program, ctx.timing))))
+        # accumulate<…>, one module per block type: TILE multiply-adds a cycle, then a column
+        # a cycle through the fold of its T_PARTIALS partial sums and the add into G
+        la = ops.add.latency
+        ctx.units.append(bound_unit("gradient", "A^T b, TILE columns a cycle, per block type",
+                                    [lp for i in range(len(program.blocks)) for lp in (
+                                        BoundLoop(f"accumulate_{i}", (("add", TILE),
+                                                                      ("mul", TILE)), 1),
+                                        BoundLoop(f"scatter_{i}", (("add", la),), 1))],
+                                    table=ops))
     if opts.jacobian_storage == "raw":
         # whitening while stacking: W·[J | -r] of each instance, one multiply-accumulate a
         # cycle in each of n_u lanes, before the solver reads the rows

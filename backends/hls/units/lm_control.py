@@ -5,8 +5,9 @@ pass on a rejected step. Kernel code of accel.cpp.jinja (no static header)."""
 from __future__ import annotations
 
 from fgc_backends.cfamily.sparsity import TILE
+from fgc_backends.hls.plan.binding import BoundLoop, bound_unit
 from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_dot, kernel_loop
-from fgc_backends.hls.plan.model import Loop, Phase, Process, Unit
+from fgc_backends.hls.plan.model import Loop, Phase, Process
 from fgc_backends.hls.units.spec import UnitSpec
 
 
@@ -42,20 +43,22 @@ def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict) -> Phase:
 
 def rounding_noise_loops(program, timing: dict) -> list[Process]:
     """rounding_noise_all(): each variable's largest storage entry, then per instance its rows
-    loaded (:data:`PORTS` words a cycle), the column scales, the rows' moved terms (a row a
-    cycle, its TILE partial sums unrolled) and their sum (TILE rows a step into TILE partial
-    sums)."""
+    loaded (:data:`PORTS` words a cycle), the column scales, the rows' moved terms (a row every
+    padded cycles: its TILE partial sums share two multipliers and two adders) and their sum (TILE
+    rows a step into TILE partial sums)."""
     la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
     procs = [Process("variable_scale", "lm_control", tuple(
         kernel_loop("scale", v.storage_dim, "max", timing) for v in program.variables))]
     for i, b in enumerate(program.blocks):
         m, _, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
-        row_depth = 2 * lm + la * (padded // TILE + 2)
+        # a row every `padded` cycles through two multipliers and two adders: its last
+        # product issues by then, its chain of padded / TILE adds and the fold follow
+        row_depth = max(2 * lm + la * (padded // TILE + 2), padded + 2 * lm + 2 * la)
         procs.append(Process(f"noise_{i}", "lm_control", (
             kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("scales", padded, "fill", timing, n),
-            Loop("rows", m, 1, row_depth, n),
+            Loop("rows", m, padded, row_depth, n),
             kernel_loop("terms", -(-m // TILE), "acc2", timing, n))))
     return procs
 
@@ -70,8 +73,25 @@ def build(ctx) -> None:
     # δ (|δ|² and the predicted decrease), the scalar decision, the accepted x copied back
     # (the step test at II 1 starts three multiplies and three adds a cycle: μδ, δ·δ,
     # δ·(g + μδ); g + μδ and the two partial sums)
-    ctx.units.append(Unit("lm_control", "gain ratio, μ update, stopping rules", 1,
-                          (("add", 3), ("mul", 3), ("div", 1), ("compare", 1))))
+    # its operators as Vitis binds them (plan.binding): each pipelined loop its own (|x|²: a
+    # multiply-add a cycle; the step test: three; the gradient maximum: a compare), the
+    # scalar decision sequential (one of each kind it uses); the rounding-noise pass per block
+    # type (each noise_<b> calls rounding_noise<…>: its own module): a row every padded
+    # cycles through its padded products and moved's three adds, then the rows' terms, and
+    # noise_<b>'s running sum
+    la = ctx.ops.add.latency
+    loops = [BoundLoop("x_norm", (("add", 1), ("mul", 1)), 1),
+             BoundLoop("step_test", (("add", 3), ("mul", 3)), 1),
+             BoundLoop("gradient_max", (("compare", 1),), 1),
+             BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
+    for i, b in enumerate(program.blocks):  # noise_<b>'s call: its own instance
+        padded = _block_shape(b)[2]
+        loops += [BoundLoop(f"noise_rows_{i}", (("add", padded + 3), ("mul", padded + 1)),
+                            padded),
+                  BoundLoop(f"noise_terms_{i}", (("add", 2 * TILE), ("mul", 3 * TILE)), la),
+                  BoundLoop(f"noise_sum_{i}", (("add", 1),), 0)]
+    ctx.units.append(bound_unit("lm_control", "gain ratio, μ update, stopping rules, "
+                                "rounding noise", loops, table=ctx.ops))
     for phase in lm_control_phases(n_t, n_x, timing):
         ctx.add_phase("control", phase)
     # once per call: the top's copies of x and the data in and x out
