@@ -20,6 +20,9 @@ _PART = re.compile(r"^[A-Za-z0-9_-]{1,64}$")
 CLOCK_TOLERANCE = 0.005  # relative: 7 ns (142.86 MHz) and 143 MHz are the same clock
 
 
+QR_UNITS = ("householder", "stream")  # HlsConfig.qr_unit: fgc_qr.h, fgc_qr_stream.h
+
+
 class HlsConfigError(CodegenError):
     """An HLS backend option is invalid, or the Program exceeds the backend's limits."""
 
@@ -51,6 +54,10 @@ class HlsConfig(scalars.ScalarTypes):
       named keep the plan's default (``fgc_backends.hls.plan.DEFAULT_ALLOCATION``), which is
       what ``None`` means. The plan shares each limit out over the block types by instance
       count (``PlanOptions.allocation_scaling``). ``fgc compile --allocation mul=48,add=32``.
+    - ``qr_unit``: the QR unit set the design eliminates with: ``"householder"`` (paper A's
+      architecture: one DATAFLOW region per reflection, ``include/fgc_qr.h``) or ``"stream"``
+      (n_u reflection stages the matrix streams through, ``include/fgc_qr_stream.h``; the
+      batch design only). ``fgc compile --qr-unit``.
     - ``max_variables`` / ``max_step_columns``: the largest window (Program.max_variables) and the
       widest elimination step this backend accepts; larger Programs fail at emit time.
     - ``cxx`` / ``cxxflags``: compiler and flags of the Makefile's C simulation (portable: they
@@ -65,6 +72,7 @@ class HlsConfig(scalars.ScalarTypes):
     clock_ns: float | None = None
     unit_sets: int | None = None
     allocation: tuple[tuple[str, int], ...] | None = None
+    qr_unit: str = "householder"
     max_variables: int = 8192
     max_step_columns: int = 512
     cxx: str = "g++"
@@ -95,6 +103,8 @@ class HlsConfig(scalars.ScalarTypes):
                                  "(backends/hls/target.py)")
         if self.clock_ns is not None and not (0.5 <= float(self.clock_ns) <= 1000.0):
             raise HlsConfigError(f"clock period {self.clock_ns} ns is outside 0.5 … 1000 ns")
+        if self.qr_unit not in QR_UNITS:
+            raise HlsConfigError(f"qr_unit {self.qr_unit!r}: expected one of {', '.join(QR_UNITS)}")
         if self.unit_sets is not None and not 1 <= int(self.unit_sets) <= 8:
             raise HlsConfigError(f"unit_sets must be 1 … 8, got {self.unit_sets}")
         if self.allocation is not None:

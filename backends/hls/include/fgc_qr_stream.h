@@ -75,35 +75,41 @@ inline T qrs_abs(T x) {
     return x < T(0) ? T(-x) : x;
 }
 
-// Columns j0 ... cols - 1, rows j0 ... rows - 1 of the banks into stage 0, one column a loop:
-// trip rows - j0, II 1, depth 2 (read, write).
+// Columns j0 ... cols - 1, rows j0 ... rows - 1 of the banks into stage 0, one column a loop
+// (column j0 to its Evaluate, the others to its dot process): trip rows - j0, II 1, depth 2.
 template <class CFG>
 void qrs_source(int j0, int rows, int cols,
                 const typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                hls::stream<typename CFG::T>& out) {
+                hls::stream<typename CFG::T>& first, hls::stream<typename CFG::T>& rest) {
     for (int c = j0; c < cols; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
         for (int i = j0; i < rows; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-            out.write(work[c % CFG::N_UNITS][i][c / CFG::N_UNITS]);
+            const typename CFG::T x = work[c % CFG::N_UNITS][i][c / CFG::N_UNITS];
+            if (c == j0) {
+                first.write(x);
+            } else {
+                rest.write(x);
+            }
         }
         QRS_CYCLES("qrs_source", 0, "src", c, rows - j0, 1, 2);
     }
 }
 
-// The head of stage U: reflection j's Householder vector from column j, then each later column's
-// tau v.x (stage 0 reads the source's stream, stage U the tail of stage U - 1).
+// The Evaluate of stage U, reflection j: column j as it arrives (stage 0 from the source, stage
+// U from the tail of stage U - 1), the words below the pivot to the dot process and the tail (v_a
+// = x_a), the squares into PARTIALS interleaved partial sums; then alpha, v_0 and tau: v_0 and
+// tau to the dot process, v_0 to the tail, R_jj = alpha to the collector.
 template <class CFG, int U>
-void qrs_head(int j, int rows, int cols, hls::stream<typename CFG::T>& in,
-              hls::stream<typename CFG::T>& xq, hls::stream<typename CFG::T>& vq,
-              hls::stream<typename CFG::T>& sq, hls::stream<typename CFG::T>& rq) {
+void qrs_eval(int j, int rows, hls::stream<typename CFG::T>& in,
+              hls::stream<typename CFG::T>& vd, hls::stream<typename CFG::T>& vt,
+              hls::stream<typename CFG::T>& eq, hls::stream<typename CFG::T>& rq) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the loops run at II 1");
     enum { DIST = CFG::PARTIALS };  // pragma constants: enums
     const int m = rows - j;
-    T v[CFG::MAX_ROWS];
     T part[P];
 #pragma HLS ARRAY_PARTITION variable=part complete
     for (int t = 0; t < P; ++t) {
@@ -111,10 +117,8 @@ void qrs_head(int j, int rows, int cols, hls::stream<typename CFG::T>& in,
         part[t] = T(0);
     }
     T x0 = T(0);
-    // column j as it arrives: the pivot, the vector below it (to the tail), the squares summed
-    // into P partials (a partial is met again P >= La iterations later):
-    // trip m, II 1, depth Lm + La
-    QRS_WAIT("qrs_head", U, U == 0 ? "qrs_source" : "qrs_tail", U == 0 ? 0 : U - 1, "", j);
+    // trip m, II 1, depth Lm + La (a partial is met again P >= La iterations later)
+    QRS_WAIT("qrs_eval", U, U == 0 ? "qrs_source" : "qrs_tail", U == 0 ? 0 : U - 1, "", j);
     for (int a = 0; a < m; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
@@ -123,13 +127,13 @@ void qrs_head(int j, int rows, int cols, hls::stream<typename CFG::T>& in,
         if (a == 0) {
             x0 = x;
         } else {
-            v[a] = x;
-            vq.write(x);
+            vd.write(x);
+            vt.write(x);
         }
         part[a % P] += x * x;
     }
-    QRS_CYCLES("qrs_head", U, "receive", j, m, 1, CFG::MUL_LAT + CFG::ADD_LAT);
-    // evaluate: fold, square root, v_0 beside alpha x_0, subtract, divide
+    QRS_CYCLES("qrs_eval", U, "receive", j, m, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+    // fold, square root, v_0 beside alpha x_0, subtract, divide
     const T norm2 = fold_partials<T, P>(part);
     T alpha = T(0), v0 = T(0), tau = T(0);
     if (norm2 > T(0)) {
@@ -138,86 +142,161 @@ void qrs_head(int j, int rows, int cols, hls::stream<typename CFG::T>& in,
         v0 = x0 - alpha;
         tau = T(1) / (norm2 - alpha * x0);
     }
-    v[0] = v0;
-    vq.write(v0);
+    eq.write(v0);
+    eq.write(tau);
+    vt.write(v0);
     rq.write(alpha);
-    FGC_CYCLES("qrs_head", U, "evaluate", 1, 1,
+    FGC_CYCLES("qrs_eval", U, "evaluate", 1, 1,
                CFG::ADD_LAT * ceil_log2(P) + CFG::SQRT_LAT +
                    (CFG::ADD_LAT > CFG::MUL_LAT ? CFG::ADD_LAT : CFG::MUL_LAT) + CFG::ADD_LAT +
                    CFG::DIV_LAT);
-    // each later column: forwarded to the tail, v.x in P partials, folded and scaled by tau
+}
+
+// A column's dot product on its way to the fold: the P partial sums below the pivot and the
+// column's entry in the pivot row.
+template <class T, int P>
+struct qrs_partials {
+    T part[P];
+    T xj;
+};
+
+// The dot process of stage U: each later column as it arrives, forwarded to the tail, v.x below
+// the pivot in P partial sums (the first later column's while the Evaluate still computes v_0 and
+// tau: the look-ahead), the partials and the column's pivot-row entry to the fold.
+template <class CFG, int U>
+void qrs_dot(int j, int rows, int cols, hls::stream<typename CFG::T>& in,
+             hls::stream<typename CFG::T>& vd,
+             hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> >& pq,
+             hls::stream<typename CFG::T>& xq) {
+    typedef typename CFG::T T;
+    const int P = CFG::PARTIALS;
+    enum { DIST = CFG::PARTIALS };  // pragma constants: enums
+    const int m = rows - j;
+    T v[CFG::MAX_ROWS];
+    // the vector below the pivot as the Evaluate receives it: trip m - 1, II 1, depth 1
+    FGC_WAIT("qrs_dot", U, "qrs_eval", U, "receive");
+    for (int a = 1; a < m; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+        v[a] = vd.read();
+    }
+    QRS_CYCLES("qrs_dot", U, "vector", j, m - 1, 1, 1);
     for (int c = j + 1; c < cols; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
+        qrs_partials<T, CFG::PARTIALS> out;
+#pragma HLS ARRAY_PARTITION variable=out.part complete
         for (int t = 0; t < P; ++t) {
 #pragma HLS UNROLL
-            part[t] = T(0);
+            out.part[t] = T(0);
         }
+        out.xj = T(0);
         // trip m, II 1, depth Lm + La
-        QRS_WAIT("qrs_head", U, U == 0 ? "qrs_source" : "qrs_tail", U == 0 ? 0 : U - 1, "",
-                 c);
+        QRS_WAIT("qrs_dot", U, U == 0 ? "qrs_source" : "qrs_tail", U == 0 ? 0 : U - 1, "", c);
         for (int a = 0; a < m; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=part inter true distance=DIST
+#pragma HLS DEPENDENCE variable=out.part inter true distance=DIST
             const T x = in.read();
             xq.write(x);
-            part[a % P] += v[a] * x;
+            if (a == 0) {
+                out.xj = x;
+            } else {
+                out.part[a % P] += v[a] * x;
+            }
         }
-        QRS_CYCLES("qrs_head", U, "dot", c, m, 1, CFG::MUL_LAT + CFG::ADD_LAT);
-        sq.write(tau * fold_partials<T, P>(part));
-        QRS_CYCLES("qrs_head", U, "fold", c, 1, 1,
-                   CFG::ADD_LAT * ceil_log2(P) + CFG::MUL_LAT);
+        pq.write(out);
+        QRS_CYCLES("qrs_dot", U, "dot", c, m, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+    }
+}
+
+// The fold of stage U, per later column: the pivot's term v_0 x_j as one more leaf of the P
+// partials' tree, the scale by tau; tau v.x to the tail. Not pipelined (a column every
+// Lm + La ceil(log2 (P + 1)) + Lm cycles, under the dot's m + Lm + La).
+template <class CFG, int U>
+void qrs_fold(int j, int cols, hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> >& pq,
+              hls::stream<typename CFG::T>& eq, hls::stream<typename CFG::T>& sq) {
+    typedef typename CFG::T T;
+    const int P = CFG::PARTIALS;
+    const T v0 = eq.read();
+    const T tau = eq.read();
+    for (int c = j + 1; c < cols; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
+        const qrs_partials<T, CFG::PARTIALS> in = pq.read();
+        T leaves[P + 1];
+#pragma HLS ARRAY_PARTITION variable=leaves complete
+        for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+            leaves[t] = in.part[t];
+        }
+        leaves[P] = v0 * in.xj;
+        sq.write(tau * fold_partials<T, P + 1>(leaves));
+        FGC_WAIT("qrs_fold", U, "qrs_eval", U, "evaluate");
+        QRS_WAIT("qrs_fold", U, "qrs_dot", U, "dot", c);
+        QRS_CYCLES("qrs_fold", U, "fold", c, 1, 1,
+                   CFG::MUL_LAT + CFG::ADD_LAT * ceil_log2(P + 1) + CFG::MUL_LAT);
     }
 }
 
 // The tail of stage U: reflection j applied to each later column; row j's entry to the
-// collector, rows j + 1 ... to the next stage (or the sink).
+// collector, rows j + 1 ... to the next stage (column j + 1 to its Evaluate, the others to its
+// dot process) or the sink.
 template <class CFG, int U>
 void qrs_tail(int j, int rows, int cols, hls::stream<typename CFG::T>& xq,
-              hls::stream<typename CFG::T>& vq, hls::stream<typename CFG::T>& sq,
-              hls::stream<typename CFG::T>& out, hls::stream<typename CFG::T>& rowq) {
+              hls::stream<typename CFG::T>& vt, hls::stream<typename CFG::T>& sq,
+              hls::stream<typename CFG::T>& first, hls::stream<typename CFG::T>& rest,
+              hls::stream<typename CFG::T>& rowq) {
     typedef typename CFG::T T;
     const int m = rows - j;
     T v[CFG::MAX_ROWS];
-    // the vector: the words below the pivot, then v_0 (after the head's evaluate):
+    // the vector: the words below the pivot, then v_0 (after the Evaluate's end):
     // trip m, II 1, depth 1
-    FGC_WAIT("qrs_tail", U, "qrs_head", U, "evaluate");
+    FGC_WAIT("qrs_tail", U, "qrs_eval", U, "evaluate");
     for (int a = 0; a < m; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-        v[a + 1 < m ? a + 1 : 0] = vq.read();
+        v[a + 1 < m ? a + 1 : 0] = vt.read();
     }
     FGC_CYCLES("qrs_tail", U, "vector", m, 1, 1);
     for (int c = j + 1; c < cols; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
         const T s = sq.read();
         // x -= s v: trip m, II 1, depth Lm + La
-        QRS_WAIT("qrs_tail", U, "qrs_head", U, "fold", c);
+        QRS_WAIT("qrs_tail", U, "qrs_fold", U, "fold", c);
         for (int a = 0; a < m; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
             const T y = xq.read() - s * v[a];
             if (a == 0) {
                 rowq.write(y);
+            } else if (c == j + 1) {
+                first.write(y);
             } else {
-                out.write(y);
+                rest.write(y);
             }
         }
         QRS_CYCLES("qrs_tail", U, "axpy", c, m, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     }
 }
 
-// What leaves the last stage into the next pass's banks: trip (cols - j1)(rows - j1), II 1,
-// depth 2.
+// What leaves the last stage into the next pass's banks: column j1 (its first stream), then the
+// others: trip rows - j1, then (cols - j1 - 1)(rows - j1), II 1, depth 2.
 template <class CFG>
-void qrs_sink(int j1, int rows, int cols, int k, hls::stream<typename CFG::T>& in,
+void qrs_sink(int j1, int rows, int cols, int k, hls::stream<typename CFG::T>& first,
+              hls::stream<typename CFG::T>& rest,
               typename CFG::T next[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
     if (j1 >= k) return;
+    QRS_WAIT("qrs_sink", 0, "qrs_tail", CFG::N_UNITS - 1, "", j1);
+    for (int i = j1; i < rows; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+        next[j1 % CFG::N_UNITS][i][j1 / CFG::N_UNITS] = first.read();
+    }
+    FGC_CYCLES("qrs_sink", 0, "sink_first", rows - j1, 1, 2);
     QRS_WAIT("qrs_sink", 0, "qrs_tail", CFG::N_UNITS - 1, "", cols - 1);
-    for (int c = j1, i = j1; c < cols;) {
+    for (int c = j1 + 1, i = j1; c < cols;) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS * CFG::MAX_COLS
 #pragma HLS PIPELINE II=1
-        next[c % CFG::N_UNITS][i][c / CFG::N_UNITS] = in.read();
+        next[c % CFG::N_UNITS][i][c / CFG::N_UNITS] = rest.read();
         if (i == rows - 1) {
             i = j1;
             ++c;
@@ -225,7 +304,7 @@ void qrs_sink(int j1, int rows, int cols, int k, hls::stream<typename CFG::T>& i
             ++i;
         }
     }
-    FGC_CYCLES("qrs_sink", 0, "sink", (cols - j1) * (rows - j1), 1, 2);
+    FGC_CYCLES("qrs_sink", 0, "sink", (cols - j1 - 1) * (rows - j1), 1, 2);
 }
 
 // Rows j0 ... j0 + n - 1 of R: R_jj from the head, the rest from the tail, into cond (j < f) or
@@ -285,25 +364,29 @@ void qrs_collect(int j0, int n, int rows, int f, int s,
 // pass's last reflection does nothing.
 template <class CFG, int U, bool END = (U == CFG::N_UNITS)>
 struct qrs_stages {
-    static void run(int j0, int n, int rows, int cols, hls::stream<typename CFG::T> link[],
-                    hls::stream<typename CFG::T> xq[], hls::stream<typename CFG::T> vq[],
-                    hls::stream<typename CFG::T> sq[], hls::stream<typename CFG::T> rq[],
-                    hls::stream<typename CFG::T> rowq[]) {
+    typedef hls::stream<typename CFG::T> S;
+    typedef hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> > Q;
+    static void run(int j0, int n, int rows, int cols, S first[], S rest[], S vd[], S vt[],
+                    S eq[], Q pq[], S xq[], S sq[], S rq[], S rowq[]) {
 #pragma HLS INLINE
         if (U < n) {
-            qrs_head<CFG, U>(j0 + U, rows, cols, link[U], xq[U], vq[U], sq[U], rq[U]);
-            qrs_tail<CFG, U>(j0 + U, rows, cols, xq[U], vq[U], sq[U], link[U + 1], rowq[U]);
+            const int j = j0 + U;
+            qrs_eval<CFG, U>(j, rows, first[U], vd[U], vt[U], eq[U], rq[U]);
+            qrs_dot<CFG, U>(j, rows, cols, rest[U], vd[U], pq[U], xq[U]);
+            qrs_fold<CFG, U>(j, cols, pq[U], eq[U], sq[U]);
+            qrs_tail<CFG, U>(j, rows, cols, xq[U], vt[U], sq[U], first[U + 1], rest[U + 1],
+                             rowq[U]);
         }
-        qrs_stages<CFG, U + 1>::run(j0, n, rows, cols, link, xq, vq, sq, rq, rowq);
+        qrs_stages<CFG, U + 1>::run(j0, n, rows, cols, first, rest, vd, vt, eq, pq, xq, sq, rq,
+                                    rowq);
     }
 };
 
 template <class CFG, int U>
 struct qrs_stages<CFG, U, true> {
-    static void run(int, int, int, int, hls::stream<typename CFG::T>*,
-                    hls::stream<typename CFG::T>*, hls::stream<typename CFG::T>*,
-                    hls::stream<typename CFG::T>*, hls::stream<typename CFG::T>*,
-                    hls::stream<typename CFG::T>*) {
+    typedef hls::stream<typename CFG::T> S;
+    typedef hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> > Q;
+    static void run(int, int, int, int, S*, S*, S*, S*, S*, Q*, S*, S*, S*, S*) {
 #pragma HLS INLINE
     }
 };
@@ -317,13 +400,22 @@ void qrs_pass(int j0, int n, int rows, int f, int s, int k,
               typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale) {
 #pragma HLS DATAFLOW
     enum { COL_DEPTH = 2 * CFG::MAX_ROWS };  // a column and the fold behind it
+    enum { REST_DEPTH = 3 * CFG::MAX_ROWS };  // the columns behind the first, while it evaluates
     const int cols = f + s + 1;
-    hls::stream<typename CFG::T> link[CFG::N_UNITS + 1];
-#pragma HLS STREAM variable=link depth=COL_DEPTH
+    hls::stream<typename CFG::T> first[CFG::N_UNITS + 1];
+#pragma HLS STREAM variable=first depth=COL_DEPTH
+    hls::stream<typename CFG::T> rest[CFG::N_UNITS + 1];
+#pragma HLS STREAM variable=rest depth=REST_DEPTH
+    hls::stream<typename CFG::T> vd[CFG::N_UNITS];
+#pragma HLS STREAM variable=vd depth=CFG::MAX_ROWS
+    hls::stream<typename CFG::T> vt[CFG::N_UNITS];
+#pragma HLS STREAM variable=vt depth=CFG::MAX_ROWS
+    hls::stream<typename CFG::T> eq[CFG::N_UNITS];
+#pragma HLS STREAM variable=eq depth=2
+    hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> > pq[CFG::N_UNITS];
+#pragma HLS STREAM variable=pq depth=2
     hls::stream<typename CFG::T> xq[CFG::N_UNITS];
 #pragma HLS STREAM variable=xq depth=COL_DEPTH
-    hls::stream<typename CFG::T> vq[CFG::N_UNITS];
-#pragma HLS STREAM variable=vq depth=CFG::MAX_ROWS
     hls::stream<typename CFG::T> sq[CFG::N_UNITS];
 #pragma HLS STREAM variable=sq depth=2
     hls::stream<typename CFG::T> rq[CFG::N_UNITS];
@@ -331,13 +423,17 @@ void qrs_pass(int j0, int n, int rows, int f, int s, int k,
     hls::stream<typename CFG::T> rowq[CFG::N_UNITS];
 #pragma HLS STREAM variable=rowq depth=CFG::MAX_COLS
     FGC_REGION("qrs_pass");
-    qrs_source<CFG>(j0, rows, cols, work, link[0]);
-    qrs_stages<CFG, 0>::run(j0, n, rows, cols, link, xq, vq, sq, rq, rowq);
-    qrs_sink<CFG>(j0 + n, rows, cols, k, link[CFG::N_UNITS], next);
+    qrs_source<CFG>(j0, rows, cols, work, first[0], rest[0]);
+    qrs_stages<CFG, 0>::run(j0, n, rows, cols, first, rest, vd, vt, eq, pq, xq, sq, rq, rowq);
+    qrs_sink<CFG>(j0 + n, rows, cols, k, first[CFG::N_UNITS], rest[CFG::N_UNITS], next);
     qrs_collect<CFG>(j0, n, rows, f, s, rq, rowq, cond, update, scale);
-    FGC_DRAINED(link, CFG::N_UNITS + 1);  // csim only (fgc_cycles.h)
+    FGC_DRAINED(first, CFG::N_UNITS + 1);  // csim only (fgc_cycles.h)
+    FGC_DRAINED(rest, CFG::N_UNITS + 1);
+    FGC_DRAINED(vd, CFG::N_UNITS);
+    FGC_DRAINED(vt, CFG::N_UNITS);
+    FGC_DRAINED(eq, CFG::N_UNITS);
+    FGC_DRAINED(pq, CFG::N_UNITS);
     FGC_DRAINED(xq, CFG::N_UNITS);
-    FGC_DRAINED(vq, CFG::N_UNITS);
     FGC_DRAINED(sq, CFG::N_UNITS);
     FGC_DRAINED(rq, CFG::N_UNITS);
     FGC_DRAINED(rowq, CFG::N_UNITS);

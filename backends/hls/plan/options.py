@@ -36,6 +36,9 @@ class PlanOptions:
     units: int = 4  # n_u Update units per QR unit set
     cpe: int = 20  # Cholesky process elements
     unit_sets: int | None = None  # QR unit sets: None = 2 for two-ended chains, else 1
+    # the QR unit set: "householder" (fgc_qr.h, one region per reflection) or "stream"
+    # (fgc_qr_stream.h, n_u reflection stages the matrix streams through; units/qr_stream.py)
+    qr_unit: str = "householder"
     allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
     # how a block type's datapath gets its share of ``allocation``: "instances" (default): the
     # heaviest type (most operations × instances) gets the limits, every other type
@@ -80,7 +83,8 @@ class PlanOptions:
         solver), not the Program's precision: a float design of a float64 Program is priced in
         float32 operators."""
         base = dict(unit_sets=config.unit_sets, precision=scalar_precision(config.scalar_cxx),
-                    les_precision=scalar_precision(config.linear_cxx), part=config.part)
+                    les_precision=scalar_precision(config.linear_cxx), part=config.part,
+                    qr_unit=getattr(config, "qr_unit", "householder"))
         if getattr(config, "allocation", None):  # the config's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(config.allocation)}.items())
