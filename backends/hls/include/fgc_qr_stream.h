@@ -102,13 +102,14 @@ void qrs_source(int j0, int rows, int cols,
 // = x_a), the squares into PARTIALS interleaved partial sums; then alpha, v_0 and tau: v_0 and
 // tau to the dot process, v_0 to the tail, R_jj = alpha to the collector.
 template <class CFG, int U>
-void qrs_eval(int j, int rows, hls::stream<typename CFG::T>& in,
+void qrs_eval(int j, int n, int rows, hls::stream<typename CFG::T>& in,
               hls::stream<typename CFG::T>& vd, hls::stream<typename CFG::T>& vt,
               hls::stream<typename CFG::T>& eq, hls::stream<typename CFG::T>& rq) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the loops run at II 1");
     enum { DIST = CFG::PARTIALS };  // pragma constants: enums
+    if (U >= n) return;  // past the pass's last reflection
     const int m = rows - j;
     T part[P];
 #pragma HLS ARRAY_PARTITION variable=part complete
@@ -152,23 +153,15 @@ void qrs_eval(int j, int rows, hls::stream<typename CFG::T>& in,
                    CFG::DIV_LAT);
 }
 
-// A column's dot product on its way to the fold: the P partial sums below the pivot and the
-// column's entry in the pivot row.
-template <class T, int P>
-struct qrs_partials {
-    T part[P];
-    T xj;
-};
-
 // The dot process of stage U: each later column as it arrives, forwarded to the tail, v.x below
 // the pivot in P partial sums (the first later column's while the Evaluate still computes v_0 and
 // tau: the look-ahead), the partials and the column's pivot-row entry to the fold.
 template <class CFG, int U>
-void qrs_dot(int j, int rows, int cols, hls::stream<typename CFG::T>& in,
-             hls::stream<typename CFG::T>& vd,
-             hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> >& pq,
+void qrs_dot(int j, int n, int rows, int cols, hls::stream<typename CFG::T>& in,
+             hls::stream<typename CFG::T>& vd, hls::stream<typename CFG::T>& pq,
              hls::stream<typename CFG::T>& xq) {
     typedef typename CFG::T T;
+    if (U >= n) return;  // past the pass's last reflection
     const int P = CFG::PARTIALS;
     enum { DIST = CFG::PARTIALS };  // pragma constants: enums
     const int m = rows - j;
@@ -183,29 +176,34 @@ void qrs_dot(int j, int rows, int cols, hls::stream<typename CFG::T>& in,
     QRS_CYCLES("qrs_dot", U, "vector", j, m - 1, 1, 1);
     for (int c = j + 1; c < cols; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
-        qrs_partials<T, CFG::PARTIALS> out;
-#pragma HLS ARRAY_PARTITION variable=out.part complete
+        T part[P];
+#pragma HLS ARRAY_PARTITION variable=part complete
         for (int t = 0; t < P; ++t) {
 #pragma HLS UNROLL
-            out.part[t] = T(0);
+            part[t] = T(0);
         }
-        out.xj = T(0);
+        T xj = T(0);
         // trip m, II 1, depth Lm + La
         QRS_WAIT("qrs_dot", U, U == 0 ? "qrs_source" : "qrs_tail", U == 0 ? 0 : U - 1, "", c);
         for (int a = 0; a < m; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=out.part inter true distance=DIST
+#pragma HLS DEPENDENCE variable=part inter true distance=DIST
             const T x = in.read();
             xq.write(x);
             if (a == 0) {
-                out.xj = x;
+                xj = x;
             } else {
-                out.part[a % P] += v[a] * x;
+                part[a % P] += v[a] * x;
             }
         }
-        pq.write(out);
         QRS_CYCLES("qrs_dot", U, "dot", c, m, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+        // the partials, then x_j, to the fold: trip P + 1, II 1, depth 1
+        for (int t = 0; t <= P; ++t) {
+#pragma HLS PIPELINE II=1
+            pq.write(t < P ? part[t] : xj);
+        }
+        QRS_CYCLES("qrs_dot", U, "send", c, P + 1, 1, 1);
     }
 }
 
@@ -213,25 +211,27 @@ void qrs_dot(int j, int rows, int cols, hls::stream<typename CFG::T>& in,
 // partials' tree, the scale by tau; tau v.x to the tail. Not pipelined (a column every
 // Lm + La ceil(log2 (P + 1)) + Lm cycles, under the dot's m + Lm + La).
 template <class CFG, int U>
-void qrs_fold(int j, int cols, hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> >& pq,
+void qrs_fold(int j, int n, int cols, hls::stream<typename CFG::T>& pq,
               hls::stream<typename CFG::T>& eq, hls::stream<typename CFG::T>& sq) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
+    if (U >= n) return;  // past the pass's last reflection
     const T v0 = eq.read();
     const T tau = eq.read();
     for (int c = j + 1; c < cols; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
-        const qrs_partials<T, CFG::PARTIALS> in = pq.read();
         T leaves[P + 1];
 #pragma HLS ARRAY_PARTITION variable=leaves complete
-        for (int t = 0; t < P; ++t) {
-#pragma HLS UNROLL
-            leaves[t] = in.part[t];
+        // the partials and x_j as the dot process sends them: trip P + 1, II 1, depth 1
+        QRS_WAIT("qrs_fold", U, "qrs_dot", U, "send", c);
+        for (int t = 0; t <= P; ++t) {
+#pragma HLS PIPELINE II=1
+            leaves[t] = pq.read();
         }
-        leaves[P] = v0 * in.xj;
+        QRS_CYCLES("qrs_fold", U, "gather", c, P + 1, 1, 1);
+        leaves[P] = v0 * leaves[P];
         sq.write(tau * fold_partials<T, P + 1>(leaves));
         FGC_WAIT("qrs_fold", U, "qrs_eval", U, "evaluate");
-        QRS_WAIT("qrs_fold", U, "qrs_dot", U, "dot", c);
         QRS_CYCLES("qrs_fold", U, "fold", c, 1, 1,
                    CFG::MUL_LAT + CFG::ADD_LAT * ceil_log2(P + 1) + CFG::MUL_LAT);
     }
@@ -241,11 +241,12 @@ void qrs_fold(int j, int cols, hls::stream<qrs_partials<typename CFG::T, CFG::PA
 // collector, rows j + 1 ... to the next stage (column j + 1 to its Evaluate, the others to its
 // dot process) or the sink.
 template <class CFG, int U>
-void qrs_tail(int j, int rows, int cols, hls::stream<typename CFG::T>& xq,
+void qrs_tail(int j, int n, int rows, int cols, hls::stream<typename CFG::T>& xq,
               hls::stream<typename CFG::T>& vt, hls::stream<typename CFG::T>& sq,
               hls::stream<typename CFG::T>& first, hls::stream<typename CFG::T>& rest,
               hls::stream<typename CFG::T>& rowq) {
     typedef typename CFG::T T;
+    if (U >= n) return;  // past the pass's last reflection
     const int m = rows - j;
     T v[CFG::MAX_ROWS];
     // the vector: the words below the pivot, then v_0 (after the Evaluate's end):
@@ -365,18 +366,14 @@ void qrs_collect(int j0, int n, int rows, int f, int s,
 template <class CFG, int U, bool END = (U == CFG::N_UNITS)>
 struct qrs_stages {
     typedef hls::stream<typename CFG::T> S;
-    typedef hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> > Q;
     static void run(int j0, int n, int rows, int cols, S first[], S rest[], S vd[], S vt[],
-                    S eq[], Q pq[], S xq[], S sq[], S rq[], S rowq[]) {
+                    S eq[], S pq[], S xq[], S sq[], S rq[], S rowq[]) {
 #pragma HLS INLINE
-        if (U < n) {
-            const int j = j0 + U;
-            qrs_eval<CFG, U>(j, rows, first[U], vd[U], vt[U], eq[U], rq[U]);
-            qrs_dot<CFG, U>(j, rows, cols, rest[U], vd[U], pq[U], xq[U]);
-            qrs_fold<CFG, U>(j, cols, pq[U], eq[U], sq[U]);
-            qrs_tail<CFG, U>(j, rows, cols, xq[U], vt[U], sq[U], first[U + 1], rest[U + 1],
-                             rowq[U]);
-        }
+        qrs_eval<CFG, U>(j0 + U, n, rows, first[U], vd[U], vt[U], eq[U], rq[U]);
+        qrs_dot<CFG, U>(j0 + U, n, rows, cols, rest[U], vd[U], pq[U], xq[U]);
+        qrs_fold<CFG, U>(j0 + U, n, cols, pq[U], eq[U], sq[U]);
+        qrs_tail<CFG, U>(j0 + U, n, rows, cols, xq[U], vt[U], sq[U], first[U + 1], rest[U + 1],
+                         rowq[U]);
         qrs_stages<CFG, U + 1>::run(j0, n, rows, cols, first, rest, vd, vt, eq, pq, xq, sq, rq,
                                     rowq);
     }
@@ -385,8 +382,7 @@ struct qrs_stages {
 template <class CFG, int U>
 struct qrs_stages<CFG, U, true> {
     typedef hls::stream<typename CFG::T> S;
-    typedef hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> > Q;
-    static void run(int, int, int, int, S*, S*, S*, S*, S*, Q*, S*, S*, S*, S*) {
+    static void run(int, int, int, int, S*, S*, S*, S*, S*, S*, S*, S*, S*, S*) {
 #pragma HLS INLINE
     }
 };
@@ -401,7 +397,7 @@ void qrs_pass(int j0, int n, int rows, int f, int s, int k,
 #pragma HLS DATAFLOW
     enum { COL_DEPTH = 2 * CFG::MAX_ROWS };  // a column and the fold behind it
     enum { REST_DEPTH = 3 * CFG::MAX_ROWS };  // the columns behind the first, while it evaluates
-    const int cols = f + s + 1;
+    enum { P_DEPTH = 2 * (CFG::PARTIALS + 1) };  // two columns' partials and pivot-row entries
     hls::stream<typename CFG::T> first[CFG::N_UNITS + 1];
 #pragma HLS STREAM variable=first depth=COL_DEPTH
     hls::stream<typename CFG::T> rest[CFG::N_UNITS + 1];
@@ -412,8 +408,8 @@ void qrs_pass(int j0, int n, int rows, int f, int s, int k,
 #pragma HLS STREAM variable=vt depth=CFG::MAX_ROWS
     hls::stream<typename CFG::T> eq[CFG::N_UNITS];
 #pragma HLS STREAM variable=eq depth=2
-    hls::stream<qrs_partials<typename CFG::T, CFG::PARTIALS> > pq[CFG::N_UNITS];
-#pragma HLS STREAM variable=pq depth=2
+    hls::stream<typename CFG::T> pq[CFG::N_UNITS];
+#pragma HLS STREAM variable=pq depth=P_DEPTH
     hls::stream<typename CFG::T> xq[CFG::N_UNITS];
 #pragma HLS STREAM variable=xq depth=COL_DEPTH
     hls::stream<typename CFG::T> sq[CFG::N_UNITS];
@@ -423,9 +419,10 @@ void qrs_pass(int j0, int n, int rows, int f, int s, int k,
     hls::stream<typename CFG::T> rowq[CFG::N_UNITS];
 #pragma HLS STREAM variable=rowq depth=CFG::MAX_COLS
     FGC_REGION("qrs_pass");
-    qrs_source<CFG>(j0, rows, cols, work, first[0], rest[0]);
-    qrs_stages<CFG, 0>::run(j0, n, rows, cols, first, rest, vd, vt, eq, pq, xq, sq, rq, rowq);
-    qrs_sink<CFG>(j0 + n, rows, cols, k, first[CFG::N_UNITS], rest[CFG::N_UNITS], next);
+    qrs_source<CFG>(j0, rows, f + s + 1, work, first[0], rest[0]);
+    qrs_stages<CFG, 0>::run(j0, n, rows, f + s + 1, first, rest, vd, vt, eq, pq, xq, sq, rq,
+                            rowq);
+    qrs_sink<CFG>(j0 + n, rows, f + s + 1, k, first[CFG::N_UNITS], rest[CFG::N_UNITS], next);
     qrs_collect<CFG>(j0, n, rows, f, s, rq, rowq, cond, update, scale);
     FGC_DRAINED(first, CFG::N_UNITS + 1);  // csim only (fgc_cycles.h)
     FGC_DRAINED(rest, CFG::N_UNITS + 1);

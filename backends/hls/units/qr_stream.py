@@ -74,13 +74,15 @@ def qr_stream_loops(rows: int, cols: int, frontal: int, stages: int, ops: Operat
             waits.append((ev + 1, 0, ev, "receive"))
             for c in range(j + 1, cols):
                 waits.append((ev + 1, len(dot), up, f"@{c}"))
-                dot.append(Loop(f"dot@{c}", m, 1, lm + la))
+                dot += [Loop(f"dot@{c}", m, 1, lm + la), Loop(f"send@{c}", p + 1, 1, 1)]
             procs.append(dot)
-            # the fold: per column the pivot's term, the tree, the scale (after the Evaluate)
+            # the fold: per column the partials gathered, the pivot's term, the tree, the scale
+            # (after the Evaluate)
             fold = []
             for c in range(j + 1, cols):
+                waits.append((ev + 2, len(fold), ev + 1, f"send@{c}"))
+                fold.append(Loop(f"gather@{c}", p + 1, 1, 1))
                 waits.append((ev + 2, len(fold), ev, "evaluate"))
-                waits.append((ev + 2, len(fold), ev + 1, f"dot@{c}"))
                 fold.append(Loop(f"fold@{c}", 1, 1, fd))
             procs.append(fold)
             tail = [Loop("vector", m, 1, 1)]
@@ -159,7 +161,7 @@ def build_sets(ctx, sets: int, patterns: dict) -> dict:
                    Channel(f"qr{s}_vt{t}", "stream", max_rows, bits, f"qr{s}_eval{t}",
                            f"qr{s}_tail{t}"),
                    Channel(f"qr{s}_e{t}", "stream", 2, bits, f"qr{s}_eval{t}", f"qr{s}_fold{t}"),
-                   Channel(f"qr{s}_p{t}", "stream", 2, (p + 1) * bits, f"qr{s}_dot{t}",
+                   Channel(f"qr{s}_p{t}", "stream", 2 * (p + 1), bits, f"qr{s}_dot{t}",
                            f"qr{s}_fold{t}"),
                    Channel(f"qr{s}_x{t}", "stream", 2 * max_rows, bits, f"qr{s}_dot{t}",
                            f"qr{s}_tail{t}"),
