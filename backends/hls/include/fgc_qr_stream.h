@@ -284,20 +284,20 @@ void qrs_tail(int j, int n, int rows, int cols, hls::stream<typename CFG::T>& xq
 template <class CFG>
 void qrs_sink(int j1, int rows, int cols, int k, hls::stream<typename CFG::T>& first,
               hls::stream<typename CFG::T>& rest,
-              typename CFG::T next[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
+              typename CFG::T qrs_next[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
     if (j1 >= k) return;
     QRS_WAIT("qrs_sink", 0, "qrs_tail", CFG::N_UNITS - 1, "", j1);
     for (int i = j1; i < rows; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-        next[j1 % CFG::N_UNITS][i][j1 / CFG::N_UNITS] = first.read();
+        qrs_next[j1 % CFG::N_UNITS][i][j1 / CFG::N_UNITS] = first.read();
     }
     FGC_CYCLES("qrs_sink", 0, "sink_first", rows - j1, 1, 2);
     QRS_WAIT("qrs_sink", 0, "qrs_tail", CFG::N_UNITS - 1, "", cols - 1);
     for (int c = j1 + 1, i = j1; c < cols;) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS * CFG::MAX_COLS
 #pragma HLS PIPELINE II=1
-        next[c % CFG::N_UNITS][i][c / CFG::N_UNITS] = rest.read();
+        qrs_next[c % CFG::N_UNITS][i][c / CFG::N_UNITS] = rest.read();
         if (i == rows - 1) {
             i = j1;
             ++c;
@@ -313,8 +313,8 @@ void qrs_sink(int j1, int rows, int cols, int k, hls::stream<typename CFG::T>& f
 // w + 1 - first, II 1, depth 2 (read, compare).
 template <class CFG>
 void qrs_collect(int j0, int n, int rows, int f, int s,
-                 hls::stream<typename CFG::T> rq[CFG::N_UNITS],
-                 hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
+                 hls::stream<typename CFG::T> diag_in[CFG::N_UNITS],
+                 hls::stream<typename CFG::T> row_in[CFG::N_UNITS],
                  typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                  typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale) {
     typedef typename CFG::T T;
@@ -329,7 +329,7 @@ void qrs_collect(int j0, int n, int rows, int f, int s,
         T diag = T(0);
         for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
-            if (u == t) diag = rq[u].read();
+            if (u == t) diag = diag_in[u].read();
         }
         if (j + 1 < cols) {
             QRS_WAIT("qrs_collect", 0, "qrs_tail", t, "", cols - 1);
@@ -345,7 +345,7 @@ void qrs_collect(int j0, int n, int rows, int f, int s,
             } else if (c > j) {
                 for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
-                    if (u == t) x = rowq[u].read();
+                    if (u == t) x = row_in[u].read();
                 }
             }
             if (j < f) {
@@ -391,7 +391,7 @@ struct qrs_stages<CFG, U, true> {
 template <class CFG>
 void qrs_pass(int j0, int n, int rows, int f, int s, int k,
               const typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-              typename CFG::T next[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+              typename CFG::T qrs_next[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
               typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
               typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale) {
 #pragma HLS DATAFLOW
@@ -422,7 +422,7 @@ void qrs_pass(int j0, int n, int rows, int f, int s, int k,
     qrs_source<CFG>(j0, rows, f + s + 1, work, first[0], rest[0]);
     qrs_stages<CFG, 0>::run(j0, n, rows, f + s + 1, first, rest, vd, vt, eq, pq, xq, sq, rq,
                             rowq);
-    qrs_sink<CFG>(j0 + n, rows, f + s + 1, k, first[CFG::N_UNITS], rest[CFG::N_UNITS], next);
+    qrs_sink<CFG>(j0 + n, rows, f + s + 1, k, first[CFG::N_UNITS], rest[CFG::N_UNITS], qrs_next);
     qrs_collect<CFG>(j0, n, rows, f, s, rq, rowq, cond, update, scale);
     FGC_DRAINED(first, CFG::N_UNITS + 1);  // csim only (fgc_cycles.h)
     FGC_DRAINED(rest, CFG::N_UNITS + 1);

@@ -128,7 +128,7 @@ def stage_units(partials: int) -> tuple[tuple[str, str, tuple[tuple[str, int], .
     ``qrs_fold`` (v_0 x_j, the P adds of the P + 1 leaves' tree, the scale by tau); ``qrs_tail``'s
     loop (multiply-add)."""
     p = partials
-    return (("eval", "a stage's Householder vector (norm, square root, v_0, tau)",
+    return (("evaluate", "a stage's Householder vector (norm, square root, v_0, tau)",
              (("add", 1 + (p - 1) + 2), ("mul", 2), ("div", 1), ("sqrt", 1))),
             ("dot", "a stage's dot products and their fold and scale",
              (("add", 1 + p), ("mul", 3))),
@@ -152,21 +152,21 @@ def build_sets(ctx, sets: int, patterns: dict) -> dict:
         for t in range(n_u + 1):  # qrs_pass's first[] / rest[]: source -> stage 0 -> ... -> sink
             src = f"qr{s}_tail{t - 1}" if t else f"qr{s}_source"
             ch += [Channel(f"qr{s}_first{t}", "stream", 2 * max_rows, bits, src,
-                           f"qr{s}_eval{t}" if t < n_u else f"qr{s}_sink"),
+                           f"qr{s}_evaluate{t}" if t < n_u else f"qr{s}_sink"),
                    Channel(f"qr{s}_rest{t}", "stream", 3 * max_rows, bits, src,
                            f"qr{s}_dot{t}" if t < n_u else f"qr{s}_sink")]
         for t in range(n_u):
-            ch += [Channel(f"qr{s}_vd{t}", "stream", max_rows, bits, f"qr{s}_eval{t}",
+            ch += [Channel(f"qr{s}_vd{t}", "stream", max_rows, bits, f"qr{s}_evaluate{t}",
                            f"qr{s}_dot{t}"),
-                   Channel(f"qr{s}_vt{t}", "stream", max_rows, bits, f"qr{s}_eval{t}",
+                   Channel(f"qr{s}_vt{t}", "stream", max_rows, bits, f"qr{s}_evaluate{t}",
                            f"qr{s}_tail{t}"),
-                   Channel(f"qr{s}_e{t}", "stream", 2, bits, f"qr{s}_eval{t}", f"qr{s}_fold{t}"),
+                   Channel(f"qr{s}_e{t}", "stream", 2, bits, f"qr{s}_evaluate{t}", f"qr{s}_fold{t}"),
                    Channel(f"qr{s}_p{t}", "stream", 2 * (p + 1), bits, f"qr{s}_dot{t}",
                            f"qr{s}_fold{t}"),
                    Channel(f"qr{s}_x{t}", "stream", 2 * max_rows, bits, f"qr{s}_dot{t}",
                            f"qr{s}_tail{t}"),
                    Channel(f"qr{s}_s{t}", "stream", 2, bits, f"qr{s}_fold{t}", f"qr{s}_tail{t}"),
-                   Channel(f"qr{s}_r{t}", "stream", 2, bits, f"qr{s}_eval{t}",
+                   Channel(f"qr{s}_r{t}", "stream", 2, bits, f"qr{s}_evaluate{t}",
                            f"qr{s}_collect"),
                    Channel(f"qr{s}_row{t}", "stream", max_cols, bits, f"qr{s}_tail{t}",
                            f"qr{s}_collect")]
