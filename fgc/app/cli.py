@@ -139,6 +139,8 @@ def _hls_config(args, program):
         options["allocation"] = args.allocation
     if getattr(args, "unit_sets", None):
         options["unit_sets"] = args.unit_sets
+    if getattr(args, "qr_unit", None):
+        options["qr_unit"] = args.qr_unit
     return hls.HlsConfig(**options)
 
 
@@ -158,7 +160,7 @@ def _plan_options(args, program):
 
 def _refuse_hls_design(args, backend: str) -> None:
     """--allocation and --unit-sets shape the HLS design: other backends have no such thing."""
-    for flag in ("allocation", "unit_sets"):
+    for flag in ("allocation", "unit_sets", "qr_unit"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc {args.command}: --{flag.replace('_', '-')} applies to "
                              f"--backend hls only (not {backend})")
@@ -478,7 +480,7 @@ def _cmd_simulate(args) -> int:
     from fgc.app.run_report import simulate_report
 
     if _streaming(args):
-        for flag in ("part", "allocation", "unit_sets"):
+        for flag in ("part", "allocation", "unit_sets", "qr_unit"):
             if getattr(args, flag, None):
                 raise UsageError(f"fgc simulate: --{flag.replace('_', '-')} shapes the batch "
                                  "design; the stream's update model prices the Program's own "
@@ -885,7 +887,7 @@ def _report_stream(args) -> int:
     if getattr(args, "html", None):
         raise UsageError("fgc report --html renders batch designs; a stream's per-update report "
                          "is text and --json")
-    for flag in ("part", "allocation", "unit_sets", "scalar"):
+    for flag in ("part", "allocation", "unit_sets", "qr_unit", "scalar"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc report: --{flag.replace('_', '-')} shapes the batch design; "
                              "the stream's design is priced on the Program's own")
@@ -1129,6 +1131,10 @@ def _hardware_args(p: argparse.ArgumentParser, name: str) -> None:
         h.add_argument("--unit-sets", type=_positive_int, metavar="S",
                        help=f"{where}: unit sets eliminating a level's steps side by side, "
                             "1 … 8 (default: 2 on a two-ended chain, else 1)")
+        h.add_argument("--qr-unit", choices=("householder", "stream"),
+                       help=f"{where}: the QR unit set: householder (paper A's, one DATAFLOW "
+                            "region per reflection; the default) or stream (n_u reflection "
+                            "stages the matrix streams through)")
 
 
 def _spec_args(p: argparse.ArgumentParser, json_help: str | None) -> None:
