@@ -79,6 +79,9 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     """
     config = for_program(program, config or HlsConfig())
     config.check()
+    if stream is not None and config.qr_unit != "householder":
+        raise HlsConfigError(f"qr_unit {config.qr_unit!r}: the streaming designs (window, "
+                             "incremental) are priced with the householder QR unit only")
     check_accel(program, config)
     check_limits(program, config)
     check_clock(program.solver.clock_mhz, config)
@@ -87,9 +90,6 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     context.update(accel_context(program, config, context))
     if stream is not None and stream.template is not program:
         raise HlsConfigError("internal error: the stream layout is not of the emitted Program")
-    if stream is not None and config.qr_unit != "householder":
-        raise HlsConfigError(f"qr_unit {config.qr_unit!r}: the streaming designs (window, "
-                             "incremental) are priced with the householder QR unit only")
     context["stream"] = None if stream is None else stream.context(config.linear_cxx, config.part)
     context["stream_magic"], context["stream_result_magic"] = STREAM_MAGIC, STREAM_RESULT_MAGIC
     batch = getattr(stream, "batch", None)
