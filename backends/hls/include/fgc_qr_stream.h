@@ -442,6 +442,7 @@ template <class CFG>
 void qrs_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows,
               int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
               typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular) {
+#pragma HLS ARRAY_PARTITION variable=work complete dim=1
     typedef typename CFG::T T;
     const int cols = f + s + 1;
     if (rows < 0 || f < 0 || s < 0 || rows > CFG::MAX_ROWS || cols > CFG::MAX_COLS ||
