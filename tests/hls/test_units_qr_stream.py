@@ -125,15 +125,28 @@ def _run(driver, cases):
     return [(lines[2 * i].split(), lines[2 * i + 1].split()) for i in range(len(cases))]
 
 
+def _rows(values, rows, f, s):
+    """The conditional's f rows (w + 1 columns) and the new factor's rows (s + 1 columns)."""
+    cols = f + s + 1
+    nf = max(0, min(rows, f + s) - f)
+    cond = np.asarray(values[:f * cols]).reshape(f, cols)
+    update = np.asarray(values[f * cols:f * cols + nf * (s + 1)]).reshape(nf, s + 1)
+    return list(cond) + list(update)
+
+
 def test_the_streaming_unit_factors_as_the_papers_unit_and_costs_its_price(driver):
+    """R is unique up to the sign of each row: where a pivot is rounding noise (a column the
+    zeros make dependent), fgc_qr.h may meet an exact 0 and skip it while the stream meets 1e-17
+    and negates the row; so rows are compared up to sign."""
     cases = _cases()
     ops = table("float32")
     for (n, rows, f, s, _), (old, new) in zip(cases, _run(driver, cases), strict=True):
         assert old[1] == new[1], (n, rows, f, s)  # the singular flag
         a, b = np.array(old[2:], dtype=float), np.array(new[2:], dtype=float)
         assert a.shape == b.shape and np.all(np.isfinite(b))
-        assert np.max(np.abs(a - b), initial=0.0) <= 1e-13 * max(1.0, np.max(np.abs(a))), \
-            (n, rows, f, s)
+        tol = 1e-13 * max(1.0, np.max(np.abs(a), initial=0.0))
+        for ra, rb in zip(_rows(a, rows, f, s), _rows(b, rows, f, s), strict=True):
+            assert min(np.max(np.abs(ra - rb)), np.max(np.abs(ra + rb))) <= tol, (n, rows, f, s)
         price = sum(lp.cycles for lp in qr_stream_loops(rows, f + s + 1, f, n, ops,
                                                         local_cols=-(-MAX_COLS // n)))
         assert int(new[0]) == price, (n, rows, f, s)
