@@ -11,16 +11,19 @@
 //
 //   qrs_source        columns j0 ... w of the banks, rows j0 ... rows - 1, column after column
 //                     (one word a cycle) into stage 0;
-//   qrs_head<t>       stage t, reflection j = j0 + t: receives column j (its squared norm in
-//                     PARTIALS interleaved partial sums as it arrives), evaluates alpha, v_0 and
-//                     tau (square root, divide), then takes each later column's dot product
-//                     v.x as the column arrives, forwards the column to its tail and hands it
-//                     tau v.x;
+//   qrs_eval<t>       stage t, reflection j = j0 + t: receives column j (its squared norm in
+//                     PARTIALS interleaved partial sums as it arrives, the vector below the
+//                     pivot on to the dot process and the tail), then alpha, v_0 and tau;
+//   qrs_dot<t>        takes each later column's dot product v.x below the pivot as the column
+//                     arrives (column j + 1's while the Evaluate still computes: the look-ahead)
+//                     and forwards the column to the tail;
+//   qrs_fold<t>       adds the pivot's term v_0 x_j, folds the partials, scales by tau;
 //   qrs_tail<t>       applies the reflection to each column (x -= (tau v.x) v), the entry in
-//                     row j (final: row j of R) to the collector, rows j + 1 ... to stage t + 1;
+//                     row j (final: row j of R) to the collector, rows j + 1 ... to stage t + 1
+//                     (column j + 1 to its Evaluate, the others to its dot process);
 //   qrs_sink          what leaves the last stage (columns and rows from j0 + N_UNITS on) into
 //                     the next pass's banks (copied back after the region);
-//   qrs_collect       rows j0 ... of R (R_jj from the heads, the rest from the tails) into
+//   qrs_collect       rows j0 ... of R (R_jj from the Evaluates, the rest from the tails) into
 //                     cond or update, and the running scale.
 //
 // Stage t + 1 evaluates reflection j + 1 as soon as the first column leaves stage t, while

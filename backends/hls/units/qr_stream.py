@@ -1,17 +1,18 @@
 """The streaming Householder QR unit (``include/fgc_qr_stream.h``, ``--qr-unit stream``): per unit
 set n_u reflection stages in a systolic chain, the matrix streamed through them column by column.
 
-Stage t of a pass takes reflection j = j0 + t: its head receives column j (the squared norm as
-it arrives), evaluates the Householder vector (square root, v_0, tau), then takes each later
-column's dot product with the vector as the column arrives and hands tau v.x to its tail, which
-updates the column and streams it (rows j + 1 ...) to stage t + 1 while the head already takes
-the next column. Stage t + 1 evaluates reflection j + 1 as soon as the first column leaves
-stage t: the Evaluate of reflection j + 1 overlaps the Update of reflection j (paper A's
-look-ahead), no region drains between reflections. A step of k reflections is ceil(k / n_u)
-passes, one DATAFLOW region each (source, the stages, sink, collector).
+Stage t of a pass takes reflection j = j0 + t: its Evaluate receives column j (the squared norm
+as it arrives) and computes alpha, v_0 and tau; its dot process takes each later column's dot
+product with the vector as the column arrives (column j + 1's while the Evaluate still
+computes), its fold adds the pivot's term and scales by tau, and its tail updates the column and
+streams it (rows j + 1 ...) to stage t + 1. Stage t + 1 evaluates reflection j + 1 as soon as the
+first column leaves stage t: the Evaluate of reflection j + 1 overlaps the Update of reflection
+j (paper A's look-ahead), no region drains between reflections. A step of k reflections is
+ceil(k / n_u) passes, one DATAFLOW region each (source, the stages, sink, collector).
 
 The loops here are the header's FGC_CYCLES / FGC_WAIT counters, one for one; the region
-arithmetic is :func:`fgc_backends.hls.plan.loops._region_cycles`.
+arithmetic is :func:`fgc_backends.hls.plan.loops._region_cycles` (docs/hls.md, "The streaming
+QR unit").
 """
 
 from __future__ import annotations
