@@ -122,7 +122,8 @@ void qrs_eval(int j, int n, int rows, hls::stream<typename CFG::T>& in,
     }
     T x0 = T(0);
     // trip m, II 1, depth Lm + La (a partial is met again P >= La iterations later)
-    QRS_WAIT("qrs_eval", U, U == 0 ? "qrs_source" : "qrs_tail", U == 0 ? 0 : U - 1, "", j);
+    QRS_WAIT("qrs_eval", U, U == 0 ? "qrs_source" : "qrs_tail", U == 0 ? 0 : U - 1,
+             U == 0 ? "src" : "axpy", j);
     for (int a = 0; a < m; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
@@ -187,7 +188,8 @@ void qrs_dot(int j, int n, int rows, int cols, hls::stream<typename CFG::T>& in,
         }
         T xj = T(0);
         // trip m, II 1, depth Lm + La
-        QRS_WAIT("qrs_dot", U, U == 0 ? "qrs_source" : "qrs_tail", U == 0 ? 0 : U - 1, "", c);
+        QRS_WAIT("qrs_dot", U, U == 0 ? "qrs_source" : "qrs_tail", U == 0 ? 0 : U - 1,
+                 U == 0 ? "src" : "axpy", c);
         for (int a = 0; a < m; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
@@ -263,9 +265,11 @@ void qrs_tail(int j, int n, int rows, int cols, hls::stream<typename CFG::T>& xq
     FGC_CYCLES("qrs_tail", U, "vector", m, 1, 1);
     for (int c = j + 1; c < cols; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
+        // tau v.x from the fold: every update of the column waits for it (1 cycle after)
         const T s = sq.read();
-        // x -= s v: trip m, II 1, depth Lm + La
         QRS_WAIT("qrs_tail", U, "qrs_fold", U, "fold", c);
+        QRS_CYCLES("qrs_tail", U, "scale", c, 1, 1, 1);
+        // x -= s v: trip m, II 1, depth Lm + La
         for (int a = 0; a < m; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
@@ -289,14 +293,14 @@ void qrs_sink(int j1, int rows, int cols, int k, hls::stream<typename CFG::T>& f
               hls::stream<typename CFG::T>& rest,
               typename CFG::T qrs_next[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
     if (j1 >= k) return;
-    QRS_WAIT("qrs_sink", 0, "qrs_tail", CFG::N_UNITS - 1, "", j1);
+    QRS_WAIT("qrs_sink", 0, "qrs_tail", CFG::N_UNITS - 1, "axpy", j1);
     for (int i = j1; i < rows; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
         qrs_next[j1 % CFG::N_UNITS][i][j1 / CFG::N_UNITS] = first.read();
     }
     FGC_CYCLES("qrs_sink", 0, "sink_first", rows - j1, 1, 2);
-    QRS_WAIT("qrs_sink", 0, "qrs_tail", CFG::N_UNITS - 1, "", cols - 1);
+    QRS_WAIT("qrs_sink", 0, "qrs_tail", CFG::N_UNITS - 1, "axpy", cols - 1);
     for (int c = j1 + 1, i = j1; c < cols;) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS * CFG::MAX_COLS
 #pragma HLS PIPELINE II=1
@@ -335,7 +339,7 @@ void qrs_collect(int j0, int n, int rows, int f, int s,
             if (u == t) diag = diag_in[u].read();
         }
         if (j + 1 < cols) {
-            QRS_WAIT("qrs_collect", 0, "qrs_tail", t, "", cols - 1);
+            QRS_WAIT("qrs_collect", 0, "qrs_tail", t, "axpy", cols - 1);
         } else {
             FGC_WAIT("qrs_collect", 0, "qrs_tail", t, "vector");
         }

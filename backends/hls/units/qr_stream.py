@@ -67,14 +67,15 @@ def qr_stream_loops(rows: int, cols: int, frontal: int, stages: int, ops: Operat
             j = j0 + t
             m = rows - j
             ev = len(procs)  # the Evaluate: column j, then alpha, v_0, tau
-            waits.append((ev, 0, up, f"@{j}"))
+            stem = "src" if t == 0 else "axpy"  # what the upstream's loop of a column is called
+            waits.append((ev, 0, up, f"{stem}@{j}"))
             procs.append([Loop(f"receive@{j}", m, 1, lm + la), Loop("evaluate", 1, 1, ev_depth)])
             # the dot process: the vector as the Evaluate receives it, then per later column
             # v.x as it arrives and the fold with the pivot's term (after the Evaluate's end)
             dot = [Loop(f"vector@{j}", m - 1, 1, 1)]
             waits.append((ev + 1, 0, ev, "receive"))
             for c in range(j + 1, cols):
-                waits.append((ev + 1, len(dot), up, f"@{c}"))
+                waits.append((ev + 1, len(dot), up, f"{stem}@{c}"))
                 dot += [Loop(f"dot@{c}", m, 1, lm + la), Loop(f"send@{c}", p + 1, 1, 1)]
             procs.append(dot)
             # the fold: per column the partials gathered, the pivot's term, the tree, the scale
@@ -89,13 +90,14 @@ def qr_stream_loops(rows: int, cols: int, frontal: int, stages: int, ops: Operat
             tail = [Loop("vector", m, 1, 1)]
             waits.append((ev + 3, 0, ev, "evaluate"))
             for c in range(j + 1, cols):
+                # tau v.x gates the column's update: the axpy starts after it arrives
                 waits.append((ev + 3, len(tail), ev + 2, f"fold@{c}"))
-                tail.append(Loop(f"axpy@{c}", m, 1, lm + la))
+                tail += [Loop(f"scale@{c}", 1, 1, 1), Loop(f"axpy@{c}", m, 1, lm + la)]
             up = ev + 3
             procs.append(tail)
         if j1 < k:  # the sink: what is left, into the other banks
-            waits.append((len(procs), 0, up, f"@{j1}"))
-            waits.append((len(procs), 1, up, f"@{cols - 1}"))
+            waits.append((len(procs), 0, up, f"axpy@{j1}"))
+            waits.append((len(procs), 1, up, f"axpy@{cols - 1}"))
             procs.append([Loop("sink_first", rows - j1, 1, 2),
                           Loop("sink", (cols - j1 - 1) * (rows - j1), 1, 2)])
         # the collector: per stage its row of R out (cond / update) and the running scale
@@ -104,7 +106,7 @@ def qr_stream_loops(rows: int, cols: int, frontal: int, stages: int, ops: Operat
             j = j0 + t
             first = 0 if j < frontal else frontal
             waits.append((len(procs), len(coll), 4 + 4 * t,
-                          f"@{cols - 1}" if j + 1 < cols else "vector"))
+                          f"axpy@{cols - 1}" if j + 1 < cols else "vector"))
             coll.append(Loop(f"row@{j}", cols - first, 1, 2))
         procs.append(coll)
         region = _region_cycles(procs, tuple(waits))
