@@ -1,6 +1,8 @@
 """The Householder QR unit sets (paper A): per set one Evaluate unit and n_u Update units
 around ``qr_reflection``'s DATAFLOW region (``include/fgc_qr.h``), each elimination step
-stacked into the set's banks and committed to COND / NF by the kernel."""
+stacked into the set's banks and committed to COND / NF by the kernel. ``PlanOptions.qr_unit
+= "stream"`` puts :mod:`fgc_backends.hls.units.qr_stream`'s stages in the sets instead (the
+same stacking, commit and memories around them)."""
 
 from __future__ import annotations
 
@@ -257,11 +259,13 @@ def _levels(ctx, sets, by_index, damping) -> None:
 
 
 SPEC = UnitSpec(
-    name="qr", role="Householder QR unit sets: Evaluate + n_u Update units per set",
+    name="qr", role="Householder QR unit sets: Evaluate + n_u Update units per set (paper A's, "
+    "--qr-unit householder), or n_u streaming reflection stages (--qr-unit stream: "
+    "fgc_qr_stream.h, priced by units/qr_stream.py)",
     build=build, phases=("qr_stack", "qr", "qr_commit"), header="fgc_qr.h",
     constants=(("UNITS", "n_u Update units (PlanOptions.units)"),
                ("PARTIALS", "interleaved partial sums of a dot product (the adder latency)"),
                ("MAX_ROWS", "rows of the widest stacked step"), ("MAX_W", "widest step")),
-    printed_by="accel.cpp.jinja: qr_set<s> -> fgc_qr.h qr_step",
+    printed_by="accel.cpp.jinja: qr_set<s> -> fgc_qr.h qr_step (fgc_qr_stream.h qrs_step)",
     applies=lambda program, options: program.solver.linear == "qr")
 
