@@ -177,3 +177,29 @@ def test_one_pass_has_no_copy_and_each_extra_pass_one():
     names = [lp.name for lp in qr_stream_loops(20, 10, 5, 16, ops)]
     assert sum(n.startswith("s_pass") and not n.endswith("first") for n in names) == 1
     assert not any(n.startswith("s_copy") for n in names)
+
+
+@pytest.mark.parametrize("n_u", [1, 3])
+def test_the_plan_holds_n_u_stages_per_set_with_their_streams(n_u):
+    from hls_programs import chain
+
+    from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost, process_network
+    from fgc_backends.hls.plan.model import PlanError
+
+    program = chain(7, linear="qr")  # two-ended: two unit sets
+    plan = build_plan(program, PlanOptions.of(program, units=n_u, qr_unit="stream"))
+    procs, streams = process_network(plan)
+    for s in range(2):
+        for kind in ("evaluate", "dot", "tail"):
+            assert plan.unit(f"qr{s}_{kind}").instances == n_u
+        # per stage first/rest links (n_u + 1 each) and vd, vt, e, p, x, s, r, row
+        assert sum(c.name.startswith(f"qr{s}_") for c in streams) == 10 * n_u + 2
+        assert sum(p.startswith(f"qr{s}_") for p in procs) == 4 * n_u + 3
+    householder = plan_cost(build_plan(program, PlanOptions.of(program, units=n_u)))
+    stream = plan_cost(plan)
+    stages = ("qr0_evaluate", "qr0_dot", "qr0_tail")
+    stage_dsp = sum(d for name, d in stream.dsp_by_unit if name in stages)
+    assert stage_dsp == n_u * 42  # float32 on the xc7z045: 12 adders, 6 multipliers a stage
+    assert stream.dsp > householder.dsp
+    with pytest.raises(PlanError, match="qr_unit 'givens'"):
+        build_plan(program, PlanOptions.of(program, qr_unit="givens"))
