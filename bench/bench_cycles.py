@@ -111,6 +111,12 @@ def cases():
             out.append((f"LIO N=30 QR {ordering} n_u={units}", lio.build(N=30),
                         SolverConfig(method="gn", linear="qr", ordering=ordering,
                                      units=units, precision="float32")))
+    # the streaming QR unit (--qr-unit stream, fgc_qr_stream.h): n_u reflection stages
+    for units in (4, 8):
+        out.append((f"LIO N=30 QR two-ended n_u={units} stream", lio.build(N=30),
+                    SolverConfig(method="gn", linear="qr", ordering="two-ended", units=units,
+                                 precision="float32"),
+                    HlsConfig(scalar="float", qr_unit="stream")))
     # N = 20: at N = 50 undamped float32 Gauss-Newton stops singular inside its first solve
     for cpe in (5, 20, 80):
         out.append((f"imu_window N=20 Cholesky #CPE={cpe}", imu_window.build(N=20),
@@ -121,8 +127,8 @@ def cases():
 
 def main() -> None:
     summary = []
-    for name, graph, solver in cases():
-        phases, events = measure(name, graph, solver)
+    for name, graph, solver, *config in cases():
+        phases, events = measure(name, graph, solver, *config)
         print(f"{name}   (runs: " + ", ".join(f"{k} {v}" for k, v in sorted(events.items()))
               + ")")
         print(f"  {'phase':16} {'csim cycles':>12} {'model cycles':>12} {'csim/model':>10}")

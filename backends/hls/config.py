@@ -25,7 +25,12 @@ from fgc.ir.program import Program
 from fgc_backends.cfamily import scalars
 from fgc_backends.cfamily.errors import CodegenError
 from fgc_backends.cfamily.scalars import SCALARS
-from fgc_backends.hls.plan.options import DEFAULT_ALLOCATION, PlanOptions, scalar_precision
+from fgc_backends.hls.plan.options import (
+    DEFAULT_ALLOCATION,
+    QR_UNITS,
+    PlanOptions,
+    scalar_precision,
+)
 from fgc_backends.hls.target import DEFAULT_PART, DEVICES, Target, device_of, target_of
 
 PART_NAME = re.compile(r"^[A-Za-z0-9_-]{1,64}$")  # a part name is printed into run_hls.tcl
@@ -55,6 +60,10 @@ class DesignOptions:
       named keep the plan's default (``fgc_backends.hls.plan.DEFAULT_ALLOCATION``), which is
       what ``None`` means. The plan shares each limit out over the block types by instance
       count (``PlanOptions.allocation_scaling``). ``fgc compile --allocation mul=48,add=32``.
+    - ``qr_unit``: the QR unit set the design eliminates with: ``"householder"`` (paper A's
+      architecture: one DATAFLOW region per reflection, ``include/fgc_qr.h``) or ``"stream"``
+      (n_u reflection stages the matrix streams through, ``include/fgc_qr_stream.h``; the
+      batch design only). ``fgc compile --qr-unit``.
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
@@ -64,6 +73,7 @@ class DesignOptions:
     clock_ns: float | None = None
     unit_sets: int | None = None
     allocation: tuple[tuple[str, int], ...] | None = None
+    qr_unit: str = "householder"
 
     def check(self, program: Program | None = None) -> None:
         """Raise :class:`HlsConfigError` naming the first invalid option; with ``program``, also
@@ -84,6 +94,9 @@ class DesignOptions:
             raise HlsConfigError(f"unit_sets must be {low} … {high}, got {self.unit_sets}")
         if self.allocation is not None:
             _check_allocation(self.allocation)
+        if self.qr_unit not in QR_UNITS:
+            raise HlsConfigError(f"qr_unit {self.qr_unit!r}: expected one of "
+                                 f"{', '.join(QR_UNITS)}")
         if program is not None:
             self.check_clock(program.solver.clock_mhz)
 
@@ -107,10 +120,10 @@ class DesignOptions:
     def plan_options(self, program: Program, precision: str | None = None,
                      les_precision: str | None = None, **changes) -> PlanOptions:
         """The accelerator plan's options of this design for ``program``: the Program's n_u and
-        #CPE, these unit sets, part and ALLOCATION limits (over the defaults), and the
+        #CPE, these unit sets, part, QR unit and ALLOCATION limits (over the defaults), and the
         precisions the design computes in (None: the Program's)."""
-        base = dict(unit_sets=self.unit_sets, part=self.part, precision=precision,
-                    les_precision=les_precision)
+        base = dict(unit_sets=self.unit_sets, part=self.part, qr_unit=self.qr_unit,
+                    precision=precision, les_precision=les_precision)
         if self.allocation:  # the design's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(self.allocation)}.items())
@@ -152,7 +165,7 @@ class HlsConfig(scalars.ScalarTypes):
       wide as ``scalar``), the mixed design; ``None`` means ``scalar``, or ``"double"`` for a
       Program whose ``SolverConfig.linear_precision`` is float64.
     - ``design``: the design's :class:`DesignOptions` (part, clock period, unit sets,
-      ALLOCATION limits). The old keywords still work and read through:
+      ALLOCATION limits, QR unit). The old keywords still work and read through:
       ``HlsConfig(part="xczu9eg-ffvb1156-2-e", unit_sets=2)`` is
       ``HlsConfig(design=DesignOptions(part=…, unit_sets=2))`` and ``config.part`` is
       ``config.design.part``. An old keyword given as ``None`` keeps the design's value (to
@@ -178,14 +191,15 @@ class HlsConfig(scalars.ScalarTypes):
     clock_ns: InitVar[float | None] = None
     unit_sets: InitVar[int | None] = None
     allocation: InitVar[tuple[tuple[str, int], ...] | None] = None
+    qr_unit: InitVar[str | None] = None
 
-    def __post_init__(self, part, clock_ns, unit_sets, allocation) -> None:
+    def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
-        given = {name: value for name, value in zip(_DESIGN_FIELDS,
-                                                     (part, clock_ns, unit_sets, allocation),
-                                                     strict=True) if value is not None}
+        old = (part, clock_ns, unit_sets, allocation, qr_unit)
+        given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
+                 if value is not None}
         if given:
             object.__setattr__(self, "design", dataclasses.replace(self.design, **given))
 

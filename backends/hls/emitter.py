@@ -79,6 +79,9 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     """
     config = for_program(program, config or HlsConfig())
     config.check()
+    if stream is not None and config.qr_unit != "householder":
+        raise HlsConfigError(f"qr_unit {config.qr_unit!r}: the streaming designs (window, "
+                             "incremental) are priced with the householder QR unit only")
     check_accel(program, config)
     check_limits(program, config)
     check_clock(program.solver.clock_mhz, config)
@@ -236,7 +239,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
             "blocks": blocks, "network": network, "retract_hw": retract,
-            "unit_sets": max(1, sets), "units": units,
+            "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's copies: the memories' two ports shared out over the unit sets
             "bs_words": max(1, 2 // max(1, sets)), "bs_ii": -(-max(1, sets) // 2),
             "cpe": plan.options.cpe, "plan": plan,

@@ -5,10 +5,10 @@
     print("\\n".join(result.lines()))      # every design, its verdict and what bound it
 
 Each candidate is an emitted HLS design (:class:`Candidate`: linear solver, n_u, QR unit sets,
-#CPE, the factor datapaths' ``ALLOCATION`` scale, and any option the plan grows: a ``qr_unit``
-field of ``PlanOptions`` becomes an axis when present). Its speed is the accelerator plan's
-(``plan_cost(build_plan(program, PlanOptions.for_config(config, program)))``: cycles of one
-iteration); its fit is judged on honest figures:
+#CPE, the factor datapaths' ``ALLOCATION`` scale, and any option the plan grows: the ``qr_unit``
+field of ``PlanOptions`` and ``DesignOptions`` is an axis over ``QR_UNITS``). Its speed is the
+accelerator plan's (``plan_cost(build_plan(program, PlanOptions.for_config(config, program)))``:
+cycles of one iteration); its fit is judged on honest figures:
 
 - **DSP** = max(the plan's DSP, the second reader's DSP of the emitted design:
   ``fgc_backends.hls.reader``, what Vitis would instantiate from the text, a lower bound). Once

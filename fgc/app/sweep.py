@@ -338,7 +338,9 @@ def fit_search(programs: dict, designs: Sequence[Design], reads: int,
         space = Space(linears=tuple(progs),
                       units=tuple(sorted({d.units for d in members if d.units})) or (1,),
                       cpe=tuple(sorted({d.cpe for d in members if d.cpe})) or (5,),
-                      scalar="float" if precision == "float32" else "double")
+                      scalar="float" if precision == "float32" else "double",
+                      # the sweep's designs are the default unit's: no QR-unit axis
+                      extra=(("qr_unit", ("householder",)),))
         out[precision] = search(progs, space, max_reads=max(0, reads), reader=reads > 0,
                                 progress=progress)
     return out

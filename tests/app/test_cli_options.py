@@ -149,6 +149,10 @@ def test_emit_takes_the_programs_clock_and_rejects_a_second_one(tmp_path):
     (["report", BEACONS, "--iterations", "1", "--part", "xc9z999"], "fgc knows no capacities"),
     (["simulate", BEACONS, "--incremental", "3", "--allocation", "mul=4"],
      "--allocation shapes the batch design"),
+    (["compile", BEACONS, "--backend", "native", "--out", "x", "--qr-unit", "stream"],
+     "--qr-unit applies to --backend hls only (not native)"),
+    (["simulate", BEACONS, "--incremental", "3", "--qr-unit", "stream"],
+     "--qr-unit shapes the batch design"),
 ])
 def test_bad_hardware_options_exit_2_with_one_line(argv, needle, capsys, tmp_path,
                                                    monkeypatch):

@@ -15,6 +15,9 @@ from fgc.frontend.geometry import Pose2
 from fgc.ir.program import SolverConfig
 from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
 
+# the tests of the read logic search one QR unit kind (the qr_unit axis would double each family)
+HOUSEHOLDER = (("qr_unit", ("householder",)),)
+
 
 def _chain(n: int = 4) -> fgc.Graph:
     g = fgc.Graph()
@@ -40,7 +43,7 @@ def test_a_design_the_plan_fits_but_the_reader_does_not_is_refused(programs):
     xc7z045's 900 DSP; the second reader reads the emitted text's operators as Vitis would
     instantiate them and finds more than the part has: the search refuses it, says the reader
     bound it, and raises it as a fit warning."""
-    space = Space(linears=("qr",), units=(1,), unit_sets=(1,))
+    space = Space(linears=("qr",), units=(1,), unit_sets=(1,), extra=HOUSEHOLDER)
     result = search({"qr": programs["qr"]}, space, max_reads=1)
     (row,) = result.rows
     assert row.cost.fits and row.cost.dsp <= 900  # the plan alone would take it
@@ -88,7 +91,7 @@ def test_the_search_reads_few_and_what_it_implies_holds(programs):
 
 
 def test_a_read_budget_leaves_designs_unread_and_says_so(programs):
-    space = Space(linears=("qr",), units=(1, 2, 4, 8), unit_sets=(1,))
+    space = Space(linears=("qr",), units=(1, 2, 4, 8), unit_sets=(1,), extra=HOUSEHOLDER)
     read, seen = _stub({(u, 1, 1): 100 for u in (1, 2, 4, 8)})
     result = search({"qr": programs["qr"]}, space, max_reads=0, reader_fn=read)
     assert seen == [] and result.best is None and result.unchecked_faster == 4
@@ -105,11 +108,46 @@ def test_a_design_the_emitter_refuses_is_no_candidate(programs):
             raise FgcError("refused")
         return {"dsp": 100}, False
 
-    space = Space(linears=("qr",), units=(1, 2), unit_sets=(1,))
+    space = Space(linears=("qr",), units=(1, 2), unit_sets=(1,), extra=HOUSEHOLDER)
     result = search({"qr": programs["qr"]}, space, max_reads=4, reader_fn=read)
     verdicts = {r.candidate.units: r.verdict for r in result.rows}
     assert verdicts == {2: "unbuildable", 1: "fits"} and result.best.candidate.units == 1
     assert "refused" in next(r.bound for r in result.rows if r.verdict == "unbuildable")
+
+
+def test_the_qr_unit_axis_prices_each_unit_as_emitted(programs):
+    """PlanOptions and DesignOptions both have ``qr_unit``: a QR space searches householder and
+    stream designs (Cholesky ones have no QR unit), each emitted with its unit
+    (``config.design.qr_unit``) and priced by the plan of that unit; a reading of one kind
+    implies nothing about the other (an unordered axis)."""
+    space = Space(linears=("qr", "cholesky"), units=(2,), unit_sets=(1,), cpe=(5,))
+    seen = []
+
+    def read(program, config):
+        seen.append((program.solver.linear, config.design.qr_unit))
+        return {"dsp": 100}, False
+
+    result = search(programs, space, max_reads=1, reader_fn=read)
+    kinds = sorted(dict(r.candidate.extra).get("qr_unit", "-") for r in result.rows)
+    assert kinds == ["-", "householder", "stream"]
+    cycles = {}
+    for r in result.rows:
+        if r.candidate.linear != "qr":
+            continue
+        kind = dict(r.candidate.extra)["qr_unit"]
+        config = r.candidate.config(space)
+        assert config.design.qr_unit == kind and f"qr_unit={kind}" in r.label
+        program = r.candidate.program(programs)
+        options = PlanOptions.for_config(config, program)
+        assert options.qr_unit == kind
+        cycles[kind] = r.cycles
+        assert r.cycles == plan_cost(build_plan(program, options)).cycles
+    assert cycles["householder"] != cycles["stream"]
+    # one read (budget 1): a fit of one QR kind implies nothing about the other kind
+    assert len(seen) == 1 and result.best is not None
+    (read_row,) = [r for r in result.rows if r.verdict != "unread"]
+    other = next(r for r in result.rows if r.candidate.linear == "qr" and r is not read_row)
+    assert read_row.candidate.linear == "qr" and other.verdict == "unread"
 
 
 def test_monotone_order_and_space_checks():

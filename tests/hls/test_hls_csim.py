@@ -253,6 +253,47 @@ def test_cycle_counting_csim_equals_the_model(linear, option):
     assert abs(counted / model - 1) <= 0.02, (counted, model)
 
 
+def test_the_streaming_qr_unit_matches_the_simulator_and_counts_its_price(tmp_path):
+    """--qr-unit stream (fgc_qr_stream.h): the C simulation of LIO (LM, double, 3 reflection
+    stages a pass, two unit sets) equals the simulator within 1e-9, and a Gauss-Newton float
+    run's counted cycles equal the plan's per phase within 2 % (the QR and back-substitution
+    phases exactly: the stages' loops are priced one for one)."""
+    graph = lio.build(N=6)
+    program = compile_graph(graph, SolverConfig(linear="qr", units=3), name="lio_stream")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", qr_unit="stream"))
+    assert (tmp_path / "include" / "fgc_qr_stream.h").is_file()
+    assert "fgc_units::qrs_step<LesConfig>" in (tmp_path / "lio_stream.cpp").read_text()
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)
+    _check_against_reference("lio_stream", program, result, reference, "double")
+
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import measure
+
+    solver = SolverConfig(method="gn", linear="qr", units=3, precision="float32")
+    phases, _ = measure("t", graph, solver, HlsConfig(scalar="float", qr_unit="stream"))
+    for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+    assert phases["qr"][0] == phases["qr"][1] > 0
+    assert phases["backsub"][0] == phases["backsub"][1] > 0
+
+
+def test_the_streaming_qr_unit_is_refused_for_the_streaming_designs():
+    config = HlsConfig(qr_unit="stream")
+    with pytest.raises(HlsConfigError, match="streaming designs"):
+        emit(compile_graph(lio.build(N=4), SolverConfig(linear="qr")), "/nonexistent",
+             config, stream=_FakeLayout())
+    with pytest.raises(HlsConfigError, match="qr_unit 'givens'"):
+        HlsConfig(qr_unit="givens").check()
+
+
+class _FakeLayout:
+    """Stands in for a WindowLayout: emit refuses the streaming QR unit before it is read."""
+
+    template = None
+
+
 def test_cycle_counting_covers_levenberg_marquardt_and_the_rounding_noise_pass():
     """An LM run that rejects a trial step (LIO N=6, Cholesky, float32; pose_graph's run no
     longer rejects one since the cascade's rows keep their pivots' scale): the rounding-noise

@@ -30,12 +30,17 @@ JACOBIAN_STORAGE = ("whitened", "raw")
 
 HESSIAN_STORAGE = ("frontal", "dense", "blocked")
 
+QR_UNITS = ("householder", "stream")  # PlanOptions.qr_unit: fgc_qr.h, fgc_qr_stream.h
+
 
 @dataclass(frozen=True)
 class PlanOptions:
     units: int = 4  # n_u Update units per QR unit set
     cpe: int = 20  # Cholesky process elements
     unit_sets: int | None = None  # QR unit sets: None = 2 for two-ended chains, else 1
+    # the QR unit set: "householder" (fgc_qr.h, one region per reflection) or "stream"
+    # (fgc_qr_stream.h, n_u reflection stages the matrix streams through; units/qr_stream.py)
+    qr_unit: str = "householder"
     allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
     # how a block type's datapath gets its share of ``allocation``: "instances" (default): the
     # heaviest type (most operations × instances) gets the limits, every other type

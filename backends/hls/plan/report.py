@@ -75,7 +75,12 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
     the back-substitution units have none (each reads its own conditional and separator
     buffers and writes its own frontal buffer, the region's arguments: nothing passes from
     one unit to another)."""
-    if plan.linear == "qr":
+    if plan.linear == "qr" and plan.options.qr_unit == "stream":  # fgc_qr_stream.h's qrs_pass
+        procs = tuple(p for s in range(unit_sets(plan)) for p in (
+            f"qr{s}_source", *(f"qr{s}_{k}{t}" for t in range(plan.options.units)
+                               for k in ("evaluate", "dot", "fold", "tail")),
+            f"qr{s}_sink", f"qr{s}_collect"))
+    elif plan.linear == "qr":
         procs = tuple(p for s in range(unit_sets(plan)) for p in (
             f"qr{s}_broadcast", f"qr{s}_finish",
             *(f"qr{s}_update{u}" for u in range(plan.options.units)),

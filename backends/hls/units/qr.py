@@ -1,6 +1,8 @@
 """The Householder QR unit sets (paper A): per set one Evaluate unit and n_u Update units
 around ``qr_reflection``'s DATAFLOW region (``include/fgc_qr.h``), each elimination step
-stacked into the set's banks and committed to COND / NF by the kernel."""
+stacked into the set's banks and committed to COND / NF by the kernel. ``PlanOptions.qr_unit
+= "stream"`` puts :mod:`fgc_backends.hls.units.qr_stream`'s stages in the sets instead (the
+same stacking, commit and memories around them)."""
 
 from __future__ import annotations
 
@@ -12,7 +14,7 @@ from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.cost.structure import stacked_pattern
 from fgc_backends.hls.plan.cost import phase_cycles
 from fgc_backends.hls.plan.loops import _assign, _ported, _region_cycles, kernel_loop
-from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
+from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, PlanError, Process, Unit
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
 
@@ -162,12 +164,25 @@ def unit_sets_of(program, opts) -> int:
 def build(ctx) -> None:
     """The unit sets, their streams, per level the stack, the steps' regions and the commit,
     and the sets' memories (accel.cpp.jinja's WORK<s>, CONDBUF<s>, UPDBUF<s>)."""
-    program, opts, ops = ctx.program, ctx.opts, ctx.les
+    program, opts = ctx.program, ctx.opts
     sched = program.schedule
     sets = ctx.shared["sets"] = unit_sets_of(program, opts)
     damping = program.solver.method == "lm"
     patterns = {st.index: stacked_pattern(program, st, damping) for st in sched.steps}
     max_rows = ctx.sizes["MAX_ROWS"]
+    if opts.qr_unit == "stream":
+        from fgc_backends.hls.units import qr_stream
+        by_index = qr_stream.build_sets(ctx, sets, patterns)
+    elif opts.qr_unit == "householder":
+        by_index = _householder_sets(ctx, sets, patterns, max_rows)
+    else:
+        raise PlanError(f"qr_unit {opts.qr_unit!r}: expected householder or stream")
+    _levels(ctx, sets, by_index, damping)
+
+
+def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
+    """fgc_qr.h's unit sets (units, streams) and each step's regions."""
+    opts, ops, sched = ctx.opts, ctx.les, ctx.program.schedule
     for s in range(sets):
         ctx.units.append(Unit(f"qr{s}_evaluate", "Householder vector of a column", 1,
                               (("add", 2), ("mul", 2), ("div", 1), ("sqrt", 1))))
@@ -199,9 +214,14 @@ def build(ctx) -> None:
                                 f"qr{s}_evaluate", f"qr{s}_finish"))
     # per step: the regions of fgc_qr.h's qr_step (Evaluate of column k+1 overlaps the Update
     # of column k in region k) and its store, one process per step
-    by_index = {st.index: Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
+    return {st.index: Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
         patterns[st.index], st.frontal_dim, opts.units, ops, name=f"s{st.index}")))
         for st in sched.steps}
+
+
+def _levels(ctx, sets, by_index, damping) -> None:
+    """Per level the stack, the steps on the unit sets and the commit; the sets' memories."""
+    opts, ops, sched = ctx.opts, ctx.les, ctx.program.schedule
     tables, timing = ctx.tables, ctx.les_timing
     max_w = ctx.sizes["MAX_W"]
     for li, level in enumerate(sched.levels):
@@ -239,11 +259,13 @@ def build(ctx) -> None:
 
 
 SPEC = UnitSpec(
-    name="qr", role="Householder QR unit sets: Evaluate + n_u Update units per set",
+    name="qr", role="Householder QR unit sets: Evaluate + n_u Update units per set (paper A's, "
+    "--qr-unit householder), or n_u streaming reflection stages (--qr-unit stream: "
+    "fgc_qr_stream.h, priced by units/qr_stream.py)",
     build=build, phases=("qr_stack", "qr", "qr_commit"), header="fgc_qr.h",
     constants=(("UNITS", "n_u Update units (PlanOptions.units)"),
                ("PARTIALS", "interleaved partial sums of a dot product (the adder latency)"),
                ("MAX_ROWS", "rows of the widest stacked step"), ("MAX_W", "widest step")),
-    printed_by="accel.cpp.jinja: qr_set<s> -> fgc_qr.h qr_step",
+    printed_by="accel.cpp.jinja: qr_set<s> -> fgc_qr.h qr_step (fgc_qr_stream.h qrs_step)",
     applies=lambda program, options: program.solver.linear == "qr")
 

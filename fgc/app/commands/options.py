@@ -155,9 +155,9 @@ def verbosity_args(p: argparse.ArgumentParser, suppress: bool) -> None:
 
 
 def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
-    """--clock; with ``design`` also the HLS design's --part, --scalar, --allocation and
-    --unit-sets: ``"emitted"`` (compile, run: the design built) or ``"priced"`` (simulate,
-    report: the design whose plan is priced)."""
+    """--clock; with ``design`` also the HLS design's --part, --scalar, --allocation,
+    --unit-sets and --qr-unit: ``"emitted"`` (compile, run: the design built) or ``"priced"``
+    (simulate, report: the design whose plan is priced)."""
     h = p.add_argument_group("hardware (the cost model's figures are model estimates)")
     h.add_argument("--clock", type=clock_arg, metavar="F",
                    help="accelerator clock, e.g. 143MHz or 7ns (a bare number ≥ 20 is MHz): "
@@ -187,6 +187,10 @@ def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
         h.add_argument("--unit-sets", type=positive_int, metavar="S",
                        help=f"{where}: unit sets eliminating a level's steps side by side, "
                             "1 … 8 (default: 2 on a two-ended chain, else 1)")
+        h.add_argument("--qr-unit", choices=("householder", "stream"),
+                       help=f"{where}: the QR unit set: householder (paper A's, one DATAFLOW "
+                            "region per reflection; the default) or stream (n_u reflection "
+                            "stages the matrix streams through)")
 
 
 def spec_args(p: argparse.ArgumentParser, json_help: str | None) -> None:

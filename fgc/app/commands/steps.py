@@ -98,25 +98,26 @@ def implied_precision(args, default: str) -> str:
 
 def hls_config(args, program):
     """The HLS backend's config: --scalar (default: the Program's precision) and the design's
-    options (``HlsConfig.design``) from --part, --clock, --allocation and --unit-sets (one
-    clock for the cost model and run_hls.tcl: ``clock_ns`` is ``1000 / SolverConfig.clock_mhz``;
-    ``DesignOptions.check`` checks them)."""
+    options (``HlsConfig.design``) from --part, --clock, --allocation, --unit-sets and
+    --qr-unit (one clock for the cost model and run_hls.tcl: ``clock_ns`` is
+    ``1000 / SolverConfig.clock_mhz``; ``DesignOptions.check`` checks them)."""
     hls = load_backend("hls")
     clock = getattr(args, "clock", None)
     design = hls.DesignOptions(**{
         name: value for name, value in (
             ("part", getattr(args, "part", None)), ("clock_ns", clock[1] if clock else None),
             ("allocation", getattr(args, "allocation", None)),
-            ("unit_sets", getattr(args, "unit_sets", None))) if value})
+            ("unit_sets", getattr(args, "unit_sets", None)),
+            ("qr_unit", getattr(args, "qr_unit", None))) if value})
     return hls.HlsConfig(scalar=getattr(args, "scalar", None) or c_scalar(program),
                          design=design)
 
 
 def plan_options(args, program):
     """The accelerator plan's options for the design ``fgc compile --backend hls`` emits with
-    the same --scalar, --part, --clock, --allocation and --unit-sets (what ``fgc simulate`` and
-    ``fgc report`` price). A fixed-point --scalar is refused: the dataflow design has no
-    fixed-point units and the plan no fixed-point operator table."""
+    the same --scalar, --part, --clock, --allocation, --unit-sets and --qr-unit (what
+    ``fgc simulate`` and ``fgc report`` price). A fixed-point --scalar is refused: the dataflow
+    design has no fixed-point units and the plan no fixed-point operator table."""
     config = hls_config(args, program)
     config.check(program)
     if config.is_fixed_point:
@@ -127,8 +128,9 @@ def plan_options(args, program):
 
 
 def refuse_hls_design(args, backend: str) -> None:
-    """--allocation and --unit-sets shape the HLS design: other backends have no such thing."""
-    for flag in ("allocation", "unit_sets"):
+    """--allocation, --unit-sets and --qr-unit shape the HLS design: other backends have no
+    such thing."""
+    for flag in ("allocation", "unit_sets", "qr_unit"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc {args.command}: --{flag.replace('_', '-')} applies to "
                              f"--backend hls only (not {backend})")
