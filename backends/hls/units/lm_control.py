@@ -77,9 +77,8 @@ def build(ctx) -> None:
     # multiply-add a cycle; the step test: three; the gradient maximum: a compare), the
     # scalar decision sequential (one of each kind it uses); the rounding-noise pass per block
     # type (each noise_<b> calls rounding_noise<…>: its own module): a row every padded
-    # cycles through its padded products and moved's three adds, then the rows' terms, and
-    # noise_<b>'s running sum
-    la = ctx.ops.add.latency
+    # cycles through its padded products and moved's three adds, then the rows' terms (at II
+    # 3·TILE: one multiplier and one adder), and noise_<b>'s running sum
     loops = [BoundLoop("x_norm", (("add", 1), ("mul", 1)), 1),
              BoundLoop("step_test", (("add", 3), ("mul", 3)), 1),
              BoundLoop("gradient_max", (("compare", 1),), 1),
@@ -88,7 +87,8 @@ def build(ctx) -> None:
         padded = _block_shape(b)[2]
         loops += [BoundLoop(f"noise_rows_{i}", (("add", padded + 3), ("mul", padded + 1)),
                             padded),
-                  BoundLoop(f"noise_terms_{i}", (("add", 2 * TILE), ("mul", 3 * TILE)), la),
+                  BoundLoop(f"noise_terms_{i}", (("add", 2 * TILE), ("mul", 3 * TILE)),
+                            timing["acc2"][0]),
                   BoundLoop(f"noise_sum_{i}", (("add", 1),), 0)]
     ctx.units.append(bound_unit("lm_control", "gain ratio, μ update, stopping rules, "
                                 "rounding noise", loops, table=ctx.ops))

@@ -2441,7 +2441,7 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
     for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
-#pragma HLS PIPELINE II=4
+#pragma HLS PIPELINE II=12
         for (int t = 0; t < TILE; ++t) {
             if (r0 + t < ROWS) {
                 const T m = moved[r0 + t];
@@ -2581,7 +2581,7 @@ T noise_0(T noise) {
         FGC_CYCLES("noise_0", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 8, 1, 1);
         FGC_CYCLES("noise_0", 0, "rows", 6, 8, 22);
-        FGC_CYCLES("noise_0", 0, "terms", 2, 4, 14);
+        FGC_CYCLES("noise_0", 0, "terms", 2, 12, 25);
     }
     return noise;
 }
@@ -2683,7 +2683,7 @@ T noise_1(T noise) {
         FGC_CYCLES("noise_1", 0, "load", 6, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 4, 1, 1);
         FGC_CYCLES("noise_1", 0, "rows", 3, 4, 18);
-        FGC_CYCLES("noise_1", 0, "terms", 1, 4, 14);
+        FGC_CYCLES("noise_1", 0, "terms", 1, 12, 25);
     }
     return noise;
 }
@@ -2785,7 +2785,7 @@ T noise_2(T noise) {
         FGC_CYCLES("noise_2", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_2", 0, "scales", 8, 1, 1);
         FGC_CYCLES("noise_2", 0, "rows", 6, 8, 22);
-        FGC_CYCLES("noise_2", 0, "terms", 2, 4, 14);
+        FGC_CYCLES("noise_2", 0, "terms", 2, 12, 25);
     }
     return noise;
 }
@@ -3137,7 +3137,7 @@ T noise_3(T noise) {
         FGC_CYCLES("noise_3", 0, "load", 336, 1, 2);
         FGC_CYCLES("noise_3", 0, "scales", 32, 1, 1);
         FGC_CYCLES("noise_3", 0, "rows", 21, 32, 46);
-        FGC_CYCLES("noise_3", 0, "terms", 6, 4, 14);
+        FGC_CYCLES("noise_3", 0, "terms", 6, 12, 25);
     }
     return noise;
 }
@@ -3240,7 +3240,7 @@ T noise_4(T noise) {
         FGC_CYCLES("noise_4", 0, "load", 12, 1, 2);
         FGC_CYCLES("noise_4", 0, "scales", 8, 1, 1);
         FGC_CYCLES("noise_4", 0, "rows", 3, 8, 22);
-        FGC_CYCLES("noise_4", 0, "terms", 1, 4, 14);
+        FGC_CYCLES("noise_4", 0, "terms", 1, 12, 25);
     }
     return noise;
 }
