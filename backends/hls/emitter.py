@@ -168,12 +168,12 @@ def _allocation(unit, scalar_cxx: str, text: str) -> tuple[tuple[str, int], ...]
 class _AccelBlock:
     """A block's template context plus what the plan says about its datapath."""
 
-    def __init__(self, block, allocation, jacobian, cost, noise_row_depth: int):
+    def __init__(self, block, allocation, jacobian, cost, noise_rows):
         self._block = block
         self.allocation, self.allocation_cost = allocation  # factor_<b>, factor_cost_<b>
         self.ii_jacobian, self.depth_jacobian = jacobian.ii, jacobian.depth
         self.ii_cost, self.depth_cost = cost.ii, cost.depth
-        self.noise_row_depth = noise_row_depth
+        self.noise_row_ii, self.noise_row_depth = noise_rows.ii, noise_rows.depth
 
     def __getattr__(self, name):
         return getattr(self._block, name)
@@ -196,7 +196,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     phase = {ph.name: ph for ph in plan.phases}
     loops = {p.name: p.loops[0] for name in ("factor_jacobian", "factor_cost")
              for p in phase[name].processes}
-    noise = {p.name: p.loops[2].depth for p in phase["rounding_noise"].processes
+    noise = {p.name: p.loops[2] for p in phase["rounding_noise"].processes
              if p.name.startswith("noise_")}
     blocks = []
     # factor_<b>'s ALLOCATION limits (the plan's unit is what Vitis binds around them)

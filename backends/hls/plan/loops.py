@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from fgc.ir.codes import NOISE_CODES
-from fgc_backends.cfamily.sparsity import block_pattern
+from fgc_backends.cfamily.sparsity import TILE, block_pattern
 from fgc_backends.cfamily.tables import build_tables
 from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.cost.params import view
@@ -76,7 +76,9 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
     - ``acc``: a sum of products into one accumulator: the recurrence through the adder sets
       II = add latency, depth multiply + add (interleaved into partial sums by
       :func:`kernel_dot`); ``acc2``: a term through two multiply-adds before its sum (the
-      rounding-noise pass's terms), depth 2 (multiply + add);
+      rounding-noise pass's terms): II 3·TILE (at least the add latency), so TILE rows' three
+      products and two adds each share one multiplier and one adder (the rejected step's pass
+      is rare: operators there do not pay), depth 2 (multiply + add) after the last product;
     - ``scatter``: ``+=`` into a table-addressed memory where every iteration of the loop has
       its own address (II 1, depth read + add + write);
     - ``max``: a running maximum (compare and select: II = compare latency, depth + 2 for the
@@ -88,7 +90,8 @@ def kernel_timing(ops: OperatorTable) -> dict[str, tuple[int, int]]:
       :func:`retract_datapath`).
     """
     la, lm, lc = ops.add.latency, ops.mul.latency, ops.compare.latency
-    return {"move": (1, 2), "fill": (1, 1), "acc": (la, lm + la), "acc2": (la, 2 * (lm + la)),
+    return {"move": (1, 2), "fill": (1, 1), "acc": (la, lm + la),
+            "acc2": (max(la, 3 * TILE), 3 * TILE - 1 + 2 * (lm + la)),
             "scatter": (1, la + 2), "max": (lc, lc + 2),
             "root": (1, ops.sqrt.latency), "div": (ops.div.latency, ops.div.latency),
             "decision": (1, ops.div.latency + 2 * lm + 2 * la + lc),

@@ -44,21 +44,22 @@ def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict) -> Phase:
 def rounding_noise_loops(program, timing: dict) -> list[Process]:
     """rounding_noise_all(): each variable's largest storage entry, then per instance its rows
     loaded (:data:`PORTS` words a cycle), the column scales, the rows' moved terms (a row every
-    padded cycles: its TILE partial sums share two multipliers and two adders) and their sum (TILE
-    rows a step into TILE partial sums)."""
+    padded + 3 cycles: its padded + 1 products share one multiplier, its padded + 3 adds one
+    adder) and their sum (TILE rows a step into TILE partial sums)."""
     la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
     procs = [Process("variable_scale", "lm_control", tuple(
         kernel_loop("scale", v.storage_dim, "max", timing) for v in program.variables))]
     for i, b in enumerate(program.blocks):
         m, _, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
-        # a row every `padded` cycles through two multipliers and two adders: its last
+        # a row every padded + 3 cycles through one multiplier and one adder: its last
         # product issues by then, its chain of padded / TILE adds and the fold follow
-        row_depth = max(2 * lm + la * (padded // TILE + 2), padded + 2 * lm + 2 * la)
+        row_ii = padded + 3
+        row_depth = max(2 * lm + la * (padded // TILE + 2), row_ii + 2 * lm + 2 * la)
         procs.append(Process(f"noise_{i}", "lm_control", (
             kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("scales", padded, "fill", timing, n),
-            Loop("rows", m, padded, row_depth, n),
+            Loop("rows", m, row_ii, row_depth, n),
             kernel_loop("terms", -(-m // TILE), "acc2", timing, n))))
     return procs
 
@@ -76,10 +77,9 @@ def build(ctx) -> None:
     # its operators as Vitis binds them (plan.binding): each pipelined loop its own (|x|²: a
     # multiply-add a cycle; the step test: three; the gradient maximum: a compare), the
     # scalar decision sequential (one of each kind it uses); the rounding-noise pass per block
-    # type (each noise_<b> calls rounding_noise<…>: its own module): a row every padded
-    # cycles through its padded products and moved's three adds, then the rows' terms, and
-    # noise_<b>'s running sum
-    la = ctx.ops.add.latency
+    # type (each noise_<b> calls rounding_noise<…>: its own module): a row every padded + 3
+    # cycles through its padded products and moved's three adds, then the rows' terms (at II
+    # 3·TILE: one multiplier and one adder), and noise_<b>'s running sum
     loops = [BoundLoop("x_norm", (("add", 1), ("mul", 1)), 1),
              BoundLoop("step_test", (("add", 3), ("mul", 3)), 1),
              BoundLoop("gradient_max", (("compare", 1),), 1),
@@ -87,8 +87,9 @@ def build(ctx) -> None:
     for i, b in enumerate(program.blocks):  # noise_<b>'s call: its own instance
         padded = _block_shape(b)[2]
         loops += [BoundLoop(f"noise_rows_{i}", (("add", padded + 3), ("mul", padded + 1)),
-                            padded),
-                  BoundLoop(f"noise_terms_{i}", (("add", 2 * TILE), ("mul", 3 * TILE)), la),
+                            padded + 3),
+                  BoundLoop(f"noise_terms_{i}", (("add", 2 * TILE), ("mul", 3 * TILE)),
+                            timing["acc2"][0]),
                   BoundLoop(f"noise_sum_{i}", (("add", 1),), 0)]
     ctx.units.append(bound_unit("lm_control", "gain ratio, μ update, stopping rules, "
                                 "rounding noise", loops, table=ctx.ops))

@@ -2041,14 +2041,14 @@ void reweight(T ab[], T code, T k) {
 // The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
 // moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
 // |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
-// partial sums: a fixed order, and no chain from row to row. A row every STRIDE cycles: the
-// row's STRIDE products share two multipliers and two adders (the rejected step's pass is
-// rare: parallelism there does not pay).
-template <int STRIDE, int COLS, int ROWS>
+// partial sums: a fixed order, and no chain from row to row. A row every ROW_II = STRIDE + 3
+// cycles: the row's STRIDE + 1 products share one multiplier and its STRIDE + 3 adds one adder
+// (the rejected step's pass is rare: parallelism there does not pay).
+template <int STRIDE, int COLS, int ROWS, int ROW_II>
 T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T moved[ROWS], b_abs[ROWS];
     for (int r = 0; r < ROWS; ++r) {
-#pragma HLS PIPELINE II=STRIDE
+#pragma HLS PIPELINE II=ROW_II
         T part[TILE];
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
         for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
@@ -2060,7 +2060,7 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
     for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
-#pragma HLS PIPELINE II=4
+#pragma HLS PIPELINE II=12
         for (int t = 0; t < TILE; ++t) {
             if (r0 + t < ROWS) {
                 const T m = moved[r0 + t];
@@ -2490,11 +2490,11 @@ T noise_0(T noise) {
         for (int j = 0; j < 3; ++j) scale[15 + j] = VAR_SCALE[FACTOR_VARS[vb + 3]];
         for (int j = 0; j < 6; ++j) scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
         for (int j = 0; j < 6; ++j) scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
-        noise += rounding_noise<32, 31, 15>(ab, scale);
+        noise += rounding_noise<32, 31, 15, 35>(ab, scale);
         FGC_CYCLES("noise_0", 0, "load", 240, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 32, 1, 1);
-        FGC_CYCLES("noise_0", 0, "rows", 15, 32, 46);
-        FGC_CYCLES("noise_0", 0, "terms", 4, 4, 14);
+        FGC_CYCLES("noise_0", 0, "rows", 15, 35, 49);
+        FGC_CYCLES("noise_0", 0, "terms", 4, 12, 25);
     }
     return noise;
 }
@@ -2599,11 +2599,11 @@ T noise_1(T noise) {
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6>(ab, scale);
+        noise += rounding_noise<8, 7, 6, 11>(ab, scale);
         FGC_CYCLES("noise_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_1", 0, "rows", 6, 8, 22);
-        FGC_CYCLES("noise_1", 0, "terms", 2, 4, 14);
+        FGC_CYCLES("noise_1", 0, "rows", 6, 11, 25);
+        FGC_CYCLES("noise_1", 0, "terms", 2, 12, 25);
     }
     return noise;
 }
@@ -2708,11 +2708,11 @@ T noise_2(T noise) {
         T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
         for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<4, 4, 3>(ab, scale);
+        noise += rounding_noise<4, 4, 3, 7>(ab, scale);
         FGC_CYCLES("noise_2", 0, "load", 6, 1, 2);
         FGC_CYCLES("noise_2", 0, "scales", 4, 1, 1);
-        FGC_CYCLES("noise_2", 0, "rows", 3, 4, 18);
-        FGC_CYCLES("noise_2", 0, "terms", 1, 4, 14);
+        FGC_CYCLES("noise_2", 0, "rows", 3, 7, 21);
+        FGC_CYCLES("noise_2", 0, "terms", 1, 12, 25);
     }
     return noise;
 }
@@ -2817,11 +2817,11 @@ T noise_3(T noise) {
         T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6>(ab, scale);
+        noise += rounding_noise<8, 7, 6, 11>(ab, scale);
         FGC_CYCLES("noise_3", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_3", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_3", 0, "rows", 6, 8, 22);
-        FGC_CYCLES("noise_3", 0, "terms", 2, 4, 14);
+        FGC_CYCLES("noise_3", 0, "rows", 6, 11, 25);
+        FGC_CYCLES("noise_3", 0, "terms", 2, 12, 25);
     }
     return noise;
 }
