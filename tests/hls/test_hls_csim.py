@@ -253,6 +253,9 @@ def test_cycle_counting_csim_equals_the_model(linear, option):
     assert abs(counted / model - 1) <= 0.02, (counted, model)
 
 
+# heavy (about 40 s on 2 cores): tests/hls/test_units_qr_stream.py keeps the unit's results
+# (equal to fgc_qr.h's) and its counted cycles (equal to its price) in the default run
+@pytest.mark.heavy
 def test_the_streaming_qr_unit_matches_the_simulator_and_counts_its_price(tmp_path):
     """--qr-unit stream (fgc_qr_stream.h): the C simulation of LIO (LM, double, 3 reflection
     stages a pass, two unit sets) equals the simulator within 1e-9, and a Gauss-Newton float
