@@ -282,6 +282,7 @@ def test_cli_stream_hls_cholesky_prices_the_host_kept_path(capsys):
     assert "ms assumed (model estimate" in text and NOT_EMITTED in text
 
 
+@pytest.mark.heavy  # the host-kept Cholesky CLI stream above keeps the CLI path in the default run
 def test_cli_stream_hls_fixed_lag_cholesky(capsys):
     rc = main(["stream", LIO, "-p", "N=5", "--window", "2", "--backend", "hls", "--model-only",
                "--linear", "cholesky", "--cpe", "5"])

@@ -171,6 +171,7 @@ def lio8_paper_a():
     return graph, program, stream, stream.run(data)
 
 
+@pytest.mark.heavy  # test_hls_window holds the on-chip incremental design to ISAM2 by default
 def test_hls_csim_incremental_agrees_with_isam2_after_every_keyframe(lio8_paper_a):
     """Every variable after every keyframe of the C simulation's incremental stream within
     1e-6 of gtsam.ISAM2 run with the same policy (older keyframes held, factors across the
