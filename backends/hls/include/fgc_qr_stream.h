@@ -50,6 +50,7 @@
 #include <cmath>
 
 #include "fgc_cycles.h"
+#include "fgc_qr.h"
 #include "hls_stream.h"
 
 #ifdef FGC_COUNT_CYCLES
@@ -72,11 +73,6 @@
 #endif
 
 namespace fgc_units {
-
-template <class T>
-inline T qrs_abs(T x) {
-    return x < T(0) ? T(-x) : x;
-}
 
 // Columns j0 ... cols - 1, rows j0 ... rows - 1 of the banks into stage 0, one column a loop
 // (column j0 to its Evaluate, the others to its dot process): trip rows - j0, II 1, depth 2.
@@ -360,7 +356,7 @@ void qrs_collect(int j0, int n, int rows, int f, int s,
             } else if (j - f < nf) {
                 update[(j - f) * (s + 1) + (c - f)] = x;
             }
-            const T mag = qrs_abs(x);
+            const T mag = qr_abs(x);
             big = mag > big ? mag : big;
         }
         QRS_CYCLES("qrs_collect", 0, "row", j, cols - first, 1, 2);
@@ -494,7 +490,7 @@ void qrs_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
-        if (i >= k || !(qrs_abs(cond[i * cols + i]) > CFG::SINGULAR_EPS * scale)) bad = true;
+        if (i >= k || !(qr_abs(cond[i * cols + i]) > CFG::SINGULAR_EPS * scale)) bad = true;
     }
     FGC_CYCLES("qrs_step", 0, "pivot_check", f, 1, 2);
     *singular = bad;
