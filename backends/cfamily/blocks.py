@@ -98,12 +98,32 @@ def block_contexts(program: Program, vector: bool = True) -> tuple[BlockContext,
         instances = tuple(j for j, f in enumerate(program.factors) if f.block == b)
         first = program.factors[instances[0]]
         storage = [program.variables[index[k]].storage_dim for k in first.keys]
-        out.append(_block(b, block, storage, instances, vector))
+        out.append(_block(b, block, tuple(storage), instances, vector))
     return tuple(out)
 
 
-def _block(b: int, block: BlockSpec, storage: list[int], instances: tuple[int, ...],
-           vector: bool = True):
+# One context per distinct block: printing its kernel and checking its sparsity is most of an
+# emit's time, and an emit asks twice (the shared context and the accelerator plan), a test
+# module many times over. The key holds every BlockSpec field _build_block reads (the op-count
+# dicts it does not read are unhashable); the context is frozen.
+_BLOCKS: dict[tuple, BlockContext] = {}
+
+
+def _block(b: int, block: BlockSpec, storage: tuple[int, ...], instances: tuple[int, ...],
+           vector: bool = True) -> BlockContext:
+    key = (b, block.name, block.variable_types, block.variable_dims, block.members,
+           block.residual_dim, block.structure, block.kernel, block.cost_kernel, storage,
+           instances, vector)
+    hit = _BLOCKS.get(key)
+    if hit is None:
+        if len(_BLOCKS) >= 256:
+            _BLOCKS.clear()
+        hit = _BLOCKS[key] = _build_block(b, block, storage, instances, vector)
+    return hit
+
+
+def _build_block(b: int, block: BlockSpec, storage: tuple[int, ...],
+                 instances: tuple[int, ...], vector: bool) -> BlockContext:
     variables, pos, col = [], 0, 0
     for k, (s, dim) in enumerate(zip(storage, block.variable_dims, strict=True)):
         variables.append(VarSlot(k, s, pos, dim, col))

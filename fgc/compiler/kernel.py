@@ -11,6 +11,7 @@ module of the papers).
 
 from __future__ import annotations
 
+import functools
 import keyword
 from collections import Counter
 from dataclasses import dataclass
@@ -32,12 +33,7 @@ class Kernel:
 
     def op_counts(self) -> dict[str, int]:
         """Operations by kind (add, mul, div, sqrt, trig, special) over the whole kernel."""
-        counts: Counter = Counter()
-        for _, e in self.assignments:
-            _count_ops(e, counts)
-        for e in self.outputs:
-            _count_ops(e, counts)
-        return {k: counts.get(k, 0) for k in OP_KINDS}
+        return dict(_op_counts(self))  # a copy: callers may change theirs
 
     def op_counts_unshared(self) -> dict[str, int]:
         """Operations if nothing were shared: every intermediate recomputed at each use, i.e.
@@ -52,6 +48,17 @@ class Kernel:
 
 
 OP_KINDS = ("add", "mul", "div", "sqrt", "trig", "special")
+
+
+@functools.lru_cache(maxsize=512)
+def _op_counts(kernel: Kernel) -> tuple[tuple[str, int], ...]:
+    """Counted once per kernel (the plan and the reports ask for the same kernels' counts)."""
+    counts: Counter = Counter()
+    for _, e in kernel.assignments:
+        _count_ops(e, counts)
+    for e in kernel.outputs:
+        _count_ops(e, counts)
+    return tuple((k, counts.get(k, 0)) for k in OP_KINDS)
 
 
 def _tree_counts(expr: sp.Expr, inlined: dict) -> Counter:
