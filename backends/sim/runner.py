@@ -21,6 +21,7 @@ from fgc.ir import conditioning, frame
 from fgc.ir.datafile import ProblemData, check_structure, read_data, write_data
 from fgc.ir.program import Program
 from fgc.ir.result import SolveResult
+from fgc.ir.stream import FixedLag, Incremental, Policy, policy_dict
 
 from .config import SimConfig
 from .emitter import RESULT_FORMAT, emit
@@ -82,23 +83,22 @@ class SimResult(SolveResult):
 
 def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | None = None,
         precision: str | None = None, config: SimConfig | None = None,
-        in_process: bool = True, incremental: bool = False, window: int | None = None,
-        progress=None) -> SimResult:
+        in_process: bool = True, policy: Policy | None = None, progress=None) -> SimResult:
     """Emit ``program``'s simulator into ``out_dir`` (a temporary directory if None), run it on
     ``data`` (a ProblemData, written next to it as ``data.txt``, or a data file path) in this
     process (or as a subprocess) and read its result. ``precision`` overrides the Program's;
-    ``incremental`` runs keyframe by keyframe along the Program's incremental plan; ``window``
-    keyframe by keyframe in a fixed-lag window of that many keyframes (the oldest marginalised
-    into a prior; a chain Program, no incremental plan needed). ``progress`` (in process only)
-    is called with each keyframe's raw update record as it completes.
+    ``policy`` (:mod:`fgc.ir.stream`) runs keyframe by keyframe: :class:`Incremental` along
+    the Program's incremental plan, :class:`FixedLag` in a fixed-lag window of that many
+    keyframes (the oldest marginalised into a prior; a chain Program, no incremental plan
+    needed); the emitted simulator reads it as plain data (:func:`policy_dict`). ``progress``
+    (in process only) is called with each keyframe's raw update record as it completes.
 
     Raises DataError when the data does not fit the Program (naming the line and factor), or
     were laid out for another structure (naming both structure fingerprints).
     """
     if out_dir is None:
         with tempfile.TemporaryDirectory(prefix="fgc-sim-") as tmp:
-            return run(program, data, tmp, precision, config, in_process, incremental, window,
-                       progress)
+            return run(program, data, tmp, precision, config, in_process, policy, progress)
     out = Path(out_dir)
     files = tuple(emit(program, out, config))
     if isinstance(data, ProblemData):
@@ -108,21 +108,19 @@ def run(program: Program, data: ProblemData | str | Path, out_dir: str | Path | 
     else:
         data_path = Path(data)
     result_path = out / "result.json"
-    if incremental and program.schedule.incremental is None:
-        raise FgcError("the Program has no incremental plan (compile with incremental_k)")
-    _check_window(program, incremental, window)
+    _check_policy(program, policy)
+    emitted = None if policy is None else policy_dict(policy)
     if in_process:
-        raw = _run_in_process(program, files[0], data_path, result_path, precision,
-                              incremental, window, progress)
+        raw = _run_in_process(program, files[0], data_path, result_path, precision, emitted,
+                              progress)
     else:
-        raw = _run_subprocess(files[0], data_path, result_path, precision, incremental, window)
+        raw = _run_subprocess(files[0], data_path, result_path, precision, emitted)
         if raw["status"] == "data_error":
             error = DataError(raw["message"])
             error.factor, error.variable = raw["factor"], raw["variable"]
             raise DataError(_explain(program, error))
     result = _result(program, raw, files, config or SimConfig())
-    if result.precision != "float64" and result.status == "converged" and not incremental \
-            and window is None:
+    if result.precision != "float64" and result.status == "converged" and policy is None:
         result = _judge_distance(program, data if isinstance(data, ProblemData) else
                                  read_data(data_path), result, config, out)
     return result
@@ -259,15 +257,19 @@ def _factor_rows(program: Program, abs_: list[np.ndarray], wanted: set[int] | No
     return out
 
 
-def _check_window(program: Program, incremental: bool, window: int | None) -> None:
-    """A fixed-lag window needs a chain of keyframes and excludes the incremental plan."""
-    if window is None:
+def _check_policy(program: Program, policy: Policy | None) -> None:
+    """An incremental policy needs the Program's incremental plan; a fixed-lag window a chain
+    of keyframes whose factors each fit in the window."""
+    if policy is None:
         return
-    if incremental:
-        raise FgcError("choose either the incremental plan or a fixed-lag window, not both")
-    if isinstance(window, bool) or not isinstance(window, int) or window < 1:
-        raise FgcError(f"the fixed-lag window must be a positive number of keyframes, "
-                       f"got {window!r}")
+    if not isinstance(policy, FixedLag | Incremental):
+        raise FgcError(f"the simulator runs the streaming policies of fgc.ir.stream, got "
+                       f"{type(policy).__name__}")
+    if isinstance(policy, Incremental):
+        if program.schedule.incremental is None:
+            raise FgcError("the Program has no incremental plan (compile with incremental_k)")
+        return
+    window = policy.window
     if program.schedule.structure_class != "chain":
         raise FgcError(f"a fixed-lag window needs a chain of keyframes; '{program.name}' is a "
                        f"{program.schedule.structure_class} graph")
@@ -281,25 +283,21 @@ def _check_window(program: Program, incremental: bool, window: int | None) -> No
 
 
 def _run_in_process(program: Program, module: Path, data: Path, result: Path,
-                    precision: str | None, incremental: bool, window: int | None = None,
-                    progress=None) -> dict:
+                    precision: str | None, policy: dict | None = None, progress=None) -> dict:
     namespace = runpy.run_path(str(module), run_name="fgc_sim_problem")
     try:
-        return namespace["run"](str(data), str(result), precision, incremental, window,
-                                progress)
+        return namespace["run"](str(data), str(result), precision, policy, progress)
     except namespace["LIB"].runtime.SimDataError as exc:
         raise DataError(_explain(program, exc)) from None
 
 
 def _run_subprocess(module: Path, data: Path, result: Path, precision: str | None,
-                    incremental: bool, window: int | None = None) -> dict:
+                    policy: dict | None = None) -> dict:
     cmd = [sys.executable, str(module), str(data), str(result)]
     if precision:
         cmd += ["--precision", precision]
-    if incremental:
-        cmd.append("--incremental")
-    if window is not None:
-        cmd += ["--window", str(window)]
+    if policy is not None:
+        cmd += ["--policy", json.dumps(policy)]
     result.unlink(missing_ok=True)
     proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
     if proc.returncode not in (0, 1, 2) or not result.is_file():

@@ -25,7 +25,7 @@ class SimStream:
         called: the simulator compiles no template window)."""
         sp = self.sp
         return run(sp.program, data, precision=self.precision, config=self.config,
-                   incremental=sp.incremental, window=sp.window, progress=progress)
+                   policy=sp.policy, progress=progress)
 
 
 def stream(sp: StreamProgram, config: SimConfig | None = None,

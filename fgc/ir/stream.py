@@ -15,7 +15,7 @@ its update loop in each backend's ``stream``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from typing import ClassVar
 
 from fgc.errors import FgcError
@@ -52,6 +52,12 @@ class Incremental:
 
 
 Policy = FixedLag | Incremental
+
+
+def policy_dict(policy: Policy) -> dict:
+    """``policy`` as plain data (its ``mode`` and fields: ``{"mode": "fixed-lag", "window": 3}``):
+    what the emitted simulator, which runs without fgc, reads."""
+    return {"mode": policy.mode, **asdict(policy)}
 
 
 @dataclass(frozen=True)

@@ -22,6 +22,7 @@ from fgc.errors import FgcError
 from fgc.frontend.factors import BetweenFactor, PriorFactor
 from fgc.frontend.geometry import Point2, Pose2
 from fgc.ir.datafile import problem_data, write_data
+from fgc.ir.stream import Incremental
 from fgc_backends import sim
 
 ODD = ['q"); open("PWNED", "w")  # ', "t'''\n", "back\\slash", "new\nline", "ключ 漢",
@@ -107,7 +108,8 @@ def test_incremental_updates_are_keyed(tmp_path):
     keys = [0, 1, 2, 3, 4, 5]
     graph = _chain(keys)
     program = compile_graph(graph, fgc.ir.program.SolverConfig(incremental_k=2))
-    result = sim.run(program, problem_data(graph, program), tmp_path, incremental=True)
+    result = sim.run(program, problem_data(graph, program), tmp_path,
+                     policy=Incremental(2))
     raw = json.loads((tmp_path / "result.json").read_text())
     first = raw["incremental"][0]["values"]
     assert first and all(type(v["key"]) is int for v in first.values())

@@ -28,6 +28,7 @@ from fgc.frontend.geometry import Point3, Pose2, Pose3, Rot2, Rot3, lie_closed_f
 from fgc.ir.conditioning import RankDeficientWarning
 from fgc.ir.datafile import problem_data, write_data
 from fgc.ir.program import SolverConfig
+from fgc.ir.stream import FixedLag, Incremental
 from fgc_backends import load, sim
 from fgc_backends.sim import types as sim_types
 from fgc_backends.sim.printer import SimPrinter
@@ -447,7 +448,7 @@ def test_incremental_is_exact_on_a_linear_chain(window):
     g = _point_chain()
     program = compile_graph(g, SolverConfig(incremental_k=window, batch_every=4))
     data = problem_data(g, program)
-    inc = sim.run(program, data, incremental=True)
+    inc = sim.run(program, data, policy=Incremental(window, 4))
     batch = sim.run(program, data)
     assert inc.converged and [u["mode"] for u in inc.updates].count("batch") == 2
     assert len(inc.updates) == 10 and inc.updates[-1]["first"] == 10 - window
@@ -456,9 +457,25 @@ def test_incremental_is_exact_on_a_linear_chain(window):
     assert inc.final_error == pytest.approx(batch.final_error, rel=1e-12)
 
 
+def test_a_policy_reaches_the_simulator_run_as_a_subprocess_too(tmp_path):
+    """The policy object crosses into the emitted simulator as plain data (``--policy`` on
+    its command line): a fixed-lag and an incremental run in a subprocess give the in-process
+    run's updates, keyframe for keyframe (1e-12: the same arithmetic)."""
+    g = _point_chain()
+    program = compile_graph(g, SolverConfig(incremental_k=3))
+    data = problem_data(g, program)
+    for policy in (FixedLag(2), Incremental(3)):
+        here = sim.run(program, data, tmp_path / "a", policy=policy)
+        there = sim.run(program, data, tmp_path / "b", policy=policy, in_process=False)
+        assert [u["mode"] for u in there.updates] == [policy.mode] * 10
+        assert [u["first"] for u in there.updates] == [u["first"] for u in here.updates]
+        for key, value in here.storage.items():
+            np.testing.assert_allclose(there.storage[key], value, atol=1e-12)
+
+
 def test_incremental_needs_a_plan(pose3):
     with pytest.raises(fgc.FgcError, match="no incremental plan"):
-        sim.run(pose3[1], pose3[2], incremental=True)
+        sim.run(pose3[1], pose3[2], policy=Incremental(3))
 
 
 def _pose_chain(noise: float, n: int = 30) -> fgc.Graph:
@@ -488,7 +505,7 @@ def test_incremental_on_a_nonlinear_chain_approaches_batch_as_the_window_grows()
     gaps = []
     for window in (3, 6):
         program = compile_graph(g, SolverConfig(incremental_k=window))
-        inc = sim.run(program, problem_data(g, program), incremental=True)
+        inc = sim.run(program, problem_data(g, program), policy=Incremental(window))
         assert inc.converged
         gaps.append(max(np.linalg.norm(batch.values[k].local(v)) for k, v in inc.values.items()))
     assert gaps[0] < 2e-3 and gaps[1] < gaps[0]

@@ -22,6 +22,7 @@ from fgc.interop.to_gtsam import to_gtsam, value_to_gtsam, values_from_gtsam
 from fgc.ir.conditioning import IllConditionedWarning
 from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
+from fgc.ir.stream import Incremental
 from fgc_backends import sim
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -311,7 +312,8 @@ def test_incremental_imu_window_matches_isam2_and_batch(imu20):
     window-of-3 smoother (batch steps at 5 and 15) and an iterated ISAM2 both end at the batch
     optimum; agreement 1e-6 (measured ≈1e-9 between the two, ≈6e-8 to GTSAM's LM)."""
     program = compile_graph(imu20.graph, SolverConfig(incremental_k=3, batch_every=(5, 15)))
-    result = sim.run(program, problem_data(imu20.graph, program), incremental=True)
+    result = sim.run(program, problem_data(imu20.graph, program),
+                     policy=Incremental(3, (5, 15)))
     assert result.converged and len(result.updates) == 20
     values = imu20.by_graph_key(result)
     isam = isam2_keyframe_by_keyframe(imu20, program.schedule.clusters, extra_updates=5)
@@ -339,7 +341,8 @@ def test_incremental_lio_matches_isam2_after_every_keyframe(lio30):
     variable) is the batch optimum of the graph so far: the window's kept linearisation differs
     from it by up to 1.3e-2, so this comparison would catch a change of policy."""
     program = compile_graph(lio30.graph, SolverConfig(incremental_k=3, batch_every=(5, 15, 25)))
-    result = sim.run(program, problem_data(lio30.graph, program), incremental=True)
+    result = sim.run(program, problem_data(lio30.graph, program),
+                     policy=Incremental(3, program.solver.batch_every))
     assert result.converged and len(result.updates) == 30
     plan = program.schedule.incremental.updates
     windows = [(u["first"], u["mode"] == "batch") for u in result.updates]
@@ -384,7 +387,8 @@ def test_incremental_lio_with_a_final_batch_step_reaches_the_optimum(lio30):
     from the incremental estimate leaves ≈1e-4."""
     program = compile_graph(lio30.graph, SolverConfig(incremental_k=3,
                                                       batch_every=(5, 15, 25, 29)))
-    result = sim.run(program, problem_data(lio30.graph, program), incremental=True)
+    result = sim.run(program, problem_data(lio30.graph, program),
+                     policy=Incremental(3, program.solver.batch_every))
     assert result.converged and result.updates[-1]["mode"] == "batch"
     values = lio30.by_graph_key(result)
     assert max(np.linalg.norm(lio30.values[k].local(v)) for k, v in values.items()) <= 1e-3

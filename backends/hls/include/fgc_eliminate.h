@@ -10,18 +10,29 @@
 //   QR:       void qr_stack<CFG>(s, root_mu, bank)  the step's rows into a unit set's banks
 //             (its factors' [A | b], its children's new factors, sqrt(mu) I if CFG::LM).
 //             void qr_commit<CFG>(s, cond, update)  a unit set's result into COND and NF.
+//             bool qr_eliminate_all<CFG, SETS>(mu)  every step, level by level: a level's
+//             steps go CFG::UNIT_SETS at a time to the unit sets (stacked, the sets'
+//             DATAFLOW region, committed); false if rank deficient.
+//             bool qr_eliminate_leaf<CFG, SETS>(s)  step s once more at mu = 0 on unit set 0
+//             (the on-chip window's marginalisation); false if rank deficient.
 //
-// The unit-set wiring (qr_set<u>, qr_level, eliminate_all; a level's steps side by side) is the
-// kernel's: it depends on the number of unit sets.
+// The unit-set wiring stays the kernel's (it depends on the number of unit sets: each set its
+// own memories and RTL instance): SETS holds its hooks, static functions the kernel defines
+// after its qr_set<u> and qr_level -
+//   SETS::stack(u, s, root_mu)   qr_stack<CFG>(s, root_mu, WORK<u>)
+//   SETS::level(has, s, bad)     the qr_level region: set u takes step s[u] where has[u]
+//                                (else none), bad[u] set if rank deficient
+//   SETS::commit(u, s)           qr_commit<CFG>(s, CONDBUF<u>, UPDBUF<u>)
 //
 // Included by the kernel inside its namespace (fgc::, or fgc::les for the mixed design), after
 // its schedule tables and memories, which these functions name: STEP_W, STEP_F, STEP_ROWS,
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_NF_ROWS, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP,
-// FACTOR_A_OFF, FACTOR_GRAM_OFF, LEVEL_STEPS, N_STEPS (tables); AB, GRAM, COND, NF, PORTS and, for
-// Cholesky, HF (memories). CFG is the kernel's LesConfig: T (the linear
-// solver's scalar), the unit's sizes, LM, the tables' largest trip counts (MAX_STEP_FACTORS,
-// MAX_CHILDREN, TRIP_*) and the (II, depth) of the plan's fill, move and scatter loops; cycles
+// FACTOR_A_OFF, FACTOR_GRAM_OFF, LEVEL_STEPS, LEVEL_BEGIN, N_LEVELS, N_STEPS (tables); AB, GRAM,
+// COND, NF, PORTS, fgc_sqrt and, for Cholesky, HF (memories). CFG is the kernel's LesConfig: T
+// (the linear solver's scalar), the unit's sizes, LM, the tables' largest trip counts (MAX_STEP_FACTORS,
+// MAX_CHILDREN, TRIP_*) and the (II, depth) of the plan's fill, move and scatter loops (QR:
+// UNIT_SETS, MAX_LEVEL_WIDTH and the (II, depth) ROOT_II, ROOT_DEPTH of sqrt(mu) too); cycles
 // to FGC_CYCLES as the plan prices them. Define FGC_ELIMINATE_CHOLESKY or FGC_ELIMINATE_QR
 // first: the other solver's memories do not exist.
 #ifndef FGC_ELIMINATE_H
@@ -222,6 +233,74 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
     }
     FGC_CYCLES("commit", 0, "nf", (nu + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);
 }
+
+// Eliminate every step, level by level: a level's steps are independent, the unit sets take
+// them CFG::UNIT_SETS at a time (stack each, the sets' DATAFLOW region, commit each). False if
+// rank deficient.
+template <class CFG, class SETS>
+bool qr_eliminate_all(typename CFG::T mu) {
+    typedef typename CFG::T T;
+    FGC_EVENT("solve");
+    FGC_PHASE("qr_stack");
+    const T root_mu = fgc_sqrt(mu);
+    FGC_CYCLES("stack", 0, "root_mu", 1, CFG::ROOT_II, CFG::ROOT_DEPTH);
+    bool ok = true;
+    for (int l = 0; l < N_LEVELS; ++l) {
+        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += CFG::UNIT_SETS) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_LEVEL_WIDTH
+            bool has[CFG::UNIT_SETS], bad[CFG::UNIT_SETS];
+            int s[CFG::UNIT_SETS];
+#pragma HLS ARRAY_PARTITION variable=has complete
+#pragma HLS ARRAY_PARTITION variable=bad complete
+#pragma HLS ARRAY_PARTITION variable=s complete
+            for (int u = 0; u < CFG::UNIT_SETS; ++u) {  // set by set, as the sets' banks fill
+#pragma HLS UNROLL
+                has[u] = i + u < LEVEL_BEGIN[l + 1];
+                s[u] = has[u] ? LEVEL_STEPS[i + u] : 0;
+                if (has[u]) SETS::stack(u, s[u], root_mu);
+                bad[u] = false;
+            }
+            FGC_PHASE("qr");
+            SETS::level(has, s, bad);
+            FGC_JOIN();
+            for (int u = 0; u < CFG::UNIT_SETS; ++u) {
+#pragma HLS UNROLL
+                if (has[u]) {
+                    ok = ok && !bad[u];
+                    SETS::commit(u, s[u]);
+                }
+            }
+        }
+    }
+    return ok;
+}
+
+// The on-chip window's marginalisation: step s (slot 0's) once more, at mu = 0, on unit set 0
+// (the other sets idle); its conditional and the new factor it passes on into COND and NF.
+// False if rank deficient.
+template <class CFG, class SETS>
+bool qr_eliminate_leaf(int s) {
+    typedef typename CFG::T T;
+    FGC_EVENT("marginal_solve");
+    SETS::stack(0, s, T(0));
+    bool has[CFG::UNIT_SETS], bad[CFG::UNIT_SETS];
+    int st[CFG::UNIT_SETS];
+#pragma HLS ARRAY_PARTITION variable=has complete
+#pragma HLS ARRAY_PARTITION variable=bad complete
+#pragma HLS ARRAY_PARTITION variable=st complete
+    for (int u = 0; u < CFG::UNIT_SETS; ++u) {
+#pragma HLS UNROLL
+        has[u] = u == 0;
+        st[u] = u == 0 ? s : 0;
+        bad[u] = false;
+    }
+    FGC_PHASE("qr");
+    SETS::level(has, st, bad);
+    FGC_JOIN();
+    SETS::commit(0, s);
+    return !bad[0];
+}
 #endif  // FGC_ELIMINATE_QR
+
 
 #endif  // FGC_ELIMINATE_H

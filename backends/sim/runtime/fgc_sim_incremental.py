@@ -235,6 +235,22 @@ class Chain:
 # --------------------------------------------------------------------------------------------
 
 
+def solve_stream(problem, opts, optimize, policy, progress=None):
+    """Run the streaming ``policy`` (a dict: ``{"mode": "incremental"}``, the compiled plan, or
+    ``{"mode": "fixed-lag", "window": W}``) keyframe by keyframe; returns (x, status, reason,
+    per-update records). A new policy is one more mode here."""
+    mode = policy.get("mode")
+    if mode == "incremental":
+        if problem.spec["incremental"] is None:
+            raise ValueError("this problem was compiled without an incremental plan")
+        return solve_incremental(problem, opts, optimize, progress)
+    if mode == "fixed-lag":
+        if problem.spec["clusters"] is None:
+            raise ValueError("a fixed-lag window needs a chain of keyframes")
+        return solve_fixed_lag(problem, opts, optimize, policy["window"], progress)
+    raise ValueError(f"unknown streaming policy {policy!r}")
+
+
 def solve_incremental(problem, opts, optimize, progress=None):
     """Run every update of the plan; returns (x, status, reason, per-update records).
     ``progress`` (if given) is called with each update's record as soon as it is done."""

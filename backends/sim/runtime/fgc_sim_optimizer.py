@@ -303,34 +303,28 @@ def _step(problem, x, cost, lin, mu, opts, limits):
 # --------------------------------------------------------------------------------------------
 
 
-def solve(spec, data_path, result_path=None, precision=None, lib=None, incremental=False,
-          window=None, progress=None):
-    """Read ``data_path``, optimise (in one batch, keyframe by keyframe following the compiled
-    incremental plan, or keyframe by keyframe in a fixed-lag ``window`` of keyframes), write the
+def solve(spec, data_path, result_path=None, precision=None, lib=None, policy=None,
+          progress=None):
+    """Read ``data_path``, optimise (in one batch, or keyframe by keyframe under the streaming
+    ``policy``: a dict, see ``fgc_sim_incremental.solve_stream``), write the
     JSON result to ``result_path`` (if given) and return it as a dict (values: see
     ``keyed_values``). ``progress`` is called with each keyframe's update record as it
     completes (incremental and fixed-lag solves) or, in a batch solve, with each accepted
     iteration's record (iteration, error, lambda, relative_decrease)."""
     with lib.linear.one_blas_thread():  # small dense kernels: threads only wait (see there)
-        return _solve(spec, data_path, result_path, precision, lib, incremental, window,
-                      progress)
+        return _solve(spec, data_path, result_path, precision, lib, policy, progress)
 
 
-def _solve(spec, data_path, result_path, precision, lib, incremental, window, progress):
+def _solve(spec, data_path, result_path, precision, lib, policy, progress):
     opts = dict(spec["solver"])
     precision = precision or opts["precision"]
-    if incremental and spec["incremental"] is None:
-        raise ValueError("this problem was compiled without an incremental plan")
-    if window is not None and (incremental or spec["clusters"] is None):
-        raise ValueError("a fixed-lag window needs a chain of keyframes and no incremental plan")
     t0 = time.perf_counter()
     data = lib.runtime.read_data(data_path, spec["structure"])
     problem = Problem(spec, data, precision, lib)
-    if not incremental and window is None:
+    if policy is None:
         problem.on_iteration = progress
     t1 = time.perf_counter()
-    x, status, reason, it, mu, log, updates = _optimize_all(problem, opts, incremental, window,
-                                                            progress)
+    x, status, reason, it, mu, log, updates = _optimize_all(problem, opts, policy, progress)
     t2 = time.perf_counter()
     diagnosis = None  # rank and condition at the solution (batch solves)
     if updates is None and opts["diagnose"] and reason not in ("singular", "non_finite"):
@@ -371,18 +365,13 @@ def _solve(spec, data_path, result_path, precision, lib, incremental, window, pr
     return result
 
 
-def _optimize_all(problem, opts, incremental, window=None, progress=None):
+def _optimize_all(problem, opts, policy=None, progress=None):
     """(x, status, reason, iterations, μ, cost log, incremental updates or None)."""
-    if not incremental and window is None:
+    if policy is None:
         x, _, it, mu, status, reason, log = optimize(problem, opts)
         return x, status, reason, it, mu, log, None
-    lib = problem.lib
-    if window is not None:
-        x, status, reason, updates = lib.incremental.solve_fixed_lag(problem, opts, optimize,
-                                                                     window, progress)
-    else:
-        x, status, reason, updates = lib.incremental.solve_incremental(problem, opts, optimize,
-                                                                       progress)
+    x, status, reason, updates = problem.lib.incremental.solve_stream(problem, opts, optimize,
+                                                                      policy, progress)
     log = [float(problem.cost(problem.x0)), float(problem.cost(x))]
     return x, status, reason, sum(u["iterations"] for u in updates), 0.0, log, updates
 

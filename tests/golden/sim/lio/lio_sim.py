@@ -8,12 +8,13 @@ of 5 block types, a chain elimination schedule of 7 steps in
 file (fgc's run-time data format).
 
     python lio_sim.py DATA RESULT.json [--precision float32|float64]
-        [--incremental | --window W]
+        [--incremental | --window W | --policy JSON]
 """
 
 import argparse
 import hashlib
 import importlib.util
+import json
 import os
 import sys
 import types
@@ -3015,11 +3016,10 @@ PROBLEM = {
 }
 
 
-def run(data_path, result_path=None, precision=None, incremental=False, window=None,
-        progress=None):
+def run(data_path, result_path=None, precision=None, policy=None, progress=None):
     """Solve the problem in ``data_path``; see fgc_sim_optimizer.solve."""
-    return LIB.optimizer.solve(PROBLEM, data_path, result_path, precision, LIB, incremental,
-                               window, progress)
+    return LIB.optimizer.solve(PROBLEM, data_path, result_path, precision, LIB, policy,
+                               progress)
 
 
 def main(argv=None):
@@ -3032,9 +3032,17 @@ def main(argv=None):
     parser.add_argument("--window", type=int, metavar="W",
                         help="keyframe by keyframe in a fixed-lag window of W keyframes, the "
                              "keyframe leaving marginalised into a prior on the window")
+    parser.add_argument("--policy", type=json.loads, metavar="JSON",
+                        help="the streaming policy as a JSON object (what fgc passes: "
+                             '{"mode": "fixed-lag", "window": W} or {"mode": "incremental"})')
     args = parser.parse_args(argv)
+    policy = args.policy
+    if args.incremental:
+        policy = {"mode": "incremental"}
+    elif args.window is not None:
+        policy = {"mode": "fixed-lag", "window": args.window}
     try:
-        result = run(args.data, args.result, args.precision, args.incremental, args.window)
+        result = run(args.data, args.result, args.precision, policy)
     except LIB.runtime.SimDataError as exc:
         LIB.optimizer.write_error(args.result, exc)
         print(f"{os.path.basename(__file__)}: error: {exc}", file=sys.stderr)
