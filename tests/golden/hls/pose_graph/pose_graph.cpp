@@ -1501,7 +1501,7 @@ struct LesConfig {
 // memory; qr_step runs one DATAFLOW region per reflection (qr_broadcast, qr_finish -> 4 qr_update
 // units -> qr_evaluate, qr_collect; 17 streams) and stores the conditional and the new factor. A schedule
 // level's steps go 1 at a time to the unit sets, side by side in one DATAFLOW region.
-L WORK0[N_UNITS][MAX_ROWS][LOCAL_COLS];  // unit set 0's banks (partitioned in qr_set0)
+L WORK0[N_UNITS][MAX_ROWS][LOCAL_COLS];  // unit set 0's banks (partitioned by bank in eliminate_all)
 L CONDBUF0[MAX_F * LesConfig::MAX_COLS];  // its step's conditional
 L UPDBUF0[LesConfig::MAX_COLS * LesConfig::MAX_COLS];  // its step's new factor
 
@@ -1509,7 +1509,6 @@ L UPDBUF0[LesConfig::MAX_COLS * LesConfig::MAX_COLS];  // its step's new factor
 void qr_set0(int rows, int f, int s, L work[N_UNITS][MAX_ROWS][LOCAL_COLS],
              L cond[MAX_F * LesConfig::MAX_COLS], L update[LesConfig::MAX_COLS * LesConfig::MAX_COLS],
              bool* singular) {
-#pragma HLS ARRAY_PARTITION variable=work complete dim=1
     FGC_BRANCH();  // csim cycle counting only: the unit sets of a level run side by side
     fgc_units::qr_step<LesConfig>(work, rows, f, s, cond, update, singular);
 }
@@ -1530,6 +1529,9 @@ void qr_level(int rows0, int f0, int s0,
 // Eliminate every step, level by level: a level's steps are independent, the unit sets take
 // them 1 at a time (stack, the sets' DATAFLOW region, commit). False if rank deficient.
 bool eliminate_all(T mu) {
+    // each unit set's banks: the global itself partitioned (what qr_stack and the Update units
+    // read and write), one memory per bank, N_UNITS words a cycle
+#pragma HLS ARRAY_PARTITION variable=WORK0 complete dim=1
     FGC_EVENT("solve");
     FGC_PHASE("qr_stack");
     const T root_mu = fgc_sqrt(mu);
