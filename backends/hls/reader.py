@@ -210,7 +210,18 @@ class _Reader:
                                          tuple(re.findall(r"\[([^\]]*)\]", m.group(3))),
                                          m.group(2), "global")
                         for m in _GLOBAL.finditer(outside)}
-        self.global_banks = self._banks(outside, {})
+
+        def dims_of(name):
+            return self.globals[name].dims if name in self.globals else None
+
+        self.global_banks = self._banks(outside, {}, dims_of)
+        # a global partitioned inside a function (Vitis's place for a global's pragma): a
+        # pragma naming it where no parameter or local of that name hides it
+        for f in self.functions.values():
+            own = {p.name for p in f.params} | set(self._declarations(f.text))
+            for name, banks in self._banks(f.text, {}, dims_of).items():
+                if name in self.globals and name not in own:
+                    self.global_banks[name] = banks
         self.bindings = self._bindings()
         self.memo: dict[tuple, _Count] = {}
         self.flatten = True  # read a callee in place (off: a function's own operations)
@@ -239,8 +250,11 @@ class _Reader:
                     out.setdefault(d.group(1), (is_float, dims))
         return out
 
-    def _banks(self, code: str, env: dict[str, int]) -> dict[str, int | None]:
-        """array -> banks from the ARRAY_PARTITION pragmas in ``code`` (None: complete)."""
+    def _banks(self, code: str, env: dict[str, int], dims_of=None) -> dict[str, int | None]:
+        """array -> banks from the ARRAY_PARTITION pragmas in ``code`` (None: registers, a
+        complete partition of every dimension). ``complete dim=k`` (k >= 1) of an array of
+        more than one dimension gives as many banks as dimension k has (``dims_of``: name ->
+        its dimensions, when known)."""
         out: dict[str, int | None] = {}
         for m in _PRAGMA.finditer(code):
             words = m.group(1)
@@ -250,7 +264,13 @@ class _Reader:
             if not var:
                 continue
             if re.search(r"\bcomplete\b", words):
-                out[var.group(1)] = None
+                dim = re.search(r"\bdim\s*=\s*(\d+)", words)
+                dims = dims_of(var.group(1)) if dims_of else None
+                k = int(dim.group(1)) if dim else 0
+                if k >= 1 and dims and len(dims) > 1 and k <= len(dims):
+                    out[var.group(1)] = self._value(dims[k - 1], env)  # None: not known
+                else:
+                    out[var.group(1)] = None
             else:
                 factor = re.search(r"factor\s*=\s*(\w+)", words)
                 value = self._value(factor.group(1), env) if factor else None
@@ -644,6 +664,17 @@ class _Reader:
                 out[kind] = int(m.group(2))
         return out
 
+    def function_allocation(self, text: str, env: dict[str, int]) -> dict[str, int]:
+        """function name -> instances, from ``ALLOCATION function instances=<name> limit=<n>``
+        pragmas in ``text`` (a template's name with or without its arguments)."""
+        out = {}
+        for m in re.finditer(r"#\s*pragma\s+HLS\s+ALLOCATION\s+function\s+instances=([\w:]+)"
+                             r"\s*(?:<[^\n]*?>)?\s+limit=(\w+)", text, re.I):
+            limit = self._value(m.group(2), env)
+            if limit is not None and limit >= 0:
+                out[m.group(1).split("::")[-1]] = limit
+        return out
+
     # -- pipelined loops -------------------------------------------------------------------------
     def instantiations(self, f: _Function) -> list[dict[str, int]]:
         """The integer template arguments ``f`` is instantiated with (one binding per distinct
@@ -663,17 +694,25 @@ class _Reader:
     def loops(self) -> list[LoopReading]:
         out = []
         for f in self.functions.values():
-            code, (lo, hi) = f.code, f.body
-            for m in re.finditer(r"#\s*pragma\s+HLS\s+PIPELINE\b([^\n]*)", code[lo:hi], re.I):
-                if "off" in m.group(1).lower():
-                    continue
-                for env in self.instantiations(f):
-                    ii = re.search(r"II\s*=\s*(\w+)", m.group(1))
-                    value = self._value(ii.group(1), env) if ii else 1
-                    reading = self.loop(f, lo + m.start(), value or 1, env)
-                    if reading is not None:
-                        out.append(reading)
+            for env in self.instantiations(f):
+                out += self.loops_in(f, env)
         return sorted(out, key=lambda r: (r.file, r.line, r.template))
+
+    def loops_in(self, f: _Function, env: dict[str, int]) -> list[LoopReading]:
+        """The pipelined loops of ``f`` instantiated with the integer template arguments
+        ``env`` (those of ``f``'s own parameters are kept)."""
+        env = {k: v for k, v in env.items() if k in f.template_ints}
+        code, (lo, hi) = f.code, f.body
+        out = []
+        for m in re.finditer(r"#\s*pragma\s+HLS\s+PIPELINE\b([^\n]*)", code[lo:hi], re.I):
+            if "off" in m.group(1).lower():
+                continue
+            ii = re.search(r"II\s*=\s*(\w+)", m.group(1))
+            value = self._value(ii.group(1), env) if ii else 1
+            reading = self.loop(f, lo + m.start(), value or 1, env)
+            if reading is not None:
+                out.append(reading)
+        return out
 
     def loop(self, f: _Function, pragma: int, ii: int, template: dict[str, int]
              ) -> LoopReading | None:
@@ -722,8 +761,12 @@ class _Reader:
             for kind, n in ops.items():
                 need = math.ceil(n / ii)
                 instances[kind] += min(need, cap[kind]) if kind in cap else need
+        def dims_here(name):
+            var = scope.get(name) or self.globals.get(name)
+            return var.dims if var is not None else None
+
         banks_here = {scope[name].alias if name in scope else name: banks
-                      for name, banks in self._banks(f.text, {}).items()}
+                      for name, banks in self._banks(f.text, env, dims_here).items()}
         accesses, ii_ports = [], 1
         for array, n in sorted(count.accesses.items()):
             banks = banks_here.get(array, self.global_banks.get(array, 1))
@@ -790,7 +833,18 @@ class DesignReading:
 
 
 def _design(reader: _Reader, top: str) -> DesignReading:
-    loops = reader.loops()
+    # the pipelined loops of each function as the design instantiates it (a template reached
+    # through a struct's member, cpe_cascade<CFG, K>::run calling cpe<CFG, K>, with K bound
+    # there); the loops of functions the top never reaches as their own call sites bind them
+    readings: dict[tuple, list[LoopReading]] = {}
+
+    def loops_of(f: _Function, env: dict[str, int]) -> list[LoopReading]:
+        key = (f.file, f.start, tuple(sorted((k, v) for k, v in env.items()
+                                             if k in f.template_ints)))
+        if key not in readings:
+            readings[key] = reader.loops_in(f, env)
+        return readings[key]
+
     operators: Counter = Counter()
     modules: Counter = Counter()
     by_file: dict[str, Counter] = {}
@@ -815,13 +869,17 @@ def _design(reader: _Reader, top: str) -> DesignReading:
         for kind, n in own(f, env).items():
             operators[kind] += n * mult
             here[kind] += n * mult
-        for r in loops:
-            if r.function == f.name and r.file == f.file and dict(r.template) == {
-                    k: v for k, v in env.items() if k in f.template_ints}:
-                for kind, n in r.instances:
-                    operators[kind] += n * mult
-                    here[kind] += n * mult
+        for r in loops_of(f, env):
+            for kind, n in r.instances:
+                operators[kind] += n * mult
+                here[kind] += n * mult
+        # ALLOCATION function instances=g limit=n in f: f's call sites of g share n instances
+        shared = reader.function_allocation(f.text, env)
+        left = dict(shared)
         for callee, cenv, times in calls(f.text, env):
+            if callee.name in left:
+                times = min(times, left[callee.name])
+                left[callee.name] -= times
             visit(callee, cenv, mult * times, depth + 1)
 
     def calls(text: str, env: dict[str, int]):
@@ -854,6 +912,10 @@ def _design(reader: _Reader, top: str) -> DesignReading:
     if top not in reader.functions:
         raise KeyError(top)
     visit(reader.functions[top], {}, 1, 0)
+    reached = {(r.file, r.function) for rs in readings.values() for r in rs}
+    loops = sorted({*(r for rs in readings.values() for r in rs),
+                    *(r for r in reader.loops() if (r.file, r.function) not in reached)},
+                   key=lambda r: (r.file, r.line, r.template))
     return DesignReading(top, tuple(loops), tuple(sorted(operators.items())),
                          tuple(sorted(modules.items())),
                          tuple(sorted((file, tuple(sorted(c.items())))
@@ -890,7 +952,13 @@ def check(readings: Iterable[LoopReading]) -> list[LintIssue]:
                                     f"{', '.join(repr(x) for x in r.recurrence)} every "
                                     "iteration without 'DEPENDENCE inter false': II >= "
                                     f"{r.ii_recurrence}"))
-    return issues
+    # one issue per loop and rule (the instantiations of a template share the text)
+    seen, out = set(), []
+    for issue in issues:
+        if (issue.file, issue.line, issue.rule) not in seen:
+            seen.add((issue.file, issue.line, issue.rule))
+            out.append(issue)
+    return out
 
 
 def check_dsp(design: DesignReading, plan_dsp: int, dsp_of: dict[str, int],

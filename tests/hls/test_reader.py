@@ -151,7 +151,88 @@ void spread(const T a[N]) {
 """
     readings = {r.function: r for r in read_project([("s.cpp", text)], ADD_LATENCY)}
     assert readings["dot"].recurrence == ("sum",) and readings["dot"].ii_bound == ADD_LATENCY
-    assert readings["spread"].accesses == () and readings["spread"].ii_bound == 1
+    # complete dim=1 of a [4][N] array: four banks, one store each an iteration
+    assert readings["spread"].accesses == (("OUT", 4, 4),) and readings["spread"].ii_bound == 1
+
+
+def test_a_global_partitioned_in_a_function_and_a_shared_function():
+    """A global's ARRAY_PARTITION inside the function that uses it partitions the global
+    (not an alias), and ``ALLOCATION function instances=g limit=1`` makes two call sites of g
+    one RTL instance."""
+    text = """
+typedef float T;
+const int N = 64;
+T BANKS[4][N];
+void zero(T bank[4][N]) {
+    for (int i = 0; i < N; ++i) {
+#pragma HLS PIPELINE II=1
+        for (int u = 0; u < 4; ++u) bank[u][i] = T(0);
+    }
+}
+T scale(T x, T y) {
+    return x * y + y;
+}
+T top(T x, T y, bool p) {
+#pragma HLS ARRAY_PARTITION variable=BANKS complete dim=1
+#pragma HLS ALLOCATION function instances=scale limit=1
+    zero(BANKS);
+    if (p) return scale(x, y);
+    return scale(y, x);
+}
+"""
+    design = read_design([("s.cpp", text)], "top", ADD_LATENCY)
+    (zero,) = [r for r in design.loops if r.function == "zero"]
+    assert zero.accesses == (("BANKS", 4, 4),) and zero.ii_bound == 1
+    assert dict(design.modules)["scale"] == 1
+    unshared = text.replace("#pragma HLS ALLOCATION function instances=scale limit=1\n", "")
+    assert dict(read_design([("s.cpp", unshared)], "top", ADD_LATENCY).modules)["scale"] == 2
+    alias = text.replace("variable=BANKS complete", "variable=Q complete")
+    (zero,) = [r for r in read_design([("s.cpp", alias)], "top", ADD_LATENCY).loops
+               if r.function == "zero"]
+    assert zero.ii_bound == 2  # four stores through one memory's two ports
+
+
+def test_a_recursive_template_cascade_is_read_per_stage():
+    """A unit instantiated through a struct template's recursion (fgc_cpe.h's
+    cpe_cascade<CFG, K>::run calling cpe<CFG, K>) is read once per stage, each stage's
+    pipelined loop with its operators: the cascade's DSP grows with the stages."""
+    text = """
+typedef float T;
+const int N = 32;
+template <int K>
+void stage(const T a[N], T b[N]) {
+    for (int i = 0; i < N; ++i) {
+#pragma HLS PIPELINE II=1
+        b[i] = a[i] * a[i] + T(K);
+    }
+}
+template <int K, int M, bool END = (K == M)>
+struct cascade {
+    static void run(T link[M + 1][N]) {
+#pragma HLS INLINE
+        stage<K>(link[K], link[K + 1]);
+        cascade<K + 1, M>::run(link);
+    }
+};
+template <int K, int M>
+struct cascade<K, M, true> {
+    static void run(T link[M + 1][N]) {
+#pragma HLS INLINE
+    }
+};
+void top3(T link[4][N]) {
+    cascade<0, 3>::run(link);
+}
+void top6(T link[7][N]) {
+    cascade<0, 6>::run(link);
+}
+"""
+    dsp = {"add": 2, "mul": 3}
+    three = read_design([("s.cpp", text)], "top3", ADD_LATENCY)
+    six = read_design([("s.cpp", text)], "top6", ADD_LATENCY)
+    assert dict(three.modules)["stage"] == 3 and dict(six.modules)["stage"] == 6
+    assert {dict(r.template)["K"] for r in three.loops if r.function == "stage"} == {0, 1, 2}
+    assert three.dsp(dsp) == 3 * 5 and six.dsp(dsp) == 6 * 5
 
 
 @pytest.fixture(scope="module")
@@ -179,15 +260,17 @@ def chain_design(tmp_path_factory):
 
 def test_an_emitted_design_read_back(chain_design):
     """Every pipelined loop the kernel prints is read (one per instantiation of a template),
-    each Update unit is its own module at every call site of the reflection (3 units x 2 unit
-    sets x 2 parity sites), and every loop's II is read from its pragma."""
+    each Update unit is its own module (3 units x 2 unit sets; qr_step's two parity call sites
+    of the reflection share one instance through its ALLOCATION function limit=1), and every
+    loop's II is read from its pragma."""
     files, top = emitted_files(chain_design)
     design = read_design(files, top, ADD_LATENCY)
     text = "\n".join(t for _, t in files)
     pragmas = len(re.findall(r"#pragma HLS PIPELINE II=", text))
     assert len({(r.file, r.line) for r in design.loops}) == pragmas
     modules = dict(design.modules)
-    assert modules["qr_update"] == 3 * 2 * 2
+    assert modules["qr_update"] == 3 * 2
+    assert modules["qr_reflection"] == 2
     assert all(r.ii >= 1 and r.ii_bound >= 1 for r in design.loops)
     assert design.dsp(DSP) > 0
 

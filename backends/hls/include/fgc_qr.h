@@ -403,9 +403,12 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
                    CFG::ADD_LAT * ceil_log2(P) + CFG::MUL_LAT);
         // x -= (tau v.x) v, column by column; the entry in row j (active row 0) goes to the
         // collector as it is updated: trip n r, II 1, depth Lm + La
+        // (each entry (at[a], l) is read and written once: the active rows at[] are distinct,
+        // so no iteration reads what another wrote)
         for (int e = 0, l = lb, a = 0; e < n * r; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
 #pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=bank inter false
             const T x = bank[at[a]][l] - scaled[l] * v[a];
             bank[at[a]][l] = x;
             if (a == 0) rowout.write(x);
@@ -594,6 +597,22 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
 
 // ---- the step ---------------------------------------------------------------------------------
 
+// After the reflections (qr_step, fgc_qr_stream.h's qrs_step): true if k < f or a frontal pivot
+// |R_ii| of cond (w + 1 = cols columns) is not above CFG::SINGULAR_EPS * scale.
+// Trip f, II 1, depth 2 (read, compare).
+template <class CFG>
+bool qr_pivot_check(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int cols,
+                    int k, typename CFG::T scale) {
+    bool bad = k < f;
+    for (int i = 0; i < f; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
+#pragma HLS PIPELINE II=1
+        if (i >= k || !(qr_abs(cond[i * cols + i]) > CFG::SINGULAR_EPS * scale)) bad = true;
+    }
+    FGC_CYCLES("qr_pivot_check", 0, "pivot_check", f, 1, 2);
+    return bad;
+}
+
 template <class CFG>
 void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows, int f,
              int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
@@ -618,6 +637,9 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
     ha[1].val = T(0);
     ha[1].idx = -1;
     T scale = T(0);
+    // the two parity call sites below are exclusive and sequential: one RTL copy of the region
+    // serves both (UG1399, ALLOCATION of a function: one instance for its call sites)
+#pragma HLS ALLOCATION function instances=qr_reflection<CFG> limit=1
     for (int j = -1; j < k; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
         if (((j + 1) & 1) == 0) {
@@ -627,15 +649,7 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
         }
         FGC_SEQUENTIAL();
     }
-    // the pivots against the scale: trip f, II 1, depth 2 (read, compare)
-    bool bad = k < f;
-    for (int i = 0; i < f; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-#pragma HLS PIPELINE II=1
-        if (i >= k || !(qr_abs(cond[i * cols + i]) > CFG::SINGULAR_EPS * scale)) bad = true;
-    }
-    FGC_CYCLES("qr_step", 0, "pivot_check", f, 1, 2);
-    *singular = bad;
+    *singular = qr_pivot_check<CFG>(cond, f, cols, k, scale);
 }
 
 }  // namespace fgc_units

@@ -485,15 +485,7 @@ void qrs_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]
             FGC_CYCLES("qrs_step", 0, "copy", (rows - j1) * CFG::LOCAL_COLS, 1, 2);
         }
     }
-    // the pivots against the scale: trip f, II 1, depth 2 (read, compare)
-    bool bad = k < f;
-    for (int i = 0; i < f; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-#pragma HLS PIPELINE II=1
-        if (i >= k || !(qr_abs(cond[i * cols + i]) > CFG::SINGULAR_EPS * scale)) bad = true;
-    }
-    FGC_CYCLES("qrs_step", 0, "pivot_check", f, 1, 2);
-    *singular = bad;
+    *singular = qr_pivot_check<CFG>(cond, f, cols, k, scale);  // fgc_qr.h
 }
 
 }  // namespace fgc_units

@@ -12,9 +12,10 @@ import numpy as np
 
 from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.cost.structure import stacked_pattern
+from fgc_backends.hls.plan.binding import BoundLoop, bound_unit
 from fgc_backends.hls.plan.cost import phase_cycles
 from fgc_backends.hls.plan.loops import _assign, _ported, _region_cycles, kernel_loop
-from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, PlanError, Process, Unit
+from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, PlanError, Process
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
 
@@ -117,6 +118,28 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     return out
 
 
+def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[BoundLoop, ...]]:
+    """The operators of one unit set's Evaluate (qr_evaluate, qr_finish) and of one Update
+    unit (qr_update<CFG, U>) as Vitis binds fgc_qr.h's text: each pipelined loop its own
+    operators at II 1 (``fold_scale`` holds ``fold_partials<P>``'s P - 1 adders beside its
+    multiplier), the sequential code one operator of each kind it uses. qr_step's two parity
+    call sites of qr_reflection share one instance (its ALLOCATION function limit=1), so each
+    unit is one RTL copy. ``partials``: CFG::PARTIALS."""
+    p = partials
+    evaluate = (BoundLoop("receive_norm", (("add", 1), ("mul", 1)), 1),
+                BoundLoop("fold", (("add", p - 1),), 0),  # fold_partials<P>, sequential
+                BoundLoop("qr_finish", (("add", 2), ("mul", 1), ("div", 1), ("sqrt", 1)), 0))
+    update = (BoundLoop("vector_dot", (("add", 1), ("mul", 1)), 1),
+              BoundLoop("axpy_next_column", (("add", 1), ("mul", 1)), 1),
+              BoundLoop("dots", (("add", 1), ("mul", 1)), 1),
+              BoundLoop("fold_scale", (("add", p - 1), ("mul", 1)), 1),
+              BoundLoop("axpys", (("add", 1), ("mul", 1)), 1),
+              # the next pivot column's fold (fold_partials<P + 1>), its pivot term and scale
+              BoundLoop("fold_scale_next", (("add", p),), 0),
+              BoundLoop("pivot_term_scale", (("mul", 2),), 0))
+    return evaluate, update
+
+
 def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
                 timing: dict) -> list[Loop]:
     """accel.cpp.jinja's stack() of step s into its unit set's banks: the rows zeroed (all
@@ -183,11 +206,12 @@ def build(ctx) -> None:
 def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
     """fgc_qr.h's unit sets (units, streams) and each step's regions."""
     opts, ops, sched = ctx.opts, ctx.les, ctx.program.schedule
+    evaluate, update = householder_loops(ops.add.latency)
     for s in range(sets):
-        ctx.units.append(Unit(f"qr{s}_evaluate", "Householder vector of a column", 1,
-                              (("add", 2), ("mul", 2), ("div", 1), ("sqrt", 1))))
-        ctx.units.append(Unit(f"qr{s}_update", "apply the reflector to a column", opts.units,
-                              (("add", 1), ("mul", 1))))
+        ctx.units.append(bound_unit(f"qr{s}_evaluate", "Householder vector of a column",
+                                    evaluate, 1, ops))
+        ctx.units.append(bound_unit(f"qr{s}_update", "apply the reflector to a column",
+                                    update, opts.units, ops))
         # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
         # the vector below the pivot to each Update unit while qr_finish computes v_0, tau and
         # R_jj from the norm and the pivot and streams them to each unit (R_jj also to collect);
