@@ -333,7 +333,7 @@ def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):
     kernel, header = _texts(out, "lio", "fgc_qr.h")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     assert counts(kernel, header) == (len(procs), len(streams))
-    call = "    backsub_set1(cond1, f1, s1, xs1, x1);\n"
+    call = "    backsub_set1(cond1, f1, s1, part1, x1);\n"
     assert kernel.count(call) == 1
     assert counts(kernel.replace(call, ""), header) == (len(procs) - 1, len(streams))
     extra = "#pragma HLS DATAFLOW\n    hls::stream<L> spare;\n"

@@ -96,7 +96,10 @@ static void run_qr(int rows, int f, int s) {
     if (cols <= C::MAX_COLS && f <= C::MAX_F && !singular) {  // back-substitution, xs = 1, 2, ...
         T xs[C::MAX_COLS], x[C::MAX_F];
         for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(a2 + 1);
-        fgc_units::cond_backsub<C>(cond, f, s, xs, x);
+        static T buf[C::MAX_F * C::MAX_COLS];
+        T part[2][C::PARTIALS][C::MAX_F];
+        fgc_units::cond_load<C>(cond, f, s, xs, buf, part);
+        fgc_units::cond_backsub<C>(buf, f, s, part, x);
         std::vector<double> xd(x, x + f);
         print("x", xd.data(), f);
     } else {
@@ -134,7 +137,10 @@ static void run_cpe(int f, int s, double mu) {
     if (fits && !singular) {  // back-substitution with xs = 1, 2, ...
         T xs[C::MAX_COLS], x[C::MAX_F];
         for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(a2 + 1);
-        fgc_units::cond_backsub<C>(cond, f, s, xs, x);
+        static T buf[C::MAX_F * C::MAX_COLS];
+        T part[2][C::PARTIALS][C::MAX_F];
+        fgc_units::cond_load<C>(cond, f, s, xs, buf, part);
+        fgc_units::cond_backsub<C>(buf, f, s, part, x);
         std::vector<double> xd(x, x + f);
         print("x", xd.data(), f);
     } else {
@@ -422,7 +428,7 @@ def test_cycle_counts(driver):
 
     # N_CPE = 20, one round (p0 = 0, w = 15, all 10 pivots): the region's slowest process plus the
     # others' fill, then the singularity scale and the pivot check
-    w, f, s = 15, 10, 5
+    w, f = 15, 10
     words = w * (w + 1) // 2 + w
 
     # every process is one stream of the words and the status word: the feed La + 2 deep (mu
@@ -442,12 +448,14 @@ def test_cycle_counts(driver):
                       + 2)
     sequential = loop(f, 1, lm + ld + 2) + loop(f, 1, lm + 2)  # scale, pivot check
     p = 12  # the driver's PARTIALS
-    # cond_backsub: the rows' partial sums zeroed, the f s separator terms in one II-1 loop
-    # (multiply-add deep), each row's P partial sums folded (La (1 + ⌈log₂ P⌉) deep), the
-    # reciprocals, then the triangle column by column
-    fold = loop(f, 1, la * (1 + math.ceil(math.log2(p))))
-    backsub = (loop(f, 1, 1) + loop(f * s, 1, lm + la) + fold + loop(f, 1, ld)
-               + sum(lm + loop(r, 1, lm + la) for r in range(f)))
+    # cond_load: the f (w + 1) - f (f - 1) / 2 words R's upper triangle, S and d hold, two a
+    # cycle, multiply-add deep (+ read and write); cond_backsub: per row the 2 P partial sums
+    # folded beside the reciprocal (max(La (1 + ⌈log₂ 2P⌉), Ld) deep), the triangle's columns
+    # r = f - 1 … 1 at max(r, 2 Lm + La + 1) iterations each (chain 2 Lm + La deep), x_0
+    chain = 2 * lm + la
+    load = loop(-(-(f * (w + 1) - f * (f - 1) // 2) // 2), 1, 2 + lm + la)
+    rows = loop(f, 1, max(la * (1 + math.ceil(math.log2(2 * p))), ld))
+    backsub = (load + rows + loop(sum(max(r, chain + 1) for r in range(1, f)), 1, chain) + lm)
     assert twenty.cycles == region + sequential
     assert twenty.backsub == backsub
 

@@ -139,18 +139,18 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     assert phases["lm_iteration"] == 11 + 26
     assert phases["lm_control"] == 30 + 30
     assert phases["lm_accept"] == 13
-    # back-substitution (fgc_backsub.h's loops in the backsub_level region; two unit sets, so
-    # the copies move one word of each set's step a cycle). The root step (f 3, s 0): its
-    # conditional copied in (3 x 4 words, II 1, depth 2: 13); cond_backsub: the partial sums
-    # zeroed (3 at depth 1: 3), no separator terms, the rows' folds (3, depth 4 (1 + 2) = 12:
-    # 14), reciprocals 2 + div 15 = 17, then per column last first a multiply 3 and the column
-    # above it (trip r, mul + add 7 deep): 3 + (1 + 7) + 3 + 7 + 3 = 24 -> 58; the solution
-    # out (3: 4) -> 75. The second level has two steps (f 3, s 3) side by side: copies in
-    # 3 x 7 words (22) and the separator's 3 (4); each cond_backsub 3 + the 9 separator terms
-    # in one loop (8 + 7 = 15) + 14 + 17 + 24 = 73, the region the slower plus the other's
-    # fill (its zeroing's depth 1): 74; the solutions out (4) -> 104
-    assert plan.options.units == 2
-    assert phases["backsub_level0"] == 75 and phases["backsub_level1"] == 104
+    # back-substitution (fgc_backsub.h: cond_load before the backsub_level region, whose
+    # cond_backsub per unit set run side by side; two unit sets, so the separator and solution
+    # copies move one word of each set's step a cycle). The root step (f 3, s 0): no separator;
+    # cond_load's 4 + 3 + 2 = 9 words two a cycle, read + multiply-add 2 + 3 + 4 = 9 deep
+    # (4 + 9 = 13); cond_backsub: the rows (3, max(add 4 (1 + ⌈log₂ 8⌉), div 15) = 16 deep:
+    # 18), the triangle's columns 2 and 1 each padded to the chain 2 mul + add = 10, plus one
+    # (22 iterations, 10 deep: 31), x_0's multiply 3 -> 52; the solution out (3: 4) -> 69. The
+    # second level has two steps (f 3, s 3): the separators in (3: 4), each step's cond_load
+    # (7 + 6 + 5 = 18 words: 8 + 9 = 17) one after the other (34), the region the slower
+    # cond_backsub (52) plus the other's fill (its rows' depth 16): 68; the solutions out (4)
+    # -> 110
+    assert phases["backsub_level0"] == 69 and phases["backsub_level1"] == 110
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub_")))

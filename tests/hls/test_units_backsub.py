@@ -1,5 +1,5 @@
-"""Back-substitution (backends/hls/units/backsub.py): cond_backsub's loops by hand, one unit per
-QR unit set."""
+"""Back-substitution (backends/hls/units/backsub.py): cond_load's and cond_backsub's loops by
+hand, one unit per QR unit set, the operators as bound."""
 
 from __future__ import annotations
 
@@ -7,18 +7,48 @@ from hls_programs import chain
 
 from fgc_backends.cost.operators import FLOAT32
 from fgc_backends.hls.plan import build_plan
-from fgc_backends.hls.units.backsub import backsub_loops
+from fgc_backends.hls.units.backsub import (
+    backsub_loops,
+    backsub_operators,
+    backsub_words,
+    load_loop,
+    triangle_trip,
+)
 
 
 def test_cond_backsub_loops_by_hand():
-    # float32 on the xc7z045 at 143 MHz: add 4, mul 3, div 15; PARTIALS = 4 interleaved sums,
-    # folded in ⌈log₂ 4⌉ = 2
+    # float32 on the xc7z045 at 143 MHz: add 4, mul 3, div 15; PARTIALS = 4 sums in each of the
+    # two lanes, folded in ⌈log₂ 8⌉ = 3 beside the reciprocal: max(4 (1 + 3), 15) = 16
     loops = {lp.name: lp for lp in backsub_loops(2, 3, FLOAT32, name="b")}
-    assert (loops["b_separator"].trip, loops["b_separator"].depth) == (6, 3 + 4)
-    assert loops["b_fold"].depth == 4 * (1 + 2)
-    assert loops["b_reciprocals"].depth == 15
-    assert [n for n in loops if n.startswith("b_solve")] == ["b_solve1", "b_solve0"]
-    assert loops["b_column1"].trip == 1
+    assert list(loops) == ["b_rows", "b_triangle", "b_last"]
+    assert (loops["b_rows"].trip, loops["b_rows"].depth) == (2, 16)
+    # one column (r = 1) padded to the chain 2 Lm + La = 10, plus one
+    assert (loops["b_triangle"].trip, loops["b_triangle"].depth) == (11, 10)
+    assert loops["b_last"].depth == 3
+    assert backsub_loops(0, 3, FLOAT32) == []
+
+
+def test_triangle_hides_its_chain_behind_long_columns():
+    # f = 15: columns 14 … 1; the 10 shortest padded to 11 iterations, 11 … 14 as they are
+    assert triangle_trip(15, FLOAT32) == 10 * 11 + 11 + 12 + 13 + 14
+    assert triangle_trip(1, FLOAT32) == 0
+    # a column per unknown at the chain's rate at most: never below the floor f - 1 chains
+    for f in range(1, 40):
+        assert triangle_trip(f, FLOAT32) >= (f - 1) * 11
+
+
+def test_cond_load_moves_the_upper_triangle_two_words_a_cycle():
+    # f = 3, s = 2: rows of 6, 5, 4 words from the diagonal on (the zeros below stay)
+    assert backsub_words(3, 2) == 6 + 5 + 4
+    lp = load_loop(3, 2, FLOAT32)
+    assert (lp.trip, lp.ii, lp.depth) == (8, 1, 2 + 3 + 4)
+    assert load_loop(0, 2, FLOAT32).trip == 0
+
+
+def test_backsub_operators_as_bound():
+    # cond_load 2 multiply-adds, the rows' 2 PARTIALS - 1 fold adds and the subtraction beside
+    # a divide, the triangle's 2 multiplies and a subtraction, x_0's multiply
+    assert dict(backsub_operators(FLOAT32)) == {"add": 2 + 8 + 1, "mul": 2 + 2 + 1, "div": 1}
 
 
 def test_one_backsub_unit_per_qr_unit_set():

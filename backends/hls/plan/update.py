@@ -326,7 +326,7 @@ class UpdateModel:
         for c in range(first - 1, -1, -1):
             f, sep = self.cdim[c], self.cdim[c + 1]
             before, after = backsub_copies({"STEP_W": [f + sep], "STEP_F": [f]}, 0,
-                                           self.les_timing)
+                                           self.les_timing, self.les)
             loops += before + backsub_loops(f, sep, self.les, name=f"kept{c}") + after
         keys = {k for c in range(first) for k in self.clusters[c]}
         loops += retract_loops([v for v in self.program.variables if v.key in keys],
@@ -490,7 +490,7 @@ class UpdateModel:
         for level, s in enumerate(reversed(steps)):
             c = first + s
             sep = self.cdim[c + 1] if c < last else 0
-            before, after = backsub_copies(tables, s, lt)
+            before, after = backsub_copies(tables, s, lt, self.les)
             phases.append(Phase(f"backsub_level{level}", False, (Process(
                 f"backsub_step{s}", unit,
                 tuple(before + backsub_loops(self.cdim[c], sep, self.les, name=f"bs{c}")

@@ -9,42 +9,69 @@ import math
 
 from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.plan.binding import BoundLoop, sum_operators
-from fgc_backends.hls.plan.loops import _ported, _region_cycles, dot_loop, kernel_loop
+from fgc_backends.hls.plan.loops import _ceil_log2, _ported, _region_cycles, dot_loop, kernel_loop
 from fgc_backends.hls.plan.model import PORTS, Loop, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
+
+
+def backsub_chain(ops: OperatorTable) -> int:
+    """The triangle's recurrence per unknown (fgc_backsub.h's CHAIN): x_r = y_r / R_rr (a multiply
+    by the reciprocal), the product R_ir x_r and the subtraction from y_i."""
+    return 2 * ops.mul.latency + ops.add.latency
+
+
+def backsub_words(frontal: int, separator: int) -> int:
+    """Words ``cond_load`` moves: each row i of the conditional from its diagonal on (R's
+    structural zeros below the diagonal stay behind)."""
+    return frontal * (frontal + separator + 1) - frontal * (frontal - 1) // 2
+
+
+def triangle_trip(frontal: int, ops: OperatorTable) -> int:
+    """Iterations of cond_backsub's triangle loop: columns r = f − 1 … 1, each max(r, CHAIN + 1)
+    (a column shorter than the recurrence padded to it)."""
+    pad = backsub_chain(ops) + 1
+    return sum(max(r, pad) for r in range(1, frontal))
+
+
+def rows_depth(ops: OperatorTable) -> int:
+    """cond_backsub's row loop: the 2 PARTIALS partial sums folded and subtracted from d
+    (La (1 + ⌈log₂ 2 PARTIALS⌉)) beside the reciprocal of the diagonal (Ld)."""
+    la = ops.add.latency
+    return max(la * (1 + _ceil_log2(2 * la)), ops.div.latency)
+
+
+def load_loop(frontal: int, separator: int, ops: OperatorTable, name: str = "cond_load"
+              ) -> Loop:
+    """``cond_load``: the conditional's stored words two a cycle (the source memory's two
+    ports), each S_ia x_a added into a partial sum as it passes (II 1: a lane's sum comes back
+    PARTIALS iterations later); depth read + multiply-add + write."""
+    words = backsub_words(frontal, separator) if frontal else 0
+    return Loop(name, -(-words // PORTS), 1, 2 + ops.mul.latency + ops.add.latency)
 
 
 def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
                   name: str = "bs") -> list[Loop]:
     """The loops of ``cond_backsub`` (backends/hls/include/fgc_backsub.h) on one conditional of
-    f frontal and s separator columns, as its csim counters count them: the rows' partial sums
-    zeroed (all PARTIALS banks a cycle), the separator's share S xs of every row in one loop
-    (trip f s, II 1: consecutive iterations hit different rows, PARTIALS = the add latency
-    interleaved sums per row, multiply-add deep), each row's partial sums folded and subtracted
-    from d (trip f, II 1, La (1 + ⌈log₂ PARTIALS⌉) deep), the f reciprocals of the diagonal, then
-    column by column (last first) one multiply and the column above the pivot (trip r, II 1,
-    multiply-add deep)."""
-    la, lm = ops.add.latency, ops.mul.latency
-    tree = math.ceil(math.log2(la)) if la > 1 else 0
-    loops = [Loop(f"{name}_zero", frontal, 1, 1),
-             Loop(f"{name}_separator", frontal * separator, 1, lm + la),
-             Loop(f"{name}_fold", frontal, 1, la * (1 + tree))]
-    if frontal:
-        loops.append(Loop(f"{name}_reciprocals", frontal, 1, ops.div.latency))
-    for r in range(frontal - 1, -1, -1):
-        loops.append(Loop(f"{name}_solve{r}", 1, 1, lm))
-        if r:
-            loops.append(Loop(f"{name}_column{r}", r, 1, lm + la))
-    return loops
+    f frontal and s separator columns (S xs already summed by ``cond_load``), as its csim
+    counters count them: per row (trip f, II 1) its partial sums folded and subtracted from d
+    beside the diagonal's reciprocal (:func:`rows_depth`); the triangle as one flattened loop
+    (trip :func:`triangle_trip`, II 1, depth CHAIN = 2 Lm + La: the chain per unknown, the
+    column updates beside it); x_0 (one multiply). Nothing for f = 0."""
+    if not frontal:
+        return []
+    return [Loop(f"{name}_rows", frontal, 1, rows_depth(ops)),
+            Loop(f"{name}_triangle", triangle_trip(frontal, ops), 1, backsub_chain(ops)),
+            Loop(f"{name}_last", 1, 1, ops.mul.latency)]
 
 
 def backsub_chunk_loops(tables: dict, steps, ops: OperatorTable, timing: dict,
                         sets: int) -> list[Loop]:
     """back_substitute() on ``steps`` (at most ``sets``: one chunk of a level, one step per unit
-    set): their conditionals and separator solutions copied in side by side (the memories' two
-    ports shared out: ``max(1, PORTS // sets)`` words of each step an iteration at II
-    ⌈sets / PORTS⌉), the ``backsub_level`` DATAFLOW region (one ``cond_backsub`` process per
-    unit set: the slowest plus the others' fill), the frontal solutions out side by side."""
+    set): their separator solutions copied in side by side (the memories' two ports shared
+    out: ``max(1, PORTS // sets)`` words of each step an iteration at II ⌈sets / PORTS⌉), each
+    step's ``cond_load`` in turn (:func:`load_loop`), the ``backsub_level`` DATAFLOW region
+    (one ``cond_backsub`` process per unit set: the slowest plus the others' fill), the frontal
+    solutions out side by side."""
     per, ii = max(1, PORTS // sets), -(-sets // PORTS)
     sizes = [(tables["STEP_F"][s], tables["STEP_W"][s]) for s in steps]
     region = _region_cycles([backsub_loops(f, w - f, ops, name=f"bs{s}")
@@ -54,19 +81,21 @@ def backsub_chunk_loops(tables: dict, steps, ops: OperatorTable, timing: dict,
     def copy(name, words):
         return Loop(name, -(-max(words) // per), ii, depth)
 
-    return [copy("cond_in", [f * (w + 1) for f, w in sizes]),
-            copy("separator_in", [w - f for f, w in sizes]),
+    return [copy("separator_in", [w - f for f, w in sizes]),
+            *[load_loop(f, w - f, ops, name=f"cond_load{s}")
+              for s, (f, w) in zip(steps, sizes, strict=True)],
             Loop("backsub_level", 1, 1, region),
             copy("solution_out", [f for f, _ in sizes])]
 
 
-def backsub_copies(tables: dict, s: int, timing: dict) -> tuple[list[Loop], list[Loop]]:
-    """back_substitute()'s copies around cond_backsub for step s alone on one unit (one unit
-    set, :data:`PORTS` words a cycle): the conditional from COND and the separator's solution
-    in; the frontal solution out."""
+def backsub_copies(tables: dict, s: int, timing: dict, ops: OperatorTable
+                   ) -> tuple[list[Loop], list[Loop]]:
+    """back_substitute()'s loops around cond_backsub for step s alone on one unit (one unit
+    set, :data:`PORTS` words a cycle): the separator's solution in and the conditional's
+    ``cond_load``; the frontal solution out."""
     w, f = tables["STEP_W"][s], tables["STEP_F"][s]
-    return ([kernel_loop("cond_in", _ported(f * (w + 1)), "move", timing),
-             kernel_loop("separator_in", _ported(w - f), "move", timing)],
+    return ([kernel_loop("separator_in", _ported(w - f), "move", timing),
+             load_loop(f, w - f, ops)],
             [kernel_loop("solution_out", _ported(f), "move", timing)])
 
 
@@ -86,16 +115,17 @@ def backsub_phases(ctx, unit: str, sets: int = 1) -> None:
 
 
 def backsub_operators(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
-    """cond_backsub's operators as Vitis binds them (:mod:`fgc_backends.hls.plan.binding`):
-    each pipelined loop its own at II 1 (S xs: a multiply-add; the fold: PARTIALS - 1 adds and
-    the subtraction from d; the reciprocals: a divide; the column above the pivot: a
-    multiply-add), the pivot's multiply sequential; PARTIALS is the adder's latency."""
+    """One back-substitution unit's operators as Vitis binds them
+    (:mod:`fgc_backends.hls.plan.binding`), each pipelined loop its own at II 1: its
+    ``cond_load`` (its own call site in back_substitute: two words an iteration, a multiply-add
+    each), the row loop (2 PARTIALS − 1 adds folding, the subtraction from d, the reciprocal's
+    divide), the triangle (the multiply by 1 / R_rr, the product, the subtraction), x_0's
+    multiply sequential; PARTIALS is the adder's latency."""
     partials = ops.add.latency
-    return sum_operators((BoundLoop("separator", (("add", 1), ("mul", 1)), 1),
-                          BoundLoop("fold", (("add", partials),), 1),
-                          BoundLoop("reciprocals", (("div", 1),), 1),
-                          BoundLoop("solve", (("mul", 1),), 0),
-                          BoundLoop("column", (("add", 1), ("mul", 1)), 1)), ops)
+    return sum_operators((BoundLoop("cond_load", (("add", 2), ("mul", 2)), 1),
+                          BoundLoop("rows", (("add", 2 * partials), ("div", 1)), 1),
+                          BoundLoop("triangle", (("add", 1), ("mul", 2)), 1),
+                          BoundLoop("last", (("mul", 1),), 0)), ops)
 
 
 def build(ctx) -> None:

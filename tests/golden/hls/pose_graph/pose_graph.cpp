@@ -1492,7 +1492,9 @@ struct LesConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int SCATTER_II = 1, SCATTER_DEPTH = 6;
     static const int PARTIALS = 4;  // interleaved partial sums (= ADD_LAT: II 1)
-    static const int ADD_LAT = 4, MUL_LAT = 3, DIV_LAT = 15, SQRT_LAT = 15;
+    static const int ADD_LAT = 4;  // one a line: the second reader resolves them by name
+    static const int MUL_LAT = 3;
+    static const int DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
 };
 
@@ -1564,25 +1566,31 @@ L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // unit 0's conditional (R | S | d)
 L BS_XS0[LesConfig::MAX_COLS];  // its separator's solution
 L BS_X0[MAX_F];  // its frontal solution
 
-// Back-substitution unit 0: x = R^-1 (d - S xs) of one step (f = 0: none this time).
+// Back-substitution unit 0: x = R^-1 (d - S xs) of one step, S xs in the partial sums
+// cond_load left (f = 0: none this time).
 void backsub_set0(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
-                  const L xs[LesConfig::MAX_COLS], L x[MAX_F]) {
+                  const L part[2][LesConfig::PARTIALS][MAX_F], L x[MAX_F]) {
     FGC_BRANCH();  // csim cycle counting only: the units of a level run side by side
-    fgc_units::cond_backsub<LesConfig>(cond, f, s, xs, x);
+    fgc_units::cond_backsub<LesConfig>(cond, f, s, part, x);
 }
 
 // One chunk of a level's steps on the 1 back-substitution unit(s) side by side.
 void backsub_level(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
-                   const L xs0[LesConfig::MAX_COLS], L x0[MAX_F]) {
+                   const L part0[2][LesConfig::PARTIALS][MAX_F], L x0[MAX_F]) {
 #pragma HLS DATAFLOW
-    backsub_set0(cond0, f0, s0, xs0, x0);
+    backsub_set0(cond0, f0, s0, part0, x0);
 }
 
 // Back-substitution root first: per level its steps 1 at a time (LEVEL_STEPS order):
-// their conditionals and separator solutions in side by side (BS_WORDS words of each step an
-// iteration), the backsub_level region, their frontal solutions out into DELTA side by side.
+// their separator solutions in side by side (BS_WORDS words of each step an iteration), each
+// step's conditional loaded from COND by its unit's cond_load (two words a cycle, S xs summed on
+// the way: fgc_backsub.h), the backsub_level region, their frontal solutions out into DELTA side
+// by side.
 void back_substitute() {
     FGC_PHASE("backsub");
+    L bs_part0[2][LesConfig::PARTIALS][MAX_F];  // unit 0's partial sums of S xs (lane, bank, row)
+#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=2
     for (int l = N_LEVELS - 1; l >= 0; --l) {
         for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 1) {
 #pragma HLS LOOP_TRIPCOUNT max=2
@@ -1590,21 +1598,11 @@ void back_substitute() {
             const int s0 = has0 ? LEVEL_STEPS[i + 0] : 0;
             const int f0 = has0 ? STEP_F[s0] : 0;
             const int sep0 = has0 ? STEP_W[s0] - STEP_F[s0] : 0;
-            const int n0 = f0 * (f0 + sep0 + 1);
             const int c0 = STEP_COND_OFF[s0], cb0 = STEP_COL_BEGIN[s0];
-            int most = 0, most_sep = 0, most_f = 0;
-            most = n0 > most ? n0 : most;
+            int most_sep = 0, most_f = 0;
             most_sep = sep0 > most_sep ? sep0 : most_sep;
             most_f = f0 > most_f ? f0 : most_f;
             // BS_WORDS words of each step an iteration: the memories' PORTS ports shared out
-            for (int e = 0; e < most; e += BS_WORDS) {
-#pragma HLS LOOP_TRIPCOUNT max=171
-#pragma HLS PIPELINE II=1
-                for (int h = 0; h < BS_WORDS; ++h) {
-                    if (e + h < n0) BS_COND0[e + h] = COND[c0 + e + h];
-                }
-            }
-            FGC_CYCLES("backsub_copy", 0, "cond_in", (most + BS_WORDS - 1) / BS_WORDS, 1, 2);
             for (int a = 0; a < most_sep; a += BS_WORDS) {
 #pragma HLS LOOP_TRIPCOUNT max=9
 #pragma HLS PIPELINE II=1
@@ -1613,7 +1611,8 @@ void back_substitute() {
                 }
             }
             FGC_CYCLES("backsub_copy", 0, "separator_in", (most_sep + BS_WORDS - 1) / BS_WORDS, 1, 2);
-            backsub_level(BS_COND0, f0, sep0, BS_XS0, BS_X0);
+            if (f0 > 0) fgc_units::cond_load<LesConfig>(COND + c0, f0, sep0, BS_XS0, BS_COND0, bs_part0);
+            backsub_level(BS_COND0, f0, sep0, bs_part0, BS_X0);
             FGC_JOIN();
             for (int c = 0; c < most_f; c += BS_WORDS) {
 #pragma HLS LOOP_TRIPCOUNT max=9
