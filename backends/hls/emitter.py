@@ -190,7 +190,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
     from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
     from fgc_backends.hls.plan.model import Unit
-    from fgc_backends.hls.units.cholesky import gram_ii
+    from fgc_backends.hls.units.cholesky import gram_entries, gram_ii
     from fgc_backends.hls.units.datapath import factor_allocation, mode_allocation
     plan = accel_plan(program, config)
     phase = {ph.name: ph for ph in plan.phases}
@@ -213,8 +213,11 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                                       _allocation(cost, config.scalar_cxx, cost_text)),
                                   loops[f"factor_{b.index}_jacobian"],
                                   loops[f"factor_{b.index}_cost"], noise[f"noise_{b.index}"]))
-        # Cholesky's HGC: the II of the block's Gram panel rows (its multiply-add lanes)
+        # Cholesky's HGC: the II of the block's Gram entries (its multipliers) and the entries
         blocks[-1].gram_ii = gram_ii(program, b.index, plan.options.hgc_lanes)
+        entries = gram_entries(block) if program.solver.linear == "cholesky" else ()
+        blocks[-1].gram_p = [p for p, _ in entries]
+        blocks[-1].gram_q = [q for _, q in entries]
     # the state update's datapath per variable type: the plan's operators, II and depth
     retract = {}
     for k in context["retracts"]:

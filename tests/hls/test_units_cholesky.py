@@ -91,10 +91,11 @@ def test_a_what_if_whole_matrix_design_has_its_own_phases(program, storage):
         assert plan_cost(plan).cycles < dense.cycles
 
 
-def test_the_hgc_is_priced_per_block_type_as_its_panel_rows_bind_it():
-    # a Pose2 chain: the between block (5 instances) gets the hgc_lanes lanes, the prior (one
-    # instance) one lane (its row loop at II 2 TILE^2 = 32)
-    from fgc_backends.hls.units.cholesky import gram_ii, hgc_operators
+def test_the_hgc_is_priced_per_block_type_as_its_gram_entries_bind_it():
+    # a Pose2 chain: the between block (5 instances, m = 3 rows) gets a multiplier per row (its
+    # entries at II 1: 3 multipliers, a tree of 2 adders), the prior (one instance) one
+    # multiplier and one adder (II m = 3)
+    from fgc_backends.hls.units.cholesky import gram_entries, gram_ii, hgc_operators
 
     program = chain(6, linear="cholesky")
     counts = {}
@@ -102,13 +103,39 @@ def test_the_hgc_is_priced_per_block_type_as_its_panel_rows_bind_it():
         counts[f.block] = counts.get(f.block, 0) + 1
     many = max(counts, key=counts.get)
     one = next(b for b, n in counts.items() if n == 1)
-    assert gram_ii(program, many, 16) == 2 and gram_ii(program, many, 32) == 1
-    assert gram_ii(program, one, 16) == 32
-    ops = dict(hgc_operators(program, 16, 4))
-    assert dict(ops[many]) == {"add": 16 + 3 * 3 + 2, "mul": 16}
-    assert dict(ops[one]) == {"add": 1 + 3 * 3 + 2, "mul": 1}
+    m = program.blocks[many].residual_dim
+    assert m == 3
+    assert gram_ii(program, many, 32) == 1 and gram_ii(program, many, 2) == 2
+    assert gram_ii(program, one, 32) == program.blocks[one].residual_dim
+    ops = dict(hgc_operators(program, 32, 4))
+    # the tree's adders, the scatter's and the check's adder, the check's fold of 4 partials
+    assert dict(ops[many]) == {"add": 2 + 1 + 1 + 3, "mul": 3}
+    assert dict(ops[one]) == {"add": 1 + 1 + 1 + 3, "mul": 1}
+    assert dict(hgc_operators(program, 2, 4)[many][1]) == {"add": 1 + 1 + 1 + 3, "mul": 2}
     plan = build_plan(program)
     assert {f"hgc_{b}" for b in counts} <= {u.name for u in plan.units}
-    panels = [lp for ph in plan.phases if ph.name == "hgc" for p in ph.processes
-              if p.name == f"reduce_{many}" for lp in p.loops if lp.name == "panel"]
-    assert panels and all(lp.ii == 2 for lp in panels)
+    (entries,) = [lp for ph in plan.phases if ph.name == "hgc" for p in ph.processes
+                  if p.name == f"reduce_{many}" for lp in p.loops if lp.name == "entries"]
+    # a between factor's [A | b] is 3 x 7 (two poses and b), every entry of its packed
+    # triangle structurally non-zero: 28 entries an instance, one a cycle, depth read +
+    # multiply + a tree of ceil(log2 3) = 2 adds + write
+    assert len(gram_entries(program.blocks[many])) == 28
+    assert (entries.trip, entries.ii, entries.repeat) == (28, 1, counts[many])
+    assert entries.depth == 3 + 2 * 4 + 2
+
+
+def test_structurally_zero_gram_entries_are_never_computed():
+    # a GPS-like block touching only a position: the entries (p, q) no whitened row touches
+    # are left out of the tables (they keep GRAM's initial zeros)
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.hls.units.cholesky import gram_entries
+
+    program = compile_graph(example("lio").build(N=3), SolverConfig(linear="cholesky"), name="g")
+    gps = next(b for b in program.blocks if b.name == "GPSFactor")
+    entries = gram_entries(gps)
+    stride = sum(gps.variable_dims) + 1
+    assert len(entries) < stride * (stride + 1) // 2
+    assert (stride - 1, stride - 1) in entries  # b^T b
+    assert all(q <= p < stride for p, q in entries)

@@ -51,7 +51,7 @@ class PlanOptions:
     # in both rules)
     allocation_scaling: str = "instances"
     state_allocation: tuple[tuple[str, int], ...] = STATE_ALLOCATION  # retract_<k>'s limits
-    hgc_lanes: int = 16  # multiply-accumulate lanes of the Hessian/gradient unit
+    hgc_lanes: int = 32  # multipliers of each block type's Gram entries loop (HGC)
     # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
     # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and
     # ±1 entries are not stored), the residual and W's parameters, whitened while stacking

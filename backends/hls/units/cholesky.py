@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import math
 
-from fgc_backends.cfamily.sparsity import PANEL_TILES, TILE
+from fgc.ir.codes import NOISE_CODES
+from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_dot, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
@@ -66,60 +67,67 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     return loops
 
 
+def gram_entries(block) -> tuple[tuple[int, int], ...]:
+    """The (p, q), q <= p, of a block type's Gram of [A | b] that are structurally non-zero (some
+    whitened row touches both columns), in packed order: what accel.cpp.jinja's
+    ``gram_entries`` computes (its tables BLOCK<b>_GRAM_P / _Q); the rest of the instance's
+    packed triangle is never written and keeps GRAM's initial zeros."""
+    kinds = tuple(NOISE_CODES[m.noise_kind] for m in block.members)
+    pattern = block_pattern(block, kinds, f"block {block.name!r}")
+    return tuple((p, q) for p in range(pattern.stride) for q in range(p + 1)
+                 if pattern.gram_rows(p, q))
+
+
 def gram_ii(program, block: int, lanes: int) -> int:
-    """The II of block ``block``'s Gram panel rows (accel.cpp.jinja's gram_panel<..., GII>):
-    a row holds TILE x 2 TILE multiply-adds, so ``lanes`` multiply-add lanes take
-    ceil(2 TILE^2 / lanes) cycles a row; a block type with one instance (a prior: a few
-    hundred cycles an iteration at one lane) gets one lane."""
-    macs = TILE * PANEL_TILES * TILE
+    """The II of block ``block``'s Gram entries (accel.cpp.jinja's gram_entries<..., GII>): an
+    entry is a dot product of the block's m rows (m multiplies, m - 1 adds in a tree), so
+    ``lanes`` multipliers take ceil(m / lanes) cycles an entry; a block type with one instance
+    (a prior: a few hundred cycles an iteration at one lane) gets one multiplier and one adder
+    (II m)."""
+    m = program.blocks[block].residual_dim
     if sum(1 for f in program.factors if f.block == block) <= 1:
-        return macs
-    return -(-macs // max(1, min(lanes, macs)))
+        return m
+    return -(-m // max(1, min(lanes, m)))
 
 
 def hgc_operators(program, lanes: int, partials: int) -> list[tuple[int, tuple]]:
     """(block, operators) of each block type's HGC as accel.cpp.jinja's loops bind them: the
-    panel rows' multiply-add lanes (:func:`gram_ii`), the panel out's two folds of
-    ``partials`` partial sums a cycle (2 (partials - 1) adders), the gradient scatter's adder
-    and the finiteness check's adder and fold (partials - 1)."""
-    macs = TILE * PANEL_TILES * TILE
+    Gram entries' loop at :func:`gram_ii` (ceil(m / II) multipliers, ceil((m - 1) / II) adders
+    of its tree), the gradient scatter's adder and the finiteness check's adder and fold of
+    ``partials`` partial sums (partials - 1)."""
     out = []
-    for i in range(len(program.blocks)):
+    for i, b in enumerate(program.blocks):
         if not any(f.block == i for f in program.factors):
             continue
-        mac = -(-macs // gram_ii(program, i, lanes))
-        out.append((i, (("add", mac + 3 * (partials - 1) + 2), ("mul", mac))))
+        m, ii = b.residual_dim, gram_ii(program, i, lanes)
+        out.append((i, (("add", -(-(m - 1) // ii) + 1 + 1 + (partials - 1)),
+                        ("mul", -(-m // ii)))))
     return out
 
 
-def hgc_loops(program, timing: dict, lanes: int = 16) -> list[Process]:
+def hgc_loops(program, timing: dict, lanes: int = 32) -> list[Process]:
     """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded,
-    :data:`PORTS` words a cycle, the column map, the Gram panels - one row of a panel every
-    :func:`gram_ii` cycles into the adder latency's interleaved partial sums of TILE x 2 TILE
-    entries, a dot product of its rows (:func:`kernel_dot`) - each panel's lower-triangle
-    entries out into GRAM (folded, two a cycle: GRAM's two ports), the gradient scatter from
-    GRAM (II 1) and the finiteness check over the diagonal (interleaved partial sums: the
-    dot-product rule)),
-    after G is zeroed. The structural zeros between the panels are never written: GRAM keeps
-    its initial zeros there, so no pass clears it."""
+    :data:`PORTS` words a cycle, into a memory a row a bank, the column map, the Gram's
+    structurally non-zero entries (:func:`gram_entries`) one every :func:`gram_ii` cycles, each
+    the m rows' products folded in a tree (depth Lm + La ceil(log2 m) + read and write) into
+    GRAM, the gradient scatter from GRAM (II 1) and the finiteness check over the diagonal
+    (interleaved partial sums: the dot-product rule)), after G is zeroed. The structural zeros
+    are never written: GRAM keeps its initial zeros there, so no pass clears it."""
     n_t = sum(v.dim for v in program.variables)
     procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
+    la = timing["acc"][0]
+    lm = timing["acc"][1] - la
     for i, b in enumerate(program.blocks):
-        m, d, padded, tiles = _block_shape(b)
+        m, d, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         cols = d + 1
-        gii = gram_ii(program, i, lanes)
-        la = timing["acc"][0]  # the adder's latency: L_PARTIALS partial sums, folded
-        fold = la * (math.ceil(math.log2(la)) if la > 1 else 0)
+        tree = math.ceil(math.log2(m)) if m > 1 else 0
         loops = [kernel_loop("load", _ported(m * padded), "move", timing, n),
-                 kernel_loop("columns", d, "fill", timing, n)]
-        for k in range(tiles.count):
-            rows, wide = tiles.table[5 * k + 3], tiles.table[5 * k + 4]
-            dot = kernel_dot("panel", rows, timing, n)
-            loops += [Loop("panel", rows, max(gii, dot.ii), dot.depth, n),
-                      Loop("panel_out", TILE * wide * TILE // 2, 1, fold + 2, n)]
-        loops += [kernel_loop("scatter", d, "scatter", timing, n),
-                  kernel_dot("check", cols, timing, n)]
+                 kernel_loop("columns", d, "fill", timing, n),
+                 Loop("entries", len(gram_entries(b)), gram_ii(program, i, lanes),
+                      lm + la * tree + 2, n),
+                 kernel_loop("scatter", d, "scatter", timing, n),
+                 kernel_dot("check", cols, timing, n)]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
 

@@ -2071,61 +2071,27 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// HGC (paper B), one panel of `wide` (1 or 2) tiles side by side: rows p0 ... p0 + TILE - 1,
-// columns q0 ... q0 + wide TILE - 1 of the Gram, summed over the n rows rows[first ...] in order,
-// one row every GII cycles into TILE x 2 TILE accumulators (a one-tile panel's right half sums
-// zeros), written packed into the instance's GRAM at g0. One template instance per block type:
-// its row loop holds TILE x 2 TILE multiply-adds, so at II GII Vitis binds
-// ceil(2 TILE^2 / GII) multipliers and adders (the plan's hgc_<b> unit: its lanes).
-template <int STRIDE, int COLS, int ROWS, int GII>
-void gram_panel(const T ab[], const int rows[], int first, int n, int p0, int q0, int wide,
-                int g0) {
-    // the linear solver's scalar: the HGC accumulates in it; row k into partial sum
-    // k % L_PARTIALS of every entry (a row every GII cycles), folded per entry on the way out
-    L acc[L_PARTIALS][TILE][2 * TILE];
-#pragma HLS ARRAY_PARTITION variable=acc complete dim=0
-    for (int t = 0; t < L_PARTIALS; ++t) {
-#pragma HLS UNROLL
-        for (int i = 0; i < TILE; ++i) {
-#pragma HLS UNROLL
-            for (int j = 0; j < 2 * TILE; ++j) {
-#pragma HLS UNROLL
-                acc[t][i][j] = L(0);
-            }
-        }
-    }
-    for (int k = 0; k < n; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=ROWS
+// HGC (paper B): one instance's Gram of [A | b] entry by entry, the structurally non-zero
+// entries (p, q), q <= p, of its packed lower triangle (the block's tables P, Q) one every GII
+// cycles, each the dot product of columns p and q over the instance's ROWS rows: ROWS products
+// folded in a binary tree (La ceil(log2 ROWS) deep), so at II GII Vitis binds
+// ceil(ROWS / GII) multipliers and ceil((ROWS - 1) / GII) adders (the plan's hgc_<b>), and no
+// accumulator is carried from one entry to the next. The rows are partitioned a row a bank by
+// the caller (two reads of each bank an entry: II 1 is legal). Written into GRAM at
+// g0 + p (p + 1) / 2 + q, one word a cycle; entries left out are structural zeros, never
+// written: GRAM keeps its initial zeros there. One template instance per block type.
+template <int PADDED, int ROWS, int ENTRIES, int GII>
+void gram_entries(const T ab[ROWS * PADDED], const int P[ENTRIES], const int Q[ENTRIES], int g0) {
+    for (int e = 0; e < ENTRIES; ++e) {
 #pragma HLS PIPELINE II=GII
-#pragma HLS DEPENDENCE variable=acc inter false
-        const int r = rows[first + k];
-        for (int i = 0; i < TILE; ++i) {
-            const L ap = ab[r * STRIDE + p0 + i];
-            for (int j = 0; j < 2 * TILE; ++j) {
-                const int q = q0 + j < STRIDE ? q0 + j : q0;  // a one-tile panel at the edge
-                acc[k % L_PARTIALS][i][j] += ap * L(ab[r * STRIDE + q]);
-            }
-        }
+        const int p = P[e], q = Q[e];
+        L prod[ROWS];
+        for (int r = 0; r < ROWS; ++r) prod[r] = L(ab[r * PADDED + p]) * L(ab[r * PADDED + q]);
+        GRAM[g0 + p * (p + 1) / 2 + q] = fgc_units::fold_partials<L, ROWS>(prod);
     }
-    // the panel out two entries a cycle (GRAM's two ports), each folded from its partial sums
-    for (int e = 0; e < TILE * wide * TILE; e += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=TILE*TILE
-#pragma HLS PIPELINE II=1
-        for (int h = 0; h < 2; ++h) {
-            const int i = (e + h) / (wide * TILE), j = (e + h) % (wide * TILE);
-            L part[L_PARTIALS];
-            for (int t = 0; t < L_PARTIALS; ++t) part[t] = acc[t][i][j];
-            const int p = p0 + i, q = q0 + j;  // the lower triangle's entries into GRAM, packed
-            if (q <= p && p < COLS) GRAM[g0 + p * (p + 1) / 2 + q] = fgc_units::fold_partials<L, L_PARTIALS>(part);
-        }
-    }
-    // the rows as a dot product of n terms at II GII or the dot-product rule's, whichever is
-    // larger (the plan's rule: its depth holds the fold), then the panel out two entries a
-    // cycle through the fold (La ceil(log2 L_PARTIALS) deep, + read and write)
-    FGC_CYCLES("hgc", 0, "panel", n,
-               GII > fgc_units::dot_ii(n, L_PARTIALS, L_ADD_LAT) ? GII : fgc_units::dot_ii(n, L_PARTIALS, L_ADD_LAT),
-               fgc_units::dot_depth(n, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
-    FGC_CYCLES("hgc", 0, "panel_out", TILE * wide * TILE / 2, 1, L_ADD_LAT * fgc_units::ceil_log2(L_PARTIALS) + 2);
+    // read, multiply, the fold, write
+    FGC_CYCLES("hgc", 0, "entries", ENTRIES, GII,
+               L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(ROWS) + 2);
 }
 
 // From one instance's packed Gram of [A | b] in GRAM at g0 (row COLS - 1 is b^T A, then b^T b):
@@ -2439,6 +2405,73 @@ void load_rows_0(int f, T ab[480]) {
     }
 }
 
+// block 0: the (p, q) of its Gram's structurally non-zero entries, q <= p, in packed order (gram_entries)
+const int BLOCK0_GRAM_P[496] = {
+    0, 1, 1, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 5,
+    5, 5, 5, 5, 5, 6, 6, 6, 6, 6, 6, 6, 7, 7, 7, 7,
+    7, 7, 7, 7, 8, 8, 8, 8, 8, 8, 8, 8, 8, 9, 9, 9,
+    9, 9, 9, 9, 9, 9, 9, 10, 10, 10, 10, 10, 10, 10, 10, 10,
+    10, 10, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 12, 12,
+    12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 13, 13, 13, 13, 13,
+    13, 13, 13, 13, 13, 13, 13, 13, 13, 14, 14, 14, 14, 14, 14, 14,
+    14, 14, 14, 14, 14, 14, 14, 14, 15, 15, 15, 15, 15, 15, 15, 15,
+    15, 15, 15, 15, 15, 15, 15, 15, 16, 16, 16, 16, 16, 16, 16, 16,
+    16, 16, 16, 16, 16, 16, 16, 16, 16, 17, 17, 17, 17, 17, 17, 17,
+    17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 18, 18, 18, 18, 18,
+    18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 19, 19,
+    19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19,
+    19, 19, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20,
+    20, 20, 20, 20, 20, 20, 20, 21, 21, 21, 21, 21, 21, 21, 21, 21,
+    21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 22, 22, 22,
+    22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22,
+    22, 22, 22, 22, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23,
+    23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 24, 24, 24, 24,
+    24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24,
+    24, 24, 24, 24, 24, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25,
+    25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 26,
+    26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26,
+    26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 27, 27, 27, 27, 27, 27,
+    27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27,
+    27, 27, 27, 27, 27, 27, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28,
+    28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28,
+    28, 28, 28, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29,
+    29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29,
+    29, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30,
+    30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30,
+};
+const int BLOCK0_GRAM_Q[496] = {
+    0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4, 0,
+    1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6, 0, 1, 2, 3,
+    4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1, 2,
+    3, 4, 5, 6, 7, 8, 9, 0, 1, 2, 3, 4, 5, 6, 7, 8,
+    9, 10, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 0, 1,
+    2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 0, 1, 2, 3, 4,
+    5, 6, 7, 8, 9, 10, 11, 12, 13, 0, 1, 2, 3, 4, 5, 6,
+    7, 8, 9, 10, 11, 12, 13, 14, 0, 1, 2, 3, 4, 5, 6, 7,
+    8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7,
+    8, 9, 10, 11, 12, 13, 14, 15, 16, 0, 1, 2, 3, 4, 5, 6,
+    7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 0, 1, 2, 3, 4,
+    5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 0, 1,
+    2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17,
+    18, 19, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13,
+    14, 15, 16, 17, 18, 19, 20, 0, 1, 2, 3, 4, 5, 6, 7, 8,
+    9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 0, 1, 2,
+    3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18,
+    19, 20, 21, 22, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
+    12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 0, 1, 2, 3,
+    4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19,
+    20, 21, 22, 23, 24, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,
+    11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 0,
+    1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16,
+    17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 0, 1, 2, 3, 4, 5,
+    6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21,
+    22, 23, 24, 25, 26, 27, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9,
+    10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25,
+    26, 27, 28, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12,
+    13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28,
+    29, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
+    15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30,
+};
 // block 0: the gradient and the HGC's Gram of each instance from AB; false if not finite
 bool reduce_0() {
     bool finite = true;
@@ -2446,7 +2479,7 @@ bool reduce_0() {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[480];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=32
+#pragma HLS ARRAY_PARTITION variable=ab block factor=15
         load_rows_0(f, ab);
         int col[30];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
@@ -2458,14 +2491,8 @@ bool reduce_0() {
         FGC_CYCLES("reduce_0", 0, "load", 240, 1, 2);
         FGC_CYCLES("reduce_0", 0, "columns", 30, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM: the block's non-zero tiles, a panel at a time. Tiles left out are structural
-        // zeros, and no pass clears them: no code writes their entries, so they keep GRAM's
-        // initial zeros (the global's initialiser, the RAM's initial contents) from call to call
-        for (int t = 0; t < 20; ++t) {
-            const int p0 = BLOCK0_TILES[5 * t], q0 = BLOCK0_TILES[5 * t + 1];
-            const int first = BLOCK0_TILES[5 * t + 2], n = BLOCK0_TILES[5 * t + 3];
-            gram_panel<32, 31, 15, 2>(ab, BLOCK0_TILE_ROWS, first, n, p0, q0, BLOCK0_TILES[5 * t + 4], FACTOR_GRAM_OFF[f]);
-        }
+        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        gram_entries<32, 15, 496, 1>(ab, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, FACTOR_GRAM_OFF[f]);
         finite = gradient_from_gram<31>(FACTOR_GRAM_OFF[f], col) && finite;
         FGC_CYCLES("reduce_0", 0, "scatter", 30, 1, 6);
         FGC_CYCLES("reduce_0", 0, "check", 31, fgc_units::dot_ii(31, L_PARTIALS, L_ADD_LAT),
@@ -2558,6 +2585,15 @@ void load_rows_1(int f, T ab[48]) {
     }
 }
 
+// block 1: the (p, q) of its Gram's structurally non-zero entries, q <= p, in packed order (gram_entries)
+const int BLOCK1_GRAM_P[28] = {
+    0, 1, 1, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 5,
+    5, 5, 5, 5, 5, 6, 6, 6, 6, 6, 6, 6,
+};
+const int BLOCK1_GRAM_Q[28] = {
+    0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4, 0,
+    1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6,
+};
 // block 1: the gradient and the HGC's Gram of each instance from AB; false if not finite
 bool reduce_1() {
     bool finite = true;
@@ -2565,21 +2601,15 @@ bool reduce_1() {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
+#pragma HLS ARRAY_PARTITION variable=ab block factor=6
         load_rows_1(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         FGC_CYCLES("reduce_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM: the block's non-zero tiles, a panel at a time. Tiles left out are structural
-        // zeros, and no pass clears them: no code writes their entries, so they keep GRAM's
-        // initial zeros (the global's initialiser, the RAM's initial contents) from call to call
-        for (int t = 0; t < 2; ++t) {
-            const int p0 = BLOCK1_TILES[5 * t], q0 = BLOCK1_TILES[5 * t + 1];
-            const int first = BLOCK1_TILES[5 * t + 2], n = BLOCK1_TILES[5 * t + 3];
-            gram_panel<8, 7, 6, 32>(ab, BLOCK1_TILE_ROWS, first, n, p0, q0, BLOCK1_TILES[5 * t + 4], FACTOR_GRAM_OFF[f]);
-        }
+        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        gram_entries<8, 6, 28, 6>(ab, BLOCK1_GRAM_P, BLOCK1_GRAM_Q, FACTOR_GRAM_OFF[f]);
         finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
         FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_1", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
@@ -2667,6 +2697,13 @@ void load_rows_2(int f, T ab[12]) {
     }
 }
 
+// block 2: the (p, q) of its Gram's structurally non-zero entries, q <= p, in packed order (gram_entries)
+const int BLOCK2_GRAM_P[7] = {
+    0, 1, 2, 3, 3, 3, 3,
+};
+const int BLOCK2_GRAM_Q[7] = {
+    0, 1, 2, 0, 1, 2, 3,
+};
 // block 2: the gradient and the HGC's Gram of each instance from AB; false if not finite
 bool reduce_2() {
     bool finite = true;
@@ -2674,21 +2711,15 @@ bool reduce_2() {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[12];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=4
+#pragma HLS ARRAY_PARTITION variable=ab block factor=3
         load_rows_2(f, ab);
         int col[3];  // per column: its tangent entry
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         FGC_CYCLES("reduce_2", 0, "load", 6, 1, 2);
         FGC_CYCLES("reduce_2", 0, "columns", 3, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM: the block's non-zero tiles, a panel at a time. Tiles left out are structural
-        // zeros, and no pass clears them: no code writes their entries, so they keep GRAM's
-        // initial zeros (the global's initialiser, the RAM's initial contents) from call to call
-        for (int t = 0; t < 1; ++t) {
-            const int p0 = BLOCK2_TILES[5 * t], q0 = BLOCK2_TILES[5 * t + 1];
-            const int first = BLOCK2_TILES[5 * t + 2], n = BLOCK2_TILES[5 * t + 3];
-            gram_panel<4, 4, 3, 32>(ab, BLOCK2_TILE_ROWS, first, n, p0, q0, BLOCK2_TILES[5 * t + 4], FACTOR_GRAM_OFF[f]);
-        }
+        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        gram_entries<4, 3, 7, 3>(ab, BLOCK2_GRAM_P, BLOCK2_GRAM_Q, FACTOR_GRAM_OFF[f]);
         finite = gradient_from_gram<4>(FACTOR_GRAM_OFF[f], col) && finite;
         FGC_CYCLES("reduce_2", 0, "scatter", 3, 1, 6);
         FGC_CYCLES("reduce_2", 0, "check", 4, fgc_units::dot_ii(4, L_PARTIALS, L_ADD_LAT),
@@ -2776,6 +2807,13 @@ void load_rows_3(int f, T ab[48]) {
     }
 }
 
+// block 3: the (p, q) of its Gram's structurally non-zero entries, q <= p, in packed order (gram_entries)
+const int BLOCK3_GRAM_P[13] = {
+    0, 1, 2, 3, 4, 5, 6, 6, 6, 6, 6, 6, 6,
+};
+const int BLOCK3_GRAM_Q[13] = {
+    0, 1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6,
+};
 // block 3: the gradient and the HGC's Gram of each instance from AB; false if not finite
 bool reduce_3() {
     bool finite = true;
@@ -2783,21 +2821,15 @@ bool reduce_3() {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
+#pragma HLS ARRAY_PARTITION variable=ab block factor=6
         load_rows_3(f, ab);
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         FGC_CYCLES("reduce_3", 0, "load", 24, 1, 2);
         FGC_CYCLES("reduce_3", 0, "columns", 6, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM: the block's non-zero tiles, a panel at a time. Tiles left out are structural
-        // zeros, and no pass clears them: no code writes their entries, so they keep GRAM's
-        // initial zeros (the global's initialiser, the RAM's initial contents) from call to call
-        for (int t = 0; t < 2; ++t) {
-            const int p0 = BLOCK3_TILES[5 * t], q0 = BLOCK3_TILES[5 * t + 1];
-            const int first = BLOCK3_TILES[5 * t + 2], n = BLOCK3_TILES[5 * t + 3];
-            gram_panel<8, 7, 6, 32>(ab, BLOCK3_TILE_ROWS, first, n, p0, q0, BLOCK3_TILES[5 * t + 4], FACTOR_GRAM_OFF[f]);
-        }
+        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        gram_entries<8, 6, 13, 6>(ab, BLOCK3_GRAM_P, BLOCK3_GRAM_Q, FACTOR_GRAM_OFF[f]);
         finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
         FGC_CYCLES("reduce_3", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_3", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
