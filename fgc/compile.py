@@ -22,7 +22,8 @@ from fgc.ir.program import Program, SolverConfig, check_program
 
 
 def compile_graph(graph: Graph, solver: SolverConfig | None = None, name: str = "fgc_problem",
-                  max_variables: int | None = None, local_frame: bool = True) -> Program:
+                  max_variables: int | None = None, local_frame: bool = True,
+                  robust_types: frozenset[str] = frozenset()) -> Program:
     """Compile ``graph``'s structure into a Program for ``solver`` (default options).
 
     Structure errors (unconstrained variable, gauge freedom, more variables than
@@ -30,7 +31,10 @@ def compile_graph(graph: Graph, solver: SolverConfig | None = None, name: str = 
     origin gets a local frame (``Program.frame``, ``fgc.ir.frame``: what float32 needs, and the
     same for every precision so that one data file serves every design of the graph) unless
     ``local_frame`` is False (the streaming paths, whose data are assembled keyframe by keyframe
-    in world coordinates).
+    in world coordinates). A block member is built with a robust-loss datapath
+    (``MemberSpec.robust``) only when one of its factors has a robust loss, or its factor type
+    is in ``robust_types`` (a stream's template window, whose later windows may hold robust
+    factors the template's own factors lack).
     """
     solver = solver or SolverConfig()
     solver.check()
@@ -41,7 +45,7 @@ def compile_graph(graph: Graph, solver: SolverConfig | None = None, name: str = 
                      batch_every=solver.batch_every, max_variables=limit)
     blocks = fuse(graph)                                          # derive + CSE per block type
     storage = plan_storage(blocks, chain_layout(graph, sched), solver.linear)
-    program = lower(graph, blocks, sched, storage, solver, name, limit)
+    program = lower(graph, blocks, sched, storage, solver, name, limit, robust_types)
     if local_frame:
         program = replace(program, frame=frame.choose(graph))
     check_program(program)

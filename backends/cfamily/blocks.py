@@ -53,6 +53,7 @@ class MemberSlot:
     noise_in: int
     robust_data: int
     dense: int = 0  # full noise: leading rows whitened as whole rows (the rest: ``tail``)
+    robust: bool = True  # a robust loss possible (MemberSpec.robust): reweight / robust_loss
     tail: tuple[tuple[int, int, int, tuple[tuple[int, int], ...]], ...] = ()
 
 
@@ -135,7 +136,7 @@ def _build_block(b: int, block: BlockSpec, storage: tuple[int, ...],
         words = sum(n for _, n in m.measurements)
         members.append(MemberSlot(m.rows[0], m.rows[1] - m.rows[0], NOISE_CODES[m.noise_kind],
                                   m.noise_params, words, data, meas_in, data + words, noise_in,
-                                  data + words + m.noise_params))
+                                  data + words + m.noise_params, robust=m.robust))
         data += words + m.noise_params + 2
         meas_in += words
         noise_in += m.noise_params

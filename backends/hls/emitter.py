@@ -242,6 +242,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
             "blocks": blocks, "network": network, "retract_hw": retract,
+            # reweight / robust_loss are printed only for a design with a robust member
+            "robust_any": any(m.robust for b in blocks for m in b.members),
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's copies: the memories' two ports shared out over the unit sets
             "bs_words": max(1, 2 // max(1, sets)), "bs_ii": -(-max(1, sets) // 2),

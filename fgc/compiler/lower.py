@@ -23,17 +23,28 @@ from fgc.ir.program import (
 
 
 def lower(graph: Graph, blocks: Sequence[FactorBlock], sched: Schedule, storage: StoragePlan,
-          solver: SolverConfig, name: str, max_variables: int) -> Program:
-    """Assemble the Program; block types are numbered in order of first appearance."""
+          solver: SolverConfig, name: str, max_variables: int,
+          robust_types: frozenset[str] = frozenset()) -> Program:
+    """Assemble the Program; block types are numbered in order of first appearance. A member
+    is flagged robust (:attr:`MemberSpec.robust`) when a factor of it in ``graph`` has a robust
+    loss or its factor type is in ``robust_types``."""
     types: dict[str, int] = {}
     specs: list[BlockSpec] = []
     instances = []
+    robust: list[list[bool]] = []  # per block type, per member: some factor has a robust loss
     for b in blocks:
         if b.type.key not in types:
             types[b.type.key] = len(specs)
             specs.append(_block_spec(b, graph))
+            robust.append([False] * len(b.factors))
+        flags = robust[types[b.type.key]]
+        for k, f in enumerate(b.factors):
+            flags[k] = flags[k] or f.noise.robust is not None or f.type.name in robust_types
         instances.append(BlockInstance(types[b.type.key], tuple(str(k) for k in b.keys),
                                     tuple(b.indices)))
+    specs = [dataclasses.replace(s, members=tuple(
+        dataclasses.replace(m, robust=r) for m, r in zip(s.members, flags, strict=True)))
+        for s, flags in zip(specs, robust, strict=True)]
     variables = tuple(VariableSpec(str(k), v.type.__name__, v.type.dim, v.type.storage_dim,
                                    isinstance(k, int))
                       for k, v in graph.variables.items())

@@ -284,8 +284,11 @@ class WindowTemplate:
         if ordering is not None:
             solver = replace(solver, ordering=ordering)
         kind = "window" if ordering is None else ordering
+        # world-coordinate window data; a member of a type some chain factor makes robust
+        # gets the robust-loss datapath, though the template's own factors may have none
+        robust = frozenset(f.type.name for f in graph.factors if f.noise.robust is not None)
         self.template = compile_graph(template, solver, name=f"{program.name}_{kind}{size}",
-                                      local_frame=False)  # window data are world coordinates
+                                      local_frame=False, robust_types=robust)
         # every graph factor by its signature (type, (keyframe, position) per variable)
         self.by_signature = {self._signature(f, 0): i for i, f in enumerate(graph.factors)}
         spans = [[self.cluster_of[str(k)] for k in f.keys] for f in graph.factors]

@@ -59,8 +59,14 @@ def check_structure(data: ProblemData, program: Program, what: str = "the data")
 
 def factor_words(measured: dict, noise, member) -> list[np.ndarray]:
     """One factor's numbers in a block instance's data, as arrays: its measurements in the
-    member's order, its noise parameters, its robust loss (code, k)."""
+    member's order, its noise parameters, its robust loss (code, k). A robust loss on a member
+    the Program built without one (``MemberSpec.robust`` False) is refused: its accelerator
+    has no datapath for it."""
     robust = noise.robust
+    if robust is not None and not member.robust:
+        raise DataError(f"a {member.factor_type} factor has a {robust.kind} robust loss, but the "
+                        f"compiled Program's {member.factor_type} members have none (it was "
+                        "compiled from a graph without robust losses there: compile this graph)")
     return [*(np.asarray(measured[name], float).reshape(-1) for name, _ in member.measurements),
             noise.params(), np.array([ROBUST_CODES[robust.kind if robust else None],
                                       robust.k if robust else 0.0])]
@@ -104,7 +110,10 @@ def problem_data(graph: Graph, program: Program) -> ProblemData:
                                 f"{keys}, the compiled Program connects {expected}: the graph "
                                 "has another structure (compile it, or use its own Program)")
             measured = f.measured if frame is None else frame.local_measured(f)
-            parts += factor_words(measured, f.noise, member)
+            try:
+                parts += factor_words(measured, f.noise, member)
+            except DataError as err:
+                raise DataError(f"factor {index} ('{f.name}'): {err}") from None
         factors.append(np.concatenate(parts))
     return ProblemData(variables, tuple(factors), program.structure_fingerprint)
 

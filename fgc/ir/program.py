@@ -189,6 +189,10 @@ class MemberSpec:
     # the block variable each of the factor's keys is, in the factor's key order (empty: a
     # Program that predates the field)
     positions: tuple[int, ...] = ()
+    # whether any factor of this member may carry a robust loss (its data's robust code may be
+    # non-zero): False lets a backend build no robust-loss datapath for it, and data with a
+    # robust loss on such a member are refused (True: a Program that predates the field)
+    robust: bool = True
 
 
 @dataclass(frozen=True)
@@ -321,7 +325,8 @@ def structure_summary(p: Program) -> dict:
     out = {
         "variables": [[v.key, v.type_name, v.dim, v.storage_dim] for v in p.variables],
         "blocks": [[b.variable_types, [[m.factor_type, m.rows, m.noise_kind, m.noise_params,
-                                        m.measurements, m.positions] for m in b.members]]
+                                        m.measurements, m.positions, m.robust]
+                                       for m in b.members]]
                    for b in p.blocks],
         "factors": [[f.block, f.keys, f.factors] for f in p.factors],
     }
@@ -337,7 +342,7 @@ def _tuples(x):
 def _block_from_dict(b: dict) -> BlockSpec:
     members = tuple(MemberSpec(m["factor_type"], tuple(m["rows"]), m["noise_kind"],
                                m["noise_params"], _tuples(m["measurements"]),
-                               tuple(m.get("positions", ())))
+                               tuple(m.get("positions", ())), m.get("robust", True))
                     for m in b["members"])
 
     def text(k: dict) -> KernelText:

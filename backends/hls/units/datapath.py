@@ -107,8 +107,8 @@ def whitening_ops(bc) -> dict[str, int]:
     (``fgc_backends.cfamily.blocks.BlockContext``): per member ``whiten`` (full noise: row i's
     leading product for every row, then R_ij times row j for the dense rows j > i; otherwise one
     product an entry), its ``whiten_tail`` (an add per constant entry, a multiply-add per
-    right-hand side) and ``reweight`` (‖e‖², two square roots, the weight's divides, the rows
-    scaled)."""
+    right-hand side) and, for a member with a robust loss (``MemberSpec.robust``), ``reweight``
+    (‖e‖², two square roots, the weight's divides, the rows scaled)."""
     s, ops = bc.padded, {"add": 0, "mul": 0, "div": 0, "sqrt": 0}
     for m in bc.members:
         r, d = m.rows, m.dense
@@ -120,6 +120,8 @@ def whitening_ops(bc) -> dict[str, int]:
         for _, _, _, entries in m.tail:
             ops["add"] += len(entries) + 1
             ops["mul"] += 1
+        if not m.robust:  # no reweight call printed
+            continue
         ops["add"] += r + 1  # reweight: the squared norm, k² + e²
         ops["mul"] += r + 3 + r * s
         ops["div"] += 2
@@ -128,18 +130,21 @@ def whitening_ops(bc) -> dict[str, int]:
 
 
 def robust_ops(bc) -> dict[str, int]:
-    """The operations of one ``cost_of_<b>`` iteration outside ``factor_<b>``: per member
-    ``robust_loss`` (its Huber and Cauchy branches both built) and its sum, then the total's."""
-    nm = len(bc.members)
-    return {"add": 2 * nm + 1, "mul": 9 * nm, "div": nm, "sqrt": nm, "special": nm}
+    """The operations of one ``cost_of_<b>`` iteration outside ``factor_<b>``: per member its
+    sum and, with a robust loss (``MemberSpec.robust``), ``robust_loss`` (its Huber and Cauchy
+    branches both built), then the total's."""
+    nm, nr = len(bc.members), sum(m.robust for m in bc.members)
+    ops = {"add": nm + nr + 1, "mul": 9 * nr, "div": nr, "sqrt": nr, "special": nr}
+    return {k: n for k, n in ops.items() if n}
 
 
 def instance_accesses(bc, mode: str) -> list[tuple[int, int]]:
     """(accesses, banks) of one instance to each global memory the Jacobian (``mode``
     "jacobian") or cost loop touches: X (the variables' storage), DATA_BUF (its measurements
     and noise parameters, two robust words a member) and, in Jacobian mode, AB (its whitened
-    rows, m × (d + 1) words). None of them is partitioned (one bank, two ports)."""
-    data = sum(m.meas_words + m.n_params + 2 for m in bc.members)
+    rows, m × (d + 1) words). None of them is partitioned (one bank, two ports). A member
+    without a robust loss reads no robust words."""
+    data = sum(m.meas_words + m.n_params + 2 * m.robust for m in bc.members)
     out = [(bc.n_x_in, 1), (data, 1)]
     if mode == "jacobian":
         out.append((bc.m * bc.stride, 1))

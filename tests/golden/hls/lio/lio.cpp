@@ -2406,19 +2406,6 @@ void whiten(T raw[], T ab[], const T p[]) {
     }
 }
 
-// sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
-// at the whitened residual norm, as GTSAM does.
-template <int STRIDE, int COLS, int ROWS>
-void reweight(T ab[], T code, T k) {
-    if (code == T(0)) return;
-    T e2 = T(0);
-    for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
-    const T e = fgc_sqrt(e2);
-    const T w = code == T(1) ? (e <= k ? T(1) : T(k / e)) : T(k * k / (k * k + e * e));
-    const T s = fgc_sqrt(w);
-    for (int i = 0; i < ROWS * STRIDE; ++i) ab[i] *= s;
-}
-
 // The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
 // moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
 // |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
@@ -2492,14 +2479,6 @@ bool accumulate(const T ab[], const int col[COLS - 1]) {
     return finite;
 }
 
-// rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
-T robust_loss(T half, T code, T k) {
-    if (code == T(0)) return half;
-    const T e = fgc_sqrt(T(2) * half);
-    if (code == T(1)) return e <= k ? half : T(k * e - T(0.5) * k * k);
-    return T(0.5) * k * k * fgc_log1p(e * e / (k * k));
-}
-
 // block 0: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_0(const T x[N_X], int f, T in[12], T dat[18]) {
     const int vb = FACTOR_VAR_BEGIN[f];
@@ -2522,7 +2501,6 @@ void evaluate_0(const T x[N_X]) {
         for (int c = 0; c < 48; ++c) raw[c] = T(0);
         factor_0(in, dat, raw);
         whiten<8, 7, 6, 1, 6>(raw + 0, ab + 0, dat + 12);
-        reweight<8, 7, 6>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 18], DATA_BUF[FACTOR_DATA_OFF[f] + 19]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
@@ -2595,7 +2573,7 @@ T cost_of_0(const T x[N_X], T total) {
         gather_0(x, f, in, dat);
         factor_cost_0(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 18], DATA_BUF[FACTOR_DATA_OFF[f] + 19]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
     FGC_CYCLES("factor_0_cost", 0, "instances", 1, 48, 377);
@@ -2624,7 +2602,6 @@ void evaluate_1(const T x[N_X]) {
         for (int c = 0; c < 12; ++c) raw[c] = T(0);
         factor_1(in, dat, raw);
         whiten<4, 4, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
-        reweight<4, 4, 3>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 3; ++r) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
@@ -2697,7 +2674,7 @@ T cost_of_1(const T x[N_X], T total) {
         gather_1(x, f, in, dat);
         factor_cost_1(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
     FGC_CYCLES("factor_1_cost", 0, "instances", 1, 4, 18);
@@ -2726,7 +2703,6 @@ void evaluate_2(const T x[N_X]) {
         for (int c = 0; c < 48; ++c) raw[c] = T(0);
         factor_2(in, dat, raw);
         whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 6);
-        reweight<8, 7, 6>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
@@ -2799,7 +2775,7 @@ T cost_of_2(const T x[N_X], T total) {
         gather_2(x, f, in, dat);
         factor_cost_2(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
     FGC_CYCLES("factor_2_cost", 0, "instances", 1, 5, 22);
@@ -3066,9 +3042,7 @@ void evaluate_3(const T x[N_X]) {
         factor_3(in, dat, raw);
         whiten<32, 31, 15, 2, 9>(raw + 0, ab + 0, dat + 85);
         whiten_tail_3_0(raw + 0, ab + 0, dat + 85);
-        reweight<32, 31, 15>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 193], DATA_BUF[FACTOR_DATA_OFF[f] + 194]);
         whiten<32, 31, 6, 1, 6>(raw + 480, ab + 480, dat + 205);
-        reweight<32, 31, 6>(ab + 480, DATA_BUF[FACTOR_DATA_OFF[f] + 213], DATA_BUF[FACTOR_DATA_OFF[f] + 214]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 21; ++r) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
@@ -3142,20 +3116,20 @@ T noise_3(T noise) {
     return noise;
 }
 
-// block 3, cost mode: `total` plus the cost of its instances in order, one every II=108 cycles
+// block 3, cost mode: `total` plus the cost of its instances in order, one every II=106 cycles
 T cost_of_3(const T x[N_X], T total) {
     for (int i = 0; i < 7; ++i) {
-#pragma HLS PIPELINE II=108
+#pragma HLS PIPELINE II=106
         const int f = BLOCK3_INSTANCES[i];
         T in[42], dat[211], half[2];
         gather_3(x, f, in, dat);
         factor_cost_3(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 193], DATA_BUF[FACTOR_DATA_OFF[f] + 194]);
-        cost += robust_loss(half[1], DATA_BUF[FACTOR_DATA_OFF[f] + 213], DATA_BUF[FACTOR_DATA_OFF[f] + 214]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
+        cost += half[1];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
-    FGC_CYCLES("factor_3_cost", 0, "instances", 7, 108, 600);
+    FGC_CYCLES("factor_3_cost", 0, "instances", 7, 106, 600);
     return total;
 }
 
@@ -3181,7 +3155,6 @@ void evaluate_4(const T x[N_X]) {
         for (int c = 0; c < 24; ++c) raw[c] = T(0);
         factor_4(in, dat, raw);
         whiten<8, 7, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
-        reweight<8, 7, 3>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 3; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
@@ -3254,7 +3227,7 @@ T cost_of_4(const T x[N_X], T total) {
         gather_4(x, f, in, dat);
         factor_cost_4(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
     FGC_CYCLES("factor_4_cost", 0, "instances", 8, 6, 18);

@@ -1051,19 +1051,6 @@ void whiten(T raw[], T ab[], const T p[]) {
     }
 }
 
-// sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
-// at the whitened residual norm, as GTSAM does.
-template <int STRIDE, int COLS, int ROWS>
-void reweight(T ab[], T code, T k) {
-    if (code == T(0)) return;
-    T e2 = T(0);
-    for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
-    const T e = fgc_sqrt(e2);
-    const T w = code == T(1) ? (e <= k ? T(1) : T(k / e)) : T(k * k / (k * k + e * e));
-    const T s = fgc_sqrt(w);
-    for (int i = 0; i < ROWS * STRIDE; ++i) ab[i] *= s;
-}
-
 // The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
 // moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
 // |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
@@ -1137,14 +1124,6 @@ bool accumulate(const T ab[], const int col[COLS - 1]) {
     return finite;
 }
 
-// rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
-T robust_loss(T half, T code, T k) {
-    if (code == T(0)) return half;
-    const T e = fgc_sqrt(T(2) * half);
-    if (code == T(1)) return e <= k ? half : T(k * e - T(0.5) * k * k);
-    return T(0.5) * k * k * fgc_log1p(e * e / (k * k));
-}
-
 // block 0: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_0(const T x[N_X], int f, T in[24], T dat[13]) {
     const int vb = FACTOR_VAR_BEGIN[f];
@@ -1168,7 +1147,6 @@ void evaluate_0(const T x[N_X]) {
         for (int c = 0; c < 96; ++c) raw[c] = T(0);
         factor_0(in, dat, raw);
         whiten<16, 13, 6, 0, 6>(raw + 0, ab + 0, dat + 12);
-        reweight<16, 13, 6>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 13; ++c) AB[a0 + r * 13 + c] = ab[r * 16 + c];
@@ -1243,7 +1221,7 @@ T cost_of_0(const T x[N_X], T total) {
         gather_0(x, f, in, dat);
         factor_cost_0(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
     FGC_CYCLES("factor_0_cost", 0, "instances", 6, 24, 388);
@@ -1272,7 +1250,6 @@ void evaluate_1(const T x[N_X]) {
         for (int c = 0; c < 48; ++c) raw[c] = T(0);
         factor_1(in, dat, raw);
         whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 12);
-        reweight<8, 7, 6>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
@@ -1345,7 +1322,7 @@ T cost_of_1(const T x[N_X], T total) {
         gather_1(x, f, in, dat);
         factor_cost_1(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
     FGC_CYCLES("factor_1_cost", 0, "instances", 1, 48, 377);

@@ -20,10 +20,10 @@ void convert_inputs(const double* x, const double* factor_data) {
 
 extern "C" {
 
-// The structure fingerprint this library was compiled for (design fd68b88bb4d676ae): the
+// The structure fingerprint this library was compiled for (design 6ba058d8ce5a4cad): the
 // caller refuses data of another structure before it reaches the kernel.
 const char* fgc_structure() {
-    return "aec0bf602da30c22";
+    return "f9f74f37094aaf64";
 }
 
 // Set (or with null clear) the function called after each accepted iteration of fgc_run with

@@ -1,0 +1,160 @@
+"""The factor datapaths (backends/hls/units/datapath.py): the per-member robust flag
+(``MemberSpec.robust``) from the graph through the Program, the data files, the emitted kernel,
+the plan and the second reader."""
+
+from __future__ import annotations
+
+import json
+import re
+
+import numpy as np
+import pytest
+
+import fgc
+from fgc.compile import compile_graph
+from fgc.errors import DataError, FgcError
+from fgc.frontend.factors import BetweenFactor, PriorFactor
+from fgc.frontend.geometry import Pose2
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import Program, SolverConfig
+from fgc_backends.cfamily.blocks import block_contexts
+from fgc_backends.hls import HlsConfig, emit
+from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
+from fgc_backends.hls.reader import emitted_files, read_design
+from fgc_backends.hls.units.datapath import instance_accesses, robust_ops, whitening_ops
+
+
+def _graph(robust_between: int | None = None) -> fgc.Graph:
+    """A Pose2 chain: a prior and four odometry edges; edge ``robust_between`` under Huber."""
+    g = fgc.Graph()
+    for i in range(5):
+        g.add_variable(f"x{i}", Pose2(1.0 * i + 0.05, 0.02 * i, 0.01))
+    g.add(PriorFactor("x0", Pose2(0.0, 0.0, 0.0), fgc.noise.isotropic(3, 0.1)))
+    for i in range(4):
+        model = fgc.noise.diagonal([0.1, 0.1, 0.05])
+        if i == robust_between:
+            model = fgc.noise.huber(1.345, model)
+        g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0), model))
+    return g
+
+
+SOLVER = SolverConfig(linear="cholesky", cpe=1)
+
+
+def _flags(program: Program) -> dict[str, bool]:
+    return {m.factor_type: m.robust for b in program.blocks for m in b.members}
+
+
+def test_the_flag_says_whether_any_factor_of_the_member_is_robust():
+    plain = compile_graph(_graph(), SOLVER, name="plain")
+    mixed = compile_graph(_graph(robust_between=2), SOLVER, name="mixed")
+    assert _flags(plain) == {"PriorFactorPose2": False, "BetweenFactorPose2": False}
+    # one robust instance of four makes the block type's member robust; the prior stays plain
+    assert _flags(mixed) == {"PriorFactorPose2": False, "BetweenFactorPose2": True}
+    # a factor type named robust (a stream template's later windows) is flagged without one
+    hinted = compile_graph(_graph(), SOLVER, name="hinted",
+                           robust_types=frozenset({"BetweenFactorPose2"}))
+    assert _flags(hinted) == _flags(mixed)
+    # the flag is structure: data of one do not feed the other
+    assert plain.structure_fingerprint != mixed.structure_fingerprint
+    assert plain.fingerprint != mixed.fingerprint
+    assert Program.from_json(mixed.to_json()) == mixed
+    # a Program written before the flag existed reads back with every member robust
+    old = json.loads(plain.to_json())
+    for b in old["blocks"]:
+        for m in b["members"]:
+            del m["robust"]
+    assert set(_flags(Program.from_dict(old)).values()) == {True}
+
+
+def test_robust_data_on_a_member_built_without_a_robust_loss_is_refused():
+    plain = compile_graph(_graph(), SOLVER, name="plain")
+    with pytest.raises(DataError, match=r"factor 3 .*huber robust loss.*BetweenFactorPose2") as e:
+        problem_data(_graph(robust_between=2), plain)
+    assert isinstance(e.value, FgcError)
+    problem_data(_graph(), plain)  # its own data pass
+
+
+def test_plan_prices_no_robust_datapath_for_plain_members():
+    plain = compile_graph(_graph(), SOLVER, name="plain")
+    mixed = compile_graph(_graph(robust_between=2), SOLVER, name="mixed")
+    (prior, between), (_, rbetween) = block_contexts(plain, False), block_contexts(mixed, False)
+    for ops in (robust_ops(prior), robust_ops(between), whitening_ops(prior)):
+        assert not any(ops.get(k) for k in ("div", "sqrt", "special")), ops
+    assert robust_ops(prior) == {"add": 2}  # the member's sum and the total's
+    assert robust_ops(rbetween)["special"] == 1 and whitening_ops(rbetween)["sqrt"] == 2
+    # a plain member reads no robust words from DATA_BUF
+    assert instance_accesses(rbetween, "cost")[1][0] == instance_accesses(between, "cost")[1][0] + 2
+    dsp = {}
+    for p in (plain, mixed):
+        units = dict(plan_cost(build_plan(p, PlanOptions.for_config(HlsConfig(), p))).dsp_by_unit)
+        dsp[p.name] = units
+    assert dsp["plain"]["factor_0"] == dsp["mixed"]["factor_0"]  # the prior: plain in both
+    assert dsp["plain"]["factor_1"] < dsp["mixed"]["factor_1"]
+
+
+def _kernel_calls(text: str, block: int) -> tuple[str, str]:
+    """The bodies of evaluate_<block> and cost_of_<block> in the emitted kernel."""
+    out = []
+    for fn in (f"void evaluate_{block}(", f"T cost_of_{block}("):
+        start = text.index(fn)
+        out.append(text[start:text.index("\n}\n", start)])
+    return out[0], out[1]
+
+
+def _emit_and_read(robust_between, tmp_path) -> tuple[str, dict, dict]:
+    """The emitted kernel's text and, per block, the plan's and the second reader's DSP of its
+    factor datapath (the reader: the block's Jacobian and cost loops, each once per module
+    instance of its function)."""
+    program = compile_graph(_graph(robust_between), SOLVER, name="chain")
+    config = HlsConfig()
+    out = tmp_path / str(robust_between)
+    emit(program, out, config)
+    plan = build_plan(program, PlanOptions.for_config(config, program))
+    units = dict(plan_cost(plan).dsp_by_unit)
+    tab = plan.target.ops("float32")
+    dsp_of = {"add": tab.add.dsp, "mul": tab.mul.dsp, "div": tab.div.dsp,
+              "sqrt": tab.sqrt.dsp, "special": tab.special.dsp}
+    files, top = emitted_files(out)
+    design = read_design(files, top, tab.add.latency)
+    modules = dict(design.modules)
+    plan_dsp, reader_dsp = {}, {}
+    for block in range(len(program.blocks)):
+        loops = [r for r in design.loops
+                 if re.fullmatch(rf"(?:evaluate|cost_of)_{block}", r.function)]
+        reader_dsp[block] = sum(r.dsp(dsp_of) * modules[r.function] for r in loops)
+        plan_dsp[block] = units[f"factor_{block}"]
+        if not program.blocks[block].members[0].robust:  # no robust loss's operators
+            assert not {"sqrt", "special"} & {k for r in loops for k, _ in r.ops}
+    return (out / "chain.cpp").read_text(), plan_dsp, reader_dsp
+
+
+def test_emitted_kernel_and_second_reader_agree_with_the_plan(tmp_path):
+    read = {}
+    for robust_between in (None, 2):
+        text, plan_dsp, reader_dsp = _emit_and_read(robust_between, tmp_path)
+        for block, robust in ((0, False), (1, robust_between is not None)):
+            evaluate, cost = _kernel_calls(text, block)
+            assert ("reweight<" in evaluate) == robust and ("robust_loss(" in cost) == robust
+        # a design without a robust member prints neither helper
+        assert ("T robust_loss(" in text) == (robust_between is not None)
+        for block in plan_dsp:  # the reader's count is a lower bound of what Vitis binds
+            assert reader_dsp[block] <= plan_dsp[block], (block, reader_dsp, plan_dsp)
+        read[robust_between] = plan_dsp, reader_dsp
+    (plan0, reader0), (plan1, reader1) = read[None], read[2]
+    # the robust loss's datapath: what the plan adds for it, the text adds (within 15 %)
+    added_plan, added_reader = plan1[1] - plan0[1], reader1[1] - reader0[1]
+    assert added_reader > 0 and abs(added_plan - added_reader) <= 0.15 * added_reader, (
+        added_plan, added_reader)
+    assert plan0[0] == plan1[0] and reader0[0] == reader1[0]  # the prior: plain in both
+
+
+def test_template_window_flags_what_later_windows_make_robust():
+    from fgc.compiler.stream import WindowTemplate, compile_chain
+    graph = _graph(robust_between=3)  # the last edge: outside a two-keyframe template
+    program = compile_chain(graph, SOLVER)
+    template = WindowTemplate(graph, program, 2)
+    assert not any(f.noise.robust for f in template.template_factors)
+    assert _flags(template.template)["BetweenFactorPose2"] is True
+    words = template._factor(4, template.template.blocks[1].members[0])
+    assert np.count_nonzero(words[-2:]) == 2  # the robust loss's code and k, as written
