@@ -96,7 +96,7 @@ def test_a_keyframe_brings_only_its_own_words(lio6):
 def test_a_wrong_shift_breaks_the_agreement(lio6, tmp_path):
     graph, program, data, _, _, native = lio6
     bad = OnChipFixedLagStream(graph, program, 2, "double", out_dir=tmp_path)
-    cpp = bad.project.directory / f"{bad.project.name}.cpp"
+    cpp = bad.project.directory / "include" / "fgc_stream.h"  # the shift is the stream header's
     text = cpp.read_text()
     # the factors stay in their slots on a shift (the variables' move alone changes only
     # where LM starts: 9e-8 at the optimum)
@@ -105,6 +105,8 @@ def test_a_wrong_shift_breaks_the_agreement(lio6, tmp_path):
                            "DATA_BUF[DATA_MOVES[2 * k]] : T(0);")
     assert patched != text
     cpp.write_text(patched)
+    # the Makefile's objects do not list the headers: rebuild the kernel's from the patched one
+    (bad.project.directory / f"{bad.project.name}.o").unlink(missing_ok=True)
     try:
         chip = bad.run(data)
     except Exception:  # noqa: BLE001 - a failure is as good as a disagreement here
@@ -205,6 +207,37 @@ def test_the_model_prices_the_batch_step_on_the_batch_kernel(lio7_paper_a):
     assert "kept_walk" in {t.name for t in prices[5].terms}
     assert all(p.cycles > 0 for p in prices)
 
+
+
+def _body(text: str, signature: str) -> str:
+    """The body of the function whose definition starts with ``signature`` in ``text``."""
+    start = text.index("{", text.index(signature))
+    depth = 0
+    for i in range(start, len(text)):
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        if depth == 0:
+            return text[start + 1:i]
+    raise AssertionError(f"{signature}: no closing brace")
+
+
+def test_the_stream_section_is_the_static_header_and_the_kernel_only_wires_it(lio7_paper_a):
+    """Issue 31 item 5: the streaming top and the batch kernel's entries hold no loop of their
+    own, they call fgc_stream.h (configured by the kernels' StreamConfig); the header holds the
+    stream section's loops and its memories."""
+    _, _, stream, _, _ = lio7_paper_a
+    folder, name = stream.project.directory, stream.project.name
+    window = (folder / f"{name}.cpp").read_text()
+    top = _body(window, f"void {name}_stream(")
+    assert "for (" not in top and "fgc::stream_call<fgc::StreamConfig>(" in top
+    assert "KEPT_R[" not in window and "BATCH_X[" not in window  # declared by the header
+    batch_cpp = next(p for p in folder.glob("*.cpp")
+                     if p.name not in (f"{name}.cpp", f"tb_{name}.cpp"))
+    batch = batch_cpp.read_text()
+    for entry in ("reset", "in", "solve"):
+        body = _body(batch, f"void {batch_cpp.stem}_batch_{entry}(")
+        assert "for (" not in body and f"fgc::batch_kernel_{entry}<fgc::StreamConfig>(" in body
+    header = (folder / "include" / "fgc_stream.h").read_text()
+    assert "void stream_call(" in header and "L KEPT_R[" in header
 
 def test_a_cholesky_incremental_plan_stays_on_the_host():
     from fgc.app.streaming import on_chip

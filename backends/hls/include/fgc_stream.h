@@ -10,6 +10,18 @@
 //                        (kept_matvec<CFG>, kept_conditional<CFG> inside)
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
+//   FGC_STREAM_WINDOW    stream_call<CFG>(op, x_in, data, x_out, [x_kept,] errors, info): the
+//                        streaming top's whole body (reset, keyframe in, solve, marginal, kept
+//                        net, window out); the generated top holds only its interface pragmas
+//   FGC_STREAM_BATCH_KERNEL  batch_kernel_reset / batch_kernel_in / batch_kernel_solve<CFG>: the
+//                        batch kernel's entries (its file's <name>_batch_* call them)
+//
+// The memories of the stream section are declared here (the window's call counters; kept: the
+// kept conditionals KEPT_R / KEPT_S / KEPT_D, their points KEPT_LIN / KEPT_NEXT, X_KEPT; batch:
+// BATCH_X / BATCH_COND / BATCH_TAU), sized by the kernel's constants (STREAM_*, KEPT_MAX,
+// BATCH_SLOTS). The kernel keeps the tables (data), the Log kernels (its variable kinds) and the
+// wiring: StreamConfig's constants and hooks (lm_solve, leaf_step, batch_reset / batch_in /
+// batch_solve; the batch kernel's linearize / eliminate).
 //
 // Define the parts the design has, then include this file inside the kernel's namespace after
 // its tables and memories, which the functions name (the window's X, DATA_BUF, COND, NF, the
@@ -25,6 +37,26 @@
 #define FGC_STREAM_H
 
 #ifdef FGC_STREAM_WINDOW
+int STREAM_COUNT = 0;  // keyframes since the reset call (saturates at STREAM_SLOTS)
+#ifdef FGC_STREAM_KEPT
+// the kept Bayes net (incremental mode): keyframe c < first (the window's oldest) is kept as its
+// conditional R_c d_c + S_c d_c+1 = d_c, linearised at KEPT_LIN[c] with its parent at
+// KEPT_NEXT[c], its estimate in X_KEPT[c]; every update walks them back from the window,
+// x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
+L KEPT_R[KEPT_MAX * STREAM_KF_T * STREAM_KF_T];  // R_c, row-major (upper triangular)
+L KEPT_S[KEPT_MAX * STREAM_KF_T * STREAM_KF_T];  // S_c, row-major
+L KEPT_D[KEPT_MAX * STREAM_KF_T];
+T KEPT_LIN[KEPT_MAX * STREAM_KF_X];
+T KEPT_NEXT[KEPT_MAX * STREAM_KF_X];
+T X_KEPT[KEPT_MAX * STREAM_KF_X];
+int STREAM_TOTAL = 0;  // keyframes since the reset call
+#endif
+#ifdef FGC_STREAM_BATCH
+T BATCH_X[BATCH_SLOTS * STREAM_KF_X];  // keyframes 0 … j to and from the batch kernel
+L BATCH_COND[BATCH_SLOTS * STREAM_KF_T * (2 * STREAM_KF_T + 1)];  // their conditionals
+L BATCH_TAU[STREAM_KF_T * (STREAM_KF_T + 1)];  // the factor passed into the next window's oldest
+#endif
+
 // Every slot down one: slot s takes slot s + 1's variables and the words of the factor one
 // keyframe on (zero noise words where there is none; slot 0's prior takes slot 1's, tau). The
 // pairs are ordered so each word is read before it is overwritten: no iteration reads a word an
@@ -353,6 +385,195 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
     return write_tau<CFG>(BATCH_TAU) ? 1 : 2;
 }
 #endif  // FGC_STREAM_BATCH
+
+#ifdef FGC_STREAM_WINDOW
+#ifdef FGC_STREAM_KEPT
+#define FGC_STREAM_KEPT_ARG , T x_kept[STREAM_KEPT_WORDS]
+#else
+#define FGC_STREAM_KEPT_ARG
+#endif
+// The streaming top's body. op 0 resets the window (x_in: every slot's storage, data: every
+// factor's words); op 2 (batch steps) resets the batch kernel the same way; op 1 brings the next
+// keyframe (x_in: its storage, data: its words, then the batch kernel's) and runs the update:
+// the shift once the window is full, LM on the window (or the batch step), the kept conditional's
+// re-expression, the marginal tau, the new kept conditional, the walk back, the window out.
+// errors = {initial, final} of the solve, info = {iterations, status, reason, slot, marginal}.
+template <class CFG>
+void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA], T x_out[N_X]
+                 FGC_STREAM_KEPT_ARG, T errors[2], int info[5]) {
+    FGC_EVENT("call");
+    if (op == 0) {  // reset: the whole window in (the slots' values, every factor's words)
+        FGC_PHASE("setup");
+        for (int i = 0; i < N_X; ++i) {
+#pragma HLS PIPELINE II=1
+            X[i] = x_in[i];
+        }
+        for (int i = 0; i < N_DATA; ++i) {
+#pragma HLS PIPELINE II=1
+            DATA_BUF[i] = data[i];
+        }
+        FGC_CYCLES("top", 0, "x_in", N_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        FGC_CYCLES("top", 0, "data_in", N_DATA, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        STREAM_COUNT = 0;
+#ifdef FGC_STREAM_KEPT
+        STREAM_TOTAL = 0;
+#endif
+        errors[0] = T(0);
+        errors[1] = T(0);
+        for (int i = 0; i < 5; ++i) info[i] = 0;
+        return;
+    }
+#ifdef FGC_STREAM_BATCH
+    if (op == 2) {  // the batch kernel's reset: its slots' values, every factor's words
+        CFG::batch_reset(x_in, data);
+        errors[0] = T(0);
+        errors[1] = T(0);
+        for (int i = 0; i < 5; ++i) info[i] = 0;
+        return;
+    }
+#endif
+    const int j = STREAM_COUNT;
+    const int m = j < STREAM_SLOTS - 1 ? j : STREAM_SLOTS - 1;  // the keyframe's slot
+#ifdef FGC_STREAM_KEPT
+    const int total = STREAM_TOTAL;  // this keyframe's index
+    const int first = total < STREAM_W ? 0 : total - STREAM_W;  // the window's oldest
+#ifdef FGC_STREAM_BATCH
+    if (j >= STREAM_SLOTS) {  // slot 0 (keyframe first - 1) leaves: its estimate kept (a batch
+        for (int k = 0; k < STREAM_KF_X; ++k) {  // step starts from it; the walk rewrites it)
+#pragma HLS PIPELINE II=1
+            X_KEPT[(first - 1) * STREAM_KF_X + k] = X[SLOT_X[k]];
+        }
+        FGC_CYCLES("top", 0, "leave", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    }
+#endif
+#endif
+    if (j >= STREAM_SLOTS) stream_shift<CFG>();
+    stream_in<CFG>(m, x_in, data);
+    int marginal = 0;  // 0: none left, 1: tau written, 2: singular (not written)
+#ifdef FGC_STREAM_BATCH
+    // keyframe total's words for the batch kernel follow the window's
+    if (total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
+    if (IS_BATCH[total]) {
+        marginal = batch_step<CFG>(total, first, errors, info);
+    } else {
+#endif
+        CFG::lm_solve(errors, info);
+#ifdef FGC_STREAM_KEPT
+        if (first > 0) reexpress<CFG>(first - 1);
+#endif
+#ifdef FGC_STREAM_MARGINAL
+        if (m == STREAM_W) marginal = marginalize<CFG>() ? 1 : 2;
+#endif
+#ifdef FGC_STREAM_KEPT
+        if (m == STREAM_W && marginal == 1) keep<CFG>(first);
+        kept_walk<CFG>(first);
+#endif
+#ifdef FGC_STREAM_BATCH
+    }
+#endif
+#ifdef FGC_STREAM_KEPT
+    FGC_PHASE("setup");
+    for (int i = 0; i < first * STREAM_KF_X; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KEPT_WORDS
+#pragma HLS PIPELINE II=1
+        x_kept[i] = X_KEPT[i];
+    }
+    FGC_CYCLES("top", 0, "x_kept_out", first * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    STREAM_TOTAL = total + 1;
+#endif
+    FGC_PHASE("setup");
+    for (int i = 0; i < N_X; ++i) {
+#pragma HLS PIPELINE II=1
+        x_out[i] = X[i];
+    }
+    FGC_CYCLES("top", 0, "x_out", N_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    info[3] = m;
+    info[4] = marginal;
+    STREAM_COUNT = j < STREAM_SLOTS ? j + 1 : STREAM_SLOTS;
+}
+#undef FGC_STREAM_KEPT_ARG
+#endif  // FGC_STREAM_WINDOW
+
+#ifdef FGC_STREAM_BATCH_KERNEL
+// The batch kernel (fgc_backends/hls/window.py, BatchLayout: slot c holds keyframe c, eliminated
+// serially oldest first, so each slot's step leaves its conditional on the next slot and passes
+// the next its factor). Its reset: every slot's storage, every factor's words (zero information,
+// priors held).
+template <class CFG>
+void batch_kernel_reset(const T x_in[N_X], const T data[N_DATA]) {
+    FGC_PHASE("batch_in");
+    for (int i = 0; i < N_X; ++i) {
+#pragma HLS PIPELINE II=1
+        X[i] = x_in[i];
+    }
+    for (int i = 0; i < N_DATA; ++i) {
+#pragma HLS PIPELINE II=1
+        DATA_BUF[i] = data[i];
+    }
+}
+
+// Keyframe c into slot c: its storage, its factors' and its prior's words.
+template <class CFG>
+void batch_kernel_in(int c, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
+    FGC_PHASE("batch_in");
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        X[SLOT_X[c * STREAM_KF_X + k]] = x_in[k];
+    }
+    FGC_CYCLES("batch", 0, "keyframe_x_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    const int b = STREAM_NEW_BEGIN[c], n = STREAM_NEW_BEGIN[c + 1] - b;
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
+#pragma HLS PIPELINE II=1
+        DATA_BUF[NEW_DEST[b + k]] = data[k];
+    }
+    FGC_CYCLES("batch", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+// The batch step over keyframes 0 … j: x_io in (their estimates, keyframe c at c * STREAM_KF_X),
+// LM from there, x_io out (the optimum); then the chain linearised there and eliminated once more
+// at mu = 0: cond_out[c] (c < j) each keyframe's conditional (R | S | d, KF_T x (2 KF_T + 1)),
+// tau_out the factor keyframe tau_slot's step passes to the next (KF_T x (KF_T + 1)), if
+// tau_slot >= 0. info = {iterations, status, reason, 1 if the elimination was full rank}.
+template <class CFG>
+void batch_kernel_solve(int j, int tau_slot, T x_io[STREAM_SLOTS * STREAM_KF_X],
+                        L cond_out[STREAM_SLOTS * STREAM_KF_T * (2 * STREAM_KF_T + 1)],
+                        L tau_out[STREAM_KF_T * (STREAM_KF_T + 1)], T errors[2], int info[4]) {
+    FGC_PHASE("batch_in");
+    for (int e = 0; e < (j + 1) * STREAM_KF_X; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_X
+#pragma HLS PIPELINE II=1
+        X[SLOT_X[e]] = x_io[e];
+    }
+    FGC_CYCLES("batch", 0, "x_in", (j + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    CFG::lm_solve(errors, info);
+    const bool ok = CFG::linearize() && CFG::eliminate();
+    info[3] = ok ? 1 : 0;
+    FGC_PHASE("batch_out");
+    for (int e = 0; e < (j + 1) * STREAM_KF_X; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_X
+#pragma HLS PIPELINE II=1
+        x_io[e] = X[SLOT_X[e]];
+    }
+    FGC_CYCLES("batch", 0, "x_out", (j + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    const int words = STREAM_KF_T * (2 * STREAM_KF_T + 1);
+    for (int e = 0; e < j * words; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_COND
+#pragma HLS PIPELINE II=1
+        const int c = e / words;
+        cond_out[e] = COND[STEP_COND_OFF[SLOT_STEP[c]] + e - c * words];
+    }
+    FGC_CYCLES("batch", 0, "conditionals_out", j * words, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    if (tau_slot >= 0) {
+        const int n0 = STEP_NF_OFF[SLOT_STEP[tau_slot]];
+        for (int e = 0; e < STREAM_KF_T * (STREAM_KF_T + 1); ++e) {
+#pragma HLS PIPELINE II=1
+            tau_out[e] = NF[n0 + e];
+        }
+        FGC_CYCLES("batch", 0, "tau_out", STREAM_KF_T * (STREAM_KF_T + 1), CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    }
+}
+#endif  // FGC_STREAM_BATCH_KERNEL
 
 #undef FGC_KEPT_PASS
 
