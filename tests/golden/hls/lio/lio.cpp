@@ -3417,6 +3417,9 @@ struct LesConfig {
     static const int LOCAL_COLS = ::fgc::LOCAL_COLS;
     static const bool LM = true;  // false: Gauss-Newton, no damping rows
     static const int MAX_W = ::fgc::MAX_W;
+    static const int UNIT_SETS = 2;  // a level's steps go UNIT_SETS at a time to the unit sets
+    static const int MAX_LEVEL_WIDTH = 2;
+    static const int ROOT_II = 1, ROOT_DEPTH = 15;  // sqrt(mu), once per solve
     // fgc_eliminate.h's loops: the tables' largest trip counts, the plan's (II, depth) of L
     static const int MAX_STEP_FACTORS = 5, MAX_CHILDREN = 2;
     static const int TRIP_COND = 465;  // a conditional, PORTS words a cycle
@@ -3475,50 +3478,34 @@ void qr_level(int rows0, int f0, int s0,
     qr_set1(rows1, f1, s1, work1, cond1, update1, bad1);
 }
 
-// the elimination driver (fgc_eliminate.h: qr_stack, qr_commit) on these tables and memories
+// the elimination driver (fgc_eliminate.h) on these tables and memories, the unit sets'
+// wiring its hooks: each set's banks, the qr_level region, each set's buffers
 #define FGC_ELIMINATE_QR
 #include "fgc_eliminate.h"
 
-// Eliminate every step, level by level: a level's steps are independent, the unit sets take
-// them 2 at a time (stack, the sets' DATAFLOW region, commit). False if rank deficient.
+struct QrSets {
+    static void stack(int u, int s, T root_mu) {
+        if (u == 0) qr_stack<LesConfig>(s, root_mu, WORK0);
+        if (u == 1) qr_stack<LesConfig>(s, root_mu, WORK1);
+    }
+    static void level(const bool has[2], const int s[2], bool bad[2]) {
+        qr_level(has[0] ? STEP_ROWS[s[0]] : 0, has[0] ? STEP_F[s[0]] : 0,
+                 has[0] ? STEP_W[s[0]] - STEP_F[s[0]] : 0, WORK0, CONDBUF0, UPDBUF0, &bad[0],
+                 has[1] ? STEP_ROWS[s[1]] : 0, has[1] ? STEP_F[s[1]] : 0,
+                 has[1] ? STEP_W[s[1]] - STEP_F[s[1]] : 0, WORK1, CONDBUF1, UPDBUF1, &bad[1]);
+    }
+    static void commit(int u, int s) {
+        if (u == 0) qr_commit<LesConfig>(s, CONDBUF0, UPDBUF0);
+        if (u == 1) qr_commit<LesConfig>(s, CONDBUF1, UPDBUF1);
+    }
+};
+
 bool eliminate_all(T mu) {
     // each unit set's banks: the global itself partitioned (what qr_stack and the Update units
     // read and write), one memory per bank, N_UNITS words a cycle
 #pragma HLS ARRAY_PARTITION variable=WORK0 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=WORK1 complete dim=1
-    FGC_EVENT("solve");
-    FGC_PHASE("qr_stack");
-    const T root_mu = fgc_sqrt(mu);
-    FGC_CYCLES("stack", 0, "root_mu", 1, 1, 15);
-    bool ok = true;
-    for (int l = 0; l < N_LEVELS; ++l) {
-        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=2
-            const bool has0 = i + 0 < LEVEL_BEGIN[l + 1];
-            const int s0 = has0 ? LEVEL_STEPS[i + 0] : 0;
-            if (has0) qr_stack<LesConfig>(s0, root_mu, WORK0);
-            bool bad0 = false;
-            const bool has1 = i + 1 < LEVEL_BEGIN[l + 1];
-            const int s1 = has1 ? LEVEL_STEPS[i + 1] : 0;
-            if (has1) qr_stack<LesConfig>(s1, root_mu, WORK1);
-            bool bad1 = false;
-            FGC_PHASE("qr");
-            qr_level(has0 ? STEP_ROWS[s0] : 0, has0 ? STEP_F[s0] : 0,
-                     has0 ? STEP_W[s0] - STEP_F[s0] : 0, WORK0, CONDBUF0, UPDBUF0, &bad0,
-                     has1 ? STEP_ROWS[s1] : 0, has1 ? STEP_F[s1] : 0,
-                     has1 ? STEP_W[s1] - STEP_F[s1] : 0, WORK1, CONDBUF1, UPDBUF1, &bad1);
-            FGC_JOIN();
-            if (has0) {
-                ok = ok && !bad0;
-                qr_commit<LesConfig>(s0, CONDBUF0, UPDBUF0);
-            }
-            if (has1) {
-                ok = ok && !bad1;
-                qr_commit<LesConfig>(s1, CONDBUF1, UPDBUF1);
-            }
-        }
-    }
-    return ok;
+    return qr_eliminate_all<LesConfig, QrSets>(mu);
 }
 
 // ---- back-substitution: one unit per unit set, each on its own buffers (a level's steps go

@@ -1459,6 +1459,9 @@ struct LesConfig {
     static const int LOCAL_COLS = ::fgc::LOCAL_COLS;
     static const bool LM = true;  // false: Gauss-Newton, no damping rows
     static const int MAX_W = ::fgc::MAX_W;
+    static const int UNIT_SETS = 1;  // a level's steps go UNIT_SETS at a time to the unit sets
+    static const int MAX_LEVEL_WIDTH = 2;
+    static const int ROOT_II = 1, ROOT_DEPTH = 15;  // sqrt(mu), once per solve
     // fgc_eliminate.h's loops: the tables' largest trip counts, the plan's (II, depth) of L
     static const int MAX_STEP_FACTORS = 3, MAX_CHILDREN = 2;
     static const int TRIP_COND = 171;  // a conditional, PORTS words a cycle
@@ -1501,39 +1504,29 @@ void qr_level(int rows0, int f0, int s0,
     qr_set0(rows0, f0, s0, work0, cond0, update0, bad0);
 }
 
-// the elimination driver (fgc_eliminate.h: qr_stack, qr_commit) on these tables and memories
+// the elimination driver (fgc_eliminate.h) on these tables and memories, the unit sets'
+// wiring its hooks: each set's banks, the qr_level region, each set's buffers
 #define FGC_ELIMINATE_QR
 #include "fgc_eliminate.h"
 
-// Eliminate every step, level by level: a level's steps are independent, the unit sets take
-// them 1 at a time (stack, the sets' DATAFLOW region, commit). False if rank deficient.
+struct QrSets {
+    static void stack(int u, int s, T root_mu) {
+        if (u == 0) qr_stack<LesConfig>(s, root_mu, WORK0);
+    }
+    static void level(const bool has[1], const int s[1], bool bad[1]) {
+        qr_level(has[0] ? STEP_ROWS[s[0]] : 0, has[0] ? STEP_F[s[0]] : 0,
+                 has[0] ? STEP_W[s[0]] - STEP_F[s[0]] : 0, WORK0, CONDBUF0, UPDBUF0, &bad[0]);
+    }
+    static void commit(int u, int s) {
+        if (u == 0) qr_commit<LesConfig>(s, CONDBUF0, UPDBUF0);
+    }
+};
+
 bool eliminate_all(T mu) {
     // each unit set's banks: the global itself partitioned (what qr_stack and the Update units
     // read and write), one memory per bank, N_UNITS words a cycle
 #pragma HLS ARRAY_PARTITION variable=WORK0 complete dim=1
-    FGC_EVENT("solve");
-    FGC_PHASE("qr_stack");
-    const T root_mu = fgc_sqrt(mu);
-    FGC_CYCLES("stack", 0, "root_mu", 1, 1, 15);
-    bool ok = true;
-    for (int l = 0; l < N_LEVELS; ++l) {
-        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 1) {
-#pragma HLS LOOP_TRIPCOUNT max=2
-            const bool has0 = i + 0 < LEVEL_BEGIN[l + 1];
-            const int s0 = has0 ? LEVEL_STEPS[i + 0] : 0;
-            if (has0) qr_stack<LesConfig>(s0, root_mu, WORK0);
-            bool bad0 = false;
-            FGC_PHASE("qr");
-            qr_level(has0 ? STEP_ROWS[s0] : 0, has0 ? STEP_F[s0] : 0,
-                     has0 ? STEP_W[s0] - STEP_F[s0] : 0, WORK0, CONDBUF0, UPDBUF0, &bad0);
-            FGC_JOIN();
-            if (has0) {
-                ok = ok && !bad0;
-                qr_commit<LesConfig>(s0, CONDBUF0, UPDBUF0);
-            }
-        }
-    }
-    return ok;
+    return qr_eliminate_all<LesConfig, QrSets>(mu);
 }
 
 // ---- back-substitution: one unit per unit set, each on its own buffers (a level's steps go
