@@ -348,7 +348,13 @@ def _constants(codes: Iterable[str]) -> dict[str, int]:
     raw: dict[str, str] = {}
     for code in codes:
         for m in _CONSTEXPR.finditer(code):
-            raw.setdefault(m.group(1), m.group(2))
+            # `const int A = 4, B = 9;`: every declarator (split outside brackets)
+            first, *rest = _split_top(m.group(2))
+            raw.setdefault(m.group(1), first)
+            for part in rest:
+                more = re.fullmatch(r"\s*([A-Za-z_]\w*)\s*=\s*(.+?)\s*", part, re.S)
+                if more:
+                    raw.setdefault(more.group(1), more.group(2))
         for m in _DEFINE.finditer(code):
             raw.setdefault(m.group(1), m.group(2))
     values: dict[str, int] = {}
