@@ -45,6 +45,7 @@ from fgc_backends.hls.lint import (
     _line,
     _matching,
     _split_top,
+    statement_end,
     strip_comments_and_strings,
     synthesis_view,
 )
@@ -381,23 +382,10 @@ class _Reader:
                 pos = text.find("\n", m.start())
                 pos = n if pos < 0 else pos
                 continue
-            end = self._statement_end(text, m.start())
+            end = statement_end(text, m.start(), blocks=True)
             total.add(self.statement(text[m.start():end], scope, env, loop_var, outer, depth))
             pos = end + 1
         return total
-
-    @staticmethod
-    def _statement_end(text: str, pos: int) -> int:
-        depth = 0
-        for i in range(pos, len(text)):
-            ch = text[i]
-            if ch in "([":
-                depth += 1
-            elif ch in ")]":
-                depth -= 1
-            elif ch in ";{}" and depth <= 0:
-                return i
-        return len(text)
 
     def _body(self, text: str, pos: int) -> tuple[str, int]:
         """The statement or block after ``pos``: its text and the index after it."""
@@ -411,7 +399,7 @@ class _Reader:
             close = _matching(text, text.index("(", pos), "(", ")")
             _, after = self._body(text, close + 1)
             return text[pos:after], after
-        end = self._statement_end(text, pos)
+        end = statement_end(text, pos, blocks=True)
         return text[pos:end + 1], end + 1
 
     def _iterations(self, header: list[str], env: dict[str, int]
