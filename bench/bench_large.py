@@ -27,11 +27,12 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 
 import gtsam  # noqa: E402
+from datasets import fgc_error_in_gtsam  # noqa: E402  (bench/datasets.py)
 
 from fgc.app.specs import load_spec  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.errors import FgcError  # noqa: E402
-from fgc.interop.to_gtsam import to_gtsam, value_to_gtsam  # noqa: E402
+from fgc.interop.to_gtsam import to_gtsam  # noqa: E402
 from fgc.ir.datafile import problem_data  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
 from fgc_backends import native  # noqa: E402
@@ -53,15 +54,6 @@ def gtsam_lm(problem, solver: SolverConfig, ordering=None):
     optimizer = gtsam.LevenbergMarquardtOptimizer(problem.graph, problem.values, params)
     result = optimizer.optimize()
     return result, optimizer.iterations()
-
-
-def fgc_error_in_gtsam(graph, problem, result) -> float:
-    """GTSAM's error of its own graph at fgc's solution."""
-    values = gtsam.Values()
-    for key, var in graph.variables.items():
-        value = type(var.initial).from_storage(result.values[str(key)])
-        values.insert(problem.keys[key], value_to_gtsam(value))
-    return problem.graph.error(values)
 
 
 def best(fn, args, repeat: int):

@@ -50,7 +50,7 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
     precision = "float64" if config.scalar == "double" else "float32"
     tab = plan.target.ops(precision)  # the design's part and clock, as the plan prices it
     design = read_design(files, top, tab.add.latency)
-    issues = check(design.loops)
+    issues = check(design.reached_loops)
     mine = [i for i in issues if i.file in AROUND or i.file == f"{program.name}.cpp"]
     dsp_of = _dsp_of(tab)
     around_files = (*AROUND, f"{program.name}.cpp")
@@ -62,7 +62,8 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
                 recurrences=sum(i.rule == "ii_recurrence" for i in issues),
                 around=len(mine),
                 others=sorted({f"{i.file}:{i.line}" for i in issues if i not in mine}),
-                worst=max((r.ii_bound / r.ii for r in design.loops), default=1.0))
+                worst=max((r.ii_bound / r.ii for r in design.reached_loops if r.ii_known),
+                          default=1.0))
 
 
 def main(argv=None) -> int:

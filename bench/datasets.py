@@ -30,8 +30,19 @@ import gtsam
 from fgc.errors import FgcError
 from fgc.interop.datasets import read_pose_graph
 from fgc.interop.gtsam_data import gtsam_data_dir
+from fgc.interop.to_gtsam import value_to_gtsam
 
 VERIFY = "import sys; from fgc.app.cli import main; sys.exit(main(sys.argv[1:]))"
+
+
+def fgc_error_in_gtsam(graph, problem, result) -> float:
+    """GTSAM's error of its own graph at fgc's solution (``problem``: ``to_gtsam(graph)``;
+    bench_native.py and bench_large.py compare the two solvers' optima with it)."""
+    values = gtsam.Values()
+    for key, var in graph.variables.items():
+        value = type(var.initial).from_storage(result.values[str(key)])
+        values.insert(problem.keys[key], value_to_gtsam(value))
+    return problem.graph.error(values)
 
 
 def gtsam_count(path: str) -> tuple[str, int] | None:

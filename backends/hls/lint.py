@@ -348,7 +348,13 @@ def _constants(codes: Iterable[str]) -> dict[str, int]:
     raw: dict[str, str] = {}
     for code in codes:
         for m in _CONSTEXPR.finditer(code):
-            raw.setdefault(m.group(1), m.group(2))
+            # `const int A = 4, B = 9;`: every declarator (split outside brackets)
+            first, *rest = _split_top(m.group(2))
+            raw.setdefault(m.group(1), first)
+            for part in rest:
+                more = re.fullmatch(r"\s*([A-Za-z_]\w*)\s*=\s*(.+?)\s*", part, re.S)
+                if more:
+                    raw.setdefault(more.group(1), more.group(2))
         for m in _DEFINE.finditer(code):
             raw.setdefault(m.group(1), m.group(2))
     values: dict[str, int] = {}
@@ -401,18 +407,27 @@ def _constant_bounds(header: list[str]) -> bool:
     return bool(init and _is_constant(init.group(1)) and bound and _is_constant(bound.group(2)))
 
 
-def _statement_end(code: str, pos: int) -> int:
-    """Index of the ';' ending the statement at ``pos`` (outside brackets)."""
+def statement_end(code: str, pos: int, blocks: bool = False) -> int:
+    """Index of the ';' ending the C++ statement that starts at ``pos``: the first ';' outside
+    (), [] and {} (an initializer list or a lambda's body nests), or the '}' closing the block
+    the statement is in; ``len(code)`` if there is neither. ``blocks``: a '{' or '}' outside
+    () and [] ends the statement too (the second reader's scan, which reads a block's
+    statements one by one and its blocks apart). The one C++ statement scanner of the lint and
+    the second reader (backends/hls/reader.py)."""
     depth = 0
     for i in range(pos, len(code)):
         ch = code[i]
+        if ch in "{}" and blocks and depth <= 0:
+            return i
         if ch in "([{":
             depth += 1
         elif ch in ")]}":
+            if ch == "}" and depth == 0:
+                return i
             depth -= 1
-        elif ch == ";" and depth == 0:
+        elif ch == ";" and depth <= 0:
             return i
-    return len(code) - 1
+    return len(code)
 
 
 def _enclosing_block(code: str, pos: int) -> tuple[int, int]:
@@ -614,7 +629,7 @@ class _Checker:
                     body_hi = _matching(code, body_lo, "{", "}")
                     inner = (body_lo + 1, body_hi)
                 else:
-                    body_hi = _statement_end(code, body_lo)
+                    body_hi = statement_end(code, body_lo)
                     inner = (body_lo, body_hi + 1)
                 unrolled = re.match(r"\s*#\s*pragma\s+HLS\s+UNROLL\s*(?:\n|$)",
                                     code[inner[0]:inner[1]], re.I)
@@ -643,14 +658,14 @@ class _Checker:
                 elif w in ("else", "do"):
                     pos += len(w)
                 else:
-                    pos = _statement_end(code, pos) + 1
+                    pos = statement_end(code, pos) + 1
                 continue
             if code.startswith("{", pos):
                 end = _matching(code, pos, "{", "}")
                 self._region(file, code, pos + 1, end, calls, loop, pragma)
                 pos = end + 1
                 continue
-            end = min(_statement_end(code, pos), hi)
+            end = min(statement_end(code, pos), hi)
             self._statement(file, code, pos, code[pos:end].strip(), calls, loop)
             pos = end + 1
 

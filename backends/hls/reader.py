@@ -34,7 +34,7 @@ import math
 import re
 from collections import Counter
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from fgc_backends.hls.lint import (
     LintIssue,
@@ -45,6 +45,7 @@ from fgc_backends.hls.lint import (
     _line,
     _matching,
     _split_top,
+    statement_end,
     strip_comments_and_strings,
     synthesis_view,
 )
@@ -113,6 +114,7 @@ class LoopReading:
     ii_ports: int  # the smallest II its memories' ports allow
     recurrence: tuple[str, ...]  # carried read-modify-writes without DEPENDENCE inter false
     ii_recurrence: int  # the smallest II those recurrences allow (0: none)
+    ii_known: bool = True  # False: the pragma's II does not evaluate here (not judged)
 
     @property
     def ii_bound(self) -> int:
@@ -380,23 +382,10 @@ class _Reader:
                 pos = text.find("\n", m.start())
                 pos = n if pos < 0 else pos
                 continue
-            end = self._statement_end(text, m.start())
+            end = statement_end(text, m.start(), blocks=True)
             total.add(self.statement(text[m.start():end], scope, env, loop_var, outer, depth))
             pos = end + 1
         return total
-
-    @staticmethod
-    def _statement_end(text: str, pos: int) -> int:
-        depth = 0
-        for i in range(pos, len(text)):
-            ch = text[i]
-            if ch in "([":
-                depth += 1
-            elif ch in ")]":
-                depth -= 1
-            elif ch in ";{}" and depth <= 0:
-                return i
-        return len(text)
 
     def _body(self, text: str, pos: int) -> tuple[str, int]:
         """The statement or block after ``pos``: its text and the index after it."""
@@ -410,7 +399,7 @@ class _Reader:
             close = _matching(text, text.index("(", pos), "(", ")")
             _, after = self._body(text, close + 1)
             return text[pos:after], after
-        end = self._statement_end(text, pos)
+        end = statement_end(text, pos, blocks=True)
         return text[pos:end + 1], end + 1
 
     def _iterations(self, header: list[str], env: dict[str, int]
@@ -707,11 +696,13 @@ class _Reader:
         for m in re.finditer(r"#\s*pragma\s+HLS\s+PIPELINE\b([^\n]*)", code[lo:hi], re.I):
             if "off" in m.group(1).lower():
                 continue
-            ii = re.search(r"II\s*=\s*(\w+)", m.group(1))
+            ii = re.search(r"II\s*=\s*(\w+(?:\s*::\s*\w+)*)", m.group(1))
             value = self._value(ii.group(1), env) if ii else 1
             reading = self.loop(f, lo + m.start(), value or 1, env)
             if reading is not None:
-                out.append(reading)
+                # an II this text cannot evaluate (a configuration the design does not define)
+                # is read at 1 for its operators and not judged
+                out.append(reading if value else replace(reading, ii_known=False))
         return out
 
     def loop(self, f: _Function, pragma: int, ii: int, template: dict[str, int]
@@ -822,6 +813,14 @@ class DesignReading:
     # file -> operator instances by kind of the functions defined there (their own code and
     # pipelined loops; a callee's in its own file)
     by_file: tuple[tuple[str, tuple[tuple[str, int], ...]], ...] = ()
+    reached: tuple[tuple[str, str], ...] = ()  # (file, function) of what the top instantiates
+
+    @property
+    def reached_loops(self) -> tuple[LoopReading, ...]:
+        """The pipelined loops of the functions the top instantiates (``loops`` also reads
+        those of the headers' other functions)."""
+        mine = set(self.reached)
+        return tuple(r for r in self.loops if (r.file, r.function) in mine)
 
     def dsp(self, dsp_of: dict[str, int], files: Iterable[str] | None = None) -> int:
         """DSP of the whole design, or of the functions defined in ``files``."""
@@ -847,6 +846,7 @@ def _design(reader: _Reader, top: str) -> DesignReading:
 
     operators: Counter = Counter()
     modules: Counter = Counter()
+    visited: set[tuple[str, str]] = set()
     by_file: dict[str, Counter] = {}
 
     def own(f: _Function, env: dict[str, int]) -> Counter:
@@ -862,25 +862,38 @@ def _design(reader: _Reader, top: str) -> DesignReading:
         return Counter({k: min(limits.get(k, 1), n) for k, n in count.ops.items() if n})
 
     def visit(f: _Function, env: dict[str, int], mult: int, depth: int) -> None:
-        if depth > 40 or mult == 0:
+        if depth > 400 or mult == 0:  # a template recursion (a cascade of 80 CPEs) is deep
             return
         modules[f.qualname] += mult
+        seq: Counter = Counter()  # the sequential code's operators, its INLINE callees' merged
+        walk(f, env, mult, depth, seq)
         here = by_file.setdefault(f.file, Counter())
-        for kind, n in own(f, env).items():
+        for kind, n in seq.items():
             operators[kind] += n * mult
             here[kind] += n * mult
+
+    def walk(f: _Function, env: dict[str, int], mult: int, depth: int, seq: Counter) -> None:
+        """``f``'s code into the module being read: its sequential operators into ``seq``
+        (an INLINE callee's join its caller's: one RTL body), its pipelined loops' and its
+        other callees' instances apart."""
+        visited.add((f.file, f.name))
+        for kind, n in own(f, env).items():
+            seq[kind] = max(seq[kind], n)
+        here = by_file.setdefault(f.file, Counter())
         for r in loops_of(f, env):
             for kind, n in r.instances:
                 operators[kind] += n * mult
                 here[kind] += n * mult
         # ALLOCATION function instances=g limit=n in f: f's call sites of g share n instances
-        shared = reader.function_allocation(f.text, env)
-        left = dict(shared)
+        left = dict(reader.function_allocation(f.text, env))
         for callee, cenv, times in calls(f.text, env):
             if callee.name in left:
                 times = min(times, left[callee.name])
                 left[callee.name] -= times
-            visit(callee, cenv, mult * times, depth + 1)
+            if callee.inline and depth <= 400:
+                walk(callee, cenv, mult * times, depth + 1, seq)
+            else:
+                visit(callee, cenv, mult * times, depth + 1)
 
     def calls(text: str, env: dict[str, int]):
         pos = 0
@@ -912,14 +925,15 @@ def _design(reader: _Reader, top: str) -> DesignReading:
     if top not in reader.functions:
         raise KeyError(top)
     visit(reader.functions[top], {}, 1, 0)
-    reached = {(r.file, r.function) for rs in readings.values() for r in rs}
+    reached = {(file, name) for file, name in visited}
     loops = sorted({*(r for rs in readings.values() for r in rs),
                     *(r for r in reader.loops() if (r.file, r.function) not in reached)},
                    key=lambda r: (r.file, r.line, r.template))
     return DesignReading(top, tuple(loops), tuple(sorted(operators.items())),
                          tuple(sorted(modules.items())),
                          tuple(sorted((file, tuple(sorted(c.items())))
-                                      for file, c in by_file.items())))
+                                      for file, c in by_file.items())),
+                         tuple(sorted(reached)))
 
 
 def read_design(files: Iterable[tuple[str, str]], top: str, add_latency: int
@@ -938,6 +952,8 @@ def check(readings: Iterable[LoopReading]) -> list[LintIssue]:
     """A loop whose declared II is below what its memories or recurrences allow."""
     issues = []
     for r in readings:
+        if not r.ii_known:
+            continue
         args = ", ".join(f"{k}={v}" for k, v in r.template)
         where = f"'{r.label or r.function}' (in {r.function}{f'<{args}>' if args else ''})"
         if r.ii_ports > r.ii:

@@ -317,9 +317,11 @@ void kept_walk(int first) {
         for (int i = STREAM_KF_T - 1; i >= 0; --i) {
             delta[i] = delta[i] / KEPT_R[(c * STREAM_KF_T + i) * STREAM_KF_T + i];
             FGC_CYCLES("kept", 0, "divide", 1, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
+            // (delta[r], r < i, each updated once from delta[i], which this loop never writes)
             for (int r = 0; r < i; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T
 #pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=delta inter false
                 delta[r] -= KEPT_R[(c * STREAM_KF_T + r) * STREAM_KF_T + i] * delta[i];
             }
             FGC_CYCLES("kept", 0, "column", i, 1, CFG::L_ACC_DEPTH);

@@ -252,6 +252,10 @@ def _frontal(ctx) -> None:
     # the check's threshold multiplier: one operator of each a loop (cpe_step's sequential code)
     ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
                           (("add", 1), ("mul", 2), ("div", 1))))
+    # fgc_eliminate.h's cholesky_eliminate: the Grams' and the children's loops, each a
+    # pipelined HF += at II 1: an adder each
+    ctx.units.append(Unit("assemble", "the step's [H | g] from Grams and update matrices", 1,
+                          (("add", 2),)))
     loops = []
     for st in program.schedule.steps:
         loops += cpe_step_loops(st.frontal_dim, st.separator_dim, c, ops, name=f"s{st.index}")
