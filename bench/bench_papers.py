@@ -268,12 +268,13 @@ def paper_a_stream(cfg: Config) -> list[Row]:
     solver = SolverConfig(precision="float32", linear="qr")
     program = streaming.compile_stream(graph, solver, incremental=k, batch_every=batch)
     a = f"A (LIO N={n}, K={k}, batch at {', '.join(map(str, batch))})"
-    if not streaming.on_chip(program, None):
+    sp = streaming.stream_program(graph, program)
+    if not streaming.on_chip(sp):
         return [Row(a, "per-update latency vs ISAM2", "9.3× ISAM2", "not emitted on chip",
                     "the stream's Program has no on-chip design")]
-    pricer = streaming.WindowPricer(graph, program, None)
+    pricer = streaming.WindowPricer(sp)
     updates = []
-    streaming.run_stream(program, problem_data(graph, program), None, updates.append)
+    streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
     model = np.array([pricer.price(u).latency_ms for u in updates])
     res = pricer.model.resources()
     problem = to_gtsam(graph)

@@ -133,12 +133,13 @@ def hls_model(args) -> dict:
     solver = SolverConfig(precision=args.precision, units=args.units, cpe=args.cpe,
                           linear=args.linear)
     program = streaming.compile_stream(graph, solver, incremental=k, batch_every=batch)
-    on_chip = streaming.on_chip(program, None)
+    sp = streaming.stream_program(graph, program)
+    on_chip = streaming.on_chip(sp)
     # the emitted on-chip design's own price (QR); Cholesky: the update model of the host-kept path
-    model = (streaming.WindowPricer(graph, program, None) if on_chip
+    model = (streaming.WindowPricer(sp) if on_chip
              else streaming.update_model(graph, program))
     updates = []
-    result = streaming.run_stream(program, problem_data(graph, program), None, updates.append)
+    result = streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
     prices = [model.price(u) for u in updates]
     # the same update had it run one iteration (ISAM2 takes one Gauss-Newton step per update)
     once = [model.price(replace(u, iterations=1)) for u in updates]
@@ -371,7 +372,7 @@ def main(argv=None) -> int:
                                       problem_data(graph, prog), window, keep)
         final = {str(k): v for k, v in result.values.items()}
         acc = streaming.accuracy(graph, final, online, optimum)
-        pricer = streaming.UpdatePricer(graph, prog, window)
+        pricer = streaming.UpdatePricer(streaming.stream_program(graph, prog, window))
         model = [p["latency_ms"] for p in map(pricer.price, updates) if p]
         acc["model_ms"] = {"median": float(np.median(model)),
                            "p99": float(np.percentile(model, 99)), "priced": len(model)}

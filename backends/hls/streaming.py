@@ -156,7 +156,10 @@ def _project_key(template, config) -> str:
     h.update(__version__.encode())
     h.update(host_key().encode())
     backends = Path(__file__).resolve().parent.parent
-    for path in sorted([*(backends / "hls").rglob("*"), *(backends / "cfamily").rglob("*.py")]):
+    # cfamily's shared C++ (common.jinja, fgc_lm.h) is printed into the kernel too
+    for path in sorted([*(backends / "hls").rglob("*"), *(backends / "cfamily").rglob("*.py"),
+                        *(backends / "cfamily" / "templates").glob("*"),
+                        *(backends / "cfamily" / "include").glob("*")]):
         if path.is_file() and path.name not in ("stream.py", "streaming.py") and \
                 "__pycache__" not in path.parts:
             h.update(str(path.relative_to(backends)).encode())

@@ -210,8 +210,11 @@ def project_key(program: Program, config: NativeConfig) -> str:
     # not the streaming drivers (streaming.py, cfamily's stream.py), which call builds but print
     # nothing into them
     backends = Path(__file__).resolve().parent.parent
+    # and the C++ both kernels share (cfamily's common.jinja and fgc_lm.h)
     for module in sorted([*(backends / "native").glob("*.py"),
-                          *(backends / "cfamily").glob("*.py")]):
+                          *(backends / "cfamily").glob("*.py"),
+                          *(backends / "cfamily" / "templates").glob("*.jinja"),
+                          *(backends / "cfamily" / "include").glob("*.h")]):
         if module.name not in ("stream.py", "streaming.py"):
             h.update(module.read_bytes())
     return h.hexdigest()[:24]

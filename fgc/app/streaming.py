@@ -43,12 +43,13 @@ import numpy as np
 from fgc.app import metrics
 from fgc.app.run_report import gtsam_optimize, plan_summary
 from fgc.compiler.stream import check_mode, compile_chain, policy_of, prefix_program, stream_program
+from fgc.compiler.stream import compile_stream as stream_stage
 from fgc.errors import FgcError
 from fgc.frontend.dsl import Graph
 from fgc.frontend.geometry import Pose2, Pose3, type_named
 from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
 from fgc.ir.datafile import problem_data
-from fgc.ir.stream import StreamProgram
+from fgc.ir.stream import FixedLag, StreamProgram
 from fgc_backends import load
 
 __all__ = ["KeyframeResult", "StreamProgram", "UpdatePricer", "WindowPricer", "accuracy",
@@ -97,19 +98,27 @@ def compile_stream(graph: Graph, solver=None, incremental: int | None = None,
     return compile_chain(graph, solver, policy_of(incremental, batch_every, window), name)
 
 
-def run_stream(program, data, window: int | None = None, progress=None, precision=None,
+def run_stream(stream, data, window: int | None = None, progress=None, precision=None,
                backend: str = "sim", graph: Graph | None = None, scalar: str | None = None,
-               progress_build=None, sp: StreamProgram | None = None, runner=None):
-    """Run the updates keyframe by keyframe (the incremental plan if the Program has one, else
-    the fixed-lag ``window``); ``progress(KeyframeResult)`` after each keyframe.
+               progress_build=None, runner=None):
+    """Run the updates keyframe by keyframe under ``stream``'s policy; ``progress(KeyframeResult)``
+    after each keyframe. ``stream`` is the stream stage's StreamProgram (its policy, graph and
+    slot layout: what the commands pass), or, for a caller holding only a chain Program, that
+    Program with its ``window`` (None: the Program's incremental plan) and ``graph``.
 
     ``backend`` is reached through the contract (:func:`make_runner`): ``"sim"`` returns the
     simulator's SimResult (``precision`` overrides the Program's); ``"native"`` and ``"hls"``
     (``scalar`` "double" or "float", default the Program's precision) need the ``graph`` the
     Program was compiled from, compile their template windows first (``progress_build(size,
     index, count)`` before each) and return a :class:`fgc_backends.cfamily.stream.StreamResult`.
-    ``sp``: the StreamProgram, ``runner`` the backend's runner of it, if already made."""
-    sp = sp or stream_program(graph, program, window)
+    ``runner``: the backend's runner of the stream, if already made."""
+    if isinstance(stream, StreamProgram):
+        if window is not None or graph is not None:
+            raise FgcError("run_stream: a StreamProgram carries its policy and graph")
+        sp = stream
+    else:
+        sp = stream_program(graph, stream, window)
+    program = sp.program
     callback = None
     if progress is not None:
         def callback(raw):
@@ -149,14 +158,13 @@ def stream(graph: Graph, window: int | None = None, incremental: int | None = No
     ``incremental`` (K, with optional ``batch_every``)."""
     if window is None and incremental is None:
         raise FgcError("fgc.stream needs window=W or incremental=K")
-    program = compile_stream(graph, solver, incremental, batch_every, window)
-    data = problem_data(graph, program)
+    sp = stream_stage(graph, solver, policy_of(incremental, batch_every, window))
+    data = problem_data(graph, sp.program)
     results: queue.Queue = queue.Queue()
 
     def work():
         try:
-            run_stream(program, data, window, lambda r: results.put(("update", r)),
-                       backend=backend, graph=graph)
+            run_stream(sp, data, progress=lambda r: results.put(("update", r)), backend=backend)
             results.put(("done", None))
         except BaseException as exc:  # handed to the consumer, raised there
             results.put(("error", exc))
@@ -187,11 +195,12 @@ class UpdatePricer:
     per window size: the steady size (W + 1 of a fixed-lag window, K of an incremental plan)
     and at most ``max_sizes`` others as they come (later sizes: not priced, None)."""
 
-    def __init__(self, graph: Graph, program, window: int | None = None, max_sizes: int = 4):
-        self.graph, self.program, self.max_sizes = graph, program, max_sizes
+    def __init__(self, sp: StreamProgram, max_sizes: int = 4):
+        program = sp.program
+        self.graph, self.program, self.max_sizes = sp.graph, program, max_sizes
         self.per_iteration: dict[int, dict | None] = {}
-        plan = program.schedule.incremental
-        steady = window + 1 if window is not None else (plan.window if plan else None)
+        steady = sp.policy.window + 1 if isinstance(sp.policy, FixedLag) else \
+            program.schedule.incremental.window
         n = len(program.schedule.clusters)
         if steady is not None and 2 <= steady <= n:  # the size most updates have: first
             self._add(steady)
@@ -215,10 +224,10 @@ class UpdatePricer:
                 "window": size}
 
 
-def on_chip(program, window: int | None, graph: Graph | None = None,
-            backend: str = "hls") -> bool:
-    """Whether the hardware ``backend``'s design runs the stream on chip (its ``on_chip``)."""
-    return load(backend).on_chip(stream_program(graph, program, window))
+def on_chip(sp: StreamProgram, backend: str = "hls") -> bool:
+    """Whether the hardware ``backend``'s design runs the stream ``sp`` on chip (its
+    ``on_chip``)."""
+    return load(backend).on_chip(sp)
 
 
 class WindowPricer:
@@ -226,9 +235,8 @@ class WindowPricer:
     design ``fgc compile --backend hls --window W`` or ``--incremental K`` emits; model
     estimates): ``price(update)`` from its keyframe and iterations."""
 
-    def __init__(self, graph: Graph, program, window: int | None, scalar: str | None = None,
-                 backend: str = "hls"):
-        self.model = load(backend).window_model(stream_program(graph, program, window), scalar)
+    def __init__(self, sp: StreamProgram, scalar: str | None = None, backend: str = "hls"):
+        self.model = load(backend).window_model(sp, scalar)
 
     def price(self, update):
         price = self.model.price(int(update.keyframe), int(update.iterations))

@@ -262,9 +262,9 @@ def test_cli_stream_hls_prints_the_model_beside_the_simulator(tmp_path, capsys):
     graph = lio.build(N=6)
     program = compile_stream(graph, SolverConfig(precision="float32", units=2),
                              incremental=2, batch_every=(3,))
-    from fgc.app.streaming import WindowPricer
+    from fgc.app.streaming import WindowPricer, stream_program
 
-    model = WindowPricer(graph, program, None)
+    model = WindowPricer(stream_program(graph, program))
     for u, priced in zip(report["updates"], report["model_estimate"], strict=True):
         again = model.price(SimpleNamespace(**{k: u[k] for k in ("keyframe", "mode", "first",
                                                                   "iterations")}))

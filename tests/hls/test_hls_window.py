@@ -240,13 +240,13 @@ def test_the_stream_section_is_the_static_header_and_the_kernel_only_wires_it(li
     assert "void stream_call(" in header and "L KEPT_R[" in header
 
 def test_a_cholesky_incremental_plan_stays_on_the_host():
-    from fgc.app.streaming import on_chip
+    from fgc.app.streaming import on_chip, stream_program
 
     graph = example("lio").build(N=4)
     program = compile_stream(graph, incremental=2)
-    assert on_chip(program, None)
+    assert on_chip(stream_program(graph, program))
     cholesky = replace(program, solver=replace(program.solver, linear="cholesky"))
-    assert not on_chip(cholesky, None)
+    assert not on_chip(stream_program(graph, cholesky))
 
 
 def test_cli_report_incremental_prices_the_on_chip_design(tmp_path, capsys):

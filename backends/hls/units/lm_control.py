@@ -1,6 +1,9 @@
 """LM control (optimize / try_steps): the gradient's maximum, |x|, the step test, the scalar
 decision, the accepted state copied back; the top's copies once per call and the rounding-noise
-pass on a rejected step. Kernel code of accel.cpp.jinja (no static header)."""
+pass on a rejected step. Its rules are the static header ``fgc_lm.h`` both C-family kernels
+share (``backends/cfamily/include/``), its reductions ``fgc_lm_units.h``, configured by the
+kernel's ``LmConfig`` (constants and hooks); the top's copies and the rounding-noise pass
+(problem-specific: per block type) are kernel code of accel.cpp.jinja."""
 
 from __future__ import annotations
 
@@ -106,5 +109,11 @@ def build(ctx) -> None:
 SPEC = UnitSpec(
     name="lm_control", role="LM control, the top's copies and the rounding-noise pass",
     build=build, phases=("lm_iteration", "lm_control", "lm_accept", "setup", "rounding_noise"),
-    printed_by="accel.cpp.jinja: optimize, try_steps, rounding_noise_all")
+    header="fgc_lm_units.h",
+    constants=(("N_X", "storage words of the state"), ("N_TANGENT", "tangent words"),
+               ("PARTIALS", "interleaved partial sums (the adder latency)"),
+               ("MAXIMA", "interleaved partial maxima (the compare latency)"),
+               ("MOVE_II", "the accepted state's copy"), ("DECISION_II", "the scalar decision")),
+    printed_by="accel.cpp.jinja: LmConfig's hooks -> fgc_lm.h optimize -> fgc_lm_units.h; "
+    "rounding_noise_all and the top's copies are kernel code")
 

@@ -290,6 +290,8 @@ SPEC = UnitSpec(
     constants=(("UNITS", "n_u Update units (PlanOptions.units)"),
                ("PARTIALS", "interleaved partial sums of a dot product (the adder latency)"),
                ("MAX_ROWS", "rows of the widest stacked step"), ("MAX_W", "widest step")),
-    printed_by="accel.cpp.jinja: qr_set<s> -> fgc_qr.h qr_step (fgc_qr_stream.h qrs_step)",
+    printed_by="accel.cpp.jinja: eliminate_all -> fgc_eliminate.h qr_eliminate_all (QrSets: "
+    "qr_stack, qr_level -> qr_set<s> -> fgc_qr.h qr_step or fgc_qr_stream.h qrs_step, "
+    "qr_commit)",
     applies=lambda program, options: program.solver.linear == "qr")
 

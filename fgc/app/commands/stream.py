@@ -28,6 +28,7 @@ from fgc.errors import FgcError
 from fgc.frontend.geometry import Pose2, Pose3
 from fgc.interop import estimates as export
 from fgc.ir.datafile import problem_data
+from fgc.ir.stream import FixedLag
 
 NAME = "stream"
 HELP = ("feed a chain's keyframes one at a time to the simulator, the native solver or the HLS "
@@ -69,10 +70,11 @@ def stream_setup(args, precision_default: str):
     return sp, problem_data(graph, sp.program)
 
 
-def mode_text(program, window) -> str:
-    if window is not None:
-        return f"fixed-lag window of {window} keyframes"
-    plan = program.schedule.incremental
+def mode_text(sp) -> str:
+    """The StreamProgram's policy in words."""
+    if isinstance(sp.policy, FixedLag):
+        return f"fixed-lag window of {sp.policy.window} keyframes"
+    plan = sp.program.schedule.incremental
     batches = ",".join(str(b) for b in plan.batch_keyframes) or "none"
     return f"incremental, newest {plan.window} clusters re-eliminated, batch steps {batches}"
 
@@ -109,21 +111,21 @@ def cmd_stream(args, precision_default: str = "float64") -> int:
     on_chip = hls and load_backend(backend).on_chip(sp)
     if not quiet:
         if hls:
-            print(_stream_hls_head(args, program, n, window, model_only, on_chip), flush=True)
+            print(_stream_hls_head(args, sp, n, model_only, on_chip), flush=True)
         else:
             print(f"fgc {stream_word(args)} {args.spec}: {n} keyframes, "
-                  f"{mode_text(program, window)}, "
+                  f"{mode_text(sp)}, "
                   f"{who} {program.solver.precision}; per keyframe: the accelerator plan's "
                   f"latency (model estimate: the update's iterations as batch iterations of a "
                   f"chain as long as its window; {streaming.UNPRICED} otherwise) and the "
                   f"{who}'s wall time", flush=True)
     online: dict = {}
     if on_chip:  # the emitted on-chip design's own price
-        pricer = streaming.WindowPricer(graph, program, window, backend=backend)
+        pricer = streaming.WindowPricer(sp, backend=backend)
     elif hls:
         pricer = streaming.update_model(graph, program, backend=backend)
     else:
-        pricer = streaming.UpdatePricer(graph, program, window)
+        pricer = streaming.UpdatePricer(sp)
     priced: list = []
     builds = {"seconds": 0.0, "since": None}  # building the template windows (g++ or cache)
 
@@ -159,16 +161,15 @@ def cmd_stream(args, precision_default: str = "float64") -> int:
                   f"{count}; built once, reused by every update of that size)", flush=True)
 
     started = time.perf_counter()
-    result = streaming.run_stream(program, data, window, progress, progress_build=building,
-                                  sp=sp, runner=runner)
+    result = streaming.run_stream(sp, data, progress=progress, progress_build=building,
+                                  runner=runner)
     stream_wall = time.perf_counter() - started
     require_finite_start(graph, result)
     final = {str(k): v for k, v in result.values.items()}
     acc = streaming.accuracy(graph, final, online, streaming.batch_optimum(graph))
     times = streaming.timing_summary(u["seconds"] for u in result.updates)
     report = {"spec": args.spec, "keyframes": n,
-              "mode": "fixed-lag" if window else
-              "incremental", "window": window, "incremental_k": program.solver.incremental_k,
+              "mode": sp.mode, "window": window, "incremental_k": program.solver.incremental_k,
               "batch_every": program.solver.batch_every, "status": result.status,
               "reason": result.reason, "iterations": result.iterations,
               "backend": backend, "solved_by": who, "model_estimate": priced,
@@ -228,15 +229,15 @@ def cmd_stream(args, precision_default: str = "float64") -> int:
     return EXIT_OK if result.status == "converged" else EXIT_FAILED
 
 
-def _stream_hls_head(args, program, n: int, window, model_only: bool, on_chip: bool) -> str:
-    solver = program.solver
+def _stream_hls_head(args, sp, n: int, model_only: bool, on_chip: bool) -> str:
+    solver = sp.program.solver
     unit = (f"n_u = {solver.units} Update units" if solver.linear == "qr"
             else f"#CPE = {solver.cpe}")
     scalar = "double" if solver.precision == "float64" else "float"
     if on_chip:
         who = (f"simulator {solver.precision}" if model_only else
                f"the on-chip design's C simulation ({scalar})")
-        kept = ("" if window is not None else
+        kept = ("" if isinstance(sp.policy, FixedLag) else
                 ", kept as its conditional with every earlier one (the kept Bayes net on chip, "
                 "walked back each update)")
         tail = ("The emitted design keeps the window, its factors' words and the marginal prior "
@@ -245,7 +246,7 @@ def _stream_hls_head(args, program, n: int, window, model_only: bool, on_chip: b
                 f"QR unit{kept}"
                 + (" (the estimate comes from the simulator)" if model_only else ""))
         return (f"fgc {stream_word(args)} {args.spec}: {n} keyframes, "
-                f"{mode_text(program, window)}, {who}; "
+                f"{mode_text(sp)}, {who}; "
                 f"per keyframe: the accelerator's latency, the emitted design's plan per call "
                 f"({solver.linear.upper()}, n_u = {solver.units}, {solver.precision}, "
                 f"{solver.clock_mhz:g} MHz; model estimate), beside the estimate. {tail}")
@@ -257,7 +258,7 @@ def _stream_hls_head(args, program, n: int, window, model_only: bool, on_chip: b
             "(built once); its conditionals, marginal prior and back-substitution are kept on "
             "the host, not on chip")
     return (f"fgc {stream_word(args)} {args.spec}: {n} keyframes, "
-            f"{mode_text(program, window)}, {who}; per "
+            f"{mode_text(sp)}, {who}; per "
             f"keyframe: the accelerator's latency from the update model on the HLS plan "
             f"({solver.linear.upper()}, {unit}, {solver.precision}, {solver.clock_mhz:g} MHz; "
             "model estimate: the plan's terms, then the assumed ones) beside the wall time and "

@@ -53,7 +53,7 @@ def _verify_stream(args) -> int:
 
     sp, data = stream_setup(args, "float64")
     graph, program, window = sp.graph, sp.program, sp.window
-    result = streaming.run_stream(program, data, window, sp=sp)
+    result = streaming.run_stream(sp, data)
     require_finite_start(graph, result)
     problem = to_gtsam(graph)
     clusters = program.schedule.clusters
@@ -65,10 +65,10 @@ def _verify_stream(args) -> int:
     tol = STATE_TOL_F64 if program.solver.precision == "float64" else ROT_TOL_F32
     worst = int(np.argmax(dist))
     passed = result.status == "converged" and max(dist) <= tol
-    report = {"mode": "fixed-lag" if window else "incremental", "window": window,
+    report = {"mode": sp.mode, "window": window,
               "keyframes": len(clusters), "status": result.status, "tolerance": tol,
               "per_keyframe_distance_isam2": dist, "passed": passed}
-    lines = [f"fgc verify {args.spec}: {len(clusters)} keyframes, {mode_text(program, window)}"
+    lines = [f"fgc verify {args.spec}: {len(clusters)} keyframes, {mode_text(sp)}"
              f", simulator {program.solver.precision} vs gtsam.ISAM2 with the same policy "
              "(older keyframes held, factors across the window's edge kept linear), after "
              "every keyframe",

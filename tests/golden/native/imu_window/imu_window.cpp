@@ -2287,7 +2287,7 @@ void whiten(T* raw, T* ab, const T* p) {
 // sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
 // at the whitened residual norm, as GTSAM does.
 template <int STRIDE, int COLS, int ROWS>
-void reweight(T* ab, T code, T k) {
+void reweight(T ab[], T code, T k) {
     if (code == T(0)) return;
     T e2 = T(0);
     for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
@@ -2473,7 +2473,7 @@ const V* gather_0(const T* x, int first, bool cost, V in[235]) {
 
 // block 0, member 0: its rows 9 ... 14 of 15 hold only 0 and +-1 left of the right-hand side;
 // their share of the whitened rows, row by row in order: +-R_ij at j's constant entries, R_ij b_j
-void whiten_tail_0_0(const T* raw, T* ab, const T* p) {
+void whiten_tail_0_0(const T raw[], T ab[], const T p[]) {
     ab[18] += p[9];
     ab[24] -= p[9];
     ab[30] += p[9] * raw[318];

@@ -1273,7 +1273,7 @@ void whiten(T* raw, T* ab, const T* p) {
 // sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
 // at the whitened residual norm, as GTSAM does.
 template <int STRIDE, int COLS, int ROWS>
-void reweight(T* ab, T code, T k) {
+void reweight(T ab[], T code, T k) {
     if (code == T(0)) return;
     T e2 = T(0);
     for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
