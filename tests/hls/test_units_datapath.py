@@ -158,3 +158,62 @@ def test_template_window_flags_what_later_windows_make_robust():
     assert _flags(template.template)["BetweenFactorPose2"] is True
     words = template._factor(4, template.template.blocks[1].members[0])
     assert np.count_nonzero(words[-2:]) == 2  # the robust loss's code and k, as written
+
+
+# -- small block types share one datapath ---------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def lio_small():
+    from fgc.app.specs import example
+    return compile_graph(example("lio").build(N=4), SOLVER, name="lio")
+
+
+def _plan(program):
+    plan = build_plan(program, PlanOptions.for_config(HlsConfig(), program))
+    return plan, plan_cost(plan)
+
+
+def test_small_block_types_share_one_datapath(lio_small, monkeypatch):
+    from fgc_backends.hls.units import datapath
+    names = [lio_small.blocks[i].name for i in datapath.small_blocks(lio_small)]
+    assert names == ["PriorFactorVector3", "PriorFactorImuBias", "GPSFactor"]
+    plan, cost = _plan(lio_small)
+    units = dict(cost.dsp_by_unit)
+    assert "factor_small" in units and not {"factor_1", "factor_2", "factor_4"} & set(units)
+    jac = next(p for ph in plan.phases if ph.name == "factor_jacobian" for p in ph.processes
+               if p.name == "factor_small_jacobian")
+    assert jac.loops[0].trip == sum(1 for f in lio_small.factors if f.block in (1, 2, 4))
+    monkeypatch.setattr(datapath, "SMALL_OPS", -1)  # every block type its own datapath
+    assert datapath.small_blocks(lio_small) == ()
+    alone_plan, alone = _plan(lio_small)
+    apart = sum(d for u, d in alone.dsp_by_unit if u in ("factor_1", "factor_2", "factor_4"))
+    assert units["factor_small"] < apart
+    # the shared loop is slower for those instances (its II serves the largest branch and
+    # every branch's memory accesses), a small share of the iteration
+    assert alone.cycles <= cost.cycles <= 1.05 * alone.cycles
+
+
+def test_shared_datapath_as_emitted_and_read(lio_small, tmp_path):
+    from fgc_backends.hls.reader import check
+    out = tmp_path / "lio"
+    emit(lio_small, out, HlsConfig())
+    text = (out / "lio.cpp").read_text()
+    one = text[text.index("void evaluate_small_one("):text.index("void evaluate_small(")]
+    assert one.count("ALLOCATION operation instances=") >= 2
+    assert [int(b) for b in re.findall(r"\(b == (\d+)\)", one)] == [1, 2, 4]
+    for b in (1, 2, 4):  # the small kernels are inlined into the shared function
+        fn = text[text.index(f"void factor_{b}("):]
+        assert fn[:fn.index("}")].count("#pragma HLS INLINE\n") == 1
+        assert f"evaluate_{b}(x)" not in text and f"cost_of_{b}(x, total)" not in text
+    plan, cost = _plan(lio_small)
+    tab = plan.target.ops("float32")
+    dsp_of = {"add": tab.add.dsp, "mul": tab.mul.dsp, "div": tab.div.dsp,
+              "sqrt": tab.sqrt.dsp, "special": tab.special.dsp}
+    files, top = emitted_files(out)
+    design = read_design(files, top, tab.add.latency)
+    modules = dict(design.modules)
+    loops = [r for r in design.loops if r.function in ("evaluate_small", "cost_of_small")]
+    assert len(loops) == 2 and not check(loops)  # the declared IIs are what the text allows
+    reader = sum(r.dsp(dsp_of) * modules[r.function] for r in loops)
+    assert 0 < reader <= dict(cost.dsp_by_unit)["factor_small"]
