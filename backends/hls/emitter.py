@@ -191,7 +191,12 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
     from fgc_backends.hls.plan.model import Unit
     from fgc_backends.hls.units.cholesky import gram_entries, gram_ii
-    from fgc_backends.hls.units.datapath import factor_allocation, mode_allocation
+    from fgc_backends.hls.units.datapath import (
+        factor_allocation,
+        mode_allocation,
+        small_allocation,
+        small_blocks,
+    )
     plan = accel_plan(program, config)
     phase = {ph.name: ph for ph in plan.phases}
     loops = {p.name: p.loops[0] for name in ("factor_jacobian", "factor_cost")
@@ -201,8 +206,34 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     blocks = []
     # factor_<b>'s ALLOCATION limits (the plan's unit is what Vitis binds around them)
     allocations = factor_allocation(program, plan.options)
+    small = small_blocks(program)
+    shared = None
+    if small:  # the small block types' one datapath per mode (units/datapath.py)
+        texts = "\n".join(line for i in small for b in (context["blocks"][i],)
+                          for line in (*b.jacobian.intermediates, *b.jacobian.outputs,
+                                       *b.cost.intermediates, *b.cost.outputs))
+        small_jac, small_cost = (loops[f"factor_small_{mode}"] for mode in ("jacobian", "cost"))
+        shared = {"first": small[0], "count": small_jac.trip,
+                  "blocks": [i for i in small for _ in context["blocks"][i].instances],
+                  "instances": [f for i in small for f in context["blocks"][i].instances],
+                  "names": ", ".join(context["blocks"][i].comment for i in small),
+                  "allocation": _allocation(Unit("factor_small", "ALLOCATION", 1, small_allocation(
+                      program, context["blocks"], plan.options, "jacobian")),
+                      config.scalar_cxx, texts),
+                  "allocation_cost": _allocation(Unit("factor_small", "ALLOCATION", 1,
+                                                      small_allocation(program, context["blocks"],
+                                                                       plan.options, "cost")),
+                                                 config.scalar_cxx, texts),
+                  "ii_jacobian": small_jac.ii, "depth_jacobian": small_jac.depth,
+                  "ii_cost": small_cost.ii, "depth_cost": small_cost.depth}
     for b in context["blocks"]:
         block = program.blocks[b.index]
+        if b.index in small:  # printed inline into the shared datapath's branch
+            blocks.append(_AccelBlock(b, ((), ()), small_jac, small_cost,
+                                      noise[f"noise_{b.index}"]))
+            blocks[-1].small = True
+            blocks[-1].gram_ii = gram_ii(program, b.index, plan.options.hgc_lanes)
+            continue
         jac = Unit(f"factor_{b.index}", "ALLOCATION", 1,
                    mode_allocation(allocations[b.index], block.ops_after))
         cost = Unit(f"factor_cost_{b.index}", "ALLOCATION", 1,
@@ -213,6 +244,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                                       _allocation(cost, config.scalar_cxx, cost_text)),
                                   loops[f"factor_{b.index}_jacobian"],
                                   loops[f"factor_{b.index}_cost"], noise[f"noise_{b.index}"]))
+        blocks[-1].small = False
         # Cholesky's HGC: the II of the block's Gram entries (its multipliers) and the entries
         blocks[-1].gram_ii = gram_ii(program, b.index, plan.options.hgc_lanes)
         entries = gram_entries(block) if program.solver.linear == "cholesky" else ()
@@ -244,6 +276,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "blocks": blocks, "network": network, "retract_hw": retract,
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
+            "small": shared,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's copies: the memories' two ports shared out over the unit sets
             "bs_words": max(1, 2 // max(1, sets)), "bs_ii": -(-max(1, sets) // 2),

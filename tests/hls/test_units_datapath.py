@@ -129,18 +129,26 @@ def _emit_and_read(robust_between, tmp_path) -> tuple[str, dict, dict]:
     return (out / "chain.cpp").read_text(), plan_dsp, reader_dsp
 
 
-def test_emitted_kernel_and_second_reader_agree_with_the_plan(tmp_path):
-    read = {}
-    for robust_between in (None, 2):
-        text, plan_dsp, reader_dsp = _emit_and_read(robust_between, tmp_path)
-        for block, robust in ((0, False), (1, robust_between is not None)):
-            evaluate, cost = _kernel_calls(text, block)
-            assert ("reweight<" in evaluate) == robust and ("robust_loss(" in cost) == robust
-        # a design without a robust member prints neither helper
-        assert ("T robust_loss(" in text) == (robust_between is not None)
-        for block in plan_dsp:  # the reader's count is a lower bound of what Vitis binds
-            assert reader_dsp[block] <= plan_dsp[block], (block, reader_dsp, plan_dsp)
-        read[robust_between] = plan_dsp, reader_dsp
+def _check_emitted(robust_between, tmp_path) -> tuple[dict, dict]:
+    text, plan_dsp, reader_dsp = _emit_and_read(robust_between, tmp_path)
+    for block, robust in ((0, False), (1, robust_between is not None)):
+        evaluate, cost = _kernel_calls(text, block)
+        assert ("reweight<" in evaluate) == robust and ("robust_loss(" in cost) == robust
+    # a design without a robust member prints neither helper
+    assert ("T robust_loss(" in text) == (robust_between is not None)
+    for block in plan_dsp:  # the reader's count is a lower bound of what Vitis binds
+        assert reader_dsp[block] <= plan_dsp[block], (block, reader_dsp, plan_dsp)
+    return plan_dsp, reader_dsp
+
+
+def test_emitted_kernel_reweights_only_robust_members(tmp_path):
+    _check_emitted(2, tmp_path)  # the prior plain, the odometry robust
+
+
+@pytest.mark.heavy
+def test_second_reader_prices_the_robust_datapath_as_the_plan(tmp_path):
+    read = {robust_between: _check_emitted(robust_between, tmp_path)
+            for robust_between in (None, 2)}
     (plan0, reader0), (plan1, reader1) = read[None], read[2]
     # the robust loss's datapath: what the plan adds for it, the text adds (within 15 %)
     added_plan, added_reader = plan1[1] - plan0[1], reader1[1] - reader0[1]
@@ -158,3 +166,79 @@ def test_template_window_flags_what_later_windows_make_robust():
     assert _flags(template.template)["BetweenFactorPose2"] is True
     words = template._factor(4, template.template.blocks[1].members[0])
     assert np.count_nonzero(words[-2:]) == 2  # the robust loss's code and k, as written
+
+
+# -- small block types share one datapath ---------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def lio_small():
+    """LIO's unary factors alone (a pose with its prior and two GPS fixes, a velocity and a
+    bias with theirs): the big Pose3 prior and the three small block types."""
+    from fgc.frontend.factors import GPSFactor
+    from fgc.frontend.geometry import ImuBias, Pose3, Vector3
+    g = fgc.Graph()
+    pose = Pose3.Expmap(np.r_[0.1, 0.2, 0.3, 1.0, 2.0, 3.0])
+    g.add_variable("x0", pose)
+    g.add_variable("v0", Vector3(np.r_[1.0, 0.0, 0.0]))
+    g.add_variable("b0", ImuBias(np.zeros(6)))
+    g.add(PriorFactor("x0", pose, fgc.noise.diagonal([0.1] * 3 + [1.0] * 3)))
+    g.add(PriorFactor("v0", Vector3(np.r_[1.0, 0.1, 0.0]), fgc.noise.isotropic(3, 1.0)))
+    g.add(PriorFactor("b0", ImuBias(np.zeros(6)), fgc.noise.isotropic(6, 0.1)))
+    for dx in (0.0, 0.1):
+        g.add(GPSFactor("x0", np.r_[1.0 + dx, 2.0, 3.0], fgc.noise.isotropic(3, 0.5)))
+    return compile_graph(g, SOLVER, name="lio")
+
+
+def _plan(program):
+    plan = build_plan(program, PlanOptions.for_config(HlsConfig(), program))
+    return plan, plan_cost(plan)
+
+
+def test_small_block_types_share_one_datapath(lio_small, monkeypatch):
+    from fgc_backends.hls.units import datapath
+    names = [lio_small.blocks[i].name for i in datapath.small_blocks(lio_small)]
+    assert names == ["PriorFactorVector3", "PriorFactorImuBias", "GPSFactor"]
+    plan, cost = _plan(lio_small)
+    units = dict(cost.dsp_by_unit)
+    small = datapath.small_blocks(lio_small)
+    apart_units = {f"factor_{b}" for b in small}
+    assert "factor_small" in units and not apart_units & set(units)
+    jac = next(p for ph in plan.phases if ph.name == "factor_jacobian" for p in ph.processes
+               if p.name == "factor_small_jacobian")
+    assert jac.loops[0].trip == sum(1 for f in lio_small.factors if f.block in small) == 4
+    monkeypatch.setattr(datapath, "SMALL_OPS", -1)  # every block type its own datapath
+    assert datapath.small_blocks(lio_small) == ()
+    _, alone = _plan(lio_small)
+    apart = sum(d for u, d in alone.dsp_by_unit if u in apart_units)
+    assert units["factor_small"] < apart
+    # the shared loop is slower for those instances (its II serves the largest branch and
+    # every branch's memory accesses)
+    assert alone.cycles <= cost.cycles
+
+
+def test_shared_datapath_as_emitted_and_read(lio_small, tmp_path):
+    from fgc_backends.hls.reader import check
+    out = tmp_path / "lio"
+    emit(lio_small, out, HlsConfig())
+    text = (out / "lio.cpp").read_text()
+    one = text[text.index("void evaluate_small_one("):text.index("void evaluate_small(")]
+    assert one.count("ALLOCATION operation instances=") >= 2
+    small = [int(b) for b in re.findall(r"\(b == (\d+)\)", one)]
+    assert [lio_small.blocks[b].name for b in small] == [
+        "PriorFactorVector3", "PriorFactorImuBias", "GPSFactor"]
+    for b in small:  # the small kernels are inlined into the shared function
+        fn = text[text.index(f"void factor_{b}("):]
+        assert fn[:fn.index("}")].count("#pragma HLS INLINE\n") == 1
+        assert f"evaluate_{b}(x)" not in text and f"cost_of_{b}(x, total)" not in text
+    plan, cost = _plan(lio_small)
+    tab = plan.target.ops("float32")
+    dsp_of = {"add": tab.add.dsp, "mul": tab.mul.dsp, "div": tab.div.dsp,
+              "sqrt": tab.sqrt.dsp, "special": tab.special.dsp}
+    files, top = emitted_files(out)
+    design = read_design(files, top, tab.add.latency)
+    modules = dict(design.modules)
+    loops = [r for r in design.loops if r.function in ("evaluate_small", "cost_of_small")]
+    assert len(loops) == 2 and not check(loops)  # the declared IIs are what the text allows
+    reader = sum(r.dsp(dsp_of) * modules[r.function] for r in loops)
+    assert 0 < reader <= dict(cost.dsp_by_unit)["factor_small"]

@@ -72,7 +72,7 @@ from fgc_backends.hls.plan import (
 from fgc_backends.hls.plan.stream import Term, UpdatePrice
 from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops
 from fgc_backends.hls.units.cholesky import assemble_loops, cpe_step_loops, hgc_loops
-from fgc_backends.hls.units.datapath import gradient_loops
+from fgc_backends.hls.units.datapath import gradient_loops, small_blocks
 from fgc_backends.hls.units.lm_control import lm_control_phases, rounding_noise_loops, setup_phase
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
 from fgc_backends.hls.units.state_update import retract_loops, state_update_phase
@@ -127,10 +127,12 @@ class UpdateModel:
     def _read_plan(self) -> None:
         phases = {ph.name: ph for ph in self.plan.phases}
         self.factor_loop = {}  # (block, mode) -> the plan's instance loop (ii, depth)
+        small = small_blocks(self.program)  # their shared datapath's one loop
         for mode in ("jacobian", "cost"):
             for proc in phases[f"factor_{mode}"].processes:
-                block = int(proc.name.split("_")[1])
-                self.factor_loop[block, mode] = proc.loops[0]
+                unit = proc.name.split("_")[1]
+                for block in small if unit == "small" else (int(unit),):
+                    self.factor_loop[block, mode] = proc.loops[0]
         # the plan's kernel loop timings (in the accelerator's scalar) and the emitted buffer
         # sizes (MAX_W: the stack's and the assembly's row stride)
         self.timing = kernel_timing(self.plan.ops)
@@ -376,10 +378,15 @@ class UpdateModel:
 
     def _factor_phase(self, mode, instances) -> Phase:
         procs = []
+        small = small_blocks(self.program)
         for b in range(len(self.program.blocks)):
+            if b in small[1:]:
+                continue  # in the first small block type's shared loop
             loop = self.factor_loop[b, mode]
-            count = sum(1 for i in instances if self.program.factors[i].block == b)
-            procs.append(Process(f"factor_{b}_{mode}", f"factor_{b}", (
+            blocks = small if b in small else (b,)
+            count = sum(1 for i in instances if self.program.factors[i].block in blocks)
+            name = "factor_small" if b in small else f"factor_{b}"
+            procs.append(Process(f"{name}_{mode}", name, (
                 Loop(loop.name, count, loop.ii, loop.depth),)))
         return Phase(f"factor_{mode}", False, tuple(procs))
 

@@ -75,6 +75,63 @@ def whitening_macs(b) -> int:
 
 COST_CALL_SITES = 2  # total_cost(X) and total_cost(X_TRIAL): LM control's two cost hooks
 
+# A block type is *small* when its two kernels (Jacobian and cost mode) hold at most this many
+# operations together, none of them trig or special, and no member has a robust loss: the
+# priors and GPS factors of a navigation graph (6 to 43 operations). With two or more small
+# block types, each mode of theirs is one time-multiplexed datapath (factor_small): one
+# pipelined loop over all their instances whose body branches on the instance's block type,
+# every branch in one function under one ALLOCATION, so the exclusive branches share its
+# operators (Vitis binds per function and pipelined loop, UG1399) instead of each block type
+# keeping its own. A larger datapath (an IMU factor) keeps its own loop and II.
+SMALL_OPS = 64
+
+
+def small_blocks(program) -> tuple[int, ...]:
+    """The block types that share the factor_small datapath (:data:`SMALL_OPS`), or () when
+    fewer than two qualify (nothing to share)."""
+    small = tuple(i for i, b in enumerate(program.blocks)
+                  if sum(b.ops_after.values()) + sum(b.ops_cost.values()) <= SMALL_OPS
+                  and not any(b.ops_after.get(k, 0) or b.ops_cost.get(k, 0)
+                              for k in ("trig", "special"))
+                  and not any(m.robust for m in b.members))
+    return small if len(small) > 1 else ()
+
+
+def _merged(*parts: dict) -> dict[str, int]:
+    out: dict[str, int] = {}
+    for part in parts:
+        for k, n in part.items():
+            if n:
+                out[k] = out.get(k, 0) + n
+    return out
+
+
+def small_branch_ops(program, blocks, mode: str) -> list[dict[str, int]]:
+    """Per small block type (:func:`small_blocks`), the operations of its branch of the shared
+    ``mode`` function (``evaluate_small_one`` / ``cost_small_one``): its kernel in that mode and
+    the instance's own operations (whitening; the members' cost sum), all under the shared
+    ALLOCATION. ``blocks``: the Program's block contexts."""
+    out = []
+    for i in small_blocks(program):
+        b, bc = program.blocks[i], blocks[i]
+        if mode == "jacobian":
+            out.append(_merged(b.ops_after, whitening_ops(bc)))
+        else:  # robust_ops less the running total's add, which is the loop's own
+            own = robust_ops(bc)
+            out.append(_merged(b.ops_cost, {**own, "add": own["add"] - 1}))
+    return out
+
+
+def small_allocation(program, blocks, opts, mode: str) -> tuple[tuple[str, int], ...]:
+    """The shared ``mode`` function's ``ALLOCATION`` limits: per kind the most any one branch
+    issues in an instance (exclusive branches share them), at most the options' limit."""
+    alloc = dict(opts.allocation)
+    most: dict[str, int] = {}
+    for ops in small_branch_ops(program, blocks, mode):
+        for k, n in ops.items():
+            most[k] = max(most.get(k, 0), n)
+    return tuple(sorted((k, min(n, alloc.get(k, n))) for k, n in most.items() if n))
+
 
 def factor_allocation(program, opts) -> list[tuple[tuple[str, int], ...]]:
     """Per block type the ``ALLOCATION`` limits its ``factor_<b>`` function is emitted with:
@@ -166,7 +223,18 @@ def build(ctx) -> None:
     jac, cost = [], []
     whiten_macs = 0
     allocations = factor_allocation(program, opts)
+    small = small_blocks(program)
     for i, (b, bc) in enumerate(zip(program.blocks, ctx.blocks, strict=True)):
+        if opts.jacobian_storage == "raw":
+            words = raw_jacobian_words(b) * len(bc.instances)
+            whiten_macs += whitening_macs(b) * len(bc.instances)
+        else:
+            words = b.residual_dim * (1 + sum(b.variable_dims)) * len(bc.instances)
+        ctx.memories.append(Memory(f"ab_{i}", words, ops.word_bits, 1))
+        if i in small:
+            if i == small[0]:
+                _small_datapath(ctx, small, jac, cost)
+            continue
         name = f"factor_{i}"
         instances = len(bc.instances)
         bound = []
@@ -204,12 +272,6 @@ def build(ctx) -> None:
         ctx.units.append(Unit(name, f"factor datapath of block {b.name!r} (its Jacobian and "
                               "cost call sites, whitening, robust weights)", 1,
                               tuple(sorted(operators.items()))))
-        if opts.jacobian_storage == "raw":
-            words = raw_jacobian_words(b) * instances
-            whiten_macs += whitening_macs(b) * instances
-        else:
-            words = b.residual_dim * (1 + sum(b.variable_dims)) * instances
-        ctx.memories.append(Memory(f"ab_{i}", words, ops.word_bits, 1))
     ctx.add_phase("linearize", Phase("factor_jacobian", False, tuple(jac)))
     if program.solver.linear == "qr":  # Cholesky's gradient comes with the HGC (units.cholesky)
         ctx.add_phase("linearize", Phase("gradient", False,
@@ -232,6 +294,49 @@ def build(ctx) -> None:
             Loop("macs", math.ceil(whiten_macs / opts.units), 1,
                  ops.mul.latency + ops.add.latency),)),), linear=True))
     ctx.add_phase("cost", Phase("factor_cost", False, tuple(cost)))
+
+
+def _small_datapath(ctx, small: tuple[int, ...], jac: list, cost: list) -> None:
+    """The factor_small unit (:data:`SMALL_OPS`): per mode one pipelined loop over the small
+    block types' instances (in block order), one branch a block type in one function under
+    :func:`small_allocation`. Its II: the most any branch needs to issue on those operators,
+    and the ports of the global memories, whose accesses are counted over every branch (what
+    the text holds; the branches are exclusive, so this is an upper bound); its depth the
+    deepest branch's."""
+    program, opts, ops = ctx.program, ctx.opts, ctx.ops
+    sim_ops = _sim_table(ops)
+    count = sum(len(ctx.blocks[i].instances) for i in small)
+    operators: dict[str, int] = {}
+    for mode, out in (("jacobian", jac), ("cost", cost)):
+        branches = small_branch_ops(program, ctx.blocks, mode)
+        allocated = small_allocation(program, ctx.blocks, opts, mode)
+        limit = dict(allocated)
+        issue = max([1] + [math.ceil(n * ops.op(k).ii / limit[k])
+                           for br in branches for k, n in br.items()])
+        accesses: dict[int, int] = {}
+        for i in small:
+            for a, (n, _) in enumerate(instance_accesses(ctx.blocks[i], mode)):
+                accesses[a] = accesses.get(a, 0) + n
+        ii = max(issue, loop_ii((n, 1) for n in accesses.values()))
+        if mode == "cost":  # the running total, in instance order: through the adder
+            ii = max(ii, ops.add.latency)
+        depth = max(max(critical_path(program.blocks[i].kernel if mode == "jacobian"
+                                      else program.blocks[i].cost_kernel, sim_ops), issue)
+                    for i in small)
+        out.append(Process(f"factor_small_{mode}", "factor_small",
+                           (Loop(f"factor_small_{mode}_instances", count, ii, depth),)))
+        copies = COST_CALL_SITES if mode == "cost" else 1
+        shared = BoundLoop(f"factor_small_{mode}", tuple(_merged(*branches).items()), ii,
+                           allocated, copies)
+        own = BoundLoop(f"factor_small_{mode}_own", (("add", 1),) if mode == "cost" else (),
+                        ii, (), copies)
+        for part in (shared.instances(ops), own.instances()):
+            for k, n in part.items():
+                operators[k] = operators.get(k, 0) + n
+    names = ", ".join(repr(program.blocks[i].name) for i in small)
+    ctx.units.append(Unit("factor_small", f"one time-multiplexed factor datapath of the small "
+                          f"block types {names} (both modes)", 1,
+                          tuple(sorted(operators.items()))))
 
 
 SPEC = UnitSpec(

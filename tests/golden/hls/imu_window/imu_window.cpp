@@ -1937,9 +1937,7 @@ void factor_cost_1(const T in[12], const T dat[13],
 // block 2: PriorFactorVector3 (3 rows, 3 columns, 1 instances)
 void factor_2(const T in[3], const T dat[4],
               T raw[12]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=3
+#pragma HLS INLINE
     raw[0] = T(1);
     raw[3] = -dat[0] + in[0];
     raw[5] = T(1);
@@ -1950,10 +1948,7 @@ void factor_2(const T in[3], const T dat[4],
 
 void factor_cost_2(const T in[3], const T dat[4],
                    T half[1]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS INLINE
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
     const T t2 = -dat[2] + in[2];
@@ -1965,9 +1960,7 @@ void factor_cost_2(const T in[3], const T dat[4],
 // block 3: PriorFactorImuBias (6 rows, 6 columns, 1 instances)
 void factor_3(const T in[6], const T dat[7],
               T raw[48]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS INLINE
     raw[0] = T(1);
     raw[6] = -dat[0] + in[0];
     raw[9] = T(1);
@@ -1984,10 +1977,7 @@ void factor_3(const T in[6], const T dat[7],
 
 void factor_cost_3(const T in[6], const T dat[7],
                    T half[1]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS INLINE
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
     const T t2 = -dat[2] + in[2];
@@ -2640,26 +2630,6 @@ void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
     for (int i = 0; i < 1; ++i) dat[3 + i] = DATA_BUF[line + 3 + i];
 }
 
-// block 2, Jacobian mode: per instance residual + Jacobian (its 6 structural non-zeros of
-// 3 x 4), whitening, into AB; one instance every II=6 cycles (the plan's)
-void evaluate_2(const T x[N_X]) {
-    for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=6
-        const int f = BLOCK2_INSTANCES[i];
-        T in[3], dat[4];
-        gather_2(x, f, in, dat);
-        T raw[12];  // the Jacobian writes only its structural non-zeros
-        T ab[12];
-        for (int c = 0; c < 12; ++c) raw[c] = T(0);
-        factor_2(in, dat, raw);
-        whiten<4, 4, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
-        const int a0 = FACTOR_A_OFF[f];
-        for (int r = 0; r < 3; ++r) {
-            for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
-        }
-    }
-    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 6, 4);
-}
 
 // block 2's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
 void load_rows_2(int f, T ab[12]) {
@@ -2724,22 +2694,6 @@ T noise_2(T noise) {
     return noise;
 }
 
-// block 2, cost mode: `total` plus the cost of its instances in order, one every II=4 cycles
-T cost_of_2(const T x[N_X], T total) {
-    for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=4
-        const int f = BLOCK2_INSTANCES[i];
-        T in[3], dat[4], half[1];
-        gather_2(x, f, in, dat);
-        factor_cost_2(in, dat, half);
-        T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
-        total += cost;
-    }
-    FGC_CYCLES("factor_2_cost", 0, "instances", 1, 4, 18);
-    return total;
-}
-
 // block 3: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     const int vb = FACTOR_VAR_BEGIN[f];
@@ -2749,26 +2703,6 @@ void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     for (int i = 0; i < 1; ++i) dat[6 + i] = DATA_BUF[line + 6 + i];
 }
 
-// block 3, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=21 cycles (the plan's)
-void evaluate_3(const T x[N_X]) {
-    for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=21
-        const int f = BLOCK3_INSTANCES[i];
-        T in[6], dat[7];
-        gather_3(x, f, in, dat);
-        T raw[48];  // the Jacobian writes only its structural non-zeros
-        T ab[48];
-        for (int c = 0; c < 48; ++c) raw[c] = T(0);
-        factor_3(in, dat, raw);
-        whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 6);
-        const int a0 = FACTOR_A_OFF[f];
-        for (int r = 0; r < 6; ++r) {
-            for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
-        }
-    }
-    FGC_CYCLES("factor_3_jacobian", 0, "instances", 1, 21, 4);
-}
 
 // block 3's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_3(int f, T ab[48]) {
@@ -2833,19 +2767,86 @@ T noise_3(T noise) {
     return noise;
 }
 
-// block 3, cost mode: `total` plus the cost of its instances in order, one every II=5 cycles
-T cost_of_3(const T x[N_X], T total) {
-    for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=5
-        const int f = BLOCK3_INSTANCES[i];
+// The small block types (PriorFactorVector3, PriorFactorImuBias): one time-multiplexed datapath per mode. One
+// pipelined loop over all their instances (block type by block type) runs one branch a block
+// type of one function, all under that function's ALLOCATION: the branches are exclusive, so
+// they share its operators (their factor_<b> / factor_cost_<b> inlined into it).
+const int SMALL_BLOCK[2] = { 2, 3 };
+const int SMALL_FACTOR[2] = { 8, 9 };
+
+// Jacobian mode of small block type b's instance f (evaluate_<b>'s body)
+void evaluate_small_one(const T x[N_X], int b, int f) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=6
+#pragma HLS ALLOCATION operation instances=fmul limit=24
+    if (b == 2) {
+        T in[3], dat[4];
+        gather_2(x, f, in, dat);
+        T raw[12];  // the Jacobian writes only its structural non-zeros
+        T ab[12];
+        for (int c = 0; c < 12; ++c) raw[c] = T(0);
+        factor_2(in, dat, raw);
+        whiten<4, 4, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
+        const int a0 = FACTOR_A_OFF[f];
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
+        }
+    } else if (b == 3) {
+        T in[6], dat[7];
+        gather_3(x, f, in, dat);
+        T raw[48];  // the Jacobian writes only its structural non-zeros
+        T ab[48];
+        for (int c = 0; c < 48; ++c) raw[c] = T(0);
+        factor_3(in, dat, raw);
+        whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 6);
+        const int a0 = FACTOR_A_OFF[f];
+        for (int r = 0; r < 6; ++r) {
+            for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
+        }
+    }
+}
+
+// every small block type's instances in Jacobian mode, one every II=27 cycles (the plan's)
+void evaluate_small(const T x[N_X]) {
+    for (int i = 0; i < 2; ++i) {
+#pragma HLS PIPELINE II=27
+        evaluate_small_one(x, SMALL_BLOCK[i], SMALL_FACTOR[i]);
+    }
+    FGC_CYCLES("factor_small_jacobian", 0, "instances", 2, 27, 4);
+}
+
+// cost mode of small block type b's instance f: its members' costs summed (cost_of_<b>'s body)
+T cost_small_one(const T x[N_X], int b, int f) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=12
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fmul limit=19
+    T total = T(0);
+    if (b == 2) {
+        T in[3], dat[4], half[1];
+        gather_2(x, f, in, dat);
+        factor_cost_2(in, dat, half);
+        T cost = T(0);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
+        total = cost;
+    } else if (b == 3) {
         T in[6], dat[7], half[1];
         gather_3(x, f, in, dat);
         factor_cost_3(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
-        total += cost;
+        total = cost;
     }
-    FGC_CYCLES("factor_3_cost", 0, "instances", 1, 5, 22);
+    return total;
+}
+
+// `total` plus the cost of every small block type's instances in order, one every II=6 cycles
+T cost_of_small(const T x[N_X], T total) {
+    for (int i = 0; i < 2; ++i) {
+#pragma HLS PIPELINE II=6
+        total += cost_small_one(x, SMALL_BLOCK[i], SMALL_FACTOR[i]);
+    }
+    FGC_CYCLES("factor_small_cost", 0, "instances", 2, 6, 22);
     return total;
 }
 
@@ -2861,8 +2862,7 @@ bool linearize_all(const T x[N_X]) {
     FGC_PHASE("factor_jacobian");
     evaluate_0(x);
     evaluate_1(x);
-    evaluate_2(x);
-    evaluate_3(x);
+    evaluate_small(x);
     FGC_PHASE("hgc");
     bool finite = true;
     finite = reduce_0() && finite;
@@ -2900,8 +2900,7 @@ T total_cost(const T x[N_X]) {
     T total = T(0);
     total = cost_of_0(x, total);
     total = cost_of_1(x, total);
-    total = cost_of_2(x, total);
-    total = cost_of_3(x, total);
+    total = cost_of_small(x, total);
     return total;
 }
 

@@ -580,9 +580,7 @@ void factor_cost_0(const T in[12], const T dat[18],
 // block 1: PriorFactorVector3 (3 rows, 3 columns, 1 instances)
 void factor_1(const T in[3], const T dat[4],
               T raw[12]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=3
+#pragma HLS INLINE
     raw[0] = T(1);
     raw[3] = -dat[0] + in[0];
     raw[5] = T(1);
@@ -593,10 +591,7 @@ void factor_1(const T in[3], const T dat[4],
 
 void factor_cost_1(const T in[3], const T dat[4],
                    T half[1]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS INLINE
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
     const T t2 = -dat[2] + in[2];
@@ -608,9 +603,7 @@ void factor_cost_1(const T in[3], const T dat[4],
 // block 2: PriorFactorImuBias (6 rows, 6 columns, 1 instances)
 void factor_2(const T in[6], const T dat[7],
               T raw[48]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS INLINE
     raw[0] = T(1);
     raw[6] = -dat[0] + in[0];
     raw[9] = T(1);
@@ -627,10 +620,7 @@ void factor_2(const T in[6], const T dat[7],
 
 void factor_cost_2(const T in[6], const T dat[7],
                    T half[1]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS INLINE
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
     const T t2 = -dat[2] + in[2];
@@ -2349,9 +2339,7 @@ void factor_cost_3(const T in[42], const T dat[211],
 // block 4: GPSFactor (3 rows, 6 columns, 8 instances)
 void factor_4(const T in[12], const T dat[4],
               T raw[24]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=3
+#pragma HLS INLINE
     raw[3] = in[0];
     raw[4] = in[1];
     raw[5] = in[2];
@@ -2368,10 +2356,7 @@ void factor_4(const T in[12], const T dat[4],
 
 void factor_cost_4(const T in[12], const T dat[4],
                    T half[1]) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=5
-#pragma HLS ALLOCATION operation instances=fmul limit=10
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS INLINE
     const T t0 = -dat[0] + in[9];
     const T t1 = -dat[1] + in[10];
     const T t2 = -dat[2] + in[11];
@@ -2589,26 +2574,6 @@ void gather_1(const T x[N_X], int f, T in[3], T dat[4]) {
     for (int i = 0; i < 1; ++i) dat[3 + i] = DATA_BUF[line + 3 + i];
 }
 
-// block 1, Jacobian mode: per instance residual + Jacobian (its 6 structural non-zeros of
-// 3 x 4), whitening, into AB; one instance every II=6 cycles (the plan's)
-void evaluate_1(const T x[N_X]) {
-    for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=6
-        const int f = BLOCK1_INSTANCES[i];
-        T in[3], dat[4];
-        gather_1(x, f, in, dat);
-        T raw[12];  // the Jacobian writes only its structural non-zeros
-        T ab[12];
-        for (int c = 0; c < 12; ++c) raw[c] = T(0);
-        factor_1(in, dat, raw);
-        whiten<4, 4, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
-        const int a0 = FACTOR_A_OFF[f];
-        for (int r = 0; r < 3; ++r) {
-            for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
-        }
-    }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 6, 4);
-}
 
 // block 1's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
 void load_rows_1(int f, T ab[12]) {
@@ -2665,22 +2630,6 @@ T noise_1(T noise) {
     return noise;
 }
 
-// block 1, cost mode: `total` plus the cost of its instances in order, one every II=4 cycles
-T cost_of_1(const T x[N_X], T total) {
-    for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=4
-        const int f = BLOCK1_INSTANCES[i];
-        T in[3], dat[4], half[1];
-        gather_1(x, f, in, dat);
-        factor_cost_1(in, dat, half);
-        T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
-        total += cost;
-    }
-    FGC_CYCLES("factor_1_cost", 0, "instances", 1, 4, 18);
-    return total;
-}
-
 // block 2: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_2(const T x[N_X], int f, T in[6], T dat[7]) {
     const int vb = FACTOR_VAR_BEGIN[f];
@@ -2690,26 +2639,6 @@ void gather_2(const T x[N_X], int f, T in[6], T dat[7]) {
     for (int i = 0; i < 1; ++i) dat[6 + i] = DATA_BUF[line + 6 + i];
 }
 
-// block 2, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=21 cycles (the plan's)
-void evaluate_2(const T x[N_X]) {
-    for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=21
-        const int f = BLOCK2_INSTANCES[i];
-        T in[6], dat[7];
-        gather_2(x, f, in, dat);
-        T raw[48];  // the Jacobian writes only its structural non-zeros
-        T ab[48];
-        for (int c = 0; c < 48; ++c) raw[c] = T(0);
-        factor_2(in, dat, raw);
-        whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 6);
-        const int a0 = FACTOR_A_OFF[f];
-        for (int r = 0; r < 6; ++r) {
-            for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
-        }
-    }
-    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 21, 4);
-}
 
 // block 2's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_2(int f, T ab[48]) {
@@ -2764,22 +2693,6 @@ T noise_2(T noise) {
         FGC_CYCLES("noise_2", 0, "terms", 2, 12, 25);
     }
     return noise;
-}
-
-// block 2, cost mode: `total` plus the cost of its instances in order, one every II=5 cycles
-T cost_of_2(const T x[N_X], T total) {
-    for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=5
-        const int f = BLOCK2_INSTANCES[i];
-        T in[6], dat[7], half[1];
-        gather_2(x, f, in, dat);
-        factor_cost_2(in, dat, half);
-        T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
-        total += cost;
-    }
-    FGC_CYCLES("factor_2_cost", 0, "instances", 1, 5, 22);
-    return total;
 }
 
 // block 3: the inputs of instance f (x's storage, then its measurements and noise)
@@ -3142,26 +3055,6 @@ void gather_4(const T x[N_X], int f, T in[12], T dat[4]) {
     for (int i = 0; i < 1; ++i) dat[3 + i] = DATA_BUF[line + 3 + i];
 }
 
-// block 4, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
-// 3 x 7), whitening, into AB; one instance every II=11 cycles (the plan's)
-void evaluate_4(const T x[N_X]) {
-    for (int i = 0; i < 8; ++i) {
-#pragma HLS PIPELINE II=11
-        const int f = BLOCK4_INSTANCES[i];
-        T in[12], dat[4];
-        gather_4(x, f, in, dat);
-        T raw[24];  // the Jacobian writes only its structural non-zeros
-        T ab[24];
-        for (int c = 0; c < 24; ++c) raw[c] = T(0);
-        factor_4(in, dat, raw);
-        whiten<8, 7, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
-        const int a0 = FACTOR_A_OFF[f];
-        for (int r = 0; r < 3; ++r) {
-            for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
-        }
-    }
-    FGC_CYCLES("factor_4_jacobian", 0, "instances", 8, 11, 4);
-}
 
 // block 4's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_4(int f, T ab[24]) {
@@ -3218,19 +3111,105 @@ T noise_4(T noise) {
     return noise;
 }
 
-// block 4, cost mode: `total` plus the cost of its instances in order, one every II=6 cycles
-T cost_of_4(const T x[N_X], T total) {
-    for (int i = 0; i < 8; ++i) {
-#pragma HLS PIPELINE II=6
-        const int f = BLOCK4_INSTANCES[i];
+// The small block types (PriorFactorVector3, PriorFactorImuBias, GPSFactor): one time-multiplexed datapath per mode. One
+// pipelined loop over all their instances (block type by block type) runs one branch a block
+// type of one function, all under that function's ALLOCATION: the branches are exclusive, so
+// they share its operators (their factor_<b> / factor_cost_<b> inlined into it).
+const int SMALL_BLOCK[10] = { 1, 2, 4, 4, 4, 4, 4, 4, 4, 4 };
+const int SMALL_FACTOR[10] = { 1, 2, 10, 11, 12, 13, 14, 15, 16, 17 };
+
+// Jacobian mode of small block type b's instance f (evaluate_<b>'s body)
+void evaluate_small_one(const T x[N_X], int b, int f) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=6
+#pragma HLS ALLOCATION operation instances=fmul limit=24
+    if (b == 1) {
+        T in[3], dat[4];
+        gather_1(x, f, in, dat);
+        T raw[12];  // the Jacobian writes only its structural non-zeros
+        T ab[12];
+        for (int c = 0; c < 12; ++c) raw[c] = T(0);
+        factor_1(in, dat, raw);
+        whiten<4, 4, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
+        const int a0 = FACTOR_A_OFF[f];
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
+        }
+    } else if (b == 2) {
+        T in[6], dat[7];
+        gather_2(x, f, in, dat);
+        T raw[48];  // the Jacobian writes only its structural non-zeros
+        T ab[48];
+        for (int c = 0; c < 48; ++c) raw[c] = T(0);
+        factor_2(in, dat, raw);
+        whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 6);
+        const int a0 = FACTOR_A_OFF[f];
+        for (int r = 0; r < 6; ++r) {
+            for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
+        }
+    } else if (b == 4) {
+        T in[12], dat[4];
+        gather_4(x, f, in, dat);
+        T raw[24];  // the Jacobian writes only its structural non-zeros
+        T ab[24];
+        for (int c = 0; c < 24; ++c) raw[c] = T(0);
+        factor_4(in, dat, raw);
+        whiten<8, 7, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
+        const int a0 = FACTOR_A_OFF[f];
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
+        }
+    }
+}
+
+// every small block type's instances in Jacobian mode, one every II=38 cycles (the plan's)
+void evaluate_small(const T x[N_X]) {
+    for (int i = 0; i < 10; ++i) {
+#pragma HLS PIPELINE II=38
+        evaluate_small_one(x, SMALL_BLOCK[i], SMALL_FACTOR[i]);
+    }
+    FGC_CYCLES("factor_small_jacobian", 0, "instances", 10, 38, 4);
+}
+
+// cost mode of small block type b's instance f: its members' costs summed (cost_of_<b>'s body)
+T cost_small_one(const T x[N_X], int b, int f) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=12
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fmul limit=19
+    T total = T(0);
+    if (b == 1) {
+        T in[3], dat[4], half[1];
+        gather_1(x, f, in, dat);
+        factor_cost_1(in, dat, half);
+        T cost = T(0);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
+        total = cost;
+    } else if (b == 2) {
+        T in[6], dat[7], half[1];
+        gather_2(x, f, in, dat);
+        factor_cost_2(in, dat, half);
+        T cost = T(0);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
+        total = cost;
+    } else if (b == 4) {
         T in[12], dat[4], half[1];
         gather_4(x, f, in, dat);
         factor_cost_4(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
-        total += cost;
+        total = cost;
     }
-    FGC_CYCLES("factor_4_cost", 0, "instances", 8, 6, 18);
+    return total;
+}
+
+// `total` plus the cost of every small block type's instances in order, one every II=11 cycles
+T cost_of_small(const T x[N_X], T total) {
+    for (int i = 0; i < 10; ++i) {
+#pragma HLS PIPELINE II=11
+        total += cost_small_one(x, SMALL_BLOCK[i], SMALL_FACTOR[i]);
+    }
+    FGC_CYCLES("factor_small_cost", 0, "instances", 10, 11, 22);
     return total;
 }
 
@@ -3245,10 +3224,8 @@ bool linearize_all(const T x[N_X]) {
     FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
     FGC_PHASE("factor_jacobian");
     evaluate_0(x);
-    evaluate_1(x);
-    evaluate_2(x);
+    evaluate_small(x);
     evaluate_3(x);
-    evaluate_4(x);
     FGC_PHASE("gradient");
     bool finite = true;
     finite = reduce_0() && finite;
@@ -3287,10 +3264,8 @@ T total_cost(const T x[N_X]) {
     FGC_PHASE("factor_cost");
     T total = T(0);
     total = cost_of_0(x, total);
-    total = cost_of_1(x, total);
-    total = cost_of_2(x, total);
+    total = cost_of_small(x, total);
     total = cost_of_3(x, total);
-    total = cost_of_4(x, total);
     return total;
 }
 
