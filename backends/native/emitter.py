@@ -31,6 +31,7 @@ from fgc_backends.cfamily.scalars import (
     check_fixed_constants,
     kernel_constants,
 )
+from fgc_backends.cfamily.tables import IntTable
 from fgc_backends.native.config import NativeConfig, NativeConfigError
 
 # the central-difference step of the stream's re-expression Jacobian (fgc_local_jacobian), the
@@ -131,6 +132,41 @@ def lanes(config: NativeConfig) -> int | None:
 
 
 
+def postorder(program: Program) -> tuple[int, ...]:
+    """The elimination steps in postorder: each root's subtree depth first, children in the
+    order they enter their parent, every step right after its last child's subtree."""
+    steps = program.schedule.steps
+    order: list[int] = []
+    for root in (s.index for s in steps if s.parent is None):
+        stack = [(root, 0)]
+        while stack:
+            s, k = stack.pop()
+            children = steps[s].children
+            if k < len(children):
+                stack.append((s, k + 1))
+                stack.append((children[k], 0))
+            else:
+                order.append(s)
+    return tuple(order)
+
+
+def update_stack(program: Program, order: tuple[int, ...]) -> tuple[tuple[int, ...], int]:
+    """Where each Cholesky step's update matrix (sw (sw + 1) entries, sw its separator's
+    dimension) goes when the steps run in ``order`` (a postorder) and the update matrices form a
+    stack: a step's children are the top of the stack when it runs, so it writes its own over
+    them once it has assembled them. Returns (offset per step, the stack's largest size)."""
+    steps = program.schedule.steps
+    offset, top, peak = [0] * len(steps), 0, 1
+    for s in order:
+        children = steps[s].children
+        if children:
+            top = offset[children[0]]
+        offset[s] = top
+        top += steps[s].separator_dim * (steps[s].separator_dim + 1)
+        peak = max(peak, top)
+    return tuple(offset), peak
+
+
 def _context(program: Program, config: NativeConfig, project: str) -> dict:
     # the steps of a level run in the order of the HLS design's unit sets (one per chain end on
     # a two-ended chain), so the two builds eliminate in one order and agree bit for bit
@@ -142,7 +178,20 @@ def _context(program: Program, config: NativeConfig, project: str) -> dict:
     # the incremental stream's host work (fgc_kept_walk, fgc_local_jacobian) in a double build:
     # the stream's host arithmetic is double, whatever another build's scalar
     stream_host = config.scalar_cxx == "double"
+    # a CPU has one unit set: Cholesky eliminates the tree in postorder instead of level by level,
+    # so a child's update matrix is read by its parent while it is still in cache (level order
+    # wrote every leaf's first: on sphere2500.txt 30 MB stored and read back from memory per
+    # factorisation). A step's numbers depend only on its children's, so they are the same bits.
+    # The update matrices then form a stack (NF_STACK_OFF): 6 MB at its largest there, not 60.
+    post = unit_sets == 1 and program.solver.linear == "cholesky"
+    nf_stack = 0
+    if post:
+        order = postorder(program)
+        offsets, nf_stack = update_stack(program, order)
+        context["tables"] = [*context["tables"], IntTable("POST_STEPS", order),
+                             IntTable("NF_STACK_OFF", offsets)]
     return context | {
+        "postorder": post, "nf_stack": nf_stack,
         "stream_host": stream_host,
         "locals": local_kinds(program) if stream_host else (),
         "jacobian_step": HlsCodePrinter({}).literal(JACOBIAN_STEP),
