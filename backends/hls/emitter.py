@@ -278,10 +278,16 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "robust_any": any(m.robust for b in blocks for m in b.members),
             "small": shared,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
-            # back_substitute's copies: the memories' two ports shared out over the unit sets
-            "bs_words": max(1, 2 // max(1, sets)), "bs_ii": -(-max(1, sets) // 2),
+            # back_substitute's schedule: (solve step, load step, solving lane) per slot
+            "bs_slots": _backsub_slots(program),
             "cpe": plan.options.cpe, "plan": plan,
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
+
+
+def _backsub_slots(program: Program) -> tuple[tuple[int, int, int], ...]:
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.backsub import backsub_slots
+    return backsub_slots(_tables(program))
 
 
 def for_program(program: Program, config: HlsConfig) -> HlsConfig:

@@ -65,17 +65,21 @@ def allocations(text: str) -> dict[str, tuple[tuple[str, str, int], ...]]:
 
 
 def backsub_region(kernel: str) -> Region:
-    """The kernel's back-substitution region (``backsub_level``: one process per unit)."""
-    (region,) = [r for r in read_network(kernel) if r.function == "backsub_level"]
-    return region
+    """The kernel's back-substitution regions (``backsub_lane0`` and ``backsub_lane1``: a
+    lane's solve beside the other lane's load) as one: their processes and streams in order."""
+    lanes = [r for r in read_network(kernel) if r.function.startswith("backsub_lane")]
+    if len(lanes) != 2:
+        raise ValueError(f"expected two backsub_lane regions, found {len(lanes)}")
+    return Region("backsub_lane", tuple(p for r in lanes for p in r.processes),
+                  tuple(st for r in lanes for st in r.streams))
 
 
 def counts(kernel: str, units: str) -> tuple[int, int]:
     """Processes and streams of the kernel's process network: the linear solver's - the
     kernel's unit-set region (QR: how many unit sets run side by side; Cholesky: one cascade)
     times the unit header's innermost region (one reflection, one CPE round) with the kernel's
-    N_UNITS / N_CPE - and back-substitution's region (:func:`backsub_region`: its process
-    calls and any streams it declares)."""
+    N_UNITS / N_CPE - and back-substitution's regions (:func:`backsub_region`: their process
+    calls and any streams they declare)."""
     const = {k: int(v) for k, v in _CONSTANT.findall(kernel)}
     cfg = {f"CFG::{k}": v for k, v in const.items()}
     sets = next((len(r.processes) for r in read_network(kernel) if r.function == "qr_level"), 1)

@@ -218,9 +218,9 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     # tap and itself, drain
     per_set = value + 4 if linear == "qr" else 2 * value + 2
     assert ran == {region: per_set}
-    # and back-substitution's backsub_level region: one unit per unit set
-    assert len(procs) == sets * per_set + sets and procs[-sets:] == tuple(
-        f"backsub_set{u}" for u in range(sets))
+    # and back-substitution's two backsub_lane regions: a lane's solve beside the other's load
+    assert len(procs) == sets * per_set + 4 and procs[-4:] == (
+        "backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
 
 
 # the serial ordering with 3 units (heavy: about 30 s on 2 cores) repeats the two-ended case's

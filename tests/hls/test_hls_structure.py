@@ -264,10 +264,11 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
     assert reflection.processes == ("qr_broadcast", "qr_finish", "qr_update_units::run",
                                     "qr_evaluate", "qr_collect")
     backsub = backsub_region(kernel)
-    assert backsub.processes == ("backsub_set0", "backsub_set1") and not backsub.streams
+    assert backsub.processes == ("backsub_set0", "backsub_load1", "backsub_set1",
+                                 "backsub_load0") and not backsub.streams
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     assert counts(kernel, header) == (len(procs), len(streams))
-    assert (len(procs), len(streams)) == ((units + 4) * 2 + 2, 2 * (4 * units + 1))
+    assert (len(procs), len(streams)) == ((units + 4) * 2 + 4, 2 * (4 * units + 1))
     assert tuple(p for p in procs if p.startswith("backsub")) == backsub.processes
     for p in procs:  # the comment block lists the plan's network
         assert f"//   process {p}\n" in kernel
@@ -285,8 +286,9 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     assert region.processes == ("cpe_feed", "cpe_cascade::run", "cpe_drain")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     # feed, per CPE its tap and itself, drain, back-substitution; links, tapped and recip
-    assert counts(kernel, header) == (len(procs), len(streams)) == (2 * cpe + 3, 3 * cpe + 1)
-    assert procs[-1] == "backsub_set0" and "//   process backsub_set0\n" in kernel
+    assert counts(kernel, header) == (len(procs), len(streams)) == (2 * cpe + 6, 3 * cpe + 1)
+    assert procs[-4:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
+    assert all(f"//   process {p}\n" in kernel for p in procs[-4:])
     assert f"//   stream cpe_link{cpe} " in kernel
 
 
@@ -324,7 +326,7 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
 
 
 def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):
-    """The read-back counts what the text holds: a kernel whose backsub_level region lost a
+    """The read-back counts what the text holds: a kernel whose backsub_lane region lost a
     unit's call (or gained a stream) no longer equals the plan's network."""
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import counts

@@ -139,18 +139,19 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     assert phases["lm_iteration"] == 11 + 26
     assert phases["lm_control"] == 30 + 30
     assert phases["lm_accept"] == 13
-    # back-substitution (fgc_backsub.h: cond_load before the backsub_level region, whose
-    # cond_backsub per unit set run side by side; two unit sets, so the separator and solution
-    # copies move one word of each set's step a cycle). The root step (f 3, s 0): no separator;
-    # cond_load's 4 + 3 + 2 = 9 words two a cycle, read + multiply-add 2 + 3 + 4 = 9 deep
-    # (4 + 9 = 13); cond_backsub: the rows (3, max(add 4 (1 + ⌈log₂ 8⌉), div 15) = 16 deep:
-    # 18), the triangle's columns 2 and 1 each padded to the chain 2 mul + add = 10, plus one
-    # (22 iterations, 10 deep: 31), x_0's multiply 3 -> 52; the solution out (3: 4) -> 69. The
-    # second level has two steps (f 3, s 3): the separators in (3: 4), each step's cond_load
-    # (7 + 6 + 5 = 18 words: 8 + 9 = 17) one after the other (34), the region the slower
-    # cond_backsub (52) plus the other's fill (its rows' depth 16): 68; the solutions out (4)
-    # -> 110
-    assert phases["backsub_level0"] == 69 and phases["backsub_level1"] == 110
+    # back-substitution (fgc_backsub.h; backsub.py's slots: a step's cond_backsub on one lane
+    # beside the next step's cond_load into the other, copies two words a cycle). Steps root
+    # (f 3, s 0), then A and B (f 3, s 3), both separators in the root's frontal columns: slot 0
+    # loads the root (4 + 3 + 2 = 9 words two a cycle, read + multiply-add 2 + 3 + 4 = 9 deep:
+    # 4 + 9 = 13); slot 1 solves it (the rows 3 at max(add 4 (1 + ⌈log₂ 8⌉), div 15) = 16 deep:
+    # 18; the triangle's columns 2 and 1 each padded to the chain 2 mul + add = 10, plus one: 22
+    # iterations 10 deep: 31; x_0's multiply 3 -> 52) and its 3 unknowns out (2 + 1: 3) -> 55;
+    # A needs them, so slot 2 loads it alone: its separator in (3) and 7 + 6 + 5 = 18 words
+    # (8 + 9 = 17) -> 20; slot 3 solves A (52) beside B's load (17), the slower plus the
+    # other's fill (9), between B's separator in (3) and A's solution out (3) -> 67; slot 4
+    # solves B -> 55
+    sizes = [phases[f"backsub_level{k}"] for k in range(5)]
+    assert sizes == [13, 55, 20, 67, 55] and "backsub_level5" not in phases
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub_")))

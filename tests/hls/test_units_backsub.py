@@ -10,6 +10,7 @@ from fgc_backends.hls.plan import build_plan
 from fgc_backends.hls.units.backsub import (
     backsub_loops,
     backsub_operators,
+    backsub_slots,
     backsub_words,
     load_loop,
     triangle_trip,
@@ -51,10 +52,31 @@ def test_backsub_operators_as_bound():
     assert dict(backsub_operators(FLOAT32)) == {"add": 2 + 8 + 1, "mul": 2 + 2 + 1, "div": 1}
 
 
-def test_one_backsub_unit_per_qr_unit_set():
+def test_two_backsub_lanes_whatever_the_unit_sets():
     plan = build_plan(chain(7, linear="qr"))  # two-ended: two unit sets
     assert [u.name for u in plan.units if u.name.endswith("_backsub")] == ["qr0_backsub",
                                                                            "qr1_backsub"]
     cholesky = build_plan(chain(5, linear="cholesky", cpe=2))
-    assert cholesky.unit("trisolve").instances == 1
+    assert cholesky.unit("trisolve").instances == 2  # the two lanes
     assert any(ph.name.startswith("backsub_level") for ph in cholesky.phases)
+
+
+def test_slots_overlap_a_solve_with_the_next_load_unless_it_needs_that_solution():
+    # steps 0 (columns 0, 1 | separator 4) and 1 (2, 3 | 5) below the root 2 (4, 5): root
+    # first; step 0 needs the root's x (it loads alone), step 1 only the root's, solved two
+    # slots before: its load runs beside step 0's solve
+    tables = {"LEVEL_BEGIN": (0, 2, 3), "LEVEL_STEPS": (0, 1, 2), "STEP_F": (2, 2, 2),
+              "STEP_W": (3, 3, 2), "STEP_COL_BEGIN": (0, 3, 6), "STEP_COL": (0, 1, 4, 2, 3, 5,
+                                                                             4, 5)}
+    assert backsub_slots(tables) == ((-1, 2, 1), (2, -1, 0), (-1, 0, 0), (0, 1, 1), (1, -1, 0))
+    # every step loaded once and solved once, after its load, on the lane it was loaded into
+    # (lane of the t-th step: t % 2; the slot's lane is the solving one)
+    serial = {**tables, "STEP_COL": (0, 1, 4, 2, 3, 0, 4, 5)}  # step 1 now needs step 0
+    slots = backsub_slots(serial)
+    assert slots == ((-1, 2, 1), (2, -1, 0), (-1, 0, 0), (0, -1, 1), (-1, 1, 1), (1, -1, 0))
+
+
+def test_two_lanes_on_a_one_set_qr_design():
+    plan = build_plan(chain(5, linear="qr", ordering="serial"))
+    assert [u.name for u in plan.units if u.name.endswith("_backsub")] == ["qr0_backsub",
+                                                                           "qr1_backsub"]

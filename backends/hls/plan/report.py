@@ -60,9 +60,10 @@ def unit_sets(plan: AcceleratorPlan) -> int:
 
 
 def backsub_units(plan: AcceleratorPlan) -> int:
-    """Back-substitution units of ``plan``: one per QR unit set, one for Cholesky (the
-    emitted ``backsub_set<u>`` processes of back_substitute's ``backsub_level`` region)."""
-    return max(1, unit_sets(plan))
+    """Back-substitution units of ``plan``: its two lanes, whatever the unit sets (the emitted
+    ``backsub_set<l>`` and ``backsub_load<l>`` processes of back_substitute's
+    ``backsub_lane<p>`` regions)."""
+    return 2
 
 
 def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Channel, ...]]:
@@ -70,11 +71,11 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
     (the unit headers' regions: per QR unit set broadcast, qr_finish, n_u Update units,
     Evaluate and collect; for Cholesky the feed, per process element its tap and CPE, and the
     drain),
-    then back-substitution's (the kernel's ``backsub_level`` region: one ``backsub_set<u>``
-    per unit, :func:`backsub_units`, side by side). Streams are the plan's stream channels;
-    the back-substitution units have none (each reads its own conditional and separator
-    buffers and writes its own frontal buffer, the region's arguments: nothing passes from
-    one unit to another)."""
+    then back-substitution's (the kernel's ``backsub_lane<p>`` regions: lane p's
+    ``backsub_set<p>`` beside the other lane's ``backsub_load``, :func:`backsub_units` lanes).
+    Streams are the plan's stream channels; the back-substitution lanes have none (a solve
+    reads its lane's buffers, the load fills the other lane's: nothing passes between the two
+    processes of a region)."""
     if plan.linear == "qr" and plan.options.qr_unit == "stream":  # fgc_qr_stream.h's qrs_pass
         procs = tuple(p for s in range(unit_sets(plan)) for p in (
             f"qr{s}_source", *(f"qr{s}_{k}{t}" for t in range(plan.options.units)
@@ -88,7 +89,7 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
     else:
         procs = ("cpe_feed", *(p for i in range(plan.options.cpe)
                                for p in (f"cpe_tap{i}", f"cpe{i}")), "cpe_drain")
-    procs += tuple(f"backsub_set{u}" for u in range(backsub_units(plan)))
+    procs += ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
 
 

@@ -1,7 +1,7 @@
-"""Back-substitution (``include/fgc_backsub.h``'s ``cond_backsub``): the conditionals solved
-level by level, root first, one ``backsub_set<u>`` unit per QR unit set (one for Cholesky) side
-by side in back_substitute's ``backsub_level`` region; a what-if whole-matrix Cholesky solves
-Lᵀδ = z by rows instead."""
+"""Back-substitution (``include/fgc_backsub.h``'s ``cond_load`` and ``cond_backsub``): the
+conditionals solved root first on two lanes, a step's solve on one lane beside the next step's
+load into the other (back_substitute's ``backsub_lane<p>`` regions, :func:`backsub_slots`), for
+QR and Cholesky alike; a what-if whole-matrix Cholesky solves Lᵀδ = z by rows instead."""
 
 from __future__ import annotations
 
@@ -12,6 +12,8 @@ from fgc_backends.hls.plan.binding import BoundLoop, sum_operators
 from fgc_backends.hls.plan.loops import _ceil_log2, _ported, _region_cycles, dot_loop, kernel_loop
 from fgc_backends.hls.plan.model import PORTS, Loop, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
+
+LANES = 2  # back-substitution lanes: one solves a step while the other loads the next
 
 
 def backsub_chain(ops: OperatorTable) -> int:
@@ -64,28 +66,55 @@ def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
             Loop(f"{name}_last", 1, 1, ops.mul.latency)]
 
 
-def backsub_chunk_loops(tables: dict, steps, ops: OperatorTable, timing: dict,
-                        sets: int) -> list[Loop]:
-    """back_substitute() on ``steps`` (at most ``sets``: one chunk of a level, one step per unit
-    set): their separator solutions copied in side by side (the memories' two ports shared
-    out: ``max(1, PORTS // sets)`` words of each step an iteration at II ⌈sets / PORTS⌉), each
-    step's ``cond_load`` in turn (:func:`load_loop`), the ``backsub_level`` DATAFLOW region
-    (one ``cond_backsub`` process per unit set: the slowest plus the others' fill), the frontal
-    solutions out side by side."""
-    per, ii = max(1, PORTS // sets), -(-sets // PORTS)
-    sizes = [(tables["STEP_F"][s], tables["STEP_W"][s]) for s in steps]
-    region = _region_cycles([backsub_loops(f, w - f, ops, name=f"bs{s}")
-                             for s, (f, w) in zip(steps, sizes, strict=True)])
-    _, depth = timing["move"]
+def backsub_slots(tables: dict) -> tuple[tuple[int, int, int], ...]:
+    """back_substitute()'s schedule: (solve step, load step, lane) per slot (-1: none). The steps
+    go root first (levels in turn, LEVEL_STEPS order), the t-th on lane t % 2 (:data:`LANES`).
+    Slot t solves step t - 1 on its lane while step t's conditional loads into the other lane
+    (``backsub_lane<p>``: p the solving lane), unless step t's separator holds a frontal column
+    of step t - 1 (it waits for that solution: one slot solves t - 1 alone, the next loads t
+    alone). The last slot solves the last step."""
+    begin, level_steps = tables["LEVEL_BEGIN"], tables["LEVEL_STEPS"]
+    order = [level_steps[i] for li in range(len(begin) - 2, -1, -1)
+             for i in range(begin[li], begin[li + 1])]
+    cols, cb = tables["STEP_COL"], tables["STEP_COL_BEGIN"]
+    f_of, w_of = tables["STEP_F"], tables["STEP_W"]
 
-    def copy(name, words):
-        return Loop(name, -(-max(words) // per), ii, depth)
+    def frontal(s):
+        return set(cols[cb[s]:cb[s] + f_of[s]])
 
-    return [copy("separator_in", [w - f for f, w in sizes]),
-            *[load_loop(f, w - f, ops, name=f"cond_load{s}")
-              for s, (f, w) in zip(steps, sizes, strict=True)],
-            Loop("backsub_level", 1, 1, region),
-            copy("solution_out", [f for f, _ in sizes])]
+    def separator(s):
+        return set(cols[cb[s] + f_of[s]:cb[s] + w_of[s]])
+
+    slots: list[tuple[int, int, int]] = []
+    for t, step in enumerate(order):
+        lane = t % LANES
+        if t == 0:
+            slots.append((-1, step, 1 - lane))
+        elif separator(step) & frontal(order[t - 1]):
+            slots += [(order[t - 1], -1, 1 - lane), (-1, step, 1 - lane)]
+        else:
+            slots.append((order[t - 1], step, 1 - lane))
+    if order:
+        slots.append((order[-1], -1, (len(order) - 1) % LANES))
+    return tuple(slots)
+
+
+def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
+                       timing: dict) -> list[Loop]:
+    """One slot of back_substitute() (:func:`backsub_slots`): the loaded step's separator
+    solution in (:data:`PORTS` words a cycle), the ``backsub_lane<p>`` DATAFLOW region (the
+    solving lane's ``cond_backsub`` beside the other lane's ``cond_load``: the slower plus the
+    other's fill), the solved step's frontal solution out."""
+    def sizes(s):
+        return (tables["STEP_F"][s], tables["STEP_W"][s] - tables["STEP_F"][s]) if s >= 0 \
+            else (0, 0)
+
+    (sf, ss), (lf, ls) = sizes(solve), sizes(load)
+    region = _region_cycles([backsub_loops(sf, ss, ops, name=f"bs{solve}"),
+                             [load_loop(lf, ls, ops, name=f"cond_load{load}")]])
+    return [kernel_loop("separator_in", _ported(ls), "move", timing),
+            Loop("backsub_lane", 1, 1, region),
+            kernel_loop("solution_out", _ported(sf), "move", timing)]
 
 
 def backsub_copies(tables: dict, s: int, timing: dict, ops: OperatorTable
@@ -99,19 +128,15 @@ def backsub_copies(tables: dict, s: int, timing: dict, ops: OperatorTable
             [kernel_loop("solution_out", _ported(f), "move", timing)])
 
 
-def backsub_phases(ctx, unit: str, sets: int = 1) -> None:
-    """The emitted back_substitute: levels root first, each level's steps (LEVEL_STEPS order)
-    ``sets`` at a time through the ``backsub_level`` region (:func:`backsub_chunk_loops`)."""
+def backsub_phases(ctx, unit: str) -> None:
+    """The emitted back_substitute: one phase per slot of :func:`backsub_slots` (named
+    ``backsub_level<k>``: the k-th slot; its group is ``backsub``)."""
     tables, timing, ops = ctx.tables, ctx.les_timing, ctx.les
-    begin, order = tables["LEVEL_BEGIN"], tables["LEVEL_STEPS"]
-    for li in range(len(begin) - 2, -1, -1):
-        procs = []
-        for i in range(begin[li], begin[li + 1], sets):
-            chunk = order[i:min(i + sets, begin[li + 1])]
-            procs.append(Process("backsub_" + "_".join(f"step{s}" for s in chunk), unit,
-                                 tuple(backsub_chunk_loops(tables, chunk, ops, timing, sets))))
-        ctx.add_phase("solve", Phase(f"backsub_level{len(begin) - 2 - li}", False, tuple(procs),
-                                     linear=True))
+    for k, (solve, load, _) in enumerate(backsub_slots(tables)):
+        name = "_".join(f"{what}{s}" for what, s in (("solve", solve), ("load", load)) if s >= 0)
+        ctx.add_phase("solve", Phase(f"backsub_level{k}", False, (Process(
+            f"backsub_{name}", unit, tuple(backsub_slot_loops(tables, solve, load, ops,
+                                                              timing))),), linear=True))
 
 
 def backsub_operators(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
@@ -129,19 +154,21 @@ def backsub_operators(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
 
 
 def build(ctx) -> None:
-    """QR: one back-substitution unit per unit set; Cholesky: the trisolve unit (as emitted:
-    cond_backsub step by step; what-if: Lᵀδ = z by rows, Lz = g riding the cascade)."""
+    """Both linear solvers: :data:`LANES` back-substitution units (QR: ``qr<l>_backsub``;
+    Cholesky: ``trisolve``), whatever the unit sets (as emitted: one step's cond_backsub on one
+    lane beside the next step's cond_load on the other; what-if whole-matrix Cholesky: Lᵀδ = z
+    by rows, Lz = g riding the cascade)."""
     program, opts, ops = ctx.program, ctx.opts, ctx.les
     if program.solver.linear == "qr":
-        sets = ctx.shared["sets"]
-        backsub_phases(ctx, "backsub", sets)
-        for s in range(sets):
-            ctx.units.append(Unit(f"qr{s}_backsub", "back-substitution (cond_backsub)", 1,
-                                  backsub_operators(ops)))
+        backsub_phases(ctx, "backsub")
+        for lane in range(LANES):
+            ctx.units.append(Unit(f"qr{lane}_backsub", f"back-substitution lane {lane} "
+                                  "(cond_load, cond_backsub)", 1, backsub_operators(ops)))
         return
     if opts.hessian_storage == "frontal":
-        ctx.units.append(Unit("trisolve", "back-substitution (cond_backsub; Lz = g rides the "
-                              "cascade)", 1, backsub_operators(ops)))
+        ctx.units.append(Unit("trisolve", "back-substitution, one per lane (cond_load, "
+                              "cond_backsub; Lz = g rides the cascade)", LANES,
+                              backsub_operators(ops)))
         backsub_phases(ctx, "trisolve")
         return
     n = program.storage.columns
@@ -158,5 +185,6 @@ SPEC = UnitSpec(
     build=build, phases=("backsub", "trisolve"), header="fgc_backsub.h",
     constants=(("PARTIALS", "interleaved partial sums per row (the adder latency)"),
                ("MAX_F", "widest frontal block"), ("MAX_W", "widest step")),
-    printed_by="accel.cpp.jinja: back_substitute -> backsub_level -> fgc_backsub.h cond_backsub")
+    printed_by="accel.cpp.jinja: back_substitute -> backsub_lane<p> -> fgc_backsub.h cond_backsub, "
+               "cond_load")
 
