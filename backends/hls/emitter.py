@@ -232,19 +232,19 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             blocks.append(_AccelBlock(b, ((), ()), small_jac, small_cost,
                                       noise[f"noise_{b.index}"]))
             blocks[-1].small = True
-            blocks[-1].gram_ii = gram_ii(program, b.index, plan.options.hgc_lanes)
-            continue
-        jac = Unit(f"factor_{b.index}", "ALLOCATION", 1,
-                   mode_allocation(allocations[b.index], block.ops_after))
-        cost = Unit(f"factor_cost_{b.index}", "ALLOCATION", 1,
-                    mode_allocation(allocations[b.index], block.ops_cost))
-        jac_text = "\n".join((*b.jacobian.intermediates, *b.jacobian.outputs))
-        cost_text = "\n".join((*b.cost.intermediates, *b.cost.outputs))
-        blocks.append(_AccelBlock(b, (_allocation(jac, config.scalar_cxx, jac_text),
-                                      _allocation(cost, config.scalar_cxx, cost_text)),
-                                  loops[f"factor_{b.index}_jacobian"],
-                                  loops[f"factor_{b.index}_cost"], noise[f"noise_{b.index}"]))
-        blocks[-1].small = False
+        else:
+            jac = Unit(f"factor_{b.index}", "ALLOCATION", 1,
+                       mode_allocation(allocations[b.index], block.ops_after))
+            cost = Unit(f"factor_cost_{b.index}", "ALLOCATION", 1,
+                        mode_allocation(allocations[b.index], block.ops_cost))
+            jac_text = "\n".join((*b.jacobian.intermediates, *b.jacobian.outputs))
+            cost_text = "\n".join((*b.cost.intermediates, *b.cost.outputs))
+            blocks.append(_AccelBlock(b, (_allocation(jac, config.scalar_cxx, jac_text),
+                                          _allocation(cost, config.scalar_cxx, cost_text)),
+                                      loops[f"factor_{b.index}_jacobian"],
+                                      loops[f"factor_{b.index}_cost"],
+                                      noise[f"noise_{b.index}"]))
+            blocks[-1].small = False
         # Cholesky's HGC: the II of the block's Gram entries (its multipliers) and the entries
         blocks[-1].gram_ii = gram_ii(program, b.index, plan.options.hgc_lanes)
         entries = gram_entries(block) if program.solver.linear == "cholesky" else ()
