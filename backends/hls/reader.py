@@ -189,6 +189,13 @@ class _Reader:
         self.members: dict[str, list[tuple[tuple[str, ...] | None, _Function]]] = {}
         self.defaults: dict[str, tuple[str, ...]] = {}  # struct template -> its parameters
         self.structs: set[str] = set()  # every struct's name
+        # file -> its functions: a call resolves in its own file first (a kernel's functions
+        # live in its .cpp's anonymous namespace: the on-chip stream design's two kernels
+        # define the same names), then anywhere
+        self.local: dict[str, dict[str, _Function]] = {}
+        # the translation unit being read: the .cpp of the kernel function that (directly or
+        # through a header's template) is being read
+        self.where: str | None = None
         for name, code in self.files:
             structs = []
             for m in re.finditer(r"(?:template\s*<([^{};]*?)>\s*)?\bstruct\s+(\w+)\s*"
@@ -205,7 +212,11 @@ class _Reader:
                         (spec[-1][2] if spec else None, f))
                 else:
                     self.functions.setdefault(f.name, f)
+                    self.local.setdefault(name, {}).setdefault(f.name, f)
         self.constants = _constants(code for _, code in self.files)
+        # a kernel's own constants (two kernels in one design may give a name two values)
+        self.unit_constants = {name: _constants([code]) for name, code in self.files
+                               if name.endswith(".cpp")}
         self.add_latency = add_latency
         outside = "\n".join(self._outside_functions(n, c) for n, c in self.files)
         self.globals = {m.group(2): _Var(re.fullmatch(FLOAT_TYPES, m.group(1)) is not None,
@@ -283,7 +294,8 @@ class _Reader:
         word = expr.strip()
         if word in ("true", "false"):
             return int(word == "true")
-        return _evaluate(expr, {**self.constants, **env})
+        return _evaluate(expr, {**self.constants, **self.unit_constants.get(self.where, {}),
+                                **env})
 
     def _bindings(self) -> dict[tuple[str, str], set[str]]:
         """(function, parameter) -> the names its call sites pass (their base names, resolved
@@ -545,18 +557,20 @@ class _Reader:
                     if bound.alias in outer or base.group(1) in outer:
                         inner_outer.add(bound.alias)
             inner_scope[param.name] = var
-        key = (f.qualname, f.start, tuple(sorted(inner_env.items())),
+        key = (f.file, f.qualname, f.start, tuple(sorted(inner_env.items())),
                tuple(sorted((k, v.alias, v.storage) for k, v in inner_scope.items())),
                tuple(sorted(inner_outer)))
         if key not in self.memo:
             self.memo[key] = _Count()  # a call back into itself counts nothing more
             saved, self.returns_float = self.returns_float, re.search(
                 rf"\b{FLOAT_TYPES}\b", f.ret) is not None
+            where, self.where = self.where, _unit(f, self.where)
             try:
                 result = self.count(f.text, inner_scope, dict(inner_env), None,
                                     frozenset(inner_outer), depth)
             finally:
                 self.returns_float = saved
+                self.where = where
             if self.allocation(f.text):  # its own module under ALLOCATION: counted apart
                 capped = _Count(accesses=result.accesses, recurrences=result.recurrences,
                                 rw=result.rw)
@@ -565,7 +579,7 @@ class _Reader:
             self.memo[key] = result
         return self.memo[key]
 
-    def resolve(self, text: str, m: re.Match, env: dict[str, int]
+    def resolve(self, text: str, m: re.Match, env: dict[str, int], file: str | None = None
                 ) -> tuple[_Function, dict[str, int]] | None:
         """The function a call matched by ``_CALL`` in ``text`` runs, and its integer template
         arguments: ``f<...>(``, or ``S<...>::f(`` (a member of a struct template, its partial
@@ -577,6 +591,8 @@ class _Reader:
             variants = self.members.get(f"{struct}::{m.group(1)}")
             if not variants:
                 return None
+            # the struct of this translation unit (each kernel defines its own LmConfig)
+            variants = [v for v in variants if v[1].file == (file or self.where)] or variants
             args = _split_top(owner.group(2)[1:-1]) if owner.group(2) else []
             values = [self._value(a, env) for a in args]
             params = self.defaults.get(struct, ())
@@ -611,7 +627,8 @@ class _Reader:
                     break
             ints = [v for a, v in zip(args, values, strict=True) if v is not None]
             return chosen, {**dict(zip(chosen.template_ints, ints, strict=False)), **types}
-        f = self.functions.get(m.group(1))
+        f = self.local.get(file or self.where, {}).get(m.group(1)) or \
+            self.functions.get(m.group(1))
         if f is None:
             return None
         cenv: dict = {}
@@ -707,6 +724,14 @@ class _Reader:
 
     def loop(self, f: _Function, pragma: int, ii: int, template: dict[str, int]
              ) -> LoopReading | None:
+        where, self.where = self.where, _unit(f, self.where)
+        try:
+            return self._loop(f, pragma, ii, template)
+        finally:
+            self.where = where
+
+    def _loop(self, f: _Function, pragma: int, ii: int, template: dict[str, int]
+              ) -> LoopReading | None:
         code = f.code
         depth, open_ = 0, None
         for i in range(pragma - 1, f.body[0], -1):
@@ -831,16 +856,23 @@ class DesignReading:
                    for kind, n in ops)
 
 
+def _unit(f: _Function, unit: str | None) -> str | None:
+    """The translation unit ``f`` is read in: its own file if it is a .cpp (a kernel), else
+    (a header's function) the unit that reached it."""
+    return f.file if f.file.endswith(".cpp") else unit
+
+
 def _design(reader: _Reader, top: str) -> DesignReading:
     # the pipelined loops of each function as the design instantiates it (a template reached
     # through a struct's member, cpe_cascade<CFG, K>::run calling cpe<CFG, K>, with K bound
     # there); the loops of functions the top never reaches as their own call sites bind them
     readings: dict[tuple, list[LoopReading]] = {}
 
-    def loops_of(f: _Function, env: dict[str, int]) -> list[LoopReading]:
+    def loops_of(f: _Function, env: dict[str, int], unit: str | None) -> list[LoopReading]:
         key = (f.file, f.start, tuple(sorted((k, v) for k, v in env.items()
-                                             if k in f.template_ints)))
+                                             if k in f.template_ints)), unit)
         if key not in readings:
+            reader.where = unit
             readings[key] = reader.loops_in(f, env)
         return readings[key]
 
@@ -849,8 +881,9 @@ def _design(reader: _Reader, top: str) -> DesignReading:
     visited: set[tuple[str, str]] = set()
     by_file: dict[str, Counter] = {}
 
-    def own(f: _Function, env: dict[str, int]) -> Counter:
+    def own(f: _Function, env: dict[str, int], unit: str | None) -> Counter:
         reader.flatten = False
+        reader.where = unit
         reader.returns_float = re.search(rf"\b{FLOAT_TYPES}\b", f.ret) is not None
         try:
             count = reader.count(f.text, {p.name: v for p in f.params
@@ -861,41 +894,44 @@ def _design(reader: _Reader, top: str) -> DesignReading:
         limits = reader.allocation(f.text)
         return Counter({k: min(limits.get(k, 1), n) for k, n in count.ops.items() if n})
 
-    def visit(f: _Function, env: dict[str, int], mult: int, depth: int) -> None:
+    def visit(f: _Function, env: dict[str, int], mult: int, depth: int,
+              unit: str | None = None) -> None:
         if depth > 400 or mult == 0:  # a template recursion (a cascade of 80 CPEs) is deep
             return
         modules[f.qualname] += mult
         seq: Counter = Counter()  # the sequential code's operators, its INLINE callees' merged
-        walk(f, env, mult, depth, seq)
+        walk(f, env, mult, depth, seq, unit)
         here = by_file.setdefault(f.file, Counter())
         for kind, n in seq.items():
             operators[kind] += n * mult
             here[kind] += n * mult
 
-    def walk(f: _Function, env: dict[str, int], mult: int, depth: int, seq: Counter) -> None:
+    def walk(f: _Function, env: dict[str, int], mult: int, depth: int, seq: Counter,
+             unit: str | None) -> None:
         """``f``'s code into the module being read: its sequential operators into ``seq``
         (an INLINE callee's join its caller's: one RTL body), its pipelined loops' and its
         other callees' instances apart."""
         visited.add((f.file, f.name))
-        for kind, n in own(f, env).items():
+        unit = _unit(f, unit)
+        for kind, n in own(f, env, unit).items():
             seq[kind] = max(seq[kind], n)
         here = by_file.setdefault(f.file, Counter())
-        for r in loops_of(f, env):
+        for r in loops_of(f, env, unit):
             for kind, n in r.instances:
                 operators[kind] += n * mult
                 here[kind] += n * mult
         # ALLOCATION function instances=g limit=n in f: f's call sites of g share n instances
         left = dict(reader.function_allocation(f.text, env))
-        for callee, cenv, times in calls(f.text, env):
+        for callee, cenv, times in calls(f.text, env, unit):
             if callee.name in left:
                 times = min(times, left[callee.name])
                 left[callee.name] -= times
             if callee.inline and depth <= 400:
-                walk(callee, cenv, mult * times, depth + 1, seq)
+                walk(callee, cenv, mult * times, depth + 1, seq, unit)
             else:
-                visit(callee, cenv, mult * times, depth + 1)
+                visit(callee, cenv, mult * times, depth + 1, unit)
 
-    def calls(text: str, env: dict[str, int]):
+    def calls(text: str, env: dict[str, int], file: str):
         pos = 0
         while pos < len(text):
             m = re.compile(r"\bfor\s*\(|" + _CALL.pattern).search(text, pos)
@@ -913,12 +949,12 @@ def _design(reader: _Reader, top: str) -> DesignReading:
                 if unrolled and values:
                     var, seq = values
                     for value in seq:
-                        yield from calls(body, {**env, var: value})
+                        yield from calls(body, {**env, var: value}, file)
                 else:
-                    yield from ((c, e, 1) for c, e, _ in calls(body, env))
+                    yield from ((c, e, 1) for c, e, _ in calls(body, env, file))
                 continue
             pos = m.end()
-            found = reader.resolve(text, m, env)
+            found = reader.resolve(text, m, env, file)
             if found is not None:
                 yield found[0], found[1], 1
 
