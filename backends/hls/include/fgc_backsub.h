@@ -3,7 +3,7 @@
 // since L z = g already ran in the cascade as the augmented column).
 //
 //   template <class CFG>
-//   void cond_load(const typename CFG::T src[], int f, int s, const typename CFG::T xs[MAX_COLS],
+//   void cond_load(const typename CFG::T src[], int off, int f, int s, const typename CFG::T xs[MAX_COLS],
 //                  typename CFG::T cond[MAX_F * MAX_COLS], typename CFG::T part[2][PARTIALS][MAX_F]);
 //   template <class CFG>
 //   void cond_backsub(const typename CFG::T cond[MAX_F * MAX_COLS], int f, int s,
@@ -16,7 +16,7 @@
 //
 // cond_load moves the words the solve reads (R's upper triangle, S and d of each row: f (w + 1)
 // - f (f - 1) / 2 words, the structural zeros below R's diagonal left behind) from where the
-// factorization stored them into the unit's buffer, two a cycle (the source memory's two ports),
+// factorization stored them (src from word off on) into the unit's buffer, two a cycle (the source memory's two ports),
 // and on the way adds each S_ia xs_a into a partial sum of row i: word lane h (the word's index
 // parity: a lane per port) and bank (a >> 1) % PARTIALS, so a lane's sum comes back PARTIALS >=
 // ADD_LAT iterations later (II 1) and the first S_ia of a sum sets it (no zeroing pass).
@@ -63,7 +63,7 @@ inline int backsub_triangle_trip(int f) {
 inline int backsub_words(int f, int s) { return f * (f + s + 1) - f * (f - 1) / 2; }
 
 template <class CFG>
-void cond_load(const typename CFG::T src[], int f, int s,
+void cond_load(const typename CFG::T src[], int off, int f, int s,
                const typename CFG::T xs[CFG::MAX_COLS],
                typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                typename CFG::T part[2][CFG::PARTIALS][CFG::MAX_F]) {
@@ -81,7 +81,7 @@ void cond_load(const typename CFG::T src[], int f, int s,
         for (int h = 0; h < 2; ++h) {
 #pragma HLS UNROLL
             if (e + h < words) {
-                const T v = src[base + c];
+                const T v = src[off + base + c];
                 cond[base + c] = v;
                 const int a = c - f;
                 if (a >= 0 && a < s) {

@@ -3086,7 +3086,7 @@ void backsub_set0(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
 void backsub_load0(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
                    L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
     FGC_BRANCH();
-    fgc_units::cond_load<LesConfig>(COND + off, f, s, xs, cond, part);
+    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
 }
 
 // Lane 1's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load
@@ -3101,7 +3101,7 @@ void backsub_set1(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
 void backsub_load1(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
                    L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
     FGC_BRANCH();
-    fgc_units::cond_load<LesConfig>(COND + off, f, s, xs, cond, part);
+    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
 }
 
 // A slot whose solve is on lane 0: that lane's cond_backsub beside lane 1's cond_load.
