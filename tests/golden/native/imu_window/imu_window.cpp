@@ -3274,7 +3274,9 @@ FGC_INLINE bool store_step(T (*H)[LD], int w, int f, int s, T scale) {
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=30
         if (!(fgc_abs(H[i][i]) > SINGULAR_EPS * scale)) return false;
-        for (int c = 0; c <= w; ++c) {
+        // from the diagonal on: back-substitution reads nothing left of it (the copy of a wide
+        // front's square block, half of it leftovers, was a tenth of its solve)
+        for (int c = i; c <= w; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=30
             cond[i * (w + 1) + c] = H[i][c];
         }
@@ -3317,34 +3319,109 @@ FGC_INLINE void later_row_update(T (*H)[LD], const T (*P)[LD], int n, int i, int
     }
 }
 
+// TILE rows i ... i + TILE - 1 from column c0 to c1 (whole tiles) through the Updates of n rows
+// of U (P), TILE x TILE at a time: the rows share a start column, so TILE independent
+// accumulator chains instead of one.
+template <int LD>
+FGC_INLINE void tile_rows_update(T (*H)[LD], const T (*P)[LD], int n, int i, int c0, int c1) {
+    for (; c0 < c1; c0 += TILE) {
+#pragma HLS LOOP_TRIPCOUNT max=8
+        T h[TILE][TILE];
+        for (int r = 0; r < TILE; ++r) {
+            for (int t = 0; t < TILE; ++t) h[r][t] = H[i + r][c0 + t];
+        }
+        for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=30
+            for (int r = 0; r < TILE; ++r) {
+                const T u = P[k][i + r];
+                for (int t = 0; t < TILE; ++t) h[r][t] -= u * P[k][c0 + t];
+            }
+        }
+        for (int r = 0; r < TILE; ++r) {
+            for (int t = 0; t < TILE; ++t) H[i + r][c0 + t] = h[r][t];
+        }
+    }
+}
+
+#ifndef __SYNTHESIS__
+// On the host, the wide steps' Updates in register blocks of whole SIMD registers: rows in
+// blocks of WR, columns WN vectors of 64 bytes (WL entries) at a time, WR x WN accumulators (with
+// AVX-512 8 rows x 16 doubles in 16 of its 32 registers; otherwise TILE rows x one 64-byte
+// vector, two AVX2 registers). Each accumulator entry takes the Updates k = 0 ... n - 1 in
+// order, a product and then a difference (no fused multiply-add), exactly as the TILE x TILE
+// blocks do, so the same bits; per k a block loads WN vectors of P's row k and WR of its
+// entries, against 4 and 4 per 16 products in a TILE x TILE block.
+typedef T WV __attribute__((vector_size(64)));
+const int WL = 64 / sizeof(T);
+#ifdef __AVX512F__
+const int WR = 2 * TILE, WN = 2;
+#else
+const int WR = TILE, WN = 1;
+#endif
+
+FGC_INLINE WV wv_load(const T* p) {
+    WV v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+FGC_INLINE void wv_store(T* p, const WV& v) { std::memcpy(p, &v, sizeof v); }
+
+// Rows i ... i + R - 1 from column c0 on, NV vectors at a time while whole ones fit before end;
+// returns where it stopped.
+template <int LD, int R, int NV>
+FGC_INLINE int wide_rows_update(T (*H)[LD], const T (*P)[LD], int n, int i, int c0, int end) {
+    for (; c0 + NV * WL <= end; c0 += NV * WL) {
+        WV h[R][NV];
+        for (int r = 0; r < R; ++r) {
+            for (int v = 0; v < NV; ++v) h[r][v] = wv_load(&H[i + r][c0 + v * WL]);
+        }
+        for (int k = 0; k < n; ++k) {
+            WV p[NV];
+            for (int v = 0; v < NV; ++v) p[v] = wv_load(&P[k][c0 + v * WL]);
+            for (int r = 0; r < R; ++r) {
+                const T u = P[k][i + r];
+                for (int v = 0; v < NV; ++v) h[r][v] -= u * p[v];
+            }
+        }
+        for (int r = 0; r < R; ++r) {
+            for (int v = 0; v < NV; ++v) wv_store(&H[i + r][c0 + v * WL], h[r][v]);
+        }
+    }
+    return c0;
+}
+#endif
+
 // Rows i0 ... i1 - 1 through the Updates of n rows of U (P): one row at a time up to a tile
-// boundary, then TILE rows at a time (they share a start column: TILE independent accumulator
-// chains instead of one), then the rest. Every entry takes the Updates k = 0 ... n - 1 in order,
-// exactly as one row at a time would (bit for bit).
+// boundary, then TILE rows at a time (each row from its tile boundary: the block's start column),
+// then the rest. Every entry takes the Updates k = 0 ... n - 1 in order, exactly as one row at a
+// time would (bit for bit). On the host (floating point) blocks of WR rows go first, in whole
+// SIMD registers: the top TILE rows' first tile as a TILE x TILE block, then every row of the
+// block from the next tile on (where the lower rows' tiles start), the same entries as TILE
+// rows at a time would update.
 template <int LD>
 FGC_INLINE void later_rows_update(T (*H)[LD], const T (*P)[LD], int n, int i0, int i1,
                                   int end) {
     int i = i0;
     for (; i < i1 && i % TILE != 0; ++i) later_row_update<LD>(H, P, n, i, end);
+#ifndef __SYNTHESIS__
+    for (; i + WR <= i1; i += WR) {
+        int c0 = i;
+        for (; c0 + TILE < i + WR; c0 += TILE) {  // rows i + b ... start at tile i + b
+            for (int b = 0; b <= c0 - i; b += TILE) tile_rows_update<LD>(H, P, n, i + b, c0, c0 + TILE);
+        }
+        c0 = wide_rows_update<LD, WR, WN>(H, P, n, i, c0, end);
+        if (WN > 1) c0 = wide_rows_update<LD, WR, 1>(H, P, n, i, c0, end);
+        for (int b = 0; b < WR; b += TILE) tile_rows_update<LD>(H, P, n, i + b, c0, end);
+    }
+    for (; i + TILE <= i1; i += TILE) {
+        const int c0 = wide_rows_update<LD, TILE, 1>(H, P, n, i, i, end);
+        tile_rows_update<LD>(H, P, n, i, c0, end);
+    }
+#endif
     for (; i + TILE <= i1; i += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=7
-        for (int c0 = i; c0 < end; c0 += TILE) {
-#pragma HLS LOOP_TRIPCOUNT max=8
-            T h[TILE][TILE];
-            for (int r = 0; r < TILE; ++r) {
-                for (int t = 0; t < TILE; ++t) h[r][t] = H[i + r][c0 + t];
-            }
-            for (int k = 0; k < n; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=30
-                for (int r = 0; r < TILE; ++r) {
-                    const T u = P[k][i + r];
-                    for (int t = 0; t < TILE; ++t) h[r][t] -= u * P[k][c0 + t];
-                }
-            }
-            for (int r = 0; r < TILE; ++r) {
-                for (int t = 0; t < TILE; ++t) H[i + r][c0 + t] = h[r][t];
-            }
-        }
+        tile_rows_update<LD>(H, P, n, i, i, end);
     }
     for (; i < i1; ++i) later_row_update<LD>(H, P, n, i, end);
 }
@@ -3362,52 +3439,62 @@ bool cholesky_frontal(T (*H)[LD], int w, int f, int s, T mu) {
         H[j][j] += mu;
     }
     // CPE rounds in panels of TILE rows of U: each row of the panel is Evaluated and Updates
-    // the panel's rows after it; then every later row streams through the panel's TILE Updates
-    // in turn (read once, written once). Each entry is updated by rows j = 0, 1, ... in order,
-    // exactly as one round per row would.
-    for (int j = 0; j < f; j += TILE) {
+    // the panel's rows after it; then every later row of the block of NB frontal rows streams
+    // through the panel's TILE Updates in turn (read once, written once); once the block is
+    // factored, the frontal rows after it take its NB Updates in one pass (read and written once
+    // per block instead of once per panel: on a wide front the passes of TILE Updates each were
+    // its time). Each entry is updated by rows j = 0, 1, ... in order, exactly as one round per
+    // row would.
+    const int NB = 8 * TILE;
+    for (int jb = 0; jb < f; jb += NB) {
+#pragma HLS LOOP_TRIPCOUNT max=1
+        const int jb1 = f - jb < NB ? f : jb + NB;
+        for (int j = jb; j < jb1; j += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=8
 #pragma HLS UNROLL factor=5
-        const int pn = f - j < TILE ? f - j : TILE;
-        for (int k = 0; k < pn; ++k) {  // Evaluate row jj, Update the panel's rows after it
+            const int pn = f - j < TILE ? f - j : TILE;
+            for (int k = 0; k < pn; ++k) {  // Evaluate row jj, Update the panel's rows after it
 #pragma HLS LOOP_TRIPCOUNT max=4
-            const int jj = j + k;
-            if (!(H[jj][jj] > T(0))) return false;
-            const int j0 = jj - jj % TILE;
-            // inside the diagonal tile the later rows are updated by the unscaled row times
-            // its 1 / pivot, so the pivot chain from row to row is a division, not a square
-            // root and a division (cholesky_frontal_fixed's frontal_pivot, bit for bit)
-            T row[TILE];
-            for (int t = 0; t < TILE; ++t) row[t] = H[jj][j0 + t];
-            const T r = T(1) / H[jj][jj];
-            const T inv = T(1) / fgc_sqrt(H[jj][jj]);
-            for (int c0 = j0; c0 < end; c0 += TILE) {
+                const int jj = j + k;
+                if (!(H[jj][jj] > T(0))) return false;
+                const int j0 = jj - jj % TILE;
+                // inside the diagonal tile the later rows are updated by the unscaled row times
+                // its 1 / pivot, so the pivot chain from row to row is a division, not a square
+                // root and a division (cholesky_frontal_fixed's frontal_pivot, bit for bit)
+                T row[TILE];
+                for (int t = 0; t < TILE; ++t) row[t] = H[jj][j0 + t];
+                const T r = T(1) / H[jj][jj];
+                const T inv = T(1) / fgc_sqrt(H[jj][jj]);
+                for (int c0 = j0; c0 < end; c0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=8
-                for (int t = 0; t < TILE; ++t) pivot[k][c0 + t] = H[jj][c0 + t] * inv;
-            }
-            for (int c = j0; c < jj; ++c) {
+                    for (int t = 0; t < TILE; ++t) pivot[k][c0 + t] = H[jj][c0 + t] * inv;
+                }
+                for (int c = j0; c < jj; ++c) {
 #pragma HLS LOOP_TRIPCOUNT max=4
-                pivot[k][c] = T(0);
-            }
-            for (int c0 = j0; c0 < end; c0 += TILE) {
+                    pivot[k][c] = T(0);
+                }
+                for (int c0 = j0; c0 < end; c0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=8
-                for (int t = 0; t < TILE; ++t) H[jj][c0 + t] = pivot[k][c0 + t];
-            }
-            for (int i = jj + 1; i < j + pn; ++i) {
+                    for (int t = 0; t < TILE; ++t) H[jj][c0 + t] = pivot[k][c0 + t];
+                }
+                for (int i = jj + 1; i < j + pn; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=4
-                const T uji = pivot[k][i];
-                const T a = row[i - j0] * r;
-                for (int t = 0; t < TILE; ++t) H[i][j0 + t] -= a * row[t];
-                // (only if a row is wider than one tile: g++ -Werror proves the dead loop would
-                // index past H[i][LD] otherwise)
-                for (int c0 = j0 + TILE; c0 < end; c0 += TILE) {
+                    const T uji = pivot[k][i];
+                    const T a = row[i - j0] * r;
+                    for (int t = 0; t < TILE; ++t) H[i][j0 + t] -= a * row[t];
+                    // (only if a row is wider than one tile: g++ -Werror proves the dead loop would
+                    // index past H[i][LD] otherwise)
+                    for (int c0 = j0 + TILE; c0 < end; c0 += TILE) {
 #pragma HLS LOOP_TRIPCOUNT max=8
-                    for (int t = 0; t < TILE; ++t) H[i][c0 + t] -= uji * pivot[k][c0 + t];
+                        for (int t = 0; t < TILE; ++t) H[i][c0 + t] -= uji * pivot[k][c0 + t];
+                    }
                 }
             }
+            // the block's rows after the panel through its Updates (they are the next panels)
+            later_rows_update<LD>(H, pivot, pn, j + pn, jb1, end);
         }
-        // the frontal rows after the panel through its Updates (they are the next panels)
-        later_rows_update<LD>(H, pivot, pn, j + pn, f, end);
+        // the frontal rows after the block through its Updates (rows jb ... jb1 - 1 of H are U)
+        later_rows_update<LD>(H, H + jb, jb1 - jb, jb1, f, end);
     }
     // the separator rows through every frontal row's Updates in one pass (rows 0 ... f - 1 of H
     // are U now): each entry takes the Updates k = 0 ... f - 1 in the order the panels would
@@ -3560,14 +3647,14 @@ bool cholesky_frontal_fixed(T (*H)[LD], int s, T mu) {
     } else {
         frontal_update<W, LD, P0>(H, j, j + P0, W);
     }
-    // the largest |U_ic| of the frontal block (i <= c < F): left of the diagonal U is zero (the
-    // frontal matrix is assembled upper, the diagonal tiles are written with zeros), so only
-    // c < F is masked, a fixed mask the loop vectorises with (the maximum does not depend on
-    // the order it is taken in)
+    // the largest |U_ic| of the frontal block (i <= c < F), from row i's tile on: left of the
+    // diagonal in that tile U is zero (the diagonal tiles are written with zeros), so only c < F
+    // is masked, a fixed mask the loop vectorises with (the maximum does not depend on the order
+    // it is taken in); left of the tile the generic step's assembly leaves H as it was
     T largest[TILE];
     for (int t = 0; t < TILE; ++t) largest[t] = T(0);
     for (int i = 0; i < F; ++i) {
-        for (int c0 = 0; c0 < F; c0 += TILE) {
+        for (int c0 = i - i % TILE; c0 < F; c0 += TILE) {
             for (int t = 0; t < TILE; ++t) {
                 const T a = c0 + t < F ? fgc_abs(H[i][c0 + t]) : T(0);
                 largest[t] = a > largest[t] ? a : largest[t];
@@ -3585,13 +3672,14 @@ bool eliminate_step(int s, T mu) {
     static T H[MAX_W][MAX_LD];  // upper triangle of H, gradient in column w, zero padding
 #pragma HLS ARRAY_PARTITION variable=H cyclic factor=20 dim=2
     const int w = STEP_W[s];
-    // zero the step's padded rows only: nothing reads a row past its padded end, and a zeroing
-    // of MAX_LD columns per row cost more than the factorisation of a graph's many narrow steps
-    // when one step is wide (sphere2500: 594 columns)
+    // zero the step's padded rows only, each from its tile boundary on: nothing reads a row past
+    // its padded end or left of its tile (the Updates start there, the assembly writes the upper
+    // triangle), and a zeroing of MAX_LD columns per row cost more than the factorisation of a
+    // graph's many narrow steps when one step is wide (sphere2500: 594 columns)
     const int end = (w + TILE) / TILE * TILE;
     for (int i = 0; i < w; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=30
-        for (int c = 0; c < end; ++c) H[i][c] = T(0);
+        for (int c = i - i % TILE; c < end; ++c) H[i][c] = T(0);
     }
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=4
