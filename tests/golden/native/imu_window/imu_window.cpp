@@ -2287,7 +2287,7 @@ void whiten(T* raw, T* ab, const T* p) {
 // sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
 // at the whitened residual norm, as GTSAM does.
 template <int STRIDE, int COLS, int ROWS>
-void reweight(T ab[], T code, T k) {
+void reweight(T* ab, T code, T k) {
     if (code == T(0)) return;
     T e2 = T(0);
     for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
@@ -2473,7 +2473,7 @@ const V* gather_0(const T* x, int first, bool cost, V in[235]) {
 
 // block 0, member 0: its rows 9 ... 14 of 15 hold only 0 and +-1 left of the right-hand side;
 // their share of the whitened rows, row by row in order: +-R_ij at j's constant entries, R_ij b_j
-void whiten_tail_0_0(const T raw[], T ab[], const T p[]) {
+void whiten_tail_0_0(const T* raw, T* ab, const T* p) {
     ab[18] += p[9];
     ab[24] -= p[9];
     ab[30] += p[9] * raw[318];
@@ -3343,21 +3343,25 @@ FGC_INLINE void tile_rows_update(T (*H)[LD], const T (*P)[LD], int n, int i, int
     }
 }
 
-#ifndef __SYNTHESIS__
+#if !defined(__SYNTHESIS__) && (defined(__AVX512F__) || defined(__AVX__))
 // On the host, the wide steps' Updates in register blocks of whole SIMD registers: rows in
-// blocks of WR, columns WN vectors of 64 bytes (WL entries) at a time, WR x WN accumulators (with
-// AVX-512 8 rows x 16 doubles in 16 of its 32 registers; otherwise TILE rows x one 64-byte
-// vector, two AVX2 registers). Each accumulator entry takes the Updates k = 0 ... n - 1 in
-// order, a product and then a difference (no fused multiply-add), exactly as the TILE x TILE
-// blocks do, so the same bits; per k a block loads WN vectors of P's row k and WR of its
-// entries, against 4 and 4 per 16 products in a TILE x TILE block.
-typedef T WV __attribute__((vector_size(64)));
-const int WL = 64 / sizeof(T);
+// blocks of WR, columns WN vectors (WL entries each) at a time, WR x WN accumulators: with
+// AVX-512 8 rows x 16 doubles in 16 of its 32 registers, with AVX TILE rows x 8 doubles in 8 of
+// its 16 (a vector wider than the build's registers is split by g++ into slow code: 64-byte
+// vectors in an AVX2 build made sphere2500's solve 4x slower); other hosts keep the TILE x TILE
+// blocks. Each accumulator entry takes the Updates k = 0 ... n - 1 in order, a product and then
+// a difference (no fused multiply-add), exactly as the TILE x TILE blocks do, so the same bits;
+// per k a block loads WN vectors of P's row k and WR of its entries, against 4 and 4 per 16
+// products in a TILE x TILE block.
+#define FGC_WIDE_UPDATES 1
 #ifdef __AVX512F__
+typedef T WV __attribute__((vector_size(64)));
 const int WR = 2 * TILE, WN = 2;
 #else
-const int WR = TILE, WN = 1;
+typedef T WV __attribute__((vector_size(32)));
+const int WR = TILE, WN = 2;
 #endif
+const int WL = sizeof(WV) / sizeof(T);
 
 FGC_INLINE WV wv_load(const T* p) {
     WV v;
@@ -3404,7 +3408,7 @@ FGC_INLINE void later_rows_update(T (*H)[LD], const T (*P)[LD], int n, int i0, i
                                   int end) {
     int i = i0;
     for (; i < i1 && i % TILE != 0; ++i) later_row_update<LD>(H, P, n, i, end);
-#ifndef __SYNTHESIS__
+#ifdef FGC_WIDE_UPDATES
     for (; i + WR <= i1; i += WR) {
         int c0 = i;
         for (; c0 + TILE < i + WR; c0 += TILE) {  // rows i + b ... start at tile i + b
