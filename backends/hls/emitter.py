@@ -217,13 +217,10 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                   "blocks": [i for i in small for _ in context["blocks"][i].instances],
                   "instances": [f for i in small for f in context["blocks"][i].instances],
                   "names": ", ".join(context["blocks"][i].comment for i in small),
-                  "allocation": _allocation(Unit("factor_small", "ALLOCATION", 1, small_allocation(
-                      program, context["blocks"], plan.options, "jacobian")),
-                      config.scalar_cxx, texts),
-                  "allocation_cost": _allocation(Unit("factor_small", "ALLOCATION", 1,
-                                                      small_allocation(program, context["blocks"],
-                                                                       plan.options, "cost")),
-                                                 config.scalar_cxx, texts),
+                  **{key: _allocation(Unit("factor_small", "ALLOCATION", 1, small_allocation(
+                      program, context["blocks"], plan.options, mode, plan.ops)[0]),
+                      config.scalar_cxx, texts)
+                     for key, mode in (("allocation", "jacobian"), ("allocation_cost", "cost"))},
                   "ii_jacobian": small_jac.ii, "depth_jacobian": small_jac.depth,
                   "ii_cost": small_cost.ii, "depth_cost": small_cost.depth}
     for b in context["blocks"]:

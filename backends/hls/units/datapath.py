@@ -122,15 +122,32 @@ def small_branch_ops(program, blocks, mode: str) -> list[dict[str, int]]:
     return out
 
 
-def small_allocation(program, blocks, opts, mode: str) -> tuple[tuple[str, int], ...]:
-    """The shared ``mode`` function's ``ALLOCATION`` limits: per kind the most any one branch
-    issues in an instance (exclusive branches share them), at most the options' limit."""
+def small_allocation(program, blocks, opts, mode: str, table
+                     ) -> tuple[tuple[tuple[str, int], ...], int, int]:
+    """The shared ``mode`` function's ``ALLOCATION`` limits, its loop's II and the cycles the
+    largest branch takes to issue its operations on them. The II is at
+    least what the global memories' ports allow with every branch's accesses counted (the
+    text's sum, as the second reader reads it: an upper bound for exclusive branches) and, in
+    cost mode, the running total's adder latency; per kind the limit is what the largest branch
+    needs to issue its operations in that II (exclusive branches share them), at most the
+    options' limit (the II then grows to what those limits issue)."""
     alloc = dict(opts.allocation)
-    most: dict[str, int] = {}
-    for ops in small_branch_ops(program, blocks, mode):
+    branches = small_branch_ops(program, blocks, mode)
+    accesses: dict[int, int] = {}
+    for i in small_blocks(program):
+        for a, (n, _) in enumerate(instance_accesses(blocks[i], mode)):
+            accesses[a] = accesses.get(a, 0) + n
+    ii = loop_ii((n, 1) for n in accesses.values())
+    if mode == "cost":  # the running total, in instance order: through the adder
+        ii = max(ii, table.add.latency)
+    need: dict[str, int] = {}
+    for ops in branches:
         for k, n in ops.items():
-            most[k] = max(most.get(k, 0), n)
-    return tuple(sorted((k, min(n, alloc.get(k, n))) for k, n in most.items() if n))
+            need[k] = max(need.get(k, 0), math.ceil(n * table.op(k).ii / ii))
+    limits = tuple(sorted((k, min(n, alloc.get(k, n))) for k, n in need.items() if n))
+    issue = max([1] + [math.ceil(ops[k] * table.op(k).ii / n) for k, n in limits
+                       for ops in branches if ops.get(k)])
+    return limits, max(ii, issue), issue
 
 
 def factor_allocation(program, opts) -> list[tuple[tuple[str, int], ...]]:
@@ -300,29 +317,20 @@ def _small_datapath(ctx, small: tuple[int, ...], jac: list, cost: list) -> None:
     """The factor_small unit (:data:`SMALL_OPS`): per mode one pipelined loop over the small
     block types' instances (in block order), one branch a block type in one function under
     :func:`small_allocation`. Its II: the most any branch needs to issue on those operators,
-    and the ports of the global memories, whose accesses are counted over every branch (what
-    the text holds; the branches are exclusive, so this is an upper bound); its depth the
-    deepest branch's."""
+    and the ports of the global memories (:func:`small_allocation`); its depth the deepest
+    branch's critical path or the largest branch's issue time."""
     program, opts, ops = ctx.program, ctx.opts, ctx.ops
     sim_ops = _sim_table(ops)
     count = sum(len(ctx.blocks[i].instances) for i in small)
     operators: dict[str, int] = {}
     for mode, out in (("jacobian", jac), ("cost", cost)):
         branches = small_branch_ops(program, ctx.blocks, mode)
-        allocated = small_allocation(program, ctx.blocks, opts, mode)
-        limit = dict(allocated)
-        issue = max([1] + [math.ceil(n * ops.op(k).ii / limit[k])
-                           for br in branches for k, n in br.items()])
-        accesses: dict[int, int] = {}
-        for i in small:
-            for a, (n, _) in enumerate(instance_accesses(ctx.blocks[i], mode)):
-                accesses[a] = accesses.get(a, 0) + n
-        ii = max(issue, loop_ii((n, 1) for n in accesses.values()))
-        if mode == "cost":  # the running total, in instance order: through the adder
-            ii = max(ii, ops.add.latency)
-        depth = max(max(critical_path(program.blocks[i].kernel if mode == "jacobian"
-                                      else program.blocks[i].cost_kernel, sim_ops), issue)
-                    for i in small)
+        allocated, ii, issue = small_allocation(program, ctx.blocks, opts, mode, ops)
+        # an instance ends no earlier than its branch's critical path, nor before the shared
+        # operators have issued the largest branch's operations
+        depth = max([issue] + [critical_path(program.blocks[i].kernel if mode == "jacobian"
+                                             else program.blocks[i].cost_kernel, sim_ops)
+                               for i in small])
         out.append(Process(f"factor_small_{mode}", "factor_small",
                            (Loop(f"factor_small_{mode}_instances", count, ii, depth),)))
         copies = COST_CALL_SITES if mode == "cost" else 1

@@ -2780,8 +2780,8 @@ const int SMALL_FACTOR[2] = { 8, 9 };
 // Jacobian mode of small block type b's instance f (evaluate_<b>'s body)
 void evaluate_small_one(const T x[N_X], int b, int f) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=6
-#pragma HLS ALLOCATION operation instances=fmul limit=24
+#pragma HLS ALLOCATION operation instances=fadd limit=1
+#pragma HLS ALLOCATION operation instances=fmul limit=2
     if (b == 2) {
         T in[3], dat[4];
         gather_2(x, f, in, dat);
@@ -2815,15 +2815,15 @@ void evaluate_small(const T x[N_X]) {
 #pragma HLS PIPELINE II=27
         evaluate_small_one(x, SMALL_BLOCK[i], SMALL_FACTOR[i]);
     }
-    FGC_CYCLES("factor_small_jacobian", 0, "instances", 2, 27, 4);
+    FGC_CYCLES("factor_small_jacobian", 0, "instances", 2, 27, 27);
 }
 
 // cost mode of small block type b's instance f: its members' costs summed (cost_of_<b>'s body)
 T cost_small_one(const T x[N_X], int b, int f) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=12
+#pragma HLS ALLOCATION operation instances=fadd limit=2
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
-#pragma HLS ALLOCATION operation instances=fmul limit=19
+#pragma HLS ALLOCATION operation instances=fmul limit=4
     T total = T(0);
     if (b == 2) {
         T in[3], dat[4], half[1];
