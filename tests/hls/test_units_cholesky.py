@@ -114,7 +114,7 @@ def test_the_hgc_is_priced_per_block_type_as_its_gram_entries_bind_it():
     assert dict(hgc_operators(program, 2, 4)[many][1]) == {"add": 1 + 1 + 1 + 3, "mul": 2}
     plan = build_plan(program)
     assert {f"hgc_{b}" for b in counts} <= {u.name for u in plan.units}
-    (entries,) = [lp for ph in plan.phases if ph.name == "hgc" for p in ph.processes
+    (entries,) = [lp for ph in plan.phases if ph.name.startswith("hgc") for p in ph.processes
                   if p.name == f"reduce_{many}" for lp in p.loops if lp.name == "entries"]
     # a between factor's [A | b] is 3 x 7 (two poses and b), every entry of its packed
     # triangle structurally non-zero: 28 entries an instance, one a cycle, depth read +

@@ -2089,9 +2089,6 @@ void gram_entries(const T ab[ROWS * PADDED], const int P[ENTRIES], const int Q[E
         for (int r = 0; r < ROWS; ++r) prod[r] = L(ab[r * PADDED + p]) * L(ab[r * PADDED + q]);
         GRAM[g0 + p * (p + 1) / 2 + q] = fgc_units::fold_partials<L, ROWS>(prod);
     }
-    // read, multiply, the fold, write
-    FGC_CYCLES("hgc", 0, "entries", ENTRIES, GII,
-               L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(ROWS) + 2);
 }
 
 // From one instance's packed Gram of [A | b] in GRAM at g0 (row COLS - 1 is b^T A, then b^T b):
@@ -2117,6 +2114,10 @@ bool gradient_from_gram(int g0, const int col[COLS - 1]) {
     }
     return fgc_isfinite(T(fgc_units::fold_partials<L, L_PARTIALS>(part)));
 }
+
+// One whitened row of a block type as evaluate_<b> streams it to its HGC (reduce_<b>) in the
+// linearize_<b> region: a word per column of the widest block type's padded row.
+struct GramRow { T word[32]; };
 
 // rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
 T robust_loss(T half, T code, T k) {
@@ -2372,7 +2373,7 @@ void whiten_tail_0_0(const T raw[], T ab[], const T p[]) {
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 180 structural non-zeros of
 // 15 x 31), whitening, into AB; one instance every II=233 cycles (the plan's)
-void evaluate_0(const T x[N_X]) {
+void evaluate_0(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 7; ++i) {
 #pragma HLS PIPELINE II=233
         const int f = BLOCK0_INSTANCES[i];
@@ -2388,6 +2389,11 @@ void evaluate_0(const T x[N_X]) {
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 15; ++r) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
+        }
+        for (int r = 0; r < 15; ++r) {  // the rows to the HGC, a stream word a row
+            GramRow row;
+            for (int c = 0; c < 32; ++c) row.word[c] = ab[r * 32 + c];
+            rows.write(row);
         }
     }
     FGC_CYCLES("factor_0_jacobian", 0, "instances", 7, 233, 621);
@@ -2472,15 +2478,22 @@ const int BLOCK0_GRAM_Q[496] = {
     29, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
     15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30,
 };
-// block 0: the gradient and the HGC's Gram of each instance from AB; false if not finite
-bool reduce_0() {
-    bool finite = true;
+// block 0's HGC: per instance its 15 whitened rows from evaluate_0's stream, a row a
+// cycle, into registers (partitioned completely: a whole row written, two columns of every row
+// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
+// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+void reduce_0(hls::stream<GramRow>& rows, bool& finite) {
+    bool ok = true;
     for (int i = 0; i < 7; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[480];
-#pragma HLS ARRAY_PARTITION variable=ab block factor=15
-        load_rows_0(f, ab);
+#pragma HLS ARRAY_PARTITION variable=ab complete
+        for (int r = 0; r < 15; ++r) {
+#pragma HLS PIPELINE II=1
+            const GramRow row = rows.read();
+            for (int c = 0; c < 32; ++c) ab[r * 32 + c] = row.word[c];
+        }
         int col[30];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         for (int j = 0; j < 3; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
@@ -2488,17 +2501,32 @@ bool reduce_0() {
         for (int j = 0; j < 3; ++j) col[15 + j] = VAR_T_OFF[FACTOR_VARS[vb + 3]] + j;
         for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
         for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
-        FGC_CYCLES("reduce_0", 0, "load", 240, 1, 2);
+        FGC_CYCLES("reduce_0", 0, "rows", 15, 1, 2);
         FGC_CYCLES("reduce_0", 0, "columns", 30, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
+        // fold, write
         gram_entries<32, 15, 496, 1>(ab, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        finite = gradient_from_gram<31>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_0", 0, "entries", 496, 1, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(15) + 2);
+        ok = gradient_from_gram<31>(FACTOR_GRAM_OFF[f], col) && ok;
         FGC_CYCLES("reduce_0", 0, "scatter", 30, 1, 6);
         FGC_CYCLES("reduce_0", 0, "check", 31, fgc_units::dot_ii(31, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(31, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
-    return finite;
+    finite = ok;
+}
+
+// block 0's linearisation, one DATAFLOW region: evaluate_0 (the datapath: the whitened rows
+// into AB and, a stream word a row, to the HGC) alongside reduce_0 (their Gram and gradient), so
+// an instance's Gram is computed while the datapath evaluates the next instances
+void linearize_0(const T x[N_X], bool& finite) {
+#pragma HLS DATAFLOW
+    hls::stream<GramRow> rows;
+#pragma HLS STREAM variable=rows depth=15
+    FGC_REGION("linearize_0");
+    evaluate_0(x, rows);
+    reduce_0(rows, finite);
+    FGC_DRAINED(&rows, 1);
 }
 
 // block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
@@ -2553,7 +2581,7 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
 // 6 x 7), whitening, into AB; one instance every II=103 cycles (the plan's)
-void evaluate_1(const T x[N_X]) {
+void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
 #pragma HLS PIPELINE II=103
         const int f = BLOCK1_INSTANCES[i];
@@ -2568,6 +2596,11 @@ void evaluate_1(const T x[N_X]) {
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
+        }
+        for (int r = 0; r < 6; ++r) {  // the rows to the HGC, a stream word a row
+            GramRow row;
+            for (int c = 0; c < 8; ++c) row.word[c] = ab[r * 8 + c];
+            rows.write(row);
         }
     }
     FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 416);
@@ -2594,28 +2627,50 @@ const int BLOCK1_GRAM_Q[28] = {
     0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4, 0,
     1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6,
 };
-// block 1: the gradient and the HGC's Gram of each instance from AB; false if not finite
-bool reduce_1() {
-    bool finite = true;
+// block 1's HGC: per instance its 6 whitened rows from evaluate_1's stream, a row a
+// cycle, into registers (partitioned completely: a whole row written, two columns of every row
+// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
+// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+void reduce_1(hls::stream<GramRow>& rows, bool& finite) {
+    bool ok = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab block factor=6
-        load_rows_1(f, ab);
+#pragma HLS ARRAY_PARTITION variable=ab complete
+        for (int r = 0; r < 6; ++r) {
+#pragma HLS PIPELINE II=1
+            const GramRow row = rows.read();
+            for (int c = 0; c < 8; ++c) ab[r * 8 + c] = row.word[c];
+        }
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_1", 0, "load", 24, 1, 2);
+        FGC_CYCLES("reduce_1", 0, "rows", 6, 1, 2);
         FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
+        // fold, write
         gram_entries<8, 6, 28, 6>(ab, BLOCK1_GRAM_P, BLOCK1_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_1", 0, "entries", 28, 6, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(6) + 2);
+        ok = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && ok;
         FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_1", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
-    return finite;
+    finite = ok;
+}
+
+// block 1's linearisation, one DATAFLOW region: evaluate_1 (the datapath: the whitened rows
+// into AB and, a stream word a row, to the HGC) alongside reduce_1 (their Gram and gradient), so
+// an instance's Gram is computed while the datapath evaluates the next instances
+void linearize_1(const T x[N_X], bool& finite) {
+#pragma HLS DATAFLOW
+    hls::stream<GramRow> rows;
+#pragma HLS STREAM variable=rows depth=6
+    FGC_REGION("linearize_1");
+    evaluate_1(x, rows);
+    reduce_1(rows, finite);
+    FGC_DRAINED(&rows, 1);
 }
 
 // block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
@@ -2665,7 +2720,7 @@ void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
 
 // block 2, Jacobian mode: per instance residual + Jacobian (its 6 structural non-zeros of
 // 3 x 4), whitening, into AB; one instance every II=6 cycles (the plan's)
-void evaluate_2(const T x[N_X]) {
+void evaluate_2(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
 #pragma HLS PIPELINE II=6
         const int f = BLOCK2_INSTANCES[i];
@@ -2680,6 +2735,11 @@ void evaluate_2(const T x[N_X]) {
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 3; ++r) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
+        }
+        for (int r = 0; r < 3; ++r) {  // the rows to the HGC, a stream word a row
+            GramRow row;
+            for (int c = 0; c < 4; ++c) row.word[c] = ab[r * 4 + c];
+            rows.write(row);
         }
     }
     FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 6, 4);
@@ -2704,28 +2764,50 @@ const int BLOCK2_GRAM_P[7] = {
 const int BLOCK2_GRAM_Q[7] = {
     0, 1, 2, 0, 1, 2, 3,
 };
-// block 2: the gradient and the HGC's Gram of each instance from AB; false if not finite
-bool reduce_2() {
-    bool finite = true;
+// block 2's HGC: per instance its 3 whitened rows from evaluate_2's stream, a row a
+// cycle, into registers (partitioned completely: a whole row written, two columns of every row
+// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
+// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+void reduce_2(hls::stream<GramRow>& rows, bool& finite) {
+    bool ok = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[12];
-#pragma HLS ARRAY_PARTITION variable=ab block factor=3
-        load_rows_2(f, ab);
+#pragma HLS ARRAY_PARTITION variable=ab complete
+        for (int r = 0; r < 3; ++r) {
+#pragma HLS PIPELINE II=1
+            const GramRow row = rows.read();
+            for (int c = 0; c < 4; ++c) ab[r * 4 + c] = row.word[c];
+        }
         int col[3];  // per column: its tangent entry
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_2", 0, "load", 6, 1, 2);
+        FGC_CYCLES("reduce_2", 0, "rows", 3, 1, 2);
         FGC_CYCLES("reduce_2", 0, "columns", 3, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
+        // fold, write
         gram_entries<4, 3, 7, 3>(ab, BLOCK2_GRAM_P, BLOCK2_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        finite = gradient_from_gram<4>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_2", 0, "entries", 7, 3, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(3) + 2);
+        ok = gradient_from_gram<4>(FACTOR_GRAM_OFF[f], col) && ok;
         FGC_CYCLES("reduce_2", 0, "scatter", 3, 1, 6);
         FGC_CYCLES("reduce_2", 0, "check", 4, fgc_units::dot_ii(4, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(4, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
-    return finite;
+    finite = ok;
+}
+
+// block 2's linearisation, one DATAFLOW region: evaluate_2 (the datapath: the whitened rows
+// into AB and, a stream word a row, to the HGC) alongside reduce_2 (their Gram and gradient), so
+// an instance's Gram is computed while the datapath evaluates the next instances
+void linearize_2(const T x[N_X], bool& finite) {
+#pragma HLS DATAFLOW
+    hls::stream<GramRow> rows;
+#pragma HLS STREAM variable=rows depth=3
+    FGC_REGION("linearize_2");
+    evaluate_2(x, rows);
+    reduce_2(rows, finite);
+    FGC_DRAINED(&rows, 1);
 }
 
 // block 2: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
@@ -2775,7 +2857,7 @@ void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
 
 // block 3, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
 // 6 x 7), whitening, into AB; one instance every II=21 cycles (the plan's)
-void evaluate_3(const T x[N_X]) {
+void evaluate_3(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
 #pragma HLS PIPELINE II=21
         const int f = BLOCK3_INSTANCES[i];
@@ -2790,6 +2872,11 @@ void evaluate_3(const T x[N_X]) {
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
+        }
+        for (int r = 0; r < 6; ++r) {  // the rows to the HGC, a stream word a row
+            GramRow row;
+            for (int c = 0; c < 8; ++c) row.word[c] = ab[r * 8 + c];
+            rows.write(row);
         }
     }
     FGC_CYCLES("factor_3_jacobian", 0, "instances", 1, 21, 4);
@@ -2814,28 +2901,50 @@ const int BLOCK3_GRAM_P[13] = {
 const int BLOCK3_GRAM_Q[13] = {
     0, 1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6,
 };
-// block 3: the gradient and the HGC's Gram of each instance from AB; false if not finite
-bool reduce_3() {
-    bool finite = true;
+// block 3's HGC: per instance its 6 whitened rows from evaluate_3's stream, a row a
+// cycle, into registers (partitioned completely: a whole row written, two columns of every row
+// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
+// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+void reduce_3(hls::stream<GramRow>& rows, bool& finite) {
+    bool ok = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab block factor=6
-        load_rows_3(f, ab);
+#pragma HLS ARRAY_PARTITION variable=ab complete
+        for (int r = 0; r < 6; ++r) {
+#pragma HLS PIPELINE II=1
+            const GramRow row = rows.read();
+            for (int c = 0; c < 8; ++c) ab[r * 8 + c] = row.word[c];
+        }
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_3", 0, "load", 24, 1, 2);
+        FGC_CYCLES("reduce_3", 0, "rows", 6, 1, 2);
         FGC_CYCLES("reduce_3", 0, "columns", 6, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
+        // fold, write
         gram_entries<8, 6, 13, 6>(ab, BLOCK3_GRAM_P, BLOCK3_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_3", 0, "entries", 13, 6, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(6) + 2);
+        ok = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && ok;
         FGC_CYCLES("reduce_3", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_3", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
-    return finite;
+    finite = ok;
+}
+
+// block 3's linearisation, one DATAFLOW region: evaluate_3 (the datapath: the whitened rows
+// into AB and, a stream word a row, to the HGC) alongside reduce_3 (their Gram and gradient), so
+// an instance's Gram is computed while the datapath evaluates the next instances
+void linearize_3(const T x[N_X], bool& finite) {
+#pragma HLS DATAFLOW
+    hls::stream<GramRow> rows;
+#pragma HLS STREAM variable=rows depth=6
+    FGC_REGION("linearize_3");
+    evaluate_3(x, rows);
+    reduce_3(rows, finite);
+    FGC_DRAINED(&rows, 1);
 }
 
 // block 3: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
@@ -2874,7 +2983,7 @@ T cost_of_3(const T x[N_X], T total) {
     return total;
 }
 
-// Linearise every factor: the datapaths in Jacobian mode into AB, then the gradient and Grams.
+// Linearise every factor: the datapaths in Jacobian mode into AB, then the gradient and Grams (per block type one region, datapath alongside its HGC).
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
     FGC_PHASE("hgc");
@@ -2883,17 +2992,23 @@ bool linearize_all(const T x[N_X]) {
         G[i] = T(0);
     }
     FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
-    FGC_PHASE("factor_jacobian");
-    evaluate_0(x);
-    evaluate_1(x);
-    evaluate_2(x);
-    evaluate_3(x);
-    FGC_PHASE("hgc");
     bool finite = true;
-    finite = reduce_0() && finite;
-    finite = reduce_1() && finite;
-    finite = reduce_2() && finite;
-    finite = reduce_3() && finite;
+    bool ok0 = true;
+    linearize_0(x, ok0);
+    FGC_SEQUENTIAL();
+    finite = ok0 && finite;
+    bool ok1 = true;
+    linearize_1(x, ok1);
+    FGC_SEQUENTIAL();
+    finite = ok1 && finite;
+    bool ok2 = true;
+    linearize_2(x, ok2);
+    FGC_SEQUENTIAL();
+    finite = ok2 && finite;
+    bool ok3 = true;
+    linearize_3(x, ok3);
+    FGC_SEQUENTIAL();
+    finite = ok3 && finite;
     return finite;
 }
 
