@@ -139,3 +139,23 @@ def test_structurally_zero_gram_entries_are_never_computed():
     assert len(entries) < stride * (stride + 1) // 2
     assert (stride - 1, stride - 1) in entries  # b^T b
     assert all(q <= p < stride for p, q in entries)
+
+
+def test_a_steps_first_factor_is_stored_two_entries_a_cycle(program):
+    # HF is all zero when a step's assembly starts (the cascade clears what it reads): the
+    # first factor's packed Gram is stored two entries a cycle after its column map; the other
+    # factors and the children add one entry a cycle
+    from fgc_backends.hls.plan.loops import _tables, kernel_timing
+    from fgc_backends.hls.units.cholesky import assemble_loops
+
+    tables, timing = _tables(program), kernel_timing(FLOAT32)
+    fb, fs, cm = (tables[k] for k in ("STEP_FACTOR_BEGIN", "STEP_FACTORS",
+                                      "FACTOR_COLMAP_BEGIN"))
+    s = next(i for i in range(len(fb) - 1) if fb[i + 1] - fb[i] >= 2)
+    loops = assemble_loops(tables, s, timing)
+    d = [cm[fs[e] + 1] - cm[fs[e]] for e in range(fb[s], fb[s + 1])]
+    assert [lp.name for lp in loops[:2]] == ["map", "gram_first"]
+    assert loops[0].trip == d[0]
+    assert (loops[1].trip, loops[1].ii) == (-(-(d[0] * (d[0] + 1) // 2 + d[0]) // 2), 1)
+    gram = [lp for lp in loops if lp.name == "gram"]
+    assert [lp.trip for lp in gram] == [x * (x + 1) // 2 + x for x in d[1:]]

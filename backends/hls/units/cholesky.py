@@ -153,13 +153,20 @@ def assemble_loops(tables: dict, s: int, timing: dict) -> list[Loop]:
     it reads, so no clearing pass), per factor its packed Gram's lower triangle and gradient
     row (d (d + 1) / 2 + d entries), per child its update matrix's upper triangle and reduced g
     (s (s + 1) / 2 + s), each one loop of ``+=`` into the table-addressed frontal matrix whose
-    entries all go to different addresses (``scatter``: II 1)."""
+    entries all go to different addresses (``scatter``: II 1); the step's first factor is
+    stored, not added (HF is all zero), two entries a cycle (``move``) after its column map is
+    copied into registers (``move``, d)."""
     loops = []
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
         d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
-        loops.append(kernel_loop("gram", d * (d + 1) // 2 + d, "scatter", timing))
+        n = d * (d + 1) // 2 + d
+        if e == fb[s]:  # HF all zero: stored, two entries a cycle, after its column map
+            loops += [kernel_loop("map", d, "move", timing),
+                      kernel_loop("gram_first", -(-n // 2), "move", timing)]
+        else:
+            loops.append(kernel_loop("gram", n, "scatter", timing))
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
