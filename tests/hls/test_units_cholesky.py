@@ -159,3 +159,26 @@ def test_a_steps_first_factor_is_stored_two_entries_a_cycle(program):
     assert (loops[1].trip, loops[1].ii) == (-(-(d[0] * (d[0] + 1) // 2 + d[0]) // 2), 1)
     gram = [lp for lp in loops if lp.name == "gram"]
     assert [lp.trip for lp in gram] == [x * (x + 1) // 2 + x for x in d[1:]]
+
+
+def test_each_block_types_datapath_and_hgc_share_one_emitted_region(tmp_path):
+    # the kernel as emitted: per block type a DATAFLOW region linearize_<b> of its datapath
+    # (evaluate_<b>) and its HGC (reduce_<b>) linked by one row stream; the plan prices each as
+    # phase hgc_level<b> with those two processes
+    from fgc_backends.hls import HlsConfig, emit
+    from fgc_backends.hls.network import read_network
+
+    program = chain(4, linear="cholesky", cpe=2)
+    emit(program, tmp_path / "p", HlsConfig())
+    kernel = next(p for p in (tmp_path / "p").glob("*.cpp") if not p.name.startswith("tb_"))
+    regions = {r.function: r for r in read_network(kernel.read_text())}
+    plan = build_plan(program)
+    levels = [ph for ph in plan.phases if ph.name.startswith("hgc_level")]
+    assert levels and all(ph.dataflow for ph in levels)
+    for ph in levels:
+        b = ph.name.removeprefix("hgc_level")
+        region = regions[f"linearize_{b}"]
+        assert region.processes == (f"evaluate_{b}", f"reduce_{b}")
+        assert len(region.streams) == 1
+        assert [p.name for p in ph.processes] == [f"factor_{b}_jacobian", f"reduce_{b}"]
+    assert "factor_jacobian" not in {ph.name for ph in plan.phases}
