@@ -199,8 +199,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     )
     plan = accel_plan(program, config)
     phase = {ph.name: ph for ph in plan.phases}
-    loops = {p.name: p.loops[0] for name in ("factor_jacobian", "factor_cost")
-             for p in phase[name].processes}
+    # each datapath's instance loop (Cholesky: its Jacobian pass in its linearize_<b> region)
+    loops = {p.name: p.loops[0] for ph in plan.phases for p in ph.processes
+             if re.fullmatch(r"factor_\d+_(jacobian|cost)", p.name)}
     noise = {p.name: p.loops[2] for p in phase["rounding_noise"].processes
              if p.name.startswith("noise_")}
     blocks = []

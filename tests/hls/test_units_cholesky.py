@@ -114,7 +114,7 @@ def test_the_hgc_is_priced_per_block_type_as_its_gram_entries_bind_it():
     assert dict(hgc_operators(program, 2, 4)[many][1]) == {"add": 1 + 1 + 1 + 3, "mul": 2}
     plan = build_plan(program)
     assert {f"hgc_{b}" for b in counts} <= {u.name for u in plan.units}
-    (entries,) = [lp for ph in plan.phases if ph.name == "hgc" for p in ph.processes
+    (entries,) = [lp for ph in plan.phases if ph.name.startswith("hgc") for p in ph.processes
                   if p.name == f"reduce_{many}" for lp in p.loops if lp.name == "entries"]
     # a between factor's [A | b] is 3 x 7 (two poses and b), every entry of its packed
     # triangle structurally non-zero: 28 entries an instance, one a cycle, depth read +
@@ -139,3 +139,46 @@ def test_structurally_zero_gram_entries_are_never_computed():
     assert len(entries) < stride * (stride + 1) // 2
     assert (stride - 1, stride - 1) in entries  # b^T b
     assert all(q <= p < stride for p, q in entries)
+
+
+def test_a_steps_first_factor_is_stored_two_entries_a_cycle(program):
+    # HF is all zero when a step's assembly starts (the cascade clears what it reads): the
+    # first factor's packed Gram is stored two entries a cycle after its column map; the other
+    # factors and the children add one entry a cycle
+    from fgc_backends.hls.plan.loops import _tables, kernel_timing
+    from fgc_backends.hls.units.cholesky import assemble_loops
+
+    tables, timing = _tables(program), kernel_timing(FLOAT32)
+    fb, fs, cm = (tables[k] for k in ("STEP_FACTOR_BEGIN", "STEP_FACTORS",
+                                      "FACTOR_COLMAP_BEGIN"))
+    s = next(i for i in range(len(fb) - 1) if fb[i + 1] - fb[i] >= 2)
+    loops = assemble_loops(tables, s, timing)
+    d = [cm[fs[e] + 1] - cm[fs[e]] for e in range(fb[s], fb[s + 1])]
+    assert [lp.name for lp in loops[:2]] == ["map", "gram_first"]
+    assert loops[0].trip == d[0]
+    assert (loops[1].trip, loops[1].ii) == (-(-(d[0] * (d[0] + 1) // 2 + d[0]) // 2), 1)
+    gram = [lp for lp in loops if lp.name == "gram"]
+    assert [lp.trip for lp in gram] == [x * (x + 1) // 2 + x for x in d[1:]]
+
+
+def test_each_block_types_datapath_and_hgc_share_one_emitted_region(tmp_path):
+    # the kernel as emitted: per block type a DATAFLOW region linearize_<b> of its datapath
+    # (evaluate_<b>) and its HGC (reduce_<b>) linked by one row stream; the plan prices each as
+    # phase hgc_level<b> with those two processes
+    from fgc_backends.hls import HlsConfig, emit
+    from fgc_backends.hls.network import read_network
+
+    program = chain(4, linear="cholesky", cpe=2)
+    emit(program, tmp_path / "p", HlsConfig())
+    kernel = next(p for p in (tmp_path / "p").glob("*.cpp") if not p.name.startswith("tb_"))
+    regions = {r.function: r for r in read_network(kernel.read_text())}
+    plan = build_plan(program)
+    levels = [ph for ph in plan.phases if ph.name.startswith("hgc_level")]
+    assert levels and all(ph.dataflow for ph in levels)
+    for ph in levels:
+        b = ph.name.removeprefix("hgc_level")
+        region = regions[f"linearize_{b}"]
+        assert region.processes == (f"evaluate_{b}", f"reduce_{b}")
+        assert len(region.streams) == 1
+        assert [p.name for p in ph.processes] == [f"factor_{b}_jacobian", f"reduce_{b}"]
+    assert "factor_jacobian" not in {ph.name for ph in plan.phases}

@@ -46,13 +46,53 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
     const int w = STEP_W[s], f = STEP_F[s];
     // HF is all zero here: the cascade clears every word it reads (fgc_cpe.h's cpe_feed), and
     // these loops write only words it reads (the upper triangle and the gradient of rows < w)
-    // each factor's packed Gram (H's lower triangle, then its gradient row) and each child's
-    // update matrix (upper triangle and reduced g), one entry a cycle += into HF: within one
+    // each further factor's packed Gram (H's lower triangle, then its gradient row) and each
+    // child's update matrix (upper triangle and reduced g), one entry a cycle += into HF: within one
     // loop every entry goes to its own address (the column maps are one-to-one), so no
     // iteration waits for another's add (II 1); a later loop's entry may meet the same address
-    for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
+    // the step's first factor: HF is all zero, so its packed Gram is stored, not added: two
+    // entries a cycle (GRAM's two ports read, HF's two ports written; within one factor every
+    // entry has its own address), its column map first copied into registers (two reads of it
+    // an entry each)
+    if (STEP_FACTOR_BEGIN[s] < STEP_FACTOR_BEGIN[s + 1]) {
+        const int fac = STEP_FACTORS[STEP_FACTOR_BEGIN[s]];
+        const int cb = FACTOR_COLMAP_BEGIN[fac];
+        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
+        const int g0 = FACTOR_GRAM_OFF[fac];
+        const int n = d * (d + 1) / 2 + d;
+        int map[CFG::MAX_W + 1];
+#pragma HLS ARRAY_PARTITION variable=map complete
+        for (int c = 0; c < d; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
+#pragma HLS PIPELINE II=1
+            map[c] = FACTOR_COLMAP[cb + c];
+        }
+        map[d] = w;  // row d of the packed Gram: the gradient, column w of HF
+        FGC_CYCLES("assemble", 0, "map", d, CFG::MOVE_II, CFG::MOVE_DEPTH);
+        for (int k = 0, p = 0, q = 0; k < n; k += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED/2
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=HF inter false
+            for (int h = 0; h < 2; ++h) {
+                if (k + h < n) {
+                    const int a = map[p], b = map[q];
+                    const int lo = b < a ? b : a, hi = b < a ? a : b;
+                    HF[lo][hi] = GRAM[g0 + k + h];
+                    if (q == p) {
+                        q = 0;
+                        ++p;
+                    } else {
+                        ++q;
+                    }
+                }
+            }
+        }
+        FGC_CYCLES("assemble", 0, "gram_first", (n + 1) / 2, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    }
+    for (int e = STEP_FACTOR_BEGIN[s] + 1; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
         const int fac = STEP_FACTORS[e];
+
         const int cb = FACTOR_COLMAP_BEGIN[fac];
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
         const int g0 = FACTOR_GRAM_OFF[fac];

@@ -48,6 +48,7 @@ counts the plan's terms only; ``latency_with_assumed_ms`` adds the assumed ones.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable
 from types import SimpleNamespace
 
@@ -66,12 +67,18 @@ from fgc_backends.hls.plan import (
     kernel_loop,
     kernel_timing,
     phase_cycles,
+    phase_group,
     plan_cost,
     plan_sizes,
 )
 from fgc_backends.hls.plan.stream import Term, UpdatePrice
 from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops
-from fgc_backends.hls.units.cholesky import assemble_loops, cpe_step_loops, hgc_loops
+from fgc_backends.hls.units.cholesky import (
+    assemble_loops,
+    cpe_step_loops,
+    hgc_loops,
+    hgc_phases,
+)
 from fgc_backends.hls.units.datapath import gradient_loops, small_blocks
 from fgc_backends.hls.units.lm_control import lm_control_phases, rounding_noise_loops, setup_phase
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
@@ -125,13 +132,14 @@ class UpdateModel:
 
     # -- what the batch plan already prices, per unit ------------------------------------------
     def _read_plan(self) -> None:
-        phases = {ph.name: ph for ph in self.plan.phases}
         self.factor_loop = {}  # (block, mode) -> the plan's instance loop (ii, depth)
         small = small_blocks(self.program)  # their shared datapath's one loop
-        for mode in ("jacobian", "cost"):
-            for proc in phases[f"factor_{mode}"].processes:
-                unit = proc.name.split("_")[1]
-                for block in small if unit == "small" else (int(unit),):
+        for mode in ("jacobian", "cost"):  # Cholesky: the Jacobian pass in the hgc regions
+            for proc in (p for ph in self.plan.phases for p in ph.processes):
+                unit = re.fullmatch(rf"factor_(\d+|small)_{mode}", proc.name)
+                if unit is None:
+                    continue
+                for block in small if unit.group(1) == "small" else (int(unit.group(1)),):
                     self.factor_loop[block, mode] = proc.loops[0]
         # the plan's kernel loop timings (in the accelerator's scalar) and the emitted buffer
         # sizes (MAX_W: the stack's and the assembly's row stride)
@@ -229,10 +237,16 @@ class UpdateModel:
     def _build_window_phases(self, first: int, last: int) -> tuple[Phase, ...]:
         inst = self._instances(first, last)
         view = self._view(first, last, inst)
-        phases = [self._factor_phase("jacobian", inst)]
+        jacobian = self._factor_phase("jacobian", inst)
+        phases = [jacobian]
         if self.qr:
             phases.append(Phase("gradient", False, tuple(gradient_loops(view, self.timing))))
-        phases += self._linear_phases(first, last, self.damping)
+            phases += self._linear_phases(first, last, self.damping)
+        else:  # the Jacobian pass runs alongside the HGC, a region per block type (as emitted)
+            phases = hgc_phases(view, self.les_timing, self.options.hgc_lanes,
+                                jacobian.processes)
+            phases += [ph for ph in self._linear_phases(first, last, self.damping)
+                       if ph.name != "hgc"]
         phases.append(state_update_phase(view.variables, self.plan.ops,
                                          self.plan.options.state_allocation))
         phases.append(self._factor_phase("cost", inst))
@@ -318,7 +332,7 @@ class UpdateModel:
         # kept from the linearisation: the Jacobian pass, the gradient / HGC and LM control's
         # once-per-linearisation loops; nothing accepted: no copy of the trial x
         kept = ("factor_jacobian", "gradient", "hgc", "lm_iteration", "lm_accept")
-        return sum(phase_cycles(ph) for ph in phases if ph.name not in kept)
+        return sum(phase_cycles(ph) for ph in phases if phase_group(ph.name) not in kept)
 
     def _kept_terms(self, first, last) -> list[Term]:
         """Back-substitution through the kept conditionals first − 1 … 0 (plan), with the

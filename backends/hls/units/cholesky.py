@@ -10,7 +10,7 @@ import math
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cost.operators import OperatorTable
-from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_dot, kernel_loop
+from fgc_backends.hls.plan.loops import _block_shape, kernel_dot, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
@@ -106,30 +106,46 @@ def hgc_operators(program, lanes: int, partials: int) -> list[tuple[int, tuple]]
 
 
 def hgc_loops(program, timing: dict, lanes: int = 32) -> list[Process]:
-    """Cholesky: linearize_all's HGC over AB (reduce_<b>: per instance its rows loaded,
-    :data:`PORTS` words a cycle, into a memory a row a bank, the column map, the Gram's
-    structurally non-zero entries (:func:`gram_entries`) one every :func:`gram_ii` cycles, each
-    the m rows' products folded in a tree (depth Lm + La ceil(log2 m) + read and write) into
-    GRAM, the gradient scatter from GRAM (II 1) and the finiteness check over the diagonal
-    (interleaved partial sums: the dot-product rule)), after G is zeroed. The structural zeros
-    are never written: GRAM keeps its initial zeros there, so no pass clears it."""
+    """Cholesky: linearize_all's HGC (reduce_<b>: per instance its m whitened rows from
+    evaluate_<b>'s stream, a row a cycle, into registers, the column map, the Gram's
+    structurally non-zero entries (:func:`gram_entries`) one every :func:`gram_ii` cycles,
+    each the m rows' products folded in a tree (depth Lm + La ceil(log2 m) + read and write)
+    into GRAM, the gradient scatter from GRAM (II 1) and the finiteness check over the diagonal
+    (interleaved partial sums: the dot-product rule)), after G is zeroed (the first process).
+    The structural zeros are never written: GRAM keeps its initial zeros there, so no pass
+    clears it."""
     n_t = sum(v.dim for v in program.variables)
     procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
     la = timing["acc"][0]
     lm = timing["acc"][1] - la
     for i, b in enumerate(program.blocks):
-        m, d, padded, _ = _block_shape(b)
+        m, d, _, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
-        cols = d + 1
         tree = math.ceil(math.log2(m)) if m > 1 else 0
-        loops = [kernel_loop("load", _ported(m * padded), "move", timing, n),
+        loops = [kernel_loop("rows", m, "move", timing, n),
                  kernel_loop("columns", d, "fill", timing, n),
                  Loop("entries", len(gram_entries(b)), gram_ii(program, i, lanes),
                       lm + la * tree + 2, n),
                  kernel_loop("scatter", d, "scatter", timing, n),
-                 kernel_dot("check", cols, timing, n)]
+                 kernel_dot("check", d + 1, timing, n)]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
+
+
+def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...]
+               ) -> list[Phase]:
+    """linearize_all as emitted for Cholesky: ``hgc`` (G zeroed), then per block type b the
+    DATAFLOW region linearize_<b> as phase ``hgc_level<b>`` (group ``hgc``): its datapath's
+    Jacobian-mode instance loop (``jacobian``'s process factor_<b>_jacobian: whitened rows into
+    AB and, a stream word a row, to the HGC) alongside reduce_<b> (:func:`hgc_loops`), so the
+    region takes the slower of the two plus the other's fill."""
+    procs = hgc_loops(program, timing, lanes)
+    jac = {p.name: p for p in jacobian}
+    phases = [Phase("hgc", False, (procs[0],), linear=True)]
+    for i, reduce in enumerate(procs[1:]):
+        region = tuple(p for p in (jac.get(f"factor_{i}_jacobian"), reduce) if p is not None)
+        phases.append(Phase(f"hgc_level{i}", True, region, linear=True))
+    return phases
 
 
 def assemble_loops(tables: dict, s: int, timing: dict) -> list[Loop]:
@@ -137,13 +153,20 @@ def assemble_loops(tables: dict, s: int, timing: dict) -> list[Loop]:
     it reads, so no clearing pass), per factor its packed Gram's lower triangle and gradient
     row (d (d + 1) / 2 + d entries), per child its update matrix's upper triangle and reduced g
     (s (s + 1) / 2 + s), each one loop of ``+=`` into the table-addressed frontal matrix whose
-    entries all go to different addresses (``scatter``: II 1)."""
+    entries all go to different addresses (``scatter``: II 1); the step's first factor is
+    stored, not added (HF is all zero), two entries a cycle (``move``) after its column map is
+    copied into registers (``move``, d)."""
     loops = []
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
         d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
-        loops.append(kernel_loop("gram", d * (d + 1) // 2 + d, "scatter", timing))
+        n = d * (d + 1) // 2 + d
+        if e == fb[s]:  # HF all zero: stored, two entries a cycle, after its column map
+            loops += [kernel_loop("map", d, "move", timing),
+                      kernel_loop("gram_first", -(-n // 2), "move", timing)]
+        else:
+            loops.append(kernel_loop("gram", n, "scatter", timing))
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
@@ -190,8 +213,15 @@ def build(ctx) -> None:
         # one Gram unit per block type (the template instance its reduce_<b> calls)
         for i, unit_ops in hgc_operators(program, opts.hgc_lanes, ops.add.latency):
             ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
-        ctx.add_phase("solve", Phase("hgc", False, tuple(
-            hgc_loops(program, ctx.les_timing, opts.hgc_lanes)), linear=True))
+        # the datapaths' Jacobian pass becomes part of linearize_<b>'s regions (evaluate_<b>
+        # alongside its HGC): its phase is replaced, in place, by hgc_phases
+        at = next(k for k, (_, ph) in enumerate(ctx.phases) if ph.name == "factor_jacobian")
+        slot, jacobian = ctx.phases[at]
+        ctx.phases[at:at + 1] = [(slot, ph) for ph in hgc_phases(
+            program, ctx.les_timing, opts.hgc_lanes, jacobian.processes)]
+        for i, b in enumerate(program.blocks):  # the row stream (a row a word) and registers
+            m, _, padded, _ = _block_shape(b)
+            ctx.memories.append(Memory(f"gram_rows_{i}", m * padded, ops.word_bits, 1))
     else:
         ctx.units.append(Unit("hgc", "Hessian/gradient accumulation", opts.hgc_lanes,
                               (("add", 1), ("mul", 1))))

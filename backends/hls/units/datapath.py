@@ -88,7 +88,12 @@ SMALL_OPS = 64
 
 def small_blocks(program) -> tuple[int, ...]:
     """The block types that share the factor_small datapath (:data:`SMALL_OPS`), or () when
-    fewer than two qualify (nothing to share)."""
+    fewer than two qualify (nothing to share). A Cholesky design shares none: there every block
+    type's datapath streams its whitened rows to its own HGC in one DATAFLOW region
+    (``linearize_<b>``), which a time-multiplexed datapath over several block types would have
+    to feed to several HGCs (not built)."""
+    if program.solver.linear == "cholesky":
+        return ()
     small = tuple(i for i, b in enumerate(program.blocks)
                   if sum(b.ops_after.values()) + sum(b.ops_cost.values()) <= SMALL_OPS
                   and not any(b.ops_after.get(k, 0) or b.ops_cost.get(k, 0)

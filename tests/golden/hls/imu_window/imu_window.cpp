@@ -8,9 +8,9 @@
 // -> back-substitution -> state update (retract) -> the factor datapaths (cost mode) -> LM control.
 //
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
-// back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
-// cond_load, no streams between them):
-//   46 processes, 61 streams (cpe=20)
+// back_substitute's backsub_level region (backsub_set<u>: one cond_backsub unit per unit set,
+// side by side, no streams between them):
+//   43 processes, 61 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
 //   process cpe0
@@ -54,9 +54,6 @@
 //   process cpe19
 //   process cpe_drain
 //   process backsub_set0
-//   process backsub_load1
-//   process backsub_set1
-//   process backsub_load0
 //   stream cpe_link0 depth=30: cpe_feed -> cpe_tap0
 //   stream cpe_link1 depth=30: cpe0 -> cpe_tap1
 //   stream cpe_link2 depth=30: cpe1 -> cpe_tap2
@@ -1940,7 +1937,9 @@ void factor_cost_1(const T in[12], const T dat[13],
 // block 2: PriorFactorVector3 (3 rows, 3 columns, 1 instances)
 void factor_2(const T in[3], const T dat[4],
               T raw[12]) {
-#pragma HLS INLINE
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=3
     raw[0] = T(1);
     raw[3] = -dat[0] + in[0];
     raw[5] = T(1);
@@ -1951,7 +1950,10 @@ void factor_2(const T in[3], const T dat[4],
 
 void factor_cost_2(const T in[3], const T dat[4],
                    T half[1]) {
-#pragma HLS INLINE
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
     const T t2 = -dat[2] + in[2];
@@ -1963,7 +1965,9 @@ void factor_cost_2(const T in[3], const T dat[4],
 // block 3: PriorFactorImuBias (6 rows, 6 columns, 1 instances)
 void factor_3(const T in[6], const T dat[7],
               T raw[48]) {
-#pragma HLS INLINE
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=4
     raw[0] = T(1);
     raw[6] = -dat[0] + in[0];
     raw[9] = T(1);
@@ -1980,7 +1984,10 @@ void factor_3(const T in[6], const T dat[7],
 
 void factor_cost_3(const T in[6], const T dat[7],
                    T half[1]) {
-#pragma HLS INLINE
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
     const T t2 = -dat[2] + in[2];
@@ -2016,6 +2023,19 @@ void whiten(T raw[], T ab[], const T p[]) {
             for (int c = 0; c < STRIDE; ++c) ab[i * STRIDE + c] = raw[i * STRIDE + c] * s;
         }
     }
+}
+
+// sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
+// at the whitened residual norm, as GTSAM does.
+template <int STRIDE, int COLS, int ROWS>
+void reweight(T ab[], T code, T k) {
+    if (code == T(0)) return;
+    T e2 = T(0);
+    for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
+    const T e = fgc_sqrt(e2);
+    const T w = code == T(1) ? (e <= k ? T(1) : T(k / e)) : T(k * k / (k * k + e * e));
+    const T s = fgc_sqrt(w);
+    for (int i = 0; i < ROWS * STRIDE; ++i) ab[i] *= s;
 }
 
 // The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
@@ -2069,9 +2089,6 @@ void gram_entries(const T ab[ROWS * PADDED], const int P[ENTRIES], const int Q[E
         for (int r = 0; r < ROWS; ++r) prod[r] = L(ab[r * PADDED + p]) * L(ab[r * PADDED + q]);
         GRAM[g0 + p * (p + 1) / 2 + q] = fgc_units::fold_partials<L, ROWS>(prod);
     }
-    // read, multiply, the fold, write
-    FGC_CYCLES("hgc", 0, "entries", ENTRIES, GII,
-               L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(ROWS) + 2);
 }
 
 // From one instance's packed Gram of [A | b] in GRAM at g0 (row COLS - 1 is b^T A, then b^T b):
@@ -2096,6 +2113,18 @@ bool gradient_from_gram(int g0, const int col[COLS - 1]) {
         part[c % L_PARTIALS] += GRAM[g0 + c * (c + 1) / 2 + c];
     }
     return fgc_isfinite(T(fgc_units::fold_partials<L, L_PARTIALS>(part)));
+}
+
+// One whitened row of a block type as evaluate_<b> streams it to its HGC (reduce_<b>) in the
+// linearize_<b> region: a word per column of the widest block type's padded row.
+struct GramRow { T word[32]; };
+
+// rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
+T robust_loss(T half, T code, T k) {
+    if (code == T(0)) return half;
+    const T e = fgc_sqrt(T(2) * half);
+    if (code == T(1)) return e <= k ? half : T(k * e - T(0.5) * k * k);
+    return T(0.5) * k * k * fgc_log1p(e * e / (k * k));
 }
 
 // block 0: the inputs of instance f (x's storage, then its measurements and noise)
@@ -2344,7 +2373,7 @@ void whiten_tail_0_0(const T raw[], T ab[], const T p[]) {
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 180 structural non-zeros of
 // 15 x 31), whitening, into AB; one instance every II=233 cycles (the plan's)
-void evaluate_0(const T x[N_X]) {
+void evaluate_0(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 7; ++i) {
 #pragma HLS PIPELINE II=233
         const int f = BLOCK0_INSTANCES[i];
@@ -2356,9 +2385,15 @@ void evaluate_0(const T x[N_X]) {
         factor_0(in, dat, raw);
         whiten<32, 31, 15, 2, 9>(raw + 0, ab + 0, dat + 73);
         whiten_tail_0_0(raw + 0, ab + 0, dat + 73);
+        reweight<32, 31, 15>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 193], DATA_BUF[FACTOR_DATA_OFF[f] + 194]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 15; ++r) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
+        }
+        for (int r = 0; r < 15; ++r) {  // the rows to the HGC, a stream word a row
+            GramRow row;
+            for (int c = 0; c < 32; ++c) row.word[c] = ab[r * 32 + c];
+            rows.write(row);
         }
     }
     FGC_CYCLES("factor_0_jacobian", 0, "instances", 7, 233, 621);
@@ -2443,15 +2478,22 @@ const int BLOCK0_GRAM_Q[496] = {
     29, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
     15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30,
 };
-// block 0: the gradient and the HGC's Gram of each instance from AB; false if not finite
-bool reduce_0() {
-    bool finite = true;
+// block 0's HGC: per instance its 15 whitened rows from evaluate_0's stream, a row a
+// cycle, into registers (partitioned completely: a whole row written, two columns of every row
+// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
+// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+void reduce_0(hls::stream<GramRow>& rows, bool& finite) {
+    bool ok = true;
     for (int i = 0; i < 7; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[480];
-#pragma HLS ARRAY_PARTITION variable=ab block factor=15
-        load_rows_0(f, ab);
+#pragma HLS ARRAY_PARTITION variable=ab complete
+        for (int r = 0; r < 15; ++r) {
+#pragma HLS PIPELINE II=1
+            const GramRow row = rows.read();
+            for (int c = 0; c < 32; ++c) ab[r * 32 + c] = row.word[c];
+        }
         int col[30];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         for (int j = 0; j < 3; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
@@ -2459,17 +2501,32 @@ bool reduce_0() {
         for (int j = 0; j < 3; ++j) col[15 + j] = VAR_T_OFF[FACTOR_VARS[vb + 3]] + j;
         for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
         for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
-        FGC_CYCLES("reduce_0", 0, "load", 240, 1, 2);
+        FGC_CYCLES("reduce_0", 0, "rows", 15, 1, 2);
         FGC_CYCLES("reduce_0", 0, "columns", 30, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
+        // fold, write
         gram_entries<32, 15, 496, 1>(ab, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        finite = gradient_from_gram<31>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_0", 0, "entries", 496, 1, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(15) + 2);
+        ok = gradient_from_gram<31>(FACTOR_GRAM_OFF[f], col) && ok;
         FGC_CYCLES("reduce_0", 0, "scatter", 30, 1, 6);
         FGC_CYCLES("reduce_0", 0, "check", 31, fgc_units::dot_ii(31, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(31, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
-    return finite;
+    finite = ok;
+}
+
+// block 0's linearisation, one DATAFLOW region: evaluate_0 (the datapath: the whitened rows
+// into AB and, a stream word a row, to the HGC) alongside reduce_0 (their Gram and gradient), so
+// an instance's Gram is computed while the datapath evaluates the next instances
+void linearize_0(const T x[N_X], bool& finite) {
+#pragma HLS DATAFLOW
+    hls::stream<GramRow> rows;
+#pragma HLS STREAM variable=rows depth=15
+    FGC_REGION("linearize_0");
+    evaluate_0(x, rows);
+    reduce_0(rows, finite);
+    FGC_DRAINED(&rows, 1);
 }
 
 // block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
@@ -2497,19 +2554,19 @@ T noise_0(T noise) {
     return noise;
 }
 
-// block 0, cost mode: `total` plus the cost of its instances in order, one every II=97 cycles
+// block 0, cost mode: `total` plus the cost of its instances in order, one every II=98 cycles
 T cost_of_0(const T x[N_X], T total) {
     for (int i = 0; i < 7; ++i) {
-#pragma HLS PIPELINE II=97
+#pragma HLS PIPELINE II=98
         const int f = BLOCK0_INSTANCES[i];
         T in[42], dat[193], half[1];
         gather_0(x, f, in, dat);
         factor_cost_0(in, dat, half);
         T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
+        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 193], DATA_BUF[FACTOR_DATA_OFF[f] + 194]);
         total += cost;
     }
-    FGC_CYCLES("factor_0_cost", 0, "instances", 7, 97, 596);
+    FGC_CYCLES("factor_0_cost", 0, "instances", 7, 98, 596);
     return total;
 }
 
@@ -2524,7 +2581,7 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
 // 6 x 7), whitening, into AB; one instance every II=103 cycles (the plan's)
-void evaluate_1(const T x[N_X]) {
+void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
 #pragma HLS PIPELINE II=103
         const int f = BLOCK1_INSTANCES[i];
@@ -2535,9 +2592,15 @@ void evaluate_1(const T x[N_X]) {
         for (int c = 0; c < 48; ++c) raw[c] = T(0);
         factor_1(in, dat, raw);
         whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 12);
+        reweight<8, 7, 6>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
+        }
+        for (int r = 0; r < 6; ++r) {  // the rows to the HGC, a stream word a row
+            GramRow row;
+            for (int c = 0; c < 8; ++c) row.word[c] = ab[r * 8 + c];
+            rows.write(row);
         }
     }
     FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 416);
@@ -2564,28 +2627,50 @@ const int BLOCK1_GRAM_Q[28] = {
     0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4, 0,
     1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6,
 };
-// block 1: the gradient and the HGC's Gram of each instance from AB; false if not finite
-bool reduce_1() {
-    bool finite = true;
+// block 1's HGC: per instance its 6 whitened rows from evaluate_1's stream, a row a
+// cycle, into registers (partitioned completely: a whole row written, two columns of every row
+// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
+// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+void reduce_1(hls::stream<GramRow>& rows, bool& finite) {
+    bool ok = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab block factor=6
-        load_rows_1(f, ab);
+#pragma HLS ARRAY_PARTITION variable=ab complete
+        for (int r = 0; r < 6; ++r) {
+#pragma HLS PIPELINE II=1
+            const GramRow row = rows.read();
+            for (int c = 0; c < 8; ++c) ab[r * 8 + c] = row.word[c];
+        }
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_1", 0, "load", 24, 1, 2);
+        FGC_CYCLES("reduce_1", 0, "rows", 6, 1, 2);
         FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
+        // fold, write
         gram_entries<8, 6, 28, 6>(ab, BLOCK1_GRAM_P, BLOCK1_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_1", 0, "entries", 28, 6, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(6) + 2);
+        ok = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && ok;
         FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_1", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
-    return finite;
+    finite = ok;
+}
+
+// block 1's linearisation, one DATAFLOW region: evaluate_1 (the datapath: the whitened rows
+// into AB and, a stream word a row, to the HGC) alongside reduce_1 (their Gram and gradient), so
+// an instance's Gram is computed while the datapath evaluates the next instances
+void linearize_1(const T x[N_X], bool& finite) {
+#pragma HLS DATAFLOW
+    hls::stream<GramRow> rows;
+#pragma HLS STREAM variable=rows depth=6
+    FGC_REGION("linearize_1");
+    evaluate_1(x, rows);
+    reduce_1(rows, finite);
+    FGC_DRAINED(&rows, 1);
 }
 
 // block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
@@ -2617,7 +2702,7 @@ T cost_of_1(const T x[N_X], T total) {
         gather_1(x, f, in, dat);
         factor_cost_1(in, dat, half);
         T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
+        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         total += cost;
     }
     FGC_CYCLES("factor_1_cost", 0, "instances", 1, 48, 377);
@@ -2633,6 +2718,32 @@ void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
     for (int i = 0; i < 1; ++i) dat[3 + i] = DATA_BUF[line + 3 + i];
 }
 
+// block 2, Jacobian mode: per instance residual + Jacobian (its 6 structural non-zeros of
+// 3 x 4), whitening, into AB; one instance every II=6 cycles (the plan's)
+void evaluate_2(const T x[N_X], hls::stream<GramRow>& rows) {
+    for (int i = 0; i < 1; ++i) {
+#pragma HLS PIPELINE II=6
+        const int f = BLOCK2_INSTANCES[i];
+        T in[3], dat[4];
+        gather_2(x, f, in, dat);
+        T raw[12];  // the Jacobian writes only its structural non-zeros
+        T ab[12];
+        for (int c = 0; c < 12; ++c) raw[c] = T(0);
+        factor_2(in, dat, raw);
+        whiten<4, 4, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
+        reweight<4, 4, 3>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
+        const int a0 = FACTOR_A_OFF[f];
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
+        }
+        for (int r = 0; r < 3; ++r) {  // the rows to the HGC, a stream word a row
+            GramRow row;
+            for (int c = 0; c < 4; ++c) row.word[c] = ab[r * 4 + c];
+            rows.write(row);
+        }
+    }
+    FGC_CYCLES("factor_2_jacobian", 0, "instances", 1, 6, 4);
+}
 
 // block 2's whitened rows of instance f from AB, padded to 4 columns (a multiple of PORTS)
 void load_rows_2(int f, T ab[12]) {
@@ -2653,28 +2764,50 @@ const int BLOCK2_GRAM_P[7] = {
 const int BLOCK2_GRAM_Q[7] = {
     0, 1, 2, 0, 1, 2, 3,
 };
-// block 2: the gradient and the HGC's Gram of each instance from AB; false if not finite
-bool reduce_2() {
-    bool finite = true;
+// block 2's HGC: per instance its 3 whitened rows from evaluate_2's stream, a row a
+// cycle, into registers (partitioned completely: a whole row written, two columns of every row
+// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
+// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+void reduce_2(hls::stream<GramRow>& rows, bool& finite) {
+    bool ok = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[12];
-#pragma HLS ARRAY_PARTITION variable=ab block factor=3
-        load_rows_2(f, ab);
+#pragma HLS ARRAY_PARTITION variable=ab complete
+        for (int r = 0; r < 3; ++r) {
+#pragma HLS PIPELINE II=1
+            const GramRow row = rows.read();
+            for (int c = 0; c < 4; ++c) ab[r * 4 + c] = row.word[c];
+        }
         int col[3];  // per column: its tangent entry
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_2", 0, "load", 6, 1, 2);
+        FGC_CYCLES("reduce_2", 0, "rows", 3, 1, 2);
         FGC_CYCLES("reduce_2", 0, "columns", 3, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
+        // fold, write
         gram_entries<4, 3, 7, 3>(ab, BLOCK2_GRAM_P, BLOCK2_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        finite = gradient_from_gram<4>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_2", 0, "entries", 7, 3, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(3) + 2);
+        ok = gradient_from_gram<4>(FACTOR_GRAM_OFF[f], col) && ok;
         FGC_CYCLES("reduce_2", 0, "scatter", 3, 1, 6);
         FGC_CYCLES("reduce_2", 0, "check", 4, fgc_units::dot_ii(4, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(4, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
-    return finite;
+    finite = ok;
+}
+
+// block 2's linearisation, one DATAFLOW region: evaluate_2 (the datapath: the whitened rows
+// into AB and, a stream word a row, to the HGC) alongside reduce_2 (their Gram and gradient), so
+// an instance's Gram is computed while the datapath evaluates the next instances
+void linearize_2(const T x[N_X], bool& finite) {
+#pragma HLS DATAFLOW
+    hls::stream<GramRow> rows;
+#pragma HLS STREAM variable=rows depth=3
+    FGC_REGION("linearize_2");
+    evaluate_2(x, rows);
+    reduce_2(rows, finite);
+    FGC_DRAINED(&rows, 1);
 }
 
 // block 2: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
@@ -2697,6 +2830,22 @@ T noise_2(T noise) {
     return noise;
 }
 
+// block 2, cost mode: `total` plus the cost of its instances in order, one every II=4 cycles
+T cost_of_2(const T x[N_X], T total) {
+    for (int i = 0; i < 1; ++i) {
+#pragma HLS PIPELINE II=4
+        const int f = BLOCK2_INSTANCES[i];
+        T in[3], dat[4], half[1];
+        gather_2(x, f, in, dat);
+        factor_cost_2(in, dat, half);
+        T cost = T(0);
+        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
+        total += cost;
+    }
+    FGC_CYCLES("factor_2_cost", 0, "instances", 1, 4, 18);
+    return total;
+}
+
 // block 3: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     const int vb = FACTOR_VAR_BEGIN[f];
@@ -2706,6 +2855,32 @@ void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     for (int i = 0; i < 1; ++i) dat[6 + i] = DATA_BUF[line + 6 + i];
 }
 
+// block 3, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
+// 6 x 7), whitening, into AB; one instance every II=21 cycles (the plan's)
+void evaluate_3(const T x[N_X], hls::stream<GramRow>& rows) {
+    for (int i = 0; i < 1; ++i) {
+#pragma HLS PIPELINE II=21
+        const int f = BLOCK3_INSTANCES[i];
+        T in[6], dat[7];
+        gather_3(x, f, in, dat);
+        T raw[48];  // the Jacobian writes only its structural non-zeros
+        T ab[48];
+        for (int c = 0; c < 48; ++c) raw[c] = T(0);
+        factor_3(in, dat, raw);
+        whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 6);
+        reweight<8, 7, 6>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
+        const int a0 = FACTOR_A_OFF[f];
+        for (int r = 0; r < 6; ++r) {
+            for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
+        }
+        for (int r = 0; r < 6; ++r) {  // the rows to the HGC, a stream word a row
+            GramRow row;
+            for (int c = 0; c < 8; ++c) row.word[c] = ab[r * 8 + c];
+            rows.write(row);
+        }
+    }
+    FGC_CYCLES("factor_3_jacobian", 0, "instances", 1, 21, 4);
+}
 
 // block 3's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
 void load_rows_3(int f, T ab[48]) {
@@ -2726,28 +2901,50 @@ const int BLOCK3_GRAM_P[13] = {
 const int BLOCK3_GRAM_Q[13] = {
     0, 1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6,
 };
-// block 3: the gradient and the HGC's Gram of each instance from AB; false if not finite
-bool reduce_3() {
-    bool finite = true;
+// block 3's HGC: per instance its 6 whitened rows from evaluate_3's stream, a row a
+// cycle, into registers (partitioned completely: a whole row written, two columns of every row
+// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
+// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+void reduce_3(hls::stream<GramRow>& rows, bool& finite) {
+    bool ok = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
         T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab block factor=6
-        load_rows_3(f, ab);
+#pragma HLS ARRAY_PARTITION variable=ab complete
+        for (int r = 0; r < 6; ++r) {
+#pragma HLS PIPELINE II=1
+            const GramRow row = rows.read();
+            for (int c = 0; c < 8; ++c) ab[r * 8 + c] = row.word[c];
+        }
         int col[6];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_3", 0, "load", 24, 1, 2);
+        FGC_CYCLES("reduce_3", 0, "rows", 6, 1, 2);
         FGC_CYCLES("reduce_3", 0, "columns", 6, 1, 1);
         // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one a cycle (gram_entries)
+        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
+        // fold, write
         gram_entries<8, 6, 13, 6>(ab, BLOCK3_GRAM_P, BLOCK3_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        finite = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && finite;
+        FGC_CYCLES("reduce_3", 0, "entries", 13, 6, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(6) + 2);
+        ok = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && ok;
         FGC_CYCLES("reduce_3", 0, "scatter", 6, 1, 6);
         FGC_CYCLES("reduce_3", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
                    fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
     }
-    return finite;
+    finite = ok;
+}
+
+// block 3's linearisation, one DATAFLOW region: evaluate_3 (the datapath: the whitened rows
+// into AB and, a stream word a row, to the HGC) alongside reduce_3 (their Gram and gradient), so
+// an instance's Gram is computed while the datapath evaluates the next instances
+void linearize_3(const T x[N_X], bool& finite) {
+#pragma HLS DATAFLOW
+    hls::stream<GramRow> rows;
+#pragma HLS STREAM variable=rows depth=6
+    FGC_REGION("linearize_3");
+    evaluate_3(x, rows);
+    reduce_3(rows, finite);
+    FGC_DRAINED(&rows, 1);
 }
 
 // block 3: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
@@ -2770,90 +2967,23 @@ T noise_3(T noise) {
     return noise;
 }
 
-// The small block types (PriorFactorVector3, PriorFactorImuBias): one time-multiplexed datapath per mode. One
-// pipelined loop over all their instances (block type by block type) runs one branch a block
-// type of one function, all under that function's ALLOCATION: the branches are exclusive, so
-// they share its operators (their factor_<b> / factor_cost_<b> inlined into it).
-const int SMALL_BLOCK[2] = { 2, 3 };
-const int SMALL_FACTOR[2] = { 8, 9 };
-
-// Jacobian mode of small block type b's instance f (evaluate_<b>'s body)
-void evaluate_small_one(const T x[N_X], int b, int f) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=1
-#pragma HLS ALLOCATION operation instances=fmul limit=2
-    if (b == 2) {
-        T in[3], dat[4];
-        gather_2(x, f, in, dat);
-        T raw[12];  // the Jacobian writes only its structural non-zeros
-        T ab[12];
-        for (int c = 0; c < 12; ++c) raw[c] = T(0);
-        factor_2(in, dat, raw);
-        whiten<4, 4, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
-        const int a0 = FACTOR_A_OFF[f];
-        for (int r = 0; r < 3; ++r) {
-            for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
-        }
-    } else if (b == 3) {
-        T in[6], dat[7];
-        gather_3(x, f, in, dat);
-        T raw[48];  // the Jacobian writes only its structural non-zeros
-        T ab[48];
-        for (int c = 0; c < 48; ++c) raw[c] = T(0);
-        factor_3(in, dat, raw);
-        whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 6);
-        const int a0 = FACTOR_A_OFF[f];
-        for (int r = 0; r < 6; ++r) {
-            for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
-        }
-    }
-}
-
-// every small block type's instances in Jacobian mode, one every II=27 cycles (the plan's)
-void evaluate_small(const T x[N_X]) {
-    for (int i = 0; i < 2; ++i) {
-#pragma HLS PIPELINE II=27
-        evaluate_small_one(x, SMALL_BLOCK[i], SMALL_FACTOR[i]);
-    }
-    FGC_CYCLES("factor_small_jacobian", 0, "instances", 2, 27, 27);
-}
-
-// cost mode of small block type b's instance f: its members' costs summed (cost_of_<b>'s body)
-T cost_small_one(const T x[N_X], int b, int f) {
-#pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=2
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
-#pragma HLS ALLOCATION operation instances=fmul limit=4
-    T total = T(0);
-    if (b == 2) {
-        T in[3], dat[4], half[1];
-        gather_2(x, f, in, dat);
-        factor_cost_2(in, dat, half);
-        T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
-        total = cost;
-    } else if (b == 3) {
+// block 3, cost mode: `total` plus the cost of its instances in order, one every II=5 cycles
+T cost_of_3(const T x[N_X], T total) {
+    for (int i = 0; i < 1; ++i) {
+#pragma HLS PIPELINE II=5
+        const int f = BLOCK3_INSTANCES[i];
         T in[6], dat[7], half[1];
         gather_3(x, f, in, dat);
         factor_cost_3(in, dat, half);
         T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
-        total = cost;
+        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
+        total += cost;
     }
+    FGC_CYCLES("factor_3_cost", 0, "instances", 1, 5, 22);
     return total;
 }
 
-// `total` plus the cost of every small block type's instances in order, one every II=6 cycles
-T cost_of_small(const T x[N_X], T total) {
-    for (int i = 0; i < 2; ++i) {
-#pragma HLS PIPELINE II=6
-        total += cost_small_one(x, SMALL_BLOCK[i], SMALL_FACTOR[i]);
-    }
-    FGC_CYCLES("factor_small_cost", 0, "instances", 2, 6, 22);
-    return total;
-}
-
-// Linearise every factor: the datapaths in Jacobian mode into AB, then the gradient and Grams.
+// Linearise every factor: the datapaths in Jacobian mode into AB, then the gradient and Grams (per block type one region, datapath alongside its HGC).
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
     FGC_PHASE("hgc");
@@ -2862,16 +2992,23 @@ bool linearize_all(const T x[N_X]) {
         G[i] = T(0);
     }
     FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
-    FGC_PHASE("factor_jacobian");
-    evaluate_0(x);
-    evaluate_1(x);
-    evaluate_small(x);
-    FGC_PHASE("hgc");
     bool finite = true;
-    finite = reduce_0() && finite;
-    finite = reduce_1() && finite;
-    finite = reduce_2() && finite;
-    finite = reduce_3() && finite;
+    bool ok0 = true;
+    linearize_0(x, ok0);
+    FGC_SEQUENTIAL();
+    finite = ok0 && finite;
+    bool ok1 = true;
+    linearize_1(x, ok1);
+    FGC_SEQUENTIAL();
+    finite = ok1 && finite;
+    bool ok2 = true;
+    linearize_2(x, ok2);
+    FGC_SEQUENTIAL();
+    finite = ok2 && finite;
+    bool ok3 = true;
+    linearize_3(x, ok3);
+    FGC_SEQUENTIAL();
+    finite = ok3 && finite;
     return finite;
 }
 
@@ -2903,7 +3040,8 @@ T total_cost(const T x[N_X]) {
     T total = T(0);
     total = cost_of_0(x, total);
     total = cost_of_1(x, total);
-    total = cost_of_small(x, total);
+    total = cost_of_2(x, total);
+    total = cost_of_3(x, total);
     return total;
 }
 
@@ -3038,9 +3176,7 @@ struct LesConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int SCATTER_II = 1, SCATTER_DEPTH = 6;
     static const int PARTIALS = 4;  // interleaved partial sums (= ADD_LAT: II 1)
-    static const int ADD_LAT = 4;  // one a line: the second reader resolves them by name
-    static const int MUL_LAT = 3;
-    static const int DIV_LAT = 15, SQRT_LAT = 15;
+    static const int ADD_LAT = 4, MUL_LAT = 3, DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
 };
 
@@ -3059,113 +3195,73 @@ bool eliminate_all(T mu) {
     return cholesky_eliminate_all<LesConfig>(mu);
 }
 
-// ---- back-substitution on two lanes: slot k solves one step on lane BS_LANE[k] (its
-// conditional loaded the slot before) while the next step's conditional loads into the other
-// lane, S xs summed on the way (fgc_backsub.h's cond_load); a step whose separator needs the
-// step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the steps, -1 none)
-const int BS_SLOTS = 9;
-const int BS_SOLVE[BS_SLOTS] = {-1, 6, -1, 4, 5, 2, 3, 0, 1};
-const int BS_LOAD[BS_SLOTS] = {6, -1, 4, 5, 2, 3, 0, 1, -1};
-const int BS_LANE[BS_SLOTS] = {1, 0, 0, 1, 0, 1, 0, 1, 0};
-L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // lane 0's conditional (R | S | d)
+// ---- back-substitution: one unit per unit set, each on its own buffers (a level's steps go
+// 1 at a time to the units, side by side in the backsub_level DATAFLOW region)
+const int BS_WORDS = 2;  // words of each unit's step a copy moves an iteration (PORTS shared out)
+L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // unit 0's conditional (R | S | d)
 L BS_XS0[LesConfig::MAX_COLS];  // its separator's solution
 L BS_X0[MAX_F];  // its frontal solution
-L BS_COND1[MAX_F * LesConfig::MAX_COLS];  // lane 1's conditional (R | S | d)
-L BS_XS1[LesConfig::MAX_COLS];  // its separator's solution
-L BS_X1[MAX_F];  // its frontal solution
 
-// Lane 0's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load
-// left (f = 0: none this time).
+// Back-substitution unit 0: x = R^-1 (d - S xs) of one step (f = 0: none this time).
 void backsub_set0(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
-                  const L part[2][LesConfig::PARTIALS][MAX_F], L x[MAX_F]) {
-    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
-    fgc_units::cond_backsub<LesConfig>(cond, f, s, part, x);
+                  const L xs[LesConfig::MAX_COLS], L x[MAX_F]) {
+    FGC_BRANCH();  // csim cycle counting only: the units of a level run side by side
+    fgc_units::cond_backsub<LesConfig>(cond, f, s, xs, x);
 }
 
-// Lane 0's load: a step's conditional from COND (at off) into the lane's buffer.
-void backsub_load0(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
-                   L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
-    FGC_BRANCH();
-    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
-}
-
-// Lane 1's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load
-// left (f = 0: none this time).
-void backsub_set1(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
-                  const L part[2][LesConfig::PARTIALS][MAX_F], L x[MAX_F]) {
-    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
-    fgc_units::cond_backsub<LesConfig>(cond, f, s, part, x);
-}
-
-// Lane 1's load: a step's conditional from COND (at off) into the lane's buffer.
-void backsub_load1(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
-                   L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
-    FGC_BRANCH();
-    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
-}
-
-// A slot whose solve is on lane 0: that lane's cond_backsub beside lane 1's cond_load.
-void backsub_lane0(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
-                   const L part0[2][LesConfig::PARTIALS][MAX_F], L x0[MAX_F],
-                   int off, int f1, int s1, const L xs1[LesConfig::MAX_COLS],
-                   L cond1[MAX_F * LesConfig::MAX_COLS], L part1[2][LesConfig::PARTIALS][MAX_F]) {
+// One chunk of a level's steps on the 1 back-substitution unit(s) side by side.
+void backsub_level(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
+                   const L xs0[LesConfig::MAX_COLS], L x0[MAX_F]) {
 #pragma HLS DATAFLOW
-    backsub_set0(cond0, f0, s0, part0, x0);
-    backsub_load1(off, f1, s1, xs1, cond1, part1);
+    backsub_set0(cond0, f0, s0, xs0, x0);
 }
 
-// A slot whose solve is on lane 1: that lane's cond_backsub beside lane 0's cond_load.
-void backsub_lane1(const L cond1[MAX_F * LesConfig::MAX_COLS], int f1, int s1,
-                   const L part1[2][LesConfig::PARTIALS][MAX_F], L x1[MAX_F],
-                   int off, int f0, int s0, const L xs0[LesConfig::MAX_COLS],
-                   L cond0[MAX_F * LesConfig::MAX_COLS], L part0[2][LesConfig::PARTIALS][MAX_F]) {
-#pragma HLS DATAFLOW
-    backsub_set1(cond1, f1, s1, part1, x1);
-    backsub_load0(off, f0, s0, xs0, cond0, part0);
-}
-
-// Back-substitution root first, slot by slot: the loaded step's separator solution in from
-// DELTA (PORTS words a cycle), the slot's backsub_lane<p> region, the solved step's frontal
-// solution out into DELTA.
+// Back-substitution root first: per level its steps 1 at a time (LEVEL_STEPS order):
+// their conditionals and separator solutions in side by side (BS_WORDS words of each step an
+// iteration), the backsub_level region, their frontal solutions out into DELTA side by side.
 void back_substitute() {
     FGC_PHASE("backsub");
-    L bs_part0[2][LesConfig::PARTIALS][MAX_F];  // lane 0's partial sums of S xs (word lane, bank, row)
-#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=2
-    L bs_part1[2][LesConfig::PARTIALS][MAX_F];  // lane 1's partial sums of S xs (word lane, bank, row)
-#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=2
-    for (int k = 0; k < BS_SLOTS; ++k) {
-        const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = BS_LOAD[k];
-        const int sf = sv >= 0 ? STEP_F[sv] : 0, ssep = sv >= 0 ? STEP_W[sv] - STEP_F[sv] : 0;
-        const int scb = sv >= 0 ? STEP_COL_BEGIN[sv] : 0;
-        const int lf = ld >= 0 ? STEP_F[ld] : 0, lsep = ld >= 0 ? STEP_W[ld] - STEP_F[ld] : 0;
-        const int lcb = ld >= 0 ? STEP_COL_BEGIN[ld] : 0, off = ld >= 0 ? STEP_COND_OFF[ld] : 0;
-        for (int a = 0; a < lsep; a += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=15
+    for (int l = N_LEVELS - 1; l >= 0; --l) {
+        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 1) {
+#pragma HLS LOOP_TRIPCOUNT max=2
+            const bool has0 = i + 0 < LEVEL_BEGIN[l + 1];
+            const int s0 = has0 ? LEVEL_STEPS[i + 0] : 0;
+            const int f0 = has0 ? STEP_F[s0] : 0;
+            const int sep0 = has0 ? STEP_W[s0] - STEP_F[s0] : 0;
+            const int n0 = f0 * (f0 + sep0 + 1);
+            const int c0 = STEP_COND_OFF[s0], cb0 = STEP_COL_BEGIN[s0];
+            int most = 0, most_sep = 0, most_f = 0;
+            most = n0 > most ? n0 : most;
+            most_sep = sep0 > most_sep ? sep0 : most_sep;
+            most_f = f0 > most_f ? f0 : most_f;
+            // BS_WORDS words of each step an iteration: the memories' PORTS ports shared out
+            for (int e = 0; e < most; e += BS_WORDS) {
+#pragma HLS LOOP_TRIPCOUNT max=465
 #pragma HLS PIPELINE II=1
-            for (int h = 0; h < 2; ++h) {
-                if (a + h < lsep) {
-                    const L v = DELTA[STEP_COL[lcb + lf + a + h]];
-                    if (p == 0) BS_XS1[a + h] = v;
-                    else BS_XS0[a + h] = v;
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (e + h < n0) BS_COND0[e + h] = COND[c0 + e + h];
                 }
             }
-        }
-        FGC_CYCLES("backsub_copy", 0, "separator_in", (lsep + 1) / 2, 1, 2);
-        if (p == 0)
-            backsub_lane0(BS_COND0, sf, ssep, bs_part0, BS_X0, off, lf, lsep, BS_XS1, BS_COND1, bs_part1);
-        else
-            backsub_lane1(BS_COND1, sf, ssep, bs_part1, BS_X1, off, lf, lsep, BS_XS0, BS_COND0, bs_part0);
-        FGC_JOIN();
-        for (int c = 0; c < sf; c += 2) {
+            FGC_CYCLES("backsub_copy", 0, "cond_in", (most + BS_WORDS - 1) / BS_WORDS, 1, 2);
+            for (int a = 0; a < most_sep; a += BS_WORDS) {
 #pragma HLS LOOP_TRIPCOUNT max=15
 #pragma HLS PIPELINE II=1
-            for (int h = 0; h < 2; ++h) {
-                if (c + h < sf) DELTA[STEP_COL[scb + c + h]] = p == 0 ? BS_X0[c + h] : BS_X1[c + h];
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (a + h < sep0) BS_XS0[a + h] = DELTA[STEP_COL[cb0 + f0 + a + h]];
+                }
             }
+            FGC_CYCLES("backsub_copy", 0, "separator_in", (most_sep + BS_WORDS - 1) / BS_WORDS, 1, 2);
+            backsub_level(BS_COND0, f0, sep0, BS_XS0, BS_X0);
+            FGC_JOIN();
+            for (int c = 0; c < most_f; c += BS_WORDS) {
+#pragma HLS LOOP_TRIPCOUNT max=15
+#pragma HLS PIPELINE II=1
+                for (int h = 0; h < BS_WORDS; ++h) {
+                    if (c + h < f0) DELTA[STEP_COL[cb0 + c + h]] = BS_X0[c + h];
+                }
+            }
+            FGC_CYCLES("backsub_copy", 0, "solution_out", (most_f + BS_WORDS - 1) / BS_WORDS, 1, 2);
         }
-        FGC_CYCLES("backsub_copy", 0, "solution_out", (sf + 1) / 2, 1, 2);
     }
 }
 

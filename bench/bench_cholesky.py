@@ -1,0 +1,53 @@
+"""The emitted Cholesky design (issue 33: the HGC streamed from the factor datapaths, the
+assembly, the #CPE cascade) on LIO N=30 (#CPE 5 / 20 / 80) and paper B's imu_window N=50
+(#CPE 5 / 20 / 40 / 80 / 120): per design the plan's cycles per LM iteration and their phase
+groups, ms per iteration and per solve (5 LM iterations, GTSAM's count on imu_window), the
+plan's DSP beside the second reader's (bench_second_reader.measure: the emitted C++ read back),
+BRAM36, the plan's fit verdict on the xc7z045 and the linear solver's share.
+
+    python bench/bench_cholesky.py
+
+Model estimates at 143 MHz, float32 (no vendor tool here).
+"""
+
+from __future__ import annotations
+
+import sys
+import tempfile
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from bench_second_reader import measure  # noqa: E402
+
+from fgc.app.specs import example  # noqa: E402
+from fgc.compile import compile_graph  # noqa: E402
+from fgc.ir.program import SolverConfig  # noqa: E402
+from fgc_backends.hls import HlsConfig  # noqa: E402
+from fgc_backends.hls.emitter import accel_plan  # noqa: E402
+from fgc_backends.hls.plan import plan_cost, plan_groups  # noqa: E402
+
+CASES = [("lio", 30, c) for c in (5, 20, 80)] + [("imu_window", 50, c)
+                                                  for c in (5, 20, 40, 80, 120)]
+GROUPS = ("factor_jacobian", "hgc", "assemble", "cholesky", "backsub")
+
+
+def main() -> None:
+    for ex, n, cpe in CASES:
+        program = compile_graph(example(ex).build(N=n), SolverConfig(
+            method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"{ex}{cpe}")
+        config = HlsConfig(scalar="float")
+        plan = accel_plan(program, config)
+        cost, groups = plan_cost(plan), plan_groups(plan)
+        with tempfile.TemporaryDirectory() as d:
+            read = measure(program, config, Path(d) / "design")
+        ms = cost.cycles / cost.clock_mhz / 1e3
+        print(f"{ex} N={n} #CPE={cpe}: {cost.cycles:,} cycles/iteration, {ms:.3f} ms/iteration, "
+              f"{5 * ms:.2f} ms/solve (5 it.), DSP plan {cost.dsp} reader {read['reader_dsp']}, "
+              f"BRAM36 {cost.bram36}, fits (plan) {cost.fits}, linear share "
+              f"{cost.linear_cycles / cost.cycles:.3f}; "
+              + ", ".join(f"{g} {groups[g]:,}" for g in GROUPS if g in groups), flush=True)
+
+
+if __name__ == "__main__":
+    main()
