@@ -201,7 +201,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     phase = {ph.name: ph for ph in plan.phases}
     # each datapath's instance loop (Cholesky: its Jacobian pass in its linearize_<b> region)
     loops = {p.name: p.loops[0] for ph in plan.phases for p in ph.processes
-             if re.fullmatch(r"factor_\d+_(jacobian|cost)", p.name)}
+             if re.fullmatch(r"factor_(\d+|small)_(jacobian|cost)", p.name)}
     noise = {p.name: p.loops[2] for p in phase["rounding_noise"].processes
              if p.name.startswith("noise_")}
     blocks = []

@@ -364,15 +364,25 @@ def test_allocation_limits_are_the_plans(tmp_path):
     # the factor datapaths per mode (factor_<b>: the Jacobian's, factor_cost_<b>: the cost's
     # operations under the block's limits) and the state update's per variable type
     # (retract_<k>: its unit's operators)
+    from fgc_backends.cfamily.blocks import block_contexts
+    from fgc_backends.hls.units.datapath import small_allocation, small_blocks
     shared = factor_allocation(program, plan.options)
+    small = small_blocks(program)  # LIO's priors and GPS: one shared datapath per mode
+    assert small
     limits_of = {}
     for b, block in enumerate(program.blocks):
+        if b in small:
+            continue
         limits_of[f"factor_{b}"] = dict(mode_allocation(shared[b], block.ops_after))
         limits_of[f"factor_cost_{b}"] = dict(mode_allocation(shared[b], block.ops_cost))
+    contexts = block_contexts(program, vector=False)
+    for function, mode in (("evaluate_small_one", "jacobian"), ("cost_small_one", "cost")):
+        limits_of[function] = dict(small_allocation(program, contexts, plan.options, mode,
+                                                    plan.ops)[0])
     pairs = [(name, None) for name in limits_of]
     pairs += [(f"retract_{u.name.rsplit('_', 1)[1]}", u.name) for u in plan.units
               if u.name.startswith("state_update_")]
-    assert len(pairs) > 2 * len(program.blocks)
+    assert len(pairs) > 2 * (len(program.blocks) - len(small)) + 2
     assert set(found) == {function for function, _ in pairs}
     for function, unit in pairs:
         limits = limits_of[function] if unit is None else dict(plan.unit(unit).operators)

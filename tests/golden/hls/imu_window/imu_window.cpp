@@ -8,9 +8,9 @@
 // -> back-substitution -> state update (retract) -> the factor datapaths (cost mode) -> LM control.
 //
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
-// back_substitute's backsub_level region (backsub_set<u>: one cond_backsub unit per unit set,
-// side by side, no streams between them):
-//   43 processes, 61 streams (cpe=20)
+// back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
+// cond_load, no streams between them):
+//   46 processes, 61 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
 //   process cpe0
@@ -54,6 +54,9 @@
 //   process cpe19
 //   process cpe_drain
 //   process backsub_set0
+//   process backsub_load1
+//   process backsub_set1
+//   process backsub_load0
 //   stream cpe_link0 depth=30: cpe_feed -> cpe_tap0
 //   stream cpe_link1 depth=30: cpe0 -> cpe_tap1
 //   stream cpe_link2 depth=30: cpe1 -> cpe_tap2
@@ -2025,19 +2028,6 @@ void whiten(T raw[], T ab[], const T p[]) {
     }
 }
 
-// sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
-// at the whitened residual norm, as GTSAM does.
-template <int STRIDE, int COLS, int ROWS>
-void reweight(T ab[], T code, T k) {
-    if (code == T(0)) return;
-    T e2 = T(0);
-    for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
-    const T e = fgc_sqrt(e2);
-    const T w = code == T(1) ? (e <= k ? T(1) : T(k / e)) : T(k * k / (k * k + e * e));
-    const T s = fgc_sqrt(w);
-    for (int i = 0; i < ROWS * STRIDE; ++i) ab[i] *= s;
-}
-
 // The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
 // moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
 // |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
@@ -2118,14 +2108,6 @@ bool gradient_from_gram(int g0, const int col[COLS - 1]) {
 // One whitened row of a block type as evaluate_<b> streams it to its HGC (reduce_<b>) in the
 // linearize_<b> region: a word per column of the widest block type's padded row.
 struct GramRow { T word[32]; };
-
-// rho(e) at e = sqrt(2 half): the cost of one member (plain half when not robust).
-T robust_loss(T half, T code, T k) {
-    if (code == T(0)) return half;
-    const T e = fgc_sqrt(T(2) * half);
-    if (code == T(1)) return e <= k ? half : T(k * e - T(0.5) * k * k);
-    return T(0.5) * k * k * fgc_log1p(e * e / (k * k));
-}
 
 // block 0: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_0(const T x[N_X], int f, T in[42], T dat[193]) {
@@ -2385,7 +2367,6 @@ void evaluate_0(const T x[N_X], hls::stream<GramRow>& rows) {
         factor_0(in, dat, raw);
         whiten<32, 31, 15, 2, 9>(raw + 0, ab + 0, dat + 73);
         whiten_tail_0_0(raw + 0, ab + 0, dat + 73);
-        reweight<32, 31, 15>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 193], DATA_BUF[FACTOR_DATA_OFF[f] + 194]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 15; ++r) {
             for (int c = 0; c < 31; ++c) AB[a0 + r * 31 + c] = ab[r * 32 + c];
@@ -2554,19 +2535,19 @@ T noise_0(T noise) {
     return noise;
 }
 
-// block 0, cost mode: `total` plus the cost of its instances in order, one every II=98 cycles
+// block 0, cost mode: `total` plus the cost of its instances in order, one every II=97 cycles
 T cost_of_0(const T x[N_X], T total) {
     for (int i = 0; i < 7; ++i) {
-#pragma HLS PIPELINE II=98
+#pragma HLS PIPELINE II=97
         const int f = BLOCK0_INSTANCES[i];
         T in[42], dat[193], half[1];
         gather_0(x, f, in, dat);
         factor_cost_0(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 193], DATA_BUF[FACTOR_DATA_OFF[f] + 194]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
-    FGC_CYCLES("factor_0_cost", 0, "instances", 7, 98, 596);
+    FGC_CYCLES("factor_0_cost", 0, "instances", 7, 97, 596);
     return total;
 }
 
@@ -2592,7 +2573,6 @@ void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
         for (int c = 0; c < 48; ++c) raw[c] = T(0);
         factor_1(in, dat, raw);
         whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 12);
-        reweight<8, 7, 6>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
@@ -2702,7 +2682,7 @@ T cost_of_1(const T x[N_X], T total) {
         gather_1(x, f, in, dat);
         factor_cost_1(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 13], DATA_BUF[FACTOR_DATA_OFF[f] + 14]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
     FGC_CYCLES("factor_1_cost", 0, "instances", 1, 48, 377);
@@ -2731,7 +2711,6 @@ void evaluate_2(const T x[N_X], hls::stream<GramRow>& rows) {
         for (int c = 0; c < 12; ++c) raw[c] = T(0);
         factor_2(in, dat, raw);
         whiten<4, 4, 3, 0, 3>(raw + 0, ab + 0, dat + 3);
-        reweight<4, 4, 3>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 3; ++r) {
             for (int c = 0; c < 4; ++c) AB[a0 + r * 4 + c] = ab[r * 4 + c];
@@ -2839,7 +2818,7 @@ T cost_of_2(const T x[N_X], T total) {
         gather_2(x, f, in, dat);
         factor_cost_2(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 4], DATA_BUF[FACTOR_DATA_OFF[f] + 5]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
     FGC_CYCLES("factor_2_cost", 0, "instances", 1, 4, 18);
@@ -2868,7 +2847,6 @@ void evaluate_3(const T x[N_X], hls::stream<GramRow>& rows) {
         for (int c = 0; c < 48; ++c) raw[c] = T(0);
         factor_3(in, dat, raw);
         whiten<8, 7, 6, 0, 6>(raw + 0, ab + 0, dat + 6);
-        reweight<8, 7, 6>(ab + 0, DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
         const int a0 = FACTOR_A_OFF[f];
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
@@ -2976,7 +2954,7 @@ T cost_of_3(const T x[N_X], T total) {
         gather_3(x, f, in, dat);
         factor_cost_3(in, dat, half);
         T cost = T(0);
-        cost += robust_loss(half[0], DATA_BUF[FACTOR_DATA_OFF[f] + 7], DATA_BUF[FACTOR_DATA_OFF[f] + 8]);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
     FGC_CYCLES("factor_3_cost", 0, "instances", 1, 5, 22);
@@ -3176,7 +3154,9 @@ struct LesConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int SCATTER_II = 1, SCATTER_DEPTH = 6;
     static const int PARTIALS = 4;  // interleaved partial sums (= ADD_LAT: II 1)
-    static const int ADD_LAT = 4, MUL_LAT = 3, DIV_LAT = 15, SQRT_LAT = 15;
+    static const int ADD_LAT = 4;  // one a line: the second reader resolves them by name
+    static const int MUL_LAT = 3;
+    static const int DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
 };
 
@@ -3195,73 +3175,113 @@ bool eliminate_all(T mu) {
     return cholesky_eliminate_all<LesConfig>(mu);
 }
 
-// ---- back-substitution: one unit per unit set, each on its own buffers (a level's steps go
-// 1 at a time to the units, side by side in the backsub_level DATAFLOW region)
-const int BS_WORDS = 2;  // words of each unit's step a copy moves an iteration (PORTS shared out)
-L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // unit 0's conditional (R | S | d)
+// ---- back-substitution on two lanes: slot k solves one step on lane BS_LANE[k] (its
+// conditional loaded the slot before) while the next step's conditional loads into the other
+// lane, S xs summed on the way (fgc_backsub.h's cond_load); a step whose separator needs the
+// step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the steps, -1 none)
+const int BS_SLOTS = 9;
+const int BS_SOLVE[BS_SLOTS] = {-1, 6, -1, 4, 5, 2, 3, 0, 1};
+const int BS_LOAD[BS_SLOTS] = {6, -1, 4, 5, 2, 3, 0, 1, -1};
+const int BS_LANE[BS_SLOTS] = {1, 0, 0, 1, 0, 1, 0, 1, 0};
+L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // lane 0's conditional (R | S | d)
 L BS_XS0[LesConfig::MAX_COLS];  // its separator's solution
 L BS_X0[MAX_F];  // its frontal solution
+L BS_COND1[MAX_F * LesConfig::MAX_COLS];  // lane 1's conditional (R | S | d)
+L BS_XS1[LesConfig::MAX_COLS];  // its separator's solution
+L BS_X1[MAX_F];  // its frontal solution
 
-// Back-substitution unit 0: x = R^-1 (d - S xs) of one step (f = 0: none this time).
+// Lane 0's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load
+// left (f = 0: none this time).
 void backsub_set0(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
-                  const L xs[LesConfig::MAX_COLS], L x[MAX_F]) {
-    FGC_BRANCH();  // csim cycle counting only: the units of a level run side by side
-    fgc_units::cond_backsub<LesConfig>(cond, f, s, xs, x);
+                  const L part[2][LesConfig::PARTIALS][MAX_F], L x[MAX_F]) {
+    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
+    fgc_units::cond_backsub<LesConfig>(cond, f, s, part, x);
 }
 
-// One chunk of a level's steps on the 1 back-substitution unit(s) side by side.
-void backsub_level(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
-                   const L xs0[LesConfig::MAX_COLS], L x0[MAX_F]) {
+// Lane 0's load: a step's conditional from COND (at off) into the lane's buffer.
+void backsub_load0(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
+                   L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
+    FGC_BRANCH();
+    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
+}
+
+// Lane 1's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load
+// left (f = 0: none this time).
+void backsub_set1(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
+                  const L part[2][LesConfig::PARTIALS][MAX_F], L x[MAX_F]) {
+    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
+    fgc_units::cond_backsub<LesConfig>(cond, f, s, part, x);
+}
+
+// Lane 1's load: a step's conditional from COND (at off) into the lane's buffer.
+void backsub_load1(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
+                   L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
+    FGC_BRANCH();
+    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
+}
+
+// A slot whose solve is on lane 0: that lane's cond_backsub beside lane 1's cond_load.
+void backsub_lane0(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
+                   const L part0[2][LesConfig::PARTIALS][MAX_F], L x0[MAX_F],
+                   int off, int f1, int s1, const L xs1[LesConfig::MAX_COLS],
+                   L cond1[MAX_F * LesConfig::MAX_COLS], L part1[2][LesConfig::PARTIALS][MAX_F]) {
 #pragma HLS DATAFLOW
-    backsub_set0(cond0, f0, s0, xs0, x0);
+    backsub_set0(cond0, f0, s0, part0, x0);
+    backsub_load1(off, f1, s1, xs1, cond1, part1);
 }
 
-// Back-substitution root first: per level its steps 1 at a time (LEVEL_STEPS order):
-// their conditionals and separator solutions in side by side (BS_WORDS words of each step an
-// iteration), the backsub_level region, their frontal solutions out into DELTA side by side.
+// A slot whose solve is on lane 1: that lane's cond_backsub beside lane 0's cond_load.
+void backsub_lane1(const L cond1[MAX_F * LesConfig::MAX_COLS], int f1, int s1,
+                   const L part1[2][LesConfig::PARTIALS][MAX_F], L x1[MAX_F],
+                   int off, int f0, int s0, const L xs0[LesConfig::MAX_COLS],
+                   L cond0[MAX_F * LesConfig::MAX_COLS], L part0[2][LesConfig::PARTIALS][MAX_F]) {
+#pragma HLS DATAFLOW
+    backsub_set1(cond1, f1, s1, part1, x1);
+    backsub_load0(off, f0, s0, xs0, cond0, part0);
+}
+
+// Back-substitution root first, slot by slot: the loaded step's separator solution in from
+// DELTA (PORTS words a cycle), the slot's backsub_lane<p> region, the solved step's frontal
+// solution out into DELTA.
 void back_substitute() {
     FGC_PHASE("backsub");
-    for (int l = N_LEVELS - 1; l >= 0; --l) {
-        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += 1) {
-#pragma HLS LOOP_TRIPCOUNT max=2
-            const bool has0 = i + 0 < LEVEL_BEGIN[l + 1];
-            const int s0 = has0 ? LEVEL_STEPS[i + 0] : 0;
-            const int f0 = has0 ? STEP_F[s0] : 0;
-            const int sep0 = has0 ? STEP_W[s0] - STEP_F[s0] : 0;
-            const int n0 = f0 * (f0 + sep0 + 1);
-            const int c0 = STEP_COND_OFF[s0], cb0 = STEP_COL_BEGIN[s0];
-            int most = 0, most_sep = 0, most_f = 0;
-            most = n0 > most ? n0 : most;
-            most_sep = sep0 > most_sep ? sep0 : most_sep;
-            most_f = f0 > most_f ? f0 : most_f;
-            // BS_WORDS words of each step an iteration: the memories' PORTS ports shared out
-            for (int e = 0; e < most; e += BS_WORDS) {
-#pragma HLS LOOP_TRIPCOUNT max=465
-#pragma HLS PIPELINE II=1
-                for (int h = 0; h < BS_WORDS; ++h) {
-                    if (e + h < n0) BS_COND0[e + h] = COND[c0 + e + h];
-                }
-            }
-            FGC_CYCLES("backsub_copy", 0, "cond_in", (most + BS_WORDS - 1) / BS_WORDS, 1, 2);
-            for (int a = 0; a < most_sep; a += BS_WORDS) {
+    L bs_part0[2][LesConfig::PARTIALS][MAX_F];  // lane 0's partial sums of S xs (word lane, bank, row)
+#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=2
+    L bs_part1[2][LesConfig::PARTIALS][MAX_F];  // lane 1's partial sums of S xs (word lane, bank, row)
+#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=2
+    for (int k = 0; k < BS_SLOTS; ++k) {
+        const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = BS_LOAD[k];
+        const int sf = sv >= 0 ? STEP_F[sv] : 0, ssep = sv >= 0 ? STEP_W[sv] - STEP_F[sv] : 0;
+        const int scb = sv >= 0 ? STEP_COL_BEGIN[sv] : 0;
+        const int lf = ld >= 0 ? STEP_F[ld] : 0, lsep = ld >= 0 ? STEP_W[ld] - STEP_F[ld] : 0;
+        const int lcb = ld >= 0 ? STEP_COL_BEGIN[ld] : 0, off = ld >= 0 ? STEP_COND_OFF[ld] : 0;
+        for (int a = 0; a < lsep; a += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=15
 #pragma HLS PIPELINE II=1
-                for (int h = 0; h < BS_WORDS; ++h) {
-                    if (a + h < sep0) BS_XS0[a + h] = DELTA[STEP_COL[cb0 + f0 + a + h]];
+            for (int h = 0; h < 2; ++h) {
+                if (a + h < lsep) {
+                    const L v = DELTA[STEP_COL[lcb + lf + a + h]];
+                    if (p == 0) BS_XS1[a + h] = v;
+                    else BS_XS0[a + h] = v;
                 }
             }
-            FGC_CYCLES("backsub_copy", 0, "separator_in", (most_sep + BS_WORDS - 1) / BS_WORDS, 1, 2);
-            backsub_level(BS_COND0, f0, sep0, BS_XS0, BS_X0);
-            FGC_JOIN();
-            for (int c = 0; c < most_f; c += BS_WORDS) {
-#pragma HLS LOOP_TRIPCOUNT max=15
-#pragma HLS PIPELINE II=1
-                for (int h = 0; h < BS_WORDS; ++h) {
-                    if (c + h < f0) DELTA[STEP_COL[cb0 + c + h]] = BS_X0[c + h];
-                }
-            }
-            FGC_CYCLES("backsub_copy", 0, "solution_out", (most_f + BS_WORDS - 1) / BS_WORDS, 1, 2);
         }
+        FGC_CYCLES("backsub_copy", 0, "separator_in", (lsep + 1) / 2, 1, 2);
+        if (p == 0)
+            backsub_lane0(BS_COND0, sf, ssep, bs_part0, BS_X0, off, lf, lsep, BS_XS1, BS_COND1, bs_part1);
+        else
+            backsub_lane1(BS_COND1, sf, ssep, bs_part1, BS_X1, off, lf, lsep, BS_XS0, BS_COND0, bs_part0);
+        FGC_JOIN();
+        for (int c = 0; c < sf; c += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=15
+#pragma HLS PIPELINE II=1
+            for (int h = 0; h < 2; ++h) {
+                if (c + h < sf) DELTA[STEP_COL[scb + c + h]] = p == 0 ? BS_X0[c + h] : BS_X1[c + h];
+            }
+        }
+        FGC_CYCLES("backsub_copy", 0, "solution_out", (sf + 1) / 2, 1, 2);
     }
 }
 

@@ -2287,7 +2287,7 @@ void whiten(T* raw, T* ab, const T* p) {
 // sqrt(w) * the whitened rows of one member: w reweights a robust loss (CODE 1 Huber, 2 Cauchy)
 // at the whitened residual norm, as GTSAM does.
 template <int STRIDE, int COLS, int ROWS>
-void reweight(T* ab, T code, T k) {
+void reweight(T ab[], T code, T k) {
     if (code == T(0)) return;
     T e2 = T(0);
     for (int i = 0; i < ROWS; ++i) e2 += ab[i * STRIDE + COLS - 1] * ab[i * STRIDE + COLS - 1];
@@ -2473,7 +2473,7 @@ const V* gather_0(const T* x, int first, bool cost, V in[235]) {
 
 // block 0, member 0: its rows 9 ... 14 of 15 hold only 0 and +-1 left of the right-hand side;
 // their share of the whitened rows, row by row in order: +-R_ij at j's constant entries, R_ij b_j
-void whiten_tail_0_0(const T* raw, T* ab, const T* p) {
+void whiten_tail_0_0(const T raw[], T ab[], const T p[]) {
     ab[18] += p[9];
     ab[24] -= p[9];
     ab[30] += p[9] * raw[318];
@@ -3375,21 +3375,26 @@ FGC_INLINE void wv_store(T* p, const WV& v) { std::memcpy(p, &v, sizeof v); }
 // returns where it stopped.
 template <int LD, int R, int NV>
 FGC_INLINE int wide_rows_update(T (*H)[LD], const T (*P)[LD], int n, int i, int c0, int end) {
-    for (; c0 + NV * WL <= end; c0 += NV * WL) {
-        WV h[R][NV];
-        for (int r = 0; r < R; ++r) {
-            for (int v = 0; v < NV; ++v) h[r][v] = wv_load(&H[i + r][c0 + v * WL]);
-        }
-        for (int k = 0; k < n; ++k) {
-            WV p[NV];
-            for (int v = 0; v < NV; ++v) p[v] = wv_load(&P[k][c0 + v * WL]);
+    // a row narrower than NV vectors never takes this path (end <= LD): not instantiated, so
+    // g++ does not see accesses past a small H (-Werror=array-bounds)
+    if constexpr (NV * WL <= LD) {
+        if (end > LD) end = LD;  // never (end is a row's width), but it bounds the loads for g++
+        for (; c0 + NV * WL <= end; c0 += NV * WL) {
+            WV h[R][NV];
             for (int r = 0; r < R; ++r) {
-                const T u = P[k][i + r];
-                for (int v = 0; v < NV; ++v) h[r][v] -= u * p[v];
+                for (int v = 0; v < NV; ++v) h[r][v] = wv_load(&H[i + r][c0 + v * WL]);
             }
-        }
-        for (int r = 0; r < R; ++r) {
-            for (int v = 0; v < NV; ++v) wv_store(&H[i + r][c0 + v * WL], h[r][v]);
+            for (int k = 0; k < n; ++k) {
+                WV p[NV];
+                for (int v = 0; v < NV; ++v) p[v] = wv_load(&P[k][c0 + v * WL]);
+                for (int r = 0; r < R; ++r) {
+                    const T u = P[k][i + r];
+                    for (int v = 0; v < NV; ++v) h[r][v] -= u * p[v];
+                }
+            }
+            for (int r = 0; r < R; ++r) {
+                for (int v = 0; v < NV; ++v) wv_store(&H[i + r][c0 + v * WL], h[r][v]);
+            }
         }
     }
     return c0;
