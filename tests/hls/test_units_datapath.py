@@ -187,7 +187,11 @@ def lio_small():
     g.add(PriorFactor("b0", ImuBias(np.zeros(6)), fgc.noise.isotropic(6, 0.1)))
     for dx in (0.0, 0.1):
         g.add(GPSFactor("x0", np.r_[1.0 + dx, 2.0, 3.0], fgc.noise.isotropic(3, 0.5)))
-    return compile_graph(g, SOLVER, name="lio")
+    # a QR design: a Cholesky design's datapaths each stream to their own HGC and share none
+    cholesky = compile_graph(g, SOLVER, name="lio")
+    from fgc_backends.hls.units import datapath
+    assert datapath.small_blocks(cholesky) == ()
+    return compile_graph(g, SolverConfig(linear="qr", units=1), name="lio")
 
 
 def _plan(program):
