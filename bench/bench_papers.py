@@ -295,10 +295,10 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                 + ("fits" if res["fits"] else "does not fit") + f" the {res['part']} by the plan",
                 "the update's price is the plan's (model estimates: the iterations the "
                 "simulator ran, each priced as the emitted design runs it); the on-chip design "
-                "is not searched nor read by the second reader (two kernels and the stream "
-                "section: the reader reads one synthesis top), so its fit is the plan's - the "
-                "batch search above shows the reader's DSP of a LIO kernel alone exceeds the "
-                "plan's severalfold")]
+                "is not searched, and its fit here is the plan's (the second reader reads its "
+                "two kernels and stream section, reader.read_design, but this row does not "
+                "emit it); its window and batch kernels each carry their own units (one set "
+                "of units for both is not built: docs/hls.md)")]
 
 
 def paper_b(cfg: Config) -> list[Row]:
