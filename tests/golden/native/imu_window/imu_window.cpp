@@ -3260,6 +3260,12 @@ void retract_all(const T* x, const T* delta, T* out) {
     }
 }
 
+// g++ -O3 inlines the factorisation into LM's loop and then warns about register-block rows
+// past the end of a small front's H on paths its loop bounds never take (fronts narrower than
+// a TILE block: a 4-pose graph's 3 x 4 H); -Warray-bounds is off for this part alone (the
+// float64 simulator checks its numbers, tests/native)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Warray-bounds"
 // The factored frontal matrix out: rows 0 ... f - 1 as the step's conditional (R | S | d), after
 // checking each pivot against the block's largest entry, and the separator's rows as the update
 // matrix for the parent. Rows go as they are: left of the diagonal they may hold leftovers that no
@@ -3686,6 +3692,9 @@ bool eliminate_step(int s, T mu) {
     // triangle), and a zeroing of MAX_LD columns per row cost more than the factorisation of a
     // graph's many narrow steps when one step is wide (sphere2500: 594 columns)
     const int end = (w + TILE) / TILE * TILE;
+    // never taken (the tables' widths), but it bounds the zeroing for g++, which otherwise turns
+    // it into memsets it cannot prove inside a small H (-Werror=array-bounds)
+    if (w > MAX_W || end > MAX_LD) return false;
     for (int i = 0; i < w; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=30
         for (int c = i - i % TILE; c < end; ++c) H[i][c] = T(0);
@@ -5039,6 +5048,7 @@ bool eliminate_pattern_1(int s, T mu) {
     H[14][30] += op1[239];
     return cholesky_frontal_fixed<30, 15, 32>(H, s, mu);
 }
+#pragma GCC diagnostic pop
 
 // One step through its specialised routine, or the generic one.
 template <int U>
