@@ -603,16 +603,18 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
 // ---- the step ---------------------------------------------------------------------------------
 
 // After the reflections (qr_step, fgc_qr_stream.h's qrs_step): true if k < f or a frontal pivot
-// |R_ii| of cond (w + 1 = cols columns) is not above CFG::SINGULAR_EPS * scale.
-// Trip f, II 1, depth 2 (read, compare).
+// |R_ii| of cond (w + 1 = cols columns) is not above CFG::SINGULAR_EPS * scale (that product
+// once, before the loop: one multiplier in sequential code). Trip f, II 1, depth 2 (read,
+// compare).
 template <class CFG>
 bool qr_pivot_check(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int cols,
                     int k, typename CFG::T scale) {
     bool bad = k < f;
+    const typename CFG::T least = CFG::SINGULAR_EPS * scale;
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
-        if (i >= k || !(qr_abs(cond[i * cols + i]) > CFG::SINGULAR_EPS * scale)) bad = true;
+        if (i >= k || !(qr_abs(cond[i * cols + i]) > least)) bad = true;
     }
     FGC_CYCLES("qr_pivot_check", 0, "pivot_check", f, 1, 2);
     return bad;

@@ -12,6 +12,7 @@ from fgc_backends.hls.lint.cxx import (
     _split_top,
     statement_end,
 )
+from fgc_backends.hls.reader.expr import ExpressionTyper
 from fgc_backends.hls.reader.scope import _Scope
 from fgc_backends.hls.reader.text import (
     _CALL,
@@ -54,11 +55,16 @@ class _Counter(_Scope):
                 if _pipelined(body):
                     continue  # its own pipelined loop: read on its own
                 values = self._iterations(header, env) if len(header) == 3 else None
+                # the condition's floating-point operators, evaluated every iteration
+                test = _Count(ops=self._typer(scope).operators(header[1])) \
+                    if len(header) == 3 else _Count()
                 if values is None:
                     trips = self._tripcount(body, env) or 1
                     total.add(self.count(body, scope, env, loop_var, outer, depth), trips)
+                    total.add(test, trips)
                     continue
                 var, seq = values
+                total.add(test, len(seq))
                 if re.search(rf"\b(?:for|if)\s*\([^)]*\b{var}\b", body):
                     for value in seq:  # the body's shape moves with the variable: unroll it
                         total.add(self.count(body, scope, {**env, var: value}, loop_var,
@@ -178,6 +184,8 @@ class _Counter(_Scope):
                 out.recurrences.add(scalar.group(1))
         if self._float_statement(stmt, scope):
             out.ops += self._operators(stmt)
+        else:  # a condition, a call's arguments, an integer's initialiser: typed operands
+            out.ops += self._typer(scope).operators(stmt)
         for m in _CALL.finditer(stmt) if self.flatten else ():
             found = self.resolve(stmt, m, env)
             if found is None or depth > 24:
@@ -186,6 +194,27 @@ class _Counter(_Scope):
             args = _split_top(stmt[m.end():close])
             out.add(self.call(found[0], found[1], args, scope, outer, depth + 1))
         return out
+
+    def _typer(self, scope: dict) -> ExpressionTyper:
+        def is_float(name: str, indices: int) -> bool:
+            var = self._lookup(name, scope)
+            return var is not None and var.is_float and indices >= len(var.dims)
+
+        return ExpressionTyper(is_float, self._float_call)
+
+    def _float_call(self, name: str) -> bool:
+        """Whether the project function (or struct member) ``name`` returns a floating-point
+        value."""
+        f = self.local.get(self.where, {}).get(name) or self.functions.get(name)
+        if f is None:
+            if not hasattr(self, "_member_rets"):
+                self._member_rets: dict[str, str] = {}
+                for qual, variants in self.members.items():
+                    self._member_rets.setdefault(qual.split("::")[-1], variants[0][1].ret)
+            ret = self._member_rets.get(name)
+        else:
+            ret = f.ret
+        return ret is not None and re.search(rf"\b{FLOAT_TYPES}\b", ret) is not None
 
     def _float_statement(self, stmt: str, scope: dict) -> bool:
         decl = _DECL.match(stmt + ";")
@@ -215,7 +244,8 @@ class _Counter(_Scope):
         if compound:
             ops[{"+": "add", "-": "add", "*": "mul", "/": "div"}[compound.group(1)]] += 1
         body = text.split("=", 1)[1] if re.search(r"[^=!<>]=[^=]", text) else text
-        ops["mul"] += len(re.findall(r"(?<=[\w)\]\s])\*(?!=)", body))
+        # a multiply follows an operand (``= *scale`` dereferences a pointer)
+        ops["mul"] += len(re.findall(r"(?<=[\w)\]])\s*\*(?!=)", body))
         ops["div"] += len(re.findall(r"/(?!=)", body))
         ops["add"] += len(re.findall(r"(?<=[\w)\]])\s*[-+](?![-+=>])", body))
         return +ops

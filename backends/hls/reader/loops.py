@@ -134,6 +134,7 @@ class _Reader(_Counter):
             if value is not None:
                 env[c.group(1)] = value
         count = self.count(body, scope, env, var.group(1) if var else None, outer)
+        count.ops += self._typer(scope).operators(header.group(2))  # its condition's operators
         limits = self.allocation(f.text)
         instances: Counter = Counter()
         for kind, n in count.ops.items():

@@ -121,16 +121,19 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
 
 
 def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[BoundLoop, ...]]:
-    """The operators of one unit set's Evaluate (qr_evaluate, qr_finish) and of one Update
-    unit (qr_update<CFG, U>) as Vitis binds fgc_qr.h's text: each pipelined loop its own
-    operators at its II (``fold_scale``, at II P - 1, folds ``fold_partials<P>``'s P - 1 adds
-    on one adder beside its multiplier), the sequential code one operator of each kind it uses. qr_step's two parity
-    call sites of qr_reflection share one instance (its ALLOCATION function limit=1), so each
-    unit is one RTL copy. ``partials``: CFG::PARTIALS."""
+    """The operators of one unit set's Evaluate (qr_evaluate, qr_finish, and qr_pivot_check's
+    threshold) and of one Update unit (qr_update<CFG, U>) as Vitis binds fgc_qr.h's text: each
+    pipelined loop its own operators at its II (``fold_scale``, at II P - 1, folds
+    ``fold_partials<P>``'s P - 1 adds on one adder beside its multiplier), the sequential code
+    one operator of each kind it uses. qr_step's two parity call sites of qr_reflection share
+    one instance (its ALLOCATION function limit=1), so each unit is one RTL copy.
+    ``partials``: CFG::PARTIALS."""
     p = partials
     evaluate = (BoundLoop("receive_norm", (("add", 1), ("mul", 1)), 1),
                 BoundLoop("fold", (("add", p - 1),), 0),  # fold_partials<P>, sequential
-                BoundLoop("qr_finish", (("add", 2), ("mul", 1), ("div", 1), ("sqrt", 1)), 0))
+                BoundLoop("qr_finish", (("add", 2), ("mul", 1), ("div", 1), ("sqrt", 1)), 0),
+                # qr_pivot_check's threshold SINGULAR_EPS * scale, before its loop
+                BoundLoop("pivot_check", (("mul", 1),), 0))
     update = (BoundLoop("vector_dot", (("add", 1), ("mul", 1)), 1),
               BoundLoop("axpy_next_column", (("add", 1), ("mul", 1)), 1),
               BoundLoop("dots", (("add", 1), ("mul", 1)), 1),

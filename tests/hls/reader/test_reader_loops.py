@@ -260,3 +260,66 @@ def test_only_the_branch_the_template_takes_is_built():
                                                                ADD_LATENCY)}
     assert dict(loops[2].ops) == {"add": 1, "mul": 1}
     assert dict(loops[0].ops) == {"mul": 1}
+
+
+HIDDEN = """
+typedef float T;
+const int N = 64;
+T norm(T a, T b) { return a * a + b * b; }
+void gate(const T x[N], const T y[N], T eps, T out[N], hls::stream<T>& s, bool hit[N]) {
+    for (int i = 0; i < N; ++i) {
+#pragma HLS PIPELINE II=1
+        %BODY%
+    }
+}
+void top(const T x[N], const T y[N], T eps, T out[N], hls::stream<T>& s, bool hit[N]) {
+    gate(x, y, eps, out, s, hit);
+}
+"""
+
+
+@pytest.mark.parametrize("body, ops", [
+    # an if condition: two multiplies decide the branch (a float compare binds no DSP)
+    ("if (x[i] * y[i] > eps * eps) out[i] = x[i]; else out[i] = y[i];", {"mul": 2}),
+    # a ternary's condition inside a call's argument (a stream write)
+    ("s.write(x[i] - y[i] > eps ? x[i] * T(2) : y[i]);", {"add": 1, "mul": 1}),
+    # a boolean's initialiser
+    ("const bool big = x[i] * x[i] + y[i] * y[i] > eps; hit[i] = big;", {"add": 1, "mul": 2}),
+    # a float-returning call compared: its operators in the callee, read in place
+    ("hit[i] = norm(x[i], y[i]) > eps;", {"add": 1, "mul": 2}),
+    # integer arithmetic in a condition binds no floating-point operator
+    ("if (i * 3 + 1 < N) out[i] = x[i];", {}),
+])
+def test_operators_outside_a_float_statement_are_read(body, ops):
+    """Conditions, a ternary inside a call's arguments, a boolean's initialiser: a float
+    operator there is an operator Vitis binds in the pipelined loop at II 1, and the plan must
+    price it (the reader counted only float statements and missed them: check_dsp passed a
+    plan of 0 DSP)."""
+    text = HIDDEN.replace("%BODY%", body)
+    design = read_design([("hidden.cpp", text)], "top", ADD_LATENCY)
+    (loop,) = design.loops
+    assert dict(loop.instances) == ops
+    need = sum(n * DSP[k] for k, n in ops.items())
+    assert design.dsp(DSP) == need
+    assert bool(check_dsp(design, plan_dsp=0, dsp_of=DSP)) == (need > 0)
+
+
+LOOP_CONDITION = """
+typedef float T;
+void scan(const T x[64], T eps, int out[1]) {
+    int k = 0;
+    for (int i = 0; i < 64 && x[i] * x[i] > eps; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=64
+#pragma HLS PIPELINE II=1
+        k += 1;
+    }
+    out[0] = k;
+}
+void top(const T x[64], T eps, int out[1]) { scan(x, eps, out); }
+"""
+
+
+def test_a_pipelined_loops_own_condition_is_read():
+    """The multiply in a pipelined loop's condition runs every iteration: one multiplier."""
+    (loop,) = read_project([("cond.cpp", LOOP_CONDITION)], ADD_LATENCY)
+    assert dict(loop.instances) == {"mul": 1}
