@@ -1590,6 +1590,7 @@ struct LmConfig {
     static const int PARTIALS = T_PARTIALS, ADD_LAT = T_ADD_LAT, MUL_LAT = T_MUL_LAT;
     static const int MAXIMA = T_MAXIMA, CMP_LAT = T_CMP_LAT, ABS_LAT = T_ABS_LAT;
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
+    static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
     static T x_norm() { return fgc_units::lm_x_norm<LmConfig>(X); }
     static bool step_test(bool solved, T mu, T out[2]) {
@@ -1611,23 +1612,5 @@ void pose_graph_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=errors
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
-    FGC_EVENT("call");
-    FGC_PHASE("setup");
-    for (int i = 0; i < fgc::N_X; ++i) {
-#pragma HLS PIPELINE II=1
-        fgc::X[i] = x_in[i];
-    }
-    for (int i = 0; i < fgc::N_DATA; ++i) {
-#pragma HLS PIPELINE II=1
-        fgc::DATA_BUF[i] = data[i];
-    }
-    FGC_CYCLES("top", 0, "x_in", fgc::N_X, 1, 2);
-    FGC_CYCLES("top", 0, "data_in", fgc::N_DATA, 1, 2);
-    fgc_lm::optimize<fgc::LmConfig>(errors, info);
-    FGC_PHASE("setup");
-    for (int i = 0; i < fgc::N_X; ++i) {
-#pragma HLS PIPELINE II=1
-        x_out[i] = fgc::X[i];
-    }
-    FGC_CYCLES("top", 0, "x_out", fgc::N_X, 1, 2);
+    fgc_units::lm_top<fgc::LmConfig>(x_in, data, x_out, fgc::X, fgc::DATA_BUF, errors, info);
 }
