@@ -125,6 +125,18 @@ inline int cpe_words(int first, int w) {
     return m > 0 ? m * (m + 1) / 2 + m : 0;
 }
 
+// Round 0's input: a step's words in the feed's order, two a word of the stream (the assembly
+// reads two columns of a row a cycle): row i's words i, i + 1 | i + 2, i + 3 | ..., a row of an
+// odd count ending in a pair whose hi the feed never reads.
+template <class T>
+struct cpe_pair {
+    T lo, hi;
+};
+
+// Pairs of rows 0 ... w - 1 (row i: w + 1 - i words, ceil of half of them pairs): the sum of
+// floor(k / 2) over k = 3 ... w + 2, floor((w + 2)^2 / 4) - 1.
+inline int cpe_pairs(int w) { return (w + 2) * (w + 2) / 4 - 1; }
+
 // The cycles CPE K waits for r = 1 / d: the tap sends r Ld + 2 cycles after the pivot passes
 // it, and the CPE needs it after the pivot's row (row words w + 1 - p).
 template <class CFG>
@@ -134,22 +146,34 @@ inline int cpe_wait(int p, int w) {
 }
 
 // Stream rows p0 ... w - 1 (upper triangle and gradient; dmu added on the diagonal of rows
-// i < f), clearing each word read, then the status word.
+// i < f), then the status word: round 0 (first, p0 = 0) reads them from src, the pairs the
+// assembly streams in this order (fgc_eliminate.h's cholesky_assembler), a pair at a row's
+// even offsets; a later round reads them from Hin, the rows the round before left, clearing
+// each word read.
 template <class CFG>
-void cpe_feed(typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int w, int f,
+void cpe_feed(hls::stream<cpe_pair<typename CFG::T> >& src, bool first,
+              typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int w, int f,
               typename CFG::T dmu, hls::stream<typename CFG::T>& out) {
     typedef typename CFG::T T;
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int words = cpe_words(p0, w);
     int i = p0, c = p0;
-    // trip m (m + 1) / 2 + m, II 1, depth La + 2 (read, add, write); each word read then cleared
-    // (one read and one write a cycle: the two ports), a word no other iteration touches
+    cpe_pair<T> pair = {T(0), T(0)};
+    // trip m (m + 1) / 2 + m, II 1, depth La + 2 (read, add, write); a word of Hin read then
+    // cleared (one read and one write a cycle: the two ports), a word no other iteration touches
     for (int t = 0; t < words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=Hin inter false
-        const T x = Hin[i][c];
-        Hin[i][c] = T(0);
+        T x;
+        if (first) {
+            const bool even = ((c - i) & 1) == 0;
+            if (even) pair = src.read();
+            x = even ? pair.lo : pair.hi;
+        } else {
+            x = Hin[i][c];
+            Hin[i][c] = T(0);
+        }
         out.write(x + (c == i && i < f ? dmu : T(0)));
         if (c == w) {
             ++i;
@@ -312,8 +336,8 @@ void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
 
 // One round of N_CPE pivots from p0: the DATAFLOW region (see the top of the file).
 template <class CFG>
-void cpe_round(int p0, int w, int f, typename CFG::T dmu,
-               typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS],
+void cpe_round(hls::stream<cpe_pair<typename CFG::T> >& src, bool first, int p0, int w, int f,
+               typename CFG::T dmu, typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T cond[CFG::N_COND], int c0, typename CFG::T update[CFG::N_NF],
                int u0, typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F],
@@ -327,7 +351,7 @@ void cpe_round(int p0, int w, int f, typename CFG::T dmu,
 #pragma HLS STREAM variable=tapped depth=TAP_DEPTH
 #pragma HLS STREAM variable=recip depth=2
     FGC_REGION("cpe_round");
-    cpe_feed<CFG>(Hin, p0, w, f, dmu, link[0]);
+    cpe_feed<CFG>(src, first, Hin, p0, w, f, dmu, link[0]);
     cpe_cascade<CFG, 0>::run(p0, w, f, link, tapped, recip);
     cpe_drain<CFG>(link[CFG::N_CPE], p0, w, f, Hout, cond, c0, update, u0, dpiv, rmax, bad);
     FGC_DRAINED(link, CFG::N_CPE + 1);  // csim only (fgc_cycles.h)
@@ -337,31 +361,39 @@ void cpe_round(int p0, int w, int f, typename CFG::T dmu,
 
 // ---- the step ---------------------------------------------------------------------------------
 
+// Whether a step of f frontal and s separator columns fits the configuration (cpe_step computes
+// nothing and its source streams nothing otherwise).
 template <class CFG>
-void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
-              typename CFG::T cond[CFG::N_COND], int c0, typename CFG::T update[CFG::N_NF],
-              int u0, bool* not_pd, bool* singular) {
+inline bool cpe_fits(int f, int s) {
+    return f >= 0 && s >= 0 && f + s <= CFG::MAX_W && f <= CFG::MAX_F;
+}
+
+template <class CFG>
+void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS],
+              int f, int s, typename CFG::T mu, typename CFG::T cond[CFG::N_COND], int c0,
+              typename CFG::T update[CFG::N_NF], int u0, bool* not_pd, bool* singular) {
     typedef typename CFG::T T;
     enum { MAX_ROUNDS = (CFG::MAX_F + CFG::N_CPE - 1) / CFG::N_CPE };
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int w = f + s;
-    if (f < 0 || s < 0 || w > CFG::MAX_W || f > CFG::MAX_F) {
+    if (!cpe_fits<CFG>(f, s)) {
         *not_pd = true;  // outside the configuration: nothing is computed
         *singular = true;
         return;
     }
     bool npd = false;
-    // the trailing matrix between rounds: each round reads H (clearing it) and writes the
-    // rows it leaves for the next round into Tb, which go back into H before that round. One
-    // call site of the region (two would be two copies of the cascade in hardware)
+    // the trailing matrix between rounds: round 0 reads src, a later round H (clearing it);
+    // each writes the rows it leaves for the next round into Tb, which go back into H before
+    // that round. One call site of the region (two would be two copies of the cascade in
+    // hardware)
     T Tb[CFG::MAX_W][CFG::MAX_COLS];
     T dpiv[CFG::MAX_F], rmax[CFG::MAX_F];  // each pivot row's pivot and largest frontal |h|
     for (int r = 0; r * CFG::N_CPE < f; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_ROUNDS
         const int p0 = r * CFG::N_CPE;
         bool round_bad = false;
-        cpe_round<CFG>(p0, w, f, r == 0 ? mu : T(0), H, Tb, cond, c0, update, u0, dpiv, rmax,
-                       &round_bad);
+        cpe_round<CFG>(src, r == 0, p0, w, f, r == 0 ? mu : T(0), H, Tb, cond, c0, update, u0,
+                       dpiv, rmax, &round_bad);
         FGC_SEQUENTIAL();
         npd = npd || round_bad;
         // rows done ... w - 1 back into H for the next round, two words a cycle (the arrays'
@@ -385,14 +417,15 @@ void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typena
         }
         FGC_CYCLES("cpe_step", 0, "back", (back + 1) / 2, 1, 2);
     }
-    // f == 0: no round; the update matrix is [H | g] as it came (read and cleared)
+    // f == 0: no round; the update matrix is [H | g] as it came from src, a word a cycle
     const int words = f == 0 ? cpe_words(0, w) : 0;
+    cpe_pair<T> pair = {T(0), T(0)};
     for (int t = 0, i = 0, c = 0; t < words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=H inter false
-        update[u0 + i * (w + 1) + c] = H[i][c];
-        H[i][c] = T(0);
+        const bool even = ((c - i) & 1) == 0;
+        if (even) pair = src.read();
+        update[u0 + i * (w + 1) + c] = even ? pair.lo : pair.hi;
         if (c == w) {
             ++i;
             c = i;

@@ -2,11 +2,11 @@
 // (fgc_cpe.h's cascade, fgc_qr.h's QR unit): what goes into a step's unit and where its result
 // goes. Per step s of the schedule:
 //
-//   Cholesky: bool cholesky_eliminate<CFG>(s, mu)  [H | g] assembled from the step's factors'
-//             Grams and its children's update matrices into HF (which the cascade left
-//             zero), factored by the cascade, whose drain writes the conditional into COND
-//             and the update matrix into NF; false if singular.
-//             bool cholesky_eliminate_all<CFG>(mu)  every step in schedule order.
+//   Cholesky: bool cholesky_eliminate_all<CFG>(mu)  every step in schedule order: [H | g]
+//             assembled from the step's factors' Grams (while the cascade factors the step
+//             before: cholesky_overlap, two lanes HA[0], HA[1]) and its children's update
+//             matrices, streamed into the cascade, whose drain writes the conditional into
+//             COND and the update matrix into NF; false if singular.
 //   QR:       void qr_stack<CFG>(s, root_mu, bank)  the step's rows into a unit set's banks
 //             (its factors' [A | b], its children's new factors, sqrt(mu) I if CFG::LM).
 //             void qr_commit<CFG>(s, cond, update)  a unit set's result into COND and NF.
@@ -29,7 +29,7 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_NF_ROWS, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP,
 // FACTOR_A_OFF, FACTOR_GRAM_OFF, LEVEL_STEPS, LEVEL_BEGIN, N_LEVELS, N_STEPS (tables); AB, GRAM,
-// COND, NF, PORTS, fgc_sqrt and, for Cholesky, HF (memories). CFG is the kernel's LesConfig: T
+// COND, NF, PORTS, fgc_sqrt and, for Cholesky, HA and HF (memories). CFG is the kernel's LesConfig: T
 // (the linear solver's scalar), the unit's sizes, LM, the tables' largest trip counts (MAX_STEP_FACTORS,
 // MAX_CHILDREN, TRIP_*) and the (II, depth) of the plan's fill, move and scatter loops (QR:
 // UNIT_SETS, MAX_LEVEL_WIDTH and the (II, depth) ROOT_II, ROOT_DEPTH of sqrt(mu) too); cycles
@@ -39,21 +39,23 @@
 #define FGC_ELIMINATE_H
 
 #ifdef FGC_ELIMINATE_CHOLESKY
-// Step s: assemble, factor, store. False if not positive definite or a pivot is too small.
+// The assembly buffers HA[lane] (the kernel's memory, two lanes of a step's [H | g]): the t-th
+// step of the schedule is assembled into lane t % 2 while the cascade factors the (t - 1)-th
+// from the other lane's words. Word (i, c) is HA[lane][i][c >> 1][c & 1]: two banks (the last
+// dimension partitioned), even and odd columns, so the source reads two words of a row a cycle. A lane is all zero when its assembly starts: the source that
+// streams a step's words into the cascade clears each word it reads, and the assembly writes
+// only words it reads (the upper triangle and the gradient of rows < w).
+
+// Step s's factors' packed Grams into HA[lane], one loop per factor. The first is stored, not
+// added (the lane is all zero): two entries a cycle (GRAM's two ports read, the lane's two
+// ports written; within one factor every entry has its own address), its column map first
+// copied into registers (two reads of it an entry each). Each further factor's packed Gram
+// (H's lower triangle, then its gradient row) is added one entry a cycle: within one loop every
+// entry goes to its own address (the column maps are one-to-one), so no iteration waits for
+// another's add (II 1); a later loop's entry may meet the same address.
 template <class CFG>
-bool cholesky_eliminate(int s, typename CFG::T mu) {
-    FGC_PHASE("assemble");
-    const int w = STEP_W[s], f = STEP_F[s];
-    // HF is all zero here: the cascade clears every word it reads (fgc_cpe.h's cpe_feed), and
-    // these loops write only words it reads (the upper triangle and the gradient of rows < w)
-    // each further factor's packed Gram (H's lower triangle, then its gradient row) and each
-    // child's update matrix (upper triangle and reduced g), one entry a cycle += into HF: within one
-    // loop every entry goes to its own address (the column maps are one-to-one), so no
-    // iteration waits for another's add (II 1); a later loop's entry may meet the same address
-    // the step's first factor: HF is all zero, so its packed Gram is stored, not added: two
-    // entries a cycle (GRAM's two ports read, HF's two ports written; within one factor every
-    // entry has its own address), its column map first copied into registers (two reads of it
-    // an entry each)
+void cholesky_assemble_grams(int s, int lane) {
+    const int w = STEP_W[s];
     if (STEP_FACTOR_BEGIN[s] < STEP_FACTOR_BEGIN[s + 1]) {
         const int fac = STEP_FACTORS[STEP_FACTOR_BEGIN[s]];
         const int cb = FACTOR_COLMAP_BEGIN[fac];
@@ -67,17 +69,17 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
 #pragma HLS PIPELINE II=1
             map[c] = FACTOR_COLMAP[cb + c];
         }
-        map[d] = w;  // row d of the packed Gram: the gradient, column w of HF
+        map[d] = w;  // row d of the packed Gram: the gradient, column w of the lane
         FGC_CYCLES("assemble", 0, "map", d, CFG::MOVE_II, CFG::MOVE_DEPTH);
         for (int k = 0, p = 0, q = 0; k < n; k += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED/2
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HF inter false
+#pragma HLS DEPENDENCE variable=HA inter false
             for (int h = 0; h < 2; ++h) {
                 if (k + h < n) {
                     const int a = map[p], b = map[q];
                     const int lo = b < a ? b : a, hi = b < a ? a : b;
-                    HF[lo][hi] = GRAM[g0 + k + h];
+                    HA[lane][lo][hi >> 1][hi & 1] = GRAM[g0 + k + h];
                     if (q == p) {
                         q = 0;
                         ++p;
@@ -92,7 +94,6 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
     for (int e = STEP_FACTOR_BEGIN[s] + 1; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
         const int fac = STEP_FACTORS[e];
-
         const int cb = FACTOR_COLMAP_BEGIN[fac];
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
         const int g0 = FACTOR_GRAM_OFF[fac];
@@ -100,10 +101,10 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
         for (int k = 0, p = 0, q = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HF inter false
+#pragma HLS DEPENDENCE variable=HA inter false
             const int a = p < d ? FACTOR_COLMAP[cb + p] : w, b = FACTOR_COLMAP[cb + q];
             const int lo = b < a ? b : a, hi = b < a ? a : b;
-            HF[lo][hi] += GRAM[g0 + k];
+            HA[lane][lo][hi >> 1][hi & 1] += GRAM[g0 + k];
             if (q == p) {
                 q = 0;
                 ++p;
@@ -113,6 +114,14 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
         }
         FGC_CYCLES("assemble", 0, "gram", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
     }
+}
+
+// Step s's children's update matrices (upper triangle and reduced g) added into HA[lane], one
+// entry a cycle per child (each entry its own address within a child: II 1). They exist only
+// once the children's cascades have run, so this runs between the cascades.
+template <class CFG>
+void cholesky_assemble_children(int s, int lane) {
+    const int w = STEP_W[s];
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
         const int c = STEP_CHILDREN[e];
@@ -123,10 +132,10 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
         for (int k = 0, a = 0, b = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HF inter false
+#pragma HLS DEPENDENCE variable=HA inter false
             const int ma = STEP_SEPMAP[mb + a], mbb = b < sc ? STEP_SEPMAP[mb + b] : w;
             const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
-            HF[lo][hi] += NF[u0 + a * (sc + 1) + b];
+            HA[lane][lo][hi >> 1][hi & 1] += NF[u0 + a * (sc + 1) + b];
             if (b == sc) {
                 ++a;
                 b = a;
@@ -136,21 +145,96 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
         }
         FGC_CYCLES("assemble", 0, "child", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
     }
-    bool not_pd = false, singular = false;
-    FGC_PHASE("cholesky");
-    // the conditional straight into COND and the update matrix into NF (the cascade's drain)
-    fgc_units::cpe_step<CFG>(HF, f, w - f, mu, COND, STEP_COND_OFF[s], NF, STEP_NF_OFF[s],
-                             &not_pd, &singular);
-    return !singular;
 }
 
-// Eliminate every step in schedule order, level by level.
+// The assembly's process of the cholesky_overlap region: step s's words from HA[lane] into the
+// cascade's stream in its feed's order (rows 0 ... w - 1, row i from its diagonal to the
+// gradient), two columns of a row a cycle (fgc_cpe.h's cpe_pair: columns i + 2j and
+// i + 2j + 1, one from each bank, the word past the gradient of a row of an odd count a zero
+// nobody writes), each cleared as it is read (a read and a write a cycle in each bank), then
+// step `next`'s factor Grams into the other lane (none if next < 0).
+template <class CFG>
+void cholesky_assembler(int s, int lane, int next,
+                        hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out) {
+    typedef typename CFG::T T;
+    enum { MAX_PAIRS = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 };
+    FGC_BRANCH();  // csim cycle counting only: beside the cascade
+    const int w = STEP_W[s];
+    const int pairs = fgc_units::cpe_fits<CFG>(STEP_F[s], w - STEP_F[s])
+                          ? fgc_units::cpe_pairs(w) : 0;
+    // trip sum_i ceil((w + 1 - i) / 2), II 1, depth of a move
+    for (int t = 0, i = 0, c = 0; t < pairs; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_PAIRS
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=HA inter false
+        const int odd = c & 1;  // column c in bank 1: the pair's even column is c + 1
+        const int e = (c + odd) >> 1, o = c >> 1;  // the even column's and the odd one's word
+        const T v0 = HA[lane][i][e][0], v1 = HA[lane][i][o][1];
+        HA[lane][i][e][0] = T(0);
+        HA[lane][i][o][1] = T(0);
+        const fgc_units::cpe_pair<T> p = {odd ? v1 : v0, odd ? v0 : v1};
+        out.write(p);
+        if (c + 2 > w) {
+            ++i;
+            c = i;
+        } else {
+            c += 2;
+        }
+    }
+    FGC_CYCLES("assemble", 0, "source", pairs, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    if (next >= 0) cholesky_assemble_grams<CFG>(next, 1 - lane);
+}
+
+// The cascade's process of the cholesky_overlap region: step s factored from the stream, the
+// conditional straight into COND and the update matrix into NF (the cascade's drain).
+template <class CFG>
+void cholesky_cascade(int s, typename CFG::T mu,
+                      hls::stream<fgc_units::cpe_pair<typename CFG::T> >& src,
+                      bool* not_pd, bool* singular) {
+    FGC_BRANCH();
+    const int w = STEP_W[s], f = STEP_F[s];
+    fgc_units::cpe_step<CFG>(src, HF, f, w - f, mu, COND, STEP_COND_OFF[s], NF, STEP_NF_OFF[s],
+                             not_pd, singular);
+}
+
+// One DATAFLOW region per step: step s streamed from HA[lane] through the cascade while step
+// `next`'s factor Grams are assembled into the other lane.
+template <class CFG>
+void cholesky_overlap(int s, int lane, int next, typename CFG::T mu, bool* not_pd,
+                      bool* singular) {
+#pragma HLS DATAFLOW
+    // deep enough that the assembler never waits for the feed (it writes a pair a cycle, the
+    // feed reads a word a cycle): half a step's pairs and the feed's start
+    enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
+    hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal;
+#pragma HLS STREAM variable=frontal depth=DEPTH
+    cholesky_assembler<CFG>(s, lane, next, frontal);
+    cholesky_cascade<CFG>(s, mu, frontal, not_pd, singular);
+    FGC_DRAINED(&frontal, 1);  // csim only (fgc_cycles.h)
+}
+
+// Eliminate every step in schedule order (LEVEL_STEPS): the first step's factor Grams into lane
+// 0; then per step (the t-th on lane t % 2) its children's update matrices added into its lane
+// and the cholesky_overlap region (its cascade beside the next step's Grams). Every step runs
+// even after one fails (a lane must not be left holding a step's Grams); false if any step was
+// not positive definite or had a pivot too small.
 template <class CFG>
 bool cholesky_eliminate_all(typename CFG::T mu) {
+#pragma HLS ARRAY_PARTITION variable=HA complete dim=4
     FGC_EVENT("solve");
+    FGC_PHASE("assemble");
+    if (N_STEPS > 0) cholesky_assemble_grams<CFG>(LEVEL_STEPS[0], 0);
     bool ok = true;
     for (int i = 0; i < N_STEPS; ++i) {
-        if (ok) ok = cholesky_eliminate<CFG>(LEVEL_STEPS[i], mu);
+        const int s = LEVEL_STEPS[i], lane = i % 2;
+        const int next = i + 1 < N_STEPS ? LEVEL_STEPS[i + 1] : -1;
+        FGC_PHASE("assemble");
+        cholesky_assemble_children<CFG>(s, lane);
+        FGC_PHASE("cholesky");
+        bool not_pd = false, singular = false;
+        cholesky_overlap<CFG>(s, lane, next, mu, &not_pd, &singular);
+        FGC_JOIN();
+        ok = ok && !singular;
     }
     return ok;
 }
