@@ -3,26 +3,27 @@
 // pivots a round; between rounds the trailing matrix goes back to memory.
 //
 // Fixed code, configured by a struct of constants (CFG, see cpe_config_example below); the emitted
-// design (fgc_eliminate.h's cholesky_eliminate) assembles each step's [H | g] and calls
+// design (fgc_eliminate.h's cholesky_overlap) streams each step's [H | g] from its assembly into
 // cpe_step<CFG>.
 //
 // ---- interface ------------------------------------------------------------------------------
 //
 //   template <class CFG>
-//   void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
+//   void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src,
+//                 typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
 //                 typename CFG::T cond[CFG::N_COND], int c0,
 //                 typename CFG::T update[CFG::N_NF], int u0, bool* not_pd, bool* singular);
 //
 //   and cond_backsub<CFG> (fgc_backsub.h, included) for the step's back-substitution.
 //
-// In: the step's [H | g], w = f + s rows, row-major with w + 1 used columns: H[i][c] for
-// i <= c < w is the upper triangle of the frontal-and-separator Hessian (the sum of its factors'
-// Grams and its children's update matrices), H[i][w] the gradient; entries left of the diagonal
-// are not read. mu (Levenberg-Marquardt damping, 0 for Gauss-Newton) is added to the f frontal
-// diagonal entries as the first round reads them. H is left all zero: every word the cascade
-// reads it clears, so the next step's assembly adds into zeros without a clearing pass (the
-// assembly writes only words the cascade reads: the upper triangle and the gradient of rows
-// 0 ... w - 1). cpe_step holds the buffer the trailing matrix goes through between rounds.
+// In: src, the step's [H | g], w = f + s rows, each row from its diagonal to the gradient, two
+// words a stream word (cpe_pair; cpe_pairs(w) of them, none if the step does not fit: cpe_fits):
+// row i's columns i <= c < w are the upper triangle of the frontal-and-separator Hessian (the
+// sum of its factors' Grams and its children's update matrices), column w the gradient. mu
+// (Levenberg-Marquardt damping, 0 for Gauss-Newton) is added to the f frontal diagonal entries
+// as the first round reads them. H: all zero on entry, the buffer the trailing matrix goes
+// through between rounds (with Tb inside cpe_step), left all zero: every word a later round
+// reads it clears.
 //
 // Out:
 // - cond[c0 + i * (w + 1) + c], i < f, c >= i: the conditional, row i of the factor as the pivot
@@ -52,14 +53,15 @@
 //
 // Round r (pivots p0 = r N_CPE ... min(f, p0 + N_CPE) - 1) is one DATAFLOW region, cpe_round; the
 // rounds are a sequential loop in cpe_step around the region's one call site (two call sites
-// would be two copies of the cascade in hardware). Every round reads H; the drain writes the
-// rows a round leaves for the next into cpe_step's Tb, and a copy loop puts them back into H
-// before that round (multi-round steps only: f > N_CPE). In each region the feed is the only
-// process that touches H and the drain the only one that touches Tb:
+// would be two copies of the cascade in hardware). Round 0 reads src, every later round H; the
+// drain writes the rows a round leaves for the next into cpe_step's Tb, and a copy loop puts
+// them back into H before that round (multi-round steps only: f > N_CPE). In each region the
+// feed is the only process that touches src and H and the drain the only one that touches Tb:
 //
-//   cpe_feed      streams rows p0 ... w - 1 of Hin, row i from its diagonal to the gradient
-//                 (w + 1 - i words; + mu on the frontal diagonal in round 0), clearing each word
-//                 it reads, then a status word 0, into link[0];
+//   cpe_feed      streams rows p0 ... w - 1, row i from its diagonal to the gradient
+//                 (w + 1 - i words; + mu on the frontal diagonal in round 0), round 0's from src,
+//                 a later round's from Hin, clearing each word it reads, then a status word 0,
+//                 into link[0];
 //   cpe_tap<K>    K = 0 ... N_CPE - 1: passes link[K] on to tapped[K] and, when the word is its
 //                 CPE's pivot d, sends r = 1 / d into recip[K]: the divide runs beside the stream,
 //                 its latency hidden behind the pivot's row (the CPE needs r only after the row);
