@@ -159,8 +159,8 @@ void cholesky_assembler(int s, int lane, int next,
     typedef typename CFG::T T;
     enum { MAX_PAIRS = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 };
     FGC_BRANCH();  // csim cycle counting only: beside the cascade
-    const int w = STEP_W[s];
-    const int pairs = fgc_units::cpe_fits<CFG>(STEP_F[s], w - STEP_F[s])
+    const int w = s >= 0 ? STEP_W[s] : 0;
+    const int pairs = s >= 0 && fgc_units::cpe_fits<CFG>(STEP_F[s], w - STEP_F[s])
                           ? fgc_units::cpe_pairs(w) : 0;
     // trip sum_i ceil((w + 1 - i) / 2), II 1, depth of a move
     for (int t = 0, i = 0, c = 0; t < pairs; ++t) {
@@ -192,6 +192,7 @@ void cholesky_cascade(int s, typename CFG::T mu,
                       hls::stream<fgc_units::cpe_pair<typename CFG::T> >& src,
                       bool* not_pd, bool* singular) {
     FGC_BRANCH();
+    if (s < 0) return;  // the first region: nothing to factor yet
     const int w = STEP_W[s], f = STEP_F[s];
     fgc_units::cpe_step<CFG>(src, HF, f, w - f, mu, COND, STEP_COND_OFF[s], NF, STEP_NF_OFF[s],
                              not_pd, singular);
@@ -213,24 +214,23 @@ void cholesky_overlap(int s, int lane, int next, typename CFG::T mu, bool* not_p
     FGC_DRAINED(&frontal, 1);  // csim only (fgc_cycles.h)
 }
 
-// Eliminate every step in schedule order (LEVEL_STEPS): the first step's factor Grams into lane
-// 0; then per step (the t-th on lane t % 2) its children's update matrices added into its lane
-// and the cholesky_overlap region (its cascade beside the next step's Grams). Every step runs
-// even after one fails (a lane must not be left holding a step's Grams); false if any step was
-// not positive definite or had a pivot too small.
+// Eliminate every step in schedule order (LEVEL_STEPS): a first cholesky_overlap region with no
+// step (s = -1) assembles the first step's factor Grams into lane 0 (the Grams' loops have one
+// call site: the assembler's); then per step (the t-th on lane t % 2) its children's update
+// matrices added into its lane and the cholesky_overlap region (its cascade beside the next
+// step's Grams). Every step runs even after one fails (a lane must not be left holding a step's
+// Grams); false if any step was not positive definite or had a pivot too small.
 template <class CFG>
 bool cholesky_eliminate_all(typename CFG::T mu) {
 #pragma HLS ARRAY_PARTITION variable=HA complete dim=4
     FGC_EVENT("solve");
-    FGC_PHASE("assemble");
-    if (N_STEPS > 0) cholesky_assemble_grams<CFG>(LEVEL_STEPS[0], 0);
     bool ok = true;
-    for (int i = 0; i < N_STEPS; ++i) {
-        const int s = LEVEL_STEPS[i], lane = i % 2;
+    for (int i = -1; i < N_STEPS; ++i) {
+        const int s = i >= 0 ? LEVEL_STEPS[i] : -1, lane = i >= 0 ? i % 2 : 1;
         const int next = i + 1 < N_STEPS ? LEVEL_STEPS[i + 1] : -1;
         FGC_PHASE("assemble");
-        cholesky_assemble_children<CFG>(s, lane);
-        FGC_PHASE("cholesky");
+        if (s >= 0) cholesky_assemble_children<CFG>(s, lane);
+        if (s >= 0) FGC_PHASE("cholesky");
         bool not_pd = false, singular = false;
         cholesky_overlap<CFG>(s, lane, next, mu, &not_pd, &singular);
         FGC_JOIN();

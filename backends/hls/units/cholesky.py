@@ -303,16 +303,17 @@ def _frontal(ctx) -> None:
     ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
                           (("add", 1), ("mul", 2), ("div", 1))))
     # fgc_eliminate.h's assembly: the Grams' and the children's loops, each a pipelined
-    # HA += at II 1: an adder each, the Grams' loop twice (cholesky_assemble_grams has two call
-    # sites: the first step's before the steps, the next step's in cholesky_assembler)
+    # HA += at II 1: an adder each (cholesky_assemble_grams has one call site, the assembler's:
+    # the first step's Grams too, in a first region with no step to factor)
     ctx.units.append(Unit("assemble", "the step's [H | g] from Grams and update matrices", 1,
-                          (("add", 3),)))
+                          (("add", 2),)))
     tables, timing = ctx.tables, ctx.les_timing
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
     steps = {st.index: st for st in program.schedule.steps}
-    # cholesky_eliminate_all: the first step's Grams into lane 0, then per step its children's
-    # update matrices added into its lane (phase assemble: they exist once the children's
-    # cascades ran) and the cholesky_overlap region (phase cholesky_level<t>): the cascade on
+    # cholesky_eliminate_all: the first step's Grams into lane 0 (a cholesky_overlap region
+    # with no step to factor: the assembler alone), then per step its children's update
+    # matrices added into its lane (phase assemble: they exist once the children's cascades
+    # ran) and the cholesky_overlap region (phase cholesky_level<t>): the cascade on
     # the step (cpe_step_loops) beside the assembler (its words streamed out, the next step's
     # Grams into the other lane), the slower of the two plus the other's fill
     first = [Process("assemble_first", "cpe", tuple(assemble_loops(
