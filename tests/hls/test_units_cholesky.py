@@ -185,23 +185,28 @@ def test_each_block_types_datapath_and_hgc_share_one_emitted_region(tmp_path):
 
 
 def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program):
-    # cholesky_eliminate_all: the first step's Grams before the steps; per step (the t-th) its
-    # children's update matrices (phase assemble), then the cholesky_overlap region (phase
-    # cholesky_level<t>): the cascade beside the assembler, which streams the step's words out
-    # two a cycle and assembles the next step's Grams into the other lane
+    # cholesky_eliminate_all: the steps' position parities, the first step's Grams before the
+    # steps; per step (the t-th) its children of the other parity than t's (phase assemble: the
+    # step before among them), then the cholesky_overlap region (phase cholesky_level<t>): the
+    # cascade beside the assembler, which streams the step's words out two a cycle, assembles
+    # the next step's Grams into the other lane and adds its children from the NF lane step t's
+    # cascade does not write
     from fgc_backends.hls.plan.loops import _tables, kernel_timing
     from fgc_backends.hls.units.cholesky import assemble_loops, cpe_pairs
 
     plan = build_plan(program)
     tables, timing = _tables(program), kernel_timing(FLOAT32)
     order = list(tables["LEVEL_STEPS"][:len(program.schedule.steps)])
+    odd = {s: t % 2 for t, s in enumerate(order)}
     (assemble,) = [ph for ph in plan.phases if ph.name == "assemble"]
-    first = assemble.processes[0]
+    lanes, first, *kids = assemble.processes
+    assert lanes.loops[0].trip == len(order)
     assert first.name == "assemble_first"
     assert [lp.name for lp in first.loops][:2] == ["map", "gram_first"]
-    assert all(lp.name == "child" for p in assemble.processes[1:] for lp in p.loops)
+    assert all(lp.name == "child" for p in kids for lp in p.loops)
     regions = [ph for ph in plan.phases if ph.name.startswith("cholesky_level")]
     assert len(regions) == len(order)
+    every = 0
     for t, (ph, s) in enumerate(zip(regions, order, strict=True)):
         assert ph.dataflow
         cascade, assembler = ph.processes
@@ -209,10 +214,17 @@ def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program
         assert assembler.loops[0].name == "source"
         assert assembler.loops[0].trip == cpe_pairs(tables["STEP_W"][s])
         nxt = order[t + 1] if t + 1 < len(order) else None
-        grams = assemble_loops(tables, nxt, timing, children=False) if nxt is not None else []
-        assert list(assembler.loops[1:]) == grams
+        beside = assemble_loops(tables, nxt, timing, odd=odd, par=1 - t % 2) \
+            if nxt is not None else []
+        assert list(assembler.loops[1:]) == beside
         # the region: the slower process plus the other's fill, not their sum
         assert phase_cycles(ph) < cascade.cycles + assembler.cycles
+        every += sum(lp.name == "child" for lp in beside)
+    # every child once: beside the cascade or alone
+    between = sum(lp.name == "child" for p in kids for lp in p.loops)
+    assert every + between == sum(len(assemble_loops(tables, s, timing, grams=False))
+                                  for s in order)
+    assert every > 0
 
 
 def test_cpe_pairs_counts_two_words_of_a_row_a_pair():

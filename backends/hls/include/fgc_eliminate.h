@@ -117,14 +117,17 @@ void cholesky_assemble_grams(int s, int lane) {
 }
 
 // Step s's children's update matrices (upper triangle and reduced g) added into HA[lane], one
-// entry a cycle per child (each entry its own address within a child: II 1). They exist only
-// once the children's cascades have run, so this runs between the cascades.
+// entry a cycle per child (each entry its own address within a child: II 1): the children c
+// whose position in the schedule has the parity `par` (odd[c]), from nf, the NF lane the steps
+// at those positions wrote (the t-th step's drain writes NF[t % 2]).
 template <class CFG>
-void cholesky_assemble_children(int s, int lane) {
+void cholesky_assemble_children(int s, int par, const bool odd[N_STEPS],
+                                const typename CFG::T nf[CFG::N_NF], int lane) {
     const int w = STEP_W[s];
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
         const int c = STEP_CHILDREN[e];
+        if (int(odd[c]) != par) continue;  // in the other NF lane: added by the other pass
         const int sc = STEP_W[c] - STEP_F[c];
         const int mb = STEP_SEPMAP_BEGIN[c];
         const int u0 = STEP_NF_OFF[c];
@@ -135,7 +138,7 @@ void cholesky_assemble_children(int s, int lane) {
 #pragma HLS DEPENDENCE variable=HA inter false
             const int ma = STEP_SEPMAP[mb + a], mbb = b < sc ? STEP_SEPMAP[mb + b] : w;
             const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
-            HA[lane][lo][hi >> 1][hi & 1] += NF[u0 + a * (sc + 1) + b];
+            HA[lane][lo][hi >> 1][hi & 1] += nf[u0 + a * (sc + 1) + b];
             if (b == sc) {
                 ++a;
                 b = a;
@@ -151,10 +154,12 @@ void cholesky_assemble_children(int s, int lane) {
 // cascade's stream in its feed's order (rows 0 ... w - 1, row i from its diagonal to the
 // gradient), two columns of a row a cycle (fgc_cpe.h's cpe_pair: columns i + 2j and
 // i + 2j + 1, one from each bank, the word past the gradient of a row of an odd count a zero
-// nobody writes), each cleared as it is read (a read and a write a cycle in each bank), then
-// step `next`'s factor Grams into the other lane (none if next < 0).
+// nobody writes), each cleared as it is read (a read and a write a cycle in each bank); then
+// step `next`'s factor Grams into the other lane (none if next < 0); then step kids's children
+// at positions of parity rd from nfr (NF[rd]) into HA[kid_lane] (none if kids < 0).
 template <class CFG>
-void cholesky_assembler(int s, int lane, int next,
+void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int rd,
+                        const bool odd[N_STEPS], const typename CFG::T nfr[CFG::N_NF],
                         hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out) {
     typedef typename CFG::T T;
     enum { MAX_PAIRS = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 };
@@ -167,12 +172,12 @@ void cholesky_assembler(int s, int lane, int next,
 #pragma HLS LOOP_TRIPCOUNT max=MAX_PAIRS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=HA inter false
-        const int odd = c & 1;  // column c in bank 1: the pair's even column is c + 1
-        const int e = (c + odd) >> 1, o = c >> 1;  // the even column's and the odd one's word
+        const int odd_c = c & 1;  // column c in bank 1: the pair's even column is c + 1
+        const int e = (c + odd_c) >> 1, o = c >> 1;  // the even column's and the odd one's word
         const T v0 = HA[lane][i][e][0], v1 = HA[lane][i][o][1];
         HA[lane][i][e][0] = T(0);
         HA[lane][i][o][1] = T(0);
-        const fgc_units::cpe_pair<T> p = {odd ? v1 : v0, odd ? v0 : v1};
+        const fgc_units::cpe_pair<T> p = {odd_c ? v1 : v0, odd_c ? v0 : v1};
         out.write(p);
         if (c + 2 > w) {
             ++i;
@@ -183,56 +188,89 @@ void cholesky_assembler(int s, int lane, int next,
     }
     FGC_CYCLES("assemble", 0, "source", pairs, CFG::MOVE_II, CFG::MOVE_DEPTH);
     if (next >= 0) cholesky_assemble_grams<CFG>(next, 1 - lane);
+    if (kids >= 0) cholesky_assemble_children<CFG>(kids, rd, odd, nfr, kid_lane);
 }
 
 // The cascade's process of the cholesky_overlap region: step s factored from the stream, the
-// conditional straight into COND and the update matrix into NF (the cascade's drain).
+// conditional straight into COND and the update matrix into nfw (the cascade's drain).
 template <class CFG>
 void cholesky_cascade(int s, typename CFG::T mu,
                       hls::stream<fgc_units::cpe_pair<typename CFG::T> >& src,
-                      bool* not_pd, bool* singular) {
+                      typename CFG::T nfw[CFG::N_NF], bool* not_pd, bool* singular) {
     FGC_BRANCH();
-    if (s < 0) return;  // the first region: nothing to factor yet
+    if (s < 0) return;  // a region of the assembler alone: nothing to factor
     const int w = STEP_W[s], f = STEP_F[s];
-    fgc_units::cpe_step<CFG>(src, HF, f, w - f, mu, COND, STEP_COND_OFF[s], NF, STEP_NF_OFF[s],
+    fgc_units::cpe_step<CFG>(src, HF, f, w - f, mu, COND, STEP_COND_OFF[s], nfw, STEP_NF_OFF[s],
                              not_pd, singular);
 }
 
-// One DATAFLOW region per step: step s streamed from HA[lane] through the cascade while step
-// `next`'s factor Grams are assembled into the other lane.
+// One DATAFLOW region: step s streamed from HA[lane] through the cascade (its update matrix
+// into nfw) while the assembler puts step `next`'s factor Grams into the other lane and adds
+// step kids's children that nfr holds (cholesky_assembler). nfr and nfw are the two NF lanes:
+// the assembler reads one while the drain writes the other.
 template <class CFG>
-void cholesky_overlap(int s, int lane, int next, typename CFG::T mu, bool* not_pd,
-                      bool* singular) {
+void cholesky_overlap(int s, int lane, int next, int kids, int kid_lane, int rd,
+                      typename CFG::T mu, const bool odd[N_STEPS],
+                      const typename CFG::T nfr[CFG::N_NF], typename CFG::T nfw[CFG::N_NF],
+                      bool* not_pd, bool* singular) {
 #pragma HLS DATAFLOW
     // deep enough that the assembler never waits for the feed (it writes a pair a cycle, the
     // feed reads a word a cycle): half a step's pairs and the feed's start
     enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
     hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal;
 #pragma HLS STREAM variable=frontal depth=DEPTH
-    cholesky_assembler<CFG>(s, lane, next, frontal);
-    cholesky_cascade<CFG>(s, mu, frontal, not_pd, singular);
+    cholesky_assembler<CFG>(s, lane, next, kids, kid_lane, rd, odd, nfr, frontal);
+    cholesky_cascade<CFG>(s, mu, frontal, nfw, not_pd, singular);
     FGC_DRAINED(&frontal, 1);  // csim only (fgc_cycles.h)
 }
 
-// Eliminate every step in schedule order (LEVEL_STEPS): a first cholesky_overlap region with no
-// step (s = -1) assembles the first step's factor Grams into lane 0 (the Grams' loops have one
-// call site: the assembler's); then per step (the t-th on lane t % 2) its children's update
-// matrices added into its lane and the cholesky_overlap region (its cascade beside the next
-// step's Grams). Every step runs even after one fails (a lane must not be left holding a step's
-// Grams); false if any step was not positive definite or had a pivot too small.
+// Eliminate every step in schedule order (LEVEL_STEPS): the t-th step on lane t % 2 of HA and
+// of NF (its drain writes NF[t % 2]). Passes of the one cholesky_overlap region (its two parity
+// call sites, one RTL copy): first the assembler alone puts the first step's Grams into lane 0;
+// then per step t
+//   - the assembler alone adds the step's children at positions of parity 1 - t % 2 (the step
+//     before among them: its update matrix was written in the region just run) from NF[1 - t %
+//     2] into lane t % 2;
+//   - the region: the step's cascade (its update matrix into NF[t % 2]) beside the assembler,
+//     which streams the step's words, puts step t + 1's Grams into the other lane and adds step
+//     t + 1's children at positions of parity 1 - t % 2 (all written before this region) from
+//     NF[1 - t % 2].
+// Every step runs even after one fails (a lane must not be left holding a step's words); false
+// if any step was not positive definite or had a pivot too small.
 template <class CFG>
 bool cholesky_eliminate_all(typename CFG::T mu) {
 #pragma HLS ARRAY_PARTITION variable=HA complete dim=4
+#pragma HLS ARRAY_PARTITION variable=NF complete dim=1
     FGC_EVENT("solve");
+    FGC_PHASE("assemble");
+    bool odd[N_STEPS];  // each step's position parity: the NF lane its drain writes
+    for (int i = 0; i < N_STEPS; ++i) {
+#pragma HLS PIPELINE II=1
+        odd[LEVEL_STEPS[i]] = (i & 1) != 0;
+    }
+    FGC_CYCLES("assemble", 0, "lanes", N_STEPS, CFG::FILL_II, CFG::FILL_DEPTH);
     bool ok = true;
-    for (int i = -1; i < N_STEPS; ++i) {
-        const int s = i >= 0 ? LEVEL_STEPS[i] : -1, lane = i >= 0 ? i % 2 : 1;
+    // the two parity call sites below are exclusive and sequential: one RTL copy of the region
+    // serves both (UG1399, ALLOCATION of a function: one instance for its call sites)
+#pragma HLS ALLOCATION function instances=cholesky_overlap<CFG> limit=1
+    for (int j = 0; j <= 2 * N_STEPS; ++j) {
+        const int i = (j - 1) >> 1;  // the step (position) of the pass, -1 for the first
+        const bool region = j > 0 && (j & 1) == 0;  // its cascade; else the assembler alone
+        const int lane = i >= 0 ? (i & 1) : 1, rd = 1 - lane;
+        const int step = i >= 0 ? LEVEL_STEPS[i] : -1;
         const int next = i + 1 < N_STEPS ? LEVEL_STEPS[i + 1] : -1;
-        FGC_PHASE("assemble");
-        if (s >= 0) cholesky_assemble_children<CFG>(s, lane);
-        if (s >= 0) FGC_PHASE("cholesky");
+        const int s = region ? step : -1;
+        const int grams = region || j == 0 ? next : -1;
+        const int kids = region || j == 0 ? next : step, kid_lane = region || j == 0 ? rd : lane;
+        FGC_PHASE(region ? "cholesky" : "assemble");
         bool not_pd = false, singular = false;
-        cholesky_overlap<CFG>(s, lane, next, mu, &not_pd, &singular);
+        if (rd == 1) {
+            cholesky_overlap<CFG>(s, lane, grams, kids, kid_lane, 1, mu, odd, NF[1], NF[0],
+                                  &not_pd, &singular);
+        } else {
+            cholesky_overlap<CFG>(s, lane, grams, kids, kid_lane, 0, mu, odd, NF[0], NF[1],
+                                  &not_pd, &singular);
+        }
         FGC_JOIN();
         ok = ok && !singular;
     }

@@ -149,7 +149,7 @@ def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...]
 
 
 def assemble_loops(tables: dict, s: int, timing: dict, grams: bool = True,
-                   children: bool = True) -> list[Loop]:
+                   children: bool = True, odd: dict | None = None, par: int = 0) -> list[Loop]:
     """The loops that assemble step s's [H | g] into its lane of HA (fgc_eliminate.h), which is
     all zero (the source that streams a step into the cascade clears every word it reads, so
     no clearing pass): ``grams`` (cholesky_assemble_grams) per factor its packed Gram's lower
@@ -158,7 +158,8 @@ def assemble_loops(tables: dict, s: int, timing: dict, grams: bool = True,
     (``move``, d), each further one a loop of ``+=`` into the table-addressed frontal matrix
     whose entries all go to different addresses (``scatter``: II 1); ``children``
     (cholesky_assemble_children) per child its update matrix's upper triangle and reduced g
-    (s (s + 1) / 2 + s), a ``scatter`` loop each."""
+    (s (s + 1) / 2 + s), a ``scatter`` loop each; with ``odd`` (step -> its position's parity in
+    the schedule) only the children of parity ``par`` (one NF lane's)."""
     loops = []
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]) if grams else ():
@@ -173,6 +174,8 @@ def assemble_loops(tables: dict, s: int, timing: dict, grams: bool = True,
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]) if children else ():
         c = tables["STEP_CHILDREN"][e]
+        if odd is not None and odd[c] != par:
+            continue
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
         loops.append(kernel_loop("child", sc * (sc + 1) // 2 + sc, "scatter", timing))
     return loops
@@ -184,14 +187,15 @@ def cpe_pairs(w: int) -> int:
     return (w + 2) * (w + 2) // 4 - 1
 
 
-def assembler_loops(tables: dict, s: int, nxt: int, timing: dict) -> list[Loop]:
-    """fgc_eliminate.h's cholesky_assembler beside step s's cascade: step s's words streamed
-    out of its lane two of a row a cycle (:func:`cpe_pairs`, ``move``: each bank read and
-    cleared), then step ``nxt``'s factor Grams into the other lane (:func:`assemble_loops`,
-    none if nxt < 0)."""
+def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict) -> list[Loop]:
+    """fgc_eliminate.h's cholesky_assembler beside step s's cascade (s at an even position or
+    not: ``odd[s]``): step s's words streamed out of its lane two of a row a cycle
+    (:func:`cpe_pairs`, ``move``: each bank read and cleared), then step ``nxt``'s factor Grams
+    into the other lane and its children at positions of the other parity than s's (written
+    before this region; :func:`assemble_loops`), none if nxt < 0."""
     loops = [kernel_loop("source", cpe_pairs(tables["STEP_W"][s]), "move", timing)]
     if nxt >= 0:
-        loops += assemble_loops(tables, nxt, timing, children=False)
+        loops += assemble_loops(tables, nxt, timing, odd=odd, par=1 - odd[s])
     return loops
 
 
@@ -309,18 +313,22 @@ def _frontal(ctx) -> None:
                           (("add", 2),)))
     tables, timing = ctx.tables, ctx.les_timing
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
+    odd = {s: t % 2 for t, s in enumerate(order)}
     steps = {st.index: st for st in program.schedule.steps}
-    # cholesky_eliminate_all: the first step's Grams into lane 0 (a cholesky_overlap region
-    # with no step to factor: the assembler alone), then per step its children's update
-    # matrices added into its lane (phase assemble: they exist once the children's cascades
-    # ran) and the cholesky_overlap region (phase cholesky_level<t>): the cascade on
-    # the step (cpe_step_loops) beside the assembler (its words streamed out, the next step's
-    # Grams into the other lane), the slower of the two plus the other's fill
+    # cholesky_eliminate_all (passes of one cholesky_overlap region): each step's position
+    # parity (the NF lane its drain writes), the first step's Grams (the assembler alone), then
+    # per step t its children at positions of the other parity than t's (the step before among
+    # them: the assembler alone, phase assemble) and the region (phase cholesky_level<t>): the
+    # cascade on the step (cpe_step_loops) beside the assembler (its words streamed out, the
+    # next step's Grams and its children of t's parity), the slower of the two plus the other's
+    # fill
     first = [Process("assemble_first", "cpe", tuple(assemble_loops(
-        tables, order[0], timing, children=False)))] if order else []
-    ctx.add_phase("solve", Phase("assemble", False, tuple(first) + tuple(
-        Process(f"assemble{s}", "cpe", tuple(assemble_loops(tables, s, timing, grams=False)))
-        for s in order), linear=True))
+        tables, order[0], timing, odd=odd, par=0)))] if order else []
+    ctx.add_phase("solve", Phase("assemble", False, (
+        Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),
+        *first, *(Process(f"assemble{s}", "cpe", tuple(assemble_loops(
+            tables, s, timing, grams=False, odd=odd, par=1 - odd[s]))) for s in order)),
+        linear=True))
     # cholesky_overlap's stream, a pair of words wide, deep enough that the assembler (a pair a
     # cycle) never waits for the feed (a word a cycle): half a step's pairs and the feed's start
     mw = sizes["MAX_W"]
@@ -332,12 +340,13 @@ def _frontal(ctx) -> None:
         ctx.add_phase("solve", Phase(f"cholesky_level{t}", True, (
             Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
                 st.frontal_dim, st.separator_dim, c, ops, name=f"s{s}"))),
-            Process(f"assembler{s}", "cpe", tuple(assembler_loops(tables, s, nxt, timing)))),
-            linear=True))
+            Process(f"assembler{s}", "cpe", tuple(assembler_loops(
+                tables, s, nxt, timing, odd)))), linear=True))
     # accel.cpp.jinja's GRAM and HF (the frontal matrix of one step at a time) and cpe_step's
     # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF)
     ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
     ctx.memories.append(Memory("assembly", 2 * sizes["MAX_W"] * cols, ops.word_bits, 1))
+    ctx.memories.append(Memory("nf_lane1", sizes["N_NF"], ops.word_bits, 1))  # NF's second lane
     ctx.memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
     ctx.memories.append(Memory("trailing", sizes["MAX_W"] * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)

@@ -350,7 +350,7 @@ T G[N_TANGENT];    // gradient A^T b
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
 L COND[N_COND];    // conditionals (R | d), one block per elimination step
-L NF[N_NF];        // update matrices passed to the parent step
+L NF[2][N_NF];     // update matrices passed to the parent step: the t-th step's in NF[t % 2] (the assembly reads one lane while the cascade writes the other)
 L GRAM[N_GRAM] = {};  // per factor instance: packed lower triangle of [A | b]^T [A | b] (structural zeros never written)
 
 // ---- the rest of the DSL's functions (fgc/frontend/functions.py), beside the header's wrappers
