@@ -3,10 +3,11 @@
 // goes. Per step s of the schedule:
 //
 //   Cholesky: bool cholesky_eliminate_all<CFG>(mu)  every step in schedule order: [H | g]
-//             assembled from the step's factors' Grams (while the cascade factors the step
-//             before: cholesky_overlap, two lanes HA[0], HA[1]) and its children's update
-//             matrices, streamed into the cascade, whose drain writes the conditional into
-//             COND and the update matrix into NF; false if singular.
+//             assembled from the step's factors' Grams and its children's update matrices
+//             (while the cascade factors the step before: the cholesky_overlap region, two
+//             lanes HA[0], HA[1]), streamed into the cascade, whose drain writes the
+//             conditional into COND and the update matrix into NF[t % 2] (the t-th step's);
+//             false if singular.
 //   QR:       void qr_stack<CFG>(s, root_mu, bank)  the step's rows into a unit set's banks
 //             (its factors' [A | b], its children's new factors, sqrt(mu) I if CFG::LM).
 //             void qr_commit<CFG>(s, cond, update)  a unit set's result into COND and NF.
@@ -29,11 +30,12 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_NF_ROWS, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP,
 // FACTOR_A_OFF, FACTOR_GRAM_OFF, LEVEL_STEPS, LEVEL_BEGIN, N_LEVELS, N_STEPS (tables); AB, GRAM,
-// COND, NF, PORTS, fgc_sqrt and, for Cholesky, HA and HF (memories). CFG is the kernel's LesConfig: T
-// (the linear solver's scalar), the unit's sizes, LM, the tables' largest trip counts (MAX_STEP_FACTORS,
-// MAX_CHILDREN, TRIP_*) and the (II, depth) of the plan's fill, move and scatter loops (QR:
-// UNIT_SETS, MAX_LEVEL_WIDTH and the (II, depth) ROOT_II, ROOT_DEPTH of sqrt(mu) too); cycles
-// to FGC_CYCLES as the plan prices them. Define FGC_ELIMINATE_CHOLESKY or FGC_ELIMINATE_QR
+// COND, NF (Cholesky: NF[2], two lanes), PORTS, fgc_sqrt and, for Cholesky, HA and HF
+// (memories). CFG is the kernel's LesConfig: T (the linear solver's scalar), the unit's sizes,
+// LM, the tables' largest trip counts (MAX_STEP_FACTORS, MAX_CHILDREN, TRIP_*) and the (II,
+// depth) of the plan's fill, move and scatter loops (QR: UNIT_SETS, MAX_LEVEL_WIDTH and the
+// (II, depth) ROOT_II, ROOT_DEPTH of sqrt(mu) too); cycles to FGC_CYCLES as the plan prices
+// them. Define FGC_ELIMINATE_CHOLESKY or FGC_ELIMINATE_QR
 // first: the other solver's memories do not exist.
 #ifndef FGC_ELIMINATE_H
 #define FGC_ELIMINATE_H

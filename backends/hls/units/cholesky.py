@@ -282,10 +282,11 @@ def build(ctx) -> None:
 
 
 def _frontal(ctx) -> None:
-    """The emitted multifrontal Cholesky: per elimination step (one after another) its frontal
-    [H | g] assembled into HF (left zero by the step before), then fgc_cpe.h's cpe_step (feed ->
-    #CPE taps and CPEs -> drain per round of #CPE pivots), whose drain writes the conditional
-    into COND and the update matrix into NF (back-substitution step by step is
+    """The emitted multifrontal Cholesky: per elimination step its frontal [H | g] streamed from
+    its lane of HA into fgc_cpe.h's cpe_step (feed -> #CPE taps and CPEs -> drain per round of
+    #CPE pivots), whose drain writes the conditional into COND and the update matrix into its NF
+    lane, while the assembler fills the other HA lane with the next step's Grams and children
+    (fgc_eliminate.h's cholesky_overlap; back-substitution step by step is
     :mod:`fgc_backends.hls.units.backsub`'s)."""
     program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
     sizes = ctx.sizes
