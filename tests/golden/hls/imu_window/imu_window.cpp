@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   46 processes, 61 streams (cpe=20)
+//   48 processes, 62 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
 //   process cpe0
@@ -53,6 +53,8 @@
 //   process cpe_tap19
 //   process cpe19
 //   process cpe_drain
+//   process cholesky_assembler
+//   process cholesky_cascade
 //   process backsub_set0
 //   process backsub_load1
 //   process backsub_set1
@@ -118,6 +120,7 @@
 //   stream cpe_recip18 depth=2: cpe_tap18 -> cpe18
 //   stream cpe_tapped19 depth=48: cpe_tap19 -> cpe19
 //   stream cpe_recip19 depth=2: cpe_tap19 -> cpe19
+//   stream frontal depth=139: cholesky_assembler -> cpe_feed
 #include "imu_window.h"
 
 #include "hls_stream.h"
@@ -347,7 +350,7 @@ T G[N_TANGENT];    // gradient A^T b
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
 L COND[N_COND];    // conditionals (R | d), one block per elimination step
-L NF[N_NF];        // update matrices passed to the parent step
+L NF[2][N_NF];     // update matrices passed to the parent step: the t-th step's in NF[t % 2] (the assembly reads one lane while the cascade writes the other)
 L GRAM[N_GRAM] = {};  // per factor instance: packed lower triangle of [A | b]^T [A | b] (structural zeros never written)
 
 // ---- the rest of the DSL's functions (fgc/frontend/functions.py), beside the header's wrappers
@@ -3163,10 +3166,13 @@ struct LesConfig {
 
 // ---- multifrontal Cholesky (paper B): per step the frontal matrix [H | g] (upper triangle,
 // row-major, the gradient in column w) from its factors' Grams and its children's update
-// matrices; cpe_step runs the rounds of the #CPE cascade (one DATAFLOW region per round:
+// matrices, assembled into lane t % 2 of HA (the t-th step) while the cascade factors the step
+// before (fgc_eliminate.h's cholesky_overlap region: cholesky_assembler -> cholesky_cascade, one
+// stream); cpe_step runs the rounds of the #CPE cascade (one DATAFLOW region per round:
 // cpe_feed (+ mu) -> cpe_tap<0>, cpe<0> ... cpe_tap<19>, cpe<19> -> cpe_drain, 61 streams),
 // whose drain writes the conditional into COND and the update matrix into NF.
-L HF[MAX_W][LesConfig::MAX_COLS];  // the step's [H | g]; all zero between steps (the cascade clears what it reads)
+L HA[2][MAX_W][LesConfig::MAX_COLS / 2 + 1][2];  // the assembly's two lanes, (i, c) at [i][c >> 1][c & 1]; all zero between steps (the source clears what it reads)
+L HF[MAX_W][LesConfig::MAX_COLS];  // the rows a round leaves for the next (multi-round steps); all zero between steps
 
 // the elimination driver (fgc_eliminate.h) on these tables and memories
 #define FGC_ELIMINATE_CHOLESKY
