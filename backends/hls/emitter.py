@@ -204,6 +204,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
              if re.fullmatch(r"factor_(\d+|small)_(jacobian|cost)", p.name)}
     noise = {p.name: p.loops[2] for p in phase["rounding_noise"].processes
              if p.name.startswith("noise_")}
+    hgc = {p.name: p for ph in plan.phases if ph.name.startswith("hgc") for p in ph.processes
+           if p.name.startswith("reduce_")}
     blocks = []
     # factor_<b>'s ALLOCATION limits (the plan's unit is what Vitis binds around them)
     allocations = factor_allocation(program, plan.options)
@@ -248,6 +250,15 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         entries = gram_entries(block) if program.solver.linear == "cholesky" else ()
         blocks[-1].gram_p = [p for p, _ in entries]
         blocks[-1].gram_q = [q for _, q in entries]
+        # its HGC loop's iterations an instance and depth: the plan's (units/cholesky.py)
+        gram = hgc.get(f"reduce_{b.index}")
+        count = len(b.instances)
+        blocks[-1].gram_steps = gram.loops[1].trip // count if gram and count else 0
+        blocks[-1].gram_depth = gram.loops[1].depth if gram else 0
+        # per column of A: its variable (k-th of the factor's keys) and offset (the gradient)
+        cols = sorted((v.col + j, v.k, j) for v in b.variables for j in range(v.dim))
+        blocks[-1].gram_col_var = [k for _, k, _ in cols]
+        blocks[-1].gram_col_off = [j for _, _, j in cols]
     # the state update's datapath per variable type: the plan's operators, II and depth
     retract = {}
     for k in context["retracts"]:

@@ -10,7 +10,7 @@ import math
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cost.operators import OperatorTable
-from fgc_backends.hls.plan.loops import _block_shape, kernel_dot, kernel_loop
+from fgc_backends.hls.plan.loops import _block_shape, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
@@ -90,56 +90,84 @@ def gram_ii(program, block: int, lanes: int) -> int:
     return -(-m // max(1, min(lanes, m)))
 
 
-def hgc_operators(program, lanes: int, partials: int) -> list[tuple[int, tuple]]:
-    """(block, operators) of each block type's HGC as accel.cpp.jinja's loops bind them: the
-    Gram entries' loop at :func:`gram_ii` (ceil(m / II) multipliers, ceil((m - 1) / II) adders
-    of its tree), the gradient scatter's adder and the finiteness check's adder and fold of
-    ``partials`` partial sums (partials - 1)."""
+def hgc_operators(program, lanes: int) -> list[tuple[int, tuple]]:
+    """(block, operators) of each block type's HGC as accel.cpp.jinja's gram_entries binds
+    them: its entries' loop at :func:`gram_ii` (ceil(m / II) multipliers, ceil((m - 1) / II)
+    adders of its tree) and the adder that adds the Gram's last row into the gradient in the
+    same loop (the finiteness check of the diagonal entries is a test of their exponent bits:
+    no operator)."""
     out = []
     for i, b in enumerate(program.blocks):
         if not any(f.block == i for f in program.factors):
             continue
         m, ii = b.residual_dim, gram_ii(program, i, lanes)
-        out.append((i, (("add", -(-(m - 1) // ii) + 1 + 1 + (partials - 1)),
-                        ("mul", -(-m // ii)))))
+        out.append((i, (("add", -(-(m - 1) // ii) + 1), ("mul", -(-m // ii)))))
     return out
 
 
-def hgc_loops(program, timing: dict, lanes: int = 32) -> list[Process]:
-    """Cholesky: linearize_all's HGC (reduce_<b>: per instance its m whitened rows from
-    evaluate_<b>'s stream, a row a cycle, into registers, the column map, the Gram's
-    structurally non-zero entries (:func:`gram_entries`) one every :func:`gram_ii` cycles,
-    each the m rows' products folded in a tree (depth Lm + La ceil(log2 m) + read and write)
-    into GRAM, the gradient scatter from GRAM (II 1) and the finiteness check over the diagonal
-    (interleaved partial sums: the dot-product rule)), after G is zeroed (the first process).
-    The structural zeros are never written: GRAM keeps its initial zeros there, so no pass
-    clears it."""
-    n_t = sum(v.dim for v in program.variables)
-    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
+def gram_depth(m: int, timing: dict, t_timing: dict | None = None) -> int:
+    """Depth of one Gram entry of a block of m rows (accel.cpp.jinja's gram_entries): the
+    multiply and the tree of ceil(log2 m) adds (L's latencies, ``timing``), at least the 6
+    cycles of the gradient's address (the instance's tables, the factor's variable, its tangent
+    offset: ROM reads one after another), then the gradient's add (T's adder, ``t_timing``;
+    G read beside the tree) and the reads and writes: max(Lm + La ceil(log2 m), 6) + La(T) + 3."""
     la = timing["acc"][0]
     lm = timing["acc"][1] - la
+    t_la = (t_timing or timing)["acc"][0]
+    tree = math.ceil(math.log2(m)) if m > 1 else 0
+    return max(lm + la * tree, 6) + t_la + 3
+
+
+def gram_steps(program, block: int, t_timing: dict) -> int:
+    """Iterations of gram_entries' loop an instance of block ``block`` takes (its STEPS): its
+    Gram entries (:func:`gram_entries`); with more than one instance at least m + 3 (the next
+    instance's rows are read into the other bank in the first m, and a bank is read no sooner
+    than 3 iterations after it is written) and at least the span of its last row's entries
+    (the += into G) plus the adder's latency and 3, so that two instances' += into one entry of
+    G (two factors of one variable) are a whole add apart."""
+    b = program.blocks[block]
+    entries = gram_entries(b)
+    if sum(1 for f in program.factors if f.block == block) <= 1:
+        return len(entries)
+    last = sum(b.variable_dims)  # the last row of [A | b]'s Gram: b^T A, then b^T b
+    g = [e for e, (p, q) in enumerate(entries) if p == last and q < last]
+    span = g[-1] - g[0] if g else 0
+    return max(len(entries), b.residual_dim + 3, span + t_timing["acc"][0] + 3)
+
+
+def hgc_loops(program, timing: dict, lanes: int = 32, t_timing: dict | None = None
+              ) -> list[Process]:
+    """Cholesky: linearize_all's HGC (reduce_<b>: instance 0's m whitened rows from
+    evaluate_<b>'s stream, a row a cycle, into registers, then one pipelined loop over all
+    instances (:func:`gram_steps` iterations each) of the Gram's structurally non-zero entries
+    (:func:`gram_entries`) one every :func:`gram_ii` cycles, each the m rows' products folded
+    in a tree into GRAM and, for the last row (b^T A), added into the gradient G in the same
+    iteration, the diagonal's checked finite there too (:func:`gram_depth`), the next
+    instance's rows read alongside into the other bank), after G is zeroed (the first
+    process). The structural zeros are never written: GRAM keeps its initial zeros there, so
+    no pass clears it. ``timing``: L's kernel timing; ``t_timing``: T's (the gradient's
+    adder), L's when omitted."""
+    t_timing = t_timing or timing
+    n_t = sum(v.dim for v in program.variables)
+    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
     for i, b in enumerate(program.blocks):
-        m, d, _, _ = _block_shape(b)
+        m, _, _, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
-        tree = math.ceil(math.log2(m)) if m > 1 else 0
-        loops = [kernel_loop("rows", m, "move", timing, n),
-                 kernel_loop("columns", d, "fill", timing, n),
-                 Loop("entries", len(gram_entries(b)), gram_ii(program, i, lanes),
-                      lm + la * tree + 2, n),
-                 kernel_loop("scatter", d, "scatter", timing, n),
-                 kernel_dot("check", d + 1, timing, n)]
+        loops = [kernel_loop("rows", m, "move", timing) if n else Loop("rows", 0, 1, 2),
+                 Loop("entries", n * gram_steps(program, i, t_timing), gram_ii(program, i, lanes),
+                      gram_depth(m, timing, t_timing))]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
 
 
-def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...]
-               ) -> list[Phase]:
+def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...],
+               t_timing: dict | None = None) -> list[Phase]:
     """linearize_all as emitted for Cholesky: ``hgc`` (G zeroed), then per block type b the
     DATAFLOW region linearize_<b> as phase ``hgc_level<b>`` (group ``hgc``): its datapath's
     Jacobian-mode instance loop (``jacobian``'s process factor_<b>_jacobian: whitened rows into
     AB and, a stream word a row, to the HGC) alongside reduce_<b> (:func:`hgc_loops`), so the
     region takes the slower of the two plus the other's fill."""
-    procs = hgc_loops(program, timing, lanes)
+    procs = hgc_loops(program, timing, lanes, t_timing)
     jac = {p.name: p for p in jacobian}
     phases = [Phase("hgc", False, (procs[0],), linear=True)]
     for i, reduce in enumerate(procs[1:]):
@@ -211,14 +239,14 @@ def build(ctx) -> None:
         macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
     if opts.hessian_storage == "frontal":  # as emitted: reduce_<b>'s loops (hgc_loops)
         # one Gram unit per block type (the template instance its reduce_<b> calls)
-        for i, unit_ops in hgc_operators(program, opts.hgc_lanes, ops.add.latency):
+        for i, unit_ops in hgc_operators(program, opts.hgc_lanes):
             ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
         # the datapaths' Jacobian pass becomes part of linearize_<b>'s regions (evaluate_<b>
         # alongside its HGC): its phase is replaced, in place, by hgc_phases
         at = next(k for k, (_, ph) in enumerate(ctx.phases) if ph.name == "factor_jacobian")
         slot, jacobian = ctx.phases[at]
         ctx.phases[at:at + 1] = [(slot, ph) for ph in hgc_phases(
-            program, ctx.les_timing, opts.hgc_lanes, jacobian.processes)]
+            program, ctx.les_timing, opts.hgc_lanes, jacobian.processes, ctx.timing)]
         for i, b in enumerate(program.blocks):  # the row stream (a row a word) and registers
             m, _, padded, _ = _block_shape(b)
             ctx.memories.append(Memory(f"gram_rows_{i}", m * padded, ops.word_bits, 1))
