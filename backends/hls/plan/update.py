@@ -494,8 +494,9 @@ class UpdateModel:
         else:
             view = self._view(first, last, inst)
             phases.append(Phase("hgc", False,
-                                tuple(hgc_loops(view, lt, self.options.hgc_lanes, self.timing)),
-                                linear=True))
+                                tuple(hgc_loops(view, lt, self.options.hgc_lanes, self.timing, {
+                                    b: loop.ii for (b, mode), loop in self.factor_loop.items()
+                                    if mode == "jacobian"})), linear=True))
             phases.append(Phase("assemble", False, tuple(
                 Process(f"assemble{s}", "cpe", tuple(assemble_loops(tables, s, lt)))
                 for s in steps), linear=True))

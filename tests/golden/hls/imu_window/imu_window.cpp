@@ -367,9 +367,9 @@ inline T fgc_guarded_quotient(T a, T b, T g, T t, T f) { return g > t ? T(a / b)
 void factor_0(const T in[42], const T dat[193],
               T raw[480]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=8
+#pragma HLS ALLOCATION operation instances=fmul limit=11
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
     const T t2 = in[32] - dat[65];
@@ -1498,9 +1498,9 @@ void factor_0(const T in[42], const T dat[193],
 void factor_cost_0(const T in[42], const T dat[193],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
     const T t2 = in[32] - dat[65];
@@ -1867,8 +1867,8 @@ void factor_1(const T in[12], const T dat[13],
 void factor_cost_1(const T in[12], const T dat[13],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=2
+#pragma HLS ALLOCATION operation instances=fmul limit=2
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
@@ -1941,8 +1941,8 @@ void factor_cost_1(const T in[12], const T dat[13],
 void factor_2(const T in[3], const T dat[4],
               T raw[12]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=3
+#pragma HLS ALLOCATION operation instances=fadd limit=1
+#pragma HLS ALLOCATION operation instances=fmul limit=1
     raw[0] = T(1);
     raw[3] = -dat[0] + in[0];
     raw[5] = T(1);
@@ -1954,8 +1954,8 @@ void factor_2(const T in[3], const T dat[4],
 void factor_cost_2(const T in[3], const T dat[4],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=2
+#pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
@@ -1969,8 +1969,8 @@ void factor_cost_2(const T in[3], const T dat[4],
 void factor_3(const T in[6], const T dat[7],
               T raw[48]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=1
+#pragma HLS ALLOCATION operation instances=fmul limit=1
     raw[0] = T(1);
     raw[6] = -dat[0] + in[0];
     raw[9] = T(1);
@@ -2069,21 +2069,50 @@ struct GramRow { T word[32]; };
 // loop of N x STEPS iterations (no drain between instances). Iteration (i, e): entry e of
 // instance i's packed lower triangle, the structurally non-zero entries (p, q), q <= p (the
 // block's tables P, Q), one every GII cycles, each the dot product of columns p and q over the
-// instance's ROWS rows: ROWS products folded in a binary tree (La ceil(log2 ROWS) deep), so at
-// II GII Vitis binds ceil(ROWS / GII) multipliers and ceil((ROWS - 1) / GII) adders (the plan's
-// hgc_<b>), and no accumulator is carried from one entry to the next. Written into GRAM at
-// FACTOR_GRAM_OFF[f] + p (p + 1) / 2 + q (entries left out are structural zeros, never written:
-// GRAM keeps its initial zeros there); an entry of the last row (b^T A, column q < COLS - 1)
-// also through one adder into the gradient G at its tangent entry (VAR_T_OFF of the factor's
-// variable CV[q], plus CO[q]); a diagonal entry (p == q, a column's squared norm) checked
-// finite (an infinite or NaN entry of [A | b] makes its column's diagonal so: no operator).
-// The same iteration's first ROWS e read the next instance's rows from the stream into the
-// other bank of `ab` (two banks of registers, partitioned completely by the caller: a whole
-// row written, two columns of every row read a cycle), so an instance costs its STEPS
+// instance's ROWS rows (gram_entry: ROWS products folded in a binary tree, La ceil(log2 ROWS)
+// deep, so at II GII Vitis binds ceil(ROWS / GII) multipliers and ceil((ROWS - 1) / GII)
+// adders: the plan's hgc_<b>; no accumulator is carried from one entry to the next). Written
+// into GRAM at FACTOR_GRAM_OFF[f] + p (p + 1) / 2 + q (entries left out are structural zeros,
+// never written: GRAM keeps its initial zeros there); an entry of the last row (b^T A, column
+// q < COLS - 1) also through one adder into the gradient G at its tangent entry (VAR_T_OFF of
+// the factor's variable CV[q], plus CO[q]); a diagonal entry (p == q, a column's squared norm)
+// checked finite (an infinite or NaN entry of [A | b] makes its column's diagonal so: no
+// operator). The same iteration's first ROWS e read the next instance's rows from the stream
+// into the other bank of `ab` (two banks of registers, partitioned completely by the caller: a
+// whole row written, two columns of every row read a cycle), so an instance costs its STEPS
 // iterations: its entries, at least ROWS + 3 (a bank is read no sooner than 3 iterations after
 // it is written: the DEPENDENCE on ab is false) and at least the distance that keeps two
 // instances' += into G (which may share a variable) the adder's latency apart (the plan's
-// gram_steps: the DEPENDENCE on G is false). The caller has read instance 0's rows into bank 0.
+// gram_steps: the DEPENDENCE on G is false; every entry of every instance has its own word of
+// GRAM, so none on GRAM either). The caller has read instance 0's rows into bank 0.
+// gram_entries_two adds a second lane of K multipliers (lane B: entries PB, QB, over the first
+// K rows, the only rows that touch both their columns) beside the first, two entries an
+// iteration (GRAM's two ports, one write each); G's += stay in the first lane.
+template <int PADDED, int ROWS, int K>
+L gram_entry(const T bank[ROWS * PADDED], int p, int q) {
+#pragma HLS INLINE
+    L prod[K];
+    for (int r = 0; r < K; ++r) prod[r] = L(bank[r * PADDED + p]) * L(bank[r * PADDED + q]);
+    return fgc_units::fold_partials<L, K>(prod);
+}
+
+template <int ROWS, int COLS, int N>
+void gram_store(const int INST[N], const int CV[COLS - 1], const int CO[COLS - 1], int i, int p,
+                int q, L v, bool& finite) {
+#pragma HLS INLINE
+    const int f = INST[i];
+    GRAM[FACTOR_GRAM_OFF[f] + p * (p + 1) / 2 + q] = v;
+    if (p == q) finite = finite && fgc_isfinite(T(v));
+    if (p == COLS - 1 && q < COLS - 1) G[VAR_T_OFF[FACTOR_VARS[FACTOR_VAR_BEGIN[f] + CV[q]]] + CO[q]] += T(v);
+}
+
+template <int PADDED, int ROWS>
+void gram_next_row(hls::stream<GramRow>& rows, T bank[ROWS * PADDED], int r) {
+#pragma HLS INLINE
+    const GramRow row = rows.read();
+    for (int c = 0; c < PADDED; ++c) bank[r * PADDED + c] = row.word[c];
+}
+
 template <int PADDED, int ROWS, int COLS, int ENTRIES, int STEPS, int N, int GII>
 bool gram_entries(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const int INST[N],
                   const int P[ENTRIES], const int Q[ENTRIES], const int CV[COLS - 1],
@@ -2093,21 +2122,44 @@ bool gram_entries(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const int 
     for (int t = 0; t < N * STEPS; ++t) {
 #pragma HLS PIPELINE II=GII
 #pragma HLS DEPENDENCE variable=G inter false
+#pragma HLS DEPENDENCE variable=GRAM inter false
 #pragma HLS DEPENDENCE variable=ab inter false
         const int cur = i % 2;
-        if (e < ROWS && i + 1 < N) {  // the next instance's row e into the other bank
-            const GramRow row = rows.read();
-            for (int c = 0; c < PADDED; ++c) ab[1 - cur][e * PADDED + c] = row.word[c];
-        }
+        if (e < ROWS && i + 1 < N) gram_next_row<PADDED, ROWS>(rows, ab[1 - cur], e);
         if (e < ENTRIES) {
-            const int f = INST[i];
             const int p = P[e], q = Q[e];
-            L prod[ROWS];
-            for (int r = 0; r < ROWS; ++r) prod[r] = L(ab[cur][r * PADDED + p]) * L(ab[cur][r * PADDED + q]);
-            const L v = fgc_units::fold_partials<L, ROWS>(prod);
-            GRAM[FACTOR_GRAM_OFF[f] + p * (p + 1) / 2 + q] = v;
+            gram_store<ROWS, COLS, N>(INST, CV, CO, i, p, q, gram_entry<PADDED, ROWS, ROWS>(ab[cur], p, q), finite);
+        }
+        if (++e == STEPS) {
+            e = 0;
+            ++i;
+        }
+    }
+    return finite;
+}
+
+template <int PADDED, int ROWS, int COLS, int ENTRIES, int ENTRIES_B, int K, int STEPS, int N>
+bool gram_entries_two(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const int INST[N],
+                      const int P[ENTRIES], const int Q[ENTRIES], const int PB[ENTRIES_B],
+                      const int QB[ENTRIES_B], const int CV[COLS - 1], const int CO[COLS - 1]) {
+    bool finite = true;
+    int i = 0, e = 0;
+    for (int t = 0; t < N * STEPS; ++t) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=G inter false
+#pragma HLS DEPENDENCE variable=GRAM inter false
+#pragma HLS DEPENDENCE variable=ab inter false
+        const int cur = i % 2;
+        if (e < ROWS && i + 1 < N) gram_next_row<PADDED, ROWS>(rows, ab[1 - cur], e);
+        if (e < ENTRIES) {
+            const int p = P[e], q = Q[e];
+            gram_store<ROWS, COLS, N>(INST, CV, CO, i, p, q, gram_entry<PADDED, ROWS, ROWS>(ab[cur], p, q), finite);
+        }
+        if (e < ENTRIES_B) {  // lane B: never the last row, so never into G
+            const int p = PB[e], q = QB[e];
+            const L v = gram_entry<PADDED, ROWS, K>(ab[cur], p, q);
+            GRAM[FACTOR_GRAM_OFF[INST[i]] + p * (p + 1) / 2 + q] = v;
             if (p == q) finite = finite && fgc_isfinite(T(v));
-            if (p == COLS - 1 && q < COLS - 1) G[VAR_T_OFF[FACTOR_VARS[FACTOR_VAR_BEGIN[f] + CV[q]]] + CO[q]] += T(v);
         }
         if (++e == STEPS) {
             e = 0;
@@ -2401,7 +2453,44 @@ void load_rows_0(int f, T ab[480]) {
 }
 
 // block 0: the (p, q) of its Gram's structurally non-zero entries, q <= p, in packed order (gram_entries)
-const int BLOCK0_GRAM_P[496] = {
+const int BLOCK0_GRAM_P[248] = {
+    18, 19, 19, 20, 20, 20, 21, 21, 21, 21, 22, 22, 22, 22, 22, 22,
+    22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 23, 23, 23, 23,
+    23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23,
+    23, 23, 23, 23, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24,
+    24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 25, 25, 25,
+    25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25,
+    25, 25, 25, 25, 25, 25, 25, 26, 26, 26, 26, 26, 26, 26, 26, 26,
+    26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26,
+    26, 26, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27,
+    27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 28, 28,
+    28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28,
+    28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 29, 29, 29, 29, 29,
+    29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29,
+    29, 29, 29, 29, 29, 29, 29, 29, 29, 30, 30, 30, 30, 30, 30, 30,
+    30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30,
+    30, 30, 30, 30, 30, 30, 30, 30,
+};
+const int BLOCK0_GRAM_Q[248] = {
+    18, 18, 19, 18, 19, 20, 18, 19, 20, 21, 5, 6, 7, 8, 9, 10,
+    11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 0, 1, 2, 3,
+    4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19,
+    20, 21, 22, 23, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
+    12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 0, 1, 2,
+    3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18,
+    19, 20, 21, 22, 23, 24, 25, 0, 1, 2, 3, 4, 5, 6, 7, 8,
+    9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24,
+    25, 26, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13,
+    14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 0, 1,
+    2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17,
+    18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 0, 1, 2, 3, 4,
+    5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20,
+    21, 22, 23, 24, 25, 26, 27, 28, 29, 0, 1, 2, 3, 4, 5, 6,
+    7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22,
+    23, 24, 25, 26, 27, 28, 29, 30,
+};
+// block 0: the entries of lane B (gram_entries_two: the first 9 rows touch both their columns, no other)
+const int BLOCK0_GRAM_PB[248] = {
     0, 1, 1, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 5,
     5, 5, 5, 5, 5, 6, 6, 6, 6, 6, 6, 6, 7, 7, 7, 7,
     7, 7, 7, 7, 8, 8, 8, 8, 8, 8, 8, 8, 8, 9, 9, 9,
@@ -2413,28 +2502,13 @@ const int BLOCK0_GRAM_P[496] = {
     15, 15, 15, 15, 15, 15, 15, 15, 16, 16, 16, 16, 16, 16, 16, 16,
     16, 16, 16, 16, 16, 16, 16, 16, 16, 17, 17, 17, 17, 17, 17, 17,
     17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 18, 18, 18, 18, 18,
-    18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 19, 19,
-    19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19,
-    19, 19, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20,
-    20, 20, 20, 20, 20, 20, 20, 21, 21, 21, 21, 21, 21, 21, 21, 21,
-    21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 22, 22, 22,
-    22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22,
-    22, 22, 22, 22, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23,
-    23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 24, 24, 24, 24,
-    24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24,
-    24, 24, 24, 24, 24, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25,
-    25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 26,
-    26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26,
-    26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 27, 27, 27, 27, 27, 27,
-    27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27,
-    27, 27, 27, 27, 27, 27, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28,
-    28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28,
-    28, 28, 28, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29,
-    29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29,
-    29, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30,
-    30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30,
+    18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 19, 19, 19,
+    19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 20,
+    20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20,
+    20, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21,
+    21, 21, 21, 22, 22, 22, 22, 22,
 };
-const int BLOCK0_GRAM_Q[496] = {
+const int BLOCK0_GRAM_QB[248] = {
     0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4, 0,
     1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6, 0, 1, 2, 3,
     4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1, 2,
@@ -2446,26 +2520,11 @@ const int BLOCK0_GRAM_Q[496] = {
     8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7,
     8, 9, 10, 11, 12, 13, 14, 15, 16, 0, 1, 2, 3, 4, 5, 6,
     7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 0, 1, 2, 3, 4,
-    5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 0, 1,
-    2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17,
-    18, 19, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13,
-    14, 15, 16, 17, 18, 19, 20, 0, 1, 2, 3, 4, 5, 6, 7, 8,
-    9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 0, 1, 2,
-    3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18,
-    19, 20, 21, 22, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
-    12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 0, 1, 2, 3,
-    4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19,
-    20, 21, 22, 23, 24, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,
-    11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 0,
+    5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 0, 1, 2,
+    3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 0,
     1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16,
-    17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 0, 1, 2, 3, 4, 5,
-    6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21,
-    22, 23, 24, 25, 26, 27, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9,
-    10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25,
-    26, 27, 28, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12,
-    13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28,
-    29, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
-    15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30,
+    17, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
+    15, 16, 17, 0, 1, 2, 3, 4,
 };
 // block 0: per column of A its variable (k-th of the factor's) and the column's offset in it (gram_entries' gradient)
 const int BLOCK0_COL_VAR[30] = {
@@ -2477,7 +2536,7 @@ const int BLOCK0_COL_OFF[30] = {
     1, 2, 0, 1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5,
 };
 // block 0's HGC: instance 0's 15 whitened rows from evaluate_0's stream, a row a cycle, into
-// bank 0 of the registers, then gram_entries over all 7 instances (496 iterations each: its
+// bank 0 of the registers, then gram_entries over all 7 instances (248 iterations each: its
 // Grams into GRAM, the last rows into the gradient, the diagonals checked, the next instance's
 // rows read alongside); `finite` false if not finite
 void reduce_0(hls::stream<GramRow>& rows, bool& finite) {
@@ -2489,9 +2548,10 @@ void reduce_0(hls::stream<GramRow>& rows, bool& finite) {
         for (int c = 0; c < 32; ++c) ab[0][r * 32 + c] = row.word[c];
     }
     FGC_CYCLES("reduce_0", 0, "rows", 15, 1, 2);
-    finite = gram_entries<32, 15, 31, 496, 496, 7, 1>(
-        rows, ab, BLOCK0_INSTANCES, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, BLOCK0_COL_VAR, BLOCK0_COL_OFF);
-    FGC_CYCLES("reduce_0", 0, "entries", 3472, 1, 26);
+    finite = gram_entries_two<32, 15, 31, 248, 248, 9, 248, 7>(
+        rows, ab, BLOCK0_INSTANCES, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, BLOCK0_GRAM_PB, BLOCK0_GRAM_QB,
+        BLOCK0_COL_VAR, BLOCK0_COL_OFF);
+    FGC_CYCLES("reduce_0", 0, "entries", 1736, 1, 26);
 }
 
 // block 0's linearisation, one DATAFLOW region: evaluate_0 (the datapath: the whitened rows
