@@ -10,7 +10,7 @@ import math
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cost.operators import OperatorTable
-from fgc_backends.hls.plan.loops import _block_shape, kernel_loop
+from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
@@ -209,7 +209,8 @@ def hgc_loops(program, timing: dict, lanes: int = 32, t_timing: dict | None = No
     T's (the gradient's adder), L's when omitted; ``jac_ii``: :func:`gram_lanes`'."""
     t_timing = t_timing or timing
     n_t = sum(v.dim for v in program.variables)
-    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
+    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", _ported(n_t), "fill",
+                                                                timing),))]
     for i, b in enumerate(program.blocks):
         m, _, _, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)

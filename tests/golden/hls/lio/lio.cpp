@@ -3219,11 +3219,13 @@ T cost_of_small(const T x[N_X], T total) {
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
     FGC_PHASE("gradient");
-    for (int i = 0; i < N_TANGENT; ++i) {
+    for (int i = 0; i < N_TANGENT; i += PORTS) {  // PORTS words a cycle (G's two ports)
 #pragma HLS PIPELINE II=1
-        G[i] = T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < N_TANGENT) G[i + h] = T(0);
+        }
     }
-    FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
+    FGC_CYCLES("gradient", 0, "zero", (N_TANGENT + PORTS - 1) / PORTS, 1, 1);
     FGC_PHASE("factor_jacobian");
     evaluate_0(x);
     evaluate_small(x);
