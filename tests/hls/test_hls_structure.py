@@ -295,7 +295,8 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     (overlap,) = read_network(_texts(out, "w100", "fgc_eliminate.h")[1])
     assert overlap.processes == ("cholesky_assembler", "cholesky_cascade")
     header += _texts(out, "w100", "fgc_eliminate.h")[1]
-    assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == (2 * cpe + 8, 3 * cpe + 2)
+    assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == \
+        (2 * cpe + 8, 3 * cpe + 2)
     assert procs[-4:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
     assert all(f"//   process {p}\n" in kernel for p in procs[-4:])
     assert f"//   stream cpe_link{cpe} " in kernel
