@@ -5,9 +5,11 @@
 //                        stream_in<CFG>(m, ...) the call's keyframe into slot m
 //   FGC_STREAM_MARGINAL  marginalize<CFG>()     slot 0's elimination at the optimum -> tau, the
 //                        write_tau<CFG>(rows)   factor written into slot 1's prior
-//   FGC_STREAM_KEPT      reexpress<CFG>(c), keep<CFG>(c), kept_walk<CFG>(first): the kept
+//   FGC_STREAM_KEPT      reexpress<CFG>(c, x0), keep<CFG>(c), kept_walk<CFG>(first, x0): the kept
 //                        conditionals, re-expressed, stored and walked back from the window
-//                        (kept_matvec<CFG>, kept_conditional<CFG> inside)
+//                        (kept_matvec<CFG>, kept_conditional<CFG> inside); with the marginal,
+//                        marginal_and_kept<CFG>: the marginal and the kept net's re-expression
+//                        and walk side by side (one DATAFLOW region, two processes)
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
 //   FGC_STREAM_WINDOW    stream_call<CFG>(op, x_in, data, x_out, [x_kept,] errors, info): the
@@ -197,22 +199,18 @@ void kept_matvec(const L m[STREAM_KF_T * STREAM_KF_T], const L v[STREAM_KF_T], L
     FGC_CYCLES("kept", 0, "matvec", STREAM_KF_T * STREAM_KF_T, CFG::MV_II, CFG::L_ACC_DEPTH);
 }
 
-// The newest kept conditional c, re-expressed at its parent's new estimate x (the window's slot 0):
+// The newest kept conditional c, re-expressed at its parent's new estimate x (the window's slot 0,
+// copied out of X before the call):
 // d_c -= S_c Log(next^-1 x), S_c = S_c J with J the derivative of Log(next^-1 (x (+) delta)) by
 // central differences of step STREAM_H (the simulator's Chain.local_jacobian); next_c = x.
 template <class CFG>
-void reexpress(int c) {
+void reexpress(int c, const T x[STREAM_KF_X]) {
     FGC_PHASE("kept");
     const T h = T(STREAM_H);
-    T x[STREAM_KF_X], base[STREAM_KF_T], plus[STREAM_KF_T], minus[STREAM_KF_T], step[STREAM_KF_T];
+    T base[STREAM_KF_T], plus[STREAM_KF_T], minus[STREAM_KF_T], step[STREAM_KF_T];
     T moved[STREAM_KF_X];
     L jt[STREAM_KF_T][STREAM_KF_T];  // J transposed: column k of J in row k
     L local[STREAM_KF_T], srow[STREAM_KF_T];
-    for (int k = 0; k < STREAM_KF_X; ++k) {
-#pragma HLS PIPELINE II=1
-        x[k] = X[SLOT_X[k]];
-    }
-    FGC_CYCLES("kept", 0, "parent_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     keyframe_local(KEPT_NEXT + c * STREAM_KF_X, x, base);
     FGC_KEPT_PASS("log");
     for (int i = 0; i < STREAM_KF_T; ++i) {
@@ -291,15 +289,15 @@ void keep(int c) {
 }
 
 // Back-substitution through the kept conditionals c = first - 1 ... 0 from the window's slot 0
-// (keyframe first): x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
+// (keyframe first, x0: its estimate copied out of X): x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
 template <class CFG>
-void kept_walk(int first) {
+void kept_walk(int first, const T x0[STREAM_KF_X]) {
     FGC_PHASE("kept");
     T parent[STREAM_KF_X], local_t[STREAM_KF_T], out[STREAM_KF_X], delta_t[STREAM_KF_T];
     L local[STREAM_KF_T], delta[STREAM_KF_T], row[STREAM_KF_T];
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-        parent[k] = X[SLOT_X[k]];
+        parent[k] = x0[k];
     }
     FGC_CYCLES("kept", 0, "parent_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     for (int c = first - 1; c >= 0; --c) {
@@ -337,6 +335,36 @@ void kept_walk(int first) {
         FGC_CYCLES("kept", 0, "estimate_out", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     }
 }
+
+#ifdef FGC_STREAM_MARGINAL
+// The marginal and the kept net side by side: once the window has solved, slot 0's marginal
+// (linearisation, its QR step at mu = 0 on unit set 0, tau written into DATA_BUF) needs nothing
+// of the kept net, and the kept net's update (the newest conditional re-expressed at slot 0's
+// estimate, the walk back through the kept conditionals below it) nothing of the marginal's: two
+// processes of one DATAFLOW region, each on its own memories and datapaths (the marginal: X,
+// DATA_BUF, the factor datapaths, unit set 0; the kept net: the KEPT_* memories, X_KEPT, the
+// keyframe's Log and retraction kernels), slot 0's estimate copied out of X before the region.
+// keep(first) reads the marginal's conditional and writes kept memory, so it follows the region.
+template <class CFG>
+void marginal_task(int m, int code[1]) {
+    FGC_TASK();
+    code[0] = m == STREAM_W ? (marginalize<CFG>() ? 1 : 2) : 0;
+}
+
+template <class CFG>
+void kept_task(int first, const T x0[STREAM_KF_X]) {
+    FGC_TASK();
+    if (first > 0) reexpress<CFG>(first - 1, x0);
+    kept_walk<CFG>(first, x0);
+}
+
+template <class CFG>
+void marginal_and_kept(int m, int first, const T x0[STREAM_KF_X], int code[1]) {
+#pragma HLS DATAFLOW
+    marginal_task<CFG>(m, code);
+    kept_task<CFG>(first, x0);
+}
+#endif  // FGC_STREAM_MARGINAL
 #endif  // FGC_STREAM_KEPT
 
 #ifdef FGC_STREAM_BATCH
@@ -461,14 +489,25 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #endif
         CFG::lm_solve(errors, info);
 #ifdef FGC_STREAM_KEPT
-        if (first > 0) reexpress<CFG>(first - 1);
-#endif
+        FGC_PHASE("kept");
+        T x0[STREAM_KF_X];  // slot 0's estimate: the kept net's parent
+        for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+            x0[k] = X[SLOT_X[k]];
+        }
+        FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 #ifdef FGC_STREAM_MARGINAL
-        if (m == STREAM_W) marginal = marginalize<CFG>() ? 1 : 2;
-#endif
-#ifdef FGC_STREAM_KEPT
+        int code[1];
+        marginal_and_kept<CFG>(m, first, x0, code);
+        FGC_TASKS_JOIN();
+        marginal = code[0];
         if (m == STREAM_W && marginal == 1) keep<CFG>(first);
-        kept_walk<CFG>(first);
+#else
+        if (first > 0) reexpress<CFG>(first - 1, x0);
+        kept_walk<CFG>(first, x0);
+#endif
+#elif defined(FGC_STREAM_MARGINAL)
+        if (m == STREAM_W) marginal = marginalize<CFG>() ? 1 : 2;
 #endif
 #ifdef FGC_STREAM_BATCH
     }

@@ -254,8 +254,8 @@ class WindowUpdateModel:
             matvec = Loop("matvec", n * n, mv_ii, lt["acc"][1])
             scatter = kernel_loop("scatter", n, "scatter", lt)
             columns = tuple(Loop("column", i, 1, lt["acc"][1]) for i in range(1, n))
-            out += [_stream_phase("kept_reexpress", move("x", kf), one,
-                                  replace(one, repeat=4 * n),
+            out += [_stream_phase("kept_slot0", move("x", kf)),
+                    _stream_phase("kept_reexpress", one, replace(one, repeat=4 * n),
                                   Loop("difference", n, 1, kt["div"][1], n), matvec, scatter,
                                   move("row", n, n), replace(matvec, repeat=n), move("x", kf)),
                     _stream_phase("kept_store", move("cond", n * (2 * n + 1)), move("x", kf)),
@@ -429,6 +429,7 @@ class WindowUpdateModel:
                                   f"the window's {g} phase, once per {trigger}" + (
                                       " (on its rows non-zero in this update)" if g == "qr"
                                       else "")))
+        marginal = 0
         if m == lay.window and self.layout_marginal:
             marginal = (self.group["factor_jacobian"] + self.group["gradient"]
                         + st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True))
@@ -436,19 +437,29 @@ class WindowUpdateModel:
                               "keyframe leaving: the window linearised at its optimum, slot 0's "
                               "QR step at μ = 0 on unit set 0, τ's signs, mean and words"))
         if lay.kept:
+            terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
+                              "slot 0's estimate copied out of X: the kept net's parent"))
+            kept = st["stream_kept_walk_base"] + first * st["stream_kept_walk_each"]
             if first > 0:
+                kept += st["stream_kept_reexpress"]
                 terms.append(Term("kept_reexpress", st["stream_kept_reexpress"], 1, False,
                                   f"keyframe {first - 1}'s kept conditional re-expressed at "
                                   "its parent's new estimate: Log, its central-difference "
                                   "Jacobian (4n + 1 datapath passes), S·Log and S·J"))
-            if m == lay.window and self.layout_marginal:
-                terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
-                                  f"keyframe {first}'s conditional (R | S | d) and its "
-                                  "linearisation points kept"))
             terms.append(Term("kept_walk", st["stream_kept_walk_base"]
                               + first * st["stream_kept_walk_each"], 1,
                               False, f"the walk back through {first} kept conditionals: per "
                                      "keyframe a Log, S·Log, R⁻¹ by rows, a retraction"))
+            if self.layout_marginal and min(marginal, kept):
+                # fgc_stream.h's marginal_and_kept: the two as processes of one DATAFLOW region
+                terms.append(Term("overlap", -min(marginal, kept), 1, False,
+                                  "the marginal and the kept net (re-expression and walk) run "
+                                  "side by side (one DATAFLOW region, no memory between them): "
+                                  "the shorter of the two is hidden behind the longer"))
+            if m == lay.window and self.layout_marginal:
+                terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
+                                  f"keyframe {first}'s conditional (R | S | d) and its "
+                                  "linearisation points kept"))
             terms += self._kept_out_terms(keyframe)
         terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
         return UpdatePrice(keyframe, "incremental" if lay.kept else "fixed-lag", first,
