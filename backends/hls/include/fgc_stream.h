@@ -3,7 +3,7 @@
 //
 //   FGC_STREAM_WINDOW    stream_shift<CFG>()    every slot down one (X and DATA_BUF keep the window)
 //                        stream_in<CFG>(m, ...) the call's keyframe into slot m
-//   FGC_STREAM_MARGINAL  marginalize<CFG>()     slot 0's elimination at the optimum -> tau, the
+//   FGC_STREAM_MARGINAL  marginalize<CFG>(cur)  slot 0's elimination at the optimum -> tau, the
 //                        write_tau<CFG>(rows)   factor written into slot 1's prior
 //   FGC_STREAM_KEPT      reexpress<CFG>(c, x0), keep<CFG>(c), kept_walk<CFG>(first, x0): the kept
 //                        conditionals, re-expressed, stored and walked back from the window
@@ -160,11 +160,16 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)]) {
 // slot 1 ([A | b], upper triangular from the QR unit), signed to a positive diagonal, its mean
 // A^-1 b by back-substitution, written with slot 1's estimate as its linearisation point into
 // slot 1's prior (which the next call's shift moves to slot 0). False, nothing written, if the
-// window is not finite at its optimum, slot 0 is rank deficient or tau is singular.
+// window is not finite at its optimum, slot 0 is rank deficient or tau is singular. `current`:
+// the window's rows (AB) are already its linearisation at X, the optimum (LM converged without
+// moving since its last linearisation: CFG::at_linearisation), so they are not computed again.
 template <class CFG>
-bool marginalize() {
+bool marginalize(bool current) {
     FGC_EVENT("marginal");
-    if (!linearize_all(X)) return false;
+    if (!current) {
+        FGC_EVENT("relinearize");
+        if (!linearize_all(X)) return false;
+    }
     if (!CFG::leaf_step()) return false;
     FGC_PHASE("marginal");
     const int n0 = STEP_NF_OFF[STREAM_LEAF_STEP];
@@ -346,9 +351,9 @@ void kept_walk(int first, const T x0[STREAM_KF_X]) {
 // keyframe's Log and retraction kernels), slot 0's estimate copied out of X before the region.
 // keep(first) reads the marginal's conditional and writes kept memory, so it follows the region.
 template <class CFG>
-void marginal_task(int m, int code[1]) {
+void marginal_task(int m, bool current, int code[1]) {
     FGC_TASK();
-    code[0] = m == STREAM_W ? (marginalize<CFG>() ? 1 : 2) : 0;
+    code[0] = m == STREAM_W ? (marginalize<CFG>(current) ? 1 : 2) : 0;
 }
 
 template <class CFG>
@@ -359,9 +364,9 @@ void kept_task(int first, const T x0[STREAM_KF_X]) {
 }
 
 template <class CFG>
-void marginal_and_kept(int m, int first, const T x0[STREAM_KF_X], int code[1]) {
+void marginal_and_kept(int m, bool current, int first, const T x0[STREAM_KF_X], int code[1]) {
 #pragma HLS DATAFLOW
-    marginal_task<CFG>(m, code);
+    marginal_task<CFG>(m, current, code);
     kept_task<CFG>(first, x0);
 }
 #endif  // FGC_STREAM_MARGINAL
@@ -488,6 +493,8 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     } else {
 #endif
         CFG::lm_solve(errors, info);
+        const bool current = CFG::at_linearisation(info);  // AB: the window linearised at X
+        (void)current;
 #ifdef FGC_STREAM_KEPT
         FGC_PHASE("kept");
         T x0[STREAM_KF_X];  // slot 0's estimate: the kept net's parent
@@ -498,7 +505,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 #ifdef FGC_STREAM_MARGINAL
         int code[1];
-        marginal_and_kept<CFG>(m, first, x0, code);
+        marginal_and_kept<CFG>(m, current, first, x0, code);
         FGC_TASKS_JOIN();
         marginal = code[0];
         if (m == STREAM_W && marginal == 1) keep<CFG>(first);
@@ -507,7 +514,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         kept_walk<CFG>(first, x0);
 #endif
 #elif defined(FGC_STREAM_MARGINAL)
-        if (m == STREAM_W) marginal = marginalize<CFG>() ? 1 : 2;
+        if (m == STREAM_W) marginal = marginalize<CFG>(current) ? 1 : 2;
 #endif
 #ifdef FGC_STREAM_BATCH
     }

@@ -385,7 +385,8 @@ class WindowUpdateModel:
         """The solve's event counts from its iterations: each iteration a linearisation, a
         solve, a retraction, a cost pass and (but the last, which converged) an accepted step;
         the start's cost pass; ``rejected`` trial steps add a solve, a retraction and a cost
-        pass each."""
+        pass each. (LM then stopped where it last linearised: a leaving keyframe's marginal
+        reuses those rows, no ``relinearize``.)"""
         k = int(iterations)
         return {"linearize": k, "solve": k + rejected, "retract": k + rejected,
                 "cost": 1 + k + rejected, "accept": max(0, k - 1), "noise": noise}
@@ -431,11 +432,18 @@ class WindowUpdateModel:
                                       else "")))
         marginal = 0
         if m == lay.window and self.layout_marginal:
-            marginal = (self.group["factor_jacobian"] + self.group["gradient"]
+            # the window's rows at its optimum: computed again only if LM took a step after its
+            # last linearisation (fgc_stream.h, marginalize; counted: the "relinearize" event)
+            relin = ev.get("relinearize")
+            if relin is None:
+                relin = int(ev.get("accept", 0) >= ev.get("linearize", 0))
+            marginal = (relin * (self.group["factor_jacobian"] + self.group["gradient"])
                         + st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True))
             terms.append(Term("marginal", marginal, 1, False,
-                              "keyframe leaving: the window linearised at its optimum, slot 0's "
-                              "QR step at μ = 0 on unit set 0, τ's signs, mean and words"))
+                              "keyframe leaving: " + ("the window linearised at its optimum, "
+                                                      if relin else "")
+                              + "slot 0's QR step at μ = 0 on unit set 0, τ's signs, mean and "
+                              "words"))
         if lay.kept:
             terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
                               "slot 0's estimate copied out of X: the kept net's parent"))
