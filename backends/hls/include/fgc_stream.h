@@ -595,7 +595,14 @@ void batch_kernel_solve(int j, int tau_slot, T x_io[STREAM_SLOTS * STREAM_KF_X],
     }
     FGC_CYCLES("batch", 0, "x_in", (j + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     CFG::lm_solve(errors, info);
-    const bool ok = CFG::linearize() && CFG::eliminate();
+    // the chain's rows at the optimum: AB already holds them if LM stopped where it last
+    // linearised (CFG::at_linearisation), else they are computed again
+    bool ok = true;
+    if (!CFG::at_linearisation(info)) {
+        FGC_EVENT("relinearize");
+        ok = CFG::linearize();
+    }
+    ok = ok && CFG::eliminate();
     info[3] = ok ? 1 : 0;
     FGC_PHASE("batch_out");
     for (int e = 0; e < (j + 1) * STREAM_KF_X; ++e) {

@@ -192,6 +192,16 @@ def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf
                                                           unit))).cycles
 
 
+def _relinearize(ev: dict) -> int:
+    """1 if the marginal (or a batch step's store) linearises the window (the chain) at its
+    optimum again: LM took a step after its last linearisation (fgc_stream.h); counted, the
+    ``relinearize`` event, else from the events: an accepted step in every iteration."""
+    relin = ev.get("relinearize")
+    if relin is None:
+        relin = int(ev.get("accept", 0) >= ev.get("linearize", 0))
+    return int(relin)
+
+
 class WindowUpdateModel:
     """The price of each call of the on-chip window's design (``<name>_stream``): the
     accelerator plan of the emitted template (:func:`fgc_backends.hls.emitter.accel_plan`, the
@@ -366,11 +376,13 @@ class WindowUpdateModel:
                 each = qr_damped if g == "qr" else group[g]
                 terms.append(Term(f"batch_{g}", each, times, False,
                                   f"the batch kernel's {g} phase, once per {trigger}"))
-        store = (group["factor_jacobian"] + group["gradient"] + group["qr_stack"] + qr_store
-                 + group["qr_commit"])
+        relin = _relinearize(ev)
+        store = (relin * (group["factor_jacobian"] + group["gradient"]) + group["qr_stack"]
+                 + qr_store + group["qr_commit"])
         terms.append(Term("batch_store", store, 1, False,
-                          f"keyframes 0 … {j} linearised at the optimum and eliminated serially "
-                          "at μ = 0 (their conditionals and the factors they pass)"))
+                          f"keyframes 0 … {j} " + ("linearised at the optimum and " if relin
+                                                   else "") + "eliminated serially at μ = 0 "
+                          "(their conditionals and the factors they pass)"))
         terms.append(Term("batch_out", st[f"stream_batch{j}_out"], 1, False,
                           "the optimum, the conditionals and τ out of the batch kernel, the "
                           "optimum scattered to the kept memory and the window"))
@@ -434,9 +446,7 @@ class WindowUpdateModel:
         if m == lay.window and self.layout_marginal:
             # the window's rows at its optimum: computed again only if LM took a step after its
             # last linearisation (fgc_stream.h, marginalize; counted: the "relinearize" event)
-            relin = ev.get("relinearize")
-            if relin is None:
-                relin = int(ev.get("accept", 0) >= ev.get("linearize", 0))
+            relin = _relinearize(ev)
             marginal = (relin * (self.group["factor_jacobian"] + self.group["gradient"])
                         + st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True))
             terms.append(Term("marginal", marginal, 1, False,
