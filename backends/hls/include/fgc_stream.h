@@ -207,7 +207,9 @@ void kept_matvec(const L m[STREAM_KF_T * STREAM_KF_T], const L v[STREAM_KF_T], L
 // The newest kept conditional c, re-expressed at its parent's new estimate x (the window's slot 0,
 // copied out of X before the call):
 // d_c -= S_c Log(next^-1 x), S_c = S_c J with J the derivative of Log(next^-1 (x (+) delta)) by
-// central differences of step STREAM_H (the simulator's Chain.local_jacobian); next_c = x.
+// central differences of step STREAM_H (the simulator's Chain.local_jacobian); next_c = x. Four
+// datapath passes per direction of a variable that is not a vector (KF_FLAT_S), none for a
+// vector's.
 template <class CFG>
 void reexpress(int c, const T x[STREAM_KF_X]) {
     FGC_PHASE("kept");
@@ -219,6 +221,20 @@ void reexpress(int c, const T x[STREAM_KF_X]) {
     keyframe_local(KEPT_NEXT + c * STREAM_KF_X, x, base);
     FGC_KEPT_PASS("log");
     for (int i = 0; i < STREAM_KF_T; ++i) {
+        const int sv = KF_FLAT_S[i];
+        if (sv >= 0) {
+            // a direction of a vector variable (retraction x + delta, Log b - a): only its own
+            // entry moves, by exactly what the passes below would compute; every other entry of
+            // the two passes is the same value, their difference zero
+            const T next_s = KEPT_NEXT[c * STREAM_KF_X + sv];
+            const T plus_i = (x[sv] + h) - next_s, minus_i = (x[sv] + T(-h)) - next_s;
+            for (int k = 0; k < STREAM_KF_T; ++k) {
+#pragma HLS PIPELINE II=1
+                jt[i][k] = k == i ? L((plus_i - minus_i) / (T(2) * h)) : L(0);
+            }
+            FGC_CYCLES("kept", 0, "vector_difference", STREAM_KF_T, 1, CFG::T_DIV_DEPTH + 3 * T_ADD_LAT);
+            continue;
+        }
         for (int k = 0; k < STREAM_KF_T; ++k) step[k] = T(0);
         step[i] = h;
         keyframe_retract(x, step, moved);

@@ -264,9 +264,14 @@ class WindowUpdateModel:
             matvec = Loop("matvec", n * n, mv_ii, lt["acc"][1])
             scatter = kernel_loop("scatter", n, "scatter", lt)
             columns = tuple(Loop("column", i, 1, lt["acc"][1]) for i in range(1, n))
+            # four passes per direction of a variable that is not a vector, none for a vector's
+            curved = sum(1 for w in lay.vector_words() if w < 0)
+            vector_diff = Loop("vector_difference", n, 1, kt["div"][1] + 3 * kt["acc"][0],
+                               n - curved)
             out += [_stream_phase("kept_slot0", move("x", kf)),
-                    _stream_phase("kept_reexpress", one, replace(one, repeat=4 * n),
-                                  Loop("difference", n, 1, kt["div"][1], n), matvec, scatter,
+                    _stream_phase("kept_reexpress", one, replace(one, repeat=4 * curved),
+                                  Loop("difference", n, 1, kt["div"][1], curved), vector_diff,
+                                  matvec, scatter,
                                   move("row", n, n), replace(matvec, repeat=n), move("x", kf)),
                     _stream_phase("kept_store", move("cond", n * (2 * n + 1)), move("x", kf)),
                     _stream_phase("kept_walk_each", one, matvec, scatter,
