@@ -217,7 +217,7 @@ void reexpress(int c, const T x[STREAM_KF_X]) {
     T base[STREAM_KF_T], plus[STREAM_KF_T], minus[STREAM_KF_T], step[STREAM_KF_T];
     T moved[STREAM_KF_X];
     L jt[STREAM_KF_T][STREAM_KF_T];  // J transposed: column k of J in row k
-    L local[STREAM_KF_T], srow[STREAM_KF_T];
+    L local[STREAM_KF_T];
     keyframe_local(KEPT_NEXT + c * STREAM_KF_X, x, base);
     FGC_KEPT_PASS("log");
     for (int i = 0; i < STREAM_KF_T; ++i) {
@@ -260,14 +260,34 @@ void reexpress(int c, const T x[STREAM_KF_X]) {
         KEPT_D[c * STREAM_KF_T + i] -= shift[i];
     }
     FGC_CYCLES("kept", 0, "d_update", STREAM_KF_T, CFG::L_SCATTER_II, CFG::L_SCATTER_DEPTH);
-    for (int i = 0; i < STREAM_KF_T; ++i) {  // row i of S J = J^T (row i of S), in place
-        for (int k = 0; k < STREAM_KF_T; ++k) {
+    // S J column by column into snew (every column reads the whole of S): a direction q of a
+    // variable that is not a vector, sum_k S[:, k] J[k][q] with k outer and the rows inner, one
+    // product a cycle (each entry summed in k order from 0, as a dot product adds it); a
+    // vector variable's, J[q][q] S[:, q] (its column of J is zero but there: the same sum)
+    L snew[STREAM_KF_T][STREAM_KF_T];
+    for (int q = 0; q < STREAM_KF_T; ++q) {
+        if (KF_FLAT_S[q] < 0) {
+            for (int e = 0; e < STREAM_KF_T * STREAM_KF_T; ++e) {
+#pragma HLS PIPELINE II=CFG::MV_II
+#pragma HLS DEPENDENCE variable=snew inter false
+                const int k = e / STREAM_KF_T, r = e % STREAM_KF_T;
+                const L prev = k == 0 ? L(0) : snew[r][q];
+                snew[r][q] = prev + jt[q][k] * KEPT_S[(c * STREAM_KF_T + r) * STREAM_KF_T + k];
+            }
+            FGC_CYCLES("kept", 0, "sj_column", STREAM_KF_T * STREAM_KF_T, CFG::MV_II, CFG::L_ACC_DEPTH);
+        } else {
+            for (int r = 0; r < STREAM_KF_T; ++r) {
 #pragma HLS PIPELINE II=1
-            srow[k] = KEPT_S[(c * STREAM_KF_T + i) * STREAM_KF_T + k];
+                snew[r][q] = L(0) + jt[q][q] * KEPT_S[(c * STREAM_KF_T + r) * STREAM_KF_T + q];
+            }
+            FGC_CYCLES("kept", 0, "sj_vector", STREAM_KF_T, 1, CFG::L_ACC_DEPTH);
         }
-        FGC_CYCLES("kept", 0, "row_in", STREAM_KF_T, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-        kept_matvec<CFG>(&jt[0][0], srow, KEPT_S + (c * STREAM_KF_T + i) * STREAM_KF_T);
     }
+    for (int e = 0; e < STREAM_KF_T * STREAM_KF_T; ++e) {
+#pragma HLS PIPELINE II=1
+        KEPT_S[c * STREAM_KF_T * STREAM_KF_T + e] = snew[e / STREAM_KF_T][e % STREAM_KF_T];
+    }
+    FGC_CYCLES("kept", 0, "s_out", STREAM_KF_T * STREAM_KF_T, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
         KEPT_NEXT[c * STREAM_KF_X + k] = x[k];
