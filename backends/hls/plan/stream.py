@@ -470,7 +470,8 @@ class WindowUpdateModel:
                 terms.append(Term("kept_reexpress", st["stream_kept_reexpress"], 1, False,
                                   f"keyframe {first - 1}'s kept conditional re-expressed at "
                                   "its parent's new estimate: Log, its central-difference "
-                                  "Jacobian (4n + 1 datapath passes), S·Log and S·J"))
+                                  "Jacobian (four datapath passes per direction of a "
+                                  "non-vector variable), S·Log and S·J"))
             terms.append(Term("kept_walk", st["stream_kept_walk_base"]
                               + first * st["stream_kept_walk_each"], 1,
                               False, f"the walk back through {first} kept conditionals: per "
