@@ -377,35 +377,6 @@ void kept_walk(int first, const T x0[STREAM_KF_X]) {
     }
 }
 
-#ifdef FGC_STREAM_MARGINAL
-// The marginal and the kept net side by side: once the window has solved, slot 0's marginal
-// (linearisation, its QR step at mu = 0 on unit set 0, tau written into DATA_BUF) needs nothing
-// of the kept net, and the kept net's update (the newest conditional re-expressed at slot 0's
-// estimate, the walk back through the kept conditionals below it) nothing of the marginal's: two
-// processes of one DATAFLOW region, each on its own memories and datapaths (the marginal: X,
-// DATA_BUF, the factor datapaths, unit set 0; the kept net: the KEPT_* memories, X_KEPT, the
-// keyframe's Log and retraction kernels), slot 0's estimate copied out of X before the region.
-// keep(first) reads the marginal's conditional and writes kept memory, so it follows the region.
-template <class CFG>
-void marginal_task(int m, bool current, int code[1]) {
-    FGC_TASK();
-    code[0] = m == STREAM_W ? (marginalize<CFG>(current) ? 1 : 2) : 0;
-}
-
-template <class CFG>
-void kept_task(int first, const T x0[STREAM_KF_X]) {
-    FGC_TASK();
-    if (first > 0) reexpress<CFG>(first - 1, x0);
-    kept_walk<CFG>(first, x0);
-}
-
-template <class CFG>
-void marginal_and_kept(int m, bool current, int first, const T x0[STREAM_KF_X], int code[1]) {
-#pragma HLS DATAFLOW
-    marginal_task<CFG>(m, current, code);
-    kept_task<CFG>(first, x0);
-}
-#endif  // FGC_STREAM_MARGINAL
 #endif  // FGC_STREAM_KEPT
 
 #ifdef FGC_STREAM_BATCH
@@ -456,6 +427,49 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
     return write_tau<CFG>(BATCH_TAU) ? 1 : 2;
 }
 #endif  // FGC_STREAM_BATCH
+
+#ifdef FGC_STREAM_WINDOW
+// The marginal and the kept net side by side: once the window has solved, slot 0's marginal
+// (linearisation, its QR step at mu = 0 on unit set 0, tau written into DATA_BUF) needs nothing
+// of the kept net, and the kept net's update (the newest conditional re-expressed at slot 0's
+// estimate, the walk back through the kept conditionals below it) nothing of the marginal's: two
+// processes of one DATAFLOW region, each on its own memories and datapaths (the marginal: X,
+// DATA_BUF, the factor datapaths, unit set 0; the kept net: the KEPT_* memories, X_KEPT, the
+// keyframe's Log and retraction kernels), slot 0's estimate copied out of X before the region.
+// keep(first) reads the marginal's conditional and writes kept memory, so it follows the region.
+// A design without one of the two runs that process empty (each function has one call site
+// whatever the parts: the second reader reads every preprocessor branch).
+template <class CFG>
+void marginal_task(int m, bool current, int code[1]) {
+    FGC_TASK();
+#ifdef FGC_STREAM_MARGINAL
+    code[0] = m == STREAM_W ? (marginalize<CFG>(current) ? 1 : 2) : 0;
+#else
+    (void)m;
+    (void)current;
+    code[0] = 0;
+#endif
+}
+
+template <class CFG>
+void kept_task(int first, const T x0[STREAM_KF_X]) {
+    FGC_TASK();
+#ifdef FGC_STREAM_KEPT
+    if (first > 0) reexpress<CFG>(first - 1, x0);
+    kept_walk<CFG>(first, x0);
+#else
+    (void)first;
+    (void)x0;
+#endif
+}
+
+template <class CFG>
+void marginal_and_kept(int m, bool current, int first, const T x0[STREAM_KF_X], int code[1]) {
+#pragma HLS DATAFLOW
+    marginal_task<CFG>(m, current, code);
+    kept_task<CFG>(first, x0);
+}
+#endif  // FGC_STREAM_WINDOW
 
 #ifdef FGC_STREAM_WINDOW
 #ifdef FGC_STREAM_KEPT
@@ -530,27 +544,24 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #endif
         CFG::lm_solve(errors, info);
         const bool current = CFG::at_linearisation(info);  // AB: the window linearised at X
-        (void)current;
+        T x0[STREAM_KF_X];  // slot 0's estimate: the kept net's parent
 #ifdef FGC_STREAM_KEPT
         FGC_PHASE("kept");
-        T x0[STREAM_KF_X];  // slot 0's estimate: the kept net's parent
         for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
             x0[k] = X[SLOT_X[k]];
         }
         FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-#ifdef FGC_STREAM_MARGINAL
-        int code[1];
-        marginal_and_kept<CFG>(m, current, first, x0, code);
+        const int kept_first = first;
+#else
+        const int kept_first = 0;
+#endif
+        int code[1] = {0};
+        marginal_and_kept<CFG>(m, current, kept_first, x0, code);
         FGC_TASKS_JOIN();
         marginal = code[0];
+#ifdef FGC_STREAM_KEPT
         if (m == STREAM_W && marginal == 1) keep<CFG>(first);
-#else
-        if (first > 0) reexpress<CFG>(first - 1, x0);
-        kept_walk<CFG>(first, x0);
-#endif
-#elif defined(FGC_STREAM_MARGINAL)
-        if (m == STREAM_W) marginal = marginalize<CFG>(current) ? 1 : 2;
 #endif
 #ifdef FGC_STREAM_BATCH
     }
