@@ -158,3 +158,19 @@ def test_a_task_group_counts_its_slowest_task(tmp_path):
     out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
     assert out.split() == [str(10 + 110 + 5), str(10 + 120 + 5)]
     subprocess.run([*flags, "-fsyntax-only", str(src)], check=True)
+
+
+def test_each_stream_function_has_one_call_site_in_the_header():
+    """The second reader (reader.py) reads every preprocessor branch of fgc_stream.h and takes
+    each call site for an instance: a fallback call of the marginal in another branch would
+    read as a second copy of the factor datapaths."""
+    import re
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
+            / "fgc_stream.h").read_text()
+    code = re.sub(r"//[^\n]*", "", text)
+    for name in ("marginalize", "reexpress", "kept_walk", "keep", "marginal_task", "kept_task",
+                 "marginal_and_kept", "write_tau"):
+        sites = re.findall(rf"\b{name}<CFG>\(", code)
+        assert len(sites) == (2 if name == "write_tau" else 1), name  # marginal, batch step
