@@ -33,8 +33,10 @@
 // retraction). T and L are the kernel's scalars. CFG is the kernel's StreamConfig: the plan's
 // (II, depth) of T's move / max / retract / div and L's acc / div / scatter loops, MV_II (the kept
 // matrix-vector product's), MAX_NEW and TRIP_BATCH_X (trip counts), and the hooks
-// leaf_step() (slot 0's step once more at mu = 0) and batch_solve(...) (the batch kernel's
-// entry). Cycles to FGC_CYCLES as the plan prices them.
+// leaf_step() (slot 0's step once more at mu = 0), at_linearisation(info) (LM stopped where it
+// last linearised: AB holds the rows at X) and batch_solve(...) (the batch kernel's entry); kept:
+// KF_FLAT_S (per tangent direction of a keyframe its storage word if its variable is a vector)
+// and the kernel's T_ADD_LAT. Cycles to FGC_CYCLES as the plan prices them.
 #ifndef FGC_STREAM_H
 #define FGC_STREAM_H
 
@@ -330,7 +332,8 @@ void keep(int c) {
 }
 
 // Back-substitution through the kept conditionals c = first - 1 ... 0 from the window's slot 0
-// (keyframe first, x0: its estimate copied out of X): x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
+// (keyframe first, x0: its estimate copied out of X):
+// x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
 template <class CFG>
 void kept_walk(int first, const T x0[STREAM_KF_X]) {
     FGC_PHASE("kept");
@@ -376,7 +379,6 @@ void kept_walk(int first, const T x0[STREAM_KF_X]) {
         FGC_CYCLES("kept", 0, "estimate_out", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     }
 }
-
 #endif  // FGC_STREAM_KEPT
 
 #ifdef FGC_STREAM_BATCH
