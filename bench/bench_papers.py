@@ -302,7 +302,7 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                 "window a slot range of the batch layout, would save about 1,250 DSP and "
                 "still not fit, docs/hls.md); per update the window's LM iterations are about "
                 "84 % of the cycles (its QR steps 58 %), the marginal and the kept net run "
-                "side by side: docs/hls.md)")]
+                "side by side (docs/hls.md)")]
 
 
 def paper_b(cfg: Config) -> list[Row]:
