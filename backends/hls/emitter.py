@@ -264,7 +264,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         for v in k.variables:
             kinds[v] = k.kind
     variables, steps = retire_order(program, retire_solved(_tables(program)))
-    ii, depth = retire_timing(program, plan.ops, _sizes(program)["MAX_F"],
+    ii, depth = retire_timing(program.variables, plan.ops, _sizes(program)["MAX_F"],
                               plan.options.state_allocation)
     retire = {"kinds": kinds, "variables": variables, "steps": steps, "ii": ii, "depth": depth}
     procs, streams = process_network(plan)

@@ -110,7 +110,7 @@ def test_back_substitution_feeds_the_state_update():
     assert sum(1 for s in first if s >= 0) == len(program.schedule.steps)
     # the retire adds at most its last variable's depth after the last slot here (a step's
     # solve is slower than its variables' retraction)
-    ii, depth = retire_timing(program, plan.ops, max(s.frontal_dim
+    ii, depth = retire_timing(program.variables, plan.ops, max(s.frontal_dim
                                                      for s in program.schedule.steps))
     assert 0 < retire.loops[0].cycles <= depth
     # the what-if whole-matrix Cholesky has no emitted driver: its state update is a pass

@@ -166,7 +166,7 @@ def backsub_phases(ctx, unit: str) -> None:
         if solve >= 0:
             sent.append(k)
             counts.append(len(ctx.program.schedule.steps[solve].frontals))
-    ii, depth = retire_timing(ctx.program, ctx.ops, ctx.sizes["MAX_F"],
+    ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
                               ctx.opts.state_allocation)
     region = retire_region(slots, sent, counts, ii, depth)
     a = sum(lp.cycles for loops in slots for lp in loops)

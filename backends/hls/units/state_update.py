@@ -72,15 +72,16 @@ def retire_order(program, solved: list[int]) -> tuple[tuple[int, ...], tuple[int
     return tuple(variables), tuple(first)
 
 
-def retire_timing(program, ops: OperatorTable, max_f: int,
+def retire_timing(variables, ops: OperatorTable, max_f: int,
                   allocation=STATE_ALLOCATION) -> tuple[int, int]:
-    """(II, depth) of backsub_retire's loop (a variable an iteration): II the largest of the
+    """(II, depth) of backsub_retire's loop (a variable an iteration) over ``variables``
+    (VariableSpecs): II the largest of the
     types' datapaths (:func:`retract_datapath`) and of the words an iteration moves through its
     copy of delta's :data:`PORTS` ports (a step's ``max_f`` words in when it arrives, a
     variable's tangent words out); depth: the stream's words in (a pair a cycle), then the
     deepest datapath."""
-    kinds = [retract_datapath(name, ops, allocation) for name in _type_counts(program.variables)]
-    widest = max(v.dim for v in program.variables)
+    kinds = [retract_datapath(name, ops, allocation) for name in _type_counts(variables)]
+    widest = max(v.dim for v in variables)
     ii = max([-(-(max_f + widest) // PORTS)] + [k[1] for k in kinds])
     return ii, -(-max_f // PORTS) + max(k[2] for k in kinds)
 
