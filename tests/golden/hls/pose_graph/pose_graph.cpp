@@ -1594,7 +1594,7 @@ struct LmConfig {
     static T cost_x() { return total_cost(X); }
     static bool linearize_x() { return linearize_all(X); }
     static bool solve_at(T mu) { return solve(mu); }
-    static void retract_trial() { /* X_TRIAL: back_substitute's backsub_retire */ }
+    static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
     static T cost_trial() { return total_cost(X_TRIAL); }
     static T noise_x() { return rounding_noise_all(X); }
     static const int N_X = ::fgc::N_X, N_TANGENT = ::fgc::N_TANGENT;
