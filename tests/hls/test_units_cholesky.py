@@ -7,7 +7,7 @@ import pytest
 from hls_programs import chain
 
 from fgc_backends.cost.operators import FLOAT32
-from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
+from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles, plan_cost
 from fgc_backends.hls.units.cholesky import (
     cpe_depth,
     cpe_round_depth,
@@ -62,7 +62,7 @@ def test_more_cpes_than_a_steps_pivots_only_add_idle_fill():
 def test_the_emitted_design_assembles_factors_and_the_cascade_stores_each_step(program):
     plan = build_plan(program)
     names = [ph.name for ph in plan.phases]
-    assert names.index("hgc") < names.index("assemble") < names.index("cholesky")
+    assert names.index("hgc") < names.index("assemble") < names.index("cholesky_level0")
     assert "store" not in names  # the drain writes COND and NF
     assert plan.unit("cpe").instances == 2
     assert dict(plan.unit("cpe").operators) == {"add": 1, "mul": 2, "div": 1}
@@ -240,3 +240,53 @@ def test_each_block_types_datapath_and_hgc_share_one_emitted_region(tmp_path):
         assert len(region.streams) == 1
         assert [p.name for p in ph.processes] == [f"factor_{b}_jacobian", f"reduce_{b}"]
     assert "factor_jacobian" not in {ph.name for ph in plan.phases}
+
+
+def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program):
+    # cholesky_eliminate_all: the steps' position parities, the first step's Grams before the
+    # steps; per step (the t-th) its children of the other parity than t's (phase assemble: the
+    # step before among them), then the cholesky_overlap region (phase cholesky_level<t>): the
+    # cascade beside the assembler, which streams the step's words out two a cycle, assembles
+    # the next step's Grams into the other lane and adds its children from the NF lane step t's
+    # cascade does not write
+    from fgc_backends.hls.plan.loops import _tables, kernel_timing
+    from fgc_backends.hls.units.cholesky import assemble_loops, cpe_pairs
+
+    plan = build_plan(program)
+    tables, timing = _tables(program), kernel_timing(FLOAT32)
+    order = list(tables["LEVEL_STEPS"][:len(program.schedule.steps)])
+    odd = {s: t % 2 for t, s in enumerate(order)}
+    (assemble,) = [ph for ph in plan.phases if ph.name == "assemble"]
+    lanes, first, *kids = assemble.processes
+    assert lanes.loops[0].trip == len(order)
+    assert first.name == "assemble_first"
+    assert [lp.name for lp in first.loops][:2] == ["map", "gram_first"]
+    assert all(lp.name == "child" for p in kids for lp in p.loops)
+    regions = [ph for ph in plan.phases if ph.name.startswith("cholesky_level")]
+    assert len(regions) == len(order)
+    every = 0
+    for t, (ph, s) in enumerate(zip(regions, order, strict=True)):
+        assert ph.dataflow
+        cascade, assembler = ph.processes
+        assert cascade.name == f"cascade{s}" and assembler.name == f"assembler{s}"
+        assert assembler.loops[0].name == "source"
+        assert assembler.loops[0].trip == cpe_pairs(tables["STEP_W"][s])
+        nxt = order[t + 1] if t + 1 < len(order) else None
+        beside = assemble_loops(tables, nxt, timing, odd=odd, par=1 - t % 2) \
+            if nxt is not None else []
+        assert list(assembler.loops[1:]) == beside
+        # the region: the slower process plus the other's fill, not their sum
+        assert phase_cycles(ph) < cascade.cycles + assembler.cycles
+        every += sum(lp.name == "child" for lp in beside)
+    # every child once: beside the cascade or alone
+    between = sum(lp.name == "child" for p in kids for lp in p.loops)
+    assert every + between == sum(len(assemble_loops(tables, s, timing, grams=False))
+                                  for s in order)
+    assert every > 0
+
+
+def test_cpe_pairs_counts_two_words_of_a_row_a_pair():
+    from fgc_backends.hls.units.cholesky import cpe_pairs
+
+    for w in range(0, 40):
+        assert cpe_pairs(w) == sum(-(-(w + 1 - i) // 2) for i in range(w))

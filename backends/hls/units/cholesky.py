@@ -237,30 +237,54 @@ def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...],
     return phases
 
 
-def assemble_loops(tables: dict, s: int, timing: dict) -> list[Loop]:
-    """Cholesky's eliminate(): into step s's [H | g] (all zero: the cascade clears every word
-    it reads, so no clearing pass), per factor its packed Gram's lower triangle and gradient
-    row (d (d + 1) / 2 + d entries), per child its update matrix's upper triangle and reduced g
-    (s (s + 1) / 2 + s), each one loop of ``+=`` into the table-addressed frontal matrix whose
-    entries all go to different addresses (``scatter``: II 1); the step's first factor is
-    stored, not added (HF is all zero), two entries a cycle (``move``) after its column map is
-    copied into registers (``move``, d)."""
+def assemble_loops(tables: dict, s: int, timing: dict, grams: bool = True,
+                   children: bool = True, odd: dict | None = None, par: int = 0) -> list[Loop]:
+    """The loops that assemble step s's [H | g] into its lane of HA (fgc_eliminate.h), which is
+    all zero (the source that streams a step into the cascade clears every word it reads, so
+    no clearing pass): ``grams`` (cholesky_assemble_grams) per factor its packed Gram's lower
+    triangle and gradient row (d (d + 1) / 2 + d entries), the step's first factor stored, not
+    added, two entries a cycle (``move``) after its column map is copied into registers
+    (``move``, d), each further one a loop of ``+=`` into the table-addressed frontal matrix
+    whose entries all go to different addresses (``scatter``: II 1); ``children``
+    (cholesky_assemble_children) per child its update matrix's upper triangle and reduced g
+    (s (s + 1) / 2 + s), a ``scatter`` loop each; with ``odd`` (step -> its position's parity in
+    the schedule) only the children of parity ``par`` (one NF lane's)."""
     loops = []
     fb = tables["STEP_FACTOR_BEGIN"]
-    for e in range(fb[s], fb[s + 1]):
+    for e in range(fb[s], fb[s + 1]) if grams else ():
         fac = tables["STEP_FACTORS"][e]
         d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
         n = d * (d + 1) // 2 + d
-        if e == fb[s]:  # HF all zero: stored, two entries a cycle, after its column map
+        if e == fb[s]:  # the lane all zero: stored, two entries a cycle, after its column map
             loops += [kernel_loop("map", d, "move", timing),
                       kernel_loop("gram_first", -(-n // 2), "move", timing)]
         else:
             loops.append(kernel_loop("gram", n, "scatter", timing))
     cb = tables["STEP_CHILD_BEGIN"]
-    for e in range(cb[s], cb[s + 1]):
+    for e in range(cb[s], cb[s + 1]) if children else ():
         c = tables["STEP_CHILDREN"][e]
+        if odd is not None and odd[c] != par:
+            continue
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
         loops.append(kernel_loop("child", sc * (sc + 1) // 2 + sc, "scatter", timing))
+    return loops
+
+
+def cpe_pairs(w: int) -> int:
+    """The stream words (fgc_cpe.h's cpe_pair, two of a row each) of a step's w rows: row i's
+    w + 1 - i words, two a word, rounded up (fgc_cpe.h's cpe_pairs)."""
+    return (w + 2) * (w + 2) // 4 - 1
+
+
+def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict) -> list[Loop]:
+    """fgc_eliminate.h's cholesky_assembler beside step s's cascade (s at an even position or
+    not: ``odd[s]``): step s's words streamed out of its lane two of a row a cycle
+    (:func:`cpe_pairs`, ``move``: each bank read and cleared), then step ``nxt``'s factor Grams
+    into the other lane and its children at positions of the other parity than s's (written
+    before this region; :func:`assemble_loops`), none if nxt < 0."""
+    loops = [kernel_loop("source", cpe_pairs(tables["STEP_W"][s]), "move", timing)]
+    if nxt >= 0:
+        loops += assemble_loops(tables, nxt, timing, odd=odd, par=1 - odd[s])
     return loops
 
 
@@ -348,10 +372,11 @@ def build(ctx) -> None:
 
 
 def _frontal(ctx) -> None:
-    """The emitted multifrontal Cholesky: per elimination step (one after another) its frontal
-    [H | g] assembled into HF (left zero by the step before), then fgc_cpe.h's cpe_step (feed ->
-    #CPE taps and CPEs -> drain per round of #CPE pivots), whose drain writes the conditional
-    into COND and the update matrix into NF (back-substitution step by step is
+    """The emitted multifrontal Cholesky: per elimination step its frontal [H | g] streamed from
+    its lane of HA into fgc_cpe.h's cpe_step (feed -> #CPE taps and CPEs -> drain per round of
+    #CPE pivots), whose drain writes the conditional into COND and the update matrix into its NF
+    lane, while the assembler fills the other HA lane with the next step's Grams and children
+    (fgc_eliminate.h's cholesky_overlap; back-substitution step by step is
     :mod:`fgc_backends.hls.units.backsub`'s)."""
     program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
     sizes = ctx.sizes
@@ -372,24 +397,47 @@ def _frontal(ctx) -> None:
     # the check's threshold multiplier: one operator of each a loop (cpe_step's sequential code)
     ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
                           (("add", 1), ("mul", 2), ("div", 1))))
-    # fgc_eliminate.h's cholesky_eliminate: the Grams' and the children's loops, each a
-    # pipelined HF += at II 1: an adder each
+    # fgc_eliminate.h's assembly: the Grams' and the children's loops, each a pipelined
+    # HA += at II 1: an adder each (cholesky_assemble_grams has one call site, the assembler's:
+    # the first step's Grams too, in a first region with no step to factor)
     ctx.units.append(Unit("assemble", "the step's [H | g] from Grams and update matrices", 1,
                           (("add", 2),)))
-    loops = []
-    for st in program.schedule.steps:
-        loops += cpe_step_loops(st.frontal_dim, st.separator_dim, c, ops, name=f"s{st.index}")
     tables, timing = ctx.tables, ctx.les_timing
-    # eliminate(s): [H | g] assembled from GRAM and the children's update matrices, then the
-    # cascade, which stores the conditional into COND and the update matrix into NF
-    ctx.add_phase("solve", Phase("assemble", False, tuple(
-        Process(f"assemble{st.index}", "cpe", tuple(assemble_loops(tables, st.index, timing)))
-        for st in program.schedule.steps), linear=True))
-    ctx.add_phase("solve", Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
-                                 linear=True))
+    order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
+    odd = {s: t % 2 for t, s in enumerate(order)}
+    steps = {st.index: st for st in program.schedule.steps}
+    # cholesky_eliminate_all (passes of one cholesky_overlap region): each step's position
+    # parity (the NF lane its drain writes), the first step's Grams (the assembler alone), then
+    # per step t its children at positions of the other parity than t's (the step before among
+    # them: the assembler alone, phase assemble) and the region (phase cholesky_level<t>): the
+    # cascade on the step (cpe_step_loops) beside the assembler (its words streamed out, the
+    # next step's Grams and its children of t's parity), the slower of the two plus the other's
+    # fill
+    first = [Process("assemble_first", "cpe", tuple(assemble_loops(
+        tables, order[0], timing, odd=odd, par=0)))] if order else []
+    ctx.add_phase("solve", Phase("assemble", False, (
+        Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),
+        *first, *(Process(f"assemble{s}", "cpe", tuple(assemble_loops(
+            tables, s, timing, grams=False, odd=odd, par=1 - odd[s]))) for s in order)),
+        linear=True))
+    # cholesky_overlap's stream, a pair of words wide, deep enough that the assembler (a pair a
+    # cycle) never waits for the feed (a word a cycle): half a step's pairs and the feed's start
+    mw = sizes["MAX_W"]
+    ctx.channels.append(Channel("frontal", "stream", mw * (mw + 4) // 8 + ops.add.latency + 8,
+                                2 * ops.word_bits, "cholesky_assembler", "cpe_feed"))
+    for t, s in enumerate(order):
+        nxt = order[t + 1] if t + 1 < len(order) else -1
+        st = steps[s]
+        ctx.add_phase("solve", Phase(f"cholesky_level{t}", True, (
+            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
+                st.frontal_dim, st.separator_dim, c, ops, name=f"s{s}"))),
+            Process(f"assembler{s}", "cpe", tuple(assembler_loops(
+                tables, s, nxt, timing, odd)))), linear=True))
     # accel.cpp.jinja's GRAM and HF (the frontal matrix of one step at a time) and cpe_step's
     # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF)
     ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
+    ctx.memories.append(Memory("assembly", 2 * sizes["MAX_W"] * cols, ops.word_bits, 1))
+    ctx.memories.append(Memory("nf_lane1", sizes["N_NF"], ops.word_bits, 1))  # NF's second lane
     ctx.memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
     ctx.memories.append(Memory("trailing", sizes["MAX_W"] * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)
