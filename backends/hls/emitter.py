@@ -204,7 +204,12 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     from fgc_backends.hls.plan.loops import _sizes, _tables
     from fgc_backends.hls.plan.model import Unit
     from fgc_backends.hls.units.backsub import retire_solved
-    from fgc_backends.hls.units.cholesky import gram_ii, gram_lanes, jacobian_ii
+    from fgc_backends.hls.units.cholesky import (
+        gram_config,
+        gram_ii,
+        jacobian_cycles,
+        jacobian_ii,
+    )
     from fgc_backends.hls.units.datapath import (
         factor_allocation,
         small_allocation,
@@ -221,6 +226,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     hgc = {p.name: p for ph in plan.phases if ph.name.startswith("hgc") for p in ph.processes
            if p.name.startswith("reduce_")}
     jac_ii = jacobian_ii(p for ph in plan.phases for p in ph.processes)
+    jac_cycles = jacobian_cycles([p for ph in plan.phases for p in ph.processes])
     blocks = []
     # factor_<b>'s ALLOCATION limits (the plan's unit is what Vitis binds around them)
     allocations = factor_allocation(program, plan.options)
@@ -266,8 +272,10 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             blocks[-1].small = False
         # Cholesky's HGC: the II of the block's Gram entries (its multipliers) and the entries
         blocks[-1].gram_ii = gram_ii(program, b.index, plan.options.hgc_lanes)
-        lane_a, lane_b, k = (gram_lanes(program, b.index, plan.options.hgc_lanes, jac_ii)
-                             if program.solver.linear == "cholesky" else ((), (), 0))
+        lane_a, lane_b, k, paired = (
+            gram_config(program, b.index, plan.options.hgc_lanes, jac_ii, jac_cycles)
+            if program.solver.linear == "cholesky" else ((), (), 0, False))
+        blocks[-1].gram_pair = paired  # gram_entries_pair: II 2, two lane-A entries
         blocks[-1].gram_p = [p for p, _ in lane_a]
         blocks[-1].gram_q = [q for _, q in lane_a]
         blocks[-1].gram_pb = [p for p, _ in lane_b]  # lane B: the first gram_k rows only

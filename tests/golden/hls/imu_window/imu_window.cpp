@@ -2166,6 +2166,44 @@ bool gram_entries_two(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const 
     return finite;
 }
 
+// gram_entries_pair: the two lanes at II 2, two lane-A entries (P, Q at 2e and 2e + 1) and one
+// lane-B entry an iteration, so Vitis binds ROWS + ceil(K / 2) multipliers (the two lane-A
+// entries' 2 ROWS products over the II's two cycles) for 1.5 entries a cycle; the next
+// instance's rows a row an iteration (STEPS >= ROWS + 3); G's += stay in lane A (four
+// accesses of G an iteration through its two ports in two cycles), three GRAM writes.
+template <int PADDED, int ROWS, int COLS, int ENTRIES, int ENTRIES_B, int K, int STEPS, int N>
+bool gram_entries_pair(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const int INST[N],
+                       const int P[ENTRIES], const int Q[ENTRIES], const int PB[ENTRIES_B],
+                       const int QB[ENTRIES_B], const int CV[COLS - 1], const int CO[COLS - 1]) {
+    bool finite = true;
+    int i = 0, e = 0;
+    for (int t = 0; t < N * STEPS; ++t) {
+#pragma HLS PIPELINE II=2
+#pragma HLS DEPENDENCE variable=G inter false
+#pragma HLS DEPENDENCE variable=GRAM inter false
+#pragma HLS DEPENDENCE variable=ab inter false
+        const int cur = i % 2;
+        if (e < ROWS && i + 1 < N) gram_next_row<PADDED, ROWS>(rows, ab[1 - cur], e);
+        for (int h = 0; h < 2; ++h) {  // lane A: entries 2e and 2e + 1
+            if (2 * e + h < ENTRIES) {
+                const int p = P[2 * e + h], q = Q[2 * e + h];
+                gram_store<ROWS, COLS, N>(INST, CV, CO, i, p, q, gram_entry<PADDED, ROWS, ROWS>(ab[cur], p, q), finite);
+            }
+        }
+        if (e < ENTRIES_B) {  // lane B: never the last row, so never into G
+            const int p = PB[e], q = QB[e];
+            const L v = gram_entry<PADDED, ROWS, K>(ab[cur], p, q);
+            GRAM[FACTOR_GRAM_OFF[INST[i]] + p * (p + 1) / 2 + q] = v;
+            if (p == q) finite = finite && fgc_isfinite(T(v));
+        }
+        if (++e == STEPS) {
+            e = 0;
+            ++i;
+        }
+    }
+    return finite;
+}
+
 // block 0: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_0(const T x[N_X], int f, T in[42], T dat[193]) {
     const int vb = FACTOR_VAR_BEGIN[f];
