@@ -56,7 +56,7 @@ def test_a_design_the_plan_fits_but_the_reader_does_not_is_refused(programs):
 
 
 def test_the_real_reader_reads_the_emitted_design(programs):
-    """The same design read for real (emitted, then read back by backends/hls/reader.py): a
+    """The same design read for real (emitted, then read back by backends/hls/reader/): a
     reading exists, and it judges the design on max(plan, reader)."""
     space = Space(linears=("qr",), units=(1,), unit_sets=(1,), extra=HOUSEHOLDER)
     (row,) = search({"qr": programs["qr"]}, space, max_reads=1).rows

@@ -125,6 +125,7 @@ struct qr_config_example {
     static const int N_UNITS = 4;    // Update units (n_u, --units)
     static const int LOCAL_COLS = ceil_div(MAX_COLS, N_UNITS);  // columns in one bank
     static const int PARTIALS = 12;  // interleaved partial sums of a dot product (= ADD_LAT: II 1)
+    static const int FOLD_II = PARTIALS - 1;  // fold_scale's II: the fold's adds on one adder
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;  // float64 (plan)
     static constexpr double SINGULAR_EPS = 1e-12;
 };
@@ -250,6 +251,8 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
+    static_assert(CFG::FOLD_II == CFG::PARTIALS - 1 && CFG::FOLD_II >= 1,
+                  "FOLD_II = PARTIALS - 1: fold_scale's adds on one adder");
     T v[CFG::MAX_ROWS];
     int at[CFG::MAX_ROWS];
     const int n = vin.read().idx;  // {0, n}
@@ -386,11 +389,13 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
             }
         }
         FGC_CYCLES("qr_update", U, "dots", n * r, 1, CFG::MUL_LAT + CFG::ADD_LAT);
-        // per column the partial sums folded (a ceil(log2 P)-deep adder tree) and scaled by tau:
-        // trip r, II 1, depth La ceil(log2 P) + Lm
+        // per column the partial sums folded (a ceil(log2 P)-deep adder tree) and scaled by tau,
+        // the tree's P - 1 adds on one adder (II P - 1: one issue slot each; at II 1 the loop
+        // would hold P - 1 adders in every unit): trip r, II P - 1, depth La ceil(log2 P) +
+        // (P - 1) + Lm (the tree's levels plus an issue slot per add, a bound)
         for (int l = lb; l < lb + r; ++l) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
-#pragma HLS PIPELINE II=1
+#pragma HLS PIPELINE II=CFG::FOLD_II
             T p[P];
 #pragma HLS ARRAY_PARTITION variable=p complete
             for (int t = 0; t < P; ++t) {
@@ -399,8 +404,8 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
             }
             scaled[l] = tau * fold_partials<T, P>(p);
         }
-        FGC_CYCLES("qr_update", U, "fold_scale", r, 1,
-                   CFG::ADD_LAT * ceil_log2(P) + CFG::MUL_LAT);
+        FGC_CYCLES("qr_update", U, "fold_scale", r, CFG::FOLD_II,
+                   CFG::ADD_LAT * ceil_log2(P) + (P - 1) + CFG::MUL_LAT);
         // x -= (tau v.x) v, column by column; the entry in row j (active row 0) goes to the
         // collector as it is updated: trip n r, II 1, depth Lm + La
         // (each entry (at[a], l) is read and written once: the active rows at[] are distinct,
@@ -598,16 +603,18 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
 // ---- the step ---------------------------------------------------------------------------------
 
 // After the reflections (qr_step, fgc_qr_stream.h's qrs_step): true if k < f or a frontal pivot
-// |R_ii| of cond (w + 1 = cols columns) is not above CFG::SINGULAR_EPS * scale.
-// Trip f, II 1, depth 2 (read, compare).
+// |R_ii| of cond (w + 1 = cols columns) is not above CFG::SINGULAR_EPS * scale (that product
+// once, before the loop: one multiplier in sequential code). Trip f, II 1, depth 2 (read,
+// compare).
 template <class CFG>
 bool qr_pivot_check(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int cols,
                     int k, typename CFG::T scale) {
     bool bad = k < f;
+    const typename CFG::T least = CFG::SINGULAR_EPS * scale;
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
-        if (i >= k || !(qr_abs(cond[i * cols + i]) > CFG::SINGULAR_EPS * scale)) bad = true;
+        if (i >= k || !(qr_abs(cond[i * cols + i]) > least)) bad = true;
     }
     FGC_CYCLES("qr_pivot_check", 0, "pivot_check", f, 1, 2);
     return bad;

@@ -21,7 +21,7 @@ Use:
   table's figures, plus memories);
 - :func:`loop_ii`: the smallest II a loop's memory accesses allow (accesses per iteration to one
   array over ``PORTS`` × its banks where the loop touches it), the plan's II must be at least
-  this (the second reader, ``backends/hls/reader.py``, holds the emitted text to the same rule).
+  this (the second reader, ``backends/hls/reader/``, holds the emitted text to the same rule).
 
 The second reader re-derives these figures from the emitted text; ``check_dsp`` fails when the
 plan's sum is below the text's.

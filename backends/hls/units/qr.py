@@ -97,7 +97,9 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             lb = c0 // units + (1 if next_here else 0)
             r = (cols - 1 - u) // units - lb + 1 if c0 < cols else 0
             if r > 0 and n > 1:
-                loops += [Loop("dots", n * r, 1, lm + la), Loop("fold_scale", r, 1, la * tree + lm),
+                # fold_scale: the fold's p - 1 adds on one adder (II p - 1)
+                loops += [Loop("dots", n * r, 1, lm + la),
+                          Loop("fold_scale", r, p - 1, la * tree + (p - 1) + lm),
                           Loop("axpys", n * r, 1, lm + la)]
             elif r > 0 and j >= 0:
                 loops.append(Loop("negate_rows" if n == 1 else "rows_out", r, 1, 1))
@@ -119,20 +121,23 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
 
 
 def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[BoundLoop, ...]]:
-    """The operators of one unit set's Evaluate (qr_evaluate, qr_finish) and of one Update
-    unit (qr_update<CFG, U>) as Vitis binds fgc_qr.h's text: each pipelined loop its own
-    operators at II 1 (``fold_scale`` holds ``fold_partials<P>``'s P - 1 adders beside its
-    multiplier), the sequential code one operator of each kind it uses. qr_step's two parity
-    call sites of qr_reflection share one instance (its ALLOCATION function limit=1), so each
-    unit is one RTL copy. ``partials``: CFG::PARTIALS."""
+    """The operators of one unit set's Evaluate (qr_evaluate, qr_finish, and qr_pivot_check's
+    threshold) and of one Update unit (qr_update<CFG, U>) as Vitis binds fgc_qr.h's text: each
+    pipelined loop its own operators at its II (``fold_scale``, at II P - 1, folds
+    ``fold_partials<P>``'s P - 1 adds on one adder beside its multiplier), the sequential code
+    one operator of each kind it uses. qr_step's two parity call sites of qr_reflection share
+    one instance (its ALLOCATION function limit=1), so each unit is one RTL copy.
+    ``partials``: CFG::PARTIALS."""
     p = partials
     evaluate = (BoundLoop("receive_norm", (("add", 1), ("mul", 1)), 1),
                 BoundLoop("fold", (("add", p - 1),), 0),  # fold_partials<P>, sequential
-                BoundLoop("qr_finish", (("add", 2), ("mul", 1), ("div", 1), ("sqrt", 1)), 0))
+                BoundLoop("qr_finish", (("add", 2), ("mul", 1), ("div", 1), ("sqrt", 1)), 0),
+                # qr_pivot_check's threshold SINGULAR_EPS * scale, before its loop
+                BoundLoop("pivot_check", (("mul", 1),), 0))
     update = (BoundLoop("vector_dot", (("add", 1), ("mul", 1)), 1),
               BoundLoop("axpy_next_column", (("add", 1), ("mul", 1)), 1),
               BoundLoop("dots", (("add", 1), ("mul", 1)), 1),
-              BoundLoop("fold_scale", (("add", p - 1), ("mul", 1)), 1),
+              BoundLoop("fold_scale", (("add", p - 1), ("mul", 1)), p - 1),
               BoundLoop("axpys", (("add", 1), ("mul", 1)), 1),
               # the next pivot column's fold (fold_partials<P + 1>), its pivot term and scale
               BoundLoop("fold_scale_next", (("add", p),), 0),

@@ -1,217 +1,36 @@
-"""A synthesisability lint for emitted C++ (a conservative subset of what Vitis HLS accepts).
-
-Rules, checked on code with comments and string literals blanked out:
-
-- ``alloc``: no dynamic allocation (``new``, ``delete``, ``malloc``, ``calloc``, ``realloc``,
-  ``free``);
-- ``stl``: no STL containers or strings (``std::vector``, ``<map>``, …);
-- ``recursion``: no function that can reach itself through calls within the file;
-- ``unbounded``: no ``while``/``do``/``goto`` and no ``for`` without a condition;
-- ``tripcount``: every ``for`` loop compares its variable with a compile-time bound (integer
-  literals and ALL_CAPS constants) or opens its body with ``#pragma HLS LOOP_TRIPCOUNT``.
-
-The testbench and the native backend's files run only on the host, so they are checked for
-``alloc`` and ``stl`` only (``synthesis=False``).
-
-**Semantic rules** (:func:`semantic_issues`, on the synthesised files of a project together; a
-deliberately small C-like parser: function definitions and their parameters, calls, pragmas,
-``for`` loops, ``constexpr``/``#define`` integer constants):
-
-- ``dataflow``: the block holding ``#pragma HLS DATAFLOW`` (a function body or a loop body) holds
-  only declarations of local channels (no initialiser), HLS pragmas, unconditional calls of
-  ``void`` functions defined in the project, and fully unrolled (``#pragma HLS UNROLL`` without a
-  factor) constant-bound loops of such calls: no ``if``/``return``/assignment, no used return
-  value;
-- ``channel``: each array, pointer, reference or ``hls::stream`` passed to the calls of a
-  DATAFLOW block is written by at most one call and read by at most one; the direction comes
-  from the callee's parameter (streams: ``.write(``/``.read(`` in its body; ``const``: a read;
-  others: assigned → written, used otherwise → read; passed on → the inner callee's use). One
-  that is both written and read in the block (by two or more calls) must be written by one call
-  and read by a *different, later* one: a channel read before it is written (a feedback through
-  it between invocations of the region) or read and written by the same call is an issue. A
-  memory that a single call alone reads and writes (an Update unit's bank) is that process's
-  own, not a channel;
-- ``pointer``: no pointer variable or parameter is reassigned (``=``, ``+=``, ``++``…) after its
-  initialisation, and no function returns a pointer;
-- ``function_pointer``: no function pointer (declarator ``(*f)(…)``), and no function defined in
-  the project passed as a template argument;
-- ``partition``: an ``ARRAY_PARTITION`` factor is at most the partitioned dimension (sizes from
-  the files' integer constants; an array whose size cannot be resolved, a template parameter,
-  is not judged);
-- ``pipeline``: a ``PIPELINE`` loop (or function) holds only loops with constant bounds (start
-  and end), which HLS unrolls completely;
-- ``dsp``: Σ over ``#pragma HLS ALLOCATION operation instances=<op> limit=<n>`` of n × the DSP of
-  one ``<op>`` (:mod:`fgc_backends.cost.operators`, by precision: ``f…``/``d…`` names, else the
-  project's scalar) is at most the part's DSP count (``hls/target.py``; each function is counted
-  as one hardware instance);
-- ``synthesis_macro``: no ``__SYNTHESIS__`` in a synthesised file (C simulation must compile the
-  code that is synthesised).
-"""
+"""The semantic rules (``dataflow``, ``channel``, ``pointer``, ``function_pointer``,
+``partition``, ``pipeline``, ``dsp``, ``synthesis_macro``: the package's docstring) on the
+synthesised files of a project read together."""
 
 from __future__ import annotations
 
 import re
-import warnings
 from collections.abc import Iterable
-from dataclasses import dataclass
-from pathlib import Path
 
-from fgc.errors import FgcError
-from fgc_backends.cfamily.lint import (  # the host rules, shared with the native backend
-    LintIssue,
-    host_issues,
-    line_of,
-    strip_comments_and_strings,
-    synthesis_view,
-    views,
+from fgc_backends.cfamily.lint import LintIssue, strip_comments_and_strings
+from fgc_backends.hls.lint.cxx import (
+    _BOUND,
+    _FN_POINTER,
+    _FOR,
+    _KEYWORDS_ALL,
+    _constant_bounds,
+    _constants,
+    _enclosing_block,
+    _evaluate,
+    _for_header,
+    _Function,
+    _functions,
+    _line,
+    _matching,
+    _Param,
+    _split_top,
+    statement_end,
 )
-
-
-class HlsLintError(FgcError):
-    """Emitted C++ breaks a synthesisability rule (each issue names file, line and rule)."""
-
-
-_UNBOUNDED = re.compile(r"\b(while|do|goto)\b")
-_FOR = re.compile(r"\bfor\s*\(")
-_BOUND = re.compile(r"^\s*\w+\s*(<|<=|>|>=)\s*([A-Z0-9_+\-*/() ]+)\s*$")
-_CONSTANT = re.compile(r"^[A-Z0-9_+\-*/() ]+$")
-_DEFINITION = re.compile(r"\b([A-Za-z_]\w*)\s*\(([^;{}]*)\)\s*(const\s*)?\{")
-_CALL = re.compile(r"\b([A-Za-z_]\w*)\s*(<[^<>;]*>)?\s*\(")
-_KEYWORDS = {"if", "for", "while", "switch", "return", "sizeof", "do", "catch"}
-
-
-def lint_source(text: str, file: str = "<source>", synthesis: bool = True) -> list[LintIssue]:
-    """All rule violations in one C++ source text."""
-    # pragmas stay visible to the trip-count rule, but their words are not code
-    code, plain = views(text)
-    issues = host_issues(code, plain, file)
-    if synthesis:
-        issues += [LintIssue(file, _line(plain, m.start()), "unbounded",
-                             f"'{m.group(1)}' has no bounded trip count")
-                   for m in _UNBOUNDED.finditer(plain)]
-        issues += _loops(code, file)
-        issues += _recursion(plain, file)
-    return sorted(issues, key=lambda i: (i.line, i.rule))
-
-
-_line = line_of
-
-
-def _matching(text: str, start: int, open_: str, close: str) -> int:
-    """Index of the bracket closing the one at ``start``."""
-    depth = 0
-    for i in range(start, len(text)):
-        if text[i] == open_:
-            depth += 1
-        elif text[i] == close:
-            depth -= 1
-            if depth == 0:
-                return i
-    return len(text) - 1
-
-
-def _loops(code: str, file: str) -> list[LintIssue]:
-    issues = []
-    for m in _FOR.finditer(code):
-        close = _matching(code, m.end() - 1, "(", ")")
-        parts = code[m.end():close].split(";")
-        line = _line(code, m.start())
-        if len(parts) != 3 or not parts[1].strip():
-            issues.append(LintIssue(file, line, "unbounded", "for loop without a condition"))
-            continue
-        # fgc::N_X and a unit's CFG::MAX_ROWS are constants
-        bound = _BOUND.match(re.sub(r"\b(?:[a-z_]\w*|CFG)::", "", parts[1]))
-        if bound and _CONSTANT.match(bound.group(2)) and re.search(r"[A-Z0-9]", bound.group(2)):
-            continue
-        body = code[close + 1:close + 400].lstrip()
-        if body.startswith("{") and re.match(r"\{\s*#\s*pragma\s+HLS\s+LOOP_TRIPCOUNT\b", body):
-            continue
-        issues.append(LintIssue(file, line, "tripcount", f"loop bound '{parts[1].strip()}' is "
-                                "not constant and the body has no LOOP_TRIPCOUNT pragma"))
-    return issues
-
-
-def _recursion(code: str, file: str) -> list[LintIssue]:
-    bodies: dict[str, tuple[int, str]] = {}
-    for m in _DEFINITION.finditer(code):
-        name = m.group(1)
-        if name in _KEYWORDS:
-            continue
-        # a constexpr helper (fgc_cycles.h's ceil_log2) is evaluated by the compiler on the
-        # constants it is given: no recursion is left for synthesis
-        if re.search(r"\bconstexpr\b[^;{}]*$", code[max(0, m.start() - 120):m.start() + 1]):
-            continue
-        end = _matching(code, m.end() - 1, "{", "}")
-        bodies.setdefault(name, (_line(code, m.start()), code[m.end():end]))
-    # a call qualified through a template argument list (``unit<CFG, U + 1>::run(``) is a
-    # compile-time recursion over a constant, closed by a specialisation: each instance is a
-    # different function, which HLS instantiates (the unit headers' process networks)
-    calls = {name: {c.group(1) for c in _CALL.finditer(body)
-                    if not re.search(r">\s*::\s*$", body[:c.start()])} & bodies.keys()
-             for name, (_, body) in bodies.items()}
-    issues = []
-    for name in sorted(bodies):
-        if _reaches(calls, name):
-            issues.append(LintIssue(file, bodies[name][0], "recursion",
-                                    f"function '{name}' can call itself"))
-    return issues
-
-
-def _reaches(calls: dict[str, set[str]], start: str) -> bool:
-    seen, stack = set(), list(calls[start])
-    while stack:
-        f = stack.pop()
-        if f == start:
-            return True
-        if f not in seen:
-            seen.add(f)
-            stack.extend(calls.get(f, ()))
-    return False
-
-
-def lint_files(paths: Iterable[Path], synthesis: bool = True) -> list[LintIssue]:
-    """Issues of every file in ``paths``."""
-    return [i for p in paths for i in lint_source(Path(p).read_text(), Path(p).name, synthesis)]
-
-
-class HlsFitWarning(UserWarning):
-    """An emitted design is well formed but does not fit its part (the ``dsp`` rule)."""
-
-
-def lint_project(project, synthesised: Iterable[Path], strict: bool = True) -> list[LintIssue]:
-    """Lint an emitted project: full rules on ``synthesised`` files, allocation/STL rules on the
-    rest, and the semantic rules (:func:`semantic_issues`) on the synthesised files together;
-    raise :class:`HlsLintError` listing every issue. With ``strict=False`` semantic issues do not
-    raise; they are returned. The ``dsp`` rule (the ALLOCATION limits imply more DSP than the
-    part has) never raises: such a design is still a correct program whose C simulation checks
-    the numbers (a double LIO design, say), so it is emitted with an :class:`HlsFitWarning` and
-    the issue is returned; synthesis would not fit it."""
-    synthesised = [Path(p) for p in synthesised]
-    host = [p for p in project.files if p.suffix in (".cpp", ".h") and p not in synthesised]
-    issues = lint_files(synthesised) + lint_files(host, synthesis=False)
-    config = getattr(project, "config", None)
-    semantic = semantic_issues([(p.name, synthesis_view(p.read_text())) for p in synthesised],
-                               part=getattr(config, "part", None),
-                               scalar=getattr(config, "scalar_cxx", None))
-    fit = [i for i in semantic if i.rule == "dsp"]
-    for i in fit:
-        warnings.warn(f"{project.name}: {i.message}: the design does not fit its part",
-                      HlsFitWarning, stacklevel=3)
-    raised = issues + [i for i in semantic if i.rule != "dsp"] if strict else issues
-    if raised:
-        listing = "\n".join(str(i) for i in raised[:20])
-        more = f"\n… and {len(raised) - 20} more" if len(raised) > 20 else ""
-        raise HlsLintError(f"emitted project '{project.name}' is not synthesisable:\n{listing}"
-                           f"{more}")
-    return semantic
-
-
-# --------------------------------------------------------------------------------------------
-# semantic rules
-# --------------------------------------------------------------------------------------------
 
 SEMANTIC_RULES = ("dataflow", "channel", "pointer", "function_pointer", "partition", "pipeline",
                   "dsp", "synthesis_macro")
+
+
 # Vitis HLS operation names of ALLOCATION → (operator kind, precision or None: the scalar's)
 ALLOCATION_OPS = {
     "fadd": ("add", "float32"), "fsub": ("add", "float32"), "dadd": ("add", "float64"),
@@ -222,225 +41,14 @@ ALLOCATION_OPS = {
     "flog": ("log", "float32"), "dlog": ("log", "float64"), "add": ("add", None),
     "sub": ("add", None), "mul": ("mul", None), "div": ("div", None),
 }
-_KEYWORDS_ALL = _KEYWORDS | {"else", "case", "default", "break", "continue", "new", "delete"}
-_CONSTEXPR = re.compile(r"\b(?:static\s+)?(?:inline\s+)?(?:constexpr|const)\s+(?:unsigned\s+)?"
-                        r"(?:int|long|short|std::size_t|size_t|unsigned)\s+([A-Za-z_]\w*)\s*="
-                        r"\s*([^;{}]+);")
-_DEFINE = re.compile(r"^[ \t]*#\s*define\s+([A-Za-z_]\w*)[ \t]+([^\n]+)$", re.M)
+
+
 _PRAGMA = re.compile(r"#\s*pragma\s+HLS\s+([^\n]*)", re.I)
-_FN_POINTER = re.compile(r"\(\s*\*\s*(\w*)\s*\)\s*\(")
+
+
 _POINTER_DECL = re.compile(r"(?:^|(?<=[;{}])|(?<=for\()|(?<=for \())\s*(?:const\s+)?"
                            r"[A-Za-z_][\w:]*(?:<[^;<>]*>)?\s*(?:const\s*)?\*\s*(?:const\s+)?"
                            r"([A-Za-z_]\w*)\s*(?=[=;,)\[])", re.M)
-
-
-@dataclass(frozen=True)
-class _Param:
-    name: str
-    type: str
-    dims: tuple[str, ...]
-
-    @property
-    def stream(self) -> bool:
-        return "stream" in self.type and "<" in self.type
-
-    @property
-    def const(self) -> bool:
-        return re.search(r"\bconst\b", self.type) is not None
-
-    @property
-    def pointer(self) -> bool:
-        return "*" in self.type
-
-    @property
-    def channel(self) -> bool:
-        """Passes storage, not a value: an array, pointer, reference or stream."""
-        return bool(self.dims) or self.pointer or "&" in self.type or self.stream
-
-
-@dataclass(frozen=True)
-class _Function:
-    name: str
-    ret: str
-    params: tuple[_Param, ...]
-    file: str
-    code: str  # the file's code (comments/strings blanked)
-    start: int  # of the definition
-    body: tuple[int, int]  # indices of '{' and its '}'
-    qualname: str = ""  # Struct::name for a member of a struct or class
-    template_ints: tuple[str, ...] = ()  # int template parameters (of it and its struct)
-
-    @property
-    def inline(self) -> bool:
-        return re.match(r"\s*#\s*pragma\s+HLS\s+INLINE\s*(?:\n|$)", self.text, re.I) is not None
-
-    @property
-    def text(self) -> str:
-        return self.code[self.body[0] + 1:self.body[1]]
-
-
-def _split_top(text: str, sep: str = ",") -> list[str]:
-    """``text`` split at ``sep`` outside (), [], {}, <>."""
-    parts, depth, cur = [], 0, []
-    for ch in text:
-        if ch in "([{<":
-            depth += 1
-        elif ch in ")]}>":
-            depth -= 1
-        if ch == sep and depth == 0:
-            parts.append("".join(cur))
-            cur = []
-        else:
-            cur.append(ch)
-    parts.append("".join(cur))
-    return [p.strip() for p in parts if p.strip()]
-
-
-def _params(text: str) -> tuple[_Param, ...]:
-    out = []
-    for part in _split_top(text):
-        part = part.split("=")[0].strip()
-        if part in ("void", "...") or _FN_POINTER.search(part):
-            continue
-        m = re.match(r"^(.*?)([A-Za-z_]\w*)\s*((?:\[[^\]]*\]\s*)*)$", part, re.S)
-        if not m or not m.group(1).strip():
-            continue
-        dims = tuple(d.strip() for d in re.findall(r"\[([^\]]*)\]", m.group(3)))
-        out.append(_Param(m.group(2), " ".join(m.group(1).split()), dims))
-    return tuple(out)
-
-
-def _functions(file: str, code: str) -> list[_Function]:
-    """Top-level function definitions of one file (``code``: comments/strings blanked)."""
-    out, pos = [], 0
-    structs = []  # (name, '{', '}', int template parameters)
-    for m in re.finditer(r"(template\s*<([^{};]*?)>\s*)?\b(?:struct|class)\s+([A-Za-z_]\w*)"
-                         r"[^;{}()]*\{", code):
-        brace = m.end() - 1
-        ints = tuple(re.findall(r"\bint\s+([A-Za-z_]\w*)", m.group(2) or ""))
-        structs.append((m.group(3), brace, _matching(code, brace, "{", "}"), ints))
-    for m in _DEFINITION.finditer(code):
-        if m.start() < pos or m.group(1) in _KEYWORDS_ALL:
-            continue
-        start = max(code.rfind(c, 0, m.start()) for c in ";{}")
-        prefix = code[start + 1:m.start()]
-        prefix = "\n".join(line for line in prefix.splitlines()
-                           if not line.strip().startswith("#"))
-        header = re.match(r"^\s*template\s*<([^{};]*?)>", prefix.strip())
-        ints = tuple(re.findall(r"\bint\s+([A-Za-z_]\w*)", header.group(1))) if header else ()
-        prefix = re.sub(r"^\s*template\s*<[^{};]*?>\s*(?=[A-Za-z_])", "", prefix.strip())
-        ret = re.sub(r"\b(inline|static|constexpr|extern)\b", "", prefix).strip()
-        if not ret or "=" in ret or "(" in ret or ret.endswith(("::", ".")):
-            continue  # a constructor-like call or an expression, not a definition
-        brace = m.end() - 1
-        end = _matching(code, brace, "{", "}")
-        owner = [st for st in structs if st[1] < m.start() < st[2]]
-        qualname = f"{owner[-1][0]}::{m.group(1)}" if owner else m.group(1)
-        ints += owner[-1][3] if owner else ()
-        out.append(_Function(m.group(1), " ".join(ret.split()), _params(m.group(2)), file, code,
-                             m.start(), (brace, end), qualname, ints))
-        pos = end
-    return out
-
-
-def _constants(codes: Iterable[str]) -> dict[str, int]:
-    """Integer constants (``constexpr``/``const`` ints, ``#define``) resolved to values."""
-    raw: dict[str, str] = {}
-    for code in codes:
-        for m in _CONSTEXPR.finditer(code):
-            # `const int A = 4, B = 9;`: every declarator (split outside brackets)
-            first, *rest = _split_top(m.group(2))
-            raw.setdefault(m.group(1), first)
-            for part in rest:
-                more = re.fullmatch(r"\s*([A-Za-z_]\w*)\s*=\s*(.+?)\s*", part, re.S)
-                if more:
-                    raw.setdefault(more.group(1), more.group(2))
-        for m in _DEFINE.finditer(code):
-            raw.setdefault(m.group(1), m.group(2))
-    values: dict[str, int] = {}
-    for _ in range(8):  # constants defined from constants
-        for name, expr in raw.items():
-            if name not in values:
-                value = _evaluate(expr, values)
-                if value is not None:
-                    values[name] = value
-    return values
-
-
-def _evaluate(expr: str, values: dict[str, int]) -> int | None:
-    """The integer value of ``expr`` (literals, known names, + - * / % ( )), or None."""
-    text = re.sub(r"\b[A-Za-z_]\w*::", "", expr).strip()
-    text = re.sub(r"\b(\d+)[uUlL]*\b", r"\1", text)
-
-    def name(m):
-        return str(values[m.group(0)]) if m.group(0) in values else "?"
-
-    text = re.sub(r"\b[A-Za-z_]\w*\b", name, text)
-    if not re.fullmatch(r"[0-9+\-*/%() ]+", text):
-        return None
-    try:
-        return int(eval(text.replace("/", "//"), {"__builtins__": {}}, {}))  # noqa: S307
-    except (SyntaxError, ZeroDivisionError, TypeError, ValueError):
-        return None
-
-
-def _is_constant(expr: str) -> bool:
-    text = re.sub(r"\b\w+::", "", expr).strip()  # fgc::N_X, CFG::N_UNITS are constants
-    return bool(text) and _CONSTANT.match(text) is not None
-
-
-def _for_header(code: str, start: int) -> tuple[list[str], int, int] | None:
-    """(init, condition, step), index after ')', of the ``for`` at ``start``."""
-    open_ = code.index("(", start)
-    close = _matching(code, open_, "(", ")")
-    parts = code[open_ + 1:close].split(";")
-    if len(parts) != 3:
-        return None
-    return [p.strip() for p in parts], open_, close + 1
-
-
-def _constant_bounds(header: list[str]) -> bool:
-    """Whether a ``for`` header starts and ends at compile-time constants."""
-    init = re.match(r"^(?:const\s+)?(?:unsigned\s+)?(?:int|long|short|size_t|std::size_t|"
-                    r"unsigned)?\s*\w+\s*=\s*(.+)$", header[0])
-    bound = _BOUND.match(re.sub(r"\b\w+::", "", header[1]))
-    return bool(init and _is_constant(init.group(1)) and bound and _is_constant(bound.group(2)))
-
-
-def statement_end(code: str, pos: int, blocks: bool = False) -> int:
-    """Index of the ';' ending the C++ statement that starts at ``pos``: the first ';' outside
-    (), [] and {} (an initializer list or a lambda's body nests), or the '}' closing the block
-    the statement is in; ``len(code)`` if there is neither. ``blocks``: a '{' or '}' outside
-    () and [] ends the statement too (the second reader's scan, which reads a block's
-    statements one by one and its blocks apart). The one C++ statement scanner of the lint and
-    the second reader (backends/hls/reader.py)."""
-    depth = 0
-    for i in range(pos, len(code)):
-        ch = code[i]
-        if ch in "{}" and blocks and depth <= 0:
-            return i
-        if ch in "([{":
-            depth += 1
-        elif ch in ")]}":
-            if ch == "}" and depth == 0:
-                return i
-            depth -= 1
-        elif ch == ";" and depth <= 0:
-            return i
-    return len(code)
-
-
-def _enclosing_block(code: str, pos: int) -> tuple[int, int]:
-    """The '{' … '}' block that contains ``pos``."""
-    depth = 0
-    for i in range(pos - 1, -1, -1):
-        if code[i] == "}":
-            depth += 1
-        elif code[i] == "{":
-            if depth == 0:
-                return i, _matching(code, i, "{", "}")
-            depth -= 1
-    return 0, len(code)
 
 
 class _Checker:

@@ -1,20 +1,17 @@
-"""The second reader (fgc_backends.hls.reader): what Vitis would build, read from the emitted
-text alone. Each planted defect of issue 32 (a fold inside a pipelined loop, a long write into
-an unpartitioned global, a data-dependent read-modify-write without DEPENDENCE) makes the check
-fail, and its correction passes; on an emitted design the reader finds every Update unit copy
-and every pipelined loop the plan prints."""
+"""The second reader's loop rules (backends/hls/reader/loops.py, count.py): what Vitis would
+build, read from the text alone. Each planted defect of issue 32 (a fold inside a pipelined
+loop, a long write into an unpartitioned global, a data-dependent read-modify-write without
+DEPENDENCE) makes the check fail, and its correction passes."""
 
 from __future__ import annotations
 
-import re
-from pathlib import Path
-
 import pytest
 
-from fgc_backends.hls.reader import check, check_dsp, emitted_files, read_design, read_project
+from fgc_backends.hls.reader import check, check_dsp, read_design, read_project
 
 ADD_LATENCY = 4  # a float adder's stages in these snippets
 DSP = {"add": 2, "mul": 3, "div": 0, "sqrt": 0, "special": 0}
+
 
 FOLD = """
 typedef float T;
@@ -193,89 +190,6 @@ T top(T x, T y, bool p) {
     assert zero.ii_bound == 2  # four stores through one memory's two ports
 
 
-def test_a_recursive_template_cascade_is_read_per_stage():
-    """A unit instantiated through a struct template's recursion (fgc_cpe.h's
-    cpe_cascade<CFG, K>::run calling cpe<CFG, K>) is read once per stage, each stage's
-    pipelined loop with its operators: the cascade's DSP grows with the stages."""
-    text = """
-typedef float T;
-const int N = 32;
-template <int K>
-void stage(const T a[N], T b[N]) {
-    for (int i = 0; i < N; ++i) {
-#pragma HLS PIPELINE II=1
-        b[i] = a[i] * a[i] + T(K);
-    }
-}
-template <int K, int M, bool END = (K == M)>
-struct cascade {
-    static void run(T link[M + 1][N]) {
-#pragma HLS INLINE
-        stage<K>(link[K], link[K + 1]);
-        cascade<K + 1, M>::run(link);
-    }
-};
-template <int K, int M>
-struct cascade<K, M, true> {
-    static void run(T link[M + 1][N]) {
-#pragma HLS INLINE
-    }
-};
-void top3(T link[4][N]) {
-    cascade<0, 3>::run(link);
-}
-void top6(T link[7][N]) {
-    cascade<0, 6>::run(link);
-}
-"""
-    dsp = {"add": 2, "mul": 3}
-    three = read_design([("s.cpp", text)], "top3", ADD_LATENCY)
-    six = read_design([("s.cpp", text)], "top6", ADD_LATENCY)
-    assert dict(three.modules)["stage"] == 3 and dict(six.modules)["stage"] == 6
-    assert {dict(r.template)["K"] for r in three.loops if r.function == "stage"} == {0, 1, 2}
-    assert three.dsp(dsp) == 3 * 5 and six.dsp(dsp) == 6 * 5
-
-
-@pytest.fixture(scope="module")
-def chain_design(tmp_path_factory):
-    import fgc
-    from fgc import Pose2
-    from fgc.compile import compile_graph
-    from fgc.frontend import noise
-    from fgc.frontend.factors import BetweenFactor, PriorFactor
-    from fgc.ir.program import SolverConfig
-    from fgc_backends.hls import HlsConfig, emit
-
-    graph = fgc.Graph()
-    for i in range(8):
-        graph.add_variable(f"x{i}", Pose2(1.0 * i, 0.1 * i, 0.05 * i))
-    graph.add(PriorFactor("x0", Pose2(0.0, 0.0, 0.0), noise.isotropic(3, 0.1)))
-    for i in range(7):
-        graph.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
-                                noise.isotropic(3, 0.1)))
-    program = compile_graph(graph, name="reader_chain", solver=SolverConfig(units=3))
-    out = tmp_path_factory.mktemp("reader") / "accel"
-    emit(program, out, HlsConfig())
-    return out
-
-
-def test_an_emitted_design_read_back(chain_design):
-    """Every pipelined loop the kernel prints is read (one per instantiation of a template),
-    each Update unit is its own module (3 units x 2 unit sets; qr_step's two parity call sites
-    of the reflection share one instance through its ALLOCATION function limit=1), and every
-    loop's II is read from its pragma."""
-    files, top = emitted_files(chain_design)
-    design = read_design(files, top, ADD_LATENCY)
-    text = "\n".join(t for _, t in files)
-    pragmas = len(re.findall(r"#pragma HLS PIPELINE II=", text))
-    assert len({(r.file, r.line) for r in design.loops}) == pragmas
-    modules = dict(design.modules)
-    assert modules["qr_update"] == 3 * 2
-    assert modules["qr_reflection"] == 2
-    assert all(r.ii >= 1 and r.ii_bound >= 1 for r in design.loops)
-    assert design.dsp(DSP) > 0
-
-
 CAPPED_RMW = """
 typedef float T;
 T ACC[16];
@@ -348,26 +262,64 @@ def test_only_the_branch_the_template_takes_is_built():
     assert dict(loops[0].ops) == {"mul": 1}
 
 
-@pytest.mark.heavy  # ~40 s of CPU: two kernels emitted and read
-def test_the_on_chip_stream_design_reads_both_kernels(tmp_path):
-    """The on-chip incremental design (fgc compile --incremental K): one top, the stream
-    section, the window kernel and the batch kernel, each kernel's functions in its own .cpp's
-    anonymous namespace under the same names (evaluate_0, LmConfig::…). Each call resolves in
-    its own translation unit, so both kernels' datapaths are read, each with its own
-    constants."""
-    from fgc.app.cli import main
+HIDDEN = """
+typedef float T;
+const int N = 64;
+T norm(T a, T b) { return a * a + b * b; }
+void gate(const T x[N], const T y[N], T eps, T out[N], hls::stream<T>& s, bool hit[N]) {
+    for (int i = 0; i < N; ++i) {
+#pragma HLS PIPELINE II=1
+        %BODY%
+    }
+}
+void top(const T x[N], const T y[N], T eps, T out[N], hls::stream<T>& s, bool hit[N]) {
+    gate(x, y, eps, out, s, hit);
+}
+"""
 
-    out = tmp_path / "k"
-    lio = Path(__file__).resolve().parents[2] / "examples" / "lio.py"
-    assert main(["compile", str(lio), "-p", "N=5", "--incremental", "2",
-                 "--batch-every", "3", "--backend", "hls", "--out", str(out)]) == 0
-    files, top = emitted_files(out)
-    kernels = sorted(name for name, _ in files if name.endswith(".cpp"))
-    assert len(kernels) == 2
-    design = read_design(files, top, ADD_LATENCY)
-    window, batch = (design.dsp(DSP, [k]) for k in kernels)
-    # each kernel holds its own factor datapaths: comparable figures (the window kernel's
-    # were read as the batch kernel's, leaving it ~100 DSP of stream glue)
-    assert window > 0.4 * batch and batch > 0.4 * window
-    assert "kept_walk" in dict(design.modules)
-    assert not [i for i in check(design.reached_loops) if i.file in kernels]
+
+@pytest.mark.parametrize("body, ops", [
+    # an if condition: two multiplies decide the branch (a float compare binds no DSP)
+    ("if (x[i] * y[i] > eps * eps) out[i] = x[i]; else out[i] = y[i];", {"mul": 2}),
+    # a ternary's condition inside a call's argument (a stream write)
+    ("s.write(x[i] - y[i] > eps ? x[i] * T(2) : y[i]);", {"add": 1, "mul": 1}),
+    # a boolean's initialiser
+    ("const bool big = x[i] * x[i] + y[i] * y[i] > eps; hit[i] = big;", {"add": 1, "mul": 2}),
+    # a float-returning call compared: its operators in the callee, read in place
+    ("hit[i] = norm(x[i], y[i]) > eps;", {"add": 1, "mul": 2}),
+    # integer arithmetic in a condition binds no floating-point operator
+    ("if (i * 3 + 1 < N) out[i] = x[i];", {}),
+])
+def test_operators_outside_a_float_statement_are_read(body, ops):
+    """Conditions, a ternary inside a call's arguments, a boolean's initialiser: a float
+    operator there is an operator Vitis binds in the pipelined loop at II 1, and the plan must
+    price it (the reader counted only float statements and missed them: check_dsp passed a
+    plan of 0 DSP)."""
+    text = HIDDEN.replace("%BODY%", body)
+    design = read_design([("hidden.cpp", text)], "top", ADD_LATENCY)
+    (loop,) = design.loops
+    assert dict(loop.instances) == ops
+    need = sum(n * DSP[k] for k, n in ops.items())
+    assert design.dsp(DSP) == need
+    assert bool(check_dsp(design, plan_dsp=0, dsp_of=DSP)) == (need > 0)
+
+
+LOOP_CONDITION = """
+typedef float T;
+void scan(const T x[64], T eps, int out[1]) {
+    int k = 0;
+    for (int i = 0; i < 64 && x[i] * x[i] > eps; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=64
+#pragma HLS PIPELINE II=1
+        k += 1;
+    }
+    out[0] = k;
+}
+void top(const T x[64], T eps, int out[1]) { scan(x, eps, out); }
+"""
+
+
+def test_a_pipelined_loops_own_condition_is_read():
+    """The multiply in a pipelined loop's condition runs every iteration: one multiplier."""
+    (loop,) = read_project([("cond.cpp", LOOP_CONDITION)], ADD_LATENCY)
+    assert dict(loop.instances) == {"mul": 1}

@@ -1,0 +1,289 @@
+"""Operator, access and recurrence counting: a block's statements run once, constant-bound
+inner loops unrolled and the project functions it calls read in place (:class:`_Counter`)."""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+
+from fgc_backends.hls.lint.cxx import (
+    _Function,
+    _matching,
+    _split_top,
+    statement_end,
+)
+from fgc_backends.hls.reader.expr import ExpressionTyper
+from fgc_backends.hls.reader.scope import _Scope
+from fgc_backends.hls.reader.text import (
+    _CALL,
+    _CONTROL,
+    _DECL,
+    _SPECIAL,
+    _SQRT,
+    _SUBSCRIPTED,
+    FLOAT_TYPES,
+    _Count,
+    _pipelined,
+    _subscripts,
+    _unit,
+    _Var,
+)
+
+
+class _Counter(_Scope):
+    """The operations, array accesses and carried read-modify-writes of a block
+    of text run once."""
+    # -- counting ----------------------------------------------------------------------------
+    def count(self, text: str, scope: dict, env: dict[str, int], loop_var: str | None,
+              outer: frozenset, depth: int = 0) -> _Count:
+        """The operations, accesses and recurrences of ``text`` (a block's contents) run once,
+        inner constant-bound loops unrolled; ``outer``: names that live across iterations of
+        the pipelined loop (a read-modify-write of one of them is carried)."""
+        total = _Count()
+        pos, n = 0, len(text)
+        taken: bool | None = None  # the last if's condition, when the template fixes it
+        while pos < n:
+            m = _CONTROL.search(text, pos)
+            if not m:
+                break
+            word = m.group(0)
+            if word.startswith("for"):
+                open_ = text.index("(", m.start())
+                close = _matching(text, open_, "(", ")")
+                header = text[open_ + 1:close].split(";")
+                body, pos = self._body(text, close + 1)
+                if _pipelined(body):
+                    continue  # its own pipelined loop: read on its own
+                values = self._iterations(header, env) if len(header) == 3 else None
+                # the condition's floating-point operators, evaluated every iteration
+                test = _Count(ops=self._typer(scope).operators(header[1])) \
+                    if len(header) == 3 else _Count()
+                if values is None:
+                    trips = self._tripcount(body, env) or 1
+                    total.add(self.count(body, scope, env, loop_var, outer, depth), trips)
+                    total.add(test, trips)
+                    continue
+                var, seq = values
+                total.add(test, len(seq))
+                if re.search(rf"\b(?:for|if)\s*\([^)]*\b{var}\b", body):
+                    for value in seq:  # the body's shape moves with the variable: unroll it
+                        total.add(self.count(body, scope, {**env, var: value}, loop_var,
+                                             outer, depth))
+                elif seq:
+                    total.add(self.count(body, scope, env, loop_var, outer, depth), len(seq))
+                continue
+            if word.startswith("if"):
+                open_ = text.index("(", m.start())
+                close = _matching(text, open_, "(", ")")
+                condition = text[open_ + 1:close]
+                total.add(self.statement(condition, scope, env, loop_var, outer, depth))
+                body, pos = self._body(text, close + 1)
+                taken = self._condition(condition, env)
+                if taken is not False:
+                    total.add(self.count(body, scope, env, loop_var, outer, depth))
+                continue
+            if word == "else":
+                body, pos = self._body(text, m.end())
+                if taken is not True:  # a branch known taken: its else is never built
+                    total.add(self.count(body, scope, env, loop_var, outer, depth))
+                taken = None
+                continue
+            if word == "#":
+                pos = text.find("\n", m.start())
+                pos = n if pos < 0 else pos
+                continue
+            end = statement_end(text, m.start(), blocks=True)
+            total.add(self.statement(text[m.start():end], scope, env, loop_var, outer, depth))
+            pos = end + 1
+        return total
+
+    def _body(self, text: str, pos: int) -> tuple[str, int]:
+        """The statement or block after ``pos``: its text and the index after it."""
+        while pos < len(text) and text[pos].isspace():
+            pos += 1
+        if pos < len(text) and text[pos] == "{":
+            end = _matching(text, pos, "{", "}")
+            return text[pos + 1:end], end + 1
+        m = re.compile(r"\s*(?:for|if)\s*\(").match(text, pos)
+        if m:  # a loop or branch without braces: up to its own statement's end
+            close = _matching(text, text.index("(", pos), "(", ")")
+            _, after = self._body(text, close + 1)
+            return text[pos:after], after
+        end = statement_end(text, pos, blocks=True)
+        return text[pos:end + 1], end + 1
+
+    def _iterations(self, header: list[str], env: dict[str, int]
+                    ) -> tuple[str, list[int]] | None:
+        """(variable, its values) of a loop with constant bounds, or None."""
+        init = re.match(r"^(?:const\s+)?(?:int|unsigned)?\s*(\w+)\s*=\s*([^,]+)$",
+                        header[0].strip())
+        bound = re.match(r"^\s*(\w+)\s*(<=|<)\s*(.+)$", header[1].strip())
+        if not init or not bound or bound.group(1) != init.group(1):
+            return None
+        var = init.group(1)
+        lo, hi = self._value(init.group(2), env), self._value(bound.group(3), env)
+        if lo is None or hi is None:
+            return None
+        hi += bound.group(2) == "<="
+        step = header[2].strip()
+        add = re.fullmatch(rf"(?:\+\+\s*{var}|{var}\s*\+\+|{var}\s*\+=\s*(.+))", step)
+        mul = re.fullmatch(rf"{var}\s*\*=\s*(.+)", step)
+        values, v = [], lo
+        if add:
+            inc = self._value(add.group(1), env) if add.group(1) else 1
+            if not inc or inc <= 0:
+                return None
+            values = list(range(lo, hi, inc))
+        elif mul:
+            k = self._value(mul.group(1), env)
+            if not k or k <= 1 or lo <= 0:
+                return None
+            while v < hi:
+                values.append(v)
+                v *= k
+        else:
+            return None
+        return (var, values) if len(values) <= 1 << 16 else None
+
+    def _tripcount(self, body: str, env: dict[str, int]) -> int | None:
+        m = re.match(r"\s*#\s*pragma\s+HLS\s+LOOP_TRIPCOUNT\s+max\s*=\s*([\w:]+)", body)
+        return self._value(m.group(1), env) if m else None
+
+    def statement(self, stmt: str, scope: dict, env: dict[str, int], loop_var: str | None,
+                  outer: frozenset, depth: int) -> _Count:
+        out = _Count()
+        stmt = stmt.strip()
+        if not stmt:
+            return out
+        for name, (is_float, dims) in self._declarations(stmt + ";").items():
+            scope[name] = _Var(is_float, dims, name, "local")
+        const = re.match(r"^(?:static\s+)?const\s+int\s+(\w+)\s*=\s*(.+)$", stmt)
+        if const and "," not in const.group(2):
+            value = self._value(const.group(2), env)
+            if value is not None:
+                env[const.group(1)] = value
+        for m in _SUBSCRIPTED.finditer(stmt):
+            var = self._lookup(m.group(1), scope)
+            if var is None or var.storage == "stream":
+                continue
+            op = (m.group(3) or "").strip()
+            if var.storage == "global":
+                out.accesses[var.alias] += 1 + (op not in ("", "="))
+            if var.alias not in outer and var.storage != "global":
+                continue  # a local of this iteration: nothing carried through it
+            subscripts = _subscripts(m.group(2))
+            fixed = any("[" in s for s in subscripts) or loop_var is None or not any(
+                re.search(rf"\b{loop_var}\b", s) for s in subscripts)
+            kinds = {"": ("r",), "=": ("w",)}.get(op, ("r", "w"))
+            out.rw.setdefault(var.alias, set()).update((k, fixed) for k in kinds)
+        scalar = re.match(r"^([A-Za-z_]\w*)\s*([-+*/])=", stmt)
+        if scalar:
+            var = self._lookup(scalar.group(1), scope)
+            if var is not None and var.is_float and not var.dims and \
+                    scalar.group(1) in outer:
+                out.recurrences.add(scalar.group(1))
+        if self._float_statement(stmt, scope):
+            out.ops += self._operators(stmt)
+        else:  # a condition, a call's arguments, an integer's initialiser: typed operands
+            out.ops += self._typer(scope).operators(stmt)
+        for m in _CALL.finditer(stmt) if self.flatten else ():
+            found = self.resolve(stmt, m, env)
+            if found is None or depth > 24:
+                continue
+            close = _matching(stmt, stmt.index("(", m.end() - 1), "(", ")")
+            args = _split_top(stmt[m.end():close])
+            out.add(self.call(found[0], found[1], args, scope, outer, depth + 1))
+        return out
+
+    def _typer(self, scope: dict) -> ExpressionTyper:
+        def is_float(name: str, indices: int) -> bool:
+            var = self._lookup(name, scope)
+            return var is not None and var.is_float and indices >= len(var.dims)
+
+        return ExpressionTyper(is_float, self._float_call)
+
+    def _float_call(self, name: str) -> bool:
+        """Whether the project function (or struct member) ``name`` returns a floating-point
+        value."""
+        f = self.local.get(self.where, {}).get(name) or self.functions.get(name)
+        if f is None:
+            if not hasattr(self, "_member_rets"):
+                self._member_rets: dict[str, str] = {}
+                for qual, variants in self.members.items():
+                    self._member_rets.setdefault(qual.split("::")[-1], variants[0][1].ret)
+            ret = self._member_rets.get(name)
+        else:
+            ret = f.ret
+        return ret is not None and re.search(rf"\b{FLOAT_TYPES}\b", ret) is not None
+
+    def _float_statement(self, stmt: str, scope: dict) -> bool:
+        decl = _DECL.match(stmt + ";")
+        if decl:
+            return re.fullmatch(FLOAT_TYPES, decl.group("type").strip()) is not None
+        lhs = re.match(r"^([A-Za-z_]\w*)\s*(?:\[.*?\]\s*)*[-+*/]?=(?!=)", stmt)
+        if lhs:
+            var = self._lookup(lhs.group(1), scope)
+            return var is not None and var.is_float
+        return stmt.startswith("return") and self.returns_float and \
+            bool(re.search(r"[-+*/]", stmt))
+
+    @staticmethod
+    def _operators(stmt: str) -> Counter:
+        ops: Counter = Counter()
+        text = stmt
+        while True:  # index arithmetic is integer: drop every subscript
+            new = re.sub(r"\[[^\[\]]*\]", "", text)
+            if new == text:
+                break
+            text = new
+        text = re.sub(r"<[^<>;()]*>", "", text)  # template arguments
+        text = re.sub(r"\b\d+(?:\.\d*)?(?:[eE][-+]?\d+)?f?\b", "1", text)
+        ops["sqrt"] += len(_SQRT.findall(text))
+        ops["special"] += len(_SPECIAL.findall(text))
+        compound = re.match(r"^[A-Za-z_]\w*\s*([-+*/])=", text)
+        if compound:
+            ops[{"+": "add", "-": "add", "*": "mul", "/": "div"}[compound.group(1)]] += 1
+        body = text.split("=", 1)[1] if re.search(r"[^=!<>]=[^=]", text) else text
+        # a multiply follows an operand (``= *scale`` dereferences a pointer)
+        ops["mul"] += len(re.findall(r"(?<=[\w)\]])\s*\*(?!=)", body))
+        ops["div"] += len(re.findall(r"/(?!=)", body))
+        ops["add"] += len(re.findall(r"(?<=[\w)\]])\s*[-+](?![-+=>])", body))
+        return +ops
+
+    def call(self, f: _Function, inner_env: dict[str, int], args: list[str], scope: dict,
+             outer: frozenset, depth: int) -> _Count:
+        inner_scope: dict = {}
+        inner_outer = set()
+        for param, arg in zip(f.params, args, strict=False):
+            var = self._param_var(f, param)
+            if var is None:
+                continue
+            base = re.match(r"^&?\s*([A-Za-z_]\w*)", arg)
+            if (param.dims or param.pointer) and base:
+                bound = self._lookup(base.group(1), scope)
+                if bound is not None:
+                    var = _Var(var.is_float, param.dims, bound.alias, bound.storage)
+                    if bound.alias in outer or base.group(1) in outer:
+                        inner_outer.add(bound.alias)
+            inner_scope[param.name] = var
+        key = (f.file, f.qualname, f.start, tuple(sorted(inner_env.items())),
+               tuple(sorted((k, v.alias, v.storage) for k, v in inner_scope.items())),
+               tuple(sorted(inner_outer)))
+        if key not in self.memo:
+            self.memo[key] = _Count()  # a call back into itself counts nothing more
+            saved, self.returns_float = self.returns_float, re.search(
+                rf"\b{FLOAT_TYPES}\b", f.ret) is not None
+            where, self.where = self.where, _unit(f, self.where)
+            try:
+                result = self.count(f.text, inner_scope, dict(inner_env), None,
+                                    frozenset(inner_outer), depth)
+            finally:
+                self.returns_float = saved
+                self.where = where
+            if self.allocation(f.text):  # its own module under ALLOCATION: counted apart
+                capped = _Count(accesses=result.accesses, recurrences=result.recurrences,
+                                rw=result.rw)
+                capped.capped = {f.name: result.ops, **result.capped}
+                result = capped
+            self.memo[key] = result
+        return self.memo[key]

@@ -1,0 +1,198 @@
+"""The design-level reading: every module instance Vitis would make under the top, their
+operators summed (:class:`DesignReading`), and the check that the plan prices at least
+that DSP (:func:`check_dsp`)."""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from fgc_backends.cfamily.lint import LintIssue
+from fgc_backends.hls.lint.cxx import (
+    _Function,
+    _matching,
+)
+from fgc_backends.hls.reader.loops import LoopReading, _Reader
+from fgc_backends.hls.reader.text import _CALL, FLOAT_TYPES, _pipelined, _unit
+
+
+@dataclass(frozen=True)
+class DesignReading:
+    """The design's operators as Vitis would instantiate them: every call site its own module
+    instance (an unrolled call once per copy), a pipelined loop's operators as its reading
+    says, a function's sequential code at least one operator of each kind it uses (or its
+    ALLOCATION limit where that is lower than its operations). A lower bound: the scheduler may
+    use more in sequential code, never fewer in a pipelined loop."""
+
+    top: str
+    loops: tuple[LoopReading, ...]
+    operators: tuple[tuple[str, int], ...]  # operator instances by kind, the whole design
+    modules: tuple[tuple[str, int], ...]  # function -> RTL instances
+    # file -> operator instances by kind of the functions defined there (their own code and
+    # pipelined loops; a callee's in its own file)
+    by_file: tuple[tuple[str, tuple[tuple[str, int], ...]], ...] = ()
+    reached: tuple[tuple[str, str], ...] = ()  # (file, function) of what the top instantiates
+
+    @property
+    def reached_loops(self) -> tuple[LoopReading, ...]:
+        """The pipelined loops of the functions the top instantiates (``loops`` also reads
+        those of the headers' other functions)."""
+        mine = set(self.reached)
+        return tuple(r for r in self.loops if (r.file, r.function) in mine)
+
+    def dsp(self, dsp_of: dict[str, int], files: Iterable[str] | None = None) -> int:
+        """DSP of the whole design, or of the functions defined in ``files``."""
+        if files is None:
+            return sum(n * dsp_of.get(kind, 0) for kind, n in self.operators)
+        wanted = set(files)
+        return sum(n * dsp_of.get(kind, 0) for file, ops in self.by_file if file in wanted
+                   for kind, n in ops)
+
+
+def _design(reader: _Reader, top: str) -> DesignReading:
+    # the pipelined loops of each function as the design instantiates it (a template reached
+    # through a struct's member, cpe_cascade<CFG, K>::run calling cpe<CFG, K>, with K bound
+    # there); the loops of functions the top never reaches as their own call sites bind them
+    readings: dict[tuple, list[LoopReading]] = {}
+
+    def loops_of(f: _Function, env: dict[str, int], unit: str | None) -> list[LoopReading]:
+        key = (f.file, f.start, tuple(sorted((k, v) for k, v in env.items()
+                                             if k in f.template_ints)), unit)
+        if key not in readings:
+            reader.where = unit
+            readings[key] = reader.loops_in(f, env)
+        return readings[key]
+
+    operators: Counter = Counter()
+    modules: Counter = Counter()
+    visited: set[tuple[str, str]] = set()
+    by_file: dict[str, Counter] = {}
+
+    def own(f: _Function, env: dict[str, int], unit: str | None) -> Counter:
+        reader.flatten = False
+        reader.where = unit
+        reader.returns_float = re.search(rf"\b{FLOAT_TYPES}\b", f.ret) is not None
+        try:
+            count = reader.count(f.text, {p.name: v for p in f.params
+                                          if (v := reader._param_var(f, p)) is not None},
+                                 dict(env), None, frozenset())
+        finally:
+            reader.flatten = True
+        limits = reader.allocation(f.text)
+        return Counter({k: min(limits.get(k, 1), n) for k, n in count.ops.items() if n})
+
+    def visit(f: _Function, env: dict[str, int], mult: int, depth: int,
+              unit: str | None = None) -> None:
+        if depth > 400 or mult == 0:  # a template recursion (a cascade of 80 CPEs) is deep
+            return
+        modules[f.qualname] += mult
+        seq: Counter = Counter()  # the sequential code's operators, its INLINE callees' merged
+        walk(f, env, mult, depth, seq, unit)
+        here = by_file.setdefault(f.file, Counter())
+        for kind, n in seq.items():
+            operators[kind] += n * mult
+            here[kind] += n * mult
+
+    def walk(f: _Function, env: dict[str, int], mult: int, depth: int, seq: Counter,
+             unit: str | None) -> None:
+        """``f``'s code into the module being read: its sequential operators into ``seq``
+        (an INLINE callee's join its caller's: one RTL body), its pipelined loops' and its
+        other callees' instances apart."""
+        visited.add((f.file, f.name))
+        unit = _unit(f, unit)
+        for kind, n in own(f, env, unit).items():
+            seq[kind] = max(seq[kind], n)
+        here = by_file.setdefault(f.file, Counter())
+        for r in loops_of(f, env, unit):
+            for kind, n in r.instances:
+                operators[kind] += n * mult
+                here[kind] += n * mult
+        # ALLOCATION function instances=g limit=n in f: f's call sites of g share n instances
+        left = dict(reader.function_allocation(f.text, env))
+        for callee, cenv, times in calls(f.text, env, unit):
+            if callee.name in left:
+                times = min(times, left[callee.name])
+                left[callee.name] -= times
+            if callee.inline and depth <= 400:
+                walk(callee, cenv, mult * times, depth + 1, seq, unit)
+            else:
+                visit(callee, cenv, mult * times, depth + 1, unit)
+
+    def calls(text: str, env: dict[str, int], file: str):
+        pos = 0
+        while pos < len(text):
+            m = re.compile(r"\bfor\s*\(|" + _CALL.pattern).search(text, pos)
+            if not m:
+                return
+            if m.group(0).startswith("for") and m.group(0).rstrip("( ").strip() == "for":
+                open_ = text.index("(", m.start())
+                close = _matching(text, open_, "(", ")")
+                header = text[open_ + 1:close].split(";")
+                body, pos = reader._body(text, close + 1)
+                if _pipelined(body):
+                    continue  # its calls are read in the loop's reading
+                values = reader._iterations(header, env) if len(header) == 3 else None
+                unrolled = re.match(r"\s*\{?\s*#\s*pragma\s+HLS\s+UNROLL\s*(?:\n|$)", body)
+                if unrolled and values:
+                    var, seq = values
+                    for value in seq:
+                        yield from calls(body, {**env, var: value}, file)
+                else:
+                    yield from ((c, e, 1) for c, e, _ in calls(body, env, file))
+                continue
+            pos = m.end()
+            found = reader.resolve(text, m, env, file)
+            if found is not None:
+                yield found[0], found[1], 1
+
+    if top not in reader.functions:
+        raise KeyError(top)
+    visit(reader.functions[top], {}, 1, 0)
+    reached = {(file, name) for file, name in visited}
+    loops = sorted({*(r for rs in readings.values() for r in rs),
+                    *(r for r in reader.loops() if (r.file, r.function) not in reached)},
+                   key=lambda r: (r.file, r.line, r.template))
+    return DesignReading(top, tuple(loops), tuple(sorted(operators.items())),
+                         tuple(sorted(modules.items())),
+                         tuple(sorted((file, tuple(sorted(c.items())))
+                                      for file, c in by_file.items())),
+                         tuple(sorted(reached)))
+
+
+def read_design(files: Iterable[tuple[str, str]], top: str, add_latency: int
+                ) -> DesignReading:
+    """The whole design under ``top`` as Vitis would instantiate it (:class:`DesignReading`)."""
+    return _design(_Reader(files, add_latency), top)
+
+
+def check_dsp(design: DesignReading, plan_dsp: int, dsp_of: dict[str, int],
+              file: str = "<design>") -> list[LintIssue]:
+    """An issue when the plan prices fewer DSP than the operators the text instantiates."""
+    needed = design.dsp(dsp_of)
+    if needed <= plan_dsp:
+        return []
+    worst = sorted(design.loops, key=lambda r: -r.dsp(dsp_of))[:3]
+    named = ", ".join(f"'{r.label or r.function}' {r.dsp(dsp_of)}" for r in worst)
+    return [LintIssue(file, 1, "dsp_bound", f"the plan prices {plan_dsp} DSP but the text "
+                      f"instantiates at least {needed} (operators {dict(design.operators)}; "
+                      f"largest pipelined loops: {named})")]
+
+
+def emitted_files(directory) -> tuple[list[tuple[str, str]], str]:
+    """The synthesised files of an emitted HLS project folder ((name, text) pairs: the kernel,
+    its header and the unit headers) and its synthesis top (``set_top`` in run_hls.tcl)."""
+    from pathlib import Path
+
+    directory = Path(directory)
+    tcl = (directory / "run_hls.tcl").read_text()
+    top = re.search(r"^\s*set_top\s+(\w+)", tcl, re.M)
+    if top is None:
+        raise ValueError(f"{directory / 'run_hls.tcl'}: no set_top")
+    files = []
+    for path in sorted(directory.glob("*.cpp")) + sorted(directory.glob("*.h")) + \
+            sorted((directory / "include").glob("*.h")):
+        if not path.name.startswith("tb_"):
+            files.append((path.name, path.read_text()))
+    return files, top.group(1)

@@ -1,0 +1,226 @@
+"""The pipelined loops and the memory / II rules: per ``PIPELINE`` loop its operator instances
+at its II, its accesses per iteration against each array's ports and banks, its carried
+recurrences against its ``DEPENDENCE`` pragmas (:class:`LoopReading`, :func:`check`)."""
+
+from __future__ import annotations
+
+import math
+import re
+from collections import Counter
+from collections.abc import Iterable
+from dataclasses import dataclass, replace
+
+from fgc_backends.cfamily.lint import LintIssue
+from fgc_backends.hls.lint.cxx import (
+    _Function,
+    _line,
+    _matching,
+    _split_top,
+)
+from fgc_backends.hls.reader.count import _Counter
+from fgc_backends.hls.reader.text import _own_level, _unit, _Var
+
+
+@dataclass(frozen=True)
+class LoopReading:
+    """One pipelined loop as the text describes it."""
+
+    file: str
+    line: int
+    function: str
+    label: str | None  # the FGC_CYCLES label after the loop, when there is one
+    template: tuple[tuple[str, int], ...]  # the instantiation's integer template arguments
+    ii: int  # the II its PIPELINE pragma declares (the plan's)
+    ops: tuple[tuple[str, int], ...]  # floating-point operations of one iteration, by kind
+    instances: tuple[tuple[str, int], ...]  # operator instances it needs at its II
+    accesses: tuple[tuple[str, int, int], ...]  # (global array, accesses an iteration, banks)
+    ii_ports: int  # the smallest II its memories' ports allow
+    recurrence: tuple[str, ...]  # carried read-modify-writes without DEPENDENCE inter false
+    ii_recurrence: int  # the smallest II those recurrences allow (0: none)
+    ii_known: bool = True  # False: the pragma's II does not evaluate here (not judged)
+
+    @property
+    def ii_bound(self) -> int:
+        return max(1, self.ii_ports, self.ii_recurrence)
+
+    def dsp(self, dsp_of: dict[str, int]) -> int:
+        return sum(n * dsp_of.get(kind, 0) for kind, n in self.instances)
+
+
+class _Reader(_Counter):
+    # -- pipelined loops -------------------------------------------------------------------------
+    def instantiations(self, f: _Function) -> list[dict[str, int]]:
+        """The integer template arguments ``f`` is instantiated with (one binding per distinct
+        instantiation; ``[{}]`` for a function that is not a template)."""
+        if not f.template_ints:
+            return [{}]
+        seen: dict[tuple, dict[str, int]] = {}
+        pattern = re.compile(rf"\b{f.name}\s*<([^;{{}}()]*?)>\s*\(")
+        for caller in self.functions.values():
+            for m in pattern.finditer(caller.text):
+                args = [a for a in _split_top(m.group(1)) if self._value(a, {}) is not None]
+                env = {name: self._value(a, {}) for name, a in
+                       zip(f.template_ints, args, strict=False)}
+                seen.setdefault(tuple(sorted(env.items())), env)
+        return list(seen.values()) or [{}]
+
+    def loops(self) -> list[LoopReading]:
+        out = []
+        for f in self.functions.values():
+            for env in self.instantiations(f):
+                out += self.loops_in(f, env)
+        return sorted(out, key=lambda r: (r.file, r.line, r.template))
+
+    def loops_in(self, f: _Function, env: dict[str, int]) -> list[LoopReading]:
+        """The pipelined loops of ``f`` instantiated with the integer template arguments
+        ``env`` (those of ``f``'s own parameters are kept)."""
+        env = {k: v for k, v in env.items() if k in f.template_ints}
+        code, (lo, hi) = f.code, f.body
+        out = []
+        for m in re.finditer(r"#\s*pragma\s+HLS\s+PIPELINE\b([^\n]*)", code[lo:hi], re.I):
+            if "off" in m.group(1).lower():
+                continue
+            ii = re.search(r"II\s*=\s*(\w+(?:\s*::\s*\w+)*)", m.group(1))
+            value = self._value(ii.group(1), env) if ii else 1
+            reading = self.loop(f, lo + m.start(), value or 1, env)
+            if reading is not None:
+                # an II this text cannot evaluate (a configuration the design does not define)
+                # is read at 1 for its operators and not judged
+                out.append(reading if value else replace(reading, ii_known=False))
+        return out
+
+    def loop(self, f: _Function, pragma: int, ii: int, template: dict[str, int]
+             ) -> LoopReading | None:
+        where, self.where = self.where, _unit(f, self.where)
+        try:
+            return self._loop(f, pragma, ii, template)
+        finally:
+            self.where = where
+
+    def _loop(self, f: _Function, pragma: int, ii: int, template: dict[str, int]
+              ) -> LoopReading | None:
+        code = f.code
+        depth, open_ = 0, None
+        for i in range(pragma - 1, f.body[0], -1):
+            if code[i] == "}":
+                depth += 1
+            elif code[i] == "{":
+                if depth == 0:
+                    open_ = i
+                    break
+                depth -= 1
+        if open_ is None:
+            return None  # a function-level pipeline: not judged here
+        header = re.search(r"\bfor\s*\(([^;]*);([^;]*);([^{]*)\)\s*$", code[f.body[0]:open_])
+        if not header:
+            return None
+        close = _matching(code, open_, "{", "}")
+        body = code[open_ + 1:close]
+        var = re.search(r"(\w+)\s*=", header.group(1))
+        scope: dict[str, _Var] = {}
+        for p in f.params:
+            v = self._param_var(f, p)
+            if v is not None:
+                scope[p.name] = v
+        # blocks closed before the loop declare nothing that lives into it
+        before = _own_level(code[f.body[0] + 1:open_])
+        for name, (is_float, dims) in self._declarations(before).items():
+            scope[name] = _Var(is_float, dims, name, "local")
+        outer = frozenset({v.alias for v in scope.values()} | set(self.globals))
+        env: dict[str, int] = dict(template)
+        for c in re.finditer(r"(?:^|[;{}])\s*(?:static\s+)?const\s+int\s+(\w+)\s*=\s*([^;,]+);",
+                             before):
+            value = self._value(c.group(2), env)
+            if value is not None:
+                env[c.group(1)] = value
+        count = self.count(body, scope, env, var.group(1) if var else None, outer)
+        count.ops += self._typer(scope).operators(header.group(2))  # its condition's operators
+        limits = self.allocation(f.text)
+        instances: Counter = Counter()
+        for kind, n in count.ops.items():
+            need = math.ceil(n / ii)
+            instances[kind] += min(need, limits[kind]) if kind in limits else need
+        for name, ops in count.capped.items():
+            cap = self.allocation(self.functions[name].text) if name in self.functions else {}
+            for kind, n in ops.items():
+                need = math.ceil(n / ii)
+                instances[kind] += min(need, cap[kind]) if kind in cap else need
+        def dims_here(name):
+            var = scope.get(name) or self.globals.get(name)
+            return var.dims if var is not None else None
+
+        banks_here = {scope[name].alias if name in scope else name: banks
+                      for name, banks in self._banks(f.text, env, dims_here).items()}
+        accesses, ii_ports = [], 1
+        for array, n in sorted(count.accesses.items()):
+            banks = banks_here.get(array, self.global_banks.get(array, 1))
+            if banks is None:
+                continue  # registers
+            accesses.append((array, n, banks))
+            ii_ports = max(ii_ports, math.ceil(n / (2 * banks)))
+        free = set(re.findall(r"DEPENDENCE\s+variable\s*=\s*(\w+)[^\n]*inter\s+false", body,
+                              re.I))
+        free |= {scope[name].alias for name in free if name in scope}
+        # DEPENDENCE ... inter true distance=D: the element comes back D iterations later, so
+        # the recurrence through the adder allows II ceil(latency / D)
+        distance: dict[str, int] = {}
+        for d in re.finditer(r"DEPENDENCE\b([^\n]*)", body, re.I):
+            args = d.group(1)
+            name = re.search(r"variable\s*=\s*(\w+)", args)
+            dist = re.search(r"distance\s*=\s*(\w+(?:\s*::\s*\w+)*)", args)
+            if name and dist and re.search(r"inter\s+true", args, re.I):
+                value = self._value(dist.group(1), env)
+                if value is not None and value > 0:
+                    for n in {name.group(1), scope[name.group(1)].alias if name.group(1) in
+                              scope else name.group(1)}:
+                        distance[n] = value
+        for alias, uses in count.rw.items():
+            kinds = {k for k, _ in uses}
+            if kinds == {"r", "w"} and any(fixed for _, fixed in uses):
+                count.recurrences.add(alias)
+        carried = tuple(sorted(r for r in count.recurrences if r not in free))
+        ii_recurrence = max([0] + [math.ceil(self.add_latency / distance[r]) if r in distance
+                                   else self.add_latency for r in carried])
+        label = re.search(r'FGC_CYCLES\(\s*"(\w+)"', code[close:close + 400])
+        return LoopReading(
+            file=f.file, line=_line(code, pragma), function=f.name,
+            template=tuple(sorted(template.items())),
+            label=label.group(1) if label else None, ii=ii,
+            ops=tuple(sorted(count.ops.items())), instances=tuple(sorted(instances.items())),
+            accesses=tuple(accesses), ii_ports=ii_ports, recurrence=carried,
+            ii_recurrence=ii_recurrence)
+
+
+def read_project(files: Iterable[tuple[str, str]], add_latency: int) -> list[LoopReading]:
+    """Every pipelined loop of the synthesised ``files`` ((name, text) pairs) as Vitis would
+    bind and schedule it; ``add_latency``: the adder's stages (a carried sum's II)."""
+    return _Reader(files, add_latency).loops()
+
+
+def check(readings: Iterable[LoopReading]) -> list[LintIssue]:
+    """A loop whose declared II is below what its memories or recurrences allow."""
+    issues = []
+    for r in readings:
+        if not r.ii_known:
+            continue
+        args = ", ".join(f"{k}={v}" for k, v in r.template)
+        where = f"'{r.label or r.function}' (in {r.function}{f'<{args}>' if args else ''})"
+        if r.ii_ports > r.ii:
+            worst = max(r.accesses, key=lambda a: math.ceil(a[1] / (2 * a[2])))
+            issues.append(LintIssue(r.file, r.line, "ii_ports", f"loop {where} declares II={r.ii}"
+                                    f" but array '{worst[0]}' takes {worst[1]} accesses an "
+                                    f"iteration through {2 * worst[2]} ports: II >= "
+                                    f"{r.ii_ports}"))
+        if r.ii_recurrence > r.ii:
+            issues.append(LintIssue(r.file, r.line, "ii_recurrence", f"loop {where} declares "
+                                    f"II={r.ii} but reads and writes "
+                                    f"{', '.join(repr(x) for x in r.recurrence)} every "
+                                    "iteration without 'DEPENDENCE inter false': II >= "
+                                    f"{r.ii_recurrence}"))
+    # one issue per loop and rule (the instantiations of a template share the text)
+    seen, out = set(), []
+    for issue in issues:
+        if (issue.file, issue.line, issue.rule) not in seen:
+            seen.add((issue.file, issue.line, issue.rule))
+            out.append(issue)
+    return out

@@ -1,0 +1,308 @@
+"""What the second reader knows of the whole text before it reads a loop: functions, struct
+members and their specialisations, integer constants, global arrays and their partitions,
+the arrays each parameter is bound to, ``ALLOCATION`` limits, and which function a call
+runs (:class:`_Scope`)."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+
+from fgc_backends.cfamily.lint import strip_comments_and_strings, synthesis_view
+from fgc_backends.hls.lint.cxx import (
+    _constants,
+    _evaluate,
+    _Function,
+    _functions,
+    _matching,
+    _split_top,
+)
+from fgc_backends.hls.reader.text import (
+    _ALLOCATION_KINDS,
+    _CALL,
+    _DECL,
+    _GLOBAL,
+    _PRAGMA,
+    FLOAT_TYPES,
+    _blank_macros,
+    _Count,
+    _Var,
+)
+
+
+class _Scope:
+    """The design's declarations, constants and bindings; the values of integer
+    expressions and which function a call runs."""
+    def __init__(self, files: Iterable[tuple[str, str]], add_latency: int):
+        self.files = [(name, _blank_macros(strip_comments_and_strings(synthesis_view(text))))
+                      for name, text in files]
+        self.functions: dict[str, _Function] = {}
+        # Struct::name -> [(specialisation's template arguments or None, function)]
+        self.members: dict[str, list[tuple[tuple[str, ...] | None, _Function]]] = {}
+        self.defaults: dict[str, tuple[str, ...]] = {}  # struct template -> its parameters
+        self.structs: set[str] = set()  # every struct's name
+        # file -> its functions: a call resolves in its own file first (a kernel's functions
+        # live in its .cpp's anonymous namespace: the on-chip stream design's two kernels
+        # define the same names), then anywhere
+        self.local: dict[str, dict[str, _Function]] = {}
+        # the translation unit being read: the .cpp of the kernel function that (directly or
+        # through a header's template) is being read
+        self.where: str | None = None
+        for name, code in self.files:
+            structs = []
+            for m in re.finditer(r"(?:template\s*<([^{};]*?)>\s*)?\bstruct\s+(\w+)\s*"
+                                 r"(<[^{};]*>)?\s*\{", code):
+                self.structs.add(m.group(2))
+                structs.append((m.start(), _matching(code, m.end() - 1, "{", "}"),
+                                tuple(_split_top(m.group(3)[1:-1])) if m.group(3) else None))
+                if m.group(1) and not m.group(3):
+                    self.defaults[m.group(2)] = tuple(_split_top(m.group(1)))
+            for f in _functions(name, code):
+                if f.qualname != f.name:
+                    spec = [s for s in structs if s[0] < f.start < s[1]]
+                    self.members.setdefault(f.qualname, []).append(
+                        (spec[-1][2] if spec else None, f))
+                else:
+                    self.functions.setdefault(f.name, f)
+                    self.local.setdefault(name, {}).setdefault(f.name, f)
+        self.constants = _constants(code for _, code in self.files)
+        # a kernel's own constants (two kernels in one design may give a name two values)
+        self.unit_constants = {name: _constants([code]) for name, code in self.files
+                               if name.endswith(".cpp")}
+        self.add_latency = add_latency
+        outside = "\n".join(self._outside_functions(n, c) for n, c in self.files)
+        self.globals = {m.group(2): _Var(re.fullmatch(FLOAT_TYPES, m.group(1)) is not None,
+                                         tuple(re.findall(r"\[([^\]]*)\]", m.group(3))),
+                                         m.group(2), "global")
+                        for m in _GLOBAL.finditer(outside)}
+
+        def dims_of(name):
+            return self.globals[name].dims if name in self.globals else None
+
+        self.global_banks = self._banks(outside, {}, dims_of)
+        # a global partitioned inside a function (Vitis's place for a global's pragma): a
+        # pragma naming it where no parameter or local of that name hides it
+        for f in self.functions.values():
+            own = {p.name for p in f.params} | set(self._declarations(f.text))
+            for name, banks in self._banks(f.text, {}, dims_of).items():
+                if name in self.globals and name not in own:
+                    self.global_banks[name] = banks
+        self.bindings = self._bindings()
+        self.memo: dict[tuple, _Count] = {}
+        self.flatten = True  # read a callee in place (off: a function's own operations)
+        self.returns_float = False  # the function being read returns a floating-point value
+
+    # -- declarations ----------------------------------------------------------------------
+    def _outside_functions(self, file: str, code: str) -> str:
+        """``code`` with every function body blanked: the declarations at namespace scope."""
+        chars = list(code)
+        for f in _functions(file, code):
+            for i in range(f.body[0], f.body[1] + 1):
+                if chars[i] != "\n":
+                    chars[i] = " "
+        return "".join(chars)
+
+    @staticmethod
+    def _declarations(code: str) -> dict[str, tuple[bool, tuple[str, ...]]]:
+        """name -> (floating-point, array dimensions) of the variables declared in ``code``."""
+        out: dict[str, tuple[bool, tuple[str, ...]]] = {}
+        for m in _DECL.finditer(code):
+            is_float = re.fullmatch(FLOAT_TYPES, m.group("type").strip()) is not None
+            for part in _split_top(m.group("names")):
+                d = re.match(r"^\*?\s*([A-Za-z_]\w*)\s*((?:\[[^\]]*\]\s*)*)", part)
+                if d:
+                    dims = tuple(x.strip() for x in re.findall(r"\[([^\]]*)\]", d.group(2)))
+                    out.setdefault(d.group(1), (is_float, dims))
+        return out
+
+    def _banks(self, code: str, env: dict[str, int], dims_of=None) -> dict[str, int | None]:
+        """array -> banks from the ARRAY_PARTITION pragmas in ``code`` (None: registers, a
+        complete partition of every dimension). ``complete dim=k`` (k >= 1) of an array of
+        more than one dimension gives as many banks as dimension k has (``dims_of``: name ->
+        its dimensions, when known)."""
+        out: dict[str, int | None] = {}
+        for m in _PRAGMA.finditer(code):
+            words = m.group(1)
+            if not words.upper().startswith("ARRAY_PARTITION"):
+                continue
+            var = re.search(r"variable\s*=\s*(\w+)", words)
+            if not var:
+                continue
+            if re.search(r"\bcomplete\b", words):
+                dim = re.search(r"\bdim\s*=\s*(\d+)", words)
+                dims = dims_of(var.group(1)) if dims_of else None
+                k = int(dim.group(1)) if dim else 0
+                if k >= 1 and dims and len(dims) > 1 and k <= len(dims):
+                    out[var.group(1)] = self._value(dims[k - 1], env)  # None: not known
+                else:
+                    out[var.group(1)] = None
+            else:
+                factor = re.search(r"factor\s*=\s*(\w+)", words)
+                value = self._value(factor.group(1), env) if factor else None
+                out[var.group(1)] = value or 1
+        return out
+
+    def _value(self, expr: str, env: dict[str, int]) -> int | None:
+        word = expr.strip()
+        if word in ("true", "false"):
+            return int(word == "true")
+        return _evaluate(expr, {**self.constants, **self.unit_constants.get(self.where, {}),
+                                **env})
+
+    def _condition(self, expr: str, env: dict[str, int]) -> bool | None:
+        m = re.fullmatch(r"\s*(.+?)\s*(<=|>=|==|!=|<|>)\s*(.+?)\s*", expr)
+        if not m:
+            return None
+        a, b = self._value(m.group(1), env), self._value(m.group(3), env)
+        if a is None or b is None:
+            return None
+        return {"<": a < b, "<=": a <= b, ">": a > b, ">=": a >= b, "==": a == b,
+                "!=": a != b}[m.group(2)]
+
+    def _bindings(self) -> dict[tuple[str, str], set[str]]:
+        """(function, parameter) -> the names its call sites pass (their base names, resolved
+        through the callers' own parameters to globals where they lead there)."""
+        direct: dict[tuple[str, str], set[tuple[str, str]]] = {}
+        for caller in self.functions.values():
+            for m in _CALL.finditer(caller.text):
+                f = self.functions.get(m.group(1))
+                if f is None:
+                    continue
+                open_ = caller.text.index("(", m.end() - 1)
+                args = _split_top(caller.text[m.end():_matching(caller.text, open_, "(", ")")])
+                for param, arg in zip(f.params, args, strict=False):
+                    base = re.match(r"^&?\s*([A-Za-z_]\w*)", arg)
+                    if base and (param.dims or param.pointer):
+                        direct.setdefault((f.name, param.name), set()).add(
+                            (caller.name, base.group(1)))
+        out: dict[tuple[str, str], set[str]] = {}
+
+        def resolve(key, seen):
+            names = set()
+            for caller, name in direct.get(key, ()):
+                if name in self.globals:
+                    names.add(name)
+                elif (caller, name) not in seen and any(
+                        p.name == name for p in self.functions[caller].params):
+                    names |= resolve((caller, name), seen | {key})
+            return names
+
+        for key in direct:
+            out[key] = resolve(key, frozenset())
+        return out
+
+    def _param_var(self, f: _Function, param) -> _Var | None:
+        if param.stream:
+            return None
+        is_float = re.search(rf"\b{FLOAT_TYPES}\b", param.type) is not None
+        if not (param.dims or param.pointer):
+            return _Var(is_float, (), param.name, "local")
+        bound = sorted(self.bindings.get((f.name, param.name), ()))
+        if bound:  # bound to a global: the first (a parameter bound to several: any one)
+            return _Var(is_float, param.dims, bound[0], "global")
+        return _Var(is_float, param.dims, param.name, "local")
+
+    def _lookup(self, name: str, scope: dict) -> _Var | None:
+        return scope.get(name) or self.globals.get(name)
+
+    def resolve(self, text: str, m: re.Match, env: dict[str, int], file: str | None = None
+                ) -> tuple[_Function, dict[str, int]] | None:
+        """The function a call matched by ``_CALL`` in ``text`` runs, and its integer template
+        arguments: ``f<...>(``, or ``S<...>::f(`` (a member of a struct template, its partial
+        specialisation chosen where the arguments match it)."""
+        owner = re.search(r"\b(\w+)\s*(<[^;{}()]*>)?\s*::\s*$", text[max(0, m.start() - 160):
+                                                                     m.start()])
+        struct = owner and env.get(f"type:{owner.group(1)}", owner.group(1))
+        if owner and struct in self.structs:  # a member of a struct (else a namespace's)
+            variants = self.members.get(f"{struct}::{m.group(1)}")
+            if not variants:
+                return None
+            # the struct of this translation unit (each kernel defines its own LmConfig)
+            variants = [v for v in variants if v[1].file == (file or self.where)] or variants
+            args = _split_top(owner.group(2)[1:-1]) if owner.group(2) else []
+            values = [self._value(a, env) for a in args]
+            params = self.defaults.get(struct, ())
+            types = self._bind_types(params, args, env)
+            bound = {}
+            for param, value in zip(params, values, strict=False):
+                name = re.search(r"(\w+)\s*(?:=.*)?$", param)
+                if name and value is not None:
+                    bound[name.group(1)] = value
+            for param in params[len(args):]:  # defaulted parameters, evaluated
+                default = re.match(r"^\s*(?:bool|int)\s+(\w+)\s*=\s*\(?(.*?)\)?\s*$", param)
+                if not default:
+                    break
+                value = self._value(default.group(2), {**env, **bound})
+                if value is None:
+                    truth = self._condition(default.group(2), {**env, **bound})
+                    value = None if truth is None else int(truth)
+                args.append(default.group(2))
+                values.append(value)
+                if value is not None:
+                    bound[default.group(1)] = value
+            chosen = next((f for spec, f in variants if spec is None), variants[0][1])
+            for spec, f in variants:
+                if spec is None or len(spec) != len(values):
+                    continue
+                # a specialisation's own parameters are wildcards: its arguments are read
+                # with constants only
+                if all(self._value(s, {}) in (None, v) or s.strip() == a.strip()
+                       for s, a, v in zip(spec, args, values, strict=True)) and \
+                        any(self._value(s, {}) is not None for s in spec):
+                    chosen = f
+                    break
+            ints = [v for a, v in zip(args, values, strict=True) if v is not None]
+            return chosen, {**dict(zip(chosen.template_ints, ints, strict=False)), **types}
+        f = self.local.get(file or self.where, {}).get(m.group(1)) or \
+            self.functions.get(m.group(1))
+        if f is None:
+            return None
+        cenv: dict = {}
+        if m.group(2):
+            args = _split_top(m.group(2)[1:-1])
+            params = self._template_params(f)
+            cenv.update(self._bind_types(params, args, env))
+            if f.template_ints:
+                ints = [v for a in args if (v := self._value(a, env)) is not None]
+                cenv.update(zip(f.template_ints, ints, strict=False))
+        return f, cenv
+
+    @staticmethod
+    def _template_params(f: _Function) -> tuple[str, ...]:
+        """The parameters of the ``template <...>`` that introduces ``f`` (none: ())."""
+        start = max(f.code.rfind(c, 0, f.start) for c in ";{}")
+        header = re.search(r"template\s*<([^{};]*?)>", f.code[start + 1:f.start])
+        return tuple(_split_top(header.group(1))) if header else ()
+
+    @staticmethod
+    def _bind_types(params: tuple[str, ...], args: list[str], env: dict) -> dict:
+        """``type:NAME`` -> the struct a class template parameter is bound to (namespaces
+        dropped; a parameter passed on, the struct it is bound to)."""
+        out = {}
+        for param, arg in zip(params, args, strict=False):
+            kind = re.match(r"^\s*(class|typename)\s+(\w+)", param)
+            if kind:
+                name = arg.strip().split("::")[-1].strip()
+                out[f"type:{kind.group(2)}"] = env.get(f"type:{name}", name)
+        return out
+
+    @staticmethod
+    def allocation(text: str) -> dict[str, int]:
+        out = {}
+        for m in re.finditer(r"#\s*pragma\s+HLS\s+ALLOCATION\s+operation\s+instances=(\w+)\s+"
+                             r"limit=(\d+)", text, re.I):
+            kind = _ALLOCATION_KINDS.get(m.group(1).lower())
+            if kind:
+                out[kind] = int(m.group(2))
+        return out
+
+    def function_allocation(self, text: str, env: dict[str, int]) -> dict[str, int]:
+        """function name -> instances, from ``ALLOCATION function instances=<name> limit=<n>``
+        pragmas in ``text`` (a template's name with or without its arguments)."""
+        out = {}
+        for m in re.finditer(r"#\s*pragma\s+HLS\s+ALLOCATION\s+function\s+instances=([\w:]+)"
+                             r"\s*(?:<[^\n]*?>)?\s+limit=(\w+)", text, re.I):
+            limit = self._value(m.group(2), env)
+            if limit is not None and limit >= 0:
+                out[m.group(1).split("::")[-1]] = limit
+        return out

@@ -1,0 +1,138 @@
+"""Text scanning for the second reader: the C++ patterns it reads (declarations, pragmas,
+operators, subscripts, calls), the text blanked or cut to one block's own level, and the
+records a reading adds up (:class:`_Var`, :class:`_Count`)."""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from dataclasses import dataclass, field
+
+from fgc_backends.hls.lint.cxx import _Function, _matching
+
+FLOAT_TYPES = r"(?:T|L|float|double|typename\s+CFG::T|CFG::T|ap_fixed<[^<>;]*>)"
+
+
+_DECL = re.compile(r"(?:^|(?<=[;{}(,]))\s*(?:static\s+)?(?:const\s+)?(?P<type>" + FLOAT_TYPES +
+                   r"|int|bool|unsigned|qr_word<[^<>;]*>)\s+(?P<names>[A-Za-z_][^;{}]*?)"
+                   r"\s*(?=[;)])", re.M)
+
+
+_PRAGMA = re.compile(r"#\s*pragma\s+HLS\s+([^\n]*)", re.I)
+
+
+_SQRT = re.compile(r"\b(?:fgc_sqrt|hls::sqrt|std::sqrt|sqrt|sqrtf|fgc_rsqrt)\s*\(")
+
+
+_SPECIAL = re.compile(r"\b(?:fgc_sin|fgc_cos|fgc_atan2|fgc_exp|fgc_log|fgc_log1p|fgc_tan|"
+                      r"fgc_asin|fgc_acos|fgc_atan|hls::sin|hls::cos|std::sin|std::cos)\s*\(")
+
+
+KINDS = ("add", "mul", "div", "sqrt", "special")
+
+
+_ALLOCATION_KINDS = {"fadd": "add", "dadd": "add", "fsub": "add", "dsub": "add", "fmul": "mul",
+                     "dmul": "mul", "fdiv": "div", "ddiv": "div", "fsqrt": "sqrt",
+                     "dsqrt": "sqrt"}
+
+
+_CONTROL = re.compile(r"\bfor\s*\(|\bif\s*\(|\belse\b|#|[^\s;{}]")
+
+
+_SUBSCRIPTED = re.compile(r"\b([A-Za-z_]\w*)\s*((?:\[[^\[\]]*(?:\[[^\]]*\][^\[\]]*)*\]\s*)+)"
+                          r"(\s*[-+*/]?=(?!=))?")
+
+
+_GLOBAL = re.compile(r"^[ \t]*(?:static\s+)?(?:const\s+)?(" + FLOAT_TYPES + r"|int|bool)\s+"
+                     r"([A-Za-z_]\w*)\s*((?:\[[^\]]*\]\s*)+)(?:=[^;]*)?;", re.M)
+
+
+_CALL = re.compile(r"\b([A-Za-z_]\w*)\s*(<[^;{}()=&|]*?>)?\s*\(")
+
+
+@dataclass(frozen=True)
+class _Var:
+    """A name in scope: floating-point or not, its dimensions, the array it stands for (a
+    parameter: the caller's) and where that array lives: "global" (namespace scope: ports as
+    partitioned), "local" (a function's own array: Vitis's default throughput-driven automatic
+    partitioning gives it the ports a pipelined loop needs, at a price in registers) or
+    "stream" (an hls::stream: a FIFO per element)."""
+
+    is_float: bool
+    dims: tuple[str, ...]
+    alias: str
+    storage: str
+
+
+@dataclass
+class _Count:
+    ops: Counter = field(default_factory=Counter)
+    capped: dict[str, Counter] = field(default_factory=dict)  # callee -> its ops (ALLOCATION)
+    accesses: Counter = field(default_factory=Counter)  # global array -> accesses
+    recurrences: set[str] = field(default_factory=set)  # carried read-modify-writes
+    # array or scalar that lives across iterations -> {(access, index fixed or data-dependent)}
+    rw: dict[str, set[tuple[str, bool]]] = field(default_factory=dict)
+
+    def add(self, other: _Count, times: int = 1) -> None:
+        for k, v in other.ops.items():
+            self.ops[k] += v * times
+        for name, c in other.capped.items():
+            mine = self.capped.setdefault(name, Counter())
+            for k, v in c.items():
+                mine[k] += v * times
+        for k, v in other.accesses.items():
+            self.accesses[k] += v * times
+        self.recurrences |= other.recurrences
+        for k, v in other.rw.items():
+            self.rw.setdefault(k, set()).update(v)
+
+
+def _blank_macros(code: str) -> str:
+    """``code`` with the cycle counters' invocations (``FGC_CYCLES(...)`` and the like, empty
+    in synthesis) blanked, lines kept."""
+    out, pos = [], 0
+    for m in re.finditer(r"\bFGC_[A-Z_]+\s*\(", code):
+        if m.start() < pos:
+            continue
+        end = _matching(code, m.end() - 1, "(", ")")
+        out.append(code[pos:m.start()])
+        out.append(re.sub(r"[^\n]", " ", code[m.start():end + 1]))
+        pos = end + 1
+    out.append(code[pos:])
+    return "".join(out)
+
+
+def _own_level(text: str) -> str:
+    """``text`` with every brace block inside it replaced by ';' (what its own level says)."""
+    while True:
+        new = re.sub(r"\{[^{}]*\}", ";", text)
+        if new == text:
+            return text
+        text = new
+
+
+def _pipelined(body: str) -> bool:
+    """Whether a loop body (its own level, not a nested loop's) holds a PIPELINE pragma."""
+    body = _own_level(body)
+    return re.search(r"#\s*pragma\s+HLS\s+PIPELINE\b(?![^\n]*\boff\b)", body, re.I) is not None
+
+
+def _subscripts(index: str) -> list[str]:
+    """The contents of each top-level ``[...]`` of ``index`` (``[j][at[a]]`` -> j, at[a])."""
+    out, depth, start = [], 0, 0
+    for i, ch in enumerate(index):
+        if ch == "[":
+            if depth == 0:
+                start = i + 1
+            depth += 1
+        elif ch == "]":
+            depth -= 1
+            if depth == 0:
+                out.append(index[start:i])
+    return out
+
+
+def _unit(f: _Function, unit: str | None) -> str | None:
+    """The translation unit ``f`` is read in: its own file if it is a .cpp (a kernel), else
+    (a header's function) the unit that reached it."""
+    return f.file if f.file.endswith(".cpp") else unit
