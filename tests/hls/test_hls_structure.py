@@ -369,7 +369,7 @@ def test_allocation_limits_are_the_plans(tmp_path):
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import allocations
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
-    plan = accel_plan(program, HlsConfig())
+    plan = accel_plan(program, HlsConfig(scalar="double"))  # the design _emit_accel emits
     from fgc_backends.hls.units.datapath import factor_allocation, mode_allocation
     found = allocations((out / "lio.cpp").read_text())
     # the factor datapaths per mode (factor_<b>: the Jacobian's, factor_cost_<b>: the cost's
@@ -381,11 +381,17 @@ def test_allocation_limits_are_the_plans(tmp_path):
     small = small_blocks(program)  # LIO's priors and GPS: one shared datapath per mode
     assert small
     limits_of = {}
+    # each mode's limits: the instances its loop binds at the plan's II (ceil(n x op II / II)),
+    # at most the block's share of the options' limits
+    ii = {p.name: p.loops[0].ii for ph in plan.phases for p in ph.processes if p.loops}
     for b, block in enumerate(program.blocks):
         if b in small:
             continue
-        limits_of[f"factor_{b}"] = dict(mode_allocation(shared[b], block.ops_after))
-        limits_of[f"factor_cost_{b}"] = dict(mode_allocation(shared[b], block.ops_cost))
+        for function, mode, counts in ((f"factor_{b}", "jacobian", block.ops_after),
+                                       (f"factor_cost_{b}", "cost", block.ops_cost)):
+            limits_of[function] = {
+                k: min(lim, -(-counts[k] * plan.ops.op(k).ii // ii[f"factor_{b}_{mode}"]))
+                for k, lim in mode_allocation(shared[b], counts)}
     contexts = block_contexts(program, vector=False)
     for function, mode in (("evaluate_small_one", "jacobian"), ("cost_small_one", "cost")):
         limits_of[function] = dict(small_allocation(program, contexts, plan.options, mode,

@@ -107,21 +107,79 @@ def test_the_hgc_is_priced_per_block_type_as_its_gram_entries_bind_it():
     assert m == 3
     assert gram_ii(program, many, 32) == 1 and gram_ii(program, many, 2) == 2
     assert gram_ii(program, one, 32) == program.blocks[one].residual_dim
-    ops = dict(hgc_operators(program, 32, 4))
-    # the tree's adders, the scatter's and the check's adder, the check's fold of 4 partials
-    assert dict(ops[many]) == {"add": 2 + 1 + 1 + 3, "mul": 3}
-    assert dict(ops[one]) == {"add": 1 + 1 + 1 + 3, "mul": 1}
-    assert dict(hgc_operators(program, 2, 4)[many][1]) == {"add": 1 + 1 + 1 + 3, "mul": 2}
+    ops = dict(hgc_operators(program, 32))
+    # the tree's adders and the gradient's adder (the last row into G, in the same loop; at
+    # the prior's II 3 one adder issues all three adds); the diagonal's finiteness check binds
+    # no operator
+    assert dict(ops[many]) == {"add": 2 + 1, "mul": 3}
+    assert dict(ops[one]) == {"add": 1, "mul": 1}
+    assert dict(hgc_operators(program, 2)[many][1]) == {"add": 2, "mul": 2}
     plan = build_plan(program)
     assert {f"hgc_{b}" for b in counts} <= {u.name for u in plan.units}
     (entries,) = [lp for ph in plan.phases if ph.name.startswith("hgc") for p in ph.processes
                   if p.name == f"reduce_{many}" for lp in p.loops if lp.name == "entries"]
     # a between factor's [A | b] is 3 x 7 (two poses and b), every entry of its packed
     # triangle structurally non-zero: 28 entries an instance, one a cycle, depth read +
-    # multiply + a tree of ceil(log2 3) = 2 adds + write
+    # multiply + a tree of ceil(log2 3) = 2 adds + the gradient's add + G read and the writes
     assert len(gram_entries(program.blocks[many])) == 28
-    assert (entries.trip, entries.ii, entries.repeat) == (28, 1, counts[many])
-    assert entries.depth == 3 + 2 * 4 + 2
+    # all instances' entries one pipelined loop (the next instance's rows read alongside): the
+    # HGC (28 entries an instance) is slower than the datapath, so a second lane over the
+    # first rows takes half of them: 14 iterations an instance (more than m + 3 and than the
+    # last row's span of 6 + the add)
+    assert (entries.trip, entries.ii, entries.repeat) == (14 * counts[many], 1, 1)
+    assert entries.depth == 3 + 2 * 4 + 4 + 3
+
+
+def test_an_instance_of_few_gram_entries_is_padded_to_keep_its_hazards_apart(monkeypatch):
+    # gram_entries' one loop over all instances declares no dependence on the row banks nor on
+    # G: an instance takes at least m + 3 iterations (its successor's rows are read in the
+    # first m) and at least its last row's span + the adder's latency + 3 (two instances' +=
+    # into one entry of G); here a between block of 3 rows with 4 entries, two of them in the
+    # last row (b^T A), one apart: 1 + 4 + 3 = 8 iterations an instance
+    from fgc_backends.hls.plan.loops import kernel_timing
+    from fgc_backends.hls.units import cholesky
+
+    program = chain(6, linear="cholesky")
+    counts = {}
+    for f in program.factors:
+        counts[f.block] = counts.get(f.block, 0) + 1
+    many = max(counts, key=counts.get)
+    timing = kernel_timing(FLOAT32)
+    assert cholesky.gram_steps(program, many, timing) == 28  # its own 28 entries bind
+    last = sum(program.blocks[many].variable_dims)
+    monkeypatch.setattr(cholesky, "_gram_rows", lambda b: {
+        (0, 0): (0,), (last, 0): (0,), (last, 1): (0,), (last, last): (0,)})
+    assert cholesky.gram_steps(program, many, timing) == 1 + timing["acc"][0] + 3 == 8
+    one = next(b for b, n in counts.items() if n == 1)  # one instance: nothing to keep apart
+    assert cholesky.gram_steps(program, one, timing) == 4
+
+
+def test_a_slower_hgc_gets_a_second_lane_over_the_first_rows():
+    # the between block's HGC (28 entries an instance) is slower than its datapath: lane B of
+    # K multipliers takes entries only the first K rows touch (never the last row: the += into
+    # G stay in lane A), at most half of them; one lane when the datapath is the slower
+    from fgc.ir.codes import NOISE_CODES
+    from fgc_backends.cfamily.sparsity import block_pattern
+    from fgc_backends.hls.units.cholesky import gram_entries, gram_lanes, hgc_operators
+
+    program = chain(6, linear="cholesky")
+    counts = {}
+    for f in program.factors:
+        counts[f.block] = counts.get(f.block, 0) + 1
+    many = max(counts, key=counts.get)
+    block = program.blocks[many]
+    entries, last = gram_entries(block), sum(block.variable_dims)
+    lane_a, lane_b, k = gram_lanes(program, many, 32, {many: 1})
+    assert 0 < k < block.residual_dim and 0 < len(lane_b) <= len(entries) // 2
+    assert sorted(lane_a + lane_b) == sorted(entries) and not set(lane_a) & set(lane_b)
+    pattern = block_pattern(block, tuple(NOISE_CODES[m.noise_kind] for m in block.members), "t")
+    assert all(p != last and max(pattern.gram_rows(p, q)) < k for p, q in lane_b)
+    assert all((p, q) in lane_a for p, q in entries if p == last)
+    assert len(lane_a) == len(entries) - len(entries) // 2
+    ops = dict(dict(hgc_operators(program, 32, {many: 1}))[many])
+    assert ops == {"add": 3 + k - 1, "mul": 3 + k}
+    assert gram_lanes(program, many, 32, {many: 28}) == (entries, (), 0)  # datapath slower
+    assert gram_lanes(program, many, 32, None) == (entries, (), 0)
 
 
 def test_structurally_zero_gram_entries_are_never_computed():

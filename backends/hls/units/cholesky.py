@@ -10,7 +10,7 @@ import math
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cost.operators import OperatorTable
-from fgc_backends.hls.plan.loops import _block_shape, kernel_dot, kernel_loop
+from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
@@ -67,15 +67,21 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     return loops
 
 
+def _gram_rows(block) -> dict[tuple[int, int], tuple[int, ...]]:
+    """The structurally non-zero entries (p, q), q <= p, of block ``block``'s Gram of [A | b]
+    in packed order, each with the whitened rows that touch both of its columns."""
+    kinds = tuple(NOISE_CODES[m.noise_kind] for m in block.members)
+    pattern = block_pattern(block, kinds, f"block {block.name!r}")
+    return {(p, q): rows for p in range(pattern.stride) for q in range(p + 1)
+            if (rows := pattern.gram_rows(p, q))}
+
+
 def gram_entries(block) -> tuple[tuple[int, int], ...]:
     """The (p, q), q <= p, of a block type's Gram of [A | b] that are structurally non-zero (some
     whitened row touches both columns), in packed order: what accel.cpp.jinja's
     ``gram_entries`` computes (its tables BLOCK<b>_GRAM_P / _Q); the rest of the instance's
     packed triangle is never written and keeps GRAM's initial zeros."""
-    kinds = tuple(NOISE_CODES[m.noise_kind] for m in block.members)
-    pattern = block_pattern(block, kinds, f"block {block.name!r}")
-    return tuple((p, q) for p in range(pattern.stride) for q in range(p + 1)
-                 if pattern.gram_rows(p, q))
+    return tuple(_gram_rows(block))
 
 
 def gram_ii(program, block: int, lanes: int) -> int:
@@ -90,56 +96,139 @@ def gram_ii(program, block: int, lanes: int) -> int:
     return -(-m // max(1, min(lanes, m)))
 
 
-def hgc_operators(program, lanes: int, partials: int) -> list[tuple[int, tuple]]:
-    """(block, operators) of each block type's HGC as accel.cpp.jinja's loops bind them: the
-    Gram entries' loop at :func:`gram_ii` (ceil(m / II) multipliers, ceil((m - 1) / II) adders
-    of its tree), the gradient scatter's adder and the finiteness check's adder and fold of
-    ``partials`` partial sums (partials - 1)."""
+def gram_lanes(program, block: int, lanes: int, jac_ii: dict | None
+               ) -> tuple[tuple[tuple[int, int], ...], tuple[tuple[int, int], ...], int]:
+    """How block ``block``'s Gram entries are split between gram_entries' two lanes: (lane A's
+    entries, lane B's entries, K). Lane A is the block's full width (its m rows); lane B, when
+    there is one (K > 0), the dot product over the first K rows only, for entries no other row
+    touches (the rest of the column pair is structurally zero: exact zeros its sum leaves out).
+    An entry of the last row (b^T A: the += into G) stays in lane A, so one adder serves G and
+    the += keep to one lane. A second lane is built only where the HGC is the slower process of
+    its linearize_<b> region: more than one instance at II 1, more entries than the datapath's
+    II an instance (``jac_ii``: block -> its Jacobian loop's II; None: no second lane), and K is
+    the fewest rows that bring the region's time an instance, max(lane A's entries, the
+    datapath's II), to its least (the eligible entries balanced between the lanes, lane A
+    keeping the rest in packed order)."""
+    b = program.blocks[block]
+    rows = _gram_rows(b)
+    entries = tuple(rows)
+    none = (entries, (), 0)
+    n = sum(1 for f in program.factors if f.block == block)
+    if jac_ii is None or n <= 1 or gram_ii(program, block, lanes) != 1:
+        return none
+    ii, m, last = jac_ii.get(block, 0), b.residual_dim, sum(b.variable_dims)
+    if len(entries) <= ii:
+        return none
+    best, best_k = max(len(entries), ii), 0
+    for k in range(1, m):
+        eligible = sum(1 for (p, q), r in rows.items() if p != last and r[-1] < k)
+        a = len(entries) - min(eligible, len(entries) // 2)
+        if max(a, ii) < best:
+            best, best_k = max(a, ii), k
+    if not best_k:
+        return none
+    eligible = [e for e, r in rows.items() if e[0] != last and r[-1] < best_k]
+    lane_b = set(eligible[:min(len(eligible), len(entries) // 2)])
+    return (tuple(e for e in entries if e not in lane_b),
+            tuple(e for e in entries if e in lane_b), best_k)
+
+
+def hgc_operators(program, lanes: int, jac_ii: dict | None = None
+                  ) -> list[tuple[int, tuple]]:
+    """(block, operators) of each block type's HGC as accel.cpp.jinja's gram_entries binds
+    them: its entries' loop at :func:`gram_ii`: lane A's ceil(m / II) multipliers and its
+    tree's m - 1 adds with the gradient's add (the Gram's last row into G), ceil(m / II)
+    adders; lane B's (:func:`gram_lanes`) K multipliers and K - 1 adders (the finiteness check
+    of the diagonal entries is a test of their exponent bits: no operator)."""
     out = []
     for i, b in enumerate(program.blocks):
         if not any(f.block == i for f in program.factors):
             continue
         m, ii = b.residual_dim, gram_ii(program, i, lanes)
-        out.append((i, (("add", -(-(m - 1) // ii) + 1 + 1 + (partials - 1)),
-                        ("mul", -(-m // ii)))))
+        k = gram_lanes(program, i, lanes, jac_ii)[2]
+        out.append((i, (("add", -(-m // ii) + max(0, k - 1)), ("mul", -(-m // ii) + k))))
     return out
 
 
-def hgc_loops(program, timing: dict, lanes: int = 32) -> list[Process]:
-    """Cholesky: linearize_all's HGC (reduce_<b>: per instance its m whitened rows from
-    evaluate_<b>'s stream, a row a cycle, into registers, the column map, the Gram's
-    structurally non-zero entries (:func:`gram_entries`) one every :func:`gram_ii` cycles,
-    each the m rows' products folded in a tree (depth Lm + La ceil(log2 m) + read and write)
-    into GRAM, the gradient scatter from GRAM (II 1) and the finiteness check over the diagonal
-    (interleaved partial sums: the dot-product rule)), after G is zeroed (the first process).
-    The structural zeros are never written: GRAM keeps its initial zeros there, so no pass
-    clears it."""
-    n_t = sum(v.dim for v in program.variables)
-    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
+def gram_depth(m: int, timing: dict, t_timing: dict | None = None) -> int:
+    """Depth of one Gram entry of a block of m rows (accel.cpp.jinja's gram_entries): the
+    multiply and the tree of ceil(log2 m) adds (L's latencies, ``timing``), at least the 6
+    cycles of the gradient's address (the instance's tables, the factor's variable, its tangent
+    offset: ROM reads one after another), then the gradient's add (T's adder, ``t_timing``;
+    G read beside the tree) and the reads and writes: max(Lm + La ceil(log2 m), 6) + La(T) + 3.
+    Lane B's shallower tree ends within it."""
     la = timing["acc"][0]
     lm = timing["acc"][1] - la
+    t_la = (t_timing or timing)["acc"][0]
+    tree = math.ceil(math.log2(m)) if m > 1 else 0
+    return max(lm + la * tree, 6) + t_la + 3
+
+
+def gram_steps(program, block: int, t_timing: dict, lanes: int = 32,
+               jac_ii: dict | None = None) -> int:
+    """Iterations of gram_entries' loop an instance of block ``block`` takes (its STEPS): the
+    entries of its larger lane (:func:`gram_lanes`); with more than one instance at least
+    m + 3 (the next instance's rows are read into the other bank in the first m, and a bank is
+    read no sooner than 3 iterations after it is written) and at least the span of lane A's
+    last-row entries (the += into G) plus the adder's latency and 3, so that two instances'
+    += into one entry of G (two factors of one variable) are a whole add apart."""
+    b = program.blocks[block]
+    lane_a, lane_b, _ = gram_lanes(program, block, lanes, jac_ii)
+    steps = max(len(lane_a), len(lane_b))
+    if sum(1 for f in program.factors if f.block == block) <= 1:
+        return steps
+    last = sum(b.variable_dims)  # the last row of [A | b]'s Gram: b^T A, then b^T b
+    g = [e for e, (p, q) in enumerate(lane_a) if p == last and q < last]
+    span = g[-1] - g[0] if g else 0
+    return max(steps, b.residual_dim + 3, span + t_timing["acc"][0] + 3)
+
+
+def jacobian_ii(jacobian) -> dict[int, int]:
+    """Block -> the II of its datapath's Jacobian loop, from the processes
+    ``factor_<b>_jacobian`` (the factor_jacobian phase's)."""
+    out = {}
+    for proc in jacobian:
+        head, _, tail = proc.name.partition("_")
+        idx = tail.removesuffix("_jacobian")
+        if head == "factor" and tail.endswith("_jacobian") and idx.isdigit() and proc.loops:
+            out[int(idx)] = proc.loops[0].ii
+    return out
+
+
+def hgc_loops(program, timing: dict, lanes: int = 32, t_timing: dict | None = None,
+              jac_ii: dict | None = None) -> list[Process]:
+    """Cholesky: linearize_all's HGC (reduce_<b>: instance 0's m whitened rows from
+    evaluate_<b>'s stream, a row a cycle, into registers, then one pipelined loop over all
+    instances (:func:`gram_steps` iterations each) of the Gram's structurally non-zero entries
+    (:func:`gram_entries`, in one or two lanes: :func:`gram_lanes`) one every :func:`gram_ii`
+    cycles, each the rows' products folded in a tree into GRAM and, for the last row (b^T A),
+    added into the gradient G in the same iteration, the diagonal's checked finite there too
+    (:func:`gram_depth`), the next instance's rows read alongside into the other bank), after
+    G is zeroed (the first process). The structural zeros are never written: GRAM keeps its
+    initial zeros there, so no pass clears it. ``timing``: L's kernel timing; ``t_timing``:
+    T's (the gradient's adder), L's when omitted; ``jac_ii``: :func:`gram_lanes`'."""
+    t_timing = t_timing or timing
+    n_t = sum(v.dim for v in program.variables)
+    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", _ported(n_t), "fill",
+                                                                timing),))]
     for i, b in enumerate(program.blocks):
-        m, d, _, _ = _block_shape(b)
+        m, _, _, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
-        tree = math.ceil(math.log2(m)) if m > 1 else 0
-        loops = [kernel_loop("rows", m, "move", timing, n),
-                 kernel_loop("columns", d, "fill", timing, n),
-                 Loop("entries", len(gram_entries(b)), gram_ii(program, i, lanes),
-                      lm + la * tree + 2, n),
-                 kernel_loop("scatter", d, "scatter", timing, n),
-                 kernel_dot("check", d + 1, timing, n)]
+        loops = [kernel_loop("rows", m, "move", timing) if n else Loop("rows", 0, 1, 2),
+                 Loop("entries", n * gram_steps(program, i, t_timing, lanes, jac_ii),
+                      gram_ii(program, i, lanes), gram_depth(m, timing, t_timing))]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
 
 
-def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...]
-               ) -> list[Phase]:
+def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...],
+               t_timing: dict | None = None) -> list[Phase]:
     """linearize_all as emitted for Cholesky: ``hgc`` (G zeroed), then per block type b the
     DATAFLOW region linearize_<b> as phase ``hgc_level<b>`` (group ``hgc``): its datapath's
     Jacobian-mode instance loop (``jacobian``'s process factor_<b>_jacobian: whitened rows into
     AB and, a stream word a row, to the HGC) alongside reduce_<b> (:func:`hgc_loops`), so the
     region takes the slower of the two plus the other's fill."""
-    procs = hgc_loops(program, timing, lanes)
+    procs = hgc_loops(program, timing, lanes, t_timing, jacobian_ii(jacobian))
     jac = {p.name: p for p in jacobian}
     phases = [Phase("hgc", False, (procs[0],), linear=True)]
     for i, reduce in enumerate(procs[1:]):
@@ -235,14 +324,15 @@ def build(ctx) -> None:
         macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
     if opts.hessian_storage == "frontal":  # as emitted: reduce_<b>'s loops (hgc_loops)
         # one Gram unit per block type (the template instance its reduce_<b> calls)
-        for i, unit_ops in hgc_operators(program, opts.hgc_lanes, ops.add.latency):
-            ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
         # the datapaths' Jacobian pass becomes part of linearize_<b>'s regions (evaluate_<b>
         # alongside its HGC): its phase is replaced, in place, by hgc_phases
         at = next(k for k, (_, ph) in enumerate(ctx.phases) if ph.name == "factor_jacobian")
         slot, jacobian = ctx.phases[at]
+        jac_ii = jacobian_ii(jacobian.processes)
+        for i, unit_ops in hgc_operators(program, opts.hgc_lanes, jac_ii):
+            ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
         ctx.phases[at:at + 1] = [(slot, ph) for ph in hgc_phases(
-            program, ctx.les_timing, opts.hgc_lanes, jacobian.processes)]
+            program, ctx.les_timing, opts.hgc_lanes, jacobian.processes, ctx.timing)]
         for i, b in enumerate(program.blocks):  # the row stream (a row a word) and registers
             m, _, padded, _ = _block_shape(b)
             ctx.memories.append(Memory(f"gram_rows_{i}", m * padded, ops.word_bits, 1))

@@ -510,8 +510,8 @@ void factor_0(const T in[12], const T dat[18],
 void factor_cost_0(const T in[12], const T dat[18],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=2
+#pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
@@ -638,9 +638,9 @@ void factor_cost_2(const T in[6], const T dat[7],
 void factor_3(const T in[42], const T dat[211],
               T raw[672]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=7
+#pragma HLS ALLOCATION operation instances=fmul limit=11
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
     const T t2 = in[32] - dat[65];
@@ -2137,9 +2137,9 @@ void factor_3(const T in[42], const T dat[211],
 void factor_cost_3(const T in[42], const T dat[211],
                    T half[2]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=5
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[0]*in[15] + in[3]*in[18] + in[6]*in[21];
     const T t1 = t0;
     const T t2 = in[1]*in[15] + in[4]*in[18] + in[7]*in[21];
@@ -3219,11 +3219,13 @@ T cost_of_small(const T x[N_X], T total) {
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
     FGC_PHASE("gradient");
-    for (int i = 0; i < N_TANGENT; ++i) {
+    for (int i = 0; i < N_TANGENT; i += PORTS) {  // PORTS words a cycle (G's two ports)
 #pragma HLS PIPELINE II=1
-        G[i] = T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < N_TANGENT) G[i + h] = T(0);
+        }
     }
-    FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
+    FGC_CYCLES("gradient", 0, "zero", (N_TANGENT + PORTS - 1) / PORTS, 1, 1);
     FGC_PHASE("factor_jacobian");
     evaluate_0(x);
     evaluate_small(x);

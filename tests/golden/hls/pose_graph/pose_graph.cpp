@@ -208,9 +208,9 @@ inline T fgc_guarded_quotient(T a, T b, T g, T t, T f) { return g > t ? T(a / b)
 void factor_0(const T in[24], const T dat[13],
               T raw[96]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
+#pragma HLS ALLOCATION operation instances=fadd limit=15
 #pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
     const T t1 = in[2]*in[12] + in[5]*in[15] + in[8]*in[18];
     const T t2 = -t1;
@@ -647,9 +647,9 @@ void factor_0(const T in[24], const T dat[13],
 void factor_cost_0(const T in[24], const T dat[13],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=7
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
     const T t1 = t0;
     const T t2 = in[1]*in[12] + in[4]*in[15] + in[7]*in[18];
@@ -958,8 +958,8 @@ void factor_1(const T in[12], const T dat[13],
 void factor_cost_1(const T in[12], const T dat[13],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=2
+#pragma HLS ALLOCATION operation instances=fmul limit=2
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
@@ -1336,11 +1336,13 @@ T cost_of_1(const T x[N_X], T total) {
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
     FGC_PHASE("gradient");
-    for (int i = 0; i < N_TANGENT; ++i) {
+    for (int i = 0; i < N_TANGENT; i += PORTS) {  // PORTS words a cycle (G's two ports)
 #pragma HLS PIPELINE II=1
-        G[i] = T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < N_TANGENT) G[i + h] = T(0);
+        }
     }
-    FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
+    FGC_CYCLES("gradient", 0, "zero", (N_TANGENT + PORTS - 1) / PORTS, 1, 1);
     FGC_PHASE("factor_jacobian");
     evaluate_0(x);
     evaluate_1(x);
