@@ -45,9 +45,10 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     frontal and s separator columns, as the csim counters count them: one ``Loop`` per round
     (trip = its words + the status word at II 1, depth :func:`cpe_round_depth`), after each
     round but the last the copy of the rows it leaves back into H (two words a cycle), the copy of
-    [H | g] when f = 0, the singularity scale (trip f, depth Lm + Ld + 2) and the pivot check
-    (trip f, depth Lm + 2). The whole matrix as one step (f = n, s = 0) is what the Cholesky
-    phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
+    [H | g] when f = 0, the singularity scale with the smallest pivot (trip f, depth Lm + Ld + 2)
+    and the pivot check (the smallest pivot over the scale: trip 1, depth Ld + 2). The whole
+    matrix as one step (f = n, s = 0) is what the Cholesky phase of :func:`build_plan` prices; a
+    multifrontal design sums this over its steps."""
     w = frontal + separator
     loops = []
     for r, p0 in enumerate(range(0, frontal, cpe)):
@@ -63,7 +64,7 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     if frontal == 0:
         loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 2))
     loops.append(Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2))
-    loops.append(Loop(f"{name}_pivot_check", frontal, 1, ops.mul.latency + 2))
+    loops.append(Loop(f"{name}_pivot_check", 1 if frontal else 0, 1, ops.div.latency + 2))
     return loops
 
 
@@ -394,9 +395,10 @@ def _frontal(ctx) -> None:
         ctx.channels.append(Channel(f"cpe_recip{i}", "stream", 2, ops.word_bits,
                                     f"cpe_tap{i}", f"cpe{i}"))
     # the feed's adder (mu on the diagonal), the singularity scale's multiplier and divider and
-    # the check's threshold multiplier: one operator of each a loop (cpe_step's sequential code)
+    # the check's divider (the smallest pivot over the scale): one operator of each a loop or
+    # statement (cpe_step's sequential code)
     ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
-                          (("add", 1), ("mul", 2), ("div", 1))))
+                          (("add", 1), ("mul", 1), ("div", 2))))
     # fgc_eliminate.h's assembly: the Grams' and the children's loops, each a pipelined
     # HA += at II 1: an adder each (cholesky_assemble_grams has one call site, the assembler's:
     # the first step's Grams too, in a first region with no step to factor)
