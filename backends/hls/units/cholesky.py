@@ -242,12 +242,13 @@ def assemble_loops(tables: dict, s: int, timing: dict, grams: bool = True,
                    children: bool = True, odd: dict | None = None, par: int = 0) -> list[Loop]:
     """The loops that assemble step s's [H | g] into its lane of HA (fgc_eliminate.h), which is
     all zero (the source that streams a step into the cascade clears every word it reads, so
-    no clearing pass): ``grams`` (cholesky_assemble_grams) per factor its packed Gram's lower
+    no clearing pass): ``grams`` (cholesky_assemble_first, cholesky_assemble_adds) per
+    factor its packed Gram's lower
     triangle and gradient row (d (d + 1) / 2 + d entries), the step's first factor stored, not
     added, two entries a cycle (``move``) after its column map is copied into registers
     (``move``, d), each further one a loop of ``+=`` into the table-addressed frontal matrix
     whose entries all go to different addresses (``scatter``: II 1); ``children``
-    (cholesky_assemble_children) per child its update matrix's upper triangle and reduced g
+    (cholesky_assemble_adds) per child its update matrix's upper triangle and reduced g
     (s (s + 1) / 2 + s), a ``scatter`` loop each; with ``odd`` (step -> its position's parity in
     the schedule) only the children of parity ``par`` (one NF lane's)."""
     loops = []
@@ -399,11 +400,12 @@ def _frontal(ctx) -> None:
     # statement (cpe_step's sequential code)
     ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
                           (("add", 1), ("mul", 1), ("div", 2))))
-    # fgc_eliminate.h's assembly: the Grams' and the children's loops, each a pipelined
-    # HA += at II 1: an adder each (cholesky_assemble_grams has one call site, the assembler's:
-    # the first step's Grams too, in a first region with no step to factor)
+    # fgc_eliminate.h's assembly: the further factors' and the children's entries added
+    # through one pipelined HA += loop at II 1 (cholesky_assemble_adds, one call site: the
+    # assembler's, which also takes the first step's Grams in a region with no step to factor):
+    # one adder; the first factor is stored
     ctx.units.append(Unit("assemble", "the step's [H | g] from Grams and update matrices", 1,
-                          (("add", 2),)))
+                          (("add", 1),)))
     tables, timing = ctx.tables, ctx.les_timing
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
     odd = {s: t % 2 for t, s in enumerate(order)}
