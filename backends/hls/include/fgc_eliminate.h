@@ -48,15 +48,12 @@
 // streams a step's words into the cascade clears each word it reads, and the assembly writes
 // only words it reads (the upper triangle and the gradient of rows < w).
 
-// Step s's factors' packed Grams into HA[lane], one loop per factor. The first is stored, not
-// added (the lane is all zero): two entries a cycle (GRAM's two ports read, the lane's two
-// ports written; within one factor every entry has its own address), its column map first
-// copied into registers (two reads of it an entry each). Each further factor's packed Gram
-// (H's lower triangle, then its gradient row) is added one entry a cycle: within one loop every
-// entry goes to its own address (the column maps are one-to-one), so no iteration waits for
-// another's add (II 1); a later loop's entry may meet the same address.
+// Step s's first factor's packed Gram into HA[lane], stored, not added (the lane is all zero):
+// two entries a cycle (GRAM's two ports read, the lane's two ports written; within one factor
+// every entry has its own address), its column map first copied into registers (two reads of
+// it an entry each). The further factors are cholesky_assemble_adds'.
 template <class CFG>
-void cholesky_assemble_grams(int s, int lane) {
+void cholesky_assemble_first(int s, int lane) {
     const int w = STEP_W[s];
     if (STEP_FACTOR_BEGIN[s] < STEP_FACTOR_BEGIN[s + 1]) {
         const int fac = STEP_FACTORS[STEP_FACTOR_BEGIN[s]];
@@ -93,62 +90,69 @@ void cholesky_assemble_grams(int s, int lane) {
         }
         FGC_CYCLES("assemble", 0, "gram_first", (n + 1) / 2, CFG::MOVE_II, CFG::MOVE_DEPTH);
     }
-    for (int e = STEP_FACTOR_BEGIN[s] + 1; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
-        const int fac = STEP_FACTORS[e];
-        const int cb = FACTOR_COLMAP_BEGIN[fac];
-        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
-        const int g0 = FACTOR_GRAM_OFF[fac];
-        const int n = d * (d + 1) / 2 + d;  // entry (p, q), q <= p, at p (p + 1) / 2 + q; row d: g
-        for (int k = 0, p = 0, q = 0; k < n; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HA inter false
-            const int a = p < d ? FACTOR_COLMAP[cb + p] : w, b = FACTOR_COLMAP[cb + q];
-            const int lo = b < a ? b : a, hi = b < a ? a : b;
-            HA[lane][lo][hi >> 1][hi & 1] += GRAM[g0 + k];
-            if (q == p) {
-                q = 0;
-                ++p;
-            } else {
-                ++q;
-            }
-        }
-        FGC_CYCLES("assemble", 0, "gram", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
-    }
 }
 
-// Step s's children's update matrices (upper triangle and reduced g) added into HA[lane], one
-// entry a cycle per child (each entry its own address within a child: II 1): the children c
-// whose position in the schedule has the parity `par` (odd[c]), from nf, the NF lane the steps
-// at those positions wrote (the t-th step's drain writes NF[t % 2]).
+// The entries added, not stored, into HA[lane], one loop a segment, all through one pipelined
+// loop (one adder): step fs's factors after its first (fs >= 0), each its packed Gram (H's
+// lower triangle, then its gradient row) from GRAM, then step kids's children (kids >= 0) whose
+// position in the schedule has the parity `par` (odd[c]), each its update matrix (upper
+// triangle and reduced g) from nf, the NF lane the steps at those positions wrote (the t-th
+// step's drain writes NF[t % 2]); fs and kids are the same step when both are given. One entry
+// a cycle: within a segment every entry goes to its own address (the column and separator maps
+// are one-to-one), so no iteration waits for another's add (II 1); a later segment's entry may
+// meet the same address.
 template <class CFG>
-void cholesky_assemble_children(int s, int par, const bool odd[N_STEPS],
-                                const typename CFG::T nf[CFG::N_NF], int lane) {
-    const int w = STEP_W[s];
-    for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
-        const int c = STEP_CHILDREN[e];
-        if (int(odd[c]) != par) continue;  // in the other NF lane: added by the other pass
-        const int sc = STEP_W[c] - STEP_F[c];
-        const int mb = STEP_SEPMAP_BEGIN[c];
-        const int u0 = STEP_NF_OFF[c];
-        const int n = sc * (sc + 1) / 2 + sc;  // row a: columns a ... sc - 1, then its g (column sc)
-        for (int k = 0, a = 0, b = 0; k < n; ++k) {
+void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
+                            const typename CFG::T nf[CFG::N_NF], int lane) {
+    typedef typename CFG::T T;
+    const int f0 = fs >= 0 ? STEP_FACTOR_BEGIN[fs] + 1 : 0;
+    const int nfac = fs >= 0 && STEP_FACTOR_BEGIN[fs + 1] > f0 ? STEP_FACTOR_BEGIN[fs + 1] - f0 : 0;
+    const int c0 = kids >= 0 ? STEP_CHILD_BEGIN[kids] : 0;
+    const int nkid = kids >= 0 ? STEP_CHILD_BEGIN[kids + 1] - c0 : 0;
+    const int w = fs >= 0 ? STEP_W[fs] : kids >= 0 ? STEP_W[kids] : 0;
+    for (int e = 0; e < nfac + nkid; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS+CFG::MAX_CHILDREN
+        const bool child = e >= nfac;
+        const int fac = child ? 0 : STEP_FACTORS[f0 + e];
+        const int c = child ? STEP_CHILDREN[c0 + e - nfac] : 0;
+        if (child && int(odd[c]) != par) continue;  // in the other NF lane: the other pass's
+        // a factor: its column map from cb, d columns, its Gram from g0; a child: its
+        // separator map from mb, sc columns, its update matrix from u0
+        const int cb = child ? 0 : FACTOR_COLMAP_BEGIN[fac];
+        const int d = child ? 0 : FACTOR_COLMAP_BEGIN[fac + 1] - cb;
+        const int g0 = child ? 0 : FACTOR_GRAM_OFF[fac];
+        const int sc = child ? STEP_W[c] - STEP_F[c] : 0;
+        const int mb = child ? STEP_SEPMAP_BEGIN[c] : 0;
+        const int u0 = child ? STEP_NF_OFF[c] : 0;
+        // a Gram's entry (x, y), y <= x, at x (x + 1) / 2 + y, row d: g; an update matrix's row
+        // x: columns x ... sc - 1, then its g (column sc)
+        const int n = child ? sc * (sc + 1) / 2 + sc : d * (d + 1) / 2 + d;
+        for (int k = 0, x = 0, y = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=HA inter false
-            const int ma = STEP_SEPMAP[mb + a], mbb = b < sc ? STEP_SEPMAP[mb + b] : w;
-            const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
-            HA[lane][lo][hi >> 1][hi & 1] += nf[u0 + a * (sc + 1) + b];
-            if (b == sc) {
-                ++a;
-                b = a;
+            int a, b;
+            T v;
+            if (child) {
+                a = STEP_SEPMAP[mb + x];
+                b = y < sc ? STEP_SEPMAP[mb + y] : w;
+                v = nf[u0 + x * (sc + 1) + y];
             } else {
-                ++b;
+                a = x < d ? FACTOR_COLMAP[cb + x] : w;
+                b = FACTOR_COLMAP[cb + y];
+                v = GRAM[g0 + k];
+            }
+            const int lo = b < a ? b : a, hi = b < a ? a : b;
+            HA[lane][lo][hi >> 1][hi & 1] += v;
+            if (child ? y == sc : y == x) {
+                ++x;
+                y = child ? x : 0;
+            } else {
+                ++y;
             }
         }
-        FGC_CYCLES("assemble", 0, "child", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
+        FGC_CYCLES("assemble", 0, child ? "child" : "gram", n, CFG::SCATTER_II,
+                   CFG::SCATTER_DEPTH);
     }
 }
 
@@ -189,8 +193,8 @@ void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int r
         }
     }
     FGC_CYCLES("assemble", 0, "source", pairs, CFG::MOVE_II, CFG::MOVE_DEPTH);
-    if (next >= 0) cholesky_assemble_grams<CFG>(next, 1 - lane);
-    if (kids >= 0) cholesky_assemble_children<CFG>(kids, rd, odd, nfr, kid_lane);
+    if (next >= 0) cholesky_assemble_first<CFG>(next, kid_lane);
+    cholesky_assemble_adds<CFG>(next, kids, rd, odd, nfr, kid_lane);
 }
 
 // The cascade's process of the cholesky_overlap region: step s factored from the stream, the

@@ -45,9 +45,10 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     frontal and s separator columns, as the csim counters count them: one ``Loop`` per round
     (trip = its words + the status word at II 1, depth :func:`cpe_round_depth`), after each
     round but the last the copy of the rows it leaves back into H (two words a cycle), the copy of
-    [H | g] when f = 0, the singularity scale (trip f, depth Lm + Ld + 2) and the pivot check
-    (trip f, depth Lm + 2). The whole matrix as one step (f = n, s = 0) is what the Cholesky
-    phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
+    [H | g] when f = 0, the singularity scale with the smallest pivot (trip f, depth Lm + Ld + 2)
+    and the pivot check (the smallest pivot over the scale: trip 1, depth Ld + 2). The whole
+    matrix as one step (f = n, s = 0) is what the Cholesky phase of :func:`build_plan` prices; a
+    multifrontal design sums this over its steps."""
     w = frontal + separator
     loops = []
     for r, p0 in enumerate(range(0, frontal, cpe)):
@@ -63,7 +64,7 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     if frontal == 0:
         loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 2))
     loops.append(Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2))
-    loops.append(Loop(f"{name}_pivot_check", frontal, 1, ops.mul.latency + 2))
+    loops.append(Loop(f"{name}_pivot_check", 1 if frontal else 0, 1, ops.div.latency + 2))
     return loops
 
 
@@ -279,12 +280,13 @@ def assemble_loops(tables: dict, s: int, timing: dict, grams: bool = True,
                    children: bool = True, odd: dict | None = None, par: int = 0) -> list[Loop]:
     """The loops that assemble step s's [H | g] into its lane of HA (fgc_eliminate.h), which is
     all zero (the source that streams a step into the cascade clears every word it reads, so
-    no clearing pass): ``grams`` (cholesky_assemble_grams) per factor its packed Gram's lower
+    no clearing pass): ``grams`` (cholesky_assemble_first, cholesky_assemble_adds) per
+    factor its packed Gram's lower
     triangle and gradient row (d (d + 1) / 2 + d entries), the step's first factor stored, not
     added, two entries a cycle (``move``) after its column map is copied into registers
     (``move``, d), each further one a loop of ``+=`` into the table-addressed frontal matrix
     whose entries all go to different addresses (``scatter``: II 1); ``children``
-    (cholesky_assemble_children) per child its update matrix's upper triangle and reduced g
+    (cholesky_assemble_adds) per child its update matrix's upper triangle and reduced g
     (s (s + 1) / 2 + s), a ``scatter`` loop each; with ``odd`` (step -> its position's parity in
     the schedule) only the children of parity ``par`` (one NF lane's)."""
     loops = []
@@ -433,14 +435,16 @@ def _frontal(ctx) -> None:
         ctx.channels.append(Channel(f"cpe_recip{i}", "stream", 2, ops.word_bits,
                                     f"cpe_tap{i}", f"cpe{i}"))
     # the feed's adder (mu on the diagonal), the singularity scale's multiplier and divider and
-    # the check's threshold multiplier: one operator of each a loop (cpe_step's sequential code)
+    # the check's divider (the smallest pivot over the scale): one operator of each a loop or
+    # statement (cpe_step's sequential code)
     ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
-                          (("add", 1), ("mul", 2), ("div", 1))))
-    # fgc_eliminate.h's assembly: the Grams' and the children's loops, each a pipelined
-    # HA += at II 1: an adder each (cholesky_assemble_grams has one call site, the assembler's:
-    # the first step's Grams too, in a first region with no step to factor)
+                          (("add", 1), ("mul", 1), ("div", 2))))
+    # fgc_eliminate.h's assembly: the further factors' and the children's entries added
+    # through one pipelined HA += loop at II 1 (cholesky_assemble_adds, one call site: the
+    # assembler's, which also takes the first step's Grams in a region with no step to factor):
+    # one adder; the first factor is stored
     ctx.units.append(Unit("assemble", "the step's [H | g] from Grams and update matrices", 1,
-                          (("add", 2),)))
+                          (("add", 1),)))
     tables, timing = ctx.tables, ctx.les_timing
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
     odd = {s: t % 2 for t, s in enumerate(order)}
