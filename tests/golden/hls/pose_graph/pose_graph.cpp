@@ -1693,8 +1693,12 @@ struct LmConfig {
     static const int MAXIMA = T_MAXIMA, CMP_LAT = T_CMP_LAT, ABS_LAT = T_ABS_LAT;
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
-    static T x_norm() { return fgc_units::lm_x_norm<LmConfig>(X); }
+    static T x_norm() {
+#pragma HLS INLINE
+        return fgc_units::lm_x_norm<LmConfig>(X);
+    }
     static bool step_test(bool solved, T mu, T out[2]) {
+#pragma HLS INLINE
         return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);
     }
     static T gradient_max() { return fgc_units::lm_gradient_max<LmConfig>(G); }
