@@ -230,7 +230,15 @@ class _Counter(_Scope):
 
     def _operators(self, stmt: str) -> Counter:
         ops: Counter = Counter()
+        # a square printed as a product of two copies, (e)*(e): the compiler's front end
+        # computes e once (common subexpressions of a statement are merged), so the second
+        # copy's operators are not built: it is read as an operand
         text = stmt
+        while True:
+            new = re.sub(r"\(([^()]*)\)\s*\*\s*\(\1\)", r"(\1)*q", text)
+            if new == text:
+                break
+            text = new
         while True:  # index arithmetic is integer: drop every subscript
             new = re.sub(r"\[[^\[\]]*\]", "", text)
             if new == text:

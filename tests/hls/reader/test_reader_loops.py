@@ -383,3 +383,30 @@ def test_each_call_site_binds_its_own_arrays():
     both = SITES.replace("%THIRD%", "matvec<0>(S, v, S + 8);")
     (loop,) = read_project([("s.cpp", both)], ADD_LATENCY)
     assert ("S", 3, 1) in loop.accesses and [i.rule for i in check([loop])] == ["ii_ports"]
+
+
+SQUARE = """
+typedef float T;
+void sq(const T x[64], const T y[64], T a, T b, T out[64]) {
+    for (int i = 0; i < 64; ++i) {
+#pragma HLS PIPELINE II=1
+        out[i] = %EXPR%;
+    }
+}
+void top(const T x[64], const T y[64], T a, T b, T out[64]) { sq(x, y, a, b, out); }
+"""
+
+
+@pytest.mark.parametrize("expr, ops", [
+    # a square printed as two copies (the kernel printer's (e)**2): e is built once
+    ("(x[i]*a + y[i]*b)*(x[i]*a + y[i]*b)", {"add": 1, "mul": 3}),
+    ("T(0.5)*((x[i]*a + b)*(x[i]*a + b))", {"add": 1, "mul": 3}),
+    # two different products are both built
+    ("(x[i]*a + b)*(y[i]*a + b)", {"add": 2, "mul": 3}),
+])
+def test_a_square_of_a_copied_subexpression_builds_it_once(expr, ops):
+    """imu_window's cost kernel prints its whitened residual's squares as (e)*(e): the reader
+    counted e twice (105 adds and 109 multiplies above the kernel's own count in factor_cost_0);
+    the compiler's front end merges the identical expressions of a statement."""
+    (loop,) = read_project([("sq.cpp", SQUARE.replace("%EXPR%", expr))], ADD_LATENCY)
+    assert dict(loop.ops) == ops

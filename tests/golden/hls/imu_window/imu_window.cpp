@@ -2561,10 +2561,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=103 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=128 cycles (the plan's)
 void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=103
+#pragma HLS PIPELINE II=128
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -2583,7 +2583,7 @@ void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
             rows.write(row);
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 128, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
