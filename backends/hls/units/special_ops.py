@@ -64,10 +64,24 @@ def helper_ops(text: KernelText) -> tuple[tuple[str, int], ...]:
     return tuple(sorted((k, n) for k, n in total.items() if n))
 
 
+@functools.lru_cache(maxsize=256)
+def negations(text: KernelText) -> int:
+    """Products with a -1 coefficient in kernel ``text``: the compiler's count takes -1 as a
+    factor (``a - b`` is ``a + (-1)·b``: one multiply), the printer writes a subtraction or a
+    sign (``-x``, ``-a*b``): one multiply fewer each."""
+    kernel = text.kernel()
+    exprs = [e for _, e in kernel.assignments] + list(kernel.outputs)
+    return sum(1 for expr in exprs for node in sp.preorder_traversal(sp.sympify(expr))
+               if node.is_Mul and node.as_coeff_Mul()[0] == -1)
+
+
 def with_helpers(counts: dict, text: KernelText) -> dict:
-    """``counts`` (a kernel's operation counts by kind) with its special functions' arithmetic
-    (:func:`helper_ops`) added."""
+    """``counts`` (a kernel's operation counts by kind) as the kernel is printed: its special
+    functions' arithmetic (:func:`helper_ops`) added, its sign flips (:func:`negations`) no
+    multiplies."""
     out = dict(counts)
     for kind, n in helper_ops(text):
         out[kind] = out.get(kind, 0) + n
+    if "mul" in out:
+        out["mul"] = max(0, out["mul"] - negations(text))
     return out

@@ -2561,10 +2561,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=128 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=106 cycles (the plan's)
 void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=128
+#pragma HLS PIPELINE II=106
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -2583,7 +2583,7 @@ void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
             rows.write(row);
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 128, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 106, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -2945,10 +2945,10 @@ T noise_3(T noise) {
     return noise;
 }
 
-// block 3, cost mode: `total` plus the cost of its instances in order, one every II=5 cycles
+// block 3, cost mode: `total` plus the cost of its instances in order, one every II=4 cycles
 T cost_of_3(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=5
+#pragma HLS PIPELINE II=4
         const int f = BLOCK3_INSTANCES[i];
         T in[6], dat[7], half[1];
         gather_3(x, f, in, dat);
@@ -2957,7 +2957,7 @@ T cost_of_3(const T x[N_X], T total) {
         cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
-    FGC_CYCLES("factor_3_cost", 0, "instances", 1, 5, 22);
+    FGC_CYCLES("factor_3_cost", 0, "instances", 1, 4, 22);
     return total;
 }
 

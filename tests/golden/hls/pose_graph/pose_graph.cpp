@@ -1138,10 +1138,10 @@ void gather_0(const T x[N_X], int f, T in[24], T dat[13]) {
 }
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 60 structural non-zeros of
-// 6 x 13), whitening, into AB; one instance every II=45 cycles (the plan's)
+// 6 x 13), whitening, into AB; one instance every II=42 cycles (the plan's)
 void evaluate_0(const T x[N_X]) {
     for (int i = 0; i < 6; ++i) {
-#pragma HLS PIPELINE II=45
+#pragma HLS PIPELINE II=42
         const int f = BLOCK0_INSTANCES[i];
         T in[24], dat[13];
         gather_0(x, f, in, dat);
@@ -1155,7 +1155,7 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 13; ++c) AB[a0 + r * 13 + c] = ab[r * 16 + c];
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 6, 45, 428);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 6, 42, 428);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 16 columns (a multiple of PORTS)
@@ -1241,10 +1241,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=128 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=106 cycles (the plan's)
 void evaluate_1(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=128
+#pragma HLS PIPELINE II=106
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -1258,7 +1258,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 128, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 106, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
