@@ -74,3 +74,15 @@ def test_the_imu_datapath_is_priced_at_least_as_read(tmp_path):
         loops = [r for r in design.loops if re.fullmatch(rf"(?:evaluate|cost_of)_{b}", r.function)]
         read = sum(r.dsp(dsp) * modules.get(r.function, 0) for r in loops)
         assert read <= units[f"factor_{b}"], (program.blocks[b].name, read, units)
+
+
+def test_sign_flips_are_no_multiplies(imu):
+    """The compiler counts a - b as a + (-1)·b, a multiply the printed kernel does not hold; the
+    datapath's counts as printed drop one multiply per product with a -1 coefficient."""
+    from fgc_backends.hls.units.special_ops import negations, with_helpers
+
+    prior = next(b for b in imu.blocks if b.name == "PriorFactorVector3")
+    flips = negations(prior.cost_kernel)
+    assert flips > 0
+    counts = dict(prior.ops_cost)
+    assert with_helpers(counts, prior.cost_kernel)["mul"] == counts["mul"] - flips
