@@ -1,9 +1,10 @@
 """The emitted Cholesky design (issue 33: the HGC streamed from the factor datapaths, the
-assembly, the #CPE cascade) on LIO N=30 (#CPE 5 / 20 / 80) and paper B's imu_window N=50
-(#CPE 5 / 20 / 40 / 80 / 120): per design the plan's cycles per LM iteration and their phase
-groups, ms per iteration and per solve (5 LM iterations, GTSAM's count on imu_window), the
-plan's DSP beside the second reader's (bench_second_reader.measure: the emitted C++ read back),
-BRAM36, the plan's fit verdict on the xc7z045 and the linear solver's share.
+assembly beside the #CPE cascade) on LIO N=30 (#CPE 5 / 10 / 15 / 20 / 80) and paper B's
+imu_window N=50 (#CPE 5 / 20 / 40 / 80 / 120): per design the plan's cycles per LM iteration
+and their phase groups, ms per iteration and per solve (5 LM iterations, GTSAM's count on
+imu_window), the plan's DSP beside the second reader's (bench_second_reader.measure: the
+emitted C++ read back), BRAM36, the plan's fit verdict on the xc7z045 and the linear solver's
+share.
 
     python bench/bench_cholesky.py
 
@@ -27,8 +28,8 @@ from fgc_backends.hls import HlsConfig  # noqa: E402
 from fgc_backends.hls.emitter import accel_plan  # noqa: E402
 from fgc_backends.hls.plan import plan_cost, plan_groups  # noqa: E402
 
-CASES = [("lio", 30, c) for c in (5, 20, 80)] + [("imu_window", 50, c)
-                                                  for c in (5, 20, 40, 80, 120)]
+CASES = [("lio", 30, c) for c in (5, 10, 15, 20, 80)] + [("imu_window", 50, c)
+                                                          for c in (5, 20, 40, 80, 120)]
 GROUPS = ("factor_jacobian", "hgc", "assemble", "cholesky", "backsub")
 
 

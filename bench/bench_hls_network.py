@@ -47,7 +47,8 @@ def main() -> None:
             kernel = (project.directory / "net.cpp").read_text()
             unit = "fgc_qr.h" if linear == "qr" else "fgc_cpe.h"
             header = (project.directory / "include" / unit).read_text()
-            procs, streams = counts(kernel, header)
+            backsub = (project.directory / "include" / "fgc_backsub.h").read_text()
+            procs, streams = counts(kernel, header, backsub)
             plan_procs, plan_streams = process_network(accel_plan(program, HlsConfig()))
             print(f"{label:28} {option}={value:<4} {program.schedule.ordering:10} {procs:9d} "
                   f"{streams:8d} {len(plan_procs):4d}/{len(plan_streams):<4d}")

@@ -25,6 +25,7 @@ from fgc_backends.cfamily.scalars import (
 )
 from fgc_backends.hls.config import HlsConfig, HlsConfigError, check_clock
 from fgc_backends.hls.lint import lint_project
+from fgc_backends.hls.units.special_ops import with_helpers
 
 # template → emitted file name ({name} is the project identifier): the dataflow accelerator the
 # plan describes (docs/hls.md). The CPU program is the native backend's (fgc_backends.native).
@@ -165,6 +166,18 @@ def _allocation(unit, scalar_cxx: str, text: str) -> tuple[tuple[str, int], ...]
     return tuple(out)
 
 
+def _bound(limits, counts: dict, ii: int, table) -> tuple[tuple[str, int], ...]:
+    """One mode's ALLOCATION limits of a factor datapath: per kind of ``limits`` (the options'
+    share, units/datapath.py's mode_allocation) the instances its loop binds at ``ii``
+    (plan/binding.py's rule, at most that limit), in the limits' order."""
+    from fgc_backends.hls.plan.binding import loop_operators
+    from fgc_backends.hls.units.datapath import mode_allocation
+    allocated = mode_allocation(limits, counts)
+    bound = loop_operators({k: counts.get(k, 0) for k, _ in allocated}, ii, dict(allocated),
+                           1, table)
+    return tuple((k, bound[k]) for k, _ in allocated if bound.get(k))
+
+
 class _AccelBlock:
     """A block's template context plus what the plan says about its datapath."""
 
@@ -190,10 +203,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
     from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
     from fgc_backends.hls.plan.model import Unit
-    from fgc_backends.hls.units.cholesky import gram_entries, gram_ii
+    from fgc_backends.hls.units.cholesky import gram_ii, gram_lanes, jacobian_ii
     from fgc_backends.hls.units.datapath import (
         factor_allocation,
-        mode_allocation,
         small_allocation,
         small_blocks,
     )
@@ -204,6 +216,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
              if re.fullmatch(r"factor_(\d+|small)_(jacobian|cost)", p.name)}
     noise = {p.name: p.loops[2] for p in phase["rounding_noise"].processes
              if p.name.startswith("noise_")}
+    hgc = {p.name: p for ph in plan.phases if ph.name.startswith("hgc") for p in ph.processes
+           if p.name.startswith("reduce_")}
+    jac_ii = jacobian_ii(p for ph in plan.phases for p in ph.processes)
     blocks = []
     # factor_<b>'s ALLOCATION limits (the plan's unit is what Vitis binds around them)
     allocations = factor_allocation(program, plan.options)
@@ -231,10 +246,15 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                                       noise[f"noise_{b.index}"]))
             blocks[-1].small = True
         else:
-            jac = Unit(f"factor_{b.index}", "ALLOCATION", 1,
-                       mode_allocation(allocations[b.index], block.ops_after))
-            cost = Unit(f"factor_cost_{b.index}", "ALLOCATION", 1,
-                        mode_allocation(allocations[b.index], block.ops_cost))
+            # each mode's ALLOCATION: the instances the plan binds at its loop's II (at most
+            # the options' limits), so the text holds Vitis to the plan's operators
+            # (the counts as printed: the special functions' bodies in, sign flips out)
+            jac = Unit(f"factor_{b.index}", "ALLOCATION", 1, _bound(
+                allocations[b.index], with_helpers(block.ops_after, block.kernel),
+                loops[f"factor_{b.index}_jacobian"].ii, plan.ops))
+            cost = Unit(f"factor_cost_{b.index}", "ALLOCATION", 1, _bound(
+                allocations[b.index], with_helpers(block.ops_cost, block.cost_kernel),
+                loops[f"factor_{b.index}_cost"].ii, plan.ops))
             jac_text = "\n".join((*b.jacobian.intermediates, *b.jacobian.outputs))
             cost_text = "\n".join((*b.cost.intermediates, *b.cost.outputs))
             blocks.append(_AccelBlock(b, (_allocation(jac, config.scalar_cxx, jac_text),
@@ -245,9 +265,22 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             blocks[-1].small = False
         # Cholesky's HGC: the II of the block's Gram entries (its multipliers) and the entries
         blocks[-1].gram_ii = gram_ii(program, b.index, plan.options.hgc_lanes)
-        entries = gram_entries(block) if program.solver.linear == "cholesky" else ()
-        blocks[-1].gram_p = [p for p, _ in entries]
-        blocks[-1].gram_q = [q for _, q in entries]
+        lane_a, lane_b, k = (gram_lanes(program, b.index, plan.options.hgc_lanes, jac_ii)
+                             if program.solver.linear == "cholesky" else ((), (), 0))
+        blocks[-1].gram_p = [p for p, _ in lane_a]
+        blocks[-1].gram_q = [q for _, q in lane_a]
+        blocks[-1].gram_pb = [p for p, _ in lane_b]  # lane B: the first gram_k rows only
+        blocks[-1].gram_qb = [q for _, q in lane_b]
+        blocks[-1].gram_k = k
+        # its HGC loop's iterations an instance and depth: the plan's (units/cholesky.py)
+        gram = hgc.get(f"reduce_{b.index}")
+        count = len(b.instances)
+        blocks[-1].gram_steps = gram.loops[1].trip // count if gram and count else 0
+        blocks[-1].gram_depth = gram.loops[1].depth if gram else 0
+        # per column of A: its variable (k-th of the factor's keys) and offset (the gradient)
+        cols = sorted((v.col + j, v.k, j) for v in b.variables for j in range(v.dim))
+        blocks[-1].gram_col_var = [k for _, k, _ in cols]
+        blocks[-1].gram_col_off = [j for _, _, j in cols]
     # the state update's datapath per variable type: the plan's operators, II and depth
     retract = {}
     for k in context["retracts"]:

@@ -64,22 +64,23 @@ def allocations(text: str) -> dict[str, tuple[tuple[str, str, int], ...]]:
     return out
 
 
-def backsub_region(kernel: str) -> Region:
-    """The kernel's back-substitution regions (``backsub_lane0`` and ``backsub_lane1``: a
-    lane's solve beside the other lane's load) as one: their processes and streams in order."""
-    lanes = [r for r in read_network(kernel) if r.function.startswith("backsub_lane")]
+def backsub_region(header: str) -> Region:
+    """Back-substitution's regions (``fgc_backsub.h``'s driver: ``backsub_lane0`` and
+    ``backsub_lane1``, a lane's solve beside the other lane's load) as one: their processes and
+    streams in order."""
+    lanes = [r for r in read_network(header) if r.function.startswith("backsub_lane")]
     if len(lanes) != 2:
         raise ValueError(f"expected two backsub_lane regions, found {len(lanes)}")
     return Region("backsub_lane", tuple(p for r in lanes for p in r.processes),
                   tuple(st for r in lanes for st in r.streams))
 
 
-def counts(kernel: str, units: str) -> tuple[int, int]:
+def counts(kernel: str, units: str, backsub: str) -> tuple[int, int]:
     """Processes and streams of the kernel's process network: the linear solver's - the
     kernel's unit-set region (QR: how many unit sets run side by side; Cholesky: one cascade)
     times the unit header's innermost region (one reflection, one CPE round) with the kernel's
-    N_UNITS / N_CPE - and back-substitution's regions (:func:`backsub_region`: their process
-    calls and any streams they declare)."""
+    N_UNITS / N_CPE - and back-substitution's regions in its header ``backsub``
+    (:func:`backsub_region`: their process calls and any streams they declare)."""
     const = {k: int(v) for k, v in _CONSTANT.findall(kernel)}
     cfg = {f"CFG::{k}": v for k, v in const.items()}
     sets = next((len(r.processes) for r in read_network(kernel) if r.function == "qr_level"), 1)
@@ -93,7 +94,7 @@ def counts(kernel: str, units: str) -> tuple[int, int]:
             else:
                 procs += 1
         streams += _stream_count(region, cfg)
-    backsub = backsub_region(kernel)
+    backsub = backsub_region(backsub)
     return (procs * sets + len(backsub.processes),
             streams * sets + _stream_count(backsub, cfg))
 

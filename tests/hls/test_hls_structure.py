@@ -249,6 +249,11 @@ def _texts(directory, name, header):
     return (directory / f"{name}.cpp").read_text(), (directory / "include" / header).read_text()
 
 
+def _backsub(directory):
+    """The emitted back-substitution header (its driver's backsub_lane<p> regions)."""
+    return (directory / "include" / "fgc_backsub.h").read_text()
+
+
 # n_u = 4 (heavy) lies between the two ends the default run checks
 @pytest.mark.parametrize("units", [1, pytest.param(4, marks=pytest.mark.heavy), 8])
 def test_units_change_the_emitted_qr_network(tmp_path, units):
@@ -263,11 +268,11 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
     (reflection,) = [r for r in read_network(header) if r.streams]
     assert reflection.processes == ("qr_broadcast", "qr_finish", "qr_update_units::run",
                                     "qr_evaluate", "qr_collect")
-    backsub = backsub_region(kernel)
+    backsub = backsub_region(_backsub(out))
     assert backsub.processes == ("backsub_set0", "backsub_load1", "backsub_set1",
                                  "backsub_load0") and not backsub.streams
     procs, streams = process_network(accel_plan(program, HlsConfig()))
-    assert counts(kernel, header) == (len(procs), len(streams))
+    assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams))
     assert (len(procs), len(streams)) == ((units + 4) * 2 + 4, 2 * (4 * units + 1))
     assert tuple(p for p in procs if p.startswith("backsub")) == backsub.processes
     for p in procs:  # the comment block lists the plan's network
@@ -285,8 +290,13 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     (region,) = read_network(header)
     assert region.processes == ("cpe_feed", "cpe_cascade::run", "cpe_drain")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
-    # feed, per CPE its tap and itself, drain, back-substitution; links, tapped and recip
-    assert counts(kernel, header) == (len(procs), len(streams)) == (2 * cpe + 6, 3 * cpe + 1)
+    # feed, per CPE its tap and itself, drain, the assembler beside the cascade (fgc_eliminate.h's
+    # cholesky_overlap), back-substitution; links, tapped and recip, the assembler's stream
+    (overlap,) = read_network(_texts(out, "w100", "fgc_eliminate.h")[1])
+    assert overlap.processes == ("cholesky_assembler", "cholesky_cascade")
+    header += _texts(out, "w100", "fgc_eliminate.h")[1]
+    assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == \
+        (2 * cpe + 8, 3 * cpe + 2)
     assert procs[-4:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
     assert all(f"//   process {p}\n" in kernel for p in procs[-4:])
     assert f"//   stream cpe_link{cpe} " in kernel
@@ -326,21 +336,22 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
 
 
 def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):
-    """The read-back counts what the text holds: a kernel whose backsub_lane region lost a
-    unit's call (or gained a stream) no longer equals the plan's network."""
+    """The read-back counts what the text holds: a back-substitution header whose backsub_lane
+    region lost a unit's call (or gained a stream) no longer equals the plan's network."""
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import counts
     from fgc_backends.hls.plan import process_network
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr", units=2)
     kernel, header = _texts(out, "lio", "fgc_qr.h")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
-    assert counts(kernel, header) == (len(procs), len(streams))
-    call = "    backsub_set1(cond1, f1, s1, part1, x1);\n"
-    assert kernel.count(call) == 1
-    assert counts(kernel.replace(call, ""), header) == (len(procs) - 1, len(streams))
+    backsub = _backsub(out)
+    assert counts(kernel, header, backsub) == (len(procs), len(streams))
+    call = "    backsub_set1<CFG>(cond1, f1, s1, part1, x1);\n"
+    assert backsub.count(call) == 1
+    assert counts(kernel, header, backsub.replace(call, "")) == (len(procs) - 1, len(streams))
     extra = "#pragma HLS DATAFLOW\n    hls::stream<L> spare;\n"
-    widened = kernel.replace("#pragma HLS DATAFLOW\n    backsub_set0", extra + "    backsub_set0")
-    assert counts(widened, header) == (len(procs), len(streams) + 1)
+    widened = backsub.replace("#pragma HLS DATAFLOW\n    backsub_set0", extra + "    backsub_set0")
+    assert counts(kernel, header, widened) == (len(procs), len(streams) + 1)
 
 
 def test_accelerator_kernel_has_no_host_only_code(tmp_path):
@@ -358,7 +369,7 @@ def test_allocation_limits_are_the_plans(tmp_path):
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import allocations
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
-    plan = accel_plan(program, HlsConfig())
+    plan = accel_plan(program, HlsConfig(scalar="double"))  # the design _emit_accel emits
     from fgc_backends.hls.units.datapath import factor_allocation, mode_allocation
     found = allocations((out / "lio.cpp").read_text())
     # the factor datapaths per mode (factor_<b>: the Jacobian's, factor_cost_<b>: the cost's
@@ -366,15 +377,24 @@ def test_allocation_limits_are_the_plans(tmp_path):
     # (retract_<k>: its unit's operators)
     from fgc_backends.cfamily.blocks import block_contexts
     from fgc_backends.hls.units.datapath import small_allocation, small_blocks
+    from fgc_backends.hls.units.special_ops import with_helpers
     shared = factor_allocation(program, plan.options)
     small = small_blocks(program)  # LIO's priors and GPS: one shared datapath per mode
     assert small
     limits_of = {}
+    # each mode's limits: the instances its loop binds at the plan's II (ceil(n x op II / II)),
+    # at most the block's share of the options' limits
+    ii = {p.name: p.loops[0].ii for ph in plan.phases for p in ph.processes if p.loops}
     for b, block in enumerate(program.blocks):
         if b in small:
             continue
-        limits_of[f"factor_{b}"] = dict(mode_allocation(shared[b], block.ops_after))
-        limits_of[f"factor_cost_{b}"] = dict(mode_allocation(shared[b], block.ops_cost))
+        # (the counts as printed: units/special_ops.py's helpers' bodies in, sign flips out)
+        for function, mode, counts in (
+                (f"factor_{b}", "jacobian", with_helpers(block.ops_after, block.kernel)),
+                (f"factor_cost_{b}", "cost", with_helpers(block.ops_cost, block.cost_kernel))):
+            limits_of[function] = {
+                k: min(lim, -(-counts[k] * plan.ops.op(k).ii // ii[f"factor_{b}_{mode}"]))
+                for k, lim in mode_allocation(shared[b], counts)}
     contexts = block_contexts(program, vector=False)
     for function, mode in (("evaluate_small_one", "jacobian"), ("cost_small_one", "cost")):
         limits_of[function] = dict(small_allocation(program, contexts, plan.options, mode,

@@ -123,7 +123,18 @@ static void run_cpe(int f, int s, double mu) {
             if (i < C::MAX_W && c < C::MAX_COLS) H[i][c] = T(x);
         }
     bool not_pd = false, singular = false;
-    fgc_units::cpe_step<C>(H, f, s, T(mu), cond, 0, update, 0, &not_pd, &singular);
+    // the step's words as the kernel's assembly streams them (rows from the diagonal to the
+    // gradient), then H left to cpe_step as the buffer between rounds (all zero)
+    hls::stream<fgc_units::cpe_pair<T> > src;
+    for (int i = 0; fgc_units::cpe_fits<C>(f, s) && i < w; ++i)
+        for (int c = i; c <= w; c += 2) {
+            fgc_units::cpe_pair<T> p = {H[i][c], c < w ? H[i][c + 1] : T(0)};
+            src.write(p);
+            H[i][c] = T(0);
+            if (c < w) H[i][c + 1] = T(0);
+        }
+    fgc_units::cpe_step<C>(src, H, f, s, T(mu), cond, 0, update, 0, &not_pd, &singular);
+    if (!src.empty()) std::exit(4);  // the cascade reads every word it is given
     cycles("cycles");
     const bool fits = w <= C::MAX_W && f <= C::MAX_F;
     int left = 0;  // words of H's upper triangle and gradient the cascade did not clear
@@ -370,7 +381,7 @@ def test_cpe_matches_numpy(driver, cpe):
     for (_, _, _, f, s, mu, h), res in zip(cases, run(driver, cases), strict=True):
         cond, upd = cpe_expected(h, f, s, mu)
         assert not res.not_pd and not res.singular
-        assert res.left == 0  # the cascade leaves H clear for the next step's assembly
+        assert res.left == 0  # the cascade leaves H (its buffer between rounds) clear
         scale = max(np.abs(cond).max(), 1.0)
         # left of the diagonal nothing is written (the driver fills NaN there)
         got_cond = np.triu(res.cond.reshape(f, f + s + 1))

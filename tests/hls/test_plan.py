@@ -189,17 +189,20 @@ def test_cpe_cascade_follows_cpe(chol_chain):
     for c, plan in plans.items():
         assert plan.unit("cpe").instances == c
         assert sum(1 for ch in plan.channels if ch.name.startswith("cpe_link")) == c + 1
-        cascade = next(ph for ph in plan.phases if ph.name == "cholesky").processes[0]
-        # per step (multifrontal, as emitted) ⌈f / #CPE⌉ rounds; round r streams the step's
-        # trailing m = w - r·c rows of [H | g], upper triangle plus g: m(m+1)/2 + m words, and
-        # the status word
-        want = []
-        for st in chol_chain.schedule.steps:
+        # per step (multifrontal, as emitted; its cascade in its cholesky_level<t> region
+        # beside the assembler) ⌈f / #CPE⌉ rounds; round r streams the step's trailing
+        # m = w - r·c rows of [H | g], upper triangle plus g: m(m+1)/2 + m words, and the
+        # status word
+        steps = {st.index: st for st in chol_chain.schedule.steps}
+        cascades = [ph.processes[0] for ph in plan.phases if ph.name.startswith("cholesky_level")]
+        assert sorted(int(p.name.removeprefix("cascade")) for p in cascades) == sorted(steps)
+        for cascade in cascades:
+            st = steps[int(cascade.name.removeprefix("cascade"))]
             w, f = st.frontal_dim + st.separator_dim, st.frontal_dim
-            want += [(w - r * c) * (w - r * c + 1) // 2 + w - r * c + 1
-                     for r in range(-(-f // c))]
-        # (cpe_step's copies back, scale and pivot-check loops around the rounds are priced too)
-        assert [lp.trip for lp in cascade.loops if "_round" in lp.name] == want
+            want = [(w - r * c) * (w - r * c + 1) // 2 + w - r * c + 1
+                    for r in range(-(-f // c))]
+            # (cpe_step's copies back, scale and pivot-check loops are priced too)
+            assert [lp.trip for lp in cascade.loops if "_round" in lp.name] == want
     c1, c3 = plan_cost(plans[1]), plan_cost(plans[3])
     assert c3.dsp - c1.dsp == 2 * 8  # a float32 CPE: add 2 + two mul 3 each = 8 DSP
     assert c3.cycles < c1.cycles

@@ -7,7 +7,7 @@ import pytest
 from hls_programs import chain
 
 from fgc_backends.cost.operators import FLOAT32
-from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
+from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles, plan_cost
 from fgc_backends.hls.units.cholesky import (
     cpe_depth,
     cpe_round_depth,
@@ -62,7 +62,7 @@ def test_more_cpes_than_a_steps_pivots_only_add_idle_fill():
 def test_the_emitted_design_assembles_factors_and_the_cascade_stores_each_step(program):
     plan = build_plan(program)
     names = [ph.name for ph in plan.phases]
-    assert names.index("hgc") < names.index("assemble") < names.index("cholesky")
+    assert names.index("hgc") < names.index("assemble") < names.index("cholesky_level0")
     assert "store" not in names  # the drain writes COND and NF
     assert plan.unit("cpe").instances == 2
     assert dict(plan.unit("cpe").operators) == {"add": 1, "mul": 2, "div": 1}
@@ -107,21 +107,79 @@ def test_the_hgc_is_priced_per_block_type_as_its_gram_entries_bind_it():
     assert m == 3
     assert gram_ii(program, many, 32) == 1 and gram_ii(program, many, 2) == 2
     assert gram_ii(program, one, 32) == program.blocks[one].residual_dim
-    ops = dict(hgc_operators(program, 32, 4))
-    # the tree's adders, the scatter's and the check's adder, the check's fold of 4 partials
-    assert dict(ops[many]) == {"add": 2 + 1 + 1 + 3, "mul": 3}
-    assert dict(ops[one]) == {"add": 1 + 1 + 1 + 3, "mul": 1}
-    assert dict(hgc_operators(program, 2, 4)[many][1]) == {"add": 1 + 1 + 1 + 3, "mul": 2}
+    ops = dict(hgc_operators(program, 32))
+    # the tree's adders and the gradient's adder (the last row into G, in the same loop; at
+    # the prior's II 3 one adder issues all three adds); the diagonal's finiteness check binds
+    # no operator
+    assert dict(ops[many]) == {"add": 2 + 1, "mul": 3}
+    assert dict(ops[one]) == {"add": 1, "mul": 1}
+    assert dict(hgc_operators(program, 2)[many][1]) == {"add": 2, "mul": 2}
     plan = build_plan(program)
     assert {f"hgc_{b}" for b in counts} <= {u.name for u in plan.units}
     (entries,) = [lp for ph in plan.phases if ph.name.startswith("hgc") for p in ph.processes
                   if p.name == f"reduce_{many}" for lp in p.loops if lp.name == "entries"]
     # a between factor's [A | b] is 3 x 7 (two poses and b), every entry of its packed
     # triangle structurally non-zero: 28 entries an instance, one a cycle, depth read +
-    # multiply + a tree of ceil(log2 3) = 2 adds + write
+    # multiply + a tree of ceil(log2 3) = 2 adds + the gradient's add + G read and the writes
     assert len(gram_entries(program.blocks[many])) == 28
-    assert (entries.trip, entries.ii, entries.repeat) == (28, 1, counts[many])
-    assert entries.depth == 3 + 2 * 4 + 2
+    # all instances' entries one pipelined loop (the next instance's rows read alongside): the
+    # HGC (28 entries an instance) is slower than the datapath, so a second lane over the
+    # first rows takes half of them: 14 iterations an instance (more than m + 3 and than the
+    # last row's span of 6 + the add)
+    assert (entries.trip, entries.ii, entries.repeat) == (14 * counts[many], 1, 1)
+    assert entries.depth == 3 + 2 * 4 + 4 + 3
+
+
+def test_an_instance_of_few_gram_entries_is_padded_to_keep_its_hazards_apart(monkeypatch):
+    # gram_entries' one loop over all instances declares no dependence on the row banks nor on
+    # G: an instance takes at least m + 3 iterations (its successor's rows are read in the
+    # first m) and at least its last row's span + the adder's latency + 3 (two instances' +=
+    # into one entry of G); here a between block of 3 rows with 4 entries, two of them in the
+    # last row (b^T A), one apart: 1 + 4 + 3 = 8 iterations an instance
+    from fgc_backends.hls.plan.loops import kernel_timing
+    from fgc_backends.hls.units import cholesky
+
+    program = chain(6, linear="cholesky")
+    counts = {}
+    for f in program.factors:
+        counts[f.block] = counts.get(f.block, 0) + 1
+    many = max(counts, key=counts.get)
+    timing = kernel_timing(FLOAT32)
+    assert cholesky.gram_steps(program, many, timing) == 28  # its own 28 entries bind
+    last = sum(program.blocks[many].variable_dims)
+    monkeypatch.setattr(cholesky, "_gram_rows", lambda b: {
+        (0, 0): (0,), (last, 0): (0,), (last, 1): (0,), (last, last): (0,)})
+    assert cholesky.gram_steps(program, many, timing) == 1 + timing["acc"][0] + 3 == 8
+    one = next(b for b, n in counts.items() if n == 1)  # one instance: nothing to keep apart
+    assert cholesky.gram_steps(program, one, timing) == 4
+
+
+def test_a_slower_hgc_gets_a_second_lane_over_the_first_rows():
+    # the between block's HGC (28 entries an instance) is slower than its datapath: lane B of
+    # K multipliers takes entries only the first K rows touch (never the last row: the += into
+    # G stay in lane A), at most half of them; one lane when the datapath is the slower
+    from fgc.ir.codes import NOISE_CODES
+    from fgc_backends.cfamily.sparsity import block_pattern
+    from fgc_backends.hls.units.cholesky import gram_entries, gram_lanes, hgc_operators
+
+    program = chain(6, linear="cholesky")
+    counts = {}
+    for f in program.factors:
+        counts[f.block] = counts.get(f.block, 0) + 1
+    many = max(counts, key=counts.get)
+    block = program.blocks[many]
+    entries, last = gram_entries(block), sum(block.variable_dims)
+    lane_a, lane_b, k = gram_lanes(program, many, 32, {many: 1})
+    assert 0 < k < block.residual_dim and 0 < len(lane_b) <= len(entries) // 2
+    assert sorted(lane_a + lane_b) == sorted(entries) and not set(lane_a) & set(lane_b)
+    pattern = block_pattern(block, tuple(NOISE_CODES[m.noise_kind] for m in block.members), "t")
+    assert all(p != last and max(pattern.gram_rows(p, q)) < k for p, q in lane_b)
+    assert all((p, q) in lane_a for p, q in entries if p == last)
+    assert len(lane_a) == len(entries) - len(entries) // 2
+    ops = dict(dict(hgc_operators(program, 32, {many: 1}))[many])
+    assert ops == {"add": 3 + k - 1, "mul": 3 + k}
+    assert gram_lanes(program, many, 32, {many: 28}) == (entries, (), 0)  # datapath slower
+    assert gram_lanes(program, many, 32, None) == (entries, (), 0)
 
 
 def test_structurally_zero_gram_entries_are_never_computed():
@@ -182,3 +240,53 @@ def test_each_block_types_datapath_and_hgc_share_one_emitted_region(tmp_path):
         assert len(region.streams) == 1
         assert [p.name for p in ph.processes] == [f"factor_{b}_jacobian", f"reduce_{b}"]
     assert "factor_jacobian" not in {ph.name for ph in plan.phases}
+
+
+def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program):
+    # cholesky_eliminate_all: the steps' position parities, the first step's Grams before the
+    # steps; per step (the t-th) its children of the other parity than t's (phase assemble: the
+    # step before among them), then the cholesky_overlap region (phase cholesky_level<t>): the
+    # cascade beside the assembler, which streams the step's words out two a cycle, assembles
+    # the next step's Grams into the other lane and adds its children from the NF lane step t's
+    # cascade does not write
+    from fgc_backends.hls.plan.loops import _tables, kernel_timing
+    from fgc_backends.hls.units.cholesky import assemble_loops, cpe_pairs
+
+    plan = build_plan(program)
+    tables, timing = _tables(program), kernel_timing(FLOAT32)
+    order = list(tables["LEVEL_STEPS"][:len(program.schedule.steps)])
+    odd = {s: t % 2 for t, s in enumerate(order)}
+    (assemble,) = [ph for ph in plan.phases if ph.name == "assemble"]
+    lanes, first, *kids = assemble.processes
+    assert lanes.loops[0].trip == len(order)
+    assert first.name == "assemble_first"
+    assert [lp.name for lp in first.loops][:2] == ["map", "gram_first"]
+    assert all(lp.name == "child" for p in kids for lp in p.loops)
+    regions = [ph for ph in plan.phases if ph.name.startswith("cholesky_level")]
+    assert len(regions) == len(order)
+    every = 0
+    for t, (ph, s) in enumerate(zip(regions, order, strict=True)):
+        assert ph.dataflow
+        cascade, assembler = ph.processes
+        assert cascade.name == f"cascade{s}" and assembler.name == f"assembler{s}"
+        assert assembler.loops[0].name == "source"
+        assert assembler.loops[0].trip == cpe_pairs(tables["STEP_W"][s])
+        nxt = order[t + 1] if t + 1 < len(order) else None
+        beside = assemble_loops(tables, nxt, timing, odd=odd, par=1 - t % 2) \
+            if nxt is not None else []
+        assert list(assembler.loops[1:]) == beside
+        # the region: the slower process plus the other's fill, not their sum
+        assert phase_cycles(ph) < cascade.cycles + assembler.cycles
+        every += sum(lp.name == "child" for lp in beside)
+    # every child once: beside the cascade or alone
+    between = sum(lp.name == "child" for p in kids for lp in p.loops)
+    assert every + between == sum(len(assemble_loops(tables, s, timing, grams=False))
+                                  for s in order)
+    assert every > 0
+
+
+def test_cpe_pairs_counts_two_words_of_a_row_a_pair():
+    from fgc_backends.hls.units.cholesky import cpe_pairs
+
+    for w in range(0, 40):
+        assert cpe_pairs(w) == sum(-(-(w + 1 - i) // 2) for i in range(w))

@@ -170,3 +170,130 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
 }  // namespace fgc_units
 
 #endif  // FGC_BACKSUB_H
+
+// ---- The driver: back_substitute<CFG>() on two lanes (units/backsub.py's backsub_slots). Slot k
+// solves one step on lane BS_LANE[k] (its conditional loaded the slot before) while the next
+// step's conditional loads into the other lane, S xs summed on the way (cond_load); a step whose
+// separator needs the step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the
+// steps, -1 none). Per slot: the loaded step's separator solution in from DELTA (PORTS words a
+// cycle), the slot's backsub_lane<p> region (lane p's backsub_set<p> beside the other lane's
+// backsub_load), the solved step's frontal solution out into DELTA.
+//
+// Included a second time by the kernel with FGC_BACKSUB_DRIVER defined, inside its namespace
+// (fgc::, or fgc::les for the mixed design), after its schedule tables and the BS_* slot tables,
+// which these functions name: BS_SLOTS, BS_SOLVE, BS_LOAD, BS_LANE, STEP_F, STEP_W,
+// STEP_COL_BEGIN, STEP_COL, STEP_COND_OFF (tables); COND, DELTA, L (the linear solver's
+// scalar), MAX_F. CFG is the kernel's LesConfig (T, MAX_F, MAX_W, MAX_COLS, PARTIALS, the
+// latencies cond_load / cond_backsub read, MOVE_DEPTH: the copies' depth). The two lanes are
+// written out (each its own memories and RTL instance: backsub_set0 / backsub_set1, ...), the
+// number the plan prices (units/backsub.py's LANES).
+#if defined(FGC_BACKSUB_DRIVER) && !defined(FGC_BACKSUB_DRIVER_H)
+#define FGC_BACKSUB_DRIVER_H
+
+L BS_COND0[MAX_F * (MAX_W + 1)];  // lane 0's conditional (R | S | d)
+L BS_XS0[MAX_W + 1];  // its separator's solution
+L BS_X0[MAX_F];  // its frontal solution
+L BS_COND1[MAX_F * (MAX_W + 1)];  // lane 1's
+L BS_XS1[MAX_W + 1];
+L BS_X1[MAX_F];
+
+// Lane u's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load left
+// (f = 0: none this time).
+template <class CFG>
+void backsub_set0(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
+                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F]) {
+    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
+    fgc_units::cond_backsub<CFG>(cond, f, s, part, x);
+}
+
+template <class CFG>
+void backsub_set1(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
+                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F]) {
+    FGC_BRANCH();
+    fgc_units::cond_backsub<CFG>(cond, f, s, part, x);
+}
+
+// Lane u's load: a step's conditional from COND (at off) into the lane's buffer.
+template <class CFG>
+void backsub_load0(int off, int f, int s, const L xs[CFG::MAX_COLS],
+                   L cond[CFG::MAX_F * CFG::MAX_COLS], L part[2][CFG::PARTIALS][CFG::MAX_F]) {
+    FGC_BRANCH();
+    fgc_units::cond_load<CFG>(COND, off, f, s, xs, cond, part);
+}
+
+template <class CFG>
+void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS],
+                   L cond[CFG::MAX_F * CFG::MAX_COLS], L part[2][CFG::PARTIALS][CFG::MAX_F]) {
+    FGC_BRANCH();
+    fgc_units::cond_load<CFG>(COND, off, f, s, xs, cond, part);
+}
+
+// A slot whose solve is on lane 0: lane 0's cond_backsub beside lane 1's cond_load.
+template <class CFG>
+void backsub_lane0(const L cond0[CFG::MAX_F * CFG::MAX_COLS], int f0, int s0,
+                   const L part0[2][CFG::PARTIALS][CFG::MAX_F], L x0[CFG::MAX_F],
+                   int off, int f1, int s1, const L xs1[CFG::MAX_COLS],
+                   L cond1[CFG::MAX_F * CFG::MAX_COLS], L part1[2][CFG::PARTIALS][CFG::MAX_F]) {
+#pragma HLS DATAFLOW
+    backsub_set0<CFG>(cond0, f0, s0, part0, x0);
+    backsub_load1<CFG>(off, f1, s1, xs1, cond1, part1);
+}
+
+// A slot whose solve is on lane 1: lane 1's cond_backsub beside lane 0's cond_load.
+template <class CFG>
+void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
+                   const L part1[2][CFG::PARTIALS][CFG::MAX_F], L x1[CFG::MAX_F],
+                   int off, int f0, int s0, const L xs0[CFG::MAX_COLS],
+                   L cond0[CFG::MAX_F * CFG::MAX_COLS], L part0[2][CFG::PARTIALS][CFG::MAX_F]) {
+#pragma HLS DATAFLOW
+    backsub_set1<CFG>(cond1, f1, s1, part1, x1);
+    backsub_load0<CFG>(off, f0, s0, xs0, cond0, part0);
+}
+
+// Back-substitution root first, slot by slot, into DELTA.
+template <class CFG>
+void back_substitute() {
+    FGC_PHASE("backsub");
+    L bs_part0[2][CFG::PARTIALS][CFG::MAX_F];  // lane 0's partial sums of S xs (word lane, bank, row)
+#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=2
+    L bs_part1[2][CFG::PARTIALS][CFG::MAX_F];  // lane 1's
+#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=2
+    for (int k = 0; k < BS_SLOTS; ++k) {
+        const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = BS_LOAD[k];
+        const int sf = sv >= 0 ? STEP_F[sv] : 0, ssep = sv >= 0 ? STEP_W[sv] - STEP_F[sv] : 0;
+        const int scb = sv >= 0 ? STEP_COL_BEGIN[sv] : 0;
+        const int lf = ld >= 0 ? STEP_F[ld] : 0, lsep = ld >= 0 ? STEP_W[ld] - STEP_F[ld] : 0;
+        const int lcb = ld >= 0 ? STEP_COL_BEGIN[ld] : 0, off = ld >= 0 ? STEP_COND_OFF[ld] : 0;
+        for (int a = 0; a < lsep; a += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_W+1)/2
+#pragma HLS PIPELINE II=1
+            for (int h = 0; h < 2; ++h) {
+                if (a + h < lsep) {
+                    const L v = DELTA[STEP_COL[lcb + lf + a + h]];
+                    if (p == 0) BS_XS1[a + h] = v;
+                    else BS_XS0[a + h] = v;
+                }
+            }
+        }
+        FGC_CYCLES("backsub_copy", 0, "separator_in", (lsep + 1) / 2, 1, CFG::MOVE_DEPTH);
+        if (p == 0)
+            backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, off, lf, lsep, BS_XS1, BS_COND1,
+                               bs_part1);
+        else
+            backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, off, lf, lsep, BS_XS0, BS_COND0,
+                               bs_part0);
+        FGC_JOIN();
+        for (int c = 0; c < sf; c += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_F+1)/2
+#pragma HLS PIPELINE II=1
+            for (int h = 0; h < 2; ++h) {
+                if (c + h < sf) DELTA[STEP_COL[scb + c + h]] = p == 0 ? BS_X0[c + h] : BS_X1[c + h];
+            }
+        }
+        FGC_CYCLES("backsub_copy", 0, "solution_out", (sf + 1) / 2, 1, CFG::MOVE_DEPTH);
+    }
+}
+
+#endif  // FGC_BACKSUB_DRIVER

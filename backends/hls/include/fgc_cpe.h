@@ -3,26 +3,27 @@
 // pivots a round; between rounds the trailing matrix goes back to memory.
 //
 // Fixed code, configured by a struct of constants (CFG, see cpe_config_example below); the emitted
-// design (fgc_eliminate.h's cholesky_eliminate) assembles each step's [H | g] and calls
+// design (fgc_eliminate.h's cholesky_overlap) streams each step's [H | g] from its assembly into
 // cpe_step<CFG>.
 //
 // ---- interface ------------------------------------------------------------------------------
 //
 //   template <class CFG>
-//   void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
+//   void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src,
+//                 typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
 //                 typename CFG::T cond[CFG::N_COND], int c0,
 //                 typename CFG::T update[CFG::N_NF], int u0, bool* not_pd, bool* singular);
 //
 //   and cond_backsub<CFG> (fgc_backsub.h, included) for the step's back-substitution.
 //
-// In: the step's [H | g], w = f + s rows, row-major with w + 1 used columns: H[i][c] for
-// i <= c < w is the upper triangle of the frontal-and-separator Hessian (the sum of its factors'
-// Grams and its children's update matrices), H[i][w] the gradient; entries left of the diagonal
-// are not read. mu (Levenberg-Marquardt damping, 0 for Gauss-Newton) is added to the f frontal
-// diagonal entries as the first round reads them. H is left all zero: every word the cascade
-// reads it clears, so the next step's assembly adds into zeros without a clearing pass (the
-// assembly writes only words the cascade reads: the upper triangle and the gradient of rows
-// 0 ... w - 1). cpe_step holds the buffer the trailing matrix goes through between rounds.
+// In: src, the step's [H | g], w = f + s rows, each row from its diagonal to the gradient, two
+// words a stream word (cpe_pair; cpe_pairs(w) of them, none if the step does not fit: cpe_fits):
+// row i's columns i <= c < w are the upper triangle of the frontal-and-separator Hessian (the
+// sum of its factors' Grams and its children's update matrices), column w the gradient. mu
+// (Levenberg-Marquardt damping, 0 for Gauss-Newton) is added to the f frontal diagonal entries
+// as the first round reads them. H: all zero on entry, the buffer the trailing matrix goes
+// through between rounds (with Tb inside cpe_step), left all zero: every word a later round
+// reads it clears.
 //
 // Out:
 // - cond[c0 + i * (w + 1) + c], i < f, c >= i: the conditional, row i of the factor as the pivot
@@ -52,14 +53,15 @@
 //
 // Round r (pivots p0 = r N_CPE ... min(f, p0 + N_CPE) - 1) is one DATAFLOW region, cpe_round; the
 // rounds are a sequential loop in cpe_step around the region's one call site (two call sites
-// would be two copies of the cascade in hardware). Every round reads H; the drain writes the
-// rows a round leaves for the next into cpe_step's Tb, and a copy loop puts them back into H
-// before that round (multi-round steps only: f > N_CPE). In each region the feed is the only
-// process that touches H and the drain the only one that touches Tb:
+// would be two copies of the cascade in hardware). Round 0 reads src, every later round H; the
+// drain writes the rows a round leaves for the next into cpe_step's Tb, and a copy loop puts
+// them back into H before that round (multi-round steps only: f > N_CPE). In each region the
+// feed is the only process that touches src and H and the drain the only one that touches Tb:
 //
-//   cpe_feed      streams rows p0 ... w - 1 of Hin, row i from its diagonal to the gradient
-//                 (w + 1 - i words; + mu on the frontal diagonal in round 0), clearing each word
-//                 it reads, then a status word 0, into link[0];
+//   cpe_feed      streams rows p0 ... w - 1, row i from its diagonal to the gradient
+//                 (w + 1 - i words; + mu on the frontal diagonal in round 0), round 0's from src,
+//                 a later round's from Hin, clearing each word it reads, then a status word 0,
+//                 into link[0];
 //   cpe_tap<K>    K = 0 ... N_CPE - 1: passes link[K] on to tapped[K] and, when the word is its
 //                 CPE's pivot d, sends r = 1 / d into recip[K]: the divide runs beside the stream,
 //                 its latency hidden behind the pivot's row (the CPE needs r only after the row);
@@ -125,6 +127,18 @@ inline int cpe_words(int first, int w) {
     return m > 0 ? m * (m + 1) / 2 + m : 0;
 }
 
+// Round 0's input: a step's words in the feed's order, two a word of the stream (the assembly
+// reads two columns of a row a cycle): row i's words i, i + 1 | i + 2, i + 3 | ..., a row of an
+// odd count ending in a pair whose hi the feed never reads.
+template <class T>
+struct cpe_pair {
+    T lo, hi;
+};
+
+// Pairs of rows 0 ... w - 1 (row i: w + 1 - i words, ceil of half of them pairs): the sum of
+// floor(k / 2) over k = 3 ... w + 2, floor((w + 2)^2 / 4) - 1.
+inline int cpe_pairs(int w) { return (w + 2) * (w + 2) / 4 - 1; }
+
 // The cycles CPE K waits for r = 1 / d: the tap sends r Ld + 2 cycles after the pivot passes
 // it, and the CPE needs it after the pivot's row (row words w + 1 - p).
 template <class CFG>
@@ -134,22 +148,34 @@ inline int cpe_wait(int p, int w) {
 }
 
 // Stream rows p0 ... w - 1 (upper triangle and gradient; dmu added on the diagonal of rows
-// i < f), clearing each word read, then the status word.
+// i < f), then the status word: round 0 (first, p0 = 0) reads them from src, the pairs the
+// assembly streams in this order (fgc_eliminate.h's cholesky_assembler), a pair at a row's
+// even offsets; a later round reads them from Hin, the rows the round before left, clearing
+// each word read.
 template <class CFG>
-void cpe_feed(typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int w, int f,
+void cpe_feed(hls::stream<cpe_pair<typename CFG::T> >& src, bool first,
+              typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int w, int f,
               typename CFG::T dmu, hls::stream<typename CFG::T>& out) {
     typedef typename CFG::T T;
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int words = cpe_words(p0, w);
     int i = p0, c = p0;
-    // trip m (m + 1) / 2 + m, II 1, depth La + 2 (read, add, write); each word read then cleared
-    // (one read and one write a cycle: the two ports), a word no other iteration touches
+    cpe_pair<T> pair = {T(0), T(0)};
+    // trip m (m + 1) / 2 + m, II 1, depth La + 2 (read, add, write); a word of Hin read then
+    // cleared (one read and one write a cycle: the two ports), a word no other iteration touches
     for (int t = 0; t < words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=Hin inter false
-        const T x = Hin[i][c];
-        Hin[i][c] = T(0);
+        T x;
+        if (first) {
+            const bool even = ((c - i) & 1) == 0;
+            if (even) pair = src.read();
+            x = even ? pair.lo : pair.hi;
+        } else {
+            x = Hin[i][c];
+            Hin[i][c] = T(0);
+        }
         out.write(x + (c == i && i < f ? dmu : T(0)));
         if (c == w) {
             ++i;
@@ -312,8 +338,8 @@ void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
 
 // One round of N_CPE pivots from p0: the DATAFLOW region (see the top of the file).
 template <class CFG>
-void cpe_round(int p0, int w, int f, typename CFG::T dmu,
-               typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS],
+void cpe_round(hls::stream<cpe_pair<typename CFG::T> >& src, bool first, int p0, int w, int f,
+               typename CFG::T dmu, typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T cond[CFG::N_COND], int c0, typename CFG::T update[CFG::N_NF],
                int u0, typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F],
@@ -327,7 +353,7 @@ void cpe_round(int p0, int w, int f, typename CFG::T dmu,
 #pragma HLS STREAM variable=tapped depth=TAP_DEPTH
 #pragma HLS STREAM variable=recip depth=2
     FGC_REGION("cpe_round");
-    cpe_feed<CFG>(Hin, p0, w, f, dmu, link[0]);
+    cpe_feed<CFG>(src, first, Hin, p0, w, f, dmu, link[0]);
     cpe_cascade<CFG, 0>::run(p0, w, f, link, tapped, recip);
     cpe_drain<CFG>(link[CFG::N_CPE], p0, w, f, Hout, cond, c0, update, u0, dpiv, rmax, bad);
     FGC_DRAINED(link, CFG::N_CPE + 1);  // csim only (fgc_cycles.h)
@@ -337,31 +363,39 @@ void cpe_round(int p0, int w, int f, typename CFG::T dmu,
 
 // ---- the step ---------------------------------------------------------------------------------
 
+// Whether a step of f frontal and s separator columns fits the configuration (cpe_step computes
+// nothing and its source streams nothing otherwise).
 template <class CFG>
-void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
-              typename CFG::T cond[CFG::N_COND], int c0, typename CFG::T update[CFG::N_NF],
-              int u0, bool* not_pd, bool* singular) {
+inline bool cpe_fits(int f, int s) {
+    return f >= 0 && s >= 0 && f + s <= CFG::MAX_W && f <= CFG::MAX_F;
+}
+
+template <class CFG>
+void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS],
+              int f, int s, typename CFG::T mu, typename CFG::T cond[CFG::N_COND], int c0,
+              typename CFG::T update[CFG::N_NF], int u0, bool* not_pd, bool* singular) {
     typedef typename CFG::T T;
     enum { MAX_ROUNDS = (CFG::MAX_F + CFG::N_CPE - 1) / CFG::N_CPE };
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int w = f + s;
-    if (f < 0 || s < 0 || w > CFG::MAX_W || f > CFG::MAX_F) {
+    if (!cpe_fits<CFG>(f, s)) {
         *not_pd = true;  // outside the configuration: nothing is computed
         *singular = true;
         return;
     }
     bool npd = false;
-    // the trailing matrix between rounds: each round reads H (clearing it) and writes the
-    // rows it leaves for the next round into Tb, which go back into H before that round. One
-    // call site of the region (two would be two copies of the cascade in hardware)
+    // the trailing matrix between rounds: round 0 reads src, a later round H (clearing it);
+    // each writes the rows it leaves for the next round into Tb, which go back into H before
+    // that round. One call site of the region (two would be two copies of the cascade in
+    // hardware)
     T Tb[CFG::MAX_W][CFG::MAX_COLS];
     T dpiv[CFG::MAX_F], rmax[CFG::MAX_F];  // each pivot row's pivot and largest frontal |h|
     for (int r = 0; r * CFG::N_CPE < f; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_ROUNDS
         const int p0 = r * CFG::N_CPE;
         bool round_bad = false;
-        cpe_round<CFG>(p0, w, f, r == 0 ? mu : T(0), H, Tb, cond, c0, update, u0, dpiv, rmax,
-                       &round_bad);
+        cpe_round<CFG>(src, r == 0, p0, w, f, r == 0 ? mu : T(0), H, Tb, cond, c0, update, u0,
+                       dpiv, rmax, &round_bad);
         FGC_SEQUENTIAL();
         npd = npd || round_bad;
         // rows done ... w - 1 back into H for the next round, two words a cycle (the arrays'
@@ -385,14 +419,15 @@ void cpe_step(typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typena
         }
         FGC_CYCLES("cpe_step", 0, "back", (back + 1) / 2, 1, 2);
     }
-    // f == 0: no round; the update matrix is [H | g] as it came (read and cleared)
+    // f == 0: no round; the update matrix is [H | g] as it came from src, a word a cycle
     const int words = f == 0 ? cpe_words(0, w) : 0;
+    cpe_pair<T> pair = {T(0), T(0)};
     for (int t = 0, i = 0, c = 0; t < words; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=H inter false
-        update[u0 + i * (w + 1) + c] = H[i][c];
-        H[i][c] = T(0);
+        const bool even = ((c - i) & 1) == 0;
+        if (even) pair = src.read();
+        update[u0 + i * (w + 1) + c] = even ? pair.lo : pair.hi;
         if (c == w) {
             ++i;
             c = i;

@@ -86,6 +86,11 @@ inline void event(const char* name) { ++state().events[name]; }
 
 inline void branch() { state().marks.push_back(std::make_pair(state().records.size(), 'b')); }
 inline void join() { state().marks.push_back(std::make_pair(state().records.size(), 'j')); }
+// tasks (FGC_TASK / FGC_TASKS_JOIN): independent processes of one DATAFLOW region with no channel
+// between them (the incremental design's marginal beside its kept net), each a span of records
+// that may hold parallel groups and regions of its own
+inline void task() { state().marks.push_back(std::make_pair(state().records.size(), 'T')); }
+inline void tasks_join() { state().marks.push_back(std::make_pair(state().records.size(), 'U')); }
 
 inline void sequential() {
     state().current = -1;
@@ -210,6 +215,7 @@ inline long span_total(std::size_t from, std::size_t to) {
         }
     };
     for (const auto& m : s.marks) {
+        if (m.second != 'b' && m.second != 'j') continue;  // tasks: tasks_total
         if (m.second == 'b' ? (m.first < from || m.first >= to) : (m.first <= from || m.first > to))
             continue;
         if (m.second == 'b') {
@@ -235,8 +241,42 @@ inline long span_total(std::size_t from, std::size_t to) {
     return sum + total_range(at, to);
 }
 
+// Records [from, to) with task groups (FGC_TASK up to FGC_TASKS_JOIN): the stretches between
+// groups as span_total prices them; a group its slowest task (the processes share no channel, so
+// the region ends when the slowest one does).
+inline long tasks_total(std::size_t from, std::size_t to) {
+    const State& s = state();
+    long sum = 0, slow = 0;
+    std::size_t at = from, start = from;
+    bool open = false;
+    for (const auto& m : s.marks) {
+        if ((m.second != 'T' && m.second != 'U') || m.first < from || m.first > to) continue;
+        if (m.second == 'T') {
+            if (!open) {
+                sum += span_total(at, m.first);
+                open = true;
+                slow = 0;
+            } else {
+                const long c = span_total(start, m.first);
+                slow = c > slow ? c : slow;
+            }
+            start = m.first;
+        } else if (open) {
+            const long c = span_total(start, m.first);
+            sum += c > slow ? c : slow;
+            open = false;
+            at = m.first;
+        }
+    }
+    if (open) {
+        const long c = span_total(start, to);
+        return sum + (c > slow ? c : slow);
+    }
+    return sum + span_total(at, to);
+}
+
 // The whole log.
-inline long total() { return span_total(0, log().size()); }
+inline long total() { return tasks_total(0, log().size()); }
 
 // Per phase (FGC_PHASE), the cycles of its records: each run of consecutive records of one
 // phase priced as span_total prices it, the runs of a phase added up.
@@ -284,6 +324,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_SEQUENTIAL() ::fgc_cycles::sequential()
 #define FGC_BRANCH() ::fgc_cycles::branch()
 #define FGC_JOIN() ::fgc_cycles::join()
+#define FGC_TASK() ::fgc_cycles::task()
+#define FGC_TASKS_JOIN() ::fgc_cycles::tasks_join()
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) \
     ::fgc_cycles::wait(process, instance, on_process, on_instance, on_loop)
 #define FGC_DRAINED(streams, n) ::fgc_cycles::drained(streams, n, #streams)
@@ -297,6 +339,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_SEQUENTIAL() ((void)0)
 #define FGC_BRANCH() ((void)0)
 #define FGC_JOIN() ((void)0)
+#define FGC_TASK() ((void)0)
+#define FGC_TASKS_JOIN() ((void)0)
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) ((void)0)
 #define FGC_DRAINED(streams, n) ((void)0)
 #define FGC_PHASE(name) ((void)0)

@@ -2,11 +2,12 @@
 // (fgc_cpe.h's cascade, fgc_qr.h's QR unit): what goes into a step's unit and where its result
 // goes. Per step s of the schedule:
 //
-//   Cholesky: bool cholesky_eliminate<CFG>(s, mu)  [H | g] assembled from the step's factors'
-//             Grams and its children's update matrices into HF (which the cascade left
-//             zero), factored by the cascade, whose drain writes the conditional into COND
-//             and the update matrix into NF; false if singular.
-//             bool cholesky_eliminate_all<CFG>(mu)  every step in schedule order.
+//   Cholesky: bool cholesky_eliminate_all<CFG>(mu)  every step in schedule order: [H | g]
+//             assembled from the step's factors' Grams and its children's update matrices
+//             (while the cascade factors the step before: the cholesky_overlap region, two
+//             lanes HA[0], HA[1]), streamed into the cascade, whose drain writes the
+//             conditional into COND and the update matrix into NF[t % 2] (the t-th step's);
+//             false if singular.
 //   QR:       void qr_stack<CFG>(s, root_mu, bank)  the step's rows into a unit set's banks
 //             (its factors' [A | b], its children's new factors, sqrt(mu) I if CFG::LM).
 //             void qr_commit<CFG>(s, cond, update)  a unit set's result into COND and NF.
@@ -29,31 +30,34 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_NF_ROWS, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP,
 // FACTOR_A_OFF, FACTOR_GRAM_OFF, LEVEL_STEPS, LEVEL_BEGIN, N_LEVELS, N_STEPS (tables); AB, GRAM,
-// COND, NF, PORTS, fgc_sqrt and, for Cholesky, HF (memories). CFG is the kernel's LesConfig: T
-// (the linear solver's scalar), the unit's sizes, LM, the tables' largest trip counts (MAX_STEP_FACTORS,
-// MAX_CHILDREN, TRIP_*) and the (II, depth) of the plan's fill, move and scatter loops (QR:
-// UNIT_SETS, MAX_LEVEL_WIDTH and the (II, depth) ROOT_II, ROOT_DEPTH of sqrt(mu) too); cycles
-// to FGC_CYCLES as the plan prices them. Define FGC_ELIMINATE_CHOLESKY or FGC_ELIMINATE_QR
+// COND, NF (Cholesky: NF[2], two lanes), PORTS, fgc_sqrt and, for Cholesky, HA and HF
+// (memories). CFG is the kernel's LesConfig: T (the linear solver's scalar), the unit's sizes,
+// LM, the tables' largest trip counts (MAX_STEP_FACTORS, MAX_CHILDREN, TRIP_*) and the (II,
+// depth) of the plan's fill, move and scatter loops (QR: UNIT_SETS, MAX_LEVEL_WIDTH and the
+// (II, depth) ROOT_II, ROOT_DEPTH of sqrt(mu) too); cycles to FGC_CYCLES as the plan prices
+// them. Define FGC_ELIMINATE_CHOLESKY or FGC_ELIMINATE_QR
 // first: the other solver's memories do not exist.
 #ifndef FGC_ELIMINATE_H
 #define FGC_ELIMINATE_H
 
 #ifdef FGC_ELIMINATE_CHOLESKY
-// Step s: assemble, factor, store. False if not positive definite or a pivot is too small.
+// The assembly buffers HA[lane] (the kernel's memory, two lanes of a step's [H | g]): the t-th
+// step of the schedule is assembled into lane t % 2 while the cascade factors the (t - 1)-th
+// from the other lane's words. Word (i, c) is HA[lane][i][c >> 1][c & 1]: two banks (the last
+// dimension partitioned), even and odd columns, so the source reads two words of a row a cycle. A lane is all zero when its assembly starts: the source that
+// streams a step's words into the cascade clears each word it reads, and the assembly writes
+// only words it reads (the upper triangle and the gradient of rows < w).
+
+// Step s's factors' packed Grams into HA[lane], one loop per factor. The first is stored, not
+// added (the lane is all zero): two entries a cycle (GRAM's two ports read, the lane's two
+// ports written; within one factor every entry has its own address), its column map first
+// copied into registers (two reads of it an entry each). Each further factor's packed Gram
+// (H's lower triangle, then its gradient row) is added one entry a cycle: within one loop every
+// entry goes to its own address (the column maps are one-to-one), so no iteration waits for
+// another's add (II 1); a later loop's entry may meet the same address.
 template <class CFG>
-bool cholesky_eliminate(int s, typename CFG::T mu) {
-    FGC_PHASE("assemble");
-    const int w = STEP_W[s], f = STEP_F[s];
-    // HF is all zero here: the cascade clears every word it reads (fgc_cpe.h's cpe_feed), and
-    // these loops write only words it reads (the upper triangle and the gradient of rows < w)
-    // each further factor's packed Gram (H's lower triangle, then its gradient row) and each
-    // child's update matrix (upper triangle and reduced g), one entry a cycle += into HF: within one
-    // loop every entry goes to its own address (the column maps are one-to-one), so no
-    // iteration waits for another's add (II 1); a later loop's entry may meet the same address
-    // the step's first factor: HF is all zero, so its packed Gram is stored, not added: two
-    // entries a cycle (GRAM's two ports read, HF's two ports written; within one factor every
-    // entry has its own address), its column map first copied into registers (two reads of it
-    // an entry each)
+void cholesky_assemble_grams(int s, int lane) {
+    const int w = STEP_W[s];
     if (STEP_FACTOR_BEGIN[s] < STEP_FACTOR_BEGIN[s + 1]) {
         const int fac = STEP_FACTORS[STEP_FACTOR_BEGIN[s]];
         const int cb = FACTOR_COLMAP_BEGIN[fac];
@@ -67,17 +71,17 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
 #pragma HLS PIPELINE II=1
             map[c] = FACTOR_COLMAP[cb + c];
         }
-        map[d] = w;  // row d of the packed Gram: the gradient, column w of HF
+        map[d] = w;  // row d of the packed Gram: the gradient, column w of the lane
         FGC_CYCLES("assemble", 0, "map", d, CFG::MOVE_II, CFG::MOVE_DEPTH);
         for (int k = 0, p = 0, q = 0; k < n; k += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED/2
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HF inter false
+#pragma HLS DEPENDENCE variable=HA inter false
             for (int h = 0; h < 2; ++h) {
                 if (k + h < n) {
                     const int a = map[p], b = map[q];
                     const int lo = b < a ? b : a, hi = b < a ? a : b;
-                    HF[lo][hi] = GRAM[g0 + k + h];
+                    HA[lane][lo][hi >> 1][hi & 1] = GRAM[g0 + k + h];
                     if (q == p) {
                         q = 0;
                         ++p;
@@ -92,7 +96,6 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
     for (int e = STEP_FACTOR_BEGIN[s] + 1; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
         const int fac = STEP_FACTORS[e];
-
         const int cb = FACTOR_COLMAP_BEGIN[fac];
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
         const int g0 = FACTOR_GRAM_OFF[fac];
@@ -100,10 +103,10 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
         for (int k = 0, p = 0, q = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HF inter false
+#pragma HLS DEPENDENCE variable=HA inter false
             const int a = p < d ? FACTOR_COLMAP[cb + p] : w, b = FACTOR_COLMAP[cb + q];
             const int lo = b < a ? b : a, hi = b < a ? a : b;
-            HF[lo][hi] += GRAM[g0 + k];
+            HA[lane][lo][hi >> 1][hi & 1] += GRAM[g0 + k];
             if (q == p) {
                 q = 0;
                 ++p;
@@ -113,9 +116,20 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
         }
         FGC_CYCLES("assemble", 0, "gram", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
     }
+}
+
+// Step s's children's update matrices (upper triangle and reduced g) added into HA[lane], one
+// entry a cycle per child (each entry its own address within a child: II 1): the children c
+// whose position in the schedule has the parity `par` (odd[c]), from nf, the NF lane the steps
+// at those positions wrote (the t-th step's drain writes NF[t % 2]).
+template <class CFG>
+void cholesky_assemble_children(int s, int par, const bool odd[N_STEPS],
+                                const typename CFG::T nf[CFG::N_NF], int lane) {
+    const int w = STEP_W[s];
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
         const int c = STEP_CHILDREN[e];
+        if (int(odd[c]) != par) continue;  // in the other NF lane: added by the other pass
         const int sc = STEP_W[c] - STEP_F[c];
         const int mb = STEP_SEPMAP_BEGIN[c];
         const int u0 = STEP_NF_OFF[c];
@@ -123,10 +137,10 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
         for (int k = 0, a = 0, b = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HF inter false
+#pragma HLS DEPENDENCE variable=HA inter false
             const int ma = STEP_SEPMAP[mb + a], mbb = b < sc ? STEP_SEPMAP[mb + b] : w;
             const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
-            HF[lo][hi] += NF[u0 + a * (sc + 1) + b];
+            HA[lane][lo][hi >> 1][hi & 1] += nf[u0 + a * (sc + 1) + b];
             if (b == sc) {
                 ++a;
                 b = a;
@@ -136,21 +150,131 @@ bool cholesky_eliminate(int s, typename CFG::T mu) {
         }
         FGC_CYCLES("assemble", 0, "child", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
     }
-    bool not_pd = false, singular = false;
-    FGC_PHASE("cholesky");
-    // the conditional straight into COND and the update matrix into NF (the cascade's drain)
-    fgc_units::cpe_step<CFG>(HF, f, w - f, mu, COND, STEP_COND_OFF[s], NF, STEP_NF_OFF[s],
-                             &not_pd, &singular);
-    return !singular;
 }
 
-// Eliminate every step in schedule order, level by level.
+// The assembly's process of the cholesky_overlap region: step s's words from HA[lane] into the
+// cascade's stream in its feed's order (rows 0 ... w - 1, row i from its diagonal to the
+// gradient), two columns of a row a cycle (fgc_cpe.h's cpe_pair: columns i + 2j and
+// i + 2j + 1, one from each bank, the word past the gradient of a row of an odd count a zero
+// nobody writes), each cleared as it is read (a read and a write a cycle in each bank); then
+// step `next`'s factor Grams into the other lane (none if next < 0); then step kids's children
+// at positions of parity rd from nfr (NF[rd]) into HA[kid_lane] (none if kids < 0).
+template <class CFG>
+void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int rd,
+                        const bool odd[N_STEPS], const typename CFG::T nfr[CFG::N_NF],
+                        hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out) {
+    typedef typename CFG::T T;
+    enum { MAX_PAIRS = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 };
+    FGC_BRANCH();  // csim cycle counting only: beside the cascade
+    const int w = s >= 0 ? STEP_W[s] : 0;
+    const int pairs = s >= 0 && fgc_units::cpe_fits<CFG>(STEP_F[s], w - STEP_F[s])
+                          ? fgc_units::cpe_pairs(w) : 0;
+    // trip sum_i ceil((w + 1 - i) / 2), II 1, depth of a move
+    for (int t = 0, i = 0, c = 0; t < pairs; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_PAIRS
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=HA inter false
+        const int odd_c = c & 1;  // column c in bank 1: the pair's even column is c + 1
+        const int e = (c + odd_c) >> 1, o = c >> 1;  // the even column's and the odd one's word
+        const T v0 = HA[lane][i][e][0], v1 = HA[lane][i][o][1];
+        HA[lane][i][e][0] = T(0);
+        HA[lane][i][o][1] = T(0);
+        const fgc_units::cpe_pair<T> p = {odd_c ? v1 : v0, odd_c ? v0 : v1};
+        out.write(p);
+        if (c + 2 > w) {
+            ++i;
+            c = i;
+        } else {
+            c += 2;
+        }
+    }
+    FGC_CYCLES("assemble", 0, "source", pairs, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    if (next >= 0) cholesky_assemble_grams<CFG>(next, 1 - lane);
+    if (kids >= 0) cholesky_assemble_children<CFG>(kids, rd, odd, nfr, kid_lane);
+}
+
+// The cascade's process of the cholesky_overlap region: step s factored from the stream, the
+// conditional straight into COND and the update matrix into nfw (the cascade's drain).
+template <class CFG>
+void cholesky_cascade(int s, typename CFG::T mu,
+                      hls::stream<fgc_units::cpe_pair<typename CFG::T> >& src,
+                      typename CFG::T nfw[CFG::N_NF], bool* not_pd, bool* singular) {
+    FGC_BRANCH();
+    if (s < 0) return;  // a region of the assembler alone: nothing to factor
+    const int w = STEP_W[s], f = STEP_F[s];
+    fgc_units::cpe_step<CFG>(src, HF, f, w - f, mu, COND, STEP_COND_OFF[s], nfw, STEP_NF_OFF[s],
+                             not_pd, singular);
+}
+
+// One DATAFLOW region: step s streamed from HA[lane] through the cascade (its update matrix
+// into nfw) while the assembler puts step `next`'s factor Grams into the other lane and adds
+// step kids's children that nfr holds (cholesky_assembler). nfr and nfw are the two NF lanes:
+// the assembler reads one while the drain writes the other.
+template <class CFG>
+void cholesky_overlap(int s, int lane, int next, int kids, int kid_lane, int rd,
+                      typename CFG::T mu, const bool odd[N_STEPS],
+                      const typename CFG::T nfr[CFG::N_NF], typename CFG::T nfw[CFG::N_NF],
+                      bool* not_pd, bool* singular) {
+#pragma HLS DATAFLOW
+    // deep enough that the assembler never waits for the feed (it writes a pair a cycle, the
+    // feed reads a word a cycle): half a step's pairs and the feed's start
+    enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
+    hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal;
+#pragma HLS STREAM variable=frontal depth=DEPTH
+    cholesky_assembler<CFG>(s, lane, next, kids, kid_lane, rd, odd, nfr, frontal);
+    cholesky_cascade<CFG>(s, mu, frontal, nfw, not_pd, singular);
+    FGC_DRAINED(&frontal, 1);  // csim only (fgc_cycles.h)
+}
+
+// Eliminate every step in schedule order (LEVEL_STEPS): the t-th step on lane t % 2 of HA and
+// of NF (its drain writes NF[t % 2]). Passes of the one cholesky_overlap region (its two parity
+// call sites, one RTL copy): first the assembler alone puts the first step's Grams into lane 0;
+// then per step t
+//   - the assembler alone adds the step's children at positions of parity 1 - t % 2 (the step
+//     before among them: its update matrix was written in the region just run) from NF[1 - t %
+//     2] into lane t % 2;
+//   - the region: the step's cascade (its update matrix into NF[t % 2]) beside the assembler,
+//     which streams the step's words, puts step t + 1's Grams into the other lane and adds step
+//     t + 1's children at positions of parity 1 - t % 2 (all written before this region) from
+//     NF[1 - t % 2].
+// Every step runs even after one fails (a lane must not be left holding a step's words); false
+// if any step was not positive definite or had a pivot too small.
 template <class CFG>
 bool cholesky_eliminate_all(typename CFG::T mu) {
+#pragma HLS ARRAY_PARTITION variable=HA complete dim=4
+#pragma HLS ARRAY_PARTITION variable=NF complete dim=1
     FGC_EVENT("solve");
-    bool ok = true;
+    FGC_PHASE("assemble");
+    bool odd[N_STEPS];  // each step's position parity: the NF lane its drain writes
     for (int i = 0; i < N_STEPS; ++i) {
-        if (ok) ok = cholesky_eliminate<CFG>(LEVEL_STEPS[i], mu);
+#pragma HLS PIPELINE II=1
+        odd[LEVEL_STEPS[i]] = (i & 1) != 0;
+    }
+    FGC_CYCLES("assemble", 0, "lanes", N_STEPS, CFG::FILL_II, CFG::FILL_DEPTH);
+    bool ok = true;
+    // the two parity call sites below are exclusive and sequential: one RTL copy of the region
+    // serves both (UG1399, ALLOCATION of a function: one instance for its call sites)
+#pragma HLS ALLOCATION function instances=cholesky_overlap<CFG> limit=1
+    for (int j = 0; j <= 2 * N_STEPS; ++j) {
+        const int i = (j - 1) >> 1;  // the step (position) of the pass, -1 for the first
+        const bool region = j > 0 && (j & 1) == 0;  // its cascade; else the assembler alone
+        const int lane = i >= 0 ? (i & 1) : 1, rd = 1 - lane;
+        const int step = i >= 0 ? LEVEL_STEPS[i] : -1;
+        const int next = i + 1 < N_STEPS ? LEVEL_STEPS[i + 1] : -1;
+        const int s = region ? step : -1;
+        const int grams = region || j == 0 ? next : -1;
+        const int kids = region || j == 0 ? next : step, kid_lane = region || j == 0 ? rd : lane;
+        FGC_PHASE(region ? "cholesky" : "assemble");
+        bool not_pd = false, singular = false;
+        if (rd == 1) {
+            cholesky_overlap<CFG>(s, lane, grams, kids, kid_lane, 1, mu, odd, NF[1], NF[0],
+                                  &not_pd, &singular);
+        } else {
+            cholesky_overlap<CFG>(s, lane, grams, kids, kid_lane, 0, mu, odd, NF[0], NF[1],
+                                  &not_pd, &singular);
+        }
+        FGC_JOIN();
+        ok = ok && !singular;
     }
     return ok;
 }

@@ -8,14 +8,19 @@
 //   bool lm_step_test<CFG>(solved, mu, delta, g, out) out = {|delta|^2, 0.5 delta^T (g + mu delta)}
 //   T    lm_gradient_max<CFG>(g)                    the gradient's largest |entry|
 //   void lm_accept<CFG>(x, x_trial)                 x = x_trial
+//   void lm_top<CFG>(x_in, data, x_out, x, data_buf, errors, info)
+//                                                   the batch top's body: x and the data in,
+//                                                   fgc_lm::optimize<CFG>, x out
 //
 // CFG needs T, N_X, N_TANGENT, PARTIALS (>= ADD_LAT), ADD_LAT, MUL_LAT, MAXIMA (>= CMP_LAT),
 // CMP_LAT, ABS_LAT, and the (II, depth) of a move and of the decision: MOVE_II, MOVE_DEPTH,
-// DECISION_II, DECISION_DEPTH; the kernel's LmConfig has them all.
+// DECISION_II, DECISION_DEPTH; for the top N_DATA and fgc_lm.h's CFG (its rules and hooks); the
+// kernel's LmConfig has them all.
 #ifndef FGC_LM_UNITS_H
 #define FGC_LM_UNITS_H
 
 #include "fgc_cycles.h"
+#include "fgc_lm.h"
 
 namespace fgc_units {
 
@@ -108,6 +113,31 @@ void lm_accept(typename CFG::T x[CFG::N_X], const typename CFG::T x_trial[CFG::N
     FGC_EVENT("accept");
     FGC_PHASE("lm_accept");
     FGC_CYCLES("accept", 0, "accept", CFG::N_X, CFG::MOVE_II, CFG::MOVE_DEPTH);
+}
+
+template <class CFG>
+void lm_top(const typename CFG::T x_in[CFG::N_X], const typename CFG::T data[CFG::N_DATA],
+            typename CFG::T x_out[CFG::N_X], typename CFG::T x[CFG::N_X],
+            typename CFG::T data_buf[CFG::N_DATA], typename CFG::T errors[2], int info[3]) {
+    FGC_EVENT("call");
+    FGC_PHASE("setup");
+    for (int i = 0; i < CFG::N_X; ++i) {
+#pragma HLS PIPELINE II=1
+        x[i] = x_in[i];
+    }
+    for (int i = 0; i < CFG::N_DATA; ++i) {
+#pragma HLS PIPELINE II=1
+        data_buf[i] = data[i];
+    }
+    FGC_CYCLES("top", 0, "x_in", CFG::N_X, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    FGC_CYCLES("top", 0, "data_in", CFG::N_DATA, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    fgc_lm::optimize<CFG>(errors, info);
+    FGC_PHASE("setup");
+    for (int i = 0; i < CFG::N_X; ++i) {
+#pragma HLS PIPELINE II=1
+        x_out[i] = x[i];
+    }
+    FGC_CYCLES("top", 0, "x_out", CFG::N_X, CFG::MOVE_II, CFG::MOVE_DEPTH);
 }
 
 }  // namespace fgc_units

@@ -70,7 +70,7 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
     """The dataflow processes and streams the emitter prints for ``plan``: the linear solver's
     (the unit headers' regions: per QR unit set broadcast, qr_finish, n_u Update units,
     Evaluate and collect; for Cholesky the feed, per process element its tap and CPE, and the
-    drain),
+    drain, then fgc_eliminate.h's cholesky_overlap: the assembler beside the cascade),
     then back-substitution's (the kernel's ``backsub_lane<p>`` regions: lane p's
     ``backsub_set<p>`` beside the other lane's ``backsub_load``, :func:`backsub_units` lanes).
     Streams are the plan's stream channels; the back-substitution lanes have none (a solve
@@ -88,7 +88,8 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
             f"qr{s}_evaluate", f"qr{s}_collect"))
     else:
         procs = ("cpe_feed", *(p for i in range(plan.options.cpe)
-                               for p in (f"cpe_tap{i}", f"cpe{i}")), "cpe_drain")
+                               for p in (f"cpe_tap{i}", f"cpe{i}")), "cpe_drain",
+                 "cholesky_assembler", "cholesky_cascade")
     procs += ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
 

@@ -244,7 +244,7 @@ class UpdateModel:
             phases += self._linear_phases(first, last, self.damping)
         else:  # the Jacobian pass runs alongside the HGC, a region per block type (as emitted)
             phases = hgc_phases(view, self.les_timing, self.options.hgc_lanes,
-                                jacobian.processes)
+                                jacobian.processes, self.timing)
             phases += [ph for ph in self._linear_phases(first, last, self.damping)
                        if ph.name != "hgc"]
         phases.append(state_update_phase(view.variables, self.plan.ops,
@@ -494,7 +494,9 @@ class UpdateModel:
         else:
             view = self._view(first, last, inst)
             phases.append(Phase("hgc", False,
-                                tuple(hgc_loops(view, lt, self.options.hgc_lanes)), linear=True))
+                                tuple(hgc_loops(view, lt, self.options.hgc_lanes, self.timing, {
+                                    b: loop.ii for (b, mode), loop in self.factor_loop.items()
+                                    if mode == "jacobian"})), linear=True))
             phases.append(Phase("assemble", False, tuple(
                 Process(f"assemble{s}", "cpe", tuple(assemble_loops(tables, s, lt)))
                 for s in steps), linear=True))

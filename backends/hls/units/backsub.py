@@ -185,6 +185,6 @@ SPEC = UnitSpec(
     build=build, phases=("backsub", "trisolve"), header="fgc_backsub.h",
     constants=(("PARTIALS", "interleaved partial sums per row (the adder latency)"),
                ("MAX_F", "widest frontal block"), ("MAX_W", "widest step")),
-    printed_by="accel.cpp.jinja: back_substitute -> backsub_lane<p> -> fgc_backsub.h cond_backsub, "
-               "cond_load")
+    printed_by="accel.cpp.jinja: solve -> fgc_backsub.h back_substitute (the BS_* slot tables) -> "
+               "backsub_lane<p> -> cond_backsub, cond_load")
 

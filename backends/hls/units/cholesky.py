@@ -10,7 +10,7 @@ import math
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cost.operators import OperatorTable
-from fgc_backends.hls.plan.loops import _block_shape, kernel_dot, kernel_loop
+from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
@@ -67,15 +67,21 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     return loops
 
 
+def _gram_rows(block) -> dict[tuple[int, int], tuple[int, ...]]:
+    """The structurally non-zero entries (p, q), q <= p, of block ``block``'s Gram of [A | b]
+    in packed order, each with the whitened rows that touch both of its columns."""
+    kinds = tuple(NOISE_CODES[m.noise_kind] for m in block.members)
+    pattern = block_pattern(block, kinds, f"block {block.name!r}")
+    return {(p, q): rows for p in range(pattern.stride) for q in range(p + 1)
+            if (rows := pattern.gram_rows(p, q))}
+
+
 def gram_entries(block) -> tuple[tuple[int, int], ...]:
     """The (p, q), q <= p, of a block type's Gram of [A | b] that are structurally non-zero (some
     whitened row touches both columns), in packed order: what accel.cpp.jinja's
     ``gram_entries`` computes (its tables BLOCK<b>_GRAM_P / _Q); the rest of the instance's
     packed triangle is never written and keeps GRAM's initial zeros."""
-    kinds = tuple(NOISE_CODES[m.noise_kind] for m in block.members)
-    pattern = block_pattern(block, kinds, f"block {block.name!r}")
-    return tuple((p, q) for p in range(pattern.stride) for q in range(p + 1)
-                 if pattern.gram_rows(p, q))
+    return tuple(_gram_rows(block))
 
 
 def gram_ii(program, block: int, lanes: int) -> int:
@@ -90,56 +96,139 @@ def gram_ii(program, block: int, lanes: int) -> int:
     return -(-m // max(1, min(lanes, m)))
 
 
-def hgc_operators(program, lanes: int, partials: int) -> list[tuple[int, tuple]]:
-    """(block, operators) of each block type's HGC as accel.cpp.jinja's loops bind them: the
-    Gram entries' loop at :func:`gram_ii` (ceil(m / II) multipliers, ceil((m - 1) / II) adders
-    of its tree), the gradient scatter's adder and the finiteness check's adder and fold of
-    ``partials`` partial sums (partials - 1)."""
+def gram_lanes(program, block: int, lanes: int, jac_ii: dict | None
+               ) -> tuple[tuple[tuple[int, int], ...], tuple[tuple[int, int], ...], int]:
+    """How block ``block``'s Gram entries are split between gram_entries' two lanes: (lane A's
+    entries, lane B's entries, K). Lane A is the block's full width (its m rows); lane B, when
+    there is one (K > 0), the dot product over the first K rows only, for entries no other row
+    touches (the rest of the column pair is structurally zero: exact zeros its sum leaves out).
+    An entry of the last row (b^T A: the += into G) stays in lane A, so one adder serves G and
+    the += keep to one lane. A second lane is built only where the HGC is the slower process of
+    its linearize_<b> region: more than one instance at II 1, more entries than the datapath's
+    II an instance (``jac_ii``: block -> its Jacobian loop's II; None: no second lane), and K is
+    the fewest rows that bring the region's time an instance, max(lane A's entries, the
+    datapath's II), to its least (the eligible entries balanced between the lanes, lane A
+    keeping the rest in packed order)."""
+    b = program.blocks[block]
+    rows = _gram_rows(b)
+    entries = tuple(rows)
+    none = (entries, (), 0)
+    n = sum(1 for f in program.factors if f.block == block)
+    if jac_ii is None or n <= 1 or gram_ii(program, block, lanes) != 1:
+        return none
+    ii, m, last = jac_ii.get(block, 0), b.residual_dim, sum(b.variable_dims)
+    if len(entries) <= ii:
+        return none
+    best, best_k = max(len(entries), ii), 0
+    for k in range(1, m):
+        eligible = sum(1 for (p, q), r in rows.items() if p != last and r[-1] < k)
+        a = len(entries) - min(eligible, len(entries) // 2)
+        if max(a, ii) < best:
+            best, best_k = max(a, ii), k
+    if not best_k:
+        return none
+    eligible = [e for e, r in rows.items() if e[0] != last and r[-1] < best_k]
+    lane_b = set(eligible[:min(len(eligible), len(entries) // 2)])
+    return (tuple(e for e in entries if e not in lane_b),
+            tuple(e for e in entries if e in lane_b), best_k)
+
+
+def hgc_operators(program, lanes: int, jac_ii: dict | None = None
+                  ) -> list[tuple[int, tuple]]:
+    """(block, operators) of each block type's HGC as accel.cpp.jinja's gram_entries binds
+    them: its entries' loop at :func:`gram_ii`: lane A's ceil(m / II) multipliers and its
+    tree's m - 1 adds with the gradient's add (the Gram's last row into G), ceil(m / II)
+    adders; lane B's (:func:`gram_lanes`) K multipliers and K - 1 adders (the finiteness check
+    of the diagonal entries is a test of their exponent bits: no operator)."""
     out = []
     for i, b in enumerate(program.blocks):
         if not any(f.block == i for f in program.factors):
             continue
         m, ii = b.residual_dim, gram_ii(program, i, lanes)
-        out.append((i, (("add", -(-(m - 1) // ii) + 1 + 1 + (partials - 1)),
-                        ("mul", -(-m // ii)))))
+        k = gram_lanes(program, i, lanes, jac_ii)[2]
+        out.append((i, (("add", -(-m // ii) + max(0, k - 1)), ("mul", -(-m // ii) + k))))
     return out
 
 
-def hgc_loops(program, timing: dict, lanes: int = 32) -> list[Process]:
-    """Cholesky: linearize_all's HGC (reduce_<b>: per instance its m whitened rows from
-    evaluate_<b>'s stream, a row a cycle, into registers, the column map, the Gram's
-    structurally non-zero entries (:func:`gram_entries`) one every :func:`gram_ii` cycles,
-    each the m rows' products folded in a tree (depth Lm + La ceil(log2 m) + read and write)
-    into GRAM, the gradient scatter from GRAM (II 1) and the finiteness check over the diagonal
-    (interleaved partial sums: the dot-product rule)), after G is zeroed (the first process).
-    The structural zeros are never written: GRAM keeps its initial zeros there, so no pass
-    clears it."""
-    n_t = sum(v.dim for v in program.variables)
-    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", n_t, "fill", timing),))]
+def gram_depth(m: int, timing: dict, t_timing: dict | None = None) -> int:
+    """Depth of one Gram entry of a block of m rows (accel.cpp.jinja's gram_entries): the
+    multiply and the tree of ceil(log2 m) adds (L's latencies, ``timing``), at least the 6
+    cycles of the gradient's address (the instance's tables, the factor's variable, its tangent
+    offset: ROM reads one after another), then the gradient's add (T's adder, ``t_timing``;
+    G read beside the tree) and the reads and writes: max(Lm + La ceil(log2 m), 6) + La(T) + 3.
+    Lane B's shallower tree ends within it."""
     la = timing["acc"][0]
     lm = timing["acc"][1] - la
+    t_la = (t_timing or timing)["acc"][0]
+    tree = math.ceil(math.log2(m)) if m > 1 else 0
+    return max(lm + la * tree, 6) + t_la + 3
+
+
+def gram_steps(program, block: int, t_timing: dict, lanes: int = 32,
+               jac_ii: dict | None = None) -> int:
+    """Iterations of gram_entries' loop an instance of block ``block`` takes (its STEPS): the
+    entries of its larger lane (:func:`gram_lanes`); with more than one instance at least
+    m + 3 (the next instance's rows are read into the other bank in the first m, and a bank is
+    read no sooner than 3 iterations after it is written) and at least the span of lane A's
+    last-row entries (the += into G) plus the adder's latency and 3, so that two instances'
+    += into one entry of G (two factors of one variable) are a whole add apart."""
+    b = program.blocks[block]
+    lane_a, lane_b, _ = gram_lanes(program, block, lanes, jac_ii)
+    steps = max(len(lane_a), len(lane_b))
+    if sum(1 for f in program.factors if f.block == block) <= 1:
+        return steps
+    last = sum(b.variable_dims)  # the last row of [A | b]'s Gram: b^T A, then b^T b
+    g = [e for e, (p, q) in enumerate(lane_a) if p == last and q < last]
+    span = g[-1] - g[0] if g else 0
+    return max(steps, b.residual_dim + 3, span + t_timing["acc"][0] + 3)
+
+
+def jacobian_ii(jacobian) -> dict[int, int]:
+    """Block -> the II of its datapath's Jacobian loop, from the processes
+    ``factor_<b>_jacobian`` (the factor_jacobian phase's)."""
+    out = {}
+    for proc in jacobian:
+        head, _, tail = proc.name.partition("_")
+        idx = tail.removesuffix("_jacobian")
+        if head == "factor" and tail.endswith("_jacobian") and idx.isdigit() and proc.loops:
+            out[int(idx)] = proc.loops[0].ii
+    return out
+
+
+def hgc_loops(program, timing: dict, lanes: int = 32, t_timing: dict | None = None,
+              jac_ii: dict | None = None) -> list[Process]:
+    """Cholesky: linearize_all's HGC (reduce_<b>: instance 0's m whitened rows from
+    evaluate_<b>'s stream, a row a cycle, into registers, then one pipelined loop over all
+    instances (:func:`gram_steps` iterations each) of the Gram's structurally non-zero entries
+    (:func:`gram_entries`, in one or two lanes: :func:`gram_lanes`) one every :func:`gram_ii`
+    cycles, each the rows' products folded in a tree into GRAM and, for the last row (b^T A),
+    added into the gradient G in the same iteration, the diagonal's checked finite there too
+    (:func:`gram_depth`), the next instance's rows read alongside into the other bank), after
+    G is zeroed (the first process). The structural zeros are never written: GRAM keeps its
+    initial zeros there, so no pass clears it. ``timing``: L's kernel timing; ``t_timing``:
+    T's (the gradient's adder), L's when omitted; ``jac_ii``: :func:`gram_lanes`'."""
+    t_timing = t_timing or timing
+    n_t = sum(v.dim for v in program.variables)
+    procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", _ported(n_t), "fill",
+                                                                timing),))]
     for i, b in enumerate(program.blocks):
-        m, d, _, _ = _block_shape(b)
+        m, _, _, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
-        tree = math.ceil(math.log2(m)) if m > 1 else 0
-        loops = [kernel_loop("rows", m, "move", timing, n),
-                 kernel_loop("columns", d, "fill", timing, n),
-                 Loop("entries", len(gram_entries(b)), gram_ii(program, i, lanes),
-                      lm + la * tree + 2, n),
-                 kernel_loop("scatter", d, "scatter", timing, n),
-                 kernel_dot("check", d + 1, timing, n)]
+        loops = [kernel_loop("rows", m, "move", timing) if n else Loop("rows", 0, 1, 2),
+                 Loop("entries", n * gram_steps(program, i, t_timing, lanes, jac_ii),
+                      gram_ii(program, i, lanes), gram_depth(m, timing, t_timing))]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
 
 
-def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...]
-               ) -> list[Phase]:
+def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...],
+               t_timing: dict | None = None) -> list[Phase]:
     """linearize_all as emitted for Cholesky: ``hgc`` (G zeroed), then per block type b the
     DATAFLOW region linearize_<b> as phase ``hgc_level<b>`` (group ``hgc``): its datapath's
     Jacobian-mode instance loop (``jacobian``'s process factor_<b>_jacobian: whitened rows into
     AB and, a stream word a row, to the HGC) alongside reduce_<b> (:func:`hgc_loops`), so the
     region takes the slower of the two plus the other's fill."""
-    procs = hgc_loops(program, timing, lanes)
+    procs = hgc_loops(program, timing, lanes, t_timing, jacobian_ii(jacobian))
     jac = {p.name: p for p in jacobian}
     phases = [Phase("hgc", False, (procs[0],), linear=True)]
     for i, reduce in enumerate(procs[1:]):
@@ -148,30 +237,54 @@ def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...]
     return phases
 
 
-def assemble_loops(tables: dict, s: int, timing: dict) -> list[Loop]:
-    """Cholesky's eliminate(): into step s's [H | g] (all zero: the cascade clears every word
-    it reads, so no clearing pass), per factor its packed Gram's lower triangle and gradient
-    row (d (d + 1) / 2 + d entries), per child its update matrix's upper triangle and reduced g
-    (s (s + 1) / 2 + s), each one loop of ``+=`` into the table-addressed frontal matrix whose
-    entries all go to different addresses (``scatter``: II 1); the step's first factor is
-    stored, not added (HF is all zero), two entries a cycle (``move``) after its column map is
-    copied into registers (``move``, d)."""
+def assemble_loops(tables: dict, s: int, timing: dict, grams: bool = True,
+                   children: bool = True, odd: dict | None = None, par: int = 0) -> list[Loop]:
+    """The loops that assemble step s's [H | g] into its lane of HA (fgc_eliminate.h), which is
+    all zero (the source that streams a step into the cascade clears every word it reads, so
+    no clearing pass): ``grams`` (cholesky_assemble_grams) per factor its packed Gram's lower
+    triangle and gradient row (d (d + 1) / 2 + d entries), the step's first factor stored, not
+    added, two entries a cycle (``move``) after its column map is copied into registers
+    (``move``, d), each further one a loop of ``+=`` into the table-addressed frontal matrix
+    whose entries all go to different addresses (``scatter``: II 1); ``children``
+    (cholesky_assemble_children) per child its update matrix's upper triangle and reduced g
+    (s (s + 1) / 2 + s), a ``scatter`` loop each; with ``odd`` (step -> its position's parity in
+    the schedule) only the children of parity ``par`` (one NF lane's)."""
     loops = []
     fb = tables["STEP_FACTOR_BEGIN"]
-    for e in range(fb[s], fb[s + 1]):
+    for e in range(fb[s], fb[s + 1]) if grams else ():
         fac = tables["STEP_FACTORS"][e]
         d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
         n = d * (d + 1) // 2 + d
-        if e == fb[s]:  # HF all zero: stored, two entries a cycle, after its column map
+        if e == fb[s]:  # the lane all zero: stored, two entries a cycle, after its column map
             loops += [kernel_loop("map", d, "move", timing),
                       kernel_loop("gram_first", -(-n // 2), "move", timing)]
         else:
             loops.append(kernel_loop("gram", n, "scatter", timing))
     cb = tables["STEP_CHILD_BEGIN"]
-    for e in range(cb[s], cb[s + 1]):
+    for e in range(cb[s], cb[s + 1]) if children else ():
         c = tables["STEP_CHILDREN"][e]
+        if odd is not None and odd[c] != par:
+            continue
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
         loops.append(kernel_loop("child", sc * (sc + 1) // 2 + sc, "scatter", timing))
+    return loops
+
+
+def cpe_pairs(w: int) -> int:
+    """The stream words (fgc_cpe.h's cpe_pair, two of a row each) of a step's w rows: row i's
+    w + 1 - i words, two a word, rounded up (fgc_cpe.h's cpe_pairs)."""
+    return (w + 2) * (w + 2) // 4 - 1
+
+
+def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict) -> list[Loop]:
+    """fgc_eliminate.h's cholesky_assembler beside step s's cascade (s at an even position or
+    not: ``odd[s]``): step s's words streamed out of its lane two of a row a cycle
+    (:func:`cpe_pairs`, ``move``: each bank read and cleared), then step ``nxt``'s factor Grams
+    into the other lane and its children at positions of the other parity than s's (written
+    before this region; :func:`assemble_loops`), none if nxt < 0."""
+    loops = [kernel_loop("source", cpe_pairs(tables["STEP_W"][s]), "move", timing)]
+    if nxt >= 0:
+        loops += assemble_loops(tables, nxt, timing, odd=odd, par=1 - odd[s])
     return loops
 
 
@@ -211,14 +324,15 @@ def build(ctx) -> None:
         macs += b.residual_dim * (cols * (cols + 1) // 2 + cols)
     if opts.hessian_storage == "frontal":  # as emitted: reduce_<b>'s loops (hgc_loops)
         # one Gram unit per block type (the template instance its reduce_<b> calls)
-        for i, unit_ops in hgc_operators(program, opts.hgc_lanes, ops.add.latency):
-            ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
         # the datapaths' Jacobian pass becomes part of linearize_<b>'s regions (evaluate_<b>
         # alongside its HGC): its phase is replaced, in place, by hgc_phases
         at = next(k for k, (_, ph) in enumerate(ctx.phases) if ph.name == "factor_jacobian")
         slot, jacobian = ctx.phases[at]
+        jac_ii = jacobian_ii(jacobian.processes)
+        for i, unit_ops in hgc_operators(program, opts.hgc_lanes, jac_ii):
+            ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
         ctx.phases[at:at + 1] = [(slot, ph) for ph in hgc_phases(
-            program, ctx.les_timing, opts.hgc_lanes, jacobian.processes)]
+            program, ctx.les_timing, opts.hgc_lanes, jacobian.processes, ctx.timing)]
         for i, b in enumerate(program.blocks):  # the row stream (a row a word) and registers
             m, _, padded, _ = _block_shape(b)
             ctx.memories.append(Memory(f"gram_rows_{i}", m * padded, ops.word_bits, 1))
@@ -258,10 +372,11 @@ def build(ctx) -> None:
 
 
 def _frontal(ctx) -> None:
-    """The emitted multifrontal Cholesky: per elimination step (one after another) its frontal
-    [H | g] assembled into HF (left zero by the step before), then fgc_cpe.h's cpe_step (feed ->
-    #CPE taps and CPEs -> drain per round of #CPE pivots), whose drain writes the conditional
-    into COND and the update matrix into NF (back-substitution step by step is
+    """The emitted multifrontal Cholesky: per elimination step its frontal [H | g] streamed from
+    its lane of HA into fgc_cpe.h's cpe_step (feed -> #CPE taps and CPEs -> drain per round of
+    #CPE pivots), whose drain writes the conditional into COND and the update matrix into its NF
+    lane, while the assembler fills the other HA lane with the next step's Grams and children
+    (fgc_eliminate.h's cholesky_overlap; back-substitution step by step is
     :mod:`fgc_backends.hls.units.backsub`'s)."""
     program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
     sizes = ctx.sizes
@@ -282,24 +397,47 @@ def _frontal(ctx) -> None:
     # the check's threshold multiplier: one operator of each a loop (cpe_step's sequential code)
     ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
                           (("add", 1), ("mul", 2), ("div", 1))))
-    # fgc_eliminate.h's cholesky_eliminate: the Grams' and the children's loops, each a
-    # pipelined HF += at II 1: an adder each
+    # fgc_eliminate.h's assembly: the Grams' and the children's loops, each a pipelined
+    # HA += at II 1: an adder each (cholesky_assemble_grams has one call site, the assembler's:
+    # the first step's Grams too, in a first region with no step to factor)
     ctx.units.append(Unit("assemble", "the step's [H | g] from Grams and update matrices", 1,
                           (("add", 2),)))
-    loops = []
-    for st in program.schedule.steps:
-        loops += cpe_step_loops(st.frontal_dim, st.separator_dim, c, ops, name=f"s{st.index}")
     tables, timing = ctx.tables, ctx.les_timing
-    # eliminate(s): [H | g] assembled from GRAM and the children's update matrices, then the
-    # cascade, which stores the conditional into COND and the update matrix into NF
-    ctx.add_phase("solve", Phase("assemble", False, tuple(
-        Process(f"assemble{st.index}", "cpe", tuple(assemble_loops(tables, st.index, timing)))
-        for st in program.schedule.steps), linear=True))
-    ctx.add_phase("solve", Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
-                                 linear=True))
+    order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
+    odd = {s: t % 2 for t, s in enumerate(order)}
+    steps = {st.index: st for st in program.schedule.steps}
+    # cholesky_eliminate_all (passes of one cholesky_overlap region): each step's position
+    # parity (the NF lane its drain writes), the first step's Grams (the assembler alone), then
+    # per step t its children at positions of the other parity than t's (the step before among
+    # them: the assembler alone, phase assemble) and the region (phase cholesky_level<t>): the
+    # cascade on the step (cpe_step_loops) beside the assembler (its words streamed out, the
+    # next step's Grams and its children of t's parity), the slower of the two plus the other's
+    # fill
+    first = [Process("assemble_first", "cpe", tuple(assemble_loops(
+        tables, order[0], timing, odd=odd, par=0)))] if order else []
+    ctx.add_phase("solve", Phase("assemble", False, (
+        Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),
+        *first, *(Process(f"assemble{s}", "cpe", tuple(assemble_loops(
+            tables, s, timing, grams=False, odd=odd, par=1 - odd[s]))) for s in order)),
+        linear=True))
+    # cholesky_overlap's stream, a pair of words wide, deep enough that the assembler (a pair a
+    # cycle) never waits for the feed (a word a cycle): half a step's pairs and the feed's start
+    mw = sizes["MAX_W"]
+    ctx.channels.append(Channel("frontal", "stream", mw * (mw + 4) // 8 + ops.add.latency + 8,
+                                2 * ops.word_bits, "cholesky_assembler", "cpe_feed"))
+    for t, s in enumerate(order):
+        nxt = order[t + 1] if t + 1 < len(order) else -1
+        st = steps[s]
+        ctx.add_phase("solve", Phase(f"cholesky_level{t}", True, (
+            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
+                st.frontal_dim, st.separator_dim, c, ops, name=f"s{s}"))),
+            Process(f"assembler{s}", "cpe", tuple(assembler_loops(
+                tables, s, nxt, timing, odd)))), linear=True))
     # accel.cpp.jinja's GRAM and HF (the frontal matrix of one step at a time) and cpe_step's
     # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF)
     ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
+    ctx.memories.append(Memory("assembly", 2 * sizes["MAX_W"] * cols, ops.word_bits, 1))
+    ctx.memories.append(Memory("nf_lane1", sizes["N_NF"], ops.word_bits, 1))  # NF's second lane
     ctx.memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
     ctx.memories.append(Memory("trailing", sizes["MAX_W"] * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)

@@ -33,7 +33,8 @@ def gradient_loops(program, timing: dict) -> list[Process]:
     ⌈log₂ T_PARTIALS⌉-level tree in its depth)."""
     la = timing["acc"][0]  # T_PARTIALS: the adder's latency
     n_t = sum(v.dim for v in program.variables)
-    procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", n_t, "fill", timing),))]
+    procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", _ported(n_t), "fill",
+                                                                timing),))]
     for i, b in enumerate(program.blocks):
         m, d, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)

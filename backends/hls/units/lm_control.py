@@ -117,6 +117,6 @@ SPEC = UnitSpec(
                ("PARTIALS", "interleaved partial sums (the adder latency)"),
                ("MAXIMA", "interleaved partial maxima (the compare latency)"),
                ("MOVE_II", "the accepted state's copy"), ("DECISION_II", "the scalar decision")),
-    printed_by="accel.cpp.jinja: LmConfig's hooks -> fgc_lm.h optimize -> fgc_lm_units.h; "
-    "rounding_noise_all and the top's copies are kernel code")
+    printed_by="accel.cpp.jinja: the top -> fgc_lm_units.h lm_top (the copies) -> fgc_lm.h "
+    "optimize -> LmConfig's hooks -> fgc_lm_units.h; rounding_noise_all is kernel code")
 

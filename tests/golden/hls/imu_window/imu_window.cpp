@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   46 processes, 61 streams (cpe=20)
+//   48 processes, 62 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
 //   process cpe0
@@ -53,6 +53,8 @@
 //   process cpe_tap19
 //   process cpe19
 //   process cpe_drain
+//   process cholesky_assembler
+//   process cholesky_cascade
 //   process backsub_set0
 //   process backsub_load1
 //   process backsub_set1
@@ -118,6 +120,7 @@
 //   stream cpe_recip18 depth=2: cpe_tap18 -> cpe18
 //   stream cpe_tapped19 depth=48: cpe_tap19 -> cpe19
 //   stream cpe_recip19 depth=2: cpe_tap19 -> cpe19
+//   stream frontal depth=139: cholesky_assembler -> cpe_feed
 #include "imu_window.h"
 
 #include "hls_stream.h"
@@ -347,7 +350,7 @@ T G[N_TANGENT];    // gradient A^T b
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
 L COND[N_COND];    // conditionals (R | d), one block per elimination step
-L NF[N_NF];        // update matrices passed to the parent step
+L NF[2][N_NF];     // update matrices passed to the parent step: the t-th step's in NF[t % 2] (the assembly reads one lane while the cascade writes the other)
 L GRAM[N_GRAM] = {};  // per factor instance: packed lower triangle of [A | b]^T [A | b] (structural zeros never written)
 
 // ---- the rest of the DSL's functions (fgc/frontend/functions.py), beside the header's wrappers
@@ -367,9 +370,9 @@ inline T fgc_guarded_quotient(T a, T b, T g, T t, T f) { return g > t ? T(a / b)
 void factor_0(const T in[42], const T dat[193],
               T raw[480]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=8
+#pragma HLS ALLOCATION operation instances=fmul limit=11
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
     const T t2 = in[32] - dat[65];
@@ -1498,9 +1501,9 @@ void factor_0(const T in[42], const T dat[193],
 void factor_cost_0(const T in[42], const T dat[193],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=5
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
     const T t2 = in[32] - dat[65];
@@ -1868,7 +1871,7 @@ void factor_cost_1(const T in[12], const T dat[13],
                    T half[1]) {
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
@@ -1941,8 +1944,7 @@ void factor_cost_1(const T in[12], const T dat[13],
 void factor_2(const T in[3], const T dat[4],
               T raw[12]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=3
+#pragma HLS ALLOCATION operation instances=fadd limit=1
     raw[0] = T(1);
     raw[3] = -dat[0] + in[0];
     raw[5] = T(1);
@@ -1954,8 +1956,8 @@ void factor_2(const T in[3], const T dat[4],
 void factor_cost_2(const T in[3], const T dat[4],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=2
+#pragma HLS ALLOCATION operation instances=fmul limit=2
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
@@ -1969,8 +1971,7 @@ void factor_cost_2(const T in[3], const T dat[4],
 void factor_3(const T in[6], const T dat[7],
               T raw[48]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=1
     raw[0] = T(1);
     raw[6] = -dat[0] + in[0];
     raw[9] = T(1);
@@ -2061,53 +2062,113 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// HGC (paper B): one instance's Gram of [A | b] entry by entry, the structurally non-zero
-// entries (p, q), q <= p, of its packed lower triangle (the block's tables P, Q) one every GII
-// cycles, each the dot product of columns p and q over the instance's ROWS rows: ROWS products
-// folded in a binary tree (La ceil(log2 ROWS) deep), so at II GII Vitis binds
-// ceil(ROWS / GII) multipliers and ceil((ROWS - 1) / GII) adders (the plan's hgc_<b>), and no
-// accumulator is carried from one entry to the next. The rows are partitioned a row a bank by
-// the caller (two reads of each bank an entry: II 1 is legal). Written into GRAM at
-// g0 + p (p + 1) / 2 + q, one word a cycle; entries left out are structural zeros, never
-// written: GRAM keeps its initial zeros there. One template instance per block type.
-template <int PADDED, int ROWS, int ENTRIES, int GII>
-void gram_entries(const T ab[ROWS * PADDED], const int P[ENTRIES], const int Q[ENTRIES], int g0) {
-    for (int e = 0; e < ENTRIES; ++e) {
-#pragma HLS PIPELINE II=GII
-        const int p = P[e], q = Q[e];
-        L prod[ROWS];
-        for (int r = 0; r < ROWS; ++r) prod[r] = L(ab[r * PADDED + p]) * L(ab[r * PADDED + q]);
-        GRAM[g0 + p * (p + 1) / 2 + q] = fgc_units::fold_partials<L, ROWS>(prod);
-    }
-}
-
-// From one instance's packed Gram of [A | b] in GRAM at g0 (row COLS - 1 is b^T A, then b^T b):
-// the local gradient A^T b (column c into G[col[c]]: distinct entries, II 1). False if the
-// Gram's diagonal (summed into L_PARTIALS interleaved partial sums) is not finite.
-template <int COLS>
-bool gradient_from_gram(int g0, const int col[COLS - 1]) {
-    for (int c = 0; c < COLS - 1; ++c) {
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=G inter false
-        G[col[c]] += T(GRAM[g0 + (COLS - 1) * COLS / 2 + c]);
-    }
-    L part[L_PARTIALS];
-#pragma HLS ARRAY_PARTITION variable=part complete
-    for (int t = 0; t < L_PARTIALS; ++t) {
-#pragma HLS UNROLL
-        part[t] = L(0);
-    }
-    for (int c = 0; c < COLS; ++c) {
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=part inter false
-        part[c % L_PARTIALS] += GRAM[g0 + c * (c + 1) / 2 + c];
-    }
-    return fgc_isfinite(T(fgc_units::fold_partials<L, L_PARTIALS>(part)));
-}
-
 // One whitened row of a block type as evaluate_<b> streams it to its HGC (reduce_<b>) in the
 // linearize_<b> region: a word per column of the widest block type's padded row.
 struct GramRow { T word[32]; };
+
+// HGC (paper B): a block type's Grams of [A | b], instance after instance, as one pipelined
+// loop of N x STEPS iterations (no drain between instances). Iteration (i, e): entry e of
+// instance i's packed lower triangle, the structurally non-zero entries (p, q), q <= p (the
+// block's tables P, Q), one every GII cycles, each the dot product of columns p and q over the
+// instance's ROWS rows (gram_entry: ROWS products folded in a binary tree, La ceil(log2 ROWS)
+// deep, so at II GII Vitis binds ceil(ROWS / GII) multipliers and ceil((ROWS - 1) / GII)
+// adders: the plan's hgc_<b>; no accumulator is carried from one entry to the next). Written
+// into GRAM at FACTOR_GRAM_OFF[f] + p (p + 1) / 2 + q (entries left out are structural zeros,
+// never written: GRAM keeps its initial zeros there); an entry of the last row (b^T A, column
+// q < COLS - 1) also through one adder into the gradient G at its tangent entry (VAR_T_OFF of
+// the factor's variable CV[q], plus CO[q]); a diagonal entry (p == q, a column's squared norm)
+// checked finite (an infinite or NaN entry of [A | b] makes its column's diagonal so: no
+// operator). The same iteration's first ROWS e read the next instance's rows from the stream
+// into the other bank of `ab` (two banks of registers, partitioned completely by the caller: a
+// whole row written, two columns of every row read a cycle), so an instance costs its STEPS
+// iterations: its entries, at least ROWS + 3 (a bank is read no sooner than 3 iterations after
+// it is written: the DEPENDENCE on ab is false) and at least the distance that keeps two
+// instances' += into G (which may share a variable) the adder's latency apart (the plan's
+// gram_steps: the DEPENDENCE on G is false; every entry of every instance has its own word of
+// GRAM, so none on GRAM either). The caller has read instance 0's rows into bank 0.
+// gram_entries_two adds a second lane of K multipliers (lane B: entries PB, QB, over the first
+// K rows, the only rows that touch both their columns) beside the first, two entries an
+// iteration (GRAM's two ports, one write each); G's += stay in the first lane.
+template <int PADDED, int ROWS, int K>
+L gram_entry(const T bank[ROWS * PADDED], int p, int q) {
+#pragma HLS INLINE
+    L prod[K];
+    for (int r = 0; r < K; ++r) prod[r] = L(bank[r * PADDED + p]) * L(bank[r * PADDED + q]);
+    return fgc_units::fold_partials<L, K>(prod);
+}
+
+template <int ROWS, int COLS, int N>
+void gram_store(const int INST[N], const int CV[COLS - 1], const int CO[COLS - 1], int i, int p,
+                int q, L v, bool& finite) {
+#pragma HLS INLINE
+    const int f = INST[i];
+    GRAM[FACTOR_GRAM_OFF[f] + p * (p + 1) / 2 + q] = v;
+    if (p == q) finite = finite && fgc_isfinite(T(v));
+    if (p == COLS - 1 && q < COLS - 1) G[VAR_T_OFF[FACTOR_VARS[FACTOR_VAR_BEGIN[f] + CV[q]]] + CO[q]] += T(v);
+}
+
+template <int PADDED, int ROWS>
+void gram_next_row(hls::stream<GramRow>& rows, T bank[ROWS * PADDED], int r) {
+#pragma HLS INLINE
+    const GramRow row = rows.read();
+    for (int c = 0; c < PADDED; ++c) bank[r * PADDED + c] = row.word[c];
+}
+
+template <int PADDED, int ROWS, int COLS, int ENTRIES, int STEPS, int N, int GII>
+bool gram_entries(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const int INST[N],
+                  const int P[ENTRIES], const int Q[ENTRIES], const int CV[COLS - 1],
+                  const int CO[COLS - 1]) {
+    bool finite = true;
+    int i = 0, e = 0;
+    for (int t = 0; t < N * STEPS; ++t) {
+#pragma HLS PIPELINE II=GII
+#pragma HLS DEPENDENCE variable=G inter false
+#pragma HLS DEPENDENCE variable=GRAM inter false
+#pragma HLS DEPENDENCE variable=ab inter false
+        const int cur = i % 2;
+        if (e < ROWS && i + 1 < N) gram_next_row<PADDED, ROWS>(rows, ab[1 - cur], e);
+        if (e < ENTRIES) {
+            const int p = P[e], q = Q[e];
+            gram_store<ROWS, COLS, N>(INST, CV, CO, i, p, q, gram_entry<PADDED, ROWS, ROWS>(ab[cur], p, q), finite);
+        }
+        if (++e == STEPS) {
+            e = 0;
+            ++i;
+        }
+    }
+    return finite;
+}
+
+template <int PADDED, int ROWS, int COLS, int ENTRIES, int ENTRIES_B, int K, int STEPS, int N>
+bool gram_entries_two(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const int INST[N],
+                      const int P[ENTRIES], const int Q[ENTRIES], const int PB[ENTRIES_B],
+                      const int QB[ENTRIES_B], const int CV[COLS - 1], const int CO[COLS - 1]) {
+    bool finite = true;
+    int i = 0, e = 0;
+    for (int t = 0; t < N * STEPS; ++t) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=G inter false
+#pragma HLS DEPENDENCE variable=GRAM inter false
+#pragma HLS DEPENDENCE variable=ab inter false
+        const int cur = i % 2;
+        if (e < ROWS && i + 1 < N) gram_next_row<PADDED, ROWS>(rows, ab[1 - cur], e);
+        if (e < ENTRIES) {
+            const int p = P[e], q = Q[e];
+            gram_store<ROWS, COLS, N>(INST, CV, CO, i, p, q, gram_entry<PADDED, ROWS, ROWS>(ab[cur], p, q), finite);
+        }
+        if (e < ENTRIES_B) {  // lane B: never the last row, so never into G
+            const int p = PB[e], q = QB[e];
+            const L v = gram_entry<PADDED, ROWS, K>(ab[cur], p, q);
+            GRAM[FACTOR_GRAM_OFF[INST[i]] + p * (p + 1) / 2 + q] = v;
+            if (p == q) finite = finite && fgc_isfinite(T(v));
+        }
+        if (++e == STEPS) {
+            e = 0;
+            ++i;
+        }
+    }
+    return finite;
+}
 
 // block 0: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_0(const T x[N_X], int f, T in[42], T dat[193]) {
@@ -2393,7 +2454,44 @@ void load_rows_0(int f, T ab[480]) {
 }
 
 // block 0: the (p, q) of its Gram's structurally non-zero entries, q <= p, in packed order (gram_entries)
-const int BLOCK0_GRAM_P[496] = {
+const int BLOCK0_GRAM_P[248] = {
+    18, 19, 19, 20, 20, 20, 21, 21, 21, 21, 22, 22, 22, 22, 22, 22,
+    22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 23, 23, 23, 23,
+    23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23,
+    23, 23, 23, 23, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24,
+    24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 25, 25, 25,
+    25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25,
+    25, 25, 25, 25, 25, 25, 25, 26, 26, 26, 26, 26, 26, 26, 26, 26,
+    26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26,
+    26, 26, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27,
+    27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 28, 28,
+    28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28,
+    28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 29, 29, 29, 29, 29,
+    29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29,
+    29, 29, 29, 29, 29, 29, 29, 29, 29, 30, 30, 30, 30, 30, 30, 30,
+    30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30,
+    30, 30, 30, 30, 30, 30, 30, 30,
+};
+const int BLOCK0_GRAM_Q[248] = {
+    18, 18, 19, 18, 19, 20, 18, 19, 20, 21, 5, 6, 7, 8, 9, 10,
+    11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 0, 1, 2, 3,
+    4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19,
+    20, 21, 22, 23, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
+    12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 0, 1, 2,
+    3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18,
+    19, 20, 21, 22, 23, 24, 25, 0, 1, 2, 3, 4, 5, 6, 7, 8,
+    9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24,
+    25, 26, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13,
+    14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 0, 1,
+    2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17,
+    18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 0, 1, 2, 3, 4,
+    5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20,
+    21, 22, 23, 24, 25, 26, 27, 28, 29, 0, 1, 2, 3, 4, 5, 6,
+    7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22,
+    23, 24, 25, 26, 27, 28, 29, 30,
+};
+// block 0: the entries of lane B (gram_entries_two: the first 9 rows touch both their columns, no other)
+const int BLOCK0_GRAM_PB[248] = {
     0, 1, 1, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 5,
     5, 5, 5, 5, 5, 6, 6, 6, 6, 6, 6, 6, 7, 7, 7, 7,
     7, 7, 7, 7, 8, 8, 8, 8, 8, 8, 8, 8, 8, 9, 9, 9,
@@ -2405,28 +2503,13 @@ const int BLOCK0_GRAM_P[496] = {
     15, 15, 15, 15, 15, 15, 15, 15, 16, 16, 16, 16, 16, 16, 16, 16,
     16, 16, 16, 16, 16, 16, 16, 16, 16, 17, 17, 17, 17, 17, 17, 17,
     17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 18, 18, 18, 18, 18,
-    18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 19, 19,
-    19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19,
-    19, 19, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20,
-    20, 20, 20, 20, 20, 20, 20, 21, 21, 21, 21, 21, 21, 21, 21, 21,
-    21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 22, 22, 22,
-    22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22, 22,
-    22, 22, 22, 22, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23,
-    23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 24, 24, 24, 24,
-    24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24, 24,
-    24, 24, 24, 24, 24, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25,
-    25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 25, 26,
-    26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 26,
-    26, 26, 26, 26, 26, 26, 26, 26, 26, 26, 27, 27, 27, 27, 27, 27,
-    27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27, 27,
-    27, 27, 27, 27, 27, 27, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28,
-    28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28, 28,
-    28, 28, 28, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29,
-    29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29,
-    29, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30,
-    30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30, 30,
+    18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 19, 19, 19,
+    19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 20,
+    20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20, 20,
+    20, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21,
+    21, 21, 21, 22, 22, 22, 22, 22,
 };
-const int BLOCK0_GRAM_Q[496] = {
+const int BLOCK0_GRAM_QB[248] = {
     0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4, 0,
     1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6, 0, 1, 2, 3,
     4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1, 2,
@@ -2438,63 +2521,38 @@ const int BLOCK0_GRAM_Q[496] = {
     8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7,
     8, 9, 10, 11, 12, 13, 14, 15, 16, 0, 1, 2, 3, 4, 5, 6,
     7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 0, 1, 2, 3, 4,
-    5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 0, 1,
-    2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17,
-    18, 19, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13,
-    14, 15, 16, 17, 18, 19, 20, 0, 1, 2, 3, 4, 5, 6, 7, 8,
-    9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 0, 1, 2,
-    3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18,
-    19, 20, 21, 22, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
-    12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 0, 1, 2, 3,
-    4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19,
-    20, 21, 22, 23, 24, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,
-    11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 0,
+    5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 0, 1, 2,
+    3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 0,
     1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16,
-    17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 0, 1, 2, 3, 4, 5,
-    6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21,
-    22, 23, 24, 25, 26, 27, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9,
-    10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25,
-    26, 27, 28, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12,
-    13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28,
-    29, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
-    15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30,
+    17, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14,
+    15, 16, 17, 0, 1, 2, 3, 4,
 };
-// block 0's HGC: per instance its 15 whitened rows from evaluate_0's stream, a row a
-// cycle, into registers (partitioned completely: a whole row written, two columns of every row
-// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
-// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+// block 0: per column of A its variable (k-th of the factor's) and the column's offset in it (gram_entries' gradient)
+const int BLOCK0_COL_VAR[30] = {
+    0, 0, 0, 0, 0, 0, 1, 1, 1, 2, 2, 2, 2, 2, 2, 3,
+    3, 3, 4, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5,
+};
+const int BLOCK0_COL_OFF[30] = {
+    0, 1, 2, 3, 4, 5, 0, 1, 2, 0, 1, 2, 3, 4, 5, 0,
+    1, 2, 0, 1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5,
+};
+// block 0's HGC: instance 0's 15 whitened rows from evaluate_0's stream, a row a cycle, into
+// bank 0 of the registers, then gram_entries over all 7 instances (248 iterations each: its
+// Grams into GRAM, the last rows into the gradient, the diagonals checked, the next instance's
+// rows read alongside); `finite` false if not finite
 void reduce_0(hls::stream<GramRow>& rows, bool& finite) {
-    bool ok = true;
-    for (int i = 0; i < 7; ++i) {
-        const int f = BLOCK0_INSTANCES[i];
-        const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[480];
-#pragma HLS ARRAY_PARTITION variable=ab complete
-        for (int r = 0; r < 15; ++r) {
+    T ab[2][480];
+#pragma HLS ARRAY_PARTITION variable=ab complete dim=0
+    for (int r = 0; r < 15; ++r) {
 #pragma HLS PIPELINE II=1
-            const GramRow row = rows.read();
-            for (int c = 0; c < 32; ++c) ab[r * 32 + c] = row.word[c];
-        }
-        int col[30];  // per column: its tangent entry
-        for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        for (int j = 0; j < 3; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
-        for (int j = 0; j < 6; ++j) col[9 + j] = VAR_T_OFF[FACTOR_VARS[vb + 2]] + j;
-        for (int j = 0; j < 3; ++j) col[15 + j] = VAR_T_OFF[FACTOR_VARS[vb + 3]] + j;
-        for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
-        for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
-        FGC_CYCLES("reduce_0", 0, "rows", 15, 1, 2);
-        FGC_CYCLES("reduce_0", 0, "columns", 30, 1, 1);
-        // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
-        // fold, write
-        gram_entries<32, 15, 496, 1>(ab, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        FGC_CYCLES("reduce_0", 0, "entries", 496, 1, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(15) + 2);
-        ok = gradient_from_gram<31>(FACTOR_GRAM_OFF[f], col) && ok;
-        FGC_CYCLES("reduce_0", 0, "scatter", 30, 1, 6);
-        FGC_CYCLES("reduce_0", 0, "check", 31, fgc_units::dot_ii(31, L_PARTIALS, L_ADD_LAT),
-                   fgc_units::dot_depth(31, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
+        const GramRow row = rows.read();
+        for (int c = 0; c < 32; ++c) ab[0][r * 32 + c] = row.word[c];
     }
-    finite = ok;
+    FGC_CYCLES("reduce_0", 0, "rows", 15, 1, 2);
+    finite = gram_entries_two<32, 15, 31, 248, 248, 9, 248, 7>(
+        rows, ab, BLOCK0_INSTANCES, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, BLOCK0_GRAM_PB, BLOCK0_GRAM_QB,
+        BLOCK0_COL_VAR, BLOCK0_COL_OFF);
+    FGC_CYCLES("reduce_0", 0, "entries", 1736, 1, 26);
 }
 
 // block 0's linearisation, one DATAFLOW region: evaluate_0 (the datapath: the whitened rows
@@ -2607,37 +2665,29 @@ const int BLOCK1_GRAM_Q[28] = {
     0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4, 0,
     1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6,
 };
-// block 1's HGC: per instance its 6 whitened rows from evaluate_1's stream, a row a
-// cycle, into registers (partitioned completely: a whole row written, two columns of every row
-// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
-// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+// block 1: per column of A its variable (k-th of the factor's) and the column's offset in it (gram_entries' gradient)
+const int BLOCK1_COL_VAR[6] = {
+    0, 0, 0, 0, 0, 0,
+};
+const int BLOCK1_COL_OFF[6] = {
+    0, 1, 2, 3, 4, 5,
+};
+// block 1's HGC: instance 0's 6 whitened rows from evaluate_1's stream, a row a cycle, into
+// bank 0 of the registers, then gram_entries over all 1 instances (28 iterations each: its
+// Grams into GRAM, the last rows into the gradient, the diagonals checked, the next instance's
+// rows read alongside); `finite` false if not finite
 void reduce_1(hls::stream<GramRow>& rows, bool& finite) {
-    bool ok = true;
-    for (int i = 0; i < 1; ++i) {
-        const int f = BLOCK1_INSTANCES[i];
-        const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab complete
-        for (int r = 0; r < 6; ++r) {
+    T ab[2][48];
+#pragma HLS ARRAY_PARTITION variable=ab complete dim=0
+    for (int r = 0; r < 6; ++r) {
 #pragma HLS PIPELINE II=1
-            const GramRow row = rows.read();
-            for (int c = 0; c < 8; ++c) ab[r * 8 + c] = row.word[c];
-        }
-        int col[6];  // per column: its tangent entry
-        for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_1", 0, "rows", 6, 1, 2);
-        FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
-        // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
-        // fold, write
-        gram_entries<8, 6, 28, 6>(ab, BLOCK1_GRAM_P, BLOCK1_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        FGC_CYCLES("reduce_1", 0, "entries", 28, 6, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(6) + 2);
-        ok = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && ok;
-        FGC_CYCLES("reduce_1", 0, "scatter", 6, 1, 6);
-        FGC_CYCLES("reduce_1", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
-                   fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
+        const GramRow row = rows.read();
+        for (int c = 0; c < 8; ++c) ab[0][r * 8 + c] = row.word[c];
     }
-    finite = ok;
+    FGC_CYCLES("reduce_1", 0, "rows", 6, 1, 2);
+    finite = gram_entries<8, 6, 7, 28, 28, 1, 6>(
+        rows, ab, BLOCK1_INSTANCES, BLOCK1_GRAM_P, BLOCK1_GRAM_Q, BLOCK1_COL_VAR, BLOCK1_COL_OFF);
+    FGC_CYCLES("reduce_1", 0, "entries", 28, 6, 22);
 }
 
 // block 1's linearisation, one DATAFLOW region: evaluate_1 (the datapath: the whitened rows
@@ -2743,37 +2793,29 @@ const int BLOCK2_GRAM_P[7] = {
 const int BLOCK2_GRAM_Q[7] = {
     0, 1, 2, 0, 1, 2, 3,
 };
-// block 2's HGC: per instance its 3 whitened rows from evaluate_2's stream, a row a
-// cycle, into registers (partitioned completely: a whole row written, two columns of every row
-// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
-// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+// block 2: per column of A its variable (k-th of the factor's) and the column's offset in it (gram_entries' gradient)
+const int BLOCK2_COL_VAR[3] = {
+    0, 0, 0,
+};
+const int BLOCK2_COL_OFF[3] = {
+    0, 1, 2,
+};
+// block 2's HGC: instance 0's 3 whitened rows from evaluate_2's stream, a row a cycle, into
+// bank 0 of the registers, then gram_entries over all 1 instances (7 iterations each: its
+// Grams into GRAM, the last rows into the gradient, the diagonals checked, the next instance's
+// rows read alongside); `finite` false if not finite
 void reduce_2(hls::stream<GramRow>& rows, bool& finite) {
-    bool ok = true;
-    for (int i = 0; i < 1; ++i) {
-        const int f = BLOCK2_INSTANCES[i];
-        const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[12];
-#pragma HLS ARRAY_PARTITION variable=ab complete
-        for (int r = 0; r < 3; ++r) {
+    T ab[2][12];
+#pragma HLS ARRAY_PARTITION variable=ab complete dim=0
+    for (int r = 0; r < 3; ++r) {
 #pragma HLS PIPELINE II=1
-            const GramRow row = rows.read();
-            for (int c = 0; c < 4; ++c) ab[r * 4 + c] = row.word[c];
-        }
-        int col[3];  // per column: its tangent entry
-        for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_2", 0, "rows", 3, 1, 2);
-        FGC_CYCLES("reduce_2", 0, "columns", 3, 1, 1);
-        // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
-        // fold, write
-        gram_entries<4, 3, 7, 3>(ab, BLOCK2_GRAM_P, BLOCK2_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        FGC_CYCLES("reduce_2", 0, "entries", 7, 3, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(3) + 2);
-        ok = gradient_from_gram<4>(FACTOR_GRAM_OFF[f], col) && ok;
-        FGC_CYCLES("reduce_2", 0, "scatter", 3, 1, 6);
-        FGC_CYCLES("reduce_2", 0, "check", 4, fgc_units::dot_ii(4, L_PARTIALS, L_ADD_LAT),
-                   fgc_units::dot_depth(4, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
+        const GramRow row = rows.read();
+        for (int c = 0; c < 4; ++c) ab[0][r * 4 + c] = row.word[c];
     }
-    finite = ok;
+    FGC_CYCLES("reduce_2", 0, "rows", 3, 1, 2);
+    finite = gram_entries<4, 3, 4, 7, 7, 1, 3>(
+        rows, ab, BLOCK2_INSTANCES, BLOCK2_GRAM_P, BLOCK2_GRAM_Q, BLOCK2_COL_VAR, BLOCK2_COL_OFF);
+    FGC_CYCLES("reduce_2", 0, "entries", 7, 3, 18);
 }
 
 // block 2's linearisation, one DATAFLOW region: evaluate_2 (the datapath: the whitened rows
@@ -2879,37 +2921,29 @@ const int BLOCK3_GRAM_P[13] = {
 const int BLOCK3_GRAM_Q[13] = {
     0, 1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5, 6,
 };
-// block 3's HGC: per instance its 6 whitened rows from evaluate_3's stream, a row a
-// cycle, into registers (partitioned completely: a whole row written, two columns of every row
-// read a cycle), the column map, the Gram's structurally non-zero entries (gram_entries), the
-// gradient from the Gram's last row and the finiteness check; `finite` false if not finite
+// block 3: per column of A its variable (k-th of the factor's) and the column's offset in it (gram_entries' gradient)
+const int BLOCK3_COL_VAR[6] = {
+    0, 0, 0, 0, 0, 0,
+};
+const int BLOCK3_COL_OFF[6] = {
+    0, 1, 2, 3, 4, 5,
+};
+// block 3's HGC: instance 0's 6 whitened rows from evaluate_3's stream, a row a cycle, into
+// bank 0 of the registers, then gram_entries over all 1 instances (13 iterations each: its
+// Grams into GRAM, the last rows into the gradient, the diagonals checked, the next instance's
+// rows read alongside); `finite` false if not finite
 void reduce_3(hls::stream<GramRow>& rows, bool& finite) {
-    bool ok = true;
-    for (int i = 0; i < 1; ++i) {
-        const int f = BLOCK3_INSTANCES[i];
-        const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab complete
-        for (int r = 0; r < 6; ++r) {
+    T ab[2][48];
+#pragma HLS ARRAY_PARTITION variable=ab complete dim=0
+    for (int r = 0; r < 6; ++r) {
 #pragma HLS PIPELINE II=1
-            const GramRow row = rows.read();
-            for (int c = 0; c < 8; ++c) ab[r * 8 + c] = row.word[c];
-        }
-        int col[6];  // per column: its tangent entry
-        for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        FGC_CYCLES("reduce_3", 0, "rows", 6, 1, 2);
-        FGC_CYCLES("reduce_3", 0, "columns", 6, 1, 1);
-        // the packed lower triangle of [A | b]^T [A | b] (entry (p, q), q <= p, at p (p + 1) / 2 + q)
-        // into GRAM, its structurally non-zero entries one every GII cycles: read, multiply, the
-        // fold, write
-        gram_entries<8, 6, 13, 6>(ab, BLOCK3_GRAM_P, BLOCK3_GRAM_Q, FACTOR_GRAM_OFF[f]);
-        FGC_CYCLES("reduce_3", 0, "entries", 13, 6, L_MUL_LAT + L_ADD_LAT * fgc_units::ceil_log2(6) + 2);
-        ok = gradient_from_gram<7>(FACTOR_GRAM_OFF[f], col) && ok;
-        FGC_CYCLES("reduce_3", 0, "scatter", 6, 1, 6);
-        FGC_CYCLES("reduce_3", 0, "check", 7, fgc_units::dot_ii(7, L_PARTIALS, L_ADD_LAT),
-                   fgc_units::dot_depth(7, L_PARTIALS, L_ADD_LAT, L_MUL_LAT));
+        const GramRow row = rows.read();
+        for (int c = 0; c < 8; ++c) ab[0][r * 8 + c] = row.word[c];
     }
-    finite = ok;
+    FGC_CYCLES("reduce_3", 0, "rows", 6, 1, 2);
+    finite = gram_entries<8, 6, 7, 13, 13, 1, 6>(
+        rows, ab, BLOCK3_INSTANCES, BLOCK3_GRAM_P, BLOCK3_GRAM_Q, BLOCK3_COL_VAR, BLOCK3_COL_OFF);
+    FGC_CYCLES("reduce_3", 0, "entries", 13, 6, 22);
 }
 
 // block 3's linearisation, one DATAFLOW region: evaluate_3 (the datapath: the whitened rows
@@ -2965,11 +2999,13 @@ T cost_of_3(const T x[N_X], T total) {
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
     FGC_PHASE("hgc");
-    for (int i = 0; i < N_TANGENT; ++i) {
+    for (int i = 0; i < N_TANGENT; i += PORTS) {  // PORTS words a cycle (G's two ports)
 #pragma HLS PIPELINE II=1
-        G[i] = T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < N_TANGENT) G[i + h] = T(0);
+        }
     }
-    FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
+    FGC_CYCLES("gradient", 0, "zero", (N_TANGENT + PORTS - 1) / PORTS, 1, 1);
     bool finite = true;
     bool ok0 = true;
     linearize_0(x, ok0);
@@ -3163,10 +3199,13 @@ struct LesConfig {
 
 // ---- multifrontal Cholesky (paper B): per step the frontal matrix [H | g] (upper triangle,
 // row-major, the gradient in column w) from its factors' Grams and its children's update
-// matrices; cpe_step runs the rounds of the #CPE cascade (one DATAFLOW region per round:
+// matrices, assembled into lane t % 2 of HA (the t-th step) while the cascade factors the step
+// before (fgc_eliminate.h's cholesky_overlap region: cholesky_assembler -> cholesky_cascade, one
+// stream); cpe_step runs the rounds of the #CPE cascade (one DATAFLOW region per round:
 // cpe_feed (+ mu) -> cpe_tap<0>, cpe<0> ... cpe_tap<19>, cpe<19> -> cpe_drain, 61 streams),
 // whose drain writes the conditional into COND and the update matrix into NF.
-L HF[MAX_W][LesConfig::MAX_COLS];  // the step's [H | g]; all zero between steps (the cascade clears what it reads)
+L HA[2][MAX_W][LesConfig::MAX_COLS / 2 + 1][2];  // the assembly's two lanes, (i, c) at [i][c >> 1][c & 1]; all zero between steps (the source clears what it reads)
+L HF[MAX_W][LesConfig::MAX_COLS];  // the rows a round leaves for the next (multi-round steps); all zero between steps
 
 // the elimination driver (fgc_eliminate.h) on these tables and memories
 #define FGC_ELIMINATE_CHOLESKY
@@ -3176,120 +3215,19 @@ bool eliminate_all(T mu) {
     return cholesky_eliminate_all<LesConfig>(mu);
 }
 
-// ---- back-substitution on two lanes: slot k solves one step on lane BS_LANE[k] (its
-// conditional loaded the slot before) while the next step's conditional loads into the other
-// lane, S xs summed on the way (fgc_backsub.h's cond_load); a step whose separator needs the
-// step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the steps, -1 none)
+// ---- back-substitution on two lanes (fgc_backsub.h's driver: back_substitute), slot by slot:
+// the step each slot solves and loads (-1: none) and the lane that solves
 const int BS_SLOTS = 9;
 const int BS_SOLVE[BS_SLOTS] = {-1, 6, -1, 4, 5, 2, 3, 0, 1};
 const int BS_LOAD[BS_SLOTS] = {6, -1, 4, 5, 2, 3, 0, 1, -1};
 const int BS_LANE[BS_SLOTS] = {1, 0, 0, 1, 0, 1, 0, 1, 0};
-L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // lane 0's conditional (R | S | d)
-L BS_XS0[LesConfig::MAX_COLS];  // its separator's solution
-L BS_X0[MAX_F];  // its frontal solution
-L BS_COND1[MAX_F * LesConfig::MAX_COLS];  // lane 1's conditional (R | S | d)
-L BS_XS1[LesConfig::MAX_COLS];  // its separator's solution
-L BS_X1[MAX_F];  // its frontal solution
-
-// Lane 0's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load
-// left (f = 0: none this time).
-void backsub_set0(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
-                  const L part[2][LesConfig::PARTIALS][MAX_F], L x[MAX_F]) {
-    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
-    fgc_units::cond_backsub<LesConfig>(cond, f, s, part, x);
-}
-
-// Lane 0's load: a step's conditional from COND (at off) into the lane's buffer.
-void backsub_load0(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
-                   L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
-    FGC_BRANCH();
-    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
-}
-
-// Lane 1's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load
-// left (f = 0: none this time).
-void backsub_set1(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
-                  const L part[2][LesConfig::PARTIALS][MAX_F], L x[MAX_F]) {
-    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
-    fgc_units::cond_backsub<LesConfig>(cond, f, s, part, x);
-}
-
-// Lane 1's load: a step's conditional from COND (at off) into the lane's buffer.
-void backsub_load1(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
-                   L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
-    FGC_BRANCH();
-    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
-}
-
-// A slot whose solve is on lane 0: that lane's cond_backsub beside lane 1's cond_load.
-void backsub_lane0(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
-                   const L part0[2][LesConfig::PARTIALS][MAX_F], L x0[MAX_F],
-                   int off, int f1, int s1, const L xs1[LesConfig::MAX_COLS],
-                   L cond1[MAX_F * LesConfig::MAX_COLS], L part1[2][LesConfig::PARTIALS][MAX_F]) {
-#pragma HLS DATAFLOW
-    backsub_set0(cond0, f0, s0, part0, x0);
-    backsub_load1(off, f1, s1, xs1, cond1, part1);
-}
-
-// A slot whose solve is on lane 1: that lane's cond_backsub beside lane 0's cond_load.
-void backsub_lane1(const L cond1[MAX_F * LesConfig::MAX_COLS], int f1, int s1,
-                   const L part1[2][LesConfig::PARTIALS][MAX_F], L x1[MAX_F],
-                   int off, int f0, int s0, const L xs0[LesConfig::MAX_COLS],
-                   L cond0[MAX_F * LesConfig::MAX_COLS], L part0[2][LesConfig::PARTIALS][MAX_F]) {
-#pragma HLS DATAFLOW
-    backsub_set1(cond1, f1, s1, part1, x1);
-    backsub_load0(off, f0, s0, xs0, cond0, part0);
-}
-
-// Back-substitution root first, slot by slot: the loaded step's separator solution in from
-// DELTA (PORTS words a cycle), the slot's backsub_lane<p> region, the solved step's frontal
-// solution out into DELTA.
-void back_substitute() {
-    FGC_PHASE("backsub");
-    L bs_part0[2][LesConfig::PARTIALS][MAX_F];  // lane 0's partial sums of S xs (word lane, bank, row)
-#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=2
-    L bs_part1[2][LesConfig::PARTIALS][MAX_F];  // lane 1's partial sums of S xs (word lane, bank, row)
-#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=2
-    for (int k = 0; k < BS_SLOTS; ++k) {
-        const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = BS_LOAD[k];
-        const int sf = sv >= 0 ? STEP_F[sv] : 0, ssep = sv >= 0 ? STEP_W[sv] - STEP_F[sv] : 0;
-        const int scb = sv >= 0 ? STEP_COL_BEGIN[sv] : 0;
-        const int lf = ld >= 0 ? STEP_F[ld] : 0, lsep = ld >= 0 ? STEP_W[ld] - STEP_F[ld] : 0;
-        const int lcb = ld >= 0 ? STEP_COL_BEGIN[ld] : 0, off = ld >= 0 ? STEP_COND_OFF[ld] : 0;
-        for (int a = 0; a < lsep; a += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=15
-#pragma HLS PIPELINE II=1
-            for (int h = 0; h < 2; ++h) {
-                if (a + h < lsep) {
-                    const L v = DELTA[STEP_COL[lcb + lf + a + h]];
-                    if (p == 0) BS_XS1[a + h] = v;
-                    else BS_XS0[a + h] = v;
-                }
-            }
-        }
-        FGC_CYCLES("backsub_copy", 0, "separator_in", (lsep + 1) / 2, 1, 2);
-        if (p == 0)
-            backsub_lane0(BS_COND0, sf, ssep, bs_part0, BS_X0, off, lf, lsep, BS_XS1, BS_COND1, bs_part1);
-        else
-            backsub_lane1(BS_COND1, sf, ssep, bs_part1, BS_X1, off, lf, lsep, BS_XS0, BS_COND0, bs_part0);
-        FGC_JOIN();
-        for (int c = 0; c < sf; c += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=15
-#pragma HLS PIPELINE II=1
-            for (int h = 0; h < 2; ++h) {
-                if (c + h < sf) DELTA[STEP_COL[scb + c + h]] = p == 0 ? BS_X0[c + h] : BS_X1[c + h];
-            }
-        }
-        FGC_CYCLES("backsub_copy", 0, "solution_out", (sf + 1) / 2, 1, 2);
-    }
-}
+#define FGC_BACKSUB_DRIVER
+#include "fgc_backsub.h"
 
 // The linear solve at mu: eliminate, then back-substitute. False if singular.
 bool solve(T mu) {
     if (!eliminate_all(mu)) return false;
-    back_substitute();
+    back_substitute<LesConfig>();
     return true;
 }
 
@@ -3335,6 +3273,7 @@ struct LmConfig {
     static const int PARTIALS = T_PARTIALS, ADD_LAT = T_ADD_LAT, MUL_LAT = T_MUL_LAT;
     static const int MAXIMA = T_MAXIMA, CMP_LAT = T_CMP_LAT, ABS_LAT = T_ABS_LAT;
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
+    static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
     static T x_norm() {
 #pragma HLS INLINE
@@ -3360,23 +3299,5 @@ void imu_window_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=errors
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
-    FGC_EVENT("call");
-    FGC_PHASE("setup");
-    for (int i = 0; i < fgc::N_X; ++i) {
-#pragma HLS PIPELINE II=1
-        fgc::X[i] = x_in[i];
-    }
-    for (int i = 0; i < fgc::N_DATA; ++i) {
-#pragma HLS PIPELINE II=1
-        fgc::DATA_BUF[i] = data[i];
-    }
-    FGC_CYCLES("top", 0, "x_in", fgc::N_X, 1, 2);
-    FGC_CYCLES("top", 0, "data_in", fgc::N_DATA, 1, 2);
-    fgc_lm::optimize<fgc::LmConfig>(errors, info);
-    FGC_PHASE("setup");
-    for (int i = 0; i < fgc::N_X; ++i) {
-#pragma HLS PIPELINE II=1
-        x_out[i] = fgc::X[i];
-    }
-    FGC_CYCLES("top", 0, "x_out", fgc::N_X, 1, 2);
+    fgc_units::lm_top<fgc::LmConfig>(x_in, data, x_out, fgc::X, fgc::DATA_BUF, errors, info);
 }

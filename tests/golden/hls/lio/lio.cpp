@@ -511,7 +511,7 @@ void factor_cost_0(const T in[12], const T dat[18],
                    T half[1]) {
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=3
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
@@ -638,9 +638,9 @@ void factor_cost_2(const T in[6], const T dat[7],
 void factor_3(const T in[42], const T dat[211],
               T raw[672]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=8
+#pragma HLS ALLOCATION operation instances=fmul limit=11
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
     const T t2 = in[32] - dat[65];
@@ -2137,9 +2137,9 @@ void factor_3(const T in[42], const T dat[211],
 void factor_cost_3(const T in[42], const T dat[211],
                    T half[2]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=4
+#pragma HLS ALLOCATION operation instances=fadd limit=5
+#pragma HLS ALLOCATION operation instances=fmul limit=6
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[0]*in[15] + in[3]*in[18] + in[6]*in[21];
     const T t1 = t0;
     const T t2 = in[1]*in[15] + in[4]*in[18] + in[7]*in[21];
@@ -3219,11 +3219,13 @@ T cost_of_small(const T x[N_X], T total) {
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
     FGC_PHASE("gradient");
-    for (int i = 0; i < N_TANGENT; ++i) {
+    for (int i = 0; i < N_TANGENT; i += PORTS) {  // PORTS words a cycle (G's two ports)
 #pragma HLS PIPELINE II=1
-        G[i] = T(0);
+        for (int h = 0; h < PORTS; ++h) {
+            if (i + h < N_TANGENT) G[i + h] = T(0);
+        }
     }
-    FGC_CYCLES("gradient", 0, "zero", N_TANGENT, 1, 1);
+    FGC_CYCLES("gradient", 0, "zero", (N_TANGENT + PORTS - 1) / PORTS, 1, 1);
     FGC_PHASE("factor_jacobian");
     evaluate_0(x);
     evaluate_small(x);
@@ -3486,120 +3488,19 @@ bool eliminate_all(T mu) {
     return qr_eliminate_all<LesConfig, QrSets>(mu);
 }
 
-// ---- back-substitution on two lanes: slot k solves one step on lane BS_LANE[k] (its
-// conditional loaded the slot before) while the next step's conditional loads into the other
-// lane, S xs summed on the way (fgc_backsub.h's cond_load); a step whose separator needs the
-// step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the steps, -1 none)
+// ---- back-substitution on two lanes (fgc_backsub.h's driver: back_substitute), slot by slot:
+// the step each slot solves and loads (-1: none) and the lane that solves
 const int BS_SLOTS = 9;
 const int BS_SOLVE[BS_SLOTS] = {-1, 6, -1, 4, 5, 2, 3, 0, 1};
 const int BS_LOAD[BS_SLOTS] = {6, -1, 4, 5, 2, 3, 0, 1, -1};
 const int BS_LANE[BS_SLOTS] = {1, 0, 0, 1, 0, 1, 0, 1, 0};
-L BS_COND0[MAX_F * LesConfig::MAX_COLS];  // lane 0's conditional (R | S | d)
-L BS_XS0[LesConfig::MAX_COLS];  // its separator's solution
-L BS_X0[MAX_F];  // its frontal solution
-L BS_COND1[MAX_F * LesConfig::MAX_COLS];  // lane 1's conditional (R | S | d)
-L BS_XS1[LesConfig::MAX_COLS];  // its separator's solution
-L BS_X1[MAX_F];  // its frontal solution
-
-// Lane 0's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load
-// left (f = 0: none this time).
-void backsub_set0(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
-                  const L part[2][LesConfig::PARTIALS][MAX_F], L x[MAX_F]) {
-    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
-    fgc_units::cond_backsub<LesConfig>(cond, f, s, part, x);
-}
-
-// Lane 0's load: a step's conditional from COND (at off) into the lane's buffer.
-void backsub_load0(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
-                   L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
-    FGC_BRANCH();
-    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
-}
-
-// Lane 1's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load
-// left (f = 0: none this time).
-void backsub_set1(const L cond[MAX_F * LesConfig::MAX_COLS], int f, int s,
-                  const L part[2][LesConfig::PARTIALS][MAX_F], L x[MAX_F]) {
-    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
-    fgc_units::cond_backsub<LesConfig>(cond, f, s, part, x);
-}
-
-// Lane 1's load: a step's conditional from COND (at off) into the lane's buffer.
-void backsub_load1(int off, int f, int s, const L xs[LesConfig::MAX_COLS],
-                   L cond[MAX_F * LesConfig::MAX_COLS], L part[2][LesConfig::PARTIALS][MAX_F]) {
-    FGC_BRANCH();
-    fgc_units::cond_load<LesConfig>(COND, off, f, s, xs, cond, part);
-}
-
-// A slot whose solve is on lane 0: that lane's cond_backsub beside lane 1's cond_load.
-void backsub_lane0(const L cond0[MAX_F * LesConfig::MAX_COLS], int f0, int s0,
-                   const L part0[2][LesConfig::PARTIALS][MAX_F], L x0[MAX_F],
-                   int off, int f1, int s1, const L xs1[LesConfig::MAX_COLS],
-                   L cond1[MAX_F * LesConfig::MAX_COLS], L part1[2][LesConfig::PARTIALS][MAX_F]) {
-#pragma HLS DATAFLOW
-    backsub_set0(cond0, f0, s0, part0, x0);
-    backsub_load1(off, f1, s1, xs1, cond1, part1);
-}
-
-// A slot whose solve is on lane 1: that lane's cond_backsub beside lane 0's cond_load.
-void backsub_lane1(const L cond1[MAX_F * LesConfig::MAX_COLS], int f1, int s1,
-                   const L part1[2][LesConfig::PARTIALS][MAX_F], L x1[MAX_F],
-                   int off, int f0, int s0, const L xs0[LesConfig::MAX_COLS],
-                   L cond0[MAX_F * LesConfig::MAX_COLS], L part0[2][LesConfig::PARTIALS][MAX_F]) {
-#pragma HLS DATAFLOW
-    backsub_set1(cond1, f1, s1, part1, x1);
-    backsub_load0(off, f0, s0, xs0, cond0, part0);
-}
-
-// Back-substitution root first, slot by slot: the loaded step's separator solution in from
-// DELTA (PORTS words a cycle), the slot's backsub_lane<p> region, the solved step's frontal
-// solution out into DELTA.
-void back_substitute() {
-    FGC_PHASE("backsub");
-    L bs_part0[2][LesConfig::PARTIALS][MAX_F];  // lane 0's partial sums of S xs (word lane, bank, row)
-#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=2
-    L bs_part1[2][LesConfig::PARTIALS][MAX_F];  // lane 1's partial sums of S xs (word lane, bank, row)
-#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=2
-    for (int k = 0; k < BS_SLOTS; ++k) {
-        const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = BS_LOAD[k];
-        const int sf = sv >= 0 ? STEP_F[sv] : 0, ssep = sv >= 0 ? STEP_W[sv] - STEP_F[sv] : 0;
-        const int scb = sv >= 0 ? STEP_COL_BEGIN[sv] : 0;
-        const int lf = ld >= 0 ? STEP_F[ld] : 0, lsep = ld >= 0 ? STEP_W[ld] - STEP_F[ld] : 0;
-        const int lcb = ld >= 0 ? STEP_COL_BEGIN[ld] : 0, off = ld >= 0 ? STEP_COND_OFF[ld] : 0;
-        for (int a = 0; a < lsep; a += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=15
-#pragma HLS PIPELINE II=1
-            for (int h = 0; h < 2; ++h) {
-                if (a + h < lsep) {
-                    const L v = DELTA[STEP_COL[lcb + lf + a + h]];
-                    if (p == 0) BS_XS1[a + h] = v;
-                    else BS_XS0[a + h] = v;
-                }
-            }
-        }
-        FGC_CYCLES("backsub_copy", 0, "separator_in", (lsep + 1) / 2, 1, 2);
-        if (p == 0)
-            backsub_lane0(BS_COND0, sf, ssep, bs_part0, BS_X0, off, lf, lsep, BS_XS1, BS_COND1, bs_part1);
-        else
-            backsub_lane1(BS_COND1, sf, ssep, bs_part1, BS_X1, off, lf, lsep, BS_XS0, BS_COND0, bs_part0);
-        FGC_JOIN();
-        for (int c = 0; c < sf; c += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=15
-#pragma HLS PIPELINE II=1
-            for (int h = 0; h < 2; ++h) {
-                if (c + h < sf) DELTA[STEP_COL[scb + c + h]] = p == 0 ? BS_X0[c + h] : BS_X1[c + h];
-            }
-        }
-        FGC_CYCLES("backsub_copy", 0, "solution_out", (sf + 1) / 2, 1, 2);
-    }
-}
+#define FGC_BACKSUB_DRIVER
+#include "fgc_backsub.h"
 
 // The linear solve at mu: eliminate, then back-substitute. False if singular.
 bool solve(T mu) {
     if (!eliminate_all(mu)) return false;
-    back_substitute();
+    back_substitute<LesConfig>();
     return true;
 }
 
@@ -3645,6 +3546,7 @@ struct LmConfig {
     static const int PARTIALS = T_PARTIALS, ADD_LAT = T_ADD_LAT, MUL_LAT = T_MUL_LAT;
     static const int MAXIMA = T_MAXIMA, CMP_LAT = T_CMP_LAT, ABS_LAT = T_ABS_LAT;
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
+    static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
     static T x_norm() {
 #pragma HLS INLINE
@@ -3670,23 +3572,5 @@ void lio_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=errors
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
-    FGC_EVENT("call");
-    FGC_PHASE("setup");
-    for (int i = 0; i < fgc::N_X; ++i) {
-#pragma HLS PIPELINE II=1
-        fgc::X[i] = x_in[i];
-    }
-    for (int i = 0; i < fgc::N_DATA; ++i) {
-#pragma HLS PIPELINE II=1
-        fgc::DATA_BUF[i] = data[i];
-    }
-    FGC_CYCLES("top", 0, "x_in", fgc::N_X, 1, 2);
-    FGC_CYCLES("top", 0, "data_in", fgc::N_DATA, 1, 2);
-    fgc_lm::optimize<fgc::LmConfig>(errors, info);
-    FGC_PHASE("setup");
-    for (int i = 0; i < fgc::N_X; ++i) {
-#pragma HLS PIPELINE II=1
-        x_out[i] = fgc::X[i];
-    }
-    FGC_CYCLES("top", 0, "x_out", fgc::N_X, 1, 2);
+    fgc_units::lm_top<fgc::LmConfig>(x_in, data, x_out, fgc::X, fgc::DATA_BUF, errors, info);
 }
