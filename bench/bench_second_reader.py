@@ -73,9 +73,14 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
                           default=1.0))
 
 
-# the stream section's functions the stream top (fgc_stream.h's stream_call) calls
-SECTION = ("stream_shift", "stream_in", "batch_step", "marginalize", "reexpress", "keep",
-           "kept_walk")
+def section_tops(reader) -> list[str]:
+    """The stream section's functions the stream top (fgc_stream.h's ``stream_call``) calls."""
+    call = reader.functions.get("stream_call")
+    if call is None:
+        return []
+    names = dict.fromkeys(re.findall(r"\b(\w+)\s*<\s*CFG\s*>\s*\(", call.text))
+    return [n for n in names if n in reader.functions
+            and reader.functions[n].file == "fgc_stream.h"]
 
 
 def measure_stream(n: int, out: Path) -> dict:
@@ -104,7 +109,7 @@ def measure_stream(n: int, out: Path) -> dict:
     batch_cpp = next((k for k, _ in files if k.endswith(".cpp") and k != window_cpp), None)
     batch = design.unit_dsp(dsp_of, batch_cpp) if batch_cpp else 0
     section = 0
-    for name in SECTION:
+    for name in section_tops(reader):
         if name in reader.functions:
             part = _design(reader, name, window_cpp)
             section += part.dsp(dsp_of) - (part.unit_dsp(dsp_of, batch_cpp) if batch_cpp else 0)
