@@ -328,6 +328,41 @@ def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict) -> 
     return loops
 
 
+def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
+                       ops: OperatorTable, timing: dict) -> list[Phase]:
+    """cholesky_eliminate_all's phases (passes of one cholesky_overlap region, fgc_eliminate.h)
+    on the steps ``order`` (the schedule's LEVEL_STEPS; ``dims``: step -> (frontal, separator)
+    columns) with the step tables ``tables``: phase ``assemble`` (the assembler alone: each
+    step's position parity (the NF lane its drain writes), the first step's Grams, then per step
+    its children at positions of the other parity than its own, the step before among them)
+    and per step t the region ``cholesky_level<t>``: the cascade on the step
+    (:func:`cpe_step_loops`) beside the assembler (:func:`assembler_loops`: its words streamed
+    out, the next step's Grams and its children of t's parity), the slower of the two plus the
+    other's fill. A child that is no step of ``order`` (an on-chip window's τ, kept from
+    before the window) counts as of parity 0: added with the first step's Grams, alone. The
+    batch plan (:func:`_frontal`) and the stream's window model (plan/update.py) both price
+    the elimination with it."""
+    odd = {s: t % 2 for t, s in enumerate(order)}
+    for e in range(len(tables["STEP_CHILDREN"])):
+        odd.setdefault(tables["STEP_CHILDREN"][e], 0)
+    first = [Process("assemble_first", "cpe", tuple(assemble_loops(
+        tables, order[0], timing, odd=odd, par=0)))] if order else []
+    phases = [Phase("assemble", False, (
+        Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),
+        *first, *(Process(f"assemble{s}", "cpe", tuple(assemble_loops(
+            tables, s, timing, grams=False, odd=odd, par=1 - odd[s]))) for s in order)),
+        linear=True)]
+    for t, s in enumerate(order):
+        nxt = order[t + 1] if t + 1 < len(order) else -1
+        frontal, separator = dims[s]
+        phases.append(Phase(f"cholesky_level{t}", True, (
+            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
+                frontal, separator, cpe, ops, name=f"s{s}"))),
+            Process(f"assembler{s}", "cpe", tuple(assembler_loops(
+                tables, s, nxt, timing, odd)))), linear=True))
+    return phases
+
+
 def hessian_envelope(program) -> list[int]:
     """For each column j of H (variables in the Program's order), its lowest structurally
     non-zero row: H's envelope, which the Cholesky factor fills and does not leave."""
@@ -447,35 +482,14 @@ def _frontal(ctx) -> None:
                           (("add", 1),)))
     tables, timing = ctx.tables, ctx.les_timing
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
-    odd = {s: t % 2 for t, s in enumerate(order)}
-    steps = {st.index: st for st in program.schedule.steps}
-    # cholesky_eliminate_all (passes of one cholesky_overlap region): each step's position
-    # parity (the NF lane its drain writes), the first step's Grams (the assembler alone), then
-    # per step t its children at positions of the other parity than t's (the step before among
-    # them: the assembler alone, phase assemble) and the region (phase cholesky_level<t>): the
-    # cascade on the step (cpe_step_loops) beside the assembler (its words streamed out, the
-    # next step's Grams and its children of t's parity), the slower of the two plus the other's
-    # fill
-    first = [Process("assemble_first", "cpe", tuple(assemble_loops(
-        tables, order[0], timing, odd=odd, par=0)))] if order else []
-    ctx.add_phase("solve", Phase("assemble", False, (
-        Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),
-        *first, *(Process(f"assemble{s}", "cpe", tuple(assemble_loops(
-            tables, s, timing, grams=False, odd=odd, par=1 - odd[s]))) for s in order)),
-        linear=True))
+    dims = {st.index: (st.frontal_dim, st.separator_dim) for st in program.schedule.steps}
+    for phase in elimination_phases(tables, order, dims, c, ops, timing):
+        ctx.add_phase("solve", phase)
     # cholesky_overlap's stream, a pair of words wide, deep enough that the assembler (a pair a
     # cycle) never waits for the feed (a word a cycle): half a step's pairs and the feed's start
     mw = sizes["MAX_W"]
     ctx.channels.append(Channel("frontal", "stream", mw * (mw + 4) // 8 + ops.add.latency + 8,
                                 2 * ops.word_bits, "cholesky_assembler", "cpe_feed"))
-    for t, s in enumerate(order):
-        nxt = order[t + 1] if t + 1 < len(order) else -1
-        st = steps[s]
-        ctx.add_phase("solve", Phase(f"cholesky_level{t}", True, (
-            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
-                st.frontal_dim, st.separator_dim, c, ops, name=f"s{s}"))),
-            Process(f"assembler{s}", "cpe", tuple(assembler_loops(
-                tables, s, nxt, timing, odd)))), linear=True))
     # accel.cpp.jinja's GRAM and HF (the frontal matrix of one step at a time) and cpe_step's
     # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF)
     ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
