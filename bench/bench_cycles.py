@@ -122,6 +122,9 @@ def cases():
         out.append((f"imu_window N=20 Cholesky #CPE={cpe}", imu_window.build(N=20),
                     SolverConfig(method="gn", linear="cholesky", cpe=cpe,
                                  precision="float32")))
+    # the fastest LIO design that fits (issue 33): the HGC's two lanes on a 21-row block
+    out.append(("LIO N=30 Cholesky #CPE=15", lio.build(N=30),
+                SolverConfig(method="gn", linear="cholesky", cpe=15, precision="float32")))
     return out
 
 

@@ -74,8 +74,10 @@ def measure(keyframes: int, window: int, scalar: str, incremental: int | None = 
     rows = []
     for record, (cycles, events) in zip(result.updates, counted(stream), strict=True):
         ev = dict(events)
-        if record.get("marginal") or record["mode"] == "batch":
-            ev["linearize"] = ev.get("linearize", 0) - 1  # the store's own, in its term
+        # the marginal's or the batch store's own linearisation (when LM moved after its last
+        # one), in their terms
+        ev.setdefault("relinearize", 0)
+        ev["linearize"] = ev.get("linearize", 0) - ev["relinearize"]
         if record["mode"] == "batch":
             ev["solve"] = ev.get("solve", 0) - 1  # the batch store's elimination, in its term
         price = model.price(record["keyframe"], record["iterations"], ev)

@@ -201,13 +201,21 @@ def accel_plan(program: Program, config: HlsConfig):
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
     from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
+    from fgc_backends.hls.plan.loops import _sizes, _tables
     from fgc_backends.hls.plan.model import Unit
-    from fgc_backends.hls.units.cholesky import gram_ii, gram_lanes, jacobian_ii
+    from fgc_backends.hls.units.backsub import retire_solved
+    from fgc_backends.hls.units.cholesky import (
+        gram_config,
+        gram_ii,
+        jacobian_cycles,
+        jacobian_ii,
+    )
     from fgc_backends.hls.units.datapath import (
         factor_allocation,
         small_allocation,
         small_blocks,
     )
+    from fgc_backends.hls.units.state_update import retire_order, retire_timing
     plan = accel_plan(program, config)
     phase = {ph.name: ph for ph in plan.phases}
     # each datapath's instance loop (Cholesky: its Jacobian pass in its linearize_<b> region)
@@ -218,6 +226,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     hgc = {p.name: p for ph in plan.phases if ph.name.startswith("hgc") for p in ph.processes
            if p.name.startswith("reduce_")}
     jac_ii = jacobian_ii(p for ph in plan.phases for p in ph.processes)
+    jac_cycles = jacobian_cycles([p for ph in plan.phases for p in ph.processes])
     blocks = []
     # factor_<b>'s ALLOCATION limits (the plan's unit is what Vitis binds around them)
     allocations = factor_allocation(program, plan.options)
@@ -263,8 +272,10 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             blocks[-1].small = False
         # Cholesky's HGC: the II of the block's Gram entries (its multipliers) and the entries
         blocks[-1].gram_ii = gram_ii(program, b.index, plan.options.hgc_lanes)
-        lane_a, lane_b, k = (gram_lanes(program, b.index, plan.options.hgc_lanes, jac_ii)
-                             if program.solver.linear == "cholesky" else ((), (), 0))
+        lane_a, lane_b, k, paired = (
+            gram_config(program, b.index, plan.options.hgc_lanes, jac_ii, jac_cycles)
+            if program.solver.linear == "cholesky" else ((), (), 0, False))
+        blocks[-1].gram_pair = paired  # gram_entries_pair: II 2, two lane-A entries
         blocks[-1].gram_p = [p for p, _ in lane_a]
         blocks[-1].gram_q = [q for _, q in lane_a]
         blocks[-1].gram_pb = [p for p, _ in lane_b]  # lane B: the first gram_k rows only
@@ -279,14 +290,22 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         cols = sorted((v.col + j, v.k, j) for v in b.variables for j in range(v.dim))
         blocks[-1].gram_col_var = [k for _, k, _ in cols]
         blocks[-1].gram_col_off = [j for _, _, j in cols]
-    # the state update's datapath per variable type: the plan's operators, II and depth
+    # the state update's datapath per variable type: the plan's operators
     retract = {}
     for k in context["retracts"]:
         text = "\n".join((*k.printed.intermediates, *k.printed.outputs))
-        loop = phase["state_update"].processes[0].loops[k.kind]
         retract[k.kind] = {"allocation": _allocation(plan.unit(f"state_update_{k.kind}"),
-                                                     config.scalar_cxx, text),
-                           "ii": loop.ii, "depth": loop.depth}
+                                                     config.scalar_cxx, text)}
+    # back_substitute's state update (fgc_backsub.h's backsub_retire): its loop's tables and
+    # (II, depth), the plan's
+    kinds = [0] * len(program.variables)
+    for k in context["retracts"]:
+        for v in k.variables:
+            kinds[v] = k.kind
+    variables, steps = retire_order(program, retire_solved(_tables(program)))
+    ii, depth = retire_timing(program.variables, plan.ops, _sizes(program)["MAX_F"],
+                              plan.options.state_allocation)
+    retire = {"kinds": kinds, "variables": variables, "steps": steps, "ii": ii, "depth": depth}
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
@@ -302,7 +321,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "les": {"partials": les.add.latency, "add": les.add.latency,
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
-            "blocks": blocks, "network": network, "retract_hw": retract,
+            "blocks": blocks, "network": network, "retract_hw": retract, "retire": retire,
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
             "small": shared,

@@ -66,11 +66,13 @@ def allocations(text: str) -> dict[str, tuple[tuple[str, str, int], ...]]:
 
 def backsub_region(header: str) -> Region:
     """Back-substitution's regions (``fgc_backsub.h``'s driver: ``backsub_lane0`` and
-    ``backsub_lane1``, a lane's solve beside the other lane's load) as one: their processes and
-    streams in order."""
-    lanes = [r for r in read_network(header) if r.function.startswith("backsub_lane")]
+    ``backsub_lane1``, a lane's solve beside the other lane's load; ``back_substitute``, the slot
+    process beside the state update it feeds) as one: their processes and streams in order."""
+    regions = read_network(header)
+    lanes = [r for r in regions if r.function.startswith("backsub_lane")]
     if len(lanes) != 2:
         raise ValueError(f"expected two backsub_lane regions, found {len(lanes)}")
+    lanes += [r for r in regions if r.function == "back_substitute"]
     return Region("backsub_lane", tuple(p for r in lanes for p in r.processes),
                   tuple(st for r in lanes for st in r.streams))
 

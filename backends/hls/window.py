@@ -251,6 +251,17 @@ class WindowLayout(WindowTemplate):
         if not self.kept:
             return {"kept": 0}
         from fgc_backends.cfamily.printer import HlsCodePrinter
+
+        locals_, kf_vars = self._kf_vars()
+        eps = np.finfo(np.float64 if linear_cxx == "double" else np.float32).eps
+        return {"kept": self.kept, "locals": locals_, "kf_vars": kf_vars,
+                "flat_s": self.vector_words(),
+                "jacobian_step": HlsCodePrinter({}).literal(float(np.sqrt(eps) * 10)),
+                "mv_ii": self.matvec_ii(linear_cxx, part)}
+
+    def _kf_vars(self) -> tuple[list, list[dict]]:
+        """The template's Log kernels and slot 0's variables (kind, vector or not, tangent
+        dimension, storage and tangent offsets in the keyframe)."""
         from fgc_backends.cfamily.retract import local_kinds
 
         t = self.template
@@ -265,10 +276,19 @@ class WindowLayout(WindowTemplate):
                             "t": t_off})
             s_off += v.storage_dim
             t_off += v.dim
-        eps = np.finfo(np.float64 if linear_cxx == "double" else np.float32).eps
-        return {"kept": self.kept, "locals": locals_, "kf_vars": kf_vars,
-                "jacobian_step": HlsCodePrinter({}).literal(float(np.sqrt(eps) * 10)),
-                "mv_ii": self.matvec_ii(linear_cxx, part)}
+        return locals_, kf_vars
+
+    def vector_words(self) -> list[int]:
+        """Per tangent direction of a keyframe its storage word if its variable is a vector
+        (retraction x + δ, Log b − a: the re-expression's central differences need no datapath
+        pass for it, fgc_stream.h), else −1."""
+        _, kf_vars = self._kf_vars()
+        out = [-1] * self.kf_dim
+        for v in kf_vars:
+            if v["flat"]:
+                for i in range(v["dim"]):
+                    out[v["t"] + i] = v["s"] + i
+        return out
 
     def matvec_ii(self, linear_cxx: str, part: str = DEFAULT_PART) -> int:
         """The kept net's matrix-vector loop's II: a row's sum returns to the adder every

@@ -221,11 +221,13 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     if linear == "cholesky":  # per block type its linearize_<b>: the datapath beside its HGC
         expected |= {f"linearize_{b}": 2 for b in range(len(program.blocks))}
     assert ran == expected
-    # Cholesky's assembler beside the cascade (cholesky_overlap, counted as branches: no region)
-    # and back-substitution's two backsub_lane regions: a lane's solve beside the other's load
+    # Cholesky's assembler beside the cascade (cholesky_overlap, counted as branches: no region),
+    # back-substitution's two backsub_lane regions (a lane's solve beside the other's load) and
+    # back_substitute's (the slots beside the state update they feed)
     overlap = 2 if linear == "cholesky" else 0
-    assert len(procs) == sets * per_set + overlap + 4 and procs[-4:] == (
-        "backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
+    assert len(procs) == sets * per_set + overlap + 6 and procs[-6:] == (
+        "backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0", "backsub_slots",
+        "backsub_retire")
 
 
 # the serial ordering with 3 units (heavy: about 30 s on 2 cores) repeats the two-ended case's
@@ -248,10 +250,11 @@ def test_cycle_counting_csim_equals_the_model(linear, option):
     phases, events = measure("t", graph, solver)
     assert events["solve"] >= 1 and events["call"] == 1
     # Cholesky: the Jacobian pass runs inside the hgc group's regions (evaluate_<b> alongside
-    # its HGC, linearize_<b>)
-    expected = {"setup", "factor_cost", "state_update", "lm_control",
+    # its HGC, linearize_<b>); the state update runs inside back_substitute's region, fed by it
+    expected = {"setup", "factor_cost", "lm_control",
                 "backsub"} | ({"factor_jacobian", "gradient", "qr_stack", "qr", "qr_commit"}
                               if linear == "qr" else {"hgc", "assemble", "cholesky"})
+    assert "state_update" not in phases
     assert expected <= {g for g, (c, m) in phases.items() if c > 0 and m > 0}
     for g, (counted, model) in phases.items():
         assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)

@@ -270,10 +270,11 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
                                     "qr_evaluate", "qr_collect")
     backsub = backsub_region(_backsub(out))
     assert backsub.processes == ("backsub_set0", "backsub_load1", "backsub_set1",
-                                 "backsub_load0") and not backsub.streams
+                                 "backsub_load0", "backsub_slots", "backsub_retire")
+    assert backsub.streams == (("dx", ""),)  # the solved words to the state update
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams))
-    assert (len(procs), len(streams)) == ((units + 4) * 2 + 4, 2 * (4 * units + 1))
+    assert (len(procs), len(streams)) == ((units + 4) * 2 + 6, 2 * (4 * units + 1) + 1)
     assert tuple(p for p in procs if p.startswith("backsub")) == backsub.processes
     for p in procs:  # the comment block lists the plan's network
         assert f"//   process {p}\n" in kernel
@@ -291,14 +292,16 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     assert region.processes == ("cpe_feed", "cpe_cascade::run", "cpe_drain")
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     # feed, per CPE its tap and itself, drain, the assembler beside the cascade (fgc_eliminate.h's
-    # cholesky_overlap), back-substitution; links, tapped and recip, the assembler's stream
+    # cholesky_overlap), back-substitution's lanes, its slot process and the state update it
+    # feeds; links, tapped and recip, the assembler's stream, back_substitute's
     (overlap,) = read_network(_texts(out, "w100", "fgc_eliminate.h")[1])
     assert overlap.processes == ("cholesky_assembler", "cholesky_cascade")
     header += _texts(out, "w100", "fgc_eliminate.h")[1]
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == \
-        (2 * cpe + 8, 3 * cpe + 2)
-    assert procs[-4:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
-    assert all(f"//   process {p}\n" in kernel for p in procs[-4:])
+        (2 * cpe + 10, 3 * cpe + 3)
+    assert procs[-6:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0",
+                          "backsub_slots", "backsub_retire")
+    assert all(f"//   process {p}\n" in kernel for p in procs[-6:])
     assert f"//   stream cpe_link{cpe} " in kernel
 
 

@@ -124,12 +124,12 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # retract: the Pose2 datapath (the state update's default limits add 4, mul 6, trig 2,
     # special 1) for the retraction's 8 adds, 17 multiplies, 2 sin/cos and 2 special functions;
     # II = max(8 / 4, ⌈17 / 6⌉, 2 / 2, 2 specials x II 12 / 1) = 24; its depth is the
-    # retraction's critical path: 3 variables take 2 x 24 + depth
+    # retraction's critical path. It runs in back_substitute's region (below), no phase apart
     allocated, ii, depth = retract_datapath("Pose2", F32)
     assert dict(allocated) == {"add": 4, "mul": 6, "trig": 2, "special": 1} and ii == 24
     assert depth == critical_path(KernelText.of(retract_kernel(variable_class("Pose2"))),
                                   _sim_table(F32))
-    assert phases["state_update"] == 2 * 24 + depth
+    assert "state_update" not in phases
     # LM control per linearisation: the gradient's largest entry (9 entries into 1 = compare
     # latency partial maximum: II 1, depth |.| 2 + compare 1 = 3: 11), |x| (12 storage words
     # into 4 partial sums: II 1, depth mul 3 + add 4 (1 + ⌈log₂ 4⌉) = 15: 26); per solve: the
@@ -149,12 +149,19 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # A needs them, so slot 2 loads it alone: its separator in (3) and 7 + 6 + 5 = 18 words
     # (8 + 9 = 17) -> 20; slot 3 solves A (52) beside B's load (17), the slower plus the
     # other's fill (9), between B's separator in (3) and A's solution out (3) -> 67; slot 4
-    # solves B -> 55
-    sizes = [phases[f"backsub_level{k}"] for k in range(5)]
-    assert sizes == [13, 55, 20, 67, 55] and "backsub_level5" not in phases
+    # solves B -> 55: the slots end at 13, 68, 88, 155, 210. Beside them the state update
+    # (backsub_retire: a variable an iteration at II 24, 2 + depth deep: a step's 3 words in, a
+    # pair a cycle, then the datapath) retracts the root at 68, A when it is sent at 155, B at
+    # 210: it ends at 210 + 2 + depth, which the phase adds after the slots
+    plan_phase = {ph.name: ph for ph in plan.phases}["backsub"]
+    slots, retire = plan_phase.processes
+    sizes = [sum(lp.cycles for lp in slots.loops[3 * k:3 * k + 3]) for k in range(5)]
+    assert sizes == [13, 55, 20, 67, 55] and len(slots.loops) == 15
+    assert retire.loops[0].cycles == 2 + depth
+    assert phases["backsub"] == 210 + 2 + depth
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
-                                  if k.startswith(("qr_", "backsub_")))
+                                  if k.startswith(("qr_", "backsub")))
 
 
 def _is_update(unit) -> bool:

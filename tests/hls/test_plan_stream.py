@@ -75,3 +75,102 @@ def test_the_slots_a_batch_step_does_not_reach_cost_only_their_own_rows(paper_a_
     # nothing held: the step's QR is the plan's, and with nothing masked the window's too
     assert sum(steps[-1]) == sum(per_slot(b.size - 1, unit=False))
     assert model.qr_cycles(frozenset(), True) == model.group["qr"]
+
+
+def test_the_marginal_and_the_kept_net_cost_the_longer_of_the_two(paper_a_n7):
+    _, model = paper_a_n7
+    price = model.price(5, 2)  # a keyframe leaves (the marginal) and three are kept below
+    side = {"marginal", "kept_reexpress", "kept_walk", "overlap"}
+    rest = sum(t.cycles for t in price.terms if t.name not in side)
+    marginal = price.term("marginal").cycles
+    kept = price.term("kept_reexpress").cycles + price.term("kept_walk").cycles
+    assert marginal > 0 and kept > 0
+    assert price.cycles == rest + max(marginal, kept)
+
+
+def test_the_marginal_reuses_the_rows_of_lms_last_linearisation(paper_a_n7):
+    _, model = paper_a_n7
+    events = model.events_of(2)  # the last iteration took no step: X is where LM linearised
+    again = model.price(5, 2, {**events, "relinearize": 1}).term("marginal").each
+    reused = model.price(5, 2, {**events, "relinearize": 0}).term("marginal").each
+    assert again - reused == model.group["factor_jacobian"] + model.group["gradient"]
+    assert model.price(5, 2).term("marginal").each == reused
+    # a step accepted in the last iteration too: linearised again
+    moved = {**events, "accept": events["linearize"]}
+    assert model.price(5, 2, moved).term("marginal").each == again
+
+
+def test_a_vector_variables_directions_need_no_datapath_pass(paper_a_n7):
+    layout, model = paper_a_n7
+    words = layout.vector_words()  # LIO's keyframe: a pose, a velocity, a bias
+    assert len(words) == layout.kf_dim == 15
+    assert words[:6] == [-1] * 6  # the pose: not a vector
+    assert words[6:] == sorted(words[6:]) and len(set(words[6:])) == 9
+    assert all(0 <= w < layout.kf_words for w in words[6:])
+    # four passes per pose direction and the Log at the start, none for the nine others
+    passes = [lp for ph in model.design_plan().phases if ph.name == "stream_kept_reexpress"
+              for p in ph.processes for lp in p.loops if lp.name == "pass"]
+    assert sum(lp.repeat for lp in passes) == 4 * 6 + 1
+
+
+TASKS = r"""
+#include <cstdio>
+#include "fgc_cycles.h"
+int main() {
+    for (int longer = 0; longer < 2; ++longer) {
+        FGC_CYCLES("a", 0, "before", 10, 1, 1);  // 10 cycles
+        FGC_TASK();  // task 1: a parallel group, its slower branch plus the other's fill: 110
+        FGC_BRANCH();
+        FGC_CYCLES("b", 0, "l", 91, 1, 10);
+        FGC_BRANCH();
+        FGC_CYCLES("c", 0, "l", 41, 1, 10);
+        FGC_JOIN();
+        FGC_TASK();  // task 2: 120 cycles, or 105
+        FGC_CYCLES("d", 0, "l", longer ? 101 : 86, 1, 20);
+        FGC_TASKS_JOIN();
+        FGC_CYCLES("e", 0, "after", 5, 1, 1);  // 5 cycles
+#ifdef FGC_COUNT_CYCLES
+        std::printf("%ld\n", fgc_cycles::total());
+        fgc_cycles::reset();
+#endif
+    }
+    return 0;
+}
+"""
+
+
+def test_a_task_group_counts_its_slowest_task(tmp_path):
+    """fgc_cycles.h: independent processes of one DATAFLOW region (FGC_TASK … FGC_TASKS_JOIN,
+    the marginal beside the kept net) take the slowest one's cycles, whatever groups a task
+    holds; without FGC_COUNT_CYCLES the macros compile to nothing."""
+    import shutil
+    import subprocess
+    from pathlib import Path
+
+    if shutil.which("g++") is None:
+        pytest.skip("needs g++")
+    include = Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
+    src = tmp_path / "tasks.cpp"
+    src.write_text(TASKS)
+    exe = tmp_path / "tasks"
+    flags = ["g++", "-std=c++17", "-Wall", "-Werror", "-Wno-unknown-pragmas", "-I", str(include)]
+    subprocess.run([*flags, "-DFGC_COUNT_CYCLES", str(src), "-o", str(exe)], check=True)
+    out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
+    assert out.split() == [str(10 + 110 + 5), str(10 + 120 + 5)]
+    subprocess.run([*flags, "-fsyntax-only", str(src)], check=True)
+
+
+def test_each_stream_function_has_one_call_site_in_the_header():
+    """The second reader (reader.py) reads every preprocessor branch of fgc_stream.h and takes
+    each call site for an instance: a fallback call of the marginal in another branch would
+    read as a second copy of the factor datapaths."""
+    import re
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
+            / "fgc_stream.h").read_text()
+    code = re.sub(r"//[^\n]*", "", text)
+    for name in ("marginalize", "reexpress", "kept_walk", "keep", "marginal_task", "kept_task",
+                 "marginal_and_kept", "write_tau"):
+        sites = re.findall(rf"\b{name}<CFG>\(", code)
+        assert len(sites) == (2 if name == "write_tau" else 1), name  # marginal, batch step

@@ -6,15 +6,19 @@ from __future__ import annotations
 from hls_programs import chain
 
 from fgc_backends.cost.operators import FLOAT32
-from fgc_backends.hls.plan import build_plan
+from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
+from fgc_backends.hls.plan.loops import _tables
+from fgc_backends.hls.plan.model import Loop
 from fgc_backends.hls.units.backsub import (
     backsub_loops,
     backsub_operators,
     backsub_slots,
     backsub_words,
     load_loop,
+    retire_region,
     triangle_trip,
 )
+from fgc_backends.hls.units.state_update import retire_order, retire_timing
 
 
 def test_cond_backsub_loops_by_hand():
@@ -58,7 +62,7 @@ def test_two_backsub_lanes_whatever_the_unit_sets():
                                                                            "qr1_backsub"]
     cholesky = build_plan(chain(5, linear="cholesky", cpe=2))
     assert cholesky.unit("trisolve").instances == 2  # the two lanes
-    assert any(ph.name.startswith("backsub_level") for ph in cholesky.phases)
+    assert any(ph.name == "backsub" for ph in cholesky.phases)
 
 
 def test_slots_overlap_a_solve_with_the_next_load_unless_it_needs_that_solution():
@@ -80,3 +84,42 @@ def test_two_lanes_on_a_one_set_qr_design():
     plan = build_plan(chain(5, linear="qr", ordering="serial"))
     assert [u.name for u in plan.units if u.name.endswith("_backsub")] == ["qr0_backsub",
                                                                            "qr1_backsub"]
+
+
+def test_the_state_update_runs_beside_the_slots_as_steps_are_sent():
+    # three slots of 100, 50 and 80 cycles; steps sent at the ends of slots 0 and 2 (100,
+    # 230) with 2 and 3 variables; the retire issues a variable every 10 cycles, 40 deep
+    slots = [[Loop("a", 1, 1, 100)], [Loop("b", 1, 1, 50)], [Loop("c", 1, 1, 80)]]
+    # first step: 100, 110; second: 230, 240, 250 -> ends 290
+    assert retire_region(slots, [0, 2], [2, 3], 10, 40) == 290
+    # a slow retire (II 100): 100, 200; then max(300, 230) = 300, 400, 500 -> 540
+    assert retire_region(slots, [0, 2], [2, 3], 100, 40) == 540
+    # nothing to retire: the slots alone
+    assert retire_region(slots, [], [], 10, 40) == 230
+
+
+def test_back_substitution_feeds_the_state_update():
+    program = chain(7, linear="qr")
+    plan = build_plan(program)
+    assert "state_update" not in {ph.name for ph in plan.phases}
+    assert [u.name for u in plan.units if u.name.startswith("state_update")]  # its datapaths
+    slots, retire = {ph.name: ph for ph in plan.phases}["backsub"].processes
+    solved = [s for s, _, _ in backsub_slots(plan_tables(program))]
+    variables, first = retire_order(program, [s for s in solved if s >= 0])
+    assert sorted(variables) == list(range(len(program.variables)))  # each retracted once
+    assert sum(1 for s in first if s >= 0) == len(program.schedule.steps)
+    # the retire adds at most its last variable's depth after the last slot here (a step's
+    # solve is slower than its variables' retraction)
+    ii, depth = retire_timing(program.variables, plan.ops, max(s.frontal_dim
+                                                     for s in program.schedule.steps))
+    assert 0 < retire.loops[0].cycles <= depth
+    # the what-if whole-matrix Cholesky has no emitted driver: its state update is a pass
+    whole = build_plan(chain(5, linear="cholesky", cpe=2),
+                       PlanOptions.of(chain(5, linear="cholesky", cpe=2),
+                                      hessian_storage="dense"))
+    assert "state_update" in {ph.name for ph in whole.phases}
+    assert plan_cost(whole).cycles > 0
+
+
+def plan_tables(program):
+    return _tables(program)

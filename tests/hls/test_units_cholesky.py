@@ -124,10 +124,21 @@ def test_the_hgc_is_priced_per_block_type_as_its_gram_entries_bind_it():
     assert len(gram_entries(program.blocks[many])) == 28
     # all instances' entries one pipelined loop (the next instance's rows read alongside): the
     # HGC (28 entries an instance) is slower than the datapath, so a second lane over the
-    # first rows takes half of them: 14 iterations an instance (more than m + 3 and than the
-    # last row's span of 6 + the add)
-    assert (entries.trip, entries.ii, entries.repeat) == (14 * counts[many], 1, 1)
-    assert entries.depth == 3 + 2 * 4 + 4 + 3
+    # first rows takes some of them; paired (II 2: two lane-A entries and one lane-B entry an
+    # iteration, which still ends within the datapath's loop), lane B a third: 10 iterations
+    # an instance (more than m + 3 and than its last-row span + the add), one cycle
+    # deeper
+    from fgc_backends.hls.units.cholesky import gram_config, jacobian_cycles, jacobian_ii
+    jac = [p for ph in plan.phases for p in ph.processes]
+    lane_a, lane_b, k, paired = gram_config(program, many, 32, jacobian_ii(jac),
+                                            jacobian_cycles(jac))
+    assert paired and (len(lane_a), len(lane_b)) == (18, 10)
+    assert (entries.trip, entries.ii, entries.repeat) == (10 * counts[many], 2, 1)
+    assert entries.depth == 3 + 2 * 4 + 4 + 3 + 1
+    # its operators at II 2: the two lane-A entries' 2m products on m multipliers, lane B's K
+    # on ceil(K / 2)
+    hgc = dict(plan.unit(f"hgc_{many}").operators)
+    assert hgc == {"mul": m + -(-k // 2), "add": m + -(-(k - 1) // 2)}
 
 
 def test_an_instance_of_few_gram_entries_is_padded_to_keep_its_hazards_apart(monkeypatch):

@@ -58,16 +58,18 @@ def test_a_registered_unit_is_assembled_and_priced(programs, monkeypatch):
     assert b.cycles - a.cycles == 4 * 1 + 3  # (trip - 1) × II + depth
     assert b.linear_cycles - a.linear_cycles == 7
     assert b.dsp - a.dsp == 2 * after.ops.mul.dsp
-    # a "solve" phase runs after the linear solver's and before the state update
+    # a "solve" phase runs after the linear solver's (back-substitution with the state update
+    # it feeds) and before the cost pass
     names = [ph.name for ph in after.phases]
     assert names.index("extra") > max(i for i, n in enumerate(names) if n.startswith("backsub"))
-    assert names.index("extra") < names.index("state_update")
+    assert names.index("extra") < names.index("factor_cost")
 
 
 def test_phases_follow_the_iteration_slots(programs):
     order = [ph.name for ph in build_plan(programs["qr"]).phases]
     assert order[:2] == ["factor_jacobian", "gradient"]
-    assert order[-7:] == ["state_update", "factor_cost", "lm_iteration", "lm_control",
+    # the state update runs inside back-substitution's phase (fed by it)
+    assert order[-7:] == ["backsub", "factor_cost", "lm_iteration", "lm_control",
                           "lm_accept", "setup", "rounding_noise"]
     assert SLOTS == ("linearize", "solve", "retract", "cost", "control", "call", "rejection")
 

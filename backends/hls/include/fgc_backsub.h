@@ -171,22 +171,32 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
 
 #endif  // FGC_BACKSUB_H
 
-// ---- The driver: back_substitute<CFG>() on two lanes (units/backsub.py's backsub_slots). Slot k
-// solves one step on lane BS_LANE[k] (its conditional loaded the slot before) while the next
-// step's conditional loads into the other lane, S xs summed on the way (cond_load); a step whose
-// separator needs the step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the
-// steps, -1 none). Per slot: the loaded step's separator solution in from DELTA (PORTS words a
-// cycle), the slot's backsub_lane<p> region (lane p's backsub_set<p> beside the other lane's
-// backsub_load), the solved step's frontal solution out into DELTA.
+// ---- The driver: back_substitute<CFG>(), one DATAFLOW region of two processes.
+//
+// backsub_slots: the conditionals on two lanes (units/backsub.py's backsub_slots). Slot k solves
+// one step on lane BS_LANE[k] (its conditional loaded the slot before) while the next step's
+// conditional loads into the other lane, S xs summed on the way (cond_load); a step whose
+// separator needs the step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the steps,
+// -1 none). Per slot: the loaded step's separator solution in from DELTA (PORTS words a cycle),
+// the slot's backsub_lane<p> region (lane p's backsub_set<p> beside the other lane's
+// backsub_load), the solved step's frontal solution out into DELTA and, a pair of words a
+// cycle, into `dx` to the state update.
+//
+// backsub_retire: the state update fed by back-substitution: X_TRIAL = X (+) delta variable by
+// variable as their steps' words arrive (its own copy of delta, by tangent index), through the
+// kernel's retraction datapaths (CFG::retract_variable), while the slot process solves the next
+// steps. Every variable is a frontal variable of exactly one step, so X_TRIAL is whole when the
+// region ends; LM control takes it from there (its retract_trial does nothing more here).
 //
 // Included a second time by the kernel with FGC_BACKSUB_DRIVER defined, inside its namespace
 // (fgc::, or fgc::les for the mixed design), after its schedule tables and the BS_* slot tables,
-// which these functions name: BS_SLOTS, BS_SOLVE, BS_LOAD, BS_LANE, STEP_F, STEP_W,
-// STEP_COL_BEGIN, STEP_COL, STEP_COND_OFF (tables); COND, DELTA, L (the linear solver's
-// scalar), MAX_F. CFG is the kernel's LesConfig (T, MAX_F, MAX_W, MAX_COLS, PARTIALS, the
-// latencies cond_load / cond_backsub read, MOVE_DEPTH: the copies' depth). The two lanes are
-// written out (each its own memories and RTL instance: backsub_set0 / backsub_set1, ...), the
-// number the plan prices (units/backsub.py's LANES).
+// which these functions name: BS_SLOTS, BS_SOLVE, BS_LOAD, BS_LANE, RETIRE_VARS, RETIRE_STEP,
+// STEP_F, STEP_W, STEP_COL_BEGIN, STEP_COL, STEP_COND_OFF (tables); COND, DELTA, L (the linear
+// solver's scalar), MAX_F. CFG is the kernel's LesConfig (T, MAX_F, MAX_W, MAX_COLS, N_TANGENT,
+// N_VARIABLES, PARTIALS, the latencies cond_load / cond_backsub read, MOVE_DEPTH: the copies'
+// depth, the retire loop's RETIRE_II and RETIRE_DEPTH, and the hook retract_variable). The two
+// lanes are written out (each its own memories and RTL instance: backsub_set0 / backsub_set1,
+// ...), the number the plan prices (units/backsub.py's LANES).
 #if defined(FGC_BACKSUB_DRIVER) && !defined(FGC_BACKSUB_DRIVER_H)
 #define FGC_BACKSUB_DRIVER_H
 
@@ -196,6 +206,9 @@ L BS_X0[MAX_F];  // its frontal solution
 L BS_COND1[MAX_F * (MAX_W + 1)];  // lane 1's
 L BS_XS1[MAX_W + 1];
 L BS_X1[MAX_F];
+
+// two solution words a stream word (the copies move two words a cycle)
+struct BsPair { L word[2]; };
 
 // Lane u's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load left
 // (f = 0: none this time).
@@ -250,10 +263,10 @@ void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
     backsub_load0<CFG>(off, f0, s0, xs0, cond0, part0);
 }
 
-// Back-substitution root first, slot by slot, into DELTA.
+// The slots, root first, into DELTA; each solved step's words to the state update too.
 template <class CFG>
-void back_substitute() {
-    FGC_PHASE("backsub");
+void backsub_slots(hls::stream<BsPair>& dx) {
+    FGC_OUTER_BRANCH();  // csim cycle counting only: this process beside backsub_retire
     L bs_part0[2][CFG::PARTIALS][CFG::MAX_F];  // lane 0's partial sums of S xs (word lane, bank, row)
 #pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=2
@@ -288,12 +301,59 @@ void back_substitute() {
         for (int c = 0; c < sf; c += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_F+1)/2
 #pragma HLS PIPELINE II=1
+            BsPair out;
             for (int h = 0; h < 2; ++h) {
-                if (c + h < sf) DELTA[STEP_COL[scb + c + h]] = p == 0 ? BS_X0[c + h] : BS_X1[c + h];
+                const L v = c + h < sf ? (p == 0 ? BS_X0[c + h] : BS_X1[c + h]) : L(0);
+                if (c + h < sf) DELTA[STEP_COL[scb + c + h]] = v;
+                out.word[h] = v;
             }
+            dx.write(out);
         }
         FGC_CYCLES("backsub_copy", 0, "solution_out", (sf + 1) / 2, 1, CFG::MOVE_DEPTH);
+        if (sv >= 0) FGC_OUTER_SEND();
     }
+}
+
+// The state update as the solutions arrive: one pipelined loop over the variables in the order
+// they are solved (RETIRE_VARS), a variable every CFG::RETIRE_II cycles; the first variable of
+// a step (RETIRE_STEP: its step, else -1) first takes the step's words from `dx` (stalling until
+// they come), then each variable is retracted by CFG::retract_variable (its type's datapath).
+template <class CFG>
+void backsub_retire(hls::stream<BsPair>& dx) {
+    FGC_OUTER_BRANCH();
+    L delta[CFG::N_TANGENT];  // the solved entries by tangent index
+    for (int i = 0; i < CFG::N_VARIABLES; ++i) {
+#pragma HLS PIPELINE II=CFG::RETIRE_II
+        const int s = RETIRE_STEP[i];
+        if (s >= 0) {
+            FGC_OUTER_RECEIVE();  // csim cycle counting: no earlier than the step was sent
+            const int f = STEP_F[s], cb = STEP_COL_BEGIN[s];
+            for (int c = 0; c < CFG::MAX_F; c += 2) {
+#pragma HLS UNROLL
+                if (c < f) {
+                    const BsPair in = dx.read();
+                    for (int h = 0; h < 2; ++h) {
+                        if (c + h < f) delta[STEP_COL[cb + c + h]] = in.word[h];
+                    }
+                }
+            }
+        }
+        CFG::retract_variable(RETIRE_VARS[i], delta);
+        FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
+    }
+}
+
+// Back-substitution root first into DELTA, the state update X_TRIAL = X (+) DELTA beside it.
+template <class CFG>
+void back_substitute() {
+#pragma HLS DATAFLOW
+    hls::stream<BsPair> dx;  // the solved steps' frontal solutions, a pair of words a word
+#pragma HLS STREAM variable=dx depth=CFG::MAX_F
+    FGC_PHASE("backsub");
+    backsub_slots<CFG>(dx);
+    backsub_retire<CFG>(dx);
+    FGC_OUTER_JOIN();
+    FGC_DRAINED(&dx, 1);
 }
 
 #endif  // FGC_BACKSUB_DRIVER

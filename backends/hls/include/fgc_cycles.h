@@ -25,6 +25,14 @@
 // execution of something the plan prices per execution (a linearisation, a linear solve, a
 // retraction, a cost pass, ...); fgc_cycles::phase_totals() applies total()'s arithmetic to each
 // run of records of one phase, and fgc_cycles::events() lists the counts.
+//
+// An outer group (FGC_OUTER_BRANCH at the start of each of its two processes, FGC_OUTER_JOIN
+// after both: back_substitute's slot process beside the state update's backsub_retire, the first
+// itself holding parallel groups) takes the longer of: the first process (its records as
+// span_total prices them), and the second, one pipelined loop whose iterations (a record each)
+// issue an II apart, an iteration after the i-th FGC_OUTER_RECEIVE no earlier than the end of
+// the first process's records up to its i-th FGC_OUTER_SEND; it ends its depth after its last
+// issue - as units/backsub.py's retire_region prices it.
 #ifndef FGC_CYCLES_H
 #define FGC_CYCLES_H
 
@@ -86,6 +94,12 @@ inline void event(const char* name) { ++state().events[name]; }
 
 inline void branch() { state().marks.push_back(std::make_pair(state().records.size(), 'b')); }
 inline void join() { state().marks.push_back(std::make_pair(state().records.size(), 'j')); }
+// tasks (FGC_TASK / FGC_TASKS_JOIN): independent processes of one DATAFLOW region with no channel
+// between them (the incremental design's marginal beside its kept net), each a span of records
+// that may hold parallel groups and regions of its own
+inline void task() { state().marks.push_back(std::make_pair(state().records.size(), 'T')); }
+inline void tasks_join() { state().marks.push_back(std::make_pair(state().records.size(), 'U')); }
+inline void mark(char what) { state().marks.push_back(std::make_pair(state().records.size(), what)); }
 
 inline void sequential() {
     state().current = -1;
@@ -210,6 +224,7 @@ inline long span_total(std::size_t from, std::size_t to) {
         }
     };
     for (const auto& m : s.marks) {
+        if (m.second != 'b' && m.second != 'j') continue;  // tasks_total's, outer_total's marks
         if (m.second == 'b' ? (m.first < from || m.first >= to) : (m.first <= from || m.first > to))
             continue;
         if (m.second == 'b') {
@@ -235,8 +250,102 @@ inline long span_total(std::size_t from, std::size_t to) {
     return sum + total_range(at, to);
 }
 
+// Records [from, to) with their outer groups (FGC_OUTER_*: see the comment at the top); the
+// rest priced by span_total. An outer group's first mark at `from` and its join at `to` belong
+// to the span.
+inline long outer_total(std::size_t from, std::size_t to) {
+    const State& s = state();
+    long sum = 0;
+    std::size_t at = from;
+    std::vector<std::size_t> branches, sends, receives;
+    bool open = false;
+    auto close_group = [&](std::size_t end) {
+        const std::vector<Record>& r = s.records;
+        const std::size_t a0 = branches[0], b0 = branches.size() > 1 ? branches[1] : end;
+        const long first = span_total(a0, b0);
+        // the second process: one pipelined loop, a record (trip 1) an iteration; each issues
+        // its II after the one before, and one after FGC_OUTER_RECEIVE i no earlier than the
+        // end of the first process's records up to its i-th FGC_OUTER_SEND
+        long issue = 0, last = 0, gate = -1;
+        bool any = false;
+        std::size_t next = 0;
+        for (std::size_t q = b0; q < end; ++q) {
+            for (; next < receives.size() && receives[next] <= q; ++next)
+                gate = next < sends.size() ? span_total(a0, sends[next]) : first;
+            if (r[q].trip <= 0) continue;
+            long at = any ? issue + r[q].ii : 0;
+            if (gate > at) at = gate;
+            gate = -1;
+            issue = at;
+            any = true;
+            last = at + r[q].depth;
+        }
+        return first > last ? first : last;
+    };
+    for (const auto& m : s.marks) {
+        const char w = m.second;
+        if (w != 'B' && w != 'S' && w != 'R' && w != 'J') continue;
+        if (w == 'J' ? (m.first <= from || m.first > to) : (m.first < from || m.first >= to))
+            continue;
+        if (w == 'B') {
+            if (!open) {
+                sum += span_total(at, m.first);
+                open = true;
+                branches.clear();
+                sends.clear();
+                receives.clear();
+            }
+            branches.push_back(m.first);
+        } else if (w == 'S' && open) {
+            sends.push_back(m.first);
+        } else if (w == 'R' && open) {
+            receives.push_back(m.first);
+        } else if (w == 'J' && open) {
+            sum += close_group(m.first);
+            open = false;
+            at = m.first;
+        }
+    }
+    if (open) return sum + close_group(to);
+    return sum + span_total(at, to);
+}
+
+// Records [from, to) with task groups (FGC_TASK up to FGC_TASKS_JOIN): the stretches between
+// groups as outer_total prices them; a group its slowest task (the processes share no channel, so
+// the region ends when the slowest one does).
+inline long tasks_total(std::size_t from, std::size_t to) {
+    const State& s = state();
+    long sum = 0, slow = 0;
+    std::size_t at = from, start = from;
+    bool open = false;
+    for (const auto& m : s.marks) {
+        if ((m.second != 'T' && m.second != 'U') || m.first < from || m.first > to) continue;
+        if (m.second == 'T') {
+            if (!open) {
+                sum += outer_total(at, m.first);
+                open = true;
+                slow = 0;
+            } else {
+                const long c = outer_total(start, m.first);
+                slow = c > slow ? c : slow;
+            }
+            start = m.first;
+        } else if (open) {
+            const long c = outer_total(start, m.first);
+            sum += c > slow ? c : slow;
+            open = false;
+            at = m.first;
+        }
+    }
+    if (open) {
+        const long c = outer_total(start, to);
+        return sum + (c > slow ? c : slow);
+    }
+    return sum + outer_total(at, to);
+}
+
 // The whole log.
-inline long total() { return span_total(0, log().size()); }
+inline long total() { return tasks_total(0, log().size()); }
 
 // Per phase (FGC_PHASE), the cycles of its records: each run of consecutive records of one
 // phase priced as span_total prices it, the runs of a phase added up.
@@ -247,7 +356,7 @@ inline std::map<std::string, long> phase_totals() {
     while (i < r.size()) {
         std::size_t j = i;
         while (j < r.size() && r[j].phase == r[i].phase) ++j;
-        out[r[i].phase] += span_total(i, j);
+        out[r[i].phase] += outer_total(i, j);
         i = j;
     }
     return out;
@@ -284,9 +393,15 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_SEQUENTIAL() ::fgc_cycles::sequential()
 #define FGC_BRANCH() ::fgc_cycles::branch()
 #define FGC_JOIN() ::fgc_cycles::join()
+#define FGC_TASK() ::fgc_cycles::task()
+#define FGC_TASKS_JOIN() ::fgc_cycles::tasks_join()
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) \
     ::fgc_cycles::wait(process, instance, on_process, on_instance, on_loop)
 #define FGC_DRAINED(streams, n) ::fgc_cycles::drained(streams, n, #streams)
+#define FGC_OUTER_BRANCH() ::fgc_cycles::mark('B')
+#define FGC_OUTER_SEND() ::fgc_cycles::mark('S')
+#define FGC_OUTER_RECEIVE() ::fgc_cycles::mark('R')
+#define FGC_OUTER_JOIN() ::fgc_cycles::mark('J')
 #define FGC_PHASE(name) ::fgc_cycles::phase(name)
 #define FGC_EVENT(name) ::fgc_cycles::event(name)
 
@@ -297,8 +412,14 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_SEQUENTIAL() ((void)0)
 #define FGC_BRANCH() ((void)0)
 #define FGC_JOIN() ((void)0)
+#define FGC_TASK() ((void)0)
+#define FGC_TASKS_JOIN() ((void)0)
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) ((void)0)
 #define FGC_DRAINED(streams, n) ((void)0)
+#define FGC_OUTER_BRANCH() ((void)0)
+#define FGC_OUTER_SEND() ((void)0)
+#define FGC_OUTER_RECEIVE() ((void)0)
+#define FGC_OUTER_JOIN() ((void)0)
 #define FGC_PHASE(name) ((void)0)
 #define FGC_EVENT(name) ((void)0)
 

@@ -3,11 +3,13 @@
 //
 //   FGC_STREAM_WINDOW    stream_shift<CFG>()    every slot down one (X and DATA_BUF keep the window)
 //                        stream_in<CFG>(m, ...) the call's keyframe into slot m
-//   FGC_STREAM_MARGINAL  marginalize<CFG>()     slot 0's elimination at the optimum -> tau, the
+//   FGC_STREAM_MARGINAL  marginalize<CFG>(cur)  slot 0's elimination at the optimum -> tau, the
 //                        write_tau<CFG>(rows)   factor written into slot 1's prior
-//   FGC_STREAM_KEPT      reexpress<CFG>(c), keep<CFG>(c), kept_walk<CFG>(first): the kept
+//   FGC_STREAM_KEPT      reexpress<CFG>(c, x0), keep<CFG>(c), kept_walk<CFG>(first, x0): the kept
 //                        conditionals, re-expressed, stored and walked back from the window
-//                        (kept_matvec<CFG>, kept_conditional<CFG> inside)
+//                        (kept_matvec<CFG>, kept_conditional<CFG> inside); with the marginal,
+//                        marginal_and_kept<CFG>: the marginal and the kept net's re-expression
+//                        and walk side by side (one DATAFLOW region, two processes)
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
 //   FGC_STREAM_WINDOW    stream_call<CFG>(op, x_in, data, x_out, [x_kept,] errors, info): the
@@ -31,8 +33,10 @@
 // retraction). T and L are the kernel's scalars. CFG is the kernel's StreamConfig: the plan's
 // (II, depth) of T's move / max / retract / div and L's acc / div / scatter loops, MV_II (the kept
 // matrix-vector product's), MAX_NEW and TRIP_BATCH_X (trip counts), and the hooks
-// leaf_step() (slot 0's step once more at mu = 0) and batch_solve(...) (the batch kernel's
-// entry). Cycles to FGC_CYCLES as the plan prices them.
+// leaf_step() (slot 0's step once more at mu = 0), at_linearisation(info) (LM stopped where it
+// last linearised: AB holds the rows at X) and batch_solve(...) (the batch kernel's entry); kept:
+// KF_FLAT_S (per tangent direction of a keyframe its storage word if its variable is a vector)
+// and the kernel's T_ADD_LAT. Cycles to FGC_CYCLES as the plan prices them.
 #ifndef FGC_STREAM_H
 #define FGC_STREAM_H
 
@@ -158,11 +162,16 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)]) {
 // slot 1 ([A | b], upper triangular from the QR unit), signed to a positive diagonal, its mean
 // A^-1 b by back-substitution, written with slot 1's estimate as its linearisation point into
 // slot 1's prior (which the next call's shift moves to slot 0). False, nothing written, if the
-// window is not finite at its optimum, slot 0 is rank deficient or tau is singular.
+// window is not finite at its optimum, slot 0 is rank deficient or tau is singular. `current`:
+// the window's rows (AB) are already its linearisation at X, the optimum (LM converged without
+// moving since its last linearisation: CFG::at_linearisation), so they are not computed again.
 template <class CFG>
-bool marginalize() {
+bool marginalize(bool current) {
     FGC_EVENT("marginal");
-    if (!linearize_all(X)) return false;
+    if (!current) {
+        FGC_EVENT("relinearize");
+        if (!linearize_all(X)) return false;
+    }
     if (!CFG::leaf_step()) return false;
     FGC_PHASE("marginal");
     const int n0 = STEP_NF_OFF[STREAM_LEAF_STEP];
@@ -197,25 +206,37 @@ void kept_matvec(const L m[STREAM_KF_T * STREAM_KF_T], const L v[STREAM_KF_T], L
     FGC_CYCLES("kept", 0, "matvec", STREAM_KF_T * STREAM_KF_T, CFG::MV_II, CFG::L_ACC_DEPTH);
 }
 
-// The newest kept conditional c, re-expressed at its parent's new estimate x (the window's slot 0):
+// The newest kept conditional c, re-expressed at its parent's new estimate x (the window's slot 0,
+// copied out of X before the call):
 // d_c -= S_c Log(next^-1 x), S_c = S_c J with J the derivative of Log(next^-1 (x (+) delta)) by
-// central differences of step STREAM_H (the simulator's Chain.local_jacobian); next_c = x.
+// central differences of step STREAM_H (the simulator's Chain.local_jacobian); next_c = x. Four
+// datapath passes per direction of a variable that is not a vector (KF_FLAT_S), none for a
+// vector's.
 template <class CFG>
-void reexpress(int c) {
+void reexpress(int c, const T x[STREAM_KF_X]) {
     FGC_PHASE("kept");
     const T h = T(STREAM_H);
-    T x[STREAM_KF_X], base[STREAM_KF_T], plus[STREAM_KF_T], minus[STREAM_KF_T], step[STREAM_KF_T];
+    T base[STREAM_KF_T], plus[STREAM_KF_T], minus[STREAM_KF_T], step[STREAM_KF_T];
     T moved[STREAM_KF_X];
     L jt[STREAM_KF_T][STREAM_KF_T];  // J transposed: column k of J in row k
-    L local[STREAM_KF_T], srow[STREAM_KF_T];
-    for (int k = 0; k < STREAM_KF_X; ++k) {
-#pragma HLS PIPELINE II=1
-        x[k] = X[SLOT_X[k]];
-    }
-    FGC_CYCLES("kept", 0, "parent_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    L local[STREAM_KF_T];
     keyframe_local(KEPT_NEXT + c * STREAM_KF_X, x, base);
     FGC_KEPT_PASS("log");
     for (int i = 0; i < STREAM_KF_T; ++i) {
+        const int sv = KF_FLAT_S[i];
+        if (sv >= 0) {
+            // a direction of a vector variable (retraction x + delta, Log b - a): only its own
+            // entry moves, by exactly what the passes below would compute; every other entry of
+            // the two passes is the same value, their difference zero
+            const T next_s = KEPT_NEXT[c * STREAM_KF_X + sv];
+            const T plus_i = (x[sv] + h) - next_s, minus_i = (x[sv] + T(-h)) - next_s;
+            for (int k = 0; k < STREAM_KF_T; ++k) {
+#pragma HLS PIPELINE II=1
+                jt[i][k] = k == i ? L((plus_i - minus_i) / (T(2) * h)) : L(0);
+            }
+            FGC_CYCLES("kept", 0, "vector_difference", STREAM_KF_T, 1, CFG::T_DIV_DEPTH + 3 * T_ADD_LAT);
+            continue;
+        }
         for (int k = 0; k < STREAM_KF_T; ++k) step[k] = T(0);
         step[i] = h;
         keyframe_retract(x, step, moved);
@@ -241,14 +262,34 @@ void reexpress(int c) {
         KEPT_D[c * STREAM_KF_T + i] -= shift[i];
     }
     FGC_CYCLES("kept", 0, "d_update", STREAM_KF_T, CFG::L_SCATTER_II, CFG::L_SCATTER_DEPTH);
-    for (int i = 0; i < STREAM_KF_T; ++i) {  // row i of S J = J^T (row i of S), in place
-        for (int k = 0; k < STREAM_KF_T; ++k) {
+    // S J column by column into snew (every column reads the whole of S): a direction q of a
+    // variable that is not a vector, sum_k S[:, k] J[k][q] with k outer and the rows inner, one
+    // product a cycle (each entry summed in k order from 0, as a dot product adds it); a
+    // vector variable's, J[q][q] S[:, q] (its column of J is zero but there: the same sum)
+    L snew[STREAM_KF_T][STREAM_KF_T];
+    for (int q = 0; q < STREAM_KF_T; ++q) {
+        if (KF_FLAT_S[q] < 0) {
+            for (int e = 0; e < STREAM_KF_T * STREAM_KF_T; ++e) {
+#pragma HLS PIPELINE II=CFG::MV_II
+#pragma HLS DEPENDENCE variable=snew inter false
+                const int k = e / STREAM_KF_T, r = e % STREAM_KF_T;
+                const L prev = k == 0 ? L(0) : snew[r][q];
+                snew[r][q] = prev + jt[q][k] * KEPT_S[(c * STREAM_KF_T + r) * STREAM_KF_T + k];
+            }
+            FGC_CYCLES("kept", 0, "sj_column", STREAM_KF_T * STREAM_KF_T, CFG::MV_II, CFG::L_ACC_DEPTH);
+        } else {
+            for (int r = 0; r < STREAM_KF_T; ++r) {
 #pragma HLS PIPELINE II=1
-            srow[k] = KEPT_S[(c * STREAM_KF_T + i) * STREAM_KF_T + k];
+                snew[r][q] = L(0) + jt[q][q] * KEPT_S[(c * STREAM_KF_T + r) * STREAM_KF_T + q];
+            }
+            FGC_CYCLES("kept", 0, "sj_vector", STREAM_KF_T, 1, CFG::L_ACC_DEPTH);
         }
-        FGC_CYCLES("kept", 0, "row_in", STREAM_KF_T, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-        kept_matvec<CFG>(&jt[0][0], srow, KEPT_S + (c * STREAM_KF_T + i) * STREAM_KF_T);
     }
+    for (int e = 0; e < STREAM_KF_T * STREAM_KF_T; ++e) {
+#pragma HLS PIPELINE II=1
+        KEPT_S[c * STREAM_KF_T * STREAM_KF_T + e] = snew[e / STREAM_KF_T][e % STREAM_KF_T];
+    }
+    FGC_CYCLES("kept", 0, "s_out", STREAM_KF_T * STREAM_KF_T, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
         KEPT_NEXT[c * STREAM_KF_X + k] = x[k];
@@ -291,15 +332,16 @@ void keep(int c) {
 }
 
 // Back-substitution through the kept conditionals c = first - 1 ... 0 from the window's slot 0
-// (keyframe first): x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
+// (keyframe first, x0: its estimate copied out of X):
+// x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
 template <class CFG>
-void kept_walk(int first) {
+void kept_walk(int first, const T x0[STREAM_KF_X]) {
     FGC_PHASE("kept");
     T parent[STREAM_KF_X], local_t[STREAM_KF_T], out[STREAM_KF_X], delta_t[STREAM_KF_T];
     L local[STREAM_KF_T], delta[STREAM_KF_T], row[STREAM_KF_T];
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-        parent[k] = X[SLOT_X[k]];
+        parent[k] = x0[k];
     }
     FGC_CYCLES("kept", 0, "parent_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     for (int c = first - 1; c >= 0; --c) {
@@ -389,6 +431,49 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
 #endif  // FGC_STREAM_BATCH
 
 #ifdef FGC_STREAM_WINDOW
+// The marginal and the kept net side by side: once the window has solved, slot 0's marginal
+// (linearisation, its QR step at mu = 0 on unit set 0, tau written into DATA_BUF) needs nothing
+// of the kept net, and the kept net's update (the newest conditional re-expressed at slot 0's
+// estimate, the walk back through the kept conditionals below it) nothing of the marginal's: two
+// processes of one DATAFLOW region, each on its own memories and datapaths (the marginal: X,
+// DATA_BUF, the factor datapaths, unit set 0; the kept net: the KEPT_* memories, X_KEPT, the
+// keyframe's Log and retraction kernels), slot 0's estimate copied out of X before the region.
+// keep(first) reads the marginal's conditional and writes kept memory, so it follows the region.
+// A design without one of the two runs that process empty (each function has one call site
+// whatever the parts: the second reader reads every preprocessor branch).
+template <class CFG>
+void marginal_task(int m, bool current, int code[1]) {
+    FGC_TASK();
+#ifdef FGC_STREAM_MARGINAL
+    code[0] = m == STREAM_W ? (marginalize<CFG>(current) ? 1 : 2) : 0;
+#else
+    (void)m;
+    (void)current;
+    code[0] = 0;
+#endif
+}
+
+template <class CFG>
+void kept_task(int first, const T x0[STREAM_KF_X]) {
+    FGC_TASK();
+#ifdef FGC_STREAM_KEPT
+    if (first > 0) reexpress<CFG>(first - 1, x0);
+    kept_walk<CFG>(first, x0);
+#else
+    (void)first;
+    (void)x0;
+#endif
+}
+
+template <class CFG>
+void marginal_and_kept(int m, bool current, int first, const T x0[STREAM_KF_X], int code[1]) {
+#pragma HLS DATAFLOW
+    marginal_task<CFG>(m, current, code);
+    kept_task<CFG>(first, x0);
+}
+#endif  // FGC_STREAM_WINDOW
+
+#ifdef FGC_STREAM_WINDOW
 #ifdef FGC_STREAM_KEPT
 #define FGC_STREAM_KEPT_ARG , T x_kept[STREAM_KEPT_WORDS]
 #else
@@ -460,15 +545,25 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     } else {
 #endif
         CFG::lm_solve(errors, info);
+        const bool current = CFG::at_linearisation(info);  // AB: the window linearised at X
+        T x0[STREAM_KF_X];  // slot 0's estimate: the kept net's parent
 #ifdef FGC_STREAM_KEPT
-        if (first > 0) reexpress<CFG>(first - 1);
+        FGC_PHASE("kept");
+        for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+            x0[k] = X[SLOT_X[k]];
+        }
+        FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        const int kept_first = first;
+#else
+        const int kept_first = 0;
 #endif
-#ifdef FGC_STREAM_MARGINAL
-        if (m == STREAM_W) marginal = marginalize<CFG>() ? 1 : 2;
-#endif
+        int code[1] = {0};
+        marginal_and_kept<CFG>(m, current, kept_first, x0, code);
+        FGC_TASKS_JOIN();
+        marginal = code[0];
 #ifdef FGC_STREAM_KEPT
         if (m == STREAM_W && marginal == 1) keep<CFG>(first);
-        kept_walk<CFG>(first);
 #endif
 #ifdef FGC_STREAM_BATCH
     }
@@ -549,7 +644,14 @@ void batch_kernel_solve(int j, int tau_slot, T x_io[STREAM_SLOTS * STREAM_KF_X],
     }
     FGC_CYCLES("batch", 0, "x_in", (j + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     CFG::lm_solve(errors, info);
-    const bool ok = CFG::linearize() && CFG::eliminate();
+    // the chain's rows at the optimum: AB already holds them if LM stopped where it last
+    // linearised (CFG::at_linearisation), else they are computed again
+    bool ok = true;
+    if (!CFG::at_linearisation(info)) {
+        FGC_EVENT("relinearize");
+        ok = CFG::linearize();
+    }
+    ok = ok && CFG::eliminate();
     info[3] = ok ? 1 : 0;
     FGC_PHASE("batch_out");
     for (int e = 0; e < (j + 1) * STREAM_KF_X; ++e) {

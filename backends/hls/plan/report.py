@@ -71,11 +71,12 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
     (the unit headers' regions: per QR unit set broadcast, qr_finish, n_u Update units,
     Evaluate and collect; for Cholesky the feed, per process element its tap and CPE, and the
     drain, then fgc_eliminate.h's cholesky_overlap: the assembler beside the cascade),
-    then back-substitution's (the kernel's ``backsub_lane<p>`` regions: lane p's
-    ``backsub_set<p>`` beside the other lane's ``backsub_load``, :func:`backsub_units` lanes).
-    Streams are the plan's stream channels; the back-substitution lanes have none (a solve
-    reads its lane's buffers, the load fills the other lane's: nothing passes between the two
-    processes of a region)."""
+    then back-substitution's (fgc_backsub.h's ``backsub_lane<p>`` regions: lane p's
+    ``backsub_set<p>`` beside the other lane's ``backsub_load``, :func:`backsub_units` lanes;
+    and back_substitute's region: the slot process beside the state update it feeds,
+    ``backsub_retire``). Streams are the plan's stream channels; the back-substitution lanes
+    have none (a solve reads its lane's buffers, the load fills the other lane's: nothing
+    passes between the two processes of a region); back_substitute has one (``backsub_dx``)."""
     if plan.linear == "qr" and plan.options.qr_unit == "stream":  # fgc_qr_stream.h's qrs_pass
         procs = tuple(p for s in range(unit_sets(plan)) for p in (
             f"qr{s}_source", *(f"qr{s}_{k}{t}" for t in range(plan.options.units)
@@ -91,6 +92,8 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
                                for p in (f"cpe_tap{i}", f"cpe{i}")), "cpe_drain",
                  "cholesky_assembler", "cholesky_cascade")
     procs += ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
+    if any(ch.name == "backsub_dx" for ch in plan.channels):  # the state update it feeds
+        procs += ("backsub_slots", "backsub_retire")
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
 
 

@@ -192,6 +192,16 @@ def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf
                                                           unit))).cycles
 
 
+def _relinearize(ev: dict) -> int:
+    """1 if the marginal (or a batch step's store) linearises the window (the chain) at its
+    optimum again: LM took a step after its last linearisation (fgc_stream.h); counted, the
+    ``relinearize`` event, else from the events: an accepted step in every iteration."""
+    relin = ev.get("relinearize")
+    if relin is None:
+        relin = int(ev.get("accept", 0) >= ev.get("linearize", 0))
+    return int(relin)
+
+
 class WindowUpdateModel:
     """The price of each call of the on-chip window's design (``<name>_stream``): the
     accelerator plan of the emitted template (:func:`fgc_backends.hls.emitter.accel_plan`, the
@@ -254,10 +264,17 @@ class WindowUpdateModel:
             matvec = Loop("matvec", n * n, mv_ii, lt["acc"][1])
             scatter = kernel_loop("scatter", n, "scatter", lt)
             columns = tuple(Loop("column", i, 1, lt["acc"][1]) for i in range(1, n))
-            out += [_stream_phase("kept_reexpress", move("x", kf), one,
-                                  replace(one, repeat=4 * n),
-                                  Loop("difference", n, 1, kt["div"][1], n), matvec, scatter,
-                                  move("row", n, n), replace(matvec, repeat=n), move("x", kf)),
+            # four passes per direction of a variable that is not a vector, none for a vector's
+            curved = sum(1 for w in lay.vector_words() if w < 0)
+            vector_diff = Loop("vector_difference", n, 1, kt["div"][1] + 3 * kt["acc"][0],
+                               n - curved)
+            out += [_stream_phase("kept_slot0", move("x", kf)),
+                    _stream_phase("kept_reexpress", one, replace(one, repeat=4 * curved),
+                                  Loop("difference", n, 1, kt["div"][1], curved), vector_diff,
+                                  matvec, scatter,
+                                  replace(matvec, name="sj_column", repeat=curved),
+                                  Loop("sj_vector", n, 1, lt["acc"][1], n - curved),
+                                  move("s_out", n * n), move("x", kf)),
                     _stream_phase("kept_store", move("cond", n * (2 * n + 1)), move("x", kf)),
                     _stream_phase("kept_walk_each", one, matvec, scatter,
                                   kernel_loop("divide", 1, "div", lt, n), *columns, one,
@@ -366,11 +383,13 @@ class WindowUpdateModel:
                 each = qr_damped if g == "qr" else group[g]
                 terms.append(Term(f"batch_{g}", each, times, False,
                                   f"the batch kernel's {g} phase, once per {trigger}"))
-        store = (group["factor_jacobian"] + group["gradient"] + group["qr_stack"] + qr_store
-                 + group["qr_commit"])
+        relin = _relinearize(ev)
+        store = (relin * (group["factor_jacobian"] + group["gradient"]) + group["qr_stack"]
+                 + qr_store + group["qr_commit"])
         terms.append(Term("batch_store", store, 1, False,
-                          f"keyframes 0 … {j} linearised at the optimum and eliminated serially "
-                          "at μ = 0 (their conditionals and the factors they pass)"))
+                          f"keyframes 0 … {j} " + ("linearised at the optimum and " if relin
+                                                   else "") + "eliminated serially at μ = 0 "
+                          "(their conditionals and the factors they pass)"))
         terms.append(Term("batch_out", st[f"stream_batch{j}_out"], 1, False,
                           "the optimum, the conditionals and τ out of the batch kernel, the "
                           "optimum scattered to the kept memory and the window"))
@@ -385,7 +404,8 @@ class WindowUpdateModel:
         """The solve's event counts from its iterations: each iteration a linearisation, a
         solve, a retraction, a cost pass and (but the last, which converged) an accepted step;
         the start's cost pass; ``rejected`` trial steps add a solve, a retraction and a cost
-        pass each."""
+        pass each. (LM then stopped where it last linearised: a leaving keyframe's marginal
+        reuses those rows, no ``relinearize``.)"""
         k = int(iterations)
         return {"linearize": k, "solve": k + rejected, "retract": k + rejected,
                 "cost": 1 + k + rejected, "accept": max(0, k - 1), "noise": noise}
@@ -429,26 +449,43 @@ class WindowUpdateModel:
                                   f"the window's {g} phase, once per {trigger}" + (
                                       " (on its rows non-zero in this update)" if g == "qr"
                                       else "")))
+        marginal = 0
         if m == lay.window and self.layout_marginal:
-            marginal = (self.group["factor_jacobian"] + self.group["gradient"]
+            # the window's rows at its optimum: computed again only if LM took a step after its
+            # last linearisation (fgc_stream.h, marginalize; counted: the "relinearize" event)
+            relin = _relinearize(ev)
+            marginal = (relin * (self.group["factor_jacobian"] + self.group["gradient"])
                         + st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True))
             terms.append(Term("marginal", marginal, 1, False,
-                              "keyframe leaving: the window linearised at its optimum, slot 0's "
-                              "QR step at μ = 0 on unit set 0, τ's signs, mean and words"))
+                              "keyframe leaving: " + ("the window linearised at its optimum, "
+                                                      if relin else "")
+                              + "slot 0's QR step at μ = 0 on unit set 0, τ's signs, mean and "
+                              "words"))
         if lay.kept:
+            terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
+                              "slot 0's estimate copied out of X: the kept net's parent"))
+            kept = st["stream_kept_walk_base"] + first * st["stream_kept_walk_each"]
             if first > 0:
+                kept += st["stream_kept_reexpress"]
                 terms.append(Term("kept_reexpress", st["stream_kept_reexpress"], 1, False,
                                   f"keyframe {first - 1}'s kept conditional re-expressed at "
                                   "its parent's new estimate: Log, its central-difference "
-                                  "Jacobian (4n + 1 datapath passes), S·Log and S·J"))
-            if m == lay.window and self.layout_marginal:
-                terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
-                                  f"keyframe {first}'s conditional (R | S | d) and its "
-                                  "linearisation points kept"))
+                                  "Jacobian (four datapath passes per direction of a "
+                                  "non-vector variable), S·Log and S·J"))
             terms.append(Term("kept_walk", st["stream_kept_walk_base"]
                               + first * st["stream_kept_walk_each"], 1,
                               False, f"the walk back through {first} kept conditionals: per "
                                      "keyframe a Log, S·Log, R⁻¹ by rows, a retraction"))
+            if self.layout_marginal and min(marginal, kept):
+                # fgc_stream.h's marginal_and_kept: the two as processes of one DATAFLOW region
+                terms.append(Term("overlap", -min(marginal, kept), 1, False,
+                                  "the marginal and the kept net (re-expression and walk) run "
+                                  "side by side (one DATAFLOW region, no memory between them): "
+                                  "the shorter of the two is hidden behind the longer"))
+            if m == lay.window and self.layout_marginal:
+                terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
+                                  f"keyframe {first}'s conditional (R | S | d) and its "
+                                  "linearisation points kept"))
             terms += self._kept_out_terms(keyframe)
         terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
         return UpdatePrice(keyframe, "incremental" if lay.kept else "fixed-lag", first,

@@ -72,7 +72,7 @@ from fgc_backends.hls.plan import (
     plan_sizes,
 )
 from fgc_backends.hls.plan.stream import Term, UpdatePrice
-from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops
+from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops, retire_region
 from fgc_backends.hls.units.cholesky import (
     assemble_loops,
     cpe_step_loops,
@@ -82,7 +82,7 @@ from fgc_backends.hls.units.cholesky import (
 from fgc_backends.hls.units.datapath import gradient_loops, small_blocks
 from fgc_backends.hls.units.lm_control import lm_control_phases, rounding_noise_loops, setup_phase
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
-from fgc_backends.hls.units.state_update import retract_loops, state_update_phase
+from fgc_backends.hls.units.state_update import retire_timing, retract_loops
 
 NOT_EMITTED = ("a Cholesky design's on-chip incremental state is not emitted in C++ (the "
                "on-chip design, fgc_backends.hls.window, keeps the QR unit's conditionals): this "
@@ -247,8 +247,6 @@ class UpdateModel:
                                 jacobian.processes, self.timing)
             phases += [ph for ph in self._linear_phases(first, last, self.damping)
                        if ph.name != "hgc"]
-        phases.append(state_update_phase(view.variables, self.plan.ops,
-                                         self.plan.options.state_allocation))
         phases.append(self._factor_phase("cost", inst))
         phases += self._lm_phases(view.variables)
         return tuple(phases)
@@ -509,15 +507,27 @@ class UpdateModel:
             # the cascade's drain stores the conditionals and update matrices (no store pass)
             phases.append(Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
                                 linear=True))
+        # back-substitution step by step, the state update fed by it beside (fgc_backsub.h's
+        # back_substitute: backsub_retire retracts each cluster's variables as it is solved)
         unit = "backsub" if self.qr else "trisolve"
-        for level, s in enumerate(reversed(steps)):
+        slots, counts = [], []
+        for s in reversed(steps):
             c = first + s
             sep = self.cdim[c + 1] if c < last else 0
             before, after = backsub_copies(tables, s, lt, self.les)
-            phases.append(Phase(f"backsub_level{level}", False, (Process(
-                f"backsub_step{s}", unit,
-                tuple(before + backsub_loops(self.cdim[c], sep, self.les, name=f"bs{c}")
-                      + after)),), linear=True))
+            slots.append(before + backsub_loops(self.cdim[c], sep, self.les, name=f"bs{c}")
+                         + after)
+            counts.append(len(self.clusters[c]))
+        keys = {k for c in range(first, last + 1) for k in self.clusters[c]}
+        ii, depth = retire_timing([v for v in self.program.variables if v.key in keys],
+                                  self.plan.ops, max(self.cdim[first + s] for s in steps),
+                                  self.plan.options.state_allocation)
+        region = retire_region(slots, list(range(len(slots))), counts, ii, depth)
+        a = sum(lp.cycles for loops in slots for lp in loops)
+        phases.append(Phase("backsub", False, (
+            Process("backsub_slots", unit, tuple(lp for loops in slots for lp in loops)),
+            Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - a),)
+                    if region > a else ())), linear=True))
         return phases
 
     def step_pattern(self, first, last, c, damping) -> np.ndarray:

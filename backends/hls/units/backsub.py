@@ -1,7 +1,9 @@
 """Back-substitution (``include/fgc_backsub.h``'s ``cond_load`` and ``cond_backsub``): the
 conditionals solved root first on two lanes, a step's solve on one lane beside the next step's
-load into the other (back_substitute's ``backsub_lane<p>`` regions, :func:`backsub_slots`), for
-QR and Cholesky alike; a what-if whole-matrix Cholesky solves Lᵀδ = z by rows instead."""
+load into the other (the slot process's ``backsub_lane<p>`` regions, :func:`backsub_slots`), each
+solved step's δ streamed to the state update beside them (``backsub_retire``,
+:func:`retire_region`), for QR and Cholesky alike; a what-if whole-matrix Cholesky solves
+Lᵀδ = z by rows instead."""
 
 from __future__ import annotations
 
@@ -10,7 +12,7 @@ import math
 from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.plan.binding import BoundLoop, sum_operators
 from fgc_backends.hls.plan.loops import _ceil_log2, _ported, _region_cycles, dot_loop, kernel_loop
-from fgc_backends.hls.plan.model import PORTS, Loop, Phase, Process, Unit
+from fgc_backends.hls.plan.model import PORTS, Channel, Loop, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
 
 LANES = 2  # back-substitution lanes: one solves a step while the other loads the next
@@ -128,15 +130,58 @@ def backsub_copies(tables: dict, s: int, timing: dict, ops: OperatorTable
             [kernel_loop("solution_out", _ported(f), "move", timing)])
 
 
+def retire_region(slots: list[list[Loop]], sent: list[int], counts: list[int], ii: int,
+                  depth: int) -> int:
+    """back_substitute's DATAFLOW region: the slot process (``slots``: each slot's loops, in
+    order) beside ``backsub_retire``, one pipelined loop (``ii``, ``depth``) over the variables
+    of the solved steps (``counts[i]`` of the i-th step the slots send; ``sent[i]``: the slot
+    whose solution_out sends it): an iteration issues ``ii`` after the one before, a step's
+    first no earlier than the end of the slot that sent it; the region ends when both
+    processes have (fgc_cycles.h's outer group)."""
+    ends, clock = [], 0
+    for loops in slots:
+        clock += sum(lp.cycles for lp in loops)
+        ends.append(clock)
+    issue, last = None, 0
+    for slot, n in zip(sent, counts, strict=True):
+        for j in range(n):
+            at = 0 if issue is None else issue + ii
+            issue = max(at, ends[slot]) if j == 0 else at
+            last = issue + depth
+    return max(clock, last)
+
+
 def backsub_phases(ctx, unit: str) -> None:
-    """The emitted back_substitute: one phase per slot of :func:`backsub_slots` (named
-    ``backsub_level<k>``: the k-th slot; its group is ``backsub``)."""
+    """The emitted back_substitute (fgc_backsub.h): one phase ``backsub``, its DATAFLOW region
+    of the slot process (per slot of :func:`backsub_slots` its copies and ``backsub_lane<p>``
+    region, :func:`backsub_slot_loops`) beside the state update's ``backsub_retire``
+    (:func:`fgc_backends.hls.units.state_update.retire_timing`: a variable an iteration, as its
+    step's solution arrives), priced by :func:`retire_region`: the slots' loops, then what the
+    retire adds after the last slot (``retire_tail``)."""
+    from fgc_backends.hls.units.state_update import retire_timing
     tables, timing, ops = ctx.tables, ctx.les_timing, ctx.les
+    slots, sent, counts = [], [], []
     for k, (solve, load, _) in enumerate(backsub_slots(tables)):
-        name = "_".join(f"{what}{s}" for what, s in (("solve", solve), ("load", load)) if s >= 0)
-        ctx.add_phase("solve", Phase(f"backsub_level{k}", False, (Process(
-            f"backsub_{name}", unit, tuple(backsub_slot_loops(tables, solve, load, ops,
-                                                              timing))),), linear=True))
+        slots.append(backsub_slot_loops(tables, solve, load, ops, timing))
+        if solve >= 0:
+            sent.append(k)
+            counts.append(len(ctx.program.schedule.steps[solve].frontals))
+    ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
+                              ctx.opts.state_allocation)
+    region = retire_region(slots, sent, counts, ii, depth)
+    a = sum(lp.cycles for loops in slots for lp in loops)
+    # the solved words to the state update, a pair a stream word (back_substitute's dx)
+    ctx.channels.append(Channel("backsub_dx", "stream", ctx.sizes["MAX_F"], 2 * ops.word_bits,
+                                "backsub_slots", "backsub_retire"))
+    ctx.add_phase("solve", Phase("backsub", False, (
+        Process("backsub_slots", unit, tuple(lp for loops in slots for lp in loops)),
+        Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - a),)
+                if region > a else ())), linear=True))
+
+
+def retire_solved(tables: dict) -> list[int]:
+    """The steps in the order back_substitute's slots solve (and send) them."""
+    return [solve for solve, _, _ in backsub_slots(tables) if solve >= 0]
 
 
 def backsub_operators(ops: OperatorTable) -> tuple[tuple[str, int], ...]:

@@ -97,23 +97,28 @@ def gram_ii(program, block: int, lanes: int) -> int:
     return -(-m // max(1, min(lanes, m)))
 
 
-def gram_lanes(program, block: int, lanes: int, jac_ii: dict | None
-               ) -> tuple[tuple[tuple[int, int], ...], tuple[tuple[int, int], ...], int]:
-    """How block ``block``'s Gram entries are split between gram_entries' two lanes: (lane A's
-    entries, lane B's entries, K). Lane A is the block's full width (its m rows); lane B, when
-    there is one (K > 0), the dot product over the first K rows only, for entries no other row
-    touches (the rest of the column pair is structurally zero: exact zeros its sum leaves out).
-    An entry of the last row (b^T A: the += into G) stays in lane A, so one adder serves G and
-    the += keep to one lane. A second lane is built only where the HGC is the slower process of
-    its linearize_<b> region: more than one instance at II 1, more entries than the datapath's
-    II an instance (``jac_ii``: block -> its Jacobian loop's II; None: no second lane), and K is
-    the fewest rows that bring the region's time an instance, max(lane A's entries, the
-    datapath's II), to its least (the eligible entries balanced between the lanes, lane A
-    keeping the rest in packed order)."""
+def gram_config(program, block: int, lanes: int, jac_ii: dict | None,
+                jac_cycles: dict | None = None):
+    """How block ``block``'s Gram entries are computed: (lane A's entries, lane B's entries, K,
+    paired). Lane A is the block's full width (its m rows); lane B, when there is one (K > 0),
+    the dot product over the first K rows only, for entries no other row touches (the rest of
+    the column pair is structurally zero: exact zeros its sum leaves out). An entry of the last
+    row (b^T A: the += into G) stays in lane A, so the += keep to one lane. A second lane is
+    built only where the HGC is the slower process of its linearize_<b> region: more than one
+    instance at II 1, more entries than the datapath's II an instance (``jac_ii``: block -> its
+    Jacobian loop's II; None: no second lane), and K is the fewest rows that bring the region's
+    time an instance, max(lane A's entries, the datapath's II), to its least (the eligible
+    entries balanced between the lanes, lane A keeping the rest in packed order).
+
+    ``paired`` (accel.cpp.jinja's gram_entries_pair): the loop at II 2 with two lane-A entries
+    and one lane-B entry an iteration (a third of the entries in lane B), which binds m +
+    ceil(K / 2) multipliers instead of m + K; chosen when its iterations, 2 cycles each, take
+    no longer than the datapath's process (``jac_cycles``: block -> its Jacobian loop's
+    cycles; None: never paired)."""
     b = program.blocks[block]
     rows = _gram_rows(b)
     entries = tuple(rows)
-    none = (entries, (), 0)
+    none = (entries, (), 0, False)
     n = sum(1 for f in program.factors if f.block == block)
     if jac_ii is None or n <= 1 or gram_ii(program, block, lanes) != 1:
         return none
@@ -129,24 +134,44 @@ def gram_lanes(program, block: int, lanes: int, jac_ii: dict | None
     if not best_k:
         return none
     eligible = [e for e, r in rows.items() if e[0] != last and r[-1] < best_k]
-    lane_b = set(eligible[:min(len(eligible), len(entries) // 2)])
-    return (tuple(e for e in entries if e not in lane_b),
-            tuple(e for e in entries if e in lane_b), best_k)
+
+    def split(share: int):
+        lane_b = set(eligible[:min(len(eligible), share)])
+        return (tuple(e for e in entries if e not in lane_b),
+                tuple(e for e in entries if e in lane_b))
+
+    if jac_cycles is not None and block in jac_cycles:
+        pa, pb = split(-(-len(entries) // 3))
+        if 2 * n * max(-(-len(pa) // 2), len(pb)) <= jac_cycles[block]:
+            return pa, pb, best_k, True
+    return (*split(len(entries) // 2), best_k, False)
 
 
-def hgc_operators(program, lanes: int, jac_ii: dict | None = None
-                  ) -> list[tuple[int, tuple]]:
+def gram_lanes(program, block: int, lanes: int, jac_ii: dict | None,
+               jac_cycles: dict | None = None
+               ) -> tuple[tuple[tuple[int, int], ...], tuple[tuple[int, int], ...], int]:
+    """(lane A's entries, lane B's entries, K) of :func:`gram_config`."""
+    return gram_config(program, block, lanes, jac_ii, jac_cycles)[:3]
+
+
+def hgc_operators(program, lanes: int, jac_ii: dict | None = None,
+                  jac_cycles: dict | None = None) -> list[tuple[int, tuple]]:
     """(block, operators) of each block type's HGC as accel.cpp.jinja's gram_entries binds
     them: its entries' loop at :func:`gram_ii`: lane A's ceil(m / II) multipliers and its
     tree's m - 1 adds with the gradient's add (the Gram's last row into G), ceil(m / II)
-    adders; lane B's (:func:`gram_lanes`) K multipliers and K - 1 adders (the finiteness check
-    of the diagonal entries is a test of their exponent bits: no operator)."""
+    adders; lane B's (:func:`gram_lanes`) K multipliers and K - 1 adders; paired
+    (:func:`gram_config`, II 2), m + ceil(K / 2) multipliers and m + ceil((K - 1) / 2) adders
+    (the finiteness check of the diagonal entries is a test of their exponent bits: no
+    operator)."""
     out = []
     for i, b in enumerate(program.blocks):
         if not any(f.block == i for f in program.factors):
             continue
         m, ii = b.residual_dim, gram_ii(program, i, lanes)
-        k = gram_lanes(program, i, lanes, jac_ii)[2]
+        _, _, k, paired = gram_config(program, i, lanes, jac_ii, jac_cycles)
+        if paired:  # II 2: two lane-A entries (2m products, 2m adds) and one lane-B entry
+            out.append((i, (("add", m + -(-(k - 1) // 2)), ("mul", m + -(-k // 2)))))
+            continue
         out.append((i, (("add", -(-m // ii) + max(0, k - 1)), ("mul", -(-m // ii) + k))))
     return out
 
@@ -166,20 +191,22 @@ def gram_depth(m: int, timing: dict, t_timing: dict | None = None) -> int:
 
 
 def gram_steps(program, block: int, t_timing: dict, lanes: int = 32,
-               jac_ii: dict | None = None) -> int:
+               jac_ii: dict | None = None, jac_cycles: dict | None = None) -> int:
     """Iterations of gram_entries' loop an instance of block ``block`` takes (its STEPS): the
     entries of its larger lane (:func:`gram_lanes`); with more than one instance at least
     m + 3 (the next instance's rows are read into the other bank in the first m, and a bank is
     read no sooner than 3 iterations after it is written) and at least the span of lane A's
     last-row entries (the += into G) plus the adder's latency and 3, so that two instances'
-    += into one entry of G (two factors of one variable) are a whole add apart."""
+    += into one entry of G (two factors of one variable) are a whole add apart. Paired
+    (:func:`gram_config`): lane A's entries two an iteration."""
     b = program.blocks[block]
-    lane_a, lane_b, _ = gram_lanes(program, block, lanes, jac_ii)
-    steps = max(len(lane_a), len(lane_b))
+    lane_a, lane_b, _, paired = gram_config(program, block, lanes, jac_ii, jac_cycles)
+    per = 2 if paired else 1  # lane A's entries an iteration
+    steps = max(-(-len(lane_a) // per), len(lane_b))
     if sum(1 for f in program.factors if f.block == block) <= 1:
         return steps
     last = sum(b.variable_dims)  # the last row of [A | b]'s Gram: b^T A, then b^T b
-    g = [e for e, (p, q) in enumerate(lane_a) if p == last and q < last]
+    g = [e // per for e, (p, q) in enumerate(lane_a) if p == last and q < last]
     span = g[-1] - g[0] if g else 0
     return max(steps, b.residual_dim + 3, span + t_timing["acc"][0] + 3)
 
@@ -196,8 +223,15 @@ def jacobian_ii(jacobian) -> dict[int, int]:
     return out
 
 
+def jacobian_cycles(jacobian) -> dict[int, int]:
+    """Block -> the cycles of its datapath's Jacobian loop (processes ``factor_<b>_jacobian``),
+    what :func:`gram_config` weighs the paired HGC against."""
+    return {b: proc.cycles for b in jacobian_ii(jacobian) for proc in jacobian
+            if proc.name == f"factor_{b}_jacobian"}
+
+
 def hgc_loops(program, timing: dict, lanes: int = 32, t_timing: dict | None = None,
-              jac_ii: dict | None = None) -> list[Process]:
+              jac_ii: dict | None = None, jac_cycles: dict | None = None) -> list[Process]:
     """Cholesky: linearize_all's HGC (reduce_<b>: instance 0's m whitened rows from
     evaluate_<b>'s stream, a row a cycle, into registers, then one pipelined loop over all
     instances (:func:`gram_steps` iterations each) of the Gram's structurally non-zero entries
@@ -207,7 +241,8 @@ def hgc_loops(program, timing: dict, lanes: int = 32, t_timing: dict | None = No
     (:func:`gram_depth`), the next instance's rows read alongside into the other bank), after
     G is zeroed (the first process). The structural zeros are never written: GRAM keeps its
     initial zeros there, so no pass clears it. ``timing``: L's kernel timing; ``t_timing``:
-    T's (the gradient's adder), L's when omitted; ``jac_ii``: :func:`gram_lanes`'."""
+    T's (the gradient's adder), L's when omitted; ``jac_ii``, ``jac_cycles``:
+    :func:`gram_config`'s (paired: II 2, one cycle deeper)."""
     t_timing = t_timing or timing
     n_t = sum(v.dim for v in program.variables)
     procs = [Process("zero_gradient", "hgc", (kernel_loop("zero", _ported(n_t), "fill",
@@ -215,9 +250,11 @@ def hgc_loops(program, timing: dict, lanes: int = 32, t_timing: dict | None = No
     for i, b in enumerate(program.blocks):
         m, _, _, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
+        paired = gram_config(program, i, lanes, jac_ii, jac_cycles)[3]
         loops = [kernel_loop("rows", m, "move", timing) if n else Loop("rows", 0, 1, 2),
-                 Loop("entries", n * gram_steps(program, i, t_timing, lanes, jac_ii),
-                      gram_ii(program, i, lanes), gram_depth(m, timing, t_timing))]
+                 Loop("entries", n * gram_steps(program, i, t_timing, lanes, jac_ii, jac_cycles),
+                      2 if paired else gram_ii(program, i, lanes),
+                      gram_depth(m, timing, t_timing) + paired)]
         procs.append(Process(f"reduce_{i}", "hgc", tuple(loops)))
     return procs
 
@@ -229,7 +266,8 @@ def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...],
     Jacobian-mode instance loop (``jacobian``'s process factor_<b>_jacobian: whitened rows into
     AB and, a stream word a row, to the HGC) alongside reduce_<b> (:func:`hgc_loops`), so the
     region takes the slower of the two plus the other's fill."""
-    procs = hgc_loops(program, timing, lanes, t_timing, jacobian_ii(jacobian))
+    procs = hgc_loops(program, timing, lanes, t_timing, jacobian_ii(jacobian),
+                      jacobian_cycles(jacobian))
     jac = {p.name: p for p in jacobian}
     phases = [Phase("hgc", False, (procs[0],), linear=True)]
     for i, reduce in enumerate(procs[1:]):
@@ -331,7 +369,8 @@ def build(ctx) -> None:
         at = next(k for k, (_, ph) in enumerate(ctx.phases) if ph.name == "factor_jacobian")
         slot, jacobian = ctx.phases[at]
         jac_ii = jacobian_ii(jacobian.processes)
-        for i, unit_ops in hgc_operators(program, opts.hgc_lanes, jac_ii):
+        jac_cycles = jacobian_cycles(jacobian.processes)
+        for i, unit_ops in hgc_operators(program, opts.hgc_lanes, jac_ii, jac_cycles):
             ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
         ctx.phases[at:at + 1] = [(slot, ph) for ph in hgc_phases(
             program, ctx.les_timing, opts.hgc_lanes, jacobian.processes, ctx.timing)]

@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   48 processes, 62 streams (cpe=20)
+//   50 processes, 63 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
 //   process cpe0
@@ -59,6 +59,8 @@
 //   process backsub_load1
 //   process backsub_set1
 //   process backsub_load0
+//   process backsub_slots
+//   process backsub_retire
 //   stream cpe_link0 depth=30: cpe_feed -> cpe_tap0
 //   stream cpe_link1 depth=30: cpe0 -> cpe_tap1
 //   stream cpe_link2 depth=30: cpe1 -> cpe_tap2
@@ -121,6 +123,7 @@
 //   stream cpe_tapped19 depth=48: cpe_tap19 -> cpe19
 //   stream cpe_recip19 depth=2: cpe_tap19 -> cpe19
 //   stream frontal depth=139: cholesky_assembler -> cpe_feed
+//   stream backsub_dx depth=30: backsub_slots -> backsub_retire
 #include "imu_window.h"
 
 #include "hls_stream.h"
@@ -330,15 +333,6 @@ const int BLOCK3_TILES[10] = {  // (p0, q0, first row, rows, tiles wide) per Gra
 };
 const int BLOCK3_TILE_ROWS[10] = {
     0, 1, 2, 3, 0, 1, 2, 3, 4, 5,
-};
-const int KIND0_VARIABLES[8] = {
-    0, 3, 6, 9, 12, 15, 18, 21,
-};
-const int KIND1_VARIABLES[8] = {
-    1, 4, 7, 10, 13, 16, 19, 22,
-};
-const int KIND2_VARIABLES[8] = {
-    2, 5, 8, 11, 14, 17, 20, 23,
 };
 
 // ---- the accelerator's memories: static, sized at compile time; nothing is allocated
@@ -2172,6 +2166,44 @@ bool gram_entries_two(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const 
     return finite;
 }
 
+// gram_entries_pair: the two lanes at II 2, two lane-A entries (P, Q at 2e and 2e + 1) and one
+// lane-B entry an iteration, so Vitis binds ROWS + ceil(K / 2) multipliers (the two lane-A
+// entries' 2 ROWS products over the II's two cycles) for 1.5 entries a cycle; the next
+// instance's rows a row an iteration (STEPS >= ROWS + 3); G's += stay in lane A (four
+// accesses of G an iteration through its two ports in two cycles), three GRAM writes.
+template <int PADDED, int ROWS, int COLS, int ENTRIES, int ENTRIES_B, int K, int STEPS, int N>
+bool gram_entries_pair(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const int INST[N],
+                       const int P[ENTRIES], const int Q[ENTRIES], const int PB[ENTRIES_B],
+                       const int QB[ENTRIES_B], const int CV[COLS - 1], const int CO[COLS - 1]) {
+    bool finite = true;
+    int i = 0, e = 0;
+    for (int t = 0; t < N * STEPS; ++t) {
+#pragma HLS PIPELINE II=2
+#pragma HLS DEPENDENCE variable=G inter false
+#pragma HLS DEPENDENCE variable=GRAM inter false
+#pragma HLS DEPENDENCE variable=ab inter false
+        const int cur = i % 2;
+        if (e < ROWS && i + 1 < N) gram_next_row<PADDED, ROWS>(rows, ab[1 - cur], e);
+        for (int h = 0; h < 2; ++h) {  // lane A: entries 2e and 2e + 1
+            if (2 * e + h < ENTRIES) {
+                const int p = P[2 * e + h], q = Q[2 * e + h];
+                gram_store<ROWS, COLS, N>(INST, CV, CO, i, p, q, gram_entry<PADDED, ROWS, ROWS>(ab[cur], p, q), finite);
+            }
+        }
+        if (e < ENTRIES_B) {  // lane B: never the last row, so never into G
+            const int p = PB[e], q = QB[e];
+            const L v = gram_entry<PADDED, ROWS, K>(ab[cur], p, q);
+            GRAM[FACTOR_GRAM_OFF[INST[i]] + p * (p + 1) / 2 + q] = v;
+            if (p == q) finite = finite && fgc_isfinite(T(v));
+        }
+        if (++e == STEPS) {
+            e = 0;
+            ++i;
+        }
+    }
+    return finite;
+}
+
 // block 0: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_0(const T x[N_X], int f, T in[42], T dat[193]) {
     const int vb = FACTOR_VAR_BEGIN[f];
@@ -3137,39 +3169,41 @@ void retract_2(const T x[6], const T d[6], T out[6]) {
     out[5] = d[5] + x[5];
 }
 
-void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
-    FGC_EVENT("retract");
-    FGC_PHASE("state_update");
-    for (int i = 0; i < 8; ++i) {  // a variable every II=36 cycles (the plan's)
-#pragma HLS PIPELINE II=36
-        const int v = KIND0_VARIABLES[i];
+// The state update of variable v, fed by back-substitution (fgc_backsub.h's backsub_retire, a
+// variable an iteration as its step is solved): X_TRIAL = X (+) delta on v, through its type's
+// datapath (the branches exclusive: each datapath one instance)
+const int VAR_KIND[24] = {  // per variable its type (retract_<k>)
+    0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0,
+    1, 2, 0, 1, 2, 0, 1, 2,
+};
+const int RETIRE_VARS[24] = {  // the variables in the order back-substitution solves them
+    9, 10, 11, 12, 13, 14, 6, 7, 8, 15, 16, 17, 3, 4, 5, 18,
+    19, 20, 0, 1, 2, 21, 22, 23,
+};
+const int RETIRE_STEP[24] = {  // per entry of RETIRE_VARS: its step if it is the step's first variable, else -1
+    6, -1, -1, -1, -1, -1, 4, -1, -1, 5, -1, -1, 2, -1, -1, 3,
+    -1, -1, 0, -1, -1, 1, -1, -1,
+};
+void retract_variable(int v, const L delta[N_TANGENT]) {
+    if (VAR_KIND[v] == 0) {
         T xv[12], dv[6], ov[12];
-        for (int k = 0; k < 12; ++k) xv[k] = x[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 6; ++k) dv[k] = delta[VAR_T_OFF[v] + k];
+        for (int k = 0; k < 12; ++k) xv[k] = X[VAR_X_OFF[v] + k];
+        for (int k = 0; k < 6; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
         retract_0(xv, dv, ov);
-        for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
-    }
-    FGC_CYCLES("retract", 0, "variables", 8, 36, 203);
-    for (int i = 0; i < 8; ++i) {  // a variable every II=1 cycles (the plan's)
-#pragma HLS PIPELINE II=1
-        const int v = KIND1_VARIABLES[i];
+        for (int k = 0; k < 12; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
+    } else if (VAR_KIND[v] == 1) {
         T xv[3], dv[3], ov[3];
-        for (int k = 0; k < 3; ++k) xv[k] = x[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 3; ++k) dv[k] = delta[VAR_T_OFF[v] + k];
+        for (int k = 0; k < 3; ++k) xv[k] = X[VAR_X_OFF[v] + k];
+        for (int k = 0; k < 3; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
         retract_1(xv, dv, ov);
-        for (int k = 0; k < 3; ++k) out[VAR_X_OFF[v] + k] = ov[k];
-    }
-    FGC_CYCLES("retract", 1, "variables", 8, 1, 4);
-    for (int i = 0; i < 8; ++i) {  // a variable every II=2 cycles (the plan's)
-#pragma HLS PIPELINE II=2
-        const int v = KIND2_VARIABLES[i];
+        for (int k = 0; k < 3; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
+    } else if (VAR_KIND[v] == 2) {
         T xv[6], dv[6], ov[6];
-        for (int k = 0; k < 6; ++k) xv[k] = x[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 6; ++k) dv[k] = delta[VAR_T_OFF[v] + k];
+        for (int k = 0; k < 6; ++k) xv[k] = X[VAR_X_OFF[v] + k];
+        for (int k = 0; k < 6; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
         retract_2(xv, dv, ov);
-        for (int k = 0; k < 6; ++k) out[VAR_X_OFF[v] + k] = ov[k];
+        for (int k = 0; k < 6; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 2, "variables", 8, 2, 4);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -3197,6 +3231,10 @@ struct LesConfig {
     static const int MUL_LAT = 3;
     static const int DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
+    // back_substitute's state update (fgc_backsub.h's backsub_retire): a variable an iteration
+    static const int N_TANGENT = ::fgc::N_TANGENT, N_VARIABLES = ::fgc::N_VARIABLES;
+    static const int RETIRE_II = 36, RETIRE_DEPTH = 218;
+    static void retract_variable(int v, const T delta[N_TANGENT]) { ::fgc::retract_variable(v, delta); }
 };
 
 // ---- multifrontal Cholesky (paper B): per step the frontal matrix [H | g] (upper triangle,
@@ -3268,7 +3306,7 @@ struct LmConfig {
     static T cost_x() { return total_cost(X); }
     static bool linearize_x() { return linearize_all(X); }
     static bool solve_at(T mu) { return solve(mu); }
-    static void retract_trial() { retract_all(X, DELTA, X_TRIAL); }
+    static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
     static T cost_trial() { return total_cost(X_TRIAL); }
     static T noise_x() { return rounding_noise_all(X); }
     static const int N_X = ::fgc::N_X, N_TANGENT = ::fgc::N_TANGENT;

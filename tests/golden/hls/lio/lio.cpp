@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   20 processes, 34 streams (n_u=4, 2 unit set(s))
+//   22 processes, 35 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -31,6 +31,8 @@
 //   process backsub_load1
 //   process backsub_set1
 //   process backsub_load0
+//   process backsub_slots
+//   process backsub_retire
 //   stream qr0_v0 depth=8: qr0_broadcast -> qr0_update0
 //   stream qr0_v1 depth=8: qr0_broadcast -> qr0_update1
 //   stream qr0_v2 depth=8: qr0_broadcast -> qr0_update2
@@ -65,6 +67,7 @@
 //   stream qr1_row2 depth=2: qr1_update2 -> qr1_collect
 //   stream qr1_col3 depth=87: qr1_update3 -> qr1_evaluate
 //   stream qr1_row3 depth=2: qr1_update3 -> qr1_collect
+//   stream backsub_dx depth=30: backsub_slots -> backsub_retire
 #include "lio.h"
 
 #include "hls_stream.h"
@@ -246,15 +249,6 @@ const int BLOCK3_INSTANCES[7] = {
 };
 const int BLOCK4_INSTANCES[8] = {
     10, 11, 12, 13, 14, 15, 16, 17,
-};
-const int KIND0_VARIABLES[8] = {
-    0, 3, 6, 9, 12, 15, 18, 21,
-};
-const int KIND1_VARIABLES[8] = {
-    1, 4, 7, 10, 13, 16, 19, 22,
-};
-const int KIND2_VARIABLES[8] = {
-    2, 5, 8, 11, 14, 17, 20, 23,
 };
 
 // ---- the accelerator's memories: static, sized at compile time; nothing is allocated
@@ -3349,39 +3343,41 @@ void retract_2(const T x[6], const T d[6], T out[6]) {
     out[5] = d[5] + x[5];
 }
 
-void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
-    FGC_EVENT("retract");
-    FGC_PHASE("state_update");
-    for (int i = 0; i < 8; ++i) {  // a variable every II=36 cycles (the plan's)
-#pragma HLS PIPELINE II=36
-        const int v = KIND0_VARIABLES[i];
+// The state update of variable v, fed by back-substitution (fgc_backsub.h's backsub_retire, a
+// variable an iteration as its step is solved): X_TRIAL = X (+) delta on v, through its type's
+// datapath (the branches exclusive: each datapath one instance)
+const int VAR_KIND[24] = {  // per variable its type (retract_<k>)
+    0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0,
+    1, 2, 0, 1, 2, 0, 1, 2,
+};
+const int RETIRE_VARS[24] = {  // the variables in the order back-substitution solves them
+    9, 10, 11, 12, 13, 14, 6, 7, 8, 15, 16, 17, 3, 4, 5, 18,
+    19, 20, 0, 1, 2, 21, 22, 23,
+};
+const int RETIRE_STEP[24] = {  // per entry of RETIRE_VARS: its step if it is the step's first variable, else -1
+    6, -1, -1, -1, -1, -1, 4, -1, -1, 5, -1, -1, 2, -1, -1, 3,
+    -1, -1, 0, -1, -1, 1, -1, -1,
+};
+void retract_variable(int v, const L delta[N_TANGENT]) {
+    if (VAR_KIND[v] == 0) {
         T xv[12], dv[6], ov[12];
-        for (int k = 0; k < 12; ++k) xv[k] = x[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 6; ++k) dv[k] = delta[VAR_T_OFF[v] + k];
+        for (int k = 0; k < 12; ++k) xv[k] = X[VAR_X_OFF[v] + k];
+        for (int k = 0; k < 6; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
         retract_0(xv, dv, ov);
-        for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
-    }
-    FGC_CYCLES("retract", 0, "variables", 8, 36, 203);
-    for (int i = 0; i < 8; ++i) {  // a variable every II=1 cycles (the plan's)
-#pragma HLS PIPELINE II=1
-        const int v = KIND1_VARIABLES[i];
+        for (int k = 0; k < 12; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
+    } else if (VAR_KIND[v] == 1) {
         T xv[3], dv[3], ov[3];
-        for (int k = 0; k < 3; ++k) xv[k] = x[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 3; ++k) dv[k] = delta[VAR_T_OFF[v] + k];
+        for (int k = 0; k < 3; ++k) xv[k] = X[VAR_X_OFF[v] + k];
+        for (int k = 0; k < 3; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
         retract_1(xv, dv, ov);
-        for (int k = 0; k < 3; ++k) out[VAR_X_OFF[v] + k] = ov[k];
-    }
-    FGC_CYCLES("retract", 1, "variables", 8, 1, 4);
-    for (int i = 0; i < 8; ++i) {  // a variable every II=2 cycles (the plan's)
-#pragma HLS PIPELINE II=2
-        const int v = KIND2_VARIABLES[i];
+        for (int k = 0; k < 3; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
+    } else if (VAR_KIND[v] == 2) {
         T xv[6], dv[6], ov[6];
-        for (int k = 0; k < 6; ++k) xv[k] = x[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 6; ++k) dv[k] = delta[VAR_T_OFF[v] + k];
+        for (int k = 0; k < 6; ++k) xv[k] = X[VAR_X_OFF[v] + k];
+        for (int k = 0; k < 6; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
         retract_2(xv, dv, ov);
-        for (int k = 0; k < 6; ++k) out[VAR_X_OFF[v] + k] = ov[k];
+        for (int k = 0; k < 6; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 2, "variables", 8, 2, 4);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -3414,6 +3410,10 @@ struct LesConfig {
     static const int MUL_LAT = 3;
     static const int DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
+    // back_substitute's state update (fgc_backsub.h's backsub_retire): a variable an iteration
+    static const int N_TANGENT = ::fgc::N_TANGENT, N_VARIABLES = ::fgc::N_VARIABLES;
+    static const int RETIRE_II = 36, RETIRE_DEPTH = 218;
+    static void retract_variable(int v, const T delta[N_TANGENT]) { ::fgc::retract_variable(v, delta); }
 };
 
 // ---- partial QR (paper A): per step the stacked rows [A | b] of its factors, its children's new
@@ -3539,7 +3539,7 @@ struct LmConfig {
     static T cost_x() { return total_cost(X); }
     static bool linearize_x() { return linearize_all(X); }
     static bool solve_at(T mu) { return solve(mu); }
-    static void retract_trial() { retract_all(X, DELTA, X_TRIAL); }
+    static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
     static T cost_trial() { return total_cost(X_TRIAL); }
     static T noise_x() { return rounding_noise_all(X); }
     static const int N_X = ::fgc::N_X, N_TANGENT = ::fgc::N_TANGENT;

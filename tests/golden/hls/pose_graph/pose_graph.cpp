@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   12 processes, 17 streams (n_u=4, 1 unit set(s))
+//   14 processes, 18 streams (n_u=4, 1 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -23,6 +23,8 @@
 //   process backsub_load1
 //   process backsub_set1
 //   process backsub_load0
+//   process backsub_slots
+//   process backsub_retire
 //   stream qr0_v0 depth=8: qr0_broadcast -> qr0_update0
 //   stream qr0_v1 depth=8: qr0_broadcast -> qr0_update1
 //   stream qr0_v2 depth=8: qr0_broadcast -> qr0_update2
@@ -40,6 +42,7 @@
 //   stream qr0_row2 depth=2: qr0_update2 -> qr0_collect
 //   stream qr0_col3 depth=54: qr0_update3 -> qr0_evaluate
 //   stream qr0_row3 depth=2: qr0_update3 -> qr0_collect
+//   stream backsub_dx depth=18: backsub_slots -> backsub_retire
 #include "pose_graph.h"
 
 #include "hls_stream.h"
@@ -175,9 +178,6 @@ const int BLOCK0_INSTANCES[6] = {
 };
 const int BLOCK1_INSTANCES[1] = {
     6,
-};
-const int KIND0_VARIABLES[5] = {
-    0, 1, 2, 3, 4,
 };
 
 // ---- the accelerator's memories: static, sized at compile time; nothing is allocated
@@ -1437,19 +1437,26 @@ void retract_0(const T x[12], const T d[6], T out[12]) {
     out[11] = r30*x[6] + r32*x[7] + r33*x[8] + x[11];
 }
 
-void retract_all(const T x[N_X], const T delta[N_TANGENT], T out[N_X]) {
-    FGC_EVENT("retract");
-    FGC_PHASE("state_update");
-    for (int i = 0; i < 5; ++i) {  // a variable every II=36 cycles (the plan's)
-#pragma HLS PIPELINE II=36
-        const int v = KIND0_VARIABLES[i];
+// The state update of variable v, fed by back-substitution (fgc_backsub.h's backsub_retire, a
+// variable an iteration as its step is solved): X_TRIAL = X (+) delta on v, through its type's
+// datapath (the branches exclusive: each datapath one instance)
+const int VAR_KIND[5] = {  // per variable its type (retract_<k>)
+    0, 0, 0, 0, 0,
+};
+const int RETIRE_VARS[5] = {  // the variables in the order back-substitution solves them
+    1, 3, 4, 0, 2,
+};
+const int RETIRE_STEP[5] = {  // per entry of RETIRE_VARS: its step if it is the step's first variable, else -1
+    2, -1, -1, 0, 1,
+};
+void retract_variable(int v, const L delta[N_TANGENT]) {
+    if (VAR_KIND[v] == 0) {
         T xv[12], dv[6], ov[12];
-        for (int k = 0; k < 12; ++k) xv[k] = x[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 6; ++k) dv[k] = delta[VAR_T_OFF[v] + k];
+        for (int k = 0; k < 12; ++k) xv[k] = X[VAR_X_OFF[v] + k];
+        for (int k = 0; k < 6; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
         retract_0(xv, dv, ov);
-        for (int k = 0; k < 12; ++k) out[VAR_X_OFF[v] + k] = ov[k];
+        for (int k = 0; k < 12; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
     }
-    FGC_CYCLES("retract", 0, "variables", 5, 36, 203);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -1482,6 +1489,10 @@ struct LesConfig {
     static const int MUL_LAT = 3;
     static const int DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
+    // back_substitute's state update (fgc_backsub.h's backsub_retire): a variable an iteration
+    static const int N_TANGENT = ::fgc::N_TANGENT, N_VARIABLES = ::fgc::N_VARIABLES;
+    static const int RETIRE_II = 36, RETIRE_DEPTH = 212;
+    static void retract_variable(int v, const T delta[N_TANGENT]) { ::fgc::retract_variable(v, delta); }
 };
 
 // ---- partial QR (paper A): per step the stacked rows [A | b] of its factors, its children's new
@@ -1586,7 +1597,7 @@ struct LmConfig {
     static T cost_x() { return total_cost(X); }
     static bool linearize_x() { return linearize_all(X); }
     static bool solve_at(T mu) { return solve(mu); }
-    static void retract_trial() { retract_all(X, DELTA, X_TRIAL); }
+    static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
     static T cost_trial() { return total_cost(X_TRIAL); }
     static T noise_x() { return rounding_noise_all(X); }
     static const int N_X = ::fgc::N_X, N_TANGENT = ::fgc::N_TANGENT;
