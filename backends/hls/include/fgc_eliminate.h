@@ -92,67 +92,78 @@ void cholesky_assemble_first(int s, int lane) {
     }
 }
 
-// The entries added, not stored, into HA[lane], one loop a segment, all through one pipelined
-// loop (one adder): step fs's factors after its first (fs >= 0), each its packed Gram (H's
-// lower triangle, then its gradient row) from GRAM, then step kids's children (kids >= 0) whose
-// position in the schedule has the parity `par` (odd[c]), each its update matrix (upper
-// triangle and reduced g) from nf, the NF lane the steps at those positions wrote (the t-th
-// step's drain writes NF[t % 2]); fs and kids are the same step when both are given. One entry
-// a cycle: within a segment every entry goes to its own address (the column and separator maps
-// are one-to-one), so no iteration waits for another's add (II 1); a later segment's entry may
-// meet the same address.
+// One segment of entries added, not stored, into HA[lane] (cholesky_assemble_adds'): a further
+// factor's packed Gram from GRAM at g0 (child false: its column map from cb, d columns; entry
+// (x, y), y <= x, at x (x + 1) / 2 + y, row d: g) or a child's update matrix from nf at u0
+// (child true: its separator map from mb, sc columns; row x: columns x ... sc - 1, then its g,
+// column sc). One entry a cycle: within a segment every entry goes to its own address (the
+// column and separator maps are one-to-one), so no iteration waits for another's add (II 1); a
+// later segment's entry may meet the same address.
+// A schedule without children prints its children's tables with no entries: their code is
+// left out at compile time (no access to an empty table, even on a path that never runs).
+enum { CHOLESKY_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEPMAP) > 0 };
+
 template <class CFG>
-void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
-                            const typename CFG::T nf[CFG::N_NF], int lane) {
+void cholesky_add_segment(bool child, int cb, int d, int g0, int mb, int sc, int u0, int w,
+                          const typename CFG::T nf[CFG::N_NF], int lane) {
     typedef typename CFG::T T;
-    const int f0 = fs >= 0 ? STEP_FACTOR_BEGIN[fs] + 1 : 0;
-    const int nfac = fs >= 0 && STEP_FACTOR_BEGIN[fs + 1] > f0 ? STEP_FACTOR_BEGIN[fs + 1] - f0 : 0;
-    const int c0 = kids >= 0 ? STEP_CHILD_BEGIN[kids] : 0;
-    const int nkid = kids >= 0 ? STEP_CHILD_BEGIN[kids + 1] - c0 : 0;
-    const int w = fs >= 0 ? STEP_W[fs] : kids >= 0 ? STEP_W[kids] : 0;
-    for (int e = 0; e < nfac + nkid; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS+CFG::MAX_CHILDREN
-        const bool child = e >= nfac;
-        const int fac = child ? 0 : STEP_FACTORS[f0 + e];
-        const int c = child ? STEP_CHILDREN[c0 + e - nfac] : 0;
-        if (child && int(odd[c]) != par) continue;  // in the other NF lane: the other pass's
-        // a factor: its column map from cb, d columns, its Gram from g0; a child: its
-        // separator map from mb, sc columns, its update matrix from u0
-        const int cb = child ? 0 : FACTOR_COLMAP_BEGIN[fac];
-        const int d = child ? 0 : FACTOR_COLMAP_BEGIN[fac + 1] - cb;
-        const int g0 = child ? 0 : FACTOR_GRAM_OFF[fac];
-        const int sc = child ? STEP_W[c] - STEP_F[c] : 0;
-        const int mb = child ? STEP_SEPMAP_BEGIN[c] : 0;
-        const int u0 = child ? STEP_NF_OFF[c] : 0;
-        // a Gram's entry (x, y), y <= x, at x (x + 1) / 2 + y, row d: g; an update matrix's row
-        // x: columns x ... sc - 1, then its g (column sc)
-        const int n = child ? sc * (sc + 1) / 2 + sc : d * (d + 1) / 2 + d;
-        for (int k = 0, x = 0, y = 0; k < n; ++k) {
+    const int n = child ? sc * (sc + 1) / 2 + sc : d * (d + 1) / 2 + d;
+    for (int k = 0, x = 0, y = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=HA inter false
-            int a, b;
-            T v;
-            if (child) {
-                a = STEP_SEPMAP[mb + x];
-                b = y < sc ? STEP_SEPMAP[mb + y] : w;
-                v = nf[u0 + x * (sc + 1) + y];
-            } else {
-                a = x < d ? FACTOR_COLMAP[cb + x] : w;
-                b = FACTOR_COLMAP[cb + y];
-                v = GRAM[g0 + k];
-            }
-            const int lo = b < a ? b : a, hi = b < a ? a : b;
-            HA[lane][lo][hi >> 1][hi & 1] += v;
-            if (child ? y == sc : y == x) {
-                ++x;
-                y = child ? x : 0;
-            } else {
-                ++y;
-            }
+        int a, b;
+        T v;
+        if (CHOLESKY_HAS_CHILDREN && child) {
+            a = STEP_SEPMAP[mb + x];
+            b = y < sc ? STEP_SEPMAP[mb + y] : w;
+            v = nf[u0 + x * (sc + 1) + y];
+        } else {
+            a = x < d ? FACTOR_COLMAP[cb + x] : w;
+            b = FACTOR_COLMAP[cb + y];
+            v = GRAM[g0 + k];
         }
-        FGC_CYCLES("assemble", 0, child ? "child" : "gram", n, CFG::SCATTER_II,
-                   CFG::SCATTER_DEPTH);
+        const int lo = b < a ? b : a, hi = b < a ? a : b;
+        HA[lane][lo][hi >> 1][hi & 1] += v;
+        if (child ? y == sc : y == x) {
+            ++x;
+            y = child ? x : 0;
+        } else {
+            ++y;
+        }
+    }
+    FGC_CYCLES("assemble", 0, child ? "child" : "gram", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
+}
+
+// The entries added, not stored, into HA[lane]: step fs's factors after its first (fs >= 0),
+// then step kids's children (kids >= 0) whose position in the schedule has the parity `par`
+// (odd[c]), from nf, the NF lane the steps at those positions wrote (the t-th step's drain
+// writes NF[t % 2]); fs and kids are the same step when both are given. A segment each, all
+// through one RTL copy of cholesky_add_segment (its two call sites run one after the other):
+// one adder.
+template <class CFG>
+void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
+                            const typename CFG::T nf[CFG::N_NF], int lane) {
+#pragma HLS ALLOCATION function instances=cholesky_add_segment<CFG> limit=1
+    if (fs >= 0) {
+        const int w = STEP_W[fs];
+        for (int e = STEP_FACTOR_BEGIN[fs] + 1; e < STEP_FACTOR_BEGIN[fs + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
+            const int fac = STEP_FACTORS[e];
+            const int cb = FACTOR_COLMAP_BEGIN[fac];
+            cholesky_add_segment<CFG>(false, cb, FACTOR_COLMAP_BEGIN[fac + 1] - cb,
+                                      FACTOR_GRAM_OFF[fac], 0, 0, 0, w, nf, lane);
+        }
+    }
+    if (CHOLESKY_HAS_CHILDREN && kids >= 0) {
+        const int w = STEP_W[kids];
+        for (int e = STEP_CHILD_BEGIN[kids]; e < STEP_CHILD_BEGIN[kids + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
+            const int c = STEP_CHILDREN[e];
+            if (int(odd[c]) != par) continue;  // in the other NF lane: the other pass's
+            cholesky_add_segment<CFG>(true, 0, 0, 0, STEP_SEPMAP_BEGIN[c], STEP_W[c] - STEP_F[c],
+                                      STEP_NF_OFF[c], w, nf, lane);
+        }
     }
 }
 
