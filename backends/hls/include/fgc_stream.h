@@ -214,6 +214,9 @@ void kept_matvec(const L m[STREAM_KF_T * STREAM_KF_T], const L v[STREAM_KF_T], L
 // vector's.
 template <class CFG>
 void reexpress(int c, const T x[STREAM_KF_X]) {
+    // the Log and retraction passes below run one after another: one datapath of each
+#pragma HLS ALLOCATION function instances=keyframe_local limit=1
+#pragma HLS ALLOCATION function instances=keyframe_retract limit=1
     FGC_PHASE("kept");
     const T h = T(STREAM_H);
     T base[STREAM_KF_T], plus[STREAM_KF_T], minus[STREAM_KF_T], step[STREAM_KF_T];
