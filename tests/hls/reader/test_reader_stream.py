@@ -1,0 +1,52 @@
+"""The on-chip stream design's kept task as the second reader reads it (issue 32): fgc_stream.h's
+``reexpress`` runs its five Log / retraction passes one after another and shares one instance of
+each kernel (``ALLOCATION function ... limit=1`` in its scope), so the kept task holds one
+``keyframe_local`` and one ``keyframe_retract`` per function that calls them (reexpress,
+kept_walk); without those pragmas every call site is its own RTL copy."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+import fgc_backends
+from fgc.app import streaming
+from fgc.app.specs import example
+from fgc.ir.program import SolverConfig
+from fgc_backends.hls.reader import emitted_files
+from fgc_backends.hls.reader.design import _design, _Reader
+
+SHARE = re.compile(r"#pragma HLS ALLOCATION function instances=keyframe_\w+ limit=1\n")
+
+
+@pytest.fixture(scope="module")
+def emitted(tmp_path_factory):
+    """LIO N = 6, incremental K = 2, a batch step at 3: the emitted files and the window's
+    translation unit."""
+    graph = example("lio").build(N=6)
+    program = streaming.compile_stream(graph, SolverConfig(precision="float32", linear="qr"),
+                                       incremental=2, batch_every=(3,))
+    out = tmp_path_factory.mktemp("stream")
+    hls = fgc_backends.load("hls")
+    hls.emit(streaming.stream_program(graph, program, None), out, hls.Config(scalar="float"))
+    files, top = emitted_files(out)
+    return files, f"{top.removesuffix('_stream')}.cpp"
+
+
+def _copies(files, unit) -> dict[str, int]:
+    reading = _design(_Reader(files, 4), "kept_task", unit)
+    modules = dict(reading.modules)
+    return {k: modules.get(k, 0) for k in ("keyframe_local", "keyframe_retract")}
+
+
+def test_the_kept_task_holds_one_log_and_one_retraction_per_calling_function(emitted):
+    files, unit = emitted
+    assert _copies(files, unit) == {"keyframe_local": 2, "keyframe_retract": 2}
+
+
+def test_without_the_sharing_every_call_site_is_a_copy(emitted):
+    files, unit = emitted
+    stripped = [(name, SHARE.sub("", text)) for name, text in files]
+    assert stripped != files  # the pragmas are there to strip
+    assert _copies(stripped, unit) == {"keyframe_local": 4, "keyframe_retract": 3}
