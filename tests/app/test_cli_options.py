@@ -276,7 +276,15 @@ def test_allocation_and_unit_sets_shape_the_emitted_design(tmp_path):
     from fgc_backends.hls.units.datapath import factor_allocation  # the emitted limits
     limits = dict(factor_allocation(program, plan.options)[heavy])
     assert limits["mul"] == 48 and limits["add"] == 32 and limits["div"] == 4  # div: default
-    assert ("operation", "fmul", 48) in found[f"factor_{heavy}"]
+    # the printed limit is the multipliers the datapath's loop binds at its II, at most the
+    # option's 48 (the plan's rule); a limit below that binding is printed as the limit
+    (mul,) = [n for kind, op, n in found[f"factor_{heavy}"] if op == "fmul"]
+    assert 4 < mul <= 48
+    tight = tmp_path / "tight"
+    assert main(["compile", lio, "-p", "N=5", "--backend", "hls", "--out", str(tight),
+                 "--units", "2", "--unit-sets", "1", "--allocation", "mul=4,add=32", "-q"]) == 0
+    assert ("operation", "fmul", 4) in allocations((tight / "lio.cpp").read_text())[
+        f"factor_{heavy}"]
     assert "qr0_update1" in kernel and "qr1_" not in kernel  # one unit set, n_u = 2
     two = accel_plan(program, hls.HlsConfig())
     assert dict(factor_allocation(program, two.options)[heavy])["mul"] == 24
