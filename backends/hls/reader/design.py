@@ -115,10 +115,11 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
             mine[kind] += n * mult
 
     def walk(f: _Function, env: dict[str, int], mult: int, depth: int, seq: Counter,
-             unit: str | None) -> None:
+             unit: str | None, scope: dict[str, int] | None = None) -> None:
         """``f``'s code into the module being read: its sequential operators into ``seq``
         (an INLINE callee's join its caller's: one RTL body), its pipelined loops' and its
-        other callees' instances apart."""
+        other callees' instances apart. ``scope``: the module's ``ALLOCATION function``
+        budgets left (an INLINE callee's calls are the module's: they draw on the same)."""
         visited.add((f.file, f.name))
         unit = _unit(f, unit)
         for kind, n in own(f, env, unit).items():
@@ -130,14 +131,16 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
                 operators[kind] += n * mult
                 here[kind] += n * mult
                 mine[kind] += n * mult
-        # ALLOCATION function instances=g limit=n in f: f's call sites of g share n instances
-        left = dict(reader.function_allocation(f.text, env))
+        # ALLOCATION function instances=g limit=n in f: the module's call sites of g (f's own
+        # and its INLINE callees') share n instances
+        left = {} if scope is None else scope
+        left.update(reader.function_allocation(f.text, env))
         for callee, cenv, times in calls(f.text, env, unit):
             if callee.name in left:
                 times = min(times, left[callee.name])
                 left[callee.name] -= times
             if callee.inline and depth <= 400:
-                walk(callee, cenv, mult * times, depth + 1, seq, unit)
+                walk(callee, cenv, mult * times, depth + 1, seq, unit, left)
             else:
                 visit(callee, cenv, mult * times, depth + 1, unit)
 

@@ -75,7 +75,10 @@ def whitening_macs(b) -> int:
     return macs
 
 
-COST_CALL_SITES = 2  # total_cost(X) and total_cost(X_TRIAL): LM control's two cost hooks
+# RTL instances of the cost pass: LM control's two cost hooks (total_cost(X), total_cost(X_TRIAL))
+# share one total_cost (fgc_lm.h: the hooks and try_steps INLINE into optimize, whose ALLOCATION
+# function instances=total_cost limit=1 binds both calls to it; was 2, every cost datapath twice)
+COST_CALL_SITES = 1
 
 # A block type is *small* when its two kernels (Jacobian and cost mode) hold at most this many
 # operations together, none of them trig or special, and no member has a robust loss: the
@@ -279,8 +282,8 @@ def build(ctx) -> None:
                                (Loop(f"{name}_{mode}_instances", instances, ii, depth),)))
             # factor_<b> / factor_cost_<b> under its ALLOCATION at this call site, and the
             # loop's own operations
-            # (the cost loop twice: total_cost has two call sites, LM control's cost at X and
-            # at X_TRIAL, each its own RTL instance)
+            # (the cost loop once per total_cost instance: LM control's cost at X and at
+            # X_TRIAL share one, COST_CALL_SITES)
             copies = COST_CALL_SITES if mode == "cost" else 1
             # (the emitter prints every limit: operation instances for the arithmetic,
             # function instances for trig and special, which Vitis honours alike)

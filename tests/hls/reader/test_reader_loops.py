@@ -156,7 +156,7 @@ void spread(const T a[N]) {
 def test_a_global_partitioned_in_a_function_and_a_shared_function():
     """A global's ARRAY_PARTITION inside the function that uses it partitions the global
     (not an alias), and ``ALLOCATION function instances=g limit=1`` makes two call sites of g
-    one RTL instance."""
+    one RTL instance, also when one of them is in an INLINE callee."""
     text = """
 typedef float T;
 const int N = 64;
@@ -184,6 +184,15 @@ T top(T x, T y, bool p) {
     assert dict(design.modules)["scale"] == 1
     unshared = text.replace("#pragma HLS ALLOCATION function instances=scale limit=1\n", "")
     assert dict(read_design([("s.cpp", unshared)], "top", ADD_LATENCY).modules)["scale"] == 2
+    # the limit holds for the call sites of INLINE callees too (their code is the caller's:
+    # LM control's cost hooks and try_steps inlined into optimize share one total_cost)
+    inlined = text.replace("    if (p) return scale(x, y);\n    return scale(y, x);",
+                           "    if (p) return via(x, y);\n    return scale(y, x);").replace(
+        "T top(", "T via(T x, T y) {\n#pragma HLS INLINE\n    return scale(x, y);\n}\nT top(")
+    assert "via(x, y);" in inlined and "#pragma HLS INLINE\n" in inlined
+    assert dict(read_design([("s.cpp", inlined)], "top", ADD_LATENCY).modules)["scale"] == 1
+    not_inlined = inlined.replace("#pragma HLS INLINE\n", "")
+    assert dict(read_design([("s.cpp", not_inlined)], "top", ADD_LATENCY).modules)["scale"] == 2
     alias = text.replace("variable=BANKS complete", "variable=Q complete")
     (zero,) = [r for r in read_design([("s.cpp", alias)], "top", ADD_LATENCY).loops
                if r.function == "zero"]

@@ -3256,8 +3256,10 @@ T rounding_noise_all(const T x[N_X]) {
     return noise;
 }
 
-// The graph's cost (GTSAM's error) at x: every datapath in cost mode.
+// The graph's cost (GTSAM's error) at x: every datapath in cost mode. One RTL instance: LM
+// control's two calls (the cost at X and at X_TRIAL) share it (fgc_lm.h's ALLOCATION).
 T total_cost(const T x[N_X]) {
+#pragma HLS INLINE off
     FGC_EVENT("cost");
     FGC_PHASE("factor_cost");
     T total = T(0);
@@ -3536,11 +3538,17 @@ struct LmConfig {
     static T root(T x) { return fgc_sqrt(x); }
     static T magnitude(T x) { return fgc_abs(x); }
     static bool finite(T x) { return fgc_isfinite(x); }
-    static T cost_x() { return total_cost(X); }
+    static T cost_x() {
+#pragma HLS INLINE
+        return total_cost(X);
+    }
     static bool linearize_x() { return linearize_all(X); }
     static bool solve_at(T mu) { return solve(mu); }
     static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
-    static T cost_trial() { return total_cost(X_TRIAL); }
+    static T cost_trial() {
+#pragma HLS INLINE
+        return total_cost(X_TRIAL);
+    }
     static T noise_x() { return rounding_noise_all(X); }
     static const int N_X = ::fgc::N_X, N_TANGENT = ::fgc::N_TANGENT;
     static const int PARTIALS = T_PARTIALS, ADD_LAT = T_ADD_LAT, MUL_LAT = T_MUL_LAT;
