@@ -21,21 +21,24 @@
 // parity: a lane per port) and bank (a >> 1) % PARTIALS, so a lane's sum comes back PARTIALS >=
 // ADD_LAT iterations later (II 1) and the first S_ia of a sum sets it (no zeroing pass).
 //
-// cond_backsub then runs two pipelined loops and one multiply:
-// - per row (trip f, II 1): its 2 PARTIALS sums folded and subtracted from d (y_i = d_i - S_i xs)
-//   beside the reciprocal of the diagonal 1 / R_ii (the divides independent of each other);
+// cond_backsub then runs two pipelined loops and one move:
+// - per row (trip f, II 1): its 2 PARTIALS sums folded and subtracted from d beside the
+//   reciprocal of the diagonal 1 / R_ii (the divides independent of each other), the row then
+//   scaled by it: y_i = (d_i - S_i xs) / R_ii, so that y_r is x_r once the columns right of r
+//   are subtracted;
 // - the triangle as one flattened loop over the columns r = f - 1 ... 1, last first: at a column's
-//   first iteration x_r = y_r / R_rr (y_r final: its last update was the previous column's first
-//   iteration), then y_i -= R_ir x_r for the rows i = r - 1 ... 0 above the pivot, one a cycle.
-//   The recurrence per unknown is CHAIN = 2 MUL_LAT + ADD_LAT (x_r, its product, the
-//   subtraction), so a column takes max(r, CHAIN + 1) iterations: columns shorter than the chain
-//   are padded, the long ones hide it (the column updates run beside the chain). y_i is updated
-//   in place (one read, one write a cycle) and each new value also written to z_i, from which
-//   a column's first iteration reads x_r's y_r (z: one write, one read a cycle), so each array
-//   needs no more than its two ports. DEPENDENCE distance CHAIN is true for both: z_{r-1} is
+//   first iteration x_r = y_r (final: its last update was the previous column's first
+//   iteration), then y_i -= (R_ir / R_ii) x_r for the rows i = r - 1 ... 0 above the pivot, one a
+//   cycle, R_ir / R_ii (R_ir times the row's reciprocal) off the chain. The recurrence per
+//   unknown is CHAIN = MUL_LAT + ADD_LAT (the product with x_r, the subtraction; the scaling by
+//   1 / R_rr no longer on it; an iteration is Lm + CHAIN deep), so a column takes max(r,
+//   CHAIN + 1) iterations: columns shorter than the chain are padded, the long ones hide it (the
+//   column updates run beside the chain). y_i is updated in place (one read, one write a cycle)
+//   and each new value also written to z_i, from which a column's first iteration reads x_r (z:
+//   one write, one read a cycle; inv: one read), so each array needs no more than its two ports. DEPENDENCE distance CHAIN is true for both: z_{r-1} is
 //   read a column's length >= CHAIN + 1 iterations after it was written, y_i is updated again
 //   a column's length - 1 >= CHAIN iterations later;
-// - x_0 = y_0 / R_00.
+// - x_0 = y_0 (a move).
 // No DATAFLOW inside: the kernel runs one cond_backsub per unit set side by side (back_substitute's
 // backsub_level region). Cycles to FGC_CYCLES (fgc_cycles.h) as the loops state them.
 #ifndef FGC_BACKSUB_H
@@ -45,10 +48,10 @@
 
 namespace fgc_units {
 
-// The triangle's recurrence per unknown (backsub.py's backsub_chain): the multiply by 1 / R_rr,
-// the product R_ir x_r and the subtraction.
+// The triangle's recurrence per unknown (backsub.py's backsub_chain): the product
+// (R_ir / R_ii) x_r and the subtraction (the rows are scaled by 1 / R_ii before it).
 template <class CFG>
-constexpr int backsub_chain() { return 2 * CFG::MUL_LAT + CFG::ADD_LAT; }
+constexpr int backsub_chain() { return CFG::MUL_LAT + CFG::ADD_LAT; }
 
 // Iterations of cond_backsub's triangle loop: the columns r = f - 1 ... 1, each max(r, CHAIN + 1).
 template <class CFG>
@@ -109,12 +112,12 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
                   typename CFG::T x[CFG::MAX_F]) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
-    const int CHAIN = 2 * CFG::MUL_LAT + CFG::ADD_LAT;  // backsub_chain
+    const int CHAIN = CFG::MUL_LAT + CFG::ADD_LAT;  // backsub_chain
     const int w = f + s, cols = w + 1;
     if (f <= 0) return;
     T y[CFG::MAX_F], z[CFG::MAX_F], inv[CFG::MAX_F];
-    // per row: y_i = d_i - (its 2 P partial sums folded), 1 / R_ii beside it; trip f, II 1,
-    // depth max(La (1 + ceil(log2 2P)), Ld). srow: the index of S_i0 among cond_load's words
+    // per row: y_i = (d_i - (its 2 P partial sums folded)) / R_ii (1 / R_ii beside the fold, then
+    // one multiply); trip f, II 1, depth max(La (1 + ceil(log2 2P)), Ld) + Lm. srow: the index of S_i0 among cond_load's words
     // (its parity: the lane of a = 0); a sum holds terms iff its first a is below s.
     for (int i = 0, srow = f; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
@@ -126,31 +129,33 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
                 row[h * P + b] = used ? part[h][b][i] : T(0);
             }
         }
-        const T yi = cond[i * cols + w] - fold_partials<T, 2 * CFG::PARTIALS>(row);
+        const T ri = T(1) / cond[i * cols + i];
+        const T yi = (cond[i * cols + w] - fold_partials<T, 2 * CFG::PARTIALS>(row)) * ri;
         y[i] = yi;
         z[i] = yi;
-        inv[i] = T(1) / cond[i * cols + i];
+        inv[i] = ri;
         srow += cols - i - 1;
     }
     FGC_CYCLES("backsub", 0, "rows", f, 1,
-               CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) > CFG::DIV_LAT
-                   ? CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) : CFG::DIV_LAT);
+               (CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) > CFG::DIV_LAT
+                    ? CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) : CFG::DIV_LAT) +
+                   CFG::MUL_LAT);
     // the triangle, columns r = f - 1 ... 1 flattened (k: the iteration within column r)
     const int pad = CHAIN + 1;
     const int trip = backsub_triangle_trip<CFG>(f);
     T xr = T(0);
     for (int e = 0, r = f - 1, k = 0; e < trip; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F*CFG::MAX_F/2+CFG::MAX_F*(2*CFG::MUL_LAT+CFG::ADD_LAT+1)
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F*CFG::MAX_F/2+CFG::MAX_F*(CFG::MUL_LAT+CFG::ADD_LAT+1)
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=y inter true distance=CHAIN
 #pragma HLS DEPENDENCE variable=z inter true distance=CHAIN
         if (k == 0) {
-            xr = z[r] * inv[r];
+            xr = z[r];
             x[r] = xr;
         }
         if (k < r) {
             const int i = r - 1 - k;
-            const T yi = y[i] - cond[i * cols + r] * xr;
+            const T yi = y[i] - (cond[i * cols + r] * inv[i]) * xr;
             y[i] = yi;
             z[i] = yi;
         }
@@ -162,9 +167,10 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
             ++k;
         }
     }
-    FGC_CYCLES("backsub", 0, "triangle", trip, 1, CHAIN);
-    x[0] = z[0] * inv[0];  // depth Lm
-    FGC_CYCLES("backsub", 0, "last", 1, 1, CFG::MUL_LAT);
+    // depth Lm + CHAIN: R_ir / R_ii, then its product with x_r and the subtraction
+    FGC_CYCLES("backsub", 0, "triangle", trip, 1, CFG::MUL_LAT + CHAIN);
+    x[0] = z[0];  // a move, depth 1
+    FGC_CYCLES("backsub", 0, "last", 1, 1, 1);
 }
 
 }  // namespace fgc_units
