@@ -184,9 +184,9 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
 // conditional loads into the other lane, S xs summed on the way (cond_load); a step whose
 // separator needs the step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the steps,
 // -1 none). Per slot: the loaded step's separator solution in from DELTA (PORTS words a cycle),
-// the slot's backsub_lane<p> region (lane p's backsub_set<p> beside the other lane's
-// backsub_load), the solved step's frontal solution out into DELTA and, a pair of words a
-// cycle, into `dx` to the state update.
+// then the slot's backsub_lane<p> region: lane p's backsub_set<p> (the solve, then the solved
+// step's frontal solution out into DELTA and, a pair of words a cycle, into `dx` to the state
+// update: backsub_out) beside the other lane's backsub_load (COND only).
 //
 // backsub_retire: the state update fed by back-substitution: X_TRIAL = X (+) delta variable by
 // variable as their steps' words arrive (its own copy of delta, by tangent index), through the
@@ -216,20 +216,43 @@ L BS_X1[MAX_F];
 // two solution words a stream word (the copies move two words a cycle)
 struct BsPair { L word[2]; };
 
+// The solved step's frontal solution out (cb: its STEP_COL_BEGIN) into DELTA and, a pair of
+// words a cycle, into `dx` to the state update: the end of the solving lane's process, beside the
+// other lane's load (which reads COND only; the separator came in from DELTA before the region).
+template <class CFG>
+void backsub_out(const L x[CFG::MAX_F], int f, int cb, hls::stream<BsPair>& dx) {
+    for (int c = 0; c < f; c += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_F+1)/2
+#pragma HLS PIPELINE II=1
+        BsPair out;
+        for (int h = 0; h < 2; ++h) {
+            const L v = c + h < f ? x[c + h] : L(0);
+            if (c + h < f) DELTA[STEP_COL[cb + c + h]] = v;
+            out.word[h] = v;
+        }
+        dx.write(out);
+    }
+    FGC_CYCLES("backsub_copy", 0, "solution_out", (f + 1) / 2, 1, CFG::MOVE_DEPTH);
+}
+
 // Lane u's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load left
-// (f = 0: none this time).
+// (f = 0: none this time), then its solution out (backsub_out).
 template <class CFG>
 void backsub_set0(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
-                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F]) {
+                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
+                  hls::stream<BsPair>& dx) {
     FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
     fgc_units::cond_backsub<CFG>(cond, f, s, part, x);
+    backsub_out<CFG>(x, f, cb, dx);
 }
 
 template <class CFG>
 void backsub_set1(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
-                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F]) {
+                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
+                  hls::stream<BsPair>& dx) {
     FGC_BRANCH();
     fgc_units::cond_backsub<CFG>(cond, f, s, part, x);
+    backsub_out<CFG>(x, f, cb, dx);
 }
 
 // Lane u's load: a step's conditional from COND (at off) into the lane's buffer.
@@ -250,22 +273,24 @@ void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS],
 // A slot whose solve is on lane 0: lane 0's cond_backsub beside lane 1's cond_load.
 template <class CFG>
 void backsub_lane0(const L cond0[CFG::MAX_F * CFG::MAX_COLS], int f0, int s0,
-                   const L part0[2][CFG::PARTIALS][CFG::MAX_F], L x0[CFG::MAX_F],
+                   const L part0[2][CFG::PARTIALS][CFG::MAX_F], L x0[CFG::MAX_F], int cb0,
+                   hls::stream<BsPair>& dx,
                    int off, int f1, int s1, const L xs1[CFG::MAX_COLS],
                    L cond1[CFG::MAX_F * CFG::MAX_COLS], L part1[2][CFG::PARTIALS][CFG::MAX_F]) {
 #pragma HLS DATAFLOW
-    backsub_set0<CFG>(cond0, f0, s0, part0, x0);
+    backsub_set0<CFG>(cond0, f0, s0, part0, x0, cb0, dx);
     backsub_load1<CFG>(off, f1, s1, xs1, cond1, part1);
 }
 
 // A slot whose solve is on lane 1: lane 1's cond_backsub beside lane 0's cond_load.
 template <class CFG>
 void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
-                   const L part1[2][CFG::PARTIALS][CFG::MAX_F], L x1[CFG::MAX_F],
+                   const L part1[2][CFG::PARTIALS][CFG::MAX_F], L x1[CFG::MAX_F], int cb1,
+                   hls::stream<BsPair>& dx,
                    int off, int f0, int s0, const L xs0[CFG::MAX_COLS],
                    L cond0[CFG::MAX_F * CFG::MAX_COLS], L part0[2][CFG::PARTIALS][CFG::MAX_F]) {
 #pragma HLS DATAFLOW
-    backsub_set1<CFG>(cond1, f1, s1, part1, x1);
+    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx);
     backsub_load0<CFG>(off, f0, s0, xs0, cond0, part0);
 }
 
@@ -298,24 +323,12 @@ void backsub_slots(hls::stream<BsPair>& dx) {
         }
         FGC_CYCLES("backsub_copy", 0, "separator_in", (lsep + 1) / 2, 1, CFG::MOVE_DEPTH);
         if (p == 0)
-            backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, off, lf, lsep, BS_XS1, BS_COND1,
-                               bs_part1);
+            backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,
+                               BS_COND1, bs_part1);
         else
-            backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, off, lf, lsep, BS_XS0, BS_COND0,
-                               bs_part0);
+            backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
+                               BS_COND0, bs_part0);
         FGC_JOIN();
-        for (int c = 0; c < sf; c += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_F+1)/2
-#pragma HLS PIPELINE II=1
-            BsPair out;
-            for (int h = 0; h < 2; ++h) {
-                const L v = c + h < sf ? (p == 0 ? BS_X0[c + h] : BS_X1[c + h]) : L(0);
-                if (c + h < sf) DELTA[STEP_COL[scb + c + h]] = v;
-                out.word[h] = v;
-            }
-            dx.write(out);
-        }
-        FGC_CYCLES("backsub_copy", 0, "solution_out", (sf + 1) / 2, 1, CFG::MOVE_DEPTH);
         if (sv >= 0) FGC_OUTER_SEND();
     }
 }

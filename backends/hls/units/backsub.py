@@ -108,19 +108,20 @@ def backsub_slots(tables: dict) -> tuple[tuple[int, int, int], ...]:
 def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
                        timing: dict) -> list[Loop]:
     """One slot of back_substitute() (:func:`backsub_slots`): the loaded step's separator
-    solution in (:data:`PORTS` words a cycle), the ``backsub_lane<p>`` DATAFLOW region (the
-    solving lane's ``cond_backsub`` beside the other lane's ``cond_load``: the slower plus the
-    other's fill), the solved step's frontal solution out."""
+    solution in (:data:`PORTS` words a cycle), then the ``backsub_lane<p>`` DATAFLOW region (the
+    solving lane's ``cond_backsub`` and its frontal solution out, ``backsub_out``, beside the
+    other lane's ``cond_load``: the slower plus the other's fill)."""
     def sizes(s):
         return (tables["STEP_F"][s], tables["STEP_W"][s] - tables["STEP_F"][s]) if s >= 0 \
             else (0, 0)
 
     (sf, ss), (lf, ls) = sizes(solve), sizes(load)
-    region = _region_cycles([backsub_loops(sf, ss, ops, name=f"bs{solve}"),
-                             [load_loop(lf, ls, ops, name=f"cond_load{load}")]])
+    solve_loops = backsub_loops(sf, ss, ops, name=f"bs{solve}")
+    if sf:
+        solve_loops.append(kernel_loop("solution_out", _ported(sf), "move", timing))
+    region = _region_cycles([solve_loops, [load_loop(lf, ls, ops, name=f"cond_load{load}")]])
     return [kernel_loop("separator_in", _ported(ls), "move", timing),
-            Loop("backsub_lane", 1, 1, region),
-            kernel_loop("solution_out", _ported(sf), "move", timing)]
+            Loop("backsub_lane", 1, 1, region)]
 
 
 def backsub_copies(tables: dict, s: int, timing: dict, ops: OperatorTable
