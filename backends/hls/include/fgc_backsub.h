@@ -226,8 +226,12 @@ void backsub_out(const L x[CFG::MAX_F], int f, int cb, hls::stream<BsPair>& dx) 
 #pragma HLS PIPELINE II=1
         BsPair out;
         for (int h = 0; h < 2; ++h) {
-            const L v = c + h < f ? x[c + h] : L(0);
-            if (c + h < f) DELTA[STEP_COL[cb + c + h]] = v;
+            const int j = c + h;  // an index: no floating-point operation here
+            L v = L(0);
+            if (j < f) {
+                v = x[j];
+                DELTA[STEP_COL[cb + j]] = v;
+            }
             out.word[h] = v;
         }
         dx.write(out);
