@@ -39,8 +39,8 @@
 //   read a column's length >= CHAIN + 1 iterations after it was written, y_i is updated again
 //   a column's length - 1 >= CHAIN iterations later;
 // - x_0 = y_0 (a move).
-// No DATAFLOW inside: the kernel runs one cond_backsub per unit set side by side (back_substitute's
-// backsub_level region). Cycles to FGC_CYCLES (fgc_cycles.h) as the loops state them.
+// No DATAFLOW inside: the driver below runs a lane's cond_backsub beside the other lane's
+// cond_load (backsub_lane<p>). Cycles to FGC_CYCLES (fgc_cycles.h) as the loops state them.
 #ifndef FGC_BACKSUB_H
 #define FGC_BACKSUB_H
 
