@@ -6,6 +6,12 @@ bound and its count of loops whose declared II the text cannot meet.
 
     python bench/bench_second_reader.py            # LIO N=30 (QR) and imu_window N=50 (Cholesky)
     python bench/bench_second_reader.py --quick    # LIO N=8, imu_window N=10, fewer designs
+    python bench/bench_second_reader.py --stream   # also paper A's on-chip stream design
+
+The on-chip stream design (bench_papers.paper_a_stream's setting: LIO, incremental K = 3, batch
+steps at keyframes 5/15/25) is compared per part: the window kernel, the batch kernel and the
+stream section (fgc_stream.h's functions that the stream top calls, each read as a top, the
+batch kernel they reach taken out), the plan's ``WindowModel.resources()`` parts beside them.
 
 Model estimates (no vendor tool here): the reader's DSP is a lower bound on what Vitis binds.
 """
@@ -24,6 +30,7 @@ from fgc.ir.program import SolverConfig
 from fgc_backends.hls import HlsConfig, emit
 from fgc_backends.hls.plan import DEFAULT_ALLOCATION, PlanOptions, build_plan, plan_cost
 from fgc_backends.hls.reader import check, check_dsp, emitted_files, read_design
+from fgc_backends.hls.reader.design import _design, _Reader
 
 # the files of the code around the units (issue 32's kernel helper); the QR unit's headers
 # (fgc_qr.h, fgc_eliminate.h's stacking) and the Cholesky cascade's (fgc_cpe.h) are counted apart
@@ -66,16 +73,81 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
                           default=1.0))
 
 
+def section_tops(reader) -> list[str]:
+    """The stream section's functions the stream top (fgc_stream.h's ``stream_call``) calls."""
+    call = reader.functions.get("stream_call")
+    if call is None:
+        return []
+    names = dict.fromkeys(re.findall(r"\b(\w+)\s*<\s*CFG\s*>\s*\(", call.text))
+    return [n for n in names if n in reader.functions
+            and reader.functions[n].file == "fgc_stream.h"]
+
+
+def measure_stream(n: int, out: Path) -> dict:
+    """Paper A's on-chip stream design at N = ``n``: the plan's DSP per part (window kernel,
+    batch kernel, stream section) beside the reader's, and the reader's II-short / carried
+    loops. The reader's window kernel is the whole design's reading less the batch kernel's
+    translation unit and the stream section's tops (what they instantiate apart from the batch
+    kernel: the kernels' functions they call from their own call sites included)."""
+    import fgc_backends
+    from fgc.app import streaming
+
+    graph = example("lio").build(N=n)
+    solver = SolverConfig(precision="float32", linear="qr")
+    program = streaming.compile_stream(graph, solver, incremental=3,
+                                       batch_every=tuple(b for b in (5, 15, 25) if b < n))
+    pricer = streaming.WindowPricer(streaming.stream_program(graph, program))
+    res = pricer.model.resources()
+    hls = fgc_backends.load("hls")
+    hls.emit(streaming.stream_program(graph, program, None), out, hls.Config(scalar="float"))
+    files, top = emitted_files(out)
+    tab = pricer.model.plan.ops
+    dsp_of = _dsp_of(tab)
+    reader = _Reader(files, tab.add.latency)
+    design = _design(reader, top)
+    window_cpp = f"{top.removesuffix('_stream')}.cpp"
+    batch_cpp = next((k for k, _ in files if k.endswith(".cpp") and k != window_cpp), None)
+    batch = design.unit_dsp(dsp_of, batch_cpp) if batch_cpp else 0
+    section = 0
+    for name in section_tops(reader):
+        if name in reader.functions:
+            part = _design(reader, name, window_cpp)
+            section += part.dsp(dsp_of) - (part.unit_dsp(dsp_of, batch_cpp) if batch_cpp else 0)
+    total = design.dsp(dsp_of)
+    issues = check(design.reached_loops)
+    plan_parts = {k: d for k, (d, _) in res["parts"].items()}
+    modules = dict(design.modules)
+    return dict(plan_dsp=res["dsp"], reader_dsp=total,
+                parts=[("window kernel", plan_parts.get("window kernel", 0),
+                        total - batch - section),
+                       ("batch kernel", plan_parts.get("batch kernel", 0), batch),
+                       ("stream section", plan_parts.get("stream section", 0), section)],
+                ii_short=sum(i.rule == "ii_ports" for i in issues),
+                recurrences=sum(i.rule == "ii_recurrence" for i in issues),
+                issues=[str(i) for i in issues],
+                copies={k: modules.get(k, 0) for k in ("eliminate_all", "qr_update",
+                                                       "keyframe_local", "keyframe_retract",
+                                                       "retract_all", "so3_log")})
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="small problems, fewer designs")
+    parser.add_argument("--stream", action="store_true",
+                        help="also paper A's on-chip stream design (LIO N=30, or 8 with --quick)")
+    parser.add_argument("--stream-only", action="store_true", help="the stream design alone")
     args = parser.parse_args(argv)
     lio_n, imu_n = (8, 10) if args.quick else (30, 50)
     units = (1, 4) if args.quick else (1, 4, 8, 32)
     cpes = (5, 20) if args.quick else (5, 20, 80)
     doubled = tuple((k, 2 * v) for k, v in DEFAULT_ALLOCATION)
     rows = []
+    stream = None
+    if args.stream_only:
+        units, cpes = (), ()
     with tempfile.TemporaryDirectory() as tmp:
+        if args.stream or args.stream_only:
+            stream = measure_stream(lio_n, Path(tmp) / "stream")
         lio = example("lio")
         for n_u in units:
             for alloc in (None, doubled):
@@ -116,6 +188,17 @@ def main(argv=None) -> int:
           "those files")
     if others:
         print("II-short / carried loops in the units' own headers: " + ", ".join(sorted(others)))
+    if stream is not None:
+        print(f"\npaper A's on-chip stream design (LIO N={lio_n}, K=3): plan {stream['plan_dsp']} "
+              f"DSP, reader {stream['reader_dsp']} DSP; II short {stream['ii_short']}, "
+              f"carried {stream['recurrences']}")
+        print(f"{'part':16s} {'plan DSP':>9s} {'reader DSP':>10s}  plan >= reader")
+        for part, plan, read in stream["parts"]:
+            print(f"{part:16s} {plan:9d} {read:10d}  {'yes' if plan >= read else 'NO'}")
+        print("module copies the text instantiates (every call site its own): " +
+              ", ".join(f"{k} {v}" for k, v in stream["copies"].items()))
+        for issue in stream["issues"]:
+            print("  " + issue)
     return 0
 
 

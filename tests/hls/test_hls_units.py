@@ -457,7 +457,8 @@ def test_cycle_counts(driver):
     region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
     assert region == (words + la + 2 + 2 * f + sum(cpe(p) for p in range(f)) + 2 * (20 - f)
                       + 2)
-    sequential = loop(f, 1, lm + ld + 2) + loop(f, 1, lm + 2)  # scale, pivot check
+    # the scale (and the smallest pivot beside it), the pivot check: the smallest over the scale
+    sequential = loop(f, 1, lm + ld + 2) + loop(1, 1, ld + 2)
     p = 12  # the driver's PARTIALS
     # cond_load: the f (w + 1) - f (f - 1) / 2 words R's upper triangle, S and d hold, two a
     # cycle, multiply-add deep (+ read and write); cond_backsub: per row the 2 P partial sums
@@ -533,7 +534,7 @@ def test_plan_prices_the_cpe_rounds(driver):
                 k = n - r * c - c
                 rounds.append(Loop("back", (k * (k + 1) // 2 + k + 1) // 2, 1, 2))
         scalar = (Loop("scale", n, 1, ops.mul.latency + ops.div.latency + 2).cycles
-                  + Loop("check", n, 1, ops.mul.latency + 2).cycles)
+                  + Loop("check", 1, 1, ops.div.latency + 2).cycles)
         assert res.cycles == sum(lp.cycles for lp in rounds) + scalar
 
 

@@ -301,3 +301,30 @@ def test_cpe_pairs_counts_two_words_of_a_row_a_pair():
 
     for w in range(0, 40):
         assert cpe_pairs(w) == sum(-(-(w + 1 - i) // 2) for i in range(w))
+
+
+def test_a_schedule_without_children_builds_and_matches_the_simulator(tmp_path):
+    # one variable, one step: the kernel prints the children's tables empty, and the assembly's
+    # children code is left out at compile time (g++ -Werror=array-bounds on the strict csim
+    # build otherwise); the result equals the simulator's (double: 1e-9)
+    import fgc
+    from fgc import Vector2
+    from fgc.compile import compile_graph
+    from fgc.frontend.factors import PriorFactor
+    from fgc.ir.datafile import problem_data
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import sim
+    from fgc_backends.hls import HlsConfig, emit, run_csim
+
+    g = fgc.Graph()
+    g.add_variable("p", Vector2([0.3, -0.2]))
+    g.add(PriorFactor("p", Vector2([1.0, 2.0]), fgc.noise.isotropic(2, 0.1)))
+    program = compile_graph(g, SolverConfig(method="gn", linear="cholesky"), name="one")
+    assert len(program.schedule.steps) == 1
+    project = emit(program, tmp_path / "one", HlsConfig(scalar="double"))
+    data = problem_data(g, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)
+    assert result.status == reference.status
+    for key, value in reference.storage.items():
+        assert abs(result.values[key] - value).max() <= 1e-9

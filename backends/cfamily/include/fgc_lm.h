@@ -40,6 +40,8 @@ struct Step {
 
 template <class CFG>
 Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
+#pragma HLS INLINE
+    // (HLS: the scalar decision shares optimize's operators; g++ ignores the pragma)
     typedef typename CFG::T T;
     T band = T(-1);  // not yet known
     const T x_norm = CFG::x_norm();  // once per call (per linearisation), not per solve

@@ -436,25 +436,23 @@ void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src, typename CFG::T H[CF
         }
     }
     FGC_CYCLES("cpe_step", 0, "no_pivots", words, 1, 2);
-    // the scale: max_i rmax_i^2 / d_i (= the largest |U_ic|, squared): trip f, II 1,
-    // depth Lm + Ld + 2 (read, multiply, divide, compare)
-    T scale2 = T(0);
+    // the scale: max_i rmax_i^2 / d_i (= the largest |U_ic|, squared) and the smallest pivot
+    // beside it: trip f, II 1, depth Lm + Ld + 2 (read, multiply, divide, compare)
+    T scale2 = T(0), dmin = T(0);
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
         const T q = rmax[i] * rmax[i] / dpiv[i];
         scale2 = q > scale2 ? q : scale2;
+        dmin = i == 0 || dpiv[i] < dmin ? dpiv[i] : dmin;
     }
     FGC_CYCLES("cpe_step", 0, "scale", f, 1, CFG::MUL_LAT + CFG::DIV_LAT + 2);
-    // the pivots against it: d_i > eps^2 scale^2 (U_ii > eps scale): trip f, II 1, depth 2
-    const T floor2 = T(CFG::SINGULAR_EPS * CFG::SINGULAR_EPS) * scale2;
-    bool tiny = false;
-    for (int i = 0; i < f; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-#pragma HLS PIPELINE II=1
-        if (!(dpiv[i] > floor2)) tiny = true;
-    }
-    FGC_CYCLES("cpe_step", 0, "pivot_check", f, 1, CFG::MUL_LAT + 2);
+    // every pivot against it, d_i > eps^2 scale^2 (U_ii > eps scale), is the smallest one's
+    // d_min / scale^2 > eps^2 (a NaN pivot is not_pd already): one divide and a compare, depth
+    // Ld + 2 (a divider: no DSP)
+    const T eps2 = T(CFG::SINGULAR_EPS * CFG::SINGULAR_EPS);
+    const bool tiny = f > 0 && !(dmin / scale2 > eps2);
+    FGC_CYCLES("cpe_step", 0, "pivot_check", f > 0 ? 1 : 0, 1, CFG::DIV_LAT + 2);
     *not_pd = npd;
     *singular = npd || tiny;
 }

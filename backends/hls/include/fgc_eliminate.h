@@ -48,15 +48,12 @@
 // streams a step's words into the cascade clears each word it reads, and the assembly writes
 // only words it reads (the upper triangle and the gradient of rows < w).
 
-// Step s's factors' packed Grams into HA[lane], one loop per factor. The first is stored, not
-// added (the lane is all zero): two entries a cycle (GRAM's two ports read, the lane's two
-// ports written; within one factor every entry has its own address), its column map first
-// copied into registers (two reads of it an entry each). Each further factor's packed Gram
-// (H's lower triangle, then its gradient row) is added one entry a cycle: within one loop every
-// entry goes to its own address (the column maps are one-to-one), so no iteration waits for
-// another's add (II 1); a later loop's entry may meet the same address.
+// Step s's first factor's packed Gram into HA[lane], stored, not added (the lane is all zero):
+// two entries a cycle (GRAM's two ports read, the lane's two ports written; within one factor
+// every entry has its own address), its column map first copied into registers (two reads of
+// it an entry each). The further factors are cholesky_assemble_adds'.
 template <class CFG>
-void cholesky_assemble_grams(int s, int lane) {
+void cholesky_assemble_first(int s, int lane) {
     const int w = STEP_W[s];
     if (STEP_FACTOR_BEGIN[s] < STEP_FACTOR_BEGIN[s + 1]) {
         const int fac = STEP_FACTORS[STEP_FACTOR_BEGIN[s]];
@@ -93,62 +90,80 @@ void cholesky_assemble_grams(int s, int lane) {
         }
         FGC_CYCLES("assemble", 0, "gram_first", (n + 1) / 2, CFG::MOVE_II, CFG::MOVE_DEPTH);
     }
-    for (int e = STEP_FACTOR_BEGIN[s] + 1; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
-        const int fac = STEP_FACTORS[e];
-        const int cb = FACTOR_COLMAP_BEGIN[fac];
-        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
-        const int g0 = FACTOR_GRAM_OFF[fac];
-        const int n = d * (d + 1) / 2 + d;  // entry (p, q), q <= p, at p (p + 1) / 2 + q; row d: g
-        for (int k = 0, p = 0, q = 0; k < n; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HA inter false
-            const int a = p < d ? FACTOR_COLMAP[cb + p] : w, b = FACTOR_COLMAP[cb + q];
-            const int lo = b < a ? b : a, hi = b < a ? a : b;
-            HA[lane][lo][hi >> 1][hi & 1] += GRAM[g0 + k];
-            if (q == p) {
-                q = 0;
-                ++p;
-            } else {
-                ++q;
-            }
-        }
-        FGC_CYCLES("assemble", 0, "gram", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
-    }
 }
 
-// Step s's children's update matrices (upper triangle and reduced g) added into HA[lane], one
-// entry a cycle per child (each entry its own address within a child: II 1): the children c
-// whose position in the schedule has the parity `par` (odd[c]), from nf, the NF lane the steps
-// at those positions wrote (the t-th step's drain writes NF[t % 2]).
+// One segment of entries added, not stored, into HA[lane] (cholesky_assemble_adds'): a further
+// factor's packed Gram from GRAM at g0 (child false: its column map from cb, d columns; entry
+// (x, y), y <= x, at x (x + 1) / 2 + y, row d: g) or a child's update matrix from nf at u0
+// (child true: its separator map from mb, sc columns; row x: columns x ... sc - 1, then its g,
+// column sc). One entry a cycle: within a segment every entry goes to its own address (the
+// column and separator maps are one-to-one), so no iteration waits for another's add (II 1); a
+// later segment's entry may meet the same address.
+// A schedule without children prints its children's tables with no entries: their code is
+// left out at compile time (no access to an empty table, even on a path that never runs).
+enum { CHOLESKY_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEPMAP) > 0 };
+
 template <class CFG>
-void cholesky_assemble_children(int s, int par, const bool odd[N_STEPS],
-                                const typename CFG::T nf[CFG::N_NF], int lane) {
-    const int w = STEP_W[s];
-    for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
-        const int c = STEP_CHILDREN[e];
-        if (int(odd[c]) != par) continue;  // in the other NF lane: added by the other pass
-        const int sc = STEP_W[c] - STEP_F[c];
-        const int mb = STEP_SEPMAP_BEGIN[c];
-        const int u0 = STEP_NF_OFF[c];
-        const int n = sc * (sc + 1) / 2 + sc;  // row a: columns a ... sc - 1, then its g (column sc)
-        for (int k = 0, a = 0, b = 0; k < n; ++k) {
+void cholesky_add_segment(bool child, int cb, int d, int g0, int mb, int sc, int u0, int w,
+                          const typename CFG::T nf[CFG::N_NF], int lane) {
+    typedef typename CFG::T T;
+    const int n = child ? sc * (sc + 1) / 2 + sc : d * (d + 1) / 2 + d;
+    for (int k = 0, x = 0, y = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=HA inter false
-            const int ma = STEP_SEPMAP[mb + a], mbb = b < sc ? STEP_SEPMAP[mb + b] : w;
-            const int lo = ma < mbb ? ma : mbb, hi = ma < mbb ? mbb : ma;
-            HA[lane][lo][hi >> 1][hi & 1] += nf[u0 + a * (sc + 1) + b];
-            if (b == sc) {
-                ++a;
-                b = a;
-            } else {
-                ++b;
-            }
+        int a, b;
+        T v;
+        if (CHOLESKY_HAS_CHILDREN && child) {
+            a = STEP_SEPMAP[mb + x];
+            b = y < sc ? STEP_SEPMAP[mb + y] : w;
+            v = nf[u0 + x * (sc + 1) + y];
+        } else {
+            a = x < d ? FACTOR_COLMAP[cb + x] : w;
+            b = FACTOR_COLMAP[cb + y];
+            v = GRAM[g0 + k];
         }
-        FGC_CYCLES("assemble", 0, "child", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
+        const int lo = b < a ? b : a, hi = b < a ? a : b;
+        HA[lane][lo][hi >> 1][hi & 1] += v;
+        if (child ? y == sc : y == x) {
+            ++x;
+            y = child ? x : 0;
+        } else {
+            ++y;
+        }
+    }
+    FGC_CYCLES("assemble", 0, child ? "child" : "gram", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
+}
+
+// The entries added, not stored, into HA[lane]: step fs's factors after its first (fs >= 0),
+// then step kids's children (kids >= 0) whose position in the schedule has the parity `par`
+// (odd[c]), from nf, the NF lane the steps at those positions wrote (the t-th step's drain
+// writes NF[t % 2]); fs and kids are the same step when both are given. A segment each, all
+// through one RTL copy of cholesky_add_segment (its two call sites run one after the other):
+// one adder.
+template <class CFG>
+void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
+                            const typename CFG::T nf[CFG::N_NF], int lane) {
+#pragma HLS ALLOCATION function instances=cholesky_add_segment<CFG> limit=1
+    if (fs >= 0) {
+        const int w = STEP_W[fs];
+        for (int e = STEP_FACTOR_BEGIN[fs] + 1; e < STEP_FACTOR_BEGIN[fs + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
+            const int fac = STEP_FACTORS[e];
+            const int cb = FACTOR_COLMAP_BEGIN[fac];
+            cholesky_add_segment<CFG>(false, cb, FACTOR_COLMAP_BEGIN[fac + 1] - cb,
+                                      FACTOR_GRAM_OFF[fac], 0, 0, 0, w, nf, lane);
+        }
+    }
+    if (CHOLESKY_HAS_CHILDREN && kids >= 0) {
+        const int w = STEP_W[kids];
+        for (int e = STEP_CHILD_BEGIN[kids]; e < STEP_CHILD_BEGIN[kids + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
+            const int c = STEP_CHILDREN[e];
+            if (int(odd[c]) != par) continue;  // in the other NF lane: the other pass's
+            cholesky_add_segment<CFG>(true, 0, 0, 0, STEP_SEPMAP_BEGIN[c], STEP_W[c] - STEP_F[c],
+                                      STEP_NF_OFF[c], w, nf, lane);
+        }
     }
 }
 
@@ -189,8 +204,8 @@ void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int r
         }
     }
     FGC_CYCLES("assemble", 0, "source", pairs, CFG::MOVE_II, CFG::MOVE_DEPTH);
-    if (next >= 0) cholesky_assemble_grams<CFG>(next, 1 - lane);
-    if (kids >= 0) cholesky_assemble_children<CFG>(kids, rd, odd, nfr, kid_lane);
+    if (next >= 0) cholesky_assemble_first<CFG>(next, kid_lane);
+    cholesky_assemble_adds<CFG>(next, kids, rd, odd, nfr, kid_lane);
 }
 
 // The cascade's process of the cholesky_overlap region: step s factored from the stream, the

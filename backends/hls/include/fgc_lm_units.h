@@ -26,6 +26,7 @@ namespace fgc_units {
 
 template <class CFG>
 typename CFG::T lm_x_norm(const typename CFG::T x[CFG::N_X]) {
+#pragma HLS INLINE
     typedef typename CFG::T T;
     // |x|^2: word i into partial sum i % PARTIALS (a word a cycle: II 1), folded in a tree
     T xp[CFG::PARTIALS];
@@ -49,6 +50,7 @@ typename CFG::T lm_x_norm(const typename CFG::T x[CFG::N_X]) {
 template <class CFG>
 bool lm_step_test(bool solved, typename CFG::T mu, const typename CFG::T delta[CFG::N_TANGENT],
                   const typename CFG::T g[CFG::N_TANGENT], typename CFG::T out[2]) {
+#pragma HLS INLINE
     typedef typename CFG::T T;
     bool ok = solved;
     // |delta|^2 and delta^T (g + mu delta), entry i into partial sums i % PARTIALS of each

@@ -73,12 +73,7 @@ from fgc_backends.hls.plan import (
 )
 from fgc_backends.hls.plan.stream import Term, UpdatePrice
 from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops, retire_region
-from fgc_backends.hls.units.cholesky import (
-    assemble_loops,
-    cpe_step_loops,
-    hgc_loops,
-    hgc_phases,
-)
+from fgc_backends.hls.units.cholesky import elimination_phases, hgc_loops, hgc_phases
 from fgc_backends.hls.units.datapath import gradient_loops, small_blocks
 from fgc_backends.hls.units.lm_control import lm_control_phases, rounding_noise_loops, setup_phase
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
@@ -495,18 +490,11 @@ class UpdateModel:
                                 tuple(hgc_loops(view, lt, self.options.hgc_lanes, self.timing, {
                                     b: loop.ii for (b, mode), loop in self.factor_loop.items()
                                     if mode == "jacobian"})), linear=True))
-            phases.append(Phase("assemble", False, tuple(
-                Process(f"assemble{s}", "cpe", tuple(assemble_loops(tables, s, lt)))
-                for s in steps), linear=True))
-            loops = []
-            for s in steps:
-                c = first + s
-                sep = self.cdim[c + 1] if c < last else 0
-                loops += cpe_step_loops(self.cdim[c], sep, self.options.cpe, self.les,
-                                        name=f"s{c}")
-            # the cascade's drain stores the conditionals and update matrices (no store pass)
-            phases.append(Phase("cholesky", False, (Process("cascade", "cpe", tuple(loops)),),
-                                linear=True))
+            # as the batch plan's: the assembly beside the cascade (cholesky_overlap), the
+            # window's clusters serially oldest first
+            dims = {s: (self.cdim[first + s], self.cdim[first + s + 1] if first + s < last else 0)
+                    for s in steps}
+            phases += elimination_phases(tables, list(steps), dims, self.options.cpe, self.les, lt)
         # back-substitution step by step, the state update fed by it beside (fgc_backsub.h's
         # back_substitute: backsub_retire retracts each cluster's variables as it is solved)
         unit = "backsub" if self.qr else "trisolve"

@@ -27,6 +27,7 @@ from fgc_backends.hls.reader.text import (
     _subscripts,
     _unit,
     _Var,
+    library_calls,
 )
 
 
@@ -200,7 +201,7 @@ class _Counter(_Scope):
             var = self._lookup(name, scope)
             return var is not None and var.is_float and indices >= len(var.dims)
 
-        return ExpressionTyper(is_float, self._float_call)
+        return ExpressionTyper(is_float, self._float_call, self.functions)
 
     def _float_call(self, name: str) -> bool:
         """Whether the project function (or struct member) ``name`` returns a floating-point
@@ -227,10 +228,17 @@ class _Counter(_Scope):
         return stmt.startswith("return") and self.returns_float and \
             bool(re.search(r"[-+*/]", stmt))
 
-    @staticmethod
-    def _operators(stmt: str) -> Counter:
+    def _operators(self, stmt: str) -> Counter:
         ops: Counter = Counter()
+        # a square printed as a product of two copies, (e)*(e): the compiler's front end
+        # computes e once (common subexpressions of a statement are merged), so the second
+        # copy's operators are not built: it is read as an operand
         text = stmt
+        while True:
+            new = re.sub(r"\(([^()]*)\)\s*\*\s*\(\1\)", r"(\1)*q", text)
+            if new == text:
+                break
+            text = new
         while True:  # index arithmetic is integer: drop every subscript
             new = re.sub(r"\[[^\[\]]*\]", "", text)
             if new == text:
@@ -238,8 +246,8 @@ class _Counter(_Scope):
             text = new
         text = re.sub(r"<[^<>;()]*>", "", text)  # template arguments
         text = re.sub(r"\b\d+(?:\.\d*)?(?:[eE][-+]?\d+)?f?\b", "1", text)
-        ops["sqrt"] += len(_SQRT.findall(text))
-        ops["special"] += len(_SPECIAL.findall(text))
+        ops["sqrt"] += library_calls(_SQRT, text, self.functions)
+        ops["special"] += library_calls(_SPECIAL, text, self.functions)
         compound = re.match(r"^[A-Za-z_]\w*\s*([-+*/])=", text)
         if compound:
             ops[{"+": "add", "-": "add", "*": "mul", "/": "div"}[compound.group(1)]] += 1

@@ -34,6 +34,9 @@ class DesignReading:
     # pipelined loops; a callee's in its own file)
     by_file: tuple[tuple[str, tuple[tuple[str, int], ...]], ...] = ()
     reached: tuple[tuple[str, str], ...] = ()  # (file, function) of what the top instantiates
+    # (translation unit: the kernel .cpp that reached it, file) -> operator instances by kind
+    # (a header's functions apart per kernel that instantiates them)
+    by_unit: tuple[tuple[str, str, tuple[tuple[str, int], ...]], ...] = ()
 
     @property
     def reached_loops(self) -> tuple[LoopReading, ...]:
@@ -50,8 +53,21 @@ class DesignReading:
         return sum(n * dsp_of.get(kind, 0) for file, ops in self.by_file if file in wanted
                    for kind, n in ops)
 
+    def unit_dsp(self, dsp_of: dict[str, int], unit: str, files: Iterable[str] | None = None,
+                 exclude: Iterable[str] = ()) -> int:
+        """DSP of what translation unit ``unit`` (a kernel's .cpp) instantiates: its own
+        functions and the headers' it reaches (those defined in ``files`` only, when given;
+        none defined in ``exclude``)."""
+        wanted = None if files is None else set(files)
+        skip = set(exclude)
+        return sum(n * dsp_of.get(kind, 0) for u, file, ops in self.by_unit
+                   if u == unit and (wanted is None or file in wanted) and file not in skip
+                   for kind, n in ops)
 
-def _design(reader: _Reader, top: str) -> DesignReading:
+
+def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading:
+    """The design under ``top``; ``unit``: the translation unit a header function ``top`` is
+    read in (the kernel .cpp whose functions its calls reach first)."""
     # the pipelined loops of each function as the design instantiates it (a template reached
     # through a struct's member, cpe_cascade<CFG, K>::run calling cpe<CFG, K>, with K bound
     # there); the loops of functions the top never reaches as their own call sites bind them
@@ -69,6 +85,7 @@ def _design(reader: _Reader, top: str) -> DesignReading:
     modules: Counter = Counter()
     visited: set[tuple[str, str]] = set()
     by_file: dict[str, Counter] = {}
+    by_unit: dict[tuple[str, str], Counter] = {}
 
     def own(f: _Function, env: dict[str, int], unit: str | None) -> Counter:
         reader.flatten = False
@@ -91,9 +108,11 @@ def _design(reader: _Reader, top: str) -> DesignReading:
         seq: Counter = Counter()  # the sequential code's operators, its INLINE callees' merged
         walk(f, env, mult, depth, seq, unit)
         here = by_file.setdefault(f.file, Counter())
+        mine = by_unit.setdefault((_unit(f, unit) or f.file, f.file), Counter())
         for kind, n in seq.items():
             operators[kind] += n * mult
             here[kind] += n * mult
+            mine[kind] += n * mult
 
     def walk(f: _Function, env: dict[str, int], mult: int, depth: int, seq: Counter,
              unit: str | None) -> None:
@@ -105,10 +124,12 @@ def _design(reader: _Reader, top: str) -> DesignReading:
         for kind, n in own(f, env, unit).items():
             seq[kind] = max(seq[kind], n)
         here = by_file.setdefault(f.file, Counter())
+        mine = by_unit.setdefault((unit or f.file, f.file), Counter())
         for r in loops_of(f, env, unit):
             for kind, n in r.instances:
                 operators[kind] += n * mult
                 here[kind] += n * mult
+                mine[kind] += n * mult
         # ALLOCATION function instances=g limit=n in f: f's call sites of g share n instances
         left = dict(reader.function_allocation(f.text, env))
         for callee, cenv, times in calls(f.text, env, unit):
@@ -149,7 +170,7 @@ def _design(reader: _Reader, top: str) -> DesignReading:
 
     if top not in reader.functions:
         raise KeyError(top)
-    visit(reader.functions[top], {}, 1, 0)
+    visit(reader.functions[top], {}, 1, 0, unit)
     reached = {(file, name) for file, name in visited}
     loops = sorted({*(r for rs in readings.values() for r in rs),
                     *(r for r in reader.loops() if (r.file, r.function) not in reached)},
@@ -158,7 +179,9 @@ def _design(reader: _Reader, top: str) -> DesignReading:
                          tuple(sorted(modules.items())),
                          tuple(sorted((file, tuple(sorted(c.items())))
                                       for file, c in by_file.items())),
-                         tuple(sorted(reached)))
+                         tuple(sorted(reached)),
+                         tuple(sorted((u, file, tuple(sorted(c.items())))
+                                      for (u, file), c in by_unit.items() if c)))
 
 
 def read_design(files: Iterable[tuple[str, str]], top: str, add_latency: int

@@ -16,7 +16,7 @@ import re
 from collections import Counter
 from collections.abc import Callable
 
-from fgc_backends.hls.reader.text import _SPECIAL, _SQRT, FLOAT_TYPES
+from fgc_backends.hls.reader.text import _SPECIAL, _SQRT, FLOAT_TYPES, library_calls
 
 _FLOAT, _INT = "\x01F", "\x01I"  # a group already read: floating-point or not
 _INDEX = "\x02"  # a subscript (x[i][j]: x and two marks)
@@ -50,12 +50,15 @@ class ExpressionTyper:
     """Types and counts an expression's floating-point operators. ``is_float(name, indices)``:
     whether a variable subscripted ``indices`` times is a floating-point value (an array named
     without all its subscripts is a pointer: ``raw + 480`` is address arithmetic);
-    ``float_call(name)``: whether a function named so returns a floating-point value."""
+    ``float_call(name)``: whether a function named so returns a floating-point value;
+    ``defined``: the project's function names (a square root or special function the project
+    defines is counted where its body is read, not where it is called)."""
 
     def __init__(self, is_float: Callable[[str, int], bool],
-                 float_call: Callable[[str], bool | None]):
+                 float_call: Callable[[str], bool | None], defined=frozenset()):
         self.is_float = is_float
         self.float_call = float_call
+        self.defined = defined  # the project's functions (read in place where called)
 
     def operators(self, expr: str) -> Counter:
         ops: Counter = Counter()
@@ -67,8 +70,8 @@ class ExpressionTyper:
             text = new
         text = re.sub(r"(?<=\w)<[^<>;()]*>(?=\s*[(:])", "", text)  # template arguments
         text = re.sub(r"^\s*return\b", "", text)
-        ops["sqrt"] += len(_SQRT.findall(text))
-        ops["special"] += len(_SPECIAL.findall(text))
+        ops["sqrt"] += library_calls(_SQRT, text, self.defined)
+        ops["special"] += library_calls(_SPECIAL, text, self.defined)
         text = _NUMBER.sub(lambda m: _FLOAT if m.group(2) or "." in m.group(1) or
                            m.group(3) in ("f", "F") else "1", text)
         while True:  # innermost groups first: calls, casts, parentheses

@@ -47,6 +47,34 @@ class LoopReading:
         return sum(n * dsp_of.get(kind, 0) for kind, n in self.instances)
 
 
+def _header_before(code: str, lo: int, open_: int) -> list[str] | None:
+    """The three parts of the ``for (...)`` whose ``)`` is the last thing before ``open_`` (the
+    loop body's ``{``), or None (a ``for`` without braces earlier on the line is not it)."""
+    end = open_ - 1
+    while end > lo and code[end].isspace():
+        end -= 1
+    if code[end] != ")":
+        return None
+    start = _matching_back(code, end, lo)
+    if start is None or not re.search(r"\bfor\s*$", code[lo:start]):
+        return None
+    parts = code[start + 1:end].split(";")
+    return parts if len(parts) == 3 else None
+
+
+def _matching_back(code: str, close: int, lo: int) -> int | None:
+    """Index of the '(' that the ')' at ``close`` closes (not before ``lo``)."""
+    depth = 0
+    for i in range(close, lo - 1, -1):
+        if code[i] == ")":
+            depth += 1
+        elif code[i] == "(":
+            depth -= 1
+            if depth == 0:
+                return i
+    return None
+
+
 class _Reader(_Counter):
     # -- pipelined loops -------------------------------------------------------------------------
     def instantiations(self, f: _Function) -> list[dict[str, int]]:
@@ -111,17 +139,37 @@ class _Reader(_Counter):
                 depth -= 1
         if open_ is None:
             return None  # a function-level pipeline: not judged here
-        header = re.search(r"\bfor\s*\(([^;]*);([^;]*);([^{]*)\)\s*$", code[f.body[0]:open_])
-        if not header:
+        header = _header_before(code, f.body[0], open_)
+        if header is None:
             return None
+        # the arrays each call site binds the parameters to (one reading a distinct binding;
+        # the worst is the loop's): a parameter bound to a global at one site and to a local
+        # at another is not that global at every site
+        variants: list[dict[str, _Var]] = []
+        for site in self.sites.get(f.name) or [None]:
+            scope: dict[str, _Var] = {}
+            for p in f.params:
+                v = self._param_var(f, p)
+                if v is not None and site is not None and p.name in site:
+                    v = _Var(v.is_float, v.dims, site[p.name], "global") \
+                        if site[p.name] is not None else _Var(v.is_float, v.dims, p.name, "local")
+                if v is not None:
+                    scope[p.name] = v
+            if scope not in variants:
+                variants.append(scope)
+        readings = [self._read_loop(f, pragma, ii, template, open_, header, scope)
+                    for scope in variants]
+        return max(readings, key=lambda r: (r.ii_bound, sum(n for _, n in r.instances)))
+
+    def _read_loop(self, f: _Function, pragma: int, ii: int, template: dict[str, int],
+                   open_: int, header: list[str], scope: dict[str, _Var]) -> LoopReading:
+        """The loop whose body opens at ``open_`` (its ``for`` header's three parts), its
+        parameters bound as ``scope`` says."""
+        code = f.code
+        scope = dict(scope)
         close = _matching(code, open_, "{", "}")
         body = code[open_ + 1:close]
-        var = re.search(r"(\w+)\s*=", header.group(1))
-        scope: dict[str, _Var] = {}
-        for p in f.params:
-            v = self._param_var(f, p)
-            if v is not None:
-                scope[p.name] = v
+        var = re.search(r"(\w+)\s*=", header[0])
         # blocks closed before the loop declare nothing that lives into it
         before = _own_level(code[f.body[0] + 1:open_])
         for name, (is_float, dims) in self._declarations(before).items():
@@ -134,7 +182,7 @@ class _Reader(_Counter):
             if value is not None:
                 env[c.group(1)] = value
         count = self.count(body, scope, env, var.group(1) if var else None, outer)
-        count.ops += self._typer(scope).operators(header.group(2))  # its condition's operators
+        count.ops += self._typer(scope).operators(header[1])  # its condition's operators
         limits = self.allocation(f.text)
         instances: Counter = Counter()
         for kind, n in count.ops.items():

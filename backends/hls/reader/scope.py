@@ -163,6 +163,7 @@ class _Scope:
         """(function, parameter) -> the names its call sites pass (their base names, resolved
         through the callers' own parameters to globals where they lead there)."""
         direct: dict[tuple[str, str], set[tuple[str, str]]] = {}
+        calls: list[tuple[str, str, dict[str, str]]] = []  # (callee, caller, param -> base)
         for caller in self.functions.values():
             for m in _CALL.finditer(caller.text):
                 f = self.functions.get(m.group(1))
@@ -170,11 +171,14 @@ class _Scope:
                     continue
                 open_ = caller.text.index("(", m.end() - 1)
                 args = _split_top(caller.text[m.end():_matching(caller.text, open_, "(", ")")])
+                site = {}
                 for param, arg in zip(f.params, args, strict=False):
                     base = re.match(r"^&?\s*([A-Za-z_]\w*)", arg)
                     if base and (param.dims or param.pointer):
                         direct.setdefault((f.name, param.name), set()).add(
                             (caller.name, base.group(1)))
+                        site[param.name] = base.group(1)
+                calls.append((f.name, caller.name, site))
         out: dict[tuple[str, str], set[str]] = {}
 
         def resolve(key, seen):
@@ -189,6 +193,22 @@ class _Scope:
 
         for key in direct:
             out[key] = resolve(key, frozenset())
+        # per call site, the global each array parameter is bound to there (None: a local of
+        # the caller): a function called with KEPT_S as one argument at one site and as another
+        # at the next touches KEPT_S through one of them at a time, not both
+        self.sites: dict[str, list[dict[str, str | None]]] = {}
+        for callee, caller, site in calls:
+            bound = {}
+            for param, base in site.items():
+                if base in self.globals:
+                    bound[param] = base
+                elif any(p.name == base for p in self.functions[caller].params):
+                    names = sorted(out.get((caller, base), ()))
+                    bound[param] = names[0] if names else None
+                else:
+                    bound[param] = None
+            if bound not in self.sites.setdefault(callee, []):
+                self.sites[callee].append(bound)
         return out
 
     def _param_var(self, f: _Function, param) -> _Var | None:

@@ -24,8 +24,16 @@ _PRAGMA = re.compile(r"#\s*pragma\s+HLS\s+([^\n]*)", re.I)
 _SQRT = re.compile(r"\b(?:fgc_sqrt|hls::sqrt|std::sqrt|sqrt|sqrtf|fgc_rsqrt)\s*\(")
 
 
-_SPECIAL = re.compile(r"\b(?:fgc_sin|fgc_cos|fgc_atan2|fgc_exp|fgc_log|fgc_log1p|fgc_tan|"
-                      r"fgc_asin|fgc_acos|fgc_atan|hls::sin|hls::cos|std::sin|std::cos)\s*\(")
+_SPECIAL = re.compile(r"\b(?:fgc_|hls::|std::)(?:sin|cos|atan2|exp|log|log1p|tan|asin|acos|"
+                      r"atan)\s*\(")
+
+
+def library_calls(pattern: re.Pattern, text: str, defined) -> int:
+    """Calls in ``text`` matched by ``pattern`` (:data:`_SQRT`, :data:`_SPECIAL`) of functions
+    the project does not define: a project function (``fgc_sin``, a wrapper of ``std::sin``)
+    is read in place, its body's call counted there, not twice."""
+    return sum(1 for m in pattern.finditer(text)
+               if re.sub(r"[\s(]", "", m.group(0)).split("::")[-1] not in defined)
 
 
 KINDS = ("add", "mul", "div", "sqrt", "special")

@@ -45,9 +45,10 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     frontal and s separator columns, as the csim counters count them: one ``Loop`` per round
     (trip = its words + the status word at II 1, depth :func:`cpe_round_depth`), after each
     round but the last the copy of the rows it leaves back into H (two words a cycle), the copy of
-    [H | g] when f = 0, the singularity scale (trip f, depth Lm + Ld + 2) and the pivot check
-    (trip f, depth Lm + 2). The whole matrix as one step (f = n, s = 0) is what the Cholesky
-    phase of :func:`build_plan` prices; a multifrontal design sums this over its steps."""
+    [H | g] when f = 0, the singularity scale with the smallest pivot (trip f, depth Lm + Ld + 2)
+    and the pivot check (the smallest pivot over the scale: trip 1, depth Ld + 2). The whole
+    matrix as one step (f = n, s = 0) is what the Cholesky phase of :func:`build_plan` prices; a
+    multifrontal design sums this over its steps."""
     w = frontal + separator
     loops = []
     for r, p0 in enumerate(range(0, frontal, cpe)):
@@ -63,7 +64,7 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     if frontal == 0:
         loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 2))
     loops.append(Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2))
-    loops.append(Loop(f"{name}_pivot_check", frontal, 1, ops.mul.latency + 2))
+    loops.append(Loop(f"{name}_pivot_check", 1 if frontal else 0, 1, ops.div.latency + 2))
     return loops
 
 
@@ -279,12 +280,13 @@ def assemble_loops(tables: dict, s: int, timing: dict, grams: bool = True,
                    children: bool = True, odd: dict | None = None, par: int = 0) -> list[Loop]:
     """The loops that assemble step s's [H | g] into its lane of HA (fgc_eliminate.h), which is
     all zero (the source that streams a step into the cascade clears every word it reads, so
-    no clearing pass): ``grams`` (cholesky_assemble_grams) per factor its packed Gram's lower
+    no clearing pass): ``grams`` (cholesky_assemble_first, cholesky_assemble_adds) per
+    factor its packed Gram's lower
     triangle and gradient row (d (d + 1) / 2 + d entries), the step's first factor stored, not
     added, two entries a cycle (``move``) after its column map is copied into registers
     (``move``, d), each further one a loop of ``+=`` into the table-addressed frontal matrix
     whose entries all go to different addresses (``scatter``: II 1); ``children``
-    (cholesky_assemble_children) per child its update matrix's upper triangle and reduced g
+    (cholesky_assemble_adds) per child its update matrix's upper triangle and reduced g
     (s (s + 1) / 2 + s), a ``scatter`` loop each; with ``odd`` (step -> its position's parity in
     the schedule) only the children of parity ``par`` (one NF lane's)."""
     loops = []
@@ -324,6 +326,41 @@ def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict) -> 
     if nxt >= 0:
         loops += assemble_loops(tables, nxt, timing, odd=odd, par=1 - odd[s])
     return loops
+
+
+def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
+                       ops: OperatorTable, timing: dict) -> list[Phase]:
+    """cholesky_eliminate_all's phases (passes of one cholesky_overlap region, fgc_eliminate.h)
+    on the steps ``order`` (the schedule's LEVEL_STEPS; ``dims``: step -> (frontal, separator)
+    columns) with the step tables ``tables``: phase ``assemble`` (the assembler alone: each
+    step's position parity (the NF lane its drain writes), the first step's Grams, then per step
+    its children at positions of the other parity than its own, the step before among them)
+    and per step t the region ``cholesky_level<t>``: the cascade on the step
+    (:func:`cpe_step_loops`) beside the assembler (:func:`assembler_loops`: its words streamed
+    out, the next step's Grams and its children of t's parity), the slower of the two plus the
+    other's fill. A child that is no step of ``order`` (an on-chip window's τ, kept from
+    before the window) counts as of parity 0: added with the first step's Grams, alone. The
+    batch plan (:func:`_frontal`) and the stream's window model (plan/update.py) both price
+    the elimination with it."""
+    odd = {s: t % 2 for t, s in enumerate(order)}
+    for e in range(len(tables["STEP_CHILDREN"])):
+        odd.setdefault(tables["STEP_CHILDREN"][e], 0)
+    first = [Process("assemble_first", "cpe", tuple(assemble_loops(
+        tables, order[0], timing, odd=odd, par=0)))] if order else []
+    phases = [Phase("assemble", False, (
+        Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),
+        *first, *(Process(f"assemble{s}", "cpe", tuple(assemble_loops(
+            tables, s, timing, grams=False, odd=odd, par=1 - odd[s]))) for s in order)),
+        linear=True)]
+    for t, s in enumerate(order):
+        nxt = order[t + 1] if t + 1 < len(order) else -1
+        frontal, separator = dims[s]
+        phases.append(Phase(f"cholesky_level{t}", True, (
+            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
+                frontal, separator, cpe, ops, name=f"s{s}"))),
+            Process(f"assembler{s}", "cpe", tuple(assembler_loops(
+                tables, s, nxt, timing, odd)))), linear=True))
+    return phases
 
 
 def hessian_envelope(program) -> list[int]:
@@ -433,45 +470,26 @@ def _frontal(ctx) -> None:
         ctx.channels.append(Channel(f"cpe_recip{i}", "stream", 2, ops.word_bits,
                                     f"cpe_tap{i}", f"cpe{i}"))
     # the feed's adder (mu on the diagonal), the singularity scale's multiplier and divider and
-    # the check's threshold multiplier: one operator of each a loop (cpe_step's sequential code)
+    # the check's divider (the smallest pivot over the scale): one operator of each a loop or
+    # statement (cpe_step's sequential code)
     ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
-                          (("add", 1), ("mul", 2), ("div", 1))))
-    # fgc_eliminate.h's assembly: the Grams' and the children's loops, each a pipelined
-    # HA += at II 1: an adder each (cholesky_assemble_grams has one call site, the assembler's:
-    # the first step's Grams too, in a first region with no step to factor)
+                          (("add", 1), ("mul", 1), ("div", 2))))
+    # fgc_eliminate.h's assembly: the further factors' and the children's entries added
+    # through one pipelined HA += loop at II 1 (cholesky_assemble_adds, one call site: the
+    # assembler's, which also takes the first step's Grams in a region with no step to factor):
+    # one adder; the first factor is stored
     ctx.units.append(Unit("assemble", "the step's [H | g] from Grams and update matrices", 1,
-                          (("add", 2),)))
+                          (("add", 1),)))
     tables, timing = ctx.tables, ctx.les_timing
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
-    odd = {s: t % 2 for t, s in enumerate(order)}
-    steps = {st.index: st for st in program.schedule.steps}
-    # cholesky_eliminate_all (passes of one cholesky_overlap region): each step's position
-    # parity (the NF lane its drain writes), the first step's Grams (the assembler alone), then
-    # per step t its children at positions of the other parity than t's (the step before among
-    # them: the assembler alone, phase assemble) and the region (phase cholesky_level<t>): the
-    # cascade on the step (cpe_step_loops) beside the assembler (its words streamed out, the
-    # next step's Grams and its children of t's parity), the slower of the two plus the other's
-    # fill
-    first = [Process("assemble_first", "cpe", tuple(assemble_loops(
-        tables, order[0], timing, odd=odd, par=0)))] if order else []
-    ctx.add_phase("solve", Phase("assemble", False, (
-        Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),
-        *first, *(Process(f"assemble{s}", "cpe", tuple(assemble_loops(
-            tables, s, timing, grams=False, odd=odd, par=1 - odd[s]))) for s in order)),
-        linear=True))
+    dims = {st.index: (st.frontal_dim, st.separator_dim) for st in program.schedule.steps}
+    for phase in elimination_phases(tables, order, dims, c, ops, timing):
+        ctx.add_phase("solve", phase)
     # cholesky_overlap's stream, a pair of words wide, deep enough that the assembler (a pair a
     # cycle) never waits for the feed (a word a cycle): half a step's pairs and the feed's start
     mw = sizes["MAX_W"]
     ctx.channels.append(Channel("frontal", "stream", mw * (mw + 4) // 8 + ops.add.latency + 8,
                                 2 * ops.word_bits, "cholesky_assembler", "cpe_feed"))
-    for t, s in enumerate(order):
-        nxt = order[t + 1] if t + 1 < len(order) else -1
-        st = steps[s]
-        ctx.add_phase("solve", Phase(f"cholesky_level{t}", True, (
-            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
-                st.frontal_dim, st.separator_dim, c, ops, name=f"s{s}"))),
-            Process(f"assembler{s}", "cpe", tuple(assembler_loops(
-                tables, s, nxt, timing, odd)))), linear=True))
     # accel.cpp.jinja's GRAM and HF (the frontal matrix of one step at a time) and cpe_step's
     # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF)
     ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))

@@ -21,6 +21,7 @@ from fgc_backends.hls.plan.loops import (
 )
 from fgc_backends.hls.plan.model import Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
+from fgc_backends.hls.units.special_ops import with_helpers
 
 
 def gradient_loops(program, timing: dict) -> list[Process]:
@@ -264,6 +265,7 @@ def build(ctx) -> None:
         for mode, counts, text, out, own in (
                 ("jacobian", b.ops_after, b.kernel, jac, whitening_ops(bc)),
                 ("cost", b.ops_cost, b.cost_kernel, cost, robust_ops(bc))):
+            counts = with_helpers(counts, text)  # the special functions' bodies, as printed
             allocated = mode_allocation(allocations[i], counts)
             issue = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
                                for k, n in allocated])

@@ -79,20 +79,17 @@ def build(ctx) -> None:
     # δ·(g + μδ); g + μδ and the two partial sums)
     # its operators as Vitis binds them (plan.binding): each pipelined loop its own (|x|²: a
     # multiply-add a cycle; the step test: three; the gradient maximum: a compare), the
-    # scalar decision sequential, one of each kind it uses in each function that is its own
-    # module (fgc_lm.h's optimize: the gain ratio's subtract and divide; try_steps: the
-    # step-size test's multiply-add, cost + band, mu's update; lm_step_test: its folds and
-    # the half; lm_x_norm: its fold); the rounding-noise pass per block
+    # scalar decision sequential, one of each kind it uses in one module (fgc_lm.h's try_steps,
+    # the LmConfig wrappers and lm_step_test / lm_x_norm are INLINE into optimize, so their
+    # sequential folds, half and step-size test share its operators; as separate modules each
+    # bound its own: the second reader counts them apart); the rounding-noise pass per block
     # type (each noise_<b> calls rounding_noise<…>: its own module): a row every padded + 3
     # cycles through its padded products and moved's three adds, then the rows' terms (at II
     # 3·TILE: one multiplier and one adder), and noise_<b>'s running sum
     loops = [BoundLoop("x_norm", (("add", 1), ("mul", 1)), 1),
              BoundLoop("step_test", (("add", 3), ("mul", 3)), 1),
              BoundLoop("gradient_max", (("compare", 1),), 1),
-             BoundLoop("optimize", (("add", 1), ("div", 1), ("compare", 1)), 0),
-             BoundLoop("try_steps", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0),
-             BoundLoop("step_test_fold", (("add", 1), ("mul", 1)), 0),
-             BoundLoop("x_norm_fold", (("add", 1),), 0)]
+             BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
     for i, b in enumerate(program.blocks):  # noise_<b>'s call: its own instance
         padded = _block_shape(b)[2]
         loops += [BoundLoop(f"noise_rows_{i}", (("add", padded + 3), ("mul", padded + 1)),

@@ -121,3 +121,39 @@ def test_the_on_chip_stream_design_reads_both_kernels(tmp_path):
     assert window > 0.4 * batch and batch > 0.4 * window
     assert "kept_walk" in dict(design.modules)
     assert not [i for i in check(design.reached_loops) if i.file in kernels]
+
+
+def test_a_header_function_is_counted_in_each_kernel_that_instantiates_it():
+    """DesignReading.by_unit / unit_dsp: a header's unit (one multiply-add at II 1) called from
+    two kernels' .cpp files is one instance in each translation unit (bench_second_reader's
+    per-kernel comparison of the on-chip stream design), and a kernel's own loop is its own."""
+    header = """
+typedef float T;
+inline void mac(const T a[16], const T b[16], T out[16]) {
+    for (int i = 0; i < 16; ++i) {
+#pragma HLS PIPELINE II=1
+        out[i] = a[i] * b[i] + out[i];
+    }
+}
+"""
+    one = """
+#include "unit.h"
+void window(const T a[16], const T b[16], T out[16]) { mac(a, b, out); }
+"""
+    two = """
+#include "unit.h"
+void batch(const T a[16], const T b[16], T out[16]) {
+    mac(a, b, out);
+    for (int i = 0; i < 16; ++i) {
+#pragma HLS PIPELINE II=1
+        out[i] = out[i] * a[i];
+    }
+}
+void top(const T a[16], const T b[16], T out[16]) { window(a, b, out); batch(a, b, out); }
+"""
+    files = [("batch.cpp", two), ("window.cpp", one), ("unit.h", header)]
+    design = read_design(files, "top", ADD_LATENCY)
+    assert design.unit_dsp(DSP, "window.cpp") == 5  # mac: an adder and a multiplier
+    assert design.unit_dsp(DSP, "batch.cpp") == 5 + 3  # mac, and its own multiply
+    assert design.unit_dsp(DSP, "batch.cpp", exclude=["unit.h"]) == 3
+    assert design.dsp(DSP) == 13

@@ -323,3 +323,90 @@ def test_a_pipelined_loops_own_condition_is_read():
     """The multiply in a pipelined loop's condition runs every iteration: one multiplier."""
     (loop,) = read_project([("cond.cpp", LOOP_CONDITION)], ADD_LATENCY)
     assert dict(loop.instances) == {"mul": 1}
+
+
+HEADER = """
+typedef float T;
+T D[64];
+void update(int c, const T base[8], const T shift[8]) {
+    T local[8];
+    for (int k = 0; k < 8; ++k) local[k] = base[k];
+    for (int i = 0; i < 8; ++i) {
+#pragma HLS PIPELINE II=1
+        D[c * 8 + i] -= shift[i] + local[i];
+    }
+}
+void top(const T base[8], const T shift[8]) { update(1, base, shift); }
+"""
+
+
+def test_the_loop_header_is_the_one_before_the_brace():
+    """A brace-less loop earlier in the function (``for (k ...) local[k] = ...;``) is not the
+    pipelined loop's header: D[c * 8 + i] moves with i, nothing is carried (fgc_stream.h's
+    reexpress was read with k as its variable and flagged)."""
+    (loop,) = read_project([("h.cpp", HEADER)], ADD_LATENCY)
+    assert loop.recurrence == () and check([loop]) == []
+    fixed = HEADER.replace("D[c * 8 + i] -=", "D[c * 8] -=")  # a fixed element: carried
+    (loop,) = read_project([("h.cpp", fixed)], ADD_LATENCY)
+    assert loop.recurrence == ("D",) and [i.rule for i in check([loop])] == ["ii_recurrence"]
+
+
+SITES = """
+typedef float T;
+T S[64];
+template <int N>
+void matvec(const T m[64], const T v[8], T acc[8]) {
+    for (int e = 0; e < 64; ++e) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=acc inter false
+        const int k = e / 8, i = e % 8;
+        acc[i] = (k == 0 ? T(0) : acc[i]) + m[i * 8 + k] * v[k];
+    }
+}
+void top(const T v[8], T out[8]) {
+    T local[64], row[8];
+    for (int i = 0; i < 64; ++i) local[i] = v[i % 8];
+    matvec<0>(S, v, out);        // m is S
+    matvec<0>(local, v, S + 8);  // acc is S
+    %THIRD%
+}
+"""
+
+
+def test_each_call_site_binds_its_own_arrays():
+    """matvec reads S through m at one call site and through acc at the other: an iteration
+    touches S once or twice (its two ports: II 1), never three times (fgc_stream.h's
+    kept_matvec was read with both parameters bound to KEPT_S); a site that passes S as both
+    does take three accesses."""
+    (loop,) = read_project([("s.cpp", SITES.replace("%THIRD%", ""))], ADD_LATENCY)
+    assert loop.ii_ports == 1 and check([loop]) == []
+    both = SITES.replace("%THIRD%", "matvec<0>(S, v, S + 8);")
+    (loop,) = read_project([("s.cpp", both)], ADD_LATENCY)
+    assert ("S", 3, 1) in loop.accesses and [i.rule for i in check([loop])] == ["ii_ports"]
+
+
+SQUARE = """
+typedef float T;
+void sq(const T x[64], const T y[64], T a, T b, T out[64]) {
+    for (int i = 0; i < 64; ++i) {
+#pragma HLS PIPELINE II=1
+        out[i] = %EXPR%;
+    }
+}
+void top(const T x[64], const T y[64], T a, T b, T out[64]) { sq(x, y, a, b, out); }
+"""
+
+
+@pytest.mark.parametrize("expr, ops", [
+    # a square printed as two copies (the kernel printer's (e)**2): e is built once
+    ("(x[i]*a + y[i]*b)*(x[i]*a + y[i]*b)", {"add": 1, "mul": 3}),
+    ("T(0.5)*((x[i]*a + b)*(x[i]*a + b))", {"add": 1, "mul": 3}),
+    # two different products are both built
+    ("(x[i]*a + b)*(y[i]*a + b)", {"add": 2, "mul": 3}),
+])
+def test_a_square_of_a_copied_subexpression_builds_it_once(expr, ops):
+    """imu_window's cost kernel prints its whitened residual's squares as (e)*(e): the reader
+    counted e twice (105 adds and 109 multiplies above the kernel's own count in factor_cost_0);
+    the compiler's front end merges the identical expressions of a statement."""
+    (loop,) = read_project([("sq.cpp", SQUARE.replace("%EXPR%", expr))], ADD_LATENCY)
+    assert dict(loop.ops) == ops

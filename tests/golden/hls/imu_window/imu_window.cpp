@@ -1496,7 +1496,7 @@ void factor_cost_0(const T in[42], const T dat[193],
                    T half[1]) {
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=4
-#pragma HLS ALLOCATION operation instances=fmul limit=4
+#pragma HLS ALLOCATION operation instances=fmul limit=5
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
@@ -1864,8 +1864,8 @@ void factor_1(const T in[12], const T dat[13],
 void factor_cost_1(const T in[12], const T dat[13],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=2
-#pragma HLS ALLOCATION operation instances=fmul limit=2
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
@@ -1939,7 +1939,6 @@ void factor_2(const T in[3], const T dat[4],
               T raw[12]) {
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=1
-#pragma HLS ALLOCATION operation instances=fmul limit=1
     raw[0] = T(1);
     raw[3] = -dat[0] + in[0];
     raw[5] = T(1);
@@ -1952,7 +1951,7 @@ void factor_cost_2(const T in[3], const T dat[4],
                    T half[1]) {
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=2
-#pragma HLS ALLOCATION operation instances=fmul limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=2
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
@@ -1967,7 +1966,6 @@ void factor_3(const T in[6], const T dat[7],
               T raw[48]) {
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=1
-#pragma HLS ALLOCATION operation instances=fmul limit=1
     raw[0] = T(1);
     raw[6] = -dat[0] + in[0];
     raw[9] = T(1);
@@ -2653,10 +2651,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=103 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=106 cycles (the plan's)
 void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=103
+#pragma HLS PIPELINE II=106
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -2675,7 +2673,7 @@ void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
             rows.write(row);
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 106, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -3013,10 +3011,10 @@ T noise_3(T noise) {
     return noise;
 }
 
-// block 3, cost mode: `total` plus the cost of its instances in order, one every II=5 cycles
+// block 3, cost mode: `total` plus the cost of its instances in order, one every II=4 cycles
 T cost_of_3(const T x[N_X], T total) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=5
+#pragma HLS PIPELINE II=4
         const int f = BLOCK3_INSTANCES[i];
         T in[6], dat[7], half[1];
         gather_3(x, f, in, dat);
@@ -3025,7 +3023,7 @@ T cost_of_3(const T x[N_X], T total) {
         cost += half[0];  // no robust loss on this member (the Program's flag)
         total += cost;
     }
-    FGC_CYCLES("factor_3_cost", 0, "instances", 1, 5, 22);
+    FGC_CYCLES("factor_3_cost", 0, "instances", 1, 4, 22);
     return total;
 }
 
@@ -3315,8 +3313,12 @@ struct LmConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
-    static T x_norm() { return fgc_units::lm_x_norm<LmConfig>(X); }
+    static T x_norm() {
+#pragma HLS INLINE
+        return fgc_units::lm_x_norm<LmConfig>(X);
+    }
     static bool step_test(bool solved, T mu, T out[2]) {
+#pragma HLS INLINE
         return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);
     }
     static T gradient_max() { return fgc_units::lm_gradient_max<LmConfig>(G); }

@@ -504,7 +504,7 @@ void factor_0(const T in[12], const T dat[18],
 void factor_cost_0(const T in[12], const T dat[18],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=2
+#pragma HLS ALLOCATION operation instances=fadd limit=3
 #pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
@@ -632,7 +632,7 @@ void factor_cost_2(const T in[6], const T dat[7],
 void factor_3(const T in[42], const T dat[211],
               T raw[672]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=7
+#pragma HLS ALLOCATION operation instances=fadd limit=8
 #pragma HLS ALLOCATION operation instances=fmul limit=11
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[30] - dat[63];
@@ -2131,8 +2131,8 @@ void factor_3(const T in[42], const T dat[211],
 void factor_cost_3(const T in[42], const T dat[211],
                    T half[2]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=4
-#pragma HLS ALLOCATION operation instances=fmul limit=5
+#pragma HLS ALLOCATION operation instances=fadd limit=5
+#pragma HLS ALLOCATION operation instances=fmul limit=6
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[0]*in[15] + in[3]*in[18] + in[6]*in[21];
     const T t1 = t0;
@@ -2470,10 +2470,10 @@ void gather_0(const T x[N_X], int f, T in[12], T dat[18]) {
 }
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=103 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=106 cycles (the plan's)
 void evaluate_0(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=103
+#pragma HLS PIPELINE II=106
         const int f = BLOCK0_INSTANCES[i];
         T in[12], dat[18];
         gather_0(x, f, in, dat);
@@ -2487,7 +2487,7 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 103, 416);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 106, 416);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -3548,8 +3548,12 @@ struct LmConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
-    static T x_norm() { return fgc_units::lm_x_norm<LmConfig>(X); }
+    static T x_norm() {
+#pragma HLS INLINE
+        return fgc_units::lm_x_norm<LmConfig>(X);
+    }
     static bool step_test(bool solved, T mu, T out[2]) {
+#pragma HLS INLINE
         return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);
     }
     static T gradient_max() { return fgc_units::lm_gradient_max<LmConfig>(G); }

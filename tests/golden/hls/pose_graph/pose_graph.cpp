@@ -208,9 +208,9 @@ inline T fgc_guarded_quotient(T a, T b, T g, T t, T f) { return g > t ? T(a / b)
 void factor_0(const T in[24], const T dat[13],
               T raw[96]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=15
-#pragma HLS ALLOCATION operation instances=fmul limit=24
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fadd limit=16
+#pragma HLS ALLOCATION operation instances=fmul limit=22
+#pragma HLS ALLOCATION operation instances=fdiv limit=2
     const T t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
     const T t1 = in[2]*in[12] + in[5]*in[15] + in[8]*in[18];
     const T t2 = -t1;
@@ -647,8 +647,8 @@ void factor_0(const T in[24], const T dat[13],
 void factor_cost_0(const T in[24], const T dat[13],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=4
-#pragma HLS ALLOCATION operation instances=fmul limit=7
+#pragma HLS ALLOCATION operation instances=fadd limit=6
+#pragma HLS ALLOCATION operation instances=fmul limit=8
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
     const T t1 = t0;
@@ -958,8 +958,8 @@ void factor_1(const T in[12], const T dat[13],
 void factor_cost_1(const T in[12], const T dat[13],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=2
-#pragma HLS ALLOCATION operation instances=fmul limit=2
+#pragma HLS ALLOCATION operation instances=fadd limit=3
+#pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
@@ -1138,10 +1138,10 @@ void gather_0(const T x[N_X], int f, T in[24], T dat[13]) {
 }
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 60 structural non-zeros of
-// 6 x 13), whitening, into AB; one instance every II=40 cycles (the plan's)
+// 6 x 13), whitening, into AB; one instance every II=42 cycles (the plan's)
 void evaluate_0(const T x[N_X]) {
     for (int i = 0; i < 6; ++i) {
-#pragma HLS PIPELINE II=40
+#pragma HLS PIPELINE II=42
         const int f = BLOCK0_INSTANCES[i];
         T in[24], dat[13];
         gather_0(x, f, in, dat);
@@ -1155,7 +1155,7 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 13; ++c) AB[a0 + r * 13 + c] = ab[r * 16 + c];
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 6, 40, 428);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 6, 42, 428);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 16 columns (a multiple of PORTS)
@@ -1241,10 +1241,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=103 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=106 cycles (the plan's)
 void evaluate_1(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=103
+#pragma HLS PIPELINE II=106
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -1258,7 +1258,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 103, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 106, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -1606,8 +1606,12 @@ struct LmConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
-    static T x_norm() { return fgc_units::lm_x_norm<LmConfig>(X); }
+    static T x_norm() {
+#pragma HLS INLINE
+        return fgc_units::lm_x_norm<LmConfig>(X);
+    }
     static bool step_test(bool solved, T mu, T out[2]) {
+#pragma HLS INLINE
         return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);
     }
     static T gradient_max() { return fgc_units::lm_gradient_max<LmConfig>(G); }
