@@ -462,12 +462,14 @@ def test_cycle_counts(driver):
     p = 12  # the driver's PARTIALS
     # cond_load: the f (w + 1) - f (f - 1) / 2 words R's upper triangle, S and d hold, two a
     # cycle, multiply-add deep (+ read and write); cond_backsub: per row the 2 P partial sums
-    # folded beside the reciprocal (max(La (1 + ⌈log₂ 2P⌉), Ld) deep), the triangle's columns
-    # r = f - 1 … 1 at max(r, 2 Lm + La + 1) iterations each (chain 2 Lm + La deep), x_0
-    chain = 2 * lm + la
+    # folded beside the reciprocal, the row scaled by it (max(La (1 + ⌈log₂ 2P⌉), Ld) + Lm
+    # deep), the triangle's columns r = f - 1 … 1 at max(r, Lm + La + 1) iterations each (chain
+    # Lm + La; an iteration 2 Lm + La deep), x_0 a move (1)
+    chain = lm + la
     load = loop(-(-(f * (w + 1) - f * (f - 1) // 2) // 2), 1, 2 + lm + la)
-    rows = loop(f, 1, max(la * (1 + math.ceil(math.log2(2 * p))), ld))
-    backsub = (load + rows + loop(sum(max(r, chain + 1) for r in range(1, f)), 1, chain) + lm)
+    rows = loop(f, 1, max(la * (1 + math.ceil(math.log2(2 * p))), ld) + lm)
+    backsub = (load + rows + loop(sum(max(r, chain + 1) for r in range(1, f)), 1, lm + chain)
+               + 1)
     assert twenty.cycles == region + sequential
     assert twenty.backsub == backsub
 

@@ -139,26 +139,27 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     assert phases["lm_iteration"] == 11 + 26
     assert phases["lm_control"] == 30 + 30
     assert phases["lm_accept"] == 13
-    # back-substitution (fgc_backsub.h; backsub.py's slots: a step's cond_backsub on one lane
-    # beside the next step's cond_load into the other, copies two words a cycle). Steps root
-    # (f 3, s 0), then A and B (f 3, s 3), both separators in the root's frontal columns: slot 0
-    # loads the root (4 + 3 + 2 = 9 words two a cycle, read + multiply-add 2 + 3 + 4 = 9 deep:
-    # 4 + 9 = 13); slot 1 solves it (the rows 3 at max(add 4 (1 + ⌈log₂ 8⌉), div 15) = 16 deep:
-    # 18; the triangle's columns 2 and 1 each padded to the chain 2 mul + add = 10, plus one: 22
-    # iterations 10 deep: 31; x_0's multiply 3 -> 52) and its 3 unknowns out (2 + 1: 3) -> 55;
-    # A needs them, so slot 2 loads it alone: its separator in (3) and 7 + 6 + 5 = 18 words
-    # (8 + 9 = 17) -> 20; slot 3 solves A (52) beside B's load (17), the slower plus the
-    # other's fill (9), between B's separator in (3) and A's solution out (3) -> 67; slot 4
-    # solves B -> 55: the slots end at 13, 68, 88, 155, 210. Beside them the state update
-    # (backsub_retire: a variable an iteration at II 24, 2 + depth deep: a step's 3 words in, a
-    # pair a cycle, then the datapath) retracts the root at 68, A when it is sent at 155, B at
-    # 210: it ends at 210 + 2 + depth, which the phase adds after the slots
+    # back-substitution (fgc_backsub.h; backsub.py's slots: a step's cond_backsub and its
+    # solution out on one lane beside the next step's cond_load into the other, copies two words
+    # a cycle). Steps root (f 3, s 0), then A and B (f 3, s 3), both separators in the root's
+    # frontal columns: slot 0 loads the root (4 + 3 + 2 = 9 words two a cycle, read +
+    # multiply-add 2 + 3 + 4 = 9 deep: 4 + 9 = 13); slot 1 solves it (the rows 3 at max(add 4
+    # (1 + ⌈log₂ 8⌉), div 15) + the scaling mul 3 = 19 deep: 21; the triangle's columns 2 and 1
+    # each padded to the chain mul + add = 7, plus one: 16 iterations 2 mul + add = 10 deep: 25;
+    # x_0 a move 1 -> 47) and its 3 unknowns out (2 + 1: 3) -> 50; A needs them, so slot 2 loads
+    # it alone: its separator in (3) and 7 + 6 + 5 = 18 words (8 + 9 = 17) -> 20; slot 3: B's
+    # separator in (3), then A's solve and solution out (50) beside B's load (17), the slower
+    # plus the other's fill (9) -> 62; slot 4 solves B -> 50: the slots end at 13, 63, 83, 145,
+    # 195. Beside them the state update (backsub_retire: a variable an iteration at II 24, 2 +
+    # depth deep: a step's 3 words in, a pair a cycle, then the datapath) retracts the root at
+    # 63, A when it is sent at 145, B at 195: it ends at 195 + 2 + depth, which the phase adds
+    # after the slots
     plan_phase = {ph.name: ph for ph in plan.phases}["backsub"]
     slots, retire = plan_phase.processes
-    sizes = [sum(lp.cycles for lp in slots.loops[3 * k:3 * k + 3]) for k in range(5)]
-    assert sizes == [13, 55, 20, 67, 55] and len(slots.loops) == 15
+    sizes = [sum(lp.cycles for lp in slots.loops[2 * k:2 * k + 2]) for k in range(5)]
+    assert sizes == [13, 50, 20, 62, 50] and len(slots.loops) == 10
     assert retire.loops[0].cycles == 2 + depth
-    assert phases["backsub"] == 210 + 2 + depth
+    assert phases["backsub"] == 195 + 2 + depth
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub")))

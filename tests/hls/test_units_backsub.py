@@ -23,23 +23,25 @@ from fgc_backends.hls.units.state_update import retire_order, retire_timing
 
 def test_cond_backsub_loops_by_hand():
     # float32 on the xc7z045 at 143 MHz: add 4, mul 3, div 15; PARTIALS = 4 sums in each of the
-    # two lanes, folded in ⌈log₂ 8⌉ = 3 beside the reciprocal: max(4 (1 + 3), 15) = 16
+    # two lanes, folded in ⌈log₂ 8⌉ = 3 beside the reciprocal, then the row scaled by it:
+    # max(4 (1 + 3), 15) + 3 = 19
     loops = {lp.name: lp for lp in backsub_loops(2, 3, FLOAT32, name="b")}
     assert list(loops) == ["b_rows", "b_triangle", "b_last"]
-    assert (loops["b_rows"].trip, loops["b_rows"].depth) == (2, 16)
-    # one column (r = 1) padded to the chain 2 Lm + La = 10, plus one
-    assert (loops["b_triangle"].trip, loops["b_triangle"].depth) == (11, 10)
-    assert loops["b_last"].depth == 3
+    assert (loops["b_rows"].trip, loops["b_rows"].depth) == (2, 19)
+    # one column (r = 1) padded to the chain Lm + La = 7, plus one; an iteration R_ir / R_ii,
+    # its product and the subtraction deep: 2 Lm + La = 10
+    assert (loops["b_triangle"].trip, loops["b_triangle"].depth) == (8, 10)
+    assert loops["b_last"].depth == 1  # x_0 = y_0: a move
     assert backsub_loops(0, 3, FLOAT32) == []
 
 
 def test_triangle_hides_its_chain_behind_long_columns():
-    # f = 15: columns 14 … 1; the 10 shortest padded to 11 iterations, 11 … 14 as they are
-    assert triangle_trip(15, FLOAT32) == 10 * 11 + 11 + 12 + 13 + 14
+    # f = 15: columns 14 … 1; the 7 shortest padded to 8 iterations, 8 … 14 as they are
+    assert triangle_trip(15, FLOAT32) == 7 * 8 + 8 + 9 + 10 + 11 + 12 + 13 + 14
     assert triangle_trip(1, FLOAT32) == 0
     # a column per unknown at the chain's rate at most: never below the floor f - 1 chains
     for f in range(1, 40):
-        assert triangle_trip(f, FLOAT32) >= (f - 1) * 11
+        assert triangle_trip(f, FLOAT32) >= (f - 1) * 8
 
 
 def test_cond_load_moves_the_upper_triangle_two_words_a_cycle():
@@ -52,7 +54,8 @@ def test_cond_load_moves_the_upper_triangle_two_words_a_cycle():
 
 def test_backsub_operators_as_bound():
     # cond_load 2 multiply-adds, the rows' 2 PARTIALS - 1 fold adds and the subtraction beside
-    # a divide, the triangle's 2 multiplies and a subtraction, x_0's multiply
+    # a divide and the scaling multiply, the triangle's 2 multiplies and a subtraction (x_0 a
+    # move: as many operators as when the triangle scaled x_r and x_0 had its own multiply)
     assert dict(backsub_operators(FLOAT32)) == {"add": 2 + 8 + 1, "mul": 2 + 2 + 1, "div": 1}
 
 

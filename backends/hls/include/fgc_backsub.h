@@ -21,23 +21,26 @@
 // parity: a lane per port) and bank (a >> 1) % PARTIALS, so a lane's sum comes back PARTIALS >=
 // ADD_LAT iterations later (II 1) and the first S_ia of a sum sets it (no zeroing pass).
 //
-// cond_backsub then runs two pipelined loops and one multiply:
-// - per row (trip f, II 1): its 2 PARTIALS sums folded and subtracted from d (y_i = d_i - S_i xs)
-//   beside the reciprocal of the diagonal 1 / R_ii (the divides independent of each other);
+// cond_backsub then runs two pipelined loops and one move:
+// - per row (trip f, II 1): its 2 PARTIALS sums folded and subtracted from d beside the
+//   reciprocal of the diagonal 1 / R_ii (the divides independent of each other), the row then
+//   scaled by it: y_i = (d_i - S_i xs) / R_ii, so that y_r is x_r once the columns right of r
+//   are subtracted;
 // - the triangle as one flattened loop over the columns r = f - 1 ... 1, last first: at a column's
-//   first iteration x_r = y_r / R_rr (y_r final: its last update was the previous column's first
-//   iteration), then y_i -= R_ir x_r for the rows i = r - 1 ... 0 above the pivot, one a cycle.
-//   The recurrence per unknown is CHAIN = 2 MUL_LAT + ADD_LAT (x_r, its product, the
-//   subtraction), so a column takes max(r, CHAIN + 1) iterations: columns shorter than the chain
-//   are padded, the long ones hide it (the column updates run beside the chain). y_i is updated
-//   in place (one read, one write a cycle) and each new value also written to z_i, from which
-//   a column's first iteration reads x_r's y_r (z: one write, one read a cycle), so each array
-//   needs no more than its two ports. DEPENDENCE distance CHAIN is true for both: z_{r-1} is
+//   first iteration x_r = y_r (final: its last update was the previous column's first
+//   iteration), then y_i -= (R_ir / R_ii) x_r for the rows i = r - 1 ... 0 above the pivot, one a
+//   cycle, R_ir / R_ii (R_ir times the row's reciprocal) off the chain. The recurrence per
+//   unknown is CHAIN = MUL_LAT + ADD_LAT (the product with x_r, the subtraction; the scaling by
+//   1 / R_rr no longer on it; an iteration is Lm + CHAIN deep), so a column takes max(r,
+//   CHAIN + 1) iterations: columns shorter than the chain are padded, the long ones hide it (the
+//   column updates run beside the chain). y_i is updated in place (one read, one write a cycle)
+//   and each new value also written to z_i, from which a column's first iteration reads x_r (z:
+//   one write, one read a cycle; inv: one read), so each array needs no more than its two ports. DEPENDENCE distance CHAIN is true for both: z_{r-1} is
 //   read a column's length >= CHAIN + 1 iterations after it was written, y_i is updated again
 //   a column's length - 1 >= CHAIN iterations later;
-// - x_0 = y_0 / R_00.
-// No DATAFLOW inside: the kernel runs one cond_backsub per unit set side by side (back_substitute's
-// backsub_level region). Cycles to FGC_CYCLES (fgc_cycles.h) as the loops state them.
+// - x_0 = y_0 (a move).
+// No DATAFLOW inside: the driver below runs a lane's cond_backsub beside the other lane's
+// cond_load (backsub_lane<p>). Cycles to FGC_CYCLES (fgc_cycles.h) as the loops state them.
 #ifndef FGC_BACKSUB_H
 #define FGC_BACKSUB_H
 
@@ -45,10 +48,10 @@
 
 namespace fgc_units {
 
-// The triangle's recurrence per unknown (backsub.py's backsub_chain): the multiply by 1 / R_rr,
-// the product R_ir x_r and the subtraction.
+// The triangle's recurrence per unknown (backsub.py's backsub_chain): the product
+// (R_ir / R_ii) x_r and the subtraction (the rows are scaled by 1 / R_ii before it).
 template <class CFG>
-constexpr int backsub_chain() { return 2 * CFG::MUL_LAT + CFG::ADD_LAT; }
+constexpr int backsub_chain() { return CFG::MUL_LAT + CFG::ADD_LAT; }
 
 // Iterations of cond_backsub's triangle loop: the columns r = f - 1 ... 1, each max(r, CHAIN + 1).
 template <class CFG>
@@ -109,12 +112,12 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
                   typename CFG::T x[CFG::MAX_F]) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
-    const int CHAIN = 2 * CFG::MUL_LAT + CFG::ADD_LAT;  // backsub_chain
+    const int CHAIN = CFG::MUL_LAT + CFG::ADD_LAT;  // backsub_chain
     const int w = f + s, cols = w + 1;
     if (f <= 0) return;
     T y[CFG::MAX_F], z[CFG::MAX_F], inv[CFG::MAX_F];
-    // per row: y_i = d_i - (its 2 P partial sums folded), 1 / R_ii beside it; trip f, II 1,
-    // depth max(La (1 + ceil(log2 2P)), Ld). srow: the index of S_i0 among cond_load's words
+    // per row: y_i = (d_i - (its 2 P partial sums folded)) / R_ii (1 / R_ii beside the fold, then
+    // one multiply); trip f, II 1, depth max(La (1 + ceil(log2 2P)), Ld) + Lm. srow: the index of S_i0 among cond_load's words
     // (its parity: the lane of a = 0); a sum holds terms iff its first a is below s.
     for (int i = 0, srow = f; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
@@ -126,31 +129,33 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
                 row[h * P + b] = used ? part[h][b][i] : T(0);
             }
         }
-        const T yi = cond[i * cols + w] - fold_partials<T, 2 * CFG::PARTIALS>(row);
+        const T ri = T(1) / cond[i * cols + i];
+        const T yi = (cond[i * cols + w] - fold_partials<T, 2 * CFG::PARTIALS>(row)) * ri;
         y[i] = yi;
         z[i] = yi;
-        inv[i] = T(1) / cond[i * cols + i];
+        inv[i] = ri;
         srow += cols - i - 1;
     }
     FGC_CYCLES("backsub", 0, "rows", f, 1,
-               CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) > CFG::DIV_LAT
-                   ? CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) : CFG::DIV_LAT);
+               (CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) > CFG::DIV_LAT
+                    ? CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) : CFG::DIV_LAT) +
+                   CFG::MUL_LAT);
     // the triangle, columns r = f - 1 ... 1 flattened (k: the iteration within column r)
     const int pad = CHAIN + 1;
     const int trip = backsub_triangle_trip<CFG>(f);
     T xr = T(0);
     for (int e = 0, r = f - 1, k = 0; e < trip; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F*CFG::MAX_F/2+CFG::MAX_F*(2*CFG::MUL_LAT+CFG::ADD_LAT+1)
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F*CFG::MAX_F/2+CFG::MAX_F*(CFG::MUL_LAT+CFG::ADD_LAT+1)
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=y inter true distance=CHAIN
 #pragma HLS DEPENDENCE variable=z inter true distance=CHAIN
         if (k == 0) {
-            xr = z[r] * inv[r];
+            xr = z[r];
             x[r] = xr;
         }
         if (k < r) {
             const int i = r - 1 - k;
-            const T yi = y[i] - cond[i * cols + r] * xr;
+            const T yi = y[i] - (cond[i * cols + r] * inv[i]) * xr;
             y[i] = yi;
             z[i] = yi;
         }
@@ -162,9 +167,10 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
             ++k;
         }
     }
-    FGC_CYCLES("backsub", 0, "triangle", trip, 1, CHAIN);
-    x[0] = z[0] * inv[0];  // depth Lm
-    FGC_CYCLES("backsub", 0, "last", 1, 1, CFG::MUL_LAT);
+    // depth Lm + CHAIN: R_ir / R_ii, then its product with x_r and the subtraction
+    FGC_CYCLES("backsub", 0, "triangle", trip, 1, CFG::MUL_LAT + CHAIN);
+    x[0] = z[0];  // a move, depth 1
+    FGC_CYCLES("backsub", 0, "last", 1, 1, 1);
 }
 
 }  // namespace fgc_units
@@ -178,9 +184,9 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
 // conditional loads into the other lane, S xs summed on the way (cond_load); a step whose
 // separator needs the step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the steps,
 // -1 none). Per slot: the loaded step's separator solution in from DELTA (PORTS words a cycle),
-// the slot's backsub_lane<p> region (lane p's backsub_set<p> beside the other lane's
-// backsub_load), the solved step's frontal solution out into DELTA and, a pair of words a
-// cycle, into `dx` to the state update.
+// then the slot's backsub_lane<p> region: lane p's backsub_set<p> (the solve, then the solved
+// step's frontal solution out into DELTA and, a pair of words a cycle, into `dx` to the state
+// update: backsub_out) beside the other lane's backsub_load (COND only).
 //
 // backsub_retire: the state update fed by back-substitution: X_TRIAL = X (+) delta variable by
 // variable as their steps' words arrive (its own copy of delta, by tangent index), through the
@@ -210,20 +216,47 @@ L BS_X1[MAX_F];
 // two solution words a stream word (the copies move two words a cycle)
 struct BsPair { L word[2]; };
 
+// The solved step's frontal solution out (cb: its STEP_COL_BEGIN) into DELTA and, a pair of
+// words a cycle, into `dx` to the state update: the end of the solving lane's process, beside the
+// other lane's load (which reads COND only; the separator came in from DELTA before the region).
+template <class CFG>
+void backsub_out(const L x[CFG::MAX_F], int f, int cb, hls::stream<BsPair>& dx) {
+    for (int c = 0; c < f; c += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_F+1)/2
+#pragma HLS PIPELINE II=1
+        BsPair out;
+        for (int h = 0; h < 2; ++h) {
+            const int j = c + h;  // an index: no floating-point operation here
+            L v = L(0);
+            if (j < f) {
+                v = x[j];
+                DELTA[STEP_COL[cb + j]] = v;
+            }
+            out.word[h] = v;
+        }
+        dx.write(out);
+    }
+    FGC_CYCLES("backsub_copy", 0, "solution_out", (f + 1) / 2, 1, CFG::MOVE_DEPTH);
+}
+
 // Lane u's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load left
-// (f = 0: none this time).
+// (f = 0: none this time), then its solution out (backsub_out).
 template <class CFG>
 void backsub_set0(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
-                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F]) {
+                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
+                  hls::stream<BsPair>& dx) {
     FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
     fgc_units::cond_backsub<CFG>(cond, f, s, part, x);
+    backsub_out<CFG>(x, f, cb, dx);
 }
 
 template <class CFG>
 void backsub_set1(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
-                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F]) {
+                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
+                  hls::stream<BsPair>& dx) {
     FGC_BRANCH();
     fgc_units::cond_backsub<CFG>(cond, f, s, part, x);
+    backsub_out<CFG>(x, f, cb, dx);
 }
 
 // Lane u's load: a step's conditional from COND (at off) into the lane's buffer.
@@ -244,22 +277,24 @@ void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS],
 // A slot whose solve is on lane 0: lane 0's cond_backsub beside lane 1's cond_load.
 template <class CFG>
 void backsub_lane0(const L cond0[CFG::MAX_F * CFG::MAX_COLS], int f0, int s0,
-                   const L part0[2][CFG::PARTIALS][CFG::MAX_F], L x0[CFG::MAX_F],
+                   const L part0[2][CFG::PARTIALS][CFG::MAX_F], L x0[CFG::MAX_F], int cb0,
+                   hls::stream<BsPair>& dx,
                    int off, int f1, int s1, const L xs1[CFG::MAX_COLS],
                    L cond1[CFG::MAX_F * CFG::MAX_COLS], L part1[2][CFG::PARTIALS][CFG::MAX_F]) {
 #pragma HLS DATAFLOW
-    backsub_set0<CFG>(cond0, f0, s0, part0, x0);
+    backsub_set0<CFG>(cond0, f0, s0, part0, x0, cb0, dx);
     backsub_load1<CFG>(off, f1, s1, xs1, cond1, part1);
 }
 
 // A slot whose solve is on lane 1: lane 1's cond_backsub beside lane 0's cond_load.
 template <class CFG>
 void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
-                   const L part1[2][CFG::PARTIALS][CFG::MAX_F], L x1[CFG::MAX_F],
+                   const L part1[2][CFG::PARTIALS][CFG::MAX_F], L x1[CFG::MAX_F], int cb1,
+                   hls::stream<BsPair>& dx,
                    int off, int f0, int s0, const L xs0[CFG::MAX_COLS],
                    L cond0[CFG::MAX_F * CFG::MAX_COLS], L part0[2][CFG::PARTIALS][CFG::MAX_F]) {
 #pragma HLS DATAFLOW
-    backsub_set1<CFG>(cond1, f1, s1, part1, x1);
+    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx);
     backsub_load0<CFG>(off, f0, s0, xs0, cond0, part0);
 }
 
@@ -292,24 +327,12 @@ void backsub_slots(hls::stream<BsPair>& dx) {
         }
         FGC_CYCLES("backsub_copy", 0, "separator_in", (lsep + 1) / 2, 1, CFG::MOVE_DEPTH);
         if (p == 0)
-            backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, off, lf, lsep, BS_XS1, BS_COND1,
-                               bs_part1);
+            backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,
+                               BS_COND1, bs_part1);
         else
-            backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, off, lf, lsep, BS_XS0, BS_COND0,
-                               bs_part0);
+            backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
+                               BS_COND0, bs_part0);
         FGC_JOIN();
-        for (int c = 0; c < sf; c += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_F+1)/2
-#pragma HLS PIPELINE II=1
-            BsPair out;
-            for (int h = 0; h < 2; ++h) {
-                const L v = c + h < sf ? (p == 0 ? BS_X0[c + h] : BS_X1[c + h]) : L(0);
-                if (c + h < sf) DELTA[STEP_COL[scb + c + h]] = v;
-                out.word[h] = v;
-            }
-            dx.write(out);
-        }
-        FGC_CYCLES("backsub_copy", 0, "solution_out", (sf + 1) / 2, 1, CFG::MOVE_DEPTH);
         if (sv >= 0) FGC_OUTER_SEND();
     }
 }

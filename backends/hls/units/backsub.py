@@ -19,9 +19,10 @@ LANES = 2  # back-substitution lanes: one solves a step while the other loads th
 
 
 def backsub_chain(ops: OperatorTable) -> int:
-    """The triangle's recurrence per unknown (fgc_backsub.h's CHAIN): x_r = y_r / R_rr (a multiply
-    by the reciprocal), the product R_ir x_r and the subtraction from y_i."""
-    return 2 * ops.mul.latency + ops.add.latency
+    """The triangle's recurrence per unknown (fgc_backsub.h's CHAIN): the product (R_ir / R_ii) x_r
+    and the subtraction from y_i (the rows are scaled by 1 / R_ii in the row loop, so x_r = y_r
+    and the scaling of R_ir runs off the chain)."""
+    return ops.mul.latency + ops.add.latency
 
 
 def backsub_words(frontal: int, separator: int) -> int:
@@ -39,9 +40,10 @@ def triangle_trip(frontal: int, ops: OperatorTable) -> int:
 
 def rows_depth(ops: OperatorTable) -> int:
     """cond_backsub's row loop: the 2 PARTIALS partial sums folded and subtracted from d
-    (La (1 + ⌈log₂ 2 PARTIALS⌉)) beside the reciprocal of the diagonal (Ld)."""
+    (La (1 + ⌈log₂ 2 PARTIALS⌉)) beside the reciprocal of the diagonal (Ld), then the row scaled
+    by it (Lm)."""
     la = ops.add.latency
-    return max(la * (1 + _ceil_log2(2 * la)), ops.div.latency)
+    return max(la * (1 + _ceil_log2(2 * la)), ops.div.latency) + ops.mul.latency
 
 
 def load_loop(frontal: int, separator: int, ops: OperatorTable, name: str = "cond_load"
@@ -58,14 +60,16 @@ def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
     """The loops of ``cond_backsub`` (backends/hls/include/fgc_backsub.h) on one conditional of
     f frontal and s separator columns (S xs already summed by ``cond_load``), as its csim
     counters count them: per row (trip f, II 1) its partial sums folded and subtracted from d
-    beside the diagonal's reciprocal (:func:`rows_depth`); the triangle as one flattened loop
-    (trip :func:`triangle_trip`, II 1, depth CHAIN = 2 Lm + La: the chain per unknown, the
-    column updates beside it); x_0 (one multiply). Nothing for f = 0."""
+    beside the diagonal's reciprocal, the row scaled by it (:func:`rows_depth`); the triangle
+    as one flattened loop (trip :func:`triangle_trip`: columns padded to the chain Lm + La, II 1,
+    depth Lm + CHAIN: R_ir / R_ii, its product with x_r, the subtraction); x_0 = y_0 (a move).
+    Nothing for f = 0."""
     if not frontal:
         return []
     return [Loop(f"{name}_rows", frontal, 1, rows_depth(ops)),
-            Loop(f"{name}_triangle", triangle_trip(frontal, ops), 1, backsub_chain(ops)),
-            Loop(f"{name}_last", 1, 1, ops.mul.latency)]
+            Loop(f"{name}_triangle", triangle_trip(frontal, ops), 1,
+                 ops.mul.latency + backsub_chain(ops)),
+            Loop(f"{name}_last", 1, 1, 1)]
 
 
 def backsub_slots(tables: dict) -> tuple[tuple[int, int, int], ...]:
@@ -104,19 +108,20 @@ def backsub_slots(tables: dict) -> tuple[tuple[int, int, int], ...]:
 def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
                        timing: dict) -> list[Loop]:
     """One slot of back_substitute() (:func:`backsub_slots`): the loaded step's separator
-    solution in (:data:`PORTS` words a cycle), the ``backsub_lane<p>`` DATAFLOW region (the
-    solving lane's ``cond_backsub`` beside the other lane's ``cond_load``: the slower plus the
-    other's fill), the solved step's frontal solution out."""
+    solution in (:data:`PORTS` words a cycle), then the ``backsub_lane<p>`` DATAFLOW region (the
+    solving lane's ``cond_backsub`` and its frontal solution out, ``backsub_out``, beside the
+    other lane's ``cond_load``: the slower plus the other's fill)."""
     def sizes(s):
         return (tables["STEP_F"][s], tables["STEP_W"][s] - tables["STEP_F"][s]) if s >= 0 \
             else (0, 0)
 
     (sf, ss), (lf, ls) = sizes(solve), sizes(load)
-    region = _region_cycles([backsub_loops(sf, ss, ops, name=f"bs{solve}"),
-                             [load_loop(lf, ls, ops, name=f"cond_load{load}")]])
+    solve_loops = backsub_loops(sf, ss, ops, name=f"bs{solve}")
+    if sf:
+        solve_loops.append(kernel_loop("solution_out", _ported(sf), "move", timing))
+    region = _region_cycles([solve_loops, [load_loop(lf, ls, ops, name=f"cond_load{load}")]])
     return [kernel_loop("separator_in", _ported(ls), "move", timing),
-            Loop("backsub_lane", 1, 1, region),
-            kernel_loop("solution_out", _ported(sf), "move", timing)]
+            Loop("backsub_lane", 1, 1, region)]
 
 
 def backsub_copies(tables: dict, s: int, timing: dict, ops: OperatorTable
@@ -189,13 +194,12 @@ def backsub_operators(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
     (:mod:`fgc_backends.hls.plan.binding`), each pipelined loop its own at II 1: its
     ``cond_load`` (its own call site in back_substitute: two words an iteration, a multiply-add
     each), the row loop (2 PARTIALS − 1 adds folding, the subtraction from d, the reciprocal's
-    divide), the triangle (the multiply by 1 / R_rr, the product, the subtraction), x_0's
-    multiply sequential; PARTIALS is the adder's latency."""
+    divide, the row's scaling by it), the triangle (R_ir / R_ii, its product with x_r, the
+    subtraction); x_0 a move; PARTIALS is the adder's latency."""
     partials = ops.add.latency
     return sum_operators((BoundLoop("cond_load", (("add", 2), ("mul", 2)), 1),
-                          BoundLoop("rows", (("add", 2 * partials), ("div", 1)), 1),
-                          BoundLoop("triangle", (("add", 1), ("mul", 2)), 1),
-                          BoundLoop("last", (("mul", 1),), 0)), ops)
+                          BoundLoop("rows", (("add", 2 * partials), ("div", 1), ("mul", 1)), 1),
+                          BoundLoop("triangle", (("add", 1), ("mul", 2)), 1)), ops)
 
 
 def build(ctx) -> None:
