@@ -25,6 +25,7 @@ import dataclasses
 import re
 import statistics
 import sys
+import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -278,6 +279,14 @@ def paper_a_stream(cfg: Config) -> list[Row]:
     streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
     model = np.array([pricer.price(u).latency_ms for u in updates])
     res = pricer.model.resources()
+    # the second reader of the emitted design (bench_second_reader.measure_stream: the same
+    # setting): the fit is judged on DSP = max(plan, reader), as the batch search judges it
+    from bench_second_reader import measure_stream
+
+    with tempfile.TemporaryDirectory() as tmp:
+        read = measure_stream(n, Path(tmp) / "stream")
+    dsp = max(res["dsp"], read["reader_dsp"])
+    fits = res["fits"] and read["reader_dsp"] <= pricer.model.plan.target.device.dsp
     problem = to_gtsam(graph)
     runs = [_isam2_times(graph, problem, program.schedule.clusters)[0]
             for _ in range(cfg.isam_repeats)]
@@ -291,13 +300,18 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                 f"update; ISAM2 median {np.median(isam):.3f} ms / p99 "
                 f"{np.percentile(isam, 99):.3f} ms (median of {cfg.isam_repeats} runs per "
                 f"keyframe); ISAM2 / design per keyframe, median {ratio:.2f}×; "
-                f"{res['dsp']:,} DSP / {res['bram36']:g} BRAM36 by the plan ({parts}): "
-                + ("fits" if res["fits"] else "does not fit") + f" the {res['part']} by the plan",
+                f"{res['dsp']:,} DSP / {res['bram36']:g} BRAM36 by the plan ({parts}), "
+                f"{read['reader_dsp']:,} DSP by the second reader ("
+                + ", ".join(f"{part} {r:,}" for part, _, r in read["parts"]) + "): "
+                + ("fits" if fits else "does not fit") + f" the {res['part']} "
+                f"(DSP = max(plan, reader) = {dsp:,})",
                 "the update's price is the plan's (model estimates: the iterations the "
                 "simulator ran, each priced as the emitted design runs it); the on-chip design "
-                "is not searched, and its fit here is the plan's (the second reader reads its "
-                "two kernels and stream section, reader.read_design, but this row does not "
-                "emit it); its window and batch kernels each carry their own units (one set "
+                "is not searched; the plan is below the second reader on every part (a copy "
+                "of a unit per call site the plan does not price: eliminate_all and "
+                "linearize_all twice in the batch kernel, the marginal's elimination, the "
+                "kept net's Log and retraction kernels; docs/hls.md); its window and batch "
+                "kernels each carry their own units (one set "
                 "of units for both is not built: one kernel of run-time problem sizes, the "
                 "window a slot range of the batch layout, would save about 1,250 DSP and "
                 "still not fit, docs/hls.md); per update the window's LM iterations are about "
