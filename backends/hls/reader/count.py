@@ -28,6 +28,7 @@ from fgc_backends.hls.reader.text import (
     _unit,
     _Var,
     library_calls,
+    until_fixed,
 )
 
 
@@ -233,17 +234,9 @@ class _Counter(_Scope):
         # a square printed as a product of two copies, (e)*(e): the compiler's front end
         # computes e once (common subexpressions of a statement are merged), so the second
         # copy's operators are not built: it is read as an operand
-        text = stmt
-        while True:
-            new = re.sub(r"\(([^()]*)\)\s*\*\s*\(\1\)", r"(\1)*q", text)
-            if new == text:
-                break
-            text = new
-        while True:  # index arithmetic is integer: drop every subscript
-            new = re.sub(r"\[[^\[\]]*\]", "", text)
-            if new == text:
-                break
-            text = new
+        text = until_fixed(r"\(([^()]*)\)\s*\*\s*\(\1\)", r"(\1)*q", stmt)
+        # index arithmetic is integer: drop every subscript
+        text = until_fixed(r"\[[^\[\]]*\]", "", text)
         text = re.sub(r"<[^<>;()]*>", "", text)  # template arguments
         text = re.sub(r"\b\d+(?:\.\d*)?(?:[eE][-+]?\d+)?f?\b", "1", text)
         ops["sqrt"] += library_calls(_SQRT, text, self.functions)

@@ -16,7 +16,13 @@ import re
 from collections import Counter
 from collections.abc import Callable
 
-from fgc_backends.hls.reader.text import _SPECIAL, _SQRT, FLOAT_TYPES, library_calls
+from fgc_backends.hls.reader.text import (
+    _SPECIAL,
+    _SQRT,
+    FLOAT_TYPES,
+    library_calls,
+    until_fixed,
+)
 
 _FLOAT, _INT = "\x01F", "\x01I"  # a group already read: floating-point or not
 _INDEX = "\x02"  # a subscript (x[i][j]: x and two marks)
@@ -62,12 +68,8 @@ class ExpressionTyper:
 
     def operators(self, expr: str) -> Counter:
         ops: Counter = Counter()
-        text = expr
-        while True:  # index arithmetic is integer: each subscript becomes a mark on its name
-            new = re.sub(r"\[[^\[\]]*\]", _INDEX, text)
-            if new == text:
-                break
-            text = new
+        # index arithmetic is integer: each subscript becomes a mark on its name
+        text = until_fixed(r"\[[^\[\]]*\]", _INDEX, expr)
         text = re.sub(r"(?<=\w)<[^<>;()]*>(?=\s*[(:])", "", text)  # template arguments
         text = re.sub(r"^\s*return\b", "", text)
         ops["sqrt"] += library_calls(_SQRT, text, self.defined)

@@ -110,13 +110,19 @@ def _blank_macros(code: str) -> str:
     return "".join(out)
 
 
-def _own_level(text: str) -> str:
-    """``text`` with every brace block inside it replaced by ';' (what its own level says)."""
+def until_fixed(pattern: str, repl: str, text: str) -> str:
+    """``re.sub(pattern, repl, ...)`` applied again until nothing changes: nested groups
+    (brackets within brackets) replaced innermost first."""
     while True:
-        new = re.sub(r"\{[^{}]*\}", ";", text)
+        new = re.sub(pattern, repl, text)
         if new == text:
             return text
         text = new
+
+
+def _own_level(text: str) -> str:
+    """``text`` with every brace block inside it replaced by ';' (what its own level says)."""
+    return until_fixed(r"\{[^{}]*\}", ";", text)
 
 
 def _pipelined(body: str) -> bool:
