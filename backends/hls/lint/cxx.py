@@ -20,6 +20,15 @@ _CONSTANT = re.compile(r"^[A-Z0-9_+\-*/() ]+$")
 
 
 _DEFINITION = re.compile(r"\b([A-Za-z_]\w*)\s*\(([^;{}]*)\)\s*(const\s*)?\{")
+# a preprocessor line other than a pragma (#if defined(A) || defined(B), #endif, ...): not code,
+# and its parentheses must not open a definition that swallows the function after it
+_DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(?!pragma\b)[^\n]*", re.M)
+
+
+def definitions(code: str):
+    """The matches of ``_DEFINITION`` (a name, its parameters, the body's '{') in ``code`` read
+    without its preprocessor directives (pragmas kept); positions are ``code``'s."""
+    return _DEFINITION.finditer(_DIRECTIVE.sub(lambda m: " " * len(m.group(0)), code))
 
 
 _CALL = re.compile(r"\b([A-Za-z_]\w*)\s*(<[^<>;]*>)?\s*\(")
@@ -143,7 +152,7 @@ def _functions(file: str, code: str) -> list[_Function]:
         brace = m.end() - 1
         ints = tuple(re.findall(r"\bint\s+([A-Za-z_]\w*)", m.group(2) or ""))
         structs.append((m.group(3), brace, _matching(code, brace, "{", "}"), ints))
-    for m in _DEFINITION.finditer(code):
+    for m in definitions(code):
         if m.start() < pos or m.group(1) in _KEYWORDS_ALL:
             continue
         start = max(code.rfind(c, 0, m.start()) for c in ";{}")

@@ -12,11 +12,11 @@ from fgc_backends.hls.lint.cxx import (
     _BOUND,
     _CALL,
     _CONSTANT,
-    _DEFINITION,
     _FOR,
     _KEYWORDS,
     _line,
     _matching,
+    definitions,
 )
 
 _UNBOUNDED = re.compile(r"\b(while|do|goto)\b")
@@ -59,7 +59,7 @@ def _loops(code: str, file: str) -> list[LintIssue]:
 
 def _recursion(code: str, file: str) -> list[LintIssue]:
     bodies: dict[str, tuple[int, str]] = {}
-    for m in _DEFINITION.finditer(code):
+    for m in definitions(code):
         name = m.group(1)
         if name in _KEYWORDS:
             continue
