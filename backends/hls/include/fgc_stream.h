@@ -40,6 +40,29 @@
 #ifndef FGC_STREAM_H
 #define FGC_STREAM_H
 
+#if defined(FGC_STREAM_WINDOW) || defined(FGC_STREAM_BATCH_KERNEL)
+// A keyframe's words into slot m: its storage (SLOT_X), then its factors' and its prior's words
+// (NEW_DEST). The window's call (stream_in) and the batch kernel's (batch_kernel_in) move the
+// same words; BATCH says whose cycles they are (csim counting only).
+template <class CFG, bool BATCH>
+void keyframe_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        X[SLOT_X[m * STREAM_KF_X + k]] = x_in[k];
+    }
+    FGC_CYCLES(BATCH ? "batch" : "top", 0, "keyframe_x_in", STREAM_KF_X, CFG::T_MOVE_II,
+               CFG::T_MOVE_DEPTH);
+    const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
+#pragma HLS PIPELINE II=1
+        DATA_BUF[NEW_DEST[b + k]] = data[k];
+    }
+    FGC_CYCLES(BATCH ? "batch" : "top", 0, "keyframe_data_in", n, CFG::T_MOVE_II,
+               CFG::T_MOVE_DEPTH);
+}
+#endif
+
 #ifdef FGC_STREAM_WINDOW
 int STREAM_COUNT = 0;  // keyframes since the reset call (saturates at STREAM_SLOTS)
 #ifdef FGC_STREAM_KEPT
@@ -88,18 +111,7 @@ void stream_shift() {
 template <class CFG>
 void stream_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
     FGC_PHASE("setup");
-    for (int k = 0; k < STREAM_KF_X; ++k) {
-#pragma HLS PIPELINE II=1
-        X[SLOT_X[m * STREAM_KF_X + k]] = x_in[k];
-    }
-    FGC_CYCLES("top", 0, "keyframe_x_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
-    for (int k = 0; k < n; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
-#pragma HLS PIPELINE II=1
-        DATA_BUF[NEW_DEST[b + k]] = data[k];
-    }
-    FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    keyframe_in<CFG, false>(m, x_in, data);
 }
 #endif  // FGC_STREAM_WINDOW
 
@@ -616,18 +628,7 @@ void batch_kernel_reset(const T x_in[N_X], const T data[N_DATA]) {
 template <class CFG>
 void batch_kernel_in(int c, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
     FGC_PHASE("batch_in");
-    for (int k = 0; k < STREAM_KF_X; ++k) {
-#pragma HLS PIPELINE II=1
-        X[SLOT_X[c * STREAM_KF_X + k]] = x_in[k];
-    }
-    FGC_CYCLES("batch", 0, "keyframe_x_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    const int b = STREAM_NEW_BEGIN[c], n = STREAM_NEW_BEGIN[c + 1] - b;
-    for (int k = 0; k < n; ++k) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
-#pragma HLS PIPELINE II=1
-        DATA_BUF[NEW_DEST[b + k]] = data[k];
-    }
-    FGC_CYCLES("batch", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    keyframe_in<CFG, true>(c, x_in, data);
 }
 
 // The batch step over keyframes 0 … j: x_io in (their estimates, keyframe c at c * STREAM_KF_X),
