@@ -98,7 +98,7 @@ static void run_qr(int rows, int f, int s) {
         for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(a2 + 1);
         static T buf[C::MAX_F * C::MAX_COLS];
         T part[2][C::PARTIALS][C::MAX_F];
-        fgc_units::cond_load<C>(cond, 0, f, s, xs, buf, part);
+        fgc_units::cond_load<C>(cond, 0, f, s, xs, xs, -1, buf, part);
         fgc_units::cond_backsub<C>(buf, f, s, part, x);
         std::vector<double> xd(x, x + f);
         print("x", xd.data(), f);
@@ -150,7 +150,7 @@ static void run_cpe(int f, int s, double mu) {
         for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(a2 + 1);
         static T buf[C::MAX_F * C::MAX_COLS];
         T part[2][C::PARTIALS][C::MAX_F];
-        fgc_units::cond_load<C>(cond, 0, f, s, xs, buf, part);
+        fgc_units::cond_load<C>(cond, 0, f, s, xs, xs, -1, buf, part);
         fgc_units::cond_backsub<C>(buf, f, s, part, x);
         std::vector<double> xd(x, x + f);
         print("x", xd.data(), f);
