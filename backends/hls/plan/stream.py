@@ -452,15 +452,18 @@ class WindowUpdateModel:
         marginal = 0
         if m == lay.window and self.layout_marginal:
             # the window's rows at its optimum: computed again only if LM took a step after its
-            # last linearisation (fgc_stream.h, marginalize; counted: the "relinearize" event)
+            # last linearisation (fgc_stream.h, stream_call, before the marginal's region, by
+            # LM's own linearisation instance; counted: the "relinearize" event)
             relin = _relinearize(ev)
-            marginal = (relin * (self.group["factor_jacobian"] + self.group["gradient"])
-                        + st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True))
+            if relin:
+                terms.append(Term("relinearize", self.group["factor_jacobian"]
+                                  + self.group["gradient"], relin, False,
+                                  "keyframe leaving: the window linearised at its optimum "
+                                  "(LM moved after its last linearisation)"))
+            marginal = st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True)
             terms.append(Term("marginal", marginal, 1, False,
-                              "keyframe leaving: " + ("the window linearised at its optimum, "
-                                                      if relin else "")
-                              + "slot 0's QR step at μ = 0 on unit set 0, τ's signs, mean and "
-                              "words"))
+                              "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0, τ's "
+                              "signs, mean and words"))
         if lay.kept:
             terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
                               "slot 0's estimate copied out of X: the kept net's parent"))
