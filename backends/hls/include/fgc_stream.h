@@ -223,9 +223,8 @@ void kept_matvec(const L m[STREAM_KF_T * STREAM_KF_T], const L v[STREAM_KF_T], L
 // vector's.
 template <class CFG>
 void reexpress(int c, const T x[STREAM_KF_X]) {
-    // the Log and retraction passes below run one after another: one datapath of each
-#pragma HLS ALLOCATION function instances=keyframe_local limit=1
-#pragma HLS ALLOCATION function instances=keyframe_retract limit=1
+    // INLINE into kept_task: its Log / retraction passes share kept_walk's datapaths there
+#pragma HLS INLINE
     FGC_PHASE("kept");
     const T h = T(STREAM_H);
     T base[STREAM_KF_T], plus[STREAM_KF_T], minus[STREAM_KF_T], step[STREAM_KF_T];
@@ -348,6 +347,7 @@ void keep(int c) {
 // x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
 template <class CFG>
 void kept_walk(int first, const T x0[STREAM_KF_X]) {
+#pragma HLS INLINE
     FGC_PHASE("kept");
     T parent[STREAM_KF_X], local_t[STREAM_KF_T], out[STREAM_KF_X], delta_t[STREAM_KF_T];
     L local[STREAM_KF_T], delta[STREAM_KF_T], row[STREAM_KF_T];
@@ -467,6 +467,11 @@ void marginal_task(int m, bool finite, int code[1]) {
 
 template <class CFG>
 void kept_task(int first, const T x0[STREAM_KF_X]) {
+    // reexpress's passes and the walk's (both INLINE here) run one after another: one Log
+    // datapath, one retraction datapath and one matrix-vector product for all of them
+#pragma HLS ALLOCATION function instances=keyframe_local limit=1
+#pragma HLS ALLOCATION function instances=keyframe_retract limit=1
+#pragma HLS ALLOCATION function instances=kept_matvec<CFG> limit=1
     FGC_TASK();
 #ifdef FGC_STREAM_KEPT
     if (first > 0) reexpress<CFG>(first - 1, x0);
