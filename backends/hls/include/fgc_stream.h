@@ -22,8 +22,17 @@
 // kept conditionals KEPT_R / KEPT_S / KEPT_D, their points KEPT_LIN / KEPT_NEXT, X_KEPT; batch:
 // BATCH_X / BATCH_COND / BATCH_TAU), sized by the kernel's constants (STREAM_*, KEPT_MAX,
 // BATCH_SLOTS). The kernel keeps the tables (data), the Log kernels (its variable kinds) and the
-// wiring: StreamConfig's constants and hooks (lm_solve, leaf_step, batch_reset / batch_in /
-// batch_solve; the batch kernel's linearize / eliminate).
+// wiring: StreamConfig's constants and hooks (lm_solve, linearize, leaf_step, batch_reset /
+// batch_in / batch_solve; the batch kernel's eliminate).
+//
+// One RTL instance per kernel function: every call site of a function not inlined is its own
+// copy, so the functions that call a kernel function again after LM hold LM's body
+// (lm_solve: INLINE, fgc_lm::optimize_inline) and an ALLOCATION function ... limit=1 for
+// linearize_all, eliminate_all, total_cost (stream_call, batch_kernel_solve); kept_task holds
+// reexpress and kept_walk (INLINE) and one keyframe_local, keyframe_retract and kept_matvec.
+// What stays a copy (the marginal's QR step on its own unit set 0 beside the kept net,
+// write_tau's two call sites, the kept net's datapaths) is priced by the plan
+// (WindowUpdateModel.stream_units in fgc_backends/hls/plan/stream.py).
 //
 // Define the parts the design has, then include this file inside the kernel's namespace after
 // its tables and memories, which the functions name (the window's X, DATA_BUF, COND, NF, the
@@ -33,8 +42,9 @@
 // retraction). T and L are the kernel's scalars. CFG is the kernel's StreamConfig: the plan's
 // (II, depth) of T's move / max / retract / div and L's acc / div / scatter loops, MV_II (the kept
 // matrix-vector product's), MAX_NEW and TRIP_BATCH_X (trip counts), and the hooks
-// leaf_step() (slot 0's step once more at mu = 0), at_linearisation(info) (LM stopped where it
-// last linearised: AB holds the rows at X) and batch_solve(...) (the batch kernel's entry); kept:
+// lm_solve(errors, info), linearize() (INLINE: the window at X), leaf_step() (slot 0's step
+// once more at mu = 0), at_linearisation(info) (LM stopped where it last linearised: AB holds
+// the rows at X) and batch_solve(...) (the batch kernel's entry); kept:
 // KF_FLAT_S (per tangent direction of a keyframe its storage word if its variable is a vector)
 // and the kernel's T_ADD_LAT. Cycles to FGC_CYCLES as the plan prices them.
 #ifndef FGC_STREAM_H
