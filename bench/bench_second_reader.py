@@ -9,9 +9,9 @@ bound and its count of loops whose declared II the text cannot meet.
     python bench/bench_second_reader.py --stream   # also paper A's on-chip stream design
 
 The on-chip stream design (bench_papers.paper_a_stream's setting: LIO, incremental K = 3, batch
-steps at keyframes 5/15/25) is compared per part: the window kernel, the batch kernel and the
-stream section (fgc_stream.h's functions that the stream top calls, each read as a top, the
-batch kernel they reach taken out), the plan's ``WindowModel.resources()`` parts beside them.
+steps at keyframes 5/15/25) is compared per part: the window kernel (its own top's reading), the
+batch kernel and the stream section (the rest of the stream top's reading), the plan's
+``WindowModel.resources()`` parts beside them.
 
 Model estimates (no vendor tool here): the reader's DSP is a lower bound on what Vitis binds.
 """
@@ -73,22 +73,14 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
                           default=1.0))
 
 
-def section_tops(reader) -> list[str]:
-    """The stream section's functions the stream top (fgc_stream.h's ``stream_call``) calls."""
-    call = reader.functions.get("stream_call")
-    if call is None:
-        return []
-    names = dict.fromkeys(re.findall(r"\b(\w+)\s*<\s*CFG\s*>\s*\(", call.text))
-    return [n for n in names if n in reader.functions
-            and reader.functions[n].file == "fgc_stream.h"]
-
-
 def measure_stream(n: int, out: Path) -> dict:
     """Paper A's on-chip stream design at N = ``n``: the plan's DSP per part (window kernel,
     batch kernel, stream section) beside the reader's, and the reader's II-short / carried
-    loops. The reader's window kernel is the whole design's reading less the batch kernel's
-    translation unit and the stream section's tops (what they instantiate apart from the batch
-    kernel: the kernels' functions they call from their own call sites included)."""
+    loops. The reader's window kernel is what the window kernel's own top (``<name>_top``: its
+    LM, units and datapaths once) instantiates, its batch kernel what the stream top reaches in
+    the batch kernel's translation unit, and its stream section the rest of the stream top's
+    reading: every copy the stream's own code adds (the marginal's QR set, the kept net's Log /
+    retraction datapaths, tau's loops, a kernel function called from a second site)."""
     import fgc_backends
     from fgc.app import streaming
 
@@ -105,29 +97,27 @@ def measure_stream(n: int, out: Path) -> dict:
     dsp_of = _dsp_of(tab)
     reader = _Reader(files, tab.add.latency)
     design = _design(reader, top)
-    window_cpp = f"{top.removesuffix('_stream')}.cpp"
+    name = top.removesuffix("_stream")
+    window_cpp = f"{name}.cpp"
     batch_cpp = next((k for k, _ in files if k.endswith(".cpp") and k != window_cpp), None)
     batch = design.unit_dsp(dsp_of, batch_cpp) if batch_cpp else 0
-    section = 0
-    for name in section_tops(reader):
-        if name in reader.functions:
-            part = _design(reader, name, window_cpp)
-            section += part.dsp(dsp_of) - (part.unit_dsp(dsp_of, batch_cpp) if batch_cpp else 0)
+    window = _design(reader, f"{name}_top").dsp(dsp_of)
     total = design.dsp(dsp_of)
     issues = check(design.reached_loops)
     plan_parts = {k: d for k, (d, _) in res["parts"].items()}
     modules = dict(design.modules)
     return dict(plan_dsp=res["dsp"], reader_dsp=total,
-                parts=[("window kernel", plan_parts.get("window kernel", 0),
-                        total - batch - section),
+                parts=[("window kernel", plan_parts.get("window kernel", 0), window),
                        ("batch kernel", plan_parts.get("batch kernel", 0), batch),
-                       ("stream section", plan_parts.get("stream section", 0), section)],
+                       ("stream section", plan_parts.get("stream section", 0),
+                        total - batch - window)],
                 ii_short=sum(i.rule == "ii_ports" for i in issues),
                 recurrences=sum(i.rule == "ii_recurrence" for i in issues),
                 issues=[str(i) for i in issues],
-                copies={k: modules.get(k, 0) for k in ("eliminate_all", "qr_update",
+                copies={k: modules.get(k, 0) for k in ("eliminate_all", "linearize_all",
+                                                       "total_cost", "qr_update",
                                                        "keyframe_local", "keyframe_retract",
-                                                       "retract_all", "so3_log")})
+                                                       "kept_matvec", "write_tau", "so3_log")})
 
 
 def main(argv=None) -> int:
