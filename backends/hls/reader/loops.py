@@ -38,10 +38,15 @@ class LoopReading:
     recurrence: tuple[str, ...]  # carried read-modify-writes without DEPENDENCE inter false
     ii_recurrence: int  # the smallest II those recurrences allow (0: none)
     ii_known: bool = True  # False: the pragma's II does not evaluate here (not judged)
+    # (what limits them: "ALLOCATION in f" / "ALLOCATION function", operator kind or callee,
+    # operations an iteration issues, instances the ALLOCATION allows) of every kind whose
+    # instances cannot issue its operations within the II
+    allocation: tuple[tuple[str, str, int, int], ...] = ()
+    ii_allocation: int = 0  # the smallest II the ALLOCATION limits allow (0: none applies)
 
     @property
     def ii_bound(self) -> int:
-        return max(1, self.ii_ports, self.ii_recurrence)
+        return max(1, self.ii_ports, self.ii_recurrence, self.ii_allocation)
 
     def dsp(self, dsp_of: dict[str, int]) -> int:
         return sum(n * dsp_of.get(kind, 0) for kind, n in self.instances)
@@ -229,6 +234,7 @@ class _Reader(_Counter):
         carried = tuple(sorted(r for r in count.recurrences if r not in free))
         ii_recurrence = max([0] + [math.ceil(self.add_latency / distance[r]) if r in distance
                                    else self.add_latency for r in carried])
+        allocation, ii_allocation = self._allocation_ii(f, count, env, ii)
         label = re.search(r'FGC_CYCLES\(\s*"(\w+)"', code[close:close + 400])
         return LoopReading(
             file=f.file, line=_line(code, pragma), function=f.name,
@@ -236,7 +242,46 @@ class _Reader(_Counter):
             label=label.group(1) if label else None, ii=ii,
             ops=tuple(sorted(count.ops.items())), instances=tuple(sorted(instances.items())),
             accesses=tuple(accesses), ii_ports=ii_ports, recurrence=carried,
-            ii_recurrence=ii_recurrence)
+            ii_recurrence=ii_recurrence, allocation=allocation, ii_allocation=ii_allocation)
+
+    def _allocation_ii(self, f: _Function, count, env: dict[str, int], ii: int
+                       ) -> tuple[tuple[tuple[str, str, int, int], ...], int]:
+        """The loop's operations against the ALLOCATION limits in scope (UG1399: a pipelined
+        loop issues an iteration's operations of a kind through that kind's instances within
+        its II, so its II is at least ``ceil(ops / instances)``): ``ALLOCATION operation`` in
+        ``f`` (the loop's operations, exclusive branches sharing), in a callee that is its own
+        module (its operations a call, one module a call site), and ``ALLOCATION function`` in
+        ``f`` (its call sites an iteration on ``limit`` instances, each taking a call a cycle
+        at best). Returns the limits the II is short of and the II they allow (0: none)."""
+        short, bound = [], 0
+
+        def judge(what: str, kind: str, n: int, instances: int) -> None:
+            nonlocal bound
+            if instances <= 0 or n <= 0:
+                return  # limit=0 (no instance) is not a limit this rule reads
+            need = math.ceil(n / instances)
+            bound = max(bound, need)
+            if need > ii:
+                short.append((what, kind, n, instances))
+
+        limits = self.allocation(f.text)
+        for kind, n in sorted(count.peak.items()):
+            if kind in limits:
+                judge(f"ALLOCATION in {f.name}", kind, n, limits[kind])
+        functions = self.function_allocation(f.text, env)
+        for name, ops in sorted(count.capped_peak.items()):
+            callee = self.functions.get(name)
+            cap = self.allocation(callee.text) if callee is not None else {}
+            sites = max(1, count.calls.get(name, 0))
+            if name in functions and functions[name] > 0:
+                sites = min(sites, functions[name])
+            for kind, n in sorted(ops.items()):
+                if kind in cap:
+                    judge(f"ALLOCATION in {name}", kind, n, cap[kind] * sites)
+        for name, limit in sorted(functions.items()):
+            if count.calls.get(name):
+                judge("ALLOCATION function", name, count.calls[name], limit)
+        return tuple(short), bound
 
 
 def read_project(files: Iterable[tuple[str, str]], add_latency: int) -> list[LoopReading]:
@@ -265,6 +310,15 @@ def check(readings: Iterable[LoopReading]) -> list[LintIssue]:
                                     f"{', '.join(repr(x) for x in r.recurrence)} every "
                                     "iteration without 'DEPENDENCE inter false': II >= "
                                     f"{r.ii_recurrence}"))
+        if r.ii_allocation > r.ii:
+            worst = max(r.allocation, key=lambda a: math.ceil(a[2] / a[3]))
+            what, kind, n, k = worst
+            issued = f"{n} calls of {kind}" if what == "ALLOCATION function" else \
+                f"{n} {kind} operations"
+            issues.append(LintIssue(r.file, r.line, "ii_allocation", f"loop {where} declares "
+                                    f"II={r.ii} but issues {issued} an iteration through "
+                                    f"{k} instance{'s' if k > 1 else ''} ({what}): II >= "
+                                    f"{r.ii_allocation}"))
     # one issue per loop and rule (the instantiations of a template share the text)
     seen, out = set(), []
     for issue in issues:
