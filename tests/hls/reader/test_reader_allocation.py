@@ -1,0 +1,139 @@
+"""The second reader's ALLOCATION rule (backends/hls/reader/loops.py, ``ii_allocation``): a
+pipelined loop issues one iteration's operations of a kind through that kind's instances
+within its II, so an ``ALLOCATION ... limit=k`` in scope makes the II at least
+``ceil(ops / k)``; and the typing of a ternary's condition inside a floating-point statement.
+Each planted defect fails the check (the reader before this rule passed every one of them) and
+its correction passes."""
+
+from __future__ import annotations
+
+from fgc_backends.hls.reader import check, read_project
+
+ADD_LATENCY = 4
+
+LIMITED = """
+typedef float T;
+void scale(const T a[64][8], const T s[8], T out[64][8]) {
+#pragma HLS ALLOCATION operation instances=fmul limit=2
+    for (int i = 0; i < 64; ++i) {
+#pragma HLS PIPELINE II=%II%
+        for (int c = 0; c < 8; ++c) out[i][c] = a[i][c] * s[c];
+    }
+}
+"""
+
+
+def test_a_loop_limited_to_fewer_multipliers_than_its_ii_needs_is_ii_short():
+    """8 multiplies an iteration through 2 multipliers: II >= 4; the plan's II 2 is short."""
+    (loop,) = read_project([("s.cpp", LIMITED.replace("%II%", "2"))], ADD_LATENCY)
+    assert dict(loop.ops) == {"mul": 8}
+    assert dict(loop.instances) == {"mul": 2}  # what the ALLOCATION lets Vitis bind
+    assert loop.allocation == (("ALLOCATION in scale", "mul", 8, 2),)
+    assert loop.ii_allocation == 4 and loop.ii_bound == 4
+    (issue,) = check([loop])
+    assert issue.rule == "ii_allocation" and issue.line == 6
+    assert "8 mul operations" in issue.message and "2 instances" in issue.message
+    assert "II >= 4" in issue.message
+    # the correction: the II the limit allows
+    (fixed,) = read_project([("s.cpp", LIMITED.replace("%II%", "4"))], ADD_LATENCY)
+    assert fixed.allocation == () and fixed.ii_allocation == 4 and check([fixed]) == []
+
+
+CALLEE = """
+typedef float T;
+T kernel(const T x[4], int b) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fmul limit=2
+#pragma HLS ALLOCATION operation instances=fadd limit=1
+    T r = T(0);
+    if (b == 0) {
+        r = x[0] * x[1] * x[2] * x[3] + x[0] * x[1] + x[2] * x[3];
+    } else if (b == 1) {
+        r = x[0] * x[1] * x[2] * x[3];
+    } else {
+        r = x[0] + x[1] + x[2];
+    }
+    return r;
+}
+void all(const T xs[32][4], T ys[32], const int kind[32]) {
+    for (int i = 0; i < 32; ++i) {
+#pragma HLS PIPELINE II=%II%
+        ys[i] = kernel(xs[i], kind[i]);
+    }
+}
+"""
+
+
+def test_a_callee_under_allocation_shares_its_exclusive_branches():
+    """A callee with its own ALLOCATION, its branches exclusive: the largest branch (5
+    multiplies, 2 adds) goes through 2 multipliers and 1 adder, not the branches' sum (8, 4):
+    II 3 holds, II 2 is short."""
+    (loop,) = read_project([("k.cpp", CALLEE.replace("%II%", "2"))], ADD_LATENCY)
+    assert loop.function == "all" and loop.ii_allocation == 3
+    (issue,) = check([loop])
+    assert issue.rule == "ii_allocation" and "ALLOCATION in kernel" in issue.message
+    assert "5 mul operations" in issue.message and "II >= 3" in issue.message
+    (fixed,) = read_project([("k.cpp", CALLEE.replace("%II%", "3"))], ADD_LATENCY)
+    assert check([fixed]) == []
+
+
+def test_an_early_return_makes_the_rest_of_the_function_its_else():
+    """``if (c) { ...; return ...; } rest``: the branch and the rest are exclusive."""
+    text = CALLEE.replace("""    } else if (b == 1) {""", """        return r;
+    }
+    if (b == 1) {""")
+    (loop,) = read_project([("k.cpp", text.replace("%II%", "3"))], ADD_LATENCY)
+    assert loop.ii_allocation == 3 and check([loop]) == []
+
+
+SHARED = """
+typedef float T;
+T norm2(const T v[3]) {
+#pragma HLS INLINE off
+    return v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+}
+void pairs(const T a[16][3], const T b[16][3], T out[16]) {
+#pragma HLS ALLOCATION function instances=norm2 limit=1
+    for (int i = 0; i < 16; ++i) {
+#pragma HLS PIPELINE II=%II%
+        out[i] = norm2(a[i]) + norm2(b[i]);
+    }
+}
+"""
+
+
+def test_two_call_sites_on_one_function_instance_need_two_cycles():
+    """``ALLOCATION function instances=norm2 limit=1``: the loop's two calls an iteration go
+    through one norm2 instance, a call a cycle at best: II >= 2."""
+    (loop,) = read_project([("n.cpp", SHARED.replace("%II%", "1"))], ADD_LATENCY)
+    assert loop.allocation == (("ALLOCATION function", "norm2", 2, 1),)
+    (issue,) = check([loop])
+    assert issue.rule == "ii_allocation" and "2 calls of norm2" in issue.message
+    assert "II >= 2" in issue.message
+    (fixed,) = read_project([("n.cpp", SHARED.replace("%II%", "2"))], ADD_LATENCY)
+    assert check([fixed]) == []
+
+
+TERNARY = """
+typedef float T;
+const int F = 15;
+void slot(const T x[64], T out[16], int c) {
+    for (int h = 0; h < 16; ++h) {
+#pragma HLS PIPELINE II=1
+        out[h] = %EXPR%;
+    }
+}
+"""
+
+
+def test_a_ternarys_integer_condition_is_no_float_adder():
+    """``c + h < F ? x[c + h] : T(0)``: the condition's ``+`` is integer (c and h are declared
+    int); the reader before read it as a float add. A float condition keeps its adder, and
+    the branches' operators still count."""
+    cases = {"c + h < F ? x[c + h] : T(0)": {},
+             "x[h] + x[c] < T(0) ? x[c + h] : T(0)": {"add": 1},
+             "c + h < F ? x[c + h] * x[h] : x[h] - T(1)": {"mul": 1, "add": 1},
+             "c + 1 < F ? (h > 2 ? x[h] : x[h] + x[c]) : T(0)": {"add": 1}}
+    for expr, ops in cases.items():
+        (loop,) = read_project([("t.cpp", TERNARY.replace("%EXPR%", expr))], ADD_LATENCY)
+        assert dict(loop.ops) == ops, expr
