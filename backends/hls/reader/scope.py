@@ -164,7 +164,13 @@ class _Scope:
         through the callers' own parameters to globals where they lead there)."""
         direct: dict[tuple[str, str], set[tuple[str, str]]] = {}
         calls: list[tuple[str, str, dict[str, str]]] = []  # (callee, caller, param -> base)
-        for caller in self.functions.values():
+        # the callers: the functions and the structs' members (the QR driver's hooks,
+        # QrSets::stack / ::level, pass the unit sets' globals WORK<u> on), by qualified name
+        callers = {f.qualname or f.name: f for f in self.functions.values()}
+        for variants in self.members.values():
+            for _, f in variants:
+                callers.setdefault(f.qualname, f)
+        for qual, caller in callers.items():
             for m in _CALL.finditer(caller.text):
                 f = self.functions.get(m.group(1))
                 if f is None:
@@ -176,9 +182,9 @@ class _Scope:
                     base = re.match(r"^&?\s*([A-Za-z_]\w*)", arg)
                     if base and (param.dims or param.pointer):
                         direct.setdefault((f.name, param.name), set()).add(
-                            (caller.name, base.group(1)))
+                            (qual, base.group(1)))
                         site[param.name] = base.group(1)
-                calls.append((f.name, caller.name, site))
+                calls.append((f.name, qual, site))
         out: dict[tuple[str, str], set[str]] = {}
 
         def resolve(key, seen):
@@ -187,7 +193,7 @@ class _Scope:
                 if name in self.globals:
                     names.add(name)
                 elif (caller, name) not in seen and any(
-                        p.name == name for p in self.functions[caller].params):
+                        p.name == name for p in callers[caller].params):
                     names |= resolve((caller, name), seen | {key})
             return names
 
@@ -202,7 +208,7 @@ class _Scope:
             for param, base in site.items():
                 if base in self.globals:
                     bound[param] = base
-                elif any(p.name == base for p in self.functions[caller].params):
+                elif any(p.name == base for p in callers[caller].params):
                     names = sorted(out.get((caller, base), ()))
                     bound[param] = names[0] if names else None
                 else:

@@ -137,3 +137,45 @@ def test_a_ternarys_integer_condition_is_no_float_adder():
     for expr, ops in cases.items():
         (loop,) = read_project([("t.cpp", TERNARY.replace("%EXPR%", expr))], ADD_LATENCY)
         assert dict(loop.ops) == ops, expr
+
+
+HOOKED = """
+typedef float T;
+const int ROWS = 64, UNITS = 4;
+T WORK0[UNITS][ROWS];
+T WORK1[UNITS][ROWS];
+void stack(const T src[ROWS], T bank[UNITS][ROWS]) {
+    for (int r = 0; r < ROWS; ++r) {
+#pragma HLS PIPELINE II=1
+        for (int u = 0; u < UNITS; ++u) bank[u][r] = src[r];
+    }
+}
+struct Sets {
+    static void stack_set(int u, const T src[ROWS]) {
+        if (u == 0) stack(src, WORK0);
+        if (u == 1) stack(src, WORK1);
+    }
+};
+void top(const T src[ROWS]) {
+%PARTITION%
+    Sets::stack_set(0, src);
+    Sets::stack_set(1, src);
+}
+"""
+
+
+def test_a_global_passed_on_by_a_structs_member_is_that_global():
+    """A struct's static member (the QR driver's hooks, ``QrSets::stack``) passes the globals
+    WORK0 / WORK1 to ``stack``: its parameter is those globals, judged with their ports (four
+    stores an iteration through two unpartitioned ports: II >= 2). The reader before took the
+    parameter for a local of ``stack`` (its callers' members unread) and judged nothing."""
+    readings = read_project([("h.cpp", HOOKED.replace("%PARTITION%", ""))], ADD_LATENCY)
+    (loop,) = [r for r in readings if r.function == "stack"]
+    assert loop.accesses in ((("WORK0", 4, 1),), (("WORK1", 4, 1),)) and loop.ii_ports == 2
+    (issue,) = check(readings)
+    assert issue.rule == "ii_ports" and "II >= 2" in issue.message
+    partitioned = HOOKED.replace("%PARTITION%", "\n".join(
+        f"#pragma HLS ARRAY_PARTITION variable=WORK{u} complete dim=1" for u in (0, 1)))
+    readings = read_project([("h.cpp", partitioned)], ADD_LATENCY)
+    (loop,) = [r for r in readings if r.function == "stack"]
+    assert loop.ii_ports == 1 and check(readings) == []
