@@ -18,7 +18,7 @@ from fgc_backends.hls.lint.cxx import (
     _split_top,
 )
 from fgc_backends.hls.reader.count import _Counter
-from fgc_backends.hls.reader.text import _own_level, _unit, _Var
+from fgc_backends.hls.reader.text import _own_level, _subscripts, _unit, _Var, until_fixed
 
 
 @dataclass(frozen=True)
@@ -43,10 +43,19 @@ class LoopReading:
     # instances cannot issue its operations within the II
     allocation: tuple[tuple[str, str, int, int], ...] = ()
     ii_allocation: int = 0  # the smallest II the ALLOCATION limits allow (0: none applies)
+    # `DEPENDENCE variable=v inter false` claims the text refutes: (v, the element's subscript,
+    # the distance it comes back at: P for [a % P], 1 for an index no iteration moves, 0 when
+    # the modulus does not evaluate here, the recurrence's latency: the adder's when the
+    # element is updated through an add, else 1, a compare and select)
+    false_claims: tuple[tuple[str, str, int, int], ...] = ()
+    ii_dependence: int = 0  # the smallest II the refuted claims' true dependences allow
+    # claims on a read-modify-write at a data-dependent address (an index read from memory):
+    # the text can neither prove nor refute them (v, subscript)
+    unproven_claims: tuple[tuple[str, str], ...] = ()
 
     @property
     def ii_bound(self) -> int:
-        return max(1, self.ii_ports, self.ii_recurrence, self.ii_allocation)
+        return max(1, self.ii_ports, self.ii_recurrence, self.ii_allocation, self.ii_dependence)
 
     def dsp(self, dsp_of: dict[str, int]) -> int:
         return sum(n * dsp_of.get(kind, 0) for kind, n in self.instances)
@@ -213,6 +222,9 @@ class _Reader(_Counter):
             ii_ports = max(ii_ports, math.ceil(n / (2 * banks)))
         free = set(re.findall(r"DEPENDENCE\s+variable\s*=\s*(\w+)[^\n]*inter\s+false", body,
                               re.I))
+        false_claims, unproven = self._claims(body, header, env, free)
+        ii_dependence = max([0] + [math.ceil(lat / d) if d > 0 else lat
+                                   for _, _, d, lat in false_claims])
         free |= {scope[name].alias for name in free if name in scope}
         # DEPENDENCE ... inter true distance=D: the element comes back D iterations later, so
         # the recurrence through the adder allows II ceil(latency / D)
@@ -242,7 +254,60 @@ class _Reader(_Counter):
             label=label.group(1) if label else None, ii=ii,
             ops=tuple(sorted(count.ops.items())), instances=tuple(sorted(instances.items())),
             accesses=tuple(accesses), ii_ports=ii_ports, recurrence=carried,
-            ii_recurrence=ii_recurrence, allocation=allocation, ii_allocation=ii_allocation)
+            ii_recurrence=ii_recurrence, allocation=allocation, ii_allocation=ii_allocation,
+            false_claims=false_claims, ii_dependence=ii_dependence, unproven_claims=unproven)
+
+    def _claims(self, body: str, header: list[str], env: dict[str, int], names: set[str]
+                ) -> tuple[tuple[tuple[str, str, int, int], ...], tuple[tuple[str, str], ...]]:
+        """The ``DEPENDENCE ... inter false`` claims on ``names`` against the loop body's
+        read-modify-writes of one element (the same subscript read and written): an index
+        taken modulo P (``part[a % P]``, interleaved partial sums) brings the element back P
+        iterations later, an index that no iteration moves (no loop variable, nothing assigned
+        or declared in the body) every iteration: both refute the claim (UG1399: ``inter
+        false`` is the designer's promise that no iteration reads what another wrote; the true
+        statement is ``inter true distance=P``). An index read from memory (``bank[at[a]]``,
+        or a local initialised from an array or a stream) is unproven: the text cannot tell
+        whether two iterations meet."""
+        moving = set(re.findall(r"\b([A-Za-z_]\w*)\s*=(?!=)", header[0]))
+        moving |= set(re.findall(r"\b([A-Za-z_]\w*)\s*(?:[-+*/%&|^]?=(?!=)|\+\+|--)", body))
+        moving |= set(re.findall(r"(?:\+\+|--)\s*([A-Za-z_]\w*)", body))
+        declared = set(self._declarations(body))
+        moving |= declared
+        data: set[str] = set()
+        for _ in range(4):  # locals initialised from memory, a stream, or such a local
+            for name in declared - data:
+                init = re.search(rf"\b{name}\s*=(?!=)\s*([^;,]*)", body)
+                if init and ("[" in init.group(1) or ".read(" in init.group(1) or any(
+                        re.search(rf"\b{d}\b", init.group(1)) for d in data)):
+                    data.add(name)
+        refuted, unproven = [], []
+        for name in sorted(names):
+            uses: dict[str, set[str]] = {}
+            added: set[str] = set()  # subscripts whose element is updated through an add
+            for m in re.finditer(rf"\b{name}\s*((?:\[[^\[\]]*(?:\[[^\]]*\][^\[\]]*)*\]\s*)+)"
+                                 r"(\s*[-+*/]?=(?!=))?", body):
+                sub = re.sub(r"\s+", "", m.group(1))
+                op = (m.group(2) or "").strip()
+                uses.setdefault(sub, set()).update({"": "r", "=": "w"}.get(op, "rw"))
+                if op in ("+=", "-="):
+                    added.add(sub)
+                elif op == "=":
+                    rhs = until_fixed(r"\[[^\[\]]*\]", "", body[m.end():body.find(";", m.end())])
+                    if re.search(r"[\w)\]]\s*[-+](?![-+=>])", rhs):
+                        added.add(sub)
+            for sub, kinds in sorted(uses.items()):
+                if kinds != {"r", "w"}:
+                    continue
+                words = set(re.findall(r"[A-Za-z_]\w*", sub))
+                modulo = re.search(r"%\s*\(?\s*([\w:]+)", sub)
+                latency = self.add_latency if sub in added else 1
+                if any("[" in index for index in _subscripts(sub)) or words & data:
+                    unproven.append((name, sub))
+                elif modulo:
+                    refuted.append((name, sub, self._value(modulo.group(1), env) or 0, latency))
+                elif not words & moving:
+                    refuted.append((name, sub, 1, latency))
+        return tuple(refuted), tuple(unproven)
 
     def _allocation_ii(self, f: _Function, count, env: dict[str, int], ii: int
                        ) -> tuple[tuple[tuple[str, str, int, int], ...], int]:
@@ -290,8 +355,10 @@ def read_project(files: Iterable[tuple[str, str]], add_latency: int) -> list[Loo
     return _Reader(files, add_latency).loops()
 
 
-def check(readings: Iterable[LoopReading]) -> list[LintIssue]:
-    """A loop whose declared II is below what its memories or recurrences allow."""
+def check(readings: Iterable[LoopReading], strict: bool = False) -> list[LintIssue]:
+    """A loop whose declared II is below what its memories, recurrences or ALLOCATION limits
+    allow, or whose ``DEPENDENCE ... inter false`` the text refutes; ``strict``: also the
+    claims the text cannot prove (a data-dependent address, rule ``dependence_unproven``)."""
     issues = []
     for r in readings:
         if not r.ii_known:
@@ -310,6 +377,19 @@ def check(readings: Iterable[LoopReading]) -> list[LintIssue]:
                                     f"{', '.join(repr(x) for x in r.recurrence)} every "
                                     "iteration without 'DEPENDENCE inter false': II >= "
                                     f"{r.ii_recurrence}"))
+        for name, sub, d, _ in r.false_claims:
+            again = f"again {d} iterations later" if d > 1 else "every iteration" if d == 1 \
+                else "again a modulus later"
+            state = f"'inter true distance={d}'" if d >= 1 else "'inter true distance=<modulus>'"
+            issues.append(LintIssue(r.file, r.line, "dependence_false", f"loop {where} claims "
+                                    f"'DEPENDENCE variable={name} inter false' but reads and "
+                                    f"writes {name}{sub} {again}: {state} is the truth "
+                                    f"(II >= {r.ii_dependence} with it)"))
+        for name, sub in r.unproven_claims if strict else ():
+            issues.append(LintIssue(r.file, r.line, "dependence_unproven", f"loop {where} "
+                                    f"claims 'DEPENDENCE variable={name} inter false' on "
+                                    f"{name}{sub}, read and written at an address read from "
+                                    "memory: the text cannot prove no two iterations meet"))
         if r.ii_allocation > r.ii:
             worst = max(r.allocation, key=lambda a: math.ceil(a[2] / a[3]))
             what, kind, n, k = worst

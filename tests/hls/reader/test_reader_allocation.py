@@ -179,3 +179,77 @@ def test_a_global_passed_on_by_a_structs_member_is_that_global():
     readings = read_project([("h.cpp", partitioned)], ADD_LATENCY)
     (loop,) = [r for r in readings if r.function == "stack"]
     assert loop.ii_ports == 1 and check(readings) == []
+
+
+PARTIAL_SUMS = """
+typedef float T;
+const int N = 256, P = 4;
+T dot(const T a[N], const T b[N]) {
+    T part[P];
+#pragma HLS ARRAY_PARTITION variable=part complete
+    for (int t = 0; t < P; ++t) part[t] = T(0);
+    for (int i = 0; i < N; ++i) {
+#pragma HLS PIPELINE II=1
+%DEPENDENCE%
+        part[i % %MOD%] += a[i] * b[i];
+    }
+    return part[0] + part[1] + part[2] + part[3];
+}
+"""
+
+
+def _partial_sums(dependence: str, mod: str = "P") -> str:
+    return PARTIAL_SUMS.replace("%DEPENDENCE%", dependence).replace("%MOD%", mod)
+
+
+def test_inter_false_on_interleaved_partial_sums_is_refuted():
+    """``part[i % P] +=`` under ``DEPENDENCE inter false``: each partial is read and written
+    again P iterations later, a real distance-P dependence the claim hides (issue 32). The
+    reader before took the claim and reported nothing; ``inter true distance=P`` is the truth
+    and passes (P = 4 >= the adder's 4 stages: II 1). A modulus of 2 refutes II 1 too."""
+    (loop,) = read_project([("d.cpp", _partial_sums(
+        "#pragma HLS DEPENDENCE variable=part inter false"))], ADD_LATENCY)
+    assert loop.false_claims == (("part", "[i%P]", 4, ADD_LATENCY),) and loop.ii_bound == 1
+    (issue,) = check([loop])
+    assert issue.rule == "dependence_false" and "'inter true distance=4'" in issue.message
+    truth = _partial_sums("#pragma HLS DEPENDENCE variable=part inter true distance=P")
+    (loop,) = read_project([("d.cpp", truth)], ADD_LATENCY)
+    assert loop.false_claims == () and check([loop]) == []
+    (loop,) = read_project([("d.cpp", _partial_sums(
+        "#pragma HLS DEPENDENCE variable=part inter false", "2"))], ADD_LATENCY)
+    assert loop.ii_dependence == 2 and loop.ii_bound == 2
+    assert [i.rule for i in check([loop])] == ["dependence_false"]
+
+
+def test_inter_false_on_a_fixed_element_and_a_data_dependent_one():
+    """``acc[k]`` with k never moved by the loop: every iteration meets the last one (a
+    compare and select: latency 1, so only the claim is wrong, not the II). ``G[col[i]]``: an
+    address read from memory, unproven; reported only when asked (``strict``)."""
+    fixed = """
+typedef float T;
+void running_max(const T g[64], T acc[4], int k) {
+    for (int i = 0; i < 64; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=acc inter false
+        acc[k] = g[i] > acc[k] ? g[i] : acc[k];
+    }
+}
+"""
+    (loop,) = read_project([("m.cpp", fixed)], ADD_LATENCY)
+    assert loop.false_claims == (("acc", "[k]", 1, 1),) and loop.ii_bound == 1
+    assert [i.rule for i in check([loop])] == ["dependence_false"]
+    scatter = """
+typedef float T;
+T G[32];
+void scatter(const T v[64], const int col[64]) {
+    for (int i = 0; i < 64; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=G inter false
+        G[col[i]] += v[i];
+    }
+}
+"""
+    (loop,) = read_project([("g.cpp", scatter)], ADD_LATENCY)
+    assert loop.false_claims == () and loop.unproven_claims == (("G", "[col[i]]"),)
+    assert check([loop]) == []
+    assert [i.rule for i in check([loop], strict=True)] == ["dependence_unproven"]
