@@ -179,13 +179,20 @@ class _Counter(_Scope):
             value = self._value(const.group(2), env)
             if value is not None:
                 env[const.group(1)] = value
+        loads = set()  # (array, subscript) read in this statement
         for m in _SUBSCRIPTED.finditer(stmt):
             var = self._lookup(m.group(1), scope)
             if var is None or var.storage == "stream":
                 continue
             op = (m.group(3) or "").strip()
             if var.storage == "global":
-                out.accesses[var.alias] += 1 + (op not in ("", "="))
+                # a word read twice in one statement (`n == 1 ? T(-bank[j][l]) : bank[j][l]`)
+                # is one load: the front end merges loads of one address with no store between
+                load = (var.alias, re.sub(r"\s+", "", m.group(2)))
+                if op != "" or load not in loads:
+                    out.accesses[var.alias] += 1 + (op not in ("", "="))
+                if op == "":
+                    loads.add(load)
             if var.alias not in outer and var.storage != "global":
                 continue  # a local of this iteration: nothing carried through it
             subscripts = _subscripts(m.group(2))

@@ -160,7 +160,7 @@ class _Reader(_Counter):
         # the worst is the loop's): a parameter bound to a global at one site and to a local
         # at another is not that global at every site
         variants: list[dict[str, _Var]] = []
-        for site in self.sites.get(f.name) or [None]:
+        for site in self.sites.get(f.qualname or f.name) or [None]:
             scope: dict[str, _Var] = {}
             for p in f.params:
                 v = self._param_var(f, p)

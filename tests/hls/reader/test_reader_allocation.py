@@ -253,3 +253,47 @@ void scatter(const T v[64], const int col[64]) {
     assert loop.false_claims == () and loop.unproven_claims == (("G", "[col[i]]"),)
     assert check([loop]) == []
     assert [i.rule for i in check([loop], strict=True)] == ["dependence_unproven"]
+
+
+UNITS = """
+typedef float T;
+const int N_UNITS = 2, ROWS = 32;
+T WORK[N_UNITS][ROWS];
+#pragma HLS ARRAY_PARTITION variable=WORK complete dim=1
+template <int U>
+void update(T bank[ROWS], const T v[ROWS]) {
+    for (int r = 0; r < ROWS; ++r) {
+#pragma HLS PIPELINE II=1
+        bank[r] = bank[r] * v[r] + %EXTRA%;
+    }
+}
+template <int U, bool END = (U == N_UNITS)>
+struct units {
+    static void run(T work[N_UNITS][ROWS], const T v[ROWS]) {
+        update<U>(work[U], v);
+        units<U + 1>::run(work, v);
+    }
+};
+template <int U>
+struct units<U, true> {
+    static void run(T (*)[ROWS], const T*) {}
+};
+void top(const T v[ROWS]) {
+    units<0>::run(WORK, v);
+}
+"""
+
+
+def test_a_row_of_a_partitioned_global_through_a_struct_recursion_is_one_bank():
+    """``units<U>::run`` passes row U of WORK (partitioned in its first dimension: a bank a
+    row) to ``update<U>``: its parameter is that one bank, two ports. Three accesses an
+    iteration (``bank[r + 1]`` read beside ``bank[r]``) need II 2; the reader before read
+    ``bank`` as a local and judged nothing. The same word read twice in one statement is one
+    load (the front end merges them): II 1."""
+    (loop,) = {r.line: r for r in read_project(
+        [("u.cpp", UNITS.replace("%EXTRA%", "bank[(r + 1) % ROWS]"))], ADD_LATENCY)}.values()
+    assert loop.accesses == (("WORK[]", 3, 1),) and loop.ii_ports == 2
+    assert [i.rule for i in check([loop])] == ["ii_ports"]
+    (loop,) = {r.line: r for r in read_project(
+        [("u.cpp", UNITS.replace("%EXTRA%", "bank[r]"))], ADD_LATENCY)}.values()
+    assert loop.accesses == (("WORK[]", 2, 1),) and check([loop]) == []
