@@ -203,7 +203,9 @@ class _Reader(_Counter):
             need = math.ceil(n / ii)
             instances[kind] += min(need, limits[kind]) if kind in limits else need
         for name, ops in count.capped.items():
-            cap = self.allocation(self.functions[name].text) if name in self.functions else {}
+            # the callee of this translation unit (two kernels define their own factor_<b>)
+            callee = self.local.get(self.where, {}).get(name) or self.functions.get(name)
+            cap = self.allocation(callee.text) if callee is not None else {}
             for kind, n in ops.items():
                 need = math.ceil(n / ii)
                 instances[kind] += min(need, cap[kind]) if kind in cap else need
@@ -335,7 +337,7 @@ class _Reader(_Counter):
                 judge(f"ALLOCATION in {f.name}", kind, n, limits[kind])
         functions = self.function_allocation(f.text, env)
         for name, ops in sorted(count.capped_peak.items()):
-            callee = self.functions.get(name)
+            callee = self.local.get(self.where, {}).get(name) or self.functions.get(name)
             cap = self.allocation(callee.text) if callee is not None else {}
             sites = max(1, count.calls.get(name, 0))
             if name in functions and functions[name] > 0:

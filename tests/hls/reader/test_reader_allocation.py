@@ -297,3 +297,38 @@ def test_a_row_of_a_partitioned_global_through_a_struct_recursion_is_one_bank():
     (loop,) = {r.line: r for r in read_project(
         [("u.cpp", UNITS.replace("%EXTRA%", "bank[r]"))], ADD_LATENCY)}.values()
     assert loop.accesses == (("WORK[]", 2, 1),) and check([loop]) == []
+
+
+KERNEL = """
+typedef float T;
+namespace {
+T factor(const T x[8]) {
+#pragma HLS INLINE off
+#pragma HLS ALLOCATION operation instances=fmul limit=%LIMIT%
+    return x[0] * x[1] * x[2] * x[3] * x[4] * x[5] * x[6] * x[7];
+}
+}
+void %NAME%_top(const T xs[16][8], T ys[16]) {
+    for (int i = 0; i < 16; ++i) {
+#pragma HLS PIPELINE II=%II%
+        ys[i] = factor(xs[i]);
+    }
+}
+"""
+
+
+def test_each_kernel_reads_its_own_callees_allocation():
+    """Two kernels of one design (the on-chip stream design's window and batch kernels) each
+    define their own ``factor`` under their own ALLOCATION: a kernel's loop is judged by its
+    own (7 multiplies through 4 at II 2 passes; through 1 at II 2 does not)."""
+    def kernel(name, limit, ii):
+        return (f"{name}.cpp", KERNEL.replace("%NAME%", name).replace("%LIMIT%", str(limit))
+                .replace("%II%", str(ii)))
+
+    readings = read_project([kernel("batch", 1, 7), kernel("window", 4, 2)], ADD_LATENCY)
+    by_file = {r.file: r for r in readings}
+    assert by_file["window.cpp"].ii_allocation == 2 and by_file["batch.cpp"].ii_allocation == 7
+    assert check(readings) == []
+    readings = read_project([kernel("batch", 4, 2), kernel("window", 1, 2)], ADD_LATENCY)
+    (issue,) = check(readings)
+    assert issue.file == "window.cpp" and "II >= 7" in issue.message
