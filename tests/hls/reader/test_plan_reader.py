@@ -50,9 +50,9 @@ def test_lio_plan_prices_at_least_what_the_text_instantiates(tmp_path):
     # the whole design, the QR unit sets' headers included: the plan prices at least the
     # text's DSP and no loop the top instantiates is II-short or carried
     assert check_dsp(design, cost.dsp, dsp_of) == []
-    # a finding of the ALLOCATION rule (ii_allocation), left to the plan: factor_0's
-    # so3_log / lie_D / lie_D1 bodies (inline helpers, read in place) issue more multiplies
-    # through factor_0's ALLOCATION than the plan's operation count of the block holds, so
+    # a finding of the ALLOCATION rule (ii_allocation), left to the plan: factor_0's text
+    # issues more multiplies through its ALLOCATION than the plan's operation count holds (a
+    # division by a constant is counted as a divide and printed as a multiply), so
     # evaluate_0's declared II is a few cycles short; nothing else is
     assert [(i.file, i.rule, i.message.split("'")[1]) for i in check(design.reached_loops)] \
         == [("lio.cpp", "ii_allocation", "evaluate_0")]
