@@ -322,14 +322,17 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
     assert f"T_CMP_LAT = {plan.ops.compare.latency}," in kernel
     assert "T_MAXIMA = T_CMP_LAT;" in kernel
     assert "PARTIALS = T_PARTIALS," in kernel and "MAXIMA = T_MAXIMA," in kernel
-    for array, update in (("xp", "xp[i % CFG::PARTIALS] += x[i] * x[i];"),
-                          ("dp", "dp[i % CFG::PARTIALS] += d * d;"),
-                          ("pp", "pp[i % CFG::PARTIALS] += d * (g[i] + mu * d);"),
-                          ("gp", "gp[i % CFG::MAXIMA] = a > gp[i % CFG::MAXIMA]")):
+    for array, update, dist in (("xp", "xp[i % CFG::PARTIALS] += x[i] * x[i];", "PARTIALS"),
+                                ("dp", "dp[i % CFG::PARTIALS] += d * d;", "PARTIALS"),
+                                ("pp", "pp[i % CFG::PARTIALS] += d * (g[i] + mu * d);", "PARTIALS"),
+                                ("gp", "gp[i % CFG::MAXIMA] = a > gp[i % CFG::MAXIMA]", "MAXIMA")):
         at = units.index(update)
         loop = units[units.rindex("for (int i = 0;", 0, at):at]
         assert "#pragma HLS PIPELINE II=1\n" in loop, array
-        assert f"#pragma HLS DEPENDENCE variable={array} inter false" in loop, array
+        # a partial sum is met again P iterations later: the true distance, which the II-1
+        # schedule honours because P >= the operator's latency
+        assert (f"#pragma HLS DEPENDENCE variable={array} inter true distance=CFG::{dist}"
+                in loop), array
         assert f"#pragma HLS ARRAY_PARTITION variable={array} complete" in units, array
     loops = {lp.name: lp for ph in plan.phases if ph.name.startswith("lm_")
              for pr in ph.processes for lp in pr.loops}
