@@ -40,15 +40,22 @@ from fgc.ir.program import SolverConfig
 from fgc_backends.hls import HlsConfig
 from fgc_backends.hls.emitter import accel_plan
 from fgc_backends.hls.plan import plan_cost
+from fgc_backends.hls.plan.cost import phase_cycles
 from fgc_backends.hls.plan.loops import _tables
+from fgc_backends.hls.plan.model import Loop, Phase, Process
+from fgc_backends.hls.units.cholesky import gram_config, jacobian_cycles, jacobian_ii
 
 CASES = [("lio", 30, c) for c in (10, 15, 20)] + [("imu_window", 50, c) for c in (5, 20, 80)]
 
 
-def beside(program, plan, cost) -> dict:
+def beside(program, plan, cost, variant: str = "source") -> dict:
     """The estimate for one design: cycles before / after, the span it replaces, when the
     first step's streamed Grams are complete, the producer's end, the consumer's waits after
-    the first step, the streamed block type and the largest stage lane (words)."""
+    the first step, the streamed block type and the largest stage lane (words). ``variant``:
+    "source" (a Gram source process beside the assembler fills stage lanes) or "assembler"
+    (the assembler reads the stream itself in cholesky_assemble_first / its adds: the stream's
+    words at the producer's rate, a word of 1, 2 or 3 entries (one lane, two, paired) every
+    ceil(entries / 2) cycles when stored, an entry a cycle when added)."""
     tables = _tables(program)
     cycles = dict(cost.phase_cycles)
     phases = {ph.name: ph for ph in plan.phases}
@@ -69,6 +76,10 @@ def beside(program, plan, cost) -> dict:
     jac = procs[f"factor_{big}_jacobian"].loops[0]
     entries = procs[f"reduce_{big}"].loops[1]
     per = entries.trip // len(facs)  # STEPS
+    _, lane_b, _, paired = gram_config(program, big, plan.options.hgc_lanes,
+                                       jacobian_ii(procs.values()),
+                                       jacobian_cycles(procs.values()))
+    slots = 3 if paired else 2 if lane_b else 1
     ready, prev = {}, None
     for k, f in enumerate(facs):
         start = clock + k * jac.ii + jac.depth + 2
@@ -87,16 +98,38 @@ def beside(program, plan, cost) -> dict:
 
     d = sum(program.blocks[big].variable_dims)
     lane = max(len(streamed(s)) for s in order) * (d * (d + 1) // 2 + d)
+    def reads_stream(phase: Phase, assembler: str, s: int) -> int:
+        """The phase's cycles with its assembler taking step s's Grams of the streamed block
+        type from the stream (variant "assembler")."""
+        facs = [tables["STEP_FACTORS"][e] for e in range(fb[s], fb[s + 1])]
+        out, k = [], -1
+        for lp in next(p for p in phase.processes if p.name == assembler).loops:
+            if lp.name in ("map", "gram"):
+                k += 1
+            if lp.name in ("gram_first", "gram") and facs[k] in ready:
+                lp = (Loop("gram_first", per, -(-slots // 2), lp.depth) if lp.name == "gram_first"
+                      else Loop("gram", per * slots, 1, lp.depth))
+            out.append(lp)
+        procs = tuple(Process(p.name, p.unit, tuple(out)) if p.name == assembler else p
+                      for p in phase.processes)
+        return phase_cycles(Phase(phase.name, phase.dataflow, procs, phase.linear))
+
     first = step_ready(order[0])
     c = first + cycles["assemble"]
+    if variant == "assembler":
+        c += reads_stream(phases["assemble"], "assemble_first", order[0]) - cycles["assemble"]
     waits = 0
     for t in range(steps):
+        region = cycles[f"cholesky_level{t}"]
         if t + 1 < steps:
             r = step_ready(order[t + 1])
             waits += max(0, r - c)
             c = max(c, r)
-        region = cycles[f"cholesky_level{t}"]
-        if t + 2 < steps and streamed(order[t + 2]):  # the Gram source copies step t + 2's
+            if variant == "assembler":
+                region = reads_stream(phases[f"cholesky_level{t}"], f"assembler{order[t]}",
+                                      order[t + 1])
+        if variant == "source" and t + 2 < steps and streamed(order[t + 2]):
+            # the Gram source copies step t + 2's Grams beside the region
             source = len(streamed(order[t + 2])) * per * entries.ii + 2
             region = max(region + 2, source)
         c += region
@@ -115,14 +148,15 @@ def main() -> None:
             method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"{ex}{cpe}")
         plan = accel_plan(program, HlsConfig(scalar="float"))
         cost = plan_cost(plan)
-        r = beside(program, plan, cost)
-        ms = [x / r["clock"] / 1e3 for x in (r["before"], r["after"])]
-        print(f"{ex} N={n} #CPE={cpe}: {r['before']:,} -> {r['after']:,} cycles/iteration "
-              f"({ms[0]:.3f} -> {ms[1]:.3f} ms), DSP plan {cost.dsp}; linearise+eliminate "
-              f"{r['span']:,} -> {r['after_span']:,} (first step's Grams at {r['first']:,}, "
-              f"producer done at {r['produced']:,}, consumer waits after it {r['waits']:,}); "
-              f"streamed block {r['big']}, stage lane {r['lane']:,} words", flush=True)
-
+        for variant in ("source", "assembler"):
+            r = beside(program, plan, cost, variant)
+            ms = [x / r["clock"] / 1e3 for x in (r["before"], r["after"])]
+            print(f"{ex} N={n} #CPE={cpe} [{variant}]: {r['before']:,} -> {r['after']:,} "
+                  f"cycles/iteration ({ms[0]:.3f} -> {ms[1]:.3f} ms), DSP plan {cost.dsp}; "
+                  f"linearise+eliminate {r['span']:,} -> {r['after_span']:,} (first step's "
+                  f"Grams at {r['first']:,}, producer done at {r['produced']:,}, consumer "
+                  f"waits after it {r['waits']:,}); streamed block {r['big']}, stage lane "
+                  f"{r['lane']:,} words", flush=True)
 
 if __name__ == "__main__":
     main()
