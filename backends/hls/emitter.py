@@ -330,8 +330,30 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
             "bs_slots": _backsub_slots(program),
-            "cpe": plan.options.cpe, "plan": plan,
+            "cpe": plan.options.cpe, "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
+
+
+def _cascade_context(program: Program, plan) -> dict:
+    """The two-cascade Cholesky design's tables (units/cholesky.py's cascade_regions and
+    cascade_children): ``cascades`` (1 or 2) and, for 2, REGION_STEP (flat, two a region),
+    STEP_REGION, STEP_CASCADE and STEP_STREAMED."""
+    if program.solver.linear != "cholesky":
+        return {"cascades": 1}
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.cholesky import cascade_children, cascade_regions, cascades_of
+    sets = cascades_of(program, plan.options)
+    if sets == 1:
+        return {"cascades": 1}
+    tables = _tables(program)
+    n = len(program.schedule.steps)
+    regions = cascade_regions(tables, [tables["LEVEL_STEPS"][i] for i in range(n)])
+    kids = cascade_children(tables, regions)
+    where = {s: (r, k) for r, reg in enumerate(regions) for k, s in enumerate(reg) if s >= 0}
+    return {"cascades": 2, "regions": [s for reg in regions for s in reg],
+            "step_region": [where[s][0] for s in range(n)],
+            "step_cascade": [where[s][1] for s in range(n)],
+            "step_streamed": [kids[s][0] for s in range(n)]}
 
 
 def _backsub_slots(program: Program) -> tuple[tuple[int, int, int], ...]:
