@@ -292,6 +292,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         cols = sorted((v.col + j, v.k, j) for v in b.variables for j in range(v.dim))
         blocks[-1].gram_col_var = [k for _, k, _ in cols]
         blocks[-1].gram_col_off = [j for _, _, j in cols]
+    beside = _beside_context(program, plan, blocks)
     # the state update's datapath per variable type: the plan's operators
     retract = {}
     for k in context["retracts"]:
@@ -323,7 +324,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "les": {"partials": les.add.latency, "add": les.add.latency,
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
-            "blocks": blocks, "network": network, "retract_hw": retract, "retire": retire,
+            "blocks": blocks, "beside": beside, "network": network, "retract_hw": retract,
+            "retire": retire,
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
             "small": shared,
@@ -332,6 +334,34 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "bs_slots": _backsub_slots(program),
             "cpe": plan.options.cpe, "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
+
+
+def _beside_context(program: Program, plan, blocks) -> dict | None:
+    """The HGC beside the elimination's tables and constants (units/cholesky.py's _beside:
+    the plan's phase hgc_beside names the streamed block type), None without it."""
+    name = next((p.name for ph in plan.phases if ph.name == "hgc_beside" for p in ph.processes),
+                None)
+    if name is None:
+        return None
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.cholesky import beside_layout
+    big = int(name.rsplit("_", 1)[1])
+    tables = _tables(program)
+    order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
+    lay = beside_layout(program, tables, order, big)
+    b = blocks[big]
+    reduce = next(p for ph in plan.phases if ph.name == "hgc_producer" for p in ph.processes
+                  if p.name == f"reduce_{big}")
+    ha = 2 if b.gram_pair else 1
+    if any(p * (p + 1) // 2 + q >= lay["nb"] for p, q in zip(b.gram_p + b.gram_pb,
+                                                            b.gram_q + b.gram_qb, strict=True)):
+        raise RuntimeError(f"internal error: block {big}'s Gram entries outside its packed Gram")
+    slots = ha + (1 if b.gram_pb else 0)
+    return {**lay, "block": big, "ha": ha, "slots": slots, "gii": reduce.loops[1].ii,
+            "steps": b.gram_steps, "count": len(lay["order"]),
+            "depth": lay["max_per_step"] * b.gram_steps, "rows_cycles": reduce.loops[0].cycles,
+            "pos_a": [p * (p + 1) // 2 + q for p, q in zip(b.gram_p, b.gram_q, strict=True)],
+            "pos_b": [p * (p + 1) // 2 + q for p, q in zip(b.gram_pb, b.gram_qb, strict=True)]}
 
 
 def _cascade_context(program: Program, plan) -> dict:

@@ -104,6 +104,7 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
 PHASE_TRIGGER = {"setup": "call", "factor_jacobian": "linearize", "gradient": "linearize",
                  "hgc": "linearize", "qr_stack": "solve", "qr": "solve", "qr_commit": "solve",
                  "backsub": "solve", "assemble": "solve", "cholesky": "solve", "store": "solve",
+                 "hgc_beside": "linearize", "reassemble": "resolve", "recholesky": "resolve",
                  "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
                  "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}
 

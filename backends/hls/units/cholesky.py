@@ -6,12 +6,22 @@ whole [H | g] (dense, or its envelope: "blocked") through one cascade."""
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cost.operators import OperatorTable
+from fgc_backends.hls.plan.cost import phase_cycles
 from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_loop
-from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
+from fgc_backends.hls.plan.model import (
+    Channel,
+    Loop,
+    Memory,
+    Phase,
+    PlanError,
+    Process,
+    Unit,
+)
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
 
@@ -363,6 +373,134 @@ def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
     return phases
 
 
+def beside_block(phases, program) -> int | None:
+    """The block type whose HGC runs beside the elimination (accel.cpp.jinja's
+    linearize_solve): the one with the longest ``hgc_level<b>`` region (the first of equals),
+    if it has instances and every one of them is some step's factor; None otherwise."""
+    cycles = {int(ph.name[len("hgc_level"):]): phase_cycles(ph) for ph in phases
+              if ph.name.startswith("hgc_level")}
+    if not cycles:
+        return None
+    big = max(sorted(cycles), key=lambda b: cycles[b])
+    return big if any(f.block == big for f in program.factors) else None
+
+
+def beside_layout(program, tables: dict, order: list[int], big: int) -> dict:
+    """Where block ``big``'s streamed Grams go (accel.cpp.jinja's tables of the HGC beside the
+    elimination): ``order`` (its factors in the order the elimination, LEVEL_STEPS ``order``,
+    reaches their steps, each step's in STEP_FACTORS order: the stream's), ``factor_stage``
+    (per factor its offset in a stage lane, -1 if not streamed), ``step_first`` /
+    ``step_count`` (per step its first streamed instance in the stream and how many), ``nb``
+    (a packed Gram's words, b^T b included: an entry the HGC may write, the assembly never
+    reads), ``n_stage`` (a lane's words), ``max_per_step``."""
+    fb, sf = tables["STEP_FACTOR_BEGIN"], tables["STEP_FACTORS"]
+    cb = tables["FACTOR_COLMAP_BEGIN"]
+    n_steps = len(order)
+    facs = {s: [sf[e] for e in range(fb[s], fb[s + 1]) if program.factors[sf[e]].block == big]
+            for s in order}
+    stream = [f for s in order for f in facs[s]]
+    if sorted(stream) != [i for i, f in enumerate(program.factors) if f.block == big]:
+        raise PlanError(f"block {big}: not every instance is one step's factor (the HGC "
+                        "beside the elimination streams each once)")
+    d = cb[stream[0] + 1] - cb[stream[0]]
+    nb = (d + 1) * (d + 2) // 2  # [A | b]'s packed lower triangle, b^T b included (as in GRAM)
+    factor_stage = [-1] * len(program.factors)
+    first, count = [0] * n_steps, [0] * n_steps
+    k = 0
+    for s in order:
+        first[s], count[s] = k, len(facs[s])
+        for j, f in enumerate(facs[s]):
+            factor_stage[f] = j * nb
+        k += len(facs[s])
+    most = max(count)
+    return {"order": stream, "factor_stage": factor_stage, "step_first": first,
+            "step_count": count, "nb": nb, "n_stage": most * nb, "max_per_step": most}
+
+
+def beside_ready(count: int, jac: Loop, rows: int, steps: int, ii: int, depth: int) -> list[int]:
+    """When the producer's instance k's Gram is complete, cycles after linearize_solve starts
+    (fgc_cycles.h's ready_chain): its entries start k II_jac + the datapath's depth + the rows'
+    loop (``rows`` cycles) after, or ``steps`` iterations of the entries loop (II ``ii``) after
+    the instance before's, whichever is later, and end (steps - 1) ii + ``depth`` later."""
+    out, prev = [], 0
+    for k in range(count):
+        start = k * jac.ii + jac.depth + rows
+        if k > 0:
+            start = max(start, prev + steps * ii)
+        out.append(start + (steps - 1) * ii + depth)
+        prev = start
+    return out
+
+
+def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: OperatorTable,
+                  timing: dict, lay: dict, relin: bool, steps: int, ii: int
+                  ) -> list[tuple[Phase, int | None]]:
+    """fgc_eliminate.h's cholesky_eliminate_beside, pass by pass: (the pass as a phase, the
+    producer's instance its Gram source waits for or None). Phase ``reassemble`` (the lanes'
+    parity loop), then the source alone (the first step's streamed Grams into stage lane 0), the
+    first step's assembly beside the source of the second, and as :func:`elimination_phases`'
+    passes (the assembler alone adding children: ``reassemble_level<j>``; a step's region:
+    ``recholesky_level<t>``) with, beside the region of step t, the source of step t + 2. The
+    source (``relin``: the first solve of a linearisation) takes a stream word every ``ii``
+    cycles (``steps`` an instance) or (a retry) two words of GRAM_B a cycle."""
+    odd = {s: t % 2 for t, s in enumerate(order)}
+    for e in range(len(tables["STEP_CHILDREN"])):
+        odd.setdefault(tables["STEP_CHILDREN"][e], 0)
+    move_depth = timing["move"][1]
+
+    def source(t: int) -> tuple[tuple[Process, ...], int | None]:
+        if t >= len(order) or not lay["step_count"][order[t]]:
+            return (), None
+        s = order[t]
+        n = lay["step_count"][s]
+        loop = (Loop("stream", n * steps, ii, move_depth) if relin
+                else kernel_loop("kept", -(-n * lay["nb"] // 2), "move", timing))
+        return (Process(f"gram_source{s}", "cpe", (loop,)),), (
+            lay["step_first"][s] + n - 1 if relin else None)
+
+    passes: list[tuple[Phase, int | None]] = [(Phase("reassemble", False, (
+        Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),),
+        linear=True), None)]
+    j = 0
+
+    def alone(procs, gate):
+        nonlocal j
+        passes.append((Phase(f"reassemble_level{j}", True, procs, linear=True), gate))
+        j += 1
+
+    alone(*source(0))
+    src, gate = source(1)
+    first = (Process("assemble_first", "cpe", tuple(assemble_loops(
+        tables, order[0], timing, odd=odd, par=0))),) if order else ()
+    alone(src + first, gate)
+    for t, s in enumerate(order):
+        alone((Process(f"assemble{s}", "cpe", tuple(assemble_loops(
+            tables, s, timing, grams=False, odd=odd, par=1 - odd[s]))),), None)
+        nxt = order[t + 1] if t + 1 < len(order) else -1
+        frontal, separator = dims[s]
+        src, gate = source(t + 2)
+        passes.append((Phase(f"recholesky_level{t}", True, (
+            *src,
+            Process(f"assembler{s}", "cpe", tuple(assembler_loops(tables, s, nxt, timing, odd))),
+            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
+                frontal, separator, cpe, ops, name=f"s{s}")))), linear=True), gate))
+    return passes
+
+
+def beside_cycles(producer: int, ready: list[int], passes, move_depth: int) -> tuple[int, int]:
+    """linearize_solve's cycles (fgc_cycles.h's beside_total): the later of the producer's end
+    (``producer``, its region's cycles) and the consumer's, its ``passes`` one after another,
+    a pass whose source waits for instance k ending no earlier than ``move_depth`` after
+    ``ready[k]``; and the cycles the consumer waited in all."""
+    t = waited = 0
+    for phase, gate in passes:
+        t += phase_cycles(phase)
+        if gate is not None and ready[gate] + move_depth > t:
+            waited += ready[gate] + move_depth - t
+            t = ready[gate] + move_depth
+    return max(producer, t), waited
+
+
 def cascade_regions(tables: dict, order: list[int]) -> list[tuple[int, int]]:
     """Two cascades (``unit_sets=2``): the steps ``order`` (LEVEL_STEPS) as regions of at most
     two independent steps, (cascade 0's step, cascade 1's), -1 for an idle cascade: consecutive
@@ -577,6 +715,44 @@ def cascades_of(program, opts) -> int:
     return max(1, min(sets, len(program.schedule.steps)))
 
 
+def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
+    """The HGC beside the elimination (accel.cpp.jinja's linearize_solve, fgc_eliminate.h's
+    cholesky_eliminate_beside): block ``big``'s region hgc_level<big> leaves the linearisation;
+    phase ``hgc_beside`` (once an iteration) is the producer (that region's loops, the
+    instances in step order) beside the first solve's elimination with its Gram source
+    (:func:`beside_cycles` on :func:`beside_passes`), and LM's retries re-solve from GRAM_B
+    (phases ``reassemble`` / ``recholesky_level<t>``, per rejection). Memories: the two stage
+    lanes, GRAM_B and the Gram stream (a step's words)."""
+    program, ops, tables, timing = ctx.program, ctx.les, ctx.tables, ctx.les_timing
+    at = next(k for k, (_, ph) in enumerate(ctx.phases) if ph.name == f"hgc_level{big}")
+    slot, region = ctx.phases[at]
+    procs = {p.name: p for p in region.processes}
+    jac = procs[f"factor_{big}_jacobian"].loops[0]
+    rows, entries = procs[f"reduce_{big}"].loops[:2]
+    lay = beside_layout(program, tables, order, big)
+    steps = entries.trip // len(lay["order"])
+    ready = beside_ready(len(lay["order"]), jac, rows.cycles, steps, entries.ii, entries.depth)
+    first = beside_passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps,
+                          entries.ii)
+    cycles, _ = beside_cycles(phase_cycles(region), ready, first, timing["move"][1])
+    # the producer's region stays in the plan for the record (per "beside": priced inside
+    # hgc_beside, not on its own)
+    ctx.phases[at:at + 1] = [(slot, Phase("hgc_beside", False, (Process(
+        f"linearize_solve_{big}", "cpe", (Loop("region", 1, 1, cycles),)),), linear=True)),
+        (slot, replace(region, name="hgc_producer", per="beside"))]
+    for phase, _ in beside_passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, False,
+                                  steps, entries.ii):
+        ctx.add_phase("solve", replace(phase, per="rejection"))
+    _, lane_b, _, paired = gram_config(program, big, ctx.opts.hgc_lanes,
+                                       jacobian_ii(region.processes),
+                                       jacobian_cycles(region.processes))
+    slots = (2 if paired else 1) + (1 if lane_b else 0)  # accel.cpp.jinja's GramWord
+    ctx.memories.append(Memory("stage", 2 * lay["n_stage"], ops.word_bits, 1))
+    ctx.memories.append(Memory("gram_kept", len(lay["order"]) * lay["nb"], ops.word_bits, 1))
+    ctx.channels.append(Channel("grams", "stream", lay["max_per_step"] * steps,
+                                slots * ops.word_bits, f"reduce_{big}", "gram_source"))
+
+
 def _frontal(ctx) -> None:
     """The emitted multifrontal Cholesky: per elimination step its frontal [H | g] streamed from
     its lane of HA into fgc_cpe.h's cpe_step (feed -> #CPE taps and CPEs -> drain per round of
@@ -629,11 +805,15 @@ def _frontal(ctx) -> None:
     tables, timing = ctx.tables, ctx.les_timing
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
     dims = {st.index: (st.frontal_dim, st.separator_dim) for st in program.schedule.steps}
-    if sets == 1:
+    big = (beside_block([ph for _, ph in ctx.phases], program)
+           if sets == 1 and ctx.les.word_bits == ctx.ops.word_bits else None)
+    if big is not None:
+        _beside(ctx, big, order, dims)
+    elif sets == 1:
         phases = elimination_phases(tables, order, dims, c, ops, timing)
     else:
         phases = cascades_phases(tables, order, dims, c, ops, timing)
-    for phase in phases:
+    for phase in phases if big is None else ():
         ctx.add_phase("solve", phase)
     # cholesky_overlap's stream, a pair of words wide, deep enough that the assembler (a pair a
     # cycle) never waits for the feed (a word a cycle): half a step's pairs and the feed's start
