@@ -36,8 +36,9 @@
 //
 // The HGC beside the elimination (FGC_BESIDE_PRODUCER, FGC_BESIDE_CONSUMER, FGC_BESIDE_END:
 // accel.cpp.jinja's linearize_solve, a producer writing a Gram stream beside the elimination
-// that reads it) takes the later of the producer's end (its records as span_total prices them)
-// and the consumer's: its records as span_total prices them, except that a pass after
+// that reads it) takes the later of the producer's end (its records as span_total prices them,
+// or its last instance's Gram if later: the HGC starts only after the datapath's first rows) and
+// the consumer's: its records as span_total prices them, except that a pass after
 // FGC_BESIDE_GATE(k, depth) (up to the FGC_JOIN that ends it) ends no earlier than `depth`
 // after the producer's k-th instance's Gram is complete; the producer reports those times
 // (cycles after the region's start) with FGC_BESIDE_READY - as units/cholesky.py's
@@ -359,10 +360,13 @@ inline long beside_total(std::size_t from, std::size_t to) {
     }
     if (p >= to || c >= to) return outer_total(from, to);
     long sum = outer_total(from, p);
-    const long producer = span_total(p, c);
+    long producer = span_total(p, c);
     std::vector<long> ready;
-    for (const auto& r : s.ready)
-        if (r.first >= p && r.first <= c) ready.push_back(r.second);
+    for (const auto& r : s.ready) {
+        if (r.first < p || r.first > c) continue;
+        ready.push_back(r.second);
+        if (r.second > producer) producer = r.second;  // its last Gram: no sooner
+    }
     long t = 0;
     std::size_t at = c;
     for (const auto& g : s.gates) {

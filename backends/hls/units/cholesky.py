@@ -489,10 +489,15 @@ def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: Ope
 
 def beside_cycles(producer: int, ready: list[int], passes, move_depth: int) -> tuple[int, int]:
     """linearize_solve's cycles (fgc_cycles.h's beside_total): the later of the producer's end
-    (``producer``, its region's cycles) and the consumer's, its ``passes`` one after another,
+    (``producer``, its region's cycles, or its last instance's ``ready``, if later) and the
+    consumer's, its ``passes`` one after another,
     a pass whose source waits for instance k ending no earlier than ``move_depth`` after
     ``ready[k]``; and the cycles the consumer waited in all."""
     t = waited = 0
+    # the producer's region: its slower process plus the other's fill, but no sooner than its
+    # last Gram (reduce_<b> starts only after the datapath's first rows, so where it is the
+    # slower process the fill rule under-prices it)
+    producer = max([producer, *ready])
     for phase, gate in passes:
         t += phase_cycles(phase)
         if gate is not None and ready[gate] + move_depth > t:
@@ -806,7 +811,8 @@ def _frontal(ctx) -> None:
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
     dims = {st.index: (st.frontal_dim, st.separator_dim) for st in program.schedule.steps}
     big = (beside_block([ph for _, ph in ctx.phases], program)
-           if sets == 1 and ctx.les.word_bits == ctx.ops.word_bits else None)
+           if ctx.opts.hgc_beside and sets == 1 and ctx.les.word_bits == ctx.ops.word_bits
+           else None)
     if big is not None:
         _beside(ctx, big, order, dims)
     elif sets == 1:
