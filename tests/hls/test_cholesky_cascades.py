@@ -64,7 +64,7 @@ def test_regions_pair_the_two_ends_of_a_chain(lio30):
 
 
 def test_two_cascades_price_the_ends_side_by_side(lio30):
-    one = plan_cost(accel_plan(lio30, HlsConfig(scalar="float")))
+    one = plan_cost(accel_plan(lio30, HlsConfig(scalar="float", hgc_beside=False)))
     two = plan_cost(accel_plan(lio30, HlsConfig(scalar="float", unit_sets=2)))
     dsp = dict(two.dsp_by_unit)
     assert dsp["cpe_set1"] == dict(one.dsp_by_unit)["cpe"]  # a second set of 15 CPEs

@@ -88,9 +88,13 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
             *(f"qr{s}_update{u}" for u in range(plan.options.units)),
             f"qr{s}_evaluate", f"qr{s}_collect"))
     else:
+        # the HGC beside the elimination: the Gram source beside the assembler (its Gram
+        # stream is the plan's channel "grams")
+        source = ("cholesky_gram_source",) if any(
+            ph.name == "hgc_beside" for ph in plan.phases) else ()
         procs = ("cpe_feed", *(p for i in range(plan.options.cpe)
                                for p in (f"cpe_tap{i}", f"cpe{i}")), "cpe_drain",
-                 "cholesky_assembler", "cholesky_cascade")
+                 *source, "cholesky_assembler", "cholesky_cascade")
     procs += ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
     if any(ch.name == "backsub_dx" for ch in plan.channels):  # the state update it feeds
         procs += ("backsub_slots", "backsub_retire")
