@@ -35,7 +35,8 @@ from fgc_backends.hls.reader.design import _design, _Reader
 # the files of the code around the units (issue 32's kernel helper); the QR unit's headers
 # (fgc_qr.h, fgc_eliminate.h's stacking) and the Cholesky cascade's (fgc_cpe.h) are counted apart
 AROUND = ("fgc_lm_units.h", "fgc_backsub.h")
-OWN_HEADERS = re.compile(r"qr\d+_(?:evaluate|update)|cpe(?:_set\d+)?")  # the units priced in their headers
+# the units priced in their headers (a second Cholesky cascade's CPEs: cpe_set1)
+OWN_HEADERS = re.compile(r"qr\d+_(?:evaluate|update)|cpe(?:_set\d+)?")
 
 
 def _dsp_of(tab) -> dict[str, int]:

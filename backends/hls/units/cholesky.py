@@ -397,7 +397,7 @@ def cascade_children(tables: dict, regions: list[tuple[int, int]]
     """Step -> (its streamed child or -1, its children added alone) with two cascades
     (:func:`cascade_regions`): a child its own cascade factored in the region just before is
     streamed (its update matrix added to the step's words as the source streams them into the
-    cascade, fgc_eliminate.h's cholesky_set_source: that NF lane is the source's to read); any
+    cascade, fgc_cascades.h's cholesky_set_source: that NF lane is the source's to read); any
     other (the other cascade's, or older) is added in a pass of its own before the step's
     region (its NF lane may be another process's in the region)."""
     where = {s: (r, k) for r, reg in enumerate(regions) for k, s in enumerate(reg) if s >= 0}
@@ -422,7 +422,7 @@ def _child_loop(tables: dict, c: int, timing: dict) -> Loop:
 
 def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
                     ops: OperatorTable, timing: dict) -> list[Phase]:
-    """cholesky_eliminate_sets' phases (fgc_eliminate.h, two cascades), passes of its one
+    """cholesky_eliminate_sets' phases (fgc_cascades.h, two cascades), passes of its one
     cholesky_sets region: phase ``assemble`` (the grams process alone: the first region's
     steps' Grams), then per region r of :func:`cascade_regions` (after a phase
     ``assemble_level<r>`` when a step of it has children added alone, :func:`cascade_children`:
@@ -586,7 +586,7 @@ def _frontal(ctx) -> None:
     :mod:`fgc_backends.hls.units.backsub`'s). Two cascades (:func:`cascades_of`): each with its
     own CPEs, feed and drain, assembler (two lanes of HA, streaming its step's streamed child
     in: two more adders), NF lanes and CONDBUF lanes, and a committer that copies the
-    conditionals into COND beside the next region (fgc_eliminate.h's cholesky_sets region)."""
+    conditionals into COND beside the next region (fgc_cascades.h's cholesky_sets region)."""
     program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
     sets = cascades_of(program, ctx.opts)
     sizes = ctx.sizes
