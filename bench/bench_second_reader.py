@@ -163,10 +163,12 @@ def main(argv=None) -> int:
         for cpe in cpes:
             program = compile_graph(imu.build(N=imu_n), name="imu",
                                     solver=SolverConfig(linear="cholesky", cpe=cpe))
-            t0 = time.perf_counter()
-            m = measure(program, HlsConfig(), Path(tmp) / f"imu_{cpe}")
-            rows.append((f"imu_window N={imu_n} Cholesky #CPE={cpe}", m,
-                         time.perf_counter() - t0))
+            for sets in (1, 2):  # one cascade, two side by side (fgc_cascades.h)
+                t0 = time.perf_counter()
+                m = measure(program, HlsConfig(unit_sets=sets), Path(tmp) / f"imu_{cpe}_{sets}")
+                rows.append((f"imu_window N={imu_n} Cholesky #CPE={cpe}"
+                             + (" x2 cascades" if sets == 2 else ""), m,
+                             time.perf_counter() - t0))
     print(f"{'design':42s} {'plan DSP':>9s} {'reader DSP':>10s} {'ratio':>6s} "
           f"{'BRAM36':>7s} {'cycles/it':>10s} {'II short':>8s} {'carried':>7s} "
           f"{'worst II':>8s} {'check_dsp':>9s} {'around':>6s} {'plan/reader DSP around':>22s}")
