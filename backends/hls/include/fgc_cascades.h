@@ -10,7 +10,7 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP, FACTOR_GRAM_OFF,
 // N_STEPS) and N_REGIONS, REGION_STEP, STEP_REGION, STEP_CASCADE, STEP_STREAMED (below); the
-// memories GRAM, COND, NF[4], HA0, HA1, HF0, HF1, CONDBUF[4]. CFG is the kernel's SetConfig:
+// memories GRAM, COND, NF[4], HA0, HA1, HF0, HF1, CONDBUF[4], DPIV[4], RMAX[4]. CFG is the kernel's SetConfig:
 // its LesConfig with N_COND the size of a CONDBUF lane (a step's conditional from 0).
 #ifndef FGC_CASCADES_H
 #define FGC_CASCADES_H
@@ -37,9 +37,12 @@ enum { CHOLESKY_SETS_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEP
 //                         words of a row a cycle each, each word cleared as read and its
 //                         streamed child's update-matrix word (from NF, where the drain left it
 //                         in the region before) added on the way: no pass adds that child;
-//   cholesky_set_cascade  x2: cpe_step on its step (its drain writes CONDBUF and NF);
+//   cholesky_set_cascade  x2: cpe_step's rounds on its step (fgc_cpe.h's cpe_rounds: its
+//                         drain writes CONDBUF and NF, its pivots and rows' largest |h| DPIV
+//                         and RMAX);
 //   cholesky_set_grams    the next region's steps' factor Grams into the other lanes;
-//   cholesky_set_commit   the region before's conditionals from CONDBUF into COND.
+//   cholesky_set_commit   the region before's conditionals from CONDBUF into COND, and their
+//                         pivot checks (fgc_cpe.h's cpe_check): off the cascade's path.
 // A step's other children (the other cascade's, or older) are added before its region by
 // cholesky_set_alone (sequential: it reads any NF lane).
 
@@ -244,24 +247,30 @@ void cholesky_set_source(int s0, int s1,
                c0 >= 0 || c1 >= 0 ? CFG::SCATTER_DEPTH : CFG::MOVE_DEPTH);
 }
 
-// A cascade's process: step s (-1: none) from src through cpe_step, its conditional into
-// cond (a CONDBUF lane, from 0), its update matrix into nfw.
+// A cascade's process: step s (-1: none) from src through cpe_step's rounds, its conditional
+// into cond (a CONDBUF lane, from 0), its update matrix into nfw, its pivots and rows' largest
+// |h| into dpiv, rmax (the committer checks them beside the next region); *unfit: the step is
+// outside the configuration (nothing computed).
 template <class CFG>
 void cholesky_set_cascade(int s, typename CFG::T mu,
                           hls::stream<fgc_units::cpe_pair<typename CFG::T> >& src,
                           typename CFG::T hf[CFG::MAX_W][CFG::MAX_COLS],
                           typename CFG::T cond[CFG::N_COND], typename CFG::T nfw[CFG::N_NF],
-                          bool* not_pd, bool* singular) {
+                          typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F],
+                          bool* not_pd, bool* unfit) {
     FGC_BRANCH();
     if (s < 0) return;
     const int w = STEP_W[s], f = STEP_F[s];
-    fgc_units::cpe_step<CFG>(src, hf, f, w - f, mu, cond, 0, nfw, STEP_NF_OFF[s], not_pd,
-                             singular);
+    *unfit = !fgc_units::cpe_rounds<CFG>(src, hf, f, w - f, mu, cond, 0, nfw, STEP_NF_OFF[s],
+                                         dpiv, rmax, not_pd);
 }
 
-// Step q's conditional (-1: none) from cb into COND, two words a cycle.
+// Step q's conditional (-1: none) from cb into COND, two words a cycle, then its pivot check
+// (fgc_cpe.h's cpe_check on its pivots dp and rows' largest |h| rm): *tiny, a pivot too small.
 template <class CFG>
-void cholesky_set_commit_one(int q, const typename CFG::T cb[CFG::N_COND]) {
+void cholesky_set_commit_one(int q, const typename CFG::T cb[CFG::N_COND],
+                             const typename CFG::T dp[CFG::MAX_F],
+                             const typename CFG::T rm[CFG::MAX_F], bool* tiny) {
     if (q < 0) return;
     const int n = STEP_F[q] * (STEP_W[q] + 1), c0 = STEP_COND_OFF[q];
     for (int k = 0; k < n; k += 2) {
@@ -272,23 +281,29 @@ void cholesky_set_commit_one(int q, const typename CFG::T cb[CFG::N_COND]) {
         }
     }
     FGC_CYCLES("assemble", 0, "cond", (n + 1) / 2, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    *tiny = fgc_units::cpe_check<CFG>(dp, rm, STEP_F[q]);
 }
 
-// The committer: the region before's steps q0, q1 (cascade 0's, 1's) into COND.
+// The committer: the region before's steps q0, q1 (cascade 0's, 1's) into COND, each checked
+// (*tiny0, *tiny1).
 template <class CFG>
 void cholesky_set_commit(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
-                         const typename CFG::T cb1[CFG::N_COND]) {
+                         const typename CFG::T cb1[CFG::N_COND],
+                         const typename CFG::T dp0[CFG::MAX_F], const typename CFG::T rm0[CFG::MAX_F],
+                         const typename CFG::T dp1[CFG::MAX_F], const typename CFG::T rm1[CFG::MAX_F],
+                         bool* tiny0, bool* tiny1) {
 #pragma HLS ALLOCATION function instances=cholesky_set_commit_one<CFG> limit=1
     FGC_BRANCH();
-    cholesky_set_commit_one<CFG>(q0, cb0);
-    cholesky_set_commit_one<CFG>(q1, cb1);
+    cholesky_set_commit_one<CFG>(q0, cb0, dp0, rm0, tiny0);
+    cholesky_set_commit_one<CFG>(q1, cb1, dp1, rm1, tiny1);
 }
 
 // The region: steps s0, s1 factored (their words streamed out of ha0s, ha1s, their streamed
 // children read from nf0r, nf1r; conditionals into cb0w, cb1w, update matrices into nf0w,
 // nf1w) beside the next region's Grams (n0, n1 into ha0n, ha1n) and the region before's
-// conditionals (q0, q1 from cb0r, cb1r into COND). *badk: cascade k's step was singular
-// (*npdk: not positive definite).
+// conditionals (q0, q1 from cb0r, cb1r into COND, their pivots checked from the DPIV / RMAX
+// lanes d0r, r0r, d1r, r1r: *tinyk; the cascades' into d0w, r0w, d1w, r1w). *npdk: cascade
+// k's step was not positive definite; *unfitk: outside the configuration.
 template <class CFG>
 void cholesky_sets(int s0, int s1, int n0, int n1, int q0, int q1, typename CFG::T mu,
                    typename CFG::T ha0s[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
@@ -299,7 +314,12 @@ void cholesky_sets(int s0, int s1, int n0, int n1, int q0, int q1, typename CFG:
                    typename CFG::T nf0w[CFG::N_NF], typename CFG::T nf1w[CFG::N_NF],
                    typename CFG::T cb0w[CFG::N_COND], typename CFG::T cb1w[CFG::N_COND],
                    const typename CFG::T cb0r[CFG::N_COND], const typename CFG::T cb1r[CFG::N_COND],
-                   bool* npd0, bool* npd1, bool* bad0, bool* bad1) {
+                   typename CFG::T d0w[CFG::MAX_F], typename CFG::T r0w[CFG::MAX_F],
+                   typename CFG::T d1w[CFG::MAX_F], typename CFG::T r1w[CFG::MAX_F],
+                   const typename CFG::T d0r[CFG::MAX_F], const typename CFG::T r0r[CFG::MAX_F],
+                   const typename CFG::T d1r[CFG::MAX_F], const typename CFG::T r1r[CFG::MAX_F],
+                   bool* npd0, bool* npd1, bool* unfit0, bool* unfit1, bool* tiny0,
+                   bool* tiny1) {
 #pragma HLS DATAFLOW
     enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
     hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal0;
@@ -308,9 +328,11 @@ void cholesky_sets(int s0, int s1, int n0, int n1, int q0, int q1, typename CFG:
 #pragma HLS STREAM variable=frontal1 depth=DEPTH
     cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
     cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n);
-    cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, npd0, bad0);
-    cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, npd1, bad1);
-    cholesky_set_commit<CFG>(q0, q1, cb0r, cb1r);
+    cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
+                              unfit0);
+    cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
+                              unfit1);
+    cholesky_set_commit<CFG>(q0, q1, cb0r, cb1r, d0r, r0r, d1r, r1r, tiny0, tiny1);
     FGC_DRAINED(&frontal0, 1);  // csim only (fgc_cycles.h)
     FGC_DRAINED(&frontal1, 1);
 }
@@ -373,6 +395,8 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
 #pragma HLS ARRAY_PARTITION variable=HA1 complete dim=4
 #pragma HLS ARRAY_PARTITION variable=NF complete dim=1
 #pragma HLS ARRAY_PARTITION variable=CONDBUF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
+#pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
     FGC_EVENT("solve");
     bool ok = true;
 #pragma HLS ALLOCATION function instances=cholesky_sets<CFG> limit=1
@@ -390,18 +414,21 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
         const bool pv = j >= 1;
         const int q0 = pv ? REGION_STEP[2 * j - 2] : -1, q1 = pv ? REGION_STEP[2 * j - 1] : -1;
         FGC_PHASE(j < 0 ? "assemble" : "cholesky");
-        bool npd0 = false, npd1 = false, bad0 = false, bad1 = false;
+        bool npd0 = false, npd1 = false, unfit0 = false, unfit1 = false;
+        bool tiny0 = false, tiny1 = false;
         if ((j & 1) == 0) {
             cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[0], HA1[0], HA0[1], HA1[1],
                                NF[1], NF[3], NF[0], NF[2], CONDBUF[0], CONDBUF[2], CONDBUF[1],
-                               CONDBUF[3], &npd0, &npd1, &bad0, &bad1);
+                               CONDBUF[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2], DPIV[1], RMAX[1],
+                               DPIV[3], RMAX[3], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         } else {
             cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[1], HA1[1], HA0[0], HA1[0],
                                NF[0], NF[2], NF[1], NF[3], CONDBUF[1], CONDBUF[3], CONDBUF[0],
-                               CONDBUF[2], &npd0, &npd1, &bad0, &bad1);
+                               CONDBUF[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3], DPIV[0], RMAX[0],
+                               DPIV[2], RMAX[2], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         }
         FGC_JOIN();
-        ok = ok && !bad0 && !bad1;
+        ok = ok && !npd0 && !npd1 && !unfit0 && !unfit1 && !tiny0 && !tiny1;
     }
     return ok;
 }
