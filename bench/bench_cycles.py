@@ -125,6 +125,14 @@ def cases():
     # the fastest LIO design that fits (issue 33): the HGC's two lanes on a 21-row block
     out.append(("LIO N=30 Cholesky #CPE=15", lio.build(N=30),
                 SolverConfig(method="gn", linear="cholesky", cpe=15, precision="float32")))
+    # two cascades side by side (unit_sets=2, fgc_cascades.h): LIO's fastest design that fits,
+    # and imu_window's with a cascade of three rounds a step
+    out.append(("LIO N=30 Cholesky #CPE=15 x2", lio.build(N=30),
+                SolverConfig(method="gn", linear="cholesky", cpe=15, precision="float32"),
+                HlsConfig(scalar="float", unit_sets=2)))
+    out.append(("imu_window N=20 Cholesky #CPE=5 x2", imu_window.build(N=20),
+                SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
+                HlsConfig(scalar="float", unit_sets=2)))
     return out
 
 

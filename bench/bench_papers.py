@@ -71,6 +71,7 @@ class Config:
     # a step fills)
     lio_cpes: tuple[int, ...] = (5, 10, 15, 20, 80)
     cpes: tuple[int, ...] = (5, 20, 40, 80, 120)
+    cascades: tuple[int, ...] = (1, 2)  # Cholesky: one cascade, or two side by side
     c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/cost/params.py)
     gtsam_iterations: int = 5
     gtsam_repeats: int = 5
@@ -107,7 +108,7 @@ def best_design(programs: dict, cfg: Config, linears=("qr", "cholesky")):
     """The design-space search (fgc.app.search) over ``programs``: the fastest design that fits
     the xc7z045 as re-priced (DSP = max(plan, second reader), BRAM36 from the plan)."""
     space = Space(linears=linears, units=cfg.units, unit_sets=cfg.unit_sets,
-                  cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes,
+                  cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes, cascades=cfg.cascades,
                   alloc_scales=cfg.alloc_scales)
     return search(programs, space, max_reads=cfg.reads, reader=cfg.reads > 0,
                   progress=_progress)
@@ -327,12 +328,19 @@ def paper_b(cfg: Config) -> list[Row]:
     b = f"B (IMU N={cfg.imu_n})"
     result = best_design({"cholesky": prog}, cfg, linears=("cholesky",))
     print("\n".join(result.lines()))
-    by_cpe = {r.candidate.cpe: r for r in result.rows if r.candidate.alloc_scale == 1}
+    by_cpe = {}  # per #CPE the fastest design that fits (one or two cascades), else the fastest
+    for r in result.rows:
+        if r.candidate.alloc_scale != 1:
+            continue
+        had = by_cpe.get(r.candidate.cpe)
+        if had is None or ((r.verdict == "fits", -r.cycles) > (had.verdict == "fits", -had.cycles)):
+            by_cpe[r.candidate.cpe] = r
     floor = latency_floor(prog, build_plan(prog, PlanOptions.of(prog)).ops)
     lo_hi = (by_cpe[cfg.cpes[0]].cycles / by_cpe[cfg.cpes[-1]].cycles)
     rows = [Row(b, "latency per solve at #CPE " + " / ".join(map(str, cfg.cpes))
                 + " (re-priced fit)", "171 ms (5) / 8.97 ms (120)",
-                " / ".join(f"#CPE={c} {by_cpe[c].latency_ms * iters:.2f} ms "
+                " / ".join(f"#CPE={c}{' x2' if by_cpe[c].candidate.unit_sets else ''} "
+                           f"{by_cpe[c].latency_ms * iters:.2f} ms "
                            f"({by_cpe[c].verdict}: {by_cpe[c].bound})" for c in cfg.cpes)
                 + f" ({iters} LM iterations; {cfg.cpes[0]} → {cfg.cpes[-1]} CPEs "
                 f"{lo_hi:.2f}×; best that fits: "

@@ -73,9 +73,15 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
             loops.append(Loop(f"{name}_back{r}", (k * (k + 1) // 2 + k + 1) // 2, 1, 2))
     if frontal == 0:
         loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 2))
-    loops.append(Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2))
-    loops.append(Loop(f"{name}_pivot_check", 1 if frontal else 0, 1, ops.div.latency + 2))
-    return loops
+    return loops + cpe_check_loops(frontal, ops, name)
+
+
+def cpe_check_loops(frontal: int, ops: OperatorTable, name: str = "s") -> list[Loop]:
+    """fgc_cpe.h's cpe_check (the end of cpe_step): the singularity scale with the smallest
+    pivot beside it (trip f, depth Lm + Ld + 2) and the pivot check (the smallest pivot over
+    the scale: trip 1, depth Ld + 2)."""
+    return [Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2),
+            Loop(f"{name}_pivot_check", 1 if frontal else 0, 1, ops.div.latency + 2)]
 
 
 def _gram_rows(block) -> dict[tuple[int, int], tuple[int, ...]]:
@@ -540,7 +546,7 @@ def cascade_children(tables: dict, regions: list[tuple[int, int]]
     """Step -> (its streamed child or -1, its children added alone) with two cascades
     (:func:`cascade_regions`): a child its own cascade factored in the region just before is
     streamed (its update matrix added to the step's words as the source streams them into the
-    cascade, fgc_eliminate.h's cholesky_set_source: that NF lane is the source's to read); any
+    cascade, fgc_cascades.h's cholesky_set_source: that NF lane is the source's to read); any
     other (the other cascade's, or older) is added in a pass of its own before the step's
     region (its NF lane may be another process's in the region)."""
     where = {s: (r, k) for r, reg in enumerate(regions) for k, s in enumerate(reg) if s >= 0}
@@ -565,18 +571,20 @@ def _child_loop(tables: dict, c: int, timing: dict) -> Loop:
 
 def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
                     ops: OperatorTable, timing: dict) -> list[Phase]:
-    """cholesky_eliminate_sets' phases (fgc_eliminate.h, two cascades), passes of its one
+    """cholesky_eliminate_sets' phases (fgc_cascades.h, two cascades), passes of its one
     cholesky_sets region: phase ``assemble`` (the grams process alone: the first region's
     steps' Grams), then per region r of :func:`cascade_regions` (after a phase
     ``assemble_level<r>`` when a step of it has children added alone, :func:`cascade_children`:
     a scatter loop each) the region ``cholesky_level<r>``: per cascade its step's ``cpe_step``
-    (:func:`cpe_step_loops`); the source (the streamed children's separator maps into
-    registers, ``move``, trip the larger separator; both steps' words two of a row a cycle
+    rounds (:func:`cpe_step_loops` but its check); the source (the streamed children's
+    separator maps into registers, ``move``, trip the larger separator; both steps' words two
+    of a row a cycle
     each, trip the larger step's :func:`cpe_pairs`, ``move``, or ``scatter`` with a streamed
     child's words added); the grams process (the next region's steps' Grams into the other
     lanes, :func:`assemble_loops`); the committer (the region before's conditionals from
-    CONDBUF into COND, two words a cycle); last ``cholesky_level<regions>``: the committer
-    alone on the last region's."""
+    CONDBUF into COND, two words a cycle, each step's pivot check after its copy,
+    :func:`cpe_check_loops`: off the cascade's path); last ``cholesky_level<regions>``: the
+    committer alone on the last region's."""
     regions = cascade_regions(tables, order)
     kids = cascade_children(tables, regions)
     sw, sf = tables["STEP_W"], tables["STEP_F"]
@@ -585,9 +593,10 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
         return tuple(lp for s in reg if s >= 0
                      for lp in assemble_loops(tables, s, timing, children=False))
 
-    def commit(reg):
-        return tuple(kernel_loop(f"cond{s}", -(-sf[s] * (sw[s] + 1) // 2), "move", timing)
-                     for s in reg if s >= 0)
+    def commit(reg):  # each conditional copied, then its pivots checked (cpe_check)
+        return tuple(lp for s in reg if s >= 0 for lp in (
+            kernel_loop(f"cond{s}", -(-sf[s] * (sw[s] + 1) // 2), "move", timing),
+            *cpe_check_loops(sf[s], ops, name=f"s{s}")))
 
     phases = [Phase("assemble", False, (Process("grams", "cpe", grams(regions[0])),)
                     if regions else (), linear=True)]
@@ -606,7 +615,7 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
                 frontal, separator = dims[s]
                 procs.append(Process(f"cascade{s}", "cpe", (
                     Loop(f"s{s}_fill", 0, 1, ops.add.latency + 2),
-                    *cpe_step_loops(frontal, separator, cpe, ops, name=f"s{s}"))))
+                    *cpe_step_loops(frontal, separator, cpe, ops, name=f"s{s}")[:-2])))
         streamed = [kids[s][0] for s in reg if s >= 0 and kids[s][0] >= 0]
         source = [kernel_loop("inv", max(sw[c] - sf[c] for c in streamed), "move", timing)
                   ] if streamed else []
@@ -767,7 +776,7 @@ def _frontal(ctx) -> None:
     :mod:`fgc_backends.hls.units.backsub`'s). Two cascades (:func:`cascades_of`): each with its
     own CPEs, feed and drain, assembler (two lanes of HA, streaming its step's streamed child
     in: two more adders), NF lanes and CONDBUF lanes, and a committer that copies the
-    conditionals into COND beside the next region (fgc_eliminate.h's cholesky_sets region)."""
+    conditionals into COND beside the next region (fgc_cascades.h's cholesky_sets region)."""
     program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
     sets = cascades_of(program, ctx.opts)
     sizes = ctx.sizes
@@ -796,9 +805,10 @@ def _frontal(ctx) -> None:
                               (("add", 1), ("mul", 2), ("div", 1))))
     # the feed's adder (mu on the diagonal), the singularity scale's multiplier and divider and
     # the check's divider (the smallest pivot over the scale): one operator of each a loop or
-    # statement (cpe_step's sequential code)
-    ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", sets,
-                          (("add", 1), ("mul", 1), ("div", 2))))
+    # statement (cpe_step's sequential code); two cascades: a feed each, one check (the
+    # committer's, fgc_cascades.h: one copy of cholesky_set_commit_one)
+    ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
+                          (("add", sets), ("mul", 1), ("div", 2))))
     # fgc_eliminate.h's assembly: the further factors' and the children's entries added
     # through one pipelined HA += loop at II 1 (cholesky_assemble_adds, one call site: the
     # assembler's, which also takes the first step's Grams in a region with no step to factor):
@@ -841,9 +851,10 @@ def _frontal(ctx) -> None:
                                    sizes["MAX_W"] * cols, ops.word_bits, 1))
         ctx.memories.append(Memory("trailing" if k == 0 else f"trailing{k}",
                                    sizes["MAX_W"] * cols, ops.word_bits, 1))
-    if sets > 1:
+    if sets > 1:  # CONDBUF, and DPIV / RMAX (each step's pivots and rows' largest |h|)
         ctx.memories.append(Memory("condbuf", 2 * sets * sizes["MAX_F"] * cols, ops.word_bits,
                                    1))
+        ctx.memories.append(Memory("pivots", 2 * 2 * sets * sizes["MAX_F"], ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)
 
 
