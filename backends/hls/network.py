@@ -82,8 +82,9 @@ def counts(kernel: str, units: str, backsub: str) -> tuple[int, int]:
     kernel's unit-set region (QR: how many unit sets run side by side; Cholesky: one cascade)
     times the unit header's innermost region (one reflection, one CPE round) with the kernel's
     N_UNITS / N_CPE (Cholesky: and the overlap region the kernel uses, with the HGC beside the
-    elimination the Gram stream of its linearize_solve) - and back-substitution's regions in its header ``backsub``
-    (:func:`backsub_region`: their process calls and any streams they declare)."""
+    elimination the Gram stream of its linearize_solve) - and back-substitution's regions in its
+    header ``backsub`` (:func:`backsub_region`: their process calls and any streams they
+    declare)."""
     const = {k: int(v) for k, v in _CONSTANT.findall(kernel)}
     cfg = {f"CFG::{k}": v for k, v in const.items()}
     sets = next((len(r.processes) for r in read_network(kernel) if r.function == "qr_level"), 1)
