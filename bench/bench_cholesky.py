@@ -9,6 +9,8 @@ share.
 
     python bench/bench_cholesky.py
     python bench/bench_cholesky.py --cascades 2    # the two-cascade designs only
+    python bench/bench_cholesky.py --before        # the HGC before the elimination (one
+                                                   # cascade: hgc_beside off)
 
 Model estimates at 143 MHz, float32 (no vendor tool here).
 """
@@ -32,7 +34,7 @@ from fgc_backends.hls.plan import plan_cost, plan_groups  # noqa: E402
 
 CASES = [("lio", 30, c) for c in (5, 10, 15, 20, 80)] + [("imu_window", 50, c)
                                                           for c in (5, 20, 40, 80, 120)]
-GROUPS = ("factor_jacobian", "hgc", "assemble", "cholesky", "backsub")
+GROUPS = ("factor_jacobian", "hgc", "hgc_beside", "assemble", "cholesky", "backsub")
 
 
 def main() -> None:
@@ -40,11 +42,13 @@ def main() -> None:
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--cascades", type=int, nargs="+", choices=(1, 2), default=(1, 2))
+    parser.add_argument("--before", action="store_true",
+                        help="every block type's HGC before the elimination (hgc_beside off)")
     args = parser.parse_args()
     for (ex, n, cpe), sets in ((c, k) for c in CASES for k in args.cascades):
         program = compile_graph(example(ex).build(N=n), SolverConfig(
             method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"{ex}{cpe}")
-        config = HlsConfig(scalar="float", unit_sets=sets)
+        config = HlsConfig(scalar="float", unit_sets=sets, hgc_beside=not args.before)
         plan = accel_plan(program, config)
         cost, groups = plan_cost(plan), plan_groups(plan)
         with tempfile.TemporaryDirectory() as d:

@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   50 processes, 64 streams (cpe=20)
+//   51 processes, 64 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
 //   process cpe0
@@ -53,6 +53,7 @@
 //   process cpe_tap19
 //   process cpe19
 //   process cpe_drain
+//   process cholesky_gram_source
 //   process cholesky_assembler
 //   process cholesky_cascade
 //   process backsub_set0
@@ -2178,12 +2179,12 @@ bool gram_entries_two(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const 
     return finite;
 }
 
-// gram_entries_stream: gram_entries (LANES_A = 1, ENTRIES_B = 0), gram_entries_two (LANES_A = 1)
-// or gram_entries_pair (LANES_A = 2, GII = 2) of the first n instances of INST, their entries not into
+// gram_entries_stream: gram_entries (A_PER = 1, ENTRIES_B = 0), gram_entries_two (A_PER = 1)
+// or gram_entries_pair (A_PER = 2, GII = 2) of the first n instances of INST, their entries not into
 // GRAM but a word an iteration into `grams` (the Gram source of the elimination puts them in
 // place); the gradient and the finiteness check as gram_store's.
 template <int PADDED, int ROWS, int COLS, int ENTRIES, int ENTRIES_B, int K, int STEPS, int N,
-          int GII, int LANES_A, int SLOTS>
+          int GII, int A_PER, int SLOTS>
 bool gram_entries_stream(hls::stream<GramRow>& rows, hls::stream<GramWord>& grams,
                          T ab[2][ROWS * PADDED], int n, const int INST[N], const int P[ENTRIES],
                          const int Q[ENTRIES], const int PB[ENTRIES_B > 0 ? ENTRIES_B : 1],
@@ -2200,9 +2201,9 @@ bool gram_entries_stream(hls::stream<GramRow>& rows, hls::stream<GramWord>& gram
         if (e < ROWS && i + 1 < n) gram_next_row<PADDED, ROWS>(rows, ab[1 - cur], e);
         GramWord word;
         for (int h = 0; h < SLOTS; ++h) word.v[h] = L(0);
-        for (int h = 0; h < LANES_A; ++h) {  // lane A
-            if (LANES_A * e + h < ENTRIES) {
-                const int p = P[LANES_A * e + h], q = Q[LANES_A * e + h];
+        for (int h = 0; h < A_PER; ++h) {  // lane A
+            if (A_PER * e + h < ENTRIES) {
+                const int p = P[A_PER * e + h], q = Q[A_PER * e + h];
                 const L v = gram_entry<PADDED, ROWS, ROWS>(ab[cur], p, q);
                 gram_gradient<ROWS, COLS, N>(INST, CV, CO, i, p, q, v, finite);
                 word.v[h] = v;
