@@ -125,3 +125,22 @@ def test_counted_cycles_equal_the_plan_and_the_result_the_simulator(lio5, tmp_pa
     assert result.status == reference.status
     assert abs(result.final_error - reference.final_error) <= 1e-9 * max(
         1.0, reference.final_error)
+
+
+# heavy (about 50 s on 2 cores): LM's retries at a raised mu re-solve from GRAM_B
+@pytest.mark.heavy
+def test_lms_retries_resolve_from_the_kept_grams_as_priced():
+    """imu_window N = 50, LM, float32 (#CPE = 5): float32 Cholesky fails its first solves there
+    (κ past 1/√eps32), so LM raises mu and re-solves the same linearisation (event resolve) from
+    the Grams the Gram source kept in GRAM_B: the retry phases count what the plan prices.
+    (backsub: the plan prices it per solve, a failed solve skips it - as before.)"""
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import measure
+
+    solver = SolverConfig(method="lm", linear="cholesky", cpe=5, precision="float32")
+    phases, events = measure("t", example("imu_window").build(N=50), solver)
+    assert events.get("resolve", 0) >= 1
+    assert phases["recholesky"][0] > 0 and phases["reassemble"][0] > 0
+    for g in ("hgc", "hgc_beside", "reassemble", "recholesky"):
+        counted, model = phases[g]
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
