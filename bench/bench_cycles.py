@@ -15,12 +15,14 @@ and calls the counting build counted (FGC_EVENT). So the comparison checks the c
 execution, not how many iterations the solver took. Gauss-Newton, float32 Program, float design.
 
     python bench/bench_cycles.py
+    python bench/bench_cycles.py --only Cholesky    # the configurations whose name holds it
 """
 
 from __future__ import annotations
 
 import re
 import subprocess
+import sys
 import tempfile
 import warnings
 from pathlib import Path
@@ -99,8 +101,9 @@ def measure(name, graph, solver, config: HlsConfig | None = None):
     return phases, events
 
 
-ORDER = ("setup", "factor_jacobian", "gradient", "hgc", "qr_stack", "qr", "qr_commit",
-         "assemble", "cholesky", "store", "backsub", "state_update", "factor_cost",
+ORDER = ("setup", "factor_jacobian", "gradient", "hgc", "hgc_beside", "qr_stack", "qr",
+         "qr_commit", "assemble", "cholesky", "reassemble", "recholesky", "store", "backsub",
+         "state_update", "factor_cost",
          "lm_iteration", "lm_control", "lm_accept", "rounding_noise")
 
 
@@ -137,8 +140,12 @@ def cases():
 
 
 def main() -> None:
+    # --only WORD: the configurations whose name holds WORD (e.g. Cholesky)
+    only = sys.argv[sys.argv.index("--only") + 1] if "--only" in sys.argv else ""
     summary = []
     for name, graph, solver, *config in cases():
+        if only not in name:
+            continue
         phases, events = measure(name, graph, solver, *config)
         print(f"{name}   (runs: " + ", ".join(f"{k} {v}" for k, v in sorted(events.items()))
               + ")")
