@@ -1,7 +1,8 @@
 """The HGC beside the elimination (issue 33; units/cholesky.py's _beside, accel.cpp.jinja's
 linearize_solve, fgc_eliminate.h's cholesky_eliminate_beside): the replay's arithmetic by hand,
 the streamed block type's layout, the emitted region, and (C simulation) the counted cycles equal
-to the plan and the result equal to the simulator."""
+to the plan, LM's retries among them (heavy); the result equal to the simulator's is
+test_hls_csim's (its Cholesky cases emit this design)."""
 
 from __future__ import annotations
 
@@ -12,10 +13,8 @@ import pytest
 
 from fgc.app.specs import example
 from fgc.compile import compile_graph
-from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
-from fgc_backends import sim
-from fgc_backends.hls import HlsConfig, emit, run_csim
+from fgc_backends.hls import HlsConfig, emit
 from fgc_backends.hls.config import DesignOptions
 from fgc_backends.hls.emitter import accel_plan
 from fgc_backends.hls.network import read_network
@@ -103,10 +102,11 @@ def test_the_emitted_region_holds_the_producer_beside_the_elimination(lio5, tmp_
         "cholesky_gram_source", "cholesky_assembler", "cholesky_cascade"]
 
 
-def test_counted_cycles_equal_the_plan_and_the_result_the_simulator(lio5, tmp_path):
+def test_counted_cycles_equal_the_plan():
     """LIO N=5, LM, float32: every phase group's counted cycles (hgc_beside among them: the
     producer beside the elimination's passes, each gated by its step's last Gram) equal the
-    plan's, within 2 %; in double, the C simulation's result equals the simulator's (1e-9)."""
+    plan's, within 2 %. (The C simulation's result equal to the simulator's: test_hls_csim's
+    Cholesky cases, which emit this design.)"""
     sys.path.insert(0, str(ROOT / "bench"))
     from bench_cycles import measure
 
@@ -115,16 +115,6 @@ def test_counted_cycles_equal_the_plan_and_the_result_the_simulator(lio5, tmp_pa
     assert phases["hgc_beside"][0] > 0 and events["solve"] >= events["linearize"]
     for g, (counted, model) in phases.items():
         assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
-    graph = lio.build(N=5)
-    program = compile_graph(graph, SolverConfig(method="lm", linear="cholesky", cpe=3),
-                            name="d5")
-    project = emit(program, tmp_path / "d", HlsConfig(scalar="double"))
-    data = problem_data(graph, program)
-    reference = sim.run(program, data, precision="float64")
-    result = run_csim(project, program, data, reference)
-    assert result.status == reference.status
-    assert abs(result.final_error - reference.final_error) <= 1e-9 * max(
-        1.0, reference.final_error)
 
 
 # heavy (about 50 s on 2 cores): LM's retries at a raised mu re-solve from GRAM_B
