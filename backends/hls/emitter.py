@@ -311,7 +311,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
-    option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}"
+    option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}" + (
+        ", 2 cascades" if any(u.name == "cpe_set1" for u in plan.units) else "")
     network = [f"{len(procs)} processes, {len(streams)} streams ({option})"]
     network += [f"process {p}" for p in procs]
     network += [f"stream {ch.name} depth={ch.depth}: {ch.producer} -> {ch.consumer}"
