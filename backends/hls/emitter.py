@@ -312,7 +312,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
-    option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}"
+    option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}" + (
+        ", 2 cascades" if any(u.name == "cpe_set1" for u in plan.units) else "")
     network = [f"{len(procs)} processes, {len(streams)} streams ({option})"]
     network += [f"process {p}" for p in procs]
     network += [f"stream {ch.name} depth={ch.depth}: {ch.producer} -> {ch.consumer}"
@@ -332,6 +333,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
             "bs_slots": _backsub_slots(program),
+            # per slot: the loaded separator's offset in the loading lane's last solution (-1:
+            # from DELTA)
+            "bs_xoff": _backsub_xoff(program),
             "cpe": plan.options.cpe, "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
 
@@ -390,6 +394,12 @@ def _backsub_slots(program: Program) -> tuple[tuple[int, int, int], ...]:
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.backsub import backsub_slots
     return backsub_slots(_tables(program))
+
+
+def _backsub_xoff(program: Program) -> tuple[int, ...]:
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.backsub import backsub_xoff
+    return backsub_xoff(_tables(program))
 
 
 def for_program(program: Program, config: HlsConfig) -> HlsConfig:

@@ -147,19 +147,20 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # (1 + ⌈log₂ 8⌉), div 15) + the scaling mul 3 = 19 deep: 21; the triangle's columns 2 and 1
     # each padded to the chain mul + add = 7, plus one: 16 iterations 2 mul + add = 10 deep: 25;
     # x_0 a move 1 -> 47) and its 3 unknowns out (2 + 1: 3) -> 50; A needs them, so slot 2 loads
-    # it alone: its separator in (3) and 7 + 6 + 5 = 18 words (8 + 9 = 17) -> 20; slot 3: B's
-    # separator in (3), then A's solve and solution out (50) beside B's load (17), the slower
-    # plus the other's fill (9) -> 62; slot 4 solves B -> 50: the slots end at 13, 63, 83, 145,
-    # 195. Beside them the state update (backsub_retire: a variable an iteration at II 24, 2 +
-    # depth deep: a step's 3 words in, a pair a cycle, then the datapath) retracts the root at
-    # 63, A when it is sent at 145, B at 195: it ends at 195 + 2 + depth, which the phase adds
-    # after the slots
+    # it alone: its separator in (3) and 7 + 6 + 5 = 18 words (8 + 9 = 17) -> 20; slot 3: A's
+    # solve and solution out (50) beside B's load (17), the slower plus the other's fill (9)
+    # -> 59 (B loads into lane 0, whose last solve is the root: its separator is read from that
+    # lane's solution, no copy in from DELTA); slot 4 solves B -> 50: the slots end at 13, 63,
+    # 83, 142, 192. Beside them the state update (backsub_retire: a variable an iteration at
+    # II 24, 2 + depth deep: a step's 3 words in, a pair a cycle, then the datapath) retracts
+    # the root at 63, A when it is sent at 142, B at 192: it ends at 192 + 2 + depth, which the
+    # phase adds after the slots
     plan_phase = {ph.name: ph for ph in plan.phases}["backsub"]
     slots, retire = plan_phase.processes
     sizes = [sum(lp.cycles for lp in slots.loops[2 * k:2 * k + 2]) for k in range(5)]
-    assert sizes == [13, 50, 20, 62, 50] and len(slots.loops) == 10
+    assert sizes == [13, 50, 20, 59, 50] and len(slots.loops) == 10
     assert retire.loops[0].cycles == 2 + depth
-    assert phases["backsub"] == 195 + 2 + depth
+    assert phases["backsub"] == 192 + 2 + depth
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub")))

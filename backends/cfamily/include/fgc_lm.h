@@ -31,8 +31,8 @@
 // on X_TRIAL). In Vitis every call site of a function not inlined is its own RTL instance, so
 // the two hooks would build every cost datapath twice; try_steps and the HLS kernel's cost
 // hooks are INLINE (their calls land in optimize's body) and optimize's ALLOCATION limits
-// total_cost to one instance there: both calls share it (they never run at once). The native
-// compiler ignores the HLS pragmas.
+// total_cost to one instance there: both calls share it (they never run at once). A caller of
+// optimize_inline carries that ALLOCATION itself. The native compiler ignores the HLS pragmas.
 #ifndef FGC_LM_H
 #define FGC_LM_H
 
@@ -90,12 +90,12 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
     return Step<T>{2, CFG::REASON_LAMBDA_LIMIT, cost, T(0)};
 }
 
+// optimize's body, INLINE: a kernel that runs its linearisation or elimination again after LM
+// (the on-chip stream's window and batch kernel: fgc_stream.h) calls it directly, so LM's call
+// sites and its own land in one module, whose ALLOCATION makes each one RTL instance.
 template <class CFG>
-void optimize(typename CFG::T errors[2], int info[3]) {
-#pragma HLS ALLOCATION function instances=total_cost limit=1
-#ifdef FGC_LM_LINEARIZE_SOLVE  // the HLS Cholesky kernel's linearize_x(mu) and solve_at(mu) share it
-#pragma HLS ALLOCATION function instances=linearize_solve limit=1
-#endif
+void optimize_inline(typename CFG::T errors[2], int info[3]) {
+#pragma HLS INLINE
     typedef typename CFG::T T;
     T cost = CFG::cost_x();
     errors[0] = cost;
@@ -146,6 +146,15 @@ void optimize(typename CFG::T errors[2], int info[3]) {
     info[0] = it;
     info[1] = status;
     info[2] = reason;
+}
+
+template <class CFG>
+void optimize(typename CFG::T errors[2], int info[3]) {
+#pragma HLS ALLOCATION function instances=total_cost limit=1
+#ifdef FGC_LM_LINEARIZE_SOLVE  // the HLS Cholesky kernel's linearize_x(mu) and solve_at(mu) share it
+#pragma HLS ALLOCATION function instances=linearize_solve limit=1
+#endif
+    optimize_inline<CFG>(errors, info);
 }
 
 }  // namespace fgc_lm

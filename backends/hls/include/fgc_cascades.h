@@ -10,8 +10,13 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP, FACTOR_GRAM_OFF,
 // N_STEPS) and N_REGIONS, REGION_STEP, STEP_REGION, STEP_CASCADE, STEP_STREAMED (below); the
-// memories GRAM, COND, NF[4], HA0, HA1, HF0, HF1, CONDBUF[4], DPIV[4], RMAX[4]. CFG is the kernel's SetConfig:
-// its LesConfig with N_COND the size of a CONDBUF lane (a step's conditional from 0).
+// memories GRAM, COND, NF[4], HA0, HA1, HF0, HF1, CONDBUF[4], DPIV[4], RMAX[4]. CFG is the
+// kernel's SetConfig: its LesConfig with N_COND the size of a CONDBUF lane (a step's
+// conditional from 0).
+//
+// The Grams are read in cholesky_set_step_grams (as fgc_eliminate.h's cholesky_assemble_first
+// and cholesky_add_segment read them for the one-cascade driver): a change to where the
+// assembly gets its Grams changes both.
 #ifndef FGC_CASCADES_H
 #define FGC_CASCADES_H
 

@@ -37,7 +37,7 @@ typename CFG::T lm_x_norm(const typename CFG::T x[CFG::N_X]) {
     }
     for (int i = 0; i < CFG::N_X; ++i) {
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=xp inter false
+#pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS
         xp[i % CFG::PARTIALS] += x[i] * x[i];
     }
     const T x_norm = CFG::root(fold_partials<T, CFG::PARTIALS>(xp));
@@ -65,8 +65,8 @@ bool lm_step_test(bool solved, typename CFG::T mu, const typename CFG::T delta[C
     }
     for (int i = 0; i < CFG::N_TANGENT; ++i) {
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=dp inter false
-#pragma HLS DEPENDENCE variable=pp inter false
+#pragma HLS DEPENDENCE variable=dp inter true distance=CFG::PARTIALS
+#pragma HLS DEPENDENCE variable=pp inter true distance=CFG::PARTIALS
         const T d = delta[i];
         ok = ok && CFG::finite(d);
         dp[i % CFG::PARTIALS] += d * d;
@@ -95,7 +95,7 @@ typename CFG::T lm_gradient_max(const typename CFG::T g[CFG::N_TANGENT]) {
     }
     for (int i = 0; i < CFG::N_TANGENT; ++i) {
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=gp inter false
+#pragma HLS DEPENDENCE variable=gp inter true distance=CFG::MAXIMA
         const T a = CFG::magnitude(g[i]);
         gp[i % CFG::MAXIMA] = a > gp[i % CFG::MAXIMA] ? a : gp[i % CFG::MAXIMA];
     }

@@ -575,16 +575,19 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
     cholesky_sets region: phase ``assemble`` (the grams process alone: the first region's
     steps' Grams), then per region r of :func:`cascade_regions` (after a phase
     ``assemble_level<r>`` when a step of it has children added alone, :func:`cascade_children`:
-    a scatter loop each) the region ``cholesky_level<r>``: per cascade its step's ``cpe_step``
-    rounds (:func:`cpe_step_loops` but its check); the source (the streamed children's
-    separator maps into registers, ``move``, trip the larger separator; both steps' words two
-    of a row a cycle
-    each, trip the larger step's :func:`cpe_pairs`, ``move``, or ``scatter`` with a streamed
-    child's words added); the grams process (the next region's steps' Grams into the other
-    lanes, :func:`assemble_loops`); the committer (the region before's conditionals from
-    CONDBUF into COND, two words a cycle, each step's pivot check after its copy,
-    :func:`cpe_check_loops`: off the cascade's path); last ``cholesky_level<regions>``: the
-    committer alone on the last region's."""
+    a scatter loop each) the region ``cholesky_level<r>``:
+
+    - per cascade its step's ``cpe_step`` rounds (:func:`cpe_step_loops` but its check);
+    - the source: the streamed children's separator maps into registers (``move``, trip the
+      larger separator), then both steps' words, two of a row a cycle each (trip the larger
+      step's :func:`cpe_pairs`; ``move``, or ``scatter`` with a streamed child's words added);
+    - the grams process: the next region's steps' Grams into the other lanes
+      (:func:`assemble_loops`);
+    - the committer: the region before's conditionals from CONDBUF into COND, two words a
+      cycle, each step's pivot check after its copy (:func:`cpe_check_loops`: off the
+      cascade's path);
+
+    last ``cholesky_level<regions>``: the committer alone on the last region's."""
     regions = cascade_regions(tables, order)
     kids = cascade_children(tables, regions)
     sw, sf = tables["STEP_W"], tables["STEP_F"]

@@ -3460,6 +3460,8 @@ const int BS_SLOTS = 9;
 const int BS_SOLVE[BS_SLOTS] = {-1, 6, -1, 4, 5, 2, 3, 0, 1};
 const int BS_LOAD[BS_SLOTS] = {6, -1, 4, 5, 2, 3, 0, 1, -1};
 const int BS_LANE[BS_SLOTS] = {1, 0, 0, 1, 0, 1, 0, 1, 0};
+// the loaded separator's solution in the loading lane's BS_X from this offset (-1: from DELTA)
+const int BS_XOFF[BS_SLOTS] = {-1, -1, -1, 15, 0, 0, 0, 0, -1};
 #define FGC_BACKSUB_DRIVER
 #include "fgc_backsub.h"
 
@@ -3518,6 +3520,9 @@ struct LmConfig {
 #pragma HLS INLINE
         return total_cost(X);
     }
+    // INLINE: the on-chip stream's kernels share linearize_all / eliminate_all between LM and
+    // their own calls after it (fgc_stream.h's ALLOCATION, LM's body inlined there); the HGC
+    // beside the elimination's hooks share linearize_solve (fgc_lm.h's ALLOCATION)
     static bool linearize_x(T mu) {
 #pragma HLS INLINE
         return linearize_beside(mu);

@@ -3496,6 +3496,8 @@ const int BS_SLOTS = 9;
 const int BS_SOLVE[BS_SLOTS] = {-1, 6, -1, 4, 5, 2, 3, 0, 1};
 const int BS_LOAD[BS_SLOTS] = {6, -1, 4, 5, 2, 3, 0, 1, -1};
 const int BS_LANE[BS_SLOTS] = {1, 0, 0, 1, 0, 1, 0, 1, 0};
+// the loaded separator's solution in the loading lane's BS_X from this offset (-1: from DELTA)
+const int BS_XOFF[BS_SLOTS] = {-1, -1, -1, 15, 0, 0, 0, 0, -1};
 #define FGC_BACKSUB_DRIVER
 #include "fgc_backsub.h"
 
