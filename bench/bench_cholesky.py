@@ -1,12 +1,16 @@
 """The emitted Cholesky design (issue 33: the HGC streamed from the factor datapaths, the
 assembly beside the #CPE cascade) on LIO N=30 (#CPE 5 / 10 / 15 / 20 / 80) and paper B's
-imu_window N=50 (#CPE 5 / 20 / 40 / 80 / 120): per design the plan's cycles per LM iteration
+imu_window N=50 (#CPE 5 / 20 / 40 / 80 / 120), each with one cascade and with two side by side
+(HlsConfig unit_sets=2, fgc_cascades.h): per design the plan's cycles per LM iteration
 and their phase groups, ms per iteration and per solve (5 LM iterations, GTSAM's count on
 imu_window), the plan's DSP beside the second reader's (bench_second_reader.measure: the
 emitted C++ read back), BRAM36, the plan's fit verdict on the xc7z045 and the linear solver's
 share.
 
     python bench/bench_cholesky.py
+    python bench/bench_cholesky.py --cascades 2    # the two-cascade designs only
+    python bench/bench_cholesky.py --before        # the HGC before the elimination (one
+                                                   # cascade: hgc_beside off)
 
 Model estimates at 143 MHz, float32 (no vendor tool here).
 """
@@ -30,20 +34,28 @@ from fgc_backends.hls.plan import plan_cost, plan_groups  # noqa: E402
 
 CASES = [("lio", 30, c) for c in (5, 10, 15, 20, 80)] + [("imu_window", 50, c)
                                                           for c in (5, 20, 40, 80, 120)]
-GROUPS = ("factor_jacobian", "hgc", "assemble", "cholesky", "backsub")
+GROUPS = ("factor_jacobian", "hgc", "hgc_beside", "assemble", "cholesky", "backsub")
 
 
 def main() -> None:
-    for ex, n, cpe in CASES:
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--cascades", type=int, nargs="+", choices=(1, 2), default=(1, 2))
+    parser.add_argument("--before", action="store_true",
+                        help="every block type's HGC before the elimination (hgc_beside off)")
+    args = parser.parse_args()
+    for (ex, n, cpe), sets in ((c, k) for c in CASES for k in args.cascades):
         program = compile_graph(example(ex).build(N=n), SolverConfig(
             method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"{ex}{cpe}")
-        config = HlsConfig(scalar="float")
+        config = HlsConfig(scalar="float", unit_sets=sets, hgc_beside=not args.before)
         plan = accel_plan(program, config)
         cost, groups = plan_cost(plan), plan_groups(plan)
         with tempfile.TemporaryDirectory() as d:
             read = measure(program, config, Path(d) / "design")
         ms = cost.cycles / cost.clock_mhz / 1e3
-        print(f"{ex} N={n} #CPE={cpe}: {cost.cycles:,} cycles/iteration, {ms:.3f} ms/iteration, "
+        print(f"{ex} N={n} #CPE={cpe} x{sets}: {cost.cycles:,} cycles/iteration, "
+              f"{ms:.3f} ms/iteration, "
               f"{5 * ms:.2f} ms/solve (5 it.), DSP plan {cost.dsp} reader {read['reader_dsp']}, "
               f"BRAM36 {cost.bram36}, fits (plan) {cost.fits}, linear share "
               f"{cost.linear_cycles / cost.cycles:.3f}; "

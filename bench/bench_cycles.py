@@ -15,12 +15,14 @@ and calls the counting build counted (FGC_EVENT). So the comparison checks the c
 execution, not how many iterations the solver took. Gauss-Newton, float32 Program, float design.
 
     python bench/bench_cycles.py
+    python bench/bench_cycles.py --only Cholesky    # the configurations whose name holds it
 """
 
 from __future__ import annotations
 
 import re
 import subprocess
+import sys
 import tempfile
 import warnings
 from pathlib import Path
@@ -99,8 +101,9 @@ def measure(name, graph, solver, config: HlsConfig | None = None):
     return phases, events
 
 
-ORDER = ("setup", "factor_jacobian", "gradient", "hgc", "qr_stack", "qr", "qr_commit",
-         "assemble", "cholesky", "store", "backsub", "state_update", "factor_cost",
+ORDER = ("setup", "factor_jacobian", "gradient", "hgc", "hgc_beside", "qr_stack", "qr",
+         "qr_commit", "assemble", "cholesky", "reassemble", "recholesky", "store", "backsub",
+         "state_update", "factor_cost",
          "lm_iteration", "lm_control", "lm_accept", "rounding_noise")
 
 
@@ -125,12 +128,24 @@ def cases():
     # the fastest LIO design that fits (issue 33): the HGC's two lanes on a 21-row block
     out.append(("LIO N=30 Cholesky #CPE=15", lio.build(N=30),
                 SolverConfig(method="gn", linear="cholesky", cpe=15, precision="float32")))
+    # two cascades side by side (unit_sets=2, fgc_cascades.h): LIO's fastest design that fits,
+    # and imu_window's with a cascade of three rounds a step
+    out.append(("LIO N=30 Cholesky #CPE=15 x2", lio.build(N=30),
+                SolverConfig(method="gn", linear="cholesky", cpe=15, precision="float32"),
+                HlsConfig(scalar="float", unit_sets=2)))
+    out.append(("imu_window N=20 Cholesky #CPE=5 x2", imu_window.build(N=20),
+                SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
+                HlsConfig(scalar="float", unit_sets=2)))
     return out
 
 
 def main() -> None:
+    # --only WORD: the configurations whose name holds WORD (e.g. Cholesky)
+    only = sys.argv[sys.argv.index("--only") + 1] if "--only" in sys.argv else ""
     summary = []
     for name, graph, solver, *config in cases():
+        if only not in name:
+            continue
         phases, events = measure(name, graph, solver, *config)
         print(f"{name}   (runs: " + ", ".join(f"{k} {v}" for k, v in sorted(events.items()))
               + ")")

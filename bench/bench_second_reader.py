@@ -41,7 +41,8 @@ NEW_RULES = ("ii_allocation", "dependence_false", "dependence_unproven")
 # the files of the code around the units (issue 32's kernel helper); the QR unit's headers
 # (fgc_qr.h, fgc_eliminate.h's stacking) and the Cholesky cascade's (fgc_cpe.h) are counted apart
 AROUND = ("fgc_lm_units.h", "fgc_backsub.h")
-OWN_HEADERS = re.compile(r"qr\d+_(?:evaluate|update)|cpe")  # the units priced in their headers
+# the units priced in their headers (a second Cholesky cascade's CPEs: cpe_set1)
+OWN_HEADERS = re.compile(r"qr\d+_(?:evaluate|update)|cpe(?:_set\d+)?")
 
 
 def _dsp_of(tab) -> dict[str, int]:
@@ -166,10 +167,12 @@ def main(argv=None) -> int:
         for cpe in cpes:
             program = compile_graph(imu.build(N=imu_n), name="imu",
                                     solver=SolverConfig(linear="cholesky", cpe=cpe))
-            t0 = time.perf_counter()
-            m = measure(program, HlsConfig(), Path(tmp) / f"imu_{cpe}")
-            rows.append((f"imu_window N={imu_n} Cholesky #CPE={cpe}", m,
-                         time.perf_counter() - t0))
+            for sets in (1, 2):  # one cascade, two side by side (fgc_cascades.h)
+                t0 = time.perf_counter()
+                m = measure(program, HlsConfig(unit_sets=sets), Path(tmp) / f"imu_{cpe}_{sets}")
+                rows.append((f"imu_window N={imu_n} Cholesky #CPE={cpe}"
+                             + (" x2 cascades" if sets == 2 else ""), m,
+                             time.perf_counter() - t0))
     print(f"{'design':42s} {'plan DSP':>9s} {'reader DSP':>10s} {'ratio':>6s} "
           f"{'BRAM36':>7s} {'cycles/it':>10s} {'II short':>8s} {'carried':>7s} "
           f"{'alloc':>5s} {'false dep':>9s} {'unproven':>8s} "

@@ -60,6 +60,9 @@ class DesignOptions:
       named keep the plan's default (``fgc_backends.hls.plan.DEFAULT_ALLOCATION``), which is
       what ``None`` means. The plan shares each limit out over the block types by instance
       count (``PlanOptions.allocation_scaling``). ``fgc compile --allocation mul=48,add=32``.
+    - ``hgc_beside``: Cholesky with one cascade: the block type with the longest HGC region
+      streams its Grams beside the elimination (the first solve of a linearisation factored
+      while its HGC runs; docs/hls.md); ``False``: every block type's HGC before it.
     - ``qr_unit``: the QR unit set the design eliminates with: ``"householder"`` (paper A's
       architecture: one DATAFLOW region per reflection, ``include/fgc_qr.h``) or ``"stream"``
       (n_u reflection stages the matrix streams through, ``include/fgc_qr_stream.h``; the
@@ -74,6 +77,7 @@ class DesignOptions:
     unit_sets: int | None = None
     allocation: tuple[tuple[str, int], ...] | None = None
     qr_unit: str = "householder"
+    hgc_beside: bool = True
 
     def check(self, program: Program | None = None) -> None:
         """Raise :class:`HlsConfigError` naming the first invalid option; with ``program``, also
@@ -123,7 +127,8 @@ class DesignOptions:
         #CPE, these unit sets, part, QR unit and ALLOCATION limits (over the defaults), and the
         precisions the design computes in (None: the Program's)."""
         base = dict(unit_sets=self.unit_sets, part=self.part, qr_unit=self.qr_unit,
-                    precision=precision, les_precision=les_precision)
+                    precision=precision, les_precision=les_precision,
+                    hgc_beside=bool(self.hgc_beside))
         if self.allocation:  # the design's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(self.allocation)}.items())
@@ -192,12 +197,13 @@ class HlsConfig(scalars.ScalarTypes):
     unit_sets: InitVar[int | None] = None
     allocation: InitVar[tuple[tuple[str, int], ...] | None] = None
     qr_unit: InitVar[str | None] = None
+    hgc_beside: InitVar[bool | None] = None
 
-    def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit) -> None:
+    def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
-        old = (part, clock_ns, unit_sets, allocation, qr_unit)
+        old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside)
         given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
                  if value is not None}
         if given:

@@ -292,6 +292,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         cols = sorted((v.col + j, v.k, j) for v in b.variables for j in range(v.dim))
         blocks[-1].gram_col_var = [k for _, k, _ in cols]
         blocks[-1].gram_col_off = [j for _, _, j in cols]
+    beside = _beside_context(program, plan, blocks)
     # the state update's datapath per variable type: the plan's operators
     retract = {}
     for k in context["retracts"]:
@@ -311,7 +312,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
-    option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}"
+    option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}" + (
+        ", 2 cascades" if any(u.name == "cpe_set1" for u in plan.units) else "")
     network = [f"{len(procs)} processes, {len(streams)} streams ({option})"]
     network += [f"process {p}" for p in procs]
     network += [f"stream {ch.name} depth={ch.depth}: {ch.producer} -> {ch.consumer}"
@@ -323,7 +325,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "les": {"partials": les.add.latency, "add": les.add.latency,
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
-            "blocks": blocks, "network": network, "retract_hw": retract, "retire": retire,
+            "blocks": blocks, "beside": beside, "network": network, "retract_hw": retract,
+            "retire": retire,
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
             "small": shared,
@@ -333,8 +336,58 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
             # from DELTA)
             "bs_xoff": _backsub_xoff(program),
-            "cpe": plan.options.cpe, "plan": plan,
+            "cpe": plan.options.cpe, "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
+
+
+def _beside_context(program: Program, plan, blocks) -> dict | None:
+    """The HGC beside the elimination's tables and constants (units/cholesky.py's _beside:
+    the plan's phase hgc_beside names the streamed block type), None without it."""
+    name = next((p.name for ph in plan.phases if ph.name == "hgc_beside" for p in ph.processes),
+                None)
+    if name is None:
+        return None
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.cholesky import beside_layout
+    big = int(name.rsplit("_", 1)[1])
+    tables = _tables(program)
+    order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
+    lay = beside_layout(program, tables, order, big)
+    b = blocks[big]
+    reduce = next(p for ph in plan.phases if ph.name == "hgc_producer" for p in ph.processes
+                  if p.name == f"reduce_{big}")
+    ha = 2 if b.gram_pair else 1
+    if any(p * (p + 1) // 2 + q >= lay["nb"] for p, q in zip(b.gram_p + b.gram_pb,
+                                                            b.gram_q + b.gram_qb, strict=True)):
+        raise RuntimeError(f"internal error: block {big}'s Gram entries outside its packed Gram")
+    slots = ha + (1 if b.gram_pb else 0)
+    return {**lay, "block": big, "ha": ha, "slots": slots, "gii": reduce.loops[1].ii,
+            "steps": b.gram_steps, "count": len(lay["order"]),
+            "depth": lay["max_per_step"] * b.gram_steps, "rows_cycles": reduce.loops[0].cycles,
+            "pos_a": [p * (p + 1) // 2 + q for p, q in zip(b.gram_p, b.gram_q, strict=True)],
+            "pos_b": [p * (p + 1) // 2 + q for p, q in zip(b.gram_pb, b.gram_qb, strict=True)]}
+
+
+def _cascade_context(program: Program, plan) -> dict:
+    """The two-cascade Cholesky design's tables (units/cholesky.py's cascade_regions and
+    cascade_children): ``cascades`` (1 or 2) and, for 2, REGION_STEP (flat, two a region),
+    STEP_REGION, STEP_CASCADE and STEP_STREAMED."""
+    if program.solver.linear != "cholesky":
+        return {"cascades": 1}
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.cholesky import cascade_children, cascade_regions, cascades_of
+    sets = cascades_of(program, plan.options)
+    if sets == 1:
+        return {"cascades": 1}
+    tables = _tables(program)
+    n = len(program.schedule.steps)
+    regions = cascade_regions(tables, [tables["LEVEL_STEPS"][i] for i in range(n)])
+    kids = cascade_children(tables, regions)
+    where = {s: (r, k) for r, reg in enumerate(regions) for k, s in enumerate(reg) if s >= 0}
+    return {"cascades": 2, "regions": [s for reg in regions for s in reg],
+            "step_region": [where[s][0] for s in range(n)],
+            "step_cascade": [where[s][1] for s in range(n)],
+            "step_streamed": [kids[s][0] for s in range(n)]}
 
 
 def _backsub_slots(program: Program) -> tuple[tuple[int, int, int], ...]:

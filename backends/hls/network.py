@@ -81,14 +81,20 @@ def counts(kernel: str, units: str, backsub: str) -> tuple[int, int]:
     """Processes and streams of the kernel's process network: the linear solver's - the
     kernel's unit-set region (QR: how many unit sets run side by side; Cholesky: one cascade)
     times the unit header's innermost region (one reflection, one CPE round) with the kernel's
-    N_UNITS / N_CPE - and back-substitution's regions in its header ``backsub``
-    (:func:`backsub_region`: their process calls and any streams they declare)."""
+    N_UNITS / N_CPE (Cholesky: and the overlap region the kernel uses, with the HGC beside the
+    elimination the Gram stream of its linearize_solve) - and back-substitution's regions in its
+    header ``backsub`` (:func:`backsub_region`: their process calls and any streams they
+    declare)."""
     const = {k: int(v) for k, v in _CONSTANT.findall(kernel)}
     cfg = {f"CFG::{k}": v for k, v in const.items()}
     sets = next((len(r.processes) for r in read_network(kernel) if r.function == "qr_level"), 1)
+    # Cholesky with the HGC beside the elimination: fgc_eliminate.h's cholesky_overlap_beside
+    # (not cholesky_overlap) and the kernel's linearize_solve stream (the Grams)
+    beside = "#define FGC_ELIMINATE_BESIDE" in kernel
+    unused = "cholesky_overlap" if beside else "cholesky_overlap_beside"
     procs = streams = 0
     for region in read_network(units):
-        if not region.streams:
+        if not region.streams or region.function == unused:
             continue
         for call in region.processes:
             if call.endswith("::run"):  # per unit: N_UNITS updates; N_CPE taps and CPEs
@@ -96,6 +102,9 @@ def counts(kernel: str, units: str, backsub: str) -> tuple[int, int]:
             else:
                 procs += 1
         streams += _stream_count(region, cfg)
+    if beside:
+        streams += sum(_stream_count(r, cfg) for r in read_network(kernel)
+                       if r.function == "linearize_solve")
     backsub = backsub_region(backsub)
     return (procs * sets + len(backsub.processes),
             streams * sets + _stream_count(backsub, cfg))

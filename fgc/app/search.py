@@ -59,8 +59,10 @@ class SearchError(FgcError):
 
 @dataclass(frozen=True)
 class Space:
-    """The axes searched. ``units`` and ``unit_sets`` apply to QR designs, ``cpe`` to Cholesky
-    ones; ``unit_sets=None`` means the emitter's default (two on a two-ended chain, else one);
+    """The axes searched. ``units`` and ``unit_sets`` apply to QR designs, ``cpe`` and
+    ``cascades`` (one cascade, or two side by side: ``HlsConfig.unit_sets`` of a Cholesky
+    design) to Cholesky ones; ``unit_sets=None`` means the emitter's default (two on a
+    two-ended chain, else one);
     ``alloc_scales`` multiply the factor datapaths' default ``ALLOCATION`` limits; ``extra``:
     further ``PlanOptions`` fields the emitter knows as ``HlsConfig`` fields, (name, values)."""
 
@@ -68,19 +70,21 @@ class Space:
     units: tuple[int, ...] = (1, 2, 4, 8, 16, 32)
     unit_sets: tuple[int | None, ...] = (None,)
     cpe: tuple[int, ...] = (5, 20, 40, 80, 120)
+    cascades: tuple[int, ...] = (1, 2)
     alloc_scales: tuple[int, ...] = (1,)
     scalar: str = "float"
     part: str | None = None  # None: HlsConfig's default part
     extra: tuple[tuple[str, tuple], ...] = ()
 
     def __post_init__(self):
-        for name in ("linears", "units", "unit_sets", "cpe", "alloc_scales"):
+        for name in ("linears", "units", "unit_sets", "cpe", "cascades", "alloc_scales"):
             if not getattr(self, name):
                 raise SearchError(f"design space: axis {name!r} is empty")
         bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales) if int(u) < 1]
+        bad += [k for k in self.cascades if int(k) not in (1, 2)]
         bad += [s for s in self.unit_sets if s is not None and int(s) < 1]
         if bad:
-            raise SearchError(f"design space: counts must be >= 1, got {bad}")
+            raise SearchError(f"design space: counts must be >= 1 (cascades 1 or 2), got {bad}")
         unknown = sorted(set(self.linears) - {"qr", "cholesky"})
         if unknown:
             raise SearchError(f"design space: unknown linear solver(s) {unknown}")
@@ -123,7 +127,7 @@ class Candidate:
 
     linear: str
     units: int | None = None  # QR
-    unit_sets: int | None = None  # QR; None: the emitter's default
+    unit_sets: int | None = None  # QR; None: the emitter's default; Cholesky: 2 cascades or None
     cpe: int | None = None  # Cholesky
     alloc_scale: int = 1
     extra: tuple[tuple[str, object], ...] = ()
@@ -134,7 +138,8 @@ class Candidate:
             sets = "default" if self.unit_sets is None else str(self.unit_sets)
             head = f"qr n_u={self.units} sets={sets}"
         else:
-            head = f"cholesky #CPE={self.cpe}"
+            head = f"cholesky #CPE={self.cpe}" + (f" cascades={self.unit_sets}"
+                                                 if self.unit_sets else "")
         tail = "".join(f" {k}={v}" for k, v in self.extra)
         return f"{head} ALLOC×{self.alloc_scale}{tail}"
 
@@ -197,7 +202,8 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
                         for e in extras:
                             out.append(Candidate("qr", units, sets, None, scale, e))
             else:
-                out += [Candidate("cholesky", None, None, c, scale) for c in space.cpe]
+                out += [Candidate("cholesky", None, None if k == 1 else k, c, scale)
+                        for c in space.cpe for k in space.cascades]
     return tuple(dict.fromkeys(out))
 
 

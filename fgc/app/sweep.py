@@ -355,7 +355,10 @@ def _add_fit(rows: list[dict], searches: dict, name: str) -> None:
     from fgc_backends.hls.lint import HlsFitWarning
 
     for precision, result in searches.items():
-        by = {(r.candidate.linear, r.candidate.units, r.candidate.cpe): r for r in result.rows}
+        # the sweep's designs are the emitter's default unit sets (one Cholesky cascade); the
+        # search's two-cascade designs are in its lines (fit_lines) and may be its best
+        by = {(r.candidate.linear, r.candidate.units, r.candidate.cpe): r for r in result.rows
+              if r.candidate.linear == "qr" or r.candidate.unit_sets is None}
         for row in rows:
             if row["precision"] != precision:
                 continue

@@ -130,7 +130,8 @@ def test_the_qr_unit_axis_prices_each_unit_as_emitted(programs):
     stream designs (Cholesky ones have no QR unit), each emitted with its unit
     (``config.design.qr_unit``) and priced by the plan of that unit; a reading of one kind
     implies nothing about the other (an unordered axis)."""
-    space = Space(linears=("qr", "cholesky"), units=(2,), unit_sets=(1,), cpe=(5,))
+    space = Space(linears=("qr", "cholesky"), units=(2,), unit_sets=(1,), cpe=(5,),
+                  cascades=(1,))
     seen = []
 
     def read(program, config):
@@ -218,3 +219,17 @@ def test_cholesky_floor_by_hand(programs):
               + lm + math.ceil(math.log2(leaf.rows)) * la)
     assert floor.part("eliminate") == expect
     assert floor.part("back-substitute") == floor.unknowns * (lm + la)
+
+
+def test_a_cholesky_space_searches_one_and_two_cascades(programs):
+    """Cholesky designs go with one cascade (the emitter's default) and with two side by side
+    (``HlsConfig.unit_sets=2``), each priced by the plan of what it emits."""
+    space = Space(linears=("cholesky",), cpe=(5,))
+    result = search(programs, space, max_reads=0, reader=False)
+    by_sets = {r.candidate.unit_sets: r for r in result.rows}
+    assert set(by_sets) == {None, 2}
+    assert "cascades=2" in by_sets[2].label and "cascades" not in by_sets[None].label
+    assert by_sets[2].candidate.config(space).unit_sets == 2
+    assert by_sets[2].cost.dsp > by_sets[None].cost.dsp  # a second cascade's CPEs
+    with pytest.raises(SearchError):
+        Space(cascades=(3,))

@@ -294,11 +294,15 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     # feed, per CPE its tap and itself, drain, the assembler beside the cascade (fgc_eliminate.h's
     # cholesky_overlap), back-substitution's lanes, its slot process and the state update it
     # feeds; links, tapped and recip, the assembler's stream, back_substitute's
-    (overlap,) = read_network(_texts(out, "w100", "fgc_eliminate.h")[1])
-    assert overlap.processes == ("cholesky_assembler", "cholesky_cascade")
+    # (the HGC beside the elimination: its Gram source a third process of the overlap region,
+    # its Gram stream one more)
+    overlaps = {r.function: r for r in read_network(_texts(out, "w100", "fgc_eliminate.h")[1])}
+    assert overlaps["cholesky_overlap"].processes == ("cholesky_assembler", "cholesky_cascade")
+    assert overlaps["cholesky_overlap_beside"].processes == (
+        "cholesky_gram_source", "cholesky_assembler", "cholesky_cascade")
     header += _texts(out, "w100", "fgc_eliminate.h")[1]
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == \
-        (2 * cpe + 10, 3 * cpe + 3)
+        (2 * cpe + 11, 3 * cpe + 4)
     assert procs[-6:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0",
                           "backsub_slots", "backsub_retire")
     assert all(f"//   process {p}\n" in kernel for p in procs[-6:])

@@ -194,7 +194,8 @@ def test_update_units_follow_n_u(qr_chain):
 def test_cpe_cascade_follows_cpe(chol_chain):
     n = chol_chain.storage.columns
     assert n == 9
-    plans = {c: build_plan(chol_chain, PlanOptions.of(chol_chain, cpe=c)) for c in (1, 3)}
+    plans = {c: build_plan(chol_chain, PlanOptions.of(chol_chain, cpe=c, hgc_beside=False))
+             for c in (1, 3)}
     for c, plan in plans.items():
         assert plan.unit("cpe").instances == c
         assert sum(1 for ch in plan.channels if ch.name.startswith("cpe_link")) == c + 1

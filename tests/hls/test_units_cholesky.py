@@ -60,7 +60,7 @@ def test_more_cpes_than_a_steps_pivots_only_add_idle_fill():
 
 
 def test_the_emitted_design_assembles_factors_and_the_cascade_stores_each_step(program):
-    plan = build_plan(program)
+    plan = build_plan(program, PlanOptions.of(program, hgc_beside=False))
     names = [ph.name for ph in plan.phases]
     assert names.index("hgc") < names.index("assemble") < names.index("cholesky_level0")
     assert "store" not in names  # the drain writes COND and NF
@@ -235,13 +235,14 @@ def test_each_block_types_datapath_and_hgc_share_one_emitted_region(tmp_path):
     # (evaluate_<b>) and its HGC (reduce_<b>) linked by one row stream; the plan prices each as
     # phase hgc_level<b> with those two processes
     from fgc_backends.hls import HlsConfig, emit
+    from fgc_backends.hls.config import DesignOptions
     from fgc_backends.hls.network import read_network
 
     program = chain(4, linear="cholesky", cpe=2)
-    emit(program, tmp_path / "p", HlsConfig())
+    emit(program, tmp_path / "p", HlsConfig(design=DesignOptions(hgc_beside=False)))
     kernel = next(p for p in (tmp_path / "p").glob("*.cpp") if not p.name.startswith("tb_"))
     regions = {r.function: r for r in read_network(kernel.read_text())}
-    plan = build_plan(program)
+    plan = build_plan(program, PlanOptions.of(program, hgc_beside=False))
     levels = [ph for ph in plan.phases if ph.name.startswith("hgc_level")]
     assert levels and all(ph.dataflow for ph in levels)
     for ph in levels:
@@ -263,7 +264,7 @@ def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program
     from fgc_backends.hls.plan.loops import _tables, kernel_timing
     from fgc_backends.hls.units.cholesky import assemble_loops, cpe_pairs
 
-    plan = build_plan(program)
+    plan = build_plan(program, PlanOptions.of(program, hgc_beside=False))
     tables, timing = _tables(program), kernel_timing(FLOAT32)
     order = list(tables["LEVEL_STEPS"][:len(program.schedule.steps)])
     odd = {s: t % 2 for t, s in enumerate(order)}

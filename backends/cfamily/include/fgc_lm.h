@@ -17,7 +17,8 @@
 //   REASON_* codes; the scalar settings as functions returning T (lambda_initial(),
 //   lambda_factor(), lambda_upper_bound(), mu_min(), eps_gradient(), eps_step(), rel_tol(),
 //   resolution(), abs_tol()); root (sqrt), magnitude (abs), finite (isfinite) of T;
-//   the kernel's hooks: cost_x() (the cost at X), linearize_x() (false: not finite),
+//   the kernel's hooks: cost_x() (the cost at X), linearize_x(mu) (false: not finite; mu the
+//   damping of the solve that follows: the HLS Cholesky kernel factors at it beside the HGC),
 //   gradient_max() (the gradient's largest |entry|), x_norm() (|X|), solve_at(mu) (false:
 //   singular), step_test(solved, mu, out) (false: not solved or delta not finite; out = {|delta|^2,
 //   predicted decrease}), retract_trial() (X_TRIAL = X (+) DELTA), cost_trial() (the cost at
@@ -106,7 +107,7 @@ void optimize_inline(typename CFG::T errors[2], int info[3]) {
     }
     for (int k = 0; k < CFG::MAX_ITERATIONS; ++k) {
         if (status != CFG::STATUS_MAX_ITERATIONS) break;
-        if (!CFG::linearize_x()) {
+        if (!CFG::linearize_x(mu[0])) {
             status = CFG::STATUS_FAILED;
             reason = CFG::REASON_NON_FINITE;
             break;
@@ -150,6 +151,9 @@ void optimize_inline(typename CFG::T errors[2], int info[3]) {
 template <class CFG>
 void optimize(typename CFG::T errors[2], int info[3]) {
 #pragma HLS ALLOCATION function instances=total_cost limit=1
+#ifdef FGC_LM_LINEARIZE_SOLVE  // the HLS Cholesky kernel's linearize_x(mu) and solve_at(mu) share it
+#pragma HLS ALLOCATION function instances=linearize_solve limit=1
+#endif
     optimize_inline<CFG>(errors, info);
 }
 

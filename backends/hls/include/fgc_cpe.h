@@ -14,7 +14,10 @@
 //                 typename CFG::T cond[CFG::N_COND], int c0,
 //                 typename CFG::T update[CFG::N_NF], int u0, bool* not_pd, bool* singular);
 //
-//   and cond_backsub<CFG> (fgc_backsub.h, included) for the step's back-substitution.
+//   its two halves, cpe_rounds<CFG> (the rounds, each pivot row's pivot and largest |h| out)
+//   and cpe_check<CFG> (the pivot check on them), for a driver that checks a step later
+//   (fgc_cascades.h: beside the next region), and cond_backsub<CFG> (fgc_backsub.h, included)
+//   for the step's back-substitution.
 //
 // In: src, the step's [H | g], w = f + s rows, each row from its diagonal to the gradient, two
 // words a stream word (cpe_pair; cpe_pairs(w) of them, none if the step does not fit: cpe_fits):
@@ -370,18 +373,22 @@ inline bool cpe_fits(int f, int s) {
     return f >= 0 && s >= 0 && f + s <= CFG::MAX_W && f <= CFG::MAX_F;
 }
 
+// cpe_step's rounds (and the copy of [H | g] when f = 0) without its pivot check: each pivot
+// row's pivot into dpiv and its largest frontal |h| into rmax (cpe_check's input), *not_pd as
+// cpe_step's; false, with nothing computed, if the step does not fit (cpe_fits).
 template <class CFG>
-void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS],
-              int f, int s, typename CFG::T mu, typename CFG::T cond[CFG::N_COND], int c0,
-              typename CFG::T update[CFG::N_NF], int u0, bool* not_pd, bool* singular) {
+bool cpe_rounds(hls::stream<cpe_pair<typename CFG::T> >& src,
+                typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS], int f, int s, typename CFG::T mu,
+                typename CFG::T cond[CFG::N_COND], int c0, typename CFG::T update[CFG::N_NF],
+                int u0, typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F],
+                bool* not_pd) {
     typedef typename CFG::T T;
     enum { MAX_ROUNDS = (CFG::MAX_F + CFG::N_CPE - 1) / CFG::N_CPE };
     enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int w = f + s;
     if (!cpe_fits<CFG>(f, s)) {
         *not_pd = true;  // outside the configuration: nothing is computed
-        *singular = true;
-        return;
+        return false;
     }
     bool npd = false;
     // the trailing matrix between rounds: round 0 reads src, a later round H (clearing it);
@@ -389,7 +396,6 @@ void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src, typename CFG::T H[CF
     // that round. One call site of the region (two would be two copies of the cascade in
     // hardware)
     T Tb[CFG::MAX_W][CFG::MAX_COLS];
-    T dpiv[CFG::MAX_F], rmax[CFG::MAX_F];  // each pivot row's pivot and largest frontal |h|
     for (int r = 0; r * CFG::N_CPE < f; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_ROUNDS
         const int p0 = r * CFG::N_CPE;
@@ -436,6 +442,16 @@ void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src, typename CFG::T H[CF
         }
     }
     FGC_CYCLES("cpe_step", 0, "no_pivots", words, 1, 2);
+    *not_pd = npd;
+    return true;
+}
+
+// cpe_step's pivot check on the f pivots dpiv and rows' largest frontal |h| rmax (cpe_rounds'):
+// whether a pivot is too small.
+template <class CFG>
+bool cpe_check(const typename CFG::T dpiv[CFG::MAX_F], const typename CFG::T rmax[CFG::MAX_F],
+               int f) {
+    typedef typename CFG::T T;
     // the scale: max_i rmax_i^2 / d_i (= the largest |U_ic|, squared) and the smallest pivot
     // beside it: trip f, II 1, depth Lm + Ld + 2 (read, multiply, divide, compare)
     T scale2 = T(0), dmin = T(0);
@@ -453,6 +469,22 @@ void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src, typename CFG::T H[CF
     const T eps2 = T(CFG::SINGULAR_EPS * CFG::SINGULAR_EPS);
     const bool tiny = f > 0 && !(dmin / scale2 > eps2);
     FGC_CYCLES("cpe_step", 0, "pivot_check", f > 0 ? 1 : 0, 1, CFG::DIV_LAT + 2);
+    return tiny;
+}
+
+template <class CFG>
+void cpe_step(hls::stream<cpe_pair<typename CFG::T> >& src, typename CFG::T H[CFG::MAX_W][CFG::MAX_COLS],
+              int f, int s, typename CFG::T mu, typename CFG::T cond[CFG::N_COND], int c0,
+              typename CFG::T update[CFG::N_NF], int u0, bool* not_pd, bool* singular) {
+    typedef typename CFG::T T;
+    T dpiv[CFG::MAX_F], rmax[CFG::MAX_F];  // each pivot row's pivot and largest frontal |h|
+    bool npd = false;
+    if (!cpe_rounds<CFG>(src, H, f, s, mu, cond, c0, update, u0, dpiv, rmax, &npd)) {
+        *not_pd = true;  // outside the configuration: nothing is computed
+        *singular = true;
+        return;
+    }
+    const bool tiny = cpe_check<CFG>(dpiv, rmax, f);
     *not_pd = npd;
     *singular = npd || tiny;
 }

@@ -33,6 +33,16 @@
 // issue an II apart, an iteration after the i-th FGC_OUTER_RECEIVE no earlier than the end of
 // the first process's records up to its i-th FGC_OUTER_SEND; it ends its depth after its last
 // issue - as units/backsub.py's retire_region prices it.
+//
+// The HGC beside the elimination (FGC_BESIDE_PRODUCER, FGC_BESIDE_CONSUMER, FGC_BESIDE_END:
+// accel.cpp.jinja's linearize_solve, a producer writing a Gram stream beside the elimination
+// that reads it) takes the later of the producer's end (its records as span_total prices them,
+// or its last instance's Gram if later: the HGC starts only after the datapath's first rows) and
+// the consumer's: its records as span_total prices them, except that a pass after
+// FGC_BESIDE_GATE(k, depth) (up to the FGC_JOIN that ends it) ends no earlier than `depth`
+// after the producer's k-th instance's Gram is complete; the producer reports those times
+// (cycles after the region's start) with FGC_BESIDE_READY - as units/cholesky.py's
+// beside_cycles prices it.
 #ifndef FGC_CYCLES_H
 #define FGC_CYCLES_H
 
@@ -72,6 +82,12 @@ struct State {
     std::string current_name;
     std::string phase;
     std::map<std::string, long> events;
+    // the HGC beside the elimination: (record index, 'P' producer, 'C' consumer, 'E' end), the
+    // consumer's gates (record index, producer instance, depth) and the producer's instances'
+    // ready times (record index, cycles after the region's start)
+    std::vector<std::pair<std::size_t, char> > beside;
+    std::vector<std::pair<std::size_t, std::pair<long, long> > > gates;
+    std::vector<std::pair<std::size_t, long> > ready;
 };
 
 inline State& state() {
@@ -100,6 +116,27 @@ inline void join() { state().marks.push_back(std::make_pair(state().records.size
 inline void task() { state().marks.push_back(std::make_pair(state().records.size(), 'T')); }
 inline void tasks_join() { state().marks.push_back(std::make_pair(state().records.size(), 'U')); }
 inline void mark(char what) { state().marks.push_back(std::make_pair(state().records.size(), what)); }
+
+inline void beside(char what) {
+    state().beside.push_back(std::make_pair(state().records.size(), what));
+}
+inline void gate(long k, long depth) {
+    state().gates.push_back(std::make_pair(state().records.size(), std::make_pair(k, depth)));
+}
+// instance k's Gram of the producer: k II_jac + the datapath's depth + the rows' loop, or STEPS
+// iterations of the entries loop after the instance before, whichever is later; complete
+// (STEPS - 1) iterations and the entries loop's depth after that (units/cholesky.py's
+// beside_ready)
+inline void ready_chain(long n, long jac_ii, long jac_depth, long rows, long steps, long ii,
+                        long depth) {
+    long prev = 0;
+    for (long k = 0; k < n; ++k) {
+        long start = k * jac_ii + jac_depth + rows;
+        if (k > 0 && prev + steps * ii > start) start = prev + steps * ii;
+        state().ready.push_back(std::make_pair(state().records.size(), start + (steps - 1) * ii + depth));
+        prev = start;
+    }
+}
 
 inline void sequential() {
     state().current = -1;
@@ -310,8 +347,48 @@ inline long outer_total(std::size_t from, std::size_t to) {
     return sum + span_total(at, to);
 }
 
+// Records [from, to) with the HGC beside the elimination (FGC_BESIDE_*: see the comment at the
+// top); the rest priced by outer_total.
+inline long beside_total(std::size_t from, std::size_t to) {
+    const State& s = state();
+    std::size_t p = to, c = to, e = to;
+    for (const auto& m : s.beside) {
+        if (m.first < from || m.first > to) continue;
+        if (m.second == 'P' && p == to) p = m.first;
+        else if (m.second == 'C' && p < to && c == to) c = m.first;
+        else if (m.second == 'E' && c < to && e == to) e = m.first;
+    }
+    if (p >= to || c >= to) return outer_total(from, to);
+    long sum = outer_total(from, p);
+    long producer = span_total(p, c);
+    std::vector<long> ready;
+    for (const auto& r : s.ready) {
+        if (r.first < p || r.first > c) continue;
+        ready.push_back(r.second);
+        if (r.second > producer) producer = r.second;  // its last Gram: no sooner
+    }
+    long t = 0;
+    std::size_t at = c;
+    for (const auto& g : s.gates) {
+        const std::size_t q = g.first;
+        if (q < at || q >= e) continue;
+        t += span_total(at, q);
+        std::size_t end = e;  // the pass: up to the join that ends it
+        for (const auto& m : s.marks)
+            if (m.second == 'j' && m.first > q && m.first < end) end = m.first;
+        t += span_total(q, end);
+        const long k = g.second.first;
+        if (k >= 0 && k < static_cast<long>(ready.size()) && ready[k] + g.second.second > t)
+            t = ready[k] + g.second.second;
+        at = end;
+    }
+    t += span_total(at, e);
+    sum += producer > t ? producer : t;
+    return sum + (e < to ? beside_total(e, to) : 0);
+}
+
 // Records [from, to) with task groups (FGC_TASK up to FGC_TASKS_JOIN): the stretches between
-// groups as outer_total prices them; a group its slowest task (the processes share no channel, so
+// groups as beside_total prices them; a group its slowest task (the processes share no channel, so
 // the region ends when the slowest one does).
 inline long tasks_total(std::size_t from, std::size_t to) {
     const State& s = state();
@@ -322,26 +399,26 @@ inline long tasks_total(std::size_t from, std::size_t to) {
         if ((m.second != 'T' && m.second != 'U') || m.first < from || m.first > to) continue;
         if (m.second == 'T') {
             if (!open) {
-                sum += outer_total(at, m.first);
+                sum += beside_total(at, m.first);
                 open = true;
                 slow = 0;
             } else {
-                const long c = outer_total(start, m.first);
+                const long c = beside_total(start, m.first);
                 slow = c > slow ? c : slow;
             }
             start = m.first;
         } else if (open) {
-            const long c = outer_total(start, m.first);
+            const long c = beside_total(start, m.first);
             sum += c > slow ? c : slow;
             open = false;
             at = m.first;
         }
     }
     if (open) {
-        const long c = outer_total(start, to);
+        const long c = beside_total(start, to);
         return sum + (c > slow ? c : slow);
     }
-    return sum + outer_total(at, to);
+    return sum + beside_total(at, to);
 }
 
 // The whole log.
@@ -356,7 +433,7 @@ inline std::map<std::string, long> phase_totals() {
     while (i < r.size()) {
         std::size_t j = i;
         while (j < r.size() && r[j].phase == r[i].phase) ++j;
-        out[r[i].phase] += outer_total(i, j);
+        out[r[i].phase] += beside_total(i, j);
         i = j;
     }
     return out;
@@ -404,6 +481,12 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_JOIN() ::fgc_cycles::mark('J')
 #define FGC_PHASE(name) ::fgc_cycles::phase(name)
 #define FGC_EVENT(name) ::fgc_cycles::event(name)
+#define FGC_BESIDE_PRODUCER() ::fgc_cycles::beside('P')
+#define FGC_BESIDE_CONSUMER() ::fgc_cycles::beside('C')
+#define FGC_BESIDE_END() ::fgc_cycles::beside('E')
+#define FGC_BESIDE_GATE(k, depth) ::fgc_cycles::gate(k, depth)
+#define FGC_BESIDE_READY(n, jac_ii, jac_depth, rows, steps, ii, depth) \
+    ::fgc_cycles::ready_chain(n, jac_ii, jac_depth, rows, steps, ii, depth)
 
 #else
 
@@ -422,6 +505,11 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_JOIN() ((void)0)
 #define FGC_PHASE(name) ((void)0)
 #define FGC_EVENT(name) ((void)0)
+#define FGC_BESIDE_PRODUCER() ((void)0)
+#define FGC_BESIDE_CONSUMER() ((void)0)
+#define FGC_BESIDE_END() ((void)0)
+#define FGC_BESIDE_GATE(k, depth) ((void)0)
+#define FGC_BESIDE_READY(n, jac_ii, jac_depth, rows, steps, ii, depth) ((void)0)
 
 #endif  // FGC_COUNT_CYCLES
 

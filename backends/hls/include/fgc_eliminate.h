@@ -52,15 +52,18 @@
 // Step s's first factor's packed Gram into HA[lane], stored, not added (the lane is all zero):
 // two entries a cycle (GRAM's two ports read, the lane's two ports written; within one factor
 // every entry has its own address), its column map first copied into registers (two reads of
-// it an entry each). The further factors are cholesky_assemble_adds'.
+// it an entry each). The further factors are cholesky_assemble_adds'. A factor whose Gram the
+// HGC streams beside the elimination (CFG::staged(fac) >= 0: its offset in a stage lane) is
+// read from `stage` (the lane the Gram source filled a pass before) instead of GRAM.
 template <class CFG>
-void cholesky_assemble_first(int s, int lane) {
+void cholesky_assemble_first(int s, int lane, const typename CFG::T stage[CFG::N_STAGE]) {
     const int w = STEP_W[s];
     if (STEP_FACTOR_BEGIN[s] < STEP_FACTOR_BEGIN[s + 1]) {
         const int fac = STEP_FACTORS[STEP_FACTOR_BEGIN[s]];
         const int cb = FACTOR_COLMAP_BEGIN[fac];
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
         const int g0 = FACTOR_GRAM_OFF[fac];
+        const int so = CFG::staged(fac);
         const int n = d * (d + 1) / 2 + d;
         int map[CFG::MAX_W + 1];
 #pragma HLS ARRAY_PARTITION variable=map complete
@@ -79,7 +82,7 @@ void cholesky_assemble_first(int s, int lane) {
                 if (k + h < n) {
                     const int a = map[p], b = map[q];
                     const int lo = b < a ? b : a, hi = b < a ? a : b;
-                    HA[lane][lo][hi >> 1][hi & 1] = GRAM[g0 + k + h];
+                    HA[lane][lo][hi >> 1][hi & 1] = so >= 0 ? stage[so + k + h] : GRAM[g0 + k + h];
                     if (q == p) {
                         q = 0;
                         ++p;
@@ -105,8 +108,9 @@ void cholesky_assemble_first(int s, int lane) {
 enum { CHOLESKY_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEPMAP) > 0 };
 
 template <class CFG>
-void cholesky_add_segment(bool child, int cb, int d, int g0, int mb, int sc, int u0, int w,
-                          const typename CFG::T nf[CFG::N_NF], int lane) {
+void cholesky_add_segment(bool child, int cb, int d, int g0, int so, int mb, int sc, int u0,
+                          int w, const typename CFG::T nf[CFG::N_NF],
+                          const typename CFG::T stage[CFG::N_STAGE], int lane) {
     typedef typename CFG::T T;
     const int n = child ? sc * (sc + 1) / 2 + sc : d * (d + 1) / 2 + d;
     for (int k = 0, x = 0, y = 0; k < n; ++k) {
@@ -122,7 +126,7 @@ void cholesky_add_segment(bool child, int cb, int d, int g0, int mb, int sc, int
         } else {
             a = x < d ? FACTOR_COLMAP[cb + x] : w;
             b = FACTOR_COLMAP[cb + y];
-            v = GRAM[g0 + k];
+            v = so >= 0 ? stage[so + k] : GRAM[g0 + k];
         }
         const int lo = b < a ? b : a, hi = b < a ? a : b;
         HA[lane][lo][hi >> 1][hi & 1] += v;
@@ -144,7 +148,8 @@ void cholesky_add_segment(bool child, int cb, int d, int g0, int mb, int sc, int
 // one adder.
 template <class CFG>
 void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
-                            const typename CFG::T nf[CFG::N_NF], int lane) {
+                            const typename CFG::T nf[CFG::N_NF],
+                            const typename CFG::T stage[CFG::N_STAGE], int lane) {
 #pragma HLS ALLOCATION function instances=cholesky_add_segment<CFG> limit=1
     if (fs >= 0) {
         const int w = STEP_W[fs];
@@ -153,7 +158,8 @@ void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
             const int fac = STEP_FACTORS[e];
             const int cb = FACTOR_COLMAP_BEGIN[fac];
             cholesky_add_segment<CFG>(false, cb, FACTOR_COLMAP_BEGIN[fac + 1] - cb,
-                                      FACTOR_GRAM_OFF[fac], 0, 0, 0, w, nf, lane);
+                                      FACTOR_GRAM_OFF[fac], CFG::staged(fac), 0, 0, 0, w, nf,
+                                      stage, lane);
         }
     }
     if (CHOLESKY_HAS_CHILDREN && kids >= 0) {
@@ -162,8 +168,8 @@ void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
             const int c = STEP_CHILDREN[e];
             if (int(odd[c]) != par) continue;  // in the other NF lane: the other pass's
-            cholesky_add_segment<CFG>(true, 0, 0, 0, STEP_SEPMAP_BEGIN[c], STEP_W[c] - STEP_F[c],
-                                      STEP_NF_OFF[c], w, nf, lane);
+            cholesky_add_segment<CFG>(true, 0, 0, 0, -1, STEP_SEPMAP_BEGIN[c],
+                                      STEP_W[c] - STEP_F[c], STEP_NF_OFF[c], w, nf, stage, lane);
         }
     }
 }
@@ -173,11 +179,13 @@ void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
 // gradient), two columns of a row a cycle (fgc_cpe.h's cpe_pair: columns i + 2j and
 // i + 2j + 1, one from each bank, the word past the gradient of a row of an odd count a zero
 // nobody writes), each cleared as it is read (a read and a write a cycle in each bank); then
-// step `next`'s factor Grams into the other lane (none if next < 0); then step kids's children
-// at positions of parity rd from nfr (NF[rd]) into HA[kid_lane] (none if kids < 0).
+// step `next`'s factor Grams into the other lane (none if next < 0; streamed ones from the stage
+// lane `stage`); then step kids's children at positions of parity rd from nfr (NF[rd]) into
+// HA[kid_lane] (none if kids < 0).
 template <class CFG>
 void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int rd,
                         const bool odd[N_STEPS], const typename CFG::T nfr[CFG::N_NF],
+                        const typename CFG::T stage[CFG::N_STAGE],
                         hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out) {
     typedef typename CFG::T T;
     enum { MAX_PAIRS = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 };
@@ -205,8 +213,8 @@ void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int r
         }
     }
     FGC_CYCLES("assemble", 0, "source", pairs, CFG::MOVE_II, CFG::MOVE_DEPTH);
-    if (next >= 0) cholesky_assemble_first<CFG>(next, kid_lane);
-    cholesky_assemble_adds<CFG>(next, kids, rd, odd, nfr, kid_lane);
+    if (next >= 0) cholesky_assemble_first<CFG>(next, kid_lane, stage);
+    cholesky_assemble_adds<CFG>(next, kids, rd, odd, nfr, stage, kid_lane);
 }
 
 // The cascade's process of the cholesky_overlap region: step s factored from the stream, the
@@ -222,6 +230,7 @@ void cholesky_cascade(int s, typename CFG::T mu,
                              not_pd, singular);
 }
 
+#ifndef FGC_ELIMINATE_BESIDE  // (else: cholesky_eliminate_beside, below)
 // One DATAFLOW region: step s streamed from HA[lane] through the cascade (its update matrix
 // into nfw) while the assembler puts step `next`'s factor Grams into the other lane and adds
 // step kids's children that nfr holds (cholesky_assembler). nfr and nfw are the two NF lanes:
@@ -237,7 +246,8 @@ void cholesky_overlap(int s, int lane, int next, int kids, int kid_lane, int rd,
     enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
     hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal;
 #pragma HLS STREAM variable=frontal depth=DEPTH
-    cholesky_assembler<CFG>(s, lane, next, kids, kid_lane, rd, odd, nfr, frontal);
+    cholesky_assembler<CFG>(s, lane, next, kids, kid_lane, rd, odd, nfr, STAGE_NONE,
+                            frontal);
     cholesky_cascade<CFG>(s, mu, frontal, nfw, not_pd, singular);
     FGC_DRAINED(&frontal, 1);  // csim only (fgc_cycles.h)
 }
@@ -294,6 +304,104 @@ bool cholesky_eliminate_all(typename CFG::T mu) {
     }
     return ok;
 }
+#endif  // !FGC_ELIMINATE_BESIDE
+
+#ifdef FGC_ELIMINATE_BESIDE
+// ---- the HGC beside the elimination (accel.cpp.jinja's linearize_solve; units/cholesky.py's
+// beside_passes). The block type with the longest HGC region (the kernel's streamed type)
+// writes its Grams into a stream, its instances in the order the elimination reaches their
+// steps, while the elimination runs: each pass of cholesky_overlap_beside gains a third
+// process, the Gram source (CFG::gram_source: the kernel's, on the streamed type's tables),
+// which puts a step's streamed Grams into a stage lane - from the stream on the first solve of
+// a linearisation (and keeps them in GRAM_B), from GRAM_B on LM's retries - one pass before the
+// assembler reads them from that lane. The stage lanes follow NF's scheme: the two parity call
+// sites pass (lane written, lane read) as different arrays, so each lane has one process a pass.
+// CFG: LesConfig plus Word (the stream's word), N_STAGE (a lane's words), staged(fac) (the
+// factor's offset in a lane, -1 if not streamed) and gram_source(s, relin, lane, grams).
+
+// The source's process: step s's streamed Grams into `stagew` (none if s < 0).
+template <class CFG>
+void cholesky_gram_source(int s, bool relin, typename CFG::T stagew[CFG::N_STAGE],
+                          hls::stream<typename CFG::Word>& grams) {
+    FGC_BRANCH();  // csim cycle counting only: beside the assembler and the cascade
+    if (s >= 0) CFG::gram_source(s, relin, stagew, grams);
+}
+
+// One pass: cholesky_overlap's region (the cascade on step s beside the assembler) with the
+// Gram source putting step `src`'s streamed Grams into stagew while the assembler reads step
+// `next`'s from stager.
+template <class CFG>
+void cholesky_overlap_beside(int s, int lane, int next, int kids, int kid_lane, int rd, int src,
+                             bool relin, typename CFG::T mu, const bool odd[N_STEPS],
+                             const typename CFG::T nfr[CFG::N_NF], typename CFG::T nfw[CFG::N_NF],
+                             const typename CFG::T stager[CFG::N_STAGE],
+                             typename CFG::T stagew[CFG::N_STAGE],
+                             hls::stream<typename CFG::Word>& grams, bool* not_pd,
+                             bool* singular) {
+#pragma HLS DATAFLOW
+    enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
+    hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal;
+#pragma HLS STREAM variable=frontal depth=DEPTH
+    cholesky_gram_source<CFG>(src, relin, stagew, grams);
+    cholesky_assembler<CFG>(s, lane, next, kids, kid_lane, rd, odd, nfr, stager, frontal);
+    cholesky_cascade<CFG>(s, mu, frontal, nfw, not_pd, singular);
+    FGC_DRAINED(&frontal, 1);  // csim only (fgc_cycles.h)
+}
+
+// cholesky_eliminate_all with the Gram source: the passes of cholesky_overlap_beside, first the
+// source alone (the first step's streamed Grams into stage lane 0), then as
+// cholesky_eliminate_all's, the source of the pass that assembles step t + 1 (the region of
+// step t, or the first step's Grams for t = -1) putting step t + 2's into stage lane t % 2.
+// relin: the first solve of a linearisation (the Grams from the stream, the phase hgc_beside,
+// each pass whose source reads the stream gated by the producer's last instance of its step),
+// else a retry (from GRAM_B). ok false if any step was not positive definite.
+template <class CFG>
+void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
+                               hls::stream<typename CFG::Word>& grams, bool& ok) {
+#pragma HLS ARRAY_PARTITION variable=HA complete dim=4
+#pragma HLS ARRAY_PARTITION variable=NF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=STAGE complete dim=1
+    FGC_PHASE(relin ? "hgc_beside" : "reassemble");
+    bool odd[N_STEPS];
+    for (int i = 0; i < N_STEPS; ++i) {
+#pragma HLS PIPELINE II=1
+        odd[LEVEL_STEPS[i]] = (i & 1) != 0;
+    }
+    FGC_CYCLES("assemble", 0, "lanes", N_STEPS, CFG::FILL_II, CFG::FILL_DEPTH);
+    bool good = true;
+#pragma HLS ALLOCATION function instances=cholesky_overlap_beside<CFG> limit=1
+    for (int j = -1; j <= 2 * N_STEPS; ++j) {
+        const int i = j < 0 ? -2 : (j - 1) >> 1;  // the step (position) of the pass
+        const bool region = j > 0 && (j & 1) == 0;
+        const int lane = i >= 0 ? (i & 1) : (j < 0 ? 0 : 1), rd = 1 - lane;
+        const int step = i >= 0 ? LEVEL_STEPS[i] : -1;
+        const int next = j >= 0 && i + 1 < N_STEPS ? LEVEL_STEPS[i + 1] : -1;
+        const int s = region ? step : -1;
+        const int grams_of = region || j == 0 ? next : -1;
+        const int kids = region || j == 0 ? next : (j < 0 ? -1 : step);
+        const int kid_lane = region || j == 0 ? rd : lane;
+        // the source: the step two positions on (j < 0: the first; j == 0: the second)
+        const int at = j < 0 ? 0 : (region || j == 0 ? i + 2 : -1);
+        const int src = at >= 0 && at < N_STEPS && CFG::streams(LEVEL_STEPS[at])
+                            ? LEVEL_STEPS[at] : -1;
+        FGC_PHASE(relin ? "hgc_beside" : (region ? "recholesky" : "reassemble"));
+        if (relin && src >= 0) FGC_BESIDE_GATE(CFG::last_streamed(src), CFG::MOVE_DEPTH);
+        bool not_pd = false, singular = false;
+        if (rd == 1) {
+            cholesky_overlap_beside<CFG>(s, lane, grams_of, kids, kid_lane, 1, src, relin, mu,
+                                         odd, NF[1], NF[0], STAGE[1], STAGE[0], grams, &not_pd,
+                                         &singular);
+        } else {
+            cholesky_overlap_beside<CFG>(s, lane, grams_of, kids, kid_lane, 0, src, relin, mu,
+                                         odd, NF[0], NF[1], STAGE[0], STAGE[1], grams, &not_pd,
+                                         &singular);
+        }
+        FGC_JOIN();
+        good = good && !singular;
+    }
+    ok = good;
+}
+#endif  // FGC_ELIMINATE_BESIDE
 #endif  // FGC_ELIMINATE_CHOLESKY
 
 #ifdef FGC_ELIMINATE_QR

@@ -59,7 +59,7 @@ class Process:
     def fill(self) -> int:
         return self.loops[0].depth if self.loops else 0
 
-PHASE_PER = ("iteration", "call", "rejection", "stream")
+PHASE_PER = ("iteration", "call", "rejection", "stream", "beside")
 
 
 @dataclass(frozen=True)
@@ -71,7 +71,9 @@ class Phase:
     # how often it runs: "iteration" (once an iteration: in Cost.cycles), "call" (once per
     # accelerator call: the top's copies in and out), "rejection" (when a trial step does not
     # lower the cost: the rounding-noise pass), "stream" (the on-chip stream section's loops, once
-    # per update that runs them: plan/stream.py); all but the first are in Cost.other_cycles
+    # per update that runs them: plan/stream.py), "beside" (the HGC producer's region beside the
+    # elimination: priced inside the phase hgc_beside, units/cholesky.py's _beside); all but the
+    # first are in Cost.other_cycles
     per: str = "iteration"
 
 

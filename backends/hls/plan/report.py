@@ -70,7 +70,9 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
     """The dataflow processes and streams the emitter prints for ``plan``: the linear solver's
     (the unit headers' regions: per QR unit set broadcast, qr_finish, n_u Update units,
     Evaluate and collect; for Cholesky the feed, per process element its tap and CPE, and the
-    drain, then fgc_eliminate.h's cholesky_overlap: the assembler beside the cascade),
+    drain, then fgc_eliminate.h's cholesky_overlap: the assembler beside the cascade; with two
+    cascades both cascades' and fgc_cascades.h's cholesky_sets: the source, the grams process,
+    the two cascades and the committer),
     then back-substitution's (fgc_backsub.h's ``backsub_lane<p>`` regions: lane p's
     ``backsub_set<p>`` beside the other lane's ``backsub_load``, :func:`backsub_units` lanes;
     and back_substitute's region: the slot process beside the state update it feeds,
@@ -87,10 +89,20 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
             f"qr{s}_broadcast", f"qr{s}_finish",
             *(f"qr{s}_update{u}" for u in range(plan.options.units)),
             f"qr{s}_evaluate", f"qr{s}_collect"))
+    elif any(u.name == "cpe_set1" for u in plan.units):  # fgc_cascades.h's cholesky_sets
+        procs = tuple(p for k in ("cpe_", "cpe1_") for p in (
+            f"{k}feed", *(p for i in range(plan.options.cpe) for p in (
+                f"{k}tap{i}", f"cpe{i}" if k == "cpe_" else f"{k}{i}")), f"{k}drain"))
+        procs += ("cholesky_set_source", "cholesky_set_grams", "cholesky_set_cascade0",
+                  "cholesky_set_cascade1", "cholesky_set_commit")
     else:
+        # the HGC beside the elimination: the Gram source beside the assembler (its Gram
+        # stream is the plan's channel "grams")
+        source = ("cholesky_gram_source",) if any(
+            ph.name == "hgc_beside" for ph in plan.phases) else ()
         procs = ("cpe_feed", *(p for i in range(plan.options.cpe)
                                for p in (f"cpe_tap{i}", f"cpe{i}")), "cpe_drain",
-                 "cholesky_assembler", "cholesky_cascade")
+                 *source, "cholesky_assembler", "cholesky_cascade")
     procs += ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
     if any(ch.name == "backsub_dx" for ch in plan.channels):  # the state update it feeds
         procs += ("backsub_slots", "backsub_retire")
@@ -104,6 +116,7 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
 PHASE_TRIGGER = {"setup": "call", "factor_jacobian": "linearize", "gradient": "linearize",
                  "hgc": "linearize", "qr_stack": "solve", "qr": "solve", "qr_commit": "solve",
                  "backsub": "solve", "assemble": "solve", "cholesky": "solve", "store": "solve",
+                 "hgc_beside": "linearize", "reassemble": "resolve", "recholesky": "resolve",
                  "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
                  "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}
 

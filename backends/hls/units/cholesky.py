@@ -6,12 +6,22 @@ whole [H | g] (dense, or its envelope: "blocked") through one cascade."""
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
 from fgc_backends.cost.operators import OperatorTable
+from fgc_backends.hls.plan.cost import phase_cycles
 from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_loop
-from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, Process, Unit
+from fgc_backends.hls.plan.model import (
+    Channel,
+    Loop,
+    Memory,
+    Phase,
+    PlanError,
+    Process,
+    Unit,
+)
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
 
@@ -63,9 +73,15 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
             loops.append(Loop(f"{name}_back{r}", (k * (k + 1) // 2 + k + 1) // 2, 1, 2))
     if frontal == 0:
         loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 2))
-    loops.append(Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2))
-    loops.append(Loop(f"{name}_pivot_check", 1 if frontal else 0, 1, ops.div.latency + 2))
-    return loops
+    return loops + cpe_check_loops(frontal, ops, name)
+
+
+def cpe_check_loops(frontal: int, ops: OperatorTable, name: str = "s") -> list[Loop]:
+    """fgc_cpe.h's cpe_check (the end of cpe_step): the singularity scale with the smallest
+    pivot beside it (trip f, depth Lm + Ld + 2) and the pivot check (the smallest pivot over
+    the scale: trip 1, depth Ld + 2)."""
+    return [Loop(f"{name}_scale", frontal, 1, ops.mul.latency + ops.div.latency + 2),
+            Loop(f"{name}_pivot_check", 1 if frontal else 0, 1, ops.div.latency + 2)]
 
 
 def _gram_rows(block) -> dict[tuple[int, int], tuple[int, ...]]:
@@ -363,6 +379,263 @@ def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
     return phases
 
 
+def beside_block(phases, program) -> int | None:
+    """The block type whose HGC runs beside the elimination (accel.cpp.jinja's
+    linearize_solve): the one with the longest ``hgc_level<b>`` region (the first of equals),
+    if it has instances and every one of them is some step's factor; None otherwise."""
+    cycles = {int(ph.name[len("hgc_level"):]): phase_cycles(ph) for ph in phases
+              if ph.name.startswith("hgc_level")}
+    if not cycles:
+        return None
+    big = max(sorted(cycles), key=lambda b: cycles[b])
+    return big if any(f.block == big for f in program.factors) else None
+
+
+def beside_layout(program, tables: dict, order: list[int], big: int) -> dict:
+    """Where block ``big``'s streamed Grams go (accel.cpp.jinja's tables of the HGC beside the
+    elimination): ``order`` (its factors in the order the elimination, LEVEL_STEPS ``order``,
+    reaches their steps, each step's in STEP_FACTORS order: the stream's), ``factor_stage``
+    (per factor its offset in a stage lane, -1 if not streamed), ``step_first`` /
+    ``step_count`` (per step its first streamed instance in the stream and how many), ``nb``
+    (a packed Gram's words, b^T b included: an entry the HGC may write, the assembly never
+    reads), ``n_stage`` (a lane's words), ``max_per_step``."""
+    fb, sf = tables["STEP_FACTOR_BEGIN"], tables["STEP_FACTORS"]
+    cb = tables["FACTOR_COLMAP_BEGIN"]
+    n_steps = len(order)
+    facs = {s: [sf[e] for e in range(fb[s], fb[s + 1]) if program.factors[sf[e]].block == big]
+            for s in order}
+    stream = [f for s in order for f in facs[s]]
+    if sorted(stream) != [i for i, f in enumerate(program.factors) if f.block == big]:
+        raise PlanError(f"block {big}: not every instance is one step's factor (the HGC "
+                        "beside the elimination streams each once)")
+    d = cb[stream[0] + 1] - cb[stream[0]]
+    nb = (d + 1) * (d + 2) // 2  # [A | b]'s packed lower triangle, b^T b included (as in GRAM)
+    factor_stage = [-1] * len(program.factors)
+    first, count = [0] * n_steps, [0] * n_steps
+    k = 0
+    for s in order:
+        first[s], count[s] = k, len(facs[s])
+        for j, f in enumerate(facs[s]):
+            factor_stage[f] = j * nb
+        k += len(facs[s])
+    most = max(count)
+    return {"order": stream, "factor_stage": factor_stage, "step_first": first,
+            "step_count": count, "nb": nb, "n_stage": most * nb, "max_per_step": most}
+
+
+def beside_ready(count: int, jac: Loop, rows: int, steps: int, ii: int, depth: int) -> list[int]:
+    """When the producer's instance k's Gram is complete, cycles after linearize_solve starts
+    (fgc_cycles.h's ready_chain): its entries start k II_jac + the datapath's depth + the rows'
+    loop (``rows`` cycles) after, or ``steps`` iterations of the entries loop (II ``ii``) after
+    the instance before's, whichever is later, and end (steps - 1) ii + ``depth`` later."""
+    out, prev = [], 0
+    for k in range(count):
+        start = k * jac.ii + jac.depth + rows
+        if k > 0:
+            start = max(start, prev + steps * ii)
+        out.append(start + (steps - 1) * ii + depth)
+        prev = start
+    return out
+
+
+def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: OperatorTable,
+                  timing: dict, lay: dict, relin: bool, steps: int, ii: int
+                  ) -> list[tuple[Phase, int | None]]:
+    """fgc_eliminate.h's cholesky_eliminate_beside, pass by pass: (the pass as a phase, the
+    producer's instance its Gram source waits for or None). Phase ``reassemble`` (the lanes'
+    parity loop), then the source alone (the first step's streamed Grams into stage lane 0), the
+    first step's assembly beside the source of the second, and as :func:`elimination_phases`'
+    passes (the assembler alone adding children: ``reassemble_level<j>``; a step's region:
+    ``recholesky_level<t>``) with, beside the region of step t, the source of step t + 2. The
+    source (``relin``: the first solve of a linearisation) takes a stream word every ``ii``
+    cycles (``steps`` an instance) or (a retry) two words of GRAM_B a cycle."""
+    odd = {s: t % 2 for t, s in enumerate(order)}
+    for e in range(len(tables["STEP_CHILDREN"])):
+        odd.setdefault(tables["STEP_CHILDREN"][e], 0)
+    move_depth = timing["move"][1]
+
+    def source(t: int) -> tuple[tuple[Process, ...], int | None]:
+        if t >= len(order) or not lay["step_count"][order[t]]:
+            return (), None
+        s = order[t]
+        n = lay["step_count"][s]
+        loop = (Loop("stream", n * steps, ii, move_depth) if relin
+                else kernel_loop("kept", -(-n * lay["nb"] // 2), "move", timing))
+        return (Process(f"gram_source{s}", "cpe", (loop,)),), (
+            lay["step_first"][s] + n - 1 if relin else None)
+
+    passes: list[tuple[Phase, int | None]] = [(Phase("reassemble", False, (
+        Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),),
+        linear=True), None)]
+    j = 0
+
+    def alone(procs, gate):
+        nonlocal j
+        passes.append((Phase(f"reassemble_level{j}", True, procs, linear=True), gate))
+        j += 1
+
+    alone(*source(0))
+    src, gate = source(1)
+    first = (Process("assemble_first", "cpe", tuple(assemble_loops(
+        tables, order[0], timing, odd=odd, par=0))),) if order else ()
+    alone(src + first, gate)
+    for t, s in enumerate(order):
+        alone((Process(f"assemble{s}", "cpe", tuple(assemble_loops(
+            tables, s, timing, grams=False, odd=odd, par=1 - odd[s]))),), None)
+        nxt = order[t + 1] if t + 1 < len(order) else -1
+        frontal, separator = dims[s]
+        src, gate = source(t + 2)
+        passes.append((Phase(f"recholesky_level{t}", True, (
+            *src,
+            Process(f"assembler{s}", "cpe", tuple(assembler_loops(tables, s, nxt, timing, odd))),
+            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
+                frontal, separator, cpe, ops, name=f"s{s}")))), linear=True), gate))
+    return passes
+
+
+def beside_cycles(producer: int, ready: list[int], passes, move_depth: int) -> tuple[int, int]:
+    """linearize_solve's cycles (fgc_cycles.h's beside_total): the later of the producer's end
+    (``producer``, its region's cycles, or its last instance's ``ready``, if later) and the
+    consumer's, its ``passes`` one after another,
+    a pass whose source waits for instance k ending no earlier than ``move_depth`` after
+    ``ready[k]``; and the cycles the consumer waited in all."""
+    t = waited = 0
+    # the producer's region: its slower process plus the other's fill, but no sooner than its
+    # last Gram (reduce_<b> starts only after the datapath's first rows, so where it is the
+    # slower process the fill rule under-prices it)
+    producer = max([producer, *ready])
+    for phase, gate in passes:
+        t += phase_cycles(phase)
+        if gate is not None and ready[gate] + move_depth > t:
+            waited += ready[gate] + move_depth - t
+            t = ready[gate] + move_depth
+    return max(producer, t), waited
+
+
+def cascade_regions(tables: dict, order: list[int]) -> list[tuple[int, int]]:
+    """Two cascades (``unit_sets=2``): the steps ``order`` (LEVEL_STEPS) as regions of at most
+    two independent steps, (cascade 0's step, cascade 1's), -1 for an idle cascade: consecutive
+    steps of ``order`` go side by side unless the second is a parent of the first (on a
+    two-ended chain the two ends alternate, so every region but the root's holds one step of
+    each end). A step goes to the cascade that factored one of its children in the region
+    before (its assembler streams that child's update matrix into the cascade: its words are
+    read where the drain left them, no pass adds them), cascade 0 when neither did."""
+    cb, kids = tables["STEP_CHILD_BEGIN"], tables["STEP_CHILDREN"]
+
+    def children(s):
+        return {kids[e] for e in range(cb[s], cb[s + 1])} if s >= 0 else set()
+
+    regions: list[tuple[int, int]] = []
+    t = 0
+    while t < len(order):
+        a = order[t]
+        b = order[t + 1] if t + 1 < len(order) and a not in children(order[t + 1]) else -1
+        prev = regions[-1] if regions else (-1, -1)
+
+        def on(s, k, prev=prev):  # s's child was factored by cascade k in the region before
+            return s >= 0 and prev[k] >= 0 and prev[k] in children(s)
+
+        swap = (on(a, 1) or on(b, 0)) and not (on(a, 0) or on(b, 1))
+        regions.append((b, a) if swap else (a, b))
+        t += 2 if b >= 0 else 1
+    return regions
+
+
+def cascade_children(tables: dict, regions: list[tuple[int, int]]
+                     ) -> dict[int, tuple[int, tuple[int, ...]]]:
+    """Step -> (its streamed child or -1, its children added alone) with two cascades
+    (:func:`cascade_regions`): a child its own cascade factored in the region just before is
+    streamed (its update matrix added to the step's words as the source streams them into the
+    cascade, fgc_cascades.h's cholesky_set_source: that NF lane is the source's to read); any
+    other (the other cascade's, or older) is added in a pass of its own before the step's
+    region (its NF lane may be another process's in the region)."""
+    where = {s: (r, k) for r, reg in enumerate(regions) for k, s in enumerate(reg) if s >= 0}
+    cb, kids = tables["STEP_CHILD_BEGIN"], tables["STEP_CHILDREN"]
+    out = {}
+    for s, (r, k) in where.items():
+        streamed, alone = -1, []
+        for e in range(cb[s], cb[s + 1]):
+            c = kids[e]
+            if where[c] == (r - 1, k):
+                streamed = c
+            else:
+                alone.append(c)
+        out[s] = (streamed, tuple(alone))
+    return out
+
+
+def _child_loop(tables: dict, c: int, timing: dict) -> Loop:
+    sc = tables["STEP_W"][c] - tables["STEP_F"][c]
+    return kernel_loop("child", sc * (sc + 1) // 2 + sc, "scatter", timing)
+
+
+def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
+                    ops: OperatorTable, timing: dict) -> list[Phase]:
+    """cholesky_eliminate_sets' phases (fgc_cascades.h, two cascades), passes of its one
+    cholesky_sets region: phase ``assemble`` (the grams process alone: the first region's
+    steps' Grams), then per region r of :func:`cascade_regions` (after a phase
+    ``assemble_level<r>`` when a step of it has children added alone, :func:`cascade_children`:
+    a scatter loop each) the region ``cholesky_level<r>``:
+
+    - per cascade its step's ``cpe_step`` rounds (:func:`cpe_step_loops` but its check);
+    - the source: the streamed children's separator maps into registers (``move``, trip the
+      larger separator), then both steps' words, two of a row a cycle each (trip the larger
+      step's :func:`cpe_pairs`; ``move``, or ``scatter`` with a streamed child's words added);
+    - the grams process: the next region's steps' Grams into the other lanes
+      (:func:`assemble_loops`);
+    - the committer: the region before's conditionals from CONDBUF into COND, two words a
+      cycle, each step's pivot check after its copy (:func:`cpe_check_loops`: off the
+      cascade's path);
+
+    last ``cholesky_level<regions>``: the committer alone on the last region's."""
+    regions = cascade_regions(tables, order)
+    kids = cascade_children(tables, regions)
+    sw, sf = tables["STEP_W"], tables["STEP_F"]
+
+    def grams(reg):
+        return tuple(lp for s in reg if s >= 0
+                     for lp in assemble_loops(tables, s, timing, children=False))
+
+    def commit(reg):  # each conditional copied, then its pivots checked (cpe_check)
+        return tuple(lp for s in reg if s >= 0 for lp in (
+            kernel_loop(f"cond{s}", -(-sf[s] * (sw[s] + 1) // 2), "move", timing),
+            *cpe_check_loops(sf[s], ops, name=f"s{s}")))
+
+    phases = [Phase("assemble", False, (Process("grams", "cpe", grams(regions[0])),)
+                    if regions else (), linear=True)]
+    for r, reg in enumerate(regions):
+        alone = [(s, c) for s in reg if s >= 0 for c in kids[s][1]]
+        if alone:
+            phases.append(Phase(f"assemble_level{r}", False, tuple(
+                Process(f"alone{s}_{c}", "cpe", (_child_loop(tables, c, timing),))
+                for s, c in alone), linear=True))
+        procs = []
+        for s in reg:
+            if s >= 0:
+                # the two cascades start together on the source's words: a cascade's fill (what
+                # it adds beside the slower one) is its feed's depth, La + 2 (the round's depth
+                # is in its cycles), the trip-0 loop that heads its loops
+                frontal, separator = dims[s]
+                procs.append(Process(f"cascade{s}", "cpe", (
+                    Loop(f"s{s}_fill", 0, 1, ops.add.latency + 2),
+                    *cpe_step_loops(frontal, separator, cpe, ops, name=f"s{s}")[:-2])))
+        streamed = [kids[s][0] for s in reg if s >= 0 and kids[s][0] >= 0]
+        source = [kernel_loop("inv", max(sw[c] - sf[c] for c in streamed), "move", timing)
+                  ] if streamed else []
+        source.append(kernel_loop("source", max(cpe_pairs(sw[s]) for s in reg if s >= 0),
+                                  "scatter" if streamed else "move", timing))
+        procs.append(Process(f"source{r}", "cpe", tuple(source)))
+        if r + 1 < len(regions):
+            procs.append(Process(f"grams{r}", "cpe", grams(regions[r + 1])))
+        if r > 0:
+            procs.append(Process(f"committer{r}", "cpe", commit(regions[r - 1])))
+        phases.append(Phase(f"cholesky_level{r}", True, tuple(procs), linear=True))
+    if regions:
+        phases.append(Phase(f"cholesky_level{len(regions)}", False, (Process(
+            "committer", "cpe", commit(regions[-1])),), linear=True))
+    return phases
+
+
 def hessian_envelope(program) -> list[int]:
     """For each column j of H (variables in the Program's order), its lowest structurally
     non-zero row: H's envelope, which the Cholesky factor fills and does not leave."""
@@ -447,56 +720,144 @@ def build(ctx) -> None:
                                ops.word_bits, max(1, c // 4)))
 
 
+def cascades_of(program, opts) -> int:
+    """Cholesky cascades (``unit_sets``: 1 unless set; 2 factors two independent steps side by
+    side, :func:`cascades_phases`); more than 2 is an error, and a schedule of one step has
+    one."""
+    sets = 1 if opts.unit_sets is None else int(opts.unit_sets)
+    if sets > 2:
+        from fgc_backends.hls.config import HlsConfigError
+        raise HlsConfigError(f"Cholesky: unit_sets={sets}: the design has one or two cascades "
+                             "(unit_sets 1 or 2)")
+    return max(1, min(sets, len(program.schedule.steps)))
+
+
+def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
+    """The HGC beside the elimination (accel.cpp.jinja's linearize_solve, fgc_eliminate.h's
+    cholesky_eliminate_beside): block ``big``'s region hgc_level<big> leaves the linearisation;
+    phase ``hgc_beside`` (once an iteration) is the producer (that region's loops, the
+    instances in step order) beside the first solve's elimination with its Gram source
+    (:func:`beside_cycles` on :func:`beside_passes`), and LM's retries re-solve from GRAM_B
+    (phases ``reassemble`` / ``recholesky_level<t>``, per rejection). Memories: the two stage
+    lanes, GRAM_B and the Gram stream (a step's words)."""
+    program, ops, tables, timing = ctx.program, ctx.les, ctx.tables, ctx.les_timing
+    at = next(k for k, (_, ph) in enumerate(ctx.phases) if ph.name == f"hgc_level{big}")
+    slot, region = ctx.phases[at]
+    procs = {p.name: p for p in region.processes}
+    jac = procs[f"factor_{big}_jacobian"].loops[0]
+    rows, entries = procs[f"reduce_{big}"].loops[:2]
+    lay = beside_layout(program, tables, order, big)
+    steps = entries.trip // len(lay["order"])
+    ready = beside_ready(len(lay["order"]), jac, rows.cycles, steps, entries.ii, entries.depth)
+    first = beside_passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps,
+                          entries.ii)
+    cycles, _ = beside_cycles(phase_cycles(region), ready, first, timing["move"][1])
+    # the producer's region stays in the plan for the record (per "beside": priced inside
+    # hgc_beside, not on its own)
+    ctx.phases[at:at + 1] = [(slot, Phase("hgc_beside", False, (Process(
+        f"linearize_solve_{big}", "cpe", (Loop("region", 1, 1, cycles),)),), linear=True)),
+        (slot, replace(region, name="hgc_producer", per="beside"))]
+    for phase, _ in beside_passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, False,
+                                  steps, entries.ii):
+        ctx.add_phase("solve", replace(phase, per="rejection"))
+    _, lane_b, _, paired = gram_config(program, big, ctx.opts.hgc_lanes,
+                                       jacobian_ii(region.processes),
+                                       jacobian_cycles(region.processes))
+    slots = (2 if paired else 1) + (1 if lane_b else 0)  # accel.cpp.jinja's GramWord
+    ctx.memories.append(Memory("stage", 2 * lay["n_stage"], ops.word_bits, 1))
+    ctx.memories.append(Memory("gram_kept", len(lay["order"]) * lay["nb"], ops.word_bits, 1))
+    ctx.channels.append(Channel("grams", "stream", lay["max_per_step"] * steps,
+                                slots * ops.word_bits, f"reduce_{big}", "gram_source"))
+
+
 def _frontal(ctx) -> None:
     """The emitted multifrontal Cholesky: per elimination step its frontal [H | g] streamed from
     its lane of HA into fgc_cpe.h's cpe_step (feed -> #CPE taps and CPEs -> drain per round of
     #CPE pivots), whose drain writes the conditional into COND and the update matrix into its NF
     lane, while the assembler fills the other HA lane with the next step's Grams and children
     (fgc_eliminate.h's cholesky_overlap; back-substitution step by step is
-    :mod:`fgc_backends.hls.units.backsub`'s)."""
+    :mod:`fgc_backends.hls.units.backsub`'s). Two cascades (:func:`cascades_of`): each with its
+    own CPEs, feed and drain, assembler (two lanes of HA, streaming its step's streamed child
+    in: two more adders), NF lanes and CONDBUF lanes, and a committer that copies the
+    conditionals into COND beside the next region (fgc_cascades.h's cholesky_sets region)."""
     program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
+    sets = cascades_of(program, ctx.opts)
     sizes = ctx.sizes
     cols = sizes["MAX_W"] + 1
     # cpe_round's streams: link[0 ... #CPE] (feed -> tap 0, CPE K -> tap K + 1, CPE #CPE - 1 ->
     # drain), tapped[K] (tap K -> CPE K, deep enough for the tap never to stall while its CPE
-    # waits for r) and recip[K] (r = 1 / d, tap K -> CPE K)
-    for i in range(c + 1):
-        ctx.channels.append(Channel(f"cpe_link{i}", "stream", sizes["MAX_W"], ops.word_bits,
-                                    "cpe_feed" if i == 0 else f"cpe{i - 1}",
-                                    f"cpe_tap{i}" if i < c else "cpe_drain"))
-    for i in range(c):
-        ctx.channels.append(Channel(f"cpe_tapped{i}", "stream", cols + ops.div.latency + 2,
-                                    ops.word_bits, f"cpe_tap{i}", f"cpe{i}"))
-        ctx.channels.append(Channel(f"cpe_recip{i}", "stream", 2, ops.word_bits,
-                                    f"cpe_tap{i}", f"cpe{i}"))
+    # waits for r) and recip[K] (r = 1 / d, tap K -> CPE K); per cascade
+    for k in range(sets):
+        pre = "cpe_" if k == 0 else f"cpe{k}_"  # the first cascade's keep their names
+
+        def cpe(i, pre=pre):
+            return f"{pre[:-1]}{i}" if pre == "cpe_" else f"{pre}{i}"
+
+        for i in range(c + 1):
+            ctx.channels.append(Channel(f"{pre}link{i}", "stream", sizes["MAX_W"],
+                                        ops.word_bits, f"{pre}feed" if i == 0 else cpe(i - 1),
+                                        f"{pre}tap{i}" if i < c else f"{pre}drain"))
+        for i in range(c):
+            ctx.channels.append(Channel(f"{pre}tapped{i}", "stream", cols + ops.div.latency + 2,
+                                        ops.word_bits, f"{pre}tap{i}", cpe(i)))
+            ctx.channels.append(Channel(f"{pre}recip{i}", "stream", 2, ops.word_bits,
+                                        f"{pre}tap{i}", cpe(i)))
+    # a CPE per cascade (build's "cpe" unit counts one cascade's)
+    if sets > 1:
+        ctx.units.append(Unit("cpe_set1", "the second cascade's process elements", c,
+                              (("add", 1), ("mul", 2), ("div", 1))))
     # the feed's adder (mu on the diagonal), the singularity scale's multiplier and divider and
     # the check's divider (the smallest pivot over the scale): one operator of each a loop or
-    # statement (cpe_step's sequential code)
+    # statement (cpe_step's sequential code); two cascades: a feed each, one check (the
+    # committer's, fgc_cascades.h: one copy of cholesky_set_commit_one)
     ctx.units.append(Unit("cpe_step", "cascade feed (+ mu) and the pivot check", 1,
-                          (("add", 1), ("mul", 1), ("div", 2))))
+                          (("add", sets), ("mul", 1), ("div", 2))))
     # fgc_eliminate.h's assembly: the further factors' and the children's entries added
     # through one pipelined HA += loop at II 1 (cholesky_assemble_adds, one call site: the
     # assembler's, which also takes the first step's Grams in a region with no step to factor):
-    # one adder; the first factor is stored
+    # one adder; the first factor is stored. Two cascades: the grams process's adder, the
+    # alone pass's, and the source's four (a streamed child's word added to each of the two
+    # words of a row it streams a cycle into each cascade)
     ctx.units.append(Unit("assemble", "the step's [H | g] from Grams and update matrices", 1,
-                          (("add", 1),)))
+                          (("add", 1 if sets == 1 else 6),)))
     tables, timing = ctx.tables, ctx.les_timing
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
     dims = {st.index: (st.frontal_dim, st.separator_dim) for st in program.schedule.steps}
-    for phase in elimination_phases(tables, order, dims, c, ops, timing):
+    big = (beside_block([ph for _, ph in ctx.phases], program)
+           if ctx.opts.hgc_beside and sets == 1 and ctx.les.word_bits == ctx.ops.word_bits
+           else None)
+    if big is not None:
+        _beside(ctx, big, order, dims)
+    elif sets == 1:
+        phases = elimination_phases(tables, order, dims, c, ops, timing)
+    else:
+        phases = cascades_phases(tables, order, dims, c, ops, timing)
+    for phase in phases if big is None else ():
         ctx.add_phase("solve", phase)
     # cholesky_overlap's stream, a pair of words wide, deep enough that the assembler (a pair a
     # cycle) never waits for the feed (a word a cycle): half a step's pairs and the feed's start
     mw = sizes["MAX_W"]
-    ctx.channels.append(Channel("frontal", "stream", mw * (mw + 4) // 8 + ops.add.latency + 8,
-                                2 * ops.word_bits, "cholesky_assembler", "cpe_feed"))
+    for k in range(sets):
+        ctx.channels.append(Channel("frontal" if k == 0 else f"frontal{k}", "stream",
+                                    mw * (mw + 4) // 8 + ops.add.latency + 8, 2 * ops.word_bits,
+                                    "cholesky_assembler" if sets == 1 else "cholesky_set_source",
+                                    "cpe_feed" if k == 0 else f"cpe{k}_feed"))
     # accel.cpp.jinja's GRAM and HF (the frontal matrix of one step at a time) and cpe_step's
-    # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF)
+    # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF); per
+    # cascade two HA lanes, two NF lanes, HF and the trailing buffer (and two CONDBUF lanes)
     ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
-    ctx.memories.append(Memory("assembly", 2 * sizes["MAX_W"] * cols, ops.word_bits, 1))
-    ctx.memories.append(Memory("nf_lane1", sizes["N_NF"], ops.word_bits, 1))  # NF's second lane
-    ctx.memories.append(Memory("frontal", sizes["MAX_W"] * cols, ops.word_bits, 1))
-    ctx.memories.append(Memory("trailing", sizes["MAX_W"] * cols, ops.word_bits, 1))
+    ctx.memories.append(Memory("assembly", 2 * sets * sizes["MAX_W"] * cols, ops.word_bits, 1))
+    for lane in range(1, 2 * sets):  # NF's further lanes (solver_memories: the first)
+        ctx.memories.append(Memory(f"nf_lane{lane}", sizes["N_NF"], ops.word_bits, 1))
+    for k in range(sets):
+        ctx.memories.append(Memory("frontal" if k == 0 else f"frontal{k}",
+                                   sizes["MAX_W"] * cols, ops.word_bits, 1))
+        ctx.memories.append(Memory("trailing" if k == 0 else f"trailing{k}",
+                                   sizes["MAX_W"] * cols, ops.word_bits, 1))
+    if sets > 1:  # CONDBUF, and DPIV / RMAX (each step's pivots and rows' largest |h|)
+        ctx.memories.append(Memory("condbuf", 2 * sets * sizes["MAX_F"] * cols, ops.word_bits,
+                                   1))
+        ctx.memories.append(Memory("pivots", 2 * 2 * sets * sizes["MAX_F"], ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)
 
 

@@ -186,7 +186,8 @@ def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
                             "each block type gets a share by its instance count")
         h.add_argument("--unit-sets", type=positive_int, metavar="S",
                        help=f"{where}: unit sets eliminating a level's steps side by side, "
-                            "1 … 8 (default: 2 on a two-ended chain, else 1)")
+                            "1 … 8 (default: 2 on a two-ended chain, else 1); Cholesky: 1 or 2 "
+                            "cascades (default 1)")
         h.add_argument("--qr-unit", choices=("householder", "stream"),
                        help=f"{where}: the QR unit set: householder (paper A's, one DATAFLOW "
                             "region per reflection; the default) or stream (n_u reflection "

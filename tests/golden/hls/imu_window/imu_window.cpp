@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   50 processes, 63 streams (cpe=20)
+//   51 processes, 64 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
 //   process cpe0
@@ -53,6 +53,7 @@
 //   process cpe_tap19
 //   process cpe19
 //   process cpe_drain
+//   process cholesky_gram_source
 //   process cholesky_assembler
 //   process cholesky_cascade
 //   process backsub_set0
@@ -122,6 +123,7 @@
 //   stream cpe_recip18 depth=2: cpe_tap18 -> cpe18
 //   stream cpe_tapped19 depth=48: cpe_tap19 -> cpe19
 //   stream cpe_recip19 depth=2: cpe_tap19 -> cpe19
+//   stream grams depth=248: reduce_0 -> gram_source
 //   stream frontal depth=139: cholesky_assembler -> cpe_feed
 //   stream backsub_dx depth=30: backsub_slots -> backsub_retire
 #include "imu_window.h"
@@ -129,6 +131,7 @@
 #include "hls_stream.h"
 #include "fgc_cpe.h"
 #include "fgc_backsub.h"
+#define FGC_LM_LINEARIZE_SOLVE  // fgc_lm.h: linearize_x and solve_at share linearize_solve's one instance
 #include "fgc_lm.h"
 #include "fgc_lm_units.h"
 
@@ -2060,6 +2063,11 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
 // linearize_<b> region: a word per column of the widest block type's padded row.
 struct GramRow { T word[32]; };
 
+// The HGC beside the elimination (block 0, the longest HGC region): one word of its Gram
+// stream a gram_entries_stream iteration, the iteration's lane-A entries then its lane-B entry
+// (unused slots of an iteration with fewer entries are not read)
+struct GramWord { L v[2]; };
+
 // HGC (paper B): a block type's Grams of [A | b], instance after instance, as one pipelined
 // loop of N x STEPS iterations (no drain between instances). Iteration (i, e): entry e of
 // instance i's packed lower triangle, the structurally non-zero entries (p, q), q <= p (the
@@ -2092,13 +2100,20 @@ L gram_entry(const T bank[ROWS * PADDED], int p, int q) {
 }
 
 template <int ROWS, int COLS, int N>
+void gram_gradient(const int INST[N], const int CV[COLS - 1], const int CO[COLS - 1], int i, int p,
+                   int q, L v, bool& finite) {
+#pragma HLS INLINE
+    const int f = INST[i];
+    if (p == q) finite = finite && fgc_isfinite(T(v));
+    if (p == COLS - 1 && q < COLS - 1) G[VAR_T_OFF[FACTOR_VARS[FACTOR_VAR_BEGIN[f] + CV[q]]] + CO[q]] += T(v);
+}
+
+template <int ROWS, int COLS, int N>
 void gram_store(const int INST[N], const int CV[COLS - 1], const int CO[COLS - 1], int i, int p,
                 int q, L v, bool& finite) {
 #pragma HLS INLINE
-    const int f = INST[i];
-    GRAM[FACTOR_GRAM_OFF[f] + p * (p + 1) / 2 + q] = v;
-    if (p == q) finite = finite && fgc_isfinite(T(v));
-    if (p == COLS - 1 && q < COLS - 1) G[VAR_T_OFF[FACTOR_VARS[FACTOR_VAR_BEGIN[f] + CV[q]]] + CO[q]] += T(v);
+    GRAM[FACTOR_GRAM_OFF[INST[i]] + p * (p + 1) / 2 + q] = v;
+    gram_gradient<ROWS, COLS, N>(INST, CV, CO, i, p, q, v, finite);
 }
 
 template <int PADDED, int ROWS>
@@ -2156,6 +2171,51 @@ bool gram_entries_two(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const 
             GRAM[FACTOR_GRAM_OFF[INST[i]] + p * (p + 1) / 2 + q] = v;
             if (p == q) finite = finite && fgc_isfinite(T(v));
         }
+        if (++e == STEPS) {
+            e = 0;
+            ++i;
+        }
+    }
+    return finite;
+}
+
+// gram_entries_stream: gram_entries (A_PER = 1, ENTRIES_B = 0), gram_entries_two (A_PER = 1)
+// or gram_entries_pair (A_PER = 2, GII = 2) of the first n instances of INST, their entries not into
+// GRAM but a word an iteration into `grams` (the Gram source of the elimination puts them in
+// place); the gradient and the finiteness check as gram_store's.
+template <int PADDED, int ROWS, int COLS, int ENTRIES, int ENTRIES_B, int K, int STEPS, int N,
+          int GII, int A_PER, int SLOTS>
+bool gram_entries_stream(hls::stream<GramRow>& rows, hls::stream<GramWord>& grams,
+                         T ab[2][ROWS * PADDED], int n, const int INST[N], const int P[ENTRIES],
+                         const int Q[ENTRIES], const int PB[ENTRIES_B > 0 ? ENTRIES_B : 1],
+                         const int QB[ENTRIES_B > 0 ? ENTRIES_B : 1], const int CV[COLS - 1],
+                         const int CO[COLS - 1]) {
+    bool finite = true;
+    int i = 0, e = 0;
+    for (int t = 0; t < n * STEPS; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=N*STEPS
+#pragma HLS PIPELINE II=GII
+#pragma HLS DEPENDENCE variable=G inter false
+#pragma HLS DEPENDENCE variable=ab inter false
+        const int cur = i % 2;
+        if (e < ROWS && i + 1 < n) gram_next_row<PADDED, ROWS>(rows, ab[1 - cur], e);
+        GramWord word;
+        for (int h = 0; h < SLOTS; ++h) word.v[h] = L(0);
+        for (int h = 0; h < A_PER; ++h) {  // lane A
+            if (A_PER * e + h < ENTRIES) {
+                const int p = P[A_PER * e + h], q = Q[A_PER * e + h];
+                const L v = gram_entry<PADDED, ROWS, ROWS>(ab[cur], p, q);
+                gram_gradient<ROWS, COLS, N>(INST, CV, CO, i, p, q, v, finite);
+                word.v[h] = v;
+            }
+        }
+        if (ENTRIES_B > 0 && e < ENTRIES_B) {  // lane B: never the last row, so never into G
+            const int p = PB[e], q = QB[e];
+            const L v = gram_entry<PADDED, ROWS, K>(ab[cur], p, q);
+            if (p == q) finite = finite && fgc_isfinite(T(v));
+            word.v[SLOTS - 1] = v;
+        }
+        grams.write(word);
         if (++e == STEPS) {
             e = 0;
             ++i;
@@ -2448,10 +2508,16 @@ void whiten_tail_0_0(const T raw[], T ab[], const T p[]) {
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 180 structural non-zeros of
 // 15 x 31), whitening, into AB; one instance every II=233 cycles (the plan's)
-void evaluate_0(const T x[N_X], hls::stream<GramRow>& rows) {
-    for (int i = 0; i < 7; ++i) {
+// (the HGC beside the elimination: the first n instances in the order the elimination reaches
+// their steps, BLOCK0_STEP_ORDER; n = 0 on LM's retries)
+const int BLOCK0_STEP_ORDER[7] = {
+    0, 6, 1, 5, 2, 4, 3,
+};
+void evaluate_0(const T x[N_X], int n, hls::stream<GramRow>& rows) {
+    for (int i = 0; i < n; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=7
 #pragma HLS PIPELINE II=233
-        const int f = BLOCK0_INSTANCES[i];
+        const int f = BLOCK0_STEP_ORDER[i];
         T in[42], dat[193];
         gather_0(x, f, in, dat);
         T raw[480];  // the Jacobian writes only its structural non-zeros
@@ -2470,7 +2536,7 @@ void evaluate_0(const T x[N_X], hls::stream<GramRow>& rows) {
             rows.write(row);
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 7, 233, 621);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", n, 233, 621);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 32 columns (a multiple of PORTS)
@@ -2568,35 +2634,37 @@ const int BLOCK0_COL_OFF[30] = {
     0, 1, 2, 3, 4, 5, 0, 1, 2, 0, 1, 2, 3, 4, 5, 0,
     1, 2, 0, 1, 2, 3, 4, 5, 0, 1, 2, 3, 4, 5,
 };
-// block 0's HGC: instance 0's 15 whitened rows from evaluate_0's stream, a row a cycle, into
-// bank 0 of the registers, then gram_entries over all 7 instances (248 iterations each: its
-// Grams into GRAM, the last rows into the gradient, the diagonals checked, the next instance's
-// rows read alongside); `finite` false if not finite
-void reduce_0(hls::stream<GramRow>& rows, bool& finite) {
+// block 0's HGC beside the elimination: as reduce_<b> (instance 0's rows, then one loop over
+// the first n instances in step order, 248 iterations each), its Grams a word an iteration into
+// `grams` instead of GRAM (gram_entries_stream); the gradient into G and `finite` as there
+void reduce_0(hls::stream<GramRow>& rows, int n, hls::stream<GramWord>& grams, bool& finite) {
     T ab[2][480];
 #pragma HLS ARRAY_PARTITION variable=ab complete dim=0
-    for (int r = 0; r < 15; ++r) {
+    for (int r = 0; r < (n > 0 ? 15 : 0); ++r) {
+#pragma HLS LOOP_TRIPCOUNT max=15
 #pragma HLS PIPELINE II=1
         const GramRow row = rows.read();
         for (int c = 0; c < 32; ++c) ab[0][r * 32 + c] = row.word[c];
     }
-    FGC_CYCLES("reduce_0", 0, "rows", 15, 1, 2);
-    finite = gram_entries_two<32, 15, 31, 248, 248, 9, 248, 7>(
-        rows, ab, BLOCK0_INSTANCES, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, BLOCK0_GRAM_PB, BLOCK0_GRAM_QB,
+    FGC_CYCLES("reduce_0", 0, "rows", n > 0 ? 15 : 0, 1, 2);
+    finite = gram_entries_stream<32, 15, 31, 248, 248, 9, 248, 7, 1, 1, 2>(
+        rows, grams, ab, n, BLOCK0_STEP_ORDER, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, BLOCK0_GRAM_PB, BLOCK0_GRAM_QB,
         BLOCK0_COL_VAR, BLOCK0_COL_OFF);
-    FGC_CYCLES("reduce_0", 0, "entries", 1736, 1, 26);
+    FGC_CYCLES("reduce_0", 0, "entries", n * 248, 1, 26);
+    // csim only: when each instance's Gram is complete (the elimination's passes wait for them)
+    FGC_BESIDE_READY(n, 233, 621, 16, 248, 1, 26);
 }
 
-// block 0's linearisation, one DATAFLOW region: evaluate_0 (the datapath: the whitened rows
-// into AB and, a stream word a row, to the HGC) alongside reduce_0 (their Gram and gradient), so
-// an instance's Gram is computed while the datapath evaluates the next instances
-void linearize_0(const T x[N_X], bool& finite) {
+// block 0's producer beside the elimination, one DATAFLOW region: evaluate_0 (the datapath:
+// the whitened rows into AB and, a stream word a row, to the HGC) alongside reduce_0 (the Grams
+// into `grams`, the gradient into G); n instances in step order (0: LM's retry, nothing to do)
+void produce_0(const T x[N_X], int n, hls::stream<GramWord>& grams, bool& finite) {
 #pragma HLS DATAFLOW
     hls::stream<GramRow> rows;
 #pragma HLS STREAM variable=rows depth=15
     FGC_REGION("linearize_0");
-    evaluate_0(x, rows);
-    reduce_0(rows, finite);
+    evaluate_0(x, n, rows);
+    reduce_0(rows, n, grams, finite);
     FGC_DRAINED(&rows, 1);
 }
 
@@ -3039,10 +3107,6 @@ bool linearize_all(const T x[N_X]) {
     }
     FGC_CYCLES("gradient", 0, "zero", (N_TANGENT + PORTS - 1) / PORTS, 1, 1);
     bool finite = true;
-    bool ok0 = true;
-    linearize_0(x, ok0);
-    FGC_SEQUENTIAL();
-    finite = ok0 && finite;
     bool ok1 = true;
     linearize_1(x, ok1);
     FGC_SEQUENTIAL();
@@ -3055,6 +3119,8 @@ bool linearize_all(const T x[N_X]) {
     linearize_3(x, ok3);
     FGC_SEQUENTIAL();
     finite = ok3 && finite;
+    // block 0: beside the elimination (linearize_solve, which reads x = X itself)
+    (void)x;
     return finite;
 }
 
@@ -3209,6 +3275,18 @@ void retract_variable(int v, const L delta[N_TANGENT]) {
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
 // configured by the constants below; what each DATAFLOW region holds is documented there.
 // CFG::T is L, the linear solver's scalar; latencies are the plan's operator table for L.
+// ---- the HGC beside the elimination: block 0's Grams (496 packed words each) streamed in step
+// order; per factor its offset in a stage lane (-1: not streamed, its Gram in GRAM), per step its
+// first streamed instance (in the stream's order) and how many
+const int FACTOR_STAGE[10] = {
+    0, 0, 0, 0, 0, 0, 0, -1, -1, -1,
+};
+const int STEP_STREAMED_FIRST[7] = {
+    0, 1, 2, 3, 4, 5, 6,
+};
+const int STEP_STREAMED_COUNT[7] = {
+    1, 1, 1, 1, 1, 1, 1,
+};
 struct LesConfig {
     typedef ::fgc::L T;
     static const int MAX_W = ::fgc::MAX_W;
@@ -3235,6 +3313,15 @@ struct LesConfig {
     static const int N_TANGENT = ::fgc::N_TANGENT, N_VARIABLES = ::fgc::N_VARIABLES;
     static const int RETIRE_II = 36, RETIRE_DEPTH = 218;
     static void retract_variable(int v, const T delta[N_TANGENT]) { ::fgc::retract_variable(v, delta); }
+    // the HGC beside the elimination (fgc_eliminate.h's cholesky_eliminate_beside): block 0's
+    // Grams come as a stream, a step's put into a stage lane by gram_source a pass before the
+    // assembler reads them
+    typedef GramWord Word;
+    static const int N_STAGE = 496;  // a stage lane: the most streamed Grams of a step
+    static int staged(int fac) { return FACTOR_STAGE[fac]; }
+    static bool streams(int s) { return STEP_STREAMED_COUNT[s] > 0; }
+    static int last_streamed(int s) { return STEP_STREAMED_FIRST[s] + STEP_STREAMED_COUNT[s] - 1; }
+    static void gram_source(int s, bool relin, T lane[N_STAGE], hls::stream<Word>& grams);
 };
 
 // ---- multifrontal Cholesky (paper B): per step the frontal matrix [H | g] (upper triangle,
@@ -3247,12 +3334,124 @@ struct LesConfig {
 L HA[2][MAX_W][LesConfig::MAX_COLS / 2 + 1][2];  // the assembly's two lanes, (i, c) at [i][c >> 1][c & 1]; all zero between steps (the source clears what it reads)
 L HF[MAX_W][LesConfig::MAX_COLS];  // the rows a round leaves for the next (multi-round steps); all zero between steps
 
+// block 0's Gram entries' packed positions p (p + 1) / 2 + q, lane A's and lane B's (gram_entries_stream's order)
+const int STREAMED_POS_A[248] = {
+    189, 208, 209, 228, 229, 230, 249, 250, 251, 252, 258, 259, 260, 261, 262, 263,
+    264, 265, 266, 267, 268, 269, 270, 271, 272, 273, 274, 275, 276, 277, 278, 279,
+    280, 281, 282, 283, 284, 285, 286, 287, 288, 289, 290, 291, 292, 293, 294, 295,
+    296, 297, 298, 299, 300, 301, 302, 303, 304, 305, 306, 307, 308, 309, 310, 311,
+    312, 313, 314, 315, 316, 317, 318, 319, 320, 321, 322, 323, 324, 325, 326, 327,
+    328, 329, 330, 331, 332, 333, 334, 335, 336, 337, 338, 339, 340, 341, 342, 343,
+    344, 345, 346, 347, 348, 349, 350, 351, 352, 353, 354, 355, 356, 357, 358, 359,
+    360, 361, 362, 363, 364, 365, 366, 367, 368, 369, 370, 371, 372, 373, 374, 375,
+    376, 377, 378, 379, 380, 381, 382, 383, 384, 385, 386, 387, 388, 389, 390, 391,
+    392, 393, 394, 395, 396, 397, 398, 399, 400, 401, 402, 403, 404, 405, 406, 407,
+    408, 409, 410, 411, 412, 413, 414, 415, 416, 417, 418, 419, 420, 421, 422, 423,
+    424, 425, 426, 427, 428, 429, 430, 431, 432, 433, 434, 435, 436, 437, 438, 439,
+    440, 441, 442, 443, 444, 445, 446, 447, 448, 449, 450, 451, 452, 453, 454, 455,
+    456, 457, 458, 459, 460, 461, 462, 463, 464, 465, 466, 467, 468, 469, 470, 471,
+    472, 473, 474, 475, 476, 477, 478, 479, 480, 481, 482, 483, 484, 485, 486, 487,
+    488, 489, 490, 491, 492, 493, 494, 495,
+};
+const int STREAMED_POS_B[248] = {
+    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15,
+    16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31,
+    32, 33, 34, 35, 36, 37, 38, 39, 40, 41, 42, 43, 44, 45, 46, 47,
+    48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59, 60, 61, 62, 63,
+    64, 65, 66, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77, 78, 79,
+    80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 95,
+    96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111,
+    112, 113, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 127,
+    128, 129, 130, 131, 132, 133, 134, 135, 136, 137, 138, 139, 140, 141, 142, 143,
+    144, 145, 146, 147, 148, 149, 150, 151, 152, 153, 154, 155, 156, 157, 158, 159,
+    160, 161, 162, 163, 164, 165, 166, 167, 168, 169, 170, 171, 172, 173, 174, 175,
+    176, 177, 178, 179, 180, 181, 182, 183, 184, 185, 186, 187, 188, 190, 191, 192,
+    193, 194, 195, 196, 197, 198, 199, 200, 201, 202, 203, 204, 205, 206, 207, 210,
+    211, 212, 213, 214, 215, 216, 217, 218, 219, 220, 221, 222, 223, 224, 225, 226,
+    227, 231, 232, 233, 234, 235, 236, 237, 238, 239, 240, 241, 242, 243, 244, 245,
+    246, 247, 248, 253, 254, 255, 256, 257,
+};
+L STAGE[2][LesConfig::N_STAGE];  // the stage lanes: step t's streamed Grams in STAGE[t % 2] (structural zeros never written)
+L GRAM_B[3472];  // the streamed Grams kept for LM's retries (instance k's at k x 496)
+
+// The Gram source (a process of each cholesky_overlap_beside pass): step s's streamed Grams into
+// `lane`. relin: from the stream, a word an iteration of reduce_0's loop at its II (1), each
+// entry also into GRAM_B; else from GRAM_B, two words a cycle (its two ports and the lane's).
+void LesConfig::gram_source(int s, bool relin, T lane[N_STAGE], hls::stream<Word>& grams) {
+    const int k0 = STEP_STREAMED_FIRST[s], n = STEP_STREAMED_COUNT[s];
+    if (relin) {
+        for (int t = 0, j = 0, e = 0; t < n * 248; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=248
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=lane inter false
+#pragma HLS DEPENDENCE variable=GRAM_B inter false
+            const Word w = grams.read();
+            for (int h = 0; h < 1; ++h) {
+                if (1 * e + h < 248) {
+                    const int pos = STREAMED_POS_A[1 * e + h];
+                    lane[j * 496 + pos] = w.v[h];
+                    GRAM_B[(k0 + j) * 496 + pos] = w.v[h];
+                }
+            }
+            if (e < 248) {
+                const int pos = STREAMED_POS_B[e];
+                lane[j * 496 + pos] = w.v[1];
+                GRAM_B[(k0 + j) * 496 + pos] = w.v[1];
+            }
+            if (++e == 248) {
+                e = 0;
+                ++j;
+            }
+        }
+        FGC_CYCLES("gram_source", 0, "stream", n * 248, 1, MOVE_DEPTH);
+    } else {
+        for (int t = 0; t < n * 496; t += 2) {  // two words a cycle
+#pragma HLS LOOP_TRIPCOUNT max=248
+#pragma HLS PIPELINE II=1
+            for (int h = 0; h < 2; ++h) {
+                if (t + h < n * 496) lane[t + h] = GRAM_B[k0 * 496 + t + h];
+            }
+        }
+        FGC_CYCLES("gram_source", 0, "kept", (n * 496 + 1) / 2, MOVE_II, MOVE_DEPTH);
+    }
+}
+
 // the elimination driver (fgc_eliminate.h) on these tables and memories
 #define FGC_ELIMINATE_CHOLESKY
+#define FGC_ELIMINATE_BESIDE
 #include "fgc_eliminate.h"
 
-bool eliminate_all(T mu) {
-    return cholesky_eliminate_all<LesConfig>(mu);
+// The linearisation's block 0 beside the elimination, one DATAFLOW region: produce_0 (its
+// instances in step order, their Grams into `grams`, the gradient into G) alongside
+// cholesky_eliminate_beside (which takes them from the stream as its steps need them). relin
+// false: LM's retry at a raised mu, the Grams from GRAM_B (the producer idle).
+void linearize_solve(T mu, bool relin, bool& finite, bool& solved) {
+#pragma HLS DATAFLOW
+    hls::stream<GramWord> grams;
+#pragma HLS STREAM variable=grams depth=248
+    FGC_PHASE(relin ? "hgc_beside" : "reassemble");
+    FGC_BESIDE_PRODUCER();  // csim only: the producer's records, then the consumer's
+    produce_0(X, relin ? 7 : 0, grams, finite);
+    FGC_SEQUENTIAL();
+    FGC_BESIDE_CONSUMER();
+    cholesky_eliminate_beside<LesConfig>(mu, relin, grams, solved);
+    FGC_BESIDE_END();
+    FGC_DRAINED(&grams, 1);
+}
+
+bool BESIDE_PENDING = false;  // the linearisation's first solve was factored beside it
+bool BESIDE_SOLVED = false;   // and its result (false: not positive definite)
+
+// LM's hook linearize_x(mu): the other block types' regions (linearize_all), then block 0
+// beside the factorisation at mu, whose result the next solve takes. False if not finite.
+bool linearize_beside(T mu) {
+#pragma HLS INLINE
+    const bool finite = linearize_all(X);
+    bool fin = true, solved = false;
+    linearize_solve(mu, true, fin, solved);
+    BESIDE_PENDING = true;
+    BESIDE_SOLVED = solved;
+    return finite && fin;
 }
 
 // ---- back-substitution on two lanes (fgc_backsub.h's driver: back_substitute), slot by slot:
@@ -3266,9 +3465,21 @@ const int BS_XOFF[BS_SLOTS] = {-1, -1, -1, 15, 0, 0, 0, 0, -1};
 #define FGC_BACKSUB_DRIVER
 #include "fgc_backsub.h"
 
-// The linear solve at mu: eliminate, then back-substitute. False if singular.
+// The linear solve at mu: the factorisation linearize_beside ran (the first solve of a
+// linearisation) or linearize_solve on the kept Grams (LM's retry), then back-substitute.
+// False if singular.
 bool solve(T mu) {
-    if (!eliminate_all(mu)) return false;
+#pragma HLS INLINE
+    FGC_EVENT("solve");
+    bool solved = BESIDE_SOLVED;
+    if (BESIDE_PENDING) {
+        BESIDE_PENDING = false;
+    } else {
+        FGC_EVENT("resolve");
+        bool fin = true;
+        linearize_solve(mu, false, fin, solved);
+    }
+    if (!solved) return false;
     back_substitute<LesConfig>();
     return true;
 }
@@ -3309,8 +3520,17 @@ struct LmConfig {
 #pragma HLS INLINE
         return total_cost(X);
     }
-    static bool linearize_x() { return linearize_all(X); }
-    static bool solve_at(T mu) { return solve(mu); }
+    // INLINE: the on-chip stream's kernels share linearize_all / eliminate_all between LM and
+    // their own calls after it (fgc_stream.h's ALLOCATION, LM's body inlined there); the HGC
+    // beside the elimination's hooks share linearize_solve (fgc_lm.h's ALLOCATION)
+    static bool linearize_x(T mu) {
+#pragma HLS INLINE
+        return linearize_beside(mu);
+    }
+    static bool solve_at(T mu) {
+#pragma HLS INLINE
+        return solve(mu);
+    }
     static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
     static T cost_trial() {
 #pragma HLS INLINE

@@ -1602,7 +1602,7 @@ struct LmConfig {
 #pragma HLS INLINE
         return total_cost(X);
     }
-    static bool linearize_x() { return linearize_all(X); }
+    static bool linearize_x(T) { return linearize_all(X); }  // (mu: the HLS Cholesky kernel's)
     static bool solve_at(T mu) { return solve(mu); }
     static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
     static T cost_trial() {

@@ -1982,7 +1982,7 @@ struct LmConfig {
     static T magnitude(T x) { return fgc_abs(x); }
     static bool finite(T x) { return fgc_isfinite(x); }
     static T cost_x() { return total_cost(X); }
-    static bool linearize_x() { return linearize_all(X); }
+    static bool linearize_x(T) { return linearize_all(X); }  // (mu: the HLS Cholesky kernel's)
     static bool solve_at(T mu) { return solve(mu); }
     static void retract_trial() { retract_all(X, DELTA, X_TRIAL); }
     static T cost_trial() { return total_cost(X_TRIAL); }

@@ -1,0 +1,441 @@
+// fgc_cascades.h: the elimination driver of the two-cascade Cholesky design (unit_sets = 2;
+// fgc_backends/hls/units/cholesky.py's cascade_regions / cascades_phases price it): two
+// independent steps at a time factored side by side by two copies of fgc_cpe.h's cascade, in
+// place of fgc_eliminate.h's one-cascade driver (cholesky_eliminate_all).
+//
+//   bool cholesky_eliminate_sets<CFG>(mu)  every step, region by region; false if singular.
+//
+// Included by the kernel inside its namespace after its schedule tables and memories, which
+// these functions name: the tables of fgc_eliminate.h's Cholesky driver (STEP_W, STEP_F,
+// STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
+// STEP_SEPMAP, STEP_NF_OFF, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP, FACTOR_GRAM_OFF,
+// N_STEPS) and N_REGIONS, REGION_STEP, STEP_REGION, STEP_CASCADE, STEP_STREAMED (below); the
+// memories GRAM, COND, NF[4], HA0, HA1, HF0, HF1, CONDBUF[4], DPIV[4], RMAX[4]. CFG is the
+// kernel's SetConfig: its LesConfig with N_COND the size of a CONDBUF lane (a step's
+// conditional from 0).
+//
+// The Grams are read in cholesky_set_step_grams (as fgc_eliminate.h's cholesky_assemble_first
+// and cholesky_add_segment read them for the one-cascade driver): a change to where the
+// assembly gets its Grams changes both.
+#ifndef FGC_CASCADES_H
+#define FGC_CASCADES_H
+
+#include "fgc_cpe.h"
+#include "fgc_cycles.h"
+#include "hls_stream.h"
+
+// A schedule without children prints its children's tables with no entries: their code is
+// left out at compile time (as CHOLESKY_HAS_CHILDREN's).
+enum { CHOLESKY_SETS_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEPMAP) > 0 };
+
+// ---- two cascades (unit_sets = 2; units/cholesky.py's cascades_phases) ------------------------
+// The steps go in regions of at most two independent ones (the kernel's tables N_REGIONS,
+// REGION_STEP[2 r + k]: cascade k's step of region r, -1 none; STEP_REGION, STEP_CASCADE: each
+// step's; STEP_STREAMED: the child its own cascade factored in the region just before, -1
+// none), factored side by side by two cascades, each with its own CPEs, feed and drain.
+// Memories (the kernel's): HA0, HA1 (cascade k's two lanes of [H | g], lane r % 2 region r's),
+// HF0, HF1 (each cascade's trailing rows between rounds), NF[2 k + r % 2] (the update matrices
+// cascade k's drain writes in region r), CONDBUF[2 k + r % 2] (its conditional, copied into
+// COND beside the next region: COND has one writer, the committer). One cholesky_sets region,
+// five processes:
+//   cholesky_set_source   both steps' words out of their lanes into the two cascades, two
+//                         words of a row a cycle each, each word cleared as read and its
+//                         streamed child's update-matrix word (from NF, where the drain left it
+//                         in the region before) added on the way: no pass adds that child;
+//   cholesky_set_cascade  x2: cpe_step's rounds on its step (fgc_cpe.h's cpe_rounds: its
+//                         drain writes CONDBUF and NF, its pivots and rows' largest |h| DPIV
+//                         and RMAX);
+//   cholesky_set_grams    the next region's steps' factor Grams into the other lanes;
+//   cholesky_set_commit   the region before's conditionals from CONDBUF into COND, and their
+//                         pivot checks (fgc_cpe.h's cpe_check): off the cascade's path.
+// A step's other children (the other cascade's, or older) are added before its region by
+// cholesky_set_alone (sequential: it reads any NF lane).
+
+// Step s's factor Grams into ha (all zero): the first stored two entries a cycle after its
+// column map, the further ones added one entry a cycle (as cholesky_assemble_first / _adds).
+template <class CFG>
+void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2]) {
+    if (s < 0) return;
+    const int w = STEP_W[s];
+    for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
+        const int fac = STEP_FACTORS[e];
+        const int cb = FACTOR_COLMAP_BEGIN[fac];
+        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
+        const int g0 = FACTOR_GRAM_OFF[fac];
+        const int n = d * (d + 1) / 2 + d;
+        if (e == STEP_FACTOR_BEGIN[s]) {
+            int map[CFG::MAX_W + 1];
+#pragma HLS ARRAY_PARTITION variable=map complete
+            for (int c = 0; c < d; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
+#pragma HLS PIPELINE II=1
+                map[c] = FACTOR_COLMAP[cb + c];
+            }
+            map[d] = w;
+            FGC_CYCLES("assemble", 0, "map", d, CFG::MOVE_II, CFG::MOVE_DEPTH);
+            for (int k = 0, p = 0, q = 0; k < n; k += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED/2
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=ha inter false
+                for (int h = 0; h < 2; ++h) {
+                    if (k + h < n) {
+                        const int a = map[p], b = map[q];
+                        const int lo = b < a ? b : a, hi = b < a ? a : b;
+                        ha[lo][hi >> 1][hi & 1] = GRAM[g0 + k + h];
+                        if (q == p) {
+                            q = 0;
+                            ++p;
+                        } else {
+                            ++q;
+                        }
+                    }
+                }
+            }
+            FGC_CYCLES("assemble", 0, "gram_first", (n + 1) / 2, CFG::MOVE_II, CFG::MOVE_DEPTH);
+            continue;
+        }
+        for (int k = 0, x = 0, y = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=ha inter false
+            const int a = x < d ? FACTOR_COLMAP[cb + x] : w;
+            const int b = FACTOR_COLMAP[cb + y];
+            const int lo = b < a ? b : a, hi = b < a ? a : b;
+            ha[lo][hi >> 1][hi & 1] += GRAM[g0 + k];
+            if (y == x) {
+                ++x;
+                y = 0;
+            } else {
+                ++y;
+            }
+        }
+        FGC_CYCLES("assemble", 0, "gram", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
+    }
+}
+
+// The grams process: steps n0, n1 (cascade 0's, 1's of the next region; -1 none) into their
+// lanes, one after the other through one copy of the loops (one adder).
+template <class CFG>
+void cholesky_set_grams(int n0, int n1, typename CFG::T ha0[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                        typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2]) {
+#pragma HLS ALLOCATION function instances=cholesky_set_step_grams<CFG> limit=1
+    FGC_BRANCH();
+    cholesky_set_step_grams<CFG>(n0, ha0);
+    cholesky_set_step_grams<CFG>(n1, ha1);
+}
+
+// Step s's streamed child's separator map inverted into inv (parent column -> its index in
+// the child, -1 none; the gradient column w -> sc) and off (child row x's first word in nf).
+template <class CFG>
+inline void cholesky_set_inv_init(int inv[CFG::MAX_W + 2]) {
+#pragma HLS INLINE
+    for (int k = 0; k < CFG::MAX_W + 2; ++k) {
+#pragma HLS UNROLL
+        inv[k] = -1;
+    }
+}
+
+// One word of the source: x (column c of row i) plus the streamed child's entry there, if the
+// child has one (inv of both columns >= 0: the child's upper triangle at the smaller, the
+// larger).
+template <class CFG>
+inline typename CFG::T cholesky_set_with_child(typename CFG::T x, int i, int c,
+                                               const int inv[CFG::MAX_W + 2],
+                                               const int off[CFG::MAX_W + 1],
+                                               const typename CFG::T nf[CFG::N_NF]) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    const int a = inv[i], b = inv[c];
+    const int lo = b < a ? b : a, hi = b < a ? a : b;
+    const T v = a >= 0 && b >= 0 ? nf[off[lo] + hi] : T(0);
+    return x + v;
+}
+
+// The source process: steps s0, s1 (cascade 0's, 1's; -1 none) out of lanes ha0, ha1 into
+// out0, out1 in the feed's order (fgc_cpe.h's cpe_pair, as cholesky_assembler), both in one
+// loop at II 1 (trip the larger step's pairs), each word cleared as read, with its streamed
+// child's word (STEP_STREAMED, from nf0 / nf1: the lanes the drains wrote in the region
+// before) added: two reads of each lane and of each NF lane a cycle, four adders.
+template <class CFG>
+void cholesky_set_source(int s0, int s1,
+                         typename CFG::T ha0[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                         typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                         const typename CFG::T nf0[CFG::N_NF], const typename CFG::T nf1[CFG::N_NF],
+                         hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out0,
+                         hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out1) {
+    typedef typename CFG::T T;
+    enum { MAX_PAIRS = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 };
+    FGC_BRANCH();
+    int inv0[CFG::MAX_W + 2], inv1[CFG::MAX_W + 2], off0[CFG::MAX_W + 1], off1[CFG::MAX_W + 1];
+#pragma HLS ARRAY_PARTITION variable=inv0 complete
+#pragma HLS ARRAY_PARTITION variable=inv1 complete
+#pragma HLS ARRAY_PARTITION variable=off0 complete
+#pragma HLS ARRAY_PARTITION variable=off1 complete
+    cholesky_set_inv_init<CFG>(inv0);
+    cholesky_set_inv_init<CFG>(inv1);
+    const int w0 = s0 >= 0 ? STEP_W[s0] : 0, w1 = s1 >= 0 ? STEP_W[s1] : 0;
+    const int c0 = s0 >= 0 ? STEP_STREAMED[s0] : -1, c1 = s1 >= 0 ? STEP_STREAMED[s1] : -1;
+    const int sc0 = c0 >= 0 ? STEP_W[c0] - STEP_F[c0] : 0;
+    const int sc1 = c1 >= 0 ? STEP_W[c1] - STEP_F[c1] : 0;
+    const int mb0 = c0 >= 0 ? STEP_SEPMAP_BEGIN[c0] : 0;
+    const int mb1 = c1 >= 0 ? STEP_SEPMAP_BEGIN[c1] : 0;
+    const int m = sc0 > sc1 ? sc0 : sc1;
+    // trip the larger separator, II 1, depth of a move: the two maps side by side
+    for (int x = 0, o0 = c0 >= 0 ? STEP_NF_OFF[c0] : 0, o1 = c1 >= 0 ? STEP_NF_OFF[c1] : 0;
+         x < m; ++x) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
+#pragma HLS PIPELINE II=1
+        if (CHOLESKY_SETS_HAS_CHILDREN && x < sc0) {
+            inv0[STEP_SEPMAP[mb0 + x]] = x;
+            off0[x] = o0;
+        }
+        if (CHOLESKY_SETS_HAS_CHILDREN && x < sc1) {
+            inv1[STEP_SEPMAP[mb1 + x]] = x;
+            off1[x] = o1;
+        }
+        o0 += sc0 + 1;
+        o1 += sc1 + 1;
+    }
+    if (c0 >= 0) inv0[w0] = sc0;  // the gradient: the child's column sc
+    if (c1 >= 0) inv1[w1] = sc1;
+    if (m > 0) FGC_CYCLES("assemble", 0, "inv", m, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    const int p0 = s0 >= 0 && fgc_units::cpe_fits<CFG>(STEP_F[s0], w0 - STEP_F[s0])
+                       ? fgc_units::cpe_pairs(w0) : 0;
+    const int p1 = s1 >= 0 && fgc_units::cpe_fits<CFG>(STEP_F[s1], w1 - STEP_F[s1])
+                       ? fgc_units::cpe_pairs(w1) : 0;
+    const int pairs = p0 > p1 ? p0 : p1;
+    // trip the larger step's pairs, II 1, depth of a move (+ the add: a scatter's) with a
+    // streamed child
+    for (int t = 0, i0 = 0, j0 = 0, i1 = 0, j1 = 0; t < pairs; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_PAIRS
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=ha0 inter false
+#pragma HLS DEPENDENCE variable=ha1 inter false
+        if (t < p0) {
+            const int odd_c = j0 & 1;
+            const int e = (j0 + odd_c) >> 1, o = j0 >> 1;
+            const T v0 = ha0[i0][e][0], v1 = ha0[i0][o][1];
+            ha0[i0][e][0] = T(0);
+            ha0[i0][o][1] = T(0);
+            const fgc_units::cpe_pair<T> p = {
+                cholesky_set_with_child<CFG>(odd_c ? v1 : v0, i0, j0, inv0, off0, nf0),
+                cholesky_set_with_child<CFG>(odd_c ? v0 : v1, i0, j0 + 1, inv0, off0, nf0)};
+            out0.write(p);
+            if (j0 + 2 > w0) {
+                ++i0;
+                j0 = i0;
+            } else {
+                j0 += 2;
+            }
+        }
+        if (t < p1) {
+            const int odd_c = j1 & 1;
+            const int e = (j1 + odd_c) >> 1, o = j1 >> 1;
+            const T v0 = ha1[i1][e][0], v1 = ha1[i1][o][1];
+            ha1[i1][e][0] = T(0);
+            ha1[i1][o][1] = T(0);
+            const fgc_units::cpe_pair<T> p = {
+                cholesky_set_with_child<CFG>(odd_c ? v1 : v0, i1, j1, inv1, off1, nf1),
+                cholesky_set_with_child<CFG>(odd_c ? v0 : v1, i1, j1 + 1, inv1, off1, nf1)};
+            out1.write(p);
+            if (j1 + 2 > w1) {
+                ++i1;
+                j1 = i1;
+            } else {
+                j1 += 2;
+            }
+        }
+    }
+    // a streamed child's add: a scatter's (II, depth)
+    FGC_CYCLES("assemble", 0, "source", pairs, c0 >= 0 || c1 >= 0 ? CFG::SCATTER_II : CFG::MOVE_II,
+               c0 >= 0 || c1 >= 0 ? CFG::SCATTER_DEPTH : CFG::MOVE_DEPTH);
+}
+
+// A cascade's process: step s (-1: none) from src through cpe_step's rounds, its conditional
+// into cond (a CONDBUF lane, from 0), its update matrix into nfw, its pivots and rows' largest
+// |h| into dpiv, rmax (the committer checks them beside the next region); *unfit: the step is
+// outside the configuration (nothing computed).
+template <class CFG>
+void cholesky_set_cascade(int s, typename CFG::T mu,
+                          hls::stream<fgc_units::cpe_pair<typename CFG::T> >& src,
+                          typename CFG::T hf[CFG::MAX_W][CFG::MAX_COLS],
+                          typename CFG::T cond[CFG::N_COND], typename CFG::T nfw[CFG::N_NF],
+                          typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F],
+                          bool* not_pd, bool* unfit) {
+    FGC_BRANCH();
+    if (s < 0) return;
+    const int w = STEP_W[s], f = STEP_F[s];
+    *unfit = !fgc_units::cpe_rounds<CFG>(src, hf, f, w - f, mu, cond, 0, nfw, STEP_NF_OFF[s],
+                                         dpiv, rmax, not_pd);
+}
+
+// Step q's conditional (-1: none) from cb into COND, two words a cycle, then its pivot check
+// (fgc_cpe.h's cpe_check on its pivots dp and rows' largest |h| rm): *tiny, a pivot too small.
+template <class CFG>
+void cholesky_set_commit_one(int q, const typename CFG::T cb[CFG::N_COND],
+                             const typename CFG::T dp[CFG::MAX_F],
+                             const typename CFG::T rm[CFG::MAX_F], bool* tiny) {
+    if (q < 0) return;
+    const int n = STEP_F[q] * (STEP_W[q] + 1), c0 = STEP_COND_OFF[q];
+    for (int k = 0; k < n; k += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::N_COND/2
+#pragma HLS PIPELINE II=1
+        for (int h = 0; h < 2; ++h) {
+            if (k + h < n) COND[c0 + k + h] = cb[k + h];
+        }
+    }
+    FGC_CYCLES("assemble", 0, "cond", (n + 1) / 2, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    *tiny = fgc_units::cpe_check<CFG>(dp, rm, STEP_F[q]);
+}
+
+// The committer: the region before's steps q0, q1 (cascade 0's, 1's) into COND, each checked
+// (*tiny0, *tiny1).
+template <class CFG>
+void cholesky_set_commit(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
+                         const typename CFG::T cb1[CFG::N_COND],
+                         const typename CFG::T dp0[CFG::MAX_F], const typename CFG::T rm0[CFG::MAX_F],
+                         const typename CFG::T dp1[CFG::MAX_F], const typename CFG::T rm1[CFG::MAX_F],
+                         bool* tiny0, bool* tiny1) {
+#pragma HLS ALLOCATION function instances=cholesky_set_commit_one<CFG> limit=1
+    FGC_BRANCH();
+    cholesky_set_commit_one<CFG>(q0, cb0, dp0, rm0, tiny0);
+    cholesky_set_commit_one<CFG>(q1, cb1, dp1, rm1, tiny1);
+}
+
+// The region: steps s0, s1 factored (their words streamed out of ha0s, ha1s, their streamed
+// children read from nf0r, nf1r; conditionals into cb0w, cb1w, update matrices into nf0w,
+// nf1w) beside the next region's Grams (n0, n1 into ha0n, ha1n) and the region before's
+// conditionals (q0, q1 from cb0r, cb1r into COND, their pivots checked from the DPIV / RMAX
+// lanes d0r, r0r, d1r, r1r: *tinyk; the cascades' into d0w, r0w, d1w, r1w). *npdk: cascade
+// k's step was not positive definite; *unfitk: outside the configuration.
+template <class CFG>
+void cholesky_sets(int s0, int s1, int n0, int n1, int q0, int q1, typename CFG::T mu,
+                   typename CFG::T ha0s[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                   typename CFG::T ha1s[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                   typename CFG::T ha0n[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                   typename CFG::T ha1n[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                   const typename CFG::T nf0r[CFG::N_NF], const typename CFG::T nf1r[CFG::N_NF],
+                   typename CFG::T nf0w[CFG::N_NF], typename CFG::T nf1w[CFG::N_NF],
+                   typename CFG::T cb0w[CFG::N_COND], typename CFG::T cb1w[CFG::N_COND],
+                   const typename CFG::T cb0r[CFG::N_COND], const typename CFG::T cb1r[CFG::N_COND],
+                   typename CFG::T d0w[CFG::MAX_F], typename CFG::T r0w[CFG::MAX_F],
+                   typename CFG::T d1w[CFG::MAX_F], typename CFG::T r1w[CFG::MAX_F],
+                   const typename CFG::T d0r[CFG::MAX_F], const typename CFG::T r0r[CFG::MAX_F],
+                   const typename CFG::T d1r[CFG::MAX_F], const typename CFG::T r1r[CFG::MAX_F],
+                   bool* npd0, bool* npd1, bool* unfit0, bool* unfit1, bool* tiny0,
+                   bool* tiny1) {
+#pragma HLS DATAFLOW
+    enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
+    hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal0;
+    hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal1;
+#pragma HLS STREAM variable=frontal0 depth=DEPTH
+#pragma HLS STREAM variable=frontal1 depth=DEPTH
+    cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
+    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n);
+    cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
+                              unfit0);
+    cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
+                              unfit1);
+    cholesky_set_commit<CFG>(q0, q1, cb0r, cb1r, d0r, r0r, d1r, r1r, tiny0, tiny1);
+    FGC_DRAINED(&frontal0, 1);  // csim only (fgc_cycles.h)
+    FGC_DRAINED(&frontal1, 1);
+}
+
+// Step s's children other than its streamed one added into its lane (before its region): one
+// scatter loop a child, from the NF lane its cascade's drain wrote (one adder).
+template <class CFG>
+void cholesky_set_alone(int s) {
+    typedef typename CFG::T T;
+    if (!CHOLESKY_SETS_HAS_CHILDREN || s < 0) return;
+    const int w = STEP_W[s], k = STEP_CASCADE[s], hl = STEP_REGION[s] & 1;
+    for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
+        const int c = STEP_CHILDREN[e];
+        if (c == STEP_STREAMED[s]) continue;
+        const int lane = 2 * STEP_CASCADE[c] + (STEP_REGION[c] & 1);
+        const int sc = STEP_W[c] - STEP_F[c], mb = STEP_SEPMAP_BEGIN[c], u0 = STEP_NF_OFF[c];
+        const int n = sc * (sc + 1) / 2 + sc;
+        for (int q = 0, x = 0, y = 0; q < n; ++q) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=HA0 inter false
+#pragma HLS DEPENDENCE variable=HA1 inter false
+            const int a = STEP_SEPMAP[mb + x];
+            const int b = y < sc ? STEP_SEPMAP[mb + y] : w;
+            const T v = NF[lane][u0 + x * (sc + 1) + y];
+            const int lo = b < a ? b : a, hi = b < a ? a : b;
+            const T old = k ? HA1[hl][lo][hi >> 1][hi & 1] : HA0[hl][lo][hi >> 1][hi & 1];
+            const T sum = old + v;
+            if (k) {
+                HA1[hl][lo][hi >> 1][hi & 1] = sum;
+            } else {
+                HA0[hl][lo][hi >> 1][hi & 1] = sum;
+            }
+            if (y == sc) {
+                ++x;
+                y = x;
+            } else {
+                ++y;
+            }
+        }
+        FGC_CYCLES("assemble", 0, "child", n, CFG::SCATTER_II, CFG::SCATTER_DEPTH);
+    }
+}
+
+// Eliminate every step, region by region (REGION_STEP): passes of the one cholesky_sets
+// region (its two parity call sites, one RTL copy), j = -1 the grams process alone (the first
+// region's Grams into lanes 0), j = 0 ... N_REGIONS - 1 region j (after its steps' children
+// other than the streamed ones, cholesky_set_alone), j = N_REGIONS the committer alone (the
+// last region's conditionals). Region j streams lanes j % 2 and writes NF / CONDBUF lanes
+// 2 k + j % 2; the grams process fills lanes 1 - j % 2, the source reads NF lanes
+// 2 k + 1 - j % 2 and the committer CONDBUF lanes 2 k + 1 - j % 2 (what region j - 1 wrote).
+// Every step runs even after one fails; false if any was not positive definite or had a
+// pivot too small.
+template <class CFG>
+bool cholesky_eliminate_sets(typename CFG::T mu) {
+#pragma HLS ARRAY_PARTITION variable=HA0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=HA0 complete dim=4
+#pragma HLS ARRAY_PARTITION variable=HA1 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=HA1 complete dim=4
+#pragma HLS ARRAY_PARTITION variable=NF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
+#pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
+    FGC_EVENT("solve");
+    bool ok = true;
+#pragma HLS ALLOCATION function instances=cholesky_sets<CFG> limit=1
+    for (int j = -1; j <= N_REGIONS; ++j) {
+#pragma HLS LOOP_TRIPCOUNT max=N_REGIONS+2
+        const bool in = j >= 0 && j < N_REGIONS;
+        if (in && CHOLESKY_SETS_HAS_CHILDREN) {
+            FGC_PHASE("assemble");
+            cholesky_set_alone<CFG>(REGION_STEP[2 * j]);
+            cholesky_set_alone<CFG>(REGION_STEP[2 * j + 1]);
+        }
+        const int s0 = in ? REGION_STEP[2 * j] : -1, s1 = in ? REGION_STEP[2 * j + 1] : -1;
+        const bool nx = j + 1 < N_REGIONS;
+        const int n0 = nx ? REGION_STEP[2 * j + 2] : -1, n1 = nx ? REGION_STEP[2 * j + 3] : -1;
+        const bool pv = j >= 1;
+        const int q0 = pv ? REGION_STEP[2 * j - 2] : -1, q1 = pv ? REGION_STEP[2 * j - 1] : -1;
+        FGC_PHASE(j < 0 ? "assemble" : "cholesky");
+        bool npd0 = false, npd1 = false, unfit0 = false, unfit1 = false;
+        bool tiny0 = false, tiny1 = false;
+        if ((j & 1) == 0) {
+            cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[0], HA1[0], HA0[1], HA1[1],
+                               NF[1], NF[3], NF[0], NF[2], CONDBUF[0], CONDBUF[2], CONDBUF[1],
+                               CONDBUF[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2], DPIV[1], RMAX[1],
+                               DPIV[3], RMAX[3], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
+        } else {
+            cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[1], HA1[1], HA0[0], HA1[0],
+                               NF[0], NF[2], NF[1], NF[3], CONDBUF[1], CONDBUF[3], CONDBUF[0],
+                               CONDBUF[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3], DPIV[0], RMAX[0],
+                               DPIV[2], RMAX[2], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
+        }
+        FGC_JOIN();
+        ok = ok && !npd0 && !npd1 && !unfit0 && !unfit1 && !tiny0 && !tiny1;
+    }
+    return ok;
+}
+
+#endif  // FGC_CASCADES_H

@@ -1,0 +1,106 @@
+"""Two Cholesky cascades (unit_sets=2; units/cholesky.py's cascade_regions / cascades_phases,
+fgc_eliminate.h's cholesky_sets): the regions pair independent steps, each step's child from
+the region before is streamed into its cascade, the plan prices what the C simulation counts
+and the results are the simulator's."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from fgc.app.specs import example
+from fgc.compile import compile_graph
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
+from fgc_backends import sim
+from fgc_backends.hls import HlsConfig, HlsConfigError, emit, run_csim
+from fgc_backends.hls.emitter import accel_plan
+from fgc_backends.hls.network import read_network
+from fgc_backends.hls.plan import plan_cost
+from fgc_backends.hls.plan.loops import _tables
+from fgc_backends.hls.units.cholesky import cascade_children, cascade_regions
+
+ROOT = Path(__file__).resolve().parents[2]
+lio = example("lio")
+imu_window = example("imu_window")
+
+
+def _children(tables, s):
+    cb = tables["STEP_CHILD_BEGIN"]
+    return {tables["STEP_CHILDREN"][e] for e in range(cb[s], cb[s + 1])}
+
+
+@pytest.fixture(scope="module")
+def lio30():
+    return compile_graph(lio.build(N=30), SolverConfig(linear="cholesky", cpe=15,
+                                                       precision="float32"), name="lio30")
+
+
+def test_regions_pair_the_two_ends_of_a_chain(lio30):
+    tables = _tables(lio30)
+    n = len(lio30.schedule.steps)
+    order = [tables["LEVEL_STEPS"][i] for i in range(n)]
+    regions = cascade_regions(tables, order)
+    steps = [s for reg in regions for s in reg if s >= 0]
+    assert sorted(steps) == list(range(n))  # every step once
+    done = set()
+    for a, b in regions:
+        for s in (a, b):  # a step's children are factored in earlier regions
+            assert s < 0 or _children(tables, s) <= done
+        done |= {a, b} - {-1}
+    # 29 steps from both ends: 14 regions of two, the root alone
+    assert len(regions) == 15 and all(b >= 0 for _, b in regions[:14]) and regions[14][1] == -1
+    kids = cascade_children(tables, regions)
+    where = {s: (r, k) for r, reg in enumerate(regions) for k, s in enumerate(reg) if s >= 0}
+    for s, (streamed, alone) in kids.items():
+        r, k = where[s]
+        if streamed >= 0:  # its own cascade's step of the region before
+            assert where[streamed] == (r - 1, k) and streamed in _children(tables, s)
+        assert set(alone) | ({streamed} - {-1}) == _children(tables, s)
+    # every child is streamed but one of the root's two (the other end's: a pass of its own)
+    assert sum(len(alone) for _, alone in kids.values()) == 1
+
+
+def test_two_cascades_price_the_ends_side_by_side(lio30):
+    one = plan_cost(accel_plan(lio30, HlsConfig(scalar="float", hgc_beside=False)))
+    two = plan_cost(accel_plan(lio30, HlsConfig(scalar="float", unit_sets=2)))
+    dsp = dict(two.dsp_by_unit)
+    assert dsp["cpe_set1"] == dict(one.dsp_by_unit)["cpe"]  # a second set of 15 CPEs
+    # 14 regions of two steps each take about one step's time (48,091 -> 37,542 cycles)
+    assert two.cycles < one.cycles - 9000
+    with pytest.raises(HlsConfigError, match="one or two cascades"):
+        accel_plan(lio30, HlsConfig(scalar="float", unit_sets=3))
+
+
+def test_two_cascades_match_the_simulator(tmp_path):
+    # LM in double: the C simulation's estimates are the simulator's to 1e-9 (relative)
+    graph = lio.build(N=6)
+    program = compile_graph(graph, SolverConfig(linear="cholesky", cpe=4), name="casc")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", unit_sets=2))
+    (region,) = read_network((tmp_path / "include" / "fgc_cascades.h").read_text())
+    assert region.function == "cholesky_sets" and region.processes == (
+        "cholesky_set_source", "cholesky_set_grams", "cholesky_set_cascade",
+        "cholesky_set_cascade", "cholesky_set_commit")
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)
+    assert result.status == reference.status
+    worst = max(float(np.max(np.abs(result.values[k] - np.asarray(r)))
+                      / max(1.0, np.max(np.abs(r)))) for k, r in reference.storage.items())
+    assert worst <= 1e-9
+
+
+def test_two_cascades_count_what_the_plan_prices():
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import measure
+
+    solver = SolverConfig(method="gn", linear="cholesky", cpe=4, precision="float32")
+    phases, events = measure("c2", imu_window.build(N=5), solver,
+                             HlsConfig(scalar="float", unit_sets=2))
+    assert events["solve"] >= 1
+    assert {"assemble", "cholesky"} <= {g for g, (c, m) in phases.items() if c > 0 and m > 0}
+    for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
