@@ -10,7 +10,7 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP, FACTOR_GRAM_OFF,
 // N_STEPS) and N_REGIONS, REGION_STEP, STEP_REGION, STEP_CASCADE, STEP_STREAMED (below); the
-// memories GRAM, COND, NF[4], HA0, HA1, HF0, HF1, CONDBUF[4], DPIV[4], RMAX[4]. CFG is the
+// memories GRAM, COND, NF0, NF1, HA0, HA1, HF0, HF1, CONDBUF[4], DPIV[4], RMAX[4]. CFG is the
 // kernel's SetConfig: its LesConfig with N_COND the size of a CONDBUF lane (a step's
 // conditional from 0).
 //
@@ -34,8 +34,8 @@ enum { CHOLESKY_SETS_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEP
 // step's; STEP_STREAMED: the child its own cascade factored in the region just before, -1
 // none), factored side by side by two cascades, each with its own CPEs, feed and drain.
 // Memories (the kernel's): HA0, HA1 (cascade k's two lanes of [H | g], lane r % 2 region r's),
-// HF0, HF1 (each cascade's trailing rows between rounds), NF[2 k + r % 2] (the update matrices
-// cascade k's drain writes in region r), CONDBUF[2 k + r % 2] (its conditional, copied into
+// HF0, HF1 (each cascade's trailing rows between rounds), NF0 / NF1[r % 2] (the update
+// matrices cascade 0's / 1's drain writes in region r), CONDBUF[2 k + r % 2] (its conditional, copied into
 // COND beside the next region: COND has one writer, the committer). One cholesky_sets region,
 // five processes:
 //   cholesky_set_source   both steps' words out of their lanes into the two cascades, two
@@ -166,6 +166,10 @@ void cholesky_set_source(int s0, int s1,
                          hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out1) {
     typedef typename CFG::T T;
     enum { MAX_PAIRS = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 };
+    // the lanes' even and odd columns in two banks (HA0 / HA1's last dimension, partitioned):
+    // a read and a write of each bank a cycle
+#pragma HLS ARRAY_PARTITION variable=ha0 complete dim=3
+#pragma HLS ARRAY_PARTITION variable=ha1 complete dim=3
     FGC_BRANCH();
     int inv0[CFG::MAX_W + 2], inv1[CFG::MAX_W + 2], off0[CFG::MAX_W + 1], off1[CFG::MAX_W + 1];
 #pragma HLS ARRAY_PARTITION variable=inv0 complete
@@ -353,7 +357,7 @@ void cholesky_set_alone(int s) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
         const int c = STEP_CHILDREN[e];
         if (c == STEP_STREAMED[s]) continue;
-        const int lane = 2 * STEP_CASCADE[c] + (STEP_REGION[c] & 1);
+        const int kc = STEP_CASCADE[c], lane = STEP_REGION[c] & 1;
         const int sc = STEP_W[c] - STEP_F[c], mb = STEP_SEPMAP_BEGIN[c], u0 = STEP_NF_OFF[c];
         const int n = sc * (sc + 1) / 2 + sc;
         for (int q = 0, x = 0, y = 0; q < n; ++q) {
@@ -363,7 +367,8 @@ void cholesky_set_alone(int s) {
 #pragma HLS DEPENDENCE variable=HA1 inter false
             const int a = STEP_SEPMAP[mb + x];
             const int b = y < sc ? STEP_SEPMAP[mb + y] : w;
-            const T v = NF[lane][u0 + x * (sc + 1) + y];
+            const int at = u0 + x * (sc + 1) + y;
+            const T v = kc ? NF1[lane][at] : NF0[lane][at];
             const int lo = b < a ? b : a, hi = b < a ? a : b;
             const T old = k ? HA1[hl][lo][hi >> 1][hi & 1] : HA0[hl][lo][hi >> 1][hi & 1];
             const T sum = old + v;
@@ -398,7 +403,8 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
 #pragma HLS ARRAY_PARTITION variable=HA0 complete dim=4
 #pragma HLS ARRAY_PARTITION variable=HA1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=HA1 complete dim=4
-#pragma HLS ARRAY_PARTITION variable=NF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=NF0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=NF1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=CONDBUF complete dim=1
 #pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
 #pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
@@ -423,12 +429,12 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
         bool tiny0 = false, tiny1 = false;
         if ((j & 1) == 0) {
             cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[0], HA1[0], HA0[1], HA1[1],
-                               NF[1], NF[3], NF[0], NF[2], CONDBUF[0], CONDBUF[2], CONDBUF[1],
+                               NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF[0], CONDBUF[2], CONDBUF[1],
                                CONDBUF[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2], DPIV[1], RMAX[1],
                                DPIV[3], RMAX[3], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         } else {
             cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[1], HA1[1], HA0[0], HA1[0],
-                               NF[0], NF[2], NF[1], NF[3], CONDBUF[1], CONDBUF[3], CONDBUF[0],
+                               NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF[1], CONDBUF[3], CONDBUF[0],
                                CONDBUF[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3], DPIV[0], RMAX[0],
                                DPIV[2], RMAX[2], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         }
