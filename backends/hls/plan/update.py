@@ -50,6 +50,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
+from dataclasses import replace
 from types import SimpleNamespace
 
 import numpy as np
@@ -98,7 +99,9 @@ class UpdateModel:
     ``options``: the plan's units (default ``PlanOptions.of(program)``: the Program's
     ``--units`` / ``--cpe``). ``batch_program(j)`` returns the batch Program of keyframes
     0 … j (needed for batch keyframes before the last). ``transfer_words_per_cycle``: the
-    assumed host → accelerator rate."""
+    assumed host → accelerator rate. The window's linearisation runs before its elimination
+    (the HGC beside the elimination is a batch design's: ``hgc_beside`` is off in the plan this
+    model reads, so a window spanning the chain costs that plan)."""
 
     def __init__(self, program: Program, options: PlanOptions | None = None,
                  batch_program: Callable[[int], Program] | None = None,
@@ -111,7 +114,7 @@ class UpdateModel:
             raise UpdateModelError(f"transfer_words_per_cycle must be ≥ 1, got "
                                    f"{transfer_words_per_cycle}")
         self.program, self.batch_program = program, batch_program
-        self.options = options or PlanOptions.of(program)
+        self.options = replace(options or PlanOptions.of(program), hgc_beside=False)
         self.plan = build_plan(program, self.options)
         self.ops = self.plan.ops  # the accelerator's scalar, and the linear solver's (plan's)
         self.les = self.plan.target.ops(self.options.les_precision or (
