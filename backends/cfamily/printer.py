@@ -219,8 +219,9 @@ def printed_ops(exprs: Iterable[sp.Expr], counts: Counter | None = None) -> Coun
     same splits the printer prints from (:func:`_mul_parts`, :func:`_power_terms`). A
     subtraction is an add, a sign no operation, a product of k factors k - 1 multiplies, a
     denominator one divide (a product of several, their multiplies too), a division by a
-    constant a multiply by its reciprocal, a power's base counted as often as it is printed
-    (``(a + b)**2`` prints the sum twice); a Lie coefficient or SO(3) logarithm component is one
+    constant a multiply by its reciprocal, a power's base once however often it is printed
+    (``(a + b)**2`` prints ``(a + b)*(a + b)``, whose repeated sum the C++ front end computes
+    once, as the second reader reads it); a Lie coefficient or SO(3) logarithm component is one
     ``special`` (its body counted apart: ``fgc_backends.hls.units.special_ops``), a sine,
     cosine, tangent or inverse one ``trig``, ``fgc_guarded_quotient`` its divide."""
     counts = Counter() if counts is None else counts
@@ -248,7 +249,10 @@ def _printed(expr, counts: Counter, times: int) -> None:
         counts["mul"] += times * max(whole + root - 1, 0)
         counts["sqrt"] += times * root
         counts["div"] += times * inverse
-        _printed(expr.base, counts, times * (whole + root))
+        # the product's copies of the base are one value: the C++ front end computes a
+        # repeated group once (``(a + b)*(a + b)``: one add, one multiply); a half-integer
+        # power's square root takes the base as a call's argument, a second value
+        _printed(expr.base, counts, times * (1 + (root and whole > 0)))
     elif isinstance(expr, special.VectorNorm):
         _printed(expr.expanded(), counts, times)
     else:
