@@ -187,9 +187,15 @@ def _input_names(n: int, n_x: int) -> list[str]:
 
 def _cost(block: BlockSpec, where: str, n_x: int, vector: bool = True) -> PrintedKernel:
     """The cost kernel reduced to the members' ½‖W r‖² (robust losses are applied in C++)."""
-    full = block.cost_kernel.kernel()
-    m, n = block.residual_dim, len(block.members)
-    outputs = tuple(sp.sympify(e) for e in full.outputs[m:m + n])
-    kernel = Kernel(full.inputs, drop_dead(full.assignments, outputs), outputs)
-    return print_kernel(kernel, _input_names(len(full.inputs), n_x), where + " cost",
+    kernel = cost_outputs_kernel(block.cost_kernel.kernel(), block.residual_dim,
+                                 len(block.members))
+    return print_kernel(kernel, _input_names(len(kernel.inputs), n_x), where + " cost",
                         vector=vector)
+
+
+def cost_outputs_kernel(full: Kernel, m: int, n: int) -> Kernel:
+    """Cost kernel ``full`` (of a block type with ``m`` residual rows and ``n`` members) as
+    the C-family backends print it: the members' ½‖W r‖² outputs alone (the residual's outputs
+    dropped) and the assignments they use."""
+    outputs = tuple(sp.sympify(e) for e in full.outputs[m:m + n])
+    return Kernel(full.inputs, drop_dead(full.assignments, outputs), outputs)

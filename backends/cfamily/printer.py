@@ -13,13 +13,17 @@ could see it.
 
 from __future__ import annotations
 
+import functools
+from collections import Counter
 from collections.abc import Iterable, Sequence
 from typing import NamedTuple
 
 import sympy as sp
+from sympy.core.mul import _keep_coeff
 from sympy.printing.cxx import CXX17CodePrinter
+from sympy.printing.precedence import PRECEDENCE, precedence
 
-from fgc.compiler.kernel import Kernel
+from fgc.compiler.kernel import OP_KINDS, Kernel
 from fgc.errors import FgcError
 from fgc.frontend.geometry import special
 
@@ -123,17 +127,34 @@ class HlsCodePrinter(CXX17CodePrinter):
                                              f"half-integer powers up to {_MAX_PRODUCT_POWER} "
                                              f"in magnitude, not {expr}")
         # b**(n/2) = sqrt(b) * b**((n-1)/2): one square root and a product of multiplies
-        whole = int(abs(exp))  # whole multiplies: |n/2| rounded down
+        whole, root, inverse = _power_terms(exp)
         factor = self.parenthesize(base, 100)
         terms = [factor] * whole
-        if not exp.is_Integer:
+        if root:
             terms.insert(0, f"{self.call}fgc_sqrt({self._print(base)})")
         if exp == sp.Rational(1, 2):
             return terms[0]
         if exp == -sp.Rational(1, 2):
             return f"(T(1)/{terms[0]})"
         product = "*".join(terms)
-        return f"({product})" if exp > 0 else f"(T(1)/({product}))"
+        return f"({product})" if not inverse else f"(T(1)/({product}))"
+
+    def _print_Mul(self, expr: sp.Mul) -> str:
+        """``[-]a*b*…[/c | /(c*d*…)]`` as :func:`_mul_parts` splits ``expr`` (sympy's own C
+        layout: a rational coefficient is a factor, a negative exponent a denominator)."""
+        sign, numer, denom, grouped = _mul_parts(expr)
+        prec = precedence(expr)
+        if len(numer) == 1 and sign:  # unary minus binds between a product and a power
+            a_str = [self.parenthesize(numer[0], 0.5 * (PRECEDENCE["Pow"] + PRECEDENCE["Mul"]))]
+        else:
+            a_str = [self.parenthesize(x, prec) for x in numer]
+        b_str = [f"({self.parenthesize(x, prec)})" if paren else self.parenthesize(x, prec)
+                 for x, paren in zip(denom, grouped, strict=True)]
+        if not denom:
+            return sign + "*".join(a_str)
+        if len(denom) == 1:
+            return sign + "*".join(a_str) + "/" + b_str[0]
+        return f"{sign}{'*'.join(a_str)}/({'*'.join(b_str)})"
 
     def _print_Function(self, expr) -> str:
         args = ", ".join(self._print(a) for a in expr.args)
@@ -157,6 +178,114 @@ class HlsCodePrinter(CXX17CodePrinter):
         raise UnsupportedExpressionError(f"the HLS backend cannot print '{type(expr).__name__}'")
 
     emptyPrinter = _print_not_supported
+
+
+def _power_terms(exp) -> tuple[int, bool, bool]:
+    """How ``b**exp`` prints (:meth:`HlsCodePrinter._print_Pow`): the copies of ``b`` in its
+    product (``|exp|`` rounded down), whether a square root ``fgc_sqrt(b)`` joins them (a
+    half-integer exponent) and whether the product is inverted (``T(1)/(…)``)."""
+    return int(abs(exp)), not exp.is_Integer, bool(exp < 0)
+
+
+def _mul_parts(expr: sp.Mul) -> tuple[str, list, list, list]:
+    """How a product prints (:meth:`HlsCodePrinter._print_Mul`): its sign (``"-"`` for a
+    negative coefficient, printed as a unary minus), the numerator's factors (a rational
+    coefficient one of them: ``x/2`` prints ``(T(0.5))*x``), the denominator's factors (each
+    power with a negative rational exponent, inverted: ``x*y**-2`` prints ``x/(y*y)``) and, per
+    denominator factor, whether it is printed in its own parentheses (an inverted product)."""
+    c, e = expr.as_coeff_Mul()
+    sign = ""
+    if c < 0:
+        expr = _keep_coeff(-c, e)
+        sign = "-"
+    numer, denom, grouped = [], [], []
+    for item in expr.as_ordered_factors():
+        if (item.is_commutative and item.is_Pow and item.exp.is_Rational
+                and item.exp.is_negative):
+            if item.exp != -1:
+                denom.append(sp.Pow(item.base, -item.exp, evaluate=False))
+                grouped.append(False)
+            else:
+                denom.append(sp.Pow(item.base, -item.exp))
+                grouped.append(len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul))
+        else:
+            numer.append(item)
+    return sign, numer or [sp.S.One], denom, grouped
+
+
+def printed_ops(exprs: Iterable[sp.Expr], counts: Counter | None = None) -> Counter:
+    """The floating-point operations of ``exprs`` as :class:`HlsCodePrinter` prints them, by
+    kind (add, mul, div, sqrt, trig, special): each operator the text holds, counted from the
+    same splits the printer prints from (:func:`_mul_parts`, :func:`_power_terms`). A
+    subtraction is an add, a sign no operation, a product of k factors k - 1 multiplies, a
+    denominator one divide (a product of several, their multiplies too), a division by a
+    constant a multiply by its reciprocal, a power's base once however often it is printed
+    (``(a + b)**2`` prints ``(a + b)*(a + b)``, whose repeated sum the C++ front end computes
+    once, as the second reader reads it); a Lie coefficient or SO(3) logarithm component is one
+    ``special`` (its body counted apart: ``fgc_backends.hls.units.special_ops``), a sine,
+    cosine, tangent or inverse one ``trig``, ``fgc_guarded_quotient`` its divide."""
+    counts = Counter() if counts is None else counts
+    for expr in exprs:
+        _printed(sp.sympify(expr), counts, 1)
+    return counts
+
+
+def _printed(expr, counts: Counter, times: int) -> None:
+    """Add ``times`` copies of ``expr``'s printed operations to ``counts``."""
+    if expr.is_Atom:
+        return
+    if expr.is_Add:
+        counts["add"] += times * (len(expr.args) - 1)
+        for arg in expr.args:
+            _printed(arg, counts, times)
+    elif expr.is_Mul:
+        _, numer, denom, _ = _mul_parts(expr)
+        counts["mul"] += times * (len(numer) - 1 + max(len(denom) - 1, 0))
+        counts["div"] += times * bool(denom)
+        for item in (*numer, *denom):
+            _printed(item, counts, times)
+    elif expr.is_Pow:
+        whole, root, inverse = _power_terms(expr.exp)
+        counts["mul"] += times * max(whole + root - 1, 0)
+        counts["sqrt"] += times * root
+        counts["div"] += times * inverse
+        # the product's copies of the base are one value: the C++ front end computes a
+        # repeated group once (``(a + b)*(a + b)``: one add, one multiply); a half-integer
+        # power's square root takes the base as a call's argument, a second value
+        _printed(expr.base, counts, times * (1 + (root and whole > 0)))
+    elif isinstance(expr, special.VectorNorm):
+        _printed(expr.expanded(), counts, times)
+    else:
+        if isinstance(expr, (special.LieCoefficient, special.SO3LogComponent)):
+            counts["special"] += times
+        elif isinstance(expr, special.GuardedQuotient):  # g > t ? a / b : f
+            counts["div"] += times
+        elif isinstance(expr, _TRIG):
+            counts["trig"] += times
+        for arg in expr.args:
+            _printed(arg, counts, times)
+
+
+_TRIG = (sp.sin, sp.cos, sp.tan, sp.atan2, sp.atan, sp.acos, sp.asin)
+
+
+@functools.lru_cache(maxsize=512)
+def kernel_printed_ops(kernel: Kernel) -> tuple[tuple[str, int], ...]:
+    """:func:`printed_ops` of a whole kernel as :func:`print_kernel` prints it: each assignment
+    and output once, and the arguments of one rotation's SO(3) logarithm once (its three
+    components are read from one ``so3_log`` call)."""
+    counts: Counter = Counter()
+    logs = set()
+    for _, e in kernel.assignments:
+        if isinstance(e, special.SO3LogComponent):
+            counts["special"] += 1
+            if e.args not in logs:
+                logs.add(e.args)
+                printed_ops(e.args, counts)
+        else:
+            printed_ops([e], counts)
+    printed_ops(kernel.outputs, counts)
+    return tuple((k, counts.get(k, 0)) for k in OP_KINDS)
 
 
 def _printable_power(exp) -> bool:

@@ -25,7 +25,7 @@ from fgc_backends.cfamily.scalars import (
 )
 from fgc_backends.hls.config import HlsConfig, HlsConfigError, check_clock
 from fgc_backends.hls.lint import lint_project
-from fgc_backends.hls.units.special_ops import with_helpers
+from fgc_backends.hls.units.special_ops import printed_counts
 
 # template → emitted file name ({name} is the project identifier): the dataflow accelerator the
 # plan describes (docs/hls.md). The CPU program is the native backend's (fgc_backends.native).
@@ -257,12 +257,12 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         else:
             # each mode's ALLOCATION: the instances the plan binds at its loop's II (at most
             # the options' limits), so the text holds Vitis to the plan's operators
-            # (the counts as printed: the special functions' bodies in, sign flips out)
+            # (the counts as printed: the special functions' bodies in)
             jac = Unit(f"factor_{b.index}", "ALLOCATION", 1, _bound(
-                allocations[b.index], with_helpers(block.ops_after, block.kernel),
+                allocations[b.index], printed_counts(block, "jacobian"),
                 loops[f"factor_{b.index}_jacobian"].ii, plan.ops))
             cost = Unit(f"factor_cost_{b.index}", "ALLOCATION", 1, _bound(
-                allocations[b.index], with_helpers(block.ops_cost, block.cost_kernel),
+                allocations[b.index], printed_counts(block, "cost"),
                 loops[f"factor_{b.index}_cost"].ii, plan.ops))
             jac_text = "\n".join((*b.jacobian.intermediates, *b.jacobian.outputs))
             cost_text = "\n".join((*b.cost.intermediates, *b.cost.outputs))

@@ -387,7 +387,7 @@ def test_allocation_limits_are_the_plans(tmp_path):
     # (retract_<k>: its unit's operators)
     from fgc_backends.cfamily.blocks import block_contexts
     from fgc_backends.hls.units.datapath import small_allocation, small_blocks
-    from fgc_backends.hls.units.special_ops import with_helpers
+    from fgc_backends.hls.units.special_ops import printed_counts
     shared = factor_allocation(program, plan.options)
     small = small_blocks(program)  # LIO's priors and GPS: one shared datapath per mode
     assert small
@@ -398,10 +398,10 @@ def test_allocation_limits_are_the_plans(tmp_path):
     for b, block in enumerate(program.blocks):
         if b in small:
             continue
-        # (the counts as printed: units/special_ops.py's helpers' bodies in, sign flips out)
+        # (the counts as printed: the printer's count, units/special_ops.py's helpers' bodies in)
         for function, mode, counts in (
-                (f"factor_{b}", "jacobian", with_helpers(block.ops_after, block.kernel)),
-                (f"factor_cost_{b}", "cost", with_helpers(block.ops_cost, block.cost_kernel))):
+                (f"factor_{b}", "jacobian", printed_counts(block, "jacobian")),
+                (f"factor_cost_{b}", "cost", printed_counts(block, "cost"))):
             limits_of[function] = {
                 k: min(lim, -(-counts[k] * plan.ops.op(k).ii // ii[f"factor_{b}_{mode}"]))
                 for k, lim in mode_allocation(shared[b], counts)}

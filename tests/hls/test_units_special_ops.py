@@ -77,12 +77,24 @@ def test_the_imu_datapath_is_priced_at_least_as_read(tmp_path):
 
 
 def test_sign_flips_are_no_multiplies(imu):
-    """The compiler counts a - b as a + (-1)·b, a multiply the printed kernel does not hold; the
-    datapath's counts as printed drop one multiply per product with a -1 coefficient."""
-    from fgc_backends.hls.units.special_ops import negations, with_helpers
+    """The compiler counts a - b as a + (-1)·b and s**2/2 as a multiply and a divide; the
+    printed kernel holds a subtraction and (T(0.5))*(s*s). The datapath's counts are the
+    printer's: each multiply and divide of the printed cost kernel, no more."""
+    import sympy as sp
 
-    prior = next(b for b in imu.blocks if b.name == "PriorFactorVector3")
-    flips = negations(prior.cost_kernel)
+    from fgc_backends.cfamily.blocks import block_contexts
+    from fgc_backends.hls.units.special_ops import printed_counts
+
+    b = next(i for i, blk in enumerate(imu.blocks) if blk.name == "PriorFactorVector3")
+    prior = imu.blocks[b]
+    kernel = prior.cost_kernel.kernel()
+    flips = sum(1 for e in [e for _, e in kernel.assignments] + list(kernel.outputs)
+                for node in sp.preorder_traversal(sp.sympify(e))
+                if node.is_Mul and node.as_coeff_Mul()[0] == -1)
     assert flips > 0
-    counts = dict(prior.ops_cost)
-    assert with_helpers(counts, prior.cost_kernel)["mul"] == counts["mul"] - flips
+    printed = block_contexts(imu, vector=False)[b].cost
+    text = "\n".join((*printed.intermediates, *printed.outputs))
+    counts = printed_counts(prior, "cost")
+    assert "(T(0.5))*" in text  # ½‖W r‖²: a multiply by 0.5, counted as a divide there
+    assert counts.get("mul", 0) == text.count("*") < prior.ops_cost["mul"]
+    assert counts.get("div", 0) == text.count("/") < prior.ops_cost["div"]

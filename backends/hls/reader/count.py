@@ -258,8 +258,9 @@ class _Counter(_Scope):
         ops: Counter = Counter()
         # a square printed as a product of two copies, (e)*(e): the compiler's front end
         # computes e once (common subexpressions of a statement are merged), so the second
-        # copy's operators are not built: it is read as an operand
-        text = until_fixed(r"\(([^()]*)\)\s*\*\s*\(\1\)", r"(\1)*q", stmt)
+        # copy's operators are not built: it is read as an operand (e may hold calls and
+        # groups of its own: (sin((0.5)*c))*(sin((0.5)*c)))
+        text = _merge_squares(stmt)
         # a ternary's condition (``c + h < f ? x[c + h] : L(0)``) is not the statement's
         # floating-point value: its operators are typed by their operands' declarations
         text, conditions = _ternary_conditions(text)
@@ -276,6 +277,7 @@ class _Counter(_Scope):
         if compound:
             ops[{"+": "add", "-": "add", "*": "mul", "/": "div"}[compound.group(1)]] += 1
         body = text.split("=", 1)[1] if re.search(r"[^=!<>]=[^=]", text) else text
+        body = re.sub(r"^\s*return\b", "", body)  # `return -x`: a sign, not a subtraction
         # a multiply follows an operand (``= *scale`` dereferences a pointer)
         ops["mul"] += len(re.findall(r"(?<=[\w)\]])\s*\*(?!=)", body))
         ops["div"] += len(re.findall(r"/(?!=)", body))
@@ -320,6 +322,29 @@ class _Counter(_Scope):
                 result = capped
             self.memo[key] = result
         return self.memo[key]
+
+
+def _merge_squares(text: str) -> str:
+    """``text`` with every copy after the first of a power ``(e)*(e)[*(e)…]`` (a parenthesised
+    group, not a call's arguments, times the same group) read as an operand ``q``."""
+    start = 0
+    while (i := text.find("(", start)) >= 0:
+        start = i + 1
+        if i and (text[i - 1].isalnum() or text[i - 1] == "_"):
+            continue  # a call's arguments
+        j = _matching(text, i, "(", ")")
+        after = j + 1
+        while (m := _TIMES_GROUP.match(text, after)) is not None:  # (e)*(e)*(e): a cube
+            k = m.end() - 1
+            end = _matching(text, k, "(", ")")
+            if text[i + 1:j] != text[k + 1:end]:
+                break
+            text = text[:k] + "q" + text[end + 1:]
+            after = k + 1
+    return text
+
+
+_TIMES_GROUP = re.compile(r"\s*\*\s*\(")
 
 
 def _exclusive(total: _Count, chain: _Count, other: _Count) -> _Count:

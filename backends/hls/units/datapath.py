@@ -21,7 +21,7 @@ from fgc_backends.hls.plan.loops import (
 )
 from fgc_backends.hls.plan.model import Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
-from fgc_backends.hls.units.special_ops import with_helpers
+from fgc_backends.hls.units.special_ops import printed_counts
 
 
 def gradient_loops(program, timing: dict) -> list[Process]:
@@ -125,10 +125,10 @@ def small_branch_ops(program, blocks, mode: str) -> list[dict[str, int]]:
     for i in small_blocks(program):
         b, bc = program.blocks[i], blocks[i]
         if mode == "jacobian":
-            out.append(_merged(b.ops_after, whitening_ops(bc)))
+            out.append(_merged(printed_counts(b, "jacobian"), whitening_ops(bc)))
         else:  # robust_ops less the running total's add, which is the loop's own
             own = robust_ops(bc)
-            out.append(_merged(b.ops_cost, {**own, "add": own["add"] - 1}))
+            out.append(_merged(printed_counts(b, "cost"), {**own, "add": own["add"] - 1}))
     return out
 
 
@@ -166,11 +166,12 @@ def factor_allocation(program, opts) -> list[tuple[tuple[str, int], ...]]:
     most what the datapath uses in either mode."""
     alloc = dict(opts.allocation)
     n_of = [sum(1 for f in program.factors if f.block == i) for i in range(len(program.blocks))]
-    work = [n * sum(b.ops_after.values()) for n, b in zip(n_of, program.blocks, strict=True)]
+    printed = [(printed_counts(b, "jacobian"), printed_counts(b, "cost")) for b in program.blocks]
+    work = [n * sum(jac.values()) for n, (jac, _) in zip(n_of, printed, strict=True)]
     heaviest = n_of[max(range(len(work)), key=work.__getitem__)] if work else 1
     out = []
-    for i, b in enumerate(program.blocks):
-        used = {k: max(b.ops_after.get(k, 0), b.ops_cost.get(k, 0)) for k in alloc}
+    for i, (jac, cost) in enumerate(printed):
+        used = {k: max(jac.get(k, 0), cost.get(k, 0)) for k in alloc}
         share = {k: alloc[k] if opts.allocation_scaling == "uniform"
                  else max(1, math.ceil(alloc[k] * min(1.0, n_of[i] / heaviest)))
                  for k in alloc}
@@ -265,10 +266,10 @@ def build(ctx) -> None:
         name = f"factor_{i}"
         instances = len(bc.instances)
         bound = []
-        for mode, counts, text, out, own in (
-                ("jacobian", b.ops_after, b.kernel, jac, whitening_ops(bc)),
-                ("cost", b.ops_cost, b.cost_kernel, cost, robust_ops(bc))):
-            counts = with_helpers(counts, text)  # the special functions' bodies, as printed
+        for mode, text, out, own in (
+                ("jacobian", b.kernel, jac, whitening_ops(bc)),
+                ("cost", b.cost_kernel, cost, robust_ops(bc))):
+            counts = printed_counts(b, mode)  # as printed, the special functions' bodies in
             allocated = mode_allocation(allocations[i], counts)
             issue = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
                                for k, n in allocated])

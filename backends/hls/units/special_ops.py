@@ -1,14 +1,14 @@
 """The arithmetic inside fgc's special functions as the HLS kernel prints them.
 
-The compiler counts a Lie coefficient (``lie_A`` … ``lie_D1``) or a component of the SO(3)
-logarithm as one ``special`` operation (:func:`fgc.compiler.kernel._count_ops`), which the
+The printer counts a Lie coefficient (``lie_A`` … ``lie_D1``) or a component of the SO(3)
+logarithm as one ``special`` operation (:func:`fgc_backends.cfamily.printer.printed_ops`), which the
 operator table prices as one transcendental core. The emitted header defines each as an inline
 function whose body Vitis binds inside the caller's pipelined loop: a coefficient's Taylor
 series in Horner form (one multiply and one add a term) beside its closed form (printed from
 ``fgc_backends.cfamily.special``'s kernels: a square root, sines and cosines, divides and a few
 products), and ``so3_log`` (kernel.h.jinja) once per rotation for its three components. The
 adds, multiplies, divides and square roots of those bodies come on top of the kernel's own
-counts (the sines, cosines and the arctangent are what the ``special`` operation prices).
+printed counts (the sines, cosines and the arctangent are what the ``special`` operation prices).
 The second reader, which reads the bodies in place, found the difference: imu_window's
 ``factor_cost_0`` holds 477 adds and 560 multiplies an evaluation where the kernel's counts
 said 305 and 373.
@@ -21,8 +21,11 @@ from collections import Counter
 
 import sympy as sp
 
+from fgc.compiler.kernel import Kernel
 from fgc.frontend.geometry import special
 from fgc.ir.program import KernelText
+from fgc_backends.cfamily.blocks import cost_outputs_kernel
+from fgc_backends.cfamily.printer import kernel_printed_ops
 
 # so3_log's body as kernel.h.jinja prints it, its arctangent apart (both of its branches are
 # built): the skew and symmetric parts, cos and sin of the angle, the axis and its norm
@@ -34,22 +37,24 @@ ARITHMETIC = ("add", "mul", "div", "sqrt")
 def coefficient_ops(name: str) -> tuple[tuple[str, int], ...]:
     """The arithmetic of ``lie_<name>``'s body: its series' Horner terms (a multiply and an add
     a term after the first) and its closed form's operations (sines and cosines left out)."""
-    from fgc.compiler.kernel import _op_counts
     from fgc_backends.cfamily.special import _closed_form_kernel
 
     terms = len(special.SERIES[name]) - 1
-    closed = dict(_op_counts(_closed_form_kernel(name)))
+    closed = dict(kernel_printed_ops(_closed_form_kernel(name)))
     ops = {k: closed.get(k, 0) for k in ARITHMETIC}
     ops["add"] += terms
     ops["mul"] += terms
     return tuple(sorted(ops.items()))
 
 
-@functools.lru_cache(maxsize=256)
-def helper_ops(text: KernelText) -> tuple[tuple[str, int], ...]:
+def helper_ops(text: KernelText | Kernel) -> tuple[tuple[str, int], ...]:
     """The special functions' arithmetic that one evaluation of kernel ``text`` runs: each
     Lie coefficient call's body, and one ``so3_log`` per rotation whose components it takes."""
-    kernel = text.kernel()
+    return _helper_ops(text.kernel() if isinstance(text, KernelText) else text)
+
+
+@functools.lru_cache(maxsize=256)
+def _helper_ops(kernel: Kernel) -> tuple[tuple[str, int], ...]:
     total: Counter = Counter()
     rotations = set()
     exprs = [e for _, e in kernel.assignments] + list(kernel.outputs)
@@ -64,24 +69,25 @@ def helper_ops(text: KernelText) -> tuple[tuple[str, int], ...]:
     return tuple(sorted((k, n) for k, n in total.items() if n))
 
 
+def printed_counts(block, mode: str) -> dict:
+    """The operations by kind of block ``block``'s (a ``BlockSpec``) datapath in ``mode``
+    ("jacobian": ``factor_<b>``, "cost": ``factor_cost_<b>``) as the HLS kernel prints it: the
+    printer's own count of the kernel it prints
+    (:func:`fgc_backends.cfamily.printer.kernel_printed_ops`: a division by a constant a
+    multiply, a sign no multiply, a power's repeated base once; the
+    cost mode's kernel reduced to the members' costs, as printed) and its special functions'
+    arithmetic (:func:`helper_ops`). What sizes the factor datapaths' ``ALLOCATION`` limits and
+    their II: the second reader counts the same text (``tests/hls/reader/test_printed_ops.py``
+    holds the two equal)."""
+    return dict(_printed_counts(block.kernel if mode == "jacobian" else block.cost_kernel,
+                                mode, block.residual_dim, len(block.members)))
+
+
 @functools.lru_cache(maxsize=256)
-def negations(text: KernelText) -> int:
-    """Products with a -1 coefficient in kernel ``text``: the compiler's count takes -1 as a
-    factor (``a - b`` is ``a + (-1)·b``: one multiply), the printer writes a subtraction or a
-    sign (``-x``, ``-a*b``): one multiply fewer each."""
-    kernel = text.kernel()
-    exprs = [e for _, e in kernel.assignments] + list(kernel.outputs)
-    return sum(1 for expr in exprs for node in sp.preorder_traversal(sp.sympify(expr))
-               if node.is_Mul and node.as_coeff_Mul()[0] == -1)
-
-
-def with_helpers(counts: dict, text: KernelText) -> dict:
-    """``counts`` (a kernel's operation counts by kind) as the kernel is printed: its special
-    functions' arithmetic (:func:`helper_ops`) added, its sign flips (:func:`negations`) no
-    multiplies."""
-    out = dict(counts)
-    for kind, n in helper_ops(text):
-        out[kind] = out.get(kind, 0) + n
-    if "mul" in out:
-        out["mul"] = max(0, out["mul"] - negations(text))
-    return out
+def _printed_counts(text: KernelText, mode: str, m: int, n: int
+                    ) -> tuple[tuple[str, int], ...]:
+    kernel = text.kernel() if mode == "jacobian" else cost_outputs_kernel(text.kernel(), m, n)
+    out = dict(kernel_printed_ops(kernel))
+    for kind, k in helper_ops(kernel):
+        out[kind] = out.get(kind, 0) + k
+    return tuple((kind, k) for kind, k in out.items() if k)

@@ -370,6 +370,7 @@ void factor_0(const T in[42], const T dat[193],
 #pragma HLS ALLOCATION operation instances=fadd limit=8
 #pragma HLS ALLOCATION operation instances=fmul limit=11
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
     const T t2 = in[32] - dat[65];
@@ -1501,6 +1502,7 @@ void factor_cost_0(const T in[42], const T dat[193],
 #pragma HLS ALLOCATION operation instances=fadd limit=4
 #pragma HLS ALLOCATION operation instances=fmul limit=5
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
     const T t2 = in[32] - dat[65];
@@ -1645,6 +1647,7 @@ void factor_1(const T in[12], const T dat[13],
 #pragma HLS ALLOCATION operation instances=fadd limit=3
 #pragma HLS ALLOCATION operation instances=fmul limit=4
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
     const T t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
@@ -1870,6 +1873,7 @@ void factor_cost_1(const T in[12], const T dat[13],
 #pragma HLS ALLOCATION operation instances=fadd limit=3
 #pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
     const T t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
@@ -1955,7 +1959,6 @@ void factor_cost_2(const T in[3], const T dat[4],
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=2
 #pragma HLS ALLOCATION operation instances=fmul limit=2
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
     const T t2 = -dat[2] + in[2];
@@ -1988,7 +1991,6 @@ void factor_cost_3(const T in[6], const T dat[7],
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=3
 #pragma HLS ALLOCATION operation instances=fmul limit=4
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
     const T t0 = -dat[0] + in[0];
     const T t1 = -dat[1] + in[1];
     const T t2 = -dat[2] + in[2];
@@ -2719,10 +2721,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=106 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=115 cycles (the plan's)
 void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=106
+#pragma HLS PIPELINE II=115
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -2741,7 +2743,7 @@ void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
             rows.write(row);
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 106, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 115, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)

@@ -282,6 +282,7 @@ void factor_0(const T in[12], const T dat[18],
 #pragma HLS ALLOCATION operation instances=fadd limit=3
 #pragma HLS ALLOCATION operation instances=fmul limit=4
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
     const T t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
@@ -507,6 +508,7 @@ void factor_cost_0(const T in[12], const T dat[18],
 #pragma HLS ALLOCATION operation instances=fadd limit=3
 #pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
     const T t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
@@ -635,6 +637,7 @@ void factor_3(const T in[42], const T dat[211],
 #pragma HLS ALLOCATION operation instances=fadd limit=8
 #pragma HLS ALLOCATION operation instances=fmul limit=11
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = in[30] - dat[63];
     const T t1 = in[31] - dat[64];
     const T t2 = in[32] - dat[65];
@@ -2134,6 +2137,7 @@ void factor_cost_3(const T in[42], const T dat[211],
 #pragma HLS ALLOCATION operation instances=fadd limit=5
 #pragma HLS ALLOCATION operation instances=fmul limit=6
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = in[0]*in[15] + in[3]*in[18] + in[6]*in[21];
     const T t1 = t0;
     const T t2 = in[1]*in[15] + in[4]*in[18] + in[7]*in[21];
@@ -2470,10 +2474,10 @@ void gather_0(const T x[N_X], int f, T in[12], T dat[18]) {
 }
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=106 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=115 cycles (the plan's)
 void evaluate_0(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=106
+#pragma HLS PIPELINE II=115
         const int f = BLOCK0_INSTANCES[i];
         T in[12], dat[18];
         gather_0(x, f, in, dat);
@@ -2487,7 +2491,7 @@ void evaluate_0(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 106, 416);
+    FGC_CYCLES("factor_0_jacobian", 0, "instances", 1, 115, 416);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -3164,14 +3168,13 @@ void evaluate_small(const T x[N_X]) {
 #pragma HLS PIPELINE II=38
         evaluate_small_one(x, SMALL_BLOCK[i], SMALL_FACTOR[i]);
     }
-    FGC_CYCLES("factor_small_jacobian", 0, "instances", 10, 38, 27);
+    FGC_CYCLES("factor_small_jacobian", 0, "instances", 10, 38, 24);
 }
 
 // cost mode of small block type b's instance f: its members' costs summed (cost_of_<b>'s body)
 T cost_small_one(const T x[N_X], int b, int f) {
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=2
-#pragma HLS ALLOCATION operation instances=fdiv limit=1
 #pragma HLS ALLOCATION operation instances=fmul limit=2
     T total = T(0);
     if (b == 1) {

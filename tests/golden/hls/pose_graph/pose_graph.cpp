@@ -209,8 +209,9 @@ void factor_0(const T in[24], const T dat[13],
               T raw[96]) {
 #pragma HLS INLINE off
 #pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=22
-#pragma HLS ALLOCATION operation instances=fdiv limit=2
+#pragma HLS ALLOCATION operation instances=fmul limit=23
+#pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
     const T t1 = in[2]*in[12] + in[5]*in[15] + in[8]*in[18];
     const T t2 = -t1;
@@ -650,6 +651,7 @@ void factor_cost_0(const T in[24], const T dat[13],
 #pragma HLS ALLOCATION operation instances=fadd limit=6
 #pragma HLS ALLOCATION operation instances=fmul limit=8
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
     const T t1 = t0;
     const T t2 = in[1]*in[12] + in[4]*in[15] + in[7]*in[18];
@@ -736,6 +738,7 @@ void factor_1(const T in[12], const T dat[13],
 #pragma HLS ALLOCATION operation instances=fadd limit=3
 #pragma HLS ALLOCATION operation instances=fmul limit=4
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = dat[0]*in[2] + dat[3]*in[5] + dat[6]*in[8];
     const T t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
@@ -961,6 +964,7 @@ void factor_cost_1(const T in[12], const T dat[13],
 #pragma HLS ALLOCATION operation instances=fadd limit=3
 #pragma HLS ALLOCATION operation instances=fmul limit=3
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
+#pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = dat[0]*in[0] + dat[3]*in[3] + dat[6]*in[6];
     const T t1 = t0;
     const T t2 = dat[0]*in[1] + dat[3]*in[4] + dat[6]*in[7];
@@ -1241,10 +1245,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=106 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=115 cycles (the plan's)
 void evaluate_1(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=106
+#pragma HLS PIPELINE II=115
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -1258,7 +1262,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 106, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 115, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
