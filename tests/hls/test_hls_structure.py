@@ -306,11 +306,12 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
 
 
 def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
-    """Issue 18: LM control's sums (|x|² in try_steps, the step test's ‖δ‖² and δᵀ(g + μδ))
-    go a term a cycle (PIPELINE II=1) into as many interleaved partial sums as the adder's
-    latency, the gradient's largest entry into as many partial maxima as the compare's, the
-    partial arrays completely partitioned; the plan prices those loops at II 1 (one
-    accumulator each, as before, runs at II = the adder's latency)."""
+    """Issue 18: LM control's sums (|x|², found beside the gradient's maximum, the step test's
+    ‖δ‖² and δᵀg) go two terms a cycle (PIPELINE II=1, issue 33: the memories' two ports) into
+    two lanes of as many interleaved partial sums as the adder's latency, the gradient's
+    largest entry into as many partial maxima as the compare's, the partial arrays completely
+    partitioned; the plan prices those loops at II 1 (one accumulator each, as before, runs at
+    II = the adder's latency)."""
     from fgc_backends.hls import HlsConfig
     from fgc_backends.hls.emitter import accel_plan
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
@@ -322,12 +323,11 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
     assert f"T_CMP_LAT = {plan.ops.compare.latency}," in kernel
     assert "T_MAXIMA = T_CMP_LAT;" in kernel
     assert "PARTIALS = T_PARTIALS," in kernel and "MAXIMA = T_MAXIMA," in kernel
-    for array, update in (("xp", "xp[i % CFG::PARTIALS] += x[i] * x[i];"),
-                          ("dp", "dp[i % CFG::PARTIALS] += d * d;"),
-                          ("pp", "pp[i % CFG::PARTIALS] += d * (g[i] + mu * d);"),
-                          ("gp", "gp[i % CFG::MAXIMA] = a > gp[i % CFG::MAXIMA]")):
+    for array, update in (("xp", "xp[xk] += x[i] * x[i];"), ("dp", "dp[k] += d * d;"),
+                          ("pp", "pp[k] += d * g[i];"),
+                          ("gp", "gp[gk] = a > gp[gk] ? a : gp[gk];")):
         at = units.index(update)
-        loop = units[units.rindex("for (int i = 0;", 0, at):at]
+        loop = units[units.rindex("for (int e = 0;", 0, at):at]
         assert "#pragma HLS PIPELINE II=1\n" in loop, array
         assert f"#pragma HLS DEPENDENCE variable={array} inter false" in loop, array
         assert f"#pragma HLS ARRAY_PARTITION variable={array} complete" in units, array
@@ -335,7 +335,7 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
              for pr in ph.processes for lp in pr.loops}
     n_t = sum(v.dim for v in program.variables)
     assert n_t >= plan.ops.add.latency
-    assert all(loops[n].ii == 1 for n in ("gradient_max", "x_norm", "step_test"))
+    assert all(loops[n].ii == 1 for n in ("gradient_x_norm", "step_test"))
 
 
 def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):

@@ -130,15 +130,17 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     assert depth == critical_path(KernelText.of(retract_kernel(variable_class("Pose2"))),
                                   _sim_table(F32))
     assert "state_update" not in phases
-    # LM control per linearisation: the gradient's largest entry (9 entries into 1 = compare
-    # latency partial maximum: II 1, depth |.| 2 + compare 1 = 3: 11), |x| (12 storage words
-    # into 4 partial sums: II 1, depth mul 3 + add 4 (1 + ⌈log₂ 4⌉) = 15: 26); per solve: the
-    # step test (9 entries, 4 partial sums: II 1, depth μδ and g + μδ 7 + 15 = 22: 30), the
-    # decision (div 15 + 2 mul + 2 add + compare 1 = 30); per accepted step: x copied (12
-    # words, II 1, depth 2: 13)
-    assert phases["lm_iteration"] == 11 + 26
+    # LM control, every loop two words a cycle (two lanes of partials). Per linearisation the
+    # gradient's largest entry and |x| in one loop over the 12 storage words (6 iterations):
+    # the maxima (9 entries, 2 x 1 = compare latency partials: II 1, depth |.| 2 + compare 1
+    # (1 + ⌈log₂ 2⌉) = 4), |x|² (2 x 4 partial sums: II 1, depth mul 3 + add 4 (1 + ⌈log₂ 8⌉)
+    # = 19): 5 + 19 = 24; per solve: the step test (9 entries, 5 iterations, 2 x 4 partial
+    # sums of δ·δ and δ·g: depth 19, then μ‖δ‖² and its add 7: 26 -> 30), the decision (div 15
+    # + 2 mul + 2 add + compare 1 = 30); per accepted step: x copied (12 words two a cycle,
+    # depth 2: 7)
+    assert phases["lm_iteration"] == 24
     assert phases["lm_control"] == 30 + 30
-    assert phases["lm_accept"] == 13
+    assert phases["lm_accept"] == 7
     # back-substitution (fgc_backsub.h; backsub.py's slots: a step's cond_backsub and its
     # solution out on one lane beside the next step's cond_load into the other, copies two words
     # a cycle). Steps root (f 3, s 0), then A and B (f 3, s 3), both separators in the root's

@@ -3274,6 +3274,7 @@ bool solve(T mu) {
 // ---- LM control (paper B): the rules in fgc_lm.h (shared with the native solver), its
 // reductions in fgc_lm_units.h (interleaved partial sums at II 1); here the kernel's constants
 // and hooks. fgc_lm::optimize<LmConfig>: GN/LM iterations from X.
+T LM_X_NORM = T(0);  // |X| at the linearisation point: gradient_max() finds it, x_norm() reads it
 struct LmConfig {
     typedef ::fgc::T T;
     static const int MAX_ITERATIONS = ::fgc::MAX_ITERATIONS, MAX_TRIES = ::fgc::MAX_TRIES;
@@ -3321,15 +3322,18 @@ struct LmConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
-    static T x_norm() {
-#pragma HLS INLINE
-        return fgc_units::lm_x_norm<LmConfig>(X);
-    }
+    static T x_norm() { return LM_X_NORM; }  // |X|, found beside the gradient's maximum
     static bool step_test(bool solved, T mu, T out[2]) {
 #pragma HLS INLINE
         return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);
     }
-    static T gradient_max() { return fgc_units::lm_gradient_max<LmConfig>(G); }
+    static T gradient_max() {  // once per linearisation; |X| with it for x_norm (same X)
+#pragma HLS INLINE
+        T out[2];
+        fgc_units::lm_iterate<LmConfig>(G, X, out);
+        LM_X_NORM = out[1];
+        return out[0];
+    }
     static void accept_trial() { fgc_units::lm_accept<LmConfig>(X, X_TRIAL); }
     static void accepted(int, T, T, T) {}  // no host to tell on chip
 };
