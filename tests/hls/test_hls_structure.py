@@ -270,12 +270,14 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
                                     "qr_evaluate", "qr_collect")
     backsub = backsub_region(_backsub(out))
     assert backsub.processes == ("backsub_set0", "backsub_load1", "backsub_set1",
-                                 "backsub_load0", "backsub_slots", "backsub_retire")
-    assert backsub.streams == (("dx", ""),)  # the solved words to the state update
+                                 "backsub_load0", "backsub_slots", "backsub_retire",
+                                 "trial_cost")
+    # the solved words to the state update, its retired variables to the cost pass
+    assert backsub.streams == (("dx", ""), ("tx", ""))
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams))
-    assert (len(procs), len(streams)) == ((units + 4) * 2 + 6, 2 * (4 * units + 1) + 1)
-    assert tuple(p for p in procs if p.startswith("backsub")) == backsub.processes
+    assert (len(procs), len(streams)) == ((units + 4) * 2 + 7, 2 * (4 * units + 1) + 2)
+    assert tuple(p for p in procs if p.startswith(("backsub", "trial"))) == backsub.processes
     for p in procs:  # the comment block lists the plan's network
         assert f"//   process {p}\n" in kernel
 
@@ -298,10 +300,10 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     assert overlap.processes == ("cholesky_assembler", "cholesky_cascade")
     header += _texts(out, "w100", "fgc_eliminate.h")[1]
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == \
-        (2 * cpe + 10, 3 * cpe + 3)
-    assert procs[-6:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0",
-                          "backsub_slots", "backsub_retire")
-    assert all(f"//   process {p}\n" in kernel for p in procs[-6:])
+        (2 * cpe + 11, 3 * cpe + 4)
+    assert procs[-7:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0",
+                          "backsub_slots", "backsub_retire", "trial_cost")
+    assert all(f"//   process {p}\n" in kernel for p in procs[-7:])
     assert f"//   stream cpe_link{cpe} " in kernel
 
 
