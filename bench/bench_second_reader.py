@@ -2,16 +2,20 @@
 C++ back with :mod:`fgc_backends.hls.reader` (what Vitis would instantiate: operators per
 pipelined loop, every call site its own module; II as the memories and recurrences allow) and
 print, per design, the plan's DSP / BRAM36 / cycles per iteration beside the reader's DSP lower
-bound and its count of loops whose declared II the text cannot meet.
+bound and its count of loops whose declared II the text cannot meet: for its memories' ports,
+a carried recurrence, or the ALLOCATION limits in scope (operations an iteration of a kind above
+instances x II); and the ``DEPENDENCE ... inter false`` claims the text refutes (an element
+read and written again P iterations later) or cannot prove (a data-dependent address). Every
+loop the new rules flag is printed below the table.
 
     python bench/bench_second_reader.py            # LIO N=30 (QR) and imu_window N=50 (Cholesky)
     python bench/bench_second_reader.py --quick    # LIO N=8, imu_window N=10, fewer designs
     python bench/bench_second_reader.py --stream   # also paper A's on-chip stream design
 
 The on-chip stream design (bench_papers.paper_a_stream's setting: LIO, incremental K = 3, batch
-steps at keyframes 5/15/25) is compared per part: the window kernel, the batch kernel and the
-stream section (fgc_stream.h's functions that the stream top calls, each read as a top, the
-batch kernel they reach taken out), the plan's ``WindowModel.resources()`` parts beside them.
+steps at keyframes 5/15/25) is compared per part: the window kernel (its own top's reading), the
+batch kernel and the stream section (the rest of the stream top's reading), the plan's
+``WindowModel.resources()`` parts beside them.
 
 Model estimates (no vendor tool here): the reader's DSP is a lower bound on what Vitis binds.
 """
@@ -32,6 +36,8 @@ from fgc_backends.hls.plan import DEFAULT_ALLOCATION, PlanOptions, build_plan, p
 from fgc_backends.hls.reader import check, check_dsp, emitted_files, read_design
 from fgc_backends.hls.reader.design import _design, _Reader
 
+# the rules issue 32's second-reader task added (their findings are printed, not only counted)
+NEW_RULES = ("ii_allocation", "dependence_false", "dependence_unproven")
 # the files of the code around the units (issue 32's kernel helper); the QR unit's headers
 # (fgc_qr.h, fgc_eliminate.h's stacking) and the Cholesky cascade's (fgc_cpe.h) are counted apart
 AROUND = ("fgc_lm_units.h", "fgc_backsub.h")
@@ -58,6 +64,7 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
     tab = plan.target.ops(precision)  # the design's part and clock, as the plan prices it
     design = read_design(files, top, tab.add.latency)
     issues = check(design.reached_loops)
+    strict = check(design.reached_loops, strict=True)
     mine = [i for i in issues if i.file in AROUND or i.file == f"{program.name}.cpp"]
     dsp_of = _dsp_of(tab)
     around_files = (*AROUND, f"{program.name}.cpp")
@@ -67,28 +74,24 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
                 dsp_ok=not check_dsp(design, cost.dsp, _dsp_of(tab)),
                 ii_short=sum(i.rule == "ii_ports" for i in issues),
                 recurrences=sum(i.rule == "ii_recurrence" for i in issues),
+                allocation=sum(i.rule == "ii_allocation" for i in issues),
+                false_claims=sum(i.rule == "dependence_false" for i in issues),
+                unproven=sum(i.rule == "dependence_unproven" for i in strict),
+                findings=[str(i) for i in strict if i.rule in NEW_RULES],
                 around=len(mine),
                 others=sorted({f"{i.file}:{i.line}" for i in issues if i not in mine}),
                 worst=max((r.ii_bound / r.ii for r in design.reached_loops if r.ii_known),
                           default=1.0))
 
 
-def section_tops(reader) -> list[str]:
-    """The stream section's functions the stream top (fgc_stream.h's ``stream_call``) calls."""
-    call = reader.functions.get("stream_call")
-    if call is None:
-        return []
-    names = dict.fromkeys(re.findall(r"\b(\w+)\s*<\s*CFG\s*>\s*\(", call.text))
-    return [n for n in names if n in reader.functions
-            and reader.functions[n].file == "fgc_stream.h"]
-
-
 def measure_stream(n: int, out: Path) -> dict:
     """Paper A's on-chip stream design at N = ``n``: the plan's DSP per part (window kernel,
     batch kernel, stream section) beside the reader's, and the reader's II-short / carried
-    loops. The reader's window kernel is the whole design's reading less the batch kernel's
-    translation unit and the stream section's tops (what they instantiate apart from the batch
-    kernel: the kernels' functions they call from their own call sites included)."""
+    loops. The reader's window kernel is what the window kernel's own top (``<name>_top``: its
+    LM, units and datapaths once) instantiates, its batch kernel what the stream top reaches in
+    the batch kernel's translation unit, and its stream section the rest of the stream top's
+    reading: every copy the stream's own code adds (the marginal's QR set, the kept net's Log /
+    retraction datapaths, tau's loops, a kernel function called from a second site)."""
     import fgc_backends
     from fgc.app import streaming
 
@@ -105,29 +108,30 @@ def measure_stream(n: int, out: Path) -> dict:
     dsp_of = _dsp_of(tab)
     reader = _Reader(files, tab.add.latency)
     design = _design(reader, top)
-    window_cpp = f"{top.removesuffix('_stream')}.cpp"
+    name = top.removesuffix("_stream")
+    window_cpp = f"{name}.cpp"
     batch_cpp = next((k for k, _ in files if k.endswith(".cpp") and k != window_cpp), None)
     batch = design.unit_dsp(dsp_of, batch_cpp) if batch_cpp else 0
-    section = 0
-    for name in section_tops(reader):
-        if name in reader.functions:
-            part = _design(reader, name, window_cpp)
-            section += part.dsp(dsp_of) - (part.unit_dsp(dsp_of, batch_cpp) if batch_cpp else 0)
+    window = _design(reader, f"{name}_top").dsp(dsp_of)
     total = design.dsp(dsp_of)
-    issues = check(design.reached_loops)
+    issues = check(design.reached_loops, strict=True)
     plan_parts = {k: d for k, (d, _) in res["parts"].items()}
     modules = dict(design.modules)
     return dict(plan_dsp=res["dsp"], reader_dsp=total,
-                parts=[("window kernel", plan_parts.get("window kernel", 0),
-                        total - batch - section),
+                parts=[("window kernel", plan_parts.get("window kernel", 0), window),
                        ("batch kernel", plan_parts.get("batch kernel", 0), batch),
-                       ("stream section", plan_parts.get("stream section", 0), section)],
+                       ("stream section", plan_parts.get("stream section", 0),
+                        total - batch - window)],
                 ii_short=sum(i.rule == "ii_ports" for i in issues),
                 recurrences=sum(i.rule == "ii_recurrence" for i in issues),
+                allocation=sum(i.rule == "ii_allocation" for i in issues),
+                false_claims=sum(i.rule == "dependence_false" for i in issues),
+                unproven=sum(i.rule == "dependence_unproven" for i in issues),
                 issues=[str(i) for i in issues],
-                copies={k: modules.get(k, 0) for k in ("eliminate_all", "qr_update",
+                copies={k: modules.get(k, 0) for k in ("eliminate_all", "linearize_all",
+                                                       "total_cost", "qr_update",
                                                        "keyframe_local", "keyframe_retract",
-                                                       "retract_all", "so3_log")})
+                                                       "kept_matvec", "write_tau", "so3_log")})
 
 
 def main(argv=None) -> int:
@@ -168,18 +172,28 @@ def main(argv=None) -> int:
                          time.perf_counter() - t0))
     print(f"{'design':42s} {'plan DSP':>9s} {'reader DSP':>10s} {'ratio':>6s} "
           f"{'BRAM36':>7s} {'cycles/it':>10s} {'II short':>8s} {'carried':>7s} "
+          f"{'alloc':>5s} {'false dep':>9s} {'unproven':>8s} "
           f"{'worst II':>8s} {'check_dsp':>9s} {'around':>6s} {'plan/reader DSP around':>22s}")
     others = set()
+    findings: dict[str, list[str]] = {}
     for name, m, _ in rows:
         print(f"{name:42s} {m['plan_dsp']:9d} {m['reader_dsp']:10d} "
               f"{m['reader_dsp'] / max(1, m['plan_dsp']):6.2f} {m['plan_bram36']:7.1f} "
               f"{m['plan_cycles']:10d} {m['ii_short']:8d} {m['recurrences']:7d} "
-              f"{m['worst']:7.1f}x {'pass' if m['dsp_ok'] else 'FAIL':>9s} {m['around']:6d} "
+              f"{m['allocation']:5d} {m['false_claims']:9d} {m['unproven']:8d} "
+              f"{m['worst']:7.2f}x {'pass' if m['dsp_ok'] else 'FAIL':>9s} {m['around']:6d} "
               f"{m['plan_around']:>10d} / {m['reader_around']:<9d}")
         others |= set(m["others"])
+        for finding in m["findings"]:
+            findings.setdefault(finding, []).append(name)
     print("model estimates: plan = fgc's accelerator plan; reader = what the emitted text "
           "instantiates (a lower bound); 'II short': pipelined loops whose memories cannot give "
           "the declared II; 'carried': loops with a read-modify-write Vitis must assume carried; "
+          "'alloc': loops whose ALLOCATION limits cannot issue an iteration's operations "
+          "within the declared II (ops of a kind > instances x II); 'false dep': "
+          "'DEPENDENCE inter false' claims the text refutes (a partial sum met again P "
+          "iterations later); 'unproven': such claims on a data-dependent address (not a "
+          "failure: the text cannot tell); "
           "'worst II': the largest ratio of the II the text allows to the declared II; "
           "'check_dsp': the reader's check that the plan prices at least the text's DSP; "
           "'around': II-short or carried loops in the kernel around the units (the kernel, "
@@ -188,10 +202,16 @@ def main(argv=None) -> int:
           "those files")
     if others:
         print("II-short / carried loops in the units' own headers: " + ", ".join(sorted(others)))
+    if findings:
+        print("\nthe ALLOCATION / DEPENDENCE rules' findings (loop, figures; the designs they "
+              "are in):")
+        for finding, names in sorted(findings.items()):
+            print(f"  {finding}\n      in: {'; '.join(names)}")
     if stream is not None:
         print(f"\npaper A's on-chip stream design (LIO N={lio_n}, K=3): plan {stream['plan_dsp']} "
               f"DSP, reader {stream['reader_dsp']} DSP; II short {stream['ii_short']}, "
-              f"carried {stream['recurrences']}")
+              f"carried {stream['recurrences']}, alloc {stream['allocation']}, false dep "
+              f"{stream['false_claims']}, unproven {stream['unproven']}")
         print(f"{'part':16s} {'plan DSP':>9s} {'reader DSP':>10s}  plan >= reader")
         for part, plan, read in stream["parts"]:
             print(f"{part:16s} {plan:9d} {read:10d}  {'yes' if plan >= read else 'NO'}")

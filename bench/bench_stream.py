@@ -280,7 +280,7 @@ def hls_model(args) -> dict:
 
 def _design_resources(args, graph, program, pricer) -> dict:
     """The on-chip design's DSP / BRAM36 as its plan prices them (``resources()``: window
-    kernel, batch kernel, stream memories) and, with ``--reader``, the second reader's DSP of
+    kernel, batch kernel, stream section) and, with ``--reader``, the second reader's DSP of
     the emitted design (``fgc_backends.hls.reader.read_design`` of the ``<name>_stream`` top:
     every call site its own module; a lower bound on what Vitis binds)."""
     res = pricer.model.resources()

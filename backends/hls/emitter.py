@@ -333,6 +333,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
             "bs_slots": _backsub_slots(program),
+            # per slot: the loaded separator's offset in the loading lane's last solution (-1:
+            # from DELTA)
+            "bs_xoff": _backsub_xoff(program),
             "cpe": plan.options.cpe, "plan": plan,
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
 
@@ -375,6 +378,12 @@ def _backsub_slots(program: Program) -> tuple[tuple[int, int, int], ...]:
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.backsub import backsub_slots
     return backsub_slots(_tables(program))
+
+
+def _backsub_xoff(program: Program) -> tuple[int, ...]:
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.backsub import backsub_xoff
+    return backsub_xoff(_tables(program))
 
 
 def for_program(program: Program, config: HlsConfig) -> HlsConfig:

@@ -367,3 +367,72 @@ def test_the_simulator_counts_rejected_trial_steps():
     assert problem.rejected == len(tried) - 1 - 3 > 3
     # the band is worked out once in each iteration that rejected a trial at a finite cost
     assert problem.noise_passes == sum(len(t) > 1 for t in trials) >= 1
+
+
+def _stream_parts(files, top, model):
+    """Per part of the on-chip stream design (window kernel, batch kernel, stream section) the
+    plan's DSP and the second reader's: the window kernel as its own top reads, the batch
+    kernel what the stream top reaches in its translation unit, the stream section the rest
+    (bench_second_reader.measure_stream's split)."""
+    from fgc_backends.hls.reader.design import _design, _Reader
+
+    tab = model.plan.ops
+    dsp_of = {"add": tab.add.dsp, "mul": tab.mul.dsp, "div": tab.div.dsp,
+              "sqrt": tab.sqrt.dsp, "special": tab.special.dsp}
+    reader = _Reader(files, tab.add.latency)
+    design = _design(reader, top)
+    name = top.removesuffix("_stream")
+    batch_cpp = next(k for k, _ in files if k.endswith(".cpp") and k != f"{name}.cpp")
+    batch = design.unit_dsp(dsp_of, batch_cpp)
+    window = _design(reader, f"{name}_top").dsp(dsp_of)
+    read = {"window kernel": window, "batch kernel": batch,
+            "stream section": design.dsp(dsp_of) - batch - window}
+    plan = {k: d for k, (d, _) in model.resources()["parts"].items()}
+    return {k: (plan[k], read[k]) for k in read}, dict(design.modules)
+
+
+@pytest.fixture(scope="module")
+def emitted_stream(graph, stream, tmp_path_factory):
+    """Paper A's on-chip design (the incremental K = 3 stream with a batch step), emitted."""
+    import fgc_backends
+    from fgc.app.streaming import WindowPricer, stream_program
+    from fgc_backends.hls.reader import emitted_files
+
+    program = stream[0]
+    model = WindowPricer(stream_program(graph, program)).model
+    out = tmp_path_factory.mktemp("stream_design")
+    hls = fgc_backends.load("hls")
+    hls.emit(stream_program(graph, program, None), out, hls.Config(scalar="float"))
+    files, top = emitted_files(out)
+    return files, top, model
+
+
+def test_the_plan_prices_every_copy_of_the_stream_design(emitted_stream):
+    """Issue 32: every RTL copy the emitted stream design holds (each call site its own unless
+    an ALLOCATION shares it) has a price: the plan's DSP is at least the second reader's on each
+    part (the window kernel, the batch kernel, the stream section's own code), and the copies
+    that run one after the other are one instance (LM's linearisation and elimination and the
+    stream's after it; the kept net's Log / retraction passes)."""
+    files, top, model = emitted_stream
+    parts, modules = _stream_parts(files, top, model)
+    assert set(parts) == {"window kernel", "batch kernel", "stream section"}
+    for part, (plan, read) in parts.items():
+        assert plan >= read > 0, (part, plan, read)
+    # one per kernel (the window's, the batch kernel's); one each in the kept net
+    assert modules["linearize_all"] == modules["eliminate_all"] == 2
+    assert modules["back_substitute_at"] == 2  # the cost pass with it (trial_cost)
+    assert modules["keyframe_local"] == modules["keyframe_retract"] == 1
+
+
+@pytest.mark.heavy
+def test_a_call_site_without_a_price_fails_the_stream_check(emitted_stream):
+    """The check above can fail: a second call of the marginal / kept region planted in the
+    stream top is a second copy of the marginal's QR set and the kept net's datapaths that the
+    plan does not price, and the stream section then reads above its plan."""
+    files, top, model = emitted_stream
+    call = "marginal_and_kept<CFG>(m, finite, kept_first, x0, code);"
+    planted = [(k, t.replace(call, call + "\n        " + call)) if k == "fgc_stream.h" else (k, t)
+               for k, t in files]
+    assert planted != files
+    plan, read = _stream_parts(planted, top, model)[0]["stream section"]
+    assert read > plan

@@ -98,7 +98,7 @@ static void run_qr(int rows, int f, int s) {
         for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(a2 + 1);
         static T buf[C::MAX_F * C::MAX_COLS];
         T part[2][C::PARTIALS][C::MAX_F];
-        fgc_units::cond_load<C>(cond, 0, f, s, xs, buf, part);
+        fgc_units::cond_load<C>(cond, 0, f, s, xs, xs, -1, buf, part);
         fgc_units::cond_backsub<C>(buf, f, s, part, x);
         std::vector<double> xd(x, x + f);
         print("x", xd.data(), f);
@@ -146,11 +146,15 @@ static void run_cpe(int f, int s, double mu) {
     print("cond", a.data(), int(a.size()));
     print("update", b.data(), int(b.size()));
     if (fits && !singular) {  // back-substitution with xs = 1, 2, ...
-        T xs[C::MAX_COLS], x[C::MAX_F];
-        for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(a2 + 1);
+        // read lane-local (xoff = 1: a solved step's x from its second entry on); xs is NaN,
+        // so reading it instead would show
+        T xs[C::MAX_COLS], xl[C::MAX_COLS + 1], x[C::MAX_F];
+        for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(NAN);
+        xl[0] = T(NAN);
+        for (int a2 = 0; a2 < s; ++a2) xl[1 + a2] = T(a2 + 1);
         static T buf[C::MAX_F * C::MAX_COLS];
         T part[2][C::PARTIALS][C::MAX_F];
-        fgc_units::cond_load<C>(cond, 0, f, s, xs, buf, part);
+        fgc_units::cond_load<C>(cond, 0, f, s, xs, xl, 1, buf, part);
         fgc_units::cond_backsub<C>(buf, f, s, part, x);
         std::vector<double> xd(x, x + f);
         print("x", xd.data(), f);
@@ -389,7 +393,7 @@ def test_cpe_matches_numpy(driver, cpe):
         assert np.isnan(res.cond.reshape(f, -1)[np.tril_indices(f, -1)]).all()
         np.testing.assert_allclose(got_cond, cond, rtol=0, atol=1e-12 * scale)
         np.testing.assert_allclose(got_upd, upd, rtol=0, atol=1e-12 * scale)
-        # back-substitution R x = d - S xs, xs = 1, 2, ...
+        # back-substitution R x = d - S xs, xs = 1, 2, ... (read lane-local by cond_load)
         xs = np.arange(1, s + 1, dtype=float)
         x = np.linalg.solve(cond[:, :f], cond[:, f + s] - cond[:, f:f + s] @ xs)
         np.testing.assert_allclose(res.x, x, rtol=1e-10, atol=1e-10)

@@ -149,32 +149,33 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # (1 + ⌈log₂ 8⌉), div 15) + the scaling mul 3 = 19 deep: 21; the triangle's columns 2 and 1
     # each padded to the chain mul + add = 7, plus one: 16 iterations 2 mul + add = 10 deep: 25;
     # x_0 a move 1 -> 47) and its 3 unknowns out (2 + 1: 3) -> 50; A needs them, so slot 2 loads
-    # it alone: its separator in (3) and 7 + 6 + 5 = 18 words (8 + 9 = 17) -> 20; slot 3: B's
-    # separator in (3), then A's solve and solution out (50) beside B's load (17), the slower
-    # plus the other's fill (9) -> 62; slot 4 solves B -> 50: the slots end at 13, 63, 83, 145,
-    # 195. Beside them the state update (backsub_retire: a variable an iteration at II 24, 2 +
-    # depth deep: a step's 3 words in, a pair a cycle, then the datapath) retracts the root at
-    # 63, A when it is sent at 145, B at 195: it ends at 195 + 2 + depth, which the phase adds
-    # after the slots. Beside them the cost at X_TRIAL (trial_cost, issue 33), fed the retired
-    # variables (x1, x0, x2: the root's, A's, B's) as they end (65, 147, 197 + depth): the
-    # datapaths' loops one after another, the one with more work first (the prior: 1 instance
-    # x II 24 against the between factors' 2 x 12, a tie: block order), each its cost-mode II
-    # and depth + 2 (the taken words written and read) where it takes variables. The prior's
-    # loop takes x1 in an entry of its own (one variable an entry: its instances have one),
-    # then x0 and costs the prior at 147 + depth; the between factors' loop starts when it has
-    # drained, costs x0-x1 (all taken) and then x1-x2 once x2 is in (197 + depth).
+    # it alone: its separator in (3) and 7 + 6 + 5 = 18 words (8 + 9 = 17) -> 20; slot 3: A's
+    # solve and solution out (50) beside B's load (17), the slower plus the other's fill (9)
+    # -> 59 (B loads into lane 0, whose last solve is the root: its separator is read from that
+    # lane's solution, no copy in from DELTA); slot 4 solves B -> 50: the slots end at 13, 63,
+    # 83, 142, 192. Beside them the state update (backsub_retire: a variable an iteration at
+    # II 24, 2 + depth deep: a step's 3 words in, a pair a cycle, then the datapath) retracts
+    # the root at 63, A when it is sent at 142, B at 192: it ends at 192 + 2 + depth. Beside
+    # them the cost at X_TRIAL (trial_cost, issue 33), fed the retired variables (x1, x0, x2:
+    # the root's, A's, B's) as they end (65, 144, 194 + depth): the datapaths' loops one after
+    # another, the one with more work first (the prior: 1 instance x II 24 against the between
+    # factors' 2 x 12, a tie: block order), each its cost-mode II and depth + 2 (the taken
+    # words written and read) where it takes variables. The prior's loop takes x1 in an entry
+    # of its own (one variable an entry: its instances have one), then x0 and costs the prior
+    # at 144 + depth; the between factors' loop starts when it has drained, costs x0-x1 (all
+    # taken) and then x1-x2 once x2 is in (194 + depth); the phase ends with it.
     by_name = {ph.name: ph for ph in plan.phases}
     plan_phase = by_name["backsub"]
     slots, retire, cost = plan_phase.processes
     sizes = [sum(lp.cycles for lp in slots.loops[2 * k:2 * k + 2]) for k in range(5)]
-    assert sizes == [13, 50, 20, 62, 50] and len(slots.loops) == 10
+    assert sizes == [13, 50, 20, 59, 50] and len(slots.loops) == 10
     assert retire.loops[0].cycles == 2 + depth
     (ii0, d0), (ii1, d1) = [(p.loops[0].ii, p.loops[0].depth)
                             for p in by_name["factor_cost"].processes[1:]]
     assert (ii0, ii1) == (24, 12)
-    free = 147 + depth + d0 + 2
-    end = max(free + ii1, 197 + depth) + d1 + 2
-    assert cost.loops[0].cycles == end - (195 + 2 + depth)
+    free = 144 + depth + d0 + 2
+    end = max(free + ii1, 194 + depth) + d1 + 2
+    assert cost.loops[0].cycles == end - (192 + 2 + depth)
     assert phases["backsub"] == end
     assert "factor_cost" not in phases  # the cost at X: once per call
     assert by_name["factor_cost"].per == "call"

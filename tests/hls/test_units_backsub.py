@@ -14,6 +14,7 @@ from fgc_backends.hls.units.backsub import (
     backsub_operators,
     backsub_slots,
     backsub_words,
+    backsub_xoff,
     load_loop,
     retire_region,
     triangle_trip,
@@ -81,6 +82,39 @@ def test_slots_overlap_a_solve_with_the_next_load_unless_it_needs_that_solution(
     serial = {**tables, "STEP_COL": (0, 1, 4, 2, 3, 0, 4, 5)}  # step 1 now needs step 0
     slots = backsub_slots(serial)
     assert slots == ((-1, 2, 1), (2, -1, 0), (-1, 0, 0), (0, -1, 1), (-1, 1, 1), (1, -1, 0))
+
+
+def test_a_lane_local_separator_is_read_where_the_lanes_solve_left_it():
+    # a two-ended chain of 2-column steps: root 4 (columns 8, 9), its children 2 (6 | 8) and
+    # 3 (7 | 9), then 0 (4, 5 | 6) below 2 and 1 (2, 3 | 7) below 3 (frontal columns 6 and 7
+    # split so that each child's separator is the last column of its parent's frontal block)
+    tables = {"LEVEL_BEGIN": (0, 2, 4, 5), "LEVEL_STEPS": (0, 1, 2, 3, 4),
+              "STEP_F": (2, 2, 1, 1, 2), "STEP_W": (3, 3, 2, 2, 2),
+              "STEP_COL_BEGIN": (0, 3, 6, 8, 10),
+              "STEP_COL": (4, 5, 6, 2, 3, 7, 6, 8, 7, 9, 8, 9)}
+    slots = backsub_slots(tables)
+    assert slots == ((-1, 4, 1), (4, -1, 0), (-1, 2, 0), (2, 3, 1), (3, 0, 0), (0, 1, 1),
+                     (1, -1, 0))
+    # the root's first child loads into lane 1 (the root is lane 0's: from DELTA); step 3
+    # into lane 0, whose last solve is the root: its column 9 is the root's frontal column 1;
+    # step 0 into lane 1 after step 2 (offset 0), step 1 into lane 0 after step 3
+    assert backsub_xoff(tables) == (-1, -1, -1, 1, 0, 0, -1)
+    # a separator that is not its lane's last solution in order stays with DELTA
+    swapped = {**tables, "STEP_COL": (4, 5, 6, 2, 3, 9, 6, 8, 7, 9, 8, 9)}  # step 1 needs 9
+    assert backsub_xoff(swapped)[5] == -1
+
+
+def test_the_lane_local_separator_saves_its_copy_on_a_two_ended_chain():
+    program = chain(7, linear="cholesky", cpe=2)
+    tables = _tables(program)
+    xoff = backsub_xoff(tables)
+    loads = [ld for _, ld, _ in backsub_slots(tables) if ld >= 0]
+    # the root and its first child come from DELTA (no separator, another lane's), the rest
+    # from their own lane
+    assert sum(1 for x in xoff if x >= 0) == len(loads) - 2
+    phase = {ph.name: ph for ph in build_plan(program).phases}["backsub"]
+    copies = [lp for lp in phase.processes[0].loops if lp.name == "separator_in"]
+    assert sum(1 for lp in copies if lp.trip > 0) == 1
 
 
 def test_two_lanes_on_a_one_set_qr_design():

@@ -32,8 +32,9 @@
 // every call site of a function not inlined is its own RTL instance, so the two calls of the
 // kernel's solve would build it, and every cost datapath, twice; try_steps and the HLS
 // kernel's hooks are INLINE (their calls land in optimize's body) and optimize's ALLOCATION
-// limits solve to one instance there: both calls share it (they never run at once). The
-// native compiler ignores the HLS pragmas.
+// limits solve to one instance there: both calls share it (they never run at once). A caller
+// of optimize_inline carries that ALLOCATION itself. The native compiler ignores the HLS
+// pragmas.
 #ifndef FGC_LM_H
 #define FGC_LM_H
 
@@ -91,9 +92,12 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
     return Step<T>{2, CFG::REASON_LAMBDA_LIMIT, cost, T(0)};
 }
 
+// optimize's body, INLINE: a kernel that runs its linearisation or elimination again after LM
+// (the on-chip stream's window and batch kernel: fgc_stream.h) calls it directly, so LM's call
+// sites and its own land in one module, whose ALLOCATION makes each one RTL instance.
 template <class CFG>
-void optimize(typename CFG::T errors[2], int info[3]) {
-#pragma HLS ALLOCATION function instances=solve limit=1
+void optimize_inline(typename CFG::T errors[2], int info[3]) {
+#pragma HLS INLINE
     typedef typename CFG::T T;
     T cost = CFG::cost_x();
     errors[0] = cost;
@@ -144,6 +148,14 @@ void optimize(typename CFG::T errors[2], int info[3]) {
     info[0] = it;
     info[1] = status;
     info[2] = reason;
+}
+
+template <class CFG>
+void optimize(typename CFG::T errors[2], int info[3]) {
+#pragma HLS ALLOCATION function instances=solve limit=1
+#pragma HLS ALLOCATION function instances=back_substitute_at limit=1
+#pragma HLS ALLOCATION function instances=eliminate_all limit=1
+    optimize_inline<CFG>(errors, info);
 }
 
 }  // namespace fgc_lm

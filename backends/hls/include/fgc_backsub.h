@@ -4,14 +4,17 @@
 //
 //   template <class CFG>
 //   void cond_load(const typename CFG::T src[], int off, int f, int s, const typename CFG::T xs[MAX_COLS],
+//                  const typename CFG::T xl[MAX_F], int xoff,
 //                  typename CFG::T cond[MAX_F * MAX_COLS], typename CFG::T part[2][PARTIALS][MAX_F]);
 //   template <class CFG>
 //   void cond_backsub(const typename CFG::T cond[MAX_F * MAX_COLS], int f, int s,
 //                     const typename CFG::T part[2][PARTIALS][MAX_F], typename CFG::T x[MAX_F]);
 //
 // The conditional as qr_step / cpe_step store it: f rows of w + 1 = f + s + 1 columns, row-major,
-// cond[i * (w + 1) + c]; xs[a], a < s: the separator's solution (solved by the parent steps
-// first). Out: x[i], i < f, with R x = d - S xs. CFG needs T, MAX_F, MAX_COLS (>= f + s + 1),
+// cond[i * (w + 1) + c]; the separator's solution (solved by the parent steps first): xs[a],
+// a < s, or, with xoff >= 0, xl[xoff + a] (a solved step's frontal solution where the separator's
+// columns are that step's frontal columns xoff ... xoff + s - 1 in order: the driver's lane-local
+// separator, read where the lane's solve left it). Out: x[i], i < f, with R x = d - S xs. CFG needs T, MAX_F, MAX_COLS (>= f + s + 1),
 // PARTIALS (>= ADD_LAT), ADD_LAT, MUL_LAT, DIV_LAT; the QR and CPE configurations have them all.
 //
 // cond_load moves the words the solve reads (R's upper triangle, S and d of each row: f (w + 1)
@@ -67,8 +70,8 @@ inline int backsub_words(int f, int s) { return f * (f + s + 1) - f * (f - 1) / 
 
 template <class CFG>
 void cond_load(const typename CFG::T src[], int off, int f, int s,
-               const typename CFG::T xs[CFG::MAX_COLS],
-               typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+               const typename CFG::T xs[CFG::MAX_COLS], const typename CFG::T xl[CFG::MAX_F],
+               int xoff, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                typename CFG::T part[2][CFG::PARTIALS][CFG::MAX_F]) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
@@ -90,7 +93,8 @@ void cond_load(const typename CFG::T src[], int off, int f, int s,
                 if (a >= 0 && a < s) {
                     const int b = (a >> 1) % P;
                     const bool first = a < 2 * P;
-                    part[h][b][i] = (first ? T(0) : part[h][b][i]) + v * xs[a];
+                    const T xa = xoff >= 0 ? xl[xoff + a] : xs[a];  // a mux: no operator
+                    part[h][b][i] = (first ? T(0) : part[h][b][i]) + v * xa;
                 }
                 if (c == cols - 1) {
                     ++i;
@@ -184,7 +188,10 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
 // conditional loads into the other lane, S xs summed on the way (cond_load); a step whose
 // separator needs the step just solved loads in a slot of its own (BS_SOLVE / BS_LOAD: the steps,
 // -1 none). Per slot: the loaded step's separator solution in from DELTA (PORTS words a cycle),
-// then the slot's backsub_lane<p> region: lane p's backsub_set<p> (the solve, then the solved
+// unless it is lane-local (BS_XOFF >= 0: the separator's columns are the frontal columns
+// BS_XOFF ... of the step the loading lane solved last, whose solution that lane's BS_X still
+// holds; cond_load reads it there: a two-ended chain's step after the root's children), then the
+// slot's backsub_lane<p> region: lane p's backsub_set<p> (the solve, then the solved
 // step's frontal solution out into DELTA and, a pair of words a cycle, into `dx` to the state
 // update: backsub_out) beside the other lane's backsub_load (COND only).
 //
@@ -197,7 +204,7 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
 //
 // Included a second time by the kernel with FGC_BACKSUB_DRIVER defined, inside its namespace
 // (fgc::, or fgc::les for the mixed design), after its schedule tables and the BS_* slot tables,
-// which these functions name: BS_SLOTS, BS_SOLVE, BS_LOAD, BS_LANE, RETIRE_VARS, RETIRE_STEP,
+// which these functions name: BS_SLOTS, BS_SOLVE, BS_LOAD, BS_LANE, BS_XOFF, RETIRE_VARS, RETIRE_STEP,
 // STEP_F, STEP_W, STEP_COL_BEGIN, STEP_COL, STEP_COND_OFF (tables); COND, DELTA, L (the linear
 // solver's scalar), MAX_F; TrialVar and trial_cost (the cost pass's stream word and process). CFG is the kernel's LesConfig (T, MAX_F, MAX_W, MAX_COLS, N_TANGENT,
 // N_VARIABLES, PARTIALS, the latencies cond_load / cond_backsub read, MOVE_DEPTH: the copies'
@@ -209,7 +216,7 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
 
 L BS_COND0[MAX_F * (MAX_W + 1)];  // lane 0's conditional (R | S | d)
 L BS_XS0[MAX_W + 1];  // its separator's solution
-L BS_X0[MAX_F];  // its frontal solution
+L BS_X0[MAX_F];  // its frontal solution (read by its next load when lane-local: BS_XOFF)
 L BS_COND1[MAX_F * (MAX_W + 1)];  // lane 1's
 L BS_XS1[MAX_W + 1];
 L BS_X1[MAX_F];
@@ -260,19 +267,22 @@ void backsub_set1(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
     backsub_out<CFG>(x, f, cb, dx);
 }
 
-// Lane u's load: a step's conditional from COND (at off) into the lane's buffer.
+// Lane u's load: a step's conditional from COND (at off) into the lane's buffer, S xs summed on
+// the way (xs: the separator in from DELTA; xoff >= 0: from xl, the lane's last solution).
 template <class CFG>
-void backsub_load0(int off, int f, int s, const L xs[CFG::MAX_COLS],
-                   L cond[CFG::MAX_F * CFG::MAX_COLS], L part[2][CFG::PARTIALS][CFG::MAX_F]) {
+void backsub_load0(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
+                   int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS],
+                   L part[2][CFG::PARTIALS][CFG::MAX_F]) {
     FGC_BRANCH();
-    fgc_units::cond_load<CFG>(COND, off, f, s, xs, cond, part);
+    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part);
 }
 
 template <class CFG>
-void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS],
-                   L cond[CFG::MAX_F * CFG::MAX_COLS], L part[2][CFG::PARTIALS][CFG::MAX_F]) {
+void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
+                   int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS],
+                   L part[2][CFG::PARTIALS][CFG::MAX_F]) {
     FGC_BRANCH();
-    fgc_units::cond_load<CFG>(COND, off, f, s, xs, cond, part);
+    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part);
 }
 
 // A slot whose solve is on lane 0: lane 0's cond_backsub beside lane 1's cond_load.
@@ -280,11 +290,12 @@ template <class CFG>
 void backsub_lane0(const L cond0[CFG::MAX_F * CFG::MAX_COLS], int f0, int s0,
                    const L part0[2][CFG::PARTIALS][CFG::MAX_F], L x0[CFG::MAX_F], int cb0,
                    hls::stream<BsPair>& dx,
-                   int off, int f1, int s1, const L xs1[CFG::MAX_COLS],
-                   L cond1[CFG::MAX_F * CFG::MAX_COLS], L part1[2][CFG::PARTIALS][CFG::MAX_F]) {
+                   int off, int f1, int s1, const L xs1[CFG::MAX_COLS], const L x1[CFG::MAX_F],
+                   int xoff, L cond1[CFG::MAX_F * CFG::MAX_COLS],
+                   L part1[2][CFG::PARTIALS][CFG::MAX_F]) {
 #pragma HLS DATAFLOW
     backsub_set0<CFG>(cond0, f0, s0, part0, x0, cb0, dx);
-    backsub_load1<CFG>(off, f1, s1, xs1, cond1, part1);
+    backsub_load1<CFG>(off, f1, s1, xs1, x1, xoff, cond1, part1);
 }
 
 // A slot whose solve is on lane 1: lane 1's cond_backsub beside lane 0's cond_load.
@@ -292,11 +303,12 @@ template <class CFG>
 void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
                    const L part1[2][CFG::PARTIALS][CFG::MAX_F], L x1[CFG::MAX_F], int cb1,
                    hls::stream<BsPair>& dx,
-                   int off, int f0, int s0, const L xs0[CFG::MAX_COLS],
-                   L cond0[CFG::MAX_F * CFG::MAX_COLS], L part0[2][CFG::PARTIALS][CFG::MAX_F]) {
+                   int off, int f0, int s0, const L xs0[CFG::MAX_COLS], const L x0[CFG::MAX_F],
+                   int xoff, L cond0[CFG::MAX_F * CFG::MAX_COLS],
+                   L part0[2][CFG::PARTIALS][CFG::MAX_F]) {
 #pragma HLS DATAFLOW
     backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx);
-    backsub_load0<CFG>(off, f0, s0, xs0, cond0, part0);
+    backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, part0);
 }
 
 // The slots, root first, into DELTA; each solved step's words to the state update too.
@@ -317,24 +329,25 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
         const int scb = sv >= 0 ? STEP_COL_BEGIN[sv] : 0;
         const int lf = ld >= 0 ? STEP_F[ld] : 0, lsep = ld >= 0 ? STEP_W[ld] - STEP_F[ld] : 0;
         const int lcb = ld >= 0 ? STEP_COL_BEGIN[ld] : 0, off = ld >= 0 ? STEP_COND_OFF[ld] : 0;
-        for (int a = 0; a < lsep; a += 2) {
+        const int xo = BS_XOFF[k], nin = xo >= 0 ? 0 : lsep;  // lane-local: no separator_in
+        for (int a = 0; a < nin; a += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_W+1)/2
 #pragma HLS PIPELINE II=1
             for (int h = 0; h < 2; ++h) {
-                if (a + h < lsep) {
+                if (a + h < nin) {
                     const L v = DELTA[STEP_COL[lcb + lf + a + h]];
                     if (p == 0) BS_XS1[a + h] = v;
                     else BS_XS0[a + h] = v;
                 }
             }
         }
-        FGC_CYCLES("backsub_copy", 0, "separator_in", (lsep + 1) / 2, 1, CFG::MOVE_DEPTH);
+        FGC_CYCLES("backsub_copy", 0, "separator_in", (nin + 1) / 2, 1, CFG::MOVE_DEPTH);
         if (p == 0)
             backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,
-                               BS_COND1, bs_part1);
+                               BS_X1, xo, BS_COND1, bs_part1);
         else
             backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
-                               BS_COND0, bs_part0);
+                               BS_X0, xo, BS_COND0, bs_part0);
         FGC_JOIN();
         if (sv >= 0) FGC_OUTER_SEND();
     }

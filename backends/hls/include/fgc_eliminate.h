@@ -24,6 +24,7 @@
 //   SETS::level(has, s, bad)     the qr_level region: set u takes step s[u] where has[u]
 //                                (else none), bad[u] set if rank deficient
 //   SETS::commit(u, s)           qr_commit<CFG>(s, CONDBUF<u>, UPDBUF<u>)
+//   SETS::leaf(s, bad)           (qr_eliminate_leaf only) step s on unit set 0 alone, qr_set0
 //
 // Included by the kernel inside its namespace (fgc::, or fgc::les for the mixed design), after
 // its schedule tables and memories, which these functions name: STEP_W, STEP_F, STEP_ROWS,
@@ -462,22 +463,12 @@ bool qr_eliminate_leaf(int s) {
     typedef typename CFG::T T;
     FGC_EVENT("marginal_solve");
     SETS::stack(0, s, T(0));
-    bool has[CFG::UNIT_SETS], bad[CFG::UNIT_SETS];
-    int st[CFG::UNIT_SETS];
-#pragma HLS ARRAY_PARTITION variable=has complete
-#pragma HLS ARRAY_PARTITION variable=bad complete
-#pragma HLS ARRAY_PARTITION variable=st complete
-    for (int u = 0; u < CFG::UNIT_SETS; ++u) {
-#pragma HLS UNROLL
-        has[u] = u == 0;
-        st[u] = u == 0 ? s : 0;
-        bad[u] = false;
-    }
+    bool bad = false;
     FGC_PHASE("qr");
-    SETS::level(has, st, bad);
+    SETS::leaf(s, &bad);  // unit set 0 alone (its copy: the other sets are not instantiated)
     FGC_JOIN();
     SETS::commit(0, s);
-    return !bad[0];
+    return !bad;
 }
 #endif  // FGC_ELIMINATE_QR
 

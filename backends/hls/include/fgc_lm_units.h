@@ -45,12 +45,13 @@ void lm_iterate(const typename CFG::T g[CFG::N_TANGENT], const typename CFG::T x
 #pragma HLS INLINE
     typedef typename CFG::T T;
     // the gradient's largest |entry| and |x|^2 in one loop, two words of each a cycle: entry i
-    // into partial maximum (i / 2) % MAXIMA of lane i % 2, x_i^2 into partial sum
-    // (i / 2) % PARTIALS of lane i % 2; folded in trees
-    T gp[2 * CFG::MAXIMA], xp[2 * CFG::PARTIALS];
+    // into partial maximum (i / 2) % PARTIALS of lane i % 2 (as many as the sums: one distance
+    // for both, PARTIALS >= MAXIMA), x_i^2 into partial sum (i / 2) % PARTIALS of lane i % 2;
+    // folded in trees
+    T gp[2 * CFG::PARTIALS], xp[2 * CFG::PARTIALS];  // (PARTIALS >= MAXIMA maxima: one distance)
 #pragma HLS ARRAY_PARTITION variable=gp complete
 #pragma HLS ARRAY_PARTITION variable=xp complete
-    for (int p = 0; p < 2 * CFG::MAXIMA; ++p) {
+    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
 #pragma HLS UNROLL
         gp[p] = T(0);
     }
@@ -61,12 +62,12 @@ void lm_iterate(const typename CFG::T g[CFG::N_TANGENT], const typename CFG::T x
     const int N_LONGER = CFG::N_X > CFG::N_TANGENT ? CFG::N_X : CFG::N_TANGENT;
     for (int e = 0; e < N_LONGER; e += 2) {
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=gp inter false
-#pragma HLS DEPENDENCE variable=xp inter false
+#pragma HLS DEPENDENCE variable=gp inter true distance=CFG::PARTIALS
+#pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS
         for (int h = 0; h < 2; ++h) {
 #pragma HLS UNROLL
             const int i = e + h;
-            const int gk = h * CFG::MAXIMA + (e >> 1) % CFG::MAXIMA;
+            const int gk = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
             const int xk = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
             if (i < CFG::N_TANGENT) {
                 const T a = CFG::magnitude(g[i]);
@@ -75,13 +76,13 @@ void lm_iterate(const typename CFG::T g[CFG::N_TANGENT], const typename CFG::T x
             if (i < CFG::N_X) xp[xk] += x[i] * x[i];
         }
     }
-    out[0] = fold_maxima<T, 2 * CFG::MAXIMA>(gp);
+    out[0] = fold_maxima<T, 2 * CFG::PARTIALS>(gp);
     out[1] = CFG::root(fold_partials<T, 2 * CFG::PARTIALS>(xp));
     FGC_PHASE("lm_iteration");
     FGC_CYCLES("iterate", 0, "gradient_x_norm", ceil_div(N_LONGER, 2),
-               larger(pair_ii(CFG::N_TANGENT, CFG::MAXIMA, CFG::CMP_LAT),
+               larger(pair_ii(CFG::N_TANGENT, CFG::PARTIALS, CFG::CMP_LAT),
                       pair_ii(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT)),
-               larger(pair_depth(CFG::N_TANGENT, CFG::MAXIMA, CFG::CMP_LAT, CFG::ABS_LAT),
+               larger(pair_depth(CFG::N_TANGENT, CFG::PARTIALS, CFG::CMP_LAT, CFG::ABS_LAT),
                       pair_depth(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT)));
 }
 
@@ -105,8 +106,8 @@ bool lm_step_test(bool solved, typename CFG::T mu, const typename CFG::T delta[C
     }
     for (int e = 0; e < CFG::N_TANGENT; e += 2) {
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=dp inter false
-#pragma HLS DEPENDENCE variable=pp inter false
+#pragma HLS DEPENDENCE variable=dp inter true distance=CFG::PARTIALS
+#pragma HLS DEPENDENCE variable=pp inter true distance=CFG::PARTIALS
         for (int h = 0; h < 2; ++h) {
 #pragma HLS UNROLL
             const int i = e + h;

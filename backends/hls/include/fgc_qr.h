@@ -275,7 +275,7 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     for (int a = 1; a <= below; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=part0 inter false
+#pragma HLS DEPENDENCE variable=part0 inter true distance=CFG::PARTIALS
         const qr_word<T> x = vin.read();
         v[a] = x.val;
         at[a] = x.idx;
@@ -378,7 +378,7 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
         for (int e = 0, l = lb, a = 0; e < n * r; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=part inter false
+#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
             const T term = v[a] * bank[at[a]][l];
             part[l][a % P] = a < P ? term : T(part[l][a % P] + term);
             if (a == n - 1) {
@@ -494,7 +494,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     for (int i = col; i < rows; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=part inter false
+#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
         T e = T(0);
         for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL

@@ -3,7 +3,7 @@
 //
 //   FGC_STREAM_WINDOW    stream_shift<CFG>()    every slot down one (X and DATA_BUF keep the window)
 //                        stream_in<CFG>(m, ...) the call's keyframe into slot m
-//   FGC_STREAM_MARGINAL  marginalize<CFG>(cur)  slot 0's elimination at the optimum -> tau, the
+//   FGC_STREAM_MARGINAL  marginalize<CFG>(ok)   slot 0's elimination at the optimum -> tau, the
 //                        write_tau<CFG>(rows)   factor written into slot 1's prior
 //   FGC_STREAM_KEPT      reexpress<CFG>(c, x0), keep<CFG>(c), kept_walk<CFG>(first, x0): the kept
 //                        conditionals, re-expressed, stored and walked back from the window
@@ -22,8 +22,17 @@
 // kept conditionals KEPT_R / KEPT_S / KEPT_D, their points KEPT_LIN / KEPT_NEXT, X_KEPT; batch:
 // BATCH_X / BATCH_COND / BATCH_TAU), sized by the kernel's constants (STREAM_*, KEPT_MAX,
 // BATCH_SLOTS). The kernel keeps the tables (data), the Log kernels (its variable kinds) and the
-// wiring: StreamConfig's constants and hooks (lm_solve, leaf_step, batch_reset / batch_in /
-// batch_solve; the batch kernel's linearize / eliminate).
+// wiring: StreamConfig's constants and hooks (lm_solve, linearize, leaf_step, batch_reset /
+// batch_in / batch_solve; the batch kernel's eliminate).
+//
+// One RTL instance per kernel function: every call site of a function not inlined is its own
+// copy, so the functions that call a kernel function again after LM hold LM's body
+// (lm_solve: INLINE, fgc_lm::optimize_inline) and an ALLOCATION function ... limit=1 for
+// linearize_all, eliminate_all, back_substitute_at (stream_call, batch_kernel_solve); kept_task holds
+// reexpress and kept_walk (INLINE) and one keyframe_local, keyframe_retract and kept_matvec.
+// What stays a copy (the marginal's QR step on its own unit set 0 beside the kept net,
+// write_tau's two call sites, the kept net's datapaths) is priced by the plan
+// (WindowUpdateModel.stream_units in fgc_backends/hls/plan/stream.py).
 //
 // Define the parts the design has, then include this file inside the kernel's namespace after
 // its tables and memories, which the functions name (the window's X, DATA_BUF, COND, NF, the
@@ -33,8 +42,9 @@
 // retraction). T and L are the kernel's scalars. CFG is the kernel's StreamConfig: the plan's
 // (II, depth) of T's move / max / retract / div and L's acc / div / scatter loops, MV_II (the kept
 // matrix-vector product's), MAX_NEW and TRIP_BATCH_X (trip counts), and the hooks
-// leaf_step() (slot 0's step once more at mu = 0), at_linearisation(info) (LM stopped where it
-// last linearised: AB holds the rows at X) and batch_solve(...) (the batch kernel's entry); kept:
+// lm_solve(errors, info), linearize() (INLINE: the window at X), leaf_step() (slot 0's step
+// once more at mu = 0), at_linearisation(info) (LM stopped where it last linearised: AB holds
+// the rows at X) and batch_solve(...) (the batch kernel's entry); kept:
 // KF_FLAT_S (per tangent direction of a keyframe its storage word if its variable is a vector)
 // and the kernel's T_ADD_LAT. Cycles to FGC_CYCLES as the plan prices them.
 #ifndef FGC_STREAM_H
@@ -174,16 +184,13 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)]) {
 // slot 1 ([A | b], upper triangular from the QR unit), signed to a positive diagonal, its mean
 // A^-1 b by back-substitution, written with slot 1's estimate as its linearisation point into
 // slot 1's prior (which the next call's shift moves to slot 0). False, nothing written, if the
-// window is not finite at its optimum, slot 0 is rank deficient or tau is singular. `current`:
-// the window's rows (AB) are already its linearisation at X, the optimum (LM converged without
-// moving since its last linearisation: CFG::at_linearisation), so they are not computed again.
+// window is not finite at its optimum (`finite` false), slot 0 is rank deficient or tau is
+// singular. The window's rows (AB) are its linearisation at X, the optimum: stream_call
+// computed them again before the region if LM moved after its last linearisation.
 template <class CFG>
-bool marginalize(bool current) {
+bool marginalize(bool finite) {
     FGC_EVENT("marginal");
-    if (!current) {
-        FGC_EVENT("relinearize");
-        if (!linearize_all(X)) return false;
-    }
+    if (!finite) return false;
     if (!CFG::leaf_step()) return false;
     FGC_PHASE("marginal");
     const int n0 = STEP_NF_OFF[STREAM_LEAF_STEP];
@@ -226,9 +233,8 @@ void kept_matvec(const L m[STREAM_KF_T * STREAM_KF_T], const L v[STREAM_KF_T], L
 // vector's.
 template <class CFG>
 void reexpress(int c, const T x[STREAM_KF_X]) {
-    // the Log and retraction passes below run one after another: one datapath of each
-#pragma HLS ALLOCATION function instances=keyframe_local limit=1
-#pragma HLS ALLOCATION function instances=keyframe_retract limit=1
+    // INLINE into kept_task: its Log / retraction passes share kept_walk's datapaths there
+#pragma HLS INLINE
     FGC_PHASE("kept");
     const T h = T(STREAM_H);
     T base[STREAM_KF_T], plus[STREAM_KF_T], minus[STREAM_KF_T], step[STREAM_KF_T];
@@ -351,6 +357,7 @@ void keep(int c) {
 // x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
 template <class CFG>
 void kept_walk(int first, const T x0[STREAM_KF_X]) {
+#pragma HLS INLINE
     FGC_PHASE("kept");
     T parent[STREAM_KF_X], local_t[STREAM_KF_T], out[STREAM_KF_X], delta_t[STREAM_KF_T];
     L local[STREAM_KF_T], delta[STREAM_KF_T], row[STREAM_KF_T];
@@ -446,30 +453,35 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
 #endif  // FGC_STREAM_BATCH
 
 #ifdef FGC_STREAM_WINDOW
-// The marginal and the kept net side by side: once the window has solved, slot 0's marginal
-// (linearisation, its QR step at mu = 0 on unit set 0, tau written into DATA_BUF) needs nothing
+// The marginal and the kept net side by side: once the window has solved (and is linearised at
+// its optimum), slot 0's marginal (its QR step at mu = 0 on unit set 0, tau written into DATA_BUF) needs nothing
 // of the kept net, and the kept net's update (the newest conditional re-expressed at slot 0's
 // estimate, the walk back through the kept conditionals below it) nothing of the marginal's: two
-// processes of one DATAFLOW region, each on its own memories and datapaths (the marginal: X,
-// DATA_BUF, the factor datapaths, unit set 0; the kept net: the KEPT_* memories, X_KEPT, the
+// processes of one DATAFLOW region, each on its own memories and datapaths (the marginal: AB,
+// DATA_BUF, unit set 0; the kept net: the KEPT_* memories, X_KEPT, the
 // keyframe's Log and retraction kernels), slot 0's estimate copied out of X before the region.
 // keep(first) reads the marginal's conditional and writes kept memory, so it follows the region.
 // A design without one of the two runs that process empty (each function has one call site
 // whatever the parts: the second reader reads every preprocessor branch).
 template <class CFG>
-void marginal_task(int m, bool current, int code[1]) {
+void marginal_task(int m, bool finite, int code[1]) {
     FGC_TASK();
 #ifdef FGC_STREAM_MARGINAL
-    code[0] = m == STREAM_W ? (marginalize<CFG>(current) ? 1 : 2) : 0;
+    code[0] = m == STREAM_W ? (marginalize<CFG>(finite) ? 1 : 2) : 0;
 #else
     (void)m;
-    (void)current;
+    (void)finite;
     code[0] = 0;
 #endif
 }
 
 template <class CFG>
 void kept_task(int first, const T x0[STREAM_KF_X]) {
+    // reexpress's passes and the walk's (both INLINE here) run one after another: one Log
+    // datapath, one retraction datapath and one matrix-vector product for all of them
+#pragma HLS ALLOCATION function instances=keyframe_local limit=1
+#pragma HLS ALLOCATION function instances=keyframe_retract limit=1
+#pragma HLS ALLOCATION function instances=kept_matvec<CFG> limit=1
     FGC_TASK();
 #ifdef FGC_STREAM_KEPT
     if (first > 0) reexpress<CFG>(first - 1, x0);
@@ -481,9 +493,9 @@ void kept_task(int first, const T x0[STREAM_KF_X]) {
 }
 
 template <class CFG>
-void marginal_and_kept(int m, bool current, int first, const T x0[STREAM_KF_X], int code[1]) {
+void marginal_and_kept(int m, bool finite, int first, const T x0[STREAM_KF_X], int code[1]) {
 #pragma HLS DATAFLOW
-    marginal_task<CFG>(m, current, code);
+    marginal_task<CFG>(m, finite, code);
     kept_task<CFG>(first, x0);
 }
 #endif  // FGC_STREAM_WINDOW
@@ -503,6 +515,12 @@ void marginal_and_kept(int m, bool current, int first, const T x0[STREAM_KF_X], 
 template <class CFG>
 void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA], T x_out[N_X]
                  FGC_STREAM_KEPT_ARG, T errors[2], int info[5]) {
+    // LM (its body inlined here: CFG::lm_solve calls fgc_lm::optimize_inline) and the
+    // marginal's linearisation at the optimum run one after the other: one RTL instance of each
+    // kernel function for all their call sites (the hooks between are INLINE)
+#pragma HLS ALLOCATION function instances=linearize_all limit=1
+#pragma HLS ALLOCATION function instances=eliminate_all limit=1
+#pragma HLS ALLOCATION function instances=back_substitute_at limit=1
     FGC_EVENT("call");
     if (op == 0) {  // reset: the whole window in (the slots' values, every factor's words)
         FGC_PHASE("setup");
@@ -560,7 +578,16 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     } else {
 #endif
         CFG::lm_solve(errors, info);
-        const bool current = CFG::at_linearisation(info);  // AB: the window linearised at X
+        // the window's rows at its optimum for a leaving keyframe's marginal: AB holds them if
+        // LM stopped where it last linearised (CFG::at_linearisation), else computed again here,
+        // before the marginal's region, by LM's own linearisation instance
+        bool finite = true;  // false: the window is not finite at its optimum
+#ifdef FGC_STREAM_MARGINAL
+        if (m == STREAM_W && !CFG::at_linearisation(info)) {
+            FGC_EVENT("relinearize");
+            finite = CFG::linearize();
+        }
+#endif
         T x0[STREAM_KF_X];  // slot 0's estimate: the kept net's parent
 #ifdef FGC_STREAM_KEPT
         FGC_PHASE("kept");
@@ -574,7 +601,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         const int kept_first = 0;
 #endif
         int code[1] = {0};
-        marginal_and_kept<CFG>(m, current, kept_first, x0, code);
+        marginal_and_kept<CFG>(m, finite, kept_first, x0, code);
         FGC_TASKS_JOIN();
         marginal = code[0];
 #ifdef FGC_STREAM_KEPT
@@ -640,6 +667,12 @@ template <class CFG>
 void batch_kernel_solve(int j, int tau_slot, T x_io[STREAM_SLOTS * STREAM_KF_X],
                         L cond_out[STREAM_SLOTS * STREAM_KF_T * (2 * STREAM_KF_T + 1)],
                         L tau_out[STREAM_KF_T * (STREAM_KF_T + 1)], T errors[2], int info[4]) {
+    // LM (its body inlined here: CFG::lm_solve calls fgc_lm::optimize_inline) and the store's
+    // linearisation and elimination after it run one after the other: one RTL instance of
+    // each kernel function for all their call sites (the hooks between are INLINE)
+#pragma HLS ALLOCATION function instances=linearize_all limit=1
+#pragma HLS ALLOCATION function instances=eliminate_all limit=1
+#pragma HLS ALLOCATION function instances=back_substitute_at limit=1
     FGC_PHASE("batch_in");
     for (int e = 0; e < (j + 1) * STREAM_KF_X; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_X

@@ -17,6 +17,7 @@ path of a Cholesky design).
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -24,7 +25,7 @@ import numpy as np
 from fgc_backends.cost.structure import entering_blocks, stacked_pattern, step_columns
 from fgc_backends.hls.plan.cost import merge_plans, plan_cost
 from fgc_backends.hls.plan.loops import _assign, _tables, kernel_loop, kernel_timing, plan_sizes
-from fgc_backends.hls.plan.model import Loop, Phase, PlanError, Process
+from fgc_backends.hls.plan.model import Loop, Phase, PlanError, Process, Unit
 from fgc_backends.hls.plan.report import PHASE_TRIGGER, plan_groups, unit_sets
 from fgc_backends.hls.units.memories import stream_memories
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
@@ -103,6 +104,105 @@ class UpdatePrice:
                 "latency_with_assumed_ms": self.latency_with_assumed_ms,
                 "terms": [{"name": t.name, "cycles": t.cycles, "each": t.each, "times": t.times,
                            "assumed": t.assumed, "text": t.text} for t in self.terms]}
+
+
+# The stream section's own loops as fgc_stream.h writes them: per pipelined loop its operations
+# an iteration (each an operator at II 1; MV_II / L_ACC_II loops hold one of each too), the
+# sequential code one operator of each kind it uses.
+WRITE_TAU_OPS = (("add", 1), ("mul", 3), ("div", 1))  # sign (×), mean (−= ×), ÷ and the
+# singularity threshold (×) in sequential code
+KEPT_MATVEC_OPS = (("add", 1), ("mul", 1))  # kept_matvec: + ×
+# kept_task with reexpress and kept_walk INLINE: reexpress's vector_difference and difference
+# (− × ÷ each), d_update (−), sj_column and sj_vector (+ × each); kept_walk's rhs (−) and
+# column (−= ×); the sequential code's + × ÷ (the vector directions' differences, R's divides)
+KEPT_TASK_OPS = (("add", 8), ("mul", 5), ("div", 3))
+ARITHMETIC = ("add", "mul", "div")
+
+
+def _helper_modules(kernel) -> Counter:
+    """The operators of the helper modules one call of printed ``kernel`` instantiates (each
+    call site its own module in sequential code, one operator of each kind its body uses):
+    a Lie coefficient (lie_<X>: its series' and closed form's + × ÷, each of its square roots
+    and sines / cosines a wrapper module), so3_log once per rotation (+ × ÷, three square roots,
+    an arctangent), each square root or trigonometric call of the kernel's own."""
+    import sympy as sp
+
+    from fgc.compiler.kernel import _op_counts
+    from fgc.frontend.geometry import special
+    from fgc_backends.cfamily.special import _closed_form_kernel
+    from fgc_backends.hls.units.special_ops import SO3_LOG_OPS, coefficient_ops
+
+    out: Counter = Counter()
+    rotations = set()
+    exprs = [e for _, e in kernel.assignments] + list(kernel.outputs)
+    for expr in exprs:
+        for node in sp.preorder_traversal(sp.sympify(expr)):
+            if isinstance(node, special.LieCoefficient):
+                body = dict(coefficient_ops(node.coeff_name))
+                out.update({k: 1 for k in ARITHMETIC if body.get(k)})
+                closed = _closed_form_kernel(node.coeff_name)
+                out["sqrt"] += dict(_op_counts(closed)).get("sqrt", 0)
+                out["special"] += _trig_calls(closed)
+            elif isinstance(node, special.SO3LogComponent):
+                rotations.add(node.args)
+    for _ in rotations:
+        out.update({k: 1 for k in ARITHMETIC if SO3_LOG_OPS.get(k)})
+        out["sqrt"] += SO3_LOG_OPS["sqrt"]
+        out["special"] += 1  # its arctangent
+    out["sqrt"] += dict(_op_counts(kernel)).get("sqrt", 0)
+    out["special"] += _trig_calls(kernel)
+    return out
+
+
+def _trig_calls(kernel) -> int:
+    """The trigonometric calls of ``kernel`` as printed: one a node, a power of one its
+    exponent's (the printer writes sin(x)**2 as a product of two calls)."""
+    import sympy as sp
+
+    trig = (sp.sin, sp.cos, sp.tan, sp.atan2, sp.atan, sp.acos, sp.asin)
+    calls = 0
+    for expr in [e for _, e in kernel.assignments] + list(kernel.outputs):
+        for node in sp.preorder_traversal(sp.sympify(expr)):
+            if isinstance(node, trig):
+                calls += 1
+            elif (node.is_Pow and isinstance(node.base, trig) and node.exp.is_Integer
+                  and node.exp > 1):
+                calls += int(node.exp) - 1
+    return calls
+
+
+def kept_datapath_ops(layout, ops) -> tuple[tuple[str, int], ...]:
+    """One Log datapath (keyframe_local) and one retraction datapath (keyframe_retract) of a
+    keyframe's variables as accel.cpp.jinja emits them for the kept net, in sequential code:
+    each variable that is not a vector its local_<k> / retract_<k> call (a module: one operator
+    of each kind it uses, retract_<k>'s ALLOCATION limits, and its helpers' modules), a vector's
+    loop an adder in the caller's module."""
+    from fgc.compiler.kernel import _op_counts
+    from fgc_backends.cfamily.retract import local_kernel, retract_kernel, variable_class
+    from fgc_backends.hls.units.state_update import retract_datapath
+
+    locals_, kf_vars = layout._kf_vars()
+    name_of = {k.kind: k.type_name for k in locals_}
+    total: Counter = Counter()
+    flat = False
+    for v in kf_vars:
+        if v["flat"]:
+            flat = True
+            continue
+        name = name_of[v["kind"]]
+        cls = variable_class(name)
+        log = local_kernel(cls)
+        counts = dict(_op_counts(log))
+        total.update({k: 1 for k in ARITHMETIC if counts.get(k)})
+        total.update(_helper_modules(log))
+        ret = retract_kernel(cls)
+        own = dict(retract_datapath(name, ops)[0])
+        counts = dict(_op_counts(ret))
+        total.update({k: own.get(k, 1) for k in ARITHMETIC if counts.get(k)})
+        total.update(_helper_modules(ret))
+    if flat:
+        total["add"] += 2  # keyframe_local's and keyframe_retract's vector loops
+    return tuple(sorted((k, n) for k, n in total.items() if n))
 
 
 def _stream_phase(name: str, *loops: Loop) -> Phase:
@@ -308,14 +408,44 @@ class WindowUpdateModel:
 
     def _merged(self):
         """The window kernel's plan, the batch kernel's units, memories and channels (a second
-        accelerator of the same design, its names prefixed ``batch_``) and the memories the
-        stream section adds (:func:`fgc_backends.hls.units.memories.stream_memories`)."""
+        accelerator of the same design, its names prefixed ``batch_``), the memories the
+        stream section adds (:func:`fgc_backends.hls.units.memories.stream_memories`) and its
+        units (:meth:`stream_units`)."""
         batch = self.batch
         n = self.layout.kf_dim
-        return merge_plans(self.plan, batch["plan"] if batch is not None else None,
-                           stream_memories(self.layout, self.plan.ops.word_bits,
-                                           self.les.word_bits,
-                                           n * (2 * n + 1) if batch is not None else 0))
+        merged = merge_plans(self.plan, batch["plan"] if batch is not None else None,
+                             stream_memories(self.layout, self.plan.ops.word_bits,
+                                             self.les.word_bits,
+                                             n * (2 * n + 1) if batch is not None else 0))
+        return replace(merged, units=merged.units + self.stream_units())
+
+    def stream_units(self) -> tuple[Unit, ...]:
+        """The operators the stream section's own code instantiates (fgc_stream.h, every call
+        site its own RTL copy unless an ALLOCATION shares it), names prefixed ``stream_``: the
+        marginal's QR step on its own copy of unit set 0 (SETS::leaf: it runs beside the kept
+        net's task, not in LM's module), write_tau per call site (the marginal's, a batch
+        step's), the kept net's task (reexpress and kept_walk INLINE: one Log and one retraction
+        datapath, one matrix-vector product, its loops). The window kernel's functions the
+        stream calls again after LM (linearize_all, eliminate_all, total_cost) share LM's
+        instance (stream_call's and batch_kernel_solve's ALLOCATION): no unit here."""
+        lay, units = self.layout, []
+        if self.layout_marginal:
+            units += [replace(u, name=f"stream_marginal_{u.name}", role=f"the marginal's copy: "
+                              f"{u.role}") for u in self.plan.units
+                      if u.name.startswith("qr0_") and not u.name.endswith("_backsub")]
+        tau_sites = int(bool(self.layout_marginal)) + int(self.batch is not None)
+        if tau_sites:
+            units.append(Unit("stream_write_tau", "tau signed, its mean and words (per call "
+                              "site: the marginal's, a batch step's)", tau_sites, WRITE_TAU_OPS))
+        if lay.kept:
+            units += [Unit("stream_kept_datapaths", "the kept net's Log and retraction "
+                           "(keyframe_local, keyframe_retract: one each)", 1,
+                           kept_datapath_ops(lay, self.plan.ops)),
+                      Unit("stream_kept_matvec", "S times a vector (kept_matvec)", 1,
+                           KEPT_MATVEC_OPS),
+                      Unit("stream_kept_task", "the kept net's re-expression and walk: their "
+                           "loops and sequential code", 1, KEPT_TASK_OPS)]
+        return tuple(units)
 
     def design_plan(self):
         """The whole on-chip design as one plan (:meth:`_merged`) with the stream section's
@@ -344,14 +474,15 @@ class WindowUpdateModel:
     def resources(self) -> dict:
         """The whole on-chip design's DSP and BRAM36 (model estimates): ``plan_cost`` of
         :meth:`design_plan`, and its parts: the window kernel, the batch kernel, the stream
-        memories."""
+        section (its units and memories)."""
         design = plan_cost(self._design)
         window = plan_cost(self.plan)
         parts = {"window kernel": (window.dsp, window.bram36)}
         if self.batch is not None:
             bcost = plan_cost(self.batch["plan"])
             parts["batch kernel"] = (bcost.dsp, bcost.bram36)
-        parts["stream memories"] = (0, design.bram36 - sum(b for _, b in parts.values()))
+        section = sum(d for name, d in design.dsp_by_unit if name.startswith("stream_"))
+        parts["stream section"] = (section, design.bram36 - sum(b for _, b in parts.values()))
         device = self.plan.target.device
         return {"dsp": design.dsp, "bram36": design.bram36, "parts": parts,
                 "fits": design.dsp <= device.dsp and design.bram36 <= device.bram36,
@@ -453,15 +584,18 @@ class WindowUpdateModel:
         marginal = 0
         if m == lay.window and self.layout_marginal:
             # the window's rows at its optimum: computed again only if LM took a step after its
-            # last linearisation (fgc_stream.h, marginalize; counted: the "relinearize" event)
+            # last linearisation (fgc_stream.h, stream_call, before the marginal's region, by
+            # LM's own linearisation instance; counted: the "relinearize" event)
             relin = _relinearize(ev)
-            marginal = (relin * (self.group["factor_jacobian"] + self.group["gradient"])
-                        + st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True))
+            if relin:
+                terms.append(Term("relinearize", self.group["factor_jacobian"]
+                                  + self.group["gradient"], relin, False,
+                                  "keyframe leaving: the window linearised at its optimum "
+                                  "(LM moved after its last linearisation)"))
+            marginal = st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True)
             terms.append(Term("marginal", marginal, 1, False,
-                              "keyframe leaving: " + ("the window linearised at its optimum, "
-                                                      if relin else "")
-                              + "slot 0's QR step at μ = 0 on unit set 0, τ's signs, mean and "
-                              "words"))
+                              "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0, τ's "
+                              "signs, mean and words"))
         if lay.kept:
             terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
                               "slot 0's estimate copied out of X: the kept net's parent"))

@@ -17,11 +17,18 @@ documented binding and scheduling rules (UG1399: pipelining, ``ALLOCATION``,
 - **recurrences**: an array element or scalar read and written by every iteration (a
   compound assignment whose index does not move with the pipelined loop's variable, or is
   data-dependent: read from another array) carries a dependence; without a ``DEPENDENCE ...
-  inter false`` on it the II is at least the adder's latency.
+  inter false`` on it the II is at least the adder's latency;
+- **ALLOCATION**: an iteration's operations of a kind go through the instances an
+  ``ALLOCATION ... limit=k`` in scope allows within the II: ``ceil(ops / k)`` bounds it
+  (exclusive branches share the instances: the largest counts);
+- **DEPENDENCE claims**: ``inter false`` on an element read and written again P iterations
+  later (an index modulo P) or every iteration (an index nothing moves) is refuted; on a
+  data-dependent address it is unproven.
 
 :func:`read_project` returns one :class:`LoopReading` per pipelined loop; :func:`check`
 compares them with the II each loop's pragma declares (the plan's) and returns
-:class:`fgc_backends.hls.lint.LintIssue` s (rules ``ii_ports``, ``ii_recurrence``).
+:class:`fgc_backends.hls.lint.LintIssue` s (rules ``ii_ports``, ``ii_recurrence``,
+``ii_allocation``, ``dependence_false``; with ``strict``, ``dependence_unproven``).
 :func:`dsp_estimate` sums the operators over the module instances Vitis would make (every
 call site its own instance, an unrolled call once per copy). This reader knows nothing of the
 plan; where it cannot resolve something (a bound it cannot evaluate, an array it cannot find)

@@ -23,6 +23,7 @@ from fgc_backends.hls.reader.text import (
     _SUBSCRIPTED,
     FLOAT_TYPES,
     _Count,
+    _own_level,
     _pipelined,
     _subscripts,
     _unit,
@@ -30,6 +31,8 @@ from fgc_backends.hls.reader.text import (
     library_calls,
     until_fixed,
 )
+
+_RETURNS = re.compile(r"(?:^|[;{}])\s*return\b[^;]*;\s*$")  # a block that ends in a return
 
 
 class _Counter(_Scope):
@@ -44,6 +47,7 @@ class _Counter(_Scope):
         total = _Count()
         pos, n = 0, len(text)
         taken: bool | None = None  # the last if's condition, when the template fixes it
+        chain: _Count = _Count()  # the largest branch so far of the current if / else chain
         while pos < n:
             m = _CONTROL.search(text, pos)
             if not m:
@@ -58,7 +62,7 @@ class _Counter(_Scope):
                     continue  # its own pipelined loop: read on its own
                 values = self._iterations(header, env) if len(header) == 3 else None
                 # the condition's floating-point operators, evaluated every iteration
-                test = _Count(ops=self._typer(scope).operators(header[1])) \
+                test = _Count.of(self._typer(scope).operators(header[1])) \
                     if len(header) == 3 else _Count()
                 if values is None:
                     trips = self._tripcount(body, env) or 1
@@ -81,13 +85,24 @@ class _Counter(_Scope):
                 total.add(self.statement(condition, scope, env, loop_var, outer, depth))
                 body, pos = self._body(text, close + 1)
                 taken = self._condition(condition, env)
+                chain = _Count()
                 if taken is not False:
-                    total.add(self.count(body, scope, env, loop_var, outer, depth))
+                    chain = self.count(body, scope, env, loop_var, outer, depth)
+                    total.add(chain)
+                    if taken is None and _RETURNS.search(_own_level(body)) and \
+                            not re.match(r"\s*else\b", text[pos:]):
+                        # `if (c) { ...; return; } rest`: the rest is the branch's else
+                        rest = self.count(text[pos:], scope, env, loop_var, outer, depth)
+                        total.add(rest)
+                        _exclusive(total, chain, rest)
+                        break
                 continue
             if word == "else":
                 body, pos = self._body(text, m.end())
                 if taken is not True:  # a branch known taken: its else is never built
-                    total.add(self.count(body, scope, env, loop_var, outer, depth))
+                    other = self.count(body, scope, env, loop_var, outer, depth)
+                    total.add(other)
+                    chain = _exclusive(total, chain, other)
                 taken = None
                 continue
             if word == "#":
@@ -164,13 +179,20 @@ class _Counter(_Scope):
             value = self._value(const.group(2), env)
             if value is not None:
                 env[const.group(1)] = value
+        loads = set()  # (array, subscript) read in this statement
         for m in _SUBSCRIPTED.finditer(stmt):
             var = self._lookup(m.group(1), scope)
             if var is None or var.storage == "stream":
                 continue
             op = (m.group(3) or "").strip()
             if var.storage == "global":
-                out.accesses[var.alias] += 1 + (op not in ("", "="))
+                # a word read twice in one statement (`n == 1 ? T(-bank[j][l]) : bank[j][l]`)
+                # is one load: the front end merges loads of one address with no store between
+                load = (var.alias, re.sub(r"\s+", "", m.group(2)))
+                if op != "" or load not in loads:
+                    out.accesses[var.alias] += 1 + (op not in ("", "="))
+                if op == "":
+                    loads.add(load)
             if var.alias not in outer and var.storage != "global":
                 continue  # a local of this iteration: nothing carried through it
             subscripts = _subscripts(m.group(2))
@@ -185,13 +207,16 @@ class _Counter(_Scope):
                     scalar.group(1) in outer:
                 out.recurrences.add(scalar.group(1))
         if self._float_statement(stmt, scope):
-            out.ops += self._operators(stmt)
+            own = self._operators(stmt, scope)
         else:  # a condition, a call's arguments, an integer's initialiser: typed operands
-            out.ops += self._typer(scope).operators(stmt)
+            own = self._typer(scope).operators(stmt)
+        out.ops += own
+        out.peak += own
         for m in _CALL.finditer(stmt) if self.flatten else ():
             found = self.resolve(stmt, m, env)
             if found is None or depth > 24:
                 continue
+            out.calls[found[0].name] += 1
             close = _matching(stmt, stmt.index("(", m.end() - 1), "(", ")")
             args = _split_top(stmt[m.end():close])
             out.add(self.call(found[0], found[1], args, scope, outer, depth + 1))
@@ -229,12 +254,18 @@ class _Counter(_Scope):
         return stmt.startswith("return") and self.returns_float and \
             bool(re.search(r"[-+*/]", stmt))
 
-    def _operators(self, stmt: str) -> Counter:
+    def _operators(self, stmt: str, scope: dict) -> Counter:
         ops: Counter = Counter()
         # a square printed as a product of two copies, (e)*(e): the compiler's front end
         # computes e once (common subexpressions of a statement are merged), so the second
         # copy's operators are not built: it is read as an operand
         text = until_fixed(r"\(([^()]*)\)\s*\*\s*\(\1\)", r"(\1)*q", stmt)
+        # a ternary's condition (``c + h < f ? x[c + h] : L(0)``) is not the statement's
+        # floating-point value: its operators are typed by their operands' declarations
+        text, conditions = _ternary_conditions(text)
+        typer = self._typer(scope)
+        for condition in conditions:
+            ops += typer.operators(condition)
         # index arithmetic is integer: drop every subscript
         text = until_fixed(r"\[[^\[\]]*\]", "", text)
         text = re.sub(r"<[^<>;()]*>", "", text)  # template arguments
@@ -283,8 +314,57 @@ class _Counter(_Scope):
                 self.where = where
             if self.allocation(f.text):  # its own module under ALLOCATION: counted apart
                 capped = _Count(accesses=result.accesses, recurrences=result.recurrences,
-                                rw=result.rw)
+                                rw=result.rw, calls=result.calls)
                 capped.capped = {f.name: result.ops, **result.capped}
+                capped.capped_peak = {f.name: result.peak, **result.capped_peak}
                 result = capped
             self.memo[key] = result
         return self.memo[key]
+
+
+def _exclusive(total: _Count, chain: _Count, other: _Count) -> _Count:
+    """``total`` holds both branches ``chain`` (an if / else chain's largest so far) and
+    ``other`` (its next branch) summed; its peak is set to hold their largest instead. Returns
+    the chain's new largest branch."""
+    largest = _Count(peak=chain.peak | other.peak)
+    total.peak -= chain.peak & other.peak
+    for name in set(chain.capped_peak) | set(other.capped_peak):
+        a = chain.capped_peak.get(name, Counter())
+        b = other.capped_peak.get(name, Counter())
+        largest.capped_peak[name] = a | b
+        total.capped_peak[name] = total.capped_peak.get(name, Counter()) - (a & b)
+    return largest
+
+
+def _ternary_conditions(text: str) -> tuple[str, list[str]]:
+    """``text`` with the condition of every ternary ``c ? a : b`` cut out (``0`` and a mark in
+    its place), and the conditions: each from the ``?`` back to the start of its operand (an
+    open bracket, a ``,``, an assignment's ``=``, another ternary's ``:``)."""
+    conditions = []
+    while True:
+        q = text.find("?")
+        if q < 0:
+            return text, conditions
+        depth, i = 0, q - 1
+        while i >= 0:
+            ch = text[i]
+            if ch in ")]":
+                depth += 1
+            elif ch in "([":
+                if depth == 0:
+                    break
+                depth -= 1
+            elif depth == 0 and _operand_starts(text, i):
+                break
+            i -= 1
+        conditions.append(text[i + 1:q])
+        text = text[:i + 1] + " 0 \x03" + text[q + 1:]
+
+
+def _operand_starts(text: str, i: int) -> bool:
+    """Whether ``text[i]`` (at the level of the ``?``) ends what precedes a ternary's operand:
+    a ``,``, an assignment's ``=`` (not ``==``, ``<=``, ...), another ternary's ``:`` (not a
+    ``::``)."""
+    ch, before, after = text[i], text[i - 1:i], text[i + 1:i + 2]
+    return ch == "," or (ch == "=" and after != "=" and before not in ("=", "!", "<", ">")) \
+        or (ch == ":" and ":" not in (before, after))

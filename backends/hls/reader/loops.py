@@ -18,7 +18,7 @@ from fgc_backends.hls.lint.cxx import (
     _split_top,
 )
 from fgc_backends.hls.reader.count import _Counter
-from fgc_backends.hls.reader.text import _own_level, _unit, _Var
+from fgc_backends.hls.reader.text import _own_level, _subscripts, _unit, _Var, until_fixed
 
 
 @dataclass(frozen=True)
@@ -38,10 +38,24 @@ class LoopReading:
     recurrence: tuple[str, ...]  # carried read-modify-writes without DEPENDENCE inter false
     ii_recurrence: int  # the smallest II those recurrences allow (0: none)
     ii_known: bool = True  # False: the pragma's II does not evaluate here (not judged)
+    # (what limits them: "ALLOCATION in f" / "ALLOCATION function", operator kind or callee,
+    # operations an iteration issues, instances the ALLOCATION allows) of every kind whose
+    # instances cannot issue its operations within the II
+    allocation: tuple[tuple[str, str, int, int], ...] = ()
+    ii_allocation: int = 0  # the smallest II the ALLOCATION limits allow (0: none applies)
+    # `DEPENDENCE variable=v inter false` claims the text refutes: (v, the element's subscript,
+    # the distance it comes back at: P for [a % P], 1 for an index no iteration moves, 0 when
+    # the modulus does not evaluate here, the recurrence's latency: the adder's when the
+    # element is updated through an add, else 1, a compare and select)
+    false_claims: tuple[tuple[str, str, int, int], ...] = ()
+    ii_dependence: int = 0  # the smallest II the refuted claims' true dependences allow
+    # claims on a read-modify-write at a data-dependent address (an index read from memory):
+    # the text can neither prove nor refute them (v, subscript)
+    unproven_claims: tuple[tuple[str, str], ...] = ()
 
     @property
     def ii_bound(self) -> int:
-        return max(1, self.ii_ports, self.ii_recurrence)
+        return max(1, self.ii_ports, self.ii_recurrence, self.ii_allocation, self.ii_dependence)
 
     def dsp(self, dsp_of: dict[str, int]) -> int:
         return sum(n * dsp_of.get(kind, 0) for kind, n in self.instances)
@@ -146,7 +160,7 @@ class _Reader(_Counter):
         # the worst is the loop's): a parameter bound to a global at one site and to a local
         # at another is not that global at every site
         variants: list[dict[str, _Var]] = []
-        for site in self.sites.get(f.name) or [None]:
+        for site in self.sites.get(f.qualname or f.name) or [None]:
             scope: dict[str, _Var] = {}
             for p in f.params:
                 v = self._param_var(f, p)
@@ -189,7 +203,9 @@ class _Reader(_Counter):
             need = math.ceil(n / ii)
             instances[kind] += min(need, limits[kind]) if kind in limits else need
         for name, ops in count.capped.items():
-            cap = self.allocation(self.functions[name].text) if name in self.functions else {}
+            # the callee of this translation unit (two kernels define their own factor_<b>)
+            callee = self.local.get(self.where, {}).get(name) or self.functions.get(name)
+            cap = self.allocation(callee.text) if callee is not None else {}
             for kind, n in ops.items():
                 need = math.ceil(n / ii)
                 instances[kind] += min(need, cap[kind]) if kind in cap else need
@@ -208,6 +224,9 @@ class _Reader(_Counter):
             ii_ports = max(ii_ports, math.ceil(n / (2 * banks)))
         free = set(re.findall(r"DEPENDENCE\s+variable\s*=\s*(\w+)[^\n]*inter\s+false", body,
                               re.I))
+        false_claims, unproven = self._claims(body, header, env, free)
+        ii_dependence = max([0] + [math.ceil(lat / d) if d > 0 else lat
+                                   for _, _, d, lat in false_claims])
         free |= {scope[name].alias for name in free if name in scope}
         # DEPENDENCE ... inter true distance=D: the element comes back D iterations later, so
         # the recurrence through the adder allows II ceil(latency / D)
@@ -229,6 +248,7 @@ class _Reader(_Counter):
         carried = tuple(sorted(r for r in count.recurrences if r not in free))
         ii_recurrence = max([0] + [math.ceil(self.add_latency / distance[r]) if r in distance
                                    else self.add_latency for r in carried])
+        allocation, ii_allocation = self._allocation_ii(f, count, env, ii)
         label = re.search(r'FGC_CYCLES\(\s*"(\w+)"', code[close:close + 400])
         return LoopReading(
             file=f.file, line=_line(code, pragma), function=f.name,
@@ -236,7 +256,99 @@ class _Reader(_Counter):
             label=label.group(1) if label else None, ii=ii,
             ops=tuple(sorted(count.ops.items())), instances=tuple(sorted(instances.items())),
             accesses=tuple(accesses), ii_ports=ii_ports, recurrence=carried,
-            ii_recurrence=ii_recurrence)
+            ii_recurrence=ii_recurrence, allocation=allocation, ii_allocation=ii_allocation,
+            false_claims=false_claims, ii_dependence=ii_dependence, unproven_claims=unproven)
+
+    def _claims(self, body: str, header: list[str], env: dict[str, int], names: set[str]
+                ) -> tuple[tuple[tuple[str, str, int, int], ...], tuple[tuple[str, str], ...]]:
+        """The ``DEPENDENCE ... inter false`` claims on ``names`` against the loop body's
+        read-modify-writes of one element (the same subscript read and written): an index
+        taken modulo P (``part[a % P]``, interleaved partial sums) brings the element back P
+        iterations later, an index that no iteration moves (no loop variable, nothing assigned
+        or declared in the body) every iteration: both refute the claim (UG1399: ``inter
+        false`` is the designer's promise that no iteration reads what another wrote; the true
+        statement is ``inter true distance=P``). An index read from memory (``bank[at[a]]``,
+        or a local initialised from an array or a stream) is unproven: the text cannot tell
+        whether two iterations meet."""
+        moving = set(re.findall(r"\b([A-Za-z_]\w*)\s*=(?!=)", header[0]))
+        moving |= set(re.findall(r"\b([A-Za-z_]\w*)\s*(?:[-+*/%&|^]?=(?!=)|\+\+|--)", body))
+        moving |= set(re.findall(r"(?:\+\+|--)\s*([A-Za-z_]\w*)", body))
+        declared = set(self._declarations(body))
+        moving |= declared
+        data: set[str] = set()
+        for _ in range(4):  # locals initialised from memory, a stream, or such a local
+            for name in declared - data:
+                init = re.search(rf"\b{name}\s*=(?!=)\s*([^;,]*)", body)
+                if init and ("[" in init.group(1) or ".read(" in init.group(1) or any(
+                        re.search(rf"\b{d}\b", init.group(1)) for d in data)):
+                    data.add(name)
+        refuted, unproven = [], []
+        for name in sorted(names):
+            uses: dict[str, set[str]] = {}
+            added: set[str] = set()  # subscripts whose element is updated through an add
+            for m in re.finditer(rf"\b{name}\s*((?:\[[^\[\]]*(?:\[[^\]]*\][^\[\]]*)*\]\s*)+)"
+                                 r"(\s*[-+*/]?=(?!=))?", body):
+                sub = re.sub(r"\s+", "", m.group(1))
+                op = (m.group(2) or "").strip()
+                uses.setdefault(sub, set()).update({"": "r", "=": "w"}.get(op, "rw"))
+                if op in ("+=", "-="):
+                    added.add(sub)
+                elif op == "=":
+                    rhs = until_fixed(r"\[[^\[\]]*\]", "", body[m.end():body.find(";", m.end())])
+                    if re.search(r"[\w)\]]\s*[-+](?![-+=>])", rhs):
+                        added.add(sub)
+            for sub, kinds in sorted(uses.items()):
+                if kinds != {"r", "w"}:
+                    continue
+                words = set(re.findall(r"[A-Za-z_]\w*", sub))
+                modulo = re.search(r"%\s*\(?\s*([\w:]+)", sub)
+                latency = self.add_latency if sub in added else 1
+                if any("[" in index for index in _subscripts(sub)) or words & data:
+                    unproven.append((name, sub))
+                elif modulo:
+                    refuted.append((name, sub, self._value(modulo.group(1), env) or 0, latency))
+                elif not words & moving:
+                    refuted.append((name, sub, 1, latency))
+        return tuple(refuted), tuple(unproven)
+
+    def _allocation_ii(self, f: _Function, count, env: dict[str, int], ii: int
+                       ) -> tuple[tuple[tuple[str, str, int, int], ...], int]:
+        """The loop's operations against the ALLOCATION limits in scope (UG1399: a pipelined
+        loop issues an iteration's operations of a kind through that kind's instances within
+        its II, so its II is at least ``ceil(ops / instances)``): ``ALLOCATION operation`` in
+        ``f`` (the loop's operations, exclusive branches sharing), in a callee that is its own
+        module (its operations a call, one module a call site), and ``ALLOCATION function`` in
+        ``f`` (its call sites an iteration on ``limit`` instances, each taking a call a cycle
+        at best). Returns the limits the II is short of and the II they allow (0: none)."""
+        short, bound = [], 0
+
+        def judge(what: str, kind: str, n: int, instances: int) -> None:
+            nonlocal bound
+            if instances <= 0 or n <= 0:
+                return  # limit=0 (no instance) is not a limit this rule reads
+            need = math.ceil(n / instances)
+            bound = max(bound, need)
+            if need > ii:
+                short.append((what, kind, n, instances))
+
+        limits = self.allocation(f.text)
+        for kind, n in sorted(count.peak.items()):
+            if kind in limits:
+                judge(f"ALLOCATION in {f.name}", kind, n, limits[kind])
+        functions = self.function_allocation(f.text, env)
+        for name, ops in sorted(count.capped_peak.items()):
+            callee = self.local.get(self.where, {}).get(name) or self.functions.get(name)
+            cap = self.allocation(callee.text) if callee is not None else {}
+            sites = max(1, count.calls.get(name, 0))
+            if name in functions and functions[name] > 0:
+                sites = min(sites, functions[name])
+            for kind, n in sorted(ops.items()):
+                if kind in cap:
+                    judge(f"ALLOCATION in {name}", kind, n, cap[kind] * sites)
+        for name, limit in sorted(functions.items()):
+            if count.calls.get(name):
+                judge("ALLOCATION function", name, count.calls[name], limit)
+        return tuple(short), bound
 
 
 def read_project(files: Iterable[tuple[str, str]], add_latency: int) -> list[LoopReading]:
@@ -245,8 +357,10 @@ def read_project(files: Iterable[tuple[str, str]], add_latency: int) -> list[Loo
     return _Reader(files, add_latency).loops()
 
 
-def check(readings: Iterable[LoopReading]) -> list[LintIssue]:
-    """A loop whose declared II is below what its memories or recurrences allow."""
+def check(readings: Iterable[LoopReading], strict: bool = False) -> list[LintIssue]:
+    """A loop whose declared II is below what its memories, recurrences or ALLOCATION limits
+    allow, or whose ``DEPENDENCE ... inter false`` the text refutes; ``strict``: also the
+    claims the text cannot prove (a data-dependent address, rule ``dependence_unproven``)."""
     issues = []
     for r in readings:
         if not r.ii_known:
@@ -265,6 +379,28 @@ def check(readings: Iterable[LoopReading]) -> list[LintIssue]:
                                     f"{', '.join(repr(x) for x in r.recurrence)} every "
                                     "iteration without 'DEPENDENCE inter false': II >= "
                                     f"{r.ii_recurrence}"))
+        for name, sub, d, _ in r.false_claims:
+            again = f"again {d} iterations later" if d > 1 else "every iteration" if d == 1 \
+                else "again a modulus later"
+            state = f"'inter true distance={d}'" if d >= 1 else "'inter true distance=<modulus>'"
+            issues.append(LintIssue(r.file, r.line, "dependence_false", f"loop {where} claims "
+                                    f"'DEPENDENCE variable={name} inter false' but reads and "
+                                    f"writes {name}{sub} {again}: {state} is the truth "
+                                    f"(II >= {r.ii_dependence} with it)"))
+        for name, sub in r.unproven_claims if strict else ():
+            issues.append(LintIssue(r.file, r.line, "dependence_unproven", f"loop {where} "
+                                    f"claims 'DEPENDENCE variable={name} inter false' on "
+                                    f"{name}{sub}, read and written at an address read from "
+                                    "memory: the text cannot prove no two iterations meet"))
+        if r.ii_allocation > r.ii:
+            worst = max(r.allocation, key=lambda a: math.ceil(a[2] / a[3]))
+            what, kind, n, k = worst
+            issued = f"{n} calls of {kind}" if what == "ALLOCATION function" else \
+                f"{n} {kind} operations"
+            issues.append(LintIssue(r.file, r.line, "ii_allocation", f"loop {where} declares "
+                                    f"II={r.ii} but issues {issued} an iteration through "
+                                    f"{k} instance{'s' if k > 1 else ''} ({what}): II >= "
+                                    f"{r.ii_allocation}"))
     # one issue per loop and rule (the instantiations of a template share the text)
     seen, out = set(), []
     for issue in issues:

@@ -87,6 +87,13 @@ class _Scope:
             for name, banks in self._banks(f.text, {}, dims_of).items():
                 if name in self.globals and name not in own:
                     self.global_banks[name] = banks
+        # a global partitioned completely in its first dimension: one of its rows (``work[U]``
+        # passed to a function) is one bank, named ``G[]`` where a parameter is bound to it
+        for _, code in self.files:
+            for m in re.finditer(r"#\s*pragma\s+HLS\s+ARRAY_PARTITION\s+variable\s*=\s*(\w+)"
+                                 r"\s+complete\s+dim\s*=\s*1\b", code, re.I):
+                if m.group(1) in self.globals and len(self.globals[m.group(1)].dims) > 1:
+                    self.global_banks[f"{m.group(1)}[]"] = 1
         self.bindings = self._bindings()
         self.memo: dict[tuple, _Count] = {}
         self.flatten = True  # read a callee in place (off: a function's own operations)
@@ -164,31 +171,49 @@ class _Scope:
         through the callers' own parameters to globals where they lead there)."""
         direct: dict[tuple[str, str], set[tuple[str, str]]] = {}
         calls: list[tuple[str, str, dict[str, str]]] = []  # (callee, caller, param -> base)
-        for caller in self.functions.values():
+        # the callers: the functions and the structs' members (the QR driver's hooks,
+        # QrSets::stack / ::level, pass the unit sets' globals WORK<u> on), by qualified name
+        callers = {f.qualname or f.name: f for f in self.functions.values()}
+        for variants in self.members.values():
+            for _, f in variants:
+                callers.setdefault(f.qualname, f)
+        for qual, caller in callers.items():
             for m in _CALL.finditer(caller.text):
-                f = self.functions.get(m.group(1))
+                f = self.functions.get(m.group(1)) or self._member_callee(caller.text, m)
                 if f is None:
                     continue
+                key = f.qualname or f.name
                 open_ = caller.text.index("(", m.end() - 1)
                 args = _split_top(caller.text[m.end():_matching(caller.text, open_, "(", ")")])
                 site = {}
                 for param, arg in zip(f.params, args, strict=False):
-                    base = re.match(r"^&?\s*([A-Za-z_]\w*)", arg)
+                    base = re.match(r"^&?\s*([A-Za-z_]\w*)\s*(\[)?", arg)
                     if base and (param.dims or param.pointer):
-                        direct.setdefault((f.name, param.name), set()).add(
-                            (caller.name, base.group(1)))
-                        site[param.name] = base.group(1)
-                calls.append((f.name, caller.name, site))
+                        # `work[U]`: one row of the array (marked `[]`)
+                        name = base.group(1) + ("[]" if base.group(2) else "")
+                        direct.setdefault((key, param.name), set()).add((qual, name))
+                        site[param.name] = name
+                calls.append((key, qual, site))
         out: dict[tuple[str, str], set[str]] = {}
+
+        def row(names, sliced):
+            """``names`` (globals) as one row of each where ``sliced``: ``G[]`` for a global
+            partitioned in its first dimension (one bank), else the global itself (its rows
+            share its memories)."""
+            if not sliced:
+                return set(names)
+            return {g if g.endswith("[]") else f"{g}[]" if f"{g}[]" in self.global_banks
+                    else g for g in names}
 
         def resolve(key, seen):
             names = set()
-            for caller, name in direct.get(key, ()):
+            for caller, marked in direct.get(key, ()):
+                name, sliced = marked.removesuffix("[]"), marked.endswith("[]")
                 if name in self.globals:
-                    names.add(name)
+                    names |= row({name}, sliced)
                 elif (caller, name) not in seen and any(
-                        p.name == name for p in self.functions[caller].params):
-                    names |= resolve((caller, name), seen | {key})
+                        p.name == name for p in callers[caller].params):
+                    names |= row(resolve((caller, name), seen | {key}), sliced)
             return names
 
         for key in direct:
@@ -199,11 +224,12 @@ class _Scope:
         self.sites: dict[str, list[dict[str, str | None]]] = {}
         for callee, caller, site in calls:
             bound = {}
-            for param, base in site.items():
+            for param, marked in site.items():
+                base, sliced = marked.removesuffix("[]"), marked.endswith("[]")
                 if base in self.globals:
-                    bound[param] = base
-                elif any(p.name == base for p in self.functions[caller].params):
-                    names = sorted(out.get((caller, base), ()))
+                    bound[param] = sorted(row({base}, sliced))[0]
+                elif any(p.name == base for p in callers[caller].params):
+                    names = sorted(row(out.get((caller, base), ()), sliced))
                     bound[param] = names[0] if names else None
                 else:
                     bound[param] = None
@@ -217,10 +243,20 @@ class _Scope:
         is_float = re.search(rf"\b{FLOAT_TYPES}\b", param.type) is not None
         if not (param.dims or param.pointer):
             return _Var(is_float, (), param.name, "local")
-        bound = sorted(self.bindings.get((f.name, param.name), ()))
+        bound = sorted(self.bindings.get((f.qualname or f.name, param.name), ()))
         if bound:  # bound to a global: the first (a parameter bound to several: any one)
             return _Var(is_float, param.dims, bound[0], "global")
         return _Var(is_float, param.dims, param.name, "local")
+
+    def _member_callee(self, text: str, m: re.Match) -> _Function | None:
+        """The struct member a call ``S<...>::f(`` in ``text`` runs (its primary template's
+        definition; a specialisation where there is no primary), or None."""
+        owner = re.search(r"\b(\w+)\s*(?:<[^;{}()]*>)?\s*::\s*$", text[max(0, m.start() - 160):
+                                                                     m.start()])
+        variants = self.members.get(f"{owner.group(1)}::{m.group(1)}") if owner else None
+        if not variants:
+            return None
+        return next((f for spec, f in variants if spec is None), variants[0][1])
 
     def _lookup(self, name: str, scope: dict) -> _Var | None:
         return scope.get(name) or self.globals.get(name)

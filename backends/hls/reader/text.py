@@ -80,14 +80,31 @@ class _Count:
     recurrences: set[str] = field(default_factory=set)  # carried read-modify-writes
     # array or scalar that lives across iterations -> {(access, index fixed or data-dependent)}
     rw: dict[str, set[tuple[str, bool]]] = field(default_factory=dict)
+    # ``ops`` / ``capped`` with the branches of an if / else chain taking the largest branch,
+    # not their sum: exclusive branches share an ALLOCATION's instances (what one iteration
+    # must issue through them)
+    peak: Counter = field(default_factory=Counter)
+    capped_peak: dict[str, Counter] = field(default_factory=dict)
+    calls: Counter = field(default_factory=Counter)  # project function -> its call sites
+
+    @classmethod
+    def of(cls, ops: Counter) -> _Count:
+        """Operations run unconditionally."""
+        return cls(ops=Counter(ops), peak=Counter(ops))
 
     def add(self, other: _Count, times: int = 1) -> None:
         for k, v in other.ops.items():
             self.ops[k] += v * times
-        for name, c in other.capped.items():
-            mine = self.capped.setdefault(name, Counter())
-            for k, v in c.items():
-                mine[k] += v * times
+        for k, v in other.peak.items():
+            self.peak[k] += v * times
+        for k, v in other.calls.items():
+            self.calls[k] += v * times
+        for mine_of, theirs in ((self.capped, other.capped),
+                                (self.capped_peak, other.capped_peak)):
+            for name, c in theirs.items():
+                mine = mine_of.setdefault(name, Counter())
+                for k, v in c.items():
+                    mine[k] += v * times
         for k, v in other.accesses.items():
             self.accesses[k] += v * times
         self.recurrences |= other.recurrences

@@ -105,12 +105,41 @@ def backsub_slots(tables: dict) -> tuple[tuple[int, int, int], ...]:
     return tuple(slots)
 
 
+def backsub_xoff(tables: dict) -> tuple[int, ...]:
+    """Per slot of :func:`backsub_slots`: where the loaded step's separator solution sits in the
+    loading lane's solution buffer (``BS_X<q>``, the frontal solution of the step lane q solved
+    last, which no solve has overwritten since): the offset j0 when the separator's columns are
+    that step's frontal columns j0 … j0 + s − 1 in order, so ``cond_load`` reads x there and the
+    slot needs no ``separator_in`` copy from DELTA; −1 otherwise (no load, a separator from
+    another step or lane: DELTA as before). On a two-ended chain every load after the root's
+    first child is lane-local (the step's parent is the step two before it, on its own lane)."""
+    cols, cb = tables["STEP_COL"], tables["STEP_COL_BEGIN"]
+    f_of, w_of = tables["STEP_F"], tables["STEP_W"]
+    last = [-1] * LANES  # per lane: the step it solved last
+    out = []
+    for solve, load, lane in backsub_slots(tables):
+        xoff = -1
+        prev = last[1 - lane]  # the loading lane's last solve (an earlier slot's)
+        if load >= 0 and prev >= 0 and w_of[load] > f_of[load]:
+            sep = list(cols[cb[load] + f_of[load]:cb[load] + w_of[load]])
+            front = list(cols[cb[prev]:cb[prev] + f_of[prev]])
+            if sep[0] in front:
+                j0 = front.index(sep[0])
+                if front[j0:j0 + len(sep)] == sep:
+                    xoff = j0
+        out.append(xoff)
+        if solve >= 0:
+            last[lane] = solve
+    return tuple(out)
+
+
 def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
-                       timing: dict) -> list[Loop]:
+                       timing: dict, local: bool = False) -> list[Loop]:
     """One slot of back_substitute() (:func:`backsub_slots`): the loaded step's separator
-    solution in (:data:`PORTS` words a cycle), then the ``backsub_lane<p>`` DATAFLOW region (the
-    solving lane's ``cond_backsub`` and its frontal solution out, ``backsub_out``, beside the
-    other lane's ``cond_load``: the slower plus the other's fill)."""
+    solution in (:data:`PORTS` words a cycle; none when ``local``, :func:`backsub_xoff`), then
+    the ``backsub_lane<p>`` DATAFLOW region (the solving lane's ``cond_backsub`` and its frontal
+    solution out, ``backsub_out``, beside the other lane's ``cond_load``: the slower plus the
+    other's fill)."""
     def sizes(s):
         return (tables["STEP_F"][s], tables["STEP_W"][s] - tables["STEP_F"][s]) if s >= 0 \
             else (0, 0)
@@ -120,7 +149,7 @@ def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
     if sf:
         solve_loops.append(kernel_loop("solution_out", _ported(sf), "move", timing))
     region = _region_cycles([solve_loops, [load_loop(lf, ls, ops, name=f"cond_load{load}")]])
-    return [kernel_loop("separator_in", _ported(ls), "move", timing),
+    return [kernel_loop("separator_in", 0 if local else _ported(ls), "move", timing),
             Loop("backsub_lane", 1, 1, region)]
 
 
@@ -161,16 +190,18 @@ def retire_region(slots: list[list[Loop]], sent: list[int], counts: list[int], i
 
 def backsub_phases(ctx, unit: str) -> None:
     """The emitted back_substitute (fgc_backsub.h): one phase ``backsub``, its DATAFLOW region
-    of the slot process (per slot of :func:`backsub_slots` its copies and ``backsub_lane<p>``
-    region, :func:`backsub_slot_loops`) beside the state update's ``backsub_retire``
+    of the slot process (per slot of :func:`backsub_slots` its copies, the separator's only
+    where it is not lane-local (:func:`backsub_xoff`), and ``backsub_lane<p>`` region,
+    :func:`backsub_slot_loops`) beside the state update's ``backsub_retire``
     (:func:`fgc_backends.hls.units.state_update.retire_timing`: a variable an iteration, as its
     step's solution arrives), priced by :func:`retire_region`: the slots' loops, then what the
     retire adds after the last slot (``retire_tail``)."""
     from fgc_backends.hls.units.state_update import retire_timing
     tables, timing, ops = ctx.tables, ctx.les_timing, ctx.les
     slots, sent, counts = [], [], []
+    xoff = backsub_xoff(tables)
     for k, (solve, load, _) in enumerate(backsub_slots(tables)):
-        slots.append(backsub_slot_loops(tables, solve, load, ops, timing))
+        slots.append(backsub_slot_loops(tables, solve, load, ops, timing, xoff[k] >= 0))
         if solve >= 0:
             sent.append(k)
             counts.append(len(ctx.program.schedule.steps[solve].frontals))

@@ -16,17 +16,18 @@ from fgc_backends.hls.plan.model import PORTS, Loop, Phase, Process
 from fgc_backends.hls.units.spec import UnitSpec
 
 
-def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0
-             ) -> tuple[int, int, int]:
+def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
+             partials: int | None = None) -> tuple[int, int, int]:
     """(trip, II, depth) of a reduction of ``words`` terms two a cycle (fgc_lm_units.h's
     pair_ii / pair_depth: the memories' two ports): lane h of a pair into its own ``ii`` =
     latency interleaved partials (the dot-product rule, :func:`kernel_dot`, on a lane's trip),
     the 2k partials folded in a tree; ``kind`` the recurrence (``acc`` a sum: the multiply
     ahead; ``max`` a running maximum: the read and |·| ahead), ``extra`` the latency the loop
-    adds around it (the step test's μ‖δ‖² after the folds)."""
+    adds around it (the step test's μ‖δ‖² after the folds); ``partials``: a lane's partials if not
+    the recurrence's latency (lm_iterate's maxima: as many as its sums)."""
     ii, depth = timing[kind]
     trip = -(-words // PORTS)
-    k = max(1, min(trip, ii))
+    k = max(1, min(trip, ii if partials is None else partials))
     return trip, math.ceil(ii / k), extra + (depth - ii) + ii * (1 + _ceil_log2(2 * k))
 
 
@@ -44,7 +45,8 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict) -> tuple[Phase, ...]:
     a word) and adds μ‖δ‖² to the latter after the folds (δᵀ(g + μδ)), a multiply and an add
     more in its depth."""
     tail = timing["acc"][1]  # after the folds: μ‖δ‖², then δᵀg + μ‖δ‖²
-    _, gii, gdepth = pair_dot(n_t, timing, kind="max")
+    # (the maxima as many as the sums: lm_iterate's one DEPENDENCE distance, PARTIALS)
+    _, gii, gdepth = pair_dot(n_t, timing, kind="max", partials=timing["acc"][0])
     _, xii, xdepth = pair_dot(n_x, timing)
     trip = _ported(max(n_t, n_x))  # one loop over the longer of the two
     step = pair_dot(n_t, timing, extra=tail)

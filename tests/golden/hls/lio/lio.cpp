@@ -3550,15 +3550,24 @@ const int BS_SLOTS = 9;
 const int BS_SOLVE[BS_SLOTS] = {-1, 6, -1, 4, 5, 2, 3, 0, 1};
 const int BS_LOAD[BS_SLOTS] = {6, -1, 4, 5, 2, 3, 0, 1, -1};
 const int BS_LANE[BS_SLOTS] = {1, 0, 0, 1, 0, 1, 0, 1, 0};
+// the loaded separator's solution in the loading lane's BS_X from this offset (-1: from DELTA)
+const int BS_XOFF[BS_SLOTS] = {-1, -1, -1, 15, 0, 0, 0, 0, -1};
 #define FGC_BACKSUB_DRIVER
 #include "fgc_backsub.h"
 
+// back_substitute's region (the cost pass at X_TRIAL, or at X, beside it) behind one name:
+// the on-chip stream's kernels, which inline solve, limit it to one instance (fgc_stream.h)
+void back_substitute_at(bool at_x) {
+    back_substitute<LesConfig>(at_x);
+}
+
 // The linear solve at mu: eliminate, then back-substitute, the cost at X_TRIAL beside it
 // (trial_cost). False if singular. at_x: no solve, back_substitute's cost pass at X (LM
-// control's cost_x). One RTL instance: LM control's two calls share it (fgc_lm.h's ALLOCATION).
+// control's cost_x). One RTL instance: LM control's two calls share it (fgc_lm.h's ALLOCATION;
+// inlined in the on-chip stream's kernels, whose ALLOCATION shares back_substitute_at).
 bool solve(T mu, bool at_x) {
     if (!at_x && !eliminate_all(mu)) return false;
-    back_substitute<LesConfig>(at_x);
+    back_substitute_at(at_x);
     return true;
 }
 
