@@ -130,7 +130,7 @@ def measure_stream(n: int, out: Path) -> dict:
                 unproven=sum(i.rule == "dependence_unproven" for i in issues),
                 issues=[str(i) for i in issues],
                 copies={k: modules.get(k, 0) for k in ("eliminate_all", "linearize_all",
-                                                       "total_cost", "qr_update",
+                                                       "back_substitute_at", "qr_update",
                                                        "keyframe_local", "keyframe_retract",
                                                        "kept_matvec", "write_tau", "so3_log")})
 

@@ -309,6 +309,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     ii, depth = retire_timing(program.variables, plan.ops, _sizes(program)["MAX_F"],
                               plan.options.state_allocation)
     retire = {"kinds": kinds, "variables": variables, "steps": steps, "ii": ii, "depth": depth}
+    # back_substitute's trial_cost (units/datapath.py): its loops' tables, II and depth
+    trial = _trial_context(program, context["blocks"], blocks, phase)
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
@@ -326,7 +328,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
             "blocks": blocks, "beside": beside, "network": network, "retract_hw": retract,
-            "retire": retire,
+            "retire": retire, "trial": trial,
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
             "small": shared,
@@ -388,6 +390,40 @@ def _cascade_context(program: Program, plan) -> dict:
             "step_region": [where[s][0] for s in range(n)],
             "step_cascade": [where[s][1] for s in range(n)],
             "step_streamed": [kids[s][0] for s in range(n)]}
+
+
+def _trial_context(program: Program, contexts, blocks, phase: dict) -> list[dict]:
+    """trial_cost's loops as accel.cpp.jinja prints them (units/datapath.py's trial_plan on
+    the plan's cost-mode loops): per loop its entries' instance (and block type, for the
+    shared small datapath), the storage words of the variables each takes ([x0, x1) in x, k
+    a row, x0 = x1 none), II and depth."""
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.datapath import cost_loops, trial_plan
+    procs = [p for p in phase["factor_cost"].processes
+             if re.fullmatch(r"factor_(\d+|small)_cost", p.name)]
+    offsets = [0]
+    for v in program.variables:
+        offsets.append(offsets[-1] + v.storage_dim)
+    out = []
+    for lp in trial_plan(program, contexts, cost_loops(procs), _tables(program)):
+        x0, x1 = [], []
+        for _, taking in lp.entries:
+            row = [(offsets[v], offsets[v + 1]) for v in taking]
+            row += [(0, 0)] * (lp.k - len(row))
+            x0 += [a for a, _ in row]
+            x1 += [b for _, b in row]
+        small = lp.key == "small"
+        names = sorted({contexts[program.factors[f].block].comment  # sanitised
+                        for f, _ in lp.entries if f >= 0})
+        out.append({"key": lp.key, "name": lp.name, "small": small, "k": lp.k, "ii": lp.ii,
+                    "depth": lp.depth, "count": len(lp.entries),
+                    "block": None if small else blocks[lp.key],
+                    "f": [f for f, _ in lp.entries],
+                    "b": [program.factors[f].block if f >= 0 else -1 for f, _ in lp.entries],
+                    "x0": x0, "x1": x1,
+                    "comment": ("the small datapath" if small else f"block {lp.key}")
+                    + " (" + ", ".join(names) + ")"})
+    return out
 
 
 def _backsub_slots(program: Program) -> tuple[tuple[int, int, int], ...]:

@@ -270,12 +270,14 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
                                     "qr_evaluate", "qr_collect")
     backsub = backsub_region(_backsub(out))
     assert backsub.processes == ("backsub_set0", "backsub_load1", "backsub_set1",
-                                 "backsub_load0", "backsub_slots", "backsub_retire")
-    assert backsub.streams == (("dx", ""),)  # the solved words to the state update
+                                 "backsub_load0", "backsub_slots", "backsub_retire",
+                                 "trial_cost")
+    # the solved words to the state update, its retired variables to the cost pass
+    assert backsub.streams == (("dx", ""), ("tx", ""))
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams))
-    assert (len(procs), len(streams)) == ((units + 4) * 2 + 6, 2 * (4 * units + 1) + 1)
-    assert tuple(p for p in procs if p.startswith("backsub")) == backsub.processes
+    assert (len(procs), len(streams)) == ((units + 4) * 2 + 7, 2 * (4 * units + 1) + 2)
+    assert tuple(p for p in procs if p.startswith(("backsub", "trial"))) == backsub.processes
     for p in procs:  # the comment block lists the plan's network
         assert f"//   process {p}\n" in kernel
 
@@ -295,26 +297,28 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     # cholesky_overlap), back-substitution's lanes, its slot process and the state update it
     # feeds; links, tapped and recip, the assembler's stream, back_substitute's
     # (the HGC beside the elimination: its Gram source a third process of the overlap region,
-    # its Gram stream one more)
+    # its Gram stream one more; the cost pass beside back-substitution: trial_cost and its
+    # stream of retired variables)
     overlaps = {r.function: r for r in read_network(_texts(out, "w100", "fgc_eliminate.h")[1])}
     assert overlaps["cholesky_overlap"].processes == ("cholesky_assembler", "cholesky_cascade")
     assert overlaps["cholesky_overlap_beside"].processes == (
         "cholesky_gram_source", "cholesky_assembler", "cholesky_cascade")
     header += _texts(out, "w100", "fgc_eliminate.h")[1]
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == \
-        (2 * cpe + 11, 3 * cpe + 4)
-    assert procs[-6:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0",
-                          "backsub_slots", "backsub_retire")
-    assert all(f"//   process {p}\n" in kernel for p in procs[-6:])
+        (2 * cpe + 12, 3 * cpe + 5)
+    assert procs[-7:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0",
+                          "backsub_slots", "backsub_retire", "trial_cost")
+    assert all(f"//   process {p}\n" in kernel for p in procs[-7:])
     assert f"//   stream cpe_link{cpe} " in kernel
 
 
 def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
-    """Issue 18: LM control's sums (|x|² in try_steps, the step test's ‖δ‖² and δᵀ(g + μδ))
-    go a term a cycle (PIPELINE II=1) into as many interleaved partial sums as the adder's
-    latency, the gradient's largest entry into as many partial maxima as the compare's, the
-    partial arrays completely partitioned; the plan prices those loops at II 1 (one
-    accumulator each, as before, runs at II = the adder's latency)."""
+    """Issue 18: LM control's sums (|x|², found beside the gradient's maximum, the step test's
+    ‖δ‖² and δᵀg) go two terms a cycle (PIPELINE II=1, issue 33: the memories' two ports) into
+    two lanes of as many interleaved partial sums as the adder's latency, the gradient's
+    largest entry into as many partial maxima as the compare's, the partial arrays completely
+    partitioned; the plan prices those loops at II 1 (one accumulator each, as before, runs at
+    II = the adder's latency)."""
     from fgc_backends.hls import HlsConfig
     from fgc_backends.hls.emitter import accel_plan
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr")
@@ -326,23 +330,22 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
     assert f"T_CMP_LAT = {plan.ops.compare.latency}," in kernel
     assert "T_MAXIMA = T_CMP_LAT;" in kernel
     assert "PARTIALS = T_PARTIALS," in kernel and "MAXIMA = T_MAXIMA," in kernel
-    for array, update, dist in (("xp", "xp[i % CFG::PARTIALS] += x[i] * x[i];", "PARTIALS"),
-                                ("dp", "dp[i % CFG::PARTIALS] += d * d;", "PARTIALS"),
-                                ("pp", "pp[i % CFG::PARTIALS] += d * (g[i] + mu * d);", "PARTIALS"),
-                                ("gp", "gp[i % CFG::MAXIMA] = a > gp[i % CFG::MAXIMA]", "MAXIMA")):
+    for array, update in (("xp", "xp[xk] += x[i] * x[i];"), ("dp", "dp[k] += d * d;"),
+                          ("pp", "pp[k] += d * g[i];"),
+                          ("gp", "gp[gk] = a > gp[gk] ? a : gp[gk];")):
         at = units.index(update)
-        loop = units[units.rindex("for (int i = 0;", 0, at):at]
+        loop = units[units.rindex("for (int e = 0;", 0, at):at]
         assert "#pragma HLS PIPELINE II=1\n" in loop, array
-        # a partial sum is met again P iterations later: the true distance, which the II-1
-        # schedule honours because P >= the operator's latency
-        assert (f"#pragma HLS DEPENDENCE variable={array} inter true distance=CFG::{dist}"
+        # each partial comes back PARTIALS iterations later (lm_iterate's maxima as many as its
+        # sums): the true distance
+        assert (f"#pragma HLS DEPENDENCE variable={array} inter true distance=CFG::PARTIALS"
                 in loop), array
         assert f"#pragma HLS ARRAY_PARTITION variable={array} complete" in units, array
     loops = {lp.name: lp for ph in plan.phases if ph.name.startswith("lm_")
              for pr in ph.processes for lp in pr.loops}
     n_t = sum(v.dim for v in program.variables)
     assert n_t >= plan.ops.add.latency
-    assert all(loops[n].ii == 1 for n in ("gradient_max", "x_norm", "step_test"))
+    assert all(loops[n].ii == 1 for n in ("gradient_x_norm", "step_test"))
 
 
 def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):

@@ -130,15 +130,17 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     assert depth == critical_path(KernelText.of(retract_kernel(variable_class("Pose2"))),
                                   _sim_table(F32))
     assert "state_update" not in phases
-    # LM control per linearisation: the gradient's largest entry (9 entries into 1 = compare
-    # latency partial maximum: II 1, depth |.| 2 + compare 1 = 3: 11), |x| (12 storage words
-    # into 4 partial sums: II 1, depth mul 3 + add 4 (1 + ⌈log₂ 4⌉) = 15: 26); per solve: the
-    # step test (9 entries, 4 partial sums: II 1, depth μδ and g + μδ 7 + 15 = 22: 30), the
-    # decision (div 15 + 2 mul + 2 add + compare 1 = 30); per accepted step: x copied (12
-    # words, II 1, depth 2: 13)
-    assert phases["lm_iteration"] == 11 + 26
+    # LM control, every loop two words a cycle (two lanes of partials). Per linearisation the
+    # gradient's largest entry and |x| in one loop over the 12 storage words (6 iterations):
+    # the maxima (9 entries, 2 x 1 = compare latency partials: II 1, depth |.| 2 + compare 1
+    # (1 + ⌈log₂ 2⌉) = 4), |x|² (2 x 4 partial sums: II 1, depth mul 3 + add 4 (1 + ⌈log₂ 8⌉)
+    # = 19): 5 + 19 = 24; per solve: the step test (9 entries, 5 iterations, 2 x 4 partial
+    # sums of δ·δ and δ·g: depth 19, then μ‖δ‖² and its add 7: 26 -> 30), the decision (div 15
+    # + 2 mul + 2 add + compare 1 = 30); per accepted step: x copied (12 words two a cycle,
+    # depth 2: 7)
+    assert phases["lm_iteration"] == 24
     assert phases["lm_control"] == 30 + 30
-    assert phases["lm_accept"] == 13
+    assert phases["lm_accept"] == 7
     # back-substitution (fgc_backsub.h; backsub.py's slots: a step's cond_backsub and its
     # solution out on one lane beside the next step's cond_load into the other, copies two words
     # a cycle). Steps root (f 3, s 0), then A and B (f 3, s 3), both separators in the root's
@@ -153,14 +155,30 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # lane's solution, no copy in from DELTA); slot 4 solves B -> 50: the slots end at 13, 63,
     # 83, 142, 192. Beside them the state update (backsub_retire: a variable an iteration at
     # II 24, 2 + depth deep: a step's 3 words in, a pair a cycle, then the datapath) retracts
-    # the root at 63, A when it is sent at 142, B at 192: it ends at 192 + 2 + depth, which the
-    # phase adds after the slots
-    plan_phase = {ph.name: ph for ph in plan.phases}["backsub"]
-    slots, retire = plan_phase.processes
+    # the root at 63, A when it is sent at 142, B at 192: it ends at 192 + 2 + depth. Beside
+    # them the cost at X_TRIAL (trial_cost, issue 33), fed the retired variables (x1, x0, x2:
+    # the root's, A's, B's) as they end (65, 144, 194 + depth): the datapaths' loops one after
+    # another, the one with more work first (the prior: 1 instance x II 24 against the between
+    # factors' 2 x 12, a tie: block order), each its cost-mode II and depth + 2 (the taken
+    # words written and read) where it takes variables. The prior's loop takes x1 in an entry
+    # of its own (one variable an entry: its instances have one), then x0 and costs the prior
+    # at 144 + depth; the between factors' loop starts when it has drained, costs x0-x1 (all
+    # taken) and then x1-x2 once x2 is in (194 + depth); the phase ends with it.
+    by_name = {ph.name: ph for ph in plan.phases}
+    plan_phase = by_name["backsub"]
+    slots, retire, cost = plan_phase.processes
     sizes = [sum(lp.cycles for lp in slots.loops[2 * k:2 * k + 2]) for k in range(5)]
     assert sizes == [13, 50, 20, 59, 50] and len(slots.loops) == 10
     assert retire.loops[0].cycles == 2 + depth
-    assert phases["backsub"] == 192 + 2 + depth
+    (ii0, d0), (ii1, d1) = [(p.loops[0].ii, p.loops[0].depth)
+                            for p in by_name["factor_cost"].processes[1:]]
+    assert (ii0, ii1) == (24, 12)
+    free = 144 + depth + d0 + 2
+    end = max(free + ii1, 194 + depth) + d1 + 2
+    assert cost.loops[0].cycles == end - (192 + 2 + depth)
+    assert phases["backsub"] == end
+    assert "factor_cost" not in phases  # the cost at X: once per call
+    assert by_name["factor_cost"].per == "call"
     assert c.cycles == sum(phases.values())
     assert c.linear_cycles == sum(v for k, v in phases.items()
                                   if k.startswith(("qr_", "backsub")))

@@ -140,7 +140,7 @@ def test_back_substitution_feeds_the_state_update():
     plan = build_plan(program)
     assert "state_update" not in {ph.name for ph in plan.phases}
     assert [u.name for u in plan.units if u.name.startswith("state_update")]  # its datapaths
-    slots, retire = {ph.name: ph for ph in plan.phases}["backsub"].processes
+    slots, retire, _ = {ph.name: ph for ph in plan.phases}["backsub"].processes  # + the cost
     solved = [s for s, _, _ in backsub_slots(plan_tables(program))]
     variables, first = retire_order(program, [s for s in solved if s >= 0])
     assert sorted(variables) == list(range(len(program.variables)))  # each retracted once

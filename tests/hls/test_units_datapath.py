@@ -94,12 +94,24 @@ def test_plan_prices_no_robust_datapath_for_plain_members():
 
 
 def _kernel_calls(text: str, block: int) -> tuple[str, str]:
-    """The bodies of evaluate_<block> and cost_of_<block> in the emitted kernel."""
-    out = []
-    for fn in (f"void evaluate_{block}(", f"T cost_of_{block}("):
-        start = text.index(fn)
-        out.append(text[start:text.index("\n}\n", start)])
-    return out[0], out[1]
+    """The bodies of evaluate_<block> and of trial_cost's loop over <block> (issue 33: the cost
+    pass beside back-substitution) in the emitted kernel."""
+    start = text.index(f"void evaluate_{block}(")
+    evaluate = text[start:text.index("\n}\n", start)]
+    start = text.index(f"    // block {block} (", text.index("void trial_cost("))
+    return evaluate, text[start:text.index("\n    }\n", start)]
+
+
+def _trial_loops(text: str, loops) -> dict:
+    """Per key of trial_cost's loops (a block type, or "small") its reading among ``loops``
+    (the second reader's): the first of trial_cost's after the loop's comment."""
+    at = text.index("void trial_cost(")
+    mine = sorted((r for r in loops if r.function == "trial_cost"), key=lambda r: r.line)
+    out = {}
+    for m in re.finditer(r"\n    // (?:block (\d+)|the small datapath) \(", text[at:]):
+        line = text.count("\n", 0, at + m.start() + 1) + 1  # the comment's line
+        out[int(m.group(1)) if m.group(1) else "small"] = next(r for r in mine if r.line > line)
+    return out
 
 
 def _emit_and_read(robust_between, tmp_path) -> tuple[str, dict, dict]:
@@ -119,9 +131,11 @@ def _emit_and_read(robust_between, tmp_path) -> tuple[str, dict, dict]:
     design = read_design(files, top, tab.add.latency)
     modules = dict(design.modules)
     plan_dsp, reader_dsp = {}, {}
+    text = (out / "chain.cpp").read_text()
+    trial = _trial_loops(text, design.loops)
     for block in range(len(program.blocks)):
-        loops = [r for r in design.loops
-                 if re.fullmatch(rf"(?:evaluate|cost_of)_{block}", r.function)]
+        loops = [r for r in design.loops if r.function == f"evaluate_{block}"] + [trial[block]]
+        assert len(loops) == 2
         reader_dsp[block] = sum(r.dsp(dsp_of) * modules[r.function] for r in loops)
         plan_dsp[block] = units[f"factor_{block}"]
         if not program.blocks[block].members[0].robust:  # no robust loss's operators
@@ -234,7 +248,7 @@ def test_shared_datapath_as_emitted_and_read(lio_small, tmp_path):
     for b in small:  # the small kernels are inlined into the shared function
         fn = text[text.index(f"void factor_{b}("):]
         assert fn[:fn.index("}")].count("#pragma HLS INLINE\n") == 1
-        assert f"evaluate_{b}(x)" not in text and f"cost_of_{b}(x, total)" not in text
+        assert f"evaluate_{b}(x)" not in text and f"// block {b} (" not in text
     plan, cost = _plan(lio_small)
     tab = plan.target.ops("float32")
     dsp_of = {"add": tab.add.dsp, "mul": tab.mul.dsp, "div": tab.div.dsp,
@@ -242,7 +256,8 @@ def test_shared_datapath_as_emitted_and_read(lio_small, tmp_path):
     files, top = emitted_files(out)
     design = read_design(files, top, tab.add.latency)
     modules = dict(design.modules)
-    loops = [r for r in design.loops if r.function in ("evaluate_small", "cost_of_small")]
+    loops = [r for r in design.loops if r.function == "evaluate_small"]
+    loops.append(_trial_loops(text, design.loops)["small"])
     assert len(loops) == 2 and not check(loops)  # the declared IIs are what the text allows
     reader = sum(r.dsp(dsp_of) * modules[r.function] for r in loops)
     assert 0 < reader <= dict(cost.dsp_by_unit)["factor_small"]

@@ -27,12 +27,15 @@
 // The reductions live in the hooks: the HLS kernel's run in interleaved partial sums at II 1
 // (fgc_lm_units.h) and count cycles, the native solver's are plain loops.
 //
-// One cost pass in hardware: cost_x() and cost_trial() both run the kernel's total_cost (on X,
-// on X_TRIAL). In Vitis every call site of a function not inlined is its own RTL instance, so
-// the two hooks would build every cost datapath twice; try_steps and the HLS kernel's cost
-// hooks are INLINE (their calls land in optimize's body) and optimize's ALLOCATION limits
-// total_cost to one instance there: both calls share it (they never run at once). A caller of
-// optimize_inline carries that ALLOCATION itself. The native compiler ignores the HLS pragmas.
+// One cost pass in hardware: the HLS kernel computes the cost at X_TRIAL inside its linear
+// solve (back-substitution's region) and cost_x() runs the same solve with no elimination,
+// the cost pass at X (the native kernel's hooks run its total_cost on X, on X_TRIAL). In Vitis
+// every call site of a function not inlined is its own RTL instance, so the two calls of the
+// kernel's solve would build it, and every cost datapath, twice; try_steps and the HLS
+// kernel's hooks are INLINE (their calls land in optimize's body) and optimize's ALLOCATION
+// limits solve to one instance there: both calls share it (they never run at once). A caller
+// of optimize_inline carries that ALLOCATION itself. The native compiler ignores the HLS
+// pragmas.
 #ifndef FGC_LM_H
 #define FGC_LM_H
 
@@ -150,7 +153,9 @@ void optimize_inline(typename CFG::T errors[2], int info[3]) {
 
 template <class CFG>
 void optimize(typename CFG::T errors[2], int info[3]) {
-#pragma HLS ALLOCATION function instances=total_cost limit=1
+#pragma HLS ALLOCATION function instances=solve limit=1
+#pragma HLS ALLOCATION function instances=back_substitute_at limit=1
+#pragma HLS ALLOCATION function instances=eliminate_all limit=1
 #ifdef FGC_LM_LINEARIZE_SOLVE  // the HLS Cholesky kernel's linearize_x(mu) and solve_at(mu) share it
 #pragma HLS ALLOCATION function instances=linearize_solve limit=1
 #endif

@@ -197,15 +197,16 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
 //
 // backsub_retire: the state update fed by back-substitution: X_TRIAL = X (+) delta variable by
 // variable as their steps' words arrive (its own copy of delta, by tangent index), through the
-// kernel's retraction datapaths (CFG::retract_variable), while the slot process solves the next
-// steps. Every variable is a frontal variable of exactly one step, so X_TRIAL is whole when the
+// kernel's retraction datapaths (CFG::retract_variable, which also sends each variable's words
+// on to the kernel's trial_cost, the region's third process: the cost at X_TRIAL), while the
+// slot process solves the next steps. Every variable is a frontal variable of exactly one step, so X_TRIAL is whole when the
 // region ends; LM control takes it from there (its retract_trial does nothing more here).
 //
 // Included a second time by the kernel with FGC_BACKSUB_DRIVER defined, inside its namespace
 // (fgc::, or fgc::les for the mixed design), after its schedule tables and the BS_* slot tables,
 // which these functions name: BS_SLOTS, BS_SOLVE, BS_LOAD, BS_LANE, BS_XOFF, RETIRE_VARS, RETIRE_STEP,
 // STEP_F, STEP_W, STEP_COL_BEGIN, STEP_COL, STEP_COND_OFF (tables); COND, DELTA, L (the linear
-// solver's scalar), MAX_F. CFG is the kernel's LesConfig (T, MAX_F, MAX_W, MAX_COLS, N_TANGENT,
+// solver's scalar), MAX_F; TrialVar and trial_cost (the cost pass's stream word and process). CFG is the kernel's LesConfig (T, MAX_F, MAX_W, MAX_COLS, N_TANGENT,
 // N_VARIABLES, PARTIALS, the latencies cond_load / cond_backsub read, MOVE_DEPTH: the copies'
 // depth, the retire loop's RETIRE_II and RETIRE_DEPTH, and the hook retract_variable). The two
 // lanes are written out (each its own memories and RTL instance: backsub_set0 / backsub_set1,
@@ -312,7 +313,7 @@ void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
 
 // The slots, root first, into DELTA; each solved step's words to the state update too.
 template <class CFG>
-void backsub_slots(hls::stream<BsPair>& dx) {
+void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
     FGC_OUTER_BRANCH();  // csim cycle counting only: this process beside backsub_retire
     L bs_part0[2][CFG::PARTIALS][CFG::MAX_F];  // lane 0's partial sums of S xs (word lane, bank, row)
 #pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
@@ -320,7 +321,9 @@ void backsub_slots(hls::stream<BsPair>& dx) {
     L bs_part1[2][CFG::PARTIALS][CFG::MAX_F];  // lane 1's
 #pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=2
-    for (int k = 0; k < BS_SLOTS; ++k) {
+    const int slots = at_x ? 0 : BS_SLOTS;  // at_x: no solve (the cost at X)
+    for (int k = 0; k < slots; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=BS_SLOTS
         const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = BS_LOAD[k];
         const int sf = sv >= 0 ? STEP_F[sv] : 0, ssep = sv >= 0 ? STEP_W[sv] - STEP_F[sv] : 0;
         const int scb = sv >= 0 ? STEP_COL_BEGIN[sv] : 0;
@@ -355,13 +358,13 @@ void backsub_slots(hls::stream<BsPair>& dx) {
 // a step (RETIRE_STEP: its step, else -1) first takes the step's words from `dx` (stalling until
 // they come), then each variable is retracted by CFG::retract_variable (its type's datapath).
 template <class CFG>
-void backsub_retire(hls::stream<BsPair>& dx) {
+void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx, bool at_x) {
     FGC_OUTER_BRANCH();
     L delta[CFG::N_TANGENT];  // the solved entries by tangent index
     for (int i = 0; i < CFG::N_VARIABLES; ++i) {
 #pragma HLS PIPELINE II=CFG::RETIRE_II
         const int s = RETIRE_STEP[i];
-        if (s >= 0) {
+        if (s >= 0 && !at_x) {
             FGC_OUTER_RECEIVE();  // csim cycle counting: no earlier than the step was sent
             const int f = STEP_F[s], cb = STEP_COL_BEGIN[s];
             for (int c = 0; c < CFG::MAX_F; c += 2) {
@@ -374,22 +377,28 @@ void backsub_retire(hls::stream<BsPair>& dx) {
                 }
             }
         }
-        CFG::retract_variable(RETIRE_VARS[i], delta);
+        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx);  // its words on to trial_cost
         FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
     }
 }
 
-// Back-substitution root first into DELTA, the state update X_TRIAL = X (+) DELTA beside it.
+// Back-substitution root first into DELTA, the state update X_TRIAL = X (+) DELTA beside it,
+// and beside that the cost at X_TRIAL (the kernel's trial_cost, fed the retired variables). at_x:
+// no solve, the cost at X (backsub_retire sends X's variables).
 template <class CFG>
-void back_substitute() {
+void back_substitute(bool at_x) {
 #pragma HLS DATAFLOW
     hls::stream<BsPair> dx;  // the solved steps' frontal solutions, a pair of words a word
 #pragma HLS STREAM variable=dx depth=CFG::MAX_F
-    FGC_PHASE("backsub");
-    backsub_slots<CFG>(dx);
-    backsub_retire<CFG>(dx);
+    hls::stream<TrialVar> tx;  // the retired variables' storage words, a variable a word
+#pragma HLS STREAM variable=tx depth=CFG::N_VARIABLES
+    FGC_PHASE(at_x ? "factor_cost" : "backsub");
+    backsub_slots<CFG>(dx, at_x);
+    backsub_retire<CFG>(dx, tx, at_x);
+    trial_cost(tx);
     FGC_OUTER_JOIN();
     FGC_DRAINED(&dx, 1);
+    FGC_DRAINED(&tx, 1);
 }
 
 #endif  // FGC_BACKSUB_DRIVER

@@ -32,7 +32,10 @@
 // span_total prices them), and the second, one pipelined loop whose iterations (a record each)
 // issue an II apart, an iteration after the i-th FGC_OUTER_RECEIVE no earlier than the end of
 // the first process's records up to its i-th FGC_OUTER_SEND; it ends its depth after its last
-// issue - as units/backsub.py's retire_region prices it.
+// issue - as units/backsub.py's retire_region prices it. A third process (FGC_OUTER_BRANCH
+// again: back_substitute's trial_cost) runs pipelined loops one after another, an iteration
+// after its k-th FGC_OUTER_ABSORB no earlier than the second's k-th iteration ends
+// (units/datapath.py's trial_end); the group ends when the last of the three does.
 //
 // The HGC beside the elimination (FGC_BESIDE_PRODUCER, FGC_BESIDE_CONSUMER, FGC_BESIDE_END:
 // accel.cpp.jinja's linearize_solve, a producer writing a Gram stream beside the elimination
@@ -294,19 +297,21 @@ inline long outer_total(std::size_t from, std::size_t to) {
     const State& s = state();
     long sum = 0;
     std::size_t at = from;
-    std::vector<std::size_t> branches, sends, receives;
+    std::vector<std::size_t> branches, sends, receives, absorbs;
     bool open = false;
     auto close_group = [&](std::size_t end) {
         const std::vector<Record>& r = s.records;
         const std::size_t a0 = branches[0], b0 = branches.size() > 1 ? branches[1] : end;
+        const std::size_t c0 = branches.size() > 2 ? branches[2] : end;
         const long first = span_total(a0, b0);
+        std::vector<long> ends;  // per iteration of the second process: when it ends
         // the second process: one pipelined loop, a record (trip 1) an iteration; each issues
         // its II after the one before, and one after FGC_OUTER_RECEIVE i no earlier than the
         // end of the first process's records up to its i-th FGC_OUTER_SEND
         long issue = 0, last = 0, gate = -1;
         bool any = false;
         std::size_t next = 0;
-        for (std::size_t q = b0; q < end; ++q) {
+        for (std::size_t q = b0; q < c0; ++q) {
             for (; next < receives.size() && receives[next] <= q; ++next)
                 gate = next < sends.size() ? span_total(a0, sends[next]) : first;
             if (r[q].trip <= 0) continue;
@@ -316,12 +321,32 @@ inline long outer_total(std::size_t from, std::size_t to) {
             issue = at;
             any = true;
             last = at + r[q].depth;
+            ends.push_back(last);
         }
+        // a third process (back_substitute's trial_cost): pipelined loops one after another
+        // (a record an iteration; a loop's first when the one before has drained), an
+        // iteration its II after the one before and, after FGC_OUTER_ABSORB's k-th mark, no
+        // earlier than the end of the second process's k-th iteration (the word it takes)
+        long free = 0, third = 0, issue3 = 0;
+        std::size_t taken = 0, absorbed = 0;
+        const std::string* loop = nullptr;
+        for (std::size_t q = c0; q < end; ++q) {
+            for (; taken < absorbs.size() && absorbs[taken] <= q; ++taken) ++absorbed;
+            if (r[q].trip <= 0) continue;
+            long at = loop && *loop == r[q].loop ? issue3 + r[q].ii : free;
+            if (absorbed > 0 && absorbed <= ends.size() && ends[absorbed - 1] > at)
+                at = ends[absorbed - 1];
+            loop = &r[q].loop;
+            issue3 = at;
+            free = at + r[q].depth;
+            third = free;
+        }
+        if (third > last) last = third;
         return first > last ? first : last;
     };
     for (const auto& m : s.marks) {
         const char w = m.second;
-        if (w != 'B' && w != 'S' && w != 'R' && w != 'J') continue;
+        if (w != 'B' && w != 'S' && w != 'R' && w != 'J' && w != 'A') continue;
         if (w == 'J' ? (m.first <= from || m.first > to) : (m.first < from || m.first >= to))
             continue;
         if (w == 'B') {
@@ -331,12 +356,15 @@ inline long outer_total(std::size_t from, std::size_t to) {
                 branches.clear();
                 sends.clear();
                 receives.clear();
+                absorbs.clear();
             }
             branches.push_back(m.first);
         } else if (w == 'S' && open) {
             sends.push_back(m.first);
         } else if (w == 'R' && open) {
             receives.push_back(m.first);
+        } else if (w == 'A' && open) {
+            absorbs.push_back(m.first);
         } else if (w == 'J' && open) {
             sum += close_group(m.first);
             open = false;
@@ -479,6 +507,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_SEND() ::fgc_cycles::mark('S')
 #define FGC_OUTER_RECEIVE() ::fgc_cycles::mark('R')
 #define FGC_OUTER_JOIN() ::fgc_cycles::mark('J')
+#define FGC_OUTER_ABSORB() ::fgc_cycles::mark('A')
 #define FGC_PHASE(name) ::fgc_cycles::phase(name)
 #define FGC_EVENT(name) ::fgc_cycles::event(name)
 #define FGC_BESIDE_PRODUCER() ::fgc_cycles::beside('P')
@@ -503,6 +532,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_SEND() ((void)0)
 #define FGC_OUTER_RECEIVE() ((void)0)
 #define FGC_OUTER_JOIN() ((void)0)
+#define FGC_OUTER_ABSORB() ((void)0)
 #define FGC_PHASE(name) ((void)0)
 #define FGC_EVENT(name) ((void)0)
 #define FGC_BESIDE_PRODUCER() ((void)0)

@@ -4,9 +4,10 @@
 // completely partitioned, folded in a tree; cycles to FGC_CYCLES as the plan prices them
 // (fgc_backends/hls/plan.py, lm_loops).
 //
-//   T    lm_x_norm<CFG>(x)                          |x|, at the top of try_steps
+//   void lm_iterate<CFG>(g, x, out)                 out = {the gradient's largest |entry|, |x|}:
+//                                                   once per linearisation (fgc_lm.h's
+//                                                   gradient_max; |x| kept for its x_norm)
 //   bool lm_step_test<CFG>(solved, mu, delta, g, out) out = {|delta|^2, 0.5 delta^T (g + mu delta)}
-//   T    lm_gradient_max<CFG>(g)                    the gradient's largest |entry|
 //   void lm_accept<CFG>(x, x_trial)                 x = x_trial
 //   void lm_top<CFG>(x_in, data, x_out, x, data_buf, errors, info)
 //                                                   the batch top's body: x and the data in,
@@ -24,27 +25,65 @@
 
 namespace fgc_units {
 
+// A reduction two words a cycle (a memory's two ports): lane h of a pair takes word e + h into
+// its partial e / 2 % P (P >= the recurrence's latency: II 1 once a lane has P terms), the 2P
+// partials then folded in a tree. II and depth as dot_ii / dot_depth (fgc_cycles.h) on a lane's
+// trip, the fold over 2k sums (k = min(trip, P)); `lead`: what comes ahead of the recurrence.
+inline int pair_ii(int words, int partials, int lat) {
+    return dot_ii(ceil_div(words, 2), partials, lat);
+}
+inline int larger(int a, int b) { return a > b ? a : b; }
+inline int pair_depth(int words, int partials, int lat, int lead) {
+    const int trip = ceil_div(words, 2);
+    const int k = trip < partials ? (trip < 1 ? 1 : trip) : partials;
+    return lead + lat * (1 + ceil_log2(2 * k));
+}
+
 template <class CFG>
-typename CFG::T lm_x_norm(const typename CFG::T x[CFG::N_X]) {
+void lm_iterate(const typename CFG::T g[CFG::N_TANGENT], const typename CFG::T x[CFG::N_X],
+                typename CFG::T out[2]) {
 #pragma HLS INLINE
     typedef typename CFG::T T;
-    // |x|^2: word i into partial sum i % PARTIALS (a word a cycle: II 1), folded in a tree
-    T xp[CFG::PARTIALS];
+    // the gradient's largest |entry| and |x|^2 in one loop, two words of each a cycle: entry i
+    // into partial maximum (i / 2) % PARTIALS of lane i % 2 (as many as the sums: one distance
+    // for both, PARTIALS >= MAXIMA), x_i^2 into partial sum (i / 2) % PARTIALS of lane i % 2;
+    // folded in trees
+    T gp[2 * CFG::PARTIALS], xp[2 * CFG::PARTIALS];  // (PARTIALS >= MAXIMA maxima: one distance)
+#pragma HLS ARRAY_PARTITION variable=gp complete
 #pragma HLS ARRAY_PARTITION variable=xp complete
-    for (int p = 0; p < CFG::PARTIALS; ++p) {
+    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
+#pragma HLS UNROLL
+        gp[p] = T(0);
+    }
+    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
 #pragma HLS UNROLL
         xp[p] = T(0);
     }
-    for (int i = 0; i < CFG::N_X; ++i) {
+    const int N_LONGER = CFG::N_X > CFG::N_TANGENT ? CFG::N_X : CFG::N_TANGENT;
+    for (int e = 0; e < N_LONGER; e += 2) {
 #pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=gp inter true distance=CFG::PARTIALS
 #pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS
-        xp[i % CFG::PARTIALS] += x[i] * x[i];
+        for (int h = 0; h < 2; ++h) {
+#pragma HLS UNROLL
+            const int i = e + h;
+            const int gk = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
+            const int xk = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
+            if (i < CFG::N_TANGENT) {
+                const T a = CFG::magnitude(g[i]);
+                gp[gk] = a > gp[gk] ? a : gp[gk];
+            }
+            if (i < CFG::N_X) xp[xk] += x[i] * x[i];
+        }
     }
-    const T x_norm = CFG::root(fold_partials<T, CFG::PARTIALS>(xp));
+    out[0] = fold_maxima<T, 2 * CFG::PARTIALS>(gp);
+    out[1] = CFG::root(fold_partials<T, 2 * CFG::PARTIALS>(xp));
     FGC_PHASE("lm_iteration");
-    FGC_CYCLES("iterate", 0, "x_norm", CFG::N_X, dot_ii(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT),
-               dot_depth(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT));
-    return x_norm;
+    FGC_CYCLES("iterate", 0, "gradient_x_norm", ceil_div(N_LONGER, 2),
+               larger(pair_ii(CFG::N_TANGENT, CFG::PARTIALS, CFG::CMP_LAT),
+                      pair_ii(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT)),
+               larger(pair_depth(CFG::N_TANGENT, CFG::PARTIALS, CFG::CMP_LAT, CFG::ABS_LAT),
+                      pair_depth(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT)));
 }
 
 template <class CFG>
@@ -53,66 +92,59 @@ bool lm_step_test(bool solved, typename CFG::T mu, const typename CFG::T delta[C
 #pragma HLS INLINE
     typedef typename CFG::T T;
     bool ok = solved;
-    // |delta|^2 and delta^T (g + mu delta), entry i into partial sums i % PARTIALS of each
-    // (II 1), folded in a tree
-    T dp[CFG::PARTIALS], pp[CFG::PARTIALS];
+    // |delta|^2 and delta^T g, two entries a cycle: entry i into partial sums
+    // (i / 2) % PARTIALS of lane i % 2 of each (II 1), folded in trees; then delta^T (g + mu
+    // delta) = delta^T g + mu |delta|^2 (two products a word, not three: mu delta, g + mu delta
+    // and their product with delta)
+    T dp[2 * CFG::PARTIALS], pp[2 * CFG::PARTIALS];
 #pragma HLS ARRAY_PARTITION variable=dp complete
 #pragma HLS ARRAY_PARTITION variable=pp complete
-    for (int p = 0; p < CFG::PARTIALS; ++p) {
+    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
 #pragma HLS UNROLL
         dp[p] = T(0);
         pp[p] = T(0);
     }
-    for (int i = 0; i < CFG::N_TANGENT; ++i) {
+    for (int e = 0; e < CFG::N_TANGENT; e += 2) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=dp inter true distance=CFG::PARTIALS
 #pragma HLS DEPENDENCE variable=pp inter true distance=CFG::PARTIALS
-        const T d = delta[i];
-        ok = ok && CFG::finite(d);
-        dp[i % CFG::PARTIALS] += d * d;
-        pp[i % CFG::PARTIALS] += d * (g[i] + mu * d);
+        for (int h = 0; h < 2; ++h) {
+#pragma HLS UNROLL
+            const int i = e + h;
+            const int k = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
+            if (i < CFG::N_TANGENT) {
+                const T d = delta[i];
+                ok = ok && CFG::finite(d);
+                dp[k] += d * d;
+                pp[k] += d * g[i];
+            }
+        }
     }
-    out[0] = fold_partials<T, CFG::PARTIALS>(dp);
-    out[1] = T(0.5) * fold_partials<T, CFG::PARTIALS>(pp);
+    const T d2 = fold_partials<T, 2 * CFG::PARTIALS>(dp);
+    out[0] = d2;
+    out[1] = T(0.5) * (fold_partials<T, 2 * CFG::PARTIALS>(pp) + mu * d2);
     FGC_PHASE("lm_control");
-    FGC_CYCLES("decide", 0, "step_test", CFG::N_TANGENT,
-               dot_ii(CFG::N_TANGENT, CFG::PARTIALS, CFG::ADD_LAT),
-               CFG::MUL_LAT + CFG::ADD_LAT
-                   + dot_depth(CFG::N_TANGENT, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT));
+    FGC_CYCLES("decide", 0, "step_test", ceil_div(CFG::N_TANGENT, 2),
+               pair_ii(CFG::N_TANGENT, CFG::PARTIALS, CFG::ADD_LAT),
+               pair_depth(CFG::N_TANGENT, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT)
+                   + CFG::MUL_LAT + CFG::ADD_LAT);  // the fold, then + mu |delta|^2
     FGC_CYCLES("decide", 0, "decision", 1, CFG::DECISION_II, CFG::DECISION_DEPTH);
     return ok;
 }
 
 template <class CFG>
-typename CFG::T lm_gradient_max(const typename CFG::T g[CFG::N_TANGENT]) {
-    typedef typename CFG::T T;
-    // entry i into partial maximum i % MAXIMA (II 1), folded in a tree of compares
-    T gp[CFG::MAXIMA];
-#pragma HLS ARRAY_PARTITION variable=gp complete
-    for (int p = 0; p < CFG::MAXIMA; ++p) {
-#pragma HLS UNROLL
-        gp[p] = T(0);
-    }
-    for (int i = 0; i < CFG::N_TANGENT; ++i) {
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=gp inter true distance=CFG::MAXIMA
-        const T a = CFG::magnitude(g[i]);
-        gp[i % CFG::MAXIMA] = a > gp[i % CFG::MAXIMA] ? a : gp[i % CFG::MAXIMA];
-    }
-    const T g_max = fold_maxima<T, CFG::MAXIMA>(gp);
-    FGC_PHASE("lm_iteration");
-    FGC_CYCLES("iterate", 0, "gradient_max", CFG::N_TANGENT,
-               dot_ii(CFG::N_TANGENT, CFG::MAXIMA, CFG::CMP_LAT),
-               dot_depth(CFG::N_TANGENT, CFG::MAXIMA, CFG::CMP_LAT, CFG::ABS_LAT));
-    return g_max;
-}
-
-template <class CFG>
 void lm_accept(typename CFG::T x[CFG::N_X], const typename CFG::T x_trial[CFG::N_X]) {
-    for (int i = 0; i < CFG::N_X; ++i) x[i] = x_trial[i];
+    // two words a cycle (the memories' two ports)
+    for (int e = 0; e < CFG::N_X; e += 2) {
+#pragma HLS PIPELINE II=1
+        for (int h = 0; h < 2; ++h) {
+#pragma HLS UNROLL
+            if (e + h < CFG::N_X) x[e + h] = x_trial[e + h];
+        }
+    }
     FGC_EVENT("accept");
     FGC_PHASE("lm_accept");
-    FGC_CYCLES("accept", 0, "accept", CFG::N_X, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    FGC_CYCLES("accept", 0, "accept", ceil_div(CFG::N_X, 2), CFG::MOVE_II, CFG::MOVE_DEPTH);
 }
 
 template <class CFG>

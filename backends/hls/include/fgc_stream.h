@@ -28,7 +28,7 @@
 // One RTL instance per kernel function: every call site of a function not inlined is its own
 // copy, so the functions that call a kernel function again after LM hold LM's body
 // (lm_solve: INLINE, fgc_lm::optimize_inline) and an ALLOCATION function ... limit=1 for
-// linearize_all, eliminate_all, total_cost (stream_call, batch_kernel_solve); kept_task holds
+// linearize_all, eliminate_all, back_substitute_at (stream_call, batch_kernel_solve); kept_task holds
 // reexpress and kept_walk (INLINE) and one keyframe_local, keyframe_retract and kept_matvec.
 // What stays a copy (the marginal's QR step on its own unit set 0 beside the kept net,
 // write_tau's two call sites, the kept net's datapaths) is priced by the plan
@@ -519,7 +519,8 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     // marginal's linearisation at the optimum run one after the other: one RTL instance of each
     // kernel function for all their call sites (the hooks between are INLINE)
 #pragma HLS ALLOCATION function instances=linearize_all limit=1
-#pragma HLS ALLOCATION function instances=total_cost limit=1
+#pragma HLS ALLOCATION function instances=eliminate_all limit=1
+#pragma HLS ALLOCATION function instances=back_substitute_at limit=1
     FGC_EVENT("call");
     if (op == 0) {  // reset: the whole window in (the slots' values, every factor's words)
         FGC_PHASE("setup");
@@ -671,7 +672,7 @@ void batch_kernel_solve(int j, int tau_slot, T x_io[STREAM_SLOTS * STREAM_KF_X],
     // each kernel function for all their call sites (the hooks between are INLINE)
 #pragma HLS ALLOCATION function instances=linearize_all limit=1
 #pragma HLS ALLOCATION function instances=eliminate_all limit=1
-#pragma HLS ALLOCATION function instances=total_cost limit=1
+#pragma HLS ALLOCATION function instances=back_substitute_at limit=1
     FGC_PHASE("batch_in");
     for (int e = 0; e < (j + 1) * STREAM_KF_X; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_X

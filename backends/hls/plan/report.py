@@ -76,9 +76,10 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
     then back-substitution's (fgc_backsub.h's ``backsub_lane<p>`` regions: lane p's
     ``backsub_set<p>`` beside the other lane's ``backsub_load``, :func:`backsub_units` lanes;
     and back_substitute's region: the slot process beside the state update it feeds,
-    ``backsub_retire``). Streams are the plan's stream channels; the back-substitution lanes
-    have none (a solve reads its lane's buffers, the load fills the other lane's: nothing
-    passes between the two processes of a region); back_substitute has one (``backsub_dx``)."""
+    ``backsub_retire``, and the cost pass it feeds, ``trial_cost``). Streams are the plan's
+    stream channels; the back-substitution lanes have none (a solve reads its lane's buffers,
+    the load fills the other lane's: nothing passes between the two processes of a region);
+    back_substitute has two (``backsub_dx``, ``trial_tx``)."""
     if plan.linear == "qr" and plan.options.qr_unit == "stream":  # fgc_qr_stream.h's qrs_pass
         procs = tuple(p for s in range(unit_sets(plan)) for p in (
             f"qr{s}_source", *(f"qr{s}_{k}{t}" for t in range(plan.options.units)
@@ -106,6 +107,8 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
     procs += ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
     if any(ch.name == "backsub_dx" for ch in plan.channels):  # the state update it feeds
         procs += ("backsub_slots", "backsub_retire")
+    if any(ch.name == "trial_tx" for ch in plan.channels):  # the cost pass beside them
+        procs += ("trial_cost",)
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
 
 

@@ -75,10 +75,10 @@ from fgc_backends.hls.plan import (
 from fgc_backends.hls.plan.stream import Term, UpdatePrice
 from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops, retire_region
 from fgc_backends.hls.units.cholesky import elimination_phases, hgc_loops, hgc_phases
-from fgc_backends.hls.units.datapath import gradient_loops, small_blocks
+from fgc_backends.hls.units.datapath import gradient_loops, small_blocks, trial_end, trial_loops
 from fgc_backends.hls.units.lm_control import lm_control_phases, rounding_noise_loops, setup_phase
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
-from fgc_backends.hls.units.state_update import retire_timing, retract_loops
+from fgc_backends.hls.units.state_update import fed_by_backsub, retire_timing, retract_loops
 
 NOT_EMITTED = ("a Cholesky design's on-chip incremental state is not emitted in C++ (the "
                "on-chip design, fgc_backends.hls.window, keeps the QR unit's conditionals): this "
@@ -130,6 +130,8 @@ class UpdateModel:
 
     # -- what the batch plan already prices, per unit ------------------------------------------
     def _read_plan(self) -> None:
+        from fgc_backends.cfamily.blocks import block_contexts
+        self._blocks = block_contexts(self.program, vector=False)  # what an instance gathers
         self.factor_loop = {}  # (block, mode) -> the plan's instance loop (ii, depth)
         small = small_blocks(self.program)  # their shared datapath's one loop
         for mode in ("jacobian", "cost"):  # Cholesky: the Jacobian pass in the hgc regions
@@ -239,13 +241,14 @@ class UpdateModel:
         phases = [jacobian]
         if self.qr:
             phases.append(Phase("gradient", False, tuple(gradient_loops(view, self.timing))))
-            phases += self._linear_phases(first, last, self.damping)
+            phases += self._linear_phases(first, last, self.damping, inst)
         else:  # the Jacobian pass runs alongside the HGC, a region per block type (as emitted)
             phases = hgc_phases(view, self.les_timing, self.options.hgc_lanes,
                                 jacobian.processes, self.timing)
-            phases += [ph for ph in self._linear_phases(first, last, self.damping)
+            phases += [ph for ph in self._linear_phases(first, last, self.damping, inst)
                        if ph.name != "hgc"]
-        phases.append(self._factor_phase("cost", inst))
+        if not fed_by_backsub(self.program, self.options):  # else beside back-substitution
+            phases.append(self._factor_phase("cost", inst))
         phases += self._lm_phases(view.variables)
         return tuple(phases)
 
@@ -461,7 +464,7 @@ class UpdateModel:
                 "STEP_CHILDREN": [c for x in children for c in x],
                 "FACTOR_A_OFF": _offsets(a_words), "FACTOR_COLMAP_BEGIN": _offsets(d)}
 
-    def _linear_phases(self, first, last, damping) -> list[Phase]:
+    def _linear_phases(self, first, last, damping, instances=None) -> list[Phase]:
         """The window's linear solver as the plan's phases, one step per cluster, oldest first
         (the simulator's order; the serial schedule's levels): QR: per step its stack (√μ
         first, when damping), its ``qr_step`` and its commit; Cholesky: the HGC (``hgc_loops``
@@ -513,13 +516,42 @@ class UpdateModel:
         ii, depth = retire_timing([v for v in self.program.variables if v.key in keys],
                                   self.plan.ops, max(self.cdim[first + s] for s in steps),
                                   self.plan.options.state_allocation)
-        region = retire_region(slots, list(range(len(slots))), counts, ii, depth)
+        var_end: list[int] = []
+        region = retire_region(slots, list(range(len(slots))), counts, ii, depth, var_end)
         a = sum(lp.cycles for loops in slots for lp in loops)
+        # with ``instances``: the cost at X_TRIAL beside them (back_substitute's trial_cost),
+        # the window's instances fed its variables in the order they are retired
+        cost = region
+        if instances is not None and fed_by_backsub(self.program, self.options):
+            order = [k for s in reversed(steps) for k in self.clusters[first + s]]
+            cost = max(region, trial_end(self._trial_loops(order, instances), var_end))
         phases.append(Phase("backsub", False, (
             Process("backsub_slots", unit, tuple(lp for loops in slots for lp in loops)),
             Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - a),)
-                    if region > a else ())), linear=True))
+                    if region > a else ()),
+            Process("trial_cost", "factor_cost", (Loop("cost_tail", 1, 1, cost - region),)
+                    if cost > region else ())), linear=True))
         return phases
+
+    def _trial_loops(self, keys, instances):
+        """trial_cost's loops (units.datapath's trial_loops) for the window's ``instances``,
+        its variables retired in the order of ``keys``: each datapath's cost-mode loop as the
+        plan's."""
+        p = self.program
+        index = {v.key: i for i, v in enumerate(p.variables)}
+        small = small_blocks(p)
+        costs, accesses = {}, {}
+        for b in range(len(p.blocks)):
+            if b in small[1:]:
+                continue
+            members = small if b in small else (b,)
+            key = "small" if b in small else b
+            loop = self.factor_loop[b, "cost"]
+            costs[key] = ([i for i in instances if p.factors[i].block in members], loop.ii,
+                          loop.depth)
+            accesses[key] = sum(self._blocks[m].n_x_in for m in members)
+        return trial_loops(p, [index[k] for k in keys], costs,
+                           max(v.storage_dim for v in p.variables), accesses)
 
     def step_pattern(self, first, last, c, damping) -> np.ndarray:
         """Structural rows × (frontal + separator) non-zeros of the window's step for cluster c:

@@ -165,14 +165,15 @@ def backsub_copies(tables: dict, s: int, timing: dict, ops: OperatorTable
 
 
 def retire_region(slots: list[list[Loop]], sent: list[int], counts: list[int], ii: int,
-                  depth: int) -> int:
+                  depth: int, ends: list[int] | None = None) -> int:
     """back_substitute's DATAFLOW region: the slot process (``slots``: each slot's loops, in
     order) beside ``backsub_retire``, one pipelined loop (``ii``, ``depth``) over the variables
     of the solved steps (``counts[i]`` of the i-th step the slots send; ``sent[i]``: the slot
     whose solution_out sends it): an iteration issues ``ii`` after the one before, a step's
     first no earlier than the end of the slot that sent it; the region ends when both
-    processes have (fgc_cycles.h's outer group)."""
-    ends, clock = [], 0
+    processes have (fgc_cycles.h's outer group). ``ends``, if given, receives when each
+    iteration ends (its variable's words sent on to trial_cost)."""
+    out, ends, clock = ends, [], 0
     for loops in slots:
         clock += sum(lp.cycles for lp in loops)
         ends.append(clock)
@@ -182,6 +183,8 @@ def retire_region(slots: list[list[Loop]], sent: list[int], counts: list[int], i
             at = 0 if issue is None else issue + ii
             issue = max(at, ends[slot]) if j == 0 else at
             last = issue + depth
+            if out is not None:
+                out.append(last)
     return max(clock, last)
 
 
@@ -204,15 +207,26 @@ def backsub_phases(ctx, unit: str) -> None:
             counts.append(len(ctx.program.schedule.steps[solve].frontals))
     ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
                               ctx.opts.state_allocation)
-    region = retire_region(slots, sent, counts, ii, depth)
+    var_end: list[int] = []
+    region = retire_region(slots, sent, counts, ii, depth, var_end)
     a = sum(lp.cycles for loops in slots for lp in loops)
     # the solved words to the state update, a pair a stream word (back_substitute's dx)
     ctx.channels.append(Channel("backsub_dx", "stream", ctx.sizes["MAX_F"], 2 * ops.word_bits,
                                 "backsub_slots", "backsub_retire"))
+    # the cost at X_TRIAL beside them (units.datapath's trial_cost), fed the retired
+    # variables' storage words, a variable a stream word (as deep as the state: the retire
+    # never waits for it)
+    from fgc_backends.hls.units.datapath import trial_end
+    cost = max(region, trial_end(ctx.shared["trial_loops"], var_end))
+    words = max(v.storage_dim for v in ctx.program.variables)
+    ctx.channels.append(Channel("trial_tx", "stream", len(ctx.program.variables),
+                                words * ctx.ops.word_bits, "backsub_retire", "trial_cost"))
     ctx.add_phase("solve", Phase("backsub", False, (
         Process("backsub_slots", unit, tuple(lp for loops in slots for lp in loops)),
         Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - a),)
-                if region > a else ())), linear=True))
+                if region > a else ()),
+        Process("trial_cost", "factor_cost", (Loop("cost_tail", 1, 1, cost - region),)
+                if cost > region else ())), linear=True))
 
 
 def retire_solved(tables: dict) -> list[int]:

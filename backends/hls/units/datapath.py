@@ -6,6 +6,7 @@ stacking. Kernel code of accel.cpp.jinja (no static header)."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, replace
 
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import TILE
@@ -322,7 +323,28 @@ def build(ctx) -> None:
         ctx.add_phase("linearize", Phase("whiten_stack", False, (Process("whiten", "whiten", (
             Loop("macs", math.ceil(whiten_macs / opts.units), 1,
                  ops.mul.latency + ops.add.latency),)),), linear=True))
-    ctx.add_phase("cost", Phase("factor_cost", False, tuple(cost)))
+    ctx.shared["cost_loops"] = cost_loops(cost)
+    from fgc_backends.hls.units.state_update import fed_by_backsub, retire_timing
+    if not fed_by_backsub(program, opts):  # what-if whole-matrix Cholesky: a pass of its own
+        ctx.add_phase("cost", Phase("factor_cost", False, tuple(cost)))
+        return
+    # the cost at X_TRIAL: back_substitute's trial_cost process (units.backsub prices the
+    # region); the cost at X, once per call: the same region with no solve, backsub_retire
+    # sending X's variables a retire II apart
+    loops = trial_state(ctx)
+    ctx.shared["trial_loops"] = loops
+    ii, depth = retire_timing(program.variables, ops, ctx.sizes["MAX_F"],
+                              opts.state_allocation)
+    var_end = [j * ii + depth for j in range(len(program.variables))]
+    end = max(var_end[-1:] + [trial_end(loops, var_end)])
+    # (each datapath's cost-mode loop kept as a process of no cycles: trip 0, its II and
+    # depth what trial_cost's loop for it starts from, cost_loops)
+    idle = tuple(Process(p.name, p.unit, (replace(p.loops[0], trip=0),)) for p in cost)
+    ctx.add_phase("cost", Phase("factor_cost", False, (Process("trial_cost", "factor_cost", (
+        Loop("cost_at_x", 1, 1, end),)),) + idle, per="call"))
+    # the process's copy of the retired state, and the stream of retired variables
+    ctx.memories.append(Memory("trial_state", sum(v.storage_dim for v in program.variables),
+                               ops.word_bits, 1))
 
 
 def _small_datapath(ctx, small: tuple[int, ...], jac: list, cost: list) -> None:
@@ -365,3 +387,120 @@ SPEC = UnitSpec(
     constants=(("ALLOCATION", "per block type: operator limits (PlanOptions.allocation)"),),
     printed_by="accel.cpp.jinja: evaluate_<b>, cost_of_<b>, reduce_<b>")
 
+
+
+# ---- the cost pass beside back-substitution (issue 33): back_substitute's third process,
+# trial_cost (accel.cpp.jinja), downstream of backsub_retire's stream of retired variables
+
+@dataclass(frozen=True)
+class TrialLoop:
+    """One loop of trial_cost: a block type's cost datapath (``key`` its index, or "small":
+    the shared small datapath) over ``entries`` in the order they can run, each (factor
+    instance, or -1 for an entry that only takes variables; the variables it takes from the
+    stream first, in back-substitution's order), at most ``k`` taken an entry; ``ii`` and
+    ``depth`` of the emitted loop."""
+    key: int | str
+    entries: tuple[tuple[int, tuple[int, ...]], ...]
+    k: int
+    ii: int
+    depth: int
+
+    @property
+    def name(self) -> str:
+        return f"cost_{self.key}"
+
+
+def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict
+                ) -> tuple[TrialLoop, ...]:
+    """trial_cost's loops, in the order the process runs them: per cost datapath (``costs``:
+    key -> (instances, cost-mode II, depth), a block type's own or the small types' shared
+    one; ``accesses[key]``: the x words an instance gathers) its instances in the order their
+    last variable is retired (back-substitution's ``retire_vars``); the datapath with the most
+    work (instances x II) first, so the later loops find their variables already taken.
+    Before an instance, the entry takes from the stream every variable retired up to its
+    last one not yet taken, at most its datapath's widest instance's variable count an entry
+    (more: entries of their own before it, no instance); what no instance needed is taken by
+    entries at the end of the last loop. Each entry's II: the datapath's cost-mode II, and the
+    process's copy of the state (one memory, :data:`PORTS` words a cycle) written k ×
+    ``max_storage`` words and read the instance's x words an entry; depth: the datapath's,
+    plus the taken words' write and read (2) where it takes any."""
+    pos = {v: i for i, v in enumerate(retire_vars)}
+    index = {v.key: i for i, v in enumerate(program.variables)}
+    order = sorted(costs, key=lambda c: (-len(costs[c][0]) * costs[c][1],
+                                         -1 if c == "small" else c))
+    taken = 0
+    plans = []
+    for c in order:
+        instances, _, _ = costs[c]
+        cap = max([1] + [len(program.factors[f].keys) for f in instances])
+        ready = sorted((max(pos[index[k]] for k in program.factors[f].keys), f)
+                       for f in instances)
+        entries = []
+        for last, f in ready:
+            need = list(retire_vars[taken:last + 1])
+            taken = max(taken, last + 1)
+            while len(need) > cap:
+                entries.append((-1, tuple(need[:cap])))
+                need = need[cap:]
+            entries.append((f, tuple(need)))
+        plans.append([c, entries, cap])
+    rest = list(retire_vars[taken:])
+    while rest and plans:
+        cap = plans[-1][2]
+        plans[-1][1].append((-1, tuple(rest[:cap])))
+        rest = rest[cap:]
+    out = []
+    for c, entries, _ in plans:
+        k = max([0] + [len(v) for _, v in entries])
+        _, ii, depth = costs[c]
+        ii = max(ii, loop_ii([(k * max_storage + accesses[c], 1)]))
+        out.append(TrialLoop(c, tuple(entries), k, ii, depth + (2 if k else 0)))
+    return tuple(out)
+
+
+def trial_end(loops: tuple[TrialLoop, ...], var_end: list[int]) -> int:
+    """When trial_cost ends: its loops one after another, an entry its loop's II after the
+    one before (a loop's first when the loop before has drained), and no earlier than the
+    end of the retire iteration that sends the last variable it takes (``var_end``: per
+    retired variable, in order, when its words are in the stream); it ends its depth after
+    its last entry (fgc_cycles.h's outer group, its third process)."""
+    free, taken = 0, 0
+    for lp in loops:
+        issue = None
+        for _, taking in lp.entries:
+            at = free if issue is None else issue + lp.ii
+            taken += len(taking)
+            if taking:
+                at = max(at, var_end[taken - 1])
+            issue = at
+            free = at + lp.depth
+    return free
+
+
+def cost_loops(processes) -> dict:
+    """The cost-mode instance loop of each datapath (key: its block type, or "small"), from
+    its ``factor_<b>_cost`` / ``factor_small_cost`` process."""
+    return {("small" if p.name.startswith("factor_small") else int(p.name.split("_")[1])):
+            p.loops[0] for p in processes}
+
+
+def trial_plan(program, blocks, loops: dict, tables: dict) -> tuple[TrialLoop, ...]:
+    """trial_cost's loops for ``program`` (``blocks``: its block contexts; ``loops``: each
+    datapath's cost-mode loop, :func:`cost_loops`; ``tables``: the emitted tables)."""
+    from fgc_backends.hls.units.backsub import retire_solved
+    from fgc_backends.hls.units.state_update import retire_order
+    variables, _ = retire_order(program, retire_solved(tables))
+    costs, accesses = {}, {}
+    small = small_blocks(program)
+    for key, loop in loops.items():
+        members = small if key == "small" else (key,)
+        costs[key] = ([f for i in members for f in blocks[i].instances], loop.ii, loop.depth)
+        accesses[key] = sum(blocks[i].n_x_in for i in members)
+    return trial_loops(program, variables, costs,
+                       max(v.storage_dim for v in program.variables), accesses)
+
+
+def trial_state(ctx) -> tuple[TrialLoop, ...]:
+    """trial_cost's loops for the plan being built (``ctx``), from the cost-mode loops the
+    datapath build left in ``ctx.shared["cost_loops"]``."""
+    return trial_plan(ctx.program, ctx.blocks, ctx.shared["cost_loops"], ctx.tables)

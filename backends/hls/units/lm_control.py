@@ -7,33 +7,56 @@ kernel's ``LmConfig`` (constants and hooks); the top's copies and the rounding-n
 
 from __future__ import annotations
 
+import math
+
 from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.hls.plan.binding import BoundLoop, bound_unit
-from fgc_backends.hls.plan.loops import _block_shape, _ported, kernel_dot, kernel_loop
-from fgc_backends.hls.plan.model import Loop, Phase, Process
+from fgc_backends.hls.plan.loops import _block_shape, _ceil_log2, _ported, kernel_loop
+from fgc_backends.hls.plan.model import PORTS, Loop, Phase, Process
 from fgc_backends.hls.units.spec import UnitSpec
+
+
+def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
+             partials: int | None = None) -> tuple[int, int, int]:
+    """(trip, II, depth) of a reduction of ``words`` terms two a cycle (fgc_lm_units.h's
+    pair_ii / pair_depth: the memories' two ports): lane h of a pair into its own ``ii`` =
+    latency interleaved partials (the dot-product rule, :func:`kernel_dot`, on a lane's trip),
+    the 2k partials folded in a tree; ``kind`` the recurrence (``acc`` a sum: the multiply
+    ahead; ``max`` a running maximum: the read and |·| ahead), ``extra`` the latency the loop
+    adds around it (the step test's μ‖δ‖² after the folds); ``partials``: a lane's partials if not
+    the recurrence's latency (lm_iterate's maxima: as many as its sums)."""
+    ii, depth = timing[kind]
+    trip = -(-words // PORTS)
+    k = max(1, min(trip, ii if partials is None else partials))
+    return trip, math.ceil(ii / k), extra + (depth - ii) + ii * (1 + _ceil_log2(2 * k))
 
 
 def lm_control_phases(n_t: int, n_x: int, timing: dict) -> tuple[Phase, ...]:
     """LM control as emitted (optimize / try_steps) over ``n_t`` tangent and ``n_x`` storage
     words, in three phases by how often their loops run: ``lm_iteration`` once per
-    linearisation (the gradient's largest entry; |x|, at the top of try_steps), ``lm_control``
-    once per linear solve (the step test over δ, the scalar decision) and ``lm_accept`` once
-    per accepted step (x_trial copied into x). A plan iteration has one of each; an LM retry
-    adds a solve, not an iteration, and the last iteration of a run often accepts nothing. The
-    gradient maximum is partial maxima and the sums (|x|², ‖δ‖² and δᵀ(g + μδ)) interleaved
-    partial sums, all PIPELINEd at II 1 and priced by the dot-product rule
-    (:func:`kernel_dot`); the step test's terms pass a multiply and an add (g + μδ) before
-    their product."""
-    lead = timing["acc"][1]  # μδ, then g + μδ
+    linearisation (the gradient's largest entry and |x| in one loop, ``lm_iterate``: |x| is
+    kept for try_steps' x_norm, X unchanged in between), ``lm_control`` once per linear solve
+    (the step test over δ, the scalar decision) and ``lm_accept`` once per accepted step
+    (x_trial copied into x). A plan iteration has one of each; an LM retry adds a solve, not an
+    iteration, and the last iteration of a run often accepts nothing. Every loop takes two
+    words a cycle of each memory it reads (:data:`PORTS`): the gradient maximum into partial
+    maxima, the sums (|x|², ‖δ‖² and δᵀ(g + μδ)) into interleaved partial sums, two lanes
+    each, PIPELINEd at II 1 (:func:`pair_dot`); the step test sums ‖δ‖² and δᵀg (two products
+    a word) and adds μ‖δ‖² to the latter after the folds (δᵀ(g + μδ)), a multiply and an add
+    more in its depth."""
+    tail = timing["acc"][1]  # after the folds: μ‖δ‖², then δᵀg + μ‖δ‖²
+    # (the maxima as many as the sums: lm_iterate's one DEPENDENCE distance, PARTIALS)
+    _, gii, gdepth = pair_dot(n_t, timing, kind="max", partials=timing["acc"][0])
+    _, xii, xdepth = pair_dot(n_x, timing)
+    trip = _ported(max(n_t, n_x))  # one loop over the longer of the two
+    step = pair_dot(n_t, timing, extra=tail)
     return (Phase("lm_iteration", False, (Process("iterate", "lm_control", (
-                kernel_dot("gradient_max", n_t, timing, kind="max"),
-                kernel_dot("x_norm", n_x, timing))),)),
+                Loop("gradient_x_norm", trip, max(gii, xii), max(gdepth, xdepth)),)),)),
             Phase("lm_control", False, (Process("decide", "lm_control", (
-                kernel_dot("step_test", n_t, timing, lead=lead),
+                Loop("step_test", *step),
                 kernel_loop("decision", 1, "decision", timing))),)),
             Phase("lm_accept", False, (Process("accept", "lm_control", (
-                kernel_loop("accept", n_x, "move", timing),)),)))
+                kernel_loop("accept", _ported(n_x), "move", timing),)),)))
 
 
 def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict) -> Phase:
@@ -73,22 +96,21 @@ def build(ctx) -> None:
     program, timing = ctx.program, ctx.timing
     n_x = sum(v.storage_dim for v in program.variables)
     n_t = sum(v.dim for v in program.variables)
-    # LM control (optimize / try_steps): the gradient's largest entry, |x|, the step test over
-    # δ (|δ|² and the predicted decrease), the scalar decision, the accepted x copied back
-    # (the step test at II 1 starts three multiplies and three adds a cycle: μδ, δ·δ,
-    # δ·(g + μδ); g + μδ and the two partial sums)
-    # its operators as Vitis binds them (plan.binding): each pipelined loop its own (|x|²: a
-    # multiply-add a cycle; the step test: three; the gradient maximum: a compare), the
-    # scalar decision sequential, one of each kind it uses in one module (fgc_lm.h's try_steps,
-    # the LmConfig wrappers and lm_step_test / lm_x_norm are INLINE into optimize, so their
+    # LM control (optimize / try_steps): the gradient's largest entry with |x|, the step test
+    # over δ (|δ|² and the predicted decrease), the scalar decision, the accepted x copied back,
+    # two words a cycle each (the step test at II 1 starts four multiplies and four adds a
+    # cycle: per word δ·δ and δ·g into their partial sums)
+    # its operators as Vitis binds them (plan.binding): each pipelined loop its own (lm_iterate:
+    # two multiply-adds and two compares a cycle; the step test: four), the scalar
+    # decision sequential, one of each kind it uses in one module (fgc_lm.h's try_steps, the
+    # LmConfig wrappers and lm_step_test / lm_iterate are INLINE into optimize, so their
     # sequential folds, half and step-size test share its operators; as separate modules each
     # bound its own: the second reader counts them apart); the rounding-noise pass per block
     # type (each noise_<b> calls rounding_noise<…>: its own module): a row every padded + 3
     # cycles through its padded products and moved's three adds, then the rows' terms (at II
     # 3·TILE: one multiplier and one adder), and noise_<b>'s running sum
-    loops = [BoundLoop("x_norm", (("add", 1), ("mul", 1)), 1),
-             BoundLoop("step_test", (("add", 3), ("mul", 3)), 1),
-             BoundLoop("gradient_max", (("compare", 1),), 1),
+    loops = [BoundLoop("gradient_x_norm", (("add", 2), ("mul", 2), ("compare", 2)), 1),
+             BoundLoop("step_test", (("add", 4), ("mul", 4)), 1),
              BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
     for i, b in enumerate(program.blocks):  # noise_<b>'s call: its own instance
         padded = _block_shape(b)[2]

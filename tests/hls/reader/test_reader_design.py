@@ -85,8 +85,8 @@ def test_an_emitted_design_read_back(chain_design):
     """Every pipelined loop the kernel prints is read (one per instantiation of a template),
     each Update unit is its own module (3 units x 2 unit sets; qr_step's two parity call sites
     of the reflection share one instance through its ALLOCATION function limit=1, as LM
-    control's two cost calls share one total_cost), and every
-    loop's II is read from its pragma."""
+    control's two calls of the solve, whose back-substitution region holds the cost pass, share
+    one solve), and every loop's II is read from its pragma."""
     files, top = emitted_files(chain_design)
     design = read_design(files, top, ADD_LATENCY)
     text = "\n".join(t for _, t in files)
@@ -95,10 +95,11 @@ def test_an_emitted_design_read_back(chain_design):
     modules = dict(design.modules)
     assert modules["qr_update"] == 3 * 2
     assert modules["qr_reflection"] == 2
-    # LM control's two cost calls (at X, at X_TRIAL) share one cost pass: fgc_lm.h's
-    # ALLOCATION over the INLINE hooks (was two, every cost datapath built twice)
-    assert modules["total_cost"] == 1
-    assert [n for name, n in modules.items() if name.startswith("cost_of_")] == [1, 1]
+    # LM control's two calls of the solve (the solve at μ with the cost at X_TRIAL beside its
+    # back-substitution; the cost at X, no elimination) share one: fgc_lm.h's ALLOCATION over
+    # the INLINE hooks (two would build the solver and every cost datapath twice)
+    assert modules["solve"] == 1 and modules["back_substitute"] == 1
+    assert modules["trial_cost"] == 1
     assert "LmConfig::cost_x" not in modules and "try_steps" not in modules
     assert all(r.ii >= 1 and r.ii_bound >= 1 for r in design.loops)
     assert design.dsp(DSP) > 0

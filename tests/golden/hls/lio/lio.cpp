@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   22 processes, 35 streams (n_u=4, 2 unit set(s))
+//   23 processes, 36 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -33,6 +33,7 @@
 //   process backsub_load0
 //   process backsub_slots
 //   process backsub_retire
+//   process trial_cost
 //   stream qr0_v0 depth=8: qr0_broadcast -> qr0_update0
 //   stream qr0_v1 depth=8: qr0_broadcast -> qr0_update1
 //   stream qr0_v2 depth=8: qr0_broadcast -> qr0_update2
@@ -68,6 +69,7 @@
 //   stream qr1_col3 depth=87: qr1_update3 -> qr1_evaluate
 //   stream qr1_row3 depth=2: qr1_update3 -> qr1_collect
 //   stream backsub_dx depth=30: backsub_slots -> backsub_retire
+//   stream trial_tx depth=24: backsub_retire -> trial_cost
 #include "lio.h"
 
 #include "hls_stream.h"
@@ -2549,22 +2551,6 @@ T noise_0(T noise) {
     return noise;
 }
 
-// block 0, cost mode: `total` plus the cost of its instances in order, one every II=48 cycles
-T cost_of_0(const T x[N_X], T total) {
-    for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=48
-        const int f = BLOCK0_INSTANCES[i];
-        T in[12], dat[18], half[1];
-        gather_0(x, f, in, dat);
-        factor_cost_0(in, dat, half);
-        T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
-        total += cost;
-    }
-    FGC_CYCLES("factor_0_cost", 0, "instances", 1, 48, 377);
-    return total;
-}
-
 // block 1: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_1(const T x[N_X], int f, T in[3], T dat[4]) {
     const int vb = FACTOR_VAR_BEGIN[f];
@@ -3029,23 +3015,6 @@ T noise_3(T noise) {
     return noise;
 }
 
-// block 3, cost mode: `total` plus the cost of its instances in order, one every II=106 cycles
-T cost_of_3(const T x[N_X], T total) {
-    for (int i = 0; i < 7; ++i) {
-#pragma HLS PIPELINE II=106
-        const int f = BLOCK3_INSTANCES[i];
-        T in[42], dat[211], half[2];
-        gather_3(x, f, in, dat);
-        factor_cost_3(in, dat, half);
-        T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
-        cost += half[1];  // no robust loss on this member (the Program's flag)
-        total += cost;
-    }
-    FGC_CYCLES("factor_3_cost", 0, "instances", 7, 106, 600);
-    return total;
-}
-
 // block 4: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_4(const T x[N_X], int f, T in[12], T dat[4]) {
     const int vb = FACTOR_VAR_BEGIN[f];
@@ -3202,16 +3171,6 @@ T cost_small_one(const T x[N_X], int b, int f) {
     return total;
 }
 
-// `total` plus the cost of every small block type's instances in order, one every II=11 cycles
-T cost_of_small(const T x[N_X], T total) {
-    for (int i = 0; i < 10; ++i) {
-#pragma HLS PIPELINE II=11
-        total += cost_small_one(x, SMALL_BLOCK[i], SMALL_FACTOR[i]);
-    }
-    FGC_CYCLES("factor_small_cost", 0, "instances", 10, 11, 22);
-    return total;
-}
-
 // Linearise every factor: the datapaths in Jacobian mode into AB, then the gradient.
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
@@ -3259,17 +3218,92 @@ T rounding_noise_all(const T x[N_X]) {
     return noise;
 }
 
-// The graph's cost (GTSAM's error) at x: every datapath in cost mode. One RTL instance: LM
-// control's two calls (the cost at X and at X_TRIAL) share it (fgc_lm.h's ALLOCATION).
-T total_cost(const T x[N_X]) {
-#pragma HLS INLINE off
-    FGC_EVENT("cost");
-    FGC_PHASE("factor_cost");
+// ---- the graph's cost (GTSAM's error), beside back-substitution (issue 33): trial_cost is the
+// third process of fgc_backsub.h's back_substitute region, fed by backsub_retire one variable's
+// storage words a stream word (X_TRIAL's as they are retired, or X's for the cost at X), into
+// its own copy `x`; a loop per datapath (the plan's order: the most work first), each entry
+// first taking the variables retired since (up to K, in back-substitution's order) and then
+// costing the instance whose last variable that was (TRIAL_F_<d>: the instance, -1 none), all
+// into one running total (entries in that order: the simulator's order was never the
+// kernel's). The datapaths' cost-mode functions have this one call site each.
+const int MAX_STORAGE = 12;  // the widest variable's storage words
+struct TrialVar { T word[MAX_STORAGE]; };  // a retired variable's storage words
+T TRIAL_COST = T(0);  // the cost of the variables back_substitute last sent
+const int TRIAL_F_3[7] = {  // per entry of cost loop 3: its instance (-1: none)
+    6, 5, 7, 4, 8, 3, 9,
+};
+const int TRIAL_X0_3[42] = {  // per entry, 6 a row: where each variable it takes goes in x
+    63, 75, 78, 84, 96, 99, 42, 54, 57, 0, 0, 0, 105, 117, 120, 0,
+    0, 0, 21, 33, 36, 0, 0, 0, 126, 138, 141, 0, 0, 0, 0, 12,
+    15, 0, 0, 0, 147, 159, 162, 0, 0, 0,
+};
+const int TRIAL_X1_3[42] = {  // and where it ends (x0 = x1: none)
+    75, 78, 84, 96, 99, 105, 54, 57, 63, 0, 0, 0, 117, 120, 126, 0,
+    0, 0, 33, 36, 42, 0, 0, 0, 138, 141, 147, 0, 0, 0, 12, 15,
+    21, 0, 0, 0, 159, 162, 168, 0, 0, 0,
+};
+const int TRIAL_F_small[10] = {  // per entry of cost loop small: its instance (-1: none)
+    13, 14, 12, 15, 11, 16, 10, 1, 2, 17,
+};
+const int TRIAL_B_small[10] = {  // per entry: its instance's block type (-1: none)
+    4, 4, 4, 4, 4, 4, 4, 1, 2, 4,
+};
+const int TRIAL_F_0[1] = {  // per entry of cost loop 0: its instance (-1: none)
+    0,
+};
+void trial_cost(hls::stream<TrialVar>& tx) {
+    FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
+    T x[N_X];  // the variables taken so far
     T total = T(0);
-    total = cost_of_0(x, total);
-    total = cost_of_small(x, total);
-    total = cost_of_3(x, total);
-    return total;
+    // block 3 (CombinedImuFactor+LidarOdometryFactor): 7 entries, one every II=106 cycles (the plan's)
+    for (int e = 0; e < 7; ++e) {
+#pragma HLS PIPELINE II=106
+        for (int j = 0; j < 6; ++j) {  // the variables retired since, in order
+            const int x0 = TRIAL_X0_3[e * 6 + j], x1 = TRIAL_X1_3[e * 6 + j];
+            if (x0 < x1) {
+                FGC_OUTER_ABSORB();  // csim cycle counting: no earlier than it was sent
+                const TrialVar t = tx.read();
+                for (int w = 0; w < MAX_STORAGE; ++w) {
+                    if (x0 + w < x1) x[x0 + w] = t.word[w];
+                }
+            }
+        }
+        const int f = TRIAL_F_3[e];
+        if (f >= 0) {
+        T in[42], dat[211], half[2];
+        gather_3(x, f, in, dat);
+        factor_cost_3(in, dat, half);
+        T cost = T(0);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
+        cost += half[1];  // no robust loss on this member (the Program's flag)
+            total += cost;
+        }
+        FGC_CYCLES("trial_cost", 0, "cost_3", 1, 106, 602);
+    }
+    // the small datapath (GPSFactor, PriorFactorImuBias, PriorFactorVector3): 10 entries, one every II=11 cycles (the plan's)
+    for (int e = 0; e < 10; ++e) {
+#pragma HLS PIPELINE II=11
+        const int f = TRIAL_F_small[e];
+        if (f >= 0) {
+            total += cost_small_one(x, TRIAL_B_small[e], f);
+        }
+        FGC_CYCLES("trial_cost", 0, "cost_small", 1, 11, 22);
+    }
+    // block 0 (PriorFactorPose3): 1 entries, one every II=48 cycles (the plan's)
+    for (int e = 0; e < 1; ++e) {
+#pragma HLS PIPELINE II=48
+        const int f = TRIAL_F_0[e];
+        if (f >= 0) {
+        T in[12], dat[18], half[1];
+        gather_0(x, f, in, dat);
+        factor_cost_0(in, dat, half);
+        T cost = T(0);
+        cost += half[0];  // no robust loss on this member (the Program's flag)
+            total += cost;
+        }
+        FGC_CYCLES("trial_cost", 0, "cost_0", 1, 48, 377);
+    }
+    TRIAL_COST = total;
 }
 
 // ---- state update: retraction x (+) delta, one datapath per variable type; the ALLOCATION
@@ -3363,26 +3397,43 @@ const int RETIRE_STEP[24] = {  // per entry of RETIRE_VARS: its step if it is th
     6, -1, -1, -1, -1, -1, 4, -1, -1, 5, -1, -1, 2, -1, -1, 3,
     -1, -1, 0, -1, -1, 1, -1, -1,
 };
-void retract_variable(int v, const L delta[N_TANGENT]) {
+// (at_x: no solve ran, X's words go to trial_cost for the cost at X). Its words go on to
+// trial_cost (back_substitute's third process) as one stream word.
+void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<TrialVar>& tx) {
+    TrialVar out;
+    for (int k = 0; k < MAX_STORAGE; ++k) out.word[k] = T(0);
     if (VAR_KIND[v] == 0) {
         T xv[12], dv[6], ov[12];
         for (int k = 0; k < 12; ++k) xv[k] = X[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 6; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
+        for (int k = 0; k < 6; ++k) dv[k] = at_x ? T(0) : T(delta[VAR_T_OFF[v] + k]);
         retract_0(xv, dv, ov);
-        for (int k = 0; k < 12; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
+        for (int k = 0; k < 12; ++k) {
+            const T o = at_x ? xv[k] : ov[k];
+            X_TRIAL[VAR_X_OFF[v] + k] = o;
+            out.word[k] = o;
+        }
     } else if (VAR_KIND[v] == 1) {
         T xv[3], dv[3], ov[3];
         for (int k = 0; k < 3; ++k) xv[k] = X[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 3; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
+        for (int k = 0; k < 3; ++k) dv[k] = at_x ? T(0) : T(delta[VAR_T_OFF[v] + k]);
         retract_1(xv, dv, ov);
-        for (int k = 0; k < 3; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
+        for (int k = 0; k < 3; ++k) {
+            const T o = at_x ? xv[k] : ov[k];
+            X_TRIAL[VAR_X_OFF[v] + k] = o;
+            out.word[k] = o;
+        }
     } else if (VAR_KIND[v] == 2) {
         T xv[6], dv[6], ov[6];
         for (int k = 0; k < 6; ++k) xv[k] = X[VAR_X_OFF[v] + k];
-        for (int k = 0; k < 6; ++k) dv[k] = T(delta[VAR_T_OFF[v] + k]);
+        for (int k = 0; k < 6; ++k) dv[k] = at_x ? T(0) : T(delta[VAR_T_OFF[v] + k]);
         retract_2(xv, dv, ov);
-        for (int k = 0; k < 6; ++k) X_TRIAL[VAR_X_OFF[v] + k] = ov[k];
+        for (int k = 0; k < 6; ++k) {
+            const T o = at_x ? xv[k] : ov[k];
+            X_TRIAL[VAR_X_OFF[v] + k] = o;
+            out.word[k] = o;
+        }
     }
+    tx.write(out);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -3418,7 +3469,10 @@ struct LesConfig {
     // back_substitute's state update (fgc_backsub.h's backsub_retire): a variable an iteration
     static const int N_TANGENT = ::fgc::N_TANGENT, N_VARIABLES = ::fgc::N_VARIABLES;
     static const int RETIRE_II = 36, RETIRE_DEPTH = 218;
-    static void retract_variable(int v, const T delta[N_TANGENT]) { ::fgc::retract_variable(v, delta); }
+    static void retract_variable(int v, const T delta[N_TANGENT], bool at_x,
+                                 hls::stream<::fgc::TrialVar>& tx) {
+        ::fgc::retract_variable(v, delta, at_x, tx);
+    }
 };
 
 // ---- partial QR (paper A): per step the stacked rows [A | b] of its factors, its children's new
@@ -3504,16 +3558,26 @@ const int BS_XOFF[BS_SLOTS] = {-1, -1, -1, 15, 0, 0, 0, 0, -1};
 #define FGC_BACKSUB_DRIVER
 #include "fgc_backsub.h"
 
-// The linear solve at mu: eliminate, then back-substitute. False if singular.
-bool solve(T mu) {
-    if (!eliminate_all(mu)) return false;
-    back_substitute<LesConfig>();
+// back_substitute's region (the cost pass at X_TRIAL, or at X, beside it) behind one name:
+// the on-chip stream's kernels, which inline solve, limit it to one instance (fgc_stream.h)
+void back_substitute_at(bool at_x) {
+    back_substitute<LesConfig>(at_x);
+}
+
+// The linear solve at mu: eliminate, then back-substitute, the cost at X_TRIAL beside it
+// (trial_cost). False if singular. at_x: no solve, back_substitute's cost pass at X (LM
+// control's cost_x). One RTL instance: LM control's two calls share it (fgc_lm.h's ALLOCATION;
+// inlined in the on-chip stream's kernels, whose ALLOCATION shares back_substitute_at).
+bool solve(T mu, bool at_x) {
+    if (!at_x && !eliminate_all(mu)) return false;
+    back_substitute_at(at_x);
     return true;
 }
 
 // ---- LM control (paper B): the rules in fgc_lm.h (shared with the native solver), its
 // reductions in fgc_lm_units.h (interleaved partial sums at II 1); here the kernel's constants
 // and hooks. fgc_lm::optimize<LmConfig>: GN/LM iterations from X.
+T LM_X_NORM = T(0);  // |X| at the linearisation point: gradient_max() finds it, x_norm() reads it
 struct LmConfig {
     typedef ::fgc::T T;
     static const int MAX_ITERATIONS = ::fgc::MAX_ITERATIONS, MAX_TRIES = ::fgc::MAX_TRIES;
@@ -3544,15 +3608,19 @@ struct LmConfig {
     static T magnitude(T x) { return fgc_abs(x); }
     static bool finite(T x) { return fgc_isfinite(x); }
     static T cost_x() {
-#pragma HLS INLINE
-        return total_cost(X);
+        #pragma HLS INLINE
+        FGC_EVENT("cost");
+        solve(T(0), true);  // no solve: X's variables to trial_cost
+        return TRIAL_COST;
     }
     static bool linearize_x(T) { return linearize_all(X); }  // (mu: the HLS Cholesky kernel's)
-    static bool solve_at(T mu) { return solve(mu); }
+    static bool solve_at(T mu) {
+        #pragma HLS INLINE
+        return solve(mu, false);
+    }
     static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
     static T cost_trial() {
-#pragma HLS INLINE
-        return total_cost(X_TRIAL);
+        return TRIAL_COST;  // trial_cost's, beside the solve's back-substitution
     }
     static T noise_x() { return rounding_noise_all(X); }
     static const int N_X = ::fgc::N_X, N_TANGENT = ::fgc::N_TANGENT;
@@ -3561,15 +3629,18 @@ struct LmConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
-    static T x_norm() {
-#pragma HLS INLINE
-        return fgc_units::lm_x_norm<LmConfig>(X);
-    }
+    static T x_norm() { return LM_X_NORM; }  // |X|, found beside the gradient's maximum
     static bool step_test(bool solved, T mu, T out[2]) {
 #pragma HLS INLINE
         return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);
     }
-    static T gradient_max() { return fgc_units::lm_gradient_max<LmConfig>(G); }
+    static T gradient_max() {  // once per linearisation; |X| with it for x_norm (same X)
+#pragma HLS INLINE
+        T out[2];
+        fgc_units::lm_iterate<LmConfig>(G, X, out);
+        LM_X_NORM = out[1];
+        return out[0];
+    }
     static void accept_trial() { fgc_units::lm_accept<LmConfig>(X, X_TRIAL); }
     static void accepted(int, T, T, T) {}  // no host to tell on chip
 };
