@@ -533,12 +533,13 @@ class WindowUpdateModel:
     @staticmethod
     def events_of(iterations: int, rejected: int = 0, noise: int = 0) -> dict:
         """The solve's event counts from its iterations: each iteration a linearisation, a
-        solve, a retraction, a cost pass and (but the last, which converged) an accepted step;
-        the start's cost pass; ``rejected`` trial steps add a solve, a retraction and a cost
-        pass each. (LM then stopped where it last linearised: a leaving keyframe's marginal
-        reuses those rows, no ``relinearize``.)"""
+        solve (and its back-substitution: none fails), a retraction, a cost pass and (but the
+        last, which converged) an accepted step; the start's cost pass; ``rejected`` trial
+        steps add a solve, a retraction and a cost pass each. (LM then stopped where it last
+        linearised: a leaving keyframe's marginal reuses those rows, no ``relinearize``.)"""
         k = int(iterations)
-        return {"linearize": k, "solve": k + rejected, "retract": k + rejected,
+        return {"linearize": k, "solve": k + rejected, "backsub": k + rejected,
+                "retract": k + rejected,
                 "cost": 1 + k + rejected, "accept": max(0, k - 1), "noise": noise}
 
     def price(self, keyframe: int, iterations: int, events: dict | None = None):

@@ -3481,7 +3481,8 @@ bool solve(T mu) {
         bool fin = true;
         linearize_solve(mu, false, fin, solved);
     }
-    if (!solved) return false;
+    if (!solved) return false;  // a failed solve back-substitutes nothing
+    FGC_EVENT("backsub");
     back_substitute<LesConfig>();
     return true;
 }

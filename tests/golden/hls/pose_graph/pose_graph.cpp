@@ -1565,7 +1565,8 @@ const int BS_XOFF[BS_SLOTS] = {-1, -1, -1, 0, -1};
 
 // The linear solve at mu: eliminate, then back-substitute. False if singular.
 bool solve(T mu) {
-    if (!eliminate_all(mu)) return false;
+    if (!eliminate_all(mu)) return false;  // a failed solve back-substitutes nothing
+    FGC_EVENT("backsub");
     back_substitute<LesConfig>();
     return true;
 }
