@@ -42,6 +42,7 @@ from fgc_backends.hls.plan import phase_group as group  # noqa: E402
 
 imu_window = example("imu_window")
 lio = example("lio")
+pose_graph = example("pose_graph")
 
 COUNT_MAIN = r"""
 #include <cstdio>
@@ -136,6 +137,13 @@ def cases():
     out.append(("imu_window N=20 Cholesky #CPE=5 x2", imu_window.build(N=20),
                 SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
                 HlsConfig(scalar="float", unit_sets=2)))
+    # a general tree (not a chain): steps with several children and many factors (30 Pose2,
+    # 60 factors), with the HGC beside the elimination (the default) and before it
+    for beside in (True, False):
+        out.append((f"pose_graph w100_30 Cholesky #CPE=5{'' if beside else ' hgc before'}",
+                    pose_graph.build(dataset="w100_30.g2o"),
+                    SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
+                    HlsConfig(scalar="float", hgc_beside=beside)))
     return out
 
 

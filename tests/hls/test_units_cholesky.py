@@ -3,12 +3,21 @@ emitted multifrontal design and the what-if whole-matrix designs."""
 
 from __future__ import annotations
 
+import sys
+from pathlib import Path
+
 import pytest
 from hls_programs import chain
 
+from fgc.app.specs import example
+from fgc.ir.program import SolverConfig
 from fgc_backends.cost.operators import FLOAT32
+from fgc_backends.hls import HlsConfig
 from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles, plan_cost
+from fgc_backends.hls.plan.loops import kernel_loop
+from fgc_backends.hls.plan.model import Phase, Process
 from fgc_backends.hls.units.cholesky import (
+    cascade_process,
     cpe_depth,
     cpe_round_depth,
     cpe_step_loops,
@@ -329,3 +338,65 @@ def test_a_schedule_without_children_builds_and_matches_the_simulator(tmp_path):
     assert result.status == reference.status
     for key, value in reference.storage.items():
         assert abs(result.values[key] - value).max() <= 1e-9
+
+
+def test_beside_a_slower_assembler_the_cascade_adds_its_feeds_depth():
+    # a tree step with many factors (a pose graph's loop closures): the assembler streams the
+    # step's words out first, then adds the next step's Grams for longer than the cascade
+    # takes; what the cascade adds to the pass is its first loop's fill, the feed's La + 2 = 6
+    # (fgc_cpe.h's cpe_feed, as the counting C simulation takes it), not its round's depth
+    casc = cascade_process(0, 3, 6, 5, FLOAT32)
+    assert casc.loops[0].name == "s0_round0" and casc.loops[0].depth > 6
+    assert casc.fill == 6
+    timing = {"move": (1, 2), "scatter": (1, 6)}
+    slow = Process("assembler0", "cpe", tuple(
+        [kernel_loop("source", 29, "move", timing)]
+        + [kernel_loop("gram", 27, "scatter", timing)] * 11))
+    assert slow.cycles > casc.cycles
+    assert phase_cycles(Phase("p", True, (casc, slow))) == slow.cycles + 6
+    # a step without pivots copies its words first: that copy's depth
+    assert cascade_process(0, 0, 6, 5, FLOAT32).fill == 2
+
+
+# the HGC before the elimination (hgc_beside off): heavy (another ~6 s); bench_cycles runs it
+@pytest.mark.parametrize("beside", [pytest.param(False, marks=pytest.mark.heavy), True])
+def test_a_tree_schedules_counted_cycles_equal_the_plan(beside):
+    """pose_graph on w100_30.g2o (30 Pose2, 60 factors: a schedule with several children a
+    step, steps of many factors), GN, float32, #CPE = 5: the counting C simulation's cholesky
+    (hgc_beside on: hgc_beside) phase equals the plan's exactly, every group within 2 %. The
+    plan before priced the cascade's fill as its round's depth: about 9 % above."""
+    root = Path(__file__).resolve().parents[2]
+    sys.path.insert(0, str(root / "bench"))
+    from bench_cycles import measure
+
+    graph = example("pose_graph").build(dataset="w100_30.g2o")
+    solver = SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32")
+    phases, events = measure("t", graph, solver, HlsConfig(scalar="float", hgc_beside=beside))
+    group = "hgc_beside" if beside else "cholesky"
+    counted, model = phases[group]
+    assert events["solve"] >= 1 and counted > 0 and counted == model, (counted, model)
+    for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+
+
+def test_a_failed_solve_skips_back_substitution_as_priced():
+    """imu_window N = 30, LM, float32, #CPE = 5: float32 Cholesky fails many solves there (not
+    positive definite / a pivot too small: LM raises mu and re-solves), and a failed solve
+    back-substitutes nothing. Back-substitution is priced per solve that did not fail (event
+    ``backsub``), so the counted backsub phase equals the plan's; priced per solve it was
+    about 1.8x the count."""
+    root = Path(__file__).resolve().parents[2]
+    sys.path.insert(0, str(root / "bench"))
+    from bench_cycles import measure
+
+    from fgc_backends.hls.plan import PHASE_TRIGGER
+
+    assert PHASE_TRIGGER["backsub"] == "backsub"
+    solver = SolverConfig(method="lm", linear="cholesky", cpe=5, precision="float32")
+    phases, events = measure("t", example("imu_window").build(N=30), solver)
+    assert events["solve"] - events["backsub"] >= 10 and events["backsub"] >= 1
+    counted, model = phases["backsub"]
+    assert counted > 0 and counted == model, (counted, model)
+    for g in ("lm_control", "hgc_beside", "recholesky", "reassemble"):
+        counted, model = phases[g]
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)

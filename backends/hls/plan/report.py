@@ -115,10 +115,11 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
 # the plan phase group (a phase's name without its level number) -> the run event (FGC_EVENT in
 # accel.cpp.jinja) that executes it once: how a counting C simulation's phases are priced
 # (bench/bench_cycles.py) and how the on-chip stream's model counts a call's phases
-# (fgc_backends.hls.window)
+# (fgc_backends.hls.window); back-substitution runs once per solve that did not fail (solve():
+# a solve not positive definite or with a pivot too small skips it, LM raises mu and retries)
 PHASE_TRIGGER = {"setup": "call", "factor_jacobian": "linearize", "gradient": "linearize",
                  "hgc": "linearize", "qr_stack": "solve", "qr": "solve", "qr_commit": "solve",
-                 "backsub": "solve", "assemble": "solve", "cholesky": "solve", "store": "solve",
+                 "backsub": "backsub", "assemble": "solve", "cholesky": "solve", "store": "solve",
                  "hgc_beside": "linearize", "reassemble": "resolve", "recholesky": "resolve",
                  "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
                  "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}

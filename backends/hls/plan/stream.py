@@ -533,14 +533,14 @@ class WindowUpdateModel:
     @staticmethod
     def events_of(iterations: int, rejected: int = 0, noise: int = 0) -> dict:
         """The solve's event counts from its iterations: each iteration a linearisation, a
-        solve (the cost at X_TRIAL beside its back-substitution), a retraction and (but the
-        last, which converged) an accepted step; the start's cost pass (at X: ``cost``);
-        ``rejected`` trial steps add a solve and a retraction each. (LM then stopped where it
-        last linearised: a leaving keyframe's marginal reuses those rows, no
-        ``relinearize``.)"""
+        solve (and its back-substitution, the cost at X_TRIAL beside it: none fails), a
+        retraction and (but the last, which converged) an accepted step; the start's cost pass
+        (at X: ``cost``); ``rejected`` trial steps add a solve, a back-substitution and a
+        retraction each. (LM then stopped where it last linearised: a leaving keyframe's
+        marginal reuses those rows, no ``relinearize``.)"""
         k = int(iterations)
-        return {"linearize": k, "solve": k + rejected, "retract": k + rejected,
-                "cost": 1, "accept": max(0, k - 1), "noise": noise}
+        return {"linearize": k, "solve": k + rejected, "backsub": k + rejected,
+                "retract": k + rejected, "cost": 1, "accept": max(0, k - 1), "noise": noise}
 
     def price(self, keyframe: int, iterations: int, events: dict | None = None):
         """The :class:`UpdatePrice` of keyframe ``keyframe``'s call."""

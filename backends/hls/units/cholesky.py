@@ -6,7 +6,7 @@ whole [H | g] (dense, or its envelope: "blocked") through one cascade."""
 from __future__ import annotations
 
 import math
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 from fgc.ir.codes import NOISE_CODES
 from fgc_backends.cfamily.sparsity import block_pattern
@@ -74,6 +74,29 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     if frontal == 0:
         loops.append(Loop(f"{name}_no_pivots", w * (w + 1) // 2 + w, 1, 2))
     return loops + cpe_check_loops(frontal, ops, name)
+
+
+@dataclass(frozen=True)
+class CascadeProcess(Process):
+    """The cascade's process of a ``cholesky_overlap`` pass: ``cpe_step``'s loops, whose first
+    loop that runs is its round's feed (``cpe_feed``, the first process of the round's own
+    DATAFLOW region, ``feed`` = La + 2 deep), not the round as a whole. Beside a slower
+    assembler (a step with many factors: a pose graph's loop closures) what the cascade adds
+    to the pass is that fill, as fgc_cycles.h counts it; the round's depth (a word through
+    every CPE) lies under the assembler's further Grams, which come after its last word."""
+    feed: int = 0
+
+    @property
+    def fill(self) -> int:
+        return self.feed if self.feed and self.loops and "_round" in self.loops[0].name \
+            else super().fill
+
+
+def cascade_process(s: int, frontal: int, separator: int, cpe: int,
+                    ops: OperatorTable) -> CascadeProcess:
+    """Step s's cascade (:func:`cpe_step_loops`) as the process of its pass."""
+    return CascadeProcess(f"cascade{s}", "cpe", tuple(cpe_step_loops(
+        frontal, separator, cpe, ops, name=f"s{s}")), feed=ops.add.latency + 2)
 
 
 def cpe_check_loops(frontal: int, ops: OperatorTable, name: str = "s") -> list[Loop]:
@@ -372,8 +395,7 @@ def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
         nxt = order[t + 1] if t + 1 < len(order) else -1
         frontal, separator = dims[s]
         phases.append(Phase(f"cholesky_level{t}", True, (
-            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
-                frontal, separator, cpe, ops, name=f"s{s}"))),
+            cascade_process(s, frontal, separator, cpe, ops),
             Process(f"assembler{s}", "cpe", tuple(assembler_loops(
                 tables, s, nxt, timing, odd)))), linear=True))
     return phases
@@ -488,8 +510,7 @@ def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: Ope
         passes.append((Phase(f"recholesky_level{t}", True, (
             *src,
             Process(f"assembler{s}", "cpe", tuple(assembler_loops(tables, s, nxt, timing, odd))),
-            Process(f"cascade{s}", "cpe", tuple(cpe_step_loops(
-                frontal, separator, cpe, ops, name=f"s{s}")))), linear=True), gate))
+            cascade_process(s, frontal, separator, cpe, ops)), linear=True), gate))
     return passes
 
 

@@ -3542,7 +3542,8 @@ bool solve(T mu, bool at_x) {
         bool fin = true;
         linearize_solve(mu, false, fin, solved);
     }
-    if (!solved) return false;
+    if (!solved) return false;  // a failed solve back-substitutes nothing
+    FGC_EVENT("backsub");
     back_substitute_at(false);
     return true;
 }

@@ -3569,7 +3569,8 @@ void back_substitute_at(bool at_x) {
 // control's cost_x). One RTL instance: LM control's two calls share it (fgc_lm.h's ALLOCATION;
 // inlined in the on-chip stream's kernels, whose ALLOCATION shares back_substitute_at).
 bool solve(T mu, bool at_x) {
-    if (!at_x && !eliminate_all(mu)) return false;
+    if (!at_x && !eliminate_all(mu)) return false;  // a failed solve back-substitutes nothing
+    if (!at_x) FGC_EVENT("backsub");
     back_substitute_at(at_x);
     return true;
 }
