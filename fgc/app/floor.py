@@ -50,7 +50,9 @@ PARTS = ("linearise", "eliminate", "back-substitute", "update", "cost + decision
 PHASE_PART = {"factor_jacobian": "linearise", "gradient": "linearise", "whiten_stack": "eliminate",
               "hgc": "eliminate", "qr_stack": "eliminate", "qr": "eliminate",
               "qr_commit": "eliminate", "assemble": "eliminate", "cholesky": "eliminate",
-              "store": "eliminate", "backsub": "back-substitute", "state_update": "update",
+              "store": "eliminate", "hgc_beside": "eliminate", "hgc_producer": "eliminate",
+              "reassemble": "eliminate", "recholesky": "eliminate",
+              "backsub": "back-substitute", "state_update": "update",
               "factor_cost": "cost + decision", "lm_iteration": "cost + decision",
               "lm_control": "cost + decision", "lm_accept": "cost + decision"}
 

@@ -884,7 +884,8 @@ def _frontal(ctx) -> None:
 
 SPEC = UnitSpec(
     name="cholesky", role="HGC and the cascade of #CPE Cholesky process elements",
-    build=build, phases=("hgc", "assemble", "cholesky", "cholesky_scalar"),
+    build=build, phases=("hgc", "assemble", "cholesky", "cholesky_scalar", "hgc_beside",
+                         "hgc_producer", "reassemble", "recholesky"),
     header="fgc_cpe.h",
     constants=(("CPE", "#CPE process elements (PlanOptions.cpe)"),
                ("MAX_W", "widest frontal matrix")),
