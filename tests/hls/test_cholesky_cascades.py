@@ -80,10 +80,16 @@ def test_two_cascades_match_the_simulator(tmp_path):
     graph = lio.build(N=6)
     program = compile_graph(graph, SolverConfig(linear="cholesky", cpe=4), name="casc")
     project = emit(program, tmp_path, HlsConfig(scalar="double", unit_sets=2))
-    (region,) = read_network((tmp_path / "include" / "fgc_cascades.h").read_text())
-    assert region.function == "cholesky_sets" and region.processes == (
+    regions = {r.function: r for r in read_network(
+        (tmp_path / "include" / "fgc_cascades.h").read_text())}
+    assert regions["cholesky_sets"].processes == (
         "cholesky_set_source", "cholesky_set_grams", "cholesky_set_cascade",
         "cholesky_set_cascade", "cholesky_set_commit")
+    # the HGC beside the elimination (default on): the Gram source a sixth process of the region
+    assert regions["cholesky_sets_beside"].processes == (
+        "cholesky_set_gram_source", *regions["cholesky_sets"].processes)
+    text = (project.directory / f"{project.name}.cpp").read_text()
+    assert "cholesky_eliminate_sets_beside<SetConfig>(mu, relin, grams, solved);" in text
     data = problem_data(graph, program)
     reference = sim.run(program, data, precision="float64")
     result = run_csim(project, program, data, reference)
@@ -93,14 +99,18 @@ def test_two_cascades_match_the_simulator(tmp_path):
     assert worst <= 1e-9
 
 
-def test_two_cascades_count_what_the_plan_prices():
+@pytest.mark.parametrize("beside", [False, True])
+def test_two_cascades_count_what_the_plan_prices(beside):
+    # beside: the HGC beside the elimination (fgc_cascades.h's cholesky_eliminate_sets_beside,
+    # units/cholesky.py's beside_set_passes): its passes inside phase hgc_beside
     sys.path.insert(0, str(ROOT / "bench"))
     from bench_cycles import measure
 
     solver = SolverConfig(method="gn", linear="cholesky", cpe=4, precision="float32")
     phases, events = measure("c2", imu_window.build(N=5), solver,
-                             HlsConfig(scalar="float", unit_sets=2))
+                             HlsConfig(scalar="float", unit_sets=2, hgc_beside=beside))
     assert events["solve"] >= 1
-    assert {"assemble", "cholesky"} <= {g for g, (c, m) in phases.items() if c > 0 and m > 0}
+    groups = {"hgc_beside"} if beside else {"assemble", "cholesky"}
+    assert groups <= {g for g, (c, m) in phases.items() if c > 0 and m > 0}
     for g, (counted, model) in phases.items():
         assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
