@@ -114,3 +114,23 @@ def test_two_cascades_count_what_the_plan_prices(beside):
     assert groups <= {g for g, (c, m) in phases.items() if c > 0 and m > 0}
     for g, (counted, model) in phases.items():
         assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+
+
+# heavy (about a minute on 2 cores): LM's retries with two cascades re-solve from GRAM_B
+@pytest.mark.heavy
+def test_two_cascades_retries_resolve_from_the_kept_grams_as_priced():
+    """imu_window N = 50, LM, float32, #CPE = 5, two cascades with the HGC beside: the first
+    solves fail (κ past 1/√eps32), LM re-solves the same linearisation (event resolve) with
+    cholesky_eliminate_sets_beside's Gram source copying region by region from GRAM_B: the
+    retry phases count what the plan prices (beside_set_passes, relin false)."""
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import measure
+
+    solver = SolverConfig(method="lm", linear="cholesky", cpe=5, precision="float32")
+    phases, events = measure("c2r", imu_window.build(N=50), solver,
+                             HlsConfig(scalar="float", unit_sets=2))
+    assert events.get("resolve", 0) >= 1
+    assert phases["recholesky"][0] > 0 and phases["reassemble"][0] > 0
+    for g in ("hgc", "hgc_beside", "reassemble", "recholesky"):
+        counted, model = phases[g]
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
