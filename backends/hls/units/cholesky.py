@@ -807,7 +807,10 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
     instances in step order) beside the first solve's elimination with its Gram source
     (:func:`beside_cycles` on :func:`beside_passes`), and LM's retries re-solve from GRAM_B
     (phases ``reassemble`` / ``recholesky_level<t>``, per rejection). Memories: the two stage
-    lanes, GRAM_B and the Gram stream (a step's words)."""
+    lanes, GRAM_B and the Gram stream (a step's words). Two cascades (:func:`cascades_of`):
+    fgc_cascades.h's cholesky_eliminate_sets_beside, the instances in region order, a stage lane
+    and the stream's depth a region's (:func:`beside_region_layout`,
+    :func:`beside_set_passes`)."""
     program, ops, tables, timing = ctx.program, ctx.les, ctx.tables, ctx.les_timing
     at = next(k for k, (_, ph) in enumerate(ctx.phases) if ph.name == f"hgc_level{big}")
     slot, region = ctx.phases[at]
