@@ -21,7 +21,11 @@ from fgc_backends.hls.emitter import accel_plan
 from fgc_backends.hls.network import read_network
 from fgc_backends.hls.plan import plan_cost
 from fgc_backends.hls.plan.loops import _tables
-from fgc_backends.hls.units.cholesky import cascade_children, cascade_regions
+from fgc_backends.hls.units.cholesky import (
+    beside_region_layout,
+    cascade_children,
+    cascade_regions,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 lio = example("lio")
@@ -62,6 +66,39 @@ def test_regions_pair_the_two_ends_of_a_chain(lio30):
         assert set(alone) | ({streamed} - {-1}) == _children(tables, s)
     # every child is streamed but one of the root's two (the other end's: a pass of its own)
     assert sum(len(alone) for _, alone in kids.values()) == 1
+
+
+def test_the_streamed_grams_go_region_by_region(lio30):
+    """The HGC beside two cascades (beside_region_layout): the IMU block's instances in region
+    order (a region's cascade 0 step's, then cascade 1's), each once; a region's streamed Grams
+    side by side in its stage lane; the first solve's passes gated by their region's last
+    instance (beside_set_passes), and the region beside it priced from the replay."""
+    tables = _tables(lio30)
+    n = len(lio30.schedule.steps)
+    order = [tables["LEVEL_STEPS"][i] for i in range(n)]
+    regions = cascade_regions(tables, order)
+    plan = accel_plan(lio30, HlsConfig(scalar="float", unit_sets=2))
+    (beside,) = [ph for ph in plan.phases if ph.name == "hgc_beside"]
+    big = int(beside.processes[0].name.rsplit("_", 1)[1])  # linearize_solve_<b>: the IMU block
+    assert lio30.blocks[big].residual_dim == max(b.residual_dim for b in lio30.blocks)
+    lay = beside_region_layout(lio30, tables, regions, big)
+    step_of = {tables["STEP_FACTORS"][e]: s for s in range(n)
+               for e in range(tables["STEP_FACTOR_BEGIN"][s], tables["STEP_FACTOR_BEGIN"][s + 1])}
+    flat = [s for reg in regions for s in reg if s >= 0]
+    assert [step_of[f] for f in lay["order"]] == sorted(
+        (step_of[f] for f in lay["order"]), key=flat.index)
+    assert sorted(lay["order"]) == [i for i, f in enumerate(lio30.factors) if f.block == big]
+    for r, reg in enumerate(regions):
+        mine = lay["order"][lay["step_first"][r]:lay["step_first"][r] + lay["step_count"][r]]
+        assert {step_of[f] for f in mine} <= set(reg)
+        assert [lay["factor_stage"][f] for f in mine] == [
+            j * lay["nb"] for j in range(len(mine))]
+    assert lay["n_stage"] == max(lay["step_count"]) * lay["nb"]
+    before = plan_cost(accel_plan(lio30, HlsConfig(scalar="float", unit_sets=2,
+                                                   hgc_beside=False)))
+    cost = plan_cost(plan)
+    assert cost.dsp == before.dsp and cost.cycles < before.cycles - 7000
+    assert not any(ph.name.startswith("cholesky_level") for ph in plan.phases)
 
 
 def test_two_cascades_price_the_ends_side_by_side(lio30):
