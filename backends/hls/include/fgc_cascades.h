@@ -4,6 +4,9 @@
 // place of fgc_eliminate.h's one-cascade driver (cholesky_eliminate_all).
 //
 //   bool cholesky_eliminate_sets<CFG>(mu)  every step, region by region; false if singular.
+//   cholesky_eliminate_sets_beside<CFG>(mu, relin, grams, ok)  (FGC_CASCADES_BESIDE: the HGC
+//        beside the elimination) the same with the streamed block type's Grams taken from the
+//        Gram stream (relin) or GRAM_B (LM's retry) by a Gram source, a region at a time.
 //
 // Included by the kernel inside its namespace after its schedule tables and memories, which
 // these functions name: the tables of fgc_eliminate.h's Cholesky driver (STEP_W, STEP_F,
@@ -15,8 +18,9 @@
 // conditional from 0).
 //
 // The Grams are read in cholesky_set_step_grams (as fgc_eliminate.h's cholesky_assemble_first
-// and cholesky_add_segment read them for the one-cascade driver): a change to where the
-// assembly gets its Grams changes both.
+// and cholesky_add_segment read them for the one-cascade driver; a streamed factor's from its
+// region's stage lane, CFG::staged): a change to where the assembly gets its Grams changes both.
+// Without the HGC beside, the kernel's STAGE_NONE (never read) stands for the stage lane.
 #ifndef FGC_CASCADES_H
 #define FGC_CASCADES_H
 
