@@ -60,9 +60,9 @@ class DesignOptions:
       named keep the plan's default (``fgc_backends.hls.plan.DEFAULT_ALLOCATION``), which is
       what ``None`` means. The plan shares each limit out over the block types by instance
       count (``PlanOptions.allocation_scaling``). ``fgc compile --allocation mul=48,add=32``.
-    - ``hgc_beside``: Cholesky with one cascade: the block type with the longest HGC region
-      streams its Grams beside the elimination (the first solve of a linearisation factored
-      while its HGC runs; docs/hls.md); ``False``: every block type's HGC before it.
+    - ``hgc_beside``: Cholesky (one cascade or two): the block type with the longest HGC
+      region streams its Grams beside the elimination (the first solve of a linearisation
+      factored while its HGC runs; docs/hls.md); ``False``: every block type's HGC before it.
     - ``qr_unit``: the QR unit set the design eliminates with: ``"householder"`` (paper A's
       architecture: one DATAFLOW region per reflection, ``include/fgc_qr.h``) or ``"stream"``
       (n_u reflection stages the matrix streams through, ``include/fgc_qr_stream.h``; the

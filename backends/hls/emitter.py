@@ -350,11 +350,19 @@ def _beside_context(program: Program, plan, blocks) -> dict | None:
     if name is None:
         return None
     from fgc_backends.hls.plan.loops import _tables
-    from fgc_backends.hls.units.cholesky import beside_layout
+    from fgc_backends.hls.units.cholesky import (
+        beside_layout,
+        beside_region_layout,
+        cascade_regions,
+        cascades_of,
+    )
     big = int(name.rsplit("_", 1)[1])
     tables = _tables(program)
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
-    lay = beside_layout(program, tables, order, big)
+    # two cascades: the stream and the stage lanes by region (fgc_cascades.h), else by step
+    regions = cascades_of(program, plan.options) == 2
+    lay = (beside_region_layout(program, tables, cascade_regions(tables, order), big) if regions
+           else beside_layout(program, tables, order, big))
     b = blocks[big]
     reduce = next(p for ph in plan.phases if ph.name == "hgc_producer" for p in ph.processes
                   if p.name == f"reduce_{big}")
@@ -363,7 +371,8 @@ def _beside_context(program: Program, plan, blocks) -> dict | None:
                                                             b.gram_q + b.gram_qb, strict=True)):
         raise RuntimeError(f"internal error: block {big}'s Gram entries outside its packed Gram")
     slots = ha + (1 if b.gram_pb else 0)
-    return {**lay, "block": big, "ha": ha, "slots": slots, "gii": reduce.loops[1].ii,
+    return {**lay, "block": big, "ha": ha, "unit": "REGION" if regions else "STEP",
+            "slots": slots, "gii": reduce.loops[1].ii,
             "steps": b.gram_steps, "count": len(lay["order"]),
             "depth": lay["max_per_step"] * b.gram_steps, "rows_cycles": reduce.loops[0].cycles,
             "pos_a": [p * (p + 1) // 2 + q for p, q in zip(b.gram_p, b.gram_q, strict=True)],

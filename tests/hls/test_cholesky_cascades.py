@@ -21,7 +21,11 @@ from fgc_backends.hls.emitter import accel_plan
 from fgc_backends.hls.network import read_network
 from fgc_backends.hls.plan import plan_cost
 from fgc_backends.hls.plan.loops import _tables
-from fgc_backends.hls.units.cholesky import cascade_children, cascade_regions
+from fgc_backends.hls.units.cholesky import (
+    beside_region_layout,
+    cascade_children,
+    cascade_regions,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 lio = example("lio")
@@ -64,6 +68,39 @@ def test_regions_pair_the_two_ends_of_a_chain(lio30):
     assert sum(len(alone) for _, alone in kids.values()) == 1
 
 
+def test_the_streamed_grams_go_region_by_region(lio30):
+    """The HGC beside two cascades (beside_region_layout): the IMU block's instances in region
+    order (a region's cascade 0 step's, then cascade 1's), each once; a region's streamed Grams
+    side by side in its stage lane; the first solve's passes gated by their region's last
+    instance (beside_set_passes), and the region beside it priced from the replay."""
+    tables = _tables(lio30)
+    n = len(lio30.schedule.steps)
+    order = [tables["LEVEL_STEPS"][i] for i in range(n)]
+    regions = cascade_regions(tables, order)
+    plan = accel_plan(lio30, HlsConfig(scalar="float", unit_sets=2))
+    (beside,) = [ph for ph in plan.phases if ph.name == "hgc_beside"]
+    big = int(beside.processes[0].name.rsplit("_", 1)[1])  # linearize_solve_<b>: the IMU block
+    assert lio30.blocks[big].residual_dim == max(b.residual_dim for b in lio30.blocks)
+    lay = beside_region_layout(lio30, tables, regions, big)
+    step_of = {tables["STEP_FACTORS"][e]: s for s in range(n)
+               for e in range(tables["STEP_FACTOR_BEGIN"][s], tables["STEP_FACTOR_BEGIN"][s + 1])}
+    flat = [s for reg in regions for s in reg if s >= 0]
+    assert [step_of[f] for f in lay["order"]] == sorted(
+        (step_of[f] for f in lay["order"]), key=flat.index)
+    assert sorted(lay["order"]) == [i for i, f in enumerate(lio30.factors) if f.block == big]
+    for r, reg in enumerate(regions):
+        mine = lay["order"][lay["step_first"][r]:lay["step_first"][r] + lay["step_count"][r]]
+        assert {step_of[f] for f in mine} <= set(reg)
+        assert [lay["factor_stage"][f] for f in mine] == [
+            j * lay["nb"] for j in range(len(mine))]
+    assert lay["n_stage"] == max(lay["step_count"]) * lay["nb"]
+    before = plan_cost(accel_plan(lio30, HlsConfig(scalar="float", unit_sets=2,
+                                                   hgc_beside=False)))
+    cost = plan_cost(plan)
+    assert cost.dsp == before.dsp and cost.cycles < before.cycles - 7000
+    assert not any(ph.name.startswith("cholesky_level") for ph in plan.phases)
+
+
 def test_two_cascades_price_the_ends_side_by_side(lio30):
     one = plan_cost(accel_plan(lio30, HlsConfig(scalar="float", hgc_beside=False)))
     two = plan_cost(accel_plan(lio30, HlsConfig(scalar="float", unit_sets=2)))
@@ -80,10 +117,16 @@ def test_two_cascades_match_the_simulator(tmp_path):
     graph = lio.build(N=6)
     program = compile_graph(graph, SolverConfig(linear="cholesky", cpe=4), name="casc")
     project = emit(program, tmp_path, HlsConfig(scalar="double", unit_sets=2))
-    (region,) = read_network((tmp_path / "include" / "fgc_cascades.h").read_text())
-    assert region.function == "cholesky_sets" and region.processes == (
+    regions = {r.function: r for r in read_network(
+        (tmp_path / "include" / "fgc_cascades.h").read_text())}
+    assert regions["cholesky_sets"].processes == (
         "cholesky_set_source", "cholesky_set_grams", "cholesky_set_cascade",
         "cholesky_set_cascade", "cholesky_set_commit")
+    # the HGC beside the elimination (default on): the Gram source a sixth process of the region
+    assert regions["cholesky_sets_beside"].processes == (
+        "cholesky_set_gram_source", *regions["cholesky_sets"].processes)
+    text = (project.directory / f"{project.name}.cpp").read_text()
+    assert "cholesky_eliminate_sets_beside<SetConfig>(mu, relin, grams, solved);" in text
     data = problem_data(graph, program)
     reference = sim.run(program, data, precision="float64")
     result = run_csim(project, program, data, reference)
@@ -93,14 +136,38 @@ def test_two_cascades_match_the_simulator(tmp_path):
     assert worst <= 1e-9
 
 
-def test_two_cascades_count_what_the_plan_prices():
+@pytest.mark.parametrize("beside", [False, True])
+def test_two_cascades_count_what_the_plan_prices(beside):
+    # beside: the HGC beside the elimination (fgc_cascades.h's cholesky_eliminate_sets_beside,
+    # units/cholesky.py's beside_set_passes): its passes inside phase hgc_beside
     sys.path.insert(0, str(ROOT / "bench"))
     from bench_cycles import measure
 
     solver = SolverConfig(method="gn", linear="cholesky", cpe=4, precision="float32")
     phases, events = measure("c2", imu_window.build(N=5), solver,
-                             HlsConfig(scalar="float", unit_sets=2))
+                             HlsConfig(scalar="float", unit_sets=2, hgc_beside=beside))
     assert events["solve"] >= 1
-    assert {"assemble", "cholesky"} <= {g for g, (c, m) in phases.items() if c > 0 and m > 0}
+    groups = {"hgc_beside"} if beside else {"assemble", "cholesky"}
+    assert groups <= {g for g, (c, m) in phases.items() if c > 0 and m > 0}
     for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+
+
+# heavy (about a minute on 2 cores): LM's retries with two cascades re-solve from GRAM_B
+@pytest.mark.heavy
+def test_two_cascades_retries_resolve_from_the_kept_grams_as_priced():
+    """imu_window N = 50, LM, float32, #CPE = 5, two cascades with the HGC beside: the first
+    solves fail (κ past 1/√eps32), LM re-solves the same linearisation (event resolve) with
+    cholesky_eliminate_sets_beside's Gram source copying region by region from GRAM_B: the
+    retry phases count what the plan prices (beside_set_passes, relin false)."""
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import measure
+
+    solver = SolverConfig(method="lm", linear="cholesky", cpe=5, precision="float32")
+    phases, events = measure("c2r", imu_window.build(N=50), solver,
+                             HlsConfig(scalar="float", unit_sets=2))
+    assert events.get("resolve", 0) >= 1
+    assert phases["recholesky"][0] > 0 and phases["reassemble"][0] > 0
+    for g in ("hgc", "hgc_beside", "reassemble", "recholesky"):
+        counted, model = phases[g]
         assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)

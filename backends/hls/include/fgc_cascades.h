@@ -4,6 +4,9 @@
 // place of fgc_eliminate.h's one-cascade driver (cholesky_eliminate_all).
 //
 //   bool cholesky_eliminate_sets<CFG>(mu)  every step, region by region; false if singular.
+//   cholesky_eliminate_sets_beside<CFG>(mu, relin, grams, ok)  (FGC_CASCADES_BESIDE: the HGC
+//        beside the elimination) the same with the streamed block type's Grams taken from the
+//        Gram stream (relin) or GRAM_B (LM's retry) by a Gram source, a region at a time.
 //
 // Included by the kernel inside its namespace after its schedule tables and memories, which
 // these functions name: the tables of fgc_eliminate.h's Cholesky driver (STEP_W, STEP_F,
@@ -15,8 +18,9 @@
 // conditional from 0).
 //
 // The Grams are read in cholesky_set_step_grams (as fgc_eliminate.h's cholesky_assemble_first
-// and cholesky_add_segment read them for the one-cascade driver): a change to where the
-// assembly gets its Grams changes both.
+// and cholesky_add_segment read them for the one-cascade driver; a streamed factor's from its
+// region's stage lane, CFG::staged): a change to where the assembly gets its Grams changes both.
+// Without the HGC beside, the kernel's STAGE_NONE (never read) stands for the stage lane.
 #ifndef FGC_CASCADES_H
 #define FGC_CASCADES_H
 
@@ -52,9 +56,13 @@ enum { CHOLESKY_SETS_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEP
 // cholesky_set_alone (sequential: it reads any NF lane).
 
 // Step s's factor Grams into ha (all zero): the first stored two entries a cycle after its
-// column map, the further ones added one entry a cycle (as cholesky_assemble_first / _adds).
+// column map, the further ones added one entry a cycle (as cholesky_assemble_first / _adds). A
+// factor whose Gram the HGC streams beside the elimination (CFG::staged(fac) >= 0: its offset in
+// its region's stage lane) is read from `stage` (the lane the Gram source filled a pass before)
+// instead of GRAM.
 template <class CFG>
-void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2]) {
+void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                             const typename CFG::T stage[CFG::N_STAGE]) {
     if (s < 0) return;
     const int w = STEP_W[s];
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
@@ -63,6 +71,7 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
         const int cb = FACTOR_COLMAP_BEGIN[fac];
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
         const int g0 = FACTOR_GRAM_OFF[fac];
+        const int so = CFG::staged(fac);
         const int n = d * (d + 1) / 2 + d;
         if (e == STEP_FACTOR_BEGIN[s]) {
             int map[CFG::MAX_W + 1];
@@ -82,7 +91,7 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
                     if (k + h < n) {
                         const int a = map[p], b = map[q];
                         const int lo = b < a ? b : a, hi = b < a ? a : b;
-                        ha[lo][hi >> 1][hi & 1] = GRAM[g0 + k + h];
+                        ha[lo][hi >> 1][hi & 1] = so >= 0 ? stage[so + k + h] : GRAM[g0 + k + h];
                         if (q == p) {
                             q = 0;
                             ++p;
@@ -102,7 +111,7 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
             const int a = x < d ? FACTOR_COLMAP[cb + x] : w;
             const int b = FACTOR_COLMAP[cb + y];
             const int lo = b < a ? b : a, hi = b < a ? a : b;
-            ha[lo][hi >> 1][hi & 1] += GRAM[g0 + k];
+            ha[lo][hi >> 1][hi & 1] += so >= 0 ? stage[so + k] : GRAM[g0 + k];
             if (y == x) {
                 ++x;
                 y = 0;
@@ -115,14 +124,16 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
 }
 
 // The grams process: steps n0, n1 (cascade 0's, 1's of the next region; -1 none) into their
-// lanes, one after the other through one copy of the loops (one adder).
+// lanes, one after the other through one copy of the loops (one adder); their streamed Grams
+// from `stage` (the next region's stage lane; without the HGC beside, STAGE_NONE, never read).
 template <class CFG>
 void cholesky_set_grams(int n0, int n1, typename CFG::T ha0[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
-                        typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2]) {
+                        typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                        const typename CFG::T stage[CFG::N_STAGE]) {
 #pragma HLS ALLOCATION function instances=cholesky_set_step_grams<CFG> limit=1
     FGC_BRANCH();
-    cholesky_set_step_grams<CFG>(n0, ha0);
-    cholesky_set_step_grams<CFG>(n1, ha1);
+    cholesky_set_step_grams<CFG>(n0, ha0, stage);
+    cholesky_set_step_grams<CFG>(n1, ha1, stage);
 }
 
 // Step s's streamed child's separator map inverted into inv (parent column -> its index in
@@ -307,6 +318,7 @@ void cholesky_set_commit(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
     cholesky_set_commit_one<CFG>(q1, cb1, dp1, rm1, tiny1);
 }
 
+#ifndef FGC_CASCADES_BESIDE  // (else: cholesky_sets_beside, below)
 // The region: steps s0, s1 factored (their words streamed out of ha0s, ha1s, their streamed
 // children read from nf0r, nf1r; conditionals into cb0w, cb1w, update matrices into nf0w,
 // nf1w) beside the next region's Grams (n0, n1 into ha0n, ha1n) and the region before's
@@ -336,7 +348,7 @@ void cholesky_sets(int s0, int s1, int n0, int n1, int q0, int q1, typename CFG:
 #pragma HLS STREAM variable=frontal0 depth=DEPTH
 #pragma HLS STREAM variable=frontal1 depth=DEPTH
     cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
-    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n);
+    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, STAGE_NONE);
     cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
                               unfit0);
     cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
@@ -345,6 +357,7 @@ void cholesky_sets(int s0, int s1, int n0, int n1, int q0, int q1, typename CFG:
     FGC_DRAINED(&frontal0, 1);  // csim only (fgc_cycles.h)
     FGC_DRAINED(&frontal1, 1);
 }
+#endif  // !FGC_CASCADES_BESIDE
 
 // Step s's children other than its streamed one added into its lane (before its region): one
 // scatter loop a child, from the NF lane its cascade's drain wrote (one adder).
@@ -388,6 +401,7 @@ void cholesky_set_alone(int s) {
     }
 }
 
+#ifndef FGC_CASCADES_BESIDE  // (else: cholesky_eliminate_sets_beside, below)
 // Eliminate every step, region by region (REGION_STEP): passes of the one cholesky_sets
 // region (its two parity call sites, one RTL copy), j = -1 the grams process alone (the first
 // region's Grams into lanes 0), j = 0 ... N_REGIONS - 1 region j (after its steps' children
@@ -443,5 +457,130 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
     }
     return ok;
 }
+#endif  // !FGC_CASCADES_BESIDE
+
+#ifdef FGC_CASCADES_BESIDE
+// ---- the HGC beside the elimination with two cascades (accel.cpp.jinja's linearize_solve;
+// units/cholesky.py's beside_set_passes). The streamed block type's instances come in the order
+// of the regions (each region's cascade 0 step's, then cascade 1's) as a Gram stream, and each
+// cholesky_sets_beside pass gains a sixth process, the Gram source (CFG::gram_source, on the
+// kernel's per-region tables): it puts region r + 2's streamed Grams into stage lane r % 2 -
+// from the stream on the first solve of a linearisation (keeping them in GRAM_B), from GRAM_B on
+// LM's retries - while the grams process reads region r + 1's from the other lane. The stage
+// lanes follow NF's scheme: the two parity call sites pass (lane written, lane read) as
+// different arrays, so each lane has one process a pass. CFG: SetConfig with the LesConfig's
+// Word, N_STAGE (a region's streamed words), staged(fac), streams(r), last_streamed(r) and
+// gram_source(r, relin, lane, grams).
+
+// The source's process: region r's streamed Grams into `stagew` (none if r < 0).
+template <class CFG>
+void cholesky_set_gram_source(int r, bool relin, typename CFG::T stagew[CFG::N_STAGE],
+                              hls::stream<typename CFG::Word>& grams) {
+    FGC_BRANCH();  // csim cycle counting only: beside the region's other processes
+    if (r >= 0) CFG::gram_source(r, relin, stagew, grams);
+}
+
+// The region (cholesky_sets') with the Gram source putting region `src`'s streamed Grams into
+// stagew while the grams process reads the next region's from stager.
+template <class CFG>
+void cholesky_sets_beside(int s0, int s1, int n0, int n1, int q0, int q1, int src, bool relin,
+                          typename CFG::T mu,
+                          typename CFG::T ha0s[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                          typename CFG::T ha1s[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                          typename CFG::T ha0n[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                          typename CFG::T ha1n[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                          const typename CFG::T nf0r[CFG::N_NF], const typename CFG::T nf1r[CFG::N_NF],
+                          typename CFG::T nf0w[CFG::N_NF], typename CFG::T nf1w[CFG::N_NF],
+                          typename CFG::T cb0w[CFG::N_COND], typename CFG::T cb1w[CFG::N_COND],
+                          const typename CFG::T cb0r[CFG::N_COND], const typename CFG::T cb1r[CFG::N_COND],
+                          typename CFG::T d0w[CFG::MAX_F], typename CFG::T r0w[CFG::MAX_F],
+                          typename CFG::T d1w[CFG::MAX_F], typename CFG::T r1w[CFG::MAX_F],
+                          const typename CFG::T d0r[CFG::MAX_F], const typename CFG::T r0r[CFG::MAX_F],
+                          const typename CFG::T d1r[CFG::MAX_F], const typename CFG::T r1r[CFG::MAX_F],
+                          const typename CFG::T stager[CFG::N_STAGE],
+                          typename CFG::T stagew[CFG::N_STAGE],
+                          hls::stream<typename CFG::Word>& grams, bool* npd0, bool* npd1,
+                          bool* unfit0, bool* unfit1, bool* tiny0, bool* tiny1) {
+#pragma HLS DATAFLOW
+    enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
+    hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal0;
+    hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal1;
+#pragma HLS STREAM variable=frontal0 depth=DEPTH
+#pragma HLS STREAM variable=frontal1 depth=DEPTH
+    cholesky_set_gram_source<CFG>(src, relin, stagew, grams);
+    cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
+    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, stager);
+    cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
+                              unfit0);
+    cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
+                              unfit1);
+    cholesky_set_commit<CFG>(q0, q1, cb0r, cb1r, d0r, r0r, d1r, r1r, tiny0, tiny1);
+    FGC_DRAINED(&frontal0, 1);  // csim only (fgc_cycles.h)
+    FGC_DRAINED(&frontal1, 1);
+}
+
+// cholesky_eliminate_sets with the Gram source: passes j = -2 (the source alone: region 0's
+// streamed Grams into stage lane 0), j = -1 (the grams process alone on region 0 beside the
+// source of region 1), j = 0 ... N_REGIONS - 1 (region j, after its steps' children added
+// alone, beside the source of region j + 2 into stage lane j % 2 while the grams process reads
+// region j + 1's from the other), j = N_REGIONS (the committer alone). relin: the first solve of
+// a linearisation (the Grams from the stream, phase hgc_beside, each pass whose source reads
+// the stream gated by the producer's last instance of its region), else a retry (from GRAM_B).
+// ok false if any step was not positive definite or had a pivot too small.
+template <class CFG>
+void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
+                                    hls::stream<typename CFG::Word>& grams, bool& ok) {
+#pragma HLS ARRAY_PARTITION variable=HA0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=HA0 complete dim=4
+#pragma HLS ARRAY_PARTITION variable=HA1 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=HA1 complete dim=4
+#pragma HLS ARRAY_PARTITION variable=NF0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=NF1 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
+#pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
+#pragma HLS ARRAY_PARTITION variable=STAGE complete dim=1
+    FGC_PHASE(relin ? "hgc_beside" : "reassemble");
+    bool good = true;
+#pragma HLS ALLOCATION function instances=cholesky_sets_beside<CFG> limit=1
+    for (int j = -2; j <= N_REGIONS; ++j) {
+#pragma HLS LOOP_TRIPCOUNT max=N_REGIONS+3
+        const bool in = j >= 0 && j < N_REGIONS;
+        if (in && CHOLESKY_SETS_HAS_CHILDREN) {
+            FGC_PHASE(relin ? "hgc_beside" : "reassemble");
+            cholesky_set_alone<CFG>(REGION_STEP[2 * j]);
+            cholesky_set_alone<CFG>(REGION_STEP[2 * j + 1]);
+        }
+        const int s0 = in ? REGION_STEP[2 * j] : -1, s1 = in ? REGION_STEP[2 * j + 1] : -1;
+        const bool nx = j + 1 >= 0 && j + 1 < N_REGIONS;
+        const int n0 = nx ? REGION_STEP[2 * j + 2] : -1, n1 = nx ? REGION_STEP[2 * j + 3] : -1;
+        const bool pv = j >= 1;
+        const int q0 = pv ? REGION_STEP[2 * j - 2] : -1, q1 = pv ? REGION_STEP[2 * j - 1] : -1;
+        const int src = j + 2 < N_REGIONS && CFG::streams(j + 2) ? j + 2 : -1;
+        FGC_PHASE(relin ? "hgc_beside" : (j < 0 ? "reassemble" : "recholesky"));
+        if (relin && src >= 0) FGC_BESIDE_GATE(CFG::last_streamed(src), CFG::MOVE_DEPTH);
+        bool npd0 = false, npd1 = false, unfit0 = false, unfit1 = false;
+        bool tiny0 = false, tiny1 = false;
+        if ((j & 1) == 0) {
+            cholesky_sets_beside<CFG>(s0, s1, n0, n1, q0, q1, src, relin, mu, HA0[0], HA1[0],
+                                      HA0[1], HA1[1], NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF[0],
+                                      CONDBUF[2], CONDBUF[1], CONDBUF[3], DPIV[0], RMAX[0],
+                                      DPIV[2], RMAX[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3],
+                                      STAGE[1], STAGE[0], grams, &npd0, &npd1, &unfit0, &unfit1,
+                                      &tiny0, &tiny1);
+        } else {
+            cholesky_sets_beside<CFG>(s0, s1, n0, n1, q0, q1, src, relin, mu, HA0[1], HA1[1],
+                                      HA0[0], HA1[0], NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF[1],
+                                      CONDBUF[3], CONDBUF[0], CONDBUF[2], DPIV[1], RMAX[1],
+                                      DPIV[3], RMAX[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2],
+                                      STAGE[0], STAGE[1], grams, &npd0, &npd1, &unfit0, &unfit1,
+                                      &tiny0, &tiny1);
+        }
+        FGC_JOIN();
+        good = good && !npd0 && !npd1 && !unfit0 && !unfit1 && !tiny0 && !tiny1;
+    }
+    ok = good;
+}
+#endif  // FGC_CASCADES_BESIDE
 
 #endif  // FGC_CASCADES_H

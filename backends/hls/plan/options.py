@@ -52,9 +52,9 @@ class PlanOptions:
     allocation_scaling: str = "instances"
     state_allocation: tuple[tuple[str, int], ...] = STATE_ALLOCATION  # retract_<k>'s limits
     hgc_lanes: int = 32  # multipliers of each block type's Gram entries loop (HGC)
-    # Cholesky, one cascade: the block type with the longest HGC region streams its Grams beside
-    # the elimination (units/cholesky.py's _beside: linearize_solve), the first solve of a
-    # linearisation factored there; False: every linearize_<b> region before the elimination
+    # Cholesky (one cascade or two): the block type with the longest HGC region streams its
+    # Grams beside the elimination (units/cholesky.py's _beside: linearize_solve), the first
+    # solve of a linearisation factored there; False: every linearize_<b> region before it
     hgc_beside: bool = True
     # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
     # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and

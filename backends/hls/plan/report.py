@@ -94,6 +94,10 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
         procs = tuple(p for k in ("cpe_", "cpe1_") for p in (
             f"{k}feed", *(p for i in range(plan.options.cpe) for p in (
                 f"{k}tap{i}", f"cpe{i}" if k == "cpe_" else f"{k}{i}")), f"{k}drain"))
+        # the HGC beside the elimination: cholesky_sets_beside's Gram source (its Gram stream
+        # is the plan's channel "grams")
+        procs += ("cholesky_set_gram_source",) if any(
+            ph.name == "hgc_beside" for ph in plan.phases) else ()
         procs += ("cholesky_set_source", "cholesky_set_grams", "cholesky_set_cascade0",
                   "cholesky_set_cascade1", "cholesky_set_commit")
     else:

@@ -445,6 +445,74 @@ def beside_layout(program, tables: dict, order: list[int], big: int) -> dict:
             "step_count": count, "nb": nb, "n_stage": most * nb, "max_per_step": most}
 
 
+def beside_region_layout(program, tables: dict, regions: list[tuple[int, int]], big: int
+                         ) -> dict:
+    """:func:`beside_layout` for two cascades (:func:`cascade_regions`): the stream follows the
+    regions (each region's cascade 0 step's instances, then cascade 1's), and a stage lane holds
+    a whole region's streamed Grams (fgc_cascades.h's cholesky_set_gram_source fills region
+    r + 2's while the grams process reads region r + 1's): ``step_first`` / ``step_count`` and
+    ``factor_stage`` are per region (a factor's offset in its region's lane), ``n_stage`` the
+    most streamed Grams of a region."""
+    order = [s for reg in regions for s in reg if s >= 0]
+    lay = beside_layout(program, tables, order, big)
+    nb = lay["nb"]
+    first, count = [0] * len(regions), [0] * len(regions)
+    factor_stage = list(lay["factor_stage"])
+    at = {f: k for k, f in enumerate(lay["order"])}
+    for r, reg in enumerate(regions):
+        steps = [s for s in reg if s >= 0]
+        first[r] = lay["step_first"][steps[0]]
+        count[r] = sum(lay["step_count"][s] for s in steps)
+    for f, k in at.items():
+        r = next(r for r in range(len(regions)) if first[r] <= k < first[r] + count[r])
+        factor_stage[f] = (k - first[r]) * nb
+    most = max(count)
+    return {**lay, "factor_stage": factor_stage, "step_first": first, "step_count": count,
+            "n_stage": most * nb, "max_per_step": most}
+
+
+def beside_set_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: OperatorTable,
+                      timing: dict, lay: dict, relin: bool, steps: int, ii: int
+                      ) -> list[tuple[Phase, int | None]]:
+    """fgc_cascades.h's cholesky_eliminate_sets_beside, pass by pass (two cascades, the HGC
+    beside the elimination): :func:`cascades_phases`' passes with, in each, the Gram source of
+    the region two on (``lay``: :func:`beside_region_layout`) - first the source alone (region
+    0's streamed Grams into stage lane 0), then the grams process alone on region 0 beside the
+    source of region 1, then per region r its children added alone (``reassemble_level``) and
+    its region (``recholesky_level<r>``) beside the source of region r + 2, last the committer
+    alone. (The pass as a phase, the producer's instance its source waits for or None.)"""
+    base = cascades_phases(tables, order, dims, cpe, ops, timing)
+    n_regions = len(lay["step_count"])
+
+    def source(r: int) -> tuple[tuple[Process, ...], int | None]:
+        if r >= n_regions or not lay["step_count"][r]:
+            return (), None
+        n = lay["step_count"][r]
+        loop = (Loop("stream", n * steps, ii, timing["move"][1]) if relin
+                else kernel_loop("kept", -(-n * lay["nb"] // 2), "move", timing))
+        return (Process(f"gram_source{r}", "cpe", (loop,)),), (
+            lay["step_first"][r] + n - 1 if relin else None)
+
+    procs, gate = source(0)
+    passes: list[tuple[Phase, int | None]] = [
+        (Phase("reassemble", False, procs, linear=True), gate)]
+    j = 0
+    for phase in base:
+        if phase.name.startswith("assemble"):  # the grams alone, or children added alone
+            src, gate = source(1) if phase.name == "assemble" else ((), None)
+            passes.append((replace(phase, name=f"reassemble_level{j}",
+                                   dataflow=phase.dataflow or bool(src),
+                                   processes=phase.processes + src), gate))
+            j += 1
+            continue
+        r = int(phase.name[len("cholesky_level"):])
+        src, gate = source(r + 2) if r < n_regions else ((), None)
+        passes.append((replace(phase, name=f"recholesky_level{r}",
+                               dataflow=phase.dataflow or bool(src),
+                               processes=phase.processes + src), gate))
+    return passes
+
+
 def beside_ready(count: int, jac: Loop, rows: int, steps: int, ii: int, depth: int) -> list[int]:
     """When the producer's instance k's Gram is complete, cycles after linearize_solve starts
     (fgc_cycles.h's ready_chain): its entries start k II_jac + the datapath's depth + the rows'
@@ -760,26 +828,33 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
     instances in step order) beside the first solve's elimination with its Gram source
     (:func:`beside_cycles` on :func:`beside_passes`), and LM's retries re-solve from GRAM_B
     (phases ``reassemble`` / ``recholesky_level<t>``, per rejection). Memories: the two stage
-    lanes, GRAM_B and the Gram stream (a step's words)."""
+    lanes, GRAM_B and the Gram stream (a step's words). Two cascades (:func:`cascades_of`):
+    fgc_cascades.h's cholesky_eliminate_sets_beside, the instances in region order, a stage lane
+    and the stream's depth a region's (:func:`beside_region_layout`,
+    :func:`beside_set_passes`)."""
     program, ops, tables, timing = ctx.program, ctx.les, ctx.tables, ctx.les_timing
     at = next(k for k, (_, ph) in enumerate(ctx.phases) if ph.name == f"hgc_level{big}")
     slot, region = ctx.phases[at]
     procs = {p.name: p for p in region.processes}
     jac = procs[f"factor_{big}_jacobian"].loops[0]
     rows, entries = procs[f"reduce_{big}"].loops[:2]
-    lay = beside_layout(program, tables, order, big)
+    if cascades_of(program, ctx.opts) == 2:
+        lay = beside_region_layout(program, tables, cascade_regions(tables, order), big)
+        passes = beside_set_passes
+    else:
+        lay = beside_layout(program, tables, order, big)
+        passes = beside_passes
     steps = entries.trip // len(lay["order"])
     ready = beside_ready(len(lay["order"]), jac, rows.cycles, steps, entries.ii, entries.depth)
-    first = beside_passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps,
-                          entries.ii)
+    first = passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps, entries.ii)
     cycles, _ = beside_cycles(phase_cycles(region), ready, first, timing["move"][1])
     # the producer's region stays in the plan for the record (per "beside": priced inside
     # hgc_beside, not on its own)
     ctx.phases[at:at + 1] = [(slot, Phase("hgc_beside", False, (Process(
         f"linearize_solve_{big}", "cpe", (Loop("region", 1, 1, cycles),)),), linear=True)),
         (slot, replace(region, name="hgc_producer", per="beside"))]
-    for phase, _ in beside_passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, False,
-                                  steps, entries.ii):
+    for phase, _ in passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, False, steps,
+                           entries.ii):
         ctx.add_phase("solve", replace(phase, per="rejection"))
     _, lane_b, _, paired = gram_config(program, big, ctx.opts.hgc_lanes,
                                        jacobian_ii(region.processes),
@@ -845,7 +920,7 @@ def _frontal(ctx) -> None:
     order = [tables["LEVEL_STEPS"][i] for i in range(len(program.schedule.steps))]
     dims = {st.index: (st.frontal_dim, st.separator_dim) for st in program.schedule.steps}
     big = (beside_block([ph for _, ph in ctx.phases], program)
-           if ctx.opts.hgc_beside and sets == 1 and ctx.les.word_bits == ctx.ops.word_bits
+           if ctx.opts.hgc_beside and ctx.les.word_bits == ctx.ops.word_bits
            else None)
     if big is not None:
         _beside(ctx, big, order, dims)
