@@ -108,17 +108,19 @@ def build(ctx) -> None:
     # bound its own: the second reader counts them apart); the rounding-noise pass per block
     # type (each noise_<b> calls rounding_noise<…>: its own module): a row every padded + 3
     # cycles through its padded products and moved's three adds, then the rows' terms (at II
-    # 3·TILE: one multiplier and one adder), and noise_<b>'s running sum
+    # 3·TILE: one multiplier and one adder), and the block types' running sums (one adder)
     loops = [BoundLoop("gradient_x_norm", (("add", 2), ("mul", 2), ("compare", 2)), 1),
              BoundLoop("step_test", (("add", 4), ("mul", 4)), 1),
              BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
-    for i, b in enumerate(program.blocks):  # noise_<b>'s call: its own instance
+    for i, b in enumerate(program.blocks):  # rounding_noise<...>: its own instance per block type
         padded = _block_shape(b)[2]
         loops += [BoundLoop(f"noise_rows_{i}", (("add", padded + 3), ("mul", padded + 1)),
                             padded + 3),
                   BoundLoop(f"noise_terms_{i}", (("add", 2 * TILE), ("mul", 3 * TILE)),
-                            timing["acc2"][0]),
-                  BoundLoop(f"noise_sum_{i}", (("add", 1),), 0)]
+                            timing["acc2"][0])]
+    # the block types' running sums (noise += ...): noise_<b> is INLINE into
+    # rounding_noise_all, whose sequential body adds them one after another through one adder
+    loops.append(BoundLoop("noise_sum", (("add", len(program.blocks)),), 0))
     ctx.units.append(bound_unit("lm_control", "gain ratio, μ update, stopping rules, "
                                 "rounding noise", loops, table=ctx.ops))
     for phase in lm_control_phases(n_t, n_x, timing):

@@ -2672,8 +2672,11 @@ void produce_0(const T x[N_X], int n, hls::stream<GramWord>& grams, bool& finite
     FGC_DRAINED(&rows, 1);
 }
 
-// block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_0(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 7; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
@@ -2791,8 +2794,11 @@ void linearize_1(const T x[N_X], bool& finite) {
     FGC_DRAINED(&rows, 1);
 }
 
-// block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_1(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
@@ -2903,8 +2909,11 @@ void linearize_2(const T x[N_X], bool& finite) {
     FGC_DRAINED(&rows, 1);
 }
 
-// block 2: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 2: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_2(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
@@ -3015,8 +3024,11 @@ void linearize_3(const T x[N_X], bool& finite) {
     FGC_DRAINED(&rows, 1);
 }
 
-// block 3: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 3: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_3(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];

@@ -2531,8 +2531,11 @@ bool reduce_0() {
     return finite;
 }
 
-// block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_0(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
@@ -2596,8 +2599,11 @@ bool reduce_1() {
     return finite;
 }
 
-// block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_1(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
@@ -2661,8 +2667,11 @@ bool reduce_2() {
     return finite;
 }
 
-// block 2: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 2: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_2(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
@@ -2990,8 +2999,11 @@ bool reduce_3() {
     return finite;
 }
 
-// block 3: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 3: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_3(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 7; ++i) {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
@@ -3060,8 +3072,11 @@ bool reduce_4() {
     return finite;
 }
 
-// block 4: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 4: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_4(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 8; ++i) {
         const int f = BLOCK4_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];

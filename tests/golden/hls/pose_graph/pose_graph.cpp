@@ -1200,8 +1200,11 @@ bool reduce_0() {
     return finite;
 }
 
-// block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_0(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 6; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
@@ -1286,8 +1289,11 @@ bool reduce_1() {
     return finite;
 }
 
-// block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB)
+// block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
+// INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
+// they share its one adder (each rounding_noise<...> call stays its own module)
 T noise_1(T noise) {
+#pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
