@@ -27,6 +27,7 @@ from fgc_backends.hls.reader.text import (
     _blank_macros,
     _Count,
     _Var,
+    compiled_view,
 )
 
 
@@ -35,7 +36,7 @@ class _Scope:
     expressions and which function a call runs."""
     def __init__(self, files: Iterable[tuple[str, str]], add_latency: int):
         self.files = [(name, _blank_macros(strip_comments_and_strings(synthesis_view(text))))
-                      for name, text in files]
+                      for name, text in compiled_view(list(files))]
         self.functions: dict[str, _Function] = {}
         # Struct::name -> [(specialisation's template arguments or None, function)]
         self.members: dict[str, list[tuple[tuple[str, ...] | None, _Function]]] = {}

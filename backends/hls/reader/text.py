@@ -167,3 +167,110 @@ def _unit(f: _Function, unit: str | None) -> str | None:
     """The translation unit ``f`` is read in: its own file if it is a .cpp (a kernel), else
     (a header's function) the unit that reached it."""
     return f.file if f.file.endswith(".cpp") else unit
+
+
+_DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|elif|else|endif|define|undef|include)\b"
+                        r"([^\n]*)", re.M)
+
+
+def _condition(expr: str, defined: dict[str, str]) -> bool | None:
+    """The value of an ``#if`` / ``#elif`` expression of ``defined(A)``, macro names, integers,
+    ``!``, ``&&``, ``||`` and parentheses under the macros ``defined`` (name -> body); None
+    where it holds anything else (the reader then keeps every branch: it does not guess)."""
+    expr = re.sub(r"\bdefined\s*\(\s*(\w+)\s*\)|\bdefined\s+(\w+)",
+                  lambda m: " 1 " if (m.group(1) or m.group(2)) in defined else " 0 ", expr)
+
+    def name(m: re.Match) -> str:
+        body = defined.get(m.group(0), "0").strip() or "0"
+        return f" {int(body)} " if re.fullmatch(r"\d+", body) else " ? "
+
+    expr = re.sub(r"\b[A-Za-z_]\w*\b", name, expr)
+    if not re.fullmatch(r"[\s\d()!&|]*", expr) or not expr.strip():
+        return None
+    expr = expr.replace("&&", " and ").replace("||", " or ")
+    expr = re.sub(r"!(?!=)", " not ", expr)
+    if re.search(r"[&|]", expr):
+        return None
+    try:
+        return bool(eval(expr, {"__builtins__": {}}, {}))  # digits, parentheses, and/or/not
+    except SyntaxError:
+        return None
+
+
+def compiled_view(files: list[tuple[str, str]]) -> list[tuple[str, str]]:
+    """``files`` with the text of the preprocessor branches no translation unit compiles
+    blanked (lines kept). Each kernel (.cpp) is preprocessed from the top: its ``#define`` s
+    and those of the headers it includes (``#include "x.h"`` of a file among ``files``) decide
+    each ``#if`` / ``#ifdef`` / ``#ifndef`` / ``#elif`` / ``#else`` of the files it reaches; a
+    line is kept if some inclusion compiles it. A header no kernel includes is kept whole, as is
+    every branch of a condition this does not evaluate."""
+    texts = dict(files)
+    kept: dict[str, set[int]] = {}
+
+    def run(name: str, defined: dict[str, str], depth: int) -> None:
+        text = texts[name]
+        lines = strip_comments(text).split("\n")
+        raw = text.split("\n")
+        mine = kept.setdefault(name, set())
+        # per open #if: (the enclosing branch active, this branch active, a branch was taken)
+        stack: list[tuple[bool, bool, bool]] = []
+        active = True
+        for i, line in enumerate(lines):
+            m = _DIRECTIVE.match(line)
+            word, rest = (m.group(1), m.group(2).strip()) if m else (None, "")
+            if word in ("if", "ifdef", "ifndef"):
+                if word == "if":
+                    value = _condition(rest, defined)
+                else:
+                    value = (rest.split()[0] in defined) == (word == "ifdef") if rest else None
+                taken = value is not False
+                stack.append((active, active and taken, taken and value is not None))
+                active = active and taken
+                mine.add(i)
+                continue
+            if word in ("elif", "else") and stack:
+                outer, _, done = stack[-1]
+                value = True if word == "else" else _condition(rest, defined)
+                now = not done and value is not False
+                stack[-1] = (outer, outer and now, done or (now and value is not None))
+                active = outer and now
+                mine.add(i)
+                continue
+            if word == "endif" and stack:
+                active = stack.pop()[0]
+                mine.add(i)
+                continue
+            if not active:
+                continue
+            mine.add(i)
+            if word == "define" and rest:
+                macro = re.match(r"(\w+)(\([^)]*\))?\s*(.*)", rest)
+                if macro:
+                    defined[macro.group(1)] = macro.group(3) if not macro.group(2) else "?"
+            elif word == "undef" and rest:
+                defined.pop(rest.split()[0], None)
+            elif word == "include":
+                target = re.search(r'"([^"]+)"', raw[i])
+                child = target and target.group(1).rsplit("/", 1)[-1]
+                if child in texts and depth < 32:
+                    run(child, defined, depth + 1)
+
+    for name, _ in files:
+        if name.endswith(".cpp"):
+            run(name, {}, 0)
+    out = []
+    for name, text in files:
+        if name not in kept:
+            out.append((name, text))
+            continue
+        lines = text.split("\n")
+        out.append((name, "\n".join(line if i in kept[name] else " " * len(line)
+                                    for i, line in enumerate(lines))))
+    return out
+
+
+def strip_comments(text: str) -> str:
+    """``text`` with its comments blanked (newlines kept; strings left: an include's name)."""
+    pattern = re.compile(r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"', re.S)
+    return pattern.sub(lambda m: m.group(0) if m.group(0).startswith('"')
+                       else re.sub(r"[^\n]", " ", m.group(0)), text)
