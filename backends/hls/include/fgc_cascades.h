@@ -163,6 +163,34 @@ inline typename CFG::T cholesky_set_with_child(typename CFG::T x, int i, int c,
     return x + v;
 }
 
+// One lane's pair of the source (row i, columns j and j + 1 of a step of width w): read out
+// of ha and cleared, each with its streamed child's word added, written to out; (i, j) moved
+// on to the next pair in the feed's order. INLINE: the source's loop holds both lanes' calls.
+template <class CFG>
+inline void cholesky_set_source_pair(typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                                     int w, const int inv[CFG::MAX_W + 2],
+                                     const int off[CFG::MAX_W + 1],
+                                     const typename CFG::T nf[CFG::N_NF], int& i, int& j,
+                                     hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    const int odd_c = j & 1;
+    const int e = (j + odd_c) >> 1, o = j >> 1;
+    const T v0 = ha[i][e][0], v1 = ha[i][o][1];
+    ha[i][e][0] = T(0);
+    ha[i][o][1] = T(0);
+    const fgc_units::cpe_pair<T> p = {
+        cholesky_set_with_child<CFG>(odd_c ? v1 : v0, i, j, inv, off, nf),
+        cholesky_set_with_child<CFG>(odd_c ? v0 : v1, i, j + 1, inv, off, nf)};
+    out.write(p);
+    if (j + 2 > w) {
+        ++i;
+        j = i;
+    } else {
+        j += 2;
+    }
+}
+
 // The source process: steps s0, s1 (cascade 0's, 1's; -1 none) out of lanes ha0, ha1 into
 // out0, out1 in the feed's order (fgc_cpe.h's cpe_pair, as cholesky_assembler), both in one
 // loop at II 1 (trip the larger step's pairs), each word cleared as read, with its streamed
@@ -175,7 +203,6 @@ void cholesky_set_source(int s0, int s1,
                          const typename CFG::T nf0[CFG::N_NF], const typename CFG::T nf1[CFG::N_NF],
                          hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out0,
                          hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out1) {
-    typedef typename CFG::T T;
     enum { MAX_PAIRS = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 };
     // the lanes' even and odd columns in two banks (HA0 / HA1's last dimension, partitioned):
     // a read and a write of each bank a cycle
@@ -227,40 +254,8 @@ void cholesky_set_source(int s0, int s1,
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=ha0 inter false
 #pragma HLS DEPENDENCE variable=ha1 inter false
-        if (t < p0) {
-            const int odd_c = j0 & 1;
-            const int e = (j0 + odd_c) >> 1, o = j0 >> 1;
-            const T v0 = ha0[i0][e][0], v1 = ha0[i0][o][1];
-            ha0[i0][e][0] = T(0);
-            ha0[i0][o][1] = T(0);
-            const fgc_units::cpe_pair<T> p = {
-                cholesky_set_with_child<CFG>(odd_c ? v1 : v0, i0, j0, inv0, off0, nf0),
-                cholesky_set_with_child<CFG>(odd_c ? v0 : v1, i0, j0 + 1, inv0, off0, nf0)};
-            out0.write(p);
-            if (j0 + 2 > w0) {
-                ++i0;
-                j0 = i0;
-            } else {
-                j0 += 2;
-            }
-        }
-        if (t < p1) {
-            const int odd_c = j1 & 1;
-            const int e = (j1 + odd_c) >> 1, o = j1 >> 1;
-            const T v0 = ha1[i1][e][0], v1 = ha1[i1][o][1];
-            ha1[i1][e][0] = T(0);
-            ha1[i1][o][1] = T(0);
-            const fgc_units::cpe_pair<T> p = {
-                cholesky_set_with_child<CFG>(odd_c ? v1 : v0, i1, j1, inv1, off1, nf1),
-                cholesky_set_with_child<CFG>(odd_c ? v0 : v1, i1, j1 + 1, inv1, off1, nf1)};
-            out1.write(p);
-            if (j1 + 2 > w1) {
-                ++i1;
-                j1 = i1;
-            } else {
-                j1 += 2;
-            }
-        }
+        if (t < p0) cholesky_set_source_pair<CFG>(ha0, w0, inv0, off0, nf0, i0, j0, out0);
+        if (t < p1) cholesky_set_source_pair<CFG>(ha1, w1, inv1, off1, nf1, i1, j1, out1);
     }
     // a streamed child's add: a scatter's (II, depth)
     FGC_CYCLES("assemble", 0, "source", pairs, c0 >= 0 || c1 >= 0 ? CFG::SCATTER_II : CFG::MOVE_II,
