@@ -471,6 +471,22 @@ def beside_region_layout(program, tables: dict, regions: list[tuple[int, int]], 
             "n_stage": most * nb, "max_per_step": most}
 
 
+def _gram_source(key: int, lay: dict, relin: bool, steps: int, ii: int, timing: dict
+                 ) -> tuple[tuple[Process, ...], int | None]:
+    """The Gram source's process for step (one cascade) or region (two) ``key`` of ``lay``
+    (:func:`beside_layout` / :func:`beside_region_layout`): its streamed Grams into a stage
+    lane - a stream word every ``ii`` cycles (``steps`` an instance) on the first solve of a
+    linearisation (``relin``), two words of GRAM_B a cycle on a retry - and the producer's
+    instance it waits for (None on a retry); nothing if ``key`` has no streamed Grams."""
+    n = lay["step_count"][key]
+    if not n:
+        return (), None
+    loop = (Loop("stream", n * steps, ii, timing["move"][1]) if relin
+            else kernel_loop("kept", -(-n * lay["nb"] // 2), "move", timing))
+    return (Process(f"gram_source{key}", "cpe", (loop,)),), (
+        lay["step_first"][key] + n - 1 if relin else None)
+
+
 def beside_set_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: OperatorTable,
                       timing: dict, lay: dict, relin: bool, steps: int, ii: int
                       ) -> list[tuple[Phase, int | None]]:
@@ -485,13 +501,9 @@ def beside_set_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops:
     n_regions = len(lay["step_count"])
 
     def source(r: int) -> tuple[tuple[Process, ...], int | None]:
-        if r >= n_regions or not lay["step_count"][r]:
+        if r >= n_regions:
             return (), None
-        n = lay["step_count"][r]
-        loop = (Loop("stream", n * steps, ii, timing["move"][1]) if relin
-                else kernel_loop("kept", -(-n * lay["nb"] // 2), "move", timing))
-        return (Process(f"gram_source{r}", "cpe", (loop,)),), (
-            lay["step_first"][r] + n - 1 if relin else None)
+        return _gram_source(r, lay, relin, steps, ii, timing)
 
     procs, gate = source(0)
     passes: list[tuple[Phase, int | None]] = [
@@ -542,17 +554,11 @@ def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: Ope
     odd = {s: t % 2 for t, s in enumerate(order)}
     for e in range(len(tables["STEP_CHILDREN"])):
         odd.setdefault(tables["STEP_CHILDREN"][e], 0)
-    move_depth = timing["move"][1]
 
     def source(t: int) -> tuple[tuple[Process, ...], int | None]:
-        if t >= len(order) or not lay["step_count"][order[t]]:
+        if t >= len(order):
             return (), None
-        s = order[t]
-        n = lay["step_count"][s]
-        loop = (Loop("stream", n * steps, ii, move_depth) if relin
-                else kernel_loop("kept", -(-n * lay["nb"] // 2), "move", timing))
-        return (Process(f"gram_source{s}", "cpe", (loop,)),), (
-            lay["step_first"][s] + n - 1 if relin else None)
+        return _gram_source(order[t], lay, relin, steps, ii, timing)
 
     passes: list[tuple[Phase, int | None]] = [(Phase("reassemble", False, (
         Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),),
