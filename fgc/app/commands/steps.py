@@ -141,9 +141,8 @@ def check_hgc_before(args, program, config) -> None:
 def plan_options(args, program):
     """The accelerator plan's options for the design ``fgc compile --backend hls`` emits with
     the same --scalar, --part, --clock, --allocation, --unit-sets, --qr-unit and --hgc-before
-    (what
-    ``fgc simulate`` and ``fgc report`` price). A fixed-point --scalar is refused: the dataflow
-    design has no fixed-point units and the plan no fixed-point operator table."""
+    (what ``fgc simulate`` and ``fgc report`` price). A fixed-point --scalar is refused: the
+    dataflow design has no fixed-point units and the plan no fixed-point operator table."""
     config = hls_config(args, program)
     config.check(program)
     if config.is_fixed_point:
