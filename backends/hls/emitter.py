@@ -338,6 +338,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
             # from DELTA)
             "bs_xoff": _backsub_xoff(program),
+            "bs_lanes": plan.options.backsub_lanes,  # fgc_backsub.h's FGC_BS_LANES (> 1)
             "cpe": plan.options.cpe, "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
 
