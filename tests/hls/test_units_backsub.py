@@ -18,6 +18,7 @@ from fgc_backends.hls.units.backsub import (
     load_loop,
     retire_region,
     triangle_trip,
+    wide_load_loops,
 )
 from fgc_backends.hls.units.state_update import retire_order, retire_timing
 
@@ -206,10 +207,14 @@ def test_the_wide_triangle_runs_two_rows_of_a_column_an_iteration():
     assert triangle_trip(30, FLOAT32, lanes=2) == 16 * 8 + sum(-(-r // 2) for r in range(17, 30))
     for f in range(1, 40):
         assert (f - 1) * 8 <= triangle_trip(f, FLOAT32, lanes=2) <= triangle_trip(f, FLOAT32)
-    # the rows fold PARTIALS sums, not 2 PARTIALS: max(4 (1 + 2), 15) + 3, the divide the
-    # longer path now
+    # the solve is the triangle alone; the row loop runs in the load, after cond_load_wide,
+    # folding PARTIALS sums, not 2 PARTIALS: max(4 (1 + 2), 15) + 3, the divide the longer path
     loops = {lp.name: lp for lp in backsub_loops(2, 3, FLOAT32, name="b", lanes=2)}
-    assert loops["b_rows"].depth == 18
+    assert list(loops) == ["b_triangle", "b_last"]
+    # f = 2, s = 3: row 0 words 0 … 5 (groups 0, 1), row 1 words 7 … 11 (groups 1, 2)
+    load = wide_load_loops(2, 3, FLOAT32, 2, 0, "c")
+    assert [(lp.name, lp.trip, lp.depth) for lp in load] == [("c", 4, 17), ("c_rows", 2, 18)]
+    assert wide_load_loops(0, 3, FLOAT32, 2, 0, "c")[0].trip == 0
 
 
 def test_wide_backsub_operators_as_bound():

@@ -276,30 +276,25 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
     backsub_triangle<CFG, 1>(cond, 0, f, cols, y, z, inv, x);
 }
 
-// cond_backsub after cond_load_wide<LANES> (HlsConfig backsub_lanes): the conditional at
-// cond[sh + i (w + 1) + c] (sh: its first word's offset from its group boundary), each row's
-// min(n_i, PARTIALS) partial sums in part[b][i] (n_i: the row's groups, backsub_wide_trip's
-// terms), so the row loop folds PARTIALS sums, not 2 PARTIALS; the triangle LANES rows an
-// iteration (backsub_triangle).
+// The row loop after cond_load_wide<LANES> (HlsConfig backsub_lanes), in the loading lane's
+// process: the conditional at cond[sh + i (w + 1) + c] (sh: its first word's offset from its
+// group boundary), each row's min(n_i, PARTIALS) partial sums in part[b][i] (n_i: the row's
+// groups), folded (PARTIALS sums, not 2 PARTIALS) and subtracted from d beside 1 / R_ii, the row
+// scaled by it: y_i = z_i = (d_i - S_i xs) / R_ii, inv_i = 1 / R_ii, what the solving lane's
+// triangle starts from (cond_backsub_wide) in the next slot. Trip f, II 1, depth
+// max(La (1 + ceil(log2 P)), Ld) + Lm.
 template <class CFG, int LANES>
-void cond_backsub_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2 * LANES],
+void backsub_rows_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2 * LANES],
                        int sh, int f, int s, const typename CFG::T part[CFG::PARTIALS][CFG::MAX_F],
-                       typename CFG::T x[CFG::MAX_F]) {
+                       typename CFG::T y[CFG::MAX_F], typename CFG::T z[CFG::MAX_F],
+                       typename CFG::T inv[CFG::MAX_F]) {
     typedef typename CFG::T T;
-    enum { W = 2 * LANES };
     const int P = CFG::PARTIALS;
     const int w = f + s, cols = w + 1;
-    if (f <= 0) return;
-    T y[CFG::MAX_F], z[CFG::MAX_F], inv[CFG::MAX_F];
-#pragma HLS ARRAY_PARTITION variable=y cyclic factor=LANES
-#pragma HLS ARRAY_PARTITION variable=z cyclic factor=LANES
-#pragma HLS ARRAY_PARTITION variable=inv cyclic factor=LANES
-    // per row: y_i = (d_i - (its partial sums folded)) / R_ii; trip f, II 1, depth
-    // max(La (1 + ceil(log2 P)), Ld) + Lm
     for (int i = 0, base = sh; i < f; ++i, base += cols) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
-        const int n = (base + w) / W - (base + i) / W + 1;  // the row's groups
+        const int n = (base + w) / (2 * LANES) - (base + i) / (2 * LANES) + 1;  // its groups
         T row[CFG::PARTIALS];
         for (int b = 0; b < P; ++b) row[b] = b < n ? part[b][i] : T(0);
         const T ri = T(1) / cond[base + i];
@@ -312,7 +307,18 @@ void cond_backsub_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2
                (CFG::ADD_LAT * (1 + ceil_log2(CFG::PARTIALS)) > CFG::DIV_LAT
                     ? CFG::ADD_LAT * (1 + ceil_log2(CFG::PARTIALS)) : CFG::DIV_LAT) +
                    CFG::MUL_LAT);
-    backsub_triangle<CFG, LANES>(cond, sh, f, cols, y, z, inv, x);
+}
+
+// cond_backsub of a step cond_load_wide and backsub_rows_wide loaded (HlsConfig
+// backsub_lanes): the triangle alone, LANES rows of a column an iteration (backsub_triangle),
+// from the scaled rows y, z and reciprocals inv the load left.
+template <class CFG, int LANES>
+void cond_backsub_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2 * LANES],
+                       int sh, int f, int s, typename CFG::T y[CFG::MAX_F],
+                       typename CFG::T z[CFG::MAX_F], const typename CFG::T inv[CFG::MAX_F],
+                       typename CFG::T x[CFG::MAX_F]) {
+    if (f <= 0) return;
+    backsub_triangle<CFG, LANES>(cond, sh, f, f + s + 1, y, z, inv, x);
 }
 
 }  // namespace fgc_units
@@ -397,70 +403,79 @@ void backsub_out(const L x[CFG::MAX_F], int f, int cb, hls::stream<BsPair>& dx) 
 }
 
 #ifdef FGC_BS_LANES  // backsub_lanes > 1 (the kernel defines it only then)
-// Lane u's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load left
-// (f = 0: none this time), then its solution out (backsub_out).
+// Lane u's solve (backsub_lanes > 1): the triangle of the step its load left scaled (ry, rz,
+// rinv: the row loop ran in the load, beside the other lane's triangle), then its solution out.
+// (The parameters keep the one-lane driver's order, the wide ones appended.)
 template <class CFG>
 void backsub_set0(const L cond[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES], int f, int s,
-                  const L part[CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
-                  hls::stream<BsPair>& dx, int sh) {
+                  L ry[CFG::MAX_F], L x[CFG::MAX_F], int cb, hls::stream<BsPair>& dx,
+                  L rz[CFG::MAX_F], const L rinv[CFG::MAX_F], int sh) {
     FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
-    fgc_units::cond_backsub_wide<CFG, FGC_BS_LANES>(cond, sh, f, s, part, x);
+    fgc_units::cond_backsub_wide<CFG, FGC_BS_LANES>(cond, sh, f, s, ry, rz, rinv, x);
     backsub_out<CFG>(x, f, cb, dx);
 }
 
 template <class CFG>
 void backsub_set1(const L cond[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES], int f, int s,
-                  const L part[CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
-                  hls::stream<BsPair>& dx, int sh) {
+                  L ry[CFG::MAX_F], L x[CFG::MAX_F], int cb, hls::stream<BsPair>& dx,
+                  L rz[CFG::MAX_F], const L rinv[CFG::MAX_F], int sh) {
     FGC_BRANCH();
-    fgc_units::cond_backsub_wide<CFG, FGC_BS_LANES>(cond, sh, f, s, part, x);
+    fgc_units::cond_backsub_wide<CFG, FGC_BS_LANES>(cond, sh, f, s, ry, rz, rinv, x);
     backsub_out<CFG>(x, f, cb, dx);
 }
 
-// Lane u's load: a step's conditional from COND (at off) into the lane's buffer, S xs summed on
-// the way (xs: the separator in from DELTA; xoff >= 0: from xl, the lane's last solution).
+// Lane u's load (backsub_lanes > 1): a step's conditional from COND (at off) into the lane's
+// buffer, 2 FGC_BS_LANES words a cycle, S xs summed on the way into the load's own partial
+// sums, then the row loop: the rows scaled by their reciprocals into ry, rz, rinv (xs: the
+// separator in from DELTA; xoff >= 0: from xl, the lane's last solution).
 template <class CFG>
 void backsub_load0(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
                    int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
-                   L part[CFG::PARTIALS][CFG::MAX_F]) {
+                   L ry[CFG::MAX_F], L rz[CFG::MAX_F], L rinv[CFG::MAX_F]) {
     FGC_BRANCH();
-    fgc_units::cond_load_wide<CFG, FGC_BS_LANES>(COND, off, f, s, xs, xl, xoff, cond,
-                                                  part);
+    L part[CFG::PARTIALS][CFG::MAX_F];  // the partial sums of S xs (bank, row)
+#pragma HLS ARRAY_PARTITION variable=part complete dim=1
+    fgc_units::cond_load_wide<CFG, FGC_BS_LANES>(COND, off, f, s, xs, xl, xoff, cond, part);
+    fgc_units::backsub_rows_wide<CFG, FGC_BS_LANES>(cond, off % (2 * FGC_BS_LANES), f, s, part,
+                                                    ry, rz, rinv);
 }
 
 template <class CFG>
 void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
                    int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
-                   L part[CFG::PARTIALS][CFG::MAX_F]) {
+                   L ry[CFG::MAX_F], L rz[CFG::MAX_F], L rinv[CFG::MAX_F]) {
     FGC_BRANCH();
-    fgc_units::cond_load_wide<CFG, FGC_BS_LANES>(COND, off, f, s, xs, xl, xoff, cond,
-                                                  part);
+    L part[CFG::PARTIALS][CFG::MAX_F];
+#pragma HLS ARRAY_PARTITION variable=part complete dim=1
+    fgc_units::cond_load_wide<CFG, FGC_BS_LANES>(COND, off, f, s, xs, xl, xoff, cond, part);
+    fgc_units::backsub_rows_wide<CFG, FGC_BS_LANES>(cond, off % (2 * FGC_BS_LANES), f, s, part,
+                                                    ry, rz, rinv);
 }
 
-// A slot whose solve is on lane 0: lane 0's cond_backsub beside lane 1's cond_load.
+// A slot whose solve is on lane 0: lane 0's triangle beside lane 1's load and row loop.
 template <class CFG>
 void backsub_lane0(const L cond0[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES], int f0, int s0,
-                   const L part0[CFG::PARTIALS][CFG::MAX_F], L x0[CFG::MAX_F], int cb0,
-                   hls::stream<BsPair>& dx,
+                   L ry0[CFG::MAX_F], L x0[CFG::MAX_F], int cb0, hls::stream<BsPair>& dx,
                    int off, int f1, int s1, const L xs1[CFG::MAX_COLS], const L x1[CFG::MAX_F],
                    int xoff, L cond1[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
-                   L part1[CFG::PARTIALS][CFG::MAX_F], int sh0) {
+                   L ry1[CFG::MAX_F], L rz0[CFG::MAX_F], const L rinv0[CFG::MAX_F], int sh0,
+                   L rz1[CFG::MAX_F], L rinv1[CFG::MAX_F]) {
 #pragma HLS DATAFLOW
-    backsub_set0<CFG>(cond0, f0, s0, part0, x0, cb0, dx, sh0);
-    backsub_load1<CFG>(off, f1, s1, xs1, x1, xoff, cond1, part1);
+    backsub_set0<CFG>(cond0, f0, s0, ry0, x0, cb0, dx, rz0, rinv0, sh0);
+    backsub_load1<CFG>(off, f1, s1, xs1, x1, xoff, cond1, ry1, rz1, rinv1);
 }
 
-// A slot whose solve is on lane 1: lane 1's cond_backsub beside lane 0's cond_load.
+// A slot whose solve is on lane 1: lane 1's triangle beside lane 0's load and row loop.
 template <class CFG>
 void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES], int f1, int s1,
-                   const L part1[CFG::PARTIALS][CFG::MAX_F], L x1[CFG::MAX_F], int cb1,
-                   hls::stream<BsPair>& dx,
+                   L ry1[CFG::MAX_F], L x1[CFG::MAX_F], int cb1, hls::stream<BsPair>& dx,
                    int off, int f0, int s0, const L xs0[CFG::MAX_COLS], const L x0[CFG::MAX_F],
                    int xoff, L cond0[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
-                   L part0[CFG::PARTIALS][CFG::MAX_F], int sh1) {
+                   L ry0[CFG::MAX_F], L rz1[CFG::MAX_F], const L rinv1[CFG::MAX_F], int sh1,
+                   L rz0[CFG::MAX_F], L rinv0[CFG::MAX_F]) {
 #pragma HLS DATAFLOW
-    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx, sh1);
-    backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, part0);
+    backsub_set1<CFG>(cond1, f1, s1, ry1, x1, cb1, dx, rz1, rinv1, sh1);
+    backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, ry0, rz0, rinv0);
 }
 
 #else
@@ -544,10 +559,16 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
 #pragma HLS ARRAY_PARTITION variable=BS_XS1 complete
 #pragma HLS ARRAY_PARTITION variable=BS_X0 complete
 #pragma HLS ARRAY_PARTITION variable=BS_X1 complete
-    L bs_part0[CFG::PARTIALS][CFG::MAX_F];  // lane 0's partial sums of S xs (bank, row)
-#pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
-    L bs_part1[CFG::PARTIALS][CFG::MAX_F];  // lane 1's
-#pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=1
+    // per lane: its loaded step's rows scaled by 1 / R_ii (y, and z the copy the triangle reads
+    // x_r from) and the reciprocals, cyclic over the lanes of the triangle (a lane's bank static)
+    L bs_y0[CFG::MAX_F], bs_z0[CFG::MAX_F], bs_inv0[CFG::MAX_F];
+#pragma HLS ARRAY_PARTITION variable=bs_y0 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=bs_z0 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=bs_inv0 cyclic factor=FGC_BS_LANES
+    L bs_y1[CFG::MAX_F], bs_z1[CFG::MAX_F], bs_inv1[CFG::MAX_F];
+#pragma HLS ARRAY_PARTITION variable=bs_y1 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=bs_z1 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=bs_inv1 cyclic factor=FGC_BS_LANES
 #else
     L bs_part0[2][CFG::PARTIALS][CFG::MAX_F];  // lane 0's partial sums of S xs (word lane, bank, row)
 #pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
@@ -581,11 +602,11 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
         // the solved step's first word's offset from its group boundary (cond_load_wide's layout)
         const int ssh = sv >= 0 ? STEP_COND_OFF[sv] % (2 * FGC_BS_LANES) : 0;
         if (p == 0)
-            backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,
-                               BS_X1, xo, BS_COND1, bs_part1, ssh);
+            backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_y0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,
+                               BS_X1, xo, BS_COND1, bs_y1, bs_z0, bs_inv0, ssh, bs_z1, bs_inv1);
         else
-            backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
-                               BS_X0, xo, BS_COND0, bs_part0, ssh);
+            backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_y1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
+                               BS_X0, xo, BS_COND0, bs_y0, bs_z1, bs_inv1, ssh, bs_z0, bs_inv0);
 #else
         if (p == 0)
             backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,

@@ -84,11 +84,12 @@ def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
     beside the diagonal's reciprocal, the row scaled by it (:func:`rows_depth`); the triangle
     as one flattened loop (trip :func:`triangle_trip`: columns padded to the chain Lm + La, II 1,
     depth Lm + CHAIN: R_ir / R_ii, its product with x_r, the subtraction); x_0 = y_0 (a move).
-    Nothing for f = 0. ``lanes`` > 1 (``cond_backsub_wide``): the rows fold PARTIALS sums,
-    the triangle runs ``lanes`` rows of a column an iteration."""
+    Nothing for f = 0. ``lanes`` > 1 (``cond_backsub_wide``): the triangle alone, ``lanes``
+    rows of a column an iteration (the row loop runs in the load, :func:`wide_load_loops`)."""
     if not frontal:
         return []
-    return [Loop(f"{name}_rows", frontal, 1, rows_depth(ops, lanes)),
+    rows = [Loop(f"{name}_rows", frontal, 1, rows_depth(ops))] if lanes == 1 else []
+    return [*rows,
             Loop(f"{name}_triangle", triangle_trip(frontal, ops, lanes), 1,
                  ops.mul.latency + backsub_chain(ops)),
             Loop(f"{name}_last", 1, 1, 1)]
@@ -155,6 +156,18 @@ def backsub_xoff(tables: dict) -> tuple[int, ...]:
     return tuple(out)
 
 
+def wide_load_loops(frontal: int, separator: int, ops: OperatorTable, lanes: int, off: int,
+                    name: str) -> list[Loop]:
+    """A lane's load with ``lanes`` > 1 (fgc_backsub.h's backsub_load<u>): ``cond_load_wide``
+    (:func:`load_loop`), then the row loop (``backsub_rows_wide``: trip f, II 1, the row's
+    PARTIALS sums folded beside the reciprocal, :func:`rows_depth`), so the solving lane's
+    process holds the triangle alone and the two lanes' work is nearer even."""
+    loops = [load_loop(frontal, separator, ops, name=name, lanes=lanes, off=off)]
+    if frontal:
+        loops.append(Loop(f"{name}_rows", frontal, 1, rows_depth(ops, lanes)))
+    return loops
+
+
 def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
                        timing: dict, local: bool = False, lanes: int = 1) -> list[Loop]:
     """One slot of back_substitute() (:func:`backsub_slots`): the loaded step's separator
@@ -171,8 +184,9 @@ def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
     if sf:
         solve_loops.append(kernel_loop("solution_out", _ported(sf), "move", timing))
     off = tables["STEP_COND_OFF"][load] if load >= 0 else 0
-    region = _region_cycles([solve_loops, [load_loop(lf, ls, ops, name=f"cond_load{load}",
-                                                     lanes=lanes, off=off)]])
+    load_loops = wide_load_loops(lf, ls, ops, lanes, off, f"cond_load{load}") if lanes > 1 \
+        else [load_loop(lf, ls, ops, name=f"cond_load{load}")]
+    region = _region_cycles([solve_loops, load_loops])
     return [kernel_loop("separator_in", 0 if local else _ported(ls), "move", timing),
             Loop("backsub_lane", 1, 1, region)]
 
