@@ -251,11 +251,22 @@ def _csim_against_the_simulator(graph, solver, tmp_path, name):
     from fgc.ir.datafile import problem_data
     from fgc_backends import sim
     from fgc_backends.hls import HlsConfig, emit, run_csim
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import counts
+    from fgc_backends.hls.plan import process_network
 
     program = compile_graph(graph, solver, name=name)
-    project = emit(program, tmp_path, HlsConfig(scalar="double", backsub_lanes=2))
+    config = HlsConfig(scalar="double", backsub_lanes=2)
+    project = emit(program, tmp_path, config)
     text = (tmp_path / f"{name}.cpp").read_text()
     assert "#define FGC_BS_LANES 2" in text
+    # the process network read back from the text (the wide driver's backsub_lane<p>) is the
+    # plan's
+    procs, streams = process_network(accel_plan(program, config))
+    include = tmp_path / "include"
+    units = (include / "fgc_cpe.h").read_text() + (include / "fgc_eliminate.h").read_text()
+    assert counts(text, units, (include / "fgc_backsub.h").read_text()) == \
+        (len(procs), len(streams))
     data = problem_data(graph, program)
     reference = sim.run(program, data, precision="float64")
     result = run_csim(project, program, data, reference)  # the testbench checks it too
