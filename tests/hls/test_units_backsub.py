@@ -3,6 +3,7 @@ hand, one unit per QR unit set, the operators as bound."""
 
 from __future__ import annotations
 
+import pytest
 from hls_programs import chain
 
 from fgc_backends.cost.operators import FLOAT32
@@ -225,8 +226,6 @@ def test_wide_backsub_operators_as_bound():
 
 
 def test_backsub_lanes_are_priced_and_checked():
-    import pytest
-
     from fgc_backends.hls import HlsConfig, HlsConfigError
     program = chain(7, linear="cholesky", cpe=2)
     narrow = build_plan(program)
@@ -244,7 +243,7 @@ def test_backsub_lanes_are_priced_and_checked():
             HlsConfig(backsub_lanes=bad).check()
 
 
-def _csim_against_the_simulator(graph, solver, tmp_path, name):
+def _csim_against_the_simulator(graph, solver, tmp_path, name, units="fgc_cpe.h"):
     import numpy as np
 
     from fgc.compile import compile_graph
@@ -264,8 +263,10 @@ def _csim_against_the_simulator(graph, solver, tmp_path, name):
     # plan's
     procs, streams = process_network(accel_plan(program, config))
     include = tmp_path / "include"
-    units = (include / "fgc_cpe.h").read_text() + (include / "fgc_eliminate.h").read_text()
-    assert counts(text, units, (include / "fgc_backsub.h").read_text()) == \
+    header = (include / units).read_text()
+    if units == "fgc_cpe.h":  # the cascade's driver regions
+        header += (include / "fgc_eliminate.h").read_text()
+    assert counts(text, header, (include / "fgc_backsub.h").read_text()) == \
         (len(procs), len(streams))
     data = problem_data(graph, program)
     reference = sim.run(program, data, precision="float64")
@@ -284,3 +285,16 @@ def test_wide_back_substitution_matches_the_simulator_on_a_tree(tmp_path):
     from fgc.ir.program import SolverConfig
     _csim_against_the_simulator(example("pose_graph").build(), SolverConfig(linear="cholesky"),
                                 tmp_path, "w100_wide")
+
+
+# heavy (a second C simulation, ~20 s on 2 cores): the tree case above keeps the wide driver's
+# results in the default run
+@pytest.mark.heavy
+def test_wide_back_substitution_matches_the_simulator_on_qr(tmp_path):
+    """backsub_lanes=2 on a QR design (LIO N = 6, two unit sets: COND written by qr_commit two
+    words a cycle into its two banks), LM, double: the C simulation equals the simulator within
+    1e-9."""
+    from fgc.app.specs import example
+    from fgc.ir.program import SolverConfig
+    _csim_against_the_simulator(example("lio").build(N=6), SolverConfig(linear="qr"), tmp_path,
+                                "lio_wide", units="fgc_qr.h")
