@@ -83,6 +83,10 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     if stream is not None and config.qr_unit != "householder":
         raise HlsConfigError(f"qr_unit {config.qr_unit!r}: the streaming designs (window, "
                              "incremental) are priced with the householder QR unit only")
+    if stream is not None and config.backsub_lanes != 1:
+        raise HlsConfigError(f"backsub_lanes {config.backsub_lanes}: the streaming designs "
+                             "(window, incremental) are priced with one-lane back-substitution "
+                             "only (plan/update.py)")
     check_accel(program, config)
     check_limits(program, config)
     check_clock(program.solver.clock_mhz, config)

@@ -243,6 +243,18 @@ def test_backsub_lanes_are_priced_and_checked():
             HlsConfig(backsub_lanes=bad).check()
 
 
+def test_the_streaming_designs_refuse_wide_back_substitution():
+    # the window and incremental designs price back-substitution one lane wide (plan/update.py)
+    from fgc_backends.hls import HlsConfig, HlsConfigError, emit
+
+    class FakeLayout:  # emit refuses the option before it reads the layout
+        template = None
+
+    with pytest.raises(HlsConfigError, match="streaming designs"):
+        emit(chain(4, linear="qr"), "/nonexistent", HlsConfig(backsub_lanes=2),
+             stream=FakeLayout())
+
+
 def _csim_against_the_simulator(graph, solver, tmp_path, name, units="fgc_cpe.h"):
     import numpy as np
 
