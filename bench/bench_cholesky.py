@@ -11,6 +11,7 @@ share.
     python bench/bench_cholesky.py --cascades 2    # the two-cascade designs only
     python bench/bench_cholesky.py --before        # the HGC before the elimination (one
                                                    # cascade: hgc_beside off)
+    python bench/bench_cholesky.py --backsub-lanes 2   # back-substitution two lanes wide
 
 Model estimates at 143 MHz, float32 (no vendor tool here).
 """
@@ -44,11 +45,14 @@ def main() -> None:
     parser.add_argument("--cascades", type=int, nargs="+", choices=(1, 2), default=(1, 2))
     parser.add_argument("--before", action="store_true",
                         help="every block type's HGC before the elimination (hgc_beside off)")
+    parser.add_argument("--backsub-lanes", type=int, choices=(1, 2), default=1,
+                        help="HlsConfig.backsub_lanes: back-substitution's width")
     args = parser.parse_args()
     for (ex, n, cpe), sets in ((c, k) for c in CASES for k in args.cascades):
         program = compile_graph(example(ex).build(N=n), SolverConfig(
             method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"{ex}{cpe}")
-        config = HlsConfig(scalar="float", unit_sets=sets, hgc_beside=not args.before)
+        config = HlsConfig(scalar="float", unit_sets=sets, hgc_beside=not args.before,
+                           backsub_lanes=args.backsub_lanes)
         plan = accel_plan(program, config)
         cost, groups = plan_cost(plan), plan_groups(plan)
         with tempfile.TemporaryDirectory() as d:

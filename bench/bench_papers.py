@@ -74,6 +74,7 @@ class Config:
     lio_cpes: tuple[int, ...] = (5, 10, 15, 20, 80)
     cpes: tuple[int, ...] = (5, 20, 40, 80, 120)
     cascades: tuple[int, ...] = (1, 2)  # Cholesky: one cascade, or two side by side
+    backsub_lanes: tuple[int, ...] = (1, 2)  # back-substitution's widths (HlsConfig)
     c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/cost/params.py)
     gtsam_iterations: int = 5
     gtsam_repeats: int = 5
@@ -87,7 +88,7 @@ class Config:
 
 SMALL = Config(lio_n=5, imu_n=5, storage_ns=(4, 6), units=(1, 8), alloc_scales=(1,),
                lio_cpes=(5,), cpes=(5, 20), c123=(20,), gtsam_iterations=2, gtsam_repeats=1,
-               reads=0, stream_batch=(4,), isam_repeats=1)
+               reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(1,))
 
 
 def _progress(text: str) -> None:
@@ -114,7 +115,7 @@ def best_design(programs: dict, cfg: Config, linears=("qr", "cholesky")):
     the xc7z045 as re-priced (DSP = max(plan, second reader), BRAM36 from the plan)."""
     space = Space(linears=linears, units=cfg.units, unit_sets=cfg.unit_sets,
                   cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes, cascades=cfg.cascades,
-                  alloc_scales=cfg.alloc_scales)
+                  alloc_scales=cfg.alloc_scales, backsub_lanes=cfg.backsub_lanes)
     return search(programs, space, max_reads=cfg.reads, reader=cfg.reads != 0,
                   progress=_progress)
 

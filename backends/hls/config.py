@@ -38,6 +38,7 @@ CLOCK_TOLERANCE = 0.005  # relative: 7 ns (142.86 MHz) and 143 MHz are the same 
 CLOCK_NS = (0.5, 1000.0)  # the clock periods fgc prices and synthesises (2 GHz … 1 MHz)
 UNIT_SETS = (1, 8)  # QR/Cholesky unit sets eliminating one level's steps side by side
 ALLOCATION_LIMIT = (1, 4096)  # one operator kind's ALLOCATION limit in a factor datapath
+BACKSUB_LANES = (1, 2)  # back-substitution's widths (fgc_backsub.h: 2, COND's four ports)
 
 
 class HlsConfigError(CodegenError):
@@ -67,6 +68,10 @@ class DesignOptions:
       architecture: one DATAFLOW region per reflection, ``include/fgc_qr.h``) or ``"stream"``
       (n_u reflection stages the matrix streams through, ``include/fgc_qr_stream.h``; the
       batch design only). ``fgc compile --qr-unit``.
+    - ``backsub_lanes``: back-substitution's width (``include/fgc_backsub.h``): ``1``
+      (default) loads a conditional two words a cycle (COND's two ports) and runs the triangle
+      one row a cycle; ``2`` partitions COND cyclic over two banks, loads four words a cycle
+      and runs the triangle two rows a cycle, for more DSP (docs/hls.md, "Back-substitution").
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
@@ -78,6 +83,7 @@ class DesignOptions:
     allocation: tuple[tuple[str, int], ...] | None = None
     qr_unit: str = "householder"
     hgc_beside: bool = True
+    backsub_lanes: int = 1
 
     def check(self, program: Program | None = None) -> None:
         """Raise :class:`HlsConfigError` naming the first invalid option; with ``program``, also
@@ -98,6 +104,10 @@ class DesignOptions:
             raise HlsConfigError(f"unit_sets must be {low} … {high}, got {self.unit_sets}")
         if self.allocation is not None:
             _check_allocation(self.allocation)
+        if self.backsub_lanes not in BACKSUB_LANES or isinstance(self.backsub_lanes, bool):
+            raise HlsConfigError(f"backsub_lanes must be one of "
+                                 f"{', '.join(map(str, BACKSUB_LANES))}, got "
+                                 f"{self.backsub_lanes!r}")
         if self.qr_unit not in QR_UNITS:
             raise HlsConfigError(f"qr_unit {self.qr_unit!r}: expected one of "
                                  f"{', '.join(QR_UNITS)}")
@@ -128,7 +138,7 @@ class DesignOptions:
         precisions the design computes in (None: the Program's)."""
         base = dict(unit_sets=self.unit_sets, part=self.part, qr_unit=self.qr_unit,
                     precision=precision, les_precision=les_precision,
-                    hgc_beside=bool(self.hgc_beside))
+                    hgc_beside=bool(self.hgc_beside), backsub_lanes=int(self.backsub_lanes))
         if self.allocation:  # the design's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(self.allocation)}.items())
@@ -198,12 +208,14 @@ class HlsConfig(scalars.ScalarTypes):
     allocation: InitVar[tuple[tuple[str, int], ...] | None] = None
     qr_unit: InitVar[str | None] = None
     hgc_beside: InitVar[bool | None] = None
+    backsub_lanes: InitVar[int | None] = None
 
-    def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside) -> None:
+    def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside,
+                      backsub_lanes) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
-        old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside)
+        old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside, backsub_lanes)
         given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
                  if value is not None}
         if given:

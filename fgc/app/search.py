@@ -66,8 +66,10 @@ class Space:
     ``cascades`` (one cascade, or two side by side: ``HlsConfig.unit_sets`` of a Cholesky
     design) to Cholesky ones; ``unit_sets=None`` means the emitter's default (two on a
     two-ended chain, else one);
-    ``alloc_scales`` multiply the factor datapaths' default ``ALLOCATION`` limits; ``extra``:
-    further ``PlanOptions`` fields the emitter knows as ``HlsConfig`` fields, (name, values)."""
+    ``alloc_scales`` multiply the factor datapaths' default ``ALLOCATION`` limits;
+    ``backsub_lanes``: back-substitution's widths (``HlsConfig.backsub_lanes``, both solvers;
+    a width of 1 is the candidate without the option); ``extra``: further ``PlanOptions``
+    fields the emitter knows as ``HlsConfig`` fields, (name, values)."""
 
     linears: tuple[str, ...] = ("qr", "cholesky")
     units: tuple[int, ...] = (1, 2, 4, 8, 16, 32)
@@ -75,15 +77,18 @@ class Space:
     cpe: tuple[int, ...] = (5, 20, 40, 80, 120)
     cascades: tuple[int, ...] = (1, 2)
     alloc_scales: tuple[int, ...] = (1,)
+    backsub_lanes: tuple[int, ...] = (1,)
     scalar: str = "float"
     part: str | None = None  # None: HlsConfig's default part
     extra: tuple[tuple[str, tuple], ...] = ()
 
     def __post_init__(self):
-        for name in ("linears", "units", "unit_sets", "cpe", "cascades", "alloc_scales"):
+        for name in ("linears", "units", "unit_sets", "cpe", "cascades", "alloc_scales",
+                     "backsub_lanes"):
             if not getattr(self, name):
                 raise SearchError(f"design space: axis {name!r} is empty")
-        bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales) if int(u) < 1]
+        bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales, *self.backsub_lanes)
+               if int(u) < 1]
         bad += [k for k in self.cascades if int(k) not in (1, 2)]
         bad += [s for s in self.unit_sets if s is not None and int(s) < 1]
         if bad:
@@ -194,6 +199,8 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
     extras = [()]
     for name, values in extra_axes:
         extras = [e + ((name, v),) for e in extras for v in values]
+    # back-substitution's width on either solver (the default width is no option)
+    widths = [() if b == 1 else (("backsub_lanes", b),) for b in space.backsub_lanes]
     out = []
     for linear in space.linears:
         if linear not in programs:
@@ -203,10 +210,11 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
                 for units in space.units:
                     for sets in space.unit_sets:
                         for e in extras:
-                            out.append(Candidate("qr", units, sets, None, scale, e))
+                            out += [Candidate("qr", units, sets, None, scale, e + b)
+                                    for b in widths]
             else:
-                out += [Candidate("cholesky", None, None if k == 1 else k, c, scale)
-                        for c in space.cpe for k in space.cascades]
+                out += [Candidate("cholesky", None, None if k == 1 else k, c, scale, b)
+                        for c in space.cpe for k in space.cascades for b in widths]
     return tuple(dict.fromkeys(out))
 
 

@@ -248,3 +248,22 @@ def test_a_cholesky_space_searches_one_and_two_cascades(programs):
     assert by_sets[2].cost.dsp > by_sets[None].cost.dsp  # a second cascade's CPEs
     with pytest.raises(SearchError):
         Space(cascades=(3,))
+
+
+def test_the_search_sees_back_substitutions_width(programs):
+    """``Space.backsub_lanes``: each design with back-substitution one lane wide (no option)
+    and two (``HlsConfig.backsub_lanes=2``, fgc_backsub.h's cond_load_wide), each priced by the
+    plan of what it emits."""
+    space = Space(linears=("cholesky",), cpe=(5,), cascades=(1,), backsub_lanes=(1, 2))
+    result = search(programs, space, max_reads=0, reader=False)
+    by_width = {dict(r.candidate.extra).get("backsub_lanes", 1): r for r in result.rows}
+    assert set(by_width) == {1, 2}
+    assert "backsub_lanes=2" in by_width[2].label and "backsub" not in by_width[1].label
+    config = by_width[2].candidate.config(space)
+    assert config.backsub_lanes == 2
+    program = by_width[2].candidate.program(programs)
+    plan = build_plan(program, PlanOptions.for_config(config, program))
+    assert by_width[2].cost == plan_cost(plan) and plan.options.backsub_lanes == 2
+    assert by_width[2].cost.dsp > by_width[1].cost.dsp  # the wider load and triangle
+    with pytest.raises(SearchError):
+        Space(backsub_lanes=(0,))

@@ -56,6 +56,10 @@ class PlanOptions:
     # Grams beside the elimination (units/cholesky.py's _beside: linearize_solve), the first
     # solve of a linearisation factored there; False: every linearize_<b> region before it
     hgc_beside: bool = True
+    # back-substitution's width (fgc_backsub.h): 1, cond_load two words a cycle (COND's two
+    # ports) and the triangle one row a cycle; 2, COND cyclic over two banks, cond_load_wide
+    # four words a cycle and the triangle two rows a cycle (units/backsub.py)
+    backsub_lanes: int = 1
     # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
     # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and
     # ±1 entries are not stored), the residual and W's parameters, whitened while stacking
