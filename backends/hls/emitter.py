@@ -315,7 +315,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
     option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}" + (
-        ", 2 cascades" if any(u.name == "cpe_set1" for u in plan.units) else "")
+        ", 2 cascades" if any(u.name == "cpe_set1" for u in plan.units) else "") + (
+        f", {plan.options.cascade_lanes} lanes" if plan.options.cascade_lanes > 1 else "")
     network = [f"{len(procs)} processes, {len(streams)} streams ({option})"]
     network += [f"process {p}" for p in procs]
     network += [f"stream {ch.name} depth={ch.depth}: {ch.producer} -> {ch.consumer}"
@@ -338,7 +339,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
             # from DELTA)
             "bs_xoff": _backsub_xoff(program),
-            "cpe": plan.options.cpe, "plan": plan, **_cascade_context(program, plan),
+            "cpe": plan.options.cpe, "cascade_lanes": plan.options.cascade_lanes,
+            "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
 
 
