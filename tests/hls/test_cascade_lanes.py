@@ -92,3 +92,20 @@ def test_two_lanes_count_what_the_plan_prices(sets):
     assert phases["hgc_beside"][0] > 0
     for g, (counted, model) in phases.items():
         assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+
+
+def test_the_search_tries_two_lanes_as_its_own_family():
+    from fgc.app.search import SearchError, Space, candidates
+
+    program = compile_graph(lio.build(N=3), SolverConfig(linear="cholesky", cpe=4),
+                            name="lanessearch")
+    space = Space(linears=("cholesky",), cpe=(5, 20), cascades=(1, 2), lanes=(1, 2))
+    found = candidates(space, {"cholesky": program})
+    assert len(found) == 8
+    two = [c for c in found if c.extra == (("cascade_lanes", 2),)]
+    assert len(two) == 4 and all(c.config(space).cascade_lanes == 2 for c in two)
+    # the reader's DSP grows along the ordered axes within a family, not across lanes
+    one = next(c for c in found if c.cpe == 20 and not c.extra and c.unit_sets is None)
+    assert not one.below(next(c for c in two if c.cpe == 20 and c.unit_sets is None))
+    with pytest.raises(SearchError, match="lanes"):
+        Space(lanes=(3,))

@@ -24,9 +24,10 @@
 // row i's columns i <= c < w are the upper triangle of the frontal-and-separator Hessian (the
 // sum of its factors' Grams and its children's update matrices), column w the gradient. mu
 // (Levenberg-Marquardt damping, 0 for Gauss-Newton) is added to the f frontal diagonal entries
-// as the first round reads them. H: all zero on entry, the buffer the trailing matrix goes
-// through between rounds (with Tb inside cpe_step), left all zero: every word a later round
-// reads it clears.
+// as the first round reads them. H: the buffer the trailing matrix goes through between rounds
+// (with Tb inside cpe_step); a round reads only the words the copy back wrote into it. With
+// CFG::LANES = 1 every word a later round reads it clears (H all zero on entry stays so); with
+// LANES = 2 the feed reads two words a cycle and clears none (the array's two ports).
 //
 // Out:
 // - cond[c0 + i * (w + 1) + c], i < f, c >= i: the conditional, row i of the factor as the pivot
@@ -53,6 +54,10 @@
 // / sqrt(d): equal to rounding (~1e-15 relative in double), not bit for bit.
 //
 // ---- structure (UG1399 canonical dataflow) -------------------------------------------------
+//
+// The stream between the processes carries CFG::LANES words of a row a cycle (cpe_vec: 1, or 2 -
+// the pair of a row's words the assembly streams each cycle, so a step's words take half the
+// cycles; each CPE then updates both words of a pair, 2 LANES multipliers and LANES adders).
 //
 // Round r (pivots p0 = r N_CPE ... min(f, p0 + N_CPE) - 1) is one DATAFLOW region, cpe_round; the
 // rounds are a sequential loop in cpe_step around the region's one call site (two call sites
@@ -88,12 +93,13 @@
 //
 // ---- cycles -------------------------------------------------------------------------------
 //
-// A round streams m (m + 1) / 2 + m words, m = w - p0, + the status word; every process is one
-// pipelined loop of them at II 1, so the round takes its words plus the depth every process adds
-// to the stream (plan.py's cpe_round_depth): the feed La + 2, a tap 2, a CPE with a pivot
-// 2 Lm + La + 2 plus its wait for r, max(0, Ld - (w + 1 - p)) (0 when its row is at least Ld
-// words long), an idle tap or CPE 1 each, the drain 2 (La / Lm / Ld = CFG::ADD_LAT / MUL_LAT /
-// DIV_LAT). Paper B's CPE (sqrt, then divide, then its row scaled, then the update: Ls + Ld +
+// A round streams m (m + 1) / 2 + m words, m = w - p0 (LANES = 2: floor((m + 2)^2 / 4) - 1
+// pairs, cpe_vecs), + the status word; every process is one pipelined loop of them at II 1, so
+// the round takes its words plus the depth every process adds to the stream
+// (units/cholesky.py's cpe_round_depth): the feed La + 2, a tap 2, a CPE with a pivot
+// 2 Lm + La + 2 plus its wait for r, max(0, Ld - its row's stream words) (0 when its row is at
+// least Ld stream words long), an idle tap or CPE 1 each, the drain 2 (La / Lm / Ld =
+// CFG::ADD_LAT / MUL_LAT / DIV_LAT). Paper B's CPE (sqrt, then divide, then its row scaled, then the update: Ls + Ld +
 // Lm + La a CPE) stalled the stream on every pivot; here a pivot costs the stream 2 Lm + La + 4.
 // Each loop reports trip, II and depth to FGC_CYCLES (fgc_cycles.h); tests/hls/test_hls_units.py
 // checks the plan's cpe_step_loops against the count.
