@@ -137,7 +137,7 @@ def cases():
     out.append(("imu_window N=20 Cholesky #CPE=5 x2", imu_window.build(N=20),
                 SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
                 HlsConfig(scalar="float", unit_sets=2)))
-    # two words a cycle through the cascade (cascade_lanes=2, fgc_cpe.h's LANES): one cascade
+    # two words a cycle through the cascade (cascade_lanes=2, fgc_cpe.h's STREAM_WORDS): one cascade
     # at #CPE = 80 (one round a step), two at #CPE = 5 (three rounds a step, the later ones
     # read back from H two words a cycle)
     out.append(("imu_window N=20 Cholesky #CPE=80 L2", imu_window.build(N=20),

@@ -1,4 +1,4 @@
-"""The Cholesky cascade two words a cycle (``HlsConfig.cascade_lanes = 2``, fgc_cpe.h's LANES):
+"""The Cholesky cascade two words a cycle (``HlsConfig.cascade_lanes = 2``, fgc_cpe.h's STREAM_WORDS):
 every feed, tap, CPE and drain takes the pair of a row's words the assembly streams each cycle.
 The C simulation's results are the simulator's, it counts what the plan prices, and the plan
 prices each CPE's doubled multipliers and adders."""
@@ -70,7 +70,7 @@ def test_two_lanes_match_the_simulator(tmp_path, sets):
     project = emit(program, tmp_path, HlsConfig(scalar="double", unit_sets=sets,
                                                 cascade_lanes=2))
     text = (project.directory / f"{project.name}.cpp").read_text()
-    assert "static const int LANES = 2;" in text
+    assert "static const int STREAM_WORDS = 2;" in text
     data = problem_data(graph, program)
     reference = sim.run(program, data, precision="float64")
     result = run_csim(project, program, data, reference)

@@ -26,8 +26,8 @@
 // (Levenberg-Marquardt damping, 0 for Gauss-Newton) is added to the f frontal diagonal entries
 // as the first round reads them. H: the buffer the trailing matrix goes through between rounds
 // (with Tb inside cpe_step); a round reads only the words the copy back wrote into it. With
-// CFG::LANES = 1 every word a later round reads it clears (H all zero on entry stays so); with
-// LANES = 2 the feed reads two words a cycle and clears none (the array's two ports).
+// CFG::STREAM_WORDS = 1 every word a later round reads it clears (H all zero on entry stays so); with
+// STREAM_WORDS = 2 the feed reads two words a cycle and clears none (the array's two ports).
 //
 // Out:
 // - cond[c0 + i * (w + 1) + c], i < f, c >= i: the conditional, row i of the factor as the pivot
@@ -55,9 +55,9 @@
 //
 // ---- structure (UG1399 canonical dataflow) -------------------------------------------------
 //
-// The stream between the processes carries CFG::LANES words of a row a cycle (cpe_vec: 1, or 2 -
+// The stream between the processes carries CFG::STREAM_WORDS words of a row a cycle (cpe_vec: 1, or 2 -
 // the pair of a row's words the assembly streams each cycle, so a step's words take half the
-// cycles; each CPE then updates both words of a pair, 2 LANES multipliers and LANES adders).
+// cycles; each CPE then updates both words of a pair, 2 STREAM_WORDS multipliers and STREAM_WORDS adders).
 //
 // Round r (pivots p0 = r N_CPE ... min(f, p0 + N_CPE) - 1) is one DATAFLOW region, cpe_round; the
 // rounds are a sequential loop in cpe_step around the region's one call site (two call sites
@@ -93,7 +93,7 @@
 //
 // ---- cycles -------------------------------------------------------------------------------
 //
-// A round streams m (m + 1) / 2 + m words, m = w - p0 (LANES = 2: floor((m + 2)^2 / 4) - 1
+// A round streams m (m + 1) / 2 + m words, m = w - p0 (STREAM_WORDS = 2: floor((m + 2)^2 / 4) - 1
 // pairs, cpe_vecs), + the status word; every process is one pipelined loop of them at II 1, so
 // the round takes its words plus the depth every process adds to the stream
 // (units/cholesky.py's cpe_round_depth): the feed La + 2, a tap 2, a CPE with a pivot
@@ -119,7 +119,7 @@ struct cpe_config_example {
     static const int MAX_COLS = MAX_W + 1;   // + the gradient
     static const int MAX_F = 6;              // frontal columns
     static const int N_CPE = 5;              // Cholesky process elements (--cpe)
-    static const int LANES = 1;              // words a cycle through the cascade (1 or 2)
+    static const int STREAM_WORDS = 1;       // words a cycle through the cascade (1 or 2)
     static const int N_COND = 512, N_NF = 512;  // the kernel's COND and NF
     static const int PARTIALS = 12;          // partial sums of cond_backsub's dots (>= ADD_LAT)
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;  // float64 (plan)
@@ -139,7 +139,7 @@ inline int cpe_words(int first, int w) {
 
 // The cascade's stream word: L consecutive words of one row, the vector j of row i holding
 // columns i + L j ... i + L j + L - 1 (a row of w + 1 - i words in ceil((w + 1 - i) / L) vectors;
-// a lane past column w carries a word nobody reads). L = CFG::LANES: 1, or 2 (a cpe_pair of the
+// a lane past column w carries a word nobody reads). L = CFG::STREAM_WORDS: 1, or 2 (a cpe_pair of the
 // assembly's stream is then one vector, and every process of the round handles two words a
 // cycle).
 template <class T, int L>
@@ -205,12 +205,12 @@ inline int cpe_pairs(int w) { return (w + 2) * (w + 2) / 4 - 1; }
 // it, and the CPE needs it after the pivot's row (row words w + 1 - p).
 template <class CFG>
 inline int cpe_wait(int p, int w) {
-    const int row = (w + 1 - p + CFG::LANES - 1) / CFG::LANES;  // the row's vectors
+    const int row = (w + 1 - p + CFG::STREAM_WORDS - 1) / CFG::STREAM_WORDS;  // the row's vectors
     return CFG::DIV_LAT > row ? CFG::DIV_LAT - row : 0;
 }
 
 // Stream rows p0 ... w - 1 (upper triangle and gradient; dmu added on the diagonal of rows
-// i < f), then the status word, L = CFG::LANES words a vector: round 0 (first, p0 = 0) reads
+// i < f), then the status word, L = CFG::STREAM_WORDS words a vector: round 0 (first, p0 = 0) reads
 // them from src, the pairs the assembly streams in this order (fgc_eliminate.h's
 // cholesky_assembler), a pair at a row's even offsets (L = 1: a word of it a cycle; L = 2: the
 // pair is the vector); a later round reads them from Hin, the rows the round before left
@@ -219,9 +219,9 @@ inline int cpe_wait(int p, int w) {
 template <class CFG>
 void cpe_feed(hls::stream<cpe_pair<typename CFG::T> >& src, bool first,
               typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int w, int f,
-              typename CFG::T dmu, hls::stream<cpe_vec<typename CFG::T, CFG::LANES> >& out) {
+              typename CFG::T dmu, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& out) {
     typedef typename CFG::T T;
-    enum { L = CFG::LANES, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
+    enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int vecs = cpe_vecs<L>(p0, w);
     int i = p0, c = p0;  // the vector's first word
     cpe_pair<T> pair = {T(0), T(0)};
@@ -267,11 +267,11 @@ void cpe_feed(hls::stream<cpe_pair<typename CFG::T> >& src, bool first,
 
 // Tap K: the stream on to CPE K, and 1 / (its pivot) beside it.
 template <class CFG, int K>
-void cpe_tap(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::LANES> >& in,
-             hls::stream<cpe_vec<typename CFG::T, CFG::LANES> >& out,
+void cpe_tap(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in,
+             hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& out,
              hls::stream<typename CFG::T>& recip) {
     typedef typename CFG::T T;
-    enum { L = CFG::LANES, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
+    enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int p = p0 + K;
     const int vecs = cpe_vecs<L>(p0, w);
     const int at = p < f ? vecs - cpe_vecs<L>(p, w) : -1;  // the pivot's vector, -1: no pivot
@@ -289,11 +289,11 @@ void cpe_tap(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::LAN
 
 // CPE K of the cascade for the round starting at pivot p0.
 template <class CFG, int K>
-void cpe(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::LANES> >& in,
+void cpe(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in,
          hls::stream<typename CFG::T>& recip,
-         hls::stream<cpe_vec<typename CFG::T, CFG::LANES> >& out) {
+         hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& out) {
     typedef typename CFG::T T;
-    enum { L = CFG::LANES, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
+    enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int p = p0 + K;
     const int vecs = cpe_vecs<L>(p0, w);
     if (p >= f) {  // no pivot in this round: pass every vector and the status
@@ -364,7 +364,7 @@ void cpe(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::LANES> 
 // The N_CPE taps and CPEs, K = 0 ... N_CPE - 1, as separate calls in the region.
 template <class CFG, int K, bool END = (K == CFG::N_CPE)>
 struct cpe_cascade {
-    typedef cpe_vec<typename CFG::T, CFG::LANES> V;
+    typedef cpe_vec<typename CFG::T, CFG::STREAM_WORDS> V;
     static void run(int p0, int w, int f, hls::stream<V> link[CFG::N_CPE + 1],
                     hls::stream<V> tapped[CFG::N_CPE],
                     hls::stream<typename CFG::T> recip[CFG::N_CPE]) {
@@ -377,7 +377,7 @@ struct cpe_cascade {
 
 template <class CFG, int K>
 struct cpe_cascade<CFG, K, true> {
-    typedef cpe_vec<typename CFG::T, CFG::LANES> V;
+    typedef cpe_vec<typename CFG::T, CFG::STREAM_WORDS> V;
     static void run(int, int, int, hls::stream<V>*, hls::stream<V>*,
                     hls::stream<typename CFG::T>*) {
 #pragma HLS INLINE
@@ -388,13 +388,13 @@ struct cpe_cascade<CFG, K, true> {
 // its largest frontal |h| into rmax), the trailing rows into update (last round) or Hout; the
 // status into *bad. L words a cycle (the arrays' two ports at L = 2).
 template <class CFG>
-void cpe_drain(hls::stream<cpe_vec<typename CFG::T, CFG::LANES> >& in, int p0, int w, int f,
+void cpe_drain(hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in, int p0, int w, int f,
                typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T cond[CFG::N_COND], int c0,
                typename CFG::T update[CFG::N_NF], int u0,
                typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F], bool* bad) {
     typedef typename CFG::T T;
-    enum { L = CFG::LANES, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
+    enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int vecs = cpe_vecs<L>(p0, w);
     const int cols = w + 1, s = w - f;
     const int done = p0 + CFG::N_CPE < f ? p0 + CFG::N_CPE : f;  // rows p0 ... done - 1 are final
@@ -445,8 +445,8 @@ void cpe_round(hls::stream<cpe_pair<typename CFG::T> >& src, bool first, int p0,
                bool* bad) {
 #pragma HLS DATAFLOW
     enum { LINK_DEPTH = CFG::MAX_W, TAP_DEPTH = CFG::MAX_COLS + CFG::DIV_LAT + 2 };
-    hls::stream<cpe_vec<typename CFG::T, CFG::LANES> > link[CFG::N_CPE + 1];
-    hls::stream<cpe_vec<typename CFG::T, CFG::LANES> > tapped[CFG::N_CPE];
+    hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > link[CFG::N_CPE + 1];
+    hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > tapped[CFG::N_CPE];
     hls::stream<typename CFG::T> recip[CFG::N_CPE];
 #pragma HLS STREAM variable=link depth=LINK_DEPTH
 #pragma HLS STREAM variable=tapped depth=TAP_DEPTH

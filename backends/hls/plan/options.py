@@ -30,7 +30,7 @@ JACOBIAN_STORAGE = ("whitened", "raw")
 
 HESSIAN_STORAGE = ("frontal", "dense", "blocked")
 
-CASCADE_LANES = (1, 2)  # PlanOptions.cascade_lanes: fgc_cpe.h's LANES
+CASCADE_LANES = (1, 2)  # PlanOptions.cascade_lanes: fgc_cpe.h's STREAM_WORDS
 
 QR_UNITS = ("householder", "stream")  # PlanOptions.qr_unit: fgc_qr.h, fgc_qr_stream.h
 
@@ -58,7 +58,7 @@ class PlanOptions:
     # Grams beside the elimination (units/cholesky.py's _beside: linearize_solve), the first
     # solve of a linearisation factored there; False: every linearize_<b> region before it
     hgc_beside: bool = True
-    # Cholesky: the words a cycle through each cascade (fgc_cpe.h's LANES: 1, or 2, the pair of
+    # Cholesky: the words a cycle through each cascade (fgc_cpe.h's STREAM_WORDS: 1, or 2, the pair of
     # a row's words the assembly streams a cycle; units/cholesky.py's cpe_step_loops, each CPE's
     # operators times the lanes)
     cascade_lanes: int = 1

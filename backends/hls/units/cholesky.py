@@ -68,7 +68,7 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     [H | g] when f = 0, the singularity scale with the smallest pivot (trip f, depth Lm + Ld + 2)
     and the pivot check (the smallest pivot over the scale: trip 1, depth Ld + 2). The whole
     matrix as one step (f = n, s = 0) is what the Cholesky phase of :func:`build_plan` prices; a
-    multifrontal design sums this over its steps. ``lanes`` (fgc_cpe.h's LANES): the words a
+    multifrontal design sums this over its steps. ``lanes`` (fgc_cpe.h's STREAM_WORDS): the words a
     cycle through the cascade, a round's trip its :func:`cpe_vecs` + 1."""
     w = frontal + separator
     loops = []
@@ -798,7 +798,7 @@ def build(ctx) -> None:
             Loop("macs", math.ceil(macs / opts.hgc_lanes), 1,
                  ops.mul.latency + ops.add.latency),)),), linear=True))
     # a CPE as fgc_cpe.h's loops bind it: its tap's loop divides (1 / d), its Update loop
-    # multiplies twice and subtracts per lane (LANES words a cycle), at II 1
+    # multiplies twice and subtracts per lane (STREAM_WORDS words a cycle), at II 1
     lanes = opts.cascade_lanes if opts.hessian_storage == "frontal" else 1
     ctx.units.append(Unit("cpe", "Cholesky process element: tap (1 / d) + Update", c,
                           (("add", lanes), ("mul", 2 * lanes), ("div", 1))))
@@ -898,7 +898,7 @@ def _frontal(ctx) -> None:
     conditionals into COND beside the next region (fgc_cascades.h's cholesky_sets region)."""
     program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
     sets = cascades_of(program, ctx.opts)
-    lanes = ctx.opts.cascade_lanes  # fgc_cpe.h's LANES: words a stream word of the cascade
+    lanes = ctx.opts.cascade_lanes  # fgc_cpe.h's STREAM_WORDS: words a stream word of the cascade
     sizes = ctx.sizes
     cols = sizes["MAX_W"] + 1
     # cpe_round's streams: link[0 ... #CPE] (feed -> tap 0, CPE K -> tap K + 1, CPE #CPE - 1 ->
