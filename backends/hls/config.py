@@ -68,10 +68,11 @@ class DesignOptions:
       architecture: one DATAFLOW region per reflection, ``include/fgc_qr.h``) or ``"stream"``
       (n_u reflection stages the matrix streams through, ``include/fgc_qr_stream.h``; the
       batch design only). ``fgc compile --qr-unit``.
-    - ``cascade_lanes``: Cholesky: the words a cycle through each cascade (``include/fgc_cpe.h``'s
-      ``STREAM_WORDS``): 1 (default), or 2 - every feed, tap, CPE and drain takes the pair of a row's
-      words the assembly streams each cycle, so a step's ~w²/2 words take half the cycles, at
-      twice each CPE's multipliers and adders. ``fgc compile --cascade-lanes``.
+    - ``cascade_lanes``: Cholesky: the words a cycle through each cascade
+      (``include/fgc_cpe.h``'s ``STREAM_WORDS``): 1 (default), or 2 - every feed, tap, CPE and
+      drain takes the pair of a row's words the assembly streams each cycle, so a step's ~w²/2
+      words take half the cycles, at twice each CPE's multipliers and adders. ``fgc compile
+      --cascade-lanes``.
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.

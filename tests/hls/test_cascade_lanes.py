@@ -1,7 +1,7 @@
-"""The Cholesky cascade two words a cycle (``HlsConfig.cascade_lanes = 2``, fgc_cpe.h's STREAM_WORDS):
-every feed, tap, CPE and drain takes the pair of a row's words the assembly streams each cycle.
-The C simulation's results are the simulator's, it counts what the plan prices, and the plan
-prices each CPE's doubled multipliers and adders."""
+"""The Cholesky cascade two words a cycle (``HlsConfig.cascade_lanes = 2``, fgc_cpe.h's
+STREAM_WORDS): every feed, tap, CPE and drain takes the pair of a row's words the assembly
+streams each cycle. The C simulation's results are the simulator's, it counts what the plan
+prices, and the plan prices each CPE's doubled multipliers and adders."""
 
 from __future__ import annotations
 

@@ -1,9 +1,10 @@
 """The fixed HLS unit headers (backends/hls/include/fgc_qr.h, fgc_cpe.h) against numpy.
 
 A small C++ driver (below) instantiates qr_step for N_UNITS in {1, 4, 8} and cpe_step for N_CPE in
-{1, 5, 20} (one word a cycle through the cascade, and two: configurations 101, 105, 120), reads cases on stdin and prints the flags, the conditional, the update rows and the
-cycles counted by fgc_cycles.h. It is compiled twice: with FGC_COUNT_CYCLES (the cases run on it)
-and, syntax only, without (the synthesis view of the macros must compile warning-free as well).
+{1, 5, 20} (one word a cycle through the cascade, and two: configurations 101, 105, 120), reads
+cases on stdin and prints the flags, the conditional, the update rows and the cycles counted by
+fgc_cycles.h. It is compiled twice: with FGC_COUNT_CYCLES (the cases run on it) and, syntax only,
+without (the synthesis view of the macros must compile warning-free as well).
 """
 
 from __future__ import annotations

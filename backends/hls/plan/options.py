@@ -58,9 +58,9 @@ class PlanOptions:
     # Grams beside the elimination (units/cholesky.py's _beside: linearize_solve), the first
     # solve of a linearisation factored there; False: every linearize_<b> region before it
     hgc_beside: bool = True
-    # Cholesky: the words a cycle through each cascade (fgc_cpe.h's STREAM_WORDS: 1, or 2, the pair of
-    # a row's words the assembly streams a cycle; units/cholesky.py's cpe_step_loops, each CPE's
-    # operators times the lanes)
+    # Cholesky: the words a cycle through each cascade (fgc_cpe.h's STREAM_WORDS: 1, or 2, the
+    # pair of a row's words the assembly streams a cycle; units/cholesky.py's cpe_step_loops,
+    # each CPE's operators times the lanes)
     cascade_lanes: int = 1
     # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
     # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and
