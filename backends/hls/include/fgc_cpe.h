@@ -233,7 +233,7 @@ void cpe_feed(hls::stream<cpe_pair<typename CFG::T> >& src, bool first,
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=Hin inter false
         cpe_vec<T, L> x;
-        if (L == 1) {
+        if (CFG::STREAM_WORDS == 1) {
             if (first) {
                 const bool even = ((c - i) & 1) == 0;
                 if (even) pair = src.read();
@@ -242,13 +242,15 @@ void cpe_feed(hls::stream<cpe_pair<typename CFG::T> >& src, bool first,
                 cpe_set(x, 0, Hin[i][c]);
                 Hin[i][c] = T(0);
             }
-        } else if (first) {
-            pair = src.read();
-            cpe_set(x, 0, pair.lo);
-            cpe_set(x, L - 1, pair.hi);
         } else {
-            cpe_set(x, 0, Hin[i][c]);
-            cpe_set(x, L - 1, Hin[i][c + 1 <= w ? c + 1 : c]);
+            if (first) {
+                pair = src.read();
+                cpe_set(x, 0, pair.lo);
+                cpe_set(x, L - 1, pair.hi);
+            } else {
+                cpe_set(x, 0, Hin[i][c]);
+                cpe_set(x, L - 1, Hin[i][c + 1 <= w ? c + 1 : c]);
+            }
         }
         cpe_set(x, 0, cpe_get(x, 0) + (c == i && i < f ? dmu : T(0)));  // a first word: a diagonal
         out.write(x);
@@ -260,7 +262,7 @@ void cpe_feed(hls::stream<cpe_pair<typename CFG::T> >& src, bool first,
         }
     }
     cpe_vec<T, L> status;
-    for (int l = 0; l < L; ++l) cpe_set(status, l, T(0));
+    for (int l = 0; l < CFG::STREAM_WORDS; ++l) cpe_set(status, l, T(0));
     out.write(status);  // status: nothing wrong upstream
     FGC_CYCLES("cpe_feed", 0, "rows", vecs + 1, 1, CFG::ADD_LAT + 2);
 }
@@ -311,7 +313,7 @@ void cpe(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_
     const int trail = before + row;                // then the later rows, Updated
     T h[CFG::MAX_COLS + L];  // row p, h[c - p] (L = 2: one word past the row, never used)
 #pragma HLS ARRAY_PARTITION variable=h complete
-    if (L > 1) {
+    if (CFG::STREAM_WORDS > 1) {
         for (int k = 0; k < CFG::MAX_COLS + L; ++k) {
 #pragma HLS UNROLL
             h[k] = T(0);
@@ -332,14 +334,14 @@ void cpe(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_
 #pragma HLS DEPENDENCE variable=h inter false
         const cpe_vec<T, L> x = in.read();
         if (t >= before && t < trail) {
-            for (int l = 0; l < L; ++l) h[(t - before) * L + l] = cpe_get(x, l);
+            for (int l = 0; l < CFG::STREAM_WORDS; ++l) h[(t - before) * L + l] = cpe_get(x, l);
         }
         if (t == before) bad = !(cpe_get(x, 0) > T(0));
         if (t == trail) r = recip.read();  // the status word when row p is the last
         const bool upd = t >= trail && t < vecs;
         const int hi = upd ? i - p : 0, hc = upd ? c - p : 0;
         cpe_vec<T, L> o;
-        for (int l = 0; l < L; ++l) {
+        for (int l = 0; l < CFG::STREAM_WORDS; ++l) {
             const T y = h[hc + l] * r;
             const T z = upd ? h[hi] * y : T(0);
             cpe_set(o, l, cpe_get(x, l) - z);  // a word that passes: x - 0 = x
@@ -407,7 +409,7 @@ void cpe_drain(hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in, in
 #pragma HLS PIPELINE II=1
         const cpe_vec<T, L> x = in.read();
         T b = c == i ? T(0) : big;  // the row's largest so far
-        for (int l = 0; l < L; ++l) {
+        for (int l = 0; l < CFG::STREAM_WORDS; ++l) {
             const int cc = c + l;
             if (cc <= w) {
                 if (i < done) {
