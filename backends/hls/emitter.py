@@ -83,6 +83,9 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     if stream is not None and config.qr_unit != "householder":
         raise HlsConfigError(f"qr_unit {config.qr_unit!r}: the streaming designs (window, "
                              "incremental) are priced with the householder QR unit only")
+    if config.cascade_lanes != 1 and program.solver.linear != "cholesky":
+        raise HlsConfigError(f"cascade_lanes={config.cascade_lanes}: the lanes of the Cholesky "
+                             f"cascade; this Program solves with {program.solver.linear}")
     check_accel(program, config)
     check_limits(program, config)
     check_clock(program.solver.clock_mhz, config)

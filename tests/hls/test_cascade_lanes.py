@@ -61,6 +61,12 @@ def test_lanes_double_each_cpe_and_are_checked():
         HlsConfig(cascade_lanes=2).check(qr)
 
 
+def test_a_qr_design_refuses_lanes(tmp_path):
+    qr = compile_graph(lio.build(N=3), SolverConfig(linear="qr"), name="lanesqr")
+    with pytest.raises(HlsConfigError, match="Cholesky cascade"):
+        emit(qr, tmp_path, HlsConfig(cascade_lanes=2))
+
+
 @pytest.mark.parametrize("sets", [1, 2])
 def test_two_lanes_match_the_simulator(tmp_path, sets):
     # LM in double, #CPE = 4 < f = 15: every step in four rounds, the later ones read back
