@@ -75,6 +75,9 @@ class Config:
     cpes: tuple[int, ...] = (5, 20, 40, 80, 120)
     cascades: tuple[int, ...] = (1, 2)  # Cholesky: one cascade, or two side by side
     backsub_lanes: tuple[int, ...] = (1, 2)  # back-substitution's widths (HlsConfig)
+    # Cholesky: words a cycle through each cascade (HlsConfig.cascade_lanes; (1, 2) lets the
+    # search weigh two words a cycle against more CPEs)
+    lanes: tuple[int, ...] = (1,)
     c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/cost/params.py)
     gtsam_iterations: int = 5
     gtsam_repeats: int = 5
@@ -115,7 +118,8 @@ def best_design(programs: dict, cfg: Config, linears=("qr", "cholesky")):
     the xc7z045 as re-priced (DSP = max(plan, second reader), BRAM36 from the plan)."""
     space = Space(linears=linears, units=cfg.units, unit_sets=cfg.unit_sets,
                   cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes, cascades=cfg.cascades,
-                  alloc_scales=cfg.alloc_scales, backsub_lanes=cfg.backsub_lanes)
+                  lanes=cfg.lanes, alloc_scales=cfg.alloc_scales,
+                  backsub_lanes=cfg.backsub_lanes)
     return search(programs, space, max_reads=cfg.reads, reader=cfg.reads != 0,
                   progress=_progress)
 
@@ -350,16 +354,17 @@ def paper_b(cfg: Config) -> list[Row]:
     floor = latency_floor(prog, build_plan(prog, PlanOptions.of(prog)).ops)
     # the cycles' ratio from the fewest to the most CPEs, one cascade each, and with two
     # cascades at the most (twice the CPEs)
-    one = {r.candidate.cpe: r for r in result.rows
-           if r.candidate.alloc_scale == 1 and r.candidate.unit_sets is None}
-    two = {r.candidate.cpe: r for r in result.rows
-           if r.candidate.alloc_scale == 1 and r.candidate.unit_sets == 2}
+    one = {r.candidate.cpe: r for r in result.rows if r.candidate.alloc_scale == 1
+           and r.candidate.unit_sets is None and not r.candidate.extra}
+    two = {r.candidate.cpe: r for r in result.rows if r.candidate.alloc_scale == 1
+           and r.candidate.unit_sets == 2 and not r.candidate.extra}
     lo, hi = cfg.cpes[0], cfg.cpes[-1]
     lo_hi = f"{one[lo].cycles / one[hi].cycles:.2f}×" + (
         f", {lo} → {hi} x2: {one[lo].cycles / two[hi].cycles:.2f}×" if hi in two else "")
     rows = [Row(b, "latency per solve at #CPE " + " / ".join(map(str, cfg.cpes))
                 + " (re-priced fit)", "171 ms (5) / 8.97 ms (120)",
-                " / ".join(f"#CPE={c}{' x2' if by_cpe[c].candidate.unit_sets else ''} "
+                " / ".join(f"#CPE={c}{' x2' if by_cpe[c].candidate.unit_sets else ''}"
+                           f"{' L2' if by_cpe[c].candidate.extra else ''} "
                            f"{by_cpe[c].latency_ms * iters:.2f} ms "
                            f"({by_cpe[c].verdict}: {by_cpe[c].bound})" for c in cfg.cpes)
                 + f" ({iters} LM iterations; {cfg.cpes[0]} → {cfg.cpes[-1]} CPEs "

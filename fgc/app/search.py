@@ -65,7 +65,8 @@ class Space:
     """The axes searched. ``units`` and ``unit_sets`` apply to QR designs, ``cpe`` and
     ``cascades`` (one cascade, or two side by side: ``HlsConfig.unit_sets`` of a Cholesky
     design) to Cholesky ones; ``unit_sets=None`` means the emitter's default (two on a
-    two-ended chain, else one);
+    two-ended chain, else one); ``lanes``: Cholesky's words a cycle through each cascade
+    (``HlsConfig.cascade_lanes``, 1 or 2; a design of 2 carries it as its ``extra``);
     ``alloc_scales`` multiply the factor datapaths' default ``ALLOCATION`` limits;
     ``backsub_lanes``: back-substitution's widths (``HlsConfig.backsub_lanes``, both solvers;
     a width of 1 is the candidate without the option); ``extra``: further ``PlanOptions``
@@ -76,6 +77,7 @@ class Space:
     unit_sets: tuple[int | None, ...] = (None,)
     cpe: tuple[int, ...] = (5, 20, 40, 80, 120)
     cascades: tuple[int, ...] = (1, 2)
+    lanes: tuple[int, ...] = (1,)
     alloc_scales: tuple[int, ...] = (1,)
     backsub_lanes: tuple[int, ...] = (1,)
     scalar: str = "float"
@@ -83,16 +85,18 @@ class Space:
     extra: tuple[tuple[str, tuple], ...] = ()
 
     def __post_init__(self):
-        for name in ("linears", "units", "unit_sets", "cpe", "cascades", "alloc_scales",
-                     "backsub_lanes"):
+        for name in ("linears", "units", "unit_sets", "cpe", "cascades", "lanes",
+                     "alloc_scales", "backsub_lanes"):
             if not getattr(self, name):
                 raise SearchError(f"design space: axis {name!r} is empty")
         bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales, *self.backsub_lanes)
                if int(u) < 1]
         bad += [k for k in self.cascades if int(k) not in (1, 2)]
+        bad += [k for k in self.lanes if int(k) not in (1, 2)]
         bad += [s for s in self.unit_sets if s is not None and int(s) < 1]
         if bad:
-            raise SearchError(f"design space: counts must be >= 1 (cascades 1 or 2), got {bad}")
+            raise SearchError(f"design space: counts must be >= 1 (cascades and lanes 1 or 2), "
+                              f"got {bad}")
         unknown = sorted(set(self.linears) - {"qr", "cholesky"})
         if unknown:
             raise SearchError(f"design space: unknown linear solver(s) {unknown}")
@@ -213,8 +217,10 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
                             out += [Candidate("qr", units, sets, None, scale, e + b)
                                     for b in widths]
             else:
-                out += [Candidate("cholesky", None, None if k == 1 else k, c, scale, b)
-                        for c in space.cpe for k in space.cascades for b in widths]
+                out += [Candidate("cholesky", None, None if k == 1 else k, c, scale,
+                                  (() if la == 1 else (("cascade_lanes", la),)) + b)
+                        for c in space.cpe for k in space.cascades for la in space.lanes
+                        for b in widths]
     return tuple(dict.fromkeys(out))
 
 

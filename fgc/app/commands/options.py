@@ -188,6 +188,10 @@ def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
                        help=f"{where}: unit sets eliminating a level's steps side by side, "
                             "1 … 8 (default: 2 on a two-ended chain, else 1); Cholesky: 1 or 2 "
                             "cascades (default 1)")
+        h.add_argument("--cascade-lanes", type=int, choices=(1, 2), metavar="L",
+                       help=f"{where}: Cholesky: words a cycle through each cascade, 1 (the "
+                            "default) or 2 (every CPE two words a cycle: half a step's cycles "
+                            "in the cascade, twice its multipliers and adders)")
         h.add_argument("--qr-unit", choices=("householder", "stream"),
                        help=f"{where}: the QR unit set: householder (paper A's, one DATAFLOW "
                             "region per reflection; the default) or stream (n_u reflection "

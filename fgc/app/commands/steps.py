@@ -108,7 +108,8 @@ def hls_config(args, program):
             ("part", getattr(args, "part", None)), ("clock_ns", clock[1] if clock else None),
             ("allocation", getattr(args, "allocation", None)),
             ("unit_sets", getattr(args, "unit_sets", None)),
-            ("qr_unit", getattr(args, "qr_unit", None))) if value},
+            ("qr_unit", getattr(args, "qr_unit", None)),
+            ("cascade_lanes", getattr(args, "cascade_lanes", None))) if value},
         **({"hgc_beside": False} if getattr(args, "hgc_before", False) else {}))
     config = hls.HlsConfig(scalar=getattr(args, "scalar", None) or c_scalar(program),
                            design=design)
@@ -153,9 +154,9 @@ def plan_options(args, program):
 
 
 def refuse_hls_design(args, backend: str) -> None:
-    """--allocation, --unit-sets, --qr-unit and --hgc-before shape the HLS design: other
-    backends have no such thing."""
-    for flag in ("allocation", "unit_sets", "qr_unit", "hgc_before"):
+    """--allocation, --unit-sets, --qr-unit, --cascade-lanes and --hgc-before shape the HLS
+    design: other backends have no such thing."""
+    for flag in ("allocation", "unit_sets", "qr_unit", "hgc_before", "cascade_lanes"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc {args.command}: --{flag.replace('_', '-')} applies to "
                              f"--backend hls only (not {backend})")

@@ -3354,6 +3354,7 @@ struct LesConfig {
     static const int MAX_COLS = ::fgc::MAX_W + 1;  // w + 1: frontal, separator, right-hand side
     static const int MAX_F = ::fgc::MAX_F;
     static const int N_CPE = ::fgc::N_CPE;
+    static const int STREAM_WORDS = 1;  // --cascade-lanes: words a cycle through the cascade
     static const int N_COND = ::fgc::N_COND, N_NF = ::fgc::N_NF;  // the cascade's drain writes them
     static const bool LM = true;  // false: Gauss-Newton, no damping rows
     // fgc_eliminate.h's loops: the tables' largest trip counts, the plan's (II, depth) of L
