@@ -86,7 +86,8 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
                           default=1.0))
 
 
-def measure_stream(n: int, out: Path, config=None, units: int | None = None) -> dict:
+def measure_stream(n: int, out: Path, config=None, units: int | None = None,
+                   batch: tuple[int, ...] = (5, 15, 25)) -> dict:
     """Paper A's on-chip stream design at N = ``n``: the plan's DSP per part (window kernel,
     batch kernel, stream section) beside the reader's, and the reader's II-short / carried
     loops. The reader's window kernel is what the window kernel's own top (``<name>_top``: its
@@ -95,7 +96,7 @@ def measure_stream(n: int, out: Path, config=None, units: int | None = None) -> 
     reading: every copy the stream's own code adds (the marginal's QR set, the kept net's Log /
     retraction datapaths, tau's loops, a kernel function called from a second site).
     ``config``: the design's HlsConfig (unit sets, ALLOCATION; default the default design),
-    ``units``: n_u (default the Program's)."""
+    ``units``: n_u (default the Program's), ``batch``: the batch keyframes (those below n)."""
     import fgc_backends
     from fgc.app import streaming
 
@@ -103,7 +104,7 @@ def measure_stream(n: int, out: Path, config=None, units: int | None = None) -> 
     solver = SolverConfig(precision="float32", linear="qr",
                           **({"units": units} if units is not None else {}))
     program = streaming.compile_stream(graph, solver, incremental=3,
-                                       batch_every=tuple(b for b in (5, 15, 25) if b < n))
+                                       batch_every=tuple(b for b in batch if b < n))
     hls = fgc_backends.load("hls")
     config = dataclasses.replace(config, scalar="float") if config else hls.Config(scalar="float")
     pricer = streaming.WindowPricer(streaming.stream_program(graph, program), config=config)

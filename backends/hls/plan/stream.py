@@ -319,6 +319,10 @@ class WindowUpdateModel:
         self.layout = layout
         t = layout.template
         config = for_program(t, config)
+        if config.design.qr_unit != "householder":
+            raise PlanError(f"the on-chip stream design's price is modelled on the Householder "
+                            f"QR unit (its update's QR steps on the rows non-zero in that "
+                            f"update); --qr-unit {config.design.qr_unit} is not")
         self.plan = plan = accel_plan(t, config)
         self.clock_mhz = plan.clock_mhz
         self.group = plan_groups(plan)
