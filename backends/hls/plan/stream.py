@@ -23,7 +23,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from fgc_backends.cost.structure import entering_blocks, stacked_pattern, step_columns
-from fgc_backends.hls.plan.cost import merge_plans, plan_cost
+from fgc_backends.hls.plan.cost import merge_plans, phase_cycles, plan_cost
 from fgc_backends.hls.plan.loops import _assign, _tables, kernel_loop, kernel_timing, plan_sizes
 from fgc_backends.hls.plan.model import Loop, Phase, PlanError, Process, Unit
 from fgc_backends.hls.plan.report import PHASE_TRIGGER, plan_groups, unit_sets
@@ -302,6 +302,13 @@ def _relinearize(ev: dict) -> int:
     return int(relin)
 
 
+def _call_cost(plan) -> int:
+    """The cost pass at X that LM control runs once per solve before its first linearisation
+    (``cost_x``: the plan's per-call ``factor_cost`` phase, the "cost" event), 0 if none."""
+    return sum(phase_cycles(ph) for ph in plan.phases
+               if ph.name == "factor_cost" and ph.per == "call")
+
+
 class WindowUpdateModel:
     """The price of each call of the on-chip window's design (``<name>_stream``): the
     accelerator plan of the emitted template (:func:`fgc_backends.hls.emitter.accel_plan`, the
@@ -322,6 +329,7 @@ class WindowUpdateModel:
         self.plan = plan = accel_plan(t, config)
         self.clock_mhz = plan.clock_mhz
         self.group = plan_groups(plan)
+        self.cost_x = _call_cost(plan)
         self.les = plan.target.ops("float32" if config.linear_cxx == "float" else "float64")
         self._qr = {}
         self.sets = max(1, unit_sets(plan))
@@ -333,7 +341,7 @@ class WindowUpdateModel:
         if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
             bplan = accel_plan(layout.batch.template, config)
             self.batch = {"layout": layout.batch, "plan": bplan, "group": plan_groups(bplan),
-                          "sets": max(1, unit_sets(bplan))}
+                          "sets": max(1, unit_sets(bplan)), "cost_x": _call_cost(bplan)}
         phases = self._stream_phases(kernel_timing(plan.ops), kernel_timing(self.les),
                                      layout.matvec_ii(config.linear_cxx, config.part))
         self._design = replace(self._merged(), phases=self.plan.phases + phases)
@@ -507,6 +515,10 @@ class WindowUpdateModel:
                                    self.les, unit=unit)
         terms = [Term("batch_gather", st[f"stream_batch{j}_gather"], 2, False,
                       f"keyframes 0 … {j}'s estimates to the batch kernel (gathered, copied in)")]
+        if ev.get("cost", 0) and batch["cost_x"]:
+            terms.append(Term("batch_cost_x", batch["cost_x"], ev["cost"], False,
+                              "the batch kernel's cost pass at X before LM's first "
+                              "linearisation"))
         for g in sorted(group):
             trigger = PHASE_TRIGGER.get(g)
             times = ev.get(trigger, 0) if trigger else 0
@@ -531,23 +543,31 @@ class WindowUpdateModel:
         return terms
 
     @staticmethod
-    def events_of(iterations: int, rejected: int = 0, noise: int = 0) -> dict:
+    def events_of(iterations: int, rejected: int = 0, noise: int = 0,
+                  status: str = "converged") -> dict:
         """The solve's event counts from its iterations: each iteration a linearisation, a
         solve (and its back-substitution, the cost at X_TRIAL beside it: none fails), a
         retraction and (but the last, which converged) an accepted step; the start's cost pass
         (at X: ``cost``); ``rejected`` trial steps add a solve, a back-substitution and a
         retraction each. (LM then stopped where it last linearised: a leaving keyframe's
-        marginal reuses those rows, no ``relinearize``.)"""
+        marginal reuses those rows, no ``relinearize``.) ``status`` "max_iterations" (the
+        one-step policy: a Gauss-Newton step an update, k_max = 1): the last iteration took
+        its step too, so every iteration accepted one and the marginal (a batch step's store)
+        linearises again at the new estimate (:func:`_relinearize`)."""
         k = int(iterations)
+        last = status == "max_iterations"
         return {"linearize": k, "solve": k + rejected, "backsub": k + rejected,
-                "retract": k + rejected, "cost": 1, "accept": max(0, k - 1), "noise": noise}
+                "retract": k + rejected, "cost": 1, "accept": k if last else max(0, k - 1),
+                "noise": noise}
 
-    def price(self, keyframe: int, iterations: int, events: dict | None = None):
-        """The :class:`UpdatePrice` of keyframe ``keyframe``'s call."""
+    def price(self, keyframe: int, iterations: int, events: dict | None = None,
+              status: str = "converged"):
+        """The :class:`UpdatePrice` of keyframe ``keyframe``'s call (``status``: the update's,
+        for :meth:`events_of` when no ``events`` are given)."""
         lay, st = self.layout, self.stream
         m = min(keyframe, lay.size - 1)
         first = max(0, keyframe - lay.window)
-        ev = dict(events) if events is not None else self.events_of(iterations)
+        ev = dict(events) if events is not None else self.events_of(iterations, status=status)
         terms = [Term("keyframe_in", st[f"stream_keyframe_in{m}"], 1, False,
                       f"keyframe {keyframe}'s storage and {len(lay.new_dest[m])} data words in "
                       f"(slot {m})")]
@@ -581,6 +601,9 @@ class WindowUpdateModel:
                                   f"the window's {g} phase, once per {trigger}" + (
                                       " (on its rows non-zero in this update)" if g == "qr"
                                       else "")))
+        if ev.get("cost", 0) and self.cost_x:
+            terms.append(Term("cost_x", self.cost_x, ev["cost"], False,
+                              "the cost pass at X before LM's first linearisation"))
         marginal = 0
         if m == lay.window and self.layout_marginal:
             # the window's rows at its optimum: computed again only if LM took a step after its
