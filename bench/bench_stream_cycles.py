@@ -80,7 +80,7 @@ def measure(keyframes: int, window: int, scalar: str, incremental: int | None = 
         # one), in their terms
         ev.setdefault("relinearize", 0)
         ev["linearize"] = ev.get("linearize", 0) - ev["relinearize"]
-        if record["mode"] == "batch":
+        if record["mode"] == "batch" and not model.reuses(ev):
             ev["solve"] = ev.get("solve", 0) - 1  # the batch store's elimination, in its term
         price = model.price(record["keyframe"], record["iterations"], ev, record["status"])
         rows.append((record, cycles, price))

@@ -109,7 +109,10 @@ def isam2_per_keyframe(graph: Graph, problem: GtsamProblem, clusters, windows=No
     the factors reaching across into the window are kept linear at the estimate before the
     keyframe (:func:`linear_at`), as fgc keeps them inside τ; batch steps hold nothing and
     restore the nonlinear factors. Each keyframe: update, then update() until no variable moves
-    by ``tol``.
+    by ``tol``; ``settle`` False: one update per keyframe (one Gauss-Newton step relinearising
+    every variable it may: the one-step policy, ``SolverConfig.one_step``), the factors across
+    the window's edge then kept linear at ISAM2's linearisation point (where the update before
+    linearised them, as the one-step stream stores its τ and kept conditionals).
     """
     gtsam = _gtsam()
     isam = gtsam.ISAM2(_isam2_params())
@@ -129,7 +132,8 @@ def isam2_per_keyframe(graph: Graph, problem: GtsamProblem, clusters, windows=No
                 remove.append(slot[i])
                 linear.symmetric_difference_update({i})
                 factors.add(linear_at(graph, problem, problem.graph.at(i),
-                                      isam.calculateEstimate())
+                                      isam.calculateEstimate() if settle
+                                      else isam.getLinearizationPoint())
                             if i in linear else problem.graph.at(i))
                 added.append(i)
         for key in cluster:

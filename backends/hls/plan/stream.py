@@ -337,6 +337,9 @@ class WindowUpdateModel:
             raise PlanError("internal error: the stream model's QR steps are not the plan's")
         ctx = layout.context(config.linear_cxx, config.part)
         self.layout_marginal = ctx["marginal"]
+        # the one-step policy (SolverConfig.one_step): the step taken, the store is the
+        # update's own factorisation (fgc_stream.h's took_step)
+        self.one_step = t.solver.one_step
         self.batch = None
         if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
             bplan = accel_plan(layout.batch.template, config)
@@ -395,7 +398,11 @@ class WindowUpdateModel:
                                                            plan_sizes(t)["MAX_W"],
                                                            t.solver.method == "lm", kt),
                                   *commit_loops(tables, s, kt, False),
-                                  move("rows", n * (n + 1)), *write_tau)]
+                                  move("rows", n * (n + 1)), *write_tau),
+                    # the one-step policy: slots 0 and 1 copied before the solve; the step
+                    # taken, the solve's own NF rows are τ (no stack, QR step or commit)
+                    _stream_phase("lin_points", move("x", 2 * kf)),
+                    _stream_phase("marginal_reused", move("rows", n * (n + 1)), *write_tau)]
         if self.batch is not None:
             b = lay.batch
             words = n * (2 * n + 1)
@@ -410,8 +417,10 @@ class WindowUpdateModel:
                                          move("x", (j + 1) * kf)))
                 if j >= lay.window:
                     kept = j - lay.window + 1
+                    # (the one-step policy: τ's linearisation point copied before the call)
+                    tau_lin = (move("x", kf),) if self.one_step else ()
                     out.append(_stream_phase(f"batch{j}_kept", move("x", words, kept),
-                                             move("x", kept * kf), *write_tau))
+                                             move("x", kept * kf), *tau_lin, *write_tau))
         return tuple(out)
 
     def _merged(self):
@@ -526,13 +535,14 @@ class WindowUpdateModel:
                 each = qr_damped if g == "qr" else group[g]
                 terms.append(Term(f"batch_{g}", each, times, False,
                                   f"the batch kernel's {g} phase, once per {trigger}"))
-        relin = _relinearize(ev)
-        store = (relin * (group["factor_jacobian"] + group["gradient"]) + group["qr_stack"]
-                 + qr_store + group["qr_commit"])
-        terms.append(Term("batch_store", store, 1, False,
-                          f"keyframes 0 … {j} " + ("linearised at the optimum and " if relin
-                                                   else "") + "eliminated serially at μ = 0 "
-                          "(their conditionals and the factors they pass)"))
+        if not self.reuses(ev):
+            relin = _relinearize(ev)
+            store = (relin * (group["factor_jacobian"] + group["gradient"]) + group["qr_stack"]
+                     + qr_store + group["qr_commit"])
+            terms.append(Term("batch_store", store, 1, False,
+                              f"keyframes 0 … {j} " + ("linearised at the optimum and " if relin
+                                                       else "") + "eliminated serially at μ = 0 "
+                              "(their conditionals and the factors they pass)"))
         terms.append(Term("batch_out", st[f"stream_batch{j}_out"], 1, False,
                           "the optimum, the conditionals and τ out of the batch kernel, the "
                           "optimum scattered to the kept memory and the window"))
@@ -559,6 +569,11 @@ class WindowUpdateModel:
         return {"linearize": k, "solve": k + rejected, "backsub": k + rejected,
                 "retract": k + rejected, "cost": 1, "accept": k if last else max(0, k - 1),
                 "noise": noise}
+
+    def reuses(self, ev: dict) -> bool:
+        """Whether the update's store is its own solve's factorisation: the one-step policy
+        with the step taken (an accepted step; fgc_stream.h's ``took_step``)."""
+        return self.one_step and ev.get("accept", 0) >= 1
 
     def price(self, keyframe: int, iterations: int, events: dict | None = None,
               status: str = "converged"):
@@ -605,7 +620,17 @@ class WindowUpdateModel:
             terms.append(Term("cost_x", self.cost_x, ev["cost"], False,
                               "the cost pass at X before LM's first linearisation"))
         marginal = 0
-        if m == lay.window and self.layout_marginal:
+        if m == lay.window and self.layout_marginal and self.one_step:
+            terms.append(Term("lin_points", st["stream_lin_points"], 1, False,
+                              "slots 0 and 1 copied before the solve (the one-step policy "
+                              "keeps the leaving keyframe's conditional and τ there)"))
+        if m == lay.window and self.layout_marginal and self.reuses(ev):
+            marginal = st["stream_marginal_reused"]
+            terms.append(Term("marginal", marginal, 1, False,
+                              "keyframe leaving: the one-step solve's slot 0 step is the store "
+                              "(its rows at μ = 0, at the update's start): τ's signs, mean and "
+                              "words"))
+        elif m == lay.window and self.layout_marginal:
             # the window's rows at its optimum: computed again only if LM took a step after its
             # last linearisation (fgc_stream.h, stream_call, before the marginal's region, by
             # LM's own linearisation instance; counted: the "relinearize" event)
