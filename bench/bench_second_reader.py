@@ -85,7 +85,7 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
                           default=1.0))
 
 
-def measure_stream(n: int, out: Path) -> dict:
+def measure_stream(n: int, out: Path, solver: SolverConfig | None = None) -> dict:
     """Paper A's on-chip stream design at N = ``n``: the plan's DSP per part (window kernel,
     batch kernel, stream section) beside the reader's, and the reader's II-short / carried
     loops. The reader's window kernel is what the window kernel's own top (``<name>_top``: its
@@ -97,7 +97,7 @@ def measure_stream(n: int, out: Path) -> dict:
     from fgc.app import streaming
 
     graph = example("lio").build(N=n)
-    solver = SolverConfig(precision="float32", linear="qr")
+    solver = solver or SolverConfig(precision="float32", linear="qr")
     program = streaming.compile_stream(graph, solver, incremental=3,
                                        batch_every=tuple(b for b in (5, 15, 25) if b < n))
     pricer = streaming.WindowPricer(streaming.stream_program(graph, program))
