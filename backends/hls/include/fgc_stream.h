@@ -325,14 +325,22 @@ void reexpress(int c, const T x[STREAM_KF_X]) {
 }
 
 // A conditional (R | S | d, row-major KF_T x (2 KF_T + 1): a QR unit's COND block) stored as
-// kept keyframe c's, a word a cycle.
+// kept keyframe c's, each row scaled by its pivot's reciprocal on the way (R unit-diagonal: the
+// walk's back-substitution divides by nothing; the re-expression's S J and d - S Log act on rows
+// alike), a word a cycle.
 template <class CFG>
 void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) {
     const int cols = 2 * STREAM_KF_T + 1;
+    L rinv[STREAM_KF_T];
+    for (int i = 0; i < STREAM_KF_T; ++i) {
+#pragma HLS PIPELINE II=CFG::L_DIV_II
+        rinv[i] = L(1) / cond[i * cols + i];
+    }
+    FGC_CYCLES("kept", 0, "reciprocal", STREAM_KF_T, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
     for (int e = 0; e < STREAM_KF_T * (2 * STREAM_KF_T + 1); ++e) {
 #pragma HLS PIPELINE II=1
         const int i = e / cols, k = e % cols;
-        const L v = cond[e];
+        const L v = cond[e] * rinv[i];
         if (k < STREAM_KF_T) {
             KEPT_R[(c * STREAM_KF_T + i) * STREAM_KF_T + k] = v;
         } else if (k < 2 * STREAM_KF_T) {
@@ -341,7 +349,7 @@ void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) 
             KEPT_D[c * STREAM_KF_T + i] = v;
         }
     }
-    FGC_CYCLES("kept", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    FGC_CYCLES("kept", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH + L_MUL_LAT);
 }
 
 // Slot 0's conditional (COND of its step: R | S | d, row-major f x (w + 1)) kept as keyframe c's,
@@ -361,7 +369,7 @@ void keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
 
 // Back-substitution through the kept conditionals c = first - 1 ... 0 from the window's slot 0
 // (keyframe first, x0: its estimate copied out of X):
-// x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
+// x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)), R_c unit-diagonal (rows scaled as kept).
 template <class CFG>
 void kept_walk(int first, const T x0[STREAM_KF_X]) {
 #pragma HLS INLINE
@@ -384,10 +392,9 @@ void kept_walk(int first, const T x0[STREAM_KF_X]) {
             delta[i] = KEPT_D[c * STREAM_KF_T + i] - row[i];
         }
         FGC_CYCLES("kept", 0, "rhs", STREAM_KF_T, CFG::L_SCATTER_II, CFG::L_SCATTER_DEPTH);
-        // R_c upper triangular, column by column: delta_i final, then taken off the rows above it
+        // R_c upper triangular with a unit diagonal (kept_conditional scaled its rows), column
+        // by column: delta_i final, then taken off the rows above it
         for (int i = STREAM_KF_T - 1; i >= 0; --i) {
-            delta[i] = delta[i] / KEPT_R[(c * STREAM_KF_T + i) * STREAM_KF_T + i];
-            FGC_CYCLES("kept", 0, "divide", 1, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
             // (delta[r], r < i, each updated once from delta[i], which this loop never writes)
             for (int r = 0; r < i; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T

@@ -379,6 +379,11 @@ class WindowUpdateModel:
             curved = sum(1 for w in lay.vector_words() if w < 0)
             vector_diff = Loop("vector_difference", n, 1, kt["div"][1] + 3 * kt["acc"][0],
                                n - curved)
+            # a conditional kept: its pivots' reciprocals, then its rows scaled as they are
+            # copied (kept_conditional; R unit-diagonal, so the walk divides by nothing)
+            lmul = lt["acc"][1] - lt["acc"][0]
+            keep_one = (kernel_loop("reciprocal", n, "div", lt),
+                        Loop("cond", n * (2 * n + 1), kt["move"][0], kt["move"][1] + lmul))
             out += [_stream_phase("kept_slot0", move("x", kf)),
                     _stream_phase("kept_reexpress", one, replace(one, repeat=4 * curved),
                                   Loop("difference", n, 1, kt["div"][1], curved), vector_diff,
@@ -386,9 +391,8 @@ class WindowUpdateModel:
                                   replace(matvec, name="sj_column", repeat=curved),
                                   Loop("sj_vector", n, 1, lt["acc"][1], n - curved),
                                   move("s_out", n * n), move("x", kf)),
-                    _stream_phase("kept_store", move("cond", n * (2 * n + 1)), move("x", kf)),
-                    _stream_phase("kept_walk_each", one, matvec, scatter,
-                                  kernel_loop("divide", 1, "div", lt, n), *columns, one,
+                    _stream_phase("kept_store", *keep_one, move("x", kf)),
+                    _stream_phase("kept_walk_each", one, matvec, scatter, *columns, one,
                                   move("x", kf)),
                     _stream_phase("kept_walk_base", move("x", kf))]
         if self.layout_marginal:  # the marginalisation but its linearisation and QR step
@@ -419,7 +423,8 @@ class WindowUpdateModel:
                     kept = j - lay.window + 1
                     # (the one-step policy: τ's linearisation point copied before the call)
                     tau_lin = (move("x", kf),) if self.one_step else ()
-                    out.append(_stream_phase(f"batch{j}_kept", move("x", words, kept),
+                    out.append(_stream_phase(f"batch{j}_kept",
+                                             *(replace(loop, repeat=kept) for loop in keep_one),
                                              move("x", kept * kf), *tau_lin, *write_tau))
         return tuple(out)
 
