@@ -447,16 +447,16 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
     }
     FGC_CYCLES("batch", 0, "gather", (j + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     // the one-step policy: the kept conditionals and tau are linearised where the batch kernel's
-    // one step linearised the chain, these estimates (kept points and tau's taken here)
+    // one step linearised the chain, these estimates (kept points and tau's point taken here;
+    // tau's, a keyframe's words, whatever the policy)
+    if (CFG::ONE_STEP && j >= STREAM_W) batch_points<CFG>(j);
     T tau_lin[STREAM_KF_X];
-    if (CFG::ONE_STEP && j >= STREAM_W) {
-        batch_points<CFG>(j);
-        for (int k = 0; k < STREAM_KF_X; ++k) {
+    const int tau_kf = j >= STREAM_W ? j - STREAM_W + 1 : 0;
+    for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-            tau_lin[k] = BATCH_X[(j - STREAM_W + 1) * STREAM_KF_X + k];
-        }
-        FGC_CYCLES("batch", 0, "tau_lin", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        tau_lin[k] = BATCH_X[tau_kf * STREAM_KF_X + k];
     }
+    FGC_CYCLES("batch", 0, "tau_lin", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     int binfo[4];
     CFG::batch_solve(j, j >= STREAM_W ? j - STREAM_W : -1, BATCH_X, BATCH_COND, BATCH_TAU, errors,
                       binfo);
@@ -613,19 +613,16 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         marginal = batch_step<CFG>(total, first, errors, info);
     } else {
 #endif
-        // the one-step policy: slots 0 and 1 where the update linearises them (a leaving
-        // keyframe's conditional and tau are kept there once the step is taken)
+        // slots 0 and 1 where the update linearises them: under the one-step policy a leaving
+        // keyframe's conditional and tau are kept there once the step is taken (copied whatever
+        // the policy, a word a cycle)
         T lin01[2 * STREAM_KF_X];
-#ifdef FGC_STREAM_MARGINAL
-        if (CFG::ONE_STEP && m == STREAM_W) {
-            FGC_PHASE("marginal");
-            for (int k = 0; k < 2 * STREAM_KF_X; ++k) {
+        FGC_PHASE("marginal");
+        for (int k = 0; k < 2 * STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-                lin01[k] = X[SLOT_X[k]];
-            }
-            FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+            lin01[k] = X[SLOT_X[k]];
         }
-#endif
+        FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
         CFG::lm_solve(errors, info);
         // the one-step update took its step: its solve's factorisation is the store
         const bool reuse = m == STREAM_W && CFG::took_step(info);

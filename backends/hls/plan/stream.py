@@ -412,6 +412,8 @@ class WindowUpdateModel:
             words = n * (2 * n + 1)
             out += [_stream_phase(f"batch_in{c}", move("x", kf), move("d", len(d)))
                     for c, d in enumerate(b.new_dest)]
+            # τ's linearisation point copied before the batch kernel's call
+            out.append(_stream_phase("batch_tau_lin", move("x", kf)))
             for j in b.keyframes:
                 out.append(_stream_phase(f"batch{j}_gather", move("x", (j + 1) * kf)))
                 out.append(_stream_phase(f"batch{j}_out", move("x", (j + 1) * kf),
@@ -421,11 +423,9 @@ class WindowUpdateModel:
                                          move("x", (j + 1) * kf)))
                 if j >= lay.window:
                     kept = j - lay.window + 1
-                    # (the one-step policy: τ's linearisation point copied before the call)
-                    tau_lin = (move("x", kf),) if self.one_step else ()
                     out.append(_stream_phase(f"batch{j}_kept",
                                              *(replace(loop, repeat=kept) for loop in keep_one),
-                                             move("x", kept * kf), *tau_lin, *write_tau))
+                                             move("x", kept * kf), *write_tau))
         return tuple(out)
 
     def _merged(self):
@@ -528,7 +528,10 @@ class WindowUpdateModel:
         qr_store = qr_solve_cycles(batch["plan"], b.template, zero, False, batch["sets"],
                                    self.les, unit=unit)
         terms = [Term("batch_gather", st[f"stream_batch{j}_gather"], 2, False,
-                      f"keyframes 0 … {j}'s estimates to the batch kernel (gathered, copied in)")]
+                      f"keyframes 0 … {j}'s estimates to the batch kernel (gathered, copied in)"),
+                 Term("batch_tau_lin", st["stream_batch_tau_lin"], 1, False,
+                      "τ's linearisation point (the batch kernel's start) copied before its "
+                      "call")]
         if ev.get("cost", 0) and batch["cost_x"]:
             terms.append(Term("batch_cost_x", batch["cost_x"], ev["cost"], False,
                               "the batch kernel's cost pass at X before LM's first "
@@ -625,10 +628,9 @@ class WindowUpdateModel:
             terms.append(Term("cost_x", self.cost_x, ev["cost"], False,
                               "the cost pass at X before LM's first linearisation"))
         marginal = 0
-        if m == lay.window and self.layout_marginal and self.one_step:
-            terms.append(Term("lin_points", st["stream_lin_points"], 1, False,
-                              "slots 0 and 1 copied before the solve (the one-step policy "
-                              "keeps the leaving keyframe's conditional and τ there)"))
+        terms.append(Term("lin_points", st["stream_lin_points"], 1, False,
+                          "slots 0 and 1 copied before the solve (the one-step policy keeps a "
+                          "leaving keyframe's conditional and τ there)"))
         if m == lay.window and self.layout_marginal and self.reuses(ev):
             marginal = st["stream_marginal_reused"]
             terms.append(Term("marginal", marginal, 1, False,
