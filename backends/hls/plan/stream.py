@@ -116,6 +116,7 @@ KEPT_MATVEC_OPS = (("add", 1), ("mul", 1))  # kept_matvec: + ×
 # (− × ÷ each), d_update (−), sj_column and sj_vector (+ × each); kept_walk's rhs (−) and
 # column (−= ×); the sequential code's + × ÷ (the vector directions' differences, R's divides)
 KEPT_TASK_OPS = (("add", 8), ("mul", 5), ("div", 3))
+KEPT_SCALE_OPS = (("mul", 1), ("div", 1))  # kept_conditional: 1 / R_ii, each word × it
 ARITHMETIC = ("add", "mul", "div")
 
 
@@ -466,7 +467,11 @@ class WindowUpdateModel:
                       Unit("stream_kept_matvec", "S times a vector (kept_matvec)", 1,
                            KEPT_MATVEC_OPS),
                       Unit("stream_kept_task", "the kept net's re-expression and walk: their "
-                           "loops and sequential code", 1, KEPT_TASK_OPS)]
+                           "loops and sequential code", 1, KEPT_TASK_OPS),
+                      Unit("stream_kept_scale", "a kept conditional's pivot reciprocals and "
+                           "its rows scaled by them (kept_conditional, per call site: keep's, "
+                           "a batch step's)", 1 + int(self.batch is not None),
+                           KEPT_SCALE_OPS)]
         return tuple(units)
 
     def design_plan(self):
