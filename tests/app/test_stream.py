@@ -176,6 +176,17 @@ def test_cli_verify_incremental_matches_isam2_per_keyframe(capsys):
     assert "batch steps 3" in text and "gtsam.ISAM2" in text and "PASSED" in text
 
 
+def test_cli_verify_one_step_policy_against_one_isam2_update_per_keyframe(capsys):
+    """``--solver gn --max-iterations 1``: the one-step policy, judged against one ISAM2 update
+    per keyframe (tolerance 1e-5); its updates end at the iteration limit by design."""
+    rc = main(["verify", LIO, "-p", "N=6", "--incremental", "3", "--batch-every", "3,",
+               "--solver", "gn", "--max-iterations", "1"])
+    text = capsys.readouterr().out
+    assert rc == 0, text
+    assert "one update per keyframe" in text and "ran its one step" in text
+    assert "tolerance 1e-05" in text
+
+
 def test_cli_simulate_incremental(capsys):
     rc = main(["simulate", LIO, "-p", "N=5", "--incremental", "2", "-q"])
     text = capsys.readouterr().out
