@@ -44,6 +44,14 @@
 // - x_0 = y_0 (a move).
 // No DATAFLOW inside: the driver below runs a lane's cond_backsub beside the other lane's
 // cond_load (backsub_lane<p>). Cycles to FGC_CYCLES (fgc_cycles.h) as the loops state them.
+//
+// Two lanes wide (HlsConfig backsub_lanes = 2; the kernel defines FGC_BS_LANES, the driver
+// partitions COND and the lanes' buffers cyclic over two banks): cond_load_wide<CFG, LANES>
+// reads an aligned group of 2 LANES words of one row a cycle (static banks), its products summed
+// by a tree before the row's partial sum; backsub_rows_wide<CFG, LANES> folds a row's PARTIALS
+// sums into y, z, inv in the loading lane's process; cond_backsub_wide<CFG, LANES> is the
+// triangle alone, LANES rows of a column an iteration (backsub_triangle<CFG, LANES>, which
+// cond_backsub runs with LANES = 1). docs/hls.md, "Back-substitution two lanes wide".
 #ifndef FGC_BACKSUB_H
 #define FGC_BACKSUB_H
 
