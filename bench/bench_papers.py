@@ -11,7 +11,9 @@ the fastest design (plan cycles) over linear solver, n_u, QR unit sets, #CPE and
 scale that FITS the xc7z045 on honest figures, DSP = max(plan, the second reader's DSP of the
 emitted design), BRAM36 from the plan; the latency floor of one iteration
 (``fgc.app.floor``) is printed beside it. Reading a design emits it (tens of seconds for LIO
-N=30); reads are cached in ``$FGC_CACHE_DIR`` and bounded (``--reads``, progress on stderr).
+N=30): the search reads in plan-speed order, skipping designs the plan puts over the part,
+until one fits as re-priced (so it cannot miss the fastest that fits); reads are cached in
+``$FGC_CACHE_DIR``, progress on stderr, ``--reads N`` an optional cap.
 
     FGC_CACHE_DIR=... python bench/bench_papers.py            # LIO N=30, IMU N=50
     FGC_CACHE_DIR=... python bench/bench_papers.py --reads 0  # the plan's figures alone
@@ -72,23 +74,39 @@ class Config:
     lio_cpes: tuple[int, ...] = (5, 10, 15, 20, 80)
     cpes: tuple[int, ...] = (5, 20, 40, 80, 120)
     cascades: tuple[int, ...] = (1, 2)  # Cholesky: one cascade, or two side by side
+    backsub_lanes: tuple[int, ...] = (1, 2)  # back-substitution's widths (HlsConfig)
+    # Cholesky: words a cycle through each cascade (HlsConfig.cascade_lanes; (1, 2) lets the
+    # search weigh two words a cycle against more CPEs)
+    lanes: tuple[int, ...] = (1,)
     c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/cost/params.py)
     gtsam_iterations: int = 5
     gtsam_repeats: int = 5
-    # designs the search may emit and read per search (cache hits are free): 10, as 6 left
-    # LIO's fastest design that fits (two cascades of 15 CPEs, 896 DSP by the plan) unread
-    reads: int = 10
+    # a cap on the designs the search may emit and read per search (cache hits are free);
+    # None: no cap, the search reads in plan-speed order until one fits (fgc.app.search);
+    # 0: the plan's figures alone
+    reads: int | None = None
     stream_batch: tuple[int, ...] = (5, 15, 25)  # paper A's batch keyframes
     # the stream's update policy: ISAM2's, one Gauss-Newton step an update (what the timed
     # isam.update does per keyframe; fgc.app.streaming.one_step_solver), or False: LM to
     # convergence each update
     stream_one_step: bool = True
     isam_repeats: int = 3
+    # the on-chip stream design's search (paper_a_stream): n_u, unit sets, the factor datapaths'
+    # ALLOCATION limits (None: the default design's; smaller limits: fewer operators)
+    stream_units: tuple[int, ...] = (1, 2, 4, 8)
+    stream_unit_sets: tuple[int, ...] = (1, 2)
+    stream_allocations: tuple = (None, (("add", 8), ("mul", 12), ("div", 2)),
+                                 (("add", 4), ("mul", 6), ("div", 1)),
+                                 (("add", 2), ("mul", 3), ("div", 1)),
+                                 (("add", 1), ("mul", 1), ("div", 1)))
+    stream_reads: int = 2  # stream designs the search emits and reads (about 25 s each)
 
 
 SMALL = Config(lio_n=5, imu_n=5, storage_ns=(4, 6), units=(1, 8), alloc_scales=(1,),
                lio_cpes=(5,), cpes=(5, 20), c123=(20,), gtsam_iterations=2, gtsam_repeats=1,
-               reads=0, stream_batch=(4,), isam_repeats=1)
+               reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(1,),
+               stream_units=(1, 4),
+               stream_allocations=(None, (("add", 1), ("mul", 1), ("div", 1))), stream_reads=1)
 
 
 def _progress(text: str) -> None:
@@ -115,8 +133,9 @@ def best_design(programs: dict, cfg: Config, linears=("qr", "cholesky")):
     the xc7z045 as re-priced (DSP = max(plan, second reader), BRAM36 from the plan)."""
     space = Space(linears=linears, units=cfg.units, unit_sets=cfg.unit_sets,
                   cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes, cascades=cfg.cascades,
-                  alloc_scales=cfg.alloc_scales)
-    return search(programs, space, max_reads=cfg.reads, reader=cfg.reads > 0,
+                  lanes=cfg.lanes, alloc_scales=cfg.alloc_scales,
+                  backsub_lanes=cfg.backsub_lanes)
+    return search(programs, space, max_reads=cfg.reads, reader=cfg.reads != 0,
                   progress=_progress)
 
 
@@ -169,8 +188,8 @@ def _res(c) -> str:
 def _honest(row) -> str:
     if row.reader_dsp is not None:
         read = f"reader {row.reader_dsp:,}"
-    elif row.reader_at_least:
-        read = f"reader >= {row.reader_at_least:,}, implied by {row.implied_by}"
+    elif row.implied_by:
+        read = f"reader <= {row.implied_by}'s, implied"
     else:
         read = "not read"
     return (f"{row.dsp:,} DSP (plan {row.cost.dsp:,}, {read}) / {row.cost.bram36:g} BRAM36 / "
@@ -260,10 +279,133 @@ def paper_a(cfg: Config) -> list[Row]:
     return rows
 
 
+@dataclass
+class StreamDesign:
+    """One candidate of the on-chip stream design's search (:func:`stream_search`): its options,
+    the plan's resources (by part) and its price of every update of the stream (ms, model
+    estimates), the second reader's DSP when it was read."""
+
+    units: int
+    unit_sets: int | None
+    allocation: tuple | None
+    dsp: int
+    bram36: float
+    parts: dict
+    latency_ms: np.ndarray
+    device: tuple[int, float]  # the part's DSP, BRAM36
+    reader_dsp: int | None = None
+    reader_parts: tuple = ()
+    held: dict = dataclasses.field(default_factory=dict)  # WindowUpdateModel.duplicated()
+
+    @property
+    def one_set_dsp(self) -> int:
+        """A design NOT built, by this candidate's plan: one set of units and datapaths for the
+        window's solve and the batch steps (each unit kind at the larger of the two kernels'
+        DSP) and the stream section without the marginal's own copy of unit set 0 — the bound
+        issue 33 item 5's sharing could reach with these options."""
+        marginal = self.held.get("QR units", {}).get("stream section (the marginal's copy)", 0)
+        kernel = sum(max(w.get("window kernel", 0), w.get("batch kernel", 0))
+                     for w in self.held.values())
+        return kernel + self.parts["stream section"][0] - marginal
+
+    @property
+    def label(self) -> str:
+        alloc = ("default ALLOCATION" if self.allocation is None else "ALLOCATION "
+                 + ",".join(f"{k}={v}" for k, v in self.allocation))
+        sets = "default unit sets" if self.unit_sets is None else f"{self.unit_sets} unit set(s)"
+        return f"n_u={self.units}, {sets}, {alloc}"
+
+    @property
+    def median_ms(self) -> float:
+        return float(np.median(self.latency_ms))
+
+    @property
+    def p99_ms(self) -> float:
+        return float(np.percentile(self.latency_ms, 99))
+
+    @property
+    def fits_plan(self) -> bool:
+        return self.dsp <= self.device[0] and self.bram36 <= self.device[1]
+
+    @property
+    def honest_dsp(self) -> int:
+        """DSP = max(plan, reader): the batch search's rule (the reader's when read)."""
+        return max(self.dsp, self.reader_dsp or 0)
+
+    @property
+    def fits(self) -> bool:
+        """Fits as re-priced: the plan fits and the reader's DSP (read) does too."""
+        return self.fits_plan and self.reader_dsp is not None and self.honest_dsp <= self.device[0]
+
+    def line(self) -> str:
+        read = "unread" if self.reader_dsp is None else f"reader {self.reader_dsp:,}"
+        return (f"{self.label}: median {self.median_ms:.3f} ms / p99 {self.p99_ms:.3f} ms per "
+                f"update, {self.dsp:,} DSP ({read}) / {self.bram36:g} BRAM36 ("
+                + ", ".join(f"{name} {d:,}" for name, (d, _) in self.parts.items()) + ")"
+                + (": fits" if self.fits else ": over" if not self.fits_plan else ""))
+
+
+def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list) -> list[StreamDesign]:
+    """The on-chip stream design's search (issue 33 item 6): every n_u, unit-set count and
+    factor-datapath ALLOCATION of ``cfg``'s stream axes priced by its plan
+    (``WindowUpdateModel``: resources, and each of ``updates`` — the simulator's run of the
+    stream — priced as that design runs it); then the fastest designs that fit by the plan are
+    emitted and read by the second reader (``bench_second_reader.measure_stream``, at most
+    ``cfg.stream_reads``) until one fits as re-priced (DSP = max(plan, reader)). When none fits
+    by the plan, the smallest design is read (the search's floor). Returns every candidate,
+    fastest first (the median, then the p99, per update). ``--qr-unit stream`` is not in the
+    space: the stream model prices the Householder unit's steps alone (WindowUpdateModel)."""
+    from fgc.app import streaming
+    from fgc.errors import FgcError
+    from fgc_backends.hls import HlsConfig
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from bench_second_reader import measure_stream
+
+    out = []
+    for units in cfg.stream_units:
+        solver = SolverConfig(precision="float32", linear="qr", units=units)
+        if cfg.stream_one_step:
+            solver = streaming.one_step_solver(solver)
+        sp = streaming.stream_program(graph, streaming.compile_stream(
+            graph, solver, incremental=k, batch_every=batch))
+        for sets in cfg.stream_unit_sets:
+            for alloc in cfg.stream_allocations:
+                config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc)
+                try:
+                    pricer = streaming.WindowPricer(sp, config=config)
+                except FgcError as exc:  # a unit-set count the window's levels cannot take
+                    _progress(f"stream search: n_u={units}, {sets} unit sets, {alloc}: {exc}")
+                    continue
+                res = pricer.model.resources()
+                device = pricer.model.plan.target.device
+                lat = np.array([pricer.price(u).latency_ms for u in updates])
+                out.append(StreamDesign(units, sets, alloc, res["dsp"], res["bram36"],
+                                        res["parts"], lat, (device.dsp, device.bram36),
+                                        held=pricer.model.duplicated()))
+    out.sort(key=lambda d: (d.median_ms, d.p99_ms, d.dsp))
+    fitting = [d for d in out if d.fits_plan]
+    to_read = fitting[:cfg.stream_reads] if fitting else [min(out, key=lambda d: d.dsp)]
+    for d in to_read:
+        _progress(f"stream search: reading {d.label}")
+        with tempfile.TemporaryDirectory() as tmp:
+            read = measure_stream(cfg.lio_n, Path(tmp) / "stream",
+                                  HlsConfig(scalar="float", unit_sets=d.unit_sets,
+                                            allocation=d.allocation), d.units, batch,
+                                  solver=solver)
+        d.reader_dsp = read["reader_dsp"]
+        d.reader_parts = tuple(read["parts"])
+        if d.fits:
+            break
+    return out
+
+
 def paper_a_stream(cfg: Config) -> list[Row]:
     """Paper A's own setting: incremental K = 3, batch steps at keyframes 5/15/25, N = 30, on
     the emitted on-chip design (its plan's price of each update, bench_stream.py --hls-model's
-    model), against ISAM2 (relinearise all: the oracle's policy) timed in this process."""
+    model), against ISAM2 (relinearise all: the oracle's policy) timed in this process: the
+    default design (read by the second reader) and the fastest design of the stream design's
+    search (:func:`stream_search`) that fits, else the smallest it found."""
     from fgc.app import streaming
     from fgc.interop.to_gtsam import to_gtsam
     from fgc.ir.datafile import problem_data
@@ -297,15 +439,33 @@ def paper_a_stream(cfg: Config) -> list[Row]:
     from bench_second_reader import measure_stream
 
     with tempfile.TemporaryDirectory() as tmp:
-        read = measure_stream(n, Path(tmp) / "stream", solver)
+        read = measure_stream(n, Path(tmp) / "stream", batch=batch, solver=solver)
     dsp = max(res["dsp"], read["reader_dsp"])
     fits = res["fits"] and read["reader_dsp"] <= pricer.model.plan.target.device.dsp
+    designs = stream_search(cfg, graph, k, batch, updates)
+    print("paper A's on-chip stream design, searched (fastest first; plan DSP, the reader's "
+          "where read):")
+    for d in designs:
+        print("  " + d.line())
+    fit = [d for d in designs if d.fits]
+    best = fit[0] if fit else min(designs, key=lambda d: d.honest_dsp)
     problem = to_gtsam(graph)
     runs = [_isam2_times(graph, problem, program.schedule.clusters)[0]
             for _ in range(cfg.isam_repeats)]
     isam = np.median(np.asarray(runs), axis=0) * 1e3
     ratio = float(np.median(isam / model))
+    best_ratio = float(np.median(isam / best.latency_ms))
     parts = ", ".join(f"{name} {d:,} DSP / {b:g} BRAM36" for name, (d, b) in res["parts"].items())
+    searched = (f"the search ({len(designs)} designs: n_u {cfg.stream_units}, unit sets "
+                f"{cfg.stream_unit_sets}, {len(cfg.stream_allocations)} ALLOCATION limits of "
+                "the factor datapaths): "
+                + (f"fastest that fits: {best.line()}; ISAM2 / design median {best_ratio:.2f}×"
+                   if fit else
+                   f"NONE fits the {res['part']}; the smallest: {best.line()}, DSP = max(plan, "
+                   f"reader) = {best.honest_dsp:,} against {best.device[0]:,}; ISAM2 / design "
+                   f"median {best_ratio:.2f}×; one set of units for its window's solve and "
+                   f"batch steps (not built; by its plan, each unit kind at the larger "
+                   f"kernel's DSP, no marginal copy) would hold {best.one_set_dsp:,} DSP"))
     return [Row(a, "per-update latency vs ISAM2 (relinearise all, one update per keyframe)",
                 "9.3× ISAM2; fits the xc7z045",
                 f"on-chip design (n_u={program.solver.units}, default unit sets and ALLOCATION; "
@@ -318,20 +478,17 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                 f"{read['reader_dsp']:,} DSP by the second reader ("
                 + ", ".join(f"{part} {r:,}" for part, _, r in read["parts"]) + "): "
                 + ("fits" if fits else "does not fit") + f" the {res['part']} "
-                f"(DSP = max(plan, reader) = {dsp:,})",
+                f"(DSP = max(plan, reader) = {dsp:,}); {searched}",
                 "the update's price is the plan's (model estimates: the iterations the "
-                "simulator ran, each priced as the emitted design runs it); the on-chip design "
-                "is not searched; the plan prices every copy the emitted text holds (plan >= "
-                "second reader on every part: LM's linearisation and elimination shared with "
-                "the batch store's and the marginal's, the marginal's own copy of unit set 0 "
-                "and the kept net's one Log / retraction datapath priced; docs/hls.md); its "
-                "window and batch "
-                "kernels each carry their own units (one set "
-                "of units for both is not built: one kernel of run-time problem sizes, the "
-                "window a slot range of the batch layout, would save about the batch kernel's "
-                "1,061 DSP and "
-                "still not fit, docs/hls.md); where an update's cycles go: docs/hls.md, "
-                "'Paper A's setting against ISAM2'")]
+                "simulator ran, each priced as the emitted design runs it); the plan prices "
+                "every copy the emitted text holds (plan >= second reader on every part; "
+                "docs/hls.md); its window and batch kernels each carry their own units and "
+                "factor datapaths (one set of units for both is not built: even the search's "
+                "smallest design holds two kernels of about 700-800 DSP each, and one kernel "
+                "of run-time problem sizes, the window a slot range of the batch layout, "
+                "would still hold the gradient, LM control and the kept net's datapaths "
+                "over the part, docs/hls.md); the marginal and the kept net run side by side; "
+                "where an update's cycles go: docs/hls.md, 'Paper A's setting against ISAM2'")]
 
 
 def paper_b(cfg: Config) -> list[Row]:
@@ -356,16 +513,17 @@ def paper_b(cfg: Config) -> list[Row]:
     floor = latency_floor(prog, build_plan(prog, PlanOptions.of(prog)).ops)
     # the cycles' ratio from the fewest to the most CPEs, one cascade each, and with two
     # cascades at the most (twice the CPEs)
-    one = {r.candidate.cpe: r for r in result.rows
-           if r.candidate.alloc_scale == 1 and r.candidate.unit_sets is None}
-    two = {r.candidate.cpe: r for r in result.rows
-           if r.candidate.alloc_scale == 1 and r.candidate.unit_sets == 2}
+    one = {r.candidate.cpe: r for r in result.rows if r.candidate.alloc_scale == 1
+           and r.candidate.unit_sets is None and not r.candidate.extra}
+    two = {r.candidate.cpe: r for r in result.rows if r.candidate.alloc_scale == 1
+           and r.candidate.unit_sets == 2 and not r.candidate.extra}
     lo, hi = cfg.cpes[0], cfg.cpes[-1]
     lo_hi = f"{one[lo].cycles / one[hi].cycles:.2f}×" + (
         f", {lo} → {hi} x2: {one[lo].cycles / two[hi].cycles:.2f}×" if hi in two else "")
     rows = [Row(b, "latency per solve at #CPE " + " / ".join(map(str, cfg.cpes))
                 + " (re-priced fit)", "171 ms (5) / 8.97 ms (120)",
-                " / ".join(f"#CPE={c}{' x2' if by_cpe[c].candidate.unit_sets else ''} "
+                " / ".join(f"#CPE={c}{' x2' if by_cpe[c].candidate.unit_sets else ''}"
+                           f"{' L2' if by_cpe[c].candidate.extra else ''} "
                            f"{by_cpe[c].latency_ms * iters:.2f} ms "
                            f"({by_cpe[c].verdict}: {by_cpe[c].bound})" for c in cfg.cpes)
                 + f" ({iters} LM iterations; {cfg.cpes[0]} → {cfg.cpes[-1]} CPEs "
@@ -472,8 +630,9 @@ def main(argv=None) -> None:
     ap.add_argument("--small", action="store_true",
                     help="LIO N=5, IMU N=5, the plan's figures alone: a smoke run")
     ap.add_argument("--reads", type=int, default=None,
-                    help="designs each search may emit and read (0: the plan's figures alone; "
-                         "cached reads are free)")
+                    help="a cap on the designs each search may emit and read (default: none, "
+                         "the search reads in plan-speed order until one fits; 0: the plan's "
+                         "figures alone; cached reads are free)")
     args = ap.parse_args(argv)
     cfg = SMALL if args.small else Config()
     if args.reads is not None:

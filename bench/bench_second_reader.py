@@ -23,6 +23,7 @@ Model estimates (no vendor tool here): the reader's DSP is a lower bound on what
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import re
 import tempfile
 import time
@@ -85,25 +86,33 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
                           default=1.0))
 
 
-def measure_stream(n: int, out: Path, solver: SolverConfig | None = None) -> dict:
+def measure_stream(n: int, out: Path, config=None, units: int | None = None,
+                   batch: tuple[int, ...] = (5, 15, 25),
+                   solver: SolverConfig | None = None) -> dict:
     """Paper A's on-chip stream design at N = ``n``: the plan's DSP per part (window kernel,
     batch kernel, stream section) beside the reader's, and the reader's II-short / carried
     loops. The reader's window kernel is what the window kernel's own top (``<name>_top``: its
     LM, units and datapaths once) instantiates, its batch kernel what the stream top reaches in
     the batch kernel's translation unit, and its stream section the rest of the stream top's
     reading: every copy the stream's own code adds (the marginal's QR set, the kept net's Log /
-    retraction datapaths, tau's loops, a kernel function called from a second site)."""
+    retraction datapaths, tau's loops, a kernel function called from a second site).
+    ``config``: the design's HlsConfig (unit sets, ALLOCATION; default the default design),
+    ``units``: n_u (default the Program's), ``batch``: the batch keyframes (those below n),
+    ``solver``: the stream's SolverConfig (default float32 QR, LM to convergence)."""
     import fgc_backends
     from fgc.app import streaming
 
     graph = example("lio").build(N=n)
     solver = solver or SolverConfig(precision="float32", linear="qr")
+    if units is not None:
+        solver = dataclasses.replace(solver, units=units)
     program = streaming.compile_stream(graph, solver, incremental=3,
-                                       batch_every=tuple(b for b in (5, 15, 25) if b < n))
-    pricer = streaming.WindowPricer(streaming.stream_program(graph, program))
-    res = pricer.model.resources()
+                                       batch_every=tuple(b for b in batch if b < n))
     hls = fgc_backends.load("hls")
-    hls.emit(streaming.stream_program(graph, program, None), out, hls.Config(scalar="float"))
+    config = dataclasses.replace(config, scalar="float") if config else hls.Config(scalar="float")
+    pricer = streaming.WindowPricer(streaming.stream_program(graph, program), config=config)
+    res = pricer.model.resources()
+    hls.emit(streaming.stream_program(graph, program, None), out, config)
     files, top = emitted_files(out)
     tab = pricer.model.plan.ops
     dsp_of = _dsp_of(tab)
@@ -118,7 +127,8 @@ def measure_stream(n: int, out: Path, solver: SolverConfig | None = None) -> dic
     issues = check(design.reached_loops, strict=True)
     plan_parts = {k: d for k, (d, _) in res["parts"].items()}
     modules = dict(design.modules)
-    return dict(plan_dsp=res["dsp"], reader_dsp=total,
+    return dict(plan_dsp=res["dsp"], reader_dsp=total, plan_bram36=res["bram36"],
+                plan_units=res["units"], duplicated=pricer.model.duplicated(),
                 parts=[("window kernel", plan_parts.get("window kernel", 0), window),
                        ("batch kernel", plan_parts.get("batch kernel", 0), batch),
                        ("stream section", plan_parts.get("stream section", 0),
@@ -218,6 +228,10 @@ def main(argv=None) -> int:
         print(f"{'part':16s} {'plan DSP':>9s} {'reader DSP':>10s}  plan >= reader")
         for part, plan, read in stream["parts"]:
             print(f"{part:16s} {plan:9d} {read:10d}  {'yes' if plan >= read else 'NO'}")
+        print("what the window and batch kernels each hold (plan DSP; the two never run at "
+              "once):")
+        for unit, where in stream["duplicated"].items():
+            print(f"  {unit:18s} " + ", ".join(f"{part} {d}" for part, d in where.items()))
         print("module copies the text instantiates (every call site its own): " +
               ", ".join(f"{k} {v}" for k, v in stream["copies"].items()))
         for issue in stream["issues"]:

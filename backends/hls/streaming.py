@@ -509,11 +509,13 @@ def stream(sp: StreamProgram, config=None) -> HlsStream:
     return HlsStream(sp, config)
 
 
-def window_model(sp: StreamProgram, scalar: str | None = None):
+def window_model(sp: StreamProgram, scalar: str | None = None, config: HlsConfig | None = None):
     """The on-chip design's :class:`~fgc_backends.hls.plan.stream.WindowUpdateModel` (the design
-    ``fgc compile --backend hls`` emits for ``sp``; ``scalar`` default the Program's)."""
+    ``fgc compile --backend hls`` emits for ``sp``; ``scalar`` default the Program's;
+    ``config``: the design's HlsConfig — unit sets, ALLOCATION — default the default design)."""
     scalar = scalar or ("double" if sp.program.solver.precision == "float64" else "float")
-    return WindowUpdateModel(layout_of(sp), HlsConfig(scalar=scalar))
+    config = dataclasses.replace(config, scalar=scalar) if config is not None else None
+    return WindowUpdateModel(layout_of(sp), config or HlsConfig(scalar=scalar))
 
 
 def update_model(graph, program, units: int | None = None, cpe: int | None = None):

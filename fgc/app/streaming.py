@@ -248,8 +248,11 @@ class WindowPricer:
     design ``fgc compile --backend hls --window W`` or ``--incremental K`` emits; model
     estimates): ``price(update)`` from its keyframe and iterations."""
 
-    def __init__(self, sp: StreamProgram, scalar: str | None = None, backend: str = "hls"):
-        self.model = load(backend).window_model(sp, scalar)
+    def __init__(self, sp: StreamProgram, scalar: str | None = None, backend: str = "hls",
+                 config=None):
+        # config: the backend's design options (HLS: an HlsConfig), default its default design
+        self.model = (load(backend).window_model(sp, scalar) if config is None
+                      else load(backend).window_model(sp, scalar, config))
 
     def price(self, update):
         price = self.model.price(int(update.keyframe), int(update.iterations),

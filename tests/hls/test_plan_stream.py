@@ -14,6 +14,7 @@ from fgc.app.streaming import compile_stream
 from fgc.compiler.stream import stream_program
 from fgc_backends.hls.config import HlsConfig
 from fgc_backends.hls.plan import phase_cycles, plan_cost
+from fgc_backends.hls.plan.model import PlanError
 from fgc_backends.hls.plan.stream import WindowUpdateModel, _zero_passed_rows, qr_solve_phases
 from fgc_backends.hls.streaming import layout_of
 
@@ -180,6 +181,64 @@ def test_each_stream_function_has_one_call_site_in_the_header():
                  "marginal_and_kept", "write_tau"):
         sites = re.findall(rf"\b{name}<CFG>\(", code)
         assert len(sites) == (2 if name == "write_tau" else 1), name  # marginal, batch step
+
+
+@pytest.fixture(scope="module")
+def small_n7():
+    """The stream design search's smallest candidate at paper A's policy, N = 7: n_u = 1, one
+    unit set, the factor datapaths at one adder, multiplier and divider."""
+    from fgc.ir.program import SolverConfig
+
+    graph = example("lio").build(N=7)
+    program = compile_stream(graph, SolverConfig(precision="float32", linear="qr", units=1),
+                             incremental=3, batch_every=(4,), name="lio_k")
+    sp = stream_program(graph, program, None)
+    small = HlsConfig(scalar="float", unit_sets=1, allocation=(("add", 1), ("mul", 1),
+                                                                ("div", 1)))
+    return sp, small, WindowUpdateModel(layout_of(sp), small)
+
+
+def test_the_searched_stream_design_is_priced_by_its_config(small_n7, paper_a_n7):
+    """The stream design's search (bench_papers.stream_search) prices each candidate by the
+    model of its HlsConfig: the smallest is smaller than the default design; what the window
+    and batch kernels each hold (``duplicated``) adds up to their parts; the streaming QR unit,
+    which the stream model does not price, is refused by name."""
+    sp, _, model = small_n7
+    res = model.resources()
+    assert res["dsp"] < paper_a_n7[1].resources()["dsp"]
+    dup = model.duplicated()
+    assert {"factor datapaths", "gradient", "QR units", "lm control"} <= set(dup)
+    for part in ("window kernel", "batch kernel"):
+        assert sum(where.get(part, 0) for where in dup.values()) == res["parts"][part][0]
+    with pytest.raises(PlanError, match="qr-unit stream"):
+        WindowUpdateModel(layout_of(sp), HlsConfig(scalar="float", qr_unit="stream"))
+
+
+@pytest.mark.heavy
+def test_the_searched_stream_design_prices_at_least_what_its_text_holds(small_n7, tmp_path):
+    """The smallest candidate emitted with its config: the plan prices each part (window kernel,
+    batch kernel, stream section) at least what the second reader reads from the text."""
+    import fgc_backends
+    from fgc_backends.hls.reader import emitted_files
+    from fgc_backends.hls.reader.design import _design, _Reader
+
+    sp, small, model = small_n7
+    res = model.resources()
+    hls = fgc_backends.load("hls")
+    hls.emit(sp, tmp_path, small)
+    files, top = emitted_files(tmp_path)
+    tab = model.plan.ops
+    dsp_of = {"add": tab.add.dsp, "mul": tab.mul.dsp, "div": tab.div.dsp,
+              "sqrt": tab.sqrt.dsp, "special": tab.special.dsp}
+    reader = _Reader(files, tab.add.latency)
+    design = _design(reader, top)
+    name = top.removesuffix("_stream")
+    batch_cpp = next(k for k, _ in files if k.endswith(".cpp") and k != f"{name}.cpp")
+    window = _design(reader, f"{name}_top").dsp(dsp_of)
+    batch = design.unit_dsp(dsp_of, batch_cpp)
+    assert window <= res["parts"]["window kernel"][0]
+    assert batch <= res["parts"]["batch kernel"][0]
+    assert design.dsp(dsp_of) - window - batch <= res["parts"]["stream section"][0]
 
 
 def test_one_step_policy_stores_the_steps_own_factorisation():

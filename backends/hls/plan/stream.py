@@ -327,6 +327,10 @@ class WindowUpdateModel:
         self.layout = layout
         t = layout.template
         config = for_program(t, config)
+        if config.design.qr_unit != "householder":
+            raise PlanError(f"the on-chip stream design's price is modelled on the Householder "
+                            f"QR unit (its update's QR steps on the rows non-zero in that "
+                            f"update); --qr-unit {config.design.qr_unit} is not")
         self.plan = plan = accel_plan(t, config)
         self.clock_mhz = plan.clock_mhz
         self.group = plan_groups(plan)
@@ -509,15 +513,46 @@ class WindowUpdateModel:
         design = plan_cost(self._design)
         window = plan_cost(self.plan)
         parts = {"window kernel": (window.dsp, window.bram36)}
+        units = {"window kernel": dict(window.dsp_by_unit)}
         if self.batch is not None:
             bcost = plan_cost(self.batch["plan"])
             parts["batch kernel"] = (bcost.dsp, bcost.bram36)
-        section = sum(d for name, d in design.dsp_by_unit if name.startswith("stream_"))
+            units["batch kernel"] = dict(bcost.dsp_by_unit)
+        units["stream section"] = {name: d for name, d in design.dsp_by_unit
+                                   if name.startswith("stream_")}
+        section = sum(units["stream section"].values())
         parts["stream section"] = (section, design.bram36 - sum(b for _, b in parts.values()))
         device = self.plan.target.device
-        return {"dsp": design.dsp, "bram36": design.bram36, "parts": parts,
+        return {"dsp": design.dsp, "bram36": design.bram36, "parts": parts, "units": units,
                 "fits": design.dsp <= device.dsp and design.bram36 <= device.bram36,
                 "part": self.plan.options.part}
+
+    def duplicated(self) -> dict:
+        """What the design holds twice (model estimates, DSP by the plan): per unit kind (the
+        factor datapaths, the gradient, the QR units, back-substitution, the state update, LM
+        control) its DSP in the window kernel and in the batch kernel, which never run at once;
+        and the stream section's own copy of unit set 0 for the marginal. Empty without a batch
+        kernel."""
+        if self.batch is None:
+            return {}
+        units = self.resources()["units"]
+
+        def kind(name: str) -> str:
+            for prefix, label in (("factor_", "factor datapaths"), ("qr", "QR units"),
+                                  ("state_update", "state update")):
+                if name.startswith(prefix):
+                    return ("back-substitution" if name.endswith("_backsub") else label)
+            return name.replace("_", " ")
+
+        out: dict = {}
+        for part in ("window kernel", "batch kernel"):
+            for name, d in units[part].items():
+                out.setdefault(kind(name), {"window kernel": 0, "batch kernel": 0})[part] += d
+        marginal = sum(d for name, d in units["stream section"].items()
+                       if name.startswith("stream_marginal_"))
+        if marginal:
+            out["QR units"]["stream section (the marginal's copy)"] = marginal
+        return out
 
     def _kept_out_terms(self, keyframe: int) -> list:
         first = max(0, keyframe - self.layout.window)

@@ -22,7 +22,7 @@ from fgc_backends.hls.plan.loops import (
 )
 from fgc_backends.hls.plan.model import Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
-from fgc_backends.hls.units.special_ops import printed_counts
+from fgc_backends.hls.units.special_ops import issued_counts, printed_counts
 
 
 def gradient_loops(program, timing: dict) -> list[Process]:
@@ -272,7 +272,10 @@ def build(ctx) -> None:
                 ("cost", b.cost_kernel, cost, robust_ops(bc))):
             counts = printed_counts(b, mode)  # as printed, the special functions' bodies in
             allocated = mode_allocation(allocations[i], counts)
-            issue = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
+            # what an evaluation issues through them: a special function's exclusive branches
+            # share the allocated operators (units/special_ops.py's issued_counts)
+            issued = issued_counts(b, mode)
+            issue = max([1] + [math.ceil(issued.get(k, 0) * ops.op(k).ii / n)
                                for k, n in allocated])
             ii = max(issue, loop_ii(instance_accesses(bc, mode)))
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
@@ -306,15 +309,14 @@ def build(ctx) -> None:
     if program.solver.linear == "qr":  # Cholesky's gradient comes with the HGC (units.cholesky)
         ctx.add_phase("linearize", Phase("gradient", False,
                                          tuple(gradient_loops(program, ctx.timing))))
-        # accumulate<…>, one module per block type: TILE multiply-adds a cycle, then a column
-        # a cycle through the fold of its T_PARTIALS partial sums and the add into G
+        # accumulate, one module for every block type (linearize_all's ALLOCATION function
+        # limit=1, reduce_<b> INLINE, the sizes run-time): TILE multiply-adds a cycle, then a
+        # column a cycle through the fold of its T_PARTIALS partial sums and the add into G
         la = ops.add.latency
-        ctx.units.append(bound_unit("gradient", "A^T b, TILE columns a cycle, per block type",
-                                    [lp for i in range(len(program.blocks)) for lp in (
-                                        BoundLoop(f"accumulate_{i}", (("add", TILE),
-                                                                      ("mul", TILE)), 1),
-                                        BoundLoop(f"scatter_{i}", (("add", la),), 1))],
-                                    table=ops))
+        ctx.units.append(bound_unit("gradient", "A^T b, TILE columns a cycle, one module for "
+                                    "every block type",
+                                    [BoundLoop("accumulate", (("add", TILE), ("mul", TILE)), 1),
+                                     BoundLoop("scatter", (("add", la),), 1)], table=ops))
     if opts.jacobian_storage == "raw":
         # whitening while stacking: W·[J | -r] of each instance, one multiply-accumulate a
         # cycle in each of n_u lanes, before the solver reads the rows

@@ -69,19 +69,23 @@ def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict) -> Phase:
 
 def rounding_noise_loops(program, timing: dict) -> list[Process]:
     """rounding_noise_all(): each variable's largest storage entry, then per instance its rows
-    loaded (:data:`PORTS` words a cycle), the column scales, the rows' moved terms (a row every
-    padded + 3 cycles: its padded + 1 products share one multiplier, its padded + 3 adds one
-    adder) and their sum (TILE rows a step into TILE partial sums)."""
+    loaded (:data:`PORTS` words a cycle), the column scales, the rows' moved terms (one
+    rounding_noise module for every block type: a row every widest padded + 3 cycles, its
+    products sharing one multiplier, its adds one adder) and their sum (TILE rows a step into
+    TILE partial sums)."""
     la, lm = timing["acc"][0], timing["acc"][1] - timing["acc"][0]
     procs = [Process("variable_scale", "lm_control", tuple(
         kernel_loop("scale", v.storage_dim, "max", timing) for v in program.variables))]
+    # one rounding_noise module for every block type (rounding_noise_all's ALLOCATION), its
+    # sizes run-time: a row every widest + 3 cycles through one multiplier and one adder (the
+    # widest padded row's last product issues by then, its chain of widest / TILE adds and the
+    # fold follow), whatever the block type's width
+    widest = max(_block_shape(b)[2] for b in program.blocks)
+    row_ii = widest + 3
+    row_depth = max(2 * lm + la * (widest // TILE + 2), row_ii + 2 * lm + 2 * la)
     for i, b in enumerate(program.blocks):
         m, _, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
-        # a row every padded + 3 cycles through one multiplier and one adder: its last
-        # product issues by then, its chain of padded / TILE adds and the fold follow
-        row_ii = padded + 3
-        row_depth = max(2 * lm + la * (padded // TILE + 2), row_ii + 2 * lm + 2 * la)
         procs.append(Process(f"noise_{i}", "lm_control", (
             kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("scales", padded, "fill", timing, n),
@@ -105,19 +109,18 @@ def build(ctx) -> None:
     # decision sequential, one of each kind it uses in one module (fgc_lm.h's try_steps, the
     # LmConfig wrappers and lm_step_test / lm_iterate are INLINE into optimize, so their
     # sequential folds, half and step-size test share its operators; as separate modules each
-    # bound its own: the second reader counts them apart); the rounding-noise pass per block
-    # type (each noise_<b> calls rounding_noise<…>: its own module): a row every padded + 3
-    # cycles through its padded products and moved's three adds, then the rows' terms (at II
-    # 3·TILE: one multiplier and one adder), and the block types' running sums (one adder)
+    # bound its own: the second reader counts them apart); the rounding-noise pass, one
+    # rounding_noise module for every block type (rounding_noise_all's ALLOCATION function
+    # limit=1, each noise_<b> INLINE there): a row every widest padded + 3 cycles through its
+    # products and moved's three adds, then the rows' terms (at II 3·TILE: one multiplier and
+    # one adder), and the block types' running sums (one adder)
     loops = [BoundLoop("gradient_x_norm", (("add", 2), ("mul", 2), ("compare", 2)), 1),
              BoundLoop("step_test", (("add", 4), ("mul", 4)), 1),
              BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
-    for i, b in enumerate(program.blocks):  # rounding_noise<...>: its own instance per block type
-        padded = _block_shape(b)[2]
-        loops += [BoundLoop(f"noise_rows_{i}", (("add", padded + 3), ("mul", padded + 1)),
-                            padded + 3),
-                  BoundLoop(f"noise_terms_{i}", (("add", 2 * TILE), ("mul", 3 * TILE)),
-                            timing["acc2"][0])]
+    widest = max(_block_shape(b)[2] for b in program.blocks)
+    loops += [BoundLoop("noise_rows", (("add", widest + 3), ("mul", widest + 1)), widest + 3),
+              BoundLoop("noise_terms", (("add", 2 * TILE), ("mul", 3 * TILE)),
+                        timing["acc2"][0])]
     # the block types' running sums (noise += ...): noise_<b> is INLINE into
     # rounding_noise_all, whose sequential body adds them one after another through one adder
     loops.append(BoundLoop("noise_sum", (("add", len(program.blocks)),), 0))

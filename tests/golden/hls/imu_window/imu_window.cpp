@@ -2030,31 +2030,42 @@ void whiten(T raw[], T ab[], const T p[]) {
     }
 }
 
-// The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
+// The cost's rounding noise: row r of whitened [A | b] (rows of stride, b in column cols - 1)
 // moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
 // |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
-// partial sums: a fixed order, and no chain from row to row. A row every ROW_II = STRIDE + 3
-// cycles: the row's STRIDE + 1 products share one multiplier and its STRIDE + 3 adds one adder
-// (the rejected step's pass is rare: parallelism there does not pay).
-template <int STRIDE, int COLS, int ROWS, int ROW_II>
-T rounding_noise(const T ab[], const T scale[STRIDE]) {
-    T moved[ROWS], b_abs[ROWS];
-    for (int r = 0; r < ROWS; ++r) {
-#pragma HLS PIPELINE II=ROW_II
+// partial sums: a fixed order, and no chain from row to row. One module for every block type
+// (rounding_noise_all's ALLOCATION; each noise_<b> INLINE there): the block's sizes are
+// run-time arguments, the widest block type's at compile time (NOISE_*), so a row takes
+// NOISE_ROW_II = NOISE_STRIDE + 3 cycles whatever its width: the widest row's NOISE_STRIDE + 1
+// products share one multiplier and its NOISE_STRIDE + 3 adds one adder, a narrower row's
+// columns past its stride add zero (the rejected step's pass is rare: parallelism there does
+// not pay).
+const int NOISE_STRIDE = 32;  // the widest block type's padded row
+const int NOISE_AB = 480;  // the largest block type's padded rows
+const int NOISE_ROWS = 15;  // the most rows of a block type
+const int NOISE_ROW_II = NOISE_STRIDE + 3;
+T rounding_noise(const T ab[NOISE_AB], const T scale[NOISE_STRIDE], int stride, int cols, int rows) {
+    T moved[NOISE_ROWS], b_abs[NOISE_ROWS];
+    for (int r = 0; r < rows; ++r) {
+#pragma HLS LOOP_TRIPCOUNT max=NOISE_ROWS
+#pragma HLS PIPELINE II=NOISE_ROW_II
         T part[TILE];
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
-        for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
-            for (int t = 0; t < TILE; ++t) part[t] += fgc_abs(ab[r * STRIDE + c0 + t]) * scale[c0 + t];
+        for (int c0 = 0; c0 < NOISE_STRIDE; c0 += TILE) {
+            for (int t = 0; t < TILE; ++t) {
+                if (c0 + t < stride) part[t] += fgc_abs(ab[r * stride + c0 + t]) * scale[c0 + t];
+            }
         }
         moved[r] = EPSILON * ((part[0] + part[1]) + (part[2] + part[3]));  // scale 0: b, padding
-        b_abs[r] = fgc_abs(ab[r * STRIDE + COLS - 1]);
+        b_abs[r] = fgc_abs(ab[r * stride + cols - 1]);
     }
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
-    for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
+    for (int r0 = 0; r0 < rows; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
+#pragma HLS LOOP_TRIPCOUNT max=4
 #pragma HLS PIPELINE II=12
         for (int t = 0; t < TILE; ++t) {
-            if (r0 + t < ROWS) {
+            if (r0 + t < rows) {
                 const T m = moved[r0 + t];
                 sum[t] += b_abs[r0 + t] * m + T(0.5) * m * m;
             }
@@ -2674,16 +2685,16 @@ void produce_0(const T x[N_X], int n, hls::stream<GramWord>& grams, bool& finite
 
 // block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
-// they share its one adder (each rounding_noise<...> call stays its own module)
+// they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
 T noise_0(T noise) {
 #pragma HLS INLINE
     for (int i = 0; i < 7; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[480];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=32
+        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
         load_rows_0(f, ab);
-        T scale[32];  // per column: largest storage entry of its variable (0: b, padding)
+        T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 32; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         for (int j = 0; j < 3; ++j) scale[6 + j] = VAR_SCALE[FACTOR_VARS[vb + 1]];
@@ -2691,7 +2702,7 @@ T noise_0(T noise) {
         for (int j = 0; j < 3; ++j) scale[15 + j] = VAR_SCALE[FACTOR_VARS[vb + 3]];
         for (int j = 0; j < 6; ++j) scale[18 + j] = VAR_SCALE[FACTOR_VARS[vb + 4]];
         for (int j = 0; j < 6; ++j) scale[24 + j] = VAR_SCALE[FACTOR_VARS[vb + 5]];
-        noise += rounding_noise<32, 31, 15, 35>(ab, scale);
+        noise += rounding_noise(ab, scale, 32, 31, 15);
         FGC_CYCLES("noise_0", 0, "load", 240, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 32, 1, 1);
         FGC_CYCLES("noise_0", 0, "rows", 15, 35, 49);
@@ -2710,10 +2721,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=115 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=111 cycles (the plan's)
 void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=115
+#pragma HLS PIPELINE II=111
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -2732,7 +2743,7 @@ void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
             rows.write(row);
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 115, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 111, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -2796,22 +2807,22 @@ void linearize_1(const T x[N_X], bool& finite) {
 
 // block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
-// they share its one adder (each rounding_noise<...> call stays its own module)
+// they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
 T noise_1(T noise) {
 #pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
+        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
         load_rows_1(f, ab);
-        T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
+        T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6, 11>(ab, scale);
+        noise += rounding_noise(ab, scale, 8, 7, 6);
         FGC_CYCLES("noise_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_1", 0, "rows", 6, 11, 25);
+        FGC_CYCLES("noise_1", 0, "rows", 6, 35, 49);
         FGC_CYCLES("noise_1", 0, "terms", 2, 12, 25);
     }
     return noise;
@@ -2911,22 +2922,22 @@ void linearize_2(const T x[N_X], bool& finite) {
 
 // block 2: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
-// they share its one adder (each rounding_noise<...> call stays its own module)
+// they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
 T noise_2(T noise) {
 #pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[12];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=4
+        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
         load_rows_2(f, ab);
-        T scale[4];  // per column: largest storage entry of its variable (0: b, padding)
+        T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
         for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<4, 4, 3, 7>(ab, scale);
+        noise += rounding_noise(ab, scale, 4, 4, 3);
         FGC_CYCLES("noise_2", 0, "load", 6, 1, 2);
         FGC_CYCLES("noise_2", 0, "scales", 4, 1, 1);
-        FGC_CYCLES("noise_2", 0, "rows", 3, 7, 21);
+        FGC_CYCLES("noise_2", 0, "rows", 3, 35, 49);
         FGC_CYCLES("noise_2", 0, "terms", 1, 12, 25);
     }
     return noise;
@@ -3026,22 +3037,22 @@ void linearize_3(const T x[N_X], bool& finite) {
 
 // block 3: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
-// they share its one adder (each rounding_noise<...> call stays its own module)
+// they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
 T noise_3(T noise) {
 #pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
+        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
         load_rows_3(f, ab);
-        T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
+        T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6, 11>(ab, scale);
+        noise += rounding_noise(ab, scale, 8, 7, 6);
         FGC_CYCLES("noise_3", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_3", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_3", 0, "rows", 6, 11, 25);
+        FGC_CYCLES("noise_3", 0, "rows", 6, 35, 49);
         FGC_CYCLES("noise_3", 0, "terms", 2, 12, 25);
     }
     return noise;
@@ -3078,6 +3089,8 @@ bool linearize_all(const T x[N_X]) {
 
 // The cost's rounding noise at x, the linearisation point (AB holds its whitened rows).
 T rounding_noise_all(const T x[N_X]) {
+    // one rounding_noise for every block type (noise_<b> INLINE: they run one after another)
+#pragma HLS ALLOCATION function instances=rounding_noise limit=1
     FGC_EVENT("noise");
     FGC_PHASE("rounding_noise");
     for (int v = 0; v < N_VARIABLES; ++v) {  // largest storage entry of each variable, at least 1
@@ -3354,6 +3367,7 @@ struct LesConfig {
     static const int MAX_COLS = ::fgc::MAX_W + 1;  // w + 1: frontal, separator, right-hand side
     static const int MAX_F = ::fgc::MAX_F;
     static const int N_CPE = ::fgc::N_CPE;
+    static const int STREAM_WORDS = 1;  // --cascade-lanes: words a cycle through the cascade
     static const int N_COND = ::fgc::N_COND, N_NF = ::fgc::N_NF;  // the cascade's drain writes them
     static const bool LM = true;  // false: Gauss-Newton, no damping rows
     // fgc_eliminate.h's loops: the tables' largest trip counts, the plan's (II, depth) of L

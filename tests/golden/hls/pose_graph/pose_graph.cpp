@@ -1060,31 +1060,42 @@ void whiten(T raw[], T ab[], const T p[]) {
     }
 }
 
-// The cost's rounding noise: row r of whitened [A | b] (ROWS of STRIDE, b in column COLS - 1)
+// The cost's rounding noise: row r of whitened [A | b] (rows of stride, b in column cols - 1)
 // moves by up to m_r = eps * sum_c |A_rc| scale_c when x is rounded to T, so the cost by
 // |b_r| m_r + m_r^2 / 2. Each row's sum in TILE partial sums, then the rows' terms in TILE
-// partial sums: a fixed order, and no chain from row to row. A row every ROW_II = STRIDE + 3
-// cycles: the row's STRIDE + 1 products share one multiplier and its STRIDE + 3 adds one adder
-// (the rejected step's pass is rare: parallelism there does not pay).
-template <int STRIDE, int COLS, int ROWS, int ROW_II>
-T rounding_noise(const T ab[], const T scale[STRIDE]) {
-    T moved[ROWS], b_abs[ROWS];
-    for (int r = 0; r < ROWS; ++r) {
-#pragma HLS PIPELINE II=ROW_II
+// partial sums: a fixed order, and no chain from row to row. One module for every block type
+// (rounding_noise_all's ALLOCATION; each noise_<b> INLINE there): the block's sizes are
+// run-time arguments, the widest block type's at compile time (NOISE_*), so a row takes
+// NOISE_ROW_II = NOISE_STRIDE + 3 cycles whatever its width: the widest row's NOISE_STRIDE + 1
+// products share one multiplier and its NOISE_STRIDE + 3 adds one adder, a narrower row's
+// columns past its stride add zero (the rejected step's pass is rare: parallelism there does
+// not pay).
+const int NOISE_STRIDE = 16;  // the widest block type's padded row
+const int NOISE_AB = 96;  // the largest block type's padded rows
+const int NOISE_ROWS = 6;  // the most rows of a block type
+const int NOISE_ROW_II = NOISE_STRIDE + 3;
+T rounding_noise(const T ab[NOISE_AB], const T scale[NOISE_STRIDE], int stride, int cols, int rows) {
+    T moved[NOISE_ROWS], b_abs[NOISE_ROWS];
+    for (int r = 0; r < rows; ++r) {
+#pragma HLS LOOP_TRIPCOUNT max=NOISE_ROWS
+#pragma HLS PIPELINE II=NOISE_ROW_II
         T part[TILE];
         for (int t = 0; t < TILE; ++t) part[t] = T(0);
-        for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
-            for (int t = 0; t < TILE; ++t) part[t] += fgc_abs(ab[r * STRIDE + c0 + t]) * scale[c0 + t];
+        for (int c0 = 0; c0 < NOISE_STRIDE; c0 += TILE) {
+            for (int t = 0; t < TILE; ++t) {
+                if (c0 + t < stride) part[t] += fgc_abs(ab[r * stride + c0 + t]) * scale[c0 + t];
+            }
         }
         moved[r] = EPSILON * ((part[0] + part[1]) + (part[2] + part[3]));  // scale 0: b, padding
-        b_abs[r] = fgc_abs(ab[r * STRIDE + COLS - 1]);
+        b_abs[r] = fgc_abs(ab[r * stride + cols - 1]);
     }
     T sum[TILE];
     for (int t = 0; t < TILE; ++t) sum[t] = T(0);
-    for (int r0 = 0; r0 < ROWS; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
+    for (int r0 = 0; r0 < rows; r0 += TILE) {  // TILE rows a step: the sums' recurrence sets the II
+#pragma HLS LOOP_TRIPCOUNT max=2
 #pragma HLS PIPELINE II=12
         for (int t = 0; t < TILE; ++t) {
-            if (r0 + t < ROWS) {
+            if (r0 + t < rows) {
                 const T m = moved[r0 + t];
                 sum[t] += b_abs[r0 + t] * m + T(0.5) * m * m;
             }
@@ -1093,37 +1104,51 @@ T rounding_noise(const T ab[], const T scale[STRIDE]) {
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]]). TILE columns of
-// a row a cycle (II 1: TILE multipliers and adders); row r goes into partial sum r % T_PARTIALS
-// of its columns, so an accumulator comes back DIST = T_PARTIALS * STRIDE / TILE iterations
-// later (the DEPENDENCE's distance, at least the adder's latency). Then a column a cycle: its
-// partial sums folded and added into G (the columns' entries are distinct: II 1). False if an
-// entry is infinite or NaN.
-template <int STRIDE, int COLS, int ROWS, int DIST>
-bool accumulate(const T ab[], const int col[COLS - 1]) {
-    T g[T_PARTIALS][STRIDE];
+// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]]). One module for
+// every block type (linearize_all's ALLOCATION; each reduce_<b> INLINE there): the block's
+// sizes are run-time arguments, the largest block type's at compile time (GRAD_*). TILE
+// columns of a row a cycle (II 1: TILE multipliers and adders), rows x stride / TILE
+// iterations of one flattened loop; row r goes into partial sum r % T_PARTIALS of its columns,
+// so an accumulator comes back T_PARTIALS * stride / TILE iterations later, at least GRAD_DIST
+// (the narrowest block type's; the DEPENDENCE's distance, at least the adder's latency). Then a
+// column a cycle: its partial sums folded and added into G (the columns' entries are distinct:
+// II 1). False if an entry is infinite or NaN.
+const int GRAD_STRIDE = 16;  // the widest block type's padded row
+const int GRAD_AB = 96;  // the largest block type's padded rows
+const int GRAD_COLS = 12;  // the most columns of a block type (its tangent entries)
+const int GRAD_GROUPS = 24;  // the most TILE groups of a block type's rows
+const int GRAD_DIST = 8;  // T_PARTIALS x the narrowest padded row / TILE
+bool accumulate(const T ab[GRAD_AB], const int col[GRAD_COLS], int stride, int cols, int rows) {
+    T g[T_PARTIALS][GRAD_STRIDE];
 #pragma HLS ARRAY_PARTITION variable=g complete dim=0
     for (int t = 0; t < T_PARTIALS; ++t) {
 #pragma HLS UNROLL
-        for (int c = 0; c < STRIDE; ++c) {
+        for (int c = 0; c < GRAD_STRIDE; ++c) {
 #pragma HLS UNROLL
             g[t][c] = T(0);
         }
     }
     bool finite = true;
-    for (int r = 0; r < ROWS; ++r) {
-        for (int c0 = 0; c0 < STRIDE; c0 += TILE) {
+    int r = 0, c0 = 0, p = 0;  // the row, its group's first column, its partial sum (r % T_PARTIALS)
+    for (int i = 0; i < rows * (stride / TILE); ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=GRAD_GROUPS
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=g inter true distance=DIST
-            const T b = ab[r * STRIDE + COLS - 1];
-            for (int t = 0; t < TILE; ++t) {
-                const T a = ab[r * STRIDE + c0 + t];
-                g[r % T_PARTIALS][c0 + t] += a * b;
-                finite = finite && fgc_isfinite(a);
-            }
+#pragma HLS DEPENDENCE variable=g inter true distance=GRAD_DIST
+        const T b = ab[r * stride + cols - 1];
+        for (int t = 0; t < TILE; ++t) {
+            const T a = ab[r * stride + c0 + t];
+            g[p][c0 + t] += a * b;
+            finite = finite && fgc_isfinite(a);
+        }
+        c0 += TILE;
+        if (c0 == stride) {
+            c0 = 0;
+            ++r;
+            p = p + 1 == T_PARTIALS ? 0 : p + 1;
         }
     }
-    for (int c = 0; c < COLS - 1; ++c) {  // a column a cycle: its partial sums folded, into G
+    for (int c = 0; c < cols - 1; ++c) {  // a column a cycle: its partial sums folded, into G
+#pragma HLS LOOP_TRIPCOUNT max=GRAD_COLS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=G inter false
         T pg[T_PARTIALS];
@@ -1176,19 +1201,21 @@ void load_rows_0(int f, T ab[96]) {
     }
 }
 
-// block 0: the gradient of each instance from AB; false if not finite
+// block 0: the gradient of each instance from AB; false if not finite. INLINE into
+// linearize_all, whose ALLOCATION makes every block type's accumulate one module
 bool reduce_0() {
+#pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 6; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[96];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=16
+        T ab[GRAD_AB];  // the shared accumulate's: the widest block type's banks
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=GRAD_STRIDE
         load_rows_0(f, ab);
-        int col[12];  // per column: its tangent entry
+        int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         for (int j = 0; j < 6; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
-        finite = accumulate<16, 13, 6, 16>(ab, col) && finite;
+        finite = accumulate(ab, col, 16, 13, 6) && finite;
         // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
         // groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_0", 0, "load", 48, 1, 2);
@@ -1202,20 +1229,20 @@ bool reduce_0() {
 
 // block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
-// they share its one adder (each rounding_noise<...> call stays its own module)
+// they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
 T noise_0(T noise) {
 #pragma HLS INLINE
     for (int i = 0; i < 6; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[96];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=16
+        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
         load_rows_0(f, ab);
-        T scale[16];  // per column: largest storage entry of its variable (0: b, padding)
+        T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 16; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
         for (int j = 0; j < 6; ++j) scale[6 + j] = VAR_SCALE[FACTOR_VARS[vb + 1]];
-        noise += rounding_noise<16, 13, 6, 19>(ab, scale);
+        noise += rounding_noise(ab, scale, 16, 13, 6);
         FGC_CYCLES("noise_0", 0, "load", 48, 1, 2);
         FGC_CYCLES("noise_0", 0, "scales", 16, 1, 1);
         FGC_CYCLES("noise_0", 0, "rows", 6, 19, 33);
@@ -1234,10 +1261,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=115 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=111 cycles (the plan's)
 void evaluate_1(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=115
+#pragma HLS PIPELINE II=111
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -1251,7 +1278,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 115, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 111, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -1266,18 +1293,20 @@ void load_rows_1(int f, T ab[48]) {
     }
 }
 
-// block 1: the gradient of each instance from AB; false if not finite
+// block 1: the gradient of each instance from AB; false if not finite. INLINE into
+// linearize_all, whose ALLOCATION makes every block type's accumulate one module
 bool reduce_1() {
+#pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
+        T ab[GRAD_AB];  // the shared accumulate's: the widest block type's banks
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=GRAD_STRIDE
         load_rows_1(f, ab);
-        int col[6];  // per column: its tangent entry
+        int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate<8, 7, 6, 8>(ab, col) && finite;
+        finite = accumulate(ab, col, 8, 7, 6) && finite;
         // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
         // groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_1", 0, "load", 24, 1, 2);
@@ -1291,22 +1320,22 @@ bool reduce_1() {
 
 // block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
-// they share its one adder (each rounding_noise<...> call stays its own module)
+// they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
 T noise_1(T noise) {
 #pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[48];
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=8
+        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
         load_rows_1(f, ab);
-        T scale[8];  // per column: largest storage entry of its variable (0: b, padding)
+        T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
-        noise += rounding_noise<8, 7, 6, 11>(ab, scale);
+        noise += rounding_noise(ab, scale, 8, 7, 6);
         FGC_CYCLES("noise_1", 0, "load", 24, 1, 2);
         FGC_CYCLES("noise_1", 0, "scales", 8, 1, 1);
-        FGC_CYCLES("noise_1", 0, "rows", 6, 11, 25);
+        FGC_CYCLES("noise_1", 0, "rows", 6, 19, 33);
         FGC_CYCLES("noise_1", 0, "terms", 2, 12, 25);
     }
     return noise;
@@ -1314,6 +1343,8 @@ T noise_1(T noise) {
 
 // Linearise every factor: the datapaths in Jacobian mode into AB, then the gradient.
 bool linearize_all(const T x[N_X]) {
+    // one accumulate for every block type's gradient (reduce_<b> INLINE: they run one after another)
+#pragma HLS ALLOCATION function instances=accumulate limit=1
     FGC_EVENT("linearize");
     FGC_PHASE("gradient");
     for (int i = 0; i < N_TANGENT; i += PORTS) {  // PORTS words a cycle (G's two ports)
@@ -1335,6 +1366,8 @@ bool linearize_all(const T x[N_X]) {
 
 // The cost's rounding noise at x, the linearisation point (AB holds its whitened rows).
 T rounding_noise_all(const T x[N_X]) {
+    // one rounding_noise for every block type (noise_<b> INLINE: they run one after another)
+#pragma HLS ALLOCATION function instances=rounding_noise limit=1
     FGC_EVENT("noise");
     FGC_PHASE("rounding_noise");
     for (int v = 0; v < N_VARIABLES; ++v) {  // largest storage entry of each variable, at least 1
