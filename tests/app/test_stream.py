@@ -185,6 +185,9 @@ def test_cli_verify_one_step_policy_against_one_isam2_update_per_keyframe(capsys
     assert rc == 0, text
     assert "one update per keyframe" in text and "ran its one step" in text
     assert "tolerance 1e-05" in text
+    # fgc stream: the iteration limit is the policy's end, not a failure
+    assert main(["stream", LIO, "-p", "N=5", "--incremental", "3", "--solver", "gn",
+                 "--max-iterations", "1", "-q"]) == 0
 
 
 def test_cli_simulate_incremental(capsys):

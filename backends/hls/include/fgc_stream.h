@@ -289,21 +289,24 @@ void reexpress(int c, const T x[STREAM_KF_X]) {
         KEPT_D[c * STREAM_KF_T + i] -= shift[i];
     }
     FGC_CYCLES("kept", 0, "d_update", STREAM_KF_T, CFG::L_SCATTER_II, CFG::L_SCATTER_DEPTH);
-    // S J column by column into snew (every column reads the whole of S): a direction q of a
-    // variable that is not a vector, sum_k S[:, k] J[k][q] with k outer and the rows inner, one
-    // product a cycle (each entry summed in k order from 0, as a dot product adds it); a
-    // vector variable's, J[q][q] S[:, q] (its column of J is zero but there: the same sum)
+    // S J column by column into snew: a direction q of a variable that is not a vector,
+    // sum_k S[:, k] J[k][q] over its variable's directions k (KF_BLOCK_T, KF_BLOCK_DIM: J is
+    // block-diagonal by variable, the other entries of its column exactly zero) with k outer and
+    // the rows inner, one product a cycle (each entry summed in k order, as a dot product adds
+    // it); a vector variable's, J[q][q] S[:, q] (its column of J is zero but there: the same sum)
     L snew[STREAM_KF_T][STREAM_KF_T];
     for (int q = 0; q < STREAM_KF_T; ++q) {
         if (KF_FLAT_S[q] < 0) {
-            for (int e = 0; e < STREAM_KF_T * STREAM_KF_T; ++e) {
+            const int k0 = KF_BLOCK_T[q], kn = KF_BLOCK_DIM[q];
+            for (int e = 0; e < kn * STREAM_KF_T; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T*STREAM_KF_T
 #pragma HLS PIPELINE II=CFG::MV_II
 #pragma HLS DEPENDENCE variable=snew inter false
-                const int k = e / STREAM_KF_T, r = e % STREAM_KF_T;
-                const L prev = k == 0 ? L(0) : snew[r][q];
+                const int k = k0 + e / STREAM_KF_T, r = e % STREAM_KF_T;
+                const L prev = k == k0 ? L(0) : snew[r][q];
                 snew[r][q] = prev + jt[q][k] * KEPT_S[(c * STREAM_KF_T + r) * STREAM_KF_T + k];
             }
-            FGC_CYCLES("kept", 0, "sj_column", STREAM_KF_T * STREAM_KF_T, CFG::MV_II, CFG::L_ACC_DEPTH);
+            FGC_CYCLES("kept", 0, "sj_column", kn * STREAM_KF_T, CFG::MV_II, CFG::L_ACC_DEPTH);
         } else {
             for (int r = 0; r < STREAM_KF_T; ++r) {
 #pragma HLS PIPELINE II=1

@@ -393,7 +393,11 @@ class WindowUpdateModel:
                     _stream_phase("kept_reexpress", one, replace(one, repeat=4 * curved),
                                   Loop("difference", n, 1, kt["div"][1], curved), vector_diff,
                                   matvec, scatter,
-                                  replace(matvec, name="sj_column", repeat=curved),
+                                  # per direction of a curved variable: its variable's
+                                  # directions times the rows (J block-diagonal by variable)
+                                  *(Loop("sj_column", dim * n, mv_ii, lt["acc"][1])
+                                    for w, dim in zip(lay.vector_words(), lay.block_dims(),
+                                                      strict=True) if w < 0),
                                   Loop("sj_vector", n, 1, lt["acc"][1], n - curved),
                                   move("s_out", n * n), move("x", kf)),
                     _stream_phase("kept_store", *keep_one, move("x", kf)),
