@@ -12,6 +12,7 @@ share.
     python bench/bench_cholesky.py --before        # the HGC before the elimination (one
                                                    # cascade: hgc_beside off)
     python bench/bench_cholesky.py --backsub-lanes 2   # back-substitution two lanes wide
+    python bench/bench_cholesky.py --backsub-lanes 4   # by columns, per end (the plan only)
 
 Model estimates at 143 MHz, float32 (no vendor tool here).
 """
@@ -45,8 +46,9 @@ def main() -> None:
     parser.add_argument("--cascades", type=int, nargs="+", choices=(1, 2), default=(1, 2))
     parser.add_argument("--before", action="store_true",
                         help="every block type's HGC before the elimination (hgc_beside off)")
-    parser.add_argument("--backsub-lanes", type=int, choices=(1, 2), default=1,
-                        help="HlsConfig.backsub_lanes: back-substitution's width")
+    parser.add_argument("--backsub-lanes", type=int, choices=(1, 2, 4), default=1,
+                        help="HlsConfig.backsub_lanes: back-substitution's width (4: by "
+                        "columns, the plan only: no second reader)")
     args = parser.parse_args()
     for (ex, n, cpe), sets in ((c, k) for c in CASES for k in args.cascades):
         program = compile_graph(example(ex).build(N=n), SolverConfig(
@@ -55,8 +57,10 @@ def main() -> None:
                            backsub_lanes=args.backsub_lanes)
         plan = accel_plan(program, config)
         cost, groups = plan_cost(plan), plan_groups(plan)
-        with tempfile.TemporaryDirectory() as d:
-            read = measure(program, config, Path(d) / "design")
+        read = {"reader_dsp": "-"}  # backsub_lanes 4: the plan only (no emitted driver)
+        if args.backsub_lanes != 4:
+            with tempfile.TemporaryDirectory() as d:
+                read = measure(program, config, Path(d) / "design")
         ms = cost.cycles / cost.clock_mhz / 1e3
         print(f"{ex} N={n} #CPE={cpe} x{sets}: {cost.cycles:,} cycles/iteration, "
               f"{ms:.3f} ms/iteration, "

@@ -38,7 +38,8 @@ CLOCK_TOLERANCE = 0.005  # relative: 7 ns (142.86 MHz) and 143 MHz are the same 
 CLOCK_NS = (0.5, 1000.0)  # the clock periods fgc prices and synthesises (2 GHz … 1 MHz)
 UNIT_SETS = (1, 8)  # QR/Cholesky unit sets eliminating one level's steps side by side
 ALLOCATION_LIMIT = (1, 4096)  # one operator kind's ALLOCATION limit in a factor datapath
-BACKSUB_LANES = (1, 2)  # back-substitution's widths (fgc_backsub.h: 2, COND's four ports)
+BACKSUB_LANES = (1, 2, 4)  # back-substitution's widths (fgc_backsub.h: 2, COND's four ports;
+# 4: by columns, four update lanes per end of a two-ended chain)
 
 
 class HlsConfigError(CodegenError):

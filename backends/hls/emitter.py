@@ -87,6 +87,11 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
         raise HlsConfigError(f"backsub_lanes {config.backsub_lanes}: the streaming designs "
                              "(window, incremental) are priced with one-lane back-substitution "
                              "only (plan/update.py)")
+    if config.backsub_lanes == 4:
+        raise HlsConfigError("backsub_lanes 4 (back-substitution by columns, docs/hls.md) is "
+                             "priced by the plan only (units/backsub.py's column design): "
+                             "fgc_backsub.h has no column driver yet; emit with backsub_lanes "
+                             "1 or 2")
     check_accel(program, config)
     check_limits(program, config)
     check_clock(program.solver.clock_mhz, config)

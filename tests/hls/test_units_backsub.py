@@ -310,3 +310,64 @@ def test_wide_back_substitution_matches_the_simulator_on_qr(tmp_path):
     from fgc.ir.program import SolverConfig
     _csim_against_the_simulator(example("lio").build(N=6), SolverConfig(linear="qr"), tmp_path,
                                 "lio_wide", units="fgc_qr.h")
+
+
+# ---- back-substitution by columns (HlsConfig backsub_lanes=4, the plan only: units/backsub.py's
+# column design, docs/hls.md "Back-substitution by columns")
+
+def test_the_column_design_finds_the_two_ends_of_a_chain():
+    from fgc_backends.hls.units.backsub import column_chain, column_order
+    tables = plan_tables(chain(7, linear="cholesky", cpe=2))
+    end0, end1 = column_chain(tables)
+    order = column_order(tables)
+    assert end0[0] == order[0]  # the root first, on end 0
+    assert sorted(end0 + end1) == sorted(order)  # every step on one end
+    assert len(end0) - 1 >= 1 and len(end1) >= 1  # two ends below the root
+    cols, cb, f_of, w_of = (tables[k] for k in ("STEP_COL", "STEP_COL_BEGIN", "STEP_F",
+                                                  "STEP_W"))
+    for seq in (end0, (end0[0], *end1)):  # a child's separator: its parent's columns
+        for parent, child in zip(seq[:-1], seq[1:], strict=True):
+            front = set(cols[cb[parent]:cb[parent] + f_of[parent]])
+            assert set(cols[cb[child] + f_of[child]:cb[child] + w_of[child]]) <= front
+
+
+def test_a_column_takes_its_rows_u_a_cycle_padded_to_the_chain():
+    from fgc_backends.hls.units.backsub import column_trip
+    # LIO's f = s = 15 steps: column r updates its r rows above and the child's 15, ⌈(r + 15)
+    # / 4⌉ ≤ 8 = CHAIN + 1 for every r: 15 columns × 8
+    assert column_trip([r + 15 for r in range(15)], FLOAT32) == 15 * 8
+    # the last step (no child): columns 14 … 1 padded to 8, column 0 one iteration (x_0)
+    assert column_trip(list(range(15)), FLOAT32) == 14 * 8 + 1
+    # long columns take their rows: r + 30 rows, ⌈(r + 30) / 4⌉ from column 3 on
+    assert column_trip([r + 30 for r in range(4)], FLOAT32) == 8 + 8 + 8 + 9
+
+
+def test_the_column_design_is_priced_and_refused_where_it_does_not_apply(tmp_path):
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.hls import HlsConfig, HlsConfigError, emit
+    from fgc_backends.hls.plan.model import PlanError
+    from fgc_backends.hls.units.backsub import column_operators, column_schedule
+
+    program = chain(9, linear="cholesky", cpe=2)
+    narrow = build_plan(program)
+    cols = build_plan(program, PlanOptions.of(program, backsub_lanes=4))
+    assert {m.name: m.banks for m in cols.memories}["cond"] == 4
+    unit = cols.unit("trisolve")
+    assert unit.instances == 2 and dict(unit.operators) == dict(column_operators(cols.ops))
+    # U = 4 multiply-subtracts, the ingestion's divide and 4 scaling multiplies
+    assert dict(unit.operators) == {"add": 4, "mul": 8, "div": 1}
+    ends, region = column_schedule(plan_tables(program), cols.ops)
+    assert region == max(ends.values())
+    bs = {ph.name: ph for ph in cols.phases}["backsub"]
+    assert bs.processes[0].loops[0].cycles == region
+    assert plan_cost(cols).cycles != plan_cost(narrow).cycles
+    # a tree (pose_graph: steps with several children) is refused by name
+    tree = compile_graph(example("pose_graph").build(), SolverConfig(linear="cholesky"),
+                         name="w100")
+    with pytest.raises(PlanError, match="backsub_lanes 4.*w100.*not a chain"):
+        build_plan(tree, PlanOptions.of(tree, backsub_lanes=4))
+    # the plan only: emit refuses it (no column driver in fgc_backsub.h)
+    with pytest.raises(HlsConfigError, match="plan only"):
+        emit(program, tmp_path, HlsConfig(backsub_lanes=4))
