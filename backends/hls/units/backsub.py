@@ -275,28 +275,27 @@ def column_chain(tables: dict) -> tuple[tuple[int, ...], tuple[int, ...]] | str:
     return (root, *ends[0]), ends[1]
 
 
-def column_rows(tables: dict, step: int, child: int) -> list[int]:
-    """Per frontal column r of ``step`` (r = 0 … f − 1): the rows its x_r updates in the column
-    design: its own rows above r and all f rows of ``child`` (−1: none) when column r is one of
-    the child's separator columns."""
+def column_sep(tables: dict, step: int, child: int) -> list[int]:
+    """Per frontal column r of ``step`` (r = 0 … f − 1): its position a in ``child``'s separator
+    (the child's column f' + a), or −1 (not one of them, or no child: −1)."""
     cols, cb, f_of = tables["STEP_COL"], tables["STEP_COL_BEGIN"], tables["STEP_F"]
-    sep = set()
+    pos = {}
     if child >= 0:
-        sep = set(cols[cb[child] + f_of[child]:cb[child] + tables["STEP_W"][child]])
-    fc = f_of[child] if child >= 0 else 0
-    return [r + (fc if cols[cb[step] + r] in sep else 0) for r in range(f_of[step])]
+        sep = cols[cb[child] + f_of[child]:cb[child] + tables["STEP_W"][child]]
+        pos = {c: a for a, c in enumerate(sep)}
+    return [pos.get(cols[cb[step] + r], -1) for r in range(f_of[step])]
 
 
-def column_trip(rows: list[int], ops: OperatorTable, lanes: int = COLUMN_LANES) -> int:
-    """Iterations of a pass's columns (fgc_backsub.h's column pass): columns r = f − 1 … 0, each
-    max(⌈rows_r / U⌉, CHAIN + 1) (U rows an iteration; a column shorter than the chain padded
-    to it, so x_{r−1} is final when read), but a last column with no rows one iteration (x_0
-    read, nothing after it)."""
-    pad = backsub_chain(ops) + 1
-    trip = 0
-    for r in range(len(rows) - 1, -1, -1):
-        trip += 1 if (r == 0 and rows[r] == 0) else max(-(-rows[r] // lanes), pad)
-    return trip
+def column_len(r: int, a: int, child_f: int, ops: OperatorTable, feed: bool = False,
+               lanes: int = COLUMN_LANES) -> int:
+    """Iterations of column r in a pass (fgc_backsub.h's bsc_column_len): its own rows above r
+    in blocks of U (lane l the row of residue l, :func:`backsub_triangle`'s rule; none in a
+    feed pass), then, where the column is the child's separator column a ≥ 0, the child's f'
+    rows in blocks of U; at least CHAIN + 1 (so x_{r−1} and a row's next update find it
+    final), except a column with no rows at all: one iteration (x_r read and sent)."""
+    own = 0 if feed else -(-r // lanes)
+    n = own + (-(-child_f // lanes) if a >= 0 else 0)
+    return max(n, backsub_chain(ops) + 1) if n else 1
 
 
 def column_groups(tables: dict, step: int) -> int:
@@ -307,117 +306,183 @@ def column_groups(tables: dict, step: int) -> int:
 
 
 def column_pass_depth(ops: OperatorTable) -> int:
-    """A column pass's iteration: the update read, (c_ir) x_r, the subtraction, the write
-    (2 + CHAIN), beside the ingestion of a group: its read, 1 / R_ii, the scaling, the write
-    (2 + Ld + Lm); the deeper of the two."""
+    """A column pass's iteration: the update's coefficient read, its product with x_r, the
+    subtraction, the write (2 + CHAIN), beside the ingestion of a group: 1 / R_ii, the
+    scaling, the write (2 + Ld + Lm); the deeper of the two."""
     return max(2 + backsub_chain(ops), 2 + ops.div.latency + ops.mul.latency)
 
 
 @dataclasses.dataclass(frozen=True)
 class ColumnPass:
-    """One pass of an end's column loop: ``step`` solved (−1: none), ``feed`` (end 1's pass
-    over the root's columns, x_r from end 0's stream: updates its first step's rows only),
-    ``ingest`` the step whose groups it takes in (−1: none), its trip."""
+    """One pass of an end's column loop (fgc_backsub.h's BSC_* tables): ``step`` whose columns
+    it runs (−1: none), ``child`` whose rows they update too (−1: none), ``ingest`` the step
+    whose groups it takes in (−1: none), the buffer slots of the three (an end's sequence
+    index mod 3), ``feed``: end 1's pass over the root's columns (x_r from end 0's stream,
+    the child's rows only), ``root``: end 0's pass that sends the root's x_r to end 1."""
     end: int
     step: int
     child: int
     ingest: int
-    trip: int
+    slot: int
+    child_slot: int
+    ingest_slot: int
     feed: bool = False
+    root: bool = False
 
 
-def column_passes(tables: dict, ops: OperatorTable) -> list[list[ColumnPass]]:
-    """Per end, its column passes in order (fgc_backsub.h's bs_end<e>): two passes taking in
-    the end's first two steps' conditionals (no columns); on end 1, then a pass over the root's
-    columns, x_r from end 0's stream (its first step's rows updated where the root's column is
-    in its separator; no groups: its buffers are full); then a pass per step t of the end
-    (end 0: the root first), its columns updating its own rows and its child's (the step after
-    it on the end; the root's child on end 0), taking in step t + 2's groups beside them (the
-    slot step t's conditional frees two passes later): max(columns' iterations, groups)."""
+def column_passes(tables: dict) -> list[list[ColumnPass]]:
+    """Per end, its column passes in order (fgc_backsub.h's backsub_end<e>): two passes taking
+    in the end's first two steps' conditionals (no columns); on end 1 (when end 0 holds more
+    than the root), then a pass over the root's columns, x_r from end 0's stream (its first
+    step's rows updated where the root's column is in its separator; no groups: its buffers
+    are full); then a pass per step t of the end (end 0: the root first), its columns
+    updating its own rows and its child's (the step after it on the end), taking in step
+    t + 2's groups beside them (into the slot step t − 1 freed)."""
     chain = column_chain(tables)
     assert not isinstance(chain, str), chain
     out = []
     for e, seq in enumerate(chain):
-        passes = [ColumnPass(e, -1, -1, seq[k], column_groups(tables, seq[k]))
+        passes = [ColumnPass(e, -1, -1, seq[k], -1, -1, k % COLUMN_SLOTS)
                   for k in range(min(2, len(seq)))]
         if e == 1 and seq:
-            root = chain[0][0]
-            rows = [r_rows - r for r, r_rows in enumerate(column_rows(tables, root, seq[0]))]
-            pad = backsub_chain(ops) + 1
-            trip = sum(max(-(-n // COLUMN_LANES), pad) if n else 1 for n in rows)
-            passes.append(ColumnPass(e, root, seq[0], -1, trip, feed=True))
+            passes.append(ColumnPass(e, chain[0][0], seq[0], -1, -1, 0, -1, feed=True))
         for t, step in enumerate(seq):
             child = seq[t + 1] if t + 1 < len(seq) else -1
             ingest = seq[t + 2] if t + 2 < len(seq) else -1
-            trip = column_trip(column_rows(tables, step, child), ops)
-            groups = column_groups(tables, ingest) if ingest >= 0 else 0
-            passes.append(ColumnPass(e, step, child, ingest, max(trip, groups)))
+            passes.append(ColumnPass(e, step, child, ingest, t % COLUMN_SLOTS,
+                                     (t + 1) % COLUMN_SLOTS if child >= 0 else -1,
+                                     (t + 2) % COLUMN_SLOTS if ingest >= 0 else -1,
+                                     root=(e == 0 and t == 0 and bool(chain[1]))))
         out.append(passes)
     return out
+
+
+def column_pass_trip(tables: dict, p: ColumnPass, ops: OperatorTable) -> int:
+    """A pass's iterations: its columns' (:func:`column_len`, r = f − 1 … 0) and the groups it
+    takes in side by side, the more of the two."""
+    cols = 0
+    if p.step >= 0:
+        fc = tables["STEP_F"][p.child] if p.child >= 0 else 0
+        cols = sum(column_len(r, a, fc, ops, p.feed)
+                   for r, a in enumerate(column_sep(tables, p.step, p.child)))
+    return max(cols, column_groups(tables, p.ingest) if p.ingest >= 0 else 0)
 
 
 COLUMN_LOAD_DEPTH = 2  # the loader's loop: a group read from COND, written to an end's stream
 
 
 def column_timeline(tables: dict, ops: OperatorTable) -> list[list[tuple[ColumnPass, int, int]]]:
-    """Per end, its passes with their start and end (cycles after the region starts): the
-    loader's fill first (:data:`COLUMN_LOAD_DEPTH`: the first group reaches the ends), then the
-    passes back to back, a pass (trip − 1) + depth (:func:`column_pass_depth`); end 1's feed
-    pass ends no earlier than its depth after end 0's root pass (it reads x_r from end 0's
-    stream as end 0's columns produce them)."""
+    """Per end, its passes with their start and end as fgc_cycles.h's region arithmetic clocks
+    a process (cycles from the region's start): back to back, a pass (trip − 1) + depth
+    (:func:`column_pass_depth`), end 1's feed pass ending no earlier than its depth after end
+    0's root pass (it reads x_r from end 0's stream as end 0's columns produce them:
+    FGC_WAIT)."""
     depth = column_pass_depth(ops)
     out, root_end = [], None
-    for passes in column_passes(tables, ops):
-        clock, rows = COLUMN_LOAD_DEPTH, []
+    for passes in column_passes(tables):
+        clock, rows = 0, []
         for p in passes:
-            if p.trip <= 0:
+            trip = column_pass_trip(tables, p, ops)
+            if trip <= 0:
                 continue
-            start, end = clock, clock + (p.trip - 1) + depth
+            start, end = clock, clock + (trip - 1) + depth
             if p.feed and root_end is not None:
                 end = max(end, root_end + depth)
             rows.append((p, start, end))
             clock = end
-            if p.end == 0 and p.step >= 0 and root_end is None:
+            if p.root:
                 root_end = end
         out.append(rows)
     return out
 
 
+def column_loader_trip(tables: dict) -> int:
+    """The loader's loop: an iteration sends each end its next group (the longer end's groups)."""
+    return max(sum(column_groups(tables, s) for s in seq) for seq in column_chain(tables))
+
+
 def column_schedule(tables: dict, ops: OperatorTable) -> tuple[dict[int, int], int]:
-    """The column region (fgc_cycles.h's column group, :func:`column_timeline`): each solved
-    step's end (its pass's end: its last x_0 has left for the state update) and the region's
-    end (the later end, no earlier than the loader's loop: a group a cycle to each end)."""
-    ends, stop = {}, 0
-    for rows in column_timeline(tables, ops):
+    """The column region as fgc_cycles.h's total_range prices a DATAFLOW region of the loader
+    and the two ends: its slowest process plus the fill of the others (the loader's
+    :data:`COLUMN_LOAD_DEPTH`, the other end's pass depth), and no earlier than any process's
+    last pass (end 1's feed pass waits for end 0's root pass). Returns each solved step's end
+    (its pass's end on its end's clock: when its last x has left for the state update) and
+    the region's cycles."""
+    timeline = column_timeline(tables, ops)
+    loader = column_loader_trip(tables)
+    procs = [(loader - 1 + COLUMN_LOAD_DEPTH, COLUMN_LOAD_DEPTH)] if loader else []
+    ends, last = {}, 0
+    for rows in timeline:
+        if not rows:
+            continue
+        trips = [column_pass_trip(tables, p, ops) for p, _, _ in rows]
+        procs.append((sum(t - 1 + column_pass_depth(ops) for t in trips),
+                      column_pass_depth(ops)))
         for p, _, end in rows:
             if p.step >= 0 and not p.feed:
                 ends[p.step] = end
-            stop = max(stop, end)
-    loader = column_loader_trip(tables)
-    return ends, max(stop, loader - 1 + COLUMN_LOAD_DEPTH if loader else 0)
-
-
-def column_loader_trip(tables: dict) -> int:
-    """The loader's loop: an iteration sends each end its next group (the longer end's groups)."""
-    chain = column_chain(tables)
-    return max(sum(column_groups(tables, s) for s in seq) for seq in chain)
+            last = max(last, end)
+    slow = max(range(len(procs)), key=lambda i: procs[i][0])
+    region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+    return ends, max(region, last)
 
 
 def column_fifo(tables: dict, ops: OperatorTable, end: int) -> int:
     """Depth of the loader's stream to ``end``: the loader sends both ends a group a cycle in
     step, so before the end takes its g-th group (a pass's i-th iteration takes the pass's
-    i-th group, at the pass's start + i) the stream holds the groups sent by then less g; the
-    largest of these, + 1: the loader never waits on a full stream (the ends take a group a
-    cycle at most, so it never runs behind either)."""
+    i-th group) the stream holds the groups sent by then less g; the largest of these, + 1:
+    the loader never waits on a full stream (the ends take a group a cycle at most, so it
+    never runs behind either)."""
     total = sum(column_groups(tables, s) for s in column_chain(tables)[end])
     most, g = 0, 0
     for p, start, _ in column_timeline(tables, ops)[end]:
         if p.ingest < 0:
             continue
         for i in range(column_groups(tables, p.ingest)):
-            most = max(most, min(start + i - COLUMN_LOAD_DEPTH + 1, total) - g)
+            most = max(most, min(start + i + 1, total) - g)
             g += 1
     return max(most, 0) + 1
+
+
+def column_dx_depth(tables: dict, end: int) -> int:
+    """Depth of an end's solution stream to the state update (pairs of words): all its steps'
+    (the state update, a variable a retire II, falls behind the ends; they never wait on it)."""
+    return max(1, sum((tables["STEP_F"][s] + 1) // 2 for s in column_chain(tables)[end]))
+
+
+def column_tables(tables: dict, ops: OperatorTable) -> dict:
+    """The BSC_* tables fgc_backsub.h's column driver runs over (accel.cpp.jinja prints them):
+    per end its step sequence (BSC_SEQ, from BSC_SEQ_BEGIN[e]; the loader walks it), per pass
+    (from BSC_PASS_BEGIN[e]) its step, child, ingested step, slots, feed and root flags, and
+    per pass column r its child separator position (BSC_COLA[BSC_COLA_BEGIN[pass] + r]); per
+    step its end (BSC_END_OF, the state update's stream); the streams' depths."""
+    chain = column_chain(tables)
+    seq, seq_begin = [], [0]
+    for e in range(2):
+        seq += list(chain[e])
+        seq_begin.append(len(seq))
+    rows = {k: [] for k in ("STEP", "CHILD", "INGEST", "SLOT", "CSLOT", "ISLOT", "FEED", "ROOT",
+                            "COLA_BEGIN")}
+    cola, pass_begin = [], [0]
+    for passes in column_passes(tables):
+        for p in passes:
+            for k, v in (("STEP", p.step), ("CHILD", p.child), ("INGEST", p.ingest),
+                         ("SLOT", p.slot), ("CSLOT", p.child_slot), ("ISLOT", p.ingest_slot),
+                         ("FEED", int(p.feed)), ("ROOT", int(p.root)),
+                         ("COLA_BEGIN", len(cola))):
+                rows[k].append(v)
+            if p.step >= 0:
+                cola += column_sep(tables, p.step, p.child)
+        pass_begin.append(len(rows["STEP"]))
+    end_of = [-1] * len(tables["STEP_F"])
+    for e in range(2):
+        for s in chain[e]:
+            end_of[s] = e
+    return {"seq": seq, "seq_begin": seq_begin, "pass_begin": pass_begin,
+            "cola": cola or [-1], "end_of": end_of,
+            **{k.lower(): v for k, v in rows.items()},
+            "fifo": [column_fifo(tables, ops, e) for e in range(2)],
+            "dx": [column_dx_depth(tables, e) for e in range(2)]}
 
 
 def column_operators(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
@@ -438,31 +503,29 @@ def column_phases(ctx, unit: str) -> None:
     from fgc_backends.hls.units.datapath import trial_end
     from fgc_backends.hls.units.state_update import retire_timing
     tables, ops = ctx.tables, ctx.les
-    ends, region = column_schedule(tables, ops)
+    ends, columns = column_schedule(tables, ops)
     order = column_order(tables)
     counts = [len(ctx.program.schedule.steps[s].frontals) for s in order]
     ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
                               ctx.opts.state_allocation)
     var_end: list[int] = []
-    done = retire_sent([ends[s] for s in order], counts, ii, depth, var_end)
-    region = max(region, done)
+    region = max(columns, retire_sent([ends[s] for s in order], counts, ii, depth, var_end))
     cost = max(region, trial_end(ctx.shared["trial_loops"], var_end))
     words = max(v.storage_dim for v in ctx.program.variables)
     for e in range(2):
         ctx.channels.append(Channel(f"backsub_groups{e}", "stream", column_fifo(tables, ops, e),
                                     COLUMN_WIDTH * ops.word_bits, "backsub_loader",
                                     f"backsub_end{e}"))
-        ctx.channels.append(Channel(f"backsub_dx{e}", "stream", ctx.sizes["MAX_F"],
-                                    ops.word_bits, f"backsub_end{e}", "backsub_retire"))
+        ctx.channels.append(Channel(f"backsub_dx{e}", "stream", column_dx_depth(tables, e),
+                                    2 * ops.word_bits, f"backsub_end{e}", "backsub_retire"))
     ctx.channels.append(Channel("backsub_xroot", "stream", ctx.sizes["MAX_F"], ops.word_bits,
                                 "backsub_end0", "backsub_end1"))
     ctx.channels.append(Channel("trial_tx", "stream", len(ctx.program.variables),
                                 words * ctx.ops.word_bits, "backsub_retire", "trial_cost"))
-    a = max(ends.values(), default=0)
     ctx.add_phase("solve", Phase("backsub", False, (
-        Process("backsub_ends", unit, (Loop("column_region", 1, 1, max(a, 1)),)),
-        Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - a),)
-                if region > a else ()),
+        Process("backsub_columns", unit, (Loop("column_region", 1, 1, columns),)),
+        Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - columns),)
+                if region > columns else ()),
         Process("trial_cost", "factor_cost", (Loop("cost_tail", 1, 1, cost - region),)
                 if cost > region else ())), linear=True))
 
