@@ -12,7 +12,7 @@ share.
     python bench/bench_cholesky.py --before        # the HGC before the elimination (one
                                                    # cascade: hgc_beside off)
     python bench/bench_cholesky.py --backsub-lanes 2   # back-substitution two lanes wide
-    python bench/bench_cholesky.py --backsub-lanes 4   # by columns, per end (the plan only)
+    python bench/bench_cholesky.py --backsub-lanes 4   # by columns, a process per end
 
 Model estimates at 143 MHz, float32 (no vendor tool here).
 """
@@ -48,7 +48,7 @@ def main() -> None:
                         help="every block type's HGC before the elimination (hgc_beside off)")
     parser.add_argument("--backsub-lanes", type=int, choices=(1, 2, 4), default=1,
                         help="HlsConfig.backsub_lanes: back-substitution's width (4: by "
-                        "columns, the plan only: no second reader)")
+                        "columns, a process per end of the chain)")
     args = parser.parse_args()
     for (ex, n, cpe), sets in ((c, k) for c in CASES for k in args.cascades):
         program = compile_graph(example(ex).build(N=n), SolverConfig(
@@ -57,10 +57,8 @@ def main() -> None:
                            backsub_lanes=args.backsub_lanes)
         plan = accel_plan(program, config)
         cost, groups = plan_cost(plan), plan_groups(plan)
-        read = {"reader_dsp": "-"}  # backsub_lanes 4: the plan only (no emitted driver)
-        if args.backsub_lanes != 4:
-            with tempfile.TemporaryDirectory() as d:
-                read = measure(program, config, Path(d) / "design")
+        with tempfile.TemporaryDirectory() as d:
+            read = measure(program, config, Path(d) / "design")
         ms = cost.cycles / cost.clock_mhz / 1e3
         print(f"{ex} N={n} #CPE={cpe} x{sets}: {cost.cycles:,} cycles/iteration, "
               f"{ms:.3f} ms/iteration, "

@@ -693,8 +693,11 @@ void back_substitute(bool at_x) {
 // the end's three (BSC_SLOT / BSC_CSLOT / BSC_ISLOT). End 1 first runs a pass over the root's
 // columns (BSC_FEED: x_r from end 0's stream `xroot`), updating its first step's rows. The
 // solutions go to the state update as pairs (x_{f-1}, x_{f-2}), ... on the end's own stream.
-enum { BSC_U = 4, BSC_W = 4, BSC_NSLOT = 3 };
-enum { BSC_RB = (MAX_F + BSC_U - 1) / BSC_U, BSC_GB = (MAX_W + 1) / BSC_W + 2 };
+const int BSC_U = 4;  // update lanes per end (units/backsub.py's COLUMN_LANES)
+const int BSC_W = 4;  // words of an aligned COND group (COLUMN_WIDTH)
+const int BSC_NSLOT = 3;  // an end's conditional buffers (COLUMN_SLOTS)
+const int BSC_RB = (MAX_F + BSC_U - 1) / BSC_U;  // a bank's rows of a slot
+const int BSC_GB = (MAX_W + 1) / BSC_W + 2;  // a row's groups at most
 
 struct BsGroup { L w[BSC_W]; };  // an aligned group of COND words (the loader's stream word)
 
@@ -816,6 +819,10 @@ void backsub_end(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::stream
 #pragma HLS LOOP_TRIPCOUNT max=MAX_F*(MAX_F/4+MAX_F/4+2)
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=y inter true distance=CHAIN
+            // cbuf: the pass writes slot BSC_ISLOT and reads BSC_SLOT / BSC_CSLOT, three
+            // different slots (units/backsub.py's column_passes): no iteration reads a word
+            // another iteration of the pass writes
+#pragma HLS DEPENDENCE variable=cbuf inter false
             if (r >= 0) {
                 const int a = BSC_COLA[ca + r];
                 const int own = feed ? 0 : (r + BSC_U - 1) / BSC_U;
@@ -843,21 +850,19 @@ void backsub_end(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::stream
                 }
                 for (int l = 0; l < BSC_U; ++l) {
 #pragma HLS UNROLL
-                    if (k < own) {  // own rows r - 1 - U k ...: lane l the one of residue l
-                        const int t = (r - 1 - l) & (BSC_U - 1);
-                        if (k * BSC_U + t < r) {
-                            const int i = r - 1 - k * BSC_U - t;
-                            const int p = soff + i * scols + r;
-                            const T c = cbuf[l][p % BSC_W][bsc_addr(sl, soff, scols, i, r)];
-                            y[sl][i] = y[sl][i] - c * xr;
-                        }
-                    } else if (a >= 0) {  // the child's rows U (k - own) + l
-                        const int i = BSC_U * (k - own) + l;
-                        if (i < fc) {
-                            const int cc = fc + a, p = coff + i * ccols + cc;
-                            const T c = cbuf[l][p % BSC_W][bsc_addr(cs, coff, ccols, i, cc)];
-                            y[cs][i] = y[cs][i] - c * xr;
-                        }
+                    // lane l's row: an own row r - 1 - U k ... (the one of residue l), or the
+                    // child's row U (k - own) + l; the same multiply-subtract either way (the
+                    // row, its slot and the coefficient's place are muxes: no operator)
+                    const int t = (r - 1 - l) & (BSC_U - 1);
+                    const bool mine = k < own;
+                    const int i = mine ? r - 1 - k * BSC_U - t : BSC_U * (k - own) + l;
+                    const bool act = mine ? k * BSC_U + t < r : (a >= 0 && i < fc);
+                    const int ys = mine ? sl : cs, off = mine ? soff : coff;
+                    const int cols = mine ? scols : ccols, c = mine ? r : fc + a;
+                    if (act) {
+                        const int p = off + i * cols + c;
+                        const T coef = cbuf[l][p % BSC_W][bsc_addr(ys, off, cols, i, c)];
+                        y[ys][i] = y[ys][i] - coef * xr;
                     }
                 }
                 if (k == len - 1) {
