@@ -412,3 +412,36 @@ def test_back_substitution_by_columns_matches_the_simulator(tmp_path):
     for v in program.variables:  # double: 1e-9 relative to max(1, the largest entry)
         a, b = np.asarray(result.values[v.key]), np.asarray(reference.storage[v.key])
         assert np.max(np.abs(a - b)) <= 1e-9 * max(1.0, float(np.max(np.abs(b)))), v.key
+
+
+@pytest.mark.heavy
+@pytest.mark.parametrize("case", ["serial", "qr"])
+def test_columns_on_one_end_and_on_qr_match_the_simulator(tmp_path, case):
+    """backsub_lanes=4 on a one-ended chain (LIO N = 5 serial: end 1 empty, no feed pass) and on
+    QR (LIO N = 6 two-ended, n_u = 2: qr_commit writing COND), double: csim = simulator 1e-9."""
+    import numpy as np
+
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.datafile import problem_data
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import sim
+    from fgc_backends.hls import HlsConfig, emit, run_csim
+    from fgc_backends.hls.units.backsub import column_chain
+
+    if case == "serial":
+        graph = example("lio").build(N=5)
+        solver = SolverConfig(method="lm", linear="cholesky", cpe=3, ordering="serial")
+    else:
+        graph = example("lio").build(N=6)
+        solver = SolverConfig(method="lm", linear="qr", ordering="two-ended", units=2)
+    program = compile_graph(graph, solver, name=f"cols_{case}")
+    assert (column_chain(plan_tables(program))[1] == ()) == (case == "serial")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", backsub_lanes=4))
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)
+    assert result.status == reference.status
+    for v in program.variables:
+        a, b = np.asarray(result.values[v.key]), np.asarray(reference.storage[v.key])
+        assert np.max(np.abs(a - b)) <= 1e-9 * max(1.0, float(np.max(np.abs(b)))), v.key
