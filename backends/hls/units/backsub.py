@@ -617,9 +617,10 @@ def backsub_operators(ops: OperatorTable, lanes: int = 1) -> tuple[tuple[str, in
 def column_build(ctx) -> None:
     """``backsub_lanes = 4``: the column design (docs/hls.md, "Back-substitution by columns"):
     COND cyclic over 4 banks (the loader reads a group of 4 words for each end a cycle: two
-    reads a bank), per end its three conditional buffers (by row residue and word bank: U × 4
-    banks) and its unit (:func:`column_operators`); the phase by :func:`column_phases`. A
-    Program whose elimination tree is not a two-ended chain is refused by name."""
+    reads a bank), per end its three conditional buffers (``cbuf``, by row residue and word
+    bank: U × 4 banks) and its unit (:func:`column_operators`); the phase by
+    :func:`column_phases`. A Program whose elimination tree is not a two-ended chain is refused
+    by name."""
     from fgc_backends.hls.plan.model import Memory, PlanError
     program, ops, tables = ctx.program, ctx.les, ctx.tables
     chain = column_chain(tables)
@@ -629,7 +630,9 @@ def column_build(ctx) -> None:
                         f"fit: {chain}; use backsub_lanes 1 or 2")
     ctx.memories[:] = [dataclasses.replace(m, banks=COLUMN_WIDTH) if m.name == "cond" else m
                        for m in ctx.memories]
-    words = COLUMN_SLOTS * ctx.sizes["MAX_F"] * (ctx.sizes["MAX_W"] + 1 + 2 * COLUMN_WIDTH)
+    # fgc_backsub.h's cbuf: [U][W][slots × ⌈MAX_F / U⌉ rows × (MAX_W + 1) / W + 2 groups]
+    words = (COLUMN_LANES * COLUMN_WIDTH * COLUMN_SLOTS * -(-ctx.sizes["MAX_F"] // COLUMN_LANES)
+             * ((ctx.sizes["MAX_W"] + 1) // COLUMN_WIDTH + 2))
     for e in range(2):
         ctx.memories.append(Memory(f"bs_colbuf{e}", words, ops.word_bits,
                                    COLUMN_LANES * COLUMN_WIDTH))
