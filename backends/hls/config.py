@@ -72,7 +72,10 @@ class DesignOptions:
     - ``backsub_lanes``: back-substitution's width (``include/fgc_backsub.h``): ``1``
       (default) loads a conditional two words a cycle (COND's two ports) and runs the triangle
       one row a cycle; ``2`` partitions COND cyclic over two banks, loads four words a cycle
-      and runs the triangle two rows a cycle, for more DSP (docs/hls.md, "Back-substitution").
+      and runs the triangle two rows a cycle, for more DSP (docs/hls.md, "Back-substitution");
+      ``4`` solves by columns, a process per end of a two-ended chain (four update lanes
+      each, the child's S xs inside its parent's columns, a loader streaming COND cyclic 4 to
+      both ends; docs/hls.md, "Back-substitution by columns"); a tree is refused.
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
