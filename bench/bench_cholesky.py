@@ -14,6 +14,7 @@ share.
     python bench/bench_cholesky.py --before        # the HGC before the elimination (one
                                                    # cascade: hgc_beside off)
     python bench/bench_cholesky.py --backsub-lanes 2   # back-substitution two lanes wide
+    python bench/bench_cholesky.py --backsub-lanes 4   # by columns, a process per end
 
 Model estimates at 143 MHz, float32 (no vendor tool here).
 """
@@ -49,8 +50,9 @@ def main() -> None:
                         help="words a cycle through each cascade (HlsConfig.cascade_lanes)")
     parser.add_argument("--before", action="store_true",
                         help="every block type's HGC before the elimination (hgc_beside off)")
-    parser.add_argument("--backsub-lanes", type=int, choices=(1, 2), default=1,
-                        help="HlsConfig.backsub_lanes: back-substitution's width")
+    parser.add_argument("--backsub-lanes", type=int, choices=(1, 2, 4), default=1,
+                        help="HlsConfig.backsub_lanes: back-substitution's width (4: by "
+                        "columns, a process per end of the chain)")
     args = parser.parse_args()
     for (ex, n, cpe), sets, lanes in ((c, k, la) for c in CASES for k in args.cascades
                                       for la in args.lanes):

@@ -154,6 +154,14 @@ def cases():
     out.append(("imu_window N=20 Cholesky #CPE=5 x2 L2", imu_window.build(N=20),
                 SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
                 HlsConfig(scalar="float", unit_sets=2, cascade_lanes=2)))
+    # back-substitution by columns (backsub_lanes=4: a loader and a process per end of the
+    # chain, the state update fed by both), one cascade and two
+    out.append(("LIO N=30 Cholesky #CPE=15 backsub columns", lio.build(N=30),
+                SolverConfig(method="gn", linear="cholesky", cpe=15, precision="float32"),
+                HlsConfig(scalar="float", backsub_lanes=4)))
+    out.append(("imu_window N=20 Cholesky #CPE=20 x2 backsub columns", imu_window.build(N=20),
+                SolverConfig(method="gn", linear="cholesky", cpe=20, precision="float32"),
+                HlsConfig(scalar="float", unit_sets=2, backsub_lanes=4)))
     # a general tree (not a chain): steps with several children and many factors (30 Pose2,
     # 60 factors), with the HGC beside the elimination (the default) and before it
     for beside in (True, False):

@@ -74,7 +74,8 @@ class Config:
     lio_cpes: tuple[int, ...] = (5, 10, 15, 20, 80)
     cpes: tuple[int, ...] = (5, 20, 40, 80, 120)
     cascades: tuple[int, ...] = (1, 2)  # Cholesky: one cascade, or two side by side
-    backsub_lanes: tuple[int, ...] = (1, 2)  # back-substitution's widths (HlsConfig)
+    # back-substitution's widths (HlsConfig; 4: by columns, a process per end of the chain)
+    backsub_lanes: tuple[int, ...] = (1, 2, 4)
     # Cholesky: words a cycle through each cascade (HlsConfig.cascade_lanes; (1, 2) lets the
     # search weigh two words a cycle against more CPEs)
     lanes: tuple[int, ...] = (1,)

@@ -39,7 +39,8 @@ CLOCK_TOLERANCE = 0.005  # relative: 7 ns (142.86 MHz) and 143 MHz are the same 
 CLOCK_NS = (0.5, 1000.0)  # the clock periods fgc prices and synthesises (2 GHz … 1 MHz)
 UNIT_SETS = (1, 8)  # QR/Cholesky unit sets eliminating one level's steps side by side
 ALLOCATION_LIMIT = (1, 4096)  # one operator kind's ALLOCATION limit in a factor datapath
-BACKSUB_LANES = (1, 2)  # back-substitution's widths (fgc_backsub.h: 2, COND's four ports)
+BACKSUB_LANES = (1, 2, 4)  # back-substitution's widths (fgc_backsub.h: 2, COND's four ports;
+# 4: by columns, four update lanes per end of a two-ended chain)
 
 
 class HlsConfigError(CodegenError):
@@ -72,7 +73,10 @@ class DesignOptions:
     - ``backsub_lanes``: back-substitution's width (``include/fgc_backsub.h``): ``1``
       (default) loads a conditional two words a cycle (COND's two ports) and runs the triangle
       one row a cycle; ``2`` partitions COND cyclic over two banks, loads four words a cycle
-      and runs the triangle two rows a cycle, for more DSP (docs/hls.md, "Back-substitution").
+      and runs the triangle two rows a cycle, for more DSP (docs/hls.md, "Back-substitution");
+      ``4`` solves by columns, a process per end of a two-ended chain (four update lanes
+      each, the child's S xs inside its parent's columns, a loader streaming COND cyclic 4 to
+      both ends; docs/hls.md, "Back-substitution by columns"); a tree is refused.
     - ``cascade_lanes``: Cholesky: the words a cycle through each cascade
       (``include/fgc_cpe.h``'s ``STREAM_WORDS``): 1 (default), or 2 - every feed, tap, CPE and
       drain takes the pair of a row's words the assembly streams each cycle, so a step's ~w²/2

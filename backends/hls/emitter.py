@@ -347,6 +347,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # from DELTA)
             "bs_xoff": _backsub_xoff(program),
             "bs_lanes": plan.options.backsub_lanes,  # fgc_backsub.h's FGC_BS_LANES (> 1)
+            "bsc": _backsub_columns(program, plan),  # backsub_lanes 4: the BSC_* tables
             "cpe": plan.options.cpe, "cascade_lanes": plan.options.cascade_lanes,
             "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
@@ -455,6 +456,18 @@ def _backsub_xoff(program: Program) -> tuple[int, ...]:
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.backsub import backsub_xoff
     return backsub_xoff(_tables(program))
+
+
+def _backsub_columns(program: Program, plan) -> dict | None:
+    if plan.options.backsub_lanes != 4:
+        return None
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.backsub import column_tables
+    out = column_tables(_tables(program), plan.ops)
+    depth = {c.name: c.depth for c in plan.channels}  # priced with the linear solver's table
+    out["fifo"] = [depth[f"backsub_groups{e}"] for e in range(2)]
+    out["dx"] = [depth[f"backsub_dx{e}"] for e in range(2)]
+    return out
 
 
 def for_program(program: Program, config: HlsConfig) -> HlsConfig:

@@ -85,13 +85,44 @@ def _lanes_view(header: str, wide: bool) -> str:
     return "\n".join(out)
 
 
-def backsub_region(header: str, wide: bool = False) -> Region:
+def _columns_view(header: str, columns: bool) -> str:
+    """``header`` with the branches of ``#ifndef FGC_BS_COLUMNS`` (the slot driver) or of their
+    ``#else`` (the column driver, ``HlsConfig.backsub_lanes`` = 4) blanked, as a kernel that
+    does not or does (``columns``) define FGC_BS_COLUMNS compiles it (other conditionals nest
+    inside and are kept for :func:`_lanes_view`)."""
+    out, keep, depth = [], True, 0  # depth: conditionals open inside an FGC_BS_COLUMNS block
+    inside = False
+    for line in header.split("\n"):
+        word = line.strip()
+        if not inside and word.startswith("#ifndef FGC_BS_COLUMNS"):
+            inside, keep, depth = True, not columns, 0
+            out.append("")
+            continue
+        if inside and word.startswith("#if"):
+            depth += 1
+        elif inside and depth == 0 and word.startswith("#else"):
+            keep = columns
+            out.append("")
+            continue
+        elif inside and word.startswith("#endif"):
+            if depth == 0:
+                inside, keep = False, True
+                out.append("")
+                continue
+            depth -= 1
+        out.append(line if keep else "")
+    return "\n".join(out)
+
+
+def backsub_region(header: str, wide: bool = False, columns: bool = False) -> Region:
     """Back-substitution's regions (``fgc_backsub.h``'s driver: ``backsub_lane0`` and
     ``backsub_lane1``, a lane's solve beside the other lane's load; ``back_substitute``, the slot
     process beside the state update it feeds) as one: their processes and streams in order.
     ``wide``: the driver a kernel defining FGC_BS_LANES compiles (``HlsConfig.backsub_lanes``
     > 1), else the one-lane driver."""
-    regions = read_network(_lanes_view(header, wide))
+    regions = read_network(_lanes_view(_columns_view(header, columns), wide))
+    if columns:  # back-substitution by columns: one region, the loader, the ends, the retire
+        return next(r for r in regions if r.function == "back_substitute")
     lanes = [r for r in regions if r.function.startswith("backsub_lane")]
     if len(lanes) != 2:
         raise ValueError(f"expected two backsub_lane regions, found {len(lanes)}")
@@ -128,7 +159,8 @@ def counts(kernel: str, units: str, backsub: str) -> tuple[int, int]:
     if beside:
         streams += sum(_stream_count(r, cfg) for r in read_network(kernel)
                        if r.function == "linearize_solve")
-    backsub = backsub_region(backsub, "#define FGC_BS_LANES" in kernel)
+    backsub = backsub_region(backsub, "#define FGC_BS_LANES" in kernel,
+                             "#define FGC_BS_COLUMNS" in kernel)
     return (procs * sets + len(backsub.processes),
             streams * sets + _stream_count(backsub, cfg))
 

@@ -69,8 +69,10 @@ class Space:
     (``HlsConfig.cascade_lanes``, 1 or 2; a design of 2 carries it as its ``extra``);
     ``alloc_scales`` multiply the factor datapaths' default ``ALLOCATION`` limits;
     ``backsub_lanes``: back-substitution's widths (``HlsConfig.backsub_lanes``, both solvers;
-    a width of 1 is the candidate without the option); ``extra``: further ``PlanOptions``
-    fields the emitter knows as ``HlsConfig`` fields, (name, values)."""
+    a width of 1 is the candidate without the option; 4, by columns, only where the
+    elimination tree is a chain: elsewhere the plan refuses it and the search skips it);
+    ``extra``: further ``PlanOptions`` fields the emitter knows as ``HlsConfig`` fields,
+    (name, values)."""
 
     linears: tuple[str, ...] = ("qr", "cholesky")
     units: tuple[int, ...] = (1, 2, 4, 8, 16, 32)
@@ -412,7 +414,11 @@ def search(programs: Mapping[str, Program], space: Space = Space(),
         raise SearchError("design space: no candidate (no Program for its linear solvers)")
     rows, part = [], ""
     for i, c in enumerate(cands):
-        cost, caps, part = price(c.program(programs), c, space)
+        try:
+            cost, caps, part = price(c.program(programs), c, space)
+        except FgcError as exc:  # the plan refuses the design (backsub_lanes 4 on a tree)
+            say(f"  {c.label}: no design ({type(exc).__name__}: {exc})")
+            continue
         rows.append(Row(c, cost, caps))
         if progress and (i + 1) % 10 == 0:
             say(f"  priced {i + 1}/{len(cands)} designs")

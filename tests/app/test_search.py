@@ -267,3 +267,23 @@ def test_the_search_sees_back_substitutions_width(programs):
     assert by_width[2].cost.dsp > by_width[1].cost.dsp  # the wider load and triangle
     with pytest.raises(SearchError):
         Space(backsub_lanes=(0,))
+
+
+def test_the_search_sees_back_substitution_by_columns(programs):
+    """``Space.backsub_lanes`` with 4 (back-substitution by columns, a process per end of the
+    chain): priced by the plan of what it emits, fewer cycles than one lane on a chain; on a
+    tree the plan refuses it and the search skips that candidate."""
+    from fgc.app.specs import example
+
+    space = Space(linears=("cholesky",), cpe=(5,), cascades=(1,), backsub_lanes=(1, 4))
+    result = search(programs, space, max_reads=0, reader=False)
+    by_width = {dict(r.candidate.extra).get("backsub_lanes", 1): r for r in result.rows}
+    assert set(by_width) == {1, 4}
+    config = by_width[4].candidate.config(space)
+    program = by_width[4].candidate.program(programs)
+    plan = build_plan(program, PlanOptions.for_config(config, program))
+    assert by_width[4].cost == plan_cost(plan) and plan.options.backsub_lanes == 4
+    tree = {"cholesky": compile_graph(example("pose_graph").build(), SolverConfig(
+        method="lm", linear="cholesky", precision="float32"), name="w100")}
+    skipped = search(tree, space, max_reads=0, reader=False)
+    assert {dict(r.candidate.extra).get("backsub_lanes", 1) for r in skipped.rows} == {1}

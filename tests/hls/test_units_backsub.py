@@ -310,3 +310,138 @@ def test_wide_back_substitution_matches_the_simulator_on_qr(tmp_path):
     from fgc.ir.program import SolverConfig
     _csim_against_the_simulator(example("lio").build(N=6), SolverConfig(linear="qr"), tmp_path,
                                 "lio_wide", units="fgc_qr.h")
+
+
+# ---- back-substitution by columns (HlsConfig backsub_lanes=4, the plan only: units/backsub.py's
+# column design, docs/hls.md "Back-substitution by columns")
+
+def test_the_column_design_finds_the_two_ends_of_a_chain():
+    from fgc_backends.hls.units.backsub import column_chain, column_order
+    tables = plan_tables(chain(7, linear="cholesky", cpe=2))
+    end0, end1 = column_chain(tables)
+    order = column_order(tables)
+    assert end0[0] == order[0]  # the root first, on end 0
+    assert sorted(end0 + end1) == sorted(order)  # every step on one end
+    assert len(end0) - 1 >= 1 and len(end1) >= 1  # two ends below the root
+    cols, cb, f_of, w_of = (tables[k] for k in ("STEP_COL", "STEP_COL_BEGIN", "STEP_F",
+                                                  "STEP_W"))
+    for seq in (end0, (end0[0], *end1)):  # a child's separator: its parent's columns
+        for parent, child in zip(seq[:-1], seq[1:], strict=True):
+            front = set(cols[cb[parent]:cb[parent] + f_of[parent]])
+            assert set(cols[cb[child] + f_of[child]:cb[child] + w_of[child]]) <= front
+
+
+def test_a_column_takes_its_rows_u_a_cycle_padded_to_the_chain():
+    from fgc_backends.hls.units.backsub import column_len
+    # LIO's f = s = 15 steps: column r its r rows above in blocks of 4 and the child's 15 in
+    # blocks of 4, ⌈r / 4⌉ + 4 ≤ 8 = CHAIN + 1 for every r ≤ 14: 15 columns × 8
+    assert sum(column_len(r, r, 15, FLOAT32) for r in range(15)) == 15 * 8
+    # the last step (no child): columns 14 … 1 padded to 8, column 0 one iteration (x_0)
+    assert sum(column_len(r, -1, 0, FLOAT32) for r in range(15)) == 14 * 8 + 1
+    # the root's long columns take their blocks: ⌈29 / 4⌉ + ⌈15 / 4⌉ = 12
+    assert column_len(29, 0, 15, FLOAT32) == 12 and column_len(29, -1, 15, FLOAT32) == 8
+    # a feed pass (end 1 over the root's columns): the child's rows only, or x_r alone
+    assert column_len(29, 3, 15, FLOAT32, feed=True) == 8
+    assert column_len(29, -1, 15, FLOAT32, feed=True) == 1
+
+
+def test_the_column_design_is_priced_and_refused_where_it_does_not_apply():
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.hls import HlsConfig, HlsConfigError
+    from fgc_backends.hls.plan.model import PlanError
+    from fgc_backends.hls.units.backsub import column_operators, column_schedule
+
+    program = chain(9, linear="cholesky", cpe=2)
+    narrow = build_plan(program)
+    cols = build_plan(program, PlanOptions.of(program, backsub_lanes=4))
+    assert {m.name: m.banks for m in cols.memories}["cond"] == 4
+    unit = cols.unit("trisolve")
+    assert unit.instances == 2 and dict(unit.operators) == dict(column_operators(cols.ops))
+    # U = 4 multiply-subtracts, the ingestion's divide and 4 scaling multiplies
+    assert dict(unit.operators) == {"add": 4, "mul": 8, "div": 1}
+    ends, region = column_schedule(plan_tables(program), cols.ops)
+    # the region: its slowest end plus the others' fill, no earlier than any pass's end
+    assert region >= max(ends.values())
+    bs = {ph.name: ph for ph in cols.phases}["backsub"]
+    assert bs.processes[0].loops[0].cycles == region
+    assert plan_cost(cols).cycles != plan_cost(narrow).cycles
+    # a tree (pose_graph: steps with several children) is refused by name
+    tree = compile_graph(example("pose_graph").build(), SolverConfig(linear="cholesky"),
+                         name="w100")
+    with pytest.raises(PlanError, match="backsub_lanes 4.*w100.*not a chain"):
+        build_plan(tree, PlanOptions.of(tree, backsub_lanes=4))
+    with pytest.raises(HlsConfigError, match="backsub_lanes"):
+        HlsConfig(backsub_lanes=3).check()
+
+
+def test_back_substitution_by_columns_matches_the_simulator(tmp_path):
+    """backsub_lanes=4 on a two-ended chain (LIO N = 6: the root and two ends, every lane of
+    both ends' passes, the feed pass and the loader's walk at several COND alignments), LM,
+    Cholesky, double: the C simulation equals the simulator within 1e-9; the process network
+    read back from the text is the plan's."""
+    import numpy as np
+
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.datafile import problem_data
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import sim
+    from fgc_backends.hls import HlsConfig, emit, run_csim
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import counts
+    from fgc_backends.hls.plan import process_network
+
+    graph = example("lio").build(N=6)
+    program = compile_graph(graph, SolverConfig(method="lm", linear="cholesky", cpe=3),
+                            name="lio_cols")
+    config = HlsConfig(scalar="double", backsub_lanes=4)
+    project = emit(program, tmp_path, config)
+    text = (tmp_path / "lio_cols.cpp").read_text()
+    assert "#define FGC_BS_COLUMNS 1" in text and "#define FGC_BS_LANES" not in text
+    procs, streams = process_network(accel_plan(program, config))
+    include = tmp_path / "include"
+    header = (include / "fgc_cpe.h").read_text() + (include / "fgc_eliminate.h").read_text()
+    assert counts(text, header, (include / "fgc_backsub.h").read_text()) == \
+        (len(procs), len(streams))
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)  # the testbench checks it too
+    assert result.status == reference.status
+    for v in program.variables:  # double: 1e-9 relative to max(1, the largest entry)
+        a, b = np.asarray(result.values[v.key]), np.asarray(reference.storage[v.key])
+        assert np.max(np.abs(a - b)) <= 1e-9 * max(1.0, float(np.max(np.abs(b)))), v.key
+
+
+@pytest.mark.heavy
+@pytest.mark.parametrize("case", ["serial", "qr"])
+def test_columns_on_one_end_and_on_qr_match_the_simulator(tmp_path, case):
+    """backsub_lanes=4 on a one-ended chain (LIO N = 5 serial: end 1 empty, no feed pass) and on
+    QR (LIO N = 6 two-ended, n_u = 2: qr_commit writing COND), double: csim = simulator 1e-9."""
+    import numpy as np
+
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.datafile import problem_data
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import sim
+    from fgc_backends.hls import HlsConfig, emit, run_csim
+    from fgc_backends.hls.units.backsub import column_chain
+
+    if case == "serial":
+        graph = example("lio").build(N=5)
+        solver = SolverConfig(method="lm", linear="cholesky", cpe=3, ordering="serial")
+    else:
+        graph = example("lio").build(N=6)
+        solver = SolverConfig(method="lm", linear="qr", ordering="two-ended", units=2)
+    program = compile_graph(graph, solver, name=f"cols_{case}")
+    assert (column_chain(plan_tables(program))[1] == ()) == (case == "serial")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", backsub_lanes=4))
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)
+    assert result.status == reference.status
+    for v in program.variables:
+        a, b = np.asarray(result.values[v.key]), np.asarray(reference.storage[v.key])
+        assert np.max(np.abs(a - b)) <= 1e-9 * max(1.0, float(np.max(np.abs(b)))), v.key

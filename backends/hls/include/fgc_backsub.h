@@ -366,6 +366,7 @@ void cond_backsub_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2
 #if defined(FGC_BACKSUB_DRIVER) && !defined(FGC_BACKSUB_DRIVER_H)
 #define FGC_BACKSUB_DRIVER_H
 
+#ifndef FGC_BS_COLUMNS  // the slot driver (backsub_lanes 1 or 2); the column driver below
 #ifdef FGC_BS_LANES  // backsub_lanes > 1 (the kernel defines it only then)
 // HlsConfig backsub_lanes (the kernel's FGC_BS_LANES): COND and the lanes' buffers cyclic
 // FGC_BS_LANES (backsub_slots' pragmas), a buffer's words at their offset from the group
@@ -383,9 +384,12 @@ L BS_COND1[MAX_F * (MAX_W + 1)];  // lane 1's
 #endif
 L BS_XS1[MAX_W + 1];
 L BS_X1[MAX_F];
+#endif
 
 // two solution words a stream word (the copies move two words a cycle)
 struct BsPair { L word[2]; };
+
+#ifndef FGC_BS_COLUMNS
 
 // The solved step's frontal solution out (cb: its STEP_COL_BEGIN) into DELTA and, a pair of
 // words a cycle, into `dx` to the state update: the end of the solving lane's process, beside the
@@ -675,5 +679,311 @@ void back_substitute(bool at_x) {
     FGC_DRAINED(&dx, 1);
     FGC_DRAINED(&tx, 1);
 }
+
+#else  // FGC_BS_COLUMNS: back-substitution by columns (HlsConfig backsub_lanes = 4)
+// One process per end of a two-ended chain (units/backsub.py's column_*; docs/hls.md,
+// "Back-substitution by columns"). Each end solves its steps (BSC_SEQ: end 0 the root first)
+// as one long triangle, a pass per step: the columns r = f - 1 ... 0 of its conditional, x_r
+// read at a column's first iteration, then y_i -= c_ir x_r for its own rows above r and, where
+// column r is one of the child's separator columns (BSC_COLA), for all the child's rows
+// (c = S'_ia / R'_ii), four rows an iteration (lane l the row of residue l mod 4); beside the
+// columns the pass takes in the conditional of the step two ahead, a group of four COND words
+// an iteration from the loader's stream: 1 / R_ii (the diagonal: its row's first group) and
+// the group's words scaled by it (c_ic = R_ic / R_ii, y_i = d_i / R_ii) into the free slot of
+// the end's three (BSC_SLOT / BSC_CSLOT / BSC_ISLOT). End 1 first runs a pass over the root's
+// columns (BSC_FEED: x_r from end 0's stream `xroot`), updating its first step's rows. The
+// solutions go to the state update as pairs (x_{f-1}, x_{f-2}), ... on the end's own stream.
+const int BSC_U = 4;  // update lanes per end (units/backsub.py's COLUMN_LANES)
+const int BSC_W = 4;  // words of an aligned COND group (COLUMN_WIDTH)
+const int BSC_NSLOT = 3;  // an end's conditional buffers (COLUMN_SLOTS)
+const int BSC_RB = (MAX_F + BSC_U - 1) / BSC_U;  // a bank's rows of a slot
+const int BSC_GB = (MAX_W + 1) / BSC_W + 2;  // a row's groups at most
+
+struct BsGroup { L w[BSC_W]; };  // an aligned group of COND words (the loader's stream word)
+
+// A walk over one step's conditional in COND, row by row (from its diagonal to d), each row's
+// aligned groups of BSC_W words (units/backsub.py's column_groups; cond_load_wide's walk)
+struct BscCursor {
+    int f, w, cols, i, base, g;
+};
+
+inline void bsc_start(BscCursor& c, int step) {
+#pragma HLS INLINE
+    c.f = STEP_F[step];
+    c.w = STEP_W[step];
+    c.cols = c.w + 1;
+    c.i = 0;
+    c.base = STEP_COND_OFF[step];
+    c.g = c.base / BSC_W;
+}
+
+inline void bsc_next(BscCursor& c) {
+#pragma HLS INLINE
+    if (BSC_W * c.g + BSC_W - 1 >= c.base + c.w) {  // the row's last group
+        ++c.i;
+        c.base += c.cols;
+        c.g = (c.base + c.i) / BSC_W;
+    } else {
+        ++c.g;
+    }
+}
+
+// The loader: COND cyclic BSC_W (word h of a group in bank h: two reads a bank an iteration),
+// an aligned group to each end an iteration, each end's steps in BSC_SEQ order. II 1, depth 2
+// (read, write).
+template <class CFG>
+void backsub_loader(hls::stream<BsGroup>& g0, hls::stream<BsGroup>& g1, bool at_x) {
+#pragma HLS ARRAY_PARTITION variable=COND cyclic factor=4
+    FGC_OUTER_BRANCH();  // csim cycle counting only: the column region beside the state update
+    FGC_REGION("backsub_columns");
+    if (at_x) return;
+    int k0 = BSC_SEQ_BEGIN[0], k1 = BSC_SEQ_BEGIN[1];
+    bool a0 = k0 < BSC_SEQ_BEGIN[1], a1 = k1 < BSC_SEQ_BEGIN[2];
+    BscCursor c0 = {0, 0, 0, 0, 0, 0}, c1 = {0, 0, 0, 0, 0, 0};
+    if (a0) bsc_start(c0, BSC_SEQ[k0]);
+    if (a1) bsc_start(c1, BSC_SEQ[k1]);
+    int trip = 0;
+    for (; a0 || a1; ++trip) {
+#pragma HLS LOOP_TRIPCOUNT max=N_COND/2
+#pragma HLS PIPELINE II=1
+        if (a0) {
+            BsGroup x;
+            for (int h = 0; h < BSC_W; ++h) x.w[h] = COND[BSC_W * c0.g + h];
+            g0.write(x);
+            bsc_next(c0);
+            if (c0.i == c0.f) {
+                ++k0;
+                a0 = k0 < BSC_SEQ_BEGIN[1];
+                if (a0) bsc_start(c0, BSC_SEQ[k0]);
+            }
+        }
+        if (a1) {
+            BsGroup x;
+            for (int h = 0; h < BSC_W; ++h) x.w[h] = COND[BSC_W * c1.g + h];
+            g1.write(x);
+            bsc_next(c1);
+            if (c1.i == c1.f) {
+                ++k1;
+                a1 = k1 < BSC_SEQ_BEGIN[2];
+                if (a1) bsc_start(c1, BSC_SEQ[k1]);
+            }
+        }
+    }
+    FGC_CYCLES("backsub_loader", 0, "groups", trip, 1, 2);
+}
+
+// Where word (i, c) of a step (COND offset off, cols words a row) sits in an end's buffer:
+// bank [i % U][its COND bank], at (slot, i / U, its group within the row)
+inline int bsc_addr(int slot, int off, int cols, int i, int c) {
+#pragma HLS INLINE
+    const int p = off + i * cols + c, first = (off + i * cols + i) / BSC_W;
+    return (slot * BSC_RB + i / BSC_U) * BSC_GB + (p / BSC_W - first);
+}
+
+// An end's passes (BSC_PASS_BEGIN[E] ...): one pipelined loop a pass (II 1), its columns and
+// its ingestion side by side, until both are done (trip: units/backsub.py's column_pass_trip).
+// E = 0 sends the root's x_r to end 1 (BSC_ROOT), E = 1 reads them (BSC_FEED).
+template <class CFG, int E>
+void backsub_end(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::stream<L>& xin,
+                 hls::stream<L>& xout, bool at_x) {
+#pragma HLS INLINE
+    typedef L T;
+    const int CHAIN = CFG::MUL_LAT + CFG::ADD_LAT;
+    const int PAD = CHAIN + 1;
+    // the coefficients: [row residue][COND bank][slot, row / U, group]: lane l reads bank
+    // [l][*] (one word), the ingestion writes [*][h] (word h of its group): a read and a
+    // write a bank an iteration
+    T cbuf[BSC_U][BSC_W][BSC_NSLOT * BSC_RB * BSC_GB];
+#pragma HLS ARRAY_PARTITION variable=cbuf complete dim=1
+#pragma HLS ARRAY_PARTITION variable=cbuf complete dim=2
+    T y[BSC_NSLOT][MAX_F];  // the rows of the three slots, registers
+#pragma HLS ARRAY_PARTITION variable=y complete dim=0
+    if (at_x) return;
+    for (int q = BSC_PASS_BEGIN[E]; q < BSC_PASS_BEGIN[E + 1]; ++q) {
+#pragma HLS LOOP_TRIPCOUNT max=N_STEPS+3
+        const int st = BSC_STEP[q], ch = BSC_CHILD[q], in = BSC_INGEST[q];
+        const int sl = BSC_SLOT[q], cs = BSC_CSLOT[q], is = BSC_ISLOT[q];
+        const bool feed = BSC_FEED[q] != 0, root = BSC_ROOT[q] != 0;
+        const int f = st >= 0 ? STEP_F[st] : 0, soff = st >= 0 ? STEP_COND_OFF[st] : 0;
+        const int scols = st >= 0 ? STEP_W[st] + 1 : 0;
+        const int fc = ch >= 0 ? STEP_F[ch] : 0, coff = ch >= 0 ? STEP_COND_OFF[ch] : 0;
+        const int ccols = ch >= 0 ? STEP_W[ch] + 1 : 0, cblocks = (fc + BSC_U - 1) / BSC_U;
+        const int ca = BSC_COLA_BEGIN[q];
+        BscCursor ci = {0, 0, 0, 0, 0, 0};
+        bool ing = in >= 0;
+        if (ing) bsc_start(ci, in);
+        T xr = T(0), xprev = T(0), diag = T(1);
+        int r = f - 1, k = 0, trip = 0;
+        if (feed) FGC_WAIT("backsub_end", 1, "backsub_end", 0, "root");
+        for (; r >= 0 || ing; ++trip) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_F*(MAX_F/4+MAX_F/4+2)
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=y inter true distance=CHAIN
+            // cbuf: the pass writes slot BSC_ISLOT and reads BSC_SLOT / BSC_CSLOT, three
+            // different slots (units/backsub.py's column_passes): no iteration reads a word
+            // another iteration of the pass writes
+#pragma HLS DEPENDENCE variable=cbuf inter false
+            if (r >= 0) {
+                const int a = BSC_COLA[ca + r];
+                const int own = feed ? 0 : (r + BSC_U - 1) / BSC_U;
+                const int n = own + (a >= 0 ? cblocks : 0);
+                const int len = n == 0 ? 1 : (n > PAD ? n : PAD);
+                if (k == 0) {
+                    xr = feed ? xin.read() : y[sl][r];  // final: its last update a column ago
+                    if (root) xout.write(xr);
+                    if (!feed) {  // pairs (x_{f-1}, x_{f-2}), ...: an index test, no operator
+                        if (((f - 1 - r) & 1) == 0) {
+                            xprev = xr;
+                            if (r == 0) {
+                                BsPair out;
+                                out.word[0] = xr;
+                                out.word[1] = T(0);
+                                dx.write(out);
+                            }
+                        } else {
+                            BsPair out;
+                            out.word[0] = xprev;
+                            out.word[1] = xr;
+                            dx.write(out);
+                        }
+                    }
+                }
+                for (int l = 0; l < BSC_U; ++l) {
+#pragma HLS UNROLL
+                    // lane l's row: an own row r - 1 - U k ... (the one of residue l), or the
+                    // child's row U (k - own) + l; the same multiply-subtract either way (the
+                    // row, its slot and the coefficient's place are muxes: no operator)
+                    const int t = (r - 1 - l) & (BSC_U - 1);
+                    const bool mine = k < own;
+                    const int i = mine ? r - 1 - k * BSC_U - t : BSC_U * (k - own) + l;
+                    const bool act = mine ? k * BSC_U + t < r : (a >= 0 && i < fc);
+                    const int ys = mine ? sl : cs, off = mine ? soff : coff;
+                    const int cols = mine ? scols : ccols, c = mine ? r : fc + a;
+                    if (act) {
+                        const int p = off + i * cols + c;
+                        const T coef = cbuf[l][p % BSC_W][bsc_addr(ys, off, cols, i, c)];
+                        y[ys][i] = y[ys][i] - coef * xr;
+                    }
+                }
+                if (k == len - 1) {
+                    k = 0;
+                    --r;
+                } else {
+                    ++k;
+                }
+            }
+            if (ing) {  // a group of row ci.i of the step taken in
+                const BsGroup grp = gin.read();
+                const int hd = ci.base + ci.i - BSC_W * ci.g;  // the diagonal's word, if here
+                for (int h = 0; h < BSC_W; ++h)
+                    if (h == hd) diag = grp.w[h];  // a mux: the row's first group
+                const T inv = T(1) / diag;
+                const int first = (ci.base + ci.i) / BSC_W;
+                const int addr = (is * BSC_RB + ci.i / BSC_U) * BSC_GB + (ci.g - first);
+                for (int h = 0; h < BSC_W; ++h) {
+#pragma HLS UNROLL
+                    const int c = BSC_W * ci.g + h - ci.base;
+                    if (c >= ci.i && c <= ci.w) {
+                        const T v = grp.w[h] * inv;
+                        cbuf[ci.i % BSC_U][h][addr] = v;
+                        if (c == ci.w) y[is][ci.i] = v;  // y_i = d_i / R_ii
+                    }
+                }
+                bsc_next(ci);
+                if (ci.i == ci.f) ing = false;
+            }
+        }
+        // depth: the column's read, product, subtraction, write beside the ingestion's read,
+        // divide, scaling, write: the deeper (units/backsub.py's column_pass_depth)
+        FGC_CYCLES("backsub_end", E, root ? "root" : "pass", trip, 1,
+                   2 + CHAIN > 2 + CFG::DIV_LAT + CFG::MUL_LAT ? 2 + CHAIN
+                                                              : 2 + CFG::DIV_LAT + CFG::MUL_LAT);
+        if (st >= 0 && !feed) FGC_OUTER_SEND_STEP(st);
+    }
+}
+
+// End 0 sends the root's x_r (xroot: written only), end 1 reads them (xroot: read only); each
+// end's other x stream is a local one its passes never touch (BSC_FEED only on end 1,
+// BSC_ROOT only on end 0)
+template <class CFG>
+void backsub_end0(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::stream<L>& xroot,
+                  bool at_x) {
+    hls::stream<L> none;
+    backsub_end<CFG, 0>(gin, dx, none, xroot, at_x);
+}
+
+template <class CFG>
+void backsub_end1(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::stream<L>& xroot,
+                  bool at_x) {
+    hls::stream<L> none;
+    backsub_end<CFG, 1>(gin, dx, xroot, none, at_x);
+}
+
+// The state update as the two ends' solutions arrive (backsub_retire's loop, RETIRE_VARS
+// order): a step's first variable takes the step's pairs from its end's stream (BSC_END_OF),
+// x_{f-1} first, into its copy of delta and DELTA (LM control's step test reads it).
+template <class CFG>
+void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
+                         hls::stream<TrialVar>& tx, bool at_x) {
+    FGC_SEQUENTIAL();  // csim cycle counting only: the column region's records end here
+    FGC_OUTER_BRANCH();
+    L delta[CFG::N_TANGENT];  // the solved entries by tangent index
+    for (int i = 0; i < CFG::N_VARIABLES; ++i) {
+#pragma HLS PIPELINE II=CFG::RETIRE_II
+        const int s = RETIRE_STEP[i];
+        if (s >= 0 && !at_x) {
+            FGC_OUTER_RECEIVE_STEP(s);  // csim cycle counting: no earlier than its pass ended
+            const int f = STEP_F[s], cb = STEP_COL_BEGIN[s], e = BSC_END_OF[s];
+            for (int c = 0; c < CFG::MAX_F; c += 2) {
+#pragma HLS UNROLL
+                if (c < f) {
+                    const BsPair in = e ? dx1.read() : dx0.read();
+                    for (int h = 0; h < 2; ++h) {
+                        if (c + h < f) {
+                            const int col = STEP_COL[cb + f - 1 - c - h];
+                            delta[col] = in.word[h];
+                            DELTA[col] = in.word[h];
+                        }
+                    }
+                }
+            }
+        }
+        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx);  // its words on to trial_cost
+        FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
+    }
+}
+
+// Back-substitution by columns: the loader, the two ends, the state update beside them and
+// the cost at X_TRIAL beside that. at_x: no solve, the cost at X.
+template <class CFG>
+void back_substitute(bool at_x) {
+#pragma HLS DATAFLOW
+    hls::stream<BsGroup> g0;  // the loader's groups to each end
+    hls::stream<BsGroup> g1;
+#pragma HLS STREAM variable=g0 depth=BSC_FIFO0
+#pragma HLS STREAM variable=g1 depth=BSC_FIFO1
+    hls::stream<L> xroot;  // the root's x_r, end 0 to end 1
+#pragma HLS STREAM variable=xroot depth=CFG::MAX_F
+    hls::stream<BsPair> dx0;  // each end's solutions to the state update
+    hls::stream<BsPair> dx1;
+#pragma HLS STREAM variable=dx0 depth=BSC_DX0
+#pragma HLS STREAM variable=dx1 depth=BSC_DX1
+    hls::stream<TrialVar> tx;  // the retired variables' storage words, a variable a word
+#pragma HLS STREAM variable=tx depth=CFG::N_VARIABLES
+    FGC_PHASE(at_x ? "factor_cost" : "backsub");
+    backsub_loader<CFG>(g0, g1, at_x);
+    backsub_end0<CFG>(g0, dx0, xroot, at_x);
+    backsub_end1<CFG>(g1, dx1, xroot, at_x);
+    backsub_retire_cols<CFG>(dx0, dx1, tx, at_x);
+    trial_cost(tx);
+    FGC_OUTER_JOIN();
+    FGC_DRAINED(&g0, 1);
+    FGC_DRAINED(&g1, 1);
+    FGC_DRAINED(&xroot, 1);
+    FGC_DRAINED(&dx0, 1);
+    FGC_DRAINED(&dx1, 1);
+    FGC_DRAINED(&tx, 1);
+}
+#endif  // FGC_BS_COLUMNS
 
 #endif  // FGC_BACKSUB_DRIVER

@@ -35,7 +35,11 @@
 // issue - as units/backsub.py's retire_region prices it. A third process (FGC_OUTER_BRANCH
 // again: back_substitute's trial_cost) runs pipelined loops one after another, an iteration
 // after its k-th FGC_OUTER_ABSORB no earlier than the second's k-th iteration ends
-// (units/datapath.py's trial_end); the group ends when the last of the three does.
+// (units/datapath.py's trial_end); the group ends when the last of the three does. Keyed
+// marks (FGC_OUTER_SEND_STEP(s) / FGC_OUTER_RECEIVE_STEP(s): back-substitution by columns,
+// whose first process is a DATAFLOW region of a loader and two ends run one after the other
+// in C simulation) match a receive with the send of the same step, at that send's time on
+// its process's own clock (record_ends), not the first process's records up to it.
 //
 // The HGC beside the elimination (FGC_BESIDE_PRODUCER, FGC_BESIDE_CONSUMER, FGC_BESIDE_END:
 // accel.cpp.jinja's linearize_solve, a producer writing a Gram stream beside the elimination
@@ -91,6 +95,8 @@ struct State {
     std::vector<std::pair<std::size_t, char> > beside;
     std::vector<std::pair<std::size_t, std::pair<long, long> > > gates;
     std::vector<std::pair<std::size_t, long> > ready;
+    // keyed outer marks (FGC_OUTER_SEND_STEP / FGC_OUTER_RECEIVE_STEP): mark index -> step
+    std::map<std::size_t, long> keys;
 };
 
 inline State& state() {
@@ -119,6 +125,10 @@ inline void join() { state().marks.push_back(std::make_pair(state().records.size
 inline void task() { state().marks.push_back(std::make_pair(state().records.size(), 'T')); }
 inline void tasks_join() { state().marks.push_back(std::make_pair(state().records.size(), 'U')); }
 inline void mark(char what) { state().marks.push_back(std::make_pair(state().records.size(), what)); }
+inline void keyed_mark(char what, long key) {
+    state().keys[state().marks.size()] = key;
+    mark(what);
+}
 
 inline void beside(char what) {
     state().beside.push_back(std::make_pair(state().records.size(), what));
@@ -290,6 +300,44 @@ inline long span_total(std::size_t from, std::size_t to) {
     return sum + total_range(at, to);
 }
 
+// Per record of [from, to) (one DATAFLOW region's records): when it ends on its process's own
+// clock, as total_range clocks the region's processes (a loop after the one before it, a loop
+// after FGC_WAIT no earlier than its depth after the loop it waits for); a record that does
+// not run ends where its process's clock stands. The column design's keyed sends
+// (FGC_OUTER_SEND_STEP) happen at these times (units/backsub.py's column_timeline).
+inline std::vector<long> record_ends(std::size_t from, std::size_t to) {
+    const std::vector<Record>& r = log();
+    std::vector<long> ends(to - from, 0);
+    std::map<std::pair<std::string, int>, long> clock, pending;
+    for (std::size_t q = from; q < to; ++q) {
+        const std::pair<std::string, int> key(r[q].process, r[q].instance);
+        if (!r[q].on_process.empty()) {
+            for (std::size_t x = from; x < q; ++x)
+                if (r[x].process == r[q].on_process && r[x].instance == r[q].on_instance &&
+                    ends_with(r[x].loop, r[q].on_loop) && r[x].trip > 0) {
+                    if (!pending.count(key) || pending[key] < ends[x - from])
+                        pending[key] = ends[x - from];
+                    break;
+                }
+            ends[q - from] = clock[key];
+            continue;
+        }
+        if (r[q].trip <= 0) {
+            ends[q - from] = clock[key];
+            continue;
+        }
+        long end = clock[key] + r[q].cycles();
+        if (pending.count(key)) {
+            const long waited = pending[key] + r[q].depth;
+            end = waited > end ? waited : end;
+            pending.erase(key);
+        }
+        clock[key] = end;
+        ends[q - from] = end;
+    }
+    return ends;
+}
+
 // Records [from, to) with their outer groups (FGC_OUTER_*: see the comment at the top); the
 // rest priced by span_total. An outer group's first mark at `from` and its join at `to` belong
 // to the span.
@@ -298,6 +346,7 @@ inline long outer_total(std::size_t from, std::size_t to) {
     long sum = 0;
     std::size_t at = from;
     std::vector<std::size_t> branches, sends, receives, absorbs;
+    std::vector<long> send_keys, receive_keys;  // keyed marks' steps (-1: unkeyed)
     bool open = false;
     auto close_group = [&](std::size_t end) {
         const std::vector<Record>& r = s.records;
@@ -311,9 +360,21 @@ inline long outer_total(std::size_t from, std::size_t to) {
         long issue = 0, last = 0, gate = -1;
         bool any = false;
         std::size_t next = 0;
+        std::vector<long> first_ends;  // keyed sends: the first process's records' ends
         for (std::size_t q = b0; q < c0; ++q) {
-            for (; next < receives.size() && receives[next] <= q; ++next)
+            for (; next < receives.size() && receives[next] <= q; ++next) {
+                if (receive_keys[next] >= 0) {  // the send of the same step, on its clock
+                    if (first_ends.empty()) first_ends = record_ends(a0, b0);
+                    gate = first;
+                    for (std::size_t k = 0; k < sends.size(); ++k)
+                        if (send_keys[k] == receive_keys[next] && sends[k] > a0) {
+                            gate = first_ends[sends[k] - 1 - a0];
+                            break;
+                        }
+                    continue;
+                }
                 gate = next < sends.size() ? span_total(a0, sends[next]) : first;
+            }
             if (r[q].trip <= 0) continue;
             long at = any ? issue + r[q].ii : 0;
             if (gate > at) at = gate;
@@ -344,9 +405,11 @@ inline long outer_total(std::size_t from, std::size_t to) {
         if (third > last) last = third;
         return first > last ? first : last;
     };
-    for (const auto& m : s.marks) {
+    for (std::size_t mi = 0; mi < s.marks.size(); ++mi) {
+        const auto& m = s.marks[mi];
         const char w = m.second;
         if (w != 'B' && w != 'S' && w != 'R' && w != 'J' && w != 'A') continue;
+        const long key = s.keys.count(mi) ? s.keys.at(mi) : -1;
         if (w == 'J' ? (m.first <= from || m.first > to) : (m.first < from || m.first >= to))
             continue;
         if (w == 'B') {
@@ -357,12 +420,16 @@ inline long outer_total(std::size_t from, std::size_t to) {
                 sends.clear();
                 receives.clear();
                 absorbs.clear();
+                send_keys.clear();
+                receive_keys.clear();
             }
             branches.push_back(m.first);
         } else if (w == 'S' && open) {
             sends.push_back(m.first);
+            send_keys.push_back(key);
         } else if (w == 'R' && open) {
             receives.push_back(m.first);
+            receive_keys.push_back(key);
         } else if (w == 'A' && open) {
             absorbs.push_back(m.first);
         } else if (w == 'J' && open) {
@@ -508,6 +575,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_RECEIVE() ::fgc_cycles::mark('R')
 #define FGC_OUTER_JOIN() ::fgc_cycles::mark('J')
 #define FGC_OUTER_ABSORB() ::fgc_cycles::mark('A')
+#define FGC_OUTER_SEND_STEP(step) ::fgc_cycles::keyed_mark('S', step)
+#define FGC_OUTER_RECEIVE_STEP(step) ::fgc_cycles::keyed_mark('R', step)
 #define FGC_PHASE(name) ::fgc_cycles::phase(name)
 #define FGC_EVENT(name) ::fgc_cycles::event(name)
 #define FGC_BESIDE_PRODUCER() ::fgc_cycles::beside('P')
@@ -533,6 +602,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_RECEIVE() ((void)0)
 #define FGC_OUTER_JOIN() ((void)0)
 #define FGC_OUTER_ABSORB() ((void)0)
+#define FGC_OUTER_SEND_STEP(step) ((void)0)
+#define FGC_OUTER_RECEIVE_STEP(step) ((void)0)
 #define FGC_PHASE(name) ((void)0)
 #define FGC_EVENT(name) ((void)0)
 #define FGC_BESIDE_PRODUCER() ((void)0)

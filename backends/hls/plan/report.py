@@ -108,7 +108,10 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
         procs = ("cpe_feed", *(p for i in range(plan.options.cpe)
                                for p in (f"cpe_tap{i}", f"cpe{i}")), "cpe_drain",
                  *source, "cholesky_assembler", "cholesky_cascade")
-    procs += ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
+    if any(ch.name == "backsub_xroot" for ch in plan.channels):  # by columns (backsub_lanes 4)
+        procs += ("backsub_loader", "backsub_end0", "backsub_end1", "backsub_retire")
+    else:
+        procs += ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0")
     if any(ch.name == "backsub_dx" for ch in plan.channels):  # the state update it feeds
         procs += ("backsub_slots", "backsub_retire")
     if any(ch.name == "trial_tx" for ch in plan.channels):  # the cost pass beside them

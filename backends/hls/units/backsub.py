@@ -226,6 +226,325 @@ def retire_region(slots: list[list[Loop]], sent: list[int], counts: list[int], i
     return max(clock, last)
 
 
+COLUMN_LANES = 4  # backsub_lanes = 4: the column design's update lanes per end (U)
+COLUMN_WIDTH = 4  # words of COND an aligned group holds (an end takes a group a cycle)
+COLUMN_SLOTS = 3  # an end's conditional buffers: the step solved, its child, the one loading
+
+
+def column_order(tables: dict) -> list[int]:
+    """The steps root first, levels in turn (LEVEL_STEPS order): the order the slots solve
+    and the state update retires them."""
+    begin, level_steps = tables["LEVEL_BEGIN"], tables["LEVEL_STEPS"]
+    return [level_steps[i] for li in range(len(begin) - 2, -1, -1)
+            for i in range(begin[li], begin[li + 1])]
+
+
+def column_chain(tables: dict) -> tuple[tuple[int, ...], tuple[int, ...]] | str:
+    """The column design's two ends (``backsub_lanes = 4``): end 0 the root then the chain below
+    its first child, end 1 the chain below its second (each root first); or, when the
+    elimination tree is not such a chain (a step with two children below the root, the root
+    with three, a separator column that is not a frontal column of the step's parent), a
+    sentence saying why (the design is refused by name)."""
+    order = column_order(tables)
+    cols, cb = tables["STEP_COL"], tables["STEP_COL_BEGIN"]
+    f_of, w_of = tables["STEP_F"], tables["STEP_W"]
+    if not order:
+        return "no elimination steps"
+    owner = {c: s for s in order for c in cols[cb[s]:cb[s] + f_of[s]]}
+    children: dict[int, list[int]] = {s: [] for s in order}
+    for s in order[1:]:
+        sep = cols[cb[s] + f_of[s]:cb[s] + w_of[s]]
+        parents = {owner.get(c) for c in sep}
+        if not sep or len(parents) != 1:
+            return (f"step {s}'s separator is not the frontal columns of one step (a tree, "
+                    "not a chain)")
+        children[parents.pop()].append(s)
+    root = order[0]
+    if len(children[root]) > 2:
+        return f"the root step {root} has {len(children[root])} children (at most two ends)"
+    ends = []
+    for first in children[root]:
+        chain = [first]
+        while children[chain[-1]]:
+            if len(children[chain[-1]]) > 1:
+                return (f"step {chain[-1]} has {len(children[chain[-1]])} children (a tree, "
+                        "not a two-ended chain)")
+            chain.append(children[chain[-1]][0])
+        ends.append(tuple(chain))
+    ends += [()] * (2 - len(ends))
+    return (root, *ends[0]), ends[1]
+
+
+def column_sep(tables: dict, step: int, child: int) -> list[int]:
+    """Per frontal column r of ``step`` (r = 0 … f − 1): its position a in ``child``'s separator
+    (the child's column f' + a), or −1 (not one of them, or no child: −1)."""
+    cols, cb, f_of = tables["STEP_COL"], tables["STEP_COL_BEGIN"], tables["STEP_F"]
+    pos = {}
+    if child >= 0:
+        sep = cols[cb[child] + f_of[child]:cb[child] + tables["STEP_W"][child]]
+        pos = {c: a for a, c in enumerate(sep)}
+    return [pos.get(cols[cb[step] + r], -1) for r in range(f_of[step])]
+
+
+def column_len(r: int, a: int, child_f: int, ops: OperatorTable, feed: bool = False,
+               lanes: int = COLUMN_LANES) -> int:
+    """Iterations of column r in a pass (fgc_backsub.h's bsc_column_len): its own rows above r
+    in blocks of U (lane l the row of residue l, :func:`backsub_triangle`'s rule; none in a
+    feed pass), then, where the column is the child's separator column a ≥ 0, the child's f'
+    rows in blocks of U; at least CHAIN + 1 (so x_{r−1} and a row's next update find it
+    final), except a column with no rows at all: one iteration (x_r read and sent)."""
+    own = 0 if feed else -(-r // lanes)
+    n = own + (-(-child_f // lanes) if a >= 0 else 0)
+    return max(n, backsub_chain(ops) + 1) if n else 1
+
+
+def column_groups(tables: dict, step: int) -> int:
+    """Aligned groups of :data:`COLUMN_WIDTH` COND words the loader streams an end for ``step``
+    (row by row, a group two rows share sent for each: :func:`wide_trip`)."""
+    f, w = tables["STEP_F"][step], tables["STEP_W"][step]
+    return wide_trip(tables["STEP_COND_OFF"][step], f, w - f, COLUMN_WIDTH // 2) if f else 0
+
+
+def column_pass_depth(ops: OperatorTable) -> int:
+    """A column pass's iteration: the update's coefficient read, its product with x_r, the
+    subtraction, the write (2 + CHAIN), beside the ingestion of a group: 1 / R_ii, the
+    scaling, the write (2 + Ld + Lm); the deeper of the two."""
+    return max(2 + backsub_chain(ops), 2 + ops.div.latency + ops.mul.latency)
+
+
+@dataclasses.dataclass(frozen=True)
+class ColumnPass:
+    """One pass of an end's column loop (fgc_backsub.h's BSC_* tables): ``step`` whose columns
+    it runs (−1: none), ``child`` whose rows they update too (−1: none), ``ingest`` the step
+    whose groups it takes in (−1: none), the buffer slots of the three (an end's sequence
+    index mod 3), ``feed``: end 1's pass over the root's columns (x_r from end 0's stream,
+    the child's rows only), ``root``: end 0's pass that sends the root's x_r to end 1."""
+    end: int
+    step: int
+    child: int
+    ingest: int
+    slot: int
+    child_slot: int
+    ingest_slot: int
+    feed: bool = False
+    root: bool = False
+
+
+def column_passes(tables: dict) -> list[list[ColumnPass]]:
+    """Per end, its column passes in order (fgc_backsub.h's backsub_end<e>): two passes taking
+    in the end's first two steps' conditionals (no columns); on end 1 (when end 0 holds more
+    than the root), then a pass over the root's columns, x_r from end 0's stream (its first
+    step's rows updated where the root's column is in its separator; no groups: its buffers
+    are full); then a pass per step t of the end (end 0: the root first), its columns
+    updating its own rows and its child's (the step after it on the end), taking in step
+    t + 2's groups beside them (into the slot step t − 1 freed)."""
+    chain = column_chain(tables)
+    assert not isinstance(chain, str), chain
+    out = []
+    for e, seq in enumerate(chain):
+        passes = [ColumnPass(e, -1, -1, seq[k], -1, -1, k % COLUMN_SLOTS)
+                  for k in range(min(2, len(seq)))]
+        if e == 1 and seq:
+            passes.append(ColumnPass(e, chain[0][0], seq[0], -1, -1, 0, -1, feed=True))
+        for t, step in enumerate(seq):
+            child = seq[t + 1] if t + 1 < len(seq) else -1
+            ingest = seq[t + 2] if t + 2 < len(seq) else -1
+            passes.append(ColumnPass(e, step, child, ingest, t % COLUMN_SLOTS,
+                                     (t + 1) % COLUMN_SLOTS if child >= 0 else -1,
+                                     (t + 2) % COLUMN_SLOTS if ingest >= 0 else -1,
+                                     root=(e == 0 and t == 0 and bool(chain[1]))))
+        out.append(passes)
+    return out
+
+
+def column_pass_trip(tables: dict, p: ColumnPass, ops: OperatorTable) -> int:
+    """A pass's iterations: its columns' (:func:`column_len`, r = f − 1 … 0) and the groups it
+    takes in side by side, the more of the two."""
+    cols = 0
+    if p.step >= 0:
+        fc = tables["STEP_F"][p.child] if p.child >= 0 else 0
+        cols = sum(column_len(r, a, fc, ops, p.feed)
+                   for r, a in enumerate(column_sep(tables, p.step, p.child)))
+    return max(cols, column_groups(tables, p.ingest) if p.ingest >= 0 else 0)
+
+
+COLUMN_LOAD_DEPTH = 2  # the loader's loop: a group read from COND, written to an end's stream
+
+
+def column_timeline(tables: dict, ops: OperatorTable) -> list[list[tuple[ColumnPass, int, int]]]:
+    """Per end, its passes with their start and end as fgc_cycles.h's region arithmetic clocks
+    a process (cycles from the region's start): back to back, a pass (trip − 1) + depth
+    (:func:`column_pass_depth`), end 1's feed pass ending no earlier than its depth after end
+    0's root pass (it reads x_r from end 0's stream as end 0's columns produce them:
+    FGC_WAIT)."""
+    depth = column_pass_depth(ops)
+    out, root_end = [], None
+    for passes in column_passes(tables):
+        clock, rows = 0, []
+        for p in passes:
+            trip = column_pass_trip(tables, p, ops)
+            if trip <= 0:
+                continue
+            start, end = clock, clock + (trip - 1) + depth
+            if p.feed and root_end is not None:
+                end = max(end, root_end + depth)
+            rows.append((p, start, end))
+            clock = end
+            if p.root:
+                root_end = end
+        out.append(rows)
+    return out
+
+
+def column_loader_trip(tables: dict) -> int:
+    """The loader's loop: an iteration sends each end its next group (the longer end's groups)."""
+    return max(sum(column_groups(tables, s) for s in seq) for seq in column_chain(tables))
+
+
+def column_schedule(tables: dict, ops: OperatorTable) -> tuple[dict[int, int], int]:
+    """The column region as fgc_cycles.h's total_range prices a DATAFLOW region of the loader
+    and the two ends: its slowest process plus the fill of the others (the loader's
+    :data:`COLUMN_LOAD_DEPTH`, the other end's pass depth), and no earlier than any process's
+    last pass (end 1's feed pass waits for end 0's root pass). Returns each solved step's end
+    (its pass's end on its end's clock: when its last x has left for the state update) and
+    the region's cycles."""
+    timeline = column_timeline(tables, ops)
+    loader = column_loader_trip(tables)
+    procs = [(loader - 1 + COLUMN_LOAD_DEPTH, COLUMN_LOAD_DEPTH)] if loader else []
+    ends, last = {}, 0
+    for rows in timeline:
+        if not rows:
+            continue
+        trips = [column_pass_trip(tables, p, ops) for p, _, _ in rows]
+        procs.append((sum(t - 1 + column_pass_depth(ops) for t in trips),
+                      column_pass_depth(ops)))
+        for p, _, end in rows:
+            if p.step >= 0 and not p.feed:
+                ends[p.step] = end
+            last = max(last, end)
+    slow = max(range(len(procs)), key=lambda i: procs[i][0])
+    region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+    return ends, max(region, last)
+
+
+def column_fifo(tables: dict, ops: OperatorTable, end: int) -> int:
+    """Depth of the loader's stream to ``end``: the loader sends both ends a group a cycle in
+    step, so before the end takes its g-th group (a pass's i-th iteration takes the pass's
+    i-th group) the stream holds the groups sent by then less g; the largest of these, + 1:
+    the loader never waits on a full stream (the ends take a group a cycle at most, so it
+    never runs behind either)."""
+    total = sum(column_groups(tables, s) for s in column_chain(tables)[end])
+    most, g = 0, 0
+    for p, start, _ in column_timeline(tables, ops)[end]:
+        if p.ingest < 0:
+            continue
+        for i in range(column_groups(tables, p.ingest)):
+            most = max(most, min(start + i + 1, total) - g)
+            g += 1
+    return max(most, 0) + 1
+
+
+def column_dx_depth(tables: dict, end: int) -> int:
+    """Depth of an end's solution stream to the state update (pairs of words): all its steps'
+    (the state update, a variable a retire II, falls behind the ends; they never wait on it)."""
+    return max(1, sum((tables["STEP_F"][s] + 1) // 2 for s in column_chain(tables)[end]))
+
+
+def column_tables(tables: dict, ops: OperatorTable) -> dict:
+    """The BSC_* tables fgc_backsub.h's column driver runs over (accel.cpp.jinja prints them):
+    per end its step sequence (BSC_SEQ, from BSC_SEQ_BEGIN[e]; the loader walks it), per pass
+    (from BSC_PASS_BEGIN[e]) its step, child, ingested step, slots, feed and root flags, and
+    per pass column r its child separator position (BSC_COLA[BSC_COLA_BEGIN[pass] + r]); per
+    step its end (BSC_END_OF, the state update's stream); the streams' depths."""
+    chain = column_chain(tables)
+    seq, seq_begin = [], [0]
+    for e in range(2):
+        seq += list(chain[e])
+        seq_begin.append(len(seq))
+    rows = {k: [] for k in ("STEP", "CHILD", "INGEST", "SLOT", "CSLOT", "ISLOT", "FEED", "ROOT",
+                            "COLA_BEGIN")}
+    cola, pass_begin = [], [0]
+    for passes in column_passes(tables):
+        for p in passes:
+            for k, v in (("STEP", p.step), ("CHILD", p.child), ("INGEST", p.ingest),
+                         ("SLOT", p.slot), ("CSLOT", p.child_slot), ("ISLOT", p.ingest_slot),
+                         ("FEED", int(p.feed)), ("ROOT", int(p.root)),
+                         ("COLA_BEGIN", len(cola))):
+                rows[k].append(v)
+            if p.step >= 0:
+                cola += column_sep(tables, p.step, p.child)
+        pass_begin.append(len(rows["STEP"]))
+    end_of = [-1] * len(tables["STEP_F"])
+    for e in range(2):
+        for s in chain[e]:
+            end_of[s] = e
+    return {"seq": seq, "seq_begin": seq_begin, "pass_begin": pass_begin,
+            "cola": cola or [-1], "end_of": end_of,
+            **{k.lower(): v for k, v in rows.items()},
+            "fifo": [column_fifo(tables, ops, e) for e in range(2)],
+            "dx": [column_dx_depth(tables, e) for e in range(2)]}
+
+
+def column_operators(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
+    """One end's operators (its column pass, one pipelined loop at II 1 owning them): U
+    multiply-subtracts (c_ir x_r from y_i), and the ingestion's 1 / R_ii (one divide a group)
+    and the group's :data:`COLUMN_WIDTH` words scaled by it (c_ic = R_ic / R_ii, S_ia / R_ii,
+    y_i = d_i / R_ii). The loader moves words (no operator)."""
+    return sum_operators((BoundLoop("column_pass", (("add", COLUMN_LANES),
+                                                    ("mul", COLUMN_LANES + COLUMN_WIDTH),
+                                                    ("div", 1)), 1),), ops)
+
+
+def column_phases(ctx, unit: str) -> None:
+    """back_substitute with ``backsub_lanes = 4`` (the column design): one phase ``backsub``,
+    its DATAFLOW region of the loader, the two ends (:func:`column_schedule`) and the state
+    update beside them, each step's variables retired no earlier than the end of the pass that
+    solved it (:func:`retire_region`'s arithmetic on those ends), then the cost at X_TRIAL."""
+    from fgc_backends.hls.units.datapath import trial_end
+    from fgc_backends.hls.units.state_update import retire_timing
+    tables, ops = ctx.tables, ctx.les
+    ends, columns = column_schedule(tables, ops)
+    order = column_order(tables)
+    counts = [len(ctx.program.schedule.steps[s].frontals) for s in order]
+    ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
+                              ctx.opts.state_allocation)
+    var_end: list[int] = []
+    region = max(columns, retire_sent([ends[s] for s in order], counts, ii, depth, var_end))
+    cost = max(region, trial_end(ctx.shared["trial_loops"], var_end))
+    words = max(v.storage_dim for v in ctx.program.variables)
+    for e in range(2):
+        ctx.channels.append(Channel(f"backsub_groups{e}", "stream", column_fifo(tables, ops, e),
+                                    COLUMN_WIDTH * ops.word_bits, "backsub_loader",
+                                    f"backsub_end{e}"))
+        ctx.channels.append(Channel(f"backsub_dx{e}", "stream", column_dx_depth(tables, e),
+                                    2 * ops.word_bits, f"backsub_end{e}", "backsub_retire"))
+    ctx.channels.append(Channel("backsub_xroot", "stream", ctx.sizes["MAX_F"], ops.word_bits,
+                                "backsub_end0", "backsub_end1"))
+    ctx.channels.append(Channel("trial_tx", "stream", len(ctx.program.variables),
+                                words * ctx.ops.word_bits, "backsub_retire", "trial_cost"))
+    ctx.add_phase("solve", Phase("backsub", False, (
+        Process("backsub_columns", unit, (Loop("column_region", 1, 1, columns),)),
+        Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - columns),)
+                if region > columns else ()),
+        Process("trial_cost", "factor_cost", (Loop("cost_tail", 1, 1, cost - region),)
+                if cost > region else ())), linear=True))
+
+
+def retire_sent(sent_at: list[int], counts: list[int], ii: int,
+                depth: int, ends: list[int]) -> int:
+    """:func:`retire_region`'s state update with each step's solution sent at ``sent_at[i]``
+    (the column design: the end of the pass that solved it): an iteration ``ii`` after the one
+    before, a step's first no earlier than its send; returns when the last ends."""
+    issue, last = None, 0
+    for at_step, n in zip(sent_at, counts, strict=True):
+        for j in range(n):
+            at = 0 if issue is None else issue + ii
+            issue = max(at, at_step) if j == 0 else at
+            last = issue + depth
+            ends.append(last)
+    return last
+
+
 def backsub_phases(ctx, unit: str) -> None:
     """The emitted back_substitute (fgc_backsub.h): one phase ``backsub``, its DATAFLOW region
     of the slot process (per slot of :func:`backsub_slots` its copies, the separator's only
@@ -295,6 +614,35 @@ def backsub_operators(ops: OperatorTable, lanes: int = 1) -> tuple[tuple[str, in
                           BoundLoop("triangle", (("add", 1), ("mul", 2)), 1)), ops)
 
 
+def column_build(ctx) -> None:
+    """``backsub_lanes = 4``: the column design (docs/hls.md, "Back-substitution by columns"):
+    COND cyclic over 4 banks (the loader reads a group of 4 words for each end a cycle: two
+    reads a bank), per end its three conditional buffers (``cbuf``, by row residue and word
+    bank: U × 4 banks) and its unit (:func:`column_operators`); the phase by
+    :func:`column_phases`. A Program whose elimination tree is not a two-ended chain is refused
+    by name."""
+    from fgc_backends.hls.plan.model import Memory, PlanError
+    program, ops, tables = ctx.program, ctx.les, ctx.tables
+    chain = column_chain(tables)
+    if isinstance(chain, str):
+        raise PlanError(f"backsub_lanes {COLUMN_LANES} (back-substitution by columns, per end "
+                        f"of a two-ended chain): {program.name}'s elimination tree does not "
+                        f"fit: {chain}; use backsub_lanes 1 or 2")
+    ctx.memories[:] = [dataclasses.replace(m, banks=COLUMN_WIDTH) if m.name == "cond" else m
+                       for m in ctx.memories]
+    # fgc_backsub.h's cbuf: [U][W][slots × ⌈MAX_F / U⌉ rows × (MAX_W + 1) / W + 2 groups]
+    words = (COLUMN_LANES * COLUMN_WIDTH * COLUMN_SLOTS * -(-ctx.sizes["MAX_F"] // COLUMN_LANES)
+             * ((ctx.sizes["MAX_W"] + 1) // COLUMN_WIDTH + 2))
+    for e in range(2):
+        ctx.memories.append(Memory(f"bs_colbuf{e}", words, ops.word_bits,
+                                   COLUMN_LANES * COLUMN_WIDTH))
+    name = "backsub" if program.solver.linear == "qr" else "trisolve"
+    ctx.units.append(Unit(name, "back-substitution by columns, one per end of the chain "
+                          "(the column pass: U multiply-subtracts, the ingestion's 1 / R_ii "
+                          "and scaling)", 2, column_operators(ops)))
+    column_phases(ctx, name)
+
+
 def build(ctx) -> None:
     """Both linear solvers: :data:`LANES` back-substitution units (QR: ``qr<l>_backsub``;
     Cholesky: ``trisolve``), whatever the unit sets (as emitted: one step's cond_backsub on one
@@ -302,6 +650,10 @@ def build(ctx) -> None:
     by rows, Lz = g riding the cascade)."""
     program, opts, ops = ctx.program, ctx.opts, ctx.les
     lanes = opts.backsub_lanes
+    if lanes == COLUMN_LANES and (program.solver.linear == "qr"
+                                  or opts.hessian_storage == "frontal"):
+        column_build(ctx)
+        return
     if lanes > 1:  # COND cyclic over ``lanes`` banks (backsub_slots' ARRAY_PARTITION)
         ctx.memories[:] = [dataclasses.replace(m, banks=lanes) if m.name == "cond" else m
                            for m in ctx.memories]
