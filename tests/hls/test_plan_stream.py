@@ -239,3 +239,17 @@ def test_the_searched_stream_design_prices_at_least_what_its_text_holds(small_n7
     assert window <= res["parts"]["window kernel"][0]
     assert batch <= res["parts"]["batch kernel"][0]
     assert design.dsp(dsp_of) - window - batch <= res["parts"]["stream section"][0]
+
+
+def test_the_cost_at_x_is_priced_once_per_update(paper_a_n7):
+    """LM's start costs the window at X once per call (the plan's per-call ``factor_cost`` phase,
+    the ``cost`` event): the update prices it, the window's and a batch step's (it was left out:
+    the counting C simulation's keyframe 0 of LIO N = 8 counted 1.451 x the model)."""
+    _, model = paper_a_n7
+    cost = sum(phase_cycles(ph) for ph in model.plan.phases if ph.name == "factor_cost")
+    assert cost > 0
+    term = model.price(5, 2).term("factor_cost")
+    assert (term.each, term.times) == (cost, 1)
+    bcost = sum(phase_cycles(ph) for ph in model.batch["plan"].phases
+                if ph.name == "factor_cost")
+    assert model.price(4, 2).term("batch_factor_cost").each == bcost

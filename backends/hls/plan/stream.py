@@ -23,10 +23,10 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from fgc_backends.cost.structure import entering_blocks, stacked_pattern, step_columns
-from fgc_backends.hls.plan.cost import merge_plans, plan_cost
+from fgc_backends.hls.plan.cost import merge_plans, phase_cycles, plan_cost
 from fgc_backends.hls.plan.loops import _assign, _tables, kernel_loop, kernel_timing, plan_sizes
 from fgc_backends.hls.plan.model import Loop, Phase, PlanError, Process, Unit
-from fgc_backends.hls.plan.report import PHASE_TRIGGER, plan_groups, unit_sets
+from fgc_backends.hls.plan.report import PHASE_TRIGGER, phase_group, plan_groups, unit_sets
 from fgc_backends.hls.units.memories import stream_memories
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
 
@@ -292,6 +292,20 @@ def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf
                                                           unit))).cycles
 
 
+def _solve_groups(plan) -> dict[str, int]:
+    """Per phase group the cycles of one execution (:func:`~fgc_backends.hls.plan.report.
+    plan_groups`), with the phases the plan runs once per call whose event is not the call
+    itself: the cost at X (``factor_cost``, the ``cost`` event: LM's start, through the cost
+    pass beside back-substitution). The call's own copies (``setup``) are the stream section's
+    loops here, not the batch top's."""
+    group = plan_groups(plan)
+    for ph in plan.phases:
+        g = phase_group(ph.name)
+        if ph.per == "call" and PHASE_TRIGGER.get(g, "call") != "call":
+            group[g] = group.get(g, 0) + phase_cycles(ph)
+    return group
+
+
 def _relinearize(ev: dict) -> int:
     """1 if the marginal (or a batch step's store) linearises the window (the chain) at its
     optimum again: LM took a step after its last linearisation (fgc_stream.h); counted, the
@@ -325,7 +339,7 @@ class WindowUpdateModel:
                             f"update); --qr-unit {config.design.qr_unit} is not")
         self.plan = plan = accel_plan(t, config)
         self.clock_mhz = plan.clock_mhz
-        self.group = plan_groups(plan)
+        self.group = _solve_groups(plan)
         self.les = plan.target.ops("float32" if config.linear_cxx == "float" else "float64")
         self._qr = {}
         self.sets = max(1, unit_sets(plan))
@@ -336,7 +350,7 @@ class WindowUpdateModel:
         self.batch = None
         if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
             bplan = accel_plan(layout.batch.template, config)
-            self.batch = {"layout": layout.batch, "plan": bplan, "group": plan_groups(bplan),
+            self.batch = {"layout": layout.batch, "plan": bplan, "group": _solve_groups(bplan),
                           "sets": max(1, unit_sets(bplan))}
         phases = self._stream_phases(kernel_timing(plan.ops), kernel_timing(self.les),
                                      layout.matvec_ii(config.linear_cxx, config.part))
