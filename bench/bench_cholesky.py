@@ -9,8 +9,11 @@ share.
 
     python bench/bench_cholesky.py
     python bench/bench_cholesky.py --cascades 2    # the two-cascade designs only
+    python bench/bench_cholesky.py --lanes 1 2     # each also two words a cycle through the
+                                                   # cascade (HlsConfig.cascade_lanes)
     python bench/bench_cholesky.py --before        # the HGC before the elimination (one
                                                    # cascade: hgc_beside off)
+    python bench/bench_cholesky.py --backsub-lanes 2   # back-substitution two lanes wide
 
 Model estimates at 143 MHz, float32 (no vendor tool here).
 """
@@ -42,19 +45,26 @@ def main() -> None:
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--cascades", type=int, nargs="+", choices=(1, 2), default=(1, 2))
+    parser.add_argument("--lanes", type=int, nargs="+", choices=(1, 2), default=(1,),
+                        help="words a cycle through each cascade (HlsConfig.cascade_lanes)")
     parser.add_argument("--before", action="store_true",
                         help="every block type's HGC before the elimination (hgc_beside off)")
+    parser.add_argument("--backsub-lanes", type=int, choices=(1, 2), default=1,
+                        help="HlsConfig.backsub_lanes: back-substitution's width")
     args = parser.parse_args()
-    for (ex, n, cpe), sets in ((c, k) for c in CASES for k in args.cascades):
+    for (ex, n, cpe), sets, lanes in ((c, k, la) for c in CASES for k in args.cascades
+                                      for la in args.lanes):
         program = compile_graph(example(ex).build(N=n), SolverConfig(
             method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"{ex}{cpe}")
-        config = HlsConfig(scalar="float", unit_sets=sets, hgc_beside=not args.before)
+        config = HlsConfig(scalar="float", unit_sets=sets, hgc_beside=not args.before,
+                           backsub_lanes=args.backsub_lanes, cascade_lanes=lanes)
         plan = accel_plan(program, config)
         cost, groups = plan_cost(plan), plan_groups(plan)
         with tempfile.TemporaryDirectory() as d:
             read = measure(program, config, Path(d) / "design")
         ms = cost.cycles / cost.clock_mhz / 1e3
-        print(f"{ex} N={n} #CPE={cpe} x{sets}: {cost.cycles:,} cycles/iteration, "
+        print(f"{ex} N={n} #CPE={cpe} x{sets}{' L2' if lanes == 2 else ''}: "
+              f"{cost.cycles:,} cycles/iteration, "
               f"{ms:.3f} ms/iteration, "
               f"{5 * ms:.2f} ms/solve (5 it.), DSP plan {cost.dsp} reader {read['reader_dsp']}, "
               f"BRAM36 {cost.bram36}, fits (plan) {cost.fits}, linear share "

@@ -137,6 +137,23 @@ def cases():
     out.append(("imu_window N=20 Cholesky #CPE=5 x2", imu_window.build(N=20),
                 SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
                 HlsConfig(scalar="float", unit_sets=2)))
+    # back-substitution two lanes wide (backsub_lanes=2: COND cyclic over two banks, four
+    # words a cycle into a lane, the triangle two rows a cycle), one cascade and two
+    out.append(("LIO N=30 Cholesky #CPE=15 backsub x2 lanes", lio.build(N=30),
+                SolverConfig(method="gn", linear="cholesky", cpe=15, precision="float32"),
+                HlsConfig(scalar="float", backsub_lanes=2)))
+    out.append(("imu_window N=20 Cholesky #CPE=20 x2 backsub x2 lanes", imu_window.build(N=20),
+                SolverConfig(method="gn", linear="cholesky", cpe=20, precision="float32"),
+                HlsConfig(scalar="float", unit_sets=2, backsub_lanes=2)))
+    # two words a cycle through the cascade (cascade_lanes=2, fgc_cpe.h's STREAM_WORDS): one cascade
+    # at #CPE = 80 (one round a step), two at #CPE = 5 (three rounds a step, the later ones
+    # read back from H two words a cycle)
+    out.append(("imu_window N=20 Cholesky #CPE=80 L2", imu_window.build(N=20),
+                SolverConfig(method="gn", linear="cholesky", cpe=80, precision="float32"),
+                HlsConfig(scalar="float", cascade_lanes=2)))
+    out.append(("imu_window N=20 Cholesky #CPE=5 x2 L2", imu_window.build(N=20),
+                SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
+                HlsConfig(scalar="float", unit_sets=2, cascade_lanes=2)))
     # a general tree (not a chain): steps with several children and many factors (30 Pose2,
     # 60 factors), with the HGC beside the elimination (the default) and before it
     for beside in (True, False):

@@ -11,7 +11,9 @@ the fastest design (plan cycles) over linear solver, n_u, QR unit sets, #CPE and
 scale that FITS the xc7z045 on honest figures, DSP = max(plan, the second reader's DSP of the
 emitted design), BRAM36 from the plan; the latency floor of one iteration
 (``fgc.app.floor``) is printed beside it. Reading a design emits it (tens of seconds for LIO
-N=30); reads are cached in ``$FGC_CACHE_DIR`` and bounded (``--reads``, progress on stderr).
+N=30): the search reads in plan-speed order, skipping designs the plan puts over the part,
+until one fits as re-priced (so it cannot miss the fastest that fits); reads are cached in
+``$FGC_CACHE_DIR``, progress on stderr, ``--reads N`` an optional cap.
 
     FGC_CACHE_DIR=... python bench/bench_papers.py            # LIO N=30, IMU N=50
     FGC_CACHE_DIR=... python bench/bench_papers.py --reads 0  # the plan's figures alone
@@ -72,13 +74,22 @@ class Config:
     lio_cpes: tuple[int, ...] = (5, 10, 15, 20, 80)
     cpes: tuple[int, ...] = (5, 20, 40, 80, 120)
     cascades: tuple[int, ...] = (1, 2)  # Cholesky: one cascade, or two side by side
+    backsub_lanes: tuple[int, ...] = (1, 2)  # back-substitution's widths (HlsConfig)
+    # Cholesky: words a cycle through each cascade (HlsConfig.cascade_lanes; (1, 2) lets the
+    # search weigh two words a cycle against more CPEs)
+    lanes: tuple[int, ...] = (1,)
     c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/cost/params.py)
     gtsam_iterations: int = 5
     gtsam_repeats: int = 5
-    # designs the search may emit and read per search (cache hits are free): 10, as 6 left
-    # LIO's fastest design that fits (two cascades of 15 CPEs, 896 DSP by the plan) unread
-    reads: int = 10
+    # a cap on the designs the search may emit and read per search (cache hits are free);
+    # None: no cap, the search reads in plan-speed order until one fits (fgc.app.search);
+    # 0: the plan's figures alone
+    reads: int | None = None
     stream_batch: tuple[int, ...] = (5, 15, 25)  # paper A's batch keyframes
+    # the stream's update policy: ISAM2's, one Gauss-Newton step an update (what the timed
+    # isam.update does per keyframe; fgc.app.streaming.one_step_solver), or False: LM to
+    # convergence each update
+    stream_one_step: bool = True
     isam_repeats: int = 3
     # the on-chip stream design's search (paper_a_stream): n_u, unit sets, the factor datapaths'
     # ALLOCATION limits (None: the default design's; smaller limits: fewer operators)
@@ -93,7 +104,8 @@ class Config:
 
 SMALL = Config(lio_n=5, imu_n=5, storage_ns=(4, 6), units=(1, 8), alloc_scales=(1,),
                lio_cpes=(5,), cpes=(5, 20), c123=(20,), gtsam_iterations=2, gtsam_repeats=1,
-               reads=0, stream_batch=(4,), isam_repeats=1, stream_units=(1, 4),
+               reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(1,),
+               stream_units=(1, 4),
                stream_allocations=(None, (("add", 1), ("mul", 1), ("div", 1))), stream_reads=1)
 
 
@@ -121,8 +133,9 @@ def best_design(programs: dict, cfg: Config, linears=("qr", "cholesky")):
     the xc7z045 as re-priced (DSP = max(plan, second reader), BRAM36 from the plan)."""
     space = Space(linears=linears, units=cfg.units, unit_sets=cfg.unit_sets,
                   cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes, cascades=cfg.cascades,
-                  alloc_scales=cfg.alloc_scales)
-    return search(programs, space, max_reads=cfg.reads, reader=cfg.reads > 0,
+                  lanes=cfg.lanes, alloc_scales=cfg.alloc_scales,
+                  backsub_lanes=cfg.backsub_lanes)
+    return search(programs, space, max_reads=cfg.reads, reader=cfg.reads != 0,
                   progress=_progress)
 
 
@@ -175,8 +188,8 @@ def _res(c) -> str:
 def _honest(row) -> str:
     if row.reader_dsp is not None:
         read = f"reader {row.reader_dsp:,}"
-    elif row.reader_at_least:
-        read = f"reader >= {row.reader_at_least:,}, implied by {row.implied_by}"
+    elif row.implied_by:
+        read = f"reader <= {row.implied_by}'s, implied"
     else:
         read = "not read"
     return (f"{row.dsp:,} DSP (plan {row.cost.dsp:,}, {read}) / {row.cost.bram36:g} BRAM36 / "
@@ -352,6 +365,8 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list) -> li
     out = []
     for units in cfg.stream_units:
         solver = SolverConfig(precision="float32", linear="qr", units=units)
+        if cfg.stream_one_step:
+            solver = streaming.one_step_solver(solver)
         sp = streaming.stream_program(graph, streaming.compile_stream(
             graph, solver, incremental=k, batch_every=batch))
         for sets in cfg.stream_unit_sets:
@@ -376,7 +391,8 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list) -> li
         with tempfile.TemporaryDirectory() as tmp:
             read = measure_stream(cfg.lio_n, Path(tmp) / "stream",
                                   HlsConfig(scalar="float", unit_sets=d.unit_sets,
-                                            allocation=d.allocation), d.units, batch)
+                                            allocation=d.allocation), d.units, batch,
+                                  solver=solver)
         d.reader_dsp = read["reader_dsp"]
         d.reader_parts = tuple(read["parts"])
         if d.fits:
@@ -401,6 +417,12 @@ def paper_a_stream(cfg: Config) -> list[Row]:
     batch = tuple(b for b in cfg.stream_batch if b < n)
     graph = lio.build(N=n)
     solver = SolverConfig(precision="float32", linear="qr")
+    if cfg.stream_one_step:
+        solver = streaming.one_step_solver(solver)
+    policy = ("one Gauss-Newton step an update, relinearising the window (ISAM2's policy: one "
+              "isam.update per keyframe, relinearise all; the store is the step's own "
+              "factorisation)" if cfg.stream_one_step else
+              "LM to convergence each update (ISAM2 takes one step: not the same policy)")
     program = streaming.compile_stream(graph, solver, incremental=k, batch_every=batch)
     a = f"A (LIO N={n}, K={k}, batch at {', '.join(map(str, batch))})"
     sp = streaming.stream_program(graph, program)
@@ -417,7 +439,7 @@ def paper_a_stream(cfg: Config) -> list[Row]:
     from bench_second_reader import measure_stream
 
     with tempfile.TemporaryDirectory() as tmp:
-        read = measure_stream(n, Path(tmp) / "stream", batch=batch)
+        read = measure_stream(n, Path(tmp) / "stream", batch=batch, solver=solver)
     dsp = max(res["dsp"], read["reader_dsp"])
     fits = res["fits"] and read["reader_dsp"] <= pricer.model.plan.target.device.dsp
     designs = stream_search(cfg, graph, k, batch, updates)
@@ -444,9 +466,10 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                    f"median {best_ratio:.2f}×; one set of units for its window's solve and "
                    f"batch steps (not built; by its plan, each unit kind at the larger "
                    f"kernel's DSP, no marginal copy) would hold {best.one_set_dsp:,} DSP"))
-    return [Row(a, "per-update latency vs ISAM2 (same policy: relinearise all)",
+    return [Row(a, "per-update latency vs ISAM2 (relinearise all, one update per keyframe)",
                 "9.3× ISAM2; fits the xc7z045",
-                f"on-chip design (n_u={program.solver.units}, default unit sets and ALLOCATION):"
+                f"on-chip design (n_u={program.solver.units}, default unit sets and ALLOCATION; "
+                f"{policy}):"
                 f" median {np.median(model):.3f} ms / p99 {np.percentile(model, 99):.3f} ms per "
                 f"update; ISAM2 median {np.median(isam):.3f} ms / p99 "
                 f"{np.percentile(isam, 99):.3f} ms (median of {cfg.isam_repeats} runs per "
@@ -464,9 +487,8 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                 "carry their own units and factor datapaths (one set of units for both, one "
                 "kernel of run-time problem sizes with the window a slot range of the batch "
                 "layout, is not built; the estimate above is its plan's bound, docs/hls.md); "
-                "per update the window's LM iterations are about "
-                "84 % of the cycles (its QR steps 58 %), the marginal and the kept net run "
-                "side by side (docs/hls.md)")]
+                "the marginal and the kept net run side by side; where an update's cycles "
+                "go: docs/hls.md, 'Paper A's setting against ISAM2'")]
 
 
 def paper_b(cfg: Config) -> list[Row]:
@@ -491,16 +513,17 @@ def paper_b(cfg: Config) -> list[Row]:
     floor = latency_floor(prog, build_plan(prog, PlanOptions.of(prog)).ops)
     # the cycles' ratio from the fewest to the most CPEs, one cascade each, and with two
     # cascades at the most (twice the CPEs)
-    one = {r.candidate.cpe: r for r in result.rows
-           if r.candidate.alloc_scale == 1 and r.candidate.unit_sets is None}
-    two = {r.candidate.cpe: r for r in result.rows
-           if r.candidate.alloc_scale == 1 and r.candidate.unit_sets == 2}
+    one = {r.candidate.cpe: r for r in result.rows if r.candidate.alloc_scale == 1
+           and r.candidate.unit_sets is None and not r.candidate.extra}
+    two = {r.candidate.cpe: r for r in result.rows if r.candidate.alloc_scale == 1
+           and r.candidate.unit_sets == 2 and not r.candidate.extra}
     lo, hi = cfg.cpes[0], cfg.cpes[-1]
     lo_hi = f"{one[lo].cycles / one[hi].cycles:.2f}×" + (
         f", {lo} → {hi} x2: {one[lo].cycles / two[hi].cycles:.2f}×" if hi in two else "")
     rows = [Row(b, "latency per solve at #CPE " + " / ".join(map(str, cfg.cpes))
                 + " (re-priced fit)", "171 ms (5) / 8.97 ms (120)",
-                " / ".join(f"#CPE={c}{' x2' if by_cpe[c].candidate.unit_sets else ''} "
+                " / ".join(f"#CPE={c}{' x2' if by_cpe[c].candidate.unit_sets else ''}"
+                           f"{' L2' if by_cpe[c].candidate.extra else ''} "
                            f"{by_cpe[c].latency_ms * iters:.2f} ms "
                            f"({by_cpe[c].verdict}: {by_cpe[c].bound})" for c in cfg.cpes)
                 + f" ({iters} LM iterations; {cfg.cpes[0]} → {cfg.cpes[-1]} CPEs "
@@ -607,8 +630,9 @@ def main(argv=None) -> None:
     ap.add_argument("--small", action="store_true",
                     help="LIO N=5, IMU N=5, the plan's figures alone: a smoke run")
     ap.add_argument("--reads", type=int, default=None,
-                    help="designs each search may emit and read (0: the plan's figures alone; "
-                         "cached reads are free)")
+                    help="a cap on the designs each search may emit and read (default: none, "
+                         "the search reads in plan-speed order until one fits; 0: the plan's "
+                         "figures alone; cached reads are free)")
     args = ap.parse_args(argv)
     cfg = SMALL if args.small else Config()
     if args.reads is not None:

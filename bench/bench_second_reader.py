@@ -87,7 +87,8 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
 
 
 def measure_stream(n: int, out: Path, config=None, units: int | None = None,
-                   batch: tuple[int, ...] = (5, 15, 25)) -> dict:
+                   batch: tuple[int, ...] = (5, 15, 25),
+                   solver: SolverConfig | None = None) -> dict:
     """Paper A's on-chip stream design at N = ``n``: the plan's DSP per part (window kernel,
     batch kernel, stream section) beside the reader's, and the reader's II-short / carried
     loops. The reader's window kernel is what the window kernel's own top (``<name>_top``: its
@@ -96,13 +97,15 @@ def measure_stream(n: int, out: Path, config=None, units: int | None = None,
     reading: every copy the stream's own code adds (the marginal's QR set, the kept net's Log /
     retraction datapaths, tau's loops, a kernel function called from a second site).
     ``config``: the design's HlsConfig (unit sets, ALLOCATION; default the default design),
-    ``units``: n_u (default the Program's), ``batch``: the batch keyframes (those below n)."""
+    ``units``: n_u (default the Program's), ``batch``: the batch keyframes (those below n),
+    ``solver``: the stream's SolverConfig (default float32 QR, LM to convergence)."""
     import fgc_backends
     from fgc.app import streaming
 
     graph = example("lio").build(N=n)
-    solver = SolverConfig(precision="float32", linear="qr",
-                          **({"units": units} if units is not None else {}))
+    solver = solver or SolverConfig(precision="float32", linear="qr")
+    if units is not None:
+        solver = dataclasses.replace(solver, units=units)
     program = streaming.compile_stream(graph, solver, incremental=3,
                                        batch_every=tuple(b for b in batch if b < n))
     hls = fgc_backends.load("hls")

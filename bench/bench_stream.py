@@ -132,6 +132,8 @@ def hls_model(args) -> dict:
     graph = lio.build(N=n)
     solver = SolverConfig(precision=args.precision, units=args.units, cpe=args.cpe,
                           linear=args.linear)
+    if args.one_step:  # ISAM2's policy: one Gauss-Newton step an update, as the timed update
+        solver = streaming.one_step_solver(solver)
     program = streaming.compile_stream(graph, solver, incremental=k, batch_every=batch)
     sp = streaming.stream_program(graph, program)
     on_chip = streaming.on_chip(sp)
@@ -324,6 +326,9 @@ def main(argv=None) -> int:
     p.add_argument("--precision", choices=("float32", "float64"), default="float32",
                    help="--hls-model: the Program's and the plan's precision")
     p.add_argument("--linear", choices=("qr", "cholesky"), default="qr")
+    p.add_argument("--one-step", action="store_true",
+                   help="--hls-model: the stream on ISAM2's policy, one Gauss-Newton step an "
+                        "update (default: LM to convergence)")
     p.add_argument("--units", type=int, default=4, help="--hls-model: n_u Update units")
     p.add_argument("--cpe", type=int, default=20, help="--hls-model: #CPE (Cholesky)")
     p.add_argument("--repeat", type=int, default=5,

@@ -209,23 +209,24 @@ def _bench():
 def test_best_design_is_the_fastest_that_fits(qr_chain):
     """bench_papers' best design is the search's: on the plan alone (no reads) the fastest
     design the plan fits, over n_u × unit sets × ALLOCATION scale × QR unit (Householder and
-    the streaming unit)."""
+    the streaming unit) × back-substitution's width."""
     from fgc_backends.hls.plan.options import QR_UNITS
 
     bench = _bench()
     cfg = bench.Config(units=(1, 2, 4), unit_sets=(1, 2), alloc_scales=(1, 2), reads=0)
     result = bench.best_design({"qr": qr_chain}, cfg, linears=("qr",))
-    assert len(result.rows) == 3 * 2 * 2 * len(QR_UNITS)
+    assert len(result.rows) == 3 * 2 * 2 * len(QR_UNITS) * len(cfg.backsub_lanes)
     brute = []
     for units in cfg.units:
         for sets in (1, 2):
             for scale in cfg.alloc_scales:
                 for qr_unit in QR_UNITS:
-                    c = plan_cost(build_plan(qr_chain, PlanOptions.of(
-                        qr_chain, units=units, unit_sets=sets, qr_unit=qr_unit,
-                        allocation=bench._scaled(scale))))
-                    if c.fits:
-                        brute.append(c.cycles)
+                    for lanes in cfg.backsub_lanes:
+                        c = plan_cost(build_plan(qr_chain, PlanOptions.of(
+                            qr_chain, units=units, unit_sets=sets, qr_unit=qr_unit,
+                            allocation=bench._scaled(scale), backsub_lanes=lanes)))
+                        if c.fits:
+                            brute.append(c.cycles)
     assert result.best.cycles == min(brute) and result.best.cost.fits
     assert result.best.verdict == "unread" and result.reads == 0
 

@@ -367,6 +367,11 @@ class StreamState:
             self._spaced.append((column[0], step) if even else None)
         return estimate, x_all
 
+    def split_keyframe(self, row: np.ndarray, c: int) -> list:
+        """Keyframe ``c``'s variables (cluster order) from its row of the keyframe-major array
+        (:meth:`_start_keyframes`), copies."""
+        return [row[a:b].copy() for a, b in self._layout[:len(self.clusters[c])]]
+
     def _snapshot_keyframes(self, x_all: np.ndarray, newest: int) -> list:
         """:meth:`_snapshot` of keyframes 0 … newest from the keyframe-major array, each
         variable's storage a tuple: per position in a keyframe, its column block converted at
@@ -439,13 +444,20 @@ class FixedLagDriver(TemplateSolver):
             t2 = time.perf_counter()
             if j == 0:
                 initial_error = float(errors[0])
+            # one-step policy: the marginal from the update's own linearisation point
+            at, lin_point = x_out, None
+            if self.program.solver.one_step and j >= window and j + 1 < len(clusters):
+                at = x
+                lin_point = [estimate[k].copy() for k in clusters[first + 1]]
             self.store(estimate, x_out, first, j)
             t3 = time.perf_counter()
             if j >= window and j + 1 < len(clusters):  # keyframe j − W leaves: its marginal
-                _, passed = self.eliminate(x_out, d, 1, pass_last=True)
+                _, passed = self.eliminate(at, d, 1, pass_last=True)
                 a, _, mean = as_prior(passed[0], self.slot_dims[1], f"keyframe {first}")
-                # the prior on keyframe first + 1 at x̄ = its estimate now: R = A, mean A⁻¹b
-                tau = (a, mean, [estimate[k].copy() for k in clusters[first + 1]])
+                # the prior on keyframe first + 1 at x̄ = its estimate now (one-step: where
+                # the update linearised it): R = A, mean A⁻¹b
+                tau = (a, mean, lin_point if lin_point is not None
+                       else [estimate[k].copy() for k in clusters[first + 1]])
             t4 = time.perf_counter()
             iterations, st, why = stream._info(info)
             records.append({"keyframe": j, "mode": "fixed-lag", "first": first,
@@ -541,6 +553,10 @@ class IncrementalDriver:
             t2 = time.perf_counter()
             if n_update == 0:
                 initial_error = float(errors[0])
+            # one-step policy: the store at the update's own linearisation point (its start)
+            at, lin_all = x_out, x_all
+            if self.program.solver.one_step:
+                at, lin_all = x, x_all.copy()
             win.store(estimate, x_out, first, j)
             if first > 0:  # the newest kept conditional, re-expressed at its parent's estimate
                 c = first - 1
@@ -551,14 +567,14 @@ class IncrementalDriver:
                 kept_d[c] -= kept_s[c] @ shift
                 kept_s[c] = kept_s[c] @ jac
                 kept_next[c] = x_all[first]
-            window_conds, passed = win.eliminate(x_out, d, j - first + 1)
+            window_conds, passed = win.eliminate(at, d, j - first + 1)
             for i, (r, s, dv) in enumerate(window_conds):
                 c = first + i
-                kept_r[c], kept_d[c], kept_lin[c] = r, dv, x_all[c]
+                kept_r[c], kept_d[c], kept_lin[c] = r, dv, lin_all[c]
                 complete[c] = c < j
                 if c < j:
-                    kept_s[c], kept_next[c] = s, x_all[c + 1]
-                    taus[c + 1] = (passed[i], [estimate[k].copy() for k in stream.clusters[c + 1]])
+                    kept_s[c], kept_next[c] = s, lin_all[c + 1]
+                    taus[c + 1] = (passed[i], stream.split_keyframe(lin_all[c + 1], c + 1))
             if first > 0 and not complete[:first].all():
                 raise StreamError(f"keyframes 0 … {first - 1}: a kept conditional does not "
                                   "reach its parent")

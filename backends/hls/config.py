@@ -26,6 +26,7 @@ from fgc_backends.cfamily import scalars
 from fgc_backends.cfamily.errors import CodegenError
 from fgc_backends.cfamily.scalars import SCALARS
 from fgc_backends.hls.plan.options import (
+    CASCADE_LANES,
     DEFAULT_ALLOCATION,
     QR_UNITS,
     PlanOptions,
@@ -38,6 +39,7 @@ CLOCK_TOLERANCE = 0.005  # relative: 7 ns (142.86 MHz) and 143 MHz are the same 
 CLOCK_NS = (0.5, 1000.0)  # the clock periods fgc prices and synthesises (2 GHz … 1 MHz)
 UNIT_SETS = (1, 8)  # QR/Cholesky unit sets eliminating one level's steps side by side
 ALLOCATION_LIMIT = (1, 4096)  # one operator kind's ALLOCATION limit in a factor datapath
+BACKSUB_LANES = (1, 2)  # back-substitution's widths (fgc_backsub.h: 2, COND's four ports)
 
 
 class HlsConfigError(CodegenError):
@@ -67,6 +69,15 @@ class DesignOptions:
       architecture: one DATAFLOW region per reflection, ``include/fgc_qr.h``) or ``"stream"``
       (n_u reflection stages the matrix streams through, ``include/fgc_qr_stream.h``; the
       batch design only). ``fgc compile --qr-unit``.
+    - ``backsub_lanes``: back-substitution's width (``include/fgc_backsub.h``): ``1``
+      (default) loads a conditional two words a cycle (COND's two ports) and runs the triangle
+      one row a cycle; ``2`` partitions COND cyclic over two banks, loads four words a cycle
+      and runs the triangle two rows a cycle, for more DSP (docs/hls.md, "Back-substitution").
+    - ``cascade_lanes``: Cholesky: the words a cycle through each cascade
+      (``include/fgc_cpe.h``'s ``STREAM_WORDS``): 1 (default), or 2 - every feed, tap, CPE and
+      drain takes the pair of a row's words the assembly streams each cycle, so a step's ~w²/2
+      words take half the cycles, at twice each CPE's multipliers and adders. ``fgc compile
+      --cascade-lanes``.
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
@@ -78,6 +89,8 @@ class DesignOptions:
     allocation: tuple[tuple[str, int], ...] | None = None
     qr_unit: str = "householder"
     hgc_beside: bool = True
+    backsub_lanes: int = 1
+    cascade_lanes: int = 1
 
     def check(self, program: Program | None = None) -> None:
         """Raise :class:`HlsConfigError` naming the first invalid option; with ``program``, also
@@ -98,11 +111,22 @@ class DesignOptions:
             raise HlsConfigError(f"unit_sets must be {low} … {high}, got {self.unit_sets}")
         if self.allocation is not None:
             _check_allocation(self.allocation)
+        if self.backsub_lanes not in BACKSUB_LANES or isinstance(self.backsub_lanes, bool):
+            raise HlsConfigError(f"backsub_lanes must be one of "
+                                 f"{', '.join(map(str, BACKSUB_LANES))}, got "
+                                 f"{self.backsub_lanes!r}")
+        if self.cascade_lanes not in CASCADE_LANES or isinstance(self.cascade_lanes, bool):
+            raise HlsConfigError(f"cascade_lanes must be one of {CASCADE_LANES} (the words a "
+                                 f"cycle through a Cholesky cascade), got {self.cascade_lanes!r}")
         if self.qr_unit not in QR_UNITS:
             raise HlsConfigError(f"qr_unit {self.qr_unit!r}: expected one of "
                                  f"{', '.join(QR_UNITS)}")
         if program is not None:
             self.check_clock(program.solver.clock_mhz)
+            if self.cascade_lanes != 1 and program.solver.linear != "cholesky":
+                raise HlsConfigError(f"cascade_lanes={self.cascade_lanes}: the lanes of the "
+                                     "Cholesky cascade; this Program solves with "
+                                     f"{program.solver.linear}")
 
     def check_clock(self, clock_mhz: float) -> None:
         """Raise :class:`HlsConfigError` if the cost model's clock (``SolverConfig.clock_mhz``)
@@ -128,7 +152,8 @@ class DesignOptions:
         precisions the design computes in (None: the Program's)."""
         base = dict(unit_sets=self.unit_sets, part=self.part, qr_unit=self.qr_unit,
                     precision=precision, les_precision=les_precision,
-                    hgc_beside=bool(self.hgc_beside))
+                    hgc_beside=bool(self.hgc_beside), backsub_lanes=int(self.backsub_lanes),
+                    cascade_lanes=int(self.cascade_lanes))
         if self.allocation:  # the design's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(self.allocation)}.items())
@@ -198,12 +223,16 @@ class HlsConfig(scalars.ScalarTypes):
     allocation: InitVar[tuple[tuple[str, int], ...] | None] = None
     qr_unit: InitVar[str | None] = None
     hgc_beside: InitVar[bool | None] = None
+    backsub_lanes: InitVar[int | None] = None
+    cascade_lanes: InitVar[int | None] = None
 
-    def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside) -> None:
+    def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside,
+                      backsub_lanes, cascade_lanes) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
-        old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside)
+        old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside, backsub_lanes,
+               cascade_lanes)
         given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
                  if value is not None}
         if given:

@@ -83,6 +83,13 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     if stream is not None and config.qr_unit != "householder":
         raise HlsConfigError(f"qr_unit {config.qr_unit!r}: the streaming designs (window, "
                              "incremental) are priced with the householder QR unit only")
+    if stream is not None and config.backsub_lanes != 1:
+        raise HlsConfigError(f"backsub_lanes {config.backsub_lanes}: the streaming designs "
+                             "(window, incremental) are priced with one-lane back-substitution "
+                             "only (plan/update.py)")
+    if config.cascade_lanes != 1 and program.solver.linear != "cholesky":
+        raise HlsConfigError(f"cascade_lanes={config.cascade_lanes}: the lanes of the Cholesky "
+                             f"cascade; this Program solves with {program.solver.linear}")
     check_accel(program, config)
     check_limits(program, config)
     check_clock(program.solver.clock_mhz, config)
@@ -315,7 +322,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
     option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}" + (
-        ", 2 cascades" if any(u.name == "cpe_set1" for u in plan.units) else "")
+        ", 2 cascades" if any(u.name == "cpe_set1" for u in plan.units) else "") + (
+        f", {plan.options.cascade_lanes} lanes" if plan.options.cascade_lanes > 1 else "")
     network = [f"{len(procs)} processes, {len(streams)} streams ({option})"]
     network += [f"process {p}" for p in procs]
     network += [f"stream {ch.name} depth={ch.depth}: {ch.producer} -> {ch.consumer}"
@@ -338,7 +346,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
             # from DELTA)
             "bs_xoff": _backsub_xoff(program),
-            "cpe": plan.options.cpe, "plan": plan, **_cascade_context(program, plan),
+            "bs_lanes": plan.options.backsub_lanes,  # fgc_backsub.h's FGC_BS_LANES (> 1)
+            "cpe": plan.options.cpe, "cascade_lanes": plan.options.cascade_lanes,
+            "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
 
 

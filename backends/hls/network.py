@@ -64,11 +64,34 @@ def allocations(text: str) -> dict[str, tuple[tuple[str, str, int], ...]]:
     return out
 
 
-def backsub_region(header: str) -> Region:
+def _lanes_view(header: str, wide: bool) -> str:
+    """``header`` with the branches of ``#ifdef FGC_BS_LANES`` (the two-lane-wide driver,
+    ``HlsConfig.backsub_lanes`` > 1) or of their ``#else`` (the one-lane driver) blanked, as a
+    kernel that does (``wide``) or does not define FGC_BS_LANES compiles it (the blocks do not
+    nest)."""
+    out, keep, inside = [], True, False
+    for line in header.split("\n"):
+        word = line.strip()
+        if word.startswith("#ifdef FGC_BS_LANES"):
+            inside, keep = True, wide
+        elif inside and word.startswith("#else"):
+            keep = not wide
+        elif inside and word.startswith("#endif"):
+            inside, keep = False, True
+        else:
+            out.append(line if keep else "")
+            continue
+        out.append("")
+    return "\n".join(out)
+
+
+def backsub_region(header: str, wide: bool = False) -> Region:
     """Back-substitution's regions (``fgc_backsub.h``'s driver: ``backsub_lane0`` and
     ``backsub_lane1``, a lane's solve beside the other lane's load; ``back_substitute``, the slot
-    process beside the state update it feeds) as one: their processes and streams in order."""
-    regions = read_network(header)
+    process beside the state update it feeds) as one: their processes and streams in order.
+    ``wide``: the driver a kernel defining FGC_BS_LANES compiles (``HlsConfig.backsub_lanes``
+    > 1), else the one-lane driver."""
+    regions = read_network(_lanes_view(header, wide))
     lanes = [r for r in regions if r.function.startswith("backsub_lane")]
     if len(lanes) != 2:
         raise ValueError(f"expected two backsub_lane regions, found {len(lanes)}")
@@ -105,7 +128,7 @@ def counts(kernel: str, units: str, backsub: str) -> tuple[int, int]:
     if beside:
         streams += sum(_stream_count(r, cfg) for r in read_network(kernel)
                        if r.function == "linearize_solve")
-    backsub = backsub_region(backsub)
+    backsub = backsub_region(backsub, "#define FGC_BS_LANES" in kernel)
     return (procs * sets + len(backsub.processes),
             streams * sets + _stream_count(backsub, cfg))
 

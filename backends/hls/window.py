@@ -255,7 +255,8 @@ class WindowLayout(WindowTemplate):
         locals_, kf_vars = self._kf_vars()
         eps = np.finfo(np.float64 if linear_cxx == "double" else np.float32).eps
         return {"kept": self.kept, "locals": locals_, "kf_vars": kf_vars,
-                "flat_s": self.vector_words(),
+                "flat_s": self.vector_words(), "block_t": self.block_offsets(),
+                "block_dim": self.block_dims(),
                 "jacobian_step": HlsCodePrinter({}).literal(float(np.sqrt(eps) * 10)),
                 "mv_ii": self.matvec_ii(linear_cxx, part)}
 
@@ -289,6 +290,19 @@ class WindowLayout(WindowTemplate):
                 for i in range(v["dim"]):
                     out[v["t"] + i] = v["s"] + i
         return out
+
+    def block_offsets(self) -> list[int]:
+        """Per tangent direction of a keyframe the first tangent direction of its variable: the
+        Jacobian of a keyframe's Log is block-diagonal by variable (a variable's Log moves with
+        its own directions only), so the re-expression's S·J column q sums over its variable's
+        directions alone (fgc_stream.h; :meth:`block_dims` their count)."""
+        _, kf_vars = self._kf_vars()
+        return [v["t"] for v in kf_vars for _ in range(v["dim"])]
+
+    def block_dims(self) -> list[int]:
+        """Per tangent direction of a keyframe its variable's tangent dimension."""
+        _, kf_vars = self._kf_vars()
+        return [v["dim"] for v in kf_vars for _ in range(v["dim"])]
 
     def matvec_ii(self, linear_cxx: str, part: str = DEFAULT_PART) -> int:
         """The kept net's matrix-vector loop's II: a row's sum returns to the adder every

@@ -19,18 +19,21 @@ A design fits when every figure is within the part's capacity; the figure with t
 of its capacity is the one that *bound* the verdict, and each row names it.
 
 Reading a design means emitting it (tens of seconds for LIO N=30), so the search reads as few as
-it can, and caches what it read:
+it can, and caches what it read. Its rule cannot miss the fastest design that fits:
 
 1. every candidate is priced by the plan (cheap); one the plan already puts over the part is
-   refused without reading;
-2. the reader's DSP grows with every ordered axis (more Update units, unit sets, CPEs or
-   ALLOCATION never instantiate fewer operators), so a read that fits proves every design
-   below it (on every axis) fits, and a read over the part refuses every design above it;
-3. among the undecided designs faster than the fastest design known to fit, the search reads
-   first each family's smallest (a linear solver with its unordered options: if the smallest
-   is over the part, so is the family), then the median by plan cycles (a bisection), until
-   none is left or ``max_reads`` reads are spent; undecided designs left are reported as such
-   (``unread``), and so is the number of faster designs the best was not checked against.
+   refused without reading (its honest DSP, max(plan, reader), is at least the plan's);
+2. the others are read in plan-speed order, fastest first, until one fits as re-priced: that
+   one is the best, and every faster design was read and found over or refused by the plan.
+   Where the plan prices at least what the reader reads (``bench/bench_second_reader.py``'s
+   check_dsp column, ``tests/hls/reader/test_plan_reader.py``), the first read is the best;
+3. a read that fits also marks the designs below it on every ordered axis (fewer Update units,
+   unit sets, CPEs, less ALLOCATION: never more operators) as fitting, for the table; they are
+   all slower, so this never decides the best. A read over the part implies nothing: the next
+   design is read.
+
+``max_reads`` is an optional cap (None: none); when it stops the search, the faster designs
+left are reported ``unread``, and the best is then not known to be the fastest that fits.
 
 Reads are cached under ``$FGC_CACHE_DIR`` (kind ``reader``), keyed by the Program's fingerprint,
 the HLS config and a digest of the backends' sources (a change to the emitter reads again).
@@ -62,29 +65,38 @@ class Space:
     """The axes searched. ``units`` and ``unit_sets`` apply to QR designs, ``cpe`` and
     ``cascades`` (one cascade, or two side by side: ``HlsConfig.unit_sets`` of a Cholesky
     design) to Cholesky ones; ``unit_sets=None`` means the emitter's default (two on a
-    two-ended chain, else one);
-    ``alloc_scales`` multiply the factor datapaths' default ``ALLOCATION`` limits; ``extra``:
-    further ``PlanOptions`` fields the emitter knows as ``HlsConfig`` fields, (name, values)."""
+    two-ended chain, else one); ``lanes``: Cholesky's words a cycle through each cascade
+    (``HlsConfig.cascade_lanes``, 1 or 2; a design of 2 carries it as its ``extra``);
+    ``alloc_scales`` multiply the factor datapaths' default ``ALLOCATION`` limits;
+    ``backsub_lanes``: back-substitution's widths (``HlsConfig.backsub_lanes``, both solvers;
+    a width of 1 is the candidate without the option); ``extra``: further ``PlanOptions``
+    fields the emitter knows as ``HlsConfig`` fields, (name, values)."""
 
     linears: tuple[str, ...] = ("qr", "cholesky")
     units: tuple[int, ...] = (1, 2, 4, 8, 16, 32)
     unit_sets: tuple[int | None, ...] = (None,)
     cpe: tuple[int, ...] = (5, 20, 40, 80, 120)
     cascades: tuple[int, ...] = (1, 2)
+    lanes: tuple[int, ...] = (1,)
     alloc_scales: tuple[int, ...] = (1,)
+    backsub_lanes: tuple[int, ...] = (1,)
     scalar: str = "float"
     part: str | None = None  # None: HlsConfig's default part
     extra: tuple[tuple[str, tuple], ...] = ()
 
     def __post_init__(self):
-        for name in ("linears", "units", "unit_sets", "cpe", "cascades", "alloc_scales"):
+        for name in ("linears", "units", "unit_sets", "cpe", "cascades", "lanes",
+                     "alloc_scales", "backsub_lanes"):
             if not getattr(self, name):
                 raise SearchError(f"design space: axis {name!r} is empty")
-        bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales) if int(u) < 1]
+        bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales, *self.backsub_lanes)
+               if int(u) < 1]
         bad += [k for k in self.cascades if int(k) not in (1, 2)]
+        bad += [k for k in self.lanes if int(k) not in (1, 2)]
         bad += [s for s in self.unit_sets if s is not None and int(s) < 1]
         if bad:
-            raise SearchError(f"design space: counts must be >= 1 (cascades 1 or 2), got {bad}")
+            raise SearchError(f"design space: counts must be >= 1 (cascades and lanes 1 or 2), "
+                              f"got {bad}")
         unknown = sorted(set(self.linears) - {"qr", "cholesky"})
         if unknown:
             raise SearchError(f"design space: unknown linear solver(s) {unknown}")
@@ -191,6 +203,8 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
     extras = [()]
     for name, values in extra_axes:
         extras = [e + ((name, v),) for e in extras for v in values]
+    # back-substitution's width on either solver (the default width is no option)
+    widths = [() if b == 1 else (("backsub_lanes", b),) for b in space.backsub_lanes]
     out = []
     for linear in space.linears:
         if linear not in programs:
@@ -200,10 +214,13 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
                 for units in space.units:
                     for sets in space.unit_sets:
                         for e in extras:
-                            out.append(Candidate("qr", units, sets, None, scale, e))
+                            out += [Candidate("qr", units, sets, None, scale, e + b)
+                                    for b in widths]
             else:
-                out += [Candidate("cholesky", None, None if k == 1 else k, c, scale)
-                        for c in space.cpe for k in space.cascades]
+                out += [Candidate("cholesky", None, None if k == 1 else k, c, scale,
+                                  (() if la == 1 else (("cascade_lanes", la),)) + b)
+                        for c in space.cpe for k in space.cascades for la in space.lanes
+                        for b in widths]
     return tuple(dict.fromkeys(out))
 
 
@@ -218,8 +235,7 @@ class Row:
     read: str = ""  # "", "read" (emitted and read now), "cached"
     verdict: str = "unread"  # "fits", "over", "unread", "unbuildable" (the emitter refuses it)
     bound: str = ""  # the figure that decided (or, unread, the plan's tightest)
-    implied_by: str = ""  # the read design a verdict follows from
-    reader_at_least: int = 0  # implied over: the reader's DSP is at least the implying read's
+    implied_by: str = ""  # the read design an implied fit follows from
     read_seconds: float = 0.0
     details: dict = field(default_factory=dict)
 
@@ -247,9 +263,8 @@ class Row:
 
     @property
     def dsp(self) -> int:
-        """The honest DSP: max(plan, reader) where read (where a refusal is implied, the
-        implying read's DSP, a lower bound of this design's)."""
-        return max(self.cost.dsp, self.reader_dsp or self.reader_at_least)
+        """The honest DSP: max(plan, reader) where read, the plan's otherwise."""
+        return max(self.cost.dsp, self.reader_dsp or 0)
 
     def judge(self) -> None:
         """Set ``verdict`` / ``bound`` from the figures known (a read design, or the plan's over
@@ -379,14 +394,17 @@ def price(program: Program, cand: Candidate, space: Space):
     return plan_cost(plan), {"dsp": d.dsp, "bram36": d.bram36, "lut": d.lut, "ff": d.ff}, d.name
 
 
-def search(programs: Mapping[str, Program], space: Space = Space(), max_reads: int = 8,
-           reader: bool = True, progress: Callable[[str], None] | None = None,
+def search(programs: Mapping[str, Program], space: Space = Space(),
+           max_reads: int | None = None, reader: bool = True,
+           progress: Callable[[str], None] | None = None,
            reader_fn: Callable | None = None, use_cache: bool = True) -> SearchResult:
     """The fastest design of ``space`` that fits, over ``programs`` (linear solver → Program,
-    compiled for that solver; n_u and #CPE are set per candidate). ``reader=False`` judges on
-    the plan alone (no design is then known to fit: every plan-fitting design stays unread and
-    the best is the fastest of them, marked as plan-only); ``reader_fn(program, config)`` →
-    (figures, cached) replaces :func:`read_dsp` (tests)."""
+    compiled for that solver; n_u and #CPE are set per candidate): designs read in plan-speed
+    order until one fits as re-priced (the module's rule), at most ``max_reads`` emitted (None:
+    no cap; cache hits are free). ``reader=False`` judges on the plan alone (no design is then
+    known to fit: every plan-fitting design stays unread and the best is the fastest of them,
+    marked as plan-only); ``reader_fn(program, config)`` → (figures, cached) replaces
+    :func:`read_dsp` (tests)."""
     t0 = time.perf_counter()
     say = progress or (lambda s: None)
     cands = candidates(space, programs)
@@ -411,14 +429,11 @@ def search(programs: Mapping[str, Program], space: Space = Space(), max_reads: i
     def undecided() -> list[Row]:
         return [r for r in rows[:known_fit()] if r.verdict == "unread"]
 
-    probed: set = set()
-    while reader and undecided() and reads < max_reads:
+    while reader and undecided() and (max_reads is None or reads < max_reads):
         pending = undecided()
-        r = _next_read(pending, probed)
-        probed.add((r.candidate.linear, r.candidate.extra))
+        r = pending[0]  # the fastest design not yet decided: every faster one is over
         say(f"  reading {r.label} (plan {r.cycles:,} cycles, {r.cost.dsp:,} DSP) with the "
-            f"second reader (emitted unless cached): {len(pending)} undecided faster than the "
-            "best so far")
+            f"second reader (emitted unless cached): the fastest of {len(pending)} undecided")
         try:
             figures, hit = fn(r.candidate.program(programs), r.candidate.config(space))
         except FgcError as exc:  # the emitter refuses the design: it is no candidate
@@ -431,16 +446,12 @@ def search(programs: Mapping[str, Program], space: Space = Space(), max_reads: i
         cached += hit
         reads += not hit
         r.judge()
-        for o in rows:  # what the reader's monotonicity proves about the others
-            if o.verdict != "unread" or o is r:
-                continue
-            if r.verdict == "fits" and o.candidate.below(r.candidate):
+        if r.verdict != "fits":
+            continue
+        for o in rows:  # slower designs below it fit too (the reader's monotonicity)
+            if o.verdict == "unread" and o.candidate.below(r.candidate):
                 o.verdict, o.implied_by = "fits", r.label
                 o.bound = f"reader DSP <= {r.reader_dsp:,}/{o.caps['dsp']:,}"
-            elif r.verdict == "over" and r.candidate.below(o.candidate) and \
-                    r.reader_dsp > o.caps["dsp"]:
-                o.verdict, o.implied_by, o.reader_at_least = "over", r.label, r.reader_dsp
-                o.bound = f"reader DSP >= {r.reader_dsp:,}/{o.caps['dsp']:,}"
     best_i = known_fit()
     best = rows[best_i] if best_i < len(rows) else None
     unchecked = len(undecided()) if reader else 0
@@ -450,19 +461,6 @@ def search(programs: Mapping[str, Program], space: Space = Space(), max_reads: i
         f"{time.perf_counter() - t0:.0f} s")
     return SearchResult(tuple(rows), best, reads, cached, unchecked, part,
                         time.perf_counter() - t0)
-
-
-def _next_read(pending: list[Row], probed: set) -> Row:
-    """The next design to read: first, per family (linear solver and unordered options) not
-    read yet, its smallest undecided design (nothing undecided below it: if that one is over
-    the part, the whole family is); then the median by plan cycles (a bisection: a fit there
-    settles every slower design, a refusal every design above it)."""
-    for r in reversed(pending):  # slowest first: the smallest designs
-        family = (r.candidate.linear, r.candidate.extra)
-        if family not in probed and not any(
-                o is not r and o.candidate.below(r.candidate) for o in pending):
-            return r
-    return pending[len(pending) // 2]
 
 
 def fit_warnings(result: SearchResult, name: str) -> list[str]:

@@ -36,7 +36,7 @@ from __future__ import annotations
 import queue
 import threading
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -49,13 +49,14 @@ from fgc.frontend.dsl import Graph
 from fgc.frontend.geometry import Pose2, Pose3, type_named
 from fgc.interop.to_gtsam import to_gtsam, values_from_gtsam
 from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc.ir.stream import FixedLag, StreamProgram
 from fgc_backends import load
 
 __all__ = ["KeyframeResult", "StreamProgram", "UpdatePricer", "WindowPricer", "accuracy",
            "batch_optimum", "check_mode", "compile_stream", "keyframe_result", "make_runner",
-           "on_chip", "poses", "prefix_program", "run_stream", "stream", "stream_program",
-           "timing_summary", "update_model"]
+           "on_chip", "one_step_solver", "poses", "prefix_program", "run_stream", "stream",
+           "stream_program", "timing_summary", "update_model"]
 
 UNPRICED = "one-keyframe windows and window sizes past the first four others seen"
 HW_REFUSAL = ("incremental and fixed-lag modes run keyframe by keyframe in fgc stream (--backend "
@@ -87,6 +88,18 @@ class KeyframeResult:
     def newest(self, program) -> dict:
         """The estimate of this keyframe's own variables."""
         return {k: self.values[k] for k in program.schedule.clusters[self.keyframe]}
+
+
+def one_step_solver(solver: SolverConfig | None = None) -> SolverConfig:
+    """ISAM2's update policy as a stream's solver: one Gauss-Newton step per update
+    (``method="gn"``, ``max_iterations=1``: relinearise every variable of the update's window
+    at its estimate, solve without damping, take the step; ``fgc stream --solver gn
+    --max-iterations 1``), what ``gtsam.ISAM2.update`` does per keyframe with relinearisation
+    threshold 0, instead of LM to convergence. The window, the kept Bayes net, the marginal and
+    the batch steps are the stream's as before; each update's record has status
+    "max_iterations". ``solver``'s other options are kept (default: SolverConfig())."""
+    return replace(solver if solver is not None else SolverConfig(), method="gn",
+                   max_iterations=1)
 
 
 def compile_stream(graph: Graph, solver=None, incremental: int | None = None,
@@ -242,7 +255,8 @@ class WindowPricer:
                       else load(backend).window_model(sp, scalar, config))
 
     def price(self, update):
-        price = self.model.price(int(update.keyframe), int(update.iterations))
+        price = self.model.price(int(update.keyframe), int(update.iterations),
+                                 status=update.status)
         if price.mode != update.mode or price.first != update.first:
             raise FgcError(f"internal error: keyframe {update.keyframe} is a {update.mode} "
                            f"update from {update.first}, the on-chip design's model prices a "

@@ -99,7 +99,7 @@ def _isam2_params(factorization: str = "QR"):
 
 
 def isam2_per_keyframe(graph: Graph, problem: GtsamProblem, clusters, windows=None,
-                       tol: float = 1e-11) -> list[dict]:
+                       tol: float = 1e-11, settle: bool = True) -> list[dict]:
     """ISAM2 (QR, relinearising every variable it may, full back-substitution) keyframe by
     keyframe; returns the estimate after each keyframe ({str key: fgc value}) for the variables
     that have arrived.
@@ -109,7 +109,10 @@ def isam2_per_keyframe(graph: Graph, problem: GtsamProblem, clusters, windows=No
     the factors reaching across into the window are kept linear at the estimate before the
     keyframe (:func:`linear_at`), as fgc keeps them inside τ; batch steps hold nothing and
     restore the nonlinear factors. Each keyframe: update, then update() until no variable moves
-    by ``tol``.
+    by ``tol``; ``settle`` False: one update per keyframe (one Gauss-Newton step relinearising
+    every variable it may: the one-step policy, ``SolverConfig.one_step``), the factors across
+    the window's edge then kept linear at ISAM2's linearisation point (where the update before
+    linearised them, as the one-step stream stores its τ and kept conditionals).
     """
     gtsam = _gtsam()
     isam = gtsam.ISAM2(_isam2_params())
@@ -129,7 +132,8 @@ def isam2_per_keyframe(graph: Graph, problem: GtsamProblem, clusters, windows=No
                 remove.append(slot[i])
                 linear.symmetric_difference_update({i})
                 factors.add(linear_at(graph, problem, problem.graph.at(i),
-                                      isam.calculateEstimate())
+                                      isam.calculateEstimate() if settle
+                                      else isam.getLinearizationPoint())
                             if i in linear else problem.graph.at(i))
                 added.append(i)
         for key in cluster:
@@ -143,14 +147,15 @@ def isam2_per_keyframe(graph: Graph, problem: GtsamProblem, clusters, windows=No
         result = isam.update(factors, values, remove, None, held, None, False)
         slot.update(zip(added, result.getNewFactorsIndices(), strict=True))
         estimate = isam.calculateEstimate()
-        for _ in range(100):
+        for _ in range(100 if settle else 0):
             isam.update(gtsam.NonlinearFactorGraph(), gtsam.Values(), [], None, held, None,
                         False)
             previous, estimate = estimate, isam.calculateEstimate()
             if np.max(np.abs(previous.localCoordinates(estimate).vector())) < tol:
                 break
         else:
-            raise FgcError(f"ISAM2 did not settle at keyframe {c}")
+            if settle:
+                raise FgcError(f"ISAM2 did not settle at keyframe {c}")
         estimates.append(_read(graph, problem, estimate,
                                [keys[key] for old in clusters[:c + 1] for key in old]))
     return estimates

@@ -68,6 +68,13 @@ class SolverConfig:
     incremental_k: int | None = None
     batch_every: tuple[int, ...] | int | None = None
 
+    @property
+    def one_step(self) -> bool:
+        """ISAM2's update policy for a stream: one Gauss-Newton step an update (GN, k_max = 1);
+        a stream's store is then the update's own factorisation at the point it linearised
+        (``fgc.app.streaming.one_step_solver``)."""
+        return self.method == "gn" and int(self.max_iterations) == 1
+
     def check(self) -> None:
         """Raise ProgramError naming the first invalid option."""
         choices = {"method": METHODS, "linear": LINEAR_SOLVERS, "precision": PRECISIONS,

@@ -153,6 +153,19 @@ def test_emit_takes_the_programs_clock_and_rejects_a_second_one(tmp_path):
      "--qr-unit applies to --backend hls only (not native)"),
     (["simulate", BEACONS, "--incremental", "3", "--qr-unit", "stream"],
      "--qr-unit shapes the batch design"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--hgc-before"],
+     "--hgc-before applies to Cholesky designs (--linear cholesky); a qr design has no HGC"),
+    (["compile", BEACONS, "--backend", "native", "--out", "x", "--linear", "cholesky",
+      "--hgc-before"], "--hgc-before applies to --backend hls only (not native)"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--linear", "cholesky",
+      "--linear-precision", "float64", "--hgc-before"],
+     "its HGC runs before the elimination already"),
+    (["report", BEACONS, "--iterations", "1", "--hgc-before"],
+     "--hgc-before applies to Cholesky designs"),
+    (["simulate", BEACONS, "--incremental", "3", "--linear", "cholesky", "--hgc-before"],
+     "--hgc-before shapes the batch design"),
+    (["run", BEACONS, "--backend", "sim", "--window", "3", "--linear", "cholesky",
+      "--hgc-before"], "--hgc-before shapes the batch Cholesky design"),
 ])
 def test_bad_hardware_options_exit_2_with_one_line(argv, needle, capsys, tmp_path,
                                                    monkeypatch):
@@ -322,3 +335,38 @@ def test_report_prices_the_design_compile_emits(tmp_path, capsys):
     assert priced["cycles"] == 2 * cost.cycles and priced["resources"]["dsp"] == cost.dsp
     assert priced["device"] == "xc7z020" and not priced["fits"]
     assert priced["cycles"] != default["cycles"] and priced["resources"] != default["resources"]
+
+
+def test_hgc_before_emits_and_prices_the_design_without_the_beside(tmp_path, capsys):
+    """--hgc-before is DesignOptions.hgc_beside off: fgc compile emits the Cholesky design whose
+    HGC regions all run before the elimination (byte-identical to emit with that HlsConfig, no
+    cholesky_eliminate_beside), and fgc report prices that design's plan, not the default's."""
+    import json
+
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import hls
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.plan import plan_cost
+
+    flags = ["--linear", "cholesky", "-q"]
+    for name, extra in (("beside", []), ("before", ["--hgc-before"])):
+        assert main(["compile", BEACONS, *flags, "--backend", "hls", "--out",
+                     str(tmp_path / name), *extra]) == 0
+        assert main(["report", BEACONS, *flags, "--iterations", "1", *extra, "--json",
+                     str(tmp_path / f"{name}.json")]) == 0
+    kernel = {n: (tmp_path / n / "range_beacons.cpp").read_text() for n in ("beside", "before")}
+    assert "cholesky_eliminate_beside" in kernel["beside"]
+    assert "cholesky_eliminate_beside" not in kernel["before"]
+    program = compile_graph(example("range_beacons").build(), SolverConfig(linear="cholesky"),
+                            name="range_beacons")
+    hls.emit(program, tmp_path / "direct", hls.HlsConfig(hgc_beside=False))
+    assert (tmp_path / "direct" / "range_beacons.cpp").read_text() == kernel["before"]
+    cost = {n: json.loads((tmp_path / f"{n}.json").read_text())["cost"]
+            for n in ("beside", "before")}
+    for name, beside in (("beside", True), ("before", False)):
+        plan = accel_plan(program, hls.HlsConfig(hgc_beside=beside))
+        assert any(ph.name == "hgc_beside" for ph in plan.phases) == beside
+        assert cost[name]["cycles"] == plan_cost(plan).cycles
+    assert cost["before"]["cycles"] != cost["beside"]["cycles"]

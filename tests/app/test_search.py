@@ -1,6 +1,6 @@
 """The design-space search (fgc.app.search) and the latency floor (fgc.app.floor): a design the
-plan fits but the second reader does not is refused; the reader's monotonicity decides designs
-without reading them, and never the other way; the floor is below every design's cycles."""
+plan fits but the second reader does not is refused; designs are read fastest first until one
+fits, so the fastest that fits is never missed; the floor is below every design's cycles."""
 
 from __future__ import annotations
 
@@ -77,27 +77,44 @@ def _stub(readings):
     return read, seen
 
 
-def test_the_search_reads_few_and_what_it_implies_holds(programs):
-    """A monotone stub reader: every design read or implied gets the verdict its own reading
-    would give, the best is the fastest that fits among them, and fewer designs are read than
-    there are."""
-    space = Space(linears=("qr",), units=(1, 2, 4, 8), unit_sets=(1, 2), alloc_scales=(1, 2))
-    readings = {(u, s, a): 100 * u * s + 50 * a for u in (1, 2, 4, 8) for s in (1, 2)
-                for a in (1, 2)}  # over 900 from n_u × sets >= 16
+def test_the_search_reads_fastest_first_and_cannot_miss(programs):
+    """A stub reader over the part on the fast designs (reader > plan there, which the rule must
+    survive): the search reads in plan-speed order, never a design the plan puts over the part,
+    until one fits; that one is the best, every faster design was read (or is over by the
+    plan) and found over, and each verdict is the one its own reading gives."""
+    space = Space(linears=("qr",), units=(1, 2, 4, 8), unit_sets=(1, 2), alloc_scales=(1, 2),
+                  extra=HOUSEHOLDER)
+    readings = {(u, s, a): 150 * u * s + 100 * a for u in (1, 2, 4, 8) for s in (1, 2)
+                for a in (1, 2)}  # over 900 from n_u × sets >= 8: the plan fits n_u=4 x2
     read, seen = _stub(readings)
-    result = search({"qr": programs["qr"]}, space, max_reads=16, reader_fn=read)
-    assert len(seen) < len(result.rows)
-    for r in result.rows:
+    result = search({"qr": programs["qr"]}, space, reader_fn=read)
+
+    def key(r):
         c = r.candidate
-        truth = max(readings[(c.units, c.unit_sets, c.alloc_scale)], r.cost.dsp) <= 900 \
-            and r.cost.fits
+        return (c.units, c.unit_sets, c.alloc_scale)
+
+    def truth(r):
+        return max(readings[key(r)], r.cost.dsp) <= 900 and r.cost.fits
+
+    order = [r for r in result.rows if r.cost.fits]  # plan-speed order, plan-over skipped
+    assert seen == [key(r) for r in order[:len(seen)]]
+    assert result.best is not None and result.best.read and truth(result.best)
+    faster = result.rows[:result.rows.index(result.best)]
+    assert all(r.verdict == "over" and not truth(r) for r in faster)
+    assert all(r.read or not r.cost.fits for r in faster)  # every faster one the plan fits
+    assert len([r for r in faster if r.read]) == 2  # n_u=4 x2: the plan fits, the reader not
+    assert len(seen) < len(result.rows) and result.unchecked_faster == 0
+    for r in result.rows:
         assert r.verdict in ("fits", "over", "unread")
         if r.verdict != "unread":
-            assert (r.verdict == "fits") == truth, r.label
-    fitting = [r for r in result.rows if r.verdict == "fits"]
-    assert result.best is fitting[0]
-    assert all(r.verdict == "over" for r in result.rows if r.cycles < result.best.cycles)
-    assert result.unchecked_faster == 0
+            assert (r.verdict == "fits") == truth(r), r.label
+    # a fitting read marks the slower designs below it fitting (for the table only)
+    implied = [r for r in result.rows if r.implied_by]
+    assert implied and all(r.cycles >= result.best.cycles for r in implied)
+    # a cap stops it early and says how many faster designs were left
+    read, seen = _stub(readings)
+    capped = search({"qr": programs["qr"]}, space, max_reads=1, reader_fn=read)
+    assert len(seen) == 1 and capped.best is None and capped.unchecked_faster > 0
 
 
 def test_a_read_budget_leaves_designs_unread_and_says_so(programs):
@@ -154,11 +171,9 @@ def test_the_qr_unit_axis_prices_each_unit_as_emitted(programs):
         cycles[kind] = r.cycles
         assert r.cycles == plan_cost(build_plan(program, options)).cycles
     assert cycles["householder"] != cycles["stream"]
-    # one read (budget 1): a fit of one QR kind implies nothing about the other kind
-    assert len(seen) == 1 and result.best is not None
-    (read_row,) = [r for r in result.rows if r.verdict != "unread"]
-    other = next(r for r in result.rows if r.candidate.linear == "qr" and r is not read_row)
-    assert read_row.candidate.linear == "qr" and other.verdict == "unread"
+    # one read: the fastest design, which fits; it implies nothing about the other kinds
+    assert len(seen) == 1 and result.best is result.rows[0] and result.best.read
+    assert all(r.verdict == "unread" for r in result.rows[1:])
 
 
 def test_monotone_order_and_space_checks():
@@ -233,3 +248,22 @@ def test_a_cholesky_space_searches_one_and_two_cascades(programs):
     assert by_sets[2].cost.dsp > by_sets[None].cost.dsp  # a second cascade's CPEs
     with pytest.raises(SearchError):
         Space(cascades=(3,))
+
+
+def test_the_search_sees_back_substitutions_width(programs):
+    """``Space.backsub_lanes``: each design with back-substitution one lane wide (no option)
+    and two (``HlsConfig.backsub_lanes=2``, fgc_backsub.h's cond_load_wide), each priced by the
+    plan of what it emits."""
+    space = Space(linears=("cholesky",), cpe=(5,), cascades=(1,), backsub_lanes=(1, 2))
+    result = search(programs, space, max_reads=0, reader=False)
+    by_width = {dict(r.candidate.extra).get("backsub_lanes", 1): r for r in result.rows}
+    assert set(by_width) == {1, 2}
+    assert "backsub_lanes=2" in by_width[2].label and "backsub" not in by_width[1].label
+    config = by_width[2].candidate.config(space)
+    assert config.backsub_lanes == 2
+    program = by_width[2].candidate.program(programs)
+    plan = build_plan(program, PlanOptions.for_config(config, program))
+    assert by_width[2].cost == plan_cost(plan) and plan.options.backsub_lanes == 2
+    assert by_width[2].cost.dsp > by_width[1].cost.dsp  # the wider load and triangle
+    with pytest.raises(SearchError):
+        Space(backsub_lanes=(0,))

@@ -241,15 +241,53 @@ def test_the_searched_stream_design_prices_at_least_what_its_text_holds(small_n7
     assert design.dsp(dsp_of) - window - batch <= res["parts"]["stream section"][0]
 
 
+def test_one_step_policy_stores_the_steps_own_factorisation():
+    """The one-step policy (one Gauss-Newton step an update): an update that took its step is
+    priced without the marginal's linearisation and QR step and without the batch kernel's
+    store (its solve's factorisation is the store, fgc_stream.h's took_step); its events
+    (status max_iterations) count the step as accepted. One that took none is priced as
+    before (its rows at X are LM's, the leaf step runs)."""
+    from fgc.app.streaming import one_step_solver
+
+    graph = example("lio").build(N=7)
+    program = compile_stream(graph, one_step_solver(), incremental=3, batch_every=(4,),
+                             name="lio_k1")
+    model = WindowUpdateModel(layout_of(stream_program(graph, program, None)),
+                              HlsConfig(scalar="float"))
+    assert model.one_step
+    ev = model.events_of(1, status="max_iterations")
+    assert ev["accept"] == 1 and model.reuses(ev)
+    took = model.price(5, 1, status="max_iterations")
+    names = {t.name for t in took.terms}
+    assert "relinearize" not in names and "lin_points" in names
+    assert took.term("marginal").each == model.stream["stream_marginal_reused"]
+    none = model.price(5, 1)  # converged on its gradient: no step, the leaf step runs
+    assert not model.reuses(model.events_of(1))
+    assert none.term("marginal").each == (model.stream["stream_marginal"]
+                                          + model.qr_cycles(model.zero_factors(5), False, True))
+    assert none.term("marginal").each > took.term("marginal").each
+    batch = model.price(4, 1, status="max_iterations")
+    assert batch.mode == "batch" and "batch_store" not in {t.name for t in batch.terms}
+    assert "batch_store" in {t.name for t in model.price(4, 1).terms}
+
+
+def test_lm_to_convergence_keeps_its_store(paper_a_n7):
+    _, model = paper_a_n7
+    assert not model.one_step
+    ev = model.events_of(3, status="max_iterations")
+    assert ev["accept"] == 3 and not model.reuses(ev)
+    assert "batch_store" in {t.name for t in model.price(4, 3, ev).terms}
+
+
 def test_the_cost_at_x_is_priced_once_per_update(paper_a_n7):
     """LM's start costs the window at X once per call (the plan's per-call ``factor_cost`` phase,
-    the ``cost`` event): the update prices it, the window's and a batch step's (it was left out:
-    the counting C simulation's keyframe 0 of LIO N = 8 counted 1.451 x the model)."""
+    the ``cost`` event): the update prices it, the window's and a batch step's (left out, the
+    counting C simulation's keyframe 0 of LIO N = 8 counted 1.451 x the model)."""
     _, model = paper_a_n7
     cost = sum(phase_cycles(ph) for ph in model.plan.phases if ph.name == "factor_cost")
     assert cost > 0
-    term = model.price(5, 2).term("factor_cost")
+    term = model.price(5, 2).term("cost_x")
     assert (term.each, term.times) == (cost, 1)
     bcost = sum(phase_cycles(ph) for ph in model.batch["plan"].phases
                 if ph.name == "factor_cost")
-    assert model.price(4, 2).term("batch_factor_cost").each == bcost
+    assert model.price(4, 2).term("batch_cost_x").each == bcost

@@ -3,6 +3,7 @@ hand, one unit per QR unit set, the operators as bound."""
 
 from __future__ import annotations
 
+import pytest
 from hls_programs import chain
 
 from fgc_backends.cost.operators import FLOAT32
@@ -18,6 +19,7 @@ from fgc_backends.hls.units.backsub import (
     load_loop,
     retire_region,
     triangle_trip,
+    wide_load_loops,
 )
 from fgc_backends.hls.units.state_update import retire_order, retire_timing
 
@@ -160,3 +162,151 @@ def test_back_substitution_feeds_the_state_update():
 
 def plan_tables(program):
     return _tables(program)
+
+
+# ---- back-substitution two lanes wide (HlsConfig backsub_lanes=2, fgc_backsub.h's
+# cond_load_wide / cond_backsub_wide)
+
+def _wide_walk(off: int, f: int, s: int, lanes: int) -> int:
+    """cond_load_wide's iterations walked as the header's loop walks them: row i from its
+    diagonal, a group of 2 lanes words of COND an iteration, the row's last group ends it."""
+    width, cols, w = 2 * lanes, f + s + 1, f + s
+    trip, i, base, g = 0, 0, off, off // (2 * lanes)
+    while i < f:
+        trip += 1
+        if width * g + width - 1 >= base + w:
+            i, base = i + 1, base + cols
+            g = (base + i) // width
+        else:
+            g += 1
+    return trip
+
+
+def test_the_wide_load_reads_aligned_groups_of_one_row():
+    from fgc_backends.hls.units.backsub import wide_trip
+    # f = 2, s = 1 at COND word 0: row 0 is words 0 … 3 (one group), row 1 words 5 … 7 (group
+    # 1); at word 3: row 0 is words 3 … 6 (groups 0 and 1), row 1 words 8 … 10 (group 2)
+    assert wide_trip(0, 2, 1, 2) == 2 and wide_trip(3, 2, 1, 2) == 3
+    for off in range(8):
+        for f in range(1, 9):
+            for s in range(0, 7):
+                assert wide_trip(off, f, s, 2) == _wide_walk(off, f, s, 2), (off, f, s)
+                # never more than one group a row above its words at four a cycle
+                assert wide_trip(off, f, s, 2) <= sum(-(-(f + s + 1 - i) // 4) + 1
+                                                      for i in range(f))
+    lp = load_loop(15, 15, FLOAT32, lanes=2, off=0)
+    # LIO's f = s = 15 steps: 101 groups for 360 words (180 iterations two a cycle); depth
+    # read + multiply + a tree of 4 (2 adds deep) + the partial sum + write: 2 + 3 + 3 * 4
+    assert (lp.trip, lp.depth) == (wide_trip(0, 15, 15, 2), 17) and lp.trip <= 105
+    assert load_loop(15, 15, FLOAT32).trip == 180
+
+
+def test_the_wide_triangle_runs_two_rows_of_a_column_an_iteration():
+    # f = 15: every column (⌈14 / 2⌉ = 7 rows an iteration at most) padded to the chain's 8
+    assert triangle_trip(15, FLOAT32, lanes=2) == 14 * 8
+    # f = 30 (a root): columns 17 … 29 take ⌈r / 2⌉ = 9 … 15
+    assert triangle_trip(30, FLOAT32, lanes=2) == 16 * 8 + sum(-(-r // 2) for r in range(17, 30))
+    for f in range(1, 40):
+        assert (f - 1) * 8 <= triangle_trip(f, FLOAT32, lanes=2) <= triangle_trip(f, FLOAT32)
+    # the solve is the triangle alone; the row loop runs in the load, after cond_load_wide,
+    # folding PARTIALS sums, not 2 PARTIALS: max(4 (1 + 2), 15) + 3, the divide the longer path
+    loops = {lp.name: lp for lp in backsub_loops(2, 3, FLOAT32, name="b", lanes=2)}
+    assert list(loops) == ["b_triangle", "b_last"]
+    # f = 2, s = 3: row 0 words 0 … 5 (groups 0, 1), row 1 words 7 … 11 (groups 1, 2)
+    load = wide_load_loops(2, 3, FLOAT32, 2, 0, "c")
+    assert [(lp.name, lp.trip, lp.depth) for lp in load] == [("c", 4, 17), ("c_rows", 2, 18)]
+    assert wide_load_loops(0, 3, FLOAT32, 2, 0, "c")[0].trip == 0
+
+
+def test_wide_backsub_operators_as_bound():
+    # cond_load_wide: 4 multiplies, a tree of 3 adds and the partial sum's; rows: 3 fold adds
+    # and the subtraction, the divide, the scaling; the triangle twice: 2 adds, 4 multiplies
+    assert dict(backsub_operators(FLOAT32, lanes=2)) == {"add": 4 + 4 + 2, "mul": 4 + 1 + 4,
+                                                          "div": 1}
+
+
+def test_backsub_lanes_are_priced_and_checked():
+    from fgc_backends.hls import HlsConfig, HlsConfigError
+    program = chain(7, linear="cholesky", cpe=2)
+    narrow = build_plan(program)
+    wide = build_plan(program, PlanOptions.of(program, backsub_lanes=2))
+    assert {m.name: m.banks for m in wide.memories}["cond"] == 2
+    assert {m.name: m.banks for m in narrow.memories}["cond"] == 1
+    assert dict(wide.unit("trisolve").operators) == dict(backsub_operators(wide.ops, 2))
+    assert wide.unit("trisolve").instances == narrow.unit("trisolve").instances == 2
+    # the slots priced with the wide loops (chain(7)'s small steps: the load's deeper pipeline
+    # can cost more than its groups save; LIO's f = s = 15 steps gain, docs/hls.md)
+    assert plan_cost(wide).cycles != plan_cost(narrow).cycles
+    assert HlsConfig(backsub_lanes=2).plan_options(program).backsub_lanes == 2
+    for bad in (0, 3, True):
+        with pytest.raises(HlsConfigError, match="backsub_lanes"):
+            HlsConfig(backsub_lanes=bad).check()
+
+
+def test_the_streaming_designs_refuse_wide_back_substitution():
+    # the window and incremental designs price back-substitution one lane wide (plan/update.py)
+    from fgc_backends.hls import HlsConfig, HlsConfigError, emit
+
+    class FakeLayout:  # emit refuses the option before it reads the layout
+        template = None
+
+    with pytest.raises(HlsConfigError, match="streaming designs"):
+        emit(chain(4, linear="qr"), "/nonexistent", HlsConfig(backsub_lanes=2),
+             stream=FakeLayout())
+
+
+def _csim_against_the_simulator(graph, solver, tmp_path, name, units="fgc_cpe.h"):
+    import numpy as np
+
+    from fgc.compile import compile_graph
+    from fgc.ir.datafile import problem_data
+    from fgc_backends import sim
+    from fgc_backends.hls import HlsConfig, emit, run_csim
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.network import counts
+    from fgc_backends.hls.plan import process_network
+
+    program = compile_graph(graph, solver, name=name)
+    config = HlsConfig(scalar="double", backsub_lanes=2)
+    project = emit(program, tmp_path, config)
+    text = (tmp_path / f"{name}.cpp").read_text()
+    assert "#define FGC_BS_LANES 2" in text
+    # the process network read back from the text (the wide driver's backsub_lane<p>) is the
+    # plan's
+    procs, streams = process_network(accel_plan(program, config))
+    include = tmp_path / "include"
+    header = (include / units).read_text()
+    if units == "fgc_cpe.h":  # the cascade's driver regions
+        header += (include / "fgc_eliminate.h").read_text()
+    assert counts(text, header, (include / "fgc_backsub.h").read_text()) == \
+        (len(procs), len(streams))
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)  # the testbench checks it too
+    assert result.status == reference.status
+    for v in program.variables:  # double: 1e-9 relative to max(1, the largest entry)
+        a, b = np.asarray(result.values[v.key]), np.asarray(reference.storage[v.key])
+        assert np.max(np.abs(a - b)) <= 1e-9 * max(1.0, float(np.max(np.abs(b)))), v.key
+
+
+def test_wide_back_substitution_matches_the_simulator_on_a_tree(tmp_path):
+    """backsub_lanes=2 on a general elimination tree (pose_graph w100: steps of several
+    children and many shapes, conditionals at every offset from a group boundary), LM,
+    Cholesky, double: the C simulation equals the simulator within 1e-9."""
+    from fgc.app.specs import example
+    from fgc.ir.program import SolverConfig
+    _csim_against_the_simulator(example("pose_graph").build(), SolverConfig(linear="cholesky"),
+                                tmp_path, "w100_wide")
+
+
+# heavy (a second C simulation, ~20 s on 2 cores): the tree case above keeps the wide driver's
+# results in the default run
+@pytest.mark.heavy
+def test_wide_back_substitution_matches_the_simulator_on_qr(tmp_path):
+    """backsub_lanes=2 on a QR design (LIO N = 6, two unit sets: COND written by qr_commit two
+    words a cycle into its two banks), LM, double: the C simulation equals the simulator within
+    1e-9."""
+    from fgc.app.specs import example
+    from fgc.ir.program import SolverConfig
+    _csim_against_the_simulator(example("lio").build(N=6), SolverConfig(linear="qr"), tmp_path,
+                                "lio_wide", units="fgc_qr.h")

@@ -30,6 +30,11 @@ def test_a_coefficient_is_its_series_and_its_closed_form():
         terms = len(series) - 1
         assert ops["add"] >= terms and ops["mul"] >= terms and ops["sqrt"] == 1
         assert "trig" not in ops  # the sines and cosines are what `special` prices
+        # one call issues the larger branch of each kind: the series' terms or the closed form's
+        issued = dict(coefficient_ops(name, exclusive=True))
+        assert issued["add"] == max(terms, ops["add"] - terms)
+        assert issued["mul"] == max(terms, ops["mul"] - terms) < ops["mul"] or name == "A"
+        assert issued["sqrt"] == 1 and issued["div"] == ops["div"]  # the series has neither
 
 
 def test_helper_ops_count_each_call_and_one_log_per_rotation(imu):

@@ -44,6 +44,14 @@
 // - x_0 = y_0 (a move).
 // No DATAFLOW inside: the driver below runs a lane's cond_backsub beside the other lane's
 // cond_load (backsub_lane<p>). Cycles to FGC_CYCLES (fgc_cycles.h) as the loops state them.
+//
+// Two lanes wide (HlsConfig backsub_lanes = 2; the kernel defines FGC_BS_LANES, the driver
+// partitions COND and the lanes' buffers cyclic over two banks): cond_load_wide<CFG, LANES>
+// reads an aligned group of 2 LANES words of one row a cycle (static banks), its products summed
+// by a tree before the row's partial sum; backsub_rows_wide<CFG, LANES> folds a row's PARTIALS
+// sums into y, z, inv in the loading lane's process; cond_backsub_wide<CFG, LANES> is the
+// triangle alone, LANES rows of a column an iteration (backsub_triangle<CFG, LANES>, which
+// cond_backsub runs with LANES = 1). docs/hls.md, "Back-substitution two lanes wide".
 #ifndef FGC_BACKSUB_H
 #define FGC_BACKSUB_H
 
@@ -56,13 +64,23 @@ namespace fgc_units {
 template <class CFG>
 constexpr int backsub_chain() { return CFG::MUL_LAT + CFG::ADD_LAT; }
 
-// Iterations of cond_backsub's triangle loop: the columns r = f - 1 ... 1, each max(r, CHAIN + 1).
-template <class CFG>
+// Iterations of cond_backsub's triangle loop: the columns r = f - 1 ... 1, each
+// max(ceil(r / LANES), CHAIN + 1) (LANES rows of a column an iteration).
+// sum_{r=1}^{n} ceil(r / LANES): q whole runs of LANES columns (run k: LANES columns of k rows
+// an iteration's k), then the m = n % LANES columns of q + 1
+template <int LANES>
+inline int backsub_ceil_sum(int n) {
+    const int q = n / LANES, m = n % LANES;
+    return LANES * q * (q + 1) / 2 + m * (q + 1);
+}
+
+template <class CFG, int LANES = 1>
 inline int backsub_triangle_trip(int f) {
     const int pad = backsub_chain<CFG>() + 1;
-    // columns r <= pad take pad iterations, the longer ones r
-    return f - 1 <= pad ? (f > 1 ? (f - 1) * pad : 0)
-                        : pad * pad + (f - 1) * f / 2 - pad * (pad + 1) / 2;
+    // columns r <= LANES pad take pad iterations, the longer ones ceil(r / LANES)
+    const int n = f - 1, knee = LANES * pad;
+    return n <= knee ? (n > 0 ? n * pad : 0)
+                     : knee * pad + backsub_ceil_sum<LANES>(n) - backsub_ceil_sum<LANES>(knee);
 }
 
 // Words cond_load moves: each row i from its diagonal on (w + 1 - i words).
@@ -110,13 +128,132 @@ void cond_load(const typename CFG::T src[], int off, int f, int s,
                2 + CFG::MUL_LAT + CFG::ADD_LAT);
 }
 
+// cond_load with LANES > 1 (HlsConfig backsub_lanes; the kernel partitions src cyclic LANES,
+// two ports a bank): one aligned group of W = 2 LANES words an iteration, word h of the group at
+// src[W g + h], bank h % LANES (static: two reads a bank), into the lane's buffer at the same
+// offset from the group boundary below off (cond[sh + i (w + 1) + c], sh = off % W: a word's
+// bank in the buffer is its bank in src). An iteration reads the words of one row (row i, from
+// its diagonal to d): the products S_ia xs_a of its W words (0 for R and d) summed by a tree of
+// W - 1 adds, then added into partial sum j % PARTIALS of row i (j: the iteration within the
+// row; the first PARTIALS set theirs), so a sum comes back PARTIALS >= ADD_LAT iterations later
+// (II 1); cond_backsub folds row i's min(n_i, PARTIALS) sums (n_i its iterations). Depth read +
+// multiply + tree + add + write: 2 + Lm + La (1 + log2 W).
+template <class CFG, int LANES>
+void cond_load_wide(const typename CFG::T src[], int off, int f, int s,
+                    const typename CFG::T xs[CFG::MAX_COLS], const typename CFG::T xl[CFG::MAX_F],
+                    int xoff, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2 * LANES],
+                    typename CFG::T part[CFG::PARTIALS][CFG::MAX_F]) {
+    typedef typename CFG::T T;
+    enum { W = 2 * LANES };
+    const int P = CFG::PARTIALS;
+    static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the load runs at II 1");
+    static_assert(LANES == 2, "two lanes: a group's four words two a bank of src");
+    const int cols = f + s + 1, w = f + s;
+    const int g0 = off / W;  // the group holding the conditional's first word
+    int i = 0, base = off, g = off / W, j = 0;  // row i (at src[base]), group g, its j-th
+    // trip: row by row, each row's words in the aligned groups of W words they touch (a group
+    // holds the words of one row only: a group two rows share is read again for the second),
+    // sum_i ((off + i cols + w) / W - (off + i cols + i) / W + 1) (units/backsub.py's
+    // wide_trip); II 1 (the exit test on i, an integer recurrence of one cycle), depth
+    // 2 + Lm + La (1 + log2 W)
+    int trip = 0;
+    for (; i < f; ++trip) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F*(CFG::MAX_COLS/4+2)
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
+        T prod[W];
+        for (int h = 0; h < 2 * LANES; ++h) {
+#pragma HLS UNROLL
+            const int c = W * g + h - base;  // the word's column in row i
+            prod[h] = T(0);
+            if (c >= i && c <= w) {
+                const T v = src[W * g + h];
+                cond[W * (g - g0) + h] = v;
+                const int a = c - f;
+                if (a >= 0 && a < s) {
+                    const T xa = xoff >= 0 ? xl[xoff + a] : xs[a];  // a mux: no operator
+                    prod[h] = v * xa;
+                }
+            }
+        }
+        const int b = j % P;
+        const T sum = fold_partials<T, W>(prod);
+        part[b][i] = (j < P ? T(0) : part[b][i]) + sum;
+        if (W * g + W - 1 >= base + w) {  // the row's last group: the next row from its diagonal
+            ++i;
+            base += cols;
+            g = (base + i) / W;
+            j = 0;
+        } else {
+            ++g;
+            ++j;
+        }
+    }
+    FGC_CYCLES("backsub_copy", 0, "cond_load", trip, 1,
+               2 + CFG::MUL_LAT + CFG::ADD_LAT * (1 + ceil_log2(W)));
+}
+
+// The triangle of cond_backsub (see the top of the file) on rows scaled by their reciprocal
+// (y, z: y_i = (d_i - S_i xs) / R_ii; inv: 1 / R_ii), LANES rows of a column an iteration: a
+// column r takes max(ceil(r / LANES), CHAIN + 1) iterations. Lane l updates the row of its
+// residue l mod LANES (row LANES m + l: y, z and inv partitioned cyclic LANES, a lane's bank
+// static), so each bank sees one read and one write of y and z an iteration (and z's read of
+// x_r); R_ir comes from cond[sh + i (w + 1) + r], LANES reads an iteration (a buffer cyclic
+// LANES: two ports a bank). LANES = 1 is the one-row loop. x_0 = y_0 after it (a move).
+template <class CFG, int LANES>
+void backsub_triangle(const typename CFG::T cond[], int sh, int f, int cols,
+                      typename CFG::T y[CFG::MAX_F], typename CFG::T z[CFG::MAX_F],
+                      const typename CFG::T inv[CFG::MAX_F], typename CFG::T x[CFG::MAX_F]) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    const int CHAIN = CFG::MUL_LAT + CFG::ADD_LAT;  // backsub_chain
+    // the triangle, columns r = f - 1 ... 1 flattened (k: the iteration within column r)
+    const int pad = CHAIN + 1;
+    const int trip = backsub_triangle_trip<CFG, LANES>(f);
+    T xr = T(0);
+    for (int e = 0, r = f - 1, k = 0; e < trip; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F*CFG::MAX_F/2+CFG::MAX_F*(CFG::MUL_LAT+CFG::ADD_LAT+1)
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=y inter true distance=CHAIN
+#pragma HLS DEPENDENCE variable=z inter true distance=CHAIN
+        if (k == 0) {
+            xr = z[r];
+            x[r] = xr;
+        }
+        for (int l = 0; l < LANES; ++l) {
+#pragma HLS UNROLL
+            // column r's rows r - 1 - k LANES ... r - LANES - k LANES; lane l takes the one of
+            // residue l: r - 1 - k LANES - t, t = (r - 1 - l) mod LANES
+            const int t = (r - 1 - l) & (LANES - 1);
+            if (k * LANES + t < r) {
+                const int m = (r - 1 - k * LANES - t - l) / LANES;  // row LANES m + l
+                const int i = LANES * m + l;
+                const T yi = y[i] - (cond[sh + i * cols + r] * inv[i]) * xr;
+                y[i] = yi;
+                z[i] = yi;
+            }
+        }
+        const int rows = (r + LANES - 1) / LANES;
+        const int len = rows > pad ? rows : pad;
+        if (k == len - 1) {
+            k = 0;
+            --r;
+        } else {
+            ++k;
+        }
+    }
+    // depth Lm + CHAIN: R_ir / R_ii, then its product with x_r and the subtraction
+    FGC_CYCLES("backsub", 0, "triangle", trip, 1, CFG::MUL_LAT + CHAIN);
+    x[0] = z[0];  // a move, depth 1
+    FGC_CYCLES("backsub", 0, "last", 1, 1, 1);
+}
+
 template <class CFG>
 void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
                   const typename CFG::T part[2][CFG::PARTIALS][CFG::MAX_F],
                   typename CFG::T x[CFG::MAX_F]) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
-    const int CHAIN = CFG::MUL_LAT + CFG::ADD_LAT;  // backsub_chain
     const int w = f + s, cols = w + 1;
     if (f <= 0) return;
     T y[CFG::MAX_F], z[CFG::MAX_F], inv[CFG::MAX_F];
@@ -144,37 +281,52 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
                (CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) > CFG::DIV_LAT
                     ? CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) : CFG::DIV_LAT) +
                    CFG::MUL_LAT);
-    // the triangle, columns r = f - 1 ... 1 flattened (k: the iteration within column r)
-    const int pad = CHAIN + 1;
-    const int trip = backsub_triangle_trip<CFG>(f);
-    T xr = T(0);
-    for (int e = 0, r = f - 1, k = 0; e < trip; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F*CFG::MAX_F/2+CFG::MAX_F*(CFG::MUL_LAT+CFG::ADD_LAT+1)
+    backsub_triangle<CFG, 1>(cond, 0, f, cols, y, z, inv, x);
+}
+
+// The row loop after cond_load_wide<LANES> (HlsConfig backsub_lanes), in the loading lane's
+// process: the conditional at cond[sh + i (w + 1) + c] (sh: its first word's offset from its
+// group boundary), each row's min(n_i, PARTIALS) partial sums in part[b][i] (n_i: the row's
+// groups), folded (PARTIALS sums, not 2 PARTIALS) and subtracted from d beside 1 / R_ii, the row
+// scaled by it: y_i = z_i = (d_i - S_i xs) / R_ii, inv_i = 1 / R_ii, what the solving lane's
+// triangle starts from (cond_backsub_wide) in the next slot. Trip f, II 1, depth
+// max(La (1 + ceil(log2 P)), Ld) + Lm.
+template <class CFG, int LANES>
+void backsub_rows_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2 * LANES],
+                       int sh, int f, int s, const typename CFG::T part[CFG::PARTIALS][CFG::MAX_F],
+                       typename CFG::T y[CFG::MAX_F], typename CFG::T z[CFG::MAX_F],
+                       typename CFG::T inv[CFG::MAX_F]) {
+    typedef typename CFG::T T;
+    const int P = CFG::PARTIALS;
+    const int w = f + s, cols = w + 1;
+    for (int i = 0, base = sh; i < f; ++i, base += cols) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=y inter true distance=CHAIN
-#pragma HLS DEPENDENCE variable=z inter true distance=CHAIN
-        if (k == 0) {
-            xr = z[r];
-            x[r] = xr;
-        }
-        if (k < r) {
-            const int i = r - 1 - k;
-            const T yi = y[i] - (cond[i * cols + r] * inv[i]) * xr;
-            y[i] = yi;
-            z[i] = yi;
-        }
-        const int len = r > pad ? r : pad;
-        if (k == len - 1) {
-            k = 0;
-            --r;
-        } else {
-            ++k;
-        }
+        const int n = (base + w) / (2 * LANES) - (base + i) / (2 * LANES) + 1;  // its groups
+        T row[CFG::PARTIALS];
+        for (int b = 0; b < P; ++b) row[b] = b < n ? part[b][i] : T(0);
+        const T ri = T(1) / cond[base + i];
+        const T yi = (cond[base + w] - fold_partials<T, CFG::PARTIALS>(row)) * ri;
+        y[i] = yi;
+        z[i] = yi;
+        inv[i] = ri;
     }
-    // depth Lm + CHAIN: R_ir / R_ii, then its product with x_r and the subtraction
-    FGC_CYCLES("backsub", 0, "triangle", trip, 1, CFG::MUL_LAT + CHAIN);
-    x[0] = z[0];  // a move, depth 1
-    FGC_CYCLES("backsub", 0, "last", 1, 1, 1);
+    FGC_CYCLES("backsub", 0, "rows", f, 1,
+               (CFG::ADD_LAT * (1 + ceil_log2(CFG::PARTIALS)) > CFG::DIV_LAT
+                    ? CFG::ADD_LAT * (1 + ceil_log2(CFG::PARTIALS)) : CFG::DIV_LAT) +
+                   CFG::MUL_LAT);
+}
+
+// cond_backsub of a step cond_load_wide and backsub_rows_wide loaded (HlsConfig
+// backsub_lanes): the triangle alone, LANES rows of a column an iteration (backsub_triangle),
+// from the scaled rows y, z and reciprocals inv the load left.
+template <class CFG, int LANES>
+void cond_backsub_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2 * LANES],
+                       int sh, int f, int s, typename CFG::T y[CFG::MAX_F],
+                       typename CFG::T z[CFG::MAX_F], const typename CFG::T inv[CFG::MAX_F],
+                       typename CFG::T x[CFG::MAX_F]) {
+    if (f <= 0) return;
+    backsub_triangle<CFG, LANES>(cond, sh, f, f + s + 1, y, z, inv, x);
 }
 
 }  // namespace fgc_units
@@ -214,10 +366,21 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
 #if defined(FGC_BACKSUB_DRIVER) && !defined(FGC_BACKSUB_DRIVER_H)
 #define FGC_BACKSUB_DRIVER_H
 
+#ifdef FGC_BS_LANES  // backsub_lanes > 1 (the kernel defines it only then)
+// HlsConfig backsub_lanes (the kernel's FGC_BS_LANES): COND and the lanes' buffers cyclic
+// FGC_BS_LANES (backsub_slots' pragmas), a buffer's words at their offset from the group
+// boundary below the step's first word (cond_load_wide), hence 2 FGC_BS_LANES words more
+L BS_COND0[MAX_F * (MAX_W + 1) + 2 * FGC_BS_LANES];  // lane 0's conditional (R | S | d)
+#else
 L BS_COND0[MAX_F * (MAX_W + 1)];  // lane 0's conditional (R | S | d)
+#endif
 L BS_XS0[MAX_W + 1];  // its separator's solution
 L BS_X0[MAX_F];  // its frontal solution (read by its next load when lane-local: BS_XOFF)
+#ifdef FGC_BS_LANES  // backsub_lanes > 1 (the kernel defines it only then)
+L BS_COND1[MAX_F * (MAX_W + 1) + 2 * FGC_BS_LANES];  // lane 1's
+#else
 L BS_COND1[MAX_F * (MAX_W + 1)];  // lane 1's
+#endif
 L BS_XS1[MAX_W + 1];
 L BS_X1[MAX_F];
 
@@ -247,6 +410,83 @@ void backsub_out(const L x[CFG::MAX_F], int f, int cb, hls::stream<BsPair>& dx) 
     FGC_CYCLES("backsub_copy", 0, "solution_out", (f + 1) / 2, 1, CFG::MOVE_DEPTH);
 }
 
+#ifdef FGC_BS_LANES  // backsub_lanes > 1 (the kernel defines it only then)
+// Lane u's solve (backsub_lanes > 1): the triangle of the step its load left scaled (ry, rz,
+// rinv: the row loop ran in the load, beside the other lane's triangle), then its solution out.
+// (The parameters keep the one-lane driver's order, the wide ones appended.)
+template <class CFG>
+void backsub_set0(const L cond[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES], int f, int s,
+                  L ry[CFG::MAX_F], L x[CFG::MAX_F], int cb, hls::stream<BsPair>& dx,
+                  L rz[CFG::MAX_F], const L rinv[CFG::MAX_F], int sh) {
+    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
+    fgc_units::cond_backsub_wide<CFG, FGC_BS_LANES>(cond, sh, f, s, ry, rz, rinv, x);
+    backsub_out<CFG>(x, f, cb, dx);
+}
+
+template <class CFG>
+void backsub_set1(const L cond[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES], int f, int s,
+                  L ry[CFG::MAX_F], L x[CFG::MAX_F], int cb, hls::stream<BsPair>& dx,
+                  L rz[CFG::MAX_F], const L rinv[CFG::MAX_F], int sh) {
+    FGC_BRANCH();
+    fgc_units::cond_backsub_wide<CFG, FGC_BS_LANES>(cond, sh, f, s, ry, rz, rinv, x);
+    backsub_out<CFG>(x, f, cb, dx);
+}
+
+// Lane u's load (backsub_lanes > 1): a step's conditional from COND (at off) into the lane's
+// buffer, 2 FGC_BS_LANES words a cycle, S xs summed on the way into the load's own partial
+// sums, then the row loop: the rows scaled by their reciprocals into ry, rz, rinv (xs: the
+// separator in from DELTA; xoff >= 0: from xl, the lane's last solution).
+template <class CFG>
+void backsub_load0(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
+                   int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
+                   L ry[CFG::MAX_F], L rz[CFG::MAX_F], L rinv[CFG::MAX_F]) {
+    FGC_BRANCH();
+    L part[CFG::PARTIALS][CFG::MAX_F];  // the partial sums of S xs (bank, row)
+#pragma HLS ARRAY_PARTITION variable=part complete dim=1
+    fgc_units::cond_load_wide<CFG, FGC_BS_LANES>(COND, off, f, s, xs, xl, xoff, cond, part);
+    fgc_units::backsub_rows_wide<CFG, FGC_BS_LANES>(cond, off % (2 * FGC_BS_LANES), f, s, part,
+                                                    ry, rz, rinv);
+}
+
+template <class CFG>
+void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
+                   int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
+                   L ry[CFG::MAX_F], L rz[CFG::MAX_F], L rinv[CFG::MAX_F]) {
+    FGC_BRANCH();
+    L part[CFG::PARTIALS][CFG::MAX_F];
+#pragma HLS ARRAY_PARTITION variable=part complete dim=1
+    fgc_units::cond_load_wide<CFG, FGC_BS_LANES>(COND, off, f, s, xs, xl, xoff, cond, part);
+    fgc_units::backsub_rows_wide<CFG, FGC_BS_LANES>(cond, off % (2 * FGC_BS_LANES), f, s, part,
+                                                    ry, rz, rinv);
+}
+
+// A slot whose solve is on lane 0: lane 0's triangle beside lane 1's load and row loop.
+template <class CFG>
+void backsub_lane0(const L cond0[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES], int f0, int s0,
+                   L ry0[CFG::MAX_F], L x0[CFG::MAX_F], int cb0, hls::stream<BsPair>& dx,
+                   int off, int f1, int s1, const L xs1[CFG::MAX_COLS], const L x1[CFG::MAX_F],
+                   int xoff, L cond1[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
+                   L ry1[CFG::MAX_F], L rz0[CFG::MAX_F], const L rinv0[CFG::MAX_F], int sh0,
+                   L rz1[CFG::MAX_F], L rinv1[CFG::MAX_F]) {
+#pragma HLS DATAFLOW
+    backsub_set0<CFG>(cond0, f0, s0, ry0, x0, cb0, dx, rz0, rinv0, sh0);
+    backsub_load1<CFG>(off, f1, s1, xs1, x1, xoff, cond1, ry1, rz1, rinv1);
+}
+
+// A slot whose solve is on lane 1: lane 1's triangle beside lane 0's load and row loop.
+template <class CFG>
+void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES], int f1, int s1,
+                   L ry1[CFG::MAX_F], L x1[CFG::MAX_F], int cb1, hls::stream<BsPair>& dx,
+                   int off, int f0, int s0, const L xs0[CFG::MAX_COLS], const L x0[CFG::MAX_F],
+                   int xoff, L cond0[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
+                   L ry0[CFG::MAX_F], L rz1[CFG::MAX_F], const L rinv1[CFG::MAX_F], int sh1,
+                   L rz0[CFG::MAX_F], L rinv0[CFG::MAX_F]) {
+#pragma HLS DATAFLOW
+    backsub_set1<CFG>(cond1, f1, s1, ry1, x1, cb1, dx, rz1, rinv1, sh1);
+    backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, ry0, rz0, rinv0);
+}
+
+#else
 // Lane u's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load left
 // (f = 0: none this time), then its solution out (backsub_out).
 template <class CFG>
@@ -311,16 +551,40 @@ void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
     backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, part0);
 }
 
+#endif
+
 // The slots, root first, into DELTA; each solved step's words to the state update too.
 template <class CFG>
 void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
     FGC_OUTER_BRANCH();  // csim cycle counting only: this process beside backsub_retire
+#ifdef FGC_BS_LANES  // backsub_lanes > 1 (the kernel defines it only then)
+    // four ports of COND (two a bank), the lanes' buffers alike, the separators' words registers
+    // (cond_load_wide reads 2 FGC_BS_LANES of them an iteration)
+#pragma HLS ARRAY_PARTITION variable=COND cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=BS_COND0 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=BS_COND1 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=BS_XS0 complete
+#pragma HLS ARRAY_PARTITION variable=BS_XS1 complete
+#pragma HLS ARRAY_PARTITION variable=BS_X0 complete
+#pragma HLS ARRAY_PARTITION variable=BS_X1 complete
+    // per lane: its loaded step's rows scaled by 1 / R_ii (y, and z the copy the triangle reads
+    // x_r from) and the reciprocals, cyclic over the lanes of the triangle (a lane's bank static)
+    L bs_y0[CFG::MAX_F], bs_z0[CFG::MAX_F], bs_inv0[CFG::MAX_F];
+#pragma HLS ARRAY_PARTITION variable=bs_y0 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=bs_z0 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=bs_inv0 cyclic factor=FGC_BS_LANES
+    L bs_y1[CFG::MAX_F], bs_z1[CFG::MAX_F], bs_inv1[CFG::MAX_F];
+#pragma HLS ARRAY_PARTITION variable=bs_y1 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=bs_z1 cyclic factor=FGC_BS_LANES
+#pragma HLS ARRAY_PARTITION variable=bs_inv1 cyclic factor=FGC_BS_LANES
+#else
     L bs_part0[2][CFG::PARTIALS][CFG::MAX_F];  // lane 0's partial sums of S xs (word lane, bank, row)
 #pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=bs_part0 complete dim=2
     L bs_part1[2][CFG::PARTIALS][CFG::MAX_F];  // lane 1's
 #pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=2
+#endif
     const int slots = at_x ? 0 : BS_SLOTS;  // at_x: no solve (the cost at X)
     for (int k = 0; k < slots; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=BS_SLOTS
@@ -342,12 +606,23 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
             }
         }
         FGC_CYCLES("backsub_copy", 0, "separator_in", (nin + 1) / 2, 1, CFG::MOVE_DEPTH);
+#ifdef FGC_BS_LANES  // backsub_lanes > 1 (the kernel defines it only then)
+        // the solved step's first word's offset from its group boundary (cond_load_wide's layout)
+        const int ssh = sv >= 0 ? STEP_COND_OFF[sv] % (2 * FGC_BS_LANES) : 0;
+        if (p == 0)
+            backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_y0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,
+                               BS_X1, xo, BS_COND1, bs_y1, bs_z0, bs_inv0, ssh, bs_z1, bs_inv1);
+        else
+            backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_y1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
+                               BS_X0, xo, BS_COND0, bs_y0, bs_z1, bs_inv1, ssh, bs_z0, bs_inv0);
+#else
         if (p == 0)
             backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,
                                BS_X1, xo, BS_COND1, bs_part1);
         else
             backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
                                BS_X0, xo, BS_COND0, bs_part0);
+#endif
         FGC_JOIN();
         if (sv >= 0) FGC_OUTER_SEND();
     }

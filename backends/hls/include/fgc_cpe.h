@@ -24,9 +24,10 @@
 // row i's columns i <= c < w are the upper triangle of the frontal-and-separator Hessian (the
 // sum of its factors' Grams and its children's update matrices), column w the gradient. mu
 // (Levenberg-Marquardt damping, 0 for Gauss-Newton) is added to the f frontal diagonal entries
-// as the first round reads them. H: all zero on entry, the buffer the trailing matrix goes
-// through between rounds (with Tb inside cpe_step), left all zero: every word a later round
-// reads it clears.
+// as the first round reads them. H: the buffer the trailing matrix goes through between rounds
+// (with Tb inside cpe_step); a round reads only the words the copy back wrote into it. With
+// CFG::STREAM_WORDS = 1 every word a later round reads it clears (H all zero on entry stays so); with
+// STREAM_WORDS = 2 the feed reads two words a cycle and clears none (the array's two ports).
 //
 // Out:
 // - cond[c0 + i * (w + 1) + c], i < f, c >= i: the conditional, row i of the factor as the pivot
@@ -53,6 +54,10 @@
 // / sqrt(d): equal to rounding (~1e-15 relative in double), not bit for bit.
 //
 // ---- structure (UG1399 canonical dataflow) -------------------------------------------------
+//
+// The stream between the processes carries CFG::STREAM_WORDS words of a row a cycle (cpe_vec: 1, or 2 -
+// the pair of a row's words the assembly streams each cycle, so a step's words take half the
+// cycles; each CPE then updates both words of a pair, 2 STREAM_WORDS multipliers and STREAM_WORDS adders).
 //
 // Round r (pivots p0 = r N_CPE ... min(f, p0 + N_CPE) - 1) is one DATAFLOW region, cpe_round; the
 // rounds are a sequential loop in cpe_step around the region's one call site (two call sites
@@ -88,12 +93,13 @@
 //
 // ---- cycles -------------------------------------------------------------------------------
 //
-// A round streams m (m + 1) / 2 + m words, m = w - p0, + the status word; every process is one
-// pipelined loop of them at II 1, so the round takes its words plus the depth every process adds
-// to the stream (plan.py's cpe_round_depth): the feed La + 2, a tap 2, a CPE with a pivot
-// 2 Lm + La + 2 plus its wait for r, max(0, Ld - (w + 1 - p)) (0 when its row is at least Ld
-// words long), an idle tap or CPE 1 each, the drain 2 (La / Lm / Ld = CFG::ADD_LAT / MUL_LAT /
-// DIV_LAT). Paper B's CPE (sqrt, then divide, then its row scaled, then the update: Ls + Ld +
+// A round streams m (m + 1) / 2 + m words, m = w - p0 (STREAM_WORDS = 2: floor((m + 2)^2 / 4) - 1
+// pairs, cpe_vecs), + the status word; every process is one pipelined loop of them at II 1, so
+// the round takes its words plus the depth every process adds to the stream
+// (units/cholesky.py's cpe_round_depth): the feed La + 2, a tap 2, a CPE with a pivot
+// 2 Lm + La + 2 plus its wait for r, max(0, Ld - its row's stream words) (0 when its row is at
+// least Ld stream words long), an idle tap or CPE 1 each, the drain 2 (La / Lm / Ld =
+// CFG::ADD_LAT / MUL_LAT / DIV_LAT). Paper B's CPE (sqrt, then divide, then its row scaled, then the update: Ls + Ld +
 // Lm + La a CPE) stalled the stream on every pivot; here a pivot costs the stream 2 Lm + La + 4.
 // Each loop reports trip, II and depth to FGC_CYCLES (fgc_cycles.h); tests/hls/test_hls_units.py
 // checks the plan's cpe_step_loops against the count.
@@ -113,6 +119,7 @@ struct cpe_config_example {
     static const int MAX_COLS = MAX_W + 1;   // + the gradient
     static const int MAX_F = 6;              // frontal columns
     static const int N_CPE = 5;              // Cholesky process elements (--cpe)
+    static const int STREAM_WORDS = 1;       // words a cycle through the cascade (1 or 2)
     static const int N_COND = 512, N_NF = 512;  // the kernel's COND and NF
     static const int PARTIALS = 12;          // partial sums of cond_backsub's dots (>= ADD_LAT)
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;  // float64 (plan)
@@ -128,6 +135,58 @@ inline T cpe_abs(T x) {
 inline int cpe_words(int first, int w) {
     const int m = w - first;
     return m > 0 ? m * (m + 1) / 2 + m : 0;
+}
+
+// The cascade's stream word: L consecutive words of one row, the vector j of row i holding
+// columns i + L j ... i + L j + L - 1 (a row of w + 1 - i words in ceil((w + 1 - i) / L) vectors;
+// a lane past column w carries a word nobody reads). L = CFG::STREAM_WORDS: 1, or 2 (a cpe_pair of the
+// assembly's stream is then one vector, and every process of the round handles two words a
+// cycle).
+template <class T, int L>
+struct cpe_vec;
+
+template <class T>
+struct cpe_vec<T, 1> {
+    T lo;
+};
+
+template <class T>
+struct cpe_vec<T, 2> {
+    T lo, hi;
+};
+
+// Word l of a vector (l a constant once the lanes' loop is unrolled).
+template <class T>
+inline T cpe_get(const cpe_vec<T, 1>& x, int) {
+    return x.lo;
+}
+
+template <class T>
+inline T cpe_get(const cpe_vec<T, 2>& x, int l) {
+    return l == 0 ? x.lo : x.hi;
+}
+
+template <class T>
+inline void cpe_set(cpe_vec<T, 1>& x, int, T y) {
+    x.lo = y;
+}
+
+template <class T>
+inline void cpe_set(cpe_vec<T, 2>& x, int l, T y) {
+    if (l == 0) {
+        x.lo = y;
+    } else {
+        x.hi = y;
+    }
+}
+
+// Vectors of rows first ... w - 1 at L words a vector: the words (L = 1), or the sum of
+// ceil(k / 2) over k = 2 ... m + 1 (m = w - first), floor((m + 2)^2 / 4) - 1 (L = 2).
+template <int L>
+inline int cpe_vecs(int first, int w) {
+    const int m = w - first;
+    if (m <= 0) return 0;
+    return L == 1 ? m * (m + 1) / 2 + m : (m + 2) * (m + 2) / 4 - 1;
 }
 
 // Round 0's input: a step's words in the feed's order, two a word of the stream (the assembly
@@ -146,139 +205,170 @@ inline int cpe_pairs(int w) { return (w + 2) * (w + 2) / 4 - 1; }
 // it, and the CPE needs it after the pivot's row (row words w + 1 - p).
 template <class CFG>
 inline int cpe_wait(int p, int w) {
-    const int row = w + 1 - p;
+    const int row = (w + 1 - p + CFG::STREAM_WORDS - 1) / CFG::STREAM_WORDS;  // the row's vectors
     return CFG::DIV_LAT > row ? CFG::DIV_LAT - row : 0;
 }
 
 // Stream rows p0 ... w - 1 (upper triangle and gradient; dmu added on the diagonal of rows
-// i < f), then the status word: round 0 (first, p0 = 0) reads them from src, the pairs the
-// assembly streams in this order (fgc_eliminate.h's cholesky_assembler), a pair at a row's
-// even offsets; a later round reads them from Hin, the rows the round before left, clearing
-// each word read.
+// i < f), then the status word, L = CFG::STREAM_WORDS words a vector: round 0 (first, p0 = 0) reads
+// them from src, the pairs the assembly streams in this order (fgc_eliminate.h's
+// cholesky_assembler), a pair at a row's even offsets (L = 1: a word of it a cycle; L = 2: the
+// pair is the vector); a later round reads them from Hin, the rows the round before left
+// (L = 1: clearing each word read; L = 2: two words a cycle, not cleared - the array's two
+// ports - which the round after reads only where the copy back wrote).
 template <class CFG>
 void cpe_feed(hls::stream<cpe_pair<typename CFG::T> >& src, bool first,
               typename CFG::T Hin[CFG::MAX_W][CFG::MAX_COLS], int p0, int w, int f,
-              typename CFG::T dmu, hls::stream<typename CFG::T>& out) {
+              typename CFG::T dmu, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& out) {
     typedef typename CFG::T T;
-    enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
-    const int words = cpe_words(p0, w);
-    int i = p0, c = p0;
+    enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
+    const int vecs = cpe_vecs<L>(p0, w);
+    int i = p0, c = p0;  // the vector's first word
     cpe_pair<T> pair = {T(0), T(0)};
-    // trip m (m + 1) / 2 + m, II 1, depth La + 2 (read, add, write); a word of Hin read then
-    // cleared (one read and one write a cycle: the two ports), a word no other iteration touches
-    for (int t = 0; t < words; ++t) {
+    // trip the round's vectors, II 1, depth La + 2 (read, add, write); L = 1: a word of Hin
+    // read then cleared (one read and one write a cycle: the two ports), a word no other
+    // iteration touches; L = 2: two words of Hin read
+    for (int t = 0; t < vecs; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=Hin inter false
-        T x;
-        if (first) {
-            const bool even = ((c - i) & 1) == 0;
-            if (even) pair = src.read();
-            x = even ? pair.lo : pair.hi;
+        cpe_vec<T, L> x;
+        if (CFG::STREAM_WORDS == 1) {
+            if (first) {
+                const bool even = ((c - i) & 1) == 0;
+                if (even) pair = src.read();
+                cpe_set(x, 0, even ? pair.lo : pair.hi);
+            } else {
+                cpe_set(x, 0, Hin[i][c]);
+                Hin[i][c] = T(0);
+            }
         } else {
-            x = Hin[i][c];
-            Hin[i][c] = T(0);
+            if (first) {
+                pair = src.read();
+                cpe_set(x, 0, pair.lo);
+                cpe_set(x, L - 1, pair.hi);
+            } else {
+                cpe_set(x, 0, Hin[i][c]);
+                cpe_set(x, L - 1, Hin[i][c + 1 <= w ? c + 1 : c]);
+            }
         }
-        out.write(x + (c == i && i < f ? dmu : T(0)));
-        if (c == w) {
+        cpe_set(x, 0, cpe_get(x, 0) + (c == i && i < f ? dmu : T(0)));  // a first word: a diagonal
+        out.write(x);
+        if (c + L > w) {
             ++i;
             c = i;
         } else {
-            ++c;
+            c += L;
         }
     }
-    out.write(T(0));  // status: nothing wrong upstream
-    FGC_CYCLES("cpe_feed", 0, "rows", words + 1, 1, CFG::ADD_LAT + 2);
+    cpe_vec<T, L> status;
+    for (int l = 0; l < CFG::STREAM_WORDS; ++l) cpe_set(status, l, T(0));
+    out.write(status);  // status: nothing wrong upstream
+    FGC_CYCLES("cpe_feed", 0, "rows", vecs + 1, 1, CFG::ADD_LAT + 2);
 }
 
 // Tap K: the stream on to CPE K, and 1 / (its pivot) beside it.
 template <class CFG, int K>
-void cpe_tap(int p0, int w, int f, hls::stream<typename CFG::T>& in,
-             hls::stream<typename CFG::T>& out, hls::stream<typename CFG::T>& recip) {
+void cpe_tap(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in,
+             hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& out,
+             hls::stream<typename CFG::T>& recip) {
     typedef typename CFG::T T;
-    enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
+    enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int p = p0 + K;
-    const int words = cpe_words(p0, w);
-    const int at = p < f ? words - cpe_words(p, w) : -1;  // the pivot's word, -1: no pivot
-    // trip words + 1, II 1; the words pass in 2 cycles (read, write), r leaves Ld + 2 cycles
+    const int vecs = cpe_vecs<L>(p0, w);
+    const int at = p < f ? vecs - cpe_vecs<L>(p, w) : -1;  // the pivot's vector, -1: no pivot
+    // trip vecs + 1, II 1; the vectors pass in 2 cycles (read, write), r leaves Ld + 2 cycles
     // after the pivot (the divide's latency, beside the stream)
-    for (int t = 0; t <= words; ++t) {
+    for (int t = 0; t <= vecs; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
-        const T x = in.read();
+        const cpe_vec<T, L> x = in.read();
         out.write(x);
-        if (t == at) recip.write(T(1) / x);
+        if (t == at) recip.write(T(1) / cpe_get(x, 0));
     }
-    FGC_CYCLES("cpe_tap", K, at < 0 ? "pass" : "stream", words + 1, 1, at < 0 ? 1 : 2);
+    FGC_CYCLES("cpe_tap", K, at < 0 ? "pass" : "stream", vecs + 1, 1, at < 0 ? 1 : 2);
 }
 
 // CPE K of the cascade for the round starting at pivot p0.
 template <class CFG, int K>
-void cpe(int p0, int w, int f, hls::stream<typename CFG::T>& in,
-         hls::stream<typename CFG::T>& recip, hls::stream<typename CFG::T>& out) {
+void cpe(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in,
+         hls::stream<typename CFG::T>& recip,
+         hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& out) {
     typedef typename CFG::T T;
-    enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
+    enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int p = p0 + K;
-    const int words = cpe_words(p0, w);
-    if (p >= f) {  // no pivot in this round: pass every word and the status
-        // trip words + 1, II 1, depth 1
-        for (int t = 0; t <= words; ++t) {
+    const int vecs = cpe_vecs<L>(p0, w);
+    if (p >= f) {  // no pivot in this round: pass every vector and the status
+        // trip vecs + 1, II 1, depth 1
+        for (int t = 0; t <= vecs; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
             out.write(in.read());
         }
-        FGC_CYCLES("cpe", K, "pass", words + 1, 1, 1);
+        FGC_CYCLES("cpe", K, "pass", vecs + 1, 1, 1);
         return;
     }
-    const int before = words - cpe_words(p, w);  // rows p0 ... p - 1 pass
-    const int row = w + 1 - p;                   // then the pivot's row, kept as h
-    const int trail = before + row;              // then the later rows, Updated
-    T h[CFG::MAX_COLS];  // row p, h[c - p]
+    const int before = vecs - cpe_vecs<L>(p, w);  // rows p0 ... p - 1 pass
+    const int row = (w + 1 - p + L - 1) / L;       // then the pivot's row, kept as h
+    const int trail = before + row;                // then the later rows, Updated
+    T h[CFG::MAX_COLS + L];  // row p, h[c - p] (L = 2: one word past the row, never used)
 #pragma HLS ARRAY_PARTITION variable=h complete
+    if (CFG::STREAM_WORDS > 1) {
+        for (int k = 0; k < CFG::MAX_COLS + L; ++k) {
+#pragma HLS UNROLL
+            h[k] = T(0);
+        }
+    }
     T r = T(0);
     bool bad = false;
-    int i = p + 1, c = p + 1;  // the word's place once t >= trail
-    // trip words + 1, II 1, depth 2 Lm + La + 2 (+ the wait for r: cpe_wait). h carries no
+    int i = p + 1, c = p + 1;  // the vector's first word once t >= trail
+    // trip vecs + 1, II 1, depth 2 Lm + La + 2 (+ the wait for r: cpe_wait). h carries no
     // recurrence: what is written into it is the input word, never a function of h, and h[k]
-    // (written at word before + k, a register: h is partitioned) is first read w - p >= 2
-    // words later (row p + 1's entry in column p + k), so no iteration reads what the one
-    // before it writes
-    for (int t = 0; t <= words; ++t) {
+    // (written at vector before + k / L, a register: h is partitioned) is first read a vector
+    // of row p + 1 later (w - p >= 2 words, at least a vector), so no iteration reads what the
+    // one before it writes. L lanes: h[c - p + l] times r, times h[i - p], subtracted from the
+    // vector's word l (2 L multipliers and L adders)
+    for (int t = 0; t <= vecs; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=h inter false
-        const T x = in.read();
-        if (t >= before && t < trail) h[t - before] = x;
-        if (t == before) bad = !(x > T(0));
-        if (t == trail) r = recip.read();  // the status word when row p is the last
-        const bool upd = t >= trail && t < words;
-        const int hi = upd ? i - p : 0, hc = upd ? c - p : 0;
-        const T y = h[hc] * r;
-        const T z = upd ? h[hi] * y : T(0);
-        const T o = x - z;  // a word that passes: x - 0 = x
-        if (t < words) {
-            out.write(o);
-        } else {
-            out.write(bad || x != T(0) ? T(1) : T(0));  // the status
+        const cpe_vec<T, L> x = in.read();
+        if (t >= before && t < trail) {
+            for (int l = 0; l < CFG::STREAM_WORDS; ++l) h[(t - before) * L + l] = cpe_get(x, l);
         }
+        if (t == before) bad = !(cpe_get(x, 0) > T(0));
+        if (t == trail) r = recip.read();  // the status word when row p is the last
+        const bool upd = t >= trail && t < vecs;
+        const int hi = upd ? i - p : 0, hc = upd ? c - p : 0;
+        cpe_vec<T, L> o;
+        for (int l = 0; l < CFG::STREAM_WORDS; ++l) {
+            const T y = h[hc + l] * r;
+            const T z = upd ? h[hi] * y : T(0);
+            cpe_set(o, l, cpe_get(x, l) - z);  // a word that passes: x - 0 = x
+        }
+        if (t == vecs) {  // the status
+            cpe_set(o, 0, bad || cpe_get(x, 0) != T(0) ? T(1) : T(0));
+        }
+        out.write(o);
         if (upd) {
-            if (c == w) {
+            if (c + L > w) {
                 ++i;
                 c = i;
             } else {
-                ++c;
+                c += L;
             }
         }
     }
-    FGC_CYCLES("cpe", K, "stream", words + 1, 1,
+    FGC_CYCLES("cpe", K, "stream", vecs + 1, 1,
                2 * CFG::MUL_LAT + CFG::ADD_LAT + 2 + cpe_wait<CFG>(p, w));
 }
 
 // The N_CPE taps and CPEs, K = 0 ... N_CPE - 1, as separate calls in the region.
 template <class CFG, int K, bool END = (K == CFG::N_CPE)>
 struct cpe_cascade {
-    static void run(int p0, int w, int f, hls::stream<typename CFG::T> link[CFG::N_CPE + 1],
-                    hls::stream<typename CFG::T> tapped[CFG::N_CPE],
+    typedef cpe_vec<typename CFG::T, CFG::STREAM_WORDS> V;
+    static void run(int p0, int w, int f, hls::stream<V> link[CFG::N_CPE + 1],
+                    hls::stream<V> tapped[CFG::N_CPE],
                     hls::stream<typename CFG::T> recip[CFG::N_CPE]) {
 #pragma HLS INLINE
         cpe_tap<CFG, K>(p0, w, f, link[K], tapped[K], recip[K]);
@@ -289,7 +379,8 @@ struct cpe_cascade {
 
 template <class CFG, int K>
 struct cpe_cascade<CFG, K, true> {
-    static void run(int, int, int, hls::stream<typename CFG::T>*, hls::stream<typename CFG::T>*,
+    typedef cpe_vec<typename CFG::T, CFG::STREAM_WORDS> V;
+    static void run(int, int, int, hls::stream<V>*, hls::stream<V>*,
                     hls::stream<typename CFG::T>*) {
 #pragma HLS INLINE
     }
@@ -297,46 +388,53 @@ struct cpe_cascade<CFG, K, true> {
 
 // Write the round's words out: the rows of its pivots into cond (each row's pivot into dpiv and
 // its largest frontal |h| into rmax), the trailing rows into update (last round) or Hout; the
-// status into *bad.
+// status into *bad. L words a cycle (the arrays' two ports at L = 2).
 template <class CFG>
-void cpe_drain(hls::stream<typename CFG::T>& in, int p0, int w, int f,
+void cpe_drain(hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in, int p0, int w, int f,
                typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T cond[CFG::N_COND], int c0,
                typename CFG::T update[CFG::N_NF], int u0,
                typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F], bool* bad) {
     typedef typename CFG::T T;
-    enum { MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
-    const int words = cpe_words(p0, w);
+    enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
+    const int vecs = cpe_vecs<L>(p0, w);
     const int cols = w + 1, s = w - f;
     const int done = p0 + CFG::N_CPE < f ? p0 + CFG::N_CPE : f;  // rows p0 ... done - 1 are final
     const bool last = done == f;
     T big = T(0);
     int i = p0, c = p0;
-    // trip m (m + 1) / 2 + m (+ the status word), II 1, depth 2 (read, write)
-    for (int t = 0; t < words; ++t) {
+    // trip the round's vectors (+ the status), II 1, depth 2 (read, write)
+    for (int t = 0; t < vecs; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
-        const T x = in.read();
-        if (i < done) {
-            cond[c0 + i * cols + c] = x;
-            const T mag = c < f ? cpe_abs(x) : T(0);
-            big = c == i || mag > big ? mag : big;  // the row's largest so far
-            if (c == i) dpiv[i] = x;
-            if (c == w) rmax[i] = big;
-        } else if (last) {
-            update[u0 + (i - f) * (s + 1) + (c - f)] = x;
-        } else {
-            Hout[i][c] = x;
+        const cpe_vec<T, L> x = in.read();
+        T b = c == i ? T(0) : big;  // the row's largest so far
+        for (int l = 0; l < CFG::STREAM_WORDS; ++l) {
+            const int cc = c + l;
+            if (cc <= w) {
+                if (i < done) {
+                    cond[c0 + i * cols + cc] = cpe_get(x, l);
+                    const T mag = cc < f ? cpe_abs(cpe_get(x, l)) : T(0);
+                    b = (l == 0 && c == i) || mag > b ? mag : b;
+                } else if (last) {
+                    update[u0 + (i - f) * (s + 1) + (cc - f)] = cpe_get(x, l);
+                } else {
+                    Hout[i][cc] = cpe_get(x, l);
+                }
+            }
         }
-        if (c == w) {
+        big = b;
+        if (i < done && c == i) dpiv[i] = cpe_get(x, 0);
+        if (c + L > w) {
+            if (i < done) rmax[i] = b;
             ++i;
             c = i;
         } else {
-            ++c;
+            c += L;
         }
     }
-    *bad = in.read() != T(0);
-    FGC_CYCLES("cpe_drain", 0, "rows", words + 1, 1, 2);
+    *bad = cpe_get(in.read(), 0) != T(0);
+    FGC_CYCLES("cpe_drain", 0, "rows", vecs + 1, 1, 2);
 }
 
 // One round of N_CPE pivots from p0: the DATAFLOW region (see the top of the file).
@@ -349,8 +447,8 @@ void cpe_round(hls::stream<cpe_pair<typename CFG::T> >& src, bool first, int p0,
                bool* bad) {
 #pragma HLS DATAFLOW
     enum { LINK_DEPTH = CFG::MAX_W, TAP_DEPTH = CFG::MAX_COLS + CFG::DIV_LAT + 2 };
-    hls::stream<typename CFG::T> link[CFG::N_CPE + 1];
-    hls::stream<typename CFG::T> tapped[CFG::N_CPE];
+    hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > link[CFG::N_CPE + 1];
+    hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > tapped[CFG::N_CPE];
     hls::stream<typename CFG::T> recip[CFG::N_CPE];
 #pragma HLS STREAM variable=link depth=LINK_DEPTH
 #pragma HLS STREAM variable=tapped depth=TAP_DEPTH

@@ -44,7 +44,9 @@
 // matrix-vector product's), MAX_NEW and TRIP_BATCH_X (trip counts), and the hooks
 // lm_solve(errors, info), linearize() (INLINE: the window at X), leaf_step() (slot 0's step
 // once more at mu = 0), at_linearisation(info) (LM stopped where it last linearised: AB holds
-// the rows at X) and batch_solve(...) (the batch kernel's entry); kept:
+// the rows at X), ONE_STEP and took_step(info) (the one-step policy, one Gauss-Newton step an
+// update: the update took its step, so its solve's COND / NF, at mu = 0 at the call's starting
+// X, are the store) and batch_solve(...) (the batch kernel's entry); kept:
 // KF_FLAT_S (per tangent direction of a keyframe its storage word if its variable is a vector)
 // and the kernel's T_ADD_LAT. Cycles to FGC_CYCLES as the plan prices them.
 #ifndef FGC_STREAM_H
@@ -127,10 +129,12 @@ void stream_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
 
 #ifdef FGC_STREAM_MARGINAL
 // tau from the rows [A | b] (KF_T x (KF_T + 1), upper triangular) a step passes to slot 1: signed to
-// a positive diagonal, its mean A^-1 b by back-substitution, written with slot 1's estimate as its
-// linearisation point into slot 1's prior. False, nothing written, if it is singular.
+// a positive diagonal, its mean A^-1 b by back-substitution, written with its linearisation point
+// (slot 1's estimate, or `lin` where `given`: the one-step policy's, where the update
+// linearised it) into slot 1's prior. False, nothing written, if it is singular.
 template <class CFG>
-bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)]) {
+bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM_KF_X],
+               bool given) {
     FGC_PHASE("marginal");
     L a[STREAM_KF_T][STREAM_KF_T + 1];
     L largest = L(1), smallest = L(0);
@@ -161,7 +165,7 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)]) {
     FGC_CYCLES("marginal", 0, "divide", STREAM_KF_T, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-        DATA_BUF[STREAM_PRIOR1 + k] = X[SLOT_X[STREAM_KF_X + k]];
+        DATA_BUF[STREAM_PRIOR1 + k] = given ? lin[k] : X[SLOT_X[STREAM_KF_X + k]];
     }
     for (int i = 0; i < STREAM_KF_T; ++i) {
 #pragma HLS PIPELINE II=1
@@ -186,12 +190,14 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)]) {
 // slot 1's prior (which the next call's shift moves to slot 0). False, nothing written, if the
 // window is not finite at its optimum (`finite` false), slot 0 is rank deficient or tau is
 // singular. The window's rows (AB) are its linearisation at X, the optimum: stream_call
-// computed them again before the region if LM moved after its last linearisation.
+// computed them again before the region if LM moved after its last linearisation. `reuse` (the
+// one-step policy, the step taken): slot 0's step of the update's own solve is the store (its
+// NF at mu = 0, at the call's start lin01: slots 0 and 1), no step is run again.
 template <class CFG>
-bool marginalize(bool finite) {
+bool marginalize(bool finite, bool reuse, const T lin01[2 * STREAM_KF_X]) {
     FGC_EVENT("marginal");
     if (!finite) return false;
-    if (!CFG::leaf_step()) return false;
+    if (!reuse && !CFG::leaf_step()) return false;
     FGC_PHASE("marginal");
     const int n0 = STEP_NF_OFF[STREAM_LEAF_STEP];
     L rows[STREAM_KF_T * (STREAM_KF_T + 1)];
@@ -200,7 +206,7 @@ bool marginalize(bool finite) {
         rows[e] = NF[n0 + e];
     }
     FGC_CYCLES("marginal", 0, "rows", STREAM_KF_T * (STREAM_KF_T + 1), CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    return write_tau<CFG>(rows);
+    return write_tau<CFG>(rows, lin01 + STREAM_KF_X, reuse);
 }
 #endif  // FGC_STREAM_MARGINAL
 
@@ -283,21 +289,24 @@ void reexpress(int c, const T x[STREAM_KF_X]) {
         KEPT_D[c * STREAM_KF_T + i] -= shift[i];
     }
     FGC_CYCLES("kept", 0, "d_update", STREAM_KF_T, CFG::L_SCATTER_II, CFG::L_SCATTER_DEPTH);
-    // S J column by column into snew (every column reads the whole of S): a direction q of a
-    // variable that is not a vector, sum_k S[:, k] J[k][q] with k outer and the rows inner, one
-    // product a cycle (each entry summed in k order from 0, as a dot product adds it); a
-    // vector variable's, J[q][q] S[:, q] (its column of J is zero but there: the same sum)
+    // S J column by column into snew: a direction q of a variable that is not a vector,
+    // sum_k S[:, k] J[k][q] over its variable's directions k (KF_BLOCK_T, KF_BLOCK_DIM: J is
+    // block-diagonal by variable, the other entries of its column exactly zero) with k outer and
+    // the rows inner, one product a cycle (each entry summed in k order, as a dot product adds
+    // it); a vector variable's, J[q][q] S[:, q] (its column of J is zero but there: the same sum)
     L snew[STREAM_KF_T][STREAM_KF_T];
     for (int q = 0; q < STREAM_KF_T; ++q) {
         if (KF_FLAT_S[q] < 0) {
-            for (int e = 0; e < STREAM_KF_T * STREAM_KF_T; ++e) {
+            const int k0 = KF_BLOCK_T[q], kn = KF_BLOCK_DIM[q];
+            for (int e = 0; e < kn * STREAM_KF_T; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T*STREAM_KF_T
 #pragma HLS PIPELINE II=CFG::MV_II
 #pragma HLS DEPENDENCE variable=snew inter false
-                const int k = e / STREAM_KF_T, r = e % STREAM_KF_T;
-                const L prev = k == 0 ? L(0) : snew[r][q];
+                const int k = k0 + e / STREAM_KF_T, r = e % STREAM_KF_T;
+                const L prev = k == k0 ? L(0) : snew[r][q];
                 snew[r][q] = prev + jt[q][k] * KEPT_S[(c * STREAM_KF_T + r) * STREAM_KF_T + k];
             }
-            FGC_CYCLES("kept", 0, "sj_column", STREAM_KF_T * STREAM_KF_T, CFG::MV_II, CFG::L_ACC_DEPTH);
+            FGC_CYCLES("kept", 0, "sj_column", kn * STREAM_KF_T, CFG::MV_II, CFG::L_ACC_DEPTH);
         } else {
             for (int r = 0; r < STREAM_KF_T; ++r) {
 #pragma HLS PIPELINE II=1
@@ -319,14 +328,22 @@ void reexpress(int c, const T x[STREAM_KF_X]) {
 }
 
 // A conditional (R | S | d, row-major KF_T x (2 KF_T + 1): a QR unit's COND block) stored as
-// kept keyframe c's, a word a cycle.
+// kept keyframe c's, each row scaled by its pivot's reciprocal on the way (R unit-diagonal: the
+// walk's back-substitution divides by nothing; the re-expression's S J and d - S Log act on rows
+// alike), a word a cycle.
 template <class CFG>
 void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) {
     const int cols = 2 * STREAM_KF_T + 1;
+    L rinv[STREAM_KF_T];
+    for (int i = 0; i < STREAM_KF_T; ++i) {
+#pragma HLS PIPELINE II=CFG::L_DIV_II
+        rinv[i] = L(1) / cond[i * cols + i];
+    }
+    FGC_CYCLES("kept", 0, "reciprocal", STREAM_KF_T, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
     for (int e = 0; e < STREAM_KF_T * (2 * STREAM_KF_T + 1); ++e) {
 #pragma HLS PIPELINE II=1
         const int i = e / cols, k = e % cols;
-        const L v = cond[e];
+        const L v = cond[e] * rinv[i];
         if (k < STREAM_KF_T) {
             KEPT_R[(c * STREAM_KF_T + i) * STREAM_KF_T + k] = v;
         } else if (k < 2 * STREAM_KF_T) {
@@ -335,26 +352,27 @@ void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) 
             KEPT_D[c * STREAM_KF_T + i] = v;
         }
     }
-    FGC_CYCLES("kept", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    FGC_CYCLES("kept", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH + L_MUL_LAT);
 }
 
 // Slot 0's conditional (COND of its step: R | S | d, row-major f x (w + 1)) kept as keyframe c's,
-// linearised at slot 0's estimate with its parent at slot 1's; a word a cycle.
+// linearised at slot 0's estimate with its parent at slot 1's (`reuse`: at lin01, where the
+// one-step update linearised them); a word a cycle.
 template <class CFG>
-void keep(int c) {
+void keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
     FGC_PHASE("kept");
     kept_conditional<CFG>(c, COND + STEP_COND_OFF[STREAM_LEAF_STEP]);
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-        KEPT_LIN[c * STREAM_KF_X + k] = X[SLOT_X[k]];
-        KEPT_NEXT[c * STREAM_KF_X + k] = X[SLOT_X[STREAM_KF_X + k]];
+        KEPT_LIN[c * STREAM_KF_X + k] = reuse ? lin01[k] : X[SLOT_X[k]];
+        KEPT_NEXT[c * STREAM_KF_X + k] = reuse ? lin01[STREAM_KF_X + k] : X[SLOT_X[STREAM_KF_X + k]];
     }
     FGC_CYCLES("kept", 0, "points", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 }
 
 // Back-substitution through the kept conditionals c = first - 1 ... 0 from the window's slot 0
 // (keyframe first, x0: its estimate copied out of X):
-// x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
+// x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)), R_c unit-diagonal (rows scaled as kept).
 template <class CFG>
 void kept_walk(int first, const T x0[STREAM_KF_X]) {
 #pragma HLS INLINE
@@ -377,10 +395,9 @@ void kept_walk(int first, const T x0[STREAM_KF_X]) {
             delta[i] = KEPT_D[c * STREAM_KF_T + i] - row[i];
         }
         FGC_CYCLES("kept", 0, "rhs", STREAM_KF_T, CFG::L_SCATTER_II, CFG::L_SCATTER_DEPTH);
-        // R_c upper triangular, column by column: delta_i final, then taken off the rows above it
+        // R_c upper triangular with a unit diagonal (kept_conditional scaled its rows), column
+        // by column: delta_i final, then taken off the rows above it
         for (int i = STREAM_KF_T - 1; i >= 0; --i) {
-            delta[i] = delta[i] / KEPT_R[(c * STREAM_KF_T + i) * STREAM_KF_T + i];
-            FGC_CYCLES("kept", 0, "divide", 1, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
             // (delta[r], r < i, each updated once from delta[i], which this loop never writes)
             for (int r = 0; r < i; ++r) {
 #pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T
@@ -404,6 +421,20 @@ void kept_walk(int first, const T x0[STREAM_KF_X]) {
 #endif  // FGC_STREAM_KEPT
 
 #ifdef FGC_STREAM_BATCH
+// The kept conditionals' points after a batch step at keyframe j: keyframes 0 … j - W's
+// linearisation points and their parents' (BATCH_X: the batch step's optimum, or under the
+// one-step policy its start).
+template <class CFG>
+void batch_points(int j) {
+    for (int e = 0; e < (j - STREAM_W + 1) * STREAM_KF_X; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BATCH_X
+#pragma HLS PIPELINE II=1
+        KEPT_LIN[e] = BATCH_X[e];
+        KEPT_NEXT[e] = BATCH_X[e + STREAM_KF_X];
+    }
+    FGC_CYCLES("batch", 0, "points", (j - STREAM_W + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
 // A batch step at keyframe j: keyframes 0 … j (the kept ones, then the window's) re-solved by the
 // batch kernel; their optimum back, and (once the window is full) the kept net rebuilt from its
 // conditionals, keyframes 0 … j - W, and tau written for the next window's oldest. Returns the
@@ -418,6 +449,17 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
         BATCH_X[e] = c < first ? X_KEPT[e] : X[SLOT_X[(c - first) * STREAM_KF_X + k]];
     }
     FGC_CYCLES("batch", 0, "gather", (j + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    // the one-step policy: the kept conditionals and tau are linearised where the batch kernel's
+    // one step linearised the chain, these estimates (kept points and tau's point taken here;
+    // tau's, a keyframe's words, whatever the policy)
+    if (CFG::ONE_STEP && j >= STREAM_W) batch_points<CFG>(j);
+    T tau_lin[STREAM_KF_X];
+    const int tau_kf = j >= STREAM_W ? j - STREAM_W + 1 : 0;
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        tau_lin[k] = BATCH_X[tau_kf * STREAM_KF_X + k];
+    }
+    FGC_CYCLES("batch", 0, "tau_lin", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     int binfo[4];
     CFG::batch_solve(j, j >= STREAM_W ? j - STREAM_W : -1, BATCH_X, BATCH_COND, BATCH_TAU, errors,
                       binfo);
@@ -440,15 +482,9 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
 #pragma HLS LOOP_TRIPCOUNT max=BATCH_SLOTS
         kept_conditional<CFG>(c, BATCH_COND + c * words);
     }
-    for (int e = 0; e < (j - STREAM_W + 1) * STREAM_KF_X; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BATCH_X
-#pragma HLS PIPELINE II=1
-        KEPT_LIN[e] = BATCH_X[e];
-        KEPT_NEXT[e] = BATCH_X[e + STREAM_KF_X];
-    }
-    FGC_CYCLES("batch", 0, "points", (j - STREAM_W + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    if (!CFG::ONE_STEP) batch_points<CFG>(j);
     if (!binfo[3]) return 2;
-    return write_tau<CFG>(BATCH_TAU) ? 1 : 2;
+    return write_tau<CFG>(BATCH_TAU, tau_lin, CFG::ONE_STEP) ? 1 : 2;
 }
 #endif  // FGC_STREAM_BATCH
 
@@ -464,13 +500,15 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
 // A design without one of the two runs that process empty (each function has one call site
 // whatever the parts: the second reader reads every preprocessor branch).
 template <class CFG>
-void marginal_task(int m, bool finite, int code[1]) {
+void marginal_task(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X], int code[1]) {
     FGC_TASK();
 #ifdef FGC_STREAM_MARGINAL
-    code[0] = m == STREAM_W ? (marginalize<CFG>(finite) ? 1 : 2) : 0;
+    code[0] = m == STREAM_W ? (marginalize<CFG>(finite, reuse, lin01) ? 1 : 2) : 0;
 #else
     (void)m;
     (void)finite;
+    (void)reuse;
+    (void)lin01;
     code[0] = 0;
 #endif
 }
@@ -493,9 +531,10 @@ void kept_task(int first, const T x0[STREAM_KF_X]) {
 }
 
 template <class CFG>
-void marginal_and_kept(int m, bool finite, int first, const T x0[STREAM_KF_X], int code[1]) {
+void marginal_and_kept(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X], int first,
+                       const T x0[STREAM_KF_X], int code[1]) {
 #pragma HLS DATAFLOW
-    marginal_task<CFG>(m, finite, code);
+    marginal_task<CFG>(m, finite, reuse, lin01, code);
     kept_task<CFG>(first, x0);
 }
 #endif  // FGC_STREAM_WINDOW
@@ -577,13 +616,25 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         marginal = batch_step<CFG>(total, first, errors, info);
     } else {
 #endif
+        // slots 0 and 1 where the update linearises them: under the one-step policy a leaving
+        // keyframe's conditional and tau are kept there once the step is taken (copied whatever
+        // the policy, a word a cycle)
+        T lin01[2 * STREAM_KF_X];
+        FGC_PHASE("marginal");
+        for (int k = 0; k < 2 * STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+            lin01[k] = X[SLOT_X[k]];
+        }
+        FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
         CFG::lm_solve(errors, info);
+        // the one-step update took its step: its solve's factorisation is the store
+        const bool reuse = m == STREAM_W && CFG::took_step(info);
         // the window's rows at its optimum for a leaving keyframe's marginal: AB holds them if
         // LM stopped where it last linearised (CFG::at_linearisation), else computed again here,
         // before the marginal's region, by LM's own linearisation instance
         bool finite = true;  // false: the window is not finite at its optimum
 #ifdef FGC_STREAM_MARGINAL
-        if (m == STREAM_W && !CFG::at_linearisation(info)) {
+        if (m == STREAM_W && !reuse && !CFG::at_linearisation(info)) {
             FGC_EVENT("relinearize");
             finite = CFG::linearize();
         }
@@ -601,11 +652,11 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         const int kept_first = 0;
 #endif
         int code[1] = {0};
-        marginal_and_kept<CFG>(m, finite, kept_first, x0, code);
+        marginal_and_kept<CFG>(m, finite, reuse, lin01, kept_first, x0, code);
         FGC_TASKS_JOIN();
         marginal = code[0];
 #ifdef FGC_STREAM_KEPT
-        if (m == STREAM_W && marginal == 1) keep<CFG>(first);
+        if (m == STREAM_W && marginal == 1) keep<CFG>(first, reuse, lin01);
 #endif
 #ifdef FGC_STREAM_BATCH
     }
@@ -682,13 +733,17 @@ void batch_kernel_solve(int j, int tau_slot, T x_io[STREAM_SLOTS * STREAM_KF_X],
     FGC_CYCLES("batch", 0, "x_in", (j + 1) * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     CFG::lm_solve(errors, info);
     // the chain's rows at the optimum: AB already holds them if LM stopped where it last
-    // linearised (CFG::at_linearisation), else they are computed again
+    // linearised (CFG::at_linearisation), else they are computed again; the one-step policy's
+    // step taken (CFG::took_step): its solve's COND and NF, at mu = 0 at x_io's start, are the
+    // store, nothing is eliminated again
     bool ok = true;
-    if (!CFG::at_linearisation(info)) {
-        FGC_EVENT("relinearize");
-        ok = CFG::linearize();
+    if (!CFG::took_step(info)) {
+        if (!CFG::at_linearisation(info)) {
+            FGC_EVENT("relinearize");
+            ok = CFG::linearize();
+        }
+        ok = ok && CFG::eliminate();
     }
-    ok = ok && CFG::eliminate();
     info[3] = ok ? 1 : 0;
     FGC_PHASE("batch_out");
     for (int e = 0; e < (j + 1) * STREAM_KF_X; ++e) {

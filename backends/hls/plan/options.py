@@ -30,6 +30,8 @@ JACOBIAN_STORAGE = ("whitened", "raw")
 
 HESSIAN_STORAGE = ("frontal", "dense", "blocked")
 
+CASCADE_LANES = (1, 2)  # PlanOptions.cascade_lanes: fgc_cpe.h's STREAM_WORDS
+
 QR_UNITS = ("householder", "stream")  # PlanOptions.qr_unit: fgc_qr.h, fgc_qr_stream.h
 
 
@@ -56,6 +58,14 @@ class PlanOptions:
     # Grams beside the elimination (units/cholesky.py's _beside: linearize_solve), the first
     # solve of a linearisation factored there; False: every linearize_<b> region before it
     hgc_beside: bool = True
+    # back-substitution's width (fgc_backsub.h): 1, cond_load two words a cycle (COND's two
+    # ports) and the triangle one row a cycle; 2, COND cyclic over two banks, cond_load_wide
+    # four words a cycle and the triangle two rows a cycle (units/backsub.py)
+    backsub_lanes: int = 1
+    # Cholesky: the words a cycle through each cascade (fgc_cpe.h's STREAM_WORDS: 1, or 2, the
+    # pair of a row's words the assembly streams a cycle; units/cholesky.py's cpe_step_loops,
+    # each CPE's operators times the lanes)
+    cascade_lanes: int = 1
     # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
     # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and
     # ±1 entries are not stored), the residual and W's parameters, whitened while stacking

@@ -26,7 +26,7 @@ from fgc_backends.cost.structure import entering_blocks, stacked_pattern, step_c
 from fgc_backends.hls.plan.cost import merge_plans, phase_cycles, plan_cost
 from fgc_backends.hls.plan.loops import _assign, _tables, kernel_loop, kernel_timing, plan_sizes
 from fgc_backends.hls.plan.model import Loop, Phase, PlanError, Process, Unit
-from fgc_backends.hls.plan.report import PHASE_TRIGGER, phase_group, plan_groups, unit_sets
+from fgc_backends.hls.plan.report import PHASE_TRIGGER, plan_groups, unit_sets
 from fgc_backends.hls.units.memories import stream_memories
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
 
@@ -116,6 +116,7 @@ KEPT_MATVEC_OPS = (("add", 1), ("mul", 1))  # kept_matvec: + ×
 # (− × ÷ each), d_update (−), sj_column and sj_vector (+ × each); kept_walk's rhs (−) and
 # column (−= ×); the sequential code's + × ÷ (the vector directions' differences, R's divides)
 KEPT_TASK_OPS = (("add", 8), ("mul", 5), ("div", 3))
+KEPT_SCALE_OPS = (("mul", 1), ("div", 1))  # kept_conditional: 1 / R_ii, each word × it
 ARITHMETIC = ("add", "mul", "div")
 
 
@@ -292,20 +293,6 @@ def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf
                                                           unit))).cycles
 
 
-def _solve_groups(plan) -> dict[str, int]:
-    """Per phase group the cycles of one execution (:func:`~fgc_backends.hls.plan.report.
-    plan_groups`), with the phases the plan runs once per call whose event is not the call
-    itself: the cost at X (``factor_cost``, the ``cost`` event: LM's start, through the cost
-    pass beside back-substitution). The call's own copies (``setup``) are the stream section's
-    loops here, not the batch top's."""
-    group = plan_groups(plan)
-    for ph in plan.phases:
-        g = phase_group(ph.name)
-        if ph.per == "call" and PHASE_TRIGGER.get(g, "call") != "call":
-            group[g] = group.get(g, 0) + phase_cycles(ph)
-    return group
-
-
 def _relinearize(ev: dict) -> int:
     """1 if the marginal (or a batch step's store) linearises the window (the chain) at its
     optimum again: LM took a step after its last linearisation (fgc_stream.h); counted, the
@@ -314,6 +301,13 @@ def _relinearize(ev: dict) -> int:
     if relin is None:
         relin = int(ev.get("accept", 0) >= ev.get("linearize", 0))
     return int(relin)
+
+
+def _call_cost(plan) -> int:
+    """The cost pass at X that LM control runs once per solve before its first linearisation
+    (``cost_x``: the plan's per-call ``factor_cost`` phase, the "cost" event), 0 if none."""
+    return sum(phase_cycles(ph) for ph in plan.phases
+               if ph.name == "factor_cost" and ph.per == "call")
 
 
 class WindowUpdateModel:
@@ -339,7 +333,8 @@ class WindowUpdateModel:
                             f"update); --qr-unit {config.design.qr_unit} is not")
         self.plan = plan = accel_plan(t, config)
         self.clock_mhz = plan.clock_mhz
-        self.group = _solve_groups(plan)
+        self.group = plan_groups(plan)
+        self.cost_x = _call_cost(plan)
         self.les = plan.target.ops("float32" if config.linear_cxx == "float" else "float64")
         self._qr = {}
         self.sets = max(1, unit_sets(plan))
@@ -347,11 +342,14 @@ class WindowUpdateModel:
             raise PlanError("internal error: the stream model's QR steps are not the plan's")
         ctx = layout.context(config.linear_cxx, config.part)
         self.layout_marginal = ctx["marginal"]
+        # the one-step policy (SolverConfig.one_step): the step taken, the store is the
+        # update's own factorisation (fgc_stream.h's took_step)
+        self.one_step = t.solver.one_step
         self.batch = None
         if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
             bplan = accel_plan(layout.batch.template, config)
-            self.batch = {"layout": layout.batch, "plan": bplan, "group": _solve_groups(bplan),
-                          "sets": max(1, unit_sets(bplan))}
+            self.batch = {"layout": layout.batch, "plan": bplan, "group": plan_groups(bplan),
+                          "sets": max(1, unit_sets(bplan)), "cost_x": _call_cost(bplan)}
         phases = self._stream_phases(kernel_timing(plan.ops), kernel_timing(self.les),
                                      layout.matvec_ii(config.linear_cxx, config.part))
         self._design = replace(self._merged(), phases=self.plan.phases + phases)
@@ -386,16 +384,24 @@ class WindowUpdateModel:
             curved = sum(1 for w in lay.vector_words() if w < 0)
             vector_diff = Loop("vector_difference", n, 1, kt["div"][1] + 3 * kt["acc"][0],
                                n - curved)
+            # a conditional kept: its pivots' reciprocals, then its rows scaled as they are
+            # copied (kept_conditional; R unit-diagonal, so the walk divides by nothing)
+            lmul = lt["acc"][1] - lt["acc"][0]
+            keep_one = (kernel_loop("reciprocal", n, "div", lt),
+                        Loop("cond", n * (2 * n + 1), kt["move"][0], kt["move"][1] + lmul))
             out += [_stream_phase("kept_slot0", move("x", kf)),
                     _stream_phase("kept_reexpress", one, replace(one, repeat=4 * curved),
                                   Loop("difference", n, 1, kt["div"][1], curved), vector_diff,
                                   matvec, scatter,
-                                  replace(matvec, name="sj_column", repeat=curved),
+                                  # per direction of a curved variable: its variable's
+                                  # directions times the rows (J block-diagonal by variable)
+                                  *(Loop("sj_column", dim * n, mv_ii, lt["acc"][1])
+                                    for w, dim in zip(lay.vector_words(), lay.block_dims(),
+                                                      strict=True) if w < 0),
                                   Loop("sj_vector", n, 1, lt["acc"][1], n - curved),
                                   move("s_out", n * n), move("x", kf)),
-                    _stream_phase("kept_store", move("cond", n * (2 * n + 1)), move("x", kf)),
-                    _stream_phase("kept_walk_each", one, matvec, scatter,
-                                  kernel_loop("divide", 1, "div", lt, n), *columns, one,
+                    _stream_phase("kept_store", *keep_one, move("x", kf)),
+                    _stream_phase("kept_walk_each", one, matvec, scatter, *columns, one,
                                   move("x", kf)),
                     _stream_phase("kept_walk_base", move("x", kf))]
         if self.layout_marginal:  # the marginalisation but its linearisation and QR step
@@ -405,12 +411,18 @@ class WindowUpdateModel:
                                                            plan_sizes(t)["MAX_W"],
                                                            t.solver.method == "lm", kt),
                                   *commit_loops(tables, s, kt, False),
-                                  move("rows", n * (n + 1)), *write_tau)]
+                                  move("rows", n * (n + 1)), *write_tau),
+                    # the one-step policy: slots 0 and 1 copied before the solve; the step
+                    # taken, the solve's own NF rows are τ (no stack, QR step or commit)
+                    _stream_phase("lin_points", move("x", 2 * kf)),
+                    _stream_phase("marginal_reused", move("rows", n * (n + 1)), *write_tau)]
         if self.batch is not None:
             b = lay.batch
             words = n * (2 * n + 1)
             out += [_stream_phase(f"batch_in{c}", move("x", kf), move("d", len(d)))
                     for c, d in enumerate(b.new_dest)]
+            # τ's linearisation point copied before the batch kernel's call
+            out.append(_stream_phase("batch_tau_lin", move("x", kf)))
             for j in b.keyframes:
                 out.append(_stream_phase(f"batch{j}_gather", move("x", (j + 1) * kf)))
                 out.append(_stream_phase(f"batch{j}_out", move("x", (j + 1) * kf),
@@ -420,7 +432,8 @@ class WindowUpdateModel:
                                          move("x", (j + 1) * kf)))
                 if j >= lay.window:
                     kept = j - lay.window + 1
-                    out.append(_stream_phase(f"batch{j}_kept", move("x", words, kept),
+                    out.append(_stream_phase(f"batch{j}_kept",
+                                             *(replace(loop, repeat=kept) for loop in keep_one),
                                              move("x", kept * kf), *write_tau))
         return tuple(out)
 
@@ -462,7 +475,11 @@ class WindowUpdateModel:
                       Unit("stream_kept_matvec", "S times a vector (kept_matvec)", 1,
                            KEPT_MATVEC_OPS),
                       Unit("stream_kept_task", "the kept net's re-expression and walk: their "
-                           "loops and sequential code", 1, KEPT_TASK_OPS)]
+                           "loops and sequential code", 1, KEPT_TASK_OPS),
+                      Unit("stream_kept_scale", "a kept conditional's pivot reciprocals and "
+                           "its rows scaled by them (kept_conditional, per call site: keep's, "
+                           "a batch step's)", 1 + int(self.batch is not None),
+                           KEPT_SCALE_OPS)]
         return tuple(units)
 
     def design_plan(self):
@@ -555,7 +572,14 @@ class WindowUpdateModel:
         qr_store = qr_solve_cycles(batch["plan"], b.template, zero, False, batch["sets"],
                                    self.les, unit=unit)
         terms = [Term("batch_gather", st[f"stream_batch{j}_gather"], 2, False,
-                      f"keyframes 0 … {j}'s estimates to the batch kernel (gathered, copied in)")]
+                      f"keyframes 0 … {j}'s estimates to the batch kernel (gathered, copied in)"),
+                 Term("batch_tau_lin", st["stream_batch_tau_lin"], 1, False,
+                      "τ's linearisation point (the batch kernel's start) copied before its "
+                      "call")]
+        if ev.get("cost", 0) and batch["cost_x"]:
+            terms.append(Term("batch_cost_x", batch["cost_x"], ev["cost"], False,
+                              "the batch kernel's cost pass at X before LM's first "
+                              "linearisation"))
         for g in sorted(group):
             trigger = PHASE_TRIGGER.get(g)
             times = ev.get(trigger, 0) if trigger else 0
@@ -563,13 +587,14 @@ class WindowUpdateModel:
                 each = qr_damped if g == "qr" else group[g]
                 terms.append(Term(f"batch_{g}", each, times, False,
                                   f"the batch kernel's {g} phase, once per {trigger}"))
-        relin = _relinearize(ev)
-        store = (relin * (group["factor_jacobian"] + group["gradient"]) + group["qr_stack"]
-                 + qr_store + group["qr_commit"])
-        terms.append(Term("batch_store", store, 1, False,
-                          f"keyframes 0 … {j} " + ("linearised at the optimum and " if relin
-                                                   else "") + "eliminated serially at μ = 0 "
-                          "(their conditionals and the factors they pass)"))
+        if not self.reuses(ev):
+            relin = _relinearize(ev)
+            store = (relin * (group["factor_jacobian"] + group["gradient"]) + group["qr_stack"]
+                     + qr_store + group["qr_commit"])
+            terms.append(Term("batch_store", store, 1, False,
+                              f"keyframes 0 … {j} " + ("linearised at the optimum and " if relin
+                                                       else "") + "eliminated serially at μ = 0 "
+                              "(their conditionals and the factors they pass)"))
         terms.append(Term("batch_out", st[f"stream_batch{j}_out"], 1, False,
                           "the optimum, the conditionals and τ out of the batch kernel, the "
                           "optimum scattered to the kept memory and the window"))
@@ -580,23 +605,36 @@ class WindowUpdateModel:
         return terms
 
     @staticmethod
-    def events_of(iterations: int, rejected: int = 0, noise: int = 0) -> dict:
+    def events_of(iterations: int, rejected: int = 0, noise: int = 0,
+                  status: str = "converged") -> dict:
         """The solve's event counts from its iterations: each iteration a linearisation, a
         solve (and its back-substitution, the cost at X_TRIAL beside it: none fails), a
         retraction and (but the last, which converged) an accepted step; the start's cost pass
         (at X: ``cost``); ``rejected`` trial steps add a solve, a back-substitution and a
         retraction each. (LM then stopped where it last linearised: a leaving keyframe's
-        marginal reuses those rows, no ``relinearize``.)"""
+        marginal reuses those rows, no ``relinearize``.) ``status`` "max_iterations" (the
+        one-step policy: a Gauss-Newton step an update, k_max = 1): the last iteration took
+        its step too, so every iteration accepted one and the marginal (a batch step's store)
+        linearises again at the new estimate (:func:`_relinearize`)."""
         k = int(iterations)
+        last = status == "max_iterations"
         return {"linearize": k, "solve": k + rejected, "backsub": k + rejected,
-                "retract": k + rejected, "cost": 1, "accept": max(0, k - 1), "noise": noise}
+                "retract": k + rejected, "cost": 1, "accept": k if last else max(0, k - 1),
+                "noise": noise}
 
-    def price(self, keyframe: int, iterations: int, events: dict | None = None):
-        """The :class:`UpdatePrice` of keyframe ``keyframe``'s call."""
+    def reuses(self, ev: dict) -> bool:
+        """Whether the update's store is its own solve's factorisation: the one-step policy
+        with the step taken (an accepted step; fgc_stream.h's ``took_step``)."""
+        return self.one_step and ev.get("accept", 0) >= 1
+
+    def price(self, keyframe: int, iterations: int, events: dict | None = None,
+              status: str = "converged"):
+        """The :class:`UpdatePrice` of keyframe ``keyframe``'s call (``status``: the update's,
+        for :meth:`events_of` when no ``events`` are given)."""
         lay, st = self.layout, self.stream
         m = min(keyframe, lay.size - 1)
         first = max(0, keyframe - lay.window)
-        ev = dict(events) if events is not None else self.events_of(iterations)
+        ev = dict(events) if events is not None else self.events_of(iterations, status=status)
         terms = [Term("keyframe_in", st[f"stream_keyframe_in{m}"], 1, False,
                       f"keyframe {keyframe}'s storage and {len(lay.new_dest[m])} data words in "
                       f"(slot {m})")]
@@ -630,8 +668,20 @@ class WindowUpdateModel:
                                   f"the window's {g} phase, once per {trigger}" + (
                                       " (on its rows non-zero in this update)" if g == "qr"
                                       else "")))
+        if ev.get("cost", 0) and self.cost_x:
+            terms.append(Term("cost_x", self.cost_x, ev["cost"], False,
+                              "the cost pass at X before LM's first linearisation"))
         marginal = 0
-        if m == lay.window and self.layout_marginal:
+        terms.append(Term("lin_points", st["stream_lin_points"], 1, False,
+                          "slots 0 and 1 copied before the solve (the one-step policy keeps a "
+                          "leaving keyframe's conditional and τ there)"))
+        if m == lay.window and self.layout_marginal and self.reuses(ev):
+            marginal = st["stream_marginal_reused"]
+            terms.append(Term("marginal", marginal, 1, False,
+                              "keyframe leaving: the one-step solve's slot 0 step is the store "
+                              "(its rows at μ = 0, at the update's start): τ's signs, mean and "
+                              "words"))
+        elif m == lay.window and self.layout_marginal:
             # the window's rows at its optimum: computed again only if LM took a step after its
             # last linearisation (fgc_stream.h, stream_call, before the marginal's region, by
             # LM's own linearisation instance; counted: the "relinearize" event)

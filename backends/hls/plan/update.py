@@ -500,7 +500,8 @@ class UpdateModel:
             # window's clusters serially oldest first
             dims = {s: (self.cdim[first + s], self.cdim[first + s + 1] if first + s < last else 0)
                     for s in steps}
-            phases += elimination_phases(tables, list(steps), dims, self.options.cpe, self.les, lt)
+            phases += elimination_phases(tables, list(steps), dims, self.options.cpe, self.les, lt,
+                                         self.options.cascade_lanes)
         # back-substitution step by step, the state update fed by it beside (fgc_backsub.h's
         # back_substitute: backsub_retire retracts each cluster's variables as it is solved)
         unit = "backsub" if self.qr else "trisolve"

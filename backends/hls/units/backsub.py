@@ -7,6 +7,7 @@ Lᵀδ = z by rows instead."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 from fgc_backends.cost.operators import OperatorTable
@@ -31,43 +32,65 @@ def backsub_words(frontal: int, separator: int) -> int:
     return frontal * (frontal + separator + 1) - frontal * (frontal - 1) // 2
 
 
-def triangle_trip(frontal: int, ops: OperatorTable) -> int:
-    """Iterations of cond_backsub's triangle loop: columns r = f − 1 … 1, each max(r, CHAIN + 1)
-    (a column shorter than the recurrence padded to it)."""
+def triangle_trip(frontal: int, ops: OperatorTable, lanes: int = 1) -> int:
+    """Iterations of cond_backsub's triangle loop: columns r = f − 1 … 1, each
+    max(⌈r / lanes⌉, CHAIN + 1) (``lanes`` rows of a column an iteration; a column shorter than
+    the recurrence padded to it)."""
     pad = backsub_chain(ops) + 1
-    return sum(max(r, pad) for r in range(1, frontal))
+    return sum(max(-(-r // lanes), pad) for r in range(1, frontal))
 
 
-def rows_depth(ops: OperatorTable) -> int:
-    """cond_backsub's row loop: the 2 PARTIALS partial sums folded and subtracted from d
-    (La (1 + ⌈log₂ 2 PARTIALS⌉)) beside the reciprocal of the diagonal (Ld), then the row scaled
-    by it (Lm)."""
+def rows_depth(ops: OperatorTable, lanes: int = 1) -> int:
+    """cond_backsub's row loop: the row's partial sums (2 PARTIALS; ``lanes`` > 1, PARTIALS:
+    cond_load_wide sums an iteration's words before its partial sum) folded and subtracted from
+    d (La (1 + ⌈log₂ sums⌉)) beside the reciprocal of the diagonal (Ld), then the row scaled by
+    it (Lm)."""
     la = ops.add.latency
-    return max(la * (1 + _ceil_log2(2 * la)), ops.div.latency) + ops.mul.latency
+    sums = 2 * la if lanes == 1 else la
+    return max(la * (1 + _ceil_log2(sums)), ops.div.latency) + ops.mul.latency
 
 
-def load_loop(frontal: int, separator: int, ops: OperatorTable, name: str = "cond_load"
-              ) -> Loop:
+def wide_trip(off: int, frontal: int, separator: int, lanes: int) -> int:
+    """Iterations of ``cond_load_wide`` (fgc_backsub.h's backsub_wide_trip): row by row, the
+    aligned groups of 2 ``lanes`` words of COND each row's words (from its diagonal to d) touch,
+    the conditional at COND word ``off``."""
+    width, cols = 2 * lanes, frontal + separator + 1
+    return sum((off + i * cols + cols - 1) // width - (off + i * cols + i) // width + 1
+               for i in range(frontal))
+
+
+def load_loop(frontal: int, separator: int, ops: OperatorTable, name: str = "cond_load",
+              lanes: int = 1, off: int = 0) -> Loop:
     """``cond_load``: the conditional's stored words two a cycle (the source memory's two
     ports), each S_ia x_a added into a partial sum as it passes (II 1: a lane's sum comes back
-    PARTIALS iterations later); depth read + multiply-add + write."""
+    PARTIALS iterations later); depth read + multiply-add + write. ``lanes`` > 1:
+    ``cond_load_wide``, an aligned group of 2 ``lanes`` words of one row an iteration from COND
+    cyclic over ``lanes`` banks (:func:`wide_trip`; ``off``: the conditional's first word in
+    COND), the group's products summed by a tree before the row's partial sum: depth read +
+    multiply + La (1 + log₂ 2 lanes) + write."""
+    if lanes > 1:
+        trip = wide_trip(off, frontal, separator, lanes) if frontal else 0
+        return Loop(name, trip, 1, 2 + ops.mul.latency
+                    + ops.add.latency * (1 + _ceil_log2(2 * lanes)))
     words = backsub_words(frontal, separator) if frontal else 0
     return Loop(name, -(-words // PORTS), 1, 2 + ops.mul.latency + ops.add.latency)
 
 
 def backsub_loops(frontal: int, separator: int, ops: OperatorTable,
-                  name: str = "bs") -> list[Loop]:
+                  name: str = "bs", lanes: int = 1) -> list[Loop]:
     """The loops of ``cond_backsub`` (backends/hls/include/fgc_backsub.h) on one conditional of
     f frontal and s separator columns (S xs already summed by ``cond_load``), as its csim
     counters count them: per row (trip f, II 1) its partial sums folded and subtracted from d
     beside the diagonal's reciprocal, the row scaled by it (:func:`rows_depth`); the triangle
     as one flattened loop (trip :func:`triangle_trip`: columns padded to the chain Lm + La, II 1,
     depth Lm + CHAIN: R_ir / R_ii, its product with x_r, the subtraction); x_0 = y_0 (a move).
-    Nothing for f = 0."""
+    Nothing for f = 0. ``lanes`` > 1 (``cond_backsub_wide``): the triangle alone, ``lanes``
+    rows of a column an iteration (the row loop runs in the load, :func:`wide_load_loops`)."""
     if not frontal:
         return []
-    return [Loop(f"{name}_rows", frontal, 1, rows_depth(ops)),
-            Loop(f"{name}_triangle", triangle_trip(frontal, ops), 1,
+    rows = [Loop(f"{name}_rows", frontal, 1, rows_depth(ops))] if lanes == 1 else []
+    return [*rows,
+            Loop(f"{name}_triangle", triangle_trip(frontal, ops, lanes), 1,
                  ops.mul.latency + backsub_chain(ops)),
             Loop(f"{name}_last", 1, 1, 1)]
 
@@ -133,22 +156,37 @@ def backsub_xoff(tables: dict) -> tuple[int, ...]:
     return tuple(out)
 
 
+def wide_load_loops(frontal: int, separator: int, ops: OperatorTable, lanes: int, off: int,
+                    name: str) -> list[Loop]:
+    """A lane's load with ``lanes`` > 1 (fgc_backsub.h's backsub_load<u>): ``cond_load_wide``
+    (:func:`load_loop`), then the row loop (``backsub_rows_wide``: trip f, II 1, the row's
+    PARTIALS sums folded beside the reciprocal, :func:`rows_depth`), so the solving lane's
+    process holds the triangle alone and the two lanes' work is nearer even."""
+    loops = [load_loop(frontal, separator, ops, name=name, lanes=lanes, off=off)]
+    if frontal:
+        loops.append(Loop(f"{name}_rows", frontal, 1, rows_depth(ops, lanes)))
+    return loops
+
+
 def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
-                       timing: dict, local: bool = False) -> list[Loop]:
+                       timing: dict, local: bool = False, lanes: int = 1) -> list[Loop]:
     """One slot of back_substitute() (:func:`backsub_slots`): the loaded step's separator
     solution in (:data:`PORTS` words a cycle; none when ``local``, :func:`backsub_xoff`), then
     the ``backsub_lane<p>`` DATAFLOW region (the solving lane's ``cond_backsub`` and its frontal
     solution out, ``backsub_out``, beside the other lane's ``cond_load``: the slower plus the
-    other's fill)."""
+    other's fill); ``lanes``: :data:`PlanOptions.backsub_lanes`."""
     def sizes(s):
         return (tables["STEP_F"][s], tables["STEP_W"][s] - tables["STEP_F"][s]) if s >= 0 \
             else (0, 0)
 
     (sf, ss), (lf, ls) = sizes(solve), sizes(load)
-    solve_loops = backsub_loops(sf, ss, ops, name=f"bs{solve}")
+    solve_loops = backsub_loops(sf, ss, ops, name=f"bs{solve}", lanes=lanes)
     if sf:
         solve_loops.append(kernel_loop("solution_out", _ported(sf), "move", timing))
-    region = _region_cycles([solve_loops, [load_loop(lf, ls, ops, name=f"cond_load{load}")]])
+    off = tables["STEP_COND_OFF"][load] if load >= 0 else 0
+    load_loops = wide_load_loops(lf, ls, ops, lanes, off, f"cond_load{load}") if lanes > 1 \
+        else [load_loop(lf, ls, ops, name=f"cond_load{load}")]
+    region = _region_cycles([solve_loops, load_loops])
     return [kernel_loop("separator_in", 0 if local else _ported(ls), "move", timing),
             Loop("backsub_lane", 1, 1, region)]
 
@@ -198,10 +236,11 @@ def backsub_phases(ctx, unit: str) -> None:
     retire adds after the last slot (``retire_tail``)."""
     from fgc_backends.hls.units.state_update import retire_timing
     tables, timing, ops = ctx.tables, ctx.les_timing, ctx.les
+    lanes = ctx.opts.backsub_lanes
     slots, sent, counts = [], [], []
     xoff = backsub_xoff(tables)
     for k, (solve, load, _) in enumerate(backsub_slots(tables)):
-        slots.append(backsub_slot_loops(tables, solve, load, ops, timing, xoff[k] >= 0))
+        slots.append(backsub_slot_loops(tables, solve, load, ops, timing, xoff[k] >= 0, lanes))
         if solve >= 0:
             sent.append(k)
             counts.append(len(ctx.program.schedule.steps[solve].frontals))
@@ -234,14 +273,23 @@ def retire_solved(tables: dict) -> list[int]:
     return [solve for solve, _, _ in backsub_slots(tables) if solve >= 0]
 
 
-def backsub_operators(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
+def backsub_operators(ops: OperatorTable, lanes: int = 1) -> tuple[tuple[str, int], ...]:
     """One back-substitution unit's operators as Vitis binds them
     (:mod:`fgc_backends.hls.plan.binding`), each pipelined loop its own at II 1: its
     ``cond_load`` (its own call site in back_substitute: two words an iteration, a multiply-add
     each), the row loop (2 PARTIALS − 1 adds folding, the subtraction from d, the reciprocal's
     divide, the row's scaling by it), the triangle (R_ir / R_ii, its product with x_r, the
-    subtraction); x_0 a move; PARTIALS is the adder's latency."""
+    subtraction); x_0 a move; PARTIALS is the adder's latency. ``lanes`` > 1:
+    ``cond_load_wide``'s 2 lanes multiplies, its tree's 2 lanes − 1 adds and the partial sum's
+    add; the rows fold PARTIALS sums (PARTIALS − 1 adds and the subtraction); the triangle
+    ``lanes`` times its operators."""
     partials = ops.add.latency
+    if lanes > 1:
+        width = 2 * lanes
+        return sum_operators((BoundLoop("cond_load", (("add", width), ("mul", width)), 1),
+                              BoundLoop("rows", (("add", partials), ("div", 1), ("mul", 1)), 1),
+                              BoundLoop("triangle", (("add", lanes), ("mul", 2 * lanes)), 1)),
+                             ops)
     return sum_operators((BoundLoop("cond_load", (("add", 2), ("mul", 2)), 1),
                           BoundLoop("rows", (("add", 2 * partials), ("div", 1), ("mul", 1)), 1),
                           BoundLoop("triangle", (("add", 1), ("mul", 2)), 1)), ops)
@@ -253,16 +301,20 @@ def build(ctx) -> None:
     lane beside the next step's cond_load on the other; what-if whole-matrix Cholesky: Lᵀδ = z
     by rows, Lz = g riding the cascade)."""
     program, opts, ops = ctx.program, ctx.opts, ctx.les
+    lanes = opts.backsub_lanes
+    if lanes > 1:  # COND cyclic over ``lanes`` banks (backsub_slots' ARRAY_PARTITION)
+        ctx.memories[:] = [dataclasses.replace(m, banks=lanes) if m.name == "cond" else m
+                           for m in ctx.memories]
     if program.solver.linear == "qr":
         backsub_phases(ctx, "backsub")
         for lane in range(LANES):
             ctx.units.append(Unit(f"qr{lane}_backsub", f"back-substitution lane {lane} "
-                                  "(cond_load, cond_backsub)", 1, backsub_operators(ops)))
+                                  "(cond_load, cond_backsub)", 1, backsub_operators(ops, lanes)))
         return
     if opts.hessian_storage == "frontal":
         ctx.units.append(Unit("trisolve", "back-substitution, one per lane (cond_load, "
                               "cond_backsub; Lz = g rides the cascade)", LANES,
-                              backsub_operators(ops)))
+                              backsub_operators(ops, lanes)))
         backsub_phases(ctx, "trisolve")
         return
     n = program.storage.columns

@@ -33,11 +33,21 @@ def cpe_depth(ops: OperatorTable) -> int:
     return 2 + 2 * ops.mul.latency + ops.add.latency + 2
 
 
-def cpe_wait(p: int, w: int, ops: OperatorTable) -> int:
+def cpe_wait(p: int, w: int, ops: OperatorTable, lanes: int = 1) -> int:
     """The cycles the CPE of pivot p waits for r = 1 / d (fgc_cpe.h's cpe_wait): the tap sends
     it Ld + 2 cycles after the pivot, the CPE needs it after the pivot's row of w + 1 - p
-    words."""
-    return max(0, ops.div.latency - (w + 1 - p))
+    words, ``lanes`` a cycle."""
+    return max(0, ops.div.latency - -(-(w + 1 - p) // lanes))
+
+
+def cpe_vecs(first: int, w: int, lanes: int = 1) -> int:
+    """The stream words of rows first … w - 1 through the cascade (fgc_cpe.h's cpe_vecs): row
+    i's w + 1 - i words, ``lanes`` (1 or 2) a stream word, a row's last word-pair half empty
+    when its count is odd."""
+    m = w - first
+    if m <= 0:
+        return 0
+    return m * (m + 1) // 2 + m if lanes == 1 else (m + 2) * (m + 2) // 4 - 1
 
 
 def cpe_round_depth(active: int, cpe: int, ops: OperatorTable, waits: int = 0) -> int:
@@ -50,7 +60,7 @@ def cpe_round_depth(active: int, cpe: int, ops: OperatorTable, waits: int = 0) -
 
 
 def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
-                   name: str = "s") -> list[Loop]:
+                   name: str = "s", lanes: int = 1) -> list[Loop]:
     """The loops of ``cpe_step`` (backends/hls/include/fgc_cpe.h) on one step's [H | g] of f
     frontal and s separator columns, as the csim counters count them: one ``Loop`` per round
     (trip = its words + the status word at II 1, depth :func:`cpe_round_depth`), after each
@@ -58,14 +68,14 @@ def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
     [H | g] when f = 0, the singularity scale with the smallest pivot (trip f, depth Lm + Ld + 2)
     and the pivot check (the smallest pivot over the scale: trip 1, depth Ld + 2). The whole
     matrix as one step (f = n, s = 0) is what the Cholesky phase of :func:`build_plan` prices; a
-    multifrontal design sums this over its steps."""
+    multifrontal design sums this over its steps. ``lanes`` (fgc_cpe.h's STREAM_WORDS): the words a
+    cycle through the cascade, a round's trip its :func:`cpe_vecs` + 1."""
     w = frontal + separator
     loops = []
     for r, p0 in enumerate(range(0, frontal, cpe)):
-        m = w - p0
         pivots = range(p0, min(frontal, p0 + cpe))
-        waits = sum(cpe_wait(p, w, ops) for p in pivots)
-        loops.append(Loop(f"{name}_round{r}", m * (m + 1) // 2 + m + 1, 1,
+        waits = sum(cpe_wait(p, w, ops, lanes) for p in pivots)
+        loops.append(Loop(f"{name}_round{r}", cpe_vecs(p0, w, lanes) + 1, 1,
                           cpe_round_depth(len(pivots), cpe, ops, waits)))
         done = p0 + cpe
         if done < frontal:  # the rows left for the next round back into H
@@ -93,10 +103,10 @@ class CascadeProcess(Process):
 
 
 def cascade_process(s: int, frontal: int, separator: int, cpe: int,
-                    ops: OperatorTable) -> CascadeProcess:
+                    ops: OperatorTable, lanes: int = 1) -> CascadeProcess:
     """Step s's cascade (:func:`cpe_step_loops`) as the process of its pass."""
     return CascadeProcess(f"cascade{s}", "cpe", tuple(cpe_step_loops(
-        frontal, separator, cpe, ops, name=f"s{s}")), feed=ops.add.latency + 2)
+        frontal, separator, cpe, ops, name=f"s{s}", lanes=lanes)), feed=ops.add.latency + 2)
 
 
 def cpe_check_loops(frontal: int, ops: OperatorTable, name: str = "s") -> list[Loop]:
@@ -368,7 +378,7 @@ def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict) -> 
 
 
 def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
-                       ops: OperatorTable, timing: dict) -> list[Phase]:
+                       ops: OperatorTable, timing: dict, lanes: int = 1) -> list[Phase]:
     """cholesky_eliminate_all's phases (passes of one cholesky_overlap region, fgc_eliminate.h)
     on the steps ``order`` (the schedule's LEVEL_STEPS; ``dims``: step -> (frontal, separator)
     columns) with the step tables ``tables``: phase ``assemble`` (the assembler alone: each
@@ -395,7 +405,7 @@ def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
         nxt = order[t + 1] if t + 1 < len(order) else -1
         frontal, separator = dims[s]
         phases.append(Phase(f"cholesky_level{t}", True, (
-            cascade_process(s, frontal, separator, cpe, ops),
+            cascade_process(s, frontal, separator, cpe, ops, lanes),
             Process(f"assembler{s}", "cpe", tuple(assembler_loops(
                 tables, s, nxt, timing, odd)))), linear=True))
     return phases
@@ -488,7 +498,7 @@ def _gram_source(key: int, lay: dict, relin: bool, steps: int, ii: int, timing: 
 
 
 def beside_set_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: OperatorTable,
-                      timing: dict, lay: dict, relin: bool, steps: int, ii: int
+                      timing: dict, lay: dict, relin: bool, steps: int, ii: int, lanes: int = 1
                       ) -> list[tuple[Phase, int | None]]:
     """fgc_cascades.h's cholesky_eliminate_sets_beside, pass by pass (two cascades, the HGC
     beside the elimination): :func:`cascades_phases`' passes with, in each, the Gram source of
@@ -497,7 +507,7 @@ def beside_set_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops:
     source of region 1, then per region r its children added alone (``reassemble_level``) and
     its region (``recholesky_level<r>``) beside the source of region r + 2, last the committer
     alone. (The pass as a phase, the producer's instance its source waits for or None.)"""
-    base = cascades_phases(tables, order, dims, cpe, ops, timing)
+    base = cascades_phases(tables, order, dims, cpe, ops, timing, lanes)
     n_regions = len(lay["step_count"])
 
     def source(r: int) -> tuple[tuple[Process, ...], int | None]:
@@ -541,7 +551,7 @@ def beside_ready(count: int, jac: Loop, rows: int, steps: int, ii: int, depth: i
 
 
 def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: OperatorTable,
-                  timing: dict, lay: dict, relin: bool, steps: int, ii: int
+                  timing: dict, lay: dict, relin: bool, steps: int, ii: int, lanes: int = 1
                   ) -> list[tuple[Phase, int | None]]:
     """fgc_eliminate.h's cholesky_eliminate_beside, pass by pass: (the pass as a phase, the
     producer's instance its Gram source waits for or None). Phase ``reassemble`` (the lanes'
@@ -584,7 +594,7 @@ def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: Ope
         passes.append((Phase(f"recholesky_level{t}", True, (
             *src,
             Process(f"assembler{s}", "cpe", tuple(assembler_loops(tables, s, nxt, timing, odd))),
-            cascade_process(s, frontal, separator, cpe, ops)), linear=True), gate))
+            cascade_process(s, frontal, separator, cpe, ops, lanes)), linear=True), gate))
     return passes
 
 
@@ -665,7 +675,7 @@ def _child_loop(tables: dict, c: int, timing: dict) -> Loop:
 
 
 def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
-                    ops: OperatorTable, timing: dict) -> list[Phase]:
+                    ops: OperatorTable, timing: dict, lanes: int = 1) -> list[Phase]:
     """cholesky_eliminate_sets' phases (fgc_cascades.h, two cascades), passes of its one
     cholesky_sets region: phase ``assemble`` (the grams process alone: the first region's
     steps' Grams), then per region r of :func:`cascade_regions` (after a phase
@@ -713,7 +723,8 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
                 frontal, separator = dims[s]
                 procs.append(Process(f"cascade{s}", "cpe", (
                     Loop(f"s{s}_fill", 0, 1, ops.add.latency + 2),
-                    *cpe_step_loops(frontal, separator, cpe, ops, name=f"s{s}")[:-2])))
+                    *cpe_step_loops(frontal, separator, cpe, ops, name=f"s{s}",
+                                    lanes=lanes)[:-2])))
         streamed = [kids[s][0] for s in reg if s >= 0 and kids[s][0] >= 0]
         source = [kernel_loop("inv", max(sw[c] - sf[c] for c in streamed), "move", timing)
                   ] if streamed else []
@@ -787,9 +798,10 @@ def build(ctx) -> None:
             Loop("macs", math.ceil(macs / opts.hgc_lanes), 1,
                  ops.mul.latency + ops.add.latency),)),), linear=True))
     # a CPE as fgc_cpe.h's loops bind it: its tap's loop divides (1 / d), its Update loop
-    # multiplies twice and subtracts, at II 1 (one operator of each a loop)
+    # multiplies twice and subtracts per lane (STREAM_WORDS words a cycle), at II 1
+    lanes = opts.cascade_lanes if opts.hessian_storage == "frontal" else 1
     ctx.units.append(Unit("cpe", "Cholesky process element: tap (1 / d) + Update", c,
-                          (("add", 1), ("mul", 2), ("div", 1))))
+                          (("add", lanes), ("mul", 2 * lanes), ("div", 1))))
     if opts.hessian_storage == "frontal":
         _frontal(ctx)
         return
@@ -852,7 +864,9 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
         passes = beside_passes
     steps = entries.trip // len(lay["order"])
     ready = beside_ready(len(lay["order"]), jac, rows.cycles, steps, entries.ii, entries.depth)
-    first = passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps, entries.ii)
+    lanes = ctx.opts.cascade_lanes
+    first = passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps, entries.ii,
+                   lanes)
     cycles, _ = beside_cycles(phase_cycles(region), ready, first, timing["move"][1])
     # the producer's region stays in the plan for the record (per "beside": priced inside
     # hgc_beside, not on its own)
@@ -860,7 +874,7 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
         f"linearize_solve_{big}", "cpe", (Loop("region", 1, 1, cycles),)),), linear=True)),
         (slot, replace(region, name="hgc_producer", per="beside"))]
     for phase, _ in passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, False, steps,
-                           entries.ii):
+                           entries.ii, lanes):
         ctx.add_phase("solve", replace(phase, per="rejection"))
     _, lane_b, _, paired = gram_config(program, big, ctx.opts.hgc_lanes,
                                        jacobian_ii(region.processes),
@@ -884,6 +898,7 @@ def _frontal(ctx) -> None:
     conditionals into COND beside the next region (fgc_cascades.h's cholesky_sets region)."""
     program, ops, c = ctx.program, ctx.les, ctx.opts.cpe
     sets = cascades_of(program, ctx.opts)
+    lanes = ctx.opts.cascade_lanes  # fgc_cpe.h's STREAM_WORDS: words a stream word of the cascade
     sizes = ctx.sizes
     cols = sizes["MAX_W"] + 1
     # cpe_round's streams: link[0 ... #CPE] (feed -> tap 0, CPE K -> tap K + 1, CPE #CPE - 1 ->
@@ -897,17 +912,18 @@ def _frontal(ctx) -> None:
 
         for i in range(c + 1):
             ctx.channels.append(Channel(f"{pre}link{i}", "stream", sizes["MAX_W"],
-                                        ops.word_bits, f"{pre}feed" if i == 0 else cpe(i - 1),
+                                        lanes * ops.word_bits,
+                                        f"{pre}feed" if i == 0 else cpe(i - 1),
                                         f"{pre}tap{i}" if i < c else f"{pre}drain"))
         for i in range(c):
             ctx.channels.append(Channel(f"{pre}tapped{i}", "stream", cols + ops.div.latency + 2,
-                                        ops.word_bits, f"{pre}tap{i}", cpe(i)))
+                                        lanes * ops.word_bits, f"{pre}tap{i}", cpe(i)))
             ctx.channels.append(Channel(f"{pre}recip{i}", "stream", 2, ops.word_bits,
                                         f"{pre}tap{i}", cpe(i)))
     # a CPE per cascade (build's "cpe" unit counts one cascade's)
     if sets > 1:
         ctx.units.append(Unit("cpe_set1", "the second cascade's process elements", c,
-                              (("add", 1), ("mul", 2), ("div", 1))))
+                              (("add", lanes), ("mul", 2 * lanes), ("div", 1))))
     # the feed's adder (mu on the diagonal), the singularity scale's multiplier and divider and
     # the check's divider (the smallest pivot over the scale): one operator of each a loop or
     # statement (cpe_step's sequential code); two cascades: a feed each, one check (the
@@ -931,9 +947,9 @@ def _frontal(ctx) -> None:
     if big is not None:
         _beside(ctx, big, order, dims)
     elif sets == 1:
-        phases = elimination_phases(tables, order, dims, c, ops, timing)
+        phases = elimination_phases(tables, order, dims, c, ops, timing, lanes)
     else:
-        phases = cascades_phases(tables, order, dims, c, ops, timing)
+        phases = cascades_phases(tables, order, dims, c, ops, timing, lanes)
     for phase in phases if big is None else ():
         ctx.add_phase("solve", phase)
     # cholesky_overlap's stream, a pair of words wide, deep enough that the assembler (a pair a

@@ -22,7 +22,7 @@ from fgc_backends.hls.plan.loops import (
 )
 from fgc_backends.hls.plan.model import Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
-from fgc_backends.hls.units.special_ops import printed_counts
+from fgc_backends.hls.units.special_ops import issued_counts, printed_counts
 
 
 def gradient_loops(program, timing: dict) -> list[Process]:
@@ -272,7 +272,10 @@ def build(ctx) -> None:
                 ("cost", b.cost_kernel, cost, robust_ops(bc))):
             counts = printed_counts(b, mode)  # as printed, the special functions' bodies in
             allocated = mode_allocation(allocations[i], counts)
-            issue = max([1] + [math.ceil(counts.get(k, 0) * ops.op(k).ii / n)
+            # what an evaluation issues through them: a special function's exclusive branches
+            # share the allocated operators (units/special_ops.py's issued_counts)
+            issued = issued_counts(b, mode)
+            issue = max([1] + [math.ceil(issued.get(k, 0) * ops.op(k).ii / n)
                                for k, n in allocated])
             ii = max(issue, loop_ii(instance_accesses(bc, mode)))
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the

@@ -264,7 +264,7 @@ def solve_incremental(problem, opts, optimize, progress=None):
         x, cost, it, _, st, why, _ = optimize(window, opts)
         if first > 0:
             _relinearize_parent(chain, x, first - 1)
-        _store(chain, window, x)
+        _store(chain, window, window.x0 if one_step(opts) else x)
         _back_substitute(chain, x, first)
         chain.x = x
         seconds = time.perf_counter() - t0
@@ -300,7 +300,7 @@ def solve_fixed_lag(problem, opts, optimize, window, progress=None):
         tau = chain.taus.get(first) if first > 0 else None
         win = Window(problem, chain, first, keyframe, tau)
         x, cost, it, _, st, why, _ = optimize(win, opts)
-        _store(chain, win, x)
+        _store(chain, win, win.x0 if one_step(opts) else x)
         for c in range(first):  # marginalised: nothing of theirs is needed again
             chain.conds.pop(c, None)
             chain.taus.pop(c, None)
@@ -331,9 +331,20 @@ def _snapshot(chain, keyframe, oldest=0):
     return out
 
 
+def one_step(opts):
+    """ISAM2's update policy (one Gauss-Newton step an update: method "gn", max_iterations 1).
+    Its store is the update's own factorisation: the window eliminated without damping at the
+    point the update linearised it (its start), as ISAM2 keeps its Bayes tree at the
+    linearisation point θ with the estimate θ ⊕ Δ; the kept conditionals and τ hold that
+    point. (Where the step was not taken the start is the estimate, as in every other
+    policy.)"""
+    return opts.get("method") == "gn" and int(opts.get("max_iterations", 0)) == 1
+
+
 def _store(chain, window, x):
-    """Eliminate the converged window once more without damping: its conditionals and the
-    factors passed between its clusters are what later updates keep."""
+    """Eliminate the window once more without damping at ``x`` (the converged estimate, or
+    the update's start under :func:`one_step`): its conditionals and the factors passed
+    between its clusters, linearised at ``x``, are what later updates keep."""
     parts, _, _ = window.linearize(x)
     conds, news = window.lib.linear.eliminate_qr(
         window.plan, numpy.concatenate([p.reshape(-1) for p in parts]).astype(

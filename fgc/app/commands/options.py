@@ -156,8 +156,8 @@ def verbosity_args(p: argparse.ArgumentParser, suppress: bool) -> None:
 
 def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
     """--clock; with ``design`` also the HLS design's --part, --scalar, --allocation,
-    --unit-sets and --qr-unit: ``"emitted"`` (compile, run: the design built) or ``"priced"``
-    (simulate, report: the design whose plan is priced)."""
+    --unit-sets, --qr-unit and --hgc-before: ``"emitted"`` (compile, run: the design built)
+    or ``"priced"`` (simulate, report: the design whose plan is priced)."""
     h = p.add_argument_group("hardware (the cost model's figures are model estimates)")
     h.add_argument("--clock", type=clock_arg, metavar="F",
                    help="accelerator clock, e.g. 143MHz or 7ns (a bare number ≥ 20 is MHz): "
@@ -188,10 +188,20 @@ def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
                        help=f"{where}: unit sets eliminating a level's steps side by side, "
                             "1 … 8 (default: 2 on a two-ended chain, else 1); Cholesky: 1 or 2 "
                             "cascades (default 1)")
+        h.add_argument("--cascade-lanes", type=int, choices=(1, 2), metavar="L",
+                       help=f"{where}: Cholesky: words a cycle through each cascade, 1 (the "
+                            "default) or 2 (every CPE two words a cycle: half a step's cycles "
+                            "in the cascade, twice its multipliers and adders)")
         h.add_argument("--qr-unit", choices=("householder", "stream"),
                        help=f"{where}: the QR unit set: householder (paper A's, one DATAFLOW "
                             "region per reflection; the default) or stream (n_u reflection "
                             "stages the matrix streams through)")
+        h.add_argument("--hgc-before", action="store_true",
+                       help=f"{where}: Cholesky only: every block type's Hessian/gradient (HGC) "
+                            "region runs before the elimination (DesignOptions.hgc_beside off); "
+                            "the default streams the longest one's Grams beside the elimination "
+                            "(docs/hls.md). Refused for QR, for a wider --linear-precision "
+                            "(its HGC is before already) and for --window / --incremental")
 
 
 def spec_args(p: argparse.ArgumentParser, json_help: str | None) -> None:

@@ -43,6 +43,10 @@ def add_arguments(p) -> None:
 
 def cmd_run(args) -> int:
     if is_streaming(args):
+        if getattr(args, "hgc_before", False):
+            raise UsageError("fgc run: --hgc-before shapes the batch Cholesky design; the "
+                             "stream's design (--window / --incremental) has no HGC beside its "
+                             "elimination (drop --hgc-before)")
         return cmd_stream(args)
     graph, program, data = compile_spec(args, "float32")
     t0 = time.perf_counter()

@@ -98,8 +98,8 @@ def implied_precision(args, default: str) -> str:
 
 def hls_config(args, program):
     """The HLS backend's config: --scalar (default: the Program's precision) and the design's
-    options (``HlsConfig.design``) from --part, --clock, --allocation, --unit-sets and
-    --qr-unit (one clock for the cost model and run_hls.tcl: ``clock_ns`` is
+    options (``HlsConfig.design``) from --part, --clock, --allocation, --unit-sets, --qr-unit
+    and --hgc-before (one clock for the cost model and run_hls.tcl: ``clock_ns`` is
     ``1000 / SolverConfig.clock_mhz``; ``DesignOptions.check`` checks them)."""
     hls = load_backend("hls")
     clock = getattr(args, "clock", None)
@@ -108,16 +108,42 @@ def hls_config(args, program):
             ("part", getattr(args, "part", None)), ("clock_ns", clock[1] if clock else None),
             ("allocation", getattr(args, "allocation", None)),
             ("unit_sets", getattr(args, "unit_sets", None)),
-            ("qr_unit", getattr(args, "qr_unit", None))) if value})
-    return hls.HlsConfig(scalar=getattr(args, "scalar", None) or c_scalar(program),
-                         design=design)
+            ("qr_unit", getattr(args, "qr_unit", None)),
+            ("cascade_lanes", getattr(args, "cascade_lanes", None))) if value},
+        **({"hgc_beside": False} if getattr(args, "hgc_before", False) else {}))
+    config = hls.HlsConfig(scalar=getattr(args, "scalar", None) or c_scalar(program),
+                           design=design)
+    if not design.hgc_beside:
+        check_hgc_before(args, program, config)
+    return config
+
+
+def check_hgc_before(args, program, config) -> None:
+    """--hgc-before turns off the HGC beside the elimination, which only a batch Cholesky
+    design in one scalar has (units/cholesky.py): anywhere else the flag would change nothing,
+    so it is refused rather than ignored."""
+    if any(getattr(args, name, None) is not None
+           for name in ("incremental", "window", "batch_every")):
+        raise UsageError(f"fgc {args.command}: --hgc-before shapes the batch Cholesky design; "
+                         "the stream's design (--window / --incremental) has no HGC beside its "
+                         "elimination (drop --hgc-before)")
+    if program.solver.linear != "cholesky":
+        raise UsageError(f"fgc {args.command}: --hgc-before applies to Cholesky designs "
+                         f"(--linear cholesky); a {program.solver.linear} design has no HGC "
+                         "beside its elimination")
+    wide = load_backend("hls").emitter.for_program(program, config)
+    if wide.mixed:
+        raise UsageError(f"fgc {args.command}: --hgc-before: this design's linear solver "
+                         f"({wide.linear_cxx}) is wider than the rest ({wide.scalar_cxx}), so "
+                         "its HGC runs before the elimination already (drop --hgc-before or "
+                         "--linear-precision)")
 
 
 def plan_options(args, program):
     """The accelerator plan's options for the design ``fgc compile --backend hls`` emits with
-    the same --scalar, --part, --clock, --allocation, --unit-sets and --qr-unit (what
-    ``fgc simulate`` and ``fgc report`` price). A fixed-point --scalar is refused: the dataflow
-    design has no fixed-point units and the plan no fixed-point operator table."""
+    the same --scalar, --part, --clock, --allocation, --unit-sets, --qr-unit and --hgc-before
+    (what ``fgc simulate`` and ``fgc report`` price). A fixed-point --scalar is refused: the
+    dataflow design has no fixed-point units and the plan no fixed-point operator table."""
     config = hls_config(args, program)
     config.check(program)
     if config.is_fixed_point:
@@ -128,9 +154,9 @@ def plan_options(args, program):
 
 
 def refuse_hls_design(args, backend: str) -> None:
-    """--allocation, --unit-sets and --qr-unit shape the HLS design: other backends have no
-    such thing."""
-    for flag in ("allocation", "unit_sets", "qr_unit"):
+    """--allocation, --unit-sets, --qr-unit, --cascade-lanes and --hgc-before shape the HLS
+    design: other backends have no such thing."""
+    for flag in ("allocation", "unit_sets", "qr_unit", "hgc_before", "cascade_lanes"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc {args.command}: --{flag.replace('_', '-')} applies to "
                              f"--backend hls only (not {backend})")

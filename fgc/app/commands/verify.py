@@ -49,6 +49,11 @@ def cmd_verify(args) -> int:
     return EXIT_OK if report["passed"] else EXIT_FAILED
 
 
+# one-step stream vs one ISAM2 update per keyframe (incremental: the newest kept conditional
+# re-expressed to first order where ISAM2 re-eliminates it; measured 2.5e-6 on LIO N = 8)
+ONE_STEP_TOL = 1e-5
+
+
 def _verify_stream(args) -> int:
 
     sp, data = stream_setup(args, "float64")
@@ -58,20 +63,27 @@ def _verify_stream(args) -> int:
     problem = to_gtsam(graph)
     clusters = program.schedule.clusters
     windows = [(u["first"], u["mode"] == "batch") for u in result.updates]
-    oracle = oracles.isam2_per_keyframe(graph, problem, clusters, windows)
+    # the one-step policy (one Gauss-Newton step an update) against one ISAM2 update per
+    # keyframe; its updates end at the iteration limit by design
+    one_step = program.solver.one_step
+    oracle = oracles.isam2_per_keyframe(graph, problem, clusters, windows, settle=not one_step)
     oracle = [{k: e[k] for k in u["values"]} for u, e in zip(result.updates, oracle,
                                                               strict=True)]
     dist = oracles.per_keyframe_distance(result.updates, oracle)
     tol = STATE_TOL_F64 if program.solver.precision == "float64" else ROT_TOL_F32
+    if one_step:
+        tol = max(tol, ONE_STEP_TOL)
     worst = int(np.argmax(dist))
-    passed = result.status == "converged" and max(dist) <= tol
+    ok = ("converged", "max_iterations") if one_step else ("converged",)
+    passed = result.status in ok and max(dist) <= tol
     report = {"mode": sp.mode, "window": window,
               "keyframes": len(clusters), "status": result.status, "tolerance": tol,
               "per_keyframe_distance_isam2": dist, "passed": passed}
     lines = [f"fgc verify {args.spec}: {len(clusters)} keyframes, {mode_text(sp)}"
              f", simulator {program.solver.precision} vs gtsam.ISAM2 with the same policy "
-             "(older keyframes held, factors across the window's edge kept linear), after "
-             "every keyframe",
+             "(older keyframes held, factors across the window's edge kept linear"
+             + ("; one update per keyframe, as the stream's one Gauss-Newton step" if one_step
+                else "") + "), after every keyframe",
              f"  largest state difference {max(dist):.2e} at keyframe {worst} (tolerance "
              f"{tol:g})"]
     if window is not None:
@@ -83,9 +95,10 @@ def _verify_stream(args) -> int:
                      "measured up to 1e-2 on LIO once keyframes are marginalised; see the "
                      "README)")
     verdict = "PASSED" if passed else "FAILED"
-    why = ([f"fgc's stream ended {result.status}"] if result.status != "converged" else []) + (
+    why = ([f"fgc's stream ended {result.status}"] if result.status not in ok else []) + (
         [f"largest difference {max(dist):.2e} > {tol:g}"] if max(dist) > tol else [])
-    lines.append(f"  {verdict}: " + (f"fgc's stream converged and every keyframe is within "
+    done = "ran its one step an update" if one_step else "converged"
+    lines.append(f"  {verdict}: " + (f"fgc's stream {done} and every keyframe is within "
                                      f"{tol:g} of ISAM2" if passed else "; ".join(why)))
     print_lines(args, lines, f"fgc verify {args.spec}: {verdict}")
     estimates_out(args, graph, report, result.values)

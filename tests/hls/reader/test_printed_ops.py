@@ -23,7 +23,7 @@ from fgc_backends.hls import HlsConfig, emit
 from fgc_backends.hls.plan import PlanOptions, build_plan
 from fgc_backends.hls.reader import check, emitted_files, read_design
 from fgc_backends.hls.reader.design import _Reader
-from fgc_backends.hls.units.special_ops import printed_counts
+from fgc_backends.hls.units.special_ops import issued_counts, printed_counts
 
 ARITHMETIC = ("add", "mul", "div", "sqrt")
 
@@ -53,18 +53,21 @@ def _emit_and_read(program, tmp_path):
     return _Reader(files, plan.target.ops(plan.precision).add.latency), files, top
 
 
-def _read_function(reader, name: str) -> dict[str, int]:
-    """The reader's count of function ``name`` run once, its callees read in place."""
+def _read_function(reader, name: str, peak: bool = False) -> dict[str, int]:
+    """The reader's count of function ``name`` run once, its callees read in place (``peak``:
+    exclusive branches sharing, the larger of each kind)."""
     f = reader.functions[name]
     reader.flatten = True
     count = reader.count(f.text, {p.name: v for p in f.params
                                   if (v := reader._param_var(f, p)) is not None},
                          {}, None, frozenset())
-    return {k: n for k, n in count.ops.items() if n and k in ARITHMETIC}
+    return {k: n for k, n in (count.peak if peak else count.ops).items()
+            if n and k in ARITHMETIC}
 
 
-def _plan(block, mode: str) -> dict[str, int]:
-    return {k: n for k, n in printed_counts(block, mode).items() if n and k in ARITHMETIC}
+def _plan(block, mode: str, issued: bool = False) -> dict[str, int]:
+    counts = (issued_counts if issued else printed_counts)(block, mode)
+    return {k: n for k, n in counts.items() if n and k in ARITHMETIC}
 
 
 def test_counts_follow_the_printed_quotients(tmp_path):
@@ -87,15 +90,20 @@ def test_counts_follow_the_printed_quotients(tmp_path):
 @pytest.mark.parametrize("mode", ["jacobian", "cost"])
 def test_counts_follow_the_printed_lio_datapaths(tmp_path, mode):
     """LIO's blocks: the SO(3) logarithm, Lie coefficients and their bodies, whitening-free
-    datapath functions; what the plan counts is what the reader counts."""
+    datapath functions; what the plan counts is what the reader counts: every branch built
+    (printed_counts) and, the special functions' exclusive branches sharing, what one
+    evaluation issues (issued_counts, the reader's peak: what the plan's II is sized by)."""
     program = compile_graph(example("lio").build(N=3), name="lio", solver=SolverConfig())
     reader, _, _ = _emit_and_read(program, tmp_path)
     names = {"jacobian": "factor_{}", "cost": "factor_cost_{}"}
-    seen = 0
+    seen = shared = 0
     for b, block in enumerate(program.blocks):
         function = names[mode].format(b)
         if function not in reader.functions:  # a small block type: in factor_small's branch
             continue
         assert _plan(block, mode) == _read_function(reader, function), (block.name, mode)
+        issued = _plan(block, mode, issued=True)
+        assert issued == _read_function(reader, function, peak=True), (block.name, mode)
+        shared += issued != _plan(block, mode)
         seen += 1
-    assert seen
+    assert seen and shared  # some datapath's special functions branch

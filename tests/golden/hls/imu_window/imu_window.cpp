@@ -2719,10 +2719,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=115 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=111 cycles (the plan's)
 void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=115
+#pragma HLS PIPELINE II=111
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -2741,7 +2741,7 @@ void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
             rows.write(row);
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 115, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 111, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -3361,6 +3361,7 @@ struct LesConfig {
     static const int MAX_COLS = ::fgc::MAX_W + 1;  // w + 1: frontal, separator, right-hand side
     static const int MAX_F = ::fgc::MAX_F;
     static const int N_CPE = ::fgc::N_CPE;
+    static const int STREAM_WORDS = 1;  // --cascade-lanes: words a cycle through the cascade
     static const int N_COND = ::fgc::N_COND, N_NF = ::fgc::N_NF;  // the cascade's drain writes them
     static const bool LM = true;  // false: Gauss-Newton, no damping rows
     // fgc_eliminate.h's loops: the tables' largest trip counts, the plan's (II, depth) of L

@@ -1258,10 +1258,10 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
-// 6 x 7), whitening, into AB; one instance every II=115 cycles (the plan's)
+// 6 x 7), whitening, into AB; one instance every II=111 cycles (the plan's)
 void evaluate_1(const T x[N_X]) {
     for (int i = 0; i < 1; ++i) {
-#pragma HLS PIPELINE II=115
+#pragma HLS PIPELINE II=111
         const int f = BLOCK1_INSTANCES[i];
         T in[12], dat[13];
         gather_1(x, f, in, dat);
@@ -1275,7 +1275,7 @@ void evaluate_1(const T x[N_X]) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 115, 416);
+    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 111, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
