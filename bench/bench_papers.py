@@ -483,13 +483,13 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                 "the update's price is the plan's (model estimates: the iterations the "
                 "simulator ran, each priced as the emitted design runs it); the plan prices "
                 "every copy the emitted text holds (plan >= second reader on every part; "
-                "docs/hls.md); its window and batch kernels each carry their own units and "
-                "factor datapaths (one set of units for both is not built: even the search's "
-                "smallest design holds two kernels of about 700-800 DSP each, and one kernel "
-                "of run-time problem sizes, the window a slot range of the batch layout, "
-                "would still hold the gradient, LM control and the kept net's datapaths "
-                "over the part, docs/hls.md); the marginal and the kept net run side by side; "
-                "where an update's cycles go: docs/hls.md, 'Paper A's setting against ISAM2'")]
+                "docs/hls.md); within each kernel the gradient and the rounding-noise pass "
+                "are one module for every block type; its window and batch kernels each "
+                "carry their own units and factor datapaths (one set of units for both, one "
+                "kernel of run-time problem sizes with the window a slot range of the batch "
+                "layout, is not built; the estimate above is its plan's bound, docs/hls.md); "
+                "the marginal and the kept net run side by side; where an update's cycles "
+                "go: docs/hls.md, 'Paper A's setting against ISAM2'")]
 
 
 def paper_b(cfg: Config) -> list[Row]:

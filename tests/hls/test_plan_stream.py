@@ -277,3 +277,17 @@ def test_lm_to_convergence_keeps_its_store(paper_a_n7):
     ev = model.events_of(3, status="max_iterations")
     assert ev["accept"] == 3 and not model.reuses(ev)
     assert "batch_store" in {t.name for t in model.price(4, 3, ev).terms}
+
+
+def test_the_cost_at_x_is_priced_once_per_update(paper_a_n7):
+    """LM's start costs the window at X once per call (the plan's per-call ``factor_cost`` phase,
+    the ``cost`` event): the update prices it, the window's and a batch step's (left out, the
+    counting C simulation's keyframe 0 of LIO N = 8 counted 1.451 x the model)."""
+    _, model = paper_a_n7
+    cost = sum(phase_cycles(ph) for ph in model.plan.phases if ph.name == "factor_cost")
+    assert cost > 0
+    term = model.price(5, 2).term("cost_x")
+    assert (term.each, term.times) == (cost, 1)
+    bcost = sum(phase_cycles(ph) for ph in model.batch["plan"].phases
+                if ph.name == "factor_cost")
+    assert model.price(4, 2).term("batch_cost_x").each == bcost

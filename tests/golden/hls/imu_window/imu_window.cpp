@@ -2686,14 +2686,12 @@ void produce_0(const T x[N_X], int n, hls::stream<GramWord>& grams, bool& finite
 // block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
 // they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
-T noise_0(T noise) {
+T noise_0(T noise, T ab[NOISE_AB]) {
 #pragma HLS INLINE
     for (int i = 0; i < 7; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
-        load_rows_0(f, ab);
+        load_rows_0(f, ab);  // into rounding_noise_all's one row buffer
         T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 32; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
@@ -2808,14 +2806,12 @@ void linearize_1(const T x[N_X], bool& finite) {
 // block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
 // they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
-T noise_1(T noise) {
+T noise_1(T noise, T ab[NOISE_AB]) {
 #pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
-        load_rows_1(f, ab);
+        load_rows_1(f, ab);  // into rounding_noise_all's one row buffer
         T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
@@ -2923,14 +2919,12 @@ void linearize_2(const T x[N_X], bool& finite) {
 // block 2: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
 // they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
-T noise_2(T noise) {
+T noise_2(T noise, T ab[NOISE_AB]) {
 #pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
-        load_rows_2(f, ab);
+        load_rows_2(f, ab);  // into rounding_noise_all's one row buffer
         T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 4; ++c) scale[c] = T(0);
         for (int j = 0; j < 3; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
@@ -3038,14 +3032,12 @@ void linearize_3(const T x[N_X], bool& finite) {
 // block 3: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
 // they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
-T noise_3(T noise) {
+T noise_3(T noise, T ab[NOISE_AB]) {
 #pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
-        load_rows_3(f, ab);
+        load_rows_3(f, ab);  // into rounding_noise_all's one row buffer
         T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
@@ -3103,10 +3095,12 @@ T rounding_noise_all(const T x[N_X]) {
         FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 1, 3);
     }
     T noise = T(0);
-    noise = noise_0(noise);
-    noise = noise_1(noise);
-    noise = noise_2(noise);
-    noise = noise_3(noise);
+    T ab[NOISE_AB];  // one row buffer for every block type's rows (rounding_noise's banks)
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
+    noise = noise_0(noise, ab);
+    noise = noise_1(noise, ab);
+    noise = noise_2(noise, ab);
+    noise = noise_3(noise, ab);
     return noise;
 }
 

@@ -1202,15 +1202,14 @@ void load_rows_0(int f, T ab[96]) {
 }
 
 // block 0: the gradient of each instance from AB; false if not finite. INLINE into
-// linearize_all, whose ALLOCATION makes every block type's accumulate one module
-bool reduce_0() {
+// linearize_all, whose ALLOCATION makes every block type's accumulate one module and whose one
+// row buffer `ab` (the widest block type's banks) every block type loads its rows into
+bool reduce_0(T ab[GRAD_AB]) {
 #pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 6; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[GRAD_AB];  // the shared accumulate's: the widest block type's banks
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=GRAD_STRIDE
         load_rows_0(f, ab);
         int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
@@ -1230,14 +1229,12 @@ bool reduce_0() {
 // block 0: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
 // they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
-T noise_0(T noise) {
+T noise_0(T noise, T ab[NOISE_AB]) {
 #pragma HLS INLINE
     for (int i = 0; i < 6; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
-        load_rows_0(f, ab);
+        load_rows_0(f, ab);  // into rounding_noise_all's one row buffer
         T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 16; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
@@ -1294,15 +1291,14 @@ void load_rows_1(int f, T ab[48]) {
 }
 
 // block 1: the gradient of each instance from AB; false if not finite. INLINE into
-// linearize_all, whose ALLOCATION makes every block type's accumulate one module
-bool reduce_1() {
+// linearize_all, whose ALLOCATION makes every block type's accumulate one module and whose one
+// row buffer `ab` (the widest block type's banks) every block type loads its rows into
+bool reduce_1(T ab[GRAD_AB]) {
 #pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[GRAD_AB];  // the shared accumulate's: the widest block type's banks
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=GRAD_STRIDE
         load_rows_1(f, ab);
         int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
@@ -1321,14 +1317,12 @@ bool reduce_1() {
 // block 1: `noise` plus the cost's rounding noise of its instances at the linearisation point (from AB);
 // INLINE: the block types' running sums land in rounding_noise_all's body, one after another, so
 // they share its one adder, and its ALLOCATION makes their rounding_noise calls one module
-T noise_1(T noise) {
+T noise_1(T noise, T ab[NOISE_AB]) {
 #pragma HLS INLINE
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        T ab[NOISE_AB];  // the shared rounding_noise's: the widest block type's banks
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
-        load_rows_1(f, ab);
+        load_rows_1(f, ab);  // into rounding_noise_all's one row buffer
         T scale[NOISE_STRIDE];  // per column: largest storage entry of its variable (0: b, padding)
         for (int c = 0; c < 8; ++c) scale[c] = T(0);
         for (int j = 0; j < 6; ++j) scale[0 + j] = VAR_SCALE[FACTOR_VARS[vb + 0]];
@@ -1358,9 +1352,11 @@ bool linearize_all(const T x[N_X]) {
     evaluate_0(x);
     evaluate_1(x);
     FGC_PHASE("gradient");
+    T ab[GRAD_AB];  // one row buffer for every block type's rows (accumulate's banks)
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=GRAD_STRIDE
     bool finite = true;
-    finite = reduce_0() && finite;
-    finite = reduce_1() && finite;
+    finite = reduce_0(ab) && finite;
+    finite = reduce_1(ab) && finite;
     return finite;
 }
 
@@ -1380,8 +1376,10 @@ T rounding_noise_all(const T x[N_X]) {
         FGC_CYCLES("variable_scale", 0, "scale", VAR_X_OFF[v + 1] - VAR_X_OFF[v], 1, 3);
     }
     T noise = T(0);
-    noise = noise_0(noise);
-    noise = noise_1(noise);
+    T ab[NOISE_AB];  // one row buffer for every block type's rows (rounding_noise's banks)
+#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=NOISE_STRIDE
+    noise = noise_0(noise, ab);
+    noise = noise_1(noise, ab);
     return noise;
 }
 
