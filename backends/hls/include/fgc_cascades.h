@@ -299,8 +299,65 @@ void cholesky_set_commit_one(int q, const typename CFG::T cb[CFG::N_COND],
     *tiny = fgc_units::cpe_check<CFG>(dp, rm, STEP_F[q]);
 }
 
+// COND's aligned word pairs (2 g, 2 g + 1) the conditional of step q (-1: none) touches, from
+// the pair g0 holding its first word (cholesky_set_commit_both's trip).
+template <class CFG>
+int cholesky_set_cond_pairs(int q, int* g0) {
+    if (q < 0) {
+        *g0 = 0;
+        return 0;
+    }
+    const int c0 = STEP_COND_OFF[q], n = STEP_F[q] * (STEP_W[q] + 1);
+    *g0 = c0 >> 1;
+    return ((c0 + n - 1) >> 1) - (c0 >> 1) + 1;
+}
+
+// COND cyclic over CFG::COND_BANKS = B >= 2 banks (HlsConfig backsub_lanes, fgc_backsub.h's
+// partition; two ports a bank): both conditionals q0, q1 from cb0, cb1 in one loop, each an
+// aligned pair of COND's words a cycle (trip: the larger step's pairs,
+// cholesky_set_cond_pairs). Word x of a pair goes to bank x % B, written by the unrolled lane
+// b = x % B of the B-word group holding the pair (a static bank): a step's pair is two words of
+// two banks, so each bank takes at most one write a step a cycle (its two ports), and each CONDBUF
+// lane two reads. Then the two pivot checks, one after the other (one cpe_check).
+template <class CFG>
+void cholesky_set_commit_both(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
+                              const typename CFG::T cb1[CFG::N_COND],
+                              const typename CFG::T dp0[CFG::MAX_F],
+                              const typename CFG::T rm0[CFG::MAX_F],
+                              const typename CFG::T dp1[CFG::MAX_F],
+                              const typename CFG::T rm1[CFG::MAX_F], bool* tiny0, bool* tiny1) {
+    // (a design of one bank never calls it: B = 2 there only so that it compiles)
+    enum { B = CFG::COND_BANKS > 1 ? CFG::COND_BANKS : 2 };
+    static_assert((B & (B - 1)) == 0, "COND cyclic over a power of two banks");
+    int g0, g1;
+    const int p0 = cholesky_set_cond_pairs<CFG>(q0, &g0), p1 = cholesky_set_cond_pairs<CFG>(q1, &g1);
+    const int c0 = q0 >= 0 ? STEP_COND_OFF[q0] : 0, c1 = q1 >= 0 ? STEP_COND_OFF[q1] : 0;
+    const int n0 = q0 >= 0 ? STEP_F[q0] * (STEP_W[q0] + 1) : 0;
+    const int n1 = q1 >= 0 ? STEP_F[q1] * (STEP_W[q1] + 1) : 0;
+    const int trip = p0 > p1 ? p0 : p1;
+    for (int t = 0; t < trip; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::N_COND/2+1
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=COND inter false
+        const int a0 = 2 * (g0 + t), a1 = 2 * (g1 + t);  // each step's pair's first word
+        for (int b = 0; b < B; ++b) {
+#pragma HLS UNROLL
+            const int x0 = (a0 & ~(B - 1)) + b, x1 = (a1 & ~(B - 1)) + b;  // bank b's word
+            if (t < p0 && (x0 >> 1) == (a0 >> 1) && x0 >= c0 && x0 < c0 + n0)
+                COND[x0] = cb0[x0 - c0];
+            if (t < p1 && (x1 >> 1) == (a1 >> 1) && x1 >= c1 && x1 < c1 + n1)
+                COND[x1] = cb1[x1 - c1];
+        }
+    }
+    FGC_CYCLES("assemble", 0, "cond", trip, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    if (q0 >= 0) *tiny0 = fgc_units::cpe_check<CFG>(dp0, rm0, STEP_F[q0]);
+    if (q1 >= 0) *tiny1 = fgc_units::cpe_check<CFG>(dp1, rm1, STEP_F[q1]);
+}
+
 // The committer: the region before's steps q0, q1 (cascade 0's, 1's) into COND, each checked
-// (*tiny0, *tiny1).
+// (*tiny0, *tiny1). COND in one bank (CFG::COND_BANKS 1): its two ports are one step's two words
+// a cycle, so one step after the other; in more (back-substitution's width), both at once
+// (cholesky_set_commit_both).
 template <class CFG>
 void cholesky_set_commit(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
                          const typename CFG::T cb1[CFG::N_COND],
@@ -308,7 +365,12 @@ void cholesky_set_commit(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
                          const typename CFG::T dp1[CFG::MAX_F], const typename CFG::T rm1[CFG::MAX_F],
                          bool* tiny0, bool* tiny1) {
 #pragma HLS ALLOCATION function instances=cholesky_set_commit_one<CFG> limit=1
+#pragma HLS ALLOCATION function instances=fgc_units::cpe_check<CFG> limit=1
     FGC_BRANCH();
+    if (CFG::COND_BANKS > 1) {
+        cholesky_set_commit_both<CFG>(q0, q1, cb0, cb1, dp0, rm0, dp1, rm1, tiny0, tiny1);
+        return;
+    }
     cholesky_set_commit_one<CFG>(q0, cb0, dp0, rm0, tiny0);
     cholesky_set_commit_one<CFG>(q1, cb1, dp1, rm1, tiny1);
 }
