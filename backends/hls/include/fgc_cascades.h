@@ -55,14 +55,40 @@ enum { CHOLESKY_SETS_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEP
 // A step's other children (the other cascade's, or older) are added before its region by
 // cholesky_set_alone (sequential: it reads any NF lane).
 
-// Step s's factor Grams into ha (all zero): the first stored two entries a cycle after its
-// column map, the further ones added one entry a cycle (as cholesky_assemble_first / _adds). A
-// factor whose Gram the HGC streams beside the elimination (CFG::staged(fac) >= 0: its offset in
-// its region's stage lane) is read from `stage` (the lane the Gram source filled a pass before)
-// instead of GRAM.
+// The column maps of steps s0's and s1's first factors (-1, or no factor: none) into the
+// registers map0, map1, an entry of each a cycle (FACTOR_COLMAP's two ports; trip the larger
+// factor's width), each closed by its step's w (the gradient column), so that the two steps'
+// Grams follow each other without a map loop between them.
+template <class CFG>
+void cholesky_set_maps(int s0, int s1, int map0[CFG::MAX_W + 1], int map1[CFG::MAX_W + 1]) {
+    const bool h0 = s0 >= 0 && STEP_FACTOR_BEGIN[s0] < STEP_FACTOR_BEGIN[s0 + 1];
+    const bool h1 = s1 >= 0 && STEP_FACTOR_BEGIN[s1] < STEP_FACTOR_BEGIN[s1 + 1];
+    const int fa0 = h0 ? STEP_FACTORS[STEP_FACTOR_BEGIN[s0]] : 0;
+    const int fa1 = h1 ? STEP_FACTORS[STEP_FACTOR_BEGIN[s1]] : 0;
+    const int cb0 = FACTOR_COLMAP_BEGIN[fa0], cb1 = FACTOR_COLMAP_BEGIN[fa1];
+    const int d0 = h0 ? FACTOR_COLMAP_BEGIN[fa0 + 1] - cb0 : 0;
+    const int d1 = h1 ? FACTOR_COLMAP_BEGIN[fa1 + 1] - cb1 : 0;
+    const int d = d0 > d1 ? d0 : d1;
+    for (int c = 0; c < d; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
+#pragma HLS PIPELINE II=1
+        if (c < d0) map0[c] = FACTOR_COLMAP[cb0 + c];
+        if (c < d1) map1[c] = FACTOR_COLMAP[cb1 + c];
+    }
+    if (h0) map0[d0] = STEP_W[s0];
+    if (h1) map1[d1] = STEP_W[s1];
+    FGC_CYCLES("assemble", 0, "map", d, CFG::MOVE_II, CFG::MOVE_DEPTH);
+}
+
+// Step s's factor Grams into ha (all zero): the first stored two entries a cycle through its
+// column map (map: cholesky_set_maps'), the further ones added one entry a cycle (as
+// cholesky_assemble_first / _adds). A factor whose Gram the HGC streams beside the elimination
+// (CFG::staged(fac) >= 0: its offset in its region's stage lane) is read from `stage` (the lane
+// the Gram source filled a pass before) instead of GRAM.
 template <class CFG>
 void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
-                             const typename CFG::T stage[CFG::N_STAGE]) {
+                             const typename CFG::T stage[CFG::N_STAGE],
+                             const int map[CFG::MAX_W + 1]) {
     if (s < 0) return;
     const int w = STEP_W[s];
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
@@ -74,15 +100,6 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
         const int so = CFG::staged(fac);
         const int n = d * (d + 1) / 2 + d;
         if (e == STEP_FACTOR_BEGIN[s]) {
-            int map[CFG::MAX_W + 1];
-#pragma HLS ARRAY_PARTITION variable=map complete
-            for (int c = 0; c < d; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
-#pragma HLS PIPELINE II=1
-                map[c] = FACTOR_COLMAP[cb + c];
-            }
-            map[d] = w;
-            FGC_CYCLES("assemble", 0, "map", d, CFG::MOVE_II, CFG::MOVE_DEPTH);
             for (int k = 0, p = 0, q = 0; k < n; k += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED/2
 #pragma HLS PIPELINE II=1
@@ -124,16 +141,21 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
 }
 
 // The grams process: steps n0, n1 (cascade 0's, 1's of the next region; -1 none) into their
-// lanes, one after the other through one copy of the loops (one adder); their streamed Grams
-// from `stage` (the next region's stage lane; without the HGC beside, STAGE_NONE, never read).
+// lanes, both first factors' column maps in one loop, then one step after the other through one
+// copy of the loops (one adder); their streamed Grams from `stage` (the next region's stage
+// lane; without the HGC beside, STAGE_NONE, never read).
 template <class CFG>
 void cholesky_set_grams(int n0, int n1, typename CFG::T ha0[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                         typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                         const typename CFG::T stage[CFG::N_STAGE]) {
 #pragma HLS ALLOCATION function instances=cholesky_set_step_grams<CFG> limit=1
     FGC_BRANCH();
-    cholesky_set_step_grams<CFG>(n0, ha0, stage);
-    cholesky_set_step_grams<CFG>(n1, ha1, stage);
+    int map0[CFG::MAX_W + 1], map1[CFG::MAX_W + 1];
+#pragma HLS ARRAY_PARTITION variable=map0 complete
+#pragma HLS ARRAY_PARTITION variable=map1 complete
+    cholesky_set_maps<CFG>(n0, n1, map0, map1);
+    cholesky_set_step_grams<CFG>(n0, ha0, stage, map0);
+    cholesky_set_step_grams<CFG>(n1, ha1, stage, map1);
 }
 
 // Step s's streamed child's separator map inverted into inv (parent column -> its index in

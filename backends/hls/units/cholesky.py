@@ -696,8 +696,9 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
     - the source: the streamed children's separator maps into registers (``move``, trip the
       larger separator), then both steps' words, two of a row a cycle each (trip the larger
       step's :func:`cpe_pairs`; ``move``, or ``scatter`` with a streamed child's words added);
-    - the grams process: the next region's steps' Grams into the other lanes
-      (:func:`assemble_loops`);
+    - the grams process: the next region's steps' Grams into the other lanes, both first
+      factors' column maps in one loop (``move``, trip the wider), then
+      :func:`assemble_loops` but the maps, step after step;
     - the committer: the region before's conditionals from CONDBUF into COND, two words a
       cycle, each step's pivot check after its copy (:func:`cpe_check_loops`: off the
       cascade's path); with COND cyclic over ``cond_banks`` > 1 (back-substitution's width:
@@ -710,9 +711,18 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
     kids = cascade_children(tables, regions)
     sw, sf = tables["STEP_W"], tables["STEP_F"]
 
-    def grams(reg):
-        return tuple(lp for s in reg if s >= 0
-                     for lp in assemble_loops(tables, s, timing, children=False))
+    def first_width(s):  # the width of step s's first factor (0: none)
+        fb, cb = tables["STEP_FACTOR_BEGIN"], tables["FACTOR_COLMAP_BEGIN"]
+        if s < 0 or fb[s] == fb[s + 1]:
+            return 0
+        fac = tables["STEP_FACTORS"][fb[s]]
+        return cb[fac + 1] - cb[fac]
+
+    def grams(reg):  # both first factors' column maps in one loop, then step after step
+        return (kernel_loop("map", max(first_width(s) for s in reg), "move", timing),
+                *(lp for s in reg if s >= 0
+                  for lp in assemble_loops(tables, s, timing, children=False)
+                  if lp.name != "map"))
 
     def commit(reg):  # each conditional copied, then its pivots checked (cpe_check)
         if cond_banks > 1:  # both copied at once, then both checked
