@@ -337,10 +337,12 @@ int cholesky_set_cond_pairs(int q, int* g0) {
 // COND cyclic over CFG::COND_BANKS = B >= 2 banks (HlsConfig backsub_lanes, fgc_backsub.h's
 // partition; two ports a bank): both conditionals q0, q1 from cb0, cb1 in one loop, each an
 // aligned pair of COND's words a cycle (trip: the larger step's pairs,
-// cholesky_set_cond_pairs). Word x of a pair goes to bank x % B, written by the unrolled lane
-// b = x % B of the B-word group holding the pair (a static bank): a step's pair is two words of
-// two banks, so each bank takes at most one write a step a cycle (its two ports), and each CONDBUF
-// lane two reads. Then the two pivot checks, one after the other (one cpe_check).
+// cholesky_set_cond_pairs). A step reads its pair's two words from its CONDBUF lane (two reads
+// of its two ports) and writes word x of it through the unrolled lane b = x % B of the
+// B-word group B (a / B) + b holding the pair (a static bank, as fgc_backsub.h's
+// cond_load_wide reads COND): the pair's two words are in two banks, so each bank takes at most
+// one write a step a cycle (its two ports for the two steps). Then the two pivot checks, one
+// after the other (one cpe_check).
 template <class CFG>
 void cholesky_set_commit_both(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
                               const typename CFG::T cb1[CFG::N_COND],
@@ -348,6 +350,7 @@ void cholesky_set_commit_both(int q0, int q1, const typename CFG::T cb0[CFG::N_C
                               const typename CFG::T rm0[CFG::MAX_F],
                               const typename CFG::T dp1[CFG::MAX_F],
                               const typename CFG::T rm1[CFG::MAX_F], bool* tiny0, bool* tiny1) {
+    typedef typename CFG::T T;
     // (a design of one bank never calls it: B = 2 there only so that it compiles)
     enum { B = CFG::COND_BANKS > 1 ? CFG::COND_BANKS : 2 };
     static_assert((B & (B - 1)) == 0, "COND cyclic over a power of two banks");
@@ -362,13 +365,19 @@ void cholesky_set_commit_both(int q0, int q1, const typename CFG::T cb0[CFG::N_C
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=COND inter false
         const int a0 = 2 * (g0 + t), a1 = 2 * (g1 + t);  // each step's pair's first word
+        const int i0 = a0 - c0, i1 = a1 - c1;  // its index in the step's conditional
+        const bool on0 = t < p0, on1 = t < p1;
+        const T v00 = on0 && i0 >= 0 ? cb0[i0] : T(0);
+        const T v01 = on0 && i0 + 1 < n0 ? cb0[i0 + 1] : T(0);
+        const T v10 = on1 && i1 >= 0 ? cb1[i1] : T(0);
+        const T v11 = on1 && i1 + 1 < n1 ? cb1[i1 + 1] : T(0);
         for (int b = 0; b < B; ++b) {
 #pragma HLS UNROLL
-            const int x0 = (a0 & ~(B - 1)) + b, x1 = (a1 & ~(B - 1)) + b;  // bank b's word
-            if (t < p0 && (x0 >> 1) == (a0 >> 1) && x0 >= c0 && x0 < c0 + n0)
-                COND[x0] = cb0[x0 - c0];
-            if (t < p1 && (x1 >> 1) == (a1 >> 1) && x1 >= c1 && x1 < c1 + n1)
-                COND[x1] = cb1[x1 - c1];
+            const int x0 = B * (a0 / B) + b, x1 = B * (a1 / B) + b;  // bank b's word
+            if (on0 && (b >> 1) == ((a0 % B) >> 1) && x0 >= c0 && x0 < c0 + n0)
+                COND[x0] = (b & 1) ? v01 : v00;
+            if (on1 && (b >> 1) == ((a1 % B) >> 1) && x1 >= c1 && x1 < c1 + n1)
+                COND[x1] = (b & 1) ? v11 : v10;
         }
     }
     FGC_CYCLES("assemble", 0, "cond", trip, CFG::MOVE_II, CFG::MOVE_DEPTH);
