@@ -13,7 +13,8 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP, FACTOR_GRAM_OFF,
 // N_STEPS) and N_REGIONS, REGION_STEP, STEP_REGION, STEP_CASCADE, STEP_STREAMED (below); the
-// memories GRAM, COND, NF0, NF1, HA0, HA1, HF0, HF1, CONDBUF[4], DPIV[4], RMAX[4]. CFG is the
+// memories GRAM, COND, NF0, NF1, HA0, HA1, HF0, HF1, CONDBUF_K0[2], CONDBUF_K1[2], DPIV[4],
+// RMAX[4]. CFG is the
 // kernel's SetConfig: its LesConfig with N_COND the size of a CONDBUF lane (a step's
 // conditional from 0).
 //
@@ -39,7 +40,7 @@ enum { CHOLESKY_SETS_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEP
 // none), factored side by side by two cascades, each with its own CPEs, feed and drain.
 // Memories (the kernel's): HA0, HA1 (cascade k's two lanes of [H | g], lane r % 2 region r's),
 // HF0, HF1 (each cascade's trailing rows between rounds), NF0 / NF1[r % 2] (the update
-// matrices cascade 0's / 1's drain writes in region r), CONDBUF[2 k + r % 2] (its conditional, copied into
+// matrices cascade 0's / 1's drain writes in region r), CONDBUF_Kk[r % 2] (its conditional, copied into
 // COND beside the next region: COND has one writer, the committer). One cholesky_sets region,
 // five processes:
 //   cholesky_set_source   both steps' words out of their lanes into the two cascades, two
@@ -334,7 +335,8 @@ int cholesky_set_cond_pairs(int q, int* g0) {
     return ((c0 + n - 1) >> 1) - (c0 >> 1) + 1;
 }
 
-// COND cyclic over CFG::COND_BANKS = B >= 2 banks (HlsConfig backsub_lanes, fgc_backsub.h's
+#ifdef FGC_COND_BANKS  // COND in banks (the kernel defines it with backsub_lanes > 1)
+// COND cyclic over FGC_COND_BANKS = B >= 2 banks (HlsConfig backsub_lanes, fgc_backsub.h's
 // partition; two ports a bank): both conditionals q0, q1 from cb0, cb1 in one loop, each an
 // aligned pair of COND's words a cycle (trip: the larger step's pairs,
 // cholesky_set_cond_pairs). A step reads its pair's two words from its CONDBUF lane (two reads
@@ -350,10 +352,10 @@ void cholesky_set_commit_both(int q0, int q1, const typename CFG::T cb0[CFG::N_C
                               const typename CFG::T rm0[CFG::MAX_F],
                               const typename CFG::T dp1[CFG::MAX_F],
                               const typename CFG::T rm1[CFG::MAX_F], bool* tiny0, bool* tiny1) {
+#pragma HLS ALLOCATION function instances=fgc_units::cpe_check<CFG> limit=1
     typedef typename CFG::T T;
-    // (a design of one bank never calls it: B = 2 there only so that it compiles)
-    enum { B = CFG::COND_BANKS > 1 ? CFG::COND_BANKS : 2 };
-    static_assert((B & (B - 1)) == 0, "COND cyclic over a power of two banks");
+    enum { B = FGC_COND_BANKS };
+    static_assert(B >= 2 && (B & (B - 1)) == 0, "COND cyclic over a power of two >= 2 banks");
     int g0, g1;
     const int p0 = cholesky_set_cond_pairs<CFG>(q0, &g0), p1 = cholesky_set_cond_pairs<CFG>(q1, &g1);
     const int c0 = q0 >= 0 ? STEP_COND_OFF[q0] : 0, c1 = q1 >= 0 ? STEP_COND_OFF[q1] : 0;
@@ -384,10 +386,11 @@ void cholesky_set_commit_both(int q0, int q1, const typename CFG::T cb0[CFG::N_C
     if (q0 >= 0) *tiny0 = fgc_units::cpe_check<CFG>(dp0, rm0, STEP_F[q0]);
     if (q1 >= 0) *tiny1 = fgc_units::cpe_check<CFG>(dp1, rm1, STEP_F[q1]);
 }
+#endif
 
 // The committer: the region before's steps q0, q1 (cascade 0's, 1's) into COND, each checked
-// (*tiny0, *tiny1). COND in one bank (CFG::COND_BANKS 1): its two ports are one step's two words
-// a cycle, so one step after the other; in more (back-substitution's width), both at once
+// (*tiny0, *tiny1). COND in one bank: its two ports are one step's two words a cycle, so one
+// step after the other; in more (FGC_COND_BANKS: back-substitution's width), both at once
 // (cholesky_set_commit_both).
 template <class CFG>
 void cholesky_set_commit(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
@@ -395,15 +398,16 @@ void cholesky_set_commit(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
                          const typename CFG::T dp0[CFG::MAX_F], const typename CFG::T rm0[CFG::MAX_F],
                          const typename CFG::T dp1[CFG::MAX_F], const typename CFG::T rm1[CFG::MAX_F],
                          bool* tiny0, bool* tiny1) {
+#ifndef FGC_COND_BANKS
 #pragma HLS ALLOCATION function instances=cholesky_set_commit_one<CFG> limit=1
-#pragma HLS ALLOCATION function instances=fgc_units::cpe_check<CFG> limit=1
+#endif
     FGC_BRANCH();
-    if (CFG::COND_BANKS > 1) {
-        cholesky_set_commit_both<CFG>(q0, q1, cb0, cb1, dp0, rm0, dp1, rm1, tiny0, tiny1);
-        return;
-    }
+#ifdef FGC_COND_BANKS
+    cholesky_set_commit_both<CFG>(q0, q1, cb0, cb1, dp0, rm0, dp1, rm1, tiny0, tiny1);
+#else
     cholesky_set_commit_one<CFG>(q0, cb0, dp0, rm0, tiny0);
     cholesky_set_commit_one<CFG>(q1, cb1, dp1, rm1, tiny1);
+#endif
 }
 
 #ifndef FGC_CASCADES_BESIDE  // (else: cholesky_sets_beside, below)
@@ -494,9 +498,9 @@ void cholesky_set_alone(int s) {
 // region (its two parity call sites, one RTL copy), j = -1 the grams process alone (the first
 // region's Grams into lanes 0), j = 0 ... N_REGIONS - 1 region j (after its steps' children
 // other than the streamed ones, cholesky_set_alone), j = N_REGIONS the committer alone (the
-// last region's conditionals). Region j streams lanes j % 2 and writes NF / CONDBUF lanes
-// 2 k + j % 2; the grams process fills lanes 1 - j % 2, the source reads NF lanes
-// 2 k + 1 - j % 2 and the committer CONDBUF lanes 2 k + 1 - j % 2 (what region j - 1 wrote).
+// last region's conditionals). Region j streams lanes j % 2 and writes NFk[j % 2] and
+// CONDBUF_Kk[j % 2] (cascade k's); the grams process fills lanes 1 - j % 2, the source reads
+// NFk[1 - j % 2] and the committer CONDBUF_Kk[1 - j % 2] (what region j - 1 wrote).
 // Every step runs even after one fails; false if any was not positive definite or had a
 // pivot too small.
 template <class CFG>
@@ -507,7 +511,8 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
 #pragma HLS ARRAY_PARTITION variable=HA1 complete dim=4
 #pragma HLS ARRAY_PARTITION variable=NF0 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=NF1 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=CONDBUF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF_K0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF_K1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
 #pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
     FGC_EVENT("solve");
@@ -531,13 +536,13 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
         bool tiny0 = false, tiny1 = false;
         if ((j & 1) == 0) {
             cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[0], HA1[0], HA0[1], HA1[1],
-                               NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF[0], CONDBUF[2], CONDBUF[1],
-                               CONDBUF[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2], DPIV[1], RMAX[1],
+                               NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF_K0[0], CONDBUF_K1[0], CONDBUF_K0[1],
+                               CONDBUF_K1[1], DPIV[0], RMAX[0], DPIV[2], RMAX[2], DPIV[1], RMAX[1],
                                DPIV[3], RMAX[3], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         } else {
             cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[1], HA1[1], HA0[0], HA1[0],
-                               NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF[1], CONDBUF[3], CONDBUF[0],
-                               CONDBUF[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3], DPIV[0], RMAX[0],
+                               NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF_K0[1], CONDBUF_K1[1], CONDBUF_K0[0],
+                               CONDBUF_K1[0], DPIV[1], RMAX[1], DPIV[3], RMAX[3], DPIV[0], RMAX[0],
                                DPIV[2], RMAX[2], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         }
         FGC_JOIN();
@@ -624,7 +629,8 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
 #pragma HLS ARRAY_PARTITION variable=HA1 complete dim=4
 #pragma HLS ARRAY_PARTITION variable=NF0 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=NF1 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=CONDBUF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF_K0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF_K1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
 #pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
 #pragma HLS ARRAY_PARTITION variable=STAGE complete dim=1
@@ -651,15 +657,15 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
         bool tiny0 = false, tiny1 = false;
         if ((j & 1) == 0) {
             cholesky_sets_beside<CFG>(s0, s1, n0, n1, q0, q1, src, relin, mu, HA0[0], HA1[0],
-                                      HA0[1], HA1[1], NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF[0],
-                                      CONDBUF[2], CONDBUF[1], CONDBUF[3], DPIV[0], RMAX[0],
+                                      HA0[1], HA1[1], NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF_K0[0],
+                                      CONDBUF_K1[0], CONDBUF_K0[1], CONDBUF_K1[1], DPIV[0], RMAX[0],
                                       DPIV[2], RMAX[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3],
                                       STAGE[1], STAGE[0], grams, &npd0, &npd1, &unfit0, &unfit1,
                                       &tiny0, &tiny1);
         } else {
             cholesky_sets_beside<CFG>(s0, s1, n0, n1, q0, q1, src, relin, mu, HA0[1], HA1[1],
-                                      HA0[0], HA1[0], NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF[1],
-                                      CONDBUF[3], CONDBUF[0], CONDBUF[2], DPIV[1], RMAX[1],
+                                      HA0[0], HA1[0], NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF_K0[1],
+                                      CONDBUF_K1[1], CONDBUF_K0[0], CONDBUF_K1[0], DPIV[1], RMAX[1],
                                       DPIV[3], RMAX[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2],
                                       STAGE[0], STAGE[1], grams, &npd0, &npd1, &unfit0, &unfit1,
                                       &tiny0, &tiny1);
