@@ -25,6 +25,7 @@ from fgc_backends.hls.units.cholesky import (
     beside_region_layout,
     cascade_children,
     cascade_regions,
+    cond_pairs,
 )
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -112,11 +113,44 @@ def test_two_cascades_price_the_ends_side_by_side(lio30):
         accel_plan(lio30, HlsConfig(scalar="float", unit_sets=3))
 
 
-def test_two_cascades_match_the_simulator(tmp_path):
-    # LM in double: the C simulation's estimates are the simulator's to 1e-9 (relative)
+def test_a_banked_cond_takes_both_conditionals_at_once(lio30):
+    # COND cyclic over back-substitution's two banks: the committer writes an aligned pair of
+    # each region's two conditionals a cycle (fgc_cascades.h's cholesky_set_commit_both), so
+    # its copy is the larger step's pairs, not the two steps' one after the other
+    tables = _tables(lio30)
+    plans = {b: accel_plan(lio30, HlsConfig(scalar="float", unit_sets=2, backsub_lanes=b,
+                                            cascade_lanes=2)) for b in (1, 2)}
+    regions = cascade_regions(tables, [tables["LEVEL_STEPS"][i]
+                                       for i in range(len(tables["LEVEL_STEPS"]))])
+    a, b = regions[0]
+    assert a >= 0 and b >= 0
+    for banks, plan in plans.items():
+        committer = next(p for ph in plan.phases if ph.name == "recholesky_level1"
+                         for p in ph.processes if p.name.startswith("committer"))
+        copies = [lp.trip for lp in committer.loops if lp.name.startswith("cond")]
+        if banks == 1:
+            assert copies == [-(-tables["STEP_F"][s] * (tables["STEP_W"][s] + 1) // 2)
+                              for s in (a, b)]
+        else:
+            assert copies == [max(cond_pairs(tables, s) for s in (a, b))]
+            c0, n = tables["STEP_COND_OFF"][a], tables["STEP_F"][a] * (tables["STEP_W"][a] + 1)
+            assert cond_pairs(tables, a) == len({x // 2 for x in range(c0, c0 + n)})
+    # the committer no longer bounds a region (two copies of 248 pairs and two checks, 570,
+    # against the cascades' 525; the grams process, 560, does now), and no operator more
+    one, two = (plan_cost(plans[b]) for b in (1, 2))
+    assert dict(one.dsp_by_unit)["cpe"] == dict(two.dsp_by_unit)["cpe"]
+    assert dict(two.phase_cycles)["hgc_beside"] < dict(one.phase_cycles)["hgc_beside"]
+
+
+@pytest.mark.parametrize("banks", [1, 2])
+def test_two_cascades_match_the_simulator(tmp_path, banks):
+    # LM in double: the C simulation's estimates are the simulator's to 1e-9 (relative); banks:
+    # COND cyclic over back-substitution's two banks, both conditionals of a region committed
+    # at once (conditionals at even and odd offsets)
     graph = lio.build(N=6)
-    program = compile_graph(graph, SolverConfig(linear="cholesky", cpe=4), name="casc")
-    project = emit(program, tmp_path, HlsConfig(scalar="double", unit_sets=2))
+    program = compile_graph(graph, SolverConfig(linear="cholesky", cpe=4), name=f"casc{banks}")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", unit_sets=2,
+                                                backsub_lanes=banks))
     regions = {r.function: r for r in read_network(
         (tmp_path / "include" / "fgc_cascades.h").read_text())}
     assert regions["cholesky_sets"].processes == (
@@ -136,16 +170,18 @@ def test_two_cascades_match_the_simulator(tmp_path):
     assert worst <= 1e-9
 
 
-@pytest.mark.parametrize("beside", [False, True])
-def test_two_cascades_count_what_the_plan_prices(beside):
+@pytest.mark.parametrize("beside,banks", [(False, 1), (True, 1), (True, 2)])
+def test_two_cascades_count_what_the_plan_prices(beside, banks):
     # beside: the HGC beside the elimination (fgc_cascades.h's cholesky_eliminate_sets_beside,
-    # units/cholesky.py's beside_set_passes): its passes inside phase hgc_beside
+    # units/cholesky.py's beside_set_passes): its passes inside phase hgc_beside; banks: COND
+    # cyclic over two (backsub_lanes), the committer's both conditionals at once
     sys.path.insert(0, str(ROOT / "bench"))
     from bench_cycles import measure
 
     solver = SolverConfig(method="gn", linear="cholesky", cpe=4, precision="float32")
-    phases, events = measure("c2", imu_window.build(N=5), solver,
-                             HlsConfig(scalar="float", unit_sets=2, hgc_beside=beside))
+    phases, events = measure(f"c2{banks}", imu_window.build(N=5), solver,
+                             HlsConfig(scalar="float", unit_sets=2, hgc_beside=beside,
+                                       backsub_lanes=banks))
     assert events["solve"] >= 1
     groups = {"hgc_beside"} if beside else {"assemble", "cholesky"}
     assert groups <= {g for g, (c, m) in phases.items() if c > 0 and m > 0}

@@ -13,7 +13,8 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP, FACTOR_GRAM_OFF,
 // N_STEPS) and N_REGIONS, REGION_STEP, STEP_REGION, STEP_CASCADE, STEP_STREAMED (below); the
-// memories GRAM, COND, NF0, NF1, HA0, HA1, HF0, HF1, CONDBUF[4], DPIV[4], RMAX[4]. CFG is the
+// memories GRAM, COND, NF0, NF1, HA0, HA1, HF0, HF1, CONDBUF_K0[2], CONDBUF_K1[2], DPIV[4],
+// RMAX[4]. CFG is the
 // kernel's SetConfig: its LesConfig with N_COND the size of a CONDBUF lane (a step's
 // conditional from 0).
 //
@@ -39,7 +40,7 @@ enum { CHOLESKY_SETS_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEP
 // none), factored side by side by two cascades, each with its own CPEs, feed and drain.
 // Memories (the kernel's): HA0, HA1 (cascade k's two lanes of [H | g], lane r % 2 region r's),
 // HF0, HF1 (each cascade's trailing rows between rounds), NF0 / NF1[r % 2] (the update
-// matrices cascade 0's / 1's drain writes in region r), CONDBUF[2 k + r % 2] (its conditional, copied into
+// matrices cascade 0's / 1's drain writes in region r), CONDBUF_Kk[r % 2] (its conditional, copied into
 // COND beside the next region: COND has one writer, the committer). One cholesky_sets region,
 // five processes:
 //   cholesky_set_source   both steps' words out of their lanes into the two cascades, two
@@ -55,14 +56,40 @@ enum { CHOLESKY_SETS_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEP
 // A step's other children (the other cascade's, or older) are added before its region by
 // cholesky_set_alone (sequential: it reads any NF lane).
 
-// Step s's factor Grams into ha (all zero): the first stored two entries a cycle after its
-// column map, the further ones added one entry a cycle (as cholesky_assemble_first / _adds). A
-// factor whose Gram the HGC streams beside the elimination (CFG::staged(fac) >= 0: its offset in
-// its region's stage lane) is read from `stage` (the lane the Gram source filled a pass before)
-// instead of GRAM.
+// The column maps of steps s0's and s1's first factors (-1, or no factor: none) into the
+// registers map0, map1, an entry of each a cycle (FACTOR_COLMAP's two ports; trip the larger
+// factor's width), each closed by its step's w (the gradient column), so that the two steps'
+// Grams follow each other without a map loop between them.
+template <class CFG>
+void cholesky_set_maps(int s0, int s1, int map0[CFG::MAX_W + 1], int map1[CFG::MAX_W + 1]) {
+    const bool h0 = s0 >= 0 && STEP_FACTOR_BEGIN[s0] < STEP_FACTOR_BEGIN[s0 + 1];
+    const bool h1 = s1 >= 0 && STEP_FACTOR_BEGIN[s1] < STEP_FACTOR_BEGIN[s1 + 1];
+    const int fa0 = h0 ? STEP_FACTORS[STEP_FACTOR_BEGIN[s0]] : 0;
+    const int fa1 = h1 ? STEP_FACTORS[STEP_FACTOR_BEGIN[s1]] : 0;
+    const int cb0 = FACTOR_COLMAP_BEGIN[fa0], cb1 = FACTOR_COLMAP_BEGIN[fa1];
+    const int d0 = h0 ? FACTOR_COLMAP_BEGIN[fa0 + 1] - cb0 : 0;
+    const int d1 = h1 ? FACTOR_COLMAP_BEGIN[fa1 + 1] - cb1 : 0;
+    const int d = d0 > d1 ? d0 : d1;
+    for (int c = 0; c < d; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
+#pragma HLS PIPELINE II=1
+        if (c < d0) map0[c] = FACTOR_COLMAP[cb0 + c];
+        if (c < d1) map1[c] = FACTOR_COLMAP[cb1 + c];
+    }
+    if (h0) map0[d0] = STEP_W[s0];
+    if (h1) map1[d1] = STEP_W[s1];
+    FGC_CYCLES("assemble", 0, "map", d, CFG::MOVE_II, CFG::MOVE_DEPTH);
+}
+
+// Step s's factor Grams into ha (all zero): the first stored two entries a cycle through its
+// column map (map: cholesky_set_maps'), the further ones added one entry a cycle (as
+// cholesky_assemble_first / _adds). A factor whose Gram the HGC streams beside the elimination
+// (CFG::staged(fac) >= 0: its offset in its region's stage lane) is read from `stage` (the lane
+// the Gram source filled a pass before) instead of GRAM.
 template <class CFG>
 void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
-                             const typename CFG::T stage[CFG::N_STAGE]) {
+                             const typename CFG::T stage[CFG::N_STAGE],
+                             const int map[CFG::MAX_W + 1]) {
     if (s < 0) return;
     const int w = STEP_W[s];
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
@@ -74,15 +101,6 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
         const int so = CFG::staged(fac);
         const int n = d * (d + 1) / 2 + d;
         if (e == STEP_FACTOR_BEGIN[s]) {
-            int map[CFG::MAX_W + 1];
-#pragma HLS ARRAY_PARTITION variable=map complete
-            for (int c = 0; c < d; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
-#pragma HLS PIPELINE II=1
-                map[c] = FACTOR_COLMAP[cb + c];
-            }
-            map[d] = w;
-            FGC_CYCLES("assemble", 0, "map", d, CFG::MOVE_II, CFG::MOVE_DEPTH);
             for (int k = 0, p = 0, q = 0; k < n; k += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED/2
 #pragma HLS PIPELINE II=1
@@ -124,16 +142,21 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
 }
 
 // The grams process: steps n0, n1 (cascade 0's, 1's of the next region; -1 none) into their
-// lanes, one after the other through one copy of the loops (one adder); their streamed Grams
-// from `stage` (the next region's stage lane; without the HGC beside, STAGE_NONE, never read).
+// lanes, both first factors' column maps in one loop, then one step after the other through one
+// copy of the loops (one adder); their streamed Grams from `stage` (the next region's stage
+// lane; without the HGC beside, STAGE_NONE, never read).
 template <class CFG>
 void cholesky_set_grams(int n0, int n1, typename CFG::T ha0[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                         typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                         const typename CFG::T stage[CFG::N_STAGE]) {
 #pragma HLS ALLOCATION function instances=cholesky_set_step_grams<CFG> limit=1
     FGC_BRANCH();
-    cholesky_set_step_grams<CFG>(n0, ha0, stage);
-    cholesky_set_step_grams<CFG>(n1, ha1, stage);
+    int map0[CFG::MAX_W + 1], map1[CFG::MAX_W + 1];
+#pragma HLS ARRAY_PARTITION variable=map0 complete
+#pragma HLS ARRAY_PARTITION variable=map1 complete
+    cholesky_set_maps<CFG>(n0, n1, map0, map1);
+    cholesky_set_step_grams<CFG>(n0, ha0, stage, map0);
+    cholesky_set_step_grams<CFG>(n1, ha1, stage, map1);
 }
 
 // Step s's streamed child's separator map inverted into inv (parent column -> its index in
@@ -299,18 +322,92 @@ void cholesky_set_commit_one(int q, const typename CFG::T cb[CFG::N_COND],
     *tiny = fgc_units::cpe_check<CFG>(dp, rm, STEP_F[q]);
 }
 
+// COND's aligned word pairs (2 g, 2 g + 1) the conditional of step q (-1: none) touches, from
+// the pair g0 holding its first word (cholesky_set_commit_both's trip).
+template <class CFG>
+int cholesky_set_cond_pairs(int q, int* g0) {
+    if (q < 0) {
+        *g0 = 0;
+        return 0;
+    }
+    const int c0 = STEP_COND_OFF[q], n = STEP_F[q] * (STEP_W[q] + 1);
+    *g0 = c0 >> 1;
+    return ((c0 + n - 1) >> 1) - (c0 >> 1) + 1;
+}
+
+#ifdef FGC_COND_BANKS  // COND in banks (the kernel defines it with backsub_lanes > 1)
+// COND cyclic over FGC_COND_BANKS = B >= 2 banks (HlsConfig backsub_lanes, fgc_backsub.h's
+// partition; two ports a bank): both conditionals q0, q1 from cb0, cb1 in one loop, each an
+// aligned pair of COND's words a cycle (trip: the larger step's pairs,
+// cholesky_set_cond_pairs). A step reads its pair's two words from its CONDBUF lane (two reads
+// of its two ports) and writes word x of it through the unrolled lane b = x % B of the
+// B-word group B (a / B) + b holding the pair (a static bank, as fgc_backsub.h's
+// cond_load_wide reads COND): the pair's two words are in two banks, so each bank takes at most
+// one write a step a cycle (its two ports for the two steps). Then the two pivot checks, one
+// after the other (one cpe_check).
+template <class CFG>
+void cholesky_set_commit_both(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
+                              const typename CFG::T cb1[CFG::N_COND],
+                              const typename CFG::T dp0[CFG::MAX_F],
+                              const typename CFG::T rm0[CFG::MAX_F],
+                              const typename CFG::T dp1[CFG::MAX_F],
+                              const typename CFG::T rm1[CFG::MAX_F], bool* tiny0, bool* tiny1) {
+#pragma HLS ALLOCATION function instances=fgc_units::cpe_check<CFG> limit=1
+    typedef typename CFG::T T;
+    enum { B = FGC_COND_BANKS };
+    static_assert(B >= 2 && (B & (B - 1)) == 0, "COND cyclic over a power of two >= 2 banks");
+    int g0, g1;
+    const int p0 = cholesky_set_cond_pairs<CFG>(q0, &g0), p1 = cholesky_set_cond_pairs<CFG>(q1, &g1);
+    const int c0 = q0 >= 0 ? STEP_COND_OFF[q0] : 0, c1 = q1 >= 0 ? STEP_COND_OFF[q1] : 0;
+    const int n0 = q0 >= 0 ? STEP_F[q0] * (STEP_W[q0] + 1) : 0;
+    const int n1 = q1 >= 0 ? STEP_F[q1] * (STEP_W[q1] + 1) : 0;
+    const int trip = p0 > p1 ? p0 : p1;
+    for (int t = 0; t < trip; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::N_COND/2+1
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=COND inter false
+        const int a0 = 2 * (g0 + t), a1 = 2 * (g1 + t);  // each step's pair's first word
+        const int i0 = a0 - c0, i1 = a1 - c1;  // its index in the step's conditional
+        const bool on0 = t < p0, on1 = t < p1;
+        const T v00 = on0 && i0 >= 0 ? cb0[i0] : T(0);
+        const T v01 = on0 && i0 + 1 < n0 ? cb0[i0 + 1] : T(0);
+        const T v10 = on1 && i1 >= 0 ? cb1[i1] : T(0);
+        const T v11 = on1 && i1 + 1 < n1 ? cb1[i1 + 1] : T(0);
+        for (int b = 0; b < B; ++b) {
+#pragma HLS UNROLL
+            const int x0 = B * (a0 / B) + b, x1 = B * (a1 / B) + b;  // bank b's word
+            if (on0 && (b >> 1) == ((a0 % B) >> 1) && x0 >= c0 && x0 < c0 + n0)
+                COND[x0] = (b & 1) ? v01 : v00;
+            if (on1 && (b >> 1) == ((a1 % B) >> 1) && x1 >= c1 && x1 < c1 + n1)
+                COND[x1] = (b & 1) ? v11 : v10;
+        }
+    }
+    FGC_CYCLES("assemble", 0, "cond", trip, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    if (q0 >= 0) *tiny0 = fgc_units::cpe_check<CFG>(dp0, rm0, STEP_F[q0]);
+    if (q1 >= 0) *tiny1 = fgc_units::cpe_check<CFG>(dp1, rm1, STEP_F[q1]);
+}
+#endif
+
 // The committer: the region before's steps q0, q1 (cascade 0's, 1's) into COND, each checked
-// (*tiny0, *tiny1).
+// (*tiny0, *tiny1). COND in one bank: its two ports are one step's two words a cycle, so one
+// step after the other; in more (FGC_COND_BANKS: back-substitution's width), both at once
+// (cholesky_set_commit_both).
 template <class CFG>
 void cholesky_set_commit(int q0, int q1, const typename CFG::T cb0[CFG::N_COND],
                          const typename CFG::T cb1[CFG::N_COND],
                          const typename CFG::T dp0[CFG::MAX_F], const typename CFG::T rm0[CFG::MAX_F],
                          const typename CFG::T dp1[CFG::MAX_F], const typename CFG::T rm1[CFG::MAX_F],
                          bool* tiny0, bool* tiny1) {
+#ifndef FGC_COND_BANKS
 #pragma HLS ALLOCATION function instances=cholesky_set_commit_one<CFG> limit=1
+#endif
     FGC_BRANCH();
+#ifdef FGC_COND_BANKS
+    cholesky_set_commit_both<CFG>(q0, q1, cb0, cb1, dp0, rm0, dp1, rm1, tiny0, tiny1);
+#else
     cholesky_set_commit_one<CFG>(q0, cb0, dp0, rm0, tiny0);
     cholesky_set_commit_one<CFG>(q1, cb1, dp1, rm1, tiny1);
+#endif
 }
 
 #ifndef FGC_CASCADES_BESIDE  // (else: cholesky_sets_beside, below)
@@ -401,9 +498,9 @@ void cholesky_set_alone(int s) {
 // region (its two parity call sites, one RTL copy), j = -1 the grams process alone (the first
 // region's Grams into lanes 0), j = 0 ... N_REGIONS - 1 region j (after its steps' children
 // other than the streamed ones, cholesky_set_alone), j = N_REGIONS the committer alone (the
-// last region's conditionals). Region j streams lanes j % 2 and writes NF / CONDBUF lanes
-// 2 k + j % 2; the grams process fills lanes 1 - j % 2, the source reads NF lanes
-// 2 k + 1 - j % 2 and the committer CONDBUF lanes 2 k + 1 - j % 2 (what region j - 1 wrote).
+// last region's conditionals). Region j streams lanes j % 2 and writes NFk[j % 2] and
+// CONDBUF_Kk[j % 2] (cascade k's); the grams process fills lanes 1 - j % 2, the source reads
+// NFk[1 - j % 2] and the committer CONDBUF_Kk[1 - j % 2] (what region j - 1 wrote).
 // Every step runs even after one fails; false if any was not positive definite or had a
 // pivot too small.
 template <class CFG>
@@ -414,7 +511,8 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
 #pragma HLS ARRAY_PARTITION variable=HA1 complete dim=4
 #pragma HLS ARRAY_PARTITION variable=NF0 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=NF1 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=CONDBUF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF_K0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF_K1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
 #pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
     FGC_EVENT("solve");
@@ -438,13 +536,13 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
         bool tiny0 = false, tiny1 = false;
         if ((j & 1) == 0) {
             cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[0], HA1[0], HA0[1], HA1[1],
-                               NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF[0], CONDBUF[2], CONDBUF[1],
-                               CONDBUF[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2], DPIV[1], RMAX[1],
+                               NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF_K0[0], CONDBUF_K1[0], CONDBUF_K0[1],
+                               CONDBUF_K1[1], DPIV[0], RMAX[0], DPIV[2], RMAX[2], DPIV[1], RMAX[1],
                                DPIV[3], RMAX[3], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         } else {
             cholesky_sets<CFG>(s0, s1, n0, n1, q0, q1, mu, HA0[1], HA1[1], HA0[0], HA1[0],
-                               NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF[1], CONDBUF[3], CONDBUF[0],
-                               CONDBUF[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3], DPIV[0], RMAX[0],
+                               NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF_K0[1], CONDBUF_K1[1], CONDBUF_K0[0],
+                               CONDBUF_K1[0], DPIV[1], RMAX[1], DPIV[3], RMAX[3], DPIV[0], RMAX[0],
                                DPIV[2], RMAX[2], &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         }
         FGC_JOIN();
@@ -531,7 +629,8 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
 #pragma HLS ARRAY_PARTITION variable=HA1 complete dim=4
 #pragma HLS ARRAY_PARTITION variable=NF0 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=NF1 complete dim=1
-#pragma HLS ARRAY_PARTITION variable=CONDBUF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF_K0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=CONDBUF_K1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
 #pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
 #pragma HLS ARRAY_PARTITION variable=STAGE complete dim=1
@@ -558,15 +657,15 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
         bool tiny0 = false, tiny1 = false;
         if ((j & 1) == 0) {
             cholesky_sets_beside<CFG>(s0, s1, n0, n1, q0, q1, src, relin, mu, HA0[0], HA1[0],
-                                      HA0[1], HA1[1], NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF[0],
-                                      CONDBUF[2], CONDBUF[1], CONDBUF[3], DPIV[0], RMAX[0],
+                                      HA0[1], HA1[1], NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF_K0[0],
+                                      CONDBUF_K1[0], CONDBUF_K0[1], CONDBUF_K1[1], DPIV[0], RMAX[0],
                                       DPIV[2], RMAX[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3],
                                       STAGE[1], STAGE[0], grams, &npd0, &npd1, &unfit0, &unfit1,
                                       &tiny0, &tiny1);
         } else {
             cholesky_sets_beside<CFG>(s0, s1, n0, n1, q0, q1, src, relin, mu, HA0[1], HA1[1],
-                                      HA0[0], HA1[0], NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF[1],
-                                      CONDBUF[3], CONDBUF[0], CONDBUF[2], DPIV[1], RMAX[1],
+                                      HA0[0], HA1[0], NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF_K0[1],
+                                      CONDBUF_K1[1], CONDBUF_K0[0], CONDBUF_K1[0], DPIV[1], RMAX[1],
                                       DPIV[3], RMAX[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2],
                                       STAGE[0], STAGE[1], grams, &npd0, &npd1, &unfit0, &unfit1,
                                       &tiny0, &tiny1);

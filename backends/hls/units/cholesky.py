@@ -498,8 +498,8 @@ def _gram_source(key: int, lay: dict, relin: bool, steps: int, ii: int, timing: 
 
 
 def beside_set_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: OperatorTable,
-                      timing: dict, lay: dict, relin: bool, steps: int, ii: int, lanes: int = 1
-                      ) -> list[tuple[Phase, int | None]]:
+                      timing: dict, lay: dict, relin: bool, steps: int, ii: int, lanes: int = 1,
+                      cond_banks: int = 1) -> list[tuple[Phase, int | None]]:
     """fgc_cascades.h's cholesky_eliminate_sets_beside, pass by pass (two cascades, the HGC
     beside the elimination): :func:`cascades_phases`' passes with, in each, the Gram source of
     the region two on (``lay``: :func:`beside_region_layout`) - first the source alone (region
@@ -507,7 +507,7 @@ def beside_set_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops:
     source of region 1, then per region r its children added alone (``reassemble_level``) and
     its region (``recholesky_level<r>``) beside the source of region r + 2, last the committer
     alone. (The pass as a phase, the producer's instance its source waits for or None.)"""
-    base = cascades_phases(tables, order, dims, cpe, ops, timing, lanes)
+    base = cascades_phases(tables, order, dims, cpe, ops, timing, lanes, cond_banks)
     n_regions = len(lay["step_count"])
 
     def source(r: int) -> tuple[tuple[Process, ...], int | None]:
@@ -674,8 +674,18 @@ def _child_loop(tables: dict, c: int, timing: dict) -> Loop:
     return kernel_loop("child", sc * (sc + 1) // 2 + sc, "scatter", timing)
 
 
+def cond_pairs(tables: dict, s: int) -> int:
+    """COND's aligned word pairs (2 g, 2 g + 1) step ``s``'s conditional touches (0 for -1):
+    fgc_cascades.h's cholesky_set_cond_pairs."""
+    if s < 0:
+        return 0
+    c0, n = tables["STEP_COND_OFF"][s], tables["STEP_F"][s] * (tables["STEP_W"][s] + 1)
+    return (c0 + n - 1) // 2 - c0 // 2 + 1
+
+
 def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
-                    ops: OperatorTable, timing: dict, lanes: int = 1) -> list[Phase]:
+                    ops: OperatorTable, timing: dict, lanes: int = 1,
+                    cond_banks: int = 1) -> list[Phase]:
     """cholesky_eliminate_sets' phases (fgc_cascades.h, two cascades), passes of its one
     cholesky_sets region: phase ``assemble`` (the grams process alone: the first region's
     steps' Grams), then per region r of :func:`cascade_regions` (after a phase
@@ -686,22 +696,41 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
     - the source: the streamed children's separator maps into registers (``move``, trip the
       larger separator), then both steps' words, two of a row a cycle each (trip the larger
       step's :func:`cpe_pairs`; ``move``, or ``scatter`` with a streamed child's words added);
-    - the grams process: the next region's steps' Grams into the other lanes
-      (:func:`assemble_loops`);
+    - the grams process: the next region's steps' Grams into the other lanes, both first
+      factors' column maps in one loop (``move``, trip the wider), then
+      :func:`assemble_loops` but the maps, step after step;
     - the committer: the region before's conditionals from CONDBUF into COND, two words a
       cycle, each step's pivot check after its copy (:func:`cpe_check_loops`: off the
-      cascade's path);
+      cascade's path); with COND cyclic over ``cond_banks`` > 1 (back-substitution's width:
+      its four ports and more), both conditionals in one loop, an aligned pair of each a cycle
+      (trip the larger step's pairs, :func:`cond_pairs`), then the two checks
+      (fgc_cascades.h's cholesky_set_commit_both);
 
     last ``cholesky_level<regions>``: the committer alone on the last region's."""
     regions = cascade_regions(tables, order)
     kids = cascade_children(tables, regions)
     sw, sf = tables["STEP_W"], tables["STEP_F"]
 
-    def grams(reg):
-        return tuple(lp for s in reg if s >= 0
-                     for lp in assemble_loops(tables, s, timing, children=False))
+    def first_width(s):  # the width of step s's first factor (0: none)
+        fb, cb = tables["STEP_FACTOR_BEGIN"], tables["FACTOR_COLMAP_BEGIN"]
+        if s < 0 or fb[s] == fb[s + 1]:
+            return 0
+        fac = tables["STEP_FACTORS"][fb[s]]
+        return cb[fac + 1] - cb[fac]
+
+    def grams(reg):  # both first factors' column maps in one loop, then step after step
+        return (kernel_loop("map", max(first_width(s) for s in reg), "move", timing),
+                *(lp for s in reg if s >= 0
+                  for lp in assemble_loops(tables, s, timing, children=False)
+                  if lp.name != "map"))
 
     def commit(reg):  # each conditional copied, then its pivots checked (cpe_check)
+        if cond_banks > 1:  # both copied at once, then both checked
+            trip = max(cond_pairs(tables, s) for s in reg)
+            return (kernel_loop("cond" + "_".join(str(s) for s in reg if s >= 0), trip, "move",
+                                timing),
+                    *(lp for s in reg if s >= 0 for lp in cpe_check_loops(sf[s], ops,
+                                                                          name=f"s{s}")))
         return tuple(lp for s in reg if s >= 0 for lp in (
             kernel_loop(f"cond{s}", -(-sf[s] * (sw[s] + 1) // 2), "move", timing),
             *cpe_check_loops(sf[s], ops, name=f"s{s}")))
@@ -865,8 +894,9 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
     steps = entries.trip // len(lay["order"])
     ready = beside_ready(len(lay["order"]), jac, rows.cycles, steps, entries.ii, entries.depth)
     lanes = ctx.opts.cascade_lanes
+    banks = {"cond_banks": ctx.opts.backsub_lanes} if passes is beside_set_passes else {}
     first = passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps, entries.ii,
-                   lanes)
+                   lanes, **banks)
     cycles, _ = beside_cycles(phase_cycles(region), ready, first, timing["move"][1])
     # the producer's region stays in the plan for the record (per "beside": priced inside
     # hgc_beside, not on its own)
@@ -874,7 +904,7 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
         f"linearize_solve_{big}", "cpe", (Loop("region", 1, 1, cycles),)),), linear=True)),
         (slot, replace(region, name="hgc_producer", per="beside"))]
     for phase, _ in passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, False, steps,
-                           entries.ii, lanes):
+                           entries.ii, lanes, **banks):
         ctx.add_phase("solve", replace(phase, per="rejection"))
     _, lane_b, _, paired = gram_config(program, big, ctx.opts.hgc_lanes,
                                        jacobian_ii(region.processes),
@@ -949,7 +979,8 @@ def _frontal(ctx) -> None:
     elif sets == 1:
         phases = elimination_phases(tables, order, dims, c, ops, timing, lanes)
     else:
-        phases = cascades_phases(tables, order, dims, c, ops, timing, lanes)
+        phases = cascades_phases(tables, order, dims, c, ops, timing, lanes,
+                                 ctx.opts.backsub_lanes)
     for phase in phases if big is None else ():
         ctx.add_phase("solve", phase)
     # cholesky_overlap's stream, a pair of words wide, deep enough that the assembler (a pair a
