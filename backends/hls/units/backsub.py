@@ -211,18 +211,12 @@ def retire_region(slots: list[list[Loop]], sent: list[int], counts: list[int], i
     first no earlier than the end of the slot that sent it; the region ends when both
     processes have (fgc_cycles.h's outer group). ``ends``, if given, receives when each
     iteration ends (its variable's words sent on to trial_cost)."""
-    out, ends, clock = ends, [], 0
+    clock, slot_end = 0, []
     for loops in slots:
         clock += sum(lp.cycles for lp in loops)
-        ends.append(clock)
-    issue, last = None, 0
-    for slot, n in zip(sent, counts, strict=True):
-        for j in range(n):
-            at = 0 if issue is None else issue + ii
-            issue = max(at, ends[slot]) if j == 0 else at
-            last = issue + depth
-            if out is not None:
-                out.append(last)
+        slot_end.append(clock)
+    last = retire_sent([slot_end[slot] for slot in sent], counts, ii, depth,
+                       ends if ends is not None else [])
     return max(clock, last)
 
 
@@ -500,7 +494,6 @@ def column_phases(ctx, unit: str) -> None:
     its DATAFLOW region of the loader, the two ends (:func:`column_schedule`) and the state
     update beside them, each step's variables retired no earlier than the end of the pass that
     solved it (:func:`retire_region`'s arithmetic on those ends), then the cost at X_TRIAL."""
-    from fgc_backends.hls.units.datapath import trial_end
     from fgc_backends.hls.units.state_update import retire_timing
     tables, ops = ctx.tables, ctx.les
     ends, columns = column_schedule(tables, ops)
@@ -510,8 +503,6 @@ def column_phases(ctx, unit: str) -> None:
                               ctx.opts.state_allocation)
     var_end: list[int] = []
     region = max(columns, retire_sent([ends[s] for s in order], counts, ii, depth, var_end))
-    cost = max(region, trial_end(ctx.shared["trial_loops"], var_end))
-    words = max(v.storage_dim for v in ctx.program.variables)
     for e in range(2):
         ctx.channels.append(Channel(f"backsub_groups{e}", "stream", column_fifo(tables, ops, e),
                                     COLUMN_WIDTH * ops.word_bits, "backsub_loader",
@@ -520,14 +511,9 @@ def column_phases(ctx, unit: str) -> None:
                                     2 * ops.word_bits, f"backsub_end{e}", "backsub_retire"))
     ctx.channels.append(Channel("backsub_xroot", "stream", ctx.sizes["MAX_F"], ops.word_bits,
                                 "backsub_end0", "backsub_end1"))
-    ctx.channels.append(Channel("trial_tx", "stream", len(ctx.program.variables),
-                                words * ctx.ops.word_bits, "backsub_retire", "trial_cost"))
-    ctx.add_phase("solve", Phase("backsub", False, (
-        Process("backsub_columns", unit, (Loop("column_region", 1, 1, columns),)),
-        Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - columns),)
-                if region > columns else ()),
-        Process("trial_cost", "factor_cost", (Loop("cost_tail", 1, 1, cost - region),)
-                if cost > region else ())), linear=True))
+    _solve_phase(ctx, unit, Process("backsub_columns", unit,
+                                    (Loop("column_region", 1, 1, columns),)),
+                 columns, region, var_end)
 
 
 def retire_sent(sent_at: list[int], counts: list[int], ii: int,
@@ -571,18 +557,27 @@ def backsub_phases(ctx, unit: str) -> None:
     # the solved words to the state update, a pair a stream word (back_substitute's dx)
     ctx.channels.append(Channel("backsub_dx", "stream", ctx.sizes["MAX_F"], 2 * ops.word_bits,
                                 "backsub_slots", "backsub_retire"))
-    # the cost at X_TRIAL beside them (units.datapath's trial_cost), fed the retired
-    # variables' storage words, a variable a stream word (as deep as the state: the retire
-    # never waits for it)
+    _solve_phase(ctx, unit, Process("backsub_slots", unit,
+                                    tuple(lp for loops in slots for lp in loops)),
+                 a, region, var_end)
+
+
+def _solve_phase(ctx, unit: str, solver: Process, busy: int, region: int,
+                 var_end: list[int]) -> None:
+    """The phase ``backsub`` both drivers end with: ``solver`` (busy ``busy`` cycles) beside the
+    state update's ``backsub_retire`` (what it adds after the solver, to ``region``) and the
+    cost at X_TRIAL (units.datapath's trial_cost), fed the retired variables' storage words, a
+    variable a stream word (as deep as the state: the retire never waits for it; ``var_end``:
+    when each variable is retired)."""
     from fgc_backends.hls.units.datapath import trial_end
     cost = max(region, trial_end(ctx.shared["trial_loops"], var_end))
     words = max(v.storage_dim for v in ctx.program.variables)
     ctx.channels.append(Channel("trial_tx", "stream", len(ctx.program.variables),
                                 words * ctx.ops.word_bits, "backsub_retire", "trial_cost"))
     ctx.add_phase("solve", Phase("backsub", False, (
-        Process("backsub_slots", unit, tuple(lp for loops in slots for lp in loops)),
-        Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - a),)
-                if region > a else ()),
+        solver,
+        Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - busy),)
+                if region > busy else ()),
         Process("trial_cost", "factor_cost", (Loop("cost_tail", 1, 1, cost - region),)
                 if cost > region else ())), linear=True))
 
