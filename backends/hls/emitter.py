@@ -23,7 +23,7 @@ from fgc_backends.cfamily.results import ERROR_FLOOR_FACTOR, REFERENCE_MAGIC, RE
 from fgc_backends.cfamily.scalars import (
     epsilon,
 )
-from fgc_backends.hls.config import HlsConfig, HlsConfigError, check_clock
+from fgc_backends.hls.config import HlsConfig, HlsConfigError
 from fgc_backends.hls.lint import lint_project
 from fgc_backends.hls.units.special_ops import printed_counts
 
@@ -79,7 +79,7 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     incremental design, a second file of that design.
     """
     config = for_program(program, config or HlsConfig())
-    config.check()
+    config.check(program)  # the options, and those that depend on the Program (clock, lanes)
     if stream is not None and config.qr_unit != "householder":
         raise HlsConfigError(f"qr_unit {config.qr_unit!r}: the streaming designs (window, "
                              "incremental) are priced with the householder QR unit only")
@@ -87,12 +87,8 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
         raise HlsConfigError(f"backsub_lanes {config.backsub_lanes}: the streaming designs "
                              "(window, incremental) are priced with one-lane back-substitution "
                              "only (plan/update.py)")
-    if config.cascade_lanes != 1 and program.solver.linear != "cholesky":
-        raise HlsConfigError(f"cascade_lanes={config.cascade_lanes}: the lanes of the Cholesky "
-                             f"cascade; this Program solves with {program.solver.linear}")
     check_accel(program, config)
     check_limits(program, config)
-    check_clock(program.solver.clock_mhz, config)
     project = identifier(name or program.name)
     context = _context(program, config, project, vector=False)
     context.update(accel_context(program, config, context))
@@ -482,7 +478,7 @@ def check_limits(program: Program, config: HlsConfig) -> None:
 
 def tcl_clock(clock_mhz: float) -> dict:
     """``run_hls.tcl``'s clock: the period of the cost model's clock (SolverConfig.clock_mhz;
-    :func:`check_clock` has checked HlsConfig.clock_ns against it), so model and synthesis
+    ``HlsConfig.check`` has checked HlsConfig.clock_ns against it), so model and synthesis
     describe one clock."""
     mhz = float(clock_mhz)
     return {"clock_mhz": f"{mhz:g}", "clock_ns": f"{1000.0 / mhz:.6g}"}
