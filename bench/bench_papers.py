@@ -346,6 +346,15 @@ class StreamDesign:
                 + (": fits" if self.fits else ": over" if not self.fits_plan else ""))
 
 
+def _stream_solver(cfg: Config) -> SolverConfig:
+    """The on-chip stream's solver in paper A's setting: float32 QR, one Gauss-Newton step an
+    update (ISAM2's policy) unless ``cfg.stream_one_step`` is off (LM to convergence)."""
+    from fgc.app import streaming
+
+    solver = SolverConfig(precision="float32", linear="qr")
+    return streaming.one_step_solver(solver) if cfg.stream_one_step else solver
+
+
 def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list) -> list[StreamDesign]:
     """The on-chip stream design's search (issue 33 item 6): every n_u, unit-set count and
     factor-datapath ALLOCATION of ``cfg``'s stream axes priced by its plan
@@ -363,11 +372,10 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list) -> li
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from bench_second_reader import measure_stream
 
+    base = _stream_solver(cfg)
     out = []
     for units in cfg.stream_units:
-        solver = SolverConfig(precision="float32", linear="qr", units=units)
-        if cfg.stream_one_step:
-            solver = streaming.one_step_solver(solver)
+        solver = dataclasses.replace(base, units=units)
         sp = streaming.stream_program(graph, streaming.compile_stream(
             graph, solver, incremental=k, batch_every=batch))
         for sets in cfg.stream_unit_sets:
@@ -393,7 +401,7 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list) -> li
             read = measure_stream(cfg.lio_n, Path(tmp) / "stream",
                                   HlsConfig(scalar="float", unit_sets=d.unit_sets,
                                             allocation=d.allocation), d.units, batch,
-                                  solver=solver)
+                                  solver=base)
         d.reader_dsp = read["reader_dsp"]
         d.reader_parts = tuple(read["parts"])
         if d.fits:
@@ -417,9 +425,7 @@ def paper_a_stream(cfg: Config) -> list[Row]:
     n, k = cfg.lio_n, 3
     batch = tuple(b for b in cfg.stream_batch if b < n)
     graph = lio.build(N=n)
-    solver = SolverConfig(precision="float32", linear="qr")
-    if cfg.stream_one_step:
-        solver = streaming.one_step_solver(solver)
+    solver = _stream_solver(cfg)
     policy = ("one Gauss-Newton step an update, relinearising the window (ISAM2's policy: one "
               "isam.update per keyframe, relinearise all; the store is the step's own "
               "factorisation)" if cfg.stream_one_step else
