@@ -783,9 +783,9 @@ inline int bsc_addr(int slot, int off, int cols, int i, int c) {
 // An end's passes (BSC_PASS_BEGIN[E] ...): one pipelined loop a pass (II 1), its columns and
 // its ingestion side by side, until both are done (trip: units/backsub.py's column_pass_trip).
 // E = 0 sends the root's x_r to end 1 (BSC_ROOT), E = 1 reads them (BSC_FEED).
-template <class CFG, int E>
-void backsub_end(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::stream<L>& xin,
-                 hls::stream<L>& xout, bool at_x) {
+template <class CFG, int E, class XIN, class XOUT>
+void backsub_end(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, XIN&& xin, XOUT&& xout,
+                 bool at_x) {
 #pragma HLS INLINE
     typedef L T;
     const int CHAIN = CFG::MUL_LAT + CFG::ADD_LAT;
@@ -902,21 +902,25 @@ void backsub_end(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::stream
     }
 }
 
-// End 0 sends the root's x_r (xroot: written only), end 1 reads them (xroot: read only); each
-// end's other x stream is a local one its passes never touch (BSC_FEED only on end 1,
-// BSC_ROOT only on end 0)
+// The x side an end never takes (end 0 reads no root x, end 1 sends none: BSC_FEED only on
+// end 1, BSC_ROOT only on end 0): a value with no storage, not a stream, so each end's process
+// touches xroot in its one direction and holds no FIFO of its own
+struct BscNoX {
+    L read() { return L(0); }
+    void write(L) {}
+};
+
+// End 0 sends the root's x_r (xroot: written only), end 1 reads them (xroot: read only)
 template <class CFG>
 void backsub_end0(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::stream<L>& xroot,
                   bool at_x) {
-    hls::stream<L> none;
-    backsub_end<CFG, 0>(gin, dx, none, xroot, at_x);
+    backsub_end<CFG, 0>(gin, dx, BscNoX(), xroot, at_x);
 }
 
 template <class CFG>
 void backsub_end1(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::stream<L>& xroot,
                   bool at_x) {
-    hls::stream<L> none;
-    backsub_end<CFG, 1>(gin, dx, xroot, none, at_x);
+    backsub_end<CFG, 1>(gin, dx, xroot, BscNoX(), at_x);
 }
 
 // The state update as the two ends' solutions arrive (backsub_retire's loop, RETIRE_VARS

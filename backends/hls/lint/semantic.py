@@ -407,9 +407,11 @@ class _Checker:
                 if inner.channel and re.fullmatch(rf"&?\s*{name}", arg) and at >= 0:
                     out |= self.uses(callee, inner, seen)
                     body = body[:at] + " " * len(arg) + body[at + len(arg):]
-        if param.stream:
-            out |= {m.group(1) for m in re.finditer(
-                rf"\b{name}\s*(?:\[[^\]]*\]\s*)*\.\s*(write|read)(?:_nb)?\s*\(", body)}
+        calls = rf"\b{name}\s*(?:\[[^\]]*\]\s*)*\.\s*(write|read)(?:_nb)?\s*\("
+        # a stream, or a forwarded template parameter (``XIN&& x``) the function reads and
+        # writes as one: its uses are the stream's (fgc_backsub.h's backsub_end)
+        if param.stream or (param.type.endswith("&&") and re.search(calls, body)):
+            out |= {m.group(1) for m in re.finditer(calls, body)}
         elif param.const:
             if re.search(rf"\b{name}\b", body):
                 out.add("read")

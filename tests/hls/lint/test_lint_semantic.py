@@ -426,3 +426,39 @@ void region(const T in[N], T acc[N], hls::stream<T>& out) {
                        "const T in[N], const T other[N], T acc[N], hls::stream<T>& out")
     own = own.replace("    broadcast(acc, out);\n", "    broadcast(other, out);\n")
     assert semantic_issues([("k.h", own)]) == []
+
+
+FORWARDED = PRODUCER_CONSUMER + """
+struct NoX {
+    T read() { return T(0); }
+    void write(T) {}
+};
+template <int E, class XIN, class XOUT>
+void end(const T in[N], XIN&& xin, XOUT&& xout, T out[N]) {
+#pragma HLS INLINE
+    for (int i = 0; i < N; ++i) {
+        const T x = E == 1 ? xin.read() : in[i];
+        if (E == 0) xout.write(x);
+        out[i] = x;
+    }
+}
+void end0(const T in[N], hls::stream<T>& x, T out[N]) { end<0>(in, NoX(), x, out); }
+void end1(const T in[N], hls::stream<T>& x, T out[N]) { end<1>(in, x, NoX(), out); }
+void region(const T in0[N], const T in1[N], T a[N], T b[N]) {
+#pragma HLS DATAFLOW
+    hls::stream<T> x;
+    end0(in0, x, a);
+    end1(in1, x, b);
+}
+"""
+
+
+def test_a_forwarded_template_parameter_used_as_a_stream_is_a_channel():
+    """fgc_backsub.h's backsub_end: an x side given as a forwarded template parameter (``XIN&&``,
+    a stream or a value with no storage) is read and written as the stream it is: end 0 writes
+    the region's x, end 1 reads it; the same stream on both sides of one end is two readers."""
+    assert semantic_issues([("k.h", FORWARDED)]) == []
+    both = FORWARDED.replace("end<0>(in, NoX(), x, out)", "end<0>(in, x, x, out)")
+    issues = semantic_issues([("k.h", both)])
+    assert {i.rule for i in issues} == {"channel"}
+    assert any("'x' is read by 2 processes" in i.message for i in issues)
