@@ -41,6 +41,7 @@ UNIT_SETS = (1, 8)  # QR/Cholesky unit sets eliminating one level's steps side b
 ALLOCATION_LIMIT = (1, 4096)  # one operator kind's ALLOCATION limit in a factor datapath
 BACKSUB_LANES = (1, 2, 4)  # back-substitution's widths (fgc_backsub.h: 2, COND's four ports;
 # 4: by columns, four update lanes per end of a two-ended chain)
+BACKSUB_COLUMNS = 4  # the width by columns (units/backsub.py's COLUMN_LANES)
 
 
 class HlsConfigError(CodegenError):
@@ -71,12 +72,17 @@ class DesignOptions:
       (n_u reflection stages the matrix streams through, ``include/fgc_qr_stream.h``; the
       batch design only). ``fgc compile --qr-unit``.
     - ``backsub_lanes``: back-substitution's width (``include/fgc_backsub.h``): ``1``
-      (default) loads a conditional two words a cycle (COND's two ports) and runs the triangle
-      one row a cycle; ``2`` partitions COND cyclic over two banks, loads four words a cycle
-      and runs the triangle two rows a cycle, for more DSP (docs/hls.md, "Back-substitution");
-      ``4`` solves by columns, a process per end of a two-ended chain (four update lanes
-      each, the child's S xs inside its parent's columns, a loader streaming COND cyclic 4 to
-      both ends; docs/hls.md, "Back-substitution by columns"); a tree is refused.
+      loads a conditional two words a cycle (COND's two ports) and runs the triangle one row
+      a cycle; ``2`` partitions COND cyclic over two banks, loads four words a cycle and runs
+      the triangle two rows a cycle, for more DSP (docs/hls.md, "Back-substitution"); ``4``
+      solves by columns, a process per end of a two-ended chain (four update lanes each, the
+      child's S xs inside its parent's columns, a loader streaming COND cyclic 4 to both ends;
+      docs/hls.md, "Back-substitution by columns"); a tree is refused. ``None`` (default,
+      ``--backsub-lanes auto``): the Program decides (:meth:`resolved`,
+      :func:`auto_backsub_lanes`): 4 where the elimination tree is a chain (one end or two),
+      faster and smaller there, and 1 on a tree and in the streaming designs (their update
+      model prices one lane). The plan, the emitted text and the reports carry the resolved
+      width.
     - ``cascade_lanes``: Cholesky: the words a cycle through each cascade
       (``include/fgc_cpe.h``'s ``STREAM_WORDS``): 1 (default), or 2 - every feed, tap, CPE and
       drain takes the pair of a row's words the assembly streams each cycle, so a step's ~w²/2
@@ -93,7 +99,7 @@ class DesignOptions:
     allocation: tuple[tuple[str, int], ...] | None = None
     qr_unit: str = "householder"
     hgc_beside: bool = True
-    backsub_lanes: int = 1
+    backsub_lanes: int | None = None
     cascade_lanes: int = 1
 
     def check(self, program: Program | None = None) -> None:
@@ -115,9 +121,10 @@ class DesignOptions:
             raise HlsConfigError(f"unit_sets must be {low} … {high}, got {self.unit_sets}")
         if self.allocation is not None:
             _check_allocation(self.allocation)
-        if self.backsub_lanes not in BACKSUB_LANES or isinstance(self.backsub_lanes, bool):
+        if self.backsub_lanes is not None and (self.backsub_lanes not in BACKSUB_LANES
+                                               or isinstance(self.backsub_lanes, bool)):
             raise HlsConfigError(f"backsub_lanes must be one of "
-                                 f"{', '.join(map(str, BACKSUB_LANES))}, got "
+                                 f"{', '.join(map(str, BACKSUB_LANES))} or None (auto), got "
                                  f"{self.backsub_lanes!r}")
         if self.cascade_lanes not in CASCADE_LANES or isinstance(self.cascade_lanes, bool):
             raise HlsConfigError(f"cascade_lanes must be one of {CASCADE_LANES} (the words a "
@@ -149,20 +156,48 @@ class DesignOptions:
         """The design's :class:`Target`: this part at the Program's clock."""
         return target_of(self.part, program.solver.clock_mhz)
 
+    def resolved(self, program: Program, stream: bool = False) -> DesignOptions:
+        """These options with the automatic ``backsub_lanes`` (None) decided for ``program``
+        (:func:`auto_backsub_lanes`; ``stream``: the template of a streaming design); explicit
+        values are kept (a width the design cannot take is refused where it is built)."""
+        if self.backsub_lanes is not None:
+            return self
+        return dataclasses.replace(self, backsub_lanes=auto_backsub_lanes(program, stream))
+
     def plan_options(self, program: Program, precision: str | None = None,
                      les_precision: str | None = None, **changes) -> PlanOptions:
         """The accelerator plan's options of this design for ``program``: the Program's n_u and
-        #CPE, these unit sets, part, QR unit and ALLOCATION limits (over the defaults), and the
+        #CPE, these unit sets, part, QR unit and ALLOCATION limits (over the defaults),
+        back-substitution's width (automatic: :meth:`resolved`, a batch design's), and the
         precisions the design computes in (None: the Program's)."""
         base = dict(unit_sets=self.unit_sets, part=self.part, qr_unit=self.qr_unit,
                     precision=precision, les_precision=les_precision,
-                    hgc_beside=bool(self.hgc_beside), backsub_lanes=int(self.backsub_lanes),
-                    cascade_lanes=int(self.cascade_lanes))
+                    hgc_beside=bool(self.hgc_beside), cascade_lanes=int(self.cascade_lanes))
         if self.allocation:  # the design's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(self.allocation)}.items())
         base.update(changes)
+        if "backsub_lanes" not in base:
+            lanes = self.backsub_lanes
+            if lanes is None:  # columns are a frontal design's (units/backsub.py's build)
+                lanes = (1 if base.get("hessian_storage", "frontal") != "frontal"
+                         else auto_backsub_lanes(program))
+            base["backsub_lanes"] = int(lanes)
         return PlanOptions.of(program, **base)
+
+
+def auto_backsub_lanes(program: Program, stream: bool = False) -> int:
+    """``DesignOptions.backsub_lanes = None``'s width for ``program``: :data:`BACKSUB_COLUMNS`
+    (by columns, a process per end) where its elimination tree is a chain of one end or two
+    (``units/backsub.py``'s ``column_chain``, the rule the column design is built or refused
+    by), else 1 (a tree); 1 for ``stream`` (the on-chip window and incremental designs and the
+    host-kept path's template: their update model, ``plan/update.py``, prices one lane)."""
+    if stream:
+        return 1
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.backsub import column_chain
+
+    return BACKSUB_COLUMNS if not isinstance(column_chain(_tables(program)), str) else 1
 
 
 def _check_allocation(allocation) -> None:
@@ -264,6 +299,13 @@ class HlsConfig(scalars.ScalarTypes):
             if not re.match(r"^[A-Za-z0-9_+=./-]+$", flag):
                 raise HlsConfigError(f"compiler option {flag!r} has characters a Makefile would "
                                      "interpret")
+
+    def resolved(self, program: Program, stream: bool = False) -> HlsConfig:
+        """This config with its design's automatic options decided for ``program``
+        (:meth:`DesignOptions.resolved`): what :func:`~fgc_backends.hls.emitter.emit` builds
+        and its project carries."""
+        design = self.design.resolved(program, stream)
+        return self if design is self.design else dataclasses.replace(self, design=design)
 
     def plan_options(self, program: Program, **changes) -> PlanOptions:
         """The options of the design this config emits for ``program``

@@ -83,10 +83,13 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     if stream is not None and config.qr_unit != "householder":
         raise HlsConfigError(f"qr_unit {config.qr_unit!r}: the streaming designs (window, "
                              "incremental) are priced with the householder QR unit only")
-    if stream is not None and config.backsub_lanes != 1:
+    if stream is not None and config.backsub_lanes not in (None, 1):
         raise HlsConfigError(f"backsub_lanes {config.backsub_lanes}: the streaming designs "
                              "(window, incremental) are priced with one-lane back-substitution "
                              "only (plan/update.py)")
+    # the automatic options decided for this Program (one lane in a streaming design): the
+    # plan, the text and the project's config all carry the resolved width
+    config = config.resolved(program, stream=stream is not None)
     check_accel(program, config)
     check_limits(program, config)
     project = identifier(name or program.name)

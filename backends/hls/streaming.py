@@ -131,7 +131,9 @@ def _working_copy(owner, scalar: str, out_dir, name: str, stream=None) -> None:
         tmp = tempfile.mkdtemp(prefix="fgc-hls-stream-")
         weakref.finalize(owner, _remove, tmp)
         out_dir = tmp
-    config = HlsConfig(scalar=scalar)
+    # one back-substitution lane, as the stream's update models price it (the host-kept path's
+    # batch template too, not the batch default's columns)
+    config = HlsConfig(scalar=scalar, backsub_lanes=1)
     owner._cached = _cached_project(owner.template, config, stream)
     work = Path(out_dir) / name
     shutil.rmtree(work, ignore_errors=True)

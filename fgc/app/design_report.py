@@ -182,10 +182,17 @@ def _cycles_section(r: dict) -> Section:
                 f"error {final_error_text(solve)}) at {c['clock_mhz']:g} MHz")
     else:
         note = f"{c['iterations']} iterations (--iterations) at {c['clock_mhz']:g} MHz"
+    notes = [note, f"{c['iteration_cycles']:,} cycles per iteration; source: " + c["source"]]
+    if c.get("backsub_lanes") in BACKSUB_TEXT:  # the priced design's width, resolved
+        notes.append(f"back-substitution {BACKSUB_TEXT[c['backsub_lanes']]} (backsub_lanes "
+                     f"{c['backsub_lanes']}; --backsub-lanes, auto by default)")
     return Section("Modelled cycles by phase (whole solve; model estimate, accelerator plan)",
-                   ("phase", "cycles", "share"),
-                   tuple(rows), (note, f"{c['iteration_cycles']:,} cycles per iteration; "
-                                       "source: " + c["source"]))
+                   ("phase", "cycles", "share"), tuple(rows), tuple(notes))
+
+
+BACKSUB_TEXT = {1: "one lane, a step's conditional two words a cycle",
+                2: "two lanes wide, COND in two banks",
+                4: "by columns, a process per end of the chain"}
 
 
 def _resources_section(r: dict) -> Section:

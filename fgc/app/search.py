@@ -69,8 +69,9 @@ class Space:
     (``HlsConfig.cascade_lanes``, 1 or 2; a design of 2 carries it as its ``extra``);
     ``alloc_scales`` multiply the factor datapaths' default ``ALLOCATION`` limits;
     ``backsub_lanes``: back-substitution's widths (``HlsConfig.backsub_lanes``, both solvers;
-    a width of 1 is the candidate without the option; 4, by columns, only where the
-    elimination tree is a chain: elsewhere the plan refuses it and the search skips it);
+    ``None``, the default, is the candidate without the option: the emitter's automatic width,
+    4 on a chain and 1 on a tree; 1, 2 and 4 are given to the design, 4, by columns, only where
+    the elimination tree is a chain: elsewhere the plan refuses it and the search skips it);
     ``extra``: further ``PlanOptions`` fields the emitter knows as ``HlsConfig`` fields,
     (name, values)."""
 
@@ -81,7 +82,7 @@ class Space:
     cascades: tuple[int, ...] = (1, 2)
     lanes: tuple[int, ...] = (1,)
     alloc_scales: tuple[int, ...] = (1,)
-    backsub_lanes: tuple[int, ...] = (1,)
+    backsub_lanes: tuple[int | None, ...] = (None,)
     scalar: str = "float"
     part: str | None = None  # None: HlsConfig's default part
     extra: tuple[tuple[str, tuple], ...] = ()
@@ -91,8 +92,8 @@ class Space:
                      "alloc_scales", "backsub_lanes"):
             if not getattr(self, name):
                 raise SearchError(f"design space: axis {name!r} is empty")
-        bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales, *self.backsub_lanes)
-               if int(u) < 1]
+        bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales,
+                           *(b for b in self.backsub_lanes if b is not None)) if int(u) < 1]
         bad += [k for k in self.cascades if int(k) not in (1, 2)]
         bad += [k for k in self.lanes if int(k) not in (1, 2)]
         bad += [s for s in self.unit_sets if s is not None and int(s) < 1]
@@ -205,8 +206,8 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
     extras = [()]
     for name, values in extra_axes:
         extras = [e + ((name, v),) for e in extras for v in values]
-    # back-substitution's width on either solver (the default width is no option)
-    widths = [() if b == 1 else (("backsub_lanes", b),) for b in space.backsub_lanes]
+    # back-substitution's width on either solver (None, the automatic width, is no option)
+    widths = [() if b is None else (("backsub_lanes", b),) for b in space.backsub_lanes]
     out = []
     for linear in space.linears:
         if linear not in programs:

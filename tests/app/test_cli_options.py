@@ -166,6 +166,18 @@ def test_emit_takes_the_programs_clock_and_rejects_a_second_one(tmp_path):
      "--hgc-before shapes the batch design"),
     (["run", BEACONS, "--backend", "sim", "--window", "3", "--linear", "cholesky",
       "--hgc-before"], "--hgc-before shapes the batch Cholesky design"),
+    (["compile", BEACONS, "--backend", "hls", "--out", "x", "--backsub-lanes", "3"],
+     "'3': expected auto, 1, 2 or 4"),
+    (["compile", BEACONS, "--backend", "native", "--out", "x", "--backsub-lanes", "2"],
+     "--backsub-lanes applies to --backend hls only (not native)"),
+    (["report", BEACONS, "--iterations", "1", "--backsub-lanes", "4"],
+     "backsub_lanes 4 (back-substitution by columns"),
+    (["simulate", BEACONS, "--incremental", "3", "--backsub-lanes", "2"],
+     "--backsub-lanes shapes the batch design"),
+    (["report", BEACONS, "--incremental", "3", "--backsub-lanes", "1"],
+     "--backsub-lanes shapes the batch design"),
+    (["run", BEACONS, "--backend", "sim", "--window", "3", "--backsub-lanes", "4"],
+     "the stream's design (--window / --incremental) back-substitutes one lane"),
 ])
 def test_bad_hardware_options_exit_2_with_one_line(argv, needle, capsys, tmp_path,
                                                    monkeypatch):
@@ -335,6 +347,47 @@ def test_report_prices_the_design_compile_emits(tmp_path, capsys):
     assert priced["cycles"] == 2 * cost.cycles and priced["resources"]["dsp"] == cost.dsp
     assert priced["device"] == "xc7z020" and not priced["fits"]
     assert priced["cycles"] != default["cycles"] and priced["resources"] != default["resources"]
+
+
+def test_backsub_lanes_auto_by_default_and_as_given(tmp_path, capsys):
+    """--backsub-lanes: auto (the default) is the design's automatic width, by columns on a
+    chain (LIO N = 5), and fgc report prices and names that width; an explicit width is emitted
+    and priced as given (byte-identical to emit with that HlsConfig)."""
+    import json
+
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import hls
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.plan import plan_cost
+
+    lio = str(ROOT / "examples" / "lio.py")
+    flags = ["-p", "N=5", "--linear", "cholesky", "--precision", "float32", "-q"]
+    for name, extra in (("default", []), ("auto", ["--backsub-lanes", "auto"]),
+                        ("one", ["--backsub-lanes", "1"])):
+        assert main(["compile", lio, *flags, "--backend", "hls", "--out",
+                     str(tmp_path / name), *extra]) == 0
+        assert main(["report", lio, *flags, "--iterations", "1", *extra, "--json",
+                     str(tmp_path / f"{name}.json")]) == 0
+    kernel = {n: (tmp_path / n / "lio.cpp").read_text() for n in ("default", "auto", "one")}
+    assert kernel["default"] == kernel["auto"] and "#define FGC_BS_COLUMNS 1" in kernel["auto"]
+    assert "FGC_BS_COLUMNS" not in kernel["one"]
+    program = compile_graph(example("lio").build(N=5), SolverConfig(
+        linear="cholesky", precision="float32"), name="lio")
+    hls.emit(program, tmp_path / "api", hls.HlsConfig(scalar="float", backsub_lanes=1))
+    assert (tmp_path / "api" / "lio.cpp").read_text() == kernel["one"]
+    cost = {n: json.loads((tmp_path / f"{n}.json").read_text())["cost"]
+            for n in ("default", "one")}
+    assert cost["default"]["backsub_lanes"] == 4 and cost["one"]["backsub_lanes"] == 1
+    for n, lanes in (("default", None), ("one", 1)):
+        plan = accel_plan(program, hls.HlsConfig(scalar="float", backsub_lanes=lanes))
+        assert cost[n]["iteration_cycles"] == plan_cost(plan).cycles
+    assert cost["default"]["iteration_cycles"] < cost["one"]["iteration_cycles"]
+    assert main(["report", lio, *flags[:-1], "--iterations", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "back-substitution by columns, a process per end of the chain (backsub_lanes 4" \
+        in out
 
 
 def test_hgc_before_emits_and_prices_the_design_without_the_beside(tmp_path, capsys):

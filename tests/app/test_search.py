@@ -251,14 +251,23 @@ def test_a_cholesky_space_searches_one_and_two_cascades(programs):
 
 
 def test_the_search_sees_back_substitutions_width(programs):
-    """``Space.backsub_lanes``: each design with back-substitution one lane wide (no option)
-    and two (``HlsConfig.backsub_lanes=2``, fgc_backsub.h's cond_load_wide), each priced by the
-    plan of what it emits."""
-    space = Space(linears=("cholesky",), cpe=(5,), cascades=(1,), backsub_lanes=(1, 2))
+    """``Space.backsub_lanes``: each design with back-substitution one lane wide
+    (``HlsConfig.backsub_lanes=1``) and two (``=2``, fgc_backsub.h's cond_load_wide), each
+    priced by the plan of what it emits; ``None`` (the default axis) is the candidate without
+    the option, the emitter's automatic width (by columns on this chain)."""
+    space = Space(linears=("cholesky",), cpe=(5,), cascades=(1,), backsub_lanes=(1, 2, None))
     result = search(programs, space, max_reads=0, reader=False)
-    by_width = {dict(r.candidate.extra).get("backsub_lanes", 1): r for r in result.rows}
-    assert set(by_width) == {1, 2}
-    assert "backsub_lanes=2" in by_width[2].label and "backsub" not in by_width[1].label
+    by_width = {dict(r.candidate.extra).get("backsub_lanes"): r for r in result.rows}
+    assert set(by_width) == {1, 2, None}
+    assert "backsub_lanes=2" in by_width[2].label and "backsub_lanes=1" in by_width[1].label
+    assert "backsub" not in by_width[None].label
+    assert by_width[1].candidate.config(space).backsub_lanes == 1
+    auto = by_width[None].candidate
+    assert auto.config(space).backsub_lanes is None
+    plan = build_plan(auto.program(programs), PlanOptions.for_config(auto.config(space),
+                                                                     auto.program(programs)))
+    assert plan.options.backsub_lanes == 4 and by_width[None].cost == plan_cost(plan)
+    assert Space().backsub_lanes == (None,)
     config = by_width[2].candidate.config(space)
     assert config.backsub_lanes == 2
     program = by_width[2].candidate.program(programs)
@@ -277,7 +286,7 @@ def test_the_search_sees_back_substitution_by_columns(programs):
 
     space = Space(linears=("cholesky",), cpe=(5,), cascades=(1,), backsub_lanes=(1, 4))
     result = search(programs, space, max_reads=0, reader=False)
-    by_width = {dict(r.candidate.extra).get("backsub_lanes", 1): r for r in result.rows}
+    by_width = {dict(r.candidate.extra).get("backsub_lanes"): r for r in result.rows}
     assert set(by_width) == {1, 4}
     config = by_width[4].candidate.config(space)
     program = by_width[4].candidate.program(programs)
@@ -286,4 +295,4 @@ def test_the_search_sees_back_substitution_by_columns(programs):
     tree = {"cholesky": compile_graph(example("pose_graph").build(), SolverConfig(
         method="lm", linear="cholesky", precision="float32"), name="w100")}
     skipped = search(tree, space, max_reads=0, reader=False)
-    assert {dict(r.candidate.extra).get("backsub_lanes", 1) for r in skipped.rows} == {1}
+    assert {dict(r.candidate.extra).get("backsub_lanes") for r in skipped.rows} == {1}

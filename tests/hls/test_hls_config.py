@@ -78,3 +78,90 @@ def test_the_plan_options_are_built_from_the_design(linear):
     plan = build_plan(program, options)
     assert plan.target == DesignOptions(part=ZU9).target(program)
     assert HlsConfig().plan_options(program, cpe=3).cpe == 3  # a what-if change on top
+
+
+def test_back_substitutions_width_is_decided_for_the_program():
+    """``DesignOptions.backsub_lanes = None`` (the default): by columns (4) where the elimination
+    tree is a chain (one end or two, the rule the column design is built or refused by), one
+    lane on a tree and in the streaming designs; explicit widths are kept and checked; the plan
+    options carry the resolved width."""
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.hls.config import auto_backsub_lanes
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.plan.model import PlanError
+    from fgc_backends.hls.units.backsub import column_chain
+
+    assert DesignOptions().backsub_lanes is None and HlsConfig().backsub_lanes is None
+    HlsConfig().check()
+    two_ended, one_ended = chain(6, linear="cholesky"), chain(6, ordering="natural")
+    tree = compile_graph(example("pose_graph").build(), SolverConfig(linear="cholesky"),
+                         name="w100")
+    assert column_chain(_tables(one_ended))[1] == ()  # one end: the root's chain alone
+    assert [auto_backsub_lanes(p) for p in (two_ended, one_ended, tree)] == [4, 4, 1]
+    assert auto_backsub_lanes(two_ended, stream=True) == 1
+    for program, lanes in ((two_ended, 4), (one_ended, 4), (tree, 1)):
+        config = HlsConfig()
+        assert config.resolved(program).backsub_lanes == lanes
+        assert config.plan_options(program).backsub_lanes == lanes
+        assert config.resolved(program).plan_options(program) == config.plan_options(program)
+    assert HlsConfig().resolved(two_ended, stream=True).backsub_lanes == 1
+    # explicit widths are the design's, resolved or not; a what-if change wins
+    for lanes in (1, 2, 4):
+        config = HlsConfig(backsub_lanes=lanes)
+        assert config.resolved(two_ended) is config
+        assert config.plan_options(two_ended).backsub_lanes == lanes
+    assert HlsConfig().plan_options(two_ended, backsub_lanes=2).backsub_lanes == 2
+    # columns are a frontal design's: a what-if dense Hessian stays one lane
+    assert HlsConfig().plan_options(two_ended, hessian_storage="dense").backsub_lanes == 1
+    with pytest.raises(PlanError, match="backsub_lanes 4.*w100.*not a chain"):
+        build_plan(tree, HlsConfig(backsub_lanes=4).plan_options(tree))
+    for bad in (0, 3, True, "auto"):
+        with pytest.raises(HlsConfigError, match="backsub_lanes must be one of 1, 2, 4 or None"):
+            HlsConfig(backsub_lanes=bad).check()
+
+
+def test_the_emitted_design_and_its_project_carry_the_resolved_width(tmp_path):
+    """``emit`` with the default config: a chain gets back-substitution by columns (the kernel
+    defines FGC_BS_COLUMNS; the project's config says 4, so the plan of ``project.config`` is
+    the design's); an explicit width of one is the slot design."""
+    from fgc_backends.hls import emit
+    from fgc_backends.hls.emitter import accel_plan
+
+    program = chain(4, linear="cholesky")
+    project = emit(program, tmp_path / "chain", HlsConfig(scalar="float"))
+    text = (tmp_path / "chain" / f"{project.name}.cpp").read_text()
+    assert "#define FGC_BS_COLUMNS 1" in text and project.config.backsub_lanes == 4
+    assert accel_plan(program, project.config) == accel_plan(program, HlsConfig(scalar="float"))
+    one = emit(program, tmp_path / "one", HlsConfig(scalar="float", backsub_lanes=1))
+    assert "FGC_BS_COLUMNS" not in (tmp_path / "one" / f"{one.name}.cpp").read_text()
+
+
+def test_the_streaming_designs_back_substitute_one_lane():
+    """The on-chip window's template is a chain, yet its design and its price keep one lane
+    (plan/update.py prices one): the default config resolves to 1 there, and an explicit wider
+    width is refused by name."""
+    from fgc import Graph, Pose2
+    from fgc.app.streaming import compile_stream
+    from fgc.compiler.stream import stream_program
+    from fgc.frontend import noise
+    from fgc.frontend.factors import BetweenFactor, PriorFactor
+    from fgc_backends.hls.config import auto_backsub_lanes
+    from fgc_backends.hls.emitter import emit
+    from fgc_backends.hls.plan.stream import WindowUpdateModel
+    from fgc_backends.hls.streaming import layout_of
+
+    graph = Graph()
+    for i in range(6):
+        graph.add_variable(i, Pose2(float(i), 0.0, 0.0))
+    graph.add(PriorFactor(0, Pose2(0.0, 0.0, 0.0), noise.isotropic(3, 0.1)))
+    for i in range(5):
+        graph.add(BetweenFactor(i, i + 1, Pose2(1.0, 0.0, 0.0), noise.isotropic(3, 0.2)))
+    layout = layout_of(stream_program(graph, compile_stream(graph, window=3), 3))
+    assert auto_backsub_lanes(layout.template) == 4  # a batch design of it would take columns
+    model = WindowUpdateModel(layout, HlsConfig(scalar="float"))
+    assert model.plan.options.backsub_lanes == 1
+    for lanes in (2, 4):
+        with pytest.raises(HlsConfigError, match=f"backsub_lanes {lanes}: the streaming"):
+            emit(layout.template, "/nonexistent", HlsConfig(backsub_lanes=lanes), stream=layout)

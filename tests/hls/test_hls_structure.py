@@ -237,11 +237,12 @@ def test_kernels_print_for_lanes():
 # ---- the dataflow accelerator: the emitted network is the plan's ------------------------------
 
 
-def _emit_accel(tmp_path, graph, name, **solver):
+def _emit_accel(tmp_path, graph, name, backsub_lanes=None, **solver):
+    """``backsub_lanes``: the design's (None: the automatic width, by columns on a chain)."""
     from fgc_backends.hls import HlsConfig, emit
     program = compile_graph(graph, SolverConfig(**solver), name=name)
     project = emit(program, tmp_path / f"{name}_{'_'.join(map(str, solver.values()))}",
-                   HlsConfig(scalar="double"))
+                   HlsConfig(scalar="double", backsub_lanes=backsub_lanes))
     return program, project.directory
 
 
@@ -260,7 +261,9 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import backsub_region, counts, read_network
     from fgc_backends.hls.plan import process_network
-    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr", units=units)
+    # the slot driver (one lane; a chain's automatic width is by columns)
+    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", backsub_lanes=1, linear="qr",
+                               units=units)
     kernel, header = _texts(out, "lio", "fgc_qr.h")
     assert f"const int N_UNITS = {units};" in kernel
     level = next(r for r in read_network(kernel) if r.function == "qr_level")
@@ -274,7 +277,7 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
                                  "trial_cost")
     # the solved words to the state update, its retired variables to the cost pass
     assert backsub.streams == (("dx", ""), ("tx", ""))
-    procs, streams = process_network(accel_plan(program, HlsConfig()))
+    procs, streams = process_network(accel_plan(program, HlsConfig(backsub_lanes=1)))
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams))
     assert (len(procs), len(streams)) == ((units + 4) * 2 + 7, 2 * (4 * units + 1) + 2)
     assert tuple(p for p in procs if p.startswith(("backsub", "trial"))) == backsub.processes
@@ -354,9 +357,10 @@ def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.network import counts
     from fgc_backends.hls.plan import process_network
-    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", linear="qr", units=2)
+    program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", backsub_lanes=1, linear="qr",
+                               units=2)
     kernel, header = _texts(out, "lio", "fgc_qr.h")
-    procs, streams = process_network(accel_plan(program, HlsConfig()))
+    procs, streams = process_network(accel_plan(program, HlsConfig(backsub_lanes=1)))
     backsub = _backsub(out)
     assert counts(kernel, header, backsub) == (len(procs), len(streams))
     call = "    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx);\n"

@@ -268,7 +268,9 @@ def test_the_plan_prices_the_scalar_the_hls_config_emits(linear):
     streams = [ch for ch in plan.channels if ch.kind == "stream"]
     if linear == "qr":  # the reflector streams are 2 adder latencies deep (fgc_qr.h's V_DEPTH)
         assert {ch.depth for ch in streams if "_v" in ch.name} == {2 * f32.add.latency}
-    as_program = build_plan(program, PlanOptions.of(program))
+    # the same design (back-substitution's width as the config resolves it for this chain)
+    as_program = build_plan(program, PlanOptions.of(program,
+                                                    backsub_lanes=plan.options.backsub_lanes))
     assert as_program.ops.precision == "float64"
     assert plan_cost(plan).cycles < plan_cost(as_program).cycles
     # a double design of the same Program is priced as the Program says

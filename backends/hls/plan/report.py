@@ -24,8 +24,9 @@ def plan_summary(program: Program, iterations: int, options: PlanOptions | None 
     """What ``fgc simulate`` / ``fgc report`` print as hardware figures, all from
     ``plan_cost(build_plan(program, options))``: ``iterations`` × one iteration's cycles by
     phase group, latency, resources and their share of the part's device (``options.part``,
-    default the xc7z045), memory words, and power /
-    energy (:func:`plan_power_w`: the sim model's power approach on the plan's resources)."""
+    default the xc7z045), memory words, back-substitution's width (``backsub_lanes``, as
+    the design was built: an automatic width resolved), and power / energy
+    (:func:`plan_power_w`: the sim model's power approach on the plan's resources)."""
     plan = build_plan(program, options)
     c = plan_cost(plan)
     k = max(1, int(iterations))
@@ -42,7 +43,9 @@ def plan_summary(program: Program, iterations: int, options: PlanOptions | None 
             "cycles_by_unit": {name: k * cyc for name, cyc in phase_groups(c)},
             "resources": res, "utilization": {key: res[key] / caps[key] for key in caps},
             "fits": c.fits, "memory_words": c.words, "power_w": power,
-            "energy_mj": power * latency_ms}
+            "energy_mj": power * latency_ms,
+            # the priced design's back-substitution width, resolved (DesignOptions' auto)
+            "backsub_lanes": plan.options.backsub_lanes}
 
 
 EMITTED = {"jacobian_storage": ("whitened",), "hessian_storage": ("frontal",)}

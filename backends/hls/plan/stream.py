@@ -326,7 +326,7 @@ class WindowUpdateModel:
 
         self.layout = layout
         t = layout.template
-        config = for_program(t, config)
+        config = for_program(t, config).resolved(t, stream=True)  # one back-substitution lane
         if config.design.qr_unit != "householder":
             raise PlanError(f"the on-chip stream design's price is modelled on the Householder "
                             f"QR unit (its update's QR steps on the rows non-zero in that "

@@ -124,6 +124,17 @@ def allocation_arg(text: str) -> tuple[tuple[str, int], ...]:
     return tuple(out.items())
 
 
+def backsub_lanes_arg(text: str) -> int | None:
+    """``--backsub-lanes``: ``auto`` (None: the design decides, ``DesignOptions.backsub_lanes``)
+    or a width, 1, 2 or 4."""
+    text = text.strip().lower()
+    if text == "auto":
+        return None
+    if text not in ("1", "2", "4"):
+        raise argparse.ArgumentTypeError(f"{text!r}: expected auto, 1, 2 or 4")
+    return int(text)
+
+
 def part_arg(text: str) -> str:
     if not re.fullmatch(r"[A-Za-z0-9_-]{1,64}", text):
         raise argparse.ArgumentTypeError(f"FPGA part {text!r} is not a plain part name "
@@ -192,6 +203,12 @@ def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
                        help=f"{where}: Cholesky: words a cycle through each cascade, 1 (the "
                             "default) or 2 (every CPE two words a cycle: half a step's cycles "
                             "in the cascade, twice its multipliers and adders)")
+        h.add_argument("--backsub-lanes", type=backsub_lanes_arg, metavar="auto|1|2|4",
+                       help=f"{where}: back-substitution's width: auto (the default: 4 where "
+                            "the elimination tree is a chain, 1 on a tree and in the streaming "
+                            "designs), 1 (a step's conditional two words a cycle, one row a "
+                            "cycle), 2 (COND in two banks, two rows a cycle) or 4 (by columns, "
+                            "a process per end of a chain; refused on a tree)")
         h.add_argument("--qr-unit", choices=("householder", "stream"),
                        help=f"{where}: the QR unit set: householder (paper A's, one DATAFLOW "
                             "region per reflection; the default) or stream (n_u reflection "

@@ -47,6 +47,10 @@ def cmd_run(args) -> int:
             raise UsageError("fgc run: --hgc-before shapes the batch Cholesky design; the "
                              "stream's design (--window / --incremental) has no HGC beside its "
                              "elimination (drop --hgc-before)")
+        if getattr(args, "backsub_lanes", None) not in (None, 1):
+            raise UsageError(f"fgc run: --backsub-lanes {args.backsub_lanes}: the stream's "
+                             "design (--window / --incremental) back-substitutes one lane "
+                             "(drop it, or --backsub-lanes auto)")
         return cmd_stream(args)
     graph, program, data = compile_spec(args, "float32")
     t0 = time.perf_counter()

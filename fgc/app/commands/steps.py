@@ -98,9 +98,10 @@ def implied_precision(args, default: str) -> str:
 
 def hls_config(args, program):
     """The HLS backend's config: --scalar (default: the Program's precision) and the design's
-    options (``HlsConfig.design``) from --part, --clock, --allocation, --unit-sets, --qr-unit
-    and --hgc-before (one clock for the cost model and run_hls.tcl: ``clock_ns`` is
-    ``1000 / SolverConfig.clock_mhz``; ``DesignOptions.check`` checks them)."""
+    options (``HlsConfig.design``) from --part, --clock, --allocation, --unit-sets, --qr-unit,
+    --cascade-lanes, --backsub-lanes (auto: None) and --hgc-before (one clock for the cost
+    model and run_hls.tcl: ``clock_ns`` is ``1000 / SolverConfig.clock_mhz``;
+    ``DesignOptions.check`` checks them)."""
     hls = load_backend("hls")
     clock = getattr(args, "clock", None)
     design = hls.DesignOptions(**{
@@ -109,7 +110,8 @@ def hls_config(args, program):
             ("allocation", getattr(args, "allocation", None)),
             ("unit_sets", getattr(args, "unit_sets", None)),
             ("qr_unit", getattr(args, "qr_unit", None)),
-            ("cascade_lanes", getattr(args, "cascade_lanes", None))) if value},
+            ("cascade_lanes", getattr(args, "cascade_lanes", None)),
+            ("backsub_lanes", getattr(args, "backsub_lanes", None))) if value},
         **({"hgc_beside": False} if getattr(args, "hgc_before", False) else {}))
     config = hls.HlsConfig(scalar=getattr(args, "scalar", None) or c_scalar(program),
                            design=design)
@@ -154,9 +156,10 @@ def plan_options(args, program):
 
 
 def refuse_hls_design(args, backend: str) -> None:
-    """--allocation, --unit-sets, --qr-unit, --cascade-lanes and --hgc-before shape the HLS
-    design: other backends have no such thing."""
-    for flag in ("allocation", "unit_sets", "qr_unit", "hgc_before", "cascade_lanes"):
+    """--allocation, --unit-sets, --qr-unit, --cascade-lanes, --backsub-lanes (a width, not
+    auto) and --hgc-before shape the HLS design: other backends have no such thing."""
+    for flag in ("allocation", "unit_sets", "qr_unit", "hgc_before", "cascade_lanes",
+                 "backsub_lanes"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc {args.command}: --{flag.replace('_', '-')} applies to "
                              f"--backend hls only (not {backend})")
