@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   23 processes, 36 streams (n_u=4, 2 unit set(s))
+//   21 processes, 40 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -27,11 +27,9 @@
 //   process qr1_update3
 //   process qr1_evaluate
 //   process qr1_collect
-//   process backsub_set0
-//   process backsub_load1
-//   process backsub_set1
-//   process backsub_load0
-//   process backsub_slots
+//   process backsub_loader
+//   process backsub_end0
+//   process backsub_end1
 //   process backsub_retire
 //   process trial_cost
 //   stream qr0_v0 depth=8: qr0_broadcast -> qr0_update0
@@ -68,7 +66,11 @@
 //   stream qr1_row2 depth=2: qr1_update2 -> qr1_collect
 //   stream qr1_col3 depth=87: qr1_update3 -> qr1_evaluate
 //   stream qr1_row3 depth=2: qr1_update3 -> qr1_collect
-//   stream backsub_dx depth=30: backsub_slots -> backsub_retire
+//   stream backsub_groups0 depth=97: backsub_loader -> backsub_end0
+//   stream backsub_dx0 depth=39: backsub_end0 -> backsub_retire
+//   stream backsub_groups1 depth=100: backsub_loader -> backsub_end1
+//   stream backsub_dx1 depth=24: backsub_end1 -> backsub_retire
+//   stream backsub_xroot depth=30: backsub_end0 -> backsub_end1
 //   stream trial_tx depth=24: backsub_retire -> trial_cost
 #include "lio.h"
 
@@ -3598,6 +3600,64 @@ const int BS_LOAD[BS_SLOTS] = {6, -1, 4, 5, 2, 3, 0, 1, -1};
 const int BS_LANE[BS_SLOTS] = {1, 0, 0, 1, 0, 1, 0, 1, 0};
 // the loaded separator's solution in the loading lane's BS_X from this offset (-1: from DELTA)
 const int BS_XOFF[BS_SLOTS] = {-1, -1, -1, 15, 0, 0, 0, 0, -1};
+// HlsConfig backsub_lanes = 4: back-substitution by columns, one process per end of the chain
+// (fgc_backsub.h's backsub_loader, backsub_end0 / backsub_end1; units/backsub.py's column_*)
+#define FGC_BS_COLUMNS 1
+const int BSC_SEQ[7] = {  // per end (from BSC_SEQ_BEGIN[e]) its steps, the root first on end 0: the loader streams their groups in this order
+    6, 4, 2, 0, 5, 3, 1,
+};
+const int BSC_SEQ_BEGIN[3] = {
+    0, 4, 7,
+};
+const int BSC_PASS_BEGIN[3] = {  // per end its passes from here
+    0, 6, 12,
+};
+const int BSC_STEP[12] = {  // per pass: the step whose columns it runs (-1: none)
+    -1, -1, 6, 4, 2, 0, -1, -1, 6, 5, 3, 1,
+};
+const int BSC_CHILD[12] = {  // the step whose rows its columns update too (-1: none)
+    -1, -1, 4, 2, 0, -1, -1, -1, 5, 3, 1, -1,
+};
+const int BSC_INGEST[12] = {  // the step whose groups it takes in (-1: none)
+    6, 4, 2, 0, -1, -1, 5, 3, -1, 1, -1, -1,
+};
+const int BSC_SLOT[12] = {  // the buffer slots of the three
+    -1, -1, 0, 1, 2, 0, -1, -1, -1, 0, 1, 2,
+};
+const int BSC_CSLOT[12] = {
+    -1, -1, 1, 2, 0, -1, -1, -1, 0, 1, 2, -1,
+};
+const int BSC_ISLOT[12] = {
+    0, 1, 2, 0, -1, -1, 0, 1, -1, 2, -1, -1,
+};
+const int BSC_FEED[12] = {  // end 1's pass over the root's columns (x_r from end 0)
+    0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0,
+};
+const int BSC_ROOT[12] = {  // end 0's pass sending the root's x_r to end 1
+    0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+};
+const int BSC_COLA_BEGIN[12] = {
+    0, 0, 0, 30, 45, 60, 75, 75, 75, 105, 120, 135,
+};
+const int BSC_COLA[150] = {  // per pass column r: its position in the child's separator (-1: none)
+    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, -1,
+    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 1,
+    2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 0, 1, 2,
+    3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 1, 2, 3, 4, 5,
+    6, 7, 8, 9, 10, 11, 12, 13, 14, 0, 1, 2, 3, 4, 5, 6,
+    7, 8, 9, 10, 11, 12, 13, 14, 0, 1, 2, 3, 4, 5, 6, 7,
+    8, 9, 10, 11, 12, 13, 14, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1,
+};
+const int BSC_END_OF[7] = {  // per step: its end (the state update's stream)
+    0, 1, 0, 1, 0, 1, 0,
+};
+#define BSC_FIFO0 97  // the loader's streams (as deep as an end lags it)
+#define BSC_FIFO1 100
+#define BSC_DX0 39  // the ends' solution streams (all their steps' pairs)
+#define BSC_DX1 24
 #define FGC_BACKSUB_DRIVER
 #include "fgc_backsub.h"
 

@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
 // cond_load, no streams between them):
-//   15 processes, 19 streams (n_u=4, 1 unit set(s))
+//   13 processes, 23 streams (n_u=4, 1 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -19,11 +19,9 @@
 //   process qr0_update3
 //   process qr0_evaluate
 //   process qr0_collect
-//   process backsub_set0
-//   process backsub_load1
-//   process backsub_set1
-//   process backsub_load0
-//   process backsub_slots
+//   process backsub_loader
+//   process backsub_end0
+//   process backsub_end1
 //   process backsub_retire
 //   process trial_cost
 //   stream qr0_v0 depth=8: qr0_broadcast -> qr0_update0
@@ -43,7 +41,11 @@
 //   stream qr0_row2 depth=2: qr0_update2 -> qr0_collect
 //   stream qr0_col3 depth=54: qr0_update3 -> qr0_evaluate
 //   stream qr0_row3 depth=2: qr0_update3 -> qr0_collect
-//   stream backsub_dx depth=18: backsub_slots -> backsub_retire
+//   stream backsub_groups0 depth=21: backsub_loader -> backsub_end0
+//   stream backsub_dx0 depth=12: backsub_end0 -> backsub_retire
+//   stream backsub_groups1 depth=2: backsub_loader -> backsub_end1
+//   stream backsub_dx1 depth=3: backsub_end1 -> backsub_retire
+//   stream backsub_xroot depth=18: backsub_end0 -> backsub_end1
 //   stream trial_tx depth=5: backsub_retire -> trial_cost
 #include "pose_graph.h"
 
@@ -1635,6 +1637,57 @@ const int BS_LOAD[BS_SLOTS] = {2, -1, 0, 1, -1};
 const int BS_LANE[BS_SLOTS] = {1, 0, 0, 1, 0};
 // the loaded separator's solution in the loading lane's BS_X from this offset (-1: from DELTA)
 const int BS_XOFF[BS_SLOTS] = {-1, -1, -1, 0, -1};
+// HlsConfig backsub_lanes = 4: back-substitution by columns, one process per end of the chain
+// (fgc_backsub.h's backsub_loader, backsub_end0 / backsub_end1; units/backsub.py's column_*)
+#define FGC_BS_COLUMNS 1
+const int BSC_SEQ[3] = {  // per end (from BSC_SEQ_BEGIN[e]) its steps, the root first on end 0: the loader streams their groups in this order
+    2, 0, 1,
+};
+const int BSC_SEQ_BEGIN[3] = {
+    0, 2, 3,
+};
+const int BSC_PASS_BEGIN[3] = {  // per end its passes from here
+    0, 4, 7,
+};
+const int BSC_STEP[7] = {  // per pass: the step whose columns it runs (-1: none)
+    -1, -1, 2, 0, -1, 2, 1,
+};
+const int BSC_CHILD[7] = {  // the step whose rows its columns update too (-1: none)
+    -1, -1, 0, -1, -1, 1, -1,
+};
+const int BSC_INGEST[7] = {  // the step whose groups it takes in (-1: none)
+    2, 0, -1, -1, 1, -1, -1,
+};
+const int BSC_SLOT[7] = {  // the buffer slots of the three
+    -1, -1, 0, 1, -1, -1, 0,
+};
+const int BSC_CSLOT[7] = {
+    -1, -1, 1, -1, -1, 0, -1,
+};
+const int BSC_ISLOT[7] = {
+    0, 1, -1, -1, 0, -1, -1,
+};
+const int BSC_FEED[7] = {  // end 1's pass over the root's columns (x_r from end 0)
+    0, 0, 0, 0, 0, 1, 0,
+};
+const int BSC_ROOT[7] = {  // end 0's pass sending the root's x_r to end 1
+    0, 0, 1, 0, 0, 0, 0,
+};
+const int BSC_COLA_BEGIN[7] = {
+    0, 0, 0, 18, 24, 24, 42,
+};
+const int BSC_COLA[48] = {  // per pass column r: its position in the child's separator (-1: none)
+    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, -1, -1, -1, -1,
+    -1, -1, -1, -1, -1, -1, -1, -1, 0, 1, 2, 3, 4, 5, 6, 7,
+    8, 9, 10, 11, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+};
+const int BSC_END_OF[3] = {  // per step: its end (the state update's stream)
+    0, 1, 0,
+};
+#define BSC_FIFO0 21  // the loader's streams (as deep as an end lags it)
+#define BSC_FIFO1 2
+#define BSC_DX0 12  // the ends' solution streams (all their steps' pairs)
+#define BSC_DX1 3
 #define FGC_BACKSUB_DRIVER
 #include "fgc_backsub.h"
 
