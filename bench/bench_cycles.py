@@ -155,7 +155,12 @@ def cases():
                 SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
                 HlsConfig(scalar="float", unit_sets=2, cascade_lanes=2)))
     # back-substitution by columns (backsub_lanes=4: a loader and a process per end of the
-    # chain, the state update fed by both), one cascade and two
+    # chain, the state update fed by both), one cascade and two; a chain's default design takes
+    # them (backsub_lanes auto), so the cases above with the default config run them too, and
+    # the one-lane slot design is measured on a chain here (and on the tree below)
+    out.append(("LIO N=30 Cholesky #CPE=15 backsub one lane", lio.build(N=30),
+                SolverConfig(method="gn", linear="cholesky", cpe=15, precision="float32"),
+                HlsConfig(scalar="float", backsub_lanes=1)))
     out.append(("LIO N=30 Cholesky #CPE=15 backsub columns", lio.build(N=30),
                 SolverConfig(method="gn", linear="cholesky", cpe=15, precision="float32"),
                 HlsConfig(scalar="float", backsub_lanes=4)))
