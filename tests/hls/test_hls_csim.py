@@ -200,7 +200,9 @@ struct Dump {
 def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     """The unit headers' cycle log (-DFGC_COUNT_CYCLES) of a C simulation run: the processes
     that ran in one reflection / one CPE round are the plan's, n_u + 4 or 2 #CPE + 2 (the plan's
-    network adds one back-substitution unit per unit set)."""
+    network adds one back-substitution unit per unit set); back-substitution's are the default
+    width's: by columns on LIO's chain (the loader and two ends), the slots on pose_graph's
+    tree."""
     from fgc_backends.hls.emitter import accel_plan
     from fgc_backends.hls.plan import process_network
     graph = lio.build(N=6) if linear == "qr" else pose_graph.build()
@@ -209,6 +211,8 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     from bench_cycles import counting_run
 
     project = emit(program, tmp_path, HlsConfig(scalar="double"))
+    columns = project.config.backsub_lanes == 4  # the automatic width, resolved by emit
+    assert columns == (linear == "qr")
     out = counting_run(project, graph, program, COUNT_MAIN)
     ran = dict((r, int(n)) for _, r, n in re.findall(r"^(region) (\w+) (\d+)$", out, re.M))
     procs, _ = process_network(accel_plan(program, project.config))
@@ -218,6 +222,8 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     # tap and itself, drain
     per_set = value + 4 if linear == "qr" else 2 * value + 2
     expected = {region: per_set}
+    if columns:  # back_substitute by columns: the loader and the two ends counted as a region
+        expected["backsub_columns"] = 3
     if linear == "cholesky":  # per block type its linearize_<b>: the datapath beside its HGC
         expected |= {f"linearize_{b}": 2 for b in range(len(program.blocks))}
     assert ran == expected
@@ -228,9 +234,10 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
     # (with the HGC beside the elimination its Gram source a third process there)
     beside = any(ph.name == "hgc_beside" for ph in accel_plan(program, project.config).phases)
     overlap = (3 if beside else 2) if linear == "cholesky" else 0
-    assert len(procs) == sets * per_set + overlap + 7 and procs[-7:] == (
-        "backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0", "backsub_slots",
+    tail = (("backsub_loader", "backsub_end0", "backsub_end1") if columns else (
+        "backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0", "backsub_slots")) + (
         "backsub_retire", "trial_cost")
+    assert len(procs) == sets * per_set + overlap + len(tail) and procs[-len(tail):] == tail
 
 
 # the serial ordering with 3 units (heavy: about 30 s on 2 cores) repeats the two-ended case's
