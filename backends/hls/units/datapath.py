@@ -180,6 +180,16 @@ def factor_allocation(program, opts) -> list[tuple[tuple[str, int], ...]]:
     return out
 
 
+def mode_issue(b, limits, mode: str, ops) -> tuple[tuple[tuple[str, int], ...], int]:
+    """(the ``ALLOCATION`` limits of block ``b``'s ``mode`` function, :func:`mode_allocation`;
+    the II they allow: what an evaluation issues through them, a special function's exclusive
+    branches sharing the allocated operators, units/special_ops.py's issued_counts)."""
+    allocated = mode_allocation(limits, printed_counts(b, mode))
+    issued = issued_counts(b, mode)
+    return allocated, max([1] + [math.ceil(issued.get(k, 0) * ops.op(k).ii / n)
+                                 for k, n in allocated])
+
+
 def mode_allocation(limits, counts: dict) -> tuple[tuple[str, int], ...]:
     """The ``ALLOCATION`` limits of one mode's function (``factor_<b>``: the Jacobian's counts,
     ``factor_cost_<b>``: the cost's): the block's ``limits`` (:func:`factor_allocation`), at
@@ -253,6 +263,9 @@ def build(ctx) -> None:
     whiten_macs = 0
     allocations = factor_allocation(program, opts)
     small = small_blocks(program)
+    from fgc_backends.hls.units.state_update import fed_by_backsub
+    trial = fed_by_backsub(program, opts)  # the cost mode runs in trial_cost
+    max_storage = max(v.storage_dim for v in program.variables)
     for i, (b, bc) in enumerate(zip(program.blocks, ctx.blocks, strict=True)):
         if opts.jacobian_storage == "raw":
             words = raw_jacobian_words(b) * len(bc.instances)
@@ -271,13 +284,18 @@ def build(ctx) -> None:
                 ("jacobian", b.kernel, jac, whitening_ops(bc)),
                 ("cost", b.cost_kernel, cost, robust_ops(bc))):
             counts = printed_counts(b, mode)  # as printed, the special functions' bodies in
-            allocated = mode_allocation(allocations[i], counts)
-            # what an evaluation issues through them: a special function's exclusive branches
-            # share the allocated operators (units/special_ops.py's issued_counts)
-            issued = issued_counts(b, mode)
-            issue = max([1] + [math.ceil(issued.get(k, 0) * ops.op(k).ii / n)
-                               for k, n in allocated])
-            ii = max(issue, loop_ii(instance_accesses(bc, mode)))
+            allocated, issue = mode_issue(b, allocations[i], mode, ops)
+            if mode == "cost" and trial:
+                # factor_cost_<b>'s one call site is trial_cost's loop for the block
+                # (:func:`trial_loops`): gather_trial_<b> reading DATA_BUF's two banks
+                # (:func:`trial_data_ii`), the process's copy of the state (the block's
+                # variables taken and its x words read, :data:`PORTS` a cycle), the total
+                # through the adder
+                cap = len(b.variable_dims)
+                ii = max(issue, ops.add.latency, trial_data_ii(bc),
+                         loop_ii([(cap * max_storage + bc.n_x_in, 1)]))
+            else:
+                ii = max(issue, loop_ii(instance_accesses(bc, mode)))
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
                 ii = max(ii, ops.add.latency)  # simulator's): a recurrence through the adder
             # one evaluation ends no earlier than its critical path, nor before the allocated
@@ -484,6 +502,33 @@ def cost_loops(processes) -> dict:
     its ``factor_<b>_cost`` / ``factor_small_cost`` process."""
     return {("small" if p.name.startswith("factor_small") else int(p.name.split("_")[1])):
             p.loops[0] for p in processes}
+
+
+TRIAL_DATA_BANKS = 2  # DATA_BUF cyclic 2 (trial_cost's ARRAY_PARTITION; gather_trial_<b>)
+
+
+def trial_span(bc) -> dict:
+    """``gather_trial_<b>``'s reads of DATA_BUF (accel.cpp.jinja): ``lo``, the members' first
+    data word in the line (measurements or noise parameters), and ``words``, from there to the
+    last one plus one (read from the even address below the line, 2 h + lo + i: an odd line's
+    words start one further on); 0 words if the block reads none."""
+    regions = [(m.meas_data, m.meas_words) for m in bc.members if m.meas_words]
+    regions += [(m.noise_data, m.n_params) for m in bc.members if m.n_params]
+    if not regions:
+        return {"lo": 0, "words": 0}
+    lo = min(a for a, _ in regions)
+    return {"lo": lo, "words": max(a + n for a, n in regions) - lo + 1}
+
+
+def trial_data_ii(bc) -> int:
+    """The II DATA_BUF's ports allow ``gather_trial_<b>`` and its robust words: DATA_BUF
+    cyclic :data:`TRIAL_DATA_BANKS`, the gather's :func:`trial_span` words read at 2 h + c
+    (h = its line / 2, c a constant: each read's bank known), so they take the banks' 4
+    ports; each robust word's read (at FACTOR_DATA_OFF[f] + c, its bank not known) a port of
+    every bank."""
+    robust = sum(2 * m.robust for m in bc.members)
+    return max(1, math.ceil((trial_span(bc)["words"] + TRIAL_DATA_BANKS * robust)
+                            / (2 * TRIAL_DATA_BANKS)))
 
 
 def trial_plan(program, blocks, loops: dict, tables: dict) -> tuple[TrialLoop, ...]:
