@@ -263,9 +263,9 @@ def build(ctx) -> None:
     whiten_macs = 0
     allocations = factor_allocation(program, opts)
     small = small_blocks(program)
-    from fgc_backends.hls.units.state_update import fed_by_backsub
-    trial = fed_by_backsub(program, opts)  # the cost mode runs in trial_cost
-    max_storage = max(v.storage_dim for v in program.variables)
+    # the column design: trial_cost's loops at the IIs that keep up with its retire
+    banked = trial_banked(program, opts)
+    chosen = keep_up_ii(ctx, allocations, small) if banked else {}
     for i, (b, bc) in enumerate(zip(program.blocks, ctx.blocks, strict=True)):
         if opts.jacobian_storage == "raw":
             words = raw_jacobian_words(b) * len(bc.instances)
@@ -285,15 +285,8 @@ def build(ctx) -> None:
                 ("cost", b.cost_kernel, cost, robust_ops(bc))):
             counts = printed_counts(b, mode)  # as printed, the special functions' bodies in
             allocated, issue = mode_issue(b, allocations[i], mode, ops)
-            if mode == "cost" and trial:
-                # factor_cost_<b>'s one call site is trial_cost's loop for the block
-                # (:func:`trial_loops`): gather_trial_<b> reading DATA_BUF's two banks
-                # (:func:`trial_data_ii`), the process's copy of the state (the block's
-                # variables taken and its x words read, :data:`PORTS` a cycle), the total
-                # through the adder
-                cap = len(b.variable_dims)
-                ii = max(issue, ops.add.latency, trial_data_ii(bc),
-                         loop_ii([(cap * max_storage + bc.n_x_in, 1)]))
+            if mode == "cost" and banked:  # factor_cost_<b>'s one call site: trial_cost's
+                ii = chosen[i]  # loop, gather_trial_<b> from DATA_BUF's two banks
             else:
                 ii = max(issue, loop_ii(instance_accesses(bc, mode)))
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
@@ -505,6 +498,70 @@ def cost_loops(processes) -> dict:
 
 
 TRIAL_DATA_BANKS = 2  # DATA_BUF cyclic 2 (trial_cost's ARRAY_PARTITION; gather_trial_<b>)
+
+
+def trial_banked(program, opts) -> bool:
+    """True when trial_cost reads DATA_BUF cyclic :data:`TRIAL_DATA_BANKS` through
+    ``gather_trial_<b>`` (:func:`keep_up_ii`): back-substitution by columns (``backsub_lanes``
+    4), whose two ends and retire feed it faster than the slots (where the cost pass keeps
+    up at one bank's ports, and faster loops would only cost operators)."""
+    from fgc_backends.hls.units.backsub import COLUMN_LANES
+    from fgc_backends.hls.units.state_update import fed_by_backsub
+    return fed_by_backsub(program, opts) and opts.backsub_lanes == COLUMN_LANES
+
+
+def keep_up_ii(ctx, allocations, small) -> dict[int, int]:
+    """The column design's cost-mode II per block type with a datapath of its own: the
+    largest II at which trial_cost still ends when it would with every such loop at its
+    fastest, the retire feeding it as the column region's (``units.backsub.column_retire``):
+    a loop that waits on the retire's variables anyway is given fewer operators
+    (factor_cost_<b>'s ALLOCATION is bound at this II). Its fastest: the cost-mode operators'
+    issue II, the running total's adder, DATA_BUF's two banks (:func:`trial_data_ii`), and no
+    more trig or special function instances (12 and 17 DSP each) than the one-bank II binds
+    (imu_window N = 50: the IMU cost's 6 special functions on one instance, II 72, not 57: 22
+    DSP fewer for 137 cycles an iteration). Never slower than one bank's ports (the slot
+    designs' II). Blocks with the most work (instances x II) first."""
+    from fgc_backends.hls.units.backsub import column_chain, column_retire
+    program, opts, ops, blocks = ctx.program, ctx.opts, ctx.ops, ctx.blocks
+    sim_ops = _sim_table(ops)
+    loops, slow = {}, {}
+    for i, b in enumerate(program.blocks):
+        if i in small:
+            continue
+        allocated, issue = mode_issue(b, allocations[i], "cost", ops)
+        slow[i] = max(issue, ops.add.latency, loop_ii(instance_accesses(blocks[i], "cost")))
+        # no more function instances (trig, special: 12 and 17 DSP each) than at one bank's II
+        issued, floor = issued_counts(b, "cost"), 1
+        for kind, limit in allocated:
+            if kind in ("trig", "special") and issued.get(kind):
+                work = issued[kind] * ops.op(kind).ii
+                floor = max(floor, math.ceil(work / min(limit, math.ceil(work / slow[i]))))
+        fast = min(slow[i], max(issue, ops.add.latency, trial_data_ii(blocks[i]), floor))
+        loops[i] = Loop(f"factor_{i}_cost_instances", len(blocks[i].instances), fast,
+                        max(critical_path(b.cost_kernel, sim_ops), issue))
+    if small:
+        _, ii, issue = small_allocation(program, blocks, opts, "cost", ops)
+        loops["small"] = Loop("factor_small_cost_instances", 0, ii, max(
+            [issue] + [critical_path(program.blocks[i].cost_kernel, sim_ops) for i in small]))
+
+    if isinstance(column_chain(ctx.tables), str):  # refused by name (units.backsub)
+        return slow
+    _, _, var_end = column_retire(ctx)
+
+    def end(trial) -> int:
+        return trial_end(trial_plan(program, blocks, trial, ctx.tables), var_end)
+
+    target = end(loops)
+    for i in sorted(slow, key=lambda i: (-loops[i].trip * loops[i].ii, i)):
+        lo, hi = loops[i].ii, slow[i]
+        while lo < hi:  # the largest II that keeps the end (the end grows with the II)
+            mid = (lo + hi + 1) // 2
+            if end({**loops, i: replace(loops[i], ii=mid)}) <= target:
+                lo = mid
+            else:
+                hi = mid - 1
+        loops[i] = replace(loops[i], ii=lo)
+    return {i: loops[i].ii for i in slow}
 
 
 def trial_span(bc) -> dict:
