@@ -26,9 +26,10 @@ STATE_ALLOCATION = (("add", 4), ("mul", 6), ("div", 1), ("sqrt", 1), ("trig", 2)
 # the state update of back-substitution by columns (backsub_lanes = 4): its two ends send
 # their solutions side by side, each a variable every ~50 cycles on LIO and imu_window, so the
 # one retire loop must take a variable in half the time to keep up with both. A Pose3
-# retraction's II is set by its 3 special functions (II 12 each) on one instance: two
-# instances give a variable every 18 cycles (+17 DSP; its adds and multiplies at 4 / 6 allow
-# 14), the cheapest way to do it (a retire per end would be a second copy of every datapath)
+# retraction's II is set by its 3 special functions (II 12 each) on one instance (36): two
+# instances give a variable every 22 cycles (+17 DSP; then its 88 adds on 4 adders bound it,
+# a fifth adder would buy 4 cycles a variable, ~10 an iteration), the cheapest way to do it
+# (a retire per end would be a second copy of every retraction datapath, ~+57 DSP)
 STATE_ALLOCATION_COLUMNS = (("add", 4), ("mul", 6), ("div", 1), ("sqrt", 1), ("trig", 2),
                             ("special", 2))
 
