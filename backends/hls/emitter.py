@@ -317,6 +317,10 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     retire = {"kinds": kinds, "variables": variables, "steps": steps, "ii": ii, "depth": depth}
     # back_substitute's trial_cost (units/datapath.py): its loops' tables, II and depth
     trial = _trial_context(program, context["blocks"], blocks, phase)
+    from fgc_backends.hls.units.datapath import trial_banked, trial_span
+    # the column design: trial_cost's gathers from DATA_BUF's two banks (units/datapath.py)
+    trial_spans = [trial_span(bc) for bc in context["blocks"]] \
+        if trial_banked(program, plan.options) else None
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
@@ -335,7 +339,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
             "blocks": blocks, "beside": beside, "network": network, "retract_hw": retract,
-            "retire": retire, "trial": trial,
+            "retire": retire, "trial": trial, "trial_spans": trial_spans,
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
             "small": shared,

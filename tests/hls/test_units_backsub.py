@@ -445,3 +445,74 @@ def test_columns_on_one_end_and_on_qr_match_the_simulator(tmp_path, case):
     for v in program.variables:
         a, b = np.asarray(result.values[v.key]), np.asarray(reference.storage[v.key])
         assert np.max(np.abs(a - b)) <= 1e-9 * max(1.0, float(np.max(np.abs(b)))), v.key
+
+
+def test_the_column_designs_state_update_keeps_up_with_both_ends():
+    """backsub_lanes=4: two ends send their steps' solutions side by side into the one retire
+    (backsub_retire_cols); its Pose3 datapath gets two special-function instances
+    (STATE_ALLOCATION_COLUMNS), a variable every 22 cycles, so the retire ends within the last
+    steps' variables after the ends' last sends (both ends end together: two steps of three
+    variables). At the narrow limits (one instance, II 36) it falls behind the ends on
+    imu_window."""
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.hls.plan.options import STATE_ALLOCATION, STATE_ALLOCATION_COLUMNS
+    from fgc_backends.hls.units.backsub import column_schedule
+    from fgc_backends.hls.units.state_update import retract_datapath
+
+    program = compile_graph(example("imu_window").build(N=20),
+                            SolverConfig(method="lm", linear="cholesky", cpe=5,
+                                         precision="float32"), name="imu20")
+    kinds = {v.type_name for v in program.variables}
+    assert kinds == {"Pose3", "Vector3", "ImuBias"}
+    cols = PlanOptions.of(program, backsub_lanes=4)
+    assert cols.state_allocation == STATE_ALLOCATION_COLUMNS
+    assert PlanOptions.of(program, backsub_lanes=2).state_allocation == STATE_ALLOCATION
+    narrow = PlanOptions.of(program, backsub_lanes=4, state_limits=STATE_ALLOCATION)
+    results = {}
+    for name, opts in (("columns", cols), ("narrow", narrow)):
+        plan = build_plan(program, opts)
+        # the Pose3 datapath as bound: its special functions' instances (the emitter prints
+        # the unit's operators as the ALLOCATION limits)
+        pose = next(u for u in plan.units if u.role.endswith("of Pose3"))
+        ii, depth = retire_timing(program.variables, plan.ops, max(
+            s.frontal_dim for s in program.schedule.steps), opts.state_allocation)
+        _, columns = column_schedule(plan_tables(program), plan.ops)
+        solver, retire, _ = {ph.name: ph for ph in plan.phases}["backsub"].processes
+        assert solver.loops[0].cycles == columns
+        tail = sum(lp.cycles for lp in retire.loops)  # what the retire adds after the ends
+        results[name] = (dict(pose.operators)["special"], ii, tail, depth, plan_cost(plan))
+    special, ii, tail, depth, cost = results["columns"]
+    assert (special, ii) == (2, 22) and retract_datapath("Pose3", FLOAT32,
+                                                         STATE_ALLOCATION_COLUMNS)[1] == 22
+    assert tail <= 2 * 3 * ii + depth  # the ends' last steps, then the datapath's depth
+    special, ii, tail_narrow, depth, narrow_cost = results["narrow"]
+    assert (special, ii) == (1, 36) and tail_narrow > 2 * 3 * ii + depth  # it falls behind
+    assert cost.cycles < narrow_cost.cycles
+
+
+def test_the_column_designs_trial_cost_reads_data_two_banks_and_keeps_up():
+    """backsub_lanes=4: trial_cost reads DATA_BUF cyclic 2 through gather_trial_<b> (a line's
+    words from the even address below it: trial_span), so the IMU cost's 193 data words take
+    4 ports (trial_data_ii 49 against the slot designs' 97); each cost loop runs at the largest
+    II that keeps trial_cost's end (keep_up_ii), never faster than one special-function
+    instance allows here (72) nor slower than one bank (97). The slot designs keep one bank."""
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.cfamily.blocks import block_contexts
+    from fgc_backends.hls.units.datapath import trial_data_ii, trial_span
+
+    program = compile_graph(example("imu_window").build(N=20),
+                            SolverConfig(method="lm", linear="cholesky", cpe=5,
+                                         precision="float32"), name="imu20")
+    plans = {bl: build_plan(program, PlanOptions.of(program, backsub_lanes=bl)) for bl in (1, 4)}
+    banks = {bl: {m.name: m.banks for m in plan.memories}["data"] for bl, plan in plans.items()}
+    assert banks == {1: 1, 4: 2}
+    imu = next(i for i, b in enumerate(program.blocks) if b.name == "CombinedImuFactor")
+    cost_ii = {bl: {p.name: p.loops[0].ii for ph in plan.phases for p in ph.processes
+                    if p.loops}[f"factor_{imu}_cost"] for bl, plan in plans.items()}
+    assert cost_ii[1] == 97 and 72 <= cost_ii[4] < 97
+    bc = block_contexts(program, vector=False)[imu]  # 73 measurement, 120 noise words
+    assert trial_span(bc) == {"lo": 0, "words": 194} and trial_data_ii(bc) == 49

@@ -23,6 +23,16 @@ DEFAULT_ALLOCATION = (("add", 16), ("mul", 24), ("div", 4), ("sqrt", 2), ("trig"
 # limits takes a variable every 36 cycles, set by its special functions)
 STATE_ALLOCATION = (("add", 4), ("mul", 6), ("div", 1), ("sqrt", 1), ("trig", 2), ("special", 1))
 
+# the state update of back-substitution by columns (backsub_lanes = 4): its two ends send
+# their solutions side by side, each a variable every ~50 cycles on LIO and imu_window, so the
+# one retire loop must take a variable in half the time to keep up with both. A Pose3
+# retraction's II is set by its 3 special functions (II 12 each) on one instance (36): two
+# instances give a variable every 22 cycles (+17 DSP; then its 88 adds on 4 adders bound it,
+# a fifth adder would buy 4 cycles a variable, ~10 an iteration), the cheapest way to do it
+# (a retire per end would be a second copy of every retraction datapath, ~+57 DSP)
+STATE_ALLOCATION_COLUMNS = (("add", 4), ("mul", 6), ("div", 1), ("sqrt", 1), ("trig", 2),
+                            ("special", 2))
+
 
 ALLOCATION_SCALING = ("instances", "uniform")
 
@@ -52,7 +62,8 @@ class PlanOptions:
     # its II); "uniform": every type gets the whole limit (capped by its own operation counts
     # in both rules)
     allocation_scaling: str = "instances"
-    state_allocation: tuple[tuple[str, int], ...] = STATE_ALLOCATION  # retract_<k>'s limits
+    # retract_<k>'s ALLOCATION limits; None: the design's default (:attr:`state_allocation`)
+    state_limits: tuple[tuple[str, int], ...] | None = None
     hgc_lanes: int = 32  # multipliers of each block type's Gram entries loop (HGC)
     # Cholesky (one cascade or two): the block type with the longest HGC region streams its
     # Grams beside the elimination (units/cholesky.py's _beside: linearize_solve), the first
@@ -84,6 +95,15 @@ class PlanOptions:
     # the FPGA part whose device capacities the fit verdict uses (hls/target.py; an HLS
     # design's HlsConfig.part, which run_hls.tcl names)
     part: str = DEFAULT_PART
+
+    @property
+    def state_allocation(self) -> tuple[tuple[str, int], ...]:
+        """retract_<k>'s ALLOCATION limits: ``state_limits`` if given, else
+        :data:`STATE_ALLOCATION`, or :data:`STATE_ALLOCATION_COLUMNS` for back-substitution by
+        columns (``backsub_lanes`` 4: two ends feed the one retire)."""
+        if self.state_limits is not None:
+            return self.state_limits
+        return STATE_ALLOCATION_COLUMNS if self.backsub_lanes == 4 else STATE_ALLOCATION
 
     @classmethod
     def of(cls, program: Program, **changes) -> PlanOptions:

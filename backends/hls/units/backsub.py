@@ -494,15 +494,9 @@ def column_phases(ctx, unit: str) -> None:
     its DATAFLOW region of the loader, the two ends (:func:`column_schedule`) and the state
     update beside them, each step's variables retired no earlier than the end of the pass that
     solved it (:func:`retire_region`'s arithmetic on those ends), then the cost at X_TRIAL."""
-    from fgc_backends.hls.units.state_update import retire_timing
     tables, ops = ctx.tables, ctx.les
-    ends, columns = column_schedule(tables, ops)
-    order = column_order(tables)
-    counts = [len(ctx.program.schedule.steps[s].frontals) for s in order]
-    ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
-                              ctx.opts.state_allocation)
-    var_end: list[int] = []
-    region = max(columns, retire_sent([ends[s] for s in order], counts, ii, depth, var_end))
+    columns, last, var_end = column_retire(ctx)
+    region = max(columns, last)
     for e in range(2):
         ctx.channels.append(Channel(f"backsub_groups{e}", "stream", column_fifo(tables, ops, e),
                                     COLUMN_WIDTH * ops.word_bits, "backsub_loader",
@@ -514,6 +508,22 @@ def column_phases(ctx, unit: str) -> None:
     _solve_phase(ctx, unit, Process("backsub_columns", unit,
                                     (Loop("column_region", 1, 1, columns),)),
                  columns, region, var_end)
+
+
+def column_retire(ctx) -> tuple[int, int, list[int]]:
+    """The column design's region (:func:`column_schedule`), when its state update ends
+    (:func:`retire_sent`: each step's variables retired no earlier than the end of the pass
+    that solved it) and when each variable is retired, in RETIRE_VARS order."""
+    from fgc_backends.hls.units.state_update import retire_timing
+    tables = ctx.tables
+    ends, columns = column_schedule(tables, ctx.les)
+    order = column_order(tables)
+    counts = [len(ctx.program.schedule.steps[s].frontals) for s in order]
+    ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
+                              ctx.opts.state_allocation)
+    var_end: list[int] = []
+    last = retire_sent([ends[s] for s in order], counts, ii, depth, var_end)
+    return columns, last, var_end
 
 
 def retire_sent(sent_at: list[int], counts: list[int], ii: int,

@@ -180,6 +180,16 @@ def factor_allocation(program, opts) -> list[tuple[tuple[str, int], ...]]:
     return out
 
 
+def mode_issue(b, limits, mode: str, ops) -> tuple[tuple[tuple[str, int], ...], int]:
+    """(the ``ALLOCATION`` limits of block ``b``'s ``mode`` function, :func:`mode_allocation`;
+    the II they allow: what an evaluation issues through them, a special function's exclusive
+    branches sharing the allocated operators, units/special_ops.py's issued_counts)."""
+    allocated = mode_allocation(limits, printed_counts(b, mode))
+    issued = issued_counts(b, mode)
+    return allocated, max([1] + [math.ceil(issued.get(k, 0) * ops.op(k).ii / n)
+                                 for k, n in allocated])
+
+
 def mode_allocation(limits, counts: dict) -> tuple[tuple[str, int], ...]:
     """The ``ALLOCATION`` limits of one mode's function (``factor_<b>``: the Jacobian's counts,
     ``factor_cost_<b>``: the cost's): the block's ``limits`` (:func:`factor_allocation`), at
@@ -253,6 +263,9 @@ def build(ctx) -> None:
     whiten_macs = 0
     allocations = factor_allocation(program, opts)
     small = small_blocks(program)
+    # the column design: trial_cost's loops at the IIs that keep up with its retire
+    banked = trial_banked(program, opts)
+    chosen = keep_up_ii(ctx, allocations, small) if banked else {}
     for i, (b, bc) in enumerate(zip(program.blocks, ctx.blocks, strict=True)):
         if opts.jacobian_storage == "raw":
             words = raw_jacobian_words(b) * len(bc.instances)
@@ -271,13 +284,11 @@ def build(ctx) -> None:
                 ("jacobian", b.kernel, jac, whitening_ops(bc)),
                 ("cost", b.cost_kernel, cost, robust_ops(bc))):
             counts = printed_counts(b, mode)  # as printed, the special functions' bodies in
-            allocated = mode_allocation(allocations[i], counts)
-            # what an evaluation issues through them: a special function's exclusive branches
-            # share the allocated operators (units/special_ops.py's issued_counts)
-            issued = issued_counts(b, mode)
-            issue = max([1] + [math.ceil(issued.get(k, 0) * ops.op(k).ii / n)
-                               for k, n in allocated])
-            ii = max(issue, loop_ii(instance_accesses(bc, mode)))
+            allocated, issue = mode_issue(b, allocations[i], mode, ops)
+            if mode == "cost" and banked:  # factor_cost_<b>'s one call site: trial_cost's
+                ii = chosen[i]  # loop, gather_trial_<b> from DATA_BUF's two banks
+            else:
+                ii = max(issue, loop_ii(instance_accesses(bc, mode)))
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
                 ii = max(ii, ops.add.latency)  # simulator's): a recurrence through the adder
             # one evaluation ends no earlier than its critical path, nor before the allocated
@@ -484,6 +495,97 @@ def cost_loops(processes) -> dict:
     its ``factor_<b>_cost`` / ``factor_small_cost`` process."""
     return {("small" if p.name.startswith("factor_small") else int(p.name.split("_")[1])):
             p.loops[0] for p in processes}
+
+
+TRIAL_DATA_BANKS = 2  # DATA_BUF cyclic 2 (trial_cost's ARRAY_PARTITION; gather_trial_<b>)
+
+
+def trial_banked(program, opts) -> bool:
+    """True when trial_cost reads DATA_BUF cyclic :data:`TRIAL_DATA_BANKS` through
+    ``gather_trial_<b>`` (:func:`keep_up_ii`): back-substitution by columns (``backsub_lanes``
+    4), whose two ends and retire feed it faster than the slots (where the cost pass keeps
+    up at one bank's ports, and faster loops would only cost operators)."""
+    from fgc_backends.hls.units.backsub import COLUMN_LANES
+    from fgc_backends.hls.units.state_update import fed_by_backsub
+    return fed_by_backsub(program, opts) and opts.backsub_lanes == COLUMN_LANES
+
+
+def keep_up_ii(ctx, allocations, small) -> dict[int, int]:
+    """The column design's cost-mode II per block type with a datapath of its own: the
+    largest II at which trial_cost still ends when it would with every such loop at its
+    fastest, the retire feeding it as the column region's (``units.backsub.column_retire``):
+    a loop that waits on the retire's variables anyway is given fewer operators
+    (factor_cost_<b>'s ALLOCATION is bound at this II). Its fastest: the cost-mode operators'
+    issue II, the running total's adder, DATA_BUF's two banks (:func:`trial_data_ii`), and no
+    more trig or special function instances (12 and 17 DSP each) than the one-bank II binds
+    (imu_window N = 50: the IMU cost's 6 special functions on one instance, II 72, not 57: 22
+    DSP fewer for 137 cycles an iteration). Never slower than one bank's ports (the slot
+    designs' II). Blocks with the most work (instances x II) first."""
+    from fgc_backends.hls.units.backsub import column_chain, column_retire
+    program, opts, ops, blocks = ctx.program, ctx.opts, ctx.ops, ctx.blocks
+    sim_ops = _sim_table(ops)
+    loops, slow = {}, {}
+    for i, b in enumerate(program.blocks):
+        if i in small:
+            continue
+        allocated, issue = mode_issue(b, allocations[i], "cost", ops)
+        slow[i] = max(issue, ops.add.latency, loop_ii(instance_accesses(blocks[i], "cost")))
+        # no more function instances (trig, special: 12 and 17 DSP each) than at one bank's II
+        issued, floor = issued_counts(b, "cost"), 1
+        for kind, limit in allocated:
+            if kind in ("trig", "special") and issued.get(kind):
+                work = issued[kind] * ops.op(kind).ii
+                floor = max(floor, math.ceil(work / min(limit, math.ceil(work / slow[i]))))
+        fast = min(slow[i], max(issue, ops.add.latency, trial_data_ii(blocks[i]), floor))
+        loops[i] = Loop(f"factor_{i}_cost_instances", len(blocks[i].instances), fast,
+                        max(critical_path(b.cost_kernel, sim_ops), issue))
+    if small:
+        _, ii, issue = small_allocation(program, blocks, opts, "cost", ops)
+        loops["small"] = Loop("factor_small_cost_instances", 0, ii, max(
+            [issue] + [critical_path(program.blocks[i].cost_kernel, sim_ops) for i in small]))
+
+    if isinstance(column_chain(ctx.tables), str):  # refused by name (units.backsub)
+        return slow
+    _, _, var_end = column_retire(ctx)
+
+    def end(trial) -> int:
+        return trial_end(trial_plan(program, blocks, trial, ctx.tables), var_end)
+
+    target = end(loops)
+    for i in sorted(slow, key=lambda i: (-loops[i].trip * loops[i].ii, i)):
+        lo, hi = loops[i].ii, slow[i]
+        while lo < hi:  # the largest II that keeps the end (the end grows with the II)
+            mid = (lo + hi + 1) // 2
+            if end({**loops, i: replace(loops[i], ii=mid)}) <= target:
+                lo = mid
+            else:
+                hi = mid - 1
+        loops[i] = replace(loops[i], ii=lo)
+    return {i: loops[i].ii for i in slow}
+
+
+def trial_span(bc) -> dict:
+    """``gather_trial_<b>``'s reads of DATA_BUF (accel.cpp.jinja): ``lo``, the members' first
+    data word in the line (measurements or noise parameters), and ``words``, from there to the
+    last one plus one (read from the even address below the line, 2 h + lo + i: an odd line's
+    words start one further on); 0 words if the block reads none."""
+    regions = [(m.meas_data, m.meas_words) for m in bc.members if m.meas_words]
+    regions += [(m.noise_data, m.n_params) for m in bc.members if m.n_params]
+    if not regions:
+        return {"lo": 0, "words": 0}
+    lo = min(a for a, _ in regions)
+    return {"lo": lo, "words": max(a + n for a, n in regions) - lo + 1}
+
+
+def trial_data_ii(bc) -> int:
+    """The II DATA_BUF's ports allow ``gather_trial_<b>`` and its robust words: DATA_BUF
+    cyclic :data:`TRIAL_DATA_BANKS`, the gather's :func:`trial_span` words read at 2 h + c
+    (h = its line / 2, c a constant: each read's bank known), so they take the banks' 4
+    ports; each robust word's read (at FACTOR_DATA_OFF[f] + c, its bank not known) a port of
+    every bank."""
+    robust = sum(2 * m.robust for m in bc.members)
+    return max(1, math.ceil((trial_span(bc)["words"] + TRIAL_DATA_BANKS * robust)
+                            / (2 * TRIAL_DATA_BANKS)))
 
 
 def trial_plan(program, blocks, loops: dict, tables: dict) -> tuple[TrialLoop, ...]:

@@ -42,7 +42,10 @@ def build(ctx) -> None:
     ctx.memories.append(Memory("state", n_x, ops.word_bits, 1))  # X
     ctx.memories.append(Memory("state_trial", n_x, ops.word_bits, 1))  # X_TRIAL
     ctx.memories.append(Memory("gradient_delta", 2 * n_t, ops.word_bits, 2))  # G, DELTA
-    ctx.memories.append(Memory("data", ctx.sizes["N_DATA"], ops.word_bits, 1))  # DATA_BUF
+    # DATA_BUF: cyclic 2 where trial_cost reads it so (units/datapath.py's trial_banked)
+    from fgc_backends.hls.units.datapath import TRIAL_DATA_BANKS, trial_banked
+    banks = TRIAL_DATA_BANKS if trial_banked(program, ctx.opts) else 1
+    ctx.memories.append(Memory("data", ctx.sizes["N_DATA"], ops.word_bits, banks))
 
 
 SPEC = UnitSpec(name="memories", role="state, gradient/step and data memories", build=build,

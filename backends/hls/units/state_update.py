@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 from fgc.ir.program import KernelText
+from fgc_backends.cfamily.printer import kernel_printed_ops
 from fgc_backends.cfamily.retract import retract_kernel, variable_class
 from fgc_backends.cost.kernels import critical_path
 from fgc_backends.cost.operators import OperatorTable
@@ -19,6 +20,7 @@ from fgc_backends.hls.plan.loops import _sim_table
 from fgc_backends.hls.plan.model import PORTS, Loop, Phase, Process, Unit
 from fgc_backends.hls.plan.options import STATE_ALLOCATION
 from fgc_backends.hls.units.spec import UnitSpec
+from fgc_backends.hls.units.special_ops import helper_ops
 
 
 def _type_counts(variables) -> dict[str, int]:
@@ -43,8 +45,14 @@ def retract_datapath(type_name: str, ops: OperatorTable,
     counts = kernel.op_counts()
     alloc = dict(allocation)
     allocated = tuple((k, min(alloc[k], n)) for k, n in counts.items() if n > 0 and k in alloc)
+    # what one retraction issues through them: the printed kernel's operations and its
+    # special functions' bodies, each body's branches sharing (units/special_ops.py; the
+    # second reader reads the same text: a Pose3's 88 adds, 105 multiplies)
+    issued = dict(kernel_printed_ops(kernel))
+    for kind, n in helper_ops(kernel, exclusive=True):
+        issued[kind] = issued.get(kind, 0) + n
     ii = max([1, -(-cls.storage_dim // PORTS)]
-             + [math.ceil(counts[k] * ops.op(k).ii / n) for k, n in allocated])
+             + [math.ceil(issued.get(k, counts[k]) * ops.op(k).ii / n) for k, n in allocated])
     return allocated, ii, critical_path(KernelText.of(kernel), _sim_table(ops))
 
 
