@@ -1503,8 +1503,8 @@ void factor_0(const T in[42], const T dat[193],
 void factor_cost_0(const T in[42], const T dat[193],
                    T half[1]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=4
-#pragma HLS ALLOCATION operation instances=fmul limit=5
+#pragma HLS ALLOCATION operation instances=fadd limit=6
+#pragma HLS ALLOCATION operation instances=fmul limit=7
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
 #pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = in[30] - dat[63];
@@ -2293,6 +2293,27 @@ void gather_0(const T x[N_X], int f, T in[42], T dat[193]) {
     for (int i = 0; i < 120; ++i) dat[73 + i] = DATA_BUF[line + 73 + i];
 }
 
+// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
+// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
+// instance's 194 reads take the two banks' four ports; into registers (w), its data
+// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
+void gather_trial_0(const T x[N_X], int f, T in[42], T dat[193]) {
+    const int vb = FACTOR_VAR_BEGIN[f];
+    const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
+    for (int i = 0; i < 12; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    for (int i = 0; i < 3; ++i) in[12 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 1]] + i];
+    for (int i = 0; i < 12; ++i) in[15 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 2]] + i];
+    for (int i = 0; i < 3; ++i) in[27 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 3]] + i];
+    for (int i = 0; i < 6; ++i) in[30 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 4]] + i];
+    for (int i = 0; i < 6; ++i) in[36 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 5]] + i];
+    T w[194];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+#pragma HLS ARRAY_PARTITION variable=w complete
+    for (int i = 0; i < 193; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
+    w[193] = p ? DATA_BUF[2 * h + 193] : T(0);  // an odd line's last word
+    for (int i = 0; i < 73; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
+    for (int i = 0; i < 120; ++i) dat[73 + i] = p ? w[74 + i] : w[73 + i];
+}
+
 // block 0, member 0: its rows 9 ... 14 of 15 hold only 0 and +-1 left of the right-hand side;
 // their share of the whitened rows, row by row in order: +-R_ij at j's constant entries, R_ij b_j
 void whiten_tail_0_0(const T raw[], T ab[], const T p[]) {
@@ -2720,6 +2741,22 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
     for (int i = 0; i < 1; ++i) dat[12 + i] = DATA_BUF[line + 12 + i];
 }
 
+// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
+// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
+// instance's 14 reads take the two banks' four ports; into registers (w), its data
+// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
+void gather_trial_1(const T x[N_X], int f, T in[12], T dat[13]) {
+    const int vb = FACTOR_VAR_BEGIN[f];
+    const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
+    for (int i = 0; i < 12; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    T w[14];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+#pragma HLS ARRAY_PARTITION variable=w complete
+    for (int i = 0; i < 13; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
+    w[13] = p ? DATA_BUF[2 * h + 13] : T(0);  // an odd line's last word
+    for (int i = 0; i < 12; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
+    for (int i = 0; i < 1; ++i) dat[12 + i] = p ? w[13 + i] : w[12 + i];
+}
+
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
 // 6 x 7), whitening, into AB; one instance every II=111 cycles (the plan's)
 void evaluate_1(const T x[N_X], hls::stream<GramRow>& rows) {
@@ -2835,6 +2872,22 @@ void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
     for (int i = 0; i < 1; ++i) dat[3 + i] = DATA_BUF[line + 3 + i];
 }
 
+// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
+// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
+// instance's 5 reads take the two banks' four ports; into registers (w), its data
+// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
+void gather_trial_2(const T x[N_X], int f, T in[3], T dat[4]) {
+    const int vb = FACTOR_VAR_BEGIN[f];
+    const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
+    for (int i = 0; i < 3; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    T w[5];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+#pragma HLS ARRAY_PARTITION variable=w complete
+    for (int i = 0; i < 4; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
+    w[4] = p ? DATA_BUF[2 * h + 4] : T(0);  // an odd line's last word
+    for (int i = 0; i < 3; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
+    for (int i = 0; i < 1; ++i) dat[3 + i] = p ? w[4 + i] : w[3 + i];
+}
+
 // block 2, Jacobian mode: per instance residual + Jacobian (its 6 structural non-zeros of
 // 3 x 4), whitening, into AB; one instance every II=6 cycles (the plan's)
 void evaluate_2(const T x[N_X], hls::stream<GramRow>& rows) {
@@ -2946,6 +2999,22 @@ void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     for (int i = 0; i < 6; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     for (int i = 0; i < 6; ++i) dat[0 + i] = DATA_BUF[line + 0 + i];
     for (int i = 0; i < 1; ++i) dat[6 + i] = DATA_BUF[line + 6 + i];
+}
+
+// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
+// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
+// instance's 8 reads take the two banks' four ports; into registers (w), its data
+// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
+void gather_trial_3(const T x[N_X], int f, T in[6], T dat[7]) {
+    const int vb = FACTOR_VAR_BEGIN[f];
+    const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
+    for (int i = 0; i < 6; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    T w[8];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+#pragma HLS ARRAY_PARTITION variable=w complete
+    for (int i = 0; i < 7; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
+    w[7] = p ? DATA_BUF[2 * h + 7] : T(0);  // an odd line's last word
+    for (int i = 0; i < 6; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
+    for (int i = 0; i < 1; ++i) dat[6 + i] = p ? w[7 + i] : w[6 + i];
 }
 
 // block 3, Jacobian mode: per instance residual + Jacobian (its 12 structural non-zeros of
@@ -3140,12 +3209,13 @@ const int TRIAL_F_3[1] = {  // per entry of cost loop 3: its instance (-1: none)
     9,
 };
 void trial_cost(hls::stream<TrialVar>& tx) {
+#pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=2
     FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
     T x[N_X];  // the variables taken so far
     T total = T(0);
-    // block 0 (CombinedImuFactor): 7 entries, one every II=97 cycles (the plan's)
+    // block 0 (CombinedImuFactor): 7 entries, one every II=72 cycles (the plan's)
     for (int e = 0; e < 7; ++e) {
-#pragma HLS PIPELINE II=97
+#pragma HLS PIPELINE II=72
         for (int j = 0; j < 6; ++j) {  // the variables retired since, in order
             const int x0 = TRIAL_X0_0[e * 6 + j], x1 = TRIAL_X1_0[e * 6 + j];
             if (x0 < x1) {
@@ -3159,13 +3229,13 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         const int f = TRIAL_F_0[e];
         if (f >= 0) {
         T in[42], dat[193], half[1];
-        gather_0(x, f, in, dat);
+        gather_trial_0(x, f, in, dat);
         factor_cost_0(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
             total += cost;
         }
-        FGC_CYCLES("trial_cost", 0, "cost_0", 1, 97, 598);
+        FGC_CYCLES("trial_cost", 0, "cost_0", 1, 72, 598);
     }
     // block 1 (PriorFactorPose3): 1 entries, one every II=48 cycles (the plan's)
     for (int e = 0; e < 1; ++e) {
@@ -3173,7 +3243,7 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         const int f = TRIAL_F_1[e];
         if (f >= 0) {
         T in[12], dat[13], half[1];
-        gather_1(x, f, in, dat);
+        gather_trial_1(x, f, in, dat);
         factor_cost_1(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
@@ -3187,7 +3257,7 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         const int f = TRIAL_F_2[e];
         if (f >= 0) {
         T in[3], dat[4], half[1];
-        gather_2(x, f, in, dat);
+        gather_trial_2(x, f, in, dat);
         factor_cost_2(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
@@ -3201,7 +3271,7 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         const int f = TRIAL_F_3[e];
         if (f >= 0) {
         T in[6], dat[7], half[1];
-        gather_3(x, f, in, dat);
+        gather_trial_3(x, f, in, dat);
         factor_cost_3(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
@@ -3382,7 +3452,7 @@ struct LesConfig {
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
     // back_substitute's state update (fgc_backsub.h's backsub_retire): a variable an iteration
     static const int N_TANGENT = ::fgc::N_TANGENT, N_VARIABLES = ::fgc::N_VARIABLES;
-    static const int RETIRE_II = 36, RETIRE_DEPTH = 218;
+    static const int RETIRE_II = 22, RETIRE_DEPTH = 218;
     static void retract_variable(int v, const T delta[N_TANGENT], bool at_x,
                                  hls::stream<::fgc::TrialVar>& tx) {
         ::fgc::retract_variable(v, delta, at_x, tx);

@@ -2138,8 +2138,8 @@ void factor_3(const T in[42], const T dat[211],
 void factor_cost_3(const T in[42], const T dat[211],
                    T half[2]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=5
-#pragma HLS ALLOCATION operation instances=fmul limit=6
+#pragma HLS ALLOCATION operation instances=fadd limit=8
+#pragma HLS ALLOCATION operation instances=fmul limit=10
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
 #pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = in[0]*in[15] + in[3]*in[18] + in[6]*in[21];
@@ -2502,6 +2502,22 @@ void gather_0(const T x[N_X], int f, T in[12], T dat[18]) {
     for (int i = 0; i < 6; ++i) dat[12 + i] = DATA_BUF[line + 12 + i];
 }
 
+// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
+// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
+// instance's 19 reads take the two banks' four ports; into registers (w), its data
+// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
+void gather_trial_0(const T x[N_X], int f, T in[12], T dat[18]) {
+    const int vb = FACTOR_VAR_BEGIN[f];
+    const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
+    for (int i = 0; i < 12; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    T w[19];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+#pragma HLS ARRAY_PARTITION variable=w complete
+    for (int i = 0; i < 18; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
+    w[18] = p ? DATA_BUF[2 * h + 18] : T(0);  // an odd line's last word
+    for (int i = 0; i < 12; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
+    for (int i = 0; i < 6; ++i) dat[12 + i] = p ? w[13 + i] : w[12 + i];
+}
+
 // block 0, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
 // 6 x 7), whitening, into AB; one instance every II=111 cycles (the plan's)
 void evaluate_0(const T x[N_X]) {
@@ -2728,6 +2744,29 @@ void gather_3(const T x[N_X], int f, T in[42], T dat[211]) {
     for (int i = 0; i < 12; ++i) dat[73 + i] = DATA_BUF[line + 195 + i];
     for (int i = 0; i < 120; ++i) dat[85 + i] = DATA_BUF[line + 73 + i];
     for (int i = 0; i < 6; ++i) dat[205 + i] = DATA_BUF[line + 207 + i];
+}
+
+// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
+// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
+// instance's 214 reads take the two banks' four ports; into registers (w), its data
+// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
+void gather_trial_3(const T x[N_X], int f, T in[42], T dat[211]) {
+    const int vb = FACTOR_VAR_BEGIN[f];
+    const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
+    for (int i = 0; i < 12; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    for (int i = 0; i < 3; ++i) in[12 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 1]] + i];
+    for (int i = 0; i < 12; ++i) in[15 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 2]] + i];
+    for (int i = 0; i < 3; ++i) in[27 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 3]] + i];
+    for (int i = 0; i < 6; ++i) in[30 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 4]] + i];
+    for (int i = 0; i < 6; ++i) in[36 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 5]] + i];
+    T w[214];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+#pragma HLS ARRAY_PARTITION variable=w complete
+    for (int i = 0; i < 213; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
+    w[213] = p ? DATA_BUF[2 * h + 213] : T(0);  // an odd line's last word
+    for (int i = 0; i < 73; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
+    for (int i = 0; i < 12; ++i) dat[73 + i] = p ? w[196 + i] : w[195 + i];
+    for (int i = 0; i < 120; ++i) dat[85 + i] = p ? w[74 + i] : w[73 + i];
+    for (int i = 0; i < 6; ++i) dat[205 + i] = p ? w[208 + i] : w[207 + i];
 }
 
 // block 3, member 0: its rows 9 ... 14 of 15 hold only 0 and +-1 left of the right-hand side;
@@ -3297,12 +3336,13 @@ const int TRIAL_F_0[1] = {  // per entry of cost loop 0: its instance (-1: none)
     0,
 };
 void trial_cost(hls::stream<TrialVar>& tx) {
+#pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=2
     FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
     T x[N_X];  // the variables taken so far
     T total = T(0);
-    // block 3 (CombinedImuFactor+LidarOdometryFactor): 7 entries, one every II=106 cycles (the plan's)
+    // block 3 (CombinedImuFactor+LidarOdometryFactor): 7 entries, one every II=66 cycles (the plan's)
     for (int e = 0; e < 7; ++e) {
-#pragma HLS PIPELINE II=106
+#pragma HLS PIPELINE II=66
         for (int j = 0; j < 6; ++j) {  // the variables retired since, in order
             const int x0 = TRIAL_X0_3[e * 6 + j], x1 = TRIAL_X1_3[e * 6 + j];
             if (x0 < x1) {
@@ -3316,14 +3356,14 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         const int f = TRIAL_F_3[e];
         if (f >= 0) {
         T in[42], dat[211], half[2];
-        gather_3(x, f, in, dat);
+        gather_trial_3(x, f, in, dat);
         factor_cost_3(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
         cost += half[1];  // no robust loss on this member (the Program's flag)
             total += cost;
         }
-        FGC_CYCLES("trial_cost", 0, "cost_3", 1, 106, 602);
+        FGC_CYCLES("trial_cost", 0, "cost_3", 1, 66, 602);
     }
     // the small datapath (GPSFactor, PriorFactorImuBias, PriorFactorVector3): 10 entries, one every II=11 cycles (the plan's)
     for (int e = 0; e < 10; ++e) {
@@ -3340,7 +3380,7 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         const int f = TRIAL_F_0[e];
         if (f >= 0) {
         T in[12], dat[18], half[1];
-        gather_0(x, f, in, dat);
+        gather_trial_0(x, f, in, dat);
         factor_cost_0(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
@@ -3513,7 +3553,7 @@ struct LesConfig {
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
     // back_substitute's state update (fgc_backsub.h's backsub_retire): a variable an iteration
     static const int N_TANGENT = ::fgc::N_TANGENT, N_VARIABLES = ::fgc::N_VARIABLES;
-    static const int RETIRE_II = 36, RETIRE_DEPTH = 218;
+    static const int RETIRE_II = 22, RETIRE_DEPTH = 218;
     static void retract_variable(int v, const T delta[N_TANGENT], bool at_x,
                                  hls::stream<::fgc::TrialVar>& tx) {
         ::fgc::retract_variable(v, delta, at_x, tx);

@@ -1170,6 +1170,23 @@ void gather_0(const T x[N_X], int f, T in[24], T dat[13]) {
     for (int i = 0; i < 1; ++i) dat[12 + i] = DATA_BUF[line + 12 + i];
 }
 
+// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
+// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
+// instance's 14 reads take the two banks' four ports; into registers (w), its data
+// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
+void gather_trial_0(const T x[N_X], int f, T in[24], T dat[13]) {
+    const int vb = FACTOR_VAR_BEGIN[f];
+    const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
+    for (int i = 0; i < 12; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    for (int i = 0; i < 12; ++i) in[12 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 1]] + i];
+    T w[14];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+#pragma HLS ARRAY_PARTITION variable=w complete
+    for (int i = 0; i < 13; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
+    w[13] = p ? DATA_BUF[2 * h + 13] : T(0);  // an odd line's last word
+    for (int i = 0; i < 12; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
+    for (int i = 0; i < 1; ++i) dat[12 + i] = p ? w[13 + i] : w[12 + i];
+}
+
 // block 0, Jacobian mode: per instance residual + Jacobian (its 60 structural non-zeros of
 // 6 x 13), whitening, into AB; one instance every II=42 cycles (the plan's)
 void evaluate_0(const T x[N_X]) {
@@ -1257,6 +1274,22 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
     for (int i = 0; i < 12; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
     for (int i = 0; i < 12; ++i) dat[0 + i] = DATA_BUF[line + 0 + i];
     for (int i = 0; i < 1; ++i) dat[12 + i] = DATA_BUF[line + 12 + i];
+}
+
+// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
+// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
+// instance's 14 reads take the two banks' four ports; into registers (w), its data
+// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
+void gather_trial_1(const T x[N_X], int f, T in[12], T dat[13]) {
+    const int vb = FACTOR_VAR_BEGIN[f];
+    const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
+    for (int i = 0; i < 12; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
+    T w[14];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+#pragma HLS ARRAY_PARTITION variable=w complete
+    for (int i = 0; i < 13; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
+    w[13] = p ? DATA_BUF[2 * h + 13] : T(0);  // an odd line's last word
+    for (int i = 0; i < 12; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
+    for (int i = 0; i < 1; ++i) dat[12 + i] = p ? w[13 + i] : w[12 + i];
 }
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
@@ -1409,6 +1442,7 @@ const int TRIAL_F_1[1] = {  // per entry of cost loop 1: its instance (-1: none)
     6,
 };
 void trial_cost(hls::stream<TrialVar>& tx) {
+#pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=2
     FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
     T x[N_X];  // the variables taken so far
     T total = T(0);
@@ -1428,7 +1462,7 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         const int f = TRIAL_F_0[e];
         if (f >= 0) {
         T in[24], dat[13], half[1];
-        gather_0(x, f, in, dat);
+        gather_trial_0(x, f, in, dat);
         factor_cost_0(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
@@ -1442,7 +1476,7 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         const int f = TRIAL_F_1[e];
         if (f >= 0) {
         T in[12], dat[13], half[1];
-        gather_1(x, f, in, dat);
+        gather_trial_1(x, f, in, dat);
         factor_cost_1(in, dat, half);
         T cost = T(0);
         cost += half[0];  // no robust loss on this member (the Program's flag)
@@ -1571,7 +1605,7 @@ struct LesConfig {
     static constexpr double SINGULAR_EPS = 1.1920928955078125e-06;  // 10 eps of L
     // back_substitute's state update (fgc_backsub.h's backsub_retire): a variable an iteration
     static const int N_TANGENT = ::fgc::N_TANGENT, N_VARIABLES = ::fgc::N_VARIABLES;
-    static const int RETIRE_II = 36, RETIRE_DEPTH = 212;
+    static const int RETIRE_II = 22, RETIRE_DEPTH = 212;
     static void retract_variable(int v, const T delta[N_TANGENT], bool at_x,
                                  hls::stream<::fgc::TrialVar>& tx) {
         ::fgc::retract_variable(v, delta, at_x, tx);
