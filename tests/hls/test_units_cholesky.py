@@ -267,11 +267,12 @@ def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program
     # cholesky_eliminate_all: the steps' position parities, the first step's Grams before the
     # steps; per step (the t-th) its children of the other parity than t's (phase assemble: the
     # step before among them), then the cholesky_overlap region (phase cholesky_level<t>): the
-    # cascade beside the assembler, which streams the step's words out two a cycle, assembles
-    # the next step's Grams into the other lane and adds its children from the NF lane step t's
+    # cascade beside the assembler, which streams the step's words out two a cycle while it
+    # stores the next step's first Gram into the other lane (one loop, the longer of the two),
+    # then adds the next step's further Grams and its children from the NF lane step t's
     # cascade does not write
     from fgc_backends.hls.plan.loops import _tables, kernel_timing
-    from fgc_backends.hls.units.cholesky import assemble_loops, cpe_pairs
+    from fgc_backends.hls.units.cholesky import assemble_loops, cpe_pairs, first_gram_trip
 
     plan = build_plan(program, PlanOptions.of(program, hgc_beside=False))
     tables, timing = _tables(program), kernel_timing(FLOAT32)
@@ -281,7 +282,13 @@ def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program
     lanes, first, *kids = assemble.processes
     assert lanes.loops[0].trip == len(order)
     assert first.name == "assemble_first"
-    assert [lp.name for lp in first.loops][:2] == ["map", "gram_first"]
+    # the first step's first Gram: its column map (d iterations), 3 more, its packed entries
+    # two a cycle, in the assembler's one loop with nothing to stream
+    fb, fc = tables["STEP_FACTOR_BEGIN"], tables["FACTOR_COLMAP_BEGIN"]
+    fac = tables["STEP_FACTORS"][fb[order[0]]]
+    d = fc[fac + 1] - fc[fac]
+    assert first.loops[0].name == "source"
+    assert first.loops[0].trip == d + 3 + -(-(d * (d + 1) // 2 + d) // 2)
     assert all(lp.name == "child" for p in kids for lp in p.loops)
     regions = [ph for ph in plan.phases if ph.name.startswith("cholesky_level")]
     assert len(regions) == len(order)
@@ -291,10 +298,11 @@ def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program
         cascade, assembler = ph.processes
         assert cascade.name == f"cascade{s}" and assembler.name == f"assembler{s}"
         assert assembler.loops[0].name == "source"
-        assert assembler.loops[0].trip == cpe_pairs(tables["STEP_W"][s])
-        nxt = order[t + 1] if t + 1 < len(order) else None
-        beside = assemble_loops(tables, nxt, timing, odd=odd, par=1 - t % 2) \
-            if nxt is not None else []
+        nxt = order[t + 1] if t + 1 < len(order) else -1
+        assert assembler.loops[0].trip == max(cpe_pairs(tables["STEP_W"][s]),
+                                              first_gram_trip(tables, nxt))
+        beside = [lp for lp in assemble_loops(tables, nxt, timing, odd=odd, par=1 - t % 2)
+                  if lp.name not in ("map", "gram_first")] if nxt >= 0 else []
         assert list(assembler.loops[1:]) == beside
         # the region: the slower process plus the other's fill, not their sum
         assert phase_cycles(ph) < cascade.cycles + assembler.cycles

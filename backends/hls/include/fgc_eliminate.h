@@ -49,40 +49,72 @@
 // streams a step's words into the cascade clears each word it reads, and the assembly writes
 // only words it reads (the upper triangle and the gradient of rows < w).
 
-// Step s's first factor's packed Gram into HA[lane], stored, not added (the lane is all zero):
-// two entries a cycle (GRAM's two ports read, the lane's two ports written; within one factor
-// every entry has its own address), its column map first copied into registers (two reads of
-// it an entry each). The further factors are cholesky_assemble_adds'. A factor whose Gram the
-// HGC streams beside the elimination (CFG::staged(fac) >= 0: its offset in a stage lane) is
-// read from `stage` (the lane the Gram source filled a pass before) instead of GRAM.
-template <class CFG>
-void cholesky_assemble_first(int s, int lane, const typename CFG::T stage[CFG::N_STAGE]) {
-    const int w = STEP_W[s];
-    if (STEP_FACTOR_BEGIN[s] < STEP_FACTOR_BEGIN[s + 1]) {
-        const int fac = STEP_FACTORS[STEP_FACTOR_BEGIN[s]];
-        const int cb = FACTOR_COLMAP_BEGIN[fac];
-        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
-        const int g0 = FACTOR_GRAM_OFF[fac];
-        const int so = CFG::staged(fac);
-        const int n = d * (d + 1) / 2 + d;
-        int map[CFG::MAX_W + 1];
+// The assembler's one loop (cholesky_assembler): step s's words streamed out of HA[SRC] (its
+// `pairs` pairs, none if s < 0) while step `next`'s first factor's packed Gram is stored, not
+// added, into HA[1 - SRC] (the other lane, all zero: its assembly starts here). HA is
+// partitioned into its two lanes and their two column banks (four memories, two ports each)
+// and SRC is a template constant, so the lanes are different memories in every iteration:
+//   - the source reads and clears a word of each of HA[SRC]'s banks a cycle (its two ports),
+//     two columns of a row (fgc_cpe.h's cpe_pair: columns i + 2j and i + 2j + 1, one from
+//     each bank, the word past the gradient of a row of an odd count a zero nobody writes),
+//     in the feed's order (rows 0 ... w - 1, row i from its diagonal to the gradient);
+//   - the first Gram (d columns) is stored two entries a cycle into HA[1 - SRC] (within one
+//     factor every entry has its own address; two writes a cycle into any of its banks: their
+//     two ports; GRAM's or the stage lane's two ports read), after its column map is copied
+//     into registers in iterations 0 ... d - 1, three iterations before its first read (a
+//     register array is read no sooner than 3 iterations after it is written, as
+//     gram_entries' banks).
+// Trip max(pairs, d + 3 + ceil(n / 2)) (n = d (d + 1) / 2 + d; no Gram: pairs) at II 1: before
+// this loop the source and the Gram store ran one after the other, pairs + d + ceil(n / 2).
+// A factor whose Gram the HGC streams beside the elimination (CFG::staged(fac) >= 0: its
+// offset in a stage lane) is read from `stage` (the lane the Gram source filled a pass before)
+// instead of GRAM.
+template <class CFG, int SRC>
+void cholesky_source_first(int w, int pairs, int next, int trip,
+                           const typename CFG::T stage[CFG::N_STAGE],
+                           hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out) {
+    typedef typename CFG::T T;
+    enum { DST = 1 - SRC, MAX_TRIP = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 > CFG::MAX_W + 3 +
+                                         CFG::TRIP_PACKED / 2
+                                         ? CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1
+                                         : CFG::MAX_W + 3 + CFG::TRIP_PACKED / 2 };
+    const bool first = next >= 0 && STEP_FACTOR_BEGIN[next] < STEP_FACTOR_BEGIN[next + 1];
+    const int fac = first ? STEP_FACTORS[STEP_FACTOR_BEGIN[next]] : 0;
+    const int cb = FACTOR_COLMAP_BEGIN[fac];
+    const int d = first ? FACTOR_COLMAP_BEGIN[fac + 1] - cb : 0;
+    const int g0 = FACTOR_GRAM_OFF[fac];
+    const int so = first ? CFG::staged(fac) : -1;
+    const int n = first ? d * (d + 1) / 2 + d : 0;
+    int map[CFG::MAX_W + 1];
 #pragma HLS ARRAY_PARTITION variable=map complete
-        for (int c = 0; c < d; ++c) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_W
-#pragma HLS PIPELINE II=1
-            map[c] = FACTOR_COLMAP[cb + c];
-        }
-        map[d] = w;  // row d of the packed Gram: the gradient, column w of the lane
-        FGC_CYCLES("assemble", 0, "map", d, CFG::MOVE_II, CFG::MOVE_DEPTH);
-        for (int k = 0, p = 0, q = 0; k < n; k += 2) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED/2
+    map[d] = first ? STEP_W[next] : 0;  // row d of the packed Gram: the gradient, column w
+    for (int t = 0, i = 0, c = 0, k = 0, p = 0, q = 0; t < trip; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_TRIP
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=HA inter false
+        if (t < pairs) {
+            const int odd_c = c & 1;  // column c in bank 1: the pair's even column is c + 1
+            const int e = (c + odd_c) >> 1, o = c >> 1;  // the even column's and the odd one's
+            const T v0 = HA[SRC][i][e][0], v1 = HA[SRC][i][o][1];
+            HA[SRC][i][e][0] = T(0);
+            HA[SRC][i][o][1] = T(0);
+            const fgc_units::cpe_pair<T> pr = {odd_c ? v1 : v0, odd_c ? v0 : v1};
+            out.write(pr);
+            if (c + 2 > w) {
+                ++i;
+                c = i;
+            } else {
+                c += 2;
+            }
+        }
+        if (t < d) {
+            map[t] = FACTOR_COLMAP[cb + t];
+        } else if (t >= d + 3 && k < n) {
             for (int h = 0; h < 2; ++h) {
                 if (k + h < n) {
                     const int a = map[p], b = map[q];
                     const int lo = b < a ? b : a, hi = b < a ? a : b;
-                    HA[lane][lo][hi >> 1][hi & 1] = so >= 0 ? stage[so + k + h] : GRAM[g0 + k + h];
+                    HA[DST][lo][hi >> 1][hi & 1] = so >= 0 ? stage[so + k + h] : GRAM[g0 + k + h];
                     if (q == p) {
                         q = 0;
                         ++p;
@@ -91,8 +123,8 @@ void cholesky_assemble_first(int s, int lane, const typename CFG::T stage[CFG::N
                     }
                 }
             }
+            k += 2;
         }
-        FGC_CYCLES("assemble", 0, "gram_first", (n + 1) / 2, CFG::MOVE_II, CFG::MOVE_DEPTH);
     }
 }
 
@@ -175,45 +207,33 @@ void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
 }
 
 // The assembly's process of the cholesky_overlap region: step s's words from HA[lane] into the
-// cascade's stream in its feed's order (rows 0 ... w - 1, row i from its diagonal to the
-// gradient), two columns of a row a cycle (fgc_cpe.h's cpe_pair: columns i + 2j and
-// i + 2j + 1, one from each bank, the word past the gradient of a row of an odd count a zero
-// nobody writes), each cleared as it is read (a read and a write a cycle in each bank); then
-// step `next`'s factor Grams into the other lane (none if next < 0; streamed ones from the stage
-// lane `stage`); then step kids's children at positions of parity rd from nfr (NF[rd]) into
+// cascade's stream (none if s < 0) while step `next`'s first factor's Gram goes into the other
+// lane (none if next < 0), in one loop (cholesky_source_first; whenever next >= 0, kid_lane is
+// 1 - lane); then step `next`'s further factor Grams (streamed ones from the stage lane
+// `stage`) and step kids's children at positions of parity rd from nfr (NF[rd]) into
 // HA[kid_lane] (none if kids < 0).
 template <class CFG>
 void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int rd,
                         const bool odd[N_STEPS], const typename CFG::T nfr[CFG::N_NF],
                         const typename CFG::T stage[CFG::N_STAGE],
                         hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out) {
-    typedef typename CFG::T T;
-    enum { MAX_PAIRS = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 };
     FGC_BRANCH();  // csim cycle counting only: beside the cascade
     const int w = s >= 0 ? STEP_W[s] : 0;
     const int pairs = s >= 0 && fgc_units::cpe_fits<CFG>(STEP_F[s], w - STEP_F[s])
                           ? fgc_units::cpe_pairs(w) : 0;
-    // trip sum_i ceil((w + 1 - i) / 2), II 1, depth of a move
-    for (int t = 0, i = 0, c = 0; t < pairs; ++t) {
-#pragma HLS LOOP_TRIPCOUNT max=MAX_PAIRS
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HA inter false
-        const int odd_c = c & 1;  // column c in bank 1: the pair's even column is c + 1
-        const int e = (c + odd_c) >> 1, o = c >> 1;  // the even column's and the odd one's word
-        const T v0 = HA[lane][i][e][0], v1 = HA[lane][i][o][1];
-        HA[lane][i][e][0] = T(0);
-        HA[lane][i][o][1] = T(0);
-        const fgc_units::cpe_pair<T> p = {odd_c ? v1 : v0, odd_c ? v0 : v1};
-        out.write(p);
-        if (c + 2 > w) {
-            ++i;
-            c = i;
-        } else {
-            c += 2;
-        }
+    int trip = pairs;
+    if (next >= 0 && STEP_FACTOR_BEGIN[next] < STEP_FACTOR_BEGIN[next + 1]) {
+        const int fac = STEP_FACTORS[STEP_FACTOR_BEGIN[next]];
+        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - FACTOR_COLMAP_BEGIN[fac];
+        const int gram = d + 3 + (d * (d + 1) / 2 + d + 1) / 2;
+        trip = gram > trip ? gram : trip;
     }
-    FGC_CYCLES("assemble", 0, "source", pairs, CFG::MOVE_II, CFG::MOVE_DEPTH);
-    if (next >= 0) cholesky_assemble_first<CFG>(next, kid_lane, stage);
+    if (lane == 0) {
+        cholesky_source_first<CFG, 0>(w, pairs, next, trip, stage, out);
+    } else {
+        cholesky_source_first<CFG, 1>(w, pairs, next, trip, stage, out);
+    }
+    FGC_CYCLES("assemble", 0, "source", trip, CFG::MOVE_II, CFG::MOVE_DEPTH);
     cholesky_assemble_adds<CFG>(next, kids, rd, odd, nfr, stage, kid_lane);
 }
 
@@ -267,6 +287,7 @@ void cholesky_overlap(int s, int lane, int next, int kids, int kid_lane, int rd,
 // if any step was not positive definite or had a pivot too small.
 template <class CFG>
 bool cholesky_eliminate_all(typename CFG::T mu) {
+#pragma HLS ARRAY_PARTITION variable=HA complete dim=1
 #pragma HLS ARRAY_PARTITION variable=HA complete dim=4
 #pragma HLS ARRAY_PARTITION variable=NF complete dim=1
     FGC_EVENT("solve");
@@ -358,6 +379,7 @@ void cholesky_overlap_beside(int s, int lane, int next, int kids, int kid_lane, 
 template <class CFG>
 void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
                                hls::stream<typename CFG::Word>& grams, bool& ok) {
+#pragma HLS ARRAY_PARTITION variable=HA complete dim=1
 #pragma HLS ARRAY_PARTITION variable=HA complete dim=4
 #pragma HLS ARRAY_PARTITION variable=NF complete dim=1
 #pragma HLS ARRAY_PARTITION variable=STAGE complete dim=1

@@ -365,15 +365,34 @@ def cpe_pairs(w: int) -> int:
     return (w + 2) * (w + 2) // 4 - 1
 
 
+def first_gram_trip(tables: dict, s: int) -> int:
+    """The iterations step ``s``'s first factor's Gram takes in fgc_eliminate.h's
+    cholesky_source_first (0: none, or s < 0): its column map into registers (d iterations),
+    three iterations before the first read, then its packed Gram (n = d (d + 1) / 2 + d
+    entries) two entries a cycle: d + 3 + ceil(n / 2)."""
+    fb = tables["STEP_FACTOR_BEGIN"]
+    if s < 0 or fb[s] == fb[s + 1]:
+        return 0
+    fac = tables["STEP_FACTORS"][fb[s]]
+    d = tables["FACTOR_COLMAP_BEGIN"][fac + 1] - tables["FACTOR_COLMAP_BEGIN"][fac]
+    return d + 3 + -(-(d * (d + 1) // 2 + d) // 2)
+
+
 def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict) -> list[Loop]:
     """fgc_eliminate.h's cholesky_assembler beside step s's cascade (s at an even position or
-    not: ``odd[s]``): step s's words streamed out of its lane two of a row a cycle
-    (:func:`cpe_pairs`, ``move``: each bank read and cleared), then step ``nxt``'s factor Grams
-    into the other lane and its children at positions of the other parity than s's (written
-    before this region; :func:`assemble_loops`), none if nxt < 0."""
-    loops = [kernel_loop("source", cpe_pairs(tables["STEP_W"][s]), "move", timing)]
+    not: ``odd[s]``; s < 0: the pass before the first step's region, nothing streamed): one
+    loop (cholesky_source_first, ``move``) that streams step s's words out of its lane two of
+    a row a cycle (:func:`cpe_pairs`, each bank read and cleared) while step ``nxt``'s first
+    factor's Gram is stored into the other lane (:func:`first_gram_trip`), trip the larger;
+    then step ``nxt``'s further factor Grams and its children at positions of the other parity
+    than s's (written before this region; :func:`assemble_loops` but the first factor's), none
+    if nxt < 0."""
+    pairs = cpe_pairs(tables["STEP_W"][s]) if s >= 0 else 0
+    loops = [kernel_loop("source", max(pairs, first_gram_trip(tables, nxt)), "move", timing)]
     if nxt >= 0:
-        loops += assemble_loops(tables, nxt, timing, odd=odd, par=1 - odd[s])
+        par = 1 - odd[s] if s >= 0 else 0
+        loops += [lp for lp in assemble_loops(tables, nxt, timing, odd=odd, par=par)
+                  if lp.name not in ("map", "gram_first")]
     return loops
 
 
@@ -394,8 +413,8 @@ def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
     odd = {s: t % 2 for t, s in enumerate(order)}
     for e in range(len(tables["STEP_CHILDREN"])):
         odd.setdefault(tables["STEP_CHILDREN"][e], 0)
-    first = [Process("assemble_first", "cpe", tuple(assemble_loops(
-        tables, order[0], timing, odd=odd, par=0)))] if order else []
+    first = [Process("assemble_first", "cpe", tuple(assembler_loops(
+        tables, -1, order[0], timing, odd)))] if order else []
     phases = [Phase("assemble", False, (
         Process("lanes", "cpe", (kernel_loop("lanes", len(order), "fill", timing),)),
         *first, *(Process(f"assemble{s}", "cpe", tuple(assemble_loops(
@@ -582,8 +601,8 @@ def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: Ope
 
     alone(*source(0))
     src, gate = source(1)
-    first = (Process("assemble_first", "cpe", tuple(assemble_loops(
-        tables, order[0], timing, odd=odd, par=0))),) if order else ()
+    first = (Process("assemble_first", "cpe", tuple(assembler_loops(
+        tables, -1, order[0], timing, odd))),) if order else ()
     alone(src + first, gate)
     for t, s in enumerate(order):
         alone((Process(f"assemble{s}", "cpe", tuple(assemble_loops(
@@ -995,7 +1014,10 @@ def _frontal(ctx) -> None:
     # trailing-matrix buffer (the rows a round leaves for the next, copied back into HF); per
     # cascade two HA lanes, two NF lanes, HF and the trailing buffer (and two CONDBUF lanes)
     ctx.memories.append(Memory("gram", sizes["N_GRAM"], ops.word_bits, 1))
-    ctx.memories.append(Memory("assembly", 2 * sets * sizes["MAX_W"] * cols, ops.word_bits, 1))
+    # HA (fgc_eliminate.h) or HA0 / HA1 (fgc_cascades.h): two lanes of two column banks each,
+    # four memories a cascade
+    ctx.memories.append(Memory("assembly", 2 * sets * sizes["MAX_W"] * cols, ops.word_bits,
+                               4 * sets))
     for lane in range(1, 2 * sets):  # NF's further lanes (solver_memories: the first)
         ctx.memories.append(Memory(f"nf_lane{lane}", sizes["N_NF"], ops.word_bits, 1))
     for k in range(sets):
