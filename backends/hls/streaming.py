@@ -180,6 +180,8 @@ def _cached_project(template, config, stream=None):
             b = stream.batch
             key += "-b" + hashlib.sha256(f"{b.template.to_json()}{b.keyframes}".encode()
                                          ).hexdigest()[:12]
+        if getattr(stream, "sweep", None) is not None:  # the batch steps' table (IS_BATCH)
+            key += "-s" + "_".join(map(str, stream.sweep))
     root, folder = cache_dir(), None
     if root is not None:
         folder = root / "hls-stream" / key
