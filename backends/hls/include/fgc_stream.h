@@ -12,6 +12,12 @@
 //                        and walk side by side (one DATAFLOW region, two processes)
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
+//   FGC_STREAM_SWEEP     (instead, the one-step policy) a batch step as a sweep through the window:
+//                        sweep_store<CFG> keeps each keyframe's storage and words as they came,
+//                        sweep_gather<CFG> the estimates; stream_call then runs one pass per
+//                        keyframe 0 … j, each keyframe in again and, once the window is full,
+//                        its slot 0 leaving at the estimates (the marginal's step at mu = 0, tau,
+//                        keep), the last pass keyframe j's update: one set of units
 //   FGC_STREAM_WINDOW    stream_call<CFG>(op, x_in, data, x_out, [x_kept,] errors, info): the
 //                        streaming top's whole body (reset, keyframe in, solve, marginal, kept
 //                        net, window out); the generated top holds only its interface pragmas
@@ -20,10 +26,11 @@
 //
 // The memories of the stream section are declared here (the window's call counters; kept: the
 // kept conditionals KEPT_R / KEPT_S / KEPT_D, their points KEPT_LIN / KEPT_NEXT, X_KEPT; batch:
-// BATCH_X / BATCH_COND / BATCH_TAU), sized by the kernel's constants (STREAM_*, KEPT_MAX,
-// BATCH_SLOTS). The kernel keeps the tables (data), the Log kernels (its variable kinds) and the
-// wiring: StreamConfig's constants and hooks (lm_solve, linearize, leaf_step, batch_reset /
-// batch_in / batch_solve; the batch kernel's eliminate).
+// BATCH_X / BATCH_COND / BATCH_TAU; sweep: SWEEP_X / SWEEP_WORDS), sized by the kernel's
+// constants (STREAM_*, KEPT_MAX, BATCH_SLOTS, SWEEP_SLOTS, SWEEP_MAX_NEW). The kernel keeps the
+// tables (data), the Log kernels (its variable kinds) and the wiring: StreamConfig's constants
+// and hooks (lm_solve, linearize, leaf_step, batch_reset / batch_in / batch_solve; the batch
+// kernel's eliminate).
 //
 // One RTL instance per kernel function: every call site of a function not inlined is its own
 // copy, so the functions that call a kernel function again after LM hold LM's body
