@@ -11,11 +11,14 @@ loop the new rules flag is printed below the table.
     python bench/bench_second_reader.py            # LIO N=30 (QR) and imu_window N=50 (Cholesky)
     python bench/bench_second_reader.py --quick    # LIO N=8, imu_window N=10, fewer designs
     python bench/bench_second_reader.py --stream   # also paper A's on-chip stream design
+    python bench/bench_second_reader.py --stream-only [--lm]  # that design alone
 
 The on-chip stream design (bench_papers.paper_a_stream's setting: LIO, incremental K = 3, batch
-steps at keyframes 5/15/25) is compared per part: the window kernel (its own top's reading), the
-batch kernel and the stream section (the rest of the stream top's reading), the plan's
-``WindowModel.resources()`` parts beside them.
+steps at keyframes 5/15/25, one Gauss-Newton step an update: each batch step a sweep through the
+window kernel; ``--lm``: LM to convergence, with its batch kernel), the default design and the
+smallest the stream search holds, is compared per part: the window kernel (its own top's
+reading), the batch kernel (LM) and the stream section (the rest of the stream top's reading),
+the plan's ``WindowModel.resources()`` parts beside them.
 
 Model estimates (no vendor tool here): the reader's DSP is a lower bound on what Vitis binds.
 """
@@ -130,7 +133,8 @@ def measure_stream(n: int, out: Path, config=None, units: int | None = None,
     return dict(plan_dsp=res["dsp"], reader_dsp=total, plan_bram36=res["bram36"],
                 plan_units=res["units"], duplicated=pricer.model.duplicated(),
                 parts=[("window kernel", plan_parts.get("window kernel", 0), window),
-                       ("batch kernel", plan_parts.get("batch kernel", 0), batch),
+                       *((("batch kernel", plan_parts.get("batch kernel", 0), batch),)
+                         if batch_cpp or "batch kernel" in plan_parts else ()),
                        ("stream section", plan_parts.get("stream section", 0),
                         total - batch - window)],
                 ii_short=sum(i.rule == "ii_ports" for i in issues),
@@ -151,6 +155,9 @@ def main(argv=None) -> int:
     parser.add_argument("--stream", action="store_true",
                         help="also paper A's on-chip stream design (LIO N=30, or 8 with --quick)")
     parser.add_argument("--stream-only", action="store_true", help="the stream design alone")
+    parser.add_argument("--lm", action="store_true",
+                        help="the stream's solver LM to convergence (its batch kernel) instead "
+                             "of paper A's one-step policy (batch steps as sweeps)")
     args = parser.parse_args(argv)
     lio_n, imu_n = (8, 10) if args.quick else (30, 50)
     units = (1, 4) if args.quick else (1, 4, 8, 32)
@@ -162,7 +169,19 @@ def main(argv=None) -> int:
         units, cpes = (), ()
     with tempfile.TemporaryDirectory() as tmp:
         if args.stream or args.stream_only:
-            stream = measure_stream(lio_n, Path(tmp) / "stream")
+            # paper A's setting as bench_papers.paper_a_stream runs it: float32 QR, one
+            # Gauss-Newton step an update (its batch steps sweep the window: one set of units),
+            # or (--lm) LM to convergence with its batch kernel; the default design and the
+            # smallest of the stream search (n_u 1, one unit set, ALLOCATION 1 / 1 / 1)
+            from fgc.app.streaming import one_step_solver
+
+            solver = SolverConfig(precision="float32", linear="qr")
+            solver = solver if args.lm else one_step_solver(solver)
+            stream = measure_stream(lio_n, Path(tmp) / "stream", solver=solver)
+            smallest = measure_stream(lio_n, Path(tmp) / "smallest",
+                                      HlsConfig(unit_sets=1, allocation=(
+                                          ("add", 1), ("mul", 1), ("div", 1))), 1,
+                                      solver=solver)
         lio = example("lio")
         for n_u in units:
             for alloc in (None, doubled):
@@ -221,21 +240,30 @@ def main(argv=None) -> int:
         for finding, names in sorted(findings.items()):
             print(f"  {finding}\n      in: {'; '.join(names)}")
     if stream is not None:
-        print(f"\npaper A's on-chip stream design (LIO N={lio_n}, K=3): plan {stream['plan_dsp']} "
-              f"DSP, reader {stream['reader_dsp']} DSP; II short {stream['ii_short']}, "
-              f"carried {stream['recurrences']}, alloc {stream['allocation']}, false dep "
-              f"{stream['false_claims']}, unproven {stream['unproven']}")
-        print(f"{'part':16s} {'plan DSP':>9s} {'reader DSP':>10s}  plan >= reader")
-        for part, plan, read in stream["parts"]:
-            print(f"{part:16s} {plan:9d} {read:10d}  {'yes' if plan >= read else 'NO'}")
-        print("what the window and batch kernels each hold (plan DSP; the two never run at "
-              "once):")
-        for unit, where in stream["duplicated"].items():
-            print(f"  {unit:18s} " + ", ".join(f"{part} {d}" for part, d in where.items()))
-        print("module copies the text instantiates (every call site its own): " +
-              ", ".join(f"{k} {v}" for k, v in stream["copies"].items()))
-        for issue in stream["issues"]:
-            print("  " + issue)
+        policy = "LM to convergence" if args.lm else "one Gauss-Newton step an update"
+        for label, st in (("default design", stream),
+                          ("smallest searched (n_u 1, one unit set, ALLOCATION 1/1/1)",
+                           smallest)):
+            print(f"\npaper A's on-chip stream design (LIO N={lio_n}, K=3, {policy}), {label}: "
+                  f"plan {st['plan_dsp']} DSP / {st['plan_bram36']:g} BRAM36, reader "
+                  f"{st['reader_dsp']} DSP: DSP = max(plan, reader) = "
+                  f"{max(st['plan_dsp'], st['reader_dsp'])} "
+                  + ("fits" if max(st['plan_dsp'], st['reader_dsp']) <= 900 else "over")
+                  + f" the xc7z045's 900; II short {st['ii_short']}, carried "
+                  f"{st['recurrences']}, alloc {st['allocation']}, false dep "
+                  f"{st['false_claims']}, unproven {st['unproven']}")
+            print(f"{'part':16s} {'plan DSP':>9s} {'reader DSP':>10s}  plan >= reader")
+            for part, plan, read in st["parts"]:
+                print(f"{part:16s} {plan:9d} {read:10d}  {'yes' if plan >= read else 'NO'}")
+            if st["duplicated"]:
+                print("what the window and batch kernels each hold (plan DSP; the two never "
+                      "run at once):")
+                for unit, where in st["duplicated"].items():
+                    print(f"  {unit:18s} " + ", ".join(f"{part} {d}" for part, d in where.items()))
+            print("module copies the text instantiates (every call site its own): " +
+                  ", ".join(f"{k} {v}" for k, v in st["copies"].items()))
+            for issue in st["issues"]:
+                print("  " + issue)
     return 0
 
 

@@ -79,8 +79,9 @@ def measure(keyframes: int, window: int, scalar: str, incremental: int | None = 
         # the marginal's or the batch store's own linearisation (when LM moved after its last
         # one), in their terms
         ev.setdefault("relinearize", 0)
-        ev["linearize"] = ev.get("linearize", 0) - ev["relinearize"]
-        if record["mode"] == "batch" and not model.reuses(ev):
+        # a batch step's sweep passes linearise the window too: priced in the sweep's terms
+        ev["linearize"] = ev.get("linearize", 0) - ev["relinearize"] - ev.get("sweep", 0)
+        if record["mode"] == "batch" and model.batch is not None and not model.reuses(ev):
             ev["solve"] = ev.get("solve", 0) - 1  # the batch store's elimination, in its term
         price = model.price(record["keyframe"], record["iterations"], ev, record["status"])
         rows.append((record, cycles, price))

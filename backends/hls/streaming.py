@@ -182,6 +182,8 @@ def _cached_project(template, config, stream=None):
             b = stream.batch
             key += "-b" + hashlib.sha256(f"{b.template.to_json()}{b.keyframes}".encode()
                                          ).hexdigest()[:12]
+        if getattr(stream, "sweep", None) is not None:  # the batch steps' table (IS_BATCH)
+            key += "-s" + "_".join(map(str, stream.sweep))
     root, folder = cache_dir(), None
     if root is not None:
         folder = root / "hls-stream" / key
@@ -312,7 +314,7 @@ class OnChipFixedLagStream:
         lay, window = self.layout, self.window
         records, initial_error = [], None
         kf = lay.kf_words
-        batches = set(lay.batch.keyframes) if lay.batch is not None else set()
+        batches = set(lay.batch_keyframes)
         for j, (head, x_out, x_kept) in enumerate(_read_stream_result(
                 folder / STREAM_RESULT_FILE, count, lay.n_x, self.kept)):
             first = max(0, j - window)  # the window's oldest keyframe
@@ -364,19 +366,39 @@ class OnChipIncrementalStream(OnChipFixedLagStream):
     kept = True
     mode = "incremental"
 
-    def __init__(self, graph, program, scalar: str = "double", out_dir=None):
+    def __init__(self, graph, program, scalar: str = "double", out_dir=None, sweep=None):
         super().__init__(graph, program, program.schedule.incremental.window - 1, scalar,
-                         out_dir, incremental_layout(graph, program))
+                         out_dir, incremental_layout(graph, program, sweep))
 
 
-def incremental_layout(graph, program):
+def incremental_layout(graph, program, sweep: bool | None = None):
     """The on-chip incremental design's layout: the window of the newest K keyframes with the
-    kept net and, when the plan has batch steps, the batch kernel of keyframes 0 … the last
-    batch step (:class:`~fgc_backends.hls.window.BatchLayout`)."""
+    kept net and, when the plan has batch steps, either the batch kernel of keyframes 0 … the
+    last batch step (:class:`~fgc_backends.hls.window.BatchLayout`: its own units) or
+    (``sweep``) each batch step a sweep through the window's own units (fgc_stream.h's
+    ``FGC_STREAM_SWEEP``; one set of units, docs/hls.md). ``sweep`` None: the sweep under the
+    one-step policy (``SolverConfig.one_step``: one Gauss-Newton step an update, whose batch
+    step is one elimination of the chain oldest first, what the window does to its slot 0),
+    the batch kernel under LM to convergence; a sweep asked for under LM to convergence is
+    refused by name (the sweep takes one step: LM's iterations would each need one)."""
     check_incremental_on_chip(program)
     plan = program.schedule.incremental
-    batch = (BatchLayout(graph, program, max(plan.batch_keyframes) + 1, plan.batch_keyframes)
-             if plan.batch_keyframes else None)
+    if not plan.batch_keyframes:
+        return WindowLayout(graph, program, plan.window - 1, kept=True)
+    one_step = program.solver.one_step
+    if sweep is None:
+        sweep = one_step
+    if sweep:
+        if not one_step:
+            raise OnChipWindowError(
+                "batch steps as sweeps through the window (one set of units) take one "
+                "Gauss-Newton step: the Program's solver is LM to convergence "
+                f"({program.solver.method}, max_iterations {program.solver.max_iterations}); "
+                "compile it with one_step_solver() (fgc stream --solver gn --max-iterations 1) "
+                "or keep the batch kernel")
+        return WindowLayout(graph, program, plan.window - 1, kept=True,
+                            sweep=plan.batch_keyframes)
+    batch = BatchLayout(graph, program, max(plan.batch_keyframes) + 1, plan.batch_keyframes)
     return WindowLayout(graph, program, plan.window - 1, kept=True, batch=batch)
 
 
@@ -433,11 +455,12 @@ def write_stream_inputs(layout, estimate: dict, folder: Path) -> int:
     return len(clusters)
 
 
-def layout_of(sp: StreamProgram):
+def layout_of(sp: StreamProgram, sweep: bool | None = None):
     """The on-chip design's layout of ``sp``: the fixed-lag window of its policy's W, or its
-    incremental plan's window with the kept net (:func:`incremental_layout`)."""
+    incremental plan's window with the kept net (:func:`incremental_layout`; ``sweep``: its
+    batch steps' design, there)."""
     if sp.window is None:
-        return incremental_layout(sp.graph, sp.program)
+        return incremental_layout(sp.graph, sp.program, sweep)
     return WindowLayout(sp.graph, sp.program, sp.window)
 
 
@@ -511,13 +534,15 @@ def stream(sp: StreamProgram, config=None) -> HlsStream:
     return HlsStream(sp, config)
 
 
-def window_model(sp: StreamProgram, scalar: str | None = None, config: HlsConfig | None = None):
+def window_model(sp: StreamProgram, scalar: str | None = None, config: HlsConfig | None = None,
+                 sweep: bool | None = None):
     """The on-chip design's :class:`~fgc_backends.hls.plan.stream.WindowUpdateModel` (the design
     ``fgc compile --backend hls`` emits for ``sp``; ``scalar`` default the Program's;
-    ``config``: the design's HlsConfig — unit sets, ALLOCATION — default the default design)."""
+    ``config``: the design's HlsConfig — unit sets, ALLOCATION — default the default design;
+    ``sweep``: batch steps as sweeps or on the batch kernel, :func:`incremental_layout`)."""
     scalar = scalar or ("double" if sp.program.solver.precision == "float64" else "float")
     config = dataclasses.replace(config, scalar=scalar) if config is not None else None
-    return WindowUpdateModel(layout_of(sp), config or HlsConfig(scalar=scalar))
+    return WindowUpdateModel(layout_of(sp, sweep), config or HlsConfig(scalar=scalar))
 
 
 def update_model(graph, program, units: int | None = None, cpe: int | None = None):

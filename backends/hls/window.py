@@ -74,7 +74,8 @@ class WindowLayout(WindowTemplate):
     """The template of a fixed-lag window of ``window`` keyframes (W + 1 slots) and the tables
     of its on-chip stream (module docstring)."""
 
-    def __init__(self, graph, program, window: int, kept: bool = False, batch=None):
+    def __init__(self, graph, program, window: int, kept: bool = False, batch=None,
+                 sweep=None):
         if isinstance(window, bool) or not isinstance(window, int) or window < 1:
             raise OnChipWindowError(f"the fixed-lag window must be a positive number of "
                                     f"keyframes, got {window!r}")
@@ -89,6 +90,11 @@ class WindowLayout(WindowTemplate):
         # incremental mode: every keyframe that leaves the window is kept as its conditional
         self.kept = len(program.schedule.clusters) if kept else 0
         self.batch = batch  # the batch kernel's BatchLayout (incremental plans with batch steps)
+        # or the batch steps as sweeps through this window (one set of units): their keyframes
+        self.sweep = tuple(sweep) if sweep else None
+        if self.sweep is not None and (batch is not None or not kept):
+            raise OnChipWindowError("internal error: batch steps as sweeps need the kept net and "
+                                    "no batch kernel")
         _check_qr(self.template, program)
         from fgc_backends.hls.plan import _tables
 
@@ -228,7 +234,22 @@ class WindowLayout(WindowTemplate):
                 "new_begin": self.new_begin(),
                 "max_new": max(len(d) for d in self.new_dest),
                 "role": "window", "in_x": self.n_x, "in_data": self.n_data,
-                **self._kept_context(linear_cxx, part), **self._batch_context()}
+                **self._kept_context(linear_cxx, part), **self._batch_context(),
+                "sweep": None if self.sweep is None else {
+                    "slots": self.sweep_slots,
+                    "is_batch": [int(j in self.sweep) for j in range(self.kept)]}}
+
+    @property
+    def batch_keyframes(self) -> tuple[int, ...]:
+        """The plan's batch steps, on the batch kernel or as sweeps (none: ())."""
+        if self.sweep is not None:
+            return self.sweep
+        return self.batch.keyframes if self.batch is not None else ()
+
+    @property
+    def sweep_slots(self) -> int:
+        """Keyframes the sweep design keeps as they came: 0 … the last batch step."""
+        return max(self.sweep) + 1 if self.sweep else 0
 
     def _batch_context(self) -> dict:
         """What the window's stream top needs of the batch kernel: its names, sizes and the
@@ -471,7 +492,7 @@ class BatchLayout(WindowTemplate):
                 "new_dest": [w for d in self.new_dest for w in d],
                 "new_begin": self.new_begin(), "slot_step": self.slot_step,
                 "max_new": max(len(d) for d in self.new_dest), "kept": 0, "batch": None,
-                "marginal": False}
+                "sweep": None, "marginal": False}
 
     def keyframe_words(self, j: int, x_new: np.ndarray) -> np.ndarray:
         """Keyframe j's words for slot j (j < size)."""

@@ -246,13 +246,14 @@ def test_one_step_policy_stores_the_steps_own_factorisation():
     priced without the marginal's linearisation and QR step and without the batch kernel's
     store (its solve's factorisation is the store, fgc_stream.h's took_step); its events
     (status max_iterations) count the step as accepted. One that took none is priced as
-    before (its rows at X are LM's, the leaf step runs)."""
+    before (its rows at X are LM's, the leaf step runs). (The two-kernel design, asked for:
+    the one-step policy's default sweeps the window instead, test_hls_stream_sweep.py.)"""
     from fgc.app.streaming import one_step_solver
 
     graph = example("lio").build(N=7)
     program = compile_stream(graph, one_step_solver(), incremental=3, batch_every=(4,),
                              name="lio_k1")
-    model = WindowUpdateModel(layout_of(stream_program(graph, program, None)),
+    model = WindowUpdateModel(layout_of(stream_program(graph, program, None), sweep=False),
                               HlsConfig(scalar="float"))
     assert model.one_step
     ev = model.events_of(1, status="max_iterations")

@@ -100,6 +100,7 @@
 #define FGC_QR_H
 
 #include <cmath>
+#include <limits>
 
 #include "fgc_cycles.h"
 #include "hls_stream.h"
@@ -188,8 +189,10 @@ void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1],
 
 // The Evaluate's tail, while the vector streams: from the column's squared norm and pivot (hin:
 // {norm2, n}, {x_0, j}) alpha = -sign(x_0) sqrt(norm2), v_0 = x_0 - alpha and tau = 1 / (norm2 -
-// alpha x_0) (2 / |v|^2, without a second sum); {v_0, j}, {tau, n}, {R_jj = alpha, j} to every
-// Update unit, R_jj to the collector. n = 0 (no reflection): zeros.
+// alpha x_0) (2 / |v|^2, without a second sum; 0 for a column zero on every active row but for
+// subnormal residue);
+// {v_0, j}, {tau, n}, {R_jj = alpha, j} to every Update unit, R_jj to the collector. n = 0 (no
+// reflection): zeros.
 template <class CFG>
 void qr_finish(const qr_word<typename CFG::T> hin[2],
                hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS],
@@ -209,7 +212,13 @@ void qr_finish(const qr_word<typename CFG::T> hin[2],
         w0.val = pivot - alpha;
         // sqrt, subtract: depth Ls + La (v_0 out)
         FGC_CYCLES("qr_finish", 0, "v0", 1, 1, CFG::SQRT_LAT + CFG::ADD_LAT);
-        w1.val = T(1) / (norm2 - alpha * pivot);
+        // a column zero on every active row but for rounding residue (a separator column the
+        // step's rows leave empty: norm2 subnormal, x_0 = 0; in float32 entries below ~1e-19)
+        // is left as it is (tau = 0: no reflection) rather than scaled by 1 / den, which
+        // overflows to inf and spoils every later column (den = norm2 + |x_0| sqrt(norm2) >= 0;
+        // a compare and a select beside the divider: the same depth)
+        const T den = norm2 - alpha * pivot;
+        w1.val = den >= std::numeric_limits<T>::min() ? T(T(1) / den) : T(0);
         // alpha x_0 (beside the subtract), subtract, divide: depth Lm + Ld after v_0 (tau out)
         FGC_CYCLES("qr_finish", 0, "tau", 1, 1, CFG::MUL_LAT + CFG::DIV_LAT);
     } else {

@@ -12,6 +12,12 @@
 //                        and walk side by side (one DATAFLOW region, two processes)
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
+//   FGC_STREAM_SWEEP     (instead, the one-step policy) a batch step as a sweep through the window:
+//                        sweep_store<CFG> keeps each keyframe's storage and words as they came,
+//                        sweep_gather<CFG> the estimates; stream_call then runs one pass per
+//                        keyframe 0 … j, each keyframe in again and, once the window is full,
+//                        its slot 0 leaving at the estimates (the marginal's step at mu = 0, tau,
+//                        keep), the last pass keyframe j's update: one set of units
 //   FGC_STREAM_WINDOW    stream_call<CFG>(op, x_in, data, x_out, [x_kept,] errors, info): the
 //                        streaming top's whole body (reset, keyframe in, solve, marginal, kept
 //                        net, window out); the generated top holds only its interface pragmas
@@ -20,10 +26,11 @@
 //
 // The memories of the stream section are declared here (the window's call counters; kept: the
 // kept conditionals KEPT_R / KEPT_S / KEPT_D, their points KEPT_LIN / KEPT_NEXT, X_KEPT; batch:
-// BATCH_X / BATCH_COND / BATCH_TAU), sized by the kernel's constants (STREAM_*, KEPT_MAX,
-// BATCH_SLOTS). The kernel keeps the tables (data), the Log kernels (its variable kinds) and the
-// wiring: StreamConfig's constants and hooks (lm_solve, linearize, leaf_step, batch_reset /
-// batch_in / batch_solve; the batch kernel's eliminate).
+// BATCH_X / BATCH_COND / BATCH_TAU; sweep: SWEEP_X / SWEEP_WORDS), sized by the kernel's
+// constants (STREAM_*, KEPT_MAX, BATCH_SLOTS, SWEEP_SLOTS, SWEEP_MAX_NEW). The kernel keeps the
+// tables (data), the Log kernels (its variable kinds) and the wiring: StreamConfig's constants
+// and hooks (lm_solve, linearize, leaf_step, batch_reset / batch_in / batch_solve; the batch
+// kernel's eliminate).
 //
 // One RTL instance per kernel function: every call site of a function not inlined is its own
 // copy, so the functions that call a kernel function again after LM hold LM's body
@@ -90,6 +97,13 @@ T KEPT_NEXT[KEPT_MAX * STREAM_KF_X];
 T X_KEPT[KEPT_MAX * STREAM_KF_X];
 int STREAM_TOTAL = 0;  // keyframes since the reset call
 #endif
+#ifdef FGC_STREAM_SWEEP
+// batch steps as sweeps through the window (one set of units): keyframes 0 … SWEEP_SLOTS - 1 as
+// they came (row c: its storage, then a sweep's linearisation point; its words as the window
+// took them), the keyframes past the last batch step one shared row SWEEP_SLOTS
+T SWEEP_X[(SWEEP_SLOTS + 1) * STREAM_KF_X];
+T SWEEP_WORDS[(SWEEP_SLOTS + 1) * SWEEP_MAX_NEW];
+#endif
 #ifdef FGC_STREAM_BATCH
 T BATCH_X[BATCH_SLOTS * STREAM_KF_X];  // keyframes 0 … j to and from the batch kernel
 L BATCH_COND[BATCH_SLOTS * STREAM_KF_T * (2 * STREAM_KF_T + 1)];  // their conditionals
@@ -125,6 +139,43 @@ void stream_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
     FGC_PHASE("setup");
     keyframe_in<CFG, false>(m, x_in, data);
 }
+
+#ifdef FGC_STREAM_SWEEP
+// The call's keyframe (total, entering slot m) kept as it came: its storage and its words, row
+// total (SWEEP_SLOTS for every keyframe past the last batch step), a word a cycle.
+template <class CFG>
+void sweep_store(int total, int m, const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA]) {
+    FGC_PHASE("setup");
+    const int row = total < SWEEP_SLOTS ? total : SWEEP_SLOTS;
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        SWEEP_X[row * STREAM_KF_X + k] = x_in[k];
+    }
+    FGC_CYCLES("top", 0, "sweep_x_store", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    const int n = STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=SWEEP_MAX_NEW
+#pragma HLS PIPELINE II=1
+        SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = data[k];
+    }
+    FGC_CYCLES("top", 0, "sweep_words_store", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+// A batch step's linearisation points: keyframes 0 … total - 1's estimates into their rows (the
+// kept ones' from X_KEPT, c < first; the window's from X before its shift, slot c - base), a
+// word a cycle. Row total holds the call's keyframe as it came.
+template <class CFG>
+void sweep_gather(int total, int base, int first) {
+    FGC_PHASE("sweep");
+    for (int e = 0; e < total * STREAM_KF_X; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_SWEEP_X
+#pragma HLS PIPELINE II=1
+        const int c = e / STREAM_KF_X, k = e % STREAM_KF_X;
+        SWEEP_X[e] = c < first ? X_KEPT[e] : X[SLOT_X[(c - base) * STREAM_KF_X + k]];
+    }
+    FGC_CYCLES("sweep", 0, "gather", total * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+#endif  // FGC_STREAM_SWEEP
 #endif  // FGC_STREAM_WINDOW
 
 #ifdef FGC_STREAM_MARGINAL
@@ -514,7 +565,7 @@ void marginal_task(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X
 }
 
 template <class CFG>
-void kept_task(int first, const T x0[STREAM_KF_X]) {
+void kept_task(int first, bool reexpress_first, const T x0[STREAM_KF_X]) {
     // reexpress's passes and the walk's (both INLINE here) run one after another: one Log
     // datapath, one retraction datapath and one matrix-vector product for all of them
 #pragma HLS ALLOCATION function instances=keyframe_local limit=1
@@ -522,20 +573,21 @@ void kept_task(int first, const T x0[STREAM_KF_X]) {
 #pragma HLS ALLOCATION function instances=kept_matvec<CFG> limit=1
     FGC_TASK();
 #ifdef FGC_STREAM_KEPT
-    if (first > 0) reexpress<CFG>(first - 1, x0);
+    if (first > 0 && reexpress_first) reexpress<CFG>(first - 1, x0);
     kept_walk<CFG>(first, x0);
 #else
     (void)first;
+    (void)reexpress_first;
     (void)x0;
 #endif
 }
 
 template <class CFG>
 void marginal_and_kept(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X], int first,
-                       const T x0[STREAM_KF_X], int code[1]) {
+                       bool reexpress_first, const T x0[STREAM_KF_X], int code[1]) {
 #pragma HLS DATAFLOW
     marginal_task<CFG>(m, finite, reuse, lin01, code);
-    kept_task<CFG>(first, x0);
+    kept_task<CFG>(first, reexpress_first, x0);
 }
 #endif  // FGC_STREAM_WINDOW
 
@@ -596,7 +648,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #ifdef FGC_STREAM_KEPT
     const int total = STREAM_TOTAL;  // this keyframe's index
     const int first = total < STREAM_W ? 0 : total - STREAM_W;  // the window's oldest
-#ifdef FGC_STREAM_BATCH
+#if defined(FGC_STREAM_BATCH) || defined(FGC_STREAM_SWEEP)
     if (j >= STREAM_SLOTS) {  // slot 0 (keyframe first - 1) leaves: its estimate kept (a batch
         for (int k = 0; k < STREAM_KF_X; ++k) {  // step starts from it; the walk rewrites it)
 #pragma HLS PIPELINE II=1
@@ -606,16 +658,50 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     }
 #endif
 #endif
-    if (j >= STREAM_SLOTS) stream_shift<CFG>();
-    stream_in<CFG>(m, x_in, data);
-    int marginal = 0;  // 0: none left, 1: tau written, 2: singular (not written)
-#ifdef FGC_STREAM_BATCH
-    // keyframe total's words for the batch kernel follow the window's
-    if (total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
-    if (IS_BATCH[total]) {
-        marginal = batch_step<CFG>(total, first, errors, info);
-    } else {
+#ifdef FGC_STREAM_SWEEP
+    // a batch step is a sweep through the window: keyframes 0 … total come in again one a pass,
+    // at their estimates (sweep_gather), and once the window is full each pass's slot 0 leaves
+    // as after an update, its step at mu = 0 kept and its tau written (no solve); the last pass
+    // is the update of keyframe total, its window's oldest prior the sweep's tau, its kept net
+    // the sweep's conditionals (walked back, not re-expressed: they hold the sweep's points)
+    sweep_store<CFG>(total, m, x_in, data);
+    const bool sweep = IS_BATCH[total] != 0;
+    if (sweep) sweep_gather<CFG>(total, j >= STREAM_SLOTS ? first - 1 : 0, first);
+    const int passes = sweep ? total + 1 : 1;
+    bool sweep_singular = false;
+#else
+    const bool sweep = false;
+    const int passes = 1;
 #endif
+    int marginal = 0;  // 0: none left, 1: tau written, 2: singular (not written)
+    for (int p = 0; p < passes; ++p) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PASSES
+        const bool last = p == passes - 1;
+#ifdef FGC_STREAM_KEPT
+        const int c = total - passes + 1 + p;  // the pass's keyframe
+#endif
+#ifdef FGC_STREAM_SWEEP
+        const int jc = c < STREAM_SLOTS ? c : STREAM_SLOTS;  // keyframes in the window before it
+        const int row = c < SWEEP_SLOTS ? c : SWEEP_SLOTS;
+#else
+        const int jc = j;
+#endif
+        const int mc = jc < STREAM_SLOTS - 1 ? jc : STREAM_SLOTS - 1;  // the pass's slot
+        if (jc >= STREAM_SLOTS) stream_shift<CFG>();
+#ifdef FGC_STREAM_SWEEP
+        stream_in<CFG>(mc, SWEEP_X + row * STREAM_KF_X, SWEEP_WORDS + row * SWEEP_MAX_NEW);
+#else
+        stream_in<CFG>(mc, x_in, data);
+#endif
+#ifdef FGC_STREAM_BATCH
+        // keyframe total's words for the batch kernel follow the window's
+        if (total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
+        if (IS_BATCH[total]) {
+            marginal = batch_step<CFG>(total, first, errors, info);
+            continue;
+        }
+#endif
+        if (!last && mc != STREAM_W) continue;  // a sweep pass while the window fills
         // slots 0 and 1 where the update linearises them: under the one-step policy a leaving
         // keyframe's conditional and tau are kept there once the step is taken (copied whatever
         // the policy, a word a cycle)
@@ -626,19 +712,26 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
             lin01[k] = X[SLOT_X[k]];
         }
         FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-        CFG::lm_solve(errors, info);
-        // the one-step update took its step: its solve's factorisation is the store
-        const bool reuse = m == STREAM_W && CFG::took_step(info);
-        // the window's rows at its optimum for a leaving keyframe's marginal: AB holds them if
-        // LM stopped where it last linearised (CFG::at_linearisation), else computed again here,
-        // before the marginal's region, by LM's own linearisation instance
-        bool finite = true;  // false: the window is not finite at its optimum
+        bool reuse = false;  // the one-step update took its step: its solve's factorisation is the store
+        bool finite = true;  // false: the window is not finite where slot 0 leaves
+        if (last) {
+            CFG::lm_solve(errors, info);
+            reuse = mc == STREAM_W && CFG::took_step(info);
+            // the window's rows at its optimum for a leaving keyframe's marginal: AB holds them
+            // if LM stopped where it last linearised (CFG::at_linearisation), else computed
+            // again here, before the marginal's region, by LM's own linearisation instance
 #ifdef FGC_STREAM_MARGINAL
-        if (m == STREAM_W && !reuse && !CFG::at_linearisation(info)) {
-            FGC_EVENT("relinearize");
+            if (mc == STREAM_W && !reuse && !CFG::at_linearisation(info)) {
+                FGC_EVENT("relinearize");
+                finite = CFG::linearize();
+            }
+#endif
+        } else {
+            // a sweep pass, window full: slot 0 leaves at the estimates (the window linearised
+            // there by LM's instance, its step at mu = 0 by the marginal's)
+            FGC_EVENT("sweep");
             finite = CFG::linearize();
         }
-#endif
         T x0[STREAM_KF_X];  // slot 0's estimate: the kept net's parent
 #ifdef FGC_STREAM_KEPT
         FGC_PHASE("kept");
@@ -647,19 +740,23 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
             x0[k] = X[SLOT_X[k]];
         }
         FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-        const int kept_first = first;
+        const int kept_first = last ? first : 0;  // a sweep pass walks nothing
 #else
         const int kept_first = 0;
 #endif
         int code[1] = {0};
-        marginal_and_kept<CFG>(m, finite, reuse, lin01, kept_first, x0, code);
+        marginal_and_kept<CFG>(mc, finite, reuse, lin01, kept_first, !sweep, x0, code);
         FGC_TASKS_JOIN();
         marginal = code[0];
-#ifdef FGC_STREAM_KEPT
-        if (m == STREAM_W && marginal == 1) keep<CFG>(first, reuse, lin01);
+#ifdef FGC_STREAM_SWEEP
+        if (!last && marginal != 1) sweep_singular = true;
 #endif
-#ifdef FGC_STREAM_BATCH
+#ifdef FGC_STREAM_KEPT
+        if (mc == STREAM_W && marginal == 1) keep<CFG>(c - STREAM_W, reuse, lin01);
+#endif
     }
+#ifdef FGC_STREAM_SWEEP
+    if (sweep_singular) marginal = 2;
 #endif
 #ifdef FGC_STREAM_KEPT
     FGC_PHASE("setup");

@@ -416,6 +416,10 @@ class WindowUpdateModel:
                     # taken, the solve's own NF rows are τ (no stack, QR step or commit)
                     _stream_phase("lin_points", move("x", 2 * kf)),
                     _stream_phase("marginal_reused", move("rows", n * (n + 1)), *write_tau)]
+        if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
+            out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
+                    for m, d in enumerate(lay.new_dest)]
+            out += [_stream_phase(f"sweep{j}_gather", move("x", j * kf)) for j in lay.sweep]
         if self.batch is not None:
             b = lay.batch
             words = n * (2 * n + 1)
@@ -561,6 +565,42 @@ class WindowUpdateModel:
         return [Term("x_kept_out", first * self.layout.kf_words + 1, 1, False,
                      "the kept keyframes' estimates out, a word a cycle")]
 
+    def _sweep_terms(self, j: int) -> list:
+        """A batch step at keyframe j as a sweep through the window (fgc_stream.h's
+        ``FGC_STREAM_SWEEP``), but its last pass (keyframe j's update, priced as one): keyframes
+        0 … j − 1's estimates gathered, each keyframe in again (and the shift once the window is
+        full), and per keyframe c ≥ W that leaves the window before j: the window linearised at
+        the estimates, slot 0's QR step at μ = 0 with τ written (beside the kept task's empty
+        walk) and its conditional kept."""
+        lay, st, w = self.layout, self.stream, self.layout.window
+        moves = sum(st[f"stream_keyframe_in{min(c, w)}"] + (st["stream_shift"] if c >= lay.size
+                                                               else 0) for c in range(j))
+        terms = [Term("sweep_gather", st[f"stream_sweep{j}_gather"], 1, False,
+                      f"keyframes 0 … {j - 1}'s estimates into their rows (the sweep's points)"),
+                 Term("sweep_in", moves, 1, False,
+                      f"keyframes 0 … {j - 1} into the window again, one a pass (and the shift "
+                      "once it is full)")]
+        steps = range(w, j)
+        if not steps:
+            return terms
+        linearize = self.group["factor_jacobian"] + self.group["gradient"]
+        base = st["stream_kept_walk_base"]
+        marginal = sum(max(st["stream_marginal"]
+                           + self.qr_cycles(self.zero_factors(c), False, leaf_only=True), base)
+                       for c in steps)
+        terms += [Term("sweep_linearize", linearize, len(steps), False,
+                       "a sweep pass with the window full: the window linearised at the "
+                       "estimates (LM's instance)"),
+                  Term("sweep_points", st["stream_lin_points"] + st["stream_kept_slot0"],
+                       len(steps), False, "slots 0 and 1, and slot 0 for the kept task, copied"),
+                  Term("sweep_marginal", marginal, 1, False,
+                       f"keyframes 0 … {j - w - 1} leave: slot 0's QR step at μ = 0 on unit set "
+                       "0, τ's signs, mean and words (the marginal's region, its kept task "
+                       "walking nothing)"),
+                  Term("sweep_keep", st["stream_kept_store"], len(steps), False,
+                       "each leaving keyframe's conditional and points kept")]
+        return terms
+
     def _batch_terms(self, j: int, ev: dict) -> list:
         """A batch step's terms, as accel.cpp.jinja's batch_step and the batch kernel's
         batch_solve count them."""
@@ -641,6 +681,16 @@ class WindowUpdateModel:
         if keyframe >= lay.size:
             terms.append(Term("shift", st["stream_shift"], 1, False,
                               "every slot down one: its variables, its factors' words, τ"))
+        sweep = lay.sweep is not None and keyframe in lay.sweep
+        if lay.sweep is not None:
+            if keyframe >= lay.size:
+                terms.append(Term("leave", st["stream_x_out_kf"], 1, False,
+                                  "the leaving keyframe's estimate into the kept memory"))
+            terms.append(Term("sweep_store", st[f"stream_sweep_store{m}"], 1, False,
+                              "the keyframe's storage and words kept as they came (a sweep "
+                              "brings them in again)"))
+            if sweep:
+                terms += self._sweep_terms(keyframe)
         batch = self.batch
         if batch is not None:
             if keyframe >= lay.size:
@@ -699,7 +749,7 @@ class WindowUpdateModel:
             terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
                               "slot 0's estimate copied out of X: the kept net's parent"))
             kept = st["stream_kept_walk_base"] + first * st["stream_kept_walk_each"]
-            if first > 0:
+            if first > 0 and not sweep:  # a sweep's conditionals hold its points: walked as kept
                 kept += st["stream_kept_reexpress"]
                 terms.append(Term("kept_reexpress", st["stream_kept_reexpress"], 1, False,
                                   f"keyframe {first - 1}'s kept conditional re-expressed at "
@@ -722,6 +772,9 @@ class WindowUpdateModel:
                                   "linearisation points kept"))
             terms += self._kept_out_terms(keyframe)
         terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
+        if sweep:
+            return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
+                               tuple(terms), STREAM_SOURCE)
         return UpdatePrice(keyframe, "incremental" if lay.kept else "fixed-lag", first,
                            int(iterations),
                            self.clock_mhz, tuple(terms), STREAM_SOURCE)

@@ -18,7 +18,8 @@ def stream_memories(layout, t_bits: int, l_bits: int, batch_words: int) -> tuple
     """The memories the on-chip stream section adds to the window kernel
     (``fgc_backends.hls.window``): the kept Bayes net's conditionals (R, S, d) and linearisation
     points, the kept estimates, and with a batch kernel its estimates and conditionals
-    (``batch_words`` words a keyframe)."""
+    (``batch_words`` words a keyframe), or with batch steps as sweeps the keyframes 0 … the
+    last batch step as they came (storage and words: ``sweep_x``, ``sweep_words``)."""
     mems = []
     if layout.kept:
         n, kf, count = layout.kf_dim, layout.kf_words, layout.kept
@@ -31,6 +32,10 @@ def stream_memories(layout, t_bits: int, l_bits: int, batch_words: int) -> tuple
         b = layout.batch
         mems += [Memory("batch_x", b.size * layout.kf_words, t_bits, 1),
                  Memory("batch_cond", b.size * batch_words, l_bits, 1)]
+    if getattr(layout, "sweep", None) is not None:  # batch steps as sweeps: the keyframes kept
+        rows = layout.sweep_slots + 1  # as they came, one row for those past the last batch step
+        mems += [Memory("sweep_x", rows * layout.kf_words, t_bits, 1),
+                 Memory("sweep_words", rows * max(len(d) for d in layout.new_dest), t_bits, 1)]
     return tuple(mems)
 
 

@@ -1,0 +1,153 @@
+"""Paper A's on-chip design on one set of units (issue 33 item 5): under the one-step policy a
+batch step is a sweep through the window kernel (fgc_stream.h's ``FGC_STREAM_SWEEP``), no batch
+kernel.
+
+- LIO N = 7, K = 3, one Gauss-Newton step an update, a batch step at keyframe 4 (its sweep:
+  keyframes 0 … 3 in again, 0 and 1 leaving on the way, then keyframe 4's update), double design,
+  one C simulation of the whole stream: every variable after every keyframe within 1e-8 of the
+  simulator (whose batch step eliminates the chain in one go) and within 1e-5 of gtsam.ISAM2 fed
+  one update per keyframe with the same window (the kept conditional re-expressed to first order
+  where ISAM2 re-eliminates it, as ``test_hls_stream_csim``'s one-step test states);
+- the design emits one kernel file (no batch kernel) and its model prices the batch step as the
+  sweep (no batch-kernel term), its resources without a batch kernel;
+- the sweep's work is needed: with a sweep pass's step dropped, or a leaving keyframe's
+  conditional not kept, the C simulation leaves the simulator (these rebuild the design: heavy);
+- LM to convergence keeps the batch kernel, and a sweep asked for under it is refused by name.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from fgc.app.specs import example
+from fgc.app.streaming import compile_stream, keyframe_result, one_step_solver, run_stream
+from fgc.interop import oracles
+from fgc.interop.to_gtsam import to_gtsam
+from fgc.ir.datafile import problem_data
+from fgc_backends.hls.config import HlsConfig
+from fgc_backends.hls.plan.stream import WindowUpdateModel
+from fgc_backends.hls.streaming import OnChipIncrementalStream, incremental_layout
+from fgc_backends.hls.window import OnChipWindowError
+
+SIM_TOL = 1e-8  # double design vs simulator, tangent-space distance per variable
+ONE_STEP_ISAM2_TOL = 1e-5  # vs gtsam.ISAM2, one update per keyframe with the same window
+
+
+def _distances(program, csim, sim_updates) -> list[float]:
+    out = []
+    for record, expected in zip(csim.updates, sim_updates, strict=True):
+        update = keyframe_result(program, record)
+        assert (update.keyframe, update.mode, update.first) == (
+            expected.keyframe, expected.mode, expected.first)
+        assert set(update.values) == set(expected.values)
+        out.append(max(float(np.linalg.norm(expected.values[k].local(v)))
+                       for k, v in update.values.items()))
+    return out
+
+
+@pytest.fixture(scope="module")
+def sweep7(tmp_path_factory):
+    graph = example("lio").build(N=7)
+    program = compile_stream(graph, one_step_solver(), incremental=3, batch_every=(4,),
+                             name="lio_sweep")
+    data = problem_data(graph, program)
+    sim = []
+    run_stream(program, data, None, sim.append)
+    stream = OnChipIncrementalStream(graph, program, "double",
+                                     out_dir=tmp_path_factory.mktemp("sweep"))
+    return graph, program, data, sim, stream, stream.run(data)
+
+
+def test_the_one_step_design_has_no_batch_kernel(sweep7):
+    _, _, _, _, stream, _ = sweep7
+    lay = stream.layout
+    assert lay.batch is None and lay.sweep == (4,) and lay.batch_keyframes == (4,)
+    folder, name = stream.project.directory, stream.project.name
+    kernels = [p.name for p in folder.glob("*.cpp") if not p.name.startswith("tb_")]
+    assert kernels == [f"{name}.cpp"]
+    text = (folder / f"{name}.cpp").read_text()
+    assert "#define FGC_STREAM_SWEEP" in text and "#define FGC_STREAM_BATCH" not in text
+    assert "_batch_solve" not in text
+
+
+def test_the_sweep_agrees_with_the_simulator_after_every_keyframe(sweep7):
+    _, program, _, sim, _, csim = sweep7
+    assert [(u["mode"], u["first"]) for u in csim.updates] == [
+        ("incremental", 0), ("incremental", 0), ("incremental", 0), ("incremental", 1),
+        ("batch", 0), ("incremental", 3), ("incremental", 4)]
+    assert [u["iterations"] for u in csim.updates] == [1] * 7
+    assert [u["status"] for u in csim.updates] == [u.status for u in sim]
+    assert all(u["marginal"] for u in csim.updates[2:])  # every update from the window's fill
+    dist = _distances(program, csim, sim)
+    assert max(dist) <= SIM_TOL, dist
+    assert max(dist[4:]) > 0.0  # the C simulation and the simulator, not one read twice
+
+
+def test_the_sweep_is_one_isam2_update(sweep7):
+    graph, program, _, _, _, csim = sweep7
+    windows = [(u["first"], u["mode"] == "batch") for u in csim.updates]
+    isam = oracles.isam2_per_keyframe(graph, to_gtsam(graph), program.schedule.clusters,
+                                      windows, settle=False)
+    values = [{"values": keyframe_result(program, u).values} for u in csim.updates]
+    dist = oracles.per_keyframe_distance(values, isam)
+    assert len(dist) == 7 and max(dist) <= ONE_STEP_ISAM2_TOL, dist
+
+
+def test_the_model_prices_the_batch_step_as_the_sweep(sweep7):
+    _, _, _, _, stream, csim = sweep7
+    model = WindowUpdateModel(stream.layout, HlsConfig(scalar="double"))
+    prices = [model.price(u["keyframe"], u["iterations"], status=u["status"])
+              for u in csim.updates]
+    assert [p.mode for p in prices] == [u["mode"] for u in csim.updates]
+    names = {t.name for t in prices[4].terms}
+    assert {"sweep_gather", "sweep_in", "sweep_linearize", "sweep_marginal", "sweep_keep",
+            "qr", "kept_walk", "marginal"} <= names
+    assert not any(n.startswith("batch_") for n in names)
+    assert "kept_reexpress" not in names  # the sweep's conditionals hold its points
+    assert prices[4].term("sweep_keep").times == 2  # keyframes 0 and 1 leave on the way
+    assert all("sweep_store" in {t.name for t in p.terms} for p in prices)
+    res = model.resources()
+    assert set(res["parts"]) == {"window kernel", "stream section"}
+    assert model.duplicated() == {}
+
+
+def _broken(sweep7, tmp_path, old: str, new: str):
+    graph, program, data, sim, _, _ = sweep7
+    bad = OnChipIncrementalStream(graph, program, "double", out_dir=tmp_path)
+    header = bad.project.directory / "include" / "fgc_stream.h"
+    text = header.read_text()
+    patched = text.replace(old, new)
+    assert patched != text
+    header.write_text(patched)
+    # the Makefile's objects do not list the headers: rebuild the kernel's from the patched one
+    (bad.project.directory / f"{bad.project.name}.o").unlink(missing_ok=True)
+    try:
+        csim = bad.run(data)
+    except Exception:  # noqa: BLE001 - a failure is as good as a disagreement here
+        return
+    assert max(_distances(program, csim, sim)) > 1e3 * SIM_TOL
+
+
+@pytest.mark.heavy
+def test_a_dropped_sweep_step_breaks_the_agreement(sweep7, tmp_path):
+    # the passes come in but no keyframe leaves on the way: no τ, no kept conditional
+    _broken(sweep7, tmp_path, "if (!last && mc != STREAM_W) continue;", "if (!last) continue;")
+
+
+@pytest.mark.heavy
+def test_a_conditional_not_kept_breaks_the_agreement(sweep7, tmp_path):
+    # the sweep's steps run, but the conditionals they leave are not stored
+    _broken(sweep7, tmp_path, "if (mc == STREAM_W && marginal == 1) keep<CFG>(",
+            "if (last && mc == STREAM_W && marginal == 1) keep<CFG>(")
+
+
+def test_lm_to_convergence_keeps_the_batch_kernel_and_refuses_the_sweep():
+    graph = example("lio").build(N=6)
+    program = compile_stream(graph, incremental=3, batch_every=(4,), name="lio_k")
+    lay = incremental_layout(graph, program)
+    assert lay.sweep is None and lay.batch is not None
+    with pytest.raises(OnChipWindowError, match="one Gauss-Newton step"):
+        incremental_layout(graph, program, sweep=True)
+    one = compile_stream(graph, one_step_solver(), incremental=3, batch_every=(4,), name="lio_k")
+    assert incremental_layout(graph, one, sweep=False).batch is not None  # asked for: kept
