@@ -8,8 +8,8 @@
 // -> back-substitution -> state update (retract) -> the factor datapaths (cost mode) -> LM control.
 //
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
-// back_substitute's backsub_lane<p> regions (a lane's cond_backsub beside the other lane's
-// cond_load, no streams between them):
+// back_substitute's by columns (the loader streaming COND to a process per end of the chain,
+// the state update fed by both):
 //   50 processes, 69 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
