@@ -352,6 +352,10 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "bs_lanes": plan.options.backsub_lanes,  # fgc_backsub.h's FGC_BS_LANES (> 1)
             "bsc": _backsub_columns(program, plan),  # backsub_lanes 4: the BSC_* tables
             "cpe": plan.options.cpe, "cascade_lanes": plan.options.cascade_lanes,
+            # one cascade: each step's pivot check beside the next step's cascade (the plan's
+            # choice, units/cholesky.py's check_beside: its last pass is a process "check")
+            "check_beside": any(p.name == "check" for ph in plan.phases
+                                for p in ph.processes),
             "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
 

@@ -272,7 +272,12 @@ def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program
     # then adds the next step's further Grams and its children from the NF lane step t's
     # cascade does not write
     from fgc_backends.hls.plan.loops import _tables, kernel_timing
-    from fgc_backends.hls.units.cholesky import assemble_loops, cpe_pairs, first_gram_trip
+    from fgc_backends.hls.units.cholesky import (
+        assemble_loops,
+        cpe_check_loops,
+        cpe_pairs,
+        first_gram_trip,
+    )
 
     plan = build_plan(program, PlanOptions.of(program, hgc_beside=False))
     tables, timing = _tables(program), kernel_timing(FLOAT32)
@@ -290,19 +295,29 @@ def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program
     assert first.loops[0].name == "source"
     assert first.loops[0].trip == d + 3 + -(-(d * (d + 1) // 2 + d) // 2)
     assert all(lp.name == "child" for p in kids for lp in p.loops)
-    regions = [ph for ph in plan.phases if ph.name.startswith("cholesky_level")]
+    *regions, check = [ph for ph in plan.phases if ph.name.startswith("cholesky_level")]
     assert len(regions) == len(order)
+    # each step's pivot check off its cascade's path: in the next region's assembler, the last
+    # step's in a pass of its own
+    f = tables["STEP_F"]
+    assert not check.dataflow and check.name == f"cholesky_level{len(order)}"
+    assert list(check.processes[0].loops) == cpe_check_loops(f[order[-1]], FLOAT32,
+                                                             f"s{order[-1]}")
     every = 0
     for t, (ph, s) in enumerate(zip(regions, order, strict=True)):
         assert ph.dataflow
         cascade, assembler = ph.processes
         assert cascade.name == f"cascade{s}" and assembler.name == f"assembler{s}"
+        assert not any(lp.name.endswith(("_scale", "_pivot_check")) for lp in cascade.loops)
         assert assembler.loops[0].name == "source"
         nxt = order[t + 1] if t + 1 < len(order) else -1
         assert assembler.loops[0].trip == max(cpe_pairs(tables["STEP_W"][s]),
                                               first_gram_trip(tables, nxt))
         beside = [lp for lp in assemble_loops(tables, nxt, timing, odd=odd, par=1 - t % 2)
                   if lp.name not in ("map", "gram_first")] if nxt >= 0 else []
+        if t > 0:
+            prev = order[t - 1]
+            beside += cpe_check_loops(f[prev], FLOAT32, f"s{prev}")
         assert list(assembler.loops[1:]) == beside
         # the region: the slower process plus the other's fill, not their sum
         assert phase_cycles(ph) < cascade.cycles + assembler.cycles
@@ -312,6 +327,33 @@ def test_a_steps_factor_grams_are_assembled_beside_the_cascade_before_it(program
     assert every + between == sum(len(assemble_loops(tables, s, timing, grams=False))
                                   for s in order)
     assert every > 0
+
+
+def test_the_pivot_check_runs_where_the_elimination_is_faster():
+    # one cascade: each step's pivot check ends its cascade (cpe_step) or runs in the next
+    # region's assembler (FGC_CHECK_BESIDE); the plan prices both and keeps the faster (the
+    # kernel defines FGC_CHECK_BESIDE when the plan's last pass is a "check": the imu_window
+    # golden shows it). imu_window N = 50 at
+    # #CPE = 20, two words: the cascade (round 525 + check 51) is the slower process, so the
+    # check comes off its path (a step 576 -> 529 as the region)
+    from fgc.compile import compile_graph
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.plan.loops import _tables, kernel_timing
+    from fgc_backends.hls.units.cholesky import elimination_phases
+
+    prog = compile_graph(example("imu_window").build(N=50), SolverConfig(
+        method="lm", linear="cholesky", cpe=20, precision="float32"), name="imu")
+    tables, timing = _tables(prog), kernel_timing(FLOAT32)
+    order = list(tables["LEVEL_STEPS"][:len(prog.schedule.steps)])
+    dims = {st.index: (st.frontal_dim, st.separator_dim) for st in prog.schedule.steps}
+    cycles = {b: sum(phase_cycles(ph) for ph in elimination_phases(
+        tables, order, dims, 20, FLOAT32, timing, 2, b)) for b in (False, True)}
+    assert cycles[True] < cycles[False] - 40 * (len(order) - 1)
+    plan = accel_plan(prog, HlsConfig(scalar="float", cascade_lanes=2, hgc_beside=False))
+    got = sum(phase_cycles(ph) for ph in plan.phases
+              if ph.name.startswith(("assemble", "cholesky_level")))
+    assert got == min(cycles.values())
+    assert any(p.name == "check" for ph in plan.phases for p in ph.processes)
 
 
 def test_cpe_pairs_counts_two_words_of_a_row_a_pair():

@@ -5,7 +5,7 @@
 //   Cholesky: bool cholesky_eliminate_all<CFG>(mu)  every step in schedule order: [H | g]
 //             assembled from the step's factors' Grams and its children's update matrices
 //             (while the cascade factors the step before: the cholesky_overlap region, two
-//             lanes HA[0], HA[1]), streamed into the cascade, whose drain writes the
+//             lanes HA_L0, HA_L1), streamed into the cascade, whose drain writes the
 //             conditional into COND and the update matrix into NF[t % 2] (the t-th step's);
 //             false if singular.
 //   QR:       void qr_stack<CFG>(s, root_mu, bank)  the step's rows into a unit set's banks
@@ -31,7 +31,7 @@
 // STEP_FACTOR_BEGIN, STEP_FACTORS, STEP_CHILD_BEGIN, STEP_CHILDREN, STEP_SEPMAP_BEGIN,
 // STEP_SEPMAP, STEP_NF_OFF, STEP_NF_ROWS, STEP_COND_OFF, FACTOR_COLMAP_BEGIN, FACTOR_COLMAP,
 // FACTOR_A_OFF, FACTOR_GRAM_OFF, LEVEL_STEPS, LEVEL_BEGIN, N_LEVELS, N_STEPS (tables); AB, GRAM,
-// COND, NF (Cholesky: NF[2], two lanes), PORTS, fgc_sqrt and, for Cholesky, HA and HF
+// COND, NF (Cholesky: NF[2], two lanes), PORTS, fgc_sqrt and, for Cholesky, HA_L0, HA_L1 and HF
 // (memories). CFG is the kernel's LesConfig: T (the linear solver's scalar), the unit's sizes,
 // LM, the tables' largest trip counts (MAX_STEP_FACTORS, MAX_CHILDREN, TRIP_*) and the (II,
 // depth) of the plan's fill, move and scatter loops (QR: UNIT_SETS, MAX_LEVEL_WIDTH and the
@@ -42,23 +42,26 @@
 #define FGC_ELIMINATE_H
 
 #ifdef FGC_ELIMINATE_CHOLESKY
-// The assembly buffers HA[lane] (the kernel's memory, two lanes of a step's [H | g]): the t-th
+// The assembly buffers HA_L0, HA_L1 (the kernel's memories, two lanes of a step's [H | g],
+// "HA[lane]" below: two arrays, so that a loop reading one and writing the other is seen to
+// touch two memories): the t-th
 // step of the schedule is assembled into lane t % 2 while the cascade factors the (t - 1)-th
-// from the other lane's words. Word (i, c) is HA[lane][i][c >> 1][c & 1]: two banks (the last
+// from the other lane's words. Word (i, c) is HA_Lk[i][c >> 1][c & 1]: two banks (the last
 // dimension partitioned), even and odd columns, so the source reads two words of a row a cycle. A lane is all zero when its assembly starts: the source that
 // streams a step's words into the cascade clears each word it reads, and the assembly writes
 // only words it reads (the upper triangle and the gradient of rows < w).
 
-// The assembler's one loop (cholesky_assembler): step s's words streamed out of HA[SRC] (its
-// `pairs` pairs, none if s < 0) while step `next`'s first factor's packed Gram is stored, not
-// added, into HA[1 - SRC] (the other lane, all zero: its assembly starts here). HA is
-// partitioned into its two lanes and their two column banks (four memories, two ports each)
-// and SRC is a template constant, so the lanes are different memories in every iteration:
-//   - the source reads and clears a word of each of HA[SRC]'s banks a cycle (its two ports),
+// The assembler's one loop (cholesky_assembler): step s's words streamed out of the lane src
+// (its `pairs` pairs, none if s < 0) while step `next`'s first factor's packed Gram is stored,
+// not added, into the other lane dst (all zero: its assembly starts here). The lanes are two
+// memories of two column banks each (two ports a bank) and come in as two arrays (the
+// caller's two call sites, HA_L0, HA_L1 or HA_L1, HA_L0: two copies of this loop, no operator
+// in them), so they are different memories in every iteration:
+//   - the source reads and clears a word of each of src's banks a cycle (its two ports),
 //     two columns of a row (fgc_cpe.h's cpe_pair: columns i + 2j and i + 2j + 1, one from
 //     each bank, the word past the gradient of a row of an odd count a zero nobody writes),
 //     in the feed's order (rows 0 ... w - 1, row i from its diagonal to the gradient);
-//   - the first Gram (d columns) is stored two entries a cycle into HA[1 - SRC] (within one
+//   - the first Gram (d columns) is stored two entries a cycle into dst (within one
 //     factor every entry has its own address; two writes a cycle into any of its banks: their
 //     two ports; GRAM's or the stage lane's two ports read), after its column map is copied
 //     into registers in iterations 0 ... d - 1, three iterations before its first read (a
@@ -69,12 +72,16 @@
 // A factor whose Gram the HGC streams beside the elimination (CFG::staged(fac) >= 0: its
 // offset in a stage lane) is read from `stage` (the lane the Gram source filled a pass before)
 // instead of GRAM.
-template <class CFG, int SRC>
-void cholesky_source_first(int w, int pairs, int next, int trip,
+template <class CFG>
+void cholesky_source_first(typename CFG::T src[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                           typename CFG::T dst[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2], int w,
+                           int pairs, int next, int trip,
                            const typename CFG::T stage[CFG::N_STAGE],
                            hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out) {
+#pragma HLS ARRAY_PARTITION variable=src complete dim=3
+#pragma HLS ARRAY_PARTITION variable=dst complete dim=3
     typedef typename CFG::T T;
-    enum { DST = 1 - SRC, MAX_TRIP = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 > CFG::MAX_W + 3 +
+    enum { MAX_TRIP = CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1 > CFG::MAX_W + 3 +
                                          CFG::TRIP_PACKED / 2
                                          ? CFG::MAX_W * (CFG::MAX_W + 4) / 4 + 1
                                          : CFG::MAX_W + 3 + CFG::TRIP_PACKED / 2 };
@@ -91,13 +98,17 @@ void cholesky_source_first(int w, int pairs, int next, int trip,
     for (int t = 0, i = 0, c = 0, k = 0, p = 0, q = 0; t < trip; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_TRIP
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HA inter false
+#pragma HLS DEPENDENCE variable=src inter false
+#pragma HLS DEPENDENCE variable=dst inter false
+        // map[j] is written in iteration j < d and read from iteration d + 3 on: three
+        // iterations apart at least, as gram_entries' register banks
+#pragma HLS DEPENDENCE variable=map inter false
         if (t < pairs) {
             const int odd_c = c & 1;  // column c in bank 1: the pair's even column is c + 1
             const int e = (c + odd_c) >> 1, o = c >> 1;  // the even column's and the odd one's
-            const T v0 = HA[SRC][i][e][0], v1 = HA[SRC][i][o][1];
-            HA[SRC][i][e][0] = T(0);
-            HA[SRC][i][o][1] = T(0);
+            const T v0 = src[i][e][0], v1 = src[i][o][1];
+            src[i][e][0] = T(0);
+            src[i][o][1] = T(0);
             const fgc_units::cpe_pair<T> pr = {odd_c ? v1 : v0, odd_c ? v0 : v1};
             out.write(pr);
             if (c + 2 > w) {
@@ -114,7 +125,7 @@ void cholesky_source_first(int w, int pairs, int next, int trip,
                 if (k + h < n) {
                     const int a = map[p], b = map[q];
                     const int lo = b < a ? b : a, hi = b < a ? a : b;
-                    HA[DST][lo][hi >> 1][hi & 1] = so >= 0 ? stage[so + k + h] : GRAM[g0 + k + h];
+                    dst[lo][hi >> 1][hi & 1] = so >= 0 ? stage[so + k + h] : GRAM[g0 + k + h];
                     if (q == p) {
                         q = 0;
                         ++p;
@@ -139,6 +150,19 @@ void cholesky_source_first(int w, int pairs, int next, int trip,
 // left out at compile time (no access to an empty table, even on a path that never runs).
 enum { CHOLESKY_HAS_CHILDREN = sizeof(STEP_CHILDREN) > 0 && sizeof(STEP_SEPMAP) > 0 };
 
+// Where a step's pivot check (fgc_cpe.h's cpe_check) runs: with FGC_CHECK_BESIDE (the kernel
+// defines it where the plan finds it faster: units/cholesky.py's check_beside) in the next
+// region's assembler, beside the next step's cascade, on the pivots the cascade left in DPIV /
+// RMAX (cpe_rounds), and a last pass checks the last step's; else at the end of the step's own
+// cascade (cpe_step). The former takes it off the cascade's path where the cascade is the
+// slower process (a chain's steps), the latter off the assembler's where the assembler is (a
+// step with many factors). One copy of the check's operators either way.
+#ifdef FGC_CHECK_BESIDE
+enum { CHOLESKY_CHECK_PASS = 1 };
+#else
+enum { CHOLESKY_CHECK_PASS = 0 };
+#endif
+
 template <class CFG>
 void cholesky_add_segment(bool child, int cb, int d, int g0, int so, int mb, int sc, int u0,
                           int w, const typename CFG::T nf[CFG::N_NF],
@@ -148,7 +172,8 @@ void cholesky_add_segment(bool child, int cb, int d, int g0, int so, int mb, int
     for (int k = 0, x = 0, y = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=HA inter false
+#pragma HLS DEPENDENCE variable=HA_L0 inter false
+#pragma HLS DEPENDENCE variable=HA_L1 inter false
         int a, b;
         T v;
         if (CHOLESKY_HAS_CHILDREN && child) {
@@ -161,7 +186,13 @@ void cholesky_add_segment(bool child, int cb, int d, int g0, int so, int mb, int
             v = so >= 0 ? stage[so + k] : GRAM[g0 + k];
         }
         const int lo = b < a ? b : a, hi = b < a ? a : b;
-        HA[lane][lo][hi >> 1][hi & 1] += v;
+        // one adder: the lane's word read, summed, written back (as cholesky_set_alone)
+        const T sum = (lane ? HA_L1[lo][hi >> 1][hi & 1] : HA_L0[lo][hi >> 1][hi & 1]) + v;
+        if (lane) {
+            HA_L1[lo][hi >> 1][hi & 1] = sum;
+        } else {
+            HA_L0[lo][hi >> 1][hi & 1] = sum;
+        }
         if (child ? y == sc : y == x) {
             ++x;
             y = child ? x : 0;
@@ -211,11 +242,16 @@ void cholesky_assemble_adds(int fs, int kids, int par, const bool odd[N_STEPS],
 // lane (none if next < 0), in one loop (cholesky_source_first; whenever next >= 0, kid_lane is
 // 1 - lane); then step `next`'s further factor Grams (streamed ones from the stage lane
 // `stage`) and step kids's children at positions of parity rd from nfr (NF[rd]) into
-// HA[kid_lane] (none if kids < 0).
+// HA[kid_lane] (none if kids < 0); last the pivot check of step q (the step before s, -1
+// none: fgc_cpe.h's cpe_check on the pivots dpr and rows' largest |h| rmr its cascade left in
+// DPIV[rd] / RMAX[rd]; *tiny, a pivot too small), off the cascade's path: the one copy of the
+// check's multiplier and dividers.
 template <class CFG>
-void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int rd,
+void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int rd, int q,
                         const bool odd[N_STEPS], const typename CFG::T nfr[CFG::N_NF],
                         const typename CFG::T stage[CFG::N_STAGE],
+                        const typename CFG::T dpr[CFG::MAX_F],
+                        const typename CFG::T rmr[CFG::MAX_F], bool* tiny,
                         hls::stream<fgc_units::cpe_pair<typename CFG::T> >& out) {
     FGC_BRANCH();  // csim cycle counting only: beside the cascade
     const int w = s >= 0 ? STEP_W[s] : 0;
@@ -229,46 +265,69 @@ void cholesky_assembler(int s, int lane, int next, int kids, int kid_lane, int r
         trip = gram > trip ? gram : trip;
     }
     if (lane == 0) {
-        cholesky_source_first<CFG, 0>(w, pairs, next, trip, stage, out);
+        cholesky_source_first<CFG>(HA_L0, HA_L1, w, pairs, next, trip, stage, out);
     } else {
-        cholesky_source_first<CFG, 1>(w, pairs, next, trip, stage, out);
+        cholesky_source_first<CFG>(HA_L1, HA_L0, w, pairs, next, trip, stage, out);
     }
     FGC_CYCLES("assemble", 0, "source", trip, CFG::MOVE_II, CFG::MOVE_DEPTH);
     cholesky_assemble_adds<CFG>(next, kids, rd, odd, nfr, stage, kid_lane);
+#ifdef FGC_CHECK_BESIDE
+    if (q >= 0) *tiny = fgc_units::cpe_check<CFG>(dpr, rmr, STEP_F[q]);
+#else  // the check ends the cascade
+    (void)q;
+    (void)dpr;
+    (void)rmr;
+    (void)tiny;
+#endif
 }
 
 // The cascade's process of the cholesky_overlap region: step s factored from the stream, the
-// conditional straight into COND and the update matrix into nfw (the cascade's drain).
+// conditional straight into COND and the update matrix into nfw (the cascade's drain). With
+// FGC_CHECK_BESIDE its rounds alone (fgc_cpe.h's cpe_rounds), its pivots and rows' largest |h|
+// into dpw, rmw (the next region's assembler checks them), *unfit: the step is outside the
+// configuration (nothing computed); else cpe_step, the check after the rounds (*unfit: outside,
+// or a pivot too small).
 template <class CFG>
 void cholesky_cascade(int s, typename CFG::T mu,
                       hls::stream<fgc_units::cpe_pair<typename CFG::T> >& src,
-                      typename CFG::T nfw[CFG::N_NF], bool* not_pd, bool* singular) {
+                      typename CFG::T nfw[CFG::N_NF], typename CFG::T dpw[CFG::MAX_F],
+                      typename CFG::T rmw[CFG::MAX_F], bool* not_pd, bool* unfit) {
     FGC_BRANCH();
     if (s < 0) return;  // a region of the assembler alone: nothing to factor
     const int w = STEP_W[s], f = STEP_F[s];
+#ifdef FGC_CHECK_BESIDE
+    *unfit = !fgc_units::cpe_rounds<CFG>(src, HF, f, w - f, mu, COND, STEP_COND_OFF[s], nfw,
+                                         STEP_NF_OFF[s], dpw, rmw, not_pd);
+#else  // the check after the rounds (cpe_step): *unfit, a pivot too small or outside
+    (void)dpw;
+    (void)rmw;
     fgc_units::cpe_step<CFG>(src, HF, f, w - f, mu, COND, STEP_COND_OFF[s], nfw, STEP_NF_OFF[s],
-                             not_pd, singular);
+                             not_pd, unfit);
+#endif
 }
 
 #ifndef FGC_ELIMINATE_BESIDE  // (else: cholesky_eliminate_beside, below)
 // One DATAFLOW region: step s streamed from HA[lane] through the cascade (its update matrix
-// into nfw) while the assembler puts step `next`'s factor Grams into the other lane and adds
-// step kids's children that nfr holds (cholesky_assembler). nfr and nfw are the two NF lanes:
-// the assembler reads one while the drain writes the other.
+// into nfw, its pivots into dpw / rmw) while the assembler puts step `next`'s factor Grams into
+// the other lane, adds step kids's children that nfr holds and checks step q's pivots from
+// dpr / rmr (cholesky_assembler). nfr and nfw are the two NF lanes, dpr / rmr and dpw / rmw
+// the two DPIV / RMAX lanes: the assembler reads one while the cascade writes the other.
 template <class CFG>
-void cholesky_overlap(int s, int lane, int next, int kids, int kid_lane, int rd,
+void cholesky_overlap(int s, int lane, int next, int kids, int kid_lane, int rd, int q,
                       typename CFG::T mu, const bool odd[N_STEPS],
                       const typename CFG::T nfr[CFG::N_NF], typename CFG::T nfw[CFG::N_NF],
-                      bool* not_pd, bool* singular) {
+                      const typename CFG::T dpr[CFG::MAX_F], const typename CFG::T rmr[CFG::MAX_F],
+                      typename CFG::T dpw[CFG::MAX_F], typename CFG::T rmw[CFG::MAX_F],
+                      bool* not_pd, bool* unfit, bool* tiny) {
 #pragma HLS DATAFLOW
     // deep enough that the assembler never waits for the feed (it writes a pair a cycle, the
     // feed reads a word a cycle): half a step's pairs and the feed's start
     enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
     hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal;
 #pragma HLS STREAM variable=frontal depth=DEPTH
-    cholesky_assembler<CFG>(s, lane, next, kids, kid_lane, rd, odd, nfr, STAGE_NONE,
-                            frontal);
-    cholesky_cascade<CFG>(s, mu, frontal, nfw, not_pd, singular);
+    cholesky_assembler<CFG>(s, lane, next, kids, kid_lane, rd, q, odd, nfr, STAGE_NONE, dpr,
+                            rmr, tiny, frontal);
+    cholesky_cascade<CFG>(s, mu, frontal, nfw, dpw, rmw, not_pd, unfit);
     FGC_DRAINED(&frontal, 1);  // csim only (fgc_cycles.h)
 }
 
@@ -282,14 +341,18 @@ void cholesky_overlap(int s, int lane, int next, int kids, int kid_lane, int rd,
 //   - the region: the step's cascade (its update matrix into NF[t % 2]) beside the assembler,
 //     which streams the step's words, puts step t + 1's Grams into the other lane and adds step
 //     t + 1's children at positions of parity 1 - t % 2 (all written before this region) from
-//     NF[1 - t % 2].
+//     NF[1 - t % 2], and checks the pivots of step t - 1 (DPIV / RMAX[1 - t % 2]; its cascade
+//     wrote them into lane (t - 1) % 2);
+// and last the assembler alone checks the last step's pivots.
 // Every step runs even after one fails (a lane must not be left holding a step's words); false
 // if any step was not positive definite or had a pivot too small.
 template <class CFG>
 bool cholesky_eliminate_all(typename CFG::T mu) {
-#pragma HLS ARRAY_PARTITION variable=HA complete dim=1
-#pragma HLS ARRAY_PARTITION variable=HA complete dim=4
+#pragma HLS ARRAY_PARTITION variable=HA_L0 complete dim=3
+#pragma HLS ARRAY_PARTITION variable=HA_L1 complete dim=3
 #pragma HLS ARRAY_PARTITION variable=NF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
+#pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
     FGC_EVENT("solve");
     FGC_PHASE("assemble");
     bool odd[N_STEPS];  // each step's position parity: the NF lane its drain writes
@@ -302,26 +365,29 @@ bool cholesky_eliminate_all(typename CFG::T mu) {
     // the two parity call sites below are exclusive and sequential: one RTL copy of the region
     // serves both (UG1399, ALLOCATION of a function: one instance for its call sites)
 #pragma HLS ALLOCATION function instances=cholesky_overlap<CFG> limit=1
-    for (int j = 0; j <= 2 * N_STEPS; ++j) {
-        const int i = (j - 1) >> 1;  // the step (position) of the pass, -1 for the first
-        const bool region = j > 0 && (j & 1) == 0;  // its cascade; else the assembler alone
-        const int lane = i >= 0 ? (i & 1) : 1, rd = 1 - lane;
+    for (int j = 0; j <= 2 * N_STEPS + CHOLESKY_CHECK_PASS; ++j) {
+        const bool last = j > 2 * N_STEPS;  // the last step's pivot check alone
+        const int i = last ? -1 : (j - 1) >> 1;  // the step (position) of the pass, -1: none
+        const bool region = j > 0 && (j & 1) == 0 && !last;  // its cascade; else the assembler
+        const int rd = last ? (N_STEPS - 1) & 1 : (i >= 0 ? 1 - (i & 1) : 0), lane = 1 - rd;
         const int step = i >= 0 ? LEVEL_STEPS[i] : -1;
-        const int next = i + 1 < N_STEPS ? LEVEL_STEPS[i + 1] : -1;
+        const int next = !last && i + 1 < N_STEPS ? LEVEL_STEPS[i + 1] : -1;
         const int s = region ? step : -1;
         const int grams = region || j == 0 ? next : -1;
         const int kids = region || j == 0 ? next : step, kid_lane = region || j == 0 ? rd : lane;
-        FGC_PHASE(region ? "cholesky" : "assemble");
-        bool not_pd = false, singular = false;
+        const int q = last ? LEVEL_STEPS[N_STEPS - 1] : (region && i >= 1 ? LEVEL_STEPS[i - 1]
+                                                                          : -1);
+        FGC_PHASE(region || last ? "cholesky" : "assemble");
+        bool not_pd = false, unfit = false, tiny = false;
         if (rd == 1) {
-            cholesky_overlap<CFG>(s, lane, grams, kids, kid_lane, 1, mu, odd, NF[1], NF[0],
-                                  &not_pd, &singular);
+            cholesky_overlap<CFG>(s, lane, grams, kids, kid_lane, 1, q, mu, odd, NF[1], NF[0],
+                                  DPIV[1], RMAX[1], DPIV[0], RMAX[0], &not_pd, &unfit, &tiny);
         } else {
-            cholesky_overlap<CFG>(s, lane, grams, kids, kid_lane, 0, mu, odd, NF[0], NF[1],
-                                  &not_pd, &singular);
+            cholesky_overlap<CFG>(s, lane, grams, kids, kid_lane, 0, q, mu, odd, NF[0], NF[1],
+                                  DPIV[0], RMAX[0], DPIV[1], RMAX[1], &not_pd, &unfit, &tiny);
         }
         FGC_JOIN();
-        ok = ok && !singular;
+        ok = ok && !not_pd && !unfit && !tiny;
     }
     return ok;
 }
@@ -352,36 +418,43 @@ void cholesky_gram_source(int s, bool relin, typename CFG::T stagew[CFG::N_STAGE
 // Gram source putting step `src`'s streamed Grams into stagew while the assembler reads step
 // `next`'s from stager.
 template <class CFG>
-void cholesky_overlap_beside(int s, int lane, int next, int kids, int kid_lane, int rd, int src,
-                             bool relin, typename CFG::T mu, const bool odd[N_STEPS],
+void cholesky_overlap_beside(int s, int lane, int next, int kids, int kid_lane, int rd, int q,
+                             int src, bool relin, typename CFG::T mu, const bool odd[N_STEPS],
                              const typename CFG::T nfr[CFG::N_NF], typename CFG::T nfw[CFG::N_NF],
+                             const typename CFG::T dpr[CFG::MAX_F],
+                             const typename CFG::T rmr[CFG::MAX_F],
+                             typename CFG::T dpw[CFG::MAX_F], typename CFG::T rmw[CFG::MAX_F],
                              const typename CFG::T stager[CFG::N_STAGE],
                              typename CFG::T stagew[CFG::N_STAGE],
-                             hls::stream<typename CFG::Word>& grams, bool* not_pd,
-                             bool* singular) {
+                             hls::stream<typename CFG::Word>& grams, bool* not_pd, bool* unfit,
+                             bool* tiny) {
 #pragma HLS DATAFLOW
     enum { DEPTH = CFG::MAX_W * (CFG::MAX_W + 4) / 8 + CFG::ADD_LAT + 8 };
     hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal;
 #pragma HLS STREAM variable=frontal depth=DEPTH
     cholesky_gram_source<CFG>(src, relin, stagew, grams);
-    cholesky_assembler<CFG>(s, lane, next, kids, kid_lane, rd, odd, nfr, stager, frontal);
-    cholesky_cascade<CFG>(s, mu, frontal, nfw, not_pd, singular);
+    cholesky_assembler<CFG>(s, lane, next, kids, kid_lane, rd, q, odd, nfr, stager, dpr, rmr,
+                            tiny, frontal);
+    cholesky_cascade<CFG>(s, mu, frontal, nfw, dpw, rmw, not_pd, unfit);
     FGC_DRAINED(&frontal, 1);  // csim only (fgc_cycles.h)
 }
 
 // cholesky_eliminate_all with the Gram source: the passes of cholesky_overlap_beside, first the
 // source alone (the first step's streamed Grams into stage lane 0), then as
 // cholesky_eliminate_all's, the source of the pass that assembles step t + 1 (the region of
-// step t, or the first step's Grams for t = -1) putting step t + 2's into stage lane t % 2.
+// step t, or the first step's Grams for t = -1) putting step t + 2's into stage lane t % 2;
+// the assembler of step t's region checks step t - 1's pivots, and a last pass the last step's.
 // relin: the first solve of a linearisation (the Grams from the stream, the phase hgc_beside,
 // each pass whose source reads the stream gated by the producer's last instance of its step),
 // else a retry (from GRAM_B). ok false if any step was not positive definite.
 template <class CFG>
 void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
                                hls::stream<typename CFG::Word>& grams, bool& ok) {
-#pragma HLS ARRAY_PARTITION variable=HA complete dim=1
-#pragma HLS ARRAY_PARTITION variable=HA complete dim=4
+#pragma HLS ARRAY_PARTITION variable=HA_L0 complete dim=3
+#pragma HLS ARRAY_PARTITION variable=HA_L1 complete dim=3
 #pragma HLS ARRAY_PARTITION variable=NF complete dim=1
+#pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
+#pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
 #pragma HLS ARRAY_PARTITION variable=STAGE complete dim=1
     FGC_PHASE(relin ? "hgc_beside" : "reassemble");
     bool odd[N_STEPS];
@@ -392,34 +465,38 @@ void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
     FGC_CYCLES("assemble", 0, "lanes", N_STEPS, CFG::FILL_II, CFG::FILL_DEPTH);
     bool good = true;
 #pragma HLS ALLOCATION function instances=cholesky_overlap_beside<CFG> limit=1
-    for (int j = -1; j <= 2 * N_STEPS; ++j) {
-        const int i = j < 0 ? -2 : (j - 1) >> 1;  // the step (position) of the pass
-        const bool region = j > 0 && (j & 1) == 0;
-        const int lane = i >= 0 ? (i & 1) : (j < 0 ? 0 : 1), rd = 1 - lane;
+    for (int j = -1; j <= 2 * N_STEPS + CHOLESKY_CHECK_PASS; ++j) {
+        const bool last = j > 2 * N_STEPS;  // the last step's pivot check alone
+        const int i = j < 0 || last ? -2 : (j - 1) >> 1;  // the step (position) of the pass
+        const bool region = j > 0 && (j & 1) == 0 && !last;
+        const int lane = last ? 1 - ((N_STEPS - 1) & 1) : (i >= 0 ? (i & 1) : (j < 0 ? 0 : 1));
+        const int rd = 1 - lane;
         const int step = i >= 0 ? LEVEL_STEPS[i] : -1;
-        const int next = j >= 0 && i + 1 < N_STEPS ? LEVEL_STEPS[i + 1] : -1;
+        const int next = j >= 0 && !last && i + 1 < N_STEPS ? LEVEL_STEPS[i + 1] : -1;
         const int s = region ? step : -1;
         const int grams_of = region || j == 0 ? next : -1;
-        const int kids = region || j == 0 ? next : (j < 0 ? -1 : step);
+        const int kids = region || j == 0 ? next : (j < 0 || last ? -1 : step);
+        const int q = last ? LEVEL_STEPS[N_STEPS - 1] : (region && i >= 1 ? LEVEL_STEPS[i - 1]
+                                                                          : -1);
         const int kid_lane = region || j == 0 ? rd : lane;
         // the source: the step two positions on (j < 0: the first; j == 0: the second)
-        const int at = j < 0 ? 0 : (region || j == 0 ? i + 2 : -1);
+        const int at = j < 0 ? 0 : (region || j == 0 ? i + 2 : -1);  // (last: none)
         const int src = at >= 0 && at < N_STEPS && CFG::streams(LEVEL_STEPS[at])
                             ? LEVEL_STEPS[at] : -1;
-        FGC_PHASE(relin ? "hgc_beside" : (region ? "recholesky" : "reassemble"));
+        FGC_PHASE(relin ? "hgc_beside" : (region || last ? "recholesky" : "reassemble"));
         if (relin && src >= 0) FGC_BESIDE_GATE(CFG::last_streamed(src), CFG::MOVE_DEPTH);
-        bool not_pd = false, singular = false;
+        bool not_pd = false, unfit = false, tiny = false;
         if (rd == 1) {
-            cholesky_overlap_beside<CFG>(s, lane, grams_of, kids, kid_lane, 1, src, relin, mu,
-                                         odd, NF[1], NF[0], STAGE[1], STAGE[0], grams, &not_pd,
-                                         &singular);
+            cholesky_overlap_beside<CFG>(s, lane, grams_of, kids, kid_lane, 1, q, src, relin, mu,
+                                         odd, NF[1], NF[0], DPIV[1], RMAX[1], DPIV[0], RMAX[0],
+                                         STAGE[1], STAGE[0], grams, &not_pd, &unfit, &tiny);
         } else {
-            cholesky_overlap_beside<CFG>(s, lane, grams_of, kids, kid_lane, 0, src, relin, mu,
-                                         odd, NF[0], NF[1], STAGE[0], STAGE[1], grams, &not_pd,
-                                         &singular);
+            cholesky_overlap_beside<CFG>(s, lane, grams_of, kids, kid_lane, 0, q, src, relin, mu,
+                                         odd, NF[0], NF[1], DPIV[0], RMAX[0], DPIV[1], RMAX[1],
+                                         STAGE[0], STAGE[1], grams, &not_pd, &unfit, &tiny);
         }
         FGC_JOIN();
-        good = good && !singular;
+        good = good && !not_pd && !unfit && !tiny;
     }
     ok = good;
 }

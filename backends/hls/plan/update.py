@@ -500,8 +500,11 @@ class UpdateModel:
             # window's clusters serially oldest first
             dims = {s: (self.cdim[first + s], self.cdim[first + s + 1] if first + s < last else 0)
                     for s in steps}
+            # each step's pivot check where the kernel runs it (the batch plan's choice: its
+            # last pass a process "check" when beside the next step, fgc_eliminate.h)
+            beside = any(p.name == "check" for ph in self.plan.phases for p in ph.processes)
             phases += elimination_phases(tables, list(steps), dims, self.options.cpe, self.les, lt,
-                                         self.options.cascade_lanes)
+                                         self.options.cascade_lanes, beside)
         # back-substitution step by step, the state update fed by it beside (fgc_backsub.h's
         # back_substitute: backsub_retire retracts each cluster's variables as it is solved)
         unit = "backsub" if self.qr else "trisolve"

@@ -103,10 +103,13 @@ class CascadeProcess(Process):
 
 
 def cascade_process(s: int, frontal: int, separator: int, cpe: int,
-                    ops: OperatorTable, lanes: int = 1) -> CascadeProcess:
-    """Step s's cascade (:func:`cpe_step_loops`) as the process of its pass."""
-    return CascadeProcess(f"cascade{s}", "cpe", tuple(cpe_step_loops(
-        frontal, separator, cpe, ops, name=f"s{s}", lanes=lanes)), feed=ops.add.latency + 2)
+                    ops: OperatorTable, lanes: int = 1, check: bool = True) -> CascadeProcess:
+    """Step s's cascade (:func:`cpe_step_loops`; but its pivot check with ``check`` false:
+    fgc_eliminate.h's cholesky_cascade with FGC_CHECK_BESIDE runs cpe_rounds, the next pass's
+    assembler the check) as the process of its pass."""
+    loops = cpe_step_loops(frontal, separator, cpe, ops, name=f"s{s}", lanes=lanes)
+    return CascadeProcess(f"cascade{s}", "cpe", tuple(loops if check else loops[:-2]),
+                          feed=ops.add.latency + 2)
 
 
 def cpe_check_loops(frontal: int, ops: OperatorTable, name: str = "s") -> list[Loop]:
@@ -378,7 +381,8 @@ def first_gram_trip(tables: dict, s: int) -> int:
     return d + 3 + -(-(d * (d + 1) // 2 + d) // 2)
 
 
-def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict) -> list[Loop]:
+def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict,
+                    ops: OperatorTable | None = None, prev: int = -1) -> list[Loop]:
     """fgc_eliminate.h's cholesky_assembler beside step s's cascade (s at an even position or
     not: ``odd[s]``; s < 0: the pass before the first step's region, nothing streamed): one
     loop (cholesky_source_first, ``move``) that streams step s's words out of its lane two of
@@ -386,28 +390,35 @@ def assembler_loops(tables: dict, s: int, nxt: int, timing: dict, odd: dict) -> 
     factor's Gram is stored into the other lane (:func:`first_gram_trip`), trip the larger;
     then step ``nxt``'s further factor Grams and its children at positions of the other parity
     than s's (written before this region; :func:`assemble_loops` but the first factor's), none
-    if nxt < 0."""
+    if nxt < 0; last step ``prev``'s pivot check (:func:`cpe_check_loops`; -1 none), which its
+    cascade left in DPIV / RMAX: off the cascade's path."""
     pairs = cpe_pairs(tables["STEP_W"][s]) if s >= 0 else 0
     loops = [kernel_loop("source", max(pairs, first_gram_trip(tables, nxt)), "move", timing)]
     if nxt >= 0:
         par = 1 - odd[s] if s >= 0 else 0
         loops += [lp for lp in assemble_loops(tables, nxt, timing, odd=odd, par=par)
                   if lp.name not in ("map", "gram_first")]
+    if prev >= 0:
+        loops += cpe_check_loops(tables["STEP_F"][prev], ops, name=f"s{prev}")
     return loops
 
 
 def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
-                       ops: OperatorTable, timing: dict, lanes: int = 1) -> list[Phase]:
+                       ops: OperatorTable, timing: dict, lanes: int = 1,
+                       check_beside: bool = False) -> list[Phase]:
     """cholesky_eliminate_all's phases (passes of one cholesky_overlap region, fgc_eliminate.h)
     on the steps ``order`` (the schedule's LEVEL_STEPS; ``dims``: step -> (frontal, separator)
     columns) with the step tables ``tables``: phase ``assemble`` (the assembler alone: each
     step's position parity (the NF lane its drain writes), the first step's Grams, then per step
     its children at positions of the other parity than its own, the step before among them)
     and per step t the region ``cholesky_level<t>``: the cascade on the step
-    (:func:`cpe_step_loops`) beside the assembler (:func:`assembler_loops`: its words streamed
-    out, the next step's Grams and its children of t's parity), the slower of the two plus the
-    other's fill. A child that is no step of ``order`` (an on-chip window's τ, kept from
-    before the window) counts as of parity 0: added with the first step's Grams, alone. The
+    (:func:`cpe_step_loops`) beside the assembler (:func:`assembler_loops`: its words
+    streamed out, the next step's Grams and its children of t's parity), the slower of the two
+    plus the other's fill. ``check_beside`` (fgc_eliminate.h's FGC_CHECK_BESIDE): each step's
+    pivot check not at its cascade's end but in the next region's assembler, and a last
+    ``cholesky_level<steps>``, the assembler alone on the last step's check. A child that is
+    no step of ``order`` (an on-chip window's τ, kept from before the window) counts as of
+    parity 0: added with the first step's Grams, alone. The
     batch plan (:func:`_frontal`) and the stream's window model (plan/update.py) both price
     the elimination with it."""
     odd = {s: t % 2 for t, s in enumerate(order)}
@@ -423,10 +434,15 @@ def elimination_phases(tables: dict, order: list[int], dims: dict, cpe: int,
     for t, s in enumerate(order):
         nxt = order[t + 1] if t + 1 < len(order) else -1
         frontal, separator = dims[s]
+        prev = order[t - 1] if t > 0 and check_beside else -1
         phases.append(Phase(f"cholesky_level{t}", True, (
-            cascade_process(s, frontal, separator, cpe, ops, lanes),
+            cascade_process(s, frontal, separator, cpe, ops, lanes, not check_beside),
             Process(f"assembler{s}", "cpe", tuple(assembler_loops(
-                tables, s, nxt, timing, odd)))), linear=True))
+                tables, s, nxt, timing, odd, ops, prev)))), linear=True))
+    if order and check_beside:
+        phases.append(Phase(f"cholesky_level{len(order)}", False, (Process(
+            "check", "cpe", tuple(cpe_check_loops(dims[order[-1]][0], ops, f"s{order[-1]}"))),),
+            linear=True))
     return phases
 
 
@@ -570,14 +586,17 @@ def beside_ready(count: int, jac: Loop, rows: int, steps: int, ii: int, depth: i
 
 
 def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: OperatorTable,
-                  timing: dict, lay: dict, relin: bool, steps: int, ii: int, lanes: int = 1
-                  ) -> list[tuple[Phase, int | None]]:
+                  timing: dict, lay: dict, relin: bool, steps: int, ii: int, lanes: int = 1,
+                  check_beside: bool = False) -> list[tuple[Phase, int | None]]:
     """fgc_eliminate.h's cholesky_eliminate_beside, pass by pass: (the pass as a phase, the
     producer's instance its Gram source waits for or None). Phase ``reassemble`` (the lanes'
     parity loop), then the source alone (the first step's streamed Grams into stage lane 0), the
     first step's assembly beside the source of the second, and as :func:`elimination_phases`'
     passes (the assembler alone adding children: ``reassemble_level<j>``; a step's region:
-    ``recholesky_level<t>``) with, beside the region of step t, the source of step t + 2. The
+    ``recholesky_level<t>``) with, beside the
+    region of step t, the source of step t + 2; with ``check_beside`` the assembler of step
+    t's region checks step t - 1's pivots and a last pass the last step's alone
+    (:func:`elimination_phases`'), else each step's check ends its cascade. The
     source (``relin``: the first solve of a linearisation) takes a stream word every ``ii``
     cycles (``steps`` an instance) or (a retry) two words of GRAM_B a cycle."""
     odd = {s: t % 2 for t, s in enumerate(order)}
@@ -610,10 +629,17 @@ def beside_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops: Ope
         nxt = order[t + 1] if t + 1 < len(order) else -1
         frontal, separator = dims[s]
         src, gate = source(t + 2)
+        prev = order[t - 1] if t > 0 and check_beside else -1
         passes.append((Phase(f"recholesky_level{t}", True, (
             *src,
-            Process(f"assembler{s}", "cpe", tuple(assembler_loops(tables, s, nxt, timing, odd))),
-            cascade_process(s, frontal, separator, cpe, ops, lanes)), linear=True), gate))
+            Process(f"assembler{s}", "cpe", tuple(assembler_loops(tables, s, nxt, timing, odd,
+                                                                  ops, prev))),
+            cascade_process(s, frontal, separator, cpe, ops, lanes, not check_beside)),
+            linear=True), gate))
+    if order and check_beside:  # the last step's pivot check, the assembler alone
+        passes.append((Phase(f"recholesky_level{len(order)}", False, (Process(
+            "check", "cpe", tuple(cpe_check_loops(dims[order[-1]][0], ops,
+                                                  f"s{order[-1]}"))),), linear=True), None))
     return passes
 
 
@@ -914,9 +940,16 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
     ready = beside_ready(len(lay["order"]), jac, rows.cycles, steps, entries.ii, entries.depth)
     lanes = ctx.opts.cascade_lanes
     banks = {"cond_banks": ctx.opts.backsub_lanes} if passes is beside_set_passes else {}
-    first = passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps, entries.ii,
-                   lanes, **banks)
-    cycles, _ = beside_cycles(phase_cycles(region), ready, first, timing["move"][1])
+    # one cascade: each step's pivot check where the first solve is faster (check_beside)
+    best = None
+    for extra in ({},) if passes is beside_set_passes else ({}, {"check_beside": True}):
+        first = passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps,
+                       entries.ii, lanes, **banks, **extra)
+        cycles, _ = beside_cycles(phase_cycles(region), ready, first, timing["move"][1])
+        if best is None or cycles < best[0]:
+            best = (cycles, extra)
+    cycles, extra = best
+    banks = {**banks, **extra}
     # the producer's region stays in the plan for the record (per "beside": priced inside
     # hgc_beside, not on its own)
     ctx.phases[at:at + 1] = [(slot, Phase("hgc_beside", False, (Process(
@@ -995,8 +1028,10 @@ def _frontal(ctx) -> None:
            else None)
     if big is not None:
         _beside(ctx, big, order, dims)
-    elif sets == 1:
-        phases = elimination_phases(tables, order, dims, c, ops, timing, lanes)
+    elif sets == 1:  # each step's pivot check where the elimination is faster (check_beside)
+        phases = min((elimination_phases(tables, order, dims, c, ops, timing, lanes, beside)
+                      for beside in (False, True)),
+                     key=lambda phs: sum(phase_cycles(ph) for ph in phs))
     else:
         phases = cascades_phases(tables, order, dims, c, ops, timing, lanes,
                                  ctx.opts.backsub_lanes)
@@ -1025,9 +1060,12 @@ def _frontal(ctx) -> None:
                                    sizes["MAX_W"] * cols, ops.word_bits, 1))
         ctx.memories.append(Memory("trailing" if k == 0 else f"trailing{k}",
                                    sizes["MAX_W"] * cols, ops.word_bits, 1))
-    if sets > 1:  # CONDBUF, and DPIV / RMAX (each step's pivots and rows' largest |h|)
+    if sets > 1:  # CONDBUF
         ctx.memories.append(Memory("condbuf", 2 * sets * sizes["MAX_F"] * cols, ops.word_bits,
                                    1))
+    # DPIV / RMAX (each step's pivots and rows' largest |h|, checked beside the next region:
+    # two cascades, or one with its check beside, check_beside), two lanes a cascade
+    if sets > 1 or any(p.name == "check" for _, ph in ctx.phases for p in ph.processes):
         ctx.memories.append(Memory("pivots", 2 * 2 * sets * sizes["MAX_F"], ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)
 

@@ -3475,8 +3475,13 @@ struct LesConfig {
 // stream); cpe_step runs the rounds of the #CPE cascade (one DATAFLOW region per round:
 // cpe_feed (+ mu) -> cpe_tap<0>, cpe<0> ... cpe_tap<19>, cpe<19> -> cpe_drain, 61 streams),
 // whose drain writes the conditional into COND and the update matrix into NF.
-L HA[2][MAX_W][LesConfig::MAX_COLS / 2 + 1][2];  // the assembly's two lanes, (i, c) at [i][c >> 1][c & 1]; all zero between steps (the source clears what it reads)
+L HA_L0[MAX_W][LesConfig::MAX_COLS / 2 + 1][2];  // the assembly's lane 0, (i, c) at [i][c >> 1][c & 1]; all zero between steps (the source clears what it reads)
+L HA_L1[MAX_W][LesConfig::MAX_COLS / 2 + 1][2];  // its lane 1
 L HF[MAX_W][LesConfig::MAX_COLS];  // the rows a round leaves for the next (multi-round steps); all zero between steps
+// each step's pivot check in the next region's assembler (fgc_eliminate.h)
+#define FGC_CHECK_BESIDE
+L DPIV[2][MAX_F];  // the t-th step's pivots in [t % 2] (FGC_CHECK_BESIDE: the next region's assembler checks them)
+L RMAX[2][MAX_F];  // its pivot rows' largest frontal |h|
 
 // block 0's Gram entries' packed positions p (p + 1) / 2 + q, lane A's and lane B's (gram_entries_stream's order)
 const int STREAMED_POS_A[248] = {
