@@ -279,15 +279,24 @@ def test_lm_to_convergence_keeps_its_store(paper_a_n7):
     assert "batch_store" in {t.name for t in model.price(4, 3, ev).terms}
 
 
-def test_the_cost_at_x_is_priced_once_per_update(paper_a_n7):
-    """LM's start costs the window at X once per call (the plan's per-call ``factor_cost`` phase,
-    the ``cost`` event): the update prices it, the window's and a batch step's (left out, the
-    counting C simulation's keyframe 0 of LIO N = 8 counted 1.451 x the model)."""
+def test_the_cost_at_x_comes_from_the_first_linearisation(paper_a_n7):
+    """LM's start needs the window's cost at X; the QR design's first linearisation gives it
+    (the gradient pass's scatter takes the right-hand side's column too: ‖b‖² of each instance,
+    one iteration more; fgc_lm.h's FGC_LM_COST_IN_LINEARIZE), so no cost pass at X runs: the
+    plan's per-call ``factor_cost`` phase costs nothing, the update prices no ``cost_x`` (nor a
+    batch step ``batch_cost_x``), and the gradient pass prices the extra column per instance."""
+    from fgc_backends.hls.units.datapath import cost_in_linearization
+
     _, model = paper_a_n7
-    cost = sum(phase_cycles(ph) for ph in model.plan.phases if ph.name == "factor_cost")
-    assert cost > 0
-    term = model.price(5, 2).term("cost_x")
-    assert (term.each, term.times) == (cost, 1)
-    bcost = sum(phase_cycles(ph) for ph in model.batch["plan"].phases
-                if ph.name == "factor_cost")
-    assert model.price(4, 2).term("batch_cost_x").each == bcost
+    for plan, program in ((model.plan, model.layout.template),
+                          (model.batch["plan"], model.layout.batch.template)):
+        assert cost_in_linearization(program)
+        assert sum(phase_cycles(ph) for ph in plan.phases if ph.name == "factor_cost") == 0
+        (grad,) = [ph for ph in plan.phases if ph.name == "gradient"]
+        scatter = {p.name: p.loops[-1] for p in grad.processes if p.name.startswith("reduce_")}
+        for i, b in enumerate(program.blocks):
+            assert (scatter[f"reduce_{i}"].name, scatter[f"reduce_{i}"].trip) == \
+                ("scatter", sum(len(blk[0]) for blk in b.structure if blk) + 1)
+    assert model.cost_x == 0 and model.batch["cost_x"] == 0
+    assert "cost_x" not in {t.name for t in model.price(5, 2).terms}
+    assert "batch_cost_x" not in {t.name for t in model.price(4, 2).terms}

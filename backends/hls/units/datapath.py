@@ -25,15 +25,29 @@ from fgc_backends.hls.units.spec import UnitSpec
 from fgc_backends.hls.units.special_ops import issued_counts, printed_counts
 
 
+def cost_in_linearization(program) -> bool:
+    """Whether the linearisation gives LM its cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE,
+    no separate cost pass before the first linearisation): QR's gradient pass forms every
+    column of [A | b]ᵀ b, the right-hand side's own column among them, so ‖b‖² of an instance
+    is one more column out of the scatter, and half their sum is the cost, 1/2 Σ ‖W r‖², when
+    no member has a robust loss (its rows are reweighted, its cost ρ(·) is not their square).
+    Cholesky's HGC and a robust member keep the cost pass at X."""
+    return program.solver.linear == "qr" and not any(
+        m.robust for b in program.blocks for m in b.members)
+
+
 def gradient_loops(program, timing: dict) -> list[Process]:
     """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded,
     :data:`PORTS` words a cycle, the column map, A^T b TILE columns of a row a cycle into the
     adder latency's interleaved partial sums (a dot product of m × padded / TILE terms,
     :func:`kernel_dot`; the finiteness check rides along), the scatter into G at II 1), after
     G is zeroed. The scatter folds each column's partial sums on the way (a
-    ⌈log₂ T_PARTIALS⌉-level tree in its depth)."""
+    ⌈log₂ T_PARTIALS⌉-level tree in its depth); with the cost in the linearisation
+    (:func:`cost_in_linearization`) it takes the right-hand side's column too, ‖b‖² into the
+    cost's sum (one iteration more)."""
     la = timing["acc"][0]  # T_PARTIALS: the adder's latency
     n_t = sum(v.dim for v in program.variables)
+    bb = int(cost_in_linearization(program))
     procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", _ported(n_t), "fill",
                                                                 timing),))]
     for i, b in enumerate(program.blocks):
@@ -43,7 +57,7 @@ def gradient_loops(program, timing: dict) -> list[Process]:
             kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("columns", d, "fill", timing, n),
             kernel_dot("rows", m * (padded // TILE), timing, n),
-            Loop("scatter", d, timing["scatter"][0],
+            Loop("scatter", d + bb, timing["scatter"][0],
                  timing["scatter"][1] + la * _ceil_log2(la), n))))
     return procs
 
@@ -342,8 +356,10 @@ def build(ctx) -> None:
     # (each datapath's cost-mode loop kept as a process of no cycles: trip 0, its II and
     # depth what trial_cost's loop for it starts from, cost_loops)
     idle = tuple(Process(p.name, p.unit, (replace(p.loops[0], trip=0),)) for p in cost)
+    # (none when the linearisation gives the cost at X: cost_in_linearization)
+    at_x = 0 if cost_in_linearization(program) else 1
     ctx.add_phase("cost", Phase("factor_cost", False, (Process("trial_cost", "factor_cost", (
-        Loop("cost_at_x", 1, 1, end),)),) + idle, per="call"))
+        Loop("cost_at_x", at_x, 1, end),)),) + idle, per="call"))
     # the process's copy of the retired state, and the stream of retired variables
     ctx.memories.append(Memory("trial_state", sum(v.storage_dim for v in program.variables),
                                ops.word_bits, 1))
