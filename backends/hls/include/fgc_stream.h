@@ -9,7 +9,10 @@
 //                        conditionals, re-expressed, stored and walked back from the window
 //                        (kept_matvec<CFG>, kept_conditional<CFG> inside); with the marginal,
 //                        marginal_and_kept<CFG>: the marginal and the kept net's re-expression
-//                        and walk side by side (one DATAFLOW region, two processes)
+//                        side by side (one DATAFLOW region, two processes). The walk, which
+//                        gives the kept keyframes' estimates, is off the update's path: it runs
+//                        in the same kept process when the host asks for them (op 3) or a batch
+//                        step starts from them, and only if an update left them stale
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
 //   FGC_STREAM_WINDOW    stream_call<CFG>(op, x_in, data, x_out, [x_kept,] errors, info): the
@@ -80,8 +83,8 @@ int STREAM_COUNT = 0;  // keyframes since the reset call (saturates at STREAM_SL
 #ifdef FGC_STREAM_KEPT
 // the kept Bayes net (incremental mode): keyframe c < first (the window's oldest) is kept as its
 // conditional R_c d_c + S_c d_c+1 = d_c, linearised at KEPT_LIN[c] with its parent at
-// KEPT_NEXT[c], its estimate in X_KEPT[c]; every update walks them back from the window,
-// x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
+// KEPT_NEXT[c], its estimate in X_KEPT[c], walked back from the window when asked for (op 3) or
+// before a batch step, x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
 L KEPT_R[KEPT_MAX * STREAM_KF_T * STREAM_KF_T];  // R_c, row-major (upper triangular)
 L KEPT_S[KEPT_MAX * STREAM_KF_T * STREAM_KF_T];  // S_c, row-major
 L KEPT_D[KEPT_MAX * STREAM_KF_T];
@@ -89,6 +92,9 @@ T KEPT_LIN[KEPT_MAX * STREAM_KF_X];
 T KEPT_NEXT[KEPT_MAX * STREAM_KF_X];
 T X_KEPT[KEPT_MAX * STREAM_KF_X];
 int STREAM_TOTAL = 0;  // keyframes since the reset call
+// X_KEPT is not the walk of the kept net as it stands: an incremental update re-expressed the
+// newest kept conditional (and kept another) without walking (op 3 or a batch step walks)
+bool KEPT_STALE = false;
 #endif
 #ifdef FGC_STREAM_BATCH
 T BATCH_X[BATCH_SLOTS * STREAM_KF_X];  // keyframes 0 … j to and from the batch kernel
@@ -513,8 +519,10 @@ void marginal_task(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X
 #endif
 }
 
+// The kept net's process: conditional `reexp` (-1: none) re-expressed at x0, then (walk > 0) the
+// walk back through the kept conditionals walk - 1 … 0 from x0 (their estimates into X_KEPT).
 template <class CFG>
-void kept_task(int first, const T x0[STREAM_KF_X]) {
+void kept_task(int reexp, int walk, const T x0[STREAM_KF_X]) {
     // reexpress's passes and the walk's (both INLINE here) run one after another: one Log
     // datapath, one retraction datapath and one matrix-vector product for all of them
 #pragma HLS ALLOCATION function instances=keyframe_local limit=1
@@ -522,20 +530,24 @@ void kept_task(int first, const T x0[STREAM_KF_X]) {
 #pragma HLS ALLOCATION function instances=kept_matvec<CFG> limit=1
     FGC_TASK();
 #ifdef FGC_STREAM_KEPT
-    if (first > 0) reexpress<CFG>(first - 1, x0);
-    kept_walk<CFG>(first, x0);
+    if (reexp >= 0) reexpress<CFG>(reexp, x0);
+    if (walk > 0) {
+        FGC_EVENT("kept_walk");
+        kept_walk<CFG>(walk, x0);
+    }
 #else
-    (void)first;
+    (void)reexp;
+    (void)walk;
     (void)x0;
 #endif
 }
 
 template <class CFG>
-void marginal_and_kept(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X], int first,
-                       const T x0[STREAM_KF_X], int code[1]) {
+void marginal_and_kept(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X], int reexp,
+                       int walk, const T x0[STREAM_KF_X], int code[1]) {
 #pragma HLS DATAFLOW
     marginal_task<CFG>(m, finite, reuse, lin01, code);
-    kept_task<CFG>(first, x0);
+    kept_task<CFG>(reexp, walk, x0);
 }
 #endif  // FGC_STREAM_WINDOW
 
@@ -549,8 +561,12 @@ void marginal_and_kept(int m, bool finite, bool reuse, const T lin01[2 * STREAM_
 // factor's words); op 2 (batch steps) resets the batch kernel the same way; op 1 brings the next
 // keyframe (x_in: its storage, data: its words, then the batch kernel's) and runs the update:
 // the shift once the window is full, LM on the window (or the batch step), the kept conditional's
-// re-expression, the marginal tau, the new kept conditional, the walk back, the window out.
+// re-expression, the marginal tau, the new kept conditional, the window out (x_out).
 // errors = {initial, final} of the solve, info = {iterations, status, reason, slot, marginal}.
+// op 3 (incremental) asks for the kept keyframes' estimates: walked back from slot 0 if an update
+// left them stale, out in x_kept (keyframes 0 … first - 1); nothing else moves. An update does
+// not walk (ISAM2's update does not compute its estimates either): a batch step walks them
+// first if they are stale, as it starts from them; the estimates are the same whenever walked.
 template <class CFG>
 void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA], T x_out[N_X]
                  FGC_STREAM_KEPT_ARG, T errors[2], int info[5]) {
@@ -576,6 +592,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         STREAM_COUNT = 0;
 #ifdef FGC_STREAM_KEPT
         STREAM_TOTAL = 0;
+        KEPT_STALE = false;
 #endif
         errors[0] = T(0);
         errors[1] = T(0);
@@ -591,12 +608,18 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         return;
     }
 #endif
+    const bool update = op == 1;  // else op 3: the kept keyframes' estimates
     const int j = STREAM_COUNT;
     const int m = j < STREAM_SLOTS - 1 ? j : STREAM_SLOTS - 1;  // the keyframe's slot
 #ifdef FGC_STREAM_KEPT
-    const int total = STREAM_TOTAL;  // this keyframe's index
+    // this keyframe's index (op 3: the last update's)
+    const int total = update ? STREAM_TOTAL : STREAM_TOTAL - 1;
     const int first = total < STREAM_W ? 0 : total - STREAM_W;  // the window's oldest
-#ifdef FGC_STREAM_BATCH
+#else
+    if (!update) return;
+#endif
+    if (update) {
+#if defined(FGC_STREAM_KEPT) && defined(FGC_STREAM_BATCH)
     if (j >= STREAM_SLOTS) {  // slot 0 (keyframe first - 1) leaves: its estimate kept (a batch
         for (int k = 0; k < STREAM_KF_X; ++k) {  // step starts from it; the walk rewrites it)
 #pragma HLS PIPELINE II=1
@@ -605,21 +628,24 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         FGC_CYCLES("top", 0, "leave", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     }
 #endif
-#endif
     if (j >= STREAM_SLOTS) stream_shift<CFG>();
     stream_in<CFG>(m, x_in, data);
+    }
     int marginal = 0;  // 0: none left, 1: tau written, 2: singular (not written)
 #ifdef FGC_STREAM_BATCH
     // keyframe total's words for the batch kernel follow the window's
-    if (total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
-    if (IS_BATCH[total]) {
-        marginal = batch_step<CFG>(total, first, errors, info);
-    } else {
+    if (update && total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
+    const bool batch = update && IS_BATCH[total];
+#else
+    const bool batch = false;
 #endif
-        // slots 0 and 1 where the update linearises them: under the one-step policy a leaving
-        // keyframe's conditional and tau are kept there once the step is taken (copied whatever
-        // the policy, a word a cycle)
-        T lin01[2 * STREAM_KF_X];
+    // slots 0 and 1 where the update linearises them: under the one-step policy a leaving
+    // keyframe's conditional and tau are kept there once the step is taken (copied whatever
+    // the policy, a word a cycle)
+    T lin01[2 * STREAM_KF_X];
+    bool reuse = false;
+    bool finite = true;  // false: the window is not finite at its optimum
+    if (update && !batch) {
         FGC_PHASE("marginal");
         for (int k = 0; k < 2 * STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
@@ -628,32 +654,59 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
         CFG::lm_solve(errors, info);
         // the one-step update took its step: its solve's factorisation is the store
-        const bool reuse = m == STREAM_W && CFG::took_step(info);
+        reuse = m == STREAM_W && CFG::took_step(info);
         // the window's rows at its optimum for a leaving keyframe's marginal: AB holds them if
         // LM stopped where it last linearised (CFG::at_linearisation), else computed again here,
         // before the marginal's region, by LM's own linearisation instance
-        bool finite = true;  // false: the window is not finite at its optimum
 #ifdef FGC_STREAM_MARGINAL
         if (m == STREAM_W && !reuse && !CFG::at_linearisation(info)) {
             FGC_EVENT("relinearize");
             finite = CFG::linearize();
         }
 #endif
-        T x0[STREAM_KF_X];  // slot 0's estimate: the kept net's parent
+    }
+    // the kept net's process (one call site of the region for every op): an update re-expresses
+    // the newest kept conditional at slot 0's estimate; op 3 walks back from slot 0, a batch
+    // step from the leaving keyframe's estimate (the walk the update before did not run), each
+    // only if the estimates are stale
+    T x0[STREAM_KF_X];  // the kept net's parent: slot 0's estimate (a batch step: keyframe first - 1's)
 #ifdef FGC_STREAM_KEPT
-        FGC_PHASE("kept");
-        for (int k = 0; k < STREAM_KF_X; ++k) {
+    FGC_PHASE("kept");
+    const bool from_kept = batch && first > 0;
+    const int parent = from_kept ? (first - 1) * STREAM_KF_X : 0;
+    for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-            x0[k] = X[SLOT_X[k]];
-        }
-        FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-        const int kept_first = first;
+        x0[k] = from_kept ? X_KEPT[parent + k] : X[SLOT_X[k]];
+    }
+    FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    const int reexp = update && !batch ? first - 1 : -1;
+    const int walk = !KEPT_STALE ? 0 : batch ? first - 1 : update ? 0 : first;
 #else
-        const int kept_first = 0;
+    const int reexp = -1, walk = 0;
 #endif
-        int code[1] = {0};
-        marginal_and_kept<CFG>(m, finite, reuse, lin01, kept_first, x0, code);
-        FGC_TASKS_JOIN();
+    int code[1] = {0};
+    marginal_and_kept<CFG>(update && !batch ? m : -1, finite, reuse, lin01, reexp, walk, x0, code);
+    FGC_TASKS_JOIN();
+#ifdef FGC_STREAM_KEPT
+    if (walk > 0) KEPT_STALE = false;
+#endif
+    if (!update) {  // op 3: the kept keyframes' estimates out
+#ifdef FGC_STREAM_KEPT
+        FGC_PHASE("setup");
+        for (int i = 0; i < first * STREAM_KF_X; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KEPT_WORDS
+#pragma HLS PIPELINE II=1
+            x_kept[i] = X_KEPT[i];
+        }
+        FGC_CYCLES("top", 0, "x_kept_out", first * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#endif
+        return;
+    }
+#ifdef FGC_STREAM_BATCH
+    if (batch) {
+        marginal = batch_step<CFG>(total, first, errors, info);
+    } else {
+#endif
         marginal = code[0];
 #ifdef FGC_STREAM_KEPT
         if (m == STREAM_W && marginal == 1) keep<CFG>(first, reuse, lin01);
@@ -662,13 +715,8 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     }
 #endif
 #ifdef FGC_STREAM_KEPT
-    FGC_PHASE("setup");
-    for (int i = 0; i < first * STREAM_KF_X; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=STREAM_KEPT_WORDS
-#pragma HLS PIPELINE II=1
-        x_kept[i] = X_KEPT[i];
-    }
-    FGC_CYCLES("top", 0, "x_kept_out", first * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    // an incremental update leaves the kept estimates stale (a batch step its optimum there)
+    KEPT_STALE = !batch && first > 0;
     STREAM_TOTAL = total + 1;
 #endif
     FGC_PHASE("setup");
