@@ -9,7 +9,6 @@ import math
 from dataclasses import dataclass, replace
 
 from fgc.ir.codes import NOISE_CODES
-from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.cost.kernels import critical_path
 from fgc_backends.hls.plan.binding import BoundLoop, bound_unit, loop_ii
 from fgc_backends.hls.plan.loops import (
@@ -20,7 +19,7 @@ from fgc_backends.hls.plan.loops import (
     kernel_dot,
     kernel_loop,
 )
-from fgc_backends.hls.plan.model import Loop, Memory, Phase, Process, Unit
+from fgc_backends.hls.plan.model import PORTS, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
 from fgc_backends.hls.units.special_ops import issued_counts, printed_counts
 
@@ -37,11 +36,13 @@ def cost_in_linearization(program) -> bool:
 
 
 def gradient_loops(program, timing: dict) -> list[Process]:
-    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded,
-    :data:`PORTS` words a cycle, the column map, A^T b TILE columns of a row a cycle into the
-    adder latency's interleaved partial sums (a dot product of m × padded / TILE terms,
-    :func:`kernel_dot`; the finiteness check rides along), the scatter into G at II 1), after
-    G is zeroed. The scatter folds each column's partial sums on the way (a
+    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance the column map, its
+    rows' right-hand sides :data:`PORTS` a cycle, A^T b PORTS columns of a row a cycle straight
+    out of AB (its two ports) into the adder latency's interleaved partial sums (a dot product
+    of m × padded / PORTS terms, :func:`kernel_dot`; the finiteness check rides along), the
+    scatter into G at II 1), after G is zeroed. (The rows used to be copied out of AB into a
+    row buffer first, PORTS words a cycle, then multiplied TILE columns a cycle: the copy cost
+    as much as the products.) The scatter folds each column's partial sums on the way (a
     ⌈log₂ T_PARTIALS⌉-level tree in its depth); with the cost in the linearisation
     (:func:`cost_in_linearization`) it takes the right-hand side's column too, ‖b‖² into the
     cost's sum (one iteration more)."""
@@ -54,9 +55,9 @@ def gradient_loops(program, timing: dict) -> list[Process]:
         m, d, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         procs.append(Process(f"reduce_{i}", "gradient", (
-            kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("columns", d, "fill", timing, n),
-            kernel_dot("rows", m * (padded // TILE), timing, n),
+            kernel_loop("rhs", _ported(m), "move", timing, n),
+            kernel_dot("rows", m * (padded // PORTS), timing, n),
             Loop("scatter", d + bb, timing["scatter"][0],
                  timing["scatter"][1] + la * _ceil_log2(la), n))))
     return procs
@@ -324,12 +325,13 @@ def build(ctx) -> None:
         ctx.add_phase("linearize", Phase("gradient", False,
                                          tuple(gradient_loops(program, ctx.timing))))
         # accumulate, one module for every block type (linearize_all's ALLOCATION function
-        # limit=1, reduce_<b> INLINE, the sizes run-time): TILE multiply-adds a cycle, then a
-        # column a cycle through the fold of its T_PARTIALS partial sums and the add into G
+        # limit=1, reduce_<b> INLINE, the sizes run-time): PORTS multiply-adds a cycle (AB's
+        # two ports), then a column a cycle through the fold of its T_PARTIALS partial sums and
+        # the add into G
         la = ops.add.latency
-        ctx.units.append(bound_unit("gradient", "A^T b, TILE columns a cycle, one module for "
-                                    "every block type",
-                                    [BoundLoop("accumulate", (("add", TILE), ("mul", TILE)), 1),
+        ctx.units.append(bound_unit("gradient", "A^T b, PORTS columns a cycle out of AB, one "
+                                    "module for every block type",
+                                    [BoundLoop("accumulate", (("add", PORTS), ("mul", PORTS)), 1),
                                      BoundLoop("scatter", (("add", la),), 1)], table=ops))
     if opts.jacobian_storage == "raw":
         # whitening while stacking: W·[J | -r] of each instance, one multiply-accumulate a
