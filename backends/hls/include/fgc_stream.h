@@ -620,16 +620,16 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #endif
     if (update) {
 #if defined(FGC_STREAM_KEPT) && defined(FGC_STREAM_BATCH)
-    if (j >= STREAM_SLOTS) {  // slot 0 (keyframe first - 1) leaves: its estimate kept (a batch
-        for (int k = 0; k < STREAM_KF_X; ++k) {  // step starts from it; the walk rewrites it)
+        if (j >= STREAM_SLOTS) {  // slot 0 (keyframe first - 1) leaves: its estimate kept (a
+            for (int k = 0; k < STREAM_KF_X; ++k) {  // batch step starts from it; a walk rewrites it)
 #pragma HLS PIPELINE II=1
-            X_KEPT[(first - 1) * STREAM_KF_X + k] = X[SLOT_X[k]];
+                X_KEPT[(first - 1) * STREAM_KF_X + k] = X[SLOT_X[k]];
+            }
+            FGC_CYCLES("top", 0, "leave", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
         }
-        FGC_CYCLES("top", 0, "leave", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    }
 #endif
-    if (j >= STREAM_SLOTS) stream_shift<CFG>();
-    stream_in<CFG>(m, x_in, data);
+        if (j >= STREAM_SLOTS) stream_shift<CFG>();
+        stream_in<CFG>(m, x_in, data);
     }
     int marginal = 0;  // 0: none left, 1: tau written, 2: singular (not written)
 #ifdef FGC_STREAM_BATCH
