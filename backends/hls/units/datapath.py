@@ -26,13 +26,14 @@ from fgc_backends.hls.units.special_ops import issued_counts, printed_counts
 
 def cost_in_linearization(program) -> bool:
     """Whether the linearisation gives LM its cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE,
-    no separate cost pass before the first linearisation): QR's gradient pass forms every
-    column of [A | b]ᵀ b, the right-hand side's own column among them, so ‖b‖² of an instance
-    is one more column out of the scatter, and half their sum is the cost, 1/2 Σ ‖W r‖², when
-    no member has a robust loss (its rows are reweighted, its cost ρ(·) is not their square).
-    Cholesky's HGC and a robust member keep the cost pass at X."""
-    return program.solver.linear == "qr" and not any(
-        m.robust for b in program.blocks for m in b.members)
+    no separate cost pass before the first linearisation), half the sum over the instances of
+    ‖b‖² = ‖W r‖², when no member has a robust loss (its rows are reweighted, its cost ρ(·) is
+    not their square; a robust member keeps the cost pass at X). QR: the gradient pass forms
+    every column of [A | b]ᵀ b, the right-hand side's own among them, one more column out of
+    the scatter. Cholesky: each instance's Gram holds bᵀb, its last diagonal entry, which the
+    HGC's gradient adder (bᵀA into G) adds into a running sum in its own iteration: no cycle
+    more."""
+    return not any(m.robust for b in program.blocks for m in b.members)
 
 
 def gradient_loops(program, timing: dict) -> list[Process]:
@@ -48,7 +49,7 @@ def gradient_loops(program, timing: dict) -> list[Process]:
     cost's sum (one iteration more)."""
     la = timing["acc"][0]  # T_PARTIALS: the adder's latency
     n_t = sum(v.dim for v in program.variables)
-    bb = int(cost_in_linearization(program))
+    bb = int(program.solver.linear == "qr" and cost_in_linearization(program))
     procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", _ported(n_t), "fill",
                                                                 timing),))]
     for i, b in enumerate(program.blocks):
