@@ -38,6 +38,7 @@ def counted(stream: OnChipFixedLagStream) -> list[tuple[int, dict]]:
     its last :meth:`run` wrote)."""
     folder, name = stream.project.directory, stream.project.name
     stream.phases = []  # per keyframe: csim cycles per plan phase
+    stream.estimates = []  # per keyframe (incremental): the kept estimates asked for (op 3)
     kernels = sorted(p.name for p in folder.glob("*.cpp") if not p.name.startswith("tb_"))
     subprocess.run(["g++", "-std=c++17", "-O1", "-DFGC_COUNT_CYCLES", "-Wno-unknown-pragmas",
                     "-I", "csim_include", "-I", "include", f"tb_{name}.cpp", *kernels,
@@ -52,6 +53,10 @@ def counted(stream: OnChipFixedLagStream) -> list[tuple[int, dict]]:
             stream.phases.append({k[6:]: v for k, v in events.items() if k.startswith("phase:")})
             events = {k: v for k, v in events.items() if not k.startswith("phase:")}
             rows.append((int(m.group(2)), events))
+        m = re.match(r"^estimates (\d+) (\d+)(.*)$", line)
+        if m:
+            events = {k: int(v) for k, v in re.findall(r"(\S+)=(\d+)", m.group(3))}
+            stream.estimates.append((int(m.group(2)), events))
     return rows
 
 
@@ -85,6 +90,11 @@ def measure(keyframes: int, window: int, scalar: str, incremental: int | None = 
             ev["solve"] = ev.get("solve", 0) - 1  # the batch store's elimination, in its term
         price = model.price(record["keyframe"], record["iterations"], ev, record["status"])
         rows.append((record, cycles, price))
+    # the kept keyframes' estimates, asked for after every update (op 3, not the update's)
+    stream.estimate_rows = [(cycles, model.price_estimates(record["keyframe"], events))
+                            for record, (cycles, events) in zip(result.updates, stream.estimates,
+                                                               strict=True)
+                            ] if stream.estimates else []
     return graph, program, data, result, rows, stream
 
 
@@ -102,7 +112,7 @@ def main() -> None:
                     help="ISAM2's update policy: one Gauss-Newton step per update (default: LM "
                          "to convergence)")
     args = ap.parse_args()
-    graph, program, data, result, rows, _ = measure(args.keyframes, args.window, args.scalar,
+    graph, program, data, result, rows, stream = measure(args.keyframes, args.window, args.scalar,
                                                     args.incremental, args.batch_every,
                                                     args.one_step)
     mode = (f"incremental K = {args.incremental}" + (
@@ -122,6 +132,13 @@ def main() -> None:
     lat = [p.latency_ms for _, _, p in rows]
     print(f"csim/model {min(ratios):.3f} … {max(ratios):.3f}; update latency median "
           f"{np.median(lat):.3f} ms, p99 {np.percentile(lat, 99):.3f} ms (model estimate)")
+    if stream.estimate_rows:
+        print("the kept keyframes' estimates asked for after each update (op 3: the walk if the "
+              "update left them stale, the words out; not part of the update):")
+        print(f"{'keyframe':>8} {'csim cycles':>12} {'model cycles':>12} {'csim/model':>10}")
+        for (record, _, _), (cycles, price) in zip(rows, stream.estimate_rows, strict=True):
+            print(f"{record['keyframe']:>8} {cycles:>12,} {price.cycles:>12,} "
+                  f"{cycles / price.cycles:>10.3f}")
     native = (IncrementalStream(graph, program) if args.incremental
               else FixedLagStream(graph, program, args.window)).run(data)
     worst = 0.0

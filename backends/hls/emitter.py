@@ -218,6 +218,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         jacobian_ii,
     )
     from fgc_backends.hls.units.datapath import (
+        cost_in_linearization,
         factor_allocation,
         small_allocation,
         small_blocks,
@@ -342,6 +343,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "retire": retire, "trial": trial, "trial_spans": trial_spans,
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
+            # the gradient pass gives LM the cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE)
+            "cost_in_lin": cost_in_linearization(program),
             "small": shared,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's schedule: (solve step, load step, solving lane) per slot

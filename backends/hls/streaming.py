@@ -295,19 +295,23 @@ class OnChipFixedLagStream:
         _working_copy(self, scalar, out_dir,
                       f"window{window}_onchip{'_kept' if self.kept else ''}", self.layout)
 
-    def run(self, data: ProblemData, progress=None):
+    def run(self, data: ProblemData, progress=None, estimates_at_end: bool = False):
         """Stream ``data``'s keyframes through the C simulation; a
         :class:`~fgc_backends.cfamily.stream.StreamResult` with the fixed-lag records
         (``seconds``: NaN — a C simulation's wall time is not the accelerator's; its latency is
-        the update model's)."""
+        the update model's). Incremental: the kept keyframes' estimates are asked for after
+        every update (``stream_call`` op 3, not part of the update), or with
+        ``estimates_at_end`` after the last one only (the records before it then hold the kept
+        keyframes as last returned)."""
         stream = StreamState(self.program)
         estimate = stream._start(data)
         folder = self.project.directory
         count = write_stream_inputs(self.layout, estimate, folder)
         exe = f"tb_{self.project.name}"
         build.run_command(self.project, ["make", "-s", exe], f"make {exe}")
-        build.run_command(self.project, [f"./{exe}", "--stream", build.DATA_FILE, STREAM_FILE,
-                                         STREAM_RESULT_FILE], f"{exe} --stream")
+        mode = "--stream-estimates-at-end" if estimates_at_end and self.kept else "--stream"
+        build.run_command(self.project, [f"./{exe}", mode, build.DATA_FILE, STREAM_FILE,
+                                         STREAM_RESULT_FILE], f"{exe} {mode}")
         if not self._built:
             _keep_build(self.project, self._cached.directory)
             self._built = True
@@ -329,7 +333,7 @@ class OnChipFixedLagStream:
             if j == 0:
                 initial_error = head["INITIAL_ERROR"]
             lay.store(estimate, x_out, first, j)
-            if self.kept:  # the kept keyframes 0 … first − 1 as the walk left them
+            if self.kept and x_kept is not None:  # the kept keyframes 0 … first − 1, walked
                 if x_kept.size != first * kf:
                     raise OnChipWindowError(f"keyframe {j}: the accelerator returned "
                                             f"{x_kept.size // kf} kept keyframes, expected {first}")
@@ -357,8 +361,9 @@ class OnChipIncrementalStream(OnChipFixedLagStream):
     """The incremental plan on the accelerator itself: the on-chip window of the newest K
     keyframes (W = K − 1 in :class:`OnChipFixedLagStream`'s terms) plus the kept Bayes net in the
     design's memories — each keyframe that leaves is kept as its conditional from the QR unit,
-    the newest kept one re-expressed at its parent's new estimate and every kept keyframe walked
-    back each update (accel.cpp.jinja's ``reexpress``, ``keep``, ``kept_walk``). Plans with
+    the newest kept one re-expressed at its parent's new estimate each update, and every kept
+    keyframe walked back when their estimates are asked for or a batch step starts from them
+    (fgc_stream.h's ``reexpress``, ``keep``, ``kept_walk``). Plans with
     batch steps are refused: a batch step re-solves the whole chain, which the K-keyframe design
     does not hold (:class:`~fgc_backends.hls.window.OnChipWindowError`; the host-kept C
     simulation, :func:`incremental_stream`, runs them)."""
@@ -592,8 +597,11 @@ def _read_stream_result(path: Path, count: int, n_x: int, kept: bool = False):
         held = np.zeros(0)
         if kept:
             k = lines[3 + per * j].split()
-            if k[:1] != ["KEPT"] or len(k) != int(k[1]) + 2:
+            if k == ["KEPT", "-1"]:  # not asked for after this update
+                held = None
+            elif k[:1] != ["KEPT"] or len(k) != int(k[1]) + 2:
                 raise DataError(f"{path}:{4 + per * j}: expected 'KEPT <count> <numbers>'")
-            held = np.array([float(v) for v in k[2:]])
+            else:
+                held = np.array([float(v) for v in k[2:]])
         out.append((head, np.array([float(v) for v in x[2:]]), held))
     return out

@@ -49,9 +49,12 @@ def test_every_stream_figure_is_plan_cost_of_a_phase_of_the_design(paper_a_n7):
     # the design's resources are its kernels' and memories', whatever phases it runs
     assert plan_cost(design).dsp == model.resources()["dsp"]
     price = model.price(5, 2)  # the window holds keyframes 3 … 5: three kept below it
-    assert price.term("kept_walk").each == (model.stream["stream_kept_walk_base"]
-                                            + 3 * model.stream["stream_kept_walk_each"])
     assert price.term("x_out").each == model.stream["stream_x_out"]
+    # their estimates, asked for after the update (op 3): walked from slot 0, then out
+    asked = model.price_estimates(5)
+    assert asked.term("kept_walk").each == (model.stream["stream_kept_walk_base"]
+                                            + 3 * model.stream["stream_kept_walk_each"])
+    assert asked.term("x_kept_out").each == 3 * model.layout.kf_words + 1
 
 
 def test_the_slots_a_batch_step_does_not_reach_cost_only_their_own_rows(paper_a_n7):
@@ -81,12 +84,34 @@ def test_the_slots_a_batch_step_does_not_reach_cost_only_their_own_rows(paper_a_
 def test_the_marginal_and_the_kept_net_cost_the_longer_of_the_two(paper_a_n7):
     _, model = paper_a_n7
     price = model.price(5, 2)  # a keyframe leaves (the marginal) and three are kept below
-    side = {"marginal", "kept_reexpress", "kept_walk", "overlap"}
+    side = {"marginal", "kept_reexpress", "overlap"}
     rest = sum(t.cycles for t in price.terms if t.name not in side)
     marginal = price.term("marginal").cycles
-    kept = price.term("kept_reexpress").cycles + price.term("kept_walk").cycles
+    kept = price.term("kept_reexpress").cycles
     assert marginal > 0 and kept > 0
     assert price.cycles == rest + max(marginal, kept)
+
+
+def test_the_kept_walk_is_off_the_updates_path(paper_a_n7):
+    """An update re-expresses the newest kept conditional and walks nothing: its price does not
+    grow with the kept keyframes (ISAM2's update does not compute the estimates either). The
+    walk is priced where it runs: when the estimates are asked for after an incremental update
+    (op 3; after a batch step they are its optimum, nothing to walk), and at a batch step that
+    starts from estimates the update before left stale (the leaving keyframe's estimate its
+    first parent: one conditional fewer than the update before walked from slot 0)."""
+    _, model = paper_a_n7
+    five, six = model.price(5, 1), model.price(6, 1)  # three and four kept keyframes
+    assert "kept_walk" not in {t.name for t in five.terms} | {t.name for t in six.terms}
+    assert five.cycles == six.cycles
+    each, base = model.stream["stream_kept_walk_each"], model.stream["stream_kept_walk_base"]
+    assert model.price_estimates(6).term("kept_walk").each == base + 4 * each
+    assert model.stale_after(3) and not model.stale_after(4)  # 4: the batch step
+    assert "kept_walk" not in {t.name for t in model.price_estimates(4).terms}
+    batch = model.price(4, 1)  # keyframe 3 left keyframe 0 stale: walked from keyframe 1
+    assert batch.term("kept_walk").each == base + 1 * each
+    # counted: the kept_walk event says whether it ran (the estimates asked for after 3)
+    ev = model.events_of(1)
+    assert "kept_walk" not in {t.name for t in model.price(4, 1, {**ev, "kept_walk": 0}).terms}
 
 
 def test_the_marginal_reuses_the_rows_of_lms_last_linearisation(paper_a_n7):
@@ -280,15 +305,24 @@ def test_lm_to_convergence_keeps_its_store(paper_a_n7):
     assert "batch_store" in {t.name for t in model.price(4, 3, ev).terms}
 
 
-def test_the_cost_at_x_is_priced_once_per_update(paper_a_n7):
-    """LM's start costs the window at X once per call (the plan's per-call ``factor_cost`` phase,
-    the ``cost`` event): the update prices it, the window's and a batch step's (left out, the
-    counting C simulation's keyframe 0 of LIO N = 8 counted 1.451 x the model)."""
+def test_the_cost_at_x_comes_from_the_first_linearisation(paper_a_n7):
+    """LM's start needs the window's cost at X; the QR design's first linearisation gives it
+    (the gradient pass's scatter takes the right-hand side's column too: ‖b‖² of each instance,
+    one iteration more; fgc_lm.h's FGC_LM_COST_IN_LINEARIZE), so no cost pass at X runs: the
+    plan's per-call ``factor_cost`` phase costs nothing, the update prices no ``cost_x`` (nor a
+    batch step ``batch_cost_x``), and the gradient pass prices the extra column per instance."""
+    from fgc_backends.hls.units.datapath import cost_in_linearization
+
     _, model = paper_a_n7
-    cost = sum(phase_cycles(ph) for ph in model.plan.phases if ph.name == "factor_cost")
-    assert cost > 0
-    term = model.price(5, 2).term("cost_x")
-    assert (term.each, term.times) == (cost, 1)
-    bcost = sum(phase_cycles(ph) for ph in model.batch["plan"].phases
-                if ph.name == "factor_cost")
-    assert model.price(4, 2).term("batch_cost_x").each == bcost
+    for plan, program in ((model.plan, model.layout.template),
+                          (model.batch["plan"], model.layout.batch.template)):
+        assert cost_in_linearization(program)
+        assert sum(phase_cycles(ph) for ph in plan.phases if ph.name == "factor_cost") == 0
+        (grad,) = [ph for ph in plan.phases if ph.name == "gradient"]
+        scatter = {p.name: p.loops[-1] for p in grad.processes if p.name.startswith("reduce_")}
+        for i, b in enumerate(program.blocks):
+            assert (scatter[f"reduce_{i}"].name, scatter[f"reduce_{i}"].trip) == \
+                ("scatter", sum(len(blk[0]) for blk in b.structure if blk) + 1)
+    assert model.cost_x == 0 and model.batch["cost_x"] == 0
+    assert "cost_x" not in {t.name for t in model.price(5, 2).terms}
+    assert "batch_cost_x" not in {t.name for t in model.price(4, 2).terms}

@@ -23,7 +23,13 @@
 //   singular), step_test(solved, mu, out) (false: not solved or delta not finite; out = {|delta|^2,
 //   predicted decrease}), retract_trial() (X_TRIAL = X (+) DELTA), cost_trial() (the cost at
 //   X_TRIAL), noise_x() (the cost's rounding noise at X), accept_trial() (X = X_TRIAL),
-//   accepted(it, cost, mu, change) (after each accepted step: the native host's progress).
+//   accepted(it, cost, mu, change) (after each accepted step: the native host's progress);
+//   with FGC_LM_COST_IN_LINEARIZE defined, linearized_cost() (the cost at the point
+//   linearize_x last linearised at) instead of cost_x().
+// FGC_LM_COST_IN_LINEARIZE (the HLS QR kernel without robust losses): the linearisation forms
+// 1/2 |b|^2 of its whitened rows anyway (its gradient pass), so the first linearisation gives
+// the cost at X and no cost pass runs before it; the same outcome (a non-finite cost at X
+// fails the solve with REASON_NON_FINITE and no iteration) one pass sooner.
 // The reductions live in the hooks: the HLS kernel's run in interleaved partial sums at II 1
 // (fgc_lm_units.h) and count cycles, the native solver's are plain loops.
 //
@@ -100,17 +106,34 @@ template <class CFG>
 void optimize_inline(typename CFG::T errors[2], int info[3]) {
 #pragma HLS INLINE
     typedef typename CFG::T T;
-    T cost = CFG::cost_x();
-    errors[0] = cost;
     T mu[1] = {CFG::lambda_initial()};
     int it = 0, status = CFG::STATUS_MAX_ITERATIONS, reason = CFG::REASON_MAX_ITERATIONS;
+#ifdef FGC_LM_COST_IN_LINEARIZE
+    T cost = T(0);  // the first linearisation's
+    errors[0] = cost;
+#else
+    T cost = CFG::cost_x();
+    errors[0] = cost;
     if (!CFG::finite(cost)) {
         status = CFG::STATUS_FAILED;
         reason = CFG::REASON_NON_FINITE;
     }
+#endif
     for (int k = 0; k < CFG::MAX_ITERATIONS; ++k) {
         if (status != CFG::STATUS_MAX_ITERATIONS) break;
-        if (!CFG::linearize_x(mu[0])) {
+        const bool linearized = CFG::linearize_x(mu[0]);
+#ifdef FGC_LM_COST_IN_LINEARIZE
+        if (k == 0) {  // the cost at X, from the linearisation at X
+            cost = CFG::linearized_cost();
+            errors[0] = cost;
+            if (!CFG::finite(cost)) {
+                status = CFG::STATUS_FAILED;
+                reason = CFG::REASON_NON_FINITE;
+                break;
+            }
+        }
+#endif
+        if (!linearized) {
             status = CFG::STATUS_FAILED;
             reason = CFG::REASON_NON_FINITE;
             break;

@@ -9,7 +9,10 @@
 //                        conditionals, re-expressed, stored and walked back from the window
 //                        (kept_matvec<CFG>, kept_conditional<CFG> inside); with the marginal,
 //                        marginal_and_kept<CFG>: the marginal and the kept net's re-expression
-//                        and walk side by side (one DATAFLOW region, two processes)
+//                        side by side (one DATAFLOW region, two processes). The walk, which
+//                        gives the kept keyframes' estimates, is off the update's path: it runs
+//                        in the same kept process when the host asks for them (op 3) or a batch
+//                        step starts from them, and only if an update left them stale
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
 //   FGC_STREAM_SWEEP     (instead, the one-step policy) a batch step as a sweep through the window:
@@ -87,8 +90,8 @@ int STREAM_COUNT = 0;  // keyframes since the reset call (saturates at STREAM_SL
 #ifdef FGC_STREAM_KEPT
 // the kept Bayes net (incremental mode): keyframe c < first (the window's oldest) is kept as its
 // conditional R_c d_c + S_c d_c+1 = d_c, linearised at KEPT_LIN[c] with its parent at
-// KEPT_NEXT[c], its estimate in X_KEPT[c]; every update walks them back from the window,
-// x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
+// KEPT_NEXT[c], its estimate in X_KEPT[c], walked back from the window when asked for (op 3) or
+// before a batch step, x_c = lin_c (+) R_c^-1 (d_c - S_c Log(next_c^-1 x_c+1)).
 L KEPT_R[KEPT_MAX * STREAM_KF_T * STREAM_KF_T];  // R_c, row-major (upper triangular)
 L KEPT_S[KEPT_MAX * STREAM_KF_T * STREAM_KF_T];  // S_c, row-major
 L KEPT_D[KEPT_MAX * STREAM_KF_T];
@@ -96,6 +99,9 @@ T KEPT_LIN[KEPT_MAX * STREAM_KF_X];
 T KEPT_NEXT[KEPT_MAX * STREAM_KF_X];
 T X_KEPT[KEPT_MAX * STREAM_KF_X];
 int STREAM_TOTAL = 0;  // keyframes since the reset call
+// X_KEPT is not the walk of the kept net as it stands: an incremental update re-expressed the
+// newest kept conditional (and kept another) without walking (op 3 or a batch step walks)
+bool KEPT_STALE = false;
 #endif
 #ifdef FGC_STREAM_SWEEP
 // batch steps as sweeps through the window (one set of units): keyframes 0 … SWEEP_SLOTS - 1 as
@@ -564,8 +570,10 @@ void marginal_task(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X
 #endif
 }
 
+// The kept net's process: conditional `reexp` (-1: none) re-expressed at x0, then (walk > 0) the
+// walk back through the kept conditionals walk - 1 … 0 from x0 (their estimates into X_KEPT).
 template <class CFG>
-void kept_task(int first, bool reexpress_first, const T x0[STREAM_KF_X]) {
+void kept_task(int reexp, int walk, const T x0[STREAM_KF_X]) {
     // reexpress's passes and the walk's (both INLINE here) run one after another: one Log
     // datapath, one retraction datapath and one matrix-vector product for all of them
 #pragma HLS ALLOCATION function instances=keyframe_local limit=1
@@ -573,21 +581,24 @@ void kept_task(int first, bool reexpress_first, const T x0[STREAM_KF_X]) {
 #pragma HLS ALLOCATION function instances=kept_matvec<CFG> limit=1
     FGC_TASK();
 #ifdef FGC_STREAM_KEPT
-    if (first > 0 && reexpress_first) reexpress<CFG>(first - 1, x0);
-    kept_walk<CFG>(first, x0);
+    if (reexp >= 0) reexpress<CFG>(reexp, x0);
+    if (walk > 0) {
+        FGC_EVENT("kept_walk");
+        kept_walk<CFG>(walk, x0);
+    }
 #else
-    (void)first;
-    (void)reexpress_first;
+    (void)reexp;
+    (void)walk;
     (void)x0;
 #endif
 }
 
 template <class CFG>
-void marginal_and_kept(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X], int first,
-                       bool reexpress_first, const T x0[STREAM_KF_X], int code[1]) {
+void marginal_and_kept(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X], int reexp,
+                       int walk, const T x0[STREAM_KF_X], int code[1]) {
 #pragma HLS DATAFLOW
     marginal_task<CFG>(m, finite, reuse, lin01, code);
-    kept_task<CFG>(first, reexpress_first, x0);
+    kept_task<CFG>(reexp, walk, x0);
 }
 #endif  // FGC_STREAM_WINDOW
 
@@ -601,8 +612,12 @@ void marginal_and_kept(int m, bool finite, bool reuse, const T lin01[2 * STREAM_
 // factor's words); op 2 (batch steps) resets the batch kernel the same way; op 1 brings the next
 // keyframe (x_in: its storage, data: its words, then the batch kernel's) and runs the update:
 // the shift once the window is full, LM on the window (or the batch step), the kept conditional's
-// re-expression, the marginal tau, the new kept conditional, the walk back, the window out.
+// re-expression, the marginal tau, the new kept conditional, the window out (x_out).
 // errors = {initial, final} of the solve, info = {iterations, status, reason, slot, marginal}.
+// op 3 (incremental) asks for the kept keyframes' estimates: walked back from slot 0 if an update
+// left them stale, out in x_kept (keyframes 0 … first - 1); nothing else moves. An update does
+// not walk (ISAM2's update does not compute its estimates either): a batch step walks them
+// first if they are stale, as it starts from them; the estimates are the same whenever walked.
 template <class CFG>
 void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA], T x_out[N_X]
                  FGC_STREAM_KEPT_ARG, T errors[2], int info[5]) {
@@ -628,6 +643,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         STREAM_COUNT = 0;
 #ifdef FGC_STREAM_KEPT
         STREAM_TOTAL = 0;
+        KEPT_STALE = false;
 #endif
         errors[0] = T(0);
         errors[1] = T(0);
@@ -643,110 +659,151 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         return;
     }
 #endif
+    const bool update = op == 1;  // else op 3: the kept keyframes' estimates
     const int j = STREAM_COUNT;
     const int m = j < STREAM_SLOTS - 1 ? j : STREAM_SLOTS - 1;  // the keyframe's slot
 #ifdef FGC_STREAM_KEPT
-    const int total = STREAM_TOTAL;  // this keyframe's index
+    // this keyframe's index (op 3: the last update's)
+    const int total = update ? STREAM_TOTAL : STREAM_TOTAL - 1;
     const int first = total < STREAM_W ? 0 : total - STREAM_W;  // the window's oldest
-#if defined(FGC_STREAM_BATCH) || defined(FGC_STREAM_SWEEP)
-    if (j >= STREAM_SLOTS) {  // slot 0 (keyframe first - 1) leaves: its estimate kept (a batch
-        for (int k = 0; k < STREAM_KF_X; ++k) {  // step starts from it; the walk rewrites it)
+#else
+    if (!update) return;
+#endif
+#if defined(FGC_STREAM_KEPT) && (defined(FGC_STREAM_BATCH) || defined(FGC_STREAM_SWEEP))
+    if (update && j >= STREAM_SLOTS) {  // slot 0 (keyframe first - 1) leaves: its estimate kept
+        for (int k = 0; k < STREAM_KF_X; ++k) {  // (a batch step starts from it; a walk rewrites it)
 #pragma HLS PIPELINE II=1
             X_KEPT[(first - 1) * STREAM_KF_X + k] = X[SLOT_X[k]];
         }
         FGC_CYCLES("top", 0, "leave", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     }
 #endif
-#endif
 #ifdef FGC_STREAM_SWEEP
     // a batch step is a sweep through the window: keyframes 0 … total come in again one a pass,
     // at their estimates (sweep_gather), and once the window is full each pass's slot 0 leaves
     // as after an update, its step at mu = 0 kept and its tau written (no solve); the last pass
     // is the update of keyframe total, its window's oldest prior the sweep's tau, its kept net
-    // the sweep's conditionals (walked back, not re-expressed: they hold the sweep's points)
-    sweep_store<CFG>(total, m, x_in, data);
-    const bool sweep = IS_BATCH[total] != 0;
-    if (sweep) sweep_gather<CFG>(total, j >= STREAM_SLOTS ? first - 1 : 0, first);
+    // the sweep's conditionals (not re-expressed: they hold the sweep's points; walked when the
+    // estimates are asked for, as after any update)
+    bool sweep = false;
+    if (update) {
+        sweep_store<CFG>(total, m, x_in, data);
+        sweep = IS_BATCH[total] != 0;
+    }
     const int passes = sweep ? total + 1 : 1;
     bool sweep_singular = false;
 #else
     const bool sweep = false;
     const int passes = 1;
 #endif
+#ifdef FGC_STREAM_BATCH
+    const bool batch = update && IS_BATCH[total];  // a step of the batch kernel
+#else
+    const bool batch = false;
+#endif
+#ifdef FGC_STREAM_KEPT
+    // a batch step starts from the kept estimates: pass -1 (the kept process alone) walks them
+    // back from the leaving keyframe's estimate first if an update left them stale (the batch
+    // kernel's step runs it whatever: its one call site of the region)
+    const int p0 = batch || (sweep && KEPT_STALE) ? -1 : 0;
+#else
+    const int p0 = 0;
+    (void)sweep;
+    (void)batch;
+#endif
     int marginal = 0;  // 0: none left, 1: tau written, 2: singular (not written)
-    for (int p = 0; p < passes; ++p) {
+    for (int p = p0; p < passes; ++p) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PASSES
+        const bool solve = update && p >= 0;  // else pass -1 or op 3: the kept process alone
         const bool last = p == passes - 1;
 #ifdef FGC_STREAM_KEPT
         const int c = total - passes + 1 + p;  // the pass's keyframe
 #endif
-#ifdef FGC_STREAM_SWEEP
-        const int jc = c < STREAM_SLOTS ? c : STREAM_SLOTS;  // keyframes in the window before it
-        const int row = c < SWEEP_SLOTS ? c : SWEEP_SLOTS;
-#else
-        const int jc = j;
-#endif
-        const int mc = jc < STREAM_SLOTS - 1 ? jc : STREAM_SLOTS - 1;  // the pass's slot
-        if (jc >= STREAM_SLOTS) stream_shift<CFG>();
-#ifdef FGC_STREAM_SWEEP
-        stream_in<CFG>(mc, SWEEP_X + row * STREAM_KF_X, SWEEP_WORDS + row * SWEEP_MAX_NEW);
-#else
-        stream_in<CFG>(mc, x_in, data);
-#endif
-#ifdef FGC_STREAM_BATCH
-        // keyframe total's words for the batch kernel follow the window's
-        if (total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
-        if (IS_BATCH[total]) {
-            marginal = batch_step<CFG>(total, first, errors, info);
-            continue;
-        }
-#endif
-        if (!last && mc != STREAM_W) continue;  // a sweep pass while the window fills
         // slots 0 and 1 where the update linearises them: under the one-step policy a leaving
         // keyframe's conditional and tau are kept there once the step is taken (copied whatever
         // the policy, a word a cycle)
         T lin01[2 * STREAM_KF_X];
-        FGC_PHASE("marginal");
-        for (int k = 0; k < 2 * STREAM_KF_X; ++k) {
-#pragma HLS PIPELINE II=1
-            lin01[k] = X[SLOT_X[k]];
-        }
-        FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
         bool reuse = false;  // the one-step update took its step: its solve's factorisation is the store
         bool finite = true;  // false: the window is not finite where slot 0 leaves
-        if (last) {
-            CFG::lm_solve(errors, info);
-            reuse = mc == STREAM_W && CFG::took_step(info);
-            // the window's rows at its optimum for a leaving keyframe's marginal: AB holds them
-            // if LM stopped where it last linearised (CFG::at_linearisation), else computed
-            // again here, before the marginal's region, by LM's own linearisation instance
-#ifdef FGC_STREAM_MARGINAL
-            if (mc == STREAM_W && !reuse && !CFG::at_linearisation(info)) {
-                FGC_EVENT("relinearize");
-                finite = CFG::linearize();
+        int mc = -1;  // the pass's slot (-1: no marginal)
+        if (solve) {
+#ifdef FGC_STREAM_SWEEP
+            if (sweep && p == 0) sweep_gather<CFG>(total, j >= STREAM_SLOTS ? first - 1 : 0, first);
+            const int jc = c < STREAM_SLOTS ? c : STREAM_SLOTS;  // keyframes in the window before it
+            const int row = c < SWEEP_SLOTS ? c : SWEEP_SLOTS;
+#else
+            const int jc = j;
+#endif
+            const int ms = jc < STREAM_SLOTS - 1 ? jc : STREAM_SLOTS - 1;  // the pass's slot
+            if (jc >= STREAM_SLOTS) stream_shift<CFG>();
+#ifdef FGC_STREAM_SWEEP
+            stream_in<CFG>(ms, SWEEP_X + row * STREAM_KF_X, SWEEP_WORDS + row * SWEEP_MAX_NEW);
+#else
+            stream_in<CFG>(ms, x_in, data);
+#endif
+#ifdef FGC_STREAM_BATCH
+            // keyframe total's words for the batch kernel follow the window's
+            if (total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
+            if (batch) {
+                marginal = batch_step<CFG>(total, first, errors, info);
+                continue;
             }
 #endif
-        } else {
-            // a sweep pass, window full: slot 0 leaves at the estimates (the window linearised
-            // there by LM's instance, its step at mu = 0 by the marginal's)
-            FGC_EVENT("sweep");
-            finite = CFG::linearize();
+            if (!last && ms != STREAM_W) continue;  // a sweep pass while the window fills
+            FGC_PHASE("marginal");
+            for (int k = 0; k < 2 * STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+                lin01[k] = X[SLOT_X[k]];
+            }
+            FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+            if (last) {
+                CFG::lm_solve(errors, info);
+                reuse = ms == STREAM_W && CFG::took_step(info);
+                // the window's rows at its optimum for a leaving keyframe's marginal: AB holds
+                // them if LM stopped where it last linearised (CFG::at_linearisation), else
+                // computed again here, before the marginal's region, by LM's own linearisation
+                // instance
+#ifdef FGC_STREAM_MARGINAL
+                if (ms == STREAM_W && !reuse && !CFG::at_linearisation(info)) {
+                    FGC_EVENT("relinearize");
+                    finite = CFG::linearize();
+                }
+#endif
+            } else {
+                // a sweep pass, window full: slot 0 leaves at the estimates (the window
+                // linearised there by LM's instance, its step at mu = 0 by the marginal's)
+                FGC_EVENT("sweep");
+                finite = CFG::linearize();
+            }
+            mc = ms;
         }
-        T x0[STREAM_KF_X];  // slot 0's estimate: the kept net's parent
+        // the kept net's process (one call site of the region for every op and pass): an
+        // update re-expresses the newest kept conditional at slot 0's estimate (not a sweep's
+        // last pass: its conditionals hold the sweep's points); op 3 walks back from slot 0,
+        // pass -1 from the leaving keyframe's estimate (the walk the updates before did not
+        // run), each only if the estimates are stale; a sweep's other passes run it empty
+        T x0[STREAM_KF_X];  // the kept net's parent: slot 0's estimate (pass -1: keyframe first - 1's)
 #ifdef FGC_STREAM_KEPT
         FGC_PHASE("kept");
+        const bool from_kept = p < 0 && first > 0;
+        const int parent = from_kept ? (first - 1) * STREAM_KF_X : 0;
         for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-            x0[k] = X[SLOT_X[k]];
+            x0[k] = from_kept ? X_KEPT[parent + k] : X[SLOT_X[k]];
         }
         FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-        const int kept_first = last ? first : 0;  // a sweep pass walks nothing
+        const int reexp = solve && last && !sweep ? first - 1 : -1;
+        const int walk = !KEPT_STALE ? 0 : p < 0 ? first - 1 : update ? 0 : first;
 #else
-        const int kept_first = 0;
+        const int reexp = -1, walk = 0;
 #endif
         int code[1] = {0};
-        marginal_and_kept<CFG>(mc, finite, reuse, lin01, kept_first, !sweep, x0, code);
+        marginal_and_kept<CFG>(mc, finite, reuse, lin01, reexp, walk, x0, code);
         FGC_TASKS_JOIN();
+#ifdef FGC_STREAM_KEPT
+        if (walk > 0) KEPT_STALE = false;
+#endif
+        if (!solve) continue;
         marginal = code[0];
 #ifdef FGC_STREAM_SWEEP
         if (!last && marginal != 1) sweep_singular = true;
@@ -755,17 +812,26 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         if (mc == STREAM_W && marginal == 1) keep<CFG>(c - STREAM_W, reuse, lin01);
 #endif
     }
+    if (!update) {  // op 3: the kept keyframes' estimates out
+#ifdef FGC_STREAM_KEPT
+        FGC_PHASE("setup");
+        for (int i = 0; i < first * STREAM_KF_X; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KEPT_WORDS
+#pragma HLS PIPELINE II=1
+            x_kept[i] = X_KEPT[i];
+        }
+        FGC_CYCLES("top", 0, "x_kept_out", first * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#endif
+        return;
+    }
 #ifdef FGC_STREAM_SWEEP
     if (sweep_singular) marginal = 2;
 #endif
 #ifdef FGC_STREAM_KEPT
-    FGC_PHASE("setup");
-    for (int i = 0; i < first * STREAM_KF_X; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=STREAM_KEPT_WORDS
-#pragma HLS PIPELINE II=1
-        x_kept[i] = X_KEPT[i];
-    }
-    FGC_CYCLES("top", 0, "x_kept_out", first * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    // an incremental update (a sweep's last pass too) leaves the kept estimates stale: the
+    // newest conditional re-expressed or the net rebuilt, not walked (the batch kernel's step
+    // leaves its optimum there)
+    KEPT_STALE = !batch && first > 0;
     STREAM_TOTAL = total + 1;
 #endif
     FGC_PHASE("setup");

@@ -558,12 +558,42 @@ class WindowUpdateModel:
             out["QR units"]["stream section (the marginal's copy)"] = marginal
         return out
 
-    def _kept_out_terms(self, keyframe: int) -> list:
-        first = max(0, keyframe - self.layout.window)
-        if not (self.layout.kept and first):
-            return []
-        return [Term("x_kept_out", first * self.layout.kf_words + 1, 1, False,
-                     "the kept keyframes' estimates out, a word a cycle")]
+    def stale_after(self, keyframe: int) -> bool:
+        """Whether the kept keyframes' estimates (X_KEPT) are stale after keyframe
+        ``keyframe``'s update: an incremental update with kept keyframes re-expressed the
+        newest kept conditional and walked nothing (fgc_stream.h's KEPT_STALE); a batch step
+        leaves its own optimum there."""
+        lay = self.layout
+        if not lay.kept or keyframe < 0:
+            return False
+        if self.batch is not None and keyframe in self.batch["layout"].keyframes:
+            return False
+        return keyframe - lay.window > 0
+
+    def _walk_term(self, first: int, parent: str) -> Term:
+        st = self.stream
+        return Term("kept_walk", st["stream_kept_walk_base"] + first * st["stream_kept_walk_each"],
+                    1, False, f"the walk back through {first} kept conditionals from {parent}: "
+                    "per keyframe a Log, S·Log, R⁻¹ by rows, a retraction")
+
+    def price_estimates(self, keyframe: int, events: dict | None = None) -> UpdatePrice:
+        """The price of asking for the kept keyframes' estimates after keyframe ``keyframe``'s
+        update (``stream_call`` op 3, not part of an update): slot 0's estimate copied out,
+        the walk back through the kept conditionals when they are stale (:meth:`stale_after`;
+        counted: the ``kept_walk`` event), the estimates out a word a cycle."""
+        lay, st = self.layout, self.stream
+        first = max(0, keyframe - lay.window) if keyframe >= 0 else 0
+        walk = (events.get("kept_walk", 0) if events is not None
+                else int(self.stale_after(keyframe)))
+        terms = [Term("kept_slot0", st["stream_kept_slot0"], 1, False,
+                      "slot 0's estimate copied out of X: the walk's first parent")]
+        if walk and first:
+            terms.append(self._walk_term(first, "slot 0"))
+        if first:
+            terms.append(Term("x_kept_out", first * lay.kf_words + 1, 1, False,
+                              "the kept keyframes' estimates out, a word a cycle"))
+        return UpdatePrice(keyframe, "estimates", first, 0, self.clock_mhz, tuple(terms),
+                           STREAM_SOURCE)
 
     def _sweep_terms(self, j: int) -> list:
         """A batch step at keyframe j as a sweep through the window (fgc_stream.h's
@@ -584,9 +614,8 @@ class WindowUpdateModel:
         if not steps:
             return terms
         linearize = self.group["factor_jacobian"] + self.group["gradient"]
-        base = st["stream_kept_walk_base"]
-        marginal = sum(max(st["stream_marginal"]
-                           + self.qr_cycles(self.zero_factors(c), False, leaf_only=True), base)
+        marginal = sum(st["stream_marginal"]
+                       + self.qr_cycles(self.zero_factors(c), False, leaf_only=True)
                        for c in steps)
         terms += [Term("sweep_linearize", linearize, len(steps), False,
                        "a sweep pass with the window full: the window linearised at the "
@@ -596,7 +625,7 @@ class WindowUpdateModel:
                   Term("sweep_marginal", marginal, 1, False,
                        f"keyframes 0 … {j - w - 1} leave: slot 0's QR step at μ = 0 on unit set "
                        "0, τ's signs, mean and words (the marginal's region, its kept task "
-                       "walking nothing)"),
+                       "empty)"),
                   Term("sweep_keep", st["stream_kept_store"], len(steps), False,
                        "each leaving keyframe's conditional and points kept")]
         return terms
@@ -690,6 +719,15 @@ class WindowUpdateModel:
                               "the keyframe's storage and words kept as they came (a sweep "
                               "brings them in again)"))
             if sweep:
+                # the sweep starts from the kept estimates: walked first (pass -1) when the
+                # update before left them stale (counted: the kept_walk event)
+                walk = (ev.get("kept_walk", 0) if events is not None
+                        else int(self.stale_after(keyframe - 1)))
+                if walk and first > 1:
+                    terms += [Term("kept_walk_parent", st["stream_kept_slot0"], 1, False,
+                                   "the leaving keyframe's estimate copied out of the kept "
+                                   "memory: the walk's first parent"),
+                              self._walk_term(first - 1, "the leaving keyframe")]
                 terms += self._sweep_terms(keyframe)
         batch = self.batch
         if batch is not None:
@@ -700,8 +738,18 @@ class WindowUpdateModel:
                 terms.append(Term("batch_in", st[f"stream_batch_in{keyframe}"], 1, False,
                                   "the keyframe's words into the batch kernel's slot"))
             if keyframe in batch["layout"].keyframes:
+                if lay.kept:
+                    # the batch kernel starts from the kept estimates: walked first when the
+                    # update before left them stale (counted: the kept_walk event)
+                    first = max(0, keyframe - lay.window)
+                    walk = (ev.get("kept_walk", 0) if events is not None
+                            else int(self.stale_after(keyframe - 1)))
+                    terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
+                                      "the leaving keyframe's estimate copied out of the kept "
+                                      "memory: the walk's first parent"))
+                    if walk and first > 1:
+                        terms.append(self._walk_term(first - 1, "the leaving keyframe"))
                 terms += self._batch_terms(keyframe, ev)
-                terms += self._kept_out_terms(keyframe)
                 terms.append(Term("x_out", st["stream_x_out"], 1, False,
                                   "the window's storage out"))
                 return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
@@ -748,29 +796,31 @@ class WindowUpdateModel:
         if lay.kept:
             terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
                               "slot 0's estimate copied out of X: the kept net's parent"))
-            kept = st["stream_kept_walk_base"] + first * st["stream_kept_walk_each"]
-            if first > 0 and not sweep:  # a sweep's conditionals hold its points: walked as kept
+            # the update re-expresses the newest kept conditional (not a sweep's last pass: its
+            # conditionals hold the sweep's points); the kept keyframes' estimates are walked
+            # when asked for (price_estimates) or by the next batch step
+            kept = 0
+            if first > 0 and not sweep:
                 kept += st["stream_kept_reexpress"]
                 terms.append(Term("kept_reexpress", st["stream_kept_reexpress"], 1, False,
                                   f"keyframe {first - 1}'s kept conditional re-expressed at "
                                   "its parent's new estimate: Log, its central-difference "
                                   "Jacobian (four datapath passes per direction of a "
                                   "non-vector variable), S·Log and S·J"))
-            terms.append(Term("kept_walk", st["stream_kept_walk_base"]
-                              + first * st["stream_kept_walk_each"], 1,
-                              False, f"the walk back through {first} kept conditionals: per "
-                                     "keyframe a Log, S·Log, R⁻¹ by rows, a retraction"))
+            if ev.get("kept_walk", 0) and not sweep:  # (an update walks nothing: counted)
+                term = self._walk_term(first, "slot 0")
+                kept += term.each
+                terms.append(term)
             if self.layout_marginal and min(marginal, kept):
                 # fgc_stream.h's marginal_and_kept: the two as processes of one DATAFLOW region
                 terms.append(Term("overlap", -min(marginal, kept), 1, False,
-                                  "the marginal and the kept net (re-expression and walk) run "
-                                  "side by side (one DATAFLOW region, no memory between them): "
-                                  "the shorter of the two is hidden behind the longer"))
+                                  "the marginal and the kept net's re-expression run side by "
+                                  "side (one DATAFLOW region, no memory between them): the "
+                                  "shorter of the two is hidden behind the longer"))
             if m == lay.window and self.layout_marginal:
                 terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
                                   f"keyframe {first}'s conditional (R | S | d) and its "
                                   "linearisation points kept"))
-            terms += self._kept_out_terms(keyframe)
         terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
         if sweep:
             return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,

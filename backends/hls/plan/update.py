@@ -409,7 +409,8 @@ class UpdateModel:
         p = self.program
         keys = {k for c in range(first, last + 1) for k in self.clusters[c]}
         return SimpleNamespace(variables=[v for v in p.variables if v.key in keys],
-                               blocks=p.blocks, factors=[p.factors[i] for i in instances])
+                               blocks=p.blocks, factors=[p.factors[i] for i in instances],
+                               solver=p.solver)
 
     def _retract(self, variables, name) -> Loop:
         return kernel_loop(name, variables, "retract", self.timing)

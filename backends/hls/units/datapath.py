@@ -9,7 +9,6 @@ import math
 from dataclasses import dataclass, replace
 
 from fgc.ir.codes import NOISE_CODES
-from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.cost.kernels import critical_path
 from fgc_backends.hls.plan.binding import BoundLoop, bound_unit, loop_ii
 from fgc_backends.hls.plan.loops import (
@@ -20,30 +19,47 @@ from fgc_backends.hls.plan.loops import (
     kernel_dot,
     kernel_loop,
 )
-from fgc_backends.hls.plan.model import Loop, Memory, Phase, Process, Unit
+from fgc_backends.hls.plan.model import PORTS, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
 from fgc_backends.hls.units.special_ops import issued_counts, printed_counts
 
 
+def cost_in_linearization(program) -> bool:
+    """Whether the linearisation gives LM its cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE,
+    no separate cost pass before the first linearisation), half the sum over the instances of
+    ‖b‖² = ‖W r‖², when no member has a robust loss (its rows are reweighted, its cost ρ(·) is
+    not their square; a robust member keeps the cost pass at X). QR: the gradient pass forms
+    every column of [A | b]ᵀ b, the right-hand side's own among them, one more column out of
+    the scatter. Cholesky: each instance's Gram holds bᵀb, its last diagonal entry, which the
+    HGC's gradient adder (bᵀA into G) adds into a running sum in its own iteration: no cycle
+    more."""
+    return not any(m.robust for b in program.blocks for m in b.members)
+
+
 def gradient_loops(program, timing: dict) -> list[Process]:
-    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance its rows loaded,
-    :data:`PORTS` words a cycle, the column map, A^T b TILE columns of a row a cycle into the
-    adder latency's interleaved partial sums (a dot product of m × padded / TILE terms,
-    :func:`kernel_dot`; the finiteness check rides along), the scatter into G at II 1), after
-    G is zeroed. The scatter folds each column's partial sums on the way (a
-    ⌈log₂ T_PARTIALS⌉-level tree in its depth)."""
+    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance the column map, its
+    rows' right-hand sides :data:`PORTS` a cycle, A^T b PORTS columns of a row a cycle straight
+    out of AB (its two ports) into the adder latency's interleaved partial sums (a dot product
+    of m × padded / PORTS terms, :func:`kernel_dot`; the finiteness check rides along), the
+    scatter into G at II 1), after G is zeroed. (The rows used to be copied out of AB into a
+    row buffer first, PORTS words a cycle, then multiplied TILE columns a cycle: the copy cost
+    as much as the products.) The scatter folds each column's partial sums on the way (a
+    ⌈log₂ T_PARTIALS⌉-level tree in its depth); with the cost in the linearisation
+    (:func:`cost_in_linearization`) it takes the right-hand side's column too, ‖b‖² into the
+    cost's sum (one iteration more)."""
     la = timing["acc"][0]  # T_PARTIALS: the adder's latency
     n_t = sum(v.dim for v in program.variables)
+    bb = int(program.solver.linear == "qr" and cost_in_linearization(program))
     procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", _ported(n_t), "fill",
                                                                 timing),))]
     for i, b in enumerate(program.blocks):
         m, d, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
         procs.append(Process(f"reduce_{i}", "gradient", (
-            kernel_loop("load", _ported(m * padded), "move", timing, n),
             kernel_loop("columns", d, "fill", timing, n),
-            kernel_dot("rows", m * (padded // TILE), timing, n),
-            Loop("scatter", d, timing["scatter"][0],
+            kernel_loop("rhs", _ported(m), "move", timing, n),
+            kernel_dot("rows", m * (padded // PORTS), timing, n),
+            Loop("scatter", d + bb, timing["scatter"][0],
                  timing["scatter"][1] + la * _ceil_log2(la), n))))
     return procs
 
@@ -321,12 +337,13 @@ def build(ctx) -> None:
         ctx.add_phase("linearize", Phase("gradient", False,
                                          tuple(gradient_loops(program, ctx.timing))))
         # accumulate, one module for every block type (linearize_all's ALLOCATION function
-        # limit=1, reduce_<b> INLINE, the sizes run-time): TILE multiply-adds a cycle, then a
-        # column a cycle through the fold of its T_PARTIALS partial sums and the add into G
+        # limit=1, reduce_<b> INLINE, the sizes run-time): PORTS multiply-adds a cycle (AB's
+        # two ports), then a column a cycle through the fold of its T_PARTIALS partial sums and
+        # the add into G
         la = ops.add.latency
-        ctx.units.append(bound_unit("gradient", "A^T b, TILE columns a cycle, one module for "
-                                    "every block type",
-                                    [BoundLoop("accumulate", (("add", TILE), ("mul", TILE)), 1),
+        ctx.units.append(bound_unit("gradient", "A^T b, PORTS columns a cycle out of AB, one "
+                                    "module for every block type",
+                                    [BoundLoop("accumulate", (("add", PORTS), ("mul", PORTS)), 1),
                                      BoundLoop("scatter", (("add", la),), 1)], table=ops))
     if opts.jacobian_storage == "raw":
         # whitening while stacking: W·[J | -r] of each instance, one multiply-accumulate a
@@ -353,8 +370,10 @@ def build(ctx) -> None:
     # (each datapath's cost-mode loop kept as a process of no cycles: trip 0, its II and
     # depth what trial_cost's loop for it starts from, cost_loops)
     idle = tuple(Process(p.name, p.unit, (replace(p.loops[0], trip=0),)) for p in cost)
+    # (none when the linearisation gives the cost at X: cost_in_linearization)
+    at_x = 0 if cost_in_linearization(program) else 1
     ctx.add_phase("cost", Phase("factor_cost", False, (Process("trial_cost", "factor_cost", (
-        Loop("cost_at_x", 1, 1, end),)),) + idle, per="call"))
+        Loop("cost_at_x", at_x, 1, end),)),) + idle, per="call"))
     # the process's copy of the retired state, and the stream of retired variables
     ctx.memories.append(Memory("trial_state", sum(v.storage_dim for v in program.variables),
                                ops.word_bits, 1))

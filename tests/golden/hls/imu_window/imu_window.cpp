@@ -135,6 +135,7 @@
 #include "hls_stream.h"
 #include "fgc_cpe.h"
 #include "fgc_backsub.h"
+#define FGC_LM_COST_IN_LINEARIZE  // fgc_lm.h: the first linearisation gives the cost at X (linearized_cost)
 #define FGC_LM_LINEARIZE_SOLVE  // fgc_lm.h: linearize_x and solve_at share linearize_solve's one instance
 #include "fgc_lm.h"
 #include "fgc_lm_units.h"
@@ -348,6 +349,7 @@ T X_TRIAL[N_X];    // x (+) delta
 T DATA_BUF[N_DATA];  // the factor data, copied in once per call
 L AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
 T G[N_TANGENT];    // gradient A^T b
+T LIN_SQ = T(0);  // sum of the instances' b^T b (their Grams' last diagonal entry): twice the cost at the linearisation point
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
 L COND[N_COND];    // conditionals (R | d), one block per elimination step
@@ -2122,7 +2124,17 @@ void gram_gradient(const int INST[N], const int CV[COLS - 1], const int CO[COLS 
 #pragma HLS INLINE
     const int f = INST[i];
     if (p == q) finite = finite && fgc_isfinite(T(v));
-    if (p == COLS - 1 && q < COLS - 1) G[VAR_T_OFF[FACTOR_VARS[FACTOR_VAR_BEGIN[f] + CV[q]]] + CO[q]] += T(v);
+    // the last row through one adder: b^T A into G, b^T b (the cost's) into LIN_SQ
+    if (p == COLS - 1) {
+        const bool rhs = q == COLS - 1;
+        const int at = VAR_T_OFF[FACTOR_VARS[FACTOR_VAR_BEGIN[f] + CV[rhs ? 0 : q]]] + CO[rhs ? 0 : q];
+        const T sum = (rhs ? LIN_SQ : G[at]) + T(v);
+        if (rhs) {
+            LIN_SQ = sum;
+        } else {
+            G[at] = sum;
+        }
+    }
 }
 
 template <int ROWS, int COLS, int N>
@@ -3132,6 +3144,7 @@ bool linearize_all(const T x[N_X]) {
         }
     }
     FGC_CYCLES("gradient", 0, "zero", (N_TANGENT + PORTS - 1) / PORTS, 1, 1);
+    LIN_SQ = T(0);  // (the HGC adds every instance's b^T b, the block beside the elimination's too)
     bool finite = true;
     bool ok1 = true;
     linearize_1(x, ok1);
@@ -3765,6 +3778,7 @@ struct LmConfig {
     static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
     static T x_norm() { return LM_X_NORM; }  // |X|, found beside the gradient's maximum
+    static T linearized_cost() { return T(0.5) * LIN_SQ; }  // the cost at X, from the HGC's b^T b
     static bool step_test(bool solved, T mu, T out[2]) {
 #pragma HLS INLINE
         return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);

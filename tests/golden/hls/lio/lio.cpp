@@ -77,6 +77,7 @@
 #include "hls_stream.h"
 #include "fgc_qr.h"
 #include "fgc_backsub.h"
+#define FGC_LM_COST_IN_LINEARIZE  // fgc_lm.h: the first linearisation gives the cost at X (linearized_cost)
 #include "fgc_lm.h"
 #include "fgc_lm_units.h"
 
@@ -261,6 +262,7 @@ T X_TRIAL[N_X];    // x (+) delta
 T DATA_BUF[N_DATA];  // the factor data, copied in once per call
 L AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
 T G[N_TANGENT];    // gradient A^T b
+T LIN_COST = T(0);  // the cost at the last linearisation point, 1/2 sum |W r|^2 (linearize_all)
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
 L COND[N_COND];    // conditionals (R | d), one block per elimination step
@@ -2439,21 +2441,27 @@ T rounding_noise(const T ab[NOISE_AB], const T scale[NOISE_STRIDE], int stride, 
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// Whitened rows [A | b] -> the local gradient A^T b (column c into G[col[c]]). One module for
-// every block type (linearize_all's ALLOCATION; each reduce_<b> INLINE there): the block's
-// sizes are run-time arguments, the largest block type's at compile time (GRAD_*). TILE
-// columns of a row a cycle (II 1: TILE multipliers and adders), rows x stride / TILE
+// Whitened rows [A | b] of the instance at AB[a0] (rows of `cols` words) -> the local gradient
+// A^T b (column c into G[col[c]]). One module for every block type (linearize_all's ALLOCATION;
+// each reduce_<b> INLINE there): the block's sizes are run-time arguments, the largest block
+// type's at compile time (GRAD_*). First the rows' right-hand sides (PORTS a cycle) into
+// registers; then PORTS columns of a row a cycle straight out of AB (its two ports: II 1, PORTS
+// multipliers and adders; columns past the row's `cols` are zero), rows x stride / PORTS
 // iterations of one flattened loop; row r goes into partial sum r % T_PARTIALS of its columns,
-// so an accumulator comes back T_PARTIALS * stride / TILE iterations later, at least GRAD_DIST
+// so an accumulator comes back T_PARTIALS * stride / PORTS iterations later, at least GRAD_DIST
 // (the narrowest block type's; the DEPENDENCE's distance, at least the adder's latency). Then a
 // column a cycle: its partial sums folded and added into G (the columns' entries are distinct:
-// II 1). False if an entry is infinite or NaN.
+// II 1). False if an entry is infinite or NaN. (The rows are read from AB once: no copy into a
+// row buffer first.)
+// The right-hand side's own column (b^T b, its ||W r||^2) comes out of the same scatter, one
+// iteration more, into `sq` through the same adder (LM's cost at X from the linearisation:
+// fgc_lm.h's FGC_LM_COST_IN_LINEARIZE).
 const int GRAD_STRIDE = 32;  // the widest block type's padded row
-const int GRAD_AB = 672;  // the largest block type's padded rows
+const int GRAD_ROWS = 21;  // the most rows of a block type
 const int GRAD_COLS = 30;  // the most columns of a block type (its tangent entries)
-const int GRAD_GROUPS = 168;  // the most TILE groups of a block type's rows
-const int GRAD_DIST = 4;  // T_PARTIALS x the narrowest padded row / TILE
-bool accumulate(const T ab[GRAD_AB], const int col[GRAD_COLS], int stride, int cols, int rows) {
+const int GRAD_GROUPS = 336;  // the most PORTS groups of a block type's padded rows
+const int GRAD_DIST = 8;  // T_PARTIALS x the narrowest padded row / PORTS
+bool accumulate(int a0, const int col[GRAD_COLS], int stride, int cols, int rows, T& sq) {
     T g[T_PARTIALS][GRAD_STRIDE];
 #pragma HLS ARRAY_PARTITION variable=g complete dim=0
     for (int t = 0; t < T_PARTIALS; ++t) {
@@ -2463,32 +2471,48 @@ bool accumulate(const T ab[GRAD_AB], const int col[GRAD_COLS], int stride, int c
             g[t][c] = T(0);
         }
     }
+    T rhs[GRAD_ROWS];  // each row's right-hand side
+#pragma HLS ARRAY_PARTITION variable=rhs complete
+    for (int r = 0; r < rows; r += PORTS) {  // PORTS words a cycle (AB's two ports)
+#pragma HLS LOOP_TRIPCOUNT max=GRAD_ROWS/2
+#pragma HLS PIPELINE II=1
+        for (int h = 0; h < PORTS; ++h) {
+            if (r + h < rows) rhs[r + h] = AB[a0 + (r + h) * cols + cols - 1];
+        }
+    }
     bool finite = true;
     int r = 0, c0 = 0, p = 0;  // the row, its group's first column, its partial sum (r % T_PARTIALS)
-    for (int i = 0; i < rows * (stride / TILE); ++i) {
+    for (int i = 0; i < rows * (stride / PORTS); ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=GRAD_GROUPS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=g inter true distance=GRAD_DIST
-        const T b = ab[r * stride + cols - 1];
-        for (int t = 0; t < TILE; ++t) {
-            const T a = ab[r * stride + c0 + t];
-            g[p][c0 + t] += a * b;
+        const T b = rhs[r];
+        for (int t = 0; t < PORTS; ++t) {
+            const int c = c0 + t;
+            const T a = c < cols ? T(AB[a0 + r * cols + c]) : T(0);
+            g[p][c] += a * b;
             finite = finite && fgc_isfinite(a);
         }
-        c0 += TILE;
+        c0 += PORTS;
         if (c0 == stride) {
             c0 = 0;
             ++r;
             p = p + 1 == T_PARTIALS ? 0 : p + 1;
         }
     }
-    for (int c = 0; c < cols - 1; ++c) {  // a column a cycle: its partial sums folded, into G
-#pragma HLS LOOP_TRIPCOUNT max=GRAD_COLS
+    for (int c = 0; c < cols; ++c) {  // a column a cycle: its partial sums folded, into G (b's: into sq)
+#pragma HLS LOOP_TRIPCOUNT max=GRAD_COLS+1
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=G inter false
         T pg[T_PARTIALS];
         for (int t = 0; t < T_PARTIALS; ++t) pg[t] = g[t][c];
-        G[col[c]] += fgc_units::fold_partials<T, T_PARTIALS>(pg);
+        const bool rhs = c == cols - 1;
+        const T v = (rhs ? sq : G[col[c]]) + fgc_units::fold_partials<T, T_PARTIALS>(pg);
+        if (rhs) {
+            sq = v;
+        } else {
+            G[col[c]] = v;
+        }
     }
     return finite;
 }
@@ -2552,25 +2576,23 @@ void load_rows_0(int f, T ab[48]) {
 }
 
 // block 0: the gradient of each instance from AB; false if not finite. INLINE into
-// linearize_all, whose ALLOCATION makes every block type's accumulate one module and whose one
-// row buffer `ab` (the widest block type's banks) every block type loads its rows into
-bool reduce_0(T ab[GRAD_AB]) {
+// linearize_all, whose ALLOCATION makes every block type's accumulate one module
+bool reduce_0(T& sq) {
 #pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK0_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        load_rows_0(f, ab);
         int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate(ab, col, 8, 7, 6) && finite;
-        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
-        // groups: the plan's rule), the scatter into G
-        FGC_CYCLES("reduce_0", 0, "load", 24, 1, 2);
+        finite = accumulate(FACTOR_A_OFF[f], col, 8, 7, 6, sq) && finite;
+        // column map, the right-hand sides, A^T b PORTS columns a cycle out of AB (a dot
+        // product of m rows x STRIDE / PORTS groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_0", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_0", 0, "rows", 12, fgc_units::dot_ii(12, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(12, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_0", 0, "scatter", 6, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
+        FGC_CYCLES("reduce_0", 0, "rhs", 3, 1, 2);
+        FGC_CYCLES("reduce_0", 0, "rows", 24, fgc_units::dot_ii(24, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(24, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_0", 0, "scatter", 7, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -2619,25 +2641,23 @@ void load_rows_1(int f, T ab[12]) {
 }
 
 // block 1: the gradient of each instance from AB; false if not finite. INLINE into
-// linearize_all, whose ALLOCATION makes every block type's accumulate one module and whose one
-// row buffer `ab` (the widest block type's banks) every block type loads its rows into
-bool reduce_1(T ab[GRAD_AB]) {
+// linearize_all, whose ALLOCATION makes every block type's accumulate one module
+bool reduce_1(T& sq) {
 #pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK1_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        load_rows_1(f, ab);
         int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 3; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate(ab, col, 4, 4, 3) && finite;
-        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
-        // groups: the plan's rule), the scatter into G
-        FGC_CYCLES("reduce_1", 0, "load", 6, 1, 2);
+        finite = accumulate(FACTOR_A_OFF[f], col, 4, 4, 3, sq) && finite;
+        // column map, the right-hand sides, A^T b PORTS columns a cycle out of AB (a dot
+        // product of m rows x STRIDE / PORTS groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_1", 0, "columns", 3, 1, 1);
-        FGC_CYCLES("reduce_1", 0, "rows", 3, fgc_units::dot_ii(3, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(3, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_1", 0, "scatter", 3, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
+        FGC_CYCLES("reduce_1", 0, "rhs", 2, 1, 2);
+        FGC_CYCLES("reduce_1", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_1", 0, "scatter", 4, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -2686,25 +2706,23 @@ void load_rows_2(int f, T ab[48]) {
 }
 
 // block 2: the gradient of each instance from AB; false if not finite. INLINE into
-// linearize_all, whose ALLOCATION makes every block type's accumulate one module and whose one
-// row buffer `ab` (the widest block type's banks) every block type loads its rows into
-bool reduce_2(T ab[GRAD_AB]) {
+// linearize_all, whose ALLOCATION makes every block type's accumulate one module
+bool reduce_2(T& sq) {
 #pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 1; ++i) {
         const int f = BLOCK2_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        load_rows_2(f, ab);
         int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate(ab, col, 8, 7, 6) && finite;
-        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
-        // groups: the plan's rule), the scatter into G
-        FGC_CYCLES("reduce_2", 0, "load", 24, 1, 2);
+        finite = accumulate(FACTOR_A_OFF[f], col, 8, 7, 6, sq) && finite;
+        // column map, the right-hand sides, A^T b PORTS columns a cycle out of AB (a dot
+        // product of m rows x STRIDE / PORTS groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_2", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_2", 0, "rows", 12, fgc_units::dot_ii(12, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(12, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_2", 0, "scatter", 6, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
+        FGC_CYCLES("reduce_2", 0, "rhs", 3, 1, 2);
+        FGC_CYCLES("reduce_2", 0, "rows", 24, fgc_units::dot_ii(24, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(24, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_2", 0, "scatter", 7, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -3035,15 +3053,13 @@ void load_rows_3(int f, T ab[672]) {
 }
 
 // block 3: the gradient of each instance from AB; false if not finite. INLINE into
-// linearize_all, whose ALLOCATION makes every block type's accumulate one module and whose one
-// row buffer `ab` (the widest block type's banks) every block type loads its rows into
-bool reduce_3(T ab[GRAD_AB]) {
+// linearize_all, whose ALLOCATION makes every block type's accumulate one module
+bool reduce_3(T& sq) {
 #pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 7; ++i) {
         const int f = BLOCK3_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        load_rows_3(f, ab);
         int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         for (int j = 0; j < 3; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
@@ -3051,14 +3067,14 @@ bool reduce_3(T ab[GRAD_AB]) {
         for (int j = 0; j < 3; ++j) col[15 + j] = VAR_T_OFF[FACTOR_VARS[vb + 3]] + j;
         for (int j = 0; j < 6; ++j) col[18 + j] = VAR_T_OFF[FACTOR_VARS[vb + 4]] + j;
         for (int j = 0; j < 6; ++j) col[24 + j] = VAR_T_OFF[FACTOR_VARS[vb + 5]] + j;
-        finite = accumulate(ab, col, 32, 31, 21) && finite;
-        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
-        // groups: the plan's rule), the scatter into G
-        FGC_CYCLES("reduce_3", 0, "load", 336, 1, 2);
+        finite = accumulate(FACTOR_A_OFF[f], col, 32, 31, 21, sq) && finite;
+        // column map, the right-hand sides, A^T b PORTS columns a cycle out of AB (a dot
+        // product of m rows x STRIDE / PORTS groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_3", 0, "columns", 30, 1, 1);
-        FGC_CYCLES("reduce_3", 0, "rows", 168, fgc_units::dot_ii(168, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(168, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_3", 0, "scatter", 30, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
+        FGC_CYCLES("reduce_3", 0, "rhs", 11, 1, 2);
+        FGC_CYCLES("reduce_3", 0, "rows", 336, fgc_units::dot_ii(336, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(336, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_3", 0, "scatter", 31, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -3112,25 +3128,23 @@ void load_rows_4(int f, T ab[24]) {
 }
 
 // block 4: the gradient of each instance from AB; false if not finite. INLINE into
-// linearize_all, whose ALLOCATION makes every block type's accumulate one module and whose one
-// row buffer `ab` (the widest block type's banks) every block type loads its rows into
-bool reduce_4(T ab[GRAD_AB]) {
+// linearize_all, whose ALLOCATION makes every block type's accumulate one module
+bool reduce_4(T& sq) {
 #pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 8; ++i) {
         const int f = BLOCK4_INSTANCES[i];
         const int vb = FACTOR_VAR_BEGIN[f];
-        load_rows_4(f, ab);
         int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate(ab, col, 8, 7, 3) && finite;
-        // load, column map, A^T b TILE columns a cycle (a dot product of m rows x STRIDE / TILE
-        // groups: the plan's rule), the scatter into G
-        FGC_CYCLES("reduce_4", 0, "load", 12, 1, 2);
+        finite = accumulate(FACTOR_A_OFF[f], col, 8, 7, 3, sq) && finite;
+        // column map, the right-hand sides, A^T b PORTS columns a cycle out of AB (a dot
+        // product of m rows x STRIDE / PORTS groups: the plan's rule), the scatter into G
         FGC_CYCLES("reduce_4", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_4", 0, "rows", 6, fgc_units::dot_ii(6, T_PARTIALS, T_ADD_LAT),
-                   fgc_units::dot_depth(6, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_4", 0, "scatter", 6, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
+        FGC_CYCLES("reduce_4", 0, "rhs", 2, 1, 2);
+        FGC_CYCLES("reduce_4", 0, "rows", 12, fgc_units::dot_ii(12, T_PARTIALS, T_ADD_LAT),
+                   fgc_units::dot_depth(12, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
+        FGC_CYCLES("reduce_4", 0, "scatter", 7, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -3265,14 +3279,14 @@ bool linearize_all(const T x[N_X]) {
     evaluate_small(x);
     evaluate_3(x);
     FGC_PHASE("gradient");
-    T ab[GRAD_AB];  // one row buffer for every block type's rows (accumulate's banks)
-#pragma HLS ARRAY_PARTITION variable=ab cyclic factor=GRAD_STRIDE
     bool finite = true;
-    finite = reduce_0(ab) && finite;
-    finite = reduce_1(ab) && finite;
-    finite = reduce_2(ab) && finite;
-    finite = reduce_3(ab) && finite;
-    finite = reduce_4(ab) && finite;
+    T sq = T(0);  // sum of b^T b over the instances: twice the cost at x
+    finite = reduce_0(sq) && finite;
+    finite = reduce_1(sq) && finite;
+    finite = reduce_2(sq) && finite;
+    finite = reduce_3(sq) && finite;
+    finite = reduce_4(sq) && finite;
+    LIN_COST = T(0.5) * sq;
     return finite;
 }
 
@@ -3774,6 +3788,7 @@ struct LmConfig {
     static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
     static T x_norm() { return LM_X_NORM; }  // |X|, found beside the gradient's maximum
+    static T linearized_cost() { return LIN_COST; }  // the cost at X, from linearize_all's gradient pass
     static bool step_test(bool solved, T mu, T out[2]) {
 #pragma HLS INLINE
         return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);
