@@ -74,8 +74,10 @@ class Config:
     lio_cpes: tuple[int, ...] = (5, 10, 15, 20, 80)
     cpes: tuple[int, ...] = (5, 20, 40, 80, 120)
     cascades: tuple[int, ...] = (1, 2)  # Cholesky: one cascade, or two side by side
-    # back-substitution's widths (HlsConfig; 4: by columns, a process per end of the chain)
-    backsub_lanes: tuple[int, ...] = (1, 2, 4)
+    # back-substitution's widths (HlsConfig; None: the default, automatic - by columns, a
+    # process per end, on a chain, one lane on a tree - so the default design is a candidate
+    # without an extra option; 1 and 2 the slot designs)
+    backsub_lanes: tuple[int | None, ...] = (None, 1, 2)
     # Cholesky: words a cycle through each cascade (HlsConfig.cascade_lanes; (1, 2) lets the
     # search weigh two words a cycle against more CPEs)
     lanes: tuple[int, ...] = (1,)
@@ -105,7 +107,7 @@ class Config:
 
 SMALL = Config(lio_n=5, imu_n=5, storage_ns=(4, 6), units=(1, 8), alloc_scales=(1,),
                lio_cpes=(5,), cpes=(5, 20), c123=(20,), gtsam_iterations=2, gtsam_repeats=1,
-               reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(1,),
+               reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(None,),
                stream_units=(1, 4),
                stream_allocations=(None, (("add", 1), ("mul", 1), ("div", 1))), stream_reads=1)
 

@@ -210,6 +210,7 @@ def test_best_design_is_the_fastest_that_fits(qr_chain):
     """bench_papers' best design is the search's: on the plan alone (no reads) the fastest
     design the plan fits, over n_u × unit sets × ALLOCATION scale × QR unit (Householder and
     the streaming unit) × back-substitution's width."""
+    from fgc_backends.hls.config import auto_backsub_lanes
     from fgc_backends.hls.plan.options import QR_UNITS
 
     bench = _bench()
@@ -224,7 +225,9 @@ def test_best_design_is_the_fastest_that_fits(qr_chain):
                     for lanes in cfg.backsub_lanes:
                         c = plan_cost(build_plan(qr_chain, PlanOptions.of(
                             qr_chain, units=units, unit_sets=sets, qr_unit=qr_unit,
-                            allocation=bench._scaled(scale), backsub_lanes=lanes)))
+                            allocation=bench._scaled(scale),
+                            backsub_lanes=auto_backsub_lanes(qr_chain) if lanes is None
+                            else lanes)))
                         if c.fits:
                             brute.append(c.cycles)
     assert result.best.cycles == min(brute) and result.best.cost.fits
