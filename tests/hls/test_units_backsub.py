@@ -255,10 +255,13 @@ def test_the_streaming_designs_refuse_wide_back_substitution():
              stream=FakeLayout())
 
 
-def _csim_against_the_simulator(graph, solver, tmp_path, name, units="fgc_cpe.h"):
+def _csim_against_the_simulator(graph, program, tmp_path, lanes, units=None):
+    """Emit ``program`` with back-substitution ``lanes`` wide (2: two lanes, 4: by columns),
+    double; its kernel defines that driver; with ``units`` (the elimination's header) the
+    process network read back from the text is the plan's; the C simulation equals the
+    simulator within 1e-9."""
     import numpy as np
 
-    from fgc.compile import compile_graph
     from fgc.ir.datafile import problem_data
     from fgc_backends import sim
     from fgc_backends.hls import HlsConfig, emit, run_csim
@@ -266,20 +269,23 @@ def _csim_against_the_simulator(graph, solver, tmp_path, name, units="fgc_cpe.h"
     from fgc_backends.hls.network import counts
     from fgc_backends.hls.plan import process_network
 
-    program = compile_graph(graph, solver, name=name)
-    config = HlsConfig(scalar="double", backsub_lanes=2)
+    config = HlsConfig(scalar="double", backsub_lanes=lanes)
     project = emit(program, tmp_path, config)
-    text = (tmp_path / f"{name}.cpp").read_text()
-    assert "#define FGC_BS_LANES 2" in text
-    # the process network read back from the text (the wide driver's backsub_lane<p>) is the
-    # plan's
-    procs, streams = process_network(accel_plan(program, config))
-    include = tmp_path / "include"
-    header = (include / units).read_text()
-    if units == "fgc_cpe.h":  # the cascade's driver regions
-        header += (include / "fgc_eliminate.h").read_text()
-    assert counts(text, header, (include / "fgc_backsub.h").read_text()) == \
-        (len(procs), len(streams))
+    text = (tmp_path / f"{program.name}.cpp").read_text()
+    if lanes == 2:
+        assert "#define FGC_BS_LANES 2" in text
+    else:
+        assert "#define FGC_BS_COLUMNS 1" in text and "#define FGC_BS_LANES" not in text
+    if units is not None:
+        # the process network read back from the text (the wide driver's backsub_lane<p>, the
+        # column design's loader and ends) is the plan's
+        procs, streams = process_network(accel_plan(program, config))
+        include = tmp_path / "include"
+        header = (include / units).read_text()
+        if units == "fgc_cpe.h":  # the cascade's driver regions
+            header += (include / "fgc_eliminate.h").read_text()
+        assert counts(text, header, (include / "fgc_backsub.h").read_text()) == \
+            (len(procs), len(streams))
     data = problem_data(graph, program)
     reference = sim.run(program, data, precision="float64")
     result = run_csim(project, program, data, reference)  # the testbench checks it too
@@ -294,9 +300,11 @@ def test_wide_back_substitution_matches_the_simulator_on_a_tree(tmp_path):
     children and many shapes, conditionals at every offset from a group boundary), LM,
     Cholesky, double: the C simulation equals the simulator within 1e-9."""
     from fgc.app.specs import example
+    from fgc.compile import compile_graph
     from fgc.ir.program import SolverConfig
-    _csim_against_the_simulator(example("pose_graph").build(), SolverConfig(linear="cholesky"),
-                                tmp_path, "w100_wide")
+    graph = example("pose_graph").build()
+    program = compile_graph(graph, SolverConfig(linear="cholesky"), name="w100_wide")
+    _csim_against_the_simulator(graph, program, tmp_path, 2, units="fgc_cpe.h")
 
 
 # heavy (a second C simulation, ~20 s on 2 cores): the tree case above keeps the wide driver's
@@ -307,9 +315,11 @@ def test_wide_back_substitution_matches_the_simulator_on_qr(tmp_path):
     words a cycle into its two banks), LM, double: the C simulation equals the simulator within
     1e-9."""
     from fgc.app.specs import example
+    from fgc.compile import compile_graph
     from fgc.ir.program import SolverConfig
-    _csim_against_the_simulator(example("lio").build(N=6), SolverConfig(linear="qr"), tmp_path,
-                                "lio_wide", units="fgc_qr.h")
+    graph = example("lio").build(N=6)
+    program = compile_graph(graph, SolverConfig(linear="qr"), name="lio_wide")
+    _csim_against_the_simulator(graph, program, tmp_path, 2, units="fgc_qr.h")
 
 
 # ---- back-substitution by columns (HlsConfig backsub_lanes=4, the plan only: units/backsub.py's
@@ -381,37 +391,14 @@ def test_back_substitution_by_columns_matches_the_simulator(tmp_path):
     both ends' passes, the feed pass and the loader's walk at several COND alignments), LM,
     Cholesky, double: the C simulation equals the simulator within 1e-9; the process network
     read back from the text is the plan's."""
-    import numpy as np
-
     from fgc.app.specs import example
     from fgc.compile import compile_graph
-    from fgc.ir.datafile import problem_data
     from fgc.ir.program import SolverConfig
-    from fgc_backends import sim
-    from fgc_backends.hls import HlsConfig, emit, run_csim
-    from fgc_backends.hls.emitter import accel_plan
-    from fgc_backends.hls.network import counts
-    from fgc_backends.hls.plan import process_network
 
     graph = example("lio").build(N=6)
     program = compile_graph(graph, SolverConfig(method="lm", linear="cholesky", cpe=3),
                             name="lio_cols")
-    config = HlsConfig(scalar="double", backsub_lanes=4)
-    project = emit(program, tmp_path, config)
-    text = (tmp_path / "lio_cols.cpp").read_text()
-    assert "#define FGC_BS_COLUMNS 1" in text and "#define FGC_BS_LANES" not in text
-    procs, streams = process_network(accel_plan(program, config))
-    include = tmp_path / "include"
-    header = (include / "fgc_cpe.h").read_text() + (include / "fgc_eliminate.h").read_text()
-    assert counts(text, header, (include / "fgc_backsub.h").read_text()) == \
-        (len(procs), len(streams))
-    data = problem_data(graph, program)
-    reference = sim.run(program, data, precision="float64")
-    result = run_csim(project, program, data, reference)  # the testbench checks it too
-    assert result.status == reference.status
-    for v in program.variables:  # double: 1e-9 relative to max(1, the largest entry)
-        a, b = np.asarray(result.values[v.key]), np.asarray(reference.storage[v.key])
-        assert np.max(np.abs(a - b)) <= 1e-9 * max(1.0, float(np.max(np.abs(b)))), v.key
+    _csim_against_the_simulator(graph, program, tmp_path, 4, units="fgc_cpe.h")
 
 
 @pytest.mark.heavy
@@ -419,14 +406,9 @@ def test_back_substitution_by_columns_matches_the_simulator(tmp_path):
 def test_columns_on_one_end_and_on_qr_match_the_simulator(tmp_path, case):
     """backsub_lanes=4 on a one-ended chain (LIO N = 5 serial: end 1 empty, no feed pass) and on
     QR (LIO N = 6 two-ended, n_u = 2: qr_commit writing COND), double: csim = simulator 1e-9."""
-    import numpy as np
-
     from fgc.app.specs import example
     from fgc.compile import compile_graph
-    from fgc.ir.datafile import problem_data
     from fgc.ir.program import SolverConfig
-    from fgc_backends import sim
-    from fgc_backends.hls import HlsConfig, emit, run_csim
     from fgc_backends.hls.units.backsub import column_chain
 
     if case == "serial":
@@ -437,14 +419,7 @@ def test_columns_on_one_end_and_on_qr_match_the_simulator(tmp_path, case):
         solver = SolverConfig(method="lm", linear="qr", ordering="two-ended", units=2)
     program = compile_graph(graph, solver, name=f"cols_{case}")
     assert (column_chain(plan_tables(program))[1] == ()) == (case == "serial")
-    project = emit(program, tmp_path, HlsConfig(scalar="double", backsub_lanes=4))
-    data = problem_data(graph, program)
-    reference = sim.run(program, data, precision="float64")
-    result = run_csim(project, program, data, reference)
-    assert result.status == reference.status
-    for v in program.variables:
-        a, b = np.asarray(result.values[v.key]), np.asarray(reference.storage[v.key])
-        assert np.max(np.abs(a - b)) <= 1e-9 * max(1.0, float(np.max(np.abs(b)))), v.key
+    _csim_against_the_simulator(graph, program, tmp_path, 4)
 
 
 def test_the_column_designs_state_update_keeps_up_with_both_ends():
