@@ -570,6 +570,14 @@ class WindowUpdateModel:
             return False
         return keyframe - lay.window > 0
 
+    def _walks_first(self, keyframe: int, events: dict | None) -> bool:
+        """Whether a batch step at ``keyframe`` (the batch kernel's or a sweep) walks the kept
+        estimates before it starts from them: counted (the ``kept_walk`` event) where the
+        update's ``events`` are given, else when the update before left them stale."""
+        if events is not None:
+            return bool(events.get("kept_walk", 0))
+        return self.stale_after(keyframe - 1)
+
     def _walk_term(self, first: int, parent: str) -> Term:
         st = self.stream
         return Term("kept_walk", st["stream_kept_walk_base"] + first * st["stream_kept_walk_each"],
@@ -721,8 +729,7 @@ class WindowUpdateModel:
             if sweep:
                 # the sweep starts from the kept estimates: walked first (pass -1) when the
                 # update before left them stale (counted: the kept_walk event)
-                walk = (ev.get("kept_walk", 0) if events is not None
-                        else int(self.stale_after(keyframe - 1)))
+                walk = self._walks_first(keyframe, ev if events is not None else None)
                 if walk and first > 1:
                     terms += [Term("kept_walk_parent", st["stream_kept_slot0"], 1, False,
                                    "the leaving keyframe's estimate copied out of the kept "
@@ -742,8 +749,7 @@ class WindowUpdateModel:
                     # the batch kernel starts from the kept estimates: walked first when the
                     # update before left them stale (counted: the kept_walk event)
                     first = max(0, keyframe - lay.window)
-                    walk = (ev.get("kept_walk", 0) if events is not None
-                            else int(self.stale_after(keyframe - 1)))
+                    walk = self._walks_first(keyframe, ev if events is not None else None)
                     terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
                                       "the leaving keyframe's estimate copied out of the kept "
                                       "memory: the walk's first parent"))
