@@ -20,7 +20,10 @@
 // columns, the right-hand side last. The work memory is banked N_UNITS ways by column: column c of
 // row i is work[c % N_UNITS][i][c / N_UNITS] (qr_put<CFG> / qr_get<CFG> write and read it, and
 // qr_scatter<CFG> fills the banks from a dense row-major matrix). Every entry of rows 0 ... rows-1,
-// columns 0 ... w must be written (zeros included); the memory is overwritten by the factor.
+// columns 0 ... w must hold the step's value (zeros included); qr_step leaves every word of the
+// memory it was given zero (the factor goes out through cond and update), so a caller whose banks
+// start zero (the emitted design's: globals, zero in the bitstream) writes only a step's
+// non-zero entries (fgc_eliminate.h's qr_stack with CFG::BANKS_ZERO).
 // Declare it with `#pragma HLS ARRAY_PARTITION variable=work complete dim=1`: each bank is then
 // its own memory, passed to one Update process (UG1399, partitioned arrays in dataflow).
 //
@@ -323,18 +326,30 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     // tau and R_jj (qr_finish's last words; what follows waits for them)
     FGC_WAIT("qr_update", U, "qr_finish", 0, "tau");
     const T tau = tin.read().val;
-    const T r_jj = tin.read().val;
+    tin.read();  // R_jj: the collector has it from qr_finish
     FGC_CYCLES("qr_update", U, "tail", 2, 1, 1);
-    if (n > 0 && j >= 0 && j % CFG::N_UNITS == U) {  // the pivot column: R_jj, zeros below
+    // The banks are left zero (what qr_stack relies on: it writes only the next step's rows):
+    // column j, no longer read, is zeroed on its active rows (the others are zero), and every
+    // row's entries are zeroed as they go to the collector (row j is no reflection's after j).
+    if (j >= 0 && j % CFG::N_UNITS == U) {
         const int l = j / CFG::N_UNITS;
-        bank[j][l] = r_jj;  // at[0] == j
-        // trip n - 1, II 1, depth 1
-        for (int a = 1; a < n; ++a) {
+        if (n > 0) {  // the pivot column's active rows (at[0] == j): trip n, II 1, depth 1
+            for (int a = 0; a < n; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-            bank[at[a]][l] = T(0);
+                bank[at[a]][l] = T(0);
+            }
+            FGC_CYCLES("qr_update", U, "pivot_column", n, 1, 1);
+        } else {
+            // no reflection: the column's entries are zero but for squares that underflow (see
+            // the arithmetic above), zeroed here too: trip rows - j, II 1, depth 1
+            for (int i = j; i < rows; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+                bank[i][l] = T(0);
+            }
+            FGC_CYCLES("qr_update", U, "zero_column", rows - j, 1, 1);
         }
-        FGC_CYCLES("qr_update", U, "pivot_column", n, 1, 1);
     }
     if (next_here) {
         if (n > 1) {
@@ -371,8 +386,9 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
             }
             FGC_CYCLES("qr_update", U, "next_column", rows - c0, 1, 1);
         }
-        if (j >= 0) {  // row j is final now: its entry in column c0 to the collector
+        if (j >= 0) {  // row j is final now: its entry in column c0 to the collector, 0 here
             rowout.write(bank[j][l0]);
+            bank[j][l0] = T(0);
             FGC_CYCLES("qr_update", U, "row_out", 1, 1, 1);
         }
     }
@@ -442,7 +458,8 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
             }
             if (e >= lag) {  // axpy: word e - lag (each entry (at[a], l) written once)
                 const T x = held[(e - lag) & (QR_HELD - 1)] - scaled[lx] * v[ax];
-                bank[at[ax]][lx] = x;
+                // row j (a = 0) to the collector, 0 in the bank
+                bank[at[ax]][lx] = ax == 0 ? T(0) : x;
                 if (ax == 0) rowout.write(x);
                 if (ax == n - 1) {
                     ax = 0;
@@ -455,12 +472,12 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
         FGC_CYCLES("qr_update", U, "dot_axpy", words + lag, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     } else if (j >= 0) {
         // no reflection (an all-zero column: row j as it is) or the pivot row's negation (one
-        // active row), each entry to the collector: trip r, II 1, depth 1
+        // active row), each entry to the collector (0 in the bank): trip r, II 1, depth 1
         for (int l = lb; l < lb + r; ++l) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
 #pragma HLS PIPELINE II=1
             const T x = n == 1 ? T(-bank[j][l]) : bank[j][l];
-            bank[j][l] = x;
+            bank[j][l] = T(0);
             rowout.write(x);
         }
         FGC_CYCLES("qr_update", U, n == 1 ? "negate_rows" : "rows_out", r, 1, 1);

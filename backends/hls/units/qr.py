@@ -81,8 +81,9 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 loops.append(Loop("pivot_word", 1, 1, 1))
             waits.append((len(procs), len(loops), 1, "tau"))
             loops.append(Loop("tail", 2, 1, 1))
-            if n > 0 and j >= 0 and j % units == u:
-                loops.append(Loop("pivot_column", n, 1, 1))
+            if j >= 0 and j % units == u:  # the pivot column zeroed (fgc_qr.h: banks left 0)
+                loops.append(Loop("pivot_column", n, 1, 1) if n > 0 else
+                             Loop("zero_column", rows - j, 1, 1))
             if next_here:  # updated and streamed to the Evaluate first
                 if n > 1:
                     loops += [Loop("scale", 1, 1, lm),
@@ -146,13 +147,14 @@ def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[Bound
 
 
 def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
-                timing: dict) -> list[Loop]:
-    """accel.cpp.jinja's stack() of step s into its unit set's banks: the rows zeroed (all
-    n_u banks a cycle), each factor's rows [A | b] and each child's new-factor rows
-    :data:`PORTS` words a cycle, the damping rows' diagonal."""
+                timing: dict, banks_zero: bool = True) -> list[Loop]:
+    """fgc_eliminate.h's qr_stack of step s into its unit set's banks: unless ``banks_zero``
+    (fgc_qr.h's qr_step leaves its banks zero: CFG::BANKS_ZERO; not fgc_qr_stream.h's) the
+    rows zeroed (all n_u banks a cycle), then each factor's rows [A | b] and each child's
+    new-factor rows :data:`PORTS` words a cycle, the damping rows' diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
-    loops = [kernel_loop("zero", m * local, "fill", timing)]
+    loops = [] if banks_zero else [kernel_loop("zero", m * local, "fill", timing)]
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
@@ -259,7 +261,8 @@ def _levels(ctx, sets, by_index, damping) -> None:
         stack = [Process("root_mu", "qr_stack", (kernel_loop("root_mu", 1, "root", timing),))] \
             if li == 0 else []
         stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
-            tables, i, opts.units, max_w, damping, timing))) for i in level]
+            tables, i, opts.units, max_w, damping, timing, opts.qr_unit != "stream")))
+            for i in level]
         ctx.add_phase("solve", Phase(f"qr_stack_level{li}", False, tuple(stack), linear=True))
         # eliminate_all hands a level's steps to the unit sets `sets` at a time, in level
         # order: each chunk a DATAFLOW region of its sets side by side, the chunks one after
