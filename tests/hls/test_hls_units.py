@@ -36,7 +36,7 @@ struct qr_cfg {
     typedef TT T;
     static const int MAX_ROWS = 40, MAX_COLS = 25, MAX_F = 12, N_UNITS = N;
     static const int LOCAL_COLS = fgc_units::ceil_div(MAX_COLS, N_UNITS);
-    static const int PARTIALS = 12, FOLD_II = PARTIALS - 1;
+    static const int PARTIALS = 12, FOLD_LAT = 12 * 4 + 9;  // ADD_LAT ceil(log2 P) + MUL_LAT
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;
     static constexpr double SINGULAR_EPS = STRICT ? 1e-12 : 1e-3;
 };

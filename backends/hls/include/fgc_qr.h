@@ -129,6 +129,7 @@ struct qr_config_example {
     static const int N_UNITS = 4;    // Update units (n_u, --units)
     static const int LOCAL_COLS = ceil_div(MAX_COLS, N_UNITS);  // columns in one bank
     static const int PARTIALS = 12;  // interleaved partial sums of a dot product (= ADD_LAT: II 1)
+    static const int FOLD_LAT = 12 * 4 + 9;  // ADD_LAT ceil(log2 PARTIALS) + MUL_LAT: fold, scale
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;  // float64 (plan)
     static constexpr double SINGULAR_EPS = 1e-12;
 };
@@ -262,12 +263,13 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
+    static_assert(CFG::FOLD_LAT == CFG::ADD_LAT * ceil_log2(CFG::PARTIALS) + CFG::MUL_LAT,
+                  "FOLD_LAT = ADD_LAT ceil(log2 PARTIALS) + MUL_LAT: a column's fold and scale");
     // the dot_axpy loop's lags (iterations at II 1): a word's dot product lands in its partial
-    // sum QR_DOT_LAT after it is read; a column's fold and scale take QR_FOLD_LAT
+    // sum QR_DOT_LAT after it is read; a column's fold and scale take CFG::FOLD_LAT
     enum {
         QR_DOT_LAT = CFG::MUL_LAT + CFG::ADD_LAT,
-        QR_FOLD_LAT = CFG::ADD_LAT * ceil_log2(CFG::PARTIALS) + CFG::MUL_LAT,
-        QR_HELD = 1 << ceil_log2(CFG::MAX_ROWS + QR_DOT_LAT + QR_FOLD_LAT)  // > lag
+        QR_HELD = 1 << ceil_log2(CFG::MAX_ROWS + QR_DOT_LAT + CFG::FOLD_LAT)  // > lag
     };
     T v[CFG::MAX_ROWS];
     int at[CFG::MAX_ROWS];
@@ -407,8 +409,8 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
         //         iterations later; its first term overwrites it) and into the held ring;
         //   fold  (e = t + QR_DOT_LAT, the word a column's last, a = n - 1: its partial sums
         //         have landed): scaled[l] = tau * fold(part[l]);
-        //   axpy  (e = t + lag, lag = n - 1 + QR_DOT_LAT + QR_FOLD_LAT: the column's scaled is
-        //         ready, QR_FOLD_LAT after its fold): x from the held ring (the bank's two
+        //   axpy  (e = t + lag, lag = n - 1 + QR_DOT_LAT + FOLD_LAT: the column's scaled is
+        //         ready, FOLD_LAT after its fold): x from the held ring (the bank's two
         //         ports are the dot's read and this write), x - scaled[l] v_a into the bank,
         //         the entry in row j (a = 0) to the collector.
         // trip n r + lag, II 1, depth Lm + La (the axpy's multiply-add)
@@ -420,14 +422,14 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
         T scaled[CFG::LOCAL_COLS];
         T held[QR_HELD];  // the dot's words until their axpy (lag < QR_HELD iterations later)
         const int words = n * r;
-        const int lag = n - 1 + QR_DOT_LAT + QR_FOLD_LAT;
+        const int lag = n - 1 + QR_DOT_LAT + CFG::FOLD_LAT;
         int ld = lb, ad = 0, lq = lb, aq = 0, lx = lb, ax = 0;
         for (int e = 0; e < words + lag; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-#pragma HLS DEPENDENCE variable=scaled inter true distance=QR_FOLD_LAT
-#pragma HLS DEPENDENCE variable=held inter true distance=QR_DOT_LAT
+#pragma HLS DEPENDENCE variable=scaled inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=held inter true distance=CFG::FOLD_LAT
 #pragma HLS DEPENDENCE variable=bank inter false
             if (e < words) {  // dot: word e
                 const T x = bank[at[ad]][ld];
