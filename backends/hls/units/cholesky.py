@@ -54,9 +54,11 @@ def cpe_round_depth(active: int, cpe: int, ops: OperatorTable, waits: int = 0) -
     """Depth of one ``cpe_round`` (backends/hls/include/fgc_cpe.h) as a loop of trip = its words
     + 1 (the status word) at II 1: every process of the region is one pipelined loop of those
     words, so the region takes the words plus what each process adds to the stream: the feed
-    La + 2 (mu added on the diagonal), each CPE with a pivot :func:`cpe_depth` (+ ``waits``,
-    the sum of their :func:`cpe_wait`), each idle tap and CPE 1, the drain 2."""
-    return ops.add.latency + 2 + active * cpe_depth(ops) + waits + 2 * (cpe - active) + 2
+    La + 2, each CPE with a pivot :func:`cpe_depth` (+ ``waits``, the sum of their
+    :func:`cpe_wait`), the drain 2. The ``cpe`` - ``active`` CPEs past the round's pivots add
+    nothing: the stream leaves the cascade at its last pivot's CPE (cpe's tail, the drain's
+    multiplexer), and their taps and CPEs do nothing."""
+    return ops.add.latency + 2 + active * cpe_depth(ops) + waits + 2
 
 
 def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
@@ -983,21 +985,23 @@ def _frontal(ctx) -> None:
     lanes = ctx.opts.cascade_lanes  # fgc_cpe.h's STREAM_WORDS: words a stream word of the cascade
     sizes = ctx.sizes
     cols = sizes["MAX_W"] + 1
-    # cpe_round's streams: link[0 ... #CPE] (feed -> tap 0, CPE K -> tap K + 1, CPE #CPE - 1 ->
-    # drain), tapped[K] (tap K -> CPE K, deep enough for the tap never to stall while its CPE
-    # waits for r) and recip[K] (r = 1 / d, tap K -> CPE K); per cascade
+    # cpe_round's streams: link[0 ... #CPE - 1] (feed -> tap 0, CPE K -> tap K + 1), tail[K]
+    # (CPE K -> drain, when K holds the round's last pivot), tapped[K] (tap K -> CPE K, deep
+    # enough for the tap never to stall while its CPE waits for r) and recip[K] (r = 1 / d,
+    # tap K -> CPE K); per cascade
     for k in range(sets):
         pre = "cpe_" if k == 0 else f"cpe{k}_"  # the first cascade's keep their names
 
         def cpe(i, pre=pre):
             return f"{pre[:-1]}{i}" if pre == "cpe_" else f"{pre}{i}"
 
-        for i in range(c + 1):
+        for i in range(c):
             ctx.channels.append(Channel(f"{pre}link{i}", "stream", sizes["MAX_W"],
                                         lanes * ops.word_bits,
-                                        f"{pre}feed" if i == 0 else cpe(i - 1),
-                                        f"{pre}tap{i}" if i < c else f"{pre}drain"))
+                                        f"{pre}feed" if i == 0 else cpe(i - 1), f"{pre}tap{i}"))
         for i in range(c):
+            ctx.channels.append(Channel(f"{pre}tail{i}", "stream", 2,  # the drain never stalls
+                                        lanes * ops.word_bits, cpe(i), f"{pre}drain"))
             ctx.channels.append(Channel(f"{pre}tapped{i}", "stream", cols + ops.div.latency + 2,
                                         lanes * ops.word_bits, f"{pre}tap{i}", cpe(i)))
             ctx.channels.append(Channel(f"{pre}recip{i}", "stream", 2, ops.word_bits,
