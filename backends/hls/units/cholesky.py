@@ -497,9 +497,11 @@ def beside_region_layout(program, tables: dict, regions: list[tuple[int, int]], 
     """:func:`beside_layout` for two cascades (:func:`cascade_regions`): the stream follows the
     regions (each region's cascade 0 step's instances, then cascade 1's), and a stage lane holds
     a whole region's streamed Grams (fgc_cascades.h's cholesky_set_gram_source fills region
-    r + 2's while the grams process reads region r + 1's): ``step_first`` / ``step_count`` and
-    ``factor_stage`` are per region (a factor's offset in its region's lane), ``n_stage`` the
-    most streamed Grams of a region."""
+    r + 2's while the grams process reads region r + 1's), in two memories, one a cascade's
+    step (so that the grams process reads both steps' first Grams side by side):
+    ``step_first`` / ``step_count`` are per region, ``step_count0`` the cascade 0 step's
+    instances of the region, ``factor_stage`` a factor's offset in its cascade's memory of its
+    region's lane, ``n_stage`` (a memory's words) the most streamed Grams of a step."""
     order = [s for reg in regions for s in reg if s >= 0]
     lay = beside_layout(program, tables, order, big)
     nb = lay["nb"]
@@ -510,12 +512,13 @@ def beside_region_layout(program, tables: dict, regions: list[tuple[int, int]], 
         steps = [s for s in reg if s >= 0]
         first[r] = lay["step_first"][steps[0]]
         count[r] = sum(lay["step_count"][s] for s in steps)
+    count0 = [lay["step_count"][reg[0]] if reg[0] >= 0 else 0 for reg in regions]
     for f, k in at.items():
         r = next(r for r in range(len(regions)) if first[r] <= k < first[r] + count[r])
-        factor_stage[f] = (k - first[r]) * nb
-    most = max(count)
+        j = k - first[r]  # its place in the region; cascade 1's step's after cascade 0's
+        factor_stage[f] = (j - count0[r] if j >= count0[r] else j) * nb
     return {**lay, "factor_stage": factor_stage, "step_first": first, "step_count": count,
-            "n_stage": most * nb, "max_per_step": most}
+            "step_count0": count0, "max_per_step": max(count)}
 
 
 def _gram_source(key: int, lay: dict, relin: bool, steps: int, ii: int, timing: dict
@@ -544,7 +547,8 @@ def beside_set_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops:
     source of region 1, then per region r its children added alone (``reassemble_level``) and
     its region (``recholesky_level<r>``) beside the source of region r + 2, last the committer
     alone. (The pass as a phase, the producer's instance its source waits for or None.)"""
-    base = cascades_phases(tables, order, dims, cpe, ops, timing, lanes, cond_banks)
+    staged = frozenset(f for f, at in enumerate(lay["factor_stage"]) if at >= 0)
+    base = cascades_phases(tables, order, dims, cpe, ops, timing, lanes, cond_banks, staged)
     n_regions = len(lay["step_count"])
 
     def source(r: int) -> tuple[tuple[Process, ...], int | None]:
@@ -732,7 +736,7 @@ def cond_pairs(tables: dict, s: int) -> int:
 
 def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
                     ops: OperatorTable, timing: dict, lanes: int = 1,
-                    cond_banks: int = 1) -> list[Phase]:
+                    cond_banks: int = 1, staged: frozenset = frozenset()) -> list[Phase]:
     """cholesky_eliminate_sets' phases (fgc_cascades.h, two cascades), passes of its one
     cholesky_sets region: phase ``assemble`` (the grams process alone: the first region's
     steps' Grams), then per region r of :func:`cascade_regions` (after a phase
@@ -745,7 +749,11 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
       step's :func:`cpe_pairs`; ``move``, or ``scatter`` with a streamed child's words added);
     - the grams process: the next region's steps' Grams into the other lanes, both first
       factors' column maps in one loop (``move``, trip the wider), then
-      :func:`assemble_loops` but the maps, step after step;
+      :func:`assemble_loops` but the maps, step after step; where both steps' first factors
+      are ``staged`` (the HGC beside the elimination streams them into a stage lane, a memory
+      per cascade's step) both first Grams side by side in one loop, two entries of each a
+      cycle (``move``, trip the larger's pairs: fgc_cascades.h's cholesky_set_firsts), then
+      the further factors step after step;
     - the committer: the region before's conditionals from CONDBUF into COND, two words a
       cycle, each step's pivot check after its copy (:func:`cpe_check_loops`: off the
       cascade's path); with COND cyclic over ``cond_banks`` > 1 (back-substitution's width:
@@ -765,11 +773,21 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
         fac = tables["STEP_FACTORS"][fb[s]]
         return cb[fac + 1] - cb[fac]
 
+    def first_factor(s):  # step s's first factor (-1: none)
+        fb = tables["STEP_FACTOR_BEGIN"]
+        return tables["STEP_FACTORS"][fb[s]] if s >= 0 and fb[s] < fb[s + 1] else -1
+
     def grams(reg):  # both first factors' column maps in one loop, then step after step
-        return (kernel_loop("map", max(first_width(s) for s in reg), "move", timing),
-                *(lp for s in reg if s >= 0
-                  for lp in assemble_loops(tables, s, timing, children=False)
-                  if lp.name != "map"))
+        maps = kernel_loop("map", max(first_width(s) for s in reg), "move", timing)
+        if all(first_factor(s) in staged for s in reg):  # both first Grams side by side
+            pairs = max(-(-(first_width(s) * (first_width(s) + 3) // 2) // 2) for s in reg)
+            return (maps, kernel_loop("gram_firsts", pairs, "move", timing),
+                    *(lp for s in reg
+                      for lp in assemble_loops(tables, s, timing, children=False)
+                      if lp.name not in ("map", "gram_first")))
+        return (maps, *(lp for s in reg if s >= 0
+                        for lp in assemble_loops(tables, s, timing, children=False)
+                        if lp.name != "map"))
 
     def commit(reg):  # each conditional copied, then its pivots checked (cpe_check)
         if cond_banks > 1:  # both copied at once, then both checked
@@ -964,7 +982,9 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
                                        jacobian_ii(region.processes),
                                        jacobian_cycles(region.processes))
     slots = (2 if paired else 1) + (1 if lane_b else 0)  # accel.cpp.jinja's GramWord
-    ctx.memories.append(Memory("stage", 2 * lay["n_stage"], ops.word_bits, 1))
+    # two lanes; with two cascades each lane a memory per cascade's step
+    per_lane = 2 if passes is beside_set_passes else 1
+    ctx.memories.append(Memory("stage", 2 * per_lane * lay["n_stage"], ops.word_bits, per_lane))
     ctx.memories.append(Memory("gram_kept", len(lay["order"]) * lay["nb"], ops.word_bits, 1))
     ctx.channels.append(Channel("grams", "stream", lay["max_per_step"] * steps,
                                 slots * ops.word_bits, f"reduce_{big}", "gram_source"))
