@@ -72,8 +72,9 @@ def test_regions_pair_the_two_ends_of_a_chain(lio30):
 def test_the_streamed_grams_go_region_by_region(lio30):
     """The HGC beside two cascades (beside_region_layout): the IMU block's instances in region
     order (a region's cascade 0 step's, then cascade 1's), each once; a region's streamed Grams
-    in its stage lane, a memory a cascade's step; the first solve's passes gated by their region's last
-    instance (beside_set_passes), and the region beside it priced from the replay."""
+    in its stage lane, a memory a cascade's step; the first solve's passes gated by their
+    region's last instance (beside_set_passes), and the region beside it priced from the
+    replay."""
     tables = _tables(lio30)
     n = len(lio30.schedule.steps)
     order = [tables["LEVEL_STEPS"][i] for i in range(n)]
