@@ -21,7 +21,8 @@
 // The Grams are read in cholesky_set_step_grams (as fgc_eliminate.h's cholesky_assemble_first
 // and cholesky_add_segment read them for the one-cascade driver; a streamed factor's from its
 // region's stage lane, CFG::staged): a change to where the assembly gets its Grams changes both.
-// Without the HGC beside, the kernel's STAGE_NONE (never read) stands for the stage lane.
+// Without the HGC beside, the kernel's STAGE_NONE0 / STAGE_NONE1 (never read) stand for the
+// stage lane's two memories.
 #ifndef FGC_CASCADES_H
 #define FGC_CASCADES_H
 
@@ -202,12 +203,14 @@ void cholesky_set_firsts(int n0, int n1,
 // The grams process: steps n0, n1 (cascade 0's, 1's of the next region; -1 none) into their
 // lanes, both first factors' column maps in one loop, then - both first factors streamed - both
 // first Grams side by side (cholesky_set_firsts), then one step after the other through one
-// copy of the loops (one adder); their streamed Grams from `stage` (the next region's stage
-// lane, a memory per cascade's step; without the HGC beside, STAGE_NONE, never read).
+// copy of the loops (one adder); their streamed Grams from `stage0` / `stage1` (the next
+// region's stage lane, a memory per cascade's step: STAGE_K0, STAGE_K1; without the HGC beside,
+// STAGE_NONE0 / STAGE_NONE1, never read).
 template <class CFG>
 void cholesky_set_grams(int n0, int n1, typename CFG::T ha0[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                         typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
-                        const typename CFG::T stage[2][CFG::N_STAGE]) {
+                        const typename CFG::T stage0[CFG::N_STAGE],
+                        const typename CFG::T stage1[CFG::N_STAGE]) {
 #pragma HLS ALLOCATION function instances=cholesky_set_step_grams<CFG> limit=1
     FGC_BRANCH();
     int map0[CFG::MAX_W + 1], map1[CFG::MAX_W + 1];
@@ -216,9 +219,9 @@ void cholesky_set_grams(int n0, int n1, typename CFG::T ha0[CFG::MAX_W][CFG::MAX
     cholesky_set_maps<CFG>(n0, n1, map0, map1);
     const int f0 = cholesky_set_first_factor(n0), f1 = cholesky_set_first_factor(n1);
     const bool both = f0 >= 0 && f1 >= 0 && CFG::staged(f0) >= 0 && CFG::staged(f1) >= 0;
-    if (both) cholesky_set_firsts<CFG>(n0, n1, ha0, ha1, stage[0], stage[1], map0, map1);
-    cholesky_set_step_grams<CFG>(n0, ha0, stage[0], map0, both);
-    cholesky_set_step_grams<CFG>(n1, ha1, stage[1], map1, both);
+    if (both) cholesky_set_firsts<CFG>(n0, n1, ha0, ha1, stage0, stage1, map0, map1);
+    cholesky_set_step_grams<CFG>(n0, ha0, stage0, map0, both);
+    cholesky_set_step_grams<CFG>(n1, ha1, stage1, map1, both);
 }
 
 // Step s's streamed child's separator map inverted into inv (parent column -> its index in
@@ -502,7 +505,7 @@ void cholesky_sets(int s0, int s1, int n0, int n1, int q0, int q1, typename CFG:
 #pragma HLS STREAM variable=frontal0 depth=DEPTH
 #pragma HLS STREAM variable=frontal1 depth=DEPTH
     cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
-    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, STAGE_NONE);
+    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, STAGE_NONE0, STAGE_NONE1);
     cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
                               unfit0);
     cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
@@ -625,20 +628,22 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
 // lanes follow NF's scheme: the two parity call sites pass (lane written, lane read) as
 // different arrays, so each lane has one process a pass. A lane is two memories, lane[k] the
 // streamed Grams of the region's cascade k step (the grams process reads both steps' first Grams
-// side by side, cholesky_set_firsts). CFG: SetConfig with the LesConfig's Word, N_STAGE (a
+// side by side, cholesky_set_firsts; STAGE_K0, STAGE_K1 the two). CFG: SetConfig with the LesConfig's Word, N_STAGE (a
 // step's streamed words: a memory of a lane), staged(fac) (the offset in its step's memory),
 // streams(r), last_streamed(r) and gram_source(r, relin, lane, grams).
 
-// The source's process: region r's streamed Grams into `stagew` (none if r < 0).
+// The source's process: region r's streamed Grams into `stage0w` (its cascade 0 step's) and
+// `stage1w` (none if r < 0).
 template <class CFG>
-void cholesky_set_gram_source(int r, bool relin, typename CFG::T stagew[2][CFG::N_STAGE],
+void cholesky_set_gram_source(int r, bool relin, typename CFG::T stage0w[CFG::N_STAGE],
+                              typename CFG::T stage1w[CFG::N_STAGE],
                               hls::stream<typename CFG::Word>& grams) {
     FGC_BRANCH();  // csim cycle counting only: beside the region's other processes
-    if (r >= 0) CFG::gram_source(r, relin, stagew, grams);
+    if (r >= 0) CFG::gram_source(r, relin, stage0w, stage1w, grams);
 }
 
 // The region (cholesky_sets') with the Gram source putting region `src`'s streamed Grams into
-// stagew while the grams process reads the next region's from stager.
+// stage0w / stage1w while the grams process reads the next region's from stage0r / stage1r.
 template <class CFG>
 void cholesky_sets_beside(int s0, int s1, int n0, int n1, int q0, int q1, int src, bool relin,
                           typename CFG::T mu,
@@ -654,8 +659,10 @@ void cholesky_sets_beside(int s0, int s1, int n0, int n1, int q0, int q1, int sr
                           typename CFG::T d1w[CFG::MAX_F], typename CFG::T r1w[CFG::MAX_F],
                           const typename CFG::T d0r[CFG::MAX_F], const typename CFG::T r0r[CFG::MAX_F],
                           const typename CFG::T d1r[CFG::MAX_F], const typename CFG::T r1r[CFG::MAX_F],
-                          const typename CFG::T stager[2][CFG::N_STAGE],
-                          typename CFG::T stagew[2][CFG::N_STAGE],
+                          const typename CFG::T stage0r[CFG::N_STAGE],
+                          const typename CFG::T stage1r[CFG::N_STAGE],
+                          typename CFG::T stage0w[CFG::N_STAGE],
+                          typename CFG::T stage1w[CFG::N_STAGE],
                           hls::stream<typename CFG::Word>& grams, bool* npd0, bool* npd1,
                           bool* unfit0, bool* unfit1, bool* tiny0, bool* tiny1) {
 #pragma HLS DATAFLOW
@@ -664,9 +671,9 @@ void cholesky_sets_beside(int s0, int s1, int n0, int n1, int q0, int q1, int sr
     hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal1;
 #pragma HLS STREAM variable=frontal0 depth=DEPTH
 #pragma HLS STREAM variable=frontal1 depth=DEPTH
-    cholesky_set_gram_source<CFG>(src, relin, stagew, grams);
+    cholesky_set_gram_source<CFG>(src, relin, stage0w, stage1w, grams);
     cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
-    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, stager);
+    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, stage0r, stage1r);
     cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
                               unfit0);
     cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
@@ -697,8 +704,8 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
 #pragma HLS ARRAY_PARTITION variable=CONDBUF_K1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
 #pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
-#pragma HLS ARRAY_PARTITION variable=STAGE complete dim=1
-#pragma HLS ARRAY_PARTITION variable=STAGE complete dim=2
+#pragma HLS ARRAY_PARTITION variable=STAGE_K0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=STAGE_K1 complete dim=1
     FGC_PHASE(relin ? "hgc_beside" : "reassemble");
     bool good = true;
 #pragma HLS ALLOCATION function instances=cholesky_sets_beside<CFG> limit=1
@@ -725,15 +732,15 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
                                       HA0[1], HA1[1], NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF_K0[0],
                                       CONDBUF_K1[0], CONDBUF_K0[1], CONDBUF_K1[1], DPIV[0], RMAX[0],
                                       DPIV[2], RMAX[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3],
-                                      STAGE[1], STAGE[0], grams, &npd0, &npd1, &unfit0, &unfit1,
-                                      &tiny0, &tiny1);
+                                      STAGE_K0[1], STAGE_K1[1], STAGE_K0[0], STAGE_K1[0], grams,
+                                      &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         } else {
             cholesky_sets_beside<CFG>(s0, s1, n0, n1, q0, q1, src, relin, mu, HA0[1], HA1[1],
                                       HA0[0], HA1[0], NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF_K0[1],
                                       CONDBUF_K1[1], CONDBUF_K0[0], CONDBUF_K1[0], DPIV[1], RMAX[1],
                                       DPIV[3], RMAX[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2],
-                                      STAGE[0], STAGE[1], grams, &npd0, &npd1, &unfit0, &unfit1,
-                                      &tiny0, &tiny1);
+                                      STAGE_K0[0], STAGE_K1[0], STAGE_K0[1], STAGE_K1[1], grams,
+                                      &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         }
         FGC_JOIN();
         good = good && !npd0 && !npd1 && !unfit0 && !unfit1 && !tiny0 && !tiny1;
