@@ -9,10 +9,10 @@ float32 at 143 MHz, back-substitution by columns (the default on a chain).
 The what-if pieces are the plan's arithmetic with a term replaced, not designs that are built:
 ``flight`` (a step enters its cascade as the first Schur-complement row of the step before on the
 same end leaves that step's last pivot: the cascade's share of a region the interval, rows
-0 ... f - 1 plus the f pivots' depth, not the whole round), ``grams2`` (the grams process stores
-the two steps' first Grams side by side, four stage words a cycle), ``prod2`` (the HGC's entries
-loop two entries an iteration more, so an IMU instance costs the datapath's II, not the HGC's
-entries)."""
+0 ... f - 1 plus the f pivots' depth, not the whole round), ``prod2`` (the HGC's entries loop
+two entries an iteration more, so an IMU instance costs the datapath's II, not the HGC's
+entries). The grams process storing the two steps' first Grams side by side, the third piece
+this was written to weigh, is built (fgc_cascades.h's cholesky_set_firsts)."""
 
 from __future__ import annotations
 
@@ -42,9 +42,10 @@ def what_if(pieces: set[str]) -> None:
     """Replace the plan's terms named by ``pieces`` (module docstring) in units/cholesky.py."""
     cascades, source, ready = ch.cascades_phases, ch._gram_source, ch.beside_ready
 
-    def phases(tables, order, dims, cpe, ops, timing, lanes=1, cond_banks=1):
+    def phases(tables, order, dims, cpe, ops, timing, lanes=1, cond_banks=1,
+               staged=frozenset()):
         out = []
-        for ph in cascades(tables, order, dims, cpe, ops, timing, lanes, cond_banks):
+        for ph in cascades(tables, order, dims, cpe, ops, timing, lanes, cond_banks, staged):
             procs = []
             for p in ph.processes:
                 if "flight" in pieces and p.name.startswith("cascade"):
@@ -56,11 +57,6 @@ def what_if(pieces: set[str]) -> None:
                                + ch.cpe_round_depth(f, cpe, ops, waits))
                         gap = max(gap, ch.cpe_vecs(0, w, lanes) + 1)
                         p = replace(p, loops=(p.loops[0], Loop("flight", 1, 1, gap)))
-                if "grams2" in pieces and p.name.startswith("grams") and len(p.loops) > 1:
-                    half = (len(p.loops) - 1) // 2  # the two steps' loops side by side
-                    a, b = p.loops[1:1 + half], p.loops[1 + half:]
-                    both = max(sum(lp.cycles for lp in a), sum(lp.cycles for lp in b))
-                    p = replace(p, loops=(p.loops[0], Loop("both", 1, 1, both)))
                 procs.append(p)
             out.append(replace(ph, processes=tuple(procs)))
         return out
@@ -82,8 +78,7 @@ def main() -> None:
     args = ap.parse_args()
     if args.pieces:
         base = {"cpe": 40, "sets": 2, "lanes": 2}
-        rows = [(), ("grams2",), ("prod2",), ("flight",), ("grams2", "prod2"),
-                ("flight", "grams2"), ("flight", "grams2", "prod2")]
+        rows = [(), ("prod2",), ("flight",), ("flight", "prod2")]
         saved = ch.cascades_phases, ch._gram_source, ch.beside_ready
         for pieces in rows:
             what_if(set(pieces))
