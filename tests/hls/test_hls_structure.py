@@ -335,9 +335,9 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
     assert f"T_CMP_LAT = {plan.ops.compare.latency}," in kernel
     assert "T_MAXIMA = T_CMP_LAT;" in kernel
     assert "PARTIALS = T_PARTIALS," in kernel and "MAXIMA = T_MAXIMA," in kernel
-    for array, update in (("xp", "xp[xk] += x[i] * x[i];"), ("dp", "dp[k] += d * d;"),
+    for array, update in (("xp", "xp[k] += x[i] * x[i];"), ("dp", "dp[k] += d * d;"),
                           ("pp", "pp[k] += d * g[i];"),
-                          ("gp", "gp[gk] = a > gp[gk] ? a : gp[gk];")):
+                          ("gp", "gp[k] = a > gp[k] ? a : gp[k];")):
         at = units.index(update)
         loop = units[units.rindex("for (int e = 0;", 0, at):at]
         assert "#pragma HLS PIPELINE II=1\n" in loop, array

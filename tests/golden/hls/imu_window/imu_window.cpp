@@ -2310,7 +2310,12 @@ bool gram_entries_pair(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const
     return finite;
 }
 
-// block 0: the inputs of instance f (x's storage, then its measurements and noise)
+// gather_<b>: block b's inputs of instance f (x's storage, then its measurements and noise)
+// gather_trial_<b>: the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read
+// from the even address below it, 2 h + lo + i (h the line's half, lo the block's first data
+// word), so each read's bank is known and an instance's reads (w's words) take the two banks'
+// four ports; into registers (w), its data picked from them by the line's parity (2:1 muxes;
+// units/datapath.py's trial_data_ii)
 void gather_0(const T x[N_X], int f, T in[42], T dat[193]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2324,10 +2329,6 @@ void gather_0(const T x[N_X], int f, T in[42], T dat[193]) {
     for (int i = 0; i < 120; ++i) dat[73 + i] = DATA_BUF[line + 73 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 194 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_0(const T x[N_X], int f, T in[42], T dat[193]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
@@ -2763,7 +2764,6 @@ T noise_0(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 1: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2772,10 +2772,6 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
     for (int i = 0; i < 1; ++i) dat[12 + i] = DATA_BUF[line + 12 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 14 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_1(const T x[N_X], int f, T in[12], T dat[13]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
@@ -2894,7 +2890,6 @@ T noise_1(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 2: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2903,10 +2898,6 @@ void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
     for (int i = 0; i < 1; ++i) dat[3 + i] = DATA_BUF[line + 3 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 5 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_2(const T x[N_X], int f, T in[3], T dat[4]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
@@ -3023,7 +3014,6 @@ T noise_2(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 3: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -3032,10 +3022,6 @@ void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     for (int i = 0; i < 1; ++i) dat[6 + i] = DATA_BUF[line + 6 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 8 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_3(const T x[N_X], int f, T in[6], T dat[7]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
