@@ -98,6 +98,9 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     if stream is not None and stream.template is not program:
         raise HlsConfigError("internal error: the stream layout is not of the emitted Program")
     context["stream"] = None if stream is None else stream.context(config.linear_cxx, config.part)
+    context["leaf_lin"] = bool(context["stream"] and context["stream"]["marginal"])
+    if context["leaf_lin"]:
+        _leaf_context(context, stream.leaf_factors())
     context["stream_magic"], context["stream_result_magic"] = STREAM_MAGIC, STREAM_RESULT_MAGIC
     batch = getattr(stream, "batch", None)
     context["extra_sources"] = [f"{batch.project}.cpp"] if batch is not None else []
@@ -203,6 +206,21 @@ def accel_plan(program: Program, config: HlsConfig):
     unit sets and scalar types: :meth:`PlanOptions.for_config`)."""
     from fgc_backends.hls.plan import PlanOptions, build_plan
     return build_plan(program, PlanOptions.for_config(for_program(program, config), program))
+
+
+def _leaf_context(context: dict, leaf: frozenset) -> None:
+    """The marginal's linearisation (``linearize_all(X, true)``): per block type the instances
+    whose rows slot 0's step stacks (``block.leaf``, in the block's instance order), and whether
+    they are a prefix of its instances (then the loop only stops early) or need a table of their
+    own (``block.leaf_table``); the same for the small block types' shared loop."""
+    for b in context["blocks"]:
+        b.leaf = [f for f in b.instances if f in leaf]
+        b.leaf_table = b.leaf != list(b.instances[:len(b.leaf)])
+    small = context["small"]
+    if small:
+        picks = [i for i, f in enumerate(small["instances"]) if f in leaf]
+        small["leaf"] = picks
+        small["leaf_table"] = picks != list(range(len(picks)))
 
 
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:

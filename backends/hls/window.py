@@ -216,6 +216,18 @@ class WindowLayout(WindowTemplate):
                                     f"than its {self.kf_dim} tangent directions: the marginal "
                                     "prior would be singular")
 
+    def leaf_factors(self) -> frozenset:
+        """The template's factor instances whose rows slot 0's step stacks (the instances
+        entering the leaf step): all a marginal needs linearised, since its step reads no other
+        rows of AB (``linearize_all(X, true)``, fgc_stream.h's ``CFG::linearize``). Empty
+        without a marginal."""
+        from fgc_backends.cost.structure import entering_blocks
+
+        if self.leaf_step is None:
+            return frozenset()
+        t = self.template
+        return frozenset(entering_blocks(t, t.schedule.steps[self.leaf_step]))
+
     # -- what the emitter places ---------------------------------------------------------------
     def context(self, linear_cxx: str, part: str = DEFAULT_PART) -> dict:
         """The stream section's constants and tables (accel.h.jinja / accel.cpp.jinja);

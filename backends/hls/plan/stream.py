@@ -405,6 +405,7 @@ class WindowUpdateModel:
                                   move("x", kf)),
                     _stream_phase("kept_walk_base", move("x", kf))]
         if self.layout_marginal:  # the marginalisation but its linearisation and QR step
+            out.append(self._leaf_linearize())
             s = lay.leaf_step
             tables = _tables(t)
             out += [_stream_phase("marginal", *stack_loops(tables, s, max(1, t.solver.units),
@@ -440,6 +441,39 @@ class WindowUpdateModel:
                                              *(replace(loop, repeat=kept) for loop in keep_one),
                                              move("x", kept * kf), *write_tau))
         return tuple(out)
+
+    def _leaf_linearize(self) -> Phase:
+        """The marginal's linearisation (a sweep pass's, or a leaving keyframe's after LM moved):
+        ``linearize_all(X, true)``, LM's instance on the instances whose rows slot 0's step
+        stacks (:meth:`~fgc_backends.hls.window.WindowLayout.leaf_factors`) - the plan's
+        factor_jacobian and gradient loops at those instance counts, G zeroed as always."""
+        from fgc_backends.hls.units.datapath import small_blocks
+
+        t = self.layout.template
+        leaf = self.layout.leaf_factors()
+        count = Counter(f.block for i, f in enumerate(t.factors) if i in leaf)
+        small = sum(count[i] for i in small_blocks(t))
+        procs = []
+        for ph in self.plan.phases:
+            if ph.name not in ("factor_jacobian", "gradient"):
+                continue
+            for p in ph.processes:
+                name = p.name
+                if name == "factor_small_jacobian":
+                    loops = tuple(replace(lp, trip=small) for lp in p.loops)
+                elif name.startswith("factor_") and name.endswith("_jacobian"):
+                    n = count[int(name[len("factor_"):-len("_jacobian")])]
+                    loops = tuple(replace(lp, trip=n) for lp in p.loops)
+                elif name.startswith("reduce_"):
+                    n = count[int(name[len("reduce_"):])]
+                    loops = tuple(replace(lp, repeat=n) for lp in p.loops)
+                elif name == "zero_gradient":
+                    loops = p.loops
+                else:
+                    raise PlanError(f"internal error: the linearisation's process {name!r} "
+                                    "has no leaf form")
+                procs.append(Process(f"leaf_{name}", p.unit, loops))
+        return Phase("stream_leaf_linearize", False, tuple(procs), per="stream")
 
     def _merged(self):
         """The window kernel's plan, the batch kernel's units, memories and channels (a second
@@ -621,13 +655,13 @@ class WindowUpdateModel:
         steps = range(w, j)
         if not steps:
             return terms
-        linearize = self.group["factor_jacobian"] + self.group["gradient"]
+        linearize = st["stream_leaf_linearize"]
         marginal = sum(st["stream_marginal"]
                        + self.qr_cycles(self.zero_factors(c), False, leaf_only=True)
                        for c in steps)
         terms += [Term("sweep_linearize", linearize, len(steps), False,
-                       "a sweep pass with the window full: the window linearised at the "
-                       "estimates (LM's instance)"),
+                       "a sweep pass with the window full: slot 0's step's factors "
+                       "linearised at the estimates (LM's instance on its leaf instances)"),
                   Term("sweep_points", st["stream_lin_points"] + st["stream_kept_slot0"],
                        len(steps), False, "slots 0 and 1, and slot 0 for the kept task, copied"),
                   Term("sweep_marginal", marginal, 1, False,
@@ -791,10 +825,9 @@ class WindowUpdateModel:
             # LM's own linearisation instance; counted: the "relinearize" event)
             relin = _relinearize(ev)
             if relin:
-                terms.append(Term("relinearize", self.group["factor_jacobian"]
-                                  + self.group["gradient"], relin, False,
-                                  "keyframe leaving: the window linearised at its optimum "
-                                  "(LM moved after its last linearisation)"))
+                terms.append(Term("relinearize", st["stream_leaf_linearize"], relin, False,
+                                  "keyframe leaving: slot 0's step's factors linearised at "
+                                  "the optimum (LM moved after its last linearisation)"))
             marginal = st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True)
             terms.append(Term("marginal", marginal, 1, False,
                               "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0, τ's "
