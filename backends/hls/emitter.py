@@ -100,7 +100,8 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     context["stream"] = None if stream is None else stream.context(config.linear_cxx, config.part)
     context["leaf_lin"] = bool(context["stream"] and context["stream"]["marginal"])
     if context["leaf_lin"]:
-        _leaf_context(context, stream.leaf_factors())
+        _leaf_context(context, stream.leaf_factors(), stream.leaf_gone())
+        context["leaf_skip"] = stream.leaf_skip()
     context["stream_magic"], context["stream_result_magic"] = STREAM_MAGIC, STREAM_RESULT_MAGIC
     batch = getattr(stream, "batch", None)
     context["extra_sources"] = [f"{batch.project}.cpp"] if batch is not None else []
@@ -208,19 +209,26 @@ def accel_plan(program: Program, config: HlsConfig):
     return build_plan(program, PlanOptions.for_config(for_program(program, config), program))
 
 
-def _leaf_context(context: dict, leaf: frozenset) -> None:
-    """The marginal's linearisation (``linearize_all(X, true)``): per block type the instances
-    whose rows slot 0's step stacks (``block.leaf``, in the block's instance order), and whether
-    they are a prefix of its instances (then the loop only stops early) or need a table of their
-    own (``block.leaf_table``); the same for the small block types' shared loop."""
+def _leaf_context(context: dict, leaf: frozenset, gone: frozenset) -> None:
+    """The marginal's linearisation (``linearize_all(X, part)``): per block type the instances
+    whose rows slot 0's step stacks (``leaf``, part 1) and those of them left once keyframe 0 has
+    gone (``live``, part 2), in the block's instance order; a part's table (``*_index``) only
+    where its instances are not the first of the block's (then the loop only stops early). The
+    small block types' shared loop the same, by its entries."""
     for b in context["blocks"]:
-        b.leaf = [f for f in b.instances if f in leaf]
-        b.leaf_table = b.leaf != list(b.instances[:len(b.leaf)])
+        insts = list(b.instances)
+        for part, keep in (("leaf", leaf), ("live", leaf - gone)):
+            chosen = [f for f in insts if f in keep]
+            setattr(b, part, chosen)
+            setattr(b, f"{part}_index", chosen)
+            setattr(b, f"{part}_table", chosen != insts[:len(chosen)])
     small = context["small"]
     if small:
-        picks = [i for i, f in enumerate(small["instances"]) if f in leaf]
-        small["leaf"] = picks
-        small["leaf_table"] = picks != list(range(len(picks)))
+        for part, keep in (("leaf", leaf), ("live", leaf - gone)):
+            chosen = [k for k, f in enumerate(small["instances"]) if f in keep]
+            small[part] = chosen
+            small[f"{part}_index"] = chosen
+            small[f"{part}_table"] = chosen != list(range(len(chosen)))
 
 
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
