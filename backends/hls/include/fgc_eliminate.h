@@ -21,11 +21,11 @@
 // The unit-set wiring stays the kernel's (it depends on the number of unit sets: each set its
 // own memories and RTL instance): SETS holds its hooks, static functions the kernel defines
 // after its qr_set<u> and qr_level -
-//   SETS::stack(u, s, root_mu)   qr_stack<CFG>(s, root_mu, WORK<u>, 0, STEP_ROWS[s])
+//   SETS::stack(u, s, root_mu)   qr_stack<CFG>(s, root_mu, WORK<u>)
 //   SETS::level(has, s, bad)     the qr_level region: set u takes step s[u] where has[u]
 //                                (else none), bad[u] set if rank deficient
 //   SETS::commit(u, s)           qr_commit<CFG>(s, CONDBUF<u>, UPDBUF<u>)
-//   SETS::leaf_stack(s, skip, m) (qr_eliminate_leaf only) qr_stack<CFG>(s, 0, WORK0, skip, m)
+//   SETS::leaf_stack(s, skip, m) (qr_eliminate_leaf only) qr_stack_rows<CFG>(s, 0, WORK0, skip, m)
 //   SETS::leaf(s, m, bad)        (qr_eliminate_leaf only) step s's m rows on unit set 0 alone
 //
 // Included by the kernel inside its namespace (fgc::, or fgc::les for the mixed design), after
@@ -511,11 +511,11 @@ void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
 // ports, into any banks: each bank has two ports too), the damping rows a word a cycle; counted
 // as the plan's stack_loops price them. `skip`: bit k set, the k-th of the step's factors is
 // not stacked (the marginal's step once its rows hold nothing: qr_eliminate_leaf), `m` the rows
-// stacked (STEP_ROWS[s] less the skipped factors').
+// stacked (STEP_ROWS[s] less the skipped factors'); qr_stack: all of them.
 template <class CFG>
-void qr_stack(int s, typename CFG::T root_mu,
-              typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-              unsigned skip, int m) {
+void qr_stack_rows(int s, typename CFG::T root_mu,
+                   typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                   unsigned skip, int m) {
     typedef typename CFG::T T;
     FGC_PHASE("qr_stack");
     const int w = STEP_W[s], f = STEP_F[s];
@@ -600,6 +600,13 @@ void qr_stack(int s, typename CFG::T root_mu,
         }
         FGC_CYCLES("stack", 0, "damping", f, CFG::FILL_II, CFG::FILL_DEPTH);
     }
+}
+
+template <class CFG>
+void qr_stack(int s, typename CFG::T root_mu,
+              typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
+#pragma HLS INLINE
+    qr_stack_rows<CFG>(s, root_mu, bank, 0u, STEP_ROWS[s]);
 }
 
 // A unit set's result for step s into COND and NF, PORTS words a cycle.
