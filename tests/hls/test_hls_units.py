@@ -36,7 +36,7 @@ struct qr_cfg {
     typedef TT T;
     static const int MAX_ROWS = 40, MAX_COLS = 25, MAX_F = 12, N_UNITS = N;
     static const int LOCAL_COLS = fgc_units::ceil_div(MAX_COLS, N_UNITS);
-    static const int PARTIALS = 12, FOLD_II = PARTIALS - 1;
+    static const int PARTIALS = 12, FOLD_LAT = 12 * 4 + 9;  // ADD_LAT ceil(log2 P) + MUL_LAT
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;
     static constexpr double SINGULAR_EPS = STRICT ? 1e-12 : 1e-3;
 };
@@ -88,7 +88,11 @@ static void run_qr(int rows, int f, int s) {
     bool singular = false;
     fgc_units::qr_step<C>(work, rows, f, s, cond, update, &singular);
     cycles("cycles");
-    std::printf("flags %d %d\n", 0, int(singular));
+    int left = 0;  // words qr_step left non-zero in its banks (it leaves them zero)
+    for (int u = 0; u < C::N_UNITS; ++u)
+        for (int i = 0; i < C::MAX_ROWS; ++i)
+            for (int l = 0; l < C::LOCAL_COLS; ++l) left += !(work[u][i][l] == T(0));
+    std::printf("flags %d %d %d\n", 0, int(singular), left);
     const int last = rows < f + s ? rows : f + s;
     const int nf = last - f > 0 ? last - f : 0;
     std::vector<double> a(cond, cond + (cols <= C::MAX_COLS && f <= C::MAX_F ? f * cols : 0));
@@ -303,6 +307,7 @@ def test_qr_matches_kernel_and_numpy(driver, units):
     for (_, _, rows, f, s, _, a), res in zip(cases, run(driver, cases), strict=True):
         cond, upd, r = qr_expected(a, f, s)
         assert not res.singular
+        assert res.left == 0  # qr_step leaves its banks zero (qr_stack writes only the rows)
         scale = np.abs(r).max()
         # zeros left of the diagonal are written too (the driver fills NaN before)
         got_cond, got_upd = res.cond.reshape(f, -1), res.update.reshape(-1, s + 1)
@@ -336,8 +341,10 @@ def test_qr_singular_flags(driver):
     cases = [("qr", 4, 15, 4, 3, 0.0, dep), ("qr", 8, 15, 4, 3, 0.0, sep_dep),
              ("qr", 1, 3, 4, 2, 0.0, few), ("qr", 4, 15, 3, 2, 0.0, small),
              ("qr", -4, 15, 3, 2, 0.0, small), ("qr", 4, 41, 2, 2, 0.0, too_big)]
-    got = [r.singular for r in run(driver, cases)]
-    assert got == [True, False, True, False, True, True]
+    res = run(driver, cases)
+    assert [r.singular for r in res] == [True, False, True, False, True, True]
+    # rank deficient or not, a step within the configuration leaves its banks zero
+    assert [r.left for r in res[:5]] == [0] * 5
 
 
 def test_qr_float32(driver):

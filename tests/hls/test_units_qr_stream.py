@@ -40,7 +40,7 @@ struct cfg {
     typedef double T;
     static const int MAX_ROWS = 60, MAX_COLS = 32, MAX_F = 16, N_UNITS = N;
     static const int LOCAL_COLS = fgc_units::ceil_div(MAX_COLS, N_UNITS);
-    static const int PARTIALS = 4, FOLD_II = PARTIALS - 1;  // the float32 table's latencies
+    static const int PARTIALS = 4, FOLD_LAT = 4 * 2 + 3;  // the float32 table's latencies
     static const int ADD_LAT = 4, MUL_LAT = 3, DIV_LAT = 15, SQRT_LAT = 15;
     static constexpr double SINGULAR_EPS = 1e-12;
 };

@@ -506,12 +506,14 @@ void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
 #endif  // FGC_ELIMINATE_CHOLESKY
 
 #ifdef FGC_ELIMINATE_QR
-// Stack step s into a unit set's banks: every entry of its rows, zeros included. The zeroing
-// writes a word of all N_UNITS banks a cycle, the rows PORTS words a cycle (AB's or NF's two
-// ports, into any banks: each bank has two ports too), the damping rows a word a cycle; counted
-// as the plan's stack_loops price them. `skip`: bit k set, the k-th of the step's factors is
-// not stacked (the marginal's step once its rows hold nothing: qr_eliminate_leaf), `m` the rows
-// stacked (STEP_ROWS[s] less the skipped factors'); qr_stack: all of them.
+// Stack step s into a unit set's banks: every entry of its rows, zeros included. With
+// CFG::BANKS_ZERO (fgc_qr.h's qr_step, which leaves the banks zero; they start zero) only its
+// rows' entries are written, else the rows are zeroed first, a word of all N_UNITS banks a cycle
+// (fgc_qr_stream.h's banks). The rows go PORTS words a cycle (AB's or NF's two ports, into any
+// banks: each bank has two ports too), the damping rows a word a cycle; counted as the plan's
+// stack_loops price them. `skip`: bit k set, the k-th of the step's factors is not stacked (the
+// marginal's step once its rows hold nothing: qr_eliminate_leaf), `m` the rows stacked
+// (STEP_ROWS[s] less the skipped factors'); qr_stack: all of them.
 template <class CFG>
 void qr_stack_rows(int s, typename CFG::T root_mu,
                    typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
@@ -519,7 +521,8 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
     typedef typename CFG::T T;
     FGC_PHASE("qr_stack");
     const int w = STEP_W[s], f = STEP_F[s];
-    for (int e = 0, i = 0, c = 0; e < m * CFG::LOCAL_COLS; ++e) {
+    const int zero = CFG::BANKS_ZERO ? 0 : m * CFG::LOCAL_COLS;
+    for (int e = 0, i = 0, c = 0; e < zero; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BANKS
 #pragma HLS PIPELINE II=1
         for (int u = 0; u < CFG::N_UNITS; ++u) {
@@ -533,7 +536,7 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
             ++c;
         }
     }
-    FGC_CYCLES("stack", 0, "zero", m * CFG::LOCAL_COLS, CFG::FILL_II, CFG::FILL_DEPTH);
+    if (zero > 0) FGC_CYCLES("stack", 0, "zero", zero, CFG::FILL_II, CFG::FILL_DEPTH);
     int row = 0;
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS

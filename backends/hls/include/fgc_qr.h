@@ -20,7 +20,10 @@
 // columns, the right-hand side last. The work memory is banked N_UNITS ways by column: column c of
 // row i is work[c % N_UNITS][i][c / N_UNITS] (qr_put<CFG> / qr_get<CFG> write and read it, and
 // qr_scatter<CFG> fills the banks from a dense row-major matrix). Every entry of rows 0 ... rows-1,
-// columns 0 ... w must be written (zeros included); the memory is overwritten by the factor.
+// columns 0 ... w must hold the step's value (zeros included); qr_step leaves every word of the
+// memory it was given zero (the factor goes out through cond and update), so a caller whose banks
+// start zero (the emitted design's: globals, zero in the bitstream) writes only a step's
+// non-zero entries (fgc_eliminate.h's qr_stack with CFG::BANKS_ZERO).
 // Declare it with `#pragma HLS ARRAY_PARTITION variable=work complete dim=1`: each bank is then
 // its own memory, passed to one Update process (UG1399, partitioned arrays in dataflow).
 //
@@ -71,10 +74,10 @@
 //                     work[u] (read and written by that process only: its memory, no channel).
 //                     The unit holding column j + 1 takes that column's dot product while the
 //                     vector arrives, updates it and streams it (rows j + 1 ... rows - 1) to the
-//                     Evaluate (colq[u]) first; its other columns are batched: every column's
-//                     dot product, then every fold and scale by tau, then every column's update,
-//                     three pipelined loops that each pay their depth once per reflection. Each
-//                     column's entry in row j, final now, goes to the collector (rowq[u]);
+//                     Evaluate (colq[u]) first; its other columns go through one pipelined
+//                     loop, column l's dot product beside column l - 1's update (dot_axpy), which
+//                     pays its depth once per reflection. Each column's entry in row j, final
+//                     now, goes to the collector (rowq[u]);
 //   qr_evaluate       takes column j + 1 from that stream as it arrives: its words below the
 //                     pivot into vout, its squared norm and pivot into hout (the next region's
 //                     qr_finish does the rest);
@@ -126,7 +129,7 @@ struct qr_config_example {
     static const int N_UNITS = 4;    // Update units (n_u, --units)
     static const int LOCAL_COLS = ceil_div(MAX_COLS, N_UNITS);  // columns in one bank
     static const int PARTIALS = 12;  // interleaved partial sums of a dot product (= ADD_LAT: II 1)
-    static const int FOLD_II = PARTIALS - 1;  // fold_scale's II: the fold's adds on one adder
+    static const int FOLD_LAT = 12 * 4 + 9;  // ADD_LAT ceil(log2 PARTIALS) + MUL_LAT: fold, scale
     static const int ADD_LAT = 12, MUL_LAT = 9, DIV_LAT = 57, SQRT_LAT = 57;  // float64 (plan)
     static constexpr double SINGULAR_EPS = 1e-12;
 };
@@ -249,9 +252,9 @@ void qr_finish(const qr_word<typename CFG::T> hin[2],
 //
 // The column j + 1 (the next pivot) is on the critical path: its owner takes its dot product
 // while the vector arrives, updates it and streams it to the Evaluate first. The unit's other
-// columns go through three flattened pipelined loops (every column's dot product, then the folds
-// and scales, then every column's update), so a unit pays each pipeline's depth once per
-// reflection, not once per column.
+// columns go through one flattened pipelined loop that takes a column's dot product beside the
+// update of a column before it (dot_axpy: its multiply-add pairs are both busy every cycle), so
+// a unit pays the pipeline's depth once per reflection, not once per column.
 template <class CFG, int U>
 void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CFG::T> >& vin,
                hls::stream<qr_word<typename CFG::T> >& tin,
@@ -260,8 +263,14 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
-    static_assert(CFG::FOLD_II == CFG::PARTIALS - 1 && CFG::FOLD_II >= 1,
-                  "FOLD_II = PARTIALS - 1: fold_scale's adds on one adder");
+    static_assert(CFG::FOLD_LAT == CFG::ADD_LAT * ceil_log2(CFG::PARTIALS) + CFG::MUL_LAT,
+                  "FOLD_LAT = ADD_LAT ceil(log2 PARTIALS) + MUL_LAT: a column's fold and scale");
+    // the dot_axpy loop's lags (iterations at II 1): a word's dot product lands in its partial
+    // sum QR_DOT_LAT after it is read; a column's fold and scale take CFG::FOLD_LAT
+    enum {
+        QR_DOT_LAT = CFG::MUL_LAT + CFG::ADD_LAT,
+        QR_HELD = 1 << ceil_log2(CFG::MAX_ROWS + QR_DOT_LAT + CFG::FOLD_LAT)  // > lag
+    };
     T v[CFG::MAX_ROWS];
     int at[CFG::MAX_ROWS];
     const int n = vin.read().idx;  // {0, n}
@@ -319,18 +328,30 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     // tau and R_jj (qr_finish's last words; what follows waits for them)
     FGC_WAIT("qr_update", U, "qr_finish", 0, "tau");
     const T tau = tin.read().val;
-    const T r_jj = tin.read().val;
+    tin.read();  // R_jj: the collector has it from qr_finish
     FGC_CYCLES("qr_update", U, "tail", 2, 1, 1);
-    if (n > 0 && j >= 0 && j % CFG::N_UNITS == U) {  // the pivot column: R_jj, zeros below
+    // The banks are left zero (what qr_stack relies on: it writes only the next step's rows):
+    // column j, no longer read, is zeroed on its active rows (the others are zero), and every
+    // row's entries are zeroed as they go to the collector (row j is no reflection's after j).
+    if (j >= 0 && j % CFG::N_UNITS == U) {
         const int l = j / CFG::N_UNITS;
-        bank[j][l] = r_jj;  // at[0] == j
-        // trip n - 1, II 1, depth 1
-        for (int a = 1; a < n; ++a) {
+        if (n > 0) {  // the pivot column's active rows (at[0] == j): trip n, II 1, depth 1
+            for (int a = 0; a < n; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-            bank[at[a]][l] = T(0);
+                bank[at[a]][l] = T(0);
+            }
+            FGC_CYCLES("qr_update", U, "pivot_column", n, 1, 1);
+        } else {
+            // no reflection: the column's entries are zero but for squares that underflow (see
+            // the arithmetic above), zeroed here too: trip rows - j, II 1, depth 1
+            for (int i = j; i < rows; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+                bank[i][l] = T(0);
+            }
+            FGC_CYCLES("qr_update", U, "zero_column", rows - j, 1, 1);
         }
-        FGC_CYCLES("qr_update", U, "pivot_column", n, 1, 1);
     }
     if (next_here) {
         if (n > 1) {
@@ -367,8 +388,9 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
             }
             FGC_CYCLES("qr_update", U, "next_column", rows - c0, 1, 1);
         }
-        if (j >= 0) {  // row j is final now: its entry in column c0 to the collector
+        if (j >= 0) {  // row j is final now: its entry in column c0 to the collector, 0 here
             rowout.write(bank[j][l0]);
+            bank[j][l0] = T(0);
             FGC_CYCLES("qr_update", U, "row_out", 1, 1, 1);
         }
     }
@@ -377,71 +399,87 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     const int r = c0 < cols ? (cols - 1 - U) / CFG::N_UNITS - lb + 1 : 0;
     if (r <= 0) return;
     if (n > 1) {
+        // One flattened loop: column l's dot product v.x beside the update x -= (tau v.x) v of
+        // the column before it (the same operators, both busy every cycle, where a dot pass
+        // and then an update pass over all r columns would leave each idle half the time).
+        // Three streams of column words run through it, each one word an iteration, column
+        // by column, row a of a column at active row at[a]:
+        //   dot   (iteration e = t for word t = (l - lb) n + a, e < n r): x = bank[at[a]][l]
+        //         into P interleaved partial sums of column l (a partial is met again P >= La
+        //         iterations later; its first term overwrites it) and into the held ring;
+        //   fold  (e = t + QR_DOT_LAT, the word a column's last, a = n - 1: its partial sums
+        //         have landed): scaled[l] = tau * fold(part[l]);
+        //   axpy  (e = t + lag, lag = n - 1 + QR_DOT_LAT + FOLD_LAT: the column's scaled is
+        //         ready, FOLD_LAT after its fold): x from the held ring (the bank's two
+        //         ports are the dot's read and this write), x - scaled[l] v_a into the bank,
+        //         the entry in row j (a = 0) to the collector.
+        // trip n r + lag, II 1, depth Lm + La (the axpy's multiply-add)
+        enum { MAX_BATCH = CFG::MAX_ROWS * CFG::LOCAL_COLS + QR_HELD };  // pragma constants
+        // the partial sums in registers: in one iteration the fold reads a column's P partials
+        // while the dot adds into another column's
         T part[CFG::LOCAL_COLS][P];
-#pragma HLS ARRAY_PARTITION variable=part complete dim=2
+#pragma HLS ARRAY_PARTITION variable=part complete dim=0
         T scaled[CFG::LOCAL_COLS];
-        enum { MAX_BATCH = CFG::MAX_ROWS * CFG::LOCAL_COLS };  // pragma constants: enums
-        // every column's v.x, column by column, P interleaved partial sums each (a partial is
-        // met again P >= La iterations later; its first term overwrites it):
-        // trip n r, II 1, depth Lm + La
-        for (int e = 0, l = lb, a = 0; e < n * r; ++e) {
+        T held[QR_HELD];  // the dot's words until their axpy (lag < QR_HELD iterations later)
+        const int words = n * r;
+        const int lag = n - 1 + QR_DOT_LAT + CFG::FOLD_LAT;
+        int ld = lb, ad = 0, lq = lb, aq = 0, lx = lb, ax = 0;
+        for (int e = 0; e < words + lag; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-            const T term = v[a] * bank[at[a]][l];
-            part[l][a % P] = a < P ? term : T(part[l][a % P] + term);
-            if (a == n - 1) {
-                a = 0;
-                ++l;
-            } else {
-                ++a;
-            }
-        }
-        FGC_CYCLES("qr_update", U, "dots", n * r, 1, CFG::MUL_LAT + CFG::ADD_LAT);
-        // per column the partial sums folded (a ceil(log2 P)-deep adder tree) and scaled by tau,
-        // the tree's P - 1 adds on one adder (II P - 1: one issue slot each; at II 1 the loop
-        // would hold P - 1 adders in every unit): trip r, II P - 1, depth La ceil(log2 P) +
-        // (P - 1) + Lm (the tree's levels plus an issue slot per add, a bound)
-        for (int l = lb; l < lb + r; ++l) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
-#pragma HLS PIPELINE II=CFG::FOLD_II
-            T p[P];
-#pragma HLS ARRAY_PARTITION variable=p complete
-            for (int t = 0; t < P; ++t) {
-#pragma HLS UNROLL
-                p[t] = t < n ? part[l][t] : T(0);
-            }
-            scaled[l] = tau * fold_partials<T, P>(p);
-        }
-        FGC_CYCLES("qr_update", U, "fold_scale", r, CFG::FOLD_II,
-                   CFG::ADD_LAT * ceil_log2(P) + (P - 1) + CFG::MUL_LAT);
-        // x -= (tau v.x) v, column by column; the entry in row j (active row 0) goes to the
-        // collector as it is updated: trip n r, II 1, depth Lm + La
-        // (each entry (at[a], l) is read and written once: the active rows at[] are distinct,
-        // so no iteration reads what another wrote)
-        for (int e = 0, l = lb, a = 0; e < n * r; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
-#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=scaled inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=held inter true distance=CFG::FOLD_LAT
 #pragma HLS DEPENDENCE variable=bank inter false
-            const T x = bank[at[a]][l] - scaled[l] * v[a];
-            bank[at[a]][l] = x;
-            if (a == 0) rowout.write(x);
-            if (a == n - 1) {
-                a = 0;
-                ++l;
-            } else {
-                ++a;
+            if (e < words) {  // dot: word e
+                const T x = bank[at[ad]][ld];
+                held[e & (QR_HELD - 1)] = x;
+                const T term = v[ad] * x;
+                part[ld][ad % P] = ad < P ? term : T(part[ld][ad % P] + term);
+                if (ad == n - 1) {
+                    ad = 0;
+                    ++ld;
+                } else {
+                    ++ad;
+                }
+            }
+            if (e >= QR_DOT_LAT && e < words + QR_DOT_LAT) {  // fold: word e - QR_DOT_LAT
+                if (aq == n - 1) {
+                    T p[P];
+#pragma HLS ARRAY_PARTITION variable=p complete
+                    for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+                        p[t] = t < n ? part[lq][t] : T(0);
+                    }
+                    scaled[lq] = tau * fold_partials<T, P>(p);
+                    aq = 0;
+                    ++lq;
+                } else {
+                    ++aq;
+                }
+            }
+            if (e >= lag) {  // axpy: word e - lag (each entry (at[a], l) written once)
+                const T x = held[(e - lag) & (QR_HELD - 1)] - scaled[lx] * v[ax];
+                // row j (a = 0) to the collector, 0 in the bank
+                bank[at[ax]][lx] = ax == 0 ? T(0) : x;
+                if (ax == 0) rowout.write(x);
+                if (ax == n - 1) {
+                    ax = 0;
+                    ++lx;
+                } else {
+                    ++ax;
+                }
             }
         }
-        FGC_CYCLES("qr_update", U, "axpys", n * r, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+        FGC_CYCLES("qr_update", U, "dot_axpy", words + lag, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     } else if (j >= 0) {
         // no reflection (an all-zero column: row j as it is) or the pivot row's negation (one
-        // active row), each entry to the collector: trip r, II 1, depth 1
+        // active row), each entry to the collector (0 in the bank): trip r, II 1, depth 1
         for (int l = lb; l < lb + r; ++l) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
 #pragma HLS PIPELINE II=1
             const T x = n == 1 ? T(-bank[j][l]) : bank[j][l];
-            bank[j][l] = x;
+            bank[j][l] = T(0);
             rowout.write(x);
         }
         FGC_CYCLES("qr_update", U, n == 1 ? "negate_rows" : "rows_out", r, 1, 1);

@@ -81,8 +81,9 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 loops.append(Loop("pivot_word", 1, 1, 1))
             waits.append((len(procs), len(loops), 1, "tau"))
             loops.append(Loop("tail", 2, 1, 1))
-            if n > 0 and j >= 0 and j % units == u:
-                loops.append(Loop("pivot_column", n, 1, 1))
+            if j >= 0 and j % units == u:  # the pivot column zeroed (fgc_qr.h: banks left 0)
+                loops.append(Loop("pivot_column", n, 1, 1) if n > 0 else
+                             Loop("zero_column", rows - j, 1, 1))
             if next_here:  # updated and streamed to the Evaluate first
                 if n > 1:
                     loops += [Loop("scale", 1, 1, lm),
@@ -97,10 +98,11 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             lb = c0 // units + (1 if next_here else 0)
             r = (cols - 1 - u) // units - lb + 1 if c0 < cols else 0
             if r > 0 and n > 1:
-                # fold_scale: the fold's p - 1 adds on one adder (II p - 1)
-                loops += [Loop("dots", n * r, 1, lm + la),
-                          Loop("fold_scale", r, p - 1, la * tree + (p - 1) + lm),
-                          Loop("axpys", n * r, 1, lm + la)]
+                # dot_axpy: a column's dot product beside the update of the column before it;
+                # a word's update lag = n - 1 + (its dot's multiply-add) + (the fold and scale)
+                # iterations after its dot
+                lag = n - 1 + (lm + la) + (la * tree + lm)
+                loops.append(Loop("dot_axpy", n * r + lag, 1, lm + la))
             elif r > 0 and j >= 0:
                 loops.append(Loop("negate_rows" if n == 1 else "rows_out", r, 1, 1))
             procs.append(loops)
@@ -123,9 +125,10 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
 def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[BoundLoop, ...]]:
     """The operators of one unit set's Evaluate (qr_evaluate, qr_finish, and qr_pivot_check's
     threshold) and of one Update unit (qr_update<CFG, U>) as Vitis binds fgc_qr.h's text: each
-    pipelined loop its own operators at its II (``fold_scale``, at II P - 1, folds
-    ``fold_partials<P>``'s P - 1 adds on one adder beside its multiplier), the sequential code
-    one operator of each kind it uses. qr_step's two parity call sites of qr_reflection share
+    pipelined loop its own operators at its II (``dot_axpy`` at II 1: the dot's and the axpy's
+    multiply-adds and a column's fold, ``fold_partials<P>``'s P - 1 adds and the scale's
+    multiplier, in every iteration's schedule), the sequential code one operator of each kind
+    it uses. qr_step's two parity call sites of qr_reflection share
     one instance (its ALLOCATION function limit=1), so each unit is one RTL copy.
     ``partials``: CFG::PARTIALS."""
     p = partials
@@ -136,9 +139,7 @@ def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[Bound
                 BoundLoop("pivot_check", (("mul", 1),), 0))
     update = (BoundLoop("vector_dot", (("add", 1), ("mul", 1)), 1),
               BoundLoop("axpy_next_column", (("add", 1), ("mul", 1)), 1),
-              BoundLoop("dots", (("add", 1), ("mul", 1)), 1),
-              BoundLoop("fold_scale", (("add", p - 1), ("mul", 1)), p - 1),
-              BoundLoop("axpys", (("add", 1), ("mul", 1)), 1),
+              BoundLoop("dot_axpy", (("add", p + 1), ("mul", 3)), 1),
               # the next pivot column's fold (fold_partials<P + 1>), its pivot term and scale
               BoundLoop("fold_scale_next", (("add", p),), 0),
               BoundLoop("pivot_term_scale", (("mul", 2),), 0))
@@ -146,13 +147,14 @@ def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[Bound
 
 
 def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
-                timing: dict) -> list[Loop]:
-    """accel.cpp.jinja's stack() of step s into its unit set's banks: the rows zeroed (all
-    n_u banks a cycle), each factor's rows [A | b] and each child's new-factor rows
-    :data:`PORTS` words a cycle, the damping rows' diagonal."""
+                timing: dict, banks_zero: bool = True) -> list[Loop]:
+    """fgc_eliminate.h's qr_stack of step s into its unit set's banks: unless ``banks_zero``
+    (fgc_qr.h's qr_step leaves its banks zero: CFG::BANKS_ZERO; not fgc_qr_stream.h's) the
+    rows zeroed (all n_u banks a cycle), then each factor's rows [A | b] and each child's
+    new-factor rows :data:`PORTS` words a cycle, the damping rows' diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
-    loops = [kernel_loop("zero", m * local, "fill", timing)]
+    loops = [] if banks_zero else [kernel_loop("zero", m * local, "fill", timing)]
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
         fac = tables["STEP_FACTORS"][e]
@@ -259,7 +261,8 @@ def _levels(ctx, sets, by_index, damping) -> None:
         stack = [Process("root_mu", "qr_stack", (kernel_loop("root_mu", 1, "root", timing),))] \
             if li == 0 else []
         stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
-            tables, i, opts.units, max_w, damping, timing))) for i in level]
+            tables, i, opts.units, max_w, damping, timing, opts.qr_unit != "stream")))
+            for i in level]
         ctx.add_phase("solve", Phase(f"qr_stack_level{li}", False, tuple(stack), linear=True))
         # eliminate_all hands a level's steps to the unit sets `sets` at a time, in level
         # order: each chunk a DATAFLOW region of its sets side by side, the chunks one after

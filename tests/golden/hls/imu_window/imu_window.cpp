@@ -3458,7 +3458,7 @@ struct LesConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int SCATTER_II = 1, SCATTER_DEPTH = 6;
     static const int PARTIALS = 4;  // interleaved partial sums (= ADD_LAT: II 1)
-    static const int FOLD_II = PARTIALS - 1;  // fgc_qr.h's fold_scale: the fold on one adder
+    static const int FOLD_LAT = 11;  // fgc_qr.h's dot_axpy: ADD_LAT ceil(log2 PARTIALS) + MUL_LAT
     static const int ADD_LAT = 4;  // one a line: the second reader resolves them by name
     static const int MUL_LAT = 3;
     static const int DIV_LAT = 15, SQRT_LAT = 15;

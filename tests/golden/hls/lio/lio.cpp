@@ -3556,11 +3556,12 @@ struct LesConfig {
     static const int TRIP_BANKS = 696;  // a step's rows in the banks
     static const int TRIP_ROWS = 1349;  // a factor's rows, PORTS words a cycle
     static const int TRIP_UPDATE = 481;  // a new factor, PORTS words a cycle
+    static const bool BANKS_ZERO = true;  // qr_step leaves its banks zero: qr_stack writes a step's rows only
     static const int FILL_II = 1, FILL_DEPTH = 1;
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int SCATTER_II = 1, SCATTER_DEPTH = 6;
     static const int PARTIALS = 4;  // interleaved partial sums (= ADD_LAT: II 1)
-    static const int FOLD_II = PARTIALS - 1;  // fgc_qr.h's fold_scale: the fold on one adder
+    static const int FOLD_LAT = 11;  // fgc_qr.h's dot_axpy: ADD_LAT ceil(log2 PARTIALS) + MUL_LAT
     static const int ADD_LAT = 4;  // one a line: the second reader resolves them by name
     static const int MUL_LAT = 3;
     static const int DIV_LAT = 15, SQRT_LAT = 15;
