@@ -418,11 +418,19 @@ class WindowUpdateModel:
             stack = stack_loops(tables, s, max(1, t.solver.units), plan_sizes(t)["MAX_W"],
                                 t.solver.method == "lm", kt)
             # once keyframe 0 has left (live): its factors that hold nothing are not stacked
-            # (qr_stack's skip: their rows loops not run, the zeroing over the rows left)
+            # (qr_stack_rows' skip: their rows loops not run; a zeroing, where the banks are
+            # not left zero, over the rows left)
             mask, rows = lay.leaf_skip()
-            local = stack[0].trip // tables["STEP_ROWS"][s]
-            live = [replace(stack[0], trip=rows * local)] + [
-                lp for k, lp in enumerate(stack[1:]) if not (mask >> k) & 1]
+            live, k = [], 0
+            for lp in stack:
+                if lp.name == "zero":
+                    live.append(replace(lp, trip=lp.trip // tables["STEP_ROWS"][s] * rows))
+                elif lp.name == "factor_rows":
+                    if not (mask >> k) & 1:
+                        live.append(lp)
+                    k += 1
+                else:
+                    live.append(lp)
             tail = (*commit_loops(tables, s, kt, False), move("rows", n * (n + 1)), *write_tau)
             out += [_stream_phase("marginal", *stack, *tail),
                     _stream_phase("marginal_live", *live, *tail),
