@@ -103,6 +103,13 @@ def _processes_in(folder: Path) -> list[str]:
     return found
 
 
+def _default_sigint() -> None:
+    """Ctrl-C's default action in the command's process: a shell without job control starts a
+    background job (``pytest &``) with SIGINT ignored, the command would inherit that and
+    Python would then install no KeyboardInterrupt handler (every run "finished")."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def interrupt(name: str, delay: float, spec: Path, cache: Path, work: Path) -> str:
     """Run command ``name``, SIGINT its process group after ``delay`` s, check what it left;
     returns "interrupted" or "finished" (done before the signal)."""
@@ -114,7 +121,7 @@ def interrupt(name: str, delay: float, spec: Path, cache: Path, work: Path) -> s
     args = [a.format(spec=spec, out=out) for a in {**COMMANDS, **MORE_COMMANDS}[name]]
     proc = subprocess.Popen([sys.executable, "-m", "fgc_cli", *args], env=_env(tmp, cache),
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            start_new_session=True)
+                            start_new_session=True, preexec_fn=_default_sigint)
     time.sleep(delay)
     with contextlib.suppress(ProcessLookupError):  # already done
         os.killpg(proc.pid, signal.SIGINT)  # Ctrl-C: the whole foreground group
