@@ -6,13 +6,13 @@ float32 at 143 MHz, back-substitution by columns (the default on a chain).
                                                  # BRAM36, fits; the 5 -> 80 CPEs ratios
     python bench/bench_flight.py --pieces        # what each further piece would buy (what-if)
 
-The what-if pieces are the plan's arithmetic with a term replaced, not designs that are built:
+The what-if piece is the plan's arithmetic with a term replaced, not a design that is built:
 ``flight`` (a step enters its cascade as the first Schur-complement row of the step before on the
 same end leaves that step's last pivot: the cascade's share of a region the interval, rows
-0 ... f - 1 plus the f pivots' depth, not the whole round), ``prod2`` (the HGC's entries loop
-two entries an iteration more, so an IMU instance costs the datapath's II, not the HGC's
-entries). The grams process storing the two steps' first Grams side by side, the third piece
-this was written to weigh, is built (fgc_cascades.h's cholesky_set_firsts)."""
+0 ... f - 1 plus the f pivots' depth, not the whole round). Built since: the grams process
+storing the two steps' first Grams side by side (fgc_cascades.h's cholesky_set_firsts) and the
+HGC's third entries lane with two cascades (units/cholesky.py's gram_third: the IMU Grams at
+the datapath's pace, 166 words an instance instead of 248)."""
 
 from __future__ import annotations
 
@@ -40,7 +40,7 @@ def design(cpe: int, sets: int, lanes: int):
 
 def what_if(pieces: set[str]) -> None:
     """Replace the plan's terms named by ``pieces`` (module docstring) in units/cholesky.py."""
-    cascades, source, ready = ch.cascades_phases, ch._gram_source, ch.beside_ready
+    cascades = ch.cascades_phases
 
     def phases(tables, order, dims, cpe, ops, timing, lanes=1, cond_banks=1,
                staged=frozenset()):
@@ -61,15 +61,7 @@ def what_if(pieces: set[str]) -> None:
             out.append(replace(ph, processes=tuple(procs)))
         return out
 
-    def gram_source(key, lay, relin, steps, ii, timing):
-        return source(key, lay, relin, -(-steps // 2) if "prod2" in pieces and relin
-                      else steps, ii, timing)
-
-    def beside_ready(count, jac, rows, steps, ii, depth):
-        return ready(count, jac, rows, -(-steps // 2) if "prod2" in pieces else steps, ii,
-                     depth)
-
-    ch.cascades_phases, ch._gram_source, ch.beside_ready = phases, gram_source, beside_ready
+    ch.cascades_phases = phases
 
 
 def main() -> None:
@@ -78,14 +70,14 @@ def main() -> None:
     args = ap.parse_args()
     if args.pieces:
         base = {"cpe": 40, "sets": 2, "lanes": 2}
-        rows = [(), ("prod2",), ("flight",), ("flight", "prod2")]
-        saved = ch.cascades_phases, ch._gram_source, ch.beside_ready
-        for pieces in rows:
+        saved = ch.cascades_phases
+        for pieces in [(), ("flight",)]:
             what_if(set(pieces))
             cost = design(**base)
             print(f"{'+'.join(pieces) or 'as built':24s} #CPE 40 x2 L2 {cost.cycles:7,d} cycles "
-                  f"{88584 / cost.cycles:.2f}x the default #CPE 5 x1", flush=True)
-            ch.cascades_phases, ch._gram_source, ch.beside_ready = saved
+                  f"{88584 / cost.cycles:.2f}x the default #CPE 5 x1, {cost.dsp:,d} DSP",
+                  flush=True)
+            ch.cascades_phases = saved
         return
     table = {}
     for lanes in (1, 2):
