@@ -1,10 +1,12 @@
 """Paper B's scaling from 5 to 80 CPEs (issue 33 item 4) by the plan: imu_window N = 50, LM,
 float32 at 143 MHz, back-substitution by columns (the default on a chain).
 
-    python bench/bench_flight.py                 # #CPE 5 ... 120, one and two cascades, one and
+    python bench/bench_flight.py                 # #CPE 5 ... 120, one and two cascades (x2 C:
+                                                 # hgc_third_lane), one and
                                                  # two words a cycle: cycles / iteration, DSP,
                                                  # BRAM36, fits; the 5 -> 80 CPEs ratios
-    python bench/bench_flight.py --pieces        # what each further piece would buy (what-if)
+    python bench/bench_flight.py --pieces        # #CPE 40 x2 L2 with the third Gram lane and
+                                                 # steps in flight (what-if)
 
 The what-if piece is the plan's arithmetic with a term replaced, not a design that is built:
 ``flight`` (a step enters its cascade as the first Schur-complement row of the step before on the
@@ -31,11 +33,11 @@ from fgc_backends.hls.plan.model import Loop
 N = 50
 
 
-def design(cpe: int, sets: int, lanes: int):
+def design(cpe: int, sets: int, lanes: int, third: bool = False):
     program = compile_graph(example("imu_window").build(N=N), SolverConfig(
         method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"iw{cpe}")
     return plan_cost(accel_plan(program, HlsConfig(scalar="float", unit_sets=sets,
-                                                   cascade_lanes=lanes)))
+                                                   cascade_lanes=lanes, hgc_third_lane=third)))
 
 
 def what_if(pieces: set[str]) -> None:
@@ -71,9 +73,9 @@ def main() -> None:
     if args.pieces:
         base = {"cpe": 40, "sets": 2, "lanes": 2}
         saved = ch.cascades_phases
-        for pieces in [(), ("flight",)]:
+        for pieces in [(), ("third",), ("flight",), ("third", "flight")]:
             what_if(set(pieces))
-            cost = design(**base)
+            cost = design(**base, third="third" in pieces)
             print(f"{'+'.join(pieces) or 'as built':24s} #CPE 40 x2 L2 {cost.cycles:7,d} cycles "
                   f"{88584 / cost.cycles:.2f}x the default #CPE 5 x1, {cost.dsp:,d} DSP",
                   flush=True)
@@ -82,18 +84,20 @@ def main() -> None:
     table = {}
     for lanes in (1, 2):
         for cpe in (5, 20, 40, 80, 120):
-            for sets in (1, 2):
-                cost = design(cpe, sets, lanes)
-                table[cpe, sets, lanes] = cost
-                print(f"#CPE {cpe:3d} x{sets} L{lanes}: {cost.cycles:7,d} cycles, "
+            for sets, third in ((1, False), (2, False), (2, True)):
+                cost = design(cpe, sets, lanes, third)
+                table[cpe, sets + third, lanes] = cost
+                print(f"#CPE {cpe:3d} x{sets}{' C' if third else '  '} L{lanes}: "
+                      f"{cost.cycles:7,d} cycles, "
                       f"{cost.dsp:5,d} DSP, {cost.bram36:6.1f} BRAM36, "
                       f"{'fits' if cost.fits else 'over: ' + ','.join(cost.over)}", flush=True)
     default5 = table[5, 1, 1].cycles
     for lanes in (1, 2):
-        for sets, cpe in ((1, 80), (2, 40)):
+        for sets, cpe in ((1, 80), (2, 40), (3, 40)):
             c = table[cpe, sets, lanes].cycles
             same = table[5, 1, lanes].cycles
-            print(f"80 CPEs as #CPE {cpe} x{sets} L{lanes}: {default5 / c:.2f}x the default "
+            name = "x2 + the third Gram lane" if sets == 3 else f"x{sets}"
+            print(f"80 CPEs as #CPE {cpe} {name} L{lanes}: {default5 / c:.2f}x the default "
                   f"#CPE 5 x1 ({default5:,d}), {same / c:.2f}x #CPE 5 x1 L{lanes} ({same:,d})")
 
 

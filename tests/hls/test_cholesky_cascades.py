@@ -228,8 +228,8 @@ def test_a_third_gram_lane_keeps_up_with_the_imu_datapath():
     # never the last row (the += into G stays in lane A)
     program = compile_graph(imu_window.build(N=50), SolverConfig(
         method="lm", linear="cholesky", cpe=40, precision="float32"), name="iw40")
-    plans = {k: accel_plan(program, HlsConfig(scalar="float", unit_sets=k, cascade_lanes=2))
-             for k in (1, 2)}
+    plans = {k: accel_plan(program, HlsConfig(scalar="float", unit_sets=k, cascade_lanes=2,
+                                              hgc_third_lane=True)) for k in (1, 2)}
     procs = [p for ph in plans[2].phases for p in ph.processes]
     lane_a, lane_b, lane_c, kb, kc, c0 = gram_third(program, 0, 32, jacobian_ii(procs),
                                                     jacobian_cycles(procs))
@@ -250,6 +250,11 @@ def test_a_third_gram_lane_keeps_up_with_the_imu_datapath():
     assert "stage_c" not in {m.name for m in plans[1].memories}
     assert next(p for ph in plans[1].phases for p in ph.processes
                 if p.name == "reduce_0").loops[1].trip == 49 * 248
+    # off by default (DesignOptions.hgc_third_lane): two lanes, the plan's DSP without lane C
+    off = accel_plan(program, HlsConfig(scalar="float", unit_sets=2, cascade_lanes=2))
+    assert "stage_c" not in {m.name for m in off.memories}
+    assert plan_cost(plans[2]).dsp - plan_cost(off).dsp == kc * 3 + (kc - 1) * 2
+    assert plan_cost(plans[2]).cycles < plan_cost(off).cycles
 
 
 # heavy (about two minutes on 2 cores): the third lane's Grams through the C simulation
@@ -260,7 +265,8 @@ def test_the_third_gram_lane_matches_the_simulator(tmp_path):
     graph = imu_window.build(N=20)
     program = compile_graph(graph, SolverConfig(method="lm", linear="cholesky", cpe=4),
                             name="lanec")
-    project = emit(program, tmp_path, HlsConfig(scalar="double", unit_sets=2))
+    project = emit(program, tmp_path, HlsConfig(scalar="double", unit_sets=2,
+                                                hgc_third_lane=True))
     text = (project.directory / f"{project.name}.cpp").read_text()
     assert "BLOCK0_GRAM_PC" in text and "L GRAM_BC[" in text
     data = problem_data(graph, program)

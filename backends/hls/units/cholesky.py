@@ -1017,7 +1017,7 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
     banks = {"cond_banks": ctx.opts.backsub_lanes} if passes is beside_set_passes else {}
     # two cascades: a third entries lane (gram_third) where the first solve is faster by it
     third = None
-    if passes is beside_set_passes:
+    if passes is beside_set_passes and ctx.opts.hgc_third_lane:
         third = gram_third(program, big, ctx.opts.hgc_lanes, jacobian_ii(region.processes),
                            jacobian_cycles(region.processes))
     best = None
