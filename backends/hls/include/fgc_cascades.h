@@ -87,17 +87,8 @@ void cholesky_set_maps(int s0, int s1, int map0[CFG::MAX_W + 1], int map1[CFG::M
 // further ones added one entry a cycle (as cholesky_assemble_first / _adds). A factor whose Gram
 // the HGC streams beside the elimination (CFG::staged(fac) >= 0: its offset in its step's memory
 // of its region's stage lane) is read from `stage` (the lane the Gram source filled a pass
-// before) instead of GRAM, its lane-C entries (CFG::NC > 0: packed positions CFG::C0 ...) from
-// `stagec` (cholesky_set_staged).
-template <class CFG>
-typename CFG::T cholesky_set_staged(const typename CFG::T stage[CFG::N_STAGE],
-                                    const typename CFG::T stagec[CFG::N_STAGE_C], int so,
-                                    int soc, int k) {
-#pragma HLS INLINE
-    const int c = k - CFG::C0;
-    return CFG::NC > 0 && c >= 0 && c < CFG::NC ? stagec[soc + c] : stage[so + k];
-}
-
+// before) instead of GRAM, its lane-C entries (CFG::NC > 0: packed positions CFG::C0 ...
+// CFG::C0 + CFG::NC - 1) from `stagec` (the lane's memory of lane C, NC words an instance).
 template <class CFG>
 void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                              const typename CFG::T stage[CFG::N_STAGE],
@@ -123,7 +114,9 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
                     if (k + h < n) {
                         const int a = map[p], b = map[q];
                         const int lo = b < a ? b : a, hi = b < a ? a : b;
-                        ha[lo][hi >> 1][hi & 1] = so >= 0 ? cholesky_set_staged<CFG>(stage, stagec, so, soc, k + h) : GRAM[g0 + k + h];
+                        const int c = k + h - CFG::C0;
+                        const bool in_c = CFG::NC > 0 && c >= 0 && c < CFG::NC;
+                        ha[lo][hi >> 1][hi & 1] = so < 0 ? GRAM[g0 + k + h] : in_c ? stagec[soc + c] : stage[so + k + h];
                         if (q == p) {
                             q = 0;
                             ++p;
@@ -143,7 +136,9 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
             const int a = x < d ? FACTOR_COLMAP[cb + x] : w;
             const int b = FACTOR_COLMAP[cb + y];
             const int lo = b < a ? b : a, hi = b < a ? a : b;
-            ha[lo][hi >> 1][hi & 1] += so >= 0 ? cholesky_set_staged<CFG>(stage, stagec, so, soc, k) : GRAM[g0 + k];
+            const int c = k - CFG::C0;
+            const bool in_c = CFG::NC > 0 && c >= 0 && c < CFG::NC;
+            ha[lo][hi >> 1][hi & 1] += so < 0 ? GRAM[g0 + k] : in_c ? stagec[soc + c] : stage[so + k];
             if (y == x) {
                 ++x;
                 y = 0;
@@ -190,7 +185,9 @@ void cholesky_set_firsts(int n0, int n1,
             if (k + h < m0) {
                 const int a = map0[p0], b = map0[q0];
                 const int lo = b < a ? b : a, hi = b < a ? a : b;
-                ha0[lo][hi >> 1][hi & 1] = cholesky_set_staged<CFG>(stage0, stagec0, so0, soc0, k + h);
+                const int c = k + h - CFG::C0;
+                const bool in_c = CFG::NC > 0 && c >= 0 && c < CFG::NC;
+                ha0[lo][hi >> 1][hi & 1] = in_c ? stagec0[soc0 + c] : stage0[so0 + k + h];
                 if (q0 == p0) {
                     q0 = 0;
                     ++p0;
@@ -201,7 +198,9 @@ void cholesky_set_firsts(int n0, int n1,
             if (k + h < m1) {
                 const int a = map1[p1], b = map1[q1];
                 const int lo = b < a ? b : a, hi = b < a ? a : b;
-                ha1[lo][hi >> 1][hi & 1] = cholesky_set_staged<CFG>(stage1, stagec1, so1, soc1, k + h);
+                const int c = k + h - CFG::C0;
+                const bool in_c = CFG::NC > 0 && c >= 0 && c < CFG::NC;
+                ha1[lo][hi >> 1][hi & 1] = in_c ? stagec1[soc1 + c] : stage1[so1 + k + h];
                 if (q1 == p1) {
                     q1 = 0;
                     ++p1;

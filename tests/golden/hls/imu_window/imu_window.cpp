@@ -2230,19 +2230,14 @@ bool gram_entries_two(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const 
 // gram_entries_stream: gram_entries (A_PER = 1, ENTRIES_B = 0), gram_entries_two (A_PER = 1)
 // or gram_entries_pair (A_PER = 2, GII = 2) of the first n instances of INST, their entries not into
 // GRAM but a word an iteration into `grams` (the Gram source of the elimination puts them in
-// place); the gradient and the finiteness check as gram_store's. ENTRIES_C > 0 (two cascades:
-// units/cholesky.py's gram_third): a third lane of KC multipliers (lane C: entries PC, QC over
-// the first KC rows, a run of the packed Gram the Gram source puts into memories of its own),
-// its entry the word's last slot.
+// place); the gradient and the finiteness check as gram_store's.
 template <int PADDED, int ROWS, int COLS, int ENTRIES, int ENTRIES_B, int K, int STEPS, int N,
-          int GII, int A_PER, int SLOTS, int ENTRIES_C, int KC>
+          int GII, int A_PER, int SLOTS>
 bool gram_entries_stream(hls::stream<GramRow>& rows, hls::stream<GramWord>& grams,
                          T ab[2][ROWS * PADDED], int n, const int INST[N], const int P[ENTRIES],
                          const int Q[ENTRIES], const int PB[ENTRIES_B > 0 ? ENTRIES_B : 1],
                          const int QB[ENTRIES_B > 0 ? ENTRIES_B : 1],
-                         const int PC[ENTRIES_C > 0 ? ENTRIES_C : 1],
-                         const int QC[ENTRIES_C > 0 ? ENTRIES_C : 1], const int CV[COLS - 1],
-                         const int CO[COLS - 1]) {
+                         const int CV[COLS - 1], const int CO[COLS - 1]) {
     bool finite = true;
     int i = 0, e = 0;
     for (int t = 0; t < n * STEPS; ++t) {
@@ -2267,12 +2262,6 @@ bool gram_entries_stream(hls::stream<GramRow>& rows, hls::stream<GramWord>& gram
             const L v = gram_entry<PADDED, ROWS, K>(ab[cur], p, q);
             if (p == q) finite = finite && fgc_isfinite(T(v));
             word.v[A_PER] = v;
-        }
-        if (ENTRIES_C > 0 && e < ENTRIES_C) {  // lane C: never the last row either
-            const int p = PC[e], q = QC[e];
-            const L v = gram_entry<PADDED, ROWS, KC>(ab[cur], p, q);
-            if (p == q) finite = finite && fgc_isfinite(T(v));
-            word.v[SLOTS - 1] = v;
         }
         grams.write(word);
         if (++e == STEPS) {
@@ -2728,9 +2717,8 @@ void reduce_0(hls::stream<GramRow>& rows, int n, hls::stream<GramWord>& grams, b
         for (int c = 0; c < 32; ++c) ab[0][r * 32 + c] = row.word[c];
     }
     FGC_CYCLES("reduce_0", 0, "rows", n > 0 ? 15 : 0, 1, 2);
-    finite = gram_entries_stream<32, 15, 31, 248, 248, 9, 248, 7, 1, 1, 2, 0, 1>(
+    finite = gram_entries_stream<32, 15, 31, 248, 248, 9, 248, 7, 1, 1, 2>(
         rows, grams, ab, n, BLOCK0_STEP_ORDER, BLOCK0_GRAM_P, BLOCK0_GRAM_Q, BLOCK0_GRAM_PB, BLOCK0_GRAM_QB,
-        BLOCK0_GRAM_P, BLOCK0_GRAM_Q,
         BLOCK0_COL_VAR, BLOCK0_COL_OFF);
     FGC_CYCLES("reduce_0", 0, "entries", n * 248, 1, 26);
     // csim only: when each instance's Gram is complete (the elimination's passes wait for them)
