@@ -159,6 +159,10 @@ def cases():
     out.append(("imu_window N=20 Cholesky #CPE=40 x2 L2", imu_window.build(N=20),
                 SolverConfig(method="gn", linear="cholesky", cpe=40, precision="float32"),
                 HlsConfig(scalar="float", unit_sets=2, cascade_lanes=2)))
+    # and with the HGC's third Gram lane (hgc_third_lane: the IMU Grams 166 words an instance)
+    out.append(("imu_window N=20 Cholesky #CPE=40 x2 L2 lane C", imu_window.build(N=20),
+                SolverConfig(method="gn", linear="cholesky", cpe=40, precision="float32"),
+                HlsConfig(scalar="float", unit_sets=2, cascade_lanes=2, hgc_third_lane=True)))
     # back-substitution by columns (backsub_lanes=4: a loader and a process per end of the
     # chain, the state update fed by both), one cascade and two; a chain's default design takes
     # them (backsub_lanes auto), so the cases above with the default config run them too, and

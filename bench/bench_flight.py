@@ -1,27 +1,30 @@
 """Paper B's scaling from 5 to 80 CPEs (issue 33 item 4) by the plan: imu_window N = 50, LM,
 float32 at 143 MHz, back-substitution by columns (the default on a chain).
 
-    python bench/bench_flight.py                 # #CPE 5 ... 120, one and two cascades, one and
+    python bench/bench_flight.py                 # #CPE 5 ... 120, one and two cascades (x2 C:
+                                                 # hgc_third_lane), one and
                                                  # two words a cycle: cycles / iteration, DSP,
                                                  # BRAM36, fits; the 5 -> 80 CPEs ratios
-    python bench/bench_flight.py --pieces        # what each further piece would buy (what-if)
-                                                 # at #CPE 40 x2, two words a cycle
+    python bench/bench_flight.py --pieces        # what each further piece would buy at #CPE 40
+                                                 # x2, two words a cycle (``third`` built, the
+                                                 # others what-ifs)
 
 The what-if pieces are the plan's arithmetic with a term replaced, not designs that are built:
 ``flight`` (a step enters its cascade as the first Schur-complement row of the step before on the
-same end leaves that step's last pivot: the cascade's share of a region the interval, rows
-0 ... f - 1 plus the f pivots' depth, not the whole round), ``prod2`` (the HGC's entries loop
-two entries an iteration more, so an IMU instance costs the datapath's II, not the HGC's
-entries), ``pair`` (the feed-forward form of steps in flight: a pass of two regions, each
-cascade factoring two consecutive steps of its end, A's pivots on CPEs 0 ... f_A - 1 and B's on
-the CPEs past them, A's Schur-complement rows leaving its last pivot's CPE into a merger that
-adds B's Grams and feeds CPE f_A: :func:`pair_passes`; canonical DATAFLOW, no feedback channel,
-unlike ``flight``, whose next step's feed reads the drain of the same cascade), ``loop``
-(``flight`` as docs/hls.md says Vitis would build it: the first solve's region loop a dataflow
-loop, each process a region after its last one and its inputs, no pass boundaries:
-:func:`loop_model`). The grams process
-storing the two steps' first Grams side by side, the third piece this was written to weigh, is
-built (fgc_cascades.h's cholesky_set_firsts)."""
+same end leaves that step's last pivot: the cascade's share of a region the interval, rows 0 ... f -
+1 plus the f pivots' depth, not the whole round), ``pair`` (the feed-forward form of steps in
+flight: a pass of two regions, each cascade factoring two consecutive steps of its end, A's pivots
+on CPEs 0 ... f_A - 1 and B's on the CPEs past them, A's Schur-complement rows leaving its last
+pivot's CPE into a merger that adds B's Grams and feeds CPE f_A: :func:`pair_passes`; canonical
+DATAFLOW, no feedback channel, unlike ``flight``, whose next step's feed reads the drain of the same
+cascade), ``loop`` (``flight`` as docs/hls.md says Vitis would build it: the first solve's region
+loop a dataflow loop, each process a region after its last one and its inputs, no pass boundaries:
+:func:`loop_model`). ``third`` is a built design option, not a what-if: the HGC's third entries lane
+with two cascades (``hgc_third_lane``, units/cholesky.py's gram_third: the IMU Grams at the
+datapath's pace, 166 words an instance instead of 248; it replaced the ``prod2`` what-if, which
+halved the words an instance, more than two-port memories can take). Built since this was written
+too: the grams process storing the two steps' first Grams side by side (fgc_cascades.h's
+cholesky_set_firsts)."""
 
 from __future__ import annotations
 
@@ -40,16 +43,16 @@ from fgc_backends.hls.plan.model import Loop, Phase, Process
 N = 50
 
 
-def design(cpe: int, sets: int, lanes: int):
+def design(cpe: int, sets: int, lanes: int, third: bool = False):
     program = compile_graph(example("imu_window").build(N=N), SolverConfig(
         method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"iw{cpe}")
     return plan_cost(accel_plan(program, HlsConfig(scalar="float", unit_sets=sets,
-                                                   cascade_lanes=lanes)))
+                                                   cascade_lanes=lanes, hgc_third_lane=third)))
 
 
 def what_if(pieces: set[str]) -> None:
     """Replace the plan's terms named by ``pieces`` (module docstring) in units/cholesky.py."""
-    cascades, source, ready = ch.cascades_phases, ch._gram_source, ch.beside_ready
+    cascades = ch.cascades_phases
 
     def phases(tables, order, dims, cpe, ops, timing, lanes=1, cond_banks=1,
                staged=frozenset()):
@@ -70,15 +73,7 @@ def what_if(pieces: set[str]) -> None:
             out.append(replace(ph, processes=tuple(procs)))
         return out
 
-    def gram_source(key, lay, relin, steps, ii, timing):
-        return source(key, lay, relin, -(-steps // 2) if "prod2" in pieces and relin
-                      else steps, ii, timing)
-
-    def beside_ready(count, jac, rows, steps, ii, depth):
-        return ready(count, jac, rows, -(-steps // 2) if "prod2" in pieces else steps, ii,
-                     depth)
-
-    ch.cascades_phases, ch._gram_source, ch.beside_ready = phases, gram_source, beside_ready
+    ch.cascades_phases = phases
     if "pair" in pieces:
         ch.beside_set_passes = pair_passes(ch.beside_set_passes)
     if "loop" in pieces:
@@ -301,33 +296,34 @@ def main() -> None:
     args = ap.parse_args()
     if args.pieces:
         base = {"cpe": 40, "sets": 2, "lanes": 2}
-        rows = [(), ("prod2",), ("flight",), ("flight", "prod2"), ("pair",), ("pair", "prod2"),
-                ("loop",), ("loop", "prod2")]
-        saved = (ch.cascades_phases, ch._gram_source, ch.beside_ready, ch.beside_set_passes,
-                 ch.beside_cycles)
+        rows = [(), ("third",), ("flight",), ("flight", "third"), ("pair",), ("pair", "third"),
+                ("loop",), ("loop", "third")]
+        saved = ch.cascades_phases, ch.beside_set_passes, ch.beside_cycles
         for pieces in rows:
             what_if(set(pieces))
-            cost = design(**base)
+            cost = design(**base, third="third" in pieces)
             print(f"{'+'.join(pieces) or 'as built':24s} #CPE 40 x2 L2 {cost.cycles:7,d} cycles "
-                  f"{88584 / cost.cycles:.2f}x the default #CPE 5 x1", flush=True)
-            (ch.cascades_phases, ch._gram_source, ch.beside_ready, ch.beside_set_passes,
-             ch.beside_cycles) = saved
+                  f"{88584 / cost.cycles:.2f}x the default #CPE 5 x1, {cost.dsp:,d} DSP",
+                  flush=True)
+            ch.cascades_phases, ch.beside_set_passes, ch.beside_cycles = saved
         return
     table = {}
     for lanes in (1, 2):
         for cpe in (5, 20, 40, 80, 120):
-            for sets in (1, 2):
-                cost = design(cpe, sets, lanes)
-                table[cpe, sets, lanes] = cost
-                print(f"#CPE {cpe:3d} x{sets} L{lanes}: {cost.cycles:7,d} cycles, "
+            for sets, third in ((1, False), (2, False), (2, True)):
+                cost = design(cpe, sets, lanes, third)
+                table[cpe, sets + third, lanes] = cost
+                print(f"#CPE {cpe:3d} x{sets}{' C' if third else '  '} L{lanes}: "
+                      f"{cost.cycles:7,d} cycles, "
                       f"{cost.dsp:5,d} DSP, {cost.bram36:6.1f} BRAM36, "
                       f"{'fits' if cost.fits else 'over: ' + ','.join(cost.over)}", flush=True)
     default5 = table[5, 1, 1].cycles
     for lanes in (1, 2):
-        for sets, cpe in ((1, 80), (2, 40)):
+        for sets, cpe in ((1, 80), (2, 40), (3, 40)):
             c = table[cpe, sets, lanes].cycles
             same = table[5, 1, lanes].cycles
-            print(f"80 CPEs as #CPE {cpe} x{sets} L{lanes}: {default5 / c:.2f}x the default "
+            name = "x2 + the third Gram lane" if sets == 3 else f"x{sets}"
+            print(f"80 CPEs as #CPE {cpe} {name} L{lanes}: {default5 / c:.2f}x the default "
                   f"#CPE 5 x1 ({default5:,d}), {same / c:.2f}x #CPE 5 x1 L{lanes} ({same:,d})")
 
 

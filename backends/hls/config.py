@@ -88,6 +88,11 @@ class DesignOptions:
       drain takes the pair of a row's words the assembly streams each cycle, so a step's ~w²/2
       words take half the cycles, at twice each CPE's multipliers and adders. ``fgc compile
       --cascade-lanes``.
+    - ``hgc_third_lane``: two Cholesky cascades with the HGC beside: the streamed block type's
+      Gram entries in three lanes, the third's into memories of its own, where the plan finds
+      the first solve faster by it (units/cholesky.py's ``gram_third``: imu_window's IMU Grams
+      at 166 words an instance instead of 248, for its K' multipliers; docs/hls.md); off by
+      default (its DSP would push the fastest design that fits, #CPE 20 x2, over the part).
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
@@ -101,6 +106,7 @@ class DesignOptions:
     hgc_beside: bool = True
     backsub_lanes: int | None = None
     cascade_lanes: int = 1
+    hgc_third_lane: bool = False
 
     def check(self, program: Program | None = None) -> None:
         """Raise :class:`HlsConfigError` naming the first invalid option; with ``program``, also
@@ -129,6 +135,9 @@ class DesignOptions:
         if self.cascade_lanes not in CASCADE_LANES or isinstance(self.cascade_lanes, bool):
             raise HlsConfigError(f"cascade_lanes must be one of {CASCADE_LANES} (the words a "
                                  f"cycle through a Cholesky cascade), got {self.cascade_lanes!r}")
+        if not isinstance(self.hgc_third_lane, bool):
+            raise HlsConfigError(f"hgc_third_lane must be True or False, got "
+                                 f"{self.hgc_third_lane!r}")
         if self.qr_unit not in QR_UNITS:
             raise HlsConfigError(f"qr_unit {self.qr_unit!r}: expected one of "
                                  f"{', '.join(QR_UNITS)}")
@@ -172,7 +181,8 @@ class DesignOptions:
         precisions the design computes in (None: the Program's)."""
         base = dict(unit_sets=self.unit_sets, part=self.part, qr_unit=self.qr_unit,
                     precision=precision, les_precision=les_precision,
-                    hgc_beside=bool(self.hgc_beside), cascade_lanes=int(self.cascade_lanes))
+                    hgc_beside=bool(self.hgc_beside), cascade_lanes=int(self.cascade_lanes),
+                    hgc_third_lane=bool(self.hgc_third_lane))
         if self.allocation:  # the design's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(self.allocation)}.items())
@@ -264,14 +274,15 @@ class HlsConfig(scalars.ScalarTypes):
     hgc_beside: InitVar[bool | None] = None
     backsub_lanes: InitVar[int | None] = None
     cascade_lanes: InitVar[int | None] = None
+    hgc_third_lane: InitVar[bool | None] = None
 
     def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside,
-                      backsub_lanes, cascade_lanes) -> None:
+                      backsub_lanes, cascade_lanes, hgc_third_lane) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
         old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside, backsub_lanes,
-               cascade_lanes)
+               cascade_lanes, hgc_third_lane)
         given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
                  if value is not None}
         if given:

@@ -316,6 +316,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         blocks[-1].gram_pb = [p for p, _ in lane_b]  # lane B: the first gram_k rows only
         blocks[-1].gram_qb = [q for _, q in lane_b]
         blocks[-1].gram_k = k
+        blocks[-1].gram_pc, blocks[-1].gram_qc = [], []  # lane C (_beside_context: gram_third)
+        blocks[-1].gram_kc = blocks[-1].gram_c0 = 0
         # its HGC loop's iterations an instance and depth: the plan's (units/cholesky.py)
         gram = hgc.get(f"reduce_{b.index}")
         count = len(b.instances)
@@ -402,6 +404,9 @@ def _beside_context(program: Program, plan, blocks) -> dict | None:
         beside_region_layout,
         cascade_regions,
         cascades_of,
+        gram_third,
+        jacobian_cycles,
+        jacobian_ii,
     )
     big = int(name.rsplit("_", 1)[1])
     tables = _tables(program)
@@ -413,12 +418,29 @@ def _beside_context(program: Program, plan, blocks) -> dict | None:
     b = blocks[big]
     reduce = next(p for ph in plan.phases if ph.name == "hgc_producer" for p in ph.processes
                   if p.name == f"reduce_{big}")
+    third = None
+    if regions and any(m.name == "stage_c" for m in plan.memories):  # the plan's third lane
+        procs = [p for ph in plan.phases for p in ph.processes]
+        third = gram_third(program, big, plan.options.hgc_lanes, jacobian_ii(procs),
+                           jacobian_cycles(procs))
+        if third is None:
+            raise RuntimeError(f"internal error: block {big}'s third Gram lane not found")
+        lane_a, lane_b, lane_c, b.gram_k, b.gram_kc, b.gram_c0 = third
+        b.gram_p, b.gram_q = [p for p, _ in lane_a], [q for _, q in lane_a]
+        b.gram_pb, b.gram_qb = [p for p, _ in lane_b], [q for _, q in lane_b]
+        b.gram_pc, b.gram_qc = [p for p, _ in lane_c], [q for _, q in lane_c]
+        if [p * (p + 1) // 2 + q for p, q in lane_c] != list(
+                range(b.gram_c0, b.gram_c0 + len(lane_c))):
+            raise RuntimeError(f"internal error: block {big}'s lane C is not a run")
+    nc, nb = len(b.gram_pc), lay["nb"]
     ha = 2 if b.gram_pair else 1
     if any(p * (p + 1) // 2 + q >= lay["nb"] for p, q in zip(b.gram_p + b.gram_pb,
                                                             b.gram_q + b.gram_qb, strict=True)):
         raise RuntimeError(f"internal error: block {big}'s Gram entries outside its packed Gram")
-    slots = ha + (1 if b.gram_pb else 0)
+    slots = ha + (1 if b.gram_pb else 0) + (1 if nc else 0)
     return {**lay, "block": big, "ha": ha, "unit": "REGION" if regions else "STEP",
+            "nc": nc, "c0": b.gram_c0, "n_stage_c": lay["n_stage"] // nb * nc if nc else 1,
+            "factor_stage_c": [fs // nb * nc if fs >= 0 else -1 for fs in lay["factor_stage"]],
             "slots": slots, "gii": reduce.loops[1].ii,
             "steps": b.gram_steps, "count": len(lay["order"]),
             "depth": lay["max_per_step"] * b.gram_steps, "rows_cycles": reduce.loops[0].cycles,

@@ -22,10 +22,15 @@ from fgc_backends.hls.network import read_network
 from fgc_backends.hls.plan import plan_cost
 from fgc_backends.hls.plan.loops import _tables
 from fgc_backends.hls.units.cholesky import (
+    _gram_rows,
     beside_region_layout,
     cascade_children,
     cascade_regions,
     cond_pairs,
+    gram_entries,
+    gram_third,
+    jacobian_cycles,
+    jacobian_ii,
 )
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -212,3 +217,62 @@ def test_two_cascades_retries_resolve_from_the_kept_grams_as_priced():
     for g in ("hgc", "hgc_beside", "reassemble", "recholesky"):
         counted, model = phases[g]
         assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+
+
+def test_a_third_gram_lane_keeps_up_with_the_imu_datapath():
+    # imu_window's IMU Gram (496 entries) in two lanes takes 248 words an instance: the Gram
+    # source puts two entries a cycle into its stage lane and GRAM_B (two ports each), over the
+    # datapath's II 233. gram_third's lane C (a run of the packed Gram over the first K' rows,
+    # into memories of its own) takes three an iteration: every entry in exactly one lane,
+    # each at most ceil(496 / 3) = 166, lane C's entries touched by its first K' rows only and
+    # never the last row (the += into G stays in lane A)
+    program = compile_graph(imu_window.build(N=50), SolverConfig(
+        method="lm", linear="cholesky", cpe=40, precision="float32"), name="iw40")
+    plans = {k: accel_plan(program, HlsConfig(scalar="float", unit_sets=k, cascade_lanes=2,
+                                              hgc_third_lane=True)) for k in (1, 2)}
+    procs = [p for ph in plans[2].phases for p in ph.processes]
+    lane_a, lane_b, lane_c, kb, kc, c0 = gram_third(program, 0, 32, jacobian_ii(procs),
+                                                    jacobian_cycles(procs))
+    entries = gram_entries(program.blocks[0])
+    assert sorted(lane_a + lane_b + lane_c) == sorted(entries) and len(entries) == 496
+    assert max(map(len, (lane_a, lane_b, lane_c))) == 166
+    assert [p * (p + 1) // 2 + q for p, q in lane_c] == list(range(c0, c0 + len(lane_c)))
+    rows = _gram_rows(program.blocks[0])
+    assert all(rows[e][-1] < kc and e[0] < 30 for e in lane_c)
+    assert all(rows[e][-1] < kb and e[0] < 30 for e in lane_b)
+    # the plan: 166 words an instance, lane C's memories, its multipliers and adders
+    reduce = next(p for p in procs if p.name == "reduce_0")
+    assert reduce.loops[1].trip == 49 * 166
+    assert {"stage_c", "gram_kept_c"} <= {m.name for m in plans[2].memories}
+    assert dict(plans[2].unit("hgc_0").operators) == {"add": 15 + kb + kc - 2,
+                                                      "mul": 15 + kb + kc}
+    # one cascade keeps two lanes (its stage lane is one memory a step: fgc_eliminate.h)
+    assert "stage_c" not in {m.name for m in plans[1].memories}
+    assert next(p for ph in plans[1].phases for p in ph.processes
+                if p.name == "reduce_0").loops[1].trip == 49 * 248
+    # off by default (DesignOptions.hgc_third_lane): two lanes, the plan's DSP without lane C
+    off = accel_plan(program, HlsConfig(scalar="float", unit_sets=2, cascade_lanes=2))
+    assert "stage_c" not in {m.name for m in off.memories}
+    assert plan_cost(plans[2]).dsp - plan_cost(off).dsp == kc * 3 + (kc - 1) * 2
+    assert plan_cost(plans[2]).cycles < plan_cost(off).cycles
+
+
+# heavy (about two minutes on 2 cores): the third lane's Grams through the C simulation
+@pytest.mark.heavy
+def test_the_third_gram_lane_matches_the_simulator(tmp_path):
+    # LM in double, imu_window N = 20, two cascades, the HGC beside with lane C (the plan picks
+    # it at N = 20): the C simulation's estimates are the simulator's to 1e-9 (relative)
+    graph = imu_window.build(N=20)
+    program = compile_graph(graph, SolverConfig(method="lm", linear="cholesky", cpe=4),
+                            name="lanec")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", unit_sets=2,
+                                                hgc_third_lane=True))
+    text = (project.directory / f"{project.name}.cpp").read_text()
+    assert "BLOCK0_GRAM_PC" in text and "L GRAM_BC[" in text
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)
+    assert result.status == reference.status
+    worst = max(float(np.max(np.abs(result.values[k] - np.asarray(r)))
+                      / max(1.0, np.max(np.abs(r)))) for k, r in reference.storage.items())
+    assert worst <= 1e-9

@@ -22,7 +22,7 @@
 // and cholesky_add_segment read them for the one-cascade driver; a streamed factor's from its
 // region's stage lane, CFG::staged): a change to where the assembly gets its Grams changes both.
 // Without the HGC beside, the kernel's STAGE_NONE0 / STAGE_NONE1 (never read) stand for the
-// stage lane's two memories.
+// stage lane's two memories, STAGE_NONEC0 / STAGE_NONEC1 for lane C's.
 #ifndef FGC_CASCADES_H
 #define FGC_CASCADES_H
 
@@ -87,10 +87,12 @@ void cholesky_set_maps(int s0, int s1, int map0[CFG::MAX_W + 1], int map1[CFG::M
 // further ones added one entry a cycle (as cholesky_assemble_first / _adds). A factor whose Gram
 // the HGC streams beside the elimination (CFG::staged(fac) >= 0: its offset in its step's memory
 // of its region's stage lane) is read from `stage` (the lane the Gram source filled a pass
-// before) instead of GRAM.
+// before) instead of GRAM, its lane-C entries (CFG::NC > 0: packed positions CFG::C0 ...
+// CFG::C0 + CFG::NC - 1) from `stagec` (the lane's memory of lane C, NC words an instance).
 template <class CFG>
 void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                              const typename CFG::T stage[CFG::N_STAGE],
+                             const typename CFG::T stagec[CFG::N_STAGE_C],
                              const int map[CFG::MAX_W + 1], bool first_done) {
     if (s < 0) return;
     const int w = STEP_W[s];
@@ -101,7 +103,7 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
         const int cb = FACTOR_COLMAP_BEGIN[fac];
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
         const int g0 = FACTOR_GRAM_OFF[fac];
-        const int so = CFG::staged(fac);
+        const int so = CFG::staged(fac), soc = CFG::staged_c(fac);
         const int n = d * (d + 1) / 2 + d;
         if (e == STEP_FACTOR_BEGIN[s]) {
             for (int k = 0, p = 0, q = 0; k < n; k += 2) {
@@ -112,7 +114,9 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
                     if (k + h < n) {
                         const int a = map[p], b = map[q];
                         const int lo = b < a ? b : a, hi = b < a ? a : b;
-                        ha[lo][hi >> 1][hi & 1] = so >= 0 ? stage[so + k + h] : GRAM[g0 + k + h];
+                        const int c = k + h - CFG::C0;
+                        const bool in_c = CFG::NC > 0 && c >= 0 && c < CFG::NC;
+                        ha[lo][hi >> 1][hi & 1] = so < 0 ? GRAM[g0 + k + h] : in_c ? stagec[soc + c] : stage[so + k + h];
                         if (q == p) {
                             q = 0;
                             ++p;
@@ -132,7 +136,9 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
             const int a = x < d ? FACTOR_COLMAP[cb + x] : w;
             const int b = FACTOR_COLMAP[cb + y];
             const int lo = b < a ? b : a, hi = b < a ? a : b;
-            ha[lo][hi >> 1][hi & 1] += so >= 0 ? stage[so + k] : GRAM[g0 + k];
+            const int c = k - CFG::C0;
+            const bool in_c = CFG::NC > 0 && c >= 0 && c < CFG::NC;
+            ha[lo][hi >> 1][hi & 1] += so < 0 ? GRAM[g0 + k] : in_c ? stagec[soc + c] : stage[so + k];
             if (y == x) {
                 ++x;
                 y = 0;
@@ -160,12 +166,15 @@ void cholesky_set_firsts(int n0, int n1,
                          typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                          const typename CFG::T stage0[CFG::N_STAGE],
                          const typename CFG::T stage1[CFG::N_STAGE],
+                         const typename CFG::T stagec0[CFG::N_STAGE_C],
+                         const typename CFG::T stagec1[CFG::N_STAGE_C],
                          const int map0[CFG::MAX_W + 1], const int map1[CFG::MAX_W + 1]) {
     const int f0 = cholesky_set_first_factor(n0), f1 = cholesky_set_first_factor(n1);
     const int d0 = FACTOR_COLMAP_BEGIN[f0 + 1] - FACTOR_COLMAP_BEGIN[f0];
     const int d1 = FACTOR_COLMAP_BEGIN[f1 + 1] - FACTOR_COLMAP_BEGIN[f1];
     const int m0 = d0 * (d0 + 1) / 2 + d0, m1 = d1 * (d1 + 1) / 2 + d1;
     const int so0 = CFG::staged(f0), so1 = CFG::staged(f1);
+    const int soc0 = CFG::staged_c(f0), soc1 = CFG::staged_c(f1);
     const int pairs = ((m0 > m1 ? m0 : m1) + 1) / 2;
     for (int t = 0, k = 0, p0 = 0, q0 = 0, p1 = 0, q1 = 0; t < pairs; ++t, k += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED/2
@@ -176,7 +185,9 @@ void cholesky_set_firsts(int n0, int n1,
             if (k + h < m0) {
                 const int a = map0[p0], b = map0[q0];
                 const int lo = b < a ? b : a, hi = b < a ? a : b;
-                ha0[lo][hi >> 1][hi & 1] = stage0[so0 + k + h];
+                const int c = k + h - CFG::C0;
+                const bool in_c = CFG::NC > 0 && c >= 0 && c < CFG::NC;
+                ha0[lo][hi >> 1][hi & 1] = in_c ? stagec0[soc0 + c] : stage0[so0 + k + h];
                 if (q0 == p0) {
                     q0 = 0;
                     ++p0;
@@ -187,7 +198,9 @@ void cholesky_set_firsts(int n0, int n1,
             if (k + h < m1) {
                 const int a = map1[p1], b = map1[q1];
                 const int lo = b < a ? b : a, hi = b < a ? a : b;
-                ha1[lo][hi >> 1][hi & 1] = stage1[so1 + k + h];
+                const int c = k + h - CFG::C0;
+                const bool in_c = CFG::NC > 0 && c >= 0 && c < CFG::NC;
+                ha1[lo][hi >> 1][hi & 1] = in_c ? stagec1[soc1 + c] : stage1[so1 + k + h];
                 if (q1 == p1) {
                     q1 = 0;
                     ++p1;
@@ -210,7 +223,9 @@ template <class CFG>
 void cholesky_set_grams(int n0, int n1, typename CFG::T ha0[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                         typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                         const typename CFG::T stage0[CFG::N_STAGE],
-                        const typename CFG::T stage1[CFG::N_STAGE]) {
+                        const typename CFG::T stage1[CFG::N_STAGE],
+                        const typename CFG::T stagec0[CFG::N_STAGE_C],
+                        const typename CFG::T stagec1[CFG::N_STAGE_C]) {
 #pragma HLS ALLOCATION function instances=cholesky_set_step_grams<CFG> limit=1
     FGC_BRANCH();
     int map0[CFG::MAX_W + 1], map1[CFG::MAX_W + 1];
@@ -219,9 +234,12 @@ void cholesky_set_grams(int n0, int n1, typename CFG::T ha0[CFG::MAX_W][CFG::MAX
     cholesky_set_maps<CFG>(n0, n1, map0, map1);
     const int f0 = cholesky_set_first_factor(n0), f1 = cholesky_set_first_factor(n1);
     const bool both = f0 >= 0 && f1 >= 0 && CFG::staged(f0) >= 0 && CFG::staged(f1) >= 0;
-    if (both) cholesky_set_firsts<CFG>(n0, n1, ha0, ha1, stage0, stage1, map0, map1);
-    cholesky_set_step_grams<CFG>(n0, ha0, stage0, map0, both);
-    cholesky_set_step_grams<CFG>(n1, ha1, stage1, map1, both);
+    if (both) {
+        cholesky_set_firsts<CFG>(n0, n1, ha0, ha1, stage0, stage1, stagec0, stagec1, map0,
+                                 map1);
+    }
+    cholesky_set_step_grams<CFG>(n0, ha0, stage0, stagec0, map0, both);
+    cholesky_set_step_grams<CFG>(n1, ha1, stage1, stagec1, map1, both);
 }
 
 // Step s's streamed child's separator map inverted into inv (parent column -> its index in
@@ -505,7 +523,8 @@ void cholesky_sets(int s0, int s1, int n0, int n1, int q0, int q1, typename CFG:
 #pragma HLS STREAM variable=frontal0 depth=DEPTH
 #pragma HLS STREAM variable=frontal1 depth=DEPTH
     cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
-    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, STAGE_NONE0, STAGE_NONE1);
+    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, STAGE_NONE0, STAGE_NONE1, STAGE_NONEC0,
+                            STAGE_NONEC1);
     cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
                               unfit0);
     cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
@@ -637,9 +656,11 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
 template <class CFG>
 void cholesky_set_gram_source(int r, bool relin, typename CFG::T stage0w[CFG::N_STAGE],
                               typename CFG::T stage1w[CFG::N_STAGE],
+                              typename CFG::T stagec0w[CFG::N_STAGE_C],
+                              typename CFG::T stagec1w[CFG::N_STAGE_C],
                               hls::stream<typename CFG::Word>& grams) {
     FGC_BRANCH();  // csim cycle counting only: beside the region's other processes
-    if (r >= 0) CFG::gram_source(r, relin, stage0w, stage1w, grams);
+    if (r >= 0) CFG::gram_source(r, relin, stage0w, stage1w, stagec0w, stagec1w, grams);
 }
 
 // The region (cholesky_sets') with the Gram source putting region `src`'s streamed Grams into
@@ -663,6 +684,10 @@ void cholesky_sets_beside(int s0, int s1, int n0, int n1, int q0, int q1, int sr
                           const typename CFG::T stage1r[CFG::N_STAGE],
                           typename CFG::T stage0w[CFG::N_STAGE],
                           typename CFG::T stage1w[CFG::N_STAGE],
+                          const typename CFG::T stagec0r[CFG::N_STAGE_C],
+                          const typename CFG::T stagec1r[CFG::N_STAGE_C],
+                          typename CFG::T stagec0w[CFG::N_STAGE_C],
+                          typename CFG::T stagec1w[CFG::N_STAGE_C],
                           hls::stream<typename CFG::Word>& grams, bool* npd0, bool* npd1,
                           bool* unfit0, bool* unfit1, bool* tiny0, bool* tiny1) {
 #pragma HLS DATAFLOW
@@ -671,9 +696,9 @@ void cholesky_sets_beside(int s0, int s1, int n0, int n1, int q0, int q1, int sr
     hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal1;
 #pragma HLS STREAM variable=frontal0 depth=DEPTH
 #pragma HLS STREAM variable=frontal1 depth=DEPTH
-    cholesky_set_gram_source<CFG>(src, relin, stage0w, stage1w, grams);
+    cholesky_set_gram_source<CFG>(src, relin, stage0w, stage1w, stagec0w, stagec1w, grams);
     cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
-    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, stage0r, stage1r);
+    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, stage0r, stage1r, stagec0r, stagec1r);
     cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
                               unfit0);
     cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
@@ -706,6 +731,8 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
 #pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
 #pragma HLS ARRAY_PARTITION variable=STAGE_K0 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=STAGE_K1 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=STAGE_C0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=STAGE_C1 complete dim=1
     FGC_PHASE(relin ? "hgc_beside" : "reassemble");
     bool good = true;
 #pragma HLS ALLOCATION function instances=cholesky_sets_beside<CFG> limit=1
@@ -732,14 +759,16 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
                                       HA0[1], HA1[1], NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF_K0[0],
                                       CONDBUF_K1[0], CONDBUF_K0[1], CONDBUF_K1[1], DPIV[0], RMAX[0],
                                       DPIV[2], RMAX[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3],
-                                      STAGE_K0[1], STAGE_K1[1], STAGE_K0[0], STAGE_K1[0], grams,
+                                      STAGE_K0[1], STAGE_K1[1], STAGE_K0[0], STAGE_K1[0],
+                                      STAGE_C0[1], STAGE_C1[1], STAGE_C0[0], STAGE_C1[0], grams,
                                       &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         } else {
             cholesky_sets_beside<CFG>(s0, s1, n0, n1, q0, q1, src, relin, mu, HA0[1], HA1[1],
                                       HA0[0], HA1[0], NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF_K0[1],
                                       CONDBUF_K1[1], CONDBUF_K0[0], CONDBUF_K1[0], DPIV[1], RMAX[1],
                                       DPIV[3], RMAX[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2],
-                                      STAGE_K0[0], STAGE_K1[0], STAGE_K0[1], STAGE_K1[1], grams,
+                                      STAGE_K0[0], STAGE_K1[0], STAGE_K0[1], STAGE_K1[1],
+                                      STAGE_C0[0], STAGE_C1[0], STAGE_C0[1], STAGE_C1[1], grams,
                                       &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         }
         FGC_JOIN();

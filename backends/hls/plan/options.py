@@ -77,6 +77,9 @@ class PlanOptions:
     # pair of a row's words the assembly streams a cycle; units/cholesky.py's cpe_step_loops,
     # each CPE's operators times the lanes)
     cascade_lanes: int = 1
+    # two Cholesky cascades with the HGC beside: a third Gram entries lane where the first solve
+    # is faster by it (units/cholesky.py's gram_third; DesignOptions.hgc_third_lane)
+    hgc_third_lane: bool = False
     # "whitened": each factor's A = W·J and b = -W·r, dense, as the factor datapath leaves them;
     # "raw": the papers' choice - the unwhitened Jacobians' structurally non-zero entries (0 and
     # ±1 entries are not stored), the residual and W's parameters, whitened while stacking

@@ -253,11 +253,68 @@ def gram_steps(program, block: int, t_timing: dict, lanes: int = 32,
     last-row entries (the += into G) plus the adder's latency and 3, so that two instances'
     += into one entry of G (two factors of one variable) are a whole add apart. Paired
     (:func:`gram_config`): lane A's entries two an iteration."""
-    b = program.blocks[block]
     lane_a, lane_b, _, paired = gram_config(program, block, lanes, jac_ii, jac_cycles)
-    per = 2 if paired else 1  # lane A's entries an iteration
-    steps = max(-(-len(lane_a) // per), len(lane_b))
-    if sum(1 for f in program.factors if f.block == block) <= 1:
+    return gram_steps_of(program.blocks[block],
+                         sum(1 for f in program.factors if f.block == block), lane_a,
+                         len(lane_b), t_timing, 2 if paired else 1)
+
+
+def gram_third(program, block: int, lanes: int, jac_ii: dict | None,
+               jac_cycles: dict | None = None) -> tuple | None:
+    """A third entries lane for block ``block``'s Grams streamed beside the elimination with two
+    cascades (fgc_cascades.h): (lane A's entries, lane B's, lane C's, K, K', c0), or None where
+    :func:`gram_config` has no lane B, pairs its lanes, or three lanes are no faster. Two lanes
+    are what the Gram source can put away a cycle: every entry goes into its stage lane and
+    GRAM_B (LM's retries), two ports each (imu_window's 496 entries: 248 words an instance, over
+    the datapath's II 233, and a region's two instances 496 cycles of the source). Lane C's
+    entries go into two memories of their own (its stage lane, its GRAM_B), so three entries a
+    word: each lane at most ceil(n / 3) entries (and m + 3), the HGC's loop ahead of the
+    datapath (it waits for the rows) and the source catching up after a wait at three entries a
+    cycle. Lane C is the longest run of packed positions c0 ... c0 + |C| - 1 whose entries only
+    the first K' rows touch (never the last row: no += into G), so the grams process tells a
+    lane-C entry by its position alone; lane B the first entries no row past K touches of the
+    rest, lane A the rest (the last row's among them); K' + K the fewest multipliers."""
+    two_a, two_b, _, paired = gram_config(program, block, lanes, jac_ii, jac_cycles)
+    if paired or not two_b:
+        return None
+    b = program.blocks[block]
+    rows = _gram_rows(b)
+    keys = list(rows)
+    n, m, last = len(keys), b.residual_dim, sum(b.variable_dims)
+    steps = max(-(-n // 3), m + 3)
+    if steps >= max(len(two_a), len(two_b)):
+        return None
+    best = None
+    for kc in range(1, m):
+        ok = [e[0] != last and rows[e][-1] < kc for e in keys] + [False]
+        run, start = (0, 0), None
+        for i, x in enumerate(ok):
+            if x and start is None:
+                start = i
+            elif not x and start is not None:
+                run = max(run, (i - start, -start))
+                start = None
+        nc, c0 = min(run[0], steps), -run[1]
+        if nc < n - 2 * steps:
+            continue
+        lane_c = keys[c0:c0 + nc]
+        need = max(0, n - steps - nc)
+        for kb in range(1, m):
+            lane_b = [e for e in keys[:c0] + keys[c0 + nc:] if e[0] != last and rows[e][-1] < kb]
+            if len(lane_b) >= need:
+                if best is None or kb + kc < best[0]:
+                    chosen_b = set(lane_b[:need])
+                    lane_a = tuple(e for e in keys[:c0] + keys[c0 + nc:] if e not in chosen_b)
+                    best = (kb + kc, (lane_a, tuple(lane_b[:need]), tuple(lane_c), kb, kc, c0))
+                break
+    return best[1] if best else None
+
+
+def gram_steps_of(b, count: int, lane_a, longest: int, t_timing: dict, per: int = 1) -> int:
+    """:func:`gram_steps` of given lanes: lane A's entries ``per`` an iteration, the other lanes'
+    ``longest`` entries, with ``count`` instances of block ``b``."""
+    steps = max(-(-len(lane_a) // per), longest)
+    if count <= 1:
         return steps
     last = sum(b.variable_dims)  # the last row of [A | b]'s Gram: b^T A, then b^T b
     g = [e // per for e, (p, q) in enumerate(lane_a) if p == last and q < last]
@@ -956,20 +1013,39 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
     else:
         lay = beside_layout(program, tables, order, big)
         passes = beside_passes
-    steps = entries.trip // len(lay["order"])
-    ready = beside_ready(len(lay["order"]), jac, rows.cycles, steps, entries.ii, entries.depth)
     lanes = ctx.opts.cascade_lanes
     banks = {"cond_banks": ctx.opts.backsub_lanes} if passes is beside_set_passes else {}
-    # one cascade: each step's pivot check where the first solve is faster (check_beside)
+    # two cascades: a third entries lane (gram_third) where the first solve is faster by it
+    third = None
+    if passes is beside_set_passes and ctx.opts.hgc_third_lane:
+        third = gram_third(program, big, ctx.opts.hgc_lanes, jacobian_ii(region.processes),
+                           jacobian_cycles(region.processes))
     best = None
-    for extra in ({},) if passes is beside_set_passes else ({}, {"check_beside": True}):
-        first = passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps,
-                       entries.ii, lanes, **banks, **extra)
-        cycles, _ = beside_cycles(phase_cycles(region), ready, first, timing["move"][1])
-        if best is None or cycles < best[0]:
-            best = (cycles, extra)
-    cycles, extra = best
+    for lane3 in (None, third) if third else (None,):
+        reg = region
+        if lane3 is not None:
+            steps3 = gram_steps_of(program.blocks[big], len(lay["order"]), lane3[0],
+                                   max(len(lane3[1]), len(lane3[2])), ctx.timing)
+            reg = replace(region, processes=tuple(replace(p, loops=(rows, replace(
+                entries, trip=len(lay["order"]) * steps3))) if p.name == f"reduce_{big}"
+                else p for p in region.processes))
+        red = next(p for p in reg.processes if p.name == f"reduce_{big}").loops[1]
+        steps = red.trip // len(lay["order"])
+        ready = beside_ready(len(lay["order"]), jac, rows.cycles, steps, red.ii, red.depth)
+        # one cascade: each step's pivot check where the first solve is faster (check_beside)
+        for extra in ({},) if passes is beside_set_passes else ({}, {"check_beside": True}):
+            first = passes(tables, order, dims, ctx.opts.cpe, ops, timing, lay, True, steps,
+                           red.ii, lanes, **banks, **extra)
+            cycles, _ = beside_cycles(phase_cycles(reg), ready, first, timing["move"][1])
+            if best is None or cycles < best[0]:
+                best = (cycles, extra, lane3, reg, steps)
+    cycles, extra, third, region, steps = best
     banks = {**banks, **extra}
+    if third is not None:  # lane C's K' multipliers and its tree's K' - 1 adders, lane B's K
+        m, kb, kc = program.blocks[big].residual_dim, third[3], third[4]
+        hgc = next(i for i, u in enumerate(ctx.units) if u.name == f"hgc_{big}")
+        ctx.units[hgc] = replace(ctx.units[hgc], operators=(("add", m + kb + kc - 2),
+                                                          ("mul", m + kb + kc)))
     # the producer's region stays in the plan for the record (per "beside": priced inside
     # hgc_beside, not on its own)
     ctx.phases[at:at + 1] = [(slot, Phase("hgc_beside", False, (Process(
@@ -986,6 +1062,12 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
     per_lane = 2 if passes is beside_set_passes else 1
     ctx.memories.append(Memory("stage", 2 * per_lane * lay["n_stage"], ops.word_bits, per_lane))
     ctx.memories.append(Memory("gram_kept", len(lay["order"]) * lay["nb"], ops.word_bits, 1))
+    if third is not None:  # lane C's own stage lanes and GRAM_B (emitter: stage_c marks it)
+        slots += 1
+        nc = len(third[2])
+        ctx.memories.append(Memory("stage_c", 2 * per_lane * lay["n_stage"] // lay["nb"] * nc,
+                                   ops.word_bits, per_lane))
+        ctx.memories.append(Memory("gram_kept_c", len(lay["order"]) * nc, ops.word_bits, 1))
     ctx.channels.append(Channel("grams", "stream", lay["max_per_step"] * steps,
                                 slots * ops.word_bits, f"reduce_{big}", "gram_source"))
 

@@ -2236,8 +2236,8 @@ template <int PADDED, int ROWS, int COLS, int ENTRIES, int ENTRIES_B, int K, int
 bool gram_entries_stream(hls::stream<GramRow>& rows, hls::stream<GramWord>& grams,
                          T ab[2][ROWS * PADDED], int n, const int INST[N], const int P[ENTRIES],
                          const int Q[ENTRIES], const int PB[ENTRIES_B > 0 ? ENTRIES_B : 1],
-                         const int QB[ENTRIES_B > 0 ? ENTRIES_B : 1], const int CV[COLS - 1],
-                         const int CO[COLS - 1]) {
+                         const int QB[ENTRIES_B > 0 ? ENTRIES_B : 1],
+                         const int CV[COLS - 1], const int CO[COLS - 1]) {
     bool finite = true;
     int i = 0, e = 0;
     for (int t = 0; t < n * STEPS; ++t) {
@@ -2261,7 +2261,7 @@ bool gram_entries_stream(hls::stream<GramRow>& rows, hls::stream<GramWord>& gram
             const int p = PB[e], q = QB[e];
             const L v = gram_entry<PADDED, ROWS, K>(ab[cur], p, q);
             if (p == q) finite = finite && fgc_isfinite(T(v));
-            word.v[SLOTS - 1] = v;
+            word.v[A_PER] = v;
         }
         grams.write(word);
         if (++e == STEPS) {
