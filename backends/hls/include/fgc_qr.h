@@ -455,17 +455,39 @@ struct qr_update_units<CFG, U, true> {
     }
 };
 
+// One word (row i, the t-th of the pass) of column j + 1 after reflection j, in the Evaluate's
+// last pass: row j's entry to the collector, the new pivot and the non-zero rows below it into
+// vout (m words so far), their squares into the partial sums (the partial of iteration t).
+template <class CFG>
+inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typename CFG::T>& exq,
+                         qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1], int& m,
+                         typename CFG::T& pivot, typename CFG::T part[CFG::PARTIALS]) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    const int col = j + 1;
+    if (i == j) exq.write(e);  // row j's entry in column j + 1 to the collector
+    if (i == col) pivot = e;
+    if (i == col || (i > col && e != T(0))) {
+        vout[1 + m].val = e;
+        vout[1 + m].idx = i;
+        ++m;
+    }
+    if (i >= col) part[t % CFG::PARTIALS] += e * e;
+}
+
 // Evaluate: reflection j applied to column j + 1 and that column's Householder vector (if j + 1
 // < k). The column arrives from the unit that holds it as it stood before reflection j (rows j0
 // ... rows - 1, j0 = max(j, 0)), reflection j's vector from the broadcast (evq: {0, n}, the n - 1
 // words below the pivot) and from qr_finish (etq: v_0, tau, R_jj), as the Update units get them.
 // The column's dot product with the vector is taken as the column arrives, folded with the
 // pivot's term once v_0 is there, scaled once tau is; then one pass over the column updates it
-// (x -= tau (v.x) v on the active rows; with one active row the pivot row's negation, with none
-// nothing), sends its row j entry to the collector (exq) and keeps its pivot and non-zero rows
+// (x -= tau (v.x) v on the active rows), sends its row j entry to the collector (exq) and keeps
+// its pivot and non-zero rows
 // in vout ({0, n'}, then n' words {x_a, row}: v_a = x_a below the pivot) while summing their
 // squares (P interleaved partial sums, folded) for hout ({norm2, n'}, {x_0, j + 1}), which the
 // next region's qr_finish turns into v_0, tau and R_jj while its broadcast streams the rest.
+// With no reflection to apply (n = 0; n = 1: the pivot row's negation, exact) the column is
+// received and passed on in one pass.
 template <class CFG>
 void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS],
                  hls::stream<qr_word<typename CFG::T> >& evq,
@@ -490,98 +512,113 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS UNROLL
         part[t] = T(0);
     }
-    // receive the column, and reflection j's vector below the pivot (its rows ascending, each at
-    // or after the column word of its row), v.x over it (the partial of iteration t, met again
-    // P >= La iterations later): trip rows - j0, II 1, depth Lm + La
-    // (it reads the column and the vector as they are streamed: the counters' critical path)
-    FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "vector_column");
-    FGC_WAIT("qr_evaluate", 0, "qr_broadcast", 0, "vector");
-    int a = 1;
-    qr_word<T> next;
-    next.val = T(0);
-    next.idx = -1;
-    for (int t = 0; t < rows - j0; ++t) {
+    int m = 0;
+    T pivot = T(0);
+    if (n <= 1) {
+        // nothing to apply but, with one active row, the pivot row's negation (exact): the
+        // column received, row j's entry sent, the vector kept and its squares summed in one
+        // pass: trip rows - j0, II 1, depth Lm + La
+        FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "vector_column");
+        FGC_WAIT("qr_evaluate", 0, "qr_broadcast", 0, "vector");
+        for (int t = 0; t < rows - j0; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-        T e = T(0);
-        for (int u = 0; u < CFG::N_UNITS; ++u) {
+            T e = T(0);
+            for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
-            if (u == owner) e = colq[u].read();
+                if (u == owner) e = colq[u].read();
+            }
+            const int i = j0 + t;
+            qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, exq, vout, m, pivot, part);
         }
-        x[t] = e;
-        if (a <= below && next.idx < j0 + t) next = evq.read();  // the next word below the pivot
-        if (a <= below && next.idx == j0 + t) {
-            v[a] = next.val;
-            at[a] = next.idx;
-            ++a;
-            part[t % P] += next.val * e;
+        FGC_CYCLES("qr_evaluate", 0, "receive_norm", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+    } else {
+        // receive the column, and reflection j's vector below the pivot (its rows ascending,
+        // each at or after the column word of its row), v.x over it (the partial of iteration
+        // t, met again P >= La iterations later): trip rows - j0, II 1, depth Lm + La
+        // (it reads the column and the vector as they are streamed: the counters' critical path)
+        FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "vector_column");
+        FGC_WAIT("qr_evaluate", 0, "qr_broadcast", 0, "vector");
+        int a = 1;
+        qr_word<T> next;
+        next.val = T(0);
+        next.idx = -1;
+        for (int t = 0; t < rows - j0; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
+            T e = T(0);
+            for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+                if (u == owner) e = colq[u].read();
+            }
+            x[t] = e;
+            // the next word below the pivot
+            if (a <= below && next.idx < j0 + t) next = evq.read();
+            if (a <= below && next.idx == j0 + t) {
+                v[a] = next.val;
+                at[a] = next.idx;
+                ++a;
+                part[t % P] += next.val * e;
+            }
         }
-    }
-    FGC_CYCLES("qr_evaluate", 0, "receive_dot", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
-    // v_0 (qr_finish waits for the square root): its term is one more leaf of the fold's tree
-    FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "v0");
-    v[0] = etq.read().val;
-    T dot = T(0);
-    if (n > 1) {
+        FGC_CYCLES("qr_evaluate", 0, "receive_dot", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+        // v_0 (qr_finish waits for the square root): its term is one more leaf of the fold's tree
+        FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "v0");
+        v[0] = etq.read().val;
         T leaves[P + 1];
 #pragma HLS ARRAY_PARTITION variable=leaves complete
         for (int t = 0; t < P; ++t) {
 #pragma HLS UNROLL
             leaves[t] = part[t];
+            part[t] = T(0);
         }
         leaves[P] = v[0] * x[0];  // depth Lm
         FGC_CYCLES("qr_evaluate", 0, "pivot_term", 1, 1, CFG::MUL_LAT);
-        dot = fold_partials<T, P + 1>(leaves);  // depth La ceil(log2 (P + 1))
+        const T dot = fold_partials<T, P + 1>(leaves);  // depth La ceil(log2 (P + 1))
         FGC_CYCLES("qr_evaluate", 0, "fold_dot", 1, 1, CFG::ADD_LAT * ceil_log2(P + 1));
-    } else {
-        FGC_CYCLES("qr_evaluate", 0, "pivot_word", 1, 1, 1);
-    }
-    // tau and R_jj (the collector has R_jj from qr_finish)
-    FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "tau");
-    const T tau = etq.read().val;
-    etq.read();
-    FGC_CYCLES("qr_evaluate", 0, "tail", 2, 1, 1);
-    T scaled = T(0);
-    if (n > 1) {
-        scaled = tau * dot;  // depth Lm
+        // tau and R_jj (the collector has R_jj from qr_finish)
+        FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "tau");
+        const T tau = etq.read().val;
+        etq.read();
+        FGC_CYCLES("qr_evaluate", 0, "tail", 2, 1, 1);
+        const T scaled = tau * dot;  // depth Lm
         FGC_CYCLES("qr_evaluate", 0, "scale", 1, 1, CFG::MUL_LAT);
-    }
-    for (int t = 0; t < P; ++t) {
-#pragma HLS UNROLL
-        part[t] = T(0);
-    }
-    // the update, row j's entry to the collector, the vector kept and its squares summed:
-    // trip rows - j0, II 1, depth 2 (Lm + La) (the multiply-add, then the square into its sum)
-    int b = 1, m = 0;
-    T pivot = T(0);
-    for (int t = 0; t < rows - j0; ++t) {
+        // the update, row j's entry to the collector, the vector kept and its squares summed:
+        // trip rows - j0, II 1, depth 2 (Lm + La) (the multiply-add, then the square into its sum)
+        int b = 1;
+        for (int t = 0; t < rows - j0; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-        const int i = j0 + t;
-        T e = x[t];
-        if (i == j && n == 1) {
-            e = -e;  // one active row: the pivot row's negation, exactly
-        } else if (i == j && n > 1) {
-            e -= scaled * v[0];
-        } else if (b <= below && at[b] == i) {
-            e -= scaled * v[b];
-            ++b;
+            const int i = j0 + t;
+            // the active row's vector word (the pivot's v_0, or the next below it): one
+            // multiply-add for both
+            T vw = v[0];
+            bool on = i == j;
+            if (!on && b <= below && at[b] == i) {
+                vw = v[b];
+                on = true;
+                ++b;
+            }
+            const T e = on ? T(x[t] - scaled * vw) : x[t];
+            qr_next_word<CFG>(i, j, t, e, exq, vout, m, pivot, part);
         }
-        if (i == j) exq.write(e);  // row j's entry in column j + 1 to the collector
-        if (i == col) pivot = e;
-        if (i == col || (i > col && e != T(0))) {
-            vout[1 + m].val = e;
-            vout[1 + m].idx = i;
-            ++m;
-        }
-        if (i >= col) part[t % P] += e * e;
+        FGC_CYCLES("qr_evaluate", 0, "axpy_norm", rows - j0, 1,
+                   2 * (CFG::MUL_LAT + CFG::ADD_LAT));
     }
-    FGC_CYCLES("qr_evaluate", 0, "axpy_norm", rows - j0, 1,
-               2 * (CFG::MUL_LAT + CFG::ADD_LAT));
     const T norm2 = fold_partials<T, P>(part);  // depth La ceil(log2 P)
     FGC_CYCLES("qr_evaluate", 0, "fold", 1, 1, CFG::ADD_LAT * ceil_log2(P));
+    if (n <= 1) {  // qr_finish's words, not needed here (v_0, tau, R_jj)
+        FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "v0");
+        etq.read();
+        FGC_CYCLES("qr_evaluate", 0, "pivot_word", 1, 1, 1);
+        FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "tau");
+        etq.read();
+        etq.read();
+        FGC_CYCLES("qr_evaluate", 0, "tail", 2, 1, 1);
+    }
     // nothing to reflect (every entry 0, or too small to square): n' = 0
     if (!(norm2 > T(0))) m = 0;
     vout[0].val = T(0);

@@ -97,18 +97,23 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             # does (v.x as they arrive), the pivot's term once v_0 is there, the scale once tau
             # is, then one pass that updates the column, sends row j's entry to the collector
             # and sums the next vector's squares, and their fold (the tail is the next
-            # region's qr_finish)
+            # region's qr_finish); with no reflection to apply (n <= 1) one pass, the fold,
+            # then qr_finish's words
             e = len(procs)
             span = rows - max(j, 0)
-            waits += [(e, 1, 2 + col % units, "vector_column"), (e, 1, 0, "vector"),
-                      (e, 2, 1, "v0"), (e, 4 if n > 1 else 3, 1, "tau")]
-            procs.append([Loop("header", 1, 1, 1), Loop("receive_dot", span, 1, lm + la)]
-                         + ([Loop("pivot_term", 1, 1, lm), Loop("fold_dot", 1, 1, la * tree1)]
-                            if n > 1 else [Loop("pivot_word", 1, 1, 1)])
-                         + [Loop("tail", 2, 1, 1)]
-                         + ([Loop("scale", 1, 1, lm)] if n > 1 else [])
-                         + [Loop("axpy_norm", span, 1, 2 * (lm + la)),
-                            Loop("fold", 1, 1, la * tree)])
+            waits += [(e, 1, 2 + col % units, "vector_column"), (e, 1, 0, "vector")]
+            if n > 1:
+                waits += [(e, 2, 1, "v0"), (e, 4, 1, "tau")]
+                procs.append([Loop("header", 1, 1, 1), Loop("receive_dot", span, 1, lm + la),
+                              Loop("pivot_term", 1, 1, lm), Loop("fold_dot", 1, 1, la * tree1),
+                              Loop("tail", 2, 1, 1), Loop("scale", 1, 1, lm),
+                              Loop("axpy_norm", span, 1, 2 * (lm + la)),
+                              Loop("fold", 1, 1, la * tree)])
+            else:
+                waits += [(e, 3, 1, "v0"), (e, 4, 1, "tau")]
+                procs.append([Loop("header", 1, 1, 1), Loop("receive_norm", span, 1, lm + la),
+                              Loop("fold", 1, 1, la * tree), Loop("pivot_word", 1, 1, 1),
+                              Loop("tail", 2, 1, 1)])
         # the collector: row j of R out (cond / update) and the running scale
         first = 0 if j < frontal else frontal  # rows out with their zeros left of the diagonal
         procs.append([Loop("header", 1, 1, 1)]
@@ -129,6 +134,7 @@ def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[Bound
     ``partials``: CFG::PARTIALS."""
     p = partials
     evaluate = (BoundLoop("receive_dot", (("add", 1), ("mul", 1)), 1),
+                BoundLoop("receive_norm", (("add", 1), ("mul", 1)), 1),
                 BoundLoop("axpy_norm", (("add", 2), ("mul", 2)), 1),
                 BoundLoop("fold", (("add", p - 1),), 0),  # fold_partials<P>, sequential
                 # the next pivot column's fold (fold_partials<P + 1>), its pivot term and scale
