@@ -705,6 +705,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     hls::stream<qr_word<typename CFG::T> > etq;
 #pragma HLS STREAM variable=etq depth=3
     hls::stream<typename CFG::T> exq;
+#pragma HLS STREAM variable=exq depth=2
     FGC_REGION("qr_reflection");
     qr_broadcast<CFG>(vin, j, k, vq, evq);
     qr_finish<CFG>(hin, k, tq, etq, rq);

@@ -223,9 +223,10 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
         # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
         # the vector below the pivot to each Update unit while qr_finish computes v_0, tau and
         # R_jj from the norm and the pivot and streams them to each unit (R_jj also to collect);
-        # each unit streams the next column (its owner's) to Evaluate and its entries of R's
-        # row to collect; Evaluate writes one of the vector's and one of the norm's two
-        # buffers, which the next region's broadcast and qr_finish read
+        # the unit holding the next column streams it to Evaluate (which applies the
+        # reflection to it), each unit its entries of R's row to collect; Evaluate writes one
+        # of the vector's and one of the norm's two buffers, which the next region's broadcast
+        # and qr_finish read
         channels = ctx.channels
         for u in range(opts.units):
             channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
@@ -240,6 +241,14 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
                                     f"qr{s}_update{u}", f"qr{s}_evaluate"))
             channels.append(Channel(f"qr{s}_row{u}", "stream", 2, ops.word_bits,
                                     f"qr{s}_update{u}", f"qr{s}_collect"))
+        # the Evaluate's copies of the vector (the whole vector: it takes a word when the
+        # column reaches its row) and of v_0, tau, R_jj, and its entry of row j to collect
+        channels.append(Channel(f"qr{s}_ve", "stream", max_rows, ops.word_bits + 32,
+                                f"qr{s}_broadcast", f"qr{s}_evaluate"))
+        channels.append(Channel(f"qr{s}_te", "stream", 3, ops.word_bits + 32,
+                                f"qr{s}_finish", f"qr{s}_evaluate"))
+        channels.append(Channel(f"qr{s}_e", "stream", 2, ops.word_bits,
+                                f"qr{s}_evaluate", f"qr{s}_collect"))
         channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 1, ops.word_bits + 32,
                                 f"qr{s}_evaluate", f"qr{s}_broadcast"))
         channels.append(Channel(f"qr{s}_hbuf", "pingpong", 2, ops.word_bits + 32,
