@@ -272,8 +272,11 @@ def test_the_plan_prices_the_scalar_the_hls_config_emits(linear):
     assert {m.width for m in plan.memories} == {32}
     f32 = operators.table("float32")
     streams = [ch for ch in plan.channels if ch.kind == "stream"]
-    if linear == "qr":  # the reflector streams are 2 adder latencies deep (fgc_qr.h's V_DEPTH)
-        assert {ch.depth for ch in streams if "_v" in ch.name} == {2 * f32.add.latency}
+    if linear == "qr":  # the reflector streams to the Update units are 2 adder latencies deep
+        # (fgc_qr.h's V_DEPTH; the Evaluate's copy qr<s>_ve holds a whole vector)
+        reflector = [ch for ch in streams if ch.name.split("_")[-1][:1] == "v"
+                     and ch.name.split("_")[-1][1:].isdigit()]
+        assert reflector and {ch.depth for ch in reflector} == {2 * f32.add.latency}
     # the same design (back-substitution's width as the config resolves it for this chain)
     as_program = build_plan(program, PlanOptions.of(program,
                                                     backsub_lanes=plan.options.backsub_lanes))
