@@ -154,6 +154,11 @@ def cases():
     out.append(("imu_window N=20 Cholesky #CPE=5 x2 L2", imu_window.build(N=20),
                 SolverConfig(method="gn", linear="cholesky", cpe=5, precision="float32"),
                 HlsConfig(scalar="float", unit_sets=2, cascade_lanes=2)))
+    # paper B's 80 CPEs: two cascades of 40, two words a cycle (a step's 15 pivots: the round
+    # leaves each cascade at its last pivot's CPE, the 25 after it idle)
+    out.append(("imu_window N=20 Cholesky #CPE=40 x2 L2", imu_window.build(N=20),
+                SolverConfig(method="gn", linear="cholesky", cpe=40, precision="float32"),
+                HlsConfig(scalar="float", unit_sets=2, cascade_lanes=2)))
     # back-substitution by columns (backsub_lanes=4: a loader and a process per end of the
     # chain, the state update fed by both), one cascade and two; a chain's default design takes
     # them (backsub_lanes auto), so the cases above with the default config run them too, and

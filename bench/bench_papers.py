@@ -596,7 +596,7 @@ def paper_b(cfg: Config) -> list[Row]:
                     "the emitted design streams each elimination step's frontal matrix through "
                     "the cascade, one word a cycle per round, steps one after another; a pivot "
                     "no longer stalls the stream (about 14 cycles a CPE in float32), so a step "
-                    "costs about its words and CPEs beyond its f pivots only pass words on "
+                    "costs about its words and CPEs beyond its f pivots idle "
                     "(docs/hls.md, 'The Cholesky cascade'); the what-if "
                     "designs stream H's whole trailing triangle (or its envelope); the paper's "
                     "iteration count and CPE pipeline are not known here"))

@@ -98,6 +98,10 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     if stream is not None and stream.template is not program:
         raise HlsConfigError("internal error: the stream layout is not of the emitted Program")
     context["stream"] = None if stream is None else stream.context(config.linear_cxx, config.part)
+    context["leaf_lin"] = bool(context["stream"] and context["stream"]["marginal"])
+    if context["leaf_lin"]:
+        _leaf_context(context, stream.leaf_factors(), stream.leaf_gone())
+        context["leaf_skip"] = stream.leaf_skip()
     context["stream_magic"], context["stream_result_magic"] = STREAM_MAGIC, STREAM_RESULT_MAGIC
     batch = getattr(stream, "batch", None)
     context["extra_sources"] = [f"{batch.project}.cpp"] if batch is not None else []
@@ -203,6 +207,28 @@ def accel_plan(program: Program, config: HlsConfig):
     unit sets and scalar types: :meth:`PlanOptions.for_config`)."""
     from fgc_backends.hls.plan import PlanOptions, build_plan
     return build_plan(program, PlanOptions.for_config(for_program(program, config), program))
+
+
+def _leaf_context(context: dict, leaf: frozenset, gone: frozenset) -> None:
+    """The marginal's linearisation (``linearize_all(X, part)``): per block type the instances
+    whose rows slot 0's step stacks (``leaf``, part 1) and those of them left once keyframe 0 has
+    gone (``live``, part 2), in the block's instance order; a part's table (``*_index``) only
+    where its instances are not the first of the block's (then the loop only stops early). The
+    small block types' shared loop the same, by its entries."""
+    for b in context["blocks"]:
+        insts = list(b.instances)
+        for part, keep in (("leaf", leaf), ("live", leaf - gone)):
+            chosen = [f for f in insts if f in keep]
+            setattr(b, part, chosen)
+            setattr(b, f"{part}_index", chosen)
+            setattr(b, f"{part}_table", chosen != insts[:len(chosen)])
+    small = context["small"]
+    if small:
+        for part, keep in (("leaf", leaf), ("live", leaf - gone)):
+            chosen = [k for k, f in enumerate(small["instances"]) if f in keep]
+            small[part] = chosen
+            small[f"{part}_index"] = chosen
+            small[f"{part}_table"] = chosen != list(range(len(chosen)))
 
 
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:

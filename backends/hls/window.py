@@ -216,6 +216,64 @@ class WindowLayout(WindowTemplate):
                                     f"than its {self.kf_dim} tangent directions: the marginal "
                                     "prior would be singular")
 
+    def leaf_factors(self) -> frozenset:
+        """The template's factor instances whose rows slot 0's step stacks (the instances
+        entering the leaf step): all a marginal needs linearised, since its step reads no other
+        rows of AB (``linearize_all(X, true)``, fgc_stream.h's ``CFG::linearize``). Empty
+        without a marginal."""
+        from fgc_backends.cost.structure import entering_blocks
+
+        if self.leaf_step is None:
+            return frozenset()
+        t = self.template
+        return frozenset(entering_blocks(t, t.schedule.steps[self.leaf_step]))
+
+    def leaf_gone(self) -> frozenset:
+        """The leaf step's factor instances that hold nothing once keyframe 0 has left the
+        window: every member's rows zero (:meth:`zero_factors`, τ written) at every keyframe
+        from ``size`` on (keyframe 0's own priors, say). A marginal from then on neither
+        linearises nor stacks them (``live``), so slot 0's step reflects only the rows that
+        can be non-zero. Empty unless the rows left still cover the step's conditional and the
+        factor it passes, and the stream reaches past the first marginal."""
+        from fgc_backends.cost.structure import entering_blocks
+
+        if self.leaf_step is None or self.size != self.window + 1:
+            return frozenset()
+        t = self.template
+        st = t.schedule.steps[self.leaf_step]
+        n_kf = len(self.program.schedule.clusters)
+        if n_kf <= self.size:
+            return frozenset()
+        zero = [self.zero_factors(kf, True) for kf in range(self.size, n_kf)]
+        gone = frozenset(i for i in entering_blocks(t, st)
+                         if all(ti in z for z in zero for ti in t.factors[i].factors))
+        rows = sum(t.blocks[t.factors[i].block].residual_dim for i in entering_blocks(t, st)
+                   if i not in gone)
+        rows += sum(t.schedule.steps[c].new_factor_rows for c in st.children)
+        if rows < st.frontal_dim + st.new_factor_rows:
+            return frozenset()
+        return gone
+
+    def leaf_skip(self) -> tuple[int, int]:
+        """The leaf step's stack once keyframe 0 has left (:meth:`leaf_gone`): a mask of its
+        factor list's entries left out (bit k: the k-th of STEP_FACTORS, the first 32) and the
+        rows stacked."""
+        t = self.template
+        st = t.schedule.steps[self.leaf_step]
+        gone = self.leaf_gone()
+        from fgc_backends.hls.plan import _tables
+
+        tables = _tables(t)
+        fb = tables["STEP_FACTOR_BEGIN"]
+        entries = tables["STEP_FACTORS"][fb[st.index]:fb[st.index + 1]]
+        mask = 0
+        rows = tables["STEP_ROWS"][st.index]
+        for k, i in enumerate(entries):  # (factor instances, as qr_stack reads them)
+            if k < 32 and i in gone:
+                mask |= 1 << k
+                rows -= t.blocks[t.factors[i].block].residual_dim
+        return mask, rows
+
     # -- what the emitter places ---------------------------------------------------------------
     def context(self, linear_cxx: str, part: str = DEFAULT_PART) -> dict:
         """The stream section's constants and tables (accel.h.jinja / accel.cpp.jinja);
@@ -430,8 +488,8 @@ class WindowLayout(WindowTemplate):
         last = self.size - 1
         m = min(j, last)
         first = j - m
-        if held is None:
-            held = [None] * len(self.members)
+        # (a new list: zero_factors keeps every keyframe's, which the next must not change)
+        held = [None] * len(self.members) if held is None else list(held)
         if j > last:
             held = [None if mem.prior or src is None else held[src]
                     for mem, src in zip(self.members, self.next_member, strict=True)]

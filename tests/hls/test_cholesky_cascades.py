@@ -72,8 +72,9 @@ def test_regions_pair_the_two_ends_of_a_chain(lio30):
 def test_the_streamed_grams_go_region_by_region(lio30):
     """The HGC beside two cascades (beside_region_layout): the IMU block's instances in region
     order (a region's cascade 0 step's, then cascade 1's), each once; a region's streamed Grams
-    side by side in its stage lane; the first solve's passes gated by their region's last
-    instance (beside_set_passes), and the region beside it priced from the replay."""
+    in its stage lane, a memory a cascade's step; the first solve's passes gated by their
+    region's last instance (beside_set_passes), and the region beside it priced from the
+    replay."""
     tables = _tables(lio30)
     n = len(lio30.schedule.steps)
     order = [tables["LEVEL_STEPS"][i] for i in range(n)]
@@ -92,9 +93,13 @@ def test_the_streamed_grams_go_region_by_region(lio30):
     for r, reg in enumerate(regions):
         mine = lay["order"][lay["step_first"][r]:lay["step_first"][r] + lay["step_count"][r]]
         assert {step_of[f] for f in mine} <= set(reg)
+        # a lane a memory per cascade's step: cascade 0's instances first, each from 0
+        n0 = lay["step_count0"][r]
+        assert all(step_of[f] == reg[0] for f in mine[:n0])
         assert [lay["factor_stage"][f] for f in mine] == [
-            j * lay["nb"] for j in range(len(mine))]
-    assert lay["n_stage"] == max(lay["step_count"]) * lay["nb"]
+            (j if j < n0 else j - n0) * lay["nb"] for j in range(len(mine))]
+    most = max(sum(step_of[f] == s for f in lay["order"]) for s in flat)  # of a step
+    assert lay["n_stage"] == most * lay["nb"]
     before = plan_cost(accel_plan(lio30, HlsConfig(scalar="float", unit_sets=2,
                                                    hgc_beside=False)))
     cost = plan_cost(plan)

@@ -430,8 +430,7 @@ def test_a_call_site_without_a_price_fails_the_stream_check(emitted_stream):
     stream top is a second copy of the marginal's QR set and the kept net's datapaths that the
     plan does not price, and the stream section then reads above its plan."""
     files, top, model = emitted_stream
-    call = ("marginal_and_kept<CFG>(update && !batch ? m : -1, finite, reuse, lin01, reexp, "
-            "walk, x0, code);")
+    call = "marginal_and_kept<CFG>(mc, finite, reuse, live, lin01, reexp, walk, x0, code);"
     planted = [(k, t.replace(call, call + "\n        " + call)) if k == "fgc_stream.h" else (k, t)
                for k, t in files]
     assert planted != files

@@ -132,10 +132,53 @@ def test_the_sweep_walks_the_stale_kept_estimates_it_starts_from(sweep7):
     assert walked.cycles - asked.cycles == base + each + model.stream["stream_kept_slot0"]
 
 
-def _broken(sweep7, tmp_path, old: str, new: str):
+def test_a_sweep_pass_linearises_and_stacks_slot_0s_rows_alone(sweep7):
+    """A sweep pass (and a marginal) linearises only the factors slot 0's step stacks, and
+    once keyframe 0 has left neither linearises nor stacks its priors (zero from then on): the
+    leaf step reflects 39 rows, not the 54 of its pattern. The model prices each pass so, the
+    kernel carries the skip; the agreement with the simulator (above) holds through it."""
+    _, program, _, _, stream, _ = sweep7
+    lay = stream.layout
+    t = lay.template
+    leaf, gone = lay.leaf_factors(), lay.leaf_gone()
+    assert gone and gone < leaf
+    step = t.schedule.steps[lay.leaf_step]
+    assert leaf == {i for i, f in enumerate(t.factors)
+                    if f.factors[0] in set(step.factors)}
+    n_kf = len(program.schedule.clusters)
+    for i in gone:  # nothing from keyframe size on; something at the first marginal
+        members = set(t.factors[i].factors)
+        assert all(members <= lay.zero_factors(kf, True) for kf in range(lay.size, n_kf))
+        assert not members <= lay.zero_factors(lay.window, True)
+    mask, rows = lay.leaf_skip()
+    gone_rows = sum(t.blocks[t.factors[i].block].residual_dim for i in gone)
+    assert rows == sum(t.blocks[t.factors[i].block].residual_dim for i in leaf) - gone_rows
+    assert rows >= step.frontal_dim + step.new_factor_rows
+    text = (stream.project.directory / f"{stream.project.name}.cpp").read_text()
+    assert f"LEAF_SKIP = {mask}u;" in text and f"LEAF_LIVE_ROWS = {rows};" in text
+    model = WindowUpdateModel(lay, HlsConfig(scalar="double"))
+    st = model.stream
+    price = model.price(4, 1, status="max_iterations")  # passes 2 (keyframe 0 leaves) and 3
+    assert price.term("sweep_linearize").cycles == (st["stream_leaf_linearize"]
+                                                    + st["stream_leaf_linearize_live"])
+    whole = model.group["factor_jacobian"] + model.group["gradient"]
+    assert st["stream_leaf_linearize_live"] < st["stream_leaf_linearize"] < whole
+    z2, z3 = model.zero_factors(2), model.zero_factors(3)
+    live = model.qr_cycles(z3, False, True, live=True)
+    assert live < model.qr_cycles(z3, False, True)
+    assert price.term("sweep_marginal").cycles == (
+        st["stream_marginal"] + model.qr_cycles(z2, False, True)
+        + st["stream_marginal_live"] + live)
+    # (zero_factors of an earlier keyframe, asked after a later one's: the same)
+    again = type(lay)(lay.graph, lay.program, lay.window, kept=True, sweep=lay.sweep)
+    assert again.zero_factors(n_kf - 1, True) and again.zero_factors(1, True) == \
+        lay.zero_factors(1, True)
+
+
+def _broken(sweep7, tmp_path, old: str, new: str, file: str = "include/fgc_stream.h"):
     graph, program, data, sim, _, _ = sweep7
     bad = OnChipIncrementalStream(graph, program, "double", out_dir=tmp_path)
-    header = bad.project.directory / "include" / "fgc_stream.h"
+    header = bad.project.directory / file.format(name=bad.project.name)
     text = header.read_text()
     patched = text.replace(old, new)
     assert patched != text
@@ -160,6 +203,14 @@ def test_a_conditional_not_kept_breaks_the_agreement(sweep7, tmp_path):
     # the sweep's steps run, but the conditionals they leave are not stored
     _broken(sweep7, tmp_path, "if (mc == STREAM_W && marginal == 1) keep<CFG>(",
             "if (last && mc == STREAM_W && marginal == 1) keep<CFG>(")
+
+
+@pytest.mark.heavy
+def test_a_live_step_that_skips_a_factor_holding_rows_breaks_the_agreement(sweep7, tmp_path):
+    # the live leaf step leaves out the IMU factor's rows too (the 4th of slot 0's factors)
+    mask, _ = sweep7[4].layout.leaf_skip()
+    _broken(sweep7, tmp_path, f"LEAF_SKIP = {mask}u;", f"LEAF_SKIP = {mask | 8}u;",
+            "{name}.cpp")
 
 
 def test_lm_to_convergence_keeps_the_batch_kernel_and_refuses_the_sweep():

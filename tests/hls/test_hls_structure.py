@@ -298,7 +298,8 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     procs, streams = process_network(accel_plan(program, HlsConfig()))
     # feed, per CPE its tap and itself, drain, the assembler beside the cascade (fgc_eliminate.h's
     # cholesky_overlap), back-substitution's lanes, its slot process and the state update it
-    # feeds; links, tapped and recip, the assembler's stream, back_substitute's
+    # feeds; links, tails (CPE K to the drain), tapped and recip, the assembler's stream,
+    # back_substitute's
     # (the HGC beside the elimination: its Gram source a third process of the overlap region,
     # its Gram stream one more; the cost pass beside back-substitution: trial_cost and its
     # stream of retired variables)
@@ -308,11 +309,12 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
         "cholesky_gram_source", "cholesky_assembler", "cholesky_cascade")
     header += _texts(out, "w100", "fgc_eliminate.h")[1]
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == \
-        (2 * cpe + 12, 3 * cpe + 5)
+        (2 * cpe + 12, 4 * cpe + 4)
     assert procs[-7:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0",
                           "backsub_slots", "backsub_retire", "trial_cost")
     assert all(f"//   process {p}\n" in kernel for p in procs[-7:])
-    assert f"//   stream cpe_link{cpe} " in kernel
+    assert f"//   stream cpe_tail{cpe - 1} " in kernel  # the last CPE's: to the drain
+    assert f"//   stream cpe_link{cpe} " not in kernel
 
 
 def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
@@ -333,9 +335,9 @@ def test_lm_control_runs_at_ii_1_in_interleaved_partials(tmp_path):
     assert f"T_CMP_LAT = {plan.ops.compare.latency}," in kernel
     assert "T_MAXIMA = T_CMP_LAT;" in kernel
     assert "PARTIALS = T_PARTIALS," in kernel and "MAXIMA = T_MAXIMA," in kernel
-    for array, update in (("xp", "xp[xk] += x[i] * x[i];"), ("dp", "dp[k] += d * d;"),
+    for array, update in (("xp", "xp[k] += x[i] * x[i];"), ("dp", "dp[k] += d * d;"),
                           ("pp", "pp[k] += d * g[i];"),
-                          ("gp", "gp[gk] = a > gp[gk] ? a : gp[gk];")):
+                          ("gp", "gp[k] = a > gp[k] ? a : gp[k];")):
         at = units.index(update)
         loop = units[units.rindex("for (int e = 0;", 0, at):at]
         assert "#pragma HLS PIPELINE II=1\n" in loop, array

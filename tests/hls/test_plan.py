@@ -217,7 +217,8 @@ def test_cpe_cascade_follows_cpe(chol_chain):
              for c in (1, 3)}
     for c, plan in plans.items():
         assert plan.unit("cpe").instances == c
-        assert sum(1 for ch in plan.channels if ch.name.startswith("cpe_link")) == c + 1
+        assert sum(1 for ch in plan.channels if ch.name.startswith("cpe_link")) == c
+        assert sum(1 for ch in plan.channels if ch.name.startswith("cpe_tail")) == c
         # per step (multifrontal, as emitted; its cascade in its cholesky_level<t> region
         # beside the assembler) ⌈f / #CPE⌉ rounds; round r streams the step's trailing
         # m = w - r·c rows of [H | g], upper triangle plus g: m(m+1)/2 + m words, and the

@@ -119,7 +119,11 @@ def test_the_marginal_reuses_the_rows_of_lms_last_linearisation(paper_a_n7):
     events = model.events_of(2)  # the last iteration took no step: X is where LM linearised
     again = model.price(5, 2, {**events, "relinearize": 1})
     reused = model.price(5, 2, {**events, "relinearize": 0})
-    rows = model.group["factor_jacobian"] + model.group["gradient"]
+    # only the factors slot 0's step stacks (LM's linearisation instance, part 2: keyframe 0
+    # has left, its priors hold nothing), not the whole window
+    rows = model.stream["stream_leaf_linearize_live"]
+    assert rows < model.stream["stream_leaf_linearize"]
+    assert rows < model.group["factor_jacobian"] + model.group["gradient"]
     # computed again before the marginal / kept region (stream_call, on LM's linearisation
     # instance): a term of its own, not hidden behind the kept net
     assert again.term("relinearize").each == rows
@@ -289,8 +293,10 @@ def test_one_step_policy_stores_the_steps_own_factorisation():
     assert took.term("marginal").each == model.stream["stream_marginal_reused"]
     none = model.price(5, 1)  # converged on its gradient: no step, the leaf step runs
     assert not model.reuses(model.events_of(1))
-    assert none.term("marginal").each == (model.stream["stream_marginal"]
-                                          + model.qr_cycles(model.zero_factors(5), False, True))
+    # (keyframe 5: keyframe 0 has left, its priors' rows are not stacked: live)
+    assert none.term("marginal").each == (model.stream["stream_marginal_live"]
+                                          + model.qr_cycles(model.zero_factors(5), False, True,
+                                                            live=True))
     assert none.term("marginal").each > took.term("marginal").each
     batch = model.price(4, 1, status="max_iterations")
     assert batch.mode == "batch" and "batch_store" not in {t.name for t in batch.terms}

@@ -728,6 +728,30 @@ inline void bsc_next(BscCursor& c) {
     }
 }
 
+// End E's walk over its steps (BSC_SEQ[BSC_SEQ_BEGIN[E]] ...): its cursor on step BSC_SEQ[k],
+// or a false when k is past the end's last step
+template <int E>
+inline void bsc_seq_start(BscCursor& c, int k, bool& a) {
+#pragma HLS INLINE
+    a = k < BSC_SEQ_BEGIN[E + 1];
+    if (a) bsc_start(c, BSC_SEQ[k]);
+}
+
+// End E's share of a loader iteration: the cursor's aligned group of COND to the end's stream,
+// then the next group (after a step's last row, the end's next step)
+template <int E>
+inline void bsc_feed(hls::stream<BsGroup>& g, BscCursor& c, int& k, bool& a) {
+#pragma HLS INLINE
+    BsGroup x;
+    for (int h = 0; h < BSC_W; ++h) x.w[h] = COND[BSC_W * c.g + h];
+    g.write(x);
+    bsc_next(c);
+    if (c.i == c.f) {
+        ++k;
+        bsc_seq_start<E>(c, k, a);
+    }
+}
+
 // The loader: COND cyclic BSC_W (word h of a group in bank h: two reads a bank an iteration),
 // an aligned group to each end an iteration, each end's steps in BSC_SEQ order. II 1, depth 2
 // (read, write).
@@ -738,36 +762,16 @@ void backsub_loader(hls::stream<BsGroup>& g0, hls::stream<BsGroup>& g1, bool at_
     FGC_REGION("backsub_columns");
     if (at_x) return;
     int k0 = BSC_SEQ_BEGIN[0], k1 = BSC_SEQ_BEGIN[1];
-    bool a0 = k0 < BSC_SEQ_BEGIN[1], a1 = k1 < BSC_SEQ_BEGIN[2];
+    bool a0 = false, a1 = false;
     BscCursor c0 = {0, 0, 0, 0, 0, 0}, c1 = {0, 0, 0, 0, 0, 0};
-    if (a0) bsc_start(c0, BSC_SEQ[k0]);
-    if (a1) bsc_start(c1, BSC_SEQ[k1]);
+    bsc_seq_start<0>(c0, k0, a0);
+    bsc_seq_start<1>(c1, k1, a1);
     int trip = 0;
     for (; a0 || a1; ++trip) {
 #pragma HLS LOOP_TRIPCOUNT max=N_COND/2
 #pragma HLS PIPELINE II=1
-        if (a0) {
-            BsGroup x;
-            for (int h = 0; h < BSC_W; ++h) x.w[h] = COND[BSC_W * c0.g + h];
-            g0.write(x);
-            bsc_next(c0);
-            if (c0.i == c0.f) {
-                ++k0;
-                a0 = k0 < BSC_SEQ_BEGIN[1];
-                if (a0) bsc_start(c0, BSC_SEQ[k0]);
-            }
-        }
-        if (a1) {
-            BsGroup x;
-            for (int h = 0; h < BSC_W; ++h) x.w[h] = COND[BSC_W * c1.g + h];
-            g1.write(x);
-            bsc_next(c1);
-            if (c1.i == c1.f) {
-                ++k1;
-                a1 = k1 < BSC_SEQ_BEGIN[2];
-                if (a1) bsc_start(c1, BSC_SEQ[k1]);
-            }
-        }
+        if (a0) bsc_feed<0>(g0, c0, k0, a0);
+        if (a1) bsc_feed<1>(g1, c1, k1, a1);
     }
     FGC_CYCLES("backsub_loader", 0, "groups", trip, 1, 2);
 }

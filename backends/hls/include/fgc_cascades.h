@@ -21,7 +21,8 @@
 // The Grams are read in cholesky_set_step_grams (as fgc_eliminate.h's cholesky_assemble_first
 // and cholesky_add_segment read them for the one-cascade driver; a streamed factor's from its
 // region's stage lane, CFG::staged): a change to where the assembly gets its Grams changes both.
-// Without the HGC beside, the kernel's STAGE_NONE (never read) stands for the stage lane.
+// Without the HGC beside, the kernel's STAGE_NONE0 / STAGE_NONE1 (never read) stand for the
+// stage lane's two memories.
 #ifndef FGC_CASCADES_H
 #define FGC_CASCADES_H
 
@@ -82,17 +83,19 @@ void cholesky_set_maps(int s0, int s1, int map0[CFG::MAX_W + 1], int map1[CFG::M
 }
 
 // Step s's factor Grams into ha (all zero): the first stored two entries a cycle through its
-// column map (map: cholesky_set_maps'), the further ones added one entry a cycle (as
-// cholesky_assemble_first / _adds). A factor whose Gram the HGC streams beside the elimination
-// (CFG::staged(fac) >= 0: its offset in its region's stage lane) is read from `stage` (the lane
-// the Gram source filled a pass before) instead of GRAM.
+// column map (map: cholesky_set_maps'; not with first_done: cholesky_set_firsts stored it), the
+// further ones added one entry a cycle (as cholesky_assemble_first / _adds). A factor whose Gram
+// the HGC streams beside the elimination (CFG::staged(fac) >= 0: its offset in its step's memory
+// of its region's stage lane) is read from `stage` (the lane the Gram source filled a pass
+// before) instead of GRAM.
 template <class CFG>
 void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                              const typename CFG::T stage[CFG::N_STAGE],
-                             const int map[CFG::MAX_W + 1]) {
+                             const int map[CFG::MAX_W + 1], bool first_done) {
     if (s < 0) return;
     const int w = STEP_W[s];
-    for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
+    for (int e = STEP_FACTOR_BEGIN[s] + (first_done ? 1 : 0); e < STEP_FACTOR_BEGIN[s + 1];
+         ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
         const int fac = STEP_FACTORS[e];
         const int cb = FACTOR_COLMAP_BEGIN[fac];
@@ -141,22 +144,84 @@ void cholesky_set_step_grams(int s, typename CFG::T ha[CFG::MAX_W][CFG::MAX_COLS
     }
 }
 
+// Step s's first factor, -1 if none.
+inline int cholesky_set_first_factor(int s) {
+    return s >= 0 && STEP_FACTOR_BEGIN[s] < STEP_FACTOR_BEGIN[s + 1]
+               ? STEP_FACTORS[STEP_FACTOR_BEGIN[s]] : -1;
+}
+
+// Both steps' first factors' Grams, both streamed (CFG::staged >= 0), stored side by side into
+// ha0 and ha1 (all zero) through their column maps: one loop, two entries of each a cycle - two
+// reads of each step's memory of the stage lane (stage0, stage1: two memories, so four reads a
+// cycle at their two ports each) and two writes into each lane - trip the larger's pairs.
+template <class CFG>
+void cholesky_set_firsts(int n0, int n1,
+                         typename CFG::T ha0[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                         typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
+                         const typename CFG::T stage0[CFG::N_STAGE],
+                         const typename CFG::T stage1[CFG::N_STAGE],
+                         const int map0[CFG::MAX_W + 1], const int map1[CFG::MAX_W + 1]) {
+    const int f0 = cholesky_set_first_factor(n0), f1 = cholesky_set_first_factor(n1);
+    const int d0 = FACTOR_COLMAP_BEGIN[f0 + 1] - FACTOR_COLMAP_BEGIN[f0];
+    const int d1 = FACTOR_COLMAP_BEGIN[f1 + 1] - FACTOR_COLMAP_BEGIN[f1];
+    const int m0 = d0 * (d0 + 1) / 2 + d0, m1 = d1 * (d1 + 1) / 2 + d1;
+    const int so0 = CFG::staged(f0), so1 = CFG::staged(f1);
+    const int pairs = ((m0 > m1 ? m0 : m1) + 1) / 2;
+    for (int t = 0, k = 0, p0 = 0, q0 = 0, p1 = 0, q1 = 0; t < pairs; ++t, k += 2) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PACKED/2
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=ha0 inter false
+#pragma HLS DEPENDENCE variable=ha1 inter false
+        for (int h = 0; h < 2; ++h) {
+            if (k + h < m0) {
+                const int a = map0[p0], b = map0[q0];
+                const int lo = b < a ? b : a, hi = b < a ? a : b;
+                ha0[lo][hi >> 1][hi & 1] = stage0[so0 + k + h];
+                if (q0 == p0) {
+                    q0 = 0;
+                    ++p0;
+                } else {
+                    ++q0;
+                }
+            }
+            if (k + h < m1) {
+                const int a = map1[p1], b = map1[q1];
+                const int lo = b < a ? b : a, hi = b < a ? a : b;
+                ha1[lo][hi >> 1][hi & 1] = stage1[so1 + k + h];
+                if (q1 == p1) {
+                    q1 = 0;
+                    ++p1;
+                } else {
+                    ++q1;
+                }
+            }
+        }
+    }
+    FGC_CYCLES("assemble", 0, "gram_firsts", pairs, CFG::MOVE_II, CFG::MOVE_DEPTH);
+}
+
 // The grams process: steps n0, n1 (cascade 0's, 1's of the next region; -1 none) into their
-// lanes, both first factors' column maps in one loop, then one step after the other through one
-// copy of the loops (one adder); their streamed Grams from `stage` (the next region's stage
-// lane; without the HGC beside, STAGE_NONE, never read).
+// lanes, both first factors' column maps in one loop, then - both first factors streamed - both
+// first Grams side by side (cholesky_set_firsts), then one step after the other through one
+// copy of the loops (one adder); their streamed Grams from `stage0` / `stage1` (the next
+// region's stage lane, a memory per cascade's step: STAGE_K0, STAGE_K1; without the HGC beside,
+// STAGE_NONE0 / STAGE_NONE1, never read).
 template <class CFG>
 void cholesky_set_grams(int n0, int n1, typename CFG::T ha0[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
                         typename CFG::T ha1[CFG::MAX_W][CFG::MAX_COLS / 2 + 1][2],
-                        const typename CFG::T stage[CFG::N_STAGE]) {
+                        const typename CFG::T stage0[CFG::N_STAGE],
+                        const typename CFG::T stage1[CFG::N_STAGE]) {
 #pragma HLS ALLOCATION function instances=cholesky_set_step_grams<CFG> limit=1
     FGC_BRANCH();
     int map0[CFG::MAX_W + 1], map1[CFG::MAX_W + 1];
 #pragma HLS ARRAY_PARTITION variable=map0 complete
 #pragma HLS ARRAY_PARTITION variable=map1 complete
     cholesky_set_maps<CFG>(n0, n1, map0, map1);
-    cholesky_set_step_grams<CFG>(n0, ha0, stage, map0);
-    cholesky_set_step_grams<CFG>(n1, ha1, stage, map1);
+    const int f0 = cholesky_set_first_factor(n0), f1 = cholesky_set_first_factor(n1);
+    const bool both = f0 >= 0 && f1 >= 0 && CFG::staged(f0) >= 0 && CFG::staged(f1) >= 0;
+    if (both) cholesky_set_firsts<CFG>(n0, n1, ha0, ha1, stage0, stage1, map0, map1);
+    cholesky_set_step_grams<CFG>(n0, ha0, stage0, map0, both);
+    cholesky_set_step_grams<CFG>(n1, ha1, stage1, map1, both);
 }
 
 // Step s's streamed child's separator map inverted into inv (parent column -> its index in
@@ -440,7 +505,7 @@ void cholesky_sets(int s0, int s1, int n0, int n1, int q0, int q1, typename CFG:
 #pragma HLS STREAM variable=frontal0 depth=DEPTH
 #pragma HLS STREAM variable=frontal1 depth=DEPTH
     cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
-    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, STAGE_NONE);
+    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, STAGE_NONE0, STAGE_NONE1);
     cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
                               unfit0);
     cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
@@ -561,20 +626,24 @@ bool cholesky_eliminate_sets(typename CFG::T mu) {
 // from the stream on the first solve of a linearisation (keeping them in GRAM_B), from GRAM_B on
 // LM's retries - while the grams process reads region r + 1's from the other lane. The stage
 // lanes follow NF's scheme: the two parity call sites pass (lane written, lane read) as
-// different arrays, so each lane has one process a pass. CFG: SetConfig with the LesConfig's
-// Word, N_STAGE (a region's streamed words), staged(fac), streams(r), last_streamed(r) and
-// gram_source(r, relin, lane, grams).
+// different arrays, so each lane has one process a pass. A lane is two memories, lane[k] the
+// streamed Grams of the region's cascade k step (the grams process reads both steps' first Grams
+// side by side, cholesky_set_firsts; STAGE_K0, STAGE_K1 the two). CFG: SetConfig with the LesConfig's Word, N_STAGE (a
+// step's streamed words: a memory of a lane), staged(fac) (the offset in its step's memory),
+// streams(r), last_streamed(r) and gram_source(r, relin, lane, grams).
 
-// The source's process: region r's streamed Grams into `stagew` (none if r < 0).
+// The source's process: region r's streamed Grams into `stage0w` (its cascade 0 step's) and
+// `stage1w` (none if r < 0).
 template <class CFG>
-void cholesky_set_gram_source(int r, bool relin, typename CFG::T stagew[CFG::N_STAGE],
+void cholesky_set_gram_source(int r, bool relin, typename CFG::T stage0w[CFG::N_STAGE],
+                              typename CFG::T stage1w[CFG::N_STAGE],
                               hls::stream<typename CFG::Word>& grams) {
     FGC_BRANCH();  // csim cycle counting only: beside the region's other processes
-    if (r >= 0) CFG::gram_source(r, relin, stagew, grams);
+    if (r >= 0) CFG::gram_source(r, relin, stage0w, stage1w, grams);
 }
 
 // The region (cholesky_sets') with the Gram source putting region `src`'s streamed Grams into
-// stagew while the grams process reads the next region's from stager.
+// stage0w / stage1w while the grams process reads the next region's from stage0r / stage1r.
 template <class CFG>
 void cholesky_sets_beside(int s0, int s1, int n0, int n1, int q0, int q1, int src, bool relin,
                           typename CFG::T mu,
@@ -590,8 +659,10 @@ void cholesky_sets_beside(int s0, int s1, int n0, int n1, int q0, int q1, int sr
                           typename CFG::T d1w[CFG::MAX_F], typename CFG::T r1w[CFG::MAX_F],
                           const typename CFG::T d0r[CFG::MAX_F], const typename CFG::T r0r[CFG::MAX_F],
                           const typename CFG::T d1r[CFG::MAX_F], const typename CFG::T r1r[CFG::MAX_F],
-                          const typename CFG::T stager[CFG::N_STAGE],
-                          typename CFG::T stagew[CFG::N_STAGE],
+                          const typename CFG::T stage0r[CFG::N_STAGE],
+                          const typename CFG::T stage1r[CFG::N_STAGE],
+                          typename CFG::T stage0w[CFG::N_STAGE],
+                          typename CFG::T stage1w[CFG::N_STAGE],
                           hls::stream<typename CFG::Word>& grams, bool* npd0, bool* npd1,
                           bool* unfit0, bool* unfit1, bool* tiny0, bool* tiny1) {
 #pragma HLS DATAFLOW
@@ -600,9 +671,9 @@ void cholesky_sets_beside(int s0, int s1, int n0, int n1, int q0, int q1, int sr
     hls::stream<fgc_units::cpe_pair<typename CFG::T> > frontal1;
 #pragma HLS STREAM variable=frontal0 depth=DEPTH
 #pragma HLS STREAM variable=frontal1 depth=DEPTH
-    cholesky_set_gram_source<CFG>(src, relin, stagew, grams);
+    cholesky_set_gram_source<CFG>(src, relin, stage0w, stage1w, grams);
     cholesky_set_source<CFG>(s0, s1, ha0s, ha1s, nf0r, nf1r, frontal0, frontal1);
-    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, stager);
+    cholesky_set_grams<CFG>(n0, n1, ha0n, ha1n, stage0r, stage1r);
     cholesky_set_cascade<CFG>(s0, mu, frontal0, HF0, cb0w, nf0w, d0w, r0w, npd0,
                               unfit0);
     cholesky_set_cascade<CFG>(s1, mu, frontal1, HF1, cb1w, nf1w, d1w, r1w, npd1,
@@ -633,7 +704,8 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
 #pragma HLS ARRAY_PARTITION variable=CONDBUF_K1 complete dim=1
 #pragma HLS ARRAY_PARTITION variable=DPIV complete dim=1
 #pragma HLS ARRAY_PARTITION variable=RMAX complete dim=1
-#pragma HLS ARRAY_PARTITION variable=STAGE complete dim=1
+#pragma HLS ARRAY_PARTITION variable=STAGE_K0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=STAGE_K1 complete dim=1
     FGC_PHASE(relin ? "hgc_beside" : "reassemble");
     bool good = true;
 #pragma HLS ALLOCATION function instances=cholesky_sets_beside<CFG> limit=1
@@ -660,15 +732,15 @@ void cholesky_eliminate_sets_beside(typename CFG::T mu, bool relin,
                                       HA0[1], HA1[1], NF0[1], NF1[1], NF0[0], NF1[0], CONDBUF_K0[0],
                                       CONDBUF_K1[0], CONDBUF_K0[1], CONDBUF_K1[1], DPIV[0], RMAX[0],
                                       DPIV[2], RMAX[2], DPIV[1], RMAX[1], DPIV[3], RMAX[3],
-                                      STAGE[1], STAGE[0], grams, &npd0, &npd1, &unfit0, &unfit1,
-                                      &tiny0, &tiny1);
+                                      STAGE_K0[1], STAGE_K1[1], STAGE_K0[0], STAGE_K1[0], grams,
+                                      &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         } else {
             cholesky_sets_beside<CFG>(s0, s1, n0, n1, q0, q1, src, relin, mu, HA0[1], HA1[1],
                                       HA0[0], HA1[0], NF0[0], NF1[0], NF0[1], NF1[1], CONDBUF_K0[1],
                                       CONDBUF_K1[1], CONDBUF_K0[0], CONDBUF_K1[0], DPIV[1], RMAX[1],
                                       DPIV[3], RMAX[3], DPIV[0], RMAX[0], DPIV[2], RMAX[2],
-                                      STAGE[0], STAGE[1], grams, &npd0, &npd1, &unfit0, &unfit1,
-                                      &tiny0, &tiny1);
+                                      STAGE_K0[0], STAGE_K1[0], STAGE_K0[1], STAGE_K1[1], grams,
+                                      &npd0, &npd1, &unfit0, &unfit1, &tiny0, &tiny1);
         }
         FGC_JOIN();
         good = good && !npd0 && !npd1 && !unfit0 && !unfit1 && !tiny0 && !tiny1;

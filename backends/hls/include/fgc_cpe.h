@@ -73,21 +73,26 @@
 //   cpe_tap<K>    K = 0 ... N_CPE - 1: passes link[K] on to tapped[K] and, when the word is its
 //                 CPE's pivot d, sends r = 1 / d into recip[K]: the divide runs beside the stream,
 //                 its latency hidden behind the pivot's row (the CPE needs r only after the row);
-//   cpe<K>        reads tapped[K], writes link[K + 1]. Its pivot is p = p0 + K (none if p >= f:
-//                 it passes every word). Rows p0 ... p - 1 (the rows of the CPEs before it) and
-//                 its pivot row p pass unchanged, row p kept as h; every later word is Updated,
-//                 x - h[i] (h[c] r), r read from recip[K] at the first of them. The status word
-//                 passes ORed with its own not-positive-definite flag. One pipelined loop at
-//                 II 1 over the round's words: two multipliers and an adder;
-//   cpe_drain     writes the round's final rows out: its pivots' rows into cond (each row's
-//                 pivot and its largest frontal |h| into dpiv / rmax for the singularity check),
-//                 and the trailing rows into update (last round) or Hout (the next round's input);
-//                 the status into its output argument.
+//   cpe<K>        reads tapped[K], writes link[K + 1], or, its pivot the round's last (p + 1 = f,
+//                 or K = N_CPE - 1), tail[K]. Its pivot is p = p0 + K; with none (p >= f) the
+//                 CPE and its tap do nothing: the round's stream left the cascade at the last
+//                 pivot's CPE, so CPEs past a round's pivots add nothing to its depth. Rows
+//                 p0 ... p - 1 (the rows of the CPEs before it) and its pivot row p pass
+//                 unchanged, row p kept as h; every later word is Updated, x - h[i] (h[c] r), r
+//                 read from recip[K] at the first of them. The status word passes ORed with its
+//                 own not-positive-definite flag. One pipelined loop at II 1 over the round's
+//                 words: two multipliers and an adder;
+//   cpe_drain     reads tail[a] (a the round's last pivot's CPE: a multiplexer over the N_CPE
+//                 tails) and writes the round's final rows out: its pivots' rows into cond (each
+//                 row's pivot and its largest frontal |h| into dpiv / rmax for the singularity
+//                 check), and the trailing rows into update (last round) or Hout (the next
+//                 round's input); the status into its output argument.
 //
 // cpe_step runs the rounds (each but the last followed by its copy back) and checks the pivots
 // last (sequential, 2 f iterations).
 //
-// Each stream has one writer and one later reader; no process waits for a later one (the tap
+// Each stream has one writer and one later reader; no process waits for a later one (the drain
+// never stalls, so a tail is 2 deep; the tap
 // writes recip[K] Ld cycles after the pivot while it goes on streaming: tapped[K] is deep enough
 // - MAX_COLS + DIV_LAT + 2 words - that the tap never stalls on it while its CPE waits for r).
 //
@@ -98,7 +103,8 @@
 // the round takes its words plus the depth every process adds to the stream
 // (units/cholesky.py's cpe_round_depth): the feed La + 2, a tap 2, a CPE with a pivot
 // 2 Lm + La + 2 plus its wait for r, max(0, Ld - its row's stream words) (0 when its row is at
-// least Ld stream words long), an idle tap or CPE 1 each, the drain 2 (La / Lm / Ld =
+// least Ld stream words long), an idle tap or CPE nothing (the stream leaves at the last
+// pivot's CPE), the drain 2 (La / Lm / Ld =
 // CFG::ADD_LAT / MUL_LAT / DIV_LAT). Paper B's CPE (sqrt, then divide, then its row scaled, then the update: Ls + Ld +
 // Lm + La a CPE) stalled the stream on every pivot; here a pivot costs the stream 2 Lm + La + 4.
 // Each loop reports trip, II and depth to FGC_CYCLES (fgc_cycles.h); tests/hls/test_hls_units.py
@@ -267,7 +273,9 @@ void cpe_feed(hls::stream<cpe_pair<typename CFG::T> >& src, bool first,
     FGC_CYCLES("cpe_feed", 0, "rows", vecs + 1, 1, CFG::ADD_LAT + 2);
 }
 
-// Tap K: the stream on to CPE K, and 1 / (its pivot) beside it.
+// Tap K: the stream on to CPE K, and 1 / (its pivot) beside it. A tap whose CPE has no pivot in
+// the round (p >= f) does nothing: the round's stream leaves the cascade at its last pivot's CPE
+// (cpe's tail), so no word passes the idle taps and CPEs.
 template <class CFG, int K>
 void cpe_tap(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in,
              hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& out,
@@ -275,8 +283,8 @@ void cpe_tap(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STR
     typedef typename CFG::T T;
     enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int p = p0 + K;
-    const int vecs = cpe_vecs<L>(p0, w);
-    const int at = p < f ? vecs - cpe_vecs<L>(p, w) : -1;  // the pivot's vector, -1: no pivot
+    const int vecs = p < f ? cpe_vecs<L>(p0, w) : -1;  // idle: no iteration
+    const int at = vecs - cpe_vecs<L>(p, w);  // the pivot's vector
     // trip vecs + 1, II 1; the vectors pass in 2 cycles (read, write), r leaves Ld + 2 cycles
     // after the pivot (the divide's latency, beside the stream)
     for (int t = 0; t <= vecs; ++t) {
@@ -286,28 +294,27 @@ void cpe_tap(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STR
         out.write(x);
         if (t == at) recip.write(T(1) / cpe_get(x, 0));
     }
-    FGC_CYCLES("cpe_tap", K, at < 0 ? "pass" : "stream", vecs + 1, 1, at < 0 ? 1 : 2);
+    FGC_CYCLES("cpe_tap", K, p < f ? "stream" : "idle", vecs + 1, 1, 2);
 }
 
-// CPE K of the cascade for the round starting at pivot p0.
+// CPE K of the cascade for the round starting at pivot p0: its vectors on to the next tap
+// (`next`), or, when its pivot is the round's last (p + 1 == f, or the cascade's last CPE), to
+// the drain (`tail`, the drain reads the tail of the round's last pivot). A CPE with no pivot in
+// the round (p >= f) does nothing.
 template <class CFG, int K>
 void cpe(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in,
          hls::stream<typename CFG::T>& recip,
-         hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& out) {
+         hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& next,
+         hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& tail) {
     typedef typename CFG::T T;
     enum { L = CFG::STREAM_WORDS, MAX_WORDS = CFG::MAX_W * (CFG::MAX_W + 3) / 2 };
     const int p = p0 + K;
-    const int vecs = cpe_vecs<L>(p0, w);
-    if (p >= f) {  // no pivot in this round: pass every vector and the status
-        // trip vecs + 1, II 1, depth 1
-        for (int t = 0; t <= vecs; ++t) {
-#pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
-#pragma HLS PIPELINE II=1
-            out.write(in.read());
-        }
-        FGC_CYCLES("cpe", K, "pass", vecs + 1, 1, 1);
+    if (p >= f) {  // no pivot in this round: the stream left the cascade before this CPE
+        FGC_CYCLES("cpe", K, "idle", 0, 1, 1);
         return;
     }
+    const int vecs = cpe_vecs<L>(p0, w);
+    const bool last = K + 1 == CFG::N_CPE || p + 1 == f;  // the round's last pivot: to the drain
     const int before = vecs - cpe_vecs<L>(p, w);  // rows p0 ... p - 1 pass
     const int row = (w + 1 - p + L - 1) / L;       // then the pivot's row, kept as h
     const int trail = before + row;                // then the later rows, Updated
@@ -349,7 +356,11 @@ void cpe(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_
         if (t == vecs) {  // the status
             cpe_set(o, 0, bad || cpe_get(x, 0) != T(0) ? T(1) : T(0));
         }
-        out.write(o);
+        if (last) {
+            tail.write(o);
+        } else {
+            next.write(o);
+        }
         if (upd) {
             if (c + L > w) {
                 ++i;
@@ -363,35 +374,66 @@ void cpe(int p0, int w, int f, hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_
                2 * CFG::MUL_LAT + CFG::ADD_LAT + 2 + cpe_wait<CFG>(p, w));
 }
 
-// The N_CPE taps and CPEs, K = 0 ... N_CPE - 1, as separate calls in the region.
-template <class CFG, int K, bool END = (K == CFG::N_CPE)>
+// The N_CPE taps and CPEs, K = 0 ... N_CPE - 1, as separate calls in the region: link[K] the
+// stream into tap K (link[0] the feed's), tail[K] CPE K's to the drain; the last CPE has no next
+// tap, its tail its one output (passed as both).
+template <class CFG, int K, bool END = (K == CFG::N_CPE), bool LAST = (K + 1 == CFG::N_CPE)>
 struct cpe_cascade {
     typedef cpe_vec<typename CFG::T, CFG::STREAM_WORDS> V;
-    static void run(int p0, int w, int f, hls::stream<V> link[CFG::N_CPE + 1],
-                    hls::stream<V> tapped[CFG::N_CPE],
+    static void run(int p0, int w, int f, hls::stream<V> link[CFG::N_CPE],
+                    hls::stream<V> tail[CFG::N_CPE], hls::stream<V> tapped[CFG::N_CPE],
                     hls::stream<typename CFG::T> recip[CFG::N_CPE]) {
 #pragma HLS INLINE
         cpe_tap<CFG, K>(p0, w, f, link[K], tapped[K], recip[K]);
-        cpe<CFG, K>(p0, w, f, tapped[K], recip[K], link[K + 1]);
-        cpe_cascade<CFG, K + 1>::run(p0, w, f, link, tapped, recip);
+        cpe<CFG, K>(p0, w, f, tapped[K], recip[K], link[K + 1], tail[K]);
+        cpe_cascade<CFG, K + 1>::run(p0, w, f, link, tail, tapped, recip);
     }
 };
 
 template <class CFG, int K>
-struct cpe_cascade<CFG, K, true> {
+struct cpe_cascade<CFG, K, false, true> {
     typedef cpe_vec<typename CFG::T, CFG::STREAM_WORDS> V;
-    static void run(int, int, int, hls::stream<V>*, hls::stream<V>*,
+    static void run(int p0, int w, int f, hls::stream<V> link[CFG::N_CPE],
+                    hls::stream<V> tail[CFG::N_CPE], hls::stream<V> tapped[CFG::N_CPE],
+                    hls::stream<typename CFG::T> recip[CFG::N_CPE]) {
+#pragma HLS INLINE
+        cpe_tap<CFG, K>(p0, w, f, link[K], tapped[K], recip[K]);
+        cpe<CFG, K>(p0, w, f, tapped[K], recip[K], tail[K], tail[K]);
+    }
+};
+
+template <class CFG, int K, bool LAST>
+struct cpe_cascade<CFG, K, true, LAST> {
+    typedef cpe_vec<typename CFG::T, CFG::STREAM_WORDS> V;
+    static void run(int, int, int, hls::stream<V>*, hls::stream<V>*, hls::stream<V>*,
                     hls::stream<typename CFG::T>*) {
 #pragma HLS INLINE
     }
 };
 
-// Write the round's words out: the rows of its pivots into cond (each row's pivot into dpiv and
-// its largest frontal |h| into rmax), the trailing rows into update (last round) or Hout; the
-// status into *bad. L words a cycle (the arrays' two ports at L = 2).
+// The next vector of the round's stream from the tail of its last pivot's CPE, tail[a] (the
+// CPEs after it are idle): a read of one of N_CPE streams, each index a constant once the loop is
+// unrolled (a multiplexer on the drain's input).
 template <class CFG>
-void cpe_drain(hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in, int p0, int w, int f,
-               typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
+inline cpe_vec<typename CFG::T, CFG::STREAM_WORDS> cpe_tail_read(
+    hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > tail[CFG::N_CPE], int a) {
+#pragma HLS INLINE
+    cpe_vec<typename CFG::T, CFG::STREAM_WORDS> x;
+    for (int l = 0; l < CFG::STREAM_WORDS; ++l) cpe_set(x, l, typename CFG::T(0));
+    for (int k = 0; k < CFG::N_CPE; ++k) {
+#pragma HLS UNROLL
+        if (k == a) x = tail[k].read();
+    }
+    return x;
+}
+
+// Write the round's words out, read from the tail of its last pivot's CPE: the rows of its
+// pivots into cond (each row's pivot into dpiv and its largest frontal |h| into rmax), the
+// trailing rows into update (last round) or Hout; the status into *bad. L words a cycle (the
+// arrays' two ports at L = 2).
+template <class CFG>
+void cpe_drain(hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > tail[CFG::N_CPE], int p0,
+               int w, int f, typename CFG::T Hout[CFG::MAX_W][CFG::MAX_COLS],
                typename CFG::T cond[CFG::N_COND], int c0,
                typename CFG::T update[CFG::N_NF], int u0,
                typename CFG::T dpiv[CFG::MAX_F], typename CFG::T rmax[CFG::MAX_F], bool* bad) {
@@ -401,13 +443,14 @@ void cpe_drain(hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in, in
     const int cols = w + 1, s = w - f;
     const int done = p0 + CFG::N_CPE < f ? p0 + CFG::N_CPE : f;  // rows p0 ... done - 1 are final
     const bool last = done == f;
+    const int a = done - 1 - p0;  // the round's last pivot's CPE
     T big = T(0);
     int i = p0, c = p0;
     // trip the round's vectors (+ the status), II 1, depth 2 (read, write)
     for (int t = 0; t < vecs; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_WORDS
 #pragma HLS PIPELINE II=1
-        const cpe_vec<T, L> x = in.read();
+        const cpe_vec<T, L> x = cpe_tail_read<CFG>(tail, a);
         T b = c == i ? T(0) : big;  // the row's largest so far
         for (int l = 0; l < CFG::STREAM_WORDS; ++l) {
             const int cc = c + l;
@@ -433,7 +476,7 @@ void cpe_drain(hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> >& in, in
             c += L;
         }
     }
-    *bad = cpe_get(in.read(), 0) != T(0);
+    *bad = cpe_get(cpe_tail_read<CFG>(tail, a), 0) != T(0);
     FGC_CYCLES("cpe_drain", 0, "rows", vecs + 1, 1, 2);
 }
 
@@ -447,17 +490,20 @@ void cpe_round(hls::stream<cpe_pair<typename CFG::T> >& src, bool first, int p0,
                bool* bad) {
 #pragma HLS DATAFLOW
     enum { LINK_DEPTH = CFG::MAX_W, TAP_DEPTH = CFG::MAX_COLS + CFG::DIV_LAT + 2 };
-    hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > link[CFG::N_CPE + 1];
+    hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > link[CFG::N_CPE];
+    hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > tail[CFG::N_CPE];
     hls::stream<cpe_vec<typename CFG::T, CFG::STREAM_WORDS> > tapped[CFG::N_CPE];
     hls::stream<typename CFG::T> recip[CFG::N_CPE];
 #pragma HLS STREAM variable=link depth=LINK_DEPTH
+#pragma HLS STREAM variable=tail depth=2
 #pragma HLS STREAM variable=tapped depth=TAP_DEPTH
 #pragma HLS STREAM variable=recip depth=2
     FGC_REGION("cpe_round");
     cpe_feed<CFG>(src, first, Hin, p0, w, f, dmu, link[0]);
-    cpe_cascade<CFG, 0>::run(p0, w, f, link, tapped, recip);
-    cpe_drain<CFG>(link[CFG::N_CPE], p0, w, f, Hout, cond, c0, update, u0, dpiv, rmax, bad);
-    FGC_DRAINED(link, CFG::N_CPE + 1);  // csim only (fgc_cycles.h)
+    cpe_cascade<CFG, 0>::run(p0, w, f, link, tail, tapped, recip);
+    cpe_drain<CFG>(tail, p0, w, f, Hout, cond, c0, update, u0, dpiv, rmax, bad);
+    FGC_DRAINED(link, CFG::N_CPE);  // csim only (fgc_cycles.h)
+    FGC_DRAINED(tail, CFG::N_CPE);
     FGC_DRAINED(tapped, CFG::N_CPE);
     FGC_DRAINED(recip, CFG::N_CPE);
 }

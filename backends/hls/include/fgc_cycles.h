@@ -175,6 +175,8 @@ inline bool ends_with(const std::string& text, const std::string& tail) {
                                                       tail) == 0;
 }
 
+inline std::vector<long> record_ends(std::size_t from, std::size_t to);  // below: the clocks
+
 // The plan's arithmetic over records [from, to) of the log: see the comment at the top.
 inline long total_range(std::size_t from, std::size_t to) {
     long sum = 0;
@@ -212,35 +214,9 @@ inline long total_range(std::size_t from, std::size_t to) {
         for (std::size_t p = 0; p < order.size(); ++p)
             if (p != slowest && procs[order[p]].second > 0) fills += procs[order[p]].second;
         long region_cycles = slow + fills;
-        // per process, in the region's order, the end of each of its loops: a loop ends its
-        // cycles after the one before it, and a loop that waits (FGC_WAIT before it: it reads
-        // another process's stream as that process's loop writes it) no earlier than its depth
-        // after the end of that loop; the region ends no earlier than any process's last loop
-        std::vector<long> ends(i - begin, -1);
-        std::map<std::pair<std::string, int>, long> clock;
-        std::map<std::pair<std::string, int>, long> pending;  // waits not yet applied
-        for (std::size_t q = begin; q < i; ++q) {
-            const std::pair<std::string, int> key(r[q].process, r[q].instance);
-            if (!r[q].on_process.empty()) {
-                long at = -1;  // the end of the first loop of on_process named ... on_loop
-                for (std::size_t x = begin; x < q && at < 0; ++x)
-                    if (r[x].process == r[q].on_process && r[x].instance == r[q].on_instance &&
-                        ends_with(r[x].loop, r[q].on_loop) && ends[x - begin] >= 0)
-                        at = ends[x - begin];
-                if (at >= 0 && (!pending.count(key) || pending[key] < at)) pending[key] = at;
-                continue;
-            }
-            if (r[q].trip <= 0) continue;
-            long end = clock[key] + r[q].cycles();
-            if (pending.count(key)) {
-                const long waited = pending[key] + r[q].depth;
-                end = waited > end ? waited : end;
-                pending.erase(key);
-            }
-            clock[key] = end;
-            ends[q - begin] = end;
+        // and no earlier than any process's last loop ends on its own clock (record_ends)
+        for (const long end : record_ends(begin, i))
             region_cycles = end > region_cycles ? end : region_cycles;
-        }
         sum += region_cycles;
     }
     return sum;
@@ -301,10 +277,12 @@ inline long span_total(std::size_t from, std::size_t to) {
 }
 
 // Per record of [from, to) (one DATAFLOW region's records): when it ends on its process's own
-// clock, as total_range clocks the region's processes (a loop after the one before it, a loop
-// after FGC_WAIT no earlier than its depth after the loop it waits for); a record that does
-// not run ends where its process's clock stands. The column design's keyed sends
-// (FGC_OUTER_SEND_STEP) happen at these times (units/backsub.py's column_timeline).
+// clock (a loop ends its cycles after the one before it, and a loop that waits - FGC_WAIT
+// before it: it reads another process's stream as that process's loop writes it - no earlier
+// than its depth after the end of that loop); a record that does not run ends where its
+// process's clock stands. A region (total_range) ends no earlier than any of these, and the
+// column design's keyed sends (FGC_OUTER_SEND_STEP) happen at these times (units/backsub.py's
+// column_timeline).
 inline std::vector<long> record_ends(std::size_t from, std::size_t to) {
     const std::vector<Record>& r = log();
     std::vector<long> ends(to - from, 0);

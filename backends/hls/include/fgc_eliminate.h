@@ -14,8 +14,9 @@
 //             bool qr_eliminate_all<CFG, SETS>(mu)  every step, level by level: a level's
 //             steps go CFG::UNIT_SETS at a time to the unit sets (stacked, the sets'
 //             DATAFLOW region, committed); false if rank deficient.
-//             bool qr_eliminate_leaf<CFG, SETS>(s)  step s once more at mu = 0 on unit set 0
-//             (the on-chip window's marginalisation); false if rank deficient.
+//             bool qr_eliminate_leaf<CFG, SETS>(s, live)  step s once more at mu = 0 on unit
+//             set 0 (the on-chip window's marginalisation; live: without the factors that
+//             hold nothing once keyframe 0 has left); false if rank deficient.
 //
 // The unit-set wiring stays the kernel's (it depends on the number of unit sets: each set its
 // own memories and RTL instance): SETS holds its hooks, static functions the kernel defines
@@ -24,7 +25,8 @@
 //   SETS::level(has, s, bad)     the qr_level region: set u takes step s[u] where has[u]
 //                                (else none), bad[u] set if rank deficient
 //   SETS::commit(u, s)           qr_commit<CFG>(s, CONDBUF<u>, UPDBUF<u>)
-//   SETS::leaf(s, bad)           (qr_eliminate_leaf only) step s on unit set 0 alone, qr_set0
+//   SETS::leaf_stack(s, skip, m) (qr_eliminate_leaf only) qr_stack_rows<CFG>(s, 0, WORK0, skip, m)
+//   SETS::leaf(s, m, bad)        (qr_eliminate_leaf only) step s's m rows on unit set 0 alone
 //
 // Included by the kernel inside its namespace (fgc::, or fgc::les for the mixed design), after
 // its schedule tables and memories, which these functions name: STEP_W, STEP_F, STEP_ROWS,
@@ -509,13 +511,16 @@ void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
 // rows' entries are written, else the rows are zeroed first, a word of all N_UNITS banks a cycle
 // (fgc_qr_stream.h's banks). The rows go PORTS words a cycle (AB's or NF's two ports, into any
 // banks: each bank has two ports too), the damping rows a word a cycle; counted as the plan's
-// stack_loops price them.
+// stack_loops price them. `skip`: bit k set, the k-th of the step's factors is not stacked (the
+// marginal's step once its rows hold nothing: qr_eliminate_leaf), `m` the rows stacked
+// (STEP_ROWS[s] less the skipped factors'); qr_stack: all of them.
 template <class CFG>
-void qr_stack(int s, typename CFG::T root_mu,
-              typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
+void qr_stack_rows(int s, typename CFG::T root_mu,
+                   typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                   unsigned skip, int m) {
     typedef typename CFG::T T;
     FGC_PHASE("qr_stack");
-    const int w = STEP_W[s], f = STEP_F[s], m = STEP_ROWS[s];
+    const int w = STEP_W[s], f = STEP_F[s];
     const int zero = CFG::BANKS_ZERO ? 0 : m * CFG::LOCAL_COLS;
     for (int e = 0, i = 0, c = 0; e < zero; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BANKS
@@ -535,6 +540,8 @@ void qr_stack(int s, typename CFG::T root_mu,
     int row = 0;
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
+        const int k0 = e - STEP_FACTOR_BEGIN[s];
+        if (k0 < 32 && ((skip >> k0) & 1u)) continue;
         const int fac = STEP_FACTORS[e];
         const int cb = FACTOR_COLMAP_BEGIN[fac];
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
@@ -596,6 +603,13 @@ void qr_stack(int s, typename CFG::T root_mu,
         }
         FGC_CYCLES("stack", 0, "damping", f, CFG::FILL_II, CFG::FILL_DEPTH);
     }
+}
+
+template <class CFG>
+void qr_stack(int s, typename CFG::T root_mu,
+              typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
+#pragma HLS INLINE
+    qr_stack_rows<CFG>(s, root_mu, bank, 0u, STEP_ROWS[s]);
 }
 
 // A unit set's result for step s into COND and NF, PORTS words a cycle.
@@ -667,15 +681,17 @@ bool qr_eliminate_all(typename CFG::T mu) {
 
 // The on-chip window's marginalisation: step s (slot 0's) once more, at mu = 0, on unit set 0
 // (the other sets idle); its conditional and the new factor it passes on into COND and NF.
-// False if rank deficient.
+// `live` (keyframe 0 has left the window): the step's factors that hold nothing from then on
+// (CFG::LEAF_SKIP, bit k the k-th of its factors) are neither stacked nor reflected, the unit
+// takes CFG::LEAF_LIVE_ROWS rows. False if rank deficient.
 template <class CFG, class SETS>
-bool qr_eliminate_leaf(int s) {
-    typedef typename CFG::T T;
+bool qr_eliminate_leaf(int s, bool live) {
     FGC_EVENT("marginal_solve");
-    SETS::stack(0, s, T(0));
+    const int rows = live ? CFG::LEAF_LIVE_ROWS : STEP_ROWS[s];
+    SETS::leaf_stack(s, live ? CFG::LEAF_SKIP : 0u, rows);
     bool bad = false;
     FGC_PHASE("qr");
-    SETS::leaf(s, &bad);  // unit set 0 alone (its copy: the other sets are not instantiated)
+    SETS::leaf(s, rows, &bad);  // unit set 0 alone (its copy: the other sets are not instantiated)
     FGC_JOIN();
     SETS::commit(0, s);
     return !bad;

@@ -54,9 +54,6 @@ void lm_iterate(const typename CFG::T g[CFG::N_TANGENT], const typename CFG::T x
     for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
 #pragma HLS UNROLL
         gp[p] = T(0);
-    }
-    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
         xp[p] = T(0);
     }
     const int N_LONGER = CFG::N_X > CFG::N_TANGENT ? CFG::N_X : CFG::N_TANGENT;
@@ -67,13 +64,12 @@ void lm_iterate(const typename CFG::T g[CFG::N_TANGENT], const typename CFG::T x
         for (int h = 0; h < 2; ++h) {
 #pragma HLS UNROLL
             const int i = e + h;
-            const int gk = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
-            const int xk = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
+            const int k = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;  // gp's and xp's
             if (i < CFG::N_TANGENT) {
                 const T a = CFG::magnitude(g[i]);
-                gp[gk] = a > gp[gk] ? a : gp[gk];
+                gp[k] = a > gp[k] ? a : gp[k];
             }
-            if (i < CFG::N_X) xp[xk] += x[i] * x[i];
+            if (i < CFG::N_X) xp[k] += x[i] * x[i];
         }
     }
     out[0] = fold_maxima<T, 2 * CFG::PARTIALS>(gp);

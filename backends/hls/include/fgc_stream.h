@@ -52,8 +52,9 @@
 // retraction). T and L are the kernel's scalars. CFG is the kernel's StreamConfig: the plan's
 // (II, depth) of T's move / max / retract / div and L's acc / div / scatter loops, MV_II (the kept
 // matrix-vector product's), MAX_NEW and TRIP_BATCH_X (trip counts), and the hooks
-// lm_solve(errors, info), linearize() (INLINE: the window at X), leaf_step() (slot 0's step
-// once more at mu = 0), at_linearisation(info) (LM stopped where it last linearised: AB holds
+// lm_solve(errors, info), linearize(live) (INLINE: slot 0's step's factors at X; live: less
+// those that hold nothing once keyframe 0 has left), leaf_step(live) (slot 0's step once more
+// at mu = 0, the same rows), at_linearisation(info) (LM stopped where it last linearised: AB holds
 // the rows at X), ONE_STEP and took_step(info) (the one-step policy, one Gauss-Newton step an
 // update: the update took its step, so its solve's COND / NF, at mu = 0 at the call's starting
 // X, are the store) and batch_solve(...) (the batch kernel's entry); kept:
@@ -249,12 +250,14 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM
 // singular. The window's rows (AB) are its linearisation at X, the optimum: stream_call
 // computed them again before the region if LM moved after its last linearisation. `reuse` (the
 // one-step policy, the step taken): slot 0's step of the update's own solve is the store (its
-// NF at mu = 0, at the call's start lin01: slots 0 and 1), no step is run again.
+// NF at mu = 0, at the call's start lin01: slots 0 and 1), no step is run again. `live`
+// (keyframe 0 has left the window): slot 0's factors that hold nothing from then on are not
+// stacked (CFG::leaf_step's, qr_eliminate_leaf's).
 template <class CFG>
-bool marginalize(bool finite, bool reuse, const T lin01[2 * STREAM_KF_X]) {
+bool marginalize(bool finite, bool reuse, bool live, const T lin01[2 * STREAM_KF_X]) {
     FGC_EVENT("marginal");
     if (!finite) return false;
-    if (!reuse && !CFG::leaf_step()) return false;
+    if (!reuse && !CFG::leaf_step(live)) return false;
     FGC_PHASE("marginal");
     const int n0 = STEP_NF_OFF[STREAM_LEAF_STEP];
     L rows[STREAM_KF_T * (STREAM_KF_T + 1)];
@@ -557,14 +560,16 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
 // A design without one of the two runs that process empty (each function has one call site
 // whatever the parts: the second reader reads every preprocessor branch).
 template <class CFG>
-void marginal_task(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X], int code[1]) {
+void marginal_task(int m, bool finite, bool reuse, bool live, const T lin01[2 * STREAM_KF_X],
+                   int code[1]) {
     FGC_TASK();
 #ifdef FGC_STREAM_MARGINAL
-    code[0] = m == STREAM_W ? (marginalize<CFG>(finite, reuse, lin01) ? 1 : 2) : 0;
+    code[0] = m == STREAM_W ? (marginalize<CFG>(finite, reuse, live, lin01) ? 1 : 2) : 0;
 #else
     (void)m;
     (void)finite;
     (void)reuse;
+    (void)live;
     (void)lin01;
     code[0] = 0;
 #endif
@@ -594,10 +599,10 @@ void kept_task(int reexp, int walk, const T x0[STREAM_KF_X]) {
 }
 
 template <class CFG>
-void marginal_and_kept(int m, bool finite, bool reuse, const T lin01[2 * STREAM_KF_X], int reexp,
-                       int walk, const T x0[STREAM_KF_X], int code[1]) {
+void marginal_and_kept(int m, bool finite, bool reuse, bool live, const T lin01[2 * STREAM_KF_X],
+                       int reexp, int walk, const T x0[STREAM_KF_X], int code[1]) {
 #pragma HLS DATAFLOW
-    marginal_task<CFG>(m, finite, reuse, lin01, code);
+    marginal_task<CFG>(m, finite, reuse, live, lin01, code);
     kept_task<CFG>(reexp, walk, x0);
 }
 #endif  // FGC_STREAM_WINDOW
@@ -725,6 +730,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         T lin01[2 * STREAM_KF_X];
         bool reuse = false;  // the one-step update took its step: its solve's factorisation is the store
         bool finite = true;  // false: the window is not finite where slot 0 leaves
+        bool live = false;  // keyframe 0 has left: slot 0's factors that hold nothing are skipped
         int mc = -1;  // the pass's slot (-1: no marginal)
         if (solve) {
 #ifdef FGC_STREAM_SWEEP
@@ -735,6 +741,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
             const int jc = j;
 #endif
             const int ms = jc < STREAM_SLOTS - 1 ? jc : STREAM_SLOTS - 1;  // the pass's slot
+            live = jc >= STREAM_SLOTS;  // (the window has moved: slot 0's prior is tau)
             if (jc >= STREAM_SLOTS) stream_shift<CFG>();
 #ifdef FGC_STREAM_SWEEP
             stream_in<CFG>(ms, SWEEP_X + row * STREAM_KF_X, SWEEP_WORDS + row * SWEEP_MAX_NEW);
@@ -766,14 +773,14 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #ifdef FGC_STREAM_MARGINAL
                 if (ms == STREAM_W && !reuse && !CFG::at_linearisation(info)) {
                     FGC_EVENT("relinearize");
-                    finite = CFG::linearize();
+                    finite = CFG::linearize(live);
                 }
 #endif
             } else {
                 // a sweep pass, window full: slot 0 leaves at the estimates (the window
                 // linearised there by LM's instance, its step at mu = 0 by the marginal's)
                 FGC_EVENT("sweep");
-                finite = CFG::linearize();
+                finite = CFG::linearize(live);
             }
             mc = ms;
         }
@@ -798,7 +805,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         const int reexp = -1, walk = 0;
 #endif
         int code[1] = {0};
-        marginal_and_kept<CFG>(mc, finite, reuse, lin01, reexp, walk, x0, code);
+        marginal_and_kept<CFG>(mc, finite, reuse, live, lin01, reexp, walk, x0, code);
         FGC_TASKS_JOIN();
 #ifdef FGC_STREAM_KEPT
         if (walk > 0) KEPT_STALE = false;

@@ -213,14 +213,16 @@ def _stream_phase(name: str, *loops: Loop) -> Phase:
 
 
 def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
-                    unit: frozenset = frozenset()) -> tuple[Phase, ...]:
+                    unit: frozenset = frozenset(),
+                    drop: frozenset = frozenset()) -> tuple[Phase, ...]:
     """The QR unit sets' DATAFLOW regions of one linear solve of template ``t`` (every level's,
     the plan's assignment of a level's steps to ``sets`` unit sets) with the rows of the
     ``zero`` template factors and, unless ``damped``, the √μ rows zero: the Evaluate unit skips
     a row that is zero in its column (fgc_qr.h), so these rows cost nothing. The ``unit``
     template factors (priors holding a slot under R = I at its linearisation point: their
     whitened rows are the identity) have one non-zero a row, on their own tangent direction.
-    ``leaf``: that step alone on unit set 0."""
+    ``leaf``: that step alone on unit set 0, without the rows of the ``drop`` factor instances
+    (not stacked: qr_eliminate_leaf's ``live``)."""
     lm = t.solver.method == "lm"
     units = max(1, t.solver.units)
     procs, passed = {}, {}
@@ -228,9 +230,12 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
         pattern = stacked_pattern(t, st, lm).copy()
         cols = step_columns(t, st)
         row = 0
+        dropped = []
         for i in entering_blocks(t, st):
             spec = t.factors[i]
             block = t.blocks[spec.block]
+            if i in drop and st.index == leaf:
+                dropped += range(row, row + block.residual_dim)
             for member, ti in zip(block.members, spec.factors, strict=True):
                 lo, hi = row + member.rows[0], row + member.rows[1]
                 if ti in zero:
@@ -253,6 +258,8 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
         passed[st.index] = _zero_passed_rows(pattern, st.frontal_dim, st.new_factor_rows)
         if leaf is not None and st.index != leaf:
             continue
+        if dropped:
+            pattern = np.delete(pattern, dropped, axis=0)
         procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
             pattern, st.frontal_dim, units, les, name=f"s{st.index}")))
     if leaf is not None:
@@ -286,11 +293,11 @@ def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
 
 
 def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
-                    unit: frozenset = frozenset()) -> int:
+                    unit: frozenset = frozenset(), drop: frozenset = frozenset()) -> int:
     """``plan_cost`` of ``plan`` (a design holding the QR unit sets) running
     :func:`qr_solve_phases` as its iteration."""
     return plan_cost(replace(plan, phases=qr_solve_phases(t, zero, damped, sets, les, leaf,
-                                                          unit))).cycles
+                                                          unit, drop))).cycles
 
 
 def _relinearize(ev: dict) -> int:
@@ -405,13 +412,28 @@ class WindowUpdateModel:
                                   move("x", kf)),
                     _stream_phase("kept_walk_base", move("x", kf))]
         if self.layout_marginal:  # the marginalisation but its linearisation and QR step
+            out += [self._leaf_linearize(False), self._leaf_linearize(True)]
             s = lay.leaf_step
             tables = _tables(t)
-            out += [_stream_phase("marginal", *stack_loops(tables, s, max(1, t.solver.units),
-                                                           plan_sizes(t)["MAX_W"],
-                                                           t.solver.method == "lm", kt),
-                                  *commit_loops(tables, s, kt, False),
-                                  move("rows", n * (n + 1)), *write_tau),
+            stack = stack_loops(tables, s, max(1, t.solver.units), plan_sizes(t)["MAX_W"],
+                                t.solver.method == "lm", kt)
+            # once keyframe 0 has left (live): its factors that hold nothing are not stacked
+            # (qr_stack_rows' skip: their rows loops not run; a zeroing, where the banks are
+            # not left zero, over the rows left)
+            mask, rows = lay.leaf_skip()
+            live, k = [], 0
+            for lp in stack:
+                if lp.name == "zero":
+                    live.append(replace(lp, trip=lp.trip // tables["STEP_ROWS"][s] * rows))
+                elif lp.name == "factor_rows":
+                    if not (mask >> k) & 1:
+                        live.append(lp)
+                    k += 1
+                else:
+                    live.append(lp)
+            tail = (*commit_loops(tables, s, kt, False), move("rows", n * (n + 1)), *write_tau)
+            out += [_stream_phase("marginal", *stack, *tail),
+                    _stream_phase("marginal_live", *live, *tail),
                     # the one-step policy: slots 0 and 1 copied before the solve; the step
                     # taken, the solve's own NF rows are τ (no stack, QR step or commit)
                     _stream_phase("lin_points", move("x", 2 * kf)),
@@ -440,6 +462,43 @@ class WindowUpdateModel:
                                              *(replace(loop, repeat=kept) for loop in keep_one),
                                              move("x", kept * kf), *write_tau))
         return tuple(out)
+
+    def _leaf_linearize(self, live: bool) -> Phase:
+        """The marginal's linearisation (a sweep pass's, or a leaving keyframe's after LM moved):
+        ``linearize_all(X, part)``, LM's instance on the instances whose rows slot 0's step
+        stacks (:meth:`~fgc_backends.hls.window.WindowLayout.leaf_factors`; ``live``, part 2:
+        less those that hold nothing once keyframe 0 has left, ``leaf_gone``) - the plan's
+        factor_jacobian and gradient loops at those instance counts, G zeroed as always."""
+        from fgc_backends.hls.units.datapath import small_blocks
+
+        t = self.layout.template
+        leaf = self.layout.leaf_factors()
+        if live:
+            leaf = leaf - self.layout.leaf_gone()
+        count = Counter(f.block for i, f in enumerate(t.factors) if i in leaf)
+        small = sum(count[i] for i in small_blocks(t))
+        procs = []
+        for ph in self.plan.phases:
+            if ph.name not in ("factor_jacobian", "gradient"):
+                continue
+            for p in ph.processes:
+                name = p.name
+                if name == "factor_small_jacobian":
+                    loops = tuple(replace(lp, trip=small) for lp in p.loops)
+                elif name.startswith("factor_") and name.endswith("_jacobian"):
+                    n = count[int(name[len("factor_"):-len("_jacobian")])]
+                    loops = tuple(replace(lp, trip=n) for lp in p.loops)
+                elif name.startswith("reduce_"):
+                    n = count[int(name[len("reduce_"):])]
+                    loops = tuple(replace(lp, repeat=n) for lp in p.loops)
+                elif name == "zero_gradient":
+                    loops = p.loops
+                else:
+                    raise PlanError(f"internal error: the linearisation's process {name!r} "
+                                    "has no leaf form")
+                procs.append(Process(f"leaf_{name}", p.unit, loops))
+        return Phase("stream_leaf_linearize" + ("_live" if live else ""), False, tuple(procs),
+                     per="stream")
 
     def _merged(self):
         """The window kernel's plan, the batch kernel's units, memories and channels (a second
@@ -493,16 +552,19 @@ class WindowUpdateModel:
 
     # -- the QR units on the rows that are non-zero in this update -----------------------------
     def qr_cycles(self, zero: frozenset, damped: bool, leaf_only: bool = False,
-                  unit: frozenset = frozenset()) -> int:
+                  unit: frozenset = frozenset(), live: bool = False) -> int:
         """The QR unit sets' cycles of one linear solve with the rows of the ``zero`` factors
         and, unless ``damped``, the √μ rows zero, the ``unit`` priors' rows the identity
         (:func:`qr_solve_phases`). ``leaf_only``: slot 0's step alone on unit set 0 (the
-        marginalisation)."""
-        key = (zero, damped, leaf_only, unit)
+        marginalisation; ``live``: keyframe 0 has left, the step's factors that hold nothing
+        from then on not stacked)."""
+        key = (zero, damped, leaf_only, unit, live)
         if key not in self._qr:
+            drop = self.layout.leaf_gone() if live and leaf_only else frozenset()
             self._qr[key] = qr_solve_cycles(self.plan, self.layout.template, zero, damped,
                                             self.sets, self.les,
-                                            self.layout.leaf_step if leaf_only else None, unit)
+                                            self.layout.leaf_step if leaf_only else None, unit,
+                                            drop)
         return self._qr[key]
 
     def zero_factors(self, keyframe: int) -> frozenset:
@@ -621,13 +683,17 @@ class WindowUpdateModel:
         steps = range(w, j)
         if not steps:
             return terms
-        linearize = self.group["factor_jacobian"] + self.group["gradient"]
-        marginal = sum(st["stream_marginal"]
-                       + self.qr_cycles(self.zero_factors(c), False, leaf_only=True)
+        # (pass c >= size: keyframe 0 has left, its priors neither linearised nor stacked)
+        linearize = sum(st["stream_leaf_linearize" + ("_live" if c >= lay.size else "")]
+                        for c in steps)
+        marginal = sum(st["stream_marginal_live" if c >= lay.size else "stream_marginal"]
+                       + self.qr_cycles(self.zero_factors(c), False, leaf_only=True,
+                                        live=c >= lay.size)
                        for c in steps)
-        terms += [Term("sweep_linearize", linearize, len(steps), False,
-                       "a sweep pass with the window full: the window linearised at the "
-                       "estimates (LM's instance)"),
+        terms += [Term("sweep_linearize", linearize, 1, False,
+                       f"{len(steps)} sweep passes with the window full: slot 0's step's "
+                       "factors linearised at the estimates (LM's instance on its leaf "
+                       "instances)"),
                   Term("sweep_points", st["stream_lin_points"] + st["stream_kept_slot0"],
                        len(steps), False, "slots 0 and 1, and slot 0 for the kept task, copied"),
                   Term("sweep_marginal", marginal, 1, False,
@@ -790,12 +856,14 @@ class WindowUpdateModel:
             # last linearisation (fgc_stream.h, stream_call, before the marginal's region, by
             # LM's own linearisation instance; counted: the "relinearize" event)
             relin = _relinearize(ev)
+            live = keyframe >= lay.size  # keyframe 0 has left: its priors are not linearised
             if relin:
-                terms.append(Term("relinearize", self.group["factor_jacobian"]
-                                  + self.group["gradient"], relin, False,
-                                  "keyframe leaving: the window linearised at its optimum "
-                                  "(LM moved after its last linearisation)"))
-            marginal = st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True)
+                terms.append(Term("relinearize", st["stream_leaf_linearize"
+                                                    + ("_live" if live else "")], relin, False,
+                                  "keyframe leaving: slot 0's step's factors linearised at "
+                                  "the optimum (LM moved after its last linearisation)"))
+            marginal = (st["stream_marginal_live" if live else "stream_marginal"]
+                        + self.qr_cycles(zero, False, leaf_only=True, live=live))
             terms.append(Term("marginal", marginal, 1, False,
                               "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0, τ's "
                               "signs, mean and words"))

@@ -54,9 +54,11 @@ def cpe_round_depth(active: int, cpe: int, ops: OperatorTable, waits: int = 0) -
     """Depth of one ``cpe_round`` (backends/hls/include/fgc_cpe.h) as a loop of trip = its words
     + 1 (the status word) at II 1: every process of the region is one pipelined loop of those
     words, so the region takes the words plus what each process adds to the stream: the feed
-    La + 2 (mu added on the diagonal), each CPE with a pivot :func:`cpe_depth` (+ ``waits``,
-    the sum of their :func:`cpe_wait`), each idle tap and CPE 1, the drain 2."""
-    return ops.add.latency + 2 + active * cpe_depth(ops) + waits + 2 * (cpe - active) + 2
+    La + 2, each CPE with a pivot :func:`cpe_depth` (+ ``waits``, the sum of their
+    :func:`cpe_wait`), the drain 2. The ``cpe`` - ``active`` CPEs past the round's pivots add
+    nothing: the stream leaves the cascade at its last pivot's CPE (cpe's tail, the drain's
+    multiplexer), and their taps and CPEs do nothing."""
+    return ops.add.latency + 2 + active * cpe_depth(ops) + waits + 2
 
 
 def cpe_step_loops(frontal: int, separator: int, cpe: int, ops: OperatorTable,
@@ -495,9 +497,11 @@ def beside_region_layout(program, tables: dict, regions: list[tuple[int, int]], 
     """:func:`beside_layout` for two cascades (:func:`cascade_regions`): the stream follows the
     regions (each region's cascade 0 step's instances, then cascade 1's), and a stage lane holds
     a whole region's streamed Grams (fgc_cascades.h's cholesky_set_gram_source fills region
-    r + 2's while the grams process reads region r + 1's): ``step_first`` / ``step_count`` and
-    ``factor_stage`` are per region (a factor's offset in its region's lane), ``n_stage`` the
-    most streamed Grams of a region."""
+    r + 2's while the grams process reads region r + 1's), in two memories, one a cascade's
+    step (so that the grams process reads both steps' first Grams side by side):
+    ``step_first`` / ``step_count`` are per region, ``step_count0`` the cascade 0 step's
+    instances of the region, ``factor_stage`` a factor's offset in its cascade's memory of its
+    region's lane, ``n_stage`` (a memory's words) the most streamed Grams of a step."""
     order = [s for reg in regions for s in reg if s >= 0]
     lay = beside_layout(program, tables, order, big)
     nb = lay["nb"]
@@ -508,12 +512,13 @@ def beside_region_layout(program, tables: dict, regions: list[tuple[int, int]], 
         steps = [s for s in reg if s >= 0]
         first[r] = lay["step_first"][steps[0]]
         count[r] = sum(lay["step_count"][s] for s in steps)
+    count0 = [lay["step_count"][reg[0]] if reg[0] >= 0 else 0 for reg in regions]
     for f, k in at.items():
         r = next(r for r in range(len(regions)) if first[r] <= k < first[r] + count[r])
-        factor_stage[f] = (k - first[r]) * nb
-    most = max(count)
+        j = k - first[r]  # its place in the region; cascade 1's step's after cascade 0's
+        factor_stage[f] = (j - count0[r] if j >= count0[r] else j) * nb
     return {**lay, "factor_stage": factor_stage, "step_first": first, "step_count": count,
-            "n_stage": most * nb, "max_per_step": most}
+            "step_count0": count0, "max_per_step": max(count)}
 
 
 def _gram_source(key: int, lay: dict, relin: bool, steps: int, ii: int, timing: dict
@@ -542,7 +547,8 @@ def beside_set_passes(tables: dict, order: list[int], dims: dict, cpe: int, ops:
     source of region 1, then per region r its children added alone (``reassemble_level``) and
     its region (``recholesky_level<r>``) beside the source of region r + 2, last the committer
     alone. (The pass as a phase, the producer's instance its source waits for or None.)"""
-    base = cascades_phases(tables, order, dims, cpe, ops, timing, lanes, cond_banks)
+    staged = frozenset(f for f, at in enumerate(lay["factor_stage"]) if at >= 0)
+    base = cascades_phases(tables, order, dims, cpe, ops, timing, lanes, cond_banks, staged)
     n_regions = len(lay["step_count"])
 
     def source(r: int) -> tuple[tuple[Process, ...], int | None]:
@@ -730,7 +736,7 @@ def cond_pairs(tables: dict, s: int) -> int:
 
 def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
                     ops: OperatorTable, timing: dict, lanes: int = 1,
-                    cond_banks: int = 1) -> list[Phase]:
+                    cond_banks: int = 1, staged: frozenset = frozenset()) -> list[Phase]:
     """cholesky_eliminate_sets' phases (fgc_cascades.h, two cascades), passes of its one
     cholesky_sets region: phase ``assemble`` (the grams process alone: the first region's
     steps' Grams), then per region r of :func:`cascade_regions` (after a phase
@@ -743,7 +749,11 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
       step's :func:`cpe_pairs`; ``move``, or ``scatter`` with a streamed child's words added);
     - the grams process: the next region's steps' Grams into the other lanes, both first
       factors' column maps in one loop (``move``, trip the wider), then
-      :func:`assemble_loops` but the maps, step after step;
+      :func:`assemble_loops` but the maps, step after step; where both steps' first factors
+      are ``staged`` (the HGC beside the elimination streams them into a stage lane, a memory
+      per cascade's step) both first Grams side by side in one loop, two entries of each a
+      cycle (``move``, trip the larger's pairs: fgc_cascades.h's cholesky_set_firsts), then
+      the further factors step after step;
     - the committer: the region before's conditionals from CONDBUF into COND, two words a
       cycle, each step's pivot check after its copy (:func:`cpe_check_loops`: off the
       cascade's path); with COND cyclic over ``cond_banks`` > 1 (back-substitution's width:
@@ -763,11 +773,21 @@ def cascades_phases(tables: dict, order: list[int], dims: dict, cpe: int,
         fac = tables["STEP_FACTORS"][fb[s]]
         return cb[fac + 1] - cb[fac]
 
+    def first_factor(s):  # step s's first factor (-1: none)
+        fb = tables["STEP_FACTOR_BEGIN"]
+        return tables["STEP_FACTORS"][fb[s]] if s >= 0 and fb[s] < fb[s + 1] else -1
+
     def grams(reg):  # both first factors' column maps in one loop, then step after step
-        return (kernel_loop("map", max(first_width(s) for s in reg), "move", timing),
-                *(lp for s in reg if s >= 0
-                  for lp in assemble_loops(tables, s, timing, children=False)
-                  if lp.name != "map"))
+        maps = kernel_loop("map", max(first_width(s) for s in reg), "move", timing)
+        if all(first_factor(s) in staged for s in reg):  # both first Grams side by side
+            pairs = max(-(-(first_width(s) * (first_width(s) + 3) // 2) // 2) for s in reg)
+            return (maps, kernel_loop("gram_firsts", pairs, "move", timing),
+                    *(lp for s in reg
+                      for lp in assemble_loops(tables, s, timing, children=False)
+                      if lp.name not in ("map", "gram_first")))
+        return (maps, *(lp for s in reg if s >= 0
+                        for lp in assemble_loops(tables, s, timing, children=False)
+                        if lp.name != "map"))
 
     def commit(reg):  # each conditional copied, then its pivots checked (cpe_check)
         if cond_banks > 1:  # both copied at once, then both checked
@@ -962,7 +982,9 @@ def _beside(ctx, big: int, order: list[int], dims: dict) -> None:
                                        jacobian_ii(region.processes),
                                        jacobian_cycles(region.processes))
     slots = (2 if paired else 1) + (1 if lane_b else 0)  # accel.cpp.jinja's GramWord
-    ctx.memories.append(Memory("stage", 2 * lay["n_stage"], ops.word_bits, 1))
+    # two lanes; with two cascades each lane a memory per cascade's step
+    per_lane = 2 if passes is beside_set_passes else 1
+    ctx.memories.append(Memory("stage", 2 * per_lane * lay["n_stage"], ops.word_bits, per_lane))
     ctx.memories.append(Memory("gram_kept", len(lay["order"]) * lay["nb"], ops.word_bits, 1))
     ctx.channels.append(Channel("grams", "stream", lay["max_per_step"] * steps,
                                 slots * ops.word_bits, f"reduce_{big}", "gram_source"))
@@ -983,21 +1005,23 @@ def _frontal(ctx) -> None:
     lanes = ctx.opts.cascade_lanes  # fgc_cpe.h's STREAM_WORDS: words a stream word of the cascade
     sizes = ctx.sizes
     cols = sizes["MAX_W"] + 1
-    # cpe_round's streams: link[0 ... #CPE] (feed -> tap 0, CPE K -> tap K + 1, CPE #CPE - 1 ->
-    # drain), tapped[K] (tap K -> CPE K, deep enough for the tap never to stall while its CPE
-    # waits for r) and recip[K] (r = 1 / d, tap K -> CPE K); per cascade
+    # cpe_round's streams: link[0 ... #CPE - 1] (feed -> tap 0, CPE K -> tap K + 1), tail[K]
+    # (CPE K -> drain, when K holds the round's last pivot), tapped[K] (tap K -> CPE K, deep
+    # enough for the tap never to stall while its CPE waits for r) and recip[K] (r = 1 / d,
+    # tap K -> CPE K); per cascade
     for k in range(sets):
         pre = "cpe_" if k == 0 else f"cpe{k}_"  # the first cascade's keep their names
 
         def cpe(i, pre=pre):
             return f"{pre[:-1]}{i}" if pre == "cpe_" else f"{pre}{i}"
 
-        for i in range(c + 1):
+        for i in range(c):
             ctx.channels.append(Channel(f"{pre}link{i}", "stream", sizes["MAX_W"],
                                         lanes * ops.word_bits,
-                                        f"{pre}feed" if i == 0 else cpe(i - 1),
-                                        f"{pre}tap{i}" if i < c else f"{pre}drain"))
+                                        f"{pre}feed" if i == 0 else cpe(i - 1), f"{pre}tap{i}"))
         for i in range(c):
+            ctx.channels.append(Channel(f"{pre}tail{i}", "stream", 2,  # the drain never stalls
+                                        lanes * ops.word_bits, cpe(i), f"{pre}drain"))
             ctx.channels.append(Channel(f"{pre}tapped{i}", "stream", cols + ops.div.latency + 2,
                                         lanes * ops.word_bits, f"{pre}tap{i}", cpe(i)))
             ctx.channels.append(Channel(f"{pre}recip{i}", "stream", 2, ops.word_bits,

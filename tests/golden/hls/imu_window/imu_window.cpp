@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's by columns (the loader streaming COND to a process per end of the chain,
 // the state update fed by both):
-//   50 processes, 69 streams (cpe=20)
+//   50 processes, 88 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
 //   process cpe0
@@ -81,45 +81,64 @@
 //   stream cpe_link17 depth=30: cpe16 -> cpe_tap17
 //   stream cpe_link18 depth=30: cpe17 -> cpe_tap18
 //   stream cpe_link19 depth=30: cpe18 -> cpe_tap19
-//   stream cpe_link20 depth=30: cpe19 -> cpe_drain
+//   stream cpe_tail0 depth=2: cpe0 -> cpe_drain
 //   stream cpe_tapped0 depth=48: cpe_tap0 -> cpe0
 //   stream cpe_recip0 depth=2: cpe_tap0 -> cpe0
+//   stream cpe_tail1 depth=2: cpe1 -> cpe_drain
 //   stream cpe_tapped1 depth=48: cpe_tap1 -> cpe1
 //   stream cpe_recip1 depth=2: cpe_tap1 -> cpe1
+//   stream cpe_tail2 depth=2: cpe2 -> cpe_drain
 //   stream cpe_tapped2 depth=48: cpe_tap2 -> cpe2
 //   stream cpe_recip2 depth=2: cpe_tap2 -> cpe2
+//   stream cpe_tail3 depth=2: cpe3 -> cpe_drain
 //   stream cpe_tapped3 depth=48: cpe_tap3 -> cpe3
 //   stream cpe_recip3 depth=2: cpe_tap3 -> cpe3
+//   stream cpe_tail4 depth=2: cpe4 -> cpe_drain
 //   stream cpe_tapped4 depth=48: cpe_tap4 -> cpe4
 //   stream cpe_recip4 depth=2: cpe_tap4 -> cpe4
+//   stream cpe_tail5 depth=2: cpe5 -> cpe_drain
 //   stream cpe_tapped5 depth=48: cpe_tap5 -> cpe5
 //   stream cpe_recip5 depth=2: cpe_tap5 -> cpe5
+//   stream cpe_tail6 depth=2: cpe6 -> cpe_drain
 //   stream cpe_tapped6 depth=48: cpe_tap6 -> cpe6
 //   stream cpe_recip6 depth=2: cpe_tap6 -> cpe6
+//   stream cpe_tail7 depth=2: cpe7 -> cpe_drain
 //   stream cpe_tapped7 depth=48: cpe_tap7 -> cpe7
 //   stream cpe_recip7 depth=2: cpe_tap7 -> cpe7
+//   stream cpe_tail8 depth=2: cpe8 -> cpe_drain
 //   stream cpe_tapped8 depth=48: cpe_tap8 -> cpe8
 //   stream cpe_recip8 depth=2: cpe_tap8 -> cpe8
+//   stream cpe_tail9 depth=2: cpe9 -> cpe_drain
 //   stream cpe_tapped9 depth=48: cpe_tap9 -> cpe9
 //   stream cpe_recip9 depth=2: cpe_tap9 -> cpe9
+//   stream cpe_tail10 depth=2: cpe10 -> cpe_drain
 //   stream cpe_tapped10 depth=48: cpe_tap10 -> cpe10
 //   stream cpe_recip10 depth=2: cpe_tap10 -> cpe10
+//   stream cpe_tail11 depth=2: cpe11 -> cpe_drain
 //   stream cpe_tapped11 depth=48: cpe_tap11 -> cpe11
 //   stream cpe_recip11 depth=2: cpe_tap11 -> cpe11
+//   stream cpe_tail12 depth=2: cpe12 -> cpe_drain
 //   stream cpe_tapped12 depth=48: cpe_tap12 -> cpe12
 //   stream cpe_recip12 depth=2: cpe_tap12 -> cpe12
+//   stream cpe_tail13 depth=2: cpe13 -> cpe_drain
 //   stream cpe_tapped13 depth=48: cpe_tap13 -> cpe13
 //   stream cpe_recip13 depth=2: cpe_tap13 -> cpe13
+//   stream cpe_tail14 depth=2: cpe14 -> cpe_drain
 //   stream cpe_tapped14 depth=48: cpe_tap14 -> cpe14
 //   stream cpe_recip14 depth=2: cpe_tap14 -> cpe14
+//   stream cpe_tail15 depth=2: cpe15 -> cpe_drain
 //   stream cpe_tapped15 depth=48: cpe_tap15 -> cpe15
 //   stream cpe_recip15 depth=2: cpe_tap15 -> cpe15
+//   stream cpe_tail16 depth=2: cpe16 -> cpe_drain
 //   stream cpe_tapped16 depth=48: cpe_tap16 -> cpe16
 //   stream cpe_recip16 depth=2: cpe_tap16 -> cpe16
+//   stream cpe_tail17 depth=2: cpe17 -> cpe_drain
 //   stream cpe_tapped17 depth=48: cpe_tap17 -> cpe17
 //   stream cpe_recip17 depth=2: cpe_tap17 -> cpe17
+//   stream cpe_tail18 depth=2: cpe18 -> cpe_drain
 //   stream cpe_tapped18 depth=48: cpe_tap18 -> cpe18
 //   stream cpe_recip18 depth=2: cpe_tap18 -> cpe18
+//   stream cpe_tail19 depth=2: cpe19 -> cpe_drain
 //   stream cpe_tapped19 depth=48: cpe_tap19 -> cpe19
 //   stream cpe_recip19 depth=2: cpe_tap19 -> cpe19
 //   stream grams depth=248: reduce_0 -> gram_source
@@ -2291,7 +2310,12 @@ bool gram_entries_pair(hls::stream<GramRow>& rows, T ab[2][ROWS * PADDED], const
     return finite;
 }
 
-// block 0: the inputs of instance f (x's storage, then its measurements and noise)
+// gather_<b>: block b's inputs of instance f (x's storage, then its measurements and noise)
+// gather_trial_<b>: the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read
+// from the even address below it, 2 h + lo + i (h the line's half, lo the block's first data
+// word), so each read's bank is known and an instance's reads (w's words) take the two banks'
+// four ports; into registers (w), its data picked from them by the line's parity (2:1 muxes;
+// units/datapath.py's trial_data_ii)
 void gather_0(const T x[N_X], int f, T in[42], T dat[193]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2305,10 +2329,6 @@ void gather_0(const T x[N_X], int f, T in[42], T dat[193]) {
     for (int i = 0; i < 120; ++i) dat[73 + i] = DATA_BUF[line + 73 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 194 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_0(const T x[N_X], int f, T in[42], T dat[193]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
@@ -2744,7 +2764,6 @@ T noise_0(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 1: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2753,10 +2772,6 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
     for (int i = 0; i < 1; ++i) dat[12 + i] = DATA_BUF[line + 12 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 14 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_1(const T x[N_X], int f, T in[12], T dat[13]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
@@ -2875,7 +2890,6 @@ T noise_1(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 2: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2884,10 +2898,6 @@ void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
     for (int i = 0; i < 1; ++i) dat[3 + i] = DATA_BUF[line + 3 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 5 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_2(const T x[N_X], int f, T in[3], T dat[4]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
@@ -3004,7 +3014,6 @@ T noise_2(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 3: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -3013,10 +3022,6 @@ void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     for (int i = 0; i < 1; ++i) dat[6 + i] = DATA_BUF[line + 6 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 8 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_3(const T x[N_X], int f, T in[6], T dat[7]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
@@ -3486,7 +3491,8 @@ struct LesConfig {
 // matrices, assembled into lane t % 2 of HA (the t-th step) while the cascade factors the step
 // before (fgc_eliminate.h's cholesky_overlap region: cholesky_assembler -> cholesky_cascade, one
 // stream); cpe_step runs the rounds of the #CPE cascade (one DATAFLOW region per round:
-// cpe_feed (+ mu) -> cpe_tap<0>, cpe<0> ... cpe_tap<19>, cpe<19> -> cpe_drain, 61 streams),
+// cpe_feed (+ mu) -> cpe_tap<0>, cpe<0> ... cpe_tap<19>, cpe<19> -> cpe_drain, 80 streams:
+// the drain reads the tail of the round's last pivot's CPE, the CPEs past it idle),
 // whose drain writes the conditional into COND and the update matrix into NF.
 L HA_L0[MAX_W][LesConfig::MAX_COLS / 2 + 1][2];  // the assembly's lane 0, (i, c) at [i][c >> 1][c & 1]; all zero between steps (the source clears what it reads)
 L HA_L1[MAX_W][LesConfig::MAX_COLS / 2 + 1][2];  // its lane 1

@@ -2523,7 +2523,12 @@ bool accumulate(int a0, const int col[GRAD_COLS], int stride, int cols, int rows
     return finite;
 }
 
-// block 0: the inputs of instance f (x's storage, then its measurements and noise)
+// gather_<b>: block b's inputs of instance f (x's storage, then its measurements and noise)
+// gather_trial_<b>: the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read
+// from the even address below it, 2 h + lo + i (h the line's half, lo the block's first data
+// word), so each read's bank is known and an instance's reads (w's words) take the two banks'
+// four ports; into registers (w), its data picked from them by the line's parity (2:1 muxes;
+// units/datapath.py's trial_data_ii)
 void gather_0(const T x[N_X], int f, T in[12], T dat[18]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2532,10 +2537,6 @@ void gather_0(const T x[N_X], int f, T in[12], T dat[18]) {
     for (int i = 0; i < 6; ++i) dat[12 + i] = DATA_BUF[line + 12 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 19 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_0(const T x[N_X], int f, T in[12], T dat[18]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
@@ -2624,7 +2625,6 @@ T noise_0(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 1: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_1(const T x[N_X], int f, T in[3], T dat[4]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2689,7 +2689,6 @@ T noise_1(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 2: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_2(const T x[N_X], int f, T in[6], T dat[7]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2754,7 +2753,6 @@ T noise_2(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 3: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_3(const T x[N_X], int f, T in[42], T dat[211]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];
@@ -2770,10 +2768,6 @@ void gather_3(const T x[N_X], int f, T in[42], T dat[211]) {
     for (int i = 0; i < 6; ++i) dat[205 + i] = DATA_BUF[line + 207 + i];
 }
 
-// the same for trial_cost (DATA_BUF cyclic 2 there): the line's words read from the even
-// address below it, 2 h + 0 + i (h the line's half), so each read's bank is known and an
-// instance's 214 reads take the two banks' four ports; into registers (w), its data
-// picked from them by the line's parity (2:1 muxes; units/datapath.py's trial_data_ii)
 void gather_trial_3(const T x[N_X], int f, T in[42], T dat[211]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
@@ -3111,7 +3105,6 @@ T noise_3(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// block 4: the inputs of instance f (x's storage, then its measurements and noise)
 void gather_4(const T x[N_X], int f, T in[12], T dat[4]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f];

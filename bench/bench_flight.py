@@ -1,0 +1,335 @@
+"""Paper B's scaling from 5 to 80 CPEs (issue 33 item 4) by the plan: imu_window N = 50, LM,
+float32 at 143 MHz, back-substitution by columns (the default on a chain).
+
+    python bench/bench_flight.py                 # #CPE 5 ... 120, one and two cascades, one and
+                                                 # two words a cycle: cycles / iteration, DSP,
+                                                 # BRAM36, fits; the 5 -> 80 CPEs ratios
+    python bench/bench_flight.py --pieces        # what each further piece would buy (what-if)
+                                                 # at #CPE 40 x2, two words a cycle
+
+The what-if pieces are the plan's arithmetic with a term replaced, not designs that are built:
+``flight`` (a step enters its cascade as the first Schur-complement row of the step before on the
+same end leaves that step's last pivot: the cascade's share of a region the interval, rows
+0 ... f - 1 plus the f pivots' depth, not the whole round), ``prod2`` (the HGC's entries loop
+two entries an iteration more, so an IMU instance costs the datapath's II, not the HGC's
+entries), ``pair`` (the feed-forward form of steps in flight: a pass of two regions, each
+cascade factoring two consecutive steps of its end, A's pivots on CPEs 0 ... f_A - 1 and B's on
+the CPEs past them, A's Schur-complement rows leaving its last pivot's CPE into a merger that
+adds B's Grams and feeds CPE f_A: :func:`pair_passes`; canonical DATAFLOW, no feedback channel,
+unlike ``flight``, whose next step's feed reads the drain of the same cascade), ``loop``
+(``flight`` as docs/hls.md says Vitis would build it: the first solve's region loop a dataflow
+loop, each process a region after its last one and its inputs, no pass boundaries:
+:func:`loop_model`). The grams process
+storing the two steps' first Grams side by side, the third piece this was written to weigh, is
+built (fgc_cascades.h's cholesky_set_firsts)."""
+
+from __future__ import annotations
+
+import argparse
+from dataclasses import replace
+
+import fgc_backends.hls.units.cholesky as ch
+from fgc.app.specs import example
+from fgc.compile import compile_graph
+from fgc.ir.program import SolverConfig
+from fgc_backends.hls import HlsConfig
+from fgc_backends.hls.emitter import accel_plan
+from fgc_backends.hls.plan import phase_cycles, plan_cost
+from fgc_backends.hls.plan.model import Loop, Phase, Process
+
+N = 50
+
+
+def design(cpe: int, sets: int, lanes: int):
+    program = compile_graph(example("imu_window").build(N=N), SolverConfig(
+        method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"iw{cpe}")
+    return plan_cost(accel_plan(program, HlsConfig(scalar="float", unit_sets=sets,
+                                                   cascade_lanes=lanes)))
+
+
+def what_if(pieces: set[str]) -> None:
+    """Replace the plan's terms named by ``pieces`` (module docstring) in units/cholesky.py."""
+    cascades, source, ready = ch.cascades_phases, ch._gram_source, ch.beside_ready
+
+    def phases(tables, order, dims, cpe, ops, timing, lanes=1, cond_banks=1,
+               staged=frozenset()):
+        out = []
+        for ph in cascades(tables, order, dims, cpe, ops, timing, lanes, cond_banks, staged):
+            procs = []
+            for p in ph.processes:
+                if "flight" in pieces and p.name.startswith("cascade"):
+                    f, sep = dims[int(p.name[len("cascade"):])]
+                    w = f + sep
+                    if f <= cpe:  # one round: the next step after rows 0 ... f - 1, f pivots
+                        waits = sum(ch.cpe_wait(q, w, ops, lanes) for q in range(f))
+                        gap = (ch.cpe_vecs(0, w, lanes) - ch.cpe_vecs(f, w, lanes)
+                               + ch.cpe_round_depth(f, cpe, ops, waits))
+                        gap = max(gap, ch.cpe_vecs(0, w, lanes) + 1)
+                        p = replace(p, loops=(p.loops[0], Loop("flight", 1, 1, gap)))
+                procs.append(p)
+            out.append(replace(ph, processes=tuple(procs)))
+        return out
+
+    def gram_source(key, lay, relin, steps, ii, timing):
+        return source(key, lay, relin, -(-steps // 2) if "prod2" in pieces and relin
+                      else steps, ii, timing)
+
+    def beside_ready(count, jac, rows, steps, ii, depth):
+        return ready(count, jac, rows, -(-steps // 2) if "prod2" in pieces else steps, ii,
+                     depth)
+
+    ch.cascades_phases, ch._gram_source, ch.beside_ready = phases, gram_source, beside_ready
+    if "pair" in pieces:
+        ch.beside_set_passes = pair_passes(ch.beside_set_passes)
+    if "loop" in pieces:
+        ch.beside_set_passes, ch.beside_cycles = loop_model(ch.beside_set_passes,
+                                                            ch.beside_cycles)
+
+
+def _joined(name: str, procs: list) -> tuple:
+    """One process running the loops of ``procs`` one after another (none if they have none)."""
+    loops = tuple(lp for p in procs for lp in p.loops)
+    return (Process(name, "cpe", loops),) if loops else ()
+
+
+def _parse(base) -> tuple[dict, ...]:
+    """beside_set_passes' passes by region x: the cascade processes of x, its source, the grams
+    process that fills x's lanes, the committer of x, the Gram source of x (with the producer's
+    instance it waits for), the pass adding x's children alone (if any)."""
+    casc, src, fill, commit, gsrc, alone = {}, {}, {}, {}, {}, {}
+    pending = None
+    for phase, gate in base:
+        procs = {p.name: p for p in phase.processes}
+        for name, p in procs.items():  # the Gram source of region x
+            if name.startswith("gram_source"):
+                gsrc[int(name[len("gram_source"):])] = (p, gate)
+        if phase.name == "reassemble":
+            continue
+        if phase.name.startswith("reassemble_level"):
+            if "grams" in procs:  # the grams alone: region 0's
+                fill[0] = procs["grams"]
+            else:  # children added alone before the next region
+                pending = phase
+            continue
+        r = int(phase.name[len("recholesky_level"):])
+        if pending is not None:
+            alone[r], pending = pending, None
+        for name, p in procs.items():
+            if name.startswith("cascade"):
+                casc.setdefault(r, []).append(p)
+            elif name.startswith("source"):
+                src[r] = p
+            elif name.startswith("grams"):
+                fill[r + 1] = p
+            elif name.startswith("committer"):
+                commit[r - 1] = p
+    return casc, src, fill, commit, gsrc, alone
+
+
+def _gap(dim: tuple[int, int], cpe: int, ops, lanes: int) -> int:
+    """A step's first word into its cascade to the next step's first (the ``flight`` gap): its
+    rows 0 ... f - 1 through the feed, then its round's depth (its f pivots)."""
+    f, sep = dim
+    w = f + sep
+    waits = sum(ch.cpe_wait(q, w, ops, lanes) for q in range(f))
+    return (ch.cpe_vecs(0, w, lanes) - ch.cpe_vecs(f, w, lanes)
+            + ch.cpe_round_depth(f, cpe, ops, waits))
+
+
+def loop_model(base_passes, base_cycles):
+    """The ``loop`` what-if: the first solve's elimination (beside_cycles on beside_set_passes'
+    passes) as the dataflow loop docs/hls.md describes for steps in flight - the region loop
+    with DATAFLOW on its body, each process starting region x + 1 when it has finished region
+    x and its inputs are there, no pass boundaries: the Gram source of x after its x - 1 (and
+    stage lane x % 2 free: the grams process of x - 2 done), no earlier than the producer's
+    last instance of x + the move's depth; the grams process of x after its x - 1, the Gram
+    source of x and the source of x - 2 (HA lane x % 2 free); the source of x after its x - 1
+    and the grams process of x, no faster than its cascades' feeds take the words; cascade k's
+    step of x from the source's first word, the flight gap after the step before on its end
+    began (its streamed child: the drain's update rows fed back) and after that step's words
+    have entered, its round's cycles; the committer of x after its x - 1 and both cascades of x.
+    The regions from the first with a child added alone (the root's) on are today's passes after
+    the loop (the first beside the loop's last committer). Operators and memories as built (a
+    what-if of the cycles only)."""
+    contexts = {}
+
+    def passes(tables, order, dims, cpe, ops, timing, lay, relin, steps, ii, lanes=1,
+               cond_banks=1):
+        out = base_passes(tables, order, dims, cpe, ops, timing, lay, relin, steps, ii, lanes,
+                          cond_banks)
+        contexts[id(out)] = (out, tables, order, dims, cpe, ops, lanes)
+        return out
+
+    def cycles(producer, ready, plan_passes, move_depth):
+        if id(plan_passes) not in contexts or contexts[id(plan_passes)][0] is not plan_passes:
+            return base_cycles(producer, ready, plan_passes, move_depth)
+        _, tables, order, dims, cpe, ops, lanes = contexts[id(plan_passes)]
+        regions = ch.cascade_regions(tables, order)
+        kids = ch.cascade_children(tables, regions)
+        casc, src, fill, commit, gsrc, alone = _parse(plan_passes)
+        n = len(regions)
+        last = next((x for x in range(n) if x in alone
+                     or any(len(p.loops) != 2 for p in casc.get(x, ()))), n)
+        gs_end, grams_end, src_end, ends = {}, {}, {}, []
+        t = 0
+        for x in sorted(gsrc):
+            proc, gate = gsrc[x]
+            start = max(t, grams_end.get(x - 2, 0))
+            t = max(start + proc.cycles, ready[gate] + move_depth if gate is not None else 0)
+            gs_end[x] = t
+        ends.append(t)
+        g = s_ = c_ = 0
+        end = [{"start": None, "gap": 0, "feed": 0, "step": -1} for _ in (0, 1)]
+        for x in range(min(last + 1, n)):
+            if x in fill:
+                g = max(g, gs_end.get(x, 0), src_end.get(x - 2, 0)) + fill[x].cycles
+                grams_end[x] = g
+            if x >= last:
+                break
+            start = max(s_, grams_end.get(x, 0))
+            lead = sum(lp.cycles for lp in src[x].loops[:-1]) + src[x].loops[-1].depth
+            fed, done = start + src[x].cycles, 0
+            for k, proc in enumerate(casc.get(x, ())):
+                step = regions[x][k] if regions[x][k] >= 0 else regions[x][1 - k]
+                e = end[k]
+                begin = max(start + lead, e["feed"])
+                if e["start"] is not None and kids[step][0] == e["step"] >= 0:
+                    begin = max(begin, e["start"] + e["gap"])
+                rnd = proc.loops[1]
+                end[k] = {"start": begin, "gap": _gap(dims[step], cpe, ops, lanes),
+                          "feed": begin + rnd.trip, "step": step}
+                fed = max(fed, begin + rnd.trip)
+                done = max(done, begin + rnd.cycles)
+            s_ = src_end[x] = fed
+            if x + 1 < last:  # (the last one's beside the first pass after the loop)
+                c_ = max(c_, done) + (commit[x].cycles if x in commit else 0)
+            ends += [g, s_, done, c_]
+        t = max(ends)
+        for x in range(last, n):  # the rest as today's passes
+            if x in alone:
+                t += phase_cycles(alone[x])
+            before = (commit[x - 1],) if x == last and x - 1 in commit else ()
+            t += phase_cycles(Phase(f"tail{x}", True, (*casc.get(x, ()), src[x], *before)))
+        t += sum(commit[x].cycles for x in range(last, n) if x in commit)
+        return max(producer, *ready, t), 0
+
+    return passes, cycles
+
+
+def pair_passes(base_passes, pairs: bool = True):
+    """The ``pair`` what-if on the two-cascade design with the HGC beside (units/cholesky.py's
+    beside_set_passes): regions r, r + 1 in one pass where both hold two steps of one round
+    each, B = region r + 1's step on cascade k the parent of A = region r's (its streamed
+    child), f_A + f_B <= #CPE, and B has no child added alone. Cascade k's process: A's feed
+    fill, then B's first word enters CPE f_A the flight gap after A's first (A's rows 0 ... f_A
+    - 1 through the feed, then A's round depth: its f_A pivots, the merger in place of the
+    drain), then B's round (its words, its depth: the merger's add in place of a feed). Each
+    other process does the work of both regions one after the other: the source streams both
+    regions' steps, the grams process fills the next pass's two regions, the committer commits
+    the pass before's, the Gram source stages the regions two passes on (the pass gated by the
+    later of their producer's instances). Not priced: the merger's two adders a cascade, and
+    the second stage / HA / NF lanes a pass of two regions needs (memory, not cycles). With
+    ``pairs`` False the passes are rebuilt region by region: beside_set_passes' own price (a
+    check of the rebuild)."""
+
+    def passes(tables, order, dims, cpe, ops, timing, lay, relin, steps, ii, lanes=1,
+               cond_banks=1):
+        base = base_passes(tables, order, dims, cpe, ops, timing, lay, relin, steps, ii, lanes,
+                           cond_banks)
+        regions = ch.cascade_regions(tables, order)
+        kids = ch.cascade_children(tables, regions)
+        n = len(regions)
+        casc, src, fill, commit, gsrc, alone = _parse(base)
+
+        def gap(s):
+            return _gap(dims[s], cpe, ops, lanes)
+
+        def pairable(r):
+            if not pairs or r + 1 >= n or r + 1 in alone:
+                return False
+            for k in (0, 1):
+                a, b = regions[r][k], regions[r + 1][k]
+                if a < 0 or b < 0 or kids[b][0] != a or dims[a][0] + dims[b][0] > cpe:
+                    return False
+            return all(len(p.loops) == 2 for x in (r, r + 1) for p in casc.get(x, ()))
+
+        units, r = [], 0
+        while r < n:
+            units.append((r, r + 1) if pairable(r) else (r,))
+            r += len(units[-1])
+
+        def sources(u):  # the Gram source processes of unit u's regions, the later gate
+            got = [gsrc[x] for x in (units[u] if 0 <= u < len(units) else ()) if x in gsrc]
+            gates = [g for _, g in got if g is not None]
+            return _joined(f"gram_source_u{u}", [p for p, _ in got]), max(gates, default=None)
+
+        procs, gate = sources(0)
+        out = [(Phase("reassemble", False, procs, linear=True), gate)]
+        procs, gate = sources(1)
+        procs = _joined("grams", [fill[x] for x in units[0] if x in fill]) + procs
+        out.append((Phase("reassemble_level0", len(procs) > 1, procs, linear=True), gate))
+        for u, unit in enumerate(units):
+            for x in unit:
+                if x in alone:
+                    out.append((alone[x], None))
+            if len(unit) == 2:
+                cascades = tuple(Process(f"cascade{regions[unit[0]][k]}_{regions[unit[1]][k]}",
+                                         "cpe", (pa.loops[0], Loop("flight", 1, 1, gap(
+                                             regions[unit[0]][k])), pb.loops[1]))
+                                 for k, (pa, pb) in enumerate(zip(casc[unit[0]],
+                                                                   casc[unit[1]], strict=True)))
+            else:
+                cascades = tuple(casc.get(unit[0], ()))
+            nxt = units[u + 1] if u + 1 < len(units) else ()
+            prv = units[u - 1] if u > 0 else ()
+            gs, gate = sources(u + 2)
+            procs = (cascades + _joined(f"source_u{u}", [src[x] for x in unit if x in src])
+                     + _joined(f"grams_u{u}", [fill[x] for x in nxt if x in fill])
+                     + _joined(f"committer_u{u}", [commit[x] for x in prv if x in commit])
+                     + gs)
+            out.append((Phase(f"recholesky_level{u}", True, procs, linear=True), gate))
+        procs = _joined("committer", [commit[x] for x in units[-1] if x in commit])
+        out.append((Phase(f"recholesky_level{len(units)}", False, procs, linear=True), None))
+        return out
+
+    return passes
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--pieces", action="store_true", help="the what-if pieces at #CPE 40 x2")
+    args = ap.parse_args()
+    if args.pieces:
+        base = {"cpe": 40, "sets": 2, "lanes": 2}
+        rows = [(), ("prod2",), ("flight",), ("flight", "prod2"), ("pair",), ("pair", "prod2"),
+                ("loop",), ("loop", "prod2")]
+        saved = (ch.cascades_phases, ch._gram_source, ch.beside_ready, ch.beside_set_passes,
+                 ch.beside_cycles)
+        for pieces in rows:
+            what_if(set(pieces))
+            cost = design(**base)
+            print(f"{'+'.join(pieces) or 'as built':24s} #CPE 40 x2 L2 {cost.cycles:7,d} cycles "
+                  f"{88584 / cost.cycles:.2f}x the default #CPE 5 x1", flush=True)
+            (ch.cascades_phases, ch._gram_source, ch.beside_ready, ch.beside_set_passes,
+             ch.beside_cycles) = saved
+        return
+    table = {}
+    for lanes in (1, 2):
+        for cpe in (5, 20, 40, 80, 120):
+            for sets in (1, 2):
+                cost = design(cpe, sets, lanes)
+                table[cpe, sets, lanes] = cost
+                print(f"#CPE {cpe:3d} x{sets} L{lanes}: {cost.cycles:7,d} cycles, "
+                      f"{cost.dsp:5,d} DSP, {cost.bram36:6.1f} BRAM36, "
+                      f"{'fits' if cost.fits else 'over: ' + ','.join(cost.over)}", flush=True)
+    default5 = table[5, 1, 1].cycles
+    for lanes in (1, 2):
+        for sets, cpe in ((1, 80), (2, 40)):
+            c = table[cpe, sets, lanes].cycles
+            same = table[5, 1, lanes].cycles
+            print(f"80 CPEs as #CPE {cpe} x{sets} L{lanes}: {default5 / c:.2f}x the default "
+                  f"#CPE 5 x1 ({default5:,d}), {same / c:.2f}x #CPE 5 x1 L{lanes} ({same:,d})")
+
+
+if __name__ == "__main__":
+    main()
