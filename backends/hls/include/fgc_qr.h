@@ -64,25 +64,28 @@
 // other way round, so within a region each buffer is only read or only written. Region j:
 //
 //   qr_broadcast      streams the words of column j's vector below the pivot (vin) to each
-//                     Update unit (vq[u]);
+//                     Update unit (vq[u]) and, if j + 1 < k, to the Evaluate (evq);
 //   qr_finish         meanwhile turns hin ({norm2, n}, {x_0, j}) into v_0, tau and R_jj (the
 //                     square root and the divide, the Evaluate's tail, overlapped with the
-//                     broadcast) and streams them to each Update unit (tq[u]), R_jj also to the
-//                     collector (rq);
+//                     broadcast) and streams them to each Update unit (tq[u]) and the Evaluate
+//                     (etq), R_jj also to the collector (rq);
 //   qr_update<u>      u = 0 ... N_UNITS - 1 (one process each, through qr_update_units): applies
 //                     reflection j to its own columns c > j, c % N_UNITS == u, in its own bank
 //                     work[u] (read and written by that process only: its memory, no channel).
-//                     The unit holding column j + 1 takes that column's dot product while the
-//                     vector arrives, updates it and streams it (rows j + 1 ... rows - 1) to the
-//                     Evaluate (colq[u]) first; its other columns go through one pipelined
-//                     loop, column l's dot product beside column l - 1's update (dot_axpy), which
-//                     pays its depth once per reflection. Each column's entry in row j, final
-//                     now, goes to the collector (rowq[u]);
-//   qr_evaluate       takes column j + 1 from that stream as it arrives: its words below the
-//                     pivot into vout, its squared norm and pivot into hout (the next region's
-//                     qr_finish does the rest);
-//   qr_collect        writes row j of R (zeros, R_jj, then the units' entries in column order)
-//                     into cond or update and keeps the running scale (its own memory).
+//                     The unit holding column j + 1 streams that column as it stands (rows
+//                     max(j, 0) ... rows - 1) to the Evaluate (colq[u]) while the vector
+//                     arrives and zeroes it in its bank; its other columns go through one
+//                     pipelined loop, column l's dot product beside column l - 1's update
+//                     (dot_axpy), which pays its depth once per reflection. Each column's entry
+//                     in row j, final now, goes to the collector (rowq[u]);
+//   qr_evaluate       applies reflection j to column j + 1 as it arrives (its dot product with
+//                     the vector as both stream in, the scale once tau is there, then one pass
+//                     that updates it): the entry in row j to the collector (exq), the words
+//                     below the pivot into vout, the squared norm and pivot into hout (the next
+//                     region's qr_finish does the rest);
+//   qr_collect        writes row j of R (zeros, R_jj, the Evaluate's entry, then the units' in
+//                     column order) into cond or update and keeps the running scale (its own
+//                     memory).
 //
 // Each stream has one writer and one later reader, no process returns a value, no channel goes
 // back; vin / hin are only read (by the broadcast / qr_finish), vout / hout only written (by the
@@ -169,12 +172,15 @@ inline void qr_put(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_
 
 // ---- the processes of one reflection ---------------------------------------------------------
 
-// Stream the Householder vector in vin to every Update unit: the header {0, n}, then the n - 1
-// words below the pivot (v_a = x_a, final as the Evaluate wrote them); the pivot's v_0 comes
-// from qr_finish, which computes it meanwhile.
+// Stream the Householder vector in vin to every Update unit and, when there is a next column
+// (j + 1 < k), to the Evaluate (evq): the header {0, n}, then the n - 1 words below the
+// pivot (v_a = x_a, final as the Evaluate wrote them); the pivot's v_0 comes from qr_finish,
+// which computes it meanwhile.
 template <class CFG>
-void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1],
-                  hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS]) {
+void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1], int j, int k,
+                  hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
+                  hls::stream<qr_word<typename CFG::T> >& evq) {
+    const bool to_eval = j + 1 < k;  // a next pivot column: the Evaluate runs
     const int n = vin[0].idx;
     const int words = n > 0 ? n : 1;
     // trip max(n, 1), II 1, depth 2 (read, write)
@@ -186,6 +192,7 @@ void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1],
 #pragma HLS UNROLL
             vq[u].write(x);
         }
+        if (to_eval) evq.write(x);
     }
     FGC_CYCLES("qr_broadcast", 0, "vector", words, 1, 2);
 }
@@ -194,15 +201,17 @@ void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1],
 // {norm2, n}, {x_0, j}) alpha = -sign(x_0) sqrt(norm2), v_0 = x_0 - alpha and tau = 1 / (norm2 -
 // alpha x_0) (2 / |v|^2, without a second sum; 0 for a column zero on every active row but for
 // subnormal residue);
-// {v_0, j}, {tau, n}, {R_jj = alpha, j} to every Update unit, R_jj to the collector. n = 0 (no
+// {v_0, j}, {tau, n}, {R_jj = alpha, j} to every Update unit and, if j + 1 < k, the Evaluate,
+// R_jj to the collector. n = 0 (no
 // reflection): zeros.
 template <class CFG>
-void qr_finish(const qr_word<typename CFG::T> hin[2],
+void qr_finish(const qr_word<typename CFG::T> hin[2], int k,
                hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS],
-               hls::stream<typename CFG::T>& rq) {
+               hls::stream<qr_word<typename CFG::T> >& etq, hls::stream<typename CFG::T>& rq) {
     typedef typename CFG::T T;
     const T norm2 = hin[0].val, pivot = hin[1].val;
-    const int n = hin[0].idx, j = hin[1].idx;
+    const int n = hin[0].idx, j = hin[1].idx;  // (hin's j is the region's)
+    const bool to_eval = j + 1 < k;  // a next pivot column: the Evaluate gets v_0, tau, R_jj
     FGC_CYCLES("qr_finish", 0, "read", 2, 1, 1);
     qr_word<T> w0, w1, w2;
     w0.idx = j;
@@ -234,24 +243,28 @@ void qr_finish(const qr_word<typename CFG::T> hin[2],
 #pragma HLS UNROLL
         tq[u].write(w0);
     }
+    if (to_eval) etq.write(w0);
     w2.val = alpha;
     for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
         tq[u].write(w1);
     }
+    if (to_eval) etq.write(w1);
     for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
         tq[u].write(w2);
     }
+    if (to_eval) etq.write(w2);
     rq.write(alpha);
 }
 
 // Update unit U: reflection j on the columns of bank U right of j (cols = w + 1 columns in all);
 // each column's entry in row j, final after reflection j, goes to the collector (rowout); the
-// column j + 1, if it is here and j + 1 < k, goes to the Evaluate after its update (colout).
+// column j + 1, if it is here and j + 1 < k, goes to the Evaluate before reflection j (colout).
 //
-// The column j + 1 (the next pivot) is on the critical path: its owner takes its dot product
-// while the vector arrives, updates it and streams it to the Evaluate first. The unit's other
+// The column j + 1 (the next pivot) is on the critical path: its owner streams it to the
+// Evaluate as the vector arrives, and the Evaluate applies reflection j to it (the unit holding
+// it does no more than the others). The unit's other
 // columns go through one flattened pipelined loop that takes a column's dot product beside the
 // update of a column before it (dot_axpy: its multiply-add pairs are both busy every cycle), so
 // a unit pays the pipeline's depth once per reflection, not once per column.
@@ -278,122 +291,53 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     // this unit's first column right of j; it is the next pivot column if it is j + 1 < k
     const int c0 = j + 1 + ((U - (j + 1)) % CFG::N_UNITS + CFG::N_UNITS) % CFG::N_UNITS;
     const bool next_here = c0 == j + 1 && c0 < k;
-    const bool fused = n > 1 && next_here;
     const int l0 = c0 / CFG::N_UNITS;
-    T part0[P];
-#pragma HLS ARRAY_PARTITION variable=part0 complete
-    for (int t = 0; t < P; ++t) {
-#pragma HLS UNROLL
-        part0[t] = T(0);
-    }
-    // the n - 1 words below the pivot from the broadcast, and v.x of the next pivot column over
-    // them (a partial is met again P >= La iterations later): trip n - 1, II 1, depth Lm + La
-    // (II 1, depth 1 if there is no dot)
     const int below = n > 1 ? n - 1 : 0;
-    for (int a = 1; a <= below; ++a) {
+    if (next_here) {
+        // The next pivot column goes to the Evaluate as it is now (rows j0 ... rows - 1, j0 =
+        // max(j, 0)): the Evaluate applies reflection j to it, sends its row j entry to the
+        // collector and builds reflection j + 1 from the rest, and nothing reads the column in
+        // the bank again, so it is zeroed here (the banks are left zero). The n - 1 words below
+        // the pivot arrive meanwhile (n - 1 < rows - j0): trip rows - j0, II 1, depth 2
+        const int j0 = j > 0 ? j : 0;
+        for (int t = 0; t < rows - j0; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=part0 inter true distance=CFG::PARTIALS
-        const qr_word<T> x = vin.read();
-        v[a] = x.val;
-        at[a] = x.idx;
-        if (fused) part0[(a - 1) % P] += x.val * bank[x.idx][l0];
-    }
-    if (fused) {
-        FGC_CYCLES("qr_update", U, "vector_dot", below, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+            if (t < below) {
+                const qr_word<T> x = vin.read();
+                v[t + 1] = x.val;
+                at[t + 1] = x.idx;
+            }
+            colout.write(bank[j0 + t][l0]);
+            bank[j0 + t][l0] = T(0);
+        }
+        FGC_CYCLES("qr_update", U, "vector_column", rows - j0, 1, 2);
     } else {
+        // the n - 1 words below the pivot from the broadcast: trip n - 1, II 1, depth 1
+        for (int a = 1; a <= below; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+            const qr_word<T> x = vin.read();
+            v[a] = x.val;
+            at[a] = x.idx;
+        }
         FGC_CYCLES("qr_update", U, "vector", below, 1, 1);
     }
-    // v_0 from qr_finish (it waits for the square root); in the next pivot column's dot its
-    // term v_0 x_0 is one more leaf of the fold's tree, so the other terms need not wait for it
+    // v_0 from qr_finish (it waits for the square root)
     FGC_WAIT("qr_update", U, "qr_finish", 0, "v0");
     const qr_word<T> w0 = tin.read();
     v[0] = w0.val;
     at[0] = w0.idx;
-    T dot0 = T(0);
-    if (fused) {
-        T leaves[P + 1];
-#pragma HLS ARRAY_PARTITION variable=leaves complete
-        for (int t = 0; t < P; ++t) {
-#pragma HLS UNROLL
-            leaves[t] = part0[t];
-        }
-        leaves[P] = w0.val * bank[j][l0];  // depth Lm
-        FGC_CYCLES("qr_update", U, "pivot_term", 1, 1, CFG::MUL_LAT);
-        dot0 = fold_partials<T, P + 1>(leaves);  // depth La ceil(log2 (P + 1))
-        FGC_CYCLES("qr_update", U, "fold", 1, 1, CFG::ADD_LAT * ceil_log2(P + 1));
-    } else {
-        FGC_CYCLES("qr_update", U, "pivot_word", 1, 1, 1);
-    }
+    FGC_CYCLES("qr_update", U, "pivot_word", 1, 1, 1);
     // tau and R_jj (qr_finish's last words; what follows waits for them)
     FGC_WAIT("qr_update", U, "qr_finish", 0, "tau");
     const T tau = tin.read().val;
     tin.read();  // R_jj: the collector has it from qr_finish
     FGC_CYCLES("qr_update", U, "tail", 2, 1, 1);
     // The banks are left zero (what qr_stack relies on: it writes only the next step's rows):
-    // column j, no longer read, is zeroed on its active rows (the others are zero), and every
-    // row's entries are zeroed as they go to the collector (row j is no reflection's after j).
-    if (j >= 0 && j % CFG::N_UNITS == U) {
-        const int l = j / CFG::N_UNITS;
-        if (n > 0) {  // the pivot column's active rows (at[0] == j): trip n, II 1, depth 1
-            for (int a = 0; a < n; ++a) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
-#pragma HLS PIPELINE II=1
-                bank[at[a]][l] = T(0);
-            }
-            FGC_CYCLES("qr_update", U, "pivot_column", n, 1, 1);
-        } else {
-            // no reflection: the column's entries are zero but for squares that underflow (see
-            // the arithmetic above), zeroed here too: trip rows - j, II 1, depth 1
-            for (int i = j; i < rows; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
-#pragma HLS PIPELINE II=1
-                bank[i][l] = T(0);
-            }
-            FGC_CYCLES("qr_update", U, "zero_column", rows - j, 1, 1);
-        }
-    }
-    if (next_here) {
-        if (n > 1) {
-            const T scaled = tau * dot0;  // depth Lm
-            FGC_CYCLES("qr_update", U, "scale", 1, 1, CFG::MUL_LAT);
-            // updated and streamed to the Evaluate in one pass over rows j ... rows - 1, the
-            // active rows (sorted) merged in: trip rows - j, II 1, depth Lm + La
-            int a = 0;
-            for (int i = j; i < rows; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
-#pragma HLS PIPELINE II=1
-                T x = bank[i][l0];
-                if (a < n && at[a] == i) {
-                    x -= scaled * v[a];
-                    bank[i][l0] = x;
-                    ++a;
-                }
-                if (i > j) colout.write(x);
-            }
-            FGC_CYCLES("qr_update", U, "axpy_next_column", rows - j, 1,
-                       CFG::MUL_LAT + CFG::ADD_LAT);
-        } else {
-            // one active row: the reflection is x -> -x on the pivot row, exactly (v = 2 sign,
-            // tau = 1/2: x - (tau v x) v = x - 2x), so it is taken as that: 1 cycle
-            if (n == 1) {
-                bank[j][l0] = -bank[j][l0];
-                FGC_CYCLES("qr_update", U, "negate", 1, 1, 1);
-            }
-            // to the Evaluate as it is (no reflection to merge): trip rows - c0, II 1, depth 1
-            for (int i = c0; i < rows; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
-#pragma HLS PIPELINE II=1
-                colout.write(bank[i][l0]);
-            }
-            FGC_CYCLES("qr_update", U, "next_column", rows - c0, 1, 1);
-        }
-        if (j >= 0) {  // row j is final now: its entry in column c0 to the collector, 0 here
-            rowout.write(bank[j][l0]);
-            bank[j][l0] = T(0);
-            FGC_CYCLES("qr_update", U, "row_out", 1, 1, 1);
-        }
-    }
+    // each pivot column was zeroed as it went to the Evaluate (above, one region before its
+    // reflection), and every row's entries are zeroed as they go to the collector (row j is
+    // no reflection's after j).
     // the unit's other columns right of j: local columns lb ... lb + r - 1
     const int lb = next_here ? l0 + 1 : l0;
     const int r = c0 < cols ? (cols - 1 - U) / CFG::N_UNITS - lb + 1 : 0;
@@ -511,14 +455,43 @@ struct qr_update_units<CFG, U, true> {
     }
 };
 
-// Evaluate: column j + 1's Householder vector (if j + 1 < k) from the stream of the unit that
-// holds it, as it arrives: its pivot and non-zero rows into vout ({0, n}, then n words {x_a,
-// row}: v_a = x_a below the pivot) and its squared norm (P interleaved partial sums, folded) with
-// the pivot into hout ({norm2, n}, {x_0, j + 1}), which the next region's qr_finish turns into
-// v_0, tau and R_jj while its broadcast streams the rest. Nothing follows the column's last
-// word but the fold.
+// One word (row i, the t-th of the pass) of column j + 1 after reflection j, in the Evaluate's
+// last pass: row j's entry to the collector, the new pivot and the non-zero rows below it into
+// vout (m words so far), their squares into the partial sums (the partial of iteration t).
+template <class CFG>
+inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typename CFG::T>& exq,
+                         qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1], int& m,
+                         typename CFG::T& pivot, typename CFG::T part[CFG::PARTIALS]) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    const int col = j + 1;
+    if (i == j) exq.write(e);  // row j's entry in column j + 1 to the collector
+    if (i == col) pivot = e;
+    if (i == col || (i > col && e != T(0))) {
+        vout[1 + m].val = e;
+        vout[1 + m].idx = i;
+        ++m;
+    }
+    if (i >= col) part[t % CFG::PARTIALS] += e * e;
+}
+
+// Evaluate: reflection j applied to column j + 1 and that column's Householder vector (if j + 1
+// < k). The column arrives from the unit that holds it as it stood before reflection j (rows j0
+// ... rows - 1, j0 = max(j, 0)), reflection j's vector from the broadcast (evq: {0, n}, the n - 1
+// words below the pivot) and from qr_finish (etq: v_0, tau, R_jj), as the Update units get them.
+// The column's dot product with the vector is taken as the column arrives, folded with the
+// pivot's term once v_0 is there, scaled once tau is; then one pass over the column updates it
+// (x -= tau (v.x) v on the active rows), sends its row j entry to the collector (exq) and keeps
+// its pivot and non-zero rows
+// in vout ({0, n'}, then n' words {x_a, row}: v_a = x_a below the pivot) while summing their
+// squares (P interleaved partial sums, folded) for hout ({norm2, n'}, {x_0, j + 1}), which the
+// next region's qr_finish turns into v_0, tau and R_jj while its broadcast streams the rest.
+// With no reflection to apply (n = 0; n = 1: the pivot row's negation, exact) the column is
+// received and passed on in one pass.
 template <class CFG>
 void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS],
+                 hls::stream<qr_word<typename CFG::T> >& evq,
+                 hls::stream<qr_word<typename CFG::T> >& etq, hls::stream<typename CFG::T>& exq,
                  qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1],
                  qr_word<typename CFG::T> hout[2]) {
     typedef typename CFG::T T;
@@ -526,54 +499,143 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     const int col = j + 1;
     if (col >= k) return;
     const int owner = col % CFG::N_UNITS;
-    // (it reads the column as the owner streams it: the counters' critical path)
-    FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "next_column");
+    const int j0 = j > 0 ? j : 0;
+    T x[CFG::MAX_ROWS];  // the column, rows j0 ... rows - 1
+    T v[CFG::MAX_ROWS];
+    int at[CFG::MAX_ROWS];
+    const int n = evq.read().idx;  // {0, n}
+    const int below = n > 1 ? n - 1 : 0;
+    FGC_CYCLES("qr_evaluate", 0, "header", 1, 1, 1);
     T part[P];
 #pragma HLS ARRAY_PARTITION variable=part complete
     for (int t = 0; t < P; ++t) {
 #pragma HLS UNROLL
         part[t] = T(0);
     }
-    int n = 0;
+    int m = 0;
     T pivot = T(0);
-    // receive the column, keep the pivot and the non-zero rows, sum the squares:
-    // trip rows - col, II 1, depth Lm + La
-    for (int i = col; i < rows; ++i) {
+    if (n <= 1) {
+        // nothing to apply but, with one active row, the pivot row's negation (exact): the
+        // column received, row j's entry sent, the vector kept and its squares summed in one
+        // pass: trip rows - j0, II 1, depth Lm + La
+        FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "vector_column");
+        FGC_WAIT("qr_evaluate", 0, "qr_broadcast", 0, "vector");
+        for (int t = 0; t < rows - j0; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-        T e = T(0);
-        for (int u = 0; u < CFG::N_UNITS; ++u) {
+            T e = T(0);
+            for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
-            if (u == owner) e = colq[u].read();
+                if (u == owner) e = colq[u].read();
+            }
+            const int i = j0 + t;
+            qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, exq, vout, m, pivot, part);
         }
-        if (i == col) pivot = e;
-        if (i == col || e != T(0)) {
-            vout[1 + n].val = e;
-            vout[1 + n].idx = i;
-            ++n;
+        FGC_CYCLES("qr_evaluate", 0, "receive_norm", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+    } else {
+        // receive the column, and reflection j's vector below the pivot (its rows ascending,
+        // each at or after the column word of its row), v.x over it (the partial of iteration
+        // t, met again P >= La iterations later): trip rows - j0, II 1, depth Lm + La
+        // (it reads the column and the vector as they are streamed: the counters' critical path)
+        FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "vector_column");
+        FGC_WAIT("qr_evaluate", 0, "qr_broadcast", 0, "vector");
+        int a = 1;
+        qr_word<T> next;
+        next.val = T(0);
+        next.idx = -1;
+        for (int t = 0; t < rows - j0; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
+            T e = T(0);
+            for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+                if (u == owner) e = colq[u].read();
+            }
+            x[t] = e;
+            // the next word below the pivot
+            if (a <= below && next.idx < j0 + t) next = evq.read();
+            if (a <= below && next.idx == j0 + t) {
+                v[a] = next.val;
+                at[a] = next.idx;
+                ++a;
+                part[t % P] += next.val * e;
+            }
         }
-        part[(i - col) % P] += e * e;
+        FGC_CYCLES("qr_evaluate", 0, "receive_dot", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+        // v_0 (qr_finish waits for the square root): its term is one more leaf of the fold's tree
+        FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "v0");
+        v[0] = etq.read().val;
+        T leaves[P + 1];
+#pragma HLS ARRAY_PARTITION variable=leaves complete
+        for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+            leaves[t] = part[t];
+            part[t] = T(0);
+        }
+        leaves[P] = v[0] * x[0];  // depth Lm
+        FGC_CYCLES("qr_evaluate", 0, "pivot_term", 1, 1, CFG::MUL_LAT);
+        const T dot = fold_partials<T, P + 1>(leaves);  // depth La ceil(log2 (P + 1))
+        FGC_CYCLES("qr_evaluate", 0, "fold_dot", 1, 1, CFG::ADD_LAT * ceil_log2(P + 1));
+        // tau and R_jj (the collector has R_jj from qr_finish)
+        FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "tau");
+        const T tau = etq.read().val;
+        etq.read();
+        FGC_CYCLES("qr_evaluate", 0, "tail", 2, 1, 1);
+        const T scaled = tau * dot;  // depth Lm
+        FGC_CYCLES("qr_evaluate", 0, "scale", 1, 1, CFG::MUL_LAT);
+        // the update, row j's entry to the collector, the vector kept and its squares summed:
+        // trip rows - j0, II 1, depth 2 (Lm + La) (the multiply-add, then the square into its sum)
+        int b = 1;
+        for (int t = 0; t < rows - j0; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
+            const int i = j0 + t;
+            // the active row's vector word (the pivot's v_0, or the next below it): one
+            // multiply-add for both
+            T vw = v[0];
+            bool on = i == j;
+            if (!on && b <= below && at[b] == i) {
+                vw = v[b];
+                on = true;
+                ++b;
+            }
+            const T e = on ? T(x[t] - scaled * vw) : x[t];
+            qr_next_word<CFG>(i, j, t, e, exq, vout, m, pivot, part);
+        }
+        FGC_CYCLES("qr_evaluate", 0, "axpy_norm", rows - j0, 1,
+                   2 * (CFG::MUL_LAT + CFG::ADD_LAT));
     }
-    FGC_CYCLES("qr_evaluate", 0, "receive_norm", rows - col, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     const T norm2 = fold_partials<T, P>(part);  // depth La ceil(log2 P)
     FGC_CYCLES("qr_evaluate", 0, "fold", 1, 1, CFG::ADD_LAT * ceil_log2(P));
-    // nothing to reflect (every entry 0, or too small to square): n = 0
-    if (!(norm2 > T(0))) n = 0;
+    if (n <= 1) {  // qr_finish's words, not needed here (v_0, tau, R_jj)
+        FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "v0");
+        etq.read();
+        FGC_CYCLES("qr_evaluate", 0, "pivot_word", 1, 1, 1);
+        FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "tau");
+        etq.read();
+        etq.read();
+        FGC_CYCLES("qr_evaluate", 0, "tail", 2, 1, 1);
+    }
+    // nothing to reflect (every entry 0, or too small to square): n' = 0
+    if (!(norm2 > T(0))) m = 0;
     vout[0].val = T(0);
-    vout[0].idx = n;
+    vout[0].idx = m;
     hout[0].val = norm2;
-    hout[0].idx = n;
+    hout[0].idx = m;
     hout[1].val = pivot;
     hout[1].idx = col;
 }
 
-// The collector: row j of R, final after reflection j (R_jj from qr_finish, the rest from the
-// Update units in column order), into cond (j < f) or update (f <= j < f + nf), and its largest
-// magnitude into the running scale (a function argument read before it is written).
+// The collector: row j of R, final after reflection j (R_jj from qr_finish, the next pivot
+// column's entry from the Evaluate, the rest from the Update units in column order), into cond
+// (j < f) or update (f <= j < f + nf), and its largest magnitude into the running scale (a
+// function argument read before it is written).
 template <class CFG>
 void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::T>& rq,
-                hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
+                hls::stream<typename CFG::T>& exq, hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
                 typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale) {
     typedef typename CFG::T T;
@@ -594,6 +656,8 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
         T x = T(0);
         if (c == j) {
             x = diag;
+        } else if (c == j + 1 && j + 1 < k) {
+            x = exq.read();  // the next pivot column's: the Evaluate updated it
         } else if (c > j) {
             for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
@@ -634,17 +698,28 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
 #pragma HLS STREAM variable=colq depth=CFG::MAX_ROWS
     hls::stream<typename CFG::T> rowq[CFG::N_UNITS];
 #pragma HLS STREAM variable=rowq depth=CFG::LOCAL_COLS
+    // the Evaluate's copy of the vector: it takes a word when the column reaches its row, so
+    // its stream holds the whole vector and never holds up the broadcast (nor the units)
+    hls::stream<qr_word<typename CFG::T> > evq;
+#pragma HLS STREAM variable=evq depth=CFG::MAX_ROWS
+    hls::stream<qr_word<typename CFG::T> > etq;
+#pragma HLS STREAM variable=etq depth=3
+    hls::stream<typename CFG::T> exq;
+#pragma HLS STREAM variable=exq depth=2
     FGC_REGION("qr_reflection");
-    qr_broadcast<CFG>(vin, vq);
-    qr_finish<CFG>(hin, tq, rq);
+    qr_broadcast<CFG>(vin, j, k, vq, evq);
+    qr_finish<CFG>(hin, k, tq, etq, rq);
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
-    qr_evaluate<CFG>(j, rows, k, colq, vout, hout);
-    qr_collect<CFG>(j, rows, f, s, k, rq, rowq, cond, update, scale);
+    qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout);
+    qr_collect<CFG>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
     FGC_DRAINED(tq, CFG::N_UNITS);
     FGC_DRAINED(colq, CFG::N_UNITS);
     FGC_DRAINED(rowq, CFG::N_UNITS);
     FGC_DRAINED(&rq, 1);
+    FGC_DRAINED(&evq, 1);
+    FGC_DRAINED(&etq, 1);
+    FGC_DRAINED(&exq, 1);
 }
 
 // ---- the step ---------------------------------------------------------------------------------

@@ -28,8 +28,10 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     side, dense, is added here); a structural non-zero is taken as non-zero in value. Returns one
     ``Loop`` (trip 1) per DATAFLOW region ``qr_reflection`` j = -1 ... k - 1 (k = min(rows,
     w + 1)), whose depth is the region's cycles (slowest process plus the others' fill, and no
-    less than the Evaluate's end, which reads its column as the Update unit streams it: the same
-    loops and rule as the header's FGC_CYCLES / FGC_WAIT counters), then the pivot check.
+    less than the Evaluate's end, which reads its column as the Update unit streams it and the
+    vector as the broadcast does, then waits for v_0 and tau: the same loops and rule as the
+    header's FGC_CYCLES / FGC_WAIT counters), then the pivot check. The Evaluate applies
+    reflection j to the next pivot column, so its unit does no more than the others.
     ``partials`` is the header's CFG::PARTIALS (default: the adder latency, II 1).
     """
     la, lm, ld, ls = ops.add.latency, ops.mul.latency, ops.div.latency, ops.sqrt.latency
@@ -62,38 +64,22 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                  [Loop("read", 2, 1, 1), Loop("v0", 1, 1, ls + la if n else 1),
                   Loop("tau", 1, 1, lm + ld if n else 1)]]
         waits = []
+        col = j + 1
         for u in range(units):
             # the unit's first column right of j; the next pivot column if it is j + 1 < k
             c0 = j + 1 + (u - (j + 1)) % units
             next_here = c0 == j + 1 and c0 < k
-            fused = n > 1 and next_here
-            # the n - 1 words below the pivot (the next pivot column's dot over them), then v_0
-            # (waiting for qr_finish's square root: its term is one more leaf of the fold's
-            # tree), then tau and R_jj (waiting for qr_finish's divide)
+            # the n - 1 words below the pivot (the unit holding the next pivot column streams
+            # that column to the Evaluate meanwhile, rows max(j, 0) ... rows - 1), then v_0
+            # (waiting for qr_finish's square root), then tau and R_jj (its divide)
             below = max(n - 1, 0)
             loops = [Loop("header", 1, 1, 1),
-                     Loop("vector_dot", below, 1, lm + la) if fused else
+                     Loop("vector_column", rows - max(j, 0), 1, 2) if next_here else
                      Loop("vector", below, 1, 1)]
             waits.append((len(procs), len(loops), 1, "v0"))
-            if fused:
-                loops += [Loop("pivot_term", 1, 1, lm), Loop("fold", 1, 1, la * tree1)]
-            else:
-                loops.append(Loop("pivot_word", 1, 1, 1))
+            loops.append(Loop("pivot_word", 1, 1, 1))
             waits.append((len(procs), len(loops), 1, "tau"))
             loops.append(Loop("tail", 2, 1, 1))
-            if j >= 0 and j % units == u:  # the pivot column zeroed (fgc_qr.h: banks left 0)
-                loops.append(Loop("pivot_column", n, 1, 1) if n > 0 else
-                             Loop("zero_column", rows - j, 1, 1))
-            if next_here:  # updated and streamed to the Evaluate first
-                if n > 1:
-                    loops += [Loop("scale", 1, 1, lm),
-                              Loop("axpy_next_column", rows - j, 1, lm + la)]
-                else:
-                    if n == 1:
-                        loops.append(Loop("negate", 1, 1, 1))
-                    loops.append(Loop("next_column", rows - c0, 1, 1))
-                if j >= 0:
-                    loops.append(Loop("row_out", 1, 1, 1))
             # the unit's other columns right of j, through the flattened loops
             lb = c0 // units + (1 if next_here else 0)
             r = (cols - 1 - u) // units - lb + 1 if c0 < cols else 0
@@ -106,13 +92,28 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             elif r > 0 and j >= 0:
                 loops.append(Loop("negate_rows" if n == 1 else "rows_out", r, 1, 1))
             procs.append(loops)
-        col = j + 1
         if col < k:
-            # the Evaluate starts when the unit holding the column streams it; the squares are
-            # summed as the column arrives, then folded (the tail is the next region's qr_finish)
-            waits.append((len(procs), 0, 2 + col % units, "next_column"))
-            procs.append([Loop("receive_norm", rows - col, 1, lm + la),
-                          Loop("fold", 1, 1, la * tree)])
+            # the Evaluate: the column as its unit streams it and the vector as the broadcast
+            # does (v.x as they arrive), the pivot's term once v_0 is there, the scale once tau
+            # is, then one pass that updates the column, sends row j's entry to the collector
+            # and sums the next vector's squares, and their fold (the tail is the next
+            # region's qr_finish); with no reflection to apply (n <= 1) one pass, the fold,
+            # then qr_finish's words
+            e = len(procs)
+            span = rows - max(j, 0)
+            waits += [(e, 1, 2 + col % units, "vector_column"), (e, 1, 0, "vector")]
+            if n > 1:
+                waits += [(e, 2, 1, "v0"), (e, 4, 1, "tau")]
+                procs.append([Loop("header", 1, 1, 1), Loop("receive_dot", span, 1, lm + la),
+                              Loop("pivot_term", 1, 1, lm), Loop("fold_dot", 1, 1, la * tree1),
+                              Loop("tail", 2, 1, 1), Loop("scale", 1, 1, lm),
+                              Loop("axpy_norm", span, 1, 2 * (lm + la)),
+                              Loop("fold", 1, 1, la * tree)])
+            else:
+                waits += [(e, 3, 1, "v0"), (e, 4, 1, "tau")]
+                procs.append([Loop("header", 1, 1, 1), Loop("receive_norm", span, 1, lm + la),
+                              Loop("fold", 1, 1, la * tree), Loop("pivot_word", 1, 1, 1),
+                              Loop("tail", 2, 1, 1)])
         # the collector: row j of R out (cond / update) and the running scale
         first = 0 if j < frontal else frontal  # rows out with their zeros left of the diagonal
         procs.append([Loop("header", 1, 1, 1)]
@@ -132,17 +133,17 @@ def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[Bound
     one instance (its ALLOCATION function limit=1), so each unit is one RTL copy.
     ``partials``: CFG::PARTIALS."""
     p = partials
-    evaluate = (BoundLoop("receive_norm", (("add", 1), ("mul", 1)), 1),
+    evaluate = (BoundLoop("receive_dot", (("add", 1), ("mul", 1)), 1),
+                BoundLoop("receive_norm", (("add", 1), ("mul", 1)), 1),
+                BoundLoop("axpy_norm", (("add", 2), ("mul", 2)), 1),
                 BoundLoop("fold", (("add", p - 1),), 0),  # fold_partials<P>, sequential
+                # the next pivot column's fold (fold_partials<P + 1>), its pivot term and scale
+                BoundLoop("fold_dot", (("add", p),), 0),
+                BoundLoop("pivot_term_scale", (("mul", 2),), 0),
                 BoundLoop("qr_finish", (("add", 2), ("mul", 1), ("div", 1), ("sqrt", 1)), 0),
                 # qr_pivot_check's threshold SINGULAR_EPS * scale, before its loop
                 BoundLoop("pivot_check", (("mul", 1),), 0))
-    update = (BoundLoop("vector_dot", (("add", 1), ("mul", 1)), 1),
-              BoundLoop("axpy_next_column", (("add", 1), ("mul", 1)), 1),
-              BoundLoop("dot_axpy", (("add", p + 1), ("mul", 3)), 1),
-              # the next pivot column's fold (fold_partials<P + 1>), its pivot term and scale
-              BoundLoop("fold_scale_next", (("add", p),), 0),
-              BoundLoop("pivot_term_scale", (("mul", 2),), 0))
+    update = (BoundLoop("dot_axpy", (("add", p + 1), ("mul", 3)), 1),)
     return evaluate, update
 
 
@@ -222,9 +223,10 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
         # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
         # the vector below the pivot to each Update unit while qr_finish computes v_0, tau and
         # R_jj from the norm and the pivot and streams them to each unit (R_jj also to collect);
-        # each unit streams the next column (its owner's) to Evaluate and its entries of R's
-        # row to collect; Evaluate writes one of the vector's and one of the norm's two
-        # buffers, which the next region's broadcast and qr_finish read
+        # the unit holding the next column streams it to Evaluate (which applies the
+        # reflection to it), each unit its entries of R's row to collect; Evaluate writes one
+        # of the vector's and one of the norm's two buffers, which the next region's broadcast
+        # and qr_finish read
         channels = ctx.channels
         for u in range(opts.units):
             channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
@@ -239,6 +241,14 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
                                     f"qr{s}_update{u}", f"qr{s}_evaluate"))
             channels.append(Channel(f"qr{s}_row{u}", "stream", 2, ops.word_bits,
                                     f"qr{s}_update{u}", f"qr{s}_collect"))
+        # the Evaluate's copies of the vector (the whole vector: it takes a word when the
+        # column reaches its row) and of v_0, tau, R_jj, and its entry of row j to collect
+        channels.append(Channel(f"qr{s}_ve", "stream", max_rows, ops.word_bits + 32,
+                                f"qr{s}_broadcast", f"qr{s}_evaluate"))
+        channels.append(Channel(f"qr{s}_te", "stream", 3, ops.word_bits + 32,
+                                f"qr{s}_finish", f"qr{s}_evaluate"))
+        channels.append(Channel(f"qr{s}_e", "stream", 2, ops.word_bits,
+                                f"qr{s}_evaluate", f"qr{s}_collect"))
         channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 1, ops.word_bits + 32,
                                 f"qr{s}_evaluate", f"qr{s}_broadcast"))
         channels.append(Channel(f"qr{s}_hbuf", "pingpong", 2, ops.word_bits + 32,

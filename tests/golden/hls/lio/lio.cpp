@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's by columns (the loader streaming COND to a process per end of the chain,
 // the state update fed by both):
-//   21 processes, 40 streams (n_u=4, 2 unit set(s))
+//   21 processes, 46 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -49,6 +49,9 @@
 //   stream qr0_row2 depth=2: qr0_update2 -> qr0_collect
 //   stream qr0_col3 depth=87: qr0_update3 -> qr0_evaluate
 //   stream qr0_row3 depth=2: qr0_update3 -> qr0_collect
+//   stream qr0_ve depth=87: qr0_broadcast -> qr0_evaluate
+//   stream qr0_te depth=3: qr0_finish -> qr0_evaluate
+//   stream qr0_e depth=2: qr0_evaluate -> qr0_collect
 //   stream qr1_v0 depth=8: qr1_broadcast -> qr1_update0
 //   stream qr1_v1 depth=8: qr1_broadcast -> qr1_update1
 //   stream qr1_v2 depth=8: qr1_broadcast -> qr1_update2
@@ -66,6 +69,9 @@
 //   stream qr1_row2 depth=2: qr1_update2 -> qr1_collect
 //   stream qr1_col3 depth=87: qr1_update3 -> qr1_evaluate
 //   stream qr1_row3 depth=2: qr1_update3 -> qr1_collect
+//   stream qr1_ve depth=87: qr1_broadcast -> qr1_evaluate
+//   stream qr1_te depth=3: qr1_finish -> qr1_evaluate
+//   stream qr1_e depth=2: qr1_evaluate -> qr1_collect
 //   stream backsub_groups0 depth=97: backsub_loader -> backsub_end0
 //   stream backsub_dx0 depth=39: backsub_end0 -> backsub_retire
 //   stream backsub_groups1 depth=100: backsub_loader -> backsub_end1

@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's by columns (the loader streaming COND to a process per end of the chain,
 // the state update fed by both):
-//   13 processes, 23 streams (n_u=4, 1 unit set(s))
+//   13 processes, 26 streams (n_u=4, 1 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -41,6 +41,9 @@
 //   stream qr0_row2 depth=2: qr0_update2 -> qr0_collect
 //   stream qr0_col3 depth=54: qr0_update3 -> qr0_evaluate
 //   stream qr0_row3 depth=2: qr0_update3 -> qr0_collect
+//   stream qr0_ve depth=54: qr0_broadcast -> qr0_evaluate
+//   stream qr0_te depth=3: qr0_finish -> qr0_evaluate
+//   stream qr0_e depth=2: qr0_evaluate -> qr0_collect
 //   stream backsub_groups0 depth=21: backsub_loader -> backsub_end0
 //   stream backsub_dx0 depth=12: backsub_end0 -> backsub_retire
 //   stream backsub_groups1 depth=2: backsub_loader -> backsub_end1
