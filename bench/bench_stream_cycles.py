@@ -137,8 +137,9 @@ def main() -> None:
               "update left them stale, the words out; not part of the update):")
         print(f"{'keyframe':>8} {'csim cycles':>12} {'model cycles':>12} {'csim/model':>10}")
         for (record, _, _), (cycles, price) in zip(rows, stream.estimate_rows, strict=True):
-            print(f"{record['keyframe']:>8} {cycles:>12,} {price.cycles:>12,} "
-                  f"{cycles / price.cycles:>10.3f}")
+            # (nothing kept yet: no copy, no walk, no words: 0 cycles both)
+            ratio = f"{cycles / price.cycles:>10.3f}" if price.cycles else f"{'-':>10}"
+            print(f"{record['keyframe']:>8} {cycles:>12,} {price.cycles:>12,} {ratio}")
     native = (IncrementalStream(graph, program) if args.incremental
               else FixedLagStream(graph, program, args.window)).run(data)
     worst = 0.0

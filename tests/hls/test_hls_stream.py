@@ -426,12 +426,11 @@ def test_the_plan_prices_every_copy_of_the_stream_design(emitted_stream):
 
 @pytest.mark.heavy
 def test_a_call_site_without_a_price_fails_the_stream_check(emitted_stream):
-    """The check above can fail: a second call of the marginal / kept region planted in the
-    stream top is a second copy of the marginal's QR set and the kept net's datapaths that the
-    plan does not price, and the stream section then reads above its plan."""
+    """The check above can fail: a second call of the window / kept region planted in the
+    stream top is a second copy of LM's units and the kept net's datapaths that the plan does
+    not price, and the stream section then reads above its plan."""
     files, top, model = emitted_stream
-    call = ("marginal_and_kept<CFG>(update && !batch ? m : -1, finite, reuse, lin01, reexp, "
-            "walk, x0, code);")
+    call = "window_and_kept<CFG>(mode, mc, lin01, errors, info, result, reexp, walk, x0);"
     planted = [(k, t.replace(call, call + "\n        " + call)) if k == "fgc_stream.h" else (k, t)
                for k, t in files]
     assert planted != files

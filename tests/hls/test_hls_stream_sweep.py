@@ -104,7 +104,11 @@ def test_the_model_prices_the_batch_step_as_the_sweep(sweep7):
     assert {"sweep_gather", "sweep_in", "sweep_linearize", "sweep_marginal", "sweep_keep",
             "qr", "kept_walk", "marginal"} <= names
     assert not any(n.startswith("batch_") for n in names)
-    assert "kept_reexpress" not in names  # the sweep's conditionals hold its points
+    # the sweep's conditionals hold its points: it re-expresses none of its own and leaves
+    # none pending; its pass -1 runs the one keyframe 3's update left, before the walk
+    assert [t.name for t in prices[4].terms].count("kept_reexpress") == 1
+    assert model.leaves_pending(3) and not model.leaves_pending(4)
+    assert "kept_reexpress" not in {t.name for t in prices[5].terms}
     assert prices[4].term("sweep_keep").times == 2  # keyframes 0 and 1 leave on the way
     assert all("sweep_store" in {t.name for t in p.terms} for p in prices)
     res = model.resources()
@@ -129,7 +133,9 @@ def test_the_sweep_walks_the_stale_kept_estimates_it_starts_from(sweep7):
     asked = model.price(4, 1, dict(model.events_of(1, status="max_iterations"), kept_walk=0))
     base, each = (model.stream[k] for k in ("stream_kept_walk_base", "stream_kept_walk_each"))
     assert walked.term("kept_walk").each == base + 1 * each  # keyframe 0 from keyframe 1
-    assert walked.cycles - asked.cycles == base + each + model.stream["stream_kept_slot0"]
+    # asked for after keyframe 3: op 3 ran keyframe 3's pending re-expression and the walk
+    assert walked.cycles - asked.cycles == (model.stream["stream_kept_reexpress"] + base + each
+                                            + model.stream["stream_kept_slot0"])
 
 
 def _broken(sweep7, tmp_path, old: str, new: str):

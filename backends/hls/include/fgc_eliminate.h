@@ -14,8 +14,9 @@
 //             bool qr_eliminate_all<CFG, SETS>(mu)  every step, level by level: a level's
 //             steps go CFG::UNIT_SETS at a time to the unit sets (stacked, the sets'
 //             DATAFLOW region, committed); false if rank deficient.
-//             bool qr_eliminate_leaf<CFG, SETS>(s)  step s once more at mu = 0 on unit set 0
-//             (the on-chip window's marginalisation); false if rank deficient.
+//             qr_eliminate_all<CFG, SETS>(0, s)  step s alone once more at mu = 0 on unit
+//             set 0 (the on-chip window's marginalisation: the same sets and region, one
+//             instance with LM's solve); false if rank deficient.
 //
 // The unit-set wiring stays the kernel's (it depends on the number of unit sets: each set its
 // own memories and RTL instance): SETS holds its hooks, static functions the kernel defines
@@ -24,7 +25,6 @@
 //   SETS::level(has, s, bad)     the qr_level region: set u takes step s[u] where has[u]
 //                                (else none), bad[u] set if rank deficient
 //   SETS::commit(u, s)           qr_commit<CFG>(s, CONDBUF<u>, UPDBUF<u>)
-//   SETS::leaf(s, bad)           (qr_eliminate_leaf only) step s on unit set 0 alone, qr_set0
 //
 // Included by the kernel inside its namespace (fgc::, or fgc::les for the mixed design), after
 // its schedule tables and memories, which these functions name: STEP_W, STEP_F, STEP_ROWS,
@@ -623,17 +623,28 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
 
 // Eliminate every step, level by level: a level's steps are independent, the unit sets take
 // them CFG::UNIT_SETS at a time (stack each, the sets' DATAFLOW region, commit each). False if
-// rank deficient.
+// rank deficient. leaf >= 0 (the on-chip window's marginalisation): step leaf alone, once
+// more at mu = 0 (no damping rows, no square root), on unit set 0 (the other sets idle) - one
+// "level" of one step through the same stack, region and commit, so the marginal's step is
+// LM's unit set 0, not a copy of it.
 template <class CFG, class SETS>
-bool qr_eliminate_all(typename CFG::T mu) {
+bool qr_eliminate_all(typename CFG::T mu, int leaf = -1) {
     typedef typename CFG::T T;
-    FGC_EVENT("solve");
-    FGC_PHASE("qr_stack");
-    const T root_mu = fgc_sqrt(mu);
-    FGC_CYCLES("stack", 0, "root_mu", 1, CFG::ROOT_II, CFG::ROOT_DEPTH);
+    const bool one = leaf >= 0;
+    T root_mu = T(0);
+    if (one) {
+        FGC_EVENT("marginal_solve");
+    } else {
+        FGC_EVENT("solve");
+        FGC_PHASE("qr_stack");
+        root_mu = fgc_sqrt(mu);
+        FGC_CYCLES("stack", 0, "root_mu", 1, CFG::ROOT_II, CFG::ROOT_DEPTH);
+    }
     bool ok = true;
-    for (int l = 0; l < N_LEVELS; ++l) {
-        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += CFG::UNIT_SETS) {
+    for (int l = 0; l < (one ? 1 : N_LEVELS); ++l) {
+#pragma HLS LOOP_TRIPCOUNT max=N_LEVELS
+        const int begin = one ? 0 : LEVEL_BEGIN[l], end = one ? 1 : LEVEL_BEGIN[l + 1];
+        for (int i = begin; i < end; i += CFG::UNIT_SETS) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_LEVEL_WIDTH
             bool has[CFG::UNIT_SETS], bad[CFG::UNIT_SETS];
             int s[CFG::UNIT_SETS];
@@ -642,8 +653,8 @@ bool qr_eliminate_all(typename CFG::T mu) {
 #pragma HLS ARRAY_PARTITION variable=s complete
             for (int u = 0; u < CFG::UNIT_SETS; ++u) {  // set by set, as the sets' banks fill
 #pragma HLS UNROLL
-                has[u] = i + u < LEVEL_BEGIN[l + 1];
-                s[u] = has[u] ? LEVEL_STEPS[i + u] : 0;
+                has[u] = i + u < end;
+                s[u] = !has[u] ? 0 : one ? leaf : LEVEL_STEPS[i + u];
                 if (has[u]) SETS::stack(u, s[u], root_mu);
                 bad[u] = false;
             }
@@ -660,22 +671,6 @@ bool qr_eliminate_all(typename CFG::T mu) {
         }
     }
     return ok;
-}
-
-// The on-chip window's marginalisation: step s (slot 0's) once more, at mu = 0, on unit set 0
-// (the other sets idle); its conditional and the new factor it passes on into COND and NF.
-// False if rank deficient.
-template <class CFG, class SETS>
-bool qr_eliminate_leaf(int s) {
-    typedef typename CFG::T T;
-    FGC_EVENT("marginal_solve");
-    SETS::stack(0, s, T(0));
-    bool bad = false;
-    FGC_PHASE("qr");
-    SETS::leaf(s, &bad);  // unit set 0 alone (its copy: the other sets are not instantiated)
-    FGC_JOIN();
-    SETS::commit(0, s);
-    return !bad;
 }
 #endif  // FGC_ELIMINATE_QR
 

@@ -456,18 +456,15 @@ class WindowUpdateModel:
 
     def stream_units(self) -> tuple[Unit, ...]:
         """The operators the stream section's own code instantiates (fgc_stream.h, every call
-        site its own RTL copy unless an ALLOCATION shares it), names prefixed ``stream_``: the
-        marginal's QR step on its own copy of unit set 0 (SETS::leaf: it runs beside the kept
-        net's task, not in LM's module), write_tau per call site (the marginal's, a batch
-        step's), the kept net's task (reexpress and kept_walk INLINE: one Log and one retraction
-        datapath, one matrix-vector product, its loops). The window kernel's functions the
-        stream calls again after LM (linearize_all, eliminate_all, total_cost) share LM's
-        instance (stream_call's and batch_kernel_solve's ALLOCATION): no unit here."""
+        site its own RTL copy unless an ALLOCATION shares it), names prefixed ``stream_``:
+        write_tau per call site (the marginal's, a batch step's), the kept net's task
+        (reexpress and kept_walk INLINE: one Log and one retraction datapath, one
+        matrix-vector product, its loops). The window kernel's functions the stream calls
+        again after LM (linearize_all, eliminate_all, back_substitute_at) share LM's instance
+        (window_task's and batch_kernel_solve's ALLOCATION): no unit here - the marginal's QR
+        step too, eliminate_all's on unit set 0 (fgc_eliminate.h's qr_eliminate_all with a
+        leaf)."""
         lay, units = self.layout, []
-        if self.layout_marginal:
-            units += [replace(u, name=f"stream_marginal_{u.name}", role=f"the marginal's copy: "
-                              f"{u.role}") for u in self.plan.units
-                      if u.name.startswith("qr0_") and not u.name.endswith("_backsub")]
         tau_sites = int(bool(self.layout_marginal)) + int(self.batch is not None)
         if tau_sites:
             units.append(Unit("stream_write_tau", "tau signed, its mean and words (per call "
@@ -534,9 +531,8 @@ class WindowUpdateModel:
     def duplicated(self) -> dict:
         """What the design holds twice (model estimates, DSP by the plan): per unit kind (the
         factor datapaths, the gradient, the QR units, back-substitution, the state update, LM
-        control) its DSP in the window kernel and in the batch kernel, which never run at once;
-        and the stream section's own copy of unit set 0 for the marginal. Empty without a batch
-        kernel."""
+        control) its DSP in the window kernel and in the batch kernel, which never run at once.
+        Empty without a batch kernel."""
         if self.batch is None:
             return {}
         units = self.resources()["units"]
@@ -552,10 +548,6 @@ class WindowUpdateModel:
         for part in ("window kernel", "batch kernel"):
             for name, d in units[part].items():
                 out.setdefault(kind(name), {"window kernel": 0, "batch kernel": 0})[part] += d
-        marginal = sum(d for name, d in units["stream section"].items()
-                       if name.startswith("stream_marginal_"))
-        if marginal:
-            out["QR units"]["stream section (the marginal's copy)"] = marginal
         return out
 
     def stale_after(self, keyframe: int) -> bool:
@@ -578,6 +570,33 @@ class WindowUpdateModel:
             return bool(events.get("kept_walk", 0))
         return self.stale_after(keyframe - 1)
 
+    def leaves_pending(self, keyframe: int) -> bool:
+        """Whether keyframe ``keyframe``'s update leaves the newest kept conditional's
+        re-expression pending for the next call's region (fgc_stream.h's KEPT_PENDING): an
+        incremental update with kept keyframes; not a batch step (a sweep's conditionals hold its
+        points, the batch kernel rebuilds the kept net)."""
+        lay = self.layout
+        if not lay.kept or keyframe - lay.window <= 0:
+            return False
+        if lay.sweep is not None and keyframe in lay.sweep:
+            return False
+        return self.batch is None or keyframe not in self.batch["layout"].keyframes
+
+    def _pending(self, keyframe: int, events: dict | None) -> bool:
+        """Whether the call at ``keyframe`` runs a re-expression the update before left pending:
+        counted (the ``kept_reexpress`` event) where its ``events`` are given, else when the
+        update before left one (no estimates asked for between them: op 3 would have run
+        it)."""
+        if events is not None:
+            return bool(events.get("kept_reexpress", 0))
+        return self.leaves_pending(keyframe - 1)
+
+    def _pending_term(self) -> Term:
+        return Term("kept_reexpress", self.stream["stream_kept_reexpress"], 1, False,
+                    "the newest kept conditional's re-expression the update before left pending "
+                    "(at its parent's estimate then): Log, its central-difference Jacobian (four "
+                    "datapath passes per direction of a non-vector variable), S·Log and S·J")
+
     def _walk_term(self, first: int, parent: str) -> Term:
         st = self.stream
         return Term("kept_walk", st["stream_kept_walk_base"] + first * st["stream_kept_walk_each"],
@@ -593,10 +612,13 @@ class WindowUpdateModel:
         first = max(0, keyframe - lay.window) if keyframe >= 0 else 0
         walk = (events.get("kept_walk", 0) if events is not None
                 else int(self.stale_after(keyframe)))
-        terms = [Term("kept_slot0", st["stream_kept_slot0"], 1, False,
-                      "slot 0's estimate copied out of X: the walk's first parent")]
+        pending = (events.get("kept_reexpress", 0) if events is not None
+                   else self.leaves_pending(keyframe))
+        terms = [self._pending_term()] if pending else []
         if walk and first:
-            terms.append(self._walk_term(first, "slot 0"))
+            terms += [Term("kept_slot0", st["stream_kept_slot0"], 1, False,
+                           "slot 0's estimate copied out of X: the walk's first parent"),
+                      self._walk_term(first, "slot 0")]
         if first:
             terms.append(Term("x_kept_out", first * lay.kf_words + 1, 1, False,
                               "the kept keyframes' estimates out, a word a cycle"))
@@ -628,8 +650,8 @@ class WindowUpdateModel:
         terms += [Term("sweep_linearize", linearize, len(steps), False,
                        "a sweep pass with the window full: the window linearised at the "
                        "estimates (LM's instance)"),
-                  Term("sweep_points", st["stream_lin_points"] + st["stream_kept_slot0"],
-                       len(steps), False, "slots 0 and 1, and slot 0 for the kept task, copied"),
+                  Term("sweep_points", st["stream_lin_points"], len(steps), False,
+                       "slots 0 and 1 copied"),
                   Term("sweep_marginal", marginal, 1, False,
                        f"keyframes 0 … {j - w - 1} leave: slot 0's QR step at μ = 0 on unit set "
                        "0, τ's signs, mean and words (the marginal's region, its kept task "
@@ -730,6 +752,8 @@ class WindowUpdateModel:
                 # the sweep starts from the kept estimates: walked first (pass -1) when the
                 # update before left them stale (counted: the kept_walk event)
                 walk = self._walks_first(keyframe, ev if events is not None else None)
+                if self._pending(keyframe, ev if events is not None else None):
+                    terms.append(self._pending_term())  # pass -1, before its walk
                 if walk and first > 1:
                     terms += [Term("kept_walk_parent", st["stream_kept_slot0"], 1, False,
                                    "the leaving keyframe's estimate copied out of the kept "
@@ -750,17 +774,22 @@ class WindowUpdateModel:
                     # update before left them stale (counted: the kept_walk event)
                     first = max(0, keyframe - lay.window)
                     walk = self._walks_first(keyframe, ev if events is not None else None)
-                    terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
-                                      "the leaving keyframe's estimate copied out of the kept "
-                                      "memory: the walk's first parent"))
+                    if self._pending(keyframe, ev if events is not None else None):
+                        terms.append(self._pending_term())  # pass -1, before its walk
                     if walk and first > 1:
-                        terms.append(self._walk_term(first - 1, "the leaving keyframe"))
+                        terms += [Term("kept_slot0", st["stream_kept_slot0"], 1, False,
+                                       "the leaving keyframe's estimate copied out of the kept "
+                                       "memory: the walk's first parent"),
+                                  self._walk_term(first - 1, "the leaving keyframe")]
                 terms += self._batch_terms(keyframe, ev)
                 terms.append(Term("x_out", st["stream_x_out"], 1, False,
                                   "the window's storage out"))
                 return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
                                    tuple(terms), STREAM_SOURCE)
         zero, unit = self.zero_factors(keyframe), lay.unit_factors(keyframe)
+        # the window's process of the update's region (fgc_stream.h's window_task): the solve,
+        # the relinearisation, the marginal; lin_points is copied before the region
+        window = []
         for g in sorted(self.group):
             trigger = PHASE_TRIGGER.get(g)
             if trigger is None:
@@ -768,65 +797,58 @@ class WindowUpdateModel:
             times = ev.get(trigger, 0)
             each = self.qr_cycles(zero, True, unit=unit) if g == "qr" else self.group[g]
             if times:
-                terms.append(Term(g, each, times, False,
-                                  f"the window's {g} phase, once per {trigger}" + (
-                                      " (on its rows non-zero in this update)" if g == "qr"
-                                      else "")))
+                window.append(Term(g, each, times, False,
+                                   f"the window's {g} phase, once per {trigger}" + (
+                                       " (on its rows non-zero in this update)" if g == "qr"
+                                       else "")))
         if ev.get("cost", 0) and self.cost_x:
-            terms.append(Term("cost_x", self.cost_x, ev["cost"], False,
-                              "the cost pass at X before LM's first linearisation"))
-        marginal = 0
+            window.append(Term("cost_x", self.cost_x, ev["cost"], False,
+                               "the cost pass at X before LM's first linearisation"))
         terms.append(Term("lin_points", st["stream_lin_points"], 1, False,
                           "slots 0 and 1 copied before the solve (the one-step policy keeps a "
                           "leaving keyframe's conditional and τ there)"))
         if m == lay.window and self.layout_marginal and self.reuses(ev):
-            marginal = st["stream_marginal_reused"]
-            terms.append(Term("marginal", marginal, 1, False,
-                              "keyframe leaving: the one-step solve's slot 0 step is the store "
-                              "(its rows at μ = 0, at the update's start): τ's signs, mean and "
-                              "words"))
+            window.append(Term("marginal", st["stream_marginal_reused"], 1, False,
+                               "keyframe leaving: the one-step solve's slot 0 step is the store "
+                               "(its rows at μ = 0, at the update's start): τ's signs, mean and "
+                               "words"))
         elif m == lay.window and self.layout_marginal:
             # the window's rows at its optimum: computed again only if LM took a step after its
-            # last linearisation (fgc_stream.h, stream_call, before the marginal's region, by
-            # LM's own linearisation instance; counted: the "relinearize" event)
+            # last linearisation (fgc_stream.h's window_task, by LM's own linearisation
+            # instance; counted: the "relinearize" event)
             relin = _relinearize(ev)
             if relin:
-                terms.append(Term("relinearize", self.group["factor_jacobian"]
-                                  + self.group["gradient"], relin, False,
-                                  "keyframe leaving: the window linearised at its optimum "
-                                  "(LM moved after its last linearisation)"))
-            marginal = st["stream_marginal"] + self.qr_cycles(zero, False, leaf_only=True)
-            terms.append(Term("marginal", marginal, 1, False,
-                              "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0, τ's "
-                              "signs, mean and words"))
+                window.append(Term("relinearize", self.group["factor_jacobian"]
+                                   + self.group["gradient"], relin, False,
+                                   "keyframe leaving: the window linearised at its optimum "
+                                   "(LM moved after its last linearisation)"))
+            window.append(Term("marginal", st["stream_marginal"]
+                               + self.qr_cycles(zero, False, leaf_only=True), 1, False,
+                               "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0 (LM's), "
+                               "τ's signs, mean and words"))
+        terms += window
         if lay.kept:
-            terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
-                              "slot 0's estimate copied out of X: the kept net's parent"))
-            # the update re-expresses the newest kept conditional (not a sweep's last pass: its
-            # conditionals hold the sweep's points); the kept keyframes' estimates are walked
-            # when asked for (price_estimates) or by the next batch step
-            kept = 0
-            if first > 0 and not sweep:
-                kept += st["stream_kept_reexpress"]
-                terms.append(Term("kept_reexpress", st["stream_kept_reexpress"], 1, False,
-                                  f"keyframe {first - 1}'s kept conditional re-expressed at "
-                                  "its parent's new estimate: Log, its central-difference "
-                                  "Jacobian (four datapath passes per direction of a "
-                                  "non-vector variable), S·Log and S·J"))
-            if ev.get("kept_walk", 0) and not sweep:  # (an update walks nothing: counted)
-                term = self._walk_term(first, "slot 0")
-                kept += term.each
-                terms.append(term)
-            if self.layout_marginal and min(marginal, kept):
-                # fgc_stream.h's marginal_and_kept: the two as processes of one DATAFLOW region
-                terms.append(Term("overlap", -min(marginal, kept), 1, False,
-                                  "the marginal and the kept net's re-expression run side by "
-                                  "side (one DATAFLOW region, no memory between them): the "
-                                  "shorter of the two is hidden behind the longer"))
+            # the re-expression the update before left pending runs beside this update's
+            # window process (one DATAFLOW region, no memory between them): the update waits for
+            # the longer of the two (a sweep ran it in its pass -1, above)
+            if not sweep and self._pending(keyframe, ev if events is not None else None):
+                kept = self._pending_term()
+                terms += [kept, Term("overlap", -min(kept.cycles, sum(t.cycles for t in window)),
+                                     1, False, "the pending re-expression beside the window's "
+                                     "solve and marginal (one DATAFLOW region): the shorter of "
+                                     "the two is hidden behind the longer")]
             if m == lay.window and self.layout_marginal:
                 terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
                                   f"keyframe {first}'s conditional (R | S | d) and its "
                                   "linearisation points kept"))
+            if first > 0 and not sweep:
+                # this update's own re-expression (keyframe first - 1's conditional at slot 0's
+                # new estimate) is left for the next call's region: its point copied out of X;
+                # the kept keyframes' estimates are walked when asked for (price_estimates) or
+                # by the next batch step
+                terms.append(Term("kept_pending", st["stream_kept_slot0"], 1, False,
+                                  f"slot 0's new estimate copied out of X: keyframe {first - 1}'s "
+                                  "kept conditional re-expressed there in the next call's region"))
         terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
         if sweep:
             return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
