@@ -620,10 +620,10 @@ void window_task(int mode, int ms, const T lin01[2 * STREAM_KF_X], T errors[2],
 // walk - 1 … 0 from x0 (their estimates into X_KEPT).
 template <class CFG>
 void kept_task(int reexp, int walk, const T x0[STREAM_KF_X]) {
-    // reexpress's passes and the walk's (both INLINE here) run one after another: one Log
-    // datapath, one retraction datapath and one matrix-vector product for all of them
-#pragma HLS ALLOCATION function instances=keyframe_local limit=1
-#pragma HLS ALLOCATION function instances=keyframe_retract limit=1
+    // reexpress's passes and the walk's (both INLINE here) run one after another: one datapath
+    // module for every Log and retraction (the kernel's keyframe_local and keyframe_retract,
+    // INLINE, are its keyframe_pass's two modes) and one matrix-vector product for all of them
+#pragma HLS ALLOCATION function instances=keyframe_pass limit=1
 #pragma HLS ALLOCATION function instances=kept_matvec<CFG> limit=1
     FGC_TASK();
 #ifdef FGC_STREAM_KEPT

@@ -120,90 +120,96 @@ KEPT_SCALE_OPS = (("mul", 1), ("div", 1))  # kept_conditional: 1 / R_ii, each wo
 ARITHMETIC = ("add", "mul", "div")
 
 
-def _helper_modules(kernel) -> Counter:
-    """The operators of the helper modules one call of printed ``kernel`` instantiates (each
-    call site its own module in sequential code, one operator of each kind its body uses):
-    a Lie coefficient (lie_<X>: its series' and closed form's + × ÷, each of its square roots
-    and sines / cosines a wrapper module), so3_log once per rotation (+ × ÷, three square roots,
-    an arctangent), each square root or trigonometric call of the kernel's own."""
+# the kept net's datapath module (accel.cpp.jinja's keyframe_pass: its Log and retraction of a
+# keyframe, every helper INLINE in it): its ALLOCATION limits per arithmetic kind; each special
+# function it calls (a sine, a cosine, an arctangent) one instance
+KEPT_LIMITS = (("add", 2), ("mul", 2), ("div", 1), ("sqrt", 1))
+_SPECIAL = {"sin": "sin", "cos": "cos", "tan": "tan", "atan2": "atan2", "atan": "atan",
+            "asin": "asin", "acos": "acos"}
+
+
+def _special_functions(kernel) -> set[str]:
+    """The special functions a call of printed ``kernel`` reaches: its own trigonometric calls,
+    its Lie coefficients' closed forms', so3_log's arctangent."""
     import sympy as sp
 
-    from fgc.compiler.kernel import _op_counts
     from fgc.frontend.geometry import special
     from fgc_backends.cfamily.special import _closed_form_kernel
-    from fgc_backends.hls.units.special_ops import SO3_LOG_OPS, coefficient_ops
 
-    out: Counter = Counter()
-    rotations = set()
-    exprs = [e for _, e in kernel.assignments] + list(kernel.outputs)
-    for expr in exprs:
-        for node in sp.preorder_traversal(sp.sympify(expr)):
-            if isinstance(node, special.LieCoefficient):
-                body = dict(coefficient_ops(node.coeff_name))
-                out.update({k: 1 for k in ARITHMETIC if body.get(k)})
-                closed = _closed_form_kernel(node.coeff_name)
-                out["sqrt"] += dict(_op_counts(closed)).get("sqrt", 0)
-                out["special"] += _trig_calls(closed)
-            elif isinstance(node, special.SO3LogComponent):
-                rotations.add(node.args)
-    for _ in rotations:
-        out.update({k: 1 for k in ARITHMETIC if SO3_LOG_OPS.get(k)})
-        out["sqrt"] += SO3_LOG_OPS["sqrt"]
-        out["special"] += 1  # its arctangent
-    out["sqrt"] += dict(_op_counts(kernel)).get("sqrt", 0)
-    out["special"] += _trig_calls(kernel)
-    return out
-
-
-def _trig_calls(kernel) -> int:
-    """The trigonometric calls of ``kernel`` as printed: one a node, a power of one its
-    exponent's (the printer writes sin(x)**2 as a product of two calls)."""
-    import sympy as sp
-
-    trig = (sp.sin, sp.cos, sp.tan, sp.atan2, sp.atan, sp.acos, sp.asin)
-    calls = 0
+    names: set[str] = set()
     for expr in [e for _, e in kernel.assignments] + list(kernel.outputs):
         for node in sp.preorder_traversal(sp.sympify(expr)):
-            if isinstance(node, trig):
-                calls += 1
-            elif (node.is_Pow and isinstance(node.base, trig) and node.exp.is_Integer
-                  and node.exp > 1):
-                calls += int(node.exp) - 1
-    return calls
+            if isinstance(node, special.LieCoefficient):
+                names |= _special_functions(_closed_form_kernel(node.coeff_name))
+            elif isinstance(node, special.SO3LogComponent):
+                names.add("atan2")
+            elif isinstance(node, sp.Function) and type(node).__name__ in _SPECIAL:
+                names.add(_SPECIAL[type(node).__name__])
+    return names
 
 
-def kept_datapath_ops(layout, ops) -> tuple[tuple[str, int], ...]:
-    """One Log datapath (keyframe_local) and one retraction datapath (keyframe_retract) of a
-    keyframe's variables as accel.cpp.jinja emits them for the kept net, in sequential code:
-    each variable that is not a vector its local_<k> / retract_<k> call (a module: one operator
-    of each kind it uses, retract_<k>'s ALLOCATION limits, and its helpers' modules), a vector's
-    loop an adder in the caller's module."""
-    from fgc.compiler.kernel import _op_counts
+def _kept_kernels(layout):
+    """Per variable of a keyframe that is not a vector its Log and retraction kernels; and how
+    many tangent directions are a vector's (keyframe_pass's loops: one add each)."""
     from fgc_backends.cfamily.retract import local_kernel, retract_kernel, variable_class
-    from fgc_backends.hls.units.state_update import retract_datapath
 
     locals_, kf_vars = layout._kf_vars()
     name_of = {k.kind: k.type_name for k in locals_}
-    total: Counter = Counter()
-    flat = False
+    kernels, flat = [], 0
     for v in kf_vars:
         if v["flat"]:
-            flat = True
+            flat += v["dim"]
             continue
-        name = name_of[v["kind"]]
-        cls = variable_class(name)
-        log = local_kernel(cls)
-        counts = dict(_op_counts(log))
-        total.update({k: 1 for k in ARITHMETIC if counts.get(k)})
-        total.update(_helper_modules(log))
-        ret = retract_kernel(cls)
-        own = dict(retract_datapath(name, ops)[0])
-        counts = dict(_op_counts(ret))
-        total.update({k: own.get(k, 1) for k in ARITHMETIC if counts.get(k)})
-        total.update(_helper_modules(ret))
-    if flat:
-        total["add"] += 2  # keyframe_local's and keyframe_retract's vector loops
-    return tuple(sorted((k, n) for k, n in total.items() if n))
+        cls = variable_class(name_of[v["kind"]])
+        kernels.append((local_kernel(cls), retract_kernel(cls)))
+    return kernels, flat
+
+
+def kept_datapath_ops(layout, ops=None) -> tuple[tuple[str, int], ...]:
+    """The kept net's datapath as accel.cpp.jinja emits it: one module (keyframe_pass) for a
+    keyframe's Log and its retraction, exclusive branches, every helper INLINE in it (the Log
+    kernels, the retraction printed again, the special functions' ``kept_`` copies), sequential
+    code under its ALLOCATION: per arithmetic kind the module's operations, at most
+    :data:`KEPT_LIMITS`; each special function it calls one instance (a ``special``
+    operator). ``ops`` is not read: the limits are the design's, whatever the table."""
+    from fgc_backends.cfamily.printer import kernel_printed_ops
+    from fgc_backends.hls.units.special_ops import helper_ops
+
+    kernels, flat = _kept_kernels(layout)
+    total: Counter = Counter({"add": flat})
+    functions: set[str] = set()
+    for pair in kernels:
+        for kernel in pair:
+            total.update({k: n for k, n in kernel_printed_ops(kernel) if k in dict(KEPT_LIMITS)})
+            total.update(dict(helper_ops(kernel)))
+            functions |= _special_functions(kernel)
+    limits = dict(KEPT_LIMITS)
+    out = {k: min(limits[k], total[k]) for k in limits if total[k]}
+    if functions:
+        out["special"] = len(functions)
+    return tuple(sorted(out.items()))
+
+
+def kept_pass_bound(layout, ops) -> int:
+    """The cycles the kept datapath's ALLOCATION needs to issue one pass (a Log or a
+    retraction of a keyframe): per kind ⌈operations one pass issues (each helper's exclusive
+    branches sharing) × the operator's II / its limit⌉, the larger pass's."""
+    import math
+
+    from fgc_backends.cfamily.printer import kernel_printed_ops
+    from fgc_backends.hls.units.special_ops import helper_ops
+
+    kernels, flat = _kept_kernels(layout)
+    limits = dict(KEPT_LIMITS)
+    bound = 0
+    for which in (0, 1):  # the Log pass, the retraction pass
+        issued: Counter = Counter({"add": flat})
+        for pair in kernels:
+            issued.update({k: n for k, n in kernel_printed_ops(pair[which]) if k in limits})
+            issued.update(dict(helper_ops(pair[which], exclusive=True)))
+        bound = max([bound] + [math.ceil(n * ops.op(k).ii / limits[k])
+                               for k, n in issued.items() if k in limits and n])
+    return bound
 
 
 def _stream_phase(name: str, *loops: Loop) -> Phase:
@@ -376,7 +382,10 @@ class WindowUpdateModel:
                      kernel_loop("divide", n, "div", lt),
                      move("tau_out", kf + n + n * (n + 1) // 2 + 2))
         if lay.kept:  # the kept Bayes net's loops, as accel.cpp.jinja counts them
-            one = kernel_loop("pass", 1, "retract", kt)  # a Log or a retraction
+            # a Log or a retraction: the retraction-sized datapath's depth, or what its
+            # ALLOCATION needs to issue a pass if that is longer
+            one = kernel_loop("pass", 1, "retract", kt)
+            one = replace(one, depth=max(one.depth, kept_pass_bound(lay, self.plan.ops)))
             matvec = Loop("matvec", n * n, mv_ii, lt["acc"][1])
             scatter = kernel_loop("scatter", n, "scatter", lt)
             columns = tuple(Loop("column", i, 1, lt["acc"][1]) for i in range(1, n))
@@ -458,12 +467,12 @@ class WindowUpdateModel:
         """The operators the stream section's own code instantiates (fgc_stream.h, every call
         site its own RTL copy unless an ALLOCATION shares it), names prefixed ``stream_``:
         write_tau per call site (the marginal's, a batch step's), the kept net's task
-        (reexpress and kept_walk INLINE: one Log and one retraction datapath, one
-        matrix-vector product, its loops). The window kernel's functions the stream calls
-        again after LM (linearize_all, eliminate_all, back_substitute_at) share LM's instance
-        (window_task's and batch_kernel_solve's ALLOCATION): no unit here - the marginal's QR
-        step too, eliminate_all's on unit set 0 (fgc_eliminate.h's qr_eliminate_all with a
-        leaf)."""
+        (reexpress and kept_walk INLINE: one datapath module for the Log and the retraction,
+        :func:`kept_datapath_ops`, one matrix-vector product, its loops). The window kernel's
+        functions the stream calls again after LM (linearize_all, eliminate_all,
+        back_substitute_at) share LM's instance (window_task's and batch_kernel_solve's
+        ALLOCATION): no unit here - the marginal's QR step too, eliminate_all's on unit set 0
+        (fgc_eliminate.h's qr_eliminate_all with a leaf)."""
         lay, units = self.layout, []
         tau_sites = int(bool(self.layout_marginal)) + int(self.batch is not None)
         if tau_sites:
@@ -471,7 +480,7 @@ class WindowUpdateModel:
                               "site: the marginal's, a batch step's)", tau_sites, WRITE_TAU_OPS))
         if lay.kept:
             units += [Unit("stream_kept_datapaths", "the kept net's Log and retraction "
-                           "(keyframe_local, keyframe_retract: one each)", 1,
+                           "(keyframe_pass: one module, its ALLOCATION)", 1,
                            kept_datapath_ops(lay, self.plan.ops)),
                       Unit("stream_kept_matvec", "S times a vector (kept_matvec)", 1,
                            KEPT_MATVEC_OPS),
