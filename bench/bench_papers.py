@@ -522,8 +522,9 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                 "every copy the emitted text holds (plan >= second reader on every part; "
                 "docs/hls.md); within each kernel the gradient and the rounding-noise pass "
                 f"are one module for every block type; {kernels}; "
-                "the marginal and the kept net run side by side; where an update's cycles "
-                "go: docs/hls.md, 'Paper A's setting against ISAM2'")]
+                "the marginal runs on LM's units and the kept net's re-expression beside the "
+                "next update's solve, its Log and retraction one datapath module; where an "
+                "update's cycles go: docs/hls.md, 'Paper A's setting against ISAM2'")]
 
 
 def paper_b(cfg: Config) -> list[Row]:
