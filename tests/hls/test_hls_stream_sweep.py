@@ -12,6 +12,9 @@ kernel.
   sweep (no batch-kernel term), its resources without a batch kernel;
 - the sweep's work is needed: with a sweep pass's step dropped, or a leaving keyframe's
   conditional not kept, the C simulation leaves the simulator (these rebuild the design: heavy);
+- heavy: the kept re-expression an update leaves pending runs (counted) where the model prices
+  it - op 3, the next update beside its solve, a sweep's pass -1 - the counting C simulation
+  within 2 % of the model on every update and op 3, estimates asked every update or at the end;
 - LM to convergence keeps the batch kernel, and a sweep asked for under it is refused by name.
 """
 
@@ -166,6 +169,46 @@ def test_a_conditional_not_kept_breaks_the_agreement(sweep7, tmp_path):
     # the sweep's steps run, but the conditionals they leave are not stored
     _broken(sweep7, tmp_path, "if (mc == STREAM_W && marginal == 1) keep<CFG>(",
             "if (last && mc == STREAM_W && marginal == 1) keep<CFG>(")
+
+
+@pytest.mark.heavy
+def test_the_counted_csim_runs_the_pending_reexpression_where_the_model_prices_it(sweep7):
+    """An update leaves its kept re-expression pending; the next call's region runs it. Asked
+    for after every update, op 3 runs it (before its walk); asked for only at the end, the next
+    update runs it beside its solve (hidden: the update costs the same) or the sweep its pass -1
+    (before its walk). The counting C simulation counts the ``kept_reexpress`` event where the
+    model prices it and agrees with the model within 2 % on every update and op 3, both ways."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
+    from bench_stream_cycles import counted
+
+    _, _, data, _, stream, _ = sweep7
+    model = WindowUpdateModel(stream.layout, HlsConfig(scalar="double"))
+    pending = [model.leaves_pending(k) for k in range(7)]
+    assert pending == [False, False, False, True, False, True, True]  # 4: the sweep
+    for at_end in (False, True):
+        result = stream.run(data, estimates_at_end=at_end)
+        rows = counted(stream, estimates_at_end=at_end)
+        for u, (cycles, ev) in zip(result.updates, rows, strict=True):
+            k = u["keyframe"]
+            ev = dict(ev)
+            ev.setdefault("relinearize", 0)
+            ev["linearize"] = ev.get("linearize", 0) - ev["relinearize"] - ev.get("sweep", 0)
+            ran = ev.get("kept_reexpress", 0)
+            assert ran == (at_end and k > 0 and pending[k - 1]), (at_end, k)
+            price = model.price(k, u["iterations"], ev, u["status"])
+            assert abs(cycles / price.cycles - 1) <= 0.02, (at_end, k, cycles, price.cycles)
+        if not at_end:  # op 3 after every update: it runs the update's pending re-expression
+            for u, (cycles, ev) in zip(result.updates, stream.estimates, strict=True):
+                assert ev.get("kept_reexpress", 0) == pending[u["keyframe"]]
+                price = model.price_estimates(u["keyframe"], ev)
+                assert cycles == price.cycles
+    # hidden: the update after an incremental one costs the same as without the pending work
+    ev = model.events_of(1, status="max_iterations")
+    assert model.price(6, 1, {**ev, "kept_reexpress": 1}).cycles == \
+        model.price(6, 1, {**ev, "kept_reexpress": 0}).cycles
 
 
 def test_lm_to_convergence_keeps_the_batch_kernel_and_refuses_the_sweep():
