@@ -266,14 +266,9 @@ bool marginalize(bool finite, bool reuse, const T lin01[2 * STREAM_KF_X]) {
     if (!finite) return false;
     if (!reuse && !CFG::leaf_step()) return false;
     FGC_PHASE("marginal");
-    const int n0 = STEP_NF_OFF[STREAM_LEAF_STEP];
-    L rows[STREAM_KF_T * (STREAM_KF_T + 1)];
-    for (int e = 0; e < STREAM_KF_T * (STREAM_KF_T + 1); ++e) {
-#pragma HLS PIPELINE II=1
-        rows[e] = NF[n0 + e];
-    }
-    FGC_CYCLES("marginal", 0, "rows", STREAM_KF_T * (STREAM_KF_T + 1), CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    return write_tau<CFG>(rows, lin01 + STREAM_KF_X, reuse);
+    // write_tau reads the rows where the step left them (NF, slot 0's block): its sign loop
+    // reads each word once, nothing else writes NF meanwhile - no copy first
+    return write_tau<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], lin01 + STREAM_KF_X, reuse);
 }
 #endif  // FGC_STREAM_MARGINAL
 

@@ -420,11 +420,11 @@ class WindowUpdateModel:
                                                            plan_sizes(t)["MAX_W"],
                                                            t.solver.method == "lm", kt),
                                   *commit_loops(tables, s, kt, False),
-                                  move("rows", n * (n + 1)), *write_tau),
+                                  *write_tau),
                     # the one-step policy: slots 0 and 1 copied before the solve; the step
                     # taken, the solve's own NF rows are τ (no stack, QR step or commit)
                     _stream_phase("lin_points", move("x", 2 * kf)),
-                    _stream_phase("marginal_reused", move("rows", n * (n + 1)), *write_tau)]
+                    _stream_phase("marginal_reused", *write_tau)]
         if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
             out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
                     for m, d in enumerate(lay.new_dest)]
