@@ -272,7 +272,7 @@ def test_cli_stream_hls_prints_the_model_beside_the_simulator(tmp_path, capsys):
     model = WindowPricer(stream_program(graph, program))
     for u, priced in zip(report["updates"], report["model_estimate"], strict=True):
         again = model.price(SimpleNamespace(**{k: u[k] for k in ("keyframe", "mode", "first",
-                                                                  "iterations")}))
+                                                                  "iterations", "status")}))
         assert priced["cycles"] == again.cycles and priced["keyframe"] == u["keyframe"]
         assert not any(t["assumed"] for t in priced["terms"])
 
