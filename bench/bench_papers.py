@@ -306,12 +306,11 @@ class StreamDesign:
     def one_set_dsp(self) -> int:
         """A design NOT built, by this candidate's plan: one set of units and datapaths for the
         window's solve and the batch steps (each unit kind at the larger of the two kernels'
-        DSP) and the stream section without the marginal's own copy of unit set 0 — the bound
-        issue 33 item 5's sharing could reach with these options."""
-        marginal = self.held.get("QR units", {}).get("stream section (the marginal's copy)", 0)
+        DSP) and the stream section (its marginal on LM's unit set 0) — the bound issue 33 item
+        5's sharing could reach with these options."""
         kernel = sum(max(w.get("window kernel", 0), w.get("batch kernel", 0))
                      for w in self.held.values())
-        return kernel + self.parts["stream section"][0] - marginal
+        return kernel + self.parts["stream section"][0]
 
     @property
     def label(self) -> str:
@@ -523,8 +522,9 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                 "every copy the emitted text holds (plan >= second reader on every part; "
                 "docs/hls.md); within each kernel the gradient and the rounding-noise pass "
                 f"are one module for every block type; {kernels}; "
-                "the marginal and the kept net run side by side; where an update's cycles "
-                "go: docs/hls.md, 'Paper A's setting against ISAM2'")]
+                "the marginal runs on LM's units and the kept net's re-expression beside the "
+                "next update's solve, its Log and retraction one datapath module; where an "
+                "update's cycles go: docs/hls.md, 'Paper A's setting against ISAM2'")]
 
 
 def paper_b(cfg: Config) -> list[Row]:

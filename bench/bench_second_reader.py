@@ -145,8 +145,8 @@ def measure_stream(n: int, out: Path, config=None, units: int | None = None,
                 issues=[str(i) for i in issues],
                 copies={k: modules.get(k, 0) for k in ("eliminate_all", "linearize_all",
                                                        "back_substitute_at", "qr_update",
-                                                       "keyframe_local", "keyframe_retract",
-                                                       "kept_matvec", "write_tau", "so3_log")})
+                                                       "keyframe_pass", "kept_matvec",
+                                                       "write_tau", "so3_log")})
 
 
 def main(argv=None) -> int:
@@ -158,6 +158,9 @@ def main(argv=None) -> int:
     parser.add_argument("--lm", action="store_true",
                         help="the stream's solver LM to convergence (its batch kernel) instead "
                              "of paper A's one-step policy (batch steps as sweeps)")
+    parser.add_argument("--stream-design", metavar="N_U,SETS[,ADD,MUL,DIV]", action="append",
+                        default=[], help="one more stream design (repeatable): n_u, unit sets "
+                        "and the factor datapaths' ALLOCATION limits (e.g. 8,1,2,3,1)")
     args = parser.parse_args(argv)
     lio_n, imu_n = (8, 10) if args.quick else (30, 50)
     units = (1, 4) if args.quick else (1, 4, 8, 32)
@@ -182,6 +185,17 @@ def main(argv=None) -> int:
                                       HlsConfig(unit_sets=1, allocation=(
                                           ("add", 1), ("mul", 1), ("div", 1))), 1,
                                       solver=solver)
+            streams = [("default design", stream),
+                       ("smallest searched (n_u 1, one unit set, ALLOCATION 1/1/1)", smallest)]
+            for i, spec in enumerate(args.stream_design):
+                v = [int(x) for x in spec.split(",")]
+                alloc = tuple(zip(("add", "mul", "div"), v[2:5], strict=True)) if len(v) > 2 \
+                    else None
+                label = (f"n_u {v[0]}, {v[1]} unit set(s), ALLOCATION "
+                         + ("/".join(map(str, v[2:5])) if alloc else "default"))
+                streams.append((label, measure_stream(
+                    lio_n, Path(tmp) / f"design{i}", HlsConfig(unit_sets=v[1], allocation=alloc),
+                    v[0], solver=solver)))
         lio = example("lio")
         for n_u in units:
             for alloc in (None, doubled):
@@ -241,9 +255,7 @@ def main(argv=None) -> int:
             print(f"  {finding}\n      in: {'; '.join(names)}")
     if stream is not None:
         policy = "LM to convergence" if args.lm else "one Gauss-Newton step an update"
-        for label, st in (("default design", stream),
-                          ("smallest searched (n_u 1, one unit set, ALLOCATION 1/1/1)",
-                           smallest)):
+        for label, st in streams:
             print(f"\npaper A's on-chip stream design (LIO N={lio_n}, K=3, {policy}), {label}: "
                   f"plan {st['plan_dsp']} DSP / {st['plan_bram36']:g} BRAM36, reader "
                   f"{st['reader_dsp']} DSP: DSP = max(plan, reader) = "

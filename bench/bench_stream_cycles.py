@@ -33,9 +33,11 @@ from fgc_backends.hls.streaming import OnChipFixedLagStream, OnChipIncrementalSt
 from fgc_backends.native.streaming import FixedLagStream, IncrementalStream
 
 
-def counted(stream: OnChipFixedLagStream) -> list[tuple[int, dict]]:
+def counted(stream: OnChipFixedLagStream, estimates_at_end: bool = False
+            ) -> list[tuple[int, dict]]:
     """(cycles, events) per keyframe of a counting build of the stream's testbench (the inputs
-    its last :meth:`run` wrote)."""
+    its last :meth:`run` wrote); ``estimates_at_end``: the kept estimates asked for after the
+    last update only (else after every update)."""
     folder, name = stream.project.directory, stream.project.name
     stream.phases = []  # per keyframe: csim cycles per plan phase
     stream.estimates = []  # per keyframe (incremental): the kept estimates asked for (op 3)
@@ -43,7 +45,8 @@ def counted(stream: OnChipFixedLagStream) -> list[tuple[int, dict]]:
     subprocess.run(["g++", "-std=c++17", "-O1", "-DFGC_COUNT_CYCLES", "-Wno-unknown-pragmas",
                     "-I", "csim_include", "-I", "include", f"tb_{name}.cpp", *kernels,
                     "-o", "tb_count"], cwd=folder, check=True)
-    out = subprocess.run(["./tb_count", "--stream", "data.txt", "stream.txt", "count.txt"],
+    mode = "--stream-estimates-at-end" if estimates_at_end else "--stream"
+    out = subprocess.run(["./tb_count", mode, "data.txt", "stream.txt", "count.txt"],
                          cwd=folder, check=True, capture_output=True, text=True).stdout
     rows = []
     for line in out.splitlines():
@@ -137,8 +140,9 @@ def main() -> None:
               "update left them stale, the words out; not part of the update):")
         print(f"{'keyframe':>8} {'csim cycles':>12} {'model cycles':>12} {'csim/model':>10}")
         for (record, _, _), (cycles, price) in zip(rows, stream.estimate_rows, strict=True):
-            print(f"{record['keyframe']:>8} {cycles:>12,} {price.cycles:>12,} "
-                  f"{cycles / price.cycles:>10.3f}")
+            # (nothing kept yet: no copy, no walk, no words: 0 cycles both)
+            ratio = f"{cycles / price.cycles:>10.3f}" if price.cycles else f"{'-':>10}"
+            print(f"{record['keyframe']:>8} {cycles:>12,} {price.cycles:>12,} {ratio}")
     native = (IncrementalStream(graph, program) if args.incremental
               else FixedLagStream(graph, program, args.window)).run(data)
     worst = 0.0

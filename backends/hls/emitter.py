@@ -102,6 +102,8 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     if context["leaf_lin"]:
         _leaf_context(context, stream.leaf_factors(), stream.leaf_gone())
         context["leaf_skip"] = stream.leaf_skip()
+    if context["stream"] is not None and context["stream"]["kept"]:
+        context["stream"]["kept_hw"] = _kept_hw(context, config.scalar_cxx)
     context["stream_magic"], context["stream_result_magic"] = STREAM_MAGIC, STREAM_RESULT_MAGIC
     batch = getattr(stream, "batch", None)
     context["extra_sources"] = [f"{batch.project}.cpp"] if batch is not None else []
@@ -174,6 +176,49 @@ def _allocation(unit, scalar_cxx: str, text: str) -> tuple[tuple[str, int], ...]
         elif kind == "special":
             out += [(f"function instances={f}", limit) for f in used if f not in TRIG]
     return tuple(out)
+
+
+def _kept_hw(context: dict, scalar_cxx: str) -> dict:
+    """The kept net's datapath module (accel.cpp.jinja's keyframe_pass, the on-chip stream's
+    Log and retraction of a keyframe): the Log kernels and the retractions of a keyframe's
+    variables that are not vectors printed again with the special functions' ``kept_`` copies
+    (INLINE, so their operators are the module's), which coefficients they call and whether
+    so3_log, and its ALLOCATION: plan/stream.py's KEPT_LIMITS per arithmetic kind (Vitis
+    operation names), one instance of every special function the module reaches."""
+    from fgc_backends.hls.plan.stream import KEPT_LIMITS
+
+    stream = context["stream"]
+    kinds = {v["kind"] for v in stream["kf_vars"] if not v["flat"]}
+
+    def kept(lines):
+        return [re.sub(r"\bso3_log\(", "kept_so3_log(",
+                       re.sub(r"\blie_(\w+)\(", r"kept_lie_\1(", line)) for line in lines]
+
+    def printed(k):
+        return {"kind": k.kind, "storage_dim": k.storage_dim, "dim": k.dim,
+                "intermediates": kept(k.printed.intermediates),
+                "outputs": kept(k.printed.outputs)}
+
+    locals_ = [printed(k) for k in stream["locals"] if not k.flat and k.kind in kinds]
+    retracts = [printed(k) for k in context["retracts"] if k.kind in kinds]
+    text = "\n".join(line for k in locals_ + retracts
+                     for line in (*k["intermediates"], *k["outputs"]))
+    if re.search(r"\bso3_log_[xyz]\(", text):
+        raise HlsConfigError("internal error: the kept net's Log calls so3_log by component")
+    helpers = sorted(set(re.findall(r"\bkept_lie_(\w+)\(", text)))
+    so3_log = "kept_so3_log(" in text
+    reached = text + "".join(line for f in context["coefficients"] if f.name in helpers
+                             for line in f.closed_lines)
+    if so3_log:
+        reached += " fgc_atan2("
+    prefix = "f" if scalar_cxx == "float" else "d"
+    allocation = [(f"operation instances={prefix}{kind}", n) for kind, n in KEPT_LIMITS]
+    functions = set(_FUNCTIONS.findall(reached))
+    if so3_log or "fgc_sqrt(" in reached:
+        functions.add("fgc_sqrt")
+    allocation += [(f"function instances={f}", 1) for f in sorted(functions)]
+    return {"locals": locals_, "retracts": retracts, "helpers": helpers, "so3_log": so3_log,
+            "allocation": allocation}
 
 
 def _bound(limits, counts: dict, ii: int, table) -> tuple[tuple[str, int], ...]:

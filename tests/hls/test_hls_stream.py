@@ -272,7 +272,7 @@ def test_cli_stream_hls_prints_the_model_beside_the_simulator(tmp_path, capsys):
     model = WindowPricer(stream_program(graph, program))
     for u, priced in zip(report["updates"], report["model_estimate"], strict=True):
         again = model.price(SimpleNamespace(**{k: u[k] for k in ("keyframe", "mode", "first",
-                                                                  "iterations")}))
+                                                                  "iterations", "status")}))
         assert priced["cycles"] == again.cycles and priced["keyframe"] == u["keyframe"]
         assert not any(t["assumed"] for t in priced["terms"])
 
@@ -421,16 +421,17 @@ def test_the_plan_prices_every_copy_of_the_stream_design(emitted_stream):
     # one per kernel (the window's, the batch kernel's); one each in the kept net
     assert modules["linearize_all"] == modules["eliminate_all"] == 2
     assert modules["back_substitute_at"] == 2  # the cost pass with it (trial_cost)
-    assert modules["keyframe_local"] == modules["keyframe_retract"] == 1
+    assert modules["keyframe_pass"] == 1  # the kept net's Log and retraction: one module
+    assert "keyframe_local" not in modules and "keyframe_retract" not in modules  # INLINE
 
 
 @pytest.mark.heavy
 def test_a_call_site_without_a_price_fails_the_stream_check(emitted_stream):
-    """The check above can fail: a second call of the marginal / kept region planted in the
-    stream top is a second copy of the marginal's QR set and the kept net's datapaths that the
-    plan does not price, and the stream section then reads above its plan."""
+    """The check above can fail: a second call of the window / kept region planted in the
+    stream top is a second copy of LM's units and the kept net's datapaths that the plan does
+    not price, and the stream section then reads above its plan."""
     files, top, model = emitted_stream
-    call = "marginal_and_kept<CFG>(mc, finite, reuse, live, lin01, reexp, walk, x0, code);"
+    call = "window_and_kept<CFG>(mode, mc, live, lin01, errors, info, result, reexp, walk, x0);"
     planted = [(k, t.replace(call, call + "\n        " + call)) if k == "fgc_stream.h" else (k, t)
                for k, t in files]
     assert planted != files

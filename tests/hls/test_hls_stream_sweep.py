@@ -12,6 +12,9 @@ kernel.
   sweep (no batch-kernel term), its resources without a batch kernel;
 - the sweep's work is needed: with a sweep pass's step dropped, or a leaving keyframe's
   conditional not kept, the C simulation leaves the simulator (these rebuild the design: heavy);
+- heavy: the kept re-expression an update leaves pending runs (counted) where the model prices
+  it - op 3, the next update beside its solve, a sweep's pass -1 - the counting C simulation
+  within 2 % of the model on every update and op 3, estimates asked every update or at the end;
 - LM to convergence keeps the batch kernel, and a sweep asked for under it is refused by name.
 """
 
@@ -104,7 +107,11 @@ def test_the_model_prices_the_batch_step_as_the_sweep(sweep7):
     assert {"sweep_gather", "sweep_in", "sweep_linearize", "sweep_marginal", "sweep_keep",
             "qr", "kept_walk", "marginal"} <= names
     assert not any(n.startswith("batch_") for n in names)
-    assert "kept_reexpress" not in names  # the sweep's conditionals hold its points
+    # the sweep's conditionals hold its points: it re-expresses none of its own and leaves
+    # none pending; its pass -1 runs the one keyframe 3's update left, before the walk
+    assert [t.name for t in prices[4].terms].count("kept_reexpress") == 1
+    assert model.leaves_pending(3) and not model.leaves_pending(4)
+    assert "kept_reexpress" not in {t.name for t in prices[5].terms}
     assert prices[4].term("sweep_keep").times == 2  # keyframes 0 and 1 leave on the way
     assert all("sweep_store" in {t.name for t in p.terms} for p in prices)
     res = model.resources()
@@ -129,7 +136,9 @@ def test_the_sweep_walks_the_stale_kept_estimates_it_starts_from(sweep7):
     asked = model.price(4, 1, dict(model.events_of(1, status="max_iterations"), kept_walk=0))
     base, each = (model.stream[k] for k in ("stream_kept_walk_base", "stream_kept_walk_each"))
     assert walked.term("kept_walk").each == base + 1 * each  # keyframe 0 from keyframe 1
-    assert walked.cycles - asked.cycles == base + each + model.stream["stream_kept_slot0"]
+    # asked for after keyframe 3: op 3 ran keyframe 3's pending re-expression and the walk
+    assert walked.cycles - asked.cycles == (model.stream["stream_kept_reexpress"] + base + each
+                                            + model.stream["stream_kept_slot0"])
 
 
 def test_a_sweep_pass_linearises_and_stacks_slot_0s_rows_alone(sweep7):
@@ -211,6 +220,46 @@ def test_a_live_step_that_skips_a_factor_holding_rows_breaks_the_agreement(sweep
     mask, _ = sweep7[4].layout.leaf_skip()
     _broken(sweep7, tmp_path, f"LEAF_SKIP = {mask}u;", f"LEAF_SKIP = {mask | 8}u;",
             "{name}.cpp")
+
+
+@pytest.mark.heavy
+def test_the_counted_csim_runs_the_pending_reexpression_where_the_model_prices_it(sweep7):
+    """An update leaves its kept re-expression pending; the next call's region runs it. Asked
+    for after every update, op 3 runs it (before its walk); asked for only at the end, the next
+    update runs it beside its solve (hidden: the update costs the same) or the sweep its pass -1
+    (before its walk). The counting C simulation counts the ``kept_reexpress`` event where the
+    model prices it and agrees with the model within 2 % on every update and op 3, both ways."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
+    from bench_stream_cycles import counted
+
+    _, _, data, _, stream, _ = sweep7
+    model = WindowUpdateModel(stream.layout, HlsConfig(scalar="double"))
+    pending = [model.leaves_pending(k) for k in range(7)]
+    assert pending == [False, False, False, True, False, True, True]  # 4: the sweep
+    for at_end in (False, True):
+        result = stream.run(data, estimates_at_end=at_end)
+        rows = counted(stream, estimates_at_end=at_end)
+        for u, (cycles, ev) in zip(result.updates, rows, strict=True):
+            k = u["keyframe"]
+            ev = dict(ev)
+            ev.setdefault("relinearize", 0)
+            ev["linearize"] = ev.get("linearize", 0) - ev["relinearize"] - ev.get("sweep", 0)
+            ran = ev.get("kept_reexpress", 0)
+            assert ran == (at_end and k > 0 and pending[k - 1]), (at_end, k)
+            price = model.price(k, u["iterations"], ev, u["status"])
+            assert abs(cycles / price.cycles - 1) <= 0.02, (at_end, k, cycles, price.cycles)
+        if not at_end:  # op 3 after every update: it runs the update's pending re-expression
+            for u, (cycles, ev) in zip(result.updates, stream.estimates, strict=True):
+                assert ev.get("kept_reexpress", 0) == pending[u["keyframe"]]
+                price = model.price_estimates(u["keyframe"], ev)
+                assert cycles == price.cycles
+    # hidden: the update after an incremental one costs the same as without the pending work
+    ev = model.events_of(1, status="max_iterations")
+    assert model.price(6, 1, {**ev, "kept_reexpress": 1}).cycles == \
+        model.price(6, 1, {**ev, "kept_reexpress": 0}).cycles
 
 
 def test_lm_to_convergence_keeps_the_batch_kernel_and_refuses_the_sweep():

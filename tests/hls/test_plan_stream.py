@@ -81,15 +81,32 @@ def test_the_slots_a_batch_step_does_not_reach_cost_only_their_own_rows(paper_a_
     assert model.qr_cycles(frozenset(), True) == model.group["qr"]
 
 
-def test_the_marginal_and_the_kept_net_cost_the_longer_of_the_two(paper_a_n7):
+def test_the_pending_reexpression_runs_beside_the_next_updates_solve(paper_a_n7):
+    """An update leaves its kept re-expression pending (fgc_stream.h's KEPT_PENDING); the next
+    call's region runs it beside the window's process (the solve and the marginal): the update
+    waits for the longer of the two, here the solve, so the re-expression costs the update
+    nothing but its point's copy. Asked for first (op 3), it is op 3's."""
     _, model = paper_a_n7
-    price = model.price(5, 2)  # a keyframe leaves (the marginal) and three are kept below
-    side = {"marginal", "kept_reexpress", "overlap"}
-    rest = sum(t.cycles for t in price.terms if t.name not in side)
-    marginal = price.term("marginal").cycles
-    kept = price.term("kept_reexpress").cycles
-    assert marginal > 0 and kept > 0
-    assert price.cycles == rest + max(marginal, kept)
+    assert model.leaves_pending(5) and not model.leaves_pending(4)  # 4: the batch step
+    ev = model.events_of(2)
+    ran = model.price(6, 2, {**ev, "kept_reexpress": 1})
+    none = model.price(6, 2, {**ev, "kept_reexpress": 0})
+    kept = ran.term("kept_reexpress").cycles
+    assert kept == model.stream["stream_kept_reexpress"] > 0
+    window = sum(t.cycles for t in none.terms if t.name in set(model.group) | {
+        "marginal", "relinearize", "cost_x"})
+    assert window > kept and ran.term("overlap").cycles == -kept
+    assert ran.cycles == none.cycles
+    assert "kept_reexpress" not in {t.name for t in none.terms}
+    # not counted: the update before left it (no estimates asked for between them)
+    assert model.price(6, 2).cycles == ran.cycles
+    assert "kept_reexpress" not in {t.name for t in model.price(5, 2).terms}  # after the batch
+    # the update's own: its point copied out after the solve, for the next call
+    assert ran.term("kept_pending").each == model.stream["stream_kept_slot0"]
+    # asked for right after the update: op 3 runs it, before the walk
+    asked = model.price_estimates(5)
+    assert [t.name for t in asked.terms][:2] == ["kept_reexpress", "kept_slot0"]
+    assert "kept_reexpress" not in {t.name for t in model.price_estimates(4).terms}
 
 
 def test_the_kept_walk_is_off_the_updates_path(paper_a_n7):
@@ -206,8 +223,8 @@ def test_each_stream_function_has_one_call_site_in_the_header():
     text = (Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
             / "fgc_stream.h").read_text()
     code = re.sub(r"//[^\n]*", "", text)
-    for name in ("marginalize", "reexpress", "kept_walk", "keep", "marginal_task", "kept_task",
-                 "marginal_and_kept", "write_tau"):
+    for name in ("marginalize", "reexpress", "kept_walk", "keep", "window_task", "kept_task",
+                 "window_and_kept", "write_tau"):
         sites = re.findall(rf"\b{name}<CFG>\(", code)
         assert len(sites) == (2 if name == "write_tau" else 1), name  # marginal, batch step
 

@@ -8,25 +8,25 @@
 //             lanes HA_L0, HA_L1), streamed into the cascade, whose drain writes the
 //             conditional into COND and the update matrix into NF[t % 2] (the t-th step's);
 //             false if singular.
-//   QR:       void qr_stack<CFG>(s, root_mu, bank)  the step's rows into a unit set's banks
-//             (its factors' [A | b], its children's new factors, sqrt(mu) I if CFG::LM).
+//   QR:       void qr_stack_rows<CFG>(s, root_mu, bank, skip, m)  the step's m rows into a
+//             unit set's banks (its factors' [A | b] less the skipped ones, its children's
+//             new factors, sqrt(mu) I if CFG::LM).
 //             void qr_commit<CFG>(s, cond, update)  a unit set's result into COND and NF.
 //             bool qr_eliminate_all<CFG, SETS>(mu)  every step, level by level: a level's
 //             steps go CFG::UNIT_SETS at a time to the unit sets (stacked, the sets'
 //             DATAFLOW region, committed); false if rank deficient.
-//             bool qr_eliminate_leaf<CFG, SETS>(s, live)  step s once more at mu = 0 on unit
-//             set 0 (the on-chip window's marginalisation; live: without the factors that
-//             hold nothing once keyframe 0 has left); false if rank deficient.
+//             qr_eliminate_all<CFG, SETS>(0, s, live)  step s alone once more at mu = 0 on
+//             unit set 0 (the on-chip window's marginalisation: the same sets and region, one
+//             instance with LM's solve; live: without the factors that hold nothing once
+//             keyframe 0 has left); false if rank deficient.
 //
 // The unit-set wiring stays the kernel's (it depends on the number of unit sets: each set its
 // own memories and RTL instance): SETS holds its hooks, static functions the kernel defines
 // after its qr_set<u> and qr_level -
-//   SETS::stack(u, s, root_mu)   qr_stack<CFG>(s, root_mu, WORK<u>)
-//   SETS::level(has, s, bad)     the qr_level region: set u takes step s[u] where has[u]
-//                                (else none), bad[u] set if rank deficient
+//   SETS::stack(u, s, root_mu, skip, m)  qr_stack_rows<CFG>(s, root_mu, WORK<u>, skip, m)
+//   SETS::level(has, s, m, bad)  the qr_level region: set u takes step s[u]'s m[u] rows where
+//                                has[u] (else none), bad[u] set if rank deficient
 //   SETS::commit(u, s)           qr_commit<CFG>(s, CONDBUF<u>, UPDBUF<u>)
-//   SETS::leaf_stack(s, skip, m) (qr_eliminate_leaf only) qr_stack_rows<CFG>(s, 0, WORK0, skip, m)
-//   SETS::leaf(s, m, bad)        (qr_eliminate_leaf only) step s's m rows on unit set 0 alone
 //
 // Included by the kernel inside its namespace (fgc::, or fgc::les for the mixed design), after
 // its schedule tables and memories, which these functions name: STEP_W, STEP_F, STEP_ROWS,
@@ -512,8 +512,8 @@ void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
 // (fgc_qr_stream.h's banks). The rows go PORTS words a cycle (AB's or NF's two ports, into any
 // banks: each bank has two ports too), the damping rows a word a cycle; counted as the plan's
 // stack_loops price them. `skip`: bit k set, the k-th of the step's factors is not stacked (the
-// marginal's step once its rows hold nothing: qr_eliminate_leaf), `m` the rows stacked
-// (STEP_ROWS[s] less the skipped factors'); qr_stack: all of them.
+// marginal's step once its rows hold nothing: qr_eliminate_all's live leaf step), `m` the rows stacked
+// (STEP_ROWS[s] less the skipped factors'; skip 0: all of them).
 template <class CFG>
 void qr_stack_rows(int s, typename CFG::T root_mu,
                    typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
@@ -605,13 +605,6 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
     }
 }
 
-template <class CFG>
-void qr_stack(int s, typename CFG::T root_mu,
-              typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS]) {
-#pragma HLS INLINE
-    qr_stack_rows<CFG>(s, root_mu, bank, 0u, STEP_ROWS[s]);
-}
-
 // A unit set's result for step s into COND and NF, PORTS words a cycle.
 template <class CFG>
 void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
@@ -640,32 +633,48 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
 
 // Eliminate every step, level by level: a level's steps are independent, the unit sets take
 // them CFG::UNIT_SETS at a time (stack each, the sets' DATAFLOW region, commit each). False if
-// rank deficient.
+// rank deficient. leaf >= 0 (the on-chip window's marginalisation): step leaf alone, once
+// more at mu = 0 (no damping rows, no square root), on unit set 0 (the other sets idle) - one
+// "level" of one step through the same stack, region and commit, so the marginal's step is
+// LM's unit set 0, not a copy of it. `live` (a leaf step once keyframe 0 has left the window):
+// the step's factors that hold nothing from then on (CFG::LEAF_SKIP, bit k the k-th of its
+// factors) are neither stacked nor reflected, the unit takes CFG::LEAF_LIVE_ROWS rows.
 template <class CFG, class SETS>
-bool qr_eliminate_all(typename CFG::T mu) {
+bool qr_eliminate_all(typename CFG::T mu, int leaf = -1, bool live = false) {
     typedef typename CFG::T T;
-    FGC_EVENT("solve");
-    FGC_PHASE("qr_stack");
-    const T root_mu = fgc_sqrt(mu);
-    FGC_CYCLES("stack", 0, "root_mu", 1, CFG::ROOT_II, CFG::ROOT_DEPTH);
+    const bool one = leaf >= 0;
+    const bool gone = one && live;  // the leaf step's rows without the gone factors'
+    T root_mu = T(0);
+    if (one) {
+        FGC_EVENT("marginal_solve");
+    } else {
+        FGC_EVENT("solve");
+        FGC_PHASE("qr_stack");
+        root_mu = fgc_sqrt(mu);
+        FGC_CYCLES("stack", 0, "root_mu", 1, CFG::ROOT_II, CFG::ROOT_DEPTH);
+    }
     bool ok = true;
-    for (int l = 0; l < N_LEVELS; ++l) {
-        for (int i = LEVEL_BEGIN[l]; i < LEVEL_BEGIN[l + 1]; i += CFG::UNIT_SETS) {
+    for (int l = 0; l < (one ? 1 : N_LEVELS); ++l) {
+#pragma HLS LOOP_TRIPCOUNT max=N_LEVELS
+        const int begin = one ? 0 : LEVEL_BEGIN[l], end = one ? 1 : LEVEL_BEGIN[l + 1];
+        for (int i = begin; i < end; i += CFG::UNIT_SETS) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_LEVEL_WIDTH
             bool has[CFG::UNIT_SETS], bad[CFG::UNIT_SETS];
-            int s[CFG::UNIT_SETS];
+            int s[CFG::UNIT_SETS], m[CFG::UNIT_SETS];
 #pragma HLS ARRAY_PARTITION variable=has complete
 #pragma HLS ARRAY_PARTITION variable=bad complete
 #pragma HLS ARRAY_PARTITION variable=s complete
+#pragma HLS ARRAY_PARTITION variable=m complete
             for (int u = 0; u < CFG::UNIT_SETS; ++u) {  // set by set, as the sets' banks fill
 #pragma HLS UNROLL
-                has[u] = i + u < LEVEL_BEGIN[l + 1];
-                s[u] = has[u] ? LEVEL_STEPS[i + u] : 0;
-                if (has[u]) SETS::stack(u, s[u], root_mu);
+                has[u] = i + u < end;
+                s[u] = !has[u] ? 0 : one ? leaf : LEVEL_STEPS[i + u];
+                m[u] = !has[u] ? 0 : gone ? CFG::LEAF_LIVE_ROWS : STEP_ROWS[s[u]];
+                if (has[u]) SETS::stack(u, s[u], root_mu, gone ? CFG::LEAF_SKIP : 0u, m[u]);
                 bad[u] = false;
             }
             FGC_PHASE("qr");
-            SETS::level(has, s, bad);
+            SETS::level(has, s, m, bad);
             FGC_JOIN();
             for (int u = 0; u < CFG::UNIT_SETS; ++u) {
 #pragma HLS UNROLL
@@ -677,24 +686,6 @@ bool qr_eliminate_all(typename CFG::T mu) {
         }
     }
     return ok;
-}
-
-// The on-chip window's marginalisation: step s (slot 0's) once more, at mu = 0, on unit set 0
-// (the other sets idle); its conditional and the new factor it passes on into COND and NF.
-// `live` (keyframe 0 has left the window): the step's factors that hold nothing from then on
-// (CFG::LEAF_SKIP, bit k the k-th of its factors) are neither stacked nor reflected, the unit
-// takes CFG::LEAF_LIVE_ROWS rows. False if rank deficient.
-template <class CFG, class SETS>
-bool qr_eliminate_leaf(int s, bool live) {
-    FGC_EVENT("marginal_solve");
-    const int rows = live ? CFG::LEAF_LIVE_ROWS : STEP_ROWS[s];
-    SETS::leaf_stack(s, live ? CFG::LEAF_SKIP : 0u, rows);
-    bool bad = false;
-    FGC_PHASE("qr");
-    SETS::leaf(s, rows, &bad);  // unit set 0 alone (its copy: the other sets are not instantiated)
-    FGC_JOIN();
-    SETS::commit(0, s);
-    return !bad;
 }
 #endif  // FGC_ELIMINATE_QR
 

@@ -7,12 +7,14 @@
 //                        write_tau<CFG>(rows)   factor written into slot 1's prior
 //   FGC_STREAM_KEPT      reexpress<CFG>(c, x0), keep<CFG>(c), kept_walk<CFG>(first, x0): the kept
 //                        conditionals, re-expressed, stored and walked back from the window
-//                        (kept_matvec<CFG>, kept_conditional<CFG> inside); with the marginal,
-//                        marginal_and_kept<CFG>: the marginal and the kept net's re-expression
-//                        side by side (one DATAFLOW region, two processes). The walk, which
-//                        gives the kept keyframes' estimates, is off the update's path: it runs
-//                        in the same kept process when the host asks for them (op 3) or a batch
-//                        step starts from them, and only if an update left them stale
+//                        (kept_matvec<CFG>, kept_conditional<CFG> inside). window_and_kept<CFG>:
+//                        the window's process (window_task: LM's solve, the marginal on LM's
+//                        units) beside the kept net's (kept_task: the re-expression the update
+//                        before left pending, KEPT_PENDING), one DATAFLOW region: the kept
+//                        net's work is off the update's path. The walk, which gives the kept
+//                        keyframes' estimates, runs in the same kept process when the host
+//                        asks for them (op 3) or a batch step starts from them, and only if an
+//                        update left them stale
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
 //   FGC_STREAM_SWEEP     (instead, the one-step policy) a batch step as a sweep through the window:
@@ -28,20 +30,21 @@
 //                        batch kernel's entries (its file's <name>_batch_* call them)
 //
 // The memories of the stream section are declared here (the window's call counters; kept: the
-// kept conditionals KEPT_R / KEPT_S / KEPT_D, their points KEPT_LIN / KEPT_NEXT, X_KEPT; batch:
-// BATCH_X / BATCH_COND / BATCH_TAU; sweep: SWEEP_X / SWEEP_WORDS), sized by the kernel's
-// constants (STREAM_*, KEPT_MAX, BATCH_SLOTS, SWEEP_SLOTS, SWEEP_MAX_NEW). The kernel keeps the
-// tables (data), the Log kernels (its variable kinds) and the wiring: StreamConfig's constants
+// kept conditionals KEPT_R / KEPT_S / KEPT_D, their points KEPT_LIN / KEPT_NEXT, X_KEPT,
+// KEPT_PENDING / KEPT_PENDING_X; batch: BATCH_X / BATCH_COND / BATCH_TAU; sweep: SWEEP_X /
+// SWEEP_WORDS), sized by the kernel's constants (STREAM_*, KEPT_MAX, BATCH_SLOTS, SWEEP_SLOTS,
+// SWEEP_MAX_NEW). The kernel keeps the tables (data), the Log kernels (its variable kinds) and the wiring: StreamConfig's constants
 // and hooks (lm_solve, linearize, leaf_step, batch_reset / batch_in / batch_solve; the batch
 // kernel's eliminate).
 //
 // One RTL instance per kernel function: every call site of a function not inlined is its own
 // copy, so the functions that call a kernel function again after LM hold LM's body
 // (lm_solve: INLINE, fgc_lm::optimize_inline) and an ALLOCATION function ... limit=1 for
-// linearize_all, eliminate_all, back_substitute_at (stream_call, batch_kernel_solve); kept_task holds
-// reexpress and kept_walk (INLINE) and one keyframe_local, keyframe_retract and kept_matvec.
-// What stays a copy (the marginal's QR step on its own unit set 0 beside the kept net,
-// write_tau's two call sites, the kept net's datapaths) is priced by the plan
+// linearize_all, eliminate_all, back_substitute_at (window_task, batch_kernel_solve): the
+// marginal's QR step is eliminate_all's (fgc_eliminate.h's qr_eliminate_all with a leaf), on
+// LM's unit set 0; kept_task holds reexpress and kept_walk (INLINE) and one keyframe_local,
+// keyframe_retract and kept_matvec. What stays a copy (write_tau's two call sites, the kept
+// net's datapaths) is priced by the plan
 // (WindowUpdateModel.stream_units in fgc_backends/hls/plan/stream.py).
 //
 // Define the parts the design has, then include this file inside the kernel's namespace after
@@ -103,6 +106,10 @@ int STREAM_TOTAL = 0;  // keyframes since the reset call
 // X_KEPT is not the walk of the kept net as it stands: an incremental update re-expressed the
 // newest kept conditional (and kept another) without walking (op 3 or a batch step walks)
 bool KEPT_STALE = false;
+// the newest kept conditional's re-expression an update left for the next call's region (-1:
+// none), at its parent's estimate as that update left it
+int KEPT_PENDING = -1;
+T KEPT_PENDING_X[STREAM_KF_X];
 #endif
 #ifdef FGC_STREAM_SWEEP
 // batch steps as sweeps through the window (one set of units): keyframes 0 … SWEEP_SLOTS - 1 as
@@ -252,21 +259,19 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM
 // one-step policy, the step taken): slot 0's step of the update's own solve is the store (its
 // NF at mu = 0, at the call's start lin01: slots 0 and 1), no step is run again. `live`
 // (keyframe 0 has left the window): slot 0's factors that hold nothing from then on are not
-// stacked (CFG::leaf_step's, qr_eliminate_leaf's).
+// stacked (CFG::leaf_step's: qr_eliminate_all's leaf step takes LEAF_LIVE_ROWS rows).
 template <class CFG>
 bool marginalize(bool finite, bool reuse, bool live, const T lin01[2 * STREAM_KF_X]) {
+    // INLINE (CFG::leaf_step too): its QR step is LM's eliminate_all, one instance under the
+    // caller's ALLOCATION - the marginal has no unit set of its own
+#pragma HLS INLINE
     FGC_EVENT("marginal");
     if (!finite) return false;
     if (!reuse && !CFG::leaf_step(live)) return false;
     FGC_PHASE("marginal");
-    const int n0 = STEP_NF_OFF[STREAM_LEAF_STEP];
-    L rows[STREAM_KF_T * (STREAM_KF_T + 1)];
-    for (int e = 0; e < STREAM_KF_T * (STREAM_KF_T + 1); ++e) {
-#pragma HLS PIPELINE II=1
-        rows[e] = NF[n0 + e];
-    }
-    FGC_CYCLES("marginal", 0, "rows", STREAM_KF_T * (STREAM_KF_T + 1), CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    return write_tau<CFG>(rows, lin01 + STREAM_KF_X, reuse);
+    // write_tau reads the rows where the step left them (NF, slot 0's block): its sign loop
+    // reads each word once, nothing else writes NF meanwhile - no copy first
+    return write_tau<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], lin01 + STREAM_KF_X, reuse);
 }
 #endif  // FGC_STREAM_MARGINAL
 
@@ -549,44 +554,81 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
 #endif  // FGC_STREAM_BATCH
 
 #ifdef FGC_STREAM_WINDOW
-// The marginal and the kept net side by side: once the window has solved (and is linearised at
-// its optimum), slot 0's marginal (its QR step at mu = 0 on unit set 0, tau written into DATA_BUF) needs nothing
-// of the kept net, and the kept net's update (the newest conditional re-expressed at slot 0's
-// estimate, the walk back through the kept conditionals below it) nothing of the marginal's: two
-// processes of one DATAFLOW region, each on its own memories and datapaths (the marginal: AB,
-// DATA_BUF, unit set 0; the kept net: the KEPT_* memories, X_KEPT, the
-// keyframe's Log and retraction kernels), slot 0's estimate copied out of X before the region.
-// keep(first) reads the marginal's conditional and writes kept memory, so it follows the region.
-// A design without one of the two runs that process empty (each function has one call site
-// whatever the parts: the second reader reads every preprocessor branch).
+// A pass's two processes, one DATAFLOW region (window_and_kept): the window's (its solve and
+// marginal) beside the kept net's (the re-expression the update before left pending, the walk).
+// The kept net's work maintains only the kept memory, which the window's solve does not read:
+// an update re-expresses the newest kept conditional at slot 0's new estimate after its solve,
+// but leaves it pending (KEPT_PENDING, the point copied into KEPT_PENDING_X) for the next call's
+// region, where it runs beside that call's solve - or before the walk that needs it (op 3, a
+// batch step's pass -1). The arithmetic is the same whenever it runs, so are the estimates.
+// Each process on its own memories and datapaths (the window's: X, AB, DATA_BUF, COND, NF, the
+// unit sets; the kept net's: the KEPT_* memories, X_KEPT, the keyframe's Log and retraction
+// kernels); keep(first) reads the marginal's conditional and writes kept memory, so it follows
+// the region. A design without one of the two runs that process empty (each function has one
+// call site whatever the parts: the second reader reads every preprocessor branch).
+//
+// The window's process: mode 0 nothing (pass -1, op 3), 1 a sweep pass with the window full (the
+// window linearised at the estimates), 2 the update's solve (LM, then the window's rows at its
+// optimum again if LM moved after its last linearisation); then, slot ms leaving (ms ==
+// STREAM_W), the marginal. LM's functions and the marginal's are one RTL instance each (this
+// function's ALLOCATION; the hooks and marginalize INLINE): the marginal's QR step is LM's unit
+// set 0. out = {marginal code (0 none, 1 tau written, 2 singular), 1 if the one-step solve's own
+// factorisation was the store (reuse)}.
 template <class CFG>
-void marginal_task(int m, bool finite, bool reuse, bool live, const T lin01[2 * STREAM_KF_X],
-                   int code[1]) {
+void window_task(int mode, int ms, bool live, const T lin01[2 * STREAM_KF_X], T errors[2],
+                 int info[5], int result[2]) {
+#pragma HLS ALLOCATION function instances=linearize_all limit=1
+#pragma HLS ALLOCATION function instances=eliminate_all limit=1
+#pragma HLS ALLOCATION function instances=back_substitute_at limit=1
     FGC_TASK();
+    result[0] = 0;
+    result[1] = 0;
+    if (mode == 0) return;
+    bool finite = true;  // false: the window is not finite where slot 0 leaves
+    bool reuse = false;  // the one-step update took its step: its solve's factorisation is the store
+    if (mode == 2) {
+        CFG::lm_solve(errors, info);
+        reuse = ms == STREAM_W && CFG::took_step(info);
+        // the window's rows at its optimum for a leaving keyframe's marginal: AB holds them if
+        // LM stopped where it last linearised (CFG::at_linearisation), else computed again here
+        // by LM's own linearisation instance
 #ifdef FGC_STREAM_MARGINAL
-    code[0] = m == STREAM_W ? (marginalize<CFG>(finite, reuse, live, lin01) ? 1 : 2) : 0;
-#else
-    (void)m;
-    (void)finite;
-    (void)reuse;
-    (void)live;
-    (void)lin01;
-    code[0] = 0;
+        if (ms == STREAM_W && !reuse && !CFG::at_linearisation(info)) {
+            FGC_EVENT("relinearize");
+            finite = CFG::linearize(live);
+        }
 #endif
+    } else {
+        // a sweep pass, window full: slot 0 leaves at the estimates (the window linearised
+        // there by LM's instance, its step at mu = 0 by LM's unit set 0)
+        FGC_EVENT("sweep");
+        finite = CFG::linearize(live);
+    }
+#ifdef FGC_STREAM_MARGINAL
+    if (ms == STREAM_W) result[0] = marginalize<CFG>(finite, reuse, live, lin01) ? 1 : 2;
+#else
+    (void)finite;
+    (void)lin01;
+#endif
+    result[1] = reuse ? 1 : 0;
 }
 
-// The kept net's process: conditional `reexp` (-1: none) re-expressed at x0, then (walk > 0) the
-// walk back through the kept conditionals walk - 1 … 0 from x0 (their estimates into X_KEPT).
+// The kept net's process: conditional `reexp` (-1: none; the one the update before left pending)
+// re-expressed at KEPT_PENDING_X, then (walk > 0) the walk back through the kept conditionals
+// walk - 1 … 0 from x0 (their estimates into X_KEPT).
 template <class CFG>
 void kept_task(int reexp, int walk, const T x0[STREAM_KF_X]) {
-    // reexpress's passes and the walk's (both INLINE here) run one after another: one Log
-    // datapath, one retraction datapath and one matrix-vector product for all of them
-#pragma HLS ALLOCATION function instances=keyframe_local limit=1
-#pragma HLS ALLOCATION function instances=keyframe_retract limit=1
+    // reexpress's passes and the walk's (both INLINE here) run one after another: one datapath
+    // module for every Log and retraction (the kernel's keyframe_local and keyframe_retract,
+    // INLINE, are its keyframe_pass's two modes) and one matrix-vector product for all of them
+#pragma HLS ALLOCATION function instances=keyframe_pass limit=1
 #pragma HLS ALLOCATION function instances=kept_matvec<CFG> limit=1
     FGC_TASK();
 #ifdef FGC_STREAM_KEPT
-    if (reexp >= 0) reexpress<CFG>(reexp, x0);
+    if (reexp >= 0) {
+        FGC_EVENT("kept_reexpress");
+        reexpress<CFG>(reexp, KEPT_PENDING_X);
+    }
     if (walk > 0) {
         FGC_EVENT("kept_walk");
         kept_walk<CFG>(walk, x0);
@@ -599,10 +641,10 @@ void kept_task(int reexp, int walk, const T x0[STREAM_KF_X]) {
 }
 
 template <class CFG>
-void marginal_and_kept(int m, bool finite, bool reuse, bool live, const T lin01[2 * STREAM_KF_X],
-                       int reexp, int walk, const T x0[STREAM_KF_X], int code[1]) {
+void window_and_kept(int mode, int ms, bool live, const T lin01[2 * STREAM_KF_X], T errors[2],
+                     int info[5], int result[2], int reexp, int walk, const T x0[STREAM_KF_X]) {
 #pragma HLS DATAFLOW
-    marginal_task<CFG>(m, finite, reuse, live, lin01, code);
+    window_task<CFG>(mode, ms, live, lin01, errors, info, result);
     kept_task<CFG>(reexp, walk, x0);
 }
 #endif  // FGC_STREAM_WINDOW
@@ -626,12 +668,8 @@ void marginal_and_kept(int m, bool finite, bool reuse, bool live, const T lin01[
 template <class CFG>
 void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA], T x_out[N_X]
                  FGC_STREAM_KEPT_ARG, T errors[2], int info[5]) {
-    // LM (its body inlined here: CFG::lm_solve calls fgc_lm::optimize_inline) and the
-    // marginal's linearisation at the optimum run one after the other: one RTL instance of each
-    // kernel function for all their call sites (the hooks between are INLINE)
-#pragma HLS ALLOCATION function instances=linearize_all limit=1
-#pragma HLS ALLOCATION function instances=eliminate_all limit=1
-#pragma HLS ALLOCATION function instances=back_substitute_at limit=1
+    // LM, the marginal's linearisation and its QR step run in window_task (its ALLOCATION: one
+    // RTL instance of each kernel function for all their call sites)
     FGC_EVENT("call");
     if (op == 0) {  // reset: the whole window in (the slots' values, every factor's words)
         FGC_PHASE("setup");
@@ -649,6 +687,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #ifdef FGC_STREAM_KEPT
         STREAM_TOTAL = 0;
         KEPT_STALE = false;
+        KEPT_PENDING = -1;
 #endif
         errors[0] = T(0);
         errors[1] = T(0);
@@ -728,8 +767,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         // keyframe's conditional and tau are kept there once the step is taken (copied whatever
         // the policy, a word a cycle)
         T lin01[2 * STREAM_KF_X];
-        bool reuse = false;  // the one-step update took its step: its solve's factorisation is the store
-        bool finite = true;  // false: the window is not finite where slot 0 leaves
+        int mode = 0;  // the window's process: 0 nothing, 1 a sweep pass's, 2 the update's solve
         bool live = false;  // keyframe 0 has left: slot 0's factors that hold nothing are skipped
         int mc = -1;  // the pass's slot (-1: no marginal)
         if (solve) {
@@ -763,60 +801,56 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
                 lin01[k] = X[SLOT_X[k]];
             }
             FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-            if (last) {
-                CFG::lm_solve(errors, info);
-                reuse = ms == STREAM_W && CFG::took_step(info);
-                // the window's rows at its optimum for a leaving keyframe's marginal: AB holds
-                // them if LM stopped where it last linearised (CFG::at_linearisation), else
-                // computed again here, before the marginal's region, by LM's own linearisation
-                // instance
-#ifdef FGC_STREAM_MARGINAL
-                if (ms == STREAM_W && !reuse && !CFG::at_linearisation(info)) {
-                    FGC_EVENT("relinearize");
-                    finite = CFG::linearize(live);
-                }
-#endif
-            } else {
-                // a sweep pass, window full: slot 0 leaves at the estimates (the window
-                // linearised there by LM's instance, its step at mu = 0 by the marginal's)
-                FGC_EVENT("sweep");
-                finite = CFG::linearize(live);
-            }
+            mode = last ? 2 : 1;
             mc = ms;
         }
-        // the kept net's process (one call site of the region for every op and pass): an
-        // update re-expresses the newest kept conditional at slot 0's estimate (not a sweep's
-        // last pass: its conditionals hold the sweep's points); op 3 walks back from slot 0,
+        // the kept net's process (one call site of the region for every op and pass): the
+        // re-expression the update before left pending, in the first region after it (beside
+        // this update's solve, or before op 3's or pass -1's walk); op 3 walks back from slot 0,
         // pass -1 from the leaving keyframe's estimate (the walk the updates before did not
         // run), each only if the estimates are stale; a sweep's other passes run it empty
-        T x0[STREAM_KF_X];  // the kept net's parent: slot 0's estimate (pass -1: keyframe first - 1's)
+        T x0[STREAM_KF_X];  // the walk's parent: slot 0's estimate (pass -1: keyframe first - 1's)
 #ifdef FGC_STREAM_KEPT
-        FGC_PHASE("kept");
-        const bool from_kept = p < 0 && first > 0;
-        const int parent = from_kept ? (first - 1) * STREAM_KF_X : 0;
-        for (int k = 0; k < STREAM_KF_X; ++k) {
-#pragma HLS PIPELINE II=1
-            x0[k] = from_kept ? X_KEPT[parent + k] : X[SLOT_X[k]];
-        }
-        FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-        const int reexp = solve && last && !sweep ? first - 1 : -1;
+        const int reexp = KEPT_PENDING;
         const int walk = !KEPT_STALE ? 0 : p < 0 ? first - 1 : update ? 0 : first;
+        if (walk > 0) {
+            FGC_PHASE("kept");
+            const bool from_kept = p < 0;
+            const int parent = from_kept ? (first - 1) * STREAM_KF_X : 0;
+            for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+                x0[k] = from_kept ? X_KEPT[parent + k] : X[SLOT_X[k]];
+            }
+            FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        }
 #else
         const int reexp = -1, walk = 0;
 #endif
-        int code[1] = {0};
-        marginal_and_kept<CFG>(mc, finite, reuse, live, lin01, reexp, walk, x0, code);
+        int result[2] = {0, 0};  // the window's process: marginal code, reuse
+        window_and_kept<CFG>(mode, mc, live, lin01, errors, info, result, reexp, walk, x0);
         FGC_TASKS_JOIN();
 #ifdef FGC_STREAM_KEPT
+        KEPT_PENDING = -1;
         if (walk > 0) KEPT_STALE = false;
 #endif
         if (!solve) continue;
-        marginal = code[0];
+        marginal = result[0];
 #ifdef FGC_STREAM_SWEEP
         if (!last && marginal != 1) sweep_singular = true;
 #endif
 #ifdef FGC_STREAM_KEPT
-        if (mc == STREAM_W && marginal == 1) keep<CFG>(c - STREAM_W, reuse, lin01);
+        if (mc == STREAM_W && marginal == 1) keep<CFG>(c - STREAM_W, result[1] != 0, lin01);
+        if (last && !sweep && first > 0) {
+            // this update's own re-expression (the newest kept conditional at slot 0's new
+            // estimate), left pending for the next call's region: the point copied out of X
+            FGC_PHASE("kept");
+            for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+                KEPT_PENDING_X[k] = X[SLOT_X[k]];
+            }
+            FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+            KEPT_PENDING = first - 1;
+        }
 #endif
     }
     if (!update) {  // op 3: the kept keyframes' estimates out

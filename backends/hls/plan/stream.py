@@ -120,90 +120,96 @@ KEPT_SCALE_OPS = (("mul", 1), ("div", 1))  # kept_conditional: 1 / R_ii, each wo
 ARITHMETIC = ("add", "mul", "div")
 
 
-def _helper_modules(kernel) -> Counter:
-    """The operators of the helper modules one call of printed ``kernel`` instantiates (each
-    call site its own module in sequential code, one operator of each kind its body uses):
-    a Lie coefficient (lie_<X>: its series' and closed form's + × ÷, each of its square roots
-    and sines / cosines a wrapper module), so3_log once per rotation (+ × ÷, three square roots,
-    an arctangent), each square root or trigonometric call of the kernel's own."""
+# the kept net's datapath module (accel.cpp.jinja's keyframe_pass: its Log and retraction of a
+# keyframe, every helper INLINE in it): its ALLOCATION limits per arithmetic kind; each special
+# function it calls (a sine, a cosine, an arctangent) one instance
+KEPT_LIMITS = (("add", 2), ("mul", 2), ("div", 1), ("sqrt", 1))
+_SPECIAL = {"sin": "sin", "cos": "cos", "tan": "tan", "atan2": "atan2", "atan": "atan",
+            "asin": "asin", "acos": "acos"}
+
+
+def _special_functions(kernel) -> set[str]:
+    """The special functions a call of printed ``kernel`` reaches: its own trigonometric calls,
+    its Lie coefficients' closed forms', so3_log's arctangent."""
     import sympy as sp
 
-    from fgc.compiler.kernel import _op_counts
     from fgc.frontend.geometry import special
     from fgc_backends.cfamily.special import _closed_form_kernel
-    from fgc_backends.hls.units.special_ops import SO3_LOG_OPS, coefficient_ops
 
-    out: Counter = Counter()
-    rotations = set()
-    exprs = [e for _, e in kernel.assignments] + list(kernel.outputs)
-    for expr in exprs:
-        for node in sp.preorder_traversal(sp.sympify(expr)):
-            if isinstance(node, special.LieCoefficient):
-                body = dict(coefficient_ops(node.coeff_name))
-                out.update({k: 1 for k in ARITHMETIC if body.get(k)})
-                closed = _closed_form_kernel(node.coeff_name)
-                out["sqrt"] += dict(_op_counts(closed)).get("sqrt", 0)
-                out["special"] += _trig_calls(closed)
-            elif isinstance(node, special.SO3LogComponent):
-                rotations.add(node.args)
-    for _ in rotations:
-        out.update({k: 1 for k in ARITHMETIC if SO3_LOG_OPS.get(k)})
-        out["sqrt"] += SO3_LOG_OPS["sqrt"]
-        out["special"] += 1  # its arctangent
-    out["sqrt"] += dict(_op_counts(kernel)).get("sqrt", 0)
-    out["special"] += _trig_calls(kernel)
-    return out
-
-
-def _trig_calls(kernel) -> int:
-    """The trigonometric calls of ``kernel`` as printed: one a node, a power of one its
-    exponent's (the printer writes sin(x)**2 as a product of two calls)."""
-    import sympy as sp
-
-    trig = (sp.sin, sp.cos, sp.tan, sp.atan2, sp.atan, sp.acos, sp.asin)
-    calls = 0
+    names: set[str] = set()
     for expr in [e for _, e in kernel.assignments] + list(kernel.outputs):
         for node in sp.preorder_traversal(sp.sympify(expr)):
-            if isinstance(node, trig):
-                calls += 1
-            elif (node.is_Pow and isinstance(node.base, trig) and node.exp.is_Integer
-                  and node.exp > 1):
-                calls += int(node.exp) - 1
-    return calls
+            if isinstance(node, special.LieCoefficient):
+                names |= _special_functions(_closed_form_kernel(node.coeff_name))
+            elif isinstance(node, special.SO3LogComponent):
+                names.add("atan2")
+            elif isinstance(node, sp.Function) and type(node).__name__ in _SPECIAL:
+                names.add(_SPECIAL[type(node).__name__])
+    return names
 
 
-def kept_datapath_ops(layout, ops) -> tuple[tuple[str, int], ...]:
-    """One Log datapath (keyframe_local) and one retraction datapath (keyframe_retract) of a
-    keyframe's variables as accel.cpp.jinja emits them for the kept net, in sequential code:
-    each variable that is not a vector its local_<k> / retract_<k> call (a module: one operator
-    of each kind it uses, retract_<k>'s ALLOCATION limits, and its helpers' modules), a vector's
-    loop an adder in the caller's module."""
-    from fgc.compiler.kernel import _op_counts
+def _kept_kernels(layout):
+    """Per variable of a keyframe that is not a vector its Log and retraction kernels; and how
+    many tangent directions are a vector's (keyframe_pass's loops: one add each)."""
     from fgc_backends.cfamily.retract import local_kernel, retract_kernel, variable_class
-    from fgc_backends.hls.units.state_update import retract_datapath
 
     locals_, kf_vars = layout._kf_vars()
     name_of = {k.kind: k.type_name for k in locals_}
-    total: Counter = Counter()
-    flat = False
+    kernels, flat = [], 0
     for v in kf_vars:
         if v["flat"]:
-            flat = True
+            flat += v["dim"]
             continue
-        name = name_of[v["kind"]]
-        cls = variable_class(name)
-        log = local_kernel(cls)
-        counts = dict(_op_counts(log))
-        total.update({k: 1 for k in ARITHMETIC if counts.get(k)})
-        total.update(_helper_modules(log))
-        ret = retract_kernel(cls)
-        own = dict(retract_datapath(name, ops)[0])
-        counts = dict(_op_counts(ret))
-        total.update({k: own.get(k, 1) for k in ARITHMETIC if counts.get(k)})
-        total.update(_helper_modules(ret))
-    if flat:
-        total["add"] += 2  # keyframe_local's and keyframe_retract's vector loops
-    return tuple(sorted((k, n) for k, n in total.items() if n))
+        cls = variable_class(name_of[v["kind"]])
+        kernels.append((local_kernel(cls), retract_kernel(cls)))
+    return kernels, flat
+
+
+def kept_datapath_ops(layout, ops=None) -> tuple[tuple[str, int], ...]:
+    """The kept net's datapath as accel.cpp.jinja emits it: one module (keyframe_pass) for a
+    keyframe's Log and its retraction, exclusive branches, every helper INLINE in it (the Log
+    kernels, the retraction printed again, the special functions' ``kept_`` copies), sequential
+    code under its ALLOCATION: per arithmetic kind the module's operations, at most
+    :data:`KEPT_LIMITS`; each special function it calls one instance (a ``special``
+    operator). ``ops`` is not read: the limits are the design's, whatever the table."""
+    from fgc_backends.cfamily.printer import kernel_printed_ops
+    from fgc_backends.hls.units.special_ops import helper_ops
+
+    kernels, flat = _kept_kernels(layout)
+    total: Counter = Counter({"add": flat})
+    functions: set[str] = set()
+    for pair in kernels:
+        for kernel in pair:
+            total.update({k: n for k, n in kernel_printed_ops(kernel) if k in dict(KEPT_LIMITS)})
+            total.update(dict(helper_ops(kernel)))
+            functions |= _special_functions(kernel)
+    limits = dict(KEPT_LIMITS)
+    out = {k: min(limits[k], total[k]) for k in limits if total[k]}
+    if functions:
+        out["special"] = len(functions)
+    return tuple(sorted(out.items()))
+
+
+def kept_pass_bound(layout, ops) -> int:
+    """The cycles the kept datapath's ALLOCATION needs to issue one pass (a Log or a
+    retraction of a keyframe): per kind ⌈operations one pass issues (each helper's exclusive
+    branches sharing) × the operator's II / its limit⌉, the larger pass's."""
+    import math
+
+    from fgc_backends.cfamily.printer import kernel_printed_ops
+    from fgc_backends.hls.units.special_ops import helper_ops
+
+    kernels, flat = _kept_kernels(layout)
+    limits = dict(KEPT_LIMITS)
+    bound = 0
+    for which in (0, 1):  # the Log pass, the retraction pass
+        issued: Counter = Counter({"add": flat})
+        for pair in kernels:
+            issued.update({k: n for k, n in kernel_printed_ops(pair[which]) if k in limits})
+            issued.update(dict(helper_ops(pair[which], exclusive=True)))
+        bound = max([bound] + [math.ceil(n * ops.op(k).ii / limits[k])
+                               for k, n in issued.items() if k in limits and n])
+    return bound
 
 
 def _stream_phase(name: str, *loops: Loop) -> Phase:
@@ -222,7 +228,7 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
     template factors (priors holding a slot under R = I at its linearisation point: their
     whitened rows are the identity) have one non-zero a row, on their own tangent direction.
     ``leaf``: that step alone on unit set 0, without the rows of the ``drop`` factor instances
-    (not stacked: qr_eliminate_leaf's ``live``)."""
+    (not stacked: qr_eliminate_all's live leaf step)."""
     lm = t.solver.method == "lm"
     units = max(1, t.solver.units)
     procs, passed = {}, {}
@@ -383,7 +389,10 @@ class WindowUpdateModel:
                      kernel_loop("divide", n, "div", lt),
                      move("tau_out", kf + n + n * (n + 1) // 2 + 2))
         if lay.kept:  # the kept Bayes net's loops, as accel.cpp.jinja counts them
-            one = kernel_loop("pass", 1, "retract", kt)  # a Log or a retraction
+            # a Log or a retraction: the retraction-sized datapath's depth, or what its
+            # ALLOCATION needs to issue a pass if that is longer
+            one = kernel_loop("pass", 1, "retract", kt)
+            one = replace(one, depth=max(one.depth, kept_pass_bound(lay, self.plan.ops)))
             matvec = Loop("matvec", n * n, mv_ii, lt["acc"][1])
             scatter = kernel_loop("scatter", n, "scatter", lt)
             columns = tuple(Loop("column", i, 1, lt["acc"][1]) for i in range(1, n))
@@ -431,13 +440,14 @@ class WindowUpdateModel:
                     k += 1
                 else:
                     live.append(lp)
-            tail = (*commit_loops(tables, s, kt, False), move("rows", n * (n + 1)), *write_tau)
+            # write_tau reads slot 0's rows where the step left them (NF): no copy first
+            tail = (*commit_loops(tables, s, kt, False), *write_tau)
             out += [_stream_phase("marginal", *stack, *tail),
                     _stream_phase("marginal_live", *live, *tail),
                     # the one-step policy: slots 0 and 1 copied before the solve; the step
                     # taken, the solve's own NF rows are τ (no stack, QR step or commit)
                     _stream_phase("lin_points", move("x", 2 * kf)),
-                    _stream_phase("marginal_reused", move("rows", n * (n + 1)), *write_tau)]
+                    _stream_phase("marginal_reused", *write_tau)]
         if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
             out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
                     for m, d in enumerate(lay.new_dest)]
@@ -515,25 +525,22 @@ class WindowUpdateModel:
 
     def stream_units(self) -> tuple[Unit, ...]:
         """The operators the stream section's own code instantiates (fgc_stream.h, every call
-        site its own RTL copy unless an ALLOCATION shares it), names prefixed ``stream_``: the
-        marginal's QR step on its own copy of unit set 0 (SETS::leaf: it runs beside the kept
-        net's task, not in LM's module), write_tau per call site (the marginal's, a batch
-        step's), the kept net's task (reexpress and kept_walk INLINE: one Log and one retraction
-        datapath, one matrix-vector product, its loops). The window kernel's functions the
-        stream calls again after LM (linearize_all, eliminate_all, total_cost) share LM's
-        instance (stream_call's and batch_kernel_solve's ALLOCATION): no unit here."""
+        site its own RTL copy unless an ALLOCATION shares it), names prefixed ``stream_``:
+        write_tau per call site (the marginal's, a batch step's), the kept net's task
+        (reexpress and kept_walk INLINE: one datapath module for the Log and the retraction,
+        :func:`kept_datapath_ops`, one matrix-vector product, its loops). The window kernel's
+        functions the stream calls again after LM (linearize_all, eliminate_all,
+        back_substitute_at) share LM's instance (window_task's and batch_kernel_solve's
+        ALLOCATION): no unit here - the marginal's QR step too, eliminate_all's on unit set 0
+        (fgc_eliminate.h's qr_eliminate_all with a leaf)."""
         lay, units = self.layout, []
-        if self.layout_marginal:
-            units += [replace(u, name=f"stream_marginal_{u.name}", role=f"the marginal's copy: "
-                              f"{u.role}") for u in self.plan.units
-                      if u.name.startswith("qr0_") and not u.name.endswith("_backsub")]
         tau_sites = int(bool(self.layout_marginal)) + int(self.batch is not None)
         if tau_sites:
             units.append(Unit("stream_write_tau", "tau signed, its mean and words (per call "
                               "site: the marginal's, a batch step's)", tau_sites, WRITE_TAU_OPS))
         if lay.kept:
             units += [Unit("stream_kept_datapaths", "the kept net's Log and retraction "
-                           "(keyframe_local, keyframe_retract: one each)", 1,
+                           "(keyframe_pass: one module, its ALLOCATION)", 1,
                            kept_datapath_ops(lay, self.plan.ops)),
                       Unit("stream_kept_matvec", "S times a vector (kept_matvec)", 1,
                            KEPT_MATVEC_OPS),
@@ -596,9 +603,8 @@ class WindowUpdateModel:
     def duplicated(self) -> dict:
         """What the design holds twice (model estimates, DSP by the plan): per unit kind (the
         factor datapaths, the gradient, the QR units, back-substitution, the state update, LM
-        control) its DSP in the window kernel and in the batch kernel, which never run at once;
-        and the stream section's own copy of unit set 0 for the marginal. Empty without a batch
-        kernel."""
+        control) its DSP in the window kernel and in the batch kernel, which never run at once.
+        Empty without a batch kernel."""
         if self.batch is None:
             return {}
         units = self.resources()["units"]
@@ -614,10 +620,6 @@ class WindowUpdateModel:
         for part in ("window kernel", "batch kernel"):
             for name, d in units[part].items():
                 out.setdefault(kind(name), {"window kernel": 0, "batch kernel": 0})[part] += d
-        marginal = sum(d for name, d in units["stream section"].items()
-                       if name.startswith("stream_marginal_"))
-        if marginal:
-            out["QR units"]["stream section (the marginal's copy)"] = marginal
         return out
 
     def stale_after(self, keyframe: int) -> bool:
@@ -640,6 +642,33 @@ class WindowUpdateModel:
             return bool(events.get("kept_walk", 0))
         return self.stale_after(keyframe - 1)
 
+    def leaves_pending(self, keyframe: int) -> bool:
+        """Whether keyframe ``keyframe``'s update leaves the newest kept conditional's
+        re-expression pending for the next call's region (fgc_stream.h's KEPT_PENDING): an
+        incremental update with kept keyframes; not a batch step (a sweep's conditionals hold its
+        points, the batch kernel rebuilds the kept net)."""
+        lay = self.layout
+        if not lay.kept or keyframe - lay.window <= 0:
+            return False
+        if lay.sweep is not None and keyframe in lay.sweep:
+            return False
+        return self.batch is None or keyframe not in self.batch["layout"].keyframes
+
+    def _pending(self, keyframe: int, events: dict | None) -> bool:
+        """Whether the call at ``keyframe`` runs a re-expression the update before left pending:
+        counted (the ``kept_reexpress`` event) where its ``events`` are given, else when the
+        update before left one (no estimates asked for between them: op 3 would have run
+        it)."""
+        if events is not None:
+            return bool(events.get("kept_reexpress", 0))
+        return self.leaves_pending(keyframe - 1)
+
+    def _pending_term(self) -> Term:
+        return Term("kept_reexpress", self.stream["stream_kept_reexpress"], 1, False,
+                    "the newest kept conditional's re-expression the update before left pending "
+                    "(at its parent's estimate then): Log, its central-difference Jacobian (four "
+                    "datapath passes per direction of a non-vector variable), S·Log and S·J")
+
     def _walk_term(self, first: int, parent: str) -> Term:
         st = self.stream
         return Term("kept_walk", st["stream_kept_walk_base"] + first * st["stream_kept_walk_each"],
@@ -655,10 +684,13 @@ class WindowUpdateModel:
         first = max(0, keyframe - lay.window) if keyframe >= 0 else 0
         walk = (events.get("kept_walk", 0) if events is not None
                 else int(self.stale_after(keyframe)))
-        terms = [Term("kept_slot0", st["stream_kept_slot0"], 1, False,
-                      "slot 0's estimate copied out of X: the walk's first parent")]
+        pending = (events.get("kept_reexpress", 0) if events is not None
+                   else self.leaves_pending(keyframe))
+        terms = [self._pending_term()] if pending else []
         if walk and first:
-            terms.append(self._walk_term(first, "slot 0"))
+            terms += [Term("kept_slot0", st["stream_kept_slot0"], 1, False,
+                           "slot 0's estimate copied out of X: the walk's first parent"),
+                      self._walk_term(first, "slot 0")]
         if first:
             terms.append(Term("x_kept_out", first * lay.kf_words + 1, 1, False,
                               "the kept keyframes' estimates out, a word a cycle"))
@@ -694,8 +726,8 @@ class WindowUpdateModel:
                        f"{len(steps)} sweep passes with the window full: slot 0's step's "
                        "factors linearised at the estimates (LM's instance on its leaf "
                        "instances)"),
-                  Term("sweep_points", st["stream_lin_points"] + st["stream_kept_slot0"],
-                       len(steps), False, "slots 0 and 1, and slot 0 for the kept task, copied"),
+                  Term("sweep_points", st["stream_lin_points"], len(steps), False,
+                       "slots 0 and 1 copied"),
                   Term("sweep_marginal", marginal, 1, False,
                        f"keyframes 0 … {j - w - 1} leave: slot 0's QR step at μ = 0 on unit set "
                        "0, τ's signs, mean and words (the marginal's region, its kept task "
@@ -796,6 +828,8 @@ class WindowUpdateModel:
                 # the sweep starts from the kept estimates: walked first (pass -1) when the
                 # update before left them stale (counted: the kept_walk event)
                 walk = self._walks_first(keyframe, ev if events is not None else None)
+                if self._pending(keyframe, ev if events is not None else None):
+                    terms.append(self._pending_term())  # pass -1, before its walk
                 if walk and first > 1:
                     terms += [Term("kept_walk_parent", st["stream_kept_slot0"], 1, False,
                                    "the leaving keyframe's estimate copied out of the kept "
@@ -816,17 +850,22 @@ class WindowUpdateModel:
                     # update before left them stale (counted: the kept_walk event)
                     first = max(0, keyframe - lay.window)
                     walk = self._walks_first(keyframe, ev if events is not None else None)
-                    terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
-                                      "the leaving keyframe's estimate copied out of the kept "
-                                      "memory: the walk's first parent"))
+                    if self._pending(keyframe, ev if events is not None else None):
+                        terms.append(self._pending_term())  # pass -1, before its walk
                     if walk and first > 1:
-                        terms.append(self._walk_term(first - 1, "the leaving keyframe"))
+                        terms += [Term("kept_slot0", st["stream_kept_slot0"], 1, False,
+                                       "the leaving keyframe's estimate copied out of the kept "
+                                       "memory: the walk's first parent"),
+                                  self._walk_term(first - 1, "the leaving keyframe")]
                 terms += self._batch_terms(keyframe, ev)
                 terms.append(Term("x_out", st["stream_x_out"], 1, False,
                                   "the window's storage out"))
                 return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
                                    tuple(terms), STREAM_SOURCE)
         zero, unit = self.zero_factors(keyframe), lay.unit_factors(keyframe)
+        # the window's process of the update's region (fgc_stream.h's window_task): the solve,
+        # the relinearisation, the marginal; lin_points is copied before the region
+        window = []
         for g in sorted(self.group):
             trigger = PHASE_TRIGGER.get(g)
             if trigger is None:
@@ -834,67 +873,59 @@ class WindowUpdateModel:
             times = ev.get(trigger, 0)
             each = self.qr_cycles(zero, True, unit=unit) if g == "qr" else self.group[g]
             if times:
-                terms.append(Term(g, each, times, False,
-                                  f"the window's {g} phase, once per {trigger}" + (
-                                      " (on its rows non-zero in this update)" if g == "qr"
-                                      else "")))
+                window.append(Term(g, each, times, False,
+                                   f"the window's {g} phase, once per {trigger}" + (
+                                       " (on its rows non-zero in this update)" if g == "qr"
+                                       else "")))
         if ev.get("cost", 0) and self.cost_x:
-            terms.append(Term("cost_x", self.cost_x, ev["cost"], False,
-                              "the cost pass at X before LM's first linearisation"))
-        marginal = 0
+            window.append(Term("cost_x", self.cost_x, ev["cost"], False,
+                               "the cost pass at X before LM's first linearisation"))
         terms.append(Term("lin_points", st["stream_lin_points"], 1, False,
                           "slots 0 and 1 copied before the solve (the one-step policy keeps a "
                           "leaving keyframe's conditional and τ there)"))
         if m == lay.window and self.layout_marginal and self.reuses(ev):
-            marginal = st["stream_marginal_reused"]
-            terms.append(Term("marginal", marginal, 1, False,
-                              "keyframe leaving: the one-step solve's slot 0 step is the store "
-                              "(its rows at μ = 0, at the update's start): τ's signs, mean and "
-                              "words"))
+            window.append(Term("marginal", st["stream_marginal_reused"], 1, False,
+                               "keyframe leaving: the one-step solve's slot 0 step is the store "
+                               "(its rows at μ = 0, at the update's start): τ's signs, mean and "
+                               "words"))
         elif m == lay.window and self.layout_marginal:
             # the window's rows at its optimum: computed again only if LM took a step after its
-            # last linearisation (fgc_stream.h, stream_call, before the marginal's region, by
-            # LM's own linearisation instance; counted: the "relinearize" event)
+            # last linearisation (fgc_stream.h's window_task, by LM's own linearisation
+            # instance; counted: the "relinearize" event)
             relin = _relinearize(ev)
             live = keyframe >= lay.size  # keyframe 0 has left: its priors are not linearised
             if relin:
-                terms.append(Term("relinearize", st["stream_leaf_linearize"
-                                                    + ("_live" if live else "")], relin, False,
-                                  "keyframe leaving: slot 0's step's factors linearised at "
-                                  "the optimum (LM moved after its last linearisation)"))
-            marginal = (st["stream_marginal_live" if live else "stream_marginal"]
-                        + self.qr_cycles(zero, False, leaf_only=True, live=live))
-            terms.append(Term("marginal", marginal, 1, False,
-                              "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0, τ's "
-                              "signs, mean and words"))
+                window.append(Term("relinearize", st["stream_leaf_linearize"
+                                                      + ("_live" if live else "")], relin, False,
+                                   "keyframe leaving: slot 0's step's factors linearised at "
+                                   "the optimum (LM moved after its last linearisation)"))
+            window.append(Term("marginal", st["stream_marginal_live" if live else "stream_marginal"]
+                               + self.qr_cycles(zero, False, leaf_only=True, live=live), 1, False,
+                               "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0 (LM's), "
+                               "τ's signs, mean and words"))
+        terms += window
         if lay.kept:
-            terms.append(Term("kept_slot0", st["stream_kept_slot0"], 1, False,
-                              "slot 0's estimate copied out of X: the kept net's parent"))
-            # the update re-expresses the newest kept conditional (not a sweep's last pass: its
-            # conditionals hold the sweep's points); the kept keyframes' estimates are walked
-            # when asked for (price_estimates) or by the next batch step
-            kept = 0
-            if first > 0 and not sweep:
-                kept += st["stream_kept_reexpress"]
-                terms.append(Term("kept_reexpress", st["stream_kept_reexpress"], 1, False,
-                                  f"keyframe {first - 1}'s kept conditional re-expressed at "
-                                  "its parent's new estimate: Log, its central-difference "
-                                  "Jacobian (four datapath passes per direction of a "
-                                  "non-vector variable), S·Log and S·J"))
-            if ev.get("kept_walk", 0) and not sweep:  # (an update walks nothing: counted)
-                term = self._walk_term(first, "slot 0")
-                kept += term.each
-                terms.append(term)
-            if self.layout_marginal and min(marginal, kept):
-                # fgc_stream.h's marginal_and_kept: the two as processes of one DATAFLOW region
-                terms.append(Term("overlap", -min(marginal, kept), 1, False,
-                                  "the marginal and the kept net's re-expression run side by "
-                                  "side (one DATAFLOW region, no memory between them): the "
-                                  "shorter of the two is hidden behind the longer"))
+            # the re-expression the update before left pending runs beside this update's
+            # window process (one DATAFLOW region, no memory between them): the update waits for
+            # the longer of the two (a sweep ran it in its pass -1, above)
+            if not sweep and self._pending(keyframe, ev if events is not None else None):
+                kept = self._pending_term()
+                terms += [kept, Term("overlap", -min(kept.cycles, sum(t.cycles for t in window)),
+                                     1, False, "the pending re-expression beside the window's "
+                                     "solve and marginal (one DATAFLOW region): the shorter of "
+                                     "the two is hidden behind the longer")]
             if m == lay.window and self.layout_marginal:
                 terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
                                   f"keyframe {first}'s conditional (R | S | d) and its "
                                   "linearisation points kept"))
+            if first > 0 and not sweep:
+                # this update's own re-expression (keyframe first - 1's conditional at slot 0's
+                # new estimate) is left for the next call's region: its point copied out of X;
+                # the kept keyframes' estimates are walked when asked for (price_estimates) or
+                # by the next batch step
+                terms.append(Term("kept_pending", st["stream_kept_slot0"], 1, False,
+                                  f"slot 0's new estimate copied out of X: keyframe {first - 1}'s "
+                                  "kept conditional re-expressed there in the next call's region"))
         terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
         if sweep:
             return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,

@@ -3556,6 +3556,8 @@ struct LesConfig {
     static const int TRIP_ROWS = 1349;  // a factor's rows, PORTS words a cycle
     static const int TRIP_UPDATE = 481;  // a new factor, PORTS words a cycle
     static const bool BANKS_ZERO = true;  // qr_step leaves its banks zero: qr_stack writes a step's rows only
+    static const unsigned LEAF_SKIP = 0u;  // no marginal: qr_eliminate_all has no leaf step
+    static const int LEAF_LIVE_ROWS = 0;
     static const int FILL_II = 1, FILL_DEPTH = 1;
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int SCATTER_II = 1, SCATTER_DEPTH = 6;
@@ -3622,14 +3624,14 @@ void qr_level(int rows0, int f0, int s0,
 #include "fgc_eliminate.h"
 
 struct QrSets {
-    static void stack(int u, int s, T root_mu) {
-        if (u == 0) qr_stack<LesConfig>(s, root_mu, WORK0);
-        if (u == 1) qr_stack<LesConfig>(s, root_mu, WORK1);
+    static void stack(int u, int s, T root_mu, unsigned skip, int rows) {
+        if (u == 0) qr_stack_rows<LesConfig>(s, root_mu, WORK0, skip, rows);
+        if (u == 1) qr_stack_rows<LesConfig>(s, root_mu, WORK1, skip, rows);
     }
-    static void level(const bool has[2], const int s[2], bool bad[2]) {
-        qr_level(has[0] ? STEP_ROWS[s[0]] : 0, has[0] ? STEP_F[s[0]] : 0,
+    static void level(const bool has[2], const int s[2], const int rows[2], bool bad[2]) {
+        qr_level(rows[0], has[0] ? STEP_F[s[0]] : 0,
                  has[0] ? STEP_W[s[0]] - STEP_F[s[0]] : 0, WORK0, CONDBUF0, UPDBUF0, &bad[0],
-                 has[1] ? STEP_ROWS[s[1]] : 0, has[1] ? STEP_F[s[1]] : 0,
+                 rows[1], has[1] ? STEP_F[s[1]] : 0,
                  has[1] ? STEP_W[s[1]] - STEP_F[s[1]] : 0, WORK1, CONDBUF1, UPDBUF1, &bad[1]);
     }
     static void commit(int u, int s) {
