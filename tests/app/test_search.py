@@ -102,7 +102,10 @@ def test_the_search_reads_fastest_first_and_cannot_miss(programs):
     faster = result.rows[:result.rows.index(result.best)]
     assert all(r.verdict == "over" and not truth(r) for r in faster)
     assert all(r.read or not r.cost.fits for r in faster)  # every faster one the plan fits
-    assert len([r for r in faster if r.read]) == 2  # n_u=4 x2: the plan fits, the reader not
+    # at least one faster design the plan fits and the reader puts over (n_u=4 x2 here; which
+    # others come before the best depends on the plan's prices of the units)
+    refused = [key(r) for r in faster if r.read]
+    assert (4, 2, 2) in refused and all(readings[k] > 900 for k in refused)
     assert len(seen) < len(result.rows) and result.unchecked_faster == 0
     for r in result.rows:
         assert r.verdict in ("fits", "over", "unread")
