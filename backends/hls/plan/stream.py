@@ -669,6 +669,25 @@ class WindowUpdateModel:
                     "(at its parent's estimate then): Log, its central-difference Jacobian (four "
                     "datapath passes per direction of a non-vector variable), S·Log and S·J")
 
+    def _start_from_kept(self, keyframe: int, first: int, events: dict | None,
+                         parent: str) -> list:
+        """What a batch step at ``keyframe`` (a sweep, or the batch kernel's) runs before it
+        starts from the kept estimates: a pending re-expression first, then the walk back
+        through ``first`` - 1 kept conditionals when the update before left them stale
+        (:meth:`_walks_first`; counted: the ``kept_reexpress`` and ``kept_walk`` events where
+        the update's ``events`` are given), its first parent copied out of the kept memory
+        (the term ``parent``)."""
+        terms = []
+        walk = self._walks_first(keyframe, events)
+        if self._pending(keyframe, events):
+            terms.append(self._pending_term())  # pass -1, before its walk
+        if walk and first > 1:
+            terms += [Term(parent, self.stream["stream_kept_slot0"], 1, False,
+                           "the leaving keyframe's estimate copied out of the kept memory: "
+                           "the walk's first parent"),
+                      self._walk_term(first - 1, "the leaving keyframe")]
+        return terms
+
     def _walk_term(self, first: int, parent: str) -> Term:
         st = self.stream
         return Term("kept_walk", st["stream_kept_walk_base"] + first * st["stream_kept_walk_each"],
@@ -825,16 +844,9 @@ class WindowUpdateModel:
                               "the keyframe's storage and words kept as they came (a sweep "
                               "brings them in again)"))
             if sweep:
-                # the sweep starts from the kept estimates: walked first (pass -1) when the
-                # update before left them stale (counted: the kept_walk event)
-                walk = self._walks_first(keyframe, ev if events is not None else None)
-                if self._pending(keyframe, ev if events is not None else None):
-                    terms.append(self._pending_term())  # pass -1, before its walk
-                if walk and first > 1:
-                    terms += [Term("kept_walk_parent", st["stream_kept_slot0"], 1, False,
-                                   "the leaving keyframe's estimate copied out of the kept "
-                                   "memory: the walk's first parent"),
-                              self._walk_term(first - 1, "the leaving keyframe")]
+                # the sweep starts from the kept estimates (pass -1)
+                terms += self._start_from_kept(keyframe, first, ev if events is not None
+                                               else None, "kept_walk_parent")
                 terms += self._sweep_terms(keyframe)
         batch = self.batch
         if batch is not None:
@@ -845,18 +857,10 @@ class WindowUpdateModel:
                 terms.append(Term("batch_in", st[f"stream_batch_in{keyframe}"], 1, False,
                                   "the keyframe's words into the batch kernel's slot"))
             if keyframe in batch["layout"].keyframes:
-                if lay.kept:
-                    # the batch kernel starts from the kept estimates: walked first when the
-                    # update before left them stale (counted: the kept_walk event)
-                    first = max(0, keyframe - lay.window)
-                    walk = self._walks_first(keyframe, ev if events is not None else None)
-                    if self._pending(keyframe, ev if events is not None else None):
-                        terms.append(self._pending_term())  # pass -1, before its walk
-                    if walk and first > 1:
-                        terms += [Term("kept_slot0", st["stream_kept_slot0"], 1, False,
-                                       "the leaving keyframe's estimate copied out of the kept "
-                                       "memory: the walk's first parent"),
-                                  self._walk_term(first - 1, "the leaving keyframe")]
+                if lay.kept:  # the batch kernel starts from the kept estimates
+                    terms += self._start_from_kept(keyframe, max(0, keyframe - lay.window),
+                                                   ev if events is not None else None,
+                                                   "kept_slot0")
                 terms += self._batch_terms(keyframe, ev)
                 terms.append(Term("x_out", st["stream_x_out"], 1, False,
                                   "the window's storage out"))
