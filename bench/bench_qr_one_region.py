@@ -38,25 +38,6 @@ from fgc_backends.hls import HlsConfig  # noqa: E402
 from fgc_backends.hls.units import qr as qr_unit  # noqa: E402
 
 
-def _active(pattern):
-    """rows, cols (w + 1), k and each reflection's active rows (qr_unit_loops' rule)."""
-    nz = np.hstack([pattern, np.ones((len(pattern), 1), dtype=bool)])
-    rows, cols = nz.shape
-    k = min(rows, cols)
-    act = []
-    for j in range(k):
-        rj = [i for i in range(j, rows) if nz[i, j]]
-        if not rj:
-            act.append(0)
-            continue
-        a = sorted(set(rj) | {j})
-        nz[np.ix_(a, range(j + 1, cols))] = nz[a, j + 1:].any(axis=0)
-        nz[a, j] = False
-        nz[j, j] = True
-        act.append(len(a))
-    return rows, cols, k, act
-
-
 def _local(j, u, units, k, cols):
     """Unit u's first column right of j, whether it is the next pivot, its other columns."""
     c0 = j + 1 + (u - (j + 1)) % units
@@ -81,7 +62,7 @@ def _evaluate_chain(rows, j, n, ops):
 def one_region(pattern, units, ops) -> int:
     la, lm = ops.add.latency, ops.mul.latency
     tree = math.ceil(math.log2(la))
-    rows, cols, k, act = _active(pattern)
+    rows, cols, k, act = qr_unit.active_rows(pattern)
     clock = [0] * units
     start = {}
     ready = {0: _evaluate_chain(rows, -1, 0, ops)}  # reflection j's vector, v_0, tau
@@ -105,7 +86,7 @@ def one_region(pattern, units, ops) -> int:
 
 
 def loop_nest_bound(pattern, units, ops) -> int:
-    rows, cols, k, act = _active(pattern)
+    rows, cols, k, act = qr_unit.active_rows(pattern)
     total = 0
     for j in range(k):
         work = max(act[j] * _local(j, u, units, k, cols)[1] for u in range(units))

@@ -20,6 +20,31 @@ from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
 
 
+def active_rows(pattern) -> tuple[int, int, int, list[int]]:
+    """A QR step's shape and the active rows of each reflection as the units meet them:
+    ``pattern`` (rows × (f + s) structural non-zeros) with the dense right-hand side added,
+    rows, cols = w + 1, k = min(rows, cols), and per reflection j < k the count of rows j ...
+    that are non-zero in column j after the fill of the reflections before it (row j always
+    among them; 0: the column is zero and skipped)."""
+    nz = np.hstack([np.asarray(pattern, dtype=bool),
+                    np.ones((len(pattern), 1), dtype=bool)])
+    rows, cols = nz.shape
+    k = min(rows, cols)
+    active = []
+    for j in range(k):
+        rows_j = [i for i in range(j, rows) if nz[i, j]]
+        if not rows_j:
+            active.append(0)  # all zero: skipped
+            continue
+        act = sorted(set(rows_j) | {j})
+        union = nz[act, j + 1:].any(axis=0)
+        nz[np.ix_(act, range(j + 1, cols))] = union
+        nz[act, j] = False
+        nz[j, j] = True
+        active.append(len(act))
+    return rows, cols, k, active
+
+
 def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                   partials: int | None = None, name: str = "s") -> list[Loop]:
     """The loops of ``qr_step`` (backends/hls/include/fgc_qr.h) on one step, as it executes them.
@@ -36,24 +61,7 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     """
     la, lm, ld, ls = ops.add.latency, ops.mul.latency, ops.div.latency, ops.sqrt.latency
     p = partials if partials is not None else la
-    nz = np.hstack([np.asarray(pattern, dtype=bool),
-                    np.ones((len(pattern), 1), dtype=bool)])
-    rows, cols = nz.shape
-    k = min(rows, cols)
-
-    # the active rows of each column as the units meet them (the fill of earlier reflections)
-    active = []
-    for j in range(k):
-        rows_j = [i for i in range(j, rows) if nz[i, j]]
-        if not rows_j:
-            active.append(0)  # all zero: skipped
-            continue
-        act = sorted(set(rows_j) | {j})
-        union = nz[act, j + 1:].any(axis=0)
-        nz[np.ix_(act, range(j + 1, cols))] = union
-        nz[act, j] = False
-        nz[j, j] = True
-        active.append(len(act))
+    rows, cols, k, active = active_rows(pattern)
     tree = math.ceil(math.log2(p)) if p > 1 else 0
     tree1 = math.ceil(math.log2(p + 1))  # the fold of the P partials and the pivot's term
     out = []
