@@ -103,6 +103,26 @@ def _processes_in(folder: Path) -> list[str]:
     return found
 
 
+def _args(name: str, spec: Path, cache: Path, out: Path) -> list[str]:
+    """Command ``name``'s arguments; a native command's build removed first (a cold build: the
+    interrupt lands in make or g++ most often)."""
+    if "native" in name:
+        shutil.rmtree(cache / "native", ignore_errors=True)
+    return [a.format(spec=spec, out=out) for a in {**COMMANDS, **MORE_COMMANDS}[name]]
+
+
+def _duration(name: str, spec: Path, cache: Path, work: Path) -> float:
+    """Seconds command ``name`` takes uninterrupted on this machine (it must succeed)."""
+    out, tmp = work / "out", work / "tmp"
+    out.mkdir(parents=True)
+    tmp.mkdir()
+    start = time.monotonic()
+    done = subprocess.run([sys.executable, "-m", "fgc_cli", *_args(name, spec, cache, out)],
+                          env=_env(tmp, cache), capture_output=True, text=True, timeout=900)
+    assert done.returncode == 0, (name, done.stderr[-2000:])
+    return time.monotonic() - start
+
+
 def _default_sigint() -> None:
     """Ctrl-C's default action in the command's process: a shell without job control starts a
     background job (``pytest &``) with SIGINT ignored, the command would inherit that and
@@ -116,9 +136,7 @@ def interrupt(name: str, delay: float, spec: Path, cache: Path, work: Path) -> s
     out, tmp = work / "out", work / "tmp"
     out.mkdir(parents=True)
     tmp.mkdir()
-    if "native" in name:  # a cold build: the interrupt lands in make or g++ most often
-        shutil.rmtree(cache / "native", ignore_errors=True)
-    args = [a.format(spec=spec, out=out) for a in {**COMMANDS, **MORE_COMMANDS}[name]]
+    args = _args(name, spec, cache, out)
     proc = subprocess.Popen([sys.executable, "-m", "fgc_cli", *args], env=_env(tmp, cache),
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                             start_new_session=True, preexec_fn=_default_sigint)
@@ -152,13 +170,17 @@ def _interrupts(n: int, setup, tmp_path, max_delay: float, names=tuple(COMMANDS)
     spec, cache = setup
     rng = random.Random(34)
     counts = {"interrupted": 0, "finished": 0}
+    took = {}  # each command's uninterrupted time here: a delay lands within it
     for i in range(n):
         name = names[i % len(names)]
-        counts[interrupt(name, rng.uniform(0.4, max_delay), spec, cache,
-                         tmp_path / f"case{i}")] += 1
+        if name not in took:
+            took[name] = _duration(name, spec, cache, tmp_path / f"timed{len(took)}")
+        delay = min(rng.uniform(0.4, max_delay), 0.8 * took[name])
+        counts[interrupt(name, delay, spec, cache, tmp_path / f"case{i}")] += 1
     print(f"{n} interrupts:", counts)
-    # the delays reach into the work at least once (how often depends on the machine's speed:
-    # a command may finish first, which is checked as cleanly as an interrupt)
+    # the delays reach into the work at least once (each at most 0.8 of the command's own time
+    # here, so a faster machine does not outrun them all; a command may still finish first,
+    # which is checked as cleanly as an interrupt)
     assert counts["interrupted"] >= 1, counts
     return counts
 
