@@ -24,8 +24,10 @@ pivot's CPE into a merger that adds B's Grams and feeds CPE f_A: :func:`pair_pas
 DATAFLOW, no feedback channel, unlike ``flight``, whose next step's feed reads the drain of the same
 cascade), ``loop`` (``flight`` as docs/hls.md says Vitis would build it: the first solve's region
 loop a dataflow loop, each process a region after its last one and its inputs, no pass boundaries:
-:func:`loop_model`). ``third`` is a built design option, not a what-if: the HGC's third entries lane
-with two cascades (``hgc_third_lane``, units/cholesky.py's gram_third: the IMU Grams at the
+:func:`loop_model`), ``tail`` (the first solve's end on two cascades: the root's other child
+added by the source, its conditional streamed to the committer beside its cascade:
+:func:`tail_passes`). ``third`` is a built design option, not a what-if: the HGC's third entries
+lane with two cascades (``hgc_third_lane``, units/cholesky.py's gram_third: the IMU Grams at the
 datapath's pace, 166 words an instance instead of 248; it replaced the ``prod2`` what-if, which
 halved the words an instance, more than two-port memories can take). Built since this was written
 too: the grams process storing the two steps' first Grams side by side (fgc_cascades.h's
@@ -79,11 +81,46 @@ def what_if(pieces: set[str]) -> None:
         return out
 
     ch.cascades_phases = phases
+    if "tail" in pieces:
+        ch.beside_set_passes = tail_passes(ch.beside_set_passes)
     if "pair" in pieces:
         ch.beside_set_passes = pair_passes(ch.beside_set_passes)
     if "loop" in pieces:
         ch.beside_set_passes, ch.beside_cycles = loop_model(ch.beside_set_passes,
                                                             ch.beside_cycles)
+
+
+def tail_passes(base_passes):
+    """The ``tail`` what-if (the first solve's end on two cascades, not built): the root
+    region's child from the other cascade added by the source as it streams the root's words
+    (a second adder a lane: the source's depth + La) instead of a pass of its own, and the
+    root's conditional streamed from its drain to the committer (which copies it into COND
+    beside the root's cascade, after the region before's), so the last pass is the root's
+    pivot check alone, not its copy (fgc_cascades.h's committer alone: 465 pairs)."""
+
+    def passes(tables, order, dims, cpe, ops, timing, *args, **kw):
+        out = base_passes(tables, order, dims, cpe, ops, timing, *args, **kw)
+        regions = [k for k, (ph, _) in enumerate(out) if ph.name.startswith("recholesky")]
+        if len(regions) < 2:
+            return out
+        root, last = regions[-2], regions[-1]
+        before = out[root - 1][0]
+        if before.name.startswith("reassemble_level") and all(
+                p.name.startswith("alone") for p in before.processes):
+            ph, gate = out[root]
+            out[root] = (replace(ph, processes=tuple(
+                replace(p, loops=(*p.loops[:-1], replace(p.loops[-1], depth=p.loops[-1].depth
+                                                         + ops.add.latency)))
+                if p.name.startswith("source") else p for p in ph.processes)), gate)
+            del out[root - 1]
+            last -= 1
+        ph, gate = out[last]
+        out[last] = (replace(ph, processes=tuple(replace(p, loops=tuple(
+            lp for lp in p.loops if lp.name.endswith(("_scale", "_pivot_check"))))
+            for p in ph.processes)), gate)
+        return out
+
+    return passes
 
 
 def _joined(name: str, procs: list) -> tuple:
@@ -403,7 +440,8 @@ def main() -> None:
     if args.pieces:
         base = {"cpe": 40, "sets": 2, "lanes": 2}
         rows = [(), ("third",), ("flight",), ("flight", "third"), ("pair",), ("pair", "third"),
-                ("loop",), ("loop", "third")]
+                ("loop",), ("loop", "third"), ("tail",), ("tail", "third"),
+                ("tail", "flight", "third"), ("tail", "loop", "third")]
         saved = ch.cascades_phases, ch.beside_set_passes, ch.beside_cycles
         for pieces in rows:
             what_if(set(pieces))
