@@ -392,6 +392,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     # back_substitute's trial_cost (units/datapath.py): its loops' tables, II and depth
     trial = _trial_context(program, context["blocks"], blocks, phase)
     from fgc_backends.hls.units.datapath import trial_banked, trial_span
+    from fgc_backends.hls.units.lm_control import retire_step_test
     # the column design: trial_cost's gathers from DATA_BUF's two banks (units/datapath.py)
     trial_spans = [trial_span(bc) for bc in context["blocks"]] \
         if trial_banked(program, plan.options) else None
@@ -418,6 +419,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "robust_any": any(m.robust for b in blocks for m in b.members),
             # the gradient pass gives LM the cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE)
             "cost_in_lin": cost_in_linearization(program),
+            # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
+            # the copies into X (units/lm_control.py's retire_step_test)
+            "retire_test": retire_step_test(program, plan.options),
             "small": shared,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's schedule: (solve step, load step, solving lane) per slot

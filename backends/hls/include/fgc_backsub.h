@@ -936,6 +936,13 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
     FGC_SEQUENTIAL();  // csim cycle counting only: the column region's records end here
     FGC_OUTER_BRANCH();
     L delta[CFG::N_TANGENT];  // the solved entries by tangent index
+#ifdef FGC_BS_STEP_TEST
+    // LM's step test (the kernel's FGC_BS_STEP_TEST): |delta|^2, delta^T g and delta's
+    // finiteness summed a variable an iteration (the variable's terms from retract_variable; a
+    // sum's add is its carried dependence, its latency within RETIRE_II), to CFG::retire_test
+    typename CFG::TestT dd = 0, dg = 0;
+    bool fin = true;
+#endif
     for (int i = 0; i < CFG::N_VARIABLES; ++i) {
 #pragma HLS PIPELINE II=CFG::RETIRE_II
         const int s = RETIRE_STEP[i];
@@ -956,9 +963,21 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
                 }
             }
         }
+#ifdef FGC_BS_STEP_TEST
+        typename CFG::TestT vd = 0, vg = 0;
+        bool vf = true;
+        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, vd, vg, vf);  // its words on to trial_cost
+        dd += vd;
+        dg += vg;
+        fin = fin && vf;
+#else
         CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx);  // its words on to trial_cost
+#endif
         FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
     }
+#ifdef FGC_BS_STEP_TEST
+    CFG::retire_test(dd, dg, fin);
+#endif
 }
 
 // Back-substitution by columns: the loader, the two ends, the state update beside them and

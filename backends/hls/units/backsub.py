@@ -11,7 +11,7 @@ import dataclasses
 import math
 
 from fgc_backends.cost.operators import OperatorTable
-from fgc_backends.hls.plan.binding import BoundLoop, sum_operators
+from fgc_backends.hls.plan.binding import BoundLoop, bound_unit, sum_operators
 from fgc_backends.hls.plan.loops import _ceil_log2, _ported, _region_cycles, dot_loop, kernel_loop
 from fgc_backends.hls.plan.model import PORTS, Channel, Loop, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
@@ -645,6 +645,14 @@ def column_build(ctx) -> None:
     ctx.units.append(Unit(name, "back-substitution by columns, one per end of the chain "
                           "(the column pass: U multiply-subtracts, the ingestion's 1 / R_ii "
                           "and scaling)", 2, column_operators(ops)))
+    from fgc_backends.hls.units.lm_control import retire_step_test, retire_test_loop
+    if retire_step_test(program, ctx.opts):  # LM's step test in the state update's loop
+        from fgc_backends.hls.units.state_update import retire_timing
+        ii, _ = retire_timing(program.variables, ctx.ops, ctx.sizes["MAX_F"],
+                              ctx.opts.state_allocation)
+        ctx.units.append(bound_unit("retire_step_test", "LM's step test summed in the state "
+                                    "update (|δ|², δᵀg a variable an iteration)",
+                                    (retire_test_loop(program, ii),), table=ctx.ops))
     column_phases(ctx, name)
 
 
