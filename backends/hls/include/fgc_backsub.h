@@ -937,10 +937,10 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
     FGC_OUTER_BRANCH();
     L delta[CFG::N_TANGENT];  // the solved entries by tangent index
 #ifdef FGC_BS_STEP_TEST
-    // LM's step test (the kernel's FGC_BS_STEP_TEST): |delta|^2, delta^T g and delta's
-    // finiteness summed a variable an iteration (the variable's terms from retract_variable; a
+    // LM's step test (the kernel's FGC_BS_STEP_TEST): |delta|^2, delta^T g, delta's finiteness
+    // and the gradient's largest |entry| summed a variable an iteration (the variable's terms from retract_variable; a
     // sum's add is its carried dependence, its latency within RETIRE_II), to CFG::retire_test
-    typename CFG::TestT dd = 0, dg = 0;
+    typename CFG::TestT dd = 0, dg = 0, gm = 0;  // (and the gradient's largest |entry|)
     bool fin = true;
 #endif
     for (int i = 0; i < CFG::N_VARIABLES; ++i) {
@@ -964,11 +964,12 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
             }
         }
 #ifdef FGC_BS_STEP_TEST
-        typename CFG::TestT vd = 0, vg = 0;
+        typename CFG::TestT vd = 0, vg = 0, vm = 0;
         bool vf = true;
-        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, vd, vg, vf);  // its words on to trial_cost
+        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, vd, vg, vm, vf);  // its words on to trial_cost
         dd += vd;
         dg += vg;
+        gm = vm > gm ? vm : gm;
         fin = fin && vf;
 #else
         CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx);  // its words on to trial_cost
@@ -976,7 +977,7 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
         FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
     }
 #ifdef FGC_BS_STEP_TEST
-    CFG::retire_test(dd, dg, fin);
+    CFG::retire_test(dd, dg, gm, fin);
 #endif
 }
 

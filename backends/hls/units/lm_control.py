@@ -19,8 +19,8 @@ from fgc_backends.hls.units.spec import UnitSpec
 def retire_step_test(program, opts) -> bool:
     """Whether the emitted kernel forms LM's step test in back_substitute's state update
     (accel.cpp.jinja's ``retire_test``): Cholesky with back-substitution by columns (never an
-    on-chip stream's design: those refuse the column width). Then |δ|², δᵀg and δ's finiteness
-    are summed by ``backsub_retire_cols`` a variable an iteration at its II (the state update's
+    on-chip stream's design: those refuse the column width). Then |δ|², δᵀg, δ's finiteness
+    and the gradient's largest |entry| (tested after the solve) are summed by ``backsub_retire_cols`` a variable an iteration at its II (the state update's
     loop; its operators :func:`retire_test_loop`), |X| by the copies into X (the top's x_in, the
     accepted step's), G zeroed by those copies (no zeroing pass before a linearisation): LM
     control keeps the gradient's maximum, the step test's scalars and the decision, the copy."""
@@ -31,9 +31,11 @@ def retire_step_test(program, opts) -> bool:
 def retire_test_loop(program, ii: int) -> BoundLoop:
     """The step test's operators in the state update's loop (II ``ii``): per variable of the
     widest tangent its δ_k² and δ_k g_k (a multiply each) and their two sums (a chain of adds
-    each, the running sums' add included), shared at that II as Vitis binds a pipelined loop."""
+    each, the running sums' add included), |g_k| against the variable's maximum and that against
+    the running one (compares), shared at that II as Vitis binds a pipelined loop."""
     w = max(v.dim for v in program.variables)
-    return BoundLoop("retire_step_test", (("add", 2 * w), ("mul", 2 * w)), ii)
+    return BoundLoop("retire_step_test", (("add", 2 * w), ("mul", 2 * w), ("compare", w + 1)),
+                     ii)
 
 
 def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
@@ -68,7 +70,10 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict,
     from the state update, so ``iterate`` is the gradient's maximum alone, ``decide`` the step
     test's scalars (μ‖δ‖², + δᵀg) and the decision, and ``accept`` copies x and sums |x|² two
     words a cycle (the next linearisation's |X|) while it zeroes G for the next linearisation,
-    one loop over the longer."""
+    one loop over the longer; no ``lm_iteration``: the state update finds the gradient's largest
+    entry too and fgc_lm.h tests it after the solve (FGC_LM_GRADIENT_IN_SOLVE; the gradient's
+    own pass, ``lm_gradient_max``, runs only where no solve of a linearisation succeeded, before
+    LM gives up: once a run at most, not priced)."""
     tail = timing["acc"][1]  # after the folds: μ‖δ‖², then δᵀg + μ‖δ‖²
     # (the maxima as many as the sums: lm_iterate's one DEPENDENCE distance, PARTIALS)
     _, gii, gdepth = pair_dot(n_t, timing, kind="max", partials=timing["acc"][0])
@@ -77,9 +82,7 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict,
     step = pair_dot(n_t, timing, extra=tail)
     if retire_test:
         longer = _ported(max(n_t, n_x))
-        return (Phase("lm_iteration", False, (Process("iterate", "lm_control", (
-                    Loop("gradient_max", _ported(n_t), gii, gdepth),)),)),
-                Phase("lm_control", False, (Process("decide", "lm_control", (
+        return (Phase("lm_control", False, (Process("decide", "lm_control", (
                     Loop("step_scalars", 1, 1, tail),
                     kernel_loop("decision", 1, "decision", timing))),)),
                 Phase("lm_accept", False, (Process("accept", "lm_control", (
