@@ -261,7 +261,8 @@ typename CFG::T lm_accept_norm(typename CFG::T x[CFG::N_X], const typename CFG::
 }
 
 // lm_top for the column design: |x|^2 of the words coming in (PARTIALS interleaved partial
-// sums, a word a cycle) into xx, and G zeroed beside the data's copy, before optimize
+// sums, a word a cycle) into xx, and G zeroed beside the data's copy (each data word also to
+// CFG::data_word: a kernel's second copy of some), before optimize
 template <class CFG>
 void lm_top_norm(const typename CFG::T x_in[CFG::N_X], const typename CFG::T data[CFG::N_DATA],
                  typename CFG::T x_out[CFG::N_X], typename CFG::T x[CFG::N_X],
@@ -287,7 +288,10 @@ void lm_top_norm(const typename CFG::T x_in[CFG::N_X], const typename CFG::T dat
     const int N_ZERO = CFG::N_DATA > CFG::N_TANGENT ? CFG::N_DATA : CFG::N_TANGENT;
     for (int i = 0; i < N_ZERO; ++i) {
 #pragma HLS PIPELINE II=1
-        if (i < CFG::N_DATA) data_buf[i] = data[i];
+        if (i < CFG::N_DATA) {
+            data_buf[i] = data[i];
+            CFG::data_word(i, data[i]);  // (a second copy of some words: the kernel's)
+        }
         if (i < CFG::N_TANGENT) g[i] = T(0);
     }
     FGC_CYCLES("top", 0, "x_in", CFG::N_X, dot_ii(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT),

@@ -579,11 +579,16 @@ def _solve_phase(ctx, unit: str, solver: Process, busy: int, region: int,
     cost at X_TRIAL (units.datapath's trial_cost), fed the retired variables' storage words, a
     variable a stream word (as deep as the state: the retire never waits for it; ``var_end``:
     when each variable is retired)."""
-    from fgc_backends.hls.units.datapath import trial_end
-    cost = max(region, trial_end(ctx.shared["trial_loops"], var_end))
+    from fgc_backends.hls.units.datapath import trial_end, trial_positions, trial_split
+    pos = trial_positions(ctx.program, ctx.tables) if trial_split(ctx.program, ctx.opts) else None
+    cost = max(region, trial_end(ctx.shared["trial_loops"], var_end, pos))
     words = max(v.storage_dim for v in ctx.program.variables)
     ctx.channels.append(Channel("trial_tx", "stream", len(ctx.program.variables),
                                 words * ctx.ops.word_bits, "backsub_retire", "trial_cost"))
+    if any(lp.proc == 1 for lp in ctx.shared["trial_loops"]):  # the second cost process's
+        ctx.channels.append(Channel("trial_tx2", "stream", len(ctx.program.variables),
+                                    words * ctx.ops.word_bits, "backsub_retire",
+                                    "trial_cost_b"))
     ctx.add_phase("solve", Phase("backsub", False, (
         solver,
         Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - busy),)
