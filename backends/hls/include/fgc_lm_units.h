@@ -33,6 +33,12 @@ inline int pair_ii(int words, int partials, int lat) {
     return dot_ii(ceil_div(words, 2), partials, lat);
 }
 inline int larger(int a, int b) { return a > b ? a : b; }
+// pair_depth for four words a cycle (lm_accept_norm: four lanes of partials folded together)
+inline int quad_depth(int words, int partials, int lat, int lead) {
+    const int trip = ceil_div(words, 4);
+    const int k = trip < partials ? (trip < 1 ? 1 : trip) : partials;
+    return lead + lat * (1 + ceil_log2(4 * k));
+}
 inline int pair_depth(int words, int partials, int lat, int lead) {
     const int trip = ceil_div(words, 2);
     const int k = trip < partials ? (trip < 1 ? 1 : trip) : partials;
@@ -222,28 +228,30 @@ bool lm_step_sums(bool solved, typename CFG::T mu, typename CFG::T dd, typename 
     return solved && finite;
 }
 
-// x = x_trial two words a cycle, |x|^2 of the words copied into 2 PARTIALS partial sums (the
-// next linearisation's |X|), and G zeroed two words a cycle for the next linearisation (G's
-// last reader, the step test's sums, ran in the solve before): one loop over the longer
+// x = x_trial four words a cycle (the kernel partitions x, x_trial and g cyclic 2: two banks of
+// two ports each, word e + h in bank h % 2), |x|^2 of the words copied into 4 PARTIALS partial
+// sums (the next linearisation's |X|), and G zeroed four words a cycle for the next
+// linearisation (G's last reader, the step test's sums, ran in the solve before): one loop
+// over the longer
 template <class CFG>
 typename CFG::T lm_accept_norm(typename CFG::T x[CFG::N_X], const typename CFG::T x_trial[CFG::N_X],
                                typename CFG::T g[CFG::N_TANGENT]) {
 #pragma HLS INLINE
     typedef typename CFG::T T;
-    T xp[2 * CFG::PARTIALS];
+    T xp[4 * CFG::PARTIALS];
 #pragma HLS ARRAY_PARTITION variable=xp complete
-    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
+    for (int p = 0; p < 4 * CFG::PARTIALS; ++p) {
 #pragma HLS UNROLL
         xp[p] = T(0);
     }
     const int N_LONGER = CFG::N_X > CFG::N_TANGENT ? CFG::N_X : CFG::N_TANGENT;
-    for (int e = 0; e < N_LONGER; e += 2) {
+    for (int e = 0; e < N_LONGER; e += 4) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS
-        for (int h = 0; h < 2; ++h) {
+        for (int h = 0; h < 4; ++h) {
 #pragma HLS UNROLL
             const int i = e + h;
-            const int k = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
+            const int k = h * CFG::PARTIALS + (e >> 2) % CFG::PARTIALS;
             if (i < CFG::N_X) {
                 const T v = x_trial[i];
                 x[i] = v;
@@ -254,10 +262,10 @@ typename CFG::T lm_accept_norm(typename CFG::T x[CFG::N_X], const typename CFG::
     }
     FGC_EVENT("accept");
     FGC_PHASE("lm_accept");
-    FGC_CYCLES("accept", 0, "accept", ceil_div(N_LONGER, 2),
-               pair_ii(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT),
-               pair_depth(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT));
-    return fold_partials<T, 2 * CFG::PARTIALS>(xp);
+    FGC_CYCLES("accept", 0, "accept", ceil_div(N_LONGER, 4),
+               dot_ii(ceil_div(CFG::N_X, 4), CFG::PARTIALS, CFG::ADD_LAT),
+               quad_depth(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT));
+    return fold_partials<T, 4 * CFG::PARTIALS>(xp);
 }
 
 // lm_top for the column design: |x|^2 of the words coming in (PARTIALS interleaved partial

@@ -20,7 +20,8 @@ def retire_step_test(program, opts) -> bool:
     """Whether the emitted kernel forms LM's step test in back_substitute's state update
     (accel.cpp.jinja's ``retire_test``): Cholesky with back-substitution by columns (never an
     on-chip stream's design: those refuse the column width). Then |δ|², δᵀg, δ's finiteness
-    and the gradient's largest |entry| (tested after the solve) are summed by ``backsub_retire_cols`` a variable an iteration at its II (the state update's
+    and the gradient's largest |entry| (tested after the solve) are summed by
+    ``backsub_retire_cols`` a variable an iteration at its II (the state update's
     loop; its operators :func:`retire_test_loop`), |X| by the copies into X (the top's x_in, the
     accepted step's), G zeroed by those copies (no zeroing pass before a linearisation): LM
     control keeps the gradient's maximum, the step test's scalars and the decision, the copy."""
@@ -38,19 +39,23 @@ def retire_test_loop(program, ii: int) -> BoundLoop:
                      ii)
 
 
+ACCEPT_PORTS = 4  # the column design's accepted copy: X, X_TRIAL and G cyclic 2 (two ports each)
+
+
 def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
-             partials: int | None = None) -> tuple[int, int, int]:
+             partials: int | None = None, lanes: int = PORTS) -> tuple[int, int, int]:
     """(trip, II, depth) of a reduction of ``words`` terms two a cycle (fgc_lm_units.h's
     pair_ii / pair_depth: the memories' two ports): lane h of a pair into its own ``ii`` =
     latency interleaved partials (the dot-product rule, :func:`kernel_dot`, on a lane's trip),
     the 2k partials folded in a tree; ``kind`` the recurrence (``acc`` a sum: the multiply
     ahead; ``max`` a running maximum: the read and |·| ahead), ``extra`` the latency the loop
     adds around it (the step test's μ‖δ‖² after the folds); ``partials``: a lane's partials if not
-    the recurrence's latency (lm_iterate's maxima: as many as its sums)."""
+    the recurrence's latency (lm_iterate's maxima: as many as its sums); ``lanes``: words a
+    cycle (lm_accept_norm's four: :data:`ACCEPT_PORTS`)."""
     ii, depth = timing[kind]
-    trip = -(-words // PORTS)
+    trip = -(-words // lanes)
     k = max(1, min(trip, ii if partials is None else partials))
-    return trip, math.ceil(ii / k), extra + (depth - ii) + ii * (1 + _ceil_log2(2 * k))
+    return trip, math.ceil(ii / k), extra + (depth - ii) + ii * (1 + _ceil_log2(lanes * k))
 
 
 def lm_control_phases(n_t: int, n_x: int, timing: dict,
@@ -68,9 +73,10 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict,
     a word) and adds μ‖δ‖² to the latter after the folds (δᵀ(g + μδ)), a multiply and an add
     more in its depth. ``retire_test`` (:func:`retire_step_test`): the step test's sums come
     from the state update, so ``iterate`` is the gradient's maximum alone, ``decide`` the step
-    test's scalars (μ‖δ‖², + δᵀg) and the decision, and ``accept`` copies x and sums |x|² two
-    words a cycle (the next linearisation's |X|) while it zeroes G for the next linearisation,
-    one loop over the longer; no ``lm_iteration``: the state update finds the gradient's largest
+    test's scalars (μ‖δ‖², + δᵀg) and the decision, and ``accept`` copies x and sums |x|² four
+    words a cycle (the next linearisation's |X|; X, X_TRIAL and G cyclic 2: :data:`ACCEPT_PORTS`)
+    while it zeroes G four words a cycle for the next linearisation, one loop over the longer;
+    no ``lm_iteration``: the state update finds the gradient's largest
     entry too and fgc_lm.h tests it after the solve (FGC_LM_GRADIENT_IN_SOLVE; the gradient's
     own pass, ``lm_gradient_max``, runs only where no solve of a linearisation succeeded, before
     LM gives up: once a run at most, not priced)."""
@@ -81,12 +87,14 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict,
     trip = _ported(max(n_t, n_x))  # one loop over the longer of the two
     step = pair_dot(n_t, timing, extra=tail)
     if retire_test:
-        longer = _ported(max(n_t, n_x))
+        # X, X_TRIAL and G cyclic 2 (ACCEPT_PORTS words a cycle): four lanes of partials
+        quad = -(-max(n_t, n_x) // ACCEPT_PORTS)
+        _, qii, qdepth = pair_dot(n_x, timing, lanes=ACCEPT_PORTS)
         return (Phase("lm_control", False, (Process("decide", "lm_control", (
                     Loop("step_scalars", 1, 1, tail),
                     kernel_loop("decision", 1, "decision", timing))),)),
                 Phase("lm_accept", False, (Process("accept", "lm_control", (
-                    Loop("accept", longer, xii, xdepth),)),)))
+                    Loop("accept", quad, qii, qdepth),)),)))
     return (Phase("lm_iteration", False, (Process("iterate", "lm_control", (
                 Loop("gradient_x_norm", trip, max(gii, xii), max(gdepth, xdepth)),)),)),
             Phase("lm_control", False, (Process("decide", "lm_control", (
@@ -160,11 +168,11 @@ def build(ctx) -> None:
     # one adder), and the block types' running sums (one adder)
     fused = retire_step_test(program, ctx.opts)
     if fused:  # (the step test's sums: the state update's loop, units/backsub.py)
-        # the gradient's maximum (two compares a cycle), the accepted copy's |x|² (two
+        # the gradient's maximum (two compares a cycle), the accepted copy's |x|² (four
         # multiply-adds a cycle; INLINE: its fold shares the decision's operators), lm_top_norm's
         # x_in |x|² (a multiply-add a cycle) and its fold (its own function: one adder)
         loops = [BoundLoop("gradient_max", (("compare", 2),), 1),
-                 BoundLoop("accept_norm", (("add", 2), ("mul", 2)), 1),
+                 BoundLoop("accept_norm", (("add", ACCEPT_PORTS), ("mul", ACCEPT_PORTS)), 1),
                  BoundLoop("x_in_norm", (("add", 1), ("mul", 1)), 1),
                  BoundLoop("x_in_fold", (("add", 1),), 0),
                  BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
