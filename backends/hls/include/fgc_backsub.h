@@ -990,6 +990,11 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
 #else
 #define FGC_BS_TX2
 #endif
+#ifdef FGC_BS_TRIAL_B  // the kernel's second cost process (units/datapath.py's split_trial_loops)
+#define FGC_BS_COST_B(s) trial_cost_b(s)
+#else
+#define FGC_BS_COST_B(s) ((void)0)
+#endif
 
 // Back-substitution by columns: the loader, the two ends, the state update beside them and
 // the cost at X_TRIAL beside that. at_x: no solve, the cost at X.
@@ -1018,9 +1023,7 @@ void back_substitute(bool at_x) {
     backsub_end1<CFG>(g1, dx1, xroot, at_x);
     backsub_retire_cols<CFG>(dx0, dx1, tx, FGC_BS_TX2 at_x);
     trial_cost(tx);
-#ifdef FGC_BS_TRIAL_B
-    trial_cost_b(tx2);
-#endif
+    FGC_BS_COST_B(tx2);
     FGC_OUTER_JOIN();
     FGC_DRAINED(&g0, 1);
     FGC_DRAINED(&g1, 1);
