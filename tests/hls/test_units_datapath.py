@@ -104,9 +104,11 @@ def _kernel_calls(text: str, block: int) -> tuple[str, str]:
 
 def _trial_loops(text: str, loops) -> dict:
     """Per key of trial_cost's loops (a block type, or "small") its reading among ``loops``
-    (the second reader's): the first of trial_cost's after the loop's comment."""
+    (the second reader's): the first of trial_cost's (or trial_cost_b's, the column design's
+    LM: units/datapath.py's split_trial_loops) after the loop's comment."""
     at = text.index("void trial_cost(")
-    mine = sorted((r for r in loops if r.function == "trial_cost"), key=lambda r: r.line)
+    mine = sorted((r for r in loops if r.function in ("trial_cost", "trial_cost_b")),
+                  key=lambda r: r.line)
     out = {}
     for m in re.finditer(r"\n    // (?:block (\d+)|the small datapath) \(", text[at:]):
         line = text.count("\n", 0, at + m.start() + 1) + 1  # the comment's line

@@ -932,11 +932,7 @@ void backsub_end1(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::strea
 // x_{f-1} first, into its copy of delta and DELTA (LM control's step test reads it).
 template <class CFG>
 void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
-                         hls::stream<TrialVar>& tx,
-#ifdef FGC_BS_STEP_TEST
-                         hls::stream<TrialVar>& tx2,  // (the second cost process's variables)
-#endif
-                         bool at_x) {
+                         hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2, bool at_x) {
     FGC_SEQUENTIAL();  // csim cycle counting only: the column region's records end here
     FGC_OUTER_BRANCH();
     L delta[CFG::N_TANGENT];  // the solved entries by tangent index
@@ -982,19 +978,10 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
     }
 #ifdef FGC_BS_STEP_TEST
     CFG::retire_test(dd, dg, gm, fin);
+#else
+    (void)tx2;  // (written only with the kernel's second cost process)
 #endif
 }
-
-#ifdef FGC_BS_STEP_TEST
-#define FGC_BS_TX2 tx2,  // the state update's stream to the second cost process
-#else
-#define FGC_BS_TX2
-#endif
-#ifdef FGC_BS_TRIAL_B  // the kernel's second cost process (units/datapath.py's split_trial_loops)
-#define FGC_BS_COST_B(s) trial_cost_b(s)
-#else
-#define FGC_BS_COST_B(s) ((void)0)
-#endif
 
 // Back-substitution by columns: the loader, the two ends, the state update beside them and
 // the cost at X_TRIAL beside that. at_x: no solve, the cost at X.
@@ -1013,17 +1000,14 @@ void back_substitute(bool at_x) {
 #pragma HLS STREAM variable=dx1 depth=BSC_DX1
     hls::stream<TrialVar> tx;  // the retired variables' storage words, a variable a word
 #pragma HLS STREAM variable=tx depth=CFG::N_VARIABLES
-#ifdef FGC_BS_STEP_TEST
-    hls::stream<TrialVar> tx2;  // those the second cost process takes (FGC_BS_TRIAL_B)
+    hls::stream<TrialVar> tx2;  // those the kernel's second cost process takes, if any
 #pragma HLS STREAM variable=tx2 depth=CFG::N_VARIABLES
-#endif
     FGC_PHASE(at_x ? "factor_cost" : "backsub");
     backsub_loader<CFG>(g0, g1, at_x);
     backsub_end0<CFG>(g0, dx0, xroot, at_x);
     backsub_end1<CFG>(g1, dx1, xroot, at_x);
-    backsub_retire_cols<CFG>(dx0, dx1, tx, FGC_BS_TX2 at_x);
-    trial_cost(tx);
-    FGC_BS_COST_B(tx2);
+    backsub_retire_cols<CFG>(dx0, dx1, tx, tx2, at_x);
+    trial_cost(tx, tx2);  // (the kernel's: with a second cost process, a DATAFLOW region of two)
     FGC_OUTER_JOIN();
     FGC_DRAINED(&g0, 1);
     FGC_DRAINED(&g1, 1);
@@ -1031,9 +1015,7 @@ void back_substitute(bool at_x) {
     FGC_DRAINED(&dx0, 1);
     FGC_DRAINED(&dx1, 1);
     FGC_DRAINED(&tx, 1);
-#ifdef FGC_BS_STEP_TEST
     FGC_DRAINED(&tx2, 1);
-#endif
 }
 #endif  // FGC_BS_COLUMNS
 

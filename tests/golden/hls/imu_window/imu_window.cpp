@@ -3273,7 +3273,7 @@ const int TRIAL_AT_3[1] = {  // its place in RETIRE_VARS (-1: none; the counting
 // (tx2: TRIAL_SEND), their instances' data lines from DATA_B, its own copy of DATA_BUF's words
 // TRIAL_B_LO ... (the top's data copy writes both): no memory read by two processes
 T TRIAL_COST_B = T(0);  // trial_cost_b's part of the cost
-void trial_cost(hls::stream<TrialVar>& tx) {
+void trial_cost_a(hls::stream<TrialVar>& tx) {
 #pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=2
     FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
     T x[N_X];  // the variables taken so far
@@ -3307,7 +3307,7 @@ void trial_cost(hls::stream<TrialVar>& tx) {
 
 void trial_cost_b(hls::stream<TrialVar>& tx2) {
 #pragma HLS ARRAY_PARTITION variable=DATA_B cyclic factor=2
-    FGC_OUTER_BRANCH();  // csim cycle counting only: its fourth
+    FGC_OUTER_BRANCH();  // csim cycle counting only: its fourth (trial_cost's second)
     T x[N_X];  // the variables taken so far
     T total = T(0);
     // block 1 (PriorFactorPose3): 1 entries, one every II=48 cycles (the plan's)
@@ -3383,6 +3383,13 @@ void trial_cost_b(hls::stream<TrialVar>& tx2) {
         FGC_CYCLES("trial_cost", 0, "cost_3", 1, 9, 24);
     }
     TRIAL_COST_B = total;
+}
+
+// the cost at X_TRIAL (back_substitute's third process): trial_cost_a beside trial_cost_b
+void trial_cost(hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2) {
+#pragma HLS DATAFLOW
+    trial_cost_a(tx);
+    trial_cost_b(tx2);
 }
 
 // ---- state update: retraction x (+) delta, one datapath per variable type; the ALLOCATION

@@ -3348,7 +3348,8 @@ const int TRIAL_B_small[10] = {  // per entry: its instance's block type (-1: no
 const int TRIAL_F_0[1] = {  // per entry of cost loop 0: its instance (-1: none)
     0,
 };
-void trial_cost(hls::stream<TrialVar>& tx) {
+void trial_cost(hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2) {
+    (void)tx2;  // (back-substitution by columns: the second cost process's stream, none here)
 #pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=2
     FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
     T x[N_X];  // the variables taken so far

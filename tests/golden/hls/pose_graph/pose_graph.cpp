@@ -1460,7 +1460,8 @@ const int TRIAL_X1_0[14] = {  // and where it ends (x0 = x1: none)
 const int TRIAL_F_1[1] = {  // per entry of cost loop 1: its instance (-1: none)
     6,
 };
-void trial_cost(hls::stream<TrialVar>& tx) {
+void trial_cost(hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2) {
+    (void)tx2;  // (back-substitution by columns: the second cost process's stream, none here)
 #pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=2
     FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
     T x[N_X];  // the variables taken so far
