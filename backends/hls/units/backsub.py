@@ -585,10 +585,14 @@ def _solve_phase(ctx, unit: str, solver: Process, busy: int, region: int,
     words = max(v.storage_dim for v in ctx.program.variables)
     ctx.channels.append(Channel("trial_tx", "stream", len(ctx.program.variables),
                                 words * ctx.ops.word_bits, "backsub_retire", "trial_cost"))
-    if any(lp.proc == 1 for lp in ctx.shared["trial_loops"]):  # the second cost process's
+    if any(ch.name == "backsub_xroot" for ch in ctx.channels):  # by columns: a second cost
+        # stream (fgc_backsub.h's tx2), to trial_cost_b where trial_cost is split in two
+        # (units/datapath.py's split_trial_loops: trial_cost a DATAFLOW region of trial_cost_a
+        # and trial_cost_b), else declared and unused
+        split = any(lp.proc == 1 for lp in ctx.shared["trial_loops"])
         ctx.channels.append(Channel("trial_tx2", "stream", len(ctx.program.variables),
                                     words * ctx.ops.word_bits, "backsub_retire",
-                                    "trial_cost_b"))
+                                    "trial_cost_b" if split else "trial_cost"))
     ctx.add_phase("solve", Phase("backsub", False, (
         solver,
         Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - busy),)
