@@ -662,7 +662,7 @@ def paper_b(cfg: Config) -> list[Row]:
     return rows
 
 
-def _counted_solve(graph, program, best, cfg: Config) -> tuple[str, float]:
+def _counted_solve(graph, program, best, space: Space) -> tuple[str, float]:
     """The solve of the search's design ``best`` (a row of :func:`best_design` over
     ``program``) as its counting C simulation runs it on ``graph``'s data
     (bench_cycles.measure: every loop counted, the plan's figure of the same executions beside
@@ -673,7 +673,7 @@ def _counted_solve(graph, program, best, cfg: Config) -> tuple[str, float]:
     linear = best.candidate.linear
     design = best.candidate.program({linear: program})
     phases, events = bench_cycles.measure(f"paper B {best.label}", graph, design.solver,
-                                          best.candidate.config(search_space(cfg, (linear,))))
+                                          best.candidate.config(space))
     counted = sum(c for c, _ in phases.values())
     model = sum(m for _, m in phases.values())
     ms = counted / (design.solver.clock_mhz * 1e3)
@@ -710,7 +710,7 @@ def paper_b_solve(graph, prog, result, cfg: Config, iters: int) -> list[Row]:
         return (f"the float32 simulator: {sim.iterations} iterations, {sim.status} "
                 f"({sim.reason})" + (f"; it warns: {ill[0]}" if ill else ""))
 
-    text, _ = _counted_solve(graph, prog, result.best, cfg)
+    text, _ = _counted_solve(graph, prog, result.best, search_space(cfg, ("cholesky",)))
     rows = [Row(b, "latency per solve, the design's own run (counting C simulation), float32 "
                 "Cholesky", "8.97 ms (120)",
                 f"{text}; at {iters} iterations it would be "
@@ -721,13 +721,17 @@ def paper_b_solve(graph, prog, result, cfg: Config, iters: int) -> list[Row]:
                 "(bench/bench_solve_path.py: both runs try by try); so LM's path and its "
                 "iteration count are the rounding's, and the two runs end at the float32 noise "
                 "floor centimetres apart (docs/hls.md, 'Paper B's solve in float32')")]
+    # the QR designs over n_u and the QR unit, default unit sets, ALLOCATION and back-
+    # substitution (each QR plan of N = 50 takes seconds: the full space is 120 of them)
     qr = compile_graph(graph, SolverConfig(method="lm", linear="qr", precision="float32"))
-    found = best_design({"qr": qr}, cfg, linears=("qr",))
+    space = Space(linears=("qr",), units=cfg.units)
+    found = search({"qr": qr}, space, max_reads=cfg.reads, reader=cfg.reads != 0,
+                   progress=_progress)
     if found.best is None:
         rows.append(Row(b, "latency per solve, float32 QR", "8.97 ms (120)",
                         "no float32 QR design fits", ""))
         return rows
-    text, _ = _counted_solve(graph, qr, found.best, cfg)
+    text, _ = _counted_solve(graph, qr, found.best, space)
     rows.append(Row(b, "latency per solve, the design's own run (counting C simulation), float32 "
                     "QR", "8.97 ms (120)", f"{text}; {simulated(qr)}",
                     "QR never forms H, so float32 holds this problem (κ ≈ 5e3 after "
