@@ -77,28 +77,38 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             # the unit's first column right of j; the next pivot column if it is j + 1 < k
             c0 = j + 1 + (u - (j + 1)) % units
             next_here = c0 == j + 1 and c0 < k
-            # the n - 1 words below the pivot (the unit holding the next pivot column streams
-            # that column to the Evaluate meanwhile, rows max(j, 0) ... rows - 1), then v_0
-            # (waiting for qr_finish's square root), then tau and R_jj (its divide)
             below = max(n - 1, 0)
-            loops = [Loop("header", 1, 1, 1),
-                     Loop("vector_column", rows - max(j, 0), 1, 2) if next_here else
-                     Loop("vector", below, 1, 1)]
-            waits.append((len(procs), len(loops), 1, "v0"))
-            loops.append(Loop("pivot_word", 1, 1, 1))
-            waits.append((len(procs), len(loops), 1, "tau"))
-            loops.append(Loop("tail", 2, 1, 1))
-            # the unit's other columns right of j, through the flattened loops
+            # the unit's other columns right of j
             lb = c0 // units + (1 if next_here else 0)
             r = (cols - 1 - u) // units - lb + 1 if c0 < cols else 0
+            loops = [Loop("header", 1, 1, 1)]
+            if next_here:
+                # the next pivot column streamed to the Evaluate (rows max(j, 0) ... rows - 1)
+                # while the n - 1 words below the pivot arrive
+                loops.append(Loop("vector_column", rows - max(j, 0), 1, 2))
+            elif not (r > 0 and n > 1):
+                loops.append(Loop("vector", below, 1, 1))  # read, not needed here
             if r > 0 and n > 1:
                 # dot_axpy: a column's dot product beside the update of the column before it;
                 # a word's update lag = n - 1 + (its dot's multiply-add) + (the fold and scale)
-                # iterations after its dot
+                # iterations after its dot. Its first column takes the vector as the broadcast
+                # streams it (unless the column loop read it), v_0 in iteration n - 1 (the
+                # pivot's word last) and tau at that column's fold, iteration n - 1 + Lm + La:
+                # the loop ends no earlier than its remaining iterations and depth after each
+                # (FGC_WAIT_AFTER)
                 lag = n - 1 + (lm + la) + (la * tree + lm)
-                loops.append(Loop("dot_axpy", n * r + lag, 1, lm + la))
-            elif r > 0 and j >= 0:
-                loops.append(Loop("negate_rows" if n == 1 else "rows_out", r, 1, 1))
+                trip = n * r + lag
+                waits.append((len(procs), len(loops), 1, "v0", trip - n))
+                waits.append((len(procs), len(loops), 1, "tau", trip - n - (lm + la)))
+                loops.append(Loop("dot_axpy", trip, 1, lm + la))
+            else:
+                # v_0 (waiting for qr_finish's square root), then tau (its divide)
+                waits.append((len(procs), len(loops), 1, "v0"))
+                loops.append(Loop("pivot_word", 1, 1, 1))
+                waits.append((len(procs), len(loops), 1, "tau"))
+                loops.append(Loop("tail", 1, 1, 1))
+                if r > 0 and j >= 0:
+                    loops.append(Loop("negate_rows" if n == 1 else "rows_out", r, 1, 1))
             procs.append(loops)
         if col < k:
             # the Evaluate: the column as its unit streams it and the vector as the broadcast
@@ -230,7 +240,8 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
                                     update, opts.units, ops))
         # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
         # the vector below the pivot to each Update unit while qr_finish computes v_0, tau and
-        # R_jj from the norm and the pivot and streams them to each unit (R_jj also to collect);
+        # R_jj from the norm and the pivot and streams v_0 and tau to each unit (R_jj to
+        # collect);
         # the unit holding the next column streams it to Evaluate (which applies the
         # reflection to it), each unit its entries of R's row to collect; Evaluate writes one
         # of the vector's and one of the norm's two buffers, which the next region's broadcast
@@ -240,7 +251,7 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
             channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
                                     ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
         for u in range(opts.units):
-            channels.append(Channel(f"qr{s}_t{u}", "stream", 3, ops.word_bits + 32,
+            channels.append(Channel(f"qr{s}_t{u}", "stream", 2, ops.word_bits + 32,
                                     f"qr{s}_finish", f"qr{s}_update{u}"))
         channels.append(Channel(f"qr{s}_r", "stream", 1, ops.word_bits,
                                 f"qr{s}_finish", f"qr{s}_collect"))
