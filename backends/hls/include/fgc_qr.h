@@ -525,10 +525,10 @@ inline typename CFG::T qr_owner_word(hls::stream<typename CFG::T> colq[CFG::N_UN
 // ... rows - 1, j0 = max(j, 0)), reflection j's vector from the broadcast (evq: {0, n}, the n - 1
 // words below the pivot) and from qr_finish (etq: v_0, tau, R_jj), as the Update units get them.
 // The column's dot product with the vector is taken as the column arrives, folded with the
-// pivot's term once v_0 is there, scaled once tau is; then one pass over the column updates it
-// (x -= tau (v.x) v on the active rows), sends its row j entry to the collector (exq) and keeps
-// its pivot and non-zero rows
-// in vout ({0, n'}, then n' words {x_a, row}: v_a = x_a below the pivot) while summing their
+// pivot's term once v_0 is there, scaled once tau is; then one pass over the column's rows that
+// can be non-zero (row j, the next pivot's, reflection j's active rows and the column's
+// non-zero entries, kept as it arrives) updates it (x -= tau (v.x) v on the active rows),
+// sends its row j entry to the collector (exq) and keeps its pivot and non-zero rows in vout ({0, n'}, then n' words {x_a, row}: v_a = x_a below the pivot) while summing their
 // squares (P interleaved partial sums, folded) for hout ({norm2, n'}, {x_0, j + 1}), which the
 // next region's qr_finish turns into v_0, tau and R_jj while its broadcast streams the rest.
 // With no reflection to apply (n = 0; n = 1: the pivot row's negation, exact) the column is
@@ -545,7 +545,8 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     if (col >= k) return;
     const int owner = col % CFG::N_UNITS;
     const int j0 = j > 0 ? j : 0;
-    T x[CFG::MAX_ROWS];  // the column, rows j0 ... rows - 1
+    T x[CFG::MAX_ROWS];  // the column's kept rows (rows xr) of rows j0 ... rows - 1
+    int xr[CFG::MAX_ROWS];
     T v[CFG::MAX_ROWS];
     int at[CFG::MAX_ROWS];
     const int n = evq.read().idx;  // {0, n}
@@ -581,7 +582,11 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
         // (it reads the column and the vector as they are streamed: the counters' critical path)
         FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "vector_column");
         FGC_WAIT("qr_evaluate", 0, "qr_broadcast", 0, "vector");
-        int a = 1;
+        // The rows the update pass needs are kept (x, rows xr; c of them, ascending): row j,
+        // the next pivot's row, the rows active in reflection j and the column's non-zero
+        // entries; the others are zero before the update and after it, no word of the next
+        // vector and no term of its norm, so that pass skips them
+        int a = 1, c = 0;
         qr_word<T> next;
         next.val = T(0);
         next.idx = -1;
@@ -590,14 +595,21 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
             const T e = qr_owner_word<CFG>(colq, owner);
-            x[t] = e;
+            const int i = j0 + t;
+            bool active = i == j;
             // the next word below the pivot
-            if (a <= below && next.idx < j0 + t) next = evq.read();
-            if (a <= below && next.idx == j0 + t) {
+            if (a <= below && next.idx < i) next = evq.read();
+            if (a <= below && next.idx == i) {
                 v[a] = next.val;
                 at[a] = next.idx;
                 ++a;
                 part[t % P] += next.val * e;
+                active = true;
+            }
+            if (active || i == col || e != T(0)) {
+                x[c] = e;
+                xr[c] = i;
+                ++c;
             }
         }
         FGC_CYCLES("qr_evaluate", 0, "receive_dot", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
@@ -622,14 +634,15 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
         FGC_CYCLES("qr_evaluate", 0, "tail", 2, 1, 1);
         const T scaled = tau * dot;  // depth Lm
         FGC_CYCLES("qr_evaluate", 0, "scale", 1, 1, CFG::MUL_LAT);
-        // the update, row j's entry to the collector, the vector kept and its squares summed:
-        // trip rows - j0, II 1, depth 2 (Lm + La) (the multiply-add, then the square into its sum)
+        // the update of the kept rows, row j's entry to the collector, the vector kept and its
+        // squares summed: trip c, II 1, depth 2 (Lm + La) (the multiply-add, then the square
+        // into its sum)
         int b = 1;
-        for (int t = 0; t < rows - j0; ++t) {
+        for (int t = 0; t < c; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-            const int i = j0 + t;
+            const int i = xr[t];
             // the active row's vector word (the pivot's v_0, or the next below it): one
             // multiply-add for both
             T vw = v[0];
@@ -642,8 +655,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
             const T e = on ? T(x[t] - scaled * vw) : x[t];
             qr_next_word<CFG>(i, j, t, e, exq, vout, m, pivot, part);
         }
-        FGC_CYCLES("qr_evaluate", 0, "axpy_norm", rows - j0, 1,
-                   2 * (CFG::MUL_LAT + CFG::ADD_LAT));
+        FGC_CYCLES("qr_evaluate", 0, "axpy_norm", c, 1, 2 * (CFG::MUL_LAT + CFG::ADD_LAT));
     }
     const T norm2 = fold_partials<T, P>(part);  // depth La ceil(log2 P)
     FGC_CYCLES("qr_evaluate", 0, "fold", 1, 1, CFG::ADD_LAT * ceil_log2(P));

@@ -26,23 +26,32 @@ def active_rows(pattern) -> tuple[int, int, int, list[int]]:
     rows, cols = w + 1, k = min(rows, cols), and per reflection j < k the count of rows j ...
     that are non-zero in column j after the fill of the reflections before it (row j always
     among them; 0: the column is zero and skipped)."""
+    return reflection_rows(pattern)[:4]
+
+
+def reflection_rows(pattern) -> tuple[int, int, int, list[int], list[int]]:
+    """:func:`active_rows`, and per reflection j < k the rows the Evaluate keeps of column j + 1
+    for its update pass (fgc_qr.h's qr_evaluate): row j, row j + 1, reflection j's active rows
+    and the rows j ... non-zero in column j + 1 before it (0 where j + 1 = cols)."""
     nz = np.hstack([np.asarray(pattern, dtype=bool),
                     np.ones((len(pattern), 1), dtype=bool)])
     rows, cols = nz.shape
     k = min(rows, cols)
-    active = []
+    active, kept = [], []
     for j in range(k):
         rows_j = [i for i in range(j, rows) if nz[i, j]]
+        act = sorted(set(rows_j) | {j}) if rows_j else []
+        kept.append(len({i for i in range(j, rows) if nz[i, j + 1]} | set(act) | {j, j + 1})
+                    if j + 1 < cols else 0)
         if not rows_j:
             active.append(0)  # all zero: skipped
             continue
-        act = sorted(set(rows_j) | {j})
         union = nz[act, j + 1:].any(axis=0)
         nz[np.ix_(act, range(j + 1, cols))] = union
         nz[act, j] = False
         nz[j, j] = True
         active.append(len(act))
-    return rows, cols, k, active
+    return rows, cols, k, active, kept
 
 
 def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
@@ -61,7 +70,7 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     """
     la, lm, ld, ls = ops.add.latency, ops.mul.latency, ops.div.latency, ops.sqrt.latency
     p = partials if partials is not None else la
-    rows, cols, k, active = active_rows(pattern)
+    rows, cols, k, active, kept = reflection_rows(pattern)
     tree = math.ceil(math.log2(p)) if p > 1 else 0
     tree1 = math.ceil(math.log2(p + 1))  # the fold of the P partials and the pivot's term
     out = []
@@ -113,8 +122,9 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
         if col < k:
             # the Evaluate: the column as its unit streams it and the vector as the broadcast
             # does (v.x as they arrive), the pivot's term once v_0 is there, the scale once tau
-            # is, then one pass that updates the column, sends row j's entry to the collector
-            # and sums the next vector's squares, and their fold (the tail is the next
+            # is, then one pass over the rows it kept (reflection_rows) that updates the
+            # column, sends row j's entry to the collector and sums the next vector's squares,
+            # and their fold (the tail is the next
             # region's qr_finish); with no reflection to apply (n <= 1) one pass, the fold,
             # then qr_finish's words
             e = len(procs)
@@ -125,7 +135,7 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 procs.append([Loop("header", 1, 1, 1), Loop("receive_dot", span, 1, lm + la),
                               Loop("pivot_term", 1, 1, lm), Loop("fold_dot", 1, 1, la * tree1),
                               Loop("tail", 2, 1, 1), Loop("scale", 1, 1, lm),
-                              Loop("axpy_norm", span, 1, 2 * (lm + la)),
+                              Loop("axpy_norm", kept[j], 1, 2 * (lm + la)),
                               Loop("fold", 1, 1, la * tree)])
             else:
                 waits += [(e, 3, 1, "v0"), (e, 4, 1, "tau")]
