@@ -28,10 +28,10 @@
 //   stream qr0_v1 depth=8: qr0_broadcast -> qr0_update1
 //   stream qr0_v2 depth=8: qr0_broadcast -> qr0_update2
 //   stream qr0_v3 depth=8: qr0_broadcast -> qr0_update3
-//   stream qr0_t0 depth=3: qr0_finish -> qr0_update0
-//   stream qr0_t1 depth=3: qr0_finish -> qr0_update1
-//   stream qr0_t2 depth=3: qr0_finish -> qr0_update2
-//   stream qr0_t3 depth=3: qr0_finish -> qr0_update3
+//   stream qr0_t0 depth=2: qr0_finish -> qr0_update0
+//   stream qr0_t1 depth=2: qr0_finish -> qr0_update1
+//   stream qr0_t2 depth=2: qr0_finish -> qr0_update2
+//   stream qr0_t3 depth=2: qr0_finish -> qr0_update3
 //   stream qr0_r depth=1: qr0_finish -> qr0_collect
 //   stream qr0_col0 depth=54: qr0_update0 -> qr0_evaluate
 //   stream qr0_row0 depth=2: qr0_update0 -> qr0_collect
