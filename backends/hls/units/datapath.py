@@ -19,7 +19,7 @@ from fgc_backends.hls.plan.loops import (
     kernel_dot,
     kernel_loop,
 )
-from fgc_backends.hls.plan.model import PORTS, Channel, Loop, Memory, Phase, Process, Unit
+from fgc_backends.hls.plan.model import PORTS, Loop, Memory, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
 from fgc_backends.hls.units.special_ops import issued_counts, printed_counts
 
@@ -403,10 +403,11 @@ def build(ctx) -> None:
         # of the datapaths' stream), then a column a cycle through the fold of its T_PARTIALS
         # partial sums and the add into G
         la = ops.add.latency
-        # the stream between them: the largest instance's words (PORTS values each)
+        # the stream between them (linearize_rows' FIFO): the largest instance's words, PORTS
+        # values each; its BRAM priced as a memory (the plan's stream channels are the linear
+        # solver's network, process_network's)
         words = max(bc.m * bc.padded // PORTS for bc in ctx.blocks)
-        ctx.channels.append(Channel("gradient_rows", "stream", words, PORTS * ops.word_bits,
-                                    "datapaths", "gradient"))
+        ctx.memories.append(Memory("gradient_rows", words, PORTS * ops.word_bits, 1))
         ctx.units.append(bound_unit("gradient", "A^T b, PORTS columns a cycle from the "
                                     "datapaths' stream, one module for every block type",
                                     [BoundLoop("accumulate", (("add", PORTS), ("mul", PORTS)), 1),
