@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's by columns (the loader streaming COND to a process per end of the chain,
 // the state update fed by both):
-//   21 processes, 47 streams (n_u=4, 2 unit set(s))
+//   21 processes, 46 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -32,7 +32,6 @@
 //   process backsub_end1
 //   process backsub_retire
 //   process trial_cost
-//   stream gradient_rows depth=336: datapaths -> gradient
 //   stream qr0_v0 depth=8: qr0_broadcast -> qr0_update0
 //   stream qr0_v1 depth=8: qr0_broadcast -> qr0_update1
 //   stream qr0_v2 depth=8: qr0_broadcast -> qr0_update2
