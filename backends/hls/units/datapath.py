@@ -407,7 +407,8 @@ def build(ctx) -> None:
         # values each; its BRAM priced as a memory (the plan's stream channels are the linear
         # solver's network, process_network's)
         words = max(bc.m * bc.padded // PORTS for bc in ctx.blocks)
-        ctx.memories.append(Memory("gradient_rows", words, PORTS * ops.word_bits, 1))
+        # (a word PORTS scalars side by side: PORTS banks of `words` scalars, the same BRAM)
+        ctx.memories.append(Memory("gradient_rows", words * PORTS, ops.word_bits, PORTS))
         ctx.units.append(bound_unit("gradient", "A^T b, PORTS columns a cycle from the "
                                     "datapaths' stream, one module for every block type",
                                     [BoundLoop("accumulate", (("add", PORTS), ("mul", PORTS)), 1),
