@@ -8,6 +8,11 @@ float32 at 143 MHz, back-substitution by columns (the default on a chain).
     python bench/bench_flight.py --pieces        # what each further piece would buy at #CPE 40
                                                  # x2, two words a cycle (``third`` built, the
                                                  # others what-ifs)
+    python bench/bench_flight.py --where [--cpe 40 --sets 2 --lanes 2 --third]
+                                                 # where a design's cycles an iteration go: the
+                                                 # plan's phases, the first solve's passes by
+                                                 # the process that bounds each, a steady
+                                                 # region's processes, a retry's (:func:`where`)
 
 The what-if pieces are the plan's arithmetic with a term replaced, not designs that are built:
 ``flight`` (a step enters its cascade as the first Schur-complement row of the step before on the
@@ -19,8 +24,10 @@ pivot's CPE into a merger that adds B's Grams and feeds CPE f_A: :func:`pair_pas
 DATAFLOW, no feedback channel, unlike ``flight``, whose next step's feed reads the drain of the same
 cascade), ``loop`` (``flight`` as docs/hls.md says Vitis would build it: the first solve's region
 loop a dataflow loop, each process a region after its last one and its inputs, no pass boundaries:
-:func:`loop_model`). ``third`` is a built design option, not a what-if: the HGC's third entries lane
-with two cascades (``hgc_third_lane``, units/cholesky.py's gram_third: the IMU Grams at the
+:func:`loop_model`), ``tail`` (the first solve's end on two cascades: the root's other child
+added by the source, its conditional streamed to the committer beside its cascade:
+:func:`tail_passes`). ``third`` is a built design option, not a what-if: the HGC's third entries
+lane with two cascades (``hgc_third_lane``, units/cholesky.py's gram_third: the IMU Grams at the
 datapath's pace, 166 words an instance instead of 248; it replaced the ``prod2`` what-if, which
 halved the words an instance, more than two-port memories can take). Built since this was written
 too: the grams process storing the two steps' first Grams side by side (fgc_cascades.h's
@@ -74,11 +81,46 @@ def what_if(pieces: set[str]) -> None:
         return out
 
     ch.cascades_phases = phases
+    if "tail" in pieces:
+        ch.beside_set_passes = tail_passes(ch.beside_set_passes)
     if "pair" in pieces:
         ch.beside_set_passes = pair_passes(ch.beside_set_passes)
     if "loop" in pieces:
         ch.beside_set_passes, ch.beside_cycles = loop_model(ch.beside_set_passes,
                                                             ch.beside_cycles)
+
+
+def tail_passes(base_passes):
+    """The ``tail`` what-if (the first solve's end on two cascades, not built): the root
+    region's child from the other cascade added by the source as it streams the root's words
+    (a second adder a lane: the source's depth + La) instead of a pass of its own, and the
+    root's conditional streamed from its drain to the committer (which copies it into COND
+    beside the root's cascade, after the region before's), so the last pass is the root's
+    pivot check alone, not its copy (fgc_cascades.h's committer alone: 465 pairs)."""
+
+    def passes(tables, order, dims, cpe, ops, timing, *args, **kw):
+        out = base_passes(tables, order, dims, cpe, ops, timing, *args, **kw)
+        regions = [k for k, (ph, _) in enumerate(out) if ph.name.startswith("recholesky")]
+        if len(regions) < 2:
+            return out
+        root, last = regions[-2], regions[-1]
+        before = out[root - 1][0]
+        if before.name.startswith("reassemble_level") and all(
+                p.name.startswith("alone") for p in before.processes):
+            ph, gate = out[root]
+            out[root] = (replace(ph, processes=tuple(
+                replace(p, loops=(*p.loops[:-1], replace(p.loops[-1], depth=p.loops[-1].depth
+                                                         + ops.add.latency)))
+                if p.name.startswith("source") else p for p in ph.processes)), gate)
+            del out[root - 1]
+            last -= 1
+        ph, gate = out[last]
+        out[last] = (replace(ph, processes=tuple(replace(p, loops=tuple(
+            lp for lp in p.loops if lp.name.endswith(("_scale", "_pivot_check"))))
+            for p in ph.processes)), gate)
+        return out
+
+    return passes
 
 
 def _joined(name: str, procs: list) -> tuple:
@@ -290,14 +332,116 @@ def pair_passes(base_passes, pairs: bool = True):
     return passes
 
 
+def _bound(phase: Phase) -> str:
+    """The kind of process that bounds a pass (its slowest: the cascade, the source or
+    assembler, the grams process, the committer, the Gram source, a child added alone)."""
+    if not phase.processes:
+        return "empty"
+    slow = max(phase.processes, key=lambda p: p.cycles).name
+    for kind in ("gram_source", "grams", "committer", "cascade", "source", "assembler",
+                 "assemble", "alone", "check", "lanes"):
+        if slow.startswith(kind):
+            return kind
+    return slow
+
+
+def where(cpe: int, sets: int, lanes: int, third: bool = False) -> list[str]:
+    """Where one LM iteration's cycles go by the plan (the arithmetic fgc_cycles.h's counting C
+    simulation matches, bench_cycles.py): the iteration's phases; inside ``hgc_beside`` (the HGC
+    producer beside the first solve, :func:`~fgc_backends.hls.units.cholesky.beside_cycles`) the
+    first solve's passes as the plan prices them, grouped by the process that bounds each
+    (the cycles it waited for the producer apart), the start (before the first region), a
+    steady region's processes and the tail (children added alone, the root's region, the last
+    committer); and a retry's passes (per rejection: not in the iteration's figure)."""
+    rec = []
+    base = ch.beside_cycles
+
+    def spy(producer, ready, passes, move_depth):
+        out = base(producer, ready, passes, move_depth)
+        rec.append((out[0], producer, ready, passes, move_depth))
+        return out
+
+    ch.beside_cycles = spy
+    try:
+        program = compile_graph(example("imu_window").build(N=N), SolverConfig(
+            method="lm", linear="cholesky", cpe=cpe, precision="float32"), name=f"iw{cpe}")
+        plan = accel_plan(program, HlsConfig(scalar="float", unit_sets=sets,
+                                             cascade_lanes=lanes, hgc_third_lane=third))
+    finally:
+        ch.beside_cycles = base
+    cost = plan_cost(plan)
+    label = f"#CPE {cpe} x{sets}{' C' if third else ''} L{lanes}"
+    out = [f"{label}: {cost.cycles:,d} cycles an iteration, {cost.dsp:,d} DSP, "
+           f"{cost.bram36:.1f} BRAM36, {'fits' if cost.fits else 'over: ' + ','.join(cost.over)}"
+           f"; phases marked linear {cost.linear_cycles:,d} "
+           f"({100 * cost.linear_cycles / cost.cycles:.1f} %, hgc_beside's producer inside)"]
+    for ph in plan.phases:
+        if ph.per == "iteration":
+            procs = ", ".join(f"{p.name} {p.cycles:,d}" for p in ph.processes)
+            out.append(f"  {ph.name:20s} {phase_cycles(ph):7,d}  ({procs})")
+    if not rec:
+        return out
+    total, producer, ready, passes, move_depth = min(rec, key=lambda r: r[0])
+    t = waited = 0
+    by: dict[str, list[int]] = {}
+    first = next((k for k, (ph, _) in enumerate(passes)
+                  if ph.name.startswith("recholesky") and any(
+                      p.name.startswith("cascade") for p in ph.processes)), len(passes))
+    steady = []
+    for k, (ph, gate) in enumerate(passes):
+        c = phase_cycles(ph)
+        t += c
+        w = 0
+        if gate is not None and ready[gate] + move_depth > t:
+            w = ready[gate] + move_depth - t
+            t += w
+        waited += w
+        if k == first:
+            out.append(f"  first solve: the first region starts at {t - c - w:,d} "
+                       f"(the producer's instances it waits for)")
+        row = by.setdefault(_bound(ph) if k >= first else "start", [0, 0, 0])
+        row[0] += 1
+        row[1] += c
+        row[2] += w
+        if k >= first and _bound(ph) == "cascade" and len(ph.processes) >= 4:
+            steady.append(ph)
+    out.append(f"  hgc_beside {total:,d} = max(producer {max([producer, *ready]):,d}, "
+               f"first solve {t:,d}); the first solve waited {waited:,d} for the producer")
+    for kind, (n, c, w) in by.items():
+        out.append(f"    bound by {kind:12s} {n:3d} passes {c:7,d} cycles"
+                   + (f" + {w:,d} waiting" if w else ""))
+    if steady:
+        ph = steady[len(steady) // 2]
+        out.append(f"    a steady region ({ph.name}, {phase_cycles(ph):,d}): " + ", ".join(
+            f"{p.name} {p.cycles:,d} (fill {p.fill})" for p in ph.processes))
+    retry = [ph for ph in plan.phases if ph.per == "rejection"]
+    if retry:
+        kinds: dict[str, int] = {}
+        for ph in retry:
+            kinds[_bound(ph)] = kinds.get(_bound(ph), 0) + phase_cycles(ph)
+        out.append(f"  a retry (per rejection): {sum(map(phase_cycles, retry)):,d} cycles, "
+                   + ", ".join(f"bound by {k} {c:,d}" for k, c in kinds.items()))
+    return out
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--pieces", action="store_true", help="the what-if pieces at #CPE 40 x2")
+    ap.add_argument("--where", action="store_true",
+                    help="where a design's cycles go (--cpe, --sets, --lanes, --third)")
+    ap.add_argument("--cpe", type=int, default=40)
+    ap.add_argument("--sets", type=int, default=2)
+    ap.add_argument("--lanes", type=int, default=2)
+    ap.add_argument("--third", action="store_true")
     args = ap.parse_args()
+    if args.where:
+        print("\n".join(where(args.cpe, args.sets, args.lanes, args.third)))
+        return
     if args.pieces:
         base = {"cpe": 40, "sets": 2, "lanes": 2}
         rows = [(), ("third",), ("flight",), ("flight", "third"), ("pair",), ("pair", "third"),
-                ("loop",), ("loop", "third")]
+                ("loop",), ("loop", "third"), ("tail",), ("tail", "third"),
+                ("tail", "flight", "third"), ("tail", "loop", "third")]
         saved = ch.cascades_phases, ch.beside_set_passes, ch.beside_cycles
         for pieces in rows:
             what_if(set(pieces))
