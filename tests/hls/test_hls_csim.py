@@ -260,6 +260,8 @@ def test_executed_network_is_the_plans(linear, option, value, tmp_path):
         expected["backsub_columns"] = 3
     if linear == "cholesky":  # per block type its linearize_<b>: the datapath beside its HGC
         expected |= {f"linearize_{b}": 2 for b in range(len(program.blocks))}
+    else:  # linearize_rows: the datapaths beside the gradient
+        expected["linearize"] = 2
     assert ran == expected
     # Cholesky's assembler beside the cascade (cholesky_overlap, counted as branches: no region),
     # back-substitution's two backsub_lane regions (a lane's solve beside the other's load) and
@@ -296,10 +298,11 @@ def test_cycle_counting_csim_equals_the_model(linear, option):
     # Cholesky: the Jacobian pass runs inside the hgc group's regions (evaluate_<b> alongside
     # its HGC, linearize_<b>), the longest block type's beside the first solve's elimination
     # (hgc_beside); the state update runs inside back_substitute's region, fed by it
-    # the cost at X comes out of the first linearisation (QR: its gradient pass; Cholesky: its
+    # QR: the gradient beside the datapaths, in factor_jacobian's region (no phase of its own)
+    # the cost at X comes out of the first linearisation (QR: its gradient; Cholesky: its
     # HGC's b^T b): no cost pass at X, no "cost" event (a robust loss keeps it)
     expected = {"setup", "lm_control",
-                "backsub"} | ({"factor_jacobian", "gradient", "qr_stack", "qr", "qr_commit"}
+                "backsub"} | ({"factor_jacobian", "qr_stack", "qr", "qr_commit"}
                               if linear == "qr" else {"hgc", "hgc_beside"})
     assert "cost" not in events and phases.get("factor_cost", (0, 0)) == (0, 0)
     assert "state_update" not in phases

@@ -478,8 +478,9 @@ class WindowUpdateModel:
         ``linearize_all(X, part)``, LM's instance on the instances whose rows slot 0's step
         stacks (:meth:`~fgc_backends.hls.window.WindowLayout.leaf_factors`; ``live``, part 2:
         less those that hold nothing once keyframe 0 has left, ``leaf_gone``) - the plan's
-        factor_jacobian and gradient loops at those instance counts, G zeroed as always."""
-        from fgc_backends.hls.units.datapath import small_blocks
+        factor_jacobian region (:func:`~fgc_backends.hls.units.datapath.linearize_region`: the
+        datapaths beside the gradient) at those instance counts, G zeroed as always."""
+        from fgc_backends.hls.units.datapath import linearize_region, small_blocks
 
         t = self.layout.template
         leaf = self.layout.leaf_factors()
@@ -487,27 +488,27 @@ class WindowUpdateModel:
             leaf = leaf - self.layout.leaf_gone()
         count = Counter(f.block for i, f in enumerate(t.factors) if i in leaf)
         small = sum(count[i] for i in small_blocks(t))
-        procs = []
+        jac = []
         for ph in self.plan.phases:
-            if ph.name not in ("factor_jacobian", "gradient"):
+            if ph.name != "factor_jacobian":
                 continue
             for p in ph.processes:
                 name = p.name
+                if name == "gradient":  # the region's gradient: linearize_region's again
+                    continue
                 if name == "factor_small_jacobian":
                     loops = tuple(replace(lp, trip=small) for lp in p.loops)
                 elif name.startswith("factor_") and name.endswith("_jacobian"):
                     n = count[int(name[len("factor_"):-len("_jacobian")])]
                     loops = tuple(replace(lp, trip=n) for lp in p.loops)
-                elif name.startswith("reduce_"):
-                    n = count[int(name[len("reduce_"):])]
-                    loops = tuple(replace(lp, repeat=n) for lp in p.loops)
-                elif name == "zero_gradient":
-                    loops = p.loops
                 else:
                     raise PlanError(f"internal error: the linearisation's process {name!r} "
                                     "has no leaf form")
-                procs.append(Process(f"leaf_{name}", p.unit, loops))
-        return Phase("stream_leaf_linearize" + ("_live" if live else ""), False, tuple(procs),
+                jac.append(Process(name, p.unit, loops))
+        region = linearize_region(t, kernel_timing(self.plan.ops), jac,
+                                  {i: count[i] for i in range(len(t.blocks))})
+        return Phase("stream_leaf_linearize" + ("_live" if live else ""), False,
+                     tuple(Process(f"leaf_{p.name}", p.unit, p.loops) for p in region.processes),
                      per="stream")
 
     def _merged(self):
@@ -783,7 +784,8 @@ class WindowUpdateModel:
                                   f"the batch kernel's {g} phase, once per {trigger}"))
         if not self.reuses(ev):
             relin = _relinearize(ev)
-            store = (relin * (group["factor_jacobian"] + group["gradient"]) + group["qr_stack"]
+            store = (relin * (group["factor_jacobian"] + group.get("gradient", 0))
+                     + group["qr_stack"]
                      + qr_store + group["qr_commit"])
             terms.append(Term("batch_store", store, 1, False,
                               f"keyframes 0 … {j} " + ("linearised at the optimum and " if relin
