@@ -18,7 +18,8 @@
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
 //   FGC_STREAM_SWEEP     (instead, the one-step policy) a batch step as a sweep through the window:
-//                        sweep_store<CFG> keeps each keyframe's storage and words as they came,
+//                        stream_in keeps each keyframe's storage and words as they came as it
+//                        moves them into the window (sweep_store<CFG> before a sweep's passes),
 //                        sweep_gather<CFG> the estimates; stream_call then runs one pass per
 //                        keyframe 0 … j, each keyframe in again and, once the window is full,
 //                        its slot 0 leaving at the estimates (the marginal's step at mu = 0, tau,
@@ -147,12 +148,42 @@ void stream_shift() {
     FGC_CYCLES("stream", 0, "shift_data", N_DATA_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 }
 
+#ifndef FGC_STREAM_SWEEP
 // The call's keyframe into slot m: its storage, then its factors' and its prior's words.
 template <class CFG>
 void stream_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
     FGC_PHASE("setup");
     keyframe_in<CFG, false>(m, x_in, data);
 }
+#else
+// The pass's keyframe into slot m (batch steps as sweeps): from its row of the sweep's memory
+// (`from_row`: a sweep pass, the row sweep_store or an earlier call left), else from the call's
+// input, each word also kept in row `row` as it passes (what sweep_store does on its own before
+// a sweep): one read, two writes to different memories an iteration, so keeping the keyframe
+// costs no cycles of its own. The source is a mux (no operator); SWEEP_X / SWEEP_WORDS see at
+// most one read and one write an iteration.
+template <class CFG>
+void stream_in(int m, int row, bool from_row, const T x_in[STREAM_KF_X],
+               const T data[STREAM_IN_DATA]) {
+    FGC_PHASE("setup");
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        const T v = from_row ? SWEEP_X[row * STREAM_KF_X + k] : x_in[k];
+        X[SLOT_X[m * STREAM_KF_X + k]] = v;
+        if (!from_row) SWEEP_X[row * STREAM_KF_X + k] = v;
+    }
+    FGC_CYCLES("top", 0, "keyframe_x_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
+#pragma HLS PIPELINE II=1
+        const T v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : data[k];
+        DATA_BUF[NEW_DEST[b + k]] = v;
+        if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
+    }
+    FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+#endif
 
 #ifdef FGC_STREAM_SWEEP
 // The call's keyframe (total, entering slot m) kept as it came: its storage and its words, row
@@ -729,10 +760,12 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     // is the update of keyframe total, its window's oldest prior the sweep's tau, its kept net
     // the sweep's conditionals (not re-expressed: they hold the sweep's points; walked when the
     // estimates are asked for, as after any update)
+    // the call's keyframe is kept as it came: by sweep_store before a sweep (its passes read it
+    // back), else by stream_in as it enters the window (the same words, no cycles of their own)
     bool sweep = false;
     if (update) {
-        sweep_store<CFG>(total, m, x_in, data);
         sweep = IS_BATCH[total] != 0;
+        if (sweep) sweep_store<CFG>(total, m, x_in, data);
     }
     const int passes = sweep ? total + 1 : 1;
     bool sweep_singular = false;
@@ -782,7 +815,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
             live = jc >= STREAM_SLOTS;  // (the window has moved: slot 0's prior is tau)
             if (jc >= STREAM_SLOTS) stream_shift<CFG>();
 #ifdef FGC_STREAM_SWEEP
-            stream_in<CFG>(ms, SWEEP_X + row * STREAM_KF_X, SWEEP_WORDS + row * SWEEP_MAX_NEW);
+            stream_in<CFG>(ms, row, sweep, x_in, data);
 #else
             stream_in<CFG>(ms, x_in, data);
 #endif

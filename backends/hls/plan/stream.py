@@ -840,10 +840,12 @@ class WindowUpdateModel:
             if keyframe >= lay.size:
                 terms.append(Term("leave", st["stream_x_out_kf"], 1, False,
                                   "the leaving keyframe's estimate into the kept memory"))
-            terms.append(Term("sweep_store", st[f"stream_sweep_store{m}"], 1, False,
-                              "the keyframe's storage and words kept as they came (a sweep "
-                              "brings them in again)"))
             if sweep:
+                # kept as it came before the sweep's passes (which read it back); an update that
+                # is not a sweep keeps it as stream_in moves it into the window (no cycles)
+                terms.append(Term("sweep_store", st[f"stream_sweep_store{m}"], 1, False,
+                                  "the keyframe's storage and words kept as they came (the "
+                                  "sweep brings them in again)"))
                 # the sweep starts from the kept estimates (pass -1)
                 terms += self._start_from_kept(keyframe, first, ev if events is not None
                                                else None, "kept_walk_parent")
