@@ -223,10 +223,13 @@ def test_each_stream_function_has_one_call_site_in_the_header():
     text = (Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
             / "fgc_stream.h").read_text()
     code = re.sub(r"//[^\n]*", "", text)
-    for name in ("marginalize", "reexpress", "kept_walk", "keep", "window_task", "kept_task",
-                 "window_and_kept", "write_tau"):
+    # tau's two parts: the marginal's (tau_and_keep, tau_task) and a batch step's (write_tau)
+    two = ("tau_sign", "tau_tail")
+    for name in ("marginalize", "reexpress", "kept_walk", "keep_points", "keep_task",
+                 "window_task", "kept_task", "window_and_kept", "write_tau", "tau_task",
+                 "tau_beside_keep", "tau_and_keep", *two):
         sites = re.findall(rf"\b{name}<CFG>\(", code)
-        assert len(sites) == (2 if name == "write_tau" else 1), name  # marginal, batch step
+        assert len(sites) == (2 if name in two else 1), name
 
 
 @pytest.fixture(scope="module")

@@ -4,8 +4,9 @@
 //   FGC_STREAM_WINDOW    stream_shift<CFG>()    every slot down one (X and DATA_BUF keep the window)
 //                        stream_in<CFG>(m, ...) the call's keyframe into slot m
 //   FGC_STREAM_MARGINAL  marginalize<CFG>(ok)   slot 0's elimination at the optimum -> tau, the
-//                        write_tau<CFG>(rows)   factor written into slot 1's prior
-//   FGC_STREAM_KEPT      reexpress<CFG>(c, x0), keep<CFG>(c), kept_walk<CFG>(first, x0): the kept
+//                        tau_and_keep<CFG>(c)   factor written into slot 1's prior (write_tau<CFG>:
+//                                               a batch step's), beside the kept conditional
+//   FGC_STREAM_KEPT      reexpress<CFG>(c, x0), keep_points<CFG>(c), kept_walk<CFG>(first, x0): the kept
 //                        conditionals, re-expressed, stored and walked back from the window
 //                        (kept_matvec<CFG>, kept_conditional<CFG> inside). window_and_kept<CFG>:
 //                        the window's process (window_task: LM's solve, the marginal on LM's
@@ -224,15 +225,15 @@ void sweep_gather(int total, int base, int first) {
 #endif  // FGC_STREAM_WINDOW
 
 #ifdef FGC_STREAM_MARGINAL
-// tau from the rows [A | b] (KF_T x (KF_T + 1), upper triangular) a step passes to slot 1: signed to
-// a positive diagonal, its mean A^-1 b by back-substitution, written with its linearisation point
-// (slot 1's estimate, or `lin` where `given`: the one-step policy's, where the update
-// linearised it) into slot 1's prior. False, nothing written, if it is singular.
+// tau from the rows [A | b] (KF_T x (KF_T + 1), upper triangular) a step passes to slot 1, in two
+// parts: tau_sign signs it to a positive diagonal into `a` and tells whether it is singular
+// (false); tau_tail then takes its mean A^-1 b by back-substitution and writes it with its
+// linearisation point (slot 1's estimate, or `lin` where `given`: the one-step policy's, where
+// the update linearised it) into slot 1's prior. write_tau: the two one after the other (a batch
+// step's); the window's marginal runs tau_tail beside keep's conditional (tau_and_keep).
 template <class CFG>
-bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM_KF_X],
-               bool given) {
+bool tau_sign(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1]) {
     FGC_PHASE("marginal");
-    L a[STREAM_KF_T][STREAM_KF_T + 1];
     L largest = L(1), smallest = L(0);
     for (int i = 0; i < STREAM_KF_T; ++i) {
         const L sign = rows[i * (STREAM_KF_T + 1) + i] < L(0) ? L(-1) : L(1);
@@ -246,7 +247,12 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM
         }
     }
     FGC_CYCLES("marginal", 0, "sign", STREAM_KF_T * (STREAM_KF_T + 1), CFG::T_MAX_II, CFG::T_MAX_DEPTH);
-    if (!(smallest > L(STREAM_SINGULAR) * largest)) return false;
+    return smallest > L(STREAM_SINGULAR) * largest;
+}
+
+template <class CFG>
+void tau_tail(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X], bool given) {
+    FGC_PHASE("marginal");
     L mean[STREAM_KF_T];
     for (int i = STREAM_KF_T - 1; i >= 0; --i) {
         L acc = a[i][STREAM_KF_T];
@@ -277,15 +283,25 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM
     DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2] = T(0);  // no robust loss
     DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 1] = T(0);
     FGC_CYCLES("marginal", 0, "tau_out", STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 2, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+// tau signed, checked, its mean and words one after the other (a batch step's). False, nothing
+// written, if it is singular.
+template <class CFG>
+bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM_KF_X],
+               bool given) {
+    L a[STREAM_KF_T][STREAM_KF_T + 1];
+    if (!tau_sign<CFG>(rows, a)) return false;
+    tau_tail<CFG>(a, lin, given);
     return true;
 }
 
 // Keyframe first leaves: tau, the factor slot 0's elimination at the window's optimum passes to
-// slot 1 ([A | b], upper triangular from the QR unit), signed to a positive diagonal, its mean
-// A^-1 b by back-substitution, written with slot 1's estimate as its linearisation point into
-// slot 1's prior (which the next call's shift moves to slot 0). False, nothing written, if the
-// window is not finite at its optimum (`finite` false), slot 0 is rank deficient or tau is
-// singular. The window's rows (AB) are its linearisation at X, the optimum: stream_call
+// slot 1 ([A | b], upper triangular from the QR unit, left in NF), made ready for tau_and_keep,
+// which runs after the window's region: signed to a positive diagonal, its mean A^-1 b by
+// back-substitution, written with slot 1's estimate as its linearisation point into slot 1's
+// prior (which the next call's shift moves to slot 0). False if the window is not finite at its
+// optimum (`finite` false) or slot 0 is rank deficient (tau_and_keep: or tau is singular). The window's rows (AB) are its linearisation at X, the optimum: stream_call
 // computed them again before the region if LM moved after its last linearisation. `reuse` (the
 // one-step policy, the step taken): slot 0's step of the update's own solve is the store (its
 // NF at mu = 0, at the call's start lin01: slots 0 and 1), no step is run again. `live`
@@ -297,12 +313,9 @@ bool marginalize(bool finite, bool reuse, bool live, const T lin01[2 * STREAM_KF
     // caller's ALLOCATION - the marginal has no unit set of its own
 #pragma HLS INLINE
     FGC_EVENT("marginal");
+    (void)lin01;
     if (!finite) return false;
-    if (!reuse && !CFG::leaf_step(live)) return false;
-    FGC_PHASE("marginal");
-    // write_tau reads the rows where the step left them (NF, slot 0's block): its sign loop
-    // reads each word once, nothing else writes NF meanwhile - no copy first
-    return write_tau<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], lin01 + STREAM_KF_X, reuse);
+    return reuse || CFG::leaf_step(live);
 }
 #endif  // FGC_STREAM_MARGINAL
 
@@ -451,13 +464,13 @@ void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) 
     FGC_CYCLES("kept", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH + L_MUL_LAT);
 }
 
-// Slot 0's conditional (COND of its step: R | S | d, row-major f x (w + 1)) kept as keyframe c's,
-// linearised at slot 0's estimate with its parent at slot 1's (`reuse`: at lin01, where the
-// one-step update linearised them); a word a cycle.
+// Slot 0's conditional (COND of its step: R | S | d, row-major f x (w + 1)) kept as keyframe c's
+// (keep_task: kept_conditional, beside tau's tail in tau_and_keep), linearised at slot 0's
+// estimate with its parent at slot 1's (keep_points, before that region; `reuse`: at lin01, where
+// the one-step update linearised them); a word a cycle.
 template <class CFG>
-void keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
+void keep_points(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
     FGC_PHASE("kept");
-    kept_conditional<CFG>(c, COND + STEP_COND_OFF[STREAM_LEAF_STEP]);
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
         KEPT_LIN[c * STREAM_KF_X + k] = reuse ? lin01[k] : X[SLOT_X[k]];
@@ -594,8 +607,8 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
 // batch step's pass -1). The arithmetic is the same whenever it runs, so are the estimates.
 // Each process on its own memories and datapaths (the window's: X, AB, DATA_BUF, COND, NF, the
 // unit sets; the kept net's: the KEPT_* memories, X_KEPT, the keyframe's Log and retraction
-// kernels); keep(first) reads the marginal's conditional and writes kept memory, so it follows
-// the region. A design without one of the two runs that process empty (each function has one
+// kernels); the leaving keyframe's tau and its conditional kept (tau_and_keep: keep writes kept
+// memory) follow the region, tau's tail beside the keep. A design without one of the two runs that process empty (each function has one
 // call site whatever the parts: the second reader reads every preprocessor branch).
 //
 // The window's process: mode 0 nothing (pass -1, op 3), 1 a sweep pass with the window full (the
@@ -678,6 +691,55 @@ void window_and_kept(int mode, int ms, bool live, const T lin01[2 * STREAM_KF_X]
     window_task<CFG>(mode, ms, live, lin01, errors, info, result);
     kept_task<CFG>(reexp, walk, x0);
 }
+
+#ifdef FGC_STREAM_MARGINAL
+// tau_and_keep's two processes, one DATAFLOW region after the window's: tau's tail (its mean and
+// words: `a`, then lin or X to DATA_BUF, with its own operators) beside the leaving keyframe's
+// conditional kept (kept_conditional: COND to KEPT_R / KEPT_S / KEPT_D, with its own). No
+// memory between them: each port is its process's (a, DATA_BUF, lin or X: the tail's; COND and
+// KEPT_R / S / D: the keep's). The fixed-lag window (no kept net) runs the keep empty.
+template <class CFG>
+void tau_task(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X], bool given) {
+    FGC_TASK();
+    tau_tail<CFG>(a, lin, given);
+}
+
+template <class CFG>
+void keep_task(int c) {
+    FGC_TASK();
+#ifdef FGC_STREAM_KEPT
+    FGC_PHASE("kept");
+    kept_conditional<CFG>(c, COND + STEP_COND_OFF[STREAM_LEAF_STEP]);
+#else
+    (void)c;
+#endif
+}
+
+template <class CFG>
+void tau_beside_keep(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X],
+                     bool given, int c) {
+#pragma HLS DATAFLOW
+    tau_task<CFG>(a, lin, given);
+    keep_task<CFG>(c);
+}
+
+// The leaving keyframe's marginal after the window's region (its rows ready in NF: window_task's
+// marginalize): tau signed and checked (tau_sign reads the rows where the step left them, each
+// word once: no copy first); if it is not singular, the kept conditional's points
+// (keep_points), then tau's tail beside the conditional kept (tau_beside_keep). Kept keyframe c
+// (the kept net's; unused without one). False, nothing written or kept, if tau is singular.
+template <class CFG>
+bool tau_and_keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
+    L a[STREAM_KF_T][STREAM_KF_T + 1];
+    if (!tau_sign<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], a)) return false;
+#ifdef FGC_STREAM_KEPT
+    keep_points<CFG>(c, reuse, lin01);
+#endif
+    tau_beside_keep<CFG>(a, lin01 + STREAM_KF_X, reuse, c);
+    FGC_TASKS_JOIN();
+    return true;
+}
+#endif
 #endif  // FGC_STREAM_WINDOW
 
 #ifdef FGC_STREAM_WINDOW
@@ -868,11 +930,19 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #endif
         if (!solve) continue;
         marginal = result[0];
+#ifdef FGC_STREAM_MARGINAL
+#ifdef FGC_STREAM_KEPT
+        const int kc = c - STREAM_W;  // the kept keyframe (the leaving one)
+#else
+        const int kc = 0;
+#endif
+        // tau, and the leaving keyframe's conditional kept beside its tail
+        if (mc == STREAM_W && marginal == 1) marginal = tau_and_keep<CFG>(kc, result[1] != 0, lin01) ? 1 : 2;
+#endif
 #ifdef FGC_STREAM_SWEEP
         if (!last && marginal != 1) sweep_singular = true;
 #endif
 #ifdef FGC_STREAM_KEPT
-        if (mc == STREAM_W && marginal == 1) keep<CFG>(c - STREAM_W, result[1] != 0, lin01);
         if (last && !sweep && first > 0) {
             // this update's own re-expression (the newest kept conditional at slot 0's new
             // estimate), left pending for the next call's region: the point copied out of X

@@ -405,6 +405,8 @@ class WindowUpdateModel:
             lmul = lt["acc"][1] - lt["acc"][0]
             keep_one = (kernel_loop("reciprocal", n, "div", lt),
                         Loop("cond", n * (2 * n + 1), kt["move"][0], kt["move"][1] + lmul))
+            # the leaving keyframe's conditional kept beside tau's tail (tau_and_keep's region)
+            out.append(_stream_phase("keep_conditional", *keep_one))
             out += [_stream_phase("kept_slot0", move("x", kf)),
                     _stream_phase("kept_reexpress", one, replace(one, repeat=4 * curved),
                                   Loop("difference", n, 1, kt["div"][1], curved), vector_diff,
@@ -447,7 +449,9 @@ class WindowUpdateModel:
                     # the one-step policy: slots 0 and 1 copied before the solve; the step
                     # taken, the solve's own NF rows are τ (no stack, QR step or commit)
                     _stream_phase("lin_points", move("x", 2 * kf)),
-                    _stream_phase("marginal_reused", *write_tau)]
+                    _stream_phase("marginal_reused", *write_tau),
+                    # tau's mean and words: tau_and_keep's process beside the keep
+                    _stream_phase("tau_tail", *write_tau[1:])]
         if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
             out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
                     for m, d in enumerate(lay.new_dest)]
@@ -716,6 +720,15 @@ class WindowUpdateModel:
         return UpdatePrice(keyframe, "estimates", first, 0, self.clock_mhz, tuple(terms),
                            STREAM_SOURCE)
 
+    def _keep_beside_tau(self, times: int = 1, name: str = "keep_beside_tau") -> Term:
+        """tau_and_keep's region (fgc_stream.h): tau's tail (its mean and words) beside the
+        leaving keyframe's conditional kept (kept_conditional), each on its own memories and
+        operators, after tau's sign loop and the kept points: the shorter of the two hidden."""
+        st = self.stream
+        return Term(name, -min(st["stream_tau_tail"], st["stream_keep_conditional"]), times,
+                    False, "tau's mean and words beside the leaving keyframe's conditional kept "
+                    "(one DATAFLOW region): the shorter of the two is hidden behind the longer")
+
     def _sweep_terms(self, j: int) -> list:
         """A batch step at keyframe j as a sweep through the window (fgc_stream.h's
         ``FGC_STREAM_SWEEP``), but its last pass (keyframe j's update, priced as one): keyframes
@@ -752,7 +765,8 @@ class WindowUpdateModel:
                        "0, τ's signs, mean and words (the marginal's region, its kept task "
                        "empty)"),
                   Term("sweep_keep", st["stream_kept_store"], len(steps), False,
-                       "each leaving keyframe's conditional and points kept")]
+                       "each leaving keyframe's conditional and points kept"),
+                  self._keep_beside_tau(len(steps), "sweep_keep_beside_tau")]
         return terms
 
     def _batch_terms(self, j: int, ev: dict) -> list:
@@ -910,20 +924,24 @@ class WindowUpdateModel:
                                "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0 (LM's), "
                                "τ's signs, mean and words"))
         terms += window
+        leaving = m == lay.window and self.layout_marginal
         if lay.kept:
             # the re-expression the update before left pending runs beside this update's
             # window process (one DATAFLOW region, no memory between them): the update waits for
-            # the longer of the two (a sweep ran it in its pass -1, above)
+            # the longer of the two (a sweep ran it in its pass -1, above); tau's sign, mean and
+            # words (the marginal term's write_tau) run after that region (tau_and_keep)
             if not sweep and self._pending(keyframe, ev if events is not None else None):
                 kept = self._pending_term()
-                terms += [kept, Term("overlap", -min(kept.cycles, sum(t.cycles for t in window)),
+                solve = sum(t.cycles for t in window) - (st["stream_marginal_reused"]
+                                                         if leaving else 0)
+                terms += [kept, Term("overlap", -min(kept.cycles, solve),
                                      1, False, "the pending re-expression beside the window's "
                                      "solve and marginal (one DATAFLOW region): the shorter of "
                                      "the two is hidden behind the longer")]
-            if m == lay.window and self.layout_marginal:
-                terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
-                                  f"keyframe {first}'s conditional (R | S | d) and its "
-                                  "linearisation points kept"))
+            if leaving:
+                terms += [Term("kept_store", st["stream_kept_store"], 1, False,
+                               f"keyframe {first}'s conditional (R | S | d) and its "
+                               "linearisation points kept"), self._keep_beside_tau()]
             if first > 0 and not sweep:
                 # this update's own re-expression (keyframe first - 1's conditional at slot 0's
                 # new estimate) is left for the next call's region: its point copied out of X;
