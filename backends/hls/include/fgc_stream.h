@@ -250,33 +250,29 @@ bool tau_sign(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][ST
     return smallest > L(STREAM_SINGULAR) * largest;
 }
 
-// tau's mean on fgc_backsub.h's triangle: its scalar and the latencies of its chain (L's)
-struct TauSolve {
-    typedef L T;
-    static const int MUL_LAT = L_MUL_LAT, ADD_LAT = L_ADD_LAT, MAX_F = STREAM_KF_T;
-};
-
 template <class CFG>
 void tau_tail(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X], bool given) {
     FGC_PHASE("marginal");
-    // the mean A^-1 b as back-substitution solves a conditional (fgc_backsub.h's triangle): the
-    // diagonal's reciprocals (divides independent of each other, off the recurrence) with each
-    // row's b scaled by its own, y_i = b_i / a_ii; then the columns r = KF_T - 1 ... 1, last
-    // first: x_r = y_r at a column's first iteration (final: its last update was the column
-    // before's), y_i -= (a_ir / a_ii) x_r for the rows above, one a cycle - a chain of Lm + La a
-    // column (columns shorter than it padded), where the dot product per row waited La per term
-    L inv[STREAM_KF_T], y[STREAM_KF_T], z[STREAM_KF_T], mean[STREAM_KF_T];
-    for (int i = 0; i < STREAM_KF_T; ++i) {
-#pragma HLS PIPELINE II=CFG::L_DIV_II
-        const L ri = L(1) / a[i][i];
-        const L yi = a[i][STREAM_KF_T] * ri;
-        inv[i] = ri;
-        y[i] = yi;
-        z[i] = yi;
+    // the mean A^-1 b by columns, last first: x_r = y_r / a_rr (y_r final: its last update was
+    // the column before's), then y_i -= a_ir x_r for the rows above, one a cycle (II 1: each
+    // y_i updated once a column) - so the next unknown waits for one divide and its own row's
+    // update, where the dot product per row ran its whole row at II La first. The same
+    // products and divides as a row's dot product (the subtractions in the other order); y_i
+    // starts as b_i (a mux on the first column: no copy)
+    L y[STREAM_KF_T], mean[STREAM_KF_T];
+    for (int r = STREAM_KF_T - 1; r >= 0; --r) {
+        const bool last = r == STREAM_KF_T - 1;
+        const L xr = (last ? a[r][STREAM_KF_T] : y[r]) / a[r][r];
+        mean[r] = xr;
+        FGC_CYCLES("marginal", 0, "divide", 1, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
+        for (int i = r - 1; i >= 0; --i) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=y inter false
+            y[i] = (last ? a[i][STREAM_KF_T] : y[i]) - a[i][r] * xr;
+        }
+        FGC_CYCLES("marginal", 0, "column", r, 1, CFG::L_ACC_DEPTH);
     }
-    FGC_CYCLES("marginal", 0, "reciprocal", STREAM_KF_T, CFG::L_DIV_II, CFG::L_DIV_DEPTH + L_MUL_LAT);
-    fgc_units::backsub_triangle<TauSolve, 1>(&a[0][0], 0, STREAM_KF_T, STREAM_KF_T + 1, y, z, inv,
-                                             mean);
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
         DATA_BUF[STREAM_PRIOR1 + k] = given ? lin[k] : X[SLOT_X[STREAM_KF_X + k]];

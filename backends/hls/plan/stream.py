@@ -27,7 +27,6 @@ from fgc_backends.hls.plan.cost import merge_plans, phase_cycles, plan_cost
 from fgc_backends.hls.plan.loops import _assign, _tables, kernel_loop, kernel_timing, plan_sizes
 from fgc_backends.hls.plan.model import Loop, Phase, PlanError, Process, Unit
 from fgc_backends.hls.plan.report import PHASE_TRIGGER, plan_groups, unit_sets
-from fgc_backends.hls.units.backsub import backsub_chain, triangle_trip
 from fgc_backends.hls.units.memories import stream_memories
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
 
@@ -110,9 +109,8 @@ class UpdatePrice:
 # The stream section's own loops as fgc_stream.h writes them: per pipelined loop its operations
 # an iteration (each an operator at II 1; MV_II / L_ACC_II loops hold one of each too), the
 # sequential code one operator of each kind it uses.
-WRITE_TAU_OPS = (("add", 1), ("mul", 5), ("div", 1))  # per loop: the sign (×); the reciprocals
-# (÷) with b scaled (×); the mean's triangle (a_ir × 1 / a_ii, × x_r, −); the singularity
-# threshold (×) in sequential code
+WRITE_TAU_OPS = (("add", 1), ("mul", 3), ("div", 1))  # sign (×), the mean's columns (−= ×),
+# ÷ and the singularity threshold (×) in sequential code
 KEPT_MATVEC_OPS = (("add", 1), ("mul", 1))  # kept_matvec: + ×
 # kept_task with reexpress and kept_walk INLINE: reexpress's vector_difference and difference
 # (− × ÷ each), d_update (−), sj_column and sj_vector (+ × each); kept_walk's rhs (−) and
@@ -386,14 +384,12 @@ class WindowUpdateModel:
                               move("d", len(lay.data_moves))),
                 _stream_phase("x_out", move("x", lay.n_x)),
                 _stream_phase("x_out_kf", move("x", kf))]
-        # tau: signed; its mean as back-substitution solves a conditional (the diagonal's
-        # reciprocals with b scaled, then fgc_backsub.h's triangle and x_0); its words out
-        lmul = lt["acc"][1] - lt["acc"][0]
-        write_tau = (kernel_loop("sign", n * (n + 1), "max", kt),
-                     Loop("reciprocal", n, lt["div"][0], lt["div"][1] + lmul),
-                     Loop("triangle", triangle_trip(n, self.les), 1,
-                          self.les.mul.latency + backsub_chain(self.les)),
-                     Loop("last", 1, 1, 1),
+        # tau: signed; its mean by columns, last first (per column x_r's divide, then its
+        # update of the rows above at II 1); its words out
+        mean = [lp for r in range(n - 1, -1, -1)
+                for lp in (kernel_loop("divide", 1, "div", lt),
+                           *((Loop("column", r, 1, lt["acc"][1]),) if r else ()))]
+        write_tau = (kernel_loop("sign", n * (n + 1), "max", kt), *mean,
                      move("tau_out", kf + n + n * (n + 1) // 2 + 2))
         if lay.kept:  # the kept Bayes net's loops, as accel.cpp.jinja counts them
             # a Log or a retraction: the retraction-sized datapath's depth, or what its
@@ -409,6 +405,7 @@ class WindowUpdateModel:
                                n - curved)
             # a conditional kept: its pivots' reciprocals, then its rows scaled as they are
             # copied (kept_conditional; R unit-diagonal, so the walk divides by nothing)
+            lmul = lt["acc"][1] - lt["acc"][0]
             keep_one = (kernel_loop("reciprocal", n, "div", lt),
                         Loop("cond", n * (2 * n + 1), kt["move"][0], kt["move"][1] + lmul))
             # the leaving keyframe's conditional kept beside tau's tail (tau_and_keep's region)
