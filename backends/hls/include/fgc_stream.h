@@ -164,8 +164,7 @@ void stream_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
 // costs no cycles of its own. The source is a mux (no operator); SWEEP_X / SWEEP_WORDS see at
 // most one read and one write an iteration.
 template <class CFG>
-void stream_in(int m, int row, bool from_row, const T x_in[STREAM_KF_X],
-               const T data[STREAM_IN_DATA]) {
+void stream_in(int m, int row, bool from_row, const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA]) {
     FGC_PHASE("setup");
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
@@ -447,16 +446,22 @@ void reexpress(int c, const T x[STREAM_KF_X]) {
 // A conditional (R | S | d, row-major KF_T x (2 KF_T + 1): a QR unit's COND block) stored as
 // kept keyframe c's, each row scaled by its pivot's reciprocal on the way (R unit-diagonal: the
 // walk's back-substitution divides by nothing; the re-expression's S J and d - S Log act on rows
-// alike), a word a cycle.
+// alike), a word a cycle: kept_reciprocals (the pivots' reciprocals, nothing written to kept
+// memory), then kept_scale. kept_conditional: the two one after the other (a batch step's); the
+// window's marginal runs each beside a part of tau (tau_and_keep).
 template <class CFG>
-void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) {
+void kept_reciprocals(const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], L rinv[STREAM_KF_T]) {
     const int cols = 2 * STREAM_KF_T + 1;
-    L rinv[STREAM_KF_T];
     for (int i = 0; i < STREAM_KF_T; ++i) {
 #pragma HLS PIPELINE II=CFG::L_DIV_II
         rinv[i] = L(1) / cond[i * cols + i];
     }
     FGC_CYCLES("kept", 0, "reciprocal", STREAM_KF_T, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
+}
+
+template <class CFG>
+void kept_scale(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], const L rinv[STREAM_KF_T]) {
+    const int cols = 2 * STREAM_KF_T + 1;
     for (int e = 0; e < STREAM_KF_T * (2 * STREAM_KF_T + 1); ++e) {
 #pragma HLS PIPELINE II=1
         const int i = e / cols, k = e % cols;
@@ -472,8 +477,15 @@ void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) 
     FGC_CYCLES("kept", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH + L_MUL_LAT);
 }
 
+template <class CFG>
+void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) {
+    L rinv[STREAM_KF_T];
+    kept_reciprocals<CFG>(cond, rinv);
+    kept_scale<CFG>(c, cond, rinv);
+}
+
 // Slot 0's conditional (COND of its step: R | S | d, row-major f x (w + 1)) kept as keyframe c's
-// (keep_task: kept_conditional, beside tau's tail in tau_and_keep), linearised at slot 0's
+// (kept_reciprocals beside tau's sign loop, kept_scale beside its tail: tau_and_keep), linearised at slot 0's
 // estimate with its parent at slot 1's (keep_points, before that region; `reuse`: at lin01, where
 // the one-step update linearised them); a word a cycle.
 template <class CFG>
@@ -701,11 +713,38 @@ void window_and_kept(int mode, int ms, bool live, const T lin01[2 * STREAM_KF_X]
 }
 
 #ifdef FGC_STREAM_MARGINAL
-// tau_and_keep's two processes, one DATAFLOW region after the window's: tau's tail (its mean and
-// words: `a`, then lin or X to DATA_BUF, with its own operators) beside the leaving keyframe's
-// conditional kept (kept_conditional: COND to KEPT_R / KEPT_S / KEPT_D, with its own). No
-// memory between them: each port is its process's (a, DATA_BUF, lin or X: the tail's; COND and
-// KEPT_R / S / D: the keep's). The fixed-lag window (no kept net) runs the keep empty.
+// tau_and_keep's two DATAFLOW regions after the window's, each of two processes with no memory
+// between them (every port its process's), each on its own operators:
+//   sign_beside_reciprocals: tau's sign loop (NF -> a, the singularity test) beside the kept
+//     conditional's pivot reciprocals (COND's diagonal -> rinv: nothing written to kept memory,
+//     so it may run before the test says whether the conditional is kept);
+//   tau_beside_keep: tau's tail (its mean and words: a, then lin or X to DATA_BUF) beside the
+//     conditional kept (kept_scale: COND and rinv to KEPT_R / KEPT_S / KEPT_D).
+// The fixed-lag window (no kept net) runs the keep's processes empty.
+template <class CFG>
+void sign_task(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1], bool ok[1]) {
+    FGC_TASK();
+    ok[0] = tau_sign<CFG>(rows, a);
+}
+
+template <class CFG>
+void reciprocal_task(L rinv[STREAM_KF_T]) {
+    FGC_TASK();
+#ifdef FGC_STREAM_KEPT
+    FGC_PHASE("kept");
+    kept_reciprocals<CFG>(COND + STEP_COND_OFF[STREAM_LEAF_STEP], rinv);
+#else
+    (void)rinv;
+#endif
+}
+
+template <class CFG>
+void sign_beside_reciprocals(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1], bool ok[1], L rinv[STREAM_KF_T]) {
+#pragma HLS DATAFLOW
+    sign_task<CFG>(rows, a, ok);
+    reciprocal_task<CFG>(rinv);
+}
+
 template <class CFG>
 void tau_task(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X], bool given) {
     FGC_TASK();
@@ -713,37 +752,43 @@ void tau_task(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X],
 }
 
 template <class CFG>
-void keep_task(int c) {
+void keep_task(int c, const L rinv[STREAM_KF_T]) {
     FGC_TASK();
 #ifdef FGC_STREAM_KEPT
     FGC_PHASE("kept");
-    kept_conditional<CFG>(c, COND + STEP_COND_OFF[STREAM_LEAF_STEP]);
+    kept_scale<CFG>(c, COND + STEP_COND_OFF[STREAM_LEAF_STEP], rinv);
 #else
     (void)c;
+    (void)rinv;
 #endif
 }
 
 template <class CFG>
 void tau_beside_keep(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X],
-                     bool given, int c) {
+                     bool given, int c, const L rinv[STREAM_KF_T]) {
 #pragma HLS DATAFLOW
     tau_task<CFG>(a, lin, given);
-    keep_task<CFG>(c);
+    keep_task<CFG>(c, rinv);
 }
 
 // The leaving keyframe's marginal after the window's region (its rows ready in NF: window_task's
 // marginalize): tau signed and checked (tau_sign reads the rows where the step left them, each
-// word once: no copy first); if it is not singular, the kept conditional's points
-// (keep_points), then tau's tail beside the conditional kept (tau_beside_keep). Kept keyframe c
-// (the kept net's; unused without one). False, nothing written or kept, if tau is singular.
+// word once: no copy first) beside the kept conditional's reciprocals; if tau is not singular,
+// the conditional's points (keep_points), then tau's tail beside the conditional kept. Kept
+// keyframe c (the kept net's; unused without one). False, nothing written or kept, if tau is
+// singular.
 template <class CFG>
 bool tau_and_keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
     L a[STREAM_KF_T][STREAM_KF_T + 1];
-    if (!tau_sign<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], a)) return false;
+    L rinv[STREAM_KF_T];
+    bool ok[1];
+    sign_beside_reciprocals<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], a, ok, rinv);
+    FGC_TASKS_JOIN();
+    if (!ok[0]) return false;
 #ifdef FGC_STREAM_KEPT
     keep_points<CFG>(c, reuse, lin01);
 #endif
-    tau_beside_keep<CFG>(a, lin01 + STREAM_KF_X, reuse, c);
+    tau_beside_keep<CFG>(a, lin01 + STREAM_KF_X, reuse, c, rinv);
     FGC_TASKS_JOIN();
     return true;
 }

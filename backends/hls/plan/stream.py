@@ -408,8 +408,10 @@ class WindowUpdateModel:
             lmul = lt["acc"][1] - lt["acc"][0]
             keep_one = (kernel_loop("reciprocal", n, "div", lt),
                         Loop("cond", n * (2 * n + 1), kt["move"][0], kt["move"][1] + lmul))
-            # the leaving keyframe's conditional kept beside tau's tail (tau_and_keep's region)
-            out.append(_stream_phase("keep_conditional", *keep_one))
+            # the leaving keyframe's conditional kept beside tau (tau_and_keep's regions): its
+            # reciprocals beside tau's sign loop, its rows scaled beside tau's tail
+            out += [_stream_phase("keep_reciprocal", keep_one[0]),
+                    _stream_phase("keep_scale", keep_one[1])]
             out += [_stream_phase("kept_slot0", move("x", kf)),
                     _stream_phase("kept_reexpress", one, replace(one, repeat=4 * curved),
                                   Loop("difference", n, 1, kt["div"][1], curved), vector_diff,
@@ -453,7 +455,9 @@ class WindowUpdateModel:
                     # taken, the solve's own NF rows are τ (no stack, QR step or commit)
                     _stream_phase("lin_points", move("x", 2 * kf)),
                     _stream_phase("marginal_reused", *write_tau),
-                    # tau's mean and words: tau_and_keep's process beside the keep
+                    # tau's sign loop, then its mean and words: tau_and_keep's processes
+                    # beside the keep's
+                    _stream_phase("tau_sign", write_tau[0]),
                     _stream_phase("tau_tail", *write_tau[1:])]
         if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
             out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
@@ -724,13 +728,17 @@ class WindowUpdateModel:
                            STREAM_SOURCE)
 
     def _keep_beside_tau(self, times: int = 1, name: str = "keep_beside_tau") -> Term:
-        """tau_and_keep's region (fgc_stream.h): tau's tail (its mean and words) beside the
-        leaving keyframe's conditional kept (kept_conditional), each on its own memories and
-        operators, after tau's sign loop and the kept points: the shorter of the two hidden."""
+        """tau_and_keep's two regions (fgc_stream.h), each of two processes on their own
+        memories and operators: tau's sign loop beside the kept conditional's pivot reciprocals,
+        then (the kept points between) tau's tail (its mean and words) beside the conditional's
+        rows scaled into kept memory: in each the shorter of the two hidden."""
         st = self.stream
-        return Term(name, -min(st["stream_tau_tail"], st["stream_keep_conditional"]), times,
-                    False, "tau's mean and words beside the leaving keyframe's conditional kept "
-                    "(one DATAFLOW region): the shorter of the two is hidden behind the longer")
+        hidden = (min(st["stream_tau_sign"], st["stream_keep_reciprocal"])
+                  + min(st["stream_tau_tail"], st["stream_keep_scale"]))
+        return Term(name, -hidden, times, False,
+                    "tau beside the leaving keyframe's conditional kept (two DATAFLOW regions: "
+                    "its sign loop beside the pivots' reciprocals, its mean and words beside the "
+                    "rows scaled): the shorter of each pair is hidden behind the longer")
 
     def _sweep_terms(self, j: int) -> list:
         """A batch step at keyframe j as a sweep through the window (fgc_stream.h's
