@@ -215,8 +215,8 @@ def test_a_dropped_sweep_step_breaks_the_agreement(sweep7, tmp_path):
 def test_a_conditional_not_kept_breaks_the_agreement(sweep7, tmp_path):
     # the sweep's steps run, but the conditionals they leave are not stored (only the last
     # pass's, keyframe total - W's, beside its tau's tail)
-    _broken(sweep7, tmp_path, "    keep_task<CFG>(c);",
-            "    if (c >= STREAM_TOTAL - STREAM_W) keep_task<CFG>(c);")
+    _broken(sweep7, tmp_path, "    keep_task<CFG>(c, rinv);",
+            "    if (c >= STREAM_TOTAL - STREAM_W) keep_task<CFG>(c, rinv);")
 
 
 @pytest.mark.heavy
