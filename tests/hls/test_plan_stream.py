@@ -224,10 +224,15 @@ def test_each_stream_function_has_one_call_site_in_the_header():
     text = (Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
             / "fgc_stream.h").read_text()
     code = re.sub(r"//[^\n]*", "", text)
-    for name in ("marginalize", "reexpress", "kept_walk", "keep", "window_task", "kept_task",
-                 "window_and_kept", "write_tau"):
+    # tau's and the kept conditional's two parts: the marginal's (tau_and_keep's tasks) and a
+    # batch step's (write_tau, kept_conditional)
+    two = ("tau_sign", "tau_tail", "kept_reciprocals", "kept_scale")
+    for name in ("marginalize", "reexpress", "kept_walk", "keep_points", "keep_task",
+                 "window_task", "kept_task", "window_and_kept", "write_tau", "tau_task",
+                 "tau_beside_keep", "tau_and_keep", "sign_task", "reciprocal_task",
+                 "sign_beside_reciprocals", "kept_conditional", *two):
         sites = re.findall(rf"\b{name}<CFG>\(", code)
-        assert len(sites) == (2 if name == "write_tau" else 1), name  # marginal, batch step
+        assert len(sites) == (2 if name in two else 1), name
 
 
 @pytest.fixture(scope="module")
