@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 import fgc
-from fgc import Pose2
+from fgc import Pose2, Pose3, Rot3
 from fgc.compile import compile_graph
 from fgc.errors import DataError
 from fgc.frontend import noise
@@ -184,6 +184,46 @@ def test_tcl_uses_vitis_headers_one_clock_and_the_reference(tmp_path):
     assert "add_files -tb reference.txt" in code
     makefile = (proj.directory / "Makefile").read_text()
     assert "./tb_chk_tcl $(DATA) $(RESULT) $(REFERENCE)" in makefile
+
+
+def test_float_testbench_measures_a_3x3_rotation_by_its_chord(tmp_path):
+    # A 3x3 rotation's angle from the chord |R - R_ref|_F, not acos((trace(R_ref^T R) - 1) / 2):
+    # the same rotation whose matrix is 1e-6 off orthonormal (84 float retractions left 1.4e-6
+    # on imu_window N = 20's float32 simulator) read 1.7 mrad through acos, a mismatch; the
+    # chord reads 1.7e-6. A rotation 0.9 mrad off passes, 1.1 mrad off does not.
+    g = fgc.Graph()
+    for i in range(4):
+        g.add_variable(i, Pose3.Expmap(np.r_[0.1 * i, -0.05 * i, 0.2 * i, i, 0.3 * i, 0.1]))
+    g.add(PriorFactor(0, Pose3.Expmap(np.r_[0, 0, 0, 0, 0, 0.1]), noise.isotropic(6, 0.1)))
+    for i in range(3):
+        g.add(BetweenFactor(i, i + 1, Pose3.Expmap(np.r_[0.1, -0.05, 0.25, 1.0, 0.3, 0.0]),
+                            noise.isotropic(6, 0.2)))
+    program = compile_graph(g, SolverConfig(linear="qr"), name="chk_rot3")
+    proj = emit(program, tmp_path, HlsConfig(scalar="float"))
+    data = problem_data(g, program)
+    reference = sim.run(program, data, precision="float64")
+    key = program.variables[2].key
+    out = np.asarray(run_csim(proj, program, data, reference).values[key], float)
+    rotation = out[:9].reshape(3, 3)
+
+    def check(r_ref: np.ndarray) -> subprocess.CompletedProcess:
+        storage = {**reference.storage, key: np.r_[r_ref.reshape(-1), out[9:]]}
+        write_reference(tmp_path / "reference.txt", program,
+                        dataclasses.replace(reference, storage=storage))
+        return _tb(proj, "data.txt", "result.txt", "reference.txt")
+
+    def turned(angle: float) -> np.ndarray:
+        return rotation @ Rot3.Expmap(angle * np.array([2.0, -1.0, 2.0]) / 3).R
+
+    done = check(rotation * (1 - 1e-6))
+    assert done.returncode == 0, done.stderr
+    assert check(turned(0.0009)).returncode == 0
+    done = check(turned(0.0011))
+    assert done.returncode == 4 and "variable 2: rotation differs from the reference by 0.0011" \
+        in done.stderr
+    # a matrix that is no rotation reads far off, as any rotation as far off does
+    done = check(2 * rotation)
+    assert done.returncode == 4 and "variable 2: rotation differs" in done.stderr
 
 
 def test_fgc_compile_writes_the_reference_beside_the_data(tmp_path):

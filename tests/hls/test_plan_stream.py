@@ -140,7 +140,8 @@ def test_the_marginal_reuses_the_rows_of_lms_last_linearisation(paper_a_n7):
     # has left, its priors hold nothing), not the whole window
     rows = model.stream["stream_leaf_linearize_live"]
     assert rows < model.stream["stream_leaf_linearize"]
-    assert rows < model.group["factor_jacobian"] + model.group["gradient"]
+    assert rows < model.group["factor_jacobian"]  # the datapaths and the gradient beside them
+    assert "gradient" not in model.group
     # computed again before the marginal / kept region (stream_call, on LM's linearisation
     # instance): a term of its own, not hidden behind the kept net
     assert again.term("relinearize").each == rows
@@ -223,10 +224,15 @@ def test_each_stream_function_has_one_call_site_in_the_header():
     text = (Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
             / "fgc_stream.h").read_text()
     code = re.sub(r"//[^\n]*", "", text)
-    for name in ("marginalize", "reexpress", "kept_walk", "keep", "window_task", "kept_task",
-                 "window_and_kept", "write_tau"):
+    # tau's and the kept conditional's two parts: the marginal's (tau_and_keep's tasks) and a
+    # batch step's (write_tau, kept_conditional)
+    two = ("tau_sign", "tau_tail", "kept_reciprocals", "kept_scale")
+    for name in ("marginalize", "reexpress", "kept_walk", "keep_points", "keep_task",
+                 "window_task", "kept_task", "window_and_kept", "write_tau", "tau_task",
+                 "tau_beside_keep", "tau_and_keep", "sign_task", "reciprocal_task",
+                 "sign_beside_reciprocals", "kept_conditional", *two):
         sites = re.findall(rf"\b{name}<CFG>\(", code)
-        assert len(sites) == (2 if name == "write_tau" else 1), name  # marginal, batch step
+        assert len(sites) == (2 if name in two else 1), name
 
 
 @pytest.fixture(scope="module")
@@ -334,15 +340,16 @@ def test_the_cost_at_x_comes_from_the_first_linearisation(paper_a_n7):
     one iteration more; fgc_lm.h's FGC_LM_COST_IN_LINEARIZE), so no cost pass at X runs: the
     plan's per-call ``factor_cost`` phase costs nothing, the update prices no ``cost_x`` (nor a
     batch step ``batch_cost_x``), and the gradient pass prices the extra column per instance."""
-    from fgc_backends.hls.units.datapath import cost_in_linearization
+    from fgc_backends.hls.plan.loops import kernel_timing
+    from fgc_backends.hls.units.datapath import cost_in_linearization, gradient_loops
 
     _, model = paper_a_n7
     for plan, program in ((model.plan, model.layout.template),
                           (model.batch["plan"], model.layout.batch.template)):
         assert cost_in_linearization(program)
         assert sum(phase_cycles(ph) for ph in plan.phases if ph.name == "factor_cost") == 0
-        (grad,) = [ph for ph in plan.phases if ph.name == "gradient"]
-        scatter = {p.name: p.loops[-1] for p in grad.processes if p.name.startswith("reduce_")}
+        grad = gradient_loops(program, kernel_timing(plan.ops))
+        scatter = {p.name: p.loops[-1] for p in grad if p.name.startswith("reduce_")}
         for i, b in enumerate(program.blocks):
             assert (scatter[f"reduce_{i}"].name, scatter[f"reduce_{i}"].trip) == \
                 ("scatter", sum(len(blk[0]) for blk in b.structure if blk) + 1)

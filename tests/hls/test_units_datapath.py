@@ -271,3 +271,51 @@ def test_shared_datapath_as_emitted_and_read(lio_small, tmp_path):
     assert len(loops) == 2 and not check(loops)  # the declared IIs are what the text allows
     reader = sum(r.dsp(dsp_of) * modules[r.function] for r in loops)
     assert 0 < reader <= dict(cost.dsp_by_unit)["factor_small"]
+
+
+# -- the gradient beside the datapaths (QR: one DATAFLOW region, linearize_rows) -------------
+
+
+def test_the_gradient_runs_beside_the_datapaths(lio_small, tmp_path):
+    """QR's linearisation is one region: each instance's rows go from its datapath into AB and,
+    PORTS words a stream word, to reduce_all, which forms A^T b from them (AB is not read
+    again). The plan prices the region as fgc_cycles.h counts it: the datapaths, then what the
+    gradient adds after them - at least the last instance's gradient (its rows come when its
+    datapath loop ends), less than the gradient's own loops added on."""
+    from fgc_backends.hls.plan.loops import kernel_timing
+    from fgc_backends.hls.units import datapath
+    plan, _ = _plan(lio_small)
+    names = [ph.name for ph in plan.phases]
+    assert "gradient" not in names
+    (lin,) = [ph for ph in plan.phases if ph.name == "factor_jacobian"]
+    jac = [p for p in lin.processes if p.name != "gradient"]
+    (beside,) = [p for p in lin.processes if p.name == "gradient"]
+    timing = kernel_timing(plan.ops)
+    alone = sum(p.cycles for p in datapath.gradient_loops(lio_small, timing))
+    tail = beside.cycles
+    # the last datapath loop's last block type: its instance's gradient after the rows
+    last = jac[-1].name
+    small = datapath.small_blocks(lio_small)
+    b = small[-1] if last == "factor_small_jacobian" else int(last.split("_")[1])
+    columns, rows, scatter = datapath.reduce_loops(lio_small.blocks[b], timing, 1)
+    assert rows.depth + scatter.cycles <= tail < alone
+    # the datapaths' II leaves room for the stream's words (one a cycle; the shared loop's
+    # for every branch's, as the reader sums the text's accesses)
+    from fgc_backends.hls.plan.loops import _block_shape
+    words = {i: _block_shape(blk)[0] * _block_shape(blk)[2] // 2
+             for i, blk in enumerate(lio_small.blocks)}
+    for p in jac:
+        k = p.name[len("factor_"):-len("_jacobian")]
+        need = sum(words[i] for i in small) if k == "small" else words[int(k)]
+        assert p.loops[0].ii >= need
+    # as emitted: one region of the two processes, the gradient from the stream
+    out = tmp_path / "lio"
+    emit(lio_small, out, HlsConfig())
+    text = (out / "lio.cpp").read_text()
+    region = text[text.index("void linearize_rows("):]
+    region = region[:region.index("\n}\n")]
+    assert "#pragma HLS DATAFLOW" in region
+    assert "evaluate_all(" in region and "reduce_all(" in region
+    acc = text[text.index("bool accumulate("):]
+    acc = acc[:acc.index("\n}\n")]
+    assert "grad.read()" in acc and "AB[" not in acc

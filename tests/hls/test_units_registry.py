@@ -67,7 +67,8 @@ def test_a_registered_unit_is_assembled_and_priced(programs, monkeypatch):
 
 def test_phases_follow_the_iteration_slots(programs):
     order = [ph.name for ph in build_plan(programs["qr"]).phases]
-    assert order[:2] == ["factor_jacobian", "gradient"]
+    # (QR: the gradient beside the datapaths, in factor_jacobian's region)
+    assert order[0] == "factor_jacobian" and "gradient" not in order
     # the state update runs inside back-substitution's phase (fed by it)
     assert order[-7:] == ["backsub", "factor_cost", "lm_iteration", "lm_control",
                           "lm_accept", "setup", "rounding_noise"]

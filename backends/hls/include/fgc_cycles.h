@@ -16,8 +16,11 @@
 // process's loops) plus the fill (the depth of the first loop that runs) of each other process,
 // as plan_cost does; and no less than the end of any process's last loop when its loops that
 // wait for another's (FGC_WAIT before a loop: it reads the stream that loop of an earlier process
-// of the region writes - the QR Evaluate the column the Update unit streams, an Update unit v_0
-// and tau from qr_finish) end no earlier than their depth after the loop they wait for.
+// of the region writes - the QR Evaluate the column the Update unit streams, the Evaluate v_0
+// and tau from qr_finish) end no earlier than their depth after the loop they wait for;
+// FGC_WAIT_AFTER(..., after): the loop reads that stream in one iteration only, `after` cycles
+// (iterations at its II) before its last iteration issues - an Update unit's dot_axpy reads v_0
+// and tau inside its loop - so it ends no earlier than after + its depth after that loop.
 //
 // The kernel's own loops (factor datapaths, gradient / HGC, stacking, commit, assembly, state
 // update, LM control, the rounding-noise pass) report themselves the same way. FGC_PHASE(name)
@@ -76,6 +79,7 @@ struct Record {
     // (on_process, on_instance) whose name ends with on_loop, so it ends its depth after it
     std::string on_process, on_loop;
     int on_instance;
+    long after;  // a wait's cycles from the read to the loop's last issue (FGC_WAIT_AFTER)
     long cycles() const { return trip > 0 ? (trip - 1) * ii + depth : 0; }
 };
 
@@ -160,14 +164,14 @@ inline void add(const char* process, int instance, const char* loop, long trip, 
                 long depth) {
     State& s = state();
     s.records.push_back(Record{s.current, s.current_name, s.phase, process, instance, loop, trip,
-                               ii, depth, "", "", 0});
+                               ii, depth, "", "", 0, 0});
 }
 
 inline void wait(const char* process, int instance, const char* on_process, int on_instance,
-                 const char* on_loop) {
+                 const char* on_loop, long after = 0) {
     State& s = state();
     s.records.push_back(Record{s.current, s.current_name, s.phase, process, instance, "wait", 0,
-                               1, 0, on_process, on_loop, on_instance});
+                               1, 0, on_process, on_loop, on_instance, after});
 }
 
 inline bool ends_with(const std::string& text, const std::string& tail) {
@@ -279,10 +283,10 @@ inline long span_total(std::size_t from, std::size_t to) {
 // Per record of [from, to) (one DATAFLOW region's records): when it ends on its process's own
 // clock (a loop ends its cycles after the one before it, and a loop that waits - FGC_WAIT
 // before it: it reads another process's stream as that process's loop writes it - no earlier
-// than its depth after the end of that loop); a record that does not run ends where its
-// process's clock stands. A region (total_range) ends no earlier than any of these, and the
-// column design's keyed sends (FGC_OUTER_SEND_STEP) happen at these times (units/backsub.py's
-// column_timeline).
+// than its depth after the end of that loop, and FGC_WAIT_AFTER's `after` cycles more); a record
+// that does not run ends where its process's clock stands. A region (total_range) ends no
+// earlier than any of these, and the column design's keyed sends (FGC_OUTER_SEND_STEP) happen at
+// these times (units/backsub.py's column_timeline).
 inline std::vector<long> record_ends(std::size_t from, std::size_t to) {
     const std::vector<Record>& r = log();
     std::vector<long> ends(to - from, 0);
@@ -293,8 +297,8 @@ inline std::vector<long> record_ends(std::size_t from, std::size_t to) {
             for (std::size_t x = from; x < q; ++x)
                 if (r[x].process == r[q].on_process && r[x].instance == r[q].on_instance &&
                     ends_with(r[x].loop, r[q].on_loop) && r[x].trip > 0) {
-                    if (!pending.count(key) || pending[key] < ends[x - from])
-                        pending[key] = ends[x - from];
+                    const long ready = ends[x - from] + r[q].after;
+                    if (!pending.count(key) || pending[key] < ready) pending[key] = ready;
                     break;
                 }
             ends[q - from] = clock[key];
@@ -563,6 +567,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_TASKS_JOIN() ::fgc_cycles::tasks_join()
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) \
     ::fgc_cycles::wait(process, instance, on_process, on_instance, on_loop)
+#define FGC_WAIT_AFTER(process, instance, on_process, on_instance, on_loop, after) \
+    ::fgc_cycles::wait(process, instance, on_process, on_instance, on_loop, after)
 #define FGC_DRAINED(streams, n) ::fgc_cycles::drained(streams, n, #streams)
 #define FGC_OUTER_BRANCH() ::fgc_cycles::mark('B')
 #define FGC_OUTER_SEND() ::fgc_cycles::mark('S')
@@ -591,6 +597,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_TASK() ((void)0)
 #define FGC_TASKS_JOIN() ((void)0)
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) ((void)0)
+#define FGC_WAIT_AFTER(process, instance, on_process, on_instance, on_loop, after) ((void)0)
 #define FGC_DRAINED(streams, n) ((void)0)
 #define FGC_OUTER_BRANCH() ((void)0)
 #define FGC_OUTER_SEND() ((void)0)

@@ -67,8 +67,8 @@
 //                     Update unit (vq[u]) and, if j + 1 < k, to the Evaluate (evq);
 //   qr_finish         meanwhile turns hin ({norm2, n}, {x_0, j}) into v_0, tau and R_jj (the
 //                     square root and the divide, the Evaluate's tail, overlapped with the
-//                     broadcast) and streams them to each Update unit (tq[u]) and the Evaluate
-//                     (etq), R_jj also to the collector (rq);
+//                     broadcast) and streams v_0 and tau to each Update unit (tq[u]), all three
+//                     to the Evaluate (etq), R_jj to the collector (rq);
 //   qr_update<u>      u = 0 ... N_UNITS - 1 (one process each, through qr_update_units): applies
 //                     reflection j to its own columns c > j, c % N_UNITS == u, in its own bank
 //                     work[u] (read and written by that process only: its memory, no channel).
@@ -76,8 +76,10 @@
 //                     max(j, 0) ... rows - 1) to the Evaluate (colq[u]) while the vector
 //                     arrives and zeroes it in its bank; its other columns go through one
 //                     pipelined loop, column l's dot product beside column l - 1's update
-//                     (dot_axpy), which pays its depth once per reflection. Each column's entry
-//                     in row j, final now, goes to the collector (rowq[u]);
+//                     (dot_axpy), which pays its depth once per reflection and takes the
+//                     vector, v_0 and tau as its first column needs them (the pivot's word
+//                     last: the dot starts as the vector arrives, before the square root).
+//                     Each column's entry in row j, final now, goes to the collector (rowq[u]);
 //   qr_evaluate       applies reflection j to column j + 1 as it arrives (its dot product with
 //                     the vector as both stream in, the scale once tau is there, then one pass
 //                     that updates it): the entry in row j to the collector (exq), the words
@@ -115,7 +117,7 @@ namespace fgc_units {
 
 // One word of a Householder vector on its way to the Update units: from the broadcast the header
 // {0, n} (n active rows; n == 0: no reflection), then n - 1 words {v_a, row} below the pivot;
-// from qr_finish {v_0, j}, {tau, n}, {R_jj, j}.
+// from qr_finish {v_0, j}, {tau, n} (and {R_jj, j} to the Evaluate).
 template <class T>
 struct qr_word {
     T val;
@@ -201,9 +203,8 @@ void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1], int j, 
 // {norm2, n}, {x_0, j}) alpha = -sign(x_0) sqrt(norm2), v_0 = x_0 - alpha and tau = 1 / (norm2 -
 // alpha x_0) (2 / |v|^2, without a second sum; 0 for a column zero on every active row but for
 // subnormal residue);
-// {v_0, j}, {tau, n}, {R_jj = alpha, j} to every Update unit and, if j + 1 < k, the Evaluate,
-// R_jj to the collector. n = 0 (no
-// reflection): zeros.
+// {v_0, j}, {tau, n} to every Update unit and, with {R_jj = alpha, j}, to the Evaluate if
+// j + 1 < k, R_jj to the collector. n = 0 (no reflection): zeros.
 template <class CFG>
 void qr_finish(const qr_word<typename CFG::T> hin[2], int k,
                hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS],
@@ -250,11 +251,7 @@ void qr_finish(const qr_word<typename CFG::T> hin[2], int k,
         tq[u].write(w1);
     }
     if (to_eval) etq.write(w1);
-    for (int u = 0; u < CFG::N_UNITS; ++u) {
-#pragma HLS UNROLL
-        tq[u].write(w2);
-    }
-    if (to_eval) etq.write(w2);
+    if (to_eval) etq.write(w2);  // R_jj: the Evaluate's (the Update units have no use for it)
     rq.write(alpha);
 }
 
@@ -284,8 +281,11 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
         QR_DOT_LAT = CFG::MUL_LAT + CFG::ADD_LAT,
         QR_HELD = 1 << ceil_log2(CFG::MAX_ROWS + QR_DOT_LAT + CFG::FOLD_LAT)  // > lag
     };
-    T v[CFG::MAX_ROWS];
-    int at[CFG::MAX_ROWS];
+    // the vector in two copies, one for the dot's reads and one for the axpy's (each copy one
+    // write and one read an iteration of dot_axpy: a dual-port memory), in the dot's word order:
+    // words 0 ... n - 2 below the pivot (rows rd / rx), word n - 1 the pivot's v_0 (row j)
+    T vd[CFG::MAX_ROWS], vx[CFG::MAX_ROWS];
+    int rd[CFG::MAX_ROWS], rx[CFG::MAX_ROWS];
     const int n = vin.read().idx;  // {0, n}
     FGC_CYCLES("qr_update", U, "header", 1, 1, 1);
     // this unit's first column right of j; it is the next pivot column if it is j + 1 < k
@@ -293,6 +293,12 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     const bool next_here = c0 == j + 1 && c0 < k;
     const int l0 = c0 / CFG::N_UNITS;
     const int below = n > 1 ? n - 1 : 0;
+    // the unit's other columns right of j: local columns lb ... lb + r - 1
+    const int lb = next_here ? l0 + 1 : l0;
+    const int r = c0 < cols ? (cols - 1 - U) / CFG::N_UNITS - lb + 1 : 0;
+    // a reflection to apply to columns here: dot_axpy, which takes the vector, v_0 and tau as
+    // its first column's words need them
+    const bool fused = n > 1 && r > 0;
     if (next_here) {
         // The next pivot column goes to the Evaluate as it is now (rows j0 ... rows - 1, j0 =
         // max(j, 0)): the Evaluate applies reflection j to it, sends its row j entry to the
@@ -305,118 +311,37 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
 #pragma HLS PIPELINE II=1
             if (t < below) {
                 const qr_word<T> x = vin.read();
-                v[t + 1] = x.val;
-                at[t + 1] = x.idx;
+                vd[t] = x.val;
+                vx[t] = x.val;
+                rd[t] = x.idx;
+                rx[t] = x.idx;
             }
             colout.write(bank[j0 + t][l0]);
             bank[j0 + t][l0] = T(0);
         }
         FGC_CYCLES("qr_update", U, "vector_column", rows - j0, 1, 2);
-    } else {
-        // the n - 1 words below the pivot from the broadcast: trip n - 1, II 1, depth 1
-        for (int a = 1; a <= below; ++a) {
+    } else if (!fused) {
+        // the n - 1 words below the pivot, not needed here: trip n - 1, II 1, depth 1
+        for (int a = 0; a < below; ++a) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-            const qr_word<T> x = vin.read();
-            v[a] = x.val;
-            at[a] = x.idx;
+            vin.read();
         }
         FGC_CYCLES("qr_update", U, "vector", below, 1, 1);
     }
-    // v_0 from qr_finish (it waits for the square root)
-    FGC_WAIT("qr_update", U, "qr_finish", 0, "v0");
-    const qr_word<T> w0 = tin.read();
-    v[0] = w0.val;
-    at[0] = w0.idx;
-    FGC_CYCLES("qr_update", U, "pivot_word", 1, 1, 1);
-    // tau and R_jj (qr_finish's last words; what follows waits for them)
-    FGC_WAIT("qr_update", U, "qr_finish", 0, "tau");
-    const T tau = tin.read().val;
-    tin.read();  // R_jj: the collector has it from qr_finish
-    FGC_CYCLES("qr_update", U, "tail", 2, 1, 1);
     // The banks are left zero (what qr_stack relies on: it writes only the next step's rows):
     // each pivot column was zeroed as it went to the Evaluate (above, one region before its
     // reflection), and every row's entries are zeroed as they go to the collector (row j is
     // no reflection's after j).
-    // the unit's other columns right of j: local columns lb ... lb + r - 1
-    const int lb = next_here ? l0 + 1 : l0;
-    const int r = c0 < cols ? (cols - 1 - U) / CFG::N_UNITS - lb + 1 : 0;
-    if (r <= 0) return;
-    if (n > 1) {
-        // One flattened loop: column l's dot product v.x beside the update x -= (tau v.x) v of
-        // the column before it (the same operators, both busy every cycle, where a dot pass
-        // and then an update pass over all r columns would leave each idle half the time).
-        // Three streams of column words run through it, each one word an iteration, column
-        // by column, row a of a column at active row at[a]:
-        //   dot   (iteration e = t for word t = (l - lb) n + a, e < n r): x = bank[at[a]][l]
-        //         into P interleaved partial sums of column l (a partial is met again P >= La
-        //         iterations later; its first term overwrites it) and into the held ring;
-        //   fold  (e = t + QR_DOT_LAT, the word a column's last, a = n - 1: its partial sums
-        //         have landed): scaled[l] = tau * fold(part[l]);
-        //   axpy  (e = t + lag, lag = n - 1 + QR_DOT_LAT + FOLD_LAT: the column's scaled is
-        //         ready, FOLD_LAT after its fold): x from the held ring (the bank's two
-        //         ports are the dot's read and this write), x - scaled[l] v_a into the bank,
-        //         the entry in row j (a = 0) to the collector.
-        // trip n r + lag, II 1, depth Lm + La (the axpy's multiply-add)
-        enum { MAX_BATCH = CFG::MAX_ROWS * CFG::LOCAL_COLS + QR_HELD };  // pragma constants
-        // the partial sums in registers: in one iteration the fold reads a column's P partials
-        // while the dot adds into another column's
-        T part[CFG::LOCAL_COLS][P];
-#pragma HLS ARRAY_PARTITION variable=part complete dim=0
-        T scaled[CFG::LOCAL_COLS];
-        T held[QR_HELD];  // the dot's words until their axpy (lag < QR_HELD iterations later)
-        const int words = n * r;
-        const int lag = n - 1 + QR_DOT_LAT + CFG::FOLD_LAT;
-        int ld = lb, ad = 0, lq = lb, aq = 0, lx = lb, ax = 0;
-        for (int e = 0; e < words + lag; ++e) {
-#pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-#pragma HLS DEPENDENCE variable=scaled inter true distance=CFG::FOLD_LAT
-#pragma HLS DEPENDENCE variable=held inter true distance=CFG::FOLD_LAT
-#pragma HLS DEPENDENCE variable=bank inter false
-            if (e < words) {  // dot: word e
-                const T x = bank[at[ad]][ld];
-                held[e & (QR_HELD - 1)] = x;
-                const T term = v[ad] * x;
-                part[ld][ad % P] = ad < P ? term : T(part[ld][ad % P] + term);
-                if (ad == n - 1) {
-                    ad = 0;
-                    ++ld;
-                } else {
-                    ++ad;
-                }
-            }
-            if (e >= QR_DOT_LAT && e < words + QR_DOT_LAT) {  // fold: word e - QR_DOT_LAT
-                if (aq == n - 1) {
-                    T p[P];
-#pragma HLS ARRAY_PARTITION variable=p complete
-                    for (int t = 0; t < P; ++t) {
-#pragma HLS UNROLL
-                        p[t] = t < n ? part[lq][t] : T(0);
-                    }
-                    scaled[lq] = tau * fold_partials<T, P>(p);
-                    aq = 0;
-                    ++lq;
-                } else {
-                    ++aq;
-                }
-            }
-            if (e >= lag) {  // axpy: word e - lag (each entry (at[a], l) written once)
-                const T x = held[(e - lag) & (QR_HELD - 1)] - scaled[lx] * v[ax];
-                // row j (a = 0) to the collector, 0 in the bank
-                bank[at[ax]][lx] = ax == 0 ? T(0) : x;
-                if (ax == 0) rowout.write(x);
-                if (ax == n - 1) {
-                    ax = 0;
-                    ++lx;
-                } else {
-                    ++ax;
-                }
-            }
-        }
-        FGC_CYCLES("qr_update", U, "dot_axpy", words + lag, 1, CFG::MUL_LAT + CFG::ADD_LAT);
-    } else if (j >= 0) {
+    if (!fused) {
+        // v_0 and tau from qr_finish (it waits for the square root, then the divide)
+        FGC_WAIT("qr_update", U, "qr_finish", 0, "v0");
+        tin.read();
+        FGC_CYCLES("qr_update", U, "pivot_word", 1, 1, 1);
+        FGC_WAIT("qr_update", U, "qr_finish", 0, "tau");
+        tin.read();
+        FGC_CYCLES("qr_update", U, "tail", 1, 1, 1);
+        if (r <= 0 || j < 0) return;
         // no reflection (an all-zero column: row j as it is) or the pivot row's negation (one
         // active row), each entry to the collector (0 in the bank): trip r, II 1, depth 1
         for (int l = lb; l < lb + r; ++l) {
@@ -427,7 +352,114 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
             rowout.write(x);
         }
         FGC_CYCLES("qr_update", U, n == 1 ? "negate_rows" : "rows_out", r, 1, 1);
+        return;
     }
+    // One flattened loop: column l's dot product v.x beside the update x -= (tau v.x) v of the
+    // column before it (the same operators, both busy every cycle, where a dot pass and then an
+    // update pass over all r columns would leave each idle half the time). Three streams of
+    // column words run through it, each one word an iteration, column by column, word a of a
+    // column at row rd[a] (the rows below the pivot, then the pivot's row j):
+    //   dot   (iteration e = t for word t = (l - lb) n + a, e < n r): x = bank[rd[a]][l] into
+    //         P interleaved partial sums of column l (a partial is met again P >= La
+    //         iterations later; its first term overwrites it) and into the held ring. The
+    //         first column's words take the vector as it comes: from the broadcast (e < n - 1,
+    //         unless the column loop above read it) and v_0 from qr_finish (e = n - 1), each
+    //         kept in vd / vx for the later columns: the pivot's word last, so the dot starts
+    //         with the vector, not after the square root;
+    //   fold  (e = t + QR_DOT_LAT, the word a column's last, a = n - 1: its partial sums
+    //         have landed): scaled[l] = tau * fold(part[l]), tau from qr_finish at the first
+    //         column's fold (after the divide);
+    //   axpy  (e = t + lag, lag = n - 1 + QR_DOT_LAT + FOLD_LAT: the column's scaled is
+    //         ready, FOLD_LAT after its fold): x from the held ring (the bank's two ports are
+    //         the dot's read and this write), x - scaled[l] v_a into the bank, the entry in row
+    //         j (a = n - 1) to the collector.
+    // trip n r + lag, II 1, depth Lm + La (the axpy's multiply-add); it reads v_0 in iteration
+    // n - 1 and tau in iteration n - 1 + QR_DOT_LAT (FGC_WAIT_AFTER: the loop ends no earlier
+    // than its remaining iterations and depth after each arrives)
+    enum { MAX_BATCH = CFG::MAX_ROWS * CFG::LOCAL_COLS + QR_HELD };  // pragma constants
+    // the partial sums in registers: in one iteration the fold reads a column's P partials
+    // while the dot adds into another column's
+    T part[CFG::LOCAL_COLS][P];
+#pragma HLS ARRAY_PARTITION variable=part complete dim=0
+    T scaled[CFG::LOCAL_COLS];
+    T held[QR_HELD];  // the dot's words until their axpy (lag < QR_HELD iterations later)
+    const int words = n * r;
+    const int lag = n - 1 + QR_DOT_LAT + CFG::FOLD_LAT;
+    const bool from_broadcast = !next_here;  // the vector not read yet: the dot takes it
+    T tau = T(0);
+    int ld = lb, ad = 0, lq = lb, aq = 0, lx = lb, ax = 0;
+    FGC_WAIT_AFTER("qr_update", U, "qr_finish", 0, "v0", words + lag - n);
+    FGC_WAIT_AFTER("qr_update", U, "qr_finish", 0, "tau", words + lag - n - QR_DOT_LAT);
+    for (int e = 0; e < words + lag; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
+#pragma HLS DEPENDENCE variable=scaled inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=held inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=vd inter true distance=2
+#pragma HLS DEPENDENCE variable=rd inter true distance=2
+#pragma HLS DEPENDENCE variable=vx inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=rx inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=bank inter false
+        if (e < words) {  // dot: word e
+            // the word's vector entry and row: the first column's as they arrive, then kept
+            T va = vd[ad];
+            int row = rd[ad];
+            if (e < below && from_broadcast) {
+                const qr_word<T> w = vin.read();
+                va = w.val;
+                row = w.idx;
+            } else if (e == below) {
+                va = tin.read().val;  // v_0 (the pivot's word, last)
+                row = j;
+            }
+            if (e < n) {
+                vd[e] = va;
+                rd[e] = row;
+                vx[e] = va;
+                rx[e] = row;
+            }
+            const T x = bank[row][ld];
+            held[e & (QR_HELD - 1)] = x;
+            const T term = va * x;
+            part[ld][ad % P] = ad < P ? term : T(part[ld][ad % P] + term);
+            if (ad == n - 1) {
+                ad = 0;
+                ++ld;
+            } else {
+                ++ad;
+            }
+        }
+        if (e >= QR_DOT_LAT && e < words + QR_DOT_LAT) {  // fold: word e - QR_DOT_LAT
+            if (aq == n - 1) {
+                if (lq == lb) tau = tin.read().val;  // the first fold: tau
+                T p[P];
+#pragma HLS ARRAY_PARTITION variable=p complete
+                for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+                    p[t] = t < n ? part[lq][t] : T(0);
+                }
+                scaled[lq] = tau * fold_partials<T, P>(p);
+                aq = 0;
+                ++lq;
+            } else {
+                ++aq;
+            }
+        }
+        if (e >= lag) {  // axpy: word e - lag (each entry (rx[a], l) written once)
+            const T x = held[(e - lag) & (QR_HELD - 1)] - scaled[lx] * vx[ax];
+            // row j (the pivot's word, a = n - 1) to the collector, 0 in the bank
+            bank[rx[ax]][lx] = ax == n - 1 ? T(0) : x;
+            if (ax == n - 1) rowout.write(x);
+            if (ax == n - 1) {
+                ax = 0;
+                ++lx;
+            } else {
+                ++ax;
+            }
+        }
+    }
+    FGC_CYCLES("qr_update", U, "dot_axpy", words + lag, 1, CFG::MUL_LAT + CFG::ADD_LAT);
 }
 
 // The N_UNITS Update processes, U = 0 ... N_UNITS - 1, as separate calls in the region.
@@ -475,15 +507,28 @@ inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typ
     if (i >= col) part[t % CFG::PARTIALS] += e * e;
 }
 
+// The next word of column j + 1 from the Update unit that holds it (colq[owner]): one read of
+// one of the N_UNITS streams, in a pipelined loop of the Evaluate.
+template <class CFG>
+inline typename CFG::T qr_owner_word(hls::stream<typename CFG::T> colq[CFG::N_UNITS], int owner) {
+#pragma HLS INLINE
+    typename CFG::T e = typename CFG::T(0);
+    for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+        if (u == owner) e = colq[u].read();
+    }
+    return e;
+}
+
 // Evaluate: reflection j applied to column j + 1 and that column's Householder vector (if j + 1
 // < k). The column arrives from the unit that holds it as it stood before reflection j (rows j0
 // ... rows - 1, j0 = max(j, 0)), reflection j's vector from the broadcast (evq: {0, n}, the n - 1
 // words below the pivot) and from qr_finish (etq: v_0, tau, R_jj), as the Update units get them.
 // The column's dot product with the vector is taken as the column arrives, folded with the
-// pivot's term once v_0 is there, scaled once tau is; then one pass over the column updates it
-// (x -= tau (v.x) v on the active rows), sends its row j entry to the collector (exq) and keeps
-// its pivot and non-zero rows
-// in vout ({0, n'}, then n' words {x_a, row}: v_a = x_a below the pivot) while summing their
+// pivot's term once v_0 is there, scaled once tau is; then one pass over the column's rows that
+// can be non-zero (row j, the next pivot's, reflection j's active rows and the column's
+// non-zero entries, kept as it arrives) updates it (x -= tau (v.x) v on the active rows),
+// sends its row j entry to the collector (exq) and keeps its pivot and non-zero rows in vout ({0, n'}, then n' words {x_a, row}: v_a = x_a below the pivot) while summing their
 // squares (P interleaved partial sums, folded) for hout ({norm2, n'}, {x_0, j + 1}), which the
 // next region's qr_finish turns into v_0, tau and R_jj while its broadcast streams the rest.
 // With no reflection to apply (n = 0; n = 1: the pivot row's negation, exact) the column is
@@ -500,7 +545,8 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     if (col >= k) return;
     const int owner = col % CFG::N_UNITS;
     const int j0 = j > 0 ? j : 0;
-    T x[CFG::MAX_ROWS];  // the column, rows j0 ... rows - 1
+    T x[CFG::MAX_ROWS];  // the column's kept rows (rows xr) of rows j0 ... rows - 1
+    int xr[CFG::MAX_ROWS];
     T v[CFG::MAX_ROWS];
     int at[CFG::MAX_ROWS];
     const int n = evq.read().idx;  // {0, n}
@@ -524,11 +570,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-            T e = T(0);
-            for (int u = 0; u < CFG::N_UNITS; ++u) {
-#pragma HLS UNROLL
-                if (u == owner) e = colq[u].read();
-            }
+            const T e = qr_owner_word<CFG>(colq, owner);
             const int i = j0 + t;
             qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, exq, vout, m, pivot, part);
         }
@@ -540,7 +582,11 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
         // (it reads the column and the vector as they are streamed: the counters' critical path)
         FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "vector_column");
         FGC_WAIT("qr_evaluate", 0, "qr_broadcast", 0, "vector");
-        int a = 1;
+        // The rows the update pass needs are kept (x, rows xr; c of them, ascending): row j,
+        // the next pivot's row, the rows active in reflection j and the column's non-zero
+        // entries; the others are zero before the update and after it, no word of the next
+        // vector and no term of its norm, so that pass skips them
+        int a = 1, c = 0;
         qr_word<T> next;
         next.val = T(0);
         next.idx = -1;
@@ -548,19 +594,22 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-            T e = T(0);
-            for (int u = 0; u < CFG::N_UNITS; ++u) {
-#pragma HLS UNROLL
-                if (u == owner) e = colq[u].read();
-            }
-            x[t] = e;
+            const T e = qr_owner_word<CFG>(colq, owner);
+            const int i = j0 + t;
+            bool active = i == j;
             // the next word below the pivot
-            if (a <= below && next.idx < j0 + t) next = evq.read();
-            if (a <= below && next.idx == j0 + t) {
+            if (a <= below && next.idx < i) next = evq.read();
+            if (a <= below && next.idx == i) {
                 v[a] = next.val;
                 at[a] = next.idx;
                 ++a;
                 part[t % P] += next.val * e;
+                active = true;
+            }
+            if (active || i == col || e != T(0)) {
+                x[c] = e;
+                xr[c] = i;
+                ++c;
             }
         }
         FGC_CYCLES("qr_evaluate", 0, "receive_dot", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
@@ -585,14 +634,15 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
         FGC_CYCLES("qr_evaluate", 0, "tail", 2, 1, 1);
         const T scaled = tau * dot;  // depth Lm
         FGC_CYCLES("qr_evaluate", 0, "scale", 1, 1, CFG::MUL_LAT);
-        // the update, row j's entry to the collector, the vector kept and its squares summed:
-        // trip rows - j0, II 1, depth 2 (Lm + La) (the multiply-add, then the square into its sum)
+        // the update of the kept rows, row j's entry to the collector, the vector kept and its
+        // squares summed: trip c, II 1, depth 2 (Lm + La) (the multiply-add, then the square
+        // into its sum)
         int b = 1;
-        for (int t = 0; t < rows - j0; ++t) {
+        for (int t = 0; t < c; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-            const int i = j0 + t;
+            const int i = xr[t];
             // the active row's vector word (the pivot's v_0, or the next below it): one
             // multiply-add for both
             T vw = v[0];
@@ -605,8 +655,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
             const T e = on ? T(x[t] - scaled * vw) : x[t];
             qr_next_word<CFG>(i, j, t, e, exq, vout, m, pivot, part);
         }
-        FGC_CYCLES("qr_evaluate", 0, "axpy_norm", rows - j0, 1,
-                   2 * (CFG::MUL_LAT + CFG::ADD_LAT));
+        FGC_CYCLES("qr_evaluate", 0, "axpy_norm", c, 1, 2 * (CFG::MUL_LAT + CFG::ADD_LAT));
     }
     const T norm2 = fold_partials<T, P>(part);  // depth La ceil(log2 P)
     FGC_CYCLES("qr_evaluate", 0, "fold", 1, 1, CFG::ADD_LAT * ceil_log2(P));
@@ -692,7 +741,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS];
 #pragma HLS STREAM variable=vq depth=V_DEPTH
     hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS];
-#pragma HLS STREAM variable=tq depth=3
+#pragma HLS STREAM variable=tq depth=2
     hls::stream<typename CFG::T> rq;
     hls::stream<typename CFG::T> colq[CFG::N_UNITS];
 #pragma HLS STREAM variable=colq depth=CFG::MAX_ROWS

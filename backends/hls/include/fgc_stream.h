@@ -4,8 +4,9 @@
 //   FGC_STREAM_WINDOW    stream_shift<CFG>()    every slot down one (X and DATA_BUF keep the window)
 //                        stream_in<CFG>(m, ...) the call's keyframe into slot m
 //   FGC_STREAM_MARGINAL  marginalize<CFG>(ok)   slot 0's elimination at the optimum -> tau, the
-//                        write_tau<CFG>(rows)   factor written into slot 1's prior
-//   FGC_STREAM_KEPT      reexpress<CFG>(c, x0), keep<CFG>(c), kept_walk<CFG>(first, x0): the kept
+//                        tau_and_keep<CFG>(c)   factor written into slot 1's prior (write_tau<CFG>:
+//                                               a batch step's), beside the kept conditional
+//   FGC_STREAM_KEPT      reexpress<CFG>(c, x0), keep_points<CFG>(c), kept_walk<CFG>(first, x0): the kept
 //                        conditionals, re-expressed, stored and walked back from the window
 //                        (kept_matvec<CFG>, kept_conditional<CFG> inside). window_and_kept<CFG>:
 //                        the window's process (window_task: LM's solve, the marginal on LM's
@@ -18,7 +19,8 @@
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
 //   FGC_STREAM_SWEEP     (instead, the one-step policy) a batch step as a sweep through the window:
-//                        sweep_store<CFG> keeps each keyframe's storage and words as they came,
+//                        stream_in keeps each keyframe's storage and words as they came as it
+//                        moves them into the window (sweep_store<CFG> before a sweep's passes),
 //                        sweep_gather<CFG> the estimates; stream_call then runs one pass per
 //                        keyframe 0 … j, each keyframe in again and, once the window is full,
 //                        its slot 0 leaving at the estimates (the marginal's step at mu = 0, tau,
@@ -147,12 +149,41 @@ void stream_shift() {
     FGC_CYCLES("stream", 0, "shift_data", N_DATA_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 }
 
+#ifndef FGC_STREAM_SWEEP
 // The call's keyframe into slot m: its storage, then its factors' and its prior's words.
 template <class CFG>
 void stream_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
     FGC_PHASE("setup");
     keyframe_in<CFG, false>(m, x_in, data);
 }
+#else
+// The pass's keyframe into slot m (batch steps as sweeps): from its row of the sweep's memory
+// (`from_row`: a sweep pass, the row sweep_store or an earlier call left), else from the call's
+// input, each word also kept in row `row` as it passes (what sweep_store does on its own before
+// a sweep): one read, two writes to different memories an iteration, so keeping the keyframe
+// costs no cycles of its own. The source is a mux (no operator); SWEEP_X / SWEEP_WORDS see at
+// most one read and one write an iteration.
+template <class CFG>
+void stream_in(int m, int row, bool from_row, const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA]) {
+    FGC_PHASE("setup");
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        const T v = from_row ? SWEEP_X[row * STREAM_KF_X + k] : x_in[k];
+        X[SLOT_X[m * STREAM_KF_X + k]] = v;
+        if (!from_row) SWEEP_X[row * STREAM_KF_X + k] = v;
+    }
+    FGC_CYCLES("top", 0, "keyframe_x_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
+#pragma HLS PIPELINE II=1
+        const T v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : data[k];
+        DATA_BUF[NEW_DEST[b + k]] = v;
+        if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
+    }
+    FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+#endif
 
 #ifdef FGC_STREAM_SWEEP
 // The call's keyframe (total, entering slot m) kept as it came: its storage and its words, row
@@ -193,15 +224,15 @@ void sweep_gather(int total, int base, int first) {
 #endif  // FGC_STREAM_WINDOW
 
 #ifdef FGC_STREAM_MARGINAL
-// tau from the rows [A | b] (KF_T x (KF_T + 1), upper triangular) a step passes to slot 1: signed to
-// a positive diagonal, its mean A^-1 b by back-substitution, written with its linearisation point
-// (slot 1's estimate, or `lin` where `given`: the one-step policy's, where the update
-// linearised it) into slot 1's prior. False, nothing written, if it is singular.
+// tau from the rows [A | b] (KF_T x (KF_T + 1), upper triangular) a step passes to slot 1, in two
+// parts: tau_sign signs it to a positive diagonal into `a` and tells whether it is singular
+// (false); tau_tail then takes its mean A^-1 b by back-substitution and writes it with its
+// linearisation point (slot 1's estimate, or `lin` where `given`: the one-step policy's, where
+// the update linearised it) into slot 1's prior. write_tau: the two one after the other (a batch
+// step's); the window's marginal runs tau_tail beside keep's conditional (tau_and_keep).
 template <class CFG>
-bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM_KF_X],
-               bool given) {
+bool tau_sign(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1]) {
     FGC_PHASE("marginal");
-    L a[STREAM_KF_T][STREAM_KF_T + 1];
     L largest = L(1), smallest = L(0);
     for (int i = 0; i < STREAM_KF_T; ++i) {
         const L sign = rows[i * (STREAM_KF_T + 1) + i] < L(0) ? L(-1) : L(1);
@@ -215,19 +246,32 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM
         }
     }
     FGC_CYCLES("marginal", 0, "sign", STREAM_KF_T * (STREAM_KF_T + 1), CFG::T_MAX_II, CFG::T_MAX_DEPTH);
-    if (!(smallest > L(STREAM_SINGULAR) * largest)) return false;
-    L mean[STREAM_KF_T];
-    for (int i = STREAM_KF_T - 1; i >= 0; --i) {
-        L acc = a[i][STREAM_KF_T];
-        for (int c = i + 1; c < STREAM_KF_T; ++c) {
+    return smallest > L(STREAM_SINGULAR) * largest;
+}
+
+template <class CFG>
+void tau_tail(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X], bool given) {
+    FGC_PHASE("marginal");
+    // the mean A^-1 b by columns, last first: x_r = y_r / a_rr (y_r final: its last update was
+    // the column before's), then y_i -= a_ir x_r for the rows above, one a cycle (II 1: each
+    // y_i updated once a column) - so the next unknown waits for one divide and its own row's
+    // update, where the dot product per row ran its whole row at II La first. The same
+    // products and divides as a row's dot product (the subtractions in the other order); y_i
+    // starts as b_i (a mux on the first column: no copy)
+    L y[STREAM_KF_T], mean[STREAM_KF_T];
+    for (int r = STREAM_KF_T - 1; r >= 0; --r) {
+        const bool last = r == STREAM_KF_T - 1;
+        const L xr = (last ? a[r][STREAM_KF_T] : y[r]) / a[r][r];
+        mean[r] = xr;
+        FGC_CYCLES("marginal", 0, "divide", 1, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
+        for (int i = r - 1; i >= 0; --i) {
 #pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T
-#pragma HLS PIPELINE II=CFG::L_ACC_II
-            acc -= a[i][c] * mean[c];
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=y inter false
+            y[i] = (last ? a[i][STREAM_KF_T] : y[i]) - a[i][r] * xr;
         }
-        mean[i] = acc / a[i][i];
+        FGC_CYCLES("marginal", 0, "column", r, 1, CFG::L_ACC_DEPTH);
     }
-    FGC_CYCLES("marginal", 0, "mean", STREAM_KF_T * (STREAM_KF_T - 1) / 2, CFG::L_ACC_II, CFG::L_ACC_DEPTH);
-    FGC_CYCLES("marginal", 0, "divide", STREAM_KF_T, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
         DATA_BUF[STREAM_PRIOR1 + k] = given ? lin[k] : X[SLOT_X[STREAM_KF_X + k]];
@@ -246,15 +290,25 @@ bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM
     DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2] = T(0);  // no robust loss
     DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 1] = T(0);
     FGC_CYCLES("marginal", 0, "tau_out", STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 2, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+// tau signed, checked, its mean and words one after the other (a batch step's). False, nothing
+// written, if it is singular.
+template <class CFG>
+bool write_tau(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM_KF_X],
+               bool given) {
+    L a[STREAM_KF_T][STREAM_KF_T + 1];
+    if (!tau_sign<CFG>(rows, a)) return false;
+    tau_tail<CFG>(a, lin, given);
     return true;
 }
 
 // Keyframe first leaves: tau, the factor slot 0's elimination at the window's optimum passes to
-// slot 1 ([A | b], upper triangular from the QR unit), signed to a positive diagonal, its mean
-// A^-1 b by back-substitution, written with slot 1's estimate as its linearisation point into
-// slot 1's prior (which the next call's shift moves to slot 0). False, nothing written, if the
-// window is not finite at its optimum (`finite` false), slot 0 is rank deficient or tau is
-// singular. The window's rows (AB) are its linearisation at X, the optimum: stream_call
+// slot 1 ([A | b], upper triangular from the QR unit, left in NF), made ready for tau_and_keep,
+// which runs after the window's region: signed to a positive diagonal, its mean A^-1 b by
+// back-substitution, written with slot 1's estimate as its linearisation point into slot 1's
+// prior (which the next call's shift moves to slot 0). False if the window is not finite at its
+// optimum (`finite` false) or slot 0 is rank deficient (tau_and_keep: or tau is singular). The window's rows (AB) are its linearisation at X, the optimum: stream_call
 // computed them again before the region if LM moved after its last linearisation. `reuse` (the
 // one-step policy, the step taken): slot 0's step of the update's own solve is the store (its
 // NF at mu = 0, at the call's start lin01: slots 0 and 1), no step is run again. `live`
@@ -266,12 +320,9 @@ bool marginalize(bool finite, bool reuse, bool live, const T lin01[2 * STREAM_KF
     // caller's ALLOCATION - the marginal has no unit set of its own
 #pragma HLS INLINE
     FGC_EVENT("marginal");
+    (void)lin01;
     if (!finite) return false;
-    if (!reuse && !CFG::leaf_step(live)) return false;
-    FGC_PHASE("marginal");
-    // write_tau reads the rows where the step left them (NF, slot 0's block): its sign loop
-    // reads each word once, nothing else writes NF meanwhile - no copy first
-    return write_tau<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], lin01 + STREAM_KF_X, reuse);
+    return reuse || CFG::leaf_step(live);
 }
 #endif  // FGC_STREAM_MARGINAL
 
@@ -395,16 +446,22 @@ void reexpress(int c, const T x[STREAM_KF_X]) {
 // A conditional (R | S | d, row-major KF_T x (2 KF_T + 1): a QR unit's COND block) stored as
 // kept keyframe c's, each row scaled by its pivot's reciprocal on the way (R unit-diagonal: the
 // walk's back-substitution divides by nothing; the re-expression's S J and d - S Log act on rows
-// alike), a word a cycle.
+// alike), a word a cycle: kept_reciprocals (the pivots' reciprocals, nothing written to kept
+// memory), then kept_scale. kept_conditional: the two one after the other (a batch step's); the
+// window's marginal runs each beside a part of tau (tau_and_keep).
 template <class CFG>
-void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) {
+void kept_reciprocals(const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], L rinv[STREAM_KF_T]) {
     const int cols = 2 * STREAM_KF_T + 1;
-    L rinv[STREAM_KF_T];
     for (int i = 0; i < STREAM_KF_T; ++i) {
 #pragma HLS PIPELINE II=CFG::L_DIV_II
         rinv[i] = L(1) / cond[i * cols + i];
     }
     FGC_CYCLES("kept", 0, "reciprocal", STREAM_KF_T, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
+}
+
+template <class CFG>
+void kept_scale(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], const L rinv[STREAM_KF_T]) {
+    const int cols = 2 * STREAM_KF_T + 1;
     for (int e = 0; e < STREAM_KF_T * (2 * STREAM_KF_T + 1); ++e) {
 #pragma HLS PIPELINE II=1
         const int i = e / cols, k = e % cols;
@@ -420,13 +477,20 @@ void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) 
     FGC_CYCLES("kept", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH + L_MUL_LAT);
 }
 
-// Slot 0's conditional (COND of its step: R | S | d, row-major f x (w + 1)) kept as keyframe c's,
-// linearised at slot 0's estimate with its parent at slot 1's (`reuse`: at lin01, where the
-// one-step update linearised them); a word a cycle.
 template <class CFG>
-void keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
+void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) {
+    L rinv[STREAM_KF_T];
+    kept_reciprocals<CFG>(cond, rinv);
+    kept_scale<CFG>(c, cond, rinv);
+}
+
+// Slot 0's conditional (COND of its step: R | S | d, row-major f x (w + 1)) kept as keyframe c's
+// (kept_reciprocals beside tau's sign loop, kept_scale beside its tail: tau_and_keep), linearised at slot 0's
+// estimate with its parent at slot 1's (keep_points, before that region; `reuse`: at lin01, where
+// the one-step update linearised them); a word a cycle.
+template <class CFG>
+void keep_points(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
     FGC_PHASE("kept");
-    kept_conditional<CFG>(c, COND + STEP_COND_OFF[STREAM_LEAF_STEP]);
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
         KEPT_LIN[c * STREAM_KF_X + k] = reuse ? lin01[k] : X[SLOT_X[k]];
@@ -563,8 +627,8 @@ int batch_step(int j, int first, T errors[2], int info[5]) {
 // batch step's pass -1). The arithmetic is the same whenever it runs, so are the estimates.
 // Each process on its own memories and datapaths (the window's: X, AB, DATA_BUF, COND, NF, the
 // unit sets; the kept net's: the KEPT_* memories, X_KEPT, the keyframe's Log and retraction
-// kernels); keep(first) reads the marginal's conditional and writes kept memory, so it follows
-// the region. A design without one of the two runs that process empty (each function has one
+// kernels); the leaving keyframe's tau and its conditional kept (tau_and_keep: keep writes kept
+// memory) follow the region, tau's tail beside the keep. A design without one of the two runs that process empty (each function has one
 // call site whatever the parts: the second reader reads every preprocessor branch).
 //
 // The window's process: mode 0 nothing (pass -1, op 3), 1 a sweep pass with the window full (the
@@ -647,6 +711,88 @@ void window_and_kept(int mode, int ms, bool live, const T lin01[2 * STREAM_KF_X]
     window_task<CFG>(mode, ms, live, lin01, errors, info, result);
     kept_task<CFG>(reexp, walk, x0);
 }
+
+#ifdef FGC_STREAM_MARGINAL
+// tau_and_keep's two DATAFLOW regions after the window's, each of two processes with no memory
+// between them (every port its process's), each on its own operators:
+//   sign_beside_reciprocals: tau's sign loop (NF -> a, the singularity test) beside the kept
+//     conditional's pivot reciprocals (COND's diagonal -> rinv: nothing written to kept memory,
+//     so it may run before the test says whether the conditional is kept);
+//   tau_beside_keep: tau's tail (its mean and words: a, then lin or X to DATA_BUF) beside the
+//     conditional kept (kept_scale: COND and rinv to KEPT_R / KEPT_S / KEPT_D).
+// The fixed-lag window (no kept net) runs the keep's processes empty.
+template <class CFG>
+void sign_task(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1], bool ok[1]) {
+    FGC_TASK();
+    ok[0] = tau_sign<CFG>(rows, a);
+}
+
+template <class CFG>
+void reciprocal_task(L rinv[STREAM_KF_T]) {
+    FGC_TASK();
+#ifdef FGC_STREAM_KEPT
+    FGC_PHASE("kept");
+    kept_reciprocals<CFG>(COND + STEP_COND_OFF[STREAM_LEAF_STEP], rinv);
+#else
+    (void)rinv;
+#endif
+}
+
+template <class CFG>
+void sign_beside_reciprocals(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1], bool ok[1], L rinv[STREAM_KF_T]) {
+#pragma HLS DATAFLOW
+    sign_task<CFG>(rows, a, ok);
+    reciprocal_task<CFG>(rinv);
+}
+
+template <class CFG>
+void tau_task(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X], bool given) {
+    FGC_TASK();
+    tau_tail<CFG>(a, lin, given);
+}
+
+template <class CFG>
+void keep_task(int c, const L rinv[STREAM_KF_T]) {
+    FGC_TASK();
+#ifdef FGC_STREAM_KEPT
+    FGC_PHASE("kept");
+    kept_scale<CFG>(c, COND + STEP_COND_OFF[STREAM_LEAF_STEP], rinv);
+#else
+    (void)c;
+    (void)rinv;
+#endif
+}
+
+template <class CFG>
+void tau_beside_keep(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X],
+                     bool given, int c, const L rinv[STREAM_KF_T]) {
+#pragma HLS DATAFLOW
+    tau_task<CFG>(a, lin, given);
+    keep_task<CFG>(c, rinv);
+}
+
+// The leaving keyframe's marginal after the window's region (its rows ready in NF: window_task's
+// marginalize): tau signed and checked (tau_sign reads the rows where the step left them, each
+// word once: no copy first) beside the kept conditional's reciprocals; if tau is not singular,
+// the conditional's points (keep_points), then tau's tail beside the conditional kept. Kept
+// keyframe c (the kept net's; unused without one). False, nothing written or kept, if tau is
+// singular.
+template <class CFG>
+bool tau_and_keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
+    L a[STREAM_KF_T][STREAM_KF_T + 1];
+    L rinv[STREAM_KF_T];
+    bool ok[1];
+    sign_beside_reciprocals<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], a, ok, rinv);
+    FGC_TASKS_JOIN();
+    if (!ok[0]) return false;
+#ifdef FGC_STREAM_KEPT
+    keep_points<CFG>(c, reuse, lin01);
+#endif
+    tau_beside_keep<CFG>(a, lin01 + STREAM_KF_X, reuse, c, rinv);
+    FGC_TASKS_JOIN();
+    return true;
+}
+#endif
 #endif  // FGC_STREAM_WINDOW
 
 #ifdef FGC_STREAM_WINDOW
@@ -729,10 +875,12 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     // is the update of keyframe total, its window's oldest prior the sweep's tau, its kept net
     // the sweep's conditionals (not re-expressed: they hold the sweep's points; walked when the
     // estimates are asked for, as after any update)
+    // the call's keyframe is kept as it came: by sweep_store before a sweep (its passes read it
+    // back), else by stream_in as it enters the window (the same words, no cycles of their own)
     bool sweep = false;
     if (update) {
-        sweep_store<CFG>(total, m, x_in, data);
         sweep = IS_BATCH[total] != 0;
+        if (sweep) sweep_store<CFG>(total, m, x_in, data);
     }
     const int passes = sweep ? total + 1 : 1;
     bool sweep_singular = false;
@@ -782,7 +930,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
             live = jc >= STREAM_SLOTS;  // (the window has moved: slot 0's prior is tau)
             if (jc >= STREAM_SLOTS) stream_shift<CFG>();
 #ifdef FGC_STREAM_SWEEP
-            stream_in<CFG>(ms, SWEEP_X + row * STREAM_KF_X, SWEEP_WORDS + row * SWEEP_MAX_NEW);
+            stream_in<CFG>(ms, row, sweep, x_in, data);
 #else
             stream_in<CFG>(ms, x_in, data);
 #endif
@@ -835,11 +983,19 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #endif
         if (!solve) continue;
         marginal = result[0];
+#ifdef FGC_STREAM_MARGINAL
+#ifdef FGC_STREAM_KEPT
+        const int kc = c - STREAM_W;  // the kept keyframe (the leaving one)
+#else
+        const int kc = 0;
+#endif
+        // tau, and the leaving keyframe's conditional kept beside its tail
+        if (mc == STREAM_W && marginal == 1) marginal = tau_and_keep<CFG>(kc, result[1] != 0, lin01) ? 1 : 2;
+#endif
 #ifdef FGC_STREAM_SWEEP
         if (!last && marginal != 1) sweep_singular = true;
 #endif
 #ifdef FGC_STREAM_KEPT
-        if (mc == STREAM_W && marginal == 1) keep<CFG>(c - STREAM_W, result[1] != 0, lin01);
         if (last && !sweep && first > 0) {
             // this update's own re-expression (the newest kept conditional at slot 0's new
             // estimate), left pending for the next call's region: the point copied out of X

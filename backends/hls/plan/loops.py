@@ -29,14 +29,17 @@ def dot_loop(name: str, length: int, ops: OperatorTable, partials: int | None = 
 
 
 def _region_cycles(processes: list[list[Loop]],
-                   waits: tuple[tuple[int, int, int, str], ...] = ()) -> int:
+                   waits: tuple[tuple, ...] = ()) -> int:
     """A DATAFLOW region as :func:`phase_cycles` prices it: its slowest process plus the fill of
     the others (the depth of their first loop that runs); processes with no running loop are
     absent (fgc_cycles.h's ``total``). ``waits``: (process, loop, on process, loop name suffix):
     that loop of the process (or, if it does not run, the process's next one that does) reads
     the stream the other's first such loop writes, as it comes, so it ends no earlier than its
     depth after that loop; each process's loops follow one another, in the region's order, and
-    the region takes no less than any process's last loop's end (fgc_cycles.h's FGC_WAIT)."""
+    the region takes no less than any process's last loop's end (fgc_cycles.h's FGC_WAIT). A
+    fifth entry ``after``: the loop reads that stream in one iteration only, ``after`` cycles
+    before its last iteration issues, so it ends no earlier than ``after`` + its depth after
+    that loop (FGC_WAIT_AFTER)."""
     procs = [(sum(lp.cycles for lp in loops), next((lp.depth for lp in loops if lp.trip > 0), 0))
              for loops in processes if any(lp.trip > 0 for lp in loops)]
     if not procs:
@@ -49,12 +52,13 @@ def _region_cycles(processes: list[list[Loop]],
     for p, loops in enumerate(processes):
         clock, pending = 0, None
         for li, lp in enumerate(loops):
-            for wp, wl, q, suffix in waits:
+            for wp, wl, q, suffix, *after in waits:
                 if (wp, wl) != (p, li):
                     continue
                 at = next((ends[q, x] for x, lq in enumerate(processes[q])
                            if lq.name.endswith(suffix) and (q, x) in ends), None)
                 if at is not None:
+                    at += after[0] if after else 0
                     pending = at if pending is None else max(pending, at)
             if lp.trip <= 0:
                 continue

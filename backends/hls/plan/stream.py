@@ -109,8 +109,8 @@ class UpdatePrice:
 # The stream section's own loops as fgc_stream.h writes them: per pipelined loop its operations
 # an iteration (each an operator at II 1; MV_II / L_ACC_II loops hold one of each too), the
 # sequential code one operator of each kind it uses.
-WRITE_TAU_OPS = (("add", 1), ("mul", 3), ("div", 1))  # sign (×), mean (−= ×), ÷ and the
-# singularity threshold (×) in sequential code
+WRITE_TAU_OPS = (("add", 1), ("mul", 3), ("div", 1))  # sign (×), the mean's columns (−= ×),
+# ÷ and the singularity threshold (×) in sequential code
 KEPT_MATVEC_OPS = (("add", 1), ("mul", 1))  # kept_matvec: + ×
 # kept_task with reexpress and kept_walk INLINE: reexpress's vector_difference and difference
 # (− × ÷ each), d_update (−), sj_column and sj_vector (+ × each); kept_walk's rhs (−) and
@@ -384,9 +384,12 @@ class WindowUpdateModel:
                               move("d", len(lay.data_moves))),
                 _stream_phase("x_out", move("x", lay.n_x)),
                 _stream_phase("x_out_kf", move("x", kf))]
-        write_tau = (kernel_loop("sign", n * (n + 1), "max", kt),
-                     kernel_loop("mean", n * (n - 1) // 2, "acc", lt),
-                     kernel_loop("divide", n, "div", lt),
+        # tau: signed; its mean by columns, last first (per column x_r's divide, then its
+        # update of the rows above at II 1); its words out
+        mean = [lp for r in range(n - 1, -1, -1)
+                for lp in (kernel_loop("divide", 1, "div", lt),
+                           *((Loop("column", r, 1, lt["acc"][1]),) if r else ()))]
+        write_tau = (kernel_loop("sign", n * (n + 1), "max", kt), *mean,
                      move("tau_out", kf + n + n * (n + 1) // 2 + 2))
         if lay.kept:  # the kept Bayes net's loops, as accel.cpp.jinja counts them
             # a Log or a retraction: the retraction-sized datapath's depth, or what its
@@ -405,6 +408,10 @@ class WindowUpdateModel:
             lmul = lt["acc"][1] - lt["acc"][0]
             keep_one = (kernel_loop("reciprocal", n, "div", lt),
                         Loop("cond", n * (2 * n + 1), kt["move"][0], kt["move"][1] + lmul))
+            # the leaving keyframe's conditional kept beside tau (tau_and_keep's regions): its
+            # reciprocals beside tau's sign loop, its rows scaled beside tau's tail
+            out += [_stream_phase("keep_reciprocal", keep_one[0]),
+                    _stream_phase("keep_scale", keep_one[1])]
             out += [_stream_phase("kept_slot0", move("x", kf)),
                     _stream_phase("kept_reexpress", one, replace(one, repeat=4 * curved),
                                   Loop("difference", n, 1, kt["div"][1], curved), vector_diff,
@@ -447,7 +454,11 @@ class WindowUpdateModel:
                     # the one-step policy: slots 0 and 1 copied before the solve; the step
                     # taken, the solve's own NF rows are τ (no stack, QR step or commit)
                     _stream_phase("lin_points", move("x", 2 * kf)),
-                    _stream_phase("marginal_reused", *write_tau)]
+                    _stream_phase("marginal_reused", *write_tau),
+                    # tau's sign loop, then its mean and words: tau_and_keep's processes
+                    # beside the keep's
+                    _stream_phase("tau_sign", write_tau[0]),
+                    _stream_phase("tau_tail", *write_tau[1:])]
         if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
             out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
                     for m, d in enumerate(lay.new_dest)]
@@ -478,8 +489,9 @@ class WindowUpdateModel:
         ``linearize_all(X, part)``, LM's instance on the instances whose rows slot 0's step
         stacks (:meth:`~fgc_backends.hls.window.WindowLayout.leaf_factors`; ``live``, part 2:
         less those that hold nothing once keyframe 0 has left, ``leaf_gone``) - the plan's
-        factor_jacobian and gradient loops at those instance counts, G zeroed as always."""
-        from fgc_backends.hls.units.datapath import small_blocks
+        factor_jacobian region (:func:`~fgc_backends.hls.units.datapath.linearize_region`: the
+        datapaths beside the gradient) at those instance counts, G zeroed as always."""
+        from fgc_backends.hls.units.datapath import linearize_region, small_blocks
 
         t = self.layout.template
         leaf = self.layout.leaf_factors()
@@ -487,27 +499,27 @@ class WindowUpdateModel:
             leaf = leaf - self.layout.leaf_gone()
         count = Counter(f.block for i, f in enumerate(t.factors) if i in leaf)
         small = sum(count[i] for i in small_blocks(t))
-        procs = []
+        jac = []
         for ph in self.plan.phases:
-            if ph.name not in ("factor_jacobian", "gradient"):
+            if ph.name != "factor_jacobian":
                 continue
             for p in ph.processes:
                 name = p.name
+                if name == "gradient":  # the region's gradient: linearize_region's again
+                    continue
                 if name == "factor_small_jacobian":
                     loops = tuple(replace(lp, trip=small) for lp in p.loops)
                 elif name.startswith("factor_") and name.endswith("_jacobian"):
                     n = count[int(name[len("factor_"):-len("_jacobian")])]
                     loops = tuple(replace(lp, trip=n) for lp in p.loops)
-                elif name.startswith("reduce_"):
-                    n = count[int(name[len("reduce_"):])]
-                    loops = tuple(replace(lp, repeat=n) for lp in p.loops)
-                elif name == "zero_gradient":
-                    loops = p.loops
                 else:
                     raise PlanError(f"internal error: the linearisation's process {name!r} "
                                     "has no leaf form")
-                procs.append(Process(f"leaf_{name}", p.unit, loops))
-        return Phase("stream_leaf_linearize" + ("_live" if live else ""), False, tuple(procs),
+                jac.append(Process(name, p.unit, loops))
+        region = linearize_region(t, kernel_timing(self.plan.ops), jac,
+                                  {i: count[i] for i in range(len(t.blocks))})
+        return Phase("stream_leaf_linearize" + ("_live" if live else ""), False,
+                     tuple(Process(f"leaf_{p.name}", p.unit, p.loops) for p in region.processes),
                      per="stream")
 
     def _merged(self):
@@ -716,6 +728,19 @@ class WindowUpdateModel:
         return UpdatePrice(keyframe, "estimates", first, 0, self.clock_mhz, tuple(terms),
                            STREAM_SOURCE)
 
+    def _keep_beside_tau(self, times: int = 1, name: str = "keep_beside_tau") -> Term:
+        """tau_and_keep's two regions (fgc_stream.h), each of two processes on their own
+        memories and operators: tau's sign loop beside the kept conditional's pivot reciprocals,
+        then (the kept points between) tau's tail (its mean and words) beside the conditional's
+        rows scaled into kept memory: in each the shorter of the two hidden."""
+        st = self.stream
+        hidden = (min(st["stream_tau_sign"], st["stream_keep_reciprocal"])
+                  + min(st["stream_tau_tail"], st["stream_keep_scale"]))
+        return Term(name, -hidden, times, False,
+                    "tau beside the leaving keyframe's conditional kept (two DATAFLOW regions: "
+                    "its sign loop beside the pivots' reciprocals, its mean and words beside the "
+                    "rows scaled): the shorter of each pair is hidden behind the longer")
+
     def _sweep_terms(self, j: int) -> list:
         """A batch step at keyframe j as a sweep through the window (fgc_stream.h's
         ``FGC_STREAM_SWEEP``), but its last pass (keyframe j's update, priced as one): keyframes
@@ -752,7 +777,8 @@ class WindowUpdateModel:
                        "0, τ's signs, mean and words (the marginal's region, its kept task "
                        "empty)"),
                   Term("sweep_keep", st["stream_kept_store"], len(steps), False,
-                       "each leaving keyframe's conditional and points kept")]
+                       "each leaving keyframe's conditional and points kept"),
+                  self._keep_beside_tau(len(steps), "sweep_keep_beside_tau")]
         return terms
 
     def _batch_terms(self, j: int, ev: dict) -> list:
@@ -783,7 +809,8 @@ class WindowUpdateModel:
                                   f"the batch kernel's {g} phase, once per {trigger}"))
         if not self.reuses(ev):
             relin = _relinearize(ev)
-            store = (relin * (group["factor_jacobian"] + group["gradient"]) + group["qr_stack"]
+            store = (relin * (group["factor_jacobian"] + group.get("gradient", 0))
+                     + group["qr_stack"]
                      + qr_store + group["qr_commit"])
             terms.append(Term("batch_store", store, 1, False,
                               f"keyframes 0 … {j} " + ("linearised at the optimum and " if relin
@@ -840,10 +867,12 @@ class WindowUpdateModel:
             if keyframe >= lay.size:
                 terms.append(Term("leave", st["stream_x_out_kf"], 1, False,
                                   "the leaving keyframe's estimate into the kept memory"))
-            terms.append(Term("sweep_store", st[f"stream_sweep_store{m}"], 1, False,
-                              "the keyframe's storage and words kept as they came (a sweep "
-                              "brings them in again)"))
             if sweep:
+                # kept as it came before the sweep's passes (which read it back); an update that
+                # is not a sweep keeps it as stream_in moves it into the window (no cycles)
+                terms.append(Term("sweep_store", st[f"stream_sweep_store{m}"], 1, False,
+                                  "the keyframe's storage and words kept as they came (the "
+                                  "sweep brings them in again)"))
                 # the sweep starts from the kept estimates (pass -1)
                 terms += self._start_from_kept(keyframe, first, ev if events is not None
                                                else None, "kept_walk_parent")
@@ -908,20 +937,24 @@ class WindowUpdateModel:
                                "keyframe leaving: slot 0's QR step at μ = 0 on unit set 0 (LM's), "
                                "τ's signs, mean and words"))
         terms += window
+        leaving = m == lay.window and self.layout_marginal
         if lay.kept:
             # the re-expression the update before left pending runs beside this update's
             # window process (one DATAFLOW region, no memory between them): the update waits for
-            # the longer of the two (a sweep ran it in its pass -1, above)
+            # the longer of the two (a sweep ran it in its pass -1, above); tau's sign, mean and
+            # words (the marginal term's write_tau) run after that region (tau_and_keep)
             if not sweep and self._pending(keyframe, ev if events is not None else None):
                 kept = self._pending_term()
-                terms += [kept, Term("overlap", -min(kept.cycles, sum(t.cycles for t in window)),
+                solve = sum(t.cycles for t in window) - (st["stream_marginal_reused"]
+                                                         if leaving else 0)
+                terms += [kept, Term("overlap", -min(kept.cycles, solve),
                                      1, False, "the pending re-expression beside the window's "
                                      "solve and marginal (one DATAFLOW region): the shorter of "
                                      "the two is hidden behind the longer")]
-            if m == lay.window and self.layout_marginal:
-                terms.append(Term("kept_store", st["stream_kept_store"], 1, False,
-                                  f"keyframe {first}'s conditional (R | S | d) and its "
-                                  "linearisation points kept"))
+            if leaving:
+                terms += [Term("kept_store", st["stream_kept_store"], 1, False,
+                               f"keyframe {first}'s conditional (R | S | d) and its "
+                               "linearisation points kept"), self._keep_beside_tau()]
             if first > 0 and not sweep:
                 # this update's own re-expression (keyframe first - 1's conditional at slot 0's
                 # new estimate) is left for the next call's region: its point copied out of X;

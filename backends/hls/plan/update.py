@@ -75,7 +75,7 @@ from fgc_backends.hls.plan import (
 from fgc_backends.hls.plan.stream import Term, UpdatePrice
 from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops, retire_region
 from fgc_backends.hls.units.cholesky import elimination_phases, hgc_loops, hgc_phases
-from fgc_backends.hls.units.datapath import gradient_loops, small_blocks, trial_end, trial_loops
+from fgc_backends.hls.units.datapath import linearize_region, small_blocks, trial_end, trial_loops
 from fgc_backends.hls.units.lm_control import lm_control_phases, rounding_noise_loops, setup_phase
 from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
 from fgc_backends.hls.units.state_update import fed_by_backsub, retire_timing, retract_loops
@@ -239,8 +239,8 @@ class UpdateModel:
         view = self._view(first, last, inst)
         jacobian = self._factor_phase("jacobian", inst)
         phases = [jacobian]
-        if self.qr:
-            phases.append(Phase("gradient", False, tuple(gradient_loops(view, self.timing))))
+        if self.qr:  # the datapaths beside the gradient, one region (as emitted)
+            phases = [linearize_region(view, self.timing, list(jacobian.processes))]
             phases += self._linear_phases(first, last, self.damping, inst)
         else:  # the Jacobian pass runs alongside the HGC, a region per block type (as emitted)
             phases = hgc_phases(view, self.les_timing, self.options.hgc_lanes,

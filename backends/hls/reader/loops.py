@@ -61,6 +61,19 @@ class LoopReading:
         return sum(n * dsp_of.get(kind, 0) for kind, n in self.instances)
 
 
+def _through_add(body: str, name: str) -> bool:
+    """Whether ``body`` updates an element of ``name`` through an add: ``name[...] += / -=``,
+    or ``name[...] =`` a right-hand side with a binary + or - (subscripts aside)."""
+    for m in re.finditer(rf"\b{name}\s*(?:\[[^\[\]]*(?:\[[^\]]*\][^\[\]]*)*\]\s*)+"
+                         r"([-+]?=)(?!=)", body):
+        if m.group(1) in ("+=", "-="):
+            return True
+        rhs = until_fixed(r"\[[^\[\]]*\]", "", body[m.end():body.find(";", m.end())])
+        if re.search(r"[\w)\]]\s*[-+](?![-+=>])", rhs):
+            return True
+    return False
+
+
 def _header_before(code: str, lo: int, open_: int) -> list[str] | None:
     """The three parts of the ``for (...)`` whose ``)`` is the last thing before ``open_`` (the
     loop body's ``{``), or None (a ``for`` without braces earlier on the line is not it)."""
@@ -246,8 +259,14 @@ class _Reader(_Counter):
             if kinds == {"r", "w"} and any(fixed for _, fixed in uses):
                 count.recurrences.add(alias)
         carried = tuple(sorted(r for r in count.recurrences if r not in free))
-        ii_recurrence = max([0] + [math.ceil(self.add_latency / distance[r]) if r in distance
-                                   else self.add_latency for r in carried])
+        # a declared distance D: the element's recurrence latency over D, the adder's when it
+        # is updated through an add (a partial sum), else 1 (a word stored and read back D
+        # iterations later, as _claims prices a refuted claim)
+        names = {r: {r} | {n for n, v in scope.items() if getattr(v, "alias", None) == r}
+                 for r in carried}
+        ii_recurrence = max([0] + [
+            math.ceil((self.add_latency if any(_through_add(body, n) for n in names[r]) else 1)
+                      / distance[r]) if r in distance else self.add_latency for r in carried])
         allocation, ii_allocation = self._allocation_ii(f, count, env, ii)
         label = re.search(r'FGC_CYCLES\(\s*"(\w+)"', code[close:close + 400])
         return LoopReading(

@@ -36,32 +36,89 @@ def cost_in_linearization(program) -> bool:
     return not any(m.robust for b in program.blocks for m in b.members)
 
 
-def gradient_loops(program, timing: dict) -> list[Process]:
-    """QR: linearize_all's gradient pass over AB (reduce_<b>: per instance the column map, its
-    rows' right-hand sides :data:`PORTS` a cycle, A^T b PORTS columns of a row a cycle straight
-    out of AB (its two ports) into the adder latency's interleaved partial sums (a dot product
-    of m × padded / PORTS terms, :func:`kernel_dot`; the finiteness check rides along), the
-    scatter into G at II 1), after G is zeroed. (The rows used to be copied out of AB into a
-    row buffer first, PORTS words a cycle, then multiplied TILE columns a cycle: the copy cost
-    as much as the products.) The scatter folds each column's partial sums on the way (a
-    ⌈log₂ T_PARTIALS⌉-level tree in its depth); with the cost in the linearisation
-    (:func:`cost_in_linearization`) it takes the right-hand side's column too, ‖b‖² into the
-    cost's sum (one iteration more)."""
+def reduce_loops(block, timing: dict, cost_column: int) -> tuple[Loop, Loop, Loop]:
+    """QR: one instance of ``block`` in reduce_all (accel.cpp.jinja's reduce_instance): its
+    column map, A^T b PORTS columns of a row a cycle as the datapath's stream brings them (b's
+    group first, so no right-hand-side pass) into the adder latency's interleaved partial sums
+    (a dot product of m × padded / PORTS terms, :func:`kernel_dot`; the finiteness check rides
+    along), the scatter into G at II 1, folding each column's partial sums on the way (a
+    ⌈log₂ T_PARTIALS⌉-level tree in its depth); ``cost_column`` 1 with the cost in the
+    linearisation (:func:`cost_in_linearization`): the right-hand side's column too, ‖b‖²
+    into the cost's sum (one iteration more)."""
     la = timing["acc"][0]  # T_PARTIALS: the adder's latency
+    m, d, padded, _ = _block_shape(block)
+    return (kernel_loop("columns", d, "fill", timing),
+            kernel_dot("rows", m * (padded // PORTS), timing),
+            Loop("scatter", d + cost_column, timing["scatter"][0],
+                 timing["scatter"][1] + la * _ceil_log2(la)))
+
+
+def gradient_loops(program, timing: dict) -> list[Process]:
+    """QR: reduce_all's loops per block type (G zeroed, then per instance
+    :func:`reduce_loops`), each block type's as if alone; what the linearisation costs with
+    them beside the datapaths is :func:`linearize_region`'s."""
     n_t = sum(v.dim for v in program.variables)
     bb = int(program.solver.linear == "qr" and cost_in_linearization(program))
     procs = [Process("zero_gradient", "gradient", (kernel_loop("zero", _ported(n_t), "fill",
                                                                 timing),))]
     for i, b in enumerate(program.blocks):
-        m, d, padded, _ = _block_shape(b)
         n = sum(1 for f in program.factors if f.block == i)
-        procs.append(Process(f"reduce_{i}", "gradient", (
-            kernel_loop("columns", d, "fill", timing, n),
-            kernel_loop("rhs", _ported(m), "move", timing, n),
-            kernel_dot("rows", m * (padded // PORTS), timing, n),
-            Loop("scatter", d + bb, timing["scatter"][0],
-                 timing["scatter"][1] + la * _ceil_log2(la), n))))
+        procs.append(Process(f"reduce_{i}", "gradient", tuple(
+            replace(lp, repeat=n) for lp in reduce_loops(b, timing, bb))))
     return procs
+
+
+def linearize_region(program, timing: dict, jac: list[Process],
+                     counts: dict[int, int] | None = None) -> Phase:
+    """QR's linearisation as accel.cpp.jinja emits it: one DATAFLOW region (``linearize_rows``)
+    of two processes, the datapaths one after another (``jac``: the factor_<b>_jacobian /
+    factor_small_jacobian processes in the emitted order, their trips the instances evaluated)
+    writing each instance's rows into AB and to a stream, and reduce_all (G zeroed, then per
+    instance in the same order :func:`reduce_loops`) reading it. A block type's first
+    instance's rows loop ends no earlier than the rows loop's depth after the datapath loop of
+    its block type (the small ones: of factor_small's loop) ends - the stream's last word
+    comes then (conservative: the earlier instances' words of a loop come sooner). The region
+    takes what fgc_cycles.h's region rule gives: the slower process plus the other's fill, and
+    no less than where either process's clock ends. Priced as the phase factor_jacobian: the
+    datapaths, then one loop ``beside_datapaths`` of what the gradient adds after them
+    (0 when it keeps up). ``counts``: instances per block type (default: all)."""
+    small = small_blocks(program)
+    if counts is None:
+        counts = {i: sum(1 for f in program.factors if f.block == i)
+                  for i in range(len(program.blocks))}
+    bb = int(cost_in_linearization(program))
+    n_t = sum(v.dim for v in program.variables)
+    zero = kernel_loop("zero", _ported(n_t), "fill", timing)
+    # per datapath loop (emitted order) its block types' instances, in the stream's order
+    groups = []
+    for p in jac:
+        if p.name == "factor_small_jacobian":
+            groups.append([i for i in small for _ in range(counts.get(i, 0))])
+        else:
+            i = int(p.name[len("factor_"):-len("_jacobian")])
+            groups.append([i] * counts.get(i, 0))
+    shapes = {i: reduce_loops(b, timing, bb) for i, b in enumerate(program.blocks)}
+    e_clock, e_ends = 0, []
+    for p in jac:
+        e_clock += p.cycles
+        e_ends.append(e_clock)
+    g_clock, g_sum = zero.cycles, zero.cycles
+    for p, inst, end in zip(jac, groups, e_ends, strict=True):
+        for k, i in enumerate(inst):
+            columns, rows, scatter = shapes[i]
+            g_clock += columns.cycles
+            done = g_clock + rows.cycles
+            if k == 0 and any(lp.trip > 0 for lp in p.loops):
+                done = max(done, end + rows.depth)
+            g_clock = done + scatter.cycles
+            g_sum += columns.cycles + rows.cycles + scatter.cycles
+    e_sum = e_clock
+    e_fill = next((lp.depth for p in jac for lp in p.loops if lp.trip > 0), 0)
+    # the slower process (the datapaths' on a tie: their records come first) plus the other's fill
+    region = g_sum + e_fill if g_sum > e_sum else e_sum + (zero.depth if zero.trip > 0 else 0)
+    region = max(region, e_sum, g_clock)
+    return Phase("factor_jacobian", False, tuple(jac) + (Process(
+        "gradient", "gradient", (Loop("beside_datapaths", 1, 1, region - e_sum),)),))
 
 
 def raw_jacobian_words(b) -> int:
@@ -162,7 +219,8 @@ def small_allocation(program, blocks, opts, mode: str, table
     branches = small_branch_ops(program, blocks, mode)
     accesses: dict[int, int] = {}
     for i in small_blocks(program):
-        for a, (n, _) in enumerate(instance_accesses(blocks[i], mode)):
+        for a, (n, _) in enumerate(instance_accesses(blocks[i], mode,
+                                                     program.solver.linear == "qr")):
             accesses[a] = accesses.get(a, 0) + n
     ii = loop_ii((n, 1) for n in accesses.values())
     if mode == "cost":  # the running total, in instance order: through the adder
@@ -250,16 +308,20 @@ def robust_ops(bc) -> dict[str, int]:
     return {k: n for k, n in ops.items() if n}
 
 
-def instance_accesses(bc, mode: str) -> list[tuple[int, int]]:
+def instance_accesses(bc, mode: str, grad_stream: bool = False) -> list[tuple[int, int]]:
     """(accesses, banks) of one instance to each global memory the Jacobian (``mode``
     "jacobian") or cost loop touches: X (the variables' storage), DATA_BUF (its measurements
     and noise parameters, two robust words a member) and, in Jacobian mode, AB (its whitened
     rows, m × (d + 1) words). None of them is partitioned (one bank, two ports). A member
-    without a robust loss reads no robust words."""
+    without a robust loss reads no robust words. ``grad_stream`` (QR, Jacobian mode): the
+    rows go to the gradient's stream too, m × padded / PORTS words, one a cycle (counted as
+    m × padded accesses of one two-port bank: the same cycles)."""
     data = sum(m.meas_words + m.n_params + 2 * m.robust for m in bc.members)
     out = [(bc.n_x_in, 1), (data, 1)]
     if mode == "jacobian":
         out.append((bc.m * bc.stride, 1))
+        if grad_stream:
+            out.append((bc.m * bc.padded, 1))
     return out
 
 
@@ -304,7 +366,8 @@ def build(ctx) -> None:
             if mode == "cost" and banked:  # factor_cost_<b>'s one call site: trial_cost's
                 ii = chosen[i]  # loop, gather_trial_<b> from DATA_BUF's two banks
             else:
-                ii = max(issue, loop_ii(instance_accesses(bc, mode)))
+                ii = max(issue, loop_ii(instance_accesses(bc, mode,
+                                                          program.solver.linear == "qr")))
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
                 ii = max(ii, ops.add.latency)  # simulator's): a recurrence through the adder
             # one evaluation ends no earlier than its critical path, nor before the allocated
@@ -332,19 +395,26 @@ def build(ctx) -> None:
         ctx.units.append(Unit(name, f"factor datapath of block {b.name!r} (its Jacobian and "
                               "cost call sites, whitening, robust weights)", 1,
                               tuple(sorted(operators.items()))))
-    ctx.add_phase("linearize", Phase("factor_jacobian", False, tuple(jac)))
     if program.solver.linear == "qr":  # Cholesky's gradient comes with the HGC (units.cholesky)
-        ctx.add_phase("linearize", Phase("gradient", False,
-                                         tuple(gradient_loops(program, ctx.timing))))
-        # accumulate, one module for every block type (linearize_all's ALLOCATION function
-        # limit=1, reduce_<b> INLINE, the sizes run-time): PORTS multiply-adds a cycle (AB's
-        # two ports), then a column a cycle through the fold of its T_PARTIALS partial sums and
-        # the add into G
+        # the datapaths beside the gradient, one region (linearize_region)
+        ctx.add_phase("linearize", linearize_region(program, ctx.timing, jac))
+        # accumulate, one module for every block type (reduce_all's ALLOCATION function
+        # limit=1, reduce_<b> INLINE, the sizes run-time): PORTS multiply-adds a cycle (a word
+        # of the datapaths' stream), then a column a cycle through the fold of its T_PARTIALS
+        # partial sums and the add into G
         la = ops.add.latency
-        ctx.units.append(bound_unit("gradient", "A^T b, PORTS columns a cycle out of AB, one "
-                                    "module for every block type",
+        # the stream between them (linearize_rows' FIFO): the largest instance's words, PORTS
+        # values each; its BRAM priced as a memory (the plan's stream channels are the linear
+        # solver's network, process_network's)
+        words = max(bc.m * bc.padded // PORTS for bc in ctx.blocks)
+        # (a word PORTS scalars side by side: PORTS banks of `words` scalars, the same BRAM)
+        ctx.memories.append(Memory("gradient_rows", words * PORTS, ops.word_bits, PORTS))
+        ctx.units.append(bound_unit("gradient", "A^T b, PORTS columns a cycle from the "
+                                    "datapaths' stream, one module for every block type",
                                     [BoundLoop("accumulate", (("add", PORTS), ("mul", PORTS)), 1),
                                      BoundLoop("scatter", (("add", la),), 1)], table=ops))
+    else:
+        ctx.add_phase("linearize", Phase("factor_jacobian", False, tuple(jac)))
     if opts.jacobian_storage == "raw":
         # whitening while stacking: W·[J | -r] of each instance, one multiply-accumulate a
         # cycle in each of n_u lanes, before the solver reads the rows
@@ -422,7 +492,7 @@ def _small_datapath(ctx, small: tuple[int, ...], jac: list, cost: list) -> None:
 
 SPEC = UnitSpec(
     name="datapath", role="factor datapaths (Jacobian and cost modes) and the gradient pass",
-    build=build, phases=("factor_jacobian", "gradient", "whiten_stack", "factor_cost"),
+    build=build, phases=("factor_jacobian", "whiten_stack", "factor_cost"),
     constants=(("ALLOCATION", "per block type: operator limits (PlanOptions.allocation)"),),
     printed_by="accel.cpp.jinja: evaluate_<b>, cost_of_<b>, reduce_<b>")
 

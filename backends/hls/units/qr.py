@@ -26,23 +26,32 @@ def active_rows(pattern) -> tuple[int, int, int, list[int]]:
     rows, cols = w + 1, k = min(rows, cols), and per reflection j < k the count of rows j ...
     that are non-zero in column j after the fill of the reflections before it (row j always
     among them; 0: the column is zero and skipped)."""
+    return reflection_rows(pattern)[:4]
+
+
+def reflection_rows(pattern) -> tuple[int, int, int, list[int], list[int]]:
+    """:func:`active_rows`, and per reflection j < k the rows the Evaluate keeps of column j + 1
+    for its update pass (fgc_qr.h's qr_evaluate): row j, row j + 1, reflection j's active rows
+    and the rows j ... non-zero in column j + 1 before it (0 where j + 1 = cols)."""
     nz = np.hstack([np.asarray(pattern, dtype=bool),
                     np.ones((len(pattern), 1), dtype=bool)])
     rows, cols = nz.shape
     k = min(rows, cols)
-    active = []
+    active, kept = [], []
     for j in range(k):
         rows_j = [i for i in range(j, rows) if nz[i, j]]
+        act = sorted(set(rows_j) | {j}) if rows_j else []
+        kept.append(len({i for i in range(j, rows) if nz[i, j + 1]} | set(act) | {j, j + 1})
+                    if j + 1 < cols else 0)
         if not rows_j:
             active.append(0)  # all zero: skipped
             continue
-        act = sorted(set(rows_j) | {j})
         union = nz[act, j + 1:].any(axis=0)
         nz[np.ix_(act, range(j + 1, cols))] = union
         nz[act, j] = False
         nz[j, j] = True
         active.append(len(act))
-    return rows, cols, k, active
+    return rows, cols, k, active, kept
 
 
 def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
@@ -61,7 +70,7 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     """
     la, lm, ld, ls = ops.add.latency, ops.mul.latency, ops.div.latency, ops.sqrt.latency
     p = partials if partials is not None else la
-    rows, cols, k, active = active_rows(pattern)
+    rows, cols, k, active, kept = reflection_rows(pattern)
     tree = math.ceil(math.log2(p)) if p > 1 else 0
     tree1 = math.ceil(math.log2(p + 1))  # the fold of the P partials and the pivot's term
     out = []
@@ -77,34 +86,45 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             # the unit's first column right of j; the next pivot column if it is j + 1 < k
             c0 = j + 1 + (u - (j + 1)) % units
             next_here = c0 == j + 1 and c0 < k
-            # the n - 1 words below the pivot (the unit holding the next pivot column streams
-            # that column to the Evaluate meanwhile, rows max(j, 0) ... rows - 1), then v_0
-            # (waiting for qr_finish's square root), then tau and R_jj (its divide)
             below = max(n - 1, 0)
-            loops = [Loop("header", 1, 1, 1),
-                     Loop("vector_column", rows - max(j, 0), 1, 2) if next_here else
-                     Loop("vector", below, 1, 1)]
-            waits.append((len(procs), len(loops), 1, "v0"))
-            loops.append(Loop("pivot_word", 1, 1, 1))
-            waits.append((len(procs), len(loops), 1, "tau"))
-            loops.append(Loop("tail", 2, 1, 1))
-            # the unit's other columns right of j, through the flattened loops
+            # the unit's other columns right of j
             lb = c0 // units + (1 if next_here else 0)
             r = (cols - 1 - u) // units - lb + 1 if c0 < cols else 0
+            loops = [Loop("header", 1, 1, 1)]
+            if next_here:
+                # the next pivot column streamed to the Evaluate (rows max(j, 0) ... rows - 1)
+                # while the n - 1 words below the pivot arrive
+                loops.append(Loop("vector_column", rows - max(j, 0), 1, 2))
+            elif not (r > 0 and n > 1):
+                loops.append(Loop("vector", below, 1, 1))  # read, not needed here
             if r > 0 and n > 1:
                 # dot_axpy: a column's dot product beside the update of the column before it;
                 # a word's update lag = n - 1 + (its dot's multiply-add) + (the fold and scale)
-                # iterations after its dot
+                # iterations after its dot. Its first column takes the vector as the broadcast
+                # streams it (unless the column loop read it), v_0 in iteration n - 1 (the
+                # pivot's word last) and tau at that column's fold, iteration n - 1 + Lm + La:
+                # the loop ends no earlier than its remaining iterations and depth after each
+                # (FGC_WAIT_AFTER)
                 lag = n - 1 + (lm + la) + (la * tree + lm)
-                loops.append(Loop("dot_axpy", n * r + lag, 1, lm + la))
-            elif r > 0 and j >= 0:
-                loops.append(Loop("negate_rows" if n == 1 else "rows_out", r, 1, 1))
+                trip = n * r + lag
+                waits.append((len(procs), len(loops), 1, "v0", trip - n))
+                waits.append((len(procs), len(loops), 1, "tau", trip - n - (lm + la)))
+                loops.append(Loop("dot_axpy", trip, 1, lm + la))
+            else:
+                # v_0 (waiting for qr_finish's square root), then tau (its divide)
+                waits.append((len(procs), len(loops), 1, "v0"))
+                loops.append(Loop("pivot_word", 1, 1, 1))
+                waits.append((len(procs), len(loops), 1, "tau"))
+                loops.append(Loop("tail", 1, 1, 1))
+                if r > 0 and j >= 0:
+                    loops.append(Loop("negate_rows" if n == 1 else "rows_out", r, 1, 1))
             procs.append(loops)
         if col < k:
             # the Evaluate: the column as its unit streams it and the vector as the broadcast
             # does (v.x as they arrive), the pivot's term once v_0 is there, the scale once tau
-            # is, then one pass that updates the column, sends row j's entry to the collector
-            # and sums the next vector's squares, and their fold (the tail is the next
+            # is, then one pass over the rows it kept (reflection_rows) that updates the
+            # column, sends row j's entry to the collector and sums the next vector's squares,
+            # and their fold (the tail is the next
             # region's qr_finish); with no reflection to apply (n <= 1) one pass, the fold,
             # then qr_finish's words
             e = len(procs)
@@ -115,7 +135,7 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 procs.append([Loop("header", 1, 1, 1), Loop("receive_dot", span, 1, lm + la),
                               Loop("pivot_term", 1, 1, lm), Loop("fold_dot", 1, 1, la * tree1),
                               Loop("tail", 2, 1, 1), Loop("scale", 1, 1, lm),
-                              Loop("axpy_norm", span, 1, 2 * (lm + la)),
+                              Loop("axpy_norm", kept[j], 1, 2 * (lm + la)),
                               Loop("fold", 1, 1, la * tree)])
             else:
                 waits += [(e, 3, 1, "v0"), (e, 4, 1, "tau")]
@@ -230,7 +250,8 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
                                     update, opts.units, ops))
         # the network of one reflection (include/fgc_qr.h's qr_reflection): broadcast streams
         # the vector below the pivot to each Update unit while qr_finish computes v_0, tau and
-        # R_jj from the norm and the pivot and streams them to each unit (R_jj also to collect);
+        # R_jj from the norm and the pivot and streams v_0 and tau to each unit (R_jj to
+        # collect);
         # the unit holding the next column streams it to Evaluate (which applies the
         # reflection to it), each unit its entries of R's row to collect; Evaluate writes one
         # of the vector's and one of the norm's two buffers, which the next region's broadcast
@@ -240,7 +261,7 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
             channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
                                     ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
         for u in range(opts.units):
-            channels.append(Channel(f"qr{s}_t{u}", "stream", 3, ops.word_bits + 32,
+            channels.append(Channel(f"qr{s}_t{u}", "stream", 2, ops.word_bits + 32,
                                     f"qr{s}_finish", f"qr{s}_update{u}"))
         channels.append(Channel(f"qr{s}_r", "stream", 1, ops.word_bits,
                                 f"qr{s}_finish", f"qr{s}_collect"))

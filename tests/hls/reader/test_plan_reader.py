@@ -70,8 +70,8 @@ def test_lio_plan_prices_at_least_what_the_text_instantiates(tmp_path):
     # in the kernel and its headers instantiate; none of their loops is II-short
     assert _plan_around(cost) >= design.dsp(dsp_of, (*AROUND, "lio.cpp")) > 0
     assert _around(check(design.loops), "lio") == []
-    # the gradient's accumulate: PORTS multiply-adds a cycle (AB's two ports), not a row's
-    # every column
+    # the gradient's accumulate: PORTS multiply-adds a cycle (a word of the datapaths'
+    # stream), not a row's every column
     acc = [r for r in design.loops if r.function == "accumulate" and dict(r.ops).get("mul")]
     assert acc and all(dict(r.instances) == {"add": 2, "mul": 2} for r in acc)
 

@@ -247,6 +247,37 @@ def test_a_declared_distance_bounds_the_ii_by_the_latency_over_it(distance, boun
     assert bool(check([loop])) == (bound > 1)
 
 
+STORED = """
+typedef float T;
+void kept(const T v[256], T out[4]) {
+    T w[8];
+    int a = 0;
+    for (int i = 0; i < 256; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=w inter true distance=D
+        T x = w[a];
+        if (i < 8) {
+            x = v[i];
+            w[i] = x;
+        }
+        out[0] = x;
+        a = a == 7 ? 0 : a + 1;
+    }
+}
+void top(const T v[256], T out[4]) { kept(v, out); }
+"""
+
+
+@pytest.mark.parametrize("distance, bound", [(1, 1), (2, 1)])
+def test_a_stored_word_read_back_at_a_distance_is_no_adder_recurrence(distance, bound):
+    """A word stored and read back D iterations later (an Update unit's vector, kept as the
+    dot's first column takes it) recurs through the memory, not an adder: II >= ceil(1 / D);
+    the same claim on a sum is the adder's (the test above)."""
+    (loop,) = read_project([("s.cpp", STORED.replace("=D", f"={distance}"))], ADD_LATENCY)
+    assert loop.recurrence == ("w",) and loop.ii_bound == bound
+    assert not check([loop])
+
+
 BRANCHES = """
 typedef float T;
 template <int KIND>

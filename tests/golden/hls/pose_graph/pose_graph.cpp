@@ -28,10 +28,10 @@
 //   stream qr0_v1 depth=8: qr0_broadcast -> qr0_update1
 //   stream qr0_v2 depth=8: qr0_broadcast -> qr0_update2
 //   stream qr0_v3 depth=8: qr0_broadcast -> qr0_update3
-//   stream qr0_t0 depth=3: qr0_finish -> qr0_update0
-//   stream qr0_t1 depth=3: qr0_finish -> qr0_update1
-//   stream qr0_t2 depth=3: qr0_finish -> qr0_update2
-//   stream qr0_t3 depth=3: qr0_finish -> qr0_update3
+//   stream qr0_t0 depth=2: qr0_finish -> qr0_update0
+//   stream qr0_t1 depth=2: qr0_finish -> qr0_update1
+//   stream qr0_t2 depth=2: qr0_finish -> qr0_update2
+//   stream qr0_t3 depth=2: qr0_finish -> qr0_update3
 //   stream qr0_r depth=1: qr0_finish -> qr0_collect
 //   stream qr0_col0 depth=54: qr0_update0 -> qr0_evaluate
 //   stream qr0_row0 depth=2: qr0_update0 -> qr0_collect
@@ -218,8 +218,8 @@ inline T fgc_guarded_quotient(T a, T b, T g, T t, T f) { return g > t ? T(a / b)
 void factor_0(const T in[24], const T dat[13],
               T raw[96]) {
 #pragma HLS INLINE off
-#pragma HLS ALLOCATION operation instances=fadd limit=16
-#pragma HLS ALLOCATION operation instances=fmul limit=23
+#pragma HLS ALLOCATION operation instances=fadd limit=14
+#pragma HLS ALLOCATION operation instances=fmul limit=20
 #pragma HLS ALLOCATION operation instances=fdiv limit=1
 #pragma HLS ALLOCATION operation instances=fsqrt limit=1
     const T t0 = in[0]*in[12] + in[3]*in[15] + in[6]*in[18];
@@ -1112,27 +1112,45 @@ T rounding_noise(const T ab[NOISE_AB], const T scale[NOISE_STRIDE], int stride, 
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-// Whitened rows [A | b] of the instance at AB[a0] (rows of `cols` words) -> the local gradient
-// A^T b (column c into G[col[c]]). One module for every block type (linearize_all's ALLOCATION;
-// each reduce_<b> INLINE there): the block's sizes are run-time arguments, the largest block
-// type's at compile time (GRAD_*). First the rows' right-hand sides (PORTS a cycle) into
-// registers; then PORTS columns of a row a cycle straight out of AB (its two ports: II 1, PORTS
-// multipliers and adders; columns past the row's `cols` are zero), rows x stride / PORTS
-// iterations of one flattened loop; row r goes into partial sum r % T_PARTIALS of its columns,
-// so an accumulator comes back T_PARTIALS * stride / PORTS iterations later, at least GRAD_DIST
-// (the narrowest block type's; the DEPENDENCE's distance, at least the adder's latency). Then a
-// column a cycle: its partial sums folded and added into G (the columns' entries are distinct:
-// II 1). False if an entry is infinite or NaN. (The rows are read from AB once: no copy into a
-// row buffer first.)
+// Whitened rows [A | b] of one instance, as its datapath streams them (`grad`, PORTS words a
+// stream word: evaluate_<b> writes them beside its rows into AB) -> the local gradient A^T b
+// (column c into G[col[c]]). One module for every block type (reduce_all's ALLOCATION; each
+// reduce_<b> INLINE there): the block's sizes are run-time arguments, the largest block type's
+// at compile time (GRAD_*). A row comes as stride / PORTS words, the group holding b (column
+// cols - 1) first and the others after it in turn, so b is in a register before its row's first
+// product: PORTS columns of a row a cycle (PORTS multipliers and adders; columns past the row's
+// `cols` are zero), rows x stride / PORTS iterations of one flattened loop reading a word each;
+// row r goes into partial sum r % T_PARTIALS of its columns, so an accumulator comes back
+// T_PARTIALS * stride / PORTS iterations later, at least GRAD_DIST (the narrowest block type's;
+// the DEPENDENCE's distance, at least the adder's latency). Then a column a cycle: its partial
+// sums folded and added into G (the columns' entries are distinct: II 1). False if an entry is
+// infinite or NaN. (AB is not read again: the rows pass once, from the datapath.)
 // The right-hand side's own column (b^T b, its ||W r||^2) comes out of the same scatter, one
 // iteration more, into `sq` through the same adder (LM's cost at X from the linearisation:
 // fgc_lm.h's FGC_LM_COST_IN_LINEARIZE).
+struct GradWord { T v[PORTS]; };
 const int GRAD_STRIDE = 16;  // the widest block type's padded row
 const int GRAD_ROWS = 6;  // the most rows of a block type
 const int GRAD_COLS = 12;  // the most columns of a block type (its tangent entries)
 const int GRAD_GROUPS = 48;  // the most PORTS groups of a block type's padded rows
 const int GRAD_DIST = 16;  // T_PARTIALS x the narrowest padded row / PORTS
-bool accumulate(int a0, const int col[GRAD_COLS], int stride, int cols, int rows, T& sq) {
+const int GRAD_DEPTH = GRAD_GROUPS;  // the rows stream: one instance's words of the largest block type
+
+// one whitened row (ab: padded to STRIDE columns, COLS of them [A | b]) to the gradient's
+// stream, b's group first (accumulate's order); unrolled in the datapath's pipelined loop
+template <int STRIDE, int COLS>
+void grad_row(const T* ab, hls::stream<GradWord>& grad) {
+#pragma HLS INLINE
+    for (int j = 0; j < STRIDE / PORTS; ++j) {
+        const int g = (COLS - 1) / PORTS + j < STRIDE / PORTS ? (COLS - 1) / PORTS + j
+                                                               : (COLS - 1) / PORTS + j - STRIDE / PORTS;
+        GradWord w;
+        for (int t = 0; t < PORTS; ++t) w.v[t] = g * PORTS + t < COLS ? ab[g * PORTS + t] : T(0);
+        grad.write(w);
+    }
+}
+
+bool accumulate(hls::stream<GradWord>& grad, const int col[GRAD_COLS], int stride, int cols, int rows, T& sq) {
     T g[T_PARTIALS][GRAD_STRIDE];
 #pragma HLS ARRAY_PARTITION variable=g complete dim=0
     for (int t = 0; t < T_PARTIALS; ++t) {
@@ -1142,33 +1160,29 @@ bool accumulate(int a0, const int col[GRAD_COLS], int stride, int cols, int rows
             g[t][c] = T(0);
         }
     }
-    T rhs[GRAD_ROWS];  // each row's right-hand side
-#pragma HLS ARRAY_PARTITION variable=rhs complete
-    for (int r = 0; r < rows; r += PORTS) {  // PORTS words a cycle (AB's two ports)
-#pragma HLS LOOP_TRIPCOUNT max=GRAD_ROWS/2
-#pragma HLS PIPELINE II=1
-        for (int h = 0; h < PORTS; ++h) {
-            if (r + h < rows) rhs[r + h] = AB[a0 + (r + h) * cols + cols - 1];
-        }
-    }
+    const int groups = stride / PORTS, gb = (cols - 1) / PORTS, hb = (cols - 1) % PORTS;
     bool finite = true;
-    int r = 0, c0 = 0, p = 0;  // the row, its group's first column, its partial sum (r % T_PARTIALS)
-    for (int i = 0; i < rows * (stride / PORTS); ++i) {
+    T b = T(0);  // the row's right-hand side (its first word's)
+    int j = 0, p = 0;  // the word of the row, the row's partial sum (r % T_PARTIALS)
+    for (int i = 0; i < rows * groups; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=GRAD_GROUPS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=g inter true distance=GRAD_DIST
-        const T b = rhs[r];
+        const GradWord w = grad.read();
+        const int grp = gb + j < groups ? gb + j : gb + j - groups;
+        const T bj = j == 0 ? w.v[hb] : b;
         for (int t = 0; t < PORTS; ++t) {
-            const int c = c0 + t;
-            const T a = c < cols ? T(AB[a0 + r * cols + c]) : T(0);
-            g[p][c] += a * b;
+            const int c = grp * PORTS + t;
+            const T a = c < cols ? w.v[t] : T(0);
+            g[p][c] += a * bj;
             finite = finite && fgc_isfinite(a);
         }
-        c0 += PORTS;
-        if (c0 == stride) {
-            c0 = 0;
-            ++r;
+        b = bj;
+        if (j + 1 == groups) {
+            j = 0;
             p = p + 1 == T_PARTIALS ? 0 : p + 1;
+        } else {
+            ++j;
         }
     }
     for (int c = 0; c < cols; ++c) {  // a column a cycle: its partial sums folded, into G (b's: into sq)
@@ -1217,10 +1231,10 @@ void gather_trial_0(const T x[N_X], int f, T in[24], T dat[13]) {
 }
 
 // block 0, Jacobian mode: per instance residual + Jacobian (its 60 structural non-zeros of
-// 6 x 13), whitening, into AB; one instance every II=42 cycles (the plan's)
-void evaluate_0(const T x[N_X]) {
+// 6 x 13), whitening, into AB; one instance every II=48 cycles (the plan's)
+void evaluate_0(const T x[N_X], hls::stream<GradWord>& grad) {
     for (int i = 0; i < 6; ++i) {
-#pragma HLS PIPELINE II=42
+#pragma HLS PIPELINE II=48
         const int f = BLOCK0_INSTANCES[i];
         T in[24], dat[13];
         gather_0(x, f, in, dat);
@@ -1233,8 +1247,11 @@ void evaluate_0(const T x[N_X]) {
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 13; ++c) AB[a0 + r * 13 + c] = ab[r * 16 + c];
         }
+        // and beside AB, to the gradient (reduce_all, the same DATAFLOW region): 48 stream words
+        for (int r = 0; r < 6; ++r) grad_row<16, 13>(ab + r * 16, grad);
     }
-    FGC_CYCLES("factor_0_jacobian", 0, "instances", 6, 42, 428);
+    // (one process of linearize_rows' region: the datapaths one after another)
+    FGC_CYCLES("datapaths", 0, "factor_0_jacobian", 6, 48, 428);
 }
 
 // block 0's whitened rows of instance f from AB, padded to 16 columns (a multiple of PORTS)
@@ -1249,9 +1266,9 @@ void load_rows_0(int f, T ab[96]) {
     }
 }
 
-// block 0: the gradient of each instance from AB; false if not finite. INLINE into
-// linearize_all, whose ALLOCATION makes every block type's accumulate one module
-bool reduce_0(T& sq) {
+// block 0: the gradient of each instance from the datapath's stream; false if not
+// finite. INLINE into reduce_all, whose ALLOCATION makes every block type's accumulate one module
+bool reduce_0(hls::stream<GradWord>& grad, T& sq) {
 #pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 6; ++i) {
@@ -1260,14 +1277,14 @@ bool reduce_0(T& sq) {
         int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
         for (int j = 0; j < 6; ++j) col[6 + j] = VAR_T_OFF[FACTOR_VARS[vb + 1]] + j;
-        finite = accumulate(FACTOR_A_OFF[f], col, 16, 13, 6, sq) && finite;
-        // column map, the right-hand sides, A^T b PORTS columns a cycle out of AB (a dot
-        // product of m rows x STRIDE / PORTS groups: the plan's rule), the scatter into G
-        FGC_CYCLES("reduce_0", 0, "columns", 12, 1, 1);
-        FGC_CYCLES("reduce_0", 0, "rhs", 3, 1, 2);
-        FGC_CYCLES("reduce_0", 0, "rows", 48, fgc_units::dot_ii(48, T_PARTIALS, T_ADD_LAT),
+        finite = accumulate(grad, col, 16, 13, 6, sq) && finite;
+        // column map, A^T b PORTS columns a cycle from the stream (a dot product of m rows x
+        // STRIDE / PORTS groups: the plan's rule), the scatter into G
+        FGC_CYCLES("gradient", 0, "reduce_0_columns", 12, 1, 1);
+        if (i == 0) FGC_WAIT("gradient", 0, "datapaths", 0, "factor_0_jacobian");
+        FGC_CYCLES("gradient", 0, "reduce_0_rows", 48, fgc_units::dot_ii(48, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(48, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_0", 0, "scatter", 13, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
+        FGC_CYCLES("gradient", 0, "reduce_0_scatter", 13, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -1316,7 +1333,7 @@ void gather_trial_1(const T x[N_X], int f, T in[12], T dat[13]) {
 
 // block 1, Jacobian mode: per instance residual + Jacobian (its 33 structural non-zeros of
 // 6 x 7), whitening, into AB; one instance every II=111 cycles (the plan's)
-void evaluate_1(const T x[N_X]) {
+void evaluate_1(const T x[N_X], hls::stream<GradWord>& grad) {
     for (int i = 0; i < 1; ++i) {
 #pragma HLS PIPELINE II=111
         const int f = BLOCK1_INSTANCES[i];
@@ -1331,8 +1348,11 @@ void evaluate_1(const T x[N_X]) {
         for (int r = 0; r < 6; ++r) {
             for (int c = 0; c < 7; ++c) AB[a0 + r * 7 + c] = ab[r * 8 + c];
         }
+        // and beside AB, to the gradient (reduce_all, the same DATAFLOW region): 24 stream words
+        for (int r = 0; r < 6; ++r) grad_row<8, 7>(ab + r * 8, grad);
     }
-    FGC_CYCLES("factor_1_jacobian", 0, "instances", 1, 111, 416);
+    // (one process of linearize_rows' region: the datapaths one after another)
+    FGC_CYCLES("datapaths", 0, "factor_1_jacobian", 1, 111, 416);
 }
 
 // block 1's whitened rows of instance f from AB, padded to 8 columns (a multiple of PORTS)
@@ -1347,9 +1367,9 @@ void load_rows_1(int f, T ab[48]) {
     }
 }
 
-// block 1: the gradient of each instance from AB; false if not finite. INLINE into
-// linearize_all, whose ALLOCATION makes every block type's accumulate one module
-bool reduce_1(T& sq) {
+// block 1: the gradient of each instance from the datapath's stream; false if not
+// finite. INLINE into reduce_all, whose ALLOCATION makes every block type's accumulate one module
+bool reduce_1(hls::stream<GradWord>& grad, T& sq) {
 #pragma HLS INLINE
     bool finite = true;
     for (int i = 0; i < 1; ++i) {
@@ -1357,14 +1377,14 @@ bool reduce_1(T& sq) {
         const int vb = FACTOR_VAR_BEGIN[f];
         int col[GRAD_COLS];  // per column: its tangent entry
         for (int j = 0; j < 6; ++j) col[0 + j] = VAR_T_OFF[FACTOR_VARS[vb + 0]] + j;
-        finite = accumulate(FACTOR_A_OFF[f], col, 8, 7, 6, sq) && finite;
-        // column map, the right-hand sides, A^T b PORTS columns a cycle out of AB (a dot
-        // product of m rows x STRIDE / PORTS groups: the plan's rule), the scatter into G
-        FGC_CYCLES("reduce_1", 0, "columns", 6, 1, 1);
-        FGC_CYCLES("reduce_1", 0, "rhs", 3, 1, 2);
-        FGC_CYCLES("reduce_1", 0, "rows", 24, fgc_units::dot_ii(24, T_PARTIALS, T_ADD_LAT),
+        finite = accumulate(grad, col, 8, 7, 6, sq) && finite;
+        // column map, A^T b PORTS columns a cycle from the stream (a dot product of m rows x
+        // STRIDE / PORTS groups: the plan's rule), the scatter into G
+        FGC_CYCLES("gradient", 0, "reduce_1_columns", 6, 1, 1);
+        if (i == 0) FGC_WAIT("gradient", 0, "datapaths", 0, "factor_1_jacobian");
+        FGC_CYCLES("gradient", 0, "reduce_1_rows", 24, fgc_units::dot_ii(24, T_PARTIALS, T_ADD_LAT),
                    fgc_units::dot_depth(24, T_PARTIALS, T_ADD_LAT, T_MUL_LAT));
-        FGC_CYCLES("reduce_1", 0, "scatter", 7, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
+        FGC_CYCLES("gradient", 0, "reduce_1_scatter", 7, 1, 6 + T_ADD_LAT * fgc_units::ceil_log2(T_PARTIALS));
     }
     return finite;
 }
@@ -1390,12 +1410,17 @@ T noise_1(T noise, T ab[NOISE_AB]) {
     return noise;
 }
 
-// Linearise every factor: the datapaths in Jacobian mode into AB, then the gradient.
-bool linearize_all(const T x[N_X]) {
-    // one accumulate for every block type's gradient (reduce_<b> INLINE: they run one after another)
+// linearize_rows' processes. The datapaths in Jacobian mode one after another, each instance's
+// whitened rows into AB and to the gradient's stream:
+void evaluate_all(const T x[N_X], hls::stream<GradWord>& grad) {
+    evaluate_0(x, grad);
+    evaluate_1(x, grad);
+}
+
+// G zeroed, then the gradient of every instance in the datapaths' order, from the stream (one
+// accumulate for every block type: reduce_<b> INLINE, they run one after another)
+void reduce_all(hls::stream<GradWord>& grad, bool& finite, T& sq) {
 #pragma HLS ALLOCATION function instances=accumulate limit=1
-    FGC_EVENT("linearize");
-    FGC_PHASE("gradient");
     for (int i = 0; i < N_TANGENT; i += PORTS) {  // PORTS words a cycle (G's two ports)
 #pragma HLS PIPELINE II=1
         for (int h = 0; h < PORTS; ++h) {
@@ -1403,14 +1428,36 @@ bool linearize_all(const T x[N_X]) {
         }
     }
     FGC_CYCLES("gradient", 0, "zero", (N_TANGENT + PORTS - 1) / PORTS, 1, 1);
-    FGC_PHASE("factor_jacobian");
-    evaluate_0(x);
-    evaluate_1(x);
-    FGC_PHASE("gradient");
+    bool ok = true;
+    T s = T(0);  // sum of b^T b over the instances: twice the cost at x
+    ok = reduce_0(grad, s) && ok;
+    ok = reduce_1(grad, s) && ok;
+    finite = ok;
+    sq = s;
+}
+
+// The linearisation, one DATAFLOW region: evaluate_all (the datapaths: the rows into AB and, a
+// stream word PORTS columns, to the gradient) alongside reduce_all (A^T b, the finiteness check and b^T b
+// from the stream): an instance's gradient is formed while the datapaths evaluate the next ones,
+// and AB is not read a second time. The stream holds the largest instance's words.
+void linearize_rows(const T x[N_X], bool& finite, T& sq) {
+#pragma HLS DATAFLOW
+    hls::stream<GradWord> grad;
+#pragma HLS STREAM variable=grad depth=GRAD_DEPTH
+    FGC_REGION("linearize");
+    evaluate_all(x, grad);
+    reduce_all(grad, finite, sq);
+    FGC_DRAINED(&grad, 1);
+}
+
+// Linearise every factor: linearize_rows (the datapaths into AB, the gradient beside them).
+bool linearize_all(const T x[N_X]) {
+    FGC_EVENT("linearize");
+    FGC_PHASE("factor_jacobian");  // the region's records: the plan's factor_jacobian phase
     bool finite = true;
     T sq = T(0);  // sum of b^T b over the instances: twice the cost at x
-    finite = reduce_0(sq) && finite;
-    finite = reduce_1(sq) && finite;
+    linearize_rows(x, finite, sq);
+    FGC_SEQUENTIAL();
     LIN_COST = T(0.5) * sq;
     return finite;
 }

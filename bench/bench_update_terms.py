@@ -1,0 +1,79 @@
+"""Where paper A's on-chip update goes, term by term (issue 33): LIO N = 30 on KITTI, K = 3, batch
+steps at keyframes 5 / 15 / 25, one Gauss-Newton step an update (ISAM2's policy), float32 QR.
+The simulator runs the stream once; each update is priced by the emitted design's plan
+(``WindowPricer``: model estimates at 143 MHz) and the largest terms of the chosen keyframes are
+printed, then the median and p99 per update.
+
+    python bench/bench_update_terms.py                      # n_u 4, two unit sets, ALLOCATION 2/3/1
+    python bench/bench_update_terms.py --units 4 --sets 2 --allocation add=2,mul=3,div=1 \\
+        --keyframes 5,14,25 --top 25
+"""
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import sys
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_papers as b  # noqa: E402
+
+from fgc.app import streaming  # noqa: E402
+from fgc.errors import FgcError  # noqa: E402
+from fgc.ir.datafile import problem_data  # noqa: E402
+from fgc_backends.hls import HlsConfig  # noqa: E402
+
+
+def _allocation(text: str) -> tuple[tuple[str, int], ...] | None:
+    if text in ("", "default"):
+        return None
+    out = []
+    for item in text.split(","):
+        kind, _, count = item.partition("=")
+        if not count.isdigit():
+            raise FgcError(f"--allocation {text!r}: expected kind=count items, e.g. add=2,mul=3")
+        out.append((kind.strip(), int(count)))
+    return tuple(out)
+
+
+def main(argv=None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--units", type=int, default=4, help="n_u (default 4)")
+    ap.add_argument("--sets", type=int, default=2, help="unit sets (default 2)")
+    ap.add_argument("--allocation", default="add=2,mul=3,div=1",
+                    help="factor datapaths' ALLOCATION, or 'default' (default add=2,mul=3,div=1)")
+    ap.add_argument("--keyframes", default="5,14,25", help="keyframes whose terms are printed")
+    ap.add_argument("--top", type=int, default=25, help="terms printed per keyframe")
+    args = ap.parse_args(argv)
+    shown = {int(k) for k in args.keyframes.split(",") if k.strip()}
+    cfg = b.Config()
+    graph = b.lio.build(N=cfg.lio_n)
+    solver = dataclasses.replace(b._stream_solver(cfg), units=args.units)
+    program = streaming.compile_stream(graph, solver, incremental=3,
+                                       batch_every=tuple(cfg.stream_batch))
+    sp = streaming.stream_program(graph, program)
+    updates = []
+    streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
+    pricer = streaming.WindowPricer(sp, config=HlsConfig(
+        scalar="float", unit_sets=args.sets, allocation=_allocation(args.allocation)))
+    res = pricer.model.resources()
+    print(f"n_u {args.units}, {args.sets} unit set(s), ALLOCATION {args.allocation}: "
+          f"{res['dsp']:,} DSP / {res['bram36']:g} BRAM36 by the plan (model estimates)")
+    latency = []
+    for u in updates:
+        price = pricer.price(u)
+        latency.append(price.latency_ms)
+        if u.keyframe not in shown:
+            continue
+        print(f"keyframe {u.keyframe} ({price.mode}): {price.cycles:,} cycles")
+        for t in sorted(price.terms, key=lambda t: -abs(t.cycles))[:args.top]:
+            print(f"   {t.name:28s} {t.cycles:9,} = {t.each:,} x {t.times}"
+                  + ("  (assumed)" if t.assumed else ""))
+    print(f"per update: median {np.median(latency):.3f} ms, "
+          f"p99 {np.percentile(latency, 99):.3f} ms")
+
+
+if __name__ == "__main__":
+    main()
