@@ -390,8 +390,30 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                               plan.options.state_allocation)
     retire = {"kinds": kinds, "variables": variables, "steps": steps, "ii": ii, "depth": depth}
     # back_substitute's trial_cost (units/datapath.py): its loops' tables, II and depth
-    trial = _trial_context(program, context["blocks"], blocks, phase)
     from fgc_backends.hls.units.datapath import trial_banked, trial_span
+    from fgc_backends.hls.units.lm_control import retire_step_test
+    split = retire_step_test(program, plan.options)
+    trial = _trial_context(program, context["blocks"], blocks, phase, split)
+    if split:  # per variable the trial-cost processes it goes to (bit q: process q)
+        send = [0] * len(program.variables)
+        offsets = {sum(v.storage_dim for v in program.variables[:i]): i
+                   for i in range(len(program.variables))}
+        for lp in trial:
+            for x0, x1 in zip(lp["x0"], lp["x1"], strict=True):
+                if x0 < x1:
+                    send[offsets[x0]] |= 1 << lp["proc"]
+        retire["send"] = send
+    # trial_cost_b's copy of its instances' data lines (units/datapath.py's trial_b_data)
+    trial_b = None
+    if split and any(lp["proc"] == 1 for lp in trial):
+        from fgc_backends.hls.plan.loops import _tables
+        from fgc_backends.hls.units.datapath import cost_loops, trial_b_data, trial_plan
+        procs = [p for p in phase["factor_cost"].processes
+                 if re.fullmatch(r"factor_(\d+|small)_cost", p.name)]
+        tables = _tables(program)
+        lo, words = trial_b_data(program, trial_plan(program, context["blocks"],
+                                                     cost_loops(procs), tables, True), tables)
+        trial_b = {"lo": lo, "words": words}
     # the column design: trial_cost's gathers from DATA_BUF's two banks (units/datapath.py)
     trial_spans = [trial_span(bc) for bc in context["blocks"]] \
         if trial_banked(program, plan.options) else None
@@ -413,11 +435,14 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
             "blocks": blocks, "beside": beside, "network": network, "retract_hw": retract,
-            "retire": retire, "trial": trial, "trial_spans": trial_spans,
+            "retire": retire, "trial": trial, "trial_spans": trial_spans, "trial_b": trial_b,
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
             # the gradient pass gives LM the cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE)
             "cost_in_lin": cost_in_linearization(program),
+            # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
+            # the copies into X (units/lm_control.py's retire_step_test)
+            "retire_test": retire_step_test(program, plan.options),
             "small": shared,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
@@ -515,26 +540,32 @@ def _cascade_context(program: Program, plan) -> dict:
             "step_streamed": [kids[s][0] for s in range(n)]}
 
 
-def _trial_context(program: Program, contexts, blocks, phase: dict) -> list[dict]:
+def _trial_context(program: Program, contexts, blocks, phase: dict,
+                   split: bool = False) -> list[dict]:
     """trial_cost's loops as accel.cpp.jinja prints them (units/datapath.py's trial_plan on
     the plan's cost-mode loops): per loop its entries' instance (and block type, for the
     shared small datapath), the storage words of the variables each takes ([x0, x1) in x, k
-    a row, x0 = x1 none), II and depth."""
+    a row, x0 = x1 none), II and depth; ``split`` (units/datapath.py's split_trial_loops): its
+    process (0: trial_cost, 1: trial_cost_b) and the retire position of each variable it takes
+    (p, -1 none: the counting build's keyed marks)."""
     from fgc_backends.hls.plan.loops import _tables
-    from fgc_backends.hls.units.datapath import cost_loops, trial_plan
+    from fgc_backends.hls.units.datapath import cost_loops, trial_plan, trial_positions
     procs = [p for p in phase["factor_cost"].processes
              if re.fullmatch(r"factor_(\d+|small)_cost", p.name)]
     offsets = [0]
     for v in program.variables:
         offsets.append(offsets[-1] + v.storage_dim)
     out = []
-    for lp in trial_plan(program, contexts, cost_loops(procs), _tables(program)):
-        x0, x1 = [], []
+    tables = _tables(program)
+    pos = trial_positions(program, tables)
+    for lp in trial_plan(program, contexts, cost_loops(procs), tables, split):
+        x0, x1, at = [], [], []
         for _, taking in lp.entries:
             row = [(offsets[v], offsets[v + 1]) for v in taking]
             row += [(0, 0)] * (lp.k - len(row))
             x0 += [a for a, _ in row]
             x1 += [b for _, b in row]
+            at += [pos[v] for v in taking] + [-1] * (lp.k - len(taking))
         small = lp.key == "small"
         names = sorted({contexts[program.factors[f].block].comment  # sanitised
                         for f, _ in lp.entries if f >= 0})
@@ -543,7 +574,7 @@ def _trial_context(program: Program, contexts, blocks, phase: dict) -> list[dict
                     "block": None if small else blocks[lp.key],
                     "f": [f for f, _ in lp.entries],
                     "b": [program.factors[f].block if f >= 0 else -1 for f, _ in lp.entries],
-                    "x0": x0, "x1": x1,
+                    "x0": x0, "x1": x1, "proc": lp.proc, "at": at,
                     "comment": ("the small datapath" if small else f"block {lp.key}")
                     + " (" + ", ".join(names) + ")"})
     return out

@@ -161,7 +161,10 @@ def counts(kernel: str, units: str, backsub: str) -> tuple[int, int]:
                        if r.function == "linearize_solve")
     backsub = backsub_region(backsub, "#define FGC_BS_LANES" in kernel,
                              "#define FGC_BS_COLUMNS" in kernel)
-    return (procs * sets + len(backsub.processes),
+    # the kernel's trial_cost, a process of back_substitute's region, is itself a DATAFLOW
+    # region where the column design's LM splits the cost in two (trial_cost_a, trial_cost_b)
+    inner = sum(len(r.processes) - 1 for r in read_network(kernel) if r.function == "trial_cost")
+    return (procs * sets + len(backsub.processes) + inner,
             streams * sets + _stream_count(backsub, cfg))
 
 

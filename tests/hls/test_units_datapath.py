@@ -98,15 +98,25 @@ def _kernel_calls(text: str, block: int) -> tuple[str, str]:
     pass beside back-substitution) in the emitted kernel."""
     start = text.index(f"void evaluate_{block}(")
     evaluate = text[start:text.index("\n}\n", start)]
-    start = text.index(f"    // block {block} (", text.index("void trial_cost("))
+    start = text.index(f"    // block {block} (", _trial_start(text))
     return evaluate, text[start:text.index("\n    }\n", start)]
+
+
+def _trial_start(text: str) -> int:
+    """Where trial_cost's loops start: its own body, or (the column design's LM, split in two:
+    units/datapath.py's split_trial_loops) trial_cost_a's, trial_cost_b's after it."""
+    return text.index("void trial_cost_a(" if "void trial_cost_a(" in text
+                      else "void trial_cost(")
 
 
 def _trial_loops(text: str, loops) -> dict:
     """Per key of trial_cost's loops (a block type, or "small") its reading among ``loops``
-    (the second reader's): the first of trial_cost's after the loop's comment."""
-    at = text.index("void trial_cost(")
-    mine = sorted((r for r in loops if r.function == "trial_cost"), key=lambda r: r.line)
+    (the second reader's): the first of trial_cost's (or trial_cost_b's, the column design's
+    LM: units/datapath.py's split_trial_loops) after the loop's comment."""
+    at = _trial_start(text)
+    mine = sorted((r for r in loops if r.function in ("trial_cost", "trial_cost_a",
+                                                       "trial_cost_b")),
+                  key=lambda r: r.line)
     out = {}
     for m in re.finditer(r"\n    // (?:block (\d+)|the small datapath) \(", text[at:]):
         line = text.count("\n", 0, at + m.start() + 1) + 1  # the comment's line

@@ -30,6 +30,12 @@
 // 1/2 |b|^2 of its whitened rows anyway (its gradient pass), so the first linearisation gives
 // the cost at X and no cost pass runs before it; the same outcome (a non-finite cost at X
 // fails the solve with REASON_NON_FINITE and no iteration) one pass sooner.
+// FGC_LM_GRADIENT_IN_SOLVE (the HLS Cholesky kernel with back-substitution by columns): the
+// solve's state update finds the gradient's largest |entry| as it reads g for the step test, so
+// the small-gradient test runs after the first solve of a linearisation that succeeds
+// (solved_gradient_max()), before its step test, and, where no solve of the linearisation
+// succeeded, before try_steps returns a failure (gradient_max()): the same outcome as testing
+// first (X unchanged, converged on the gradient; only mu, which is not returned, may have grown).
 // The reductions live in the hooks: the HLS kernel's run in interleaved partial sums at II 1
 // (fgc_lm_units.h) and count cycles, the native solver's are plain loops.
 //
@@ -55,6 +61,22 @@ struct Step {
     T predicted;
 };
 
+#ifdef FGC_LM_GRADIENT_IN_SOLVE
+// A failure of try_steps, unless the gradient (not yet tested: no solve succeeded) is small.
+template <class CFG>
+Step<typename CFG::T> failed_step(bool tested, int reason, typename CFG::T cost) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    if (!tested && CFG::gradient_max() < CFG::eps_gradient()) {
+        return Step<T>{1, CFG::REASON_GRADIENT, cost, T(0)};
+    }
+    return Step<T>{2, reason, cost, T(0)};
+}
+#define FGC_LM_FAILED(reason) failed_step<CFG>(tested, reason, cost)
+#else
+#define FGC_LM_FAILED(reason) Step<T>{2, reason, cost, T(0)}
+#endif
+
 template <class CFG>
 Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
 #pragma HLS INLINE
@@ -62,9 +84,20 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
     typedef typename CFG::T T;
     T band = T(-1);  // not yet known
     const T x_norm = CFG::x_norm();  // once per call (per linearisation), not per solve
+#ifdef FGC_LM_GRADIENT_IN_SOLVE
+    bool tested = false;  // the small-gradient test ran (after the first solve that succeeded)
+#endif
     for (int t = 0; t < CFG::MAX_TRIES; ++t) {
         const bool solved = CFG::solve_at(mu[0]);
-        if (!solved && !(mu[0] > T(0))) return Step<T>{2, CFG::REASON_SINGULAR, cost, T(0)};
+#ifdef FGC_LM_GRADIENT_IN_SOLVE
+        if (solved && !tested) {
+            tested = true;
+            if (CFG::solved_gradient_max() < CFG::eps_gradient()) {
+                return Step<T>{1, CFG::REASON_GRADIENT, cost, T(0)};
+            }
+        }
+#endif
+        if (!solved && !(mu[0] > T(0))) return FGC_LM_FAILED(CFG::REASON_SINGULAR);
         T test[2];  // |delta|^2, the predicted decrease
         const bool ok = CFG::step_test(solved, mu[0], test);
         const T d2 = test[0], predicted = test[1];
@@ -90,14 +123,15 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
                 return Step<T>{0, 0, trial, predicted};
             }
         }
-        if (!(mu[0] > T(0))) return Step<T>{2, CFG::REASON_NON_FINITE, cost, T(0)};
+        if (!(mu[0] > T(0))) return FGC_LM_FAILED(CFG::REASON_NON_FINITE);
         mu[0] = mu[0] * CFG::lambda_factor();
         if (mu[0] > CFG::lambda_upper_bound()) {
-            return Step<T>{2, CFG::REASON_LAMBDA_LIMIT, cost, T(0)};
+            return FGC_LM_FAILED(CFG::REASON_LAMBDA_LIMIT);
         }
     }
-    return Step<T>{2, CFG::REASON_LAMBDA_LIMIT, cost, T(0)};
+    return FGC_LM_FAILED(CFG::REASON_LAMBDA_LIMIT);
 }
+#undef FGC_LM_FAILED
 
 // optimize's body, INLINE: a kernel that runs its linearisation or elimination again after LM
 // (the on-chip stream's window and batch kernel: fgc_stream.h) calls it directly, so LM's call
@@ -139,11 +173,13 @@ void optimize_inline(typename CFG::T errors[2], int info[3]) {
             break;
         }
         ++it;
+#ifndef FGC_LM_GRADIENT_IN_SOLVE  // (else tested in try_steps, after the solve)
         if (CFG::gradient_max() < CFG::eps_gradient()) {
             status = CFG::STATUS_CONVERGED;
             reason = CFG::REASON_GRADIENT;
             break;
         }
+#endif
         const Step<T> step = try_steps<CFG>(cost, mu);
         if (step.kind != 0) {
             if (step.kind == 1) {  // (not ?: over the codes: C++14 would odr-use them)

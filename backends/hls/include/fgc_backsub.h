@@ -932,10 +932,17 @@ void backsub_end1(hls::stream<BsGroup>& gin, hls::stream<BsPair>& dx, hls::strea
 // x_{f-1} first, into its copy of delta and DELTA (LM control's step test reads it).
 template <class CFG>
 void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
-                         hls::stream<TrialVar>& tx, bool at_x) {
+                         hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2, bool at_x) {
     FGC_SEQUENTIAL();  // csim cycle counting only: the column region's records end here
     FGC_OUTER_BRANCH();
     L delta[CFG::N_TANGENT];  // the solved entries by tangent index
+#ifdef FGC_BS_STEP_TEST
+    // LM's step test (the kernel's FGC_BS_STEP_TEST): |delta|^2, delta^T g, delta's finiteness
+    // and the gradient's largest |entry| summed a variable an iteration (the variable's terms from retract_variable; a
+    // sum's add is its carried dependence, its latency within RETIRE_II), to CFG::retire_test
+    typename CFG::TestT dd = 0, dg = 0, gm = 0;  // (and the gradient's largest |entry|)
+    bool fin = true;
+#endif
     for (int i = 0; i < CFG::N_VARIABLES; ++i) {
 #pragma HLS PIPELINE II=CFG::RETIRE_II
         const int s = RETIRE_STEP[i];
@@ -956,9 +963,24 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
                 }
             }
         }
+#ifdef FGC_BS_STEP_TEST
+        typename CFG::TestT vd = 0, vg = 0, vm = 0;
+        bool vf = true;
+        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2, vd, vg, vm, vf);  // its words on to trial_cost
+        dd += vd;
+        dg += vg;
+        gm = vm > gm ? vm : gm;
+        fin = fin && vf;
+#else
         CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx);  // its words on to trial_cost
+#endif
         FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
     }
+#ifdef FGC_BS_STEP_TEST
+    CFG::retire_test(dd, dg, gm, fin);
+#else
+    (void)tx2;  // (written only with the kernel's second cost process)
+#endif
 }
 
 // Back-substitution by columns: the loader, the two ends, the state update beside them and
@@ -978,12 +1000,14 @@ void back_substitute(bool at_x) {
 #pragma HLS STREAM variable=dx1 depth=BSC_DX1
     hls::stream<TrialVar> tx;  // the retired variables' storage words, a variable a word
 #pragma HLS STREAM variable=tx depth=CFG::N_VARIABLES
+    hls::stream<TrialVar> tx2;  // those the kernel's second cost process takes, if any
+#pragma HLS STREAM variable=tx2 depth=CFG::N_VARIABLES
     FGC_PHASE(at_x ? "factor_cost" : "backsub");
     backsub_loader<CFG>(g0, g1, at_x);
     backsub_end0<CFG>(g0, dx0, xroot, at_x);
     backsub_end1<CFG>(g1, dx1, xroot, at_x);
-    backsub_retire_cols<CFG>(dx0, dx1, tx, at_x);
-    trial_cost(tx);
+    backsub_retire_cols<CFG>(dx0, dx1, tx, tx2, at_x);
+    trial_cost(tx, tx2);  // (the kernel's: with a second cost process, a DATAFLOW region of two)
     FGC_OUTER_JOIN();
     FGC_DRAINED(&g0, 1);
     FGC_DRAINED(&g1, 1);
@@ -991,6 +1015,7 @@ void back_substitute(bool at_x) {
     FGC_DRAINED(&dx0, 1);
     FGC_DRAINED(&dx1, 1);
     FGC_DRAINED(&tx, 1);
+    FGC_DRAINED(&tx2, 1);
 }
 #endif  // FGC_BS_COLUMNS
 

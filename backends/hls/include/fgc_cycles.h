@@ -328,12 +328,13 @@ inline long outer_total(std::size_t from, std::size_t to) {
     long sum = 0;
     std::size_t at = from;
     std::vector<std::size_t> branches, sends, receives, absorbs;
-    std::vector<long> send_keys, receive_keys;  // keyed marks' steps (-1: unkeyed)
+    std::vector<long> send_keys, receive_keys, absorb_keys;  // keyed marks' keys (-1: unkeyed)
     bool open = false;
     auto close_group = [&](std::size_t end) {
         const std::vector<Record>& r = s.records;
         const std::size_t a0 = branches[0], b0 = branches.size() > 1 ? branches[1] : end;
         const std::size_t c0 = branches.size() > 2 ? branches[2] : end;
+        const std::size_t d0 = branches.size() > 3 ? branches[3] : end;
         const long first = span_total(a0, b0);
         std::vector<long> ends;  // per iteration of the second process: when it ends
         // the second process: one pipelined loop, a record (trip 1) an iteration; each issues
@@ -370,21 +371,34 @@ inline long outer_total(std::size_t from, std::size_t to) {
         // (a record an iteration; a loop's first when the one before has drained), an
         // iteration its II after the one before and, after FGC_OUTER_ABSORB's k-th mark, no
         // earlier than the end of the second process's k-th iteration (the word it takes)
-        long free = 0, third = 0, issue3 = 0;
-        std::size_t taken = 0, absorbed = 0;
-        const std::string* loop = nullptr;
-        for (std::size_t q = c0; q < end; ++q) {
-            for (; taken < absorbs.size() && absorbs[taken] <= q; ++taken) ++absorbed;
-            if (r[q].trip <= 0) continue;
-            long at = loop && *loop == r[q].loop ? issue3 + r[q].ii : free;
-            if (absorbed > 0 && absorbed <= ends.size() && ends[absorbed - 1] > at)
-                at = ends[absorbed - 1];
-            loop = &r[q].loop;
-            issue3 = at;
-            free = at + r[q].depth;
-            third = free;
-        }
+        // (keyed, FGC_OUTER_ABSORB_AT(i): no earlier than the second's iteration i ends; a
+        // fourth process, FGC_OUTER_BRANCH again - back_substitute's trial_cost_b - the same
+        // beside the third)
+        auto cost_process = [&](std::size_t lo, std::size_t hi) {
+            long free = 0, done = 0, issue3 = 0, gate3 = -1;
+            std::size_t taken = 0, absorbed = 0;
+            const std::string* loop = nullptr;
+            for (std::size_t q = lo; q < hi; ++q) {
+                for (; taken < absorbs.size() && absorbs[taken] <= q; ++taken) {
+                    if (absorbs[taken] < lo) continue;
+                    const long key = absorb_keys[taken];
+                    const std::size_t k = key >= 0 ? std::size_t(key) : absorbed++;
+                    if (k < ends.size() && ends[k] > gate3) gate3 = ends[k];
+                }
+                if (r[q].trip <= 0) continue;
+                long at = loop && *loop == r[q].loop ? issue3 + r[q].ii : free;
+                if (gate3 > at) at = gate3;
+                gate3 = -1;
+                loop = &r[q].loop;
+                issue3 = at;
+                free = at + r[q].depth;
+                done = free;
+            }
+            return done;
+        };
+        const long third = cost_process(c0, d0), fourth = cost_process(d0, end);
         if (third > last) last = third;
+        if (fourth > last) last = fourth;
         return first > last ? first : last;
     };
     for (std::size_t mi = 0; mi < s.marks.size(); ++mi) {
@@ -402,6 +416,7 @@ inline long outer_total(std::size_t from, std::size_t to) {
                 sends.clear();
                 receives.clear();
                 absorbs.clear();
+                absorb_keys.clear();
                 send_keys.clear();
                 receive_keys.clear();
             }
@@ -414,6 +429,7 @@ inline long outer_total(std::size_t from, std::size_t to) {
             receive_keys.push_back(key);
         } else if (w == 'A' && open) {
             absorbs.push_back(m.first);
+            absorb_keys.push_back(key);
         } else if (w == 'J' && open) {
             sum += close_group(m.first);
             open = false;
@@ -559,6 +575,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_RECEIVE() ::fgc_cycles::mark('R')
 #define FGC_OUTER_JOIN() ::fgc_cycles::mark('J')
 #define FGC_OUTER_ABSORB() ::fgc_cycles::mark('A')
+#define FGC_OUTER_ABSORB_AT(i) ::fgc_cycles::keyed_mark('A', i)
 #define FGC_OUTER_SEND_STEP(step) ::fgc_cycles::keyed_mark('S', step)
 #define FGC_OUTER_RECEIVE_STEP(step) ::fgc_cycles::keyed_mark('R', step)
 #define FGC_PHASE(name) ::fgc_cycles::phase(name)
@@ -587,6 +604,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_RECEIVE() ((void)0)
 #define FGC_OUTER_JOIN() ((void)0)
 #define FGC_OUTER_ABSORB() ((void)0)
+#define FGC_OUTER_ABSORB_AT(i) ((void)0)
 #define FGC_OUTER_SEND_STEP(step) ((void)0)
 #define FGC_OUTER_RECEIVE_STEP(step) ((void)0)
 #define FGC_PHASE(name) ((void)0)

@@ -33,6 +33,12 @@ inline int pair_ii(int words, int partials, int lat) {
     return dot_ii(ceil_div(words, 2), partials, lat);
 }
 inline int larger(int a, int b) { return a > b ? a : b; }
+// pair_depth for four words a cycle (lm_accept_norm: four lanes of partials folded together)
+inline int quad_depth(int words, int partials, int lat, int lead) {
+    const int trip = ceil_div(words, 4);
+    const int k = trip < partials ? (trip < 1 ? 1 : trip) : partials;
+    return lead + lat * (1 + ceil_log2(4 * k));
+}
 inline int pair_depth(int words, int partials, int lat, int lead) {
     const int trip = ceil_div(words, 2);
     const int k = trip < partials ? (trip < 1 ? 1 : trip) : partials;
@@ -159,6 +165,146 @@ void lm_top(const typename CFG::T x_in[CFG::N_X], const typename CFG::T data[CFG
     }
     FGC_CYCLES("top", 0, "x_in", CFG::N_X, CFG::MOVE_II, CFG::MOVE_DEPTH);
     FGC_CYCLES("top", 0, "data_in", CFG::N_DATA, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    fgc_lm::optimize<CFG>(errors, info);
+    FGC_PHASE("setup");
+    for (int i = 0; i < CFG::N_X; ++i) {
+#pragma HLS PIPELINE II=1
+        x_out[i] = x[i];
+    }
+    FGC_CYCLES("top", 0, "x_out", CFG::N_X, CFG::MOVE_II, CFG::MOVE_DEPTH);
+}
+
+// The column design's LM control (accel.cpp.jinja's retire_test: Cholesky with back-substitution
+// by columns, not on-chip streams): the step test's sums |delta|^2 and delta^T g and delta's
+// finiteness are formed by back_substitute's state update as each variable's delta arrives
+// (fgc_backsub.h's backsub_retire_cols, at its II), |X| by the copies that change X (the top's
+// x_in and the accepted step's), and G is zeroed by those copies for the next linearisation
+// (linearize_all has no zeroing pass then). What is left per linearisation is the gradient's
+// largest |entry|, per solve the scalars of the step test, per accepted step the copy.
+
+// the gradient's largest |entry|, two words a cycle into 2 PARTIALS partial maxima (lm_iterate
+// without |x|)
+template <class CFG>
+typename CFG::T lm_gradient_max(const typename CFG::T g[CFG::N_TANGENT]) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    T gp[2 * CFG::PARTIALS];  // (PARTIALS >= MAXIMA maxima)
+#pragma HLS ARRAY_PARTITION variable=gp complete
+    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
+#pragma HLS UNROLL
+        gp[p] = T(0);
+    }
+    for (int e = 0; e < CFG::N_TANGENT; e += 2) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=gp inter true distance=CFG::PARTIALS
+        for (int h = 0; h < 2; ++h) {
+#pragma HLS UNROLL
+            const int i = e + h;
+            const int k = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
+            if (i < CFG::N_TANGENT) {
+                const T a = CFG::magnitude(g[i]);
+                gp[k] = a > gp[k] ? a : gp[k];
+            }
+        }
+    }
+    FGC_PHASE("lm_iteration");
+    FGC_CYCLES("iterate", 0, "gradient_max", ceil_div(CFG::N_TANGENT, 2),
+               pair_ii(CFG::N_TANGENT, CFG::PARTIALS, CFG::CMP_LAT),
+               pair_depth(CFG::N_TANGENT, CFG::PARTIALS, CFG::CMP_LAT, CFG::ABS_LAT));
+    return fold_maxima<T, 2 * CFG::PARTIALS>(gp);
+}
+
+// lm_step_test on the state update's sums: out = {dd, 0.5 (dg + mu dd)}
+template <class CFG>
+bool lm_step_sums(bool solved, typename CFG::T mu, typename CFG::T dd, typename CFG::T dg,
+                  bool finite, typename CFG::T out[2]) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    out[0] = dd;
+    out[1] = T(0.5) * (dg + mu * dd);
+    FGC_PHASE("lm_control");
+    FGC_CYCLES("decide", 0, "step_scalars", 1, 1, CFG::MUL_LAT + CFG::ADD_LAT);  // + mu |delta|^2
+    FGC_CYCLES("decide", 0, "decision", 1, CFG::DECISION_II, CFG::DECISION_DEPTH);
+    return solved && finite;
+}
+
+// x = x_trial four words a cycle (the kernel partitions x, x_trial and g cyclic 2: two banks of
+// two ports each, word e + h in bank h % 2), |x|^2 of the words copied into 4 PARTIALS partial
+// sums (the next linearisation's |X|), and G zeroed four words a cycle for the next
+// linearisation (G's last reader, the step test's sums, ran in the solve before): one loop
+// over the longer
+template <class CFG>
+typename CFG::T lm_accept_norm(typename CFG::T x[CFG::N_X], const typename CFG::T x_trial[CFG::N_X],
+                               typename CFG::T g[CFG::N_TANGENT]) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    T xp[4 * CFG::PARTIALS];
+#pragma HLS ARRAY_PARTITION variable=xp complete
+    for (int p = 0; p < 4 * CFG::PARTIALS; ++p) {
+#pragma HLS UNROLL
+        xp[p] = T(0);
+    }
+    const int N_LONGER = CFG::N_X > CFG::N_TANGENT ? CFG::N_X : CFG::N_TANGENT;
+    for (int e = 0; e < N_LONGER; e += 4) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS
+        for (int h = 0; h < 4; ++h) {
+#pragma HLS UNROLL
+            const int i = e + h;
+            const int k = h * CFG::PARTIALS + (e >> 2) % CFG::PARTIALS;
+            if (i < CFG::N_X) {
+                const T v = x_trial[i];
+                x[i] = v;
+                xp[k] += v * v;
+            }
+            if (i < CFG::N_TANGENT) g[i] = T(0);
+        }
+    }
+    FGC_EVENT("accept");
+    FGC_PHASE("lm_accept");
+    FGC_CYCLES("accept", 0, "accept", ceil_div(N_LONGER, 4),
+               dot_ii(ceil_div(CFG::N_X, 4), CFG::PARTIALS, CFG::ADD_LAT),
+               quad_depth(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT));
+    return fold_partials<T, 4 * CFG::PARTIALS>(xp);
+}
+
+// lm_top for the column design: |x|^2 of the words coming in (PARTIALS interleaved partial
+// sums, a word a cycle) into xx, and G zeroed beside the data's copy (each data word also to
+// CFG::data_word: a kernel's second copy of some), before optimize
+template <class CFG>
+void lm_top_norm(const typename CFG::T x_in[CFG::N_X], const typename CFG::T data[CFG::N_DATA],
+                 typename CFG::T x_out[CFG::N_X], typename CFG::T x[CFG::N_X],
+                 typename CFG::T data_buf[CFG::N_DATA], typename CFG::T g[CFG::N_TANGENT],
+                 typename CFG::T& xx, typename CFG::T errors[2], int info[3]) {
+    typedef typename CFG::T T;
+    FGC_EVENT("call");
+    FGC_PHASE("setup");
+    T xp[CFG::PARTIALS];
+#pragma HLS ARRAY_PARTITION variable=xp complete
+    for (int p = 0; p < CFG::PARTIALS; ++p) {
+#pragma HLS UNROLL
+        xp[p] = T(0);
+    }
+    for (int i = 0; i < CFG::N_X; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS
+        const T v = x_in[i];
+        x[i] = v;
+        xp[i % CFG::PARTIALS] += v * v;
+    }
+    xx = fold_partials<T, CFG::PARTIALS>(xp);
+    const int N_ZERO = CFG::N_DATA > CFG::N_TANGENT ? CFG::N_DATA : CFG::N_TANGENT;
+    for (int i = 0; i < N_ZERO; ++i) {
+#pragma HLS PIPELINE II=1
+        if (i < CFG::N_DATA) {
+            data_buf[i] = data[i];
+            CFG::data_word(i, data[i]);  // (a second copy of some words: the kernel's)
+        }
+        if (i < CFG::N_TANGENT) g[i] = T(0);
+    }
+    FGC_CYCLES("top", 0, "x_in", CFG::N_X, dot_ii(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT),
+               dot_depth(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT));
+    FGC_CYCLES("top", 0, "data_in", N_ZERO, CFG::MOVE_II, CFG::MOVE_DEPTH);
     fgc_lm::optimize<CFG>(errors, info);
     FGC_PHASE("setup");
     for (int i = 0; i < CFG::N_X; ++i) {

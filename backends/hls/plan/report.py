@@ -119,6 +119,9 @@ def process_network(plan: AcceleratorPlan) -> tuple[tuple[str, ...], tuple[Chann
         procs += ("backsub_slots", "backsub_retire")
     if any(ch.name == "trial_tx" for ch in plan.channels):  # the cost pass beside them
         procs += ("trial_cost",)
+    if any(ch.name == "trial_tx2" and ch.consumer == "trial_cost_b"
+           for ch in plan.channels):  # its second process (trial_cost a region of two)
+        procs += ("trial_cost_b",)
     return procs, tuple(ch for ch in plan.channels if ch.kind == "stream")
 
 

@@ -11,7 +11,7 @@ import dataclasses
 import math
 
 from fgc_backends.cost.operators import OperatorTable
-from fgc_backends.hls.plan.binding import BoundLoop, sum_operators
+from fgc_backends.hls.plan.binding import BoundLoop, bound_unit, sum_operators
 from fgc_backends.hls.plan.loops import _ceil_log2, _ported, _region_cycles, dot_loop, kernel_loop
 from fgc_backends.hls.plan.model import PORTS, Channel, Loop, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
@@ -579,11 +579,20 @@ def _solve_phase(ctx, unit: str, solver: Process, busy: int, region: int,
     cost at X_TRIAL (units.datapath's trial_cost), fed the retired variables' storage words, a
     variable a stream word (as deep as the state: the retire never waits for it; ``var_end``:
     when each variable is retired)."""
-    from fgc_backends.hls.units.datapath import trial_end
-    cost = max(region, trial_end(ctx.shared["trial_loops"], var_end))
+    from fgc_backends.hls.units.datapath import trial_end, trial_positions, trial_split
+    pos = trial_positions(ctx.program, ctx.tables) if trial_split(ctx.program, ctx.opts) else None
+    cost = max(region, trial_end(ctx.shared["trial_loops"], var_end, pos))
     words = max(v.storage_dim for v in ctx.program.variables)
     ctx.channels.append(Channel("trial_tx", "stream", len(ctx.program.variables),
                                 words * ctx.ops.word_bits, "backsub_retire", "trial_cost"))
+    if any(ch.name == "backsub_xroot" for ch in ctx.channels):  # by columns: a second cost
+        # stream (fgc_backsub.h's tx2), to trial_cost_b where trial_cost is split in two
+        # (units/datapath.py's split_trial_loops: trial_cost a DATAFLOW region of trial_cost_a
+        # and trial_cost_b), else declared and unused
+        split = any(lp.proc == 1 for lp in ctx.shared["trial_loops"])
+        ctx.channels.append(Channel("trial_tx2", "stream", len(ctx.program.variables),
+                                    words * ctx.ops.word_bits, "backsub_retire",
+                                    "trial_cost_b" if split else "trial_cost"))
     ctx.add_phase("solve", Phase("backsub", False, (
         solver,
         Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - busy),)
@@ -645,6 +654,14 @@ def column_build(ctx) -> None:
     ctx.units.append(Unit(name, "back-substitution by columns, one per end of the chain "
                           "(the column pass: U multiply-subtracts, the ingestion's 1 / R_ii "
                           "and scaling)", 2, column_operators(ops)))
+    from fgc_backends.hls.units.lm_control import retire_step_test, retire_test_loop
+    if retire_step_test(program, ctx.opts):  # LM's step test in the state update's loop
+        from fgc_backends.hls.units.state_update import retire_timing
+        ii, _ = retire_timing(program.variables, ctx.ops, ctx.sizes["MAX_F"],
+                              ctx.opts.state_allocation)
+        ctx.units.append(bound_unit("retire_step_test", "LM's step test summed in the state "
+                                    "update (|δ|², δᵀg a variable an iteration)",
+                                    (retire_test_loop(program, ii),), table=ctx.ops))
     column_phases(ctx, name)
 
 

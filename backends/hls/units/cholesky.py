@@ -371,16 +371,17 @@ def hgc_loops(program, timing: dict, lanes: int = 32, t_timing: dict | None = No
 
 
 def hgc_phases(program, timing: dict, lanes: int, jacobian: tuple[Process, ...],
-               t_timing: dict | None = None) -> list[Phase]:
+               t_timing: dict | None = None, zero: bool = True) -> list[Phase]:
     """linearize_all as emitted for Cholesky: ``hgc`` (G zeroed), then per block type b the
     DATAFLOW region linearize_<b> as phase ``hgc_level<b>`` (group ``hgc``): its datapath's
     Jacobian-mode instance loop (``jacobian``'s process factor_<b>_jacobian: whitened rows into
     AB and, a stream word a row, to the HGC) alongside reduce_<b> (:func:`hgc_loops`), so the
-    region takes the slower of the two plus the other's fill."""
+    region takes the slower of the two plus the other's fill. ``zero`` False
+    (units/lm_control.py's retire_step_test): no ``hgc`` phase, G zeroed by LM's copies."""
     procs = hgc_loops(program, timing, lanes, t_timing, jacobian_ii(jacobian),
                       jacobian_cycles(jacobian))
     jac = {p.name: p for p in jacobian}
-    phases = [Phase("hgc", False, (procs[0],), linear=True)]
+    phases = [Phase("hgc", False, (procs[0],), linear=True)] if zero else []
     for i, reduce in enumerate(procs[1:]):
         region = tuple(p for p in (jac.get(f"factor_{i}_jacobian"), reduce) if p is not None)
         phases.append(Phase(f"hgc_level{i}", True, region, linear=True))
@@ -937,8 +938,10 @@ def build(ctx) -> None:
         jac_cycles = jacobian_cycles(jacobian.processes)
         for i, unit_ops in hgc_operators(program, opts.hgc_lanes, jac_ii, jac_cycles):
             ctx.units.append(Unit(f"hgc_{i}", f"Hessian/gradient of block {i}", 1, unit_ops))
+        from fgc_backends.hls.units.lm_control import retire_step_test
         ctx.phases[at:at + 1] = [(slot, ph) for ph in hgc_phases(
-            program, ctx.les_timing, opts.hgc_lanes, jacobian.processes, ctx.timing)]
+            program, ctx.les_timing, opts.hgc_lanes, jacobian.processes, ctx.timing,
+            zero=not retire_step_test(program, opts))]
         for i, b in enumerate(program.blocks):  # the row stream (a row a word) and registers
             m, _, padded, _ = _block_shape(b)
             ctx.memories.append(Memory(f"gram_rows_{i}", m * padded, ops.word_bits, 1))

@@ -436,7 +436,8 @@ def build(ctx) -> None:
     ii, depth = retire_timing(program.variables, ops, ctx.sizes["MAX_F"],
                               opts.state_allocation)
     var_end = [j * ii + depth for j in range(len(program.variables))]
-    end = max(var_end[-1:] + [trial_end(loops, var_end)])
+    pos = trial_positions(program, ctx.tables) if trial_split(program, opts) else None
+    end = max(var_end[-1:] + [trial_end(loops, var_end, pos)])
     # (each datapath's cost-mode loop kept as a process of no cycles: trip 0, its II and
     # depth what trial_cost's loop for it starts from, cost_loops)
     idle = tuple(Process(p.name, p.unit, (replace(p.loops[0], trip=0),)) for p in cost)
@@ -447,6 +448,12 @@ def build(ctx) -> None:
     # the process's copy of the retired state, and the stream of retired variables
     ctx.memories.append(Memory("trial_state", sum(v.storage_dim for v in program.variables),
                                ops.word_bits, 1))
+    if any(lp.proc == 1 for lp in loops):  # trial_cost_b: its copies of the state and data
+        ctx.memories.append(Memory("trial_state_b", sum(v.storage_dim
+                                                        for v in program.variables),
+                                   ops.word_bits, 1))
+        ctx.memories.append(Memory("data_b", trial_b_data(program, loops, ctx.tables)[1],
+                                   ops.word_bits, TRIAL_DATA_BANKS))
 
 
 def _small_datapath(ctx, small: tuple[int, ...], jac: list, cost: list) -> None:
@@ -506,6 +513,7 @@ class TrialLoop:
     k: int
     ii: int
     depth: int
+    proc: int = 0  # 0: trial_cost; 1: trial_cost_b (split_trial_loops)
 
     @property
     def name(self) -> str:
@@ -560,12 +568,18 @@ def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: d
     return tuple(out)
 
 
-def trial_end(loops: tuple[TrialLoop, ...], var_end: list[int]) -> int:
+def trial_end(loops: tuple[TrialLoop, ...], var_end: list[int],
+              pos: dict[int, int] | None = None) -> int:
     """When trial_cost ends: its loops one after another, an entry its loop's II after the
     one before (a loop's first when the loop before has drained), and no earlier than the
     end of the retire iteration that sends the last variable it takes (``var_end``: per
     retired variable, in order, when its words are in the stream); it ends its depth after
-    its last entry (fgc_cycles.h's outer group, its third process)."""
+    its last entry (fgc_cycles.h's outer group, its third process). Split loops
+    (:func:`split_trial_loops`, ``pos``: a variable's position in the retire order): each
+    process so, side by side; the later end."""
+    if pos is not None:
+        return max(_process_end([lp for lp in loops if lp.proc == q], var_end, pos)
+                   for q in (0, 1))
     free, taken = 0, 0
     for lp in loops:
         issue = None
@@ -577,6 +591,53 @@ def trial_end(loops: tuple[TrialLoop, ...], var_end: list[int]) -> int:
             issue = at
             free = at + lp.depth
     return free
+
+
+def _process_end(loops: list[TrialLoop], var_end: list[int], pos: dict[int, int]) -> int:
+    """One trial-cost process's end (:func:`trial_end`), a variable it takes ready when the
+    retire iteration at its position ``pos`` ends."""
+    free = 0
+    for lp in loops:
+        issue = None
+        for _, taking in lp.entries:
+            at = free if issue is None else issue + lp.ii
+            if taking:
+                at = max(at, var_end[max(pos[v] for v in taking)])
+            issue = at
+            free = at + lp.depth
+    return free
+
+
+def split_trial_loops(program, retire_vars, costs: dict, max_storage: int,
+                      accesses: dict) -> tuple[TrialLoop, ...]:
+    """trial_cost in two processes (the column design's LM, units/lm_control.py's
+    retire_step_test): ``trial_cost`` runs the datapath with the most work (instances x II),
+    ``trial_cost_b`` the others one after another, each fed by a stream of its own
+    (accel.cpp.jinja's TRIAL_SEND: the retire sends a variable to the processes whose
+    instances read it, in retire order), so the small loops, whose variables the chain's leaves
+    hold and the retire sends last, run beside the big loop's last instances instead of after
+    them. Each process's loops as :func:`trial_loops` on the variables it is sent; the second
+    reads its instances' data from ``DATA_B``, its own copy of their lines (:func:`trial_b_data`:
+    no memory is read by two processes of the region). Not split where a later datapath is the
+    shared small one (it reads DATA_BUF)."""
+    order = sorted(costs, key=lambda c: (-len(costs[c][0]) * costs[c][1],
+                                         -1 if c == "small" else c))
+    if "small" in order[1:]:  # (the shared small datapath reads DATA_BUF: not split)
+        return trial_loops(program, retire_vars, costs, max_storage, accesses)
+    out: list[TrialLoop] = []
+    for q, keys in enumerate((order[:1], order[1:])):
+        if not keys:
+            continue
+        needed = {i for c in keys for f in costs[c][0] for i in _factor_vars(program, f)}
+        mine = [v for v in retire_vars if v in needed]
+        out += [replace(lp, proc=q) for lp in trial_loops(
+            program, mine, {c: costs[c] for c in keys}, max_storage, accesses)]
+    return tuple(out)
+
+
+def _factor_vars(program, f: int) -> list[int]:
+    index = {v.key: i for i, v in enumerate(program.variables)}
+    return [index[k] for k in program.factors[f].keys]
 
 
 def cost_loops(processes) -> dict:
@@ -637,8 +698,11 @@ def keep_up_ii(ctx, allocations, small) -> dict[int, int]:
         return slow
     _, _, var_end = column_retire(ctx)
 
+    split = trial_split(program, opts)
+    pos = trial_positions(program, ctx.tables) if split else None
+
     def end(trial) -> int:
-        return trial_end(trial_plan(program, blocks, trial, ctx.tables), var_end)
+        return trial_end(trial_plan(program, blocks, trial, ctx.tables, split), var_end, pos)
 
     target = end(loops)
     for i in sorted(slow, key=lambda i: (-loops[i].trip * loops[i].ii, i)):
@@ -677,9 +741,11 @@ def trial_data_ii(bc) -> int:
                             / (2 * TRIAL_DATA_BANKS)))
 
 
-def trial_plan(program, blocks, loops: dict, tables: dict) -> tuple[TrialLoop, ...]:
+def trial_plan(program, blocks, loops: dict, tables: dict,
+               split: bool = False) -> tuple[TrialLoop, ...]:
     """trial_cost's loops for ``program`` (``blocks``: its block contexts; ``loops``: each
-    datapath's cost-mode loop, :func:`cost_loops`; ``tables``: the emitted tables)."""
+    datapath's cost-mode loop, :func:`cost_loops`; ``tables``: the emitted tables); ``split``:
+    in two processes (:func:`split_trial_loops`)."""
     from fgc_backends.hls.units.backsub import retire_solved
     from fgc_backends.hls.units.state_update import retire_order
     variables, _ = retire_order(program, retire_solved(tables))
@@ -689,11 +755,39 @@ def trial_plan(program, blocks, loops: dict, tables: dict) -> tuple[TrialLoop, .
         members = small if key == "small" else (key,)
         costs[key] = ([f for i in members for f in blocks[i].instances], loop.ii, loop.depth)
         accesses[key] = sum(blocks[i].n_x_in for i in members)
-    return trial_loops(program, variables, costs,
-                       max(v.storage_dim for v in program.variables), accesses)
+    return (split_trial_loops if split else trial_loops)(
+        program, variables, costs, max(v.storage_dim for v in program.variables), accesses)
+
+
+def trial_b_data(program, loops, tables: dict) -> tuple[int, int]:
+    """(first word, words) of ``DATA_B``: DATA_BUF's words from the even word at or below the
+    first line of trial_cost_b's instances to the end of its last (the top's data copy writes
+    them there too); (0, 0) without a second process."""
+    off = tables["FACTOR_DATA_OFF"]
+    fs = [f for lp in loops if lp.proc == 1 for f, _ in lp.entries if f >= 0]
+    if not fs:
+        return 0, 0
+    lo = min(off[f] for f in fs) & ~1
+    return lo, max(off[f + 1] for f in fs) - lo
+
+
+def trial_positions(program, tables: dict) -> dict[int, int]:
+    """Each variable's position in the retire order (back_substitute's RETIRE_VARS)."""
+    from fgc_backends.hls.units.backsub import retire_solved
+    from fgc_backends.hls.units.state_update import retire_order
+    variables, _ = retire_order(program, retire_solved(tables))
+    return {v: i for i, v in enumerate(variables)}
+
+
+def trial_split(program, opts) -> bool:
+    """Whether trial_cost runs in two processes (:func:`split_trial_loops`): the column
+    design's LM (units/lm_control.py's retire_step_test)."""
+    from fgc_backends.hls.units.lm_control import retire_step_test
+    return retire_step_test(program, opts)
 
 
 def trial_state(ctx) -> tuple[TrialLoop, ...]:
     """trial_cost's loops for the plan being built (``ctx``), from the cost-mode loops the
     datapath build left in ``ctx.shared["cost_loops"]``."""
-    return trial_plan(ctx.program, ctx.blocks, ctx.shared["cost_loops"], ctx.tables)
+    return trial_plan(ctx.program, ctx.blocks, ctx.shared["cost_loops"], ctx.tables,
+                      trial_split(ctx.program, ctx.opts))

@@ -11,27 +11,55 @@ import math
 
 from fgc_backends.cfamily.sparsity import TILE
 from fgc_backends.hls.plan.binding import BoundLoop, bound_unit
-from fgc_backends.hls.plan.loops import _block_shape, _ceil_log2, _ported, kernel_loop
+from fgc_backends.hls.plan.loops import _block_shape, _ceil_log2, _ported, kernel_dot, kernel_loop
 from fgc_backends.hls.plan.model import PORTS, Loop, Phase, Process
 from fgc_backends.hls.units.spec import UnitSpec
 
 
+def retire_step_test(program, opts) -> bool:
+    """Whether the emitted kernel forms LM's step test in back_substitute's state update
+    (accel.cpp.jinja's ``retire_test``): Cholesky with back-substitution by columns (never an
+    on-chip stream's design: those refuse the column width). Then |δ|², δᵀg, δ's finiteness
+    and the gradient's largest |entry| (tested after the solve) are summed by
+    ``backsub_retire_cols`` a variable an iteration at its II (the state update's
+    loop; its operators :func:`retire_test_loop`), |X| by the copies into X (the top's x_in, the
+    accepted step's), G zeroed by those copies (no zeroing pass before a linearisation): LM
+    control keeps the gradient's maximum, the step test's scalars and the decision, the copy."""
+    return (program.solver.linear == "cholesky" and opts.backsub_lanes == 4
+            and opts.hessian_storage == "frontal")
+
+
+def retire_test_loop(program, ii: int) -> BoundLoop:
+    """The step test's operators in the state update's loop (II ``ii``): per variable of the
+    widest tangent its δ_k² and δ_k g_k (a multiply each) and their two sums (a chain of adds
+    each, the running sums' add included), |g_k| against the variable's maximum and that against
+    the running one (compares), shared at that II as Vitis binds a pipelined loop."""
+    w = max(v.dim for v in program.variables)
+    return BoundLoop("retire_step_test", (("add", 2 * w), ("mul", 2 * w), ("compare", w + 1)),
+                     ii)
+
+
+ACCEPT_PORTS = 4  # the column design's accepted copy: X, X_TRIAL and G cyclic 2 (two ports each)
+
+
 def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
-             partials: int | None = None) -> tuple[int, int, int]:
+             partials: int | None = None, lanes: int = PORTS) -> tuple[int, int, int]:
     """(trip, II, depth) of a reduction of ``words`` terms two a cycle (fgc_lm_units.h's
     pair_ii / pair_depth: the memories' two ports): lane h of a pair into its own ``ii`` =
     latency interleaved partials (the dot-product rule, :func:`kernel_dot`, on a lane's trip),
     the 2k partials folded in a tree; ``kind`` the recurrence (``acc`` a sum: the multiply
     ahead; ``max`` a running maximum: the read and |·| ahead), ``extra`` the latency the loop
     adds around it (the step test's μ‖δ‖² after the folds); ``partials``: a lane's partials if not
-    the recurrence's latency (lm_iterate's maxima: as many as its sums)."""
+    the recurrence's latency (lm_iterate's maxima: as many as its sums); ``lanes``: words a
+    cycle (lm_accept_norm's four: :data:`ACCEPT_PORTS`)."""
     ii, depth = timing[kind]
-    trip = -(-words // PORTS)
+    trip = -(-words // lanes)
     k = max(1, min(trip, ii if partials is None else partials))
-    return trip, math.ceil(ii / k), extra + (depth - ii) + ii * (1 + _ceil_log2(2 * k))
+    return trip, math.ceil(ii / k), extra + (depth - ii) + ii * (1 + _ceil_log2(lanes * k))
 
 
-def lm_control_phases(n_t: int, n_x: int, timing: dict) -> tuple[Phase, ...]:
+def lm_control_phases(n_t: int, n_x: int, timing: dict,
+                      retire_test: bool = False) -> tuple[Phase, ...]:
     """LM control as emitted (optimize / try_steps) over ``n_t`` tangent and ``n_x`` storage
     words, in three phases by how often their loops run: ``lm_iteration`` once per
     linearisation (the gradient's largest entry and |x| in one loop, ``lm_iterate``: |x| is
@@ -43,13 +71,30 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict) -> tuple[Phase, ...]:
     maxima, the sums (|x|², ‖δ‖² and δᵀ(g + μδ)) into interleaved partial sums, two lanes
     each, PIPELINEd at II 1 (:func:`pair_dot`); the step test sums ‖δ‖² and δᵀg (two products
     a word) and adds μ‖δ‖² to the latter after the folds (δᵀ(g + μδ)), a multiply and an add
-    more in its depth."""
+    more in its depth. ``retire_test`` (:func:`retire_step_test`): the step test's sums come
+    from the state update, so ``iterate`` is the gradient's maximum alone, ``decide`` the step
+    test's scalars (μ‖δ‖², + δᵀg) and the decision, and ``accept`` copies x and sums |x|² four
+    words a cycle (the next linearisation's |X|; X, X_TRIAL and G cyclic 2: :data:`ACCEPT_PORTS`)
+    while it zeroes G four words a cycle for the next linearisation, one loop over the longer;
+    no ``lm_iteration``: the state update finds the gradient's largest
+    entry too and fgc_lm.h tests it after the solve (FGC_LM_GRADIENT_IN_SOLVE; the gradient's
+    own pass, ``lm_gradient_max``, runs only where no solve of a linearisation succeeded, before
+    LM gives up: once a run at most, not priced)."""
     tail = timing["acc"][1]  # after the folds: μ‖δ‖², then δᵀg + μ‖δ‖²
     # (the maxima as many as the sums: lm_iterate's one DEPENDENCE distance, PARTIALS)
     _, gii, gdepth = pair_dot(n_t, timing, kind="max", partials=timing["acc"][0])
     _, xii, xdepth = pair_dot(n_x, timing)
     trip = _ported(max(n_t, n_x))  # one loop over the longer of the two
     step = pair_dot(n_t, timing, extra=tail)
+    if retire_test:
+        # X, X_TRIAL and G cyclic 2 (ACCEPT_PORTS words a cycle): four lanes of partials
+        quad = -(-max(n_t, n_x) // ACCEPT_PORTS)
+        _, qii, qdepth = pair_dot(n_x, timing, lanes=ACCEPT_PORTS)
+        return (Phase("lm_control", False, (Process("decide", "lm_control", (
+                    Loop("step_scalars", 1, 1, tail),
+                    kernel_loop("decision", 1, "decision", timing))),)),
+                Phase("lm_accept", False, (Process("accept", "lm_control", (
+                    Loop("accept", quad, qii, qdepth),)),)))
     return (Phase("lm_iteration", False, (Process("iterate", "lm_control", (
                 Loop("gradient_x_norm", trip, max(gii, xii), max(gdepth, xdepth)),)),)),
             Phase("lm_control", False, (Process("decide", "lm_control", (
@@ -59,9 +104,16 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict) -> tuple[Phase, ...]:
                 kernel_loop("accept", _ported(n_x), "move", timing),)),)))
 
 
-def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict) -> Phase:
+def setup_phase(x_in: int, data_in: int, x_out: int, timing: dict, zero: int = 0) -> Phase:
     """The top's copies once per call: ``x_in`` state words and ``data_in`` data words in,
-    ``x_out`` state words out."""
+    ``x_out`` state words out. ``zero`` > 0 (:func:`retire_step_test`; ``zero`` the gradient's
+    words): lm_top_norm, whose x_in copy also sums |x|² into the adder latency's interleaved
+    partial sums (:func:`kernel_dot`) and whose data copy zeroes G (a loop over the longer)."""
+    if zero:
+        return Phase("setup", False, (Process("top", "lm_control", (
+            kernel_dot("x_in", x_in, timing),
+            kernel_loop("data_in", max(data_in, zero), "move", timing),
+            kernel_loop("x_out", x_out, "move", timing))),), per="call")
     return Phase("setup", False, (Process("top", "lm_control", (
         kernel_loop("x_in", x_in, "move", timing), kernel_loop("data_in", data_in, "move", timing),
         kernel_loop("x_out", x_out, "move", timing))),), per="call")
@@ -114,9 +166,20 @@ def build(ctx) -> None:
     # limit=1, each noise_<b> INLINE there): a row every widest padded + 3 cycles through its
     # products and moved's three adds, then the rows' terms (at II 3·TILE: one multiplier and
     # one adder), and the block types' running sums (one adder)
-    loops = [BoundLoop("gradient_x_norm", (("add", 2), ("mul", 2), ("compare", 2)), 1),
-             BoundLoop("step_test", (("add", 4), ("mul", 4)), 1),
-             BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
+    fused = retire_step_test(program, ctx.opts)
+    if fused:  # (the step test's sums: the state update's loop, units/backsub.py)
+        # the gradient's maximum (two compares a cycle), the accepted copy's |x|² (four
+        # multiply-adds a cycle; INLINE: its fold shares the decision's operators), lm_top_norm's
+        # x_in |x|² (a multiply-add a cycle) and its fold (its own function: one adder)
+        loops = [BoundLoop("gradient_max", (("compare", 2),), 1),
+                 BoundLoop("accept_norm", (("add", ACCEPT_PORTS), ("mul", ACCEPT_PORTS)), 1),
+                 BoundLoop("x_in_norm", (("add", 1), ("mul", 1)), 1),
+                 BoundLoop("x_in_fold", (("add", 1),), 0),
+                 BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
+    else:
+        loops = [BoundLoop("gradient_x_norm", (("add", 2), ("mul", 2), ("compare", 2)), 1),
+                 BoundLoop("step_test", (("add", 4), ("mul", 4)), 1),
+                 BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
     widest = max(_block_shape(b)[2] for b in program.blocks)
     loops += [BoundLoop("noise_rows", (("add", widest + 3), ("mul", widest + 1)), widest + 3),
               BoundLoop("noise_terms", (("add", 2 * TILE), ("mul", 3 * TILE)),
@@ -126,10 +189,11 @@ def build(ctx) -> None:
     loops.append(BoundLoop("noise_sum", (("add", len(program.blocks)),), 0))
     ctx.units.append(bound_unit("lm_control", "gain ratio, μ update, stopping rules, "
                                 "rounding noise", loops, table=ctx.ops))
-    for phase in lm_control_phases(n_t, n_x, timing):
+    for phase in lm_control_phases(n_t, n_x, timing, fused):
         ctx.add_phase("control", phase)
     # once per call: the top's copies of x and the data in and x out
-    ctx.add_phase("call", setup_phase(n_x, ctx.sizes["N_DATA"], n_x, timing))
+    ctx.add_phase("call", setup_phase(n_x, ctx.sizes["N_DATA"], n_x, timing,
+                                      n_t if fused else 0))
     # when a trial step does not lower the cost: the rounding-noise band from AB
     ctx.add_phase("rejection", Phase("rounding_noise", False,
                                      tuple(rounding_noise_loops(program, timing)),

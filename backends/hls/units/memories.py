@@ -44,9 +44,18 @@ def build(ctx) -> None:
     program, ops = ctx.program, ctx.ops
     n_x = sum(v.storage_dim for v in program.variables)
     n_t = sum(v.dim for v in program.variables)
-    ctx.memories.append(Memory("state", n_x, ops.word_bits, 1))  # X
-    ctx.memories.append(Memory("state_trial", n_x, ops.word_bits, 1))  # X_TRIAL
-    ctx.memories.append(Memory("gradient_delta", 2 * n_t, ops.word_bits, 2))  # G, DELTA
+    # the column design's LM: X, X_TRIAL and G cyclic 2 (units/lm_control.py's ACCEPT_PORTS:
+    # the accepted step's copy four words a cycle)
+    from fgc_backends.hls.units.lm_control import retire_step_test
+    if retire_step_test(program, ctx.opts):
+        ctx.memories.append(Memory("state", n_x, ops.word_bits, 2))  # X
+        ctx.memories.append(Memory("state_trial", n_x, ops.word_bits, 2))  # X_TRIAL
+        ctx.memories.append(Memory("gradient", n_t, ops.word_bits, 2))  # G
+        ctx.memories.append(Memory("delta", n_t, ops.word_bits, 1))  # DELTA
+    else:
+        ctx.memories.append(Memory("state", n_x, ops.word_bits, 1))  # X
+        ctx.memories.append(Memory("state_trial", n_x, ops.word_bits, 1))  # X_TRIAL
+        ctx.memories.append(Memory("gradient_delta", 2 * n_t, ops.word_bits, 2))  # G, DELTA
     # DATA_BUF: cyclic 2 where trial_cost reads it so (units/datapath.py's trial_banked)
     from fgc_backends.hls.units.datapath import TRIAL_DATA_BANKS, trial_banked
     banks = TRIAL_DATA_BANKS if trial_banked(program, ctx.opts) else 1

@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's by columns (the loader streaming COND to a process per end of the chain,
 // the state update fed by both):
-//   50 processes, 88 streams (cpe=20)
+//   51 processes, 89 streams (cpe=20)
 //   process cpe_feed
 //   process cpe_tap0
 //   process cpe0
@@ -61,6 +61,7 @@
 //   process backsub_end1
 //   process backsub_retire
 //   process trial_cost
+//   process trial_cost_b
 //   stream cpe_link0 depth=30: cpe_feed -> cpe_tap0
 //   stream cpe_link1 depth=30: cpe0 -> cpe_tap1
 //   stream cpe_link2 depth=30: cpe1 -> cpe_tap2
@@ -149,12 +150,14 @@
 //   stream backsub_dx1 depth=24: backsub_end1 -> backsub_retire
 //   stream backsub_xroot depth=30: backsub_end0 -> backsub_end1
 //   stream trial_tx depth=24: backsub_retire -> trial_cost
+//   stream trial_tx2 depth=24: backsub_retire -> trial_cost_b
 #include "imu_window.h"
 
 #include "hls_stream.h"
 #include "fgc_cpe.h"
 #include "fgc_backsub.h"
 #define FGC_LM_COST_IN_LINEARIZE  // fgc_lm.h: the first linearisation gives the cost at X (linearized_cost)
+#define FGC_LM_GRADIENT_IN_SOLVE  // fgc_lm.h: the small-gradient test after the solve (its state update's maximum)
 #define FGC_LM_LINEARIZE_SOLVE  // fgc_lm.h: linearize_x and solve_at share linearize_solve's one instance
 #include "fgc_lm.h"
 #include "fgc_lm_units.h"
@@ -366,6 +369,10 @@ const int BLOCK3_TILE_ROWS[10] = {
 T X[N_X];          // current estimate (storage)
 T X_TRIAL[N_X];    // x (+) delta
 T DATA_BUF[N_DATA];  // the factor data, copied in once per call
+// trial_cost_b's copy of DATA_BUF's words TRIAL_B_LO ... (its instances' lines; the top's data
+// copy writes both): back_substitute's fourth process reads it, DATA_BUF the third
+const int TRIAL_B_LO = 1364, TRIAL_B_WORDS = 31;
+T DATA_B[TRIAL_B_WORDS];
 L AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
 T G[N_TANGENT];    // gradient A^T b
 T LIN_SQ = T(0);  // sum of the instances' b^T b (their Grams' last diagonal entry): twice the cost at the linearisation point
@@ -2772,14 +2779,15 @@ void gather_1(const T x[N_X], int f, T in[12], T dat[13]) {
     for (int i = 0; i < 1; ++i) dat[12 + i] = DATA_BUF[line + 12 + i];
 }
 
-void gather_trial_1(const T x[N_X], int f, T in[12], T dat[13]) {
+// gather_trial_b_1: gather_trial_'s rule on DATA_B (trial_cost_b's copy of its lines from TRIAL_B_LO, even)
+void gather_trial_b_1(const T x[N_X], int f, T in[12], T dat[13]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
     for (int i = 0; i < 12; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
-    T w[14];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+    T w[14];  // DATA_B[-TRIAL_B_LO + 2 h + 0 ...]: the line's words from 0 at w[p ...]
 #pragma HLS ARRAY_PARTITION variable=w complete
-    for (int i = 0; i < 13; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
-    w[13] = p ? DATA_BUF[2 * h + 13] : T(0);  // an odd line's last word
+    for (int i = 0; i < 13; ++i) w[i] = DATA_B[-TRIAL_B_LO + 2 * h + 0 + i];
+    w[13] = p ? DATA_B[-TRIAL_B_LO + 2 * h + 13] : T(0);  // an odd line's last word
     for (int i = 0; i < 12; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
     for (int i = 0; i < 1; ++i) dat[12 + i] = p ? w[13 + i] : w[12 + i];
 }
@@ -2898,14 +2906,15 @@ void gather_2(const T x[N_X], int f, T in[3], T dat[4]) {
     for (int i = 0; i < 1; ++i) dat[3 + i] = DATA_BUF[line + 3 + i];
 }
 
-void gather_trial_2(const T x[N_X], int f, T in[3], T dat[4]) {
+// gather_trial_b_2: gather_trial_'s rule on DATA_B (trial_cost_b's copy of its lines from TRIAL_B_LO, even)
+void gather_trial_b_2(const T x[N_X], int f, T in[3], T dat[4]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
     for (int i = 0; i < 3; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
-    T w[5];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+    T w[5];  // DATA_B[-TRIAL_B_LO + 2 h + 0 ...]: the line's words from 0 at w[p ...]
 #pragma HLS ARRAY_PARTITION variable=w complete
-    for (int i = 0; i < 4; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
-    w[4] = p ? DATA_BUF[2 * h + 4] : T(0);  // an odd line's last word
+    for (int i = 0; i < 4; ++i) w[i] = DATA_B[-TRIAL_B_LO + 2 * h + 0 + i];
+    w[4] = p ? DATA_B[-TRIAL_B_LO + 2 * h + 4] : T(0);  // an odd line's last word
     for (int i = 0; i < 3; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
     for (int i = 0; i < 1; ++i) dat[3 + i] = p ? w[4 + i] : w[3 + i];
 }
@@ -3022,14 +3031,15 @@ void gather_3(const T x[N_X], int f, T in[6], T dat[7]) {
     for (int i = 0; i < 1; ++i) dat[6 + i] = DATA_BUF[line + 6 + i];
 }
 
-void gather_trial_3(const T x[N_X], int f, T in[6], T dat[7]) {
+// gather_trial_b_3: gather_trial_'s rule on DATA_B (trial_cost_b's copy of its lines from TRIAL_B_LO, even)
+void gather_trial_b_3(const T x[N_X], int f, T in[6], T dat[7]) {
     const int vb = FACTOR_VAR_BEGIN[f];
     const int line = FACTOR_DATA_OFF[f], h = line >> 1, p = line & 1;
     for (int i = 0; i < 6; ++i) in[0 + i] = x[VAR_X_OFF[FACTOR_VARS[vb + 0]] + i];
-    T w[8];  // DATA_BUF[2 h + 0 ...]: the line's words from 0 at w[p ...]
+    T w[8];  // DATA_B[-TRIAL_B_LO + 2 h + 0 ...]: the line's words from 0 at w[p ...]
 #pragma HLS ARRAY_PARTITION variable=w complete
-    for (int i = 0; i < 7; ++i) w[i] = DATA_BUF[2 * h + 0 + i];
-    w[7] = p ? DATA_BUF[2 * h + 7] : T(0);  // an odd line's last word
+    for (int i = 0; i < 7; ++i) w[i] = DATA_B[-TRIAL_B_LO + 2 * h + 0 + i];
+    w[7] = p ? DATA_B[-TRIAL_B_LO + 2 * h + 7] : T(0);  // an odd line's last word
     for (int i = 0; i < 6; ++i) dat[0 + i] = p ? w[1 + i] : w[0 + i];
     for (int i = 0; i < 1; ++i) dat[6 + i] = p ? w[7 + i] : w[6 + i];
 }
@@ -3142,13 +3152,8 @@ T noise_3(T noise, T ab[NOISE_AB]) {
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
     FGC_PHASE("hgc");
-    for (int i = 0; i < N_TANGENT; i += PORTS) {  // PORTS words a cycle (G's two ports)
-#pragma HLS PIPELINE II=1
-        for (int h = 0; h < PORTS; ++h) {
-            if (i + h < N_TANGENT) G[i + h] = T(0);
-        }
-    }
-    FGC_CYCLES("gradient", 0, "zero", (N_TANGENT + PORTS - 1) / PORTS, 1, 1);
+    // G is zero here: the top's data copy and the accepted step's copy zero it (fgc_lm_units.h's
+    // lm_top_norm, lm_accept_norm), and LM linearises only at the start and after an accepted step
     LIN_SQ = T(0);  // (the HGC adds every instance's b^T b, the block beside the elimination's too)
     bool finite = true;
     bool ok1 = true;
@@ -3204,6 +3209,11 @@ T rounding_noise_all(const T x[N_X]) {
 const int MAX_STORAGE = 12;  // the widest variable's storage words
 struct TrialVar { T word[MAX_STORAGE]; };  // a retired variable's storage words
 T TRIAL_COST = T(0);  // the cost of the variables back_substitute last sent
+// LM's step test, formed by back_substitute's state update (fgc_backsub.h's backsub_retire_cols)
+// as each variable's delta arrives: |delta|^2, delta^T g, every entry of delta finite, and the
+// gradient's largest |entry| (the small-gradient test: fgc_lm.h's FGC_LM_GRADIENT_IN_SOLVE)
+T TRIAL_DD = T(0), TRIAL_DG = T(0), TRIAL_GMAX = T(0);
+bool TRIAL_FINITE = true;
 const int TRIAL_F_0[7] = {  // per entry of cost loop 0: its instance (-1: none)
     3, 2, 4, 1, 5, 0, 6,
 };
@@ -3217,16 +3227,53 @@ const int TRIAL_X1_0[42] = {  // and where it ends (x0 = x1: none)
     0, 0, 33, 36, 42, 0, 0, 0, 138, 141, 147, 0, 0, 0, 12, 15,
     21, 0, 0, 0, 159, 162, 168, 0, 0, 0,
 };
+const int TRIAL_AT_0[42] = {  // its place in RETIRE_VARS (-1: none; the counting build's marks)
+    0, 1, 2, 3, 4, 5, 6, 7, 8, -1, -1, -1, 9, 10, 11, -1,
+    -1, -1, 12, 13, 14, -1, -1, -1, 15, 16, 17, -1, -1, -1, 18, 19,
+    20, -1, -1, -1, 21, 22, 23, -1, -1, -1,
+};
 const int TRIAL_F_1[1] = {  // per entry of cost loop 1: its instance (-1: none)
     7,
+};
+const int TRIAL_X0_1[1] = {  // per entry, 1 a row: where each variable it takes goes in x
+    0,
+};
+const int TRIAL_X1_1[1] = {  // and where it ends (x0 = x1: none)
+    12,
+};
+const int TRIAL_AT_1[1] = {  // its place in RETIRE_VARS (-1: none; the counting build's marks)
+    18,
 };
 const int TRIAL_F_2[1] = {  // per entry of cost loop 2: its instance (-1: none)
     8,
 };
+const int TRIAL_X0_2[1] = {  // per entry, 1 a row: where each variable it takes goes in x
+    12,
+};
+const int TRIAL_X1_2[1] = {  // and where it ends (x0 = x1: none)
+    15,
+};
+const int TRIAL_AT_2[1] = {  // its place in RETIRE_VARS (-1: none; the counting build's marks)
+    19,
+};
 const int TRIAL_F_3[1] = {  // per entry of cost loop 3: its instance (-1: none)
     9,
 };
-void trial_cost(hls::stream<TrialVar>& tx) {
+const int TRIAL_X0_3[1] = {  // per entry, 1 a row: where each variable it takes goes in x
+    15,
+};
+const int TRIAL_X1_3[1] = {  // and where it ends (x0 = x1: none)
+    21,
+};
+const int TRIAL_AT_3[1] = {  // its place in RETIRE_VARS (-1: none; the counting build's marks)
+    20,
+};
+// trial_cost_b: back_substitute's fourth process (units/datapath.py's split_trial_loops), the
+// datapaths after the one with the most work, fed their variables by a stream of their own
+// (tx2: TRIAL_SEND), their instances' data lines from DATA_B, its own copy of DATA_BUF's words
+// TRIAL_B_LO ... (the top's data copy writes both): no memory read by two processes
+T TRIAL_COST_B = T(0);  // trial_cost_b's part of the cost
+void trial_cost_a(hls::stream<TrialVar>& tx) {
 #pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=2
     FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
     T x[N_X];  // the variables taken so far
@@ -3237,7 +3284,7 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         for (int j = 0; j < 6; ++j) {  // the variables retired since, in order
             const int x0 = TRIAL_X0_0[e * 6 + j], x1 = TRIAL_X1_0[e * 6 + j];
             if (x0 < x1) {
-                FGC_OUTER_ABSORB();  // csim cycle counting: no earlier than it was sent
+                FGC_OUTER_ABSORB_AT(TRIAL_AT_0[e * 6 + j]);  // csim cycle counting: no earlier than it was sent
                 const TrialVar t = tx.read();
                 for (int w = 0; w < MAX_STORAGE; ++w) {
                     if (x0 + w < x1) x[x0 + w] = t.word[w];
@@ -3255,49 +3302,94 @@ void trial_cost(hls::stream<TrialVar>& tx) {
         }
         FGC_CYCLES("trial_cost", 0, "cost_0", 1, 72, 598);
     }
+    TRIAL_COST = total;
+}
+
+void trial_cost_b(hls::stream<TrialVar>& tx2) {
+#pragma HLS ARRAY_PARTITION variable=DATA_B cyclic factor=2
+    FGC_OUTER_BRANCH();  // csim cycle counting only: its fourth (trial_cost's second)
+    T x[N_X];  // the variables taken so far
+    T total = T(0);
     // block 1 (PriorFactorPose3): 1 entries, one every II=48 cycles (the plan's)
     for (int e = 0; e < 1; ++e) {
 #pragma HLS PIPELINE II=48
+        for (int j = 0; j < 1; ++j) {  // the variables retired since, in order
+            const int x0 = TRIAL_X0_1[e * 1 + j], x1 = TRIAL_X1_1[e * 1 + j];
+            if (x0 < x1) {
+                FGC_OUTER_ABSORB_AT(TRIAL_AT_1[e * 1 + j]);  // csim cycle counting: no earlier than it was sent
+                const TrialVar t = tx2.read();
+                for (int w = 0; w < MAX_STORAGE; ++w) {
+                    if (x0 + w < x1) x[x0 + w] = t.word[w];
+                }
+            }
+        }
         const int f = TRIAL_F_1[e];
         if (f >= 0) {
-        T in[12], dat[13], half[1];
-        gather_trial_1(x, f, in, dat);
-        factor_cost_1(in, dat, half);
+        T in[12], dat[13], half_b[1];
+        gather_trial_b_1(x, f, in, dat);
+        factor_cost_1(in, dat, half_b);
         T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
+        cost += half_b[0];  // no robust loss on this member (the Program's flag)
             total += cost;
         }
-        FGC_CYCLES("trial_cost", 0, "cost_1", 1, 48, 377);
+        FGC_CYCLES("trial_cost", 0, "cost_1", 1, 48, 379);
     }
-    // block 2 (PriorFactorVector3): 1 entries, one every II=4 cycles (the plan's)
+    // block 2 (PriorFactorVector3): 1 entries, one every II=8 cycles (the plan's)
     for (int e = 0; e < 1; ++e) {
-#pragma HLS PIPELINE II=4
+#pragma HLS PIPELINE II=8
+        for (int j = 0; j < 1; ++j) {  // the variables retired since, in order
+            const int x0 = TRIAL_X0_2[e * 1 + j], x1 = TRIAL_X1_2[e * 1 + j];
+            if (x0 < x1) {
+                FGC_OUTER_ABSORB_AT(TRIAL_AT_2[e * 1 + j]);  // csim cycle counting: no earlier than it was sent
+                const TrialVar t = tx2.read();
+                for (int w = 0; w < MAX_STORAGE; ++w) {
+                    if (x0 + w < x1) x[x0 + w] = t.word[w];
+                }
+            }
+        }
         const int f = TRIAL_F_2[e];
         if (f >= 0) {
-        T in[3], dat[4], half[1];
-        gather_trial_2(x, f, in, dat);
-        factor_cost_2(in, dat, half);
+        T in[3], dat[4], half_b[1];
+        gather_trial_b_2(x, f, in, dat);
+        factor_cost_2(in, dat, half_b);
         T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
+        cost += half_b[0];  // no robust loss on this member (the Program's flag)
             total += cost;
         }
-        FGC_CYCLES("trial_cost", 0, "cost_2", 1, 4, 18);
+        FGC_CYCLES("trial_cost", 0, "cost_2", 1, 8, 20);
     }
-    // block 3 (PriorFactorImuBias): 1 entries, one every II=4 cycles (the plan's)
+    // block 3 (PriorFactorImuBias): 1 entries, one every II=9 cycles (the plan's)
     for (int e = 0; e < 1; ++e) {
-#pragma HLS PIPELINE II=4
+#pragma HLS PIPELINE II=9
+        for (int j = 0; j < 1; ++j) {  // the variables retired since, in order
+            const int x0 = TRIAL_X0_3[e * 1 + j], x1 = TRIAL_X1_3[e * 1 + j];
+            if (x0 < x1) {
+                FGC_OUTER_ABSORB_AT(TRIAL_AT_3[e * 1 + j]);  // csim cycle counting: no earlier than it was sent
+                const TrialVar t = tx2.read();
+                for (int w = 0; w < MAX_STORAGE; ++w) {
+                    if (x0 + w < x1) x[x0 + w] = t.word[w];
+                }
+            }
+        }
         const int f = TRIAL_F_3[e];
         if (f >= 0) {
-        T in[6], dat[7], half[1];
-        gather_trial_3(x, f, in, dat);
-        factor_cost_3(in, dat, half);
+        T in[6], dat[7], half_b[1];
+        gather_trial_b_3(x, f, in, dat);
+        factor_cost_3(in, dat, half_b);
         T cost = T(0);
-        cost += half[0];  // no robust loss on this member (the Program's flag)
+        cost += half_b[0];  // no robust loss on this member (the Program's flag)
             total += cost;
         }
-        FGC_CYCLES("trial_cost", 0, "cost_3", 1, 4, 22);
+        FGC_CYCLES("trial_cost", 0, "cost_3", 1, 9, 24);
     }
-    TRIAL_COST = total;
+    TRIAL_COST_B = total;
+}
+
+// the cost at X_TRIAL (back_substitute's third process): trial_cost_a beside trial_cost_b
+void trial_cost(hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2) {
+#pragma HLS DATAFLOW
+    trial_cost_a(tx);
+    trial_cost_b(tx2);
 }
 
 // ---- state update: retraction x (+) delta, one datapath per variable type; the ALLOCATION
@@ -3391,9 +3483,17 @@ const int RETIRE_STEP[24] = {  // per entry of RETIRE_VARS: its step if it is th
     6, -1, -1, -1, -1, -1, 4, -1, -1, 5, -1, -1, 2, -1, -1, 3,
     -1, -1, 0, -1, -1, 1, -1, -1,
 };
+const int TRIAL_SEND[24] = {  // per variable the trial-cost processes it goes to (bit 0: trial_cost, 1: trial_cost_b)
+    3, 3, 3, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
+    1, 1, 1, 1, 1, 1, 1, 1,
+};
 // (at_x: no solve ran, X's words go to trial_cost for the cost at X). Its words go on to
 // trial_cost (back_substitute's third process) as one stream word.
-void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<TrialVar>& tx) {
+// With LM's step test here (retire_test): dd, dg, gm, fin = the variable's delta^T delta,
+// delta^T g, largest |g| and its delta finite (summed, maximised over the variables by the
+// retire; at_x: delta taken as zero).
+void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<TrialVar>& tx,
+                      hls::stream<TrialVar>& tx2, T& dd, T& dg, T& gm, bool& fin) {
     TrialVar out;
     for (int k = 0; k < MAX_STORAGE; ++k) out.word[k] = T(0);
     if (VAR_KIND[v] == 0) {
@@ -3401,6 +3501,19 @@ void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<Tr
         for (int k = 0; k < 12; ++k) xv[k] = X[VAR_X_OFF[v] + k];
         for (int k = 0; k < 6; ++k) dv[k] = at_x ? T(0) : T(delta[VAR_T_OFF[v] + k]);
         retract_0(xv, dv, ov);
+        T sd = T(0), sg = T(0), sm = T(0);
+        bool ok = true;
+        for (int k = 0; k < 6; ++k) {  // the step test's terms of v
+            const T gk = G[VAR_T_OFF[v] + k];
+            ok = ok && fgc_isfinite(dv[k]);
+            sd += dv[k] * dv[k];
+            sg += dv[k] * gk;
+            sm = fgc_abs(gk) > sm ? fgc_abs(gk) : sm;
+        }
+        dd = sd;
+        dg = sg;
+        gm = sm;
+        fin = ok;
         for (int k = 0; k < 12; ++k) {
             const T o = at_x ? xv[k] : ov[k];
             X_TRIAL[VAR_X_OFF[v] + k] = o;
@@ -3411,6 +3524,19 @@ void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<Tr
         for (int k = 0; k < 3; ++k) xv[k] = X[VAR_X_OFF[v] + k];
         for (int k = 0; k < 3; ++k) dv[k] = at_x ? T(0) : T(delta[VAR_T_OFF[v] + k]);
         retract_1(xv, dv, ov);
+        T sd = T(0), sg = T(0), sm = T(0);
+        bool ok = true;
+        for (int k = 0; k < 3; ++k) {  // the step test's terms of v
+            const T gk = G[VAR_T_OFF[v] + k];
+            ok = ok && fgc_isfinite(dv[k]);
+            sd += dv[k] * dv[k];
+            sg += dv[k] * gk;
+            sm = fgc_abs(gk) > sm ? fgc_abs(gk) : sm;
+        }
+        dd = sd;
+        dg = sg;
+        gm = sm;
+        fin = ok;
         for (int k = 0; k < 3; ++k) {
             const T o = at_x ? xv[k] : ov[k];
             X_TRIAL[VAR_X_OFF[v] + k] = o;
@@ -3421,13 +3547,27 @@ void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<Tr
         for (int k = 0; k < 6; ++k) xv[k] = X[VAR_X_OFF[v] + k];
         for (int k = 0; k < 6; ++k) dv[k] = at_x ? T(0) : T(delta[VAR_T_OFF[v] + k]);
         retract_2(xv, dv, ov);
+        T sd = T(0), sg = T(0), sm = T(0);
+        bool ok = true;
+        for (int k = 0; k < 6; ++k) {  // the step test's terms of v
+            const T gk = G[VAR_T_OFF[v] + k];
+            ok = ok && fgc_isfinite(dv[k]);
+            sd += dv[k] * dv[k];
+            sg += dv[k] * gk;
+            sm = fgc_abs(gk) > sm ? fgc_abs(gk) : sm;
+        }
+        dd = sd;
+        dg = sg;
+        gm = sm;
+        fin = ok;
         for (int k = 0; k < 6; ++k) {
             const T o = at_x ? xv[k] : ov[k];
             X_TRIAL[VAR_X_OFF[v] + k] = o;
             out.word[k] = o;
         }
     }
-    tx.write(out);
+    if (TRIAL_SEND[v] & 1) tx.write(out);  // to the cost processes whose instances read v
+    if (TRIAL_SEND[v] & 2) tx2.write(out);
 }
 
 // ---- the linear solver's units: fixed headers (include/fgc_qr.h, fgc_cpe.h, fgc_backsub.h)
@@ -3471,9 +3611,17 @@ struct LesConfig {
     // back_substitute's state update (fgc_backsub.h's backsub_retire): a variable an iteration
     static const int N_TANGENT = ::fgc::N_TANGENT, N_VARIABLES = ::fgc::N_VARIABLES;
     static const int RETIRE_II = 22, RETIRE_DEPTH = 218;
+    typedef ::fgc::T TestT;  // the step test's sums (LM's scalar)
     static void retract_variable(int v, const T delta[N_TANGENT], bool at_x,
-                                 hls::stream<::fgc::TrialVar>& tx) {
-        ::fgc::retract_variable(v, delta, at_x, tx);
+                                 hls::stream<::fgc::TrialVar>& tx, hls::stream<::fgc::TrialVar>& tx2,
+                                 TestT& dd, TestT& dg, TestT& gm, bool& fin) {
+        ::fgc::retract_variable(v, delta, at_x, tx, tx2, dd, dg, gm, fin);
+    }
+    static void retire_test(TestT dd, TestT dg, TestT gm, bool fin) {  // to LM's step test
+        ::fgc::TRIAL_DD = dd;
+        ::fgc::TRIAL_DG = dg;
+        ::fgc::TRIAL_GMAX = gm;
+        ::fgc::TRIAL_FINITE = fin;
     }
     // the HGC beside the elimination (fgc_eliminate.h's cholesky_eliminate_beside): block 0's
     // Grams come as a stream, a step's put into a stage lane by gram_source a pass before the
@@ -3633,6 +3781,10 @@ const int BS_XOFF[BS_SLOTS] = {-1, -1, -1, 15, 0, 0, 0, 0, -1};
 // HlsConfig backsub_lanes = 4: back-substitution by columns, one process per end of the chain
 // (fgc_backsub.h's backsub_loader, backsub_end0 / backsub_end1; units/backsub.py's column_*)
 #define FGC_BS_COLUMNS 1
+// the state update forms LM's step test (backsub_retire_cols: LesConfig's retire_test)
+#define FGC_BS_STEP_TEST 1
+// the cost at X_TRIAL in two processes (trial_cost, trial_cost_b: units/datapath.py's split_trial_loops)
+#define FGC_BS_TRIAL_B 1
 const int BSC_SEQ[7] = {  // per end (from BSC_SEQ_BEGIN[e]) its steps, the root first on end 0: the loader streams their groups in this order
     6, 4, 2, 0, 5, 3, 1,
 };
@@ -3722,10 +3874,14 @@ bool solve(T mu, bool at_x) {
     return true;
 }
 
+struct LmConfig;
+// LM's accepted step (fgc_lm_units.h's lm_accept_norm, four words a cycle): X, X_TRIAL and G
+// cyclic 2, two banks of two ports each (units/lm_control.py's ACCEPT_PORTS)
+void accept_copy();
 // ---- LM control (paper B): the rules in fgc_lm.h (shared with the native solver), its
 // reductions in fgc_lm_units.h (interleaved partial sums at II 1); here the kernel's constants
 // and hooks. fgc_lm::optimize<LmConfig>: GN/LM iterations from X.
-T LM_X_NORM = T(0);  // |X| at the linearisation point: gradient_max() finds it, x_norm() reads it
+T LM_XX = T(0);  // |X|^2: the top's x copy and the accepted step's copy form it
 struct LmConfig {
     typedef ::fgc::T T;
     static const int MAX_ITERATIONS = ::fgc::MAX_ITERATIONS, MAX_TRIES = ::fgc::MAX_TRIES;
@@ -3759,7 +3915,7 @@ struct LmConfig {
         #pragma HLS INLINE
         FGC_EVENT("cost");
         solve(T(0), true);  // no solve: X's variables to trial_cost
-        return TRIAL_COST;
+        return TRIAL_COST + TRIAL_COST_B;
     }
     // INLINE: the on-chip stream's kernels share linearize_all / eliminate_all between LM and
     // their own calls after it (fgc_stream.h's ALLOCATION, LM's body inlined there); the HGC
@@ -3774,7 +3930,7 @@ struct LmConfig {
     }
     static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
     static T cost_trial() {
-        return TRIAL_COST;  // trial_cost's, beside the solve's back-substitution
+        return TRIAL_COST + TRIAL_COST_B;  // trial_cost's, beside the solve's back-substitution
     }
     static T noise_x() { return rounding_noise_all(X); }
     static const int N_X = ::fgc::N_X, N_TANGENT = ::fgc::N_TANGENT;
@@ -3783,22 +3939,37 @@ struct LmConfig {
     static const int MOVE_II = 1, MOVE_DEPTH = 2;
     static const int N_DATA = ::fgc::N_DATA;
     static const int DECISION_II = 1, DECISION_DEPTH = 30;
-    static T x_norm() { return LM_X_NORM; }  // |X|, found beside the gradient's maximum
+    static T x_norm() { return root(LM_XX); }  // |X|: the copies into X sum |X|^2
     static T linearized_cost() { return T(0.5) * LIN_SQ; }  // the cost at X, from the HGC's b^T b
+    // the step test's sums from back_substitute's state update, |X| from the copies into X
     static bool step_test(bool solved, T mu, T out[2]) {
 #pragma HLS INLINE
-        return fgc_units::lm_step_test<LmConfig>(solved, mu, DELTA, G, out);
+        return fgc_units::lm_step_sums<LmConfig>(solved, mu, TRIAL_DD, TRIAL_DG, TRIAL_FINITE, out);
     }
-    static T gradient_max() {  // once per linearisation; |X| with it for x_norm (same X)
+    static T solved_gradient_max() { return TRIAL_GMAX; }  // the solve's state update's
+    static T gradient_max() {  // no solve of the linearisation succeeded: before LM gives up
 #pragma HLS INLINE
-        T out[2];
-        fgc_units::lm_iterate<LmConfig>(G, X, out);
-        LM_X_NORM = out[1];
-        return out[0];
+        return fgc_units::lm_gradient_max<LmConfig>(G);
     }
-    static void accept_trial() { fgc_units::lm_accept<LmConfig>(X, X_TRIAL); }
+    static void data_word(int i, T v) {  // trial_cost_b's copy of its lines (DATA_B)
+#pragma HLS INLINE
+        const int j = i - TRIAL_B_LO;
+        if (j >= 0 && j < TRIAL_B_WORDS) DATA_B[j] = v;
+    }
+    static void accept_trial() {  // X = X_TRIAL, its |X|^2, G zeroed for the next linearisation
+#pragma HLS INLINE
+        accept_copy();
+    }
     static void accepted(int, T, T, T) {}  // no host to tell on chip
 };
+
+void accept_copy() {
+#pragma HLS INLINE
+#pragma HLS ARRAY_PARTITION variable=X cyclic factor=2
+#pragma HLS ARRAY_PARTITION variable=X_TRIAL cyclic factor=2
+#pragma HLS ARRAY_PARTITION variable=G cyclic factor=2
+    LM_XX = fgc_units::lm_accept_norm<LmConfig>(X, X_TRIAL, G);
+}
 
 }  // namespace
 }  // namespace fgc
@@ -3811,5 +3982,5 @@ void imu_window_top(const fgc::T x_in[fgc::N_X], const fgc::T data[fgc::N_DATA],
 #pragma HLS INTERFACE s_axilite port=errors
 #pragma HLS INTERFACE s_axilite port=info
 #pragma HLS INTERFACE s_axilite port=return
-    fgc_units::lm_top<fgc::LmConfig>(x_in, data, x_out, fgc::X, fgc::DATA_BUF, errors, info);
+    fgc_units::lm_top_norm<fgc::LmConfig>(x_in, data, x_out, fgc::X, fgc::DATA_BUF, fgc::G, fgc::LM_XX, errors, info);
 }

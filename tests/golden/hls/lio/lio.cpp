@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's by columns (the loader streaming COND to a process per end of the chain,
 // the state update fed by both):
-//   21 processes, 46 streams (n_u=4, 2 unit set(s))
+//   21 processes, 47 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -78,6 +78,7 @@
 //   stream backsub_dx1 depth=24: backsub_end1 -> backsub_retire
 //   stream backsub_xroot depth=30: backsub_end0 -> backsub_end1
 //   stream trial_tx depth=24: backsub_retire -> trial_cost
+//   stream trial_tx2 depth=24: backsub_retire -> trial_cost
 #include "lio.h"
 
 #include "hls_stream.h"
@@ -3388,7 +3389,8 @@ const int TRIAL_B_small[10] = {  // per entry: its instance's block type (-1: no
 const int TRIAL_F_0[1] = {  // per entry of cost loop 0: its instance (-1: none)
     0,
 };
-void trial_cost(hls::stream<TrialVar>& tx) {
+void trial_cost(hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2) {
+    (void)tx2;  // (back-substitution by columns: the second cost process's stream, none here)
 #pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=2
     FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
     T x[N_X];  // the variables taken so far

@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's by columns (the loader streaming COND to a process per end of the chain,
 // the state update fed by both):
-//   13 processes, 26 streams (n_u=4, 1 unit set(s))
+//   13 processes, 27 streams (n_u=4, 1 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -50,6 +50,7 @@
 //   stream backsub_dx1 depth=3: backsub_end1 -> backsub_retire
 //   stream backsub_xroot depth=18: backsub_end0 -> backsub_end1
 //   stream trial_tx depth=5: backsub_retire -> trial_cost
+//   stream trial_tx2 depth=5: backsub_retire -> trial_cost
 #include "pose_graph.h"
 
 #include "hls_stream.h"
@@ -1507,7 +1508,8 @@ const int TRIAL_X1_0[14] = {  // and where it ends (x0 = x1: none)
 const int TRIAL_F_1[1] = {  // per entry of cost loop 1: its instance (-1: none)
     6,
 };
-void trial_cost(hls::stream<TrialVar>& tx) {
+void trial_cost(hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2) {
+    (void)tx2;  // (back-substitution by columns: the second cost process's stream, none here)
 #pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=2
     FGC_OUTER_BRANCH();  // csim cycle counting only: the third process of back_substitute
     T x[N_X];  // the variables taken so far
