@@ -389,9 +389,12 @@ def read_dsp(program: Program, config, digest: str | None = None,
 
 def price(program: Program, cand: Candidate, space: Space):
     """The plan's Cost of ``cand`` and the part's capacities."""
+    from fgc_backends.hls.emitter import for_program
     from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
 
-    config = cand.config(space)
+    # the design the emitter builds: a Program compiled with linear_precision float64 gets a
+    # double linear solver (the mixed design), priced in its own operator table
+    config = for_program(program, cand.config(space))
     plan = build_plan(program, PlanOptions.for_config(config, program))
     d = plan.target.device
     return plan_cost(plan), {"dsp": d.dsp, "bram36": d.bram36, "lut": d.lut, "ff": d.ff}, d.name
