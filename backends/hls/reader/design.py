@@ -77,13 +77,19 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
     readings: dict[tuple, list[LoopReading]] = {}
 
     def loops_of(f: _Function, env: dict[str, int], unit: str | None) -> list[LoopReading]:
+        scalar = reader.scalar_of(f, env)
         key = (f.file, f.start, tuple(sorted((k, v) for k, v in env.items()
-                                             if k in f.template_ints)), unit)
+                                             if k in f.template_ints)), unit, scalar)
         if key not in readings:
             reader.where = unit
-            readings[key] = reader.loops_in(f, env)
+            reader.scalar = scalar
+            try:
+                readings[key] = reader.loops_in(f, env)
+            finally:
+                reader.scalar = ""
         return readings[key]
 
+    working = reader.scalars.get("T")  # the accelerator's scalar: its kinds stay untyped
     operators: Counter = Counter()
     modules: Counter = Counter()
     visited: set[tuple[str, str]] = set()
@@ -93,6 +99,7 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
     def own(f: _Function, env: dict[str, int], unit: str | None) -> Counter:
         reader.flatten = False
         reader.where = unit
+        reader.scalar = reader.scalar_of(f, env)
         reader.returns_float = re.search(rf"\b{FLOAT_TYPES}\b", f.ret) is not None
         try:
             count = reader.count(f.text, {p.name: v for p in f.params
@@ -100,8 +107,10 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
                                  dict(env), None, frozenset())
         finally:
             reader.flatten = True
+            reader.scalar = ""
         limits = reader.allocation(f.text)
-        return Counter({k: min(limits.get(k, 1), n) for k, n in count.ops.items() if n})
+        return Counter({k: min(limits.get(k.split(":")[0], 1), n) for k, n in count.ops.items()
+                        if n})
 
     def visit(f: _Function, env: dict[str, int], mult: int, depth: int,
               unit: str | None = None) -> None:
@@ -127,13 +136,13 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
         unit = _unit(f, unit)
         scalar = reader.scalar_of(f, env)  # "" : the accelerator's T; else "double", ...
         for kind, n in own(f, env, unit).items():
-            kind = typed(kind, scalar)
+            kind = typed(kind, scalar, working)
             seq[kind] = max(seq[kind], n)
         here = by_file.setdefault(f.file, Counter())
         mine = by_unit.setdefault((unit or f.file, f.file), Counter())
         for r in loops_of(f, env, unit):
             for kind, n in r.instances:
-                kind = typed(kind, scalar)
+                kind = typed(kind, scalar, working)
                 operators[kind] += n * mult
                 here[kind] += n * mult
                 mine[kind] += n * mult
@@ -142,6 +151,7 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
         left = {} if scope is None else scope
         left.update(reader.function_allocation(f.text, env))
         for callee, cenv, times in calls(f.text, env, unit):
+            cenv = {**cenv, "scalar:caller": scalar}  # a template on T takes the caller's
             if callee.name in left:
                 times = min(times, left[callee.name])
                 left[callee.name] -= times
@@ -193,10 +203,13 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
                                       for (u, file), c in by_unit.items() if c)))
 
 
-def typed(kind: str, scalar: str) -> str:
+def typed(kind: str, scalar: str, working: str | None = None) -> str:
     """An operator kind of a module whose scalar is ``scalar`` ("": the accelerator's): the
-    kind itself, or ``kind:scalar`` (``add:double``: a mixed design's linear solver)."""
-    return f"{kind}:{scalar}" if scalar else kind
+    kind itself, or ``kind:scalar`` (``add:double``: a mixed design's linear solver); a kind
+    already typed (a callee's in its own scalar) is kept, the ``working`` scalar's dropped."""
+    if ":" not in kind:
+        kind = f"{kind}:{scalar}" if scalar else kind
+    return kind.split(":")[0] if working and kind.endswith(f":{working}") else kind
 
 
 def dsp_table(ops_of: Callable[[str], OperatorTable], precision: str) -> dict[str, int]:

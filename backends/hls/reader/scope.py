@@ -119,6 +119,7 @@ class _Scope:
         self.memo: dict[tuple, _Count] = {}
         self.flatten = True  # read a callee in place (off: a function's own operations)
         self.returns_float = False  # the function being read returns a floating-point value
+        self.scalar = ""  # the scalar of the function being read ("": the accelerator's T)
 
     # -- scalar types ----------------------------------------------------------------------
     def scalar_of(self, f: _Function, env: dict) -> str:
@@ -130,6 +131,15 @@ class _Scope:
         working = self.scalars.get("T")
         if working is None or self.scalars.get("L", working) == working:
             return ""  # one scalar: nothing to tell apart
+        if any(re.fullmatch(r"(?:class|typename)\s+T(?:\s*=.*)?", p.strip())
+               for p in self._template_params(f)):
+            # `template <class T, ...>`: T is what the call passes (the caller's T, or a name)
+            bound = str(env.get("type:T", "T"))
+            caller = env.get("scalar:caller", self.scalar)
+            if bound in ("L", "float", "double"):
+                scalar = self._scalar_name(bound, False)
+                return "" if scalar in (None, working) else scalar
+            return caller
         own = _own_level(f.text)
         m = re.search(r"(?<![\w:])typedef\s+(?:typename\s+)?([\w:]+)\s+T\s*;", own)
         name = m and m.group(1)
