@@ -37,7 +37,7 @@ from fgc.compile import compile_graph
 from fgc.ir.program import SolverConfig
 from fgc_backends.hls import HlsConfig, emit
 from fgc_backends.hls.plan import DEFAULT_ALLOCATION, PlanOptions, build_plan, plan_cost
-from fgc_backends.hls.reader import check, check_dsp, emitted_files, read_design
+from fgc_backends.hls.reader import check, check_dsp, dsp_table, emitted_files, read_design
 from fgc_backends.hls.reader.design import _design, _Reader
 
 # the rules issue 32's second-reader task added (their findings are printed, not only counted)
@@ -61,6 +61,9 @@ def around_dsp(cost) -> int:
 
 
 def measure(program, config: HlsConfig, out: Path) -> dict:
+    from fgc_backends.hls.emitter import for_program
+
+    config = for_program(program, config)  # the design emitted: a float64 solver when mixed
     emit(program, out, config)
     plan = build_plan(program, PlanOptions.for_config(config, program))
     cost = plan_cost(plan)
@@ -71,12 +74,12 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
     issues = check(design.reached_loops)
     strict = check(design.reached_loops, strict=True)
     mine = [i for i in issues if i.file in AROUND or i.file == f"{program.name}.cpp"]
-    dsp_of = _dsp_of(tab)
+    dsp_of = dsp_table(plan.target.ops, precision)  # a mixed design's L operators in L's table
     around_files = (*AROUND, f"{program.name}.cpp")
     return dict(plan_dsp=cost.dsp, plan_bram36=cost.bram36, plan_cycles=cost.cycles,
                 reader_dsp=design.dsp(dsp_of),
                 plan_around=around_dsp(cost), reader_around=design.dsp(dsp_of, around_files),
-                dsp_ok=not check_dsp(design, cost.dsp, _dsp_of(tab)),
+                dsp_ok=not check_dsp(design, cost.dsp, dsp_of),
                 ii_short=sum(i.rule == "ii_ports" for i in issues),
                 recurrences=sum(i.rule == "ii_recurrence" for i in issues),
                 allocation=sum(i.rule == "ii_allocation" for i in issues),

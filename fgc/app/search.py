@@ -356,7 +356,7 @@ def read_dsp(program: Program, config, digest: str | None = None,
     from fgc.compiler import cache
     from fgc_backends.hls import emit
     from fgc_backends.hls.plan import PlanOptions, build_plan
-    from fgc_backends.hls.reader import check, emitted_files, read_design
+    from fgc_backends.hls.reader import check, dsp_table, emitted_files, read_design
 
     key = hashlib.sha256("\0".join((program.fingerprint, repr(config),
                                     digest or sources_digest())).encode()).hexdigest()
@@ -365,8 +365,8 @@ def read_dsp(program: Program, config, digest: str | None = None,
     if hit is not None:
         return hit, True
     t0 = time.perf_counter()
-    tab = build_plan(program, PlanOptions.for_config(config, program)).target.ops(
-        _precision(config))
+    target = build_plan(program, PlanOptions.for_config(config, program)).target
+    tab = target.ops(_precision(config))
     with tempfile.TemporaryDirectory(prefix="fgc-search-") as tmp:
         import warnings
 
@@ -377,7 +377,8 @@ def read_dsp(program: Program, config, digest: str | None = None,
             emit(program, Path(tmp) / "design", config)
         files, top = emitted_files(Path(tmp) / "design")
         design = read_design(files, top, tab.add.latency)
-    dsp_of = {k: tab.op(k).dsp for k in ("add", "mul", "div", "sqrt", "special")}
+    # each operator in its own type's table: a mixed design's double linear solver in float64's
+    dsp_of = dsp_table(target.ops, _precision(config))
     issues = check(design.loops)
     out = {"dsp": design.dsp(dsp_of), "operators": dict(design.operators),
            "ii_short": sum(i.rule == "ii_ports" for i in issues),
@@ -389,9 +390,12 @@ def read_dsp(program: Program, config, digest: str | None = None,
 
 def price(program: Program, cand: Candidate, space: Space):
     """The plan's Cost of ``cand`` and the part's capacities."""
+    from fgc_backends.hls.emitter import for_program
     from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
 
-    config = cand.config(space)
+    # the design the emitter builds: a Program compiled with linear_precision float64 gets a
+    # double linear solver (the mixed design), priced in its own operator table
+    config = for_program(program, cand.config(space))
     plan = build_plan(program, PlanOptions.for_config(config, program))
     d = plan.target.device
     return plan_cost(plan), {"dsp": d.dsp, "bram36": d.bram36, "lut": d.lut, "ff": d.ff}, d.name

@@ -4,7 +4,7 @@ returns the :class:`~fgc_backends.hls.plan.model.AcceleratorPlan` they make toge
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 from fgc.ir.program import Program
@@ -91,7 +91,13 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     ctx = PlanBuild(program, opts, target.ops(precision), target.ops(les_precision))
     for unit in unit_registry.REGISTRY:
         if unit.applies(program, opts):
+            before = len(ctx.units)
             unit.build(ctx)
+            if unit.linear_solver and les_precision != precision:
+                # the linear solver's units (typed L in the emitted text) are priced in L's
+                # table: a double CPE binds double adders and multipliers, not float ones
+                ctx.units[before:] = [replace(u, precision=les_precision)
+                                      for u in ctx.units[before:]]
     phases = tuple(ph for _, ph in sorted(ctx.phases, key=lambda sp: sp[0]))
     return AcceleratorPlan(program.name, program.solver.linear, precision,
                            program.solver.clock_mhz, opts, tuple(ctx.units), tuple(ctx.memories),

@@ -5,7 +5,8 @@
 - a dataflow phase (processes overlapping through channels) takes its slowest process plus the
   fill of the others (their first-item depth); a sequential phase sums its processes;
 - one LM/GN iteration runs the phases one after another;
-- resources are the units' allocated operators × instances + memories as placed (BRAM36 from
+- resources are the units' allocated operators × instances (each unit in its precision's
+  operator table: a mixed design's linear solver in its own) + memories as placed (BRAM36 from
   words × width and banks, BRAM18 granularity; small memories in LUTRAM).
 """
 
@@ -34,10 +35,14 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
     linear = sum(phase_cycles(ph) for ph in plan.phases if ph.linear and ph.per == "iteration")
     lut = ff = 0
     by_unit = []
+    tables = {"": plan.ops}
     for u in plan.units:
         unit_dsp = u.instances * u.extra_dsp
+        if u.precision not in tables:  # a mixed design's linear solver: its own table
+            tables[u.precision] = plan.target.ops(u.precision)
+        table = tables[u.precision]
         for kind, n in u.operators:
-            o = plan.ops.op(kind)
+            o = table.op(kind)
             unit_dsp += u.instances * n * o.dsp
             lut += u.instances * n * o.lut
             ff += u.instances * n * o.ff

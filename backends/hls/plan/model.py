@@ -84,6 +84,9 @@ class Unit:
     instances: int
     operators: tuple[tuple[str, int], ...]  # kind -> allocated instances in one unit
     extra_dsp: int = 0
+    # the precision its operators are priced in when not the plan's (a mixed design's linear
+    # solver: "float64" beside float32 datapaths); "" = the plan's working precision
+    precision: str = ""
 
 
 @dataclass(frozen=True)

@@ -42,6 +42,7 @@ memory and II rules, :func:`check`), ``design`` (the instantiated design, :func:
 from fgc_backends.hls.reader.design import (
     DesignReading,
     check_dsp,
+    dsp_table,
     emitted_files,
     read_design,
 )
@@ -49,4 +50,4 @@ from fgc_backends.hls.reader.loops import LoopReading, check, read_project
 from fgc_backends.hls.reader.text import FLOAT_TYPES, KINDS
 
 __all__ = ["FLOAT_TYPES", "KINDS", "DesignReading", "LoopReading", "check", "check_dsp",
-           "emitted_files", "read_design", "read_project"]
+           "dsp_table", "emitted_files", "read_design", "read_project"]

@@ -308,12 +308,14 @@ class _Counter(_Scope):
             saved, self.returns_float = self.returns_float, re.search(
                 rf"\b{FLOAT_TYPES}\b", f.ret) is not None
             where, self.where = self.where, _unit(f, self.where)
+            caller, self.scalar = self.scalar, self.scalar_of(f, inner_env)
             try:
                 result = self.count(f.text, inner_scope, dict(inner_env), None,
                                     frozenset(inner_outer), depth)
             finally:
                 self.returns_float = saved
                 self.where = where
+                self.scalar = caller
             if self.allocation(f.text):  # its own module under ALLOCATION: counted apart
                 capped = _Count(accesses=result.accesses, recurrences=result.recurrences,
                                 rw=result.rw, calls=result.calls)
@@ -321,7 +323,24 @@ class _Counter(_Scope):
                 capped.capped_peak = {f.name: result.peak, **result.capped_peak}
                 result = capped
             self.memo[key] = result
+        scalar = self.scalar_of(f, inner_env)
+        if scalar != self.scalar:  # a callee in another scalar (the float state update a
+            # double solver's loop calls): its own operators typed as its scalar's
+            return _retyped(self.memo[key], scalar or self.scalars.get("T", ""))
         return self.memo[key]
+
+
+def _retyped(count: _Count, scalar: str) -> _Count:
+    """``count`` with its untyped operator kinds typed ``kind:scalar`` (kinds already typed,
+    a callee's own, kept)."""
+    def typed(c: Counter) -> Counter:
+        return Counter({(k if ":" in k else f"{k}:{scalar}"): n for k, n in c.items()})
+
+    return _Count(ops=typed(count.ops), capped={k: typed(v) for k, v in count.capped.items()},
+                  accesses=count.accesses, recurrences=count.recurrences, rw=count.rw,
+                  peak=typed(count.peak),
+                  capped_peak={k: typed(v) for k, v in count.capped_peak.items()},
+                  calls=count.calls)
 
 
 def _merge_squares(text: str) -> str:

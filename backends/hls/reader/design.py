@@ -6,16 +6,17 @@ from __future__ import annotations
 
 import re
 from collections import Counter
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from fgc_backends.cfamily.lint import LintIssue
+from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.lint.cxx import (
     _Function,
     _matching,
 )
 from fgc_backends.hls.reader.loops import LoopReading, _Reader
-from fgc_backends.hls.reader.text import _CALL, FLOAT_TYPES, _pipelined, _unit
+from fgc_backends.hls.reader.text import _CALL, FLOAT_TYPES, KINDS, _pipelined, _unit
 
 
 @dataclass(frozen=True)
@@ -24,7 +25,9 @@ class DesignReading:
     instance (an unrolled call once per copy), a pipelined loop's operators as its reading
     says, a function's sequential code at least one operator of each kind it uses (or its
     ALLOCATION limit where that is lower than its operations). A lower bound: the scheduler may
-    use more in sequential code, never fewer in a pipelined loop."""
+    use more in sequential code, never fewer in a pipelined loop. A module whose scalar ``T`` is
+    not the accelerator's (a mixed design's linear solver, T = L = double) counts its operators
+    as ``kind:double`` (:func:`typed`), priced in that type's table (:func:`dsp_table`)."""
 
     top: str
     loops: tuple[LoopReading, ...]
@@ -48,9 +51,9 @@ class DesignReading:
     def dsp(self, dsp_of: dict[str, int], files: Iterable[str] | None = None) -> int:
         """DSP of the whole design, or of the functions defined in ``files``."""
         if files is None:
-            return sum(n * dsp_of.get(kind, 0) for kind, n in self.operators)
+            return sum(n * _dsp(dsp_of, kind) for kind, n in self.operators)
         wanted = set(files)
-        return sum(n * dsp_of.get(kind, 0) for file, ops in self.by_file if file in wanted
+        return sum(n * _dsp(dsp_of, kind) for file, ops in self.by_file if file in wanted
                    for kind, n in ops)
 
     def unit_dsp(self, dsp_of: dict[str, int], unit: str, files: Iterable[str] | None = None,
@@ -60,7 +63,7 @@ class DesignReading:
         none defined in ``exclude``)."""
         wanted = None if files is None else set(files)
         skip = set(exclude)
-        return sum(n * dsp_of.get(kind, 0) for u, file, ops in self.by_unit
+        return sum(n * _dsp(dsp_of, kind) for u, file, ops in self.by_unit
                    if u == unit and (wanted is None or file in wanted) and file not in skip
                    for kind, n in ops)
 
@@ -74,13 +77,19 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
     readings: dict[tuple, list[LoopReading]] = {}
 
     def loops_of(f: _Function, env: dict[str, int], unit: str | None) -> list[LoopReading]:
+        scalar = reader.scalar_of(f, env)
         key = (f.file, f.start, tuple(sorted((k, v) for k, v in env.items()
-                                             if k in f.template_ints)), unit)
+                                             if k in f.template_ints)), unit, scalar)
         if key not in readings:
             reader.where = unit
-            readings[key] = reader.loops_in(f, env)
+            reader.scalar = scalar
+            try:
+                readings[key] = reader.loops_in(f, env)
+            finally:
+                reader.scalar = ""
         return readings[key]
 
+    working = reader.scalars.get("T")  # the accelerator's scalar: its kinds stay untyped
     operators: Counter = Counter()
     modules: Counter = Counter()
     visited: set[tuple[str, str]] = set()
@@ -90,6 +99,7 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
     def own(f: _Function, env: dict[str, int], unit: str | None) -> Counter:
         reader.flatten = False
         reader.where = unit
+        reader.scalar = reader.scalar_of(f, env)
         reader.returns_float = re.search(rf"\b{FLOAT_TYPES}\b", f.ret) is not None
         try:
             count = reader.count(f.text, {p.name: v for p in f.params
@@ -97,8 +107,10 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
                                  dict(env), None, frozenset())
         finally:
             reader.flatten = True
+            reader.scalar = ""
         limits = reader.allocation(f.text)
-        return Counter({k: min(limits.get(k, 1), n) for k, n in count.ops.items() if n})
+        return Counter({k: min(limits.get(k.split(":")[0], 1), n) for k, n in count.ops.items()
+                        if n})
 
     def visit(f: _Function, env: dict[str, int], mult: int, depth: int,
               unit: str | None = None) -> None:
@@ -122,12 +134,15 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
         budgets left (an INLINE callee's calls are the module's: they draw on the same)."""
         visited.add((f.file, f.name))
         unit = _unit(f, unit)
+        scalar = reader.scalar_of(f, env)  # "" : the accelerator's T; else "double", ...
         for kind, n in own(f, env, unit).items():
+            kind = typed(kind, scalar, working)
             seq[kind] = max(seq[kind], n)
         here = by_file.setdefault(f.file, Counter())
         mine = by_unit.setdefault((unit or f.file, f.file), Counter())
         for r in loops_of(f, env, unit):
             for kind, n in r.instances:
+                kind = typed(kind, scalar, working)
                 operators[kind] += n * mult
                 here[kind] += n * mult
                 mine[kind] += n * mult
@@ -136,6 +151,7 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
         left = {} if scope is None else scope
         left.update(reader.function_allocation(f.text, env))
         for callee, cenv, times in calls(f.text, env, unit):
+            cenv = {**cenv, "scalar:caller": scalar}  # a template on T takes the caller's
             if callee.name in left:
                 times = min(times, left[callee.name])
                 left[callee.name] -= times
@@ -185,6 +201,31 @@ def _design(reader: _Reader, top: str, unit: str | None = None) -> DesignReading
                          tuple(sorted(reached)),
                          tuple(sorted((u, file, tuple(sorted(c.items())))
                                       for (u, file), c in by_unit.items() if c)))
+
+
+def typed(kind: str, scalar: str, working: str | None = None) -> str:
+    """An operator kind of a module whose scalar is ``scalar`` ("": the accelerator's): the
+    kind itself, or ``kind:scalar`` (``add:double``: a mixed design's linear solver); a kind
+    already typed (a callee's in its own scalar) is kept, the ``working`` scalar's dropped."""
+    if ":" not in kind:
+        kind = f"{kind}:{scalar}" if scalar else kind
+    return kind.split(":")[0] if working and kind.endswith(f":{working}") else kind
+
+
+def dsp_table(ops_of: Callable[[str], OperatorTable], precision: str) -> dict[str, int]:
+    """DSP of one operator of each kind :class:`DesignReading` counts: the accelerator's
+    (``precision``'s table) by kind, and each C++ scalar's own (``add:double``, ``mul:float``)
+    for the modules typed otherwise (``ops_of(precision)``: a part's operator table)."""
+    out = {k: ops_of(precision).op(k).dsp for k in KINDS}
+    for scalar, prec in (("float", "float32"), ("double", "float64")):
+        out.update({typed(k, scalar): ops_of(prec).op(k).dsp for k in KINDS})
+    return out
+
+
+def _dsp(dsp_of: dict[str, int], kind: str) -> int:
+    """One operator's DSP: a typed kind (``add:double``) by its own figure where ``dsp_of``
+    has one (:func:`dsp_table`), else by its kind's (one table: the old callers')."""
+    return dsp_of[kind] if kind in dsp_of else dsp_of.get(kind.split(":")[0], 0)
 
 
 def read_design(files: Iterable[tuple[str, str]], top: str, add_latency: int

@@ -214,14 +214,16 @@ class _Reader(_Counter):
         instances: Counter = Counter()
         for kind, n in count.ops.items():
             need = math.ceil(n / ii)
-            instances[kind] += min(need, limits[kind]) if kind in limits else need
+            base = kind.split(":")[0]  # a typed kind (add:float, a mixed design's) by its kind
+            instances[kind] += min(need, limits[base]) if base in limits else need
         for name, ops in count.capped.items():
             # the callee of this translation unit (two kernels define their own factor_<b>)
             callee = self.local.get(self.where, {}).get(name) or self.functions.get(name)
             cap = self.allocation(callee.text) if callee is not None else {}
             for kind, n in ops.items():
                 need = math.ceil(n / ii)
-                instances[kind] += min(need, cap[kind]) if kind in cap else need
+                base = kind.split(":")[0]
+                instances[kind] += min(need, cap[base]) if base in cap else need
         def dims_here(name):
             var = scope.get(name) or self.globals.get(name)
             return var.dims if var is not None else None
@@ -352,8 +354,8 @@ class _Reader(_Counter):
 
         limits = self.allocation(f.text)
         for kind, n in sorted(count.peak.items()):
-            if kind in limits:
-                judge(f"ALLOCATION in {f.name}", kind, n, limits[kind])
+            if kind.split(":")[0] in limits:
+                judge(f"ALLOCATION in {f.name}", kind, n, limits[kind.split(":")[0]])
         functions = self.function_allocation(f.text, env)
         for name, ops in sorted(count.capped_peak.items()):
             callee = self.local.get(self.where, {}).get(name) or self.functions.get(name)
@@ -362,8 +364,8 @@ class _Reader(_Counter):
             if name in functions and functions[name] > 0:
                 sites = min(sites, functions[name])
             for kind, n in sorted(ops.items()):
-                if kind in cap:
-                    judge(f"ALLOCATION in {name}", kind, n, cap[kind] * sites)
+                if kind.split(":")[0] in cap:
+                    judge(f"ALLOCATION in {name}", kind, n, cap[kind.split(":")[0]] * sites)
         for name, limit in sorted(functions.items()):
             if count.calls.get(name):
                 judge("ALLOCATION function", name, count.calls[name], limit)

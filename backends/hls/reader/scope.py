@@ -26,6 +26,7 @@ from fgc_backends.hls.reader.text import (
     FLOAT_TYPES,
     _blank_macros,
     _Count,
+    _own_level,
     _Var,
     compiled_view,
 )
@@ -35,8 +36,20 @@ class _Scope:
     """The design's declarations, constants and bindings; the values of integer
     expressions and which function a call runs."""
     def __init__(self, files: Iterable[tuple[str, str]], add_latency: int):
+        files = list(files)
+        # file -> lines compiled where T is the linear solver's L (a mixed design's fgc::les)
+        self.wide_lines: dict[str, set[int]] = {}
         self.files = [(name, _blank_macros(strip_comments_and_strings(synthesis_view(text))))
-                      for name, text in compiled_view(list(files))]
+                      for name, text in compiled_view(files, self.wide_lines)]
+        # the scalar types T (the accelerator's) and L (the linear solver's) name: "float" or
+        # "double" (a mixed design: T float, L double)
+        self.scalars: dict[str, str] = {}
+        for _, code in self.files:
+            for m in re.finditer(r"(?<![\w:])typedef\s+(float|double|T)\s+(T|L)\s*;", code):
+                if m.group(2) not in self.scalars:
+                    self.scalars[m.group(2)] = self.scalars.get(m.group(1), m.group(1))
+        # struct name -> (file, where, body, base names)
+        self.struct_bodies: dict[str, list[tuple[str, int, str, tuple[str, ...]]]] = {}
         self.functions: dict[str, _Function] = {}
         # Struct::name -> [(specialisation's template arguments or None, function)]
         self.members: dict[str, list[tuple[tuple[str, ...] | None, _Function]]] = {}
@@ -58,6 +71,13 @@ class _Scope:
                                 tuple(_split_top(m.group(3)[1:-1])) if m.group(3) else None))
                 if m.group(1) and not m.group(3):
                     self.defaults[m.group(2)] = tuple(_split_top(m.group(1)))
+            # every struct's body and bases (`struct SetConfig : LesConfig {`): its scalar T
+            for m in re.finditer(r"\bstruct\s+(\w+)\s*(?:<[^{};]*>)?\s*(?::([^{};]*))?\{", code):
+                end = _matching(code, m.end() - 1, "{", "}")
+                bases = tuple(b.split()[-1].split("<")[0].split("::")[-1]
+                              for b in _split_top(m.group(2) or "") if b.split())
+                self.struct_bodies.setdefault(m.group(1), []).append(
+                    (name, m.start(), code[m.end():end], bases))
             for f in _functions(name, code):
                 if f.qualname != f.name:
                     spec = [s for s in structs if s[0] < f.start < s[1]]
@@ -99,6 +119,74 @@ class _Scope:
         self.memo: dict[tuple, _Count] = {}
         self.flatten = True  # read a callee in place (off: a function's own operations)
         self.returns_float = False  # the function being read returns a floating-point value
+        self.scalar = ""  # the scalar of the function being read ("": the accelerator's T)
+
+    # -- scalar types ----------------------------------------------------------------------
+    def scalar_of(self, f: _Function, env: dict) -> str:
+        """The C++ scalar (``float`` / ``double``) ``T`` names in ``f`` as instantiated with
+        ``env`` when it is not the accelerator's (a mixed design's linear solver: its headers
+        configured by ``CFG::T`` = ``L``, the kernel's ``namespace les``), else "": ``f``'s own
+        ``typedef X T;``, else its ``typename CFG::T`` (CFG: the struct ``env`` binds), else its
+        struct's ``typedef`` (a member), else where it is compiled (a line where T is L)."""
+        working = self.scalars.get("T")
+        if working is None or self.scalars.get("L", working) == working:
+            return ""  # one scalar: nothing to tell apart
+        if any(re.fullmatch(r"(?:class|typename)\s+T(?:\s*=.*)?", p.strip())
+               for p in self._template_params(f)):
+            # `template <class T, ...>`: T is what the call passes (the caller's T, or a name)
+            bound = str(env.get("type:T", "T"))
+            caller = env.get("scalar:caller", self.scalar)
+            if bound in ("L", "float", "double"):
+                scalar = self._scalar_name(bound, False)
+                return "" if scalar in (None, working) else scalar
+            return caller
+        own = _own_level(f.text)
+        m = re.search(r"(?<![\w:])typedef\s+(?:typename\s+)?([\w:]+)\s+T\s*;", own)
+        name = m and m.group(1)
+        if name and "::" in name and name.split("::")[-1] == "T":
+            owner = name.split("::")[-2]
+            if owner in ("", "fgc"):  # ::fgc::T: the accelerator's T wherever it is read
+                name = "::T"
+            else:  # `typename CFG::T`: the T of the struct CFG is bound to
+                name = self._struct_scalar(env.get(f"type:{owner}", owner), f.file)
+        if not name:
+            head = f.code[max(f.code.rfind(c, 0, f.start) for c in ";{}") + 1:f.body[0]]
+            cfg = re.search(r"\btypename\s+(\w+)\s*::\s*T\b", head)
+            if cfg:
+                name = self._struct_scalar(env.get(f"type:{cfg.group(1)}", cfg.group(1)),
+                                           f.file)
+        if not name and f.qualname != f.name:
+            name = self._struct_scalar(f.qualname.split("::")[0], f.file)
+        line = f.code.count("\n", 0, f.start)
+        wide = line in self.wide_lines.get(f.file, ())
+        scalar = self._scalar_name(name or "T", wide)
+        return "" if scalar in (None, working) else scalar
+
+    def _scalar_name(self, name: str, wide: bool) -> str | None:
+        """The scalar a type name stands for (bare ``T`` where T is L: L's)."""
+        base = name.split("::")[-1]
+        if base == "T" and wide and not name.startswith("::"):
+            base = "L"
+        return self.scalars.get(base, base if base in ("float", "double") else None)
+
+    def _struct_scalar(self, struct: str, file: str, depth: int = 0) -> str | None:
+        """The scalar struct ``struct``'s ``typedef X T;`` gives (its own, else a base's; the
+        struct in ``file`` or the translation unit being read first), resolved where the
+        struct is."""
+        bodies = self.struct_bodies.get(struct, [])
+        bodies = sorted(bodies, key=lambda b: (b[0] not in (file, self.where), b[1]))
+        for where, at, body, bases in bodies:
+            m = re.search(r"(?<![\w:])typedef\s+(?:typename\s+)?([\w:]+)\s+T\s*;",
+                          _own_level(body))
+            if m:
+                code = dict(self.files)[where]
+                wide = code.count("\n", 0, at) in self.wide_lines.get(where, ())
+                return self._scalar_name(m.group(1), wide)
+            for base in bases if depth < 8 else ():
+                found = self._struct_scalar(base, where, depth + 1)
+                if found:
+                    return found
+        return None
 
     # -- declarations ----------------------------------------------------------------------
     def _outside_functions(self, file: str, code: str) -> str:

@@ -197,21 +197,39 @@ def _condition(expr: str, defined: dict[str, str]) -> bool | None:
         return None
 
 
-def compiled_view(files: list[tuple[str, str]]) -> list[tuple[str, str]]:
+def wide_namespace_lines(text: str) -> set[int]:
+    """The lines of ``text`` inside a namespace whose own level says ``typedef L T;`` (the
+    mixed design's ``fgc::les``: there ``T`` is the linear solver's scalar ``L``)."""
+    code = strip_comments(text)
+    out: set[int] = set()
+    for m in re.finditer(r"\bnamespace\s+\w+\s*\{", code):
+        end = _matching(code, m.end() - 1, "{", "}")
+        if re.search(r"(?<![\w:])typedef\s+L\s+T\s*;", _own_level(code[m.end():end])):
+            first = code.count("\n", 0, m.start())
+            out.update(range(first, first + code.count("\n", m.start(), end) + 1))
+    return out
+
+
+def compiled_view(files: list[tuple[str, str]], wide: dict[str, set[int]] | None = None
+                  ) -> list[tuple[str, str]]:
     """``files`` with the text of the preprocessor branches no translation unit compiles
     blanked (lines kept). Each kernel (.cpp) is preprocessed from the top: its ``#define`` s
     and those of the headers it includes (``#include "x.h"`` of a file among ``files``) decide
     each ``#if`` / ``#ifdef`` / ``#ifndef`` / ``#elif`` / ``#else`` of the files it reaches; a
     line is kept if some inclusion compiles it. A header no kernel includes is kept whole, as is
-    every branch of a condition this does not evaluate."""
+    every branch of a condition this does not evaluate. ``wide`` (when given) receives, per
+    file, the lines compiled where ``T`` is ``L`` (:func:`wide_namespace_lines`: a kernel's
+    lines inside such a namespace and a header's lines an inclusion there compiles)."""
     texts = dict(files)
     kept: dict[str, set[int]] = {}
+    wide = {} if wide is None else wide
 
-    def run(name: str, defined: dict[str, str], depth: int) -> None:
+    def run(name: str, defined: dict[str, str], depth: int, inside: bool = False) -> None:
         text = texts[name]
         lines = strip_comments(text).split("\n")
         raw = text.split("\n")
         mine = kept.setdefault(name, set())
+        spans = wide_namespace_lines(text) if name.endswith(".cpp") else set()
         # per open #if: (the enclosing branch active, this branch active, a branch was taken)
         stack: list[tuple[bool, bool, bool]] = []
         active = True
@@ -243,6 +261,9 @@ def compiled_view(files: list[tuple[str, str]]) -> list[tuple[str, str]]:
             if not active:
                 continue
             mine.add(i)
+            here = inside or i in spans
+            if here:
+                wide.setdefault(name, set()).add(i)
             if word == "define" and rest:
                 macro = re.match(r"(\w+)(\([^)]*\))?\s*(.*)", rest)
                 if macro:
@@ -253,7 +274,7 @@ def compiled_view(files: list[tuple[str, str]]) -> list[tuple[str, str]]:
                 target = re.search(r'"([^"]+)"', raw[i])
                 child = target and target.group(1).rsplit("/", 1)[-1]
                 if child in texts and depth < 32:
-                    run(child, defined, depth + 1)
+                    run(child, defined, depth + 1, here)
 
     for name, _ in files:
         if name.endswith(".cpp"):

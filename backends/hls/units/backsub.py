@@ -702,6 +702,7 @@ def build(ctx) -> None:
 
 SPEC = UnitSpec(
     name="backsub", role="back-substitution through the conditionals",
+    linear_solver=True,
     build=build, phases=("backsub", "trisolve"), header="fgc_backsub.h",
     constants=(("PARTIALS", "interleaved partial sums per row (the adder latency)"),
                ("MAX_F", "widest frontal block"), ("MAX_W", "widest step")),

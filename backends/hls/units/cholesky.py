@@ -1181,6 +1181,7 @@ def _frontal(ctx) -> None:
 
 SPEC = UnitSpec(
     name="cholesky", role="HGC and the cascade of #CPE Cholesky process elements",
+    linear_solver=True,
     build=build, phases=("hgc", "assemble", "cholesky", "cholesky_scalar", "hgc_beside",
                          "hgc_producer", "reassemble", "recholesky"),
     header="fgc_cpe.h",

@@ -330,6 +330,7 @@ def _levels(ctx, sets, by_index, damping) -> None:
 
 
 SPEC = UnitSpec(
+    linear_solver=True,
     name="qr", role="Householder QR unit sets: Evaluate + n_u Update units per set (paper A's, "
     "--qr-unit householder), or n_u streaming reflection stages (--qr-unit stream: "
     "fgc_qr_stream.h, priced by units/qr_stream.py)",

@@ -28,7 +28,10 @@ class UnitSpec:
     ``header`` is its static header under ``backends/hls/include/`` (None: kernel code of the
     template), ``constants`` the compile-time constants that header takes (its ``CFG``), and
     ``printed_by`` where the call to it is printed (accel.cpp.jinja today; a unit whose call
-    Python generates names the function)."""
+    Python generates names the function). ``linear_solver``: its units compute in the linear
+    solver's scalar (``L``: the Hessian/Gram accumulation, elimination, back-substitution), so
+    the plan prices their operators in that precision's table (a mixed design's float64 solver
+    beside float32 datapaths: :func:`fgc_backends.hls.plan.cost.plan_cost`)."""
     name: str
     role: str
     build: Callable
@@ -37,6 +40,7 @@ class UnitSpec:
     constants: tuple[tuple[str, str], ...] = ()
     printed_by: str = "accel.cpp.jinja"
     applies: Callable = lambda program, options: True
+    linear_solver: bool = False
 
     def __post_init__(self):
         if not self.name.isidentifier():
