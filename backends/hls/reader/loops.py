@@ -121,7 +121,7 @@ class _Reader(_Counter):
 
     def loops(self) -> list[LoopReading]:
         out = []
-        for f in self.functions.values():
+        for f in self.definitions:
             for env in self.instantiations(f):
                 out += self.loops_in(f, env)
         return sorted(out, key=lambda r: (r.file, r.line, r.template))

@@ -51,6 +51,10 @@ class _Scope:
         # struct name -> (file, where, body, base names)
         self.struct_bodies: dict[str, list[tuple[str, int, str, tuple[str, ...]]]] = {}
         self.functions: dict[str, _Function] = {}
+        # every free function's definition, those a name's first one shadows included (a
+        # header no kernel includes keeps both branches of its #ifdef: two definitions of one
+        # name, each with its own loops)
+        self.definitions: list[_Function] = []
         # Struct::name -> [(specialisation's template arguments or None, function)]
         self.members: dict[str, list[tuple[tuple[str, ...] | None, _Function]]] = {}
         self.defaults: dict[str, tuple[str, ...]] = {}  # struct template -> its parameters
@@ -85,6 +89,7 @@ class _Scope:
                         (spec[-1][2] if spec else None, f))
                 else:
                     self.functions.setdefault(f.name, f)
+                    self.definitions.append(f)
                     self.local.setdefault(name, {}).setdefault(f.name, f)
         self.constants = _constants(code for _, code in self.files)
         # a kernel's own constants (two kernels in one design may give a name two values)
