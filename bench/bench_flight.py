@@ -38,7 +38,9 @@ from __future__ import annotations
 import argparse
 from dataclasses import replace
 
+import fgc_backends.hls.units.backsub as bs
 import fgc_backends.hls.units.cholesky as ch
+import fgc_backends.hls.units.lm_control as lc
 from fgc.app.specs import example
 from fgc.compile import compile_graph
 from fgc.ir.program import SolverConfig
@@ -88,6 +90,72 @@ def what_if(pieces: set[str]) -> None:
     if "loop" in pieces:
         ch.beside_set_passes, ch.beside_cycles = loop_model(ch.beside_set_passes,
                                                             ch.beside_cycles)
+
+
+def flat_column_schedule(tables, ops):
+    """The ``flat`` what-if (not built): each end of the column back-substitution one pipelined
+    loop over its passes instead of a loop a pass, so a pass adds its trip, not trip - 1 + depth;
+    a pass that takes in a conditional lasts at least its groups + Ld + Lm (its last group's
+    scaled words written before the next pass reads them as its child's: the divide and the
+    scaling are deeper than the column's read); end 1's feed pass issues its last column no
+    earlier than end 0's root pass; the region as units/backsub.py's column_schedule."""
+    depth = bs.column_pass_depth(ops)
+    guard = ops.div.latency + ops.mul.latency
+    timeline, root_issue = [], None
+    for passes in bs.column_passes(tables):
+        clock, rows = 0, []
+        for p in passes:
+            cols = 0
+            if p.step >= 0:
+                fc = tables["STEP_F"][p.child] if p.child >= 0 else 0
+                cols = sum(bs.column_len(r, a, fc, ops, p.feed)
+                           for r, a in enumerate(bs.column_sep(tables, p.step, p.child)))
+            groups = bs.column_groups(tables, p.ingest) if p.ingest >= 0 else 0
+            trip = max(cols, groups + guard if groups else 0)
+            if trip <= 0:
+                continue
+            issue = clock + trip
+            if p.feed and root_issue is not None:
+                issue = max(issue, root_issue + 1)
+            rows.append((p, issue - 1 + depth))
+            clock = issue
+            if p.root:
+                root_issue = issue
+        timeline.append(rows)
+    loader = bs.column_loader_trip(tables)
+    procs = [(loader - 1 + bs.COLUMN_LOAD_DEPTH, bs.COLUMN_LOAD_DEPTH)] if loader else []
+    ends, last = {}, 0
+    for rows in timeline:
+        if not rows:
+            continue
+        procs.append((rows[-1][1], depth))
+        for p, end in rows:
+            if p.step >= 0 and not p.feed:
+                ends[p.step] = end
+            last = max(last, end)
+    slow = max(range(len(procs)), key=lambda i: procs[i][0])
+    region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+    return ends, max(region, last)
+
+
+def tail_cut(cut: str):
+    """Install the LM tail's what-if ``cut`` (none of them built): ``flat``
+    (:func:`flat_column_schedule`), ``accept8`` (the accepted copy eight words a cycle: X,
+    X_TRIAL and G cyclic 4, eight multiply-adds for |X|^2), ``no_accept`` (no accepted copy at
+    all: X, G's zeroing and |X|^2 all elsewhere at no cycles). Returns the undo."""
+    saved = bs.column_schedule, lc.ACCEPT_PORTS, lc.lm_control_phases
+    if cut == "flat":
+        bs.column_schedule = flat_column_schedule
+    elif cut == "accept8":
+        lc.ACCEPT_PORTS = 8
+    elif cut == "no_accept":
+        base = lc.lm_control_phases
+        lc.lm_control_phases = lambda *a, **k: [ph for ph in base(*a, **k)
+                                                if ph.name != "lm_accept"]
+
+    def undo():
+        bs.column_schedule, lc.ACCEPT_PORTS, lc.lm_control_phases = saved
+    return undo
 
 
 def tail_passes(base_passes):
@@ -433,7 +501,23 @@ def main() -> None:
     ap.add_argument("--sets", type=int, default=2)
     ap.add_argument("--lanes", type=int, default=2)
     ap.add_argument("--third", action="store_true")
+    ap.add_argument("--tail-cuts", action="store_true",
+                    help="the LM tail's what-ifs (flat, accept8, no_accept) at 5 x1, 20 x2, 40 x2")
     args = ap.parse_args()
+    if args.tail_cuts:
+        for cut in ("as built", "flat", "accept8", "no_accept"):
+            undo = tail_cut(cut)
+            d5 = design(5, 1, 1)
+            row = [f"{cut:10s} #CPE 5 x1 {d5.cycles:7,d} ({d5.dsp:,d} DSP)"]
+            for cpe, sets, lanes, third in ((20, 2, 1, False), (40, 2, 2, False),
+                                            (40, 2, 2, True)):
+                c = design(cpe, sets, lanes, third)
+                row.append(f"#CPE {cpe} x{sets}{' C' if third else ''} L{lanes} {c.cycles:7,d} "
+                           f"({d5.cycles / c.cycles:.4f}x, {c.dsp:,d} DSP"
+                           f"{', fits' if c.fits else ''})")
+            undo()
+            print("; ".join(row), flush=True)
+        return
     if args.where:
         print("\n".join(where(args.cpe, args.sets, args.lanes, args.third)))
         return
