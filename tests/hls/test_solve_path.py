@@ -10,6 +10,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+import pytest
+
 from fgc.app.specs import example
 from fgc.compile import compile_graph
 from fgc.ir.datafile import problem_data
@@ -33,6 +35,7 @@ def _check(its: list[dict], iterations: int) -> None:
             assert what == "npd" or what[2] >= it["cost"]
 
 
+@pytest.mark.heavy  # a simulator run and a C simulation build (about 90 s on 2 cores)
 def test_both_traces_are_their_runs(tmp_path):
     graph = example("imu_window").build(N=4)
     program = compile_graph(graph, SolverConfig(method="lm", linear="cholesky", cpe=5,
