@@ -47,6 +47,7 @@ from fgc.ir.program import SolverConfig
 from fgc_backends.hls import HlsConfig
 from fgc_backends.hls.emitter import accel_plan
 from fgc_backends.hls.plan import phase_cycles, plan_cost
+from fgc_backends.hls.plan.loops import slowest_plus_fills
 from fgc_backends.hls.plan.model import Loop, Phase, Process
 
 N = 50
@@ -133,8 +134,7 @@ def flat_column_schedule(tables, ops):
             if p.step >= 0 and not p.feed:
                 ends[p.step] = end
             last = max(last, end)
-    slow = max(range(len(procs)), key=lambda i: procs[i][0])
-    region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+    region = slowest_plus_fills(procs)
     return ends, max(region, last)
 
 

@@ -28,6 +28,15 @@ def dot_loop(name: str, length: int, ops: OperatorTable, partials: int | None = 
     return Loop(name, length, math.ceil(la / k), lm + la * (1 + tree), repeat)
 
 
+def slowest_plus_fills(procs: list[tuple[int, int]]) -> int:
+    """A DATAFLOW region's length from its processes' (cycles, fill) pairs: the slowest
+    process's cycles plus the fill of every other (fgc_cycles.h's ``total``); 0 for none."""
+    if not procs:
+        return 0
+    slow = max(range(len(procs)), key=lambda i: procs[i][0])
+    return procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+
+
 def _region_cycles(processes: list[list[Loop]],
                    waits: tuple[tuple, ...] = ()) -> int:
     """A DATAFLOW region as :func:`phase_cycles` prices it: its slowest process plus the fill of
@@ -44,8 +53,7 @@ def _region_cycles(processes: list[list[Loop]],
              for loops in processes if any(lp.trip > 0 for lp in loops)]
     if not procs:
         return 0
-    slow = max(range(len(procs)), key=lambda i: procs[i][0])
-    total = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+    total = slowest_plus_fills(procs)
     if not waits:
         return total
     ends: dict[tuple[int, int], int] = {}

@@ -12,7 +12,14 @@ import math
 
 from fgc_backends.cost.operators import OperatorTable
 from fgc_backends.hls.plan.binding import BoundLoop, bound_unit, sum_operators
-from fgc_backends.hls.plan.loops import _ceil_log2, _ported, _region_cycles, dot_loop, kernel_loop
+from fgc_backends.hls.plan.loops import (
+    _ceil_log2,
+    _ported,
+    _region_cycles,
+    dot_loop,
+    kernel_loop,
+    slowest_plus_fills,
+)
 from fgc_backends.hls.plan.model import PORTS, Channel, Loop, Phase, Process, Unit
 from fgc_backends.hls.units.spec import UnitSpec
 
@@ -416,8 +423,7 @@ def column_schedule(tables: dict, ops: OperatorTable) -> tuple[dict[int, int], i
             if p.step >= 0 and not p.feed:
                 ends[p.step] = end
             last = max(last, end)
-    slow = max(range(len(procs)), key=lambda i: procs[i][0])
-    region = procs[slow][0] + sum(fill for i, (_, fill) in enumerate(procs) if i != slow)
+    region = slowest_plus_fills(procs)
     return ends, max(region, last)
 
 
