@@ -417,6 +417,23 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     # the column design: trial_cost's gathers from DATA_BUF's two banks (units/datapath.py)
     trial_spans = [trial_span(bc) for bc in context["blocks"]] \
         if trial_banked(program, plan.options) else None
+    # the factors whose rows the datapaths write straight into a unit set's banks (units/qr.py's
+    # rows_in_banks): per factor its set (-1: none), first row and its step's right-hand side
+    # column; per set the step they make up
+    from fgc_backends.hls.units.qr import rows_in_banks
+    tables = _tables(program)
+    in_banks = rows_in_banks(program, plan.options, tables)
+    banks = None
+    if in_banks:
+        n = len(program.factors)
+        steps = sorted({(u, s) for u, s, _ in in_banks.values()})
+        banks = {"set": [in_banks[f][0] if f in in_banks else -1 for f in range(n)],
+                 "row": [in_banks[f][2] if f in in_banks else 0 for f in range(n)],
+                 "w": [tables["STEP_W"][in_banks[f][1]] if f in in_banks else 0
+                       for f in range(n)],
+                 "step": [s for _, s in steps]}
+    for b in blocks:
+        b.banked = any(f in in_banks for f in b.instances)
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
@@ -443,7 +460,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
             # the copies into X (units/lm_control.py's retire_step_test)
             "retire_test": retire_step_test(program, plan.options),
-            "small": shared,
+            "small": shared, "banks": banks,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
             "bs_slots": _backsub_slots(program),

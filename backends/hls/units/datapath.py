@@ -218,9 +218,12 @@ def small_allocation(program, blocks, opts, mode: str, table
     alloc = dict(opts.allocation)
     branches = small_branch_ops(program, blocks, mode)
     accesses: dict[int, int] = {}
+    from fgc_backends.hls.plan.loops import _tables
+    in_banks = banked_blocks(program, opts, _tables(program)) if mode == "jacobian" else ()
     for i in small_blocks(program):
         for a, (n, _) in enumerate(instance_accesses(blocks[i], mode,
-                                                     program.solver.linear == "qr")):
+                                                     program.solver.linear == "qr",
+                                                     i in in_banks)):
             accesses[a] = accesses.get(a, 0) + n
     ii = loop_ii((n, 1) for n in accesses.values())
     if mode == "cost":  # the running total, in instance order: through the adder
@@ -308,21 +311,36 @@ def robust_ops(bc) -> dict[str, int]:
     return {k: n for k, n in ops.items() if n}
 
 
-def instance_accesses(bc, mode: str, grad_stream: bool = False) -> list[tuple[int, int]]:
+def instance_accesses(bc, mode: str, grad_stream: bool = False,
+                      banked: bool = False) -> list[tuple[int, int]]:
     """(accesses, banks) of one instance to each global memory the Jacobian (``mode``
     "jacobian") or cost loop touches: X (the variables' storage), DATA_BUF (its measurements
     and noise parameters, two robust words a member) and, in Jacobian mode, AB (its whitened
     rows, m × (d + 1) words). None of them is partitioned (one bank, two ports). A member
     without a robust loss reads no robust words. ``grad_stream`` (QR, Jacobian mode): the
     rows go to the gradient's stream too, m × padded / PORTS words, one a cycle (counted as
-    m × padded accesses of one two-port bank: the same cycles)."""
+    m × padded accesses of one two-port bank: the same cycles). ``banked`` (units/qr.py's
+    rows_in_banks: the block's instances of level 0's first steps): the rows into a unit
+    set's banks too, m × (d + 1) words through a run-time bank index (t % n_u), counted as
+    one two-port memory's accesses, as AB's."""
     data = sum(m.meas_words + m.n_params + 2 * m.robust for m in bc.members)
     out = [(bc.n_x_in, 1), (data, 1)]
     if mode == "jacobian":
         out.append((bc.m * bc.stride, 1))
         if grad_stream:
             out.append((bc.m * bc.padded, 1))
+        if banked:
+            out.append((bc.m * bc.stride, 1))
     return out
+
+
+def banked_blocks(program, opts, tables) -> frozenset[int]:
+    """The block types with an instance whose rows go straight into a unit set's banks
+    (units/qr.py's rows_in_banks)."""
+    from fgc_backends.hls.units.qr import rows_in_banks
+
+    banked = rows_in_banks(program, opts, tables)
+    return frozenset(f.block for i, f in enumerate(program.factors) if i in banked)
 
 
 def build(ctx) -> None:
@@ -344,6 +362,7 @@ def build(ctx) -> None:
     # the column design: trial_cost's loops at the IIs that keep up with its retire
     banked = trial_banked(program, opts)
     chosen = keep_up_ii(ctx, allocations, small) if banked else {}
+    in_banks = banked_blocks(program, opts, ctx.tables)
     for i, (b, bc) in enumerate(zip(program.blocks, ctx.blocks, strict=True)):
         if opts.jacobian_storage == "raw":
             words = raw_jacobian_words(b) * len(bc.instances)
@@ -367,7 +386,8 @@ def build(ctx) -> None:
                 ii = chosen[i]  # loop, gather_trial_<b> from DATA_BUF's two banks
             else:
                 ii = max(issue, loop_ii(instance_accesses(bc, mode,
-                                                          program.solver.linear == "qr")))
+                                                          program.solver.linear == "qr",
+                                                          i in in_banks and mode == "jacobian")))
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
                 ii = max(ii, ops.add.latency)  # simulator's): a recurrence through the adder
             # one evaluation ends no earlier than its critical path, nor before the allocated

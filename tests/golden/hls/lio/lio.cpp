@@ -3666,7 +3666,8 @@ void qr_level(int rows0, int f0, int s0,
 #include "fgc_eliminate.h"
 
 struct QrSets {
-    static void stack(int u, int s, T root_mu, unsigned skip, int rows) {
+    static void stack(int u, int s, T root_mu, unsigned skip, int rows, bool solve) {
+        (void)solve;  // (no rows are written into the banks before the stack)
         if (u == 0) qr_stack_rows<LesConfig>(s, root_mu, WORK0, skip, rows);
         if (u == 1) qr_stack_rows<LesConfig>(s, root_mu, WORK1, skip, rows);
     }
