@@ -324,10 +324,10 @@ def test_the_gradient_runs_beside_the_datapaths(lio_small, tmp_path):
 def _trial_program():
     """Four variables retired a, b, c, d and three datapaths of one instance each: block 0's
     (the most work) on c and d (ready last), block 1's on a, block 2's on b."""
-    from types import SimpleNamespace
-    variables = [SimpleNamespace(key=k, storage_dim=3) for k in "abcd"]
-    factors = [SimpleNamespace(keys=("c", "d")), SimpleNamespace(keys=("a",)), SimpleNamespace(keys=("b",))]
-    return SimpleNamespace(variables=variables, factors=factors)
+    from types import SimpleNamespace as Ns
+    variables = [Ns(key=k, storage_dim=3) for k in "abcd"]
+    factors = [Ns(keys=("c", "d")), Ns(keys=("a",)), Ns(keys=("b",))]
+    return Ns(variables=variables, factors=factors)
 
 
 def test_the_cost_pass_runs_its_loops_as_they_are_ready_when_that_ends_sooner():
