@@ -393,7 +393,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     from fgc_backends.hls.units.datapath import trial_banked, trial_span
     from fgc_backends.hls.units.lm_control import retire_step_test
     split = retire_step_test(program, plan.options)
-    trial = _trial_context(program, context["blocks"], blocks, phase, split)
+    trial = _trial_context(program, context["blocks"], blocks, phase, split,
+                           None if split else _trial_var_end(program, plan))
     if split:  # per variable the trial-cost processes it goes to (bit q: process q)
         send = [0] * len(program.variables)
         offsets = {sum(v.storage_dim for v in program.variables[:i]): i
@@ -557,8 +558,19 @@ def _cascade_context(program: Program, plan) -> dict:
             "step_streamed": [kids[s][0] for s in range(n)]}
 
 
+def _trial_var_end(program: Program, plan):
+    """units/datapath.py's trial_var_end for the plan's options (the order of trial_cost's
+    loops is the plan's)."""
+    from fgc_backends.hls.plan.assemble import PlanBuild
+    from fgc_backends.hls.units.datapath import trial_var_end
+    les_precision = plan.options.les_precision or (
+        program.solver.les_precision if plan.options.precision is None else plan.precision)
+    return trial_var_end(PlanBuild(program, plan.options, plan.ops,
+                                   plan.target.ops(les_precision)))
+
+
 def _trial_context(program: Program, contexts, blocks, phase: dict,
-                   split: bool = False) -> list[dict]:
+                   split: bool = False, var_end: list[int] | None = None) -> list[dict]:
     """trial_cost's loops as accel.cpp.jinja prints them (units/datapath.py's trial_plan on
     the plan's cost-mode loops): per loop its entries' instance (and block type, for the
     shared small datapath), the storage words of the variables each takes ([x0, x1) in x, k
@@ -575,7 +587,7 @@ def _trial_context(program: Program, contexts, blocks, phase: dict,
     out = []
     tables = _tables(program)
     pos = trial_positions(program, tables)
-    for lp in trial_plan(program, contexts, cost_loops(procs), tables, split):
+    for lp in trial_plan(program, contexts, cost_loops(procs), tables, split, var_end):
         x0, x1, at = [], [], []
         for _, taking in lp.entries:
             row = [(offsets[v], offsets[v + 1]) for v in taking]

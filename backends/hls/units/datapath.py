@@ -540,8 +540,8 @@ class TrialLoop:
         return f"cost_{self.key}"
 
 
-def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict
-                ) -> tuple[TrialLoop, ...]:
+def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
+                var_end: list[int] | None = None) -> tuple[TrialLoop, ...]:
     """trial_cost's loops, in the order the process runs them: per cost datapath (``costs``:
     key -> (instances, cost-mode II, depth), a block type's own or the small types' shared
     one; ``accesses[key]``: the x words an instance gathers) its instances in the order their
@@ -553,11 +553,39 @@ def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: d
     entries at the end of the last loop. Each entry's II: the datapath's cost-mode II, and the
     process's copy of the state (one memory, :data:`PORTS` words a cycle) written k ×
     ``max_storage`` words and read the instance's x words an entry; depth: the datapath's,
-    plus the taken words' write and read (2) where it takes any."""
-    pos = {v: i for i, v in enumerate(retire_vars)}
-    index = {v.key: i for i, v in enumerate(program.variables)}
+    plus the taken words' write and read (2) where it takes any.
+
+    ``var_end`` (the slot design's, units/backsub.py's slot_retire: when each retired variable
+    is in the stream): the loops one after another drain between them, so a loop whose
+    instances wait on the last variables is better run last; the datapaths are also tried in
+    the order their last instance is ready (``ready_order``, the most work first among equals),
+    and that order is kept if it ends sooner (:func:`trial_end`), else the one above."""
     order = sorted(costs, key=lambda c: (-len(costs[c][0]) * costs[c][1],
                                          -1 if c == "small" else c))
+    base = _ordered_loops(program, retire_vars, costs, max_storage, accesses, order)
+    if var_end is None:
+        return base
+    ready = _ordered_loops(program, retire_vars, costs, max_storage, accesses,
+                           ready_order(program, retire_vars, costs))
+    return ready if trial_end(ready, var_end) < trial_end(base, var_end) else base
+
+
+def ready_order(program, retire_vars, costs: dict) -> list:
+    """The cost datapaths by when their last instance is ready (the retire position of its
+    last variable), the most work (instances x II) first among equals."""
+    pos = {v: i for i, v in enumerate(retire_vars)}
+    index = {v.key: i for i, v in enumerate(program.variables)}
+    last = {c: max(max(pos[index[k]] for k in program.factors[f].keys) for f in costs[c][0])
+            for c in costs}
+    return sorted(costs, key=lambda c: (last[c], -len(costs[c][0]) * costs[c][1],
+                                        -1 if c == "small" else c))
+
+
+def _ordered_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
+                   order: list) -> tuple[TrialLoop, ...]:
+    """:func:`trial_loops`' loops with the datapaths in ``order``."""
+    pos = {v: i for i, v in enumerate(retire_vars)}
+    index = {v.key: i for i, v in enumerate(program.variables)}
     taken = 0
     plans = []
     for c in order:
@@ -762,10 +790,11 @@ def trial_data_ii(bc) -> int:
 
 
 def trial_plan(program, blocks, loops: dict, tables: dict,
-               split: bool = False) -> tuple[TrialLoop, ...]:
+               split: bool = False, var_end: list[int] | None = None) -> tuple[TrialLoop, ...]:
     """trial_cost's loops for ``program`` (``blocks``: its block contexts; ``loops``: each
     datapath's cost-mode loop, :func:`cost_loops`; ``tables``: the emitted tables); ``split``:
-    in two processes (:func:`split_trial_loops`)."""
+    in two processes (:func:`split_trial_loops`); else ``var_end`` (the slot design's,
+    :func:`trial_var_end`) chooses the loops' order (:func:`trial_loops`)."""
     from fgc_backends.hls.units.backsub import retire_solved
     from fgc_backends.hls.units.state_update import retire_order
     variables, _ = retire_order(program, retire_solved(tables))
@@ -775,8 +804,21 @@ def trial_plan(program, blocks, loops: dict, tables: dict,
         members = small if key == "small" else (key,)
         costs[key] = ([f for i in members for f in blocks[i].instances], loop.ii, loop.depth)
         accesses[key] = sum(blocks[i].n_x_in for i in members)
-    return (split_trial_loops if split else trial_loops)(
-        program, variables, costs, max(v.storage_dim for v in program.variables), accesses)
+    width = max(v.storage_dim for v in program.variables)
+    if split:
+        return split_trial_loops(program, variables, costs, width, accesses)
+    return trial_loops(program, variables, costs, width, accesses, var_end)
+
+
+def trial_var_end(ctx) -> list[int] | None:
+    """When each retired variable reaches trial_cost in the slot design (units/backsub.py's
+    slot_retire), which orders its loops; None for back-substitution by columns (its cost
+    pass split in two: :func:`split_trial_loops`) or a design whose solve does not feed it."""
+    from fgc_backends.hls.units.backsub import COLUMN_LANES, slot_retire
+    from fgc_backends.hls.units.state_update import fed_by_backsub
+    if not fed_by_backsub(ctx.program, ctx.opts) or ctx.opts.backsub_lanes == COLUMN_LANES:
+        return None
+    return slot_retire(ctx)[2]
 
 
 def trial_b_data(program, loops, tables: dict) -> tuple[int, int]:
@@ -809,5 +851,6 @@ def trial_split(program, opts) -> bool:
 def trial_state(ctx) -> tuple[TrialLoop, ...]:
     """trial_cost's loops for the plan being built (``ctx``), from the cost-mode loops the
     datapath build left in ``ctx.shared["cost_loops"]``."""
-    return trial_plan(ctx.program, ctx.blocks, ctx.shared["cost_loops"], ctx.tables,
-                      trial_split(ctx.program, ctx.opts))
+    split = trial_split(ctx.program, ctx.opts)
+    return trial_plan(ctx.program, ctx.blocks, ctx.shared["cost_loops"], ctx.tables, split,
+                      None if split else trial_var_end(ctx))
