@@ -336,14 +336,14 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
                     rd[t] = x.idx;
                     rx[t] = x.idx;
                 }
-                const int i0 = 2 * (p0 + t), i1 = 2 * (p0 + t) + 1;
-                if (i0 >= j0) {
-                    colout[0].write(bank[i0][l0]);
-                    bank[i0][l0] = T(0);
+                // rows 2 (p0 + t) and 2 (p0 + t) + 1 (indices written out: they move with t)
+                if (2 * (p0 + t) >= j0) {
+                    colout[0].write(bank[2 * (p0 + t)][l0]);
+                    bank[2 * (p0 + t)][l0] = T(0);
                 }
-                if (i1 < rows) {
-                    colout[1].write(bank[i1][l0]);
-                    bank[i1][l0] = T(0);
+                if (2 * (p0 + t) + 1 < rows) {
+                    colout[1].write(bank[2 * (p0 + t) + 1][l0]);
+                    bank[2 * (p0 + t) + 1][l0] = T(0);
                 }
             }
             pre = below < pairs ? below : pairs;
@@ -356,11 +356,10 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
                 if (t < below) vin.read();
-                const int i = j0 + t;
-                const T x = bank[i][l0];
-                if ((i & 1) == 0) colout[0].write(x);
-                if ((i & 1) == 1) colout[1].write(x);
-                bank[i][l0] = T(0);
+                const T x = bank[j0 + t][l0];
+                if (((j0 + t) & 1) == 0) colout[0].write(x);
+                if (((j0 + t) & 1) == 1) colout[1].write(x);
+                bank[j0 + t][l0] = T(0);
             }
             FGC_CYCLES("qr_update", U, "vector_column", rows - j0, 1, 2);
         }
