@@ -38,13 +38,15 @@ def test_each_set_has_an_evaluate_unit_n_u_update_units_and_their_streams(two_en
         assert plan.unit(f"qr{s}_update").instances == n_u
         assert plan.unit(f"qr{s}_backsub").instances == 1
         mine = [c for c in plan.channels if c.name.startswith(f"qr{s}_")]
-        # per Update unit: the vector, tau/R_jj, its column to Evaluate, its row out; R_jj once;
-        # the Evaluate's vector and v_0 / tau / R_jj, and its row j entry to collect
-        assert sum(c.kind == "stream" for c in mine) == 4 * n_u + 4
+        # per Update unit: the vector, tau/R_jj, its column to Evaluate (a stream per row
+        # parity), its row out; R_jj once; the Evaluate's vector and v_0 / tau / R_jj, and its
+        # row j entry to collect
+        assert sum(c.kind == "stream" for c in mine) == 5 * n_u + 4
+        assert {f"qr{s}_col0_even", f"qr{s}_col0_odd"} <= {c.name for c in mine}
         assert {f"qr{s}_ve", f"qr{s}_te", f"qr{s}_e"} <= {c.name for c in mine}
         assert sum(c.kind == "pingpong" for c in mine) == 2
         work = next(m for m in plan.memories if m.name == f"qr{s}_work")
-        assert work.banks == n_u
+        assert work.banks == 2 * n_u  # each bank two memories by row parity
     assert {"cond", "nf"} <= {m.name for m in plan.memories}
 
 

@@ -25,7 +25,9 @@
 // start zero (the emitted design's: globals, zero in the bitstream) writes only a step's
 // non-zero entries (fgc_eliminate.h's qr_stack with CFG::BANKS_ZERO).
 // Declare it with `#pragma HLS ARRAY_PARTITION variable=work complete dim=1`: each bank is then
-// its own memory, passed to one Update process (UG1399, partitioned arrays in dataflow).
+// its own memory, passed to one Update process (UG1399, partitioned arrays in dataflow), and
+// `#pragma HLS ARRAY_PARTITION variable=work cyclic factor=2 dim=2`: each bank two memories by
+// row parity, so the unit holding the next pivot column streams it two rows a cycle.
 //
 // Out (k = min(rows, w + 1) reflections, columns 0 ... k - 1):
 // - cond: the conditional (R | S | d), rows 0 ... f - 1 of the triangular factor, row-major with
@@ -73,8 +75,10 @@
 //                     reflection j to its own columns c > j, c % N_UNITS == u, in its own bank
 //                     work[u] (read and written by that process only: its memory, no channel).
 //                     The unit holding column j + 1 streams that column as it stands (rows
-//                     max(j, 0) ... rows - 1) to the Evaluate (colq[u]) while the vector
-//                     arrives and zeroes it in its bank; its other columns go through one
+//                     max(j, 0) ... rows - 1) to the Evaluate (colq[u][i & 1], two rows a
+//                     cycle from its bank's two row-parity memories when dot_axpy follows)
+//                     while the vector arrives and zeroes it in its bank; its other columns
+//                     go through one
 //                     pipelined loop, column l's dot product beside column l - 1's update
 //                     (dot_axpy), which pays its depth once per reflection and takes the
 //                     vector, v_0 and tau as its first column needs them (the pivot's word
@@ -275,7 +279,7 @@ template <class CFG, int U>
 void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CFG::T> >& vin,
                hls::stream<qr_word<typename CFG::T> >& tin,
                typename CFG::T bank[CFG::MAX_ROWS][CFG::LOCAL_COLS],
-               hls::stream<typename CFG::T>& colout, hls::stream<typename CFG::T>& rowout) {
+               hls::stream<typename CFG::T> colout[2], hls::stream<typename CFG::T>& rowout) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
@@ -305,27 +309,60 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     // a reflection to apply to columns here: dot_axpy, which takes the vector, v_0 and tau as
     // its first column's words need them
     const bool fused = n > 1 && r > 0;
+    // the words of the vector below the pivot read before dot_axpy (by the column loop below)
+    int pre = 0;
     if (next_here) {
         // The next pivot column goes to the Evaluate as it is now (rows j0 ... rows - 1, j0 =
-        // max(j, 0)): the Evaluate applies reflection j to it, sends its row j entry to the
-        // collector and builds reflection j + 1 from the rest, and nothing reads the column in
-        // the bank again, so it is zeroed here (the banks are left zero). The n - 1 words below
-        // the pivot arrive meanwhile (n - 1 < rows - j0): trip rows - j0, II 1, depth 2
+        // max(j, 0)), row i on colout[i & 1]: the Evaluate applies reflection j to it, sends its
+        // row j entry to the collector and builds reflection j + 1 from the rest, and nothing
+        // reads the column in the bank again, so it is zeroed here (the banks are left zero).
         const int j0 = j > 0 ? j : 0;
-        for (int t = 0; t < rows - j0; ++t) {
+        if (fused) {
+            // Two rows a cycle: the bank is two memories by row parity (the caller's cyclic
+            // factor=2 partition of its rows), so the aligned pair (2p, 2p + 1) is one read and
+            // one write of each (row j0 - 1 of an odd j0 is row j - 1: zero since reflection
+            // j - 1, not sent); the words below the pivot arrive meanwhile, one an iteration,
+            // and dot_axpy takes the rest as they come: trip ceil(rows / 2) - floor(j0 / 2),
+            // II 1, depth 2
+            enum { MAX_PAIRS = CFG::MAX_ROWS / 2 + 1 };  // pragma constants: enums
+            const int p0 = j0 / 2, pairs = (rows + 1) / 2 - p0;
+            for (int t = 0; t < pairs; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_PAIRS
+#pragma HLS PIPELINE II=1
+                if (t < below) {
+                    const qr_word<T> x = vin.read();
+                    vd[t] = x.val;
+                    vx[t] = x.val;
+                    rd[t] = x.idx;
+                    rx[t] = x.idx;
+                }
+                // rows 2 (p0 + t) and 2 (p0 + t) + 1 (indices written out: they move with t)
+                if (2 * (p0 + t) >= j0) {
+                    colout[0].write(bank[2 * (p0 + t)][l0]);
+                    bank[2 * (p0 + t)][l0] = T(0);
+                }
+                if (2 * (p0 + t) + 1 < rows) {
+                    colout[1].write(bank[2 * (p0 + t) + 1][l0]);
+                    bank[2 * (p0 + t) + 1][l0] = T(0);
+                }
+            }
+            pre = below < pairs ? below : pairs;
+            FGC_CYCLES("qr_update", U, "vector_column", pairs, 1, 2);
+        } else {
+            // no dot_axpy after it (no reflection, or no other column here): one row a
+            // cycle while the n - 1 words below the pivot arrive (n - 1 < rows - j0): trip
+            // rows - j0, II 1, depth 2
+            for (int t = 0; t < rows - j0; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
-            if (t < below) {
-                const qr_word<T> x = vin.read();
-                vd[t] = x.val;
-                vx[t] = x.val;
-                rd[t] = x.idx;
-                rx[t] = x.idx;
+                if (t < below) vin.read();
+                const T x = bank[j0 + t][l0];
+                if (((j0 + t) & 1) == 0) colout[0].write(x);
+                if (((j0 + t) & 1) == 1) colout[1].write(x);
+                bank[j0 + t][l0] = T(0);
             }
-            colout.write(bank[j0 + t][l0]);
-            bank[j0 + t][l0] = T(0);
+            FGC_CYCLES("qr_update", U, "vector_column", rows - j0, 1, 2);
         }
-        FGC_CYCLES("qr_update", U, "vector_column", rows - j0, 1, 2);
     } else if (!fused) {
         // the n - 1 words below the pivot, not needed here: trip n - 1, II 1, depth 1
         for (int a = 0; a < below; ++a) {
@@ -391,7 +428,6 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
     T held[QR_HELD];  // the dot's words until their axpy (lag < QR_HELD iterations later)
     const int words = n * r;
     const int lag = n - 1 + QR_DOT_LAT + CFG::FOLD_LAT;
-    const bool from_broadcast = !next_here;  // the vector not read yet: the dot takes it
     T tau = T(0);
     int ld = lb, ad = 0, lq = lb, aq = 0, lx = lb, ax = 0;
     FGC_WAIT_AFTER("qr_update", U, "qr_finish", 0, "v0", words + lag - n);
@@ -411,7 +447,7 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
             // the word's vector entry and row: the first column's as they arrive, then kept
             T va = vd[ad];
             int row = rd[ad];
-            if (e < below && from_broadcast) {
+            if (e < below && e >= pre) {  // not read by the column loop: the dot takes it
                 const qr_word<T> w = vin.read();
                 va = w.val;
                 row = w.idx;
@@ -476,7 +512,7 @@ struct qr_update_units {
                     hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
                     hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS],
                     typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                    hls::stream<typename CFG::T> colq[CFG::N_UNITS],
+                    hls::stream<typename CFG::T> colq[CFG::N_UNITS][2],
                     hls::stream<typename CFG::T> rowq[CFG::N_UNITS]) {
 #pragma HLS INLINE
         qr_update<CFG, U>(j, rows, cols, k, vq[U], tq[U], work[U], colq[U], rowq[U]);
@@ -489,7 +525,7 @@ struct qr_update_units<CFG, U, true> {
     static void run(int, int, int, int, hls::stream<qr_word<typename CFG::T> >*,
                     hls::stream<qr_word<typename CFG::T> >*,
                     typename CFG::T (*)[CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                    hls::stream<typename CFG::T>*, hls::stream<typename CFG::T>*) {
+                    hls::stream<typename CFG::T> (*)[2], hls::stream<typename CFG::T>*) {
 #pragma HLS INLINE
     }
 };
@@ -514,15 +550,20 @@ inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typ
     if (i >= col) part[t % CFG::PARTIALS] += e * e;
 }
 
-// The next word of column j + 1 from the Update unit that holds it (colq[owner]): one read of
-// one of the N_UNITS streams, in a pipelined loop of the Evaluate.
+// Row i's word of column j + 1 from the Update unit that holds it (colq[owner][i & 1], the
+// stream of its row parity): one read of one of the 2 N_UNITS streams, in a pipelined loop of
+// the Evaluate.
 template <class CFG>
-inline typename CFG::T qr_owner_word(hls::stream<typename CFG::T> colq[CFG::N_UNITS], int owner) {
+inline typename CFG::T qr_owner_word(hls::stream<typename CFG::T> colq[CFG::N_UNITS][2],
+                                     int owner, int i) {
 #pragma HLS INLINE
     typename CFG::T e = typename CFG::T(0);
     for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
-        if (u == owner) e = colq[u].read();
+        for (int p = 0; p < 2; ++p) {
+#pragma HLS UNROLL
+            if (u == owner && p == (i & 1)) e = colq[u][p].read();
+        }
     }
     return e;
 }
@@ -541,7 +582,7 @@ inline typename CFG::T qr_owner_word(hls::stream<typename CFG::T> colq[CFG::N_UN
 // With no reflection to apply (n = 0; n = 1: the pivot row's negation, exact) the column is
 // received and passed on in one pass.
 template <class CFG>
-void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS],
+void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS][2],
                  hls::stream<qr_word<typename CFG::T> >& evq,
                  hls::stream<qr_word<typename CFG::T> >& etq, hls::stream<typename CFG::T>& exq,
                  qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1],
@@ -577,8 +618,8 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-            const T e = qr_owner_word<CFG>(colq, owner);
             const int i = j0 + t;
+            const T e = qr_owner_word<CFG>(colq, owner, i);
             qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, exq, vout, m, pivot, part);
         }
         FGC_CYCLES("qr_evaluate", 0, "receive_norm", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
@@ -601,8 +642,8 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-            const T e = qr_owner_word<CFG>(colq, owner);
             const int i = j0 + t;
+            const T e = qr_owner_word<CFG>(colq, owner, i);
             bool active = i == j;
             // the next word below the pivot
             if (a <= below && next.idx < i) next = evq.read();
@@ -750,8 +791,10 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS];
 #pragma HLS STREAM variable=tq depth=2
     hls::stream<typename CFG::T> rq;
-    hls::stream<typename CFG::T> colq[CFG::N_UNITS];
-#pragma HLS STREAM variable=colq depth=CFG::MAX_ROWS
+    // the next pivot column, a stream per row parity (its unit sends two rows a cycle)
+    enum { COL_DEPTH = (CFG::MAX_ROWS + 1) / 2 };
+    hls::stream<typename CFG::T> colq[CFG::N_UNITS][2];
+#pragma HLS STREAM variable=colq depth=COL_DEPTH
     hls::stream<typename CFG::T> rowq[CFG::N_UNITS];
 #pragma HLS STREAM variable=rowq depth=CFG::LOCAL_COLS
     // the Evaluate's copy of the vector: it takes a word when the column reaches its row, so
@@ -770,7 +813,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_collect<CFG>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
     FGC_DRAINED(tq, CFG::N_UNITS);
-    FGC_DRAINED(colq, CFG::N_UNITS);
+    FGC_DRAINED(&colq[0][0], 2 * CFG::N_UNITS);
     FGC_DRAINED(rowq, CFG::N_UNITS);
     FGC_DRAINED(&rq, 1);
     FGC_DRAINED(&evq, 1);

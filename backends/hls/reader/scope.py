@@ -114,12 +114,21 @@ class _Scope:
                 if name in self.globals and name not in own:
                     self.global_banks[name] = banks
         # a global partitioned completely in its first dimension: one of its rows (``work[U]``
-        # passed to a function) is one bank, named ``G[]`` where a parameter is bound to it
+        # passed to a function) is one bank, named ``G[]`` where a parameter is bound to it, or
+        # as many as a cyclic / block partition of a later dimension gives (``factor=F dim=d``,
+        # d >= 2: fgc_qr.h's banks by row parity)
         for _, code in self.files:
             for m in re.finditer(r"#\s*pragma\s+HLS\s+ARRAY_PARTITION\s+variable\s*=\s*(\w+)"
                                  r"\s+complete\s+dim\s*=\s*1\b", code, re.I):
                 if m.group(1) in self.globals and len(self.globals[m.group(1)].dims) > 1:
-                    self.global_banks[f"{m.group(1)}[]"] = 1
+                    row = 1
+                    for f in re.finditer(r"#\s*pragma\s+HLS\s+ARRAY_PARTITION\s+variable\s*=\s*"
+                                         + m.group(1) + r"\s+(?:cyclic|block)\s+factor\s*=\s*(\w+)"
+                                         r"\s+dim\s*=\s*(\d+)", code, re.I):
+                        factor = self._value(f.group(1), {})
+                        if int(f.group(2)) >= 2 and factor:
+                            row *= factor
+                    self.global_banks[f"{m.group(1)}[]"] = row
         self.bindings = self._bindings()
         self.memo: dict[tuple, _Count] = {}
         self.flatten = True  # read a callee in place (off: a function's own operations)
@@ -240,7 +249,8 @@ class _Scope:
             else:
                 factor = re.search(r"factor\s*=\s*(\w+)", words)
                 value = self._value(factor.group(1), env) if factor else None
-                out[var.group(1)] = value or 1
+                prior = out.get(var.group(1), 1)  # a partition of another dimension before it
+                out[var.group(1)] = None if prior is None else prior * (value or 1)
         return out
 
     def _value(self, expr: str, env: dict[str, int]) -> int | None:

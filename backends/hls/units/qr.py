@@ -93,8 +93,12 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             loops = [Loop("header", 1, 1, 1)]
             if next_here:
                 # the next pivot column streamed to the Evaluate (rows max(j, 0) ... rows - 1)
-                # while the n - 1 words below the pivot arrive
-                loops.append(Loop("vector_column", rows - max(j, 0), 1, 2))
+                # while the n - 1 words below the pivot arrive: before dot_axpy two rows a
+                # cycle, the aligned pairs (2p, 2p + 1) from p = max(j, 0) // 2 (the bank is
+                # two memories by row parity), else one
+                pairs = (rows + 1) // 2 - max(j, 0) // 2
+                loops.append(Loop("vector_column", pairs if r > 0 and n > 1 else
+                                  rows - max(j, 0), 1, 2))
             elif not (r > 0 and n > 1):
                 loops.append(Loop("vector", below, 1, 1))  # read, not needed here
             if r > 0 and n > 1:
@@ -295,8 +299,10 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
         channels.append(Channel(f"qr{s}_r", "stream", 1, ops.word_bits,
                                 f"qr{s}_finish", f"qr{s}_collect"))
         for u in range(opts.units):
-            channels.append(Channel(f"qr{s}_col{u}", "stream", max_rows, ops.word_bits,
-                                    f"qr{s}_update{u}", f"qr{s}_evaluate"))
+            # the next pivot column, a stream per row parity (its unit sends two rows a cycle)
+            for parity in ("even", "odd"):
+                channels.append(Channel(f"qr{s}_col{u}_{parity}", "stream", (max_rows + 1) // 2,
+                                        ops.word_bits, f"qr{s}_update{u}", f"qr{s}_evaluate"))
             channels.append(Channel(f"qr{s}_row{u}", "stream", 2, ops.word_bits,
                                     f"qr{s}_update{u}", f"qr{s}_collect"))
         # the Evaluate's copies of the vector (the whole vector: it takes a word when the
@@ -353,9 +359,12 @@ def _levels(ctx, sets, by_index, damping) -> None:
     sizes = ctx.sizes
     cols = sizes["MAX_W"] + 1
     local = -(-cols // opts.units)
+    # fgc_qr.h's banks are two memories each by row parity (WORK<s>'s cyclic partition);
+    # fgc_qr_stream.h's one
+    parities = 1 if opts.qr_unit == "stream" else 2
     for s in range(sets):  # accel.cpp.jinja's WORK<s>, CONDBUF<s>, UPDBUF<s>
         ctx.memories.append(Memory(f"qr{s}_work", opts.units * sizes["MAX_ROWS"] * local,
-                                   ops.word_bits, opts.units))
+                                   ops.word_bits, parities * opts.units))
         ctx.memories.append(Memory(f"qr{s}_condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
         ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)

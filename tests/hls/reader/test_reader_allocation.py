@@ -332,3 +332,22 @@ def test_each_kernel_reads_its_own_callees_allocation():
     readings = read_project([kernel("batch", 4, 2), kernel("window", 1, 2)], ADD_LATENCY)
     (issue,) = check(readings)
     assert issue.file == "window.cpp" and "II >= 7" in issue.message
+
+
+def test_a_row_of_a_global_also_partitioned_cyclic_in_its_rows_is_that_many_banks():
+    """fgc_qr.h's next pivot column two rows a cycle: ``WORK`` partitioned complete in its
+    first dimension and cyclic factor 2 in its rows, so row U (``work[U]``) is two memories,
+    four ports: rows 2r and 2r + 1 read and written in one iteration fit II 1. Without the
+    cyclic partition the same loop's four accesses need II 2 from one bank's two ports."""
+    pairs = UNITS.replace("bank[r] = bank[r] * v[r] + %EXTRA%;",
+                          "bank[2 * r] = bank[2 * r] * v[r];\n"
+                          "        bank[2 * r + 1] = bank[2 * r + 1] * v[r];").replace(
+        "r < ROWS; ++r", "r < ROWS / 2; ++r")
+    (loop,) = read_project([("u.cpp", pairs)], ADD_LATENCY)
+    assert loop.accesses == (("WORK[]", 4, 1),) and loop.ii_ports == 2
+    assert [i.rule for i in check([loop])] == ["ii_ports"]
+    two = pairs.replace("complete dim=1\n", "complete dim=1\n"
+                        "#pragma HLS ARRAY_PARTITION variable=WORK cyclic factor=2 dim=2\n")
+    (loop,) = read_project([("u.cpp", two)], ADD_LATENCY)
+    assert loop.accesses == (("WORK[]", 4, 2),) and loop.ii_ports == 1
+    assert check([loop]) == []

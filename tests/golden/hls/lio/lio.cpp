@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's by columns (the loader streaming COND to a process per end of the chain,
 // the state update fed by both):
-//   21 processes, 47 streams (n_u=4, 2 unit set(s))
+//   21 processes, 55 streams (n_u=4, 2 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -41,13 +41,17 @@
 //   stream qr0_t2 depth=2: qr0_finish -> qr0_update2
 //   stream qr0_t3 depth=2: qr0_finish -> qr0_update3
 //   stream qr0_r depth=1: qr0_finish -> qr0_collect
-//   stream qr0_col0 depth=87: qr0_update0 -> qr0_evaluate
+//   stream qr0_col0_even depth=44: qr0_update0 -> qr0_evaluate
+//   stream qr0_col0_odd depth=44: qr0_update0 -> qr0_evaluate
 //   stream qr0_row0 depth=2: qr0_update0 -> qr0_collect
-//   stream qr0_col1 depth=87: qr0_update1 -> qr0_evaluate
+//   stream qr0_col1_even depth=44: qr0_update1 -> qr0_evaluate
+//   stream qr0_col1_odd depth=44: qr0_update1 -> qr0_evaluate
 //   stream qr0_row1 depth=2: qr0_update1 -> qr0_collect
-//   stream qr0_col2 depth=87: qr0_update2 -> qr0_evaluate
+//   stream qr0_col2_even depth=44: qr0_update2 -> qr0_evaluate
+//   stream qr0_col2_odd depth=44: qr0_update2 -> qr0_evaluate
 //   stream qr0_row2 depth=2: qr0_update2 -> qr0_collect
-//   stream qr0_col3 depth=87: qr0_update3 -> qr0_evaluate
+//   stream qr0_col3_even depth=44: qr0_update3 -> qr0_evaluate
+//   stream qr0_col3_odd depth=44: qr0_update3 -> qr0_evaluate
 //   stream qr0_row3 depth=2: qr0_update3 -> qr0_collect
 //   stream qr0_ve depth=87: qr0_broadcast -> qr0_evaluate
 //   stream qr0_te depth=3: qr0_finish -> qr0_evaluate
@@ -61,13 +65,17 @@
 //   stream qr1_t2 depth=2: qr1_finish -> qr1_update2
 //   stream qr1_t3 depth=2: qr1_finish -> qr1_update3
 //   stream qr1_r depth=1: qr1_finish -> qr1_collect
-//   stream qr1_col0 depth=87: qr1_update0 -> qr1_evaluate
+//   stream qr1_col0_even depth=44: qr1_update0 -> qr1_evaluate
+//   stream qr1_col0_odd depth=44: qr1_update0 -> qr1_evaluate
 //   stream qr1_row0 depth=2: qr1_update0 -> qr1_collect
-//   stream qr1_col1 depth=87: qr1_update1 -> qr1_evaluate
+//   stream qr1_col1_even depth=44: qr1_update1 -> qr1_evaluate
+//   stream qr1_col1_odd depth=44: qr1_update1 -> qr1_evaluate
 //   stream qr1_row1 depth=2: qr1_update1 -> qr1_collect
-//   stream qr1_col2 depth=87: qr1_update2 -> qr1_evaluate
+//   stream qr1_col2_even depth=44: qr1_update2 -> qr1_evaluate
+//   stream qr1_col2_odd depth=44: qr1_update2 -> qr1_evaluate
 //   stream qr1_row2 depth=2: qr1_update2 -> qr1_collect
-//   stream qr1_col3 depth=87: qr1_update3 -> qr1_evaluate
+//   stream qr1_col3_even depth=44: qr1_update3 -> qr1_evaluate
+//   stream qr1_col3_odd depth=44: qr1_update3 -> qr1_evaluate
 //   stream qr1_row3 depth=2: qr1_update3 -> qr1_collect
 //   stream qr1_ve depth=87: qr1_broadcast -> qr1_evaluate
 //   stream qr1_te depth=3: qr1_finish -> qr1_evaluate
@@ -3622,7 +3630,7 @@ struct LesConfig {
 // ---- partial QR (paper A): per step the stacked rows [A | b] of its factors, its children's new
 // factors and the damping rows sqrt(mu) I, column c in bank c % N_UNITS of its unit set's work
 // memory; qr_step runs one DATAFLOW region per reflection (qr_broadcast, qr_finish -> 4 qr_update
-// units -> qr_evaluate, qr_collect; 17 streams) and stores the conditional and the new factor. A schedule
+// units -> qr_evaluate, qr_collect; 24 streams) and stores the conditional and the new factor. A schedule
 // level's steps go 2 at a time to the unit sets, side by side in one DATAFLOW region.
 L WORK0[N_UNITS][MAX_ROWS][LOCAL_COLS];  // unit set 0's banks (partitioned by bank in eliminate_all)
 L CONDBUF0[MAX_F * LesConfig::MAX_COLS];  // its step's conditional
@@ -3687,8 +3695,12 @@ struct QrSets {
 bool eliminate_all(T mu) {
     // each unit set's banks: the global itself partitioned (what qr_stack and the Update units
     // read and write), one memory per bank, N_UNITS words a cycle
+    // (each bank two memories by row parity: fgc_qr.h streams the next pivot column two rows a
+    // cycle)
 #pragma HLS ARRAY_PARTITION variable=WORK0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=WORK0 cyclic factor=2 dim=2
 #pragma HLS ARRAY_PARTITION variable=WORK1 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=WORK1 cyclic factor=2 dim=2
     return qr_eliminate_all<LesConfig, QrSets>(mu);
 }
 

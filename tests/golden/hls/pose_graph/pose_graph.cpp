@@ -10,7 +10,7 @@
 // The linear solver's process network (from the plan): the units' DATAFLOW regions, then
 // back_substitute's by columns (the loader streaming COND to a process per end of the chain,
 // the state update fed by both):
-//   13 processes, 27 streams (n_u=4, 1 unit set(s))
+//   13 processes, 31 streams (n_u=4, 1 unit set(s))
 //   process qr0_broadcast
 //   process qr0_finish
 //   process qr0_update0
@@ -33,13 +33,17 @@
 //   stream qr0_t2 depth=2: qr0_finish -> qr0_update2
 //   stream qr0_t3 depth=2: qr0_finish -> qr0_update3
 //   stream qr0_r depth=1: qr0_finish -> qr0_collect
-//   stream qr0_col0 depth=54: qr0_update0 -> qr0_evaluate
+//   stream qr0_col0_even depth=27: qr0_update0 -> qr0_evaluate
+//   stream qr0_col0_odd depth=27: qr0_update0 -> qr0_evaluate
 //   stream qr0_row0 depth=2: qr0_update0 -> qr0_collect
-//   stream qr0_col1 depth=54: qr0_update1 -> qr0_evaluate
+//   stream qr0_col1_even depth=27: qr0_update1 -> qr0_evaluate
+//   stream qr0_col1_odd depth=27: qr0_update1 -> qr0_evaluate
 //   stream qr0_row1 depth=2: qr0_update1 -> qr0_collect
-//   stream qr0_col2 depth=54: qr0_update2 -> qr0_evaluate
+//   stream qr0_col2_even depth=27: qr0_update2 -> qr0_evaluate
+//   stream qr0_col2_odd depth=27: qr0_update2 -> qr0_evaluate
 //   stream qr0_row2 depth=2: qr0_update2 -> qr0_collect
-//   stream qr0_col3 depth=54: qr0_update3 -> qr0_evaluate
+//   stream qr0_col3_even depth=27: qr0_update3 -> qr0_evaluate
+//   stream qr0_col3_odd depth=27: qr0_update3 -> qr0_evaluate
 //   stream qr0_row3 depth=2: qr0_update3 -> qr0_collect
 //   stream qr0_ve depth=54: qr0_broadcast -> qr0_evaluate
 //   stream qr0_te depth=3: qr0_finish -> qr0_evaluate
@@ -1687,7 +1691,7 @@ struct LesConfig {
 // ---- partial QR (paper A): per step the stacked rows [A | b] of its factors, its children's new
 // factors and the damping rows sqrt(mu) I, column c in bank c % N_UNITS of its unit set's work
 // memory; qr_step runs one DATAFLOW region per reflection (qr_broadcast, qr_finish -> 4 qr_update
-// units -> qr_evaluate, qr_collect; 17 streams) and stores the conditional and the new factor. A schedule
+// units -> qr_evaluate, qr_collect; 24 streams) and stores the conditional and the new factor. A schedule
 // level's steps go 1 at a time to the unit sets, side by side in one DATAFLOW region.
 L WORK0[N_UNITS][MAX_ROWS][LOCAL_COLS];  // unit set 0's banks (partitioned by bank in eliminate_all)
 L CONDBUF0[MAX_F * LesConfig::MAX_COLS];  // its step's conditional
@@ -1732,7 +1736,10 @@ struct QrSets {
 bool eliminate_all(T mu) {
     // each unit set's banks: the global itself partitioned (what qr_stack and the Update units
     // read and write), one memory per bank, N_UNITS words a cycle
+    // (each bank two memories by row parity: fgc_qr.h streams the next pivot column two rows a
+    // cycle)
 #pragma HLS ARRAY_PARTITION variable=WORK0 complete dim=1
+#pragma HLS ARRAY_PARTITION variable=WORK0 cyclic factor=2 dim=2
     return qr_eliminate_all<LesConfig, QrSets>(mu);
 }
 
