@@ -393,7 +393,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     from fgc_backends.hls.units.datapath import trial_banked, trial_span
     from fgc_backends.hls.units.lm_control import retire_step_test
     split = retire_step_test(program, plan.options)
-    trial = _trial_context(program, context["blocks"], blocks, phase, split)
+    trial = _trial_context(program, context["blocks"], blocks, phase, split,
+                           None if split else _trial_var_end(program, plan))
     if split:  # per variable the trial-cost processes it goes to (bit q: process q)
         send = [0] * len(program.variables)
         offsets = {sum(v.storage_dim for v in program.variables[:i]): i
@@ -417,6 +418,23 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     # the column design: trial_cost's gathers from DATA_BUF's two banks (units/datapath.py)
     trial_spans = [trial_span(bc) for bc in context["blocks"]] \
         if trial_banked(program, plan.options) else None
+    # the factors whose rows the datapaths write straight into a unit set's banks (units/qr.py's
+    # rows_in_banks): per factor its set (-1: none), first row and its step's right-hand side
+    # column; per set the step they make up
+    from fgc_backends.hls.units.qr import rows_in_banks
+    tables = _tables(program)
+    in_banks = rows_in_banks(program, plan.options, tables)
+    banks = None
+    if in_banks:
+        n = len(program.factors)
+        steps = sorted({(u, s) for u, s, _ in in_banks.values()})
+        banks = {"set": [in_banks[f][0] if f in in_banks else -1 for f in range(n)],
+                 "row": [in_banks[f][2] if f in in_banks else 0 for f in range(n)],
+                 "w": [tables["STEP_W"][in_banks[f][1]] if f in in_banks else 0
+                       for f in range(n)],
+                 "step": [s for _, s in steps]}
+    for b in blocks:
+        b.banked = any(f in in_banks for f in b.instances)
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
@@ -443,7 +461,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
             # the copies into X (units/lm_control.py's retire_step_test)
             "retire_test": retire_step_test(program, plan.options),
-            "small": shared,
+            "small": shared, "banks": banks,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
             "bs_slots": _backsub_slots(program),
@@ -540,8 +558,19 @@ def _cascade_context(program: Program, plan) -> dict:
             "step_streamed": [kids[s][0] for s in range(n)]}
 
 
+def _trial_var_end(program: Program, plan):
+    """units/datapath.py's trial_var_end for the plan's options (the order of trial_cost's
+    loops is the plan's)."""
+    from fgc_backends.hls.plan.assemble import PlanBuild
+    from fgc_backends.hls.units.datapath import trial_var_end
+    les_precision = plan.options.les_precision or (
+        program.solver.les_precision if plan.options.precision is None else plan.precision)
+    return trial_var_end(PlanBuild(program, plan.options, plan.ops,
+                                   plan.target.ops(les_precision)))
+
+
 def _trial_context(program: Program, contexts, blocks, phase: dict,
-                   split: bool = False) -> list[dict]:
+                   split: bool = False, var_end: list[int] | None = None) -> list[dict]:
     """trial_cost's loops as accel.cpp.jinja prints them (units/datapath.py's trial_plan on
     the plan's cost-mode loops): per loop its entries' instance (and block type, for the
     shared small datapath), the storage words of the variables each takes ([x0, x1) in x, k
@@ -558,7 +587,7 @@ def _trial_context(program: Program, contexts, blocks, phase: dict,
     out = []
     tables = _tables(program)
     pos = trial_positions(program, tables)
-    for lp in trial_plan(program, contexts, cost_loops(procs), tables, split):
+    for lp in trial_plan(program, contexts, cost_loops(procs), tables, split, var_end):
         x0, x1, at = [], [], []
         for _, taking in lp.entries:
             row = [(offsets[v], offsets[v + 1]) for v in taking]

@@ -390,3 +390,19 @@ def test_cycle_counting_prices_levels_wider_than_the_unit_sets():
     assert counted > 0 and abs(counted - model) <= 0.01 * model, (counted, model)
     for g, (counted, model) in phases.items():
         assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+
+
+def test_one_step_rows_in_the_banks_match_the_simulator(tmp_path):
+    """One Gauss-Newton step (the one-step policy): level 0's first steps take the rows the
+    datapaths wrote into their banks (units/qr.py's rows_in_banks) instead of stacking them
+    from AB; the solve is the simulator's."""
+    graph = robust_chain(8)
+    program = compile_graph(graph, SolverConfig(method="gn", linear="qr", max_iterations=1),
+                            name="one_step")
+    project = emit(program, tmp_path, HlsConfig(scalar="double"))
+    text = (tmp_path / "one_step.cpp").read_text()
+    assert "FACTOR_BANK_SET" in text and "in_place, dirty" in text
+    data = problem_data(graph, program)
+    result = run_csim(project, program, data)
+    reference = sim.run(program, data, precision="float64")
+    _check_against_reference("one_step", program, result, reference, "double")

@@ -319,3 +319,34 @@ def test_the_gradient_runs_beside_the_datapaths(lio_small, tmp_path):
     acc = text[text.index("bool accumulate("):]
     acc = acc[:acc.index("\n}\n")]
     assert "grad.read()" in acc and "AB[" not in acc
+
+
+def _trial_program():
+    """Four variables retired a, b, c, d and three datapaths of one instance each: block 0's
+    (the most work) on c and d (ready last), block 1's on a, block 2's on b."""
+    from types import SimpleNamespace as Ns
+    variables = [Ns(key=k, storage_dim=3) for k in "abcd"]
+    factors = [Ns(keys=("c", "d")), Ns(keys=("a",)), Ns(keys=("b",))]
+    return Ns(variables=variables, factors=factors)
+
+
+def test_the_cost_pass_runs_its_loops_as_they_are_ready_when_that_ends_sooner():
+    from fgc_backends.hls.units.datapath import trial_end, trial_loops
+    program = _trial_program()
+    costs = {0: ([0], 300, 500), 1: ([1], 100, 200), 2: ([2], 100, 200)}
+    accesses = {0: 6, 1: 3, 2: 3}
+    base = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses)
+    assert [lp.key for lp in base] == [0, 1, 2]  # without the retire's ends: the most work first
+    # the retire sends a at 100, b at 200, c and d at 900 and 1,000: the most work first waits
+    # for d (1,000) and drains 502 + 200 + 200 after it; ready first, blocks 1 and 2 run before
+    var_end = [100, 200, 900, 1000]
+    ready = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end)
+    assert [lp.key for lp in ready] == [1, 2, 0]
+    assert trial_end(ready, var_end) == 1000 + 502 < trial_end(base, var_end) == 1000 + 502 + 400
+    # whatever the retire's ends, the order kept never ends later than the most work first
+    rng = np.random.default_rng(7)
+    for _ in range(20):
+        ends = np.cumsum(rng.integers(1, 600, size=4)).tolist()
+        chosen = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, ends)
+        assert trial_end(chosen, ends) <= trial_end(base, ends)
+        assert chosen == base or trial_end(chosen, ends) < trial_end(base, ends)

@@ -68,3 +68,42 @@ def test_the_qr_phases_are_the_solvers_linear_phases(serial):
     qr = [ph for ph in plan.phases if ph.name.startswith("qr_")]
     assert qr and all(ph.linear for ph in qr)
     assert sum(phase_cycles(ph) for ph in qr) > 0
+
+
+def test_one_step_rows_go_straight_into_the_banks_and_leave_the_first_stack():
+    """Under the one-step policy (GN, one iteration: one linearisation, one solve) the factors
+    of level 0's first steps (one per unit set) are written by the datapaths into their set's
+    banks at the rows the stack would give them; the plan's level-0 stack of those steps has no
+    factor rows loop, and every other stack, and LM's, keeps its own."""
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.qr import rows_in_banks
+
+    one = chain(7, linear="qr", method="gn", max_iterations=1)
+    lm = chain(7, linear="qr")
+    t = _tables(one)
+    banked = rows_in_banks(one, PlanOptions.of(one), t)
+    assert rows_in_banks(lm, PlanOptions.of(lm), _tables(lm)) == {}
+    first = t["LEVEL_STEPS"][:2]
+    fb, cb = t["STEP_FACTOR_BEGIN"], t["FACTOR_COLMAP_BEGIN"]
+    expected = {}
+    for u, s in enumerate(first):
+        row = 0
+        for e in range(fb[s], fb[s + 1]):
+            f = t["STEP_FACTORS"][e]
+            expected[f] = (u, s, row)
+            row += (t["FACTOR_A_OFF"][f + 1] - t["FACTOR_A_OFF"][f]) // (cb[f + 1] - cb[f] + 1)
+        assert 0 < row <= t["STEP_ROWS"][s]
+    assert banked == expected
+
+    def stacks(program):
+        plan = build_plan(program, PlanOptions.of(program))
+        return {p.name: [lp.name for lp in p.loops] for ph in plan.phases
+                if ph.name.startswith("qr_stack_level") for p in ph.processes}
+
+    mine, theirs = stacks(one), stacks(lm)
+    for s in first:
+        assert "factor_rows" not in mine[f"stack{s}"]
+        assert "factor_rows" in theirs[f"stack{s}"]
+    later = [n for n in mine if n.startswith("stack") and int(n[5:]) not in first
+             and fb[int(n[5:]) + 1] > fb[int(n[5:])]]  # the later steps with factors of their own
+    assert later and all("factor_rows" in mine[n] for n in later)

@@ -23,7 +23,10 @@
 // The unit-set wiring stays the kernel's (it depends on the number of unit sets: each set its
 // own memories and RTL instance): SETS holds its hooks, static functions the kernel defines
 // after its qr_set<u> and qr_level -
-//   SETS::stack(u, s, root_mu, skip, m)  qr_stack_rows<CFG>(s, root_mu, WORK<u>, skip, m)
+//   SETS::stack(u, s, root_mu, skip, m, solve)  qr_stack_rows<CFG>(s, root_mu, WORK<u>, skip,
+//                                m, in_place, dirty) (solve: not the leaf step; the kernel
+//                                decides whether the datapaths left step s's factor rows in
+//                                set u's banks, or rows of another step to zero first)
 //   SETS::level(has, s, m, bad)  the qr_level region: set u takes step s[u]'s m[u] rows where
 //                                has[u] (else none), bad[u] set if rank deficient
 //   SETS::commit(u, s)           qr_commit<CFG>(s, CONDBUF<u>, UPDBUF<u>)
@@ -513,15 +516,19 @@ void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
 // banks: each bank has two ports too), the damping rows a word a cycle; counted as the plan's
 // stack_loops price them. `skip`: bit k set, the k-th of the step's factors is not stacked (the
 // marginal's step once its rows hold nothing: qr_eliminate_all's live leaf step), `m` the rows stacked
-// (STEP_ROWS[s] less the skipped factors'; skip 0: all of them).
+// (STEP_ROWS[s] less the skipped factors'; skip 0: all of them). `in_place`: the step's factor
+// rows are in the banks already (the kernel's datapaths wrote them: only the row count
+// advances past them); `dirty` > 0: that many rows hold another step's factor rows the
+// datapaths wrote for a solve that did not come (zeroed first, as the unzeroed banks' rows).
 template <class CFG>
 void qr_stack_rows(int s, typename CFG::T root_mu,
                    typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                   unsigned skip, int m) {
+                   unsigned skip, int m, bool in_place = false, int dirty = 0) {
     typedef typename CFG::T T;
     FGC_PHASE("qr_stack");
     const int w = STEP_W[s], f = STEP_F[s];
-    const int zero = CFG::BANKS_ZERO ? 0 : m * CFG::LOCAL_COLS;
+    const int rows = CFG::BANKS_ZERO ? dirty : (dirty > m ? dirty : m);
+    const int zero = rows * CFG::LOCAL_COLS;
     for (int e = 0, i = 0, c = 0; e < zero; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BANKS
 #pragma HLS PIPELINE II=1
@@ -547,6 +554,10 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
         const int d = FACTOR_COLMAP_BEGIN[fac + 1] - cb;
         const int a0 = FACTOR_A_OFF[fac];
         const int words = FACTOR_A_OFF[fac + 1] - a0;  // its rows x (d + 1)
+        if (in_place) {  // the datapath wrote them there (the kernel's rows into the banks)
+            row = row + words / (d + 1);
+            continue;
+        }
         // row r, column c of its [A | b] into the step's row `row + r`
         for (int k = 0, r = 0, c = 0; k < words; k += PORTS) {  // PORTS words a cycle
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_ROWS
@@ -670,7 +681,7 @@ bool qr_eliminate_all(typename CFG::T mu, int leaf = -1, bool live = false) {
                 has[u] = i + u < end;
                 s[u] = !has[u] ? 0 : one ? leaf : LEVEL_STEPS[i + u];
                 m[u] = !has[u] ? 0 : gone ? CFG::LEAF_LIVE_ROWS : STEP_ROWS[s[u]];
-                if (has[u]) SETS::stack(u, s[u], root_mu, gone ? CFG::LEAF_SKIP : 0u, m[u]);
+                if (has[u]) SETS::stack(u, s[u], root_mu, gone ? CFG::LEAF_SKIP : 0u, m[u], !one);
                 bad[u] = false;
             }
             FGC_PHASE("qr");

@@ -555,6 +555,23 @@ def backsub_phases(ctx, unit: str) -> None:
     (:func:`fgc_backends.hls.units.state_update.retire_timing`: a variable an iteration, as its
     step's solution arrives), priced by :func:`retire_region`: the slots' loops, then what the
     retire adds after the last slot (``retire_tail``)."""
+    ops = ctx.les
+    slots, region, var_end = slot_retire(ctx)
+    a = sum(lp.cycles for loops in slots for lp in loops)
+    # the solved words to the state update, a pair a stream word (back_substitute's dx)
+    ctx.channels.append(Channel("backsub_dx", "stream", ctx.sizes["MAX_F"], 2 * ops.word_bits,
+                                "backsub_slots", "backsub_retire"))
+    _solve_phase(ctx, unit, Process("backsub_slots", unit,
+                                    tuple(lp for loops in slots for lp in loops)),
+                 a, region, var_end)
+
+
+def slot_retire(ctx) -> tuple[list, int, list[int]]:
+    """The slot design's back_substitute region as :func:`backsub_phases` prices it: per slot
+    its loops, the region's end (:func:`retire_region`) and ``var_end``, when each retired
+    variable's words are in trial_cost's stream (in the retire order). The emitter asks it too
+    (the order of trial_cost's loops is chosen on these ends: units/datapath.py's
+    trial_loops)."""
     from fgc_backends.hls.units.state_update import retire_timing
     tables, timing, ops = ctx.tables, ctx.les_timing, ctx.les
     lanes = ctx.opts.backsub_lanes
@@ -569,13 +586,7 @@ def backsub_phases(ctx, unit: str) -> None:
                               ctx.opts.state_allocation)
     var_end: list[int] = []
     region = retire_region(slots, sent, counts, ii, depth, var_end)
-    a = sum(lp.cycles for loops in slots for lp in loops)
-    # the solved words to the state update, a pair a stream word (back_substitute's dx)
-    ctx.channels.append(Channel("backsub_dx", "stream", ctx.sizes["MAX_F"], 2 * ops.word_bits,
-                                "backsub_slots", "backsub_retire"))
-    _solve_phase(ctx, unit, Process("backsub_slots", unit,
-                                    tuple(lp for loops in slots for lp in loops)),
-                 a, region, var_end)
+    return slots, region, var_end
 
 
 def _solve_phase(ctx, unit: str, solver: Process, busy: int, region: int,

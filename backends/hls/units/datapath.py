@@ -218,9 +218,12 @@ def small_allocation(program, blocks, opts, mode: str, table
     alloc = dict(opts.allocation)
     branches = small_branch_ops(program, blocks, mode)
     accesses: dict[int, int] = {}
+    from fgc_backends.hls.plan.loops import _tables
+    in_banks = banked_blocks(program, opts, _tables(program)) if mode == "jacobian" else ()
     for i in small_blocks(program):
         for a, (n, _) in enumerate(instance_accesses(blocks[i], mode,
-                                                     program.solver.linear == "qr")):
+                                                     program.solver.linear == "qr",
+                                                     i in in_banks)):
             accesses[a] = accesses.get(a, 0) + n
     ii = loop_ii((n, 1) for n in accesses.values())
     if mode == "cost":  # the running total, in instance order: through the adder
@@ -308,21 +311,36 @@ def robust_ops(bc) -> dict[str, int]:
     return {k: n for k, n in ops.items() if n}
 
 
-def instance_accesses(bc, mode: str, grad_stream: bool = False) -> list[tuple[int, int]]:
+def instance_accesses(bc, mode: str, grad_stream: bool = False,
+                      banked: bool = False) -> list[tuple[int, int]]:
     """(accesses, banks) of one instance to each global memory the Jacobian (``mode``
     "jacobian") or cost loop touches: X (the variables' storage), DATA_BUF (its measurements
     and noise parameters, two robust words a member) and, in Jacobian mode, AB (its whitened
     rows, m × (d + 1) words). None of them is partitioned (one bank, two ports). A member
     without a robust loss reads no robust words. ``grad_stream`` (QR, Jacobian mode): the
     rows go to the gradient's stream too, m × padded / PORTS words, one a cycle (counted as
-    m × padded accesses of one two-port bank: the same cycles)."""
+    m × padded accesses of one two-port bank: the same cycles). ``banked`` (units/qr.py's
+    rows_in_banks: the block's instances of level 0's first steps): the rows into a unit
+    set's banks too, m × (d + 1) words through a run-time bank index (t % n_u), counted as
+    one two-port memory's accesses, as AB's."""
     data = sum(m.meas_words + m.n_params + 2 * m.robust for m in bc.members)
     out = [(bc.n_x_in, 1), (data, 1)]
     if mode == "jacobian":
         out.append((bc.m * bc.stride, 1))
         if grad_stream:
             out.append((bc.m * bc.padded, 1))
+        if banked:
+            out.append((bc.m * bc.stride, 1))
     return out
+
+
+def banked_blocks(program, opts, tables) -> frozenset[int]:
+    """The block types with an instance whose rows go straight into a unit set's banks
+    (units/qr.py's rows_in_banks)."""
+    from fgc_backends.hls.units.qr import rows_in_banks
+
+    banked = rows_in_banks(program, opts, tables)
+    return frozenset(f.block for i, f in enumerate(program.factors) if i in banked)
 
 
 def build(ctx) -> None:
@@ -344,6 +362,7 @@ def build(ctx) -> None:
     # the column design: trial_cost's loops at the IIs that keep up with its retire
     banked = trial_banked(program, opts)
     chosen = keep_up_ii(ctx, allocations, small) if banked else {}
+    in_banks = banked_blocks(program, opts, ctx.tables)
     for i, (b, bc) in enumerate(zip(program.blocks, ctx.blocks, strict=True)):
         if opts.jacobian_storage == "raw":
             words = raw_jacobian_words(b) * len(bc.instances)
@@ -367,7 +386,8 @@ def build(ctx) -> None:
                 ii = chosen[i]  # loop, gather_trial_<b> from DATA_BUF's two banks
             else:
                 ii = max(issue, loop_ii(instance_accesses(bc, mode,
-                                                          program.solver.linear == "qr")))
+                                                          program.solver.linear == "qr",
+                                                          i in in_banks and mode == "jacobian")))
             if mode == "cost":  # the emitted cost_of_<b> sums the instances' costs in order (the
                 ii = max(ii, ops.add.latency)  # simulator's): a recurrence through the adder
             # one evaluation ends no earlier than its critical path, nor before the allocated
@@ -520,8 +540,8 @@ class TrialLoop:
         return f"cost_{self.key}"
 
 
-def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict
-                ) -> tuple[TrialLoop, ...]:
+def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
+                var_end: list[int] | None = None) -> tuple[TrialLoop, ...]:
     """trial_cost's loops, in the order the process runs them: per cost datapath (``costs``:
     key -> (instances, cost-mode II, depth), a block type's own or the small types' shared
     one; ``accesses[key]``: the x words an instance gathers) its instances in the order their
@@ -533,11 +553,39 @@ def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: d
     entries at the end of the last loop. Each entry's II: the datapath's cost-mode II, and the
     process's copy of the state (one memory, :data:`PORTS` words a cycle) written k ×
     ``max_storage`` words and read the instance's x words an entry; depth: the datapath's,
-    plus the taken words' write and read (2) where it takes any."""
-    pos = {v: i for i, v in enumerate(retire_vars)}
-    index = {v.key: i for i, v in enumerate(program.variables)}
+    plus the taken words' write and read (2) where it takes any.
+
+    ``var_end`` (the slot design's, units/backsub.py's slot_retire: when each retired variable
+    is in the stream): the loops one after another drain between them, so a loop whose
+    instances wait on the last variables is better run last; the datapaths are also tried in
+    the order their last instance is ready (``ready_order``, the most work first among equals),
+    and that order is kept if it ends sooner (:func:`trial_end`), else the one above."""
     order = sorted(costs, key=lambda c: (-len(costs[c][0]) * costs[c][1],
                                          -1 if c == "small" else c))
+    base = _ordered_loops(program, retire_vars, costs, max_storage, accesses, order)
+    if var_end is None:
+        return base
+    ready = _ordered_loops(program, retire_vars, costs, max_storage, accesses,
+                           ready_order(program, retire_vars, costs))
+    return ready if trial_end(ready, var_end) < trial_end(base, var_end) else base
+
+
+def ready_order(program, retire_vars, costs: dict) -> list:
+    """The cost datapaths by when their last instance is ready (the retire position of its
+    last variable), the most work (instances x II) first among equals."""
+    pos = {v: i for i, v in enumerate(retire_vars)}
+    index = {v.key: i for i, v in enumerate(program.variables)}
+    last = {c: max(max(pos[index[k]] for k in program.factors[f].keys) for f in costs[c][0])
+            for c in costs}
+    return sorted(costs, key=lambda c: (last[c], -len(costs[c][0]) * costs[c][1],
+                                        -1 if c == "small" else c))
+
+
+def _ordered_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
+                   order: list) -> tuple[TrialLoop, ...]:
+    """:func:`trial_loops`' loops with the datapaths in ``order``."""
+    pos = {v: i for i, v in enumerate(retire_vars)}
+    index = {v.key: i for i, v in enumerate(program.variables)}
     taken = 0
     plans = []
     for c in order:
@@ -742,10 +790,11 @@ def trial_data_ii(bc) -> int:
 
 
 def trial_plan(program, blocks, loops: dict, tables: dict,
-               split: bool = False) -> tuple[TrialLoop, ...]:
+               split: bool = False, var_end: list[int] | None = None) -> tuple[TrialLoop, ...]:
     """trial_cost's loops for ``program`` (``blocks``: its block contexts; ``loops``: each
     datapath's cost-mode loop, :func:`cost_loops`; ``tables``: the emitted tables); ``split``:
-    in two processes (:func:`split_trial_loops`)."""
+    in two processes (:func:`split_trial_loops`); else ``var_end`` (the slot design's,
+    :func:`trial_var_end`) chooses the loops' order (:func:`trial_loops`)."""
     from fgc_backends.hls.units.backsub import retire_solved
     from fgc_backends.hls.units.state_update import retire_order
     variables, _ = retire_order(program, retire_solved(tables))
@@ -755,8 +804,21 @@ def trial_plan(program, blocks, loops: dict, tables: dict,
         members = small if key == "small" else (key,)
         costs[key] = ([f for i in members for f in blocks[i].instances], loop.ii, loop.depth)
         accesses[key] = sum(blocks[i].n_x_in for i in members)
-    return (split_trial_loops if split else trial_loops)(
-        program, variables, costs, max(v.storage_dim for v in program.variables), accesses)
+    width = max(v.storage_dim for v in program.variables)
+    if split:
+        return split_trial_loops(program, variables, costs, width, accesses)
+    return trial_loops(program, variables, costs, width, accesses, var_end)
+
+
+def trial_var_end(ctx) -> list[int] | None:
+    """When each retired variable reaches trial_cost in the slot design (units/backsub.py's
+    slot_retire), which orders its loops; None for back-substitution by columns (its cost
+    pass split in two: :func:`split_trial_loops`) or a design whose solve does not feed it."""
+    from fgc_backends.hls.units.backsub import COLUMN_LANES, slot_retire
+    from fgc_backends.hls.units.state_update import fed_by_backsub
+    if not fed_by_backsub(ctx.program, ctx.opts) or ctx.opts.backsub_lanes == COLUMN_LANES:
+        return None
+    return slot_retire(ctx)[2]
 
 
 def trial_b_data(program, loops, tables: dict) -> tuple[int, int]:
@@ -789,5 +851,6 @@ def trial_split(program, opts) -> bool:
 def trial_state(ctx) -> tuple[TrialLoop, ...]:
     """trial_cost's loops for the plan being built (``ctx``), from the cost-mode loops the
     datapath build left in ``ctx.shared["cost_loops"]``."""
-    return trial_plan(ctx.program, ctx.blocks, ctx.shared["cost_loops"], ctx.tables,
-                      trial_split(ctx.program, ctx.opts))
+    split = trial_split(ctx.program, ctx.opts)
+    return trial_plan(ctx.program, ctx.blocks, ctx.shared["cost_loops"], ctx.tables, split,
+                      None if split else trial_var_end(ctx))

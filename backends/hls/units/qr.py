@@ -175,17 +175,46 @@ def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[Bound
     return evaluate, update
 
 
+def rows_in_banks(program, opts, tables: dict) -> dict[int, tuple[int, int, int]]:
+    """The factors whose rows the datapaths write straight into a unit set's banks (besides
+    AB), ``factor -> (set, step, its first row in the step)``: under the one-step policy
+    (``SolverConfig.one_step``: one linearisation, then one solve) with the Householder unit
+    (its ``qr_step`` leaves the banks zero), the factors of the steps the solve's first
+    stack takes, level 0's first ``sets`` steps, set u the u-th (``qr_eliminate_all``'s order).
+    Their rows are at the step's rows where ``qr_stack_rows`` would put them, so that stack
+    only advances past them. Empty otherwise (LM's retries stack from AB again; the stream
+    unit's banks are not left zero)."""
+    solver = program.solver
+    if solver.linear != "qr" or not solver.one_step or opts.qr_unit != "householder":
+        return {}
+    sets = unit_sets_of(program, opts)
+    lb = tables["LEVEL_BEGIN"]
+    out = {}
+    fb, cb = tables["STEP_FACTOR_BEGIN"], tables["FACTOR_COLMAP_BEGIN"]
+    for u, s in enumerate(tables["LEVEL_STEPS"][lb[0]:lb[1]][:sets]):
+        row = 0
+        for e in range(fb[s], fb[s + 1]):
+            fac = tables["STEP_FACTORS"][e]
+            out[fac] = (u, s, row)
+            words = tables["FACTOR_A_OFF"][fac + 1] - tables["FACTOR_A_OFF"][fac]
+            row += words // (cb[fac + 1] - cb[fac] + 1)
+    return out
+
+
 def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
-                timing: dict, banks_zero: bool = True) -> list[Loop]:
+                timing: dict, banks_zero: bool = True, in_place: bool = False) -> list[Loop]:
     """fgc_eliminate.h's qr_stack of step s into its unit set's banks: unless ``banks_zero``
     (fgc_qr.h's qr_step leaves its banks zero: CFG::BANKS_ZERO; not fgc_qr_stream.h's) the
-    rows zeroed (all n_u banks a cycle), then each factor's rows [A | b] and each child's
+    rows zeroed (all n_u banks a cycle), then each factor's rows [A | b] (none when
+    ``in_place``: the datapaths wrote them, :func:`rows_in_banks`) and each child's
     new-factor rows :data:`PORTS` words a cycle, the damping rows' diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
     loops = [] if banks_zero else [kernel_loop("zero", m * local, "fill", timing)]
     fb = tables["STEP_FACTOR_BEGIN"]
     for e in range(fb[s], fb[s + 1]):
+        if in_place:
+            break
         fac = tables["STEP_FACTORS"][e]
         words = tables["FACTOR_A_OFF"][fac + 1] - tables["FACTOR_A_OFF"][fac]
         loops.append(kernel_loop("factor_rows", _ported(words), "move", timing))
@@ -294,14 +323,17 @@ def _levels(ctx, sets, by_index, damping) -> None:
     opts, ops, sched = ctx.opts, ctx.les, ctx.program.schedule
     tables, timing = ctx.tables, ctx.les_timing
     max_w = ctx.sizes["MAX_W"]
+    banked = rows_in_banks(ctx.program, opts, tables)
     for li, level in enumerate(sched.levels):
         # eliminate_all: each step stacked into its unit set's banks (√μ once per solve
         # first), the level's steps on the unit sets side by side, each result committed
         stack = [Process("root_mu", "qr_stack", (kernel_loop("root_mu", 1, "root", timing),))] \
             if li == 0 else []
+        # (level 0's first steps: their factors' rows already in the banks, rows_in_banks)
         stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
-            tables, i, opts.units, max_w, damping, timing, opts.qr_unit != "stream")))
-            for i in level]
+            tables, i, opts.units, max_w, damping, timing, opts.qr_unit != "stream",
+            li == 0 and k < sets and bool(banked))))
+            for k, i in enumerate(level)]
         ctx.add_phase("solve", Phase(f"qr_stack_level{li}", False, tuple(stack), linear=True))
         # eliminate_all hands a level's steps to the unit sets `sets` at a time, in level
         # order: each chunk a DATAFLOW region of its sets side by side, the chunks one after

@@ -3201,7 +3201,8 @@ T rounding_noise_all(const T x[N_X]) {
 // ---- the graph's cost (GTSAM's error), beside back-substitution (issue 33): trial_cost is the
 // third process of fgc_backsub.h's back_substitute region, fed by backsub_retire one variable's
 // storage words a stream word (X_TRIAL's as they are retired, or X's for the cost at X), into
-// its own copy `x`; a loop per datapath (the plan's order: the most work first), each entry
+// its own copy `x`; a loop per datapath (the plan's order: the most work first, or, in the
+// slot design, as their last instances are ready where that ends sooner), each entry
 // first taking the variables retired since (up to K, in back-substitution's order) and then
 // costing the instance whose last variable that was (TRIAL_F_<d>: the instance, -1 none), all
 // into one running total (entries in that order: the simulator's order was never the

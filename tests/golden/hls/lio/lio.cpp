@@ -3359,7 +3359,8 @@ T rounding_noise_all(const T x[N_X]) {
 // ---- the graph's cost (GTSAM's error), beside back-substitution (issue 33): trial_cost is the
 // third process of fgc_backsub.h's back_substitute region, fed by backsub_retire one variable's
 // storage words a stream word (X_TRIAL's as they are retired, or X's for the cost at X), into
-// its own copy `x`; a loop per datapath (the plan's order: the most work first), each entry
+// its own copy `x`; a loop per datapath (the plan's order: the most work first, or, in the
+// slot design, as their last instances are ready where that ends sooner), each entry
 // first taking the variables retired since (up to K, in back-substitution's order) and then
 // costing the instance whose last variable that was (TRIAL_F_<d>: the instance, -1 none), all
 // into one running total (entries in that order: the simulator's order was never the
@@ -3666,7 +3667,8 @@ void qr_level(int rows0, int f0, int s0,
 #include "fgc_eliminate.h"
 
 struct QrSets {
-    static void stack(int u, int s, T root_mu, unsigned skip, int rows) {
+    static void stack(int u, int s, T root_mu, unsigned skip, int rows, bool solve) {
+        (void)solve;  // (no rows are written into the banks before the stack)
         if (u == 0) qr_stack_rows<LesConfig>(s, root_mu, WORK0, skip, rows);
         if (u == 1) qr_stack_rows<LesConfig>(s, root_mu, WORK1, skip, rows);
     }
