@@ -226,11 +226,13 @@ def test_each_stream_function_has_one_call_site_in_the_header():
     code = re.sub(r"//[^\n]*", "", text)
     # tau's and the kept conditional's two parts: the marginal's (tau_and_keep's tasks) and a
     # batch step's (write_tau, kept_conditional)
-    two = ("tau_sign", "tau_tail", "kept_reciprocals", "kept_scale")
+    two = ("tau_sign", "tau_mean", "kept_reciprocals", "kept_scale")
     for name in ("marginalize", "reexpress", "kept_walk", "keep_points", "keep_task",
-                 "window_task", "kept_task", "window_and_kept", "write_tau", "tau_task",
+                 "window_task", "kept_task", "window_and_kept", "write_tau", "tau_tail",
+                 "mean_task", "words_task", "tau_words", "tau_mean_out", "out_task",
                  "tau_beside_keep", "tau_and_keep", "sign_task", "reciprocal_task",
-                 "sign_beside_reciprocals", "kept_conditional", *two):
+                 "sign_beside_reciprocals", "kept_conditional", "update_start",
+                 "start_x_task", "start_data_task", *two):
         sites = re.findall(rf"\b{name}<CFG>\(", code)
         assert len(sites) == (2 if name in two else 1), name
 

@@ -1,8 +1,9 @@
 // fgc_stream.h: the streaming designs' on-chip state (fgc_backends/hls/window.py), the
 // fixed-lag window and the incremental design's kept Bayes net, around the kernel's LM:
 //
-//   FGC_STREAM_WINDOW    stream_shift<CFG>()    every slot down one (X and DATA_BUF keep the window)
-//                        stream_in<CFG>(m, ...) the call's keyframe into slot m
+//   FGC_STREAM_WINDOW    update_start<CFG>(...) every slot down one (X and DATA_BUF keep the window)
+//                                               and the call's keyframe into slot m: the moves on
+//                                               X beside those on DATA_BUF (one DATAFLOW region)
 //   FGC_STREAM_MARGINAL  marginalize<CFG>(ok)   slot 0's elimination at the optimum -> tau, the
 //                        tau_and_keep<CFG>(c)   factor written into slot 1's prior (write_tau<CFG>:
 //                                               a batch step's), beside the kept conditional
@@ -19,7 +20,7 @@
 //   FGC_STREAM_BATCH     batch_step<CFG>(j, first, errors, info): a batch step through the batch
 //                        kernel (its own file), the kept net rebuilt from its conditionals
 //   FGC_STREAM_SWEEP     (instead, the one-step policy) a batch step as a sweep through the window:
-//                        stream_in keeps each keyframe's storage and words as they came as it
+//                        update_start keeps each keyframe's storage and words as they came as it
 //                        moves them into the window (sweep_store<CFG> before a sweep's passes),
 //                        sweep_gather<CFG> the estimates; stream_call then runs one pass per
 //                        keyframe 0 … j, each keyframe in again and, once the window is full,
@@ -70,8 +71,9 @@
 
 #if defined(FGC_STREAM_WINDOW) || defined(FGC_STREAM_BATCH_KERNEL)
 // A keyframe's words into slot m: its storage (SLOT_X), then its factors' and its prior's words
-// (NEW_DEST). The window's call (stream_in) and the batch kernel's (batch_kernel_in) move the
-// same words; BATCH says whose cycles they are (csim counting only).
+// (NEW_DEST). The batch kernel's (batch_kernel_in) move the
+// same words; BATCH says whose cycles they are (csim counting only). (The window's
+// update moves them in update_start's two processes.)
 template <class CFG, bool BATCH>
 void keyframe_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
     for (int k = 0; k < STREAM_KF_X; ++k) {
@@ -126,64 +128,117 @@ L BATCH_COND[BATCH_SLOTS * STREAM_KF_T * (2 * STREAM_KF_T + 1)];  // their condi
 L BATCH_TAU[STREAM_KF_T * (STREAM_KF_T + 1)];  // the factor passed into the next window's oldest
 #endif
 
-// Every slot down one: slot s takes slot s + 1's variables and the words of the factor one
-// keyframe on (zero noise words where there is none; slot 0's prior takes slot 1's, tau). The
-// pairs are ordered so each word is read before it is overwritten: no iteration reads a word an
-// earlier one wrote.
+// The update's start as one DATAFLOW region of two processes, each on its own memories: the
+// moves on X (start_x_task: the leaving keyframe's estimate into X_KEPT where `leave`, the
+// shift's variables where `shift`, the keyframe's storage into slot m, and slots 0 and 1 into
+// lin01 where `points`) beside the moves on DATA_BUF (start_data_task: the shift's words, then
+// the keyframe's factors' and prior's words). Each loop of a process keeps its memory's ports to
+// itself (X: the shift a read and a write an iteration, the keyframe a write, the points a read;
+// DATA_BUF the same), the two processes share no memory and have no operator (moves and muxes):
+// the region takes the longer of the two. `row` / `from_row` (batch steps as sweeps): the
+// pass's keyframe from its row of the sweep's memory (a sweep pass, the row sweep_store or an
+// earlier call left), else from the call's input, each word also kept in row `row` as it passes
+// (one read, two writes to different memories an iteration: SWEEP_X / SWEEP_WORDS see at most
+// one read and one write an iteration, the source a mux).
 template <class CFG>
-void stream_shift() {
-    FGC_PHASE("stream_shift");
-    for (int k = 0; k < N_X_MOVES; ++k) {
+void start_x_task(bool leave, int kept, bool shift, int m, int row, bool from_row,
+                  const T x_in[STREAM_KF_X], bool points, T lin01[2 * STREAM_KF_X]) {
+    FGC_TASK();
+    FGC_PHASE("setup");
+#if defined(FGC_STREAM_KEPT) && (defined(FGC_STREAM_BATCH) || defined(FGC_STREAM_SWEEP))
+    if (leave) {  // slot 0 (keyframe kept) leaves: its estimate kept (a batch step starts from it)
+        for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+            X_KEPT[kept * STREAM_KF_X + k] = X[SLOT_X[k]];
+        }
+        FGC_CYCLES("top", 0, "leave", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    }
+#else
+    (void)leave;
+    (void)kept;
+#endif
+    if (shift) {
+        FGC_PHASE("stream_shift");
+        for (int k = 0; k < N_X_MOVES; ++k) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=X inter false
-        X[X_MOVES[2 * k]] = X[X_MOVES[2 * k + 1]];
+            X[X_MOVES[2 * k]] = X[X_MOVES[2 * k + 1]];
+        }
+        FGC_CYCLES("stream", 0, "shift_x", N_X_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     }
-    FGC_CYCLES("stream", 0, "shift_x", N_X_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    for (int k = 0; k < N_DATA_MOVES; ++k) {
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=DATA_BUF inter false
-        const int src = DATA_MOVES[2 * k + 1];
-        const T word = DATA_BUF[src >= 0 ? src : 0];
-        DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? word : T(0);
-    }
-    FGC_CYCLES("stream", 0, "shift_data", N_DATA_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-}
-
-#ifndef FGC_STREAM_SWEEP
-// The call's keyframe into slot m: its storage, then its factors' and its prior's words.
-template <class CFG>
-void stream_in(int m, const T x_in[STREAM_KF_X], const T data[N_DATA]) {
-    FGC_PHASE("setup");
-    keyframe_in<CFG, false>(m, x_in, data);
-}
-#else
-// The pass's keyframe into slot m (batch steps as sweeps): from its row of the sweep's memory
-// (`from_row`: a sweep pass, the row sweep_store or an earlier call left), else from the call's
-// input, each word also kept in row `row` as it passes (what sweep_store does on its own before
-// a sweep): one read, two writes to different memories an iteration, so keeping the keyframe
-// costs no cycles of its own. The source is a mux (no operator); SWEEP_X / SWEEP_WORDS see at
-// most one read and one write an iteration.
-template <class CFG>
-void stream_in(int m, int row, bool from_row, const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA]) {
     FGC_PHASE("setup");
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
+#ifdef FGC_STREAM_SWEEP
         const T v = from_row ? SWEEP_X[row * STREAM_KF_X + k] : x_in[k];
         X[SLOT_X[m * STREAM_KF_X + k]] = v;
         if (!from_row) SWEEP_X[row * STREAM_KF_X + k] = v;
+#else
+        X[SLOT_X[m * STREAM_KF_X + k]] = x_in[k];
+#endif
     }
     FGC_CYCLES("top", 0, "keyframe_x_in", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#ifndef FGC_STREAM_SWEEP
+    (void)row;
+    (void)from_row;
+#endif
+    if (points) {
+        FGC_PHASE("marginal");
+        for (int k = 0; k < 2 * STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+            lin01[k] = X[SLOT_X[k]];
+        }
+        FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    }
+}
+
+template <class CFG>
+void start_data_task(bool shift, int m, int row, bool from_row, const T data[STREAM_IN_DATA]) {
+    FGC_TASK();
+    if (shift) {
+        FGC_PHASE("stream_shift");
+        for (int k = 0; k < N_DATA_MOVES; ++k) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=DATA_BUF inter false
+            const int src = DATA_MOVES[2 * k + 1];
+            const T word = DATA_BUF[src >= 0 ? src : 0];
+            DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? word : T(0);
+        }
+        FGC_CYCLES("stream", 0, "shift_data", N_DATA_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    }
+    FGC_PHASE("setup");
     const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
 #pragma HLS PIPELINE II=1
+#ifdef FGC_STREAM_SWEEP
         const T v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : data[k];
         DATA_BUF[NEW_DEST[b + k]] = v;
         if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
+#else
+        DATA_BUF[NEW_DEST[b + k]] = data[k];
+#endif
     }
     FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-}
+#ifndef FGC_STREAM_SWEEP
+    (void)row;
+    (void)from_row;
 #endif
+}
+
+// The region (the caller joins it: FGC_TASKS_JOIN): every slot down one where `shift` (slot s
+// takes slot s + 1's variables and the words of the factor one keyframe on, zero noise words
+// where there is none, slot 0's prior slot 1's, tau; the pairs ordered so each word is read
+// before it is overwritten), then the call's (or the sweep pass's) keyframe into slot m: its
+// storage, then its factors' and its prior's words.
+template <class CFG>
+void update_start(bool leave, int kept, bool shift, int m, int row, bool from_row,
+                  const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA], bool points,
+                  T lin01[2 * STREAM_KF_X]) {
+#pragma HLS DATAFLOW
+    start_x_task<CFG>(leave, kept, shift, m, row, from_row, x_in, points, lin01);
+    start_data_task<CFG>(shift, m, row, from_row, data);
+}
 
 #ifdef FGC_STREAM_SWEEP
 // The call's keyframe (total, entering slot m) kept as it came: its storage and its words, row
@@ -226,10 +281,11 @@ void sweep_gather(int total, int base, int first) {
 #ifdef FGC_STREAM_MARGINAL
 // tau from the rows [A | b] (KF_T x (KF_T + 1), upper triangular) a step passes to slot 1, in two
 // parts: tau_sign signs it to a positive diagonal into `a` and tells whether it is singular
-// (false); tau_tail then takes its mean A^-1 b by back-substitution and writes it with its
-// linearisation point (slot 1's estimate, or `lin` where `given`: the one-step policy's, where
-// the update linearised it) into slot 1's prior. write_tau: the two one after the other (a batch
-// step's); the window's marginal runs tau_tail beside keep's conditional (tau_and_keep).
+// (false); tau_tail then takes its mean A^-1 b by back-substitution (tau_mean) and writes it with
+// its linearisation point (slot 1's estimate, or `lin` where `given`: the one-step policy's,
+// where the update linearised it) into slot 1's prior. write_tau: the two one after the other (a
+// batch step's); the window's marginal runs tau_mean beside tau_words (the words but the mean's)
+// and keep's conditional, then tau_mean_out (tau_and_keep).
 template <class CFG>
 bool tau_sign(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1]) {
     FGC_PHASE("marginal");
@@ -249,16 +305,16 @@ bool tau_sign(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][ST
     return smallest > L(STREAM_SINGULAR) * largest;
 }
 
+// tau's mean A^-1 b (a: signed) by columns, last first: x_r = y_r / a_rr (y_r final: its last
+// update was the column before's), then y_i -= a_ir x_r for the rows above, one a cycle (II 1:
+// each y_i updated once a column) - so the next unknown waits for one divide and its own row's
+// update, where the dot product per row ran its whole row at II La first. The same products and
+// divides as a row's dot product (the subtractions in the other order); y_i starts as b_i (a mux
+// on the first column: no copy)
 template <class CFG>
-void tau_tail(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X], bool given) {
+void tau_mean(const L a[STREAM_KF_T][STREAM_KF_T + 1], L mean[STREAM_KF_T]) {
     FGC_PHASE("marginal");
-    // the mean A^-1 b by columns, last first: x_r = y_r / a_rr (y_r final: its last update was
-    // the column before's), then y_i -= a_ir x_r for the rows above, one a cycle (II 1: each
-    // y_i updated once a column) - so the next unknown waits for one divide and its own row's
-    // update, where the dot product per row ran its whole row at II La first. The same
-    // products and divides as a row's dot product (the subtractions in the other order); y_i
-    // starts as b_i (a mux on the first column: no copy)
-    L y[STREAM_KF_T], mean[STREAM_KF_T];
+    L y[STREAM_KF_T];
     for (int r = STREAM_KF_T - 1; r >= 0; --r) {
         const bool last = r == STREAM_KF_T - 1;
         const L xr = (last ? a[r][STREAM_KF_T] : y[r]) / a[r][r];
@@ -272,6 +328,12 @@ void tau_tail(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X],
         }
         FGC_CYCLES("marginal", 0, "column", r, 1, CFG::L_ACC_DEPTH);
     }
+}
+
+template <class CFG>
+void tau_tail(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X], bool given) {
+    L mean[STREAM_KF_T];
+    tau_mean<CFG>(a, mean);
     for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
         DATA_BUF[STREAM_PRIOR1 + k] = given ? lin[k] : X[SLOT_X[STREAM_KF_X + k]];
@@ -291,6 +353,46 @@ void tau_tail(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X],
     DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 1] = T(0);
     FGC_CYCLES("marginal", 0, "tau_out", STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 2, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 }
+
+#ifdef FGC_STREAM_WINDOW
+// tau's words but its mean into slot 1's prior (the window's marginal: beside the mean, which
+// the words other than the mean's do not wait for): its linearisation point (`lin` where
+// `given`, else slot 1's estimate), R from the rows where the step left them (`rows`, NF),
+// each row signed by its diagonal (the row's first word of R: a register and a negation, no
+// operator; the same words as tau_sign's a, a product by +-1 being exact), no robust loss.
+// Then tau_mean_out, after the mean: the mean's words.
+template <class CFG>
+void tau_words(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin[STREAM_KF_X], bool given) {
+    FGC_PHASE("marginal");
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        DATA_BUF[STREAM_PRIOR1 + k] = given ? lin[k] : X[SLOT_X[STREAM_KF_X + k]];
+    }
+    bool negative = false;
+    for (int i = 0, w = STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T; i < STREAM_KF_T; ++i) {
+        for (int c = i; c < STREAM_KF_T; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T
+#pragma HLS PIPELINE II=1
+            const L v = rows[i * (STREAM_KF_T + 1) + c];
+            if (c == i) negative = v < L(0);
+            DATA_BUF[w++] = T(negative ? L(-v) : v);
+        }
+    }
+    DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2] = T(0);  // no robust loss
+    DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 1] = T(0);
+    FGC_CYCLES("marginal", 0, "tau_words", STREAM_KF_X + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 2, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+template <class CFG>
+void tau_mean_out(const L mean[STREAM_KF_T]) {
+    FGC_PHASE("marginal");
+    for (int i = 0; i < STREAM_KF_T; ++i) {
+#pragma HLS PIPELINE II=1
+        DATA_BUF[STREAM_PRIOR1 + STREAM_KF_X + i] = T(mean[i]);
+    }
+    FGC_CYCLES("marginal", 0, "tau_mean_out", STREAM_KF_T, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+#endif
 
 // tau signed, checked, its mean and words one after the other (a batch step's). False, nothing
 // written, if it is singular.
@@ -486,7 +588,7 @@ void kept_conditional(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)]) 
 
 // Slot 0's conditional (COND of its step: R | S | d, row-major f x (w + 1)) kept as keyframe c's
 // (kept_reciprocals beside tau's sign loop, kept_scale beside its tail: tau_and_keep), linearised at slot 0's
-// estimate with its parent at slot 1's (keep_points, before that region; `reuse`: at lin01, where
+// estimate with its parent at slot 1's (keep_points, in words_task of that region; `reuse`: at lin01, where
 // the one-step update linearised them); a word a cycle.
 template <class CFG>
 void keep_points(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
@@ -713,13 +815,17 @@ void window_and_kept(int mode, int ms, bool live, const T lin01[2 * STREAM_KF_X]
 }
 
 #ifdef FGC_STREAM_MARGINAL
-// tau_and_keep's two DATAFLOW regions after the window's, each of two processes with no memory
+// tau_and_keep's two DATAFLOW regions after the window's, each of three processes with no memory
 // between them (every port its process's), each on its own operators:
 //   sign_beside_reciprocals: tau's sign loop (NF -> a, the singularity test) beside the kept
 //     conditional's pivot reciprocals (COND's diagonal -> rinv: nothing written to kept memory,
 //     so it may run before the test says whether the conditional is kept);
-//   tau_beside_keep: tau's tail (its mean and words: a, then lin or X to DATA_BUF) beside the
-//     conditional kept (kept_scale: COND and rinv to KEPT_R / KEPT_S / KEPT_D).
+//   tau_beside_keep: tau's mean (mean_task: a -> mean) beside its other words (words_task: the
+//     conditional's points, keep_points: lin01 or X to KEPT_LIN / KEPT_NEXT; then R from NF,
+//     signed on the way, and lin or X to DATA_BUF) beside the conditional kept
+//     (kept_scale: COND and rinv to KEPT_R / KEPT_S / KEPT_D); the mean's words after it.
+//   The first region also reads the call's outputs out of X (out_task: x_out, KEPT_PENDING_X),
+//   which nothing after the window's region writes.
 // The fixed-lag window (no kept net) runs the keep's processes empty.
 template <class CFG>
 void sign_task(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1], bool ok[1]) {
@@ -738,17 +844,59 @@ void reciprocal_task(L rinv[STREAM_KF_T]) {
 #endif
 }
 
+// The call's outputs read out of X beside them (X is final once the window's region is over: nothing
+// after it writes X): slot 0's new estimate for the pending re-expression where `pending`, the
+// window's storage out where `out` (the update's last pass).
 template <class CFG>
-void sign_beside_reciprocals(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1], bool ok[1], L rinv[STREAM_KF_T]) {
-#pragma HLS DATAFLOW
-    sign_task<CFG>(rows, a, ok);
-    reciprocal_task<CFG>(rinv);
+void out_task(bool out, bool pending, T x_out[N_X]) {
+    FGC_TASK();
+#ifdef FGC_STREAM_KEPT
+    if (pending) {
+        FGC_PHASE("kept");
+        for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+            KEPT_PENDING_X[k] = X[SLOT_X[k]];
+        }
+        FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    }
+#else
+    (void)pending;
+#endif
+    if (out) {
+        FGC_PHASE("setup");
+        for (int i = 0; i < N_X; ++i) {
+#pragma HLS PIPELINE II=1
+            x_out[i] = X[i];
+        }
+        FGC_CYCLES("top", 0, "x_out", N_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    }
 }
 
 template <class CFG>
-void tau_task(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X], bool given) {
+void sign_beside_reciprocals(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1], bool ok[1], L rinv[STREAM_KF_T],
+                             bool out, bool pending, T x_out[N_X]) {
+#pragma HLS DATAFLOW
+    sign_task<CFG>(rows, a, ok);
+    reciprocal_task<CFG>(rinv);
+    out_task<CFG>(out, pending, x_out);
+}
+
+template <class CFG>
+void mean_task(const L a[STREAM_KF_T][STREAM_KF_T + 1], L mean[STREAM_KF_T]) {
     FGC_TASK();
-    tau_tail<CFG>(a, lin, given);
+    tau_mean<CFG>(a, mean);
+}
+
+template <class CFG>
+void words_task(int c, const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin01[2 * STREAM_KF_X],
+                bool given) {
+    FGC_TASK();
+#ifdef FGC_STREAM_KEPT
+    keep_points<CFG>(c, given, lin01);
+#else
+    (void)c;
+#endif
+    tau_words<CFG>(rows, lin01 + STREAM_KF_X, given);
 }
 
 template <class CFG>
@@ -764,32 +912,36 @@ void keep_task(int c, const L rinv[STREAM_KF_T]) {
 }
 
 template <class CFG>
-void tau_beside_keep(const L a[STREAM_KF_T][STREAM_KF_T + 1], const T lin[STREAM_KF_X],
+void tau_beside_keep(const L a[STREAM_KF_T][STREAM_KF_T + 1], L mean[STREAM_KF_T],
+                     const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], const T lin01[2 * STREAM_KF_X],
                      bool given, int c, const L rinv[STREAM_KF_T]) {
 #pragma HLS DATAFLOW
-    tau_task<CFG>(a, lin, given);
+    mean_task<CFG>(a, mean);
+    words_task<CFG>(c, rows, lin01, given);
     keep_task<CFG>(c, rinv);
 }
 
 // The leaving keyframe's marginal after the window's region (its rows ready in NF: window_task's
 // marginalize): tau signed and checked (tau_sign reads the rows where the step left them, each
-// word once: no copy first) beside the kept conditional's reciprocals; if tau is not singular,
-// the conditional's points (keep_points), then tau's tail beside the conditional kept. Kept
+// word once: no copy first) beside the kept conditional's reciprocals and the call's reads of X
+// (out_task: `out`, `pending`, whatever tau's test says); if tau is not singular, tau's mean
+// beside its other words (after the conditional's points: keep_points) and the conditional
+// kept, the mean's words last. Kept
 // keyframe c (the kept net's; unused without one). False, nothing written or kept, if tau is
 // singular.
 template <class CFG>
-bool tau_and_keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X]) {
+bool tau_and_keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X], bool out, bool pending,
+                  T x_out[N_X]) {
     L a[STREAM_KF_T][STREAM_KF_T + 1];
     L rinv[STREAM_KF_T];
     bool ok[1];
-    sign_beside_reciprocals<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], a, ok, rinv);
+    sign_beside_reciprocals<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], a, ok, rinv, out, pending, x_out);
     FGC_TASKS_JOIN();
     if (!ok[0]) return false;
-#ifdef FGC_STREAM_KEPT
-    keep_points<CFG>(c, reuse, lin01);
-#endif
-    tau_beside_keep<CFG>(a, lin01 + STREAM_KF_X, reuse, c, rinv);
+    L mean[STREAM_KF_T];
+    tau_beside_keep<CFG>(a, mean, NF + STEP_NF_OFF[STREAM_LEAF_STEP], lin01, reuse, c, rinv);
     FGC_TASKS_JOIN();
+    tau_mean_out<CFG>(mean);
     return true;
 }
 #endif
@@ -859,15 +1011,6 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #else
     if (!update) return;
 #endif
-#if defined(FGC_STREAM_KEPT) && (defined(FGC_STREAM_BATCH) || defined(FGC_STREAM_SWEEP))
-    if (update && j >= STREAM_SLOTS) {  // slot 0 (keyframe first - 1) leaves: its estimate kept
-        for (int k = 0; k < STREAM_KF_X; ++k) {  // (a batch step starts from it; a walk rewrites it)
-#pragma HLS PIPELINE II=1
-            X_KEPT[(first - 1) * STREAM_KF_X + k] = X[SLOT_X[k]];
-        }
-        FGC_CYCLES("top", 0, "leave", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    }
-#endif
 #ifdef FGC_STREAM_SWEEP
     // a batch step is a sweep through the window: keyframes 0 … total come in again one a pass,
     // at their estimates (sweep_gather), and once the window is full each pass's slot 0 leaves
@@ -876,7 +1019,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     // the sweep's conditionals (not re-expressed: they hold the sweep's points; walked when the
     // estimates are asked for, as after any update)
     // the call's keyframe is kept as it came: by sweep_store before a sweep (its passes read it
-    // back), else by stream_in as it enters the window (the same words, no cycles of their own)
+    // back), else by update_start as it enters the window (the same words, no cycles of their own)
     bool sweep = false;
     if (update) {
         sweep = IS_BATCH[total] != 0;
@@ -893,6 +1036,24 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #else
     const bool batch = false;
 #endif
+#if defined(FGC_STREAM_KEPT) && (defined(FGC_STREAM_BATCH) || defined(FGC_STREAM_SWEEP))
+    // slot 0 (keyframe first - 1) leaves: its estimate kept (a batch step starts from it; a walk
+    // rewrites it): before a batch step or a sweep (their pass -1 and the sweep's gather read it
+    // back), else in the update's start region beside the words (start_x_task)
+    const bool leaves = update && j >= STREAM_SLOTS;
+    if (leaves && (sweep || batch)) {
+        for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+            X_KEPT[(first - 1) * STREAM_KF_X + k] = X[SLOT_X[k]];
+        }
+        FGC_CYCLES("top", 0, "leave", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    }
+    const bool leave = leaves && !sweep && !batch;
+    const int kept = first - 1;
+#else
+    const bool leave = false;
+    const int kept = 0;
+#endif
 #ifdef FGC_STREAM_KEPT
     // a batch step starts from the kept estimates: pass -1 (the kept process alone) walks them
     // back from the leaving keyframe's estimate first if an update left them stale (the batch
@@ -904,6 +1065,8 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     (void)batch;
 #endif
     int marginal = 0;  // 0: none left, 1: tau written, 2: singular (not written)
+    bool out_read = false, pending_read = false;  // x_out / KEPT_PENDING_X read beside tau
+    (void)pending_read;
     for (int p = p0; p < passes; ++p) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_PASSES
         const bool solve = update && p >= 0;  // else pass -1 or op 3: the kept process alone
@@ -928,12 +1091,15 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #endif
             const int ms = jc < STREAM_SLOTS - 1 ? jc : STREAM_SLOTS - 1;  // the pass's slot
             live = jc >= STREAM_SLOTS;  // (the window has moved: slot 0's prior is tau)
-            if (jc >= STREAM_SLOTS) stream_shift<CFG>();
-#ifdef FGC_STREAM_SWEEP
-            stream_in<CFG>(ms, row, sweep, x_in, data);
-#else
-            stream_in<CFG>(ms, x_in, data);
+#ifndef FGC_STREAM_SWEEP
+            const int row = 0;
 #endif
+            // the pass goes on to the window's region (not a batch step, not a sweep pass while
+            // the window fills): slots 0 and 1 copied in the start region
+            const bool points = !batch && (last || ms == STREAM_W);
+            update_start<CFG>(leave && p == 0, kept, jc >= STREAM_SLOTS, ms, row, sweep, x_in, data,
+                              points, lin01);
+            FGC_TASKS_JOIN();
 #ifdef FGC_STREAM_BATCH
             // keyframe total's words for the batch kernel follow the window's
             if (total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
@@ -942,13 +1108,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
                 continue;
             }
 #endif
-            if (!last && ms != STREAM_W) continue;  // a sweep pass while the window fills
-            FGC_PHASE("marginal");
-            for (int k = 0; k < 2 * STREAM_KF_X; ++k) {
-#pragma HLS PIPELINE II=1
-                lin01[k] = X[SLOT_X[k]];
-            }
-            FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+            if (!points) continue;  // a sweep pass while the window fills
             mode = last ? 2 : 1;
             mc = ms;
         }
@@ -990,7 +1150,14 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         const int kc = 0;
 #endif
         // tau, and the leaving keyframe's conditional kept beside its tail
-        if (mc == STREAM_W && marginal == 1) marginal = tau_and_keep<CFG>(kc, result[1] != 0, lin01) ? 1 : 2;
+        if (mc == STREAM_W && marginal == 1) {
+            // the call's reads of X (its outputs, the pending point) beside tau's sign loop
+#ifdef FGC_STREAM_KEPT
+            pending_read = last && !sweep && first > 0;
+#endif
+            marginal = tau_and_keep<CFG>(kc, result[1] != 0, lin01, last, pending_read, x_out) ? 1 : 2;
+            out_read = last;
+        }
 #endif
 #ifdef FGC_STREAM_SWEEP
         if (!last && marginal != 1) sweep_singular = true;
@@ -999,12 +1166,15 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         if (last && !sweep && first > 0) {
             // this update's own re-expression (the newest kept conditional at slot 0's new
             // estimate), left pending for the next call's region: the point copied out of X
-            FGC_PHASE("kept");
-            for (int k = 0; k < STREAM_KF_X; ++k) {
+            // (beside tau's sign loop where a keyframe left: out_task)
+            if (!pending_read) {
+                FGC_PHASE("kept");
+                for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-                KEPT_PENDING_X[k] = X[SLOT_X[k]];
+                    KEPT_PENDING_X[k] = X[SLOT_X[k]];
+                }
+                FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
             }
-            FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
             KEPT_PENDING = first - 1;
         }
 #endif
@@ -1031,12 +1201,14 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     KEPT_STALE = !batch && first > 0;
     STREAM_TOTAL = total + 1;
 #endif
-    FGC_PHASE("setup");
-    for (int i = 0; i < N_X; ++i) {
+    if (!out_read) {  // (else read out beside tau's sign loop: out_task)
+        FGC_PHASE("setup");
+        for (int i = 0; i < N_X; ++i) {
 #pragma HLS PIPELINE II=1
-        x_out[i] = X[i];
+            x_out[i] = X[i];
+        }
+        FGC_CYCLES("top", 0, "x_out", N_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     }
-    FGC_CYCLES("top", 0, "x_out", N_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     info[3] = m;
     info[4] = marginal;
     STREAM_COUNT = j < STREAM_SLOTS ? j + 1 : STREAM_SLOTS;

@@ -380,8 +380,15 @@ class WindowUpdateModel:
 
         out = [_stream_phase(f"keyframe_in{m}", move("x", kf), move("d", len(d)))
                for m, d in enumerate(lay.new_dest)]
+        out += [_stream_phase(f"keyframe_data_in{m}", move("d", len(d)))
+                for m, d in enumerate(lay.new_dest)]
         out += [_stream_phase("shift", move("x", len(lay.x_moves)),
                               move("d", len(lay.data_moves))),
+                # the update's start region (fgc_stream.h's update_start): its moves on X
+                # (start_x_task) and on DATA_BUF (start_data_task), each process's own loops
+                _stream_phase("shift_x", move("x", len(lay.x_moves))),
+                _stream_phase("shift_data", move("d", len(lay.data_moves))),
+                _stream_phase("keyframe_x_in", move("x", kf)),
                 _stream_phase("x_out", move("x", lay.n_x)),
                 _stream_phase("x_out_kf", move("x", kf))]
         # tau: signed; its mean by columns, last first (per column x_r's divide, then its
@@ -411,7 +418,8 @@ class WindowUpdateModel:
             # the leaving keyframe's conditional kept beside tau (tau_and_keep's regions): its
             # reciprocals beside tau's sign loop, its rows scaled beside tau's tail
             out += [_stream_phase("keep_reciprocal", keep_one[0]),
-                    _stream_phase("keep_scale", keep_one[1])]
+                    _stream_phase("keep_scale", keep_one[1]),
+                    _stream_phase("keep_points", move("x", kf))]
             out += [_stream_phase("kept_slot0", move("x", kf)),
                     _stream_phase("kept_reexpress", one, replace(one, repeat=4 * curved),
                                   Loop("difference", n, 1, kt["div"][1], curved), vector_diff,
@@ -458,7 +466,12 @@ class WindowUpdateModel:
                     # tau's sign loop, then its mean and words: tau_and_keep's processes
                     # beside the keep's
                     _stream_phase("tau_sign", write_tau[0]),
-                    _stream_phase("tau_tail", *write_tau[1:])]
+                    _stream_phase("tau_tail", *write_tau[1:]),
+                    # the window's marginal: tau's mean beside its words but the mean's
+                    # (tau_beside_keep's processes), the mean's words after that region
+                    _stream_phase("tau_mean", *mean),
+                    _stream_phase("tau_words", move("tau_words", kf + n * (n + 1) // 2 + 2)),
+                    _stream_phase("tau_mean_out", move("tau_mean_out", n))]
         if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
             out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
                     for m, d in enumerate(lay.new_dest)]
@@ -729,17 +742,65 @@ class WindowUpdateModel:
                            STREAM_SOURCE)
 
     def _keep_beside_tau(self, times: int = 1, name: str = "keep_beside_tau") -> Term:
-        """tau_and_keep's two regions (fgc_stream.h), each of two processes on their own
-        memories and operators: tau's sign loop beside the kept conditional's pivot reciprocals,
-        then (the kept points between) tau's tail (its mean and words) beside the conditional's
-        rows scaled into kept memory: in each the shorter of the two hidden."""
+        """tau_and_keep's two regions (fgc_stream.h), their processes each on its own memories
+        and operators: tau's sign loop beside the kept conditional's pivot reciprocals (and the
+        call's reads of X: :meth:`_out_beside_sign`), then tau's mean (a → mean) beside its
+        words but the mean's (after the kept points: the rows from NF, signed on the way, and
+        the point → DATA_BUF) beside the conditional's rows scaled into kept memory, the
+        mean's words after that region: in each region all but the longest hidden. A design
+        without a kept net runs the keep's processes empty."""
         st = self.stream
-        hidden = (min(st["stream_tau_sign"], st["stream_keep_reciprocal"])
-                  + min(st["stream_tau_tail"], st["stream_keep_scale"]))
+        kept = self.layout.kept
+        recip = st["stream_keep_reciprocal"] if kept else 0
+        scale = st["stream_keep_scale"] if kept else 0
+        points = st["stream_keep_points"] if kept else 0
+        # the second region: tau's mean beside its words (but the mean's, after the kept
+        # points) beside the rows scaled, then the mean's words; against tau's tail (mean,
+        # words one after the other) and the keep (points, scale) counted whole
+        second = max(st["stream_tau_mean"], points + st["stream_tau_words"], scale) \
+            + st["stream_tau_mean_out"]
+        hidden = (min(st["stream_tau_sign"], recip)
+                  + st["stream_tau_tail"] + points + scale - second)
         return Term(name, -hidden, times, False,
                     "tau beside the leaving keyframe's conditional kept (two DATAFLOW regions: "
-                    "its sign loop beside the pivots' reciprocals, its mean and words beside the "
-                    "rows scaled): the shorter of each pair is hidden behind the longer")
+                    "its sign loop beside the pivots' reciprocals, its mean beside its other "
+                    "words and the rows scaled, the mean's words after): all but the longest "
+                    "of each region hidden")
+
+    def _start_hidden(self, m: int, shift: bool, leave: bool, points: bool) -> int:
+        """The cycles update_start (fgc_stream.h) hides: its two processes, the moves on X (the
+        leaving keyframe's estimate out where ``leave``, the shift's variables where ``shift``,
+        the keyframe's storage into slot ``m``, slots 0 and 1 copied where ``points``) and the
+        moves on DATA_BUF (the shift's words, the keyframe's words), share no memory and no
+        operator: the region takes the longer, the shorter is hidden. Priced against the terms
+        that count each move whole (keyframe_in, shift, leave, lin_points)."""
+        st = self.stream
+        x = (st["stream_x_out_kf"] if leave else 0) + (st["stream_shift_x"] if shift else 0) \
+            + st["stream_keyframe_x_in"] + (st["stream_lin_points"] if points else 0)
+        data = (st["stream_shift_data"] if shift else 0) + st[f"stream_keyframe_data_in{m}"]
+        return min(x, data)
+
+    def _start_term(self, m: int, shift: bool, leave: bool, points: bool,
+                    name: str = "start_beside") -> Term:
+        return Term(name, -self._start_hidden(m, shift, leave, points), 1, False,
+                    "the update's start (one DATAFLOW region): the moves on X (leave, the "
+                    "shift's variables, the keyframe's storage, the points) beside those on "
+                    "DATA_BUF (the shift's and the keyframe's words), the shorter hidden")
+
+    def _out_beside_sign(self, pending: bool) -> Term:
+        """The call's reads of X (fgc_stream.h's out_task: slot 0's new estimate for the pending
+        re-expression where ``pending``, the window's storage out) as a third process of
+        tau_and_keep's first region, beside tau's sign loop and the kept conditional's
+        reciprocals: X is final once the window's region is over, and neither of the others
+        reads it. The region takes the longest of the three; against the terms x_out and
+        kept_pending counted whole, the reads hide behind the longer of the other two."""
+        st = self.stream
+        out = st["stream_x_out"] + (st["stream_kept_slot0"] if pending else 0)
+        first = max(st["stream_tau_sign"],
+                    st["stream_keep_reciprocal"] if self.layout.kept else 0)
+        return Term("out_beside_sign", -min(out, first), 1, False,
+                    "the window out (and the pending point) read out of X beside τ's sign loop "
+                    "(tau_and_keep's first region): the shorter hidden")
 
     def _sweep_terms(self, j: int) -> list:
         """A batch step at keyframe j as a sweep through the window (fgc_stream.h's
@@ -751,11 +812,18 @@ class WindowUpdateModel:
         lay, st, w = self.layout, self.stream, self.layout.window
         moves = sum(st[f"stream_keyframe_in{min(c, w)}"] + (st["stream_shift"] if c >= lay.size
                                                                else 0) for c in range(j))
+        # each pass's start region: its moves on X beside its words (the points copied on the
+        # passes with the window full, c >= w)
+        hidden = sum(self._start_hidden(min(c, w), c >= lay.size, False, c >= w)
+                     for c in range(j))
         terms = [Term("sweep_gather", st[f"stream_sweep{j}_gather"], 1, False,
                       f"keyframes 0 … {j - 1}'s estimates into their rows (the sweep's points)"),
                  Term("sweep_in", moves, 1, False,
                       f"keyframes 0 … {j - 1} into the window again, one a pass (and the shift "
-                      "once it is full)")]
+                      "once it is full)"),
+                 Term("sweep_start_beside", -hidden, 1, False,
+                      "each pass's start region: its moves on X (the shift's variables, the "
+                      "keyframe's storage, the points) beside its words, the shorter hidden")]
         steps = range(w, j)
         if not steps:
             return terms
@@ -869,7 +937,7 @@ class WindowUpdateModel:
                                   "the leaving keyframe's estimate into the kept memory"))
             if sweep:
                 # kept as it came before the sweep's passes (which read it back); an update that
-                # is not a sweep keeps it as stream_in moves it into the window (no cycles)
+                # is not a sweep keeps it as update_start moves it into the window (no cycles)
                 terms.append(Term("sweep_store", st[f"stream_sweep_store{m}"], 1, False,
                                   "the keyframe's storage and words kept as they came (the "
                                   "sweep brings them in again)"))
@@ -878,6 +946,13 @@ class WindowUpdateModel:
                                                else None, "kept_walk_parent")
                 terms += self._sweep_terms(keyframe)
         batch = self.batch
+        batch_step = batch is not None and keyframe in batch["layout"].keyframes
+        # the update's start region: the leave in it but before a sweep or a batch step (they
+        # read it back first); the points copied but on a batch step
+        terms.append(self._start_term(
+            m, keyframe >= lay.size,
+            keyframe >= lay.size and (lay.sweep is not None or batch is not None)
+            and not sweep and not batch_step, not batch_step))
         if batch is not None:
             if keyframe >= lay.size:
                 terms.append(Term("leave", st["stream_x_out_kf"], 1, False,
@@ -963,7 +1038,11 @@ class WindowUpdateModel:
                 terms.append(Term("kept_pending", st["stream_kept_slot0"], 1, False,
                                   f"slot 0's new estimate copied out of X: keyframe {first - 1}'s "
                                   "kept conditional re-expressed there in the next call's region"))
+        elif leaving:  # the fixed-lag window: tau_and_keep's keep processes empty
+            terms.append(self._keep_beside_tau(name="tau_beside"))
         terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
+        if leaving:
+            terms.append(self._out_beside_sign(lay.kept and first > 0 and not sweep))
         if sweep:
             return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,
                                tuple(terms), STREAM_SOURCE)
