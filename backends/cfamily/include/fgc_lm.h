@@ -84,12 +84,17 @@ Step<typename CFG::T> failed_step(bool tested, int reason, typename CFG::T cost)
 #else
 #define FGC_LM_FAILED(reason) Step<T>{2, reason, cost, T(0)}
 #endif
+// A trial not taken: X back to the linearisation point where a solve ran (it wrote the trial
+// into X: FGC_LM_TRIAL_IN_X); else nothing (X_TRIAL apart, X never written).
+template <class CFG>
+void undo_trial(bool ran) {
+#pragma HLS INLINE
 #ifdef FGC_LM_TRIAL_IN_X
-#define FGC_LM_UNDO(ran) \
-    if (ran) CFG::restore_x()  // X back to the linearisation point (the solve wrote the trial)
+    if (ran) CFG::restore_x();
 #else
-#define FGC_LM_UNDO(ran) (void)(ran)  // X_TRIAL apart: X was never written
+    (void)ran;
 #endif
+}
 
 template <class CFG>
 Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
@@ -107,7 +112,7 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
         if (solved && !tested) {
             tested = true;
             if (CFG::solved_gradient_max() < CFG::eps_gradient()) {
-                FGC_LM_UNDO(solved);
+                undo_trial<CFG>(solved);
                 return Step<T>{1, CFG::REASON_GRADIENT, cost, T(0)};
             }
         }
@@ -118,7 +123,7 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
         const T d2 = test[0], predicted = test[1];
         if (ok) {
             if (CFG::root(d2) <= CFG::eps_step() * (x_norm + CFG::eps_step())) {
-                FGC_LM_UNDO(solved);
+                undo_trial<CFG>(solved);
                 return Step<T>{1, CFG::REASON_STEP, cost, T(0)};
             }
             CFG::retract_trial();
@@ -139,7 +144,7 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
                 return Step<T>{0, 0, trial, predicted};
             }
         }
-        FGC_LM_UNDO(solved);  // not taken: X back before the next solve (or the way out)
+        undo_trial<CFG>(solved);  // not taken: X back before the next solve (or the way out)
         if (!(mu[0] > T(0))) return FGC_LM_FAILED(CFG::REASON_NON_FINITE);
         mu[0] = mu[0] * CFG::lambda_factor();
         if (mu[0] > CFG::lambda_upper_bound()) {
@@ -149,7 +154,6 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
     return FGC_LM_FAILED(CFG::REASON_LAMBDA_LIMIT);
 }
 #undef FGC_LM_FAILED
-#undef FGC_LM_UNDO
 
 // optimize's body, INLINE: a kernel that runs its linearisation or elimination again after LM
 // (the on-chip stream's window and batch kernel: fgc_stream.h) calls it directly, so LM's call

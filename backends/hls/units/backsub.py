@@ -671,7 +671,8 @@ def column_build(ctx) -> None:
                               ctx.opts.state_allocation,
                               retire_step_test(program, ctx.opts))
         ctx.units.append(bound_unit("retire_step_test", "LM's step test summed in the state "
-                                    "update (|δ|², δᵀg a variable an iteration)",
+                                    "update (|δ|², δᵀg and the trial's |x ⊕ δ|² a variable "
+                                    "an iteration)",
                                     (retire_test_loop(program, ii),), table=ctx.ops))
     column_phases(ctx, name)
 
