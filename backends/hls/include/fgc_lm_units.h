@@ -34,6 +34,16 @@ inline int pair_ii(int words, int partials, int lat) {
     return dot_ii(ceil_div(words, 2), partials, lat);
 }
 inline int larger(int a, int b) { return a > b ? a : b; }
+// A reduction's P interleaved partial sums (maxima) set to zero before its loop: registers
+// (the callers partition them completely), all in one cycle.
+template <class T, int P>
+inline void zero_partials(T part[P]) {
+#pragma HLS INLINE
+    for (int p = 0; p < P; ++p) {
+#pragma HLS UNROLL
+        part[p] = T(0);
+    }
+}
 inline int pair_depth(int words, int partials, int lat, int lead) {
     const int trip = ceil_div(words, 2);
     const int k = trip < partials ? (trip < 1 ? 1 : trip) : partials;
@@ -52,11 +62,8 @@ void lm_iterate(const typename CFG::T g[CFG::N_TANGENT], const typename CFG::T x
     T gp[2 * CFG::PARTIALS], xp[2 * CFG::PARTIALS];  // (PARTIALS >= MAXIMA maxima: one distance)
 #pragma HLS ARRAY_PARTITION variable=gp complete
 #pragma HLS ARRAY_PARTITION variable=xp complete
-    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
-        gp[p] = T(0);
-        xp[p] = T(0);
-    }
+    zero_partials<T, 2 * CFG::PARTIALS>(gp);
+    zero_partials<T, 2 * CFG::PARTIALS>(xp);
     const int N_LONGER = CFG::N_X > CFG::N_TANGENT ? CFG::N_X : CFG::N_TANGENT;
     for (int e = 0; e < N_LONGER; e += 2) {
 #pragma HLS PIPELINE II=1
@@ -96,11 +103,8 @@ bool lm_step_test(bool solved, typename CFG::T mu, const typename CFG::T delta[C
     T dp[2 * CFG::PARTIALS], pp[2 * CFG::PARTIALS];
 #pragma HLS ARRAY_PARTITION variable=dp complete
 #pragma HLS ARRAY_PARTITION variable=pp complete
-    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
-        dp[p] = T(0);
-        pp[p] = T(0);
-    }
+    zero_partials<T, 2 * CFG::PARTIALS>(dp);
+    zero_partials<T, 2 * CFG::PARTIALS>(pp);
     for (int e = 0; e < CFG::N_TANGENT; e += 2) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=dp inter true distance=CFG::PARTIALS
@@ -188,10 +192,7 @@ typename CFG::T lm_gradient_max(const typename CFG::T g[CFG::N_TANGENT]) {
     typedef typename CFG::T T;
     T gp[2 * CFG::PARTIALS];  // (PARTIALS >= MAXIMA maxima)
 #pragma HLS ARRAY_PARTITION variable=gp complete
-    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
-        gp[p] = T(0);
-    }
+    zero_partials<T, 2 * CFG::PARTIALS>(gp);
     for (int e = 0; e < CFG::N_TANGENT; e += 2) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=gp inter true distance=CFG::PARTIALS
@@ -256,10 +257,7 @@ void lm_top_norm(const typename CFG::T x_in[CFG::N_X], const typename CFG::T dat
     FGC_PHASE("setup");
     T xp[CFG::PARTIALS];
 #pragma HLS ARRAY_PARTITION variable=xp complete
-    for (int p = 0; p < CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
-        xp[p] = T(0);
-    }
+    zero_partials<T, CFG::PARTIALS>(xp);
     for (int i = 0; i < CFG::N_X; ++i) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS
