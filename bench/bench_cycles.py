@@ -105,7 +105,7 @@ def measure(name, graph, solver, config: HlsConfig | None = None):
 ORDER = ("setup", "factor_jacobian", "gradient", "hgc", "hgc_beside", "qr_stack", "qr",
          "qr_commit", "assemble", "cholesky", "reassemble", "recholesky", "store", "backsub",
          "state_update", "factor_cost",
-         "lm_iteration", "lm_control", "lm_accept", "rounding_noise")
+         "lm_iteration", "lm_control", "lm_accept", "lm_restore", "rounding_noise")
 
 
 def cases():

@@ -40,7 +40,6 @@ from dataclasses import replace
 
 import fgc_backends.hls.units.backsub as bs
 import fgc_backends.hls.units.cholesky as ch
-import fgc_backends.hls.units.lm_control as lc
 from fgc.app.specs import example
 from fgc.compile import compile_graph
 from fgc.ir.program import SolverConfig
@@ -139,22 +138,16 @@ def flat_column_schedule(tables, ops):
 
 
 def tail_cut(cut: str):
-    """Install the LM tail's what-if ``cut`` (none of them built): ``flat``
-    (:func:`flat_column_schedule`), ``accept8`` (the accepted copy eight words a cycle: X,
-    X_TRIAL and G cyclic 4, eight multiply-adds for |X|^2), ``no_accept`` (no accepted copy at
-    all: X, G's zeroing and |X|^2 all elsewhere at no cycles). Returns the undo."""
-    saved = bs.column_schedule, lc.ACCEPT_PORTS, lc.lm_control_phases
+    """Install the LM tail's what-if ``cut`` (not built): ``flat``
+    (:func:`flat_column_schedule`). The ``no_accept`` what-if (no accepted copy) is built since
+    (the trial held in X: fgc_lm.h's FGC_LM_TRIAL_IN_X), and with it ``accept8`` (the copy eight
+    words a cycle) has no copy left to widen. Returns the undo."""
+    saved = bs.column_schedule
     if cut == "flat":
         bs.column_schedule = flat_column_schedule
-    elif cut == "accept8":
-        lc.ACCEPT_PORTS = 8
-    elif cut == "no_accept":
-        base = lc.lm_control_phases
-        lc.lm_control_phases = lambda *a, **k: [ph for ph in base(*a, **k)
-                                                if ph.name != "lm_accept"]
 
     def undo():
-        bs.column_schedule, lc.ACCEPT_PORTS, lc.lm_control_phases = saved
+        bs.column_schedule = saved
     return undo
 
 
@@ -502,10 +495,10 @@ def main() -> None:
     ap.add_argument("--lanes", type=int, default=2)
     ap.add_argument("--third", action="store_true")
     ap.add_argument("--tail-cuts", action="store_true",
-                    help="the LM tail's what-ifs (flat, accept8, no_accept) at 5 x1, 20 x2, 40 x2")
+                    help="the LM tail's what-if (flat) at 5 x1, 20 x2, 40 x2")
     args = ap.parse_args()
     if args.tail_cuts:
-        for cut in ("as built", "flat", "accept8", "no_accept"):
+        for cut in ("as built", "flat"):
             undo = tail_cut(cut)
             d5 = design(5, 1, 1)
             row = [f"{cut:10s} #CPE 5 x1 {d5.cycles:7,d} ({d5.dsp:,d} DSP)"]
@@ -551,8 +544,8 @@ def main() -> None:
             c = table[cpe, sets, lanes].cycles
             same = table[5, 1, lanes].cycles
             name = "x2 + the third Gram lane" if sets == 3 else f"x{sets}"
-            print(f"80 CPEs as #CPE {cpe} {name} L{lanes}: {default5 / c:.2f}x the default "
-                  f"#CPE 5 x1 ({default5:,d}), {same / c:.2f}x #CPE 5 x1 L{lanes} ({same:,d})")
+            print(f"80 CPEs as #CPE {cpe} {name} L{lanes}: {default5 / c:.3f}x the default "
+                  f"#CPE 5 x1 ({default5:,d}), {same / c:.3f}x #CPE 5 x1 L{lanes} ({same:,d})")
 
 
 if __name__ == "__main__":

@@ -386,12 +386,13 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         for v in k.variables:
             kinds[v] = k.kind
     variables, steps = retire_order(program, retire_solved(_tables(program)))
+    from fgc_backends.hls.units.lm_control import retire_step_test
     ii, depth = retire_timing(program.variables, plan.ops, _sizes(program)["MAX_F"],
-                              plan.options.state_allocation)
+                              plan.options.state_allocation,
+                              retire_step_test(program, plan.options))
     retire = {"kinds": kinds, "variables": variables, "steps": steps, "ii": ii, "depth": depth}
     # back_substitute's trial_cost (units/datapath.py): its loops' tables, II and depth
     from fgc_backends.hls.units.datapath import trial_banked, trial_span
-    from fgc_backends.hls.units.lm_control import retire_step_test
     split = retire_step_test(program, plan.options)
     trial = _trial_context(program, context["blocks"], blocks, phase, split,
                            None if split else _trial_var_end(program, plan))

@@ -54,7 +54,8 @@ PHASE_PART = {"factor_jacobian": "linearise", "gradient": "linearise", "whiten_s
               "reassemble": "eliminate", "recholesky": "eliminate",
               "backsub": "back-substitute", "state_update": "update",
               "factor_cost": "cost + decision", "lm_iteration": "cost + decision",
-              "lm_control": "cost + decision", "lm_accept": "cost + decision"}
+              "lm_control": "cost + decision", "lm_accept": "cost + decision",
+              "lm_restore": "cost + decision"}
 
 
 @dataclass(frozen=True)

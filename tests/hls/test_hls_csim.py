@@ -25,7 +25,7 @@ from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph
 from fgc.frontend import noise
 from fgc.frontend.factors import BetweenFactor, PriorFactor
-from fgc.frontend.geometry import Pose3
+from fgc.frontend.geometry import Point2, Pose2, Pose3
 from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
 from fgc_backends import sim
@@ -406,3 +406,52 @@ def test_one_step_rows_in_the_banks_match_the_simulator(tmp_path):
     result = run_csim(project, program, data)
     reference = sim.run(program, data, precision="float64")
     _check_against_reference("one_step", program, result, reference, "double")
+
+
+def _two_beacons(y0: float = 0.001) -> fgc.Graph:
+    """A Pose2 between two beacons (-1, 0) and (1, 0) at range √2 each, started at (0, y0)
+    almost on the line between them: the ranges' Jacobians nearly parallel there, so the
+    undamped step (μ₀ 1e-9) throws the pose ~0.4 / y0 away and raises the cost: LM rejects
+    trial after trial, growing μ, before it walks to (0, 1)."""
+    from fgc.app.specs import example as spec  # (``example`` is this module's fixture)
+
+    range_to_beacon = spec("range_beacons").range_to_beacon
+    g = fgc.Graph()
+    beacons = {"b0": Point2(-1.0, 0.0), "b1": Point2(1.0, 0.0)}
+    for key, where in beacons.items():
+        g.add_variable(key, where)
+        g.add(PriorFactor(key, where, noise.isotropic(2, 0.01)))
+    g.add_variable("x", Pose2(0.0, y0, 0.0))
+    g.add(PriorFactor("x", Pose2(0.0, y0, 0.0), noise.diagonal([100.0, 100.0, 0.1])))
+    for key in beacons:
+        g.add(range_to_beacon("x", key, measured=2 ** 0.5, noise=noise.isotropic(1, 0.05)))
+    return g
+
+
+def test_lm_rejections_restore_the_state_held_in_place(tmp_path):
+    """The column design holds LM's trial in X (fgc_lm.h's FGC_LM_TRIAL_IN_X: the state update
+    writes x ⊕ δ over X, backing X up into X_BACK, and moves G into G_BACK): every trial not
+    taken must put X back before the next solve. A run of many rejections and retries (the
+    counting build's events) equals the simulator at 1e-9 in double, and its counted phases
+    the plan's (lm_restore once per trial not taken); without the restore the retries would
+    start from the rejected trial."""
+    sys.path.insert(0, str(ROOT / "bench"))
+    from bench_cycles import measure
+
+    graph = _two_beacons()
+    solver = SolverConfig(linear="cholesky", lambda_initial=1e-9, mu_min=1e-9)
+    program = compile_graph(graph, solver, name="beacons")
+    project = emit(program, tmp_path, HlsConfig(scalar="double"))
+    assert "X_BACK" in (project.directory / "beacons.cpp").read_text()  # the column design
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)
+    _check_against_reference("beacons", program, result, reference, "double")
+    assert result.iterations == reference.iterations
+    phases, events = measure("beacons", graph, solver, HlsConfig(scalar="double"))
+    assert events.get("resolve", 0) >= 5 and events["restore"] >= events["resolve"]
+    assert events["accept"] < events["backsub"]  # solves that ran and were not taken
+    counted, model = phases["lm_restore"]
+    assert counted > 0 and counted == model
+    for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)

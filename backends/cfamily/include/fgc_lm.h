@@ -23,6 +23,7 @@
 //   singular), step_test(solved, mu, out) (false: not solved or delta not finite; out = {|delta|^2,
 //   predicted decrease}), retract_trial() (X_TRIAL = X (+) DELTA), cost_trial() (the cost at
 //   X_TRIAL), noise_x() (the cost's rounding noise at X), accept_trial() (X = X_TRIAL),
+//   with FGC_LM_TRIAL_IN_X restore_x() (X = its backup: the trial not taken),
 //   accepted(it, cost, mu, change) (after each accepted step: the native host's progress);
 //   with FGC_LM_COST_IN_LINEARIZE defined, linearized_cost() (the cost at the point
 //   linearize_x last linearised at) instead of cost_x().
@@ -36,6 +37,13 @@
 // (solved_gradient_max()), before its step test, and, where no solve of the linearisation
 // succeeded, before try_steps returns a failure (gradient_max()): the same outcome as testing
 // first (X unchanged, converged on the gradient; only mu, which is not returned, may have grown).
+// FGC_LM_TRIAL_IN_X (the HLS Cholesky kernel with back-substitution by columns): the solve's
+// state update writes X (+) delta into X itself and backs X up as it reads it, so after a solve
+// that ran X holds the trial point: accept_trial() copies nothing, and every way out of a
+// solve that ran other than an accepted step (a small gradient, a small step, a step not
+// finite, a trial rejected) first calls restore_x() (X back from its backup), so the next
+// solve, the rounding noise's band and the caller see X at the linearisation point as before.
+// A solve that failed back-substitutes nothing and leaves X as it was.
 // The reductions live in the hooks: the HLS kernel's run in interleaved partial sums at II 1
 // (fgc_lm_units.h) and count cycles, the native solver's are plain loops.
 //
@@ -76,6 +84,17 @@ Step<typename CFG::T> failed_step(bool tested, int reason, typename CFG::T cost)
 #else
 #define FGC_LM_FAILED(reason) Step<T>{2, reason, cost, T(0)}
 #endif
+// A trial not taken: X back to the linearisation point where a solve ran (it wrote the trial
+// into X: FGC_LM_TRIAL_IN_X); else nothing (X_TRIAL apart, X never written).
+template <class CFG>
+void undo_trial(bool ran) {
+#pragma HLS INLINE
+#ifdef FGC_LM_TRIAL_IN_X
+    if (ran) CFG::restore_x();
+#else
+    (void)ran;
+#endif
+}
 
 template <class CFG>
 Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
@@ -93,6 +112,7 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
         if (solved && !tested) {
             tested = true;
             if (CFG::solved_gradient_max() < CFG::eps_gradient()) {
+                undo_trial<CFG>(solved);
                 return Step<T>{1, CFG::REASON_GRADIENT, cost, T(0)};
             }
         }
@@ -103,6 +123,7 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
         const T d2 = test[0], predicted = test[1];
         if (ok) {
             if (CFG::root(d2) <= CFG::eps_step() * (x_norm + CFG::eps_step())) {
+                undo_trial<CFG>(solved);
                 return Step<T>{1, CFG::REASON_STEP, cost, T(0)};
             }
             CFG::retract_trial();
@@ -123,6 +144,7 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
                 return Step<T>{0, 0, trial, predicted};
             }
         }
+        undo_trial<CFG>(solved);  // not taken: X back before the next solve (or the way out)
         if (!(mu[0] > T(0))) return FGC_LM_FAILED(CFG::REASON_NON_FINITE);
         mu[0] = mu[0] * CFG::lambda_factor();
         if (mu[0] > CFG::lambda_upper_bound()) {

@@ -941,6 +941,7 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
     // and the gradient's largest |entry| summed a variable an iteration (the variable's terms from retract_variable; a
     // sum's add is its carried dependence, its latency within RETIRE_II), to CFG::retire_test
     typename CFG::TestT dd = 0, dg = 0, gm = 0;  // (and the gradient's largest |entry|)
+    typename CFG::TestT xx = 0;  // |x (+) delta|^2: X's words as the state update writes them
     bool fin = true;
 #endif
     for (int i = 0; i < CFG::N_VARIABLES; ++i) {
@@ -964,11 +965,12 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
             }
         }
 #ifdef FGC_BS_STEP_TEST
-        typename CFG::TestT vd = 0, vg = 0, vm = 0;
+        typename CFG::TestT vd = 0, vg = 0, vm = 0, vx = 0;
         bool vf = true;
-        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2, vd, vg, vm, vf);  // its words on to trial_cost
+        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2, vd, vg, vm, vf, vx);  // its words on to trial_cost
         dd += vd;
         dg += vg;
+        xx += vx;
         gm = vm > gm ? vm : gm;
         fin = fin && vf;
 #else
@@ -977,7 +979,7 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
         FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
     }
 #ifdef FGC_BS_STEP_TEST
-    CFG::retire_test(dd, dg, gm, fin);
+    CFG::retire_test(dd, dg, gm, fin, xx);
 #else
     (void)tx2;  // (written only with the kernel's second cost process)
 #endif

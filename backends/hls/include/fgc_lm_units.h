@@ -9,6 +9,7 @@
 //                                                   gradient_max; |x| kept for its x_norm)
 //   bool lm_step_test<CFG>(solved, mu, delta, g, out) out = {|delta|^2, 0.5 delta^T (g + mu delta)}
 //   void lm_accept<CFG>(x, x_trial)                 x = x_trial
+//   void lm_restore<CFG>(x, x_back)                 x = x_back (the column design's trial not taken)
 //   void lm_top<CFG>(x_in, data, x_out, x, data_buf, errors, info)
 //                                                   the batch top's body: x and the data in,
 //                                                   fgc_lm::optimize<CFG>, x out
@@ -33,11 +34,15 @@ inline int pair_ii(int words, int partials, int lat) {
     return dot_ii(ceil_div(words, 2), partials, lat);
 }
 inline int larger(int a, int b) { return a > b ? a : b; }
-// pair_depth for four words a cycle (lm_accept_norm: four lanes of partials folded together)
-inline int quad_depth(int words, int partials, int lat, int lead) {
-    const int trip = ceil_div(words, 4);
-    const int k = trip < partials ? (trip < 1 ? 1 : trip) : partials;
-    return lead + lat * (1 + ceil_log2(4 * k));
+// A reduction's P interleaved partial sums (maxima) set to zero before its loop: registers
+// (the callers partition them completely), all in one cycle.
+template <class T, int P>
+inline void zero_partials(T part[P]) {
+#pragma HLS INLINE
+    for (int p = 0; p < P; ++p) {
+#pragma HLS UNROLL
+        part[p] = T(0);
+    }
 }
 inline int pair_depth(int words, int partials, int lat, int lead) {
     const int trip = ceil_div(words, 2);
@@ -57,11 +62,8 @@ void lm_iterate(const typename CFG::T g[CFG::N_TANGENT], const typename CFG::T x
     T gp[2 * CFG::PARTIALS], xp[2 * CFG::PARTIALS];  // (PARTIALS >= MAXIMA maxima: one distance)
 #pragma HLS ARRAY_PARTITION variable=gp complete
 #pragma HLS ARRAY_PARTITION variable=xp complete
-    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
-        gp[p] = T(0);
-        xp[p] = T(0);
-    }
+    zero_partials<T, 2 * CFG::PARTIALS>(gp);
+    zero_partials<T, 2 * CFG::PARTIALS>(xp);
     const int N_LONGER = CFG::N_X > CFG::N_TANGENT ? CFG::N_X : CFG::N_TANGENT;
     for (int e = 0; e < N_LONGER; e += 2) {
 #pragma HLS PIPELINE II=1
@@ -101,11 +103,8 @@ bool lm_step_test(bool solved, typename CFG::T mu, const typename CFG::T delta[C
     T dp[2 * CFG::PARTIALS], pp[2 * CFG::PARTIALS];
 #pragma HLS ARRAY_PARTITION variable=dp complete
 #pragma HLS ARRAY_PARTITION variable=pp complete
-    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
-        dp[p] = T(0);
-        pp[p] = T(0);
-    }
+    zero_partials<T, 2 * CFG::PARTIALS>(dp);
+    zero_partials<T, 2 * CFG::PARTIALS>(pp);
     for (int e = 0; e < CFG::N_TANGENT; e += 2) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=dp inter true distance=CFG::PARTIALS
@@ -177,10 +176,13 @@ void lm_top(const typename CFG::T x_in[CFG::N_X], const typename CFG::T data[CFG
 // The column design's LM control (accel.cpp.jinja's retire_test: Cholesky with back-substitution
 // by columns, not on-chip streams): the step test's sums |delta|^2 and delta^T g and delta's
 // finiteness are formed by back_substitute's state update as each variable's delta arrives
-// (fgc_backsub.h's backsub_retire_cols, at its II), |X| by the copies that change X (the top's
-// x_in and the accepted step's), and G is zeroed by those copies for the next linearisation
-// (linearize_all has no zeroing pass then). What is left per linearisation is the gradient's
-// largest |entry|, per solve the scalars of the step test, per accepted step the copy.
+// (fgc_backsub.h's backsub_retire_cols, at its II), which also writes x (+) delta into X in
+// place (X backed up as it is read), sums its |x (+) delta|^2 (the next |X| if the step is
+// taken; the top's x_in the first) and moves G out of the next linearisation's way (the
+// kernel's retract_variable); the top's data copy zeroes G once a call (linearize_all has no
+// zeroing pass). What is left per linearisation is the gradient's largest |entry| (only where
+// no solve ran), per solve the scalars of the step test, per accepted step nothing, per trial
+// not taken the restore.
 
 // the gradient's largest |entry|, two words a cycle into 2 PARTIALS partial maxima (lm_iterate
 // without |x|)
@@ -190,10 +192,7 @@ typename CFG::T lm_gradient_max(const typename CFG::T g[CFG::N_TANGENT]) {
     typedef typename CFG::T T;
     T gp[2 * CFG::PARTIALS];  // (PARTIALS >= MAXIMA maxima)
 #pragma HLS ARRAY_PARTITION variable=gp complete
-    for (int p = 0; p < 2 * CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
-        gp[p] = T(0);
-    }
+    zero_partials<T, 2 * CFG::PARTIALS>(gp);
     for (int e = 0; e < CFG::N_TANGENT; e += 2) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=gp inter true distance=CFG::PARTIALS
@@ -228,44 +227,21 @@ bool lm_step_sums(bool solved, typename CFG::T mu, typename CFG::T dd, typename 
     return solved && finite;
 }
 
-// x = x_trial four words a cycle (the kernel partitions x, x_trial and g cyclic 2: two banks of
-// two ports each, word e + h in bank h % 2), |x|^2 of the words copied into 4 PARTIALS partial
-// sums (the next linearisation's |X|), and G zeroed four words a cycle for the next
-// linearisation (G's last reader, the step test's sums, ran in the solve before): one loop
-// over the longer
+// The column design keeps the trial in X (fgc_lm.h's FGC_LM_TRIAL_IN_X: the state update writes
+// x (+) delta into X and X's words into x_back as it reads them): a trial not taken puts X back,
+// two words a cycle (the memories' two ports). Once per solve that ran and was not taken.
 template <class CFG>
-typename CFG::T lm_accept_norm(typename CFG::T x[CFG::N_X], const typename CFG::T x_trial[CFG::N_X],
-                               typename CFG::T g[CFG::N_TANGENT]) {
-#pragma HLS INLINE
-    typedef typename CFG::T T;
-    T xp[4 * CFG::PARTIALS];
-#pragma HLS ARRAY_PARTITION variable=xp complete
-    for (int p = 0; p < 4 * CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
-        xp[p] = T(0);
-    }
-    const int N_LONGER = CFG::N_X > CFG::N_TANGENT ? CFG::N_X : CFG::N_TANGENT;
-    for (int e = 0; e < N_LONGER; e += 4) {
+void lm_restore(typename CFG::T x[CFG::N_X], const typename CFG::T x_back[CFG::N_X]) {
+    for (int e = 0; e < CFG::N_X; e += 2) {
 #pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS
-        for (int h = 0; h < 4; ++h) {
+        for (int h = 0; h < 2; ++h) {
 #pragma HLS UNROLL
-            const int i = e + h;
-            const int k = h * CFG::PARTIALS + (e >> 2) % CFG::PARTIALS;
-            if (i < CFG::N_X) {
-                const T v = x_trial[i];
-                x[i] = v;
-                xp[k] += v * v;
-            }
-            if (i < CFG::N_TANGENT) g[i] = T(0);
+            if (e + h < CFG::N_X) x[e + h] = x_back[e + h];
         }
     }
-    FGC_EVENT("accept");
-    FGC_PHASE("lm_accept");
-    FGC_CYCLES("accept", 0, "accept", ceil_div(N_LONGER, 4),
-               dot_ii(ceil_div(CFG::N_X, 4), CFG::PARTIALS, CFG::ADD_LAT),
-               quad_depth(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT));
-    return fold_partials<T, 4 * CFG::PARTIALS>(xp);
+    FGC_EVENT("restore");
+    FGC_PHASE("lm_restore");
+    FGC_CYCLES("restore", 0, "restore", ceil_div(CFG::N_X, 2), CFG::MOVE_II, CFG::MOVE_DEPTH);
 }
 
 // lm_top for the column design: |x|^2 of the words coming in (PARTIALS interleaved partial
@@ -281,10 +257,7 @@ void lm_top_norm(const typename CFG::T x_in[CFG::N_X], const typename CFG::T dat
     FGC_PHASE("setup");
     T xp[CFG::PARTIALS];
 #pragma HLS ARRAY_PARTITION variable=xp complete
-    for (int p = 0; p < CFG::PARTIALS; ++p) {
-#pragma HLS UNROLL
-        xp[p] = T(0);
-    }
+    zero_partials<T, CFG::PARTIALS>(xp);
     for (int i = 0; i < CFG::N_X; ++i) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS

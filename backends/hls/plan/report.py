@@ -135,7 +135,8 @@ PHASE_TRIGGER = {"setup": "call", "factor_jacobian": "linearize", "gradient": "l
                  "backsub": "backsub", "assemble": "solve", "cholesky": "solve", "store": "solve",
                  "hgc_beside": "linearize", "reassemble": "resolve", "recholesky": "resolve",
                  "lm_control": "solve", "lm_iteration": "linearize", "lm_accept": "accept",
-                 "state_update": "retract", "factor_cost": "cost", "rounding_noise": "noise"}
+                 "lm_restore": "restore", "state_update": "retract", "factor_cost": "cost",
+                 "rounding_noise": "noise"}
 
 
 def phase_group(name: str) -> str:

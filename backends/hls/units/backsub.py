@@ -520,13 +520,15 @@ def column_retire(ctx) -> tuple[int, int, list[int]]:
     """The column design's region (:func:`column_schedule`), when its state update ends
     (:func:`retire_sent`: each step's variables retired no earlier than the end of the pass
     that solved it) and when each variable is retired, in RETIRE_VARS order."""
+    from fgc_backends.hls.units.lm_control import retire_step_test
     from fgc_backends.hls.units.state_update import retire_timing
     tables = ctx.tables
     ends, columns = column_schedule(tables, ctx.les)
     order = column_order(tables)
     counts = [len(ctx.program.schedule.steps[s].frontals) for s in order]
     ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
-                              ctx.opts.state_allocation)
+                              ctx.opts.state_allocation,
+                              retire_step_test(ctx.program, ctx.opts))
     var_end: list[int] = []
     last = retire_sent([ends[s] for s in order], counts, ii, depth, var_end)
     return columns, last, var_end
@@ -572,6 +574,7 @@ def slot_retire(ctx) -> tuple[list, int, list[int]]:
     variable's words are in trial_cost's stream (in the retire order). The emitter asks it too
     (the order of trial_cost's loops is chosen on these ends: units/datapath.py's
     trial_loops)."""
+    from fgc_backends.hls.units.lm_control import retire_step_test
     from fgc_backends.hls.units.state_update import retire_timing
     tables, timing, ops = ctx.tables, ctx.les_timing, ctx.les
     lanes = ctx.opts.backsub_lanes
@@ -583,7 +586,8 @@ def slot_retire(ctx) -> tuple[list, int, list[int]]:
             sent.append(k)
             counts.append(len(ctx.program.schedule.steps[solve].frontals))
     ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
-                              ctx.opts.state_allocation)
+                              ctx.opts.state_allocation,
+                              retire_step_test(ctx.program, ctx.opts))
     var_end: list[int] = []
     region = retire_region(slots, sent, counts, ii, depth, var_end)
     return slots, region, var_end
@@ -675,9 +679,11 @@ def column_build(ctx) -> None:
     if retire_step_test(program, ctx.opts):  # LM's step test in the state update's loop
         from fgc_backends.hls.units.state_update import retire_timing
         ii, _ = retire_timing(program.variables, ctx.ops, ctx.sizes["MAX_F"],
-                              ctx.opts.state_allocation)
+                              ctx.opts.state_allocation,
+                              retire_step_test(program, ctx.opts))
         ctx.units.append(bound_unit("retire_step_test", "LM's step test summed in the state "
-                                    "update (|δ|², δᵀg a variable an iteration)",
+                                    "update (|δ|², δᵀg and the trial's |x ⊕ δ|² a variable "
+                                    "an iteration)",
                                     (retire_test_loop(program, ii),), table=ctx.ops))
     column_phases(ctx, name)
 

@@ -453,8 +453,10 @@ def build(ctx) -> None:
     # sending X's variables a retire II apart
     loops = trial_state(ctx)
     ctx.shared["trial_loops"] = loops
+    from fgc_backends.hls.units.lm_control import retire_step_test
     ii, depth = retire_timing(program.variables, ops, ctx.sizes["MAX_F"],
-                              opts.state_allocation)
+                              opts.state_allocation,
+                              retire_step_test(program, opts))
     var_end = [j * ii + depth for j in range(len(program.variables))]
     pos = trial_positions(program, ctx.tables) if trial_split(program, opts) else None
     end = max(var_end[-1:] + [trial_end(loops, var_end, pos)])

@@ -22,9 +22,12 @@ def retire_step_test(program, opts) -> bool:
     on-chip stream's design: those refuse the column width). Then |δ|², δᵀg, δ's finiteness
     and the gradient's largest |entry| (tested after the solve) are summed by
     ``backsub_retire_cols`` a variable an iteration at its II (the state update's
-    loop; its operators :func:`retire_test_loop`), |X| by the copies into X (the top's x_in, the
-    accepted step's), G zeroed by those copies (no zeroing pass before a linearisation): LM
-    control keeps the gradient's maximum, the step test's scalars and the decision, the copy."""
+    loop; its operators :func:`retire_test_loop`), which also holds the trial in X (x ⊕ δ
+    written into X in place, X's words backed up into X_BACK as they are read: fgc_lm.h's
+    FGC_LM_TRIAL_IN_X, so an accepted step copies nothing and a trial not taken is restored),
+    sums |x ⊕ δ|² (the next |X|; the top's x_in the first) and moves G into G_BACK, zeroing it
+    for the next linearisation (the top's data copy zeroes it once a call): LM control keeps
+    the step test's scalars and the decision, and the restore of a trial not taken."""
     return (program.solver.linear == "cholesky" and opts.backsub_lanes == 4
             and opts.hessian_storage == "frontal")
 
@@ -33,13 +36,13 @@ def retire_test_loop(program, ii: int) -> BoundLoop:
     """The step test's operators in the state update's loop (II ``ii``): per variable of the
     widest tangent its δ_k² and δ_k g_k (a multiply each) and their two sums (a chain of adds
     each, the running sums' add included), |g_k| against the variable's maximum and that against
-    the running one (compares), shared at that II as Vitis binds a pipelined loop."""
+    the running one (compares), and per word of the widest storage its (x ⊕ δ)_k² and their sum
+    (|X|² of the trial held in X: a multiply and an add each, the running sum's add one more),
+    shared at that II as Vitis binds a pipelined loop."""
     w = max(v.dim for v in program.variables)
-    return BoundLoop("retire_step_test", (("add", 2 * w), ("mul", 2 * w), ("compare", w + 1)),
-                     ii)
-
-
-ACCEPT_PORTS = 4  # the column design's accepted copy: X, X_TRIAL and G cyclic 2 (two ports each)
+    s = max(v.storage_dim for v in program.variables)
+    return BoundLoop("retire_step_test", (("add", 2 * w + s + 1), ("mul", 2 * w + s),
+                                          ("compare", w + 1)), ii)
 
 
 def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
@@ -51,7 +54,7 @@ def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
     ahead; ``max`` a running maximum: the read and |·| ahead), ``extra`` the latency the loop
     adds around it (the step test's μ‖δ‖² after the folds); ``partials``: a lane's partials if not
     the recurrence's latency (lm_iterate's maxima: as many as its sums); ``lanes``: words a
-    cycle (lm_accept_norm's four: :data:`ACCEPT_PORTS`)."""
+    cycle."""
     ii, depth = timing[kind]
     trip = -(-words // lanes)
     k = max(1, min(trip, ii if partials is None else partials))
@@ -72,10 +75,11 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict,
     each, PIPELINEd at II 1 (:func:`pair_dot`); the step test sums ‖δ‖² and δᵀg (two products
     a word) and adds μ‖δ‖² to the latter after the folds (δᵀ(g + μδ)), a multiply and an add
     more in its depth. ``retire_test`` (:func:`retire_step_test`): the step test's sums come
-    from the state update, so ``iterate`` is the gradient's maximum alone, ``decide`` the step
-    test's scalars (μ‖δ‖², + δᵀg) and the decision, and ``accept`` copies x and sums |x|² four
-    words a cycle (the next linearisation's |X|; X, X_TRIAL and G cyclic 2: :data:`ACCEPT_PORTS`)
-    while it zeroes G four words a cycle for the next linearisation, one loop over the longer;
+    from the state update, so ``decide`` is the step test's scalars (μ‖δ‖², + δᵀg) and the
+    decision; no ``lm_accept``: the state update held the trial in X, summed its |X|² and moved
+    G out of the next linearisation's way; instead ``lm_restore`` once per solve that ran and
+    was not taken (a rejection, or the way out on a small gradient or step: per="rejection"),
+    X_BACK copied into X two words a cycle (lm_restore);
     no ``lm_iteration``: the state update finds the gradient's largest
     entry too and fgc_lm.h tests it after the solve (FGC_LM_GRADIENT_IN_SOLVE; the gradient's
     own pass, ``lm_gradient_max``, runs only where no solve of a linearisation succeeded, before
@@ -87,14 +91,12 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict,
     trip = _ported(max(n_t, n_x))  # one loop over the longer of the two
     step = pair_dot(n_t, timing, extra=tail)
     if retire_test:
-        # X, X_TRIAL and G cyclic 2 (ACCEPT_PORTS words a cycle): four lanes of partials
-        quad = -(-max(n_t, n_x) // ACCEPT_PORTS)
-        _, qii, qdepth = pair_dot(n_x, timing, lanes=ACCEPT_PORTS)
         return (Phase("lm_control", False, (Process("decide", "lm_control", (
                     Loop("step_scalars", 1, 1, tail),
                     kernel_loop("decision", 1, "decision", timing))),)),
-                Phase("lm_accept", False, (Process("accept", "lm_control", (
-                    Loop("accept", quad, qii, qdepth),)),)))
+                Phase("lm_restore", False, (Process("restore", "lm_control", (
+                    kernel_loop("restore", _ported(n_x), "move", timing),)),),
+                      per="rejection"))
     return (Phase("lm_iteration", False, (Process("iterate", "lm_control", (
                 Loop("gradient_x_norm", trip, max(gii, xii), max(gdepth, xdepth)),)),)),
             Phase("lm_control", False, (Process("decide", "lm_control", (
@@ -168,11 +170,10 @@ def build(ctx) -> None:
     # one adder), and the block types' running sums (one adder)
     fused = retire_step_test(program, ctx.opts)
     if fused:  # (the step test's sums: the state update's loop, units/backsub.py)
-        # the gradient's maximum (two compares a cycle), the accepted copy's |x|² (four
-        # multiply-adds a cycle; INLINE: its fold shares the decision's operators), lm_top_norm's
-        # x_in |x|² (a multiply-add a cycle) and its fold (its own function: one adder)
+        # the gradient's maximum (two compares a cycle), lm_top_norm's x_in |x|² (a
+        # multiply-add a cycle) and its fold (its own function: one adder); the restore moves
+        # words only (|X|² of a trial taken: the state update's, units/backsub.py)
         loops = [BoundLoop("gradient_max", (("compare", 2),), 1),
-                 BoundLoop("accept_norm", (("add", ACCEPT_PORTS), ("mul", ACCEPT_PORTS)), 1),
                  BoundLoop("x_in_norm", (("add", 1), ("mul", 1)), 1),
                  BoundLoop("x_in_fold", (("add", 1),), 0),
                  BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
@@ -202,7 +203,8 @@ def build(ctx) -> None:
 
 SPEC = UnitSpec(
     name="lm_control", role="LM control, the top's copies and the rounding-noise pass",
-    build=build, phases=("lm_iteration", "lm_control", "lm_accept", "setup", "rounding_noise"),
+    build=build, phases=("lm_iteration", "lm_control", "lm_accept", "lm_restore", "setup",
+                         "rounding_noise"),
     header="fgc_lm_units.h",
     constants=(("N_X", "storage words of the state"), ("N_TANGENT", "tangent words"),
                ("PARTIALS", "interleaved partial sums (the adder latency)"),

@@ -1,4 +1,5 @@
-"""The kernel's stores: the state (X, X_TRIAL), the gradient and step (G, DELTA), the data buffer
+"""The kernel's stores: the state (X, X_TRIAL; the column design's LM X_BACK and G_BACK), the
+gradient and step (G, DELTA), the data buffer
 (DATA_BUF) the stream section writes a keyframe's words into, and the linear solver's
 conditionals and passed factors (COND, NF)."""
 
@@ -44,13 +45,14 @@ def build(ctx) -> None:
     program, ops = ctx.program, ctx.ops
     n_x = sum(v.storage_dim for v in program.variables)
     n_t = sum(v.dim for v in program.variables)
-    # the column design's LM: X, X_TRIAL and G cyclic 2 (units/lm_control.py's ACCEPT_PORTS:
-    # the accepted step's copy four words a cycle)
+    # the column design's LM (units/lm_control.py's retire_step_test): the trial held in X, X's
+    # backup X_BACK, G and G_BACK (G moved there by the state update for LM's retries), DELTA
     from fgc_backends.hls.units.lm_control import retire_step_test
     if retire_step_test(program, ctx.opts):
-        ctx.memories.append(Memory("state", n_x, ops.word_bits, 2))  # X
-        ctx.memories.append(Memory("state_trial", n_x, ops.word_bits, 2))  # X_TRIAL
-        ctx.memories.append(Memory("gradient", n_t, ops.word_bits, 2))  # G
+        ctx.memories.append(Memory("state", n_x, ops.word_bits, 1))  # X
+        ctx.memories.append(Memory("state_back", n_x, ops.word_bits, 1))  # X_BACK
+        ctx.memories.append(Memory("gradient", n_t, ops.word_bits, 1))  # G
+        ctx.memories.append(Memory("gradient_back", n_t, ops.word_bits, 1))  # G_BACK
         ctx.memories.append(Memory("delta", n_t, ops.word_bits, 1))  # DELTA
     else:
         ctx.memories.append(Memory("state", n_x, ops.word_bits, 1))  # X

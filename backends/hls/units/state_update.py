@@ -81,16 +81,20 @@ def retire_order(program, solved: list[int]) -> tuple[tuple[int, ...], tuple[int
 
 
 def retire_timing(variables, ops: OperatorTable, max_f: int,
-                  allocation=STATE_ALLOCATION) -> tuple[int, int]:
+                  allocation=STATE_ALLOCATION, in_place: bool = False) -> tuple[int, int]:
     """(II, depth) of backsub_retire's loop (a variable an iteration) over ``variables``
     (VariableSpecs): II the largest of the
     types' datapaths (:func:`retract_datapath`) and of the words an iteration moves through its
     copy of delta's :data:`PORTS` ports (a step's ``max_f`` words in when it arrives, a
-    variable's tangent words out); depth: the stream's words in (a pair a cycle), then the
-    deepest datapath."""
+    variable's tangent words out); ``in_place`` (the column design's LM, units/lm_control.py's
+    retire_step_test: the trial written into X as X is read) also X's: the widest storage's
+    words read and written through its :data:`PORTS` ports. Depth: the stream's words in (a
+    pair a cycle), then the deepest datapath."""
     kinds = [retract_datapath(name, ops, allocation) for name in _type_counts(variables)]
     widest = max(v.dim for v in variables)
     ii = max([-(-(max_f + widest) // PORTS)] + [k[1] for k in kinds])
+    if in_place:
+        ii = max(ii, -(-2 * max(v.storage_dim for v in variables) // PORTS))
     return ii, -(-max_f // PORTS) + max(k[2] for k in kinds)
 
 

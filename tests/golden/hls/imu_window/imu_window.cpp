@@ -158,6 +158,7 @@
 #include "fgc_backsub.h"
 #define FGC_LM_COST_IN_LINEARIZE  // fgc_lm.h: the first linearisation gives the cost at X (linearized_cost)
 #define FGC_LM_GRADIENT_IN_SOLVE  // fgc_lm.h: the small-gradient test after the solve (its state update's maximum)
+#define FGC_LM_TRIAL_IN_X  // fgc_lm.h: the solve's state update writes the trial into X (restore_x: not taken)
 #define FGC_LM_LINEARIZE_SOLVE  // fgc_lm.h: linearize_x and solve_at share linearize_solve's one instance
 #include "fgc_lm.h"
 #include "fgc_lm_units.h"
@@ -367,7 +368,7 @@ const int BLOCK3_TILE_ROWS[10] = {
 
 // ---- the accelerator's memories: static, sized at compile time; nothing is allocated
 T X[N_X];          // current estimate (storage)
-T X_TRIAL[N_X];    // x (+) delta
+T X_BACK[N_X];     // X as the last solve's state update read it (X then holds x (+) delta)
 T DATA_BUF[N_DATA];  // the factor data, copied in once per call
 // trial_cost_b's copy of DATA_BUF's words TRIAL_B_LO ... (its instances' lines; the top's data
 // copy writes both): back_substitute's fourth process reads it, DATA_BUF the third
@@ -375,6 +376,8 @@ const int TRIAL_B_LO = 1364, TRIAL_B_WORDS = 31;
 T DATA_B[TRIAL_B_WORDS];
 L AB[N_A];         // whitened rows [A | b] of every factor instance (row-major, d + 1 columns)
 T G[N_TANGENT];    // gradient A^T b
+T G_BACK[N_TANGENT];  // G as the first solve after a linearisation read it (that solve zeroes G)
+bool G_MOVED = false;  // G is in G_BACK (a solve ran since the linearisation), G zero
 T LIN_SQ = T(0);  // sum of the instances' b^T b (their Grams' last diagonal entry): twice the cost at the linearisation point
 T VAR_SCALE[N_VARIABLES];
 T DELTA[N_TANGENT];
@@ -3152,8 +3155,10 @@ T noise_3(T noise, T ab[NOISE_AB]) {
 bool linearize_all(const T x[N_X]) {
     FGC_EVENT("linearize");
     FGC_PHASE("hgc");
-    // G is zero here: the top's data copy and the accepted step's copy zero it (fgc_lm_units.h's
-    // lm_top_norm, lm_accept_norm), and LM linearises only at the start and after an accepted step
+    // G is zero here: the top's data copy zeroes it (fgc_lm_units.h's lm_top_norm), and so does
+    // every solve's state update as it reads G (retract_variable: G moved to G_BACK for the
+    // retries); LM linearises only at the start and after an accepted step, a solve that ran
+    G_MOVED = false;
     LIN_SQ = T(0);  // (the HGC adds every instance's b^T b, the block beside the elimination's too)
     bool finite = true;
     bool ok1 = true;
@@ -3215,6 +3220,7 @@ T TRIAL_COST = T(0);  // the cost of the variables back_substitute last sent
 // gradient's largest |entry| (the small-gradient test: fgc_lm.h's FGC_LM_GRADIENT_IN_SOLVE)
 T TRIAL_DD = T(0), TRIAL_DG = T(0), TRIAL_GMAX = T(0);
 bool TRIAL_FINITE = true;
+T TRIAL_XX = T(0);  // |x (+) delta|^2 over the variables (X's words as the state update writes them)
 const int TRIAL_F_0[7] = {  // per entry of cost loop 0: its instance (-1: none)
     3, 2, 4, 1, 5, 0, 6,
 };
@@ -3490,11 +3496,15 @@ const int TRIAL_SEND[24] = {  // per variable the trial-cost processes it goes t
 };
 // (at_x: no solve ran, X's words go to trial_cost for the cost at X). Its words go on to
 // trial_cost (back_substitute's third process) as one stream word.
-// With LM's step test here (retire_test): dd, dg, gm, fin = the variable's delta^T delta,
-// delta^T g, largest |g| and its delta finite (summed, maximised over the variables by the
-// retire; at_x: delta taken as zero).
+// With LM's step test here (retire_test): dd, dg, gm, fin, xx = the variable's delta^T delta,
+// delta^T g, largest |g|, its delta finite and |x (+) delta|^2 (summed, maximised over the
+// variables by the retire; at_x: delta taken as zero). The trial is held in X itself (fgc_lm.h's
+// FGC_LM_TRIAL_IN_X): X's words backed up into X_BACK as they are read, x (+) delta written
+// back in their place; G's read from G, moved to G_BACK and zeroed there (the next
+// linearisation's HGC adds into zeros) by the first solve after a linearisation, read from
+// G_BACK by LM's retries (G_MOVED). at_x writes nothing but the stream.
 void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<TrialVar>& tx,
-                      hls::stream<TrialVar>& tx2, T& dd, T& dg, T& gm, bool& fin) {
+                      hls::stream<TrialVar>& tx2, T& dd, T& dg, T& gm, bool& fin, T& xx) {
     TrialVar out;
     for (int k = 0; k < MAX_STORAGE; ++k) out.word[k] = T(0);
     if (VAR_KIND[v] == 0) {
@@ -3505,7 +3515,12 @@ void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<Tr
         T sd = T(0), sg = T(0), sm = T(0);
         bool ok = true;
         for (int k = 0; k < 6; ++k) {  // the step test's terms of v
-            const T gk = G[VAR_T_OFF[v] + k];
+            const int at = VAR_T_OFF[v] + k;
+            const T gk = G_MOVED ? G_BACK[at] : G[at];
+            if (!at_x) {
+                G_BACK[at] = gk;
+                G[at] = T(0);
+            }
             ok = ok && fgc_isfinite(dv[k]);
             sd += dv[k] * dv[k];
             sg += dv[k] * gk;
@@ -3515,11 +3530,17 @@ void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<Tr
         dg = sg;
         gm = sm;
         fin = ok;
+        T sx = T(0);
         for (int k = 0; k < 12; ++k) {
             const T o = at_x ? xv[k] : ov[k];
-            X_TRIAL[VAR_X_OFF[v] + k] = o;
+            if (!at_x) {
+                X_BACK[VAR_X_OFF[v] + k] = xv[k];
+                X[VAR_X_OFF[v] + k] = o;
+            }
+            sx += o * o;  // |x (+) delta|^2: the next linearisation's |X| if the step is taken
             out.word[k] = o;
         }
+        xx = sx;
     } else if (VAR_KIND[v] == 1) {
         T xv[3], dv[3], ov[3];
         for (int k = 0; k < 3; ++k) xv[k] = X[VAR_X_OFF[v] + k];
@@ -3528,7 +3549,12 @@ void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<Tr
         T sd = T(0), sg = T(0), sm = T(0);
         bool ok = true;
         for (int k = 0; k < 3; ++k) {  // the step test's terms of v
-            const T gk = G[VAR_T_OFF[v] + k];
+            const int at = VAR_T_OFF[v] + k;
+            const T gk = G_MOVED ? G_BACK[at] : G[at];
+            if (!at_x) {
+                G_BACK[at] = gk;
+                G[at] = T(0);
+            }
             ok = ok && fgc_isfinite(dv[k]);
             sd += dv[k] * dv[k];
             sg += dv[k] * gk;
@@ -3538,11 +3564,17 @@ void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<Tr
         dg = sg;
         gm = sm;
         fin = ok;
+        T sx = T(0);
         for (int k = 0; k < 3; ++k) {
             const T o = at_x ? xv[k] : ov[k];
-            X_TRIAL[VAR_X_OFF[v] + k] = o;
+            if (!at_x) {
+                X_BACK[VAR_X_OFF[v] + k] = xv[k];
+                X[VAR_X_OFF[v] + k] = o;
+            }
+            sx += o * o;  // |x (+) delta|^2: the next linearisation's |X| if the step is taken
             out.word[k] = o;
         }
+        xx = sx;
     } else if (VAR_KIND[v] == 2) {
         T xv[6], dv[6], ov[6];
         for (int k = 0; k < 6; ++k) xv[k] = X[VAR_X_OFF[v] + k];
@@ -3551,7 +3583,12 @@ void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<Tr
         T sd = T(0), sg = T(0), sm = T(0);
         bool ok = true;
         for (int k = 0; k < 6; ++k) {  // the step test's terms of v
-            const T gk = G[VAR_T_OFF[v] + k];
+            const int at = VAR_T_OFF[v] + k;
+            const T gk = G_MOVED ? G_BACK[at] : G[at];
+            if (!at_x) {
+                G_BACK[at] = gk;
+                G[at] = T(0);
+            }
             ok = ok && fgc_isfinite(dv[k]);
             sd += dv[k] * dv[k];
             sg += dv[k] * gk;
@@ -3561,11 +3598,17 @@ void retract_variable(int v, const L delta[N_TANGENT], bool at_x, hls::stream<Tr
         dg = sg;
         gm = sm;
         fin = ok;
+        T sx = T(0);
         for (int k = 0; k < 6; ++k) {
             const T o = at_x ? xv[k] : ov[k];
-            X_TRIAL[VAR_X_OFF[v] + k] = o;
+            if (!at_x) {
+                X_BACK[VAR_X_OFF[v] + k] = xv[k];
+                X[VAR_X_OFF[v] + k] = o;
+            }
+            sx += o * o;  // |x (+) delta|^2: the next linearisation's |X| if the step is taken
             out.word[k] = o;
         }
+        xx = sx;
     }
     if (TRIAL_SEND[v] & 1) tx.write(out);  // to the cost processes whose instances read v
     if (TRIAL_SEND[v] & 2) tx2.write(out);
@@ -3615,14 +3658,15 @@ struct LesConfig {
     typedef ::fgc::T TestT;  // the step test's sums (LM's scalar)
     static void retract_variable(int v, const T delta[N_TANGENT], bool at_x,
                                  hls::stream<::fgc::TrialVar>& tx, hls::stream<::fgc::TrialVar>& tx2,
-                                 TestT& dd, TestT& dg, TestT& gm, bool& fin) {
-        ::fgc::retract_variable(v, delta, at_x, tx, tx2, dd, dg, gm, fin);
+                                 TestT& dd, TestT& dg, TestT& gm, bool& fin, TestT& xx) {
+        ::fgc::retract_variable(v, delta, at_x, tx, tx2, dd, dg, gm, fin, xx);
     }
-    static void retire_test(TestT dd, TestT dg, TestT gm, bool fin) {  // to LM's step test
+    static void retire_test(TestT dd, TestT dg, TestT gm, bool fin, TestT xx) {  // to LM's step test
         ::fgc::TRIAL_DD = dd;
         ::fgc::TRIAL_DG = dg;
         ::fgc::TRIAL_GMAX = gm;
         ::fgc::TRIAL_FINITE = fin;
+        ::fgc::TRIAL_XX = xx;
     }
     // the HGC beside the elimination (fgc_eliminate.h's cholesky_eliminate_beside): block 0's
     // Grams come as a stream, a step's put into a stage lane by gram_source a pass before the
@@ -3872,17 +3916,14 @@ bool solve(T mu, bool at_x) {
     if (!solved) return false;  // a failed solve back-substitutes nothing
     FGC_EVENT("backsub");
     back_substitute_at(false);
+    G_MOVED = true;  // (its state update moved G to G_BACK)
     return true;
 }
 
-struct LmConfig;
-// LM's accepted step (fgc_lm_units.h's lm_accept_norm, four words a cycle): X, X_TRIAL and G
-// cyclic 2, two banks of two ports each (units/lm_control.py's ACCEPT_PORTS)
-void accept_copy();
 // ---- LM control (paper B): the rules in fgc_lm.h (shared with the native solver), its
 // reductions in fgc_lm_units.h (interleaved partial sums at II 1); here the kernel's constants
 // and hooks. fgc_lm::optimize<LmConfig>: GN/LM iterations from X.
-T LM_XX = T(0);  // |X|^2: the top's x copy and the accepted step's copy form it
+T LM_XX = T(0);  // |X|^2: the top's x copy forms it, then the state update of each step taken
 struct LmConfig {
     typedef ::fgc::T T;
     static const int MAX_ITERATIONS = ::fgc::MAX_ITERATIONS, MAX_TRIES = ::fgc::MAX_TRIES;
@@ -3929,11 +3970,11 @@ struct LmConfig {
         #pragma HLS INLINE
         return solve(mu, false);
     }
-    static void retract_trial() {}  // X_TRIAL: written by back_substitute's backsub_retire
+    static void retract_trial() {}  // X (+) DELTA: written into X by back_substitute's backsub_retire (X_BACK: X)
     static T cost_trial() {
         return TRIAL_COST + TRIAL_COST_B;  // trial_cost's, beside the solve's back-substitution
     }
-    static T noise_x() { return rounding_noise_all(X); }
+    static T noise_x() { return rounding_noise_all(X_BACK); }
     static const int N_X = ::fgc::N_X, N_TANGENT = ::fgc::N_TANGENT;
     static const int PARTIALS = T_PARTIALS, ADD_LAT = T_ADD_LAT, MUL_LAT = T_MUL_LAT;
     static const int MAXIMA = T_MAXIMA, CMP_LAT = T_CMP_LAT, ABS_LAT = T_ABS_LAT;
@@ -3957,20 +3998,17 @@ struct LmConfig {
         const int j = i - TRIAL_B_LO;
         if (j >= 0 && j < TRIAL_B_WORDS) DATA_B[j] = v;
     }
-    static void accept_trial() {  // X = X_TRIAL, its |X|^2, G zeroed for the next linearisation
+    static void accept_trial() {  // X holds x (+) delta already: its |X|^2, the state update's
 #pragma HLS INLINE
-        accept_copy();
+        FGC_EVENT("accept");
+        LM_XX = TRIAL_XX;
+    }
+    static void restore_x() {  // the trial not taken: X back from X_BACK (fgc_lm.h's FGC_LM_TRIAL_IN_X)
+#pragma HLS INLINE
+        fgc_units::lm_restore<LmConfig>(X, X_BACK);
     }
     static void accepted(int, T, T, T) {}  // no host to tell on chip
 };
-
-void accept_copy() {
-#pragma HLS INLINE
-#pragma HLS ARRAY_PARTITION variable=X cyclic factor=2
-#pragma HLS ARRAY_PARTITION variable=X_TRIAL cyclic factor=2
-#pragma HLS ARRAY_PARTITION variable=G cyclic factor=2
-    LM_XX = fgc_units::lm_accept_norm<LmConfig>(X, X_TRIAL, G);
-}
 
 }  // namespace
 }  // namespace fgc
