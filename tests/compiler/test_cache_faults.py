@@ -472,7 +472,13 @@ def test_every_fault_with_real_builds_and_two_specs(warm, tmp_path, monkeypatch)
 # --------------------------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("how", ["truncate", "empty", "delete manifest", "foreign"])
+# "empty" and "foreign" are heavy (each re-emits and rebuilds the stream project, ~12 s): the
+# native build's test above covers every fault kind, truncate / delete manifest stay here
+HEAVY = pytest.mark.heavy
+
+
+@pytest.mark.parametrize("how", ["truncate", pytest.param("empty", marks=HEAVY),
+                                 "delete manifest", pytest.param("foreign", marks=HEAVY)])
 def test_a_damaged_hls_stream_project_is_emitted_again(how, warm, tmp_path, monkeypatch):
     from fgc_backends.hls.config import HlsConfig
     from fgc_backends.hls.streaming import _cached_project

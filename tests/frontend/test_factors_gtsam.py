@@ -147,7 +147,8 @@ def _random_pim(rng, mode: str) -> PreintegratedCombinedMeasurements:
     return pim
 
 
-@pytest.mark.parametrize("mode", ["logmap", "componentwise"])
+# componentwise is heavy (about 15 s): logmap keeps the combined IMU factor against GTSAM by default
+@pytest.mark.parametrize("mode", ["logmap", pytest.param("componentwise", marks=pytest.mark.heavy)])
 def test_combined_imu(mode):
     rng = np.random.default_rng(7)
     for i in range(N_POINTS):

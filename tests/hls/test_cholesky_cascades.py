@@ -178,7 +178,10 @@ def test_two_cascades_match_the_simulator(tmp_path, banks):
     assert relative_worst(result.values, reference.storage) <= 1e-9
 
 
-@pytest.mark.parametrize("beside,banks", [(False, 1), (True, 1), (True, 2)])
+# (True, 1) is heavy (about 10 s idle): (False, 1) counts one bank, (True, 2) the HGC beside
+@pytest.mark.parametrize("beside,banks", [(False, 1),
+                                          pytest.param(True, 1, marks=pytest.mark.heavy),
+                                          (True, 2)])
 def test_two_cascades_count_what_the_plan_prices(beside, banks):
     # beside: the HGC beside the elimination (fgc_cascades.h's cholesky_eliminate_sets_beside,
     # units/cholesky.py's beside_set_passes): its passes inside phase hgc_beside; banks: COND

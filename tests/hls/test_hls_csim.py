@@ -105,7 +105,18 @@ def _run(name: str, case, tmp_path_factory):
     return program, project, data, result, reference
 
 
-@pytest.fixture(scope="module", params=sorted(CASES))
+# heavy by default: imu_window (float QR; imu_mixed keeps a float imu_window design and
+# test_hls_window / test_hls_stream_csim the float QR stream designs in the default run)
+HEAVY_DEFAULT = ("imu_window",)
+
+
+def case_params(heavy: tuple[str, ...] = HEAVY_DEFAULT) -> list:
+    """CASES' names as parameters, those in ``heavy`` marked heavy."""
+    return [pytest.param(name, marks=pytest.mark.heavy) if name in heavy else name
+            for name in sorted(CASES)]
+
+
+@pytest.fixture(scope="module", params=case_params())
 def example(request, tmp_path_factory):
     return request.param, _run(request.param, CASES[request.param], tmp_path_factory)
 
