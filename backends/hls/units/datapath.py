@@ -617,8 +617,8 @@ def slot_split_loops(program, retire_vars, costs: dict, max_storage: int, access
     for mask in range(1, 1 << len(keys)):
         second = [keys[i] for i in range(len(keys)) if mask >> i & 1]
         first = [c for c in costs if c not in second]
-        if not first:
-            continue
+        if not any(costs[c][0] for c in first) or not any(costs[c][0] for c in second):
+            continue  # (a process with no instance)
         out: list[TrialLoop] = []
         for q, group in enumerate((first, second)):
             sub = {c: costs[c] for c in group}
@@ -646,8 +646,8 @@ def ready_order(program, retire_vars, costs: dict) -> list:
     last variable), the most work (instances x II) first among equals."""
     pos = {v: i for i, v in enumerate(retire_vars)}
     index = {v.key: i for i, v in enumerate(program.variables)}
-    last = {c: max(max(pos[index[k]] for k in program.factors[f].keys) for f in costs[c][0])
-            for c in costs}
+    last = {c: max((max(pos[index[k]] for k in program.factors[f].keys) for f in costs[c][0]),
+                   default=-1) for c in costs}  # (-1: a datapath with no instance here)
     return sorted(costs, key=lambda c: (last[c], -len(costs[c][0]) * costs[c][1],
                                         -1 if c == "small" else c))
 
