@@ -16,7 +16,7 @@ from .lint import strip_comments_and_strings
 
 _FUNCTION = re.compile(r"\b([A-Za-z_]\w*)\s*\(([^;{}]*)\)\s*\{")
 _CALL = re.compile(r"^\s*([A-Za-z_][\w:]*)\s*(?:<[^;()]*>)?\s*(::run)?\s*\(", re.M)
-_STREAM = re.compile(r"hls::stream<.*?>\s+([A-Za-z_]\w*)\s*(?:\[([^\]]*)\])?\s*[(;]")
+_STREAM = re.compile(r"hls::stream<.*?>\s+([A-Za-z_]\w*)\s*((?:\[[^\]]*\]\s*)*)[(;]")
 _CONSTANT = re.compile(r"^const int (N_UNITS|N_CPE) = (\d+);", re.M)
 _ALLOCATION = re.compile(r"#pragma HLS ALLOCATION (operation|function) instances=(\w+) limit=(\d+)")
 
@@ -26,7 +26,8 @@ class Region:
     function: str
     processes: tuple[str, ...]  # callee of each process call, in order (``name::run``: a
     # template recursion that instantiates one process per unit)
-    streams: tuple[tuple[str, str], ...]  # (name, array size as written, "" for one stream)
+    streams: tuple[tuple[str, str], ...]  # (name, array size as written, "" for one stream;
+    # an array of several dimensions: its sizes joined by "][", e.g. "CFG::N_UNITS][2")
 
 
 def _bodies(text: str):
@@ -50,7 +51,9 @@ def read_network(text: str) -> tuple[Region, ...]:
             continue
         calls = tuple(c + (run or "") for c, run in _CALL.findall(body)
                       if c not in ("for", "if", "while") and not c.isupper())
-        out.append(Region(name, calls, tuple(_STREAM.findall(body))))
+        streams = tuple((n, dims.strip().removeprefix("[").removesuffix("]").replace("] [", "]["))
+                        for n, dims in _STREAM.findall(body))
+        out.append(Region(name, calls, streams))
     return tuple(out)
 
 
@@ -172,13 +175,17 @@ def counts(kernel: str, units: str, backsub: str) -> tuple[int, int]:
 
 
 def _stream_count(region: Region, cfg: dict) -> int:
-    """Streams ``region`` declares (an array of streams counts its constant size)."""
+    """Streams ``region`` declares (an array of streams counts its constant size, the product
+    of its dimensions)."""
     n = 0
     for _, size in region.streams:
-        expr = size or "1"
-        for k, v in cfg.items():
-            expr = expr.replace(k, str(v))
-        if not re.fullmatch(r"[0-9+\-* ]+", expr):
-            raise ValueError(f"stream array size {size!r} is not a constant expression")
-        n += eval(expr)  # noqa: S307 - digits and + - * only (checked above)
+        count = 1
+        for dim in (size or "1").split("]["):
+            expr = dim
+            for k, v in cfg.items():
+                expr = expr.replace(k, str(v))
+            if not re.fullmatch(r"[0-9+\-* ]+", expr):
+                raise ValueError(f"stream array size {size!r} is not a constant expression")
+            count *= eval(expr)  # noqa: S307 - digits and + - * only (checked above)
+        n += count
     return n

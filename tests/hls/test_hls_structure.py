@@ -279,8 +279,9 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
     assert backsub.streams == (("dx", ""), ("tx", ""), ("tx2", ""))  # tx2: a second cost process
     procs, streams = process_network(accel_plan(program, HlsConfig(backsub_lanes=1)))
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams))
-    # per unit set: 4 n_u + 4 streams (the Evaluate's vector copy, v_0 / tau / R_jj among them)
-    assert (len(procs), len(streams)) == ((units + 4) * 2 + 7, 2 * (4 * units + 4) + 2)
+    # per unit set: 5 n_u + 4 streams (per unit its vector, v_0 / tau, row out and the next pivot
+    # column as two streams by row parity, colq[N_UNITS][2]; the Evaluate's header, ...)
+    assert (len(procs), len(streams)) == ((units + 4) * 2 + 7, 2 * (5 * units + 4) + 2)
     assert tuple(p for p in procs if p.startswith(("backsub", "trial"))) == backsub.processes
     for p in procs:  # the comment block lists the plan's network
         assert f"//   process {p}\n" in kernel

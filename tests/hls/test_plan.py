@@ -292,7 +292,7 @@ def test_the_plan_prices_the_scalar_the_hls_config_emits(linear):
     f32 = operators.table("float32")
     streams = [ch for ch in plan.channels if ch.kind == "stream"]
     if linear == "qr":  # the reflector streams to the Update units are 2 adder latencies deep
-        # (fgc_qr.h's V_DEPTH; the Evaluate's copy qr<s>_ve holds a whole vector)
+        # (fgc_qr.h's V_DEPTH; the Evaluate gets only the header, qr<s>_ve, 2 deep)
         reflector = [ch for ch in streams if ch.name.split("_")[-1][:1] == "v"
                      and ch.name.split("_")[-1][1:].isdigit()]
         assert reflector and {ch.depth for ch in reflector} == {2 * f32.add.latency}

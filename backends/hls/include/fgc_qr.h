@@ -178,10 +178,10 @@ inline void qr_put(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_
 
 // ---- the processes of one reflection ---------------------------------------------------------
 
-// Stream the Householder vector in vin to every Update unit and, when there is a next column
-// (j + 1 < k), to the Evaluate (evq): the header {0, n}, then the n - 1 words below the
-// pivot (v_a = x_a, final as the Evaluate wrote them); the pivot's v_0 comes from qr_finish,
-// which computes it meanwhile.
+// Stream the Householder vector in vin to every Update unit: the header {0, n}, then the n - 1
+// words below the pivot (v_a = x_a, final as the Evaluate wrote them); the pivot's v_0 comes
+// from qr_finish, which computes it meanwhile. The Evaluate, when there is a next column (j + 1
+// < k), gets the header only (evq): it wrote the vector itself, and keeps its own copy by row.
 template <class CFG>
 void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1], int j, int k,
                   hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
@@ -198,7 +198,7 @@ void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1], int j, 
 #pragma HLS UNROLL
             vq[u].write(x);
         }
-        if (to_eval) evq.write(x);
+        if (to_eval && a == 0) evq.write(x);  // the header only: the Evaluate keeps its own copy
     }
     FGC_CYCLES("qr_broadcast", 0, "vector", words, 1, 2);
 }
@@ -531,12 +531,15 @@ struct qr_update_units<CFG, U, true> {
 };
 
 // One word (row i, the t-th of the pass) of column j + 1 after reflection j, in the Evaluate's
-// last pass: row j's entry to the collector, the new pivot and the non-zero rows below it into
-// vout (m words so far), their squares into the partial sums (the partial of iteration t).
+// one-row pass (receive_norm): row j's entry to the collector, the new pivot and the non-zero
+// rows below it into vout (m words so far), their squares into the partial sums (the partial of
+// iteration t), and the Evaluate's own copy of the vector by row (evec: the word below the pivot,
+// 0 elsewhere: the pass clears the rows it passes, j0 ... rows - 1).
 template <class CFG>
 inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typename CFG::T>& exq,
                          qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1], int& m,
-                         typename CFG::T& pivot, typename CFG::T part[CFG::PARTIALS]) {
+                         typename CFG::T& pivot, typename CFG::T part[CFG::PARTIALS],
+                         typename CFG::T evec[CFG::MAX_ROWS]) {
 #pragma HLS INLINE
     typedef typename CFG::T T;
     const int col = j + 1;
@@ -547,22 +550,23 @@ inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typ
         vout[1 + m].idx = i;
         ++m;
     }
+    evec[i] = i > col ? e : T(0);
     if (i >= col) part[t % CFG::PARTIALS] += e * e;
 }
 
-// Row i's word of column j + 1 from the Update unit that holds it (colq[owner][i & 1], the
-// stream of its row parity): one read of one of the 2 N_UNITS streams, in a pipelined loop of
+// Row i's word of column j + 1 from the Update unit that holds it (colq[owner][p], the stream of
+// its row parity p = i & 1): one read of one of the 2 N_UNITS streams, in a pipelined loop of
 // the Evaluate.
 template <class CFG>
 inline typename CFG::T qr_owner_word(hls::stream<typename CFG::T> colq[CFG::N_UNITS][2],
-                                     int owner, int i) {
+                                     int owner, int p) {
 #pragma HLS INLINE
     typename CFG::T e = typename CFG::T(0);
     for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
-        for (int p = 0; p < 2; ++p) {
+        for (int q = 0; q < 2; ++q) {
 #pragma HLS UNROLL
-            if (u == owner && p == (i & 1)) e = colq[u][p].read();
+            if (u == owner && q == p) e = colq[u][q].read();
         }
     }
     return e;
@@ -570,35 +574,40 @@ inline typename CFG::T qr_owner_word(hls::stream<typename CFG::T> colq[CFG::N_UN
 
 // Evaluate: reflection j applied to column j + 1 and that column's Householder vector (if j + 1
 // < k). The column arrives from the unit that holds it as it stood before reflection j (rows j0
-// ... rows - 1, j0 = max(j, 0)), reflection j's vector from the broadcast (evq: {0, n}, the n - 1
-// words below the pivot) and from qr_finish (etq: v_0, tau, R_jj), as the Update units get them.
-// The column's dot product with the vector is taken as the column arrives, folded with the
-// pivot's term once v_0 is there, scaled once tau is; then one pass over the column's rows that
-// can be non-zero (row j, the next pivot's, reflection j's active rows and the column's
-// non-zero entries, kept as it arrives) updates it (x -= tau (v.x) v on the active rows),
-// sends its row j entry to the collector (exq) and keeps its pivot and non-zero rows in vout ({0, n'}, then n' words {x_a, row}: v_a = x_a below the pivot) while summing their
-// squares (P interleaved partial sums, folded) for hout ({norm2, n'}, {x_0, j + 1}), which the
-// next region's qr_finish turns into v_0, tau and R_jj while its broadcast streams the rest.
+// ... rows - 1, j0 = max(j, 0); two streams by row parity), reflection j's vector below the pivot
+// from the Evaluate's own copy (evec, by row, written by its last pass in region j - 1; two
+// memories by row parity: the caller's cyclic factor=2 partition), its header from the broadcast
+// (evq: {0, n}) and v_0, tau, R_jj from qr_finish (etq). Two rows a cycle (the aligned pair 2p,
+// 2p + 1): the column's dot product with the vector as the column arrives (the pair's two terms
+// added, then into the partial of the iteration), folded with the pivot's term once v_0 is there,
+// scaled once tau is; then one pass, two of its kept rows a cycle (row j, the next pivot's, the
+// rows active in reflection j and the column's non-zero entries, kept as it arrives), that
+// updates them (x -= tau (v.x) v on the active rows), sends row j's entry to the collector
+// (exq), keeps the next pivot and non-zero rows below it in vout ({0, n'}, then n' words {x_a,
+// row}, rows ascending) and in evec while summing their squares (the pair's two squares added,
+// then into the partial of the iteration; folded) for hout ({norm2, n'}, {x_0, j + 1}), which
+// the next region's qr_finish turns into v_0, tau and R_jj while its broadcast streams the rest.
 // With no reflection to apply (n = 0; n = 1: the pivot row's negation, exact) the column is
-// received and passed on in one pass.
+// received and passed on in one pass, a row a cycle. evec is left 0 on every row it read and
+// holds the next vector below its pivot (region -1 clears rows 0 ... rows - 1 of the step).
 template <class CFG>
 void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS][2],
                  hls::stream<qr_word<typename CFG::T> >& evq,
                  hls::stream<qr_word<typename CFG::T> >& etq, hls::stream<typename CFG::T>& exq,
                  qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1],
-                 qr_word<typename CFG::T> hout[2]) {
+                 qr_word<typename CFG::T> hout[2], typename CFG::T evec[CFG::MAX_ROWS]) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     const int col = j + 1;
     if (col >= k) return;
     const int owner = col % CFG::N_UNITS;
     const int j0 = j > 0 ? j : 0;
-    T x[CFG::MAX_ROWS];  // the column's kept rows (rows xr) of rows j0 ... rows - 1
+    // the column's kept rows (rows xr, their vector words xv: 0 off reflection j's active rows
+    // below the pivot) of rows j0 ... rows - 1, two written and two read a cycle (dual port)
+    T x[CFG::MAX_ROWS];
+    T xv[CFG::MAX_ROWS];
     int xr[CFG::MAX_ROWS];
-    T v[CFG::MAX_ROWS];
-    int at[CFG::MAX_ROWS];
     const int n = evq.read().idx;  // {0, n}
-    const int below = n > 1 ? n - 1 : 0;
     FGC_CYCLES("qr_evaluate", 0, "header", 1, 1, 1);
     T part[P];
 #pragma HLS ARRAY_PARTITION variable=part complete
@@ -613,57 +622,71 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
         // column received, row j's entry sent, the vector kept and its squares summed in one
         // pass: trip rows - j0, II 1, depth Lm + La
         FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "vector_column");
-        FGC_WAIT("qr_evaluate", 0, "qr_broadcast", 0, "vector");
         for (int t = 0; t < rows - j0; ++t) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
             const int i = j0 + t;
-            const T e = qr_owner_word<CFG>(colq, owner, i);
-            qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, exq, vout, m, pivot, part);
+            const T e = qr_owner_word<CFG>(colq, owner, i & 1);
+            qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, exq, vout, m, pivot, part,
+                              evec);
         }
         FGC_CYCLES("qr_evaluate", 0, "receive_norm", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     } else {
-        // receive the column, and reflection j's vector below the pivot (its rows ascending,
-        // each at or after the column word of its row), v.x over it (the partial of iteration
-        // t, met again P >= La iterations later): trip rows - j0, II 1, depth Lm + La
-        // (it reads the column and the vector as they are streamed: the counters' critical path)
+        // receive the column two rows a cycle (the aligned pairs 2p, 2p + 1 from p = j0 / 2;
+        // row j0 - 1 of an odd j0 is not sent) and read (and clear) the vector's words of those
+        // rows, v.x over them: trip ceil(rows / 2) - floor(j0 / 2), II 1, depth Lm + 2 La (the
+        // two products, their sum, the partial of the iteration, met again P >= La iterations
+        // later). It reads the column as its unit streams it (the counters' critical path).
         FGC_WAIT("qr_evaluate", 0, "qr_update", owner, "vector_column");
-        FGC_WAIT("qr_evaluate", 0, "qr_broadcast", 0, "vector");
-        // The rows the update pass needs are kept (x, rows xr; c of them, ascending): row j,
-        // the next pivot's row, the rows active in reflection j and the column's non-zero
-        // entries; the others are zero before the update and after it, no word of the next
-        // vector and no term of its norm, so that pass skips them
-        int a = 1, c = 0;
-        qr_word<T> next;
-        next.val = T(0);
-        next.idx = -1;
-        for (int t = 0; t < rows - j0; ++t) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+        // The rows the update pass needs are kept (x, rows xr, words xv; c of them, ascending):
+        // row j, the next pivot's row, the rows active in reflection j and the column's
+        // non-zero entries; the others are zero before the update and after it, no word of the
+        // next vector and no term of its norm, so that pass skips them
+        enum { MAX_PAIRS = CFG::MAX_ROWS / 2 + 1 };  // pragma constants: enums
+        const int p0 = j0 / 2, pairs = (rows + 1) / 2 - p0;
+        int c = 0;
+        for (int t = 0; t < pairs; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_PAIRS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-            const int i = j0 + t;
-            const T e = qr_owner_word<CFG>(colq, owner, i);
-            bool active = i == j;
-            // the next word below the pivot
-            if (a <= below && next.idx < i) next = evq.read();
-            if (a <= below && next.idx == i) {
-                v[a] = next.val;
-                at[a] = next.idx;
-                ++a;
-                part[t % P] += next.val * e;
-                active = true;
+#pragma HLS DEPENDENCE variable=evec inter false
+            const int i0 = 2 * (p0 + t), i1 = i0 + 1;
+            const bool h0 = i0 >= j0, h1 = i1 < rows;  // the pair's rows in j0 ... rows - 1
+            const T e0 = h0 ? qr_owner_word<CFG>(colq, owner, 0) : T(0);
+            const T e1 = h1 ? qr_owner_word<CFG>(colq, owner, 1) : T(0);
+            // the vector's words of the two rows (0 off reflection j's active rows below the
+            // pivot; row j's v_0 comes from qr_finish), cleared as they are read
+            T v0 = T(0), v1 = T(0);
+            if (h0) {
+                v0 = i0 > j ? evec[i0] : T(0);
+                evec[i0] = T(0);
             }
-            if (active || i == col || e != T(0)) {
-                x[c] = e;
-                xr[c] = i;
-                ++c;
+            if (h1) {
+                v1 = i1 > j ? evec[i1] : T(0);
+                evec[i1] = T(0);
             }
+            const bool a0 = v0 != T(0), a1 = v1 != T(0);
+            part[t % P] += T((a0 ? T(v0 * e0) : T(0)) + (a1 ? T(v1 * e1) : T(0)));
+            const bool k0 = h0 && (i0 == j || a0 || i0 == col || e0 != T(0));
+            const bool k1 = h1 && (i1 == j || a1 || i1 == col || e1 != T(0));
+            if (k0) {
+                x[c] = e0;
+                xv[c] = v0;
+                xr[c] = i0;
+            }
+            const int c1 = k0 ? c + 1 : c;
+            if (k1) {
+                x[c1] = e1;
+                xv[c1] = v1;
+                xr[c1] = i1;
+            }
+            c = k1 ? c1 + 1 : c1;
         }
-        FGC_CYCLES("qr_evaluate", 0, "receive_dot", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+        FGC_CYCLES("qr_evaluate", 0, "receive_dot", pairs, 1, CFG::MUL_LAT + 2 * CFG::ADD_LAT);
         // v_0 (qr_finish waits for the square root): its term is one more leaf of the fold's tree
         FGC_WAIT("qr_evaluate", 0, "qr_finish", 0, "v0");
-        v[0] = etq.read().val;
+        const T vp = etq.read().val;
         T leaves[P + 1];
 #pragma HLS ARRAY_PARTITION variable=leaves complete
         for (int t = 0; t < P; ++t) {
@@ -671,7 +694,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
             leaves[t] = part[t];
             part[t] = T(0);
         }
-        leaves[P] = v[0] * x[0];  // depth Lm
+        leaves[P] = vp * x[0];  // row j, the first kept row; depth Lm
         FGC_CYCLES("qr_evaluate", 0, "pivot_term", 1, 1, CFG::MUL_LAT);
         const T dot = fold_partials<T, P + 1>(leaves);  // depth La ceil(log2 (P + 1))
         FGC_CYCLES("qr_evaluate", 0, "fold_dot", 1, 1, CFG::ADD_LAT * ceil_log2(P + 1));
@@ -682,28 +705,45 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
         FGC_CYCLES("qr_evaluate", 0, "tail", 2, 1, 1);
         const T scaled = tau * dot;  // depth Lm
         FGC_CYCLES("qr_evaluate", 0, "scale", 1, 1, CFG::MUL_LAT);
-        // the update of the kept rows, row j's entry to the collector, the vector kept and its
-        // squares summed: trip c, II 1, depth 2 (Lm + La) (the multiply-add, then the square
-        // into its sum)
-        int b = 1;
-        for (int t = 0; t < c; ++t) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+        // the update of the kept rows two a cycle (kept words 2t, 2t + 1), row j's entry (kept
+        // word 0) to the collector, the vector kept (vout, evec) and its squares summed: trip
+        // ceil(c / 2), II 1, depth 2 Lm + 3 La (the multiply-add, the squares, their sum, the
+        // partial of the iteration)
+        const int kpairs = (c + 1) / 2;
+        for (int t = 0; t < kpairs; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_PAIRS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
-            const int i = xr[t];
-            // the active row's vector word (the pivot's v_0, or the next below it): one
-            // multiply-add for both
-            T vw = v[0];
-            bool on = i == j;
-            if (!on && b <= below && at[b] == i) {
-                vw = v[b];
-                on = true;
-                ++b;
+            const bool g1 = 2 * t + 1 < c;
+            const int i0 = xr[2 * t], i1 = g1 ? xr[2 * t + 1] : -1;
+            // the active rows' vector words (the pivot's v_0, the others' kept): one multiply-add
+            // for each of the two
+            const T w0 = i0 == j ? vp : xv[2 * t];
+            const T w1 = g1 ? xv[2 * t + 1] : T(0);
+            const T x0 = x[2 * t], x1 = g1 ? x[2 * t + 1] : T(0);
+            const T e0 = i0 == j || w0 != T(0) ? T(x0 - scaled * w0) : x0;
+            const T e1 = w1 != T(0) ? T(x1 - scaled * w1) : x1;
+            if (i0 == j) exq.write(e0);  // row j's entry in column j + 1 to the collector
+            if (i0 == col) pivot = e0;
+            if (i1 == col) pivot = e1;
+            const bool o0 = i0 == col || (i0 > col && e0 != T(0));
+            const bool o1 = i1 == col || (i1 > col && e1 != T(0));
+            if (o0) {
+                vout[1 + m].val = e0;
+                vout[1 + m].idx = i0;
             }
-            const T e = on ? T(x[t] - scaled * vw) : x[t];
-            qr_next_word<CFG>(i, j, t, e, exq, vout, m, pivot, part);
+            const int m1 = o0 ? m + 1 : m;
+            if (o1) {
+                vout[1 + m1].val = e1;
+                vout[1 + m1].idx = i1;
+            }
+            m = o1 ? m1 + 1 : m1;
+            if (i0 > col) evec[i0] = e0;
+            if (i1 > col) evec[i1] = e1;
+            part[t % P] += T((i0 >= col ? T(e0 * e0) : T(0)) + (i1 >= col ? T(e1 * e1) : T(0)));
         }
-        FGC_CYCLES("qr_evaluate", 0, "axpy_norm", c, 1, 2 * (CFG::MUL_LAT + CFG::ADD_LAT));
+        FGC_CYCLES("qr_evaluate", 0, "axpy_norm", kpairs, 1,
+                   2 * CFG::MUL_LAT + 3 * CFG::ADD_LAT);
     }
     const T norm2 = fold_partials<T, P>(part);  // depth La ceil(log2 P)
     FGC_CYCLES("qr_evaluate", 0, "fold", 1, 1, CFG::ADD_LAT * ceil_log2(P));
@@ -783,7 +823,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
                    typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                    typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
-                   typename CFG::T* scale) {
+                   typename CFG::T* scale, typename CFG::T evec[CFG::MAX_ROWS]) {
 #pragma HLS DATAFLOW
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
     hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS];
@@ -797,10 +837,9 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
 #pragma HLS STREAM variable=colq depth=COL_DEPTH
     hls::stream<typename CFG::T> rowq[CFG::N_UNITS];
 #pragma HLS STREAM variable=rowq depth=CFG::LOCAL_COLS
-    // the Evaluate's copy of the vector: it takes a word when the column reaches its row, so
-    // its stream holds the whole vector and never holds up the broadcast (nor the units)
+    // the vector's header for the Evaluate (its words it keeps itself, in evec)
     hls::stream<qr_word<typename CFG::T> > evq;
-#pragma HLS STREAM variable=evq depth=CFG::MAX_ROWS
+#pragma HLS STREAM variable=evq depth=2
     hls::stream<qr_word<typename CFG::T> > etq;
 #pragma HLS STREAM variable=etq depth=3
     hls::stream<typename CFG::T> exq;
@@ -809,7 +848,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_broadcast<CFG>(vin, j, k, vq, evq);
     qr_finish<CFG>(hin, k, tq, etq, rq);
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
-    qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout);
+    qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout, evec);
     qr_collect<CFG>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
     FGC_DRAINED(tq, CFG::N_UNITS);
@@ -865,15 +904,21 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
     ha[1].val = T(0);
     ha[1].idx = -1;
     T scale = T(0);
+    // the Evaluate's own copy of the vector below the pivot, by row (qr_evaluate): read two rows
+    // a cycle (two memories by row parity), its rows cleared by region -1 before any is read
+    T evec[CFG::MAX_ROWS];
+#pragma HLS ARRAY_PARTITION variable=evec cyclic factor=2
     // the two parity call sites below are exclusive and sequential: one RTL copy of the region
     // serves both (UG1399, ALLOCATION of a function: one instance for its call sites)
 #pragma HLS ALLOCATION function instances=qr_reflection<CFG> limit=1
     for (int j = -1; j < k; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
         if (((j + 1) & 1) == 0) {
-            qr_reflection<CFG>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond, update, &scale);
+            qr_reflection<CFG>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond, update, &scale,
+                              evec);
         } else {
-            qr_reflection<CFG>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond, update, &scale);
+            qr_reflection<CFG>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond, update, &scale,
+                              evec);
         }
         FGC_SEQUENTIAL();
     }

@@ -133,13 +133,19 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             # then qr_finish's words
             e = len(procs)
             span = rows - max(j, 0)
-            waits += [(e, 1, 2 + col % units, "vector_column"), (e, 1, 0, "vector")]
+            waits += [(e, 1, 2 + col % units, "vector_column")]
             if n > 1:
+                # two rows a cycle: the receive over the aligned pairs (the column's two
+                # streams, its own copy of the vector by row parity; the pair's terms added
+                # before the partial), the update pass over its kept rows two at a time (the
+                # pair's squares added before the partial)
+                pairs = (rows + 1) // 2 - max(j, 0) // 2
                 waits += [(e, 2, 1, "v0"), (e, 4, 1, "tau")]
-                procs.append([Loop("header", 1, 1, 1), Loop("receive_dot", span, 1, lm + la),
+                procs.append([Loop("header", 1, 1, 1),
+                              Loop("receive_dot", pairs, 1, lm + 2 * la),
                               Loop("pivot_term", 1, 1, lm), Loop("fold_dot", 1, 1, la * tree1),
                               Loop("tail", 2, 1, 1), Loop("scale", 1, 1, lm),
-                              Loop("axpy_norm", kept[j], 1, 2 * (lm + la)),
+                              Loop("axpy_norm", (kept[j] + 1) // 2, 1, 2 * lm + 3 * la),
                               Loop("fold", 1, 1, la * tree)])
             else:
                 waits += [(e, 3, 1, "v0"), (e, 4, 1, "tau")]
@@ -165,9 +171,11 @@ def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[Bound
     one instance (its ALLOCATION function limit=1), so each unit is one RTL copy.
     ``partials``: CFG::PARTIALS."""
     p = partials
-    evaluate = (BoundLoop("receive_dot", (("add", 1), ("mul", 1)), 1),
+    # receive_dot and axpy_norm take two rows a cycle: two products and their sum before the
+    # partial; two multiply-adds, two squares and their sum before the partial
+    evaluate = (BoundLoop("receive_dot", (("add", 2), ("mul", 2)), 1),
                 BoundLoop("receive_norm", (("add", 1), ("mul", 1)), 1),
-                BoundLoop("axpy_norm", (("add", 2), ("mul", 2)), 1),
+                BoundLoop("axpy_norm", (("add", 4), ("mul", 4)), 1),
                 BoundLoop("fold", (("add", p - 1),), 0),  # fold_partials<P>, sequential
                 # the next pivot column's fold (fold_partials<P + 1>), its pivot term and scale
                 BoundLoop("fold_dot", (("add", p),), 0),
@@ -305,9 +313,9 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
                                         ops.word_bits, f"qr{s}_update{u}", f"qr{s}_evaluate"))
             channels.append(Channel(f"qr{s}_row{u}", "stream", 2, ops.word_bits,
                                     f"qr{s}_update{u}", f"qr{s}_collect"))
-        # the Evaluate's copies of the vector (the whole vector: it takes a word when the
-        # column reaches its row) and of v_0, tau, R_jj, and its entry of row j to collect
-        channels.append(Channel(f"qr{s}_ve", "stream", max_rows, ops.word_bits + 32,
+        # the vector's header to the Evaluate (it keeps the words itself, qr<s>_evec), its
+        # copies of v_0, tau, R_jj, and its entry of row j to collect
+        channels.append(Channel(f"qr{s}_ve", "stream", 2, ops.word_bits + 32,
                                 f"qr{s}_broadcast", f"qr{s}_evaluate"))
         channels.append(Channel(f"qr{s}_te", "stream", 3, ops.word_bits + 32,
                                 f"qr{s}_finish", f"qr{s}_evaluate"))
@@ -365,6 +373,8 @@ def _levels(ctx, sets, by_index, damping) -> None:
     for s in range(sets):  # accel.cpp.jinja's WORK<s>, CONDBUF<s>, UPDBUF<s>
         ctx.memories.append(Memory(f"qr{s}_work", opts.units * sizes["MAX_ROWS"] * local,
                                    ops.word_bits, parities * opts.units))
+        # fgc_qr.h's evec: the Evaluate's copy of the vector by row, two memories by parity
+        ctx.memories.append(Memory(f"qr{s}_evec", sizes["MAX_ROWS"], ops.word_bits, 2))
         ctx.memories.append(Memory(f"qr{s}_condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
         ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)

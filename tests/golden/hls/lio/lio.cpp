@@ -53,7 +53,7 @@
 //   stream qr0_col3_even depth=44: qr0_update3 -> qr0_evaluate
 //   stream qr0_col3_odd depth=44: qr0_update3 -> qr0_evaluate
 //   stream qr0_row3 depth=2: qr0_update3 -> qr0_collect
-//   stream qr0_ve depth=87: qr0_broadcast -> qr0_evaluate
+//   stream qr0_ve depth=2: qr0_broadcast -> qr0_evaluate
 //   stream qr0_te depth=3: qr0_finish -> qr0_evaluate
 //   stream qr0_e depth=2: qr0_evaluate -> qr0_collect
 //   stream qr1_v0 depth=8: qr1_broadcast -> qr1_update0
@@ -77,7 +77,7 @@
 //   stream qr1_col3_even depth=44: qr1_update3 -> qr1_evaluate
 //   stream qr1_col3_odd depth=44: qr1_update3 -> qr1_evaluate
 //   stream qr1_row3 depth=2: qr1_update3 -> qr1_collect
-//   stream qr1_ve depth=87: qr1_broadcast -> qr1_evaluate
+//   stream qr1_ve depth=2: qr1_broadcast -> qr1_evaluate
 //   stream qr1_te depth=3: qr1_finish -> qr1_evaluate
 //   stream qr1_e depth=2: qr1_evaluate -> qr1_collect
 //   stream backsub_groups0 depth=97: backsub_loader -> backsub_end0

@@ -45,7 +45,7 @@
 //   stream qr0_col3_even depth=27: qr0_update3 -> qr0_evaluate
 //   stream qr0_col3_odd depth=27: qr0_update3 -> qr0_evaluate
 //   stream qr0_row3 depth=2: qr0_update3 -> qr0_collect
-//   stream qr0_ve depth=54: qr0_broadcast -> qr0_evaluate
+//   stream qr0_ve depth=2: qr0_broadcast -> qr0_evaluate
 //   stream qr0_te depth=3: qr0_finish -> qr0_evaluate
 //   stream qr0_e depth=2: qr0_evaluate -> qr0_collect
 //   stream backsub_groups0 depth=21: backsub_loader -> backsub_end0
