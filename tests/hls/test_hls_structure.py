@@ -281,8 +281,11 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams))
     # per unit set: 5 n_u + 4 streams (per unit its vector, v_0 / tau, row out and the next pivot
     # column as two streams by row parity, colq[N_UNITS][2]; the Evaluate's header, ...)
-    assert (len(procs), len(streams)) == ((units + 4) * 2 + 7, 2 * (5 * units + 4) + 2)
-    assert tuple(p for p in procs if p.startswith(("backsub", "trial"))) == backsub.processes
+    # ... and back-substitution's: dx, tx, tx2; the cost pass in two processes here (the plan's
+    # slot_split_loops: trial_cost_b, and the feed of its data words)
+    assert (len(procs), len(streams)) == ((units + 4) * 2 + 8, 2 * (5 * units + 4) + 4)
+    assert tuple(p for p in procs if p.startswith(("backsub", "trial"))) == \
+        backsub.processes + ("trial_cost_b",)
     for p in procs:  # the comment block lists the plan's network
         assert f"//   process {p}\n" in kernel
 
