@@ -394,9 +394,10 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     # back_substitute's trial_cost (units/datapath.py): its loops' tables, II and depth
     from fgc_backends.hls.units.datapath import trial_banked, trial_span
     split = retire_step_test(program, plan.options)
-    trial = _trial_context(program, context["blocks"], blocks, phase, split,
-                           None if split else _trial_var_end(program, plan))
-    if split:  # per variable the trial-cost processes it goes to (bit q: process q)
+    var_end = None if split else _trial_var_end(program, plan)
+    trial = _trial_context(program, context["blocks"], blocks, phase, split, var_end)
+    two = any(lp["proc"] == 1 for lp in trial)  # (the slot design's too: slot_split_loops)
+    if split or two:  # per variable the trial-cost processes it goes to (bit q: process q)
         send = [0] * len(program.variables)
         offsets = {sum(v.storage_dim for v in program.variables[:i]): i
                    for i in range(len(program.variables))}
@@ -406,16 +407,21 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                     send[offsets[x0]] |= 1 << lp["proc"]
         retire["send"] = send
     # trial_cost_b's copy of its instances' data lines (units/datapath.py's trial_b_data)
-    trial_b = None
-    if split and any(lp["proc"] == 1 for lp in trial):
+    trial_b, trial_feed = None, None
+    if two:
         from fgc_backends.hls.plan.loops import _tables
         from fgc_backends.hls.units.datapath import cost_loops, trial_b_data, trial_plan
         procs = [p for p in phase["factor_cost"].processes
                  if re.fullmatch(r"factor_(\d+|small)_cost", p.name)]
         tables = _tables(program)
-        lo, words = trial_b_data(program, trial_plan(program, context["blocks"],
-                                                     cost_loops(procs), tables, True), tables)
+        loops = trial_plan(program, context["blocks"], cost_loops(procs), tables, split,
+                           var_end)
+        lo, words = trial_b_data(program, loops, tables)
         trial_b = {"lo": lo, "words": words}
+        # the slot design's feed of DATA_B (units/datapath.py's slot_split_loops): the cycles
+        # each process spends on it, the plan's
+        feeds = [next((lp.feed for lp in loops if lp.proc == q and lp.feed), 0) for q in (0, 1)]
+        trial_feed = feeds if any(feeds) else None
     # the column design: trial_cost's gathers from DATA_BUF's two banks (units/datapath.py)
     trial_spans = [trial_span(bc) for bc in context["blocks"]] \
         if trial_banked(program, plan.options) else None
@@ -455,6 +461,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
             "blocks": blocks, "beside": beside, "network": network, "retract_hw": retract,
             "retire": retire, "trial": trial, "trial_spans": trial_spans, "trial_b": trial_b,
+            "trial_feed": trial_feed,
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
             # the gradient pass gives LM the cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE)

@@ -166,9 +166,12 @@ def counts(kernel: str, units: str, backsub: str) -> tuple[int, int]:
                              "#define FGC_BS_COLUMNS" in kernel)
     # the kernel's trial_cost, a process of back_substitute's region, is itself a DATAFLOW
     # region where the column design's LM splits the cost in two (trial_cost_a, trial_cost_b)
-    inner = sum(len(r.processes) - 1 for r in read_network(kernel) if r.function == "trial_cost")
+    # (the slot design's too, with the feed of trial_cost_b's data words: a stream)
+    trial = [r for r in read_network(kernel) if r.function == "trial_cost"]
+    inner = sum(len(r.processes) - 1 for r in trial)
     return (procs * sets + len(backsub.processes) + inner,
-            streams * sets + _stream_count(backsub, cfg))
+            streams * sets + _stream_count(backsub, cfg) + sum(_stream_count(r, cfg)
+                                                               for r in trial))
 
 
 def _stream_count(region: Region, cfg: dict) -> int:

@@ -276,13 +276,16 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
                                  "backsub_load0", "backsub_slots", "backsub_retire",
                                  "trial_cost")
     # the solved words to the state update, its retired variables to the cost pass
-    assert backsub.streams == (("dx", ""), ("tx", ""))
+    assert backsub.streams == (("dx", ""), ("tx", ""), ("tx2", ""))  # tx2: a second cost process
     procs, streams = process_network(accel_plan(program, HlsConfig(backsub_lanes=1)))
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams))
     # per unit set: 5 n_u + 4 streams (per unit its vector, v_0 / tau, row out and the next pivot
     # column as two streams by row parity, colq[N_UNITS][2]; the Evaluate's header, ...)
-    assert (len(procs), len(streams)) == ((units + 4) * 2 + 7, 2 * (5 * units + 4) + 2)
-    assert tuple(p for p in procs if p.startswith(("backsub", "trial"))) == backsub.processes
+    # ... and back-substitution's: dx, tx, tx2; the cost pass in two processes here (the plan's
+    # slot_split_loops: trial_cost_b, and the feed of its data words)
+    assert (len(procs), len(streams)) == ((units + 4) * 2 + 8, 2 * (5 * units + 4) + 4)
+    assert tuple(p for p in procs if p.startswith(("backsub", "trial"))) == \
+        backsub.processes + ("trial_cost_b",)
     for p in procs:  # the comment block lists the plan's network
         assert f"//   process {p}\n" in kernel
 
@@ -311,7 +314,7 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
         "cholesky_gram_source", "cholesky_assembler", "cholesky_cascade")
     header += _texts(out, "w100", "fgc_eliminate.h")[1]
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == \
-        (2 * cpe + 12, 4 * cpe + 4)
+        (2 * cpe + 12, 4 * cpe + 5)
     assert procs[-7:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0",
                           "backsub_slots", "backsub_retire", "trial_cost")
     assert all(f"//   process {p}\n" in kernel for p in procs[-7:])
@@ -364,7 +367,9 @@ def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):
     program, out = _emit_accel(tmp_path, lio.build(N=8), "lio", backsub_lanes=1, linear="qr",
                                units=2)
     kernel, header = _texts(out, "lio", "fgc_qr.h")
-    procs, streams = process_network(accel_plan(program, HlsConfig(backsub_lanes=1)))
+    # (the emitted design's own configuration: whether its cost pass is split in two is the plan's)
+    procs, streams = process_network(accel_plan(program, HlsConfig(scalar="double",
+                                                                   backsub_lanes=1)))
     backsub = _backsub(out)
     assert counts(kernel, header, backsub) == (len(procs), len(streams))
     call = "    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx);\n"

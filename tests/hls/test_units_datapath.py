@@ -350,3 +350,46 @@ def test_the_cost_pass_runs_its_loops_as_they_are_ready_when_that_ends_sooner():
         chosen = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, ends)
         assert trial_end(chosen, ends) <= trial_end(base, ends)
         assert chosen == base or trial_end(chosen, ends) < trial_end(base, ends)
+
+
+def test_the_slot_designs_cost_pass_splits_in_two_processes_only_when_that_ends_sooner():
+    """units/datapath.py's slot_split_loops: with the emitted tables the cost pass may run as
+    trial_cost ‖ trial_cost_b, the second fed its instances' data words first (the feed's
+    cycles at each process's start); kept only where its later process ends before the one
+    process would."""
+    from fgc_backends.hls.units.datapath import (
+        FEED_SEND_DEPTH,
+        FEED_TAKE_DEPTH,
+        trial_end,
+        trial_loops,
+    )
+    program = _trial_program()
+    costs = {0: ([0], 300, 500), 1: ([1], 100, 200), 2: ([2], 100, 200)}
+    accesses = {0: 6, 1: 3, 2: 3}
+    tables = {"FACTOR_DATA_OFF": [0, 10, 20, 30]}
+    pos = {v: v for v in range(4)}
+    # b is sent late (950): in one process block 2 drains 202 before block 0 can start after d
+    # (1,000): 950 + 202 + 502 = 1,654; block 0 beside blocks 1 and 2 ends at 1,000 + 502
+    var_end = [100, 950, 960, 1000]
+    one = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end)
+    assert trial_end(one, var_end) == 950 + 202 + 502
+    two = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end, tables)
+    assert {lp.proc for lp in two} == {0, 1}
+    assert trial_end(two, var_end, pos) == 1000 + 502
+    second = [lp for lp in two if lp.proc == 1]
+    words = (10 if [lp.key for lp in second] == [0] else 20)  # its data span (lines of 10)
+    assert second[0].feed == words - 1 + FEED_TAKE_DEPTH
+    assert [lp for lp in two if lp.proc == 0][0].feed == words - 1 + FEED_SEND_DEPTH
+    # each process takes only its instances' variables, every variable some process reads
+    taken = {q: [v for lp in two if lp.proc == q for _, vs in lp.entries for v in vs]
+             for q in (0, 1)}
+    assert sorted(taken[0] + taken[1]) == [0, 1, 2, 3]
+    # b sent early: the ready order already ends when block 0 does (1,000 + 502): not split
+    early = [100, 200, 300, 1000]
+    kept = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, early, tables)
+    assert {lp.proc for lp in kept} == {0} and all(lp.feed == 0 for lp in kept)
+    assert kept == trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, early)
+    # a feed longer than what the split saves: not split either
+    far = {"FACTOR_DATA_OFF": [0, 4000, 8000, 12000]}
+    assert {lp.proc for lp in trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end,
+                                          far)} == {0}

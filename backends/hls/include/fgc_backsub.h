@@ -637,7 +637,8 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
 // a step (RETIRE_STEP: its step, else -1) first takes the step's words from `dx` (stalling until
 // they come), then each variable is retracted by CFG::retract_variable (its type's datapath).
 template <class CFG>
-void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx, bool at_x) {
+void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx,
+                    hls::stream<TrialVar>& tx2, bool at_x) {
     FGC_OUTER_BRANCH();
     L delta[CFG::N_TANGENT];  // the solved entries by tangent index
     for (int i = 0; i < CFG::N_VARIABLES; ++i) {
@@ -656,7 +657,8 @@ void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx, bool at_
                 }
             }
         }
-        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx);  // its words on to trial_cost
+        // its words on to trial_cost (and tx2: the kernel's second cost process, if any)
+        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2);
         FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
     }
 }
@@ -671,13 +673,17 @@ void back_substitute(bool at_x) {
 #pragma HLS STREAM variable=dx depth=CFG::MAX_F
     hls::stream<TrialVar> tx;  // the retired variables' storage words, a variable a word
 #pragma HLS STREAM variable=tx depth=CFG::N_VARIABLES
+    hls::stream<TrialVar> tx2;  // those the kernel's second cost process takes, if any (TRIAL_SEND;
+#pragma HLS STREAM variable=tx2 depth=CFG::TRIAL_TX2_DEPTH
+    // else never written nor read: one word deep)
     FGC_PHASE(at_x ? "factor_cost" : "backsub");
     backsub_slots<CFG>(dx, at_x);
-    backsub_retire<CFG>(dx, tx, at_x);
-    trial_cost(tx);
+    backsub_retire<CFG>(dx, tx, tx2, at_x);
+    trial_cost(tx, tx2);  // (the kernel's: with a second cost process, a DATAFLOW region of two)
     FGC_OUTER_JOIN();
     FGC_DRAINED(&dx, 1);
     FGC_DRAINED(&tx, 1);
+    FGC_DRAINED(&tx2, 1);
 }
 
 #else  // FGC_BS_COLUMNS: back-substitution by columns (HlsConfig backsub_lanes = 4)

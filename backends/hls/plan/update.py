@@ -529,7 +529,14 @@ class UpdateModel:
         cost = region
         if instances is not None and fed_by_backsub(self.program, self.options):
             order = [k for s in reversed(steps) for k in self.clusters[first + s]]
-            cost = max(region, trial_end(self._trial_loops(order, instances), var_end))
+            from fgc_backends.hls.units.backsub import COLUMN_LANES
+            slot = self.options.backsub_lanes != COLUMN_LANES  # (the plan's trial_var_end)
+            loops = self._trial_loops(order, instances, var_end if slot else None)
+            index = {v.key: i for i, v in enumerate(self.program.variables)}
+            # (in two processes where that ends sooner: units/datapath.py's slot_split_loops)
+            pos = {index[k]: i for i, k in enumerate(order)} \
+                if any(lp.proc == 1 for lp in loops) else None
+            cost = max(region, trial_end(loops, var_end, pos))
         phases.append(Phase("backsub", False, (
             Process("backsub_slots", unit, tuple(lp for loops in slots for lp in loops)),
             Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - a),)
@@ -538,10 +545,12 @@ class UpdateModel:
                     if cost > region else ())), linear=True))
         return phases
 
-    def _trial_loops(self, keys, instances):
+    def _trial_loops(self, keys, instances, var_end=None):
         """trial_cost's loops (units.datapath's trial_loops) for the window's ``instances``,
-        its variables retired in the order of ``keys``: each datapath's cost-mode loop as the
-        plan's."""
+        its variables retired in the order of ``keys`` (``var_end``: when each is, which
+        orders the loops and may split them in two processes, as the plan's slot design):
+        each datapath's cost-mode loop as the plan's."""
+        from fgc_backends.hls.plan.loops import _tables
         p = self.program
         index = {v.key: i for i, v in enumerate(p.variables)}
         small = small_blocks(p)
@@ -556,7 +565,8 @@ class UpdateModel:
                           loop.depth)
             accesses[key] = sum(self._blocks[m].n_x_in for m in members)
         return trial_loops(p, [index[k] for k in keys], costs,
-                           max(v.storage_dim for v in p.variables), accesses)
+                           max(v.storage_dim for v in p.variables), accesses, var_end,
+                           _tables(p) if var_end is not None else None)
 
     def step_pattern(self, first, last, c, damping) -> np.ndarray:
         """Structural rows × (frontal + separator) non-zeros of the window's step for cluster c:

@@ -600,20 +600,26 @@ def _solve_phase(ctx, unit: str, solver: Process, busy: int, region: int,
     cost at X_TRIAL (units.datapath's trial_cost), fed the retired variables' storage words, a
     variable a stream word (as deep as the state: the retire never waits for it; ``var_end``:
     when each variable is retired)."""
-    from fgc_backends.hls.units.datapath import trial_end, trial_positions, trial_split
-    pos = trial_positions(ctx.program, ctx.tables) if trial_split(ctx.program, ctx.opts) else None
+    from fgc_backends.hls.units.datapath import trial_end, trial_positions
+    split = any(lp.proc == 1 for lp in ctx.shared["trial_loops"])
+    pos = trial_positions(ctx.program, ctx.tables) if split else None
     cost = max(region, trial_end(ctx.shared["trial_loops"], var_end, pos))
     words = max(v.storage_dim for v in ctx.program.variables)
     ctx.channels.append(Channel("trial_tx", "stream", len(ctx.program.variables),
                                 words * ctx.ops.word_bits, "backsub_retire", "trial_cost"))
-    if any(ch.name == "backsub_xroot" for ch in ctx.channels):  # by columns: a second cost
-        # stream (fgc_backsub.h's tx2), to trial_cost_b where trial_cost is split in two
-        # (units/datapath.py's split_trial_loops: trial_cost a DATAFLOW region of trial_cost_a
-        # and trial_cost_b), else declared and unused
-        split = any(lp.proc == 1 for lp in ctx.shared["trial_loops"])
-        ctx.channels.append(Channel("trial_tx2", "stream", len(ctx.program.variables),
-                                    words * ctx.ops.word_bits, "backsub_retire",
-                                    "trial_cost_b" if split else "trial_cost"))
+    # a second cost stream (fgc_backsub.h's tx2, both drivers), to trial_cost_b where trial_cost
+    # is split in two (units/datapath.py's split_trial_loops, slot_split_loops: trial_cost a
+    # DATAFLOW region of trial_cost_a and trial_cost_b), else declared and unused (by columns
+    # as deep as the state, the slot design's one word: LesConfig's TRIAL_TX2_DEPTH)
+    columns = any(ch.name == "backsub_xroot" for ch in ctx.channels)
+    ctx.channels.append(Channel("trial_tx2", "stream",
+                                len(ctx.program.variables) if split or columns else 1,
+                                words * ctx.ops.word_bits, "backsub_retire",
+                                "trial_cost_b" if split else "trial_cost"))
+    if any(lp.feed for lp in ctx.shared["trial_loops"]):  # the slot design's: trial_cost_b's
+        # data words from trial_cost (a word a cycle, both loops pipelined: two words deep)
+        ctx.channels.append(Channel("trial_feed", "stream", 2, ctx.ops.word_bits, "trial_cost",
+                                    "trial_cost_b"))
     ctx.add_phase("solve", Phase("backsub", False, (
         solver,
         Process("backsub_retire", "state_update", (Loop("retire_tail", 1, 1, region - busy),)

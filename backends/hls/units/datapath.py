@@ -458,7 +458,7 @@ def build(ctx) -> None:
                               opts.state_allocation,
                               retire_step_test(program, opts))
     var_end = [j * ii + depth for j in range(len(program.variables))]
-    pos = trial_positions(program, ctx.tables) if trial_split(program, opts) else None
+    pos = trial_positions(program, ctx.tables) if any(lp.proc == 1 for lp in loops) else None
     end = max(var_end[-1:] + [trial_end(loops, var_end, pos)])
     # (each datapath's cost-mode loop kept as a process of no cycles: trip 0, its II and
     # depth what trial_cost's loop for it starts from, cost_loops)
@@ -470,12 +470,20 @@ def build(ctx) -> None:
     # the process's copy of the retired state, and the stream of retired variables
     ctx.memories.append(Memory("trial_state", sum(v.storage_dim for v in program.variables),
                                ops.word_bits, 1))
+    if any(lp.feed for lp in loops):  # the slot design's trial_cost_b (slot_split_loops): its
+        # running total's adder (its loops' `total +=`: a process of its own, not shared with
+        # trial_cost's; the sum of the two totals is LM control's, after the region)
+        ctx.units.append(Unit("trial_cost_b", "the second cost process's running total", 1,
+                              (("add", 1),)))
     if any(lp.proc == 1 for lp in loops):  # trial_cost_b: its copies of the state and data
         ctx.memories.append(Memory("trial_state_b", sum(v.storage_dim
                                                         for v in program.variables),
                                    ops.word_bits, 1))
+        # (the column design's gathers read it as DATA_BUF, cyclic 2; the slot design's
+        # gather_b_<b> as one bank)
         ctx.memories.append(Memory("data_b", trial_b_data(program, loops, ctx.tables)[1],
-                                   ops.word_bits, TRIAL_DATA_BANKS))
+                                   ops.word_bits,
+                                   1 if any(lp.feed for lp in loops) else TRIAL_DATA_BANKS))
 
 
 def _small_datapath(ctx, small: tuple[int, ...], jac: list, cost: list) -> None:
@@ -536,6 +544,9 @@ class TrialLoop:
     ii: int
     depth: int
     proc: int = 0  # 0: trial_cost; 1: trial_cost_b (split_trial_loops)
+    # cycles its process spends before this loop on trial_cost_b's data words (the slot design
+    # in two processes, slot_split_loops: trial_cost sends them, trial_cost_b takes them in)
+    feed: int = 0
 
     @property
     def name(self) -> str:
@@ -543,7 +554,8 @@ class TrialLoop:
 
 
 def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
-                var_end: list[int] | None = None) -> tuple[TrialLoop, ...]:
+                var_end: list[int] | None = None,
+                tables: dict | None = None) -> tuple[TrialLoop, ...]:
     """trial_cost's loops, in the order the process runs them: per cost datapath (``costs``:
     key -> (instances, cost-mode II, depth), a block type's own or the small types' shared
     one; ``accesses[key]``: the x words an instance gathers) its instances in the order their
@@ -561,7 +573,9 @@ def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: d
     is in the stream): the loops one after another drain between them, so a loop whose
     instances wait on the last variables is better run last; the datapaths are also tried in
     the order their last instance is ready (``ready_order``, the most work first among equals),
-    and that order is kept if it ends sooner (:func:`trial_end`), else the one above."""
+    and that order is kept if it ends sooner (:func:`trial_end`), else the one above. With
+    ``tables`` too, the cost pass in two processes (:func:`slot_split_loops`) where that ends
+    sooner still."""
     order = sorted(costs, key=lambda c: (-len(costs[c][0]) * costs[c][1],
                                          -1 if c == "small" else c))
     base = _ordered_loops(program, retire_vars, costs, max_storage, accesses, order)
@@ -569,7 +583,62 @@ def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: d
         return base
     ready = _ordered_loops(program, retire_vars, costs, max_storage, accesses,
                            ready_order(program, retire_vars, costs))
-    return ready if trial_end(ready, var_end) < trial_end(base, var_end) else base
+    one = ready if trial_end(ready, var_end) < trial_end(base, var_end) else base
+    if tables is None:
+        return one
+    two = slot_split_loops(program, retire_vars, costs, max_storage, accesses, var_end, tables)
+    pos = {v: i for i, v in enumerate(retire_vars)}
+    if two and trial_end(two, var_end, pos) < trial_end(one, var_end):
+        return two
+    return one
+
+
+# trial_cost_b's data words in the slot design: trial_cost reads them out of DATA_BUF and sends
+# them on a stream at its start (a pipelined loop, II 1: the read and the write, depth 2),
+# trial_cost_b writes them into DATA_B (the read and the write, a cycle behind: depth 3)
+FEED_SEND_DEPTH, FEED_TAKE_DEPTH = 2, 3
+
+
+def slot_split_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
+                     var_end: list[int], tables: dict) -> tuple[TrialLoop, ...] | None:
+    """The slot design's cost pass in two processes: ``trial_cost`` and ``trial_cost_b`` side by
+    side, each fed the retired variables its instances read on a stream of its own
+    (TRIAL_SEND), each its loops one after another in the better of the most-work and the
+    ready order (:func:`trial_loops`). The shared small datapath stays in ``trial_cost`` (it
+    reads DATA_BUF); ``trial_cost_b`` reads its instances' data lines from ``DATA_B``, its own
+    copy, which ``trial_cost`` fills at its start through a stream (every stream move writes
+    DATA_BUF: no second copy is kept there): :data:`FEED_SEND_DEPTH` / :data:`FEED_TAKE_DEPTH`
+    cycles past the words (:func:`trial_b_data`'s span). Every split of the datapaths with a
+    datapath in each process is priced (:func:`trial_end`); the one that ends first (the
+    first of equals, in the order of the keys), or None with fewer than two datapaths."""
+    keys = sorted(c for c in costs if c != "small")
+    pos = {v: i for i, v in enumerate(retire_vars)}
+    best, best_end = None, None
+    for mask in range(1, 1 << len(keys)):
+        second = [keys[i] for i in range(len(keys)) if mask >> i & 1]
+        first = [c for c in costs if c not in second]
+        if not any(costs[c][0] for c in first) or not any(costs[c][0] for c in second):
+            continue  # (a process with no instance)
+        out: list[TrialLoop] = []
+        for q, group in enumerate((first, second)):
+            sub = {c: costs[c] for c in group}
+            needed = {i for c in group for f in sub[c][0] for i in _factor_vars(program, f)}
+            mine = [v for v in retire_vars if v in needed]
+            orders = [sorted(sub, key=lambda c: (-len(sub[c][0]) * sub[c][1],
+                                                 -1 if c == "small" else c)),
+                      ready_order(program, mine, sub)]
+            cands = [[replace(lp, proc=q) for lp in _ordered_loops(
+                program, mine, sub, max_storage, accesses, o)] for o in orders]
+            out += min(cands, key=lambda ls: _process_end(ls, var_end, pos))
+        _, words = trial_b_data(program, out, tables)
+        i0 = next(i for i, lp in enumerate(out) if lp.proc == 0)
+        i1 = next(i for i, lp in enumerate(out) if lp.proc == 1)
+        out[i0] = replace(out[i0], feed=words - 1 + FEED_SEND_DEPTH)
+        out[i1] = replace(out[i1], feed=words - 1 + FEED_TAKE_DEPTH)
+        end = trial_end(tuple(out), var_end, pos)
+        if best_end is None or end < best_end:
+            best, best_end = tuple(out), end
+    return best
 
 
 def ready_order(program, retire_vars, costs: dict) -> list:
@@ -577,8 +646,8 @@ def ready_order(program, retire_vars, costs: dict) -> list:
     last variable), the most work (instances x II) first among equals."""
     pos = {v: i for i, v in enumerate(retire_vars)}
     index = {v.key: i for i, v in enumerate(program.variables)}
-    last = {c: max(max(pos[index[k]] for k in program.factors[f].keys) for f in costs[c][0])
-            for c in costs}
+    last = {c: max((max(pos[index[k]] for k in program.factors[f].keys) for f in costs[c][0]),
+                   default=-1) for c in costs}  # (-1: a datapath with no instance here)
     return sorted(costs, key=lambda c: (last[c], -len(costs[c][0]) * costs[c][1],
                                         -1 if c == "small" else c))
 
@@ -632,6 +701,7 @@ def trial_end(loops: tuple[TrialLoop, ...], var_end: list[int],
                    for q in (0, 1))
     free, taken = 0, 0
     for lp in loops:
+        free += lp.feed
         issue = None
         for _, taking in lp.entries:
             at = free if issue is None else issue + lp.ii
@@ -648,6 +718,7 @@ def _process_end(loops: list[TrialLoop], var_end: list[int], pos: dict[int, int]
     retire iteration at its position ``pos`` ends."""
     free = 0
     for lp in loops:
+        free += lp.feed  # (trial_cost_b's data words first: slot_split_loops)
         issue = None
         for _, taking in lp.entries:
             at = free if issue is None else issue + lp.ii
@@ -809,7 +880,7 @@ def trial_plan(program, blocks, loops: dict, tables: dict,
     width = max(v.storage_dim for v in program.variables)
     if split:
         return split_trial_loops(program, variables, costs, width, accesses)
-    return trial_loops(program, variables, costs, width, accesses, var_end)
+    return trial_loops(program, variables, costs, width, accesses, var_end, tables)
 
 
 def trial_var_end(ctx) -> list[int] | None:
