@@ -576,8 +576,7 @@ def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: d
     and that order is kept if it ends sooner (:func:`trial_end`), else the one above. With
     ``tables`` too, the cost pass in two processes (:func:`slot_split_loops`) where that ends
     sooner still."""
-    order = sorted(costs, key=lambda c: (-len(costs[c][0]) * costs[c][1],
-                                         -1 if c == "small" else c))
+    order = work_order(costs)
     base = _ordered_loops(program, retire_vars, costs, max_storage, accesses, order)
     if var_end is None:
         return base
@@ -624,9 +623,7 @@ def slot_split_loops(program, retire_vars, costs: dict, max_storage: int, access
             sub = {c: costs[c] for c in group}
             needed = {i for c in group for f in sub[c][0] for i in _factor_vars(program, f)}
             mine = [v for v in retire_vars if v in needed]
-            orders = [sorted(sub, key=lambda c: (-len(sub[c][0]) * sub[c][1],
-                                                 -1 if c == "small" else c)),
-                      ready_order(program, mine, sub)]
+            orders = [work_order(sub), ready_order(program, mine, sub)]
             cands = [[replace(lp, proc=q) for lp in _ordered_loops(
                 program, mine, sub, max_storage, accesses, o)] for o in orders]
             out += min(cands, key=lambda ls: _process_end(ls, var_end, pos))
@@ -648,8 +645,18 @@ def ready_order(program, retire_vars, costs: dict) -> list:
     index = {v.key: i for i, v in enumerate(program.variables)}
     last = {c: max((max(pos[index[k]] for k in program.factors[f].keys) for f in costs[c][0]),
                    default=-1) for c in costs}  # (-1: a datapath with no instance here)
-    return sorted(costs, key=lambda c: (last[c], -len(costs[c][0]) * costs[c][1],
-                                        -1 if c == "small" else c))
+    return sorted(costs, key=lambda c: (last[c], *_work_key(costs, c)))
+
+
+def _work_key(costs: dict, c) -> tuple:
+    """The most work first (instances x cost-mode II), the small types' shared datapath first
+    among equals, then by block."""
+    return -len(costs[c][0]) * costs[c][1], -1 if c == "small" else c
+
+
+def work_order(costs: dict) -> list:
+    """The cost datapaths, the most work first (:func:`_work_key`)."""
+    return sorted(costs, key=lambda c: _work_key(costs, c))
 
 
 def _ordered_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
@@ -699,31 +706,23 @@ def trial_end(loops: tuple[TrialLoop, ...], var_end: list[int],
     if pos is not None:
         return max(_process_end([lp for lp in loops if lp.proc == q], var_end, pos)
                    for q in (0, 1))
-    free, taken = 0, 0
-    for lp in loops:
-        free += lp.feed
-        issue = None
-        for _, taking in lp.entries:
-            at = free if issue is None else issue + lp.ii
-            taken += len(taking)
-            if taking:
-                at = max(at, var_end[taken - 1])
-            issue = at
-            free = at + lp.depth
-    return free
+    return _process_end(loops, var_end)
 
 
-def _process_end(loops: list[TrialLoop], var_end: list[int], pos: dict[int, int]) -> int:
+def _process_end(loops, var_end: list[int], pos: dict[int, int] | None = None) -> int:
     """One trial-cost process's end (:func:`trial_end`), a variable it takes ready when the
-    retire iteration at its position ``pos`` ends."""
-    free = 0
+    retire iteration at its position ``pos`` ends; without ``pos`` the process takes every
+    retired variable in the retire order (the last taken is the count taken so far)."""
+    free, taken = 0, 0
     for lp in loops:
         free += lp.feed  # (trial_cost_b's data words first: slot_split_loops)
         issue = None
         for _, taking in lp.entries:
             at = free if issue is None else issue + lp.ii
             if taking:
-                at = max(at, var_end[max(pos[v] for v in taking)])
+                taken += len(taking)
+                last = taken - 1 if pos is None else max(pos[v] for v in taking)
+                at = max(at, var_end[last])
             issue = at
             free = at + lp.depth
     return free
@@ -741,8 +740,7 @@ def split_trial_loops(program, retire_vars, costs: dict, max_storage: int,
     reads its instances' data from ``DATA_B``, its own copy of their lines (:func:`trial_b_data`:
     no memory is read by two processes of the region). Not split where a later datapath is the
     shared small one (it reads DATA_BUF)."""
-    order = sorted(costs, key=lambda c: (-len(costs[c][0]) * costs[c][1],
-                                         -1 if c == "small" else c))
+    order = work_order(costs)
     if "small" in order[1:]:  # (the shared small datapath reads DATA_BUF: not split)
         return trial_loops(program, retire_vars, costs, max_storage, accesses)
     out: list[TrialLoop] = []
