@@ -10,7 +10,7 @@ from fgc.frontend.geometry import Pose2
 from fgc.ir.program import SolverConfig
 
 
-def chain(n: int = 5, **solver) -> fgc.ir.program.Program:
+def chain_graph(n: int = 5) -> fgc.Graph:
     """A Pose2 chain of ``n`` poses, a prior on the first."""
     g = fgc.Graph()
     for i in range(n):
@@ -19,4 +19,9 @@ def chain(n: int = 5, **solver) -> fgc.ir.program.Program:
     for i in range(n - 1):
         g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
                             fgc.noise.isotropic(3, 0.1)))
-    return compile_graph(g, SolverConfig(precision="float32", **solver))
+    return g
+
+
+def chain(n: int = 5, **solver) -> fgc.ir.program.Program:
+    """:func:`chain_graph` compiled in float32 (``solver``: the rest of its SolverConfig)."""
+    return compile_graph(chain_graph(n), SolverConfig(precision="float32", **solver))

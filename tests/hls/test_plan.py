@@ -11,11 +11,12 @@ from __future__ import annotations
 import dataclasses
 
 import pytest
+from hls_programs import chain_graph
 
 import fgc
 from fgc.compile import compile_graph
 from fgc.frontend.factors import BetweenFactor, PriorFactor
-from fgc.frontend.geometry import Pose2, Pose3
+from fgc.frontend.geometry import Pose3
 from fgc.ir.program import KernelText, SolverConfig
 from fgc_backends.cfamily.retract import retract_kernel, variable_class
 from fgc_backends.cost import operators
@@ -41,16 +42,9 @@ F32 = operators.FLOAT32
 
 
 def _chain(linear: str, precision: str = "float32", **solver) -> fgc.ir.program.Program:
-    g = fgc.Graph()
-    for i in range(3):
-        g.add_variable(f"x{i}", Pose2(float(i), 0.1 * i, 0.0))
-    g.add(PriorFactor("x0", Pose2(0.0, 0.0, 0.0), fgc.noise.isotropic(3, 0.1)))
-    for i in range(2):
-        g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
-                            fgc.noise.isotropic(3, 0.1)))
     method = "gn" if linear == "qr" else "lm"
-    return compile_graph(g, SolverConfig(method=method, linear=linear, precision=precision,
-                                         **solver))
+    return compile_graph(chain_graph(3), SolverConfig(method=method, linear=linear,
+                                                      precision=precision, **solver))
 
 
 @pytest.fixture(scope="module")

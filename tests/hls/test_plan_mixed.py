@@ -7,11 +7,9 @@ float32 design's (imu_window N = 50 #CPE 20 x2: 893 both; by units 1,967)."""
 from __future__ import annotations
 
 import pytest
+from hls_programs import chain_graph
 
-import fgc
 from fgc.compile import compile_graph
-from fgc.frontend.factors import BetweenFactor, PriorFactor
-from fgc.frontend.geometry import Pose2
 from fgc.ir.program import SolverConfig
 from fgc_backends.hls import HlsConfig
 from fgc_backends.hls.emitter import for_program
@@ -19,16 +17,10 @@ from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
 
 
 def _program(linear, precision, les=None, **solver):
-    g = fgc.Graph()
-    for i in range(6):
-        g.add_variable(f"x{i}", Pose2(float(i), 0.1 * i, 0.0))
-    g.add(PriorFactor("x0", Pose2(0.0, 0.0, 0.0), fgc.noise.isotropic(3, 0.1)))
-    for i in range(5):
-        g.add(BetweenFactor(f"x{i}", f"x{i + 1}", Pose2(1.0, 0.0, 0.0),
-                            fgc.noise.isotropic(3, 0.1)))
-    return compile_graph(g, SolverConfig(method="lm" if linear == "cholesky" else "gn",
-                                         linear=linear, precision=precision,
-                                         linear_precision=les, **solver), name="chain")
+    return compile_graph(chain_graph(6),
+                         SolverConfig(method="lm" if linear == "cholesky" else "gn",
+                                      linear=linear, precision=precision,
+                                      linear_precision=les, **solver), name="chain")
 
 
 def _plan(linear, precision, les=None, **solver):
