@@ -100,9 +100,8 @@ def test_a_wrong_shift_breaks_the_agreement(lio6, tmp_path):
     text = cpp.read_text()
     # the factors stay in their slots on a shift (the variables' move alone changes only
     # where LM starts: 9e-8 at the optimum)
-    patched = text.replace("DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? word : T(0);",
-                           "DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? "
-                           "DATA_BUF[DATA_MOVES[2 * k]] : T(0);")
+    patched = text.replace("src < START_BANKS ? word[src] :",
+                           "src < START_BANKS ? DATA_BUF[START_BANKS * to + c] :")
     assert patched != text
     cpp.write_text(patched)
     # the Makefile's objects do not list the headers: rebuild the kernel's from the patched one

@@ -195,19 +195,58 @@ void start_x_task(bool leave, int kept, bool shift, int m, int row, bool from_ro
 template <class CFG>
 void start_data_task(bool shift, int m, int row, bool from_row, const T data[STREAM_IN_DATA]) {
     FGC_TASK();
-    if (shift) {
+    // DATA_BUF in START_BANKS cyclic banks: the start loop below takes a read and a write of
+    // every bank an iteration (every other access to DATA_BUF, at an address the scheduler
+    // cannot place in one bank, takes a port of every bank, as one bank's did)
+#pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=START_BANKS
+#pragma HLS ARRAY_PARTITION variable=START_OPS cyclic factor=START_BANKS
+    const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
+#ifndef FGC_STREAM_SWEEP
+    (void)row;
+    (void)from_row;
+#endif
+    if (shift) {  // (the window full: m is the newest slot) the shift and the keyframe's words
         FGC_PHASE("stream_shift");
-        for (int k = 0; k < N_DATA_MOVES; ++k) {
+        const int mask = (1 << START_ROW_BITS) - 1;
+        int k = 0;  // the keyframe's next word (its words in their order, at most one an iteration)
+        for (int i = 0; i < N_START; ++i) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=DATA_BUF inter false
-            const int src = DATA_MOVES[2 * k + 1];
-            const T word = DATA_BUF[src >= 0 ? src : 0];
-            DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? word : T(0);
+#ifdef FGC_STREAM_SWEEP
+            // a sweep pass reads the keyframe's row, any other call writes it: never both in
+            // one call, and its word k moves on with every word taken
+#pragma HLS DEPENDENCE variable=SWEEP_WORDS inter false
+#endif
+            T word[START_BANKS];  // what each bank reads this iteration (its reads before its writes)
+#pragma HLS ARRAY_PARTITION variable=word complete
+            bool in = false;
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS[i * START_BANKS + c];
+                word[c] = DATA_BUF[START_BANKS * (op & mask) + c];
+                in = in || (op >> (2 * START_ROW_BITS)) == START_BANKS;
+            }
+            T v = T(0);
+            if (in) {
+#ifdef FGC_STREAM_SWEEP
+                v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : data[k];
+                if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
+#else
+                v = data[k];
+#endif
+                ++k;
+            }
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS[i * START_BANKS + c];
+                const int to = ((op >> START_ROW_BITS) & mask) - 1, src = op >> (2 * START_ROW_BITS);
+                if (to >= 0) DATA_BUF[START_BANKS * to + c] = src < START_BANKS ? word[src] : src == START_BANKS ? v : T(0);
+            }
         }
-        FGC_CYCLES("stream", 0, "shift_data", N_DATA_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        FGC_CYCLES("stream", 0, "start_data", N_START, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        return;
     }
     FGC_PHASE("setup");
-    const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
 #pragma HLS PIPELINE II=1
@@ -220,10 +259,6 @@ void start_data_task(bool shift, int m, int row, bool from_row, const T data[STR
 #endif
     }
     FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-#ifndef FGC_STREAM_SWEEP
-    (void)row;
-    (void)from_row;
-#endif
 }
 
 // The region (the caller joins it: FGC_TASKS_JOIN): every slot down one where `shift` (slot s

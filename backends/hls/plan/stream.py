@@ -388,6 +388,9 @@ class WindowUpdateModel:
                 # (start_x_task) and on DATA_BUF (start_data_task), each process's own loops
                 _stream_phase("shift_x", move("x", len(lay.x_moves))),
                 _stream_phase("shift_data", move("d", len(lay.data_moves))),
+                # the window full: the shift's words and the keyframe's in one loop over
+                # DATA_BUF's banks (window.py's _start_tables; start_data_task)
+                _stream_phase("start_data", move("d", max(1, len(lay.start_rows)))),
                 _stream_phase("keyframe_x_in", move("x", kf)),
                 _stream_phase("x_out", move("x", lay.n_x)),
                 _stream_phase("x_out_kf", move("x", kf))]
@@ -546,7 +549,10 @@ class WindowUpdateModel:
                              stream_memories(self.layout, self.plan.ops.word_bits,
                                              self.les.word_bits,
                                              n * (2 * n + 1) if batch is not None else 0))
-        return replace(merged, units=merged.units + self.stream_units())
+        # DATA_BUF in the update start's cyclic banks (fgc_stream.h's start_data_task)
+        memories = tuple(replace(m, banks=max(m.banks, self.layout.start_banks))
+                         if m.name == "data" else m for m in merged.memories)
+        return replace(merged, memories=memories, units=merged.units + self.stream_units())
 
     def stream_units(self) -> tuple[Unit, ...]:
         """The operators the stream section's own code instantiates (fgc_stream.h, every call
@@ -777,8 +783,25 @@ class WindowUpdateModel:
         st = self.stream
         x = (st["stream_x_out_kf"] if leave else 0) + (st["stream_shift_x"] if shift else 0) \
             + st["stream_keyframe_x_in"] + (st["stream_lin_points"] if points else 0)
-        data = (st["stream_shift_data"] if shift else 0) + st[f"stream_keyframe_data_in{m}"]
+        data = st["stream_start_data"] if shift else st[f"stream_keyframe_data_in{m}"]
         return min(x, data)
+
+    def _banked(self) -> int:
+        """The cycles the update's start saves on DATA_BUF with the window full
+        (start_data_task): the shift's words and then the keyframe's, a word a cycle through
+        one bank's two ports (the terms shift and keyframe_in count them so), against one loop
+        over DATA_BUF's banks that takes a read and a write of each an iteration and the
+        keyframe's words one an iteration (window.py's _start_tables)."""
+        st, last = self.stream, self.layout.size - 1
+        return st["stream_shift_data"] + st[f"stream_keyframe_data_in{last}"] \
+            - st["stream_start_data"]
+
+    def _banked_term(self, times: int = 1, name: str = "start_banks") -> Term:
+        lay = self.layout
+        return Term(name, -self._banked(), times, False,
+                    f"the shift's {len(lay.data_moves)} data words and the keyframe's "
+                    f"{len(lay.new_dest[-1])} in {len(lay.start_rows)} iterations over "
+                    f"DATA_BUF's {lay.start_banks} banks, not one after the other through one")
 
     def _start_term(self, m: int, shift: bool, leave: bool, points: bool,
                     name: str = "start_beside") -> Term:
@@ -824,6 +847,9 @@ class WindowUpdateModel:
                  Term("sweep_start_beside", -hidden, 1, False,
                       "each pass's start region: its moves on X (the shift's variables, the "
                       "keyframe's storage, the points) beside its words, the shorter hidden")]
+        shifted = sum(1 for c in range(j) if c >= lay.size)
+        if shifted:
+            terms.append(self._banked_term(shifted, "sweep_start_banks"))
         steps = range(w, j)
         if not steps:
             return terms
@@ -930,6 +956,7 @@ class WindowUpdateModel:
         if keyframe >= lay.size:
             terms.append(Term("shift", st["stream_shift"], 1, False,
                               "every slot down one: its variables, its factors' words, τ"))
+            terms.append(self._banked_term())
         sweep = lay.sweep is not None and keyframe in lay.sweep
         if lay.sweep is not None:
             if keyframe >= lay.size:
