@@ -208,12 +208,14 @@ class WindowLayout(WindowTemplate):
         """The update's start on DATA_BUF once the window is full (the shift, then the keyframe
         into the newest slot) as one loop over DATA_BUF in ``start_banks`` cyclic banks: per
         iteration each bank reads one word and writes one (its two ports), the written word
-        read this iteration from any bank, the keyframe's next word (at most one an
-        iteration, in their order: the call's input is read a word a cycle) or zero.
-        ``start_rows``: per iteration per bank (word read or None, word written or None, its
-        source: a bank, ``nb`` the keyframe's word, ``nb + 1`` zero). Checked against the
-        moves one after another (:func:`_check_start`)."""
-        self.start_banks, self.start_rows = 1, []
+        read this iteration from any bank, one of the keyframe's next words or zero.
+        ``start_rows``: the call's keyframe (its input read a word a cycle: one keyframe word
+        an iteration); ``sweep_rows`` (batch steps as sweeps): a sweep pass's, its keyframe
+        from its row of SWEEP_WORDS (two read ports: two an iteration). Per iteration per bank
+        (word read or None, word written or None, its source: a bank, ``nb`` / ``nb + 1`` the
+        iteration's first / second keyframe word, None zero). Checked against the moves one
+        after another (:func:`_check_start`)."""
+        self.start_banks, self.start_rows, self.sweep_rows = 1, [], []
         if self.size < 2:
             return
         kf = self.new_dest[-1]
@@ -224,21 +226,26 @@ class WindowLayout(WindowTemplate):
                 best = (nb, rows)
         self.start_banks, self.start_rows = best
         _check_start(self.data_moves, kf, self.n_data, *best)
+        if self.sweep is not None:
+            self.sweep_rows = _start_schedule(self.data_moves, kf, best[0], 2)
+            _check_start(self.data_moves, kf, self.n_data, best[0], self.sweep_rows)
 
     def start_context(self) -> dict:
-        """accel.cpp.jinja's START_OPS table (:meth:`_start_tables`): per iteration and bank
-        one word, the row read (0: none), the row written plus one (0: none) and the written
-        word's source, ``row_bits`` bits each but the source's (a bank, the keyframe's word,
-        zero)."""
+        """accel.cpp.jinja's START_OPS (and START_OPS_SWEEP) tables (:meth:`_start_tables`):
+        per iteration and bank one word, the row read (0: none), the row written plus one (0:
+        none) and the written word's source, ``row_bits`` bits each but the source's (a bank,
+        ``nb`` / ``nb + 1`` the iteration's first / second keyframe word, ``nb + 2`` zero)."""
         nb = self.start_banks
         bits = max(1, ((self.n_data - 1) // nb + 1).bit_length())
-        ops = []
-        for row in self.start_rows:
-            for r, w, s in row:
-                ops.append((0 if r is None else r // nb)
-                           | (0 if w is None else w // nb + 1) << bits
-                           | (nb + 1 if s is None else s) << 2 * bits)
-        return {"banks": nb, "iterations": len(self.start_rows), "row_bits": bits, "ops": ops}
+
+        def ops(rows):
+            return [(0 if r is None else r // nb) | (0 if w is None else w // nb + 1) << bits
+                    | (nb + 2 if s is None else s) << 2 * bits
+                    for row in rows for r, w, s in row]
+
+        return {"banks": nb, "iterations": len(self.start_rows), "row_bits": bits,
+                "ops": ops(self.start_rows), "sweep_iterations": len(self.sweep_rows),
+                "sweep_ops": ops(self.sweep_rows)}
 
     def _leaf(self, tables, index) -> None:
         """The elimination step of slot 0: its frontal variables slot 0's, its separator slot
@@ -667,15 +674,17 @@ def _moves(shift: list[int]) -> list[tuple[int, int]]:
     return order
 
 
-def _start_schedule(moves: list[tuple[int, int]], kf: list[int], nb: int) -> list[list]:
+def _start_schedule(moves: list[tuple[int, int]], kf: list[int], nb: int,
+                    per: int = 1) -> list[list]:
     """The shift's ``moves`` ((target, source or ZERO) in an order that reads each word before
     it is overwritten) and the keyframe's words into ``kf`` (in the call's order) over DATA_BUF
     in ``nb`` cyclic banks (word w in bank w mod nb), greedily: per iteration each bank one
-    read and one write, at most one keyframe word, every op once the one move that reads its
-    target (if any) has run in this or an earlier iteration (an iteration's reads come before
-    its writes). The keyframe's words in their order, each with the moves its chain needs
-    first; the moves that free no keyframe word fill the ports left. Per iteration per bank
-    (word read, word written, source: a bank, ``nb`` the keyframe, ``nb + 1`` zero)."""
+    read and one write, at most ``per`` keyframe words (1 or 2), every op once the one move
+    that reads its target (if any) has run in this or an earlier iteration (an iteration's
+    reads come before its writes). The keyframe's words in their order, each with the moves
+    its chain needs first; the moves that free no keyframe word fill the ports left. Per
+    iteration per bank (word read, word written, source: a bank, ``nb + q`` the iteration's
+    q-th keyframe word, None zero)."""
     reader = {src: i for i, (_, src) in enumerate(moves) if src >= 0}
     writer = {dst: i for i, (dst, _) in enumerate(moves)}
     at_kf = {w: k for k, w in enumerate(kf)}
@@ -694,7 +703,7 @@ def _start_schedule(moves: list[tuple[int, int]], kf: list[int], nb: int) -> lis
     while pending:
         it = len(rows)
         row = [[None, None, None] for _ in range(nb)]
-        kf_used = False
+        kf_used = 0
         progress = True
         while progress:
             progress = False
@@ -708,10 +717,10 @@ def _start_schedule(moves: list[tuple[int, int]], kf: list[int], nb: int) -> lis
                 if row[b][1] is not None:
                     continue
                 if kind == "k":
-                    if kf_used or i != next_kf:
+                    if kf_used == per or i != next_kf:
                         continue
-                    row[b][1:] = [dst, nb]
-                    kf_used, next_kf = True, next_kf + 1
+                    row[b][1:] = [dst, nb + kf_used]
+                    kf_used, next_kf = kf_used + 1, next_kf + 1
                 else:
                     src = moves[i][1]
                     if src >= 0:
@@ -739,6 +748,7 @@ def _check_start(moves, kf, n_data: int, nb: int, rows) -> None:
         want[w] = ("kf", k)
     got, k = list(range(n_data)), 0
     for row in rows:
+        first = k
         read = {}
         for b, (r, _, _) in enumerate(row):
             if r is not None:
@@ -750,8 +760,8 @@ def _check_start(moves, kf, n_data: int, nb: int, rows) -> None:
                 continue
             if w % nb != b:
                 raise OnChipWindowError("internal error: a start write outside its bank")
-            if s == nb:
-                got[w], k = ("kf", k), k + 1
+            if s is not None and s >= nb:
+                got[w], k = ("kf", first + s - nb), k + 1
             else:
                 got[w] = "zero" if s is None else read[s]
     if got != want:

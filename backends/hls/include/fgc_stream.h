@@ -52,8 +52,8 @@
 //
 // Define the parts the design has, then include this file inside the kernel's namespace after
 // its tables and memories, which the functions name (the window's X, DATA_BUF, COND, NF, the
-// schedule's STEP_* and the stream's SLOT_X, NEW_DEST, X_MOVES, DATA_MOVES, N_X_MOVES,
-// N_DATA_MOVES, STREAM_* constants; KEPT_*, X_KEPT, BATCH_* where kept / batch), with the problem's
+// schedule's STEP_* and the stream's SLOT_X, NEW_DEST, X_MOVES, N_X_MOVES, START_OPS,
+// START_BANKS, START_ROW_BITS, N_START, STREAM_* constants; KEPT_*, X_KEPT, BATCH_* where kept / batch), with the problem's
 // kernels: linearize_all and, kept, keyframe_local / keyframe_retract (each variable's Log and
 // retraction). T and L are the kernel's scalars. CFG is the kernel's StreamConfig: the plan's
 // (II, depth) of T's move / max / retract / div and L's acc / div / scatter loops, MV_II (the kept
@@ -131,10 +131,12 @@ L BATCH_TAU[STREAM_KF_T * (STREAM_KF_T + 1)];  // the factor passed into the nex
 // The update's start as one DATAFLOW region of two processes, each on its own memories: the
 // moves on X (start_x_task: the leaving keyframe's estimate into X_KEPT where `leave`, the
 // shift's variables where `shift`, the keyframe's storage into slot m, and slots 0 and 1 into
-// lin01 where `points`) beside the moves on DATA_BUF (start_data_task: the shift's words, then
-// the keyframe's factors' and prior's words). Each loop of a process keeps its memory's ports to
-// itself (X: the shift a read and a write an iteration, the keyframe a write, the points a read;
-// DATA_BUF the same), the two processes share no memory and have no operator (moves and muxes):
+// lin01 where `points`) beside the moves on DATA_BUF (start_data_task: the shift's words and
+// the keyframe's factors' and prior's words in one loop over DATA_BUF's START_BANKS banks, a
+// read and a write of each an iteration, by the table START_OPS (window.py's _start_tables);
+// while the window fills, the keyframe's words alone). Each loop of a process keeps its memory's
+// ports to itself (X: the shift a read and a write an iteration, the keyframe a write, the
+// points a read), the two processes share no memory and have no operator (moves and muxes):
 // the region takes the longer of the two. `row` / `from_row` (batch steps as sweeps): the
 // pass's keyframe from its row of the sweep's memory (a sweep pass, the row sweep_store or an
 // earlier call left), else from the call's input, each word also kept in row `row` as it passes
@@ -205,9 +207,46 @@ void start_data_task(bool shift, int m, int row, bool from_row, const T data[STR
     (void)row;
     (void)from_row;
 #endif
+    const int mask = (1 << START_ROW_BITS) - 1;
+#ifdef FGC_STREAM_SWEEP
+#pragma HLS ARRAY_PARTITION variable=START_OPS_SWEEP cyclic factor=START_BANKS
+    if (shift && from_row) {  // a sweep pass: its keyframe from its row of SWEEP_WORDS, whose two
+        FGC_PHASE("stream_shift");  // read ports give two words an iteration (START_OPS_SWEEP)
+        int k = 0;
+        for (int i = 0; i < N_START_SWEEP; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=DATA_BUF inter false
+            T word[START_BANKS];
+#pragma HLS ARRAY_PARTITION variable=word complete
+            int in = 0;  // the keyframe's words this iteration: 0, 1 or 2
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS_SWEEP[i * START_BANKS + c];
+                word[c] = DATA_BUF[START_BANKS * (op & mask) + c];
+                const int src = op >> (2 * START_ROW_BITS);
+                if (src == START_BANKS + 1) in = 2;
+                else if (src == START_BANKS && in == 0) in = 1;
+            }
+            const T v0 = in > 0 ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : T(0);
+            const T v1 = in > 1 ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k + 1] : T(0);
+            k += in;
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS_SWEEP[i * START_BANKS + c];
+                const int to = ((op >> START_ROW_BITS) & mask) - 1, src = op >> (2 * START_ROW_BITS);
+                if (to >= 0) {
+                    DATA_BUF[START_BANKS * to + c] = src < START_BANKS ? word[src]
+                                                     : src == START_BANKS ? v0
+                                                     : src == START_BANKS + 1 ? v1 : T(0);
+                }
+            }
+        }
+        FGC_CYCLES("stream", 0, "start_data_sweep", N_START_SWEEP, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        return;
+    }
+#endif
     if (shift) {  // (the window full: m is the newest slot) the shift and the keyframe's words
         FGC_PHASE("stream_shift");
-        const int mask = (1 << START_ROW_BITS) - 1;
         int k = 0;  // the keyframe's next word (its words in their order, at most one an iteration)
         for (int i = 0; i < N_START; ++i) {
 #pragma HLS PIPELINE II=1
