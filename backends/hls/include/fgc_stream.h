@@ -194,8 +194,24 @@ void start_x_task(bool leave, int kept, bool shift, int m, int row, bool from_ro
     }
 }
 
+// The call's keyframe words (not a sweep pass's, whose row is on chip) read from `data` in their
+// order, a word a cycle (a burst), into the FIFO start_data_task takes them from: its loop
+// takes them at the iterations its table says, so it reads no address of `data` itself.
 template <class CFG>
-void start_data_task(bool shift, int m, int row, bool from_row, const T data[STREAM_IN_DATA]) {
+void start_in_task(int m, bool from_row, const T data[STREAM_IN_DATA], hls::stream<T>& words) {
+    FGC_TASK();
+    FGC_PHASE("setup");
+    const int n = from_row ? 0 : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
+#pragma HLS PIPELINE II=1
+        words.write(data[k]);
+    }
+    FGC_CYCLES("top", 0, "keyframe_data_read", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+template <class CFG>
+void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& words) {
     FGC_TASK();
     // DATA_BUF in START_BANKS cyclic banks: the start loop below takes a read and a write of
     // every bank an iteration (every other access to DATA_BUF, at an address the scheduler
@@ -247,15 +263,12 @@ void start_data_task(bool shift, int m, int row, bool from_row, const T data[STR
 #endif
     if (shift) {  // (the window full: m is the newest slot) the shift and the keyframe's words
         FGC_PHASE("stream_shift");
-        int k = 0;  // the keyframe's next word (its words in their order, at most one an iteration)
+#ifdef FGC_STREAM_SWEEP
+        int k = 0;  // the keyframe's next word (the FIFO's, at most one an iteration)
+#endif
         for (int i = 0; i < N_START; ++i) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=DATA_BUF inter false
-#ifdef FGC_STREAM_SWEEP
-            // a sweep pass reads the keyframe's row, any other call writes it: never both in
-            // one call, and its word k moves on with every word taken
-#pragma HLS DEPENDENCE variable=SWEEP_WORDS inter false
-#endif
             T word[START_BANKS];  // what each bank reads this iteration (its reads before its writes)
 #pragma HLS ARRAY_PARTITION variable=word complete
             bool in = false;
@@ -267,13 +280,11 @@ void start_data_task(bool shift, int m, int row, bool from_row, const T data[STR
             }
             T v = T(0);
             if (in) {
+                v = words.read();
 #ifdef FGC_STREAM_SWEEP
-                v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : data[k];
-                if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
-#else
-                v = data[k];
-#endif
+                SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;  // (not a sweep pass: kept as it came)
                 ++k;
+#endif
             }
             for (int c = 0; c < START_BANKS; ++c) {
 #pragma HLS UNROLL
@@ -290,11 +301,11 @@ void start_data_task(bool shift, int m, int row, bool from_row, const T data[STR
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
 #pragma HLS PIPELINE II=1
 #ifdef FGC_STREAM_SWEEP
-        const T v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : data[k];
+        const T v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : words.read();
         DATA_BUF[NEW_DEST[b + k]] = v;
         if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
 #else
-        DATA_BUF[NEW_DEST[b + k]] = data[k];
+        DATA_BUF[NEW_DEST[b + k]] = words.read();
 #endif
     }
     FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
@@ -310,8 +321,11 @@ void update_start(bool leave, int kept, bool shift, int m, int row, bool from_ro
                   const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA], bool points,
                   T lin01[2 * STREAM_KF_X]) {
 #pragma HLS DATAFLOW
+    hls::stream<T> words("start_words");  // the call's keyframe words, in their order
+#pragma HLS STREAM variable=words depth=2
     start_x_task<CFG>(leave, kept, shift, m, row, from_row, x_in, points, lin01);
-    start_data_task<CFG>(shift, m, row, from_row, data);
+    start_in_task<CFG>(m, from_row, data, words);
+    start_data_task<CFG>(shift, m, row, from_row, words);
 }
 
 #ifdef FGC_STREAM_SWEEP
