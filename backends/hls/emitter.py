@@ -571,10 +571,8 @@ def _trial_var_end(program: Program, plan):
     loops is the plan's)."""
     from fgc_backends.hls.plan.assemble import PlanBuild
     from fgc_backends.hls.units.datapath import trial_var_end
-    les_precision = plan.options.les_precision or (
-        program.solver.les_precision if plan.options.precision is None else plan.precision)
     return trial_var_end(PlanBuild(program, plan.options, plan.ops,
-                                   plan.target.ops(les_precision)))
+                                   plan.target.ops(plan.options.precisions(program)[1])))
 
 
 def _trial_context(program: Program, contexts, blocks, phase: dict,

@@ -108,6 +108,15 @@ class PlanOptions:
             return self.state_limits
         return STATE_ALLOCATION_COLUMNS if self.backsub_lanes == 4 else STATE_ALLOCATION
 
+    def precisions(self, program: Program) -> tuple[str, str]:
+        """The design's (scalar, linear solver) precisions: these options' if set, else the
+        Program's; a design emitted in one scalar (``precision`` set, ``les_precision`` not)
+        solves in that scalar too."""
+        precision = self.precision or program.solver.precision
+        les = self.les_precision or (program.solver.les_precision if self.precision is None
+                                     else precision)
+        return precision, les
+
     @classmethod
     def of(cls, program: Program, **changes) -> PlanOptions:
         base = dict(units=program.solver.units, cpe=program.solver.cpe)

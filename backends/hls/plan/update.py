@@ -117,9 +117,7 @@ class UpdateModel:
         self.options = replace(options or PlanOptions.of(program), hgc_beside=False)
         self.plan = build_plan(program, self.options)
         self.ops = self.plan.ops  # the accelerator's scalar, and the linear solver's (plan's)
-        self.les = self.plan.target.ops(self.options.les_precision or (
-            program.solver.les_precision if self.options.precision is None
-            else self.plan.precision))
+        self.les = self.plan.target.ops(self.options.precisions(program)[1])
         self.rate = transfer_words_per_cycle
         self.qr = program.solver.linear == "qr"
         self.damping = program.solver.method == "lm"
