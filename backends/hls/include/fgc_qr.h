@@ -203,17 +203,19 @@ inline void qr_put(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_
 
 // ---- the processes of one reflection ---------------------------------------------------------
 
-#ifdef FGC_QR_TWO_ROWS
-// Stream the Householder vector in vin to every Update unit two words a cycle: the header {0, 0,
-// n, ne}, then the pairs of words below the pivot by row parity (vin's slots 2 + 2a and 3 + 2a,
-// the Evaluate's lanes; v_a = x_a, final as the Evaluate wrote them): iteration a reads slots 2a
-// and 2a + 1 (a = 0: the header and the pivot's slot, whose idx is ne). The pivot's v_0 comes
-// from qr_finish. The Evaluate, when there is a next column (j + 1 < k), gets the header {0, n}
-// only (evq): it keeps its own copy of the vector by row.
+// Stream the Householder vector in vin to every Update unit: the header {0, n}, then the n - 1
+// words below the pivot (v_a = x_a, final as the Evaluate wrote them); the pivot's v_0 comes
+// from qr_finish, which computes it meanwhile. The Evaluate, when there is a next column (j + 1
+// < k), gets the header only (evq): it wrote the vector itself, and keeps its own copy by row.
+// With FGC_QR_TWO_ROWS two words a cycle: the header {0, 0, n, ne}, then the pairs of words
+// below the pivot by row parity (vin's slots 2 + 2a and 3 + 2a, the Evaluate's lanes):
+// iteration a reads slots 2a and 2a + 1 (a = 0: the header and the pivot's slot, whose idx is
+// ne); trip 1 + max(ne, no).
 template <class CFG>
 void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + QR_VEC_SLACK], int j, int k,
                   hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS],
                   hls::stream<qr_word<typename CFG::T> >& evq) {
+#ifdef FGC_QR_TWO_ROWS
     typedef typename CFG::T T;
     const bool to_eval = j + 1 < k;  // a next pivot column: the Evaluate runs
     const int n = vin[0].idx;
@@ -237,16 +239,7 @@ void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + QR_VEC_SLAC
         if (to_eval && a == 0) evq.write(x0);  // the header only: the Evaluate keeps its own copy
     }
     FGC_CYCLES("qr_broadcast", 0, "vector", words, 1, 2);
-}
 #else
-// Stream the Householder vector in vin to every Update unit: the header {0, n}, then the n - 1
-// words below the pivot (v_a = x_a, final as the Evaluate wrote them); the pivot's v_0 comes
-// from qr_finish, which computes it meanwhile. The Evaluate, when there is a next column (j + 1
-// < k), gets the header only (evq): it wrote the vector itself, and keeps its own copy by row.
-template <class CFG>
-void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + QR_VEC_SLACK], int j, int k,
-                  hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS],
-                  hls::stream<qr_word<typename CFG::T> >& evq) {
     const bool to_eval = j + 1 < k;  // a next pivot column: the Evaluate runs
     const int n = vin[0].idx;
     const int words = n > 0 ? n : 1;
@@ -262,8 +255,8 @@ void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + QR_VEC_SLAC
         if (to_eval && a == 0) evq.write(x);  // the header only: the Evaluate keeps its own copy
     }
     FGC_CYCLES("qr_broadcast", 0, "vector", words, 1, 2);
-}
 #endif
+}
 
 // The Evaluate's tail, while the vector streams: from the column's squared norm and pivot (hin:
 // {norm2, n}, {x_0, j}) alpha = -sign(x_0) sqrt(norm2), v_0 = x_0 - alpha and tau = 1 / (norm2 -
@@ -337,18 +330,18 @@ void qr_finish(const qr_word<typename CFG::T> hin[2], int k,
 // diagnostic is silenced for this function only (Vitis ignores GCC pragmas).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#ifdef FGC_QR_TWO_ROWS
-// Two rows a cycle (FGC_QR_TWO_ROWS): the reflection's active rows in two lanes by row parity,
+// With FGC_QR_TWO_ROWS, two rows a cycle: the reflection's active rows in two lanes by row parity,
 // lane 0 the even rows (the bank's even-row memory), lane 1 the odd rows (its odd-row memory):
 // the broadcast's pairs give lane L's words below the pivot at positions 0 ... n_L - 1, and the
 // pivot's word (row j, v_0 from qr_finish) is the last position, q - 1, of lane j & 1, q = the
 // longer lane's words with the pivot. A column is q iterations of dot_axpy, each one read and
 // one write of each memory; a position a lane has no word at is skipped (row -1).
 template <class CFG, int U>
-void qr_update(int j, int rows, int cols, int k, hls::stream<qr_pair<typename CFG::T> >& vin,
+void qr_update(int j, int rows, int cols, int k, hls::stream<qr_vq_word<typename CFG::T> >& vin,
                hls::stream<qr_word<typename CFG::T> >& tin,
                typename CFG::T bank[CFG::MAX_ROWS][CFG::LOCAL_COLS],
                hls::stream<typename CFG::T> colout[2], hls::stream<typename CFG::T>& rowout) {
+#ifdef FGC_QR_TWO_ROWS
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
@@ -584,13 +577,7 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_pair<typename CF
         }
     }
     FGC_CYCLES("qr_update", U, "dot_axpy", words + lag, 1, CFG::MUL_LAT + CFG::ADD_LAT);
-}
 #else
-template <class CFG, int U>
-void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CFG::T> >& vin,
-               hls::stream<qr_word<typename CFG::T> >& tin,
-               typename CFG::T bank[CFG::MAX_ROWS][CFG::LOCAL_COLS],
-               hls::stream<typename CFG::T> colout[2], hls::stream<typename CFG::T>& rowout) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
@@ -813,8 +800,8 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
         }
     }
     FGC_CYCLES("qr_update", U, "dot_axpy", words + lag, 1, CFG::MUL_LAT + CFG::ADD_LAT);
-}
 #endif
+}
 #pragma GCC diagnostic pop
 
 // The N_UNITS Update processes, U = 0 ... N_UNITS - 1, as separate calls in the region.

@@ -16,10 +16,9 @@ from fgc_backends.hls.plan.binding import BoundLoop, bound_unit
 from fgc_backends.hls.plan.cost import phase_cycles
 from fgc_backends.hls.plan.loops import _assign, _ported, _region_cycles, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, PlanError, Process
+from fgc_backends.hls.plan.options import QR_ROWS  # fgc_qr.h's Update units: rows a cycle
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
-
-QR_ROWS = (1, 2)  # PlanOptions.qr_rows: fgc_qr.h's Update units one row a cycle, or two
 
 
 def active_rows(pattern) -> tuple[int, int, int, list[int]]:
@@ -314,7 +313,7 @@ def build(ctx) -> None:
 def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
     """fgc_qr.h's unit sets (units, streams) and each step's regions."""
     opts, ops, sched = ctx.opts, ctx.les, ctx.program.schedule
-    evaluate, update = householder_loops(ops.add.latency)
+    evaluate, update = householder_loops(ops.add.latency, opts.qr_rows)
     for s in range(sets):
         ctx.units.append(bound_unit(f"qr{s}_evaluate", "Householder vector of a column",
                                     evaluate, 1, ops))
@@ -329,9 +328,10 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
         # of the vector's and one of the norm's two buffers, which the next region's broadcast
         # and qr_finish read
         channels = ctx.channels
-        for u in range(opts.units):
+        for u in range(opts.units):  # (two rows a cycle: a pair of words a cycle)
             channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
-                                    ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
+                                    opts.qr_rows * (ops.word_bits + 32), f"qr{s}_broadcast",
+                                    f"qr{s}_update{u}"))
         for u in range(opts.units):
             channels.append(Channel(f"qr{s}_t{u}", "stream", 2, ops.word_bits + 32,
                                     f"qr{s}_finish", f"qr{s}_update{u}"))
@@ -352,14 +352,17 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
                                 f"qr{s}_finish", f"qr{s}_evaluate"))
         channels.append(Channel(f"qr{s}_e", "stream", 2, ops.word_bits,
                                 f"qr{s}_evaluate", f"qr{s}_collect"))
-        channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 1, ops.word_bits + 32,
+        # (two rows a cycle: the words by row parity, MAX_ROWS + 3 slots)
+        channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 1 + 2 * (opts.qr_rows - 1),
+                                ops.word_bits + 32,
                                 f"qr{s}_evaluate", f"qr{s}_broadcast"))
         channels.append(Channel(f"qr{s}_hbuf", "pingpong", 2, ops.word_bits + 32,
                                 f"qr{s}_evaluate", f"qr{s}_finish"))
     # per step: the regions of fgc_qr.h's qr_step (Evaluate of column k+1 overlaps the Update
     # of column k in region k) and its store, one process per step
     return {st.index: Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
-        patterns[st.index], st.frontal_dim, opts.units, ops, name=f"s{st.index}")))
+        patterns[st.index], st.frontal_dim, opts.units, ops, name=f"s{st.index}",
+        qr_rows=opts.qr_rows)))
         for st in sched.steps}
 
 
