@@ -17,6 +17,7 @@ Prints per keyframe csim and model cycles, their ratio, and the update latency a
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import re
 import subprocess
 import tempfile
@@ -27,6 +28,7 @@ import numpy as np
 from fgc.app.specs import example
 from fgc.app.streaming import compile_stream, keyframe_result, one_step_solver
 from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends.hls.config import HlsConfig
 from fgc_backends.hls.plan.stream import WindowUpdateModel
 from fgc_backends.hls.streaming import OnChipFixedLagStream, OnChipIncrementalStream
@@ -64,10 +66,13 @@ def counted(stream: OnChipFixedLagStream, estimates_at_end: bool = False
 
 
 def measure(keyframes: int, window: int, scalar: str, incremental: int | None = None,
-            batch_every=None, one_step: bool = False, qr_rows: int = 1):
+            batch_every=None, one_step: bool = False, qr_rows: int = 1,
+            units: int | None = None):
     graph = example("lio").build(N=keyframes)
     # one_step: ISAM2's policy, one Gauss-Newton step an update (fgc.app.streaming.one_step)
     solver = one_step_solver() if one_step else None
+    if units is not None:  # n_u Update units (the Program's solver setting)
+        solver = dataclasses.replace(solver or SolverConfig(), units=units)
     out = tempfile.mkdtemp(prefix="fgc-stream-cycles-")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # a double design over the part's DSP still simulates
@@ -118,10 +123,11 @@ def main() -> None:
                          "to convergence)")
     ap.add_argument("--qr-rows", type=int, choices=(1, 2), default=1,
                     help="the QR Update units' rows a cycle (HlsConfig qr_rows; default 1)")
+    ap.add_argument("--units", type=int, help="n_u Update units (default: the Program's)")
     args = ap.parse_args()
     graph, program, data, result, rows, stream = measure(args.keyframes, args.window, args.scalar,
                                                     args.incremental, args.batch_every,
-                                                    args.one_step, args.qr_rows)
+                                                    args.one_step, args.qr_rows, args.units)
     mode = (f"incremental K = {args.incremental}" + (
         f", batch at {','.join(map(str, args.batch_every))}" if args.batch_every else "")
         if args.incremental else f"fixed-lag W = {args.window}")
