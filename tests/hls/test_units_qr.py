@@ -171,3 +171,43 @@ def test_qr_rows_is_checked_and_reaches_the_emitted_kernel(tmp_path):
     assert accel_plan(program, two.config).options.qr_rows == 2
     one = emit(program, tmp_path / "one", HlsConfig(scalar="float"))
     assert "FGC_QR_TWO_ROWS" not in (tmp_path / "one" / f"{one.name}.cpp").read_text()
+
+
+# heavy (a double LIO design's C simulation and a float one's counting run, about a minute on
+# 2 cores): tests/hls/test_hls_units.py keeps the unit's results and counted cycles with two rows
+# a cycle in the default run
+@pytest.mark.heavy
+def test_two_rows_a_cycle_match_the_simulator_and_count_their_price(tmp_path):
+    """qr_rows=2 (FGC_QR_TWO_ROWS) in a whole design: the C simulation of LIO (LM, double, n_u
+    3, two unit sets) equals the simulator within 1e-9, and a Gauss-Newton float run's counted
+    cycles equal the plan's per phase within 2 %."""
+    import sys
+    from pathlib import Path
+
+    from test_hls_csim import _check_against_reference
+
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.datafile import problem_data
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import sim
+    from fgc_backends.hls import HlsConfig, emit, run_csim
+
+    lio = example("lio")
+    graph = lio.build(N=6)
+    program = compile_graph(graph, SolverConfig(linear="qr", units=3), name="lio_rows")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", qr_rows=2))
+    assert "#define FGC_QR_TWO_ROWS 1" in (tmp_path / "lio_rows.cpp").read_text()
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)
+    _check_against_reference("lio_rows", program, result, reference, "double")
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
+    from bench_cycles import measure
+
+    solver = SolverConfig(method="gn", linear="qr", units=3, precision="float32")
+    phases, _ = measure("t", graph, solver, HlsConfig(scalar="float", qr_rows=2))
+    for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+    assert phases["qr"][0] > 0
