@@ -44,6 +44,8 @@ CASCADE_LANES = (1, 2)  # PlanOptions.cascade_lanes: fgc_cpe.h's STREAM_WORDS
 
 QR_UNITS = ("householder", "stream")  # PlanOptions.qr_unit: fgc_qr.h, fgc_qr_stream.h
 
+QR_ROWS = (1, 2)  # PlanOptions.qr_rows: fgc_qr.h's Update units one row a cycle, or two
+
 
 @dataclass(frozen=True)
 class PlanOptions:
@@ -53,6 +55,9 @@ class PlanOptions:
     # the QR unit set: "householder" (fgc_qr.h, one region per reflection) or "stream"
     # (fgc_qr_stream.h, n_u reflection stages the matrix streams through; units/qr_stream.py)
     qr_unit: str = "householder"
+    # the Householder unit's Update units: 1 row a cycle, or 2 (fgc_qr.h's FGC_QR_TWO_ROWS: the
+    # vector in two lanes by row parity, dot_axpy a row pair an iteration; units/qr.py)
+    qr_rows: int = 1
     allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
     # how a block type's datapath gets its share of ``allocation``: "instances" (default): the
     # heaviest type (most operations × instances) gets the limits, every other type

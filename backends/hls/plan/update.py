@@ -483,7 +483,8 @@ class UpdateModel:
                     tables, s, self.options.units, self.max_w, damping, lt))))
                 phases.append(Phase(f"qr_stack_level{s}", False, tuple(stack), linear=True))
                 loops = qr_unit_loops(self.step_pattern(first, last, c, damping), self.cdim[c],
-                                      self.options.units, self.les, name=f"s{c}")
+                                      self.options.units, self.les, name=f"s{c}",
+                                      qr_rows=self.options.qr_rows)
                 phases.append(Phase(f"qr_level{s}", True, (
                     Process(f"qr{s}_set0", "set0", tuple(loops)),), linear=True))
                 phases.append(Phase(f"qr_commit_level{s}", False, (Process(
