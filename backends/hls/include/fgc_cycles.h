@@ -44,6 +44,12 @@
 // in C simulation) match a receive with the send of the same step, at that send's time on
 // its process's own clock (record_ends), not the first process's records up to it.
 //
+// A span folded into one record (FGC_COLLAPSE_BEGIN ... FGC_COLLAPSE_END(process, instance,
+// loop)): a process of a DATAFLOW region that holds regions of its own (a unit set's qr_step as
+// a process of lin_level's region) - its records, priced as a parallel group's branch is, are
+// replaced by one record (trip 1, depth the span) of the enclosing region, which stays current,
+// so the region's rule (its fills, its waits) applies to the process as a whole.
+//
 // The HGC beside the elimination (FGC_BESIDE_PRODUCER, FGC_BESIDE_CONSUMER, FGC_BESIDE_END:
 // accel.cpp.jinja's linearize_solve, a producer writing a Gram stream beside the elimination
 // that reads it) takes the later of the producer's end (its records as span_total prices them,
@@ -169,12 +175,9 @@ inline void sequential() {
 
 inline long total_range(std::size_t from, std::size_t to);  // below: the plan's arithmetic
 
-// A span of records folded into one (FGC_COLLAPSE_BEGIN ... FGC_COLLAPSE_END): a process of a
-// DATAFLOW region that holds DATAFLOW regions of its own (a unit set's qr_step, its reflections'
-// regions, as a process of the linearisation's region: accel.cpp.jinja's lin_level). Its records
-// are priced as a parallel group's branch is (total_range) and replaced by one record of that
-// many cycles (trip 1, depth = the span) of the enclosing region, whose region stays current, so
-// that its records stay one contiguous run.
+// FGC_COLLAPSE_BEGIN ... FGC_COLLAPSE_END (see the top): the span's records priced by
+// total_range and replaced by one record of the enclosing region, whose records so stay one
+// contiguous run; the marks, keyed marks and beside records made inside it are dropped.
 
 inline std::vector<Collapse>& collapsing() { return state().collapsing; }
 
