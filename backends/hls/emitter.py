@@ -99,6 +99,10 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
         raise HlsConfigError("internal error: the stream layout is not of the emitted Program")
     context["stream"] = None if stream is None else stream.context(config.linear_cxx, config.part)
     context["leaf_lin"] = bool(context["stream"] and context["stream"]["marginal"])
+    # the on-chip window's one-step solve: level 0's unit sets reflect their steps inside the
+    # linearisation's region (lin_level), as the datapaths fill their banks
+    context["lin_qr"] = bool(context["leaf_lin"] and context.get("banks")
+                             and context["stream"]["role"] == "window")
     if context["leaf_lin"]:
         _leaf_context(context, stream.leaf_factors(), stream.leaf_gone())
         context["leaf_skip"] = stream.leaf_skip()
@@ -442,6 +446,14 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                  "step": [s for _, s in steps]}
     for b in blocks:
         b.banked = any(f in in_banks for f in b.instances)
+    if banks:
+        # the words each set takes from the datapaths (PORTS a stream word, a factor's rows
+        # [A | b] whole words) and the datapath loop (the emitted order) that sends its last
+        # ones: under the window's one-step solve the set reflects its step beside the
+        # linearisation (lin_level) once that loop has ended (units/datapath.py's sets_beside)
+        from fgc_backends.hls.units.datapath import bank_fill_words, bank_ready_loops
+        banks["fill"] = bank_fill_words(program, tables, in_banks, len(banks["step"]))
+        banks["wait"] = bank_ready_loops(program, in_banks, len(banks["step"]))
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
