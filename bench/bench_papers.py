@@ -68,6 +68,9 @@ class Config:
     storage_ns: tuple[int, int] = (20, 80)
     units: tuple[int, ...] = (1, 4, 8, 16, 32)
     unit_sets: tuple[int, ...] = (1, 2)
+    # the batch searches' QR Update units' rows a cycle (HlsConfig.qr_rows; (1, 2) doubles
+    # their QR candidates)
+    qr_rows: tuple[int, ...] = (1,)
     alloc_scales: tuple[int, ...] = (1, 2)
     # Cholesky designs of LIO in the search (15: a two-ended LIO step's pivots, the longest cascade
     # a step fills)
@@ -96,8 +99,11 @@ class Config:
     isam_repeats: int = 3
     # the on-chip stream design's search (paper_a_stream): n_u, unit sets, the factor datapaths'
     # ALLOCATION limits (None: the default design's; smaller limits: fewer operators)
-    stream_units: tuple[int, ...] = (1, 2, 4, 8)
+    stream_units: tuple[int, ...] = (1, 2, 3, 4, 8)
     stream_unit_sets: tuple[int, ...] = (1, 2)
+    # the QR Update units' rows a cycle (HlsConfig.qr_rows: 1, or 2 for 10 more DSP a unit in
+    # float32: n_u 3, two rows beside n_u 4, one)
+    stream_qr_rows: tuple[int, ...] = (1, 2)
     stream_allocations: tuple = (None, (("add", 8), ("mul", 12), ("div", 2)),
                                  (("add", 4), ("mul", 6), ("div", 1)),
                                  (("add", 2), ("mul", 3), ("div", 1)),
@@ -112,7 +118,7 @@ class Config:
 SMALL = Config(lio_n=5, imu_n=5, storage_ns=(4, 6), units=(1, 8), alloc_scales=(1,),
                lio_cpes=(5,), cpes=(5, 20), c123=(20,), gtsam_iterations=2, gtsam_repeats=1,
                reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(None,),
-               stream_units=(1, 4),
+               stream_units=(1, 4), stream_qr_rows=(1,),
                stream_allocations=(None, (("add", 1), ("mul", 1), ("div", 1))), stream_reads=1,
                design_run=False)
 
@@ -141,7 +147,8 @@ def search_space(cfg: Config, linears=("qr", "cholesky")) -> Space:
     return Space(linears=linears, units=cfg.units, unit_sets=cfg.unit_sets,
                  cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes, cascades=cfg.cascades,
                  lanes=cfg.lanes, alloc_scales=cfg.alloc_scales,
-                 backsub_lanes=cfg.backsub_lanes)
+                 backsub_lanes=cfg.backsub_lanes,
+                 extra=(("qr_rows", cfg.qr_rows),) if tuple(cfg.qr_rows) != (1,) else ())
 
 
 def best_design(programs: dict, cfg: Config, linears=("qr", "cholesky")):
@@ -310,6 +317,7 @@ class StreamDesign:
     held: dict = dataclasses.field(default_factory=dict)  # WindowUpdateModel.duplicated()
     default: bool = False  # the default design (n_u the Program's, default unit sets, ALLOCATION)
     part: str = ""  # the FPGA part it is priced on
+    qr_rows: int = 1  # the QR Update units' rows a cycle (HlsConfig.qr_rows)
 
     @property
     def one_set_dsp(self) -> int:
@@ -326,7 +334,8 @@ class StreamDesign:
         alloc = ("default ALLOCATION" if self.allocation is None else "ALLOCATION "
                  + ",".join(f"{k}={v}" for k, v in self.allocation))
         sets = "default unit sets" if self.unit_sets is None else f"{self.unit_sets} unit set(s)"
-        return f"n_u={self.units}, {sets}, {alloc}"
+        rows = f", {self.qr_rows} rows a cycle" if self.qr_rows > 1 else ""
+        return f"n_u={self.units}, {sets}, {alloc}{rows}"
 
     @property
     def median_ms(self) -> float:
@@ -399,15 +408,15 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         solver = dataclasses.replace(base, units=units)
         sp = streaming.stream_program(graph, streaming.compile_stream(
             graph, solver, incremental=k, batch_every=batch))
-        grid = [(sets, alloc) for sets in cfg.stream_unit_sets
-                for alloc in cfg.stream_allocations]
+        grid = [(sets, alloc, rows) for rows in cfg.stream_qr_rows
+                for sets in cfg.stream_unit_sets for alloc in cfg.stream_allocations]
         if units == default_units:
-            grid.insert(0, (None, None))
-        for sets, alloc in grid:
+            grid.insert(0, (None, None, 1))
+        for sets, alloc, rows in grid:
             if (units == default_units and alloc is None and sets is not None
-                    and sets == default_sets):
+                    and sets == default_sets and rows == 1):
                 continue  # the default design's own options: priced above
-            config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc)
+            config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc, qr_rows=rows)
             try:
                 pricer = streaming.WindowPricer(sp, config=config)
             except FgcError as exc:  # a unit-set count the window's levels cannot take
@@ -416,13 +425,13 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
             res = pricer.model.resources()
             device = pricer.model.plan.target.device
             lat = np.array([pricer.price(u).latency_ms for u in updates])
-            default = units == default_units and sets is None and alloc is None
+            default = units == default_units and sets is None and alloc is None and rows == 1
             if default:
                 default_sets = max(1, unit_sets(pricer.model.plan))
             out.append(StreamDesign(units, sets, alloc, res["dsp"], res["bram36"],
                                     res["parts"], lat, (device.dsp, device.bram36),
                                     held=pricer.model.duplicated(), default=default,
-                                    part=res["part"]))
+                                    part=res["part"], qr_rows=rows))
     out.sort(key=lambda d: (d.median_ms, d.p99_ms, d.dsp))
     fitting = [d for d in out if d.fits_plan]
     to_read = fitting[:cfg.stream_reads] if fitting else [min(out, key=lambda d: d.dsp)]
@@ -432,7 +441,8 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         with tempfile.TemporaryDirectory() as tmp:
             got = measure_stream(cfg.lio_n, Path(tmp) / "stream",
                                  HlsConfig(scalar="float", unit_sets=d.unit_sets,
-                                           allocation=d.allocation), d.units, batch,
+                                           allocation=d.allocation, qr_rows=d.qr_rows),
+                                 d.units, batch,
                                  solver=base)
         d.reader_dsp = got["reader_dsp"]
         d.reader_parts = tuple(got["parts"])
@@ -500,7 +510,7 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                       for name, (d, b) in default.parts.items())
     searched = (f"the search ({len(designs)} designs: n_u {cfg.stream_units}, unit sets "
                 f"{cfg.stream_unit_sets}, {len(cfg.stream_allocations)} ALLOCATION limits of "
-                "the factor datapaths, and the default): "
+                f"the factor datapaths, QR rows a cycle {cfg.stream_qr_rows}, and the default): "
                 + (f"fastest that fits: {best.line()}; ISAM2 / design median {best_ratio:.2f}×"
                    if fit else
                    f"NONE fits the {default.part}; the smallest: {best.line()}, DSP = max(plan, "

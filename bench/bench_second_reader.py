@@ -161,9 +161,10 @@ def main(argv=None) -> int:
     parser.add_argument("--lm", action="store_true",
                         help="the stream's solver LM to convergence (its batch kernel) instead "
                              "of paper A's one-step policy (batch steps as sweeps)")
-    parser.add_argument("--stream-design", metavar="N_U,SETS[,ADD,MUL,DIV]", action="append",
-                        default=[], help="one more stream design (repeatable): n_u, unit sets "
-                        "and the factor datapaths' ALLOCATION limits (e.g. 8,1,2,3,1)")
+    parser.add_argument("--stream-design", metavar="N_U,SETS[,ADD,MUL,DIV[,ROWS]]",
+                        action="append", default=[], help="one more stream design (repeatable): "
+                        "n_u, unit sets, the factor datapaths' ALLOCATION limits and the QR "
+                        "Update units' rows a cycle (e.g. 8,1,2,3,1 or 4,2,2,3,1,2)")
     args = parser.parse_args(argv)
     lio_n, imu_n = (8, 10) if args.quick else (30, 50)
     units = (1, 4) if args.quick else (1, 4, 8, 32)
@@ -194,10 +195,13 @@ def main(argv=None) -> int:
                 v = [int(x) for x in spec.split(",")]
                 alloc = tuple(zip(("add", "mul", "div"), v[2:5], strict=True)) if len(v) > 2 \
                     else None
+                qr_rows = v[5] if len(v) > 5 else 1
                 label = (f"n_u {v[0]}, {v[1]} unit set(s), ALLOCATION "
-                         + ("/".join(map(str, v[2:5])) if alloc else "default"))
+                         + ("/".join(map(str, v[2:5])) if alloc else "default")
+                         + (f", {qr_rows} rows a cycle" if qr_rows > 1 else ""))
                 streams.append((label, measure_stream(
-                    lio_n, Path(tmp) / f"design{i}", HlsConfig(unit_sets=v[1], allocation=alloc),
+                    lio_n, Path(tmp) / f"design{i}", HlsConfig(unit_sets=v[1], allocation=alloc,
+                                                              qr_rows=qr_rows),
                     v[0], solver=solver)))
         lio = example("lio")
         for n_u in units:

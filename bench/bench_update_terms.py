@@ -7,6 +7,7 @@ printed, then the median and p99 per update.
     python bench/bench_update_terms.py                      # n_u 4, two unit sets, ALLOCATION 2/3/1
     python bench/bench_update_terms.py --units 4 --sets 2 --allocation add=2,mul=3,div=1 \\
         --keyframes 5,14,25 --top 25
+    python bench/bench_update_terms.py --qr-rows 2        # the Update units two rows a cycle
 """
 from __future__ import annotations
 
@@ -46,6 +47,8 @@ def main(argv=None) -> None:
                     help="factor datapaths' ALLOCATION, or 'default' (default add=2,mul=3,div=1)")
     ap.add_argument("--keyframes", default="5,14,25", help="keyframes whose terms are printed")
     ap.add_argument("--top", type=int, default=25, help="terms printed per keyframe")
+    ap.add_argument("--qr-rows", type=int, choices=(1, 2), default=1,
+                    help="rows a cycle through each QR Update unit (HlsConfig qr_rows; default 1)")
     args = ap.parse_args(argv)
     shown = {int(k) for k in args.keyframes.split(",") if k.strip()}
     cfg = b.Config()
@@ -57,9 +60,11 @@ def main(argv=None) -> None:
     updates = []
     streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
     pricer = streaming.WindowPricer(sp, config=HlsConfig(
-        scalar="float", unit_sets=args.sets, allocation=_allocation(args.allocation)))
+        scalar="float", unit_sets=args.sets, allocation=_allocation(args.allocation),
+        qr_rows=args.qr_rows))
     res = pricer.model.resources()
-    print(f"n_u {args.units}, {args.sets} unit set(s), ALLOCATION {args.allocation}: "
+    print(f"n_u {args.units}, {args.sets} unit set(s), {args.qr_rows} row(s) a cycle, "
+          f"ALLOCATION {args.allocation}: "
           f"{res['dsp']:,} DSP / {res['bram36']:g} BRAM36 by the plan (model estimates)")
     latency = []
     for u in updates:

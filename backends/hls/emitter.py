@@ -99,6 +99,10 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
         raise HlsConfigError("internal error: the stream layout is not of the emitted Program")
     context["stream"] = None if stream is None else stream.context(config.linear_cxx, config.part)
     context["leaf_lin"] = bool(context["stream"] and context["stream"]["marginal"])
+    # the on-chip window's one-step solve: level 0's unit sets reflect their steps inside the
+    # linearisation's region (lin_level), as the datapaths fill their banks
+    context["lin_qr"] = bool(context["leaf_lin"] and context.get("banks")
+                             and context["stream"]["role"] == "window")
     if context["leaf_lin"]:
         _leaf_context(context, stream.leaf_factors(), stream.leaf_gone())
         context["leaf_skip"] = stream.leaf_skip()
@@ -442,10 +446,20 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                  "step": [s for _, s in steps]}
     for b in blocks:
         b.banked = any(f in in_banks for f in b.instances)
+    if banks:
+        # the words each set takes from the datapaths (PORTS a stream word, a factor's rows
+        # [A | b] whole words) and the datapath loop (the emitted order) that sends its last
+        # ones: under the window's one-step solve the set reflects its step beside the
+        # linearisation (lin_level) once that loop has ended (units/datapath.py's sets_beside)
+        from fgc_backends.hls.units.datapath import bank_fill_words, bank_ready_loops
+        banks["fill"] = bank_fill_words(program, tables, in_banks, len(banks["step"]))
+        banks["wait"] = bank_ready_loops(program, in_banks, len(banks["step"]))
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
-    option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}" + (
+    option = f"n_u={units}, {sets} unit set(s)" + (
+        f", {plan.options.qr_rows} rows a cycle" if plan.options.qr_rows > 1 else "") \
+        if sets else f"cpe={plan.options.cpe}" + (
         ", 2 cascades" if any(u.name == "cpe_set1" for u in plan.units) else "") + (
         f", {plan.options.cascade_lanes} lanes" if plan.options.cascade_lanes > 1 else "")
     network = [f"{len(procs)} processes, {len(streams)} streams ({option})"]
@@ -471,6 +485,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "retire_test": retire_step_test(program, plan.options),
             "small": shared, "banks": banks,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
+            "qr_rows": plan.options.qr_rows,  # fgc_qr.h's FGC_QR_TWO_ROWS (2)
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
             "bs_slots": _backsub_slots(program),
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
@@ -571,10 +586,8 @@ def _trial_var_end(program: Program, plan):
     loops is the plan's)."""
     from fgc_backends.hls.plan.assemble import PlanBuild
     from fgc_backends.hls.units.datapath import trial_var_end
-    les_precision = plan.options.les_precision or (
-        program.solver.les_precision if plan.options.precision is None else plan.precision)
     return trial_var_end(PlanBuild(program, plan.options, plan.ops,
-                                   plan.target.ops(les_precision)))
+                                   plan.target.ops(plan.options.precisions(program)[1])))
 
 
 def _trial_context(program: Program, contexts, blocks, phase: dict,

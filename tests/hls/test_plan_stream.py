@@ -358,3 +358,95 @@ def test_the_cost_at_x_comes_from_the_first_linearisation(paper_a_n7):
     assert model.cost_x == 0 and model.batch["cost_x"] == 0
     assert "cost_x" not in {t.name for t in model.price(5, 2).terms}
     assert "batch_cost_x" not in {t.name for t in model.price(4, 2).terms}
+
+
+COLLAPSE = r"""
+#include <cstdio>
+#include "fgc_cycles.h"
+int main() {
+    FGC_REGION("outer");  // two processes: a's loop (100), b's fill waits on it, then a span
+    FGC_CYCLES("a", 0, "feed", 100, 1, 1);
+    FGC_WAIT("b", 0, "a", 0, "feed");
+    FGC_CYCLES("b", 0, "fill", 10, 1, 2);
+    FGC_COLLAPSE_BEGIN();  // b's step: a region of its own (50), a mark, sequential code (30)
+    FGC_REGION("inner");
+    FGC_CYCLES("s", 0, "l", 50, 1, 1);
+    FGC_SEQUENTIAL();
+    FGC_BRANCH();
+    FGC_CYCLES("t", 0, "l", 30, 1, 1);
+    FGC_COLLAPSE_END("b", 0, "step");  // the outer region current again
+    FGC_CYCLES("c", 0, "beside", 20, 1, 1);  // a third process of the outer region
+    FGC_SEQUENTIAL();
+    FGC_CYCLES("z", 0, "after", 5, 1, 1);
+#ifdef FGC_COUNT_CYCLES
+    // b: its fill no sooner than 2 after a's loop (102), then its step's 80: 182 (the slowest
+    // process plus the others' fills, 100 + 2 + 1, is less), then 5
+    std::printf("%ld %zu\n", fgc_cycles::total(), fgc_cycles::log().size());
+#endif
+    return 0;
+}
+"""
+
+
+def test_a_collapsed_span_is_one_record_of_its_region(tmp_path):
+    """fgc_cycles.h's FGC_COLLAPSE_BEGIN / FGC_COLLAPSE_END (a unit set's step, whose
+    reflections are regions of their own, as a process of lin_level's region): the span's
+    records, priced as a branch is, become one record of the enclosing region, which stays
+    current; its marks are dropped; the region's rule (the waits) applies to it."""
+    import shutil
+    import subprocess
+    from pathlib import Path
+
+    if shutil.which("g++") is None:
+        pytest.skip("needs g++")
+    include = Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
+    src = tmp_path / "collapse.cpp"
+    src.write_text(COLLAPSE)
+    exe = tmp_path / "collapse"
+    flags = ["g++", "-std=c++17", "-Wall", "-Werror", "-Wno-unknown-pragmas", "-I", str(include)]
+    subprocess.run([*flags, "-DFGC_COUNT_CYCLES", str(src), "-o", str(exe)], check=True)
+    out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
+    # a, the wait, b's fill, b's step (one record), c, z
+    assert out.split() == [str(102 + 80 + 5), "6"]
+    subprocess.run([*flags, "-fsyntax-only", str(src)], check=True)
+
+
+def test_one_step_level0_runs_beside_the_linearisation():
+    """The one-step window (rows straight into the banks): level 0's first steps are reflected
+    in the linearisation's region (lin_level), each set from when its rows are in; the term is
+    that region less the linearisation and level 0, and an update that stops before its solve
+    pays the sets' steps instead. LM to convergence (its retries stack from AB) has no such
+    sets."""
+    from fgc.app.streaming import one_step_solver
+    from fgc_backends.hls.plan.loops import kernel_timing
+    from fgc_backends.hls.plan.stream import qr_step_processes
+    from fgc_backends.hls.units.datapath import lin_level_cycles
+
+    graph = example("lio").build(N=7)
+    program = compile_stream(graph, one_step_solver(), incremental=3, batch_every=(4,),
+                             name="lio_k1")
+    model = WindowUpdateModel(layout_of(stream_program(graph, program, None), sweep=False),
+                              HlsConfig(scalar="float"))
+    t = model.layout.template
+    assert [s for s, _, _ in model._lin_sets] == list(t.schedule.levels[0][:model.sets])
+    zero, unit = model.zero_factors(5), model.layout.unit_factors(5)
+    lin = next(ph for ph in model.plan.phases if ph.name == "factor_jacobian")
+    level = next(ph for ph in qr_solve_phases(t, zero, True, model.sets, model.les, unit=unit)
+                 if ph.name == "qr_level0_0")
+    procs = qr_step_processes(t, zero, True, model.les, unit=unit)
+    region = lin_level_cycles(t, kernel_timing(model.plan.ops),
+                              [p for p in lin.processes if p.name != "gradient"],
+                              [(w, f, procs[s].cycles) for s, w, f in model._lin_sets])
+    # no set starts before its last datapath loop, so the region is longer than either alone
+    assert region > max(phase_cycles(lin), phase_cycles(level))
+    saved = model.beside_linearize(zero, unit)
+    assert saved == region - phase_cycles(lin) - phase_cycles(level) < 0
+    price = model.price(5, 1, status="max_iterations")
+    assert price.term("qr_beside_linearize").cycles == saved
+    stopped = model.price(5, 1, {"call": 1, "linearize": 1}, status="failed")
+    assert stopped.term("qr_beside_linearize").cycles == region - phase_cycles(lin) > 0
+    lm = compile_stream(graph, incremental=3, batch_every=(4,), name="lio_k")
+    lm_model = WindowUpdateModel(layout_of(stream_program(graph, lm, None)),
+                                 HlsConfig(scalar="float"))
+    assert lm_model._lin_sets is None
+    assert "qr_beside_linearize" not in {t.name for t in lm_model.price(5, 3).terms}

@@ -44,6 +44,12 @@
 // in C simulation) match a receive with the send of the same step, at that send's time on
 // its process's own clock (record_ends), not the first process's records up to it.
 //
+// A span folded into one record (FGC_COLLAPSE_BEGIN ... FGC_COLLAPSE_END(process, instance,
+// loop)): a process of a DATAFLOW region that holds regions of its own (a unit set's qr_step as
+// a process of lin_level's region) - its records, priced as a parallel group's branch is, are
+// replaced by one record (trip 1, depth the span) of the enclosing region, which stays current,
+// so the region's rule (its fills, its waits) applies to the process as a whole.
+//
 // The HGC beside the elimination (FGC_BESIDE_PRODUCER, FGC_BESIDE_CONSUMER, FGC_BESIDE_END:
 // accel.cpp.jinja's linearize_solve, a producer writing a Gram stream beside the elimination
 // that reads it) takes the later of the producer's end (its records as span_total prices them,
@@ -83,6 +89,12 @@ struct Record {
     long cycles() const { return trip > 0 ? (trip - 1) * ii + depth : 0; }
 };
 
+struct Collapse {
+    std::size_t records, marks, beside, gates, ready;
+    long region;
+    std::string region_name;
+};
+
 struct State {
     std::vector<Record> records;
     // parallel groups (FGC_BRANCH / FGC_JOIN): (record index, 'b' a branch starts, 'j' the
@@ -101,6 +113,7 @@ struct State {
     std::vector<std::pair<std::size_t, long> > ready;
     // keyed outer marks (FGC_OUTER_SEND_STEP / FGC_OUTER_RECEIVE_STEP): mark index -> step
     std::map<std::size_t, long> keys;
+    std::vector<Collapse> collapsing;  // the open FGC_COLLAPSE_BEGIN spans
 };
 
 inline State& state() {
@@ -158,6 +171,40 @@ inline void ready_chain(long n, long jac_ii, long jac_depth, long rows, long ste
 inline void sequential() {
     state().current = -1;
     state().current_name.clear();
+}
+
+inline long total_range(std::size_t from, std::size_t to);  // below: the plan's arithmetic
+
+// FGC_COLLAPSE_BEGIN ... FGC_COLLAPSE_END (see the top): the span's records priced by
+// total_range and replaced by one record of the enclosing region, whose records so stay one
+// contiguous run; the marks, keyed marks and beside records made inside it are dropped.
+
+inline std::vector<Collapse>& collapsing() { return state().collapsing; }
+
+inline void collapse_begin() {
+    State& s = state();
+    collapsing().push_back(Collapse{s.records.size(), s.marks.size(), s.beside.size(),
+                                    s.gates.size(), s.ready.size(), s.current, s.current_name});
+}
+
+inline void collapse_end(const char* process, int instance, const char* loop) {
+    State& s = state();
+    const Collapse c = collapsing().back();
+    collapsing().pop_back();
+    const long span = total_range(c.records, s.records.size());
+    s.records.resize(c.records);
+    s.marks.resize(c.marks);
+    for (auto k = s.keys.begin(); k != s.keys.end();) {
+        if (k->first >= c.marks) k = s.keys.erase(k);
+        else ++k;
+    }
+    s.beside.resize(c.beside);
+    s.gates.resize(c.gates);
+    s.ready.resize(c.ready);
+    s.current = c.region;
+    s.current_name = c.region_name;
+    s.records.push_back(Record{s.current, s.current_name, s.phase, process, instance, loop, 1, 1,
+                               span, "", "", 0, 0});
 }
 
 inline void add(const char* process, int instance, const char* loop, long trip, long ii,
@@ -570,6 +617,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_WAIT_AFTER(process, instance, on_process, on_instance, on_loop, after) \
     ::fgc_cycles::wait(process, instance, on_process, on_instance, on_loop, after)
 #define FGC_DRAINED(streams, n) ::fgc_cycles::drained(streams, n, #streams)
+#define FGC_COLLAPSE_BEGIN() ::fgc_cycles::collapse_begin()
+#define FGC_COLLAPSE_END(process, instance, loop) ::fgc_cycles::collapse_end(process, instance, loop)
 #define FGC_OUTER_BRANCH() ::fgc_cycles::mark('B')
 #define FGC_OUTER_SEND() ::fgc_cycles::mark('S')
 #define FGC_OUTER_RECEIVE() ::fgc_cycles::mark('R')
@@ -599,6 +648,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_WAIT(process, instance, on_process, on_instance, on_loop) ((void)0)
 #define FGC_WAIT_AFTER(process, instance, on_process, on_instance, on_loop, after) ((void)0)
 #define FGC_DRAINED(streams, n) ((void)0)
+#define FGC_COLLAPSE_BEGIN() ((void)0)
+#define FGC_COLLAPSE_END(process, instance, loop) ((void)0)
 #define FGC_OUTER_BRANCH() ((void)0)
 #define FGC_OUTER_SEND() ((void)0)
 #define FGC_OUTER_RECEIVE() ((void)0)

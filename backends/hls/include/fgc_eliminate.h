@@ -652,6 +652,9 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
 // factors) are neither stacked nor reflected, the unit takes CFG::LEAF_LIVE_ROWS rows.
 template <class CFG, class SETS>
 bool qr_eliminate_all(typename CFG::T mu, int leaf = -1, bool live = false) {
+    // INLINE: its SETS hooks' calls are the kernel's eliminate_all's (the one-step window's
+    // lin_level is called there too: its ALLOCATION makes the two one instance)
+#pragma HLS INLINE
     typedef typename CFG::T T;
     const bool one = leaf >= 0;
     const bool gone = one && live;  // the leaf step's rows without the gone factors'

@@ -220,7 +220,7 @@ def _stream_phase(name: str, *loops: Loop) -> Phase:
 
 def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
                     unit: frozenset = frozenset(),
-                    drop: frozenset = frozenset()) -> tuple[Phase, ...]:
+                    drop: frozenset = frozenset(), qr_rows: int = 1) -> tuple[Phase, ...]:
     """The QR unit sets' DATAFLOW regions of one linear solve of template ``t`` (every level's,
     the plan's assignment of a level's steps to ``sets`` unit sets) with the rows of the
     ``zero`` template factors and, unless ``damped``, the √μ rows zero: the Evaluate unit skips
@@ -228,7 +228,24 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
     template factors (priors holding a slot under R = I at its linearisation point: their
     whitened rows are the identity) have one non-zero a row, on their own tangent direction.
     ``leaf``: that step alone on unit set 0, without the rows of the ``drop`` factor instances
-    (not stacked: qr_eliminate_all's live leaf step)."""
+    (not stacked: qr_eliminate_all's live leaf step). ``qr_rows``: the Update units' rows a
+    cycle (PlanOptions.qr_rows)."""
+    procs = qr_step_processes(t, zero, damped, les, leaf, unit, drop, qr_rows)
+    if leaf is not None:
+        return (Phase("qr_leaf", True, (procs[leaf],), linear=True),)
+    phases = []
+    for li, level in enumerate(t.schedule.levels):
+        for c in range(0, len(level), sets):
+            chunk = _assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
+            phases.append(Phase(f"qr_level{li}_{c}", True, chunk, linear=True))
+    return tuple(phases)
+
+
+def qr_step_processes(t, zero: frozenset, damped: bool, les, leaf=None,
+                      unit: frozenset = frozenset(),
+                      drop: frozenset = frozenset(), qr_rows: int = 1) -> dict[int, Process]:
+    """Per step of template ``t`` its Householder unit set's process (:func:`qr_solve_phases`'s
+    steps; ``leaf``: that step's alone)."""
     lm = t.solver.method == "lm"
     units = max(1, t.solver.units)
     procs, passed = {}, {}
@@ -267,15 +284,8 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
         if dropped:
             pattern = np.delete(pattern, dropped, axis=0)
         procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
-            pattern, st.frontal_dim, units, les, name=f"s{st.index}")))
-    if leaf is not None:
-        return (Phase("qr_leaf", True, (procs[leaf],), linear=True),)
-    phases = []
-    for li, level in enumerate(t.schedule.levels):
-        for c in range(0, len(level), sets):
-            chunk = _assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
-            phases.append(Phase(f"qr_level{li}_{c}", True, chunk, linear=True))
-    return tuple(phases)
+            pattern, st.frontal_dim, units, les, name=f"s{st.index}", qr_rows=qr_rows)))
+    return procs
 
 
 def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
@@ -302,8 +312,8 @@ def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf
                     unit: frozenset = frozenset(), drop: frozenset = frozenset()) -> int:
     """``plan_cost`` of ``plan`` (a design holding the QR unit sets) running
     :func:`qr_solve_phases` as its iteration."""
-    return plan_cost(replace(plan, phases=qr_solve_phases(t, zero, damped, sets, les, leaf,
-                                                          unit, drop))).cycles
+    return plan_cost(replace(plan, phases=qr_solve_phases(
+        t, zero, damped, sets, les, leaf, unit, drop, plan.options.qr_rows))).cycles
 
 
 def _relinearize(ev: dict) -> int:
@@ -355,6 +365,8 @@ class WindowUpdateModel:
             raise PlanError("internal error: the stream model's QR steps are not the plan's")
         ctx = layout.context(config.linear_cxx, config.part)
         self.layout_marginal = ctx["marginal"]
+        self._lin_sets = self._lin_level_sets() if self.layout_marginal else None
+        self._beside = {}
         # the one-step policy (SolverConfig.one_step): the step taken, the store is the
         # update's own factorisation (fgc_stream.h's took_step)
         self.one_step = t.solver.one_step
@@ -367,6 +379,56 @@ class WindowUpdateModel:
                                      layout.matvec_ii(config.linear_cxx, config.part))
         self._design = replace(self._merged(), phases=self.plan.phases + phases)
         self.stream = dict(plan_cost(self._design).other_cycles)
+
+    def _lin_level_sets(self):
+        """The unit sets that reflect level 0's first steps beside the one-step linearisation
+        (accel.cpp.jinja's lin_level: the window's design with the rows straight into the
+        banks, units/qr.py's ``rows_in_banks``): per set (its step, the datapath loop it waits
+        on, its fill loop), or None when the design has no such sets."""
+        from fgc_backends.hls.units.datapath import bank_fill_words, bank_ready_loops
+        from fgc_backends.hls.units.qr import rows_in_banks
+
+        t = self.layout.template
+        tables = _tables(t)
+        in_banks = rows_in_banks(t, self.plan.options, tables)
+        if not in_banks:
+            return None
+        steps = sorted({(u, s) for u, s, _ in in_banks.values()})
+        fills = bank_fill_words(t, tables, in_banks, len(steps))
+        waits = bank_ready_loops(t, in_banks, len(steps))
+        move = kernel_timing(self.les)
+        return [(s, waits[u], kernel_loop("fill", fills[u], "move", move))
+                for u, s in steps]
+
+    def beside_linearize(self, zero: frozenset, unit: frozenset = frozenset(),
+                         solved: bool = True) -> int:
+        """The cycles the one-step update's linearisation and level 0's first steps save run
+        as one region (lin_level) rather than one after the other: the region
+        (:func:`~fgc_backends.hls.units.datapath.lin_level_cycles`) less the linearisation
+        (factor_jacobian) and that level's region (its first ``sets`` steps, on the rows
+        non-zero in this update: ``zero``, ``unit`` as :meth:`qr_cycles`). Not ``solved`` (the
+        update stopped after its linearisation: no solve, no qr term): what the sets' steps
+        add to the linearisation's region, ≥ 0. 0 when the design has no such sets."""
+        from fgc_backends.hls.units.datapath import lin_level_cycles
+
+        if not self._lin_sets:
+            return 0
+        key = (zero, unit)
+        if key not in self._beside:
+            t = self.layout.template
+            rows = self.plan.options.qr_rows
+            procs = qr_step_processes(t, zero, True, self.les, unit=unit, qr_rows=rows)
+            level = next(ph for ph in qr_solve_phases(t, zero, True, self.sets, self.les,
+                                                      unit=unit, qr_rows=rows)
+                         if ph.name == "qr_level0_0")
+            lin = next(ph for ph in self.plan.phases if ph.name == "factor_jacobian")
+            jac = [p for p in lin.processes if p.name != "gradient"]
+            region = lin_level_cycles(t, kernel_timing(self.plan.ops), jac,
+                                      [(wait, fill, procs[s].cycles)
+                                       for s, wait, fill in self._lin_sets])
+            self._beside[key] = (region - phase_cycles(lin), phase_cycles(level))
+        added, level = self._beside[key]
+        return added - level if solved else added
 
     def _stream_phases(self, kt: dict, lt: dict, mv_ii: int) -> tuple[Phase, ...]:
         """The stream section's loops (accel.cpp.jinja's stream top), one phase per part an
@@ -1020,6 +1082,16 @@ class WindowUpdateModel:
                                    f"the window's {g} phase, once per {trigger}" + (
                                        " (on its rows non-zero in this update)" if g == "qr"
                                        else "")))
+        if self._lin_sets and ev.get("linearize", 0):
+            # LM's one linearisation with level 0's first steps beside it (lin_level): the
+            # solve's level 0 region is that region's sets, the stack took their results; an
+            # update that stops before its solve still waits for the sets
+            solved = ev.get("solve", 0) > 0
+            window.append(Term("qr_beside_linearize",
+                               self.beside_linearize(zero, unit, solved), 1, False,
+                               "level 0's unit sets reflect their steps beside the "
+                               "linearisation (one region), each from when its rows are in"
+                               + ("" if solved else "; no solve took them")))
         if ev.get("cost", 0) and self.cost_x:
             window.append(Term("cost_x", self.cost_x, ev["cost"], False,
                                "the cost pass at X before LM's first linearisation"))

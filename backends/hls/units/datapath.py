@@ -82,6 +82,20 @@ def linearize_region(program, timing: dict, jac: list[Process],
     no less than where either process's clock ends. Priced as the phase factor_jacobian: the
     datapaths, then one loop ``beside_datapaths`` of what the gradient adds after them
     (0 when it keeps up). ``counts``: instances per block type (default: all)."""
+    c = _linearize_clocks(program, timing, jac, counts)
+    e_sum, g_sum, g_clock, zero = c["e_sum"], c["g_sum"], c["g_clock"], c["zero"]
+    # the slower process (the datapaths' on a tie: their records come first) plus the other's fill
+    region = g_sum + c["e_fill"] if g_sum > e_sum else e_sum + (zero.depth if zero.trip > 0 else 0)
+    region = max(region, e_sum, g_clock)
+    return Phase("factor_jacobian", False, tuple(jac) + (Process(
+        "gradient", "gradient", (Loop("beside_datapaths", 1, 1, region - e_sum),)),))
+
+
+def _linearize_clocks(program, timing: dict, jac: list[Process],
+                      counts: dict[int, int] | None) -> dict:
+    """The clocks of :func:`linearize_region`'s two processes: where each datapath loop ends
+    (``e_ends``, by name), the datapaths' sum and first depth, the gradient's clock and sum, its
+    zeroing loop."""
     small = small_blocks(program)
     if counts is None:
         counts = {i: sum(1 for f in program.factors if f.block == i)
@@ -112,13 +126,65 @@ def linearize_region(program, timing: dict, jac: list[Process],
                 done = max(done, end + rows.depth)
             g_clock = done + scatter.cycles
             g_sum += columns.cycles + rows.cycles + scatter.cycles
-    e_sum = e_clock
-    e_fill = next((lp.depth for p in jac for lp in p.loops if lp.trip > 0), 0)
-    # the slower process (the datapaths' on a tie: their records come first) plus the other's fill
-    region = g_sum + e_fill if g_sum > e_sum else e_sum + (zero.depth if zero.trip > 0 else 0)
-    region = max(region, e_sum, g_clock)
-    return Phase("factor_jacobian", False, tuple(jac) + (Process(
-        "gradient", "gradient", (Loop("beside_datapaths", 1, 1, region - e_sum),)),))
+    return {"e_ends": {p.name: end for p, end in zip(jac, e_ends, strict=True)},
+            "e_sum": e_clock,
+            "e_fill": next((lp.depth for p in jac for lp in p.loops if lp.trip > 0), 0),
+            "g_clock": g_clock, "g_sum": g_sum, "zero": zero}
+
+
+def lin_level_cycles(program, timing: dict, jac: list[Process],
+                     sets: list[tuple[str, Loop, int]]) -> int:
+    """The window's one-step linearisation with level 0's unit sets beside it (accel.cpp.jinja's
+    lin_level, one DATAFLOW region): :func:`linearize_region`'s two processes and one per unit
+    set, ``sets``: (the datapath loop after which its step's rows are all sent,
+    :func:`bank_ready_loops`; its fill loop, the words from its stream into its banks at a word
+    a cycle; its step's cycles, the plan's QR process of that step). A set's fill ends no
+    earlier than its depth after that datapath loop ends (the stream's last word comes then),
+    its step follows. The region takes what fgc_cycles.h's region rule gives: the slowest
+    process plus the others' fills (each's first loop's depth), and no less than where any
+    process's clock ends."""
+    c = _linearize_clocks(program, timing, jac, None)
+    zero = c["zero"]
+    totals = [c["e_sum"], c["g_sum"]] + [fill.cycles + step for _, fill, step in sets]
+    firsts = [c["e_fill"], zero.depth if zero.trip > 0 else 0] + [fill.depth for _, fill, _ in sets]
+    slowest = max(range(len(totals)), key=lambda k: (totals[k], -k))
+    region = totals[slowest] + sum(f for k, f in enumerate(firsts) if k != slowest)
+    ends = [c["e_sum"], c["g_clock"]] + [
+        max(fill.cycles, c["e_ends"][wait] + fill.depth) + step for wait, fill, step in sets]
+    return max(region, *ends)
+
+
+def datapath_loop_names(program) -> list[str]:
+    """The datapath loops of ``linearize_rows`` / ``lin_level`` in the emitted order (evaluate_all):
+    a block type's own ``factor_<b>_jacobian``, the small block types' one
+    ``factor_small_jacobian`` where the first of them stands."""
+    small = small_blocks(program)
+    return [f"factor_{i}_jacobian" if i not in small else "factor_small_jacobian"
+            for i in range(len(program.blocks)) if i not in small or i == small[0]]
+
+
+def bank_fill_words(program, tables: dict, in_banks: dict, sets: int) -> list[int]:
+    """Per unit set, the stream words of its step's factor rows the datapaths send it (each
+    instance's m × (d + 1) words of [A | b], :data:`PORTS` a word: accel.cpp.jinja's BankWord),
+    the trip of its fill loop in lin_level (units/qr.py's ``rows_in_banks``: ``in_banks``)."""
+    a = tables["FACTOR_A_OFF"]
+    return [sum(_ported(a[f + 1] - a[f]) for f, (u, _, _) in in_banks.items() if u == s)
+            for s in range(sets)]
+
+
+def bank_ready_loops(program, in_banks: dict, sets: int) -> list[str]:
+    """Per unit set, the datapath loop (emitted order, :func:`datapath_loop_names`) after which
+    the datapaths have sent every row of its step: the last that evaluates one of its factors
+    (the small datapath's loop as a whole: conservative for its earlier instances)."""
+    names = datapath_loop_names(program)
+    small = small_blocks(program)
+    out = []
+    for s in range(sets):
+        loops = {f"factor_{b}_jacobian" if b not in small else "factor_small_jacobian"
+                 for f, (u, _, _) in in_banks.items() if u == s
+                 for b in (program.factors[f].block,)}
+        out.append(max(loops, key=names.index))
+    return out
 
 
 def raw_jacobian_words(b) -> int:
