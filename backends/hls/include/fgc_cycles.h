@@ -38,7 +38,10 @@
 // issue - as units/backsub.py's retire_region prices it. A third process (FGC_OUTER_BRANCH
 // again: back_substitute's trial_cost) runs pipelined loops one after another, an iteration
 // after its k-th FGC_OUTER_ABSORB no earlier than the second's k-th iteration ends
-// (units/datapath.py's trial_end); the group ends when the last of the three does. Keyed
+// (units/datapath.py's trial_end); the group ends when the last of the three does. A last
+// process with no channel to the others (FGC_OUTER_BESIDE at its start: the on-chip stream's
+// spec_marginal_task, the one-step update's marginal) runs its records as span_total prices
+// them, and the group ends no earlier than it does (plan/stream.py's _spec_over). Keyed
 // marks (FGC_OUTER_SEND_STEP(s) / FGC_OUTER_RECEIVE_STEP(s): back-substitution by columns,
 // whose first process is a DATAFLOW region of a loader and two ends run one after the other
 // in C simulation) match a receive with the send of the same step, at that send's time on
