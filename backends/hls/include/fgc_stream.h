@@ -1307,9 +1307,6 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         const int reexp = -1, walk = 0;
 #endif
         int result[2] = {0, 0};  // the window's process: marginal code, reuse
-#if defined(FGC_SPEC_MARGINAL) && defined(FGC_STREAM_KEPT)
-        SPEC_KC = c - STREAM_W;  // the kept keyframe, if the pass's keyframe leaves
-#endif
         window_and_kept<CFG>(mode, mc, live, lin01, errors, info, result, reexp, walk, x0);
         FGC_TASKS_JOIN();
 #ifdef FGC_STREAM_KEPT
