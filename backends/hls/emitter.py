@@ -103,6 +103,11 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     # linearisation's region (lin_level), as the datapaths fill their banks
     context["lin_qr"] = bool(context["leaf_lin"] and context.get("banks")
                              and context["stream"]["role"] == "window")
+    # the leaving keyframe's tau and kept conditional beside the update's back-substitution
+    # (the one-step policy, the slot design; fgc_stream.h's spec_marginal_task)
+    context["spec"] = bool(context["stream"] and context["stream"]["spec"]
+                           and not context.get("mixed") and not context.get("bsc")
+                           and not context.get("retire_test"))
     if context["leaf_lin"]:
         _leaf_context(context, stream.leaf_factors(), stream.leaf_gone())
         context["leaf_skip"] = stream.leaf_skip()
