@@ -356,7 +356,7 @@ def read_dsp(program: Program, config, digest: str | None = None,
     from fgc.compiler import cache
     from fgc_backends.hls import emit
     from fgc_backends.hls.plan import PlanOptions, build_plan
-    from fgc_backends.hls.reader import check, dsp_table, emitted_files, read_design
+    from fgc_backends.hls.reader import check, dsp_table, emitted_files, emitted_ops, read_design
 
     key = hashlib.sha256("\0".join((program.fingerprint, repr(config),
                                     digest or sources_digest())).encode()).hexdigest()
@@ -377,8 +377,10 @@ def read_dsp(program: Program, config, digest: str | None = None,
             emit(program, Path(tmp) / "design", config)
         files, top = emitted_files(Path(tmp) / "design")
         design = read_design(files, top, tab.add.latency)
-    # each operator in its own type's table: a mixed design's double linear solver in float64's
-    dsp_of = dsp_table(target.ops, _precision(config))
+        # each operator in its own type's table (a mixed design's double linear solver in
+        # float64's), bound as the emitted run_hls.tcl binds it (config_op): from the text
+        ops_of = emitted_ops(Path(tmp) / "design")
+    dsp_of = dsp_table(ops_of, _precision(config))
     issues = check(design.loops)
     out = {"dsp": design.dsp(dsp_of), "operators": dict(design.operators),
            "ii_short": sum(i.rule == "ii_ports" for i in issues),
