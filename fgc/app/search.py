@@ -5,7 +5,8 @@
     print("\\n".join(result.lines()))      # every design, its verdict and what bound it
 
 Each candidate is an emitted HLS design (:class:`Candidate`: linear solver, n_u, QR unit sets,
-#CPE, the factor datapaths' ``ALLOCATION`` scale, and any option the plan grows: the ``qr_unit``
+#CPE, the factor datapaths' ``ALLOCATION`` scale, the floating-point operators' binding
+(``Space.binds``: DSP or fabric, ``HlsConfig.bind``), and any option the plan grows: the ``qr_unit``
 field of ``PlanOptions`` and ``DesignOptions`` is an axis over ``QR_UNITS``). Its speed is the
 accelerator plan's (``plan_cost(build_plan(program, PlanOptions.for_config(config, program)))``:
 cycles of one iteration); its fit is judged on honest figures:
@@ -86,12 +87,24 @@ class Space:
     scalar: str = "float"
     part: str | None = None  # None: HlsConfig's default part
     extra: tuple[tuple[str, tuple], ...] = ()
+    # the floating-point operators' bindings (HlsConfig.bind: ((kind, implementation), ...);
+    # () is Vitis's default, fulldsp adders and maxdsp multipliers): a design dimension that
+    # never changes a cycle, only DSP / LUT / FF, so among designs of equal speed the search
+    # reads them in this order (the default first: a binding is taken when it buys a fit)
+    binds: tuple[tuple[tuple[str, str], ...], ...] = ((),)
 
     def __post_init__(self):
         for name in ("linears", "units", "unit_sets", "cpe", "cascades", "lanes",
-                     "alloc_scales", "backsub_lanes"):
+                     "alloc_scales", "backsub_lanes", "binds"):
             if not getattr(self, name):
                 raise SearchError(f"design space: axis {name!r} is empty")
+        from fgc_backends.cost.operators import BindError, normalise_bind
+
+        try:
+            binds = tuple(dict.fromkeys(normalise_bind(b) for b in self.binds))
+        except BindError as exc:
+            raise SearchError(f"design space: {exc}") from None
+        object.__setattr__(self, "binds", binds)
         bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales,
                            *(b for b in self.backsub_lanes if b is not None)) if int(u) < 1]
         bad += [k for k in self.cascades if int(k) not in (1, 2)]
@@ -146,6 +159,7 @@ class Candidate:
     cpe: int | None = None  # Cholesky
     alloc_scale: int = 1
     extra: tuple[tuple[str, object], ...] = ()
+    bind: tuple[tuple[str, str], ...] = ()  # the operators' binding (HlsConfig.bind)
 
     @property
     def label(self) -> str:
@@ -156,6 +170,8 @@ class Candidate:
             head = f"cholesky #CPE={self.cpe}" + (f" cascades={self.unit_sets}"
                                                  if self.unit_sets else "")
         tail = "".join(f" {k}={v}" for k, v in self.extra)
+        if self.bind:
+            tail += " bind " + ",".join(f"{k}={v}" for k, v in self.bind)
         return f"{head} ALLOC×{self.alloc_scale}{tail}"
 
     def program(self, programs: Mapping[str, Program]) -> Program:
@@ -173,6 +189,8 @@ class Candidate:
                  else tuple((k, n * self.alloc_scale) for k, n in DEFAULT_ALLOCATION))
         kw = dict(scalar=space.scalar, unit_sets=self.unit_sets, allocation=alloc,
                   **dict(self.extra))
+        if self.bind:
+            kw["bind"] = self.bind
         if space.part is not None:
             kw["part"] = space.part
         direct = {k: v for k, v in kw.items() if k in _init_names(HlsConfig)}
@@ -186,7 +204,7 @@ class Candidate:
     def below(self, other: Candidate) -> bool:
         """Every ordered axis of this design <= ``other``'s, the rest equal: the reader's DSP
         of this design is at most ``other``'s."""
-        if (self.linear, self.extra) != (other.linear, other.extra):
+        if (self.linear, self.extra, self.bind) != (other.linear, other.extra, other.bind):
             return False
         for axis in ORDERED:
             a, b = getattr(self, axis), getattr(other, axis)
@@ -212,6 +230,7 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
     for linear in space.linears:
         if linear not in programs:
             continue
+        before = len(out)
         for scale in space.alloc_scales:
             if linear == "qr":
                 for units in space.units:
@@ -224,6 +243,9 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
                                   (() if la == 1 else (("cascade_lanes", la),)) + b)
                         for c in space.cpe for k in space.cascades for la in space.lanes
                         for b in widths]
+        # every design in each binding of the space
+        out[before:] = [dataclasses.replace(c, bind=bind) for c in out[before:]
+                        for bind in space.binds]
     return tuple(dict.fromkeys(out))
 
 
@@ -429,7 +451,9 @@ def search(programs: Mapping[str, Program], space: Space = Space(),
         rows.append(Row(c, cost, caps))
         if progress and (i + 1) % 10 == 0:
             say(f"  priced {i + 1}/{len(cands)} designs")
-    rows.sort(key=lambda r: (r.cycles, r.cost.dsp, r.label))
+    rank = {b: i for i, b in enumerate(space.binds)}  # equal speed: the space's binding order
+    rows.sort(key=lambda r: (r.cycles, rank.get(r.candidate.bind, len(rank)), r.cost.dsp,
+                             r.label))
     for r in rows:
         r.judge()
     digest = sources_digest() if reader and reader_fn is None else None
