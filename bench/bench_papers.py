@@ -82,6 +82,11 @@ class Config:
     # search weigh two words a cycle against more CPEs)
     lanes: tuple[int, ...] = (1,)
     c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/cost/params.py)
+    # the floating-point operators' bindings searched (HlsConfig.bind; run_hls.tcl's
+    # config_op): Vitis's default (fulldsp adders, maxdsp multipliers), adders in fabric, and
+    # adders in fabric with one-DSP multipliers. A binding never changes a cycle: it trades DSP
+    # for LUT and FF, so it decides which designs fit (LUT and FF judged too)
+    binds: tuple = ((), (("add", "fabric"),), (("add", "fabric"), ("mul", "meddsp")))
     gtsam_iterations: int = 5
     gtsam_repeats: int = 5
     # a cap on the designs the search may emit and read per search (cache hits are free);
@@ -103,6 +108,7 @@ class Config:
                                  (("add", 2), ("mul", 3), ("div", 1)),
                                  (("add", 1), ("mul", 1), ("div", 1)))
     stream_reads: int = 2  # stream designs the search emits and reads (about 25 s each)
+    stream_binds: tuple = ((), (("add", "fabric"),), (("add", "fabric"), ("mul", "meddsp")))
     # paper B's solve: run the best design's counting C simulation on the problem (a minute or
     # two at N = 50) and price the solve by the linearisations and solves it really runs;
     # False: the per-solve figure is the plan's iteration times GTSAM's iteration count, said so
@@ -114,7 +120,7 @@ SMALL = Config(lio_n=5, imu_n=5, storage_ns=(4, 6), units=(1, 8), alloc_scales=(
                reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(None,),
                stream_units=(1, 4),
                stream_allocations=(None, (("add", 1), ("mul", 1), ("div", 1))), stream_reads=1,
-               design_run=False)
+               design_run=False, binds=((),), stream_binds=((),))
 
 
 def _progress(text: str) -> None:
@@ -141,12 +147,13 @@ def search_space(cfg: Config, linears=("qr", "cholesky")) -> Space:
     return Space(linears=linears, units=cfg.units, unit_sets=cfg.unit_sets,
                  cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes, cascades=cfg.cascades,
                  lanes=cfg.lanes, alloc_scales=cfg.alloc_scales,
-                 backsub_lanes=cfg.backsub_lanes)
+                 backsub_lanes=cfg.backsub_lanes, binds=cfg.binds)
 
 
 def best_design(programs: dict, cfg: Config, linears=("qr", "cholesky")):
     """The design-space search (fgc.app.search) over ``programs``: the fastest design that fits
-    the xc7z045 as re-priced (DSP = max(plan, second reader), BRAM36 from the plan)."""
+    the xc7z045 as re-priced (DSP = max(plan, second reader), BRAM36, LUT and FF from the
+    plan)."""
     return search(programs, search_space(cfg, linears), max_reads=cfg.reads,
                   reader=cfg.reads != 0, progress=_progress)
 
@@ -310,6 +317,10 @@ class StreamDesign:
     held: dict = dataclasses.field(default_factory=dict)  # WindowUpdateModel.duplicated()
     default: bool = False  # the default design (n_u the Program's, default unit sets, ALLOCATION)
     part: str = ""  # the FPGA part it is priced on
+    bind: tuple = ()  # the operators' binding (HlsConfig.bind)
+    lut: int = 0  # the plan's LUT and FF, and the part's
+    ff: int = 0
+    fabric: tuple[int, int] = (0, 0)
 
     @property
     def one_set_dsp(self) -> int:
@@ -326,7 +337,9 @@ class StreamDesign:
         alloc = ("default ALLOCATION" if self.allocation is None else "ALLOCATION "
                  + ",".join(f"{k}={v}" for k, v in self.allocation))
         sets = "default unit sets" if self.unit_sets is None else f"{self.unit_sets} unit set(s)"
-        return f"n_u={self.units}, {sets}, {alloc}"
+        bind = ", operators bound " + ",".join(f"{k}={v}" for k, v in self.bind) \
+            if self.bind else ""
+        return f"n_u={self.units}, {sets}, {alloc}{bind}"
 
     @property
     def median_ms(self) -> float:
@@ -338,7 +351,10 @@ class StreamDesign:
 
     @property
     def fits_plan(self) -> bool:
-        return self.dsp <= self.device[0] and self.bram36 <= self.device[1]
+        """The plan's DSP, BRAM36, LUT and FF within the part (a design bound to fabric trades
+        DSP for LUT: its LUTs decide too)."""
+        return (self.dsp <= self.device[0] and self.bram36 <= self.device[1]
+                and self.lut <= self.fabric[0] and self.ff <= self.fabric[1])
 
     @property
     def honest_dsp(self) -> int:
@@ -353,7 +369,8 @@ class StreamDesign:
     def line(self) -> str:
         read = "unread" if self.reader_dsp is None else f"reader {self.reader_dsp:,}"
         return (f"{self.label}: median {self.median_ms:.3f} ms / p99 {self.p99_ms:.3f} ms per "
-                f"update, {self.dsp:,} DSP ({read}) / {self.bram36:g} BRAM36 ("
+                f"update, {self.dsp:,} DSP ({read}) / {self.bram36:g} BRAM36 / {self.lut:,} "
+                f"LUT / {self.ff:,} FF ("
                 + ", ".join(f"{name} {d:,}" for name, (d, _) in self.parts.items()) + ")"
                 + (": fits" if self.fits else ": over" if not self.fits_plan else ""))
 
@@ -399,15 +416,16 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         solver = dataclasses.replace(base, units=units)
         sp = streaming.stream_program(graph, streaming.compile_stream(
             graph, solver, incremental=k, batch_every=batch))
-        grid = [(sets, alloc) for sets in cfg.stream_unit_sets
-                for alloc in cfg.stream_allocations]
+        prices: dict = {}
+        grid = [(sets, alloc, bind) for sets in cfg.stream_unit_sets
+                for alloc in cfg.stream_allocations for bind in cfg.stream_binds]
         if units == default_units:
-            grid.insert(0, (None, None))
-        for sets, alloc in grid:
+            grid.insert(0, (None, None, ()))
+        for sets, alloc, bind in grid:
             if (units == default_units and alloc is None and sets is not None
-                    and sets == default_sets):
+                    and sets == default_sets and not bind):
                 continue  # the default design's own options: priced above
-            config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc)
+            config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc, bind=bind)
             try:
                 pricer = streaming.WindowPricer(sp, config=config)
             except FgcError as exc:  # a unit-set count the window's levels cannot take
@@ -415,15 +433,24 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
                 continue
             res = pricer.model.resources()
             device = pricer.model.plan.target.device
-            lat = np.array([pricer.price(u).latency_ms for u in updates])
-            default = units == default_units and sets is None and alloc is None
+            # a binding changes no cycle (config_op pins each latency): one binding's prices
+            # serve the others of the same options
+            key = (sets, alloc)
+            if key not in prices:
+                prices[key] = np.array([pricer.price(u).latency_ms for u in updates])
+            lat = prices[key]
+            default = units == default_units and sets is None and alloc is None and not bind
             if default:
                 default_sets = max(1, unit_sets(pricer.model.plan))
             out.append(StreamDesign(units, sets, alloc, res["dsp"], res["bram36"],
                                     res["parts"], lat, (device.dsp, device.bram36),
                                     held=pricer.model.duplicated(), default=default,
-                                    part=res["part"]))
-    out.sort(key=lambda d: (d.median_ms, d.p99_ms, d.dsp))
+                                    part=res["part"], bind=config.bind, lut=res["lut"],
+                                    ff=res["ff"], fabric=(device.lut, device.ff)))
+    # equal speed (a binding changes no cycle): the binding order of cfg.stream_binds, the
+    # default first, then the fewer DSP
+    rank = {tuple(b): i for i, b in enumerate(cfg.stream_binds)}
+    out.sort(key=lambda d: (d.median_ms, d.p99_ms, rank.get(d.bind, len(rank)), d.dsp))
     fitting = [d for d in out if d.fits_plan]
     to_read = fitting[:cfg.stream_reads] if fitting else [min(out, key=lambda d: d.dsp)]
 
@@ -432,7 +459,7 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         with tempfile.TemporaryDirectory() as tmp:
             got = measure_stream(cfg.lio_n, Path(tmp) / "stream",
                                  HlsConfig(scalar="float", unit_sets=d.unit_sets,
-                                           allocation=d.allocation), d.units, batch,
+                                           allocation=d.allocation, bind=d.bind), d.units, batch,
                                  solver=base)
         d.reader_dsp = got["reader_dsp"]
         d.reader_parts = tuple(got["parts"])
@@ -500,7 +527,10 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                       for name, (d, b) in default.parts.items())
     searched = (f"the search ({len(designs)} designs: n_u {cfg.stream_units}, unit sets "
                 f"{cfg.stream_unit_sets}, {len(cfg.stream_allocations)} ALLOCATION limits of "
-                "the factor datapaths, and the default): "
+                f"the factor datapaths, operator bindings "
+                + "; ".join(",".join(f"{k}={v}" for k, v in b) or "default"
+                            for b in cfg.stream_binds)
+                + ", and the default): "
                 + (f"fastest that fits: {best.line()}; ISAM2 / design median {best_ratio:.2f}×"
                    if fit else
                    f"NONE fits the {default.part}; the smallest: {best.line()}, DSP = max(plan, "

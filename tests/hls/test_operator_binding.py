@@ -42,7 +42,7 @@ def test_every_implementation_is_priced_with_a_source(key):
         assert tuple(by_impl) == IMPLEMENTATIONS[kind]
         # the default implementation is the table's own entry: the default design's figures
         assert by_impl[DEFAULT_BIND[kind]] is table.op(kind)
-        for impl, o in by_impl.items():
+        for o in by_impl.values():
             assert o.source and o.status in ("documented", "assumed")
             assert o.resource_status in ("documented", "assumed")
             # config_op pins the latency: a binding never changes a cycle
@@ -156,6 +156,15 @@ def test_emitted_config_op_lines(tmp_path):
                      "config_op fmul -impl meddsp -latency 3"]
     assert tcl.index("create_clock") < tcl.index("config_op") < tcl.index("csim_design")
     assert tcl_binding(tcl) == {"float32": SMALL}
+    # the binding is the script's alone: the C++ (and so the C simulation, the counting
+    # csim's cycles) is the default design's, byte for byte
+    names = sorted(p.relative_to(tmp_path / "d") for p in (tmp_path / "d").rglob("*")
+                   if p.is_file())
+    assert names == sorted(p.relative_to(tmp_path / "a") for p in (tmp_path / "a").rglob("*")
+                           if p.is_file())
+    for name in names:
+        if name.name != "run_hls.tcl":
+            assert (tmp_path / "d" / name).read_bytes() == (tmp_path / "a" / name).read_bytes()
     assert emitted_ops(tmp_path / "a")("float32") == Target(bind=SMALL).ops("float32")
     assert emitted_ops(tmp_path / "d")("float32") is operators.table("float32")
 
