@@ -83,10 +83,12 @@ class Config:
     lanes: tuple[int, ...] = (1,)
     c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/cost/params.py)
     # the floating-point operators' bindings searched (HlsConfig.bind; run_hls.tcl's
-    # config_op): Vitis's default (fulldsp adders, maxdsp multipliers), adders in fabric, and
-    # adders in fabric with one-DSP multipliers. A binding never changes a cycle: it trades DSP
+    # config_op), fewer DSP and more LUT each: Vitis's default (fulldsp adders, maxdsp
+    # multipliers), adders in fabric, then with two-DSP (fulldsp) and one-DSP (meddsp)
+    # multipliers. A binding never changes a cycle: it trades DSP
     # for LUT and FF, so it decides which designs fit (LUT and FF judged too)
-    binds: tuple = ((), (("add", "fabric"),), (("add", "fabric"), ("mul", "meddsp")))
+    binds: tuple = ((), (("add", "fabric"),), (("add", "fabric"), ("mul", "fulldsp")),
+                    (("add", "fabric"), ("mul", "meddsp")))
     gtsam_iterations: int = 5
     gtsam_repeats: int = 5
     # a cap on the designs the search may emit and read per search (cache hits are free);
@@ -101,14 +103,15 @@ class Config:
     isam_repeats: int = 3
     # the on-chip stream design's search (paper_a_stream): n_u, unit sets, the factor datapaths'
     # ALLOCATION limits (None: the default design's; smaller limits: fewer operators)
-    stream_units: tuple[int, ...] = (1, 2, 4, 8)
+    stream_units: tuple[int, ...] = (1, 2, 4, 8, 16)
     stream_unit_sets: tuple[int, ...] = (1, 2)
     stream_allocations: tuple = (None, (("add", 8), ("mul", 12), ("div", 2)),
                                  (("add", 4), ("mul", 6), ("div", 1)),
                                  (("add", 2), ("mul", 3), ("div", 1)),
                                  (("add", 1), ("mul", 1), ("div", 1)))
     stream_reads: int = 2  # stream designs the search emits and reads (about 25 s each)
-    stream_binds: tuple = ((), (("add", "fabric"),), (("add", "fabric"), ("mul", "meddsp")))
+    stream_binds: tuple = ((), (("add", "fabric"),), (("add", "fabric"), ("mul", "fulldsp")),
+                           (("add", "fabric"), ("mul", "meddsp")))
     # paper B's solve: run the best design's counting C simulation on the problem (a minute or
     # two at N = 50) and price the solve by the linearisations and solves it really runs;
     # False: the per-solve figure is the plan's iteration times GTSAM's iteration count, said so
@@ -417,36 +420,42 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         sp = streaming.stream_program(graph, streaming.compile_stream(
             graph, solver, incremental=k, batch_every=batch))
         prices: dict = {}
-        grid = [(sets, alloc, bind) for sets in cfg.stream_unit_sets
-                for alloc in cfg.stream_allocations for bind in cfg.stream_binds]
+        grid = [(sets, alloc, tuple(cfg.stream_binds)) for sets in cfg.stream_unit_sets
+                for alloc in cfg.stream_allocations]
         if units == default_units:
-            grid.insert(0, (None, None, ()))
-        for sets, alloc, bind in grid:
-            if (units == default_units and alloc is None and sets is not None
-                    and sets == default_sets and not bind):
-                continue  # the default design's own options: priced above
-            config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc, bind=bind)
-            try:
-                pricer = streaming.WindowPricer(sp, config=config)
-            except FgcError as exc:  # a unit-set count the window's levels cannot take
-                _progress(f"stream search: n_u={units}, {sets} unit sets, {alloc}: {exc}")
-                continue
-            res = pricer.model.resources()
-            device = pricer.model.plan.target.device
-            # a binding changes no cycle (config_op pins each latency): one binding's prices
-            # serve the others of the same options
-            key = (sets, alloc)
-            if key not in prices:
-                prices[key] = np.array([pricer.price(u).latency_ms for u in updates])
-            lat = prices[key]
-            default = units == default_units and sets is None and alloc is None and not bind
-            if default:
-                default_sets = max(1, unit_sets(pricer.model.plan))
-            out.append(StreamDesign(units, sets, alloc, res["dsp"], res["bram36"],
-                                    res["parts"], lat, (device.dsp, device.bram36),
-                                    held=pricer.model.duplicated(), default=default,
-                                    part=res["part"], bind=config.bind, lut=res["lut"],
-                                    ff=res["ff"], fabric=(device.lut, device.ff)))
+            grid.insert(0, (None, None, ((),)))
+        for sets, alloc, binds in grid:
+            # the bindings in cfg's order (fewer DSP, more LUT, each): the first that fits by the
+            # plan ends them (a later one is as fast, never preferred), as does one over on LUT
+            # or FF (a later one has more)
+            for bind in binds:
+                if (units == default_units and alloc is None and sets is not None
+                        and sets == default_sets and not bind):
+                    continue  # the default design's own options: priced above
+                config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc, bind=bind)
+                try:
+                    pricer = streaming.WindowPricer(sp, config=config)
+                except FgcError as exc:  # a unit-set count the window's levels cannot take
+                    _progress(f"stream search: n_u={units}, {sets} unit sets, {alloc}: {exc}")
+                    break
+                res = pricer.model.resources()
+                device = pricer.model.plan.target.device
+                # a binding changes no cycle (config_op pins each latency): one binding's
+                # prices serve the others of the same options
+                key = (sets, alloc)
+                if key not in prices:
+                    prices[key] = np.array([pricer.price(u).latency_ms for u in updates])
+                default = units == default_units and sets is None and alloc is None and not bind
+                if default:
+                    default_sets = max(1, unit_sets(pricer.model.plan))
+                d = StreamDesign(units, sets, alloc, res["dsp"], res["bram36"], res["parts"],
+                                 prices[key], (device.dsp, device.bram36),
+                                 held=pricer.model.duplicated(), default=default,
+                                 part=res["part"], bind=config.bind, lut=res["lut"],
+                                 ff=res["ff"], fabric=(device.lut, device.ff))
+                out.append(d)
+                if d.fits_plan or d.lut > device.lut or d.ff > device.ff:
+                    break
     # equal speed (a binding changes no cycle): the binding order of cfg.stream_binds, the
     # default first, then the fewer DSP
     rank = {tuple(b): i for i, b in enumerate(cfg.stream_binds)}

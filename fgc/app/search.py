@@ -412,15 +412,24 @@ def read_dsp(program: Program, config, digest: str | None = None,
     return out, False
 
 
-def price(program: Program, cand: Candidate, space: Space):
-    """The plan's Cost of ``cand`` and the part's capacities."""
+def price(program: Program, cand: Candidate, space: Space, plans: dict | None = None):
+    """The plan's Cost of ``cand`` and the part's capacities. ``plans``: a cache of the plans
+    built, by the candidate without its binding: a design's other bindings are that plan
+    bound anew (``plan.cost.rebind``: the same cycles, exact)."""
     from fgc_backends.hls.emitter import for_program
     from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
+    from fgc_backends.hls.plan.cost import rebind
 
-    # the design the emitter builds: a Program compiled with linear_precision float64 gets a
-    # double linear solver (the mixed design), priced in its own operator table
-    config = for_program(program, cand.config(space))
-    plan = build_plan(program, PlanOptions.for_config(config, program))
+    key = (program.fingerprint, dataclasses.replace(cand, bind=()))
+    if plans is not None and key in plans:
+        plan = rebind(plans[key], cand.bind)
+    else:
+        # the design the emitter builds: a Program compiled with linear_precision float64 gets
+        # a double linear solver (the mixed design), priced in its own operator table
+        config = for_program(program, cand.config(space))
+        plan = build_plan(program, PlanOptions.for_config(config, program))
+        if plans is not None:
+            plans[key] = plan
     d = plan.target.device
     return plan_cost(plan), {"dsp": d.dsp, "bram36": d.bram36, "lut": d.lut, "ff": d.ff}, d.name
 
@@ -441,10 +450,10 @@ def search(programs: Mapping[str, Program], space: Space = Space(),
     cands = candidates(space, programs)
     if not cands:
         raise SearchError("design space: no candidate (no Program for its linear solvers)")
-    rows, part = [], ""
+    rows, part, plans = [], "", {}
     for i, c in enumerate(cands):
         try:
-            cost, caps, part = price(c.program(programs), c, space)
+            cost, caps, part = price(c.program(programs), c, space, plans)
         except FgcError as exc:  # the plan refuses the design (backsub_lanes 4 on a tree)
             say(f"  {c.label}: no design ({type(exc).__name__}: {exc})")
             continue

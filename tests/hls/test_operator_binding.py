@@ -120,6 +120,32 @@ def test_plan_prices_the_bound_operators_and_keeps_the_cycles():
     assert plans[SMALL].target.bind == SMALL
 
 
+@pytest.mark.parametrize("scalar", ["float", "double"])
+def test_rebind_is_the_plan_built_with_the_binding(scalar):
+    """The search prices a design's bindings by rebinding one plan: exactly the plan built
+    with each (no unit reads an operator's DSP/LUT/FF while it is built)."""
+    from fgc_backends.hls.plan.cost import rebind
+
+    from fgc_backends.hls.emitter import for_program
+
+    # float: the mixed design (a double linear solver, its own table); double: all double
+    program = chain(5, units=4, linear_precision="float64") if scalar == "float" else chain(5)
+
+    def plan(bind):
+        config = for_program(program, HlsConfig(scalar=scalar, bind=bind))
+        return build_plan(program, PlanOptions.for_config(config, program))
+
+    base = plan(())
+    assert rebind(base, ()) is base
+    assert scalar == "double" or base.options.les_precision == "float64"
+    for bind in (FABRIC_ADD, SMALL, (("mul", "fabric"),)):
+        built = plan(bind)
+        again = rebind(base, bind)
+        assert again.options == built.options and again.ops == built.ops
+        assert plan_cost(again) == plan_cost(built)
+        assert plan_cost(rebind(again, ())) == plan_cost(base)
+
+
 def test_plan_refuses_a_bad_binding():
     program = chain(5)
     with pytest.raises(PlanError, match="implementations of add"):
