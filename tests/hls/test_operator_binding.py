@@ -124,9 +124,8 @@ def test_plan_prices_the_bound_operators_and_keeps_the_cycles():
 def test_rebind_is_the_plan_built_with_the_binding(scalar):
     """The search prices a design's bindings by rebinding one plan: exactly the plan built
     with each (no unit reads an operator's DSP/LUT/FF while it is built)."""
-    from fgc_backends.hls.plan.cost import rebind
-
     from fgc_backends.hls.emitter import for_program
+    from fgc_backends.hls.plan.cost import rebind
 
     # float: the mixed design (a double linear solver, its own table); double: all double
     program = chain(5, units=4, linear_precision="float64") if scalar == "float" else chain(5)
