@@ -276,3 +276,28 @@ def test_search_takes_the_binding_when_only_it_fits():
     reads.clear()
     best = search({"qr": program}, roomy, reader_fn=reader).best
     assert best.candidate.bind == () and reads == [()]
+
+
+def test_sweep_fit_binds_option():
+    """``fgc sweep --fit-bind add=fabric``: the fit search may take that binding too (the
+    default first); a bad binding is a usage error naming the implementations."""
+    import argparse
+
+    from fgc.app import sweep
+
+    parser = argparse.ArgumentParser()
+    sweep.add_fit_arguments(parser)
+    args = parser.parse_args(["--fit-bind", "add=fabric", "--fit-bind", "mul=meddsp,add=fabric"])
+    assert sweep.fit_options(args, False)["fit_binds"] == ((), FABRIC_ADD, SMALL)
+    assert sweep.fit_options(parser.parse_args([]), False)["fit_binds"] == ((),)
+    with pytest.raises(SystemExit):
+        parser.parse_args(["--fit-bind", "add=meddsp"])
+
+
+def test_cli_bind_reaches_the_design():
+    from fgc.app.cli import build_parser
+    from fgc.app.commands.steps import hls_config
+
+    args = build_parser().parse_args(["compile", "x.py", "--backend", "hls", "--out", "o",
+                                      "--bind", "add=fabric,mul=meddsp"])
+    assert hls_config(args, chain(3)).bind == SMALL
