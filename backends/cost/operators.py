@@ -43,6 +43,13 @@ DSP/LUT/FF):
   synthesisable approximations with no published latency table: assumed.
 - **design**: fgc's Lie coefficients (series and closed form, one rolled Horner loop a unit).
 
+**Binding** (issue 33): besides Vitis's default binding of add/sub (full DSP) and multiply
+(max DSP), which the rows above price, :data:`IMPLEMENTATIONS` lists the implementations a
+design may bind them to (``DesignOptions.bind``, run_hls.tcl's ``config_op``): add fulldsp or
+fabric, multiply maxdsp, fulldsp, meddsp or fabric, each with its DSP/LUT/FF and source
+(:func:`implementations`) at the row's latency; :func:`bound` is a table so bound (what
+``Target.ops`` returns for a design's binding). docs/hls.md, "Operator binding: DSP or fabric".
+
 Before this table (issue 32): this module (the plan: float32 add 11, mul 8,
 div/sqrt 28, compare 2; float64 12 / 9 / 57) and ``backends/cost/params.py`` (the analytic
 model: float32 add 8, mul 5, div/sqrt 28) disagreed, and neither knew the part or the clock.
@@ -52,6 +59,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, fields, replace
 from functools import lru_cache
+
+from fgc.errors import FgcError
 
 PRECISIONS = ("float32", "float64")
 FAMILIES = ("7series", "ultrascale+")
@@ -317,7 +326,7 @@ def implementations(t: OperatorTable) -> dict[str, dict[str, Operator]]:
     return out
 
 
-class BindError(ValueError):
+class BindError(FgcError, ValueError):
     """A binding names an operator kind or an implementation the table does not have."""
 
 

@@ -81,6 +81,7 @@ def test_binding_is_canonical_and_checked():
     assert parse_bind("default") == ()
     with pytest.raises(BindError, match="fulldsp, fabric"):
         normalise_bind((("add", "meddsp"),))
+    assert issubclass(BindError, FgcError)
     with pytest.raises(BindError, match="kinds: add, mul"):
         parse_bind("div=fabric")
     with pytest.raises(BindError, match="twice"):
