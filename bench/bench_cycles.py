@@ -121,6 +121,12 @@ def cases():
                     SolverConfig(method="gn", linear="qr", ordering="two-ended", units=units,
                                  precision="float32"),
                     HlsConfig(scalar="float", qr_unit="stream")))
+    # the Householder unit's Update units two rows a cycle (HlsConfig qr_rows=2, FGC_QR_TWO_ROWS)
+    for ordering, units in (("serial", 4), ("two-ended", 4), ("two-ended", 8)):
+        out.append((f"LIO N=30 QR {ordering} n_u={units} two rows", lio.build(N=30),
+                    SolverConfig(method="gn", linear="qr", ordering=ordering, units=units,
+                                 precision="float32"),
+                    HlsConfig(scalar="float", qr_rows=2)))
     # N = 20: at N = 50 undamped float32 Gauss-Newton stops singular inside its first solve
     for cpe in (5, 20, 80):
         out.append((f"imu_window N=20 Cholesky #CPE={cpe}", imu_window.build(N=20),

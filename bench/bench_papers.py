@@ -68,6 +68,9 @@ class Config:
     storage_ns: tuple[int, int] = (20, 80)
     units: tuple[int, ...] = (1, 4, 8, 16, 32)
     unit_sets: tuple[int, ...] = (1, 2)
+    # the batch searches' QR Update units' rows a cycle (HlsConfig.qr_rows; (1, 2) doubles
+    # their QR candidates)
+    qr_rows: tuple[int, ...] = (1,)
     alloc_scales: tuple[int, ...] = (1, 2)
     # Cholesky designs of LIO in the search (15: a two-ended LIO step's pivots, the longest cascade
     # a step fills)
@@ -103,8 +106,11 @@ class Config:
     isam_repeats: int = 3
     # the on-chip stream design's search (paper_a_stream): n_u, unit sets, the factor datapaths'
     # ALLOCATION limits (None: the default design's; smaller limits: fewer operators)
-    stream_units: tuple[int, ...] = (1, 2, 4, 8, 16)
+    stream_units: tuple[int, ...] = (1, 2, 3, 4, 8, 16)
     stream_unit_sets: tuple[int, ...] = (1, 2)
+    # the QR Update units' rows a cycle (HlsConfig.qr_rows: 1, or 2 for 10 more DSP a unit in
+    # float32: n_u 3, two rows beside n_u 4, one)
+    stream_qr_rows: tuple[int, ...] = (1, 2)
     stream_allocations: tuple = (None, (("add", 8), ("mul", 12), ("div", 2)),
                                  (("add", 4), ("mul", 6), ("div", 1)),
                                  (("add", 2), ("mul", 3), ("div", 1)),
@@ -121,7 +127,7 @@ class Config:
 SMALL = Config(lio_n=5, imu_n=5, storage_ns=(4, 6), units=(1, 8), alloc_scales=(1,),
                lio_cpes=(5,), cpes=(5, 20), c123=(20,), gtsam_iterations=2, gtsam_repeats=1,
                reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(None,),
-               stream_units=(1, 4),
+               stream_units=(1, 4), stream_qr_rows=(1,),
                stream_allocations=(None, (("add", 1), ("mul", 1), ("div", 1))), stream_reads=1,
                design_run=False, binds=((),), stream_binds=((),))
 
@@ -150,7 +156,8 @@ def search_space(cfg: Config, linears=("qr", "cholesky")) -> Space:
     return Space(linears=linears, units=cfg.units, unit_sets=cfg.unit_sets,
                  cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes, cascades=cfg.cascades,
                  lanes=cfg.lanes, alloc_scales=cfg.alloc_scales,
-                 backsub_lanes=cfg.backsub_lanes, binds=cfg.binds)
+                 backsub_lanes=cfg.backsub_lanes, binds=cfg.binds,
+                 extra=(("qr_rows", cfg.qr_rows),) if tuple(cfg.qr_rows) != (1,) else ())
 
 
 def best_design(programs: dict, cfg: Config, linears=("qr", "cholesky")):
@@ -320,6 +327,7 @@ class StreamDesign:
     held: dict = dataclasses.field(default_factory=dict)  # WindowUpdateModel.duplicated()
     default: bool = False  # the default design (n_u the Program's, default unit sets, ALLOCATION)
     part: str = ""  # the FPGA part it is priced on
+    qr_rows: int = 1  # the QR Update units' rows a cycle (HlsConfig.qr_rows)
     bind: tuple = ()  # the operators' binding (HlsConfig.bind)
     lut: int = 0  # the plan's LUT and FF, and the part's
     ff: int = 0
@@ -340,9 +348,10 @@ class StreamDesign:
         alloc = ("default ALLOCATION" if self.allocation is None else "ALLOCATION "
                  + ",".join(f"{k}={v}" for k, v in self.allocation))
         sets = "default unit sets" if self.unit_sets is None else f"{self.unit_sets} unit set(s)"
+        rows = f", {self.qr_rows} rows a cycle" if self.qr_rows > 1 else ""
         bind = ", operators bound " + ",".join(f"{k}={v}" for k, v in self.bind) \
             if self.bind else ""
-        return f"n_u={self.units}, {sets}, {alloc}{bind}"
+        return f"n_u={self.units}, {sets}, {alloc}{rows}{bind}"
 
     @property
     def median_ms(self) -> float:
@@ -420,19 +429,20 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         sp = streaming.stream_program(graph, streaming.compile_stream(
             graph, solver, incremental=k, batch_every=batch))
         prices: dict = {}
-        grid = [(sets, alloc, tuple(cfg.stream_binds)) for sets in cfg.stream_unit_sets
-                for alloc in cfg.stream_allocations]
+        grid = [(sets, alloc, rows, tuple(cfg.stream_binds)) for rows in cfg.stream_qr_rows
+                for sets in cfg.stream_unit_sets for alloc in cfg.stream_allocations]
         if units == default_units:
-            grid.insert(0, (None, None, ((),)))
-        for sets, alloc, binds in grid:
+            grid.insert(0, (None, None, 1, ((),)))
+        for sets, alloc, rows, binds in grid:
             # the bindings in cfg's order (fewer DSP, more LUT, each): the first that fits by the
             # plan ends them (a later one is as fast, never preferred), as does one over on LUT
             # or FF (a later one has more)
             for bind in binds:
                 if (units == default_units and alloc is None and sets is not None
-                        and sets == default_sets and not bind):
+                        and sets == default_sets and rows == 1 and not bind):
                     continue  # the default design's own options: priced above
-                config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc, bind=bind)
+                config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc,
+                                   qr_rows=rows, bind=bind)
                 try:
                     pricer = streaming.WindowPricer(sp, config=config)
                 except FgcError as exc:  # a unit-set count the window's levels cannot take
@@ -442,17 +452,18 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
                 device = pricer.model.plan.target.device
                 # a binding changes no cycle (config_op pins each latency): one binding's
                 # prices serve the others of the same options
-                key = (sets, alloc)
+                key = (sets, alloc, rows)
                 if key not in prices:
                     prices[key] = np.array([pricer.price(u).latency_ms for u in updates])
-                default = units == default_units and sets is None and alloc is None and not bind
+                default = (units == default_units and sets is None and alloc is None
+                           and rows == 1 and not bind)
                 if default:
                     default_sets = max(1, unit_sets(pricer.model.plan))
                 d = StreamDesign(units, sets, alloc, res["dsp"], res["bram36"], res["parts"],
                                  prices[key], (device.dsp, device.bram36),
                                  held=pricer.model.duplicated(), default=default,
-                                 part=res["part"], bind=config.bind, lut=res["lut"],
-                                 ff=res["ff"], fabric=(device.lut, device.ff))
+                                 part=res["part"], qr_rows=rows, bind=config.bind,
+                                 lut=res["lut"], ff=res["ff"], fabric=(device.lut, device.ff))
                 out.append(d)
                 if d.fits_plan or d.lut > device.lut or d.ff > device.ff:
                     break
@@ -468,7 +479,9 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         with tempfile.TemporaryDirectory() as tmp:
             got = measure_stream(cfg.lio_n, Path(tmp) / "stream",
                                  HlsConfig(scalar="float", unit_sets=d.unit_sets,
-                                           allocation=d.allocation, bind=d.bind), d.units, batch,
+                                           allocation=d.allocation, qr_rows=d.qr_rows,
+                                           bind=d.bind),
+                                 d.units, batch,
                                  solver=base)
         d.reader_dsp = got["reader_dsp"]
         d.reader_parts = tuple(got["parts"])
@@ -536,7 +549,7 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                       for name, (d, b) in default.parts.items())
     searched = (f"the search ({len(designs)} designs: n_u {cfg.stream_units}, unit sets "
                 f"{cfg.stream_unit_sets}, {len(cfg.stream_allocations)} ALLOCATION limits of "
-                f"the factor datapaths, operator bindings "
+                f"the factor datapaths, QR rows a cycle {cfg.stream_qr_rows}, operator bindings "
                 + "; ".join(",".join(f"{k}={v}" for k, v in b) or "default"
                             for b in cfg.stream_binds)
                 + ", and the default): "

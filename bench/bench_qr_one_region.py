@@ -104,9 +104,9 @@ def main() -> None:
     captured = []
     plan_loops = qr_unit.qr_unit_loops
 
-    def spy(pattern, frontal, units, ops, partials=None, name="s"):
+    def spy(pattern, frontal, units, ops, partials=None, name="s", qr_rows=1):
         captured.append((np.array(pattern, dtype=bool), frontal, units, ops))
-        return plan_loops(pattern, frontal, units, ops, partials, name)
+        return plan_loops(pattern, frontal, units, ops, partials, name, qr_rows)
 
     qr_unit.qr_unit_loops = spy  # the pricer's build calls it through the module
     try:

@@ -17,6 +17,7 @@ Prints per keyframe csim and model cycles, their ratio, and the update latency a
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import re
 import subprocess
 import tempfile
@@ -27,6 +28,7 @@ import numpy as np
 from fgc.app.specs import example
 from fgc.app.streaming import compile_stream, keyframe_result, one_step_solver
 from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
 from fgc_backends.hls.config import HlsConfig
 from fgc_backends.hls.plan.stream import WindowUpdateModel
 from fgc_backends.hls.streaming import OnChipFixedLagStream, OnChipIncrementalStream
@@ -64,23 +66,28 @@ def counted(stream: OnChipFixedLagStream, estimates_at_end: bool = False
 
 
 def measure(keyframes: int, window: int, scalar: str, incremental: int | None = None,
-            batch_every=None, one_step: bool = False):
+            batch_every=None, one_step: bool = False, qr_rows: int = 1,
+            units: int | None = None):
     graph = example("lio").build(N=keyframes)
     # one_step: ISAM2's policy, one Gauss-Newton step an update (fgc.app.streaming.one_step)
     solver = one_step_solver() if one_step else None
+    if units is not None:  # n_u Update units (the Program's solver setting)
+        solver = dataclasses.replace(solver or SolverConfig(), units=units)
     out = tempfile.mkdtemp(prefix="fgc-stream-cycles-")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # a double design over the part's DSP still simulates
         if incremental:
             program = compile_stream(graph, solver, incremental=incremental,
                                      batch_every=batch_every, name="lio_stream")
-            stream = OnChipIncrementalStream(graph, program, scalar, out_dir=out)
+            stream = OnChipIncrementalStream(graph, program, scalar, out_dir=out,
+                                             qr_rows=qr_rows)
         else:
             program = compile_stream(graph, solver, window=window, name="lio_stream")
-            stream = OnChipFixedLagStream(graph, program, window, scalar, out_dir=out)
+            stream = OnChipFixedLagStream(graph, program, window, scalar, out_dir=out,
+                                          qr_rows=qr_rows)
         data = problem_data(graph, program)
         result = stream.run(data)
-        model = WindowUpdateModel(stream.layout, HlsConfig(scalar=scalar))
+        model = WindowUpdateModel(stream.layout, HlsConfig(scalar=scalar, qr_rows=qr_rows))
     rows = []
     for record, (cycles, events) in zip(result.updates, counted(stream), strict=True):
         ev = dict(events)
@@ -114,15 +121,19 @@ def main() -> None:
     ap.add_argument("--one-step", action="store_true",
                     help="ISAM2's update policy: one Gauss-Newton step per update (default: LM "
                          "to convergence)")
+    ap.add_argument("--qr-rows", type=int, choices=(1, 2), default=1,
+                    help="the QR Update units' rows a cycle (HlsConfig qr_rows; default 1)")
+    ap.add_argument("--units", type=int, help="n_u Update units (default: the Program's)")
     args = ap.parse_args()
     graph, program, data, result, rows, stream = measure(args.keyframes, args.window, args.scalar,
                                                     args.incremental, args.batch_every,
-                                                    args.one_step)
+                                                    args.one_step, args.qr_rows, args.units)
     mode = (f"incremental K = {args.incremental}" + (
         f", batch at {','.join(map(str, args.batch_every))}" if args.batch_every else "")
         if args.incremental else f"fixed-lag W = {args.window}")
     policy = ", one Gauss-Newton step an update" if args.one_step else ""
-    print(f"LIO N = {args.keyframes}, {mode}, {args.scalar} design{policy} "
+    rows_note = f", QR Update units {args.qr_rows} rows a cycle" if args.qr_rows > 1 else ""
+    print(f"LIO N = {args.keyframes}, {mode}, {args.scalar} design{policy}{rows_note} "
           f"(on chip, model estimates at {rows[0][2].clock_mhz:g} MHz)")
     print(f"{'keyframe':>8} {'mode':>11} {'iters':>5} {'csim cycles':>12} {'model cycles':>12} "
           f"{'csim/model':>10} {'model ms':>9}")

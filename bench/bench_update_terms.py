@@ -7,6 +7,7 @@ printed, then the median and p99 per update.
     python bench/bench_update_terms.py                      # n_u 4, two unit sets, ALLOCATION 2/3/1
     python bench/bench_update_terms.py --units 4 --sets 2 --allocation add=2,mul=3,div=1 \\
         --keyframes 5,14,25 --top 25
+    python bench/bench_update_terms.py --qr-rows 2        # the Update units two rows a cycle
     python bench/bench_update_terms.py --units 8 --allocation default --bind add=fabric
                                         # adders bound to fabric (run_hls.tcl's config_op)
 """
@@ -52,6 +53,8 @@ def main(argv=None) -> None:
                     "default: Vitis's, fulldsp adders and maxdsp multipliers)")
     ap.add_argument("--keyframes", default="5,14,25", help="keyframes whose terms are printed")
     ap.add_argument("--top", type=int, default=25, help="terms printed per keyframe")
+    ap.add_argument("--qr-rows", type=int, choices=(1, 2), default=1,
+                    help="rows a cycle through each QR Update unit (HlsConfig qr_rows; default 1)")
     args = ap.parse_args(argv)
     shown = {int(k) for k in args.keyframes.split(",") if k.strip()}
     cfg = b.Config()
@@ -64,11 +67,12 @@ def main(argv=None) -> None:
     streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
     pricer = streaming.WindowPricer(sp, config=HlsConfig(
         scalar="float", unit_sets=args.sets, allocation=_allocation(args.allocation),
-        bind=parse_bind(args.bind)))
+        qr_rows=args.qr_rows, bind=parse_bind(args.bind)))
     res = pricer.model.resources()
-    print(f"n_u {args.units}, {args.sets} unit set(s), ALLOCATION {args.allocation}, operators "
-          f"bound {bind_label(parse_bind(args.bind))}: {res['dsp']:,} DSP / {res['bram36']:g} "
-          f"BRAM36 / {res['lut']:,} LUT / {res['ff']:,} FF by the plan (model estimates): "
+    print(f"n_u {args.units}, {args.sets} unit set(s), {args.qr_rows} row(s) a cycle, "
+          f"ALLOCATION {args.allocation}, operators bound {bind_label(parse_bind(args.bind))}: "
+          f"{res['dsp']:,} DSP / {res['bram36']:g} BRAM36 / {res['lut']:,} LUT / "
+          f"{res['ff']:,} FF by the plan (model estimates): "
           + ("fits " if res["fits"] else f"OVER ({', '.join(res['over'])}) ") + res["part"])
     latency = []
     for u in updates:

@@ -29,6 +29,7 @@ from fgc_backends.cost.operators import BindError, normalise_bind
 from fgc_backends.hls.plan.options import (
     CASCADE_LANES,
     DEFAULT_ALLOCATION,
+    QR_ROWS,
     QR_UNITS,
     PlanOptions,
     scalar_precision,
@@ -94,6 +95,12 @@ class DesignOptions:
       the first solve faster by it (units/cholesky.py's ``gram_third``: imu_window's IMU Grams
       at 166 words an instance instead of 248, for its K' multipliers; docs/hls.md); off by
       default (its DSP would push the fastest design that fits, #CPE 20 x2, over the part).
+    - ``qr_rows``: the Householder unit's Update units one row a cycle (1, default) or two (2:
+      ``include/fgc_qr.h``'s ``FGC_QR_TWO_ROWS``: the reflection's vector in two lanes by row
+      parity, each unit's ``dot_axpy`` a row pair an iteration, one read and one write of each
+      of its bank's two row-parity memories; about half a unit's cycles a reflection, at P + 3
+      adders and 5 multipliers a unit instead of P + 1 and 3; docs/hls.md). ``fgc compile
+      --qr-rows``.
     - ``bind``: the floating-point operators' binding, ``((kind, implementation), …)``: ``add``
       ``fulldsp`` (the default, 2 DSP a float adder) or ``fabric`` (LUTs only); ``mul``
       ``maxdsp`` (the default, 3 DSP), ``fulldsp``, ``meddsp`` or ``fabric``
@@ -117,6 +124,7 @@ class DesignOptions:
     backsub_lanes: int | None = None
     cascade_lanes: int = 1
     hgc_third_lane: bool = False
+    qr_rows: int = 1
     bind: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self):
@@ -158,11 +166,21 @@ class DesignOptions:
         if self.qr_unit not in QR_UNITS:
             raise HlsConfigError(f"qr_unit {self.qr_unit!r}: expected one of "
                                  f"{', '.join(QR_UNITS)}")
+        if self.qr_rows not in QR_ROWS or isinstance(self.qr_rows, bool):
+            raise HlsConfigError(f"qr_rows must be one of {QR_ROWS} (the rows a cycle of the "
+                                 f"Householder unit's Update units), got {self.qr_rows!r}")
+        if self.qr_rows != 1 and self.qr_unit != "householder":
+            raise HlsConfigError(f"qr_rows={self.qr_rows}: the Householder unit's Update "
+                                 f"units (qr_unit householder), not qr_unit {self.qr_unit!r}")
         if program is not None:
             self.check_clock(program.solver.clock_mhz)
             if self.cascade_lanes != 1 and program.solver.linear != "cholesky":
                 raise HlsConfigError(f"cascade_lanes={self.cascade_lanes}: the lanes of the "
                                      "Cholesky cascade; this Program solves with "
+                                     f"{program.solver.linear}")
+            if self.qr_rows != 1 and program.solver.linear != "qr":
+                raise HlsConfigError(f"qr_rows={self.qr_rows}: the rows a cycle of the QR "
+                                     "unit's Update units; this Program solves with "
                                      f"{program.solver.linear}")
 
     def check_clock(self, clock_mhz: float) -> None:
@@ -200,7 +218,7 @@ class DesignOptions:
                     bind=self.bind,
                     precision=precision, les_precision=les_precision,
                     hgc_beside=bool(self.hgc_beside), cascade_lanes=int(self.cascade_lanes),
-                    hgc_third_lane=bool(self.hgc_third_lane))
+                    hgc_third_lane=bool(self.hgc_third_lane), qr_rows=int(self.qr_rows))
         if self.allocation:  # the design's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(self.allocation)}.items())
@@ -293,15 +311,16 @@ class HlsConfig(scalars.ScalarTypes):
     backsub_lanes: InitVar[int | None] = None
     cascade_lanes: InitVar[int | None] = None
     hgc_third_lane: InitVar[bool | None] = None
+    qr_rows: InitVar[int | None] = None
     bind: InitVar[tuple[tuple[str, str], ...] | None] = None
 
     def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside,
-                      backsub_lanes, cascade_lanes, hgc_third_lane, bind) -> None:
+                      backsub_lanes, cascade_lanes, hgc_third_lane, qr_rows, bind) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
         old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside, backsub_lanes,
-               cascade_lanes, hgc_third_lane, bind)
+               cascade_lanes, hgc_third_lane, qr_rows, bind)
         given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
                  if value is not None}
         if given:

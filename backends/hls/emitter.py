@@ -445,7 +445,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
-    option = f"n_u={units}, {sets} unit set(s)" if sets else f"cpe={plan.options.cpe}" + (
+    option = f"n_u={units}, {sets} unit set(s)" + (
+        f", {plan.options.qr_rows} rows a cycle" if plan.options.qr_rows > 1 else "") \
+        if sets else f"cpe={plan.options.cpe}" + (
         ", 2 cascades" if any(u.name == "cpe_set1" for u in plan.units) else "") + (
         f", {plan.options.cascade_lanes} lanes" if plan.options.cascade_lanes > 1 else "")
     network = [f"{len(procs)} processes, {len(streams)} streams ({option})"]
@@ -471,6 +473,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "retire_test": retire_step_test(program, plan.options),
             "small": shared, "banks": banks,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
+            "qr_rows": plan.options.qr_rows,  # fgc_qr.h's FGC_QR_TWO_ROWS (2)
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
             "bs_slots": _backsub_slots(program),
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
@@ -571,10 +574,8 @@ def _trial_var_end(program: Program, plan):
     loops is the plan's)."""
     from fgc_backends.hls.plan.assemble import PlanBuild
     from fgc_backends.hls.units.datapath import trial_var_end
-    les_precision = plan.options.les_precision or (
-        program.solver.les_precision if plan.options.precision is None else plan.precision)
     return trial_var_end(PlanBuild(program, plan.options, plan.ops,
-                                   plan.target.ops(les_precision)))
+                                   plan.target.ops(plan.options.precisions(program)[1])))
 
 
 def _trial_context(program: Program, contexts, blocks, phase: dict,

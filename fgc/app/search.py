@@ -6,10 +6,12 @@
 
 Each candidate is an emitted HLS design (:class:`Candidate`: linear solver, n_u, QR unit sets,
 #CPE, the factor datapaths' ``ALLOCATION`` scale, the floating-point operators' binding
-(``Space.binds``: DSP or fabric, ``HlsConfig.bind``), and any option the plan grows: the ``qr_unit``
-field of ``PlanOptions`` and ``DesignOptions`` is an axis over ``QR_UNITS``). Its speed is the
-accelerator plan's (``plan_cost(build_plan(program, PlanOptions.for_config(config, program)))``:
-cycles of one iteration); its fit is judged on honest figures:
+(``Space.binds``: DSP or fabric, ``HlsConfig.bind``), and any option the plan grows: the
+``qr_unit`` field of ``PlanOptions`` and ``DesignOptions`` is an axis over ``QR_UNITS``;
+``Space(extra=(("qr_rows", (1, 2)),))`` adds the Householder unit's rows a cycle,
+``HlsConfig.qr_rows``). Its speed is the accelerator plan's
+(``plan_cost(build_plan(program, PlanOptions.for_config(config, program)))``: cycles of one
+iteration); its fit is judged on honest figures:
 
 - **DSP** = max(the plan's DSP, the second reader's DSP of the emitted design:
   ``fgc_backends.hls.reader``, what Vitis would instantiate from the text, a lower bound). Once
@@ -224,6 +226,10 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
     extras = [()]
     for name, values in extra_axes:
         extras = [e + ((name, v),) for e in extras for v in values]
+    # the Update units' rows a cycle (an ``extra`` axis ``qr_rows``) are the Householder unit's:
+    # no design of the streaming unit with two
+    extras = [e for e in extras
+              if dict(e).get("qr_rows", 1) == 1 or dict(e).get("qr_unit") != "stream"]
     # back-substitution's width on either solver (None, the automatic width, is no option)
     widths = [() if b is None else (("backsub_lanes", b),) for b in space.backsub_lanes]
     out = []

@@ -213,17 +213,35 @@ FLAGS = ["-std=c++14", "-O1", "-ffp-contract=off", "-Wall", "-Wextra", "-Werror"
 DRIVER_OPS = table("float64", "7series", 200.0)
 
 
-@pytest.fixture(scope="module")
-def driver(tmp_path_factory):
+def _build_driver(tmp_path_factory, defines=()):
     d = tmp_path_factory.mktemp("hls_units")
     src = d / "driver.cpp"
     src.write_text(DRIVER)
     exe = d / "driver"
     # the synthesis view of the counters (empty macros) only needs the front end's warnings
     for extra in (["-DFGC_COUNT_CYCLES", "-o", str(exe)], ["-fsyntax-only"]):
-        r = subprocess.run(["g++", *FLAGS, *extra, str(src)], capture_output=True, text=True)
+        r = subprocess.run(["g++", *FLAGS, *defines, *extra, str(src)], capture_output=True,
+                           text=True)
         assert r.returncode == 0, r.stderr
     return exe
+
+
+@pytest.fixture(scope="module")
+def driver(tmp_path_factory):
+    return _build_driver(tmp_path_factory)
+
+
+@pytest.fixture(scope="module")
+def driver_two_rows(tmp_path_factory):
+    """The driver with fgc_qr.h's Update units two rows a cycle (FGC_QR_TWO_ROWS)."""
+    return _build_driver(tmp_path_factory, ("-DFGC_QR_TWO_ROWS",))
+
+
+@pytest.fixture(params=[1, 2], ids=["rows1", "rows2"])
+def qr_driver(request):
+    """(driver, rows): fgc_qr.h's Update units one row a cycle, and two (FGC_QR_TWO_ROWS)."""
+    name = "driver" if request.param == 1 else "driver_two_rows"
+    return request.getfixturevalue(name), request.param
 
 
 class Result:
@@ -293,7 +311,8 @@ def rand_stack(rng, rows, f, s):
 
 
 @pytest.mark.parametrize("units", [1, 4, 8])
-def test_qr_matches_kernel_and_numpy(driver, units):
+def test_qr_matches_kernel_and_numpy(qr_driver, units):
+    driver, _ = qr_driver
     rng = np.random.default_rng(10 + units)
     shapes = [(12, 3, 4), (30, 6, 9), (9, 5, 5), (4, 2, 1), (40, 12, 12)]
     cases = [("qr", units, rows, f, s, 0.0, rand_stack(rng, rows, f, s))
@@ -328,7 +347,8 @@ def test_qr_matches_kernel_and_numpy(driver, units):
         np.testing.assert_allclose(ours, sign[:, None] * rn[:n], rtol=0, atol=1e-12 * scale)
 
 
-def test_qr_singular_flags(driver):
+def test_qr_singular_flags(qr_driver):
+    driver, _ = qr_driver
     rng = np.random.default_rng(3)
     dep = rand_stack(rng, 15, 4, 3)
     dep[:, 2] = 2.0 * dep[:, 0] - dep[:, 1]  # a frontal column dependent on the others
@@ -347,7 +367,8 @@ def test_qr_singular_flags(driver):
     assert [r.left for r in res[:5]] == [0] * 5
 
 
-def test_qr_float32(driver):
+def test_qr_float32(qr_driver):
+    driver, _ = qr_driver
     rng = np.random.default_rng(5)
     a = rand_stack(rng, 18, 4, 5).astype(np.float32).astype(np.float64)
     (res,) = run(driver, [("qr", 40, 18, 4, 5, 0.0, a)])
@@ -512,10 +533,13 @@ def test_cpe_no_frontal_columns(driver):
 
 
 @pytest.mark.parametrize("units", [1, 4, 8])
-def test_plan_prices_the_qr_unit(driver, units):
+def test_plan_prices_the_qr_unit(qr_driver, units):
     """plan.qr_unit_loops (what plan.py's QR phases are made of) equals the counted cycles of
-    qr_step on a sparse stack: structural zeros, a child's trapezoid, damping rows."""
+    qr_step on a sparse stack: structural zeros, a child's trapezoid, damping rows (the Update
+    units one row a cycle and two)."""
     from fgc_backends.hls.units.qr import qr_unit_loops
+
+    driver, qr_rows = qr_driver
 
     rng = np.random.default_rng(40 + units)
     f, s = 6, 7
@@ -527,7 +551,7 @@ def test_plan_prices_the_qr_unit(driver, units):
     a = np.where(pattern, rng.standard_normal(pattern.shape), 0.0)
     a = np.hstack([a, rng.standard_normal((len(a), 1))])
     (res,) = run(driver, [("qr", units, len(a), f, s, 0.0, a)])
-    loops = qr_unit_loops(pattern, f, units, DRIVER_OPS, partials=12)
+    loops = qr_unit_loops(pattern, f, units, DRIVER_OPS, partials=12, qr_rows=qr_rows)
     assert res.cycles == sum(lp.cycles for lp in loops)
 
 

@@ -109,3 +109,105 @@ def test_one_step_rows_go_straight_into_the_banks_and_leave_the_first_stack():
     later = [n for n in mine if n.startswith("stack") and int(n[5:]) not in first
              and fb[int(n[5:]) + 1] > fb[int(n[5:])]]  # the later steps with factors of their own
     assert later and all("factor_rows" in mine[n] for n in later)
+
+
+# ---- two rows a cycle (PlanOptions / HlsConfig qr_rows = 2: fgc_qr.h's FGC_QR_TWO_ROWS) --------
+
+
+def test_two_rows_a_cycle_price_a_column_by_the_longer_row_parity_lane():
+    """qr_unit_loops(qr_rows=2): a reflection's words below the pivot go in two lanes by row
+    parity, so a dense step (lanes even) takes far fewer of the Update units' cycles, and a step
+    whose rows are all even (one lane holds every word) gains almost nothing."""
+    from fgc_backends.hls.plan import PlanError
+
+    def cycles(pattern, rows):
+        return sum(lp.cycles for lp in qr_unit_loops(pattern, 10, 4, FLOAT32, qr_rows=rows))
+
+    dense = np.ones((40, 20), dtype=bool)
+    assert cycles(dense, 2) < 0.75 * cycles(dense, 1)
+    even = dense.copy()
+    even[1::2] = False  # the odd rows empty: reflection j's words below the pivot all even
+    assert cycles(even, 1) >= cycles(even, 2) > 0.98 * cycles(even, 1)
+    with pytest.raises(PlanError, match="qr_rows 3"):
+        qr_unit_loops(dense, 10, 4, FLOAT32, qr_rows=3)
+
+
+def test_two_rows_a_cycle_cost_two_adders_and_two_multipliers_an_update_unit(two_ended):
+    """An Update unit's dot_axpy two rows an iteration: P + 3 adders and 5 multipliers (the
+    dot's two products and their sum, the fold, the scale, the axpy's two multiply-adds) where
+    one row takes P + 1 and 3; the Evaluate is unchanged; the broadcast's stream a pair wide."""
+    one = build_plan(two_ended, PlanOptions.of(two_ended, units=3))
+    two = build_plan(two_ended, PlanOptions.of(two_ended, units=3, qr_rows=2))
+    for s in range(2):
+        a, b = dict(one.unit(f"qr{s}_update").operators), dict(two.unit(f"qr{s}_update").operators)
+        assert (b["add"] - a["add"], b["mul"] - a["mul"]) == (2, 2)
+        assert b["mul"] == 5 and two.unit(f"qr{s}_update").instances == 3
+        assert two.unit(f"qr{s}_evaluate") == one.unit(f"qr{s}_evaluate")
+        width = {c.name: c.width for c in one.channels}
+        assert all(c.width == 2 * width[c.name] for c in two.channels
+                   if c.name.startswith(f"qr{s}_v") and c.name[len(f"qr{s}_v"):].isdigit())
+
+
+def test_qr_rows_is_checked_and_reaches_the_emitted_kernel(tmp_path):
+    """HlsConfig qr_rows: 1 or 2, the Householder unit's, a QR Program's; 2 defines
+    FGC_QR_TWO_ROWS before fgc_qr.h in the kernel and prices the plan with it; 1 (the default)
+    emits no such line."""
+    from fgc_backends.hls import emit
+    from fgc_backends.hls.config import DesignOptions, HlsConfig, HlsConfigError
+    from fgc_backends.hls.emitter import accel_plan
+
+    for bad, message in (({"qr_rows": 3}, "qr_rows must be one of"),
+                         ({"qr_rows": True}, "qr_rows must be one of"),
+                         ({"qr_rows": 2, "qr_unit": "stream"}, "not qr_unit 'stream'")):
+        with pytest.raises(HlsConfigError, match=message):
+            DesignOptions(**bad).check()
+    with pytest.raises(HlsConfigError, match="this Program solves with cholesky"):
+        HlsConfig(qr_rows=2).check(chain(4, linear="cholesky"))
+    program = chain(4, linear="qr")
+    two = emit(program, tmp_path / "two", HlsConfig(scalar="float", qr_rows=2))
+    text = (tmp_path / "two" / f"{two.name}.cpp").read_text()
+    assert text.index("#define FGC_QR_TWO_ROWS 1") < text.index('#include "fgc_qr.h"')
+    assert two.config.qr_rows == 2
+    assert accel_plan(program, two.config).options.qr_rows == 2
+    one = emit(program, tmp_path / "one", HlsConfig(scalar="float"))
+    assert "FGC_QR_TWO_ROWS" not in (tmp_path / "one" / f"{one.name}.cpp").read_text()
+
+
+# heavy (a double LIO design's C simulation and a float one's counting run, about a minute on
+# 2 cores): tests/hls/test_hls_units.py keeps the unit's results and counted cycles with two rows
+# a cycle in the default run
+@pytest.mark.heavy
+def test_two_rows_a_cycle_match_the_simulator_and_count_their_price(tmp_path):
+    """qr_rows=2 (FGC_QR_TWO_ROWS) in a whole design: the C simulation of LIO (LM, double, n_u
+    3, two unit sets) equals the simulator within 1e-9, and a Gauss-Newton float run's counted
+    cycles equal the plan's per phase within 2 %."""
+    import sys
+    from pathlib import Path
+
+    from test_hls_csim import _check_against_reference
+
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.datafile import problem_data
+    from fgc.ir.program import SolverConfig
+    from fgc_backends import sim
+    from fgc_backends.hls import HlsConfig, emit, run_csim
+
+    lio = example("lio")
+    graph = lio.build(N=6)
+    program = compile_graph(graph, SolverConfig(linear="qr", units=3), name="lio_rows")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", qr_rows=2))
+    assert "#define FGC_QR_TWO_ROWS 1" in (tmp_path / "lio_rows.cpp").read_text()
+    data = problem_data(graph, program)
+    reference = sim.run(program, data, precision="float64")
+    result = run_csim(project, program, data, reference)
+    _check_against_reference("lio_rows", program, result, reference, "double")
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
+    from bench_cycles import measure
+
+    solver = SolverConfig(method="gn", linear="qr", units=3, precision="float32")
+    phases, _ = measure("t", graph, solver, HlsConfig(scalar="float", qr_rows=2))
+    for g, (counted, model) in phases.items():
+        assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
+    assert phases["qr"][0] > 0

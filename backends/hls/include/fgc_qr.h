@@ -128,6 +128,31 @@ struct qr_word {
     int idx;
 };
 
+// Two words of a Householder vector a cycle (FGC_QR_TWO_ROWS: the Update units take two rows a
+// cycle): from the broadcast the header {0, 0, n, ne} (n active rows, ne of the words below the
+// pivot on even rows), then the pairs {v_e, v_o, row_e, row_o}, the t-th even-row and the t-th
+// odd-row word below the pivot (row -1: that lane has no t-th word).
+template <class T>
+struct qr_pair {
+    T v0, v1;
+    int r0, r1;
+};
+
+#ifdef FGC_QR_TWO_ROWS
+// the broadcast's words to the Update units: pairs; the vector's buffers (vin / vout) hold the
+// header, the pivot's slot and the words below the pivot by row parity, even rows at 2 + 2a and
+// odd rows at 3 + 2a (a lane has at most ceil(MAX_ROWS / 2) words: MAX_ROWS + 3 slots)
+template <class T>
+using qr_vq_word = qr_pair<T>;
+enum { QR_VEC_SLACK = 3 };
+#else
+// the broadcast's words to the Update units: one a cycle; the vector's buffers hold the header
+// and the words in row order (MAX_ROWS + 1 slots)
+template <class T>
+using qr_vq_word = qr_word<T>;
+enum { QR_VEC_SLACK = 1 };
+#endif
+
 // An example configuration (the emitted design defines its own with the step tables' maxima and
 // the operator table's latencies; plan.py prices the same constants).
 struct qr_config_example {
@@ -182,10 +207,39 @@ inline void qr_put(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_
 // words below the pivot (v_a = x_a, final as the Evaluate wrote them); the pivot's v_0 comes
 // from qr_finish, which computes it meanwhile. The Evaluate, when there is a next column (j + 1
 // < k), gets the header only (evq): it wrote the vector itself, and keeps its own copy by row.
+// With FGC_QR_TWO_ROWS two words a cycle: the header {0, 0, n, ne}, then the pairs of words
+// below the pivot by row parity (vin's slots 2 + 2a and 3 + 2a, the Evaluate's lanes):
+// iteration a reads slots 2a and 2a + 1 (a = 0: the header and the pivot's slot, whose idx is
+// ne); trip 1 + max(ne, no).
 template <class CFG>
-void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1], int j, int k,
-                  hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
+void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + QR_VEC_SLACK], int j, int k,
+                  hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS],
                   hls::stream<qr_word<typename CFG::T> >& evq) {
+#ifdef FGC_QR_TWO_ROWS
+    typedef typename CFG::T T;
+    const bool to_eval = j + 1 < k;  // a next pivot column: the Evaluate runs
+    const int n = vin[0].idx;
+    const int below = n > 1 ? n - 1 : 0;
+    const int ne = n > 1 ? vin[1].idx : 0, no = below - ne;
+    const int words = 1 + (ne > no ? ne : no);  // the header, then max(ne, no) pairs
+    // trip 1 + max(ne, no), II 1, depth 2 (read, write)
+    for (int a = 0; a < words; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+        const qr_word<T> x0 = vin[2 * a], x1 = vin[2 * a + 1];
+        qr_pair<T> x;
+        x.v0 = a == 0 ? T(0) : x0.val;
+        x.v1 = a == 0 ? T(0) : x1.val;
+        x.r0 = a == 0 ? n : (a - 1 < ne ? x0.idx : -1);
+        x.r1 = a == 0 ? ne : (a - 1 < no ? x1.idx : -1);
+        for (int u = 0; u < CFG::N_UNITS; ++u) {
+#pragma HLS UNROLL
+            vq[u].write(x);
+        }
+        if (to_eval && a == 0) evq.write(x0);  // the header only: the Evaluate keeps its own copy
+    }
+    FGC_CYCLES("qr_broadcast", 0, "vector", words, 1, 2);
+#else
     const bool to_eval = j + 1 < k;  // a next pivot column: the Evaluate runs
     const int n = vin[0].idx;
     const int words = n > 0 ? n : 1;
@@ -201,6 +255,7 @@ void qr_broadcast(const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1], int j, 
         if (to_eval && a == 0) evq.write(x);  // the header only: the Evaluate keeps its own copy
     }
     FGC_CYCLES("qr_broadcast", 0, "vector", words, 1, 2);
+#endif
 }
 
 // The Evaluate's tail, while the vector streams: from the column's squared norm and pivot (hin:
@@ -275,11 +330,254 @@ void qr_finish(const qr_word<typename CFG::T> hin[2], int k,
 // diagnostic is silenced for this function only (Vitis ignores GCC pragmas).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+// With FGC_QR_TWO_ROWS, two rows a cycle: the reflection's active rows in two lanes by row parity,
+// lane 0 the even rows (the bank's even-row memory), lane 1 the odd rows (its odd-row memory):
+// the broadcast's pairs give lane L's words below the pivot at positions 0 ... n_L - 1, and the
+// pivot's word (row j, v_0 from qr_finish) is the last position, q - 1, of lane j & 1, q = the
+// longer lane's words with the pivot. A column is q iterations of dot_axpy, each one read and
+// one write of each memory; a position a lane has no word at is skipped (row -1).
 template <class CFG, int U>
-void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CFG::T> >& vin,
+void qr_update(int j, int rows, int cols, int k, hls::stream<qr_vq_word<typename CFG::T> >& vin,
                hls::stream<qr_word<typename CFG::T> >& tin,
                typename CFG::T bank[CFG::MAX_ROWS][CFG::LOCAL_COLS],
                hls::stream<typename CFG::T> colout[2], hls::stream<typename CFG::T>& rowout) {
+#ifdef FGC_QR_TWO_ROWS
+    typedef typename CFG::T T;
+    const int P = CFG::PARTIALS;
+    static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
+    static_assert(CFG::FOLD_LAT == CFG::ADD_LAT * ceil_log2(CFG::PARTIALS) + CFG::MUL_LAT,
+                  "FOLD_LAT = ADD_LAT ceil(log2 PARTIALS) + MUL_LAT: a column's fold and scale");
+    // the dot_axpy loop's lags (iterations at II 1): a pair's dot product (two products, their
+    // sum) lands in its partial sum QR_DOT_LAT after it is read; a column's fold and scale take
+    // CFG::FOLD_LAT
+    enum {
+        QR_DOT_LAT = CFG::MUL_LAT + 2 * CFG::ADD_LAT,
+        QR_LANE = CFG::MAX_ROWS / 2 + 1,  // positions of a lane
+        QR_HELD = 1 << ceil_log2(QR_LANE + QR_DOT_LAT + CFG::FOLD_LAT)  // > lag
+    };
+    // the vector in two copies per lane, one for the dot's reads and one for the axpy's (each
+    // copy one write and one read an iteration of dot_axpy: a dual-port memory), by position:
+    // value and row (-1: no word at that position of the lane)
+    T vd0[QR_LANE], vd1[QR_LANE], vx0[QR_LANE], vx1[QR_LANE];
+    int rd0[QR_LANE], rd1[QR_LANE], rx0[QR_LANE], rx1[QR_LANE];
+    const qr_pair<T> head = vin.read();  // {0, 0, n, ne}
+    const int n = head.r0;
+    FGC_CYCLES("qr_update", U, "header", 1, 1, 1);
+    const int below = n > 1 ? n - 1 : 0;
+    const int ne = n > 1 ? head.r1 : 0, no = below - ne;  // words below the pivot by parity
+    const int bq = ne > no ? ne : no;  // the broadcast's pairs
+    const int pj = j & 1;  // the pivot's lane (n > 1: j >= 0)
+    const int n0 = ne + (pj == 0 ? 1 : 0), n1 = no + (pj == 1 ? 1 : 0);
+    // a column's iterations: the longer lane, at least 2 (the first column's words, kept in
+    // vd0 / vd1, are read again a column later: DEPENDENCE distance 2)
+    const int q = n0 > n1 ? (n0 > 2 ? n0 : 2) : (n1 > 2 ? n1 : 2);
+    // this unit's first column right of j; it is the next pivot column if it is j + 1 < k
+    const int c0 = j + 1 + ((U - (j + 1)) % CFG::N_UNITS + CFG::N_UNITS) % CFG::N_UNITS;
+    const bool next_here = c0 == j + 1 && c0 < k;
+    const int l0 = c0 / CFG::N_UNITS;
+    // the unit's other columns right of j: local columns lb ... lb + r - 1
+    const int lb = next_here ? l0 + 1 : l0;
+    const int r = c0 < cols ? (cols - 1 - U) / CFG::N_UNITS - lb + 1 : 0;
+    // a reflection to apply to columns here: dot_axpy
+    const bool fused = n > 1 && r > 0;
+    // the broadcast's pairs read before dot_axpy (by the column loop below)
+    int pre = 0;
+    if (next_here) {
+        // The next pivot column goes to the Evaluate as it is now (rows j0 ... rows - 1, j0 =
+        // max(j, 0)), row i on colout[i & 1], and is zeroed here (as in the one-row unit).
+        const int j0 = j > 0 ? j : 0;
+        if (fused) {
+            // the aligned pairs (2p, 2p + 1) while the broadcast's pairs arrive, one an
+            // iteration (kept for dot_axpy): trip ceil(rows / 2) - floor(j0 / 2), II 1, depth 2
+            enum { MAX_PAIRS = CFG::MAX_ROWS / 2 + 1 };  // pragma constants: enums
+            const int p0 = j0 / 2, pairs = (rows + 1) / 2 - p0;
+            for (int t = 0; t < pairs; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_PAIRS
+#pragma HLS PIPELINE II=1
+                if (t < bq) {
+                    const qr_pair<T> x = vin.read();
+                    vd0[t] = x.v0;
+                    vx0[t] = x.v0;
+                    rd0[t] = x.r0;
+                    rx0[t] = x.r0;
+                    vd1[t] = x.v1;
+                    vx1[t] = x.v1;
+                    rd1[t] = x.r1;
+                    rx1[t] = x.r1;
+                }
+                if (2 * (p0 + t) >= j0) {
+                    colout[0].write(bank[2 * (p0 + t)][l0]);
+                    bank[2 * (p0 + t)][l0] = T(0);
+                }
+                if (2 * (p0 + t) + 1 < rows) {
+                    colout[1].write(bank[2 * (p0 + t) + 1][l0]);
+                    bank[2 * (p0 + t) + 1][l0] = T(0);
+                }
+            }
+            pre = bq < pairs ? bq : pairs;
+            FGC_CYCLES("qr_update", U, "vector_column", pairs, 1, 2);
+        } else {
+            // no dot_axpy after it: one row a cycle while the pairs arrive (bq < rows - j0):
+            // trip rows - j0, II 1, depth 2
+            for (int t = 0; t < rows - j0; ++t) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+                if (t < bq) vin.read();
+                const T x = bank[j0 + t][l0];
+                if (((j0 + t) & 1) == 0) colout[0].write(x);
+                if (((j0 + t) & 1) == 1) colout[1].write(x);
+                bank[j0 + t][l0] = T(0);
+            }
+            FGC_CYCLES("qr_update", U, "vector_column", rows - j0, 1, 2);
+        }
+    } else if (!fused) {
+        // the broadcast's pairs, not needed here: trip max(ne, no), II 1, depth 1
+        for (int a = 0; a < bq; ++a) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
+#pragma HLS PIPELINE II=1
+            vin.read();
+        }
+        FGC_CYCLES("qr_update", U, "vector", bq, 1, 1);
+    }
+    if (!fused) {
+        // v_0 and tau from qr_finish (it waits for the square root, then the divide)
+        FGC_WAIT("qr_update", U, "qr_finish", 0, "v0");
+        tin.read();
+        FGC_CYCLES("qr_update", U, "pivot_word", 1, 1, 1);
+        FGC_WAIT("qr_update", U, "qr_finish", 0, "tau");
+        tin.read();
+        FGC_CYCLES("qr_update", U, "tail", 1, 1, 1);
+        if (r <= 0 || j < 0) return;
+        // no reflection (an all-zero column: row j as it is) or the pivot row's negation (one
+        // active row), each entry to the collector (0 in the bank): trip r, II 1, depth 1
+        for (int l = lb; l < lb + r; ++l) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::LOCAL_COLS
+#pragma HLS PIPELINE II=1
+            const T x = n == 1 ? T(-bank[j][l]) : bank[j][l];
+            bank[j][l] = T(0);
+            rowout.write(x);
+        }
+        FGC_CYCLES("qr_update", U, n == 1 ? "negate_rows" : "rows_out", r, 1, 1);
+        return;
+    }
+    // dot_axpy two rows a cycle: the one-row unit's three streams (dot, fold, axpy; see its
+    // comment), each a pair of words an iteration, position a of column l at rows rd0[a] (the
+    // even-row memory) and rd1[a] (the odd-row memory); the pair's two products are added before
+    // the partial of the iteration, so a partial is met again P >= La iterations later; the
+    // axpy writes both rows (one write of each memory, beside the dot's one read of each).
+    // trip q r + lag, lag = q - 1 + QR_DOT_LAT + FOLD_LAT, II 1, depth Lm + La; v_0 in iteration
+    // q - 1, tau in iteration q - 1 + QR_DOT_LAT (FGC_WAIT_AFTER)
+    enum { MAX_BATCH = QR_LANE * CFG::LOCAL_COLS + QR_HELD };  // pragma constants
+    T part[CFG::LOCAL_COLS][P];
+#pragma HLS ARRAY_PARTITION variable=part complete dim=0
+    T scaled[CFG::LOCAL_COLS];
+    T held0[QR_HELD], held1[QR_HELD];  // the dot's words until their axpy
+    const int words = q * r;
+    const int lag = q - 1 + QR_DOT_LAT + CFG::FOLD_LAT;
+    T tau = T(0);
+    int ld = lb, ad = 0, lq = lb, aq = 0, lx = lb, ax = 0;
+    FGC_WAIT_AFTER("qr_update", U, "qr_finish", 0, "v0", words + lag - q);
+    FGC_WAIT_AFTER("qr_update", U, "qr_finish", 0, "tau", words + lag - q - QR_DOT_LAT);
+    for (int e = 0; e < words + lag; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=MAX_BATCH
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
+#pragma HLS DEPENDENCE variable=scaled inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=held0 inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=held1 inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=vd0 inter true distance=2
+#pragma HLS DEPENDENCE variable=vd1 inter true distance=2
+#pragma HLS DEPENDENCE variable=rd0 inter true distance=2
+#pragma HLS DEPENDENCE variable=rd1 inter true distance=2
+#pragma HLS DEPENDENCE variable=vx0 inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=vx1 inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=rx0 inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=rx1 inter true distance=CFG::FOLD_LAT
+#pragma HLS DEPENDENCE variable=bank inter false
+        if (e < words) {  // dot: position ad of column ld
+            // the position's words: the first column's as they arrive, then kept
+            T va0 = vd0[ad], va1 = vd1[ad];
+            int row0 = rd0[ad], row1 = rd1[ad];
+            if (e < q) {
+                if (e >= pre && e < bq) {  // not read by the column loop: the dot takes it
+                    const qr_pair<T> w = vin.read();
+                    va0 = w.v0;
+                    va1 = w.v1;
+                    row0 = w.r0;
+                    row1 = w.r1;
+                } else if (e >= bq) {  // past the broadcast's pairs: no word in either lane
+                    row0 = -1;
+                    row1 = -1;
+                }
+                if (e == q - 1) {  // the pivot's word (row j, lane j & 1), last
+                    const T v0 = tin.read().val;
+                    if (pj == 0) {
+                        va0 = v0;
+                        row0 = j;
+                    } else {
+                        va1 = v0;
+                        row1 = j;
+                    }
+                }
+                vd0[e] = va0;
+                rd0[e] = row0;
+                vx0[e] = va0;
+                rx0[e] = row0;
+                vd1[e] = va1;
+                rd1[e] = row1;
+                vx1[e] = va1;
+                rx1[e] = row1;
+            }
+            // the row pair's halves (a lane without a word reads its memory's row 0 or 1)
+            const int h0 = row0 >= 0 ? row0 / 2 : 0, h1 = row1 >= 0 ? row1 / 2 : 0;
+            const T x0 = bank[2 * h0][ld];
+            const T x1 = bank[2 * h1 + 1][ld];
+            held0[e & (QR_HELD - 1)] = x0;
+            held1[e & (QR_HELD - 1)] = x1;
+            const T term = T((row0 >= 0 ? T(va0 * x0) : T(0)) + (row1 >= 0 ? T(va1 * x1) : T(0)));
+            part[ld][ad % P] = ad < P ? term : T(part[ld][ad % P] + term);
+            if (ad == q - 1) {
+                ad = 0;
+                ++ld;
+            } else {
+                ++ad;
+            }
+        }
+        if (e >= QR_DOT_LAT && e < words + QR_DOT_LAT) {  // fold: position e - QR_DOT_LAT
+            if (aq == q - 1) {
+                if (lq == lb) tau = tin.read().val;  // the first fold: tau
+                T p[P];
+#pragma HLS ARRAY_PARTITION variable=p complete
+                for (int t = 0; t < P; ++t) {
+#pragma HLS UNROLL
+                    p[t] = t < q ? part[lq][t] : T(0);
+                }
+                scaled[lq] = tau * fold_partials<T, P>(p);
+                aq = 0;
+                ++lq;
+            } else {
+                ++aq;
+            }
+        }
+        if (e >= lag) {  // axpy: position e - lag (each entry written once)
+            const int w0 = rx0[ax], w1 = rx1[ax];
+            const T y0 = held0[(e - lag) & (QR_HELD - 1)] - scaled[lx] * vx0[ax];
+            const T y1 = held1[(e - lag) & (QR_HELD - 1)] - scaled[lx] * vx1[ax];
+            // row j (the pivot's position, a = q - 1 of lane j & 1) to the collector, 0 in the bank
+            const int g0 = w0 >= 0 ? w0 / 2 : 0, g1 = w1 >= 0 ? w1 / 2 : 0;
+            if (w0 >= 0) bank[2 * g0][lx] = w0 == j ? T(0) : y0;
+            if (w1 >= 0) bank[2 * g1 + 1][lx] = w1 == j ? T(0) : y1;
+            if (ax == q - 1) rowout.write(pj == 0 ? y0 : y1);
+            if (ax == q - 1) {
+                ax = 0;
+                ++lx;
+            } else {
+                ++ax;
+            }
+        }
+    }
+    FGC_CYCLES("qr_update", U, "dot_axpy", words + lag, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+#else
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the dot loops run at II 1");
@@ -502,6 +800,7 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
         }
     }
     FGC_CYCLES("qr_update", U, "dot_axpy", words + lag, 1, CFG::MUL_LAT + CFG::ADD_LAT);
+#endif
 }
 #pragma GCC diagnostic pop
 
@@ -509,7 +808,7 @@ void qr_update(int j, int rows, int cols, int k, hls::stream<qr_word<typename CF
 template <class CFG, int U, bool END = (U == CFG::N_UNITS)>
 struct qr_update_units {
     static void run(int j, int rows, int cols, int k,
-                    hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS],
+                    hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS],
                     hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS],
                     typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
                     hls::stream<typename CFG::T> colq[CFG::N_UNITS][2],
@@ -522,7 +821,7 @@ struct qr_update_units {
 
 template <class CFG, int U>
 struct qr_update_units<CFG, U, true> {
-    static void run(int, int, int, int, hls::stream<qr_word<typename CFG::T> >*,
+    static void run(int, int, int, int, hls::stream<qr_vq_word<typename CFG::T> >*,
                     hls::stream<qr_word<typename CFG::T> >*,
                     typename CFG::T (*)[CFG::MAX_ROWS][CFG::LOCAL_COLS],
                     hls::stream<typename CFG::T> (*)[2], hls::stream<typename CFG::T>*) {
@@ -537,7 +836,8 @@ struct qr_update_units<CFG, U, true> {
 // 0 elsewhere: the pass clears the rows it passes, j0 ... rows - 1).
 template <class CFG>
 inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typename CFG::T>& exq,
-                         qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1], int& m,
+                         qr_word<typename CFG::T> vout[CFG::MAX_ROWS + QR_VEC_SLACK], int& m,
+                         int& me, int& mo,
                          typename CFG::T& pivot, typename CFG::T part[CFG::PARTIALS],
                          typename CFG::T evec[CFG::MAX_ROWS]) {
 #pragma HLS INLINE
@@ -545,11 +845,25 @@ inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typ
     const int col = j + 1;
     if (i == j) exq.write(e);  // row j's entry in column j + 1 to the collector
     if (i == col) pivot = e;
+#ifdef FGC_QR_TWO_ROWS
+    // by row parity (the broadcast's lanes): the pivot at 1, even rows at 2 + 2a, odd at 3 + 2a
+    if (i == col || (i > col && e != T(0))) {
+        const int slot = i == col ? 1 : ((i & 1) == 0 ? 2 + 2 * me : 3 + 2 * mo);
+        vout[slot].val = e;
+        vout[slot].idx = i;
+        ++m;
+        if (i > col && (i & 1) == 0) ++me;
+        if (i > col && (i & 1) == 1) ++mo;
+    }
+#else
+    (void)me;
+    (void)mo;
     if (i == col || (i > col && e != T(0))) {
         vout[1 + m].val = e;
         vout[1 + m].idx = i;
         ++m;
     }
+#endif
     evec[i] = i > col ? e : T(0);
     if (i >= col) part[t % CFG::PARTIALS] += e * e;
 }
@@ -594,7 +908,7 @@ template <class CFG>
 void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS][2],
                  hls::stream<qr_word<typename CFG::T> >& evq,
                  hls::stream<qr_word<typename CFG::T> >& etq, hls::stream<typename CFG::T>& exq,
-                 qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1],
+                 qr_word<typename CFG::T> vout[CFG::MAX_ROWS + QR_VEC_SLACK],
                  qr_word<typename CFG::T> hout[2], typename CFG::T evec[CFG::MAX_ROWS]) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
@@ -616,6 +930,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
         part[t] = T(0);
     }
     int m = 0;
+    int me = 0, mo = 0;  // (two rows a cycle) the words below the pivot on even / odd rows
     T pivot = T(0);
     if (n <= 1) {
         // nothing to apply but, with one active row, the pivot row's negation (exact): the
@@ -628,8 +943,8 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
             const int i = j0 + t;
             const T e = qr_owner_word<CFG>(colq, owner, i & 1);
-            qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, exq, vout, m, pivot, part,
-                              evec);
+            qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, exq, vout, m, me, mo, pivot,
+                              part, evec);
         }
         FGC_CYCLES("qr_evaluate", 0, "receive_norm", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     } else {
@@ -728,6 +1043,26 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
             if (i1 == col) pivot = e1;
             const bool o0 = i0 == col || (i0 > col && e0 != T(0));
             const bool o1 = i1 == col || (i1 > col && e1 != T(0));
+#ifdef FGC_QR_TWO_ROWS
+            // by row parity (the broadcast's lanes): the pivot at 1, even rows at 2 + 2a, odd
+            // rows at 3 + 2a
+            const bool b0 = o0 && i0 > col, b1 = o1 && i1 > col;
+            const int s0 = i0 == col ? 1 : ((i0 & 1) == 0 ? 2 + 2 * me : 3 + 2 * mo);
+            const int me1 = b0 && (i0 & 1) == 0 ? me + 1 : me;
+            const int mo1 = b0 && (i0 & 1) == 1 ? mo + 1 : mo;
+            const int s1 = i1 == col ? 1 : ((i1 & 1) == 0 ? 2 + 2 * me1 : 3 + 2 * mo1);
+            if (o0) {
+                vout[s0].val = e0;
+                vout[s0].idx = i0;
+            }
+            if (o1) {
+                vout[s1].val = e1;
+                vout[s1].idx = i1;
+            }
+            me = b1 && (i1 & 1) == 0 ? me1 + 1 : me1;
+            mo = b1 && (i1 & 1) == 1 ? mo1 + 1 : mo1;
+            m += (o0 ? 1 : 0) + (o1 ? 1 : 0);
+#else
             if (o0) {
                 vout[1 + m].val = e0;
                 vout[1 + m].idx = i0;
@@ -738,6 +1073,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
                 vout[1 + m1].idx = i1;
             }
             m = o1 ? m1 + 1 : m1;
+#endif
             if (i0 > col) evec[i0] = e0;
             if (i1 > col) evec[i1] = e1;
             part[t % P] += T((i0 >= col ? T(e0 * e0) : T(0)) + (i1 >= col ? T(e1 * e1) : T(0)));
@@ -760,6 +1096,9 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     if (!(norm2 > T(0))) m = 0;
     vout[0].val = T(0);
     vout[0].idx = m;
+#ifdef FGC_QR_TWO_ROWS
+    vout[1].idx = me;  // the pivot's slot: how many of the words below it are on even rows
+#endif
     hout[0].val = norm2;
     hout[0].idx = m;
     hout[1].val = pivot;
@@ -816,9 +1155,9 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
 // One reflection: the DATAFLOW region (see the top of the file).
 template <class CFG>
 void qr_reflection(int j, int rows, int f, int s, int cols, int k,
-                   const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + 1],
+                   const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + QR_VEC_SLACK],
                    const qr_word<typename CFG::T> hin[2],
-                   qr_word<typename CFG::T> vout[CFG::MAX_ROWS + 1],
+                   qr_word<typename CFG::T> vout[CFG::MAX_ROWS + QR_VEC_SLACK],
                    qr_word<typename CFG::T> hout[2],
                    typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
                    typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
@@ -826,7 +1165,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    typename CFG::T* scale, typename CFG::T evec[CFG::MAX_ROWS]) {
 #pragma HLS DATAFLOW
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
-    hls::stream<qr_word<typename CFG::T> > vq[CFG::N_UNITS];
+    hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS];
 #pragma HLS STREAM variable=vq depth=V_DEPTH
     hls::stream<qr_word<typename CFG::T> > tq[CFG::N_UNITS];
 #pragma HLS STREAM variable=tq depth=2
@@ -896,7 +1235,7 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
     // the reflector's two buffers (vector va / vb, norm and pivot ha / hb): region j reads va, ha
     // and writes vb, hb for even j + 1, the other way round for odd j + 1 (a ping-pong between
     // regions, no buffer read and written in one)
-    qr_word<T> va[CFG::MAX_ROWS + 1], vb[CFG::MAX_ROWS + 1], ha[2], hb[2];
+    qr_word<T> va[CFG::MAX_ROWS + QR_VEC_SLACK], vb[CFG::MAX_ROWS + QR_VEC_SLACK], ha[2], hb[2];
     va[0].val = T(0);  // region -1 reads va, ha: an empty reflection
     va[0].idx = 0;
     ha[0].val = T(0);

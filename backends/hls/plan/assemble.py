@@ -91,9 +91,7 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     the registered units that apply, in the registry's order, their phases by iteration slot."""
     opts = options or PlanOptions.of(program)
     check_options(opts)
-    precision = opts.precision or program.solver.precision
-    les_precision = opts.les_precision or (program.solver.les_precision if opts.precision is None
-                                           else precision)
+    precision, les_precision = opts.precisions(program)
     target = target_of(opts.part, program.solver.clock_mhz, opts.bind)
     ctx = PlanBuild(program, opts, target.ops(precision), target.ops(les_precision))
     for unit in unit_registry.REGISTRY:

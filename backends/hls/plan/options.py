@@ -44,6 +44,8 @@ CASCADE_LANES = (1, 2)  # PlanOptions.cascade_lanes: fgc_cpe.h's STREAM_WORDS
 
 QR_UNITS = ("householder", "stream")  # PlanOptions.qr_unit: fgc_qr.h, fgc_qr_stream.h
 
+QR_ROWS = (1, 2)  # PlanOptions.qr_rows: fgc_qr.h's Update units one row a cycle, or two
+
 
 @dataclass(frozen=True)
 class PlanOptions:
@@ -53,6 +55,9 @@ class PlanOptions:
     # the QR unit set: "householder" (fgc_qr.h, one region per reflection) or "stream"
     # (fgc_qr_stream.h, n_u reflection stages the matrix streams through; units/qr_stream.py)
     qr_unit: str = "householder"
+    # the Householder unit's Update units: 1 row a cycle, or 2 (fgc_qr.h's FGC_QR_TWO_ROWS: the
+    # vector in two lanes by row parity, dot_axpy a row pair an iteration; units/qr.py)
+    qr_rows: int = 1
     allocation: tuple[tuple[str, int], ...] = DEFAULT_ALLOCATION
     # how a block type's datapath gets its share of ``allocation``: "instances" (default): the
     # heaviest type (most operations × instances) gets the limits, every other type
@@ -112,6 +117,15 @@ class PlanOptions:
         if self.state_limits is not None:
             return self.state_limits
         return STATE_ALLOCATION_COLUMNS if self.backsub_lanes == 4 else STATE_ALLOCATION
+
+    def precisions(self, program: Program) -> tuple[str, str]:
+        """The design's (scalar, linear solver) precisions: these options' if set, else the
+        Program's; a design emitted in one scalar (``precision`` set, ``les_precision`` not)
+        solves in that scalar too."""
+        precision = self.precision or program.solver.precision
+        les = self.les_precision or (program.solver.les_precision if self.precision is None
+                                     else precision)
+        return precision, les
 
     @classmethod
     def of(cls, program: Program, **changes) -> PlanOptions:

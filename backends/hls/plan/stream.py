@@ -220,7 +220,7 @@ def _stream_phase(name: str, *loops: Loop) -> Phase:
 
 def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
                     unit: frozenset = frozenset(),
-                    drop: frozenset = frozenset()) -> tuple[Phase, ...]:
+                    drop: frozenset = frozenset(), qr_rows: int = 1) -> tuple[Phase, ...]:
     """The QR unit sets' DATAFLOW regions of one linear solve of template ``t`` (every level's,
     the plan's assignment of a level's steps to ``sets`` unit sets) with the rows of the
     ``zero`` template factors and, unless ``damped``, the √μ rows zero: the Evaluate unit skips
@@ -228,7 +228,8 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
     template factors (priors holding a slot under R = I at its linearisation point: their
     whitened rows are the identity) have one non-zero a row, on their own tangent direction.
     ``leaf``: that step alone on unit set 0, without the rows of the ``drop`` factor instances
-    (not stacked: qr_eliminate_all's live leaf step)."""
+    (not stacked: qr_eliminate_all's live leaf step). ``qr_rows``: the Update units' rows a
+    cycle (PlanOptions.qr_rows)."""
     lm = t.solver.method == "lm"
     units = max(1, t.solver.units)
     procs, passed = {}, {}
@@ -267,7 +268,7 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
         if dropped:
             pattern = np.delete(pattern, dropped, axis=0)
         procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
-            pattern, st.frontal_dim, units, les, name=f"s{st.index}")))
+            pattern, st.frontal_dim, units, les, name=f"s{st.index}", qr_rows=qr_rows)))
     if leaf is not None:
         return (Phase("qr_leaf", True, (procs[leaf],), linear=True),)
     phases = []
@@ -302,8 +303,8 @@ def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf
                     unit: frozenset = frozenset(), drop: frozenset = frozenset()) -> int:
     """``plan_cost`` of ``plan`` (a design holding the QR unit sets) running
     :func:`qr_solve_phases` as its iteration."""
-    return plan_cost(replace(plan, phases=qr_solve_phases(t, zero, damped, sets, les, leaf,
-                                                          unit, drop))).cycles
+    return plan_cost(replace(plan, phases=qr_solve_phases(
+        t, zero, damped, sets, les, leaf, unit, drop, plan.options.qr_rows))).cycles
 
 
 def _relinearize(ev: dict) -> int:

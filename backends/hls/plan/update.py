@@ -117,9 +117,7 @@ class UpdateModel:
         self.options = replace(options or PlanOptions.of(program), hgc_beside=False)
         self.plan = build_plan(program, self.options)
         self.ops = self.plan.ops  # the accelerator's scalar, and the linear solver's (plan's)
-        self.les = self.plan.target.ops(self.options.les_precision or (
-            program.solver.les_precision if self.options.precision is None
-            else self.plan.precision))
+        self.les = self.plan.target.ops(self.options.precisions(program)[1])
         self.rate = transfer_words_per_cycle
         self.qr = program.solver.linear == "qr"
         self.damping = program.solver.method == "lm"
@@ -485,7 +483,8 @@ class UpdateModel:
                     tables, s, self.options.units, self.max_w, damping, lt))))
                 phases.append(Phase(f"qr_stack_level{s}", False, tuple(stack), linear=True))
                 loops = qr_unit_loops(self.step_pattern(first, last, c, damping), self.cdim[c],
-                                      self.options.units, self.les, name=f"s{c}")
+                                      self.options.units, self.les, name=f"s{c}",
+                                      qr_rows=self.options.qr_rows)
                 phases.append(Phase(f"qr_level{s}", True, (
                     Process(f"qr{s}_set0", "set0", tuple(loops)),), linear=True))
                 phases.append(Phase(f"qr_commit_level{s}", False, (Process(

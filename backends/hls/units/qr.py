@@ -16,6 +16,7 @@ from fgc_backends.hls.plan.binding import BoundLoop, bound_unit
 from fgc_backends.hls.plan.cost import phase_cycles
 from fgc_backends.hls.plan.loops import _assign, _ported, _region_cycles, kernel_loop
 from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, PlanError, Process
+from fgc_backends.hls.plan.options import QR_ROWS  # fgc_qr.h's Update units: rows a cycle
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
 
@@ -33,16 +34,24 @@ def reflection_rows(pattern) -> tuple[int, int, int, list[int], list[int]]:
     """:func:`active_rows`, and per reflection j < k the rows the Evaluate keeps of column j + 1
     for its update pass (fgc_qr.h's qr_evaluate): row j, row j + 1, reflection j's active rows
     and the rows j ... non-zero in column j + 1 before it (0 where j + 1 = cols)."""
+    return reflection_lanes(pattern)[:5]
+
+
+def reflection_lanes(pattern) -> tuple[int, int, int, list[int], list[int], list[int]]:
+    """:func:`reflection_rows`, and per reflection j < k how many of its active rows below the
+    pivot are even rows (the rest are odd): the two lanes of the Update units two rows a cycle
+    (fgc_qr.h with FGC_QR_TWO_ROWS)."""
     nz = np.hstack([np.asarray(pattern, dtype=bool),
                     np.ones((len(pattern), 1), dtype=bool)])
     rows, cols = nz.shape
     k = min(rows, cols)
-    active, kept = [], []
+    active, kept, even = [], [], []
     for j in range(k):
         rows_j = [i for i in range(j, rows) if nz[i, j]]
         act = sorted(set(rows_j) | {j}) if rows_j else []
         kept.append(len({i for i in range(j, rows) if nz[i, j + 1]} | set(act) | {j, j + 1})
                     if j + 1 < cols else 0)
+        even.append(sum(1 for i in act if i > j and i % 2 == 0))
         if not rows_j:
             active.append(0)  # all zero: skipped
             continue
@@ -51,11 +60,11 @@ def reflection_rows(pattern) -> tuple[int, int, int, list[int], list[int]]:
         nz[act, j] = False
         nz[j, j] = True
         active.append(len(act))
-    return rows, cols, k, active, kept
+    return rows, cols, k, active, kept, even
 
 
 def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
-                  partials: int | None = None, name: str = "s") -> list[Loop]:
+                  partials: int | None = None, name: str = "s", qr_rows: int = 1) -> list[Loop]:
     """The loops of ``qr_step`` (backends/hls/include/fgc_qr.h) on one step, as it executes them.
 
     ``pattern``: the structural rows × (f + s) non-zeros of the stacked matrix (the right-hand
@@ -67,17 +76,34 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     header's FGC_CYCLES / FGC_WAIT counters), then the pivot check. The Evaluate applies
     reflection j to the next pivot column, so its unit does no more than the others.
     ``partials`` is the header's CFG::PARTIALS (default: the adder latency, II 1).
+    ``qr_rows`` 2: the Update units two rows a cycle (FGC_QR_TWO_ROWS): the vector in two lanes
+    by row parity, the broadcast a pair a cycle, ``dot_axpy`` q iterations a column (q the
+    longer lane with the pivot, at least 2) and its pair's products summed before the partial.
     """
+    if qr_rows not in QR_ROWS:
+        raise PlanError(f"qr_rows {qr_rows!r}: expected one of {QR_ROWS}")
     la, lm, ld, ls = ops.add.latency, ops.mul.latency, ops.div.latency, ops.sqrt.latency
     p = partials if partials is not None else la
-    rows, cols, k, active, kept = reflection_rows(pattern)
+    rows, cols, k, active, kept, even = reflection_lanes(pattern)
     tree = math.ceil(math.log2(p)) if p > 1 else 0
     tree1 = math.ceil(math.log2(p + 1))  # the fold of the P partials and the pivot's term
     out = []
     for j in range(-1, k):
         n = active[j] if j >= 0 else 0
+        below = max(n - 1, 0)
+        if qr_rows == 2:
+            # the lanes: ne / no words below the pivot on even / odd rows, the pivot last in
+            # lane j mod 2; the broadcast's header and max(ne, no) pairs; a column q iterations
+            ne = even[j] if n > 1 else 0
+            no = below - ne
+            words = max(ne, no)
+            q = max(ne + (j % 2 == 0), no + (j % 2 == 1), 2)
+            bcast = 1 + words
+            dot_lat = lm + 2 * la
+        else:
+            words, q, bcast, dot_lat = below, n, max(n, 1), lm + la
         # the broadcast (index 0) streams the vector, qr_finish (1) computes v_0, tau, R_jj
-        procs = [[Loop("vector", max(n, 1), 1, 2)],
+        procs = [[Loop("vector", bcast, 1, 2)],
                  [Loop("read", 2, 1, 1), Loop("v0", 1, 1, ls + la if n else 1),
                   Loop("tau", 1, 1, lm + ld if n else 1)]]
         waits = []
@@ -86,7 +112,6 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
             # the unit's first column right of j; the next pivot column if it is j + 1 < k
             c0 = j + 1 + (u - (j + 1)) % units
             next_here = c0 == j + 1 and c0 < k
-            below = max(n - 1, 0)
             # the unit's other columns right of j
             lb = c0 // units + (1 if next_here else 0)
             r = (cols - 1 - u) // units - lb + 1 if c0 < cols else 0
@@ -100,7 +125,7 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 loops.append(Loop("vector_column", pairs if r > 0 and n > 1 else
                                   rows - max(j, 0), 1, 2))
             elif not (r > 0 and n > 1):
-                loops.append(Loop("vector", below, 1, 1))  # read, not needed here
+                loops.append(Loop("vector", words, 1, 1))  # read, not needed here
             if r > 0 and n > 1:
                 # dot_axpy: a column's dot product beside the update of the column before it;
                 # a word's update lag = n - 1 + (its dot's multiply-add) + (the fold and scale)
@@ -109,10 +134,11 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
                 # pivot's word last) and tau at that column's fold, iteration n - 1 + Lm + La:
                 # the loop ends no earlier than its remaining iterations and depth after each
                 # (FGC_WAIT_AFTER)
-                lag = n - 1 + (lm + la) + (la * tree + lm)
-                trip = n * r + lag
-                waits.append((len(procs), len(loops), 1, "v0", trip - n))
-                waits.append((len(procs), len(loops), 1, "tau", trip - n - (lm + la)))
+                # (two rows a cycle: q iterations a column, the pair's sum La deeper)
+                lag = q - 1 + dot_lat + (la * tree + lm)
+                trip = q * r + lag
+                waits.append((len(procs), len(loops), 1, "v0", trip - q))
+                waits.append((len(procs), len(loops), 1, "tau", trip - q - dot_lat))
                 loops.append(Loop("dot_axpy", trip, 1, lm + la))
             else:
                 # v_0 (waiting for qr_finish's square root), then tau (its divide)
@@ -161,7 +187,8 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
     return out
 
 
-def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[BoundLoop, ...]]:
+def householder_loops(partials: int, qr_rows: int = 1
+                      ) -> tuple[tuple[BoundLoop, ...], tuple[BoundLoop, ...]]:
     """The operators of one unit set's Evaluate (qr_evaluate, qr_finish, and qr_pivot_check's
     threshold) and of one Update unit (qr_update<CFG, U>) as Vitis binds fgc_qr.h's text: each
     pipelined loop its own operators at its II (``dot_axpy`` at II 1: the dot's and the axpy's
@@ -169,7 +196,9 @@ def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[Bound
     multiplier, in every iteration's schedule), the sequential code one operator of each kind
     it uses. qr_step's two parity call sites of qr_reflection share
     one instance (its ALLOCATION function limit=1), so each unit is one RTL copy.
-    ``partials``: CFG::PARTIALS."""
+    ``partials``: CFG::PARTIALS. ``qr_rows`` 2 (FGC_QR_TWO_ROWS): ``dot_axpy`` two rows an
+    iteration, its dot's two products and their sum before the partial, its axpy's two
+    multiply-adds: P + 3 adders and 5 multipliers."""
     p = partials
     # receive_dot and axpy_norm take two rows a cycle: two products and their sum before the
     # partial; two multiply-adds, two squares and their sum before the partial
@@ -183,7 +212,8 @@ def householder_loops(partials: int) -> tuple[tuple[BoundLoop, ...], tuple[Bound
                 BoundLoop("qr_finish", (("add", 2), ("mul", 1), ("div", 1), ("sqrt", 1)), 0),
                 # qr_pivot_check's threshold SINGULAR_EPS * scale, before its loop
                 BoundLoop("pivot_check", (("mul", 1),), 0))
-    update = (BoundLoop("dot_axpy", (("add", p + 1), ("mul", 3)), 1),)
+    update = ((BoundLoop("dot_axpy", (("add", p + 3), ("mul", 5)), 1),) if qr_rows == 2 else
+              (BoundLoop("dot_axpy", (("add", p + 1), ("mul", 3)), 1),))
     return evaluate, update
 
 
@@ -283,7 +313,7 @@ def build(ctx) -> None:
 def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
     """fgc_qr.h's unit sets (units, streams) and each step's regions."""
     opts, ops, sched = ctx.opts, ctx.les, ctx.program.schedule
-    evaluate, update = householder_loops(ops.add.latency)
+    evaluate, update = householder_loops(ops.add.latency, opts.qr_rows)
     for s in range(sets):
         ctx.units.append(bound_unit(f"qr{s}_evaluate", "Householder vector of a column",
                                     evaluate, 1, ops))
@@ -298,9 +328,10 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
         # of the vector's and one of the norm's two buffers, which the next region's broadcast
         # and qr_finish read
         channels = ctx.channels
-        for u in range(opts.units):
+        for u in range(opts.units):  # (two rows a cycle: a pair of words a cycle)
             channels.append(Channel(f"qr{s}_v{u}", "stream", 2 * ops.add.latency,
-                                    ops.word_bits + 32, f"qr{s}_broadcast", f"qr{s}_update{u}"))
+                                    opts.qr_rows * (ops.word_bits + 32), f"qr{s}_broadcast",
+                                    f"qr{s}_update{u}"))
         for u in range(opts.units):
             channels.append(Channel(f"qr{s}_t{u}", "stream", 2, ops.word_bits + 32,
                                     f"qr{s}_finish", f"qr{s}_update{u}"))
@@ -321,14 +352,17 @@ def _householder_sets(ctx, sets, patterns, max_rows) -> dict:
                                 f"qr{s}_finish", f"qr{s}_evaluate"))
         channels.append(Channel(f"qr{s}_e", "stream", 2, ops.word_bits,
                                 f"qr{s}_evaluate", f"qr{s}_collect"))
-        channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 1, ops.word_bits + 32,
+        # (two rows a cycle: the words by row parity, MAX_ROWS + 3 slots)
+        channels.append(Channel(f"qr{s}_vbuf", "pingpong", max_rows + 1 + 2 * (opts.qr_rows - 1),
+                                ops.word_bits + 32,
                                 f"qr{s}_evaluate", f"qr{s}_broadcast"))
         channels.append(Channel(f"qr{s}_hbuf", "pingpong", 2, ops.word_bits + 32,
                                 f"qr{s}_evaluate", f"qr{s}_finish"))
     # per step: the regions of fgc_qr.h's qr_step (Evaluate of column k+1 overlaps the Update
     # of column k in region k) and its store, one process per step
     return {st.index: Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
-        patterns[st.index], st.frontal_dim, opts.units, ops, name=f"s{st.index}")))
+        patterns[st.index], st.frontal_dim, opts.units, ops, name=f"s{st.index}",
+        qr_rows=opts.qr_rows)))
         for st in sched.steps}
 
 

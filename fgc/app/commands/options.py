@@ -225,6 +225,11 @@ def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
                             "designs), 1 (a step's conditional two words a cycle, one row a "
                             "cycle), 2 (COND in two banks, two rows a cycle) or 4 (by columns, "
                             "a process per end of a chain; refused on a tree)")
+        h.add_argument("--qr-rows", type=int, choices=(1, 2), metavar="R",
+                       help=f"{where}: QR (householder): rows a cycle through each Update unit, "
+                            "1 (the default) or 2 (the reflection's vector in two lanes by row "
+                            "parity: about half a unit's cycles a reflection, at 2 more adders "
+                            "and multipliers a unit)")
         h.add_argument("--qr-unit", choices=("householder", "stream"),
                        help=f"{where}: the QR unit set: householder (paper A's, one DATAFLOW "
                             "region per reflection; the default) or stream (n_u reflection "

@@ -99,8 +99,8 @@ def implied_precision(args, default: str) -> str:
 def hls_config(args, program):
     """The HLS backend's config: --scalar (default: the Program's precision) and the design's
     options (``HlsConfig.design``) from --part, --clock, --allocation, --unit-sets, --qr-unit,
-    --cascade-lanes, --backsub-lanes (auto: None) and --hgc-before (one clock for the cost
-    model and run_hls.tcl: ``clock_ns`` is ``1000 / SolverConfig.clock_mhz``;
+    --qr-rows, --cascade-lanes, --backsub-lanes (auto: None) and --hgc-before (one clock for
+    the cost model and run_hls.tcl: ``clock_ns`` is ``1000 / SolverConfig.clock_mhz``;
     ``DesignOptions.check`` checks them)."""
     hls = load_backend("hls")
     clock = getattr(args, "clock", None)
@@ -111,6 +111,7 @@ def hls_config(args, program):
             ("unit_sets", getattr(args, "unit_sets", None)),
             ("qr_unit", getattr(args, "qr_unit", None)),
             ("cascade_lanes", getattr(args, "cascade_lanes", None)),
+            ("qr_rows", getattr(args, "qr_rows", None)),
             ("backsub_lanes", getattr(args, "backsub_lanes", None)),
             ("bind", getattr(args, "bind", None))) if value},
         **({"hgc_beside": False} if getattr(args, "hgc_before", False) else {}))
@@ -160,7 +161,7 @@ def refuse_hls_design(args, backend: str) -> None:
     """--allocation, --unit-sets, --qr-unit, --cascade-lanes, --backsub-lanes (a width, not
     auto), --bind and --hgc-before shape the HLS design: other backends have no such thing."""
     for flag in ("allocation", "unit_sets", "qr_unit", "hgc_before", "cascade_lanes",
-                 "backsub_lanes", "bind"):
+                 "backsub_lanes", "qr_rows", "bind"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc {args.command}: --{flag.replace('_', '-')} applies to "
                              f"--backend hls only (not {backend})")
