@@ -686,9 +686,9 @@ class WindowUpdateModel:
         return self.layout.zero_factors(keyframe, self.layout_marginal)
 
     def resources(self) -> dict:
-        """The whole on-chip design's DSP and BRAM36 (model estimates): ``plan_cost`` of
-        :meth:`design_plan`, and its parts: the window kernel, the batch kernel, the stream
-        section (its units and memories)."""
+        """The whole on-chip design's DSP, BRAM36, LUT and FF (model estimates): ``plan_cost``
+        of :meth:`design_plan`, its fit verdict on all four, and its parts (DSP, BRAM36): the
+        window kernel, the batch kernel, the stream section (its units and memories)."""
         design = plan_cost(self._design)
         window = plan_cost(self.plan)
         parts = {"window kernel": (window.dsp, window.bram36)}
@@ -701,9 +701,10 @@ class WindowUpdateModel:
                                    if name.startswith("stream_")}
         section = sum(units["stream section"].values())
         parts["stream section"] = (section, design.bram36 - sum(b for _, b in parts.values()))
-        device = self.plan.target.device
-        return {"dsp": design.dsp, "bram36": design.bram36, "parts": parts, "units": units,
-                "fits": design.dsp <= device.dsp and design.bram36 <= device.bram36,
+        # fits: every figure within the part (plan_cost's verdict: DSP, BRAM36, LUT, FF; a
+        # design whose operators are bound to fabric trades DSP for LUT)
+        return {"dsp": design.dsp, "bram36": design.bram36, "lut": design.lut, "ff": design.ff,
+                "parts": parts, "units": units, "fits": design.fits, "over": design.over,
                 "part": self.plan.options.part}
 
     def duplicated(self) -> dict:
