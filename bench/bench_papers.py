@@ -85,6 +85,13 @@ class Config:
     # search weigh two words a cycle against more CPEs)
     lanes: tuple[int, ...] = (1,)
     c123: tuple[int, ...] = (20, 40, 80)  # paper B's C1-C3 #CPE (backends/cost/params.py)
+    # the floating-point operators' bindings searched (HlsConfig.bind; run_hls.tcl's
+    # config_op), fewer DSP and more LUT each: Vitis's default (fulldsp adders, maxdsp
+    # multipliers), adders in fabric, then with two-DSP (fulldsp) and one-DSP (meddsp)
+    # multipliers. A binding never changes a cycle: it trades DSP
+    # for LUT and FF, so it decides which designs fit (LUT and FF judged too)
+    binds: tuple = ((), (("add", "fabric"),), (("add", "fabric"), ("mul", "fulldsp")),
+                    (("add", "fabric"), ("mul", "meddsp")))
     gtsam_iterations: int = 5
     gtsam_repeats: int = 5
     # a cap on the designs the search may emit and read per search (cache hits are free);
@@ -99,7 +106,7 @@ class Config:
     isam_repeats: int = 3
     # the on-chip stream design's search (paper_a_stream): n_u, unit sets, the factor datapaths'
     # ALLOCATION limits (None: the default design's; smaller limits: fewer operators)
-    stream_units: tuple[int, ...] = (1, 2, 3, 4, 8)
+    stream_units: tuple[int, ...] = (1, 2, 3, 4, 8, 16)
     stream_unit_sets: tuple[int, ...] = (1, 2)
     # the QR Update units' rows a cycle (HlsConfig.qr_rows: 1, or 2 for 10 more DSP a unit in
     # float32: n_u 3, two rows beside n_u 4, one)
@@ -109,6 +116,8 @@ class Config:
                                  (("add", 2), ("mul", 3), ("div", 1)),
                                  (("add", 1), ("mul", 1), ("div", 1)))
     stream_reads: int = 2  # stream designs the search emits and reads (about 25 s each)
+    stream_binds: tuple = ((), (("add", "fabric"),), (("add", "fabric"), ("mul", "fulldsp")),
+                           (("add", "fabric"), ("mul", "meddsp")))
     # paper B's solve: run the best design's counting C simulation on the problem (a minute or
     # two at N = 50) and price the solve by the linearisations and solves it really runs;
     # False: the per-solve figure is the plan's iteration times GTSAM's iteration count, said so
@@ -120,7 +129,7 @@ SMALL = Config(lio_n=5, imu_n=5, storage_ns=(4, 6), units=(1, 8), alloc_scales=(
                reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(None,),
                stream_units=(1, 4), stream_qr_rows=(1,),
                stream_allocations=(None, (("add", 1), ("mul", 1), ("div", 1))), stream_reads=1,
-               design_run=False)
+               design_run=False, binds=((),), stream_binds=((),))
 
 
 def _progress(text: str) -> None:
@@ -147,13 +156,14 @@ def search_space(cfg: Config, linears=("qr", "cholesky")) -> Space:
     return Space(linears=linears, units=cfg.units, unit_sets=cfg.unit_sets,
                  cpe=cfg.lio_cpes if "qr" in linears else cfg.cpes, cascades=cfg.cascades,
                  lanes=cfg.lanes, alloc_scales=cfg.alloc_scales,
-                 backsub_lanes=cfg.backsub_lanes,
+                 backsub_lanes=cfg.backsub_lanes, binds=cfg.binds,
                  extra=(("qr_rows", cfg.qr_rows),) if tuple(cfg.qr_rows) != (1,) else ())
 
 
 def best_design(programs: dict, cfg: Config, linears=("qr", "cholesky")):
     """The design-space search (fgc.app.search) over ``programs``: the fastest design that fits
-    the xc7z045 as re-priced (DSP = max(plan, second reader), BRAM36 from the plan)."""
+    the xc7z045 as re-priced (DSP = max(plan, second reader), BRAM36, LUT and FF from the
+    plan)."""
     return search(programs, search_space(cfg, linears), max_reads=cfg.reads,
                   reader=cfg.reads != 0, progress=_progress)
 
@@ -318,6 +328,10 @@ class StreamDesign:
     default: bool = False  # the default design (n_u the Program's, default unit sets, ALLOCATION)
     part: str = ""  # the FPGA part it is priced on
     qr_rows: int = 1  # the QR Update units' rows a cycle (HlsConfig.qr_rows)
+    bind: tuple = ()  # the operators' binding (HlsConfig.bind)
+    lut: int = 0  # the plan's LUT and FF, and the part's
+    ff: int = 0
+    fabric: tuple[int, int] = (0, 0)
 
     @property
     def one_set_dsp(self) -> int:
@@ -335,7 +349,9 @@ class StreamDesign:
                  + ",".join(f"{k}={v}" for k, v in self.allocation))
         sets = "default unit sets" if self.unit_sets is None else f"{self.unit_sets} unit set(s)"
         rows = f", {self.qr_rows} rows a cycle" if self.qr_rows > 1 else ""
-        return f"n_u={self.units}, {sets}, {alloc}{rows}"
+        bind = ", operators bound " + ",".join(f"{k}={v}" for k, v in self.bind) \
+            if self.bind else ""
+        return f"n_u={self.units}, {sets}, {alloc}{rows}{bind}"
 
     @property
     def median_ms(self) -> float:
@@ -347,7 +363,10 @@ class StreamDesign:
 
     @property
     def fits_plan(self) -> bool:
-        return self.dsp <= self.device[0] and self.bram36 <= self.device[1]
+        """The plan's DSP, BRAM36, LUT and FF within the part (a design bound to fabric trades
+        DSP for LUT: its LUTs decide too)."""
+        return (self.dsp <= self.device[0] and self.bram36 <= self.device[1]
+                and self.lut <= self.fabric[0] and self.ff <= self.fabric[1])
 
     @property
     def honest_dsp(self) -> int:
@@ -362,7 +381,8 @@ class StreamDesign:
     def line(self) -> str:
         read = "unread" if self.reader_dsp is None else f"reader {self.reader_dsp:,}"
         return (f"{self.label}: median {self.median_ms:.3f} ms / p99 {self.p99_ms:.3f} ms per "
-                f"update, {self.dsp:,} DSP ({read}) / {self.bram36:g} BRAM36 ("
+                f"update, {self.dsp:,} DSP ({read}) / {self.bram36:g} BRAM36 / {self.lut:,} "
+                f"LUT / {self.ff:,} FF ("
                 + ", ".join(f"{name} {d:,}" for name, (d, _) in self.parts.items()) + ")"
                 + (": fits" if self.fits else ": over" if not self.fits_plan else ""))
 
@@ -408,31 +428,49 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         solver = dataclasses.replace(base, units=units)
         sp = streaming.stream_program(graph, streaming.compile_stream(
             graph, solver, incremental=k, batch_every=batch))
-        grid = [(sets, alloc, rows) for rows in cfg.stream_qr_rows
+        prices: dict = {}
+        grid = [(sets, alloc, rows, tuple(cfg.stream_binds)) for rows in cfg.stream_qr_rows
                 for sets in cfg.stream_unit_sets for alloc in cfg.stream_allocations]
         if units == default_units:
-            grid.insert(0, (None, None, 1))
-        for sets, alloc, rows in grid:
-            if (units == default_units and alloc is None and sets is not None
-                    and sets == default_sets and rows == 1):
-                continue  # the default design's own options: priced above
-            config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc, qr_rows=rows)
-            try:
-                pricer = streaming.WindowPricer(sp, config=config)
-            except FgcError as exc:  # a unit-set count the window's levels cannot take
-                _progress(f"stream search: n_u={units}, {sets} unit sets, {alloc}: {exc}")
-                continue
-            res = pricer.model.resources()
-            device = pricer.model.plan.target.device
-            lat = np.array([pricer.price(u).latency_ms for u in updates])
-            default = units == default_units and sets is None and alloc is None and rows == 1
-            if default:
-                default_sets = max(1, unit_sets(pricer.model.plan))
-            out.append(StreamDesign(units, sets, alloc, res["dsp"], res["bram36"],
-                                    res["parts"], lat, (device.dsp, device.bram36),
-                                    held=pricer.model.duplicated(), default=default,
-                                    part=res["part"], qr_rows=rows))
-    out.sort(key=lambda d: (d.median_ms, d.p99_ms, d.dsp))
+            grid.insert(0, (None, None, 1, ((),)))
+        for sets, alloc, rows, binds in grid:
+            # the bindings in cfg's order (fewer DSP, more LUT, each): the first that fits by the
+            # plan ends them (a later one is as fast, never preferred), as does one over on LUT
+            # or FF (a later one has more)
+            for bind in binds:
+                if (units == default_units and alloc is None and sets is not None
+                        and sets == default_sets and rows == 1 and not bind):
+                    continue  # the default design's own options: priced above
+                config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc,
+                                   qr_rows=rows, bind=bind)
+                try:
+                    pricer = streaming.WindowPricer(sp, config=config)
+                except FgcError as exc:  # a unit-set count the window's levels cannot take
+                    _progress(f"stream search: n_u={units}, {sets} unit sets, {alloc}: {exc}")
+                    break
+                res = pricer.model.resources()
+                device = pricer.model.plan.target.device
+                # a binding changes no cycle (config_op pins each latency): one binding's
+                # prices serve the others of the same options
+                key = (sets, alloc, rows)
+                if key not in prices:
+                    prices[key] = np.array([pricer.price(u).latency_ms for u in updates])
+                default = (units == default_units and sets is None and alloc is None
+                           and rows == 1 and not bind)
+                if default:
+                    default_sets = max(1, unit_sets(pricer.model.plan))
+                d = StreamDesign(units, sets, alloc, res["dsp"], res["bram36"], res["parts"],
+                                 prices[key], (device.dsp, device.bram36),
+                                 held=pricer.model.duplicated(), default=default,
+                                 part=res["part"], qr_rows=rows, bind=config.bind,
+                                 lut=res["lut"], ff=res["ff"], fabric=(device.lut, device.ff))
+                out.append(d)
+                if d.fits_plan or d.lut > device.lut or d.ff > device.ff:
+                    break
+    # equal speed (a binding changes no cycle): the binding order of cfg.stream_binds, the
+    # default first, then the fewer DSP
+    rank = {tuple(b): i for i, b in enumerate(cfg.stream_binds)}
+    out.sort(key=lambda d: (d.median_ms, d.p99_ms, rank.get(d.bind, len(rank)), d.dsp))
     fitting = [d for d in out if d.fits_plan]
     to_read = fitting[:cfg.stream_reads] if fitting else [min(out, key=lambda d: d.dsp)]
 
@@ -441,7 +479,8 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         with tempfile.TemporaryDirectory() as tmp:
             got = measure_stream(cfg.lio_n, Path(tmp) / "stream",
                                  HlsConfig(scalar="float", unit_sets=d.unit_sets,
-                                           allocation=d.allocation, qr_rows=d.qr_rows),
+                                           allocation=d.allocation, qr_rows=d.qr_rows,
+                                           bind=d.bind),
                                  d.units, batch,
                                  solver=base)
         d.reader_dsp = got["reader_dsp"]
@@ -510,7 +549,10 @@ def paper_a_stream(cfg: Config) -> list[Row]:
                       for name, (d, b) in default.parts.items())
     searched = (f"the search ({len(designs)} designs: n_u {cfg.stream_units}, unit sets "
                 f"{cfg.stream_unit_sets}, {len(cfg.stream_allocations)} ALLOCATION limits of "
-                f"the factor datapaths, QR rows a cycle {cfg.stream_qr_rows}, and the default): "
+                f"the factor datapaths, QR rows a cycle {cfg.stream_qr_rows}, operator bindings "
+                + "; ".join(",".join(f"{k}={v}" for k, v in b) or "default"
+                            for b in cfg.stream_binds)
+                + ", and the default): "
                 + (f"fastest that fits: {best.line()}; ISAM2 / design median {best_ratio:.2f}×"
                    if fit else
                    f"NONE fits the {default.part}; the smallest: {best.line()}, DSP = max(plan, "

@@ -12,6 +12,7 @@ loop the new rules flag is printed below the table.
     python bench/bench_second_reader.py --quick    # LIO N=8, imu_window N=10, fewer designs
     python bench/bench_second_reader.py --stream   # also paper A's on-chip stream design
     python bench/bench_second_reader.py --stream-only [--lm]  # that design alone
+    python bench/bench_second_reader.py --stream-only --bind add=fabric  # the operators bound
 
 The on-chip stream design (bench_papers.paper_a_stream's setting: LIO, incremental K = 3, batch
 steps at keyframes 5/15/25, one Gauss-Newton step an update: each batch step a sweep through the
@@ -37,7 +38,14 @@ from fgc.compile import compile_graph
 from fgc.ir.program import SolverConfig
 from fgc_backends.hls import HlsConfig, emit
 from fgc_backends.hls.plan import DEFAULT_ALLOCATION, PlanOptions, build_plan, plan_cost
-from fgc_backends.hls.reader import check, check_dsp, dsp_table, emitted_files, read_design
+from fgc_backends.hls.reader import (
+    check,
+    check_dsp,
+    dsp_table,
+    emitted_files,
+    emitted_ops,
+    read_design,
+)
 from fgc_backends.hls.reader.design import _design, _Reader
 
 # the rules issue 32's second-reader task added (their findings are printed, not only counted)
@@ -52,6 +60,15 @@ OWN_HEADERS = re.compile(r"qr\d+_(?:evaluate|update)|cpe(?:_set\d+)?")
 def _dsp_of(tab) -> dict[str, int]:
     return {"add": tab.add.dsp, "mul": tab.mul.dsp, "div": tab.div.dsp, "sqrt": tab.sqrt.dsp,
             "special": tab.special.dsp}
+
+
+def _bind_arg(text: str):
+    from fgc_backends.cost.operators import BindError, parse_bind
+
+    try:
+        return parse_bind(text)
+    except BindError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def around_dsp(cost) -> int:
@@ -74,7 +91,9 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
     issues = check(design.reached_loops)
     strict = check(design.reached_loops, strict=True)
     mine = [i for i in issues if i.file in AROUND or i.file == f"{program.name}.cpp"]
-    dsp_of = dsp_table(plan.target.ops, precision)  # a mixed design's L operators in L's table
+    # a mixed design's L operators in L's table; every table bound as run_hls.tcl binds it
+    # (config_op), read from the text, not the plan
+    dsp_of = dsp_table(emitted_ops(out), precision)
     around_files = (*AROUND, f"{program.name}.cpp")
     return dict(plan_dsp=cost.dsp, plan_bram36=cost.bram36, plan_cycles=cost.cycles,
                 reader_dsp=design.dsp(dsp_of),
@@ -121,7 +140,7 @@ def measure_stream(n: int, out: Path, config=None, units: int | None = None,
     hls.emit(streaming.stream_program(graph, program, None), out, config)
     files, top = emitted_files(out)
     tab = pricer.model.plan.ops
-    dsp_of = _dsp_of(tab)
+    dsp_of = _dsp_of(emitted_ops(out)("float32"))  # as run_hls.tcl binds it (config_op)
     reader = _Reader(files, tab.add.latency)
     design = _design(reader, top)
     name = top.removesuffix("_stream")
@@ -134,6 +153,7 @@ def measure_stream(n: int, out: Path, config=None, units: int | None = None,
     plan_parts = {k: d for k, (d, _) in res["parts"].items()}
     modules = dict(design.modules)
     return dict(plan_dsp=res["dsp"], reader_dsp=total, plan_bram36=res["bram36"],
+                plan_lut=res["lut"], plan_ff=res["ff"], plan_fits=res["fits"],
                 plan_units=res["units"], duplicated=pricer.model.duplicated(),
                 parts=[("window kernel", plan_parts.get("window kernel", 0), window),
                        *((("batch kernel", plan_parts.get("batch kernel", 0), batch),)
@@ -165,7 +185,11 @@ def main(argv=None) -> int:
                         action="append", default=[], help="one more stream design (repeatable): "
                         "n_u, unit sets, the factor datapaths' ALLOCATION limits and the QR "
                         "Update units' rows a cycle (e.g. 8,1,2,3,1 or 4,2,2,3,1,2)")
+    parser.add_argument("--bind", type=_bind_arg, default=(), metavar="KIND=IMPL,…",
+                        help="every design's operator binding (HlsConfig.bind; run_hls.tcl's "
+                        "config_op, which the reader reads back), e.g. add=fabric,mul=meddsp")
     args = parser.parse_args(argv)
+    bind = args.bind
     lio_n, imu_n = (8, 10) if args.quick else (30, 50)
     units = (1, 4) if args.quick else (1, 4, 8, 32)
     cpes = (5, 20) if args.quick else (5, 20, 80)
@@ -184,10 +208,11 @@ def main(argv=None) -> int:
 
             solver = SolverConfig(precision="float32", linear="qr")
             solver = solver if args.lm else one_step_solver(solver)
-            stream = measure_stream(lio_n, Path(tmp) / "stream", solver=solver)
+            stream = measure_stream(lio_n, Path(tmp) / "stream", HlsConfig(bind=bind),
+                                    solver=solver)
             smallest = measure_stream(lio_n, Path(tmp) / "smallest",
                                       HlsConfig(unit_sets=1, allocation=(
-                                          ("add", 1), ("mul", 1), ("div", 1))), 1,
+                                          ("add", 1), ("mul", 1), ("div", 1)), bind=bind), 1,
                                       solver=solver)
             streams = [("default design", stream),
                        ("smallest searched (n_u 1, one unit set, ALLOCATION 1/1/1)", smallest)]
@@ -201,14 +226,14 @@ def main(argv=None) -> int:
                          + (f", {qr_rows} rows a cycle" if qr_rows > 1 else ""))
                 streams.append((label, measure_stream(
                     lio_n, Path(tmp) / f"design{i}", HlsConfig(unit_sets=v[1], allocation=alloc,
-                                                              qr_rows=qr_rows),
+                                                              qr_rows=qr_rows, bind=bind),
                     v[0], solver=solver)))
         lio = example("lio")
         for n_u in units:
             for alloc in (None, doubled):
                 program = compile_graph(lio.build(N=lio_n), name="lio",
                                         solver=SolverConfig(units=n_u))
-                config = HlsConfig(allocation=alloc)
+                config = HlsConfig(allocation=alloc, bind=bind)
                 t0 = time.perf_counter()
                 m = measure(program, config, Path(tmp) / f"lio_{n_u}_{bool(alloc)}")
                 rows.append((f"LIO N={lio_n} QR n_u={n_u}" + (" ALLOCATION x2" if alloc else ""),
@@ -219,7 +244,8 @@ def main(argv=None) -> int:
                                     solver=SolverConfig(linear="cholesky", cpe=cpe))
             for sets in (1, 2):  # one cascade, two side by side (fgc_cascades.h)
                 t0 = time.perf_counter()
-                m = measure(program, HlsConfig(unit_sets=sets), Path(tmp) / f"imu_{cpe}_{sets}")
+                m = measure(program, HlsConfig(unit_sets=sets, bind=bind),
+                            Path(tmp) / f"imu_{cpe}_{sets}")
                 rows.append((f"imu_window N={imu_n} Cholesky #CPE={cpe}"
                              + (" x2 cascades" if sets == 2 else ""), m,
                              time.perf_counter() - t0))
@@ -263,14 +289,17 @@ def main(argv=None) -> int:
     if stream is not None:
         policy = "LM to convergence" if args.lm else "one Gauss-Newton step an update"
         for label, st in streams:
-            print(f"\npaper A's on-chip stream design (LIO N={lio_n}, K=3, {policy}), {label}: "
+            print(f"\npaper A's on-chip stream design (LIO N={lio_n}, K=3, {policy}), {label}"
+                  + (f", operators bound {','.join(f'{k}={v}' for k, v in bind)}" if bind else "")
+                  + ": "
                   f"plan {st['plan_dsp']} DSP / {st['plan_bram36']:g} BRAM36, reader "
                   f"{st['reader_dsp']} DSP: DSP = max(plan, reader) = "
                   f"{max(st['plan_dsp'], st['reader_dsp'])} "
                   + ("fits" if max(st['plan_dsp'], st['reader_dsp']) <= 900 else "over")
-                  + f" the xc7z045's 900; II short {st['ii_short']}, carried "
-                  f"{st['recurrences']}, alloc {st['allocation']}, false dep "
-                  f"{st['false_claims']}, unproven {st['unproven']}")
+                  + f" the xc7z045's 900 DSP (LUT {st['plan_lut']:,}, FF {st['plan_ff']:,} by "
+                  "the plan: " + ("fit" if st["plan_fits"] else "OVER")
+                  + f"); II short {st['ii_short']}, carried {st['recurrences']}, alloc "
+                  f"{st['allocation']}, false dep {st['false_claims']}, unproven {st['unproven']}")
             print(f"{'part':16s} {'plan DSP':>9s} {'reader DSP':>10s}  plan >= reader")
             for part, plan, read in st["parts"]:
                 print(f"{part:16s} {plan:9d} {read:10d}  {'yes' if plan >= read else 'NO'}")

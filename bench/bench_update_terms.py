@@ -8,6 +8,8 @@ printed, then the median and p99 per update.
     python bench/bench_update_terms.py --units 4 --sets 2 --allocation add=2,mul=3,div=1 \\
         --keyframes 5,14,25 --top 25
     python bench/bench_update_terms.py --qr-rows 2        # the Update units two rows a cycle
+    python bench/bench_update_terms.py --units 8 --allocation default --bind add=fabric
+                                        # adders bound to fabric (run_hls.tcl's config_op)
 """
 from __future__ import annotations
 
@@ -24,6 +26,7 @@ import bench_papers as b  # noqa: E402
 from fgc.app import streaming  # noqa: E402
 from fgc.errors import FgcError  # noqa: E402
 from fgc.ir.datafile import problem_data  # noqa: E402
+from fgc_backends.cost.operators import bind_label, parse_bind  # noqa: E402
 from fgc_backends.hls import HlsConfig  # noqa: E402
 
 
@@ -45,6 +48,9 @@ def main(argv=None) -> None:
     ap.add_argument("--sets", type=int, default=2, help="unit sets (default 2)")
     ap.add_argument("--allocation", default="add=2,mul=3,div=1",
                     help="factor datapaths' ALLOCATION, or 'default' (default add=2,mul=3,div=1)")
+    ap.add_argument("--bind", default="default",
+                    help="the operators' binding, e.g. add=fabric,mul=meddsp (HlsConfig.bind; "
+                    "default: Vitis's, fulldsp adders and maxdsp multipliers)")
     ap.add_argument("--keyframes", default="5,14,25", help="keyframes whose terms are printed")
     ap.add_argument("--top", type=int, default=25, help="terms printed per keyframe")
     ap.add_argument("--qr-rows", type=int, choices=(1, 2), default=1,
@@ -61,11 +67,13 @@ def main(argv=None) -> None:
     streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
     pricer = streaming.WindowPricer(sp, config=HlsConfig(
         scalar="float", unit_sets=args.sets, allocation=_allocation(args.allocation),
-        qr_rows=args.qr_rows))
+        qr_rows=args.qr_rows, bind=parse_bind(args.bind)))
     res = pricer.model.resources()
     print(f"n_u {args.units}, {args.sets} unit set(s), {args.qr_rows} row(s) a cycle, "
-          f"ALLOCATION {args.allocation}: "
-          f"{res['dsp']:,} DSP / {res['bram36']:g} BRAM36 by the plan (model estimates)")
+          f"ALLOCATION {args.allocation}, operators bound {bind_label(parse_bind(args.bind))}: "
+          f"{res['dsp']:,} DSP / {res['bram36']:g} BRAM36 / {res['lut']:,} LUT / "
+          f"{res['ff']:,} FF by the plan (model estimates): "
+          + ("fits " if res["fits"] else f"OVER ({', '.join(res['over'])}) ") + res["part"])
     latency = []
     for u in updates:
         price = pricer.price(u)

@@ -8,6 +8,7 @@ Cheap: the Pose2 chain and the range-beacons example compile in about a second f
 from __future__ import annotations
 
 import importlib.util
+import itertools
 import json
 import math
 import sys
@@ -210,23 +211,24 @@ def _bench():
 def test_best_design_is_the_fastest_that_fits(qr_chain):
     """bench_papers' best design is the search's: on the plan alone (no reads) the fastest
     design the plan fits, over n_u × unit sets × ALLOCATION scale × QR unit (Householder and
-    the streaming unit) × back-substitution's width."""
+    the streaming unit) × back-substitution's width × the operators' binding."""
     from fgc_backends.hls.config import auto_backsub_lanes
     from fgc_backends.hls.plan.options import QR_UNITS
 
     bench = _bench()
     cfg = bench.Config(units=(1, 2, 4), unit_sets=(1, 2), alloc_scales=(1, 2), reads=0)
     result = bench.best_design({"qr": qr_chain}, cfg, linears=("qr",))
-    assert len(result.rows) == 3 * 2 * 2 * len(QR_UNITS) * len(cfg.backsub_lanes)
+    assert len(result.rows) == (3 * 2 * 2 * len(QR_UNITS) * len(cfg.backsub_lanes)
+                                * len(cfg.binds))
     brute = []
     for units in cfg.units:
         for sets in (1, 2):
             for scale in cfg.alloc_scales:
                 for qr_unit in QR_UNITS:
-                    for lanes in cfg.backsub_lanes:
+                    for lanes, bind in itertools.product(cfg.backsub_lanes, cfg.binds):
                         c = plan_cost(build_plan(qr_chain, PlanOptions.of(
                             qr_chain, units=units, unit_sets=sets, qr_unit=qr_unit,
-                            allocation=bench._scaled(scale),
+                            allocation=bench._scaled(scale), bind=bind,
                             backsub_lanes=auto_backsub_lanes(qr_chain) if lanes is None
                             else lanes)))
                         if c.fits:

@@ -43,6 +43,13 @@ DSP/LUT/FF):
   synthesisable approximations with no published latency table: assumed.
 - **design**: fgc's Lie coefficients (series and closed form, one rolled Horner loop a unit).
 
+**Binding** (issue 33): besides Vitis's default binding of add/sub (full DSP) and multiply
+(max DSP), which the rows above price, :data:`IMPLEMENTATIONS` lists the implementations a
+design may bind them to (``DesignOptions.bind``, run_hls.tcl's ``config_op``): add fulldsp or
+fabric, multiply maxdsp, fulldsp, meddsp or fabric, each with its DSP/LUT/FF and source
+(:func:`implementations`) at the row's latency; :func:`bound` is a table so bound (what
+``Target.ops`` returns for a design's binding). docs/hls.md, "Operator binding: DSP or fabric".
+
 Before this table (issue 32): this module (the plan: float32 add 11, mul 8,
 div/sqrt 28, compare 2; float64 12 / 9 / 57) and ``backends/cost/params.py`` (the analytic
 model: float32 add 8, mul 5, div/sqrt 28) disagreed, and neither knew the part or the clock.
@@ -50,7 +57,10 @@ model: float32 add 8, mul 5, div/sqrt 28) disagreed, and neither knew the part o
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
+from functools import lru_cache
+
+from fgc.errors import FgcError
 
 PRECISIONS = ("float32", "float64")
 FAMILIES = ("7series", "ultrascale+")
@@ -235,6 +245,151 @@ def table(precision: str, family: str = "7series", clock_mhz: float = 143.0) -> 
     return TABLES[family, precision, band]
 
 
+# -- the operators' binding (Vitis's config_op / bind_op -impl) -------------------------------
+#
+# Vitis HLS binds a floating-point add/subtract or multiply to one of several implementations of
+# the Floating-Point Operator core (UG1399, config_op and bind_op: ``-impl fabric | meddsp |
+# fulldsp | maxdsp | primitivedsp``; primitivedsp is Versal's only): the core's C_Mult_Usage
+# No_Usage / Medium_Usage / Full_Usage / Max_Usage (PG060; Vitis's generated core scripts set
+# it so: a ``..._no_dsp`` core is ``c_mult_usage No_Usage``). The table above holds the
+# default binding (add fulldsp, multiply maxdsp); :data:`IMPLEMENTATIONS` lists what a design
+# may bind instead, :func:`implementations` prices each in a table's precision, family and
+# clock, and :func:`bound` is that table with the design's binding. An emitted design pins
+# every bound operator's latency (``config_op <op> -impl X -latency N``, N the table's), so
+# the binding changes DSP / LUT / FF and never a cycle.
+
+IMPLEMENTATIONS = {"add": ("fulldsp", "fabric"), "mul": ("maxdsp", "fulldsp", "meddsp", "fabric")}
+DEFAULT_BIND = {"add": "fulldsp", "mul": "maxdsp"}
+# the Vitis operator names a bound kind sets in each precision (config_op's <op>)
+VITIS_OPS = {("add", "float32"): ("fadd", "fsub"), ("mul", "float32"): ("fmul",),
+             ("add", "float64"): ("dadd", "dsub"), ("mul", "float64"): ("dmul",)}
+
+_NO_DSP = ("Vitis core name fadd_32ns_32ns_32_5_no_dsp (SynModuleInfo: TYPE fadd IMPL fabric "
+           "LATENCY 4) in public Vitis HLS projects")
+_NO_DSP_RES = ("0 DSP, 338 LUT, 243 FF: a public Vitis HLS synthesis report's instance row of "
+               "fadd_32ns_32ns_32_5_no_dsp_1 (its part not established: taken for 7-series "
+               "and UltraScale+ alike, both 6-input-LUT fabrics)")
+_IMPL_NOTE = "PG060 structure: C_Mult_Usage {}; figures assumed"
+
+
+def _impl_resources(precision: str) -> dict[str, dict[str, tuple]]:
+    """(dsp, lut, ff, source, resource_status, note) of each implementation of add and mul in
+    ``precision``: the default bindings' figures are the table's own (filled in by
+    :func:`implementations`); the others' as each entry says."""
+    if precision == "float32":
+        return {"add": {"fabric": (0, 338, 243, _NO_DSP, "documented", _NO_DSP_RES)},
+                "mul": {
+                    "fulldsp": (2, 120, 200, "assumed: PG060 Full_Usage multiply", "assumed",
+                                _IMPL_NOTE.format("Full_Usage: the 24 x 24 significand product "
+                                                  "in two DSP48 slices, the rounding in LUTs")),
+                    "meddsp": (1, 300, 330, "assumed: PG060 Medium_Usage multiply", "assumed",
+                               _IMPL_NOTE.format("Medium_Usage: one DSP48 slice takes part of "
+                                                 "the significand product, LUTs the rest")),
+                    "fabric": (0, 650, 700, "assumed: PG060 No_Usage multiply", "assumed",
+                               _IMPL_NOTE.format("No_Usage: the whole 24 x 24 significand "
+                                                 "product in LUTs"))}}
+    return {"add": {"fabric": (0, 900, 1100, "assumed: PG060 No_Usage double add/subtract",
+                               "assumed", _IMPL_NOTE.format("No_Usage: the 53-bit alignment "
+                                                            "and add in LUTs"))},
+            "mul": {
+                "fulldsp": (10, 300, 500, "assumed: PG060 Full_Usage double multiply", "assumed",
+                            _IMPL_NOTE.format("Full_Usage")),
+                "meddsp": (9, 450, 600, "assumed: PG060 Medium_Usage double multiply", "assumed",
+                           _IMPL_NOTE.format("Medium_Usage")),
+                "fabric": (0, 2300, 2400, "assumed: PG060 No_Usage double multiply", "assumed",
+                           _IMPL_NOTE.format("No_Usage: the 53 x 53 significand product in "
+                                             "LUTs"))}}
+
+
+def implementations(t: OperatorTable) -> dict[str, dict[str, Operator]]:
+    """Every implementation of add and mul (:data:`IMPLEMENTATIONS`) in ``t``'s precision,
+    family and clock: the default's is ``t``'s own entry; another has its own DSP/LUT/FF and
+    ``t``'s latency for the kind (the emitted ``config_op ... -latency N`` pins it; the fabric
+    adder's latency is documented by its core name at 4, the 7-series default's)."""
+    out = {}
+    extra = _impl_resources(t.precision)
+    for kind, impls in IMPLEMENTATIONS.items():
+        base = t.op(kind)
+        out[kind] = {}
+        for impl in impls:
+            if impl == DEFAULT_BIND[kind]:
+                out[kind][impl] = base
+                continue
+            dsp, lut, ff, source, res_status, note = extra[kind][impl]
+            documented = (impl == "fabric" and kind == "add" and t.precision == "float32"
+                          and base.latency == 4)
+            out[kind][impl] = Operator(
+                base.latency, dsp, lut, ff, source, "documented" if documented else "assumed",
+                note + ("" if documented else f"; latency {base.latency}: the default "
+                        f"binding's at this clock, pinned by config_op -latency"),
+                base.ii, res_status)
+    return out
+
+
+class BindError(FgcError, ValueError):
+    """A binding names an operator kind or an implementation the table does not have."""
+
+
+def normalise_bind(bind) -> tuple[tuple[str, str], ...]:
+    """``bind`` (``((kind, impl), ...)``, a mapping, or None) checked and in canonical form:
+    sorted by kind, the default implementations dropped (so the default design's binding is
+    ``()`` however it is spelled). Raises :class:`BindError` naming the allowed values."""
+    if not bind:
+        return ()
+    items = tuple(bind.items()) if isinstance(bind, dict) else tuple(bind)
+    seen = {}
+    for item in items:
+        if not (isinstance(item, tuple) and len(item) == 2):
+            raise BindError(f"bind entry {item!r}: expected (kind, implementation) with kind "
+                            f"one of {', '.join(IMPLEMENTATIONS)}")
+        kind, impl = item
+        if kind not in IMPLEMENTATIONS:
+            raise BindError(f"bind: operator kind {kind!r} cannot be bound; kinds: "
+                            f"{', '.join(IMPLEMENTATIONS)}")
+        if impl not in IMPLEMENTATIONS[kind]:
+            raise BindError(f"bind: {kind}={impl!r}: implementations of {kind}: "
+                            f"{', '.join(IMPLEMENTATIONS[kind])}")
+        if kind in seen:
+            raise BindError(f"bind names {kind} twice")
+        seen[kind] = impl
+    return tuple(sorted((k, v) for k, v in seen.items() if v != DEFAULT_BIND[k]))
+
+
+def parse_bind(text: str) -> tuple[tuple[str, str], ...]:
+    """``"add=fabric,mul=meddsp"`` → the binding (:func:`normalise_bind`); ``""`` or
+    ``"default"`` → ``()``."""
+    text = text.strip()
+    if text in ("", "default"):
+        return ()
+    items = []
+    for part in text.split(","):
+        kind, sep, impl = part.strip().partition("=")
+        if not sep:
+            raise BindError(f"bind {part.strip()!r}: expected KIND=IMPL, e.g. add=fabric "
+                            f"(kinds {', '.join(IMPLEMENTATIONS)})")
+        items.append((kind.strip(), impl.strip()))
+    return normalise_bind(tuple(items))
+
+
+def bind_label(bind) -> str:
+    """``add=fabric,mul=meddsp``, or ``default``."""
+    bind = normalise_bind(bind)
+    return ",".join(f"{k}={v}" for k, v in bind) if bind else "default"
+
+
+@lru_cache(maxsize=256)
+def _bound(t: OperatorTable, bind: tuple[tuple[str, str], ...]) -> OperatorTable:
+    impls = implementations(t)
+    return replace(t, **{kind: impls[kind][impl] for kind, impl in bind})
+
+
+def bound(t: OperatorTable, bind=()) -> OperatorTable:
+    """``t`` with its add and mul entries bound as ``bind`` says (``t`` itself for the
+    default binding)."""
+    bind = normalise_bind(bind)
+    return _bound(t, bind) if bind else t
+
+
 def describe(t: OperatorTable) -> str:
     """A Markdown table of ``t``: kind, latency, DSP, LUT, FF, status, source."""
     clock = "> 150 MHz" if t.clock_mhz == BANDS[1] else f"≤ {t.clock_mhz:g} MHz"
@@ -245,6 +400,14 @@ def describe(t: OperatorTable) -> str:
             f"latency {o.status}, resources {o.resource_status}")
         lines.append(f"| {kind} | {o.latency} | {o.ii} | {o.dsp} | {o.lut} | {o.ff} | "
                      f"{status} | {o.source}; {o.note} |")
+    for kind, impls in implementations(t).items():
+        for impl, o in impls.items():
+            if impl == DEFAULT_BIND[kind]:
+                continue
+            status = o.status if o.status == o.resource_status else (
+                f"latency {o.status}, resources {o.resource_status}")
+            lines.append(f"| {kind} bound {impl} | {o.latency} | {o.ii} | {o.dsp} | {o.lut} | "
+                         f"{o.ff} | {status} | {o.source}; {o.note} |")
     return "\n".join(lines)
 
 

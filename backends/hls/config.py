@@ -25,6 +25,7 @@ from fgc.ir.program import Program
 from fgc_backends.cfamily import scalars
 from fgc_backends.cfamily.errors import CodegenError
 from fgc_backends.cfamily.scalars import SCALARS
+from fgc_backends.cost.operators import BindError, normalise_bind
 from fgc_backends.hls.plan.options import (
     CASCADE_LANES,
     DEFAULT_ALLOCATION,
@@ -100,6 +101,15 @@ class DesignOptions:
       of its bank's two row-parity memories; about half a unit's cycles a reflection, at P + 3
       adders and 5 multipliers a unit instead of P + 1 and 3; docs/hls.md). ``fgc compile
       --qr-rows``.
+    - ``bind``: the floating-point operators' binding, ``((kind, implementation), …)``: ``add``
+      ``fulldsp`` (the default, 2 DSP a float adder) or ``fabric`` (LUTs only); ``mul``
+      ``maxdsp`` (the default, 3 DSP), ``fulldsp``, ``meddsp`` or ``fabric``
+      (``cost/operators.py``'s IMPLEMENTATIONS). ``run_hls.tcl`` gets one ``config_op <op>
+      -impl X -latency N`` per Vitis operator of a bound kind (fadd and fsub, fmul; dadd, dsub,
+      dmul in a double design), N the table's latency, so the cycles are the default's and the
+      DSP / LUT / FF the bound implementation's. Kept canonical (the default implementations
+      dropped, sorted): ``()`` (default) is Vitis's default binding and emits no config_op.
+      ``fgc compile --bind add=fabric,mul=meddsp``; docs/hls.md, "Operator binding".
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
@@ -115,6 +125,13 @@ class DesignOptions:
     cascade_lanes: int = 1
     hgc_third_lane: bool = False
     qr_rows: int = 1
+    bind: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        try:  # canonical, so equal designs compare (and hash, and cache) equal
+            object.__setattr__(self, "bind", normalise_bind(self.bind))
+        except BindError as exc:
+            raise HlsConfigError(str(exc)) from None
 
     def check(self, program: Program | None = None) -> None:
         """Raise :class:`HlsConfigError` naming the first invalid option; with ``program``, also
@@ -181,7 +198,7 @@ class DesignOptions:
 
     def target(self, program: Program) -> Target:
         """The design's :class:`Target`: this part at the Program's clock."""
-        return target_of(self.part, program.solver.clock_mhz)
+        return target_of(self.part, program.solver.clock_mhz, self.bind)
 
     def resolved(self, program: Program, stream: bool = False) -> DesignOptions:
         """These options with the automatic ``backsub_lanes`` (None) decided for ``program``
@@ -198,6 +215,7 @@ class DesignOptions:
         back-substitution's width (automatic: :meth:`resolved`, a batch design's), and the
         precisions the design computes in (None: the Program's)."""
         base = dict(unit_sets=self.unit_sets, part=self.part, qr_unit=self.qr_unit,
+                    bind=self.bind,
                     precision=precision, les_precision=les_precision,
                     hgc_beside=bool(self.hgc_beside), cascade_lanes=int(self.cascade_lanes),
                     hgc_third_lane=bool(self.hgc_third_lane), qr_rows=int(self.qr_rows))
@@ -294,14 +312,15 @@ class HlsConfig(scalars.ScalarTypes):
     cascade_lanes: InitVar[int | None] = None
     hgc_third_lane: InitVar[bool | None] = None
     qr_rows: InitVar[int | None] = None
+    bind: InitVar[tuple[tuple[str, str], ...] | None] = None
 
     def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside,
-                      backsub_lanes, cascade_lanes, hgc_third_lane, qr_rows) -> None:
+                      backsub_lanes, cascade_lanes, hgc_third_lane, qr_rows, bind) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
         old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside, backsub_lanes,
-               cascade_lanes, hgc_third_lane, qr_rows)
+               cascade_lanes, hgc_third_lane, qr_rows, bind)
         given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
                  if value is not None}
         if given:

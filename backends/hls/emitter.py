@@ -103,6 +103,11 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     # linearisation's region (lin_level), as the datapaths fill their banks
     context["lin_qr"] = bool(context["leaf_lin"] and context.get("banks")
                              and context["stream"]["role"] == "window")
+    # the leaving keyframe's tau and kept conditional beside the update's back-substitution
+    # (the one-step policy, the slot design; fgc_stream.h's spec_marginal_task)
+    context["spec"] = bool(context["stream"] and context["stream"]["spec"]
+                           and not context.get("mixed") and not context.get("bsc")
+                           and not context.get("retire_test"))
     if context["leaf_lin"]:
         _leaf_context(context, stream.leaf_factors(), stream.leaf_gone())
         context["leaf_skip"] = stream.leaf_skip()
@@ -675,12 +680,34 @@ def tcl_clock(clock_mhz: float) -> dict:
 
 
 
+def tcl_config_ops(program: Program, config: HlsConfig) -> list[tuple[str, str, int]]:
+    """``run_hls.tcl``'s ``config_op`` lines of the design's operator binding
+    (``DesignOptions.bind``): (Vitis operator, implementation, latency) per Vitis operator of
+    each bound kind in every scalar the design computes in (T, and L when wider), the latency
+    the plan's (the bound table's: Vitis schedules what config_op pins). None for the default
+    binding."""
+    from fgc_backends.cost.operators import VITIS_OPS
+
+    if not config.bind:
+        return []
+    target = config.design.target(program)
+    out = []
+    for cxx in dict.fromkeys((config.scalar_cxx, config.linear_cxx)):
+        precision = "float32" if cxx == "float" else "float64"
+        table = target.ops(precision)
+        for kind, impl in config.bind:
+            out += [(op, impl, table.op(kind).latency) for op in VITIS_OPS[kind, precision]]
+    return out
+
+
 def _context(program: Program, config: HlsConfig, project: str, vector: bool = True) -> dict:
     two_ended = program.schedule.ordering == "two-ended"
     context = common_context(program, config, project, HlsConfigError,
                              unit_sets=config.unit_sets or (2 if two_ended else 1), vector=vector)
     return context | {
         "part": config.part, **tcl_clock(program.solver.clock_mhz),
+        "config_ops": tcl_config_ops(program, config) if config.scalar_cxx in ("float", "double")
+        else [],
         "key_tokens": key_tokens(v.key for v in program.variables),
         "rotations": [ROTATIONS.get(v.type_name, (0, 0)) for v in program.variables],
         "tb_double": config.scalar_cxx == "double", "tol": TB_TOLERANCES,

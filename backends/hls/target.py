@@ -1,6 +1,7 @@
 """The target of a design: :class:`Target` — the FPGA part, looked up to its device's capacities
 (``cost/target.py``) and family, the clock, and the operator table at that part and clock
-(``cost/operators.py``, :meth:`Target.ops`).
+(``cost/operators.py``, :meth:`Target.ops`), bound as the design binds its adders and
+multipliers (:attr:`Target.bind`: DSP or fabric, Vitis's ``config_op``).
 
 Every pricer reads the hardware through a Target: the accelerator plan (its operators, its fit
 verdict), the update and window models (through the plan), the HLS lint's DSP budget; the
@@ -43,6 +44,10 @@ class Target:
 
     part: str = DEFAULT_PART
     clock_mhz: float = 143.0
+    # the design's operator binding (``((kind, implementation), ...)``, canonical: the
+    # default implementations left out; ``cost/operators.py``'s IMPLEMENTATIONS): () is
+    # Vitis's default binding, what every table entry prices
+    bind: tuple[tuple[str, str], ...] = ()
 
     @property
     def device(self) -> DeviceCapacity:
@@ -54,17 +59,20 @@ class Target:
         return next(f for prefix, f in FAMILIES.items() if name.startswith(prefix))
 
     def ops(self, precision: str) -> OperatorTable:
-        """The operator table of ``precision`` on this part's family at this clock."""
-        return operators.table(precision, self.family, self.clock_mhz)
+        """The operator table of ``precision`` on this part's family at this clock, its add and
+        mul bound as :attr:`bind` says (``operators.bound``)."""
+        return operators.bound(operators.table(precision, self.family, self.clock_mhz),
+                               self.bind)
 
 
-def target_of(part: str, clock_mhz: float) -> Target:
-    """The :class:`Target` of ``part`` at ``clock_mhz``, refusing an unknown part
-    (:class:`UnknownPartError`) or a clock that is not positive."""
+def target_of(part: str, clock_mhz: float, bind=()) -> Target:
+    """The :class:`Target` of ``part`` at ``clock_mhz`` with the operator binding ``bind``,
+    refusing an unknown part (:class:`UnknownPartError`) or a clock that is not positive (a bad
+    binding: ``operators.BindError``)."""
     capacity(part)
     if not float(clock_mhz) > 0:
         raise UnknownPartError(f"clock {clock_mhz!r} MHz of part {part!r} must be positive")
-    return Target(part, float(clock_mhz))
+    return Target(part, float(clock_mhz), operators.normalise_bind(bind))
 
 
 __all__ = ["DEFAULT", "DEFAULT_PART", "DEVICES", "FAMILIES", "DeviceCapacity", "Target",

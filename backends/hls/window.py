@@ -275,6 +275,14 @@ class WindowLayout(WindowTemplate):
         t = self.template
         return frozenset(entering_blocks(t, t.schedule.steps[self.leaf_step]))
 
+    @property
+    def spec(self) -> bool:
+        """Whether the update forms the leaving keyframe's τ and kept conditional beside its
+        back-substitution (the one-step policy: the store is the solve's own factorisation
+        whenever its step is taken; fgc_stream.h's ``spec_marginal_task``)."""
+        return (self.leaf_step is not None and self.size == self.window + 1
+                and self.template.solver.one_step)
+
     def leaf_gone(self) -> frozenset:
         """The leaf step's factor instances that hold nothing once keyframe 0 has left the
         window: every member's rows zero (:meth:`zero_factors`, τ written) at every keyframe
@@ -329,6 +337,7 @@ class WindowLayout(WindowTemplate):
                 "kf_t": self.kf_dim,
                 "leaf_step": self.leaf_step if self.leaf_step is not None else 0,
                 "marginal": self.leaf_step is not None and self.size == self.window + 1,
+                "spec": self.spec,
                 "prior1": self.prior_of[1].start if self.size > 1 else 0,
                 # as_prior's 1e-12 in double; float's resolution is 1e-7
                 "singular": "1e-12" if linear_cxx == "double" else "1e-5",
@@ -598,7 +607,7 @@ class BatchLayout(WindowTemplate):
                 "new_dest": [w for d in self.new_dest for w in d],
                 "new_begin": self.new_begin(), "slot_step": self.slot_step,
                 "max_new": max(len(d) for d in self.new_dest), "kept": 0, "batch": None,
-                "sweep": None, "marginal": False}
+                "sweep": None, "marginal": False, "spec": False}
 
     def keyframe_words(self, j: int, x_new: np.ndarray) -> np.ndarray:
         """Keyframe j's words for slot j (j < size)."""

@@ -5,10 +5,11 @@
     print("\\n".join(result.lines()))      # every design, its verdict and what bound it
 
 Each candidate is an emitted HLS design (:class:`Candidate`: linear solver, n_u, QR unit sets,
-#CPE, the factor datapaths' ``ALLOCATION`` scale, and any option the plan grows: the ``qr_unit``
-field of ``PlanOptions`` and ``DesignOptions`` is an axis over ``QR_UNITS``; ``Space(extra=
-(("qr_rows", (1, 2)),))`` adds the Householder unit's rows a cycle, ``HlsConfig.qr_rows``).
-Its speed is the accelerator plan's
+#CPE, the factor datapaths' ``ALLOCATION`` scale, the floating-point operators' binding
+(``Space.binds``: DSP or fabric, ``HlsConfig.bind``), and any option the plan grows: the
+``qr_unit`` field of ``PlanOptions`` and ``DesignOptions`` is an axis over ``QR_UNITS``;
+``Space(extra=(("qr_rows", (1, 2)),))`` adds the Householder unit's rows a cycle,
+``HlsConfig.qr_rows``). Its speed is the accelerator plan's
 (``plan_cost(build_plan(program, PlanOptions.for_config(config, program)))``: cycles of one
 iteration); its fit is judged on honest figures:
 
@@ -88,12 +89,24 @@ class Space:
     scalar: str = "float"
     part: str | None = None  # None: HlsConfig's default part
     extra: tuple[tuple[str, tuple], ...] = ()
+    # the floating-point operators' bindings (HlsConfig.bind: ((kind, implementation), ...);
+    # () is Vitis's default, fulldsp adders and maxdsp multipliers): a design dimension that
+    # never changes a cycle, only DSP / LUT / FF, so among designs of equal speed the search
+    # reads them in this order (the default first: a binding is taken when it buys a fit)
+    binds: tuple[tuple[tuple[str, str], ...], ...] = ((),)
 
     def __post_init__(self):
         for name in ("linears", "units", "unit_sets", "cpe", "cascades", "lanes",
-                     "alloc_scales", "backsub_lanes"):
+                     "alloc_scales", "backsub_lanes", "binds"):
             if not getattr(self, name):
                 raise SearchError(f"design space: axis {name!r} is empty")
+        from fgc_backends.cost.operators import BindError, normalise_bind
+
+        try:
+            binds = tuple(dict.fromkeys(normalise_bind(b) for b in self.binds))
+        except BindError as exc:
+            raise SearchError(f"design space: {exc}") from None
+        object.__setattr__(self, "binds", binds)
         bad = [u for u in (*self.units, *self.cpe, *self.alloc_scales,
                            *(b for b in self.backsub_lanes if b is not None)) if int(u) < 1]
         bad += [k for k in self.cascades if int(k) not in (1, 2)]
@@ -148,6 +161,7 @@ class Candidate:
     cpe: int | None = None  # Cholesky
     alloc_scale: int = 1
     extra: tuple[tuple[str, object], ...] = ()
+    bind: tuple[tuple[str, str], ...] = ()  # the operators' binding (HlsConfig.bind)
 
     @property
     def label(self) -> str:
@@ -158,6 +172,8 @@ class Candidate:
             head = f"cholesky #CPE={self.cpe}" + (f" cascades={self.unit_sets}"
                                                  if self.unit_sets else "")
         tail = "".join(f" {k}={v}" for k, v in self.extra)
+        if self.bind:
+            tail += " bind " + ",".join(f"{k}={v}" for k, v in self.bind)
         return f"{head} ALLOC×{self.alloc_scale}{tail}"
 
     def program(self, programs: Mapping[str, Program]) -> Program:
@@ -175,6 +191,8 @@ class Candidate:
                  else tuple((k, n * self.alloc_scale) for k, n in DEFAULT_ALLOCATION))
         kw = dict(scalar=space.scalar, unit_sets=self.unit_sets, allocation=alloc,
                   **dict(self.extra))
+        if self.bind:
+            kw["bind"] = self.bind
         if space.part is not None:
             kw["part"] = space.part
         direct = {k: v for k, v in kw.items() if k in _init_names(HlsConfig)}
@@ -188,7 +206,7 @@ class Candidate:
     def below(self, other: Candidate) -> bool:
         """Every ordered axis of this design <= ``other``'s, the rest equal: the reader's DSP
         of this design is at most ``other``'s."""
-        if (self.linear, self.extra) != (other.linear, other.extra):
+        if (self.linear, self.extra, self.bind) != (other.linear, other.extra, other.bind):
             return False
         for axis in ORDERED:
             a, b = getattr(self, axis), getattr(other, axis)
@@ -218,6 +236,7 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
     for linear in space.linears:
         if linear not in programs:
             continue
+        before = len(out)
         for scale in space.alloc_scales:
             if linear == "qr":
                 for units in space.units:
@@ -230,6 +249,9 @@ def candidates(space: Space, programs: Mapping[str, Program]) -> tuple[Candidate
                                   (() if la == 1 else (("cascade_lanes", la),)) + b)
                         for c in space.cpe for k in space.cascades for la in space.lanes
                         for b in widths]
+        # every design in each binding of the space
+        out[before:] = [dataclasses.replace(c, bind=bind) for c in out[before:]
+                        for bind in space.binds]
     return tuple(dict.fromkeys(out))
 
 
@@ -362,7 +384,7 @@ def read_dsp(program: Program, config, digest: str | None = None,
     from fgc.compiler import cache
     from fgc_backends.hls import emit
     from fgc_backends.hls.plan import PlanOptions, build_plan
-    from fgc_backends.hls.reader import check, dsp_table, emitted_files, read_design
+    from fgc_backends.hls.reader import check, dsp_table, emitted_files, emitted_ops, read_design
 
     key = hashlib.sha256("\0".join((program.fingerprint, repr(config),
                                     digest or sources_digest())).encode()).hexdigest()
@@ -383,8 +405,10 @@ def read_dsp(program: Program, config, digest: str | None = None,
             emit(program, Path(tmp) / "design", config)
         files, top = emitted_files(Path(tmp) / "design")
         design = read_design(files, top, tab.add.latency)
-    # each operator in its own type's table: a mixed design's double linear solver in float64's
-    dsp_of = dsp_table(target.ops, _precision(config))
+        # each operator in its own type's table (a mixed design's double linear solver in
+        # float64's), bound as the emitted run_hls.tcl binds it (config_op): from the text
+        ops_of = emitted_ops(Path(tmp) / "design")
+    dsp_of = dsp_table(ops_of, _precision(config))
     issues = check(design.loops)
     out = {"dsp": design.dsp(dsp_of), "operators": dict(design.operators),
            "ii_short": sum(i.rule == "ii_ports" for i in issues),
@@ -394,15 +418,24 @@ def read_dsp(program: Program, config, digest: str | None = None,
     return out, False
 
 
-def price(program: Program, cand: Candidate, space: Space):
-    """The plan's Cost of ``cand`` and the part's capacities."""
+def price(program: Program, cand: Candidate, space: Space, plans: dict | None = None):
+    """The plan's Cost of ``cand`` and the part's capacities. ``plans``: a cache of the plans
+    built, by the candidate without its binding: a design's other bindings are that plan
+    bound anew (``plan.cost.rebind``: the same cycles, exact)."""
     from fgc_backends.hls.emitter import for_program
     from fgc_backends.hls.plan import PlanOptions, build_plan, plan_cost
+    from fgc_backends.hls.plan.cost import rebind
 
-    # the design the emitter builds: a Program compiled with linear_precision float64 gets a
-    # double linear solver (the mixed design), priced in its own operator table
-    config = for_program(program, cand.config(space))
-    plan = build_plan(program, PlanOptions.for_config(config, program))
+    key = (program.fingerprint, dataclasses.replace(cand, bind=()))
+    if plans is not None and key in plans:
+        plan = rebind(plans[key], cand.bind)
+    else:
+        # the design the emitter builds: a Program compiled with linear_precision float64 gets
+        # a double linear solver (the mixed design), priced in its own operator table
+        config = for_program(program, cand.config(space))
+        plan = build_plan(program, PlanOptions.for_config(config, program))
+        if plans is not None:
+            plans[key] = plan
     d = plan.target.device
     return plan_cost(plan), {"dsp": d.dsp, "bram36": d.bram36, "lut": d.lut, "ff": d.ff}, d.name
 
@@ -423,17 +456,19 @@ def search(programs: Mapping[str, Program], space: Space = Space(),
     cands = candidates(space, programs)
     if not cands:
         raise SearchError("design space: no candidate (no Program for its linear solvers)")
-    rows, part = [], ""
+    rows, part, plans = [], "", {}
     for i, c in enumerate(cands):
         try:
-            cost, caps, part = price(c.program(programs), c, space)
+            cost, caps, part = price(c.program(programs), c, space, plans)
         except FgcError as exc:  # the plan refuses the design (backsub_lanes 4 on a tree)
             say(f"  {c.label}: no design ({type(exc).__name__}: {exc})")
             continue
         rows.append(Row(c, cost, caps))
         if progress and (i + 1) % 10 == 0:
             say(f"  priced {i + 1}/{len(cands)} designs")
-    rows.sort(key=lambda r: (r.cycles, r.cost.dsp, r.label))
+    rank = {b: i for i, b in enumerate(space.binds)}  # equal speed: the space's binding order
+    rows.sort(key=lambda r: (r.cycles, rank.get(r.candidate.bind, len(rank)), r.cost.dsp,
+                             r.label))
     for r in rows:
         r.judge()
     digest = sources_digest() if reader and reader_fn is None else None

@@ -245,11 +245,13 @@ def group_programs(graph: Graph, base: SolverConfig, designs: Sequence[Design],
 def run_sweep(graph: Graph, base: SolverConfig, designs: Sequence[Design], pool: Pool,
               name: str = "fgc_problem",
               progress: Callable[[int], None] | None = None, fit_reads: int | None = None,
-              fit_progress: Callable[[str], None] | None = None) -> SweepResult:
+              fit_progress: Callable[[str], None] | None = None,
+              fit_binds: tuple = ((),)) -> SweepResult:
     """Evaluate ``designs`` on ``pool``: a simulator run per (linear, precision) group, the cost
     model per design, accuracy against GTSAM's LM optimum; ``progress(n)`` after n designs;
     with ``fit_reads`` (not None) the search's fit verdict per design (:func:`fit_search`;
-    ``fit_progress`` gets its progress lines).
+    ``fit_progress`` gets its progress lines; ``fit_binds``: the operator bindings it may take,
+    ``Space.binds``).
 
     Each group is submitted as soon as it is compiled, so compiling the next linear solver and
     GTSAM's optimisation overlap with the workers."""
@@ -279,7 +281,7 @@ def run_sweep(graph: Graph, base: SolverConfig, designs: Sequence[Design], pool:
     rows = _rows(graph, designs, groups, gtsam_values)
     fit_lines: list[str] = []
     if fit_reads is not None:
-        searches = fit_search(programs, designs, fit_reads, fit_progress)
+        searches = fit_search(programs, designs, fit_reads, fit_progress, fit_binds)
         _add_fit(rows, searches, name)
         for precision, result in searches.items():
             floor = _floor(result, programs, precision)
@@ -315,20 +317,36 @@ def add_fit_arguments(parser) -> None:
                              "second reader (DSP = max(plan, reader)); 0: the plan alone; "
                              "reads are cached in FGC_CACHE_DIR (default 2)")
 
+    def bind(text: str):
+        from fgc_backends.cost.operators import BindError, parse_bind
+
+        try:
+            return parse_bind(text)
+        except BindError as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+
+    parser.add_argument("--fit-bind", type=bind, action="append", metavar="KIND=IMPL,…",
+                        help="an operator binding the fit search may also take (repeatable; "
+                             "HlsConfig.bind, e.g. add=fabric or add=fabric,mul=meddsp): same "
+                             "cycles, fewer DSP, more LUT/FF; a design's row takes the first "
+                             "binding that fits (the default first)")
+
 
 def fit_options(args, show_progress: bool) -> dict:
     """:func:`run_sweep`'s fit-search keywords from ``fgc sweep``'s parsed arguments (progress
     lines on stderr when ``show_progress``)."""
     return {"fit_reads": args.fit_reads,
+            "fit_binds": ((), *(getattr(args, "fit_bind", None) or ())),
             "fit_progress": (lambda line: print(line, file=sys.stderr)) if show_progress
             else None}
 
 
 def fit_search(programs: dict, designs: Sequence[Design], reads: int,
-               progress: Callable[[str], None] | None = None) -> dict:
+               progress: Callable[[str], None] | None = None, binds: tuple = ((),)) -> dict:
     """Per precision, :func:`fgc.app.search.search` over the sweep's designs as the HLS backend
-    emits them (its default unit sets and ALLOCATION): ``programs`` is {(linear, precision):
-    Program}; at most ``reads`` designs emitted and read per precision."""
+    emits them (its default unit sets and ALLOCATION) in each of ``binds`` (the operators'
+    bindings, ``Space.binds``): ``programs`` is {(linear, precision): Program}; at most
+    ``reads`` designs emitted and read per precision."""
     from fgc.app.search import Space, search
 
     out = {}
@@ -340,7 +358,7 @@ def fit_search(programs: dict, designs: Sequence[Design], reads: int,
                       cpe=tuple(sorted({d.cpe for d in members if d.cpe})) or (5,),
                       scalar="float" if precision == "float32" else "double",
                       # the sweep's designs are the default unit's: no QR-unit axis
-                      extra=(("qr_unit", ("householder",)),))
+                      extra=(("qr_unit", ("householder",)),), binds=binds)
         out[precision] = search(progs, space, max_reads=max(0, reads), reader=reads > 0,
                                 progress=progress)
     return out
@@ -352,13 +370,20 @@ def _add_fit(rows: list[dict], searches: dict, name: str) -> None:
     import warnings
 
     from fgc.app.search import fit_warnings
+    from fgc_backends.cost.operators import bind_label
     from fgc_backends.hls.lint import HlsFitWarning
 
     for precision, result in searches.items():
         # the sweep's designs are the emitter's default unit sets (one Cholesky cascade); the
         # search's two-cascade designs are in its lines (fit_lines) and may be its best
-        by = {(r.candidate.linear, r.candidate.units, r.candidate.cpe): r for r in result.rows
-              if r.candidate.linear == "qr" or r.candidate.unit_sets is None}
+        # a design in several bindings: the first (in the search's binding order, the default
+        # first) that fits, else the default's
+        by: dict = {}
+        for r in sorted(result.rows, key=lambda r: r.verdict != "fits"):  # stable: rank
+            if r.candidate.linear == "qr" or r.candidate.unit_sets is None:
+                key = (r.candidate.linear, r.candidate.units, r.candidate.cpe)
+                if key not in by and (r.verdict == "fits" or not r.candidate.bind):
+                    by[key] = r
         for row in rows:
             if row["precision"] != precision:
                 continue
@@ -367,7 +392,9 @@ def _add_fit(rows: list[dict], searches: dict, name: str) -> None:
                 continue
             row.update({"plan_latency_ms": r.latency_ms, "plan_dsp": r.cost.dsp,
                         "reader_dsp": r.reader_dsp, "plan_bram36": r.cost.bram36,
-                        "fit": r.verdict, "fit_bound": r.bound, "honest_dsp": r.dsp,
+                        "fit": r.verdict, "honest_dsp": r.dsp,
+                        "fit_bound": r.bound + (f" (bound {bind_label(r.candidate.bind)})"
+                                                if r.candidate.bind else ""),
                         "part_dsp": r.caps["dsp"],
                         "best": r is result.best and r.verdict == "fits"})
         for message in fit_warnings(result, name):

@@ -349,6 +349,11 @@ def test_report_prices_the_design_compile_emits(tmp_path, capsys):
     assert priced["cycles"] != default["cycles"] and priced["resources"] != default["resources"]
 
 
+# heavy (about 25 s of CPU: three compiles and four reports of LIO): the width's plan and C
+# simulation stay in the default run (tests/hls/test_plan.py, test_hls_csim.py,
+# test_units_backsub.py), the CLI's pricing of a design in
+# test_report_prices_the_design_compile_emits
+@pytest.mark.heavy
 def test_backsub_lanes_auto_by_default_and_as_given(tmp_path, capsys):
     """--backsub-lanes: auto (the default) is the design's automatic width, by columns on a
     chain (LIO N = 5), and fgc report prices and names that width; an explicit width is emitted

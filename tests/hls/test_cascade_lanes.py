@@ -67,7 +67,8 @@ def test_a_qr_design_refuses_lanes(tmp_path):
         emit(qr, tmp_path, HlsConfig(cascade_lanes=2))
 
 
-@pytest.mark.parametrize("sets", [1, 2])
+# one set is heavy (about 16 s of CPU), as below: two sets run the same lanes in each set
+@pytest.mark.parametrize("sets", [pytest.param(1, marks=pytest.mark.heavy), 2])
 def test_two_lanes_match_the_simulator(tmp_path, sets):
     # LM in double, #CPE = 4 < f = 15: every step in four rounds, the later ones read back
     # from H two words a cycle; the C simulation's estimates are the simulator's to 1e-9

@@ -224,17 +224,21 @@ def test_each_stream_function_has_one_call_site_in_the_header():
     text = (Path(__file__).resolve().parents[2] / "backends" / "hls" / "include"
             / "fgc_stream.h").read_text()
     code = re.sub(r"//[^\n]*", "", text)
-    # tau's and the kept conditional's two parts: the marginal's (tau_and_keep's tasks) and a
-    # batch step's (write_tau, kept_conditional)
-    two = ("tau_sign", "tau_mean", "kept_reciprocals", "kept_scale")
+    # tau's and the kept conditional's parts: the marginal's (tau_and_keep's tasks), a batch
+    # step's (write_tau, kept_conditional) and the one-step update's beside its
+    # back-substitution (spec_marginal_task, spec_keep: the kept scale its own loop there);
+    # the call's reads of X beside tau's sign loop or beside the speculation's moves
+    three = ("tau_sign", "tau_mean", "kept_reciprocals")
+    two = ("kept_scale", "out_task")
     for name in ("marginalize", "reexpress", "kept_walk", "keep_points", "keep_task",
                  "window_task", "kept_task", "window_and_kept", "write_tau", "tau_tail",
-                 "mean_task", "words_task", "tau_words", "tau_mean_out", "out_task",
+                 "mean_task", "words_task", "tau_words", "tau_mean_out",
                  "tau_beside_keep", "tau_and_keep", "sign_task", "reciprocal_task",
                  "sign_beside_reciprocals", "kept_conditional", "update_start",
-                 "start_x_task", "start_data_task", *two):
+                 "start_x_task", "start_data_task", "tau_buffer", "spec_keep",
+                 "tau_commit_task", "keep_commit_task", "out_beside_commit", *two, *three):
         sites = re.findall(rf"\b{name}<CFG>\(", code)
-        assert len(sites) == (2 if name in two else 1), name
+        assert len(sites) == (3 if name in three else 2 if name in two else 1), name
 
 
 @pytest.fixture(scope="module")

@@ -38,7 +38,10 @@
 // issue - as units/backsub.py's retire_region prices it. A third process (FGC_OUTER_BRANCH
 // again: back_substitute's trial_cost) runs pipelined loops one after another, an iteration
 // after its k-th FGC_OUTER_ABSORB no earlier than the second's k-th iteration ends
-// (units/datapath.py's trial_end); the group ends when the last of the three does. Keyed
+// (units/datapath.py's trial_end); the group ends when the last of the three does. A last
+// process with no channel to the others (FGC_OUTER_BESIDE at its start: the on-chip stream's
+// spec_marginal_task, the one-step update's marginal) runs its records as span_total prices
+// them, and the group ends no earlier than it does (plan/stream.py's _spec_over). Keyed
 // marks (FGC_OUTER_SEND_STEP(s) / FGC_OUTER_RECEIVE_STEP(s): back-substitution by columns,
 // whose first process is a DATAFLOW region of a loader and two ends run one after the other
 // in C simulation) match a receive with the send of the same step, at that send's time on
@@ -376,9 +379,15 @@ inline long outer_total(std::size_t from, std::size_t to) {
     std::size_t at = from;
     std::vector<std::size_t> branches, sends, receives, absorbs;
     std::vector<long> send_keys, receive_keys, absorb_keys;  // keyed marks' keys (-1: unkeyed)
+    std::size_t beside = to;  // FGC_OUTER_BESIDE: the group's last process, from here (none: to)
     bool open = false;
-    auto close_group = [&](std::size_t end) {
+    auto close_group = [&](std::size_t group_end) {
         const std::vector<Record>& r = s.records;
+        // a last process beside the others (FGC_OUTER_BESIDE: back_substitute's
+        // spec_marginal_task), no channel to them: its records as span_total prices them
+        const bool has_beside = beside < group_end;
+        const std::size_t end = has_beside ? beside : group_end;
+        const long besides = has_beside ? span_total(beside, group_end) : 0;
         const std::size_t a0 = branches[0], b0 = branches.size() > 1 ? branches[1] : end;
         const std::size_t c0 = branches.size() > 2 ? branches[2] : end;
         const std::size_t d0 = branches.size() > 3 ? branches[3] : end;
@@ -446,12 +455,13 @@ inline long outer_total(std::size_t from, std::size_t to) {
         const long third = cost_process(c0, d0), fourth = cost_process(d0, end);
         if (third > last) last = third;
         if (fourth > last) last = fourth;
+        if (besides > last) last = besides;
         return first > last ? first : last;
     };
     for (std::size_t mi = 0; mi < s.marks.size(); ++mi) {
         const auto& m = s.marks[mi];
         const char w = m.second;
-        if (w != 'B' && w != 'S' && w != 'R' && w != 'J' && w != 'A') continue;
+        if (w != 'B' && w != 'S' && w != 'R' && w != 'J' && w != 'A' && w != 'P') continue;
         const long key = s.keys.count(mi) ? s.keys.at(mi) : -1;
         if (w == 'J' ? (m.first <= from || m.first > to) : (m.first < from || m.first >= to))
             continue;
@@ -466,8 +476,11 @@ inline long outer_total(std::size_t from, std::size_t to) {
                 absorb_keys.clear();
                 send_keys.clear();
                 receive_keys.clear();
+                beside = to;
             }
             branches.push_back(m.first);
+        } else if (w == 'P' && open) {
+            beside = m.first;
         } else if (w == 'S' && open) {
             sends.push_back(m.first);
             send_keys.push_back(key);
@@ -623,6 +636,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_SEND() ::fgc_cycles::mark('S')
 #define FGC_OUTER_RECEIVE() ::fgc_cycles::mark('R')
 #define FGC_OUTER_JOIN() ::fgc_cycles::mark('J')
+#define FGC_OUTER_BESIDE() ::fgc_cycles::mark('P')
 #define FGC_OUTER_ABSORB() ::fgc_cycles::mark('A')
 #define FGC_OUTER_ABSORB_AT(i) ::fgc_cycles::keyed_mark('A', i)
 #define FGC_OUTER_SEND_STEP(step) ::fgc_cycles::keyed_mark('S', step)
@@ -654,6 +668,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_SEND() ((void)0)
 #define FGC_OUTER_RECEIVE() ((void)0)
 #define FGC_OUTER_JOIN() ((void)0)
+#define FGC_OUTER_BESIDE() ((void)0)
 #define FGC_OUTER_ABSORB() ((void)0)
 #define FGC_OUTER_ABSORB_AT(i) ((void)0)
 #define FGC_OUTER_SEND_STEP(step) ((void)0)

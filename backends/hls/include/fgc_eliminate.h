@@ -628,7 +628,13 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_COND
 #pragma HLS PIPELINE II=1
         for (int h = 0; h < PORTS; ++h) {
-            if (i + h < nc) COND[c0 + i + h] = cond[i + h];
+            if (i + h < nc) {
+                const typename CFG::T v = cond[i + h];
+                COND[c0 + i + h] = v;
+#ifdef FGC_SPEC_MARGINAL  // the leaving keyframe's conditional twice (the stream's KEEP_COND)
+                if (s == SPEC_STEP) KEEP_COND[i + h] = v;
+#endif
+            }
         }
     }
     FGC_CYCLES("commit", 0, "cond", (nc + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);

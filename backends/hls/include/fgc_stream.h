@@ -841,7 +841,16 @@ void window_task(int mode, int ms, bool live, const T lin01[2 * STREAM_KF_X], T 
     bool finite = true;  // false: the window is not finite where slot 0 leaves
     bool reuse = false;  // the one-step update took its step: its solve's factorisation is the store
     if (mode == 2) {
+#ifdef FGC_SPEC_MARGINAL
+        // a keyframe leaving: its marginal beside the solve's back-substitution (the one-step
+        // policy's: spec_marginal_task), kept if the step is taken
+        SPEC_ARMED = ms == STREAM_W;
+        SPEC_RAN = false;
+#endif
         CFG::lm_solve(errors, info);
+#ifdef FGC_SPEC_MARGINAL
+        SPEC_ARMED = false;
+#endif
         reuse = ms == STREAM_W && CFG::took_step(info);
         // the window's rows at its optimum for a leaving keyframe's marginal: AB holds them if
         // LM stopped where it last linearised (CFG::at_linearisation), else computed again here
@@ -1032,6 +1041,165 @@ bool tau_and_keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X], bool out, b
     tau_mean_out<CFG>(mean);
     return true;
 }
+
+#ifdef FGC_SPEC_MARGINAL
+// The one-step policy's marginal beside the update's back-substitution. Under the one-step
+// policy the store is the update's own factorisation whenever the step is taken (took_step):
+// slot 0's rows in NF and its conditional in COND at mu = 0, at the call's start (lin01), all
+// known once the solve's elimination is over, while its back-substitution, the state update
+// and the cost at X_TRIAL (which decides whether the step is taken) still run. So the update's
+// back_substitute region runs a last process, spec_marginal_task, that forms tau (signed, its
+// mean, its words into TAU_BUF) and the leaving keyframe's conditional (its points, pivots'
+// reciprocals, rows scaled into SPEC_R / SPEC_S / SPEC_D) from the same words in the same
+// order as tau_and_keep would after the region - the same functions but for where the words
+// go: no memory of the region's other processes (COND is the slots' - KEEP_COND is qr_commit's
+// second copy of the leaving keyframe's conditional; DATA_BUF the cost pass's; KEPT_* the kept
+// task's, beside the window's process) - and no operator of theirs (its own call sites).
+// When the step is taken, out_beside_commit moves the words where tau_and_keep writes them
+// (TAU_BUF to slot 1's prior in DATA_BUF, the staged conditional into kept memory) beside the
+// call's reads of X; when it is not (the cost at X_TRIAL not finite, the step too small or not
+// finite), the words are dropped and the update runs the marginal as before (window_task's
+// relinearisation, the leaf step, tau_and_keep): nothing of the speculation was written where
+// the window or the kept net reads it.
+const int SPEC_TAU_WORDS = STREAM_KF_X + STREAM_KF_T + STREAM_KF_T * (STREAM_KF_T + 1) / 2 + 2;
+
+// tau's words into TAU_BUF (slot 1's prior's layout: the linearisation point `lin`, the mean,
+// R by rows, no robust loss), as tau_tail writes them into DATA_BUF
+template <class CFG>
+void tau_buffer(const L a[STREAM_KF_T][STREAM_KF_T + 1], const L mean[STREAM_KF_T], const T lin[STREAM_KF_X]) {
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        TAU_BUF[k] = lin[k];
+    }
+    for (int i = 0; i < STREAM_KF_T; ++i) {
+#pragma HLS PIPELINE II=1
+        TAU_BUF[STREAM_KF_X + i] = T(mean[i]);
+    }
+    for (int i = 0, w = STREAM_KF_X + STREAM_KF_T; i < STREAM_KF_T; ++i) {
+        for (int c = i; c < STREAM_KF_T; ++c) {
+#pragma HLS LOOP_TRIPCOUNT max=STREAM_KF_T
+#pragma HLS PIPELINE II=1
+            TAU_BUF[w++] = T(a[i][c]);
+        }
+    }
+    TAU_BUF[SPEC_TAU_WORDS - 2] = T(0);  // no robust loss
+    TAU_BUF[SPEC_TAU_WORDS - 1] = T(0);
+    FGC_CYCLES("spec", 0, "tau_out", SPEC_TAU_WORDS, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+#ifdef FGC_STREAM_KEPT
+// The leaving keyframe's conditional staged: its points (lin01: the one-step update linearised
+// there), then its rows scaled by its pivots' reciprocals (kept_reciprocals, then kept_scale's
+// loop into SPEC_R / SPEC_S / SPEC_D)
+template <class CFG>
+void spec_keep(const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], const T lin01[2 * STREAM_KF_X]) {
+    for (int k = 0; k < STREAM_KF_X; ++k) {
+#pragma HLS PIPELINE II=1
+        SPEC_LIN[k] = lin01[k];
+        SPEC_NEXT[k] = lin01[STREAM_KF_X + k];
+    }
+    FGC_CYCLES("spec", 0, "points", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    L rinv[STREAM_KF_T];
+    kept_reciprocals<CFG>(cond, rinv);
+    const int cols = 2 * STREAM_KF_T + 1;
+    for (int e = 0; e < STREAM_KF_T * (2 * STREAM_KF_T + 1); ++e) {
+#pragma HLS PIPELINE II=1
+        const int i = e / cols, k = e % cols;
+        const L v = cond[e] * rinv[i];
+        if (k < STREAM_KF_T) {
+            SPEC_R[i * STREAM_KF_T + k] = v;
+        } else if (k < 2 * STREAM_KF_T) {
+            SPEC_S[i * STREAM_KF_T + k - STREAM_KF_T] = v;
+        } else {
+            SPEC_D[i] = v;
+        }
+    }
+    FGC_CYCLES("spec", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH + L_MUL_LAT);
+}
+#endif
+
+// back_substitute's last process (accel.cpp.jinja's spec_marginal, a process of trial_cost's
+// region): where `run` (the update's solve with a keyframe leaving, SPEC_ON), tau signed and
+// checked, and if it is not singular its mean and words and the leaving keyframe's
+// conditional, staged (above). Its loops one after another, beside the region's others (csim
+// counting: FGC_OUTER_BESIDE).
+template <class CFG>
+void spec_marginal_task(bool run) {
+    FGC_OUTER_BESIDE();  // csim cycle counting only: a process beside back_substitute's others
+    if (!run) return;
+    FGC_SEQUENTIAL();  // (its loops one after another)
+    FGC_EVENT("spec_marginal");
+    SPEC_RAN = true;
+    L a[STREAM_KF_T][STREAM_KF_T + 1];
+    const bool ok = tau_sign<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], a);
+    SPEC_OK = ok;
+    if (ok) {
+        L mean[STREAM_KF_T];
+        tau_mean<CFG>(a, mean);
+        tau_buffer<CFG>(a, mean, LIN01 + STREAM_KF_X);
+#ifdef FGC_STREAM_KEPT
+        spec_keep<CFG>(KEEP_COND, LIN01);
+#endif
+    }
+    FGC_PHASE("backsub");
+}
+
+// The step taken: the speculation's words where tau_and_keep writes them, two a cycle (each
+// memory's two ports): tau's into slot 1's prior (tau_commit_task), the staged conditional into
+// kept keyframe c's rows (keep_commit_task: R, S, d and the points, each its own memory)
+template <class CFG>
+void tau_commit_task(bool commit) {
+    FGC_TASK();
+    if (!commit) return;
+    FGC_PHASE("marginal");
+    for (int k = 0; k < SPEC_TAU_WORDS; k += 2) {
+#pragma HLS PIPELINE II=1
+        for (int h = 0; h < 2; ++h) {
+            if (k + h < SPEC_TAU_WORDS) DATA_BUF[STREAM_PRIOR1 + k + h] = TAU_BUF[k + h];
+        }
+    }
+    FGC_CYCLES("marginal", 0, "tau_commit", (SPEC_TAU_WORDS + 1) / 2, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+template <class CFG>
+void keep_commit_task(bool commit, int c) {
+    FGC_TASK();
+#ifdef FGC_STREAM_KEPT
+    if (!commit) return;
+    FGC_PHASE("kept");
+    const int n = STREAM_KF_T * STREAM_KF_T;
+    for (int e = 0; e < STREAM_KF_T * STREAM_KF_T; e += 2) {
+#pragma HLS PIPELINE II=1
+        for (int h = 0; h < 2; ++h) {
+            const int q = e + h;
+            if (q < n) {
+                KEPT_R[c * n + q] = SPEC_R[q];
+                KEPT_S[c * n + q] = SPEC_S[q];
+            }
+            if (q < STREAM_KF_T) KEPT_D[c * STREAM_KF_T + q] = SPEC_D[q];
+            if (q < STREAM_KF_X) {
+                KEPT_LIN[c * STREAM_KF_X + q] = SPEC_LIN[q];
+                KEPT_NEXT[c * STREAM_KF_X + q] = SPEC_NEXT[q];
+            }
+        }
+    }
+    FGC_CYCLES("kept", 0, "keep_commit", (n + 1) / 2, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#else
+    (void)commit;
+    (void)c;
+#endif
+}
+
+// One DATAFLOW region after the window's (the step taken): the two commits beside the call's
+// reads of X (out_task), no memory between them
+template <class CFG>
+void out_beside_commit(bool commit, int c, bool out, bool pending, T x_out[N_X]) {
+#pragma HLS DATAFLOW
+    tau_commit_task<CFG>(commit);
+    keep_commit_task<CFG>(commit, c);
+    out_task<CFG>(out, pending, x_out);
+}
+#endif  // FGC_SPEC_MARGINAL
 #endif
 #endif  // FGC_STREAM_WINDOW
 
@@ -1165,7 +1333,11 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         // slots 0 and 1 where the update linearises them: under the one-step policy a leaving
         // keyframe's conditional and tau are kept there once the step is taken (copied whatever
         // the policy, a word a cycle)
+#ifdef FGC_SPEC_MARGINAL
+        T (&lin01)[2 * STREAM_KF_X] = LIN01;  // (spec_marginal_task reads them in the solve)
+#else
         T lin01[2 * STREAM_KF_X];
+#endif
         int mode = 0;  // the window's process: 0 nothing, 1 a sweep pass's, 2 the update's solve
         bool live = false;  // keyframe 0 has left: slot 0's factors that hold nothing are skipped
         int mc = -1;  // the pass's slot (-1: no marginal)
@@ -1238,6 +1410,19 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         const int kc = 0;
 #endif
         // tau, and the leaving keyframe's conditional kept beside its tail
+#ifdef FGC_SPEC_MARGINAL
+        if (mc == STREAM_W && marginal == 1 && SPEC_RAN && result[1] != 0) {
+            // the step taken: tau and the conditional as the solve's region formed them, moved
+            // where the window and the kept net read them beside the call's reads of X
+#ifdef FGC_STREAM_KEPT
+            pending_read = last && !sweep && first > 0;
+#endif
+            out_beside_commit<CFG>(SPEC_OK, kc, last, pending_read, x_out);
+            FGC_TASKS_JOIN();
+            marginal = SPEC_OK ? 1 : 2;
+            out_read = last;
+        } else
+#endif
         if (mc == STREAM_W && marginal == 1) {
             // the call's reads of X (its outputs, the pending point) beside tau's sign loop
 #ifdef FGC_STREAM_KEPT

@@ -35,7 +35,8 @@ def lint_project(project, synthesised: Iterable[Path], strict: bool = True) -> l
     config = getattr(project, "config", None)
     semantic = semantic_issues([(p.name, synthesis_view(p.read_text())) for p in synthesised],
                                part=getattr(config, "part", None),
-                               scalar=getattr(config, "scalar_cxx", None))
+                               scalar=getattr(config, "scalar_cxx", None),
+                               bind=getattr(config, "bind", ()))
     fit = [i for i in semantic if i.rule == "dsp"]
     for i in fit:
         warnings.warn(f"{project.name}: {i.message}: the design does not fit its part",

@@ -52,7 +52,8 @@ _POINTER_DECL = re.compile(r"(?:^|(?<=[;{}])|(?<=for\()|(?<=for \())\s*(?:const\
 
 
 class _Checker:
-    def __init__(self, files: list[tuple[str, str]], part: str | None, scalar: str | None):
+    def __init__(self, files: list[tuple[str, str]], part: str | None, scalar: str | None,
+                 bind=()):
         self.files = [(name, strip_comments_and_strings(text)) for name, text in files]
         self.functions: dict[str, _Function] = {}
         self.macros: set[str] = set()
@@ -64,6 +65,7 @@ class _Checker:
         self.inlining: set[str] = set()
         self.constants = _constants(code for _, code in self.files)
         self.part, self.scalar = part, scalar
+        self.bind = tuple(bind or ())
         self.issues: list[LintIssue] = []
 
     def add(self, file: str, code: str, pos: int, rule: str, message: str) -> None:
@@ -505,7 +507,7 @@ class _Checker:
                 if op not in ALLOCATION_OPS or limit is None:
                     continue
                 kind, precision = ALLOCATION_OPS[op]
-                dsp = Target(self.part).ops(precision or default).op(kind).dsp
+                dsp = Target(self.part, bind=self.bind).ops(precision or default).op(kind).dsp
                 total += limit * dsp
                 parts.append(f"{op} {limit}x{dsp}")
                 first = first or (name, code, m.start())
@@ -516,8 +518,9 @@ class _Checker:
 
 
 def semantic_issues(files: Iterable[tuple[str, str]], part: str | None = None,
-                    scalar: str | None = None) -> list[LintIssue]:
+                    scalar: str | None = None, bind=()) -> list[LintIssue]:
     """Semantic-rule issues of synthesised C++ ``files`` ((name, text) pairs, read together so
     that calls across a header and its source resolve). ``part``/``scalar`` set the DSP budget
-    and the precision of ALLOCATION operation names without one."""
-    return _Checker(list(files), part, scalar).run()
+    and the precision of ALLOCATION operation names without one; ``bind`` the operators'
+    binding (``DesignOptions.bind``: a fabric adder has no DSP in the budget)."""
+    return _Checker(list(files), part, scalar, bind).run()

@@ -9,7 +9,7 @@ from functools import cached_property
 
 from fgc.ir.program import Program
 from fgc_backends.cfamily.blocks import block_contexts
-from fgc_backends.cost.operators import OperatorTable
+from fgc_backends.cost.operators import BindError, OperatorTable, normalise_bind
 from fgc_backends.hls import units as unit_registry
 from fgc_backends.hls.plan.loops import _sizes, _tables, kernel_timing
 from fgc_backends.hls.plan.model import AcceleratorPlan, PlanError
@@ -77,6 +77,13 @@ def check_options(opts: PlanOptions) -> None:
     for kind, n in (*opts.allocation, *opts.state_allocation):
         if n < 1:
             raise PlanError(f"ALLOCATION limit of {kind} must be ≥ 1, got {n}")
+    try:
+        bind = normalise_bind(opts.bind)
+    except BindError as exc:
+        raise PlanError(f"plan option {exc}") from None
+    if bind != tuple(opts.bind):
+        raise PlanError(f"plan option bind {opts.bind!r} is not canonical: give {bind!r} "
+                        "(operators.normalise_bind: sorted, default implementations left out)")
 
 
 def build_plan(program: Program, options: PlanOptions | None = None) -> AcceleratorPlan:
@@ -85,7 +92,7 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     opts = options or PlanOptions.of(program)
     check_options(opts)
     precision, les_precision = opts.precisions(program)
-    target = target_of(opts.part, program.solver.clock_mhz)
+    target = target_of(opts.part, program.solver.clock_mhz, opts.bind)
     ctx = PlanBuild(program, opts, target.ops(precision), target.ops(les_precision))
     for unit in unit_registry.REGISTRY:
         if unit.applies(program, opts):

@@ -60,6 +60,24 @@ def plan_cost(plan: AcceleratorPlan) -> Cost:
                 tuple(by_unit), sum(m.words for m in plan.memories), other)
 
 
+def rebind(plan: AcceleratorPlan, bind=()) -> AcceleratorPlan:
+    """``plan``'s design with its floating-point operators bound as ``bind`` says
+    (``PlanOptions.bind``): the same units, loops and phases, the operator tables bound anew.
+    Exact, not an estimate: a binding keeps every latency (run_hls.tcl's ``config_op`` pins
+    it) and no unit reads an operator's DSP, LUT or FF while it is built, so the plan built
+    with ``bind`` is this one (tests/hls/test_operator_binding.py checks it); the design search
+    prices a design's bindings so, without building its plan again."""
+    from fgc_backends.cost.operators import normalise_bind
+    from fgc_backends.hls.target import Target
+
+    bind = normalise_bind(bind)
+    if bind == plan.options.bind:
+        return plan
+    options = replace(plan.options, bind=bind)
+    ops = Target(options.part, plan.clock_mhz, bind).ops(plan.precision)
+    return replace(plan, options=options, ops=ops)
+
+
 def merge_plans(plan: AcceleratorPlan, other: AcceleratorPlan | None = None,
                 memories: tuple[Memory, ...] = ()) -> AcceleratorPlan:
     """One plan of a design made of ``plan``, a second accelerator ``other`` beside it (its

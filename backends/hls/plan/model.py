@@ -136,8 +136,9 @@ class AcceleratorPlan:
 
     @property
     def target(self) -> Target:
-        """The part (``options.part``) and clock this plan is priced for."""
-        return Target(self.options.part, self.clock_mhz)
+        """The part (``options.part``), clock and operator binding (``options.bind``) this
+        plan is priced for."""
+        return Target(self.options.part, self.clock_mhz, self.options.bind)
 
     def unit(self, name: str) -> Unit:
         return next(u for u in self.units if u.name == name)

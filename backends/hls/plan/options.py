@@ -103,6 +103,11 @@ class PlanOptions:
     # the FPGA part whose device capacities the fit verdict uses (hls/target.py; an HLS
     # design's HlsConfig.part, which run_hls.tcl names)
     part: str = DEFAULT_PART
+    # the operators' binding (DesignOptions.bind; run_hls.tcl's config_op lines): ((kind,
+    # implementation), ...) in canonical form (cost/operators.py's normalise_bind: sorted, the
+    # default implementations left out); () = Vitis's default, fulldsp adders and maxdsp
+    # multipliers. The plan prices every operator through the bound table (Target.ops)
+    bind: tuple[tuple[str, str], ...] = ()
 
     @property
     def state_allocation(self) -> tuple[tuple[str, int], ...]:

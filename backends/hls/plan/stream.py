@@ -370,6 +370,10 @@ class WindowUpdateModel:
         # the one-step policy (SolverConfig.one_step): the step taken, the store is the
         # update's own factorisation (fgc_stream.h's took_step)
         self.one_step = t.solver.one_step
+        # and the leaving keyframe's τ and kept conditional formed beside the update's
+        # back-substitution, moved into place once the step is known taken (fgc_stream.h's
+        # spec_marginal_task, out_beside_commit)
+        self.spec = layout.spec and not config.mixed
         self.batch = None
         if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
             bplan = accel_plan(layout.batch.template, config)
@@ -538,6 +542,17 @@ class WindowUpdateModel:
                     _stream_phase("tau_mean", *mean),
                     _stream_phase("tau_words", move("tau_words", kf + n * (n + 1) // 2 + 2)),
                     _stream_phase("tau_mean_out", move("tau_mean_out", n))]
+            if self.spec:
+                # the one-step update's marginal beside its back-substitution
+                # (spec_marginal_task: τ signed, its mean, its words into TAU_BUF, then the
+                # conditional's points, reciprocals and rows staged, one loop after another),
+                # and once the step is known taken its words moved two a cycle
+                # (out_beside_commit's tau_commit_task, keep_commit_task)
+                staged = (move("x", kf), *keep_one) if lay.kept else ()
+                out += [_stream_phase("spec_marginal", *write_tau, *staged),
+                        _stream_phase("tau_commit",
+                                      move("tau_commit", (kf + n + n * (n + 1) // 2 + 2 + 1) // 2)),
+                        _stream_phase("keep_commit", move("keep_commit", (n * n + 1) // 2))]
         if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
             out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
                     for m, d in enumerate(lay.new_dest)]
@@ -611,7 +626,8 @@ class WindowUpdateModel:
         merged = merge_plans(self.plan, batch["plan"] if batch is not None else None,
                              stream_memories(self.layout, self.plan.ops.word_bits,
                                              self.les.word_bits,
-                                             n * (2 * n + 1) if batch is not None else 0))
+                                             n * (2 * n + 1) if batch is not None else 0,
+                                             self.spec))
         # DATA_BUF in the update start's cyclic banks (fgc_stream.h's start_data_task)
         memories = tuple(replace(m, banks=max(m.banks, self.layout.start_banks))
                          if m.name == "data" else m for m in merged.memories)
@@ -628,10 +644,12 @@ class WindowUpdateModel:
         ALLOCATION): no unit here - the marginal's QR step too, eliminate_all's on unit set 0
         (fgc_eliminate.h's qr_eliminate_all with a leaf)."""
         lay, units = self.layout, []
-        tau_sites = int(bool(self.layout_marginal)) + int(self.batch is not None)
+        tau_sites = (int(bool(self.layout_marginal)) + int(self.batch is not None)
+                     + int(self.spec))
         if tau_sites:
             units.append(Unit("stream_write_tau", "tau signed, its mean and words (per call "
-                              "site: the marginal's, a batch step's)", tau_sites, WRITE_TAU_OPS))
+                              "site: the marginal's, a batch step's, the one-step update's "
+                              "beside its back-substitution)", tau_sites, WRITE_TAU_OPS))
         if lay.kept:
             units += [Unit("stream_kept_datapaths", "the kept net's Log and retraction "
                            "(keyframe_pass: one module, its ALLOCATION)", 1,
@@ -642,7 +660,8 @@ class WindowUpdateModel:
                            "loops and sequential code", 1, KEPT_TASK_OPS),
                       Unit("stream_kept_scale", "a kept conditional's pivot reciprocals and "
                            "its rows scaled by them (kept_conditional, per call site: keep's, "
-                           "a batch step's)", 1 + int(self.batch is not None),
+                           "a batch step's, the one-step update's staged one: spec_keep)",
+                           1 + int(self.batch is not None) + int(self.spec),
                            KEPT_SCALE_OPS)]
         return tuple(units)
 
@@ -674,9 +693,9 @@ class WindowUpdateModel:
         return self.layout.zero_factors(keyframe, self.layout_marginal)
 
     def resources(self) -> dict:
-        """The whole on-chip design's DSP and BRAM36 (model estimates): ``plan_cost`` of
-        :meth:`design_plan`, and its parts: the window kernel, the batch kernel, the stream
-        section (its units and memories)."""
+        """The whole on-chip design's DSP, BRAM36, LUT and FF (model estimates): ``plan_cost``
+        of :meth:`design_plan`, its fit verdict on all four, and its parts (DSP, BRAM36): the
+        window kernel, the batch kernel, the stream section (its units and memories)."""
         design = plan_cost(self._design)
         window = plan_cost(self.plan)
         parts = {"window kernel": (window.dsp, window.bram36)}
@@ -689,9 +708,10 @@ class WindowUpdateModel:
                                    if name.startswith("stream_")}
         section = sum(units["stream section"].values())
         parts["stream section"] = (section, design.bram36 - sum(b for _, b in parts.values()))
-        device = self.plan.target.device
-        return {"dsp": design.dsp, "bram36": design.bram36, "parts": parts, "units": units,
-                "fits": design.dsp <= device.dsp and design.bram36 <= device.bram36,
+        # fits: every figure within the part (plan_cost's verdict: DSP, BRAM36, LUT, FF; a
+        # design whose operators are bound to fabric trades DSP for LUT)
+        return {"dsp": design.dsp, "bram36": design.bram36, "lut": design.lut, "ff": design.ff,
+                "parts": parts, "units": units, "fits": design.fits, "over": design.over,
                 "part": self.plan.options.part}
 
     def duplicated(self) -> dict:
@@ -835,6 +855,46 @@ class WindowUpdateModel:
                     "its sign loop beside the pivots' reciprocals, its mean beside its other "
                     "words and the rows scaled, the mean's words after): all but the longest "
                     "of each region hidden")
+
+    def _spec_over(self) -> int:
+        """The cycles the one-step update's marginal (spec_marginal_task: τ's sign, mean and
+        words, the conditional's points, reciprocals and rows, one loop after another) runs past
+        the rest of the back_substitute region it is a process of (0 when it ends first)."""
+        return max(0, self.stream["stream_spec_marginal"] - self.group["backsub"])
+
+    def _spec_beside_backsub(self, name: str = "spec_beside_backsub") -> Term:
+        """The one-step update's marginal as the last process of its solve's back_substitute
+        region (fgc_stream.h's spec_marginal_task): τ and the leaving keyframe's conditional
+        formed from the solve's own factorisation (NF, KEEP_COND, LIN01) beside the slots, the
+        state update and the cost at X_TRIAL, no memory or operator of theirs. Against the
+        terms marginal (τ) and kept_store (the conditional) counted whole, all of it hidden
+        but what runs past the region's other processes."""
+        st = self.stream
+        kept = st["stream_kept_store"] if self.layout.kept else 0
+        hidden = st["stream_marginal_reused"] + kept - self._spec_over()
+        return Term(name, -hidden, 1, False,
+                    "τ and the leaving keyframe's conditional formed beside the update's "
+                    "back-substitution (its region's last process; the one-step policy: the "
+                    "solve's own factorisation is the store once the step is taken)")
+
+    def _commit_terms(self, pending: bool) -> list:
+        """The step taken: the speculation's words moved into place, two a cycle (τ's into
+        slot 1's prior, the staged conditional into kept memory), beside the call's reads of X
+        (the window out, the pending point): one DATAFLOW region (out_beside_commit), the
+        longest of the three; x_out and kept_pending are counted whole."""
+        st = self.stream
+        tau = st["stream_tau_commit"]
+        keep = st["stream_keep_commit"] if self.layout.kept else 0
+        out = st["stream_x_out"] + (st["stream_kept_slot0"] if pending else 0)
+        terms = [Term("tau_commit", tau, 1, False, "τ's words from TAU_BUF into slot 1's "
+                      "prior, two a cycle")]
+        if self.layout.kept:
+            terms.append(Term("keep_commit", keep, 1, False, "the staged conditional (R, S, "
+                              "d, its points) into kept memory, two words of each a cycle"))
+        terms.append(Term("out_beside_commit", -(tau + keep + out - max(tau, keep, out)), 1,
+                          False, "the window out (and the pending point) read out of X beside "
+                          "the two moves (one DATAFLOW region): all but the longest hidden"))
+        return terms
 
     def _start_hidden(self, m: int, shift: bool, leave: bool, points: bool,
                       row: bool = False) -> int:
@@ -1120,6 +1180,8 @@ class WindowUpdateModel:
                                "τ's signs, mean and words"))
         terms += window
         leaving = m == lay.window and self.layout_marginal
+        # the one-step update's marginal formed beside its back-substitution, the step taken
+        spec = leaving and self.spec and self.reuses(ev)
         if lay.kept:
             # the re-expression the update before left pending runs beside this update's
             # window process (one DATAFLOW region, no memory between them): the update waits for
@@ -1128,7 +1190,8 @@ class WindowUpdateModel:
             if not sweep and self._pending(keyframe, ev if events is not None else None):
                 kept = self._pending_term()
                 solve = sum(t.cycles for t in window) - (st["stream_marginal_reused"]
-                                                         if leaving else 0)
+                                                         if leaving else 0) \
+                    + (self._spec_over() if spec else 0)
                 terms += [kept, Term("overlap", -min(kept.cycles, solve),
                                      1, False, "the pending re-expression beside the window's "
                                      "solve and marginal (one DATAFLOW region): the shorter of "
@@ -1136,7 +1199,8 @@ class WindowUpdateModel:
             if leaving:
                 terms += [Term("kept_store", st["stream_kept_store"], 1, False,
                                f"keyframe {first}'s conditional (R | S | d) and its "
-                               "linearisation points kept"), self._keep_beside_tau()]
+                               "linearisation points kept"),
+                          self._spec_beside_backsub() if spec else self._keep_beside_tau()]
             if first > 0 and not sweep:
                 # this update's own re-expression (keyframe first - 1's conditional at slot 0's
                 # new estimate) is left for the next call's region: its point copied out of X;
@@ -1146,9 +1210,12 @@ class WindowUpdateModel:
                                   f"slot 0's new estimate copied out of X: keyframe {first - 1}'s "
                                   "kept conditional re-expressed there in the next call's region"))
         elif leaving:  # the fixed-lag window: tau_and_keep's keep processes empty
-            terms.append(self._keep_beside_tau(name="tau_beside"))
+            terms.append(self._spec_beside_backsub("tau_beside_backsub") if spec
+                         else self._keep_beside_tau(name="tau_beside"))
         terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
-        if leaving:
+        if spec:
+            terms += self._commit_terms(lay.kept and first > 0 and not sweep)
+        elif leaving:
             terms.append(self._out_beside_sign(lay.kept and first > 0 and not sweep))
         if sweep:
             return UpdatePrice(keyframe, "batch", 0, int(iterations), self.clock_mhz,

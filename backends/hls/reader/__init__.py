@@ -30,7 +30,9 @@ compares them with the II each loop's pragma declares (the plan's) and returns
 :class:`fgc_backends.hls.lint.LintIssue` s (rules ``ii_ports``, ``ii_recurrence``,
 ``ii_allocation``, ``dependence_false``; with ``strict``, ``dependence_unproven``).
 :func:`dsp_estimate` sums the operators over the module instances Vitis would make (every
-call site its own instance, an unrolled call once per copy). This reader knows nothing of the
+call site its own instance, an unrolled call once per copy), each priced as ``run_hls.tcl``
+binds it (:func:`emitted_ops`: its part, clock and ``config_op`` lines; a fabric adder has no
+DSP). This reader knows nothing of the
 plan; where it cannot resolve something (a bound it cannot evaluate, an array it cannot find)
 it does not judge rather than guess.
 
@@ -44,10 +46,13 @@ from fgc_backends.hls.reader.design import (
     check_dsp,
     dsp_table,
     emitted_files,
+    emitted_ops,
     read_design,
+    tcl_binding,
 )
 from fgc_backends.hls.reader.loops import LoopReading, check, read_project
 from fgc_backends.hls.reader.text import FLOAT_TYPES, KINDS
 
 __all__ = ["FLOAT_TYPES", "KINDS", "DesignReading", "LoopReading", "check", "check_dsp",
-           "dsp_table", "emitted_files", "read_design", "read_project"]
+           "dsp_table", "emitted_files", "emitted_ops", "read_design", "read_project",
+           "tcl_binding"]

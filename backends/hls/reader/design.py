@@ -247,6 +247,63 @@ def check_dsp(design: DesignReading, plan_dsp: int, dsp_of: dict[str, int],
                       f"largest pipelined loops: {named})")]
 
 
+# config_op's Vitis operators -> (operator kind, precision) of the operator table
+_VITIS_KINDS = {"fadd": ("add", "float32"), "fsub": ("add", "float32"),
+                "fmul": ("mul", "float32"), "dadd": ("add", "float64"),
+                "dsub": ("add", "float64"), "dmul": ("mul", "float64")}
+_CONFIG_OP = re.compile(r"^[ \t]*config_op[ \t]+(\w+)((?:[ \t]+-\w+(?:[ \t]+[^\s-][^\s]*)?)*)"
+                        r"[ \t]*$", re.M)
+
+
+def tcl_binding(tcl: str) -> dict[str, tuple[tuple[str, str], ...]]:
+    """The operators' binding a Vitis script sets (``config_op <op> -impl X``), per precision:
+    ``{"float32": (("add", "fabric"),), ...}`` in canonical form (``operators.normalise_bind``).
+    A kind's operators bound differently (fadd fabric, fsub fulldsp) count at the one of fewer
+    DSP (the reader's figures are a lower bound); ``-impl all`` (the tool's choice) or none, and
+    operators the table does not price (fdiv, fexp, ...) are the default binding. An
+    implementation the table does not know raises ``ValueError``."""
+    from fgc_backends.cost import operators
+
+    chosen: dict[tuple[str, str], set[str]] = {}
+    for m in _CONFIG_OP.finditer(tcl):
+        op, options = m.group(1), m.group(2)
+        impl = re.search(r"-impl[ \t]+(\w+)", options)
+        if op not in _VITIS_KINDS or impl is None or impl.group(1) == "all":
+            continue
+        kind, precision = _VITIS_KINDS[op]
+        if impl.group(1) not in operators.IMPLEMENTATIONS[kind]:
+            raise ValueError(f"config_op {op} -impl {impl.group(1)}: the operator table prices "
+                             f"{', '.join(operators.IMPLEMENTATIONS[kind])} for {kind}")
+        chosen.setdefault((kind, precision), set()).add(impl.group(1))
+    out: dict[str, list] = {}
+    for (kind, precision), impls in sorted(chosen.items()):
+        base = operators.table(precision)
+        cheapest = min(sorted(impls), key=lambda i: operators.implementations(base)[kind][i].dsp)
+        out.setdefault(precision, []).append((kind, cheapest))
+    return {p: operators.normalise_bind(tuple(b)) for p, b in out.items()}
+
+
+def emitted_ops(directory) -> Callable[[str], OperatorTable]:
+    """The operator tables an emitted project's ``run_hls.tcl`` asks for, read from its text
+    alone: its part (``set_part``), clock (``create_clock -period``) and operators' binding
+    (``config_op``, :func:`tcl_binding`): ``ops_of(precision)`` for :func:`dsp_table`."""
+    from pathlib import Path
+
+    from fgc_backends.cost import operators
+    from fgc_backends.hls.target import Target
+
+    tcl = (Path(directory) / "run_hls.tcl").read_text()
+    part = re.search(r"^\s*set_part\s+\{?([\w-]+)\}?", tcl, re.M)
+    period = re.search(r"^\s*create_clock\s+-period\s+([0-9.]+)", tcl, re.M)
+    if part is None or period is None:
+        raise ValueError(f"{Path(directory) / 'run_hls.tcl'}: no set_part or create_clock")
+    family = Target(part.group(1)).family
+    clock = 1000.0 / float(period.group(1))
+    binding = tcl_binding(tcl)
+    return lambda precision: operators.bound(operators.table(precision, family, clock),
+                                             binding.get(precision, ()))
+
+
 def emitted_files(directory) -> tuple[list[tuple[str, str]], str]:
     """The synthesised files of an emitted HLS project folder ((name, text) pairs: the kernel,
     its header and the unit headers) and its synthesis top (``set_top`` in run_hls.tcl)."""

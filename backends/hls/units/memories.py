@@ -15,13 +15,27 @@ def solver_memories(sizes, ops, memories) -> None:
     memories.append(Memory("nf", sizes["N_NF"], ops.word_bits, 1))
 
 
-def stream_memories(layout, t_bits: int, l_bits: int, batch_words: int) -> tuple[Memory, ...]:
+def stream_memories(layout, t_bits: int, l_bits: int, batch_words: int,
+                    spec: bool = False) -> tuple[Memory, ...]:
     """The memories the on-chip stream section adds to the window kernel
     (``fgc_backends.hls.window``): the kept Bayes net's conditionals (R, S, d) and linearisation
     points, the kept estimates, and with a batch kernel its estimates and conditionals
     (``batch_words`` words a keyframe), or with batch steps as sweeps the keyframes 0 … the
-    last batch step as they came (storage and words: ``sweep_x``, ``sweep_words``)."""
+    last batch step as they came (storage and words: ``sweep_x``, ``sweep_words``). ``spec``
+    (the one-step update's marginal beside its back-substitution): the leaving keyframe's
+    conditional's second copy (``KEEP_COND``), τ's words (``TAU_BUF``), slots 0 and 1's points
+    (``LIN01``) and, with a kept net, the conditional staged (``SPEC_R`` / ``_S`` / ``_D``, its
+    points)."""
     mems = []
+    if spec:
+        n, kf = layout.kf_dim, layout.kf_words
+        mems += [Memory("keep_cond", n * (2 * n + 1), l_bits, 1),
+                 Memory("tau_buf", kf + n + n * (n + 1) // 2 + 2, t_bits, 1),
+                 Memory("lin01", 2 * kf, t_bits, 1)]
+        if layout.kept:
+            mems += [Memory("spec_r", n * n, l_bits, 1), Memory("spec_s", n * n, l_bits, 1),
+                     Memory("spec_d", n, l_bits, 1), Memory("spec_lin", kf, t_bits, 1),
+                     Memory("spec_next", kf, t_bits, 1)]
     if layout.kept:
         n, kf, count = layout.kf_dim, layout.kf_words, layout.kept
         mems += [Memory("kept_r", count * n * n, l_bits, 1),

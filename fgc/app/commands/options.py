@@ -124,6 +124,17 @@ def allocation_arg(text: str) -> tuple[tuple[str, int], ...]:
     return tuple(out.items())
 
 
+def bind_arg(text: str) -> tuple[tuple[str, str], ...]:
+    """``--bind``: the floating-point operators' binding, ``add=fabric,mul=meddsp`` (or
+    ``default``), as ``DesignOptions.bind`` takes it."""
+    from fgc_backends.cost.operators import BindError, parse_bind  # when used (see clock_arg)
+
+    try:
+        return parse_bind(text)
+    except BindError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
 def backsub_lanes_arg(text: str) -> int | None:
     """``--backsub-lanes``: ``auto`` (None: the design decides, ``DesignOptions.backsub_lanes``)
     or a width, 1, 2 or 4."""
@@ -195,6 +206,11 @@ def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
                             "mul=48,add=32 (kinds add, mul, div, sqrt, trig, special; the others "
                             "keep the defaults add 16, mul 24, div 4, sqrt 2, trig 2, special 2); "
                             "each block type gets a share by its instance count")
+        h.add_argument("--bind", type=bind_arg, metavar="KIND=IMPL,…",
+                       help=f"{where}: the floating-point operators' binding (run_hls.tcl's "
+                            "config_op), e.g. add=fabric,mul=meddsp: add fulldsp (default) or "
+                            "fabric, mul maxdsp (default), fulldsp, meddsp or fabric; fewer DSP "
+                            "for more LUT and FF, the same cycles")
         h.add_argument("--unit-sets", type=positive_int, metavar="S",
                        help=f"{where}: unit sets eliminating a level's steps side by side, "
                             "1 … 8 (default: 2 on a two-ended chain, else 1); Cholesky: 1 or 2 "

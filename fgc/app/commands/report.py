@@ -60,7 +60,7 @@ def _report_stream(args) -> int:
         raise UsageError("fgc report --html renders batch designs; a stream's per-update report "
                          "is text and --json")
     for flag in ("part", "allocation", "unit_sets", "qr_unit", "hgc_before", "cascade_lanes",
-                 "backsub_lanes", "qr_rows", "scalar"):
+                 "backsub_lanes", "qr_rows", "scalar", "bind"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc report: --{flag.replace('_', '-')} shapes the batch design; "
                              "the stream's design is priced on the Program's own")

@@ -38,7 +38,7 @@ def add_arguments(p) -> None:
 def cmd_simulate(args) -> int:
     if is_streaming(args):
         for flag in ("part", "allocation", "unit_sets", "qr_unit", "hgc_before",
-                     "cascade_lanes", "backsub_lanes", "qr_rows"):
+                     "cascade_lanes", "backsub_lanes", "qr_rows", "bind"):
             if getattr(args, flag, None):
                 raise UsageError(f"fgc simulate: --{flag.replace('_', '-')} shapes the batch "
                                  "design; the stream's update model prices the Program's own "

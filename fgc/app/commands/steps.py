@@ -112,7 +112,8 @@ def hls_config(args, program):
             ("qr_unit", getattr(args, "qr_unit", None)),
             ("cascade_lanes", getattr(args, "cascade_lanes", None)),
             ("qr_rows", getattr(args, "qr_rows", None)),
-            ("backsub_lanes", getattr(args, "backsub_lanes", None))) if value},
+            ("backsub_lanes", getattr(args, "backsub_lanes", None)),
+            ("bind", getattr(args, "bind", None))) if value},
         **({"hgc_beside": False} if getattr(args, "hgc_before", False) else {}))
     config = hls.HlsConfig(scalar=getattr(args, "scalar", None) or c_scalar(program),
                            design=design)
@@ -158,9 +159,9 @@ def plan_options(args, program):
 
 def refuse_hls_design(args, backend: str) -> None:
     """--allocation, --unit-sets, --qr-unit, --cascade-lanes, --backsub-lanes (a width, not
-    auto) and --hgc-before shape the HLS design: other backends have no such thing."""
+    auto), --bind and --hgc-before shape the HLS design: other backends have no such thing."""
     for flag in ("allocation", "unit_sets", "qr_unit", "hgc_before", "cascade_lanes",
-                 "backsub_lanes", "qr_rows"):
+                 "backsub_lanes", "qr_rows", "bind"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc {args.command}: --{flag.replace('_', '-')} applies to "
                              f"--backend hls only (not {backend})")
