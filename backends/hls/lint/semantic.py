@@ -71,6 +71,8 @@ class _Checker:
         self._global_memo: dict[int, tuple[dict[str, set[str]], frozenset]] = {}
         self._callee_memo: dict[int, list[_Function]] = {}
         self._direct_memo: dict[int, dict[str, set[str]]] = {}
+        self._uses_memo: dict[tuple, tuple[frozenset, frozenset]] = {}
+        self._passed_memo: dict[int, list] = {}
 
     def add(self, file: str, code: str, pos: int, rule: str, message: str) -> None:
         self.issues.append(LintIssue(file, _line(code, pos), rule, message))
@@ -433,25 +435,29 @@ class _Checker:
     def uses(self, f: _Function, param: _Param, seen: set) -> set[str]:
         """How ``f`` uses its parameter ``param``: a subset of {"read", "write"}; an argument
         passed on to another function of the project counts as that function's use."""
+        return set(self._uses(f, param, frozenset(seen))[0])
+
+    def _uses(self, f: _Function, param: _Param, seen: frozenset):
+        """:meth:`uses` with the (function, parameter) pairs it reached and whether ``seen``
+        cut a call (a cycle); memoised as :meth:`_global_uses` is (a result no cut shaped holds
+        for any ``seen`` disjoint from what it reached)."""
         if (f.name, param.name) in seen:
-            return set()
+            return frozenset(), frozenset(), True
+        key = (id(f), param)
+        memo = self._uses_memo.get(key)
+        if memo is not None and memo[1].isdisjoint(seen):
+            return memo[0], memo[1], False
         seen = seen | {(f.name, param.name)}
+        reach, cut = {(f.name, param.name)}, False
         body, name, out = f.text, re.escape(param.name), set()
         # passed on: the callee's use, and the occurrence is blanked for the direct analysis
-        for m in re.finditer(r"\b([A-Za-z_]\w*)\s*(?:<[^;()]*?>)?\s*\(", f.text):
-            callee = self.functions.get(m.group(1))
-            if callee is None:
-                continue
-            open_ = f.text.index("(", m.start())
-            close = _matching(f.text, open_, "(", ")")
-            offset = open_ + 1
-            for arg, inner in zip(_split_top(f.text[open_ + 1:close]), callee.params,
-                                  strict=False):
-                at = f.text.find(arg, offset)
-                offset = at + len(arg) if at >= 0 else offset
-                if inner.channel and re.fullmatch(rf"&?\s*{name}", arg) and at >= 0:
-                    out |= self.uses(callee, inner, seen)
-                    body = body[:at] + " " * len(arg) + body[at + len(arg):]
+        for callee, inner, arg, at in self._passed(f):
+            if inner.channel and re.fullmatch(rf"&?\s*{name}", arg) and at >= 0:
+                inner_out, inner_reach, inner_cut = self._uses(callee, inner, seen)
+                out |= inner_out
+                reach |= inner_reach
+                cut = cut or inner_cut
+                body = body[:at] + " " * len(arg) + body[at + len(arg):]
         calls = rf"\b{name}\s*(?:\[[^\]]*\]\s*)*\.\s*(write|read)(?:_nb)?\s*\("
         # a stream, or a forwarded template parameter (``XIN&& x``) the function reads and
         # writes as one: its uses are the stream's (fgc_backsub.h's backsub_end)
@@ -469,7 +475,30 @@ class _Checker:
                     out.add("read")
             if re.search(rf"\b{name}\b", re.sub(assign, " ", body)):
                 out.add("read")
-        return out
+        out, reach = frozenset(out), frozenset(reach)
+        if not cut:
+            self._uses_memo[key] = (out, reach)
+        return out, reach, cut
+
+    def _passed(self, f: _Function) -> list[tuple[_Function, _Param, str, int]]:
+        """Every argument ``f`` passes to a function of the project, in order: (callee, its
+        parameter, the argument's text, where it starts in ``f.text`` or -1), parsed once."""
+        if id(f) not in self._passed_memo:
+            text, found = f.text, []
+            for m in re.finditer(r"\b([A-Za-z_]\w*)\s*(?:<[^;()]*?>)?\s*\(", text):
+                callee = self.functions.get(m.group(1))
+                if callee is None:
+                    continue
+                open_ = text.index("(", m.start())
+                close = _matching(text, open_, "(", ")")
+                offset = open_ + 1
+                for arg, inner in zip(_split_top(text[open_ + 1:close]), callee.params,
+                                      strict=False):
+                    at = text.find(arg, offset)
+                    offset = at + len(arg) if at >= 0 else offset
+                    found.append((callee, inner, arg, at))
+            self._passed_memo[id(f)] = found
+        return self._passed_memo[id(f)]
 
     # -- pipeline -------------------------------------------------------------------------------
     def pipeline(self, file: str, code: str, pragma: int) -> None:
