@@ -4,7 +4,6 @@ their parameters, integer constants and their values."""
 
 from __future__ import annotations
 
-import functools
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -146,13 +145,6 @@ def _params(text: str) -> tuple[_Param, ...]:
 
 def _functions(file: str, code: str) -> list[_Function]:
     """Top-level function definitions of one file (``code``: comments/strings blanked)."""
-    return list(_functions_of(file, code))
-
-
-@functools.lru_cache(maxsize=64)
-def _functions_of(file: str, code: str) -> tuple[_Function, ...]:
-    """:func:`_functions`, memoised on the file's name and code (the _Function records are
-    frozen; every emitted project's unit headers are read again otherwise)."""
     out, pos = [], 0
     structs = []  # (name, '{', '}', int template parameters)
     for m in re.finditer(r"(template\s*<([^{};]*?)>\s*)?\b(?:struct|class)\s+([A-Za-z_]\w*)"
@@ -181,7 +173,7 @@ def _functions_of(file: str, code: str) -> tuple[_Function, ...]:
         out.append(_Function(m.group(1), " ".join(ret.split()), _params(m.group(2)), file, code,
                              m.start(), (brace, end), qualname, ints))
         pos = end
-    return tuple(out)
+    return out
 
 
 def _constants(codes: Iterable[str]) -> dict[str, int]:
