@@ -5,7 +5,6 @@ checked on code with comments, string literals and csim-only cycle counters blan
 
 from __future__ import annotations
 
-import functools
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -30,10 +29,8 @@ _STL = re.compile(r"\bstd::(vector|list|deque|map|multimap|set|multiset|unordere
                   r"memory|functional)>")
 
 
-@functools.lru_cache(maxsize=64)
 def strip_comments_and_strings(text: str) -> str:
-    """``text`` with comments and string/char literals replaced by spaces (newlines kept).
-    Memoised on the text: every emitted project carries the same unit headers."""
+    """``text`` with comments and string/char literals replaced by spaces (newlines kept)."""
     pattern = re.compile(r'//[^\n]*|/\*.*?\*/|"(\\.|[^"\\\n])*"|\'(\\.|[^\'\\\n])*\'', re.S)
     return pattern.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
 
