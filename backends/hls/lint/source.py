@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Iterable
 from pathlib import Path
@@ -24,6 +25,13 @@ _UNBOUNDED = re.compile(r"\b(while|do|goto)\b")
 
 def lint_source(text: str, file: str = "<source>", synthesis: bool = True) -> list[LintIssue]:
     """All rule violations in one C++ source text."""
+    return list(_lint_source(text, file, synthesis))
+
+
+@functools.lru_cache(maxsize=64)
+def _lint_source(text: str, file: str, synthesis: bool) -> tuple[LintIssue, ...]:
+    """:func:`lint_source`, memoised on its arguments (a pure function of the text; every
+    emitted project carries the same unit headers, linted again on every emit otherwise)."""
     # pragmas stay visible to the trip-count rule, but their words are not code
     code, plain = views(text)
     issues = host_issues(code, plain, file)
@@ -33,7 +41,7 @@ def lint_source(text: str, file: str = "<source>", synthesis: bool = True) -> li
                    for m in _UNBOUNDED.finditer(plain)]
         issues += _loops(code, file)
         issues += _recursion(plain, file)
-    return sorted(issues, key=lambda i: (i.line, i.rule))
+    return tuple(sorted(issues, key=lambda i: (i.line, i.rule)))
 
 
 def _loops(code: str, file: str) -> list[LintIssue]:

@@ -261,6 +261,42 @@ void top(const float a[N], const float b[N]) {
     assert semantic_issues([("k.cpp", fixed)]) == []
 
 
+def test_a_global_reached_through_shared_helpers_and_a_call_cycle():
+    """The walk of the functions a process reaches is memoised per function (semantic.py's
+    _global_uses): a helper reached again (put, get_into) gives its uses from the memo, and a
+    walk a cycle cut short (pong inside ping) is not reused: third reaches put through pong →
+    ping, which first's walk had cut. Findings as the plain walk gives them."""
+    shared = """
+constexpr int N = 8;
+float BUF[N];
+void put(int i, float v) { BUF[i] = v; }
+void get_into(float o[N]) { for (int i = 0; i < N; ++i) o[i] = BUF[i]; }
+void ping(int k, float o[N]);
+void pong(int k, float o[N]) { if (k) ping(k - 1, o); else get_into(o); }
+void ping(int k, float o[N]) { put(k, 1); pong(k, o); }
+void first(float o[N]) { ping(3, o); }
+void second(float o[N]) { put(0, 2); get_into(o); }
+void third(float o[N]) { pong(1, o); }
+void top(float a[N], float b[N], float c[N]) {
+#pragma HLS DATAFLOW
+    first(a);
+    second(b);
+    third(c);
+}
+"""
+    messages = [i.message for i in semantic_issues([("k.cpp", shared)])]
+    assert len(messages) == 3
+    for what in ("written", "read"):
+        assert any(f"'BUF' is {what} by 3 processes of the DATAFLOW region: first (line 14, "
+                   "global), second (line 15, global), third (line 16, global)" in m
+                   for m in messages), messages
+    assert any("'BUF' is read and written by the same process first" in m for m in messages)
+    # without the cycle's way back to put, third only reads: two writers
+    acyclic = shared.replace("if (k) ping(k - 1, o); else ", "")
+    messages = [i.message for i in semantic_issues([("k.cpp", acyclic)])]
+    assert any("'BUF' is written by 2 processes" in m for m in messages), messages
+
+
 def test_stream_arrays_and_constant_declarations_in_a_dataflow_region():
     units = """
 constexpr int N = 8;
