@@ -108,8 +108,23 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     context["spec"] = bool(context["stream"] and context["stream"]["spec"]
                            and not context.get("mixed") and not context.get("bsc")
                            and not context.get("retire_test"))
+    # the one-step solve's linearisation once keyframe 0 has left (lin_level's part 3): without
+    # the instances that hold nothing from then on (units/datapath.py's solve_skip)
+    context["solve_skip"] = frozenset()
+    if context["lin_qr"]:
+        from fgc_backends.hls.units.datapath import solve_skip
+        context["solve_skip"] = solve_skip(stream.leaf_skipped(), {
+            f for f, u in enumerate(context["banks"]["set"]) if u >= 0})
+    if context["solve_skip"]:
+        from fgc_backends.hls.plan.loops import _tables
+        from fgc_backends.hls.units.datapath import bank_fill_words
+        bk = context["banks"]
+        bk["fill_live"] = bank_fill_words(program, _tables(program), {
+            f: (u, 0, 0) for f, u in enumerate(bk["set"]) if u >= 0}, len(bk["step"]),
+            context["solve_skip"])
     if context["leaf_lin"]:
-        _leaf_context(context, stream.leaf_factors(), stream.leaf_gone())
+        _leaf_context(context, stream.leaf_factors(), stream.leaf_gone(),
+                      context["solve_skip"])
         context["leaf_skip"] = stream.leaf_skip()
     if context["stream"] is not None and context["stream"]["kept"]:
         context["stream"]["kept_hw"] = _kept_hw(context, config.scalar_cxx)
@@ -263,22 +278,26 @@ def accel_plan(program: Program, config: HlsConfig):
     return build_plan(program, PlanOptions.for_config(for_program(program, config), program))
 
 
-def _leaf_context(context: dict, leaf: frozenset, gone: frozenset) -> None:
+def _leaf_context(context: dict, leaf: frozenset, gone: frozenset,
+                  skip: frozenset = frozenset()) -> None:
     """The marginal's linearisation (``linearize_all(X, part)``): per block type the instances
     whose rows slot 0's step stacks (``leaf``, part 1) and those of them left once keyframe 0 has
     gone (``live``, part 2), in the block's instance order; a part's table (``*_index``) only
     where its instances are not the first of the block's (then the loop only stops early). The
-    small block types' shared loop the same, by its entries."""
+    small block types' shared loop the same, by its entries. ``skip`` (lin_level's part 3, the
+    one-step solve's once keyframe 0 has left): every instance but those (``solve``)."""
     for b in context["blocks"]:
         insts = list(b.instances)
-        for part, keep in (("leaf", leaf), ("live", leaf - gone)):
+        for part, keep in (("leaf", leaf), ("live", leaf - gone),
+                           ("solve", frozenset(insts) - skip)):
             chosen = [f for f in insts if f in keep]
             setattr(b, part, chosen)
             setattr(b, f"{part}_index", chosen)
             setattr(b, f"{part}_table", chosen != insts[:len(chosen)])
     small = context["small"]
     if small:
-        for part, keep in (("leaf", leaf), ("live", leaf - gone)):
+        for part, keep in (("leaf", leaf), ("live", leaf - gone),
+                           ("solve", frozenset(small["instances"]) - skip)):
             chosen = [k for k, f in enumerate(small["instances"]) if f in keep]
             small[part] = chosen
             small[f"{part}_index"] = chosen

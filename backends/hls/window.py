@@ -329,6 +329,20 @@ class WindowLayout(WindowTemplate):
                 rows -= t.blocks[t.factors[i].block].residual_dim
         return mask, rows
 
+    def leaf_skipped(self) -> frozenset:
+        """The factor instances the leaf step's live stack leaves out (:meth:`leaf_skip`'s
+        mask: those of :meth:`leaf_gone` among the first 32 of its factor list)."""
+        gone = self.leaf_gone()
+        if not gone:
+            return frozenset()
+        from fgc_backends.hls.plan import _tables
+
+        tables = _tables(self.template)
+        st = self.template.schedule.steps[self.leaf_step]
+        fb = tables["STEP_FACTOR_BEGIN"]
+        entries = tables["STEP_FACTORS"][fb[st.index]:fb[st.index + 1]]
+        return frozenset(i for k, i in enumerate(entries) if k < 32 and i in gone)
+
     # -- what the emitter places ---------------------------------------------------------------
     def context(self, linear_cxx: str, part: str = DEFAULT_PART) -> dict:
         """The stream section's constants and tables (accel.h.jinja / accel.cpp.jinja);

@@ -433,7 +433,8 @@ def test_one_step_level0_runs_beside_the_linearisation():
                               HlsConfig(scalar="float"))
     t = model.layout.template
     assert [s for s, _, _ in model._lin_sets] == list(t.schedule.levels[0][:model.sets])
-    zero, unit = model.zero_factors(5), model.layout.unit_factors(5)
+    # (keyframe 2: keyframe 0 still in the window, every instance linearised)
+    zero, unit = model.zero_factors(2), model.layout.unit_factors(2)
     lin = next(ph for ph in model.plan.phases if ph.name == "factor_jacobian")
     level = next(ph for ph in qr_solve_phases(t, zero, True, model.sets, model.les, unit=unit)
                  if ph.name == "qr_level0_0")
@@ -445,12 +446,85 @@ def test_one_step_level0_runs_beside_the_linearisation():
     assert region > max(phase_cycles(lin), phase_cycles(level))
     saved = model.beside_linearize(zero, unit)
     assert saved == region - phase_cycles(lin) - phase_cycles(level) < 0
-    price = model.price(5, 1, status="max_iterations")
+    price = model.price(2, 1, status="max_iterations")
     assert price.term("qr_beside_linearize").cycles == saved
-    stopped = model.price(5, 1, {"call": 1, "linearize": 1}, status="failed")
+    assert price.term("factor_jacobian").cycles == phase_cycles(lin)
+    stopped = model.price(2, 1, {"call": 1, "linearize": 1}, status="failed")
     assert stopped.term("qr_beside_linearize").cycles == region - phase_cycles(lin) > 0
     lm = compile_stream(graph, incremental=3, batch_every=(4,), name="lio_k")
     lm_model = WindowUpdateModel(layout_of(stream_program(graph, lm, None)),
                                  HlsConfig(scalar="float"))
     assert lm_model._lin_sets is None
     assert "qr_beside_linearize" not in {t.name for t in lm_model.price(5, 3).terms}
+
+
+def test_one_step_linearisation_skips_what_holds_nothing_once_keyframe_0_has_left(tmp_path):
+    """Once keyframe 0 has left the window (keyframe >= size), the one-step solve's
+    linearisation (lin_level's part 3) does not evaluate keyframe 0's priors: every member of
+    them is zero at every keyframe from then on, and all their rows go to a unit set's banks
+    (none is read from AB: the solve takes that set's step, the marginal's live stack leaves
+    them out). The plan prices the datapaths at the instances left, the set's fill at its words
+    left; the emitted design passes part 3 when live, with BANK_FILL_LIVE."""
+    from collections import Counter
+
+    import fgc_backends
+    from fgc.app.streaming import one_step_solver
+    from fgc_backends.hls.plan.loops import _tables, kernel_timing
+    from fgc_backends.hls.plan.stream import qr_step_processes
+    from fgc_backends.hls.units.datapath import (
+        bank_fill_words,
+        lin_level_cycles,
+        linearize_region,
+    )
+    from fgc_backends.hls.units.qr import rows_in_banks
+
+    graph = example("lio").build(N=7)
+    program = compile_stream(graph, one_step_solver(), incremental=3, batch_every=(4,),
+                             name="lio_k1")
+    sp = stream_program(graph, program, None)
+    lay = layout_of(sp, sweep=False)
+    config = HlsConfig(scalar="float")
+    model = WindowUpdateModel(lay, config)
+    t = lay.template
+    skip = model._skip
+    assert skip and skip == lay.leaf_skipped()
+    in_banks = rows_in_banks(t, model.plan.options, _tables(t))
+    assert all(f in in_banks for f in skip)
+    n_kf = len(lay.program.schedule.clusters)
+    for kf in range(lay.size, n_kf):
+        zero = lay.zero_factors(kf, True)
+        assert all(ti in zero for f in skip for ti in t.factors[f].factors)
+    # the datapaths at the instances left: fewer cycles once keyframe 0 has left, none before
+    lin = next(ph for ph in model.plan.phases if ph.name == "factor_jacobian")
+    counts = model.solve_counts(True)
+    assert model.solve_counts(False) is None
+    assert sum(counts.values()) == len(t.factors) - len(skip)
+    live = phase_cycles(linearize_region(t, kernel_timing(model.plan.ops),
+                                         model._jac_at(Counter(counts)), counts))
+    assert live < phase_cycles(lin)
+    assert model.price(2, 1, status="max_iterations").term("factor_jacobian").cycles \
+        == phase_cycles(lin)
+    price = model.price(5, 1, status="max_iterations")
+    assert price.term("factor_jacobian").cycles == live
+    # level 0's sets beside it: the fill at the words left, the region at the instances left
+    tables = _tables(t)
+    full = bank_fill_words(t, tables, in_banks, len(model._lin_sets))
+    left = bank_fill_words(t, tables, in_banks, len(model._lin_sets), skip)
+    assert [f.trip for _, _, f in model._lin_sets_live] == left != full
+    zero, unit = model.zero_factors(5), lay.unit_factors(5)
+    level = next(ph for ph in qr_solve_phases(t, zero, True, model.sets, model.les, unit=unit)
+                 if ph.name == "qr_level0_0")
+    procs = qr_step_processes(t, zero, True, model.les, unit=unit)
+    region = lin_level_cycles(t, kernel_timing(model.plan.ops),
+                              model._jac_at(Counter(counts)),
+                              [(w, f, procs[s].cycles) for s, w, f in model._lin_sets_live],
+                              counts)
+    assert price.term("qr_beside_linearize").cycles == region - live - phase_cycles(level)
+    # the emitted design: part 3 when live, the fill's words left
+    fgc_backends.load("hls").emit(sp, tmp_path, config)
+    cpp = next(p.read_text() for p in sorted(tmp_path.rglob("*.cpp"))
+               if "BANK_FILL_LIVE" in p.read_text())
+    assert "linearize_all(X, LIN_LIVE ? 3 : 0)" in cpp
+    assert "LIN_LIVE = live;" in cpp
+    table = cpp.split(f"BANK_FILL_LIVE[{len(left)}] = {{", 1)[1].split("};", 1)[0]
+    assert [int(v) for v in table.split("\n", 1)[1].replace(",", " ").split()] == left

@@ -58,7 +58,7 @@
 // retraction). T and L are the kernel's scalars. CFG is the kernel's StreamConfig: the plan's
 // (II, depth) of T's move / max / retract / div and L's acc / div / scatter loops, MV_II (the kept
 // matrix-vector product's), MAX_NEW and TRIP_BATCH_X (trip counts), and the hooks
-// lm_solve(errors, info), linearize(live) (INLINE: slot 0's step's factors at X; live: less
+// lm_solve(errors, info, live) (the batch kernel's: (errors, info)), linearize(live) (INLINE: slot 0's step's factors at X; live: less
 // those that hold nothing once keyframe 0 has left), leaf_step(live) (slot 0's step once more
 // at mu = 0, the same rows), at_linearisation(info) (LM stopped where it last linearised: AB holds
 // the rows at X), ONE_STEP and took_step(info) (the one-step policy, one Gauss-Newton step an
@@ -847,7 +847,7 @@ void window_task(int mode, int ms, bool live, const T lin01[2 * STREAM_KF_X], T 
         SPEC_ARMED = ms == STREAM_W;
         SPEC_RAN = false;
 #endif
-        CFG::lm_solve(errors, info);
+        CFG::lm_solve(errors, info, live);
 #ifdef FGC_SPEC_MARGINAL
         SPEC_ARMED = false;
 #endif

@@ -365,7 +365,12 @@ class WindowUpdateModel:
             raise PlanError("internal error: the stream model's QR steps are not the plan's")
         ctx = layout.context(config.linear_cxx, config.part)
         self.layout_marginal = ctx["marginal"]
+        # the one-step solve's linearisation once keyframe 0 has left: without the instances
+        # that hold nothing from then on (units/datapath.py's solve_skip; lin_level's part 3)
+        self._skip = frozenset()
         self._lin_sets = self._lin_level_sets() if self.layout_marginal else None
+        self._lin_sets_live = (self._lin_level_sets(self._skip) if self._skip
+                               else self._lin_sets)
         self._beside = {}
         # the one-step policy (SolverConfig.one_step): the step taken, the store is the
         # update's own factorisation (fgc_stream.h's took_step)
@@ -384,12 +389,13 @@ class WindowUpdateModel:
         self._design = replace(self._merged(), phases=self.plan.phases + phases)
         self.stream = dict(plan_cost(self._design).other_cycles)
 
-    def _lin_level_sets(self):
+    def _lin_level_sets(self, skip: frozenset = frozenset()):
         """The unit sets that reflect level 0's first steps beside the one-step linearisation
         (accel.cpp.jinja's lin_level: the window's design with the rows straight into the
         banks, units/qr.py's ``rows_in_banks``): per set (its step, the datapath loop it waits
-        on, its fill loop), or None when the design has no such sets."""
-        from fgc_backends.hls.units.datapath import bank_fill_words, bank_ready_loops
+        on, its fill loop), or None when the design has no such sets; ``skip``: the instances
+        not evaluated (their words not sent). Sets ``_skip`` (:func:`solve_skip`)."""
+        from fgc_backends.hls.units.datapath import bank_fill_words, bank_ready_loops, solve_skip
         from fgc_backends.hls.units.qr import rows_in_banks
 
         t = self.layout.template
@@ -397,27 +403,55 @@ class WindowUpdateModel:
         in_banks = rows_in_banks(t, self.plan.options, tables)
         if not in_banks:
             return None
+        if not skip:
+            self._skip = solve_skip(self.layout.leaf_skipped(), in_banks)
         steps = sorted({(u, s) for u, s, _ in in_banks.values()})
-        fills = bank_fill_words(t, tables, in_banks, len(steps))
+        fills = bank_fill_words(t, tables, in_banks, len(steps), skip)
         waits = bank_ready_loops(t, in_banks, len(steps))
         move = kernel_timing(self.les)
         return [(s, waits[u], kernel_loop("fill", fills[u], "move", move))
                 for u, s in steps]
 
+    def solve_counts(self, live: bool) -> dict[int, int] | None:
+        """The instances per block type the one-step solve's linearisation evaluates: all (None)
+        but once keyframe 0 has left (``live``), then without :attr:`_skip` (lin_level's part 3)."""
+        if not (live and self._skip):
+            return None
+        t = self.layout.template
+        count = Counter(f.block for i, f in enumerate(t.factors) if i not in self._skip)
+        return {i: count[i] for i in range(len(t.blocks))}
+
+    def solve_linearize(self, live: bool) -> int:
+        """The one-step solve's linearisation (factor_jacobian: the datapaths beside the
+        gradient, :func:`~fgc_backends.hls.units.datapath.linearize_region`) at
+        :meth:`solve_counts`: the plan's phase but once keyframe 0 has left."""
+        from fgc_backends.hls.units.datapath import linearize_region
+
+        counts = self.solve_counts(live)
+        if counts is None:
+            return self.group["factor_jacobian"]
+        if "lin_live" not in self._beside:
+            t = self.layout.template
+            self._beside["lin_live"] = phase_cycles(linearize_region(
+                t, kernel_timing(self.plan.ops), self._jac_at(Counter(counts)), counts))
+        return self._beside["lin_live"]
+
     def beside_linearize(self, zero: frozenset, unit: frozenset = frozenset(),
-                         solved: bool = True) -> int:
+                         solved: bool = True, live: bool = False) -> int:
         """The cycles the one-step update's linearisation and level 0's first steps save run
         as one region (lin_level) rather than one after the other: the region
         (:func:`~fgc_backends.hls.units.datapath.lin_level_cycles`) less the linearisation
         (factor_jacobian) and that level's region (its first ``sets`` steps, on the rows
         non-zero in this update: ``zero``, ``unit`` as :meth:`qr_cycles`). Not ``solved`` (the
         update stopped after its linearisation: no solve, no qr term): what the sets' steps
-        add to the linearisation's region, ≥ 0. 0 when the design has no such sets."""
+        add to the linearisation's region, ≥ 0. 0 when the design has no such sets. ``live``:
+        keyframe 0 has left (:meth:`solve_counts`)."""
         from fgc_backends.hls.units.datapath import lin_level_cycles
 
         if not self._lin_sets:
             return 0
-        key = (zero, unit)
+        counts = self.solve_counts(live)
+        key = (zero, unit, counts is not None)
         if key not in self._beside:
             t = self.layout.template
             rows = self.plan.options.qr_rows
@@ -426,11 +460,14 @@ class WindowUpdateModel:
                                                       unit=unit, qr_rows=rows)
                          if ph.name == "qr_level0_0")
             lin = next(ph for ph in self.plan.phases if ph.name == "factor_jacobian")
-            jac = [p for p in lin.processes if p.name != "gradient"]
+            jac = ([p for p in lin.processes if p.name != "gradient"] if counts is None
+                   else self._jac_at(Counter(counts)))
             region = lin_level_cycles(t, kernel_timing(self.plan.ops), jac,
-                                      [(wait, fill, procs[s].cycles)
-                                       for s, wait, fill in self._lin_sets])
-            self._beside[key] = (region - phase_cycles(lin), phase_cycles(level))
+                                      [(wait, fill, procs[s].cycles) for s, wait, fill in
+                                       (self._lin_sets if counts is None
+                                        else self._lin_sets_live)], counts)
+            self._beside[key] = (region - self.solve_linearize(counts is not None),
+                                 phase_cycles(level))
         added, level = self._beside[key]
         return added - level if solved else added
 
@@ -585,14 +622,26 @@ class WindowUpdateModel:
         less those that hold nothing once keyframe 0 has left, ``leaf_gone``) - the plan's
         factor_jacobian region (:func:`~fgc_backends.hls.units.datapath.linearize_region`: the
         datapaths beside the gradient) at those instance counts, G zeroed as always."""
-        from fgc_backends.hls.units.datapath import linearize_region, small_blocks
+        from fgc_backends.hls.units.datapath import linearize_region
 
         t = self.layout.template
         leaf = self.layout.leaf_factors()
         if live:
             leaf = leaf - self.layout.leaf_gone()
         count = Counter(f.block for i, f in enumerate(t.factors) if i in leaf)
-        small = sum(count[i] for i in small_blocks(t))
+        jac = self._jac_at(count)
+        region = linearize_region(t, kernel_timing(self.plan.ops), jac,
+                                  {i: count[i] for i in range(len(t.blocks))})
+        return Phase("stream_leaf_linearize" + ("_live" if live else ""), False,
+                     tuple(Process(f"leaf_{p.name}", p.unit, p.loops) for p in region.processes),
+                     per="stream")
+
+    def _jac_at(self, count: Counter) -> list[Process]:
+        """The plan's factor_jacobian datapath processes (the gradient's left out) at ``count``
+        instances per block type (the small ones' loop at their sum)."""
+        from fgc_backends.hls.units.datapath import small_blocks
+
+        small = sum(count[i] for i in small_blocks(self.layout.template))
         jac = []
         for ph in self.plan.phases:
             if ph.name != "factor_jacobian":
@@ -610,11 +659,7 @@ class WindowUpdateModel:
                     raise PlanError(f"internal error: the linearisation's process {name!r} "
                                     "has no leaf form")
                 jac.append(Process(name, p.unit, loops))
-        region = linearize_region(t, kernel_timing(self.plan.ops), jac,
-                                  {i: count[i] for i in range(len(t.blocks))})
-        return Phase("stream_leaf_linearize" + ("_live" if live else ""), False,
-                     tuple(Process(f"leaf_{p.name}", p.unit, p.loops) for p in region.processes),
-                     per="stream")
+        return jac
 
     def _merged(self):
         """The window kernel's plan, the batch kernel's units, memories and channels (a second
@@ -1136,7 +1181,9 @@ class WindowUpdateModel:
             if trigger is None:
                 continue
             times = ev.get(trigger, 0)
-            each = self.qr_cycles(zero, True, unit=unit) if g == "qr" else self.group[g]
+            each = (self.qr_cycles(zero, True, unit=unit) if g == "qr"
+                    else self.solve_linearize(keyframe >= lay.size) if g == "factor_jacobian"
+                    else self.group[g])
             if times:
                 window.append(Term(g, each, times, False,
                                    f"the window's {g} phase, once per {trigger}" + (
@@ -1148,7 +1195,8 @@ class WindowUpdateModel:
             # update that stops before its solve still waits for the sets
             solved = ev.get("solve", 0) > 0
             window.append(Term("qr_beside_linearize",
-                               self.beside_linearize(zero, unit, solved), 1, False,
+                               self.beside_linearize(zero, unit, solved,
+                                                     keyframe >= lay.size), 1, False,
                                "level 0's unit sets reflect their steps beside the "
                                "linearisation (one region), each from when its rows are in"
                                + ("" if solved else "; no solve took them")))

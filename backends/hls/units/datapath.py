@@ -133,7 +133,8 @@ def _linearize_clocks(program, timing: dict, jac: list[Process],
 
 
 def lin_level_cycles(program, timing: dict, jac: list[Process],
-                     sets: list[tuple[str, Loop, int]]) -> int:
+                     sets: list[tuple[str, Loop, int]],
+                     counts: dict[int, int] | None = None) -> int:
     """The window's one-step linearisation with level 0's unit sets beside it (accel.cpp.jinja's
     lin_level, one DATAFLOW region): :func:`linearize_region`'s two processes and one per unit
     set, ``sets``: (the datapath loop after which its step's rows are all sent,
@@ -142,8 +143,9 @@ def lin_level_cycles(program, timing: dict, jac: list[Process],
     earlier than its depth after that datapath loop ends (the stream's last word comes then),
     its step follows. The region takes what fgc_cycles.h's region rule gives: the slowest
     process plus the others' fills (each's first loop's depth), and no less than where any
-    process's clock ends."""
-    c = _linearize_clocks(program, timing, jac, None)
+    process's clock ends. ``counts``: instances per block type (default: all; the one-step
+    solve's once keyframe 0 has left: :func:`solve_skip`)."""
+    c = _linearize_clocks(program, timing, jac, counts)
     zero = c["zero"]
     totals = [c["e_sum"], c["g_sum"]] + [fill.cycles + step for _, fill, step in sets]
     firsts = [c["e_fill"], zero.depth if zero.trip > 0 else 0] + [fill.depth for _, fill, _ in sets]
@@ -163,13 +165,32 @@ def datapath_loop_names(program) -> list[str]:
             for i in range(len(program.blocks)) if i not in small or i == small[0]]
 
 
-def bank_fill_words(program, tables: dict, in_banks: dict, sets: int) -> list[int]:
+def bank_fill_words(program, tables: dict, in_banks: dict, sets: int,
+                    skip: frozenset = frozenset()) -> list[int]:
     """Per unit set, the stream words of its step's factor rows the datapaths send it (each
     instance's m × (d + 1) words of [A | b], :data:`PORTS` a word: accel.cpp.jinja's BankWord),
-    the trip of its fill loop in lin_level (units/qr.py's ``rows_in_banks``: ``in_banks``)."""
+    the trip of its fill loop in lin_level (units/qr.py's ``rows_in_banks``: ``in_banks``);
+    ``skip``: instances not evaluated (:func:`solve_skip`), their words not sent."""
     a = tables["FACTOR_A_OFF"]
-    return [sum(_ported(a[f + 1] - a[f]) for f, (u, _, _) in in_banks.items() if u == s)
+    return [sum(_ported(a[f + 1] - a[f]) for f, (u, _, _) in in_banks.items()
+                if u == s and f not in skip)
             for s in range(sets)]
+
+
+def solve_skip(gone: frozenset, in_banks: dict) -> frozenset:
+    """The factor instances the window's one-step linearisation (lin_level, accel.cpp.jinja's
+    part 3) does not evaluate once keyframe 0 has left the window: those of the leaf step that
+    hold nothing from then on (``gone``: :meth:`~fgc_backends.hls.window.WindowLayout.leaf_gone`,
+    every member's rows zero at every keyframe from then on - keyframe 0's priors), when every
+    one of them sends its rows into a unit set's banks (``in_banks``, units/qr.py's
+    ``rows_in_banks``). Their rows are zero, so skipping them changes no result: the banks'
+    rows stay zero (qr_step leaves them so), the gradient and the cost gain nothing from them,
+    and AB's rows of them are read by no one - the solve's stack takes that set's step as
+    reflected (PRESOLVED), the marginal's live stack leaves them out (LEAF_SKIP). Empty
+    otherwise (a gone instance whose rows a stack would read from AB)."""
+    if not gone or not in_banks or not all(f in in_banks for f in gone):
+        return frozenset()
+    return frozenset(gone)
 
 
 def bank_ready_loops(program, in_banks: dict, sets: int) -> list[str]:
