@@ -613,6 +613,10 @@ class TrialLoop:
     # cycles its process spends before this loop on trial_cost_b's data words (the slot design
     # in two processes, slot_split_loops: trial_cost sends them, trial_cost_b takes them in)
     feed: int = 0
+    # a fused loop (slot_split_loops): the datapaths whose instances it costs, one an entry
+    # (exclusive branches on the entry's block type: one pipeline, no drain between them);
+    # ``key`` then names them ("0_3")
+    fused: tuple[int, ...] = ()
 
     @property
     def name(self) -> str:
@@ -690,6 +694,14 @@ def slot_split_loops(program, retire_vars, costs: dict, max_storage: int, access
             needed = {i for c in group for f in sub[c][0] for i in _factor_vars(program, f)}
             mine = [v for v in retire_vars if v in needed]
             orders = [work_order(sub), ready_order(program, mine, sub)]
+            # the block datapaths fused into one loop (:func:`_ordered_loops`), the small one
+            # before or after it: no drain between them (last: kept only where that ends sooner)
+            fused = tuple(sorted(c for c in group if c != "small" and sub[c][0]))
+            if len(fused) > 1:
+                rest = [c for c in group if c != "small" and c not in fused]
+                tail = ["small"] if "small" in group else []
+                orders += [tail + [fused] + rest, [fused] + rest + tail] if tail \
+                    else [[fused] + rest]
             cands = [[replace(lp, proc=q) for lp in _ordered_loops(
                 program, mine, sub, max_storage, accesses, o)] for o in orders]
             out += min(cands, key=lambda ls: _process_end(ls, var_end, pos))
@@ -725,11 +737,31 @@ def work_order(costs: dict) -> list:
     return sorted(costs, key=lambda c: _work_key(costs, c))
 
 
+def _fuse(costs: dict, accesses: dict, keys: tuple[int, ...]) -> tuple[str, tuple, int]:
+    """A fused loop's key, its (instances, II, depth) and its x words an entry: the block
+    datapaths ``keys`` in one pipelined loop, an entry costing one instance through its
+    block's datapath (exclusive branches): the instances of all, the largest II and depth,
+    the widest instance's words."""
+    return ("_".join(str(c) for c in keys),
+            ([f for c in keys for f in costs[c][0]], max(costs[c][1] for c in keys),
+             max(costs[c][2] for c in keys)),
+            max(accesses[c] for c in keys))
+
+
 def _ordered_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
                    order: list) -> tuple[TrialLoop, ...]:
-    """:func:`trial_loops`' loops with the datapaths in ``order``."""
+    """:func:`trial_loops`' loops with the datapaths in ``order``; an element that is a tuple
+    of block datapaths is one fused loop over their instances, in the order they are ready
+    (:func:`_fuse`)."""
     pos = {v: i for i, v in enumerate(retire_vars)}
     index = {v.key: i for i, v in enumerate(program.variables)}
+    fused = {}
+    for c in order:
+        if isinstance(c, tuple):
+            key, cost, words = _fuse(costs, accesses, c)
+            costs, accesses = {**costs, key: cost}, {**accesses, key: words}
+            fused[key] = c
+    order = ["_".join(str(k) for k in c) if isinstance(c, tuple) else c for c in order]
     taken = 0
     plans = []
     for c in order:
@@ -756,7 +788,8 @@ def _ordered_loops(program, retire_vars, costs: dict, max_storage: int, accesses
         k = max([0] + [len(v) for _, v in entries])
         _, ii, depth = costs[c]
         ii = max(ii, loop_ii([(k * max_storage + accesses[c], 1)]))
-        out.append(TrialLoop(c, tuple(entries), k, ii, depth + (2 if k else 0)))
+        out.append(TrialLoop(c, tuple(entries), k, ii, depth + (2 if k else 0),
+                             fused=fused.get(c, ())))
     return tuple(out)
 
 
