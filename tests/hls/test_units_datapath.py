@@ -412,7 +412,8 @@ def test_the_slot_designs_cost_process_fuses_its_block_datapaths_when_that_ends_
     tables = {"FACTOR_DATA_OFF": [0, 10, 20, 30]}
     pos = {v: v for v in range(4)}
     var_end = [800, 850, 900, 1000]
-    loops = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end, tables)
+    data = {0: 10, 1: 10, 2: 300}  # the data words an instance reads (two ports: 155 < 184)
+    loops = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end, tables, data)
     fused = [lp for lp in loops if lp.fused]
     assert len(fused) == 1 and fused[0].fused == (1, 2) and fused[0].key == "1_2"
     lp = fused[0]
@@ -427,6 +428,15 @@ def test_the_slot_designs_cost_process_fuses_its_block_datapaths_when_that_ends_
     # a sends early: block 1's loop drains (100 + 382) before block 2's variables come, the
     # fused loop would end no sooner (900 + 602): the loops stay apart
     early = [100, 850, 900, 1000]
-    apart = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, early, tables)
+    apart = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, early, tables, data)
     assert all(not lp.fused for lp in apart)
     assert trial_end(apart, early, pos) == 1000 + 502
+    # the fused loop's II covers every branch's data reads through the memory's two ports (the
+    # second reader counts them as one iteration's): 300 + 90 words, II 195, not 184
+    wide = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end, tables,
+                       {0: 10, 1: 90, 2: 300})
+    lp = next(lp for lp in wide if lp.fused)
+    assert lp.ii == 195 and trial_end(wide, var_end, pos) == 800 + 195 + 602
+    # without the data words (a caller that cannot tell them) nothing is fused
+    assert all(not lp.fused for lp in trial_loops(program, (0, 1, 2, 3), costs, 3, accesses,
+                                                  var_end, tables))
