@@ -500,6 +500,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "blocks": blocks, "beside": beside, "network": network, "retract_hw": retract,
             "retire": retire, "trial": trial, "trial_spans": trial_spans, "trial_b": trial_b,
             "trial_feed": trial_feed,
+            # the block types trial_cost_b's fused loops cost (their gather_b_<b>)
+            "trial_b_fused": sorted({b.index for lp in trial if lp["proc"] == 1
+                                     for b in lp["fused"]}),
             # reweight / robust_loss are printed only for a design with a robust member
             "robust_any": any(m.robust for b in blocks for m in b.members),
             # the gradient pass gives LM the cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE)
@@ -643,13 +646,18 @@ def _trial_context(program: Program, contexts, blocks, phase: dict,
         small = lp.key == "small"
         names = sorted({contexts[program.factors[f].block].comment  # sanitised
                         for f, _ in lp.entries if f >= 0})
+        # a fused loop (units/datapath.py's slot_split_loops): its blocks' datapaths, an
+        # entry's by its block type (TRIAL_B_<key>)
+        fused = [blocks[c] for c in lp.fused]
         out.append({"key": lp.key, "name": lp.name, "small": small, "k": lp.k, "ii": lp.ii,
                     "depth": lp.depth, "count": len(lp.entries),
-                    "block": None if small else blocks[lp.key],
+                    "block": None if small or fused else blocks[lp.key], "fused": fused,
                     "f": [f for f, _ in lp.entries],
                     "b": [program.factors[f].block if f >= 0 else -1 for f, _ in lp.entries],
                     "x0": x0, "x1": x1, "proc": lp.proc, "at": at,
-                    "comment": ("the small datapath" if small else f"block {lp.key}")
+                    "comment": ("the small datapath" if small else
+                                "blocks " + ", ".join(str(c) for c in lp.fused) + " fused"
+                                if fused else f"block {lp.key}")
                     + " (" + ", ".join(names) + ")"})
     return out
 

@@ -393,3 +393,50 @@ def test_the_slot_designs_cost_pass_splits_in_two_processes_only_when_that_ends_
     far = {"FACTOR_DATA_OFF": [0, 4000, 8000, 12000]}
     assert {lp.proc for lp in trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end,
                                           far)} == {0}
+
+
+def test_the_slot_designs_cost_process_fuses_its_block_datapaths_when_that_ends_sooner():
+    """units/datapath.py's slot_split_loops: a process's block datapaths may run as one loop
+    (an entry costs one instance through its block's datapath: the largest II and depth, no
+    drain between them), kept only where that ends sooner (paper A's trial_cost_b: the Pose3
+    prior, then the IMU block, which drained one after the other)."""
+    from types import SimpleNamespace as Ns
+
+    from fgc_backends.hls.units.datapath import trial_end, trial_loops
+    variables = [Ns(key=k, storage_dim=3) for k in "abcd"]
+    # block 0 on d; block 1 (shallow) on a; block 2 (deep, slow) on b and c
+    program = Ns(variables=variables,
+                 factors=[Ns(keys=("d",)), Ns(keys=("a",)), Ns(keys=("b", "c"))])
+    costs = {0: ([0], 300, 500), 1: ([1], 24, 380), 2: ([2], 184, 600)}
+    accesses = {0: 3, 1: 3, 2: 6}
+    tables = {"FACTOR_DATA_OFF": [0, 10, 20, 30]}
+    pos = {v: v for v in range(4)}
+    var_end = [800, 850, 900, 1000]
+    data = {0: 10, 1: 10, 2: 300}  # the data words an instance reads (two ports: 155 < 184)
+    loops = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end, tables, data)
+    fused = [lp for lp in loops if lp.fused]
+    assert len(fused) == 1 and fused[0].fused == (1, 2) and fused[0].key == "1_2"
+    lp = fused[0]
+    # its entries in the order they are ready (block 1's instance on a, block 2's on b, c),
+    # at the larger II and depth
+    assert [f for f, _ in lp.entries] == [1, 2] and (lp.ii, lp.depth) == (184, 602)
+    # block 1's instance issues at a's end (800), block 2's an II later (984 > c's 900):
+    # 984 + 602; block 0 beside it ends at 1,000 + 502
+    assert trial_end(loops, var_end, pos) == 800 + 184 + 602
+    # unfused, the best split ran block 1 then block 0 (drained: 800 + 382, then 1,000 + 502
+    # would be 1,684) beside block 2 (900 + 602)
+    # a sends early: block 1's loop drains (100 + 382) before block 2's variables come, the
+    # fused loop would end no sooner (900 + 602): the loops stay apart
+    early = [100, 850, 900, 1000]
+    apart = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, early, tables, data)
+    assert all(not lp.fused for lp in apart)
+    assert trial_end(apart, early, pos) == 1000 + 502
+    # the fused loop's II covers every branch's data reads through the memory's two ports (the
+    # second reader counts them as one iteration's): 300 + 90 words, II 195, not 184
+    wide = trial_loops(program, (0, 1, 2, 3), costs, 3, accesses, var_end, tables,
+                       {0: 10, 1: 90, 2: 300})
+    lp = next(lp for lp in wide if lp.fused)
+    assert lp.ii == 195 and trial_end(wide, var_end, pos) == 800 + 195 + 602
+    # without the data words (a caller that cannot tell them) nothing is fused
+    assert all(not lp.fused for lp in trial_loops(program, (0, 1, 2, 3), costs, 3, accesses,
+                                                  var_end, tables))

@@ -553,7 +553,8 @@ class UpdateModel:
         p = self.program
         index = {v.key: i for i, v in enumerate(p.variables)}
         small = small_blocks(p)
-        costs, accesses = {}, {}
+        from fgc_backends.hls.units.datapath import instance_accesses
+        costs, accesses, data = {}, {}, {}
         for b in range(len(p.blocks)):
             if b in small[1:]:
                 continue
@@ -563,9 +564,10 @@ class UpdateModel:
             costs[key] = ([i for i in instances if p.factors[i].block in members], loop.ii,
                           loop.depth)
             accesses[key] = sum(self._blocks[m].n_x_in for m in members)
+            data[key] = max(instance_accesses(self._blocks[m], "cost")[1][0] for m in members)
         return trial_loops(p, [index[k] for k in keys], costs,
                            max(v.storage_dim for v in p.variables), accesses, var_end,
-                           _tables(p) if var_end is not None else None)
+                           _tables(p) if var_end is not None else None, data)
 
     def step_pattern(self, first, last, c, damping) -> np.ndarray:
         """Structural rows × (frontal + separator) non-zeros of the window's step for cluster c:

@@ -634,6 +634,10 @@ class TrialLoop:
     # cycles its process spends before this loop on trial_cost_b's data words (the slot design
     # in two processes, slot_split_loops: trial_cost sends them, trial_cost_b takes them in)
     feed: int = 0
+    # a fused loop (slot_split_loops): the datapaths whose instances it costs, one an entry
+    # (exclusive branches on the entry's block type: one pipeline, no drain between them);
+    # ``key`` then names them ("0_3")
+    fused: tuple[int, ...] = ()
 
     @property
     def name(self) -> str:
@@ -642,7 +646,7 @@ class TrialLoop:
 
 def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
                 var_end: list[int] | None = None,
-                tables: dict | None = None) -> tuple[TrialLoop, ...]:
+                tables: dict | None = None, data: dict | None = None) -> tuple[TrialLoop, ...]:
     """trial_cost's loops, in the order the process runs them: per cost datapath (``costs``:
     key -> (instances, cost-mode II, depth), a block type's own or the small types' shared
     one; ``accesses[key]``: the x words an instance gathers) its instances in the order their
@@ -662,7 +666,8 @@ def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: d
     the order their last instance is ready (``ready_order``, the most work first among equals),
     and that order is kept if it ends sooner (:func:`trial_end`), else the one above. With
     ``tables`` too, the cost pass in two processes (:func:`slot_split_loops`) where that ends
-    sooner still."""
+    sooner still; with ``data`` too (key -> the data words an instance reads), a process's block
+    datapaths may run as one loop there (:func:`_fuse`)."""
     order = work_order(costs)
     base = _ordered_loops(program, retire_vars, costs, max_storage, accesses, order)
     if var_end is None:
@@ -672,7 +677,8 @@ def trial_loops(program, retire_vars, costs: dict, max_storage: int, accesses: d
     one = ready if trial_end(ready, var_end) < trial_end(base, var_end) else base
     if tables is None:
         return one
-    two = slot_split_loops(program, retire_vars, costs, max_storage, accesses, var_end, tables)
+    two = slot_split_loops(program, retire_vars, costs, max_storage, accesses, var_end, tables,
+                           data)
     pos = {v: i for i, v in enumerate(retire_vars)}
     if two and trial_end(two, var_end, pos) < trial_end(one, var_end):
         return two
@@ -686,7 +692,8 @@ FEED_SEND_DEPTH, FEED_TAKE_DEPTH = 2, 3
 
 
 def slot_split_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
-                     var_end: list[int], tables: dict) -> tuple[TrialLoop, ...] | None:
+                     var_end: list[int], tables: dict,
+                     data: dict | None = None) -> tuple[TrialLoop, ...] | None:
     """The slot design's cost pass in two processes: ``trial_cost`` and ``trial_cost_b`` side by
     side, each fed the retired variables its instances read on a stream of its own
     (TRIAL_SEND), each its loops one after another in the better of the most-work and the
@@ -711,8 +718,16 @@ def slot_split_loops(program, retire_vars, costs: dict, max_storage: int, access
             needed = {i for c in group for f in sub[c][0] for i in _factor_vars(program, f)}
             mine = [v for v in retire_vars if v in needed]
             orders = [work_order(sub), ready_order(program, mine, sub)]
+            # the block datapaths fused into one loop (:func:`_ordered_loops`), the small one
+            # before or after it: no drain between them (last: kept only where that ends sooner)
+            fused = tuple(sorted(c for c in group if c != "small" and sub[c][0]))
+            if len(fused) > 1 and data is not None:
+                rest = [c for c in group if c != "small" and c not in fused]
+                tail = ["small"] if "small" in group else []
+                orders += [tail + [fused] + rest, [fused] + rest + tail] if tail \
+                    else [[fused] + rest]
             cands = [[replace(lp, proc=q) for lp in _ordered_loops(
-                program, mine, sub, max_storage, accesses, o)] for o in orders]
+                program, mine, sub, max_storage, accesses, o, data)] for o in orders]
             out += min(cands, key=lambda ls: _process_end(ls, var_end, pos))
         _, words = trial_b_data(program, out, tables)
         i0 = next(i for i, lp in enumerate(out) if lp.proc == 0)
@@ -746,11 +761,34 @@ def work_order(costs: dict) -> list:
     return sorted(costs, key=lambda c: _work_key(costs, c))
 
 
+def _fuse(costs: dict, accesses: dict, keys: tuple[int, ...],
+          data: dict) -> tuple[str, tuple, int]:
+    """A fused loop's key, its (instances, II, depth) and its x words an entry: the block
+    datapaths ``keys`` in one pipelined loop, an entry costing one instance through its
+    block's datapath (exclusive branches): the instances of all, the largest depth, and an II
+    no less than any datapath's nor than the data memory's :data:`PORTS` allow for every
+    branch's reads (``data``: the words an instance reads; the branches' reads counted as one
+    iteration's, as the second reader counts them); the x words every branch reads."""
+    ii = max([costs[c][1] for c in keys] + [loop_ii([(sum(data[c] for c in keys), 1)])])
+    return ("_".join(str(c) for c in keys),
+            ([f for c in keys for f in costs[c][0]], ii, max(costs[c][2] for c in keys)),
+            sum(accesses[c] for c in keys))
+
+
 def _ordered_loops(program, retire_vars, costs: dict, max_storage: int, accesses: dict,
-                   order: list) -> tuple[TrialLoop, ...]:
-    """:func:`trial_loops`' loops with the datapaths in ``order``."""
+                   order: list, data: dict | None = None) -> tuple[TrialLoop, ...]:
+    """:func:`trial_loops`' loops with the datapaths in ``order``; an element that is a tuple
+    of block datapaths is one fused loop over their instances, in the order they are ready
+    (:func:`_fuse`)."""
     pos = {v: i for i, v in enumerate(retire_vars)}
     index = {v.key: i for i, v in enumerate(program.variables)}
+    fused = {}
+    for c in order:
+        if isinstance(c, tuple):
+            key, cost, words = _fuse(costs, accesses, c, data)
+            costs, accesses = {**costs, key: cost}, {**accesses, key: words}
+            fused[key] = c
+    order = ["_".join(str(k) for k in c) if isinstance(c, tuple) else c for c in order]
     taken = 0
     plans = []
     for c in order:
@@ -777,7 +815,8 @@ def _ordered_loops(program, retire_vars, costs: dict, max_storage: int, accesses
         k = max([0] + [len(v) for _, v in entries])
         _, ii, depth = costs[c]
         ii = max(ii, loop_ii([(k * max_storage + accesses[c], 1)]))
-        out.append(TrialLoop(c, tuple(entries), k, ii, depth + (2 if k else 0)))
+        out.append(TrialLoop(c, tuple(entries), k, ii, depth + (2 if k else 0),
+                             fused=fused.get(c, ())))
     return tuple(out)
 
 
@@ -956,16 +995,17 @@ def trial_plan(program, blocks, loops: dict, tables: dict,
     from fgc_backends.hls.units.backsub import retire_solved
     from fgc_backends.hls.units.state_update import retire_order
     variables, _ = retire_order(program, retire_solved(tables))
-    costs, accesses = {}, {}
+    costs, accesses, data = {}, {}, {}
     small = small_blocks(program)
     for key, loop in loops.items():
         members = small if key == "small" else (key,)
         costs[key] = ([f for i in members for f in blocks[i].instances], loop.ii, loop.depth)
         accesses[key] = sum(blocks[i].n_x_in for i in members)
+        data[key] = max(instance_accesses(blocks[i], "cost")[1][0] for i in members)
     width = max(v.storage_dim for v in program.variables)
     if split:
         return split_trial_loops(program, variables, costs, width, accesses)
-    return trial_loops(program, variables, costs, width, accesses, var_end, tables)
+    return trial_loops(program, variables, costs, width, accesses, var_end, tables, data)
 
 
 def trial_var_end(ctx) -> list[int] | None:
