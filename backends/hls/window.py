@@ -41,6 +41,9 @@ from fgc.ir.datafile import factor_words
 from fgc_backends.hls.target import DEFAULT_PART
 
 KEEP, ZERO = -1, -2  # shift codes besides a source word: keep the word, write zero
+# DATA_BUF's cyclic partitions the update's start may take (its shift's and keyframe's words in
+# one loop, fgc_stream.h's start_data_task): the fewest iterations, then the fewest banks
+START_BANKS = (2, 4)
 
 
 class OnChipWindowError(FgcError):
@@ -199,6 +202,50 @@ class WindowLayout(WindowTemplate):
             for k in range(m.words):
                 data_shift[m.start + k] = source.start + k
         self.x_moves, self.data_moves = _moves(x_shift), _moves(data_shift)
+        self._start_tables()
+
+    def _start_tables(self) -> None:
+        """The update's start on DATA_BUF once the window is full (the shift, then the keyframe
+        into the newest slot) as one loop over DATA_BUF in ``start_banks`` cyclic banks: per
+        iteration each bank reads one word and writes one (its two ports), the written word
+        read this iteration from any bank, one of the keyframe's next words or zero.
+        ``start_rows``: the call's keyframe (its input read a word a cycle: one keyframe word
+        an iteration); ``sweep_rows`` (batch steps as sweeps): a sweep pass's, its keyframe
+        from its row of SWEEP_WORDS (two read ports: two an iteration). Per iteration per bank
+        (word read or None, word written or None, its source: a bank, ``nb`` / ``nb + 1`` the
+        iteration's first / second keyframe word, None zero). Checked against the moves one
+        after another (:func:`_check_start`)."""
+        self.start_banks, self.start_rows, self.sweep_rows = 1, [], []
+        if self.size < 2:
+            return
+        kf = self.new_dest[-1]
+        best = None
+        for nb in START_BANKS:
+            rows = _start_schedule(self.data_moves, kf, nb)
+            if best is None or len(rows) < len(best[1]):
+                best = (nb, rows)
+        self.start_banks, self.start_rows = best
+        _check_start(self.data_moves, kf, self.n_data, *best)
+        if self.sweep is not None:
+            self.sweep_rows = _start_schedule(self.data_moves, kf, best[0], 2)
+            _check_start(self.data_moves, kf, self.n_data, best[0], self.sweep_rows)
+
+    def start_context(self) -> dict:
+        """accel.cpp.jinja's START_OPS (and START_OPS_SWEEP) tables (:meth:`_start_tables`):
+        per iteration and bank one word, the row read (0: none), the row written plus one (0:
+        none) and the written word's source, ``row_bits`` bits each but the source's (a bank,
+        ``nb`` / ``nb + 1`` the iteration's first / second keyframe word, ``nb + 2`` zero)."""
+        nb = self.start_banks
+        bits = max(1, ((self.n_data - 1) // nb + 1).bit_length())
+
+        def ops(rows):
+            return [(0 if r is None else r // nb) | (0 if w is None else w // nb + 1) << bits
+                    | (nb + 2 if s is None else s) << 2 * bits
+                    for row in rows for r, w, s in row]
+
+        return {"banks": nb, "iterations": len(self.start_rows), "row_bits": bits,
+                "ops": ops(self.start_rows), "sweep_iterations": len(self.sweep_rows),
+                "sweep_ops": ops(self.sweep_rows)}
 
     def _leaf(self, tables, index) -> None:
         """The elimination step of slot 0: its frontal variables slot 0's, its separator slot
@@ -300,6 +347,7 @@ class WindowLayout(WindowTemplate):
                 "new_dest": [w for d in self.new_dest for w in d],
                 "new_begin": self.new_begin(),
                 "max_new": max(len(d) for d in self.new_dest),
+                "start": self.start_context(),
                 "role": "window", "in_x": self.n_x, "in_data": self.n_data,
                 **self._kept_context(linear_cxx, part), **self._batch_context(),
                 "sweep": None if self.sweep is None else {
@@ -633,6 +681,101 @@ def _moves(shift: list[int]) -> list[tuple[int, int]]:
     if len(order) != sum(1 for src in shift if src != KEEP):
         raise OnChipWindowError("internal error: the shift has a cycle")
     return order
+
+
+def _start_schedule(moves: list[tuple[int, int]], kf: list[int], nb: int,
+                    per: int = 1) -> list[list]:
+    """The shift's ``moves`` ((target, source or ZERO) in an order that reads each word before
+    it is overwritten) and the keyframe's words into ``kf`` (in the call's order) over DATA_BUF
+    in ``nb`` cyclic banks (word w in bank w mod nb), greedily: per iteration each bank one
+    read and one write, at most ``per`` keyframe words (1 or 2), every op once the one move
+    that reads its target (if any) has run in this or an earlier iteration (an iteration's
+    reads come before its writes). The keyframe's words in their order, each with the moves
+    its chain needs first; the moves that free no keyframe word fill the ports left. Per
+    iteration per bank (word read, word written, source: a bank, ``nb + q`` the iteration's
+    q-th keyframe word, None zero)."""
+    reader = {src: i for i, (_, src) in enumerate(moves) if src >= 0}
+    writer = {dst: i for i, (dst, _) in enumerate(moves)}
+    at_kf = {w: k for k, w in enumerate(kf)}
+    far = len(kf) + 1
+    ops = []  # (key, kind, index): kind "m" a move, "k" a keyframe word
+    for i, (_, src) in enumerate(moves):
+        dist, w = 1, src
+        while w >= 0 and w in writer:  # up the chain to the word no move writes
+            w = moves[writer[w]][1]
+            dist += 1
+        ops.append(((at_kf.get(w, far) if w >= 0 else far, -dist, i), "m", i))
+    ops += [((k, 0, -1), "k", k) for k in range(len(kf))]
+    pending = [op for _, *op in sorted(ops)]
+    done: dict[int, int] = {}  # move -> its iteration
+    rows, next_kf = [], 0
+    while pending:
+        it = len(rows)
+        row = [[None, None, None] for _ in range(nb)]
+        kf_used = 0
+        progress = True
+        while progress:
+            progress = False
+            for op in list(pending):
+                kind, i = op
+                dst = kf[i] if kind == "k" else moves[i][0]
+                r = reader.get(dst)
+                if r is not None and r not in done:
+                    continue
+                b = dst % nb
+                if row[b][1] is not None:
+                    continue
+                if kind == "k":
+                    if kf_used == per or i != next_kf:
+                        continue
+                    row[b][1:] = [dst, nb + kf_used]
+                    kf_used, next_kf = kf_used + 1, next_kf + 1
+                else:
+                    src = moves[i][1]
+                    if src >= 0:
+                        if row[src % nb][0] is not None:
+                            continue
+                        row[src % nb][0] = src
+                    row[b][1:] = [dst, src % nb if src >= 0 else None]
+                    done[i] = it
+                pending.remove(op)
+                progress = True
+        if all(c[1] is None for c in row):
+            raise OnChipWindowError("internal error: the update's start schedules nothing")
+        rows.append([tuple(c) for c in row])
+    return rows
+
+
+def _check_start(moves, kf, n_data: int, nb: int, rows) -> None:
+    """:class:`OnChipWindowError` unless the banked start (:func:`_start_schedule`) leaves
+    DATA_BUF as the moves one after another and then the keyframe's words do, each bank at
+    most one read and one write an iteration."""
+    want = list(range(n_data))
+    for dst, src in moves:
+        want[dst] = want[src] if src >= 0 else "zero"
+    for k, w in enumerate(kf):
+        want[w] = ("kf", k)
+    got, k = list(range(n_data)), 0
+    for row in rows:
+        first = k
+        read = {}
+        for b, (r, _, _) in enumerate(row):
+            if r is not None:
+                if r % nb != b:
+                    raise OnChipWindowError("internal error: a start read outside its bank")
+                read[b] = got[r]
+        for b, (_, w, s) in enumerate(row):
+            if w is None:
+                continue
+            if w % nb != b:
+                raise OnChipWindowError("internal error: a start write outside its bank")
+            if s is not None and s >= nb:
+                got[w], k = ("kf", first + s - nb), k + 1
+            else:
+                got[w] = "zero" if s is None else read[s]
+    if got != want:
+        raise OnChipWindowError("internal error: the update's banked start does not leave "
+                                "DATA_BUF as the shift and the keyframe's words do")
 
 
 def pos_total(members: list[Member]) -> int:

@@ -7,6 +7,10 @@ top keeps the window between calls and takes one keyframe's words per call.
   space (measured 1.6e-14 at N = 8, W = 3), with the same iteration counts; a wrong shift table
   breaks the agreement;
 - a keyframe brings only its own words: the slot's factors and prior, far fewer than the window's;
+- the update's start with the window full (the shift's words and the keyframe's in one loop over
+  DATA_BUF's cyclic banks, window.py's _start_schedule) takes the keyframe's word an iteration
+  (LIO: 557 + 379 words in 379 iterations over 4 banks) and leaves DATA_BUF as the moves one
+  after another do; a table out of order is refused;
 - the update model prices each call from the emitted plan: the shift once the window is full,
   the marginalisation when a keyframe leaves, the QR steps on the rows non-zero in the update
   (bench/bench_stream_cycles.py: within 0.988 … 0.998 of the counting C simulation per update
@@ -40,7 +44,12 @@ from fgc.ir.datafile import problem_data
 from fgc_backends.hls.config import HlsConfig
 from fgc_backends.hls.plan.stream import WindowUpdateModel
 from fgc_backends.hls.streaming import OnChipFixedLagStream, OnChipIncrementalStream
-from fgc_backends.hls.window import OnChipWindowError, WindowLayout
+from fgc_backends.hls.window import (
+    OnChipWindowError,
+    WindowLayout,
+    _check_start,
+    _start_schedule,
+)
 from fgc_backends.native.streaming import FixedLagStream, IncrementalStream
 
 TOL = 1e-10  # tangent-space distance per variable, on-chip csim (double) vs native stream
@@ -92,6 +101,43 @@ def test_a_keyframe_brings_only_its_own_words(lio6):
     assert numbers == sum(lay.kf_words + len(lay.new_dest[min(j, 2)]) for j in range(6))
 
 
+def test_the_start_takes_a_keyframe_word_an_iteration(lio6):
+    _, _, _, stream, _, _ = lio6
+    lay = stream.layout
+    kf, nb = lay.new_dest[-1], lay.start_banks
+    writes = len(lay.data_moves) + len(kf)
+    assert (len(lay.data_moves), len(kf), nb) == (557, 379, 4)
+    # one keyframe word an iteration bounds it, the banks' write ports do not (936 / 4 = 234)
+    assert len(lay.start_rows) == len(kf) > -(-writes // nb)
+    for row in lay.start_rows:  # each bank one read and one write, at most one keyframe word
+        assert len(row) == nb and sum(1 for _, _, s in row if s is not None and s >= nb) <= 1
+    # two banks: two writes an iteration bound it (936 / 2 = 468)
+    assert len(_start_schedule(lay.data_moves, kf, 2)) == writes // 2
+    # the call's keyframe in its order: a table whose iterations are swapped is refused
+    rows = list(lay.start_rows)
+    rows[0], rows[-1] = rows[-1], rows[0]
+    with pytest.raises(OnChipWindowError, match="banked start"):
+        _check_start(lay.data_moves, kf, lay.n_data, nb, rows)
+
+
+def test_a_chain_of_moves_runs_in_one_iteration():
+    # word 0 <- 1 <- 2 <- the keyframe's word, word 3 zeroed: one iteration over 4 banks (reads
+    # before writes); two keyframe words an iteration only where asked for
+    moves, kf = [(0, 1), (1, 2), (3, -2)], [2, 5]
+    rows = _start_schedule(moves, kf, 4)
+    assert len(rows) == 2 and [r[0] for r in rows[0][:3]] == [None, 1, 2]
+    _check_start(moves, kf, 8, 4, rows)
+    # (word 5's bank writes word 1 in the first iteration: the second keyframe word waits)
+    assert [w for _, w, _ in rows[1]] == [None, 5, None, None]
+    moves, kf = moves[:2], [2, 3]
+    assert len(_start_schedule(moves, kf, 4)) == 2
+    two = _start_schedule(moves, kf, 4, 2)
+    assert len(two) == 1
+    _check_start(moves, kf, 8, 4, two)
+    with pytest.raises(OnChipWindowError, match="banked start"):
+        _check_start(moves, kf, 8, 4, rows[::-1])
+
+
 @pytest.mark.heavy
 def test_a_wrong_shift_breaks_the_agreement(lio6, tmp_path):
     graph, program, data, _, _, native = lio6
@@ -100,9 +146,8 @@ def test_a_wrong_shift_breaks_the_agreement(lio6, tmp_path):
     text = cpp.read_text()
     # the factors stay in their slots on a shift (the variables' move alone changes only
     # where LM starts: 9e-8 at the optimum)
-    patched = text.replace("DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? word : T(0);",
-                           "DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? "
-                           "DATA_BUF[DATA_MOVES[2 * k]] : T(0);")
+    patched = text.replace("src < START_BANKS ? word[src] :",
+                           "src < START_BANKS ? DATA_BUF[START_BANKS * to + c] :")
     assert patched != text
     cpp.write_text(patched)
     # the Makefile's objects do not list the headers: rebuild the kernel's from the patched one

@@ -52,8 +52,8 @@
 //
 // Define the parts the design has, then include this file inside the kernel's namespace after
 // its tables and memories, which the functions name (the window's X, DATA_BUF, COND, NF, the
-// schedule's STEP_* and the stream's SLOT_X, NEW_DEST, X_MOVES, DATA_MOVES, N_X_MOVES,
-// N_DATA_MOVES, STREAM_* constants; KEPT_*, X_KEPT, BATCH_* where kept / batch), with the problem's
+// schedule's STEP_* and the stream's SLOT_X, NEW_DEST, X_MOVES, N_X_MOVES, START_OPS,
+// START_BANKS, START_ROW_BITS, N_START, STREAM_* constants; KEPT_*, X_KEPT, BATCH_* where kept / batch), with the problem's
 // kernels: linearize_all and, kept, keyframe_local / keyframe_retract (each variable's Log and
 // retraction). T and L are the kernel's scalars. CFG is the kernel's StreamConfig: the plan's
 // (II, depth) of T's move / max / retract / div and L's acc / div / scatter loops, MV_II (the kept
@@ -131,10 +131,12 @@ L BATCH_TAU[STREAM_KF_T * (STREAM_KF_T + 1)];  // the factor passed into the nex
 // The update's start as one DATAFLOW region of two processes, each on its own memories: the
 // moves on X (start_x_task: the leaving keyframe's estimate into X_KEPT where `leave`, the
 // shift's variables where `shift`, the keyframe's storage into slot m, and slots 0 and 1 into
-// lin01 where `points`) beside the moves on DATA_BUF (start_data_task: the shift's words, then
-// the keyframe's factors' and prior's words). Each loop of a process keeps its memory's ports to
-// itself (X: the shift a read and a write an iteration, the keyframe a write, the points a read;
-// DATA_BUF the same), the two processes share no memory and have no operator (moves and muxes):
+// lin01 where `points`) beside the moves on DATA_BUF (start_data_task: the shift's words and
+// the keyframe's factors' and prior's words in one loop over DATA_BUF's START_BANKS banks, a
+// read and a write of each an iteration, by the table START_OPS (window.py's _start_tables);
+// while the window fills, the keyframe's words alone). Each loop of a process keeps its memory's
+// ports to itself (X: the shift a read and a write an iteration, the keyframe a write, the
+// points a read), the two processes share no memory and have no operator (moves and muxes):
 // the region takes the longer of the two. `row` / `from_row` (batch steps as sweeps): the
 // pass's keyframe from its row of the sweep's memory (a sweep pass, the row sweep_store or an
 // earlier call left), else from the call's input, each word also kept in row `row` as it passes
@@ -192,38 +194,121 @@ void start_x_task(bool leave, int kept, bool shift, int m, int row, bool from_ro
     }
 }
 
+// The call's keyframe words (not a sweep pass's, whose row is on chip) read from `data` in their
+// order, a word a cycle (a burst), into the FIFO start_data_task takes them from: its loop
+// takes them at the iterations its table says, so it reads no address of `data` itself.
 template <class CFG>
-void start_data_task(bool shift, int m, int row, bool from_row, const T data[STREAM_IN_DATA]) {
+void start_in_task(int m, bool from_row, const T data[STREAM_IN_DATA], hls::stream<T>& words) {
     FGC_TASK();
-    if (shift) {
-        FGC_PHASE("stream_shift");
-        for (int k = 0; k < N_DATA_MOVES; ++k) {
-#pragma HLS PIPELINE II=1
-#pragma HLS DEPENDENCE variable=DATA_BUF inter false
-            const int src = DATA_MOVES[2 * k + 1];
-            const T word = DATA_BUF[src >= 0 ? src : 0];
-            DATA_BUF[DATA_MOVES[2 * k]] = src >= 0 ? word : T(0);
-        }
-        FGC_CYCLES("stream", 0, "shift_data", N_DATA_MOVES, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    }
     FGC_PHASE("setup");
-    const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
+    const int n = from_row ? 0 : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
 #pragma HLS PIPELINE II=1
-#ifdef FGC_STREAM_SWEEP
-        const T v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : data[k];
-        DATA_BUF[NEW_DEST[b + k]] = v;
-        if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
-#else
-        DATA_BUF[NEW_DEST[b + k]] = data[k];
-#endif
+        words.write(data[k]);
     }
-    FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+    FGC_CYCLES("top", 0, "keyframe_data_read", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+}
+
+template <class CFG>
+void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& words) {
+    FGC_TASK();
+    // DATA_BUF in START_BANKS cyclic banks: the start loop below takes a read and a write of
+    // every bank an iteration (every other access to DATA_BUF, at an address the scheduler
+    // cannot place in one bank, takes a port of every bank, as one bank's did)
+#pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=START_BANKS
+#pragma HLS ARRAY_PARTITION variable=START_OPS cyclic factor=START_BANKS
+    const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
 #ifndef FGC_STREAM_SWEEP
     (void)row;
     (void)from_row;
 #endif
+    const int mask = (1 << START_ROW_BITS) - 1;
+#ifdef FGC_STREAM_SWEEP
+#pragma HLS ARRAY_PARTITION variable=START_OPS_SWEEP cyclic factor=START_BANKS
+    if (shift && from_row) {  // a sweep pass: its keyframe from its row of SWEEP_WORDS, whose two
+        FGC_PHASE("stream_shift");  // read ports give two words an iteration (START_OPS_SWEEP)
+        int k = 0;
+        for (int i = 0; i < N_START_SWEEP; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=DATA_BUF inter false
+            T word[START_BANKS];
+#pragma HLS ARRAY_PARTITION variable=word complete
+            int in = 0;  // the keyframe's words this iteration: 0, 1 or 2
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS_SWEEP[i * START_BANKS + c];
+                word[c] = DATA_BUF[START_BANKS * (op & mask) + c];
+                const int src = op >> (2 * START_ROW_BITS);
+                if (src == START_BANKS + 1) in = 2;
+                else if (src == START_BANKS && in == 0) in = 1;
+            }
+            const T v0 = in > 0 ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : T(0);
+            const T v1 = in > 1 ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k + 1] : T(0);
+            k += in;
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS_SWEEP[i * START_BANKS + c];
+                const int to = ((op >> START_ROW_BITS) & mask) - 1, src = op >> (2 * START_ROW_BITS);
+                if (to >= 0) {
+                    DATA_BUF[START_BANKS * to + c] = src < START_BANKS ? word[src]
+                                                     : src == START_BANKS ? v0
+                                                     : src == START_BANKS + 1 ? v1 : T(0);
+                }
+            }
+        }
+        FGC_CYCLES("stream", 0, "start_data_sweep", N_START_SWEEP, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        return;
+    }
+#endif
+    if (shift) {  // (the window full: m is the newest slot) the shift and the keyframe's words
+        FGC_PHASE("stream_shift");
+#ifdef FGC_STREAM_SWEEP
+        int k = 0;  // the keyframe's next word (the FIFO's, at most one an iteration)
+#endif
+        for (int i = 0; i < N_START; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=DATA_BUF inter false
+            T word[START_BANKS];  // what each bank reads this iteration (its reads before its writes)
+#pragma HLS ARRAY_PARTITION variable=word complete
+            bool in = false;
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS[i * START_BANKS + c];
+                word[c] = DATA_BUF[START_BANKS * (op & mask) + c];
+                in = in || (op >> (2 * START_ROW_BITS)) == START_BANKS;
+            }
+            T v = T(0);
+            if (in) {
+                v = words.read();
+#ifdef FGC_STREAM_SWEEP
+                SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;  // (not a sweep pass: kept as it came)
+                ++k;
+#endif
+            }
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS[i * START_BANKS + c];
+                const int to = ((op >> START_ROW_BITS) & mask) - 1, src = op >> (2 * START_ROW_BITS);
+                if (to >= 0) DATA_BUF[START_BANKS * to + c] = src < START_BANKS ? word[src] : src == START_BANKS ? v : T(0);
+            }
+        }
+        FGC_CYCLES("stream", 0, "start_data", N_START, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        return;
+    }
+    FGC_PHASE("setup");
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
+#pragma HLS PIPELINE II=1
+#ifdef FGC_STREAM_SWEEP
+        const T v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : words.read();
+        DATA_BUF[NEW_DEST[b + k]] = v;
+        if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
+#else
+        DATA_BUF[NEW_DEST[b + k]] = words.read();
+#endif
+    }
+    FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 }
 
 // The region (the caller joins it: FGC_TASKS_JOIN): every slot down one where `shift` (slot s
@@ -236,8 +321,11 @@ void update_start(bool leave, int kept, bool shift, int m, int row, bool from_ro
                   const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA], bool points,
                   T lin01[2 * STREAM_KF_X]) {
 #pragma HLS DATAFLOW
+    hls::stream<T> words("start_words");  // the call's keyframe words, in their order
+#pragma HLS STREAM variable=words depth=2
     start_x_task<CFG>(leave, kept, shift, m, row, from_row, x_in, points, lin01);
-    start_data_task<CFG>(shift, m, row, from_row, data);
+    start_in_task<CFG>(m, from_row, data, words);
+    start_data_task<CFG>(shift, m, row, from_row, words);
 }
 
 #ifdef FGC_STREAM_SWEEP

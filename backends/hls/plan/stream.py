@@ -479,6 +479,10 @@ class WindowUpdateModel:
                 # (start_x_task) and on DATA_BUF (start_data_task), each process's own loops
                 _stream_phase("shift_x", move("x", len(lay.x_moves))),
                 _stream_phase("shift_data", move("d", len(lay.data_moves))),
+                # the window full: the shift's words and the keyframe's in one loop over
+                # DATA_BUF's banks (window.py's _start_tables; start_data_task)
+                _stream_phase("start_data", move("d", max(1, len(lay.start_rows)))),
+                _stream_phase("start_data_sweep", move("d", max(1, len(lay.sweep_rows)))),
                 _stream_phase("keyframe_x_in", move("x", kf)),
                 _stream_phase("x_out", move("x", lay.n_x)),
                 _stream_phase("x_out_kf", move("x", kf))]
@@ -649,7 +653,10 @@ class WindowUpdateModel:
                                              self.les.word_bits,
                                              n * (2 * n + 1) if batch is not None else 0,
                                              self.spec))
-        return replace(merged, units=merged.units + self.stream_units())
+        # DATA_BUF in the update start's cyclic banks (fgc_stream.h's start_data_task)
+        memories = tuple(replace(m, banks=max(m.banks, self.layout.start_banks))
+                         if m.name == "data" else m for m in merged.memories)
+        return replace(merged, memories=memories, units=merged.units + self.stream_units())
 
     def stream_units(self) -> tuple[Unit, ...]:
         """The operators the stream section's own code instantiates (fgc_stream.h, every call
@@ -914,22 +921,45 @@ class WindowUpdateModel:
                           "the two moves (one DATAFLOW region): all but the longest hidden"))
         return terms
 
-    def _start_hidden(self, m: int, shift: bool, leave: bool, points: bool) -> int:
+    def _start_hidden(self, m: int, shift: bool, leave: bool, points: bool,
+                      row: bool = False) -> int:
         """The cycles update_start (fgc_stream.h) hides: its two processes, the moves on X (the
         leaving keyframe's estimate out where ``leave``, the shift's variables where ``shift``,
         the keyframe's storage into slot ``m``, slots 0 and 1 copied where ``points``) and the
         moves on DATA_BUF (the shift's words, the keyframe's words), share no memory and no
         operator: the region takes the longer, the shorter is hidden. Priced against the terms
-        that count each move whole (keyframe_in, shift, leave, lin_points)."""
+        that count each move whole (keyframe_in, shift, leave, lin_points); ``row``: a sweep
+        pass's keyframe from its row (:meth:`_banked`)."""
         st = self.stream
         x = (st["stream_x_out_kf"] if leave else 0) + (st["stream_shift_x"] if shift else 0) \
             + st["stream_keyframe_x_in"] + (st["stream_lin_points"] if points else 0)
-        data = (st["stream_shift_data"] if shift else 0) + st[f"stream_keyframe_data_in{m}"]
+        data = (st["stream_start_data_sweep" if row else "stream_start_data"] if shift
+                else st[f"stream_keyframe_data_in{m}"])
         return min(x, data)
 
+    def _banked(self, row: bool = False) -> int:
+        """The cycles the update's start saves on DATA_BUF with the window full
+        (start_data_task): the shift's words and then the keyframe's, a word a cycle through
+        one bank's two ports (the terms shift and keyframe_in count them so), against one loop
+        over DATA_BUF's banks that takes a read and a write of each an iteration and the
+        keyframe's words one an iteration (window.py's _start_tables); ``row``: a sweep pass,
+        its keyframe from its row of SWEEP_WORDS two words an iteration."""
+        st, last = self.stream, self.layout.size - 1
+        return st["stream_shift_data"] + st[f"stream_keyframe_data_in{last}"] \
+            - st["stream_start_data_sweep" if row else "stream_start_data"]
+
+    def _banked_term(self, times: int = 1, name: str = "start_banks", row: bool = False) -> Term:
+        lay = self.layout
+        rows = lay.sweep_rows if row else lay.start_rows
+        return Term(name, -self._banked(row), times, False,
+                    f"the shift's {len(lay.data_moves)} data words and the keyframe's "
+                    f"{len(lay.new_dest[-1])} ({'two' if row else 'one'} an iteration) in "
+                    f"{len(rows)} iterations over DATA_BUF's {lay.start_banks} banks, not one "
+                    "after the other through one")
+
     def _start_term(self, m: int, shift: bool, leave: bool, points: bool,
-                    name: str = "start_beside") -> Term:
-        return Term(name, -self._start_hidden(m, shift, leave, points), 1, False,
+                    name: str = "start_beside", row: bool = False) -> Term:
+        return Term(name, -self._start_hidden(m, shift, leave, points, row), 1, False,
                     "the update's start (one DATAFLOW region): the moves on X (leave, the "
                     "shift's variables, the keyframe's storage, the points) beside those on "
                     "DATA_BUF (the shift's and the keyframe's words), the shorter hidden")
@@ -961,7 +991,7 @@ class WindowUpdateModel:
                                                                else 0) for c in range(j))
         # each pass's start region: its moves on X beside its words (the points copied on the
         # passes with the window full, c >= w)
-        hidden = sum(self._start_hidden(min(c, w), c >= lay.size, False, c >= w)
+        hidden = sum(self._start_hidden(min(c, w), c >= lay.size, False, c >= w, True)
                      for c in range(j))
         terms = [Term("sweep_gather", st[f"stream_sweep{j}_gather"], 1, False,
                       f"keyframes 0 … {j - 1}'s estimates into their rows (the sweep's points)"),
@@ -971,6 +1001,9 @@ class WindowUpdateModel:
                  Term("sweep_start_beside", -hidden, 1, False,
                       "each pass's start region: its moves on X (the shift's variables, the "
                       "keyframe's storage, the points) beside its words, the shorter hidden")]
+        shifted = sum(1 for c in range(j) if c >= lay.size)
+        if shifted:
+            terms.append(self._banked_term(shifted, "sweep_start_banks", True))
         steps = range(w, j)
         if not steps:
             return terms
@@ -1078,6 +1111,8 @@ class WindowUpdateModel:
             terms.append(Term("shift", st["stream_shift"], 1, False,
                               "every slot down one: its variables, its factors' words, τ"))
         sweep = lay.sweep is not None and keyframe in lay.sweep
+        if keyframe >= lay.size:  # (a sweep's last pass reads its keyframe from its row too)
+            terms.append(self._banked_term(row=sweep))
         if lay.sweep is not None:
             if keyframe >= lay.size:
                 terms.append(Term("leave", st["stream_x_out_kf"], 1, False,
@@ -1099,7 +1134,7 @@ class WindowUpdateModel:
         terms.append(self._start_term(
             m, keyframe >= lay.size,
             keyframe >= lay.size and (lay.sweep is not None or batch is not None)
-            and not sweep and not batch_step, not batch_step))
+            and not sweep and not batch_step, not batch_step, row=sweep))
         if batch is not None:
             if keyframe >= lay.size:
                 terms.append(Term("leave", st["stream_x_out_kf"], 1, False,
