@@ -101,8 +101,11 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     context["leaf_lin"] = bool(context["stream"] and context["stream"]["marginal"])
     # the on-chip window's one-step solve: level 0's unit sets reflect their steps inside the
     # linearisation's region (lin_level), as the datapaths fill their banks
+    # (not with the root step in a wavefront: its level runs as qr_level with `wave`; the wave
+    # inside lin_level's set-1 process is not built)
     context["lin_qr"] = bool(context["leaf_lin"] and context.get("banks")
-                             and context["stream"]["role"] == "window")
+                             and context["stream"]["role"] == "window"
+                             and not context.get("wave"))
     # the leaving keyframe's tau and kept conditional beside the update's back-substitution
     # (the one-step policy, the slot design; fgc_stream.h's spec_marginal_task)
     context["spec"] = bool(context["stream"] and context["stream"]["spec"]
@@ -488,7 +491,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
             # the copies into X (units/lm_control.py's retire_step_test)
             "retire_test": retire_step_test(program, plan.options),
-            "small": shared, "banks": banks,
+            "small": shared, "banks": banks, "wave": _wave_context(program, plan),
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             "qr_rows": plan.options.qr_rows,  # fgc_qr.h's FGC_QR_TWO_ROWS (2)
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
@@ -505,6 +508,34 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                                 for p in ph.processes),
             "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
+
+
+def _wave_context(program: Program, plan) -> dict | None:
+    """The root step in a wavefront's constants (``HlsConfig.root_wave``, units/qr.py's
+    ``wave_steps``), None without it: the root, the fed child c0 (unit set 0's step), its
+    passed rows' place in the root's rows, their words, each row's region
+    (``wave_entries``) and each word's column in the root, and the stream's depth (every
+    passed row: unit set 1 reads them behind set 0)."""
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.qr import _own_rows, wave_entries, wave_steps
+
+    steps = wave_steps(program, plan.options)
+    if steps is None:
+        return None
+    c0, c1, root = steps
+    tables = _tables(program)
+    row0 = _own_rows(tables, root)
+    for e in range(tables["STEP_CHILD_BEGIN"][root], tables["STEP_CHILD_BEGIN"][root + 1]):
+        if tables["STEP_CHILDREN"][e] == c0:
+            break
+        row0 += tables["STEP_NF_ROWS"][tables["STEP_CHILDREN"][e]]
+    sc = tables["STEP_W"][c0] - tables["STEP_F"][c0]
+    mb = tables["STEP_SEPMAP_BEGIN"][c0]
+    nf = tables["STEP_NF_ROWS"][c0]
+    return {"c0": c0, "c1": c1, "root": root, "row0": row0, "nfed": nf, "words": sc + 1,
+            "entry": wave_entries(tables, c0, root),
+            "colmap": [tables["STEP_SEPMAP"][mb + q] for q in range(sc)]
+            + [tables["STEP_W"][root]], "depth": nf * (sc + 1)}
 
 
 def _beside_context(program: Program, plan, blocks) -> dict | None:

@@ -53,6 +53,11 @@
 // replaced by one record (trip 1, depth the span) of the enclosing region, which stays current,
 // so the region's rule (its fills, its waits) applies to the process as a whole.
 //
+// The root step in a wavefront (FGC_WAVE_READY(i) in the fed child's branch after the region
+// that finished its passed row i, FGC_WAVE_WAIT(i) in the root's branch before the loop that
+// reads it): that loop ends no earlier than its depth after the child's branch reached the mark
+// (branch_total; units/qr.py's wave_loops).
+//
 // The HGC beside the elimination (FGC_BESIDE_PRODUCER, FGC_BESIDE_CONSUMER, FGC_BESIDE_END:
 // accel.cpp.jinja's linearize_solve, a producer writing a Gram stream beside the elimination
 // that reads it) takes the later of the producer's end (its records as span_total prices them,
@@ -276,6 +281,53 @@ inline long total_range(std::size_t from, std::size_t to) {
     return sum;
 }
 
+// The root step in a wavefront (fgc_qr.h's qr_step_io): the fed child's branch marks
+// FGC_WAVE_READY(i) when its region that wrote passed row i returns; the root's branch marks
+// FGC_WAVE_WAIT(i) before the loop that reads that row. wave_ready: cycles from the fed child's
+// FGC_BRANCH to its latest READY(key) before record `before` (its records as total_range prices
+// them); 0 if there is none.
+inline long wave_ready(long key, std::size_t before) {
+    const State& s = state();
+    std::size_t at = 0;
+    bool found = false;
+    for (std::size_t mi = 0; mi < s.marks.size(); ++mi) {
+        const std::pair<std::size_t, char>& m = s.marks[mi];
+        if (m.second == 'w' && m.first <= before && s.keys.count(mi) && s.keys.at(mi) == key) {
+            at = m.first;
+            found = true;
+        }
+    }
+    if (!found) return 0;
+    std::size_t b = 0;
+    for (const auto& m : s.marks)
+        if (m.second == 'b' && m.first <= at) b = m.first;
+    return total_range(b, at);
+}
+
+// One branch of a parallel group, records [from, to): total_range's sum, except that the loop
+// after each FGC_WAVE_WAIT(i) ends no earlier than its depth after wave_ready(i) (a stream read
+// of the row, as units/qr.py's wave_loops prices it).
+inline long branch_total(std::size_t from, std::size_t to) {
+    const State& s = state();
+    const std::vector<Record>& r = s.records;
+    long clock = 0;
+    std::size_t at = from;
+    for (std::size_t mi = 0; mi < s.marks.size(); ++mi) {
+        const std::pair<std::size_t, char>& m = s.marks[mi];
+        if (m.second != 'v' || m.first < at || m.first >= to) continue;
+        std::size_t q = m.first;
+        while (q < to && r[q].trip <= 0) ++q;  // the read's loop
+        if (q >= to) continue;
+        clock += total_range(at, q);
+        const long ready = wave_ready(s.keys.count(mi) ? s.keys.at(mi) : -1, m.first) +
+                           r[q].depth;
+        clock += r[q].cycles();
+        if (ready > clock) clock = ready;
+        at = q + 1;
+    }
+    return clock + total_range(at, to);
+}
+
 // Records [from, to) of the log: sequential stretches add up; a parallel group (branches marked
 // by FGC_BRANCH up to FGC_JOIN, e.g. the unit sets of one QR level) takes its slowest branch
 // plus the fill (first loop's depth) of each other branch, as plan_cost prices a dataflow phase.
@@ -287,7 +339,7 @@ inline long span_total(std::size_t from, std::size_t to) {
     std::size_t at = from, start = from;
     bool open = false;
     auto close_branch = [&](std::size_t end) {
-        const long c = total_range(start, end);
+        const long c = branch_total(start, end);
         long f = 0;
         for (std::size_t q = start; q < end; ++q) {
             if (r[q].trip > 0) {
@@ -641,6 +693,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_ABSORB_AT(i) ::fgc_cycles::keyed_mark('A', i)
 #define FGC_OUTER_SEND_STEP(step) ::fgc_cycles::keyed_mark('S', step)
 #define FGC_OUTER_RECEIVE_STEP(step) ::fgc_cycles::keyed_mark('R', step)
+#define FGC_WAVE_READY(i) ::fgc_cycles::keyed_mark('w', i)
+#define FGC_WAVE_WAIT(i) ::fgc_cycles::keyed_mark('v', i)
 #define FGC_PHASE(name) ::fgc_cycles::phase(name)
 #define FGC_EVENT(name) ::fgc_cycles::event(name)
 #define FGC_BESIDE_PRODUCER() ::fgc_cycles::beside('P')
@@ -664,6 +718,8 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_DRAINED(streams, n) ((void)0)
 #define FGC_COLLAPSE_BEGIN() ((void)0)
 #define FGC_COLLAPSE_END(process, instance, loop) ((void)0)
+#define FGC_WAVE_READY(i) ((void)0)
+#define FGC_WAVE_WAIT(i) ((void)0)
 #define FGC_OUTER_BRANCH() ((void)0)
 #define FGC_OUTER_SEND() ((void)0)
 #define FGC_OUTER_RECEIVE() ((void)0)

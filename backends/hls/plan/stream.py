@@ -28,7 +28,13 @@ from fgc_backends.hls.plan.loops import _assign, _tables, kernel_loop, kernel_ti
 from fgc_backends.hls.plan.model import Loop, Phase, PlanError, Process, Unit
 from fgc_backends.hls.plan.report import PHASE_TRIGGER, plan_groups, unit_sets
 from fgc_backends.hls.units.memories import stream_memories
-from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
+from fgc_backends.hls.units.qr import (
+    commit_loops,
+    qr_unit_loops,
+    stack_loops,
+    wave_loops,
+    wave_steps,
+)
 
 STREAM_SOURCE = ("accelerator plan of the emitted on-chip fixed-lag window "
                  "(fgc_backends.hls.plan.stream; model estimate)")
@@ -220,7 +226,8 @@ def _stream_phase(name: str, *loops: Loop) -> Phase:
 
 def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
                     unit: frozenset = frozenset(),
-                    drop: frozenset = frozenset(), qr_rows: int = 1) -> tuple[Phase, ...]:
+                    drop: frozenset = frozenset(), qr_rows: int = 1, opts=None
+                    ) -> tuple[Phase, ...]:
     """The QR unit sets' DATAFLOW regions of one linear solve of template ``t`` (every level's,
     the plan's assignment of a level's steps to ``sets`` unit sets) with the rows of the
     ``zero`` template factors and, unless ``damped``, the √μ rows zero: the Evaluate unit skips
@@ -229,12 +236,28 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
     whitened rows are the identity) have one non-zero a row, on their own tangent direction.
     ``leaf``: that step alone on unit set 0, without the rows of the ``drop`` factor instances
     (not stacked: qr_eliminate_all's live leaf step). ``qr_rows``: the Update units' rows a
-    cycle (PlanOptions.qr_rows)."""
+    cycle (PlanOptions.qr_rows). ``opts``: the design's ``PlanOptions`` (its ``qr_rows`` then);
+    with ``root_wave`` the last two levels are one region (units/qr.py's ``wave_loops``: unit
+    set 1's process holds its step's commit and the root's stack too)."""
+    if opts is not None:
+        qr_rows = opts.qr_rows
     procs = qr_step_processes(t, zero, damped, les, leaf, unit, drop, qr_rows)
     if leaf is not None:
         return (Phase("qr_leaf", True, (procs[leaf],), linear=True),)
     phases = []
-    for li, level in enumerate(t.schedule.levels):
+    wave = wave_steps(t, opts) if opts is not None else None
+    levels = t.schedule.levels
+    units = max(1, t.solver.units)
+    for li, level in enumerate(levels):
+        if wave is not None and li >= len(levels) - 2:
+            tables = _tables(t)
+            loops = {i: procs[i].loops for i in wave}
+            phases.append(Phase(f"qr_level{li}_0", True, (
+                Process(f"qr{li}_set0", "set0", loops[wave[0]]),
+                Process(f"qr{li}_set1", "set1", wave_loops(
+                    tables, kernel_timing(les), units, max(tables["STEP_W"]),
+                    t.solver.method == "lm", wave, loops))), linear=True))
+            break
         for c in range(0, len(level), sets):
             chunk = _assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
             phases.append(Phase(f"qr_level{li}_{c}", True, chunk, linear=True))
@@ -311,9 +334,9 @@ def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
 def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
                     unit: frozenset = frozenset(), drop: frozenset = frozenset()) -> int:
     """``plan_cost`` of ``plan`` (a design holding the QR unit sets) running
-    :func:`qr_solve_phases` as its iteration."""
+    :func:`qr_solve_phases` as its iteration (with the plan's options)."""
     return plan_cost(replace(plan, phases=qr_solve_phases(
-        t, zero, damped, sets, les, leaf, unit, drop, plan.options.qr_rows))).cycles
+        t, zero, damped, sets, les, leaf, unit, drop, opts=plan.options))).cycles
 
 
 def _relinearize(ev: dict) -> int:
@@ -365,7 +388,9 @@ class WindowUpdateModel:
             raise PlanError("internal error: the stream model's QR steps are not the plan's")
         ctx = layout.context(config.linear_cxx, config.part)
         self.layout_marginal = ctx["marginal"]
-        self._lin_sets = self._lin_level_sets() if self.layout_marginal else None
+        # (not with root_wave: the emitter's lin_qr is off, level 0 is qr_level with `wave`)
+        self._lin_sets = (self._lin_level_sets()
+                          if self.layout_marginal and not self.plan.options.root_wave else None)
         self._beside = {}
         # the one-step policy (SolverConfig.one_step): the step taken, the store is the
         # update's own factorisation (fgc_stream.h's took_step)
