@@ -528,12 +528,13 @@ void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
 // datapaths wrote for a solve that did not come (zeroed first, as the unzeroed banks' rows).
 // `fed` >= 0: that child's rows are not stacked (the root step in a wavefront reads them from
 // their unit set's stream, fgc_qr.h's qr_step_io); `phase` false: counted under the caller's
-// phase (the wave region's unit set 1, which stacks the root inside the region).
+// phase (the wave region's unit set 1, which stacks the root inside the region); `own` >= 0:
+// neither that child's (lin_level's wave: set 1 moves its own step's rows from its UPDBUF).
 template <class CFG>
 void qr_stack_rows(int s, typename CFG::T root_mu,
                    typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
                    unsigned skip, int m, bool in_place = false, int dirty = 0, int fed = -1,
-                   bool phase = true) {
+                   bool phase = true, int own = -1) {
     typedef typename CFG::T T;
     if (phase) FGC_PHASE("qr_stack");
     const int w = STEP_W[s], f = STEP_F[s];
@@ -592,7 +593,9 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
         const int c = STEP_CHILDREN[e];
-        const bool by_stream = c == fed;  // its rows come by stream: only the row count advances
+        // its rows come by stream, or (own) the caller moves them from its set's buffer: only
+        // the row count advances
+        const bool by_stream = c == fed || c == own;
         const int sc = STEP_W[c] - STEP_F[c];
         const int mb = STEP_SEPMAP_BEGIN[c];
         const int n0 = STEP_NF_OFF[c];
@@ -629,10 +632,12 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
 }
 
 // A unit set's result for step s into COND and NF, PORTS words a cycle (`phase` false: counted
-// under the caller's phase, as qr_stack_rows).
+// under the caller's phase, as qr_stack_rows; coff: its conditional's first word in cond, the
+// root's in lin_level's wave).
 template <class CFG>
 void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-               const typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool phase = true) {
+               const typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool phase = true,
+               int coff = 0) {
     if (phase) FGC_PHASE("qr_commit");
     const int w = STEP_W[s], f = STEP_F[s], sw = w - f;
     const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
@@ -642,7 +647,7 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
 #pragma HLS PIPELINE II=1
         for (int h = 0; h < PORTS; ++h) {
             if (i + h < nc) {
-                const typename CFG::T v = cond[i + h];
+                const typename CFG::T v = cond[coff + i + h];
                 COND[c0 + i + h] = v;
 #ifdef FGC_SPEC_MARGINAL  // the leaving keyframe's conditional twice (the stream's KEEP_COND)
                 if (s == SPEC_STEP) KEEP_COND[i + h] = v;

@@ -1110,13 +1110,14 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 // (j < f) or update (f <= j < f + nf), and its largest magnitude into the running scale (a
 // function argument read before it is written).
 // PASS: qr_no_pass (nothing more), or the wave's stream (hls::stream<T>) that also takes each
-// passed row's words (f <= j < f + nf) as they are written into update, where `pass`.
+// passed row's words (f <= j < f + nf) as they are written into update, where `pass`. coff:
+// the conditional's first word in cond (the wave's root: after its set's own step's).
 template <class CFG, class PASS>
 void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::T>& rq,
                 hls::stream<typename CFG::T>& exq, hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
                 typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale,
-                PASS& passq, bool pass) {
+                PASS& passq, bool pass, int coff) {
     typedef typename CFG::T T;
     const int w = f + s, cols = w + 1;
     const int last = rows < w ? rows : w;
@@ -1144,7 +1145,7 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
             }
         }
         if (j < f) {
-            cond[j * cols + c] = x;
+            cond[coff + j * cols + c] = x;
         } else if (j - f < nf) {
             update[(j - f) * (s + 1) + (c - f)] = x;
             if (pass) passq.write(x);
@@ -1167,7 +1168,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                    typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
                    typename CFG::T* scale, typename CFG::T evec[CFG::MAX_ROWS], PASS& passq,
-                   bool pass) {
+                   bool pass, int coff) {
 #pragma HLS DATAFLOW
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
     hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS];
@@ -1193,7 +1194,8 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_finish<CFG>(hin, k, tq, etq, rq);
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
     qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout, evec);
-    qr_collect<CFG, PASS>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale, passq, pass);
+    qr_collect<CFG, PASS>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale, passq, pass,
+                          coff);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
     FGC_DRAINED(tq, CFG::N_UNITS);
     FGC_DRAINED(&colq[0][0], 2 * CFG::N_UNITS);
@@ -1212,13 +1214,13 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
 // compare).
 template <class CFG>
 bool qr_pivot_check(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int cols,
-                    int k, typename CFG::T scale) {
+                    int k, typename CFG::T scale, int coff = 0) {
     bool bad = k < f;
     const typename CFG::T least = CFG::SINGULAR_EPS * scale;
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
-        if (i >= k || !(qr_abs(cond[i * cols + i]) > least)) bad = true;
+        if (i >= k || !(qr_abs(cond[coff + i * cols + i]) > least)) bad = true;
     }
     FGC_CYCLES("qr_pivot_check", 0, "pivot_check", f, 1, 2);
     return bad;
@@ -1263,12 +1265,14 @@ void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][
 // its collector writes them, FGC_WAVE_READY after the region that finished each) and FEED (the
 // root's set: nfed rows of `words` words read before the regions that need them); qr_no_pass
 // for neither. A unit set calls it from one site, so its units are one RTL copy whatever it runs.
+// coff: the conditional's first word in cond (lin_level's wave: the root's after step c1's).
 template <class CFG, class PASS, class FEED>
 void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows,
                 int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular,
                 PASS& passq, bool pass, FEED& feedq, const int entry[CFG::MAX_COLS],
-                const int colmap[CFG::MAX_COLS], int row0, int nfed, int words) {
+                const int colmap[CFG::MAX_COLS], int row0, int nfed, int words,
+                int coff = 0) {
     typedef typename CFG::T T;
     const int cols = f + s + 1;
     if (rows < 0 || f < 0 || s < 0 || rows > CFG::MAX_ROWS || cols > CFG::MAX_COLS ||
@@ -1307,15 +1311,15 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
         }
         if (((j + 1) & 1) == 0) {
             qr_reflection<CFG, PASS>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond, update,
-                                     &scale, evec, passq, pass);
+                                     &scale, evec, passq, pass, coff);
         } else {
             qr_reflection<CFG, PASS>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond, update,
-                                     &scale, evec, passq, pass);
+                                     &scale, evec, passq, pass, coff);
         }
         FGC_SEQUENTIAL();
         if (qr_passes<PASS>::value && pass && j >= f && j - f < nf) FGC_WAVE_READY(j - f);
     }
-    *singular = qr_pivot_check<CFG>(cond, f, cols, k, scale);
+    *singular = qr_pivot_check<CFG>(cond, f, cols, k, scale, coff);
 }
 
 template <class CFG>

@@ -30,6 +30,8 @@ from fgc_backends.hls.plan.report import PHASE_TRIGGER, plan_groups, unit_sets
 from fgc_backends.hls.units.memories import stream_memories
 from fgc_backends.hls.units.qr import (
     commit_loops,
+    lin_wave,
+    lin_wave_loops,
     qr_unit_loops,
     stack_loops,
     wave_loops,
@@ -246,6 +248,8 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
         return (Phase("qr_leaf", True, (procs[leaf],), linear=True),)
     phases = []
     wave = wave_steps(t, opts) if opts is not None else None
+    if wave is not None and lin_wave(t, opts) is not None:
+        wave = None  # (the wave inside lin_level: the solve's levels as without it)
     levels = t.schedule.levels
     units = max(1, t.solver.units)
     for li, level in enumerate(levels):
@@ -388,9 +392,12 @@ class WindowUpdateModel:
             raise PlanError("internal error: the stream model's QR steps are not the plan's")
         ctx = layout.context(config.linear_cxx, config.part)
         self.layout_marginal = ctx["marginal"]
-        # (not with root_wave: the emitter's lin_qr is off, level 0 is qr_level with `wave`)
+        # (with root_wave, units/qr.py's lin_wave: the root on set 1 inside that region too)
+        self._wave = lin_wave(t, self.plan.options)
         self._lin_sets = (self._lin_level_sets()
-                          if self.layout_marginal and not self.plan.options.root_wave else None)
+                          if self.layout_marginal and (self._wave is not None
+                                                       or not self.plan.options.root_wave)
+                          else None)
         self._beside = {}
         # the one-step policy (SolverConfig.one_step): the step taken, the store is the
         # update's own factorisation (fgc_stream.h's took_step)
@@ -438,7 +445,7 @@ class WindowUpdateModel:
         non-zero in this update: ``zero``, ``unit`` as :meth:`qr_cycles`). Not ``solved`` (the
         update stopped after its linearisation: no solve, no qr term): what the sets' steps
         add to the linearisation's region, ≥ 0. 0 when the design has no such sets."""
-        from fgc_backends.hls.units.datapath import lin_level_cycles
+        from fgc_backends.hls.units.datapath import lin_level_cycles, lin_wave_region
 
         if not self._lin_sets:
             return 0
@@ -452,12 +459,56 @@ class WindowUpdateModel:
                          if ph.name == "qr_level0_0")
             lin = next(ph for ph in self.plan.phases if ph.name == "factor_jacobian")
             jac = [p for p in lin.processes if p.name != "gradient"]
-            region = lin_level_cycles(t, kernel_timing(self.plan.ops), jac,
-                                      [(wait, fill, procs[s].cycles)
-                                       for s, wait, fill in self._lin_sets])
-            self._beside[key] = (region - phase_cycles(lin), phase_cycles(level))
+            sets = [(wait, fill, procs[s].cycles) for s, wait, fill in self._lin_sets]
+            hidden = phase_cycles(level)
+            if self._wave is None:
+                region = lin_level_cycles(t, kernel_timing(self.plan.ops), jac, sets)
+            else:
+                commit0, hide = self._wave_hidden(zero, unit)
+                sets[0] = (sets[0][0], sets[0][1], sets[0][2] + commit0)
+                region = lin_wave_region(t, kernel_timing(self.plan.ops), jac, sets,
+                                         self._wave_loops(procs))
+                hidden += hide
+            self._beside[key] = (region - phase_cycles(lin), hidden)
         added, level = self._beside[key]
         return added - level if solved else added
+
+    def _wave_loops(self, procs: dict):
+        """Set 1's process after its fill in lin_level with the root in a wavefront
+        (units/qr.py's ``lin_wave_loops``), a function of set 0's and set 1's starts and the
+        datapath loops' ends (units/datapath.py's ``lin_wave_region``)."""
+        from fgc_backends.hls.units.datapath import bank_ready_loops
+        from fgc_backends.hls.units.qr import _root_bank_words, rows_in_banks
+
+        t = self.layout.template
+        tables = _tables(t)
+        c0, c1, root = self._wave
+        wait = bank_ready_loops(t, rows_in_banks(t, self.plan.options, tables, root=True), 3)[2]
+        fill = kernel_loop("root_fill", _root_bank_words(tables, root), "move",
+                           kernel_timing(self.les))
+        loops = {i: procs[i].loops for i in self._wave}
+
+        def run(start0: int, start1: int, ends: dict) -> tuple[Loop, ...]:
+            return lin_wave_loops(tables, kernel_timing(self.les), max(1, t.solver.units),
+                                  max(tables["STEP_W"]), t.solver.method == "lm", self._wave,
+                                  loops, start0, start1, fill, ends[wait])
+        return run
+
+    def _wave_hidden(self, zero: frozenset, unit: frozenset) -> tuple[int, int]:
+        """Step c0's commit (set 0's, inside lin_level with the wave) and what the solve no
+        longer runs once the sets reflected the root inside lin_level: the root's level (its
+        region on this update's non-zero rows), its stack and step c0's commit (the plan's
+        loops of both, moved into the sets' processes)."""
+        t = self.layout.template
+        c0, c1, root = self._wave
+        rows = self.plan.options.qr_rows
+        last = qr_solve_phases(t, zero, True, self.sets, self.les, unit=unit, qr_rows=rows)[-1]
+        top = f"qr_stack_level{len(t.schedule.levels) - 1}"
+        stack = next(p for ph in self.plan.phases if ph.name == top
+                     for p in ph.processes if p.name == f"stack{root}")
+        commit = next(p for ph in self.plan.phases if ph.name == "qr_commit_level0"
+                      for p in ph.processes if p.name == f"commit{c0}")
+        return commit.cycles, phase_cycles(last) + stack.cycles + commit.cycles
 
     def _stream_phases(self, kt: dict, lt: dict, mv_ii: int) -> tuple[Phase, ...]:
         """The stream section's loops (accel.cpp.jinja's stream top), one phase per part an

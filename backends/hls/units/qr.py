@@ -217,7 +217,8 @@ def householder_loops(partials: int, qr_rows: int = 1
     return evaluate, update
 
 
-def rows_in_banks(program, opts, tables: dict) -> dict[int, tuple[int, int, int]]:
+def rows_in_banks(program, opts, tables: dict, root: bool = False
+                  ) -> dict[int, tuple[int, int, int]]:
     """The factors whose rows the datapaths write straight into a unit set's banks (besides
     AB), ``factor -> (set, step, its first row in the step)``: under the one-step policy
     (``SolverConfig.one_step``: one linearisation, then one solve) with the Householder unit
@@ -225,7 +226,9 @@ def rows_in_banks(program, opts, tables: dict) -> dict[int, tuple[int, int, int]
     stack takes, level 0's first ``sets`` steps, set u the u-th (``qr_eliminate_all``'s order).
     Their rows are at the step's rows where ``qr_stack_rows`` would put them, so that stack
     only advances past them. Empty otherwise (LM's retries stack from AB again; the stream
-    unit's banks are not left zero)."""
+    unit's banks are not left zero). ``root`` (the root step in a wavefront inside lin_level,
+    :func:`lin_wave`): the root's own factors too, as set ``sets`` (the root's stream to unit
+    set 1, which stacks the root after its own step) at their rows in the root."""
     solver = program.solver
     if solver.linear != "qr" or not solver.one_step or opts.qr_unit != "householder":
         return {}
@@ -233,7 +236,11 @@ def rows_in_banks(program, opts, tables: dict) -> dict[int, tuple[int, int, int]
     lb = tables["LEVEL_BEGIN"]
     out = {}
     fb, cb = tables["STEP_FACTOR_BEGIN"], tables["FACTOR_COLMAP_BEGIN"]
-    for u, s in enumerate(tables["LEVEL_STEPS"][lb[0]:lb[1]][:sets]):
+    steps = list(tables["LEVEL_STEPS"][lb[0]:lb[1]][:sets])
+    wave = wave_steps(program, opts) if root else None
+    if wave is not None:
+        steps.append(wave[2])
+    for u, s in enumerate(steps):
         row = 0
         for e in range(fb[s], fb[s + 1]):
             fac = tables["STEP_FACTORS"][e]
@@ -328,6 +335,85 @@ def wave_steps(program, opts) -> tuple[int, int, int] | None:
     return c0, c1, root
 
 
+def lin_wave(program, opts) -> tuple[int, int, int] | None:
+    """The root step in a wavefront INSIDE lin_level (``PlanOptions.root_wave`` under the
+    one-step policy, where level 0's two unit sets reflect their steps beside the
+    linearisation, :func:`rows_in_banks`): :func:`wave_steps`' ``(c0, c1, root)`` when the
+    wave's children are level 0's two steps (the schedule's two levels), None when the design
+    runs the wave as the qr_level region (no lin_level) or has no wave. Unit set 0's process of
+    lin_level then reflects c0, its collector streaming c0's passed rows to set 1, and commits
+    c0; set 1's fills its banks with c1's rows, reflects c1, takes the root's own rows from
+    their stream (the datapaths send them as they write them), stacks c1's passed rows from its
+    UPDBUF, and reflects the root reading c0's passed rows as set 0 finishes them
+    (:func:`lin_wave_loops`), the root's conditional into CONDBUF1 after c1's (twice the
+    words)."""
+    wave = wave_steps(program, opts)
+    if wave is None or not rows_in_banks(program, opts, _tables_of(program)):
+        return None
+    if len(program.schedule.levels) != 2:
+        raise PlanError(f"root_wave under the one-step policy (the wave inside lin_level): the "
+                        f"root's children must be level 0's steps, the schedule has "
+                        f"{len(program.schedule.levels)} levels")
+    return wave
+
+
+def _tables_of(program) -> dict:
+    from fgc_backends.hls.plan.loops import _tables
+
+    return _tables(program)
+
+
+def lin_wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: bool,
+                   steps: tuple[int, int, int], loops: dict, start0: int, start1: int,
+                   root_fill: Loop, root_ready: int) -> tuple[Loop, ...]:
+    """Unit set 1's process of lin_level after its fill (:func:`lin_wave`), as it runs: step
+    c1's regions (``loops[c1]``; its result stays in the set's buffers, the root's conditional
+    goes after it), the root's own rows from their stream
+    (``root_fill``: a word a cycle, ending no earlier than its depth after ``root_ready``, the
+    region's cycle at which the datapath loop that sends their last words ends), the root's
+    stack of c1's passed rows (from the set's UPDBUF) and the damping rows, then the root's
+    regions, before each the
+    reads of c0's passed rows it needs (:func:`wave_entries`), a read ending no earlier than its
+    depth after set 0's region that wrote the row ends (set 0's clock ``loops[c0]`` from its
+    start ``start0``; set 1's from ``start1``, both cycles of the region). A wait is a loop
+    ``wave_wait`` of the cycles it holds, as fgc_cycles.h's FGC_WAVE_WAIT and FGC_WAVE_WAIT_ON
+    count them inside set 1's FGC_COLLAPSE span."""
+    c0, c1, root = steps
+    out = list(loops[c1])
+    clock = sum(lp.cycles for lp in out)
+    if root_fill.trip > 0:
+        end = max(clock + root_fill.cycles, root_ready - start1 + root_fill.depth)
+        if end > clock + root_fill.cycles:
+            out.append(Loop("wave_wait", 1, 1, end - clock - root_fill.cycles))
+        out.append(root_fill)
+        clock = end
+    stack = stack_loops(tables, root, units, max_w, damped, timing, in_place=True, fed=c0)
+    out += stack
+    clock += sum(lp.cycles for lp in stack)
+    ends, t = [], start0 - start1
+    for lp in loops[c0]:
+        t += lp.cycles
+        ends.append(t)
+    f0 = tables["STEP_F"][c0]
+    words = tables["STEP_W"][c0] - f0 + 1
+    entry = kernel_loop("wave_row", words, "move", timing)
+    when = wave_entries(tables, c0, root)
+    regions = list(loops[root])
+    nxt = 0
+    for idx, j in enumerate(range(-1, len(regions) - 2)):
+        while nxt < len(when) and when[nxt] <= j:
+            end = max(clock + entry.cycles, ends[f0 + 1 + nxt] + entry.depth)
+            if end > clock + entry.cycles:
+                out.append(Loop("wave_wait", 1, 1, end - clock - entry.cycles))
+            out.append(entry)
+            clock = end
+            nxt += 1
+        out.append(regions[idx])
+        clock += regions[idx].cycles
+    out.append(regions[-1])  # the pivot check
+    return tuple(out)
+
+
 def wave_entries(tables: dict, c0: int, root: int) -> list[int]:
     """Per passed row i of step ``c0`` (its new factor's, STEP_NF_ROWS[c0]) the root's region
     (reflection j = -1 ... k - 1) before which the root's set reads it into its banks: row i
@@ -354,6 +440,16 @@ def wave_entries(tables: dict, c0: int, root: int) -> list[int]:
         low = min(low, need[i])
         out[i] = max(-1, low)
     return out
+
+
+def _root_bank_words(tables: dict, root: int) -> int:
+    """The stream words of the root's own factor rows (PORTS values a word, each instance's
+    whole words: units/datapath.py's bank_fill_words), the depth of lin_level's bank_root: every
+    word, so the datapaths never wait for unit set 1 (it reads them after its own step)."""
+    a = tables["FACTOR_A_OFF"]
+    return sum(_ported(a[f + 1] - a[f]) for f in (
+        tables["STEP_FACTORS"][e] for e in range(tables["STEP_FACTOR_BEGIN"][root],
+                                                  tables["STEP_FACTOR_BEGIN"][root + 1])))
 
 
 def _own_rows(tables: dict, s: int) -> int:
@@ -486,6 +582,18 @@ def _levels(ctx, sets, by_index, damping) -> None:
     max_w = ctx.sizes["MAX_W"]
     banked = rows_in_banks(ctx.program, opts, tables)
     wave = wave_steps(ctx.program, opts)
+    if wave is not None and lin_wave(ctx.program, opts) is not None:
+        # the wave inside lin_level (the emitted kernel's one-step solve): the solve's levels
+        # as without it (the update model's qr_beside_linearize takes the region with the
+        # root inside), its two streams to unit set 1
+        c0, c1, root = wave
+        ctx.channels.append(Channel("qr_pass", "stream", tables["STEP_NF_ROWS"][c0] * (
+            tables["STEP_W"][c0] - tables["STEP_F"][c0] + 1), ops.word_bits,
+            "qr_set0", "qr_set1"))
+        root_words = _root_bank_words(tables, root)
+        ctx.channels.append(Channel("bank_root", "stream", root_words, 2 * ops.word_bits + 64,
+                                    "datapaths", "qr_set1"))
+        wave = None
     for li, level in enumerate(sched.levels):
         if wave is not None and li == len(sched.levels) - 1:
             break  # the root ran in the level before's region (wave_loops)
@@ -530,12 +638,15 @@ def _levels(ctx, sets, by_index, damping) -> None:
     # fgc_qr.h's banks are two memories each by row parity (WORK<s>'s cyclic partition);
     # fgc_qr_stream.h's one
     parities = 1 if opts.qr_unit == "stream" else 2
+    lin = lin_wave(ctx.program, opts) is not None
     for s in range(sets):  # accel.cpp.jinja's WORK<s>, CONDBUF<s>, UPDBUF<s>
         ctx.memories.append(Memory(f"qr{s}_work", opts.units * sizes["MAX_ROWS"] * local,
                                    ops.word_bits, parities * opts.units))
         # fgc_qr.h's evec: the Evaluate's copy of the vector by row, two memories by parity
         ctx.memories.append(Memory(f"qr{s}_evec", sizes["MAX_ROWS"], ops.word_bits, 2))
-        ctx.memories.append(Memory(f"qr{s}_condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
+        # (lin_level's wave: set 1's holds the root's conditional after its own step's)
+        ctx.memories.append(Memory(f"qr{s}_condbuf", (2 if lin and s == 1 else 1)
+                                   * sizes["MAX_F"] * cols, ops.word_bits, 1))
         ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)
 
