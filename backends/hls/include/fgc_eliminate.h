@@ -633,15 +633,16 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
 
 // A unit set's result for step s into COND and NF, PORTS words a cycle (`phase` false: counted
 // under the caller's phase, as qr_stack_rows; coff: its conditional's first word in cond, the
-// root's in lin_level's wave).
+// root's in lin_level's wave; nf false: the conditional alone, lin_level's wave's step c1 whose
+// passed rows its own set stacked into the root from its buffer, which no one reads from NF).
 template <class CFG>
 void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                const typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool phase = true,
-               int coff = 0) {
+               int coff = 0, bool nf = true) {
     if (phase) FGC_PHASE("qr_commit");
     const int w = STEP_W[s], f = STEP_F[s], sw = w - f;
     const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
-    const int nc = f * (w + 1), nu = STEP_NF_ROWS[s] * (sw + 1);
+    const int nc = f * (w + 1), nu = nf ? STEP_NF_ROWS[s] * (sw + 1) : 0;
     for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_COND
 #pragma HLS PIPELINE II=1

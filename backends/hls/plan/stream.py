@@ -498,7 +498,7 @@ class WindowUpdateModel:
         """Step c0's commit (set 0's, inside lin_level with the wave) and what the solve no
         longer runs once the sets reflected the root inside lin_level: the root's level (its
         region on this update's non-zero rows), its stack and step c0's commit (the plan's
-        loops of both, moved into the sets' processes)."""
+        loops of both, moved into the sets' processes), and step c1's passed rows into NF."""
         t = self.layout.template
         c0, c1, root = self._wave
         rows = self.plan.options.qr_rows
@@ -506,9 +506,12 @@ class WindowUpdateModel:
         top = f"qr_stack_level{len(t.schedule.levels) - 1}"
         stack = next(p for ph in self.plan.phases if ph.name == top
                      for p in ph.processes if p.name == f"stack{root}")
-        commit = next(p for ph in self.plan.phases if ph.name == "qr_commit_level0"
-                      for p in ph.processes if p.name == f"commit{c0}")
-        return commit.cycles, phase_cycles(last) + stack.cycles + commit.cycles
+        commits = {p.name: p for ph in self.plan.phases if ph.name == "qr_commit_level0"
+                   for p in ph.processes}
+        commit = commits[f"commit{c0}"].cycles
+        # (step c1's passed rows into NF: no one reads them, the root took them from UPDBUF1)
+        nf = sum(lp.cycles for lp in commits[f"commit{c1}"].loops if lp.name == "nf")
+        return commit, phase_cycles(last) + stack.cycles + commit + nf
 
     def _stream_phases(self, kt: dict, lt: dict, mv_ii: int) -> tuple[Phase, ...]:
         """The stream section's loops (accel.cpp.jinja's stream top), one phase per part an
