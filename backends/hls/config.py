@@ -114,8 +114,11 @@ class DesignOptions:
       (issue 33 item 2; docs/hls.md, "The root step in a wavefront"): the schedule's last two
       levels run as one region, the root on unit set 1 after that set's own child, each of the
       other child's passed rows streamed from set 0's collector and read into the root's banks
-      before the root's first reflection that needs it. ``False`` (default): level by level.
-      Refused (``PlanError``) on a schedule whose last level is not one root over two steps.
+      before the root's first reflection that needs it. Under the one-step policy (the on-chip
+      window's lin_level: level 0's sets beside the linearisation) that region is lin_level
+      itself, the root's own rows streamed to set 1 by the datapaths (units/qr.py's
+      ``lin_wave``). ``False`` (default): level by level. Refused (``PlanError``) on a
+      schedule whose last level is not one root over two steps.
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
