@@ -158,6 +158,22 @@ def test_a_schedule_without_a_root_over_two_steps_is_refused():
         build_plan(two, PlanOptions.of(two, root_wave=True, unit_sets=1))
 
 
+def test_without_lin_level_the_wave_is_its_own_region():
+    # not the one-step policy (no lin_level): the last two levels one qr_level region with
+    # `wave`, the root's level gone from the plan; no bank_root (the root stacks from AB)
+    two = compile_graph(example("lio").build(N=6), name="lio")
+    assert not two.solver.one_step and len(two.schedule.levels[-2]) == 2
+    plain = build_plan(two, PlanOptions.of(two))
+    wave = build_plan(two, PlanOptions.of(two, root_wave=True))
+    last = len(two.schedule.levels) - 1
+    names = {ph.name for ph in wave.phases}
+    assert f"qr_level{last}" in {ph.name for ph in plain.phases}
+    assert f"qr_level{last}" not in names and f"qr_level{last - 1}" in names
+    channels = {c.name: c for c in wave.channels}
+    assert "bank_root" not in channels
+    assert (channels["qr_pass"].producer, channels["qr_pass"].consumer) == ("qr_set0", "qr_set1")
+
+
 @pytest.mark.heavy
 def test_the_counted_csim_equals_the_model_on_every_update(wave7):
     sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
