@@ -157,8 +157,8 @@ def lin_level_cycles(program, timing: dict, jac: list[Process],
 def lin_wave_region(program, timing: dict, jac: list[Process],
                     sets: list[tuple[str, Loop, int]], wave) -> int:
     """:func:`lin_level_cycles` with the root step in a wavefront inside the region
-    (units/qr.py's ``lin_wave``; ``sets``' set 0 with its commit, :func:`lin_wave_set0`; its
-    ready times are its QR step's region ends): set 1's step is its whole process after its fill
+    (units/qr.py's ``lin_wave``; ``sets``' set 0 its QR step and then its commit, which set 0
+    runs while set 1 reflects the root; its rows are final at its QR step's region ends): set 1's step is its whole process after its fill
     (``wave(start0, start1, ready)``: units/qr.py's ``lin_wave_loops`` from set 0's and set 1's
     starts, the cycles of the region at which their fills end, and the end of each datapath
     loop, ``ready``), the rest as lin_level_cycles."""
@@ -166,12 +166,6 @@ def lin_wave_region(program, timing: dict, jac: list[Process],
     starts = [max(fill.cycles, c["e_ends"][w] + fill.depth) for w, fill, _ in sets]
     span = sum(lp.cycles for lp in wave(starts[0], starts[1], c["e_ends"]))
     return lin_level_cycles(program, timing, jac, [sets[0], (sets[1][0], sets[1][1], span)])
-
-
-def lin_wave_set0(step: int, commit: int) -> int:
-    """Unit set 0's step in lin_level with the root in a wavefront: its QR step, then its
-    commit (COND, NF) while set 1 reflects the root."""
-    return step + commit
 
 
 def datapath_loop_names(program) -> list[str]:
