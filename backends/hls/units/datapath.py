@@ -158,10 +158,10 @@ def lin_wave_region(program, timing: dict, jac: list[Process],
                     sets: list[tuple[str, Loop, int]], wave) -> int:
     """:func:`lin_level_cycles` with the root step in a wavefront inside the region
     (units/qr.py's ``lin_wave``; ``sets``' set 0 its QR step and then its commit, which set 0
-    runs while set 1 reflects the root; its rows are final at its QR step's region ends): set 1's step is its whole process after its fill
-    (``wave(start0, start1, ready)``: units/qr.py's ``lin_wave_loops`` from set 0's and set 1's
-    starts, the cycles of the region at which their fills end, and the end of each datapath
-    loop, ``ready``), the rest as lin_level_cycles."""
+    runs while set 1 reflects the root; its rows are final at its QR step's region ends): set
+    1's step is its whole process after its fill (``wave(start0, start1, ready)``: units/qr.py's
+    ``lin_wave_loops`` from set 0's and set 1's starts, the cycles of the region at which their
+    fills end, and the end of each datapath loop, ``ready``), the rest as lin_level_cycles."""
     c = _linearize_clocks(program, timing, jac, None)
     starts = [max(fill.cycles, c["e_ends"][w] + fill.depth) for w, fill, _ in sets]
     span = sum(lp.cycles for lp in wave(starts[0], starts[1], c["e_ends"]))
