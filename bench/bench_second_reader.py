@@ -181,10 +181,11 @@ def main(argv=None) -> int:
     parser.add_argument("--lm", action="store_true",
                         help="the stream's solver LM to convergence (its batch kernel) instead "
                              "of paper A's one-step policy (batch steps as sweeps)")
-    parser.add_argument("--stream-design", metavar="N_U,SETS[,ADD,MUL,DIV[,ROWS]]",
+    parser.add_argument("--stream-design", metavar="N_U,SETS[,ADD,MUL,DIV[,ROWS]][,wave]",
                         action="append", default=[], help="one more stream design (repeatable): "
                         "n_u, unit sets, the factor datapaths' ALLOCATION limits and the QR "
-                        "Update units' rows a cycle (e.g. 8,1,2,3,1 or 4,2,2,3,1,2)")
+                        "Update units' rows a cycle (e.g. 8,1,2,3,1 or 4,2,2,3,1,2), 'wave' last "
+                        "for the root step in a wavefront (root_wave)")
     parser.add_argument("--bind", type=_bind_arg, default=(), metavar="KIND=IMPL,…",
                         help="every design's operator binding (HlsConfig.bind; run_hls.tcl's "
                         "config_op, which the reader reads back), e.g. add=fabric,mul=meddsp")
@@ -217,16 +218,20 @@ def main(argv=None) -> int:
             streams = [("default design", stream),
                        ("smallest searched (n_u 1, one unit set, ALLOCATION 1/1/1)", smallest)]
             for i, spec in enumerate(args.stream_design):
-                v = [int(x) for x in spec.split(",")]
+                fields = spec.split(",")
+                wave = fields[-1] == "wave"  # HlsConfig root_wave (the root in a wavefront)
+                v = [int(x) for x in fields[:-1 if wave else None]]
                 alloc = tuple(zip(("add", "mul", "div"), v[2:5], strict=True)) if len(v) > 2 \
                     else None
                 qr_rows = v[5] if len(v) > 5 else 1
                 label = (f"n_u {v[0]}, {v[1]} unit set(s), ALLOCATION "
                          + ("/".join(map(str, v[2:5])) if alloc else "default")
-                         + (f", {qr_rows} rows a cycle" if qr_rows > 1 else ""))
+                         + (f", {qr_rows} rows a cycle" if qr_rows > 1 else "")
+                         + (", root wave" if wave else ""))
                 streams.append((label, measure_stream(
                     lio_n, Path(tmp) / f"design{i}", HlsConfig(unit_sets=v[1], allocation=alloc,
-                                                              qr_rows=qr_rows, bind=bind),
+                                                              qr_rows=qr_rows, bind=bind,
+                                                              root_wave=wave),
                     v[0], solver=solver)))
         lio = example("lio")
         for n_u in units:

@@ -29,7 +29,8 @@ from fgc.app.specs import example
 from fgc.app.streaming import compile_stream, keyframe_result, one_step_solver
 from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
-from fgc_backends.hls.config import HlsConfig
+from fgc_backends.cost.operators import normalise_bind
+from fgc_backends.hls.config import DesignOptions, HlsConfig
 from fgc_backends.hls.plan.stream import WindowUpdateModel
 from fgc_backends.hls.streaming import OnChipFixedLagStream, OnChipIncrementalStream
 from fgc_backends.native.streaming import FixedLagStream, IncrementalStream
@@ -67,7 +68,8 @@ def counted(stream: OnChipFixedLagStream, estimates_at_end: bool = False
 
 def measure(keyframes: int, window: int, scalar: str, incremental: int | None = None,
             batch_every=None, one_step: bool = False, qr_rows: int = 1,
-            units: int | None = None):
+            units: int | None = None, design=None):
+    """``design``: a DesignOptions (root_wave, allocation, bind; its qr_rows is ``qr_rows``)."""
     graph = example("lio").build(N=keyframes)
     # one_step: ISAM2's policy, one Gauss-Newton step an update (fgc.app.streaming.one_step)
     solver = one_step_solver() if one_step else None
@@ -80,14 +82,17 @@ def measure(keyframes: int, window: int, scalar: str, incremental: int | None = 
             program = compile_stream(graph, solver, incremental=incremental,
                                      batch_every=batch_every, name="lio_stream")
             stream = OnChipIncrementalStream(graph, program, scalar, out_dir=out,
-                                             qr_rows=qr_rows)
+                                             qr_rows=qr_rows, design=design)
         else:
             program = compile_stream(graph, solver, window=window, name="lio_stream")
             stream = OnChipFixedLagStream(graph, program, window, scalar, out_dir=out,
-                                          qr_rows=qr_rows)
+                                          qr_rows=qr_rows, design=design)
         data = problem_data(graph, program)
         result = stream.run(data)
-        model = WindowUpdateModel(stream.layout, HlsConfig(scalar=scalar, qr_rows=qr_rows))
+        model = WindowUpdateModel(stream.layout, HlsConfig(scalar=scalar, qr_rows=qr_rows)
+                                  if design is None else HlsConfig(
+                                      scalar=scalar, design=dataclasses.replace(
+                                          design, qr_rows=qr_rows)))
     rows = []
     for record, (cycles, events) in zip(result.updates, counted(stream), strict=True):
         ev = dict(events)
@@ -124,15 +129,31 @@ def main() -> None:
     ap.add_argument("--qr-rows", type=int, choices=(1, 2), default=1,
                     help="the QR Update units' rows a cycle (HlsConfig qr_rows; default 1)")
     ap.add_argument("--units", type=int, help="n_u Update units (default: the Program's)")
+    ap.add_argument("--root-wave", action="store_true",
+                    help="the design with the root step in a wavefront behind its children "
+                         "(HlsConfig root_wave; two unit sets)")
+    ap.add_argument("--allocation", help="factor datapaths' ALLOCATION, e.g. add=2,mul=3,div=1 "
+                    "('default': the defaults)")
+    ap.add_argument("--bind", help="the operators' binding, e.g. add=fabric (HlsConfig.bind)")
     args = ap.parse_args()
+    design = None
+    if args.root_wave or args.allocation or args.bind:
+        alloc = tuple((k, int(v)) for k, v in (item.split("=") for item in
+                                                args.allocation.split(","))) \
+            if args.allocation and args.allocation != "default" else None
+        bind = normalise_bind(tuple(tuple(item.split("=")) for item in args.bind.split(","))) \
+            if args.bind else ()
+        design = DesignOptions(root_wave=args.root_wave, allocation=alloc, bind=bind)
     graph, program, data, result, rows, stream = measure(args.keyframes, args.window, args.scalar,
                                                     args.incremental, args.batch_every,
-                                                    args.one_step, args.qr_rows, args.units)
+                                                    args.one_step, args.qr_rows, args.units,
+                                                    design)
     mode = (f"incremental K = {args.incremental}" + (
         f", batch at {','.join(map(str, args.batch_every))}" if args.batch_every else "")
         if args.incremental else f"fixed-lag W = {args.window}")
     policy = ", one Gauss-Newton step an update" if args.one_step else ""
     rows_note = f", QR Update units {args.qr_rows} rows a cycle" if args.qr_rows > 1 else ""
+    rows_note += ", the root in a wavefront" if args.root_wave else ""
     print(f"LIO N = {args.keyframes}, {mode}, {args.scalar} design{policy}{rows_note} "
           f"(on chip, model estimates at {rows[0][2].clock_mhz:g} MHz)")
     print(f"{'keyframe':>8} {'mode':>11} {'iters':>5} {'csim cycles':>12} {'model cycles':>12} "

@@ -10,6 +10,7 @@ printed, then the median and p99 per update.
     python bench/bench_update_terms.py --qr-rows 2        # the Update units two rows a cycle
     python bench/bench_update_terms.py --units 8 --allocation default --bind add=fabric
                                         # adders bound to fabric (run_hls.tcl's config_op)
+    python bench/bench_update_terms.py --root-wave          # the root step in a wavefront
 """
 from __future__ import annotations
 
@@ -51,6 +52,9 @@ def main(argv=None) -> None:
     ap.add_argument("--bind", default="default",
                     help="the operators' binding, e.g. add=fabric,mul=meddsp (HlsConfig.bind; "
                     "default: Vitis's, fulldsp adders and maxdsp multipliers)")
+    ap.add_argument("--root-wave", action="store_true",
+                    help="the root step in a wavefront behind its children (HlsConfig "
+                         "root_wave; two unit sets)")
     ap.add_argument("--keyframes", default="5,14,25", help="keyframes whose terms are printed")
     ap.add_argument("--top", type=int, default=25, help="terms printed per keyframe")
     ap.add_argument("--qr-rows", type=int, choices=(1, 2), default=1,
@@ -67,9 +71,10 @@ def main(argv=None) -> None:
     streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
     pricer = streaming.WindowPricer(sp, config=HlsConfig(
         scalar="float", unit_sets=args.sets, allocation=_allocation(args.allocation),
-        qr_rows=args.qr_rows, bind=parse_bind(args.bind)))
+        qr_rows=args.qr_rows, bind=parse_bind(args.bind), root_wave=args.root_wave))
     res = pricer.model.resources()
-    print(f"n_u {args.units}, {args.sets} unit set(s), {args.qr_rows} row(s) a cycle, "
+    wave = ", the root in a wavefront" if args.root_wave else ""
+    print(f"n_u {args.units}, {args.sets} unit set(s), {args.qr_rows} row(s) a cycle{wave}, "
           f"ALLOCATION {args.allocation}, operators bound {bind_label(parse_bind(args.bind))}: "
           f"{res['dsp']:,} DSP / {res['bram36']:g} BRAM36 / {res['lut']:,} LUT / "
           f"{res['ff']:,} FF by the plan (model estimates): "

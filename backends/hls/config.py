@@ -110,6 +110,15 @@ class DesignOptions:
       DSP / LUT / FF the bound implementation's. Kept canonical (the default implementations
       dropped, sorted): ``()`` (default) is Vitis's default binding and emits no config_op.
       ``fgc compile --bind add=fabric,mul=meddsp``; docs/hls.md, "Operator binding".
+    - ``root_wave``: QR, two unit sets: the root step in a wavefront behind its two children
+      (issue 33 item 2; docs/hls.md, "The root step in a wavefront"): the schedule's last two
+      levels run as one region, the root on unit set 1 after that set's own child, each of the
+      other child's passed rows streamed from set 0's collector and read into the root's banks
+      before the root's first reflection that needs it. Under the one-step policy (the on-chip
+      window's lin_level: level 0's sets beside the linearisation) that region is lin_level
+      itself, the root's own rows streamed to set 1 by the datapaths (units/qr.py's
+      ``lin_wave``). ``False`` (default): level by level. Refused (``PlanError``) on a
+      schedule whose last level is not one root over two steps.
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
@@ -126,6 +135,7 @@ class DesignOptions:
     hgc_third_lane: bool = False
     qr_rows: int = 1
     bind: tuple[tuple[str, str], ...] = ()
+    root_wave: bool = False
 
     def __post_init__(self):
         try:  # canonical, so equal designs compare (and hash, and cache) equal
@@ -160,6 +170,8 @@ class DesignOptions:
         if self.cascade_lanes not in CASCADE_LANES or isinstance(self.cascade_lanes, bool):
             raise HlsConfigError(f"cascade_lanes must be one of {CASCADE_LANES} (the words a "
                                  f"cycle through a Cholesky cascade), got {self.cascade_lanes!r}")
+        if not isinstance(self.root_wave, bool):
+            raise HlsConfigError(f"root_wave must be True or False, got {self.root_wave!r}")
         if not isinstance(self.hgc_third_lane, bool):
             raise HlsConfigError(f"hgc_third_lane must be True or False, got "
                                  f"{self.hgc_third_lane!r}")
@@ -218,7 +230,8 @@ class DesignOptions:
                     bind=self.bind,
                     precision=precision, les_precision=les_precision,
                     hgc_beside=bool(self.hgc_beside), cascade_lanes=int(self.cascade_lanes),
-                    hgc_third_lane=bool(self.hgc_third_lane), qr_rows=int(self.qr_rows))
+                    hgc_third_lane=bool(self.hgc_third_lane), qr_rows=int(self.qr_rows),
+                    root_wave=bool(self.root_wave))
         if self.allocation:  # the design's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(self.allocation)}.items())
@@ -313,14 +326,16 @@ class HlsConfig(scalars.ScalarTypes):
     hgc_third_lane: InitVar[bool | None] = None
     qr_rows: InitVar[int | None] = None
     bind: InitVar[tuple[tuple[str, str], ...] | None] = None
+    root_wave: InitVar[bool | None] = None
 
     def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside,
-                      backsub_lanes, cascade_lanes, hgc_third_lane, qr_rows, bind) -> None:
+                      backsub_lanes, cascade_lanes, hgc_third_lane, qr_rows, bind,
+                      root_wave) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
         old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside, backsub_lanes,
-               cascade_lanes, hgc_third_lane, qr_rows, bind)
+               cascade_lanes, hgc_third_lane, qr_rows, bind, root_wave)
         given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
                  if value is not None}
         if given:

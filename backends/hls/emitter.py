@@ -101,8 +101,15 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     context["leaf_lin"] = bool(context["stream"] and context["stream"]["marginal"])
     # the on-chip window's one-step solve: level 0's unit sets reflect their steps inside the
     # linearisation's region (lin_level), as the datapaths fill their banks
+    # (with the root step in a wavefront, units/qr.py's lin_wave: the root too, on unit set 1
+    # after its own step; a design without lin_level runs the wave as qr_level with `wave`)
     context["lin_qr"] = bool(context["leaf_lin"] and context.get("banks")
                              and context["stream"]["role"] == "window")
+    wave = context.get("wave")
+    if wave and wave["lin"] != context["lin_qr"]:
+        raise HlsConfigError("root_wave under the one-step policy runs the root inside "
+                             "lin_level, the on-chip window's one-step design (an incremental "
+                             "or fixed-lag window with its marginal); this design has none")
     # the leaving keyframe's tau and kept conditional beside the update's back-substitution
     # (the one-step policy, the slot design; fgc_stream.h's spec_marginal_task)
     context["spec"] = bool(context["stream"] and context["stream"]["spec"]
@@ -458,11 +465,12 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     # column; per set the step they make up
     from fgc_backends.hls.units.qr import rows_in_banks
     tables = _tables(program)
-    in_banks = rows_in_banks(program, plan.options, tables)
+    in_banks = rows_in_banks(program, plan.options, tables, root=True)
     banks = None
     if in_banks:
         n = len(program.factors)
-        steps = sorted({(u, s) for u, s, _ in in_banks.values()})
+        # (the root's own factors, the root step in a wavefront: set `sets`, its own stream)
+        steps = sorted({(u, s) for u, s, _ in in_banks.values() if u < unit_sets(plan)})
         banks = {"set": [in_banks[f][0] if f in in_banks else -1 for f in range(n)],
                  "row": [in_banks[f][2] if f in in_banks else 0 for f in range(n)],
                  "w": [tables["STEP_W"][in_banks[f][1]] if f in in_banks else 0
@@ -510,7 +518,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
             # the copies into X (units/lm_control.py's retire_step_test)
             "retire_test": retire_step_test(program, plan.options),
-            "small": shared, "banks": banks,
+            "small": shared, "banks": banks, "wave": _wave_context(program, plan),
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             "qr_rows": plan.options.qr_rows,  # fgc_qr.h's FGC_QR_TWO_ROWS (2)
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
@@ -527,6 +535,50 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                                 for p in ph.processes),
             "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
+
+
+def _wave_context(program: Program, plan) -> dict | None:
+    """The root step in a wavefront's constants (``HlsConfig.root_wave``, units/qr.py's
+    ``wave_steps``), None without it: the root, the fed child c0 (unit set 0's step), its
+    passed rows' place in the root's rows, their words, each row's region
+    (``wave_entries``) and each word's column in the root, and the stream's depth (every
+    passed row: unit set 1 reads them behind set 0)."""
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.qr import (
+        _own_rows,
+        lin_wave,
+        rows_in_banks,
+        wave_entries,
+        wave_steps,
+    )
+
+    steps = wave_steps(program, plan.options)
+    if steps is None:
+        return None
+    c0, c1, root = steps
+    tables = _tables(program)
+    lin = lin_wave(program, plan.options) is not None
+    root_fill = root_wait = None
+    if lin:  # the root's own rows by their stream (set 1 reads them after its own step)
+        from fgc_backends.hls.units.datapath import bank_fill_words, bank_ready_loops
+
+        in_banks = rows_in_banks(program, plan.options, tables, root=True)
+        root_fill = bank_fill_words(program, tables, in_banks, 3)[2]
+        root_wait = bank_ready_loops(program, in_banks, 3)[2]
+    first = {}  # per child of the root, its passed rows' first row in the root
+    row = _own_rows(tables, root)
+    for e in range(tables["STEP_CHILD_BEGIN"][root], tables["STEP_CHILD_BEGIN"][root + 1]):
+        first[tables["STEP_CHILDREN"][e]] = row
+        row += tables["STEP_NF_ROWS"][tables["STEP_CHILDREN"][e]]
+    row0 = first[c0]
+    sc = tables["STEP_W"][c0] - tables["STEP_F"][c0]
+    mb = tables["STEP_SEPMAP_BEGIN"][c0]
+    nf = tables["STEP_NF_ROWS"][c0]
+    return {"c0": c0, "c1": c1, "root": root, "row0": row0, "nfed": nf, "words": sc + 1,
+            "entry": wave_entries(tables, c0, root),
+            "colmap": [tables["STEP_SEPMAP"][mb + q] for q in range(sc)]
+            + [tables["STEP_W"][root]], "depth": nf * (sc + 1), "lin": lin,
+            "root_fill": root_fill, "root_wait": root_wait, "row1": first[c1]}
 
 
 def _beside_context(program: Program, plan, blocks) -> dict | None:

@@ -122,8 +122,8 @@ def template_data(t, x: np.ndarray, d: np.ndarray, factor_words=None) -> Problem
     return ProblemData(tuple(variables), tuple(factors), t.structure_fingerprint)
 
 
-def _working_copy(owner, scalar: str, out_dir, name: str, stream=None, qr_rows: int = 1
-                  ) -> None:
+def _working_copy(owner, scalar: str, out_dir, name: str, stream=None, qr_rows: int = 1,
+                  design=None) -> None:
     """``owner.project``: a copy, in ``out_dir`` (a private temporary folder if None, removed
     with ``owner``), of ``owner.template``'s project from the cache (:func:`_cached_project`,
     with ``stream``'s on-chip design), its mtimes too: a built one stays built; ``owner._cached``
@@ -135,8 +135,10 @@ def _working_copy(owner, scalar: str, out_dir, name: str, stream=None, qr_rows: 
         out_dir = tmp
     # one back-substitution lane, as the stream's update models price it (the host-kept path's
     # batch template too, not the batch default's columns)
-    config = HlsConfig(scalar=scalar, backsub_lanes=1,
-                       **({"qr_rows": qr_rows} if qr_rows != 1 else {}))
+    # (``design``: the design's options, e.g. HlsConfig.root_wave; its back-substitution one lane)
+    rows = {"qr_rows": qr_rows} if qr_rows != 1 else {}
+    config = HlsConfig(scalar=scalar, backsub_lanes=1, **rows) if design is None else HlsConfig(
+        scalar=scalar, design=dataclasses.replace(design, backsub_lanes=1, **rows))
     owner._cached = _cached_project(owner.template, config, stream)
     work = Path(out_dir) / name
     shutil.rmtree(work, ignore_errors=True)
@@ -291,13 +293,13 @@ class OnChipFixedLagStream:
     mode = "fixed-lag"
 
     def __init__(self, graph, program, window: int, scalar: str = "double", out_dir=None,
-                 layout=None, qr_rows: int = 1):
+                 layout=None, qr_rows: int = 1, design=None):
         self.layout = layout or WindowLayout(graph, program, window, kept=self.kept)
         self.program, self.window, self.scalar = program, window, scalar
         self.template = self.layout.template
         _working_copy(self, scalar, out_dir,
                       f"window{window}_onchip{'_kept' if self.kept else ''}", self.layout,
-                      qr_rows)
+                      qr_rows, design)
 
     def run(self, data: ProblemData, progress=None, estimates_at_end: bool = False):
         """Stream ``data``'s keyframes through the C simulation; a
@@ -376,9 +378,9 @@ class OnChipIncrementalStream(OnChipFixedLagStream):
     mode = "incremental"
 
     def __init__(self, graph, program, scalar: str = "double", out_dir=None, sweep=None,
-                 qr_rows: int = 1):
+                 qr_rows: int = 1, design=None):
         super().__init__(graph, program, program.schedule.incremental.window - 1, scalar,
-                         out_dir, incremental_layout(graph, program, sweep), qr_rows)
+                         out_dir, incremental_layout(graph, program, sweep), qr_rows, design)
 
 
 def incremental_layout(graph, program, sweep: bool | None = None):

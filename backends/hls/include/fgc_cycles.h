@@ -53,6 +53,16 @@
 // replaced by one record (trip 1, depth the span) of the enclosing region, which stays current,
 // so the region's rule (its fills, its waits) applies to the process as a whole.
 //
+// The root step in a wavefront (FGC_WAVE_READY(i) in the fed child's branch after the region
+// that finished its passed row i, FGC_WAVE_WAIT(i) in the root's branch before the loop that
+// reads it): that loop ends no earlier than its depth after the child's branch reached the mark
+// (branch_total; units/qr.py's wave_loops). Inside lin_level (the unit sets' FGC_COLLAPSE
+// spans): set 0's span marks READY(i), which its FGC_COLLAPSE_END turns into the region's cycle
+// at which row i is final (its start there plus its records up to the mark); set 1's span
+// prices its reads against those cycles and FGC_WAVE_WAIT_ON(process, instance, loop)'s (the end
+// of that loop of the region: the datapaths' that send the root's own rows), from its own start
+// (wave_span; units/qr.py's lin_wave_loops).
+//
 // The HGC beside the elimination (FGC_BESIDE_PRODUCER, FGC_BESIDE_CONSUMER, FGC_BESIDE_END:
 // accel.cpp.jinja's linearize_solve, a producer writing a Gram stream beside the elimination
 // that reads it) takes the later of the producer's end (its records as span_total prices them,
@@ -98,6 +108,14 @@ struct Collapse {
     std::string region_name;
 };
 
+// The root step in a wavefront inside lin_level (FGC_COLLAPSE spans of its unit sets): the
+// cycle of the region at which set 0's passed row i is final (wave_at[i], from its span's
+// FGC_WAVE_READY marks) and the cycles FGC_WAVE_WAIT_ON found (wave_ext, keyed -1 - index).
+struct WaveTimes {
+    std::map<long, long> at;
+    std::vector<long> ext;
+};
+
 struct State {
     std::vector<Record> records;
     // parallel groups (FGC_BRANCH / FGC_JOIN): (record index, 'b' a branch starts, 'j' the
@@ -117,6 +135,7 @@ struct State {
     // keyed outer marks (FGC_OUTER_SEND_STEP / FGC_OUTER_RECEIVE_STEP): mark index -> step
     std::map<std::size_t, long> keys;
     std::vector<Collapse> collapsing;  // the open FGC_COLLAPSE_BEGIN spans
+    WaveTimes wave;
 };
 
 inline State& state() {
@@ -190,11 +209,99 @@ inline void collapse_begin() {
                                     s.gates.size(), s.ready.size(), s.current, s.current_name});
 }
 
+inline bool ends_with(const std::string& text, const std::string& tail);  // below
+inline std::vector<long> record_ends(std::size_t from, std::size_t to);  // below: the clocks
+
+// The first record of the region entry whose records end just before `at` (the enclosing
+// region of a collapse span), and per record of [that, at) its end (record_ends).
+inline std::size_t region_begin(std::size_t at, long region) {
+    const std::vector<Record>& r = state().records;
+    std::size_t b = at;
+    while (b > 0 && r[b - 1].region == region) --b;
+    return b;
+}
+
+// Where (process, instance)'s clock stands in the enclosing region when the span opened (its
+// records there, record_ends: a set's fill and its wait on the datapath loop).
+inline long collapse_start(const Collapse& c, const char* process, int instance) {
+    if (c.region < 0) return 0;
+    const std::size_t b = region_begin(c.records, c.region);
+    const std::vector<long> ends = record_ends(b, c.records);
+    long start = 0;
+    for (std::size_t q = b; q < c.records; ++q)
+        if (state().records[q].process == process && state().records[q].instance == instance)
+            start = ends[q - b];
+    return start;
+}
+
+// A collapse span's cycles with the wave's reads (FGC_WAVE_WAIT(i) / FGC_WAVE_WAIT_ON marks
+// inside it): total_range's sum, except that the loop after each mark ends no earlier than its
+// depth after the region's cycle the mark names (set 0's row i final, wave.at; a datapath loop's
+// end, wave.ext), counted from the span's start `start` (units/qr.py's lin_wave_loops).
+inline long wave_span(const Collapse& c, std::size_t to, long start) {
+    const State& s = state();
+    const std::vector<Record>& r = s.records;
+    long clock = 0;
+    std::size_t at = c.records;
+    for (std::size_t mi = c.marks; mi < s.marks.size(); ++mi) {
+        const std::pair<std::size_t, char>& m = s.marks[mi];
+        if (m.second != 'v' || m.first < at || m.first >= to) continue;
+        std::size_t q = m.first;
+        while (q < to && r[q].trip <= 0) ++q;  // the read's loop
+        if (q >= to) continue;
+        clock += total_range(at, q);
+        const long key = s.keys.count(mi) ? s.keys.at(mi) : 0;
+        long abs = 0;
+        if (key >= 0) {
+            const auto w = s.wave.at.find(key);
+            abs = w != s.wave.at.end() ? w->second : 0;
+        } else if (std::size_t(-1 - key) < s.wave.ext.size()) {
+            abs = s.wave.ext[std::size_t(-1 - key)];
+        }
+        const long ready = abs - start + r[q].depth;
+        clock += r[q].cycles();
+        if (ready > clock) clock = ready;
+        at = q + 1;
+    }
+    return clock + total_range(at, to);
+}
+
+// FGC_WAVE_WAIT_ON(process, instance, loop) inside a collapse span: the next loop that runs reads
+// the stream that loop of the enclosing region's process writes (the datapaths' bank_root), so
+// it ends no earlier than its depth after that loop's end there.
+inline void wave_wait_on(const char* process, int instance, const char* loop) {
+    State& s = state();
+    long abs = 0;
+    if (!s.collapsing.empty() && s.collapsing.back().region >= 0) {
+        const Collapse& c = s.collapsing.back();
+        const std::size_t b = region_begin(c.records, c.region);
+        const std::vector<long> ends = record_ends(b, c.records);
+        for (std::size_t q = b; q < c.records; ++q) {
+            const Record& x = s.records[q];
+            if (x.process == process && x.instance == instance && ends_with(x.loop, loop) &&
+                x.trip > 0) {
+                abs = ends[q - b];
+                break;
+            }
+        }
+    }
+    s.wave.ext.push_back(abs);
+    keyed_mark('v', -long(s.wave.ext.size()));
+}
+
 inline void collapse_end(const char* process, int instance, const char* loop) {
     State& s = state();
     const Collapse c = collapsing().back();
     collapsing().pop_back();
-    const long span = total_range(c.records, s.records.size());
+    bool waits = false;
+    for (std::size_t mi = c.marks; mi < s.marks.size(); ++mi) waits = waits || s.marks[mi].second == 'v';
+    const long start = collapse_start(c, process, instance);
+    const long span = waits ? wave_span(c, s.records.size(), start)
+                            : total_range(c.records, s.records.size());
+    // set 0's passed rows: the region's cycle at which each is final (the wave's reads wait)
+    for (std::size_t mi = c.marks; mi < s.marks.size(); ++mi)
+        if (s.marks[mi].second == 'w' && s.keys.count(mi))
+            s.wave.at[s.keys.at(mi)] = start + total_range(c.records, s.marks[mi].first);
     s.records.resize(c.records);
     s.marks.resize(c.marks);
     for (auto k = s.keys.begin(); k != s.keys.end();) {
@@ -276,6 +383,53 @@ inline long total_range(std::size_t from, std::size_t to) {
     return sum;
 }
 
+// The root step in a wavefront (fgc_qr.h's qr_step_io): the fed child's branch marks
+// FGC_WAVE_READY(i) when its region that wrote passed row i returns; the root's branch marks
+// FGC_WAVE_WAIT(i) before the loop that reads that row. wave_ready: cycles from the fed child's
+// FGC_BRANCH to its latest READY(key) before record `before` (its records as total_range prices
+// them); 0 if there is none.
+inline long wave_ready(long key, std::size_t before) {
+    const State& s = state();
+    std::size_t at = 0;
+    bool found = false;
+    for (std::size_t mi = 0; mi < s.marks.size(); ++mi) {
+        const std::pair<std::size_t, char>& m = s.marks[mi];
+        if (m.second == 'w' && m.first <= before && s.keys.count(mi) && s.keys.at(mi) == key) {
+            at = m.first;
+            found = true;
+        }
+    }
+    if (!found) return 0;
+    std::size_t b = 0;
+    for (const auto& m : s.marks)
+        if (m.second == 'b' && m.first <= at) b = m.first;
+    return total_range(b, at);
+}
+
+// One branch of a parallel group, records [from, to): total_range's sum, except that the loop
+// after each FGC_WAVE_WAIT(i) ends no earlier than its depth after wave_ready(i) (a stream read
+// of the row, as units/qr.py's wave_loops prices it).
+inline long branch_total(std::size_t from, std::size_t to) {
+    const State& s = state();
+    const std::vector<Record>& r = s.records;
+    long clock = 0;
+    std::size_t at = from;
+    for (std::size_t mi = 0; mi < s.marks.size(); ++mi) {
+        const std::pair<std::size_t, char>& m = s.marks[mi];
+        if (m.second != 'v' || m.first < at || m.first >= to) continue;
+        std::size_t q = m.first;
+        while (q < to && r[q].trip <= 0) ++q;  // the read's loop
+        if (q >= to) continue;
+        clock += total_range(at, q);
+        const long ready = wave_ready(s.keys.count(mi) ? s.keys.at(mi) : -1, m.first) +
+                           r[q].depth;
+        clock += r[q].cycles();
+        if (ready > clock) clock = ready;
+        at = q + 1;
+    }
+    return clock + total_range(at, to);
+}
+
 // Records [from, to) of the log: sequential stretches add up; a parallel group (branches marked
 // by FGC_BRANCH up to FGC_JOIN, e.g. the unit sets of one QR level) takes its slowest branch
 // plus the fill (first loop's depth) of each other branch, as plan_cost prices a dataflow phase.
@@ -287,7 +441,7 @@ inline long span_total(std::size_t from, std::size_t to) {
     std::size_t at = from, start = from;
     bool open = false;
     auto close_branch = [&](std::size_t end) {
-        const long c = total_range(start, end);
+        const long c = branch_total(start, end);
         long f = 0;
         for (std::size_t q = start; q < end; ++q) {
             if (r[q].trip > 0) {
@@ -641,6 +795,9 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_ABSORB_AT(i) ::fgc_cycles::keyed_mark('A', i)
 #define FGC_OUTER_SEND_STEP(step) ::fgc_cycles::keyed_mark('S', step)
 #define FGC_OUTER_RECEIVE_STEP(step) ::fgc_cycles::keyed_mark('R', step)
+#define FGC_WAVE_READY(i) ::fgc_cycles::keyed_mark('w', i)
+#define FGC_WAVE_WAIT(i) ::fgc_cycles::keyed_mark('v', i)
+#define FGC_WAVE_WAIT_ON(process, instance, loop) ::fgc_cycles::wave_wait_on(process, instance, loop)
 #define FGC_PHASE(name) ::fgc_cycles::phase(name)
 #define FGC_EVENT(name) ::fgc_cycles::event(name)
 #define FGC_BESIDE_PRODUCER() ::fgc_cycles::beside('P')
@@ -664,6 +821,9 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_DRAINED(streams, n) ((void)0)
 #define FGC_COLLAPSE_BEGIN() ((void)0)
 #define FGC_COLLAPSE_END(process, instance, loop) ((void)0)
+#define FGC_WAVE_READY(i) ((void)0)
+#define FGC_WAVE_WAIT(i) ((void)0)
+#define FGC_WAVE_WAIT_ON(process, instance, loop) ((void)0)
 #define FGC_OUTER_BRANCH() ((void)0)
 #define FGC_OUTER_SEND() ((void)0)
 #define FGC_OUTER_RECEIVE() ((void)0)

@@ -30,6 +30,12 @@
 //   SETS::level(has, s, m, bad)  the qr_level region: set u takes step s[u]'s m[u] rows where
 //                                has[u] (else none), bad[u] set if rank deficient
 //   SETS::commit(u, s)           qr_commit<CFG>(s, CONDBUF<u>, UPDBUF<u>)
+//   SETS::WAVE_ROOT_LEVEL        (a kernel built with HlsConfig root_wave only) the root step
+//                                in a wavefront: qr_eliminate_all stops before the last level,
+//                                whose root SETS::level ran on set 1 in the level before's
+//                                region (set 0 step s[0] passing its rows by stream, set 1 step
+//                                s[1], its commit, the root's stack and the root fed those
+//                                rows), and commits the root from set 1
 //
 // Included by the kernel inside its namespace (fgc::, or fgc::les for the mixed design), after
 // its schedule tables and memories, which these functions name: STEP_W, STEP_F, STEP_ROWS,
@@ -520,12 +526,17 @@ void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
 // rows are in the banks already (the kernel's datapaths wrote them: only the row count
 // advances past them); `dirty` > 0: that many rows hold another step's factor rows the
 // datapaths wrote for a solve that did not come (zeroed first, as the unzeroed banks' rows).
+// `fed` >= 0: that child's rows are not stacked (the root step in a wavefront reads them from
+// their unit set's stream, fgc_qr.h's qr_step_io); `phase` false: counted under the caller's
+// phase (the wave region's unit set 1, which stacks the root inside the region); `own` >= 0:
+// neither that child's (lin_level's wave: set 1 moves its own step's rows from its UPDBUF).
 template <class CFG>
 void qr_stack_rows(int s, typename CFG::T root_mu,
                    typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                   unsigned skip, int m, bool in_place = false, int dirty = 0) {
+                   unsigned skip, int m, bool in_place = false, int dirty = 0, int fed = -1,
+                   bool phase = true, int own = -1) {
     typedef typename CFG::T T;
-    FGC_PHASE("qr_stack");
+    if (phase) FGC_PHASE("qr_stack");
     const int w = STEP_W[s], f = STEP_F[s];
     const int rows = CFG::BANKS_ZERO ? dirty : (dirty > m ? dirty : m);
     const int zero = rows * CFG::LOCAL_COLS;
@@ -582,10 +593,13 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
     for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
         const int c = STEP_CHILDREN[e];
+        // its rows come by stream, or (own) the caller moves them from its set's buffer: only
+        // the row count advances
+        const bool by_stream = c == fed || c == own;
         const int sc = STEP_W[c] - STEP_F[c];
         const int mb = STEP_SEPMAP_BEGIN[c];
         const int n0 = STEP_NF_OFF[c];
-        const int words = STEP_NF_ROWS[c] * (sc + 1);
+        const int words = by_stream ? 0 : STEP_NF_ROWS[c] * (sc + 1);
         for (int k = 0, r = 0, q = 0; k < words; k += PORTS) {  // PORTS words a cycle
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_UPDATE
 #pragma HLS PIPELINE II=1
@@ -602,8 +616,9 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
                 }
             }
         }
-        FGC_CYCLES("stack", 0, "child_rows", (words + PORTS - 1) / PORTS, CFG::MOVE_II,
-                   CFG::MOVE_DEPTH);
+        if (!by_stream)
+            FGC_CYCLES("stack", 0, "child_rows", (words + PORTS - 1) / PORTS, CFG::MOVE_II,
+                       CFG::MOVE_DEPTH);
         row = row + STEP_NF_ROWS[c];
     }
     if (CFG::LM) {  // Gauss-Newton: no damping rows
@@ -616,20 +631,24 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
     }
 }
 
-// A unit set's result for step s into COND and NF, PORTS words a cycle.
+// A unit set's result for step s into COND and NF, PORTS words a cycle (`phase` false: counted
+// under the caller's phase, as qr_stack_rows; coff: its conditional's first word in cond, the
+// root's in lin_level's wave; nf false: the conditional alone, lin_level's wave's step c1 whose
+// passed rows its own set stacked into the root from its buffer, which no one reads from NF).
 template <class CFG>
 void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-               const typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS]) {
-    FGC_PHASE("qr_commit");
+               const typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool phase = true,
+               int coff = 0, bool nf = true) {
+    if (phase) FGC_PHASE("qr_commit");
     const int w = STEP_W[s], f = STEP_F[s], sw = w - f;
     const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
-    const int nc = f * (w + 1), nu = STEP_NF_ROWS[s] * (sw + 1);
+    const int nc = f * (w + 1), nu = nf ? STEP_NF_ROWS[s] * (sw + 1) : 0;
     for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_COND
 #pragma HLS PIPELINE II=1
         for (int h = 0; h < PORTS; ++h) {
             if (i + h < nc) {
-                const typename CFG::T v = cond[i + h];
+                const typename CFG::T v = cond[coff + i + h];
                 COND[c0 + i + h] = v;
 #ifdef FGC_SPEC_MARGINAL  // the leaving keyframe's conditional twice (the stream's KEEP_COND)
                 if (s == SPEC_STEP) KEEP_COND[i + h] = v;
@@ -647,6 +666,21 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
     }
     FGC_CYCLES("commit", 0, "nf", (nu + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);
 }
+
+// Whether the kernel's SETS runs the root step in a wavefront (HlsConfig root_wave: it declares
+// WAVE_ROOT_LEVEL); a kernel without it eliminates level by level.
+template <class X>
+struct qr_void {
+    typedef void type;
+};
+template <class SETS, class = void>
+struct qr_wave_hook {
+    enum { value = 0 };
+};
+template <class SETS>
+struct qr_wave_hook<SETS, typename qr_void<decltype(SETS::WAVE_ROOT_LEVEL)>::type> {
+    enum { value = 1 };
+};
 
 // Eliminate every step, level by level: a level's steps are independent, the unit sets take
 // them CFG::UNIT_SETS at a time (stack each, the sets' DATAFLOW region, commit each). False if
@@ -676,6 +710,12 @@ bool qr_eliminate_all(typename CFG::T mu, int leaf = -1, bool live = false) {
     bool ok = true;
     for (int l = 0; l < (one ? 1 : N_LEVELS); ++l) {
 #pragma HLS LOOP_TRIPCOUNT max=N_LEVELS
+        // SETS::WAVE_ROOT_LEVEL: the root step in a wavefront behind its two children - the
+        // last two levels are one region (set 0 the first child, set 1 the second, then its
+        // commit and the root: the kernel's SETS::level), set 1's commit the root's
+        const bool waves = qr_wave_hook<SETS>::value != 0;
+        const bool wave = waves && !one && l == N_LEVELS - 2;
+        if (waves && !one && l == N_LEVELS - 1) break;
         const int begin = one ? 0 : LEVEL_BEGIN[l], end = one ? 1 : LEVEL_BEGIN[l + 1];
         for (int i = begin; i < end; i += CFG::UNIT_SETS) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_LEVEL_WIDTH
@@ -694,13 +734,13 @@ bool qr_eliminate_all(typename CFG::T mu, int leaf = -1, bool live = false) {
                 bad[u] = false;
             }
             FGC_PHASE("qr");
-            SETS::level(has, s, m, bad);
+            SETS::level(has, s, m, bad);  // (with the wave: the kernel's qr_level sees it)
             FGC_JOIN();
             for (int u = 0; u < CFG::UNIT_SETS; ++u) {
 #pragma HLS UNROLL
                 if (has[u]) {
                     ok = ok && !bad[u];
-                    SETS::commit(u, s[u]);
+                    SETS::commit(u, wave && u == 1 ? LEVEL_STEPS[LEVEL_BEGIN[N_LEVELS - 1]] : s[u]);
                 }
             }
         }

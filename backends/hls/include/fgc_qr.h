@@ -1109,11 +1109,15 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 // column's entry from the Evaluate, the rest from the Update units in column order), into cond
 // (j < f) or update (f <= j < f + nf), and its largest magnitude into the running scale (a
 // function argument read before it is written).
-template <class CFG>
+// PASS: qr_no_pass (nothing more), or the wave's stream (hls::stream<T>) that also takes each
+// passed row's words (f <= j < f + nf) as they are written into update, where `pass`. coff:
+// the conditional's first word in cond (the wave's root: after its set's own step's).
+template <class CFG, class PASS>
 void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::T>& rq,
                 hls::stream<typename CFG::T>& exq, hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
                 typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-                typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale) {
+                typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale,
+                PASS& passq, bool pass, int coff) {
     typedef typename CFG::T T;
     const int w = f + s, cols = w + 1;
     const int last = rows < w ? rows : w;
@@ -1141,9 +1145,10 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
             }
         }
         if (j < f) {
-            cond[j * cols + c] = x;
+            cond[coff + j * cols + c] = x;
         } else if (j - f < nf) {
             update[(j - f) * (s + 1) + (c - f)] = x;
+            if (pass) passq.write(x);
         }
         const T mag = qr_abs(x);
         big = mag > big ? mag : big;
@@ -1153,7 +1158,7 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
 }
 
 // One reflection: the DATAFLOW region (see the top of the file).
-template <class CFG>
+template <class CFG, class PASS>
 void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + QR_VEC_SLACK],
                    const qr_word<typename CFG::T> hin[2],
@@ -1162,7 +1167,8 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
                    typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                    typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
-                   typename CFG::T* scale, typename CFG::T evec[CFG::MAX_ROWS]) {
+                   typename CFG::T* scale, typename CFG::T evec[CFG::MAX_ROWS], PASS& passq,
+                   bool pass, int coff) {
 #pragma HLS DATAFLOW
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
     hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS];
@@ -1188,7 +1194,8 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_finish<CFG>(hin, k, tq, etq, rq);
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
     qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout, evec);
-    qr_collect<CFG>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale);
+    qr_collect<CFG, PASS>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale, passq, pass,
+                          coff);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
     FGC_DRAINED(tq, CFG::N_UNITS);
     FGC_DRAINED(&colq[0][0], 2 * CFG::N_UNITS);
@@ -1207,22 +1214,65 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
 // compare).
 template <class CFG>
 bool qr_pivot_check(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int cols,
-                    int k, typename CFG::T scale) {
+                    int k, typename CFG::T scale, int coff = 0) {
     bool bad = k < f;
     const typename CFG::T least = CFG::SINGULAR_EPS * scale;
     for (int i = 0; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
-        if (i >= k || !(qr_abs(cond[i * cols + i]) > least)) bad = true;
+        if (i >= k || !(qr_abs(cond[coff + i * cols + i]) > least)) bad = true;
     }
     FGC_CYCLES("qr_pivot_check", 0, "pivot_check", f, 1, 2);
     return bad;
 }
 
-template <class CFG>
-void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows, int f,
-             int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-             typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular) {
+// A passed-row sink and source that pass nothing (qr_step: every step but the wave's two).
+template <class T>
+struct qr_no_pass {
+    void write(const T&) {}
+    T read() { return T(0); }
+};
+template <class PASS>
+struct qr_passes {
+    enum { value = 1 };
+};
+template <class T>
+struct qr_passes<qr_no_pass<T> > {
+    enum { value = 0 };
+};
+
+// The root step in a wavefront (fgc_eliminate.h's qr_eliminate_all with CFG::WAVE): before its
+// region j the root's unit set reads the fed child's passed rows whose entry[i] <= j (the
+// region that first needs row i: units/qr.py's wave_entries), row i's s + 1 words in order
+// into the root's row row0 + i, word q at the root's column colmap[q]. A row's read waits for
+// the child's region that wrote it (fgc_cycles.h's FGC_WAVE_WAIT): trip s + 1, II 1, depth 2.
+template <class CFG, class FEED>
+void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                 int row, const int colmap[CFG::MAX_COLS], int words, int i) {
+    (void)i;  // (the count's key only)
+    FGC_WAVE_WAIT(i);
+    for (int q = 0; q < words; ++q) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
+#pragma HLS PIPELINE II=1
+        const typename CFG::T x = feedq.read();
+        const int t = colmap[q];
+        work[t % CFG::N_UNITS][row][t / CFG::N_UNITS] = x;
+    }
+    FGC_CYCLES("qr_feed", 0, "wave_row", words, 1, 2);
+}
+
+// qr_step with the wave's ends: PASS (the fed child's set: where `pass`, its passed rows out as
+// its collector writes them, FGC_WAVE_READY after the region that finished each) and FEED (the
+// root's set: nfed rows of `words` words read before the regions that need them); qr_no_pass
+// for neither. A unit set calls it from one site, so its units are one RTL copy whatever it runs.
+// coff: the conditional's first word in cond (lin_level's wave: the root's after step c1's).
+template <class CFG, class PASS, class FEED>
+void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows,
+                int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+                typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular,
+                PASS& passq, bool pass, FEED& feedq, const int entry[CFG::MAX_COLS],
+                const int colmap[CFG::MAX_COLS], int row0, int nfed, int words,
+                int coff = 0) {
     typedef typename CFG::T T;
     const int cols = f + s + 1;
     if (rows < 0 || f < 0 || s < 0 || rows > CFG::MAX_ROWS || cols > CFG::MAX_COLS ||
@@ -1231,6 +1281,8 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
         return;
     }
     const int k = rows < cols ? rows : cols;
+    const int last = rows < f + s ? rows : f + s;
+    const int nf = last - f > 0 ? last - f : 0;
     enum { MAX_REGIONS = CFG::MAX_COLS + 1 };
     // the reflector's two buffers (vector va / vb, norm and pivot ha / hb): region j reads va, ha
     // and writes vb, hb for even j + 1, the other way round for odd j + 1 (a ping-pong between
@@ -1249,19 +1301,35 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
 #pragma HLS ARRAY_PARTITION variable=evec cyclic factor=2
     // the two parity call sites below are exclusive and sequential: one RTL copy of the region
     // serves both (UG1399, ALLOCATION of a function: one instance for its call sites)
-#pragma HLS ALLOCATION function instances=qr_reflection<CFG> limit=1
+#pragma HLS ALLOCATION function instances=qr_reflection<CFG,PASS> limit=1
+    int fed = 0;
     for (int j = -1; j < k; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
+        for (; fed < nfed && entry[fed] <= j; ++fed) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
+            qr_feed_row<CFG, FEED>(feedq, work, row0 + fed, colmap, words, fed);
+        }
         if (((j + 1) & 1) == 0) {
-            qr_reflection<CFG>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond, update, &scale,
-                              evec);
+            qr_reflection<CFG, PASS>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond, update,
+                                     &scale, evec, passq, pass, coff);
         } else {
-            qr_reflection<CFG>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond, update, &scale,
-                              evec);
+            qr_reflection<CFG, PASS>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond, update,
+                                     &scale, evec, passq, pass, coff);
         }
         FGC_SEQUENTIAL();
+        if (qr_passes<PASS>::value && pass && j >= f && j - f < nf) FGC_WAVE_READY(j - f);
     }
-    *singular = qr_pivot_check<CFG>(cond, f, cols, k, scale);
+    *singular = qr_pivot_check<CFG>(cond, f, cols, k, scale, coff);
+}
+
+template <class CFG>
+void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows, int f,
+             int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+             typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular) {
+    qr_no_pass<typename CFG::T> none;
+    const int nothing[CFG::MAX_COLS] = {0};
+    qr_step_io<CFG, qr_no_pass<typename CFG::T>, qr_no_pass<typename CFG::T> >(
+        work, rows, f, s, cond, update, singular, none, false, none, nothing, nothing, 0, 0, 0);
 }
 
 }  // namespace fgc_units

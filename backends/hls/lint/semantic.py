@@ -459,9 +459,10 @@ class _Checker:
                 cut = cut or inner_cut
                 body = body[:at] + " " * len(arg) + body[at + len(arg):]
         calls = rf"\b{name}\s*(?:\[[^\]]*\]\s*)*\.\s*(write|read)(?:_nb)?\s*\("
-        # a stream, or a forwarded template parameter (``XIN&& x``) the function reads and
-        # writes as one: its uses are the stream's (fgc_backsub.h's backsub_end)
-        if param.stream or (param.type.endswith("&&") and re.search(calls, body)):
+        # a stream, or a template parameter by reference (``XIN&& x``, ``PASS& q``) the
+        # function reads and writes as one: its uses are the stream's (fgc_backsub.h's
+        # backsub_end, fgc_qr.h's qr_collect)
+        if param.stream or (param.type.endswith("&") and re.search(calls, body)):
             out |= {m.group(1) for m in re.finditer(calls, body)}
         elif param.const:
             if re.search(rf"\b{name}\b", body):

@@ -108,6 +108,10 @@ class PlanOptions:
     # default implementations left out); () = Vitis's default, fulldsp adders and maxdsp
     # multipliers. The plan prices every operator through the bound table (Target.ops)
     bind: tuple[tuple[str, str], ...] = ()
+    # QR: the root step in a wavefront behind its two children (issue 33 item 2,
+    # units/qr.py's wave_steps): the last two levels one region, the root on unit set 1 after
+    # its own child, fed the other child's passed rows by stream as they are final
+    root_wave: bool = False
 
     @property
     def state_allocation(self) -> tuple[tuple[str, int], ...]:

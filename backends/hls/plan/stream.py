@@ -28,7 +28,15 @@ from fgc_backends.hls.plan.loops import _assign, _tables, kernel_loop, kernel_ti
 from fgc_backends.hls.plan.model import Loop, Phase, PlanError, Process, Unit
 from fgc_backends.hls.plan.report import PHASE_TRIGGER, plan_groups, unit_sets
 from fgc_backends.hls.units.memories import stream_memories
-from fgc_backends.hls.units.qr import commit_loops, qr_unit_loops, stack_loops
+from fgc_backends.hls.units.qr import (
+    commit_loops,
+    lin_wave,
+    lin_wave_loops,
+    qr_unit_loops,
+    stack_loops,
+    wave_loops,
+    wave_steps,
+)
 
 STREAM_SOURCE = ("accelerator plan of the emitted on-chip fixed-lag window "
                  "(fgc_backends.hls.plan.stream; model estimate)")
@@ -220,7 +228,8 @@ def _stream_phase(name: str, *loops: Loop) -> Phase:
 
 def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
                     unit: frozenset = frozenset(),
-                    drop: frozenset = frozenset(), qr_rows: int = 1) -> tuple[Phase, ...]:
+                    drop: frozenset = frozenset(), qr_rows: int = 1, opts=None
+                    ) -> tuple[Phase, ...]:
     """The QR unit sets' DATAFLOW regions of one linear solve of template ``t`` (every level's,
     the plan's assignment of a level's steps to ``sets`` unit sets) with the rows of the
     ``zero`` template factors and, unless ``damped``, the √μ rows zero: the Evaluate unit skips
@@ -229,12 +238,30 @@ def qr_solve_phases(t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
     whitened rows are the identity) have one non-zero a row, on their own tangent direction.
     ``leaf``: that step alone on unit set 0, without the rows of the ``drop`` factor instances
     (not stacked: qr_eliminate_all's live leaf step). ``qr_rows``: the Update units' rows a
-    cycle (PlanOptions.qr_rows)."""
+    cycle (PlanOptions.qr_rows). ``opts``: the design's ``PlanOptions`` (its ``qr_rows`` then);
+    with ``root_wave`` the last two levels are one region (units/qr.py's ``wave_loops``: unit
+    set 1's process holds its step's commit and the root's stack too)."""
+    if opts is not None:
+        qr_rows = opts.qr_rows
     procs = qr_step_processes(t, zero, damped, les, leaf, unit, drop, qr_rows)
     if leaf is not None:
         return (Phase("qr_leaf", True, (procs[leaf],), linear=True),)
     phases = []
-    for li, level in enumerate(t.schedule.levels):
+    wave = wave_steps(t, opts) if opts is not None else None
+    if wave is not None and lin_wave(t, opts) is not None:
+        wave = None  # (the wave inside lin_level: the solve's levels as without it)
+    levels = t.schedule.levels
+    units = max(1, t.solver.units)
+    for li, level in enumerate(levels):
+        if wave is not None and li >= len(levels) - 2:
+            tables = _tables(t)
+            loops = {i: procs[i].loops for i in wave}
+            phases.append(Phase(f"qr_level{li}_0", True, (
+                Process(f"qr{li}_set0", "set0", loops[wave[0]]),
+                Process(f"qr{li}_set1", "set1", wave_loops(
+                    tables, kernel_timing(les), units, max(tables["STEP_W"]),
+                    t.solver.method == "lm", wave, loops))), linear=True))
+            break
         for c in range(0, len(level), sets):
             chunk = _assign([procs[i] for i in level[c:c + sets]], sets, "qr", li)
             phases.append(Phase(f"qr_level{li}_{c}", True, chunk, linear=True))
@@ -311,9 +338,9 @@ def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
 def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf=None,
                     unit: frozenset = frozenset(), drop: frozenset = frozenset()) -> int:
     """``plan_cost`` of ``plan`` (a design holding the QR unit sets) running
-    :func:`qr_solve_phases` as its iteration."""
+    :func:`qr_solve_phases` as its iteration (with the plan's options)."""
     return plan_cost(replace(plan, phases=qr_solve_phases(
-        t, zero, damped, sets, les, leaf, unit, drop, plan.options.qr_rows))).cycles
+        t, zero, damped, sets, les, leaf, unit, drop, opts=plan.options))).cycles
 
 
 def _relinearize(ev: dict) -> int:
@@ -368,7 +395,12 @@ class WindowUpdateModel:
         # the one-step solve's linearisation once keyframe 0 has left: without the instances
         # that hold nothing from then on (units/datapath.py's solve_skip; lin_level's part 3)
         self._skip = frozenset()
-        self._lin_sets = self._lin_level_sets() if self.layout_marginal else None
+        # (with root_wave, units/qr.py's lin_wave: the root on set 1 inside that region too)
+        self._wave = lin_wave(t, self.plan.options)
+        self._lin_sets = (self._lin_level_sets()
+                          if self.layout_marginal and (self._wave is not None
+                                                       or not self.plan.options.root_wave)
+                          else None)
         self._lin_sets_live = (self._lin_level_sets(self._skip) if self._skip
                                else self._lin_sets)
         self._beside = {}
@@ -446,7 +478,7 @@ class WindowUpdateModel:
         update stopped after its linearisation: no solve, no qr term): what the sets' steps
         add to the linearisation's region, ≥ 0. 0 when the design has no such sets. ``live``:
         keyframe 0 has left (:meth:`solve_counts`)."""
-        from fgc_backends.hls.units.datapath import lin_level_cycles
+        from fgc_backends.hls.units.datapath import lin_level_cycles, lin_wave_region
 
         if not self._lin_sets:
             return 0
@@ -462,14 +494,60 @@ class WindowUpdateModel:
             lin = next(ph for ph in self.plan.phases if ph.name == "factor_jacobian")
             jac = ([p for p in lin.processes if p.name != "gradient"] if counts is None
                    else self._jac_at(Counter(counts)))
-            region = lin_level_cycles(t, kernel_timing(self.plan.ops), jac,
-                                      [(wait, fill, procs[s].cycles) for s, wait, fill in
-                                       (self._lin_sets if counts is None
-                                        else self._lin_sets_live)], counts)
-            self._beside[key] = (region - self.solve_linearize(counts is not None),
-                                 phase_cycles(level))
+            sets = [(wait, fill, procs[s].cycles) for s, wait, fill in
+                    (self._lin_sets if counts is None else self._lin_sets_live)]
+            hidden = phase_cycles(level)
+            if self._wave is None:
+                region = lin_level_cycles(t, kernel_timing(self.plan.ops), jac, sets, counts)
+            else:
+                commit0, hide = self._wave_hidden(zero, unit)
+                sets[0] = (sets[0][0], sets[0][1], sets[0][2] + commit0)
+                region = lin_wave_region(t, kernel_timing(self.plan.ops), jac, sets,
+                                         self._wave_loops(procs), counts)
+                hidden += hide
+            self._beside[key] = (region - self.solve_linearize(counts is not None), hidden)
         added, level = self._beside[key]
         return added - level if solved else added
+
+    def _wave_loops(self, procs: dict):
+        """Set 1's process after its fill in lin_level with the root in a wavefront
+        (units/qr.py's ``lin_wave_loops``), a function of set 0's and set 1's starts and the
+        datapath loops' ends (units/datapath.py's ``lin_wave_region``)."""
+        from fgc_backends.hls.units.datapath import bank_ready_loops
+        from fgc_backends.hls.units.qr import _root_bank_words, rows_in_banks
+
+        t = self.layout.template
+        tables = _tables(t)
+        c0, c1, root = self._wave
+        wait = bank_ready_loops(t, rows_in_banks(t, self.plan.options, tables, root=True), 3)[2]
+        fill = kernel_loop("root_fill", _root_bank_words(tables, root), "move",
+                           kernel_timing(self.les))
+        loops = {i: procs[i].loops for i in self._wave}
+
+        def run(start0: int, start1: int, ends: dict) -> tuple[Loop, ...]:
+            return lin_wave_loops(tables, kernel_timing(self.les), max(1, t.solver.units),
+                                  max(tables["STEP_W"]), t.solver.method == "lm", self._wave,
+                                  loops, start0, start1, fill, ends[wait])
+        return run
+
+    def _wave_hidden(self, zero: frozenset, unit: frozenset) -> tuple[int, int]:
+        """Step c0's commit (set 0's, inside lin_level with the wave) and what the solve no
+        longer runs once the sets reflected the root inside lin_level: the root's level (its
+        region on this update's non-zero rows), its stack and step c0's commit (the plan's
+        loops of both, moved into the sets' processes), and step c1's passed rows into NF."""
+        t = self.layout.template
+        c0, c1, root = self._wave
+        rows = self.plan.options.qr_rows
+        last = qr_solve_phases(t, zero, True, self.sets, self.les, unit=unit, qr_rows=rows)[-1]
+        top = f"qr_stack_level{len(t.schedule.levels) - 1}"
+        stack = next(p for ph in self.plan.phases if ph.name == top
+                     for p in ph.processes if p.name == f"stack{root}")
+        commits = {p.name: p for ph in self.plan.phases if ph.name == "qr_commit_level0"
+                   for p in ph.processes}
+        commit = commits[f"commit{c0}"].cycles
+        # (step c1's passed rows into NF: no one reads them, the root took them from UPDBUF1)
+        nf = sum(lp.cycles for lp in commits[f"commit{c1}"].loops if lp.name == "nf")
+        return commit, phase_cycles(last) + stack.cycles + commit + nf
 
     def _stream_phases(self, kt: dict, lt: dict, mv_ii: int) -> tuple[Phase, ...]:
         """The stream section's loops (accel.cpp.jinja's stream top), one phase per part an

@@ -156,6 +156,23 @@ def lin_level_cycles(program, timing: dict, jac: list[Process],
     return max(region, *ends)
 
 
+def lin_wave_region(program, timing: dict, jac: list[Process],
+                    sets: list[tuple[str, Loop, int]], wave,
+                    counts: dict[int, int] | None = None) -> int:
+    """:func:`lin_level_cycles` with the root step in a wavefront inside the region
+    (units/qr.py's ``lin_wave``; ``sets``' set 0 its QR step and then its commit, which set 0
+    runs while set 1 reflects the root; its rows are final at its QR step's region ends): set
+    1's step is its whole process after its fill (``wave(start0, start1, ready)``: units/qr.py's
+    ``lin_wave_loops`` from set 0's and set 1's starts, the cycles of the region at which their
+    fills end, and the end of each datapath loop, ``ready``), the rest as lin_level_cycles.
+    ``counts``: instances per block type (default: all), as lin_level_cycles."""
+    c = _linearize_clocks(program, timing, jac, counts)
+    starts = [max(fill.cycles, c["e_ends"][w] + fill.depth) for w, fill, _ in sets]
+    span = sum(lp.cycles for lp in wave(starts[0], starts[1], c["e_ends"]))
+    return lin_level_cycles(program, timing, jac, [sets[0], (sets[1][0], sets[1][1], span)],
+                            counts)
+
+
 def datapath_loop_names(program) -> list[str]:
     """The datapath loops of ``linearize_rows`` / ``lin_level`` in the emitted order (evaluate_all):
     a block type's own ``factor_<b>_jacobian``, the small block types' one
@@ -426,7 +443,7 @@ def banked_blocks(program, opts, tables) -> frozenset[int]:
     (units/qr.py's rows_in_banks)."""
     from fgc_backends.hls.units.qr import rows_in_banks
 
-    banked = rows_in_banks(program, opts, tables)
+    banked = rows_in_banks(program, opts, tables, root=True)  # (and the wave's root rows)
     return frozenset(f.block for i, f in enumerate(program.factors) if i in banked)
 
 

@@ -217,7 +217,8 @@ def householder_loops(partials: int, qr_rows: int = 1
     return evaluate, update
 
 
-def rows_in_banks(program, opts, tables: dict) -> dict[int, tuple[int, int, int]]:
+def rows_in_banks(program, opts, tables: dict, root: bool = False
+                  ) -> dict[int, tuple[int, int, int]]:
     """The factors whose rows the datapaths write straight into a unit set's banks (besides
     AB), ``factor -> (set, step, its first row in the step)``: under the one-step policy
     (``SolverConfig.one_step``: one linearisation, then one solve) with the Householder unit
@@ -225,7 +226,9 @@ def rows_in_banks(program, opts, tables: dict) -> dict[int, tuple[int, int, int]
     stack takes, level 0's first ``sets`` steps, set u the u-th (``qr_eliminate_all``'s order).
     Their rows are at the step's rows where ``qr_stack_rows`` would put them, so that stack
     only advances past them. Empty otherwise (LM's retries stack from AB again; the stream
-    unit's banks are not left zero)."""
+    unit's banks are not left zero). ``root`` (the root step in a wavefront inside lin_level,
+    :func:`lin_wave`): the root's own factors too, as set ``sets`` (the root's stream to unit
+    set 1, which stacks the root after its own step) at their rows in the root."""
     solver = program.solver
     if solver.linear != "qr" or not solver.one_step or opts.qr_unit != "householder":
         return {}
@@ -233,7 +236,11 @@ def rows_in_banks(program, opts, tables: dict) -> dict[int, tuple[int, int, int]
     lb = tables["LEVEL_BEGIN"]
     out = {}
     fb, cb = tables["STEP_FACTOR_BEGIN"], tables["FACTOR_COLMAP_BEGIN"]
-    for u, s in enumerate(tables["LEVEL_STEPS"][lb[0]:lb[1]][:sets]):
+    steps = list(tables["LEVEL_STEPS"][lb[0]:lb[1]][:sets])
+    wave = wave_steps(program, opts) if root else None
+    if wave is not None:
+        steps.append(wave[2])
+    for u, s in enumerate(steps):
         row = 0
         for e in range(fb[s], fb[s + 1]):
             fac = tables["STEP_FACTORS"][e]
@@ -244,12 +251,15 @@ def rows_in_banks(program, opts, tables: dict) -> dict[int, tuple[int, int, int]
 
 
 def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
-                timing: dict, banks_zero: bool = True, in_place: bool = False) -> list[Loop]:
+                timing: dict, banks_zero: bool = True, in_place: bool = False,
+                fed: int = -1) -> list[Loop]:
     """fgc_eliminate.h's qr_stack of step s into its unit set's banks: unless ``banks_zero``
     (fgc_qr.h's qr_step leaves its banks zero: CFG::BANKS_ZERO; not fgc_qr_stream.h's) the
     rows zeroed (all n_u banks a cycle), then each factor's rows [A | b] (none when
     ``in_place``: the datapaths wrote them, :func:`rows_in_banks`) and each child's
-    new-factor rows :data:`PORTS` words a cycle, the damping rows' diagonal."""
+    new-factor rows :data:`PORTS` words a cycle (but child ``fed``'s: the root step in a
+    wavefront reads them from their set's stream, :func:`wave_loops`), the damping rows'
+    diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
     loops = [] if banks_zero else [kernel_loop("zero", m * local, "fill", timing)]
@@ -263,6 +273,8 @@ def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
+        if c == fed:
+            continue
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
         loops.append(kernel_loop("child_rows", _ported(tables["STEP_NF_ROWS"][c] * (sc + 1)),
                                  "move", timing))
@@ -289,6 +301,203 @@ def unit_sets_of(program, opts) -> int:
     sets = opts.unit_sets if opts.unit_sets is not None else (
         2 if sched.structure_class == "chain" and sched.ordering == "two-ended" else 1)
     return max(1, min(sets, widest))
+
+
+def wave_steps(program, opts) -> tuple[int, int, int] | None:
+    """``PlanOptions.root_wave``: the root step in a wavefront behind its children (issue 33
+    item 2), ``(c0, c1, root)`` - the last level one step, ``root``, whose children are the two
+    steps of the level before it, ``c0`` on unit set 0 and ``c1`` on unit set 1
+    (``LEVEL_STEPS`` order). That level is one DATAFLOW region: set 0 runs c0, its collector
+    streaming c0's passed rows (the new factor's) to set 1, which runs c1, commits it, stacks
+    the root's own rows and c1's passed rows, and runs the root step, reading each of c0's rows
+    before the root's first region that needs it (:func:`wave_entries`). None when the option is
+    off; an ``FgcError`` naming why when the design cannot take it."""
+    if not getattr(opts, "root_wave", False):
+        return None
+    sched = program.schedule
+    why = None
+    if program.solver.linear != "qr" or opts.qr_unit != "householder":
+        why = "it needs the Householder QR unit (fgc_qr.h)"
+    elif unit_sets_of(program, opts) != 2:
+        why = "it needs two unit sets"
+    elif len(sched.levels) < 2 or len(sched.levels[-1]) != 1 or len(sched.levels[-2]) != 2:
+        why = (f"the schedule's last level must be one root step after a level of two steps "
+               f"(levels {[list(lv) for lv in sched.levels]})")
+    else:
+        c0, c1 = sched.levels[-2]
+        root = sched.levels[-1][0]
+        if sorted(sched.steps[root].children) != sorted((c0, c1)):
+            why = f"the root step {root}'s children are not the level before it ({c0}, {c1})"
+        elif sched.steps[c0].new_factor_rows < 1:
+            why = f"step {c0} passes no rows to the root"
+    if why is not None:
+        raise PlanError(f"root_wave (the root step in a wavefront behind its children): {why}")
+    return c0, c1, root
+
+
+def lin_wave(program, opts) -> tuple[int, int, int] | None:
+    """The root step in a wavefront INSIDE lin_level (``PlanOptions.root_wave`` under the
+    one-step policy, where level 0's two unit sets reflect their steps beside the
+    linearisation, :func:`rows_in_banks`): :func:`wave_steps`' ``(c0, c1, root)`` when the
+    wave's children are level 0's two steps (the schedule's two levels), None when the design
+    runs the wave as the qr_level region (no lin_level) or has no wave. Unit set 0's process of
+    lin_level then reflects c0, its collector streaming c0's passed rows to set 1, and commits
+    c0; set 1's fills its banks with c1's rows, reflects c1, takes the root's own rows from
+    their stream (the datapaths send them as they write them), stacks c1's passed rows from its
+    UPDBUF, and reflects the root reading c0's passed rows as set 0 finishes them
+    (:func:`lin_wave_loops`), the root's conditional into CONDBUF1 after c1's (twice the
+    words)."""
+    wave = wave_steps(program, opts)
+    if wave is None or not rows_in_banks(program, opts, _tables_of(program)):
+        return None
+    if len(program.schedule.levels) != 2:
+        raise PlanError(f"root_wave under the one-step policy (the wave inside lin_level): the "
+                        f"root's children must be level 0's steps, the schedule has "
+                        f"{len(program.schedule.levels)} levels")
+    return wave
+
+
+def _tables_of(program) -> dict:
+    from fgc_backends.hls.plan.loops import _tables
+
+    return _tables(program)
+
+
+def lin_wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: bool,
+                   steps: tuple[int, int, int], loops: dict, start0: int, start1: int,
+                   root_fill: Loop, root_ready: int) -> tuple[Loop, ...]:
+    """Unit set 1's process of lin_level after its fill (:func:`lin_wave`), as it runs: step
+    c1's regions (``loops[c1]``; its result stays in the set's buffers, the root's conditional
+    goes after it), the root's own rows from their stream
+    (``root_fill``: a word a cycle, ending no earlier than its depth after ``root_ready``, the
+    region's cycle at which the datapath loop that sends their last words ends), the root's
+    stack of c1's passed rows (from the set's UPDBUF) and the damping rows, then the root's
+    regions, before each the
+    reads of c0's passed rows it needs (:func:`wave_entries`), a read ending no earlier than its
+    depth after set 0's region that wrote the row ends (set 0's clock ``loops[c0]`` from its
+    start ``start0``; set 1's from ``start1``, both cycles of the region). A wait is a loop
+    ``wave_wait`` of the cycles it holds, as fgc_cycles.h's FGC_WAVE_WAIT and FGC_WAVE_WAIT_ON
+    count them inside set 1's FGC_COLLAPSE span."""
+    c0, c1, root = steps
+    out = list(loops[c1])
+    clock = sum(lp.cycles for lp in out)
+    if root_fill.trip > 0:
+        end = max(clock + root_fill.cycles, root_ready - start1 + root_fill.depth)
+        if end > clock + root_fill.cycles:
+            out.append(Loop("wave_wait", 1, 1, end - clock - root_fill.cycles))
+        out.append(root_fill)
+        clock = end
+    stack = stack_loops(tables, root, units, max_w, damped, timing, in_place=True, fed=c0)
+    out += stack
+    clock += sum(lp.cycles for lp in stack)
+    ends, t = [], start0 - start1
+    for lp in loops[c0]:
+        t += lp.cycles
+        ends.append(t)
+    f0 = tables["STEP_F"][c0]
+    words = tables["STEP_W"][c0] - f0 + 1
+    entry = kernel_loop("wave_row", words, "move", timing)
+    when = wave_entries(tables, c0, root)
+    regions = list(loops[root])
+    nxt = 0
+    for idx, j in enumerate(range(-1, len(regions) - 2)):
+        while nxt < len(when) and when[nxt] <= j:
+            end = max(clock + entry.cycles, ends[f0 + 1 + nxt] + entry.depth)
+            if end > clock + entry.cycles:
+                out.append(Loop("wave_wait", 1, 1, end - clock - entry.cycles))
+            out.append(entry)
+            clock = end
+            nxt += 1
+        out.append(regions[idx])
+        clock += regions[idx].cycles
+    out.append(regions[-1])  # the pivot check
+    return tuple(out)
+
+
+def wave_entries(tables: dict, c0: int, root: int) -> list[int]:
+    """Per passed row i of step ``c0`` (its new factor's, STEP_NF_ROWS[c0]) the root's region
+    (reflection j = -1 ... k - 1) before which the root's set reads it into its banks: row i
+    sits at the root's row p (after the root's own factor rows and the children before c0) and
+    is zero left of its first separator column's place in the root (STEP_SEPMAP); the region
+    whose Evaluate first reads it (the column before that, or row p's pivot region) needs it,
+    and the rows come in order, so a row is read no later than the one after it needs."""
+    nf = tables["STEP_NF_ROWS"][c0]
+    sc = tables["STEP_W"][c0] - tables["STEP_F"][c0]
+    mb = tables["STEP_SEPMAP_BEGIN"][c0]
+    cols = [tables["STEP_SEPMAP"][mb + q] for q in range(sc)] + [tables["STEP_W"][root]]
+    rows = tables["STEP_ROWS"][root]
+    k = min(rows, tables["STEP_W"][root] + 1)
+    row0 = _own_rows(tables, root)
+    for e in range(tables["STEP_CHILD_BEGIN"][root], tables["STEP_CHILD_BEGIN"][root + 1]):
+        c = tables["STEP_CHILDREN"][e]
+        if c == c0:
+            break
+        row0 += tables["STEP_NF_ROWS"][c]
+    need = [min(min(cols[i:]), row0 + i) - 1 for i in range(nf)]
+    out = [0] * nf
+    low = k - 1
+    for i in range(nf - 1, -1, -1):
+        low = min(low, need[i])
+        out[i] = max(-1, low)
+    return out
+
+
+def _root_bank_words(tables: dict, root: int) -> int:
+    """The stream words of the root's own factor rows (PORTS values a word, each instance's
+    whole words: units/datapath.py's bank_fill_words), the depth of lin_level's bank_root: every
+    word, so the datapaths never wait for unit set 1 (it reads them after its own step)."""
+    a = tables["FACTOR_A_OFF"]
+    return sum(_ported(a[f + 1] - a[f]) for f in (
+        tables["STEP_FACTORS"][e] for e in range(tables["STEP_FACTOR_BEGIN"][root],
+                                                  tables["STEP_FACTOR_BEGIN"][root + 1])))
+
+
+def _own_rows(tables: dict, s: int) -> int:
+    """Rows of step s's own factors (its first rows in the stack)."""
+    rows = 0
+    cb = tables["FACTOR_COLMAP_BEGIN"]
+    for e in range(tables["STEP_FACTOR_BEGIN"][s], tables["STEP_FACTOR_BEGIN"][s + 1]):
+        fac = tables["STEP_FACTORS"][e]
+        words = tables["FACTOR_A_OFF"][fac + 1] - tables["FACTOR_A_OFF"][fac]
+        rows += words // (cb[fac + 1] - cb[fac] + 1)
+    return rows
+
+
+def wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: bool,
+               steps: tuple[int, int, int], loops: dict) -> tuple[Loop, ...]:
+    """Unit set 1's process of the wave region (:func:`wave_steps`), as it runs: step c1's
+    regions (``loops[c1]``, :func:`qr_unit_loops`), its commit, the root's stack without c0's
+    rows, then the root's regions (``loops[root]``), before each the reads of c0's passed rows
+    it needs (:func:`wave_entries`): one loop of s + 1 words a row (II 1, depth 2), ending no
+    earlier than its depth after c0's region that wrote the row (reflection f + i's, on set 0's
+    clock ``loops[c0]``; ``wave_wait``: the cycles the read waits past its own), as
+    fgc_cycles.h's FGC_WAVE_WAIT counts it."""
+    c0, c1, root = steps
+    out = list(loops[c1]) + commit_loops(tables, c1, timing, False) + stack_loops(
+        tables, root, units, max_w, damped, timing, fed=c0)
+    clock = sum(lp.cycles for lp in out)
+    ends, t = [], 0
+    for lp in loops[c0]:
+        t += lp.cycles
+        ends.append(t)
+    f0 = tables["STEP_F"][c0]
+    words = tables["STEP_W"][c0] - f0 + 1
+    entry = kernel_loop("wave_row", words, "move", timing)
+    when = wave_entries(tables, c0, root)
+    regions = list(loops[root])
+    nxt = 0
+    for idx, j in enumerate(range(-1, len(regions) - 2)):
+        while nxt < len(when) and when[nxt] <= j:
+            end = max(clock + entry.cycles, ends[f0 + 1 + nxt] + entry.depth)
+            if end > clock + entry.cycles:
+                out.append(Loop("wave_wait", 1, 1, end - clock - entry.cycles))
+            out.append(entry)
+            clock = end
+            nxt += 1
+        out.append(regions[idx])
+        clock += regions[idx].cycles
+    out.append(regions[-1])  # the pivot check
+    return tuple(out)
 
 
 def build(ctx) -> None:
@@ -372,7 +581,22 @@ def _levels(ctx, sets, by_index, damping) -> None:
     tables, timing = ctx.tables, ctx.les_timing
     max_w = ctx.sizes["MAX_W"]
     banked = rows_in_banks(ctx.program, opts, tables)
+    wave = wave_steps(ctx.program, opts)
+    if wave is not None and lin_wave(ctx.program, opts) is not None:
+        # the wave inside lin_level (the emitted kernel's one-step solve): the solve's levels
+        # as without it (the update model's qr_beside_linearize takes the region with the
+        # root inside), its two streams to unit set 1
+        c0, c1, root = wave
+        ctx.channels.append(Channel("qr_pass", "stream", tables["STEP_NF_ROWS"][c0] * (
+            tables["STEP_W"][c0] - tables["STEP_F"][c0] + 1), ops.word_bits,
+            "qr_set0", "qr_set1"))
+        root_words = _root_bank_words(tables, root)
+        ctx.channels.append(Channel("bank_root", "stream", root_words, 2 * ops.word_bits + 64,
+                                    "datapaths", "qr_set1"))
+        wave = None
     for li, level in enumerate(sched.levels):
+        if wave is not None and li == len(sched.levels) - 1:
+            break  # the root ran in the level before's region (wave_loops)
         # eliminate_all: each step stacked into its unit set's banks (√μ once per solve
         # first), the level's steps on the unit sets side by side, each result committed
         stack = [Process("root_mu", "qr_stack", (kernel_loop("root_mu", 1, "root", timing),))] \
@@ -388,6 +612,16 @@ def _levels(ctx, sets, by_index, damping) -> None:
         # another
         chunks = [_assign([by_index[i] for i in level[c:c + sets]], sets, "qr", li)
                   for c in range(0, len(level), sets)]
+        if wave is not None and li == len(sched.levels) - 2:
+            c0, c1, root = wave
+            loops = {i: by_index[i].loops for i in wave}
+            chunks = [(Process(f"qr{li}_set0", "set0", loops[c0]),
+                       Process(f"qr{li}_set1", "set1", wave_loops(
+                           tables, timing, opts.units, max_w, damping, wave, loops)))]
+            level = (c0, root)  # committed after the region (c1 in set 1's process)
+            ctx.channels.append(Channel("qr_pass", "stream", tables["STEP_NF_ROWS"][c0] * (
+                tables["STEP_W"][c0] - tables["STEP_F"][c0] + 1), ops.word_bits,
+                "qr_set0", "qr_set1"))
         if len(chunks) == 1:
             ctx.add_phase("solve", Phase(f"qr_level{li}", True, chunks[0], linear=True))
         else:
@@ -404,12 +638,15 @@ def _levels(ctx, sets, by_index, damping) -> None:
     # fgc_qr.h's banks are two memories each by row parity (WORK<s>'s cyclic partition);
     # fgc_qr_stream.h's one
     parities = 1 if opts.qr_unit == "stream" else 2
+    lin = lin_wave(ctx.program, opts) is not None
     for s in range(sets):  # accel.cpp.jinja's WORK<s>, CONDBUF<s>, UPDBUF<s>
         ctx.memories.append(Memory(f"qr{s}_work", opts.units * sizes["MAX_ROWS"] * local,
                                    ops.word_bits, parities * opts.units))
         # fgc_qr.h's evec: the Evaluate's copy of the vector by row, two memories by parity
         ctx.memories.append(Memory(f"qr{s}_evec", sizes["MAX_ROWS"], ops.word_bits, 2))
-        ctx.memories.append(Memory(f"qr{s}_condbuf", sizes["MAX_F"] * cols, ops.word_bits, 1))
+        # (lin_level's wave: set 1's holds the root's conditional after its own step's)
+        ctx.memories.append(Memory(f"qr{s}_condbuf", (2 if lin and s == 1 else 1)
+                                   * sizes["MAX_F"] * cols, ops.word_bits, 1))
         ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)
 

@@ -1,0 +1,211 @@
+"""The root step in a wavefront behind its children (issue 33 item 2, ``HlsConfig.root_wave``):
+paper A's window (two leaf steps, then the root) under the one-step policy runs the root inside
+the linearisation's region ``lin_level`` with level 0: unit set 0 reflects step 0 and streams
+its passed rows (``qr_pass``) as its collector writes them, then commits it; unit set 1
+reflects step 1, takes the root's own rows from their stream (``bank_root``, the datapaths
+write it), stacks step 1's passed rows from its buffer and reflects the root, reading each of
+step 0's rows before the root's first region that needs it (units/qr.py's ``wave_entries``).
+
+- the on-chip incremental design (LIO N = 7, K = 3, one Gauss-Newton step an update, a sweep at
+  keyframe 4; double) with the wave agrees with the simulator after every keyframe to 1e-8, as
+  the level-by-level design does (tests/hls/test_hls_stream_sweep.py);
+- the emitted lin_level region holds one producer and one consumer of ``qr_pass`` and
+  ``bank_root``, and the plan's channels name them; a kernel without the option has none of it;
+- the plan hides the root's level, its stack and step 0's commit in lin_level's region
+  (``qr_beside_linearize``) and saves cycles over the design without the wave, no DSP added;
+- heavy: the counting C simulation equals the update model within 2 % on every update, and a
+  row read one region too late breaks the agreement with the simulator.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from fgc.app.specs import example
+from fgc.app.streaming import compile_stream, keyframe_result, one_step_solver, run_stream
+from fgc.compile import compile_graph
+from fgc.ir.datafile import problem_data
+from fgc.ir.program import SolverConfig
+from fgc_backends.hls.config import DesignOptions, HlsConfig
+from fgc_backends.hls.network import read_network
+from fgc_backends.hls.plan import PlanOptions, build_plan
+from fgc_backends.hls.plan.cost import phase_cycles
+from fgc_backends.hls.plan.model import PlanError
+from fgc_backends.hls.plan.stream import WindowUpdateModel
+from fgc_backends.hls.streaming import OnChipIncrementalStream
+from fgc_backends.hls.units.qr import wave_entries
+
+SIM_TOL = 1e-8  # double design vs simulator, tangent-space distance per variable
+WAVE = DesignOptions(root_wave=True)
+
+
+def _distances(program, csim, sim_updates) -> list[float]:
+    out = []
+    for record, expected in zip(csim.updates, sim_updates, strict=True):
+        update = keyframe_result(program, record)
+        assert (update.keyframe, update.mode, update.first) == (
+            expected.keyframe, expected.mode, expected.first)
+        out.append(max(float(np.linalg.norm(expected.values[k].local(v)))
+                       for k, v in update.values.items()))
+    return out
+
+
+@pytest.fixture(scope="module")
+def wave7(tmp_path_factory):
+    graph = example("lio").build(N=7)
+    program = compile_stream(graph, one_step_solver(), incremental=3, batch_every=(4,),
+                             name="lio_wave")
+    data = problem_data(graph, program)
+    sim = []
+    run_stream(program, data, None, sim.append)
+    stream = OnChipIncrementalStream(graph, program, "double",
+                                     out_dir=tmp_path_factory.mktemp("wave"), design=WAVE)
+    return graph, program, data, sim, stream, stream.run(data)
+
+
+def test_the_wave_agrees_with_the_simulator_after_every_keyframe(wave7):
+    _, program, _, sim, _, csim = wave7
+    assert [u["iterations"] for u in csim.updates] == [1] * 7
+    dist = _distances(program, csim, sim)
+    assert max(dist) <= SIM_TOL, dist
+    assert max(dist[4:]) > 0.0  # the C simulation and the simulator, not one read twice
+
+
+def test_the_wave_region_has_one_producer_and_one_consumer(wave7):
+    _, _, _, _, stream, _ = wave7
+    folder, name = stream.project.directory, stream.project.name
+    text = (folder / f"{name}.cpp").read_text()
+    regions = {r.function: r for r in read_network(text)}
+    lin = regions["lin_level"]
+    assert lin.processes == ("evaluate_all", "reduce_all", "qr_set0", "qr_set1")
+    assert {"qr_pass", "bank_root"} <= {s for s, _ in lin.streams}
+    assert "qr_level" not in regions  # (the wave as its own region: designs without lin_level)
+    model = WindowUpdateModel(stream.layout, HlsConfig(scalar="double", design=WAVE))
+    ch = {c.name: c for c in model.plan.channels if c.name in ("qr_pass", "bank_root")}
+    assert (ch["qr_pass"].producer, ch["qr_pass"].consumer) == ("qr_set0", "qr_set1")
+    assert (ch["bank_root"].producer, ch["bank_root"].consumer) == ("datapaths", "qr_set1")
+    t = stream.layout.template
+    c0, _ = t.schedule.levels[-2]
+    sc = sum(t.schedule.steps[c0].separator_dims)
+    assert ch["qr_pass"].depth == t.schedule.steps[c0].new_factor_rows * (sc + 1)
+    assert f"variable=qr_pass depth={ch['qr_pass'].depth}" in text
+    assert f"variable=bank_root depth={ch['bank_root'].depth}" in text
+
+
+def test_without_the_option_the_kernel_has_no_wave(wave7, tmp_path):
+    import fgc_backends
+    from fgc.app.streaming import stream_program
+
+    graph, program, _, _, stream, _ = wave7
+    plain = WindowUpdateModel(stream.layout, HlsConfig(scalar="double"))
+    assert not any(c.name == "qr_pass" for c in plain.plan.channels)
+    hls = fgc_backends.load("hls")
+    hls.emit(stream_program(graph, program, None), tmp_path, HlsConfig(scalar="double"))
+    texts = [p.read_text() for p in tmp_path.glob("*.cpp") if not p.name.startswith("tb_")]
+    assert texts and not any("qr_pass" in t or "WAVE_ENTRY" in t for t in texts)
+
+
+def test_the_wave_reads_a_row_before_the_region_that_first_needs_it(wave7):
+    _, _, _, _, stream, _ = wave7
+    t = stream.layout.template
+    from fgc_backends.hls.plan.loops import _tables
+
+    tables = _tables(t)
+    c0, _ = t.schedule.levels[-2]
+    root = t.schedule.levels[-1][0]
+    entry = wave_entries(tables, c0, root)
+    # LIO's separator columns are the root's first ones in order: row i (zero left of the
+    # root's column i) is read before region i - 1, whose Evaluate takes column i
+    assert entry == list(range(-1, len(entry) - 1))
+
+
+def test_the_plan_hides_the_root_in_lin_level_and_saves_cycles(wave7):
+    _, _, _, _, stream, csim = wave7
+    plain = WindowUpdateModel(stream.layout, HlsConfig(scalar="double"))
+    wave = WindowUpdateModel(stream.layout, HlsConfig(scalar="double", design=WAVE))
+    # the solve's phases as without the wave (the eliminate_all a sweep runs); what the
+    # one-step update no longer runs after lin_level is in its qr_beside_linearize term
+    for g in ("qr", "qr_stack", "qr_commit"):
+        assert wave.group[g] == plain.group[g], g
+    phases = {ph.name: phase_cycles(ph) for ph in plain.plan.phases}
+    u = csim.updates[6]
+    w = wave.price(6, u["iterations"], status=u["status"])
+    p = plain.price(6, u["iterations"], status=u["status"])
+    wt = {t.name: t.each * t.times for t in w.terms}
+    pt = {t.name: t.each * t.times for t in p.terms}
+    assert set(wt) == set(pt)
+    assert {k for k in wt if wt[k] != pt[k]} == {"qr_beside_linearize"}
+    saved = p.cycles - w.cycles
+    assert saved == pt["qr_beside_linearize"] - wt["qr_beside_linearize"]
+    # the root's level, its stack and step 0's commit leave the path; the root's own time
+    # (behind step 1 on set 1) stays on it: at least a tenth of them saved
+    hidden = phases["qr_level1"] + phases["qr_stack_level1"] + phases["qr_commit_level0"] // 2
+    assert saved > 0.1 * hidden, (saved, hidden)
+    assert wave.resources()["dsp"] == plain.resources()["dsp"]  # no unit added
+
+
+def test_a_schedule_without_a_root_over_two_steps_is_refused():
+    program = compile_graph(example("lio").build(N=6), name="lio",
+                            solver=SolverConfig(ordering="serial"))
+    with pytest.raises(PlanError, match="root_wave"):
+        build_plan(program, PlanOptions.of(program, root_wave=True))
+    two = compile_graph(example("lio").build(N=6), name="lio")
+    with pytest.raises(PlanError, match="two unit sets"):
+        build_plan(two, PlanOptions.of(two, root_wave=True, unit_sets=1))
+
+
+def test_without_lin_level_the_wave_is_its_own_region():
+    # not the one-step policy (no lin_level): the last two levels one qr_level region with
+    # `wave`, the root's level gone from the plan; no bank_root (the root stacks from AB)
+    two = compile_graph(example("lio").build(N=6), name="lio")
+    assert not two.solver.one_step and len(two.schedule.levels[-2]) == 2
+    plain = build_plan(two, PlanOptions.of(two))
+    wave = build_plan(two, PlanOptions.of(two, root_wave=True))
+    last = len(two.schedule.levels) - 1
+    names = {ph.name for ph in wave.phases}
+    assert f"qr_level{last}" in {ph.name for ph in plain.phases}
+    assert f"qr_level{last}" not in names and f"qr_level{last - 1}" in names
+    channels = {c.name: c for c in wave.channels}
+    assert "bank_root" not in channels
+    assert (channels["qr_pass"].producer, channels["qr_pass"].consumer) == ("qr_set0", "qr_set1")
+
+
+@pytest.mark.heavy
+def test_the_counted_csim_equals_the_model_on_every_update(wave7):
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
+    from bench_stream_cycles import counted
+
+    _, _, data, _, stream, _ = wave7
+    model = WindowUpdateModel(stream.layout, HlsConfig(scalar="double", design=WAVE))
+    result = stream.run(data)
+    for u, (cycles, ev) in zip(result.updates, counted(stream), strict=True):
+        ev = dict(ev)
+        ev.setdefault("relinearize", 0)
+        ev["linearize"] = ev.get("linearize", 0) - ev["relinearize"] - ev.get("sweep", 0)
+        price = model.price(u["keyframe"], u["iterations"], ev, u["status"])
+        assert abs(cycles / price.cycles - 1) <= 0.02, (u["keyframe"], cycles, price.cycles)
+
+
+@pytest.mark.heavy
+def test_a_row_read_too_late_breaks_the_agreement(wave7, tmp_path):
+    graph, program, data, sim, _, _ = wave7
+    bad = OnChipIncrementalStream(graph, program, "double", out_dir=tmp_path, design=WAVE)
+    kernel = bad.project.directory / f"{bad.project.name}.cpp"
+    text = kernel.read_text()
+    # every row of step 0 read before the root's region 1 instead of each before its own
+    patched = text.replace("const int WAVE_ENTRY[LesConfig::MAX_COLS] = {  // per passed row: "
+                           "the root's region that first needs it\n    -1, 0,",
+                           "const int WAVE_ENTRY[LesConfig::MAX_COLS] = {  // per passed row: "
+                           "the root's region that first needs it\n    -1, 1,")
+    assert patched != text
+    kernel.write_text(patched)
+    (bad.project.directory / f"{bad.project.name}.o").unlink(missing_ok=True)
+    try:
+        csim = bad.run(data)
+    except Exception:  # noqa: BLE001 - a failure is as good as a disagreement here
+        return
+    assert max(_distances(program, csim, sim)) > 1e3 * SIM_TOL
