@@ -67,6 +67,7 @@
 
 #ifdef FGC_COUNT_CYCLES
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -276,6 +277,15 @@ inline long total_range(std::size_t from, std::size_t to) {
     return sum;
 }
 
+// The first mark made at or after record `from` (marks are made in record order, and
+// collapse_end drops records and marks together): a span's marks start there, so the prices
+// below walk their own span's marks, not the whole log's (a counting run's exit was quadratic).
+inline std::size_t first_mark(std::size_t from) {
+    const std::vector<std::pair<std::size_t, char> >& m = state().marks;
+    return std::size_t(std::lower_bound(m.begin(), m.end(), std::make_pair(from, '\0')) -
+                       m.begin());
+}
+
 // Records [from, to) of the log: sequential stretches add up; a parallel group (branches marked
 // by FGC_BRANCH up to FGC_JOIN, e.g. the unit sets of one QR level) takes its slowest branch
 // plus the fill (first loop's depth) of each other branch, as plan_cost prices a dataflow phase.
@@ -303,7 +313,8 @@ inline long span_total(std::size_t from, std::size_t to) {
             fills += f;
         }
     };
-    for (const auto& m : s.marks) {
+    for (std::size_t mi = first_mark(from); mi < s.marks.size() && s.marks[mi].first <= to; ++mi) {
+        const auto& m = s.marks[mi];
         if (m.second != 'b' && m.second != 'j') continue;  // tasks_total's, outer_total's marks
         if (m.second == 'b' ? (m.first < from || m.first >= to) : (m.first <= from || m.first > to))
             continue;
@@ -458,7 +469,7 @@ inline long outer_total(std::size_t from, std::size_t to) {
         if (besides > last) last = besides;
         return first > last ? first : last;
     };
-    for (std::size_t mi = 0; mi < s.marks.size(); ++mi) {
+    for (std::size_t mi = first_mark(from); mi < s.marks.size() && s.marks[mi].first <= to; ++mi) {
         const auto& m = s.marks[mi];
         const char w = m.second;
         if (w != 'B' && w != 'S' && w != 'R' && w != 'J' && w != 'A' && w != 'P') continue;
