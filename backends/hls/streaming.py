@@ -162,6 +162,8 @@ def _project_key(template, config) -> str:
     h.update(repr(config).encode())
     h.update(__version__.encode())
     h.update(host_key().encode())
+    # the Makefile appends $(FGC_CSIM_FLAGS) from the environment: a cached build is another one
+    h.update(os.environ.get("FGC_CSIM_FLAGS", "").encode())
     backends = Path(__file__).resolve().parent.parent
     # cfamily's shared C++ (common.jinja, fgc_lm.h) is printed into the kernel too
     for path in sorted([*(backends / "hls").rglob("*"), *(backends / "cfamily").rglob("*.py"),

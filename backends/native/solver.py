@@ -204,6 +204,8 @@ def project_key(program: Program, config: NativeConfig) -> str:
     h.update(repr(config).encode())
     h.update(host_key().encode())
     h.update(__version__.encode())
+    # the Makefile appends $(FGC_NATIVE_FLAGS) from the environment: another library
+    h.update(os.environ.get("FGC_NATIVE_FLAGS", "").encode())
     for template in sorted(NativeConfig.template_dir().glob("*.jinja")):
         h.update(template.read_bytes())
     # this backend's modules and the C-family layer it prints with (fgc_backends.cfamily);

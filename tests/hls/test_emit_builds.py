@@ -28,6 +28,16 @@ from fgc_backends.hls import HlsBuildError, HlsConfig, emit, make, run_csim
 pytestmark = pytest.mark.skipif(shutil.which("g++") is None or shutil.which("make") is None,
                                 reason="needs g++ and make")
 
+
+@pytest.fixture(autouse=True)
+def project_flags(monkeypatch):
+    """These builds use the projects' own flags (-O2 / -O3, -Werror: -Wmaybe-uninitialized and
+    the like need the optimiser), not the suite's quicker FGC_CSIM_FLAGS / FGC_NATIVE_FLAGS
+    (tests/conftest.py)."""
+    monkeypatch.delenv("FGC_CSIM_FLAGS", raising=False)
+    monkeypatch.delenv("FGC_NATIVE_FLAGS", raising=False)
+
+
 TYPES = (Point2, Point3, Rot2, Rot3, Pose2, Pose3, Vector3)
 SOLVERS = tuple((m, lin) for m in ("gn", "lm") for lin in ("qr", "cholesky"))
 

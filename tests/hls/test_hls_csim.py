@@ -29,7 +29,7 @@ from fgc.frontend.geometry import Point2, Pose2, Pose3
 from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
 from fgc_backends import sim
-from fgc_backends.hls import HlsConfig, HlsConfigError, emit, run_csim
+from fgc_backends.hls import HlsConfig, HlsConfigError, emit, make, run_csim
 
 imu_window = example("imu_window")
 lio = example("lio")
@@ -140,6 +140,24 @@ def _check_against_reference(name, program, result, reference, scalar):
 def test_csim_matches_the_simulator(example):
     name, (program, _, _, result, reference) = example
     _check_against_reference(name, program, result, reference, CASES[name][2])
+
+
+@pytest.mark.parametrize("example", ["lio"], indirect=True)
+def test_the_suites_quick_build_computes_what_the_projects_flags_do(example, monkeypatch):
+    """The suite builds its C simulations with FGC_CSIM_FLAGS=-O0 after the project's -O2
+    (tests/conftest.py; the Makefile puts it last): LIO's testbench (IMU, trigonometry, square
+    roots, QR) built both ways writes the same result.txt, byte for byte."""
+    _, (program, project, data, _, reference) = example
+    results = []
+    for flags in ("-O0", None):
+        if flags is None:
+            monkeypatch.delenv("FGC_CSIM_FLAGS", raising=False)
+        else:
+            monkeypatch.setenv("FGC_CSIM_FLAGS", flags)
+        make(project, "clean")
+        run_csim(project, program, data, reference)
+        results.append((project.directory / "result.txt").read_bytes())
+    assert results[0] == results[1]
 
 
 def robust_chain(n: int = 14) -> fgc.Graph:

@@ -142,11 +142,13 @@ def _disassembly(library: Path) -> str:
 
 @pytest.mark.skipif(platform.machine() not in ("x86_64", "AMD64") or not shutil.which("objdump"),
                     reason="the fused multiply-add check is for x86 builds")
-def test_native_build_holds_no_fused_multiply_add(tmp_path):
+def test_native_build_holds_no_fused_multiply_add(tmp_path, monkeypatch):
     """The Makefile checks the native library for fused multiply-adds (GCC 12 emits vfmaddsub
     under AVX-512 whatever -mno-fma says) and builds it again without AVX-512 if it has any;
     a library that still has them is refused. FUSED (the pattern checked for) is set here to
-    one the first build matches, to take both branches on any x86 host."""
+    one the first build matches, to take both branches on any x86 host. Built with the
+    project's own flags (-O3: the vectoriser's code), not the suite's -O0 (tests/conftest.py)."""
+    monkeypatch.delenv("FGC_NATIVE_FLAGS", raising=False)
     graph = robust_chain()
     program = compile_graph(graph, SolverConfig(linear="qr"), name="fused")
     project = native.emit(program, tmp_path / "p", NativeConfig(scalar="double"))
@@ -260,17 +262,24 @@ def test_host_flags_keep_the_rounding():
     assert native.host_flags("aarch64") == ("-O3",)
 
 
-def test_lanes_do_not_change_the_numbers(tmp_path):
-    """Instances side by side in SIMD lanes make exactly the scalar calls: the same numbers."""
+def test_lanes_do_not_change_the_numbers(tmp_path, monkeypatch):
+    """Instances side by side in SIMD lanes make exactly the scalar calls: the same numbers.
+    So does the suite's quicker build (FGC_NATIVE_FLAGS=-O0 after the project's -O3,
+    tests/conftest.py): the same operations in the same order, no fused multiply-add."""
     graph = robust_chain()
     program = compile_graph(graph, SolverConfig(linear="qr"), name="lanes")
     data = problem_data(graph, program)
     results = []
-    for lanes in (1, None):
-        project = native.emit(program, tmp_path / str(lanes),
+    for lanes, flags in ((1, "-O0"), (None, "-O0"), (None, None)):
+        if flags is None:
+            monkeypatch.delenv("FGC_NATIVE_FLAGS", raising=False)
+        else:
+            monkeypatch.setenv("FGC_NATIVE_FLAGS", flags)
+        project = native.emit(program, tmp_path / f"{lanes}{flags}",
                               NativeConfig(scalar="double", lanes=lanes))
         native.make(project)
         results.append(NativeSolver.load(program, project).run(data))
-    assert results[0].final_error == results[1].final_error
-    for key, value in results[0].values.items():
-        np.testing.assert_array_equal(results[1].values[key], value)
+    for other in results[1:]:
+        assert other.final_error == results[0].final_error
+        for key, value in results[0].values.items():
+            np.testing.assert_array_equal(other.values[key], value)
