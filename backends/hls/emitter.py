@@ -504,12 +504,12 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "robust_any": any(m.robust for b in blocks for m in b.members),
             # the gradient pass gives LM the cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE)
             "cost_in_lin": cost_in_linearization(program),
-            # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
-            # the copies into X (units/lm_control.py's retire_step_test)
-            "retire_test": retire_step_test(program, plan.options),
             # the one-step policy: the gradient's maximum, |X| and the step test in one loop after
             # the solve (units/lm_control.py's fused_step_test)
             "fused_test": fused_step_test(program, plan.options),
+            # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
+            # the copies into X (units/lm_control.py's retire_step_test)
+            "retire_test": retire_step_test(program, plan.options),
             "small": shared, "banks": banks,
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             "qr_rows": plan.options.qr_rows,  # fgc_qr.h's FGC_QR_TWO_ROWS (2)
