@@ -172,12 +172,13 @@ bool lm_solved_test(const typename CFG::T g[CFG::N_TANGENT], const typename CFG:
             const int i = e + h;
             const int k = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
             if (i < CFG::N_TANGENT) {
-                const T a = CFG::magnitude(g[i]);
+                const T gi = g[i];  // (one read of G a lane: its two ports)
+                const T a = CFG::magnitude(gi);
                 gp[k] = a > gp[k] ? a : gp[k];
                 const T d = delta[i];
                 ok = ok && CFG::finite(d);
                 dp[k] += d * d;
-                pp[k] += d * g[i];
+                pp[k] += d * gi;
             }
             if (i < CFG::N_X) xp[k] += x[i] * x[i];
         }
