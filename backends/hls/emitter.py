@@ -421,7 +421,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         for v in k.variables:
             kinds[v] = k.kind
     variables, steps = retire_order(program, retire_solved(_tables(program)))
-    from fgc_backends.hls.units.lm_control import retire_step_test
+    from fgc_backends.hls.units.lm_control import fused_step_test, retire_step_test
     ii, depth = retire_timing(program.variables, plan.ops, _sizes(program)["MAX_F"],
                               plan.options.state_allocation,
                               retire_step_test(program, plan.options))
@@ -515,6 +515,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "robust_any": any(m.robust for b in blocks for m in b.members),
             # the gradient pass gives LM the cost at X (fgc_lm.h's FGC_LM_COST_IN_LINEARIZE)
             "cost_in_lin": cost_in_linearization(program),
+            # the one-step policy: the gradient's maximum, |X| and the step test in one loop after
+            # the solve (units/lm_control.py's fused_step_test)
+            "fused_test": fused_step_test(program, plan.options),
             # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
             # the copies into X (units/lm_control.py's retire_step_test)
             "retire_test": retire_step_test(program, plan.options),

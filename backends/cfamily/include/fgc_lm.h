@@ -44,6 +44,10 @@
 // finite, a trial rejected) first calls restore_x() (X back from its backup), so the next
 // solve, the rounding noise's band and the caller see X at the linearisation point as before.
 // A solve that failed back-substitutes nothing and leaves X as it was.
+// FGC_LM_NORM_IN_SOLVE (the HLS kernel under the one-step policy, with FGC_LM_GRADIENT_IN_SOLVE):
+// x_norm() is read where the step size is tested, after the solve's step test, whose loop (the
+// kernel's solved_gradient_max) finds |X| with the gradient's maximum: X is unchanged since the
+// linearisation, so the same |X| as read before the solve.
 // The reductions live in the hooks: the HLS kernel's run in interleaved partial sums at II 1
 // (fgc_lm_units.h) and count cycles, the native solver's are plain loops.
 //
@@ -102,7 +106,12 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
     // (HLS: the scalar decision shares optimize's operators; g++ ignores the pragma)
     typedef typename CFG::T T;
     T band = T(-1);  // not yet known
+#ifdef FGC_LM_NORM_IN_SOLVE  // |X| found after the solve (read where the step size is tested)
+#define FGC_LM_X_NORM CFG::x_norm()
+#else
     const T x_norm = CFG::x_norm();  // once per call (per linearisation), not per solve
+#define FGC_LM_X_NORM x_norm
+#endif
 #ifdef FGC_LM_GRADIENT_IN_SOLVE
     bool tested = false;  // the small-gradient test ran (after the first solve that succeeded)
 #endif
@@ -122,7 +131,7 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
         const bool ok = CFG::step_test(solved, mu[0], test);
         const T d2 = test[0], predicted = test[1];
         if (ok) {
-            if (CFG::root(d2) <= CFG::eps_step() * (x_norm + CFG::eps_step())) {
+            if (CFG::root(d2) <= CFG::eps_step() * (FGC_LM_X_NORM + CFG::eps_step())) {
                 undo_trial<CFG>(solved);
                 return Step<T>{1, CFG::REASON_STEP, cost, T(0)};
             }
@@ -154,6 +163,7 @@ Step<typename CFG::T> try_steps(typename CFG::T cost, typename CFG::T mu[1]) {
     return FGC_LM_FAILED(CFG::REASON_LAMBDA_LIMIT);
 }
 #undef FGC_LM_FAILED
+#undef FGC_LM_X_NORM
 
 // optimize's body, INLINE: a kernel that runs its linearisation or elimination again after LM
 // (the on-chip stream's window and batch kernel: fgc_stream.h) calls it directly, so LM's call

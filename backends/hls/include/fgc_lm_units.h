@@ -8,6 +8,10 @@
 //                                                   once per linearisation (fgc_lm.h's
 //                                                   gradient_max; |x| kept for its x_norm)
 //   bool lm_step_test<CFG>(solved, mu, delta, g, out) out = {|delta|^2, 0.5 delta^T (g + mu delta)}
+//   bool lm_solved_test<CFG>(g, x, delta, out)      out = {the gradient's largest |entry|, |x|^2,
+//                                                   |delta|^2, delta^T g}: the one-step
+//                                                   policy's, once after the solve (both above
+//                                                   in one loop; lm_step_sums the scalars)
 //   void lm_accept<CFG>(x, x_trial)                 x = x_trial
 //   void lm_restore<CFG>(x, x_back)                 x = x_back (the column design's trial not taken)
 //   void lm_top<CFG>(x_in, data, x_out, x, data_buf, errors, info)
@@ -130,6 +134,67 @@ bool lm_step_test(bool solved, typename CFG::T mu, const typename CFG::T delta[C
                pair_depth(CFG::N_TANGENT, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT)
                    + CFG::MUL_LAT + CFG::ADD_LAT);  // the fold, then + mu |delta|^2
     FGC_CYCLES("decide", 0, "decision", 1, CFG::DECISION_II, CFG::DECISION_DEPTH);
+    return ok;
+}
+
+// The one-step policy's (units/lm_control.py's fused_step_test): one solve a linearisation, so
+// what lm_iterate forms before it (the gradient's largest |entry|, |x|) and lm_step_test after it
+// (|delta|^2, delta^T g, delta finite) come from one loop after the solve (fgc_lm.h's
+// FGC_LM_GRADIENT_IN_SOLVE and FGC_LM_NORM_IN_SOLVE: neither g nor x is written by the solve), two
+// words of each a cycle: out = {the gradient's largest |entry|, |x|^2, |delta|^2, delta^T g};
+// returns delta's finiteness. The step test's scalars: lm_step_sums.
+template <class CFG>
+bool lm_solved_test(const typename CFG::T g[CFG::N_TANGENT], const typename CFG::T x[CFG::N_X],
+                    const typename CFG::T delta[CFG::N_TANGENT], typename CFG::T out[4]) {
+#pragma HLS INLINE
+    typedef typename CFG::T T;
+    // entry i of each into partial (i / 2) % PARTIALS of lane i % 2 (one distance for all four,
+    // PARTIALS >= MAXIMA), folded in trees
+    T gp[2 * CFG::PARTIALS], xp[2 * CFG::PARTIALS], dp[2 * CFG::PARTIALS], pp[2 * CFG::PARTIALS];
+#pragma HLS ARRAY_PARTITION variable=gp complete
+#pragma HLS ARRAY_PARTITION variable=xp complete
+#pragma HLS ARRAY_PARTITION variable=dp complete
+#pragma HLS ARRAY_PARTITION variable=pp complete
+    zero_partials<T, 2 * CFG::PARTIALS>(gp);
+    zero_partials<T, 2 * CFG::PARTIALS>(xp);
+    zero_partials<T, 2 * CFG::PARTIALS>(dp);
+    zero_partials<T, 2 * CFG::PARTIALS>(pp);
+    bool ok = true;
+    const int N_LONGER = CFG::N_X > CFG::N_TANGENT ? CFG::N_X : CFG::N_TANGENT;
+    for (int e = 0; e < N_LONGER; e += 2) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=gp inter true distance=CFG::PARTIALS
+#pragma HLS DEPENDENCE variable=xp inter true distance=CFG::PARTIALS
+#pragma HLS DEPENDENCE variable=dp inter true distance=CFG::PARTIALS
+#pragma HLS DEPENDENCE variable=pp inter true distance=CFG::PARTIALS
+        for (int h = 0; h < 2; ++h) {
+#pragma HLS UNROLL
+            const int i = e + h;
+            const int k = h * CFG::PARTIALS + (e >> 1) % CFG::PARTIALS;
+            if (i < CFG::N_TANGENT) {
+                const T gi = g[i];  // (one read of G a lane: its two ports)
+                const T a = CFG::magnitude(gi);
+                gp[k] = a > gp[k] ? a : gp[k];
+                const T d = delta[i];
+                ok = ok && CFG::finite(d);
+                dp[k] += d * d;
+                pp[k] += d * gi;
+            }
+            if (i < CFG::N_X) xp[k] += x[i] * x[i];
+        }
+    }
+    out[0] = fold_maxima<T, 2 * CFG::PARTIALS>(gp);
+    out[1] = fold_partials<T, 2 * CFG::PARTIALS>(xp);
+    out[2] = fold_partials<T, 2 * CFG::PARTIALS>(dp);
+    out[3] = fold_partials<T, 2 * CFG::PARTIALS>(pp);
+    FGC_PHASE("lm_control");
+    FGC_CYCLES("decide", 0, "solved_test", ceil_div(N_LONGER, 2),
+               larger(larger(pair_ii(CFG::N_TANGENT, CFG::PARTIALS, CFG::CMP_LAT),
+                             pair_ii(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT)),
+                      pair_ii(CFG::N_TANGENT, CFG::PARTIALS, CFG::ADD_LAT)),
+               larger(larger(pair_depth(CFG::N_TANGENT, CFG::PARTIALS, CFG::CMP_LAT, CFG::ABS_LAT),
+                             pair_depth(CFG::N_X, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT)),
+                      pair_depth(CFG::N_TANGENT, CFG::PARTIALS, CFG::ADD_LAT, CFG::MUL_LAT)));
     return ok;
 }
 

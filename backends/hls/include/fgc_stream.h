@@ -69,6 +69,14 @@
 #ifndef FGC_STREAM_H
 #define FGC_STREAM_H
 
+// X's word i as the call reads it out after the window's region: the one-step policy's step
+// taken is still in X_TRIAL where `held` (out_task)
+#ifdef FGC_SPEC_MARGINAL
+#define FGC_X_OUT(held, i) ((held) ? X_TRIAL[i] : X[i])
+#else
+#define FGC_X_OUT(held, i) X[i]
+#endif
+
 #if defined(FGC_STREAM_WINDOW) || defined(FGC_STREAM_BATCH_KERNEL)
 // A keyframe's words into slot m: its storage (SLOT_X), then its factors' and its prior's words
 // (NEW_DEST). The batch kernel's (batch_kernel_in) move the
@@ -942,17 +950,21 @@ void reciprocal_task(L rinv[STREAM_KF_T]) {
 }
 
 // The call's outputs read out of X beside them (X is final once the window's region is over: nothing
-// after it writes X): slot 0's new estimate for the pending re-expression where `pending`, the
+// after it writes X but this task, below): slot 0's new estimate for the pending re-expression where `pending`, the
 // window's storage out where `out` (the update's last pass).
+// FGC_SPEC_MARGINAL (the one-step policy): the step taken is still in X_TRIAL (the kernel's
+// X_HELD, its LmConfig's accept_trial; `held`): the reads take X_TRIAL's words and write them into
+// X as they go (x_out reads every word: X is whole when it ends), so no copy runs of its own.
 template <class CFG>
-void out_task(bool out, bool pending, T x_out[N_X]) {
+void out_task(bool out, bool pending, bool held, T x_out[N_X]) {
     FGC_TASK();
+    (void)held;
 #ifdef FGC_STREAM_KEPT
     if (pending) {
         FGC_PHASE("kept");
         for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-            KEPT_PENDING_X[k] = X[SLOT_X[k]];
+            KEPT_PENDING_X[k] = FGC_X_OUT(held, SLOT_X[k]);
         }
         FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     }
@@ -963,7 +975,11 @@ void out_task(bool out, bool pending, T x_out[N_X]) {
         FGC_PHASE("setup");
         for (int i = 0; i < N_X; ++i) {
 #pragma HLS PIPELINE II=1
-            x_out[i] = X[i];
+            const T v = FGC_X_OUT(held, i);
+            x_out[i] = v;
+#ifdef FGC_SPEC_MARGINAL
+            if (held) X[i] = v;
+#endif
         }
         FGC_CYCLES("top", 0, "x_out", N_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     }
@@ -971,11 +987,11 @@ void out_task(bool out, bool pending, T x_out[N_X]) {
 
 template <class CFG>
 void sign_beside_reciprocals(const L rows[STREAM_KF_T * (STREAM_KF_T + 1)], L a[STREAM_KF_T][STREAM_KF_T + 1], bool ok[1], L rinv[STREAM_KF_T],
-                             bool out, bool pending, T x_out[N_X]) {
+                             bool out, bool pending, bool held, T x_out[N_X]) {
 #pragma HLS DATAFLOW
     sign_task<CFG>(rows, a, ok);
     reciprocal_task<CFG>(rinv);
-    out_task<CFG>(out, pending, x_out);
+    out_task<CFG>(out, pending, held, x_out);
 }
 
 template <class CFG>
@@ -1028,11 +1044,11 @@ void tau_beside_keep(const L a[STREAM_KF_T][STREAM_KF_T + 1], L mean[STREAM_KF_T
 // singular.
 template <class CFG>
 bool tau_and_keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X], bool out, bool pending,
-                  T x_out[N_X]) {
+                  bool held, T x_out[N_X]) {
     L a[STREAM_KF_T][STREAM_KF_T + 1];
     L rinv[STREAM_KF_T];
     bool ok[1];
-    sign_beside_reciprocals<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], a, ok, rinv, out, pending, x_out);
+    sign_beside_reciprocals<CFG>(NF + STEP_NF_OFF[STREAM_LEAF_STEP], a, ok, rinv, out, pending, held, x_out);
     FGC_TASKS_JOIN();
     if (!ok[0]) return false;
     L mean[STREAM_KF_T];
@@ -1193,11 +1209,11 @@ void keep_commit_task(bool commit, int c) {
 // One DATAFLOW region after the window's (the step taken): the two commits beside the call's
 // reads of X (out_task), no memory between them
 template <class CFG>
-void out_beside_commit(bool commit, int c, bool out, bool pending, T x_out[N_X]) {
+void out_beside_commit(bool commit, int c, bool out, bool pending, bool held, T x_out[N_X]) {
 #pragma HLS DATAFLOW
     tau_commit_task<CFG>(commit);
     keep_commit_task<CFG>(commit, c);
-    out_task<CFG>(out, pending, x_out);
+    out_task<CFG>(out, pending, held, x_out);
 }
 #endif  // FGC_SPEC_MARGINAL
 #endif
@@ -1417,7 +1433,8 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #ifdef FGC_STREAM_KEPT
             pending_read = last && !sweep && first > 0;
 #endif
-            out_beside_commit<CFG>(SPEC_OK, kc, last, pending_read, x_out);
+            out_beside_commit<CFG>(SPEC_OK, kc, last, pending_read, X_HELD, x_out);
+            X_HELD = false;  // (X written as x_out was read)
             FGC_TASKS_JOIN();
             marginal = SPEC_OK ? 1 : 2;
             out_read = last;
@@ -1428,7 +1445,13 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
 #ifdef FGC_STREAM_KEPT
             pending_read = last && !sweep && first > 0;
 #endif
-            marginal = tau_and_keep<CFG>(kc, result[1] != 0, lin01, last, pending_read, x_out) ? 1 : 2;
+#ifdef FGC_SPEC_MARGINAL
+            const bool held = X_HELD;
+            X_HELD = false;  // (X written as x_out is read)
+#else
+            const bool held = false;
+#endif
+            marginal = tau_and_keep<CFG>(kc, result[1] != 0, lin01, last, pending_read, held, x_out) ? 1 : 2;
             out_read = last;
         }
 #endif
@@ -1444,7 +1467,8 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
                 FGC_PHASE("kept");
                 for (int k = 0; k < STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-                    KEPT_PENDING_X[k] = X[SLOT_X[k]];
+                    // (the step taken may still be in X_TRIAL: X_HELD, out_task's note)
+                    KEPT_PENDING_X[k] = FGC_X_OUT(X_HELD, SLOT_X[k]);
                 }
                 FGC_CYCLES("kept", 0, "slot0", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
             }
@@ -1478,9 +1502,17 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         FGC_PHASE("setup");
         for (int i = 0; i < N_X; ++i) {
 #pragma HLS PIPELINE II=1
-            x_out[i] = X[i];
+            // (the step taken may still be in X_TRIAL: X_HELD, out_task's note)
+            const T v = FGC_X_OUT(X_HELD, i);
+            x_out[i] = v;
+#ifdef FGC_SPEC_MARGINAL
+            if (X_HELD) X[i] = v;
+#endif
         }
         FGC_CYCLES("top", 0, "x_out", N_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#ifdef FGC_SPEC_MARGINAL
+        X_HELD = false;
+#endif
     }
     info[3] = m;
     info[4] = marginal;
@@ -1577,5 +1609,6 @@ void batch_kernel_solve(int j, int tau_slot, T x_io[STREAM_SLOTS * STREAM_KF_X],
 #endif  // FGC_STREAM_BATCH_KERNEL
 
 #undef FGC_KEPT_PASS
+#undef FGC_X_OUT
 
 #endif  // FGC_STREAM_H

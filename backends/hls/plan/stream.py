@@ -1339,6 +1339,13 @@ class WindowUpdateModel:
             terms.append(self._spec_beside_backsub("tau_beside_backsub") if spec
                          else self._keep_beside_tau(name="tau_beside"))
         terms.append(Term("x_out", st["stream_x_out"], 1, False, "the window's storage out"))
+        if self.spec and ev.get("accept", 0) and "lm_accept" in self.group:
+            # the one-step policy's step taken stays in X_TRIAL (the kernel's X_HELD): the call's
+            # reads of X after the window's region take its words and write them into X a word
+            # a cycle (fgc_stream.h's out_task, stream_call's end), no copy of its own
+            terms.append(Term("accept_in_out", -self.group["lm_accept"], ev["accept"], False,
+                              "the step taken moved into X as the window out reads it (from "
+                              "X_TRIAL, a word a cycle): LM's copy of x_trial not run"))
         if spec:
             terms += self._commit_terms(lay.kept and first > 0 and not sweep)
         elif leaving:

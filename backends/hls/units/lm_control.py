@@ -32,6 +32,21 @@ def retire_step_test(program, opts) -> bool:
             and opts.hessian_storage == "frontal")
 
 
+def fused_step_test(program, opts) -> bool:
+    """Whether the emitted kernel forms LM's per-linearisation scalars and its step test in one
+    loop after the solve (accel.cpp.jinja's ``fused_test``): the one-step policy
+    (``SolverConfig.one_step``: Gauss-Newton, μ = 0, one iteration, so one solve a
+    linearisation) on a design whose state update does not sum them (not
+    :func:`retire_step_test`). Then fgc_lm.h tests the gradient after the solve
+    (FGC_LM_GRADIENT_IN_SOLVE: the same outcome, X is not written by the solve) and reads |X|
+    there (FGC_LM_NORM_IN_SOLVE), and fgc_lm_units.h's ``lm_solved_test`` reads G, X and δ two
+    words of each a cycle in one loop over the longer of N_X and N_TANGENT: the gradient's
+    largest |entry|, |X|², |δ|², δᵀg and δ's finiteness, in place of lm_iterate's loop before
+    the solve and lm_step_test's after it (the same operators, one loop's depth instead of
+    two loops one after the other)."""
+    return bool(program.solver.one_step) and not retire_step_test(program, opts)
+
+
 def retire_test_loop(program, ii: int) -> BoundLoop:
     """The step test's operators in the state update's loop (II ``ii``): per variable of the
     widest tangent its δ_k² and δ_k g_k (a multiply each) and their two sums (a chain of adds
@@ -62,7 +77,7 @@ def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
 
 
 def lm_control_phases(n_t: int, n_x: int, timing: dict,
-                      retire_test: bool = False) -> tuple[Phase, ...]:
+                      retire_test: bool = False, fused: bool = False) -> tuple[Phase, ...]:
     """LM control as emitted (optimize / try_steps) over ``n_t`` tangent and ``n_x`` storage
     words, in three phases by how often their loops run: ``lm_iteration`` once per
     linearisation (the gradient's largest entry and |x| in one loop, ``lm_iterate``: |x| is
@@ -83,13 +98,25 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict,
     no ``lm_iteration``: the state update finds the gradient's largest
     entry too and fgc_lm.h tests it after the solve (FGC_LM_GRADIENT_IN_SOLVE; the gradient's
     own pass, ``lm_gradient_max``, runs only where no solve of a linearisation succeeded, before
-    LM gives up: once a run at most, not priced)."""
+    LM gives up: once a run at most, not priced). ``fused`` (:func:`fused_step_test`): no
+    ``lm_iteration`` either; ``decide`` is one loop over the longer of the two (``solved_test``:
+    the gradient's maximum, |X|², |δ|² and δᵀg, two words of each a cycle, its depth the
+    longest of the three reductions'), the step test's scalars and the decision (the gradient's
+    own pass as with ``retire_test``: where the solve failed, not priced)."""
     tail = timing["acc"][1]  # after the folds: μ‖δ‖², then δᵀg + μ‖δ‖²
     # (the maxima as many as the sums: lm_iterate's one DEPENDENCE distance, PARTIALS)
     _, gii, gdepth = pair_dot(n_t, timing, kind="max", partials=timing["acc"][0])
     _, xii, xdepth = pair_dot(n_x, timing)
     trip = _ported(max(n_t, n_x))  # one loop over the longer of the two
     step = pair_dot(n_t, timing, extra=tail)
+    if fused:
+        _, dii, ddepth = pair_dot(n_t, timing)
+        return (Phase("lm_control", False, (Process("decide", "lm_control", (
+                    Loop("solved_test", trip, max(gii, xii, dii), max(gdepth, xdepth, ddepth)),
+                    Loop("step_scalars", 1, 1, tail),
+                    kernel_loop("decision", 1, "decision", timing))),)),
+                Phase("lm_accept", False, (Process("accept", "lm_control", (
+                    kernel_loop("accept", _ported(n_x), "move", timing),)),)))
     if retire_test:
         return (Phase("lm_control", False, (Process("decide", "lm_control", (
                     Loop("step_scalars", 1, 1, tail),
@@ -169,7 +196,17 @@ def build(ctx) -> None:
     # products and moved's three adds, then the rows' terms (at II 3·TILE: one multiplier and
     # one adder), and the block types' running sums (one adder)
     fused = retire_step_test(program, ctx.opts)
-    if fused:  # (the step test's sums: the state update's loop, units/backsub.py)
+    solved = fused_step_test(program, ctx.opts)
+    if solved:
+        # one loop after the solve (lm_solved_test): per lane the gradient's |entry| against
+        # its partial maximum (a compare), x_k² into |X|² and δ_k², δ_k g_k into the step
+        # test's sums (three multiply-adds), two lanes: lm_iterate's and lm_step_test's
+        # operators, now one loop's; the gradient's own pass (only where the solve failed: two
+        # compares a cycle)
+        loops = [BoundLoop("solved_test", (("add", 6), ("mul", 6), ("compare", 2)), 1),
+                 BoundLoop("gradient_max", (("compare", 2),), 1),
+                 BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
+    elif fused:  # (the step test's sums: the state update's loop, units/backsub.py)
         # the gradient's maximum (two compares a cycle), lm_top_norm's x_in |x|² (a
         # multiply-add a cycle) and its fold (its own function: one adder); the restore moves
         # words only (|X|² of a trial taken: the state update's, units/backsub.py)
@@ -190,7 +227,7 @@ def build(ctx) -> None:
     loops.append(BoundLoop("noise_sum", (("add", len(program.blocks)),), 0))
     ctx.units.append(bound_unit("lm_control", "gain ratio, μ update, stopping rules, "
                                 "rounding noise", loops, table=ctx.ops))
-    for phase in lm_control_phases(n_t, n_x, timing, fused):
+    for phase in lm_control_phases(n_t, n_x, timing, fused, solved):
         ctx.add_phase("control", phase)
     # once per call: the top's copies of x and the data in and x out
     ctx.add_phase("call", setup_phase(n_x, ctx.sizes["N_DATA"], n_x, timing,
