@@ -311,6 +311,16 @@ def _leaf_context(context: dict, leaf: frozenset, gone: frozenset,
             small[f"{part}_table"] = chosen != list(range(len(chosen)))
 
 
+def _lin_blocks(program, options, blocks: list) -> list:
+    """The block types in the order evaluate_all and reduce_all emit their datapath loops
+    (units/datapath.py's datapath_order; the small ones where the first of them stands)."""
+    from fgc_backends.hls.units.datapath import datapath_order, small_blocks
+
+    small = small_blocks(program)
+    at = {b: k for k, b in enumerate(datapath_order(program, options))}
+    return sorted(blocks, key=lambda b: at[small[0] if b.index in small else b.index])
+
+
 def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
     """What accel.cpp.jinja needs beyond the shared context: the plan's units, IIs and network."""
     from fgc_backends.hls.plan import kernel_timing, process_network, unit_sets
@@ -485,7 +495,7 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         # linearisation (lin_level) once that loop has ended (units/datapath.py's sets_beside)
         from fgc_backends.hls.units.datapath import bank_fill_words, bank_ready_loops
         banks["fill"] = bank_fill_words(program, tables, in_banks, len(banks["step"]))
-        banks["wait"] = bank_ready_loops(program, in_banks, len(banks["step"]))
+        banks["wait"] = bank_ready_loops(program, in_banks, len(banks["step"]), plan.options)
     procs, streams = process_network(plan)
     units = max(1, int(program.solver.units))
     sets = unit_sets(plan)
@@ -505,7 +515,8 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "les": {"partials": les.add.latency, "add": les.add.latency,
                     "mul": les.mul.latency, "div": les.div.latency, "sqrt": les.sqrt.latency,
                     "singular_eps": repr(10 * epsilon(config.linear_cxx))},
-            "blocks": blocks, "beside": beside, "network": network, "retract_hw": retract,
+            "blocks": blocks, "lin_blocks": _lin_blocks(program, plan.options, blocks),
+            "beside": beside, "network": network, "retract_hw": retract,
             "retire": retire, "trial": trial, "trial_spans": trial_spans, "trial_b": trial_b,
             "trial_feed": trial_feed,
             # the block types trial_cost_b's fused loops cost (their gather_b_<b>)
@@ -567,7 +578,7 @@ def _wave_context(program: Program, plan) -> dict | None:
 
         in_banks = rows_in_banks(program, plan.options, tables, root=True)
         root_fill = bank_fill_words(program, tables, in_banks, 3)[2]
-        root_wait = bank_ready_loops(program, in_banks, 3)[2]
+        root_wait = bank_ready_loops(program, in_banks, 3, plan.options)[2]
     first = {}  # per child of the root, its passed rows' first row in the root
     row = _own_rows(tables, root)
     for e in range(tables["STEP_CHILD_BEGIN"][root], tables["STEP_CHILD_BEGIN"][root + 1]):

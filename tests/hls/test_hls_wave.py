@@ -96,6 +96,42 @@ def test_the_wave_region_has_one_producer_and_one_consumer(wave7):
     assert f"variable=bank_root depth={ch['bank_root'].depth}" in text
 
 
+def test_the_datapaths_send_set_1_its_rows_before_set_0(wave7):
+    """Set 1 reflects its step and then the root: the region's path. evaluate_all runs the
+    loops that send set 1's step its rows first, then set 0's, then the root's own; reduce_all
+    reads the stream in the same order, and the plan's datapath processes follow it."""
+    import re
+
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.datapath import (
+        bank_ready_loops,
+        datapath_loop_names,
+        datapath_order,
+    )
+    from fgc_backends.hls.units.qr import rows_in_banks
+
+    _, _, _, _, stream, _ = wave7
+    t = stream.layout.template
+    opts = WindowUpdateModel(stream.layout, HlsConfig(scalar="double", design=WAVE)).plan.options
+    plain = WindowUpdateModel(stream.layout, HlsConfig(scalar="double")).plan.options
+    names = datapath_loop_names(t, opts)
+    assert datapath_loop_names(t, plain) == datapath_loop_names(t)  # no wave: the blocks' order
+    assert datapath_order(t, plain) == sorted(datapath_order(t, plain))
+    assert sorted(names) == sorted(datapath_loop_names(t)) and names != datapath_loop_names(t)
+    ready = bank_ready_loops(t, rows_in_banks(t, opts, _tables(t), root=True), 3, opts)
+    # set 1's step's last loop before set 0's, set 0's no later than the root's own rows' one
+    assert names.index(ready[1]) < names.index(ready[0]) <= names.index(ready[2])
+    model = WindowUpdateModel(stream.layout, HlsConfig(scalar="double", design=WAVE))
+    lin = next(ph for ph in model.plan.phases if ph.name == "factor_jacobian")
+    assert [p.name for p in lin.processes if p.name != "gradient"] == names
+    text = (stream.project.directory / f"{stream.project.name}.cpp").read_text()
+    for fn, call in (("evaluate_all", "evaluate"), ("reduce_all", "reduce")):
+        body = text[text.index(f"void {fn}("):]
+        body = body[:body.index("\n}\n")]
+        called = re.findall(rf"\b{call}_(\d+|small)\(", body)
+        assert [f"factor_{c}_jacobian" for c in called] == names, fn
+
+
 def test_without_the_option_the_kernel_has_no_wave(wave7, tmp_path):
     import fgc_backends
     from fgc.app.streaming import stream_program

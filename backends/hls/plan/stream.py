@@ -439,7 +439,7 @@ class WindowUpdateModel:
             self._skip = solve_skip(self.layout.leaf_skipped(), in_banks)
         steps = sorted({(u, s) for u, s, _ in in_banks.values()})
         fills = bank_fill_words(t, tables, in_banks, len(steps), skip)
-        waits = bank_ready_loops(t, in_banks, len(steps))
+        waits = bank_ready_loops(t, in_banks, len(steps), self.plan.options)
         move = kernel_timing(self.les)
         return [(s, waits[u], kernel_loop("fill", fills[u], "move", move))
                 for u, s in steps]
@@ -519,7 +519,8 @@ class WindowUpdateModel:
         t = self.layout.template
         tables = _tables(t)
         c0, c1, root = self._wave
-        wait = bank_ready_loops(t, rows_in_banks(t, self.plan.options, tables, root=True), 3)[2]
+        wait = bank_ready_loops(t, rows_in_banks(t, self.plan.options, tables, root=True), 3,
+                                self.plan.options)[2]
         fill = kernel_loop("root_fill", _root_bank_words(tables, root), "move",
                            kernel_timing(self.les))
         loops = {i: procs[i].loops for i in self._wave}
