@@ -70,10 +70,14 @@ def test_the_slots_a_batch_step_does_not_reach_cost_only_their_own_rows(paper_a_
 
     steps = [per_slot(j) for j in range(b.size)]
     for s in range(1, b.size - 1):
-        # a held slot costs its own rows (its identity prior, its √μ rows), whatever the slots
-        # before it passed (zero rows: they hold nothing on it), less than once it arrived
-        held = {steps[j][s] for j in range(s)}
-        assert len(held) == 1 and held.pop() < steps[s][s]
+        # a held slot costs its own rows (its identity prior, its √μ rows), whatever the held
+        # slots before it passed (zero rows: they hold nothing on it), less than once it arrived;
+        # the arrived slot just before it passes rows zero on its columns but for their
+        # right-hand side (that slot's residual): the held step's last reflection takes them
+        assert steps[s - 1][s] < steps[s][s]
+        if s > 1:
+            held = {steps[j][s] for j in range(s - 1)}
+            assert len(held) == 1 and held.pop() < steps[s - 1][s]
     # priced as structure (dense new factors, dense priors) the held slots cost more
     assert sum(per_slot(1, unit=False)) > sum(steps[1])
     # nothing held: the step's QR is the plan's, and with nothing masked the window's too
