@@ -273,9 +273,23 @@ def qr_step_processes(t, zero: frozenset, damped: bool, les, leaf=None,
                       drop: frozenset = frozenset(), qr_rows: int = 1) -> dict[int, Process]:
     """Per step of template ``t`` its Householder unit set's process (:func:`qr_solve_phases`'s
     steps; ``leaf``: that step's alone)."""
-    lm = t.solver.method == "lm"
     units = max(1, t.solver.units)
-    procs, passed = {}, {}
+    return {s: Process(f"qr_step{s}", "qr_update", tuple(qr_unit_loops(
+        pattern, t.schedule.steps[s].frontal_dim, units, les, name=f"s{s}", qr_rows=qr_rows,
+        rhs=rhs))) for s, (pattern, rhs) in step_patterns(t, zero, damped, leaf, unit,
+                                                           drop).items()}
+
+
+def step_patterns(t, zero: frozenset, damped: bool, leaf=None, unit: frozenset = frozenset(),
+                  drop: frozenset = frozenset()) -> dict[int, tuple]:
+    """Per step of template ``t`` (``leaf``: that step's alone) its stacked matrix's rows ×
+    (f + s) structural non-zeros in this update and the rows whose right-hand side can be
+    non-zero (:func:`~fgc_backends.hls.units.qr.qr_unit_loops`' ``pattern`` and ``rhs``): the
+    ``zero`` factors' rows zero, the ``unit`` priors' the identity, the √μ rows zero unless
+    ``damped``, a child's passed rows zero where its step leaves them so (``drop``: the leaf's
+    factors not stacked)."""
+    lm = t.solver.method == "lm"
+    out, passed = {}, {}
     for st in t.schedule.steps:
         pattern = stacked_pattern(t, st, lm).copy()
         cols = step_columns(t, st)
@@ -322,10 +336,8 @@ def qr_step_processes(t, zero: frozenset, damped: bool, les, leaf=None,
         if dropped:
             pattern = np.delete(pattern, dropped, axis=0)
             rhs = np.delete(rhs, dropped)
-        procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
-            pattern, st.frontal_dim, units, les, name=f"s{st.index}", qr_rows=qr_rows,
-            rhs=rhs)))
-    return procs
+        out[st.index] = (pattern, rhs)
+    return out
 
 
 def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
