@@ -390,28 +390,8 @@ def lin_wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: b
     stack = stack_loops(tables, root, units, max_w, damped, timing, in_place=True, fed=c0)
     out += stack
     clock += sum(lp.cycles for lp in stack)
-    ends, t = [], start0 - start1
-    for lp in loops[c0]:
-        t += lp.cycles
-        ends.append(t)
-    f0 = tables["STEP_F"][c0]
-    words = tables["STEP_W"][c0] - f0 + 1
-    entry = kernel_loop("wave_row", words, "move", timing)
-    when = wave_entries(tables, c0, root)
-    regions = list(loops[root])
-    nxt = 0
-    for idx, j in enumerate(range(-1, len(regions) - 2)):
-        while nxt < len(when) and when[nxt] <= j:
-            end = max(clock + entry.cycles, ends[f0 + 1 + nxt] + entry.depth)
-            if end > clock + entry.cycles:
-                out.append(Loop("wave_wait", 1, 1, end - clock - entry.cycles))
-            out.append(entry)
-            clock = end
-            nxt += 1
-        out.append(regions[idx])
-        clock += regions[idx].cycles
-    out.append(regions[-1])  # the pivot check
-    return tuple(out)
+    return tuple(out) + _root_regions(tables, timing, c0, root, loops, clock,
+                                      start0 - start1)
 
 
 def wave_entries(tables: dict, c0: int, root: int) -> list[int]:
@@ -476,13 +456,23 @@ def wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: bool,
     out = list(loops[c1]) + commit_loops(tables, c1, timing, False) + stack_loops(
         tables, root, units, max_w, damped, timing, fed=c0)
     clock = sum(lp.cycles for lp in out)
-    ends, t = [], 0
+    return tuple(out) + _root_regions(tables, timing, c0, root, loops, clock, 0)
+
+
+def _root_regions(tables: dict, timing: dict, c0: int, root: int, loops: dict, clock: int,
+                  offset: int) -> tuple[Loop, ...]:
+    """The root's regions (``loops[root]``) on unit set 1 from ``clock``, before each the reads
+    of step ``c0``'s passed rows it needs (:func:`wave_entries`): one loop of s + 1 words a row
+    (II 1, depth 2) ending no earlier than its depth after c0's region that wrote the row
+    (reflection f + i's on set 0's clock ``loops[c0]``, which starts ``offset`` cycles after set
+    1's; ``wave_wait``: the cycles the read waits past its own), then the pivot check."""
+    out = []
+    ends, t = [], offset
     for lp in loops[c0]:
         t += lp.cycles
         ends.append(t)
     f0 = tables["STEP_F"][c0]
-    words = tables["STEP_W"][c0] - f0 + 1
-    entry = kernel_loop("wave_row", words, "move", timing)
+    entry = kernel_loop("wave_row", tables["STEP_W"][c0] - f0 + 1, "move", timing)
     when = wave_entries(tables, c0, root)
     regions = list(loops[root])
     nxt = 0
