@@ -11,7 +11,8 @@ step 0's rows before the root's first region that needs it (units/qr.py's ``wave
   keyframe 4; double) with the wave agrees with the simulator after every keyframe to 1e-8, as
   the level-by-level design does (tests/hls/test_hls_stream_sweep.py);
 - the emitted lin_level region holds one producer and one consumer of ``qr_pass``,
-  ``bank_root`` and ``qr_commit``, and the plan's channels name them; a kernel without the option has none of it;
+  ``bank_root`` and ``qr_commit``, and the plan's channels name them; a kernel without the
+  option has none of it;
 - the plan hides the root's level, its stack and step 0's commit in lin_level's region
   (``qr_beside_linearize``) and saves cycles over the design without the wave, no DSP added;
 - heavy: the counting C simulation equals the update model within 2 % on every update, and a
