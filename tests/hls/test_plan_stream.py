@@ -15,8 +15,14 @@ from fgc.compiler.stream import stream_program
 from fgc_backends.hls.config import HlsConfig
 from fgc_backends.hls.plan import phase_cycles, plan_cost
 from fgc_backends.hls.plan.model import PlanError
-from fgc_backends.hls.plan.stream import WindowUpdateModel, _zero_passed_rows, qr_solve_phases
+from fgc_backends.hls.plan.stream import (
+    WindowUpdateModel,
+    _zero_passed_rows,
+    qr_solve_phases,
+    step_patterns,
+)
 from fgc_backends.hls.streaming import layout_of
+from fgc_backends.hls.units.qr import qr_unit_loops, reflection_lanes
 
 
 def test_a_step_with_nothing_on_its_separator_passes_zero_rows():
@@ -70,15 +76,50 @@ def test_the_slots_a_batch_step_does_not_reach_cost_only_their_own_rows(paper_a_
 
     steps = [per_slot(j) for j in range(b.size)]
     for s in range(1, b.size - 1):
-        # a held slot costs its own rows (its identity prior, its √μ rows), whatever the slots
-        # before it passed (zero rows: they hold nothing on it), less than once it arrived
-        held = {steps[j][s] for j in range(s)}
-        assert len(held) == 1 and held.pop() < steps[s][s]
+        # a held slot costs its own rows (its identity prior, its √μ rows), whatever the held
+        # slots before it passed (zero rows: they hold nothing on it), less than once it arrived;
+        # the arrived slot just before it passes rows zero on its columns but for their
+        # right-hand side (that slot's residual): the held step's last reflection takes them
+        assert steps[s - 1][s] < steps[s][s]
+        if s > 1:
+            held = {steps[j][s] for j in range(s - 1)}
+            assert len(held) == 1 and held.pop() < steps[s - 1][s]
     # priced as structure (dense new factors, dense priors) the held slots cost more
     assert sum(per_slot(1, unit=False)) > sum(steps[1])
     # nothing held: the step's QR is the plan's, and with nothing masked the window's too
     assert sum(steps[-1]) == sum(per_slot(b.size - 1, unit=False))
     assert model.qr_cycles(frozenset(), True) == model.group["qr"]
+
+
+def test_a_step_prices_its_right_hand_side_only_on_rows_that_can_hold_one(paper_a_n7):
+    """The right-hand side is priced by structure, not dense: a row without information (a
+    factor the window does not hold, a child's zero passed row), a √μ row and a unit prior's
+    row at its slot's reset value have a zero right-hand side, which the Evaluate skips (the
+    counting C simulation keeps a row only if it is non-zero). Priced dense, keyframe 0 of the
+    double N = 7 window with the root in a wavefront came out 0.974 of the count."""
+    layout, model = paper_a_n7
+    t = layout.template
+    f = [st.frontal_dim for st in t.schedule.steps]
+
+    def cycles(pattern, rhs, s):
+        return sum(lp.cycles for lp in qr_unit_loops(pattern, f[s], 4, model.les, rhs=rhs))
+
+    first = step_patterns(t, model.zero_factors(0), True, unit=layout.unit_factors(0))
+    for s, (pattern, rhs) in first.items():
+        rows, cols, k, active, kept, _ = reflection_lanes(pattern, rhs)
+        dense = reflection_lanes(pattern)
+        assert k == cols and active[-1] < dense[3][-1]  # the right-hand side's reflection
+        assert not rhs[rows - f[s]:].any()  # [√μ I | 0]
+        assert cycles(pattern, rhs, s) < cycles(pattern, None, s)
+        if s > 0:  # held slots: unit priors and rows without information, no residual
+            assert not rhs.any() and active[-1] == 0
+    # keyframe 0: slot 0's priors and GPS rows (15 + 3) hold its only residuals
+    assert first[0][1].sum() == 18
+    # a full window: every row of slot 0's step that holds information can hold one (39 of
+    # its 54 factor rows; the √μ rows not)
+    pattern, rhs = step_patterns(t, model.zero_factors(5), True, unit=layout.unit_factors(5))[0]
+    own = np.arange(len(rhs)) < len(rhs) - f[0]
+    assert (rhs == (pattern.any(axis=1) & own)).all() and rhs.sum() == 39
 
 
 def test_the_pending_reexpression_runs_beside_the_next_updates_solve(paper_a_n7):

@@ -274,12 +274,30 @@ def qr_step_processes(t, zero: frozenset, damped: bool, les, leaf=None,
                       drop: frozenset = frozenset(), qr_rows: int = 1) -> dict[int, Process]:
     """Per step of template ``t`` its Householder unit set's process (:func:`qr_solve_phases`'s
     steps; ``leaf``: that step's alone)."""
-    lm = t.solver.method == "lm"
     units = max(1, t.solver.units)
-    procs, passed = {}, {}
+    return {s: Process(f"qr_step{s}", "qr_update", tuple(qr_unit_loops(
+        pattern, t.schedule.steps[s].frontal_dim, units, les, name=f"s{s}", qr_rows=qr_rows,
+        rhs=rhs))) for s, (pattern, rhs) in step_patterns(t, zero, damped, leaf, unit,
+                                                           drop).items()}
+
+
+def step_patterns(t, zero: frozenset, damped: bool, leaf=None, unit: frozenset = frozenset(),
+                  drop: frozenset = frozenset()) -> dict[int, tuple]:
+    """Per step of template ``t`` (``leaf``: that step's alone) its stacked matrix's rows ×
+    (f + s) structural non-zeros in this update and the rows whose right-hand side can be
+    non-zero (:func:`~fgc_backends.hls.units.qr.qr_unit_loops`' ``pattern`` and ``rhs``): the
+    ``zero`` factors' rows zero, the ``unit`` priors' the identity, the √μ rows zero unless
+    ``damped``, a child's passed rows zero where its step leaves them so (``drop``: the leaf's
+    factors not stacked)."""
+    lm = t.solver.method == "lm"
+    out, passed = {}, {}
     for st in t.schedule.steps:
         pattern = stacked_pattern(t, st, lm).copy()
         cols = step_columns(t, st)
+        # the rows whose right-hand side can be non-zero: a zero row's is zero (a factor without
+        # information, a child's zero passed row), and so are the √μ rows' and, at the slot's
+        # reset value, a unit prior's (its residual 0)
+        rhs = np.ones(len(pattern), dtype=bool)
         row = 0
         dropped = []
         for i in entering_blocks(t, st):
@@ -298,22 +316,29 @@ def qr_step_processes(t, zero: frozenset, damped: bool, les, leaf=None,
                                         f"{len(own)} columns")
                     pattern[lo:hi] = False
                     pattern[np.arange(lo, hi), own] = True
+                    rhs[lo:hi] = False
             row += block.residual_dim
+        rhs[:row] &= pattern[:row].any(axis=1)  # a zero row's right-hand side: 0
         for child in st.children:  # a child's new factor: its rows that are zero in value
-            for i, zero_row in enumerate(passed.get(child, ())):
+            for i, (zero_row, side) in enumerate(passed.get(child, ())):
                 if zero_row:
                     pattern[row + i] = False
+                rhs[row + i] = side
             row += t.schedule.steps[child].new_factor_rows
-        if lm and not damped:
-            pattern[pattern.shape[0] - st.frontal_dim:] = False
-        passed[st.index] = _zero_passed_rows(pattern, st.frontal_dim, st.new_factor_rows)
+        if lm:
+            rhs[pattern.shape[0] - st.frontal_dim:] = False  # [√μ I | 0]
+            if not damped:
+                pattern[pattern.shape[0] - st.frontal_dim:] = False
+        passed[st.index] = list(zip(
+            _zero_passed_rows(pattern, st.frontal_dim, st.new_factor_rows),
+            _passed_rhs(pattern, rhs, st.frontal_dim, st.new_factor_rows), strict=True))
         if leaf is not None and st.index != leaf:
             continue
         if dropped:
             pattern = np.delete(pattern, dropped, axis=0)
-        procs[st.index] = Process(f"qr_step{st.index}", "qr_update", tuple(qr_unit_loops(
-            pattern, st.frontal_dim, units, les, name=f"s{st.index}", qr_rows=qr_rows)))
-    return procs
+            rhs = np.delete(rhs, dropped)
+        out[st.index] = (pattern, rhs)
+    return out
 
 
 def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
@@ -334,6 +359,24 @@ def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
         nz[act, j] = False
         nz[j, j] = True
     return [frontal + i >= rows or not nz[frontal + i, frontal:].any() for i in range(passed)]
+
+
+def _passed_rhs(pattern, rhs, frontal: int, passed: int) -> list[bool]:
+    """Which of the ``passed`` rows of the new factor a step hands its parent can have a
+    non-zero right-hand side (``rhs``: the step's rows whose right-hand side can be non-zero):
+    the fill rule of :func:`_zero_passed_rows` with the right-hand side as the last column."""
+    nz = np.hstack([np.asarray(pattern, dtype=bool),
+                    np.asarray(rhs, dtype=bool).reshape(len(pattern), 1)])
+    rows, cols = nz.shape
+    for j in range(min(rows, cols - 1)):
+        act = [i for i in range(j, rows) if nz[i, j]]
+        if not act:
+            continue
+        act = sorted(set(act) | {j})
+        nz[np.ix_(act, range(j + 1, cols))] = nz[act, j + 1:].any(axis=0)
+        nz[act, j] = False
+        nz[j, j] = True
+    return [frontal + i < rows and bool(nz[frontal + i, -1]) for i in range(passed)]
 
 
 def qr_solve_cycles(plan, t, zero: frozenset, damped: bool, sets: int, les, leaf=None,

@@ -21,28 +21,31 @@ from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
 
 
-def active_rows(pattern) -> tuple[int, int, int, list[int]]:
+def active_rows(pattern, rhs=None) -> tuple[int, int, int, list[int]]:
     """A QR step's shape and the active rows of each reflection as the units meet them:
-    ``pattern`` (rows × (f + s) structural non-zeros) with the dense right-hand side added,
-    rows, cols = w + 1, k = min(rows, cols), and per reflection j < k the count of rows j ...
-    that are non-zero in column j after the fill of the reflections before it (row j always
-    among them; 0: the column is zero and skipped)."""
-    return reflection_rows(pattern)[:4]
+    ``pattern`` (rows × (f + s) structural non-zeros) with the right-hand side added (``rhs``:
+    the rows whose right-hand side can be non-zero; None: every row's), rows, cols = w + 1,
+    k = min(rows, cols), and per reflection j < k the count of rows j ... that are non-zero in
+    column j after the fill of the reflections before it (row j always among them; 0: the
+    column is zero and skipped)."""
+    return reflection_rows(pattern, rhs)[:4]
 
 
-def reflection_rows(pattern) -> tuple[int, int, int, list[int], list[int]]:
+def reflection_rows(pattern, rhs=None) -> tuple[int, int, int, list[int], list[int]]:
     """:func:`active_rows`, and per reflection j < k the rows the Evaluate keeps of column j + 1
     for its update pass (fgc_qr.h's qr_evaluate): row j, row j + 1, reflection j's active rows
     and the rows j ... non-zero in column j + 1 before it (0 where j + 1 = cols)."""
-    return reflection_lanes(pattern)[:5]
+    return reflection_lanes(pattern, rhs)[:5]
 
 
-def reflection_lanes(pattern) -> tuple[int, int, int, list[int], list[int], list[int]]:
+def reflection_lanes(pattern, rhs=None) -> tuple[int, int, int, list[int], list[int], list[int]]:
     """:func:`reflection_rows`, and per reflection j < k how many of its active rows below the
     pivot are even rows (the rest are odd): the two lanes of the Update units two rows a cycle
     (fgc_qr.h with FGC_QR_TWO_ROWS)."""
-    nz = np.hstack([np.asarray(pattern, dtype=bool),
-                    np.ones((len(pattern), 1), dtype=bool)])
+    pattern = np.asarray(pattern, dtype=bool)
+    side = (np.ones((len(pattern), 1), dtype=bool) if rhs is None
+            else np.asarray(rhs, dtype=bool).reshape(len(pattern), 1))
+    nz = np.hstack([pattern, side])
     rows, cols = nz.shape
     k = min(rows, cols)
     active, kept, even = [], [], []
@@ -64,11 +67,13 @@ def reflection_lanes(pattern) -> tuple[int, int, int, list[int], list[int], list
 
 
 def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
-                  partials: int | None = None, name: str = "s", qr_rows: int = 1) -> list[Loop]:
+                  partials: int | None = None, name: str = "s", qr_rows: int = 1,
+                  rhs=None) -> list[Loop]:
     """The loops of ``qr_step`` (backends/hls/include/fgc_qr.h) on one step, as it executes them.
 
     ``pattern``: the structural rows × (f + s) non-zeros of the stacked matrix (the right-hand
-    side, dense, is added here); a structural non-zero is taken as non-zero in value. Returns one
+    side is added here: ``rhs``, the rows whose right-hand side can be non-zero, None: every
+    row's); a structural non-zero is taken as non-zero in value. Returns one
     ``Loop`` (trip 1) per DATAFLOW region ``qr_reflection`` j = -1 ... k - 1 (k = min(rows,
     w + 1)), whose depth is the region's cycles (slowest process plus the others' fill, and no
     less than the Evaluate's end, which reads its column as the Update unit streams it and the
@@ -84,7 +89,7 @@ def qr_unit_loops(pattern, frontal: int, units: int, ops: OperatorTable,
         raise PlanError(f"qr_rows {qr_rows!r}: expected one of {QR_ROWS}")
     la, lm, ld, ls = ops.add.latency, ops.mul.latency, ops.div.latency, ops.sqrt.latency
     p = partials if partials is not None else la
-    rows, cols, k, active, kept, even = reflection_lanes(pattern)
+    rows, cols, k, active, kept, even = reflection_lanes(pattern, rhs)
     tree = math.ceil(math.log2(p)) if p > 1 else 0
     tree1 = math.ceil(math.log2(p + 1))  # the fold of the P partials and the pivot's term
     out = []
