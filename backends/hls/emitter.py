@@ -556,11 +556,12 @@ def _wave_context(program: Program, plan) -> dict | None:
     ``wave_steps``), None without it: the root, the fed child c0 (unit set 0's step), its
     passed rows' place in the root's rows, their words, each row's region
     (``wave_entries``) and each word's column in the root, and the stream's depth (every
-    passed row: unit set 1 reads them behind set 0)."""
+    passed row, two words a stream word: unit set 1 reads them behind set 0)."""
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.qr import (
         _own_rows,
         lin_wave,
+        pass_words,
         rows_in_banks,
         wave_entries,
         wave_steps,
@@ -591,7 +592,7 @@ def _wave_context(program: Program, plan) -> dict | None:
     return {"c0": c0, "c1": c1, "root": root, "row0": row0, "nfed": nf, "words": sc + 1,
             "entry": wave_entries(tables, c0, root),
             "colmap": [tables["STEP_SEPMAP"][mb + q] for q in range(sc)]
-            + [tables["STEP_W"][root]], "depth": nf * (sc + 1), "lin": lin,
+            + [tables["STEP_W"][root]], "depth": nf * pass_words(tables, c0), "lin": lin,
             "root_fill": root_fill, "root_wait": root_wait, "row1": first[c1]}
 
 

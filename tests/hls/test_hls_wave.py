@@ -1,7 +1,8 @@
 """The root step in a wavefront behind its children (issue 33 item 2, ``HlsConfig.root_wave``):
 paper A's window (two leaf steps, then the root) under the one-step policy runs the root inside
 the linearisation's region ``lin_level`` with level 0: unit set 0 reflects step 0 and streams
-its passed rows (``qr_pass``) as its collector writes them, then commits it; unit set 1
+its passed rows (``qr_pass``, two words a stream word) and its result (``qr_commit``, to the
+process that writes COND and NF) as its collector writes them; unit set 1
 reflects step 1, takes the root's own rows from their stream (``bank_root``, the datapaths
 write it), stacks step 1's passed rows from its buffer and reflects the root, reading each of
 step 0's rows before the root's first region that needs it (units/qr.py's ``wave_entries``).
@@ -9,8 +10,9 @@ step 0's rows before the root's first region that needs it (units/qr.py's ``wave
 - the on-chip incremental design (LIO N = 7, K = 3, one Gauss-Newton step an update, a sweep at
   keyframe 4; double) with the wave agrees with the simulator after every keyframe to 1e-8, as
   the level-by-level design does (tests/hls/test_hls_stream_sweep.py);
-- the emitted lin_level region holds one producer and one consumer of ``qr_pass`` and
-  ``bank_root``, and the plan's channels name them; a kernel without the option has none of it;
+- the emitted lin_level region holds one producer and one consumer of ``qr_pass``,
+  ``bank_root`` and ``qr_commit``, and the plan's channels name them; a kernel without the
+  option has none of it;
 - the plan hides the root's level, its stack and step 0's commit in lin_level's region
   (``qr_beside_linearize``) and saves cycles over the design without the wave, no DSP added;
 - heavy: the counting C simulation equals the update model within 2 % on every update, and a
@@ -81,17 +83,22 @@ def test_the_wave_region_has_one_producer_and_one_consumer(wave7):
     text = (folder / f"{name}.cpp").read_text()
     regions = {r.function: r for r in read_network(text)}
     lin = regions["lin_level"]
-    assert lin.processes == ("evaluate_all", "reduce_all", "qr_set0", "qr_set1")
-    assert {"qr_pass", "bank_root"} <= {s for s, _ in lin.streams}
+    assert lin.processes == ("evaluate_all", "reduce_all", "qr_set0", "qr_set1", "qr_commit_wave")
+    assert {"qr_pass", "bank_root", "qr_commit"} <= {s for s, _ in lin.streams}
     assert "qr_level" not in regions  # (the wave as its own region: designs without lin_level)
     model = WindowUpdateModel(stream.layout, HlsConfig(scalar="double", design=WAVE))
-    ch = {c.name: c for c in model.plan.channels if c.name in ("qr_pass", "bank_root")}
+    ch = {c.name: c for c in model.plan.channels
+          if c.name in ("qr_pass", "bank_root", "qr_commit")}
     assert (ch["qr_pass"].producer, ch["qr_pass"].consumer) == ("qr_set0", "qr_set1")
     assert (ch["bank_root"].producer, ch["bank_root"].consumer) == ("datapaths", "qr_set1")
+    # step 0's commit: its collector's words to the process that writes COND and NF
+    assert (ch["qr_commit"].producer, ch["qr_commit"].consumer) == ("qr_set0", "qr_commit_wave")
     t = stream.layout.template
     c0, _ = t.schedule.levels[-2]
     sc = sum(t.schedule.steps[c0].separator_dims)
-    assert ch["qr_pass"].depth == t.schedule.steps[c0].new_factor_rows * (sc + 1)
+    # every passed row, two words a stream word (the root's set reads two a cycle)
+    assert ch["qr_pass"].depth == t.schedule.steps[c0].new_factor_rows * ((sc + 2) // 2)
+    assert ch["qr_pass"].width == 2 * ch["qr_commit"].width
     assert f"variable=qr_pass depth={ch['qr_pass'].depth}" in text
     assert f"variable=bank_root depth={ch['bank_root'].depth}" in text
 

@@ -667,6 +667,33 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
     FGC_CYCLES("commit", 0, "nf", (nu + PORTS - 1) / PORTS, CFG::MOVE_II, CFG::MOVE_DEPTH);
 }
 
+// A unit set's result for step s into COND and NF as its collector writes it (lin_level's root
+// step in a wavefront: set 0's step, fgc_qr.h's COMMIT stream), a word a cycle: nc words of the
+// conditional, then nu of the new factor (fgc_qr.h's qr_collected_words), in qr_commit's order
+// and places. One process of the region beside the set: it ends as the set's collector writes
+// its last passed row, before the set's last region ends.
+template <class CFG>
+void qr_commit_stream(int s, int nc, int nu, hls::stream<typename CFG::T>& q) {
+    enum { TRIP_C = 2 * CFG::TRIP_COND, TRIP_N = 2 * CFG::TRIP_UPDATE };  // (a word a cycle)
+    const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
+    for (int i = 0; i < nc; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=TRIP_C
+#pragma HLS PIPELINE II=1
+        const typename CFG::T v = q.read();
+        COND[c0 + i] = v;
+#ifdef FGC_SPEC_MARGINAL  // the leaving keyframe's conditional twice (the stream's KEEP_COND)
+        if (s == SPEC_STEP) KEEP_COND[i] = v;
+#endif
+    }
+    FGC_CYCLES("commit", 0, "cond_stream", nc, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    for (int i = 0; i < nu; ++i) {
+#pragma HLS LOOP_TRIPCOUNT max=TRIP_N
+#pragma HLS PIPELINE II=1
+        NF[n0 + i] = q.read();
+    }
+    FGC_CYCLES("commit", 0, "nf_stream", nu, CFG::MOVE_II, CFG::MOVE_DEPTH);
+}
+
 // Whether the kernel's SETS runs the root step in a wavefront (HlsConfig root_wave: it declares
 // WAVE_ROOT_LEVEL); a kernel without it eliminates level by level.
 template <class X>

@@ -128,6 +128,12 @@ struct qr_word {
     int idx;
 };
 
+// The root step in a wavefront: a stream word of the fed child's passed rows (qr_collect's
+// writes, qr_feed_row's reads), QR_PASS_WORDS words of one row.
+enum { QR_PASS_WORDS = 2 };
+template <class T>
+struct qr_pass_word { T pw[QR_PASS_WORDS]; };
+
 // Two words of a Householder vector a cycle (FGC_QR_TWO_ROWS: the Update units take two rows a
 // cycle): from the broadcast the header {0, 0, n, ne} (n active rows, ne of the words below the
 // pivot on even rows), then the pairs {v_e, v_o, row_e, row_o}, the t-th even-row and the t-th
@@ -1109,15 +1115,22 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 // column's entry from the Evaluate, the rest from the Update units in column order), into cond
 // (j < f) or update (f <= j < f + nf), and its largest magnitude into the running scale (a
 // function argument read before it is written).
-// PASS: qr_no_pass (nothing more), or the wave's stream (hls::stream<T>) that also takes each
-// passed row's words (f <= j < f + nf) as they are written into update, where `pass`. coff:
-// the conditional's first word in cond (the wave's root: after its set's own step's).
-template <class CFG, class PASS>
+// PASS: qr_no_pass (nothing more), or the wave's stream (hls::stream<qr_pass_word<T> >) that
+// also takes each passed row's words (f <= j < f + nf) as they are written into update, where
+// `pass`, QR_PASS_WORDS of them a stream word (the row's s + 1 words in pairs, the last pair's
+// second word 0 when s + 1 is odd: the root's set reads two a cycle, qr_feed_row). COMMIT:
+// qr_no_commit, or (lin_level's wave, set 0) a stream (hls::stream<T>) that takes, where
+// `pass`, every word written into cond and then update, in that order (the conditional's f
+// rows of w + 1 words, then the new factor's nf rows of s + 1: qr_commit's order), which
+// lin_level's commit process writes into COND and NF as they come (qr_commit_stream), so that
+// no commit loop follows the step. coff: the conditional's first word in cond (the wave's
+// root: after its set's own step's).
+template <class CFG, class PASS, class COMMIT>
 void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::T>& rq,
                 hls::stream<typename CFG::T>& exq, hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
                 typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale,
-                PASS& passq, bool pass, int coff) {
+                PASS& passq, bool pass, COMMIT& commitq, int coff) {
     typedef typename CFG::T T;
     const int w = f + s, cols = w + 1;
     const int last = rows < w ? rows : w;
@@ -1126,6 +1139,7 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
     FGC_CYCLES("qr_collect", 0, "header", 1, 1, 1);
     if (j < 0 || j >= k) return;
     T big = *scale;
+    T held = T(0);  // a passed row's even word, out with the odd one after it
     // from the row's first column out (0 in cond, f in update: zeros left of the diagonal, as
     // the parent's assembly copies whole rows) to the right-hand side:
     // trip w + 1 - first, II 1, depth 2 (read, compare)
@@ -1146,9 +1160,20 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
         }
         if (j < f) {
             cond[coff + j * cols + c] = x;
+            if (pass) commitq.write(x);
         } else if (j - f < nf) {
-            update[(j - f) * (s + 1) + (c - f)] = x;
-            if (pass) passq.write(x);
+            const int q = c - f;
+            update[(j - f) * (s + 1) + q] = x;
+            if (pass) {
+                commitq.write(x);
+                if ((q & 1) == 1 || c == cols - 1) {  // a pair out (its odd word, or the last)
+                    qr_pass_word<T> word;
+                    word.pw[0] = (q & 1) == 1 ? held : x;
+                    word.pw[1] = (q & 1) == 1 ? x : T(0);
+                    passq.write(word);
+                }
+                held = x;
+            }
         }
         const T mag = qr_abs(x);
         big = mag > big ? mag : big;
@@ -1158,7 +1183,7 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
 }
 
 // One reflection: the DATAFLOW region (see the top of the file).
-template <class CFG, class PASS>
+template <class CFG, class PASS, class COMMIT>
 void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + QR_VEC_SLACK],
                    const qr_word<typename CFG::T> hin[2],
@@ -1168,7 +1193,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                    typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
                    typename CFG::T* scale, typename CFG::T evec[CFG::MAX_ROWS], PASS& passq,
-                   bool pass, int coff) {
+                   bool pass, COMMIT& commitq, int coff) {
 #pragma HLS DATAFLOW
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
     hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS];
@@ -1194,8 +1219,8 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_finish<CFG>(hin, k, tq, etq, rq);
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
     qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout, evec);
-    qr_collect<CFG, PASS>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale, passq, pass,
-                          coff);
+    qr_collect<CFG, PASS, COMMIT>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale, passq,
+                                  pass, commitq, coff);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
     FGC_DRAINED(tq, CFG::N_UNITS);
     FGC_DRAINED(&colq[0][0], 2 * CFG::N_UNITS);
@@ -1229,9 +1254,34 @@ bool qr_pivot_check(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int 
 // A passed-row sink and source that pass nothing (qr_step: every step but the wave's two).
 template <class T>
 struct qr_no_pass {
-    void write(const T&) {}
-    T read() { return T(0); }
+    void write(const qr_pass_word<T>&) {}
+    qr_pass_word<T> read() {
+        qr_pass_word<T> w;
+        w.pw[0] = T(0);
+        w.pw[1] = T(0);
+        return w;
+    }
 };
+// A sink for the words a collector writes that takes none (qr_step: every step but lin_level's
+// wave's set 0, whose collector streams them to its commit process).
+template <class T>
+struct qr_no_commit {
+    void write(const T&) {}
+};
+
+// The words qr_collect writes into cond (nc) and then update (nu) for a step of `rows` rows, f
+// frontal and s separator columns (none outside the configuration: qr_step_io computes nothing).
+template <class CFG>
+void qr_collected_words(int rows, int f, int s, int* nc, int* nu) {
+    const int cols = f + s + 1;
+    const bool ok = rows >= 0 && f >= 0 && s >= 0 && rows <= CFG::MAX_ROWS &&
+                    cols <= CFG::MAX_COLS && f <= CFG::MAX_F;
+    const int k = rows < cols ? rows : cols;
+    const int last = rows < f + s ? rows : f + s;
+    const int nf = last - f > 0 ? last - f : 0;
+    *nc = ok ? (k < f ? k : f) * cols : 0;
+    *nu = ok ? nf * (s + 1) : 0;
+}
 template <class PASS>
 struct qr_passes {
     enum { value = 1 };
@@ -1244,21 +1294,30 @@ struct qr_passes<qr_no_pass<T> > {
 // The root step in a wavefront (fgc_eliminate.h's qr_eliminate_all with CFG::WAVE): before its
 // region j the root's unit set reads the fed child's passed rows whose entry[i] <= j (the
 // region that first needs row i: units/qr.py's wave_entries), row i's s + 1 words in order
-// into the root's row row0 + i, word q at the root's column colmap[q]. A row's read waits for
-// the child's region that wrote it (fgc_cycles.h's FGC_WAVE_WAIT): trip s + 1, II 1, depth 2.
+// into the root's row row0 + i, word q at the root's column colmap[q], QR_PASS_WORDS words a
+// cycle (a stream word; both of one row, so at most two into any bank memory a cycle: its two
+// ports, as the fill's). A row's read waits for the child's region that wrote it
+// (fgc_cycles.h's FGC_WAVE_WAIT): trip ceil((s + 1) / 2), II 1, depth 2.
 template <class CFG, class FEED>
 void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
                  int row, const int colmap[CFG::MAX_COLS], int words, int i) {
     (void)i;  // (the count's key only)
     FGC_WAVE_WAIT(i);
-    for (int q = 0; q < words; ++q) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
+    const int pairs = (words + QR_PASS_WORDS - 1) / QR_PASS_WORDS;
+    for (int p = 0; p < pairs; ++p) {
+#pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_COLS + 1) / 2
 #pragma HLS PIPELINE II=1
-        const typename CFG::T x = feedq.read();
-        const int t = colmap[q];
-        work[t % CFG::N_UNITS][row][t / CFG::N_UNITS] = x;
+        const qr_pass_word<typename CFG::T> x = feedq.read();
+        for (int h = 0; h < QR_PASS_WORDS; ++h) {
+#pragma HLS UNROLL
+            const int q = QR_PASS_WORDS * p + h;
+            if (q < words) {
+                const int t = colmap[q];
+                work[t % CFG::N_UNITS][row][t / CFG::N_UNITS] = x.pw[h];
+            }
+        }
     }
-    FGC_CYCLES("qr_feed", 0, "wave_row", words, 1, 2);
+    FGC_CYCLES("qr_feed", 0, "wave_row", pairs, 1, 2);
 }
 
 // qr_step with the wave's ends: PASS (the fed child's set: where `pass`, its passed rows out as
@@ -1266,11 +1325,13 @@ void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][
 // root's set: nfed rows of `words` words read before the regions that need them); qr_no_pass
 // for neither. A unit set calls it from one site, so its units are one RTL copy whatever it runs.
 // coff: the conditional's first word in cond (lin_level's wave: the root's after step c1's).
-template <class CFG, class PASS, class FEED>
+// COMMIT (qr_collect's commitq, where `pass`): lin_level's wave's set 0 streams its step's
+// words to its commit process as its collector writes them.
+template <class CFG, class PASS, class FEED, class COMMIT>
 void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows,
                 int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular,
-                PASS& passq, bool pass, FEED& feedq, const int entry[CFG::MAX_COLS],
+                PASS& passq, bool pass, COMMIT& commitq, FEED& feedq, const int entry[CFG::MAX_COLS],
                 const int colmap[CFG::MAX_COLS], int row0, int nfed, int words,
                 int coff = 0) {
     typedef typename CFG::T T;
@@ -1301,7 +1362,7 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
 #pragma HLS ARRAY_PARTITION variable=evec cyclic factor=2
     // the two parity call sites below are exclusive and sequential: one RTL copy of the region
     // serves both (UG1399, ALLOCATION of a function: one instance for its call sites)
-#pragma HLS ALLOCATION function instances=qr_reflection<CFG,PASS> limit=1
+#pragma HLS ALLOCATION function instances=qr_reflection<CFG,PASS,COMMIT> limit=1
     int fed = 0;
     for (int j = -1; j < k; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
@@ -1310,11 +1371,11 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
             qr_feed_row<CFG, FEED>(feedq, work, row0 + fed, colmap, words, fed);
         }
         if (((j + 1) & 1) == 0) {
-            qr_reflection<CFG, PASS>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond, update,
-                                     &scale, evec, passq, pass, coff);
+            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond,
+                                             update, &scale, evec, passq, pass, commitq, coff);
         } else {
-            qr_reflection<CFG, PASS>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond, update,
-                                     &scale, evec, passq, pass, coff);
+            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond,
+                                             update, &scale, evec, passq, pass, commitq, coff);
         }
         FGC_SEQUENTIAL();
         if (qr_passes<PASS>::value && pass && j >= f && j - f < nf) FGC_WAVE_READY(j - f);
@@ -1327,9 +1388,11 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
              int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
              typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular) {
     qr_no_pass<typename CFG::T> none;
+    qr_no_commit<typename CFG::T> kept;
     const int nothing[CFG::MAX_COLS] = {0};
-    qr_step_io<CFG, qr_no_pass<typename CFG::T>, qr_no_pass<typename CFG::T> >(
-        work, rows, f, s, cond, update, singular, none, false, none, nothing, nothing, 0, 0, 0);
+    qr_step_io<CFG, qr_no_pass<typename CFG::T>, qr_no_pass<typename CFG::T>,
+               qr_no_commit<typename CFG::T> >(work, rows, f, s, cond, update, singular, none,
+                                                false, kept, none, nothing, nothing, 0, 0, 0);
 }
 
 }  // namespace fgc_units

@@ -34,6 +34,7 @@ from fgc_backends.hls.units.qr import (
     lin_wave_loops,
     qr_unit_loops,
     stack_loops,
+    wave_commit_loops,
     wave_loops,
     wave_steps,
 )
@@ -543,10 +544,10 @@ class WindowUpdateModel:
             if self._wave is None:
                 region = lin_level_cycles(t, kernel_timing(self.plan.ops), jac, sets, counts)
             else:
-                commit0, hide = self._wave_hidden(zero, unit)
-                sets[0] = (sets[0][0], sets[0][1], sets[0][2] + commit0)
+                hide = self._wave_hidden(zero, unit)
                 region = lin_wave_region(t, kernel_timing(self.plan.ops), jac, sets,
-                                         self._wave_loops(procs), counts)
+                                         self._wave_loops(procs), counts, wave_commit_loops(
+                                             _tables(t), self._wave[0], kernel_timing(self.les)))
                 hidden += hide
             self._beside[key] = (region - self.solve_linearize(counts is not None), hidden)
         added, level = self._beside[key]
@@ -574,11 +575,12 @@ class WindowUpdateModel:
                                   loops, start0, start1, fill, ends[wait])
         return run
 
-    def _wave_hidden(self, zero: frozenset, unit: frozenset) -> tuple[int, int]:
-        """Step c0's commit (set 0's, inside lin_level with the wave) and what the solve no
-        longer runs once the sets reflected the root inside lin_level: the root's level (its
-        region on this update's non-zero rows), its stack and step c0's commit (the plan's
-        loops of both, moved into the sets' processes), and step c1's passed rows into NF."""
+    def _wave_hidden(self, zero: frozenset, unit: frozenset) -> int:
+        """What the solve no longer runs once the sets reflected the root inside lin_level:
+        the root's level (its region on this update's non-zero rows), its stack (the plan's
+        loops, moved into set 1's process), step c0's commit (set 0's collector writes COND and
+        NF as it writes its buffers: fgc_qr.h's COMMIT, no loop of its own) and step c1's
+        passed rows into NF."""
         t = self.layout.template
         c0, c1, root = self._wave
         rows = self.plan.options.qr_rows
@@ -591,7 +593,7 @@ class WindowUpdateModel:
         commit = commits[f"commit{c0}"].cycles
         # (step c1's passed rows into NF: no one reads them, the root took them from UPDBUF1)
         nf = sum(lp.cycles for lp in commits[f"commit{c1}"].loops if lp.name == "nf")
-        return commit, phase_cycles(last) + stack.cycles + commit + nf
+        return phase_cycles(last) + stack.cycles + commit + nf
 
     def _stream_phases(self, kt: dict, lt: dict, mv_ii: int) -> tuple[Phase, ...]:
         """The stream section's loops (accel.cpp.jinja's stream top), one phase per part an

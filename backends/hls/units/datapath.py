@@ -134,7 +134,8 @@ def _linearize_clocks(program, timing: dict, jac: list[Process],
 
 def lin_level_cycles(program, timing: dict, jac: list[Process],
                      sets: list[tuple[str, Loop, int]],
-                     counts: dict[int, int] | None = None) -> int:
+                     counts: dict[int, int] | None = None,
+                     beside: tuple[Loop, ...] = ()) -> int:
     """The window's one-step linearisation with level 0's unit sets beside it (accel.cpp.jinja's
     lin_level, one DATAFLOW region): :func:`linearize_region`'s two processes and one per unit
     set, ``sets``: (the datapath loop after which its step's rows are all sent,
@@ -144,33 +145,44 @@ def lin_level_cycles(program, timing: dict, jac: list[Process],
     its step follows. The region takes what fgc_cycles.h's region rule gives: the slowest
     process plus the others' fills (each's first loop's depth), and no less than where any
     process's clock ends. ``counts``: instances per block type (default: all; the one-step
-    solve's once keyframe 0 has left: :func:`solve_skip`)."""
+    solve's once keyframe 0 has left: :func:`solve_skip`). ``beside``: the loops of one more
+    process of the region, from its start (the wave's commit of set 0's step, units/qr.py's
+    ``wave_commit_loops``)."""
     c = _linearize_clocks(program, timing, jac, counts)
     zero = c["zero"]
     totals = [c["e_sum"], c["g_sum"]] + [fill.cycles + step for _, fill, step in sets]
     firsts = [c["e_fill"], zero.depth if zero.trip > 0 else 0] + [fill.depth for _, fill, _ in sets]
+    run = [lp for lp in beside if lp.trip > 0]
+    if run:
+        totals.append(sum(lp.cycles for lp in run))
+        firsts.append(run[0].depth)
     slowest = max(range(len(totals)), key=lambda k: (totals[k], -k))
     region = totals[slowest] + sum(f for k, f in enumerate(firsts) if k != slowest)
     ends = [c["e_sum"], c["g_clock"]] + [
         max(fill.cycles, c["e_ends"][wait] + fill.depth) + step for wait, fill, step in sets]
-    return max(region, *ends)
+    return max(region, *ends, *totals[len(totals) - len(run):])
 
 
 def lin_wave_region(program, timing: dict, jac: list[Process],
                     sets: list[tuple[str, Loop, int]], wave,
-                    counts: dict[int, int] | None = None) -> int:
+                    counts: dict[int, int] | None = None,
+                    commit: tuple[Loop, ...] = ()) -> int:
     """:func:`lin_level_cycles` with the root step in a wavefront inside the region
-    (units/qr.py's ``lin_wave``; ``sets``' set 0 its QR step and then its commit, which set 0
-    runs while set 1 reflects the root; its rows are final at its QR step's region ends): set
+    (units/qr.py's ``lin_wave``; ``sets``' set 0 its QR step, whose collector commits it as it
+    writes it; its rows are final at its QR step's region ends): set
     1's step is its whole process after its fill (``wave(start0, start1, ready)``: units/qr.py's
     ``lin_wave_loops`` from set 0's and set 1's starts, the cycles of the region at which their
     fills end, and the end of each datapath loop, ``ready``), the rest as lin_level_cycles.
-    ``counts``: instances per block type (default: all), as lin_level_cycles."""
+    ``counts``: instances per block type (default: all), as lin_level_cycles. ``commit``: the
+    loops of the process that writes set 0's step into COND and NF as its collector streams it
+    (units/qr.py's ``wave_commit_loops``; counted from the region's start, as fgc_cycles.h
+    counts a process without waits: it ends as set 0's last passed row is written, before set
+    0's last region ends)."""
     c = _linearize_clocks(program, timing, jac, counts)
     starts = [max(fill.cycles, c["e_ends"][w] + fill.depth) for w, fill, _ in sets]
     span = sum(lp.cycles for lp in wave(starts[0], starts[1], c["e_ends"]))
     return lin_level_cycles(program, timing, jac, [sets[0], (sets[1][0], sets[1][1], span)],
-                            counts)
+                            counts, commit)
 
 
 def datapath_order(program, opts=None) -> list[int]:

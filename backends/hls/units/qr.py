@@ -346,9 +346,10 @@ def lin_wave(program, opts) -> tuple[int, int, int] | None:
     linearisation, :func:`rows_in_banks`): :func:`wave_steps`' ``(c0, c1, root)`` when the
     wave's children are level 0's two steps (the schedule's two levels), None when the design
     runs the wave as the qr_level region (no lin_level) or has no wave. Unit set 0's process of
-    lin_level then reflects c0, its collector streaming c0's passed rows to set 1, and commits
-    c0; set 1's fills its banks with c1's rows, reflects c1, takes the root's own rows from
-    their stream (the datapaths send them as they write them), stacks c1's passed rows from its
+    lin_level then reflects c0, its collector streaming c0's passed rows to set 1 and its words
+    to the commit process (:func:`wave_commit_loops`, no commit loop after its last region);
+    set 1's fills its banks with c1's rows, reflects c1, takes the root's own rows from their
+    stream (the datapaths send them as they write them), stacks c1's passed rows from its
     UPDBUF, and reflects the root reading c0's passed rows as set 0 finishes them
     (:func:`lin_wave_loops`), the root's conditional into CONDBUF1 after c1's (twice the
     words)."""
@@ -360,6 +361,34 @@ def lin_wave(program, opts) -> tuple[int, int, int] | None:
                         f"root's children must be level 0's steps, the schedule has "
                         f"{len(program.schedule.levels)} levels")
     return wave
+
+
+PASS_WORDS = 2  # fgc_qr.h's QR_PASS_WORDS: words of a passed row in one qr_pass stream word
+
+
+def pass_words(tables: dict, c0: int) -> int:
+    """Stream words of one passed row of step ``c0`` on ``qr_pass`` (its s + 1 words,
+    :data:`PASS_WORDS` a stream word: fgc_qr.h's qr_collect writes them, qr_feed_row reads them
+    two a cycle)."""
+    return -(-(tables["STEP_W"][c0] - tables["STEP_F"][c0] + 1) // PASS_WORDS)
+
+
+def pass_channel(tables: dict, c0: int, word_bits: int) -> Channel:
+    """The wave's ``qr_pass`` stream (set 0's collector to set 1's root): every passed row of
+    step ``c0`` (set 0 never waits for set 1), :data:`PASS_WORDS` words a stream word."""
+    return Channel("qr_pass", "stream", tables["STEP_NF_ROWS"][c0] * pass_words(tables, c0),
+                   PASS_WORDS * word_bits, "qr_set0", "qr_set1")
+
+
+def wave_commit_loops(tables: dict, c0: int, timing: dict) -> tuple[Loop, ...]:
+    """lin_level's commit process of step ``c0`` (the wave's set 0: accel.cpp.jinja's
+    qr_commit_wave, fgc_eliminate.h's qr_commit_stream): the words set 0's collector streams as
+    it writes its buffers, a word a cycle into COND (f rows of w + 1) and NF (STEP_NF_ROWS rows
+    of s + 1) - the step's commit, no loop after its last region (:func:`commit_loops`' words,
+    one a cycle)."""
+    w, f = tables["STEP_W"][c0], tables["STEP_F"][c0]
+    return (kernel_loop("cond_stream", f * (w + 1), "move", timing),
+            kernel_loop("nf_stream", tables["STEP_NF_ROWS"][c0] * (w - f + 1), "move", timing))
 
 
 def _tables_of(program) -> dict:
@@ -467,17 +496,18 @@ def wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: bool,
 def _root_regions(tables: dict, timing: dict, c0: int, root: int, loops: dict, clock: int,
                   offset: int) -> tuple[Loop, ...]:
     """The root's regions (``loops[root]``) on unit set 1 from ``clock``, before each the reads
-    of step ``c0``'s passed rows it needs (:func:`wave_entries`): one loop of s + 1 words a row
-    (II 1, depth 2) ending no earlier than its depth after c0's region that wrote the row
-    (reflection f + i's on set 0's clock ``loops[c0]``, which starts ``offset`` cycles after set
-    1's; ``wave_wait``: the cycles the read waits past its own), then the pivot check."""
+    of step ``c0``'s passed rows it needs (:func:`wave_entries`): one loop of
+    :func:`pass_words` stream words a row, two words each (II 1, depth 2), ending no earlier
+    than its depth after c0's region that wrote the row (reflection f + i's on set 0's clock
+    ``loops[c0]``, which starts ``offset`` cycles after set 1's; ``wave_wait``: the cycles
+    the read waits past its own), then the pivot check."""
     out = []
     ends, t = [], offset
     for lp in loops[c0]:
         t += lp.cycles
         ends.append(t)
     f0 = tables["STEP_F"][c0]
-    entry = kernel_loop("wave_row", tables["STEP_W"][c0] - f0 + 1, "move", timing)
+    entry = kernel_loop("wave_row", pass_words(tables, c0), "move", timing)
     when = wave_entries(tables, c0, root)
     regions = list(loops[root])
     nxt = 0
@@ -582,9 +612,10 @@ def _levels(ctx, sets, by_index, damping) -> None:
         # as without it (the update model's qr_beside_linearize takes the region with the
         # root inside), its two streams to unit set 1
         c0, c1, root = wave
-        ctx.channels.append(Channel("qr_pass", "stream", tables["STEP_NF_ROWS"][c0] * (
-            tables["STEP_W"][c0] - tables["STEP_F"][c0] + 1), ops.word_bits,
-            "qr_set0", "qr_set1"))
+        ctx.channels.append(pass_channel(tables, c0, ops.word_bits))
+        # step c0's words from set 0's collector to the commit process (wave_commit_loops)
+        ctx.channels.append(Channel("qr_commit", "stream", 2, ops.word_bits, "qr_set0",
+                                    "qr_commit_wave"))
         root_words = _root_bank_words(tables, root)
         ctx.channels.append(Channel("bank_root", "stream", root_words, 2 * ops.word_bits + 64,
                                     "datapaths", "qr_set1"))
@@ -614,9 +645,7 @@ def _levels(ctx, sets, by_index, damping) -> None:
                        Process(f"qr{li}_set1", "set1", wave_loops(
                            tables, timing, opts.units, max_w, damping, wave, loops)))]
             level = (c0, root)  # committed after the region (c1 in set 1's process)
-            ctx.channels.append(Channel("qr_pass", "stream", tables["STEP_NF_ROWS"][c0] * (
-                tables["STEP_W"][c0] - tables["STEP_F"][c0] + 1), ops.word_bits,
-                "qr_set0", "qr_set1"))
+            ctx.channels.append(pass_channel(tables, c0, ops.word_bits))
         if len(chunks) == 1:
             ctx.add_phase("solve", Phase(f"qr_level{li}", True, chunks[0], linear=True))
         else:
