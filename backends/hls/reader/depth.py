@@ -1,16 +1,17 @@
 """The factor datapaths' depth as Vitis would schedule the emitted text.
 
 Each factor datapath function (``factor_<b>``: the Jacobian mode, ``factor_cost_<b>``: the cost
-mode) is a straight list of statements: ``const T tK = <expr>;``, an SO(3) logarithm's
-``T tlogK[3]; so3_log(<args>, tlogK);`` and its outputs (``raw[i] = <expr>;``,
-``half[i] = <expr>;``). This module reads them back with its own parse of C++ expressions
-(precedence and left-to-right associativity as the language defines them: ``a + b + c`` is
-``(a + b) + c``) and schedules them as soon as their operands are ready, each operator taking
-its latency in the project's operator table (``run_hls.tcl``'s part, clock and binding:
-:func:`~fgc_backends.hls.reader.design.emitted_ops`). Vitis HLS does not reassociate
-floating-point operations (UG1399: they are not associative; the tool keeps the order the
-source gives), so a function's depth is the latest of its outputs: what its pipeline's depth
-is at least, whatever the ``ALLOCATION`` limits add.
+mode) and each state-update datapath (``retract_<k>``) is a straight list of statements:
+``const T tK = <expr>;``, an SO(3) logarithm's ``T tlogK[3]; so3_log(<args>, tlogK);`` and its
+outputs (``raw[i] = <expr>;``, ``half[i] = <expr>;``, ``out[i] = <expr>;``). This module reads
+them back with its own parse of C++ expressions (precedence and left-to-right associativity as
+the language defines them: ``a + b + c`` is ``(a + b) + c``) and schedules them as soon as their
+operands are ready, each operator taking its latency in the project's operator table
+(``run_hls.tcl``'s part, clock and binding: :func:`~fgc_backends.hls.reader.design.emitted_ops`).
+Vitis HLS does not reassociate floating-point operations (UG1399, "Optimizing Logic
+Expressions": expression balancing is off for floating-point operations unless
+``config_compile -unsafe_math_optimizations``), so a function's depth is the latest of its
+outputs: what its pipeline's depth is at least, whatever the ``ALLOCATION`` limits add.
 
 Calls: ``fgc_sqrt`` a square root; ``fgc_sin`` / ``fgc_cos`` / ``fgc_tan`` one sine or cosine;
 ``fgc_atan2`` / ``fgc_atan`` / ``fgc_asin`` / ``fgc_acos`` an arctangent; ``fgc_exp`` /
@@ -32,7 +33,7 @@ from collections.abc import Callable, Iterable
 from fgc_backends.cfamily.lint import LintIssue
 from fgc_backends.hls.reader.text import strip_comments
 
-_FUNCTION = re.compile(r"\bvoid\s+(factor(?:_cost)?_\d+)\s*\(([^)]*)\)\s*\{")
+_FUNCTION = re.compile(r"\bvoid\s+(factor(?:_cost)?_\d+|retract_\d+)\s*\(([^)]*)\)\s*\{")
 _TOKEN = re.compile(r"\s*(?:(\d+\.\d*(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?|\d+(?:[eE][-+]?\d+)?)"
                     r"|([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)|(\S))")
 # call -> operator kind of the project's table (None: free)

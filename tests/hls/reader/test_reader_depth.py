@@ -1,10 +1,10 @@
 """The factor datapaths' depth read back from the emitted text (reader/depth.py) against the
-plan's (cost.kernels.critical_path, the datapaths' instance loops): Vitis does not reassociate
-floating-point operations, so a flat ``a + b + c + d`` is a chain of three adders; the HLS
-printer prints every sum and product as the reduction tree the plan prices (cfamily/trees.py),
-and the reader, which parses the C++ on its own, must find no datapath deeper than its plan
-loop. The golden designs were printed flat before: the reader found the IMU block's Jacobian
-664 cycles deep where the plan priced 621 (LIO, float32)."""
+plan's (cost.kernels.critical_path, the datapaths' instance loops; the retractions' too): Vitis
+does not reassociate floating-point operations, so a flat ``a + b + c + d`` is a chain of three
+adders; the HLS printer prints every sum and product as the reduction tree the plan prices
+(cfamily/trees.py), and the reader, which parses the C++ on its own, must find no datapath
+deeper than its plan loop. The golden designs were printed flat before: the reader found the IMU
+block's Jacobian 664 cycles deep where the plan priced 621 (LIO, float32)."""
 
 from __future__ import annotations
 
@@ -19,6 +19,7 @@ from fgc.compile import compile_graph
 from fgc.compiler.kernel import Kernel
 from fgc.ir.program import KernelText, SolverConfig
 from fgc_backends.cfamily.printer import UnsupportedExpressionError, print_kernel
+from fgc_backends.cfamily.retract import retract_kernel, variable_class
 from fgc_backends.cost.kernels import critical_path, kernel_latencies
 from fgc_backends.cost.params import FLOAT32, view
 from fgc_backends.hls import HlsConfig
@@ -134,11 +135,15 @@ def test_the_golden_lio_datapaths_are_as_deep_as_their_critical_paths(lio_golden
     for b, block in enumerate(program.blocks):
         priced[f"factor_{b}"] = critical_path(block.kernel, ops)
         priced[f"factor_cost_{b}"] = critical_path(block.cost_kernel, ops)
+    for k, name in enumerate(dict.fromkeys(v.type_name for v in program.variables)):
+        priced[f"retract_{k}"] = critical_path(
+            KernelText.of(retract_kernel(variable_class(name))), ops)
     assert set(read) == set(priced)
     assert check_depths(read, priced) == []
     imu = next(i for i, b in enumerate(program.blocks) if b.name.startswith("CombinedImu"))
     assert read[f"factor_{imu}"] == priced[f"factor_{imu}"] == 621
     assert read[f"factor_cost_{imu}"] == 596 and priced[f"factor_cost_{imu}"] == 600
+    assert read["retract_0"] == priced["retract_0"] == 203  # Pose3's (flat: 207)
     flat = {f"factor_{b}": function_depth(_body(block.kernel.kernel(), None),
                                           table_latency(table))
             for b, block in enumerate(program.blocks)}
@@ -157,7 +162,7 @@ def test_the_golden_lio_datapaths_are_no_deeper_than_their_plan_loops(lio_golden
     plan = build_plan(program, PlanOptions.for_config(HlsConfig(), program))
     priced = priced_depths(plan, program)
     assert set(priced) == {f"factor{m}_{b}" for b in range(len(program.blocks))
-                           for m in ("", "_cost")}
+                           for m in ("", "_cost")} | {"retract_0", "retract_1", "retract_2"}
     read = datapath_depths(files, table_latency(emitted_ops(GOLDEN / "lio")(plan.precision)))
     assert check_depths(read, priced) == []
     assert all(priced[k] >= read[k] for k in priced)
