@@ -46,6 +46,7 @@ from fgc_backends.hls.reader import (
     emitted_ops,
     read_design,
 )
+from fgc_backends.hls.reader.depth import check_depths, datapath_depths, table_latency
 from fgc_backends.hls.reader.design import _design, _Reader
 
 # the rules issue 32's second-reader task added (their findings are printed, not only counted)
@@ -77,6 +78,19 @@ def around_dsp(cost) -> int:
     return sum(d for unit, d in cost.dsp_by_unit if not OWN_HEADERS.fullmatch(unit))
 
 
+def depth_reading(files, name: str, ops_of, precision: str, plan, program) -> tuple[dict, list]:
+    """The factor datapath functions of the kernel ``<name>.cpp`` as deep as the reader
+    schedules their text (reader.depth) beside the depth their plan loops are priced with
+    (``plan.report.datapath_depths``): ({function: (read, priced)}, check_depths' issues)."""
+    from fgc_backends.hls.plan.report import datapath_depths as priced_depths
+
+    kernel = [(k, t) for k, t in files if k == f"{name}.cpp"]
+    read = datapath_depths(kernel, table_latency(ops_of(precision)))
+    priced = priced_depths(plan, program)
+    return ({k: (read.get(k), v) for k, v in priced.items()},
+            [str(i) for i in check_depths(read, priced, f"{name}.cpp")])
+
+
 def measure(program, config: HlsConfig, out: Path) -> dict:
     from fgc_backends.hls.emitter import for_program
 
@@ -95,6 +109,7 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
     # (config_op), read from the text, not the plan
     dsp_of = dsp_table(emitted_ops(out), precision)
     around_files = (*AROUND, f"{program.name}.cpp")
+    _, deeper = depth_reading(files, program.name, emitted_ops(out), precision, plan, program)
     return dict(plan_dsp=cost.dsp, plan_bram36=cost.bram36, plan_cycles=cost.cycles,
                 reader_dsp=design.dsp(dsp_of),
                 plan_around=around_dsp(cost), reader_around=design.dsp(dsp_of, around_files),
@@ -107,6 +122,7 @@ def measure(program, config: HlsConfig, out: Path) -> dict:
                 findings=[str(i) for i in strict if i.rule in NEW_RULES],
                 around=len(mine),
                 others=sorted({f"{i.file}:{i.line}" for i in issues if i not in mine}),
+                deeper=deeper,
                 worst=max((r.ii_bound / r.ii for r in design.reached_loops if r.ii_known),
                           default=1.0))
 
@@ -150,6 +166,8 @@ def measure_stream(n: int, out: Path, config=None, units: int | None = None,
     window = _design(reader, f"{name}_top").dsp(dsp_of)
     total = design.dsp(dsp_of)
     issues = check(design.reached_loops, strict=True)
+    depths, deeper = depth_reading(files, name, emitted_ops(out), "float32", pricer.model.plan,
+                                   pricer.model.layout.template)
     plan_parts = {k: d for k, (d, _) in res["parts"].items()}
     modules = dict(design.modules)
     return dict(plan_dsp=res["dsp"], reader_dsp=total, plan_bram36=res["bram36"],
@@ -165,7 +183,7 @@ def measure_stream(n: int, out: Path, config=None, units: int | None = None,
                 allocation=sum(i.rule == "ii_allocation" for i in issues),
                 false_claims=sum(i.rule == "dependence_false" for i in issues),
                 unproven=sum(i.rule == "dependence_unproven" for i in issues),
-                issues=[str(i) for i in issues],
+                issues=[str(i) for i in issues], depths=depths, deeper=deeper,
                 copies={k: modules.get(k, 0) for k in ("eliminate_all", "linearize_all",
                                                        "back_substitute_at", "qr_update",
                                                        "keyframe_pass", "kept_matvec",
@@ -259,6 +277,7 @@ def main(argv=None) -> int:
           f"{'alloc':>5s} {'false dep':>9s} {'unproven':>8s} "
           f"{'worst II':>8s} {'check_dsp':>9s} {'around':>6s} {'plan/reader DSP around':>22s}")
     others = set()
+    deeper: set[str] = set()
     findings: dict[str, list[str]] = {}
     for name, m, _ in rows:
         print(f"{name:42s} {m['plan_dsp']:9d} {m['reader_dsp']:10d} "
@@ -268,6 +287,7 @@ def main(argv=None) -> int:
               f"{m['worst']:7.2f}x {'pass' if m['dsp_ok'] else 'FAIL':>9s} {m['around']:6d} "
               f"{m['plan_around']:>10d} / {m['reader_around']:<9d}")
         others |= set(m["others"])
+        deeper |= set(m["deeper"])
         for finding in m["findings"]:
             findings.setdefault(finding, []).append(name)
     print("model estimates: plan = fgc's accelerator plan; reader = what the emitted text "
@@ -286,6 +306,9 @@ def main(argv=None) -> int:
           "those files")
     if others:
         print("II-short / carried loops in the units' own headers: " + ", ".join(sorted(others)))
+    if rows:  # reader.depth: the factor datapaths' text no deeper than their plan loops
+        print("factor datapaths whose text schedules deeper than the plan's loop depth: "
+              + (", ".join(sorted(deeper)) if deeper else "none"))
     if findings:
         print("\nthe ALLOCATION / DEPENDENCE rules' findings (loop, figures; the designs they "
               "are in):")
@@ -313,6 +336,11 @@ def main(argv=None) -> int:
                       "run at once):")
                 for unit, where in st["duplicated"].items():
                     print(f"  {unit:18s} " + ", ".join(f"{part} {d}" for part, d in where.items()))
+            print("factor datapath depth, text (reader) / plan loop: " + ", ".join(
+                f"{k} {r}/{p}" for k, (r, p) in st["depths"].items())
+                  + f"; deeper than the plan: {len(st['deeper'])}")
+            for issue in st["deeper"]:
+                print("  " + issue)
             print("module copies the text instantiates (every call site its own): " +
                   ", ".join(f"{k} {v}" for k, v in st["copies"].items()))
             for issue in st["issues"]:

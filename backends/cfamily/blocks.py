@@ -90,16 +90,19 @@ class BlockContext:
         return self.d + 1
 
 
-def block_contexts(program: Program, vector: bool = True) -> tuple[BlockContext, ...]:
+def block_contexts(program: Program, vector: bool = True,
+                   latencies=None) -> tuple[BlockContext, ...]:
     """A :class:`BlockContext` per block type of ``program``; ``vector``: kernels printed on V
-    (the CPU design's lanes), else on the scalar T (the dataflow accelerator)."""
+    (the CPU design's lanes), else on the scalar T (the dataflow accelerator); ``latencies``:
+    their sums and products printed as the reduction trees of that operator table
+    (``print_kernel``; the HLS design's), None flat (the native backend's)."""
     index = {v.key: i for i, v in enumerate(program.variables)}
     out = []
     for b, block in enumerate(program.blocks):
         instances = tuple(j for j, f in enumerate(program.factors) if f.block == b)
         first = program.factors[instances[0]]
         storage = [program.variables[index[k]].storage_dim for k in first.keys]
-        out.append(_block(b, block, tuple(storage), instances, vector))
+        out.append(_block(b, block, tuple(storage), instances, vector, latencies))
     return tuple(out)
 
 
@@ -111,20 +114,20 @@ _BLOCKS: dict[tuple, BlockContext] = {}
 
 
 def _block(b: int, block: BlockSpec, storage: tuple[int, ...], instances: tuple[int, ...],
-           vector: bool = True) -> BlockContext:
+           vector: bool = True, latencies=None) -> BlockContext:
     key = (b, block.name, block.variable_types, block.variable_dims, block.members,
            block.residual_dim, block.structure, block.kernel, block.cost_kernel, storage,
-           instances, vector)
+           instances, vector, latencies)
     hit = _BLOCKS.get(key)
     if hit is None:
         if len(_BLOCKS) >= 256:
             _BLOCKS.clear()
-        hit = _BLOCKS[key] = _build_block(b, block, storage, instances, vector)
+        hit = _BLOCKS[key] = _build_block(b, block, storage, instances, vector, latencies)
     return hit
 
 
 def _build_block(b: int, block: BlockSpec, storage: tuple[int, ...],
-                 instances: tuple[int, ...], vector: bool) -> BlockContext:
+                 instances: tuple[int, ...], vector: bool, latencies=None) -> BlockContext:
     variables, pos, col = [], 0, 0
     for k, (s, dim) in enumerate(zip(storage, block.variable_dims, strict=True)):
         variables.append(VarSlot(k, s, pos, dim, col))
@@ -145,11 +148,11 @@ def _build_block(b: int, block: BlockSpec, storage: tuple[int, ...],
     members = [_with_tail(slot, *pattern.constant_tail(k)) for k, slot in enumerate(members)]
     kernel = block.kernel.kernel()
     jacobian = print_kernel(kernel, _input_names(len(kernel.inputs), pos), where,
-                            vector=vector)
+                            vector=vector, latencies=latencies)
     targets = _targets(pattern, variables, jacobian.outputs)
     return BlockContext(b, comment(block.name), block.residual_dim, col, n_in, noise_in,
                         tuple(variables), tuple(members), instances, jacobian, targets,
-                        _cost(block, where, pos, vector), pattern, pattern.tiles())
+                        _cost(block, where, pos, vector, latencies), pattern, pattern.tiles())
 
 
 def _with_tail(slot: MemberSlot, dense: int, entries) -> MemberSlot:
@@ -185,12 +188,13 @@ def _input_names(n: int, n_x: int) -> list[str]:
     return [f"in[{i}]" if i < n_x else f"dat[{i - n_x}]" for i in range(n)]
 
 
-def _cost(block: BlockSpec, where: str, n_x: int, vector: bool = True) -> PrintedKernel:
+def _cost(block: BlockSpec, where: str, n_x: int, vector: bool = True,
+          latencies=None) -> PrintedKernel:
     """The cost kernel reduced to the members' ½‖W r‖² (robust losses are applied in C++)."""
     kernel = cost_outputs_kernel(block.cost_kernel.kernel(), block.residual_dim,
                                  len(block.members))
     return print_kernel(kernel, _input_names(len(kernel.inputs), n_x), where + " cost",
-                        vector=vector)
+                        vector=vector, latencies=latencies)
 
 
 def cost_outputs_kernel(full: Kernel, m: int, n: int) -> Kernel:

@@ -24,16 +24,17 @@ HEADER_TABLES = ("VAR_X_OFF", "FACTOR_DATA_OFF")
 
 
 def common_context(program: Program, config, project: str, error: type[Exception],
-                   unit_sets: int, vector: bool = True) -> dict:
+                   unit_sets: int, vector: bool = True, latencies=None) -> dict:
     """The shared context of ``program`` emitted with ``config`` (an HlsConfig or NativeConfig)
     as ``project``; ``unit_sets`` is the order a level's steps run in (one per chain end on a
     two-ended chain), ``error`` the backend's config error (a fixed-point scalar without the
-    ap_types headers)."""
+    ap_types headers); ``latencies``: the kernels' sums and products printed as that operator
+    table's reduction trees (the HLS design's; ``cfamily.trees``), None flat (native)."""
     printer = HlsCodePrinter({})
     solver = solver_context(program, config, printer)
     tables = build_tables(program, damped=solver["lm"], cholesky=solver["cholesky"])
     include = [str(ap_types_include(error))] if config.is_fixed_point else []
-    blocks = block_contexts(program, vector=vector)
+    blocks = block_contexts(program, vector=vector, latencies=latencies)
     patterns, step_pattern = step_patterns(tables, {b.index: b.pattern for b in blocks},
                                            solver["cholesky"], solver["lm"])
     max_ld = padded(tables.constant("MAX_W") + 1)
@@ -66,7 +67,8 @@ def common_context(program: Program, config, project: str, error: type[Exception
         "header_tables": [t for t in tables.arrays if t.name in HEADER_TABLES],
         "tables": [t for t in tables.arrays if t.name not in HEADER_TABLES]
         + [IntTable("STEP_PATTERN", step_pattern)] * bool(patterns),
-        "blocks": blocks, "patterns": patterns, "retracts": retract_kinds(program), "tile": TILE,
+        "blocks": blocks, "patterns": patterns, "retracts": retract_kinds(program, latencies),
+        "tile": TILE,
         # a generic step whose shape a pattern has is factored by that pattern's fixed routine
         # (the same operations in the same order, no new unit): the chain ends' steps
         "fixed_shapes": sorted({(p.w, p.f) for p in patterns if p.ld == max_ld}),

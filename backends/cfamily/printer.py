@@ -9,6 +9,11 @@ the emitted header: ``float``, ``double`` or ``ap_fixed<W,I>``). Every literal i
 through a caller-given table (inputs → ``in[i]``, intermediates → ``t<i>``), so no user-chosen
 name ever reaches C++. Anything else is refused with :class:`UnsupportedExpressionError` before g++
 could see it.
+
+Given an operator table's latencies (``print_kernel(..., latencies=...)``, the HLS design's), every
+n-ary sum and product is printed as the reduction tree the plan's critical path prices
+(:mod:`fgc_backends.cfamily.trees`: one pairing rule for both), parenthesised, since Vitis does not
+reassociate floating-point operations; without them the text is flat (the native backend's).
 """
 
 from __future__ import annotations
@@ -19,13 +24,18 @@ from collections.abc import Iterable, Sequence
 from typing import NamedTuple
 
 import sympy as sp
-from sympy.core.mul import _keep_coeff
 from sympy.printing.cxx import CXX17CodePrinter
 from sympy.printing.precedence import PRECEDENCE, precedence
 
 from fgc.compiler.kernel import OP_KINDS, Kernel
 from fgc.errors import FgcError
 from fgc.frontend.geometry import special
+from fgc_backends.cfamily.trees import MAX_PRODUCT_POWER as _MAX_PRODUCT_POWER
+from fgc_backends.cfamily.trees import TRIG as _TRIG
+from fgc_backends.cfamily.trees import ReadyTimes, pairing, signed_tree_text, tree_text
+from fgc_backends.cfamily.trees import mul_parts as _mul_parts
+from fgc_backends.cfamily.trees import power_terms as _power_terms
+from fgc_backends.cfamily.trees import printable_power as _printable_power
 
 # one C++ wrapper per function of the DSL's whitelist (fgc.frontend.functions.FUNCTIONS) and per
 # function
@@ -33,7 +43,6 @@ from fgc.frontend.geometry import special
 _FUNCTIONS = {sp.sin: "fgc_sin", sp.cos: "fgc_cos", sp.tan: "fgc_tan", sp.atan2: "fgc_atan2",
               sp.atan: "fgc_atan", sp.exp: "fgc_exp", sp.log: "fgc_log", sp.asin: "fgc_asin",
               sp.acos: "fgc_acos", sp.tanh: "fgc_tanh", sp.Abs: "fgc_abs", sp.sign: "fgc_sign"}
-_MAX_PRODUCT_POWER = 8
 
 
 class UnsupportedExpressionError(FgcError):
@@ -55,11 +64,15 @@ class HlsCodePrinter(CXX17CodePrinter):
     printmethod = "_hlscode"
 
     def __init__(self, symbols: dict[sp.Symbol, str], settings: dict | None = None,
-                 checked: bool = False, vector: bool = False):
+                 checked: bool = False, vector: bool = False, latencies=None):
         super().__init__({"strict": True, **(settings or {})})
         self.symbol_names = dict(symbols)
         self.checked = checked  # the caller ran check_supported on everything it will print
         self.call = "v_" if vector else ""  # lane-wise versions of the functions on V
+        # ``latencies`` (kind → cycles): every sum and product printed as the reduction tree
+        # its critical path is priced with (trees.pairing, operands by ready time); None: flat,
+        # left to right (the native backend's CPU code)
+        self.ready = None if latencies is None else ReadyTimes(latencies)
 
     def doprint(self, expr, assign_to=None) -> str:
         """C++ text of ``expr``; refuses anything outside the whitelist (sympy's C++ printer
@@ -136,8 +149,37 @@ class HlsCodePrinter(CXX17CodePrinter):
             return terms[0]
         if exp == -sp.Rational(1, 2):
             return f"(T(1)/{terms[0]})"
-        product = "*".join(terms)
+        if self.ready is None:
+            product = "*".join(terms)
+        else:  # the copies as a tree (trees.ReadyTimes prices the same terms)
+            t = self.ready(base)
+            times = [t + self.ready.lat["sqrt"]] * root + [t] * whole
+            product = tree_text(terms, pairing(times, self.ready.lat["mul"])[0], "*")
         return f"({product})" if not inverse else f"(T(1)/({product}))"
+
+    def _print_Add(self, expr: sp.Add, order=None) -> str:
+        if self.ready is None:
+            return super()._print_Add(expr, order)
+        # the terms in sympy's printed order, each with its sign apart (a subtraction is an
+        # adder, a sign free), paired by ready time (trees.pairing)
+        terms, times = [], []
+        for term in self._as_ordered_terms(expr, order=order):
+            text = self._print(term)
+            negated = text.startswith("-") and not term.is_Add
+            text = text[1:] if negated else text
+            if precedence(term) < precedence(expr) or term.is_Add:
+                text = f"({text})"
+            terms.append((negated, text))
+            times.append(self.ready(term))
+        negated, text = signed_tree_text(terms, pairing(times, self.ready.lat["add"])[0])
+        return f"-({text})" if negated else text
+
+    def _product(self, factors: list, texts: list[str]) -> str:
+        """``texts`` (of ``factors``) multiplied: flat, or as the tree of their ready times."""
+        if self.ready is None or len(texts) < 2:
+            return "*".join(texts)
+        times = [self.ready(f) for f in factors]
+        return tree_text(texts, pairing(times, self.ready.lat["mul"])[0], "*")
 
     def _print_Mul(self, expr: sp.Mul) -> str:
         """``[-]a*b*…[/c | /(c*d*…)]`` as :func:`_mul_parts` splits ``expr`` (sympy's own C
@@ -150,11 +192,12 @@ class HlsCodePrinter(CXX17CodePrinter):
             a_str = [self.parenthesize(x, prec) for x in numer]
         b_str = [f"({self.parenthesize(x, prec)})" if paren else self.parenthesize(x, prec)
                  for x, paren in zip(denom, grouped, strict=True)]
+        top = self._product(numer, a_str)
         if not denom:
-            return sign + "*".join(a_str)
+            return sign + top
         if len(denom) == 1:
-            return sign + "*".join(a_str) + "/" + b_str[0]
-        return f"{sign}{'*'.join(a_str)}/({'*'.join(b_str)})"
+            return sign + top + "/" + b_str[0]
+        return f"{sign}{top}/({self._product(denom, b_str)})"
 
     def _print_Function(self, expr) -> str:
         args = ", ".join(self._print(a) for a in expr.args)
@@ -178,39 +221,6 @@ class HlsCodePrinter(CXX17CodePrinter):
         raise UnsupportedExpressionError(f"the HLS backend cannot print '{type(expr).__name__}'")
 
     emptyPrinter = _print_not_supported
-
-
-def _power_terms(exp) -> tuple[int, bool, bool]:
-    """How ``b**exp`` prints (:meth:`HlsCodePrinter._print_Pow`): the copies of ``b`` in its
-    product (``|exp|`` rounded down), whether a square root ``fgc_sqrt(b)`` joins them (a
-    half-integer exponent) and whether the product is inverted (``T(1)/(…)``)."""
-    return int(abs(exp)), not exp.is_Integer, bool(exp < 0)
-
-
-def _mul_parts(expr: sp.Mul) -> tuple[str, list, list, list]:
-    """How a product prints (:meth:`HlsCodePrinter._print_Mul`): its sign (``"-"`` for a
-    negative coefficient, printed as a unary minus), the numerator's factors (a rational
-    coefficient one of them: ``x/2`` prints ``(T(0.5))*x``), the denominator's factors (each
-    power with a negative rational exponent, inverted: ``x*y**-2`` prints ``x/(y*y)``) and, per
-    denominator factor, whether it is printed in its own parentheses (an inverted product)."""
-    c, e = expr.as_coeff_Mul()
-    sign = ""
-    if c < 0:
-        expr = _keep_coeff(-c, e)
-        sign = "-"
-    numer, denom, grouped = [], [], []
-    for item in expr.as_ordered_factors():
-        if (item.is_commutative and item.is_Pow and item.exp.is_Rational
-                and item.exp.is_negative):
-            if item.exp != -1:
-                denom.append(sp.Pow(item.base, -item.exp, evaluate=False))
-                grouped.append(False)
-            else:
-                denom.append(sp.Pow(item.base, -item.exp))
-                grouped.append(len(item.args[0].args) != 1 and isinstance(item.base, sp.Mul))
-        else:
-            numer.append(item)
-    return sign, numer or [sp.S.One], denom, grouped
 
 
 def printed_ops(exprs: Iterable[sp.Expr], counts: Counter | None = None) -> Counter:
@@ -266,9 +276,6 @@ def _printed(expr, counts: Counter, times: int) -> None:
             _printed(arg, counts, times)
 
 
-_TRIG = (sp.sin, sp.cos, sp.tan, sp.atan2, sp.atan, sp.acos, sp.asin)
-
-
 @functools.lru_cache(maxsize=512)
 def kernel_printed_ops(kernel: Kernel) -> tuple[tuple[str, int], ...]:
     """:func:`printed_ops` of a whole kernel as :func:`print_kernel` prints it: each assignment
@@ -286,13 +293,6 @@ def kernel_printed_ops(kernel: Kernel) -> tuple[tuple[str, int], ...]:
             printed_ops([e], counts)
     printed_ops(kernel.outputs, counts)
     return tuple((k, counts.get(k, 0)) for k in OP_KINDS)
-
-
-def _printable_power(exp) -> bool:
-    """Whether b**exp prints: exp a non-zero integer or half-integer, |exp| ≤ the product bound."""
-    if not exp.is_Rational or exp == 0 or abs(exp) > _MAX_PRODUCT_POWER:
-        return False
-    return exp.is_Integer or exp.q == 2
 
 
 def check_supported(exprs: Iterable[sp.Expr], where: str) -> None:
@@ -321,7 +321,7 @@ def check_supported(exprs: Iterable[sp.Expr], where: str) -> None:
 
 
 def print_kernel(kernel: Kernel, input_names: Sequence[str], where: str,
-                 prefix: str = "t", vector: bool = False) -> PrintedKernel:
+                 prefix: str = "t", vector: bool = False, latencies=None) -> PrintedKernel:
     """Print ``kernel`` with inputs named ``input_names`` and intermediates ``<prefix><i>``.
 
     ``where`` names the kernel in error messages (e.g. the block type). The three components
@@ -332,12 +332,18 @@ def print_kernel(kernel: Kernel, input_names: Sequence[str], where: str,
     scalars side by side (a GCC/Clang vector type on the host, ``T`` itself in synthesis) — and
     functions are called as their lane-wise versions ``v_<name>``. Each lane computes exactly the
     scalar operations, so results do not depend on ``LANES``.
+
+    ``latencies`` (operator kind → cycles, the HLS design's table): every sum and product is
+    printed as the reduction tree ``cost.kernels.critical_path`` prices (:mod:`.trees`: the
+    operands paired by the cycle they are ready, the inputs at 0, each intermediate when its
+    statement ends), so Vitis, which does not reassociate floating-point operations, schedules
+    the depth the plan prints. None: the flat left-to-right text (the native backend).
     """
     exprs = [e for _, e in kernel.assignments] + [sp.sympify(e) for e in kernel.outputs]
     check_supported(exprs, where)
     names = dict(zip(kernel.inputs, input_names, strict=True))
     names.update({x: f"{prefix}{i}" for i, (x, _) in enumerate(kernel.assignments)})
-    printer = HlsCodePrinter(names, checked=True, vector=vector)
+    printer = HlsCodePrinter(names, checked=True, vector=vector, latencies=latencies)
     value_type = "V" if vector else "T"
     logs: dict[tuple, str] = {}
     lines = []
@@ -351,5 +357,7 @@ def print_kernel(kernel: Kernel, input_names: Sequence[str], where: str,
             lines.append(f"const {value_type} {names[x]} = {logs[e.args]}[{e.axis}];")
         else:
             lines.append(f"const {value_type} {names[x]} = {printer.doprint(e)};")
+        if printer.ready is not None:
+            printer.ready.assign(x, e)
     outputs = tuple(printer.doprint(sp.sympify(e)) for e in kernel.outputs)
     return PrintedKernel(tuple(lines), outputs, sum(kernel.op_counts().values()))

@@ -93,8 +93,10 @@ def local_kinds(program: Program) -> tuple[LocalKind, ...]:
     return tuple(kinds)
 
 
-def retract_kinds(program: Program) -> tuple[RetractKind, ...]:
-    """One :class:`RetractKind` per variable type of ``program``, in first-appearance order."""
+def retract_kinds(program: Program, latencies=None) -> tuple[RetractKind, ...]:
+    """One :class:`RetractKind` per variable type of ``program``, in first-appearance order;
+    ``latencies``: its sums and products printed as that table's reduction trees
+    (``print_kernel``)."""
     order: dict[str, list[int]] = {}
     for v, spec in enumerate(program.variables):
         order.setdefault(spec.type_name, []).append(v)
@@ -107,7 +109,8 @@ def retract_kinds(program: Program) -> tuple[RetractKind, ...]:
                                  "fgc.frontend.geometry's")
         kernel = retract_kernel(cls)
         names = [f"x[{i}]" for i in range(cls.storage_dim)] + [f"d[{i}]" for i in range(cls.dim)]
-        printed = print_kernel(kernel, names, f"retraction of kind {kind}", prefix="r")
+        printed = print_kernel(kernel, names, f"retraction of kind {kind}", prefix="r",
+                               latencies=latencies)
         kinds.append(RetractKind(kind, name, cls.storage_dim, cls.dim, tuple(variables),
                                  printed))
     return tuple(kinds)

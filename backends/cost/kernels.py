@@ -8,7 +8,6 @@ block's pool. M instances of a block type take latency + (M − 1)·II cycles.
 
 from __future__ import annotations
 
-import heapq
 import math
 from collections import Counter
 from dataclasses import dataclass
@@ -16,13 +15,11 @@ from functools import lru_cache
 
 import sympy as sp
 
-from fgc.frontend.geometry import special
 from fgc.ir.program import BlockSpec, KernelText, Program
+from fgc_backends.cfamily.trees import ReadyTimes
 
 from .params import KINDS, CostParams, OperatorCounts, OperatorTable
 from .structure import whitened_pattern
-
-_TRIG = (sp.sin, sp.cos, sp.tan, sp.atan, sp.atan2, sp.acos, sp.asin)
 
 
 @dataclass(frozen=True)
@@ -37,87 +34,32 @@ class BlockTiming:
 
 
 def critical_path(text: KernelText, ops: OperatorTable, balanced: bool = True) -> int:
-    """Cycles from the kernel's inputs to its last output (longest DAG path)."""
+    """Cycles from the kernel's inputs to its last output (longest DAG path), every sum and
+    product the reduction tree the HLS printer prints (``balanced``; ``cfamily.trees``) or a
+    left-to-right chain in printed order."""
     return _critical_path(text, _latencies(ops), balanced)
 
 
-def _latencies(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
-    return tuple((kind, ops.cost(kind).latency) for kind in KINDS)
+def kernel_latencies(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
+    """``ops``' latency per kind, as :func:`critical_path` and the HLS printer's reduction trees
+    (``cfamily.printer.print_kernel``'s ``latencies``) take them."""
+    atan2 = ops.atan2 or ops.trig  # an arctangent: its own figure where the table has one
+    return tuple((kind, ops.cost(kind).latency) for kind in KINDS) + (("atan2", atan2.latency),)
+
+
+_latencies = kernel_latencies
 
 
 @lru_cache(maxsize=64)
 def _critical_path(text: KernelText, latencies: tuple, balanced: bool) -> int:
-    lat = dict(latencies)
+    # the walker of the printed layout (cfamily.trees): with ``balanced`` every sum and product
+    # the tree the HLS printer prints (the two earliest-ready operands first), else the flat
+    # text's left-to-right chains
     kernel = text.kernel()
-    ready: dict[sp.Symbol, int] = {}  # inputs are ready at 0 (absent from the dict)
+    ready = ReadyTimes(latencies, balanced)
     for symbol, expr in kernel.assignments:
-        ready[symbol] = _ready(expr, ready, lat, balanced)
-    return max((_ready(e, ready, lat, balanced) for e in kernel.outputs), default=0)
-
-
-def _ready(expr: sp.Expr, ready: dict, lat: dict, balanced: bool) -> int:
-    """Cycle at which ``expr`` is available, given when its symbols are."""
-    if expr.is_Symbol:
-        return ready.get(expr, 0)
-    if expr.is_Number or not expr.args:
-        return 0
-    if expr.is_Mul:
-        return _mul_ready(expr, ready, lat, balanced)
-    args = [_ready(a, ready, lat, balanced) for a in expr.args]
-    if expr.is_Add:
-        return _reduce(args, lat["add"], balanced)
-    if expr.is_Pow:
-        return _pow_ready(expr, args[0], lat, balanced)
-    if isinstance(expr, _TRIG):
-        return max(args) + lat["trig"]
-    if isinstance(expr, special.GuardedQuotient):  # a divide, then a select
-        return max(args) + lat["div"]
-    # Lie coefficients, SO(3) log components and anything unknown: the slowest unit.
-    return max(args) + lat["special"]
-
-
-def _reduce(times: list[int], latency: int, balanced: bool) -> int:
-    """Completion of an associative reduction of operands ready at ``times``."""
-    if len(times) == 1:
-        return times[0]
-    if not balanced:  # a left-to-right chain
-        done = times[0]
-        for t in times[1:]:
-            done = max(done, t) + latency
-        return done
-    heap = list(times)  # always combine the two earliest-ready operands (optimal tree)
-    heapq.heapify(heap)
-    while len(heap) > 1:
-        a, b = heapq.heappop(heap), heapq.heappop(heap)
-        heapq.heappush(heap, max(a, b) + latency)
-    return heap[0]
-
-
-def _mul_ready(expr: sp.Mul, ready: dict, lat: dict, balanced: bool) -> int:
-    # A sign (−1 factor) is free; a constant denominator is a multiply by its reciprocal;
-    # other denominators are multiplied together, then one divide.
-    num, den = sp.fraction(expr)
-    num_times = [_ready(a, ready, lat, balanced) for a in sp.Mul.make_args(num)
-                 if a not in (sp.S.NegativeOne, sp.S.One)]
-    if den.is_Number and den != 1:
-        num_times.append(0)
-    top = _reduce(num_times or [0], lat["mul"], balanced)
-    if den.is_Number:
-        return top
-    den_times = [_ready(a, ready, lat, balanced) for a in sp.Mul.make_args(den)]
-    return max(top, _reduce(den_times, lat["mul"], balanced)) + lat["div"]
-
-
-def _pow_ready(expr: sp.Pow, base: int, lat: dict, balanced: bool) -> int:
-    e = expr.exp
-    if e == sp.Rational(1, 2):
-        return base + lat["sqrt"]
-    if e == -sp.Rational(1, 2):
-        return base + lat["sqrt"] + lat["div"]
-    if e.is_Integer:
-        squarings = math.ceil(math.log2(abs(int(e)))) if abs(int(e)) > 1 else 0
-        return base + squarings * lat["mul"] + (lat["div"] if e < 0 else 0)
-    return base + lat["special"]
+        ready.assign(symbol, expr)
+    return max((ready(sp.sympify(e)) for e in kernel.outputs), default=0)
 
 
 # --------------------------------------------------------------------------------------------

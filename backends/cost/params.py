@@ -86,6 +86,9 @@ class OperatorTable:
     sqrt: OperatorCost = _doc(OperatorCost(), "cost of one square-root operator")
     trig: OperatorCost = _doc(OperatorCost(), "cost of one sin/cos/atan unit")
     special: OperatorCost = _doc(OperatorCost(), "cost of one Lie-coefficient / SO(3)-log unit")
+    atan2: OperatorCost | None = _doc(None, "cost of one arctangent (atan2, atan, asin, acos) "
+                                      "where it differs from a sin/cos (None: the trig figure); "
+                                      "the critical path takes its latency")
 
     def cost(self, kind: str) -> OperatorCost:
         """The cost of operator ``kind`` (one of :data:`KINDS`)."""
@@ -104,7 +107,7 @@ def view(ops: operators.OperatorTable) -> OperatorTable:
 
     return OperatorTable(word_bits=ops.word_bits, add=c(ops.add), mul=c(ops.mul),
                          div=c(ops.div), sqrt=c(ops.sqrt), trig=c(ops.sincos),
-                         special=c(ops.special))
+                         special=c(ops.special), atan2=c(ops.atan2))
 
 
 # the default target's (xc7z045, 143 MHz) operators, read from the one table [PG060]
@@ -151,8 +154,9 @@ class CostParams:
         0.25, "LUTs of operand multiplexing per kernel operation per word bit when a kernel's "
         "operations share the pool (a LUT6 is a 4:1 mux bit; ~1 extra input per op) [design]")
     balanced_reductions: bool = _doc(
-        True, "sums and products of many terms are reduced as trees, earliest operands first "
-        "(False: left-to-right chains, what HLS does for floats without reassociation)")
+        True, "sums and products of many terms are reduced as trees, earliest operands first, "
+        "as the HLS printer prints them (cfamily/trees.py; False: left-to-right chains in "
+        "printed order, what Vitis builds from flat text: it does not reassociate floats)")
 
     # -- HGC (Cholesky path) ----------------------------------------------------------------
     hgc_lanes: int = _doc(

@@ -795,9 +795,18 @@ def tcl_config_ops(program: Program, config: HlsConfig) -> list[tuple[str, str, 
 
 
 def _context(program: Program, config: HlsConfig, project: str, vector: bool = True) -> dict:
+    from fgc_backends.hls.plan import PlanOptions
+    from fgc_backends.hls.plan.assemble import factor_ops
+    from fgc_backends.hls.plan.loops import tree_latencies
+
     two_ended = program.schedule.ordering == "two-ended"
+    # the kernels' sums and products as the reduction trees the plan prices (its operator
+    # table: accel_plan's options; cfamily.trees)
+    latencies = tree_latencies(factor_ops(program, PlanOptions.for_config(
+        for_program(program, config), program)))
     context = common_context(program, config, project, HlsConfigError,
-                             unit_sets=config.unit_sets or (2 if two_ended else 1), vector=vector)
+                             unit_sets=config.unit_sets or (2 if two_ended else 1), vector=vector,
+                             latencies=latencies)
     return context | {
         "part": config.part, **tcl_clock(program.solver.clock_mhz),
         "config_ops": tcl_config_ops(program, config) if config.scalar_cxx in ("float", "double")

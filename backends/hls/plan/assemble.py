@@ -11,7 +11,7 @@ from fgc.ir.program import Program
 from fgc_backends.cfamily.blocks import block_contexts
 from fgc_backends.cost.operators import BindError, OperatorTable, normalise_bind
 from fgc_backends.hls import units as unit_registry
-from fgc_backends.hls.plan.loops import _sizes, _tables, kernel_timing
+from fgc_backends.hls.plan.loops import _sizes, _tables, kernel_timing, tree_latencies
 from fgc_backends.hls.plan.model import AcceleratorPlan, PlanError
 from fgc_backends.hls.plan.options import (
     ALLOCATION_SCALING,
@@ -55,8 +55,9 @@ class PlanBuild:
 
     @cached_property
     def blocks(self) -> tuple:
-        """The block contexts the kernel is printed from (scalar T: the accelerator's)."""
-        return block_contexts(self.program, vector=False)
+        """The block contexts the kernel is printed from (scalar T: the accelerator's; sums and
+        products as the reduction trees of its operator table)."""
+        return block_contexts(self.program, vector=False, latencies=tree_latencies(self.ops))
 
     @cached_property
     def sizes(self) -> dict:
@@ -86,6 +87,13 @@ def check_options(opts: PlanOptions) -> None:
                         "(operators.normalise_bind: sorted, default implementations left out)")
 
 
+def factor_ops(program: Program, opts: PlanOptions) -> OperatorTable:
+    """The operator table of the design's scalar T (its part, clock and binding): what the
+    datapaths are priced with and their kernels' reduction trees printed with."""
+    target = target_of(opts.part, program.solver.clock_mhz, opts.bind)
+    return target.ops(opts.precisions(program)[0])
+
+
 def build_plan(program: Program, options: PlanOptions | None = None) -> AcceleratorPlan:
     """The accelerator plan of ``program`` with ``options`` (default: the Program's solver):
     the registered units that apply, in the registry's order, their phases by iteration slot."""
@@ -93,7 +101,7 @@ def build_plan(program: Program, options: PlanOptions | None = None) -> Accelera
     check_options(opts)
     precision, les_precision = opts.precisions(program)
     target = target_of(opts.part, program.solver.clock_mhz, opts.bind)
-    ctx = PlanBuild(program, opts, target.ops(precision), target.ops(les_precision))
+    ctx = PlanBuild(program, opts, factor_ops(program, opts), target.ops(les_precision))
     for unit in unit_registry.REGISTRY:
         if unit.applies(program, opts):
             before = len(ctx.units)

@@ -186,3 +186,12 @@ def _assign(procs, sets, tag, li):
 def _sim_table(ops: OperatorTable):
     """The critical-path walker's per-kind view of ``ops`` (``cost.params.view``)."""
     return view(ops)
+
+
+def tree_latencies(ops: OperatorTable) -> tuple[tuple[str, int], ...]:
+    """The latencies the datapaths' kernels are printed with (their sums and products as the
+    reduction trees ``cost.kernels.critical_path`` prices with the same table) and priced
+    with."""
+    from fgc_backends.cost.kernels import kernel_latencies
+
+    return kernel_latencies(_sim_table(ops))

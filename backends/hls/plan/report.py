@@ -154,3 +154,30 @@ def plan_groups(plan: AcceleratorPlan) -> dict[str, int]:
             g = phase_group(ph.name)
             group[g] = group.get(g, 0) + phase_cycles(ph)
     return group
+
+
+def datapath_depths(plan: AcceleratorPlan, program: Program) -> dict[str, int]:
+    """The depth the plan prices each emitted factor datapath function's loop with: per
+    ``factor_<b>`` (Jacobian mode) and ``factor_cost_<b>`` (cost mode) the instance loop of its
+    unit's process in that mode (``factor_<b>_jacobian`` / ``factor_<b>_cost``; a small block
+    type's: ``factor_small_*``'s, the deepest branch's), and per variable type the state
+    update's ``retract_<k>`` (kinds in first-appearance order) its datapath's depth
+    (``units/state_update.py`` ``retract_datapath``) — what the second reader's
+    ``reader.depth.check_depths`` holds the text to."""
+    from fgc_backends.hls.units.datapath import small_blocks
+    from fgc_backends.hls.units.state_update import retract_datapath
+
+    loops = {p.name: p.loops[0] for ph in plan.phases for p in ph.processes
+             if p.loops and p.name.startswith("factor_")}
+    small = small_blocks(program)
+    out = {}
+    for b in range(len(program.blocks)):
+        unit = "small" if b in small else str(b)
+        for mode, function in (("jacobian", f"factor_{b}"), ("cost", f"factor_cost_{b}")):
+            loop = loops.get(f"factor_{unit}_{mode}")
+            if loop is not None:
+                out[function] = loop.depth
+    kinds = dict.fromkeys(v.type_name for v in program.variables)
+    for k, name in enumerate(kinds):
+        out[f"retract_{k}"] = retract_datapath(name, plan.ops, plan.options.state_allocation)[2]
+    return out

@@ -129,7 +129,9 @@ class UpdateModel:
     # -- what the batch plan already prices, per unit ------------------------------------------
     def _read_plan(self) -> None:
         from fgc_backends.cfamily.blocks import block_contexts
-        self._blocks = block_contexts(self.program, vector=False)  # what an instance gathers
+        from fgc_backends.hls.plan.loops import tree_latencies
+        self._blocks = block_contexts(self.program, vector=False,  # what an instance gathers
+                                      latencies=tree_latencies(self.plan.ops))
         self.factor_loop = {}  # (block, mode) -> the plan's instance loop (ii, depth)
         small = small_blocks(self.program)  # their shared datapath's one loop
         for mode in ("jacobian", "cost"):  # Cholesky: the Jacobian pass in the hgc regions
