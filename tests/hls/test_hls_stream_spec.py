@@ -32,6 +32,7 @@ from fgc.app.streaming import compile_stream, keyframe_result, one_step_solver, 
 from fgc.compiler.stream import stream_program
 from fgc.ir.datafile import problem_data
 from fgc_backends.hls.config import HlsConfig
+from fgc_backends.hls.plan import plan_cost
 from fgc_backends.hls.plan.stream import WindowUpdateModel
 from fgc_backends.hls.streaming import OnChipIncrementalStream, layout_of
 
@@ -65,16 +66,22 @@ def test_a_taken_step_prices_the_marginal_beside_the_back_substitution():
     assert "keep_beside_tau" in {t.name for t in none.terms}
     assert "spec_beside_backsub" not in {t.name for t in none.terms}
     assert took.cycles < none.cycles
-    # its operators: one more call site of τ's and of the kept scale's
-    units = model.resources()["units"]["stream section"]
+    # its operators: one more call site of τ's and of the kept scale's, the window kernel's
+    # (its top instantiates them: spec_marginal_task), priced in that part
+    res = model.resources()
+    units = res["units"]["stream section"]
+    window = res["units"]["window kernel"]
     lm = WindowUpdateModel(layout_of(stream_program(
         graph, compile_stream(graph, incremental=3, name="lio_lm"), None)),
         HlsConfig(scalar="float"))
     assert not lm.spec
     assert "spec_beside_backsub" not in {t.name for t in lm.price(5, 2).terms}
     lm_units = lm.resources()["units"]["stream section"]
-    assert units["stream_write_tau"] == 2 * lm_units["stream_write_tau"]
-    assert units["stream_kept_scale"] == 2 * lm_units["stream_kept_scale"]
+    assert units["stream_write_tau"] == lm_units["stream_write_tau"] == window["spec_write_tau"]
+    assert units["stream_kept_scale"] == lm_units["stream_kept_scale"] == window["spec_kept_scale"]
+    assert "spec_write_tau" not in lm.resources()["units"]["window kernel"]
+    assert res["parts"]["window kernel"][0] == plan_cost(model.plan).dsp + sum(
+        d for name, d in window.items() if name.startswith("spec_"))
 
 
 def _bad_graph(n: int):

@@ -813,12 +813,20 @@ class WindowUpdateModel:
         ALLOCATION): no unit here - the marginal's QR step too, eliminate_all's on unit set 0
         (fgc_eliminate.h's qr_eliminate_all with a leaf)."""
         lay, units = self.layout, []
-        tau_sites = (int(bool(self.layout_marginal)) + int(self.batch is not None)
-                     + int(self.spec))
+        tau_sites = int(bool(self.layout_marginal)) + int(self.batch is not None)
         if tau_sites:
             units.append(Unit("stream_write_tau", "tau signed, its mean and words (per call "
-                              "site: the marginal's, a batch step's, the one-step update's "
-                              "beside its back-substitution)", tau_sites, WRITE_TAU_OPS))
+                              "site: the marginal's, a batch step's)", tau_sites,
+                              WRITE_TAU_OPS))
+        if self.spec:  # the window kernel's top instantiates these (window_task's
+            # back_substitute region, spec_marginal_task): its part, not the stream section's
+            units.append(Unit("spec_write_tau", "tau signed, its mean and words: the one-step "
+                              "update's call site beside its back-substitution", 1,
+                              WRITE_TAU_OPS))
+            if lay.kept:
+                units.append(Unit("spec_kept_scale", "the one-step update's staged kept "
+                                  "conditional (spec_keep): its pivot reciprocals and rows "
+                                  "scaled", 1, KEPT_SCALE_OPS))
         if lay.kept:
             units += [Unit("stream_kept_datapaths", "the kept net's Log and retraction "
                            "(keyframe_pass: one module, its ALLOCATION)", 1,
@@ -829,8 +837,7 @@ class WindowUpdateModel:
                            "loops and sequential code", 1, KEPT_TASK_OPS),
                       Unit("stream_kept_scale", "a kept conditional's pivot reciprocals and "
                            "its rows scaled by them (kept_conditional, per call site: keep's, "
-                           "a batch step's, the one-step update's staged one: spec_keep)",
-                           1 + int(self.batch is not None) + int(self.spec),
+                           "a batch step's)", 1 + int(self.batch is not None),
                            KEPT_SCALE_OPS)]
         return tuple(units)
 
@@ -867,8 +874,10 @@ class WindowUpdateModel:
         window kernel, the batch kernel, the stream section (its units and memories)."""
         design = plan_cost(self._design)
         window = plan_cost(self.plan)
-        parts = {"window kernel": (window.dsp, window.bram36)}
-        units = {"window kernel": dict(window.dsp_by_unit)}
+        # (the one-step update's τ and keep call sites, spec_*: the window top's)
+        spec = {name: d for name, d in design.dsp_by_unit if name.startswith("spec_")}
+        parts = {"window kernel": (window.dsp + sum(spec.values()), window.bram36)}
+        units = {"window kernel": dict(window.dsp_by_unit) | spec}
         if self.batch is not None:
             bcost = plan_cost(self.batch["plan"])
             parts["batch kernel"] = (bcost.dsp, bcost.bram36)
