@@ -136,6 +136,21 @@ L BATCH_COND[BATCH_SLOTS * STREAM_KF_T * (2 * STREAM_KF_T + 1)];  // their condi
 L BATCH_TAU[STREAM_KF_T * (STREAM_KF_T + 1)];  // the factor passed into the next window's oldest
 #endif
 
+// The call's `data` port (an m_axi bundle of its own): a word a beat, or (FGC_DATA_BEAT,
+// HlsConfig.data_width 64) DATA_BEAT float words a beat, accel.h's DataBeat (the host packs the
+// call's word k into beat k / DATA_BEAT, lane k % DATA_BEAT; a last beat's lanes past the words
+// are padding no one reads)
+#ifdef FGC_DATA_BEAT
+typedef DataBeat DataIn;
+const int DATA_IN_N = STREAM_IN_BEATS;
+#if defined(FGC_STREAM_BATCH)
+#error "a data port of DATA_BEAT words a beat is not built for the batch kernel's entries"
+#endif
+#else
+typedef T DataIn;
+const int DATA_IN_N = STREAM_IN_DATA;
+#endif
+
 // The update's start as one DATAFLOW region of two processes, each on its own memories: the
 // moves on X (start_x_task: the leaving keyframe's estimate into X_KEPT where `leave`, the
 // shift's variables where `shift`, the keyframe's storage into slot m, and slots 0 and 1 into
@@ -203,23 +218,34 @@ void start_x_task(bool leave, int kept, bool shift, int m, int row, bool from_ro
 }
 
 // The call's keyframe words (not a sweep pass's, whose row is on chip) read from `data` in their
-// order, a word a cycle (a burst), into the FIFO start_data_task takes them from: its loop
-// takes them at the iterations its table says, so it reads no address of `data` itself.
+// order, a beat a cycle (a burst: a word, or FGC_DATA_BEAT's DATA_BEAT words), into the FIFO
+// start_data_task takes them from: its loop takes them at the iterations its table says, so it
+// reads no address of `data` itself.
 template <class CFG>
-void start_in_task(int m, bool from_row, const T data[STREAM_IN_DATA], hls::stream<T>& words) {
+void start_in_task(int m, bool from_row, const DataIn data[DATA_IN_N], hls::stream<DataIn>& words) {
     FGC_TASK();
     FGC_PHASE("setup");
     const int n = from_row ? 0 : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+#ifdef FGC_DATA_BEAT
+    const int beats = (n + DATA_BEAT - 1) / DATA_BEAT;
+    for (int k = 0; k < beats; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW_BEATS
+#pragma HLS PIPELINE II=1
+        words.write(data[k]);
+    }
+    FGC_CYCLES("top", 0, "keyframe_data_read", beats, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#else
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
 #pragma HLS PIPELINE II=1
         words.write(data[k]);
     }
     FGC_CYCLES("top", 0, "keyframe_data_read", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#endif
 }
 
 template <class CFG>
-void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& words) {
+void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<DataIn>& words) {
     FGC_TASK();
     // DATA_BUF in START_BANKS cyclic banks: the start loop below takes a read and a write of
     // every bank an iteration (every other access to DATA_BUF, at an address the scheduler
@@ -269,6 +295,73 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& 
         return;
     }
 #endif
+#ifdef FGC_DATA_BEAT
+    if (shift) {  // (the window full: m is the newest slot) the shift and the keyframe's words,
+        FGC_PHASE("stream_shift");  // up to DATA_BEAT of them an iteration (a beat a fetch)
+#ifdef FGC_STREAM_SWEEP
+        int k = 0;  // the keyframe's next word
+        // (the keyframe's words kept as they came: up to DATA_BEAT writes an iteration, the
+        // sweep pass's two reads: both ports of a true dual-port RAM)
+#pragma HLS BIND_STORAGE variable=SWEEP_WORDS type=ram_t2p impl=bram
+#endif
+        // the beat's words not yet written (fewer than DATA_BEAT between iterations): an
+        // iteration that takes more than it holds fetches the next beat behind them
+        T held[2 * DATA_BEAT] = {};
+#pragma HLS ARRAY_PARTITION variable=held complete
+        int have = 0;
+        for (int i = 0; i < N_START; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=DATA_BUF inter false
+            T word[START_BANKS];  // what each bank reads this iteration (its reads before its writes)
+#pragma HLS ARRAY_PARTITION variable=word complete
+            int in = 0;  // the keyframe's words this iteration (sources START_BANKS + q, q < in)
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS[i * START_BANKS + c];
+                word[c] = DATA_BUF[START_BANKS * (op & mask) + c];
+                const int src = op >> (2 * START_ROW_BITS);
+                if (src >= START_BANKS && src < START_BANKS + DATA_BEAT) ++in;
+            }
+            if (in > have) {
+                const DataBeat beat = words.read();
+                for (int q = 0; q < 2 * DATA_BEAT; ++q) {
+#pragma HLS UNROLL
+                    if (q >= have && q < have + DATA_BEAT) held[q] = beat.lane_word[q - have];
+                }
+                have += DATA_BEAT;
+            }
+            T v[DATA_BEAT];  // the iteration's keyframe words, in the call's order
+#pragma HLS ARRAY_PARTITION variable=v complete
+            for (int q = 0; q < DATA_BEAT; ++q) {
+#pragma HLS UNROLL
+                v[q] = held[q];
+#ifdef FGC_STREAM_SWEEP
+                if (q < in) SWEEP_WORDS[row * SWEEP_MAX_NEW + k + q] = held[q];  // (kept as it came)
+#endif
+            }
+#ifdef FGC_STREAM_SWEEP
+            k += in;
+#endif
+            for (int q = 0; q < 2 * DATA_BEAT; ++q) {  // the words taken leave the front
+#pragma HLS UNROLL
+                held[q] = q + in < 2 * DATA_BEAT ? held[q + in] : T(0);
+            }
+            have -= in;
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS[i * START_BANKS + c];
+                const int to = ((op >> START_ROW_BITS) & mask) - 1, src = op >> (2 * START_ROW_BITS);
+                if (to >= 0) {
+                    DATA_BUF[START_BANKS * to + c] = src < START_BANKS ? word[src]
+                                                     : src < START_BANKS + DATA_BEAT ? v[src - START_BANKS]
+                                                     : T(0);
+                }
+            }
+        }
+        FGC_CYCLES("stream", 0, "start_data", N_START, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        return;
+    }
+#else
     if (shift) {  // (the window full: m is the newest slot) the shift and the keyframe's words
         FGC_PHASE("stream_shift");
 #ifdef FGC_STREAM_SWEEP
@@ -304,7 +397,23 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& 
         FGC_CYCLES("stream", 0, "start_data", N_START, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
         return;
     }
+#endif
     FGC_PHASE("setup");
+#ifdef FGC_DATA_BEAT
+    DataBeat beat = {};  // (the window filling: a word an iteration, a beat every DATA_BEAT words)
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
+#pragma HLS PIPELINE II=1
+        if (!from_row && k % DATA_BEAT == 0) beat = words.read();
+#ifdef FGC_STREAM_SWEEP
+        const T v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : beat.lane_word[k % DATA_BEAT];
+        DATA_BUF[NEW_DEST[b + k]] = v;
+        if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
+#else
+        DATA_BUF[NEW_DEST[b + k]] = beat.lane_word[k % DATA_BEAT];
+#endif
+    }
+#else
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
 #pragma HLS PIPELINE II=1
@@ -316,6 +425,7 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& 
         DATA_BUF[NEW_DEST[b + k]] = words.read();
 #endif
     }
+#endif
     FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 }
 
@@ -326,10 +436,10 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& 
 // storage, then its factors' and its prior's words.
 template <class CFG>
 void update_start(bool leave, int kept, bool shift, int m, int row, bool from_row,
-                  const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA], bool points,
+                  const T x_in[STREAM_KF_X], const DataIn data[DATA_IN_N], bool points,
                   T lin01[2 * STREAM_KF_X]) {
 #pragma HLS DATAFLOW
-    hls::stream<T> words("start_words");  // the call's keyframe words, in their order
+    hls::stream<DataIn> words("start_words");  // the call's keyframe words (beats), in their order
 #pragma HLS STREAM variable=words depth=2
     start_x_task<CFG>(leave, kept, shift, m, row, from_row, x_in, points, lin01);
     start_in_task<CFG>(m, from_row, data, words);
@@ -340,7 +450,7 @@ void update_start(bool leave, int kept, bool shift, int m, int row, bool from_ro
 // The call's keyframe (total, entering slot m) kept as it came: its storage and its words, row
 // total (SWEEP_SLOTS for every keyframe past the last batch step), a word a cycle.
 template <class CFG>
-void sweep_store(int total, int m, const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA]) {
+void sweep_store(int total, int m, const T x_in[STREAM_KF_X], const DataIn data[DATA_IN_N]) {
     FGC_PHASE("setup");
     const int row = total < SWEEP_SLOTS ? total : SWEEP_SLOTS;
     for (int k = 0; k < STREAM_KF_X; ++k) {
@@ -352,7 +462,11 @@ void sweep_store(int total, int m, const T x_in[STREAM_KF_X], const T data[STREA
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=SWEEP_MAX_NEW
 #pragma HLS PIPELINE II=1
+#ifdef FGC_DATA_BEAT
+        SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = data[k / DATA_BEAT].lane_word[k % DATA_BEAT];
+#else
         SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = data[k];
+#endif
     }
     FGC_CYCLES("top", 0, "sweep_words_store", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 }
@@ -1236,7 +1350,7 @@ void out_beside_commit(bool commit, int c, bool out, bool pending, bool held, T 
 // not walk (ISAM2's update does not compute its estimates either): a batch step walks them
 // first if they are stale, as it starts from them; the estimates are the same whenever walked.
 template <class CFG>
-void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA], T x_out[N_X]
+void stream_call(int op, const T x_in[STREAM_IN_X], const DataIn data[DATA_IN_N], T x_out[N_X]
                  FGC_STREAM_KEPT_ARG, T errors[2], int info[5]) {
     // LM, the marginal's linearisation and its QR step run in window_task (its ALLOCATION: one
     // RTL instance of each kernel function for all their call sites)
@@ -1249,7 +1363,11 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         }
         for (int i = 0; i < N_DATA; ++i) {
 #pragma HLS PIPELINE II=1
+#ifdef FGC_DATA_BEAT
+            DATA_BUF[i] = data[i / DATA_BEAT].lane_word[i % DATA_BEAT];
+#else
             DATA_BUF[i] = data[i];
+#endif
         }
         FGC_CYCLES("top", 0, "x_in", N_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
         FGC_CYCLES("top", 0, "data_in", N_DATA, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);

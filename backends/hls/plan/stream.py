@@ -392,6 +392,10 @@ class WindowUpdateModel:
             raise PlanError("internal error: the stream model's QR steps are not the plan's")
         ctx = layout.context(config.linear_cxx, config.part)
         self.layout_marginal = ctx["marginal"]
+        # the update's start (window.py's start_plan): the call's keyframe words as many an
+        # iteration as the data port's beat holds (HlsConfig.data_width), DATA_BUF's banks
+        self.data_words = config.data_words
+        self.start_banks, self.start_rows, self.sweep_rows = layout.start_plan(self.data_words)
         # the one-step solve's linearisation once keyframe 0 has left: without the instances
         # that hold nothing from then on (units/datapath.py's solve_skip; lin_level's part 3)
         self._skip = frozenset()
@@ -571,8 +575,8 @@ class WindowUpdateModel:
                 _stream_phase("shift_data", move("d", len(lay.data_moves))),
                 # the window full: the shift's words and the keyframe's in one loop over
                 # DATA_BUF's banks (window.py's _start_tables; start_data_task)
-                _stream_phase("start_data", move("d", max(1, len(lay.start_rows)))),
-                _stream_phase("start_data_sweep", move("d", max(1, len(lay.sweep_rows)))),
+                _stream_phase("start_data", move("d", max(1, len(self.start_rows)))),
+                _stream_phase("start_data_sweep", move("d", max(1, len(self.sweep_rows)))),
                 _stream_phase("keyframe_x_in", move("x", kf)),
                 _stream_phase("x_out", move("x", lay.n_x)),
                 _stream_phase("x_out_kf", move("x", kf))]
@@ -752,7 +756,7 @@ class WindowUpdateModel:
                                              n * (2 * n + 1) if batch is not None else 0,
                                              self.spec))
         # DATA_BUF in the update start's cyclic banks (fgc_stream.h's start_data_task)
-        memories = tuple(replace(m, banks=max(m.banks, self.layout.start_banks))
+        memories = tuple(replace(m, banks=max(m.banks, self.start_banks))
                          if m.name == "data" else m for m in merged.memories)
         return replace(merged, memories=memories, units=merged.units + self.stream_units())
 
@@ -1048,11 +1052,13 @@ class WindowUpdateModel:
 
     def _banked_term(self, times: int = 1, name: str = "start_banks", row: bool = False) -> Term:
         lay = self.layout
-        rows = lay.sweep_rows if row else lay.start_rows
+        rows = self.sweep_rows if row else self.start_rows
+        per = "two" if row else ("one" if self.data_words == 1
+                                 else f"up to {self.data_words}, a beat of the data port")
         return Term(name, -self._banked(row), times, False,
                     f"the shift's {len(lay.data_moves)} data words and the keyframe's "
-                    f"{len(lay.new_dest[-1])} ({'two' if row else 'one'} an iteration) in "
-                    f"{len(rows)} iterations over DATA_BUF's {lay.start_banks} banks, not one "
+                    f"{len(lay.new_dest[-1])} ({per} an iteration) in "
+                    f"{len(rows)} iterations over DATA_BUF's {self.start_banks} banks, not one "
                     "after the other through one")
 
     def _start_term(self, m: int, shift: bool, leave: bool, points: bool,
