@@ -304,11 +304,11 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<Data
         // sweep pass's two reads: both ports of a true dual-port RAM)
 #pragma HLS BIND_STORAGE variable=SWEEP_WORDS type=ram_t2p impl=bram
 #endif
-        // the beat's words not yet written (fewer than DATA_BEAT between iterations): an
-        // iteration that takes more than it holds fetches the next beat behind them
-        T held[2 * DATA_BEAT] = {};
-#pragma HLS ARRAY_PARTITION variable=held complete
-        int have = 0;
+        // a fetched beat's second word not yet written (`have`): an iteration that takes more
+        // words than it holds fetches the next beat behind it (at most two words an iteration:
+        // at most one left over, a register and a mux)
+        T carry = T(0);
+        bool have = false;
         for (int i = 0; i < N_START; ++i) {
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=DATA_BUF inter false
@@ -322,39 +322,31 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<Data
                 const int src = op >> (2 * START_ROW_BITS);
                 if (src >= START_BANKS && src < START_BANKS + DATA_BEAT) ++in;
             }
-            if (in > have) {
-                const DataBeat beat = words.read();
-                for (int q = 0; q < 2 * DATA_BEAT; ++q) {
-#pragma HLS UNROLL
-                    if (q >= have && q < have + DATA_BEAT) held[q] = beat.lane_word[q - have];
-                }
-                have += DATA_BEAT;
-            }
-            T v[DATA_BEAT];  // the iteration's keyframe words, in the call's order
-#pragma HLS ARRAY_PARTITION variable=v complete
-            for (int q = 0; q < DATA_BEAT; ++q) {
-#pragma HLS UNROLL
-                v[q] = held[q];
-#ifdef FGC_STREAM_SWEEP
-                if (q < in) SWEEP_WORDS[row * SWEEP_MAX_NEW + k + q] = held[q];  // (kept as it came)
-#endif
+            const bool fetch = in > (have ? 1 : 0);
+            DataBeat beat = {};
+            if (fetch) beat = words.read();
+            const T b0 = beat.lane_word[0], b1 = beat.lane_word[1];
+            // the iteration's words in the call's order, the carried one first
+            const T v0 = have ? carry : b0, v1 = have ? b0 : b1;
+            if (fetch) {
+                carry = b1;
+                have = have ? in == 2 : in == 1;
+            } else if (in == 1) {
+                have = false;
             }
 #ifdef FGC_STREAM_SWEEP
+            if (in > 0) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v0;  // (kept as it came)
+            if (in > 1) SWEEP_WORDS[row * SWEEP_MAX_NEW + k + 1] = v1;
             k += in;
 #endif
-            for (int q = 0; q < 2 * DATA_BEAT; ++q) {  // the words taken leave the front
-#pragma HLS UNROLL
-                held[q] = q + in < 2 * DATA_BEAT ? held[q + in] : T(0);
-            }
-            have -= in;
             for (int c = 0; c < START_BANKS; ++c) {
 #pragma HLS UNROLL
                 const int op = START_OPS[i * START_BANKS + c];
                 const int to = ((op >> START_ROW_BITS) & mask) - 1, src = op >> (2 * START_ROW_BITS);
                 if (to >= 0) {
                     DATA_BUF[START_BANKS * to + c] = src < START_BANKS ? word[src]
-                                                     : src < START_BANKS + DATA_BEAT ? v[src - START_BANKS]
-                                                     : T(0);
+                                                     : src == START_BANKS ? v0
+                                                     : src == START_BANKS + 1 ? v1 : T(0);
                 }
             }
         }
