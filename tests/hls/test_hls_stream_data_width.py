@@ -12,7 +12,8 @@ the update's start off the path; docs/hls.md, "The update's start off the path")
   a batch step at keyframe 4 swept through the window, float) with the 64-bit port: the counting
   C simulation within 2 % of the model on every update, the incremental update 189 cycles
   shorter than with a word a beat, every estimate within float's 1 cm / 1 mrad of the simulator;
-  the host's words packed the other way round in each beat break the agreement.
+  the host's words packed the other way round in each beat, or the update's start reading a
+  beat's lanes the other way round, break the agreement.
 """
 
 from __future__ import annotations
@@ -147,6 +148,31 @@ def test_beats_packed_the_other_way_round_break_the_agreement(paper_a64, tmp_pat
                            ".lane_word[fgc::DATA_BEAT - 1 - k % fgc::DATA_BEAT]")
     assert patched != text
     tb.write_text(patched)
+    try:
+        result = bad.run(data)
+    except Exception:  # noqa: BLE001 - a failure is as good as a disagreement here
+        return
+    assert _distance(program, result, sim) > 10 * FLOAT_TOL
+
+
+@pytest.mark.heavy
+def test_a_start_that_takes_a_beats_words_the_other_way_round_breaks_the_agreement(paper_a64,
+                                                                                   tmp_path):
+    # the host packs as it should; the update's start reads each beat's lanes swapped (the reset
+    # and the window's filling read them right): the keyframes after the window is full go wrong
+    graph, program, data, _, _, stream, sim = paper_a64
+    from fgc_backends.hls.streaming import OnChipIncrementalStream
+
+    bad = OnChipIncrementalStream(graph, program, "float", out_dir=tmp_path,
+                                  qr_rows=2, design=dataclasses.replace(
+                                      stream.project.config.design, qr_rows=2))
+    header = bad.project.directory / "include" / "fgc_stream.h"
+    text = header.read_text()
+    patched = text.replace("const T b0 = beat.lane_word[0], b1 = beat.lane_word[1];",
+                           "const T b0 = beat.lane_word[1], b1 = beat.lane_word[0];")
+    assert patched != text
+    header.write_text(patched)
+    (bad.project.directory / f"{bad.project.name}.o").unlink(missing_ok=True)
     try:
         result = bad.run(data)
     except Exception:  # noqa: BLE001 - a failure is as good as a disagreement here
