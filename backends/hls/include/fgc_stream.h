@@ -252,6 +252,11 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<Data
     // cannot place in one bank, takes a port of every bank, as one bank's did)
 #pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=START_BANKS
 #pragma HLS ARRAY_PARTITION variable=START_OPS cyclic factor=START_BANKS
+#if defined(FGC_DATA_BEAT) && defined(FGC_STREAM_SWEEP)
+    // (the keyframe's words kept in SWEEP_WORDS as they come: up to DATA_BEAT writes an
+    // iteration, a sweep pass's two reads: both ports of a true dual-port RAM)
+#pragma HLS BIND_STORAGE variable=SWEEP_WORDS type=ram_t2p impl=bram
+#endif
     const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
 #ifndef FGC_STREAM_SWEEP
     (void)row;
@@ -300,9 +305,6 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<Data
         FGC_PHASE("stream_shift");  // up to DATA_BEAT of them an iteration (a beat a fetch)
 #ifdef FGC_STREAM_SWEEP
         int k = 0;  // the keyframe's next word
-        // (the keyframe's words kept as they came: up to DATA_BEAT writes an iteration, the
-        // sweep pass's two reads: both ports of a true dual-port RAM)
-#pragma HLS BIND_STORAGE variable=SWEEP_WORDS type=ram_t2p impl=bram
 #endif
         // a fetched beat's second word not yet written (`have`): an iteration that takes more
         // words than it holds fetches the next beat behind it (at most two words an iteration:
