@@ -453,16 +453,28 @@ void sweep_store(int total, int m, const T x_in[STREAM_KF_X], const DataIn data[
     }
     FGC_CYCLES("top", 0, "sweep_x_store", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     const int n = STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+#ifdef FGC_DATA_BEAT
+    // a beat a cycle, its two words into SWEEP_WORDS (two writes: its two ports, as
+    // start_data_task binds it)
+#pragma HLS BIND_STORAGE variable=SWEEP_WORDS type=ram_t2p impl=bram
+    const int beats = (n + DATA_BEAT - 1) / DATA_BEAT;
+    for (int q = 0; q < beats; ++q) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW_BEATS
+#pragma HLS PIPELINE II=1
+        const DataBeat beat = data[q];
+        const T b0 = beat.lane_word[0], b1 = beat.lane_word[1];
+        SWEEP_WORDS[row * SWEEP_MAX_NEW + 2 * q] = b0;
+        if (2 * q + 1 < n) SWEEP_WORDS[row * SWEEP_MAX_NEW + 2 * q + 1] = b1;
+    }
+    FGC_CYCLES("top", 0, "sweep_words_store", beats, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#else
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=SWEEP_MAX_NEW
 #pragma HLS PIPELINE II=1
-#ifdef FGC_DATA_BEAT
-        SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = data[k / DATA_BEAT].lane_word[k % DATA_BEAT];
-#else
         SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = data[k];
-#endif
     }
     FGC_CYCLES("top", 0, "sweep_words_store", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#endif
 }
 
 // A batch step's linearisation points: keyframes 0 … total - 1's estimates into their rows (the

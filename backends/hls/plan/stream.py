@@ -673,7 +673,9 @@ class WindowUpdateModel:
                                       move("tau_commit", (kf + n + n * (n + 1) // 2 + 2 + 1) // 2)),
                         _stream_phase("keep_commit", move("keep_commit", (n * n + 1) // 2))]
         if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
-            out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
+            # (its words a beat of the data port a cycle: HlsConfig.data_width)
+            out += [_stream_phase(f"sweep_store{m}", move("x", kf),
+                                  move("d", -(-len(d) // self.data_words)))
                     for m, d in enumerate(lay.new_dest)]
             out += [_stream_phase(f"sweep{j}_gather", move("x", j * kf)) for j in lay.sweep]
         if self.batch is not None:
