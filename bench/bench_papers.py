@@ -125,8 +125,8 @@ class Config:
     stream_root_wave: bool = True
     # the streaming top's data port (HlsConfig.data_width) on every searched stream design (not
     # the default design's row): 64 bits, two float words a beat (a Zynq HP port's width, the
-    # host packing them), takes the update's start from 380 cycles to 191 (keyframe 14 of the
-    # pick 8,884 -> 8,695) for no DSP, DATA_BUF's 8 banks (2 BRAM36 more) and the port's LUT /
+    # host packing them), takes the update's start from 243 cycles to 130 (keyframe 14 of the
+    # pick 8,747 -> 8,634) for no DSP, DATA_BUF's 8 banks (2 BRAM36 more) and the port's LUT /
     # FF (docs/hls.md, "The update's start off the path"), so it is not an axis
     stream_data_width: int = 64
     # paper B's solve: run the best design's counting C simulation on the problem (a minute or

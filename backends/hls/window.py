@@ -204,6 +204,19 @@ class WindowLayout(WindowTemplate):
             for k in range(m.words):
                 data_shift[m.start + k] = source.start + k
         self.x_moves, self.data_moves = _moves(x_shift), _moves(data_shift)
+        # the newest slot's prior after its point (its mean, square-root information and
+        # robust words): zero on every call (a keyframe enters with no prior information,
+        # _slot_words), so once the window is full the start writes them zero itself and the
+        # call brings the other words (kf_call, in NEW_DEST's order); while the window fills
+        # the call brings them all (the reset's priors are unit ones)
+        prior = self.prior_of[last]
+        self.kf_zero = list(range(prior.start + self.kf_words, prior.start + prior.words))
+        zero = set(self.kf_zero)
+        self.kf_call = [w for w in self.new_dest[last] if w not in zero]
+        if len(self.kf_call) + len(zero) != len(self.new_dest[last]) or any(
+                dst in zero for dst, _ in self.data_moves):
+            raise OnChipWindowError("internal error: the newest slot's prior is not among its "
+                                    "keyframe's words, or a shift writes it")
         self._start_tables()
 
     def _start_tables(self) -> None:
@@ -235,19 +248,25 @@ class WindowLayout(WindowTemplate):
         if self.size < 2:
             self._start_plans[words] = (1, [], [])
             return self._start_plans[words]
-        kf = self.new_dest[-1]
+        # the shift's moves, then the newest prior's tail zeroed; the call's words
+        moves, kf = self.start_moves(), self.kf_call
         best = None
         for nb in START_BANKS[words]:
-            rows = _start_schedule(self.data_moves, kf, nb, words)
+            rows = _start_schedule(moves, kf, nb, words)
             if best is None or len(rows) < len(best[1]):
                 best = (nb, rows)
-        _check_start(self.data_moves, kf, self.n_data, *best)
+        _check_start(moves, kf, self.n_data, *best)
         sweep = []
         if self.sweep is not None:
-            sweep = _start_schedule(self.data_moves, kf, best[0], 2)
-            _check_start(self.data_moves, kf, self.n_data, best[0], sweep)
+            sweep = _start_schedule(moves, kf, best[0], 2)
+            _check_start(moves, kf, self.n_data, best[0], sweep)
         self._start_plans[words] = (*best, sweep)
         return self._start_plans[words]
+
+    def start_moves(self) -> list[tuple[int, int]]:
+        """The update start's moves on DATA_BUF once the window is full: the shift's, then the
+        newest slot's prior tail zeroed (each after the shift's move that reads it)."""
+        return list(self.data_moves) + [(w, ZERO) for w in self.kf_zero]
 
     def start_context(self, words: int = 1) -> dict:
         """accel.cpp.jinja's START_OPS (and START_OPS_SWEEP) tables (:meth:`_start_tables`):
@@ -384,6 +403,7 @@ class WindowLayout(WindowTemplate):
                 "new_dest": [w for d in self.new_dest for w in d],
                 "new_begin": self.new_begin(),
                 "max_new": max(len(d) for d in self.new_dest),
+                "full_words": len(self.kf_call),
                 "start": self.start_context(data_words), "data_words": data_words,
                 "role": "window", "in_x": self.n_x, "in_data": self.n_data,
                 **self._kept_context(linear_cxx, part), **self._batch_context(),
@@ -516,7 +536,11 @@ class WindowLayout(WindowTemplate):
         """(slot, data words) of keyframe j's call (``x_new``: its initial storage, cluster
         order): its slot's factors and prior in ``NEW_DEST`` order."""
         m = min(j, self.size - 1)
-        return m, self._slot_words(m, j - m, x_new)
+        words = self._slot_words(m, j - m, x_new)
+        if j >= self.size:  # the window full: the newest prior's tail is the start's (zero)
+            keep = set(self.kf_call)
+            words = words[[k for k, w in enumerate(self.new_dest[m]) if w in keep]]
+        return m, words
 
     def _slot_words(self, m: int, first: int, x_new: np.ndarray) -> np.ndarray:
         """The data words a keyframe brings into slot m when slot 0 holds keyframe ``first``:

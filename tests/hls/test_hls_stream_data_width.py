@@ -2,15 +2,15 @@
 the update's start off the path; docs/hls.md, "The update's start off the path").
 
 - the update's start with the window full takes the call's keyframe words two an iteration over
-  DATA_BUF in 8 cyclic banks (window.py's ``start_plan(2)``): LIO's 557 moves and 379 keyframe
-  words in 190 iterations (379 with a word a beat), each bank one read and one write, at most two
-  keyframe words an iteration and in the call's order, DATA_BUF left as the moves one after
-  another and then the keyframe leave it; the word-a-beat plan is unchanged;
+  DATA_BUF in 8 cyclic banks (window.py's ``start_plan(2)``): LIO's 557 moves, the newest
+  prior's 137 tail words zeroed and the call's 242 words in 121 iterations (242 with a word a
+  beat), each bank one read and one write, at most two keyframe words an iteration and in the
+  call's order, DATA_BUF left as the moves one after another and then the keyframe leave it;
 - the option is refused where it means nothing: another width, a double design, a design with no
   streaming top; the emitted top takes ``DataBeat`` words on its own m_axi bundle;
 - heavy: paper A's design (n_u 4, two sets, two rows, the root in a wavefront; LIO N = 7, K = 3,
   a batch step at keyframe 4 swept through the window, float) with the 64-bit port: the counting
-  C simulation within 2 % of the model on every update, the incremental update 189 cycles
+  C simulation within 2 % of the model on every update, the incremental update 113 cycles
   shorter than with a word a beat, every estimate within float's 1 cm / 1 mrad of the simulator;
   the host's words packed the other way round in each beat, or the update's start reading a
   beat's lanes the other way round, break the agreement.
@@ -44,12 +44,12 @@ def lio6():
 
 def test_the_start_takes_two_keyframe_words_an_iteration(lio6):
     _, _, lay = lio6
-    kf = lay.new_dest[-1]
+    kf, moves = lay.kf_call, lay.start_moves()
     assert lay.start_plan(1) == (lay.start_banks, lay.start_rows, lay.sweep_rows)
-    assert (lay.start_banks, len(lay.start_rows)) == (4, 379)  # a word a beat: unchanged
+    assert (lay.start_banks, len(lay.start_rows)) == (4, 242)  # a word a beat
     nb, rows, _ = lay.start_plan(2)
-    writes = len(lay.data_moves) + len(kf)
-    assert (len(lay.data_moves), len(kf), nb, len(rows)) == (557, 379, 8, 190)
+    writes = len(moves) + len(kf)
+    assert (len(lay.data_moves), len(kf), nb, len(rows)) == (557, 242, 8, 121)
     assert len(rows) == -(-len(kf) // 2) and len(rows) >= -(-writes // nb)
     taken = []
     for row in rows:  # each bank one read and one write, at most two keyframe words, in order
@@ -59,9 +59,9 @@ def test_the_start_takes_two_keyframe_words_an_iteration(lio6):
         taken += [w for _, w, s in sorted(row, key=lambda c: c[2] or 0)
                   if s is not None and s >= nb]
     assert taken == kf  # the call's order
-    _check_start(lay.data_moves, kf, lay.n_data, nb, rows)
+    _check_start(moves, kf, lay.n_data, nb, rows)
     ctx = lay.start_context(2)
-    assert (ctx["banks"], ctx["iterations"], ctx["words"]) == (8, 190, 2)
+    assert (ctx["banks"], ctx["iterations"], ctx["words"]) == (8, 121, 2)
     # the sources: a bank (< 8), the iteration's first / second keyframe word (8, 9), zero (10)
     sources = {op >> 2 * ctx["row_bits"] for op in ctx["ops"]}
     assert sources <= set(range(11)) and {8, 9} <= sources
@@ -87,7 +87,7 @@ def test_the_emitted_top_takes_beats_on_its_own_bundle(lio6, tmp_path):
     assert "struct DataBeat {" in header and "const int DATA_BEAT = 2;" in header
     assert "const fgc::DataBeat data[fgc::STREAM_IN_BEATS]" in header
     cpp = text[f"{project.name}.cpp"]
-    assert "#define FGC_DATA_BEAT" in cpp and "N_START = 190;" in cpp
+    assert "#define FGC_DATA_BEAT" in cpp and "N_START = 121;" in cpp
     assert "#pragma HLS INTERFACE m_axi port=data offset=slave bundle=gmem1" in cpp
     assert "#pragma HLS AGGREGATE variable=data" in cpp
     assert "pack_data(words_in)" in text[f"tb_{project.name}.cpp"]
@@ -127,10 +127,11 @@ def test_two_words_a_beat_agree_with_the_simulator_and_the_model(paper_a64):
     for record, cycles, price in rows:  # the counting C simulation = the plan, every update
         assert 0.98 <= cycles / price.cycles <= 1.02, (record["keyframe"], cycles, price.cycles)
     one = _paper_a(7, 32)[4]
-    # the incremental updates once the window is full: 379 -> 190 iterations of the start
+    # the incremental updates once the window is full: the start's 242 + 1 cycles (the call's
+    # words a word an iteration) -> X's moves, 130 (its words in 121 + 1)
     for (r2, _, p2), (_, _, p1) in zip(rows, one, strict=True):
         if r2["mode"] == "incremental" and r2["keyframe"] >= 3:
-            assert p1.cycles - p2.cycles == 189
+            assert p1.cycles - p2.cycles == 113
             assert p2.term("start_banks").each < p1.term("start_banks").each
 
 

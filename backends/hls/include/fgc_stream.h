@@ -222,10 +222,12 @@ void start_x_task(bool leave, int kept, bool shift, int m, int row, bool from_ro
 // start_data_task takes them from: its loop takes them at the iterations its table says, so it
 // reads no address of `data` itself.
 template <class CFG>
-void start_in_task(int m, bool from_row, const DataIn data[DATA_IN_N], hls::stream<DataIn>& words) {
+void start_in_task(bool shift, int m, bool from_row, const DataIn data[DATA_IN_N],
+                   hls::stream<DataIn>& words) {
     FGC_TASK();
     FGC_PHASE("setup");
-    const int n = from_row ? 0 : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+    // (the window full: all but the newest prior's tail, STREAM_FULL_WORDS)
+    const int n = from_row ? 0 : shift ? STREAM_FULL_WORDS : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
 #ifdef FGC_DATA_BEAT
     const int beats = (n + DATA_BEAT - 1) / DATA_BEAT;
     for (int k = 0; k < beats; ++k) {
@@ -436,7 +438,7 @@ void update_start(bool leave, int kept, bool shift, int m, int row, bool from_ro
     hls::stream<DataIn> words("start_words");  // the call's keyframe words (beats), in their order
 #pragma HLS STREAM variable=words depth=2
     start_x_task<CFG>(leave, kept, shift, m, row, from_row, x_in, points, lin01);
-    start_in_task<CFG>(m, from_row, data, words);
+    start_in_task<CFG>(shift, m, from_row, data, words);
     start_data_task<CFG>(shift, m, row, from_row, words);
 }
 
@@ -444,7 +446,8 @@ void update_start(bool leave, int kept, bool shift, int m, int row, bool from_ro
 // The call's keyframe (total, entering slot m) kept as it came: its storage and its words, row
 // total (SWEEP_SLOTS for every keyframe past the last batch step), a word a cycle.
 template <class CFG>
-void sweep_store(int total, int m, const T x_in[STREAM_KF_X], const DataIn data[DATA_IN_N]) {
+void sweep_store(int total, int m, bool full, const T x_in[STREAM_KF_X],
+                 const DataIn data[DATA_IN_N]) {
     FGC_PHASE("setup");
     const int row = total < SWEEP_SLOTS ? total : SWEEP_SLOTS;
     for (int k = 0; k < STREAM_KF_X; ++k) {
@@ -452,7 +455,8 @@ void sweep_store(int total, int m, const T x_in[STREAM_KF_X], const DataIn data[
         SWEEP_X[row * STREAM_KF_X + k] = x_in[k];
     }
     FGC_CYCLES("top", 0, "sweep_x_store", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    const int n = STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+    // (the window full: the call's words but the newest prior's tail, as the start takes them)
+    const int n = full ? STREAM_FULL_WORDS : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
 #ifdef FGC_DATA_BEAT
     // a beat a cycle, its two words into SWEEP_WORDS (two writes: its two ports, as
     // start_data_task binds it)
@@ -1419,7 +1423,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const DataIn data[DATA_IN_N]
     bool sweep = false;
     if (update) {
         sweep = IS_BATCH[total] != 0;
-        if (sweep) sweep_store<CFG>(total, m, x_in, data);
+        if (sweep) sweep_store<CFG>(total, m, j >= STREAM_SLOTS, x_in, data);
     }
     const int passes = sweep ? total + 1 : 1;
     bool sweep_singular = false;
@@ -1502,7 +1506,10 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const DataIn data[DATA_IN_N]
             FGC_TASKS_JOIN();
 #ifdef FGC_STREAM_BATCH
             // keyframe total's words for the batch kernel follow the window's
-            if (total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
+            if (total < BATCH_SLOTS) {
+                CFG::batch_in(total, x_in, data + (j >= STREAM_SLOTS ? STREAM_FULL_WORDS
+                                                   : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]));
+            }
             if (batch) {
                 marginal = batch_step<CFG>(total, first, errors, info);
                 continue;

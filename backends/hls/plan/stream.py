@@ -677,6 +677,9 @@ class WindowUpdateModel:
             out += [_stream_phase(f"sweep_store{m}", move("x", kf),
                                   move("d", -(-len(d) // self.data_words)))
                     for m, d in enumerate(lay.new_dest)]
+            # (the window full: the call's words but the newest prior's tail, window.py kf_call)
+            out.append(_stream_phase("sweep_store_full", move("x", kf),
+                                     move("d", -(-len(lay.kf_call) // self.data_words))))
             out += [_stream_phase(f"sweep{j}_gather", move("x", j * kf)) for j in lay.sweep]
         if self.batch is not None:
             b = lay.batch
@@ -1058,8 +1061,9 @@ class WindowUpdateModel:
         per = "two" if row else ("one" if self.data_words == 1
                                  else f"up to {self.data_words}, a beat of the data port")
         return Term(name, -self._banked(row), times, False,
-                    f"the shift's {len(lay.data_moves)} data words and the keyframe's "
-                    f"{len(lay.new_dest[-1])} ({per} an iteration) in "
+                    f"the shift's {len(lay.data_moves)} data words, the newest prior's "
+                    f"{len(lay.kf_zero)} zeroed and the keyframe's "
+                    f"{len(lay.kf_call)} ({per} an iteration) in "
                     f"{len(rows)} iterations over DATA_BUF's {self.start_banks} banks, not one "
                     "after the other through one")
 
@@ -1210,9 +1214,12 @@ class WindowUpdateModel:
         m = min(keyframe, lay.size - 1)
         first = max(0, keyframe - lay.window)
         ev = dict(events) if events is not None else self.events_of(iterations, status=status)
+        words = len(lay.kf_call) if keyframe >= lay.size else len(lay.new_dest[m])
+        zeroed = (f", the other {len(lay.kf_zero)} zero (its prior's tail: the start's)"
+                  if keyframe >= lay.size else "")
         terms = [Term("keyframe_in", st[f"stream_keyframe_in{m}"], 1, False,
-                      f"keyframe {keyframe}'s storage and {len(lay.new_dest[m])} data words in "
-                      f"(slot {m})")]
+                      f"keyframe {keyframe}'s storage and {words} data words in "
+                      f"(slot {m}{zeroed})")]
         if keyframe >= lay.size:
             terms.append(Term("shift", st["stream_shift"], 1, False,
                               "every slot down one: its variables, its factors' words, τ"))
@@ -1226,7 +1233,9 @@ class WindowUpdateModel:
             if sweep:
                 # kept as it came before the sweep's passes (which read it back); an update that
                 # is not a sweep keeps it as update_start moves it into the window (no cycles)
-                terms.append(Term("sweep_store", st[f"stream_sweep_store{m}"], 1, False,
+                store = ("stream_sweep_store_full" if keyframe >= lay.size
+                         else f"stream_sweep_store{m}")
+                terms.append(Term("sweep_store", st[store], 1, False,
                                   "the keyframe's storage and words kept as they came (the "
                                   "sweep brings them in again)"))
                 # the sweep starts from the kept estimates (pass -1)
