@@ -123,6 +123,12 @@ class Config:
     # or two rows a cycle: 409 to 2,812 cycles fewer, the same DSP, 3 BRAM36 more; docs/hls.md,
     # "The root step in a wavefront"), so it is not an axis (no design priced twice)
     stream_root_wave: bool = True
+    # the streaming top's data port (HlsConfig.data_width) on every searched stream design (not
+    # the default design's row): 64 bits, two float words a beat (a Zynq HP port's width, the
+    # host packing them), takes the update's start from 243 cycles to 130 (keyframe 14 of the
+    # pick 8,747 -> 8,634) for no DSP, DATA_BUF's 8 banks (2 BRAM36 more) and the port's LUT /
+    # FF (docs/hls.md, "The update's start off the path"), so it is not an axis
+    stream_data_width: int = 64
     # paper B's solve: run the best design's counting C simulation on the problem (a minute or
     # two at N = 50) and price the solve by the linearisations and solves it really runs;
     # False: the per-solve figure is the plan's iteration times GTSAM's iteration count, said so
@@ -335,6 +341,7 @@ class StreamDesign:
     qr_rows: int = 1  # the QR Update units' rows a cycle (HlsConfig.qr_rows)
     bind: tuple = ()  # the operators' binding (HlsConfig.bind)
     root_wave: bool = False  # the root step in a wavefront (HlsConfig.root_wave)
+    data_width: int = 32  # the streaming top's data port, bits a beat (HlsConfig.data_width)
     lut: int = 0  # the plan's LUT and FF, and the part's
     ff: int = 0
     fabric: tuple[int, int] = (0, 0)
@@ -358,6 +365,7 @@ class StreamDesign:
         bind = ", operators bound " + ",".join(f"{k}={v}" for k, v in self.bind) \
             if self.bind else ""
         wave = ", the root in a wavefront" if self.root_wave else ""
+        wave += f", data port {self.data_width} bits" if self.data_width != 32 else ""
         return f"n_u={self.units}, {sets}, {alloc}{rows}{wave}{bind}"
 
     @property
@@ -451,8 +459,10 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
                     continue  # the default design's own options: priced above
                 # (the root in a wavefront on two unit sets where the window takes it)
                 wave = cfg.stream_root_wave and sets == 2
+                # (the default design's row: HlsConfig's default port)
+                width = 32 if units == default_units and sets is None else cfg.stream_data_width
                 config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc,
-                                   qr_rows=rows, bind=bind, root_wave=wave)
+                                   qr_rows=rows, bind=bind, root_wave=wave, data_width=width)
                 try:
                     pricer = streaming.WindowPricer(sp, config=config)
                 except FgcError as exc:  # a unit-set count the window's levels cannot take
@@ -462,7 +472,7 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
                         break
                     wave = False  # (its schedule cannot take the wave: the design without)
                     config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc,
-                                       qr_rows=rows, bind=bind)
+                                       qr_rows=rows, bind=bind, data_width=width)
                     try:
                         pricer = streaming.WindowPricer(sp, config=config)
                     except FgcError as exc2:
@@ -473,7 +483,7 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
                 device = pricer.model.plan.target.device
                 # a binding changes no cycle (config_op pins each latency): one binding's
                 # prices serve the others of the same options
-                key = (sets, alloc, rows, wave)
+                key = (sets, alloc, rows, wave, width)
                 if key not in prices:
                     prices[key] = np.array([pricer.price(u).latency_ms for u in updates])
                 default = (units == default_units and sets is None and alloc is None
@@ -485,7 +495,7 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
                                  held=pricer.model.duplicated(), default=default,
                                  part=res["part"], qr_rows=rows, bind=config.bind,
                                  lut=res["lut"], ff=res["ff"], fabric=(device.lut, device.ff),
-                                 root_wave=wave)
+                                 root_wave=wave, data_width=width)
                 out.append(d)
                 if d.fits_plan or d.lut > device.lut or d.ff > device.ff:
                     break
@@ -502,7 +512,8 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
             got = measure_stream(cfg.lio_n, Path(tmp) / "stream",
                                  HlsConfig(scalar="float", unit_sets=d.unit_sets,
                                            allocation=d.allocation, qr_rows=d.qr_rows,
-                                           bind=d.bind, root_wave=d.root_wave),
+                                           bind=d.bind, root_wave=d.root_wave,
+                                           data_width=d.data_width),
                                  d.units, batch,
                                  solver=base)
         d.reader_dsp = got["reader_dsp"]

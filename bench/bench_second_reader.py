@@ -207,8 +207,12 @@ def main(argv=None) -> int:
     parser.add_argument("--bind", type=_bind_arg, default=(), metavar="KIND=IMPL,…",
                         help="every design's operator binding (HlsConfig.bind; run_hls.tcl's "
                         "config_op, which the reader reads back), e.g. add=fabric,mul=meddsp")
+    parser.add_argument("--data-width", type=int, choices=(32, 64), default=32,
+                        help="every stream design's data port, bits a beat (HlsConfig "
+                        "data_width: 64 = two float words a beat; default 32)")
     args = parser.parse_args(argv)
     bind = args.bind
+    width = {"data_width": args.data_width} if args.data_width != 32 else {}
     lio_n, imu_n = (8, 10) if args.quick else (30, 50)
     units = (1, 4) if args.quick else (1, 4, 8, 32)
     cpes = (5, 20) if args.quick else (5, 20, 80)
@@ -227,11 +231,12 @@ def main(argv=None) -> int:
 
             solver = SolverConfig(precision="float32", linear="qr")
             solver = solver if args.lm else one_step_solver(solver)
-            stream = measure_stream(lio_n, Path(tmp) / "stream", HlsConfig(bind=bind),
+            stream = measure_stream(lio_n, Path(tmp) / "stream", HlsConfig(bind=bind, **width),
                                     solver=solver)
             smallest = measure_stream(lio_n, Path(tmp) / "smallest",
                                       HlsConfig(unit_sets=1, allocation=(
-                                          ("add", 1), ("mul", 1), ("div", 1)), bind=bind), 1,
+                                          ("add", 1), ("mul", 1), ("div", 1)), bind=bind,
+                                          **width), 1,
                                       solver=solver)
             streams = [("default design", stream),
                        ("smallest searched (n_u 1, one unit set, ALLOCATION 1/1/1)", smallest)]
@@ -249,7 +254,7 @@ def main(argv=None) -> int:
                 streams.append((label, measure_stream(
                     lio_n, Path(tmp) / f"design{i}", HlsConfig(unit_sets=v[1], allocation=alloc,
                                                               qr_rows=qr_rows, bind=bind,
-                                                              root_wave=wave),
+                                                              root_wave=wave, **width),
                     v[0], solver=solver)))
         lio = example("lio")
         for n_u in units:

@@ -59,6 +59,9 @@ def main(argv=None) -> None:
     ap.add_argument("--top", type=int, default=25, help="terms printed per keyframe")
     ap.add_argument("--qr-rows", type=int, choices=(1, 2), default=1,
                     help="rows a cycle through each QR Update unit (HlsConfig qr_rows; default 1)")
+    ap.add_argument("--data-width", type=int, choices=(32, 64), default=32,
+                    help="bits a beat of the streaming top's data port (HlsConfig data_width: "
+                         "64 = two float words a beat; default 32)")
     args = ap.parse_args(argv)
     shown = {int(k) for k in args.keyframes.split(",") if k.strip()}
     cfg = b.Config()
@@ -71,9 +74,11 @@ def main(argv=None) -> None:
     streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
     pricer = streaming.WindowPricer(sp, config=HlsConfig(
         scalar="float", unit_sets=args.sets, allocation=_allocation(args.allocation),
-        qr_rows=args.qr_rows, bind=parse_bind(args.bind), root_wave=args.root_wave))
+        qr_rows=args.qr_rows, bind=parse_bind(args.bind), root_wave=args.root_wave,
+        data_width=args.data_width))
     res = pricer.model.resources()
     wave = ", the root in a wavefront" if args.root_wave else ""
+    wave += f", data port {args.data_width} bits a beat" if args.data_width != 32 else ""
     print(f"n_u {args.units}, {args.sets} unit set(s), {args.qr_rows} row(s) a cycle{wave}, "
           f"ALLOCATION {args.allocation}, operators bound {bind_label(parse_bind(args.bind))}: "
           f"{res['dsp']:,} DSP / {res['bram36']:g} BRAM36 / {res['lut']:,} LUT / "

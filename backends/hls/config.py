@@ -44,6 +44,7 @@ ALLOCATION_LIMIT = (1, 4096)  # one operator kind's ALLOCATION limit in a factor
 BACKSUB_LANES = (1, 2, 4)  # back-substitution's widths (fgc_backsub.h: 2, COND's four ports;
 # 4: by columns, four update lanes per end of a two-ended chain)
 BACKSUB_COLUMNS = 4  # the width by columns (units/backsub.py's COLUMN_LANES)
+DATA_WIDTHS = (32, 64)  # the streaming top's `data` port: a float word a beat, or two (HP ports)
 
 
 class HlsConfigError(CodegenError):
@@ -119,6 +120,14 @@ class DesignOptions:
       itself, the root's own rows streamed to set 1 by the datapaths (units/qr.py's
       ``lin_wave``). ``False`` (default): level by level. Refused (``PlanError``) on a
       schedule whose last level is not one root over two steps.
+    - ``data_width``: the streaming top's ``data`` port (an m_axi bundle of its own), in bits a
+      beat: 32 (default, one float word a beat) or 64 (two float words a beat, the width of
+      Zynq-7000's HP ports; the host packs word k into beat k / 2, lane k % 2): the update's
+      start (fgc_stream.h's start_data_task) then takes the call's keyframe words two an
+      iteration, DATA_BUF in up to 8 cyclic banks (window.py's ``_start_tables``;
+      docs/hls.md, "The update's start off the path"). The on-chip window and incremental
+      designs in float only (a 64-bit beat is one double word): refused elsewhere.
+      ``fgc compile --data-width 64``.
 
     The units' sizes (n_u Update units, #CPE) and the clock are the Program's solver settings
     (``SolverConfig.units``, ``cpe``, ``clock_mhz``): the simulator prices them too.
@@ -136,6 +145,7 @@ class DesignOptions:
     qr_rows: int = 1
     bind: tuple[tuple[str, str], ...] = ()
     root_wave: bool = False
+    data_width: int = 32
 
     def __post_init__(self):
         try:  # canonical, so equal designs compare (and hash, and cache) equal
@@ -172,6 +182,9 @@ class DesignOptions:
                                  f"cycle through a Cholesky cascade), got {self.cascade_lanes!r}")
         if not isinstance(self.root_wave, bool):
             raise HlsConfigError(f"root_wave must be True or False, got {self.root_wave!r}")
+        if self.data_width not in DATA_WIDTHS or isinstance(self.data_width, bool):
+            raise HlsConfigError(f"data_width must be one of {DATA_WIDTHS} (the bits a beat of "
+                                 f"the streaming top's data port), got {self.data_width!r}")
         if not isinstance(self.hgc_third_lane, bool):
             raise HlsConfigError(f"hgc_third_lane must be True or False, got "
                                  f"{self.hgc_third_lane!r}")
@@ -327,15 +340,16 @@ class HlsConfig(scalars.ScalarTypes):
     qr_rows: InitVar[int | None] = None
     bind: InitVar[tuple[tuple[str, str], ...] | None] = None
     root_wave: InitVar[bool | None] = None
+    data_width: InitVar[int | None] = None
 
     def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside,
                       backsub_lanes, cascade_lanes, hgc_third_lane, qr_rows, bind,
-                      root_wave) -> None:
+                      root_wave, data_width) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
         old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside, backsub_lanes,
-               cascade_lanes, hgc_third_lane, qr_rows, bind, root_wave)
+               cascade_lanes, hgc_third_lane, qr_rows, bind, root_wave, data_width)
         given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
                  if value is not None}
         if given:
@@ -356,6 +370,10 @@ class HlsConfig(scalars.ScalarTypes):
                 raise HlsConfigError("linear_scalar 'float' is narrower than scalar 'double': the "
                                      "linear solver can only be widened")
         self.design.check(program)
+        if self.design.data_width != 32 and self.scalar != "float":
+            raise HlsConfigError(f"data_width={self.design.data_width}: two float words a beat "
+                                 f"of the data port; this design's scalar is {self.scalar} "
+                                 "(a 64-bit beat holds one double word: nothing to gain)")
         for name in ("max_variables", "max_step_columns"):
             if int(getattr(self, name)) < 1:
                 raise HlsConfigError(f"{name} must be ≥ 1, got {getattr(self, name)}")
@@ -363,6 +381,11 @@ class HlsConfig(scalars.ScalarTypes):
             if not re.match(r"^[A-Za-z0-9_+=./-]+$", flag):
                 raise HlsConfigError(f"compiler option {flag!r} has characters a Makefile would "
                                      "interpret")
+
+    @property
+    def data_words(self) -> int:
+        """Words of T a beat of the streaming top's ``data`` port (``design.data_width``)."""
+        return self.design.data_width // 32 if self.scalar == "float" else 1
 
     def resolved(self, program: Program, stream: bool = False) -> HlsConfig:
         """This config with its design's automatic options decided for ``program``

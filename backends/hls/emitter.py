@@ -87,6 +87,13 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
         raise HlsConfigError(f"backsub_lanes {config.backsub_lanes}: the streaming designs "
                              "(window, incremental) are priced with one-lane back-substitution "
                              "only (plan/update.py)")
+    if config.design.data_width != 32 and (stream is None or not _window(stream)
+                                           or stream.batch is not None):
+        raise HlsConfigError(f"data_width {config.design.data_width}: the streaming top's data "
+                             "port (the on-chip window or incremental design, its update's "
+                             "start); this design has " + (
+                                 "no streaming top" if stream is None else
+                                 "a batch kernel, whose entries read a word a beat"))
     # the automatic options decided for this Program (one lane in a streaming design): the
     # plan, the text and the project's config all carry the resolved width
     config = config.resolved(program, stream=stream is not None)
@@ -97,7 +104,9 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     context.update(accel_context(program, config, context))
     if stream is not None and stream.template is not program:
         raise HlsConfigError("internal error: the stream layout is not of the emitted Program")
-    context["stream"] = None if stream is None else stream.context(config.linear_cxx, config.part)
+    context["stream"] = None if stream is None else (
+        stream.context(config.linear_cxx, config.part, config.data_words)
+        if config.data_words > 1 else stream.context(config.linear_cxx, config.part))
     context["leaf_lin"] = bool(context["stream"] and context["stream"]["marginal"])
     # the on-chip window's one-step solve: level 0's unit sets reflect their steps inside the
     # linearisation's region (lin_level), as the datapaths fill their banks
@@ -792,6 +801,13 @@ def tcl_config_ops(program: Program, config: HlsConfig) -> list[tuple[str, str, 
         for kind, impl in config.bind:
             out += [(op, impl, table.op(kind).latency) for op in VITIS_OPS[kind, precision]]
     return out
+
+
+def _window(stream) -> bool:
+    """Whether ``stream`` is the on-chip window's layout (its top takes the call's words)."""
+    from fgc_backends.hls.window import WindowLayout
+
+    return isinstance(stream, WindowLayout)
 
 
 def _context(program: Program, config: HlsConfig, project: str, vector: bool = True) -> dict:

@@ -42,8 +42,10 @@ from fgc_backends.hls.target import DEFAULT_PART
 
 KEEP, ZERO = -1, -2  # shift codes besides a source word: keep the word, write zero
 # DATA_BUF's cyclic partitions the update's start may take (its shift's and keyframe's words in
-# one loop, fgc_stream.h's start_data_task): the fewest iterations, then the fewest banks
-START_BANKS = (2, 4)
+# one loop, fgc_stream.h's start_data_task): the fewest iterations, then the fewest banks; per
+# keyframe words an iteration (the data port's words a beat: two, a 64-bit port of floats, can
+# use eight banks)
+START_BANKS = {1: (2, 4), 2: (2, 4, 8)}
 
 
 class OnChipWindowError(FgcError):
@@ -202,6 +204,19 @@ class WindowLayout(WindowTemplate):
             for k in range(m.words):
                 data_shift[m.start + k] = source.start + k
         self.x_moves, self.data_moves = _moves(x_shift), _moves(data_shift)
+        # the newest slot's prior after its point (its mean, square-root information and
+        # robust words): zero on every call (a keyframe enters with no prior information,
+        # _slot_words), so once the window is full the start writes them zero itself and the
+        # call brings the other words (kf_call, in NEW_DEST's order); while the window fills
+        # the call brings them all (the reset's priors are unit ones)
+        prior = self.prior_of[last]
+        self.kf_zero = list(range(prior.start + self.kf_words, prior.start + prior.words))
+        zero = set(self.kf_zero)
+        self.kf_call = [w for w in self.new_dest[last] if w not in zero]
+        if len(self.kf_call) + len(zero) != len(self.new_dest[last]) or any(
+                dst in zero for dst, _ in self.data_moves):
+            raise OnChipWindowError("internal error: the newest slot's prior is not among its "
+                                    "keyframe's words, or a shift writes it")
         self._start_tables()
 
     def _start_tables(self) -> None:
@@ -214,38 +229,64 @@ class WindowLayout(WindowTemplate):
         from its row of SWEEP_WORDS (two read ports: two an iteration). Per iteration per bank
         (word read or None, word written or None, its source: a bank, ``nb`` / ``nb + 1`` the
         iteration's first / second keyframe word, None zero). Checked against the moves one
-        after another (:func:`_check_start`)."""
-        self.start_banks, self.start_rows, self.sweep_rows = 1, [], []
+        after another (:func:`_check_start`). :meth:`start_plan` gives the same for a ``data``
+        port of two words a beat."""
+        self._start_plans = {}
+        self.start_banks, self.start_rows, self.sweep_rows = self.start_plan(1)
+
+    def start_plan(self, words: int = 1) -> tuple[int, list, list]:
+        """(banks, start rows, sweep rows) of the update's start (:meth:`_start_tables`) with
+        the call's keyframe words ``words`` an iteration (the ``data`` port's words a beat,
+        ``HlsConfig.data_words``): the banks of :data:`START_BANKS` for ``words`` with the
+        fewest iterations, then the fewest banks; a sweep pass's rows (two words an iteration
+        from SWEEP_WORDS) over the same banks."""
+        if words in self._start_plans:
+            return self._start_plans[words]
+        if words not in START_BANKS:
+            raise OnChipWindowError(f"internal error: the update's start takes 1 or 2 keyframe "
+                                    f"words an iteration, not {words}")
         if self.size < 2:
-            return
-        kf = self.new_dest[-1]
+            self._start_plans[words] = (1, [], [])
+            return self._start_plans[words]
+        # the shift's moves, then the newest prior's tail zeroed; the call's words
+        moves, kf = self.start_moves(), self.kf_call
         best = None
-        for nb in START_BANKS:
-            rows = _start_schedule(self.data_moves, kf, nb)
+        for nb in START_BANKS[words]:
+            rows = _start_schedule(moves, kf, nb, words)
             if best is None or len(rows) < len(best[1]):
                 best = (nb, rows)
-        self.start_banks, self.start_rows = best
-        _check_start(self.data_moves, kf, self.n_data, *best)
+        _check_start(moves, kf, self.n_data, *best)
+        sweep = []
         if self.sweep is not None:
-            self.sweep_rows = _start_schedule(self.data_moves, kf, best[0], 2)
-            _check_start(self.data_moves, kf, self.n_data, best[0], self.sweep_rows)
+            sweep = _start_schedule(moves, kf, best[0], 2)
+            _check_start(moves, kf, self.n_data, best[0], sweep)
+        self._start_plans[words] = (*best, sweep)
+        return self._start_plans[words]
 
-    def start_context(self) -> dict:
+    def start_moves(self) -> list[tuple[int, int]]:
+        """The update start's moves on DATA_BUF once the window is full: the shift's, then the
+        newest slot's prior tail zeroed (each after the shift's move that reads it)."""
+        return list(self.data_moves) + [(w, ZERO) for w in self.kf_zero]
+
+    def start_context(self, words: int = 1) -> dict:
         """accel.cpp.jinja's START_OPS (and START_OPS_SWEEP) tables (:meth:`_start_tables`):
         per iteration and bank one word, the row read (0: none), the row written plus one (0:
         none) and the written word's source, ``row_bits`` bits each but the source's (a bank,
-        ``nb`` / ``nb + 1`` the iteration's first / second keyframe word, ``nb + 2`` zero)."""
-        nb = self.start_banks
+        ``nb + q`` the iteration's q-th keyframe word, q < max(2, ``words``), ``nb + max(2,
+        ``words``)`` zero); ``words``: the call's keyframe words an iteration (the ``data``
+        port's words a beat)."""
+        nb, start_rows, sweep_rows = self.start_plan(words)
         bits = max(1, ((self.n_data - 1) // nb + 1).bit_length())
+        zero = nb + max(2, words)
 
         def ops(rows):
             return [(0 if r is None else r // nb) | (0 if w is None else w // nb + 1) << bits
-                    | (nb + 2 if s is None else s) << 2 * bits
+                    | (zero if s is None else s) << 2 * bits
                     for row in rows for r, w, s in row]
 
-        return {"banks": nb, "iterations": len(self.start_rows), "row_bits": bits,
-                "ops": ops(self.start_rows), "sweep_iterations": len(self.sweep_rows),
-                "sweep_ops": ops(self.sweep_rows)}
+        return {"banks": nb, "iterations": len(start_rows), "row_bits": bits,
+                "ops": ops(start_rows), "sweep_iterations": len(sweep_rows),
+                "sweep_ops": ops(sweep_rows), "words": words}
 
     def _leaf(self, tables, index) -> None:
         """The elimination step of slot 0: its frontal variables slot 0's, its separator slot
@@ -344,9 +385,10 @@ class WindowLayout(WindowTemplate):
         return frozenset(i for k, i in enumerate(entries) if k < 32 and i in gone)
 
     # -- what the emitter places ---------------------------------------------------------------
-    def context(self, linear_cxx: str, part: str = DEFAULT_PART) -> dict:
+    def context(self, linear_cxx: str, part: str = DEFAULT_PART, data_words: int = 1) -> dict:
         """The stream section's constants and tables (accel.h.jinja / accel.cpp.jinja);
-        ``linear_cxx``: the linear solver's scalar (τ's singularity threshold)."""
+        ``linear_cxx``: the linear solver's scalar (τ's singularity threshold); ``data_words``:
+        the ``data`` port's words a beat (``HlsConfig.data_words``)."""
         return {"window": self.window, "slots": self.size, "kf_x": self.kf_words,
                 "kf_t": self.kf_dim,
                 "leaf_step": self.leaf_step if self.leaf_step is not None else 0,
@@ -361,7 +403,8 @@ class WindowLayout(WindowTemplate):
                 "new_dest": [w for d in self.new_dest for w in d],
                 "new_begin": self.new_begin(),
                 "max_new": max(len(d) for d in self.new_dest),
-                "start": self.start_context(),
+                "full_words": len(self.kf_call),
+                "start": self.start_context(data_words), "data_words": data_words,
                 "role": "window", "in_x": self.n_x, "in_data": self.n_data,
                 **self._kept_context(linear_cxx, part), **self._batch_context(),
                 "sweep": None if self.sweep is None else {
@@ -493,7 +536,11 @@ class WindowLayout(WindowTemplate):
         """(slot, data words) of keyframe j's call (``x_new``: its initial storage, cluster
         order): its slot's factors and prior in ``NEW_DEST`` order."""
         m = min(j, self.size - 1)
-        return m, self._slot_words(m, j - m, x_new)
+        words = self._slot_words(m, j - m, x_new)
+        if j >= self.size:  # the window full: the newest prior's tail is the start's (zero)
+            keep = set(self.kf_call)
+            words = words[[k for k, w in enumerate(self.new_dest[m]) if w in keep]]
+        return m, words
 
     def _slot_words(self, m: int, first: int, x_new: np.ndarray) -> np.ndarray:
         """The data words a keyframe brings into slot m when slot 0 holds keyframe ``first``:
@@ -616,7 +663,7 @@ class BatchLayout(WindowTemplate):
 
     def context(self, linear_cxx: str, part: str = DEFAULT_PART) -> dict:
         """The batch kernel's section (accel.cpp.jinja, role "batch")."""
-        return {"role": "batch", "slots": self.size, "kf_x": self.kf_words,
+        return {"role": "batch", "data_words": 1, "slots": self.size, "kf_x": self.kf_words,
                 "kf_t": self.kf_dim, "slot_x": [w for s in self.slot_x for w in s],
                 "new_dest": [w for d in self.new_dest for w in d],
                 "new_begin": self.new_begin(), "slot_step": self.slot_step,

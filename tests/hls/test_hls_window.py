@@ -9,8 +9,9 @@ top keeps the window between calls and takes one keyframe's words per call.
 - a keyframe brings only its own words: the slot's factors and prior, far fewer than the window's;
 - the update's start with the window full (the shift's words and the keyframe's in one loop over
   DATA_BUF's cyclic banks, window.py's _start_schedule) takes the keyframe's word an iteration
-  (LIO: 557 + 379 words in 379 iterations over 4 banks) and leaves DATA_BUF as the moves one
-  after another do; a table out of order is refused;
+  (LIO: 557 moves, the newest prior's 137 tail words zeroed and the call's other 242 words in
+  242 iterations over 4 banks) and leaves DATA_BUF as the moves one after another do; a table
+  out of order is refused;
 - the update model prices each call from the emitted plan: the shift once the window is full,
   the marginalisation when a keyframe leaves, the QR steps on the rows non-zero in the update
   (bench/bench_stream_cycles.py: within 0.988 … 0.998 of the counting C simulation per update
@@ -98,26 +99,33 @@ def test_a_keyframe_brings_only_its_own_words(lio6):
     assert lay.kf_words == 21 and steady < lay.n_data / 2
     lines = (stream.project.directory / "stream.txt").read_text().splitlines()
     numbers = sum(int(line.split()[0]) for line in lines[2:])
-    assert numbers == sum(lay.kf_words + len(lay.new_dest[min(j, 2)]) for j in range(6))
+    # (the window full: all but the newest prior's tail, which the start zeroes)
+    assert numbers == sum(lay.kf_words + (len(lay.new_dest[j]) if j < 3 else len(lay.kf_call))
+                          for j in range(6))
+    assert len(lay.kf_call) + len(lay.kf_zero) == steady
 
 
 def test_the_start_takes_a_keyframe_word_an_iteration(lio6):
     _, _, _, stream, _, _ = lio6
     lay = stream.layout
-    kf, nb = lay.new_dest[-1], lay.start_banks
-    writes = len(lay.data_moves) + len(kf)
-    assert (len(lay.data_moves), len(kf), nb) == (557, 379, 4)
+    kf, nb, moves = lay.kf_call, lay.start_banks, lay.start_moves()
+    writes = len(moves) + len(kf)
+    assert (len(lay.data_moves), len(lay.kf_zero), len(kf), nb) == (557, 137, 242, 4)
+    assert len(lay.new_dest[-1]) == 379 and writes == 936
     # one keyframe word an iteration bounds it, the banks' write ports do not (936 / 4 = 234)
     assert len(lay.start_rows) == len(kf) > -(-writes // nb)
     for row in lay.start_rows:  # each bank one read and one write, at most one keyframe word
         assert len(row) == nb and sum(1 for _, _, s in row if s is not None and s >= nb) <= 1
     # two banks: two writes an iteration bound it (936 / 2 = 468)
-    assert len(_start_schedule(lay.data_moves, kf, 2)) == writes // 2
+    assert len(_start_schedule(moves, kf, 2)) == writes // 2
     # the call's keyframe in its order: a table whose iterations are swapped is refused
     rows = list(lay.start_rows)
     rows[0], rows[-1] = rows[-1], rows[0]
     with pytest.raises(OnChipWindowError, match="banked start"):
-        _check_start(lay.data_moves, kf, lay.n_data, nb, rows)
+        _check_start(moves, kf, lay.n_data, nb, rows)
+    # the newest prior's tail left as the shift leaves it (not zeroed) is refused
+    with pytest.raises(OnChipWindowError, match="banked start"):
+        _check_start(moves[:-1], kf, lay.n_data, nb, lay.start_rows)
 
 
 def test_a_chain_of_moves_runs_in_one_iteration():

@@ -136,6 +136,21 @@ L BATCH_COND[BATCH_SLOTS * STREAM_KF_T * (2 * STREAM_KF_T + 1)];  // their condi
 L BATCH_TAU[STREAM_KF_T * (STREAM_KF_T + 1)];  // the factor passed into the next window's oldest
 #endif
 
+// The call's `data` port (an m_axi bundle of its own): a word a beat, or (FGC_DATA_BEAT,
+// HlsConfig.data_width 64) DATA_BEAT float words a beat, accel.h's DataBeat (the host packs the
+// call's word k into beat k / DATA_BEAT, lane k % DATA_BEAT; a last beat's lanes past the words
+// are padding no one reads)
+#ifdef FGC_DATA_BEAT
+typedef DataBeat DataIn;
+const int DATA_IN_N = STREAM_IN_BEATS;
+#if defined(FGC_STREAM_BATCH)
+#error "a data port of DATA_BEAT words a beat is not built for the batch kernel's entries"
+#endif
+#else
+typedef T DataIn;
+const int DATA_IN_N = STREAM_IN_DATA;
+#endif
+
 // The update's start as one DATAFLOW region of two processes, each on its own memories: the
 // moves on X (start_x_task: the leaving keyframe's estimate into X_KEPT where `leave`, the
 // shift's variables where `shift`, the keyframe's storage into slot m, and slots 0 and 1 into
@@ -203,29 +218,47 @@ void start_x_task(bool leave, int kept, bool shift, int m, int row, bool from_ro
 }
 
 // The call's keyframe words (not a sweep pass's, whose row is on chip) read from `data` in their
-// order, a word a cycle (a burst), into the FIFO start_data_task takes them from: its loop
-// takes them at the iterations its table says, so it reads no address of `data` itself.
+// order, a beat a cycle (a burst: a word, or FGC_DATA_BEAT's DATA_BEAT words), into the FIFO
+// start_data_task takes them from: its loop takes them at the iterations its table says, so it
+// reads no address of `data` itself.
 template <class CFG>
-void start_in_task(int m, bool from_row, const T data[STREAM_IN_DATA], hls::stream<T>& words) {
+void start_in_task(bool shift, int m, bool from_row, const DataIn data[DATA_IN_N],
+                   hls::stream<DataIn>& words) {
     FGC_TASK();
     FGC_PHASE("setup");
-    const int n = from_row ? 0 : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+    // (the window full: all but the newest prior's tail, STREAM_FULL_WORDS)
+    const int n = from_row ? 0 : shift ? STREAM_FULL_WORDS : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+#ifdef FGC_DATA_BEAT
+    const int beats = (n + DATA_BEAT - 1) / DATA_BEAT;
+    for (int k = 0; k < beats; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW_BEATS
+#pragma HLS PIPELINE II=1
+        words.write(data[k]);
+    }
+    FGC_CYCLES("top", 0, "keyframe_data_read", beats, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#else
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
 #pragma HLS PIPELINE II=1
         words.write(data[k]);
     }
     FGC_CYCLES("top", 0, "keyframe_data_read", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#endif
 }
 
 template <class CFG>
-void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& words) {
+void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<DataIn>& words) {
     FGC_TASK();
     // DATA_BUF in START_BANKS cyclic banks: the start loop below takes a read and a write of
     // every bank an iteration (every other access to DATA_BUF, at an address the scheduler
     // cannot place in one bank, takes a port of every bank, as one bank's did)
 #pragma HLS ARRAY_PARTITION variable=DATA_BUF cyclic factor=START_BANKS
 #pragma HLS ARRAY_PARTITION variable=START_OPS cyclic factor=START_BANKS
+#if defined(FGC_DATA_BEAT) && defined(FGC_STREAM_SWEEP)
+    // (the keyframe's words kept in SWEEP_WORDS as they come: up to DATA_BEAT writes an
+    // iteration, a sweep pass's two reads: both ports of a true dual-port RAM)
+#pragma HLS BIND_STORAGE variable=SWEEP_WORDS type=ram_t2p impl=bram
+#endif
     const int b = STREAM_NEW_BEGIN[m], n = STREAM_NEW_BEGIN[m + 1] - b;
 #ifndef FGC_STREAM_SWEEP
     (void)row;
@@ -269,6 +302,62 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& 
         return;
     }
 #endif
+#ifdef FGC_DATA_BEAT
+    if (shift) {  // (the window full: m is the newest slot) the shift and the keyframe's words,
+        FGC_PHASE("stream_shift");  // up to DATA_BEAT of them an iteration (a beat a fetch)
+#ifdef FGC_STREAM_SWEEP
+        int k = 0;  // the keyframe's next word
+#endif
+        // a fetched beat's second word not yet written (`have`): an iteration that takes more
+        // words than it holds fetches the next beat behind it (at most two words an iteration:
+        // at most one left over, a register and a mux)
+        T carry = T(0);
+        bool have = false;
+        for (int i = 0; i < N_START; ++i) {
+#pragma HLS PIPELINE II=1
+#pragma HLS DEPENDENCE variable=DATA_BUF inter false
+            T word[START_BANKS];  // what each bank reads this iteration (its reads before its writes)
+#pragma HLS ARRAY_PARTITION variable=word complete
+            int in = 0;  // the keyframe's words this iteration (sources START_BANKS + q, q < in)
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS[i * START_BANKS + c];
+                word[c] = DATA_BUF[START_BANKS * (op & mask) + c];
+                const int src = op >> (2 * START_ROW_BITS);
+                if (src >= START_BANKS && src < START_BANKS + DATA_BEAT) ++in;
+            }
+            const bool fetch = in > (have ? 1 : 0);
+            DataBeat beat = {};
+            if (fetch) beat = words.read();
+            const T b0 = beat.lane_word[0], b1 = beat.lane_word[1];
+            // the iteration's words in the call's order, the carried one first
+            const T v0 = have ? carry : b0, v1 = have ? b0 : b1;
+            if (fetch) {
+                carry = b1;
+                have = have ? in == 2 : in == 1;
+            } else if (in == 1) {
+                have = false;
+            }
+#ifdef FGC_STREAM_SWEEP
+            if (in > 0) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v0;  // (kept as it came)
+            if (in > 1) SWEEP_WORDS[row * SWEEP_MAX_NEW + k + 1] = v1;
+            k += in;
+#endif
+            for (int c = 0; c < START_BANKS; ++c) {
+#pragma HLS UNROLL
+                const int op = START_OPS[i * START_BANKS + c];
+                const int to = ((op >> START_ROW_BITS) & mask) - 1, src = op >> (2 * START_ROW_BITS);
+                if (to >= 0) {
+                    DATA_BUF[START_BANKS * to + c] = src < START_BANKS ? word[src]
+                                                     : src == START_BANKS ? v0
+                                                     : src == START_BANKS + 1 ? v1 : T(0);
+                }
+            }
+        }
+        FGC_CYCLES("stream", 0, "start_data", N_START, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+        return;
+    }
+#else
     if (shift) {  // (the window full: m is the newest slot) the shift and the keyframe's words
         FGC_PHASE("stream_shift");
 #ifdef FGC_STREAM_SWEEP
@@ -304,7 +393,23 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& 
         FGC_CYCLES("stream", 0, "start_data", N_START, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
         return;
     }
+#endif
     FGC_PHASE("setup");
+#ifdef FGC_DATA_BEAT
+    DataBeat beat = {};  // (the window filling: a word an iteration, a beat every DATA_BEAT words)
+    for (int k = 0; k < n; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
+#pragma HLS PIPELINE II=1
+        if (!from_row && k % DATA_BEAT == 0) beat = words.read();
+#ifdef FGC_STREAM_SWEEP
+        const T v = from_row ? SWEEP_WORDS[row * SWEEP_MAX_NEW + k] : beat.lane_word[k % DATA_BEAT];
+        DATA_BUF[NEW_DEST[b + k]] = v;
+        if (!from_row) SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = v;
+#else
+        DATA_BUF[NEW_DEST[b + k]] = beat.lane_word[k % DATA_BEAT];
+#endif
+    }
+#else
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW
 #pragma HLS PIPELINE II=1
@@ -316,6 +421,7 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& 
         DATA_BUF[NEW_DEST[b + k]] = words.read();
 #endif
     }
+#endif
     FGC_CYCLES("top", 0, "keyframe_data_in", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
 }
 
@@ -326,13 +432,13 @@ void start_data_task(bool shift, int m, int row, bool from_row, hls::stream<T>& 
 // storage, then its factors' and its prior's words.
 template <class CFG>
 void update_start(bool leave, int kept, bool shift, int m, int row, bool from_row,
-                  const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA], bool points,
+                  const T x_in[STREAM_KF_X], const DataIn data[DATA_IN_N], bool points,
                   T lin01[2 * STREAM_KF_X]) {
 #pragma HLS DATAFLOW
-    hls::stream<T> words("start_words");  // the call's keyframe words, in their order
+    hls::stream<DataIn> words("start_words");  // the call's keyframe words (beats), in their order
 #pragma HLS STREAM variable=words depth=2
     start_x_task<CFG>(leave, kept, shift, m, row, from_row, x_in, points, lin01);
-    start_in_task<CFG>(m, from_row, data, words);
+    start_in_task<CFG>(shift, m, from_row, data, words);
     start_data_task<CFG>(shift, m, row, from_row, words);
 }
 
@@ -340,7 +446,8 @@ void update_start(bool leave, int kept, bool shift, int m, int row, bool from_ro
 // The call's keyframe (total, entering slot m) kept as it came: its storage and its words, row
 // total (SWEEP_SLOTS for every keyframe past the last batch step), a word a cycle.
 template <class CFG>
-void sweep_store(int total, int m, const T x_in[STREAM_KF_X], const T data[STREAM_IN_DATA]) {
+void sweep_store(int total, int m, bool full, const T x_in[STREAM_KF_X],
+                 const DataIn data[DATA_IN_N]) {
     FGC_PHASE("setup");
     const int row = total < SWEEP_SLOTS ? total : SWEEP_SLOTS;
     for (int k = 0; k < STREAM_KF_X; ++k) {
@@ -348,13 +455,30 @@ void sweep_store(int total, int m, const T x_in[STREAM_KF_X], const T data[STREA
         SWEEP_X[row * STREAM_KF_X + k] = x_in[k];
     }
     FGC_CYCLES("top", 0, "sweep_x_store", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
-    const int n = STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+    // (the window full: the call's words but the newest prior's tail, as the start takes them)
+    const int n = full ? STREAM_FULL_WORDS : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m];
+#ifdef FGC_DATA_BEAT
+    // a beat a cycle, its two words into SWEEP_WORDS (two writes: its two ports, as
+    // start_data_task binds it)
+#pragma HLS BIND_STORAGE variable=SWEEP_WORDS type=ram_t2p impl=bram
+    const int beats = (n + DATA_BEAT - 1) / DATA_BEAT;
+    for (int q = 0; q < beats; ++q) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_NEW_BEATS
+#pragma HLS PIPELINE II=1
+        const DataBeat beat = data[q];
+        const T b0 = beat.lane_word[0], b1 = beat.lane_word[1];
+        SWEEP_WORDS[row * SWEEP_MAX_NEW + 2 * q] = b0;
+        if (2 * q + 1 < n) SWEEP_WORDS[row * SWEEP_MAX_NEW + 2 * q + 1] = b1;
+    }
+    FGC_CYCLES("top", 0, "sweep_words_store", beats, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#else
     for (int k = 0; k < n; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=SWEEP_MAX_NEW
 #pragma HLS PIPELINE II=1
         SWEEP_WORDS[row * SWEEP_MAX_NEW + k] = data[k];
     }
     FGC_CYCLES("top", 0, "sweep_words_store", n, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
+#endif
 }
 
 // A batch step's linearisation points: keyframes 0 … total - 1's estimates into their rows (the
@@ -1236,7 +1360,7 @@ void out_beside_commit(bool commit, int c, bool out, bool pending, bool held, T 
 // not walk (ISAM2's update does not compute its estimates either): a batch step walks them
 // first if they are stale, as it starts from them; the estimates are the same whenever walked.
 template <class CFG>
-void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA], T x_out[N_X]
+void stream_call(int op, const T x_in[STREAM_IN_X], const DataIn data[DATA_IN_N], T x_out[N_X]
                  FGC_STREAM_KEPT_ARG, T errors[2], int info[5]) {
     // LM, the marginal's linearisation and its QR step run in window_task (its ALLOCATION: one
     // RTL instance of each kernel function for all their call sites)
@@ -1249,7 +1373,11 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
         }
         for (int i = 0; i < N_DATA; ++i) {
 #pragma HLS PIPELINE II=1
+#ifdef FGC_DATA_BEAT
+            DATA_BUF[i] = data[i / DATA_BEAT].lane_word[i % DATA_BEAT];
+#else
             DATA_BUF[i] = data[i];
+#endif
         }
         FGC_CYCLES("top", 0, "x_in", N_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
         FGC_CYCLES("top", 0, "data_in", N_DATA, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
@@ -1295,7 +1423,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
     bool sweep = false;
     if (update) {
         sweep = IS_BATCH[total] != 0;
-        if (sweep) sweep_store<CFG>(total, m, x_in, data);
+        if (sweep) sweep_store<CFG>(total, m, j >= STREAM_SLOTS, x_in, data);
     }
     const int passes = sweep ? total + 1 : 1;
     bool sweep_singular = false;
@@ -1378,7 +1506,10 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const T data[STREAM_IN_DATA]
             FGC_TASKS_JOIN();
 #ifdef FGC_STREAM_BATCH
             // keyframe total's words for the batch kernel follow the window's
-            if (total < BATCH_SLOTS) CFG::batch_in(total, x_in, data + STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]);
+            if (total < BATCH_SLOTS) {
+                CFG::batch_in(total, x_in, data + (j >= STREAM_SLOTS ? STREAM_FULL_WORDS
+                                                   : STREAM_NEW_BEGIN[m + 1] - STREAM_NEW_BEGIN[m]));
+            }
             if (batch) {
                 marginal = batch_step<CFG>(total, first, errors, info);
                 continue;

@@ -436,6 +436,10 @@ class WindowUpdateModel:
             raise PlanError("internal error: the stream model's QR steps are not the plan's")
         ctx = layout.context(config.linear_cxx, config.part)
         self.layout_marginal = ctx["marginal"]
+        # the update's start (window.py's start_plan): the call's keyframe words as many an
+        # iteration as the data port's beat holds (HlsConfig.data_width), DATA_BUF's banks
+        self.data_words = config.data_words
+        self.start_banks, self.start_rows, self.sweep_rows = layout.start_plan(self.data_words)
         # the one-step solve's linearisation once keyframe 0 has left: without the instances
         # that hold nothing from then on (units/datapath.py's solve_skip; lin_level's part 3)
         self._skip = frozenset()
@@ -617,8 +621,8 @@ class WindowUpdateModel:
                 _stream_phase("shift_data", move("d", len(lay.data_moves))),
                 # the window full: the shift's words and the keyframe's in one loop over
                 # DATA_BUF's banks (window.py's _start_tables; start_data_task)
-                _stream_phase("start_data", move("d", max(1, len(lay.start_rows)))),
-                _stream_phase("start_data_sweep", move("d", max(1, len(lay.sweep_rows)))),
+                _stream_phase("start_data", move("d", max(1, len(self.start_rows)))),
+                _stream_phase("start_data_sweep", move("d", max(1, len(self.sweep_rows)))),
                 _stream_phase("keyframe_x_in", move("x", kf)),
                 _stream_phase("x_out", move("x", lay.n_x)),
                 _stream_phase("x_out_kf", move("x", kf))]
@@ -715,8 +719,13 @@ class WindowUpdateModel:
                                       move("tau_commit", (kf + n + n * (n + 1) // 2 + 2 + 1) // 2)),
                         _stream_phase("keep_commit", move("keep_commit", (n * n + 1) // 2))]
         if lay.sweep is not None:  # batch steps as sweeps: each keyframe kept as it came
-            out += [_stream_phase(f"sweep_store{m}", move("x", kf), move("d", len(d)))
+            # (its words a beat of the data port a cycle: HlsConfig.data_width)
+            out += [_stream_phase(f"sweep_store{m}", move("x", kf),
+                                  move("d", -(-len(d) // self.data_words)))
                     for m, d in enumerate(lay.new_dest)]
+            # (the window full: the call's words but the newest prior's tail, window.py kf_call)
+            out.append(_stream_phase("sweep_store_full", move("x", kf),
+                                     move("d", -(-len(lay.kf_call) // self.data_words))))
             out += [_stream_phase(f"sweep{j}_gather", move("x", j * kf)) for j in lay.sweep]
         if self.batch is not None:
             b = lay.batch
@@ -798,7 +807,7 @@ class WindowUpdateModel:
                                              n * (2 * n + 1) if batch is not None else 0,
                                              self.spec))
         # DATA_BUF in the update start's cyclic banks (fgc_stream.h's start_data_task)
-        memories = tuple(replace(m, banks=max(m.banks, self.layout.start_banks))
+        memories = tuple(replace(m, banks=max(m.banks, self.start_banks))
                          if m.name == "data" else m for m in merged.memories)
         return replace(merged, memories=memories, units=merged.units + self.stream_units())
 
@@ -1103,11 +1112,14 @@ class WindowUpdateModel:
 
     def _banked_term(self, times: int = 1, name: str = "start_banks", row: bool = False) -> Term:
         lay = self.layout
-        rows = lay.sweep_rows if row else lay.start_rows
+        rows = self.sweep_rows if row else self.start_rows
+        per = "two" if row else ("one" if self.data_words == 1
+                                 else f"up to {self.data_words}, a beat of the data port")
         return Term(name, -self._banked(row), times, False,
-                    f"the shift's {len(lay.data_moves)} data words and the keyframe's "
-                    f"{len(lay.new_dest[-1])} ({'two' if row else 'one'} an iteration) in "
-                    f"{len(rows)} iterations over DATA_BUF's {lay.start_banks} banks, not one "
+                    f"the shift's {len(lay.data_moves)} data words, the newest prior's "
+                    f"{len(lay.kf_zero)} zeroed and the keyframe's "
+                    f"{len(lay.kf_call)} ({per} an iteration) in "
+                    f"{len(rows)} iterations over DATA_BUF's {self.start_banks} banks, not one "
                     "after the other through one")
 
     def _start_term(self, m: int, shift: bool, leave: bool, points: bool,
@@ -1257,9 +1269,12 @@ class WindowUpdateModel:
         m = min(keyframe, lay.size - 1)
         first = max(0, keyframe - lay.window)
         ev = dict(events) if events is not None else self.events_of(iterations, status=status)
+        words = len(lay.kf_call) if keyframe >= lay.size else len(lay.new_dest[m])
+        zeroed = (f", the other {len(lay.kf_zero)} zero (its prior's tail: the start's)"
+                  if keyframe >= lay.size else "")
         terms = [Term("keyframe_in", st[f"stream_keyframe_in{m}"], 1, False,
-                      f"keyframe {keyframe}'s storage and {len(lay.new_dest[m])} data words in "
-                      f"(slot {m})")]
+                      f"keyframe {keyframe}'s storage and {words} data words in "
+                      f"(slot {m}{zeroed})")]
         if keyframe >= lay.size:
             terms.append(Term("shift", st["stream_shift"], 1, False,
                               "every slot down one: its variables, its factors' words, τ"))
@@ -1273,7 +1288,9 @@ class WindowUpdateModel:
             if sweep:
                 # kept as it came before the sweep's passes (which read it back); an update that
                 # is not a sweep keeps it as update_start moves it into the window (no cycles)
-                terms.append(Term("sweep_store", st[f"stream_sweep_store{m}"], 1, False,
+                store = ("stream_sweep_store_full" if keyframe >= lay.size
+                         else f"stream_sweep_store{m}")
+                terms.append(Term("sweep_store", st[store], 1, False,
                                   "the keyframe's storage and words kept as they came (the "
                                   "sweep brings them in again)"))
                 # the sweep starts from the kept estimates (pass -1)

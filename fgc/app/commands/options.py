@@ -230,6 +230,11 @@ def hardware_args(p: argparse.ArgumentParser, design: str | None) -> None:
                             "1 (the default) or 2 (the reflection's vector in two lanes by row "
                             "parity: about half a unit's cycles a reflection, at 2 more adders "
                             "and multipliers a unit)")
+        h.add_argument("--data-width", type=int, choices=(32, 64), metavar="BITS",
+                       help=f"{where}: the streaming top's data port (--window / "
+                            "--incremental, float): 32 bits a beat (the default, a word) or 64 "
+                            "(two float words a beat, a Zynq HP port's width; the host packs "
+                            "them): the update's start takes the keyframe's words two a cycle")
         h.add_argument("--qr-unit", choices=("householder", "stream"),
                        help=f"{where}: the QR unit set: householder (paper A's, one DATAFLOW "
                             "region per reflection; the default) or stream (n_u reflection "

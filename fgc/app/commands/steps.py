@@ -99,9 +99,9 @@ def implied_precision(args, default: str) -> str:
 def hls_config(args, program):
     """The HLS backend's config: --scalar (default: the Program's precision) and the design's
     options (``HlsConfig.design``) from --part, --clock, --allocation, --unit-sets, --qr-unit,
-    --qr-rows, --cascade-lanes, --backsub-lanes (auto: None) and --hgc-before (one clock for
-    the cost model and run_hls.tcl: ``clock_ns`` is ``1000 / SolverConfig.clock_mhz``;
-    ``DesignOptions.check`` checks them)."""
+    --qr-rows, --cascade-lanes, --backsub-lanes (auto: None), --data-width and --hgc-before
+    (one clock for the cost model and run_hls.tcl: ``clock_ns`` is ``1000 /
+    SolverConfig.clock_mhz``; ``DesignOptions.check`` checks them)."""
     hls = load_backend("hls")
     clock = getattr(args, "clock", None)
     design = hls.DesignOptions(**{
@@ -113,7 +113,8 @@ def hls_config(args, program):
             ("cascade_lanes", getattr(args, "cascade_lanes", None)),
             ("qr_rows", getattr(args, "qr_rows", None)),
             ("backsub_lanes", getattr(args, "backsub_lanes", None)),
-            ("bind", getattr(args, "bind", None))) if value},
+            ("bind", getattr(args, "bind", None)),
+            ("data_width", getattr(args, "data_width", None))) if value},
         **({"hgc_beside": False} if getattr(args, "hgc_before", False) else {}))
     config = hls.HlsConfig(scalar=getattr(args, "scalar", None) or c_scalar(program),
                            design=design)
@@ -161,7 +162,7 @@ def refuse_hls_design(args, backend: str) -> None:
     """--allocation, --unit-sets, --qr-unit, --cascade-lanes, --backsub-lanes (a width, not
     auto), --bind and --hgc-before shape the HLS design: other backends have no such thing."""
     for flag in ("allocation", "unit_sets", "qr_unit", "hgc_before", "cascade_lanes",
-                 "backsub_lanes", "qr_rows", "bind"):
+                 "backsub_lanes", "qr_rows", "bind", "data_width"):
         if getattr(args, flag, None):
             raise UsageError(f"fgc {args.command}: --{flag.replace('_', '-')} applies to "
                              f"--backend hls only (not {backend})")
