@@ -421,7 +421,11 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         for v in k.variables:
             kinds[v] = k.kind
     variables, steps = retire_order(program, retire_solved(_tables(program)))
-    from fgc_backends.hls.units.lm_control import fused_step_test, retire_step_test
+    from fgc_backends.hls.units.lm_control import (
+        fused_step_test,
+        retire_solved_test,
+        retire_step_test,
+    )
     ii, depth = retire_timing(program.variables, plan.ops, _sizes(program)["MAX_F"],
                               plan.options.state_allocation,
                               retire_step_test(program, plan.options))
@@ -521,6 +525,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
             # the copies into X (units/lm_control.py's retire_step_test)
             "retire_test": retire_step_test(program, plan.options),
+            # the one-step policy's sums in the slot design's state update instead of that loop
+            # (units/lm_control.py's retire_solved_test; fgc_backsub.h's FGC_BS_STEP_TEST)
+            "retire_solved": retire_solved_test(program, plan.options),
             "small": shared, "banks": banks, "wave": _wave_context(program, plan),
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             "qr_rows": plan.options.qr_rows,  # fgc_qr.h's FGC_QR_TWO_ROWS (2)

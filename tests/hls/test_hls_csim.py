@@ -437,6 +437,30 @@ def test_one_step_rows_in_the_banks_match_the_simulator(tmp_path):
     _check_against_reference("one_step", program, result, reference, "double")
 
 
+def test_one_step_sums_in_the_slot_designs_state_update_match_the_simulator(tmp_path):
+    """The one-step policy on the slot design (backsub_lanes 1): the gradient's largest |entry|,
+    |X|², |δ|², δᵀg and δ's finiteness are summed by back_substitute's state update as δ
+    arrives (units/lm_control.py's retire_solved_test, FGC_BS_STEP_TEST) instead of
+    lm_solved_test's loop after the solve; LM's decisions on them are the simulator's (a
+    gradient maximum left zero stops before the step: the solve would not be the simulator's)."""
+    from fgc_backends.hls.emitter import accel_plan
+    graph = robust_chain(8)
+    program = compile_graph(graph, SolverConfig(method="gn", linear="qr", max_iterations=1),
+                            name="one_step_slots")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", backsub_lanes=1))
+    text = (tmp_path / "one_step_slots.cpp").read_text()
+    assert "#define FGC_BS_STEP_TEST 1" in text and "lm_solved_test<" not in text
+    plan = accel_plan(program, project.config)
+    assert "retire_solved_test" in {u.name for u in plan.units}
+    decide = {lp.name for ph in plan.phases if ph.name == "lm_control"
+              for p in ph.processes for lp in p.loops}
+    assert decide == {"step_scalars", "decision"}, decide
+    data = problem_data(graph, program)
+    result = run_csim(project, program, data)
+    reference = sim.run(program, data, precision="float64")
+    _check_against_reference("one_step_slots", program, result, reference, "double")
+
+
 def _two_beacons(y0: float = 0.001) -> fgc.Graph:
     """A Pose2 between two beacons (-1, 0) and (1, 0) at range √2 each, started at (0, y0)
     almost on the line between them: the ranges' Jacobians nearly parallel there, so the

@@ -641,6 +641,14 @@ void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx,
                     hls::stream<TrialVar>& tx2, bool at_x) {
     FGC_OUTER_BRANCH();
     L delta[CFG::N_TANGENT];  // the solved entries by tangent index
+#ifdef FGC_BS_STEP_TEST
+    // the one-step policy's sums (the kernel's FGC_BS_STEP_TEST): |delta|^2, delta^T g, delta's
+    // finiteness, the gradient's largest |entry| and |X|^2 summed a variable an iteration (the
+    // variable's terms from retract_variable; a sum's add is its carried dependence, its
+    // latency within RETIRE_II), to CFG::retire_test after the solve (not at_x)
+    typename CFG::TestT dd = 0, dg = 0, gm = 0, xx = 0;
+    bool fin = true;
+#endif
     for (int i = 0; i < CFG::N_VARIABLES; ++i) {
 #pragma HLS PIPELINE II=CFG::RETIRE_II
         const int s = RETIRE_STEP[i];
@@ -658,9 +666,23 @@ void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx,
             }
         }
         // its words on to trial_cost (and tx2: the kernel's second cost process, if any)
+#ifdef FGC_BS_STEP_TEST
+        typename CFG::TestT vd = 0, vg = 0, vm = 0, vx = 0;
+        bool vf = true;
+        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2, vd, vg, vm, vf, vx);
+        dd += vd;
+        dg += vg;
+        xx += vx;
+        gm = vm > gm ? vm : gm;
+        fin = fin && vf;
+#else
         CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2);
+#endif
         FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
     }
+#ifdef FGC_BS_STEP_TEST
+    if (!at_x) CFG::retire_test(dd, dg, gm, fin, xx);
+#endif
 }
 
 // Back-substitution root first into DELTA, the state update X_TRIAL = X (+) DELTA beside it,

@@ -694,6 +694,25 @@ def column_build(ctx) -> None:
     column_phases(ctx, name)
 
 
+def _retire_solved_unit(ctx) -> None:
+    """The one-step policy's sums in the slot design's state update (units/lm_control.py's
+    retire_solved_test): per variable its |δ|², δᵀg, |g|'s maximum and |x|², summed by the
+    retire's loop at its II (:func:`~fgc_backends.hls.units.lm_control.retire_solved_loop`). Its
+    reads of G (a variable's tangent words, two a cycle) fit the II the δ copy's words set
+    (a step's MAX_F and the variable's tangent words); X's words it reads already."""
+    from fgc_backends.hls.units.lm_control import retire_solved_loop, retire_solved_test
+    from fgc_backends.hls.units.state_update import retire_timing
+    program = ctx.program
+    if not retire_solved_test(program, ctx.opts):
+        return
+    ii, _ = retire_timing(program.variables, ctx.ops, ctx.sizes["MAX_F"],
+                          ctx.opts.state_allocation)
+    ctx.units.append(bound_unit("retire_solved_test", "the one-step policy's sums in the state "
+                                "update (the gradient's largest |entry|, |X|², |δ|², δᵀg, a "
+                                "variable an iteration)",
+                                (retire_solved_loop(program, ii),), table=ctx.ops))
+
+
 def build(ctx) -> None:
     """Both linear solvers: :data:`LANES` back-substitution units (QR: ``qr<l>_backsub``;
     Cholesky: ``trisolve``), whatever the unit sets (as emitted: one step's cond_backsub on one
@@ -708,6 +727,7 @@ def build(ctx) -> None:
     if lanes > 1:  # COND cyclic over ``lanes`` banks (backsub_slots' ARRAY_PARTITION)
         ctx.memories[:] = [dataclasses.replace(m, banks=lanes) if m.name == "cond" else m
                            for m in ctx.memories]
+    _retire_solved_unit(ctx)
     if program.solver.linear == "qr":
         backsub_phases(ctx, "backsub")
         for lane in range(LANES):
