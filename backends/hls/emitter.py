@@ -536,6 +536,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
             # from DELTA)
             "bs_xoff": _backsub_xoff(program),
+            # the root's conditional into back-substitution's lane 0 by its commit (slot 0 not
+            # run: units/backsub.py's root_in_commit), and the root step
+            "bs_root_commit": _root_in_commit(program, plan),
             "bs_lanes": plan.options.backsub_lanes,  # fgc_backsub.h's FGC_BS_LANES (> 1)
             "bsc": _backsub_columns(program, plan),  # backsub_lanes 4: the BSC_* tables
             "cpe": plan.options.cpe, "cascade_lanes": plan.options.cascade_lanes,
@@ -728,6 +731,15 @@ def _backsub_slots(program: Program) -> tuple[tuple[int, int, int], ...]:
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.backsub import backsub_slots
     return backsub_slots(_tables(program))
+
+
+def _root_in_commit(program: Program, plan) -> int | None:
+    """The root step when qr_commit writes its conditional into back-substitution's lane 0
+    (units/backsub.py's root_in_commit), else None."""
+    from fgc_backends.hls.units.backsub import root_in_commit
+    if not root_in_commit(program, plan.options):
+        return None
+    return _backsub_slots(program)[0][1]
 
 
 def _backsub_xoff(program: Program) -> tuple[int, ...]:

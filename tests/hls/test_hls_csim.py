@@ -442,7 +442,10 @@ def test_one_step_sums_in_the_slot_designs_state_update_match_the_simulator(tmp_
     |X|², |δ|², δᵀg and δ's finiteness are summed by back_substitute's state update as δ
     arrives (units/lm_control.py's retire_solved_test, FGC_BS_STEP_TEST) instead of
     lm_solved_test's loop after the solve; LM's decisions on them are the simulator's (a
-    gradient maximum left zero stops before the step: the solve would not be the simulator's)."""
+    gradient maximum left zero stops before the step: the solve would not be the simulator's).
+    The root's conditional reaches back-substitution's lane 0 in its commit (units/backsub.py's
+    root_in_commit: the slots start at the root's solve; without qr_commit's copy the root
+    would be solved from a buffer nothing wrote)."""
     from fgc_backends.hls.emitter import accel_plan
     graph = robust_chain(8)
     program = compile_graph(graph, SolverConfig(method="gn", linear="qr", max_iterations=1),
@@ -450,6 +453,7 @@ def test_one_step_sums_in_the_slot_designs_state_update_match_the_simulator(tmp_
     project = emit(program, tmp_path, HlsConfig(scalar="double", backsub_lanes=1))
     text = (tmp_path / "one_step_slots.cpp").read_text()
     assert "#define FGC_BS_STEP_TEST 1" in text and "lm_solved_test<" not in text
+    assert "#define FGC_BS_ROOT_COMMIT 1" in text
     plan = accel_plan(program, project.config)
     assert "retire_solved_test" in {u.name for u in plan.units}
     decide = {lp.name for ph in plan.phases if ph.name == "lm_control"

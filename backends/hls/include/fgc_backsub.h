@@ -372,7 +372,7 @@ void cond_backsub_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2
 // FGC_BS_LANES (backsub_slots' pragmas), a buffer's words at their offset from the group
 // boundary below the step's first word (cond_load_wide), hence 2 FGC_BS_LANES words more
 L BS_COND0[MAX_F * (MAX_W + 1) + 2 * FGC_BS_LANES];  // lane 0's conditional (R | S | d)
-#else
+#elif !defined(FGC_BS_ROOT_COMMIT)  // (else the kernel declared it for qr_commit)
 L BS_COND0[MAX_F * (MAX_W + 1)];  // lane 0's conditional (R | S | d)
 #endif
 L BS_XS0[MAX_W + 1];  // its separator's solution
@@ -590,7 +590,12 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
 #pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=2
 #endif
     const int slots = at_x ? 0 : BS_SLOTS;  // at_x: no solve (the cost at X)
-    for (int k = 0; k < slots; ++k) {
+#ifdef FGC_BS_ROOT_COMMIT
+    const int first = 1;  // slot 0, the root's load: qr_commit wrote it into BS_COND0
+#else
+    const int first = 0;
+#endif
+    for (int k = first; k < slots; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=BS_SLOTS
         const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = BS_LOAD[k];
         const int sf = sv >= 0 ? STEP_F[sv] : 0, ssep = sv >= 0 ? STEP_W[sv] - STEP_F[sv] : 0;

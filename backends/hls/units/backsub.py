@@ -135,6 +135,17 @@ def backsub_slots(tables: dict) -> tuple[tuple[int, int, int], ...]:
     return tuple(slots)
 
 
+def root_in_commit(program, opts) -> bool:
+    """Whether the root step's conditional reaches its back-substitution lane in its commit
+    (fgc_eliminate.h's qr_commit with FGC_BS_ROOT_COMMIT: the same word into COND and into lane
+    0's buffer BS_COND0 in the same cycle, as cond_load would copy it: the root has no
+    separator, so its load is a plain copy), so back_substitute's slot process starts at slot 1,
+    the root's solve (:func:`backsub_slots`' slot 0 loads the root alone): QR with the slot
+    design one lane wide (``backsub_lanes`` 1; the wide lanes keep their own layout, Cholesky's
+    drain writes COND elsewhere)."""
+    return program.solver.linear == "qr" and opts.backsub_lanes == 1
+
+
 def backsub_xoff(tables: dict) -> tuple[int, ...]:
     """Per slot of :func:`backsub_slots`: where the loaded step's separator solution sits in the
     loading lane's solution buffer (``BS_X<q>``, the frontal solution of the step lane q solved
@@ -580,10 +591,13 @@ def slot_retire(ctx) -> tuple[list, int, list[int]]:
     lanes = ctx.opts.backsub_lanes
     slots, sent, counts = [], [], []
     xoff = backsub_xoff(tables)
+    first = 1 if root_in_commit(ctx.program, ctx.opts) else 0  # (slot 0: the root's load)
     for k, (solve, load, _) in enumerate(backsub_slots(tables)):
+        if k < first:
+            continue
         slots.append(backsub_slot_loops(tables, solve, load, ops, timing, xoff[k] >= 0, lanes))
         if solve >= 0:
-            sent.append(k)
+            sent.append(len(slots) - 1)  # (its index among the slots run)
             counts.append(len(ctx.program.schedule.steps[solve].frontals))
     ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
                               ctx.opts.state_allocation,
