@@ -536,6 +536,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
             # from DELTA)
             "bs_xoff": _backsub_xoff(program),
+            # per slot: what its load moves (0 all, 1 R and d of the next slot's step, 2 S:
+            # units/backsub.py's backsub_parts)
+            "bs_parts": _backsub_parts(program, plan),
             # the root's conditional into back-substitution's lane 0 by its commit (slot 0 not
             # run: units/backsub.py's root_in_commit), and the root step
             "bs_root_commit": _root_in_commit(program, plan),
@@ -740,6 +743,12 @@ def _root_in_commit(program: Program, plan) -> int | None:
     if not root_in_commit(program, plan.options):
         return None
     return _backsub_slots(program)[0][1]
+
+
+def _backsub_parts(program: Program, plan) -> tuple[int, ...]:
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.backsub import backsub_parts
+    return backsub_parts(_tables(program), plan.options.backsub_lanes)
 
 
 def _backsub_xoff(program: Program) -> tuple[int, ...]:
