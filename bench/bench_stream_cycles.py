@@ -135,15 +135,19 @@ def main() -> None:
     ap.add_argument("--allocation", help="factor datapaths' ALLOCATION, e.g. add=2,mul=3,div=1 "
                     "('default': the defaults)")
     ap.add_argument("--bind", help="the operators' binding, e.g. add=fabric (HlsConfig.bind)")
+    ap.add_argument("--retire-special", type=int, choices=(1, 2, 3), default=None,
+                    help="special-function instances of each retraction datapath (HlsConfig "
+                         "retire_special; default: the design's, 1)")
     args = ap.parse_args()
     design = None
-    if args.root_wave or args.allocation or args.bind:
+    if args.root_wave or args.allocation or args.bind or args.retire_special:
         alloc = tuple((k, int(v)) for k, v in (item.split("=") for item in
                                                 args.allocation.split(","))) \
             if args.allocation and args.allocation != "default" else None
         bind = normalise_bind(tuple(tuple(item.split("=")) for item in args.bind.split(","))) \
             if args.bind else ()
-        design = DesignOptions(root_wave=args.root_wave, allocation=alloc, bind=bind)
+        design = DesignOptions(root_wave=args.root_wave, allocation=alloc, bind=bind,
+                               retire_special=args.retire_special)
     graph, program, data, result, rows, stream = measure(args.keyframes, args.window, args.scalar,
                                                     args.incremental, args.batch_every,
                                                     args.one_step, args.qr_rows, args.units,
@@ -154,6 +158,8 @@ def main() -> None:
     policy = ", one Gauss-Newton step an update" if args.one_step else ""
     rows_note = f", QR Update units {args.qr_rows} rows a cycle" if args.qr_rows > 1 else ""
     rows_note += ", the root in a wavefront" if args.root_wave else ""
+    if args.retire_special:
+        rows_note += f", {args.retire_special} special-function instance(s) a retraction"
     print(f"LIO N = {args.keyframes}, {mode}, {args.scalar} design{policy}{rows_note} "
           f"(on chip, model estimates at {rows[0][2].clock_mhz:g} MHz)")
     print(f"{'keyframe':>8} {'mode':>11} {'iters':>5} {'csim cycles':>12} {'model cycles':>12} "
