@@ -234,6 +234,36 @@ def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
             Loop("backsub_lane", 1, 1, region)]
 
 
+def serial_slots(sizes: list[tuple[int, int]], ops: OperatorTable, timing: dict,
+                 root_commit: bool = False, lanes: int = 1) -> tuple[list[list[Loop]], list[int]]:
+    """back_substitute's slots on a serial chain (the update model's window,
+    plan/update.py): ``sizes`` the steps' (f, s) in the order they are solved, the root first,
+    each step's separator the frontal columns of the step solved before it, so each waits for
+    it (:func:`backsub_slots`' solve alone, load alone; one lane wide, the waiting step's R and
+    d beside the solve and its S after, :func:`backsub_parts`; its separator in from DELTA: the
+    step before is the other lane's). ``root_commit`` (:func:`root_in_commit`): no slot loads
+    the root. Returns the slots' loops (:func:`backsub_slot_loops`) and, per step, the index of
+    the slot that solves it (:func:`retire_region`'s ``sent``)."""
+    tables = {"STEP_F": [f for f, _ in sizes], "STEP_W": [f + s for f, s in sizes],
+              "STEP_COND_OFF": [0] * len(sizes)}
+    slots: list[list[Loop]] = []
+    sent: list[int] = []
+    if not sizes:
+        return slots, sent
+    one = lanes == 1
+    if not root_commit:
+        slots.append(backsub_slot_loops(tables, -1, 0, ops, timing, False, lanes))
+    for t in range(1, len(sizes)):
+        slots.append(backsub_slot_loops(tables, t - 1, t if one else -1, ops, timing, False,
+                                        lanes, 1 if one else 0))
+        sent.append(len(slots) - 1)
+        slots.append(backsub_slot_loops(tables, -1, t, ops, timing, False, lanes,
+                                        2 if one else 0))
+    slots.append(backsub_slot_loops(tables, len(sizes) - 1, -1, ops, timing, False, lanes))
+    sent.append(len(slots) - 1)
+    return slots, sent
+
+
 def backsub_copies(tables: dict, s: int, timing: dict, ops: OperatorTable
                    ) -> tuple[list[Loop], list[Loop]]:
     """back_substitute()'s loops around cond_backsub for step s alone on one unit (one unit
