@@ -452,7 +452,8 @@ def pose2_chain(n: int = 8) -> fgc.Graph:
     return g
 
 
-@pytest.mark.parametrize("graph", [robust_chain, pose2_chain], ids=["pose3", "pose2"])
+@pytest.mark.parametrize("graph", [pytest.param(robust_chain, marks=pytest.mark.heavy),
+                                   pose2_chain], ids=["pose3", "pose2"])
 def test_one_step_sums_in_the_slot_designs_state_update_match_the_simulator(graph, tmp_path):
     """The one-step policy on the slot design (backsub_lanes 1): the gradient's largest |entry|,
     |X|², |δ|², δᵀg and δ's finiteness are summed by back_substitute's state update as δ
