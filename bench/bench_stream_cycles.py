@@ -135,18 +135,23 @@ def main() -> None:
     ap.add_argument("--allocation", help="factor datapaths' ALLOCATION, e.g. add=2,mul=3,div=1 "
                     "('default': the defaults)")
     ap.add_argument("--bind", help="the operators' binding, e.g. add=fabric (HlsConfig.bind)")
+    ap.add_argument("--retire-special", type=int, choices=(1, 2, 3), default=None,
+                    help="special-function instances of each retraction datapath (HlsConfig "
+                         "retire_special; default: the design's, 1)")
     ap.add_argument("--data-width", type=int, choices=(32, 64), default=32,
                     help="bits a beat of the streaming top's data port (HlsConfig data_width: "
                          "64 = two float words a beat; default 32)")
     args = ap.parse_args()
     design = None
-    if args.root_wave or args.allocation or args.bind or args.data_width != 32:
+    if (args.root_wave or args.allocation or args.bind or args.retire_special
+            or args.data_width != 32):
         alloc = tuple((k, int(v)) for k, v in (item.split("=") for item in
                                                 args.allocation.split(","))) \
             if args.allocation and args.allocation != "default" else None
         bind = normalise_bind(tuple(tuple(item.split("=")) for item in args.bind.split(","))) \
             if args.bind else ()
         design = DesignOptions(root_wave=args.root_wave, allocation=alloc, bind=bind,
+                               retire_special=args.retire_special,
                                data_width=args.data_width)
     graph, program, data, result, rows, stream = measure(args.keyframes, args.window, args.scalar,
                                                     args.incremental, args.batch_every,
@@ -158,6 +163,8 @@ def main() -> None:
     policy = ", one Gauss-Newton step an update" if args.one_step else ""
     rows_note = f", QR Update units {args.qr_rows} rows a cycle" if args.qr_rows > 1 else ""
     rows_note += ", the root in a wavefront" if args.root_wave else ""
+    if args.retire_special:
+        rows_note += f", {args.retire_special} special-function instance(s) a retraction"
     rows_note += f", data port {args.data_width} bits a beat" if args.data_width != 32 else ""
     print(f"LIO N = {args.keyframes}, {mode}, {args.scalar} design{policy}{rows_note} "
           f"(on chip, model estimates at {rows[0][2].clock_mhz:g} MHz)")

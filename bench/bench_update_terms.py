@@ -11,6 +11,8 @@ printed, then the median and p99 per update.
     python bench/bench_update_terms.py --units 8 --allocation default --bind add=fabric
                                         # adders bound to fabric (run_hls.tcl's config_op)
     python bench/bench_update_terms.py --root-wave          # the root step in a wavefront
+    python bench/bench_update_terms.py --retire-special 2   # two special-function instances a
+                                        # retraction (HlsConfig retire_special: the retire's II)
 """
 from __future__ import annotations
 
@@ -55,6 +57,9 @@ def main(argv=None) -> None:
     ap.add_argument("--root-wave", action="store_true",
                     help="the root step in a wavefront behind its children (HlsConfig "
                          "root_wave; two unit sets)")
+    ap.add_argument("--retire-special", type=int, choices=(1, 2, 3), default=None,
+                    help="special-function instances of each retraction datapath (HlsConfig "
+                         "retire_special; default: the design's, 1)")
     ap.add_argument("--keyframes", default="5,14,25", help="keyframes whose terms are printed")
     ap.add_argument("--top", type=int, default=25, help="terms printed per keyframe")
     ap.add_argument("--qr-rows", type=int, choices=(1, 2), default=1,
@@ -75,9 +80,11 @@ def main(argv=None) -> None:
     pricer = streaming.WindowPricer(sp, config=HlsConfig(
         scalar="float", unit_sets=args.sets, allocation=_allocation(args.allocation),
         qr_rows=args.qr_rows, bind=parse_bind(args.bind), root_wave=args.root_wave,
-        data_width=args.data_width))
+        retire_special=args.retire_special, data_width=args.data_width))
     res = pricer.model.resources()
     wave = ", the root in a wavefront" if args.root_wave else ""
+    if args.retire_special:
+        wave += f", {args.retire_special} special-function instance(s) a retraction"
     wave += f", data port {args.data_width} bits a beat" if args.data_width != 32 else ""
     print(f"n_u {args.units}, {args.sets} unit set(s), {args.qr_rows} row(s) a cycle{wave}, "
           f"ALLOCATION {args.allocation}, operators bound {bind_label(parse_bind(args.bind))}: "

@@ -31,6 +31,7 @@ from fgc_backends.hls.plan.options import (
     DEFAULT_ALLOCATION,
     QR_ROWS,
     QR_UNITS,
+    STATE_ALLOCATION,
     PlanOptions,
     scalar_precision,
 )
@@ -120,6 +121,14 @@ class DesignOptions:
       itself, the root's own rows streamed to set 1 by the datapaths (units/qr.py's
       ``lin_wave``). ``False`` (default): level by level. Refused (``PlanError``) on a
       schedule whose last level is not one root over two steps.
+    - ``retire_special``: the special-function instances each retraction datapath of the state
+      update may use (``retract_<k>``'s ALLOCATION; PlanOptions.state_limits), 1 … 3, or None:
+      the design's default (1; 2 for back-substitution by columns). A Pose3 retraction calls 3
+      special functions (II 12 each): 1 instance a variable every 36 cycles, 2 every 22 (its
+      88 adds on 4 adders then bound it), +17 DSP an instance. Where the retire is on the path
+      (the one-step stream: the last step's variables, then the trial cost's last instance)
+      each of the last step's variables after the first is 14 cycles sooner at 2.
+      ``fgc_backends.hls.units.state_update``; docs/hls.md, "Back-substitution after lin_level".
     - ``data_width``: the streaming top's ``data`` port (an m_axi bundle of its own), in bits a
       beat: 32 (default, one float word a beat) or 64 (two float words a beat, the width of
       Zynq-7000's HP ports; the host packs word k into beat k / 2, lane k % 2): the update's
@@ -145,6 +154,7 @@ class DesignOptions:
     qr_rows: int = 1
     bind: tuple[tuple[str, str], ...] = ()
     root_wave: bool = False
+    retire_special: int | None = None
     data_width: int = 32
 
     def __post_init__(self):
@@ -182,6 +192,11 @@ class DesignOptions:
                                  f"cycle through a Cholesky cascade), got {self.cascade_lanes!r}")
         if not isinstance(self.root_wave, bool):
             raise HlsConfigError(f"root_wave must be True or False, got {self.root_wave!r}")
+        if self.retire_special is not None and (self.retire_special not in (1, 2, 3)
+                                                or isinstance(self.retire_special, bool)):
+            raise HlsConfigError(f"retire_special must be 1, 2 or 3 (special-function "
+                                 f"instances of a retraction) or None (the design's default), "
+                                 f"got {self.retire_special!r}")
         if self.data_width not in DATA_WIDTHS or isinstance(self.data_width, bool):
             raise HlsConfigError(f"data_width must be one of {DATA_WIDTHS} (the bits a beat of "
                                  f"the streaming top's data port), got {self.data_width!r}")
@@ -248,6 +263,10 @@ class DesignOptions:
         if self.allocation:  # the design's limits over the defaults
             base["allocation"] = tuple({**dict(DEFAULT_ALLOCATION),
                                         **dict(self.allocation)}.items())
+        if self.retire_special is not None:  # retract_<k>'s special-function instances
+            base["state_limits"] = tuple(
+                (k, int(self.retire_special) if k == "special" else n)
+                for k, n in STATE_ALLOCATION)
         base.update(changes)
         if "backsub_lanes" not in base:
             lanes = self.backsub_lanes
@@ -340,16 +359,18 @@ class HlsConfig(scalars.ScalarTypes):
     qr_rows: InitVar[int | None] = None
     bind: InitVar[tuple[tuple[str, str], ...] | None] = None
     root_wave: InitVar[bool | None] = None
+    retire_special: InitVar[int | None] = None
     data_width: InitVar[int | None] = None
 
     def __post_init__(self, part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside,
                       backsub_lanes, cascade_lanes, hgc_third_lane, qr_rows, bind,
-                      root_wave, data_width) -> None:
+                      root_wave, retire_special, data_width) -> None:
         if not isinstance(self.design, DesignOptions):
             raise HlsConfigError(f"HlsConfig.design must be a DesignOptions, got "
                                  f"{type(self.design).__name__}")
         old = (part, clock_ns, unit_sets, allocation, qr_unit, hgc_beside, backsub_lanes,
-               cascade_lanes, hgc_third_lane, qr_rows, bind, root_wave, data_width)
+               cascade_lanes, hgc_third_lane, qr_rows, bind, root_wave, retire_special,
+               data_width)
         given = {name: value for name, value in zip(_DESIGN_FIELDS, old, strict=True)
                  if value is not None}
         if given:

@@ -440,7 +440,11 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
         for v in k.variables:
             kinds[v] = k.kind
     variables, steps = retire_order(program, retire_solved(_tables(program)))
-    from fgc_backends.hls.units.lm_control import fused_step_test, retire_step_test
+    from fgc_backends.hls.units.lm_control import (
+        fused_step_test,
+        retire_solved_test,
+        retire_step_test,
+    )
     ii, depth = retire_timing(program.variables, plan.ops, _sizes(program)["MAX_F"],
                               plan.options.state_allocation,
                               retire_step_test(program, plan.options))
@@ -541,6 +545,9 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # LM's step test summed by back_substitute's state update, |X| and G's zeroing in
             # the copies into X (units/lm_control.py's retire_step_test)
             "retire_test": retire_step_test(program, plan.options),
+            # the one-step policy's sums in the slot design's state update instead of that loop
+            # (units/lm_control.py's retire_solved_test; fgc_backsub.h's FGC_BS_STEP_TEST)
+            "retire_solved": retire_solved_test(program, plan.options),
             "small": shared, "banks": banks, "wave": _wave_context(program, plan),
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             "qr_rows": plan.options.qr_rows,  # fgc_qr.h's FGC_QR_TWO_ROWS (2)
@@ -549,6 +556,12 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
             # from DELTA)
             "bs_xoff": _backsub_xoff(program),
+            # per slot: what its load moves (0 all, 1 R and d of the next slot's step, 2 S:
+            # units/backsub.py's backsub_parts)
+            "bs_parts": _backsub_parts(program, plan),
+            # the root's conditional into back-substitution's lane 0 by its commit (slot 0 not
+            # run: units/backsub.py's root_in_commit), and the root step
+            "bs_root_commit": _root_in_commit(program, plan),
             "bs_lanes": plan.options.backsub_lanes,  # fgc_backsub.h's FGC_BS_LANES (> 1)
             "bsc": _backsub_columns(program, plan),  # backsub_lanes 4: the BSC_* tables
             "cpe": plan.options.cpe, "cascade_lanes": plan.options.cascade_lanes,
@@ -742,6 +755,21 @@ def _backsub_slots(program: Program) -> tuple[tuple[int, int, int], ...]:
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.backsub import backsub_slots
     return backsub_slots(_tables(program))
+
+
+def _root_in_commit(program: Program, plan) -> int | None:
+    """The root step when qr_commit writes its conditional into back-substitution's lane 0
+    (units/backsub.py's root_in_commit), else None."""
+    from fgc_backends.hls.units.backsub import root_in_commit
+    if not root_in_commit(program, plan.options):
+        return None
+    return _backsub_slots(program)[0][1]
+
+
+def _backsub_parts(program: Program, plan) -> tuple[int, ...]:
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.backsub import backsub_parts
+    return backsub_parts(_tables(program), plan.options.backsub_lanes)
 
 
 def _backsub_xoff(program: Program) -> tuple[int, ...]:

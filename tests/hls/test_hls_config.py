@@ -45,6 +45,7 @@ def test_the_old_keywords_are_the_design_options():
     ({"allocation": (("fma", 4),)}, r"allocation entry \('fma', 4\)"),
     ({"allocation": (("mul", 0),)}, r"allocation limit of mul must be 1 … 4096, got 0"),
     ({"allocation": (("mul", 4), ("mul", 8))}, "names a kind twice"),
+    ({"retire_special": 4}, r"retire_special must be 1, 2 or 3"),
 ])
 def test_one_check_names_the_bad_option(options, message):
     design = DesignOptions(**options)
@@ -165,3 +166,25 @@ def test_the_streaming_designs_back_substitute_one_lane():
     for lanes in (2, 4):
         with pytest.raises(HlsConfigError, match=f"backsub_lanes {lanes}: the streaming"):
             emit(layout.template, "/nonexistent", HlsConfig(backsub_lanes=lanes), stream=layout)
+
+
+def test_the_retires_special_function_instances_set_its_ii():
+    """``retire_special``: retract_<k>'s special-function instances (PlanOptions.state_limits);
+    a Pose3 retraction's 3 special functions (II 12) on 1 instance a variable every 36 cycles,
+    on 2 every 22 (its 88 adds on 4 adders), a special-function instance more in the plan."""
+    from fgc.app.specs import example
+    from fgc.compile import compile_graph
+    from fgc.ir.program import SolverConfig
+    from fgc_backends.hls.units.state_update import retire_timing
+    program = compile_graph(example("lio").build(N=3),
+                            SolverConfig(method="gn", linear="qr", precision="float32"))
+    iis = {}
+    for n in (None, 2):
+        options = HlsConfig(scalar="float", backsub_lanes=1,  # (by columns: 2 already)
+                            retire_special=n).plan_options(program)
+        assert dict(options.state_allocation)["special"] == (n or 1)
+        iis[n] = retire_timing(program.variables, build_plan(program, options).ops, 15,
+                               options.state_allocation)[0]
+        pose = dict(build_plan(program, options).unit("state_update_0").operators)
+        assert pose["special"] == (n or 1)
+    assert iis == {None: 36, 2: 22}

@@ -437,6 +437,56 @@ def test_one_step_rows_in_the_banks_match_the_simulator(tmp_path):
     _check_against_reference("one_step", program, result, reference, "double")
 
 
+def pose2_chain(n: int = 8) -> fgc.Graph:
+    """Pose2 odometry: separators of 3 words (odd, fewer than back-substitution's
+    2 PARTIALS sums a row: the lanes of a split load's S words then matter)."""
+    rng = np.random.default_rng(5)
+    g = fgc.Graph()
+    truth = [Pose2(0.5 * i, 0.1 * i * i, 0.2 * i) for i in range(n)]
+    for i, p in enumerate(truth):
+        g.add_variable(f"x{i}", p.retract(0.05 * rng.standard_normal(3)))
+    g.add(PriorFactor("x0", truth[0], noise.isotropic(3, 0.01)))
+    for i in range(n - 1):
+        meas = truth[i].between(truth[i + 1]).retract(0.02 * rng.standard_normal(3))
+        g.add(BetweenFactor(f"x{i}", f"x{i + 1}", meas, noise.diagonal([0.1, 0.1, 0.05])))
+    return g
+
+
+@pytest.mark.parametrize("graph", [pytest.param(robust_chain, marks=pytest.mark.heavy),
+                                   pose2_chain], ids=["pose3", "pose2"])
+def test_one_step_sums_in_the_slot_designs_state_update_match_the_simulator(graph, tmp_path):
+    """The one-step policy on the slot design (backsub_lanes 1): the gradient's largest |entry|,
+    |X|², |δ|², δᵀg and δ's finiteness are summed by back_substitute's state update as δ
+    arrives (units/lm_control.py's retire_solved_test, FGC_BS_STEP_TEST) instead of
+    lm_solved_test's loop after the solve; LM's decisions on them are the simulator's (a
+    gradient maximum left zero stops before the step: the solve would not be the simulator's).
+    The root's conditional reaches back-substitution's lane 0 in its commit (units/backsub.py's
+    root_in_commit: the slots start at the root's solve; without qr_commit's copy the root
+    would be solved from a buffer nothing wrote). The root's first child waits for the root's
+    solution: its R and d are taken in beside the root's solve, its S after it
+    (units/backsub.py's backsub_parts; the split S load's word lanes read as such)."""
+    from fgc_backends.hls.emitter import accel_plan
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.backsub import backsub_parts
+    graph = graph(8)
+    program = compile_graph(graph, SolverConfig(method="gn", linear="qr", max_iterations=1),
+                            name="one_step_slots")
+    project = emit(program, tmp_path, HlsConfig(scalar="double", backsub_lanes=1))
+    text = (tmp_path / "one_step_slots.cpp").read_text()
+    assert "#define FGC_BS_STEP_TEST 1" in text and "lm_solved_test<" not in text
+    assert "#define FGC_BS_ROOT_COMMIT 1" in text
+    assert 1 in backsub_parts(_tables(program)) and "BS_PART[BS_SLOTS] = {0, 1, 2" in text
+    plan = accel_plan(program, project.config)
+    assert "retire_solved_test" in {u.name for u in plan.units}
+    decide = {lp.name for ph in plan.phases if ph.name == "lm_control"
+              for p in ph.processes for lp in p.loops}
+    assert decide == {"step_scalars", "decision"}, decide
+    data = problem_data(graph, program)
+    result = run_csim(project, program, data)
+    reference = sim.run(program, data, precision="float64")
+    _check_against_reference("one_step_slots", program, result, reference, "double")
+
+
 def _two_beacons(y0: float = 0.001) -> fgc.Graph:
     """A Pose2 between two beacons (-1, 0) and (1, 0) at range √2 each, started at (0, y0)
     almost on the line between them: the ranges' Jacobians nearly parallel there, so the

@@ -372,7 +372,7 @@ def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):
                                                                    backsub_lanes=1)))
     backsub = _backsub(out)
     assert counts(kernel, header, backsub) == (len(procs), len(streams))
-    call = "    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx);\n"
+    call = "    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx, split);\n"
     assert backsub.count(call) == 1
     assert counts(kernel, header, backsub.replace(call, "")) == (len(procs) - 1, len(streams))
     extra = "#pragma HLS DATAFLOW\n    hls::stream<L> spare;\n"

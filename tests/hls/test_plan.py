@@ -138,45 +138,48 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # back-substitution (fgc_backsub.h; backsub.py's slots: a step's cond_backsub and its
     # solution out on one lane beside the next step's cond_load into the other, copies two words
     # a cycle). Steps root (f 3, s 0), then A and B (f 3, s 3), both separators in the root's
-    # frontal columns: slot 0 loads the root (4 + 3 + 2 = 9 words two a cycle, read +
-    # multiply-add 2 + 3 + 4 = 9 deep: 4 + 9 = 13); slot 1 solves it (the rows 3 at max(add 4
-    # (1 + ⌈log₂ 8⌉), div 15) + the scaling mul 3 = 19 deep: 21; the triangle's columns 2 and 1
-    # each padded to the chain mul + add = 7, plus one: 16 iterations 2 mul + add = 10 deep: 25;
-    # x_0 a move 1 -> 47) and its 3 unknowns out (2 + 1: 3) -> 50; A needs them, so slot 2 loads
-    # it alone: its separator in (3) and 7 + 6 + 5 = 18 words (8 + 9 = 17) -> 20; slot 3: A's
-    # solve and solution out (50) beside B's load (17), the slower plus the other's fill (9)
+    # frontal columns. The root's load is its commit's (qr_commit writes lane 0's buffer as it
+    # writes COND: backsub.py's root_in_commit), so slot 0 (the root's load) is not run; slot 1
+    # solves the root (the rows 3 at max(add 4 (1 + ⌈log₂ 8⌉), div 15) + the scaling mul 3 = 19
+    # deep: 21; the triangle's columns 2 and 1 each padded to the chain mul + add = 7, plus one:
+    # 16 iterations 2 mul + add = 10 deep: 25; x_0 a move 1 -> 47; its 3 unknowns out (2 + 1:
+    # 3) -> 50) and, beside it, A's R and d, which need no solution (backsub_parts: 3 + 2 + 1
+    # + 3 = 9 words, 5 iterations 9 deep: 13): the slower plus the other's fill, max(50 + 9,
+    # 13 + 19) = 59; A needs the root's solution, so slot 2 loads A's S alone: its separator in
+    # (3) and 3 x 3 = 9 words (5 + 8 = 13) -> 16; slot 3: A's solve and solution out (50)
+    # beside B's load (7 + 6 + 5 = 18 words: 9 + 8 = 17), the slower plus the other's fill (9)
     # -> 59 (B loads into lane 0, whose last solve is the root: its separator is read from that
-    # lane's solution, no copy in from DELTA); slot 4 solves B -> 50: the slots end at 13, 63,
-    # 83, 142, 192. Beside them the state update (backsub_retire: a variable an iteration at
+    # lane's solution, no copy in from DELTA); slot 4 solves B -> 50: the slots end at 59, 75,
+    # 134, 184. Beside them the state update (backsub_retire: a variable an iteration at
     # II 24, 2 + depth deep: a step's 3 words in, a pair a cycle, then the datapath) retracts
-    # the root at 63, A when it is sent at 142, B at 192: it ends at 192 + 2 + depth. Beside
+    # the root at 59, A when it is sent at 134, B at 184: it ends at 184 + 2 + depth. Beside
     # them the cost at X_TRIAL (trial_cost, issue 33), fed the retired variables (x1, x0, x2:
-    # the root's, A's, B's) as they end (65, 144, 194 + depth): the datapaths' loops one after
+    # the root's, A's, B's) as they end (61, 136, 186 + depth): the datapaths' loops one after
     # another, the one with more work first (the prior: 1 instance x II 24 against the between
     # factors' 2 x 12, a tie: block order), each its cost-mode II and depth + 2 (the taken
     # words written and read) where it takes variables. The prior's loop takes x1 in an entry
     # of its own (one variable an entry: its instances have one), then x0 and costs the prior
-    # at 144 + depth; the between factors' loop starts when it has drained, costs x0-x1 (all
-    # taken) and then x1-x2 once x2 is in (194 + depth); the phase ends with it.
+    # at 136 + depth; the between factors' loop starts when it has drained, costs x0-x1 (all
+    # taken) and then x1-x2 once x2 is in (186 + depth); the phase ends with it.
     by_name = {ph.name: ph for ph in plan.phases}
     plan_phase = by_name["backsub"]
     slots, retire, cost = plan_phase.processes
-    sizes = [sum(lp.cycles for lp in slots.loops[2 * k:2 * k + 2]) for k in range(5)]
-    assert sizes == [13, 50, 20, 59, 50] and len(slots.loops) == 10
+    sizes = [sum(lp.cycles for lp in slots.loops[2 * k:2 * k + 2]) for k in range(4)]
+    assert sizes == [59, 16, 59, 50] and len(slots.loops) == 8
     assert retire.loops[0].cycles == 2 + depth
     (ii0, d0), (ii1, d1) = [(p.loops[0].ii, p.loops[0].depth)
                             for p in by_name["factor_cost"].processes[1:]]
     assert (ii0, ii1) == (24, 12)
-    # In one process: 144 + depth + d0 + 2 for the prior, then the between factors' loop. The
+    # In one process: 136 + depth + d0 + 2 for the prior, then the between factors' loop. The
     # plan runs them as two (units/datapath.py's slot_split_loops), as that ends sooner: the
     # between factors in trial_cost (after sending the prior's 7 data words: 8 cycles), x1 and
-    # x0 taken at 144 + depth, x2 an II later or when it is in (194 + depth); the prior beside
-    # them in trial_cost_b (its words in: 9), x0 at 144 + depth, ending d0 + 2 later
-    one = max(144 + depth + d0 + 2 + ii1, 194 + depth) + d1 + 2
-    prior = 144 + depth + d0 + 2
-    end = max(144 + depth + ii1, 194 + depth) + d1 + 2
+    # x0 taken at 136 + depth, x2 an II later or when it is in (186 + depth); the prior beside
+    # them in trial_cost_b (its words in: 9), x0 at 136 + depth, ending d0 + 2 later
+    one = max(136 + depth + d0 + 2 + ii1, 186 + depth) + d1 + 2
+    prior = 136 + depth + d0 + 2
+    end = max(136 + depth + ii1, 186 + depth) + d1 + 2
     assert prior < end < one
-    assert cost.loops[0].cycles == end - (192 + 2 + depth)
+    assert cost.loops[0].cycles == end - (184 + 2 + depth)
     assert phases["backsub"] == end
     assert "factor_cost" not in phases  # the cost at X: once per call
     assert by_name["factor_cost"].per == "call"

@@ -5,10 +5,12 @@
 //   template <class CFG>
 //   void cond_load(const typename CFG::T src[], int off, int f, int s, const typename CFG::T xs[MAX_COLS],
 //                  const typename CFG::T xl[MAX_F], int xoff,
-//                  typename CFG::T cond[MAX_F * MAX_COLS], typename CFG::T part[2][PARTIALS][MAX_F]);
+//                  typename CFG::T cond[MAX_F * MAX_COLS], typename CFG::T part[2][PARTIALS][MAX_F],
+//                  int which = 0);
 //   template <class CFG>
 //   void cond_backsub(const typename CFG::T cond[MAX_F * MAX_COLS], int f, int s,
-//                     const typename CFG::T part[2][PARTIALS][MAX_F], typename CFG::T x[MAX_F]);
+//                     const typename CFG::T part[2][PARTIALS][MAX_F], typename CFG::T x[MAX_F],
+//                     bool split = false);
 //
 // The conditional as qr_step / cpe_step store it: f rows of w + 1 = f + s + 1 columns, row-major,
 // cond[i * (w + 1) + c]; the separator's solution (solved by the parent steps first): xs[a],
@@ -23,6 +25,10 @@
 // and on the way adds each S_ia xs_a into a partial sum of row i: word lane h (the word's index
 // parity: a lane per port) and bank (a >> 1) % PARTIALS, so a lane's sum comes back PARTIALS >=
 // ADD_LAT iterations later (II 1) and the first S_ia of a sum sets it (no zeroing pass).
+// `which` 1 moves R (from its diagonal) and d alone (no sum: they need no solution), 2 S alone
+// (the sums): a step that waits for the step just solved takes in its R and d beside that
+// solve and its S after it (the driver's BS_PART); cond_backsub's `split` then knows that S_i0
+// is word i s of the S load (its lane's parity).
 //
 // cond_backsub then runs two pipelined loops and one move:
 // - per row (trip f, II 1): its 2 PARTIALS sums folded and subtracted from d beside the
@@ -90,13 +96,15 @@ template <class CFG>
 void cond_load(const typename CFG::T src[], int off, int f, int s,
                const typename CFG::T xs[CFG::MAX_COLS], const typename CFG::T xl[CFG::MAX_F],
                int xoff, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-               typename CFG::T part[2][CFG::PARTIALS][CFG::MAX_F]) {
+               typename CFG::T part[2][CFG::PARTIALS][CFG::MAX_F], int which = 0) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the load runs at II 1");
     const int cols = f + s + 1;
-    const int words = backsub_words(f, s);
-    int i = 0, c = 0, base = 0;  // the next word: row i, column c, at base + c (base = i cols)
+    // which 0: each row from its diagonal to d; 1: R from its diagonal, then d; 2: S
+    const int words = which == 1 ? f * (f + 1) / 2 + f : which == 2 ? f * s : backsub_words(f, s);
+    const int last = which == 2 ? f + s - 1 : cols - 1;  // a row's last column
+    int i = 0, c = which == 2 ? f : 0, base = 0;  // the next word: row i, column c, at base + c
     // trip ceil(words / 2), II 1, depth 2 + Lm + La (read, multiply-add, write)
     for (int e = 0; e < words; e += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_F*CFG::MAX_COLS+1)/2
@@ -114,10 +122,12 @@ void cond_load(const typename CFG::T src[], int off, int f, int s,
                     const T xa = xoff >= 0 ? xl[xoff + a] : xs[a];  // a mux: no operator
                     part[h][b][i] = (first ? T(0) : part[h][b][i]) + v * xa;
                 }
-                if (c == cols - 1) {
+                if (c == last) {
                     ++i;
                     base += cols;
-                    c = i;
+                    c = which == 2 ? f : i;
+                } else if (which == 1 && c == f - 1) {
+                    c = cols - 1;  // R's row done: its d
                 } else {
                     ++c;
                 }
@@ -251,7 +261,7 @@ void backsub_triangle(const typename CFG::T cond[], int sh, int f, int cols,
 template <class CFG>
 void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
                   const typename CFG::T part[2][CFG::PARTIALS][CFG::MAX_F],
-                  typename CFG::T x[CFG::MAX_F]) {
+                  typename CFG::T x[CFG::MAX_F], bool split = false) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     const int w = f + s, cols = w + 1;
@@ -259,8 +269,8 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
     T y[CFG::MAX_F], z[CFG::MAX_F], inv[CFG::MAX_F];
     // per row: y_i = (d_i - (its 2 P partial sums folded)) / R_ii (1 / R_ii beside the fold, then
     // one multiply); trip f, II 1, depth max(La (1 + ceil(log2 2P)), Ld) + Lm. srow: the index of S_i0 among cond_load's words
-    // (its parity: the lane of a = 0); a sum holds terms iff its first a is below s.
-    for (int i = 0, srow = f; i < f; ++i) {
+    // (its parity: the lane of a = 0; split: its S load's, i s); a sum holds terms iff its first a is below s.
+    for (int i = 0, srow = split ? 0 : f; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
         T row[2 * CFG::PARTIALS];
@@ -275,7 +285,7 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
         y[i] = yi;
         z[i] = yi;
         inv[i] = ri;
-        srow += cols - i - 1;
+        srow += split ? s : cols - i - 1;
     }
     FGC_CYCLES("backsub", 0, "rows", f, 1,
                (CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) > CFG::DIV_LAT
@@ -372,7 +382,7 @@ void cond_backsub_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2
 // FGC_BS_LANES (backsub_slots' pragmas), a buffer's words at their offset from the group
 // boundary below the step's first word (cond_load_wide), hence 2 FGC_BS_LANES words more
 L BS_COND0[MAX_F * (MAX_W + 1) + 2 * FGC_BS_LANES];  // lane 0's conditional (R | S | d)
-#else
+#elif !defined(FGC_BS_ROOT_COMMIT)  // (else the kernel declared it for qr_commit)
 L BS_COND0[MAX_F * (MAX_W + 1)];  // lane 0's conditional (R | S | d)
 #endif
 L BS_XS0[MAX_W + 1];  // its separator's solution
@@ -492,41 +502,43 @@ void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
 
 #else
 // Lane u's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load left
-// (f = 0: none this time), then its solution out (backsub_out).
+// (f = 0: none this time; split: its S loaded alone, BS_PART 2), then its solution out
+// (backsub_out).
 template <class CFG>
 void backsub_set0(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
                   const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
-                  hls::stream<BsPair>& dx) {
+                  hls::stream<BsPair>& dx, bool split) {
     FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
-    fgc_units::cond_backsub<CFG>(cond, f, s, part, x);
+    fgc_units::cond_backsub<CFG>(cond, f, s, part, x, split);
     backsub_out<CFG>(x, f, cb, dx);
 }
 
 template <class CFG>
 void backsub_set1(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
                   const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
-                  hls::stream<BsPair>& dx) {
+                  hls::stream<BsPair>& dx, bool split) {
     FGC_BRANCH();
-    fgc_units::cond_backsub<CFG>(cond, f, s, part, x);
+    fgc_units::cond_backsub<CFG>(cond, f, s, part, x, split);
     backsub_out<CFG>(x, f, cb, dx);
 }
 
 // Lane u's load: a step's conditional from COND (at off) into the lane's buffer, S xs summed on
-// the way (xs: the separator in from DELTA; xoff >= 0: from xl, the lane's last solution).
+// the way (xs: the separator in from DELTA; xoff >= 0: from xl, the lane's last solution);
+// which (BS_PART): 0 all of it, 1 R and d alone, 2 S alone (cond_load).
 template <class CFG>
 void backsub_load0(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
                    int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS],
-                   L part[2][CFG::PARTIALS][CFG::MAX_F]) {
+                   L part[2][CFG::PARTIALS][CFG::MAX_F], int which) {
     FGC_BRANCH();
-    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part);
+    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part, which);
 }
 
 template <class CFG>
 void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
                    int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS],
-                   L part[2][CFG::PARTIALS][CFG::MAX_F]) {
+                   L part[2][CFG::PARTIALS][CFG::MAX_F], int which) {
     FGC_BRANCH();
-    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part);
+    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part, which);
 }
 
 // A slot whose solve is on lane 0: lane 0's cond_backsub beside lane 1's cond_load.
@@ -536,10 +548,10 @@ void backsub_lane0(const L cond0[CFG::MAX_F * CFG::MAX_COLS], int f0, int s0,
                    hls::stream<BsPair>& dx,
                    int off, int f1, int s1, const L xs1[CFG::MAX_COLS], const L x1[CFG::MAX_F],
                    int xoff, L cond1[CFG::MAX_F * CFG::MAX_COLS],
-                   L part1[2][CFG::PARTIALS][CFG::MAX_F]) {
+                   L part1[2][CFG::PARTIALS][CFG::MAX_F], bool split, int which) {
 #pragma HLS DATAFLOW
-    backsub_set0<CFG>(cond0, f0, s0, part0, x0, cb0, dx);
-    backsub_load1<CFG>(off, f1, s1, xs1, x1, xoff, cond1, part1);
+    backsub_set0<CFG>(cond0, f0, s0, part0, x0, cb0, dx, split);
+    backsub_load1<CFG>(off, f1, s1, xs1, x1, xoff, cond1, part1, which);
 }
 
 // A slot whose solve is on lane 1: lane 1's cond_backsub beside lane 0's cond_load.
@@ -549,10 +561,10 @@ void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
                    hls::stream<BsPair>& dx,
                    int off, int f0, int s0, const L xs0[CFG::MAX_COLS], const L x0[CFG::MAX_F],
                    int xoff, L cond0[CFG::MAX_F * CFG::MAX_COLS],
-                   L part0[2][CFG::PARTIALS][CFG::MAX_F]) {
+                   L part0[2][CFG::PARTIALS][CFG::MAX_F], bool split, int which) {
 #pragma HLS DATAFLOW
-    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx);
-    backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, part0);
+    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx, split);
+    backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, part0, which);
 }
 
 #endif
@@ -590,14 +602,30 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
 #pragma HLS ARRAY_PARTITION variable=bs_part1 complete dim=2
 #endif
     const int slots = at_x ? 0 : BS_SLOTS;  // at_x: no solve (the cost at X)
-    for (int k = 0; k < slots; ++k) {
+#ifdef FGC_BS_ROOT_COMMIT
+    const int first = 1;  // slot 0, the root's load: qr_commit wrote it into BS_COND0
+#else
+    const int first = 0;
+#endif
+    for (int k = first; k < slots; ++k) {
 #pragma HLS LOOP_TRIPCOUNT max=BS_SLOTS
+#ifdef FGC_BS_LANES
         const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = BS_LOAD[k];
+        const bool rd = false;
+#else
+        // BS_PART: a slot that solves alone takes in R and d of the next slot's step (which
+        // waits for this solve), the next slot that step's S (which the solving lane's rows
+        // loop then reads split)
+        const int which = BS_PART[k];
+        const bool rd = which == 1, split = k > 0 && BS_PART[k - 1] == 2;
+        const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = rd ? BS_LOAD[k + 1] : BS_LOAD[k];
+#endif
         const int sf = sv >= 0 ? STEP_F[sv] : 0, ssep = sv >= 0 ? STEP_W[sv] - STEP_F[sv] : 0;
         const int scb = sv >= 0 ? STEP_COL_BEGIN[sv] : 0;
         const int lf = ld >= 0 ? STEP_F[ld] : 0, lsep = ld >= 0 ? STEP_W[ld] - STEP_F[ld] : 0;
         const int lcb = ld >= 0 ? STEP_COL_BEGIN[ld] : 0, off = ld >= 0 ? STEP_COND_OFF[ld] : 0;
-        const int xo = BS_XOFF[k], nin = xo >= 0 ? 0 : lsep;  // lane-local: no separator_in
+        // lane-local, or R and d alone: no separator_in
+        const int xo = BS_XOFF[k], nin = xo >= 0 || rd ? 0 : lsep;
         for (int a = 0; a < nin; a += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_W+1)/2
 #pragma HLS PIPELINE II=1
@@ -622,10 +650,10 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
 #else
         if (p == 0)
             backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,
-                               BS_X1, xo, BS_COND1, bs_part1);
+                               BS_X1, xo, BS_COND1, bs_part1, split, which);
         else
             backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
-                               BS_X0, xo, BS_COND0, bs_part0);
+                               BS_X0, xo, BS_COND0, bs_part0, split, which);
 #endif
         FGC_JOIN();
         if (sv >= 0) FGC_OUTER_SEND();
@@ -641,6 +669,14 @@ void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx,
                     hls::stream<TrialVar>& tx2, bool at_x) {
     FGC_OUTER_BRANCH();
     L delta[CFG::N_TANGENT];  // the solved entries by tangent index
+#ifdef FGC_BS_STEP_TEST
+    // the one-step policy's sums (the kernel's FGC_BS_STEP_TEST): |delta|^2, delta^T g, delta's
+    // finiteness, the gradient's largest |entry| and |X|^2 summed a variable an iteration (the
+    // variable's terms from retract_variable; a sum's add is its carried dependence, its
+    // latency within RETIRE_II), to CFG::retire_test after the solve (not at_x)
+    typename CFG::TestT dd = 0, dg = 0, gm = 0, xx = 0;
+    bool fin = true;
+#endif
     for (int i = 0; i < CFG::N_VARIABLES; ++i) {
 #pragma HLS PIPELINE II=CFG::RETIRE_II
         const int s = RETIRE_STEP[i];
@@ -658,9 +694,23 @@ void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx,
             }
         }
         // its words on to trial_cost (and tx2: the kernel's second cost process, if any)
+#ifdef FGC_BS_STEP_TEST
+        typename CFG::TestT vd = 0, vg = 0, vm = 0, vx = 0;
+        bool vf = true;
+        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2, vd, vg, vm, vf, vx);
+        dd += vd;
+        dg += vg;
+        xx += vx;
+        gm = vm > gm ? vm : gm;
+        fin = fin && vf;
+#else
         CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2);
+#endif
         FGC_CYCLES("retire", 0, "variable", 1, CFG::RETIRE_II, CFG::RETIRE_DEPTH);
     }
+#ifdef FGC_BS_STEP_TEST
+    if (!at_x) CFG::retire_test(dd, dg, gm, fin, xx);
+#endif
 }
 
 // Back-substitution root first into DELTA, the state update X_TRIAL = X (+) DELTA beside it,

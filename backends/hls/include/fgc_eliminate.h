@@ -653,6 +653,9 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
 #ifdef FGC_SPEC_MARGINAL  // the leaving keyframe's conditional twice (the stream's KEEP_COND)
                 if (s == SPEC_STEP) KEEP_COND[i + h] = v;
 #endif
+#ifdef FGC_BS_ROOT_COMMIT  // the root's into back-substitution's lane 0 (its load, fgc_backsub.h)
+                if (s == BS_ROOT) BS_COND0[i + h] = v;
+#endif
             }
         }
     }

@@ -73,7 +73,13 @@ from fgc_backends.hls.plan import (
     plan_sizes,
 )
 from fgc_backends.hls.plan.stream import Term, UpdatePrice
-from fgc_backends.hls.units.backsub import backsub_copies, backsub_loops, retire_region
+from fgc_backends.hls.units.backsub import (
+    backsub_copies,
+    backsub_loops,
+    retire_region,
+    root_in_commit,
+    serial_slots,
+)
 from fgc_backends.hls.units.cholesky import elimination_phases, hgc_loops, hgc_phases
 from fgc_backends.hls.units.datapath import linearize_region, small_blocks, trial_end, trial_loops
 from fgc_backends.hls.units.lm_control import lm_control_phases, rounding_noise_loops, setup_phase
@@ -509,21 +515,22 @@ class UpdateModel:
                                          self.options.cascade_lanes, beside)
         # back-substitution step by step, the state update fed by it beside (fgc_backsub.h's
         # back_substitute: backsub_retire retracts each cluster's variables as it is solved)
+        # (the plan's slots on this serial chain: units/backsub.py's serial_slots)
         unit = "backsub" if self.qr else "trisolve"
-        slots, counts = [], []
+        sizes, counts = [], []
         for s in reversed(steps):
             c = first + s
-            sep = self.cdim[c + 1] if c < last else 0
-            before, after = backsub_copies(tables, s, lt, self.les)
-            slots.append(before + backsub_loops(self.cdim[c], sep, self.les, name=f"bs{c}")
-                         + after)
+            sizes.append((self.cdim[c], self.cdim[c + 1] if c < last else 0))
             counts.append(len(self.clusters[c]))
+        slots, sent = serial_slots(sizes, self.les, lt,
+                                   root_in_commit(self.program, self.options),
+                                   self.options.backsub_lanes)
         keys = {k for c in range(first, last + 1) for k in self.clusters[c]}
         ii, depth = retire_timing([v for v in self.program.variables if v.key in keys],
                                   self.plan.ops, max(self.cdim[first + s] for s in steps),
                                   self.plan.options.state_allocation)
         var_end: list[int] = []
-        region = retire_region(slots, list(range(len(slots))), counts, ii, depth, var_end)
+        region = retire_region(slots, sent, counts, ii, depth, var_end)
         a = sum(lp.cycles for loops in slots for lp in loops)
         # with ``instances``: the cost at X_TRIAL beside them (back_substitute's trial_cost),
         # the window's instances fed its variables in the order they are retired

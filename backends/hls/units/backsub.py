@@ -33,9 +33,14 @@ def backsub_chain(ops: OperatorTable) -> int:
     return ops.mul.latency + ops.add.latency
 
 
-def backsub_words(frontal: int, separator: int) -> int:
+def backsub_words(frontal: int, separator: int, part: int = 0) -> int:
     """Words ``cond_load`` moves: each row i of the conditional from its diagonal on (R's
-    structural zeros below the diagonal stay behind)."""
+    structural zeros below the diagonal stay behind); ``part`` (:func:`backsub_parts`) 1: R's
+    upper triangle and d alone, 2: S alone."""
+    if part == 1:
+        return frontal * (frontal + 1) // 2 + frontal
+    if part == 2:
+        return frontal * separator
     return frontal * (frontal + separator + 1) - frontal * (frontal - 1) // 2
 
 
@@ -67,19 +72,19 @@ def wide_trip(off: int, frontal: int, separator: int, lanes: int) -> int:
 
 
 def load_loop(frontal: int, separator: int, ops: OperatorTable, name: str = "cond_load",
-              lanes: int = 1, off: int = 0) -> Loop:
+              lanes: int = 1, off: int = 0, part: int = 0) -> Loop:
     """``cond_load``: the conditional's stored words two a cycle (the source memory's two
     ports), each S_ia x_a added into a partial sum as it passes (II 1: a lane's sum comes back
     PARTIALS iterations later); depth read + multiply-add + write. ``lanes`` > 1:
     ``cond_load_wide``, an aligned group of 2 ``lanes`` words of one row an iteration from COND
     cyclic over ``lanes`` banks (:func:`wide_trip`; ``off``: the conditional's first word in
     COND), the group's products summed by a tree before the row's partial sum: depth read +
-    multiply + La (1 + log₂ 2 lanes) + write."""
+    multiply + La (1 + log₂ 2 lanes) + write. ``part``: :func:`backsub_parts` (one lane)."""
     if lanes > 1:
         trip = wide_trip(off, frontal, separator, lanes) if frontal else 0
         return Loop(name, trip, 1, 2 + ops.mul.latency
                     + ops.add.latency * (1 + _ceil_log2(2 * lanes)))
-    words = backsub_words(frontal, separator) if frontal else 0
+    words = backsub_words(frontal, separator, part) if frontal else 0
     return Loop(name, -(-words // PORTS), 1, 2 + ops.mul.latency + ops.add.latency)
 
 
@@ -135,6 +140,34 @@ def backsub_slots(tables: dict) -> tuple[tuple[int, int, int], ...]:
     return tuple(slots)
 
 
+def root_in_commit(program, opts) -> bool:
+    """Whether the root step's conditional reaches its back-substitution lane in its commit
+    (fgc_eliminate.h's qr_commit with FGC_BS_ROOT_COMMIT: the same word into COND and into lane
+    0's buffer BS_COND0 in the same cycle, as cond_load would copy it: the root has no
+    separator, so its load is a plain copy), so back_substitute's slot process starts at slot 1,
+    the root's solve (:func:`backsub_slots`' slot 0 loads the root alone): QR with the slot
+    design one lane wide (``backsub_lanes`` 1; the wide lanes keep their own layout, Cholesky's
+    drain writes COND elsewhere)."""
+    return program.solver.linear == "qr" and opts.backsub_lanes == 1
+
+
+def backsub_parts(tables: dict, lanes: int = 1) -> tuple[int, ...]:
+    """Per slot of :func:`backsub_slots` (one lane wide; wider: all 0), what its load moves: 0
+    the whole conditional; where a step waits for the step just solved (a slot solves alone,
+    the next loads alone), the slot that solves alone takes in the waiting step's R (from its
+    diagonal) and d, which need no solution, beside the solve (1: ``cond_load``'s part 1, into
+    the same lane), and the next slot its S alone, S xs summed on the way (2)."""
+    slots = backsub_slots(tables)
+    parts = [0] * len(slots)
+    if lanes != 1:
+        return tuple(parts)
+    for k in range(len(slots) - 1):
+        (solve, load, _), (nsolve, nload, _) = slots[k], slots[k + 1]
+        if solve >= 0 and load < 0 and nsolve < 0 and nload >= 0:
+            parts[k], parts[k + 1] = 1, 2
+    return tuple(parts)
+
+
 def backsub_xoff(tables: dict) -> tuple[int, ...]:
     """Per slot of :func:`backsub_slots`: where the loaded step's separator solution sits in the
     loading lane's solution buffer (``BS_X<q>``, the frontal solution of the step lane q solved
@@ -176,12 +209,14 @@ def wide_load_loops(frontal: int, separator: int, ops: OperatorTable, lanes: int
 
 
 def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
-                       timing: dict, local: bool = False, lanes: int = 1) -> list[Loop]:
+                       timing: dict, local: bool = False, lanes: int = 1,
+                       part: int = 0) -> list[Loop]:
     """One slot of back_substitute() (:func:`backsub_slots`): the loaded step's separator
     solution in (:data:`PORTS` words a cycle; none when ``local``, :func:`backsub_xoff`), then
     the ``backsub_lane<p>`` DATAFLOW region (the solving lane's ``cond_backsub`` and its frontal
     solution out, ``backsub_out``, beside the other lane's ``cond_load``: the slower plus the
-    other's fill); ``lanes``: :data:`PlanOptions.backsub_lanes`."""
+    other's fill); ``lanes``: :data:`PlanOptions.backsub_lanes`; ``part``: what the load moves
+    (:func:`backsub_parts`; 1: no separator in)."""
     def sizes(s):
         return (tables["STEP_F"][s], tables["STEP_W"][s] - tables["STEP_F"][s]) if s >= 0 \
             else (0, 0)
@@ -192,10 +227,41 @@ def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
         solve_loops.append(kernel_loop("solution_out", _ported(sf), "move", timing))
     off = tables["STEP_COND_OFF"][load] if load >= 0 else 0
     load_loops = wide_load_loops(lf, ls, ops, lanes, off, f"cond_load{load}") if lanes > 1 \
-        else [load_loop(lf, ls, ops, name=f"cond_load{load}")]
+        else [load_loop(lf, ls, ops, name=f"cond_load{load}", part=part)]
     region = _region_cycles([solve_loops, load_loops])
-    return [kernel_loop("separator_in", 0 if local else _ported(ls), "move", timing),
+    return [kernel_loop("separator_in", 0 if local or part == 1 else _ported(ls), "move",
+                        timing),
             Loop("backsub_lane", 1, 1, region)]
+
+
+def serial_slots(sizes: list[tuple[int, int]], ops: OperatorTable, timing: dict,
+                 root_commit: bool = False, lanes: int = 1) -> tuple[list[list[Loop]], list[int]]:
+    """back_substitute's slots on a serial chain (the update model's window,
+    plan/update.py): ``sizes`` the steps' (f, s) in the order they are solved, the root first,
+    each step's separator the frontal columns of the step solved before it, so each waits for
+    it (:func:`backsub_slots`' solve alone, load alone; one lane wide, the waiting step's R and
+    d beside the solve and its S after, :func:`backsub_parts`; its separator in from DELTA: the
+    step before is the other lane's). ``root_commit`` (:func:`root_in_commit`): no slot loads
+    the root. Returns the slots' loops (:func:`backsub_slot_loops`) and, per step, the index of
+    the slot that solves it (:func:`retire_region`'s ``sent``)."""
+    tables = {"STEP_F": [f for f, _ in sizes], "STEP_W": [f + s for f, s in sizes],
+              "STEP_COND_OFF": [0] * len(sizes)}
+    slots: list[list[Loop]] = []
+    sent: list[int] = []
+    if not sizes:
+        return slots, sent
+    one = lanes == 1
+    if not root_commit:
+        slots.append(backsub_slot_loops(tables, -1, 0, ops, timing, False, lanes))
+    for t in range(1, len(sizes)):
+        slots.append(backsub_slot_loops(tables, t - 1, t if one else -1, ops, timing, False,
+                                        lanes, 1 if one else 0))
+        sent.append(len(slots) - 1)
+        slots.append(backsub_slot_loops(tables, -1, t, ops, timing, False, lanes,
+                                        2 if one else 0))
+    slots.append(backsub_slot_loops(tables, len(sizes) - 1, -1, ops, timing, False, lanes))
+    sent.append(len(slots) - 1)
+    return slots, sent
 
 
 def backsub_copies(tables: dict, s: int, timing: dict, ops: OperatorTable
@@ -580,10 +646,18 @@ def slot_retire(ctx) -> tuple[list, int, list[int]]:
     lanes = ctx.opts.backsub_lanes
     slots, sent, counts = [], [], []
     xoff = backsub_xoff(tables)
-    for k, (solve, load, _) in enumerate(backsub_slots(tables)):
-        slots.append(backsub_slot_loops(tables, solve, load, ops, timing, xoff[k] >= 0, lanes))
+    first = 1 if root_in_commit(ctx.program, ctx.opts) else 0  # (slot 0: the root's load)
+    order = backsub_slots(tables)
+    parts = backsub_parts(tables, lanes)
+    for k, (solve, load, _) in enumerate(order):
+        if k < first:
+            continue
+        if parts[k] == 1:  # the next slot's step's R and d beside this solve
+            load = order[k + 1][1]
+        slots.append(backsub_slot_loops(tables, solve, load, ops, timing, xoff[k] >= 0, lanes,
+                                        parts[k]))
         if solve >= 0:
-            sent.append(k)
+            sent.append(len(slots) - 1)  # (its index among the slots run)
             counts.append(len(ctx.program.schedule.steps[solve].frontals))
     ii, depth = retire_timing(ctx.program.variables, ctx.ops, ctx.sizes["MAX_F"],
                               ctx.opts.state_allocation,
@@ -694,6 +768,25 @@ def column_build(ctx) -> None:
     column_phases(ctx, name)
 
 
+def _retire_solved_unit(ctx) -> None:
+    """The one-step policy's sums in the slot design's state update (units/lm_control.py's
+    retire_solved_test): per variable its |δ|², δᵀg, |g|'s maximum and |x|², summed by the
+    retire's loop at its II (:func:`~fgc_backends.hls.units.lm_control.retire_solved_loop`). Its
+    reads of G (a variable's tangent words, two a cycle) fit the II the δ copy's words set
+    (a step's MAX_F and the variable's tangent words); X's words it reads already."""
+    from fgc_backends.hls.units.lm_control import retire_solved_loop, retire_solved_test
+    from fgc_backends.hls.units.state_update import retire_timing
+    program = ctx.program
+    if not retire_solved_test(program, ctx.opts):
+        return
+    ii, _ = retire_timing(program.variables, ctx.ops, ctx.sizes["MAX_F"],
+                          ctx.opts.state_allocation)
+    ctx.units.append(bound_unit("retire_solved_test", "the one-step policy's sums in the state "
+                                "update (the gradient's largest |entry|, |X|², |δ|², δᵀg, a "
+                                "variable an iteration)",
+                                (retire_solved_loop(program, ii),), table=ctx.ops))
+
+
 def build(ctx) -> None:
     """Both linear solvers: :data:`LANES` back-substitution units (QR: ``qr<l>_backsub``;
     Cholesky: ``trisolve``), whatever the unit sets (as emitted: one step's cond_backsub on one
@@ -708,6 +801,7 @@ def build(ctx) -> None:
     if lanes > 1:  # COND cyclic over ``lanes`` banks (backsub_slots' ARRAY_PARTITION)
         ctx.memories[:] = [dataclasses.replace(m, banks=lanes) if m.name == "cond" else m
                            for m in ctx.memories]
+    _retire_solved_unit(ctx)
     if program.solver.linear == "qr":
         backsub_phases(ctx, "backsub")
         for lane in range(LANES):

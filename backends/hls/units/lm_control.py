@@ -47,6 +47,22 @@ def fused_step_test(program, opts) -> bool:
     return bool(program.solver.one_step) and not retire_step_test(program, opts)
 
 
+def retire_solved_test(program, opts) -> bool:
+    """Whether the one-step policy's sums (:func:`fused_step_test`: the gradient's largest
+    |entry|, |X|², |δ|², δᵀg and δ's finiteness) are formed by back_substitute's state update of
+    the slot design (fgc_backsub.h's ``backsub_retire`` with FGC_BS_STEP_TEST: a variable an
+    iteration, as its δ arrives, its G and X words read beside its retraction; the kernel's
+    ``retract_variable`` forms the variable's terms, the loop sums them, :func:`retire_solved_loop`
+    its operators at the retire's II) instead of ``lm_solved_test``'s loop after the region:
+    LM control keeps the step test's scalars and the decision. X is not written in the region
+    (the trial goes to X_TRIAL), G is not written after the linearisation, and every variable
+    is a frontal variable of exactly one step: the same sums over the same words (in the retire's
+    order). The column design (``backsub_lanes`` 4) keeps ``lm_solved_test``."""
+    from fgc_backends.hls.units.state_update import fed_by_backsub
+    return (fused_step_test(program, opts) and fed_by_backsub(program, opts)
+            and opts.backsub_lanes != 4)
+
+
 def retire_test_loop(program, ii: int) -> BoundLoop:
     """The step test's operators in the state update's loop (II ``ii``): per variable of the
     widest tangent its δ_k² and δ_k g_k (a multiply each) and their two sums (a chain of adds
@@ -58,6 +74,21 @@ def retire_test_loop(program, ii: int) -> BoundLoop:
     s = max(v.storage_dim for v in program.variables)
     return BoundLoop("retire_step_test", (("add", 2 * w + s + 1), ("mul", 2 * w + s),
                                           ("compare", w + 1)), ii)
+
+
+def retire_solved_loop(program, ii: int) -> BoundLoop:
+    """The one-step policy's sums in the slot design's state update (:func:`retire_solved_test`)
+    at the retire's II ``ii``: per variable type (``retract_variable``'s exclusive branches,
+    counted apart as the second reader reads them) its δ_k², δ_k g_k and x_k² (a multiply each)
+    and their sums (an add each), |g_k| against the variable's maximum (a compare each); the
+    loop's running sums of |δ|², δᵀg and |X|² (three adds) and its maximum (a compare)."""
+    kinds: dict[str, tuple[int, int]] = {}
+    for v in program.variables:
+        kinds.setdefault(v.type_name, (v.dim, v.storage_dim))
+    mul = sum(2 * d + s for d, s in kinds.values())
+    return BoundLoop("retire_solved_test", (("add", mul + 3), ("mul", mul),
+                                            ("compare", sum(d for d, _ in kinds.values()) + 1)),
+                     ii)
 
 
 def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
@@ -77,7 +108,8 @@ def pair_dot(words: int, timing: dict, kind: str = "acc", extra: int = 0,
 
 
 def lm_control_phases(n_t: int, n_x: int, timing: dict,
-                      retire_test: bool = False, fused: bool = False) -> tuple[Phase, ...]:
+                      retire_test: bool = False, fused: bool = False,
+                      in_retire: bool = False) -> tuple[Phase, ...]:
     """LM control as emitted (optimize / try_steps) over ``n_t`` tangent and ``n_x`` storage
     words, in three phases by how often their loops run: ``lm_iteration`` once per
     linearisation (the gradient's largest entry and |x| in one loop, ``lm_iterate``: |x| is
@@ -102,7 +134,9 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict,
     ``lm_iteration`` either; ``decide`` is one loop over the longer of the two (``solved_test``:
     the gradient's maximum, |X|², |δ|² and δᵀg, two words of each a cycle, its depth the
     longest of the three reductions'), the step test's scalars and the decision (the gradient's
-    own pass as with ``retire_test``: where the solve failed, not priced)."""
+    own pass as with ``retire_test``: where the solve failed, not priced). ``fused`` and
+    ``in_retire`` (:func:`retire_solved_test`): those sums come from the state update, so
+    ``decide`` is the step test's scalars and the decision alone."""
     tail = timing["acc"][1]  # after the folds: μ‖δ‖², then δᵀg + μ‖δ‖²
     # (the maxima as many as the sums: lm_iterate's one DEPENDENCE distance, PARTIALS)
     _, gii, gdepth = pair_dot(n_t, timing, kind="max", partials=timing["acc"][0])
@@ -111,8 +145,10 @@ def lm_control_phases(n_t: int, n_x: int, timing: dict,
     step = pair_dot(n_t, timing, extra=tail)
     if fused:
         _, dii, ddepth = pair_dot(n_t, timing)
+        solved = () if in_retire else (
+            Loop("solved_test", trip, max(gii, xii, dii), max(gdepth, xdepth, ddepth)),)
         return (Phase("lm_control", False, (Process("decide", "lm_control", (
-                    Loop("solved_test", trip, max(gii, xii, dii), max(gdepth, xdepth, ddepth)),
+                    *solved,
                     Loop("step_scalars", 1, 1, tail),
                     kernel_loop("decision", 1, "decision", timing))),)),
                 Phase("lm_accept", False, (Process("accept", "lm_control", (
@@ -197,7 +233,13 @@ def build(ctx) -> None:
     # one adder), and the block types' running sums (one adder)
     fused = retire_step_test(program, ctx.opts)
     solved = fused_step_test(program, ctx.opts)
-    if solved:
+    in_retire = retire_solved_test(program, ctx.opts)
+    if in_retire:
+        # the sums in the state update's loop (units/backsub.py's retire_solved_test unit); the
+        # gradient's own pass (only where the solve failed: two compares a cycle)
+        loops = [BoundLoop("gradient_max", (("compare", 2),), 1),
+                 BoundLoop("decision", (("add", 2), ("mul", 2), ("div", 1), ("compare", 1)), 0)]
+    elif solved:
         # one loop after the solve (lm_solved_test): per lane the gradient's |entry| against
         # its partial maximum (a compare), x_k² into |X|² and δ_k², δ_k g_k into the step
         # test's sums (three multiply-adds), two lanes: lm_iterate's and lm_step_test's
@@ -227,7 +269,7 @@ def build(ctx) -> None:
     loops.append(BoundLoop("noise_sum", (("add", len(program.blocks)),), 0))
     ctx.units.append(bound_unit("lm_control", "gain ratio, μ update, stopping rules, "
                                 "rounding noise", loops, table=ctx.ops))
-    for phase in lm_control_phases(n_t, n_x, timing, fused, solved):
+    for phase in lm_control_phases(n_t, n_x, timing, fused, solved, in_retire):
         ctx.add_phase("control", phase)
     # once per call: the top's copies of x and the data in and x out
     ctx.add_phase("call", setup_phase(n_x, ctx.sizes["N_DATA"], n_x, timing,
