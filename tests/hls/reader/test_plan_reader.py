@@ -58,7 +58,7 @@ def test_lio_plan_prices_at_least_what_the_text_instantiates(tmp_path):
     # ALLOCATION function limit=1), and axpys' RMW of bank[at[a]][l] without its DEPENDENCE
     files, top = emitted_files(tmp_path)
     files = [(name, text.replace("#pragma HLS ALLOCATION function instances="
-                                 "qr_reflection<CFG,PASS> limit=1\n", "").replace(
+                                 "qr_reflection<CFG,PASS,COMMIT> limit=1\n", "").replace(
                                      "#pragma HLS DEPENDENCE variable=bank inter false\n", ""))
              if name == "fgc_qr.h" else (name, text) for name, text in files]
     planted = read_design(files, top, _read.add_latency)
