@@ -584,6 +584,7 @@ def _wave_context(program: Program, plan) -> dict | None:
         _own_rows,
         lin_wave,
         pass_words,
+        root_bank_parity_words,
         rows_in_banks,
         wave_entries,
         wave_steps,
@@ -595,12 +596,14 @@ def _wave_context(program: Program, plan) -> dict | None:
     c0, c1, root = steps
     tables = _tables(program)
     lin = lin_wave(program, plan.options) is not None
-    root_fill = root_wait = None
+    root_fill = root_wait = root_even = root_odd = None
     if lin:  # the root's own rows by their stream (set 1 reads them after its own step)
-        from fgc_backends.hls.units.datapath import bank_fill_words, bank_ready_loops
+        from fgc_backends.hls.units.datapath import bank_ready_loops
 
         in_banks = rows_in_banks(program, plan.options, tables, root=True)
-        root_fill = bank_fill_words(program, tables, in_banks, 3)[2]
+        # (its words by row parity, one of each a cycle: units/qr.py's root_bank_parity_words)
+        root_even, root_odd = root_bank_parity_words(tables, root)
+        root_fill = max(root_even, root_odd)
         root_wait = bank_ready_loops(program, in_banks, 3, plan.options)[2]
     first = {}  # per child of the root, its passed rows' first row in the root
     row = _own_rows(tables, root)
@@ -615,7 +618,8 @@ def _wave_context(program: Program, plan) -> dict | None:
             "entry": wave_entries(tables, c0, root),
             "colmap": [tables["STEP_SEPMAP"][mb + q] for q in range(sc)]
             + [tables["STEP_W"][root]], "depth": nf * pass_words(tables, c0), "lin": lin,
-            "root_fill": root_fill, "root_wait": root_wait, "row1": first[c1]}
+            "root_fill": root_fill, "root_even": root_even, "root_odd": root_odd,
+            "root_wait": root_wait, "row1": first[c1]}
 
 
 def _beside_context(program: Program, plan, blocks) -> dict | None:

@@ -9,7 +9,7 @@ from hls_programs import chain
 
 from fgc_backends.cost.operators import FLOAT32
 from fgc_backends.hls.plan import PlanOptions, build_plan, phase_cycles
-from fgc_backends.hls.units.qr import qr_unit_loops, unit_sets_of
+from fgc_backends.hls.units.qr import qr_unit_loops, root_bank_parity_words, unit_sets_of
 
 
 @pytest.fixture(scope="module")
@@ -211,3 +211,15 @@ def test_two_rows_a_cycle_match_the_simulator_and_count_their_price(tmp_path):
     for g, (counted, model) in phases.items():
         assert abs(counted - model) <= 0.02 * max(model, 1), (g, counted, model)
     assert phases["qr"][0] > 0
+
+
+def test_the_roots_rows_split_by_row_parity_word_by_word():
+    """lin_level's wave sends the root's own rows as two streams by stack row parity: a word
+    (two values in AB's order) on rows of one parity goes whole, one spanning two rows half
+    into each. Factor 0: 3 rows of 5 words (rows 0-2), factor 1: 1 row of 4 (row 3)."""
+    tables = {"STEP_FACTOR_BEGIN": [0, 2], "STEP_FACTORS": [0, 1],
+              "FACTOR_A_OFF": [0, 15, 19], "FACTOR_COLMAP_BEGIN": [0, 4, 7]}
+    # factor 0's words 0-1, 2-3 (row 0), 4-5 (rows 0 and 1: both), 6-7, 8-9 (row 1),
+    # 10-11, 12-13, 14 (row 2); factor 1's 0-1, 2-3 (row 3)
+    assert root_bank_parity_words(tables, 0) == (6, 5)
+

@@ -562,14 +562,14 @@ class WindowUpdateModel:
         (units/qr.py's ``lin_wave_loops``), a function of set 0's and set 1's starts and the
         datapath loops' ends (units/datapath.py's ``lin_wave_region``)."""
         from fgc_backends.hls.units.datapath import bank_ready_loops
-        from fgc_backends.hls.units.qr import _root_bank_words, rows_in_banks
+        from fgc_backends.hls.units.qr import root_bank_parity_words, rows_in_banks
 
         t = self.layout.template
         tables = _tables(t)
         c0, c1, root = self._wave
         wait = bank_ready_loops(t, rows_in_banks(t, self.plan.options, tables, root=True), 3,
                                 self.plan.options)[2]
-        fill = kernel_loop("root_fill", _root_bank_words(tables, root), "move",
+        fill = kernel_loop("root_fill", max(root_bank_parity_words(tables, root)), "move",
                            kernel_timing(self.les))
         loops = {i: procs[i].loops for i in self._wave}
 

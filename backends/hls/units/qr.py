@@ -15,7 +15,7 @@ from fgc_backends.cost.structure import stacked_pattern
 from fgc_backends.hls.plan.binding import BoundLoop, bound_unit
 from fgc_backends.hls.plan.cost import phase_cycles
 from fgc_backends.hls.plan.loops import _assign, _ported, _region_cycles, kernel_loop
-from fgc_backends.hls.plan.model import Channel, Loop, Memory, Phase, PlanError, Process
+from fgc_backends.hls.plan.model import PORTS, Channel, Loop, Memory, Phase, PlanError, Process
 from fgc_backends.hls.plan.options import QR_ROWS  # fgc_qr.h's Update units: rows a cycle
 from fgc_backends.hls.units.memories import solver_memories
 from fgc_backends.hls.units.spec import UnitSpec
@@ -456,14 +456,26 @@ def wave_entries(tables: dict, c0: int, root: int) -> list[int]:
     return out
 
 
-def _root_bank_words(tables: dict, root: int) -> int:
-    """The stream words of the root's own factor rows (PORTS values a word, each instance's
-    whole words: units/datapath.py's bank_fill_words), the depth of lin_level's bank_root: every
-    word, so the datapaths never wait for unit set 1 (it reads them after its own step)."""
-    a = tables["FACTOR_A_OFF"]
-    return sum(_ported(a[f + 1] - a[f]) for f in (
-        tables["STEP_FACTORS"][e] for e in range(tables["STEP_FACTOR_BEGIN"][root],
-                                                  tables["STEP_FACTOR_BEGIN"][root + 1])))
+def root_bank_parity_words(tables: dict, root: int) -> tuple[int, int]:
+    """The stream words of the root's own factor rows by row parity, ``(even, odd)``: each
+    datapath word (:data:`PORTS` values of [A | b] in AB's order, each instance's whole
+    words: units/datapath.py's bank_fill_words) splits into its values on even stack rows
+    (lin_level's ``bank_root``) and on odd ones (``bank_root1``), so unit set 1 reads one
+    word of each a cycle and writes each into its banks' memories of that parity (two writes
+    a memory a cycle, its two ports): the root's fill takes the larger count, about half the
+    words. Each is its stream's depth: every word, so the datapaths never wait for unit set 1
+    (it reads them after its own step)."""
+    a, cb = tables["FACTOR_A_OFF"], tables["FACTOR_COLMAP_BEGIN"]
+    counts = [0, 0]
+    row0 = 0
+    for e in range(tables["STEP_FACTOR_BEGIN"][root], tables["STEP_FACTOR_BEGIN"][root + 1]):
+        fac = tables["STEP_FACTORS"][e]
+        words, stride = a[fac + 1] - a[fac], cb[fac + 1] - cb[fac] + 1
+        for k in range(0, words, PORTS):
+            for par in {(row0 + (k + h) // stride) % 2 for h in range(PORTS) if k + h < words}:
+                counts[par] += 1
+        row0 += words // stride
+    return counts[0], counts[1]
 
 
 def _own_rows(tables: dict, s: int) -> int:
@@ -616,9 +628,11 @@ def _levels(ctx, sets, by_index, damping) -> None:
         # step c0's words from set 0's collector to the commit process (wave_commit_loops)
         ctx.channels.append(Channel("qr_commit", "stream", 2, ops.word_bits, "qr_set0",
                                     "qr_commit_wave"))
-        root_words = _root_bank_words(tables, root)
-        ctx.channels.append(Channel("bank_root", "stream", root_words, 2 * ops.word_bits + 64,
-                                    "datapaths", "qr_set1"))
+        # the root's own rows by row parity (root_bank_parity_words), a stream each
+        for name, words in zip(("bank_root", "bank_root1"), root_bank_parity_words(tables, root),
+                               strict=True):
+            ctx.channels.append(Channel(name, "stream", max(1, words), 2 * ops.word_bits + 64,
+                                        "datapaths", "qr_set1"))
         wave = None
     for li, level in enumerate(sched.levels):
         if wave is not None and li == len(sched.levels) - 1:
