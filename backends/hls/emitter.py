@@ -120,7 +120,7 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
                              "lin_level, the on-chip window's one-step design (an incremental "
                              "or fixed-lag window with its marginal); this design has none")
     # the leaving keyframe's tau and kept conditional beside the update's back-substitution
-    # (the one-step policy, the slot design; fgc_stream.h's spec_marginal_task)
+    # (the one-step policy, the slot design; fgc_stream.h's spec_tau_task, spec_keep_task)
     context["spec"] = bool(context["stream"] and context["stream"]["spec"]
                            and not context.get("mixed") and not context.get("bsc")
                            and not context.get("retire_test"))

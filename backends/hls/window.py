@@ -320,7 +320,7 @@ class WindowLayout(WindowTemplate):
     def spec(self) -> bool:
         """Whether the update forms the leaving keyframe's τ and kept conditional beside its
         back-substitution (the one-step policy: the store is the solve's own factorisation
-        whenever its step is taken; fgc_stream.h's ``spec_marginal_task``)."""
+        whenever its step is taken; fgc_stream.h's ``spec_tau_task`` and ``spec_keep_task``)."""
         return (self.leaf_step is not None and self.size == self.window + 1
                 and self.template.solver.one_step)
 

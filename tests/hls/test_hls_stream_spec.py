@@ -1,9 +1,10 @@
 """The one-step update's marginal beside its back-substitution (fgc_stream.h's
-``spec_marginal_task``, docs/hls.md "The marginal beside the back-substitution"): under the
-one-step policy the store is the update's own factorisation whenever its step is taken, so τ
-and the leaving keyframe's conditional are formed beside the slots, the state update and the
-cost at X_TRIAL, staged, and moved into place (``out_beside_commit``) only once the cost says
-the step is taken; a step not taken drops them and runs the marginal as before.
+``spec_tau_task`` beside ``spec_keep_task``, docs/hls.md "The marginal beside the
+back-substitution"): under the one-step policy the store is the update's own factorisation
+whenever its step is taken, so τ and the leaving keyframe's conditional are formed beside the
+slots, the state update and the cost at X_TRIAL, staged, and moved into place
+(``out_beside_commit``) only once the cost says the step is taken; a step not taken drops
+them and runs the marginal as before.
 
 - the model (no C simulation): a taken step prices the marginal beside the back-substitution
   and the two moves beside the call's reads of X; a step not taken, and LM to convergence,
@@ -51,12 +52,16 @@ def test_a_taken_step_prices_the_marginal_beside_the_back_substitution():
     names = {t.name for t in took.terms}
     assert {"spec_beside_backsub", "tau_commit", "keep_commit", "out_beside_commit"} <= names
     assert not {"keep_beside_tau", "out_beside_sign"} & names
-    # the speculation's loops one after another, beside the region's others: hidden but what
-    # runs past them
-    spec = st["stream_spec_marginal"]
-    assert spec == st["stream_marginal_reused"] + st["stream_kept_store"]
+    # the speculation's two processes beside each other (τ; the kept conditional), each its
+    # loops one after another, beside the region's others: hidden but what runs past them
+    assert st["stream_spec_tau"] == st["stream_marginal_reused"]
+    assert st["stream_spec_keep"] == st["stream_kept_store"]
+    spec = max(st["stream_marginal_reused"], st["stream_kept_store"])
+    assert spec < st["stream_marginal_reused"] + st["stream_kept_store"]
     over = max(0, spec - model.group["backsub"])
-    assert took.term("spec_beside_backsub").cycles == -(spec - over)
+    # (the terms marginal and kept_store count both whole: all hidden but what runs past)
+    whole = st["stream_marginal_reused"] + st["stream_kept_store"]
+    assert took.term("spec_beside_backsub").cycles == -(whole - over)
     out = st["stream_x_out"] + st["stream_kept_slot0"]
     moves = [st["stream_tau_commit"], st["stream_keep_commit"], out]
     assert took.term("out_beside_commit").cycles == -(sum(moves) - max(moves))
@@ -67,7 +72,7 @@ def test_a_taken_step_prices_the_marginal_beside_the_back_substitution():
     assert "spec_beside_backsub" not in {t.name for t in none.terms}
     assert took.cycles < none.cycles
     # its operators: one more call site of τ's and of the kept scale's, the window kernel's
-    # (its top instantiates them: spec_marginal_task), priced in that part
+    # (its top instantiates them: spec_tau_task, spec_keep_task), priced in that part
     res = model.resources()
     units = res["units"]["stream section"]
     window = res["units"]["window kernel"]

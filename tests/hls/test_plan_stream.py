@@ -267,7 +267,7 @@ def test_each_stream_function_has_one_call_site_in_the_header():
     code = re.sub(r"//[^\n]*", "", text)
     # tau's and the kept conditional's parts: the marginal's (tau_and_keep's tasks), a batch
     # step's (write_tau, kept_conditional) and the one-step update's beside its
-    # back-substitution (spec_marginal_task, spec_keep: the kept scale its own loop there);
+    # back-substitution (spec_tau_task, spec_keep: the kept scale its own loop there);
     # the call's reads of X beside tau's sign loop or beside the speculation's moves
     three = ("tau_sign", "tau_mean", "kept_reciprocals")
     two = ("kept_scale", "out_task")

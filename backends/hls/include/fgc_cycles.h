@@ -40,8 +40,11 @@
 // after its k-th FGC_OUTER_ABSORB no earlier than the second's k-th iteration ends
 // (units/datapath.py's trial_end); the group ends when the last of the three does. A last
 // process with no channel to the others (FGC_OUTER_BESIDE at its start: the on-chip stream's
-// spec_marginal_task, the one-step update's marginal) runs its records as span_total prices
-// them, and the group ends no earlier than it does (plan/stream.py's _spec_over). Keyed
+// spec_tau_task, the one-step update's marginal) runs its records as span_total prices
+// them, and the group ends no earlier than it does; further FGC_OUTER_BESIDE marks start
+// further such processes (spec_keep_task, the kept conditional staged), each its own span
+// from its mark to the next, beside each other: the group ends no earlier than the longest
+// (plan/stream.py's _spec_over). Keyed
 // marks (FGC_OUTER_SEND_STEP(s) / FGC_OUTER_RECEIVE_STEP(s): back-substitution by columns,
 // whose first process is a DATAFLOW region of a loader and two ends run one after the other
 // in C simulation) match a receive with the send of the same step, at that send's time on
@@ -534,14 +537,21 @@ inline long outer_total(std::size_t from, std::size_t to) {
     std::vector<std::size_t> branches, sends, receives, absorbs;
     std::vector<long> send_keys, receive_keys, absorb_keys;  // keyed marks' keys (-1: unkeyed)
     std::size_t beside = to;  // FGC_OUTER_BESIDE: the group's last process, from here (none: to)
+    std::vector<std::size_t> beside_at;  // every FGC_OUTER_BESIDE's record index (a process each)
     bool open = false;
     auto close_group = [&](std::size_t group_end) {
         const std::vector<Record>& r = s.records;
-        // a last process beside the others (FGC_OUTER_BESIDE: back_substitute's
-        // spec_marginal_task), no channel to them: its records as span_total prices them
+        // last processes beside the others (FGC_OUTER_BESIDE: back_substitute's
+        // spec_tau_task and spec_keep_task), no channel to them: each its records as
+        // span_total prices them
         const bool has_beside = beside < group_end;
         const std::size_t end = has_beside ? beside : group_end;
-        const long besides = has_beside ? span_total(beside, group_end) : 0;
+        long besides = 0;  // the longest of the processes beside (each from its mark to the next)
+        for (std::size_t k = 0; k < beside_at.size(); ++k) {
+            const std::size_t e = k + 1 < beside_at.size() ? beside_at[k + 1] : group_end;
+            const long span = span_total(beside_at[k], e);
+            if (span > besides) besides = span;
+        }
         const std::size_t a0 = branches[0], b0 = branches.size() > 1 ? branches[1] : end;
         const std::size_t c0 = branches.size() > 2 ? branches[2] : end;
         const std::size_t d0 = branches.size() > 3 ? branches[3] : end;
@@ -631,10 +641,12 @@ inline long outer_total(std::size_t from, std::size_t to) {
                 send_keys.clear();
                 receive_keys.clear();
                 beside = to;
+                beside_at.clear();
             }
             branches.push_back(m.first);
         } else if (w == 'P' && open) {
-            beside = m.first;
+            if (beside_at.empty()) beside = m.first;
+            beside_at.push_back(m.first);
         } else if (w == 'S' && open) {
             sends.push_back(m.first);
             send_keys.push_back(key);

@@ -211,7 +211,11 @@ void start_x_task(bool leave, int kept, bool shift, int m, int row, bool from_ro
         FGC_PHASE("marginal");
         for (int k = 0; k < 2 * STREAM_KF_X; ++k) {
 #pragma HLS PIPELINE II=1
-            lin01[k] = X[SLOT_X[k]];
+            const T v = X[SLOT_X[k]];
+            lin01[k] = v;
+#if defined(FGC_SPEC_MARGINAL) && defined(FGC_STREAM_KEPT)
+            LIN01K[k] = v;  // (spec_keep_task's copy: LIN01 is spec_tau_task's)
+#endif
         }
         FGC_CYCLES("marginal", 0, "lin_points", 2 * STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     }
@@ -975,7 +979,7 @@ void window_task(int mode, int ms, bool live, const T lin01[2 * STREAM_KF_X], T 
     if (mode == 2) {
 #ifdef FGC_SPEC_MARGINAL
         // a keyframe leaving: its marginal beside the solve's back-substitution (the one-step
-        // policy's: spec_marginal_task), kept if the step is taken
+        // policy's: spec_tau_task, spec_keep_task), kept if the step is taken
         SPEC_ARMED = ms == STREAM_W;
         SPEC_RAN = false;
 #endif
@@ -1188,8 +1192,9 @@ bool tau_and_keep(int c, bool reuse, const T lin01[2 * STREAM_KF_X], bool out, b
 // slot 0's rows in NF and its conditional in COND at mu = 0, at the call's start (lin01), all
 // known once the solve's elimination is over, while its back-substitution, the state update
 // and the cost at X_TRIAL (which decides whether the step is taken) still run. So the update's
-// back_substitute region runs a last process, spec_marginal_task, that forms tau (signed, its
-// mean, its words into TAU_BUF) and the leaving keyframe's conditional (its points, pivots'
+// back_substitute region runs two last processes, spec_tau_task, that forms tau (signed, its
+// mean, its words into TAU_BUF), and beside it spec_keep_task, the leaving keyframe's
+// conditional (its points, pivots'
 // reciprocals, rows scaled into SPEC_R / SPEC_S / SPEC_D) from the same words in the same
 // order as tau_and_keep would after the region - the same functions but for where the words
 // go: no memory of the region's other processes (COND is the slots' - KEEP_COND is qr_commit's
@@ -1258,13 +1263,17 @@ void spec_keep(const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], const T lin01[
 }
 #endif
 
-// back_substitute's last process (accel.cpp.jinja's spec_marginal, a process of trial_cost's
-// region): where `run` (the update's solve with a keyframe leaving, SPEC_ON), tau signed and
-// checked, and if it is not singular its mean and words and the leaving keyframe's
-// conditional, staged (above). Its loops one after another, beside the region's others (csim
-// counting: FGC_OUTER_BESIDE).
+// back_substitute's last processes (accel.cpp.jinja's spec_tau and spec_kept, processes of
+// trial_cost's region): where `run` (the update's solve with a keyframe leaving, SPEC_ON), tau
+// signed and checked, and if it is not singular its mean and words (spec_tau_task); beside it,
+// the leaving keyframe's conditional staged (spec_keep_task, above). The two share no memory:
+// tau reads NF and LIN01's second half, the conditional KEEP_COND and LIN01K (update_start's
+// second copy of LIN01, written in the same cycles); the conditional is staged whether or not
+// tau is singular (SPEC_OK, tau's, decides whether anything staged is committed). Each runs its
+// loops one after another, beside the region's others and each other (csim counting: an
+// FGC_OUTER_BESIDE each; plan/stream.py's _spec_over takes the longer).
 template <class CFG>
-void spec_marginal_task(bool run) {
+void spec_tau_task(bool run) {
     FGC_OUTER_BESIDE();  // csim cycle counting only: a process beside back_substitute's others
     if (!run) return;
     FGC_SEQUENTIAL();  // (its loops one after another)
@@ -1277,12 +1286,20 @@ void spec_marginal_task(bool run) {
         L mean[STREAM_KF_T];
         tau_mean<CFG>(a, mean);
         tau_buffer<CFG>(a, mean, LIN01 + STREAM_KF_X);
-#ifdef FGC_STREAM_KEPT
-        spec_keep<CFG>(KEEP_COND, LIN01);
-#endif
     }
     FGC_PHASE("backsub");
 }
+
+#ifdef FGC_STREAM_KEPT
+template <class CFG>
+void spec_keep_task(bool run) {
+    FGC_OUTER_BESIDE();  // csim cycle counting only: a process beside back_substitute's others
+    if (!run) return;
+    FGC_SEQUENTIAL();  // (its loops one after another)
+    spec_keep<CFG>(KEEP_COND, LIN01K);
+    FGC_PHASE("backsub");
+}
+#endif
 
 // The step taken: the speculation's words where tau_and_keep writes them, two a cycle (each
 // memory's two ports): tau's into slot 1's prior (tau_commit_task), the staged conditional into
@@ -1478,7 +1495,7 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const DataIn data[DATA_IN_N]
         // keyframe's conditional and tau are kept there once the step is taken (copied whatever
         // the policy, a word a cycle)
 #ifdef FGC_SPEC_MARGINAL
-        T (&lin01)[2 * STREAM_KF_X] = LIN01;  // (spec_marginal_task reads them in the solve)
+        T (&lin01)[2 * STREAM_KF_X] = LIN01;  // (spec_tau_task reads them in the solve)
 #else
         T lin01[2 * STREAM_KF_X];
 #endif

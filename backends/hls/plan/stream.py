@@ -457,7 +457,7 @@ class WindowUpdateModel:
         self.one_step = t.solver.one_step
         # and the leaving keyframe's τ and kept conditional formed beside the update's
         # back-substitution, moved into place once the step is known taken (fgc_stream.h's
-        # spec_marginal_task, out_beside_commit)
+        # spec_tau_task / spec_keep_task, out_beside_commit)
         self.spec = layout.spec and not config.mixed
         self.batch = None
         if layout.batch is not None:  # the batch kernel of an incremental design with batch steps
@@ -708,13 +708,14 @@ class WindowUpdateModel:
                     _stream_phase("tau_words", move("tau_words", kf + n * (n + 1) // 2 + 2)),
                     _stream_phase("tau_mean_out", move("tau_mean_out", n))]
             if self.spec:
-                # the one-step update's marginal beside its back-substitution
-                # (spec_marginal_task: τ signed, its mean, its words into TAU_BUF, then the
-                # conditional's points, reciprocals and rows staged, one loop after another),
-                # and once the step is known taken its words moved two a cycle
-                # (out_beside_commit's tau_commit_task, keep_commit_task)
-                staged = (move("x", kf), *keep_one) if lay.kept else ()
-                out += [_stream_phase("spec_marginal", *write_tau, *staged),
+                # the one-step update's marginal beside its back-substitution, two processes
+                # beside each other (spec_tau_task: τ signed, its mean, its words into TAU_BUF;
+                # spec_keep_task: the conditional's points, reciprocals and rows staged; each
+                # its loops one after another), and once the step is known taken its words
+                # moved two a cycle (out_beside_commit's tau_commit_task, keep_commit_task)
+                if lay.kept:
+                    out.append(_stream_phase("spec_keep", move("x", kf), *keep_one))
+                out += [_stream_phase("spec_tau", *write_tau),
                         _stream_phase("tau_commit",
                                       move("tau_commit", (kf + n + n * (n + 1) // 2 + 2 + 1) // 2)),
                         _stream_phase("keep_commit", move("keep_commit", (n * n + 1) // 2))]
@@ -828,7 +829,8 @@ class WindowUpdateModel:
                               "site: the marginal's, a batch step's)", tau_sites,
                               WRITE_TAU_OPS))
         if self.spec:  # the window kernel's top instantiates these (window_task's
-            # back_substitute region, spec_marginal_task): its part, not the stream section's
+            # back_substitute region, spec_tau_task / spec_keep_task): its part, not the
+            # stream section's
             units.append(Unit("spec_write_tau", "tau signed, its mean and words: the one-step "
                               "update's call site beside its back-substitution", 1,
                               WRITE_TAU_OPS))
@@ -1043,17 +1045,24 @@ class WindowUpdateModel:
                     "words and the rows scaled, the mean's words after): all but the longest "
                     "of each region hidden")
 
+    def _spec_cycles(self) -> int:
+        """The one-step update's marginal beside its back-substitution: two processes beside
+        each other (spec_tau_task: τ's sign, mean and words; spec_keep_task: the conditional's
+        points, reciprocals and rows; each its loops one after another), the longer of the two."""
+        st = self.stream
+        return max(st["stream_spec_tau"], st.get("stream_spec_keep", 0))
+
     def _spec_over(self) -> int:
-        """The cycles the one-step update's marginal (spec_marginal_task: τ's sign, mean and
-        words, the conditional's points, reciprocals and rows, one loop after another) runs past
-        the rest of the back_substitute region it is a process of (0 when it ends first)."""
-        return max(0, self.stream["stream_spec_marginal"] - self.group["backsub"])
+        """The cycles the one-step update's marginal (``_spec_cycles``) runs past the rest of
+        the back_substitute region its processes are of (0 when they end first)."""
+        return max(0, self._spec_cycles() - self.group["backsub"])
 
     def _spec_beside_backsub(self, name: str = "spec_beside_backsub") -> Term:
-        """The one-step update's marginal as the last process of its solve's back_substitute
-        region (fgc_stream.h's spec_marginal_task): τ and the leaving keyframe's conditional
-        formed from the solve's own factorisation (NF, KEEP_COND, LIN01) beside the slots, the
-        state update and the cost at X_TRIAL, no memory or operator of theirs. Against the
+        """The one-step update's marginal as the last processes of its solve's back_substitute
+        region (fgc_stream.h's spec_tau_task beside spec_keep_task): τ and the leaving
+        keyframe's conditional formed from the solve's own factorisation (NF and LIN01;
+        KEEP_COND and LIN01K) beside the slots, the state update and the cost at X_TRIAL, no
+        memory or operator of theirs or of each other's. Against the
         terms marginal (τ) and kept_store (the conditional) counted whole, all of it hidden
         but what runs past the region's other processes."""
         st = self.stream
