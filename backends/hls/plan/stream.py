@@ -350,7 +350,16 @@ def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
     Evaluate skips them."""
     nz = np.asarray(pattern, dtype=bool).copy()
     rows, cols = nz.shape
-    for j in range(min(rows, cols)):
+    _fill(nz, min(rows, cols))
+    return [frontal + i >= rows or not nz[frontal + i, frontal:].any() for i in range(passed)]
+
+
+def _fill(nz, pivots: int) -> None:
+    """The QR fill rule on the boolean pattern ``nz``, in place, over its first ``pivots``
+    columns: reflection j's active rows (non-zero in column j, and row j) take the union of
+    their patterns right of column j, and leave only R's row j non-zero in it."""
+    rows, cols = nz.shape
+    for j in range(pivots):
         act = [i for i in range(j, rows) if nz[i, j]]
         if not act:
             continue
@@ -358,7 +367,6 @@ def _zero_passed_rows(pattern, frontal: int, passed: int) -> list[bool]:
         nz[np.ix_(act, range(j + 1, cols))] = nz[act, j + 1:].any(axis=0)
         nz[act, j] = False
         nz[j, j] = True
-    return [frontal + i >= rows or not nz[frontal + i, frontal:].any() for i in range(passed)]
 
 
 def _passed_rhs(pattern, rhs, frontal: int, passed: int) -> list[bool]:
@@ -368,14 +376,7 @@ def _passed_rhs(pattern, rhs, frontal: int, passed: int) -> list[bool]:
     nz = np.hstack([np.asarray(pattern, dtype=bool),
                     np.asarray(rhs, dtype=bool).reshape(len(pattern), 1)])
     rows, cols = nz.shape
-    for j in range(min(rows, cols - 1)):
-        act = [i for i in range(j, rows) if nz[i, j]]
-        if not act:
-            continue
-        act = sorted(set(act) | {j})
-        nz[np.ix_(act, range(j + 1, cols))] = nz[act, j + 1:].any(axis=0)
-        nz[act, j] = False
-        nz[j, j] = True
+    _fill(nz, min(rows, cols - 1))
     return [frontal + i < rows and bool(nz[frontal + i, -1]) for i in range(passed)]
 
 
