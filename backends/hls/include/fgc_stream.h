@@ -785,22 +785,32 @@ void kept_reciprocals(const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], L rinv[
     FGC_CYCLES("kept", 0, "reciprocal", STREAM_KF_T, CFG::L_DIV_II, CFG::L_DIV_DEPTH);
 }
 
-template <class CFG>
-void kept_scale(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], const L rinv[STREAM_KF_T]) {
+// A conditional's rows scaled by their pivots' reciprocals, a word a cycle, into R / S / d's rows
+// from row0 on (a kept conditional's place in KEPT_*, or the staged one's SPEC_*: each call site
+// its own multiplier). `process` names the loop's counting record.
+template <class CFG, int NR, int ND>
+void scale_rows(const char* process, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)],
+                const L rinv[STREAM_KF_T], int row0, L r[NR], L s[NR], L d[ND]) {
     const int cols = 2 * STREAM_KF_T + 1;
     for (int e = 0; e < STREAM_KF_T * (2 * STREAM_KF_T + 1); ++e) {
 #pragma HLS PIPELINE II=1
         const int i = e / cols, k = e % cols;
         const L v = cond[e] * rinv[i];
         if (k < STREAM_KF_T) {
-            KEPT_R[(c * STREAM_KF_T + i) * STREAM_KF_T + k] = v;
+            r[(row0 + i) * STREAM_KF_T + k] = v;
         } else if (k < 2 * STREAM_KF_T) {
-            KEPT_S[(c * STREAM_KF_T + i) * STREAM_KF_T + k - STREAM_KF_T] = v;
+            s[(row0 + i) * STREAM_KF_T + k - STREAM_KF_T] = v;
         } else {
-            KEPT_D[c * STREAM_KF_T + i] = v;
+            d[row0 + i] = v;
         }
     }
-    FGC_CYCLES("kept", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH + L_MUL_LAT);
+    FGC_CYCLES(process, 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH + L_MUL_LAT);
+}
+
+template <class CFG>
+void kept_scale(int c, const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], const L rinv[STREAM_KF_T]) {
+    scale_rows<CFG, KEPT_MAX * STREAM_KF_T * STREAM_KF_T, KEPT_MAX * STREAM_KF_T>(
+        "kept", cond, rinv, c * STREAM_KF_T, KEPT_R, KEPT_S, KEPT_D);
 }
 
 template <class CFG>
@@ -1246,20 +1256,7 @@ void spec_keep(const L cond[STREAM_KF_T * (2 * STREAM_KF_T + 1)], const T lin01[
     FGC_CYCLES("spec", 0, "points", STREAM_KF_X, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH);
     L rinv[STREAM_KF_T];
     kept_reciprocals<CFG>(cond, rinv);
-    const int cols = 2 * STREAM_KF_T + 1;
-    for (int e = 0; e < STREAM_KF_T * (2 * STREAM_KF_T + 1); ++e) {
-#pragma HLS PIPELINE II=1
-        const int i = e / cols, k = e % cols;
-        const L v = cond[e] * rinv[i];
-        if (k < STREAM_KF_T) {
-            SPEC_R[i * STREAM_KF_T + k] = v;
-        } else if (k < 2 * STREAM_KF_T) {
-            SPEC_S[i * STREAM_KF_T + k - STREAM_KF_T] = v;
-        } else {
-            SPEC_D[i] = v;
-        }
-    }
-    FGC_CYCLES("spec", 0, "conditional", STREAM_KF_T * cols, CFG::T_MOVE_II, CFG::T_MOVE_DEPTH + L_MUL_LAT);
+    scale_rows<CFG, STREAM_KF_T * STREAM_KF_T, STREAM_KF_T>("spec", cond, rinv, 0, SPEC_R, SPEC_S, SPEC_D);
 }
 #endif
 
