@@ -68,5 +68,19 @@ def main(only: list[str]) -> int:
     return 1 if failed else 0
 
 
+def _selection(argv: list[str]) -> list[str]:
+    import argparse
+    names = [f"{n}:{lin}:{sc}" for n in EXAMPLES for lin, sc in CONFIGS]
+    ap = argparse.ArgumentParser(description="Every example through the HLS C simulation "
+                                 "against the simulator (about 17 minutes idle).")
+    ap.add_argument("only", nargs="*", metavar="EXAMPLE:LINEAR:SCALAR",
+                    help="run only these (default: all): " + ", ".join(names))
+    only = ap.parse_args(argv).only
+    unknown = [o for o in only if o not in names]
+    if unknown:
+        ap.error(f"unknown selection {', '.join(unknown)} (one of: {', '.join(names)})")
+    return only
+
+
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(main(_selection(sys.argv[1:])))
