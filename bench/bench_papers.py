@@ -39,6 +39,7 @@ from fgc.app.search import Space, search
 from fgc.app.specs import example  # noqa: E402
 from fgc.compile import compile_graph  # noqa: E402
 from fgc.ir.program import SolverConfig  # noqa: E402
+from fgc_backends.hls.config import auto_backsub_lanes  # noqa: E402
 from fgc_backends.hls.plan import (  # noqa: E402
     DEFAULT_ALLOCATION,
     PART_DSP,
@@ -675,7 +676,10 @@ def paper_b(cfg: Config) -> list[Row]:
                 "what the reader's monotonicity in #CPE implies")]
     rows += paper_b_solve(graph, prog, result, cfg, iters)
     lo, hi = cfg.cpes[0], cfg.cpes[-1]
-    costs = {(c, h): _cost(prog, cpe=c, hessian_storage=h)
+    # the emitted design's back-substitution width (by columns on this chain: HlsConfig's
+    # automatic backsub_lanes), not PlanOptions' one-lane default; the what-if designs keep one
+    emitted = {"backsub_lanes": auto_backsub_lanes(prog)}
+    costs = {(c, h): _cost(prog, cpe=c, hessian_storage=h, **(emitted if h == "frontal" else {}))
              for c in cfg.cpes for h in ("frontal", "dense", "blocked")}
     def solve(c, h):
         cost = costs[c, h]
