@@ -958,7 +958,7 @@ inline typename CFG::T qr_owner_word(hls::stream<typename CFG::T> colq[CFG::N_UN
 // it whose bit j + 1 is set, none if no row from j + 1 on has it (a column zero by structure);
 // a column non-zero by structure but zero in value is reflected with tau = 0 (qr_finish), in the
 // cycles the plan prices. The counted cycles then follow the structure, whatever the data.
-template <class CFG, bool STRUCT>
+template <class CFG>
 void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS][2],
                  hls::stream<qr_word<typename CFG::T> >& evq,
                  hls::stream<qr_word<typename CFG::T> >& etq, hls::stream<typename CFG::T>& exq,
@@ -967,6 +967,7 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
                  const qr_rowmask<CFG>* mask0, qr_rowmask<CFG> msk[CFG::MAX_ROWS]) {
     typedef typename CFG::T T;
     typedef qr_rowmask<CFG> M;
+    const bool STRUCT = mask0 != 0;  // the step's patterns given: the keep rule by structure
     const int P = CFG::PARTIALS;
     const int col = j + 1;
     if (col >= k) return;
@@ -1006,8 +1007,11 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
             const T e = qr_owner_word<CFG>(colq, owner, i & 1);
             bool nzb = e != T(0);
             if (STRUCT) {  // (no reflection, or the pivot row's alone: no fill)
-                const M mi = j < 0 ? mask0[i] : msk[i];
-                if (j < 0) msk[i] = mi;
+                M mi = j < 0 ? mask0[i] : msk[i];
+                // (a value off the pattern - the pattern a model error - is kept all the same,
+                // its bit set: the factor stays exact, the count above the plan's)
+                if (e != T(0) && col < CFG::MAX_COLS) mi.w[col >> 6] |= 1ULL << (col & 63);
+                msk[i] = mi;
                 nzb = qr_mask_bit<CFG>(mi, col);
                 anyc = anyc || (i >= col && nzb);
             }
@@ -1052,8 +1056,11 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
             const bool a0 = v0 != T(0), a1 = v1 != T(0);
             part[t % P] += T((a0 ? T(v0 * e0) : T(0)) + (a1 ? T(v1 * e1) : T(0)));
             // (STRUCT) the two rows' patterns: active in reflection j, non-zero in column j + 1
-            const M m0 = STRUCT && h0 ? msk[i0] : qr_mask_zero<CFG>();
-            const M m1 = STRUCT && h1 ? msk[i1] : qr_mask_zero<CFG>();
+            M m0 = STRUCT && h0 ? msk[i0] : qr_mask_zero<CFG>();
+            M m1 = STRUCT && h1 ? msk[i1] : qr_mask_zero<CFG>();
+            // (a value off the pattern kept all the same, its bit set: see the one-row pass)
+            if (e0 != T(0)) m0.w[col >> 6] |= 1ULL << (col & 63);
+            if (e1 != T(0)) m1.w[col >> 6] |= 1ULL << (col & 63);
             const bool s0 = h0 && (i0 == j || (i0 > j && qr_mask_bit<CFG>(m0, j)));
             const bool s1 = h1 && (i1 == j || (i1 > j && qr_mask_bit<CFG>(m1, j)));
             if (STRUCT) uni = qr_mask_or<CFG>(qr_mask_or<CFG>(uni, m0, s0), m1, s1);
@@ -1268,7 +1275,7 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
 }
 
 // One reflection: the DATAFLOW region (see the top of the file).
-template <class CFG, class PASS, class COMMIT, bool STRUCT>
+template <class CFG, class PASS, class COMMIT>
 void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    const qr_word<typename CFG::T> vin[CFG::MAX_ROWS + QR_VEC_SLACK],
                    const qr_word<typename CFG::T> hin[2],
@@ -1304,7 +1311,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_broadcast<CFG>(vin, j, k, vq, evq);
     qr_finish<CFG>(hin, k, tq, etq, rq);
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
-    qr_evaluate<CFG, STRUCT>(j, rows, k, colq, evq, etq, exq, vout, hout, evec, mask0, msk);
+    qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout, evec, mask0, msk);
     qr_collect<CFG, PASS, COMMIT>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale, passq,
                                   pass, commitq, coff);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
@@ -1413,9 +1420,9 @@ void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][
 // coff: the conditional's first word in cond (lin_level's wave: the root's after step c1's).
 // COMMIT (qr_collect's commitq, where `pass`): lin_level's wave's set 0 streams its step's
 // words to its commit process as its collector writes them.
-// STRUCT (qr_step_structural): the Evaluate keeps rows by structure, from the rows' patterns
-// mask0 (qr_evaluate).
-template <class CFG, class PASS, class FEED, class COMMIT, bool STRUCT = false>
+// mask0 (qr_step_structural; 0: none): the step's rows' patterns, the Evaluate keeping rows by
+// structure (qr_evaluate).
+template <class CFG, class PASS, class FEED, class COMMIT>
 void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows,
                 int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular,
@@ -1453,7 +1460,7 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
 #pragma HLS ARRAY_PARTITION variable=msk cyclic factor=2
     // the two parity call sites below are exclusive and sequential: one RTL copy of the region
     // serves both (UG1399, ALLOCATION of a function: one instance for its call sites)
-#pragma HLS ALLOCATION function instances=qr_reflection<CFG,PASS,COMMIT,STRUCT> limit=1
+#pragma HLS ALLOCATION function instances=qr_reflection<CFG,PASS,COMMIT> limit=1
     int fed = 0;
     for (int j = -1; j < k; ++j) {
 #pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
@@ -1462,11 +1469,11 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
             qr_feed_row<CFG, FEED>(feedq, work, row0 + fed, colmap, words, fed);
         }
         if (((j + 1) & 1) == 0) {
-            qr_reflection<CFG, PASS, COMMIT, STRUCT>(j, rows, f, s, cols, k, va, ha, vb, hb, work,
+            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, va, ha, vb, hb, work,
                                                      cond, update, &scale, evec, passq, pass,
                                                      commitq, coff, mask0, msk);
         } else {
-            qr_reflection<CFG, PASS, COMMIT, STRUCT>(j, rows, f, s, cols, k, vb, hb, va, ha, work,
+            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, vb, hb, va, ha, work,
                                                      cond, update, &scale, evec, passq, pass,
                                                      commitq, coff, mask0, msk);
         }
@@ -1503,7 +1510,7 @@ void qr_step_structural(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::L
     qr_no_commit<typename CFG::T> kept;
     const int nothing[CFG::MAX_COLS] = {0};
     qr_step_io<CFG, qr_no_pass<typename CFG::T>, qr_no_pass<typename CFG::T>,
-               qr_no_commit<typename CFG::T>, true>(work, rows, f, s, cond, update, singular,
+               qr_no_commit<typename CFG::T> >(work, rows, f, s, cond, update, singular,
                                                     none, false, kept, none, nothing, nothing, 0,
                                                     0, 0, 0, mask0);
 }
