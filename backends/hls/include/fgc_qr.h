@@ -178,7 +178,7 @@ template <class CFG>
 inline qr_rowmask<CFG> qr_mask_or(const qr_rowmask<CFG>& a, const qr_rowmask<CFG>& b, bool in) {
 #pragma HLS INLINE
     qr_rowmask<CFG> r;
-    for (int q = 0; q < qr_rowmask<CFG>::WORDS; ++q) {
+    for (int q = 0; q < (CFG::MAX_COLS + 63) / 64; ++q) {
 #pragma HLS UNROLL
         r.w[q] = in ? (a.w[q] | b.w[q]) : a.w[q];
     }
@@ -188,7 +188,7 @@ template <class CFG>
 inline qr_rowmask<CFG> qr_mask_zero() {
 #pragma HLS INLINE
     qr_rowmask<CFG> r;
-    for (int q = 0; q < qr_rowmask<CFG>::WORDS; ++q) {
+    for (int q = 0; q < (CFG::MAX_COLS + 63) / 64; ++q) {
 #pragma HLS UNROLL
         r.w[q] = 0ULL;
     }
