@@ -1003,6 +1003,8 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
+            // (msk: iteration t reads and writes row j0 + t's pattern only)
+#pragma HLS DEPENDENCE variable=msk inter false
             const int i = j0 + t;
             const T e = qr_owner_word<CFG>(colq, owner, i & 1);
             bool nzb = e != T(0);
