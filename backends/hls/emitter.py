@@ -115,6 +115,9 @@ def emit(program: Program, out_dir: str | Path, config: HlsConfig | None = None,
     context["lin_qr"] = bool(context["leaf_lin"] and context.get("banks")
                              and context["stream"]["role"] == "window")
     wave = context.get("wave")
+    # the QR steps' keep rule by structure where lin_level runs them (fgc_qr.h's mask0)
+    context["keep"] = (_keep_context(program, stream, context)
+                       if context["lin_qr"] and wave and wave["lin"] else None)
     if wave and wave["lin"] != context["lin_qr"]:
         raise HlsConfigError("root_wave under the one-step policy runs the root inside "
                              "lin_level, the on-chip window's one-step design (an incremental "
@@ -571,6 +574,58 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
                                 for p in ph.processes),
             "plan": plan, **_cascade_context(program, plan),
             "tables": [t for t in context["tables"] if t.name != "STEP_PATTERN"]}
+
+
+def _keep_context(program: Program, stream, context) -> dict | None:
+    """The table of the QR steps' keep rule by structure (fgc_qr.h's qr_rowmask: a row's
+    pattern, bit c its column c, the right-hand side's bit w) for the steps lin_level reflects
+    with the root in a wavefront (set 0's step c0, set 1's step c1, the root): per update class
+    of the window the patterns the plan prices (plan/stream.py's ``step_patterns`` on the
+    update's zero factors and unit priors, WindowLayout.zero_factors / unit_factors), a class
+    per distinct set of patterns, and the class of each keyframe count j = 0 ... STREAM_SLOTS
+    (fgc_stream.h's jc, saturating at STREAM_SLOTS). None (the value rule) if the stream's
+    keyframes past the window's fill do not all have the full window's patterns."""
+    from fgc_backends.hls.plan.loops import _sizes
+    from fgc_backends.hls.plan.stream import step_patterns
+
+    wave = context["wave"]
+    steps = (wave["c0"], wave["c1"], wave["root"])
+    sizes = _sizes(program)
+    max_rows, cols = sizes["MAX_ROWS"], sizes["MAX_W"] + 1
+    words = -(-cols // 64)
+    marginal = context["stream"]["marginal"]
+    slots = stream.size
+
+    def patterns(j: int) -> tuple:
+        pats = step_patterns(program, stream.zero_factors(j, marginal), True,
+                             unit=stream.unit_factors(j))
+        out = []
+        for s in steps:
+            pattern, rhs = pats[s]
+            w = pattern.shape[1]
+            rows = []
+            for i in range(max_rows):
+                bits = 0
+                if i < len(pattern):
+                    for c in range(w):
+                        if pattern[i, c]:
+                            bits |= 1 << c
+                    if rhs[i]:
+                        bits |= 1 << w
+                rows.append(tuple((bits >> (64 * q)) & (2 ** 64 - 1) for q in range(words)))
+            out.append(tuple(rows))
+        return tuple(out)
+
+    by_j: dict = {}
+    for k in range(len(stream.program.schedule.clusters)):  # the stream's keyframes
+        p = patterns(k)
+        if by_j.setdefault(min(k, slots), p) != p:
+            return None  # a later keyframe's patterns not the full window's: the value rule
+    classes = list(dict.fromkeys(by_j.values()))
+    return {"slots": slots, "words": words,
+            "class_of": [classes.index(by_j[j]) if j in by_j else 0 for j in range(slots + 1)],
+            "masks": [[[", ".join(f"0x{x:x}ULL" for x in row) for row in step]
+                       for step in cls] for cls in classes]}
 
 
 def _wave_context(program: Program, plan) -> dict | None:

@@ -69,8 +69,10 @@ static void cycles(const char* tag) {
 #endif
 }
 
+// structural: the keep rule by structure (qr_step_structural), each row's pattern read after the
+// matrix (rows x cols 0 / 1)
 template <class C>
-static void run_qr(int rows, int f, int s) {
+static void run_qr(int rows, int f, int s, bool structural = false) {
     typedef typename C::T T;
     const int cols = f + s + 1;
     static T dense[C::MAX_ROWS][C::MAX_COLS];
@@ -84,9 +86,21 @@ static void run_qr(int rows, int f, int s) {
             if (std::scanf("%lf", &x) != 1) std::exit(3);
             if (i < C::MAX_ROWS && c < C::MAX_COLS) dense[i][c] = T(x);
         }
+    static fgc_units::qr_rowmask<C> mask[C::MAX_ROWS];
+    for (int i = 0; structural && i < rows; ++i) {
+        mask[i] = fgc_units::qr_mask_zero<C>();
+        for (int c = 0; c < cols; ++c) {
+            double x;
+            if (std::scanf("%lf", &x) != 1) std::exit(3);
+            if (x != 0.0) mask[i].w[c >> 6] |= 1ULL << (c & 63);
+        }
+    }
     fgc_units::qr_scatter<C>(dense, rows, cols, work);
     bool singular = false;
-    fgc_units::qr_step<C>(work, rows, f, s, cond, update, &singular);
+    if (structural)
+        fgc_units::qr_step_structural<C>(work, rows, f, s, cond, update, &singular, mask);
+    else
+        fgc_units::qr_step<C>(work, rows, f, s, cond, update, &singular);
     cycles("cycles");
     int left = 0;  // words qr_step left non-zero in its banks (it leaves them zero)
     for (int u = 0; u < C::N_UNITS; ++u)
@@ -177,7 +191,14 @@ int main() {
         int a, b, c;
         double mu;
         if (std::scanf("%d %d %d %lf", &a, &b, &c, &mu) != 4) return 2;
-        if (kind[0] == 'q') {
+        if (kind[0] == 's') {  // the keep rule by structure
+            switch (cfg) {
+            case 4: run_qr<qr_cfg<double, 4, true> >(a, b, c, true); break;
+            case 8: run_qr<qr_cfg<double, 8, true> >(a, b, c, true); break;
+            case 40: run_qr<qr_cfg<float, 4, true> >(a, b, c, true); break;
+            default: return 4;
+            }
+        } else if (kind[0] == 'q') {
             switch (cfg) {
             case 1: run_qr<qr_cfg<double, 1, true> >(a, b, c); break;
             case 4: run_qr<qr_cfg<double, 4, true> >(a, b, c); break;
@@ -553,6 +574,59 @@ def test_plan_prices_the_qr_unit(qr_driver, units):
     (res,) = run(driver, [("qr", units, len(a), f, s, 0.0, a)])
     loops = qr_unit_loops(pattern, f, units, DRIVER_OPS, partials=12, qr_rows=qr_rows)
     assert res.cycles == sum(lp.cycles for lp in loops)
+
+
+def _zero_in_value_stack(rng, f, s):
+    """A stack whose pattern has rows and columns that are zero in value: a sparse block, a
+    child's trapezoid, damping rows, two rows non-zero by structure but zero in value (a prior
+    at its reset value, a row rounding emptied), a row that is zero in value from column f on
+    although the fill makes it non-zero there, and a right-hand side zero on half the rows."""
+    pattern = rng.random((14, f + s)) < 0.4
+    pattern[:, 0] = True  # every sparse row active in reflection 0: they fill the separator
+    trapezoid = np.zeros((4, f + s), dtype=bool)
+    for i in range(4):
+        trapezoid[i, f + i:] = True
+    pattern = np.vstack([pattern, trapezoid, np.eye(f, f + s, dtype=bool)])
+    rhs = np.ones(len(pattern), dtype=bool)
+    rhs[::2] = False
+    a = np.where(pattern, rng.standard_normal(pattern.shape), 0.0)
+    a = np.hstack([a, np.where(rhs, rng.standard_normal(len(pattern)), 0.0)[:, None]])
+    a[3] = 0.0  # non-zero by structure, zero in value
+    a[15] = 0.0
+    a[5, :] = 0.0
+    a[5, 0] = 1.5  # only its pivot-column entry: zero in value where reflection 0 fills it
+    return pattern, rhs, a
+
+
+def test_the_keep_rule_by_structure_counts_the_plans_cycles(qr_driver):
+    """qr_step_structural keeps the rows the pattern says, not the values: on a stack with rows
+    non-zero by structure but zero in value it counts exactly what qr_unit_loops prices on the
+    pattern (the value rule, qr_step, counts fewer there), and it computes the same factor."""
+    from fgc_backends.hls.units.qr import qr_unit_loops
+
+    driver, qr_rows = qr_driver
+    rng = np.random.default_rng(77)
+    f, s = 6, 7
+    pattern, rhs, a = _zero_in_value_stack(rng, f, s)
+    mask = np.hstack([pattern, rhs[:, None]]).astype(float)
+    assert not np.any((a != 0) & (mask == 0))  # every value on the pattern
+    both = np.hstack([a.ravel(), mask.ravel()])
+    # n_u 4 and 8 in double, n_u 4 in float (cfg 40: the same latencies)
+    cases = [(kind, cfg, len(a), f, s, 0.0, a if kind == "q" else both)
+             for cfg in (4, 8, 40) for kind in ("q", "s")]
+    res = run(driver, cases)
+    for cfg, value, struct in zip((4, 8, 40), res[0::2], res[1::2], strict=True):
+        plan = sum(lp.cycles for lp in qr_unit_loops(pattern, f, cfg % 10 or 4, DRIVER_OPS,
+                                                     partials=12, qr_rows=qr_rows, rhs=rhs))
+        assert struct.cycles == plan, cfg
+        assert value.cycles < plan, cfg  # the value rule skips the rows zero in value
+        assert struct.left == 0 and not struct.singular
+        tol = 1e-5 if cfg == 40 else 1e-12
+        np.testing.assert_allclose(struct.cond, value.cond, rtol=tol, atol=tol)
+        np.testing.assert_allclose(struct.update, value.update, rtol=tol, atol=tol)
+        np.testing.assert_allclose(struct.x, value.x, rtol=tol, atol=tol)
+    cond, upd, _ = qr_expected(a, f, s)
+    np.testing.assert_allclose(np.abs(res[1].cond), np.abs(cond), rtol=1e-9, atol=1e-9)
 
 
 def test_plan_prices_the_cpe_rounds(driver):

@@ -252,3 +252,40 @@ def test_a_row_read_too_late_breaks_the_agreement(wave7, tmp_path):
     except Exception:  # noqa: BLE001 - a failure is as good as a disagreement here
         return
     assert max(_distances(program, csim, sim)) > 1e3 * SIM_TOL
+
+
+def test_lin_levels_steps_keep_rows_by_the_plans_patterns(wave7):
+    """The emitted kernel's QR_KEEP_MASK (fgc_qr.h's keep rule by structure, stop 49) holds, per
+    update class of the window, each wave step's row patterns as the plan prices them
+    (plan/stream.py's step_patterns on that keyframe's zero factors and unit priors), the class
+    of each keyframe count jc, and sets 0 and 1 pass it to their QR step in lin_level."""
+    import re
+
+    from fgc_backends.hls.plan.stream import step_patterns
+
+    _, _, _, _, stream, _ = wave7
+    folder, name = stream.project.directory, stream.project.name
+    text = (folder / f"{name}.cpp").read_text()
+    assert "lin ? QR_KEEP_MASK[QR_KEEP_CLASS][0] : 0" in text
+    assert "lin ? QR_KEEP_MASK[QR_KEEP_CLASS][root ? 2 : 1] : 0" in text
+    lay = stream.layout
+    t = lay.template
+    table = re.search(r"QR_KEEP_CLASS_OF\[\d+\] = \{([^}]*)\}", text).group(1)
+    of = [int(x) for x in re.findall(r"\b\d+\b", re.sub(r"//[^\n]*", "", table))]
+    assert len(of) == lay.size + 1 and len(set(of)) > 1  # the filling window's own classes
+    body = text[text.index("QR_KEEP_MASK["):text.index("int QR_KEEP_CLASS = 0")]
+    rows = [int(x, 16) for x in re.findall(r"0x([0-9a-f]+)ULL", body)]
+    c0, c1 = t.schedule.levels[-2]
+    root = t.schedule.levels[-1][0]
+    max_rows = len(rows) // (3 * (max(of) + 1))
+    marginal = lay.context("double", "xc7z045ffg900-2")["marginal"]
+    for jc, cls in enumerate(of):
+        pats = step_patterns(t, lay.zero_factors(jc, marginal), True,
+                             unit=lay.unit_factors(jc))
+        for k, s in enumerate((c0, c1, root)):
+            pattern, rhs = pats[s]
+            w = pattern.shape[1]
+            got = rows[(cls * 3 + k) * max_rows:(cls * 3 + k) * max_rows + len(pattern)]
+            want = [sum(1 << c for c in range(w) if pattern[i, c]) | (int(rhs[i]) << w)
+                    for i in range(len(pattern))]
+            assert got == want, (jc, s)

@@ -159,6 +159,42 @@ using qr_vq_word = qr_word<T>;
 enum { QR_VEC_SLACK = 1 };
 #endif
 
+// A row's structural pattern (the keep rule by structure, qr_step_structural): bit c set where
+// the row can be non-zero in column c (columns 0 ... w, the right-hand side last). The
+// Evaluate holds one a row of the step (its own memory beside evec) and runs the plan's fill
+// rule on them (units/qr.py's reflection_lanes): reflection j's active rows (row j and the rows
+// below it whose bit j is set) all take the union of their patterns.
+template <class CFG>
+struct qr_rowmask {
+    enum { WORDS = (CFG::MAX_COLS + 63) / 64 };
+    unsigned long long w[WORDS];
+};
+template <class CFG>
+inline bool qr_mask_bit(const qr_rowmask<CFG>& m, int c) {
+#pragma HLS INLINE
+    return c >= 0 && ((m.w[c >> 6] >> (c & 63)) & 1ULL) != 0;
+}
+template <class CFG>
+inline qr_rowmask<CFG> qr_mask_or(const qr_rowmask<CFG>& a, const qr_rowmask<CFG>& b, bool in) {
+#pragma HLS INLINE
+    qr_rowmask<CFG> r;
+    for (int q = 0; q < (CFG::MAX_COLS + 63) / 64; ++q) {
+#pragma HLS UNROLL
+        r.w[q] = in ? (a.w[q] | b.w[q]) : a.w[q];
+    }
+    return r;
+}
+template <class CFG>
+inline qr_rowmask<CFG> qr_mask_zero() {
+#pragma HLS INLINE
+    qr_rowmask<CFG> r;
+    for (int q = 0; q < (CFG::MAX_COLS + 63) / 64; ++q) {
+#pragma HLS UNROLL
+        r.w[q] = 0ULL;
+    }
+    return r;
+}
+
 // An example configuration (the emitted design defines its own with the step tables' maxima and
 // the operator table's latencies; plan.py prices the same constants).
 struct qr_config_example {
@@ -837,11 +873,13 @@ struct qr_update_units<CFG, U, true> {
 
 // One word (row i, the t-th of the pass) of column j + 1 after reflection j, in the Evaluate's
 // one-row pass (receive_norm): row j's entry to the collector, the new pivot and the non-zero
-// rows below it into vout (m words so far), their squares into the partial sums (the partial of
+// rows below it into vout (m words so far; nzb: row i non-zero in column j + 1, in value or, with
+// the keep rule by structure, by its pattern), their squares into the partial sums (the partial of
 // iteration t), and the Evaluate's own copy of the vector by row (evec: the word below the pivot,
 // 0 elsewhere: the pass clears the rows it passes, j0 ... rows - 1).
 template <class CFG>
-inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typename CFG::T>& exq,
+inline void qr_next_word(int i, int j, int t, typename CFG::T e, bool nzb,
+                         hls::stream<typename CFG::T>& exq,
                          qr_word<typename CFG::T> vout[CFG::MAX_ROWS + QR_VEC_SLACK], int& m,
                          int& me, int& mo,
                          typename CFG::T& pivot, typename CFG::T part[CFG::PARTIALS],
@@ -853,7 +891,7 @@ inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typ
     if (i == col) pivot = e;
 #ifdef FGC_QR_TWO_ROWS
     // by row parity (the broadcast's lanes): the pivot at 1, even rows at 2 + 2a, odd at 3 + 2a
-    if (i == col || (i > col && e != T(0))) {
+    if (i == col || (i > col && nzb)) {
         const int slot = i == col ? 1 : ((i & 1) == 0 ? 2 + 2 * me : 3 + 2 * mo);
         vout[slot].val = e;
         vout[slot].idx = i;
@@ -864,7 +902,7 @@ inline void qr_next_word(int i, int j, int t, typename CFG::T e, hls::stream<typ
 #else
     (void)me;
     (void)mo;
-    if (i == col || (i > col && e != T(0))) {
+    if (i == col || (i > col && nzb)) {
         vout[1 + m].val = e;
         vout[1 + m].idx = i;
         ++m;
@@ -910,13 +948,26 @@ inline typename CFG::T qr_owner_word(hls::stream<typename CFG::T> colq[CFG::N_UN
 // With no reflection to apply (n = 0; n = 1: the pivot row's negation, exact) the column is
 // received and passed on in one pass, a row a cycle. evec is left 0 on every row it read and
 // holds the next vector below its pivot (region -1 clears rows 0 ... rows - 1 of the step).
+// The rows it keeps and the rows of the next vector: STRUCT false, the rows non-zero in value
+// (a column zero in value on every row: no reflection); STRUCT true (qr_step_structural), the
+// rows non-zero by structure, the plan's rule (units/qr.py's reflection_lanes): msk holds each
+// row's pattern (region -1 loads it from mask0 as its one pass reads the rows), a row is active
+// in reflection j if it is row j or its bit j is set, the kept rows are row j, row j + 1, the
+// active rows and the rows whose bit j + 1 is set, the active rows take the union of their
+// patterns (written back in the update pass), and the next vector is row j + 1 and the rows below
+// it whose bit j + 1 is set, none if no row from j + 1 on has it (a column zero by structure);
+// a column non-zero by structure but zero in value is reflected with tau = 0 (qr_finish), in the
+// cycles the plan prices. The counted cycles then follow the structure, whatever the data.
 template <class CFG>
 void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::N_UNITS][2],
                  hls::stream<qr_word<typename CFG::T> >& evq,
                  hls::stream<qr_word<typename CFG::T> >& etq, hls::stream<typename CFG::T>& exq,
                  qr_word<typename CFG::T> vout[CFG::MAX_ROWS + QR_VEC_SLACK],
-                 qr_word<typename CFG::T> hout[2], typename CFG::T evec[CFG::MAX_ROWS]) {
+                 qr_word<typename CFG::T> hout[2], typename CFG::T evec[CFG::MAX_ROWS],
+                 const qr_rowmask<CFG>* mask0, qr_rowmask<CFG> msk[CFG::MAX_ROWS]) {
     typedef typename CFG::T T;
+    typedef qr_rowmask<CFG> M;
+    const bool STRUCT = mask0 != 0;  // the step's patterns given: the keep rule by structure
     const int P = CFG::PARTIALS;
     const int col = j + 1;
     if (col >= k) return;
@@ -927,6 +978,11 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     T x[CFG::MAX_ROWS];
     T xv[CFG::MAX_ROWS];
     int xr[CFG::MAX_ROWS];
+    // (STRUCT) the kept rows' patterns and whether each is active in reflection j
+    M xm[CFG::MAX_ROWS];
+    bool xa[CFG::MAX_ROWS];
+    M uni = qr_mask_zero<CFG>();  // (STRUCT) the union of the active rows' patterns
+    bool anyc = false;  // (STRUCT) a row from j + 1 on non-zero by structure in column j + 1
     const int n = evq.read().idx;  // {0, n}
     FGC_CYCLES("qr_evaluate", 0, "header", 1, 1, 1);
     T part[P];
@@ -947,10 +1003,22 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_ROWS
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
+            // (msk: iteration t reads and writes row j0 + t's pattern only)
+#pragma HLS DEPENDENCE variable=msk inter false
             const int i = j0 + t;
             const T e = qr_owner_word<CFG>(colq, owner, i & 1);
-            qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, exq, vout, m, me, mo, pivot,
-                              part, evec);
+            bool nzb = e != T(0);
+            if (STRUCT) {  // (no reflection, or the pivot row's alone: no fill)
+                M mi = j < 0 ? mask0[i] : msk[i];
+                // (a value off the pattern - the pattern a model error - is kept all the same,
+                // its bit set: the factor stays exact, the count above the plan's)
+                if (e != T(0) && col < CFG::MAX_COLS) mi.w[col >> 6] |= 1ULL << (col & 63);
+                msk[i] = mi;
+                nzb = qr_mask_bit<CFG>(mi, col);
+                anyc = anyc || (i >= col && nzb);
+            }
+            qr_next_word<CFG>(i, j, t, i == j && n == 1 ? T(-e) : e, nzb, exq, vout, m, me, mo,
+                              pivot, part, evec);
         }
         FGC_CYCLES("qr_evaluate", 0, "receive_norm", rows - j0, 1, CFG::MUL_LAT + CFG::ADD_LAT);
     } else {
@@ -989,18 +1057,33 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
             }
             const bool a0 = v0 != T(0), a1 = v1 != T(0);
             part[t % P] += T((a0 ? T(v0 * e0) : T(0)) + (a1 ? T(v1 * e1) : T(0)));
-            const bool k0 = h0 && (i0 == j || a0 || i0 == col || e0 != T(0));
-            const bool k1 = h1 && (i1 == j || a1 || i1 == col || e1 != T(0));
+            // (STRUCT) the two rows' patterns: active in reflection j, non-zero in column j + 1
+            M m0 = STRUCT && h0 ? msk[i0] : qr_mask_zero<CFG>();
+            M m1 = STRUCT && h1 ? msk[i1] : qr_mask_zero<CFG>();
+            // (a value off the pattern kept all the same, its bit set: see the one-row pass)
+            if (e0 != T(0)) m0.w[col >> 6] |= 1ULL << (col & 63);
+            if (e1 != T(0)) m1.w[col >> 6] |= 1ULL << (col & 63);
+            const bool s0 = h0 && (i0 == j || (i0 > j && qr_mask_bit<CFG>(m0, j)));
+            const bool s1 = h1 && (i1 == j || (i1 > j && qr_mask_bit<CFG>(m1, j)));
+            if (STRUCT) uni = qr_mask_or<CFG>(qr_mask_or<CFG>(uni, m0, s0), m1, s1);
+            const bool n0 = STRUCT ? s0 || qr_mask_bit<CFG>(m0, col) : a0 || e0 != T(0);
+            const bool n1 = STRUCT ? s1 || qr_mask_bit<CFG>(m1, col) : a1 || e1 != T(0);
+            const bool k0 = h0 && (i0 == j || i0 == col || n0);
+            const bool k1 = h1 && (i1 == j || i1 == col || n1);
             if (k0) {
                 x[c] = e0;
                 xv[c] = v0;
                 xr[c] = i0;
+                xm[c] = m0;
+                xa[c] = s0;
             }
             const int c1 = k0 ? c + 1 : c;
             if (k1) {
                 x[c1] = e1;
                 xv[c1] = v1;
                 xr[c1] = i1;
+                xm[c1] = m1;
+                xa[c1] = s1;
             }
             c = k1 ? c1 + 1 : c1;
         }
@@ -1047,8 +1130,18 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
             if (i0 == j) exq.write(e0);  // row j's entry in column j + 1 to the collector
             if (i0 == col) pivot = e0;
             if (i1 == col) pivot = e1;
-            const bool o0 = i0 == col || (i0 > col && e0 != T(0));
-            const bool o1 = i1 == col || (i1 > col && e1 != T(0));
+            // (STRUCT) the rows' patterns after reflection j: the active rows' the union
+            const M p0 = xa[2 * t] ? uni : xm[2 * t];
+            const M p1 = !g1 ? qr_mask_zero<CFG>() : xa[2 * t + 1] ? uni : xm[2 * t + 1];
+            if (STRUCT) {
+                msk[i0] = p0;
+                if (g1) msk[i1] = p1;
+            }
+            const bool z0 = STRUCT ? qr_mask_bit<CFG>(p0, col) : e0 != T(0);
+            const bool z1 = STRUCT ? g1 && qr_mask_bit<CFG>(p1, col) : e1 != T(0);
+            anyc = anyc || (i0 >= col && z0) || (i1 >= col && z1);
+            const bool o0 = i0 == col || (i0 > col && z0);
+            const bool o1 = i1 == col || (i1 > col && z1);
 #ifdef FGC_QR_TWO_ROWS
             // by row parity (the broadcast's lanes): the pivot at 1, even rows at 2 + 2a, odd
             // rows at 3 + 2a
@@ -1098,8 +1191,9 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
         etq.read();
         FGC_CYCLES("qr_evaluate", 0, "tail", 2, 1, 1);
     }
-    // nothing to reflect (every entry 0, or too small to square): n' = 0
-    if (!(norm2 > T(0))) m = 0;
+    // nothing to reflect: n' = 0 (STRUCT: no row from j + 1 on non-zero by structure in column
+    // j + 1; else every entry 0, or too small to square)
+    if (STRUCT ? !anyc : !(norm2 > T(0))) m = 0;
     vout[0].val = T(0);
     vout[0].idx = m;
 #ifdef FGC_QR_TWO_ROWS
@@ -1193,7 +1287,8 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                    typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
                    typename CFG::T* scale, typename CFG::T evec[CFG::MAX_ROWS], PASS& passq,
-                   bool pass, COMMIT& commitq, int coff) {
+                   bool pass, COMMIT& commitq, int coff, const qr_rowmask<CFG>* mask0,
+                   qr_rowmask<CFG> msk[CFG::MAX_ROWS]) {
 #pragma HLS DATAFLOW
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
     hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS];
@@ -1218,7 +1313,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_broadcast<CFG>(vin, j, k, vq, evq);
     qr_finish<CFG>(hin, k, tq, etq, rq);
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
-    qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout, evec);
+    qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout, evec, mask0, msk);
     qr_collect<CFG, PASS, COMMIT>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale, passq,
                                   pass, commitq, coff);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
@@ -1327,13 +1422,15 @@ void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][
 // coff: the conditional's first word in cond (lin_level's wave: the root's after step c1's).
 // COMMIT (qr_collect's commitq, where `pass`): lin_level's wave's set 0 streams its step's
 // words to its commit process as its collector writes them.
+// mask0 (qr_step_structural; 0: none): the step's rows' patterns, the Evaluate keeping rows by
+// structure (qr_evaluate).
 template <class CFG, class PASS, class FEED, class COMMIT>
 void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows,
                 int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular,
                 PASS& passq, bool pass, COMMIT& commitq, FEED& feedq, const int entry[CFG::MAX_COLS],
                 const int colmap[CFG::MAX_COLS], int row0, int nfed, int words,
-                int coff = 0) {
+                int coff = 0, const qr_rowmask<CFG>* mask0 = 0) {
     typedef typename CFG::T T;
     const int cols = f + s + 1;
     if (rows < 0 || f < 0 || s < 0 || rows > CFG::MAX_ROWS || cols > CFG::MAX_COLS ||
@@ -1360,6 +1457,9 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
     // a cycle (two memories by row parity), its rows cleared by region -1 before any is read
     T evec[CFG::MAX_ROWS];
 #pragma HLS ARRAY_PARTITION variable=evec cyclic factor=2
+    // (STRUCT) the rows' patterns, the Evaluate's too (two a cycle, as evec; unused otherwise)
+    qr_rowmask<CFG> msk[CFG::MAX_ROWS];
+#pragma HLS ARRAY_PARTITION variable=msk cyclic factor=2
     // the two parity call sites below are exclusive and sequential: one RTL copy of the region
     // serves both (UG1399, ALLOCATION of a function: one instance for its call sites)
 #pragma HLS ALLOCATION function instances=qr_reflection<CFG,PASS,COMMIT> limit=1
@@ -1371,11 +1471,13 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
             qr_feed_row<CFG, FEED>(feedq, work, row0 + fed, colmap, words, fed);
         }
         if (((j + 1) & 1) == 0) {
-            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond,
-                                             update, &scale, evec, passq, pass, commitq, coff);
+            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, va, ha, vb, hb, work,
+                                                     cond, update, &scale, evec, passq, pass,
+                                                     commitq, coff, mask0, msk);
         } else {
-            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond,
-                                             update, &scale, evec, passq, pass, commitq, coff);
+            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, vb, hb, va, ha, work,
+                                                     cond, update, &scale, evec, passq, pass,
+                                                     commitq, coff, mask0, msk);
         }
         FGC_SEQUENTIAL();
         if (qr_passes<PASS>::value && pass && j >= f && j - f < nf) FGC_WAVE_READY(j - f);
@@ -1393,6 +1495,26 @@ void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
     qr_step_io<CFG, qr_no_pass<typename CFG::T>, qr_no_pass<typename CFG::T>,
                qr_no_commit<typename CFG::T> >(work, rows, f, s, cond, update, singular, none,
                                                 false, kept, none, nothing, nothing, 0, 0, 0);
+}
+
+// qr_step with the keep rule by structure (qr_evaluate's STRUCT): mask0[i], row i's pattern
+// over columns 0 ... w (the right-hand side last; every value non-zero in the stack must be on
+// it, a pattern's non-zero may be zero in value). The reflections then count the cycles the
+// plan prices on that pattern (units/qr.py's qr_unit_loops with it and its right-hand side),
+// whatever the values: a kept row zero in value adds zeros, a column zero in value on a
+// structurally non-empty column is reflected with tau = 0.
+template <class CFG>
+void qr_step_structural(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                        int rows, int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
+                        typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular,
+                        const qr_rowmask<CFG> mask0[CFG::MAX_ROWS]) {
+    qr_no_pass<typename CFG::T> none;
+    qr_no_commit<typename CFG::T> kept;
+    const int nothing[CFG::MAX_COLS] = {0};
+    qr_step_io<CFG, qr_no_pass<typename CFG::T>, qr_no_pass<typename CFG::T>,
+               qr_no_commit<typename CFG::T> >(work, rows, f, s, cond, update, singular,
+                                                    none, false, kept, none, nothing, nothing, 0,
+                                                    0, 0, 0, mask0);
 }
 
 }  // namespace fgc_units

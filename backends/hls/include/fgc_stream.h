@@ -1509,6 +1509,9 @@ void stream_call(int op, const T x_in[STREAM_IN_X], const DataIn data[DATA_IN_N]
 #endif
             const int ms = jc < STREAM_SLOTS - 1 ? jc : STREAM_SLOTS - 1;  // the pass's slot
             live = jc >= STREAM_SLOTS;  // (the window has moved: slot 0's prior is tau)
+#ifdef FGC_QR_KEEP_CLASS
+            FGC_QR_KEEP_CLASS(jc);  // the QR steps' keep rule: this update's patterns (the kernel's)
+#endif
 #ifndef FGC_STREAM_SWEEP
             const int row = 0;
 #endif

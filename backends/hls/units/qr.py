@@ -686,6 +686,16 @@ def _levels(ctx, sets, by_index, damping) -> None:
         ctx.memories.append(Memory(f"qr{s}_condbuf", (2 if lin and s == 1 else 1)
                                    * sizes["MAX_F"] * cols, ops.word_bits, 1))
         ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
+        if lin and s < 2:
+            # lin_level's steps keep rows by structure (fgc_qr.h's qr_step_io with mask0): the
+            # Evaluate's row patterns (msk, a row's cols bits, two memories by row parity)
+            ctx.memories.append(Memory(f"qr{s}_keep_mask", sizes["MAX_ROWS"], cols, 2))
+    if lin:
+        # the emitter's pattern table (accel.cpp.jinja's QR_KEEP_MASK, a ROM): per update class
+        # of the window (at most its slots + 1: emitter.py's _keep_context), the wave's three
+        # steps' rows
+        classes = len(ctx.program.schedule.clusters) + 1
+        ctx.memories.append(Memory("qr_keep_table", classes * 3 * sizes["MAX_ROWS"], cols, 1))
     solver_memories(sizes, ops, ctx.memories)
 
 
