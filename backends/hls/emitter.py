@@ -582,6 +582,7 @@ def _wave_context(program: Program, plan) -> dict | None:
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.qr import (
         _own_rows,
+        child_row_pairs,
         lin_wave,
         pass_words,
         root_bank_parity_words,
@@ -619,7 +620,10 @@ def _wave_context(program: Program, plan) -> dict | None:
             "colmap": [tables["STEP_SEPMAP"][mb + q] for q in range(sc)]
             + [tables["STEP_W"][root]], "depth": nf * pass_words(tables, c0), "lin": lin,
             "root_fill": root_fill, "root_even": root_even, "root_odd": root_odd,
-            "root_wait": root_wait, "row1": first[c1]}
+            "root_wait": root_wait, "row1": first[c1],
+            # (set 1's own passed rows into the root two rows a cycle: units/qr.py)
+            "child": dict(zip(("row1", "nf", "words", "trip"), child_row_pairs(tables, c1, root),
+                              strict=True))}
 
 
 def _beside_context(program: Program, plan, blocks) -> dict | None:

@@ -257,14 +257,15 @@ def rows_in_banks(program, opts, tables: dict, root: bool = False
 
 def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
                 timing: dict, banks_zero: bool = True, in_place: bool = False,
-                fed: int = -1) -> list[Loop]:
+                fed: int = -1, own: int = -1) -> list[Loop]:
     """fgc_eliminate.h's qr_stack of step s into its unit set's banks: unless ``banks_zero``
     (fgc_qr.h's qr_step leaves its banks zero: CFG::BANKS_ZERO; not fgc_qr_stream.h's) the
     rows zeroed (all n_u banks a cycle), then each factor's rows [A | b] (none when
     ``in_place``: the datapaths wrote them, :func:`rows_in_banks`) and each child's
     new-factor rows :data:`PORTS` words a cycle (but child ``fed``'s: the root step in a
-    wavefront reads them from their set's stream, :func:`wave_loops`), the damping rows'
-    diagonal."""
+    wavefront reads them from their set's stream, :func:`wave_loops`; nor child ``own``'s:
+    lin_level's wave's set 1 moves them from its UPDBUF, :func:`child_row_pairs`), the damping
+    rows' diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
     loops = [] if banks_zero else [kernel_loop("zero", m * local, "fill", timing)]
@@ -278,7 +279,7 @@ def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
-        if c == fed:
+        if c in (fed, own):
             continue
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
         loops.append(kernel_loop("child_rows", _ported(tables["STEP_NF_ROWS"][c] * (sc + 1)),
@@ -391,6 +392,31 @@ def wave_commit_loops(tables: dict, c0: int, timing: dict) -> tuple[Loop, ...]:
             kernel_loop("nf_stream", tables["STEP_NF_ROWS"][c0] * (w - f + 1), "move", timing))
 
 
+def child_row_pairs(tables: dict, c1: int, root: int) -> tuple[int, int, int, int]:
+    """lin_level's wave: unit set 1's stack of its own step ``c1``'s passed rows from its
+    UPDBUF1 into the root's rows, two rows a cycle (accel.cpp.jinja's qr_set1, its
+    ``child_rows`` loop): ``(row1, nf, words, trip)``, the rows' first row in the root, their
+    count, each row's words (s + 1) and the loop's trip. An iteration moves words q, q + 1 of
+    both rows of one pair of the root's rows (an even row and the odd one after it): two
+    values into the banks' even-row memories and two into their odd-row ones (two writes a
+    memory, its two ports, as the root's fill), four reads of UPDBUF1, two memories by word
+    parity (two reads each: a row's words q and q + 1 have different parities, and the pair's
+    two rows the same two, the stride s + 1 a constant); the trip is the pairs of root rows
+    the passed rows touch times ceil((s + 1) / 2)."""
+    row1 = _own_rows(tables, root)
+    for e in range(tables["STEP_CHILD_BEGIN"][root], tables["STEP_CHILD_BEGIN"][root + 1]):
+        c = tables["STEP_CHILDREN"][e]
+        if c == c1:
+            break
+        row1 += tables["STEP_NF_ROWS"][c]
+    nf = tables["STEP_NF_ROWS"][c1]
+    words = tables["STEP_W"][c1] - tables["STEP_F"][c1] + 1
+    if nf == 0:
+        return row1, 0, words, 0
+    pairs = ((row1 + nf - 1) >> 1) - (row1 >> 1) + 1
+    return row1, nf, words, pairs * -(-words // 2)
+
+
 def _tables_of(program) -> dict:
     from fgc_backends.hls.plan.loops import _tables
 
@@ -405,8 +431,8 @@ def lin_wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: b
     goes after it), the root's own rows from their stream
     (``root_fill``: a word a cycle, ending no earlier than its depth after ``root_ready``, the
     region's cycle at which the datapath loop that sends their last words ends), the root's
-    stack of c1's passed rows (from the set's UPDBUF) and the damping rows, then the root's
-    regions, before each the
+    stack of c1's passed rows (from the set's UPDBUF, two rows a cycle:
+    :func:`child_row_pairs`) and the damping rows, then the root's regions, before each the
     reads of c0's passed rows it needs (:func:`wave_entries`), a read ending no earlier than its
     depth after set 0's region that wrote the row ends (set 0's clock ``loops[c0]`` from its
     start ``start0``; set 1's from ``start1``, both cycles of the region). A wait is a loop
@@ -421,7 +447,11 @@ def lin_wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: b
             out.append(Loop("wave_wait", 1, 1, end - clock - root_fill.cycles))
         out.append(root_fill)
         clock = end
-    stack = stack_loops(tables, root, units, max_w, damped, timing, in_place=True, fed=c0)
+    # step c1's passed rows two rows a cycle (:func:`child_row_pairs`), then the rest of the
+    # root's stack (c0's rows come by qr_pass)
+    trip = child_row_pairs(tables, c1, root)[3]
+    stack = ([kernel_loop("child_rows", trip, "move", timing)] if trip > 0 else []) + \
+        stack_loops(tables, root, units, max_w, damped, timing, in_place=True, fed=c0, own=c1)
     out += stack
     clock += sum(lp.cycles for lp in stack)
     return tuple(out) + _root_regions(tables, timing, c0, root, loops, clock,
@@ -685,7 +715,10 @@ def _levels(ctx, sets, by_index, damping) -> None:
         # (lin_level's wave: set 1's holds the root's conditional after its own step's)
         ctx.memories.append(Memory(f"qr{s}_condbuf", (2 if lin and s == 1 else 1)
                                    * sizes["MAX_F"] * cols, ops.word_bits, 1))
-        ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
+        # (lin_level's wave: set 1's two memories by word parity, its passed rows read two rows
+        # a cycle into the root's stack, child_row_pairs)
+        ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits,
+                                   2 if lin and s == 1 else 1))
     solver_memories(sizes, ops, ctx.memories)
 
 
