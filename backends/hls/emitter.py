@@ -583,7 +583,6 @@ def _wave_context(program: Program, plan) -> dict | None:
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.qr import (
         _own_rows,
-        child_row_pairs,
         lin_wave,
         pass_pack,
         pass_words,
@@ -624,9 +623,10 @@ def _wave_context(program: Program, plan) -> dict | None:
             "depth": nf * pass_words(tables, c0, root, units), "lin": lin,
             "root_fill": root_fill, "root_even": root_even, "root_odd": root_odd,
             "root_wait": root_wait, "row1": first[c1],
-            # (set 1's own passed rows into the root two rows a cycle: units/qr.py)
-            "child": dict(zip(("row1", "nf", "words", "trip"), child_row_pairs(tables, c1, root),
-                              strict=True))}
+            # (set 1's own passed rows packed alike by its collector, read after its step)
+            "nf1": tables["STEP_NF_ROWS"][c1], "pack1": pass_pack(tables, c1, root, units),
+            "pass_words1": pass_words(tables, c1, root, units),
+            "own_depth": tables["STEP_NF_ROWS"][c1] * pass_words(tables, c1, root, units)}
 
 
 def _beside_context(program: Program, plan, blocks) -> dict | None:

@@ -1350,14 +1350,15 @@ void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][
 // set calls it from one site, so its units are one RTL copy whatever it runs.
 // coff: the conditional's first word in cond (lin_level's wave: the root's after step c1's).
 // COMMIT (qr_collect's commitq, where `pass`): lin_level's wave's set 0 streams its step's
-// words to its commit process as its collector writes them.
+// words to its commit process as its collector writes them. ready false: no FGC_WAVE_READY
+// marks (lin_level's wave's set 1, whose collector packs its own step's passed rows for itself).
 template <class CFG, class PASS, class FEED, class COMMIT>
 void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows,
                 int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular,
                 PASS& passq, bool pass, COMMIT& commitq, FEED& feedq, const int entry[CFG::MAX_COLS],
                 const int pack[CFG::MAX_COLS], int row0, int nfed, int words,
-                int coff = 0) {
+                int coff = 0, bool ready = true) {
     typedef typename CFG::T T;
     const int cols = f + s + 1;
     if (rows < 0 || f < 0 || s < 0 || rows > CFG::MAX_ROWS || cols > CFG::MAX_COLS ||
@@ -1404,7 +1405,8 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
                                              pack);
         }
         FGC_SEQUENTIAL();
-        if (qr_passes<PASS>::value && pass && j >= f && j - f < nf) FGC_WAVE_READY(j - f);
+        if (qr_passes<PASS>::value && pass && ready && j >= f && j - f < nf)
+            FGC_WAVE_READY(j - f);
     }
     *singular = qr_pivot_check<CFG>(cond, f, cols, k, scale, coff);
 }

@@ -264,8 +264,8 @@ def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
     ``in_place``: the datapaths wrote them, :func:`rows_in_banks`) and each child's
     new-factor rows :data:`PORTS` words a cycle (but child ``fed``'s: the root step in a
     wavefront reads them from their set's stream, :func:`wave_loops`; nor child ``own``'s:
-    lin_level's wave's set 1 moves them from its UPDBUF, :func:`child_row_pairs`), the damping
-    rows' diagonal."""
+    lin_level's wave's set 1 takes them as its collector packed them, :func:`lin_wave_loops`),
+    the damping rows' diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
     loops = [] if banks_zero else [kernel_loop("zero", m * local, "fill", timing)]
@@ -425,31 +425,6 @@ def wave_commit_loops(tables: dict, c0: int, timing: dict) -> tuple[Loop, ...]:
             kernel_loop("nf_stream", tables["STEP_NF_ROWS"][c0] * (w - f + 1), "move", timing))
 
 
-def child_row_pairs(tables: dict, c1: int, root: int) -> tuple[int, int, int, int]:
-    """lin_level's wave: unit set 1's stack of its own step ``c1``'s passed rows from its
-    UPDBUF1 into the root's rows, two rows a cycle (accel.cpp.jinja's qr_set1, its
-    ``child_rows`` loop): ``(row1, nf, words, trip)``, the rows' first row in the root, their
-    count, each row's words (s + 1) and the loop's trip. An iteration moves words q, q + 1 of
-    both rows of one pair of the root's rows (an even row and the odd one after it): two
-    values into the banks' even-row memories and two into their odd-row ones (two writes a
-    memory, its two ports, as the root's fill), four reads of UPDBUF1, two memories by word
-    parity (two reads each: a row's words q and q + 1 have different parities, and the pair's
-    two rows the same two, the stride s + 1 a constant); the trip is the pairs of root rows
-    the passed rows touch times ceil((s + 1) / 2)."""
-    row1 = _own_rows(tables, root)
-    for e in range(tables["STEP_CHILD_BEGIN"][root], tables["STEP_CHILD_BEGIN"][root + 1]):
-        c = tables["STEP_CHILDREN"][e]
-        if c == c1:
-            break
-        row1 += tables["STEP_NF_ROWS"][c]
-    nf = tables["STEP_NF_ROWS"][c1]
-    words = tables["STEP_W"][c1] - tables["STEP_F"][c1] + 1
-    if nf == 0:
-        return row1, 0, words, 0
-    pairs = ((row1 + nf - 1) >> 1) - (row1 >> 1) + 1
-    return row1, nf, words, pairs * -(-words // 2)
-
-
 def _tables_of(program) -> dict:
     from fgc_backends.hls.plan.loops import _tables
 
@@ -464,8 +439,8 @@ def lin_wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: b
     goes after it), the root's own rows from their stream
     (``root_fill``: a word a cycle, ending no earlier than its depth after ``root_ready``, the
     region's cycle at which the datapath loop that sends their last words ends), the root's
-    stack of c1's passed rows (from the set's UPDBUF, two rows a cycle:
-    :func:`child_row_pairs`) and the damping rows, then the root's regions, before each the
+    stack of c1's passed rows (as the set's collector packed them, :func:`pass_pack`: a stream
+    word a cycle) and the damping rows, then the root's regions, before each the
     reads of c0's passed rows it needs (:func:`wave_entries`), a read ending no earlier than its
     depth after set 0's region that wrote the row ends (set 0's clock ``loops[c0]`` from its
     start ``start0``; set 1's from ``start1``, both cycles of the region). A wait is a loop
@@ -480,9 +455,9 @@ def lin_wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: b
             out.append(Loop("wave_wait", 1, 1, end - clock - root_fill.cycles))
         out.append(root_fill)
         clock = end
-    # step c1's passed rows two rows a cycle (:func:`child_row_pairs`), then the rest of the
-    # root's stack (c0's rows come by qr_pass)
-    trip = child_row_pairs(tables, c1, root)[3]
+    # step c1's passed rows as its collector packed them, a stream word a cycle
+    # (:func:`pass_pack`), then the rest of the root's stack (c0's rows come by qr_pass)
+    trip = tables["STEP_NF_ROWS"][c1] * pass_words(tables, c1, root, units)
     stack = ([kernel_loop("child_rows", trip, "move", timing)] if trip > 0 else []) + \
         stack_loops(tables, root, units, max_w, damped, timing, in_place=True, fed=c0, own=c1)
     out += stack
@@ -688,6 +663,11 @@ def _levels(ctx, sets, by_index, damping) -> None:
         # root inside), its two streams to unit set 1
         c0, c1, root = wave
         ctx.channels.append(pass_channel(tables, c0, root, opts.units, ops.word_bits))
+        # step c1's passed rows packed as the root's banks take them, set 1's collector to set 1
+        # itself (accel.cpp.jinja's `own`: every word, read after its step)
+        own = pass_channel(tables, c1, root, opts.units, ops.word_bits)
+        ctx.channels.append(Channel("qr_own", "stream", own.depth, own.width, "qr_set1",
+                                    "qr_set1"))
         # step c0's words from set 0's collector to the commit process (wave_commit_loops)
         ctx.channels.append(Channel("qr_commit", "stream", 2, ops.word_bits, "qr_set0",
                                     "qr_commit_wave"))
@@ -748,10 +728,7 @@ def _levels(ctx, sets, by_index, damping) -> None:
         # (lin_level's wave: set 1's holds the root's conditional after its own step's)
         ctx.memories.append(Memory(f"qr{s}_condbuf", (2 if lin and s == 1 else 1)
                                    * sizes["MAX_F"] * cols, ops.word_bits, 1))
-        # (lin_level's wave: set 1's two memories by word parity, its passed rows read two rows
-        # a cycle into the root's stack, child_row_pairs)
-        ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits,
-                                   2 if lin and s == 1 else 1))
+        ctx.memories.append(Memory(f"qr{s}_updbuf", cols * cols, ops.word_bits, 1))
     solver_memories(sizes, ops, ctx.memories)
 
 
