@@ -632,12 +632,14 @@ def _wave_context(program: Program, plan) -> dict | None:
     """The root step in a wavefront's constants (``HlsConfig.root_wave``, units/qr.py's
     ``wave_steps``), None without it: the root, the fed child c0 (unit set 0's step), its
     passed rows' place in the root's rows, their words, each row's region
-    (``wave_entries``) and each word's column in the root, and the stream's depth (every
-    passed row, two words a stream word: unit set 1 reads them behind set 0)."""
+    (``wave_entries``), each word's slot in a ``qr_pass`` stream word (``pass_pack``) and the
+    stream words a row, and the stream's depth (every passed row: unit set 1 reads them behind
+    set 0)."""
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.qr import (
         _own_rows,
         lin_wave,
+        pass_pack,
         pass_words,
         root_bank_parity_words,
         rows_in_banks,
@@ -667,14 +669,19 @@ def _wave_context(program: Program, plan) -> dict | None:
         row += tables["STEP_NF_ROWS"][tables["STEP_CHILDREN"][e]]
     row0 = first[c0]
     sc = tables["STEP_W"][c0] - tables["STEP_F"][c0]
-    mb = tables["STEP_SEPMAP_BEGIN"][c0]
     nf = tables["STEP_NF_ROWS"][c0]
+    units = plan.options.units
     return {"c0": c0, "c1": c1, "root": root, "row0": row0, "nfed": nf, "words": sc + 1,
             "entry": wave_entries(tables, c0, root),
-            "colmap": [tables["STEP_SEPMAP"][mb + q] for q in range(sc)]
-            + [tables["STEP_W"][root]], "depth": nf * pass_words(tables, c0), "lin": lin,
+            "pack": pass_pack(tables, c0, root, units),
+            "pass_words": pass_words(tables, c0, root, units),
+            "depth": nf * pass_words(tables, c0, root, units), "lin": lin,
             "root_fill": root_fill, "root_even": root_even, "root_odd": root_odd,
-            "root_wait": root_wait, "row1": first[c1]}
+            "root_wait": root_wait, "row1": first[c1],
+            # (set 1's own passed rows packed alike by its collector, read after its step)
+            "nf1": tables["STEP_NF_ROWS"][c1], "pack1": pass_pack(tables, c1, root, units),
+            "pass_words1": pass_words(tables, c1, root, units),
+            "own_depth": tables["STEP_NF_ROWS"][c1] * pass_words(tables, c1, root, units)}
 
 
 def _beside_context(program: Program, plan, blocks) -> dict | None:

@@ -1,8 +1,8 @@
 """The root step in a wavefront behind its children (issue 33 item 2, ``HlsConfig.root_wave``):
 paper A's window (two leaf steps, then the root) under the one-step policy runs the root inside
 the linearisation's region ``lin_level`` with level 0: unit set 0 reflects step 0 and streams
-its passed rows (``qr_pass``, two words a stream word) and its result (``qr_commit``, to the
-process that writes COND and NF) as its collector writes them; unit set 1
+its passed rows (``qr_pass``, a stream word as the root's banks take it) and its result
+(``qr_commit``, to the process that writes COND and NF) as its collector writes them; unit set 1
 reflects step 1, takes the root's own rows from their stream (``bank_root``, the datapaths
 write it), stacks step 1's passed rows from its buffer and reflects the root, reading each of
 step 0's rows before the root's first region that needs it (units/qr.py's ``wave_entries``).
@@ -96,9 +96,31 @@ def test_the_wave_region_has_one_producer_and_one_consumer(wave7):
     t = stream.layout.template
     c0, _ = t.schedule.levels[-2]
     sc = sum(t.schedule.steps[c0].separator_dims)
-    # every passed row, two words a stream word (the root's set reads two a cycle)
-    assert ch["qr_pass"].depth == t.schedule.steps[c0].new_factor_rows * ((sc + 2) // 2)
-    assert ch["qr_pass"].width == 2 * ch["qr_commit"].width
+    # every passed row, packed by the root's banks: each stream word 2 * n_u slots (two words
+    # of a bank, its memory's two ports), word q in the slot of its root column's bank at that
+    # column's local place; a row takes the fewest words its fullest bank allows
+    from fgc_backends.hls.plan.loops import _tables
+    from fgc_backends.hls.units.qr import pass_pack, wave_colmap
+
+    units = model.plan.options.units
+    root = t.schedule.levels[-1][0]
+    tables = _tables(t)
+    cols = wave_colmap(tables, c0, root)
+    pack = pass_pack(tables, c0, root, units)
+    assert len(cols) == sc + 1
+    words, taken = 0, set()
+    for t_col, pk in zip(cols, pack, strict=True):
+        slot = pk & 255
+        assert slot // 2 == t_col % units and (pk >> 8) & 255 == t_col // units
+        assert slot not in taken
+        taken.add(slot)
+        if pk >> 16:
+            words, taken = words + 1, set()
+    assert not taken and pack[-1] >> 16
+    fullest = max(sum(1 for c in cols if c % units == u) for u in range(units))
+    assert words == -(-fullest // 2)
+    assert ch["qr_pass"].depth == t.schedule.steps[c0].new_factor_rows * words
+    assert ch["qr_pass"].width == 2 * units * (ch["qr_commit"].width + 8)
     assert f"variable=qr_pass depth={ch['qr_pass'].depth}" in text
     assert f"variable=bank_root depth={ch['bank_root'].depth}" in text
 

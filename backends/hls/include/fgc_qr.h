@@ -129,10 +129,13 @@ struct qr_word {
 };
 
 // The root step in a wavefront: a stream word of the fed child's passed rows (qr_collect's
-// writes, qr_feed_row's reads), QR_PASS_WORDS words of one row.
-enum { QR_PASS_WORDS = 2 };
-template <class T>
-struct qr_pass_word { T pw[QR_PASS_WORDS]; };
+// writes, qr_feed_row's reads), S = 2 * N_UNITS slots of one row as the root's banks take
+// them: slot 2u + h holds a word of bank u (h: its first or second in this stream word, two
+// writes a bank memory a cycle, its two ports), at[] its local column in the bank
+// (QR_PASS_NONE: the slot is empty).
+enum { QR_PASS_NONE = 255 };
+template <class T, int S>
+struct qr_pass_word { T pw[S]; unsigned char at[S]; };
 
 // Two words of a Householder vector a cycle (FGC_QR_TWO_ROWS: the Update units take two rows a
 // cycle): from the broadcast the header {0, 0, n, ne} (n active rows, ne of the words below the
@@ -1209,10 +1212,11 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 // column's entry from the Evaluate, the rest from the Update units in column order), into cond
 // (j < f) or update (f <= j < f + nf), and its largest magnitude into the running scale (a
 // function argument read before it is written).
-// PASS: qr_no_pass (nothing more), or the wave's stream (hls::stream<qr_pass_word<T> >) that
-// also takes each passed row's words (f <= j < f + nf) as they are written into update, where
-// `pass`, QR_PASS_WORDS of them a stream word (the row's s + 1 words in pairs, the last pair's
-// second word 0 when s + 1 is odd: the root's set reads two a cycle, qr_feed_row). COMMIT:
+// PASS: qr_no_pass (nothing more), or the wave's stream (hls::stream<qr_pass_word<T, S> >)
+// that also takes each passed row's words (f <= j < f + nf) as they are written into update,
+// where `pass`: word q into the slot pack[q] names (its bank's, with its local column in the
+// root's banks), the stream word out after the last word it holds (pack[q]'s bit 16), so that
+// the root's set writes a stream word into its banks in one cycle (qr_feed_row). COMMIT:
 // qr_no_commit, or (lin_level's wave, set 0) a stream (hls::stream<T>) that takes, where
 // `pass`, every word written into cond and then update, in that order (the conditional's f
 // rows of w + 1 words, then the new factor's nf rows of s + 1: qr_commit's order), which
@@ -1224,8 +1228,9 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
                 hls::stream<typename CFG::T>& exq, hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
                 typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale,
-                PASS& passq, bool pass, COMMIT& commitq, int coff) {
+                PASS& passq, bool pass, COMMIT& commitq, int coff, const int pack[CFG::MAX_COLS]) {
     typedef typename CFG::T T;
+    enum { S = 2 * CFG::N_UNITS };
     const int w = f + s, cols = w + 1;
     const int last = rows < w ? rows : w;
     const int nf = last - f > 0 ? last - f : 0;
@@ -1233,7 +1238,12 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
     FGC_CYCLES("qr_collect", 0, "header", 1, 1, 1);
     if (j < 0 || j >= k) return;
     T big = *scale;
-    T held = T(0);  // a passed row's even word, out with the odd one after it
+    qr_pass_word<T, S> word;  // a passed row's words as the root's banks take them (pack)
+    for (int v = 0; v < S; ++v) {
+#pragma HLS UNROLL
+        word.pw[v] = T(0);
+        word.at[v] = QR_PASS_NONE;
+    }
     // from the row's first column out (0 in cond, f in update: zeros left of the diagonal, as
     // the parent's assembly copies whole rows) to the right-hand side:
     // trip w + 1 - first, II 1, depth 2 (read, compare)
@@ -1260,13 +1270,24 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
             update[(j - f) * (s + 1) + q] = x;
             if (pass) {
                 commitq.write(x);
-                if ((q & 1) == 1 || c == cols - 1) {  // a pair out (its odd word, or the last)
-                    qr_pass_word<T> word;
-                    word.pw[0] = (q & 1) == 1 ? held : x;
-                    word.pw[1] = (q & 1) == 1 ? x : T(0);
-                    passq.write(word);
+                // word q into its slot (pack[q]: slot | local column << 8 | out << 16), the
+                // stream word out after its last word (the emitter's table: units/qr.py's
+                // pass_pack)
+                const int pk = pack[q], slot = pk & 255;
+                for (int v = 0; v < S; ++v) {
+#pragma HLS UNROLL
+                    if (v == slot) {
+                        word.pw[v] = x;
+                        word.at[v] = (unsigned char)((pk >> 8) & 255);
+                    }
                 }
-                held = x;
+                if ((pk >> 16) & 1) {
+                    passq.write(word);
+                    for (int v = 0; v < S; ++v) {
+#pragma HLS UNROLL
+                        word.at[v] = QR_PASS_NONE;
+                    }
+                }
             }
         }
         const T mag = qr_abs(x);
@@ -1287,8 +1308,8 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                    typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
                    typename CFG::T* scale, typename CFG::T evec[CFG::MAX_ROWS], PASS& passq,
-                   bool pass, COMMIT& commitq, int coff, const qr_rowmask<CFG>* mask0,
-                   qr_rowmask<CFG> msk[CFG::MAX_ROWS]) {
+                   bool pass, COMMIT& commitq, int coff, const int pack[CFG::MAX_COLS],
+                   const qr_rowmask<CFG>* mask0, qr_rowmask<CFG> msk[CFG::MAX_ROWS]) {
 #pragma HLS DATAFLOW
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
     hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS];
@@ -1315,7 +1336,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
     qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout, evec, mask0, msk);
     qr_collect<CFG, PASS, COMMIT>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale, passq,
-                                  pass, commitq, coff);
+                                  pass, commitq, coff, pack);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
     FGC_DRAINED(tq, CFG::N_UNITS);
     FGC_DRAINED(&colq[0][0], 2 * CFG::N_UNITS);
@@ -1347,13 +1368,15 @@ bool qr_pivot_check(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int 
 }
 
 // A passed-row sink and source that pass nothing (qr_step: every step but the wave's two).
-template <class T>
+template <class T, int S>
 struct qr_no_pass {
-    void write(const qr_pass_word<T>&) {}
-    qr_pass_word<T> read() {
-        qr_pass_word<T> w;
-        w.pw[0] = T(0);
-        w.pw[1] = T(0);
+    void write(const qr_pass_word<T, S>&) {}
+    qr_pass_word<T, S> read() {
+        qr_pass_word<T, S> w;
+        for (int v = 0; v < S; ++v) {
+            w.pw[v] = T(0);
+            w.at[v] = QR_PASS_NONE;
+        }
         return w;
     }
 };
@@ -1381,47 +1404,49 @@ template <class PASS>
 struct qr_passes {
     enum { value = 1 };
 };
-template <class T>
-struct qr_passes<qr_no_pass<T> > {
+template <class T, int S>
+struct qr_passes<qr_no_pass<T, S> > {
     enum { value = 0 };
 };
 
 // The root step in a wavefront (fgc_eliminate.h's qr_eliminate_all with CFG::WAVE): before its
 // region j the root's unit set reads the fed child's passed rows whose entry[i] <= j (the
-// region that first needs row i: units/qr.py's wave_entries), row i's s + 1 words in order
-// into the root's row row0 + i, word q at the root's column colmap[q], QR_PASS_WORDS words a
-// cycle (a stream word; both of one row, so at most two into any bank memory a cycle: its two
-// ports, as the fill's). A row's read waits for the child's region that wrote it
-// (fgc_cycles.h's FGC_WAVE_WAIT): trip ceil((s + 1) / 2), II 1, depth 2.
+// region that first needs row i: units/qr.py's wave_entries), row i into the root's row
+// row0 + i, `words` stream words (units/qr.py's pass_words), each of 2 * N_UNITS slots as the
+// banks take them: slot 2u + h into bank u at its local column at[2u + h] (two writes into
+// any bank memory a cycle, its two ports; the bank of each write fixed). A row's read waits
+// for the child's region that wrote it (fgc_cycles.h's FGC_WAVE_WAIT): trip `words`, II 1,
+// depth 2.
 template <class CFG, class FEED>
 void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                 int row, const int colmap[CFG::MAX_COLS], int words, int i) {
+                 int row, int words, int i) {
     (void)i;  // (the count's key only)
     FGC_WAVE_WAIT(i);
-    const int pairs = (words + QR_PASS_WORDS - 1) / QR_PASS_WORDS;
-    for (int p = 0; p < pairs; ++p) {
-#pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_COLS + 1) / 2
+    for (int p = 0; p < words; ++p) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
 #pragma HLS PIPELINE II=1
-        const qr_pass_word<typename CFG::T> x = feedq.read();
-        for (int h = 0; h < QR_PASS_WORDS; ++h) {
+        const qr_pass_word<typename CFG::T, 2 * CFG::N_UNITS> x = feedq.read();
+        for (int u = 0; u < CFG::N_UNITS; ++u) {
 #pragma HLS UNROLL
-            const int q = QR_PASS_WORDS * p + h;
-            if (q < words) {
-                const int t = colmap[q];
-                work[t % CFG::N_UNITS][row][t / CFG::N_UNITS] = x.pw[h];
+            for (int h = 0; h < 2; ++h) {
+#pragma HLS UNROLL
+                const int a = x.at[2 * u + h];
+                if (a != QR_PASS_NONE) work[u][row][a] = x.pw[2 * u + h];
             }
         }
     }
-    FGC_CYCLES("qr_feed", 0, "wave_row", pairs, 1, 2);
+    FGC_CYCLES("qr_feed", 0, "wave_row", words, 1, 2);
 }
 
 // qr_step with the wave's ends: PASS (the fed child's set: where `pass`, its passed rows out as
-// its collector writes them, FGC_WAVE_READY after the region that finished each) and FEED (the
-// root's set: nfed rows of `words` words read before the regions that need them); qr_no_pass
-// for neither. A unit set calls it from one site, so its units are one RTL copy whatever it runs.
+// its collector writes them, word q into the stream word's slot pack[q] says) and FEED (the
+// root's set: nfed rows of `words` stream words read before the regions that need them);
+// qr_no_pass for neither. FGC_WAVE_READY after the region that finished each passed row. A unit
+// set calls it from one site, so its units are one RTL copy whatever it runs.
 // coff: the conditional's first word in cond (lin_level's wave: the root's after step c1's).
 // COMMIT (qr_collect's commitq, where `pass`): lin_level's wave's set 0 streams its step's
-// words to its commit process as its collector writes them.
+// words to its commit process as its collector writes them. ready false: no FGC_WAVE_READY
+// marks (lin_level's wave's set 1, whose collector packs its own step's passed rows for itself).
 // mask0 (qr_step_structural; 0: none): the step's rows' patterns, the Evaluate keeping rows by
 // structure (qr_evaluate).
 template <class CFG, class PASS, class FEED, class COMMIT>
@@ -1429,8 +1454,8 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
                 int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular,
                 PASS& passq, bool pass, COMMIT& commitq, FEED& feedq, const int entry[CFG::MAX_COLS],
-                const int colmap[CFG::MAX_COLS], int row0, int nfed, int words,
-                int coff = 0, const qr_rowmask<CFG>* mask0 = 0) {
+                const int pack[CFG::MAX_COLS], int row0, int nfed, int words,
+                int coff = 0, bool ready = true, const qr_rowmask<CFG>* mask0 = 0) {
     typedef typename CFG::T T;
     const int cols = f + s + 1;
     if (rows < 0 || f < 0 || s < 0 || rows > CFG::MAX_ROWS || cols > CFG::MAX_COLS ||
@@ -1468,19 +1493,20 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
 #pragma HLS LOOP_TRIPCOUNT max=MAX_REGIONS
         for (; fed < nfed && entry[fed] <= j; ++fed) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_COLS
-            qr_feed_row<CFG, FEED>(feedq, work, row0 + fed, colmap, words, fed);
+            qr_feed_row<CFG, FEED>(feedq, work, row0 + fed, words, fed);
         }
         if (((j + 1) & 1) == 0) {
-            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, va, ha, vb, hb, work,
-                                                     cond, update, &scale, evec, passq, pass,
-                                                     commitq, coff, mask0, msk);
+            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond,
+                                             update, &scale, evec, passq, pass, commitq, coff,
+                                             pack, mask0, msk);
         } else {
-            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, vb, hb, va, ha, work,
-                                                     cond, update, &scale, evec, passq, pass,
-                                                     commitq, coff, mask0, msk);
+            qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond,
+                                             update, &scale, evec, passq, pass, commitq, coff,
+                                             pack, mask0, msk);
         }
         FGC_SEQUENTIAL();
-        if (qr_passes<PASS>::value && pass && j >= f && j - f < nf) FGC_WAVE_READY(j - f);
+        if (qr_passes<PASS>::value && pass && ready && j >= f && j - f < nf)
+            FGC_WAVE_READY(j - f);
     }
     *singular = qr_pivot_check<CFG>(cond, f, cols, k, scale, coff);
 }
@@ -1489,10 +1515,11 @@ template <class CFG>
 void qr_step(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows, int f,
              int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
              typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular) {
-    qr_no_pass<typename CFG::T> none;
+    qr_no_pass<typename CFG::T, 2 * CFG::N_UNITS> none;
     qr_no_commit<typename CFG::T> kept;
     const int nothing[CFG::MAX_COLS] = {0};
-    qr_step_io<CFG, qr_no_pass<typename CFG::T>, qr_no_pass<typename CFG::T>,
+    qr_step_io<CFG, qr_no_pass<typename CFG::T, 2 * CFG::N_UNITS>,
+               qr_no_pass<typename CFG::T, 2 * CFG::N_UNITS>,
                qr_no_commit<typename CFG::T> >(work, rows, f, s, cond, update, singular, none,
                                                 false, kept, none, nothing, nothing, 0, 0, 0);
 }
@@ -1508,13 +1535,14 @@ void qr_step_structural(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::L
                         int rows, int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                         typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool* singular,
                         const qr_rowmask<CFG> mask0[CFG::MAX_ROWS]) {
-    qr_no_pass<typename CFG::T> none;
+    qr_no_pass<typename CFG::T, 2 * CFG::N_UNITS> none;
     qr_no_commit<typename CFG::T> kept;
     const int nothing[CFG::MAX_COLS] = {0};
-    qr_step_io<CFG, qr_no_pass<typename CFG::T>, qr_no_pass<typename CFG::T>,
+    qr_step_io<CFG, qr_no_pass<typename CFG::T, 2 * CFG::N_UNITS>,
+               qr_no_pass<typename CFG::T, 2 * CFG::N_UNITS>,
                qr_no_commit<typename CFG::T> >(work, rows, f, s, cond, update, singular,
-                                                    none, false, kept, none, nothing, nothing, 0,
-                                                    0, 0, 0, mask0);
+                                                none, false, kept, none, nothing, nothing, 0, 0,
+                                                0, 0, true, mask0);
 }
 
 }  // namespace fgc_units

@@ -257,14 +257,15 @@ def rows_in_banks(program, opts, tables: dict, root: bool = False
 
 def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
                 timing: dict, banks_zero: bool = True, in_place: bool = False,
-                fed: int = -1) -> list[Loop]:
+                fed: int = -1, own: int = -1) -> list[Loop]:
     """fgc_eliminate.h's qr_stack of step s into its unit set's banks: unless ``banks_zero``
     (fgc_qr.h's qr_step leaves its banks zero: CFG::BANKS_ZERO; not fgc_qr_stream.h's) the
     rows zeroed (all n_u banks a cycle), then each factor's rows [A | b] (none when
     ``in_place``: the datapaths wrote them, :func:`rows_in_banks`) and each child's
     new-factor rows :data:`PORTS` words a cycle (but child ``fed``'s: the root step in a
-    wavefront reads them from their set's stream, :func:`wave_loops`), the damping rows'
-    diagonal."""
+    wavefront reads them from their set's stream, :func:`wave_loops`; nor child ``own``'s:
+    lin_level's wave's set 1 takes them as its collector packed them, :func:`lin_wave_loops`),
+    the damping rows' diagonal."""
     f, m = tables["STEP_F"][s], tables["STEP_ROWS"][s]
     local = -(-(max_w + 1) // units)
     loops = [] if banks_zero else [kernel_loop("zero", m * local, "fill", timing)]
@@ -278,7 +279,7 @@ def stack_loops(tables: dict, s: int, units: int, max_w: int, damped: bool,
     cb = tables["STEP_CHILD_BEGIN"]
     for e in range(cb[s], cb[s + 1]):
         c = tables["STEP_CHILDREN"][e]
-        if c == fed:
+        if c in (fed, own):
             continue
         sc = tables["STEP_W"][c] - tables["STEP_F"][c]
         loops.append(kernel_loop("child_rows", _ported(tables["STEP_NF_ROWS"][c] * (sc + 1)),
@@ -363,21 +364,54 @@ def lin_wave(program, opts) -> tuple[int, int, int] | None:
     return wave
 
 
-PASS_WORDS = 2  # fgc_qr.h's QR_PASS_WORDS: words of a passed row in one qr_pass stream word
+PASS_NONE = 255  # fgc_qr.h's QR_PASS_NONE: an empty slot of a qr_pass stream word
 
 
-def pass_words(tables: dict, c0: int) -> int:
-    """Stream words of one passed row of step ``c0`` on ``qr_pass`` (its s + 1 words,
-    :data:`PASS_WORDS` a stream word: fgc_qr.h's qr_collect writes them, qr_feed_row reads them
-    two a cycle)."""
-    return -(-(tables["STEP_W"][c0] - tables["STEP_F"][c0] + 1) // PASS_WORDS)
+def wave_colmap(tables: dict, c0: int, root: int) -> list[int]:
+    """Per word q of a passed row of step ``c0`` (its s separator words, then its right-hand
+    side) the root's column it lands in."""
+    sc = tables["STEP_W"][c0] - tables["STEP_F"][c0]
+    mb = tables["STEP_SEPMAP_BEGIN"][c0]
+    return [tables["STEP_SEPMAP"][mb + q] for q in range(sc)] + [tables["STEP_W"][root]]
 
 
-def pass_channel(tables: dict, c0: int, word_bits: int) -> Channel:
+def pass_pack(tables: dict, c0: int, root: int, units: int) -> list[int]:
+    """How step ``c0``'s collector packs a passed row into ``qr_pass`` stream words of
+    2 * ``units`` slots (fgc_qr.h's qr_pass_word): per word q in order, ``slot | local << 8 |
+    out << 16``, the slot 2u + h of its root column's bank u (h: the bank's first or second
+    word in this stream word), its local column in the bank, and out = 1 where the stream word
+    goes after q (the row's last word, or the next word's bank has both its slots taken). Every
+    row packs alike (the same columns), so that the root's set writes a stream word into its
+    banks in one cycle, each bank at most two words (two ports a memory) at fixed banks."""
+    cols = wave_colmap(tables, c0, root)
+    out, used = [], [0] * units
+    for q, t in enumerate(cols):
+        u = t % units
+        if used[u] == 2:  # (not reached: the word before went out)
+            raise PlanError(f"root_wave: passed word {q} of step {c0} finds bank {u} full")
+        slot = 2 * u + used[u]
+        used[u] += 1
+        last = q == len(cols) - 1 or used[cols[q + 1] % units] == 2
+        out.append(slot | (t // units) << 8 | int(last) << 16)
+        if last:
+            used = [0] * units
+    return out
+
+
+def pass_words(tables: dict, c0: int, root: int, units: int) -> int:
+    """Stream words of one passed row of step ``c0`` on ``qr_pass`` (:func:`pass_pack`: each as
+    the root's banks take it; fgc_qr.h's qr_collect writes them, qr_feed_row writes each into
+    the banks in one cycle): 1 when no bank holds more than two of the row's columns."""
+    return sum(pk >> 16 for pk in pass_pack(tables, c0, root, units))
+
+
+def pass_channel(tables: dict, c0: int, root: int, units: int, word_bits: int) -> Channel:
     """The wave's ``qr_pass`` stream (set 0's collector to set 1's root): every passed row of
-    step ``c0`` (set 0 never waits for set 1), :data:`PASS_WORDS` words a stream word."""
-    return Channel("qr_pass", "stream", tables["STEP_NF_ROWS"][c0] * pass_words(tables, c0),
-                   PASS_WORDS * word_bits, "qr_set0", "qr_set1")
+    step ``c0`` (set 0 never waits for set 1), a stream word 2 * ``units`` slots of a word and
+    its 8-bit local column (fgc_qr.h's qr_pass_word)."""
+    return Channel("qr_pass", "stream",
+                   tables["STEP_NF_ROWS"][c0] * pass_words(tables, c0, root, units),
+                   2 * units * (word_bits + 8), "qr_set0", "qr_set1")
 
 
 def wave_commit_loops(tables: dict, c0: int, timing: dict) -> tuple[Loop, ...]:
@@ -405,8 +439,8 @@ def lin_wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: b
     goes after it), the root's own rows from their stream
     (``root_fill``: a word a cycle, ending no earlier than its depth after ``root_ready``, the
     region's cycle at which the datapath loop that sends their last words ends), the root's
-    stack of c1's passed rows (from the set's UPDBUF) and the damping rows, then the root's
-    regions, before each the
+    stack of c1's passed rows (as the set's collector packed them, :func:`pass_pack`: a stream
+    word a cycle) and the damping rows, then the root's regions, before each the
     reads of c0's passed rows it needs (:func:`wave_entries`), a read ending no earlier than its
     depth after set 0's region that wrote the row ends (set 0's clock ``loops[c0]`` from its
     start ``start0``; set 1's from ``start1``, both cycles of the region). A wait is a loop
@@ -421,11 +455,15 @@ def lin_wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: b
             out.append(Loop("wave_wait", 1, 1, end - clock - root_fill.cycles))
         out.append(root_fill)
         clock = end
-    stack = stack_loops(tables, root, units, max_w, damped, timing, in_place=True, fed=c0)
+    # step c1's passed rows as its collector packed them, a stream word a cycle
+    # (:func:`pass_pack`), then the rest of the root's stack (c0's rows come by qr_pass)
+    trip = tables["STEP_NF_ROWS"][c1] * pass_words(tables, c1, root, units)
+    stack = ([kernel_loop("child_rows", trip, "move", timing)] if trip > 0 else []) + \
+        stack_loops(tables, root, units, max_w, damped, timing, in_place=True, fed=c0, own=c1)
     out += stack
     clock += sum(lp.cycles for lp in stack)
     return tuple(out) + _root_regions(tables, timing, c0, root, loops, clock,
-                                      start0 - start1)
+                                      start0 - start1, units)
 
 
 def wave_entries(tables: dict, c0: int, root: int) -> list[int]:
@@ -502,16 +540,16 @@ def wave_loops(tables: dict, timing: dict, units: int, max_w: int, damped: bool,
     out = list(loops[c1]) + commit_loops(tables, c1, timing, False) + stack_loops(
         tables, root, units, max_w, damped, timing, fed=c0)
     clock = sum(lp.cycles for lp in out)
-    return tuple(out) + _root_regions(tables, timing, c0, root, loops, clock, 0)
+    return tuple(out) + _root_regions(tables, timing, c0, root, loops, clock, 0, units)
 
 
 def _root_regions(tables: dict, timing: dict, c0: int, root: int, loops: dict, clock: int,
-                  offset: int) -> tuple[Loop, ...]:
+                  offset: int, units: int) -> tuple[Loop, ...]:
     """The root's regions (``loops[root]``) on unit set 1 from ``clock``, before each the reads
     of step ``c0``'s passed rows it needs (:func:`wave_entries`): one loop of
-    :func:`pass_words` stream words a row, two words each (II 1, depth 2), ending no earlier
-    than its depth after c0's region that wrote the row (reflection f + i's on set 0's clock
-    ``loops[c0]``, which starts ``offset`` cycles after set 1's; ``wave_wait``: the cycles
+    :func:`pass_words` stream words a row, each as the banks take it (II 1, depth 2), ending
+    no earlier than its depth after c0's region that wrote the row (reflection f + i's on set
+    0's clock ``loops[c0]``, which starts ``offset`` cycles after set 1's; ``wave_wait``: the cycles
     the read waits past its own), then the pivot check."""
     out = []
     ends, t = [], offset
@@ -519,7 +557,7 @@ def _root_regions(tables: dict, timing: dict, c0: int, root: int, loops: dict, c
         t += lp.cycles
         ends.append(t)
     f0 = tables["STEP_F"][c0]
-    entry = kernel_loop("wave_row", pass_words(tables, c0), "move", timing)
+    entry = kernel_loop("wave_row", pass_words(tables, c0, root, units), "move", timing)
     when = wave_entries(tables, c0, root)
     regions = list(loops[root])
     nxt = 0
@@ -624,7 +662,12 @@ def _levels(ctx, sets, by_index, damping) -> None:
         # as without it (the update model's qr_beside_linearize takes the region with the
         # root inside), its two streams to unit set 1
         c0, c1, root = wave
-        ctx.channels.append(pass_channel(tables, c0, ops.word_bits))
+        ctx.channels.append(pass_channel(tables, c0, root, opts.units, ops.word_bits))
+        # step c1's passed rows packed as the root's banks take them, set 1's collector to set 1
+        # itself (accel.cpp.jinja's `own`: every word, read after its step)
+        own = pass_channel(tables, c1, root, opts.units, ops.word_bits)
+        ctx.channels.append(Channel("qr_own", "stream", own.depth, own.width, "qr_set1",
+                                    "qr_set1"))
         # step c0's words from set 0's collector to the commit process (wave_commit_loops)
         ctx.channels.append(Channel("qr_commit", "stream", 2, ops.word_bits, "qr_set0",
                                     "qr_commit_wave"))
@@ -659,7 +702,7 @@ def _levels(ctx, sets, by_index, damping) -> None:
                        Process(f"qr{li}_set1", "set1", wave_loops(
                            tables, timing, opts.units, max_w, damping, wave, loops)))]
             level = (c0, root)  # committed after the region (c1 in set 1's process)
-            ctx.channels.append(pass_channel(tables, c0, ops.word_bits))
+            ctx.channels.append(pass_channel(tables, c0, root, opts.units, ops.word_bits))
         if len(chunks) == 1:
             ctx.add_phase("solve", Phase(f"qr_level{li}", True, chunks[0], linear=True))
         else:
