@@ -399,6 +399,31 @@ L BS_X1[MAX_F];
 // two solution words a stream word (the copies move two words a cycle)
 struct BsPair { L word[2]; };
 
+#ifdef FGC_BS_STEP_TEST
+// LM's step test summed in the state update (the kernel's FGC_BS_STEP_TEST), one variable of
+// the retire's loop: CFG::retract_variable retracts variable v (its words on to trial_cost, and
+// tx2) and forms its terms, added here into the running sums: |delta|^2 (dd), delta^T g (dg),
+// |x (+) delta|^2 (xx), the gradient's largest |entry| (gm), delta's finiteness (fin). Each
+// sum's add (or compare) is the loop's carried dependence, its latency within RETIRE_II. Both
+// drivers' retire loops call it (the slot design's backsub_retire, the column design's
+// backsub_retire_cols): one body, inlined into the caller's pipeline.
+template <class CFG>
+inline void step_sums(int v, const L delta[CFG::N_TANGENT], bool at_x,
+                      hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2,
+                      typename CFG::TestT& dd, typename CFG::TestT& dg,
+                      typename CFG::TestT& gm, bool& fin, typename CFG::TestT& xx) {
+#pragma HLS INLINE
+    typename CFG::TestT vd = 0, vg = 0, vm = 0, vx = 0;
+    bool vf = true;
+    CFG::retract_variable(v, delta, at_x, tx, tx2, vd, vg, vm, vf, vx);
+    dd += vd;
+    dg += vg;
+    xx += vx;
+    gm = vm > gm ? vm : gm;
+    fin = fin && vf;
+}
+#endif
+
 #ifndef FGC_BS_COLUMNS
 
 // The solved step's frontal solution out (cb: its STEP_COL_BEGIN) into DELTA and, a pair of
@@ -695,14 +720,7 @@ void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx,
         }
         // its words on to trial_cost (and tx2: the kernel's second cost process, if any)
 #ifdef FGC_BS_STEP_TEST
-        typename CFG::TestT vd = 0, vg = 0, vm = 0, vx = 0;
-        bool vf = true;
-        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2, vd, vg, vm, vf, vx);
-        dd += vd;
-        dg += vg;
-        xx += vx;
-        gm = vm > gm ? vm : gm;
-        fin = fin && vf;
+        step_sums<CFG>(RETIRE_VARS[i], delta, at_x, tx, tx2, dd, dg, gm, fin, xx);
 #else
         CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2);
 #endif
@@ -1021,14 +1039,8 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
             }
         }
 #ifdef FGC_BS_STEP_TEST
-        typename CFG::TestT vd = 0, vg = 0, vm = 0, vx = 0;
-        bool vf = true;
-        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2, vd, vg, vm, vf, vx);  // its words on to trial_cost
-        dd += vd;
-        dg += vg;
-        xx += vx;
-        gm = vm > gm ? vm : gm;
-        fin = fin && vf;
+        // its words on to trial_cost, its terms into the sums
+        step_sums<CFG>(RETIRE_VARS[i], delta, at_x, tx, tx2, dd, dg, gm, fin, xx);
 #else
         CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx);  // its words on to trial_cost
 #endif
