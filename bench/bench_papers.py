@@ -130,6 +130,11 @@ class Config:
     # pick 8,747 -> 8,634) for no DSP, DATA_BUF's 8 banks (2 BRAM36 more) and the port's LUT /
     # FF (docs/hls.md, "The update's start off the path"), so it is not an axis
     stream_data_width: int = 64
+    # the state update's special-function instances a retraction (HlsConfig.retire_special:
+    # None the design's one, 2 a second: the retire's II 36 -> 22 on LIO's Pose3, -28 cycles an
+    # incremental update of the n_u 8 pick for +20 DSP by the plan; docs/hls.md,
+    # "Back-substitution after lin_level"): an axis, tried on every stream design of the grid
+    stream_retire_special: tuple = (None, 2)
     # paper B's solve: run the best design's counting C simulation on the problem (a minute or
     # two at N = 50) and price the solve by the linearisations and solves it really runs;
     # False: the per-solve figure is the plan's iteration times GTSAM's iteration count, said so
@@ -139,7 +144,7 @@ class Config:
 SMALL = Config(lio_n=5, imu_n=5, storage_ns=(4, 6), units=(1, 8), alloc_scales=(1,),
                lio_cpes=(5,), cpes=(5, 20), c123=(20,), gtsam_iterations=2, gtsam_repeats=1,
                reads=0, stream_batch=(4,), isam_repeats=1, backsub_lanes=(None,),
-               stream_units=(1, 4), stream_qr_rows=(1,),
+               stream_units=(1, 4), stream_qr_rows=(1,), stream_retire_special=(None,),
                stream_allocations=(None, (("add", 1), ("mul", 1), ("div", 1))), stream_reads=1,
                design_run=False, binds=((),), stream_binds=((),))
 
@@ -343,6 +348,7 @@ class StreamDesign:
     bind: tuple = ()  # the operators' binding (HlsConfig.bind)
     root_wave: bool = False  # the root step in a wavefront (HlsConfig.root_wave)
     data_width: int = 32  # the streaming top's data port, bits a beat (HlsConfig.data_width)
+    retire_special: int | None = None  # the retire's special-function instances (HlsConfig)
     lut: int = 0  # the plan's LUT and FF, and the part's
     ff: int = 0
     fabric: tuple[int, int] = (0, 0)
@@ -367,6 +373,8 @@ class StreamDesign:
             if self.bind else ""
         wave = ", the root in a wavefront" if self.root_wave else ""
         wave += f", data port {self.data_width} bits" if self.data_width != 32 else ""
+        wave += (f", {self.retire_special} special-function instances a retraction"
+                 if self.retire_special else "")
         return f"n_u={self.units}, {sets}, {alloc}{rows}{wave}{bind}"
 
     @property
@@ -412,6 +420,56 @@ def _stream_solver(cfg: Config) -> SolverConfig:
     return streaming.one_step_solver(solver) if cfg.stream_one_step else solver
 
 
+def _stream_candidate(cfg: Config, sp, units: int, sets, alloc, rows: int, bind: tuple,
+                      special, default_units, updates: list, prices: dict):
+    """One candidate of :func:`stream_search`'s grid priced by its plan: the design of these
+    options (the root in a wavefront on two unit sets where the window takes it, else
+    without; the data port ``cfg.stream_data_width`` but on the default design's row) and each
+    of ``updates`` priced as it runs them (``prices``: by the options that change a cycle; a
+    binding changes none). Returns the :class:`StreamDesign` and the unit sets its plan
+    resolves, or None when its options cannot be built (said on stderr)."""
+    from fgc.app import streaming
+    from fgc.errors import FgcError
+    from fgc_backends.hls import HlsConfig
+    from fgc_backends.hls.plan.report import unit_sets
+
+    # (the root in a wavefront on two unit sets where the window takes it)
+    wave = cfg.stream_root_wave and sets == 2
+    # (the default design's row: HlsConfig's default port)
+    width = 32 if units == default_units and sets is None else cfg.stream_data_width
+    config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc, qr_rows=rows,
+                       bind=bind, root_wave=wave, data_width=width, retire_special=special)
+    try:
+        pricer = streaming.WindowPricer(sp, config=config)
+    except FgcError as exc:  # a unit-set count the window's levels cannot take
+        if not wave:
+            _progress(f"stream search: n_u={units}, {sets} unit sets, {alloc}: {exc}")
+            return None
+        wave = False  # (its schedule cannot take the wave: the design without)
+        config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc, qr_rows=rows,
+                           bind=bind, data_width=width, retire_special=special)
+        try:
+            pricer = streaming.WindowPricer(sp, config=config)
+        except FgcError as exc2:
+            _progress(f"stream search: n_u={units}, {sets} unit sets, {alloc}: {exc2}")
+            return None
+    res = pricer.model.resources()
+    device = pricer.model.plan.target.device
+    # a binding changes no cycle (config_op pins each latency): one binding's prices serve the
+    # others of the same options
+    key = (sets, alloc, rows, wave, width, special)
+    if key not in prices:
+        prices[key] = np.array([pricer.price(u).latency_ms for u in updates])
+    default = (units == default_units and sets is None and alloc is None and rows == 1
+               and not bind and special is None)
+    d = StreamDesign(units, sets, alloc, res["dsp"], res["bram36"], res["parts"], prices[key],
+                     (device.dsp, device.bram36), held=pricer.model.duplicated(),
+                     default=default, part=res["part"], qr_rows=rows, bind=config.bind,
+                     lut=res["lut"], ff=res["ff"], fabric=(device.lut, device.ff),
+                     root_wave=wave, data_width=width, retire_special=special)
+    return d, max(1, unit_sets(pricer.model.plan))
+
+
 def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
                   default_units: int | None = None) -> list[StreamDesign]:
     """The on-chip stream design's search (issue 33 item 6): every n_u, unit-set count and
@@ -427,9 +485,7 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
     p99, per update). ``--qr-unit stream`` is not in the space: the stream model prices the
     Householder unit's steps alone (WindowUpdateModel)."""
     from fgc.app import streaming
-    from fgc.errors import FgcError
     from fgc_backends.hls import HlsConfig
-    from fgc_backends.hls.plan.report import unit_sets
 
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from bench_second_reader import measure_stream
@@ -450,56 +506,33 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
         if units == default_units:
             grid.insert(0, (None, None, 1, ((),)))
         for sets, alloc, rows, binds in grid:
-            # the bindings in cfg's order (fewer DSP, more LUT, each): the first that fits by the
-            # plan ends them (a later one is as fast, never preferred), as does one over on LUT
-            # or FF (a later one has more)
+            # the bindings in cfg's order (fewer DSP, more LUT, each): per retire_special, the
+            # first that fits by the plan ends them (a later one is as fast, never preferred), as
+            # does one over on LUT or FF (a later one has more)
+            specials = list(cfg.stream_retire_special)
+            default_row = units == default_units and sets is None
+            if default_row:
+                specials = [None]  # (the default design's row: HlsConfig's default retire)
             for bind in binds:
-                if (units == default_units and alloc is None and sets is not None
-                        and sets == default_sets and rows == 1 and not bind
-                        and not (cfg.stream_root_wave and sets == 2)):
-                    continue  # the default design's own options: priced above
-                # (the root in a wavefront on two unit sets where the window takes it)
-                wave = cfg.stream_root_wave and sets == 2
-                # (the default design's row: HlsConfig's default port)
-                width = 32 if units == default_units and sets is None else cfg.stream_data_width
-                config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc,
-                                   qr_rows=rows, bind=bind, root_wave=wave, data_width=width)
-                try:
-                    pricer = streaming.WindowPricer(sp, config=config)
-                except FgcError as exc:  # a unit-set count the window's levels cannot take
-                    if not wave:
-                        _progress(f"stream search: n_u={units}, {sets} unit sets, {alloc}: "
-                                  f"{exc}")
-                        break
-                    wave = False  # (its schedule cannot take the wave: the design without)
-                    config = HlsConfig(scalar="float", unit_sets=sets, allocation=alloc,
-                                       qr_rows=rows, bind=bind, data_width=width)
-                    try:
-                        pricer = streaming.WindowPricer(sp, config=config)
-                    except FgcError as exc2:
-                        _progress(f"stream search: n_u={units}, {sets} unit sets, {alloc}: "
-                                  f"{exc2}")
-                        break
-                res = pricer.model.resources()
-                device = pricer.model.plan.target.device
-                # a binding changes no cycle (config_op pins each latency): one binding's
-                # prices serve the others of the same options
-                key = (sets, alloc, rows, wave, width)
-                if key not in prices:
-                    prices[key] = np.array([pricer.price(u).latency_ms for u in updates])
-                default = (units == default_units and sets is None and alloc is None
-                           and rows == 1 and not bind)
-                if default:
-                    default_sets = max(1, unit_sets(pricer.model.plan))
-                d = StreamDesign(units, sets, alloc, res["dsp"], res["bram36"], res["parts"],
-                                 prices[key], (device.dsp, device.bram36),
-                                 held=pricer.model.duplicated(), default=default,
-                                 part=res["part"], qr_rows=rows, bind=config.bind,
-                                 lut=res["lut"], ff=res["ff"], fabric=(device.lut, device.ff),
-                                 root_wave=wave, data_width=width)
-                out.append(d)
-                if d.fits_plan or d.lut > device.lut or d.ff > device.ff:
+                if not specials:
                     break
+                for special in list(specials):
+                    if (units == default_units and alloc is None and sets is not None
+                            and sets == default_sets and rows == 1 and not bind
+                            and special is None
+                            and not (cfg.stream_root_wave and sets == 2)):
+                        continue  # the default design's own options: priced above
+                    got = _stream_candidate(cfg, sp, units, sets, alloc, rows, bind, special,
+                                            default_units, updates, prices)
+                    if got is None:  # its options cannot be built: no binding will
+                        specials = []
+                        break
+                    d, resolved = got
+                    if d.default:
+                        default_sets = resolved
+                    out.append(d)
+                    if d.fits_plan or d.lut > d.fabric[0] or d.ff > d.fabric[1]:
+                        specials.remove(special)
     # equal speed (a binding changes no cycle): the binding order of cfg.stream_binds, the
     # default first, then the fewer DSP
     rank = {tuple(b): i for i, b in enumerate(cfg.stream_binds)}
@@ -514,7 +547,8 @@ def stream_search(cfg: Config, graph, k: int, batch: tuple, updates: list,
                                  HlsConfig(scalar="float", unit_sets=d.unit_sets,
                                            allocation=d.allocation, qr_rows=d.qr_rows,
                                            bind=d.bind, root_wave=d.root_wave,
-                                           data_width=d.data_width),
+                                           data_width=d.data_width,
+                                           retire_special=d.retire_special),
                                  d.units, batch,
                                  solver=base)
         d.reader_dsp = got["reader_dsp"]

@@ -555,13 +555,13 @@ def accel_context(program: Program, config: HlsConfig, context: dict) -> dict:
             "unit_sets": max(1, sets), "units": units, "qr_unit": plan.options.qr_unit,
             "qr_rows": plan.options.qr_rows,  # fgc_qr.h's FGC_QR_TWO_ROWS (2)
             # back_substitute's schedule: (solve step, load step, solving lane) per slot
-            "bs_slots": _backsub_slots(program),
+            "bs_slots": [sl[:3] for sl in _backsub_schedule(program, plan)],
             # per slot: the loaded separator's offset in the loading lane's last solution (-1:
             # from DELTA)
-            "bs_xoff": _backsub_xoff(program),
-            # per slot: what its load moves (0 all, 1 R and d of the next slot's step, 2 S:
-            # units/backsub.py's backsub_parts)
-            "bs_parts": _backsub_parts(program, plan),
+            "bs_xoff": [sl[4] for sl in _backsub_schedule(program, plan)],
+            # per slot: what its load moves (0 all, 1 R and d of the next slot's step, 2 S, 3 R,
+            # d and S as the solve's x arrives: units/backsub.py's backsub_schedule)
+            "bs_parts": [sl[3] for sl in _backsub_schedule(program, plan)],
             # the root's conditional into back-substitution's lane 0 by its commit (slot 0 not
             # run: units/backsub.py's root_in_commit), and the root step
             "bs_root_commit": _root_in_commit(program, plan),
@@ -832,16 +832,13 @@ def _root_in_commit(program: Program, plan) -> int | None:
     return _backsub_slots(program)[0][1]
 
 
-def _backsub_parts(program: Program, plan) -> tuple[int, ...]:
+def _backsub_schedule(program: Program, plan) -> tuple[tuple[int, int, int, int, int], ...]:
+    """back_substitute's slots as the plan prices them (units/backsub.py's backsub_schedule,
+    on the linear solver's operator table: CHAIN decides where S loads as x arrives)."""
     from fgc_backends.hls.plan.loops import _tables
-    from fgc_backends.hls.units.backsub import backsub_parts
-    return backsub_parts(_tables(program), plan.options.backsub_lanes)
-
-
-def _backsub_xoff(program: Program) -> tuple[int, ...]:
-    from fgc_backends.hls.plan.loops import _tables
-    from fgc_backends.hls.units.backsub import backsub_xoff
-    return backsub_xoff(_tables(program))
+    from fgc_backends.hls.units.backsub import backsub_schedule
+    les = plan.target.ops(plan.options.precisions(program)[1])
+    return backsub_schedule(_tables(program), les, plan.options.backsub_lanes)
 
 
 def _backsub_columns(program: Program, plan) -> dict | None:

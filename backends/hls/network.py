@@ -69,16 +69,18 @@ def allocations(text: str) -> dict[str, tuple[tuple[str, str, int], ...]]:
 
 def _lanes_view(header: str, wide: bool) -> str:
     """``header`` with the branches of ``#ifdef FGC_BS_LANES`` (the two-lane-wide driver,
-    ``HlsConfig.backsub_lanes`` > 1) or of their ``#else`` (the one-lane driver) blanked, as a
+    ``HlsConfig.backsub_lanes`` > 1) or of their ``#else`` (the one-lane driver) blanked (and
+    ``#ifndef FGC_BS_LANES`` blocks alike, their branches the other way round), as a
     kernel that does (``wide``) or does not define FGC_BS_LANES compiles it (the blocks do not
     nest)."""
     out, keep, inside = [], True, False
     for line in header.split("\n"):
         word = line.strip()
-        if word.startswith("#ifdef FGC_BS_LANES"):
-            inside, keep = True, wide
+        if word.startswith(("#ifdef FGC_BS_LANES", "#ifndef FGC_BS_LANES")):
+            negated = word.startswith("#ifndef")
+            inside, keep = True, wide != negated
         elif inside and word.startswith("#else"):
-            keep = not wide
+            keep = not keep
         elif inside and word.startswith("#endif"):
             inside, keep = False, True
         else:

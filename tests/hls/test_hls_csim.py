@@ -475,7 +475,9 @@ def test_one_step_sums_in_the_slot_designs_state_update_match_the_simulator(grap
     text = (tmp_path / "one_step_slots.cpp").read_text()
     assert "#define FGC_BS_STEP_TEST 1" in text and "lm_solved_test<" not in text
     assert "#define FGC_BS_ROOT_COMMIT 1" in text
-    assert 1 in backsub_parts(_tables(program)) and "BS_PART[BS_SLOTS] = {0, 1, 2" in text
+    # the first child waits for the root: its R, d and then S by columns as the root's x
+    # arrives, in the slot that solves the root (units/backsub.py's backsub_schedule, part 3)
+    assert 1 in backsub_parts(_tables(program)) and "BS_PART[BS_SLOTS] = {0, 3, 0" in text
     plan = accel_plan(program, project.config)
     assert "retire_solved_test" in {u.name for u in plan.units}
     decide = {lp.name for ph in plan.phases if ph.name == "lm_control"

@@ -275,15 +275,17 @@ def test_units_change_the_emitted_qr_network(tmp_path, units):
     assert backsub.processes == ("backsub_set0", "backsub_load1", "backsub_set1",
                                  "backsub_load0", "backsub_slots", "backsub_retire",
                                  "trial_cost")
-    # the solved words to the state update, its retired variables to the cost pass
-    assert backsub.streams == (("dx", ""), ("tx", ""), ("tx2", ""))  # tx2: a second cost process
+    # per backsub_lane region the solve's x to the other lane's load (cond_load's part 3), the
+    # solved words to the state update, its retired variables to the cost pass
+    assert backsub.streams == (("xr", ""), ("xr", ""), ("dx", ""), ("tx", ""),
+                               ("tx2", ""))  # tx2: a second cost process
     procs, streams = process_network(accel_plan(program, HlsConfig(backsub_lanes=1)))
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams))
     # per unit set: 5 n_u + 4 streams (per unit its vector, v_0 / tau, row out and the next pivot
     # column as two streams by row parity, colq[N_UNITS][2]; the Evaluate's header, ...)
-    # ... and back-substitution's: dx, tx, tx2; the cost pass in two processes here (the plan's
-    # slot_split_loops: trial_cost_b, and the feed of its data words)
-    assert (len(procs), len(streams)) == ((units + 4) * 2 + 8, 2 * (5 * units + 4) + 4)
+    # ... and back-substitution's: xr (a lane region each), dx, tx, tx2; the cost pass in two
+    # processes here (the plan's slot_split_loops: trial_cost_b, and the feed of its data words)
+    assert (len(procs), len(streams)) == ((units + 4) * 2 + 8, 2 * (5 * units + 4) + 6)
     assert tuple(p for p in procs if p.startswith(("backsub", "trial"))) == \
         backsub.processes + ("trial_cost_b",)
     for p in procs:  # the comment block lists the plan's network
@@ -304,7 +306,7 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
     # feed, per CPE its tap and itself, drain, the assembler beside the cascade (fgc_eliminate.h's
     # cholesky_overlap), back-substitution's lanes, its slot process and the state update it
     # feeds; links, tails (CPE K to the drain), tapped and recip, the assembler's stream,
-    # back_substitute's
+    # back_substitute's, and per backsub_lane region the solve's x to the other lane's load
     # (the HGC beside the elimination: its Gram source a third process of the overlap region,
     # its Gram stream one more; the cost pass beside back-substitution: trial_cost and its
     # stream of retired variables)
@@ -314,7 +316,7 @@ def test_cpe_changes_the_emitted_cascade(tmp_path, cpe):
         "cholesky_gram_source", "cholesky_assembler", "cholesky_cascade")
     header += _texts(out, "w100", "fgc_eliminate.h")[1]
     assert counts(kernel, header, _backsub(out)) == (len(procs), len(streams)) == \
-        (2 * cpe + 12, 4 * cpe + 5)
+        (2 * cpe + 12, 4 * cpe + 7)
     assert procs[-7:] == ("backsub_set0", "backsub_load1", "backsub_set1", "backsub_load0",
                           "backsub_slots", "backsub_retire", "trial_cost")
     assert all(f"//   process {p}\n" in kernel for p in procs[-7:])
@@ -372,11 +374,12 @@ def test_network_read_back_sees_a_missing_back_substitution_unit(tmp_path):
                                                                    backsub_lanes=1)))
     backsub = _backsub(out)
     assert counts(kernel, header, backsub) == (len(procs), len(streams))
-    call = "    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx, split);\n"
+    call = "    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx, split, xr, nx);\n"
     assert backsub.count(call) == 1
     assert counts(kernel, header, backsub.replace(call, "")) == (len(procs) - 1, len(streams))
     extra = "#pragma HLS DATAFLOW\n    hls::stream<L> spare;\n"
-    widened = backsub.replace("#pragma HLS DATAFLOW\n    backsub_set0", extra + "    backsub_set0")
+    widened = backsub.replace("#pragma HLS DATAFLOW\n    hls::stream<L> xr;",
+                              extra + "    hls::stream<L> xr;", 1)
     assert counts(kernel, header, widened) == (len(procs), len(streams) + 1)
 
 

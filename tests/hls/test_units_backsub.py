@@ -13,6 +13,7 @@ from fgc_backends.hls.plan.model import Loop
 from fgc_backends.hls.units.backsub import (
     backsub_loops,
     backsub_operators,
+    backsub_schedule,
     backsub_slots,
     backsub_words,
     backsub_xoff,
@@ -116,7 +117,39 @@ def test_the_lane_local_separator_saves_its_copy_on_a_two_ended_chain():
     assert sum(1 for x in xoff if x >= 0) == len(loads) - 2
     phase = {ph.name: ph for ph in build_plan(program).phases}["backsub"]
     copies = [lp for lp in phase.processes[0].loops if lp.name == "separator_in"]
-    assert sum(1 for lp in copies if lp.trip > 0) == 1
+    # (and the root's first child takes the root's x as its solve finds them, not from DELTA:
+    # units/backsub.py's backsub_schedule, part 3)
+    assert [part for *_, part, _ in backsub_schedule(tables, build_plan(program).ops)][:3] \
+        == [0, 3, 0]
+    assert sum(1 for lp in copies if lp.trip > 0) == 0
+
+
+def test_a_waiting_steps_s_loads_as_the_solve_finds_x():
+    """cond_load's part 3 (units/backsub.py's backsub_schedule): a step whose separator is the
+    step just solved's frontal columns 0 … s − 1 in order takes its R and d (two words a cycle)
+    and then S column by column (⌈f / 2⌉ iterations a column, x_a from the solving lane's
+    triangle) beside that solve, and no slot loads its S alone; by hand on f = s = 15, float32
+    (CHAIN 7: a column of 8 iterations keeps pace with the triangle's x's, so only x_0 binds).
+    A separator out of order, or a column longer than the triangle spaces its x's, keeps the
+    two slots (parts 1 and 2)."""
+    from fgc_backends.hls.units.backsub import stream_load_end, stream_load_loop, streamed_s
+    ops = FLOAT32
+    load = stream_load_loop(15, 15, ops, "cond_load")
+    assert (load.trip, load.ii, load.depth) == (68 + 15 * 8, 1, 2 + 3 + 4)
+    solve = backsub_loops(15, 0, ops)  # the root: rows 15, its triangle, x_0
+    x0_at = sum(lp.cycles for lp in solve)
+    assert x0_at == (14 + 19) + (133 - 1 + 10) + 1
+    assert stream_load_end(load, x0_at, 15) == max(load.cycles, x0_at + 7 + 9) == load.cycles
+    assert stream_load_end(load, 400, 15) == 400 + 7 + 9  # x_0 late: its column after it
+    tables = {"STEP_COL": tuple(range(15, 30)) + tuple(range(15)) + tuple(range(15, 30)),
+              "STEP_COL_BEGIN": (0, 15), "STEP_F": (15, 15), "STEP_W": (15, 30)}
+    assert streamed_s(tables, 0, 1, ops)
+    swapped = {**tables, "STEP_COL": tables["STEP_COL"][:15] + tables["STEP_COL"][15:30]
+               + (16, 15) + tables["STEP_COL"][32:]}
+    assert not streamed_s(swapped, 0, 1, ops)
+    wide = {"STEP_COL": tuple(range(20, 40)) + tuple(range(20)) + tuple(range(20, 40)),
+            "STEP_COL_BEGIN": (0, 20), "STEP_F": (20, 20), "STEP_W": (20, 40)}
+    assert not streamed_s(wide, 0, 1, ops)  # ⌈20 / 2⌉ = 10 > CHAIN + 1 = 8
 
 
 def test_two_lanes_on_a_one_set_qr_design():

@@ -6,11 +6,11 @@
 //   void cond_load(const typename CFG::T src[], int off, int f, int s, const typename CFG::T xs[MAX_COLS],
 //                  const typename CFG::T xl[MAX_F], int xoff,
 //                  typename CFG::T cond[MAX_F * MAX_COLS], typename CFG::T part[2][PARTIALS][MAX_F],
-//                  int which = 0);
+//                  int which, hls::stream<typename CFG::T>& xi);
 //   template <class CFG>
 //   void cond_backsub(const typename CFG::T cond[MAX_F * MAX_COLS], int f, int s,
 //                     const typename CFG::T part[2][PARTIALS][MAX_F], typename CFG::T x[MAX_F],
-//                     bool split = false);
+//                     int split, hls::stream<typename CFG::T>& xo, int nx);
 //
 // The conditional as qr_step / cpe_step store it: f rows of w + 1 = f + s + 1 columns, row-major,
 // cond[i * (w + 1) + c]; the separator's solution (solved by the parent steps first): xs[a],
@@ -28,7 +28,12 @@
 // `which` 1 moves R (from its diagonal) and d alone (no sum: they need no solution), 2 S alone
 // (the sums): a step that waits for the step just solved takes in its R and d beside that
 // solve and its S after it (the driver's BS_PART); cond_backsub's `split` then knows that S_i0
-// is word i s of the S load (its lane's parity).
+// is word i s of the S load (its lane's parity). `which` 3 (the driver's BS_PART 3, where the
+// waiting step's separator is the solved step's frontal columns 0 ... s - 1 in order): R and d,
+// then S column by column, a = s - 1 ... 0, two rows a cycle, x_a read from `xi` at a column's
+// first iteration as the solving lane's triangle writes it (cond_backsub's `xo`, its x_r for
+// r < nx as each is final); row i's terms into its own lane i & 1, bank a % PARTIALS (the
+// first that column visited first), which cond_backsub's `split` 2 folds.
 //
 // cond_backsub then runs two pipelined loops and one move:
 // - per row (trip f, II 1): its 2 PARTIALS sums folded and subtracted from d beside the
@@ -62,8 +67,15 @@
 #define FGC_BACKSUB_H
 
 #include "fgc_cycles.h"
+#include "hls_stream.h"
 
 namespace fgc_units {
+
+// the cycle count's key of the mark "the solving lane's x_0 is out" (FGC_WAVE_READY /
+// FGC_WAVE_WAIT_AFTER: cond_load's part 3 waits for it); apart from the wave's row keys
+#ifndef FGC_BS_X_KEY
+#define FGC_BS_X_KEY (1L << 30)
+#endif
 
 // The triangle's recurrence per unknown (backsub.py's backsub_chain): the product
 // (R_ir / R_ii) x_r and the subtraction (the rows are scaled by 1 / R_ii before it).
@@ -96,46 +108,76 @@ template <class CFG>
 void cond_load(const typename CFG::T src[], int off, int f, int s,
                const typename CFG::T xs[CFG::MAX_COLS], const typename CFG::T xl[CFG::MAX_F],
                int xoff, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-               typename CFG::T part[2][CFG::PARTIALS][CFG::MAX_F], int which = 0) {
+               typename CFG::T part[2][CFG::PARTIALS][CFG::MAX_F], int which,
+               hls::stream<typename CFG::T>& xi) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     static_assert(CFG::PARTIALS >= CFG::ADD_LAT, "PARTIALS >= ADD_LAT: the load runs at II 1");
     const int cols = f + s + 1;
-    // which 0: each row from its diagonal to d; 1: R from its diagonal, then d; 2: S
-    const int words = which == 1 ? f * (f + 1) / 2 + f : which == 2 ? f * s : backsub_words(f, s);
+    // which 0: each row from its diagonal to d; 1 (and 3, first): R from its diagonal, then d;
+    // 2: S; 3: then S column by column (scol), a = s - 1 ... 0, rows 2m, 2m + 1 an iteration
+    const bool col = which == 3;
+    const int words = which == 1 || col ? f * (f + 1) / 2 + f
+                      : which == 2 ? f * s : backsub_words(f, s);
+    const int rdit = (words + 1) / 2, len = (f + 1) / 2;  // len: a column's iterations
+    const int trip = col ? rdit + s * len : rdit;
     const int last = which == 2 ? f + s - 1 : cols - 1;  // a row's last column
     int i = 0, c = which == 2 ? f : 0, base = 0;  // the next word: row i, column c, at base + c
-    // trip ceil(words / 2), II 1, depth 2 + Lm + La (read, multiply-add, write)
-    for (int e = 0; e < words; e += 2) {
+    int a = s - 1, m = 0;  // part 3's S: column a, row pair m
+    T xa = T(0);  // part 3: x_a, from the solving lane's triangle (xi) at a column's first
+    // part 3: x_0 is read at the last column's first iteration, len - 1 before the last issues
+    // (the load keeps pace with the triangle: units/backsub.py's streamed_s)
+    if (col) FGC_WAVE_WAIT_AFTER(FGC_BS_X_KEY, len - 1);
+    // trip ceil(words / 2) (part 3: + s len), II 1, depth 2 + Lm + La (read, multiply-add,
+    // write)
+    for (int e = 0; e < trip; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_F*CFG::MAX_COLS+1)/2
 #pragma HLS PIPELINE II=1
 #pragma HLS DEPENDENCE variable=part inter true distance=CFG::PARTIALS
+        const bool scol = col && e >= rdit;
+        if (scol && m == 0) xa = xi.read();
         for (int h = 0; h < 2; ++h) {
 #pragma HLS UNROLL
-            if (e + h < words) {
-                const T v = src[off + base + c];
-                cond[base + c] = v;
-                const int a = c - f;
-                if (a >= 0 && a < s) {
-                    const int b = (a >> 1) % P;
-                    const bool first = a < 2 * P;
-                    const T xa = xoff >= 0 ? xl[xoff + a] : xs[a];  // a mux: no operator
-                    part[h][b][i] = (first ? T(0) : part[h][b][i]) + v * xa;
+            // the word: row ri, column ci (S column sa, its partial sum b; a sum's first term
+            // sets it), one read, one write and one multiply-add whichever walk it is on
+            const int ri = scol ? 2 * m + h : i, ci = scol ? f + a : c;
+            const int at = scol ? ri * cols : base;
+            const bool live = scol ? ri < f : 2 * e + h < words;
+            if (live) {
+                const T v = src[off + at + ci];
+                cond[at + ci] = v;
+                const int sa = ci - f;
+                if (sa >= 0 && sa < s) {
+                    // part 3: bank a % P, the first the column visited first (a + P >= s),
+                    // row 2m + h's own lane; else word lane h, bank (a >> 1) % P
+                    const int b = scol ? sa % P : (sa >> 1) % P;
+                    const bool first = scol ? sa + P >= s : sa < 2 * P;
+                    const T xv = scol ? xa : xoff >= 0 ? xl[xoff + sa] : xs[sa];  // a mux
+                    part[h][b][ri] = (first ? T(0) : part[h][b][ri]) + v * xv;
                 }
-                if (c == last) {
-                    ++i;
-                    base += cols;
-                    c = which == 2 ? f : i;
-                } else if (which == 1 && c == f - 1) {
-                    c = cols - 1;  // R's row done: its d
-                } else {
-                    ++c;
+                if (!scol) {
+                    if (c == last) {
+                        ++i;
+                        base += cols;
+                        c = which == 2 ? f : i;
+                    } else if ((which == 1 || col) && c == f - 1) {
+                        c = cols - 1;  // R's row done: its d
+                    } else {
+                        ++c;
+                    }
                 }
             }
         }
+        if (scol) {
+            if (m == len - 1) {
+                m = 0;
+                --a;
+            } else {
+                ++m;
+            }
+        }
     }
-    FGC_CYCLES("backsub_copy", 0, "cond_load", ceil_div(words, 2), 1,
-               2 + CFG::MUL_LAT + CFG::ADD_LAT);
+    FGC_CYCLES("backsub_copy", 0, "cond_load", trip, 1, 2 + CFG::MUL_LAT + CFG::ADD_LAT);
 }
 
 // cond_load with LANES > 1 (HlsConfig backsub_lanes; the kernel partitions src cyclic LANES,
@@ -213,7 +255,8 @@ void cond_load_wide(const typename CFG::T src[], int off, int f, int s,
 template <class CFG, int LANES>
 void backsub_triangle(const typename CFG::T cond[], int sh, int f, int cols,
                       typename CFG::T y[CFG::MAX_F], typename CFG::T z[CFG::MAX_F],
-                      const typename CFG::T inv[CFG::MAX_F], typename CFG::T x[CFG::MAX_F]) {
+                      const typename CFG::T inv[CFG::MAX_F], typename CFG::T x[CFG::MAX_F],
+                      hls::stream<typename CFG::T>& xo, int nx) {
 #pragma HLS INLINE
     typedef typename CFG::T T;
     const int CHAIN = CFG::MUL_LAT + CFG::ADD_LAT;  // backsub_chain
@@ -229,6 +272,7 @@ void backsub_triangle(const typename CFG::T cond[], int sh, int f, int cols,
         if (k == 0) {
             xr = z[r];
             x[r] = xr;
+            if (r < nx) xo.write(xr);  // x_r final: to the other lane's load (cond_load part 3)
         }
         for (int l = 0; l < LANES; ++l) {
 #pragma HLS UNROLL
@@ -255,13 +299,15 @@ void backsub_triangle(const typename CFG::T cond[], int sh, int f, int cols,
     // depth Lm + CHAIN: R_ir / R_ii, then its product with x_r and the subtraction
     FGC_CYCLES("backsub", 0, "triangle", trip, 1, CFG::MUL_LAT + CHAIN);
     x[0] = z[0];  // a move, depth 1
+    if (nx > 0) xo.write(z[0]);
     FGC_CYCLES("backsub", 0, "last", 1, 1, 1);
 }
 
 template <class CFG>
 void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
                   const typename CFG::T part[2][CFG::PARTIALS][CFG::MAX_F],
-                  typename CFG::T x[CFG::MAX_F], bool split = false) {
+                  typename CFG::T x[CFG::MAX_F], int split, hls::stream<typename CFG::T>& xo,
+                  int nx) {
     typedef typename CFG::T T;
     const int P = CFG::PARTIALS;
     const int w = f + s, cols = w + 1;
@@ -270,13 +316,15 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
     // per row: y_i = (d_i - (its 2 P partial sums folded)) / R_ii (1 / R_ii beside the fold, then
     // one multiply); trip f, II 1, depth max(La (1 + ceil(log2 2P)), Ld) + Lm. srow: the index of S_i0 among cond_load's words
     // (its parity: the lane of a = 0; split: its S load's, i s); a sum holds terms iff its first a is below s.
-    for (int i = 0, srow = split ? 0 : f; i < f; ++i) {
+    for (int i = 0, srow = split == 1 ? 0 : f; i < f; ++i) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
 #pragma HLS PIPELINE II=1
         T row[2 * CFG::PARTIALS];
         for (int h = 0; h < 2; ++h) {
             for (int b = 0; b < P; ++b) {
-                const bool used = 2 * b + ((h + srow) & 1) < s;
+                // split 2 (S by columns, cond_load part 3): row i's own lane, bank a % P
+                const bool used = split == 2 ? h == (i & 1) && b < s
+                                             : 2 * b + ((h + srow) & 1) < s;
                 row[h * P + b] = used ? part[h][b][i] : T(0);
             }
         }
@@ -285,13 +333,13 @@ void cond_backsub(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int f,
         y[i] = yi;
         z[i] = yi;
         inv[i] = ri;
-        srow += split ? s : cols - i - 1;
+        srow += split == 1 ? s : cols - i - 1;
     }
     FGC_CYCLES("backsub", 0, "rows", f, 1,
                (CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) > CFG::DIV_LAT
                     ? CFG::ADD_LAT * (1 + ceil_log2(2 * CFG::PARTIALS)) : CFG::DIV_LAT) +
                    CFG::MUL_LAT);
-    backsub_triangle<CFG, 1>(cond, 0, f, cols, y, z, inv, x);
+    backsub_triangle<CFG, 1>(cond, 0, f, cols, y, z, inv, x, xo, nx);
 }
 
 // The row loop after cond_load_wide<LANES> (HlsConfig backsub_lanes), in the loading lane's
@@ -336,7 +384,8 @@ void cond_backsub_wide(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS + 2
                        typename CFG::T z[CFG::MAX_F], const typename CFG::T inv[CFG::MAX_F],
                        typename CFG::T x[CFG::MAX_F]) {
     if (f <= 0) return;
-    backsub_triangle<CFG, LANES>(cond, sh, f, f + s + 1, y, z, inv, x);
+    hls::stream<typename CFG::T> none;  // (the wide lanes stream no x: cond_load's part 3 is one lane's)
+    backsub_triangle<CFG, LANES>(cond, sh, f, f + s + 1, y, z, inv, x, none, 0);
 }
 
 }  // namespace fgc_units
@@ -399,6 +448,31 @@ L BS_X1[MAX_F];
 // two solution words a stream word (the copies move two words a cycle)
 struct BsPair { L word[2]; };
 
+#ifdef FGC_BS_STEP_TEST
+// LM's step test summed in the state update (the kernel's FGC_BS_STEP_TEST), one variable of
+// the retire's loop: CFG::retract_variable retracts variable v (its words on to trial_cost, and
+// tx2) and forms its terms, added here into the running sums: |delta|^2 (dd), delta^T g (dg),
+// |x (+) delta|^2 (xx), the gradient's largest |entry| (gm), delta's finiteness (fin). Each
+// sum's add (or compare) is the loop's carried dependence, its latency within RETIRE_II. Both
+// drivers' retire loops call it (the slot design's backsub_retire, the column design's
+// backsub_retire_cols): one body, inlined into the caller's pipeline.
+template <class CFG>
+inline void step_sums(int v, const L delta[CFG::N_TANGENT], bool at_x,
+                      hls::stream<TrialVar>& tx, hls::stream<TrialVar>& tx2,
+                      typename CFG::TestT& dd, typename CFG::TestT& dg,
+                      typename CFG::TestT& gm, bool& fin, typename CFG::TestT& xx) {
+#pragma HLS INLINE
+    typename CFG::TestT vd = 0, vg = 0, vm = 0, vx = 0;
+    bool vf = true;
+    CFG::retract_variable(v, delta, at_x, tx, tx2, vd, vg, vm, vf, vx);
+    dd += vd;
+    dg += vg;
+    xx += vx;
+    gm = vm > gm ? vm : gm;
+    fin = fin && vf;
+}
+#endif
+
 #ifndef FGC_BS_COLUMNS
 
 // The solved step's frontal solution out (cb: its STEP_COL_BEGIN) into DELTA and, a pair of
@@ -424,7 +498,86 @@ void backsub_out(const L x[CFG::MAX_F], int f, int cb, hls::stream<BsPair>& dx) 
     FGC_CYCLES("backsub_copy", 0, "solution_out", (f + 1) / 2, 1, CFG::MOVE_DEPTH);
 }
 
-#ifdef FGC_BS_LANES  // backsub_lanes > 1 (the kernel defines it only then)
+#ifndef FGC_BS_LANES  // one lane wide (first: a reading that does not evaluate #if takes the
+// first definition of a name, and these are the default design's)
+// Lane u's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load left
+// (f = 0: none this time; split 1: its S loaded alone, BS_PART 2; split 2: by columns, BS_PART
+// 3), then its solution out (backsub_out). nx > 0: its x_r, r < nx, also to the other lane's
+// load as the triangle finds them (xo: that load's S by columns, BS_PART 3), marked for the
+// cycle count once x_0 is out.
+template <class CFG>
+void backsub_set0(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
+                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
+                  hls::stream<BsPair>& dx, int split, hls::stream<L>& xo, int nx) {
+    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
+    fgc_units::cond_backsub<CFG>(cond, f, s, part, x, split, xo, nx);
+    if (nx > 0) FGC_WAVE_READY(FGC_BS_X_KEY);  // csim cycle counting: x_0 is out
+    backsub_out<CFG>(x, f, cb, dx);
+}
+
+template <class CFG>
+void backsub_set1(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
+                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
+                  hls::stream<BsPair>& dx, int split, hls::stream<L>& xo, int nx) {
+    FGC_BRANCH();
+    fgc_units::cond_backsub<CFG>(cond, f, s, part, x, split, xo, nx);
+    if (nx > 0) FGC_WAVE_READY(FGC_BS_X_KEY);  // csim cycle counting: x_0 is out
+    backsub_out<CFG>(x, f, cb, dx);
+}
+
+// Lane u's load: a step's conditional from COND (at off) into the lane's buffer, S xs summed on
+// the way (xs: the separator in from DELTA; xoff >= 0: from xl, the lane's last solution);
+// which (BS_PART): 0 all of it, 1 R and d alone, 2 S alone, 3 R and d, then S by columns as
+// the solving lane's x arrives on xi (cond_load).
+template <class CFG>
+void backsub_load0(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
+                   int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS],
+                   L part[2][CFG::PARTIALS][CFG::MAX_F], int which, hls::stream<L>& xi) {
+    FGC_BRANCH();
+    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part, which, xi);
+}
+
+template <class CFG>
+void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
+                   int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS],
+                   L part[2][CFG::PARTIALS][CFG::MAX_F], int which, hls::stream<L>& xi) {
+    FGC_BRANCH();
+    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part, which, xi);
+}
+
+// A slot whose solve is on lane 0: lane 0's cond_backsub beside lane 1's cond_load.
+template <class CFG>
+void backsub_lane0(const L cond0[CFG::MAX_F * CFG::MAX_COLS], int f0, int s0,
+                   const L part0[2][CFG::PARTIALS][CFG::MAX_F], L x0[CFG::MAX_F], int cb0,
+                   hls::stream<BsPair>& dx,
+                   int off, int f1, int s1, const L xs1[CFG::MAX_COLS], const L x1[CFG::MAX_F],
+                   int xoff, L cond1[CFG::MAX_F * CFG::MAX_COLS],
+                   L part1[2][CFG::PARTIALS][CFG::MAX_F], int split, int which, int nx) {
+#pragma HLS DATAFLOW
+    hls::stream<L> xr;  // which 3: the solve's x_r, r < nx, to the load (all of them may wait)
+#pragma HLS STREAM variable=xr depth=CFG::MAX_F
+    backsub_set0<CFG>(cond0, f0, s0, part0, x0, cb0, dx, split, xr, nx);
+    backsub_load1<CFG>(off, f1, s1, xs1, x1, xoff, cond1, part1, which, xr);
+    FGC_DRAINED(&xr, 1);
+}
+
+// A slot whose solve is on lane 1: lane 1's cond_backsub beside lane 0's cond_load.
+template <class CFG>
+void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
+                   const L part1[2][CFG::PARTIALS][CFG::MAX_F], L x1[CFG::MAX_F], int cb1,
+                   hls::stream<BsPair>& dx,
+                   int off, int f0, int s0, const L xs0[CFG::MAX_COLS], const L x0[CFG::MAX_F],
+                   int xoff, L cond0[CFG::MAX_F * CFG::MAX_COLS],
+                   L part0[2][CFG::PARTIALS][CFG::MAX_F], int split, int which, int nx) {
+#pragma HLS DATAFLOW
+    hls::stream<L> xr;  // which 3: the solve's x_r, r < nx, to the load (all of them may wait)
+#pragma HLS STREAM variable=xr depth=CFG::MAX_F
+    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx, split, xr, nx);
+    backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, part0, which, xr);
+    FGC_DRAINED(&xr, 1);
+}
+
+#else  // backsub_lanes > 1 (the kernel defines FGC_BS_LANES only then)
 // Lane u's solve (backsub_lanes > 1): the triangle of the step its load left scaled (ry, rz,
 // rinv: the row loop ran in the load, beside the other lane's triangle), then its solution out.
 // (The parameters keep the one-lane driver's order, the wide ones appended.)
@@ -500,73 +653,6 @@ void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS + 2 * FGC_BS_LANES],
     backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, ry0, rz0, rinv0);
 }
 
-#else
-// Lane u's solve: x = R^-1 (d - S xs) of one step, S xs in the partial sums its cond_load left
-// (f = 0: none this time; split: its S loaded alone, BS_PART 2), then its solution out
-// (backsub_out).
-template <class CFG>
-void backsub_set0(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
-                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
-                  hls::stream<BsPair>& dx, bool split) {
-    FGC_BRANCH();  // csim cycle counting only: a lane's solve and the other's load side by side
-    fgc_units::cond_backsub<CFG>(cond, f, s, part, x, split);
-    backsub_out<CFG>(x, f, cb, dx);
-}
-
-template <class CFG>
-void backsub_set1(const L cond[CFG::MAX_F * CFG::MAX_COLS], int f, int s,
-                  const L part[2][CFG::PARTIALS][CFG::MAX_F], L x[CFG::MAX_F], int cb,
-                  hls::stream<BsPair>& dx, bool split) {
-    FGC_BRANCH();
-    fgc_units::cond_backsub<CFG>(cond, f, s, part, x, split);
-    backsub_out<CFG>(x, f, cb, dx);
-}
-
-// Lane u's load: a step's conditional from COND (at off) into the lane's buffer, S xs summed on
-// the way (xs: the separator in from DELTA; xoff >= 0: from xl, the lane's last solution);
-// which (BS_PART): 0 all of it, 1 R and d alone, 2 S alone (cond_load).
-template <class CFG>
-void backsub_load0(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
-                   int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS],
-                   L part[2][CFG::PARTIALS][CFG::MAX_F], int which) {
-    FGC_BRANCH();
-    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part, which);
-}
-
-template <class CFG>
-void backsub_load1(int off, int f, int s, const L xs[CFG::MAX_COLS], const L xl[CFG::MAX_F],
-                   int xoff, L cond[CFG::MAX_F * CFG::MAX_COLS],
-                   L part[2][CFG::PARTIALS][CFG::MAX_F], int which) {
-    FGC_BRANCH();
-    fgc_units::cond_load<CFG>(COND, off, f, s, xs, xl, xoff, cond, part, which);
-}
-
-// A slot whose solve is on lane 0: lane 0's cond_backsub beside lane 1's cond_load.
-template <class CFG>
-void backsub_lane0(const L cond0[CFG::MAX_F * CFG::MAX_COLS], int f0, int s0,
-                   const L part0[2][CFG::PARTIALS][CFG::MAX_F], L x0[CFG::MAX_F], int cb0,
-                   hls::stream<BsPair>& dx,
-                   int off, int f1, int s1, const L xs1[CFG::MAX_COLS], const L x1[CFG::MAX_F],
-                   int xoff, L cond1[CFG::MAX_F * CFG::MAX_COLS],
-                   L part1[2][CFG::PARTIALS][CFG::MAX_F], bool split, int which) {
-#pragma HLS DATAFLOW
-    backsub_set0<CFG>(cond0, f0, s0, part0, x0, cb0, dx, split);
-    backsub_load1<CFG>(off, f1, s1, xs1, x1, xoff, cond1, part1, which);
-}
-
-// A slot whose solve is on lane 1: lane 1's cond_backsub beside lane 0's cond_load.
-template <class CFG>
-void backsub_lane1(const L cond1[CFG::MAX_F * CFG::MAX_COLS], int f1, int s1,
-                   const L part1[2][CFG::PARTIALS][CFG::MAX_F], L x1[CFG::MAX_F], int cb1,
-                   hls::stream<BsPair>& dx,
-                   int off, int f0, int s0, const L xs0[CFG::MAX_COLS], const L x0[CFG::MAX_F],
-                   int xoff, L cond0[CFG::MAX_F * CFG::MAX_COLS],
-                   L part0[2][CFG::PARTIALS][CFG::MAX_F], bool split, int which) {
-#pragma HLS DATAFLOW
-    backsub_set1<CFG>(cond1, f1, s1, part1, x1, cb1, dx, split);
-    backsub_load0<CFG>(off, f0, s0, xs0, x0, xoff, cond0, part0, which);
-}
-
 #endif
 
 // The slots, root first, into DELTA; each solved step's words to the state update too.
@@ -612,12 +698,17 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
 #ifdef FGC_BS_LANES
         const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = BS_LOAD[k];
         const bool rd = false;
+        const int which = 0;  // (the wide lanes load whole conditionals)
 #else
         // BS_PART: a slot that solves alone takes in R and d of the next slot's step (which
         // waits for this solve), the next slot that step's S (which the solving lane's rows
         // loop then reads split)
+        // (3: R, d and then S of this slot's own step, S as this solve's x arrives: the
+        // solving lane streams x_r, r < its separator's s, to the load; the next slot's rows
+        // loop reads S's sums by columns)
         const int which = BS_PART[k];
-        const bool rd = which == 1, split = k > 0 && BS_PART[k - 1] == 2;
+        const bool rd = which == 1;
+        const int split = k == 0 ? 0 : BS_PART[k - 1] == 2 ? 1 : BS_PART[k - 1] == 3 ? 2 : 0;
         const int p = BS_LANE[k], sv = BS_SOLVE[k], ld = rd ? BS_LOAD[k + 1] : BS_LOAD[k];
 #endif
         const int sf = sv >= 0 ? STEP_F[sv] : 0, ssep = sv >= 0 ? STEP_W[sv] - STEP_F[sv] : 0;
@@ -625,7 +716,7 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
         const int lf = ld >= 0 ? STEP_F[ld] : 0, lsep = ld >= 0 ? STEP_W[ld] - STEP_F[ld] : 0;
         const int lcb = ld >= 0 ? STEP_COL_BEGIN[ld] : 0, off = ld >= 0 ? STEP_COND_OFF[ld] : 0;
         // lane-local, or R and d alone: no separator_in
-        const int xo = BS_XOFF[k], nin = xo >= 0 || rd ? 0 : lsep;
+        const int xo = BS_XOFF[k], nin = xo >= 0 || rd || which == 3 ? 0 : lsep;
         for (int a = 0; a < nin; a += 2) {
 #pragma HLS LOOP_TRIPCOUNT max=(CFG::MAX_W+1)/2
 #pragma HLS PIPELINE II=1
@@ -648,12 +739,13 @@ void backsub_slots(hls::stream<BsPair>& dx, bool at_x) {
             backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_y1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
                                BS_X0, xo, BS_COND0, bs_y0, bs_z1, bs_inv1, ssh, bs_z0, bs_inv0);
 #else
+        const int nx = which == 3 ? lsep : 0;  // the solve's x_r the load takes (r < nx)
         if (p == 0)
             backsub_lane0<CFG>(BS_COND0, sf, ssep, bs_part0, BS_X0, scb, dx, off, lf, lsep, BS_XS1,
-                               BS_X1, xo, BS_COND1, bs_part1, split, which);
+                               BS_X1, xo, BS_COND1, bs_part1, split, which, nx);
         else
             backsub_lane1<CFG>(BS_COND1, sf, ssep, bs_part1, BS_X1, scb, dx, off, lf, lsep, BS_XS0,
-                               BS_X0, xo, BS_COND0, bs_part0, split, which);
+                               BS_X0, xo, BS_COND0, bs_part0, split, which, nx);
 #endif
         FGC_JOIN();
         if (sv >= 0) FGC_OUTER_SEND();
@@ -695,14 +787,7 @@ void backsub_retire(hls::stream<BsPair>& dx, hls::stream<TrialVar>& tx,
         }
         // its words on to trial_cost (and tx2: the kernel's second cost process, if any)
 #ifdef FGC_BS_STEP_TEST
-        typename CFG::TestT vd = 0, vg = 0, vm = 0, vx = 0;
-        bool vf = true;
-        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2, vd, vg, vm, vf, vx);
-        dd += vd;
-        dg += vg;
-        xx += vx;
-        gm = vm > gm ? vm : gm;
-        fin = fin && vf;
+        step_sums<CFG>(RETIRE_VARS[i], delta, at_x, tx, tx2, dd, dg, gm, fin, xx);
 #else
         CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2);
 #endif
@@ -1021,14 +1106,8 @@ void backsub_retire_cols(hls::stream<BsPair>& dx0, hls::stream<BsPair>& dx1,
             }
         }
 #ifdef FGC_BS_STEP_TEST
-        typename CFG::TestT vd = 0, vg = 0, vm = 0, vx = 0;
-        bool vf = true;
-        CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx, tx2, vd, vg, vm, vf, vx);  // its words on to trial_cost
-        dd += vd;
-        dg += vg;
-        xx += vx;
-        gm = vm > gm ? vm : gm;
-        fin = fin && vf;
+        // its words on to trial_cost, its terms into the sums
+        step_sums<CFG>(RETIRE_VARS[i], delta, at_x, tx, tx2, dd, dg, gm, fin, xx);
 #else
         CFG::retract_variable(RETIRE_VARS[i], delta, at_x, tx);  // its words on to trial_cost
 #endif

@@ -64,7 +64,9 @@
 // at which row i is final (its start there plus its records up to the mark); set 1's span
 // prices its reads against those cycles and FGC_WAVE_WAIT_ON(process, instance, loop)'s (the end
 // of that loop of the region: the datapaths' that send the root's own rows), from its own start
-// (wave_span; units/qr.py's lin_wave_loops).
+// (wave_span; units/qr.py's lin_wave_loops). FGC_WAVE_WAIT_AFTER(i, after): the loop reads the
+// value in one iteration, `after` iterations before its last issues (back-substitution's load of
+// S as the solving lane's x arrives), so it ends no earlier than after + its depth after the mark.
 //
 // The HGC beside the elimination (FGC_BESIDE_PRODUCER, FGC_BESIDE_CONSUMER, FGC_BESIDE_END:
 // accel.cpp.jinja's linearize_solve, a producer writing a Gram stream beside the elimination
@@ -137,6 +139,8 @@ struct State {
     std::vector<std::pair<std::size_t, long> > ready;
     // keyed outer marks (FGC_OUTER_SEND_STEP / FGC_OUTER_RECEIVE_STEP): mark index -> step
     std::map<std::size_t, long> keys;
+    // FGC_WAVE_WAIT_AFTER's marks: mark index -> the loop's iterations after the read
+    std::map<std::size_t, long> afters;
     std::vector<Collapse> collapsing;  // the open FGC_COLLAPSE_BEGIN spans
     WaveTimes wave;
 };
@@ -170,6 +174,15 @@ inline void mark(char what) { state().marks.push_back(std::make_pair(state().rec
 inline void keyed_mark(char what, long key) {
     state().keys[state().marks.size()] = key;
     mark(what);
+}
+
+// FGC_WAVE_WAIT_AFTER(i, after): FGC_WAVE_WAIT(i) for a loop that reads the mark's value in
+// one iteration, `after` iterations (at II 1) before its last issues (back-substitution's load
+// of S as the solving lane's x arrives: x_0 read at the last column's first iteration), so it
+// ends no earlier than wave_ready(i) + after + its depth (branch_total).
+inline void wave_wait_after(long key, long after) {
+    state().afters[state().marks.size()] = after;
+    keyed_mark('v', key);
 }
 
 inline void beside(char what) {
@@ -425,7 +438,7 @@ inline long branch_total(std::size_t from, std::size_t to) {
         if (q >= to) continue;
         clock += total_range(at, q);
         const long ready = wave_ready(s.keys.count(mi) ? s.keys.at(mi) : -1, m.first) +
-                           r[q].depth;
+                           (s.afters.count(mi) ? s.afters.at(mi) : 0) + r[q].depth;
         clock += r[q].cycles();
         if (ready > clock) clock = ready;
         at = q + 1;
@@ -809,6 +822,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_OUTER_RECEIVE_STEP(step) ::fgc_cycles::keyed_mark('R', step)
 #define FGC_WAVE_READY(i) ::fgc_cycles::keyed_mark('w', i)
 #define FGC_WAVE_WAIT(i) ::fgc_cycles::keyed_mark('v', i)
+#define FGC_WAVE_WAIT_AFTER(i, after) ::fgc_cycles::wave_wait_after(i, after)
 #define FGC_WAVE_WAIT_ON(process, instance, loop) ::fgc_cycles::wave_wait_on(process, instance, loop)
 #define FGC_PHASE(name) ::fgc_cycles::phase(name)
 #define FGC_EVENT(name) ::fgc_cycles::event(name)
@@ -835,6 +849,7 @@ inline void drained(const S* streams, int n, const char* what) {
 #define FGC_COLLAPSE_END(process, instance, loop) ((void)0)
 #define FGC_WAVE_READY(i) ((void)0)
 #define FGC_WAVE_WAIT(i) ((void)0)
+#define FGC_WAVE_WAIT_AFTER(i, after) ((void)0)
 #define FGC_WAVE_WAIT_ON(process, instance, loop) ((void)0)
 #define FGC_OUTER_BRANCH() ((void)0)
 #define FGC_OUTER_SEND() ((void)0)

@@ -168,6 +168,62 @@ def backsub_parts(tables: dict, lanes: int = 1) -> tuple[int, ...]:
     return tuple(parts)
 
 
+def streamed_s(tables: dict, solve: int, load: int, ops: OperatorTable) -> bool:
+    """Whether ``load``'s S can be loaded as ``solve``'s solution arrives (``cond_load``'s part
+    3): its separator is ``solve``'s frontal columns 0 … s − 1 in order, so the solving lane's
+    triangle produces x_a for column a = s − 1 … 0 in the order the load takes S's columns,
+    and a column of S (⌈f / 2⌉ iterations, rows two a cycle) takes no longer than the triangle
+    spaces its x's (a column at least CHAIN + 1 iterations): the load keeps pace with the
+    solve, so it waits for x_0 alone (:func:`stream_load_end`)."""
+    cols, cb = tables["STEP_COL"], tables["STEP_COL_BEGIN"]
+    f_of, w_of = tables["STEP_F"], tables["STEP_W"]
+    if solve < 0 or load < 0:
+        return False
+    lf, s = f_of[load], w_of[load] - f_of[load]
+    sep = list(cols[cb[load] + lf:cb[load] + w_of[load]])
+    front = list(cols[cb[solve]:cb[solve] + f_of[solve]])
+    return (0 < s <= len(front) and sep == front[:s]
+            and -(-lf // 2) <= backsub_chain(ops) + 1)
+
+
+def backsub_schedule(tables: dict, ops: OperatorTable, lanes: int = 1
+                     ) -> tuple[tuple[int, int, int, int, int], ...]:
+    """back_substitute's slots as emitted (the BS_* tables): per slot (solve step, load step,
+    solving lane, part, xoff) — :func:`backsub_slots`, :func:`backsub_parts` and
+    :func:`backsub_xoff`, except that where a step waits for the step just solved and its S
+    can be loaded as that solution arrives (:func:`streamed_s`), the slot that solves takes in
+    its R, d and S (part 3: R and d first, then S column by column, x_a from the solving lane's
+    triangle) and the slot that loaded S alone goes."""
+    slots, parts, xoff = backsub_slots(tables), backsub_parts(tables, lanes), backsub_xoff(tables)
+    out, k = [], 0
+    while k < len(slots):
+        solve, load, lane = slots[k]
+        if (parts[k] == 1 and k + 1 < len(slots)
+                and streamed_s(tables, solve, slots[k + 1][1], ops)):
+            out.append((solve, slots[k + 1][1], lane, 3, -1))
+            k += 2
+            continue
+        out.append((solve, load, lane, parts[k], xoff[k]))
+        k += 1
+    return tuple(out)
+
+
+def stream_load_loop(frontal: int, separator: int, ops: OperatorTable, name: str) -> Loop:
+    """``cond_load``'s part 3 (:func:`backsub_schedule`): R (from its diagonal) and d two words
+    a cycle, then S column by column, a = s − 1 … 0, two rows of a column a cycle (⌈f / 2⌉
+    iterations a column, x_a read from the solving lane at its first), one pipelined loop."""
+    rd = -(-backsub_words(frontal, separator, 1) // PORTS)
+    return Loop(name, rd + separator * -(-frontal // 2), 1, 2 + ops.mul.latency + ops.add.latency)
+
+
+def stream_load_end(load: Loop, x0_at: int, frontal: int) -> int:
+    """When part 3's load ends on its lane's clock: its own cycles, and no earlier than x_0's
+    arrival (``x0_at``: the solving lane's rows, triangle and x_0 move) plus column 0's
+    iterations after it (⌈f / 2⌉ − 1) and its depth (fgc_cycles.h's FGC_WAVE_WAIT_AFTER: the
+    load keeps pace with the triangle, :func:`streamed_s`, so x_0 is the read that binds)."""
+    return max(load.cycles, x0_at + -(-frontal // 2) - 1 + load.depth)
+
+
 def backsub_xoff(tables: dict) -> tuple[int, ...]:
     """Per slot of :func:`backsub_slots`: where the loaded step's separator solution sits in the
     loading lane's solution buffer (``BS_X<q>``, the frontal solution of the step lane q solved
@@ -226,6 +282,13 @@ def backsub_slot_loops(tables: dict, solve: int, load: int, ops: OperatorTable,
     if sf:
         solve_loops.append(kernel_loop("solution_out", _ported(sf), "move", timing))
     off = tables["STEP_COND_OFF"][load] if load >= 0 else 0
+    if part == 3:  # R, d, then S as the solve's x arrives: the load waits for x_0
+        load = stream_load_loop(lf, ls, ops, f"cond_load{load}")
+        x0_at = sum(lp.cycles for lp in solve_loops if lp.name != "solution_out")
+        region = slowest_plus_fills([(sum(lp.cycles for lp in solve_loops), solve_loops[0].depth),
+                                     (stream_load_end(load, x0_at, lf), load.depth)])
+        return [kernel_loop("separator_in", 0, "move", timing),
+                Loop("backsub_lane", 1, 1, region)]
     load_loops = wide_load_loops(lf, ls, ops, lanes, off, f"cond_load{load}") if lanes > 1 \
         else [load_loop(lf, ls, ops, name=f"cond_load{load}", part=part)]
     region = _region_cycles([solve_loops, load_loops])
@@ -241,9 +304,11 @@ def serial_slots(sizes: list[tuple[int, int]], ops: OperatorTable, timing: dict,
     each step's separator the frontal columns of the step solved before it, so each waits for
     it (:func:`backsub_slots`' solve alone, load alone; one lane wide, the waiting step's R and
     d beside the solve and its S after, :func:`backsub_parts`; its separator in from DELTA: the
-    step before is the other lane's). ``root_commit`` (:func:`root_in_commit`): no slot loads
-    the root. Returns the slots' loops (:func:`backsub_slot_loops`) and, per step, the index of
-    the slot that solves it (:func:`retire_region`'s ``sent``)."""
+    step before is the other lane's — or, where its separator is all of that step's frontal
+    columns, in order, and a column of S keeps pace, R, d and S beside the solve as its x
+    arrives, :func:`backsub_schedule`'s part 3). ``root_commit`` (:func:`root_in_commit`): no
+    slot loads the root. Returns the slots' loops (:func:`backsub_slot_loops`) and, per step,
+    the index of the slot that solves it (:func:`retire_region`'s ``sent``)."""
     tables = {"STEP_F": [f for f, _ in sizes], "STEP_W": [f + s for f, s in sizes],
               "STEP_COND_OFF": [0] * len(sizes)}
     slots: list[list[Loop]] = []
@@ -254,6 +319,13 @@ def serial_slots(sizes: list[tuple[int, int]], ops: OperatorTable, timing: dict,
     if not root_commit:
         slots.append(backsub_slot_loops(tables, -1, 0, ops, timing, False, lanes))
     for t in range(1, len(sizes)):
+        (pf, _), (f, s) = sizes[t - 1], sizes[t]
+        if one and 0 < s == pf and -(-f // 2) <= backsub_chain(ops) + 1:
+            # (its separator the step before's frontal columns in order: its R, d and S
+            # as that solve's x arrives, :func:`backsub_schedule`'s part 3)
+            slots.append(backsub_slot_loops(tables, t - 1, t, ops, timing, False, lanes, 3))
+            sent.append(len(slots) - 1)
+            continue
         slots.append(backsub_slot_loops(tables, t - 1, t if one else -1, ops, timing, False,
                                         lanes, 1 if one else 0))
         sent.append(len(slots) - 1)
@@ -629,6 +701,12 @@ def backsub_phases(ctx, unit: str) -> None:
     # the solved words to the state update, a pair a stream word (back_substitute's dx)
     ctx.channels.append(Channel("backsub_dx", "stream", ctx.sizes["MAX_F"], 2 * ops.word_bits,
                                 "backsub_slots", "backsub_retire"))
+    if ctx.opts.backsub_lanes == 1:  # per backsub_lane<p> region: the solve's x_r to the other
+        # lane's load (fgc_backsub.h's xr, cond_load's part 3: as deep as a step's solution)
+        for p in range(LANES):
+            ctx.channels.append(Channel(f"backsub_xr{p}", "stream", ctx.sizes["MAX_F"],
+                                        ops.word_bits, f"backsub_set{p}",
+                                        f"backsub_load{1 - p}"))
     _solve_phase(ctx, unit, Process("backsub_slots", unit,
                                     tuple(lp for loops in slots for lp in loops)),
                  a, region, var_end)
@@ -645,17 +723,15 @@ def slot_retire(ctx) -> tuple[list, int, list[int]]:
     tables, timing, ops = ctx.tables, ctx.les_timing, ctx.les
     lanes = ctx.opts.backsub_lanes
     slots, sent, counts = [], [], []
-    xoff = backsub_xoff(tables)
     first = 1 if root_in_commit(ctx.program, ctx.opts) else 0  # (slot 0: the root's load)
-    order = backsub_slots(tables)
-    parts = backsub_parts(tables, lanes)
-    for k, (solve, load, _) in enumerate(order):
+    order = backsub_schedule(tables, ops, lanes)
+    for k, (solve, load, _, part, xoff) in enumerate(order):
         if k < first:
             continue
-        if parts[k] == 1:  # the next slot's step's R and d beside this solve
+        if part == 1:  # the next slot's step's R and d beside this solve
             load = order[k + 1][1]
-        slots.append(backsub_slot_loops(tables, solve, load, ops, timing, xoff[k] >= 0, lanes,
-                                        parts[k]))
+        slots.append(backsub_slot_loops(tables, solve, load, ops, timing, xoff >= 0, lanes,
+                                        part))
         if solve >= 0:
             sent.append(len(slots) - 1)  # (its index among the slots run)
             counts.append(len(ctx.program.schedule.steps[solve].frontals))
