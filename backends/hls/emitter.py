@@ -582,6 +582,7 @@ def _wave_context(program: Program, plan) -> dict | None:
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.qr import (
         _own_rows,
+        commit_pair_words,
         lin_wave,
         pass_words,
         root_bank_parity_words,
@@ -619,7 +620,8 @@ def _wave_context(program: Program, plan) -> dict | None:
             "colmap": [tables["STEP_SEPMAP"][mb + q] for q in range(sc)]
             + [tables["STEP_W"][root]], "depth": nf * pass_words(tables, c0), "lin": lin,
             "root_fill": root_fill, "root_even": root_even, "root_odd": root_odd,
-            "root_wait": root_wait, "row1": first[c1]}
+            "root_wait": root_wait, "row1": first[c1],
+            "commit1": commit_pair_words(tables, c1, root) if lin else None}
 
 
 def _beside_context(program: Program, plan, blocks) -> dict | None:

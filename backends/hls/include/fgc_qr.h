@@ -1111,6 +1111,32 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     hout[1].idx = col;
 }
 
+// A passed-row sink and source that pass nothing (qr_step: every step but the wave's two).
+template <class T>
+struct qr_no_pass {
+    void write(const qr_pass_word<T>&) {}
+    qr_pass_word<T> read() {
+        qr_pass_word<T> w;
+        w.pw[0] = T(0);
+        w.pw[1] = T(0);
+        return w;
+    }
+};
+// A sink for the words a collector writes that takes none (qr_step: every step but lin_level's
+// wave's two sets', whose collectors stream them to its commit process).
+template <class T>
+struct qr_no_commit {
+    void write(const qr_pass_word<T>&) {}
+};
+template <class PASS>
+struct qr_passes {
+    enum { value = 1 };
+};
+template <class T>
+struct qr_passes<qr_no_pass<T> > {
+    enum { value = 0 };
+};
+
 // The collector: row j of R, final after reflection j (R_jj from qr_finish, the next pivot
 // column's entry from the Evaluate, the rest from the Update units in column order), into cond
 // (j < f) or update (f <= j < f + nf), and its largest magnitude into the running scale (a
@@ -1119,12 +1145,14 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 // also takes each passed row's words (f <= j < f + nf) as they are written into update, where
 // `pass`, QR_PASS_WORDS of them a stream word (the row's s + 1 words in pairs, the last pair's
 // second word 0 when s + 1 is odd: the root's set reads two a cycle, qr_feed_row). COMMIT:
-// qr_no_commit, or (lin_level's wave, set 0) a stream (hls::stream<T>) that takes, where
-// `pass`, every word written into cond and then update, in that order (the conditional's f
-// rows of w + 1 words, then the new factor's nf rows of s + 1: qr_commit's order), which
-// lin_level's commit process writes into COND and NF as they come (qr_commit_stream), so that
-// no commit loop follows the step. coff: the conditional's first word in cond (the wave's
-// root: after its set's own step's).
+// qr_no_commit, or (lin_level's wave) a stream (hls::stream<qr_pass_word<T> >) that takes,
+// where `pass`, the words written into cond and then, where PASS passes them (set 0), into
+// update, in that order, a pair of one row's words a stream word as qr_pass's (the
+// conditional's f rows of w + 1 words, then the new factor's nf rows of s + 1: qr_commit's
+// order and places), which lin_level's commit process writes into COND and NF as they come
+// (fgc_eliminate.h's qr_commit_pairs), so that no commit loop follows the step (set 1's step
+// c1 and the root: their conditionals; c1's passed rows went into the root from its buffer).
+// coff: the conditional's first word in cond (the wave's root: after its set's own step's).
 template <class CFG, class PASS, class COMMIT>
 void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::T>& rq,
                 hls::stream<typename CFG::T>& exq, hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
@@ -1139,7 +1167,7 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
     FGC_CYCLES("qr_collect", 0, "header", 1, 1, 1);
     if (j < 0 || j >= k) return;
     T big = *scale;
-    T held = T(0);  // a passed row's even word, out with the odd one after it
+    T held = T(0);  // a row's even word, out with the odd one after it (a pair)
     // from the row's first column out (0 in cond, f in update: zeros left of the diagonal, as
     // the parent's assembly copies whole rows) to the right-hand side:
     // trip w + 1 - first, II 1, depth 2 (read, compare)
@@ -1160,17 +1188,23 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
         }
         if (j < f) {
             cond[coff + j * cols + c] = x;
-            if (pass) commitq.write(x);
+            if (pass && ((c & 1) == 1 || c == cols - 1)) {  // a pair out (its odd word, or the last)
+                qr_pass_word<T> word;
+                word.pw[0] = (c & 1) == 1 ? held : x;
+                word.pw[1] = (c & 1) == 1 ? x : T(0);
+                commitq.write(word);
+            }
+            held = x;
         } else if (j - f < nf) {
             const int q = c - f;
             update[(j - f) * (s + 1) + q] = x;
             if (pass) {
-                commitq.write(x);
                 if ((q & 1) == 1 || c == cols - 1) {  // a pair out (its odd word, or the last)
                     qr_pass_word<T> word;
                     word.pw[0] = (q & 1) == 1 ? held : x;
                     word.pw[1] = (q & 1) == 1 ? x : T(0);
                     passq.write(word);
+                    if (qr_passes<PASS>::value) commitq.write(word);
                 }
                 held = x;
             }
@@ -1251,23 +1285,6 @@ bool qr_pivot_check(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int 
     return bad;
 }
 
-// A passed-row sink and source that pass nothing (qr_step: every step but the wave's two).
-template <class T>
-struct qr_no_pass {
-    void write(const qr_pass_word<T>&) {}
-    qr_pass_word<T> read() {
-        qr_pass_word<T> w;
-        w.pw[0] = T(0);
-        w.pw[1] = T(0);
-        return w;
-    }
-};
-// A sink for the words a collector writes that takes none (qr_step: every step but lin_level's
-// wave's set 0, whose collector streams them to its commit process).
-template <class T>
-struct qr_no_commit {
-    void write(const T&) {}
-};
 
 // The words qr_collect writes into cond (nc) and then update (nu) for a step of `rows` rows, f
 // frontal and s separator columns (none outside the configuration: qr_step_io computes nothing).
@@ -1282,14 +1299,6 @@ void qr_collected_words(int rows, int f, int s, int* nc, int* nu) {
     *nc = ok ? (k < f ? k : f) * cols : 0;
     *nu = ok ? nf * (s + 1) : 0;
 }
-template <class PASS>
-struct qr_passes {
-    enum { value = 1 };
-};
-template <class T>
-struct qr_passes<qr_no_pass<T> > {
-    enum { value = 0 };
-};
 
 // The root step in a wavefront (fgc_eliminate.h's qr_eliminate_all with CFG::WAVE): before its
 // region j the root's unit set reads the fed child's passed rows whose entry[i] <= j (the
@@ -1325,8 +1334,8 @@ void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][
 // root's set: nfed rows of `words` words read before the regions that need them); qr_no_pass
 // for neither. A unit set calls it from one site, so its units are one RTL copy whatever it runs.
 // coff: the conditional's first word in cond (lin_level's wave: the root's after step c1's).
-// COMMIT (qr_collect's commitq, where `pass`): lin_level's wave's set 0 streams its step's
-// words to its commit process as its collector writes them.
+// COMMIT (qr_collect's commitq, where `pass`): lin_level's wave's sets stream their steps'
+// words to its commit process as their collectors write them.
 template <class CFG, class PASS, class FEED, class COMMIT>
 void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS], int rows,
                 int f, int s, typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],

@@ -552,7 +552,7 @@ class WindowUpdateModel:
                 hide = self._wave_hidden(zero, unit)
                 region = lin_wave_region(t, kernel_timing(self.plan.ops), jac, sets,
                                          self._wave_loops(procs), counts, wave_commit_loops(
-                                             _tables(t), self._wave[0], kernel_timing(self.les)))
+                                             _tables(t), self._wave, kernel_timing(self.les)))
                 hidden += hide
             self._beside[key] = (region - self.solve_linearize(counts is not None), hidden)
         added, level = self._beside[key]
@@ -583,9 +583,10 @@ class WindowUpdateModel:
     def _wave_hidden(self, zero: frozenset, unit: frozenset) -> int:
         """What the solve no longer runs once the sets reflected the root inside lin_level:
         the root's level (its region on this update's non-zero rows), its stack (the plan's
-        loops, moved into set 1's process), step c0's commit (set 0's collector writes COND and
-        NF as it writes its buffers: fgc_qr.h's COMMIT, no loop of its own) and step c1's
-        passed rows into NF."""
+        loops, moved into set 1's process) and the three steps' commits: step c0's (set 0's
+        collector writes COND and NF as it writes its buffers: fgc_qr.h's COMMIT, no loop of its
+        own), step c1's and the root's (set 1's collector streams their conditionals to the same
+        process: qr_commit_cond; no one reads c1's passed rows from NF)."""
         t = self.layout.template
         c0, c1, root = self._wave
         rows = self.plan.options.qr_rows
@@ -593,12 +594,10 @@ class WindowUpdateModel:
         top = f"qr_stack_level{len(t.schedule.levels) - 1}"
         stack = next(p for ph in self.plan.phases if ph.name == top
                      for p in ph.processes if p.name == f"stack{root}")
-        commits = {p.name: p for ph in self.plan.phases if ph.name == "qr_commit_level0"
+        commits = {p.name: p for ph in self.plan.phases if ph.name.startswith("qr_commit_level")
                    for p in ph.processes}
-        commit = commits[f"commit{c0}"].cycles
-        # (step c1's passed rows into NF: no one reads them, the root took them from UPDBUF1)
-        nf = sum(lp.cycles for lp in commits[f"commit{c1}"].loops if lp.name == "nf")
-        return phase_cycles(last) + stack.cycles + commit + nf
+        commit = sum(commits[f"commit{i}"].cycles for i in (c0, c1, root))
+        return phase_cycles(last) + stack.cycles + commit
 
     def _stream_phases(self, kt: dict, lt: dict, mv_ii: int) -> tuple[Phase, ...]:
         """The stream section's loops (accel.cpp.jinja's stream top), one phase per part an
