@@ -797,8 +797,10 @@ bool qr_eliminate_all(typename CFG::T mu, int leaf = -1, bool live = false) {
     } else {
         FGC_EVENT("solve");
         FGC_PHASE("qr_stack");
-        root_mu = fgc_sqrt(mu);
-        FGC_CYCLES("stack", 0, "root_mu", 1, CFG::ROOT_II, CFG::ROOT_DEPTH);
+        if (CFG::LM) {  // the damping rows' sqrt(mu) (Gauss-Newton: qr_stack_rows writes none)
+            root_mu = fgc_sqrt(mu);
+            FGC_CYCLES("stack", 0, "root_mu", 1, CFG::ROOT_II, CFG::ROOT_DEPTH);
+        }
     }
     bool ok = true;
     for (int l = 0; l < (one ? 1 : N_LEVELS); ++l) {

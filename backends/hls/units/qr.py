@@ -683,9 +683,10 @@ def _levels(ctx, sets, by_index, damping) -> None:
         if wave is not None and li == len(sched.levels) - 1:
             break  # the root ran in the level before's region (wave_loops)
         # eliminate_all: each step stacked into its unit set's banks (√μ once per solve
-        # first), the level's steps on the unit sets side by side, each result committed
+        # first, when damping: Gauss-Newton stacks no damping row), the level's steps on the
+        # unit sets side by side, each result committed
         stack = [Process("root_mu", "qr_stack", (kernel_loop("root_mu", 1, "root", timing),))] \
-            if li == 0 else []
+            if li == 0 and damping else []
         # (level 0's first steps: their factors' rows already in the banks, rows_in_banks)
         stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
             tables, i, opts.units, max_w, damping, timing, opts.qr_unit != "stream",
