@@ -493,6 +493,14 @@ class WindowUpdateModel:
         return [(s, waits[u], kernel_loop("fill", fills[u], "move", move))
                 for u, s in steps]
 
+    def _decide_only(self) -> bool:
+        """Whether the plan's lm_control is the step test's scalars and the decision alone
+        (units/lm_control.py's ``retire_test`` / ``in_retire``: the counted ``step_test``
+        event's loops), so it runs once per tested step."""
+        loops = {lp.name for ph in self.plan.phases if ph.name == "lm_control"
+                 for p in ph.processes for lp in p.loops}
+        return bool(loops) and loops <= {"step_scalars", "decision"}
+
     def solve_counts(self, live: bool) -> dict[int, int] | None:
         """The instances per block type the one-step solve's linearisation evaluates: all (None)
         but once keyframe 0 has left (``live``), then without :attr:`_skip` (lin_level's part 3)."""
@@ -1340,6 +1348,12 @@ class WindowUpdateModel:
             if trigger is None:
                 continue
             times = ev.get(trigger, 0)
+            if g == "lm_control" and "call" in ev and self._decide_only():
+                # the step test's scalars and the decision run where the step is tested
+                # (fgc_lm_units.h's lm_step_sums' step_test event): not after a solve that
+                # stopped on its gradient (fgc_lm.h's FGC_LM_GRADIENT_IN_SOLVE). Events the C
+                # simulation counted (they hold its call; one that did not happen is absent)
+                times = ev.get("step_test", 0)
             each = (self.qr_cycles(zero, True, unit=unit) if g == "qr"
                     else self.solve_linearize(keyframe >= lay.size) if g == "factor_jacobian"
                     else self.group[g])
