@@ -638,6 +638,7 @@ def _wave_context(program: Program, plan) -> dict | None:
     from fgc_backends.hls.plan.loops import _tables
     from fgc_backends.hls.units.qr import (
         _own_rows,
+        commit_pair_words,
         lin_wave,
         pass_pack,
         pass_words,
@@ -681,7 +682,8 @@ def _wave_context(program: Program, plan) -> dict | None:
             # (set 1's own passed rows packed alike by its collector, read after its step)
             "nf1": tables["STEP_NF_ROWS"][c1], "pack1": pass_pack(tables, c1, root, units),
             "pass_words1": pass_words(tables, c1, root, units),
-            "own_depth": tables["STEP_NF_ROWS"][c1] * pass_words(tables, c1, root, units)}
+            "own_depth": tables["STEP_NF_ROWS"][c1] * pass_words(tables, c1, root, units),
+            "commit1": commit_pair_words(tables, c1, root) if lin else None}
 
 
 def _beside_context(program: Program, plan, blocks) -> dict | None:

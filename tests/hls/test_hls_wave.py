@@ -84,15 +84,18 @@ def test_the_wave_region_has_one_producer_and_one_consumer(wave7):
     regions = {r.function: r for r in read_network(text)}
     lin = regions["lin_level"]
     assert lin.processes == ("evaluate_all", "reduce_all", "qr_set0", "qr_set1", "qr_commit_wave")
-    assert {"qr_pass", "bank_root", "qr_commit"} <= {s for s, _ in lin.streams}
+    assert {"qr_pass", "bank_root", "qr_commit", "qr_commit1"} <= {s for s, _ in lin.streams}
     assert "qr_level" not in regions  # (the wave as its own region: designs without lin_level)
     model = WindowUpdateModel(stream.layout, HlsConfig(scalar="double", design=WAVE))
     ch = {c.name: c for c in model.plan.channels
-          if c.name in ("qr_pass", "bank_root", "qr_commit")}
+          if c.name in ("qr_pass", "bank_root", "qr_commit", "qr_commit1")}
     assert (ch["qr_pass"].producer, ch["qr_pass"].consumer) == ("qr_set0", "qr_set1")
     assert (ch["bank_root"].producer, ch["bank_root"].consumer) == ("datapaths", "qr_set1")
-    # step 0's commit: its collector's words to the process that writes COND and NF
+    # the three steps' commits: each set's collector's words to the process that writes COND
+    # and NF (set 0's step; set 1's step and the root, every pair held: set 1 never waits)
     assert (ch["qr_commit"].producer, ch["qr_commit"].consumer) == ("qr_set0", "qr_commit_wave")
+    assert (ch["qr_commit1"].producer, ch["qr_commit1"].consumer) == ("qr_set1",
+                                                                       "qr_commit_wave")
     t = stream.layout.template
     c0, _ = t.schedule.levels[-2]
     sc = sum(t.schedule.steps[c0].separator_dims)
@@ -120,7 +123,19 @@ def test_the_wave_region_has_one_producer_and_one_consumer(wave7):
     fullest = max(sum(1 for c in cols if c % units == u) for u in range(units))
     assert words == -(-fullest // 2)
     assert ch["qr_pass"].depth == t.schedule.steps[c0].new_factor_rows * words
-    assert ch["qr_pass"].width == 2 * units * (ch["qr_commit"].width + 8)
+    # commit streams: a pair of one row's words a stream word
+    assert ch["qr_commit"].width == ch["qr_commit1"].width
+    assert ch["qr_pass"].width == 2 * units * (ch["qr_commit"].width // 2 + 8)
+    _, c1 = t.schedule.levels[-2]
+    pairs = sum(t.schedule.steps[s].frontal_dim * ((t.schedule.steps[s].frontal_dim
+                                                     + sum(t.schedule.steps[s].separator_dims)
+                                                     + 2) // 2) for s in (c1, root))
+    assert ch["qr_commit1"].depth == pairs
+    assert f"variable=qr_commit1 depth={pairs}" in text
+    # the solve commits none of the wave's three steps after the region
+    body = text[text.index("static void commit(int u, int s)"):]
+    body = body[:body.index("\n    }\n")]
+    assert "WAVE_DONE && (s == WAVE_FED || s == WAVE_SET1)) return;" in body
     assert f"variable=qr_pass depth={ch['qr_pass'].depth}" in text
     assert f"variable=bank_root depth={ch['bank_root'].depth}" in text
 

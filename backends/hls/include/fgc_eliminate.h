@@ -531,14 +531,9 @@ void cholesky_eliminate_beside(typename CFG::T mu, bool relin,
 // phase (the wave region's unit set 1, which stacks the root inside the region); `own` >= 0:
 // neither that child's (lin_level's wave: set 1 moves its own step's rows from its UPDBUF).
 template <class CFG>
-void qr_stack_rows(int s, typename CFG::T root_mu,
-                   typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
-                   unsigned skip, int m, bool in_place = false, int dirty = 0, int fed = -1,
-                   bool phase = true, int own = -1) {
+void qr_stack_zero(typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                   int rows) {  // qr_stack_rows' first rows zeroed, a word of all banks a cycle
     typedef typename CFG::T T;
-    if (phase) FGC_PHASE("qr_stack");
-    const int w = STEP_W[s], f = STEP_F[s];
-    const int rows = CFG::BANKS_ZERO ? dirty : (dirty > m ? dirty : m);
     const int zero = rows * CFG::LOCAL_COLS;
     for (int e = 0, i = 0, c = 0; e < zero; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_BANKS
@@ -555,6 +550,27 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
         }
     }
     if (zero > 0) FGC_CYCLES("stack", 0, "zero", zero, CFG::FILL_II, CFG::FILL_DEPTH);
+}
+template <class CFG>
+void qr_stack_damping(typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                      int row, int f, typename CFG::T root_mu) {  // its damping rows from `row`
+    if (CFG::LM) {  // Gauss-Newton: no damping rows
+        for (int j = 0; j < f; ++j) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
+#pragma HLS PIPELINE II=1
+            bank[j % CFG::N_UNITS][row + j][j / CFG::N_UNITS] = root_mu;
+        }
+        FGC_CYCLES("stack", 0, "damping", f, CFG::FILL_II, CFG::FILL_DEPTH);
+    }
+}
+template <class CFG>
+void qr_stack_rows(int s, typename CFG::T root_mu,
+                   typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                   unsigned skip, int m, bool in_place = false, int dirty = 0, int fed = -1,
+                   bool phase = true, int own = -1) {
+    if (phase) FGC_PHASE("qr_stack");
+    const int w = STEP_W[s], f = STEP_F[s];
+    qr_stack_zero<CFG>(bank, CFG::BANKS_ZERO ? dirty : (dirty > m ? dirty : m));
     int row = 0;
     for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
 #pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
@@ -621,34 +637,49 @@ void qr_stack_rows(int s, typename CFG::T root_mu,
                        CFG::MOVE_DEPTH);
         row = row + STEP_NF_ROWS[c];
     }
-    if (CFG::LM) {  // Gauss-Newton: no damping rows
-        for (int j = 0; j < f; ++j) {
-#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_F
-#pragma HLS PIPELINE II=1
-            bank[j % CFG::N_UNITS][row + j][j / CFG::N_UNITS] = root_mu;
-        }
-        FGC_CYCLES("stack", 0, "damping", f, CFG::FILL_II, CFG::FILL_DEPTH);
+    qr_stack_damping<CFG>(bank, row, f, root_mu);
+}
+
+// lin_level's root step in a wavefront, its stack on unit set 1 (the kernel's qr_set1): what
+// qr_stack_rows(s, root_mu, bank, 0, m, true, 0, c0, false, c1) does - its own rows in place
+// (the datapaths sent them), both children's taken by the set (c0's by stream, c1's from its
+// buffer): the zeroing, the rows past them, the damping rows - reading neither AB nor NF (the
+// commit process of the same region writes NF: one writer, no reader).
+template <class CFG>
+void qr_stack_wave_root(int s, typename CFG::T root_mu,
+                        typename CFG::T bank[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COLS],
+                        int m) {
+    qr_stack_zero<CFG>(bank, CFG::BANKS_ZERO ? 0 : m);
+    int row = 0;
+    for (int e = STEP_FACTOR_BEGIN[s]; e < STEP_FACTOR_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_STEP_FACTORS
+        const int fac = STEP_FACTORS[e];
+        const int d = FACTOR_COLMAP_BEGIN[fac + 1] - FACTOR_COLMAP_BEGIN[fac];
+        row = row + (FACTOR_A_OFF[fac + 1] - FACTOR_A_OFF[fac]) / (d + 1);
     }
+    for (int e = STEP_CHILD_BEGIN[s]; e < STEP_CHILD_BEGIN[s + 1]; ++e) {
+#pragma HLS LOOP_TRIPCOUNT max=CFG::MAX_CHILDREN
+        row = row + STEP_NF_ROWS[STEP_CHILDREN[e]];
+    }
+    qr_stack_damping<CFG>(bank, row, STEP_F[s], root_mu);
 }
 
 // A unit set's result for step s into COND and NF, PORTS words a cycle (`phase` false: counted
-// under the caller's phase, as qr_stack_rows; coff: its conditional's first word in cond, the
-// root's in lin_level's wave; nf false: the conditional alone, lin_level's wave's step c1 whose
-// passed rows its own set stacked into the root from its buffer, which no one reads from NF).
+// under the caller's phase, as qr_stack_rows; lin_level's wave commits its three steps as its
+// sets' collectors write them: qr_commit_pairs).
 template <class CFG>
 void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
-               const typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool phase = true,
-               int coff = 0, bool nf = true) {
+               const typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], bool phase = true) {
     if (phase) FGC_PHASE("qr_commit");
     const int w = STEP_W[s], f = STEP_F[s], sw = w - f;
     const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
-    const int nc = f * (w + 1), nu = nf ? STEP_NF_ROWS[s] * (sw + 1) : 0;
+    const int nc = f * (w + 1), nu = STEP_NF_ROWS[s] * (sw + 1);
     for (int i = 0; i < nc; i += PORTS) {  // PORTS words a cycle
 #pragma HLS LOOP_TRIPCOUNT max=CFG::TRIP_COND
 #pragma HLS PIPELINE II=1
         for (int h = 0; h < PORTS; ++h) {
             if (i + h < nc) {
-                const typename CFG::T v = cond[coff + i + h];
+                const typename CFG::T v = cond[i + h];
                 COND[c0 + i + h] = v;
 #ifdef FGC_SPEC_MARGINAL  // the leaving keyframe's conditional twice (the stream's KEEP_COND)
                 if (s == SPEC_STEP) KEEP_COND[i + h] = v;
@@ -671,30 +702,62 @@ void qr_commit(int s, const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
 }
 
 // A unit set's result for step s into COND and NF as its collector writes it (lin_level's root
-// step in a wavefront: set 0's step, fgc_qr.h's COMMIT stream), a word a cycle: nc words of the
-// conditional, then nu of the new factor (fgc_qr.h's qr_collected_words), in qr_commit's order
-// and places. One process of the region beside the set: it ends as the set's collector writes
-// its last passed row, before the set's last region ends.
+// step in a wavefront: fgc_qr.h's COMMIT stream, a pair of one row's words a stream word), two
+// words a cycle: rc rows of the conditional (w + 1 words each), then rn rows of the new factor
+// (s + 1 each; set 1's steps none: c1's passed rows went into the root from its buffer), in
+// qr_commit's places (the root's conditional into back-substitution's lane 0 too, and the
+// leaving keyframe's into KEEP_COND, as qr_commit writes them). The process of the region beside
+// the sets (the kernel's qr_commit_wave) calls it for set 0's step, then set 1's two, each
+// stream holding what its reader has not taken yet (set 0's: depth 2, the commit keeps up;
+// set 1's: every pair, it is read after set 0's). `wait` (csim counting only, fgc_cycles.h's
+// FGC_WAIT): the unit set whose step's span this loop ends no earlier than (the set's last pair
+// comes before its last region and pivot check end: an upper bound; units/qr.py's
+// wave_commit_end), -1 none.
 template <class CFG>
-void qr_commit_stream(int s, int nc, int nu, hls::stream<typename CFG::T>& q) {
-    enum { TRIP_C = 2 * CFG::TRIP_COND, TRIP_N = 2 * CFG::TRIP_UPDATE };  // (a word a cycle)
+void qr_commit_pairs(int s, int rc, int rn,
+                     hls::stream<fgc_units::qr_commit_pair<typename CFG::T> >& q, int wait) {
+    typedef typename CFG::T T;
+    enum { TRIP = CFG::TRIP_COND + CFG::TRIP_UPDATE };  // (two words a cycle)
+    const int w = STEP_W[s], f = STEP_F[s], cols = w + 1, sc = w - f + 1;
+    const int pc = rc * ((cols + 1) / 2), pn = rn * ((sc + 1) / 2);
     const int c0 = STEP_COND_OFF[s], n0 = STEP_NF_OFF[s];
-    for (int i = 0; i < nc; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=TRIP_C
+    int r = 0, p = 0;
+    for (int k = 0; k < pc + pn; ++k) {
+#pragma HLS LOOP_TRIPCOUNT max=TRIP
 #pragma HLS PIPELINE II=1
-        const typename CFG::T v = q.read();
-        COND[c0 + i] = v;
+        const bool nf = k >= pc;
+        const int len = nf ? sc : cols;
+        const int i = r * len + 2 * p;  // the pair's first word in the conditional / new factor
+        const bool two = 2 * p + 1 < len;
+        const fgc_units::qr_commit_pair<T> x = q.read();
+        if (nf) {
+            NF[n0 + i] = x.pw[0];
+            if (two) NF[n0 + i + 1] = x.pw[1];
+        } else {
+            COND[c0 + i] = x.pw[0];
+            if (two) COND[c0 + i + 1] = x.pw[1];
 #ifdef FGC_SPEC_MARGINAL  // the leaving keyframe's conditional twice (the stream's KEEP_COND)
-        if (s == SPEC_STEP) KEEP_COND[i] = v;
+            if (s == SPEC_STEP) {
+                KEEP_COND[i] = x.pw[0];
+                if (two) KEEP_COND[i + 1] = x.pw[1];
+            }
 #endif
+#ifdef FGC_BS_ROOT_COMMIT  // the root's into back-substitution's lane 0 (its load, fgc_backsub.h)
+            if (s == BS_ROOT) {
+                BS_COND0[i] = x.pw[0];
+                if (two) BS_COND0[i + 1] = x.pw[1];
+            }
+#endif
+        }
+        if (2 * p + 2 >= len) {  // the row's last pair
+            p = 0;
+            r = k == pc - 1 ? 0 : r + 1;
+        } else {
+            ++p;
+        }
     }
-    FGC_CYCLES("commit", 0, "cond_stream", nc, CFG::MOVE_II, CFG::MOVE_DEPTH);
-    for (int i = 0; i < nu; ++i) {
-#pragma HLS LOOP_TRIPCOUNT max=TRIP_N
-#pragma HLS PIPELINE II=1
-        NF[n0 + i] = q.read();
-    }
-    FGC_CYCLES("commit", 0, "nf_stream", nu, CFG::MOVE_II, CFG::MOVE_DEPTH);
+    if (wait >= 0) FGC_WAIT("commit", 0, "qr_set", wait, "step");
+    FGC_CYCLES("commit", 0, "pairs", pc + pn, CFG::MOVE_II, CFG::MOVE_DEPTH);
 }
 
 // Whether the kernel's SETS runs the root step in a wavefront (HlsConfig root_wave: it declares
@@ -734,8 +797,10 @@ bool qr_eliminate_all(typename CFG::T mu, int leaf = -1, bool live = false) {
     } else {
         FGC_EVENT("solve");
         FGC_PHASE("qr_stack");
-        root_mu = fgc_sqrt(mu);
-        FGC_CYCLES("stack", 0, "root_mu", 1, CFG::ROOT_II, CFG::ROOT_DEPTH);
+        if (CFG::LM) {  // the damping rows' sqrt(mu) (Gauss-Newton: qr_stack_rows writes none)
+            root_mu = fgc_sqrt(mu);
+            FGC_CYCLES("stack", 0, "root_mu", 1, CFG::ROOT_II, CFG::ROOT_DEPTH);
+        }
     }
     bool ok = true;
     for (int l = 0; l < (one ? 1 : N_LEVELS); ++l) {

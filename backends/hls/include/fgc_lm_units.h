@@ -286,6 +286,7 @@ bool lm_step_sums(bool solved, typename CFG::T mu, typename CFG::T dd, typename 
     typedef typename CFG::T T;
     out[0] = dd;
     out[1] = T(0.5) * (dg + mu * dd);
+    FGC_EVENT("step_test");  // (a solve whose step is tested: not one stopped on its gradient)
     FGC_PHASE("lm_control");
     FGC_CYCLES("decide", 0, "step_scalars", 1, 1, CFG::MUL_LAT + CFG::ADD_LAT);  // + mu |delta|^2
     FGC_CYCLES("decide", 0, "decision", 1, CFG::DECISION_II, CFG::DECISION_DEPTH);

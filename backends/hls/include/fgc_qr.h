@@ -136,6 +136,9 @@ struct qr_word {
 enum { QR_PASS_NONE = 255 };
 template <class T, int S>
 struct qr_pass_word { T pw[S]; unsigned char at[S]; };
+// lin_level's commit streams (qr_collect's COMMIT): two words of one row a stream word
+template <class T>
+struct qr_commit_pair { T pw[2]; };
 
 // Two words of a Householder vector a cycle (FGC_QR_TWO_ROWS: the Update units take two rows a
 // cycle): from the broadcast the header {0, 0, n, ne} (n active rows, ne of the words below the
@@ -1208,6 +1211,34 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
     hout[1].idx = col;
 }
 
+// A passed-row sink and source that pass nothing (qr_step: every step but the wave's two).
+template <class T, int S>
+struct qr_no_pass {
+    void write(const qr_pass_word<T, S>&) {}
+    qr_pass_word<T, S> read() {
+        qr_pass_word<T, S> w;
+        for (int v = 0; v < S; ++v) {
+            w.pw[v] = T(0);
+            w.at[v] = QR_PASS_NONE;
+        }
+        return w;
+    }
+};
+// A sink for the words a collector writes that takes none (qr_step: every step but lin_level's
+// wave's two sets', whose collectors stream them to its commit process).
+template <class T>
+struct qr_no_commit {
+    void write(const qr_commit_pair<T>&) {}
+};
+template <class PASS>
+struct qr_passes {
+    enum { value = 1 };
+};
+template <class T, int S>
+struct qr_passes<qr_no_pass<T, S> > {
+    enum { value = 0 };
+};
+
 // The collector: row j of R, final after reflection j (R_jj from qr_finish, the next pivot
 // column's entry from the Evaluate, the rest from the Update units in column order), into cond
 // (j < f) or update (f <= j < f + nf), and its largest magnitude into the running scale (a
@@ -1217,18 +1248,22 @@ void qr_evaluate(int j, int rows, int k, hls::stream<typename CFG::T> colq[CFG::
 // where `pass`: word q into the slot pack[q] names (its bank's, with its local column in the
 // root's banks), the stream word out after the last word it holds (pack[q]'s bit 16), so that
 // the root's set writes a stream word into its banks in one cycle (qr_feed_row). COMMIT:
-// qr_no_commit, or (lin_level's wave, set 0) a stream (hls::stream<T>) that takes, where
-// `pass`, every word written into cond and then update, in that order (the conditional's f
-// rows of w + 1 words, then the new factor's nf rows of s + 1: qr_commit's order), which
-// lin_level's commit process writes into COND and NF as they come (qr_commit_stream), so that
-// no commit loop follows the step. coff: the conditional's first word in cond (the wave's
-// root: after its set's own step's).
+// qr_no_commit, or (lin_level's wave) a stream (hls::stream<qr_commit_pair<T> >) that takes, where
+// `pass`, the words written into cond and then, where `commit_nf` (set 0: its passed rows are
+// the other set's and NF's), into update, in that order, a pair of one row's words a stream
+// word (the conditional's f rows of w + 1 words, then the new factor's nf rows of s + 1:
+// qr_commit's order and places), which lin_level's commit process writes into COND and NF as
+// they come (fgc_eliminate.h's qr_commit_pairs), so that no commit loop follows the step (set
+// 1's step c1 and the root: their conditionals; c1's passed rows went into the root by its own
+// stream). coff: the conditional's first word in cond (the wave's root: after its set's own
+// step's).
 template <class CFG, class PASS, class COMMIT>
 void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::T>& rq,
                 hls::stream<typename CFG::T>& exq, hls::stream<typename CFG::T> rowq[CFG::N_UNITS],
                 typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS],
                 typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS], typename CFG::T* scale,
-                PASS& passq, bool pass, COMMIT& commitq, int coff, const int pack[CFG::MAX_COLS]) {
+                PASS& passq, bool pass, COMMIT& commitq, int coff, const int pack[CFG::MAX_COLS],
+                bool commit_nf) {
     typedef typename CFG::T T;
     enum { S = 2 * CFG::N_UNITS };
     const int w = f + s, cols = w + 1;
@@ -1244,6 +1279,7 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
         word.pw[v] = T(0);
         word.at[v] = QR_PASS_NONE;
     }
+    T held = T(0);  // a row's even word, out with the odd one after it (a commit pair)
     // from the row's first column out (0 in cond, f in update: zeros left of the diagonal, as
     // the parent's assembly copies whole rows) to the right-hand side:
     // trip w + 1 - first, II 1, depth 2 (read, compare)
@@ -1264,12 +1300,24 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
         }
         if (j < f) {
             cond[coff + j * cols + c] = x;
-            if (pass) commitq.write(x);
+            if (pass && ((c & 1) == 1 || c == cols - 1)) {  // a pair out (its odd word, or the last)
+                qr_commit_pair<T> two;
+                two.pw[0] = (c & 1) == 1 ? held : x;
+                two.pw[1] = (c & 1) == 1 ? x : T(0);
+                commitq.write(two);
+            }
+            held = x;
         } else if (j - f < nf) {
             const int q = c - f;
             update[(j - f) * (s + 1) + q] = x;
             if (pass) {
-                commitq.write(x);
+                if (commit_nf && ((q & 1) == 1 || c == cols - 1)) {  // a pair out (its odd word, or the last)
+                    qr_commit_pair<T> two;
+                    two.pw[0] = (q & 1) == 1 ? held : x;
+                    two.pw[1] = (q & 1) == 1 ? x : T(0);
+                    commitq.write(two);
+                }
+                held = x;
                 // word q into its slot (pack[q]: slot | local column << 8 | out << 16), the
                 // stream word out after its last word (the emitter's table: units/qr.py's
                 // pass_pack)
@@ -1309,7 +1357,8 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
                    typename CFG::T update[CFG::MAX_COLS * CFG::MAX_COLS],
                    typename CFG::T* scale, typename CFG::T evec[CFG::MAX_ROWS], PASS& passq,
                    bool pass, COMMIT& commitq, int coff, const int pack[CFG::MAX_COLS],
-                   const qr_rowmask<CFG>* mask0, qr_rowmask<CFG> msk[CFG::MAX_ROWS]) {
+                   bool commit_nf, const qr_rowmask<CFG>* mask0,
+                   qr_rowmask<CFG> msk[CFG::MAX_ROWS]) {
 #pragma HLS DATAFLOW
     enum { V_DEPTH = 2 * CFG::ADD_LAT };  // plan.py's qr<s>_v channel (pragma constants: enums)
     hls::stream<qr_vq_word<typename CFG::T> > vq[CFG::N_UNITS];
@@ -1336,7 +1385,7 @@ void qr_reflection(int j, int rows, int f, int s, int cols, int k,
     qr_update_units<CFG, 0>::run(j, rows, cols, k, vq, tq, work, colq, rowq);
     qr_evaluate<CFG>(j, rows, k, colq, evq, etq, exq, vout, hout, evec, mask0, msk);
     qr_collect<CFG, PASS, COMMIT>(j, rows, f, s, k, rq, exq, rowq, cond, update, scale, passq,
-                                  pass, commitq, coff, pack);
+                                  pass, commitq, coff, pack, commit_nf);
     FGC_DRAINED(vq, CFG::N_UNITS);  // csim only (fgc_cycles.h)
     FGC_DRAINED(tq, CFG::N_UNITS);
     FGC_DRAINED(&colq[0][0], 2 * CFG::N_UNITS);
@@ -1367,25 +1416,6 @@ bool qr_pivot_check(const typename CFG::T cond[CFG::MAX_F * CFG::MAX_COLS], int 
     return bad;
 }
 
-// A passed-row sink and source that pass nothing (qr_step: every step but the wave's two).
-template <class T, int S>
-struct qr_no_pass {
-    void write(const qr_pass_word<T, S>&) {}
-    qr_pass_word<T, S> read() {
-        qr_pass_word<T, S> w;
-        for (int v = 0; v < S; ++v) {
-            w.pw[v] = T(0);
-            w.at[v] = QR_PASS_NONE;
-        }
-        return w;
-    }
-};
-// A sink for the words a collector writes that takes none (qr_step: every step but lin_level's
-// wave's set 0, whose collector streams them to its commit process).
-template <class T>
-struct qr_no_commit {
-    void write(const T&) {}
-};
 
 // The words qr_collect writes into cond (nc) and then update (nu) for a step of `rows` rows, f
 // frontal and s separator columns (none outside the configuration: qr_step_io computes nothing).
@@ -1400,14 +1430,6 @@ void qr_collected_words(int rows, int f, int s, int* nc, int* nu) {
     *nc = ok ? (k < f ? k : f) * cols : 0;
     *nu = ok ? nf * (s + 1) : 0;
 }
-template <class PASS>
-struct qr_passes {
-    enum { value = 1 };
-};
-template <class T, int S>
-struct qr_passes<qr_no_pass<T, S> > {
-    enum { value = 0 };
-};
 
 // The root step in a wavefront (fgc_eliminate.h's qr_eliminate_all with CFG::WAVE): before its
 // region j the root's unit set reads the fed child's passed rows whose entry[i] <= j (the
@@ -1444,9 +1466,10 @@ void qr_feed_row(FEED& feedq, typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][
 // qr_no_pass for neither. FGC_WAVE_READY after the region that finished each passed row. A unit
 // set calls it from one site, so its units are one RTL copy whatever it runs.
 // coff: the conditional's first word in cond (lin_level's wave: the root's after step c1's).
-// COMMIT (qr_collect's commitq, where `pass`): lin_level's wave's set 0 streams its step's
-// words to its commit process as its collector writes them. ready false: no FGC_WAVE_READY
-// marks (lin_level's wave's set 1, whose collector packs its own step's passed rows for itself).
+// COMMIT (qr_collect's commitq, where `pass`): lin_level's wave's sets stream their steps'
+// words to its commit process as their collectors write them. ready false: no FGC_WAVE_READY
+// marks and the passed rows not into COMMIT (lin_level's wave's set 1, whose collector packs
+// its own step's passed rows for itself: qr_collect's commit_nf is `ready`).
 // mask0 (qr_step_structural; 0: none): the step's rows' patterns, the Evaluate keeping rows by
 // structure (qr_evaluate).
 template <class CFG, class PASS, class FEED, class COMMIT>
@@ -1498,11 +1521,11 @@ void qr_step_io(typename CFG::T work[CFG::N_UNITS][CFG::MAX_ROWS][CFG::LOCAL_COL
         if (((j + 1) & 1) == 0) {
             qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, va, ha, vb, hb, work, cond,
                                              update, &scale, evec, passq, pass, commitq, coff,
-                                             pack, mask0, msk);
+                                             pack, ready, mask0, msk);
         } else {
             qr_reflection<CFG, PASS, COMMIT>(j, rows, f, s, cols, k, vb, hb, va, ha, work, cond,
                                              update, &scale, evec, passq, pass, commitq, coff,
-                                             pack, mask0, msk);
+                                             pack, ready, mask0, msk);
         }
         FGC_SEQUENTIAL();
         if (qr_passes<PASS>::value && pass && ready && j >= f && j - f < nf)

@@ -493,6 +493,14 @@ class WindowUpdateModel:
         return [(s, waits[u], kernel_loop("fill", fills[u], "move", move))
                 for u, s in steps]
 
+    def _decide_only(self) -> bool:
+        """Whether the plan's lm_control is the step test's scalars and the decision alone
+        (units/lm_control.py's ``retire_test`` / ``in_retire``: the counted ``step_test``
+        event's loops), so it runs once per tested step."""
+        loops = {lp.name for ph in self.plan.phases if ph.name == "lm_control"
+                 for p in ph.processes for lp in p.loops}
+        return bool(loops) and loops <= {"step_scalars", "decision"}
+
     def solve_counts(self, live: bool) -> dict[int, int] | None:
         """The instances per block type the one-step solve's linearisation evaluates: all (None)
         but once keyframe 0 has left (``live``), then without :attr:`_skip` (lin_level's part 3)."""
@@ -552,7 +560,7 @@ class WindowUpdateModel:
                 hide = self._wave_hidden(zero, unit)
                 region = lin_wave_region(t, kernel_timing(self.plan.ops), jac, sets,
                                          self._wave_loops(procs), counts, wave_commit_loops(
-                                             _tables(t), self._wave[0], kernel_timing(self.les)))
+                                             _tables(t), self._wave, kernel_timing(self.les)))
                 hidden += hide
             self._beside[key] = (region - self.solve_linearize(counts is not None), hidden)
         added, level = self._beside[key]
@@ -583,9 +591,10 @@ class WindowUpdateModel:
     def _wave_hidden(self, zero: frozenset, unit: frozenset) -> int:
         """What the solve no longer runs once the sets reflected the root inside lin_level:
         the root's level (its region on this update's non-zero rows), its stack (the plan's
-        loops, moved into set 1's process), step c0's commit (set 0's collector writes COND and
-        NF as it writes its buffers: fgc_qr.h's COMMIT, no loop of its own) and step c1's
-        passed rows into NF."""
+        loops, moved into set 1's process) and the three steps' commits: step c0's (set 0's
+        collector writes COND and NF as it writes its buffers: fgc_qr.h's COMMIT, no loop of its
+        own), step c1's and the root's (set 1's collector streams their conditionals to the same
+        process: qr_commit_cond; no one reads c1's passed rows from NF)."""
         t = self.layout.template
         c0, c1, root = self._wave
         rows = self.plan.options.qr_rows
@@ -593,12 +602,10 @@ class WindowUpdateModel:
         top = f"qr_stack_level{len(t.schedule.levels) - 1}"
         stack = next(p for ph in self.plan.phases if ph.name == top
                      for p in ph.processes if p.name == f"stack{root}")
-        commits = {p.name: p for ph in self.plan.phases if ph.name == "qr_commit_level0"
+        commits = {p.name: p for ph in self.plan.phases if ph.name.startswith("qr_commit_level")
                    for p in ph.processes}
-        commit = commits[f"commit{c0}"].cycles
-        # (step c1's passed rows into NF: no one reads them, the root took them from UPDBUF1)
-        nf = sum(lp.cycles for lp in commits[f"commit{c1}"].loops if lp.name == "nf")
-        return phase_cycles(last) + stack.cycles + commit + nf
+        commit = sum(commits[f"commit{i}"].cycles for i in (c0, c1, root))
+        return phase_cycles(last) + stack.cycles + commit
 
     def _stream_phases(self, kt: dict, lt: dict, mv_ii: int) -> tuple[Phase, ...]:
         """The stream section's loops (accel.cpp.jinja's stream top), one phase per part an
@@ -1341,6 +1348,12 @@ class WindowUpdateModel:
             if trigger is None:
                 continue
             times = ev.get(trigger, 0)
+            if g == "lm_control" and "call" in ev and self._decide_only():
+                # the step test's scalars and the decision run where the step is tested
+                # (fgc_lm_units.h's lm_step_sums' step_test event): not after a solve that
+                # stopped on its gradient (fgc_lm.h's FGC_LM_GRADIENT_IN_SOLVE). Events the C
+                # simulation counted (they hold its call; one that did not happen is absent)
+                times = ev.get("step_test", 0)
             each = (self.qr_cycles(zero, True, unit=unit) if g == "qr"
                     else self.solve_linearize(keyframe >= lay.size) if g == "factor_jacobian"
                     else self.group[g])

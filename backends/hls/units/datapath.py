@@ -174,15 +174,22 @@ def lin_wave_region(program, timing: dict, jac: list[Process],
     ``lin_wave_loops`` from set 0's and set 1's starts, the cycles of the region at which their
     fills end, and the end of each datapath loop, ``ready``), the rest as lin_level_cycles.
     ``counts``: instances per block type (default: all), as lin_level_cycles. ``commit``: the
-    loops of the process that writes set 0's step into COND and NF as its collector streams it
-    (units/qr.py's ``wave_commit_loops``; counted from the region's start, as fgc_cycles.h
-    counts a process without waits: it ends as set 0's last passed row is written, before set
-    0's last region ends)."""
+    loops of the process that writes set 0's step into COND and NF as its collector streams it,
+    then set 1's two conditionals (units/qr.py's ``wave_commit_loops``; from the region's start,
+    its last words no earlier than set 0's step ends and its pairs no earlier than set 1's, as
+    fgc_cycles.h's FGC_WAIT counts them: units/qr.py's ``wave_commit_end``)."""
+    from fgc_backends.hls.units.qr import wave_commit_end
+
     c = _linearize_clocks(program, timing, jac, counts)
     starts = [max(fill.cycles, c["e_ends"][w] + fill.depth) for w, fill, _ in sets]
     span = sum(lp.cycles for lp in wave(starts[0], starts[1], c["e_ends"]))
-    return lin_level_cycles(program, timing, jac, [sets[0], (sets[1][0], sets[1][1], span)],
-                            counts, commit)
+    region = lin_level_cycles(program, timing, jac, [sets[0], (sets[1][0], sets[1][1], span)],
+                              counts, commit)
+    if not commit:
+        return region
+    ends = (starts[0] + sets[0][2] if sets[0][1].trip > 0 else 0,
+            starts[1] + span if sets[1][1].trip > 0 else 0)
+    return max(region, wave_commit_end(commit, *ends))
 
 
 def datapath_order(program, opts=None) -> list[int]:

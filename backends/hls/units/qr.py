@@ -365,6 +365,7 @@ def lin_wave(program, opts) -> tuple[int, int, int] | None:
 
 
 PASS_NONE = 255  # fgc_qr.h's QR_PASS_NONE: an empty slot of a qr_pass stream word
+COMMIT_PAIR = 2  # fgc_qr.h's qr_pair: words of one row a lin_level commit stream word
 
 
 def wave_colmap(tables: dict, c0: int, root: int) -> list[int]:
@@ -414,15 +415,55 @@ def pass_channel(tables: dict, c0: int, root: int, units: int, word_bits: int) -
                    2 * units * (word_bits + 8), "qr_set0", "qr_set1")
 
 
-def wave_commit_loops(tables: dict, c0: int, timing: dict) -> tuple[Loop, ...]:
-    """lin_level's commit process of step ``c0`` (the wave's set 0: accel.cpp.jinja's
-    qr_commit_wave, fgc_eliminate.h's qr_commit_stream): the words set 0's collector streams as
-    it writes its buffers, a word a cycle into COND (f rows of w + 1) and NF (STEP_NF_ROWS rows
-    of s + 1) - the step's commit, no loop after its last region (:func:`commit_loops`' words,
-    one a cycle)."""
-    w, f = tables["STEP_W"][c0], tables["STEP_F"][c0]
-    return (kernel_loop("cond_stream", f * (w + 1), "move", timing),
-            kernel_loop("nf_stream", tables["STEP_NF_ROWS"][c0] * (w - f + 1), "move", timing))
+def _row_pairs(tables: dict, s: int, nf: bool) -> int:
+    """Stream words of step ``s``'s conditional (f rows of w + 1 words) and, where ``nf``, its
+    new factor (STEP_NF_ROWS rows of s + 1) a pair of one row's words a stream word (fgc_qr.h's
+    qr_collect on lin_level's commit streams; a row of odd length ends on a half pair)."""
+    w, f = tables["STEP_W"][s], tables["STEP_F"][s]
+    half = -(-(w + 1) // COMMIT_PAIR) * f
+    return half + (tables["STEP_NF_ROWS"][s] * -(-(w - f + 1) // COMMIT_PAIR) if nf else 0)
+
+
+def commit_pair_words(tables: dict, c1: int, root: int) -> int:
+    """Stream words on lin_level's ``qr_commit1`` (the wave's set 1 to the commit process): step
+    ``c1``'s and the root's conditionals (:func:`_row_pairs`; c1's passed rows went into the
+    root from its buffer). The stream's depth: every pair (set 1 never waits for the commit
+    process, which reads set 0's words first)."""
+    return _row_pairs(tables, c1, False) + _row_pairs(tables, root, False)
+
+
+def wave_commit_loops(tables: dict, wave: tuple[int, int, int],
+                      timing: dict) -> tuple[Loop, ...]:
+    """lin_level's commit process (accel.cpp.jinja's qr_commit_wave, fgc_eliminate.h's
+    qr_commit_pairs), a loop a step, two words a cycle: the words the wave's set 0's collector
+    streams as it writes its buffers (step c0's conditional, f rows of w + 1, and new factor,
+    STEP_NF_ROWS rows of s + 1) into COND and NF, then step c1's and the root's conditionals as
+    set 1's collector wrote them into COND - the three steps' commits, no loop after the region
+    (:func:`commit_loops`' words). When it ends: :func:`wave_commit_end`."""
+    c0, c1, root = wave
+    return (kernel_loop("pairs", _row_pairs(tables, c0, True), "move", timing),
+            kernel_loop("pairs", _row_pairs(tables, c1, False), "move", timing),
+            kernel_loop("pairs", _row_pairs(tables, root, False), "move", timing))
+
+
+def wave_commit_end(loops: tuple[Loop, ...], end0: int, end1: int) -> int:
+    """The cycle of lin_level's region at which its commit process (:func:`wave_commit_loops`'
+    three loops, one after another from the region's start) ends: step c0's no earlier than its
+    depth after set 0's step ends (``end0``: its last pair comes as its last passed row is
+    written, before then - an upper bound), the root's no earlier than its depth after set 1's
+    (``end1``: the root's last conditional row comes in its region f - 1, before its last one),
+    as fgc_cycles.h's FGC_WAIT counts each. 0 when no loop runs."""
+    clock, pending = 0, None
+    for lp, wait in zip(loops, (end0, None, end1), strict=True):
+        if wait is not None:
+            pending = max(pending or 0, wait)
+        if lp.trip <= 0:
+            continue
+        clock += lp.cycles
+        if pending is not None:
+            clock = max(clock, pending + lp.depth)
+            pending = None
+    return clock
 
 
 def _tables_of(program) -> dict:
@@ -668,9 +709,14 @@ def _levels(ctx, sets, by_index, damping) -> None:
         own = pass_channel(tables, c1, root, opts.units, ops.word_bits)
         ctx.channels.append(Channel("qr_own", "stream", own.depth, own.width, "qr_set1",
                                     "qr_set1"))
-        # step c0's words from set 0's collector to the commit process (wave_commit_loops)
-        ctx.channels.append(Channel("qr_commit", "stream", 2, ops.word_bits, "qr_set0",
-                                    "qr_commit_wave"))
+        # step c0's words from set 0's collector to the commit process (wave_commit_loops),
+        # two of a row a stream word
+        ctx.channels.append(Channel("qr_commit", "stream", 2, COMMIT_PAIR * ops.word_bits,
+                                    "qr_set0", "qr_commit_wave"))
+        # step c1's and the root's conditionals from set 1's collector, two words a stream
+        # word, every pair held (commit_pair_words)
+        ctx.channels.append(Channel("qr_commit1", "stream", commit_pair_words(tables, c1, root),
+                                    COMMIT_PAIR * ops.word_bits, "qr_set1", "qr_commit_wave"))
         # the root's own rows by row parity (root_bank_parity_words), a stream each
         for name, words in zip(("bank_root", "bank_root1"), root_bank_parity_words(tables, root),
                                strict=True):
@@ -681,9 +727,10 @@ def _levels(ctx, sets, by_index, damping) -> None:
         if wave is not None and li == len(sched.levels) - 1:
             break  # the root ran in the level before's region (wave_loops)
         # eliminate_all: each step stacked into its unit set's banks (√μ once per solve
-        # first), the level's steps on the unit sets side by side, each result committed
+        # first, when damping: Gauss-Newton stacks no damping row), the level's steps on the
+        # unit sets side by side, each result committed
         stack = [Process("root_mu", "qr_stack", (kernel_loop("root_mu", 1, "root", timing),))] \
-            if li == 0 else []
+            if li == 0 and damping else []
         # (level 0's first steps: their factors' rows already in the banks, rows_in_banks)
         stack += [Process(f"stack{i}", "qr_stack", tuple(stack_loops(
             tables, i, opts.units, max_w, damping, timing, opts.qr_unit != "stream",
