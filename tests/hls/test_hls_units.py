@@ -118,8 +118,9 @@ static void run_qr(int rows, int f, int s, bool structural = false) {
         for (int a2 = 0; a2 < s; ++a2) xs[a2] = T(a2 + 1);
         static T buf[C::MAX_F * C::MAX_COLS];
         T part[2][C::PARTIALS][C::MAX_F];
-        fgc_units::cond_load<C>(cond, 0, f, s, xs, xs, -1, buf, part);
-        fgc_units::cond_backsub<C>(buf, f, s, part, x);
+        hls::stream<T> xq, xo;  // (the streamed-S load's x and the solve's x out: unused here)
+        fgc_units::cond_load<C>(cond, 0, f, s, xs, xs, -1, buf, part, 0, xq);
+        fgc_units::cond_backsub<C>(buf, f, s, part, x, 0, xo, 0);
         std::vector<double> xd(x, x + f);
         print("x", xd.data(), f);
     } else {
@@ -174,8 +175,9 @@ static void run_cpe(int f, int s, double mu) {
         for (int a2 = 0; a2 < s; ++a2) xl[1 + a2] = T(a2 + 1);
         static T buf[C::MAX_F * C::MAX_COLS];
         T part[2][C::PARTIALS][C::MAX_F];
-        fgc_units::cond_load<C>(cond, 0, f, s, xs, xl, 1, buf, part);
-        fgc_units::cond_backsub<C>(buf, f, s, part, x);
+        hls::stream<T> xq, xo;  // (the streamed-S load's x and the solve's x out: unused here)
+        fgc_units::cond_load<C>(cond, 0, f, s, xs, xl, 1, buf, part, 0, xq);
+        fgc_units::cond_backsub<C>(buf, f, s, part, x, 0, xo, 0);
         std::vector<double> xd(x, x + f);
         print("x", xd.data(), f);
     } else {
