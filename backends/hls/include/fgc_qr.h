@@ -1230,6 +1230,18 @@ template <class T>
 struct qr_no_commit {
     void write(const qr_commit_pair<T>&) {}
 };
+// A commit stream's pair out at a row's word i (its odd word, with the even one `held` before
+// it; or the row's last word alone, its pair's second word 0).
+template <class T, class COMMIT>
+inline void qr_commit_word(COMMIT& commitq, T held, T x, int i, bool last) {
+#pragma HLS INLINE
+    if ((i & 1) == 1 || last) {
+        qr_commit_pair<T> two;
+        two.pw[0] = (i & 1) == 1 ? held : x;
+        two.pw[1] = (i & 1) == 1 ? x : T(0);
+        commitq.write(two);
+    }
+}
 template <class PASS>
 struct qr_passes {
     enum { value = 1 };
@@ -1300,23 +1312,13 @@ void qr_collect(int j, int rows, int f, int s, int k, hls::stream<typename CFG::
         }
         if (j < f) {
             cond[coff + j * cols + c] = x;
-            if (pass && ((c & 1) == 1 || c == cols - 1)) {  // a pair out (its odd word, or the last)
-                qr_commit_pair<T> two;
-                two.pw[0] = (c & 1) == 1 ? held : x;
-                two.pw[1] = (c & 1) == 1 ? x : T(0);
-                commitq.write(two);
-            }
+            if (pass) qr_commit_word<T>(commitq, held, x, c, c == cols - 1);
             held = x;
         } else if (j - f < nf) {
             const int q = c - f;
             update[(j - f) * (s + 1) + q] = x;
             if (pass) {
-                if (commit_nf && ((q & 1) == 1 || c == cols - 1)) {  // a pair out (its odd word, or the last)
-                    qr_commit_pair<T> two;
-                    two.pw[0] = (q & 1) == 1 ? held : x;
-                    two.pw[1] = (q & 1) == 1 ? x : T(0);
-                    commitq.write(two);
-                }
+                if (commit_nf) qr_commit_word<T>(commitq, held, x, q, c == cols - 1);
                 held = x;
                 // word q into its slot (pack[q]: slot | local column << 8 | out << 16), the
                 // stream word out after its last word (the emitter's table: units/qr.py's
