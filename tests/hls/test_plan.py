@@ -145,27 +145,31 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # 16 iterations 2 mul + add = 10 deep: 25; x_0 a move 1 -> 47; its 3 unknowns out (2 + 1:
     # 3) -> 50) and, beside it, A's R and d, which need no solution (backsub_parts: 3 + 2 + 1
     # + 3 = 9 words, 5 iterations 9 deep: 13): the slower plus the other's fill, max(50 + 9,
-    # 13 + 19) = 59; A needs the root's solution, so slot 2 loads A's S alone: its separator in
-    # (3) and 3 x 3 = 9 words (5 + 8 = 13) -> 16; slot 3: A's solve and solution out (50)
-    # beside B's load (7 + 6 + 5 = 18 words: 9 + 8 = 17), the slower plus the other's fill (9)
-    # -> 59 (B loads into lane 0, whose last solve is the root: its separator is read from that
-    # lane's solution, no copy in from DELTA); slot 4 solves B -> 50: the slots end at 59, 75,
-    # 134, 184. Beside them the state update (backsub_retire: a variable an iteration at
+    # 13 + 19) = 59 — but A's separator is the root's frontal columns 0 … 2 in order and a
+    # column of A's S is ⌈3 / 2⌉ = 2 iterations, no longer than the triangle's spacing (8), so
+    # A's S streams in as the root's x arrives (units/backsub.py's streamed_s, cond_load's part
+    # 3): A's R and d (5 iterations) then S column by column (3 x 2), 11 iterations 2 + mul 3 +
+    # add 4 = 9 deep: 19, and no earlier than x_0 (47) + 2 - 1 + 9 = 57; the slot max(50 + 9,
+    # 57 + 19) = 76, and no slot loads A's S alone. The next slot: A's solve and solution out
+    # (50) beside B's load (7 + 6 + 5 = 18 words: 9 + 8 = 17), the slower plus the other's fill
+    # (9) -> 59 (B loads into lane 0, whose last solve is the root: its separator is read from
+    # that lane's solution, no copy in from DELTA); the last solves B -> 50: the slots end at 76,
+    # 135, 185. Beside them the state update (backsub_retire: a variable an iteration at
     # II 24, 2 + depth deep: a step's 3 words in, a pair a cycle, then the datapath) retracts
-    # the root at 59, A when it is sent at 134, B at 184: it ends at 184 + 2 + depth. Beside
+    # the root at 76, A when it is sent at 135, B at 185: it ends at 185 + 2 + depth. Beside
     # them the cost at X_TRIAL (trial_cost, issue 33), fed the retired variables (x1, x0, x2:
-    # the root's, A's, B's) as they end (61, 136, 186 + depth): the datapaths' loops one after
+    # the root's, A's, B's) as they end (78, 137, 187 + depth): the datapaths' loops one after
     # another, the one with more work first (the prior: 1 instance x II 24 against the between
     # factors' 2 x 12, a tie: block order), each its cost-mode II and depth + 2 (the taken
     # words written and read) where it takes variables. The prior's loop takes x1 in an entry
     # of its own (one variable an entry: its instances have one), then x0 and costs the prior
-    # at 136 + depth; the between factors' loop starts when it has drained, costs x0-x1 (all
-    # taken) and then x1-x2 once x2 is in (186 + depth); the phase ends with it.
+    # at 137 + depth; the between factors' loop starts when it has drained, costs x0-x1 (all
+    # taken) and then x1-x2 once x2 is in (187 + depth); the phase ends with it.
     by_name = {ph.name: ph for ph in plan.phases}
     plan_phase = by_name["backsub"]
     slots, retire, cost = plan_phase.processes
-    sizes = [sum(lp.cycles for lp in slots.loops[2 * k:2 * k + 2]) for k in range(4)]
-    assert sizes == [59, 16, 59, 50] and len(slots.loops) == 8
+    sizes = [sum(lp.cycles for lp in slots.loops[2 * k:2 * k + 2]) for k in range(3)]
+    assert sizes == [76, 59, 50] and len(slots.loops) == 6
     assert retire.loops[0].cycles == 2 + depth
     (ii0, d0), (ii1, d1) = [(p.loops[0].ii, p.loops[0].depth)
                             for p in by_name["factor_cost"].processes[1:]]
@@ -173,13 +177,13 @@ def test_pose2_chain_phases_by_hand(qr_chain):
     # In one process: 136 + depth + d0 + 2 for the prior, then the between factors' loop. The
     # plan runs them as two (units/datapath.py's slot_split_loops), as that ends sooner: the
     # between factors in trial_cost (after sending the prior's 7 data words: 8 cycles), x1 and
-    # x0 taken at 136 + depth, x2 an II later or when it is in (186 + depth); the prior beside
-    # them in trial_cost_b (its words in: 9), x0 at 136 + depth, ending d0 + 2 later
-    one = max(136 + depth + d0 + 2 + ii1, 186 + depth) + d1 + 2
-    prior = 136 + depth + d0 + 2
-    end = max(136 + depth + ii1, 186 + depth) + d1 + 2
+    # x0 taken at 137 + depth, x2 an II later or when it is in (187 + depth); the prior beside
+    # them in trial_cost_b (its words in: 9), x0 at 137 + depth, ending d0 + 2 later
+    one = max(137 + depth + d0 + 2 + ii1, 187 + depth) + d1 + 2
+    prior = 137 + depth + d0 + 2
+    end = max(137 + depth + ii1, 187 + depth) + d1 + 2
     assert prior < end < one
-    assert cost.loops[0].cycles == end - (184 + 2 + depth)
+    assert cost.loops[0].cycles == end - (185 + 2 + depth)
     assert phases["backsub"] == end
     assert "factor_cost" not in phases  # the cost at X: once per call
     assert by_name["factor_cost"].per == "call"
