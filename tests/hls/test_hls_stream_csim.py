@@ -25,6 +25,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from stream_cases import keyframe_distances
 
 from fgc.app.cli import main
 from fgc.app.specs import example
@@ -44,16 +45,7 @@ LIO = str(Path(__file__).resolve().parents[2] / "examples" / "lio.py")
 
 
 def _distances(program, stream_result, sim_updates):
-    out = []
-    for record, expected in zip(stream_result.updates, sim_updates, strict=True):
-        update = keyframe_result(program, record)
-        assert (update.keyframe, update.mode, update.first) == (expected.keyframe, expected.mode,
-                                                                expected.first)
-        assert set(update.values) == set(expected.values)
-        out.append(max(float(np.linalg.norm(expected.values[k].local(v)))
-                       for k, v in update.values.items()))
-    assert len(out) == len(sim_updates)
-    return out
+    return keyframe_distances(program, stream_result.updates, sim_updates)
 
 
 @pytest.fixture(scope="module")

@@ -20,14 +20,13 @@ kernel.
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
+from stream_cases import keyframe_distances, lio7_one_step
 
 from fgc.app.specs import example
-from fgc.app.streaming import compile_stream, keyframe_result, one_step_solver, run_stream
+from fgc.app.streaming import compile_stream, keyframe_result, one_step_solver
 from fgc.interop import oracles
 from fgc.interop.to_gtsam import to_gtsam
-from fgc.ir.datafile import problem_data
 from fgc_backends.hls.config import HlsConfig
 from fgc_backends.hls.plan.stream import WindowUpdateModel
 from fgc_backends.hls.streaming import OnChipIncrementalStream, incremental_layout
@@ -38,28 +37,12 @@ ONE_STEP_ISAM2_TOL = 1e-5  # vs gtsam.ISAM2, one update per keyframe with the sa
 
 
 def _distances(program, csim, sim_updates) -> list[float]:
-    out = []
-    for record, expected in zip(csim.updates, sim_updates, strict=True):
-        update = keyframe_result(program, record)
-        assert (update.keyframe, update.mode, update.first) == (
-            expected.keyframe, expected.mode, expected.first)
-        assert set(update.values) == set(expected.values)
-        out.append(max(float(np.linalg.norm(expected.values[k].local(v)))
-                       for k, v in update.values.items()))
-    return out
+    return keyframe_distances(program, csim.updates, sim_updates)
 
 
 @pytest.fixture(scope="module")
 def sweep7(tmp_path_factory):
-    graph = example("lio").build(N=7)
-    program = compile_stream(graph, one_step_solver(), incremental=3, batch_every=(4,),
-                             name="lio_sweep")
-    data = problem_data(graph, program)
-    sim = []
-    run_stream(program, data, None, sim.append)
-    stream = OnChipIncrementalStream(graph, program, "double",
-                                     out_dir=tmp_path_factory.mktemp("sweep"))
-    return graph, program, data, sim, stream, stream.run(data)
+    return lio7_one_step(tmp_path_factory.mktemp("sweep"), "lio_sweep")
 
 
 def test_the_one_step_design_has_no_batch_kernel(sweep7):

@@ -24,13 +24,11 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-import numpy as np
 import pytest
+from stream_cases import keyframe_distances, lio7_one_step
 
 from fgc.app.specs import example
-from fgc.app.streaming import compile_stream, keyframe_result, one_step_solver, run_stream
 from fgc.compile import compile_graph
-from fgc.ir.datafile import problem_data
 from fgc.ir.program import SolverConfig
 from fgc_backends.hls.config import DesignOptions, HlsConfig
 from fgc_backends.hls.network import read_network
@@ -46,27 +44,12 @@ WAVE = DesignOptions(root_wave=True)
 
 
 def _distances(program, csim, sim_updates) -> list[float]:
-    out = []
-    for record, expected in zip(csim.updates, sim_updates, strict=True):
-        update = keyframe_result(program, record)
-        assert (update.keyframe, update.mode, update.first) == (
-            expected.keyframe, expected.mode, expected.first)
-        out.append(max(float(np.linalg.norm(expected.values[k].local(v)))
-                       for k, v in update.values.items()))
-    return out
+    return keyframe_distances(program, csim.updates, sim_updates)
 
 
 @pytest.fixture(scope="module")
 def wave7(tmp_path_factory):
-    graph = example("lio").build(N=7)
-    program = compile_stream(graph, one_step_solver(), incremental=3, batch_every=(4,),
-                             name="lio_wave")
-    data = problem_data(graph, program)
-    sim = []
-    run_stream(program, data, None, sim.append)
-    stream = OnChipIncrementalStream(graph, program, "double",
-                                     out_dir=tmp_path_factory.mktemp("wave"), design=WAVE)
-    return graph, program, data, sim, stream, stream.run(data)
+    return lio7_one_step(tmp_path_factory.mktemp("wave"), "lio_wave", WAVE)
 
 
 def test_the_wave_agrees_with_the_simulator_after_every_keyframe(wave7):
