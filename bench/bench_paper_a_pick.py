@@ -16,7 +16,6 @@ each repeat: the spread the bench's single figure hides.
 from __future__ import annotations
 
 import argparse
-import dataclasses
 import sys
 import time
 from pathlib import Path
@@ -30,7 +29,6 @@ from bench_stream import _isam2_times  # noqa: E402
 
 from fgc.app import streaming  # noqa: E402
 from fgc.interop.to_gtsam import to_gtsam  # noqa: E402
-from fgc.ir.datafile import problem_data  # noqa: E402
 from fgc_backends.cost.operators import parse_bind  # noqa: E402
 from fgc_backends.hls import HlsConfig  # noqa: E402
 
@@ -44,17 +42,10 @@ def main(argv=None) -> None:
     args = ap.parse_args(argv)
     if args.repeats < 1:
         ap.error("--repeats must be at least 1")
-    cfg = b.Config()
-    graph = b.lio.build(N=cfg.lio_n)
-    solver = dataclasses.replace(b._stream_solver(cfg), units=args.units)
-    program = streaming.compile_stream(graph, solver, incremental=3,
-                                       batch_every=tuple(cfg.stream_batch))
-    sp = streaming.stream_program(graph, program)
-    updates = []
-    streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
-    allocation = tuple((k, int(v)) for k, v in (p.split("=") for p in args.allocation.split(",")))
+    graph, program, sp = b.paper_a_window(b.Config(), units=args.units)
+    updates = b.stream_updates(graph, program, sp)
     config = HlsConfig(scalar="float", unit_sets=2, qr_rows=2, root_wave=True, data_width=64,
-                       allocation=allocation, bind=parse_bind(args.bind))
+                       allocation=b.parse_allocation(args.allocation), bind=parse_bind(args.bind))
     pricer = streaming.WindowPricer(sp, config=config)
     clock_khz = program.solver.clock_mhz * 1e3
     cycles = np.array([pricer.price(u).cycles for u in updates])

@@ -17,7 +17,6 @@ printed, then the median and p99 per update.
 from __future__ import annotations
 
 import argparse
-import dataclasses
 import sys
 from pathlib import Path
 
@@ -27,22 +26,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_papers as b  # noqa: E402
 
 from fgc.app import streaming  # noqa: E402
-from fgc.errors import FgcError  # noqa: E402
-from fgc.ir.datafile import problem_data  # noqa: E402
 from fgc_backends.cost.operators import bind_label, parse_bind  # noqa: E402
 from fgc_backends.hls import HlsConfig  # noqa: E402
-
-
-def _allocation(text: str) -> tuple[tuple[str, int], ...] | None:
-    if text in ("", "default"):
-        return None
-    out = []
-    for item in text.split(","):
-        kind, _, count = item.partition("=")
-        if not count.isdigit():
-            raise FgcError(f"--allocation {text!r}: expected kind=count items, e.g. add=2,mul=3")
-        out.append((kind.strip(), int(count)))
-    return tuple(out)
 
 
 def main(argv=None) -> None:
@@ -69,16 +54,10 @@ def main(argv=None) -> None:
                          "64 = two float words a beat; default 32)")
     args = ap.parse_args(argv)
     shown = {int(k) for k in args.keyframes.split(",") if k.strip()}
-    cfg = b.Config()
-    graph = b.lio.build(N=cfg.lio_n)
-    solver = dataclasses.replace(b._stream_solver(cfg), units=args.units)
-    program = streaming.compile_stream(graph, solver, incremental=3,
-                                       batch_every=tuple(cfg.stream_batch))
-    sp = streaming.stream_program(graph, program)
-    updates = []
-    streaming.run_stream(sp, problem_data(graph, program), progress=updates.append)
+    graph, program, sp = b.paper_a_window(b.Config(), units=args.units)
+    updates = b.stream_updates(graph, program, sp)
     pricer = streaming.WindowPricer(sp, config=HlsConfig(
-        scalar="float", unit_sets=args.sets, allocation=_allocation(args.allocation),
+        scalar="float", unit_sets=args.sets, allocation=b.parse_allocation(args.allocation),
         qr_rows=args.qr_rows, bind=parse_bind(args.bind), root_wave=args.root_wave,
         retire_special=args.retire_special, data_width=args.data_width))
     res = pricer.model.resources()
